@@ -1,0 +1,39 @@
+"""polygon-method: planar mechanisms solved the way a Theory of Machines textbook does it.
+
+>>> import polygon_method as pm
+>>> scene = pm.parse_scene('''
+... [ground]
+... A = [0, 0]
+... D = [100, 0]
+... [links]
+... AB = 50
+... BC = 66
+... CD = 56
+... [input]
+... crank = "AB"
+... angle = 60
+... speed = "10.5 rad/s cw"
+... ''')
+>>> sol = pm.solve(scene)
+>>> f"{sol.omega('BC'):.4f}"
+'5.1502'
+"""
+
+from .errors import (AssemblyError, MobilityError, PolygonMethodError, SceneError,
+                     SingularStepError)
+from .plan import Plan, compile_plan
+from .scene import Scene, load_scene, parse_scene
+from .solution import Solution, solve
+
+__version__ = "0.1.0"
+
+__all__ = ["load_scene", "parse_scene", "solve", "compile_plan", "sweep", "Scene", "Plan",
+           "Solution", "PolygonMethodError", "SceneError", "MobilityError", "AssemblyError",
+           "SingularStepError", "__version__"]
+
+
+def __getattr__(name):  # lazy: sweeps need numpy, which `solve` does not
+    if name == "sweep":
+        from .sweep import sweep
+        return sweep
+    raise AttributeError(name)

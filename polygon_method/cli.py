@@ -1,0 +1,174 @@
+"""The ``polygon-method`` command: ``main(argv) -> int``.
+
+Exit codes: 0 success; 1 ``check`` found a wrong answer; 2 bad input (one line on stderr,
+never a traceback); 3 an internal error (a bug: please report it).
+Only this module writes files, and it writes them whole or not at all.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+import tempfile
+from pathlib import Path
+
+from .errors import PolygonMethodError
+
+__all__ = ["main", "write_output"]
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message):  # one line, exit 2
+        self.exit(2, f"{self.prog}: error: {message}\n")
+
+
+def write_output(path, data, *, binary=False) -> None:
+    """Write ``data`` to ``path`` atomically: a temporary file renamed into place."""
+    path = Path(path)
+    directory = path.parent if str(path.parent) else Path(".")
+    if not directory.is_dir():
+        raise PolygonMethodError(f"cannot write {path}: no directory {directory}")
+    fd, tmp = tempfile.mkstemp(dir=directory, prefix=f".{path.name}.", suffix=".tmp")
+    try:
+        with os.fdopen(fd, "wb" if binary else "w", **({} if binary else
+                                                       {"encoding": "utf-8"})) as fh:
+            fh.write(data)
+        os.replace(tmp, path)
+    except BaseException:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        raise
+
+
+def _cmd_solve(args) -> int:
+    from .scene import load_scene
+    from .solution import solve
+
+    sol = solve(load_scene(args.scene))
+    if args.json:
+        print(json.dumps(sol.to_dict(), indent=2, allow_nan=False))
+    else:
+        print(sol.report())
+    return 0
+
+
+def _cmd_plan(args) -> int:
+    from .plan import compile_plan
+    from .scene import load_scene
+
+    print(compile_plan(load_scene(args.scene)))
+    return 0
+
+
+def _cmd_steps(args) -> int:
+    from .scene import load_scene
+    from .solution import solve
+    from .steps import steps_text
+
+    print(steps_text(solve(load_scene(args.scene)), fmt=args.format))
+    return 0
+
+
+def _cmd_check(args) -> int:
+    from .check import run_check
+
+    return run_check(args)
+
+
+def _cmd_draw(args) -> int:
+    from .draw import run_draw
+
+    return run_draw(args)
+
+
+def _cmd_sweep(args) -> int:
+    from .sweep import run_sweep
+
+    return run_sweep(args)
+
+
+def _cmd_linkage(args) -> int:
+    from .linkage import run_linkage
+
+    return run_linkage(args)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    p = _Parser(prog="polygon-method",
+                description="Planar mechanisms by the relative-velocity (polygon) method.")
+    from . import __version__
+    p.add_argument("--version", action="version", version=f"polygon-method {__version__}")
+    sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+    sub.required = True
+
+    s = sub.add_parser("solve", help="solve a scene at its stated instant")
+    s.add_argument("scene")
+    s.add_argument("--json", action="store_true", help="machine-readable output (SI)")
+    s.set_defaults(func=_cmd_solve)
+
+    s = sub.add_parser("plan", help="print the construction plan")
+    s.add_argument("scene")
+    s.set_defaults(func=_cmd_plan)
+
+    s = sub.add_parser("steps", help="the hand solution, step by step")
+    s.add_argument("scene")
+    s.add_argument("--format", choices=("text", "markdown"), default="text")
+    s.set_defaults(func=_cmd_steps)
+
+    s = sub.add_parser("check", help="check answers against the solution")
+    s.add_argument("scene")
+    s.add_argument("answers", nargs="?", help="a TOML file with an [answers] table")
+    s.add_argument("--json", action="store_true")
+    s.set_defaults(func=_cmd_check)
+
+    s = sub.add_parser("draw", help="true-to-scale SVG/PNG/PDF diagrams")
+    s.add_argument("scene")
+    s.add_argument("-o", "--output", required=True, help="FILE.svg, .png or .pdf")
+    s.add_argument("--diagram", choices=("configuration", "velocity", "acceleration", "all"),
+                   default="all")
+    s.add_argument("--scale", action="append", default=[],
+                   help='e.g. "1 cm = 0.1 m/s" (may be repeated: space, velocity, '
+                        'acceleration)')
+    s.set_defaults(func=_cmd_draw)
+
+    s = sub.add_parser("sweep", help="the whole crank cycle")
+    s.add_argument("scene")
+    s.add_argument("--steps", type=int)
+    s.add_argument("--from", dest="start", type=float)
+    s.add_argument("--to", dest="stop", type=float)
+    s.add_argument("--step", type=float)
+    s.add_argument("--csv")
+    s.add_argument("--plot")
+    s.add_argument("--summary", action="store_true")
+    s.set_defaults(func=_cmd_sweep)
+
+    s = sub.add_parser("linkage", help="Grashof, toggle positions, transmission angle")
+    s.add_argument("scene")
+    s.set_defaults(func=_cmd_linkage)
+    return p
+
+
+def main(argv=None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        return args.func(args)
+    except PolygonMethodError as exc:
+        print(f"polygon-method {args.command}: {exc.one_line()}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        return 130
+    except BrokenPipeError:
+        return 0
+    except Exception as exc:  # a bug: still one line, never a traceback
+        print(f"polygon-method {args.command}: internal error ({type(exc).__name__}: {exc}); "
+              "please report it with the scene file", file=sys.stderr)
+        return 3
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

@@ -1,0 +1,84 @@
+"""The solution as a terminal report (``polygon-method solve``)."""
+
+from __future__ import annotations
+
+import math
+
+from .solution import Solution, fmt_angular
+
+__all__ = ["solution_text", "direction_deg"]
+
+
+def direction_deg(x: float, y: float) -> float:
+    """Direction of a vector in degrees, ccw from +x, in [0, 360)."""
+    d = math.degrees(math.atan2(y, x)) % 360.0
+    return 0.0 if d >= 359.9995 else d
+
+
+def _vec(x, y, digits=4):
+    m = math.hypot(x, y)
+    if m == 0:
+        return "0"
+    return f"{m:.{digits}g} at {direction_deg(x, y):.1f} deg"
+
+
+def solution_text(sol: Solution) -> str:
+    sc = sol.scene
+    u = sc.length_unit
+    inp = sc.input
+    lines = []
+    title = sc.title or (sc.file or "mechanism")
+    lines.append(title)
+    lines.append(f"crank {inp.crank} at {math.degrees(inp.angle):g} deg, "
+                 f"{fmt_angular(inp.omega, 'rad/s')}"
+                 + ("" if "rad/s" in inp.speed_text else f" ({inp.speed_text})")
+                 + (f", {fmt_angular(inp.alpha, 'rad/s^2')}" if inp.alpha else ""))
+    lines.append("")
+    lines.append(f"{'point':<6} {'position (' + sc.units + ')':<24} {'velocity (m/s)':<24} "
+                 f"{'acceleration (m/s^2)':<24}")
+    for p in sc.point_names:
+        x, y = sol.P[p]
+        pos = f"({x / u:.4f}, {y / u:.4f})"
+        lines.append(f"{p:<6} {pos:<24} {_vec(*sol.V[p]):<24} {_vec(*sol.A[p]):<24}")
+    lines.append("")
+    lines.append(f"{'link':<8} {'length (' + sc.units + ')':<14} {'omega':<22} {'alpha':<22}")
+    for lk in sc.links:
+        w, al = sol.W[lk.key], sol.Al[lk.key]
+        lines.append(f"{lk.key:<8} {lk.length / u:<14.6g} {fmt_angular(w, 'rad/s'):<22} "
+                     f"{fmt_angular(al, 'rad/s^2'):<22}")
+    if sc.sliders:
+        lines.append("")
+        lines.append(f"{'slider':<8} {'guide':<16} {'sliding v (m/s)':<18} "
+                     f"{'sliding a (m/s^2)':<20} {'Coriolis (m/s^2)':<24}")
+        for s in sc.sliders:
+            vs, a_s, cor = sol.S[s.point]
+            guide = getattr(s, "label", None) or getattr(s, "guide", "")
+            lines.append(f"{s.point:<8} {guide:<16} {vs:<18.5g} {a_s:<20.5g} "
+                         f"{_vec(*cor):<24}")
+    if sc.pins:
+        lines.append("")
+        lines.append("pin   radius (" + sc.units + ")  rubbing velocity (m/s)")
+        for name, r in sol.rubbing.items():
+            if not r.pairs:
+                lines.append(f"{name:<5} {r.radius / u:<12.6g} 0 (the pin joins only "
+                             f"{', '.join(r.bodies) or 'nothing'})")
+                continue
+            detail = "; ".join(f"{k}: {v:.4g}" for k, v in r.pairs.items())
+            lines.append(f"{name:<5} {r.radius / u:<12.6g} {r.rubbing_velocity:.4g}"
+                         + (f"   ({detail})" if len(r.pairs) > 1 else ""))
+    if sol.input_torque is not None:
+        lines.append("")
+        t = sol.input_torque
+        lines.append(f"input torque on {inp.crank}: {fmt_angular(t, 'N m')} "
+                     "(power balance, no friction or inertia)")
+    lines.append("")
+    lines.append("plan (condition = sine of the angle between the two direction lines):")
+    for st in sol.plan.steps:
+        c = sol.conditions.get(st.index, 1.0)
+        lines.append(f"  {st.index + 1}. {st.title}: finds {', '.join(st.finds)}"
+                     f"   condition {c:.3g}")
+    for w in sol.warnings:
+        lines.append(f"warning: {w}")
+    for n in sol.notes:
+        lines.append(f"note: {n}")
+    return "\n".join(lines)

@@ -1,0 +1,279 @@
+"""Solve a scene at its stated instant and collect what a textbook asks for.
+
+>>> from polygon_method.scene import parse_scene
+>>> sol = solve(parse_scene('''
+... [ground]
+... O = [0, 0]
+... [links]
+... OA = 150
+... AB = 600
+... [sliders]
+... B = { path = "horizontal" }
+... [input]
+... crank = "OA"
+... angle = 90
+... speed = "10 rad/s ccw"
+... '''))
+>>> round(sol.speed("B"), 6)   # at 90 deg the piston moves as fast as the crank pin
+1.5
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from functools import cached_property
+
+from .errors import TOL
+from .plan import Context, Dyad, Plan, SliderDyad, SlottedLink, compile_plan
+from .scene import FixedPath, GuideSlider, Scene
+
+__all__ = ["solve", "Solution", "PinRubbing", "sense", "fmt_angular"]
+
+
+def sense(value: float) -> str:
+    """``ccw`` for a positive angular quantity, ``cw`` for a negative one, '' for zero."""
+    return "ccw" if value > 0 else ("cw" if value < 0 else "")
+
+
+def fmt_angular(value: float, unit: str, digits: int = 4) -> str:
+    """``5.150 rad/s ccw``: magnitude, unit and sense."""
+    s = sense(value)
+    return f"{abs(value):.{digits}g} {unit}" + (f" {s}" if s else "")
+
+
+@dataclass(frozen=True)
+class PinRubbing:
+    """Rubbing velocity at a pin: |w1 - w2| r for each pair of bodies the pin joins."""
+
+    point: str
+    radius: float
+    bodies: dict  # body name -> omega
+    pairs: dict  # "AB|BC" -> rubbing velocity
+
+    @property
+    def rubbing_velocity(self) -> float:
+        return max(self.pairs.values(), default=0.0)
+
+
+@dataclass(frozen=True)
+class Solution:
+    """Positions, velocities, accelerations of every point and link at one instant (SI)."""
+
+    scene: Scene
+    plan: Plan
+    P: dict
+    V: dict
+    A: dict
+    W: dict
+    Al: dict
+    S: dict
+    conditions: dict
+    _cache: dict = field(default_factory=dict, repr=False, compare=False)
+
+    # ----- points
+    def position(self, point):
+        return self.P[point]
+
+    def velocity(self, point, relative_to=None):
+        """Velocity of ``point`` (relative to ``relative_to``: v_XY = v_X - v_Y)."""
+        vx, vy = self.V[point]
+        if relative_to is None:
+            return (vx, vy)
+        ux, uy = self.V[relative_to]
+        return (vx - ux, vy - uy)
+
+    def acceleration(self, point, relative_to=None):
+        ax, ay = self.A[point]
+        if relative_to is None:
+            return (ax, ay)
+        bx, by = self.A[relative_to]
+        return (ax - bx, ay - by)
+
+    def speed(self, point, relative_to=None) -> float:
+        return math.hypot(*self.velocity(point, relative_to))
+
+    def acceleration_magnitude(self, point, relative_to=None) -> float:
+        return math.hypot(*self.acceleration(point, relative_to))
+
+    # ----- links
+    def omega(self, link) -> float:
+        return self.W[self.scene.link(link).key]
+
+    def alpha(self, link) -> float:
+        return self.Al[self.scene.link(link).key]
+
+    # ----- sliders
+    def sliding_velocity(self, point) -> float:
+        return self.S[point][0]
+
+    def sliding_acceleration(self, point) -> float:
+        return self.S[point][1]
+
+    def coriolis(self, point):
+        return self.S[point][2]
+
+    # ----- derived quantities
+    def bodies_at(self, point) -> dict:
+        """Each body a pin at ``point`` joins, with its angular velocity."""
+        sc = self.scene
+        out = {}
+        if point in sc.ground:
+            out["ground"] = 0.0
+        for lk in sc.links:
+            if point in lk.points:
+                out[lk.key] = self.W[lk.key]
+        cp = sc.carried(point)
+        if cp is not None:
+            out[cp.link] = self.W[cp.link]
+        sl = sc.slider(point)
+        if isinstance(sl, FixedPath):
+            out[f"block {point}"] = 0.0
+        elif isinstance(sl, GuideSlider):
+            out[f"block {point}"] = self.W[sc.link(sl.guide).key]
+        return out
+
+    @cached_property
+    def rubbing(self) -> dict:
+        """Pin -> :class:`PinRubbing`, for every pin with a size in ``[pins]``."""
+        out = {}
+        for pin in self.scene.pins:
+            bodies = self.bodies_at(pin.point)
+            names = list(bodies)
+            pairs = {}
+            for i, a in enumerate(names):
+                for b in names[i + 1:]:
+                    pairs[f"{a}|{b}"] = abs(bodies[a] - bodies[b]) * pin.radius
+            out[pin.point] = PinRubbing(pin.point, pin.radius, bodies, pairs)
+        return out
+
+    @cached_property
+    def power_terms(self) -> list:
+        """(what, power in W) of each load: F . v for forces, T w for torques on links."""
+        out = []
+        for load in self.scene.loads:
+            if load.force is not None:
+                fx, fy = load.force
+                vx, vy = self.V[load.target]
+                out.append((load.target, fx * vx + fy * vy))
+            else:
+                out.append((load.target, load.torque * self.W[load.target]))
+        return out
+
+    @cached_property
+    def input_torque(self):
+        """T on the crank, ccw positive: T w + sum(F . v) = 0. None without loads."""
+        if not self.scene.loads:
+            return None
+        return -sum(p for _, p in self.power_terms) / self.scene.input.omega
+
+    # ----- conditioning
+    @cached_property
+    def warnings(self) -> tuple:
+        """One line per ill-conditioned step (condition below sin 5 deg)."""
+        out = []
+        for st in self.plan.steps:
+            c = self.conditions.get(st.index, 1.0)
+            if c < TOL.warn:
+                out.append(_warning(st, c))
+        return tuple(out)
+
+    @property
+    def notes(self) -> tuple:
+        return self.plan.notes
+
+    # ----- output
+    def to_dict(self) -> dict:
+        """The JSON contract of ``solve --json`` (SI, ccw positive)."""
+        sc = self.scene
+        d = {"title": sc.title,
+             "points": {p: {"position": list(self.P[p]), "velocity": list(self.V[p]),
+                            "acceleration": list(self.A[p])} for p in sc.point_names},
+             "links": {lk.key: {"omega": self.W[lk.key], "alpha": self.Al[lk.key]}
+                       for lk in sc.links}}
+        if sc.sliders:
+            d["sliders"] = {s.point: {"sliding_velocity": self.S[s.point][0],
+                                      "sliding_acceleration": self.S[s.point][1],
+                                      "coriolis": list(self.S[s.point][2]),
+                                      "guide": (s.label if isinstance(s, FixedPath)
+                                                else s.guide)}
+                            for s in sc.sliders}
+        if sc.pins:
+            d["pins"] = {}
+            for name, r in self.rubbing.items():
+                entry = {"rubbing_velocity": r.rubbing_velocity, "radius": r.radius}
+                if len(r.bodies) > 2:
+                    entry["pairs"] = dict(r.pairs)
+                d["pins"][name] = entry
+        if sc.loads:
+            d["input_torque"] = self.input_torque
+        d["steps"] = [{"step": st.index + 1, "kind": st.kind, "title": st.title,
+                       "finds": list(st.finds),
+                       "condition": self.conditions.get(st.index, 1.0)}
+                      for st in self.plan.steps]
+        d["warnings"] = list(self.warnings)
+        d["notes"] = list(self.notes)
+        return d
+
+    def report(self) -> str:
+        """The solution as text, the way ``polygon-method solve`` prints it."""
+        from .report import solution_text
+        return solution_text(self)
+
+    def _repr_svg_(self):  # Jupyter
+        try:
+            from .draw import svg_string
+        except ImportError:  # drawing not available
+            return None
+        return svg_string(self)
+
+    def value(self, kind: str, names: tuple):
+        """The exact value behind an answer key (``kind`` as in ``[answers]``)."""
+        if kind == "v":
+            return self.speed(*names)
+        if kind == "a":
+            return self.acceleration_magnitude(*names)
+        if kind == "omega":
+            return self.omega("-".join(names))
+        if kind == "alpha":
+            return self.alpha("-".join(names))
+        if kind == "vs":
+            return self.sliding_velocity(names[0])
+        if kind == "as":
+            return self.sliding_acceleration(names[0])
+        if kind == "ac":
+            return math.hypot(*self.coriolis(names[0]))
+        if kind == "rub":
+            return self.rubbing[names[0]].rubbing_velocity
+        if kind == "torque":
+            return self.input_torque
+        raise KeyError(kind)
+
+
+def _warning(st, c) -> str:
+    if isinstance(st, Dyad):
+        deg = math.degrees(math.asin(min(c, 1.0)))
+        return (f"{st.label}: {st.link1} and {st.link2} are nearly in line (transmission "
+                f"angle {deg:.3g} deg, condition {c:.3g}): near a toggle position the "
+                "intersection of the direction lines is ill-conditioned")
+    if isinstance(st, SliderDyad):
+        return (f"{st.label}: the line perpendicular to {st.link} is nearly parallel to the "
+                f"guide (condition {c:.3g}): near a dead centre for this step")
+    if isinstance(st, SlottedLink):
+        return (f"{st.label}: block {st.point} is close to {st.known}, the pivot of "
+                f"{st.guide} (condition {c:.3g})")
+    return f"{st.label}: condition {c:.3g}"
+
+
+def solve(scene: Scene) -> Solution:
+    """Compile (once per scene) and evaluate the plan at the scene's crank angle.
+
+    Raises :class:`~polygon_method.errors.AssemblyError` or
+    :class:`~polygon_method.errors.SingularStepError` where the construction fails.
+    """
+    plan = compile_plan(scene)
+    inp = scene.input
+    ctx = Context(inp.angle, inp.omega, inp.alpha)
+    P, V, A, W, Al, S = plan.evaluate(ctx)
+    return Solution(scene, plan, P, V, A, W, Al, S, ctx.cond)
+

@@ -1,0 +1,152 @@
+"""Quantities with units, parsed the way a problem states them.
+
+>>> parse_quantity("50 mm", "length")
+Quantity(value=0.05, sense=None)
+>>> parse_quantity("180 rpm ccw", "angular_velocity").value  # 2 pi 180 / 60
+18.84955592153876
+>>> parse_quantity("10.5 rad/s cw", "angular_velocity")
+Quantity(value=-10.5, sense='cw')
+
+Values come back in SI (m, rad, rad/s, rad/s^2, N, m/s, m/s^2, N m); a sense ``cw`` makes
+the value negative (counter-clockwise positive).
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+import re
+from dataclasses import dataclass
+
+from .errors import SceneError
+
+__all__ = ["Quantity", "parse_quantity", "UNITS", "LENGTH_UNITS", "format_unit_list"]
+
+_PI = math.pi
+
+#: unit spellings by kind: factor to SI
+UNITS: dict[str, dict[str, float]] = {
+    "length": {"mm": 1e-3, "cm": 1e-2, "m": 1.0, "in": 0.0254, "inch": 0.0254, "ft": 0.3048},
+    "angle": {"deg": _PI / 180, "°": _PI / 180, "degree": _PI / 180, "degrees": _PI / 180,
+              "rad": 1.0},
+    "angular_velocity": {"rad/s": 1.0, "rpm": 2 * _PI / 60, "r.p.m.": 2 * _PI / 60,
+                         "r.p.m": 2 * _PI / 60, "rev/min": 2 * _PI / 60,
+                         "rps": 2 * _PI, "r.p.s.": 2 * _PI, "r.p.s": 2 * _PI,
+                         "rev/s": 2 * _PI, "deg/s": _PI / 180},
+    "angular_acceleration": {"rad/s^2": 1.0, "rad/s²": 1.0, "rad/s2": 1.0,
+                             "rad/s/s": 1.0},
+    "force": {"N": 1.0, "kN": 1e3, "MN": 1e6, "lbf": 4.4482216152605},
+    "velocity": {"m/s": 1.0, "mm/s": 1e-3, "cm/s": 1e-2, "km/h": 1 / 3.6},
+    "acceleration": {"m/s^2": 1.0, "m/s²": 1.0, "m/s2": 1.0, "mm/s^2": 1e-3, "mm/s²": 1e-3,
+                     "mm/s2": 1e-3, "cm/s^2": 1e-2, "cm/s²": 1e-2, "cm/s2": 1e-2},
+    "torque": {"N m": 1.0, "N·m": 1.0, "Nm": 1.0, "N.m": 1.0, "N-m": 1.0,
+               "kN m": 1e3, "kN·m": 1e3, "kNm": 1e3, "kN.m": 1e3, "N mm": 1e-3, "Nmm": 1e-3,
+               "N·mm": 1e-3},
+    "percent": {"%": 0.01},
+}
+
+#: the lengths a scene may be written in (``units = ...``)
+LENGTH_UNITS = {"mm", "cm", "m", "in"}
+
+_SENSES = {"cw", "ccw", "acw"}
+_NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
+_QUANTITY = re.compile(rf"^\s*({_NUMBER})\s*(.*?)\s*$")
+
+
+@dataclass(frozen=True)
+class Quantity:
+    """A parsed value in SI, with the sense it was given (``cw``/``ccw``) if any."""
+
+    value: float
+    sense: str | None = None
+
+
+def format_unit_list(kind: str) -> str:
+    """The units of one kind, for messages."""
+    return ", ".join(u for u in UNITS[kind] if "." not in u)
+
+
+def _unit_factor(unit: str, kind: str, where: str) -> float:
+    table = UNITS[kind]
+    if unit in table:
+        return table[unit]
+    folded = {u.lower(): f for u, f in table.items()}
+    if unit.lower() in folded and kind not in ("force",):
+        return folded[unit.lower()]
+    every = [u for k in UNITS.values() for u in k]
+    close = difflib.get_close_matches(unit, list(table), n=1, cutoff=0.5)
+    hint = f" (did you mean '{close[0]}'?)" if close else ""
+    if not close and unit in every:
+        other = next(k for k, t in UNITS.items() if unit in t)
+        raise SceneError(f"'{unit}' is a unit of {other.replace('_', ' ')}, "
+                         f"not of {kind.replace('_', ' ')} (use {format_unit_list(kind)})",
+                         key=where)
+    raise SceneError(f"unknown unit '{unit}'{hint}; use {format_unit_list(kind)}", key=where)
+
+
+def parse_quantity(raw, kind: str, *, where: str = "", default_unit: str | None = None,
+                   need_sense: bool = False, allow_sense: bool = False) -> Quantity:
+    """Parse a bare number or a ``"value unit [cw|ccw]"`` string into SI.
+
+    Parameters
+    ----------
+    raw : int, float or str
+        ``50``, ``"50 mm"``, ``"10.5 rad/s cw"``.
+    kind : str
+        A key of :data:`UNITS`.
+    where : str
+        The scene key, for error messages.
+    default_unit : str, optional
+        The unit of a bare number; without it a bare number is an error.
+    need_sense, allow_sense : bool
+        Whether ``cw``/``ccw`` must / may follow.
+    """
+    if isinstance(raw, bool) or not isinstance(raw, (int, float, str)):
+        raise SceneError(f"expected a number or a string such as \"50 mm\", got {_kind_of(raw)}",
+                         key=where)
+    sense = None
+    if isinstance(raw, str):
+        text = raw.strip()
+        words = text.split()
+        if words and words[-1].lower() in _SENSES:
+            sense = "ccw" if words[-1].lower() in ("ccw", "acw") else "cw"
+            text = " ".join(words[:-1])
+        m = _QUANTITY.match(text)
+        if not m:
+            raise SceneError(f"cannot read '{raw}' as a quantity (a number, then a unit)",
+                             key=where)
+        value = float(m.group(1))
+        unit = m.group(2).strip()
+        if not unit:
+            if default_unit is None:
+                raise SceneError(f"'{raw}' has no unit; write it as e.g. "
+                                 f"\"{m.group(1)} {format_unit_list(kind).split(', ')[0]}\"",
+                                 key=where)
+            unit = default_unit
+        factor = _unit_factor(unit, kind, where)
+    else:
+        value = float(raw)
+        if default_unit is None:
+            raise SceneError(f"{raw} has no unit; write it as a string such as "
+                             f"\"{raw} {format_unit_list(kind).split(', ')[0]}\"", key=where)
+        factor = _unit_factor(default_unit, kind, where)
+    if not math.isfinite(value):
+        raise SceneError(f"'{raw}' is not a finite number", key=where)
+    if sense is not None and not (need_sense or allow_sense):
+        raise SceneError(f"'{raw}': a sense (cw/ccw) does not belong here", key=where)
+    if need_sense and sense is None and value != 0:
+        raise SceneError(f"'{raw}' has no sense: add cw or ccw (e.g. \"{raw} ccw\")", key=where)
+    si = value * factor
+    if sense == "cw":
+        si = -si
+    return Quantity(si, sense)
+
+
+def _kind_of(raw) -> str:
+    if isinstance(raw, bool):
+        return "true/false"
+    if isinstance(raw, dict):
+        return "a table"
+    if isinstance(raw, list):
+        return "a list"
+    return type(raw).__name__
