@@ -2,9 +2,9 @@
 
 >>> parse_quantity("50 mm", "length")
 Quantity(value=0.05, sense=None)
->>> parse_quantity("180 rpm ccw", "angular_velocity").value  # 2 pi 180 / 60
+>>> parse_quantity("180 rpm ccw", "angular_velocity", need_sense=True).value  # 2 pi 180/60
 18.84955592153876
->>> parse_quantity("10.5 rad/s cw", "angular_velocity")
+>>> parse_quantity("10.5 rad/s cw", "angular_velocity", need_sense=True)
 Quantity(value=-10.5, sense='cw')
 
 Values come back in SI (m, rad, rad/s, rad/s^2, N, m/s, m/s^2, N m); a sense ``cw`` makes
