@@ -562,7 +562,8 @@ class _Loader:
                 through = ground[through]
             else:
                 through = self.coords(through, "sliders", name)
-            out.append(FixedPath(name, (math.cos(ang), math.sin(ang)), through, label))
+            u = {0.0: (1.0, 0.0), math.pi / 2: (0.0, 1.0)}.get(ang, (math.cos(ang), math.sin(ang)))
+            out.append(FixedPath(name, u, through, label))
         return out
 
     def input(self, index, ground):
@@ -735,7 +736,8 @@ class _Loader:
         roles |= {p for s in sliders if isinstance(s, GuideSlider) for p in (s.first, s.second)}
         through = {s.through for s in sliders if isinstance(s, FixedPath)}
         for name, xy in ground.items():
-            if name not in uses and xy not in through and name != inp.pivot:
+            if name not in uses and xy not in through and name != inp.pivot \
+                    and name not in {s.point for s in sliders}:
                 raise SceneError(f"ground point {name} is not joined to any link",
                                  file=self.file, key=f"[ground] {name}",
                                  line=self.line_of("ground", name))
