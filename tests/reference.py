@@ -1,0 +1,340 @@
+"""An independent high-precision reference for the solver (mpmath, 50 significant digits).
+
+It shares no kinematics with ``polygon_method``: only the scene loader's data are used.
+The mechanism is written as a square system of holonomic constraints ``f(q, t) = 0`` in
+the coordinates ``q`` (x, y of every non-ground point):
+
+* a link PQ (not the crank, not both ends on ground):  ``|P - Q|^2 - L^2 = 0``
+* the crank tip T about pivot O:  ``T - O - r (cos th, sin th) = 0``,
+  ``th(t) = th0 + omega t + alpha t^2 / 2``
+* a carried point X on link PQ:  ``X - (P + lam (Q - P) + mu perp(Q - P)) = 0``
+* a slider X on a fixed path:  ``cross(X - through, u) = 0``
+* a block X sliding along moving link G1 G2:  ``cross(X - G1, G2 - G1) = 0``
+
+Positions: Newton-Raphson from the solver's float positions.  Every constraint is at most
+quadratic in ``q``, so along a motion ``f'' = J q'' + gamma`` with a closed-form ``gamma``:
+
+* link:      ``gamma = 2 |vP - vQ|^2``
+* crank:     ``gamma = -(alpha perp(r) - omega^2 r)``, ``r = T - O``; ``f_t = -omega perp(r)``
+* carried, fixed path:  ``gamma = 0`` (linear in q)
+* guide:     ``gamma = 2 cross(vX - vG1, vG2 - vG1)``
+
+so ``J q' = -f_t`` and ``J q'' = -gamma``.
+
+Angular velocity of a link from its two ends (``r = Q - P``, rigid: ``v_rel = omega perp(r)``,
+``a_rel = alpha perp(r) - omega^2 r``; ``cross(r, perp(r)) = |r|^2``, ``cross(r, r) = 0``):
+``omega = cross(r, v_rel) / |r|^2``, ``alpha = cross(r, a_rel) / |r|^2``.
+
+A block X on moving guide G1 -> G2 (``u`` unit G1 -> G2, ``X = G1 + s u``, ``u' = omega perp(u)``):
+``vX = vG1 + omega perp(X - G1) + s' u`` and
+``aX = aG1 - omega^2 (X - G1) + alpha perp(X - G1) + 2 omega s' perp(u) + s'' u``.
+"""
+
+from __future__ import annotations
+
+import mpmath
+from mpmath import mp, mpf
+
+mp.dps = 50
+
+__all__ = [
+    "reference_solution", "reference_positions", "constraint_residuals", "constraint_jacobian",
+    "reference_slider_crank", "reference_fourbar_algebraic", "theta_at",
+]
+
+NEWTON_TOL = mpf("1e-40")
+ZERO2 = (mpf(0), mpf(0))
+
+
+def _v(xy):
+    return (mpf(xy[0]), mpf(xy[1]))
+
+
+def _sub(a, b):
+    return (a[0] - b[0], a[1] - b[1])
+
+
+def _dot(a, b):
+    return a[0] * b[0] + a[1] * b[1]
+
+
+def _cross(a, b):
+    return a[0] * b[1] - a[1] * b[0]
+
+
+def _perp(a):
+    return (-a[1], a[0])
+
+
+def _unit(a):
+    n = mpmath.sqrt(_dot(a, a))
+    return (a[0] / n, a[1] / n)
+
+
+def theta_at(scene, t):
+    """Crank angle at time t (t = 0: the scene's angle)."""
+    inp = scene.input
+    t = mpf(t)
+    return mpf(inp.angle) + mpf(inp.omega) * t + mpf(inp.alpha) * t * t / 2
+
+
+# --------------------------------------------------------------------------- constraints
+#
+# Each equation is (kind, data).  _eval gives its value and its gradient as a list of
+# (point, d/dx, d/dy) terms (ground points are dropped later).
+
+
+def _equations(scene):
+    ground = scene.ground
+    inp = scene.input
+    eqs = []
+    for lk in scene.links:
+        if lk.key == inp.crank or (lk.p in ground and lk.q in ground):
+            continue
+        eqs.append(("link", (lk.p, lk.q, mpf(lk.length))))
+    crank = scene.link(inp.crank)
+    eqs.append(("crank", (inp.pivot, inp.tip, mpf(crank.length), 0)))
+    eqs.append(("crank", (inp.pivot, inp.tip, mpf(crank.length), 1)))
+    for cp in scene.points:
+        lk = scene.link(cp.link)
+        for comp in (0, 1):
+            eqs.append(("carried", (cp.name, lk.p, lk.q, mpf(cp.lam), mpf(cp.mu), comp)))
+    for sl in scene.sliders:
+        if hasattr(sl, "guide"):
+            eqs.append(("guide", (sl.point, sl.first, sl.second)))
+        else:
+            eqs.append(("path", (sl.point, _v(sl.through), _unit(_v(sl.u)))))
+    return eqs
+
+
+def _eval(kind, d, P, th):
+    """Value and gradient terms of one equation at positions P and crank angle th."""
+    if kind == "link":
+        p, q, L = d
+        r = _sub(P[p], P[q])
+        return _dot(r, r) - L * L, [(p, 2 * r[0], 2 * r[1]), (q, -2 * r[0], -2 * r[1])]
+    if kind == "crank":
+        o, tip, r, c = d
+        trig = mpmath.cos(th) if c == 0 else mpmath.sin(th)
+        val = P[tip][c] - P[o][c] - r * trig
+        g = (1, 0) if c == 0 else (0, 1)
+        return val, [(tip, mpf(g[0]), mpf(g[1])), (o, -mpf(g[0]), -mpf(g[1]))]
+    if kind == "carried":
+        x, p, q, lam, mu, c = d
+        (px, py), (qx, qy) = P[p], P[q]
+        dx, dy = qx - px, qy - py
+        if c == 0:
+            val = P[x][0] - (px + lam * dx - mu * dy)
+            return val, [(x, mpf(1), mpf(0)), (p, -(1 - lam), -mu), (q, -lam, mu)]
+        val = P[x][1] - (py + lam * dy + mu * dx)
+        return val, [(x, mpf(0), mpf(1)), (p, mu, -(1 - lam)), (q, -mu, -lam)]
+    if kind == "path":
+        x, through, u = d
+        a = _sub(P[x], through)
+        return _cross(a, u), [(x, u[1], -u[0])]
+    if kind == "guide":
+        x, g1, g2 = d
+        a, b = _sub(P[x], P[g1]), _sub(P[g2], P[g1])
+        return _cross(a, b), [(x, b[1], -b[0]), (g2, -a[1], a[0]),
+                              (g1, a[1] - b[1], b[0] - a[0])]
+    raise ValueError(kind)
+
+
+def _unknowns(scene):
+    return [n for n in scene.point_names if n not in scene.ground]
+
+
+def _system(scene, P, th):
+    """Residual vector and Jacobian (mpmath) at positions P (dict name -> mpf pair)."""
+    names = _unknowns(scene)
+    col = {n: i for i, n in enumerate(names)}
+    eqs = _equations(scene)
+    if len(eqs) != 2 * len(names):
+        raise ValueError(f"{len(eqs)} constraint equations for {2 * len(names)} unknowns")
+    F = mpmath.matrix(len(eqs), 1)
+    J = mpmath.matrix(len(eqs), 2 * len(names))
+    for i, (kind, d) in enumerate(eqs):
+        val, grad = _eval(kind, d, P, th)
+        F[i] = val
+        for name, gx, gy in grad:
+            if name in col:
+                J[i, 2 * col[name]] += gx
+                J[i, 2 * col[name] + 1] += gy
+    return F, J, eqs, names
+
+
+def _full(scene, P):
+    out = {n: _v(xy) for n, xy in scene.ground.items()}
+    out.update({n: _v(xy) for n, xy in P.items() if n not in scene.ground})
+    return out
+
+
+def constraint_residuals(scene, positions, theta=None):
+    """Max |f| over the constraint equations at ``positions`` (theta: crank angle)."""
+    th = mpf(scene.input.angle) if theta is None else mpf(theta)
+    F, *_ = _system(scene, _full(scene, positions), th)
+    return max(abs(F[i]) for i in range(F.rows))
+
+
+def constraint_jacobian(scene, positions, theta=None):
+    """(J, unknown names): the analytic Jacobian, columns x, y of each unknown in turn."""
+    th = mpf(scene.input.angle) if theta is None else mpf(theta)
+    _, J, _, names = _system(scene, _full(scene, positions), th)
+    return J, names
+
+
+def reference_positions(scene, guess_positions, theta=None, *, max_iter=60):
+    """Newton-Raphson on the loop-closure equations from ``guess_positions``."""
+    th = mpf(scene.input.angle) if theta is None else mpf(theta)
+    P = _full(scene, guess_positions)
+    polished = False
+    for _ in range(max_iter):
+        F, J, _, names = _system(scene, P, th)
+        res = max(abs(F[i]) for i in range(F.rows))
+        if res < NEWTON_TOL and polished:
+            return P, res
+        dq = mpmath.lu_solve(J, -F)
+        for i, n in enumerate(names):
+            P[n] = (P[n][0] + dq[2 * i], P[n][1] + dq[2 * i + 1])
+        polished = res < NEWTON_TOL  # one more step after convergence: full precision
+    raise ArithmeticError(f"Newton did not converge (residual {mpmath.nstr(res, 3)})")
+
+
+# --------------------------------------------------------------------------- solution
+
+
+def reference_solution(scene, guess_positions):
+    """Positions, velocities, accelerations, link omega/alpha and slider quantities (mpf)."""
+    inp = scene.input
+    th, w, al = mpf(inp.angle), mpf(inp.omega), mpf(inp.alpha)
+    P, res = reference_positions(scene, guess_positions, th)
+    _, J, eqs, names = _system(scene, P, th)
+    n = len(eqs)
+
+    ft = mpmath.matrix(n, 1)
+    for i, (kind, d) in enumerate(eqs):
+        if kind == "crank":
+            o, tip, _, c = d
+            ft[i] = -w * _perp(_sub(P[tip], P[o]))[c]
+    qd = mpmath.lu_solve(J, -ft)
+    V = {g: ZERO2 for g in scene.ground}
+    V.update({nm: (qd[2 * i], qd[2 * i + 1]) for i, nm in enumerate(names)})
+
+    gamma = mpmath.matrix(n, 1)
+    for i, (kind, d) in enumerate(eqs):
+        if kind == "link":
+            rv = _sub(V[d[0]], V[d[1]])
+            gamma[i] = 2 * _dot(rv, rv)
+        elif kind == "crank":
+            o, tip, _, c = d
+            r = _sub(P[tip], P[o])
+            gamma[i] = -(al * _perp(r)[c] - w * w * r[c])
+        elif kind == "guide":
+            x, g1, g2 = d
+            gamma[i] = 2 * _cross(_sub(V[x], V[g1]), _sub(V[g2], V[g1]))
+    qdd = mpmath.lu_solve(J, -gamma)
+    A = {g: ZERO2 for g in scene.ground}
+    A.update({nm: (qdd[2 * i], qdd[2 * i + 1]) for i, nm in enumerate(names)})
+
+    omega, alpha = {}, {}
+    for lk in scene.links:
+        r = _sub(P[lk.q], P[lk.p])
+        r2 = _dot(r, r)
+        omega[lk.key] = _cross(r, _sub(V[lk.q], V[lk.p])) / r2
+        alpha[lk.key] = _cross(r, _sub(A[lk.q], A[lk.p])) / r2
+
+    sliders = {}
+    for sl in scene.sliders:
+        x = sl.point
+        if hasattr(sl, "guide"):
+            g1, g2 = sl.first, sl.second
+            u = _unit(_sub(P[g2], P[g1]))
+            wg, ag = omega[scene.link(sl.guide).key], alpha[scene.link(sl.guide).key]
+            rel = _sub(P[x], P[g1])
+            vx_ = (V[g1][0] + wg * _perp(rel)[0], V[g1][1] + wg * _perp(rel)[1])
+            vs = _dot(_sub(V[x], vx_), u)
+            cor = (2 * wg * vs * _perp(u)[0], 2 * wg * vs * _perp(u)[1])
+            ax_ = (A[g1][0] - wg * wg * rel[0] + ag * _perp(rel)[0],
+                   A[g1][1] - wg * wg * rel[1] + ag * _perp(rel)[1])
+            acc = _dot(_sub(_sub(A[x], ax_), cor), u)
+        else:
+            u = _unit(_v(sl.u))
+            vs, acc, cor = _dot(V[x], u), _dot(A[x], u), ZERO2
+        sliders[x] = {"vs": vs, "as": acc, "coriolis": cor}
+
+    return {"positions": P, "velocities": V, "accelerations": A, "omega": omega,
+            "alpha": alpha, "sliders": sliders, "residual": res}
+
+
+# --------------------------------------------------------------------------- closed forms
+
+
+def reference_slider_crank(r, l, e, theta, omega, alpha):
+    """Offset slider-crank: crank pivot at the origin, slider on y = e (piston right of pin).
+
+    ``x = r cos th + D``, ``D = sqrt(l^2 - s^2)``, ``s = r sin th - e``; with
+    ``x_th = -r sin th - s c / D`` and ``x_thth = -c - (c^2 - s yB) / D - s^2 c^2 / D^3``
+    (``c = r cos th``, ``yB = r sin th``): ``v = omega x_th``, ``a = alpha x_th + omega^2 x_thth``.
+    Rod B -> piston at angle phi = -asin(s / l): ``omega_rod = -c omega / D``,
+    ``alpha_rod = (yB omega^2 - c alpha) / D - s c^2 omega^2 / D^3``.
+    """
+    r, l, e, th, w, al = (mpf(v) for v in (r, l, e, theta, omega, alpha))
+    c, yb = r * mpmath.cos(th), r * mpmath.sin(th)
+    s = yb - e
+    D = mpmath.sqrt(l * l - s * s)
+    x = c + D
+    x1 = -yb - s * c / D
+    x2 = -c - (c * c - s * yb) / D - s * s * c * c / D ** 3
+    return {
+        "x": x, "v": w * x1, "a": al * x1 + w * w * x2,
+        "omega_rod": -c * w / D,
+        "alpha_rod": (yb * w * w - c * al) / D - s * c * c * w * w / D ** 3,
+    }
+
+
+def reference_fourbar_algebraic(a, b, c, d, theta2, omega2, alpha2, branch):
+    """Four-bar by the algebraic method (ME220 lecture 6): O2 at the origin, O4 at (d, 0),
+    crank O2A = a, coupler AB = b, rocker O4B = c; ``branch`` = +1 / -1 is the sign of the
+    root in ``B_y = (-Q +- sqrt(Q^2 - 4 P R)) / 2P``.
+
+    Velocities and accelerations: mpmath.diff of the closed form in time, with
+    ``theta2(t) = theta2 + omega2 t + alpha2 t^2 / 2``.
+    """
+    a, b, c, d, th0, w, al = (mpf(v) for v in (a, b, c, d, theta2, omega2, alpha2))
+    sgn = 1 if branch > 0 else -1
+
+    def pos(t):
+        th = th0 + w * t + al * t * t / 2
+        ax, ay = a * mpmath.cos(th), a * mpmath.sin(th)
+        S = (a * a - b * b + c * c - d * d) / (2 * (ax - d))
+        Pc = ay * ay / (ax - d) ** 2 + 1
+        Qc = 2 * ay * (d - S) / (ax - d)
+        Rc = (d - S) ** 2 - c * c
+        by = (-Qc + sgn * mpmath.sqrt(Qc * Qc - 4 * Pc * Rc)) / (2 * Pc)
+        bx = S - ay * by / (ax - d)
+        return ax, ay, bx, by
+
+    ax, ay, bx, by = pos(0)
+    th3 = mpmath.atan2(by - ay, bx - ax)
+    th4 = mpmath.atan2(by, bx - d)
+
+    def angle(t, which):  # continuous near t = 0: the turn from the t = 0 direction
+        ax_, ay_, bx_, by_ = pos(t)
+        r0 = (bx - ax, by - ay) if which == 3 else (bx - d, by)
+        r = (bx_ - ax_, by_ - ay_) if which == 3 else (bx_ - d, by_)
+        return mpmath.atan2(_cross(r0, r), _dot(r0, r))
+
+    def deriv(f, n):
+        return mpmath.diff(f, 0, n)
+
+    comp = [lambda t, k=k: pos(t)[k] for k in range(4)]
+    vA = (deriv(comp[0], 1), deriv(comp[1], 1))
+    vB = (deriv(comp[2], 1), deriv(comp[3], 1))
+    aA = (deriv(comp[0], 2), deriv(comp[1], 2))
+    aB = (deriv(comp[2], 2), deriv(comp[3], 2))
+    return {
+        "A": (ax, ay), "B": (bx, by), "theta3": th3, "theta4": th4,
+        "vA": vA, "vB": vB, "aA": aA, "aB": aB,
+        "omega3": deriv(lambda t: angle(t, 3), 1), "omega4": deriv(lambda t: angle(t, 4), 1),
+        "alpha3": deriv(lambda t: angle(t, 3), 2), "alpha4": deriv(lambda t: angle(t, 4), 2),
+    }
