@@ -512,6 +512,27 @@ class Plan:
     scene: Scene = field(repr=False)
     notes: tuple = ()
     fixed_links: dict = field(default_factory=dict)
+    pins: tuple = ()  # (point, radius, ((body, link key or None), ...)) for each [pins] entry
+
+    def bodies_at(self, point) -> tuple:
+        """The bodies a pin at ``point`` joins: (name, link whose omega it has, or None for
+        a body that does not turn: the ground, a block on a fixed path)."""
+        sc = self.scene
+        out = []
+        if point in sc.ground:
+            out.append(("ground", None))
+        for lk in sc.links:
+            if point in lk.points:
+                out.append((lk.key, lk.key))
+        cp = sc.carried(point)
+        if cp is not None:
+            out.append((cp.link, cp.link))
+        sl = sc.slider(point)
+        if isinstance(sl, FixedPath):
+            out.append((f"block {point}", None))
+        elif isinstance(sl, GuideSlider):
+            out.append((f"block {point}", sc.link(sl.guide).key))
+        return tuple(out)
 
     def __str__(self):
         lines = [f"plan: {len(self.steps)} steps"]
@@ -639,7 +660,9 @@ class _Compiler:
                 progress = self.try_slotted()
         self.finish()
         fixed = {lk.key: 0.0 for lk in sc.links if lk.p in sc.ground and lk.q in sc.ground}
-        return Plan(tuple(self.steps), dict(sc.ground), sc, tuple(self.notes), fixed)
+        plan = Plan(tuple(self.steps), dict(sc.ground), sc, tuple(self.notes), fixed)
+        pins = tuple((pin.point, pin.radius, plan.bodies_at(pin.point)) for pin in sc.pins)
+        return replace(plan, pins=pins)
 
     def known_link(self, link):
         return link.p in self.P and link.q in self.P

@@ -26,7 +26,6 @@ plan's business).
 
 from __future__ import annotations
 
-import difflib
 import math
 import re
 import tomllib
@@ -34,7 +33,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from .errors import PolygonMethodError, SceneError
-from .units import LENGTH_UNITS, UNITS, parse_quantity
+from .units import LENGTH_UNITS, UNITS, did_you_mean, parse_quantity
 
 __all__ = [
     "Scene", "Link", "CarriedPoint", "FixedPath", "GuideSlider", "Input", "Pin", "Load",
@@ -44,6 +43,8 @@ __all__ = [
 POINT_NAME = re.compile(r"[A-Z][0-9]*")
 _POINT_ONLY = re.compile(r"^[A-Z][0-9]*$")
 _LINK_NAME = re.compile(r"^(?:[A-Z][0-9]*-?)+$")
+
+_UNIT_ORDER = ("mm", "cm", "m", "in")
 
 #: the largest and smallest lengths a scene may state, in metres
 _ABSURD_LONG = 1e4
@@ -255,17 +256,88 @@ def parse_scene(text: str, file: str | None = None) -> Scene:
     try:
         raw = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        msg = str(exc)
-        m = re.search(r"\(at line (\d+), column (\d+)\)", msg)
-        core = re.sub(r"\s*\(at line.*?\)", "", msg).strip()
-        where = f"line {m.group(1)}, column {m.group(2)}" if m else None
-        raise SceneError(f"TOML syntax error: {core}", file=file, key=where) from None
+        raise _syntax_error(str(exc), text, file) from None
+    except RecursionError:
+        raise SceneError("TOML nested too deeply (brackets or braces inside each other "
+                         "hundreds of times); a scene needs at most [x, y] pairs and small "
+                         "tables", file=file, key=_deepest_key(text)) from None
+    if not raw:
+        raise SceneError("the file has no tables or keys (only comments); a scene needs "
+                         "[ground], [links] and [input]", file=file)
     return _Loader(raw, text, file).scene()
 
 
+#: tomllib's messages, in the words of this tool
+_TOML_WORDS = [
+    (r"^Unclosed array$", "unclosed array: a ']' is missing"),
+    (r"^Unclosed inline table$", "unclosed inline table: a '}' is missing"),
+    (r"^Illegal character '\\n'$", "a string is not closed before the end of the line "
+     "(a '\"' is missing)"),
+    (r"^Expected '\]' at the end of a table declaration$",
+     "expected ']' at the end of a table header such as [links]"),
+    (r"^Cannot declare \((.*?),?\) twice$", None),
+    (r"^Expected newline or end of document after a statement$",
+     "expected the end of the line after a value (a missing quote, comma or '=', or two "
+     "values on one line?)"),
+    (r"^Invalid value$", "invalid value (strings need quotes: \"50 mm\", \"AB\")"),
+]
+
+
+def _syntax_error(msg, text, file) -> SceneError:
+    """A TOML decode error as a :class:`SceneError` at its line and column."""
+    m = re.search(r"\(at line (\d+), column (\d+)\)", msg)
+    core = re.sub(r"\s*\(at (line|end).*?\)", "", msg).strip()
+    where = f"line {m.group(1)}, column {m.group(2)}" if m else None
+    if core.startswith("Cannot overwrite a value"):
+        dup = _duplicate_key(text)
+        if dup is not None:
+            table, key, first, again = dup
+            label = f"[{table}] {key}" if table else key
+            return SceneError(f"duplicate key {key} (first given on line {first}); give each "
+                              "key once", file=file, key=label, line=again)
+    for pattern, words in _TOML_WORDS:
+        hit = re.match(pattern, core)
+        if hit:
+            if words is None:  # a table declared twice
+                name = ".".join(part.strip(" '\"") for part in hit.group(1).split(","))
+                words = f"[{name}] is declared twice; put all its keys under one header"
+            core = words
+            break
+    else:
+        core = core[:1].lower() + core[1:]
+    return SceneError(f"TOML syntax error: {core}", file=file, key=where)
+
+
+def _duplicate_key(text):
+    """(table, key, first line, second line) of a key given twice in one table, or None."""
+    table, seen = "", {}
+    for i, line in enumerate(text.splitlines(), 1):
+        head = re.match(r"^\s*\[\s*([^\[\]]+?)\s*\]\s*(#.*)?$", line)
+        if head:
+            table = head.group(1).strip('"')
+            continue
+        m = re.match(r"^\s*(\"[^\"]*\"|[A-Za-z0-9_\-]+)\s*=", line)
+        if m:
+            key = m.group(1).strip('"')
+            if (table, key) in seen:
+                return table, key, seen[(table, key)], i
+            seen[(table, key)] = i
+    return None
+
+
+def _deepest_key(text):
+    """The key whose value opens the most brackets on one line (for nesting errors)."""
+    best, where = 0, None
+    for i, line in enumerate(text.splitlines(), 1):
+        m = re.match(r"^\s*([^=\s]+)\s*=", line)
+        depth = line.count("[") + line.count("{")
+        if m and depth > best:
+            best, where = depth, f"{m.group(1).strip(chr(34))} (line {i})"
+    return where
+
+
 def _suggest(word, choices) -> str:
-    close = difflib.get_close_matches(str(word), list(choices), n=1, cutoff=0.5)
-    return f" (did you mean '{close[0]}'?)" if close else ""
+    return did_you_mean(word, list(choices))
 
 
 class _Loader:
@@ -353,7 +425,7 @@ class _Loader:
                                  line=self.line_of(key) if kind == "table" else self.top_line(key))
         units = raw.get("units", "mm")
         if units not in LENGTH_UNITS:
-            raise SceneError(f"unknown length unit {units!r}{_suggest(units, LENGTH_UNITS)}; "
+            raise SceneError(f"unknown length unit {units!r}{_suggest(units, _UNIT_ORDER)}; "
                              "use mm, cm, m or in", file=self.file, key="units",
                              line=self.top_line("units"))
         self.unit = units
@@ -373,8 +445,8 @@ class _Loader:
         for key, value in self.table("links", required=True).items():
             pts = split_name(key)
             if len(pts) != 2:
-                raise self.error("a link is named by its two joint points, e.g. BC or "
-                                 "\"O2-A\"", "links", key)
+                raise self.error(f"{key!r} is not a link name: a link is named by its two "
+                                 "joint points, e.g. BC or \"O2-A\"", "links", key)
             if pts[0] == pts[1]:
                 raise self.error("a link joins two different points", "links", key)
             if isinstance(value, dict):
@@ -545,6 +617,12 @@ class _Loader:
                                  "\"horizontal\", \"vertical\" or an angle such as \"30 deg\"",
                                  "sliders", name)
             path = spec["path"]
+            if isinstance(path, str) and not re.match(r"^\s*[-+.\d]", path) \
+                    and path not in ("horizontal", "vertical"):
+                raise self.error(f"path = {path!r}: use \"horizontal\", \"vertical\" or an "
+                                 "angle such as \"30 deg\"" + _suggest(path, ("horizontal",
+                                                                            "vertical")),
+                                 "sliders", name)
             if path == "horizontal":
                 ang, label = 0.0, "horizontal"
             elif path == "vertical":
@@ -735,14 +813,19 @@ class _Loader:
         roles = set(ground) | {p.name for p in points} | {s.point for s in sliders}
         roles |= {p for s in sliders if isinstance(s, GuideSlider) for p in (s.first, s.second)}
         through = {s.through for s in sliders if isinstance(s, FixedPath)}
-        for name, xy in ground.items():
-            if name not in uses and xy not in through and name != inp.pivot \
-                    and name not in {s.point for s in sliders}:
-                raise SceneError(f"ground point {name} is not joined to any link",
-                                 file=self.file, key=f"[ground] {name}",
-                                 line=self.line_of("ground", name))
+        lonely = [name for name, xy in ground.items()
+                  if name not in uses and xy not in through and name != inp.pivot]
         for lk in links:
             for p in lk.points:
                 if uses[p] == 1 and p not in roles:
+                    other = lk.other(p)
+                    guess = [f"{other}{g}" if len(other) == len(g) == 1 else f"{other}-{g}"
+                             for g in lonely]
+                    hint = (f" (did you mean {guess[0]}? ground point {lonely[0]} is joined to "
+                            "nothing)") if guess else ""
                     raise self.error(f"point {p} appears only in link {lk.key} and nowhere "
-                                     "else: nothing holds it (a typo?)", "links", lk.key)
+                                     f"else: nothing holds it (a typo?){hint}", "links", lk.key)
+        for name in lonely:
+            raise SceneError(f"ground point {name} is not joined to any link: add its link "
+                             "or remove it", file=self.file, key=f"[ground] {name}",
+                             line=self.line_of("ground", name))

@@ -116,35 +116,27 @@ class Solution:
     # ----- derived quantities
     def bodies_at(self, point) -> dict:
         """Each body a pin at ``point`` joins, with its angular velocity."""
-        sc = self.scene
-        out = {}
-        if point in sc.ground:
-            out["ground"] = 0.0
-        for lk in sc.links:
-            if point in lk.points:
-                out[lk.key] = self.W[lk.key]
-        cp = sc.carried(point)
-        if cp is not None:
-            out[cp.link] = self.W[cp.link]
-        sl = sc.slider(point)
-        if isinstance(sl, FixedPath):
-            out[f"block {point}"] = 0.0
-        elif isinstance(sl, GuideSlider):
-            out[f"block {point}"] = self.W[sc.link(sl.guide).key]
-        return out
+        W = self.W
+        return {body: (W[link] if link is not None else 0.0)
+                for body, link in self.plan.bodies_at(point)}
 
     @cached_property
     def rubbing(self) -> dict:
-        """Pin -> :class:`PinRubbing`, for every pin with a size in ``[pins]``."""
+        """Pin -> :class:`PinRubbing`, for every pin with a size in ``[pins]``.
+
+        At each pin, for each pair of bodies it joins: ``|w1 - w2| r`` (signed omegas: the
+        sum of the magnitudes when they turn in opposite senses, the difference when alike).
+        """
         out = {}
-        for pin in self.scene.pins:
-            bodies = self.bodies_at(pin.point)
+        W = self.W
+        for point, radius, joined in self.plan.pins:
+            bodies = {body: (W[link] if link is not None else 0.0) for body, link in joined}
             names = list(bodies)
             pairs = {}
             for i, a in enumerate(names):
                 for b in names[i + 1:]:
-                    pairs[f"{a}|{b}"] = abs(bodies[a] - bodies[b]) * pin.radius
-            out[pin.point] = PinRubbing(pin.point, pin.radius, bodies, pairs)
+                    pairs[f"{a}|{b}"] = abs(bodies[a] - bodies[b]) * radius
+            out[point] = PinRubbing(point, radius, bodies, pairs)
         return out
 
     @cached_property

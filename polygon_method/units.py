@@ -20,7 +20,8 @@ from dataclasses import dataclass
 
 from .errors import SceneError
 
-__all__ = ["Quantity", "parse_quantity", "UNITS", "LENGTH_UNITS", "format_unit_list"]
+__all__ = ["Quantity", "parse_quantity", "UNITS", "LENGTH_UNITS", "format_unit_list",
+           "suggest", "did_you_mean"]
 
 _PI = math.pi
 
@@ -66,6 +67,48 @@ def format_unit_list(kind: str) -> str:
     return ", ".join(u for u in UNITS[kind] if "." not in u)
 
 
+def _edits(a: str, b: str) -> int:
+    """Damerau-Levenshtein distance (a swap of two neighbours counts as one typo)."""
+    d = [[i + j if i * j == 0 else 0 for j in range(len(b) + 1)] for i in range(len(a) + 1)]
+    for i in range(1, len(a) + 1):
+        for j in range(1, len(b) + 1):
+            cost = a[i - 1] != b[j - 1]
+            d[i][j] = min(d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost)
+            if i > 1 and j > 1 and a[i - 1] == b[j - 2] and a[i - 2] == b[j - 1]:
+                d[i][j] = min(d[i][j], d[i - 2][j - 2] + 1)
+    return d[-1][-1]
+
+
+def suggest(word, choices) -> str | None:
+    """The choice a typo most likely meant, or None.
+
+    Fewest typos first (a swapped pair counts as one), then the same length, then the
+    order of ``choices``.
+
+    >>> suggest("rmp", ["rad/s", "rpm", "rps"]), suggest("mn", ["mm", "cm", "m"])
+    ('rpm', 'mm')
+    >>> suggest("zzz", ["mm", "cm"]) is None, suggest("Z", ["A", "B"]) is None
+    (True, True)
+    """
+    word = str(word)
+    choices = [str(c) for c in choices]
+    if not word or not choices or len(word) > 60:
+        return None
+    limit = min(max(1, (len(word) + 1) // 3), len(word) - 1)  # "Z" does not suggest "A"
+    ranked = sorted((_edits(word.lower(), c.lower()), len(c) != len(word), i, c)
+                    for i, c in enumerate(choices))
+    if ranked[0][0] <= limit:
+        return ranked[0][3]
+    close = difflib.get_close_matches(word, choices, n=1, cutoff=0.6)
+    return close[0] if close else None
+
+
+def did_you_mean(word, choices) -> str:
+    """`` (did you mean 'X'?)`` or an empty string."""
+    best = suggest(word, choices)
+    return f" (did you mean '{best}'?)" if best is not None else ""
+
+
 def _unit_factor(unit: str, kind: str, where: str) -> float:
     table = UNITS[kind]
     if unit in table:
@@ -73,15 +116,13 @@ def _unit_factor(unit: str, kind: str, where: str) -> float:
     folded = {u.lower(): f for u, f in table.items()}
     if unit.lower() in folded and kind not in ("force",):
         return folded[unit.lower()]
-    every = [u for k in UNITS.values() for u in k]
-    close = difflib.get_close_matches(unit, list(table), n=1, cutoff=0.5)
-    hint = f" (did you mean '{close[0]}'?)" if close else ""
-    if not close and unit in every:
-        other = next(k for k, t in UNITS.items() if unit in t)
+    other = next((k for k, t in UNITS.items() if unit in t), None)
+    if other is not None:
         raise SceneError(f"'{unit}' is a unit of {other.replace('_', ' ')}, "
                          f"not of {kind.replace('_', ' ')} (use {format_unit_list(kind)})",
                          key=where)
-    raise SceneError(f"unknown unit '{unit}'{hint}; use {format_unit_list(kind)}", key=where)
+    raise SceneError(f"unknown unit '{unit}'{did_you_mean(unit, table)}; "
+                     f"use {format_unit_list(kind)}", key=where)
 
 
 def parse_quantity(raw, kind: str, *, where: str = "", default_unit: str | None = None,
