@@ -38,7 +38,7 @@ class PolygonMethodError(Exception):
         What is wrong and, where it helps, what to do.
     file, key, line, step : optional
         Where: the scene file, the table/key (``"[links] BC"``), the line in the file,
-        the plan step (``"step 2 (dyad BC-CD at C)"``).
+        the plan step (``"step 2 (dyad BC, CD at C)"``).
     """
 
     def __init__(self, message, *, file=None, key=None, line=None, step=None):

@@ -174,7 +174,7 @@ class Dyad(Step):
 
     @property
     def title(self):
-        return f"dyad {self.link1}-{self.link2} at {self.point}"
+        return f"dyad {self.link1}, {self.link2} at {self.point}"
 
     def candidates(self, P, ctx):
         (bx, by), (dx, dy) = P[self.b], P[self.d]
@@ -276,8 +276,13 @@ class SliderDyad(Step):
 
     @property
     def title(self):
-        where = f"path {self.path.label}" if self.path else f"link {self.guide}"
-        return f"link {self.link} with slider {self.point} on {where}"
+        if self.path is None:
+            where = f"link {self.guide}"
+        elif self.path.label in ("horizontal", "vertical"):
+            where = f"the {self.path.label} path"
+        else:
+            where = f"the path {self.path.label}"
+        return f"link {self.link}, slider {self.point} on {where}"
 
     def _line(self, P):
         if self.path is not None:
@@ -813,16 +818,23 @@ class _Compiler:
                 why = (f"{', '.join(missing)} cannot be found by the construction steps "
                        "(crank, dyad, slider, slotted link, carried point): the chain needs "
                        "a construction these steps do not make, or a part is missing")
-            raise MobilityError(why, file=sc.file)
+            loose = [lk.key for lk in sc.links
+                     if lk.key not in self.used_links and (lk.p in missing or lk.q in missing)]
+            where = f"[links] {', '.join(loose)}" if loose else "[links]"
+            raise MobilityError(why, file=sc.file, key=where)
         parts = []
         if extra_links:
             parts.append(f"link{'s' if len(extra_links) > 1 else ''} "
                          f"{', '.join(extra_links)} {'is' if len(extra_links) == 1 else 'are'}"
-                         " redundant (both ends already fixed by the other links)")
+                         " redundant (both ends already fixed by the other links): remove "
+                         f"{'it' if len(extra_links) == 1 else 'them'} or check the scene")
         if extra_sliders:
             parts.append(f"slider{'s' if len(extra_sliders) > 1 else ''} "
                          f"{', '.join(extra_sliders)} cannot slide (already fixed)")
-        raise MobilityError(f"{mob}: over-constrained: " + "; ".join(parts), file=sc.file)
+        where = (f"[links] {', '.join(extra_links)}" if extra_links
+                 else f"[sliders] {', '.join(extra_sliders)}")
+        raise MobilityError(f"{mob}: over-constrained: " + "; ".join(parts), file=sc.file,
+                            key=where)
 
 
 def step_scale(step) -> float:
