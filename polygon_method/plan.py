@@ -25,8 +25,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field, replace
 
-from .errors import TOL, AssemblyError, MobilityError, SingularStepError
-from .scene import CarriedPoint, FixedPath, GuideSlider, Scene
+from .errors import TOL, AssemblyError, MobilityError, PolygonMethodError, SingularStepError
+from .scene import FixedPath, GuideSlider, Scene, split_name
 
 __all__ = ["Plan", "compile_plan", "Crank", "Dyad", "SliderDyad", "SlottedLink", "Carried",
            "Context"]
@@ -197,13 +197,20 @@ class Dyad(Step):
         mx, my = bx + along * ux, by + along * uy
         return (mx, my), (-uy * h, ux * h), e, h
 
+    def side(self, which) -> str:
+        """The name of a side: the link itself, or ``BE on BC`` for a side of a plate."""
+        key, k = (self.link1, self.b) if which == 1 else (self.link2, self.d)
+        if set(split_name(key)) == {k, self.point}:
+            return key
+        return f"{k}{self.point} (on {key})"
+
     def _why(self, e):
         u = self.unit
         if self.l1 + self.l2 < e:
-            return (f"cannot assemble {self.point}: {self.link1} + {self.link2} = "
+            return (f"cannot assemble {self.point}: {self.side(1)} + {self.side(2)} = "
                     f"{_mm(self.l1 + self.l2, u)} {self.uname} < {self.b}{self.d} = "
                     f"{_mm(e, u)} {self.uname} (short by {_mm(e - self.l1 - self.l2, u)})")
-        return (f"cannot assemble {self.point}: |{self.link1} - {self.link2}| = "
+        return (f"cannot assemble {self.point}: |{self.side(1)} - {self.side(2)}| = "
                 f"{_mm(abs(self.l1 - self.l2), u)} {self.uname} > {self.b}{self.d} = "
                 f"{_mm(e, u)} {self.uname} (by {_mm(abs(self.l1 - self.l2) - e, u)})")
 
@@ -553,12 +560,15 @@ class Plan:
         """
         zero = (0.0, 0.0)
         P = dict(self.ground)
-        for st in self.steps:
-            st.positions(P, ctx)
+        try:
+            for st in self.steps:
+                st.positions(P, ctx)
+            if not ctx.array:
+                self._check(ctx)
+        except PolygonMethodError as exc:  # name the scene file in the one-line message
+            raise exc.located(self.scene.file)
         V, W, S = dict.fromkeys(self.ground, zero), dict(self.fixed_links), {}
         A, Al = dict.fromkeys(self.ground, zero), dict(self.fixed_links)
-        if not ctx.array:
-            self._check(ctx)
         if velocities:
             for st in self.steps:
                 st.velocities(P, V, W, S, ctx)
@@ -603,7 +613,10 @@ def compile_plan(scene: Scene) -> Plan:
     cached = scene._cache.get("plan")
     if cached is not None:
         return cached
-    plan = _Compiler(scene).run()
+    try:
+        plan = _Compiler(scene).run()
+    except PolygonMethodError as exc:  # name the scene file in the one-line message
+        raise exc.located(scene.file)
     scene._cache["plan"] = plan
     return plan
 
@@ -640,6 +653,7 @@ class _Compiler:
                            if lk.p in scene.ground and lk.q in scene.ground}
         self.used_sliders = set()
         self.notes = []
+        self._bodies = {}
 
     def add(self, step):
         step = self.choose_branch(step)
@@ -672,38 +686,72 @@ class _Compiler:
     def known_link(self, link):
         return link.p in self.P and link.q in self.P
 
+    def body(self, key) -> dict:
+        """Points of link ``key`` in its own frame: P at (0, 0), Q at (L, 0), carried points
+        at (lam L, mu L). A link with carried points is one rigid body (a plate)."""
+        b = self._bodies.get(key)
+        if b is None:
+            sc = self.scene
+            lk = sc.link(key)
+            b = {lk.p: (0.0, 0.0), lk.q: (lk.length, 0.0)}
+            for cp in sc.points:
+                if cp.link == lk.key:
+                    b[cp.name] = (cp.lam * lk.length, cp.mu * lk.length)
+            self._bodies[key] = b
+        return b
+
+    def bodies_of(self, name):
+        return [lk.key for lk in self.scene.links if name in self.body(lk.key)]
+
+    def carried_step(self, name, key, refs, how=""):
+        """X = R1 + lam (R2 - R1) + mu perp(R2 - R1) from the body's own frame."""
+        b = self.body(key)
+        (x1, y1), (x2, y2), (x, y) = b[refs[0]], b[refs[1]], b[name]
+        dx, dy = x2 - x1, y2 - y1
+        n2 = dx * dx + dy * dy
+        lam = ((x - x1) * dx + (y - y1) * dy) / n2
+        mu = (dx * (y - y1) - dy * (x - x1)) / n2
+        return Carried(len(self.steps), name, key, refs[0], refs[1], lam, mu, how)
+
     def try_point(self, name) -> bool:
         sc = self.scene
         cp = sc.carried(name)
-        if cp is not None:
-            link = sc.link(cp.link)
-            if self.known_link(link):
-                self.add(Carried(len(self.steps), name, link.key, link.p, link.q, cp.lam,
-                                 cp.mu, cp.how))
+        free = []  # (body link key, known point K of it, |KX|)
+        for key in self.bodies_of(name):
+            b = self.body(key)
+            known = [p for p in b if p in self.P]
+            lk = sc.link(key)
+            if len(known) >= 2:
+                ends = [p for p in lk.points if p in self.P]
+                refs = ends if len(ends) == 2 else known[:2]
+                if key not in self.used_links and name in lk.points:
+                    continue  # both ends known, the link unused: redundant, reported later
+                how = cp.how if cp is not None and cp.link == key else ""
+                self.add(self.carried_step(name, key, refs, how))
                 return True
-            return False
-        free = [lk for lk in sc.links if name in lk.points and lk.key not in self.used_links
-                and lk.other(name) in self.P]
+            if len(known) == 1 and key not in self.used_links:
+                k = known[0]
+                (kx, ky), (x, y) = b[k], b[name]
+                free.append((key, k, math.hypot(x - kx, y - ky)))
         sl = sc.slider(name)
         if sl is not None and name not in self.used_sliders and free:
+            key, k, length = free[0]
             if isinstance(sl, FixedPath):
-                lk = free[0]
                 self.used_sliders.add(name)
-                self.add(SliderDyad(len(self.steps), name, lk.other(name), lk.key, lk.length,
+                self.add(SliderDyad(len(self.steps), name, k, key, length,
                                     path=sl, unit=self.unit, uname=self.uname))
                 return True
             guide = sc.link(sl.guide)
             if self.known_link(guide) and guide.key in self.used_links:
-                lk = free[0]
                 self.used_sliders.add(name)
-                self.add(SliderDyad(len(self.steps), name, lk.other(name), lk.key, lk.length,
+                self.add(SliderDyad(len(self.steps), name, k, key, length,
                                     guide=guide.key, g1=sl.first, g2=sl.second,
                                     unit=self.unit, uname=self.uname))
                 return True
         if len(free) >= 2:
-            l1, l2 = free[0], free[1]
-            self.add(Dyad(len(self.steps), name, l1.other(name), l1.key, l1.length,
-                          l2.other(name), l2.key, l2.length, unit=self.unit, uname=self.uname))
+            (k1, b1, l1), (k2, b2, l2) = free[0], free[1]
+            self.add(Dyad(len(self.steps), name, b1, k1, l1, b2, k2, l2, unit=self.unit,
+                          uname=self.uname))
             return True
         return False
 
@@ -790,7 +838,8 @@ class _Compiler:
         if min(d1, d2) > reach or abs(d1 - d2) <= 1e-9 * scale:
             raise AssemblyError(
                 f"assembly {name} = {self.fmt(hint)} matches neither position of {name} "
-                f"({self.fmt(plus)} or {self.fmt(minus)})", key=f"[assembly] {name}",
+                f"({self.fmt(plus)} or {self.fmt(minus)}); give a rough position near the "
+                "one the figure shows", key=f"[assembly] {name}",
                 file=self.scene.file)
         return 1.0 if d1 < d2 else -1.0
 

@@ -37,7 +37,8 @@ from .units import LENGTH_UNITS, UNITS, did_you_mean, parse_quantity
 
 __all__ = [
     "Scene", "Link", "CarriedPoint", "FixedPath", "GuideSlider", "Input", "Pin", "Load",
-    "Answer", "load_scene", "parse_scene", "split_name", "ANSWER_KINDS",
+    "Answer", "load_scene", "parse_scene", "split_name", "ANSWER_KINDS", "parse_answers",
+    "load_answers",
 ]
 
 POINT_NAME = re.compile(r"[A-Z][0-9]*")
@@ -338,6 +339,16 @@ def _deepest_key(text):
 
 def _suggest(word, choices) -> str:
     return did_you_mean(word, list(choices))
+
+
+def _which_point(name, known) -> str:
+    """A did-you-mean, or else the scene's points, for a message about an unknown point."""
+    names = sorted(known, key=lambda p: (p[0], len(p), p))
+    hint = _suggest(name, names)
+    if hint or not names:
+        return hint
+    listed = ", ".join(names[:12]) + (", ..." if len(names) > 12 else "")
+    return f" (its points are {listed})"
 
 
 class _Loader:
@@ -654,7 +665,9 @@ class _Loader:
                 raise self.error(f"unknown key{_suggest(k, INPUT_KEYS)}", "input", k)
         for k in ("crank", "angle", "speed"):
             if k not in spec:
-                raise self.error(f"[input] needs {k}", "input", k)
+                example = {"crank": "crank = \"AB\"", "angle": "angle = 60",
+                           "speed": "speed = \"10 rad/s ccw\""}[k]
+                raise self.error(f"[input] has no {k}: add e.g. {example}", "input")
         link, pts = self.find_link(spec["crank"], "input", "crank")
         on_ground = [p for p in pts if p in ground]
         if not on_ground:
@@ -681,7 +694,7 @@ class _Loader:
         out = {}
         for name, hint in self.table("assembly").items():
             if name not in known:
-                raise self.error(f"no point {name} in the scene{_suggest(name, known)}",
+                raise self.error(f"no point {name} in the scene{_which_point(name, known)}",
                                  "assembly", name)
             if isinstance(hint, str):
                 if hint not in ("above", "below", "left", "right"):
@@ -696,7 +709,7 @@ class _Loader:
         out = []
         for name, spec in self.table("pins").items():
             if name not in known:
-                raise self.error(f"no point {name} in the scene{_suggest(name, known)}",
+                raise self.error(f"no point {name} in the scene{_which_point(name, known)}",
                                  "pins", name)
             if not isinstance(spec, dict) or len(spec) != 1 or \
                     next(iter(spec)) not in ("diameter", "radius"):
@@ -725,7 +738,7 @@ class _Loader:
                 out.append(Load(self.index[frozenset(split_name(name))].key, torque=t))
                 continue
             if name not in known:
-                raise self.error(f"load on unknown point {name}{_suggest(name, known)}",
+                raise self.error(f"load on unknown point {name}{_which_point(name, known)}",
                                  "loads", name)
             f = spec.get("force")
             if f is None:
@@ -787,7 +800,7 @@ class _Loader:
                 raise self.error("v_X or v_XY: one or two points", "answers", key)
             for n in names:
                 if n not in known:
-                    raise self.error(f"no point {n} in the scene{_suggest(n, known)}",
+                    raise self.error(f"no point {n} in the scene{_which_point(n, known)}",
                                      "answers", key)
         elif what == "link":
             if len(names) != 2 or frozenset(names) not in self.index:
@@ -812,9 +825,12 @@ class _Loader:
                 uses[p] = uses.get(p, 0) + 1
         roles = set(ground) | {p.name for p in points} | {s.point for s in sliders}
         roles |= {p for s in sliders if isinstance(s, GuideSlider) for p in (s.first, s.second)}
+        plates = {p.link for p in points}  # a link carrying points is a plate: its ends belong
+        roles |= {q for lk in links if lk.key in plates for q in lk.points}
         through = {s.through for s in sliders if isinstance(s, FixedPath)}
         lonely = [name for name, xy in ground.items()
-                  if name not in uses and xy not in through and name != inp.pivot]
+                  if name not in uses and xy not in through and name != inp.pivot
+                  and name not in {s.point for s in sliders}]
         for lk in links:
             for p in lk.points:
                 if uses[p] == 1 and p not in roles:
@@ -829,3 +845,57 @@ class _Loader:
             raise SceneError(f"ground point {name} is not joined to any link: add its link "
                              "or remove it", file=self.file, key=f"[ground] {name}",
                              line=self.line_of("ground", name))
+
+
+# --------------------------------------------------------------------------- answer files
+
+_ANSWER_FILE_KEYS = ("answers", "title", "student", "name", "notes", "source")
+
+
+def parse_answers(text: str, scene: Scene, file: str | None = None):
+    """Read an answer file (an ``[answers]`` table, e.g. a student's) against ``scene``.
+
+    Keys and values follow the scene's ``[answers]`` rules. Returns
+    ``(tolerance or None, tuple of Answer)``; raises :class:`SceneError` naming the key.
+    """
+    try:
+        raw = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        m = re.search(r"\(at line (\d+), column (\d+)\)", str(exc))
+        core = re.sub(r"\s*\(at line.*?\)", "", str(exc)).strip()
+        raise SceneError(f"TOML syntax error: {core}", file=file,
+                         key=f"line {m.group(1)}, column {m.group(2)}" if m else None) from None
+    for key in raw:
+        if key not in _ANSWER_FILE_KEYS:
+            raise SceneError("an answer file holds an [answers] table (and optionally title, "
+                             f"student){_suggest(key, _ANSWER_FILE_KEYS)}", file=file, key=key)
+    if not isinstance(raw.get("answers"), dict) or not raw["answers"]:
+        raise SceneError("no [answers] table (or it is empty)", file=file, key="[answers]")
+    loader = _Loader(raw, text, file)
+    loader.unit = scene.units
+    loader.index = scene._link_index
+    tolerance, answers = loader.answers(set(scene.point_names), scene.sliders, scene.pins,
+                                        scene.loads)
+    return tolerance, tuple(answers)
+
+
+def load_answers(path, scene: Scene):
+    """Read an answer file from ``path``; see :func:`parse_answers`."""
+    path = Path(path)
+    try:
+        data = path.read_bytes()
+        text = data.decode("utf-8")
+    except FileNotFoundError:
+        raise SceneError("no such file", file=str(path)) from None
+    except IsADirectoryError:
+        raise SceneError("is a directory, not an answer file", file=str(path)) from None
+    except UnicodeDecodeError as exc:
+        raise SceneError(f"not UTF-8 text (byte {exc.start})", file=str(path)) from None
+    except OSError as exc:
+        raise SceneError(f"cannot read: {exc.strerror}", file=str(path)) from None
+    if "\x00" in text:
+        raise SceneError("not a text file (it holds binary data)", file=str(path))
+    try:
+        return parse_answers(text, scene, file=str(path))
+    except PolygonMethodError as exc:
+        raise exc.located(str(path))

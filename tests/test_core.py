@@ -168,7 +168,27 @@ angle = 70
 speed = "150 rpm ccw"
 """
 
-ALL = {"fourbar": FOURBAR, "offset_slider": OFFSET_SLIDER, "slotted_lever": SLOTTED_LEVER,
+PLATE = """
+# four-bar A-B-E-G whose coupler is a plate B, C, E named by its side BC: E is found first
+[ground]
+A = [0, 0]
+G = [120, 0]
+[links]
+AB = 40
+BC = 100
+EG = 90
+[points]
+E = { on = "BC", distances = { B = 70, C = 50 }, turn = "cw" }
+[assembly]
+E = "above"
+[input]
+crank = "AB"
+angle = 80
+speed = "10 rad/s ccw"
+acceleration = "3 rad/s^2 ccw"
+"""
+
+ALL = {"plate": PLATE, "fourbar": FOURBAR, "offset_slider": OFFSET_SLIDER, "slotted_lever": SLOTTED_LEVER,
        "whitworth": WHITWORTH, "swivel": SWIVEL, "moving_guide": MOVING_GUIDE,
        "six_link": SIX_LINK}
 
@@ -304,7 +324,7 @@ def test_engine_piston_at_90_degrees_equals_crank_pin_speed():
     assert sol.speed("B") == pytest.approx(0.05 * 10 * math.pi, rel=1e-14)
 
 
-@pytest.mark.parametrize("name", ["fourbar", "six_link", "offset_slider"])
+@pytest.mark.parametrize("name", ["fourbar", "six_link", "offset_slider", "plate"])
 def test_image_points_similar_and_same_way_round(name):
     scene = parse_scene(ALL[name])
     sol = solve(scene)
