@@ -524,7 +524,7 @@ class Plan:
     scene: Scene = field(repr=False)
     notes: tuple = ()
     fixed_links: dict = field(default_factory=dict)
-    pins: tuple = ()  # (point, radius, ((body, link key or None), ...)) for each [pins] entry
+    pins: tuple = ()  # (point, radius, ((body, link or None), ...), (("a|b", i, j), ...))
 
     def bodies_at(self, point) -> tuple:
         """The bodies a pin at ``point`` joins: (name, link whose omega it has, or None for
@@ -680,7 +680,13 @@ class _Compiler:
         self.finish()
         fixed = {lk.key: 0.0 for lk in sc.links if lk.p in sc.ground and lk.q in sc.ground}
         plan = Plan(tuple(self.steps), dict(sc.ground), sc, tuple(self.notes), fixed)
-        pins = tuple((pin.point, pin.radius, plan.bodies_at(pin.point)) for pin in sc.pins)
+        pins = []
+        for pin in sc.pins:
+            joined = plan.bodies_at(pin.point)
+            pairs = tuple((f"{a[0]}|{b[0]}", i, j) for i, a in enumerate(joined)
+                          for j, b in enumerate(joined) if j > i)
+            pins.append((pin.point, pin.radius, joined, pairs))
+        pins = tuple(pins)
         return replace(plan, pins=pins)
 
     def known_link(self, link):

@@ -129,14 +129,11 @@ class Solution:
         """
         out = {}
         W = self.W
-        for point, radius, joined in self.plan.pins:
-            bodies = {body: (W[link] if link is not None else 0.0) for body, link in joined}
-            names = list(bodies)
-            pairs = {}
-            for i, a in enumerate(names):
-                for b in names[i + 1:]:
-                    pairs[f"{a}|{b}"] = abs(bodies[a] - bodies[b]) * radius
-            out[point] = PinRubbing(point, radius, bodies, pairs)
+        for point, radius, joined, pairs in self.plan.pins:
+            omegas = [W[link] if link is not None else 0.0 for _, link in joined]
+            rub = {key: abs(omegas[i] - omegas[j]) * radius for key, i, j in pairs}
+            out[point] = PinRubbing(point, radius, dict(zip((b for b, _ in joined), omegas)),
+                                    rub)
         return out
 
     @cached_property
