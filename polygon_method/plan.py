@@ -209,10 +209,10 @@ class Dyad(Step):
         if self.l1 + self.l2 < e:
             return (f"cannot assemble {self.point}: {self.side(1)} + {self.side(2)} = "
                     f"{_mm(self.l1 + self.l2, u)} {self.uname} < {self.b}{self.d} = "
-                    f"{_mm(e, u)} {self.uname} (short by {_mm(e - self.l1 - self.l2, u)})")
+                    f"{_mm(e, u)} {self.uname} (short by {_mm(e - self.l1 - self.l2, u)} {self.uname})")
         return (f"cannot assemble {self.point}: |{self.side(1)} - {self.side(2)}| = "
                 f"{_mm(abs(self.l1 - self.l2), u)} {self.uname} > {self.b}{self.d} = "
-                f"{_mm(e, u)} {self.uname} (by {_mm(abs(self.l1 - self.l2) - e, u)})")
+                f"{_mm(e, u)} {self.uname} (by {_mm(abs(self.l1 - self.l2) - e, u)} {self.uname})")
 
     unit: float = 1e-3
     uname: str = "mm"
@@ -524,7 +524,7 @@ class Plan:
     scene: Scene = field(repr=False)
     notes: tuple = ()
     fixed_links: dict = field(default_factory=dict)
-    pins: tuple = ()  # (point, radius, ((body, link or None), ...), (("a|b", i, j), ...))
+    pins: tuple = ()  # (point, radius, body names, their links or None, (("a|b", i, j), ...))
 
     def bodies_at(self, point) -> tuple:
         """The bodies a pin at ``point`` joins: (name, link whose omega it has, or None for
@@ -685,7 +685,8 @@ class _Compiler:
             joined = plan.bodies_at(pin.point)
             pairs = tuple((f"{a[0]}|{b[0]}", i, j) for i, a in enumerate(joined)
                           for j, b in enumerate(joined) if j > i)
-            pins.append((pin.point, pin.radius, joined, pairs))
+            pins.append((pin.point, pin.radius, tuple(b for b, _ in joined),
+                         tuple(lk for _, lk in joined), pairs))
         pins = tuple(pins)
         return replace(plan, pins=pins)
 

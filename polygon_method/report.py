@@ -72,7 +72,9 @@ def solution_text(sol: Solution) -> str:
         lines.append(f"input torque on {inp.crank}: {fmt_angular(t, 'N m')} "
                      "(power balance, no friction or inertia)")
     lines.append("")
-    lines.append("plan (condition = sine of the angle between the two direction lines):")
+    lines.append("plan (condition: the sine of the angle between the step's two direction "
+                 "lines; for a slotted link, the block's distance from the pivot / the "
+                 "link's length):")
     for st in sol.plan.steps:
         c = sol.conditions.get(st.index, 1.0)
         lines.append(f"  {st.index + 1}. {st.title}: finds {', '.join(st.finds)}"

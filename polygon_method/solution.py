@@ -22,11 +22,30 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from functools import cached_property
+from typing import NamedTuple
 
 from .errors import TOL
 from .plan import Context, Dyad, Plan, SliderDyad, SlottedLink, compile_plan
 from .scene import FixedPath, GuideSlider, Scene
+
+
+
+def cached(method):
+    """A property computed once per Solution (functools.cached_property takes a lock in
+    Python 3.11, which costs more than the arithmetic here)."""
+    name = method.__name__
+
+    def get(self):
+        cache = self._cache
+        try:
+            return cache[name]
+        except KeyError:
+            value = cache[name] = method(self)
+            return value
+
+    get.__doc__ = method.__doc__
+    return property(get)
+
 
 __all__ = ["solve", "Solution", "PinRubbing", "sense", "fmt_angular"]
 
@@ -42,8 +61,7 @@ def fmt_angular(value: float, unit: str, digits: int = 4) -> str:
     return f"{abs(value):.{digits}g} {unit}" + (f" {s}" if s else "")
 
 
-@dataclass(frozen=True)
-class PinRubbing:
+class PinRubbing(NamedTuple):
     """Rubbing velocity at a pin: |w1 - w2| r for each pair of bodies the pin joins."""
 
     point: str
@@ -120,7 +138,7 @@ class Solution:
         return {body: (W[link] if link is not None else 0.0)
                 for body, link in self.plan.bodies_at(point)}
 
-    @cached_property
+    @cached
     def rubbing(self) -> dict:
         """Pin -> :class:`PinRubbing`, for every pin with a size in ``[pins]``.
 
@@ -129,14 +147,13 @@ class Solution:
         """
         out = {}
         W = self.W
-        for point, radius, joined, pairs in self.plan.pins:
-            omegas = [W[link] if link is not None else 0.0 for _, link in joined]
+        for point, radius, names, links, pairs in self.plan.pins:
+            omegas = [W[link] if link is not None else 0.0 for link in links]
             rub = {key: abs(omegas[i] - omegas[j]) * radius for key, i, j in pairs}
-            out[point] = PinRubbing(point, radius, dict(zip((b for b, _ in joined), omegas)),
-                                    rub)
+            out[point] = PinRubbing(point, radius, dict(zip(names, omegas)), rub)
         return out
 
-    @cached_property
+    @cached
     def power_terms(self) -> list:
         """(what, power in W) of each load: F . v for forces, T w for torques on links."""
         out = []
@@ -149,7 +166,7 @@ class Solution:
                 out.append((load.target, load.torque * self.W[load.target]))
         return out
 
-    @cached_property
+    @cached
     def input_torque(self):
         """T on the crank, ccw positive: T w + sum(F . v) = 0. None without loads."""
         if not self.scene.loads:
@@ -157,7 +174,7 @@ class Solution:
         return -sum(p for _, p in self.power_terms) / self.scene.input.omega
 
     # ----- conditioning
-    @cached_property
+    @cached
     def warnings(self) -> tuple:
         """One line per ill-conditioned step (condition below sin 5 deg)."""
         out = []
