@@ -47,6 +47,7 @@ class Context:
         self.cond = {}
         self.bad = None  # array mode: positions where a step failed
         self.failures = {}  # array mode: step index -> mask
+        self.rubbing = {}  # pin -> rubbing velocity of each pair of bodies it joins
         if array:
             import numpy as np
             self.np = np
@@ -86,7 +87,59 @@ class Context:
         return den
 
 
+# --------------------------------------------------------------------------- positions
+# The position of each step kind is one pure function (float or array), used both by the
+# compiler (to choose the branch) and by the compiled kernel.
+
+
+def dyad_xy(bx, by, dx, dy, l1, l2, sigma, ctx, step):
+    """X with |XB| = l1, |XD| = l2: along BD by (l1^2 - l2^2 + e^2) / 2e, off it by h.
+
+    ``4 e^2 h^2 = (l1+l2+e)(l1+l2-e)(e+l1-l2)(e-l1+l2)`` keeps h exact near a toggle.
+    Returns x, y and the condition e h / (l1 l2) = |sin| of the angle at X.
+    """
+    ex, ey = dx - bx, dy - by
+    e2 = ex * ex + ey * ey
+    e = e2 ** 0.5
+    if not ctx.array and e == 0:
+        raise step.coincident()
+    e = ctx.safe(e, step)
+    q = (l1 + l2 + e) * (l1 + l2 - e) * (e + l1 - l2) * (e - l1 + l2)
+    h = ctx.root(q, (l1 * l2) ** 2, step, lambda: step._why(e)) / (2 * e)
+    along = (l1 * l1 - l2 * l2 + e2) / (2 * e)
+    ux, uy = ex / e, ey / e
+    return (bx + along * ux - sigma * h * uy, by + along * uy + sigma * h * ux,
+            e * h / (l1 * l2))
+
+
+def slider_xy(bx, by, qx, qy, ux, uy, ell, sigma, ctx, step):
+    """X on the line Q + s u with |XB| = ell: s = -(Q - B).u +- sqrt(ell^2 - d^2),
+    d = (Q - B) x u. Returns x, y and the condition sqrt(ell^2 - d^2) / ell = |r.u| / ell."""
+    wx, wy = qx - bx, qy - by
+    b = wx * ux + wy * uy
+    dist = wx * uy - wy * ux
+    half = ctx.root((ell - dist) * (ell + dist), ell * ell, step, lambda: step._why(dist))
+    s = sigma * half - b
+    return qx + s * ux, qy + s * uy, half / ell
+
+
+def slotted_xy(kx, ky, ax, ay, length, sigma, ctx, step):
+    """The free end N = K + L sigma (A - K) / |A - K| of a link through the block at A.
+    Returns x, y and the condition min(1, |KA| / L)."""
+    dx, dy = ax - kx, ay - ky
+    m = (dx * dx + dy * dy) ** 0.5
+    if not ctx.array and m <= TOL.singular * length:
+        raise step.at_pivot()
+    m = ctx.safe(m, step)
+    f = sigma * length / m
+    c = m / length
+    return kx + f * dx, ky + f * dy, (ctx.np.minimum(c, 1.0) if ctx.array else min(c, 1.0))
+
+
 # --------------------------------------------------------------------------- steps
+# Each step emits straight-line code for the compiled kernel (see Plan.kernel). Names: a
+# point X has X_x, X_y (position), X_vx, X_vy, X_ax, X_ay; link j has w_j, al_j; a slider
+# at X has vs_X, as_X, cx_X, cy_X; step i's condition is c_i and its object S_i.
 
 
 @dataclass(frozen=True)
@@ -96,6 +149,17 @@ class Step:
     @property
     def label(self) -> str:
         return f"step {self.index + 1} ({self.title})"
+
+    def positions(self, P, ctx):
+        """Place this step's point into ``P`` (one step at a time; the kernel does all)."""
+        x, y, c = self.place(P, ctx)
+        P[self.finds[0]] = (x, y)
+        ctx.condition(self, c)
+
+    def candidates(self, P, ctx):
+        """The two assemblies as (midpoint, half the vector from one to the other)."""
+        (x1, y1, _), (x2, y2, _) = self.place(P, ctx, 1.0), self.place(P, ctx, -1.0)
+        return ((x1 + x2) / 2, (y1 + y2) / 2), ((x1 - x2) / 2, (y1 - y2) / 2)
 
 
 @dataclass(frozen=True)
@@ -120,34 +184,27 @@ class Crank(Step):
     def title(self):
         return f"crank {self.link}"
 
-    def positions(self, P, ctx):
+    def place(self, P, ctx, sigma=None):
         ox, oy = P[self.pivot]
         r = self.length
-        P[self.tip] = (ox + r * ctx.cos(ctx.theta), oy + r * ctx.sin(ctx.theta))
-        ctx.condition(self, 1.0)
+        return ox + r * ctx.cos(ctx.theta), oy + r * ctx.sin(ctx.theta), 1.0
 
-    def velocities(self, P, V, W, S, ctx):
-        (ox, oy), (x, y) = P[self.pivot], P[self.tip]
-        rx, ry = x - ox, y - oy
-        w = ctx.omega
-        vox, voy = V[self.pivot]
-        V[self.tip] = (vox - w * ry, voy + w * rx)
-        W[self.link] = w
-
-    def accelerations(self, P, V, A, W, Al, S, ctx):
-        (ox, oy), (x, y) = P[self.pivot], P[self.tip]
-        rx, ry = x - ox, y - oy
-        w, al = ctx.omega, ctx.alpha
-        aox, aoy = A[self.pivot]
-        A[self.tip] = (aox - w * w * rx - al * ry, aoy - w * w * ry + al * rx)
-        Al[self.link] = al
+    def emit(self, n):
+        O, T, r, i, j = self.pivot, self.tip, repr(self.length), self.index, n[self.link]
+        pos = (f"{T}_x = {O}_x + {r} * cos(theta); {T}_y = {O}_y + {r} * sin(theta); "
+               f"c_{i} = 1.0")
+        vel = (f"w_{j} = omega; {T}_vx = {O}_vx - omega * ({T}_y - {O}_y); "
+               f"{T}_vy = {O}_vy + omega * ({T}_x - {O}_x)")
+        acc = (f"al_{j} = alpha; k = omega * omega\n"
+               f"{T}_ax = {O}_ax - k * ({T}_x - {O}_x) - alpha * ({T}_y - {O}_y)\n"
+               f"{T}_ay = {O}_ay - k * ({T}_y - {O}_y) + alpha * ({T}_x - {O}_x)")
+        return pos, vel, acc
 
 
 @dataclass(frozen=True)
 class Dyad(Step):
     """RRR: point X with XB = l1 to known B and XD = l2 to known D.
 
-    Position: along BD by ``(l1^2 - l2^2 + e^2) / 2e``, off it by ``h`` (sign = branch).
     Velocity: ``w1 perp(r1) - w2 perp(r2) = vD - vB`` with r1 = X - B, r2 = X - D, so
     ``w1 = (vD - vB).r2 / (r1 x r2)``, ``w2 = (vD - vB).r1 / (r1 x r2)``.
     Acceleration: the same with the right side ``(aD - w2^2 r2) - (aB - w1^2 r1)``.
@@ -162,6 +219,8 @@ class Dyad(Step):
     link2: str
     l2: float
     sigma: float = 1.0
+    unit: float = 1e-3
+    uname: str = "mm"
     kind: str = "dyad"
 
     @property
@@ -176,26 +235,17 @@ class Dyad(Step):
     def title(self):
         return f"dyad {self.link1}, {self.link2} at {self.point}"
 
-    def candidates(self, P, ctx):
+    def place(self, P, ctx, sigma=None):
         (bx, by), (dx, dy) = P[self.b], P[self.d]
-        ex, ey = dx - bx, dy - by
-        e2 = ex * ex + ey * ey
-        l1, l2 = self.l1, self.l2
-        e = e2 ** 0.5
-        if not ctx.array and e == 0:
-            if l1 == l2:
-                raise SingularStepError(f"{self.b} and {self.d} coincide and {self.link1} = "
-                                        f"{self.link2}: {self.point} may be anywhere on a circle",
-                                        step=self.label)
-            raise AssemblyError(self._why(e), step=self.label)
-        e = ctx.safe(e, self)
-        # 4 e^2 h^2 = (l1+l2+e)(l1+l2-e)(e+l1-l2)(e-l1+l2): exact near a toggle
-        q = (l1 + l2 + e) * (l1 + l2 - e) * (e + l1 - l2) * (e - l1 + l2)
-        h = ctx.root(q, (l1 * l2) ** 2, self, lambda: self._why(e)) / (2 * e)
-        along = (l1 * l1 - l2 * l2 + e2) / (2 * e)
-        ux, uy = ex / e, ey / e
-        mx, my = bx + along * ux, by + along * uy
-        return (mx, my), (-uy * h, ux * h), e, h
+        s = self.sigma if sigma is None else sigma
+        return dyad_xy(bx, by, dx, dy, self.l1, self.l2, s, ctx, self)
+
+    def coincident(self):
+        if self.l1 == self.l2:
+            return SingularStepError(f"{self.b} and {self.d} coincide and {self.side(1)} = "
+                                     f"{self.side(2)}: {self.point} may be anywhere on a "
+                                     "circle", step=self.label)
+        return AssemblyError(self._why(0.0), step=self.label)
 
     def side(self, which) -> str:
         """The name of a side: the link itself, or ``BE on BC`` for a side of a plate."""
@@ -209,51 +259,39 @@ class Dyad(Step):
         if self.l1 + self.l2 < e:
             return (f"cannot assemble {self.point}: {self.side(1)} + {self.side(2)} = "
                     f"{_mm(self.l1 + self.l2, u)} {self.uname} < {self.b}{self.d} = "
-                    f"{_mm(e, u)} {self.uname} (short by {_mm(e - self.l1 - self.l2, u)} {self.uname})")
+                    f"{_mm(e, u)} {self.uname} (short by {_mm(e - self.l1 - self.l2, u)} "
+                    f"{self.uname})")
         return (f"cannot assemble {self.point}: |{self.side(1)} - {self.side(2)}| = "
                 f"{_mm(abs(self.l1 - self.l2), u)} {self.uname} > {self.b}{self.d} = "
-                f"{_mm(e, u)} {self.uname} (by {_mm(abs(self.l1 - self.l2) - e, u)} {self.uname})")
+                f"{_mm(e, u)} {self.uname} (by {_mm(abs(self.l1 - self.l2) - e, u)} "
+                f"{self.uname})")
 
-    unit: float = 1e-3
-    uname: str = "mm"
-
-    def positions(self, P, ctx):
-        (mx, my), (hx, hy), e, h = self.candidates(P, ctx)
-        s = self.sigma
-        P[self.point] = (mx + s * hx, my + s * hy)
-        ctx.condition(self, e * h / (self.l1 * self.l2))
-
-    def velocities(self, P, V, W, S, ctx):
-        (x, y), (bx, by), (dx, dy) = P[self.point], P[self.b], P[self.d]
-        r1x, r1y, r2x, r2y = x - bx, y - by, x - dx, y - dy
-        c = ctx.safe(r1x * r2y - r1y * r2x, self)
-        (vbx, vby), (vdx, vdy) = V[self.b], V[self.d]
-        wx, wy = vdx - vbx, vdy - vby
-        w1 = (wx * r2x + wy * r2y) / c
-        w2 = (wx * r1x + wy * r1y) / c
-        V[self.point] = (vbx - w1 * r1y, vby + w1 * r1x)
-        W[self.link1], W[self.link2] = w1, w2
-
-    def accelerations(self, P, V, A, W, Al, S, ctx):
-        (x, y), (bx, by), (dx, dy) = P[self.point], P[self.b], P[self.d]
-        r1x, r1y, r2x, r2y = x - bx, y - by, x - dx, y - dy
-        c = ctx.safe(r1x * r2y - r1y * r2x, self)
-        w1, w2 = W[self.link1], W[self.link2]
-        (abx, aby), (adx, ady) = A[self.b], A[self.d]
-        k1, k2 = w1 * w1, w2 * w2
-        qx = (adx - k2 * r2x) - (abx - k1 * r1x)
-        qy = (ady - k2 * r2y) - (aby - k1 * r1y)
-        a1 = (qx * r2x + qy * r2y) / c
-        a2 = (qx * r1x + qy * r1y) / c
-        A[self.point] = (abx - k1 * r1x - a1 * r1y, aby - k1 * r1y + a1 * r1x)
-        Al[self.link1], Al[self.link2] = a1, a2
+    def emit(self, n):
+        X, B, D, i = self.point, self.b, self.d, self.index
+        j1, j2 = n[self.link1], n[self.link2]
+        pos = (f"{X}_x, {X}_y, c_{i} = dyad_xy({B}_x, {B}_y, {D}_x, {D}_y, {self.l1!r}, "
+               f"{self.l2!r}, {self.sigma!r}, ctx, S_{i})")
+        vel = (f"r1x_{i} = {X}_x - {B}_x; r1y_{i} = {X}_y - {B}_y; "
+               f"r2x_{i} = {X}_x - {D}_x; r2y_{i} = {X}_y - {D}_y\n"
+               f"d_{i} = safe(r1x_{i} * r2y_{i} - r1y_{i} * r2x_{i}, S_{i})\n"
+               f"wx = {D}_vx - {B}_vx; wy = {D}_vy - {B}_vy\n"
+               f"w_{j1} = (wx * r2x_{i} + wy * r2y_{i}) / d_{i}; "
+               f"w_{j2} = (wx * r1x_{i} + wy * r1y_{i}) / d_{i}\n"
+               f"{X}_vx = {B}_vx - w_{j1} * r1y_{i}; {X}_vy = {B}_vy + w_{j1} * r1x_{i}")
+        acc = (f"k1 = w_{j1} * w_{j1}; k2 = w_{j2} * w_{j2}\n"
+               f"qx = ({D}_ax - k2 * r2x_{i}) - ({B}_ax - k1 * r1x_{i}); "
+               f"qy = ({D}_ay - k2 * r2y_{i}) - ({B}_ay - k1 * r1y_{i})\n"
+               f"al_{j1} = (qx * r2x_{i} + qy * r2y_{i}) / d_{i}; "
+               f"al_{j2} = (qx * r1x_{i} + qy * r1y_{i}) / d_{i}\n"
+               f"{X}_ax = {B}_ax - k1 * r1x_{i} - al_{j1} * r1y_{i}; "
+               f"{X}_ay = {B}_ay - k1 * r1y_{i} + al_{j1} * r1x_{i}")
+        return pos, vel, acc
 
 
 @dataclass(frozen=True)
 class SliderDyad(Step):
     """RRP: point X with XB = l to known B, sliding on a guide line (fixed or a moving link).
 
-    Position: X = Q + s u on the guide, s = -(Q - B).u +- sqrt(l^2 - ((Q - B) x u)^2).
     Velocity: ``w perp(r) - vs u = vX' - vB`` (r = X - B, X' the guide's coincident point):
     ``w = u x (vX' - vB) / (r.u)``, ``vs = -r.(vX' - vB) / (r.u)``.
     Acceleration: right side ``aX' + 2 wG vs perp(u) - aB + w^2 r`` (Coriolis on a moving guide).
@@ -291,25 +329,21 @@ class SliderDyad(Step):
             where = f"the path {self.path.label}"
         return f"link {self.link}, slider {self.point} on {where}"
 
-    def _line(self, P):
+    def line(self, P):
+        """A point of the guide line and its unit direction."""
         if self.path is not None:
             (qx, qy), (ux, uy) = self.path.through, self.path.u
             return qx, qy, ux, uy
         (gx, gy), (hx, hy) = P[self.g1], P[self.g2]
         ux, uy = hx - gx, hy - gy
-        n = (ux * ux + uy * uy) ** 0.5
-        return gx, gy, ux / n, uy / n
+        m = (ux * ux + uy * uy) ** 0.5
+        return gx, gy, ux / m, uy / m
 
-    def candidates(self, P, ctx):
-        qx, qy, ux, uy = self._line(P)
+    def place(self, P, ctx, sigma=None):
+        qx, qy, ux, uy = self.line(P)
         bx, by = P[self.b]
-        wx, wy = qx - bx, qy - by
-        b = wx * ux + wy * uy
-        dist = wx * uy - wy * ux  # signed distance of B from the line
-        ell = self.length
-        half = ctx.root((ell - dist) * (ell + dist), ell * ell, self, lambda: self._why(dist))
-        base = (qx - b * ux, qy - b * uy)
-        return base, (half * ux, half * uy), half
+        s = self.sigma if sigma is None else sigma
+        return slider_xy(bx, by, qx, qy, ux, uy, self.length, s, ctx, self)
 
     def _why(self, dist):
         u = self.unit
@@ -317,70 +351,58 @@ class SliderDyad(Step):
         return (f"cannot assemble {self.point}: {self.link} = {_mm(self.length, u)} {self.uname} "
                 f"< distance of {self.b} from the {where} = {_mm(abs(dist), u)} {self.uname}")
 
-    def positions(self, P, ctx):
-        base, (hx, hy), half = self.candidates(P, ctx)
-        s = self.sigma
-        P[self.point] = (base[0] + s * hx, base[1] + s * hy)
-        ctx.condition(self, half / self.length)
-
-    def _guide_point(self, P, V, W, x, y):
-        """Velocity of the guide's point coinciding with X (zero on a fixed path)."""
+    def emit(self, n):
+        X, B, i, j = self.point, self.b, self.index, n[self.link]
         if self.path is not None:
-            return 0.0, 0.0
-        (gx, gy), (vgx, vgy) = P[self.g1], V[self.g1]
-        wg = W[self.guide]
-        return vgx - wg * (y - gy), vgy + wg * (x - gx)
-
-    def velocities(self, P, V, W, S, ctx):
-        (x, y), (bx, by) = P[self.point], P[self.b]
-        _, _, ux, uy = self._line(P)
-        rx, ry = x - bx, y - by
-        den = ctx.safe(rx * ux + ry * uy, self)
-        vgx, vgy = self._guide_point(P, V, W, x, y)
-        vbx, vby = V[self.b]
-        wx, wy = vgx - vbx, vgy - vby
-        w = (ux * wy - uy * wx) / den
-        vs = -(rx * wx + ry * wy) / den
-        V[self.point] = (vbx - w * ry, vby + w * rx)
-        W[self.link] = w
-        S[self.point] = [vs, None, (0.0, 0.0)]
-
-    def accelerations(self, P, V, A, W, Al, S, ctx):
-        (x, y), (bx, by) = P[self.point], P[self.b]
-        _, _, ux, uy = self._line(P)
-        rx, ry = x - bx, y - by
-        den = ctx.safe(rx * ux + ry * uy, self)
-        w = W[self.link]
-        vs = S[self.point][0]
-        if self.path is None:
-            (gx, gy), (agx, agy) = P[self.g1], A[self.g1]
-            wg, ag = W[self.guide], Al[self.guide]
-            px, py = x - gx, y - gy
-            cx, cy = -2 * wg * vs * uy, 2 * wg * vs * ux
-            tx = agx - wg * wg * px - ag * py + cx
-            ty = agy - wg * wg * py + ag * px + cy
+            (qx, qy), (ux, uy) = self.path.through, self.path.u
+            line = f"ux_{i} = {ux!r}; uy_{i} = {uy!r}\n"
+            args = f"{qx!r}, {qy!r}"
         else:
-            cx = cy = tx = ty = 0.0
-        abx, aby = A[self.b]
-        qx, qy = tx - abx + w * w * rx, ty - aby + w * w * ry
-        al = (ux * qy - uy * qx) / den
-        a_s = -(rx * qx + ry * qy) / den
-        A[self.point] = (abx - w * w * rx - al * ry, aby - w * w * ry + al * rx)
-        Al[self.link] = al
-        S[self.point][1] = a_s
-        S[self.point][2] = (cx, cy)
+            G1, G2 = self.g1, self.g2
+            line = (f"ux_{i} = {G2}_x - {G1}_x; uy_{i} = {G2}_y - {G1}_y; "
+                    f"m = (ux_{i} * ux_{i} + uy_{i} * uy_{i}) ** 0.5; "
+                    f"ux_{i} = ux_{i} / m; uy_{i} = uy_{i} / m\n")
+            args = f"{G1}_x, {G1}_y"
+        pos = (line + f"{X}_x, {X}_y, c_{i} = slider_xy({B}_x, {B}_y, {args}, ux_{i}, uy_{i}, "
+               f"{self.length!r}, {self.sigma!r}, ctx, S_{i})")
+        if self.path is not None:
+            guide_v = f"wx = -{B}_vx; wy = -{B}_vy"
+            guide_a = f"cx_{X} = 0.0; cy_{X} = 0.0; tx = 0.0; ty = 0.0"
+        else:
+            G1, g = self.g1, n[self.guide]
+            guide_v = (f"wx = {G1}_vx - w_{g} * ({X}_y - {G1}_y) - {B}_vx; "
+                       f"wy = {G1}_vy + w_{g} * ({X}_x - {G1}_x) - {B}_vy")
+            guide_a = (f"cx_{X} = -2 * w_{g} * vs_{X} * uy_{i}; "
+                       f"cy_{X} = 2 * w_{g} * vs_{X} * ux_{i}\n"
+                       f"px = {X}_x - {G1}_x; py = {X}_y - {G1}_y; kg = w_{g} * w_{g}\n"
+                       f"tx = {G1}_ax - kg * px - al_{g} * py + cx_{X}; "
+                       f"ty = {G1}_ay - kg * py + al_{g} * px + cy_{X}")
+        vel = (f"rx_{i} = {X}_x - {B}_x; ry_{i} = {X}_y - {B}_y\n"
+               f"d_{i} = safe(rx_{i} * ux_{i} + ry_{i} * uy_{i}, S_{i})\n"
+               f"{guide_v}\n"
+               f"w_{j} = (ux_{i} * wy - uy_{i} * wx) / d_{i}; "
+               f"vs_{X} = -(rx_{i} * wx + ry_{i} * wy) / d_{i}\n"
+               f"{X}_vx = {B}_vx - w_{j} * ry_{i}; {X}_vy = {B}_vy + w_{j} * rx_{i}")
+        acc = (f"{guide_a}\nk = w_{j} * w_{j}\n"
+               f"qx = tx - {B}_ax + k * rx_{i}; qy = ty - {B}_ay + k * ry_{i}\n"
+               f"al_{j} = (ux_{i} * qy - uy_{i} * qx) / d_{i}; "
+               f"as_{X} = -(rx_{i} * qx + ry_{i} * qy) / d_{i}\n"
+               f"{X}_ax = {B}_ax - k * rx_{i} - al_{j} * ry_{i}; "
+               f"{X}_ay = {B}_ay - k * ry_{i} + al_{j} * rx_{i}")
+        return pos, vel, acc
 
 
 @dataclass(frozen=True)
 class SlottedLink(Step):
-    """RPR: a block pinned at known A slides along link K-U that turns about known K.
+    """RPR: a block pinned at known A slides along link K-N that turns about known K.
 
-    Position: U = K + L sigma (A - K) / |A - K|.
-    Velocity: ``vA = vK + wG perp(A - K) + vs u``; the two lines (perpendicular to KA through
-    k, parallel to the link through a) are at right angles, so ``wG = (vA - vK) x ... / |KA|``.
-    Acceleration: ``aA = aK - wG^2 (A - K) + aG perp(A - K) + 2 wG vs perp(u) + as u``.
+    Position: N = K + L sigma (A - K) / |A - K|.
+    Velocity: ``vA = vK + wG perp(A - K) + vs u``; the two direction lines (perpendicular to
+    KA through k, parallel to the link through a) are at right angles:
+    ``wG = (vA - vK) x u / -(d.u)``, ``vs = (vA - vK).d / (d.u)`` with d = A - K.
+    Acceleration: ``aA = aK - wG^2 d + aG perp(d) + 2 wG vs perp(u) + as u``.
     ``u`` is the guide's direction from its first point to its second, as named.
-    Condition: |KA| / L (the block near the pivot makes the lever's motion ill-defined).
+    Condition: min(1, |KA| / L) (the block near the pivot makes the link's motion ill-defined).
     """
 
     point: str  # the block's pin (known)
@@ -407,64 +429,38 @@ class SlottedLink(Step):
     def title(self):
         return f"block {self.point} sliding on {self.guide}"
 
-    def candidates(self, P, ctx):
+    def place(self, P, ctx, sigma=None):
         (kx, ky), (ax, ay) = P[self.known], P[self.point]
-        dx, dy = ax - kx, ay - ky
-        m = (dx * dx + dy * dy) ** 0.5
-        if not ctx.array and m <= TOL.singular * self.length:
-            raise SingularStepError(f"block {self.point} is at {self.known}, the pivot of "
-                                    f"{self.guide}: the link's direction is undefined",
-                                    step=self.label)
-        m = ctx.safe(m, self)
-        L = self.length
-        return (kx, ky), (L * dx / m, L * dy / m), m
+        s = self.sigma if sigma is None else sigma
+        return slotted_xy(kx, ky, ax, ay, self.length, s, ctx, self)
 
-    def positions(self, P, ctx):
-        (kx, ky), (hx, hy), m = self.candidates(P, ctx)
-        s = self.sigma
-        P[self.new] = (kx + s * hx, ky + s * hy)
-        c = m / self.length
-        ctx.condition(self, ctx.np.minimum(c, 1.0) if ctx.array else min(c, 1.0))
+    def at_pivot(self):
+        return SingularStepError(f"block {self.point} is at {self.known}, the pivot of "
+                                 f"{self.guide}: the link's direction is undefined",
+                                 step=self.label)
 
-    def _u(self, P):
-        (x1, y1), (x2, y2) = P[self.first], P[self.second]
-        L = self.length
-        return (x2 - x1) / L, (y2 - y1) / L
-
-    def velocities(self, P, V, W, S, ctx):
-        (kx, ky), (ax, ay) = P[self.known], P[self.point]
-        ux, uy = self._u(P)
-        dx, dy = ax - kx, ay - ky
-        (vkx, vky), (vax, vay) = V[self.known], V[self.point]
-        ex, ey = vax - vkx, vay - vky
-        # [perp(d) u] [w, vs] = e;  det = -(d.u)
-        det = ctx.safe(-(dx * ux + dy * uy), self)
-        w = (ex * uy - ux * ey) / det
-        vs = -(dx * ex + dy * ey) / det
-        (nx, ny) = P[self.new]
-        V[self.new] = (vkx - w * (ny - ky), vky + w * (nx - kx))
-        W[self.guide] = w
-        S[self.point] = [vs, None, (0.0, 0.0)]
-
-    def accelerations(self, P, V, A, W, Al, S, ctx):
-        (kx, ky), (ax, ay) = P[self.known], P[self.point]
-        ux, uy = self._u(P)
-        dx, dy = ax - kx, ay - ky
-        w = W[self.guide]
-        vs = S[self.point][0]
-        (akx, aky), (aax, aay) = A[self.known], A[self.point]
-        cx, cy = -2 * w * vs * uy, 2 * w * vs * ux
-        ex = aax - akx + w * w * dx - cx
-        ey = aay - aky + w * w * dy - cy
-        det = ctx.safe(-(dx * ux + dy * uy), self)
-        al = (ex * uy - ux * ey) / det
-        a_s = -(dx * ex + dy * ey) / det
-        nx, ny = P[self.new]
-        px, py = nx - kx, ny - ky
-        A[self.new] = (akx - w * w * px - al * py, aky - w * w * py + al * px)
-        Al[self.guide] = al
-        S[self.point][1] = a_s
-        S[self.point][2] = (cx, cy)
+    def emit(self, n):
+        A, K, N, i, g = self.point, self.known, self.new, self.index, n[self.guide]
+        F1, F2, L = self.first, self.second, repr(self.length)
+        pos = (f"{N}_x, {N}_y, c_{i} = slotted_xy({K}_x, {K}_y, {A}_x, {A}_y, {L}, "
+               f"{self.sigma!r}, ctx, S_{i})")
+        vel = (f"ux_{i} = ({F2}_x - {F1}_x) / {L}; uy_{i} = ({F2}_y - {F1}_y) / {L}\n"
+               f"dx_{i} = {A}_x - {K}_x; dy_{i} = {A}_y - {K}_y\n"
+               f"d_{i} = safe(-(dx_{i} * ux_{i} + dy_{i} * uy_{i}), S_{i})\n"
+               f"ex = {A}_vx - {K}_vx; ey = {A}_vy - {K}_vy\n"
+               f"w_{g} = (ex * uy_{i} - ux_{i} * ey) / d_{i}; "
+               f"vs_{A} = -(dx_{i} * ex + dy_{i} * ey) / d_{i}\n"
+               f"{N}_vx = {K}_vx - w_{g} * ({N}_y - {K}_y); "
+               f"{N}_vy = {K}_vy + w_{g} * ({N}_x - {K}_x)")
+        acc = (f"cx_{A} = -2 * w_{g} * vs_{A} * uy_{i}; cy_{A} = 2 * w_{g} * vs_{A} * ux_{i}\n"
+               f"k = w_{g} * w_{g}\n"
+               f"ex = {A}_ax - {K}_ax + k * dx_{i} - cx_{A}; "
+               f"ey = {A}_ay - {K}_ay + k * dy_{i} - cy_{A}\n"
+               f"al_{g} = (ex * uy_{i} - ux_{i} * ey) / d_{i}; "
+               f"as_{A} = -(dx_{i} * ex + dy_{i} * ey) / d_{i}\n"
+               f"px = {N}_x - {K}_x; py = {N}_y - {K}_y\n"
+               f"{N}_ax = {K}_ax - k * px - al_{g} * py; {N}_ay = {K}_ay - k * py + al_{g} * px")
+        return pos, vel, acc
 
 
 @dataclass(frozen=True)
@@ -492,24 +488,24 @@ class Carried(Step):
     def title(self):
         return f"point {self.point} on {self.link}"
 
-    def _map(self, D):
-        (px, py), (qx, qy) = D[self.p], D[self.q]
+    def place(self, P, ctx, sigma=None):
+        (px, py), (qx, qy) = P[self.p], P[self.q]
         dx, dy = qx - px, qy - py
-        lam, mu = self.lam, self.mu
-        return (px + lam * dx - mu * dy, py + lam * dy + mu * dx)
+        return px + self.lam * dx - self.mu * dy, py + self.lam * dy + self.mu * dx, 1.0
 
-    def positions(self, P, ctx):
-        P[self.point] = self._map(P)
-        ctx.condition(self, 1.0)
-
-    def velocities(self, P, V, W, S, ctx):
-        V[self.point] = self._map(V)
-
-    def accelerations(self, P, V, A, W, Al, S, ctx):
-        A[self.point] = self._map(A)
-
-
-# --------------------------------------------------------------------------- the plan
+    def emit(self, n):
+        X, p, q, lam, mu = self.point, self.p, self.q, repr(self.lam), repr(self.mu)
+        out = []
+        for s in ("", "v", "a"):
+            dx, dy = f"({q}_{s}x - {p}_{s}x)", f"({q}_{s}y - {p}_{s}y)"
+            x, y = f"{X}_{s}x = {p}_{s}x", f"{X}_{s}y = {p}_{s}y"
+            if self.lam:
+                x, y = f"{x} + {lam} * {dx}", f"{y} + {lam} * {dy}"
+            if self.mu:
+                x, y = f"{x} - {mu} * {dy}", f"{y} + {mu} * {dx}"
+            out.append(f"{x}; {y}")
+        out[0] += f"; c_{self.index} = 1.0"
+        return tuple(out)
 
 
 @dataclass(frozen=True)
@@ -525,6 +521,7 @@ class Plan:
     notes: tuple = ()
     fixed_links: dict = field(default_factory=dict)
     pins: tuple = ()  # (point, radius, body names, their links or None, (("a|b", i, j), ...))
+    _compiled: dict = field(default_factory=dict, repr=False, compare=False)
 
     def bodies_at(self, point) -> tuple:
         """The bodies a pin at ``point`` joins: (name, link whose omega it has, or None for
@@ -556,30 +553,88 @@ class Plan:
         """Run the plan: positions, then the velocity polygon, then the acceleration one.
 
         Returns dicts ``P, V, A`` (point -> (x, y)), ``W, Al`` (link -> omega, alpha) and
-        ``S`` (slider -> [vs, as, coriolis]).
+        ``S`` (slider -> [vs, as, coriolis]); the phases not asked for come back empty.
+        With ``Context(..., array=True)`` every value is an array over the crank angles.
         """
-        zero = (0.0, 0.0)
-        P = dict(self.ground)
         try:
-            for st in self.steps:
-                st.positions(P, ctx)
-            if not ctx.array:
-                self._check(ctx)
+            return self.kernel(ctx.theta, ctx.omega, ctx.alpha, ctx, velocities,
+                               accelerations)
         except PolygonMethodError as exc:  # name the scene file in the one-line message
             raise exc.located(self.scene.file)
-        V, W, S = dict.fromkeys(self.ground, zero), dict(self.fixed_links), {}
-        A, Al = dict.fromkeys(self.ground, zero), dict(self.fixed_links)
-        if velocities:
-            for st in self.steps:
-                st.velocities(P, V, W, S, ctx)
-        if accelerations:
-            for st in self.steps:
-                st.accelerations(P, V, A, W, Al, S, ctx)
-        return P, V, A, W, Al, S
 
-    def _check(self, ctx):
+    @property
+    def kernel(self):
+        """The plan compiled to one straight-line Python function (built once).
+
+        Each step contributes its lines (see the steps' ``emit``); the same function
+        serves a float crank angle and an array of them.
+        """
+        fn = self._compiled.get("kernel")
+        if fn is None:
+            fn = self._compiled["kernel"] = self._build_kernel()
+        return fn
+
+    def kernel_source(self) -> str:
+        return self._source()[0]
+
+    def _source(self):
+        sc = self.scene
+        n = {lk.key: j for j, lk in enumerate(sc.links)}
+        head = ["def kernel(theta, omega, alpha, ctx, vel, acc):",
+                "    cos = ctx.cos; sin = ctx.sin; safe = ctx.safe"]
+        for name, (x, y) in self.ground.items():
+            head.append(f"    {name}_x = {x!r}; {name}_y = {y!r}; "
+                        f"{name}_vx = {name}_vy = {name}_ax = {name}_ay = 0.0")
+        for key in self.fixed_links:
+            head.append(f"    w_{n[key]} = al_{n[key]} = 0.0")
+        parts = [st.emit(n) for st in self.steps]
+        body = list(head)
+
+        def block(lines):
+            for text in lines:
+                body.extend("    " + line for line in text.split("\n"))
+
+        pts = sc.point_names
+        sliders = [s.point for s in sc.sliders]
+        block(p[0] for p in parts)
+        body.append("    cond = ctx.cond = {" + ", ".join(f"{st.index}: c_{st.index}"
+                                                   for st in self.steps) + "}")
+        body.append("    if not ctx.array: check(cond)")
+        body.append("    P = {" + ", ".join(f"{p!r}: ({p}_x, {p}_y)" for p in pts) + "}")
+        body.append("    if not vel: return P, {}, {}, {}, {}, {}")
+        block(p[1] for p in parts)
+        body.append("    V = {" + ", ".join(f"{p!r}: ({p}_vx, {p}_vy)" for p in pts) + "}")
+        body.append("    W = {" + ", ".join(f"{lk.key!r}: w_{j}" for j, lk in
+                                             enumerate(sc.links)) + "}")
+        rub = []
+        for point, radius, _, links, pairs in self.pins:
+            w = [f"w_{n[lk]}" if lk is not None else "0.0" for lk in links]
+            vals = "".join(f"abs({w[i]} - {w[j]}) * {radius!r}, " for _, i, j in pairs)
+            rub.append(f"{point!r}: ({vals})")
+        body.append("    ctx.rubbing = {" + ", ".join(rub) + "}")
+        body.append("    if not acc: return P, V, {}, W, {}, {" + ", ".join(
+            f"{p!r}: [vs_{p}, None, (0.0, 0.0)]" for p in sliders) + "}")
+        block(p[2] for p in parts)
+        body.append("    A = {" + ", ".join(f"{p!r}: ({p}_ax, {p}_ay)" for p in pts) + "}")
+        body.append("    Al = {" + ", ".join(f"{lk.key!r}: al_{j}" for j, lk in
+                                              enumerate(sc.links)) + "}")
+        body.append("    S = {" + ", ".join(f"{p!r}: [vs_{p}, as_{p}, (cx_{p}, cy_{p})]"
+                                             for p in sliders) + "}")
+        body.append("    return P, V, A, W, Al, S")
+        env = {"dyad_xy": dyad_xy, "slider_xy": slider_xy, "slotted_xy": slotted_xy,
+               "check": self._check}
+        env.update({f"S_{st.index}": st for st in self.steps})
+        return "\n".join(body) + "\n", env
+
+    def _build_kernel(self):
+        src, env = self._source()
+        code = compile(src, f"<plan of {self.scene.file or 'scene'}>", "exec")
+        exec(code, env)
+        return env["kernel"]
+
+    def _check(self, cond):
         for st in self.steps:
-            c = ctx.cond.get(st.index, 1.0)
+            c = cond[st.index]
             if c < TOL.singular:
                 raise SingularStepError(_singular_why(st, c), step=st.label)
 
@@ -657,7 +712,8 @@ class _Compiler:
 
     def add(self, step):
         step = self.choose_branch(step)
-        step.positions(self.P, self.ctx)
+        x, y, _ = step.place(self.P, self.ctx)
+        self.P[step.finds[0]] = (x, y)
         self.steps.append(step)
         self.used_links.update(step.links)
 
@@ -786,9 +842,8 @@ class _Compiler:
             return step
         sc = self.scene
         name = step.finds[0]
-        base, off, *_ = step.candidates(self.P, self.ctx)
-        plus = (base[0] + off[0], base[1] + off[1])
-        minus = (base[0] - off[0], base[1] - off[1])
+        plus = step.place(self.P, self.ctx, 1.0)[:2]
+        minus = step.place(self.P, self.ctx, -1.0)[:2]
         hint = sc.assembly.get(name)
         if hint is None:
             default = self.default_hint(step)

@@ -87,6 +87,7 @@ class Solution:
     Al: dict
     S: dict
     conditions: dict
+    R: dict = field(default_factory=dict, repr=False)  # pin -> rubbing of each pair
     _cache: dict = field(default_factory=dict, repr=False, compare=False)
 
     # ----- points
@@ -146,10 +147,10 @@ class Solution:
         sum of the magnitudes when they turn in opposite senses, the difference when alike).
         """
         out = {}
-        W = self.W
+        W, R = self.W, self.R
         for point, radius, names, links, pairs in self.plan.pins:
             omegas = [W[link] if link is not None else 0.0 for link in links]
-            rub = {key: abs(omegas[i] - omegas[j]) * radius for key, i, j in pairs}
+            rub = {key: v for (key, _, _), v in zip(pairs, R[point])}
             out[point] = PinRubbing(point, radius, dict(zip(names, omegas)), rub)
         return out
 
@@ -281,5 +282,5 @@ def solve(scene: Scene) -> Solution:
     inp = scene.input
     ctx = Context(inp.angle, inp.omega, inp.alpha)
     P, V, A, W, Al, S = plan.evaluate(ctx)
-    return Solution(scene, plan, P, V, A, W, Al, S, ctx.cond)
+    return Solution(scene, plan, P, V, A, W, Al, S, ctx.cond, ctx.rubbing)
 
