@@ -15,9 +15,12 @@ Step kinds
                     relative motion brings the Coriolis component 2 omega v.
 :class:`Carried`    a point fixed on a known link; its image is found by similar triangles.
 
-Every kernel is written with arithmetic operators on ``(x, y)`` pairs so that one code path
-serves a single position (floats) and a whole sweep (numpy arrays). ``perp(x, y) = (-y, x)``
-turns a vector 90 deg counter-clockwise; ``omega x r = omega perp(r)``.
+Each step emits a few lines of arithmetic (operators only: no ``math``/``np`` calls but the
+crank's cos/sin and the shared position functions); the plan joins them into one
+straight-line function, compiled once (:attr:`Plan.kernel`, printable with
+:meth:`Plan.kernel_source`). The same function serves a single position (floats) and a whole
+sweep (numpy arrays). ``perp(x, y) = (-y, x)`` turns a vector 90 deg counter-clockwise;
+``omega x r = omega perp(r)``.
 """
 
 from __future__ import annotations
