@@ -185,7 +185,7 @@ class Scene:
     tolerance: float | None = None
     file: str | None = None
     _link_index: dict = field(default_factory=dict, repr=False, compare=False)
-    _cache: dict = field(default_factory=dict, repr=False, compare=False)
+    _cache: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
     # ----- lookups
     def link(self, name: str) -> Link:

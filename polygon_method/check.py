@@ -1,0 +1,864 @@
+"""Check answers (a student's or a book's) against the solution, and name the mistake.
+
+For every answer: the value given, the correct value, the error in %, the verdict; for a
+wrong one, the known mistake that explains it where one does (rpm used as rad/s, a
+relative velocity given for an absolute one, the other assembly branch, the sum of angular
+velocities where the difference applies, ...). The alternatives are computed by the solver
+(a re-solved scene with the mistaken speed, angle or branch) or from its numbers; no
+kinematics is redone here.
+
+Tolerance rule (when the answers do not state ``tolerance``): what a careful drawing at the
+chosen scales allows. A length on a diagram is drawn and read to half a millimetre
+(0.05 cm); at the velocity scale ``s_v`` (m/s per cm) that is ``0.05 s_v``; a value derived
+from a read-off inherits its error (omega = v / l: ``0.05 s_v / l``; rubbing
+|w1 - w2| r: the sum of both; torque = sum(F . v) / omega: ``sum |F| 0.05 s_v / omega``).
+Where the two direction lines of a construction cross at less than 30 deg the read-off
+error grows as ``1 / (2 sin gamma)``. Never tighter than 0.5 % (three significant figures);
+values computed rather than drawn (the crank's) get 0.5 %.
+
+>>> from polygon_method import parse_scene, solve
+>>> sol = solve(parse_scene('''
+... [ground]
+... O = [0, 0]
+... [links]
+... OA = 150
+... AB = 600
+... [sliders]
+... B = { path = "horizontal" }
+... [input]
+... crank = "OA"
+... angle = 90
+... speed = "300 rpm ccw"
+... [answers]
+... v_A = "45 m/s"
+... '''))
+>>> v = check_answers(sol)[0]
+>>> v.ok, v.mistake                    # 300 x 0.15: N used as omega
+(False, 'rpm_as_rad_s')
+"""
+
+from __future__ import annotations
+
+import itertools
+import json
+import math
+import re
+import textwrap
+from dataclasses import dataclass, replace
+
+from .errors import PolygonMethodError, SceneError
+from .plan import Context, Crank, Dyad, SliderDyad
+from .scales import DRAWING_PRECISION_CM, diagram_scales
+from .scene import ANSWER_KINDS, FixedPath, GuideSlider, Scene, split_name
+from .solution import Solution, solve
+
+__all__ = ["Verdict", "check_answers", "run_check", "answer_tolerance", "verdicts_text",
+           "verdicts_dict", "ROUNDING"]
+
+#: relative error of a value rounded to three significant figures (the floor of every
+#: tolerance)
+ROUNDING = 0.005
+_SIN30 = 0.5
+
+UNIT_OF = {"v": "m/s", "a": "m/s^2", "omega": "rad/s", "alpha": "rad/s^2", "vs": "m/s",
+           "as": "m/s^2", "ac": "m/s^2", "rub": "m/s", "torque": "N m"}
+_ANGULAR = ("omega", "alpha", "torque")
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """One answer checked.
+
+    ``given`` and ``correct`` are in SI; both are signed (ccw positive, or along the guide)
+    when the answer states a sense or a sign, else magnitudes. ``error`` and ``tolerance``
+    are relative (fractions); ``error`` is None when the correct value is zero.
+    """
+
+    key: str
+    raw: str
+    given: float
+    correct: float
+    unit: str
+    error: float | None
+    tolerance: float
+    tolerance_abs: float
+    rule: str
+    ok: bool
+    signed: bool
+    mistake: str | None = None
+    diagnosis: str | None = None
+    line: int | None = None
+
+    @property
+    def error_percent(self):
+        return None if self.error is None else 100.0 * self.error
+
+    def to_dict(self) -> dict:
+        return {"key": self.key, "given": self.given, "given_text": self.raw,
+                "correct": self.correct, "unit": self.unit,
+                "error_percent": self.error_percent,
+                "tolerance_percent": 100.0 * self.tolerance, "rule": self.rule,
+                "verdict": "right" if self.ok else "wrong", "mistake": self.mistake,
+                "diagnosis": self.diagnosis, "line": self.line}
+
+
+# --------------------------------------------------------------------------- tolerance
+
+
+def _num(x: float) -> str:
+    """A number as written in working: up to five significant figures."""
+    return f"{x:.5g}"
+
+
+def _terms(terms) -> str:
+    """``a - b + c`` from (sign, text) pairs."""
+    out = ("" if terms[0][0] > 0 else "-") + terms[0][1]
+    for sg, t in terms[1:]:
+        out += f" {'+' if sg > 0 else '-'} {t}"
+    return out
+
+
+def _g(x: float) -> str:
+    """A value as a textbook writes it: four significant figures."""
+    if x == 0:
+        return "0"
+    s = f"{x:.4g}"
+    if "e" in s:
+        s = f"{x:.4e}"
+    return s
+
+
+class _Tolerances:
+    """Drawing tolerances of one solution (see the module docstring)."""
+
+    def __init__(self, sol: Solution):
+        self.sol = sol
+        _, self.sv, self.sa = diagram_scales(sol)
+        self.d = DRAWING_PRECISION_CM
+        steps = sol.plan.steps
+        self.factor = {}
+        worst = 1.0
+        for st in steps:
+            worst = min(worst, sol.conditions.get(st.index, 1.0))
+            f = max(1.0, _SIN30 / max(worst, 1e-12))
+            for p in st.finds:
+                self.factor[p] = f
+            for lk in st.links:
+                self.factor[lk] = f
+        self.crank = steps[0]
+
+    def f(self, what) -> float:
+        return self.factor.get(what, 1.0)
+
+    def link_factor(self, key) -> float:
+        return self.factor.get(key, 1.0)
+
+    def omega_abs(self, key) -> float:
+        """Drawing error of omega of link ``key``: 0.05 s_v / l (zero for the crank)."""
+        sc = self.sol.scene
+        if key == self.crank.link or key in self.sol.plan.fixed_links:
+            return 0.0
+        lk = sc.link(key)
+        return self.d * self.sv.per_cm * self.link_factor(lk.key) / lk.length
+
+    def body_omega_abs(self, body) -> float:
+        sc = self.sol.scene
+        if body == "ground":
+            return 0.0
+        if body.startswith("block "):
+            sl = sc.slider(body[6:])
+            return self.omega_abs(sc.link(sl.guide).key) if isinstance(sl, GuideSlider) else 0.0
+        return self.omega_abs(body)
+
+    def drawing(self, kind, names) -> tuple[float, str]:
+        """(absolute drawing tolerance, what it is read from) of an answer."""
+        sol, d = self.sol, self.d
+        sv, sa = self.sv.per_cm, self.sa.per_cm
+        vt, at = f"velocity diagram at {self.sv.text}", f"acceleration diagram at {self.sa.text}"
+        if kind in ("v", "a"):
+            if len(names) == 1 and names[0] == self.crank.tip:
+                return 0.0, "computed (crank)"
+            f = max(self.f(n) for n in names)
+            return (d * sv * f, vt) if kind == "v" else (d * sa * f, at)
+        if kind in ("omega", "alpha"):
+            lk = sol.scene.link("-".join(names))
+            if lk.key == self.crank.link:
+                return 0.0, "computed (crank)"
+            f = self.link_factor(lk.key)
+            s = sv if kind == "omega" else sa
+            return d * s * f / lk.length, (vt if kind == "omega" else at)
+        if kind in ("vs", "as"):
+            f = self.f(names[0])
+            return (d * sv * f, vt) if kind == "vs" else (d * sa * f, at)
+        if kind == "ac":
+            sl = sol.scene.slider(names[0])
+            if not isinstance(sl, GuideSlider):
+                return d * sa, at
+            g = sol.scene.link(sl.guide)
+            w, vs = abs(sol.W[g.key]), abs(sol.S[names[0]][0])
+            return 2 * d * sv * self.f(names[0]) * (w + vs / g.length), vt
+        if kind == "rub":
+            r = sol.rubbing[names[0]]
+            if not r.pairs:
+                return d * sv, vt
+            pair = max(r.pairs, key=r.pairs.get)
+            a, b = pair.split("|")
+            return r.radius * (self.body_omega_abs(a) + self.body_omega_abs(b)), vt
+        if kind == "torque":
+            sc = sol.scene
+            tot = 0.0
+            for load in sc.loads:
+                if load.force is not None:
+                    tot += math.hypot(*load.force) * d * sv * self.f(load.target)
+                else:
+                    tot += abs(load.torque) * self.omega_abs(load.target)
+            return tot / abs(sc.input.omega), vt
+        raise KeyError(kind)
+
+
+def answer_tolerance(sol: Solution, kind: str, names: tuple, correct: float,
+                     relative: float | None = None, _tols=None) -> tuple[float, str]:
+    """(absolute tolerance, rule) for one answer.
+
+    ``relative`` (the answers' ``tolerance``) gives ``relative |correct|``; without it the
+    drawing rule of the module docstring applies. Never tighter than 0.5 % of |correct|.
+    """
+    tols = _tols or _Tolerances(sol)
+    draw, where = tols.drawing(kind, names)
+    if relative is not None:
+        tol = relative * abs(correct)
+        if tol == 0:
+            tol = draw or 1e-12
+        return tol, f"{100 * relative:g} % (the answers' tolerance)"
+    tol = max(ROUNDING * abs(correct), draw)
+    if tol == 0:
+        tol = tols.d * (tols.sv.per_cm if UNIT_OF[kind] in ("m/s", "rad/s") else tols.sa.per_cm)
+    if draw <= ROUNDING * abs(correct):
+        return tol, "0.5 % (three significant figures)" if where.startswith("computed") else \
+            f"0.5 % (three significant figures; 0.05 cm on the {where} is finer)"
+    return tol, f"0.05 cm on the {where}"
+
+
+# --------------------------------------------------------------------------- diagnosis
+
+
+@dataclass(frozen=True)
+class _Candidate:
+    value: float
+    code: str
+    text: str
+    window: float | None = None  # narrower matching window (absolute), for wide families
+
+
+class _Alternatives:
+    """Solutions of the same scene with one mistake made (asked of the solver, cached)."""
+
+    def __init__(self, sol: Solution):
+        self.sol = sol
+        self.cache = {}
+
+    def solve(self, key, scene):
+        if key not in self.cache:
+            try:
+                self.cache[key] = solve(scene)
+            except (PolygonMethodError, ValueError, ZeroDivisionError, OverflowError):
+                self.cache[key] = None
+        return self.cache[key]
+
+    def speed(self, factor):
+        sc = self.sol.scene
+        return self.solve(("speed", factor),
+                          replace(sc, input=replace(sc.input, omega=sc.input.omega * factor)))
+
+    def angle_as_radians(self):
+        sc = self.sol.scene
+        deg = math.degrees(sc.input.angle)
+        return self.solve(("radians",),
+                          replace(sc, input=replace(sc.input, angle=deg)))
+
+    def branches(self):
+        """(point, words, solution) for the other branch of every two-way step."""
+        out = self.cache.get("branches")
+        if out is not None:
+            return out
+        sol = self.sol
+        sc = sol.scene
+        out = []
+        ctx = Context(sc.input.angle, sc.input.omega, sc.input.alpha)
+        for st in sol.plan.steps:
+            if not isinstance(st, (Dyad, SliderDyad)):
+                continue
+            try:
+                base, off, *_ = st.candidates(dict(sol.P), ctx)
+            except PolygonMethodError:
+                continue
+            X = st.point
+            other = (base[0] - st.sigma * off[0], base[1] - st.sigma * off[1])
+            here = sol.P[X]
+            if math.dist(other, here) <= 1e-9 * max(math.hypot(*off), 1e-9) or \
+                    math.dist(other, here) == 0:
+                continue
+            alt = self.solve(("branch", X),
+                             replace(sc, assembly={**sc.assembly, X: other}))
+            if alt is None:
+                continue
+            dx, dy = other[0] - here[0], other[1] - here[1]
+            side = ("below" if dy < 0 else "above") if abs(dy) >= abs(dx) else \
+                ("left" if dx < 0 else "right")
+            out.append((X, side, alt))
+        self.cache["branches"] = out
+        return out
+
+
+def _speed_mistakes(scene: Scene):
+    """(factor on the crank's omega, code, words) for the speed confusions that the way the
+    scene states the speed makes possible."""
+    unit = re.sub(r"^[-+0-9.eE\s]+", "", scene.input.speed_text).split()
+    unit = unit[0].lower() if unit else "rad/s"
+    k = 60 / (2 * math.pi)
+    if unit in ("rpm", "r.p.m.", "r.p.m", "rev/min"):
+        return ((k, "rpm_as_rad_s", "rpm used as rad/s (omega = N instead of 2 pi N / 60)"),
+                (60.0, "rps_rpm", "rpm taken as rps (omega = 2 pi N, the / 60 left out)"))
+    if unit in ("rps", "r.p.s.", "r.p.s", "rev/s"):
+        return ((1 / (2 * math.pi), "rps_as_rad_s", "rps used as rad/s (omega = n instead "
+                 "of 2 pi n)"),
+                (1 / 60, "rps_rpm", "rps taken as rpm (omega = 2 pi n / 60)"))
+    return ((1 / k, "rad_s_as_rpm", "rad/s taken as rpm (converted again by 2 pi / 60)"),
+            (2 * math.pi, "rad_s_as_rps", "rad/s taken as rps (multiplied by 2 pi)"))
+
+
+_FACTOR_MISTAKES = {
+    "v": ((1e3, "mm_m", "mm/s given as m/s"), (1e-3, "mm_m", "m/s given as mm/s")),
+    "vs": ((1e3, "mm_m", "mm/s given as m/s"), (1e-3, "mm_m", "m/s given as mm/s")),
+    "rub": ((1e3, "mm_m", "mm/s given as m/s"), (1e-3, "mm_m", "m/s given as mm/s")),
+    "a": ((1e3, "mm_m", "mm/s^2 given as m/s^2"), (1e-3, "mm_m", "m/s^2 given as mm/s^2")),
+    "as": ((1e3, "mm_m", "mm/s^2 given as m/s^2"), (1e-3, "mm_m", "m/s^2 given as mm/s^2")),
+    "ac": ((1e3, "mm_m", "mm/s^2 given as m/s^2"), (1e-3, "mm_m", "m/s^2 given as mm/s^2"),
+           (0.5, "coriolis_factor", "the factor 2 of the Coriolis component 2 omega v left "
+            "out")),
+    "omega": ((180 / math.pi, "deg_rad", "degrees per second given as rad/s"),
+              (math.pi / 180, "deg_rad", "radians taken as degrees (rad/s x pi / 180)"),
+              (60 / (2 * math.pi), "rpm_as_rad_s", "the answer is in rpm, not rad/s"),
+              (1e-3, "mm_m", "a length in mm used in omega = v / l (l must be in m)"),
+              (1e3, "mm_m", "a velocity in mm/s used in omega = v / l")),
+    "alpha": ((180 / math.pi, "deg_rad", "degrees per second squared given as rad/s^2"),
+              (math.pi / 180, "deg_rad", "radians taken as degrees"),
+              (1e-3, "mm_m", "a length in mm used in alpha = a_t / l (l must be in m)")),
+    "torque": ((1e3, "mm_m", "N mm given as N m"), (1e-3, "mm_m", "N m given as N mm")),
+}
+_DECIMAL = ((10.0, "decimal_point", "the decimal point misplaced (10 times too large)"),
+            (0.1, "decimal_point", "the decimal point misplaced (10 times too small)"),
+            (100.0, "decimal_point", "the decimal point misplaced, or cm for m (100 times)"),
+            (0.01, "decimal_point", "the decimal point misplaced, or m for cm (1/100)"))
+
+
+_OPPOSITE = {"above": "below", "below": "above", "left": "right", "right": "left"}
+
+
+class _Diagnoser:
+    def __init__(self, sol: Solution, answers):
+        self.sol = sol
+        self.sc = sol.scene
+        self.alts = _Alternatives(sol)
+        self.given = {a.key: a for a in answers}
+        # the student's own angular velocities, where given (magnitudes)
+        self.their_w = {}
+        for a in answers:
+            if a.kind == "omega" and self.sc.has_link("-".join(a.names)):
+                self.their_w[self.sc.link("-".join(a.names)).key] = abs(a.value)
+
+    # -- helpers
+    def cmp(self, x, signed):
+        return x if signed else abs(x)
+
+    def body_points(self, X):
+        """Points on the same rigid body as X (link ends, carried points), not ground."""
+        sc = self.sc
+        bodies = {lk.key for lk in sc.links if X in lk.points}
+        cp = sc.carried(X)
+        if cp is not None:
+            bodies.add(cp.link)
+        pts = []
+        for key in bodies:
+            lk = sc.link(key)
+            pts += [lk.p, lk.q] + [c.name for c in sc.points if c.link == key]
+        return [p for p in dict.fromkeys(pts) if p != X and p not in sc.ground]
+
+    def link_at(self, X, Y):
+        sc = self.sc
+        for lk in sc.links:
+            on = {lk.p, lk.q} | {c.name for c in sc.points if c.link == lk.key}
+            if X in on and Y in on:
+                return lk
+        return None
+
+    # -- candidates
+    def candidates(self, ans, signed):
+        sol, sc = self.sol, self.sc
+        kind, names = ans.kind, ans.names
+        correct = sol.value(kind, names)
+        out = []
+        val = lambda s: self.cmp(s.value(kind, names), signed)  # noqa: E731
+        if signed:
+            word = "cw" if correct > 0 else "ccw"
+            if kind in ("vs", "as"):
+                out.append(_Candidate(-correct, "sense", "the direction along the guide is "
+                                      "reversed"))
+            else:
+                out.append(_Candidate(-correct, "sense", f"the sense is wrong ({word} given; "
+                                      f"it turns {'ccw' if correct > 0 else 'cw'})"))
+        if kind != "torque":
+            for factor, code, words in _speed_mistakes(sc):
+                alt = self.alts.speed(factor)
+                if alt is not None:
+                    out.append(_Candidate(val(alt), code, words))
+        else:
+            out += self.torque(signed)
+        for factor, code, words in _FACTOR_MISTAKES.get(kind, ()):
+            out.append(_Candidate(self.cmp(correct, signed) * factor, code, words))
+        if kind in ("v", "a"):
+            out += self.relative(ans, signed)
+        if kind in ("omega", "alpha"):
+            out += self.per_length(ans)
+        if kind == "vs":
+            out.append(_Candidate(sol.speed(names[0]), "absolute_for_relative",
+                                  f"the absolute velocity of {names[0]} given for its "
+                                  "sliding velocity"))
+        if kind == "rub":
+            out += self.rubbing(names[0])
+        for X, side, alt in self.alts.branches():
+            try:
+                out.append(_Candidate(val(alt), "other_branch",
+                                      f"the other assembly branch ({X} {side} instead of "
+                                      f"{_OPPOSITE[side]})"))
+            except (KeyError, TypeError):
+                pass
+        alt = self.alts.angle_as_radians()
+        if alt is not None and kind != "torque":
+            out.append(_Candidate(val(alt), "angle_in_radians", "the crank angle in degrees used as "
+                                  "radians (calculator in RAD mode)"))
+        for factor, code, words in _DECIMAL:
+            out.append(_Candidate(self.cmp(correct, signed) * factor, code, words))
+        return out
+
+    def relative(self, ans, signed):
+        sol = self.sol
+        kind, names = ans.kind, ans.names
+        sym = kind
+        mag = sol.speed if kind == "v" else sol.acceleration_magnitude
+        out = []
+        if len(names) == 1:
+            X = names[0]
+            for Y in self.body_points(X):
+                out.append(_Candidate(mag(X, Y), "relative_for_absolute",
+                                      f"the relative {sym}_{X}{Y} given for the absolute "
+                                      f"{sym}_{X}"))
+            if kind == "v" and isinstance(self.sc.slider(X), GuideSlider):
+                out.append(_Candidate(abs(sol.sliding_velocity(X)), "relative_for_absolute",
+                                      f"the sliding velocity of {X} on its guide given for "
+                                      f"its absolute velocity"))
+            if kind == "a":
+                for lk in self.sc.links:
+                    if X in lk.points and lk.other(X) in self.sc.ground:
+                        out += self.components(X, lk.other(X), lk, f"a_{X}")
+        else:
+            X, Y = names
+            for Z in (X, Y):
+                if Z not in self.sc.ground:
+                    out.append(_Candidate(mag(Z), "absolute_for_relative",
+                                          f"the absolute {sym}_{Z} given for the relative "
+                                          f"{sym}_{X}{Y}"))
+            lk = self.link_at(X, Y)
+            if kind == "a" and lk is not None:
+                out += self.components(X, Y, lk, f"a_{X}{Y}")
+        return out
+
+    def components(self, X, Y, lk, name):
+        sol = self.sol
+        r = math.dist(sol.P[X], sol.P[Y])
+        w, al = sol.W[lk.key], sol.Al[lk.key]
+        return [_Candidate(w * w * r, "component_only",
+                           f"only the centripetal component (omega^2 r = {_g(w * w * r)} "
+                           f"m/s^2) of {name}; add the tangential one"),
+                _Candidate(abs(al) * r, "component_only",
+                           f"only the tangential component (alpha r = {_g(abs(al) * r)} "
+                           f"m/s^2) of {name}; add the centripetal one")]
+
+    def per_length(self, ans):
+        sol = self.sol
+        lk = self.sc.link("-".join(ans.names))
+        P, Q, L = lk.p, lk.q, lk.length
+        out = []
+        if ans.kind == "omega":
+            for Z in (P, Q):
+                if Z not in self.sc.ground:
+                    out.append(_Candidate(sol.speed(Z) / L, "absolute_over_length",
+                                          f"the absolute v_{Z} divided by {lk.key}; "
+                                          f"omega_{lk.key} = v_{Q}{P} / {lk.key}"))
+            out.append(_Candidate(sol.speed(Q, P), "not_divided_by_length",
+                                  f"v_{Q}{P} not divided by the length {lk.key}"))
+            for key in (f"v_{P}{Q}", f"v_{Q}{P}"):
+                a = self.given.get(key)
+                if a is not None:
+                    out.append(_Candidate(abs(a.value) / L, "carried_error",
+                                          f"carried from your {key} = {a.raw}: "
+                                          f"{_g(abs(a.value))} / {_g(L)} (the method is "
+                                          "right)"))
+        else:
+            w = sol.W[lk.key]
+            out.append(_Candidate(sol.acceleration_magnitude(Q, P) / L, "total_for_tangential",
+                                  f"the whole a_{Q}{P} divided by {lk.key}; alpha uses its "
+                                  "tangential component only"))
+            out.append(_Candidate(w * w, "total_for_tangential",
+                                  "the centripetal component divided by the length (that "
+                                  "is omega^2); alpha uses the tangential component"))
+            for Z in (P, Q):
+                if Z not in self.sc.ground:
+                    out.append(_Candidate(sol.acceleration_magnitude(Z) / L,
+                                          "absolute_over_length",
+                                          f"the absolute a_{Z} divided by {lk.key}"))
+        return out
+
+    def omega_sets(self):
+        """(|omega| by link, the links whose value is the student's): the student's own
+        angular velocities where given, and the exact ones."""
+        exact = {k: abs(v) for k, v in self.sol.W.items()}
+        sets = [(exact, frozenset())]
+        if self.their_w:
+            theirs = dict(exact)
+            theirs.update(self.their_w)
+            sets.insert(0, (theirs, frozenset(self.their_w)))
+        return sets
+
+    def rubbing(self, X):
+        sol, sc = self.sol, self.sc
+        rub = sol.rubbing[X]
+        r = rub.radius
+        pin = next(p for p in sc.pins if p.point == X)
+        out = []
+        correct = rub.rubbing_velocity
+        if pin.given == "diameter":
+            out.append(_Candidate(2 * correct, "diameter_as_radius",
+                                  f"the diameter {_g(2 * r * 1e3)} mm used as the radius "
+                                  f"(r = {_g(r * 1e3)} mm)"))
+        else:
+            out.append(_Candidate(2 * correct, "diameter_as_radius",
+                                  f"twice the radius (a diameter, {_g(2 * r * 1e3)} mm) used "
+                                  f"as the radius {_g(r * 1e3)} mm"))
+        out.append(_Candidate(correct / 2, "radius_as_diameter",
+                              f"the radius {_g(r * 1e3)} mm halved (taken as a diameter)"))
+        if len(rub.pairs) > 1:
+            for pair, v in rub.pairs.items():
+                out.append(_Candidate(v, "one_pair",
+                                      f"the rubbing between {pair.replace('|', ' and ')} "
+                                      f"only; the largest at {X} is {_g(correct)} m/s"))
+        if not rub.pairs:
+            return out
+        pair = max(rub.pairs, key=rub.pairs.get)
+        a, b = pair.split("|")
+        wa, wb = rub.bodies[a], rub.bodies[b]
+        rule = (f"pin {X} joins {' and '.join(rub.bodies)}: rub_{X} = |w_{a} - w_{b}| r = "
+                f"{_g(correct)} m/s")
+        if wa != 0 and wb != 0:
+            if (wa > 0) == (wb > 0):
+                out.append(_Candidate((abs(wa) + abs(wb)) * r, "sum_for_difference",
+                                      f"the sum of the angular velocities of {a} and {b} "
+                                      f"where the difference applies (both turn "
+                                      f"{'ccw' if wa > 0 else 'cw'}); {rule}"))
+            else:
+                out.append(_Candidate(abs(abs(wa) - abs(wb)) * r, "difference_for_sum",
+                                      f"the difference of the angular velocities of {a} and "
+                                      f"{b} where the sum applies ({a} turns "
+                                      f"{'ccw' if wa > 0 else 'cw'}, {b} "
+                                      f"{'ccw' if wb > 0 else 'cw'}); {rule}"))
+            for body, w in ((a, wa), (b, wb)):
+                out.append(_Candidate(abs(w) * r, "one_link_only",
+                                      f"the angular velocity of {body} alone; {rule}"))
+        at_pin = set(rub.bodies)
+        moving = [lk.key for lk in sc.links if lk.key not in sol.plan.fixed_links]
+        for omegas, yours in self.omega_sets():
+            for n in (1, 2, 3):
+                for combo in itertools.combinations(moving, n):
+                    if all(c in at_pin for c in combo):
+                        continue
+                    for signs in itertools.product((1, -1), repeat=n - 1):
+                        terms = [(1, combo[0])] + list(zip(signs, combo[1:]))
+                        s = sum(sg * omegas[c] for sg, c in terms)
+                        if s < 0:
+                            terms = [(-sg, c) for sg, c in terms]
+                        terms.sort(key=lambda t: -t[0])  # a positive term first
+                        expr = _terms([(sg, f"omega_{c}") for sg, c in terms])
+                        nums = _terms([(sg, _num(omegas[c])) for sg, c in terms])
+                        away = [c for c in combo if c not in at_pin]
+                        mine = [c for c in combo if c in yours]
+                        out.append(_Candidate(
+                            abs(s) * r, "links_not_at_pin",
+                            f"angular velocities of links that do not meet at {X} "
+                            f"({', '.join(away)}): ({expr}) r = ({nums}) x {_num(r)}"
+                            + (f" (your {', '.join('omega_' + c for c in mine)})"
+                               if mine else "") + f"; {rule}", window=0.02))
+        return out
+
+    def torque(self, signed):
+        sol, sc = self.sol, self.sc
+        w = sc.input.omega
+        crank = sc.input.crank
+        out = []
+        exact_terms = sol.power_terms
+        powers = [(sum(p for _, p in exact_terms), "")]
+        # the student's own velocities at the loaded points
+        theirs, used = 0.0, []
+        for (target, p), load in zip(exact_terms, sc.loads):
+            a = self.given.get(f"v_{target}")
+            if load.force is not None and a is not None and sol.speed(target) > 0:
+                theirs += p * abs(a.value) / sol.speed(target)
+                used.append(f"v_{target} = {a.raw}")
+            else:
+                theirs += p
+        if used:
+            powers.insert(0, (theirs, f" with your {', '.join(used)}"))
+        sign = (lambda t: t) if signed else abs
+        for power, label in powers:
+            if label:
+                out.append(_Candidate(sign(-power / w), "carried_error",
+                                      f"carried from your velocities: T = {_g(abs(power))} / "
+                                      f"{_g(abs(w))}{label} (the method is right)"))
+            for omegas, yours in self.omega_sets():
+                for lk in sc.links:
+                    if lk.key == crank or lk.key in sol.plan.fixed_links or omegas[lk.key] == 0:
+                        continue
+                    wl = omegas[lk.key]
+                    out.append(_Candidate(
+                        sign(-power / (w / abs(w) * wl)), "wrong_omega_in_power_balance",
+                        f"the power {_num(abs(power))} W{label} divided by omega_{lk.key} = "
+                        f"{_num(wl)} rad/s{' (yours)' if lk.key in yours else ''} instead of "
+                        f"the crank's omega_{crank} = {_g(abs(w))} rad/s: T = P / omega_{crank}"
+                        f" = {_g(abs(power))} / {_g(abs(w))} = {_g(abs(power / w))} N m"))
+            for factor, code, words in _speed_mistakes(sc):
+                out.append(_Candidate(sign(-power / (w * factor)), code,
+                                      f"{words}, in T = P / omega"))
+        # |F| |v| without the angle between them
+        full = 0.0
+        for load in sc.loads:
+            if load.force is not None:
+                full += math.hypot(*load.force) * sol.speed(load.target)
+            else:
+                full += abs(load.torque * sol.W[load.target])
+        power = sum(p for _, p in exact_terms)
+        if abs(full - abs(power)) > 1e-9 * full:
+            out.append(_Candidate(sign(math.copysign(full, -power / w)), "force_times_speed",
+                                  "F x v without the angle between force and velocity "
+                                  "(the power is F . v = F v cos theta)"))
+        return out
+
+    # -- the verdict
+    def diagnose(self, ans, given, correct, tol, signed):
+        matches = []
+        for order, c in enumerate(self.candidates(ans, signed)):
+            if not math.isfinite(c.value) or abs(c.value - correct) <= tol:
+                continue
+            # the answer's relative tolerance, applied to the mistaken value
+            window = tol * abs(c.value) / abs(correct) if correct else tol
+            if c.window is not None:
+                window = min(window, c.window * abs(c.value))
+            dev = abs(given - c.value)
+            if dev <= window:
+                rel = dev / max(abs(c.value), 1e-300)
+                # equal to rounding: the simpler mistake (earlier in the list) first
+                matches.append((rel if rel > 1e-9 else 0.0, order, c))
+        slip = _slip(ans.raw, given, correct, signed)
+        if slip is not None:
+            matches.append((math.inf, 0, slip))
+        if not matches:
+            return None, None
+        matches.sort(key=lambda m: m[:2])
+        matches = [(d, c) for d, _, c in matches]
+        best = matches[0][1]
+        text = best.text
+        others = [c for d, c in matches[1:] if c.code != best.code and d <= 0.005
+                  and matches[0][0] <= 0.005]
+        if others:
+            text += "; or " + others[0].text
+        return best.code, text
+
+
+_NUM = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
+
+
+def _digits(number: str):
+    """(significant digits, exponent of the last digit) of a written number."""
+    s = number.lstrip("+-")
+    if "e" in s.lower():
+        return None
+    if "." in s:
+        whole, frac = s.split(".")
+    else:
+        whole, frac = s, ""
+    digits = (whole + frac).lstrip("0")
+    return digits, -len(frac)
+
+
+def _slip(raw: str, given: float, correct: float, signed: bool):
+    """A slip of the pen: one digit differs, two are swapped, or leading digits dropped."""
+    m = _NUM.search(str(raw))
+    if not m or float(m.group()) == 0 or correct == 0:
+        return None
+    written = m.group()
+    factor = given / float(written)  # SI per written unit, with the sign of a sense
+    target = correct / factor
+    if not signed:
+        target = abs(target)
+    d = _digits(written)
+    if d is None:
+        return None
+    digits, last = d
+    if len(digits) < 2 or target <= 0:
+        return None
+    q = round(target / 10.0 ** last)
+    right = str(q)
+    if len(right) == len(digits):
+        diff = [i for i in range(len(digits)) if digits[i] != right[i]]
+        if len(diff) == 1 and diff[0] < len(digits) - 1:  # a last digit off is no slip
+            return _Candidate(given, "transcription_slip",
+                              f"a slip of the pen: one digit differs ({written} written for "
+                              f"{_written(q, last)})")
+        if len(diff) == 2 and diff[1] == diff[0] + 1 and \
+                digits[diff[0]] == right[diff[1]] and digits[diff[1]] == right[diff[0]]:
+            return _Candidate(given, "transcription_slip",
+                              f"a slip of the pen: two digits swapped ({written} written for "
+                              f"{_written(q, last)})")
+    if len(right) > len(digits) and right.endswith(digits) and len(digits) >= 2:
+        return _Candidate(given, "transcription_slip",
+                          f"a slip of the pen: leading digits dropped ({written} written for "
+                          f"{_written(q, last)})")
+    return None
+
+
+def _written(q: int, last: int) -> str:
+    if last >= 0:
+        return str(q * 10 ** last)
+    s = str(q).rjust(-last + 1, "0")
+    return f"{s[:last]}.{s[last:]}"
+
+
+# --------------------------------------------------------------------------- public API
+
+
+def check_answers(sol: Solution, answers=None, tolerance: float | None = None) -> tuple:
+    """Check ``answers`` (default: the scene's ``[answers]``) against ``sol``.
+
+    Parameters
+    ----------
+    answers : iterable of :class:`~polygon_method.scene.Answer`, optional
+    tolerance : float, optional
+        Relative tolerance (0.03 for 3 %); default the scene's ``tolerance``, else the
+        drawing rule (module docstring).
+
+    Returns
+    -------
+    tuple of :class:`Verdict`, in the answers' order.
+    """
+    if answers is None:
+        answers = sol.scene.answers
+        if tolerance is None:
+            tolerance = sol.scene.tolerance
+    answers = tuple(answers)
+    tols = _Tolerances(sol)
+    diag = _Diagnoser(sol, answers)
+    out = []
+    for ans in answers:
+        kind = ans.kind
+        exact = sol.value(kind, ans.names)
+        if exact is None or not math.isfinite(exact):
+            raise SceneError(f"{ans.key}: no value to check against", key=f"[answers] {ans.key}",
+                             line=ans.line)
+        signed = ans.sense is not None or ans.value < 0
+        if kind in ("v", "a", "ac", "rub"):
+            signed = False
+        given = ans.value if signed else abs(ans.value)
+        correct = exact if signed else abs(exact)
+        tol, rule = answer_tolerance(sol, kind, ans.names, correct, tolerance, _tols=tols)
+        err = abs(given - correct)
+        rel = err / abs(correct) if correct != 0 else None
+        ok = err <= tol * (1 + 1e-12)
+        mistake = diagnosis = None
+        if not ok:
+            mistake, diagnosis = diag.diagnose(ans, given, correct, tol, signed)
+        out.append(Verdict(ans.key, ans.raw, given, correct, UNIT_OF[kind], rel,
+                           tol / abs(correct) if correct else math.inf, tol, rule, ok, signed,
+                           mistake, diagnosis, ans.line))
+    return tuple(out)
+
+
+def _show(v: Verdict, x: float) -> str:
+    if v.unit in ("rad/s", "rad/s^2", "N m") and v.signed:
+        s = "ccw" if x > 0 else ("cw" if x < 0 else "")
+        return f"{_g(abs(x))} {v.unit}" + (f" {s}" if s else "")
+    return f"{_g(x)} {v.unit}"
+
+
+def verdicts_text(verdicts, title: str = "") -> str:
+    """The verdicts as a terminal table, with the mistake named under a wrong answer."""
+    rows = [("answer", "given", "correct", "error", "tolerance", "verdict")]
+    for v in verdicts:
+        err = "-" if v.error is None else f"{100 * v.error:.2f} %"
+        tol = "-" if not math.isfinite(v.tolerance) else f"{100 * v.tolerance:.2g} %"
+        rows.append((v.key, v.raw, _show(v, v.correct), err, tol, "right" if v.ok else "WRONG"))
+    widths = [max(len(r[i]) for r in rows) for i in range(6)]
+    lines = [title] if title else []
+    for i, r in enumerate(rows):
+        lines.append("  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip())
+        if i == 0:
+            lines.append("  ".join("-" * w for w in widths))
+            continue
+        v = verdicts[i - 1]
+        if not v.ok:
+            lines.append(textwrap.fill(f"mistake: {v.diagnosis}", 92, initial_indent="    ",
+                                       subsequent_indent="      ") if v.diagnosis else
+                         "    mistake: none of the known ones explains it")
+    wrong = sum(not v.ok for v in verdicts)
+    lines.append("")
+    rules = sorted({v.rule for v in verdicts})
+    lines.append("tolerance: " + "; ".join(rules))
+    lines.append(f"{len(verdicts) - wrong} of {len(verdicts)} right" +
+                 (f", {wrong} wrong" if wrong else ""))
+    return "\n".join(lines)
+
+
+def verdicts_dict(verdicts, scene: str | None = None, answers: str | None = None) -> dict:
+    """The verdicts for ``check --json`` (SI values)."""
+    wrong = sum(not v.ok for v in verdicts)
+    return {"scene": scene, "answers_file": answers, "all_right": wrong == 0,
+            "right": len(verdicts) - wrong, "wrong": wrong,
+            "answers": [v.to_dict() for v in verdicts]}
+
+
+def _finite(x):
+    return x if isinstance(x, (int, float)) and math.isfinite(x) else None
+
+
+def run_check(args) -> int:
+    """``polygon-method check SCENE [ANSWERS] [--json]``: 0 all right, 1 any wrong."""
+    from .scene import load_answers, load_scene
+
+    scene = load_scene(args.scene)
+    sol = solve(scene)
+    if args.answers:
+        tolerance, answers = load_answers(args.answers, scene)
+    else:
+        tolerance, answers = scene.tolerance, scene.answers
+    if not answers:
+        raise SceneError("nothing to check: the scene has no [answers] and no answer file "
+                         "was given", file=args.scene, key="[answers]")
+    verdicts = check_answers(sol, answers, tolerance)
+    if getattr(args, "json", False):
+        d = verdicts_dict(verdicts, args.scene, args.answers)
+        for a in d["answers"]:
+            for k in ("error_percent", "tolerance_percent"):
+                a[k] = _finite(a[k])
+        print(json.dumps(d, indent=2, allow_nan=False))
+    else:
+        title = f"{scene.title or args.scene}: answers from " + \
+            (args.answers if args.answers else "the scene")
+        print(verdicts_text(verdicts, title))
+    return 0 if all(v.ok for v in verdicts) else 1

@@ -1,0 +1,162 @@
+"""Drawing scales chosen as a textbook chooses them: 1, 2, 2.5 or 5 x 10^k per cm.
+
+>>> choose_scale(3.393, unit="m/s").text     # 6.79 cm of drawing for the crank pin
+'1 cm = 0.5 m/s'
+>>> choose_scale(0.7, fit_cm=15, unit="mm").text   # 700 mm of mechanism on 14 cm
+'1 cm = 50 mm'
+>>> s = parse_scale("1 cm = 0.1 m/s")
+>>> s.per_cm, s.kind, s.cm(0.392)
+(0.1, 'velocity', 3.92)
+
+A scale maps a quantity in SI (m, m/s, m/s^2) to centimetres of drawing: ``cm = q / per_cm``.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from decimal import Decimal
+
+from .errors import SceneError
+from .units import UNITS
+
+__all__ = ["Scale", "choose_scale", "parse_scale", "diagram_scales", "MANTISSAS",
+           "FIT_CM", "SPACE_FIT_CM", "DRAWING_PRECISION_CM", "extent"]
+
+#: the round numbers a textbook scale is made of (times a power of ten)
+MANTISSAS = ("1", "2", "2.5", "5")
+#: the largest extent of a velocity or acceleration diagram on the page (cm)
+FIT_CM = 12.0
+#: the largest extent of the configuration diagram (across an A4 page, cm)
+SPACE_FIT_CM = 15.0
+#: how closely a careful drawing is drawn and read: half a millimetre
+DRAWING_PRECISION_CM = 0.05
+
+_KIND_OF_UNIT = {u: k for k in ("length", "velocity", "acceleration") for u in UNITS[k]}
+
+
+@dataclass(frozen=True)
+class Scale:
+    """``1 cm = value unit``: one centimetre of drawing stands for ``per_cm`` (SI).
+
+    Attributes
+    ----------
+    value : str
+        The round number as written (``"0.5"``, ``"25"``), in ``unit``.
+    unit : str
+        The unit it is written in (``"m/s"``, ``"mm"``).
+    kind : str
+        ``length``, ``velocity`` or ``acceleration``.
+    per_cm : float
+        SI quantity per centimetre of drawing (``0.5`` for 1 cm = 0.5 m/s; ``0.02`` for
+        1 cm = 20 mm).
+    """
+
+    value: str
+    unit: str
+    kind: str
+    per_cm: float
+
+    @property
+    def text(self) -> str:
+        return f"1 cm = {self.value} {self.unit}"
+
+    def __str__(self) -> str:
+        return self.text
+
+    def cm(self, quantity: float) -> float:
+        """Length on the drawing (cm) of a quantity (SI): ``quantity / per_cm``."""
+        return quantity / self.per_cm
+
+    def quantity(self, cm: float) -> float:
+        """The quantity (SI) that ``cm`` centimetres of drawing stand for."""
+        return cm * self.per_cm
+
+
+def _unit_kind(unit: str) -> str:
+    kind = _KIND_OF_UNIT.get(unit)
+    if kind is None:
+        raise SceneError(f"unknown unit {unit!r} for a scale; use a length (mm, cm, m), a "
+                         "velocity (m/s, mm/s) or an acceleration (m/s^2)", key="scale")
+    return kind
+
+
+def _text(d: Decimal) -> str:
+    s = format(d.normalize(), "f")
+    return s
+
+
+def choose_scale(max_magnitude: float, fit_cm: float = FIT_CM, unit: str = "m/s") -> Scale:
+    """The smallest round scale (1, 2, 2.5, 5 x 10^k ``unit`` per cm) at which
+    ``max_magnitude`` (SI) takes at most ``fit_cm`` centimetres of drawing.
+
+    A zero or non-finite magnitude gets ``1 cm = 1 unit``.
+    """
+    kind = _unit_kind(unit)
+    factor = UNITS[kind][unit]
+    if not (fit_cm > 0):
+        raise SceneError(f"fit_cm must be positive, got {fit_cm!r}", key="scale")
+    need = max_magnitude / factor / fit_cm  # unit per cm, at least
+    if not (math.isfinite(need) and need > 0):
+        return Scale("1", unit, kind, factor)
+    k = math.floor(math.log10(need)) - 1
+    while True:
+        for m in MANTISSAS:
+            d = Decimal(m).scaleb(k)
+            if float(d) >= need * (1 - 1e-12):
+                return Scale(_text(d), unit, kind, float(d) * factor)
+        k += 1
+
+
+_SCALE = re.compile(r"^\s*([0-9.]+)\s*(cm|mm)\s*=\s*([-+0-9.eE]+)\s*(.+?)\s*$")
+
+
+def parse_scale(text: str, kind: str | None = None) -> Scale:
+    """Read ``"1 cm = 0.1 m/s"`` (also ``"2 cm = 1 m/s"``, ``"1 cm = 20 mm"``).
+
+    ``kind`` (``length``, ``velocity``, ``acceleration``), when given, must match the unit.
+    Raises :class:`SceneError` on anything else.
+    """
+    m = _SCALE.match(str(text))
+    if not m:
+        raise SceneError(f"cannot read scale {text!r}; write it as \"1 cm = 0.1 m/s\"",
+                         key="scale")
+    try:
+        paper = Decimal(m.group(1))
+        value = Decimal(m.group(3))
+    except ArithmeticError:
+        raise SceneError(f"cannot read scale {text!r}; write it as \"1 cm = 0.1 m/s\"",
+                         key="scale") from None
+    if m.group(2) == "mm":
+        paper = paper / 10
+    unit = m.group(4)
+    got = _unit_kind(unit)
+    if kind is not None and got != kind:
+        raise SceneError(f"scale {text!r} is a {got} scale, not a {kind} one", key="scale")
+    if not (paper > 0 and value > 0 and value.is_finite()):
+        raise SceneError(f"scale {text!r}: both sides must be positive", key="scale")
+    per = value / paper
+    return Scale(_text(per), unit, got, float(per) * UNITS[got][unit])
+
+
+def extent(points) -> float:
+    """The size of a diagram: the largest distance between two of its points."""
+    pts = list(points)
+    return max((math.dist(p, q) for i, p in enumerate(pts) for q in pts[i + 1:]),
+               default=0.0)
+
+
+def diagram_scales(sol, fit_cm: float = FIT_CM, space_fit_cm: float = SPACE_FIT_CM):
+    """(space, velocity, acceleration) scales for a solution's three diagrams.
+
+    Each is the smallest round scale at which the diagram's size (the largest distance
+    between two of its points: joints for the configuration, the pole and every image
+    point for a polygon) is at most ``space_fit_cm`` (configuration, in the scene's length
+    unit) or ``fit_cm`` (each polygon).
+    """
+    sc = sol.scene
+    pole = [(0.0, 0.0)]
+    return (choose_scale(extent(sol.P.values()), space_fit_cm, unit=sc.units),
+            choose_scale(extent(pole + list(sol.V.values())), fit_cm, unit="m/s"),
+            choose_scale(extent(pole + list(sol.A.values())), fit_cm, unit="m/s^2"))
