@@ -53,7 +53,7 @@ from dataclasses import dataclass, field
 
 from .constructions import acceleration_constructions, image_label, velocity_constructions
 from .errors import PolygonMethodError
-from .scales import Scale, choose_scale, parse_scale
+from .scales import Scale, choose_scale, diagram_scales, parse_scale
 from .scene import FixedPath
 
 __all__ = ["draw_configuration", "draw_velocity", "draw_acceleration", "make_figure",
@@ -173,6 +173,8 @@ def choose_scales(sol, diagram: str = "all", given=None) -> dict:
     out = {}
     for name in names:
         s = given.get(name) or given.get(KIND_OF_DIAGRAM[name])
+        if s is None and len(names) == 1:  # one diagram: the scale `steps` states
+            s = dict(zip(DIAGRAMS, diagram_scales(sol)))[name]
         out[name] = s if s is not None else _fit_scale(sol, name, _room(name, len(names)))
     return out
 
@@ -1011,7 +1013,8 @@ def layout(sol, diagram: str = "all", scales=None):
         size = [_panel_size(trial[n]) for n in names]
         return (sum(w for w, _ in size) <= room_w and all(h <= room_h for _, h in size))
 
-    if fits(sketches):  # then use the room left: a step finer where the sheet still fits
+    if len(names) > 1 and fits(sketches):  # use the room left: a step finer where it fits
+        # (one diagram keeps the scale `steps` states, so the two agree)
         for _ in range(4):
             better = False
             for n in sorted(free, key=lambda k: k == "configuration"):

@@ -152,11 +152,18 @@ def diagram_scales(sol, fit_cm: float = FIT_CM, space_fit_cm: float = SPACE_FIT_
 
     Each is the smallest round scale at which the diagram's size (the largest distance
     between two of its points: joints for the configuration, the pole and every image
-    point for a polygon) is at most ``space_fit_cm`` (configuration, in the scene's length
+    point for a polygon, and the ends of the components its construction draws) is at most ``space_fit_cm`` (configuration, in the scene's length
     unit) or ``fit_cm`` (each polygon).
     """
+    from .constructions import acceleration_constructions, velocity_constructions
+
+    def drawn(records):  # every end of every vector the construction draws
+        return [p for c in records for v in c.given + c.found for p in (v.start, v.end)]
+
     sc = sol.scene
     pole = [(0.0, 0.0)]
+    vel = pole + list(sol.V.values()) + drawn(velocity_constructions(sol))
+    acc = pole + list(sol.A.values()) + drawn(acceleration_constructions(sol))
     return (choose_scale(extent(sol.P.values()), space_fit_cm, unit=sc.units),
-            choose_scale(extent(pole + list(sol.V.values())), fit_cm, unit="m/s"),
-            choose_scale(extent(pole + list(sol.A.values())), fit_cm, unit="m/s^2"))
+            choose_scale(extent(vel), fit_cm, unit="m/s"),
+            choose_scale(extent(acc), fit_cm, unit="m/s^2"))

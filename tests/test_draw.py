@@ -413,3 +413,21 @@ def test_drawing_functions_take_an_axes_and_return_their_artists(fourbar):
     shaft = artists[f"velocity-vector-{n}-shaft"].get_xydata()[0]
     tip = artists[f"velocity-vector-{n}-head"].get_xy()[0]
     assert math.dist(shaft, tip) == pytest.approx(5.25, rel=1e-12)
+
+
+@pytest.mark.parametrize("path", sorted(Path(__file__).parent.parent.glob("worked_problems/*.toml")),
+                         ids=lambda p: p.stem)
+def test_single_diagram_uses_the_scale_the_steps_state(path):
+    """A student drawing from `steps` and comparing with `draw --diagram X` sees one scale."""
+    from polygon_method.draw import DIAGRAMS, layout
+    from polygon_method.scales import diagram_scales
+    from polygon_method import load_scene
+    from polygon_method.steps import steps_text
+
+    sol = solve(load_scene(path))
+    text = steps_text(sol)
+    for name, stated in zip(DIAGRAMS, diagram_scales(sol)):
+        (drawn_name, scale, _), = layout(sol, name)
+        assert drawn_name == name
+        assert scale.text == stated.text
+        assert stated.text in text
