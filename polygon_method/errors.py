@@ -97,7 +97,10 @@ class Tolerances:
     ----------
     singular : float
         A step whose condition measure (the sine of the angle between its two direction
-        lines) is below this is singular: an error, never a number.
+        lines) is below this is singular: an error, never a number. 1e-3 is about 0.06 deg
+        from a toggle, change point or dead centre: closer than that, rounding alone (which
+        moves a circle intersection by about eps L / c, and the acceleration polygon by
+        that over c^2 more) would put errors above 1e-6 of their size into the answers.
     warn : float
         Below this (sin 5 deg) the step is ill-conditioned: the answer is printed with a
         warning naming the step. A drawing error of 0.25 deg then moves the intersection
@@ -109,7 +112,7 @@ class Tolerances:
         The lecture's advice: keep the transmission angle above 40 deg.
     """
 
-    singular = 1e-9
+    singular = 1e-3
     warn = 0.08715574274765817  # sin(5 deg)
     closure = 1e-12
     transmission_warn_deg = 40.0

@@ -1,0 +1,41 @@
+"""The chart script in its quick mode (few samples), so that it cannot rot.
+
+It writes every chart (SVG and PNG) and the tables into a temporary folder; the numbers it
+measures are checked against the tool's promise: the production path within 1e-9 of the
+50-digit reference on the worked problems, and the lecture's algebraic formula failing as
+A_x approaches d while the polygon construction does not.
+"""
+
+import importlib.util
+import json
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def load_script():
+    spec = importlib.util.spec_from_file_location(
+        "accuracy_speed", ROOT / "benchmarks" / "accuracy_speed.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def test_quick_run_writes_charts_and_tables(tmp_path):
+    script = load_script()
+    assert script.main(["--quick", "--out", str(tmp_path)]) == 0
+    for stem in ("error_vs_time", "error_vs_singularity", "finite_difference_step"):
+        svg = (tmp_path / f"{stem}.svg").read_text(encoding="utf-8")
+        assert svg.lstrip().startswith("<?xml") and "</svg>" in svg
+        assert (tmp_path / f"{stem}.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    res = json.loads((tmp_path / "results.json").read_text(encoding="utf-8"))
+    prod = [r for r in res["worked"] if r["method"] == "production"]
+    assert prod and all(r["error"] < 1e-9 for r in prod)
+    hand = [r for r in res["worked"] if r["method"].startswith("hand drawing")]
+    assert hand and all(1e-4 < r["error"] < 0.5 for r in hand)  # a pencil, not a solver
+    ax = res["singular"]["algebraic: A_x to d"]["series"]
+    closest = min(ax["production"])  # smallest |A_x - d|
+    assert closest[1] < 1e-12
+    assert min(ax["algebraic"])[1] > 1e-3  # the lecture's division by A_x - d
+    md = (tmp_path / "results.md").read_text(encoding="utf-8")
+    assert "| production |" in md and "95 % of drawings" in md
