@@ -34,6 +34,6 @@ __all__ = ["load_scene", "parse_scene", "solve", "compile_plan", "sweep", "Scene
 
 def __getattr__(name):  # lazy: sweeps need numpy, which `solve` does not
     if name == "sweep":
-        from .sweep import sweep
+        from .sweeps import sweep
         return sweep
     raise AttributeError(name)

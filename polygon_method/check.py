@@ -47,9 +47,9 @@ import textwrap
 from dataclasses import dataclass, replace
 
 from .errors import PolygonMethodError, SceneError
-from .plan import Context, Crank, Dyad, SliderDyad
+from .plan import Context, Dyad, SliderDyad
 from .scales import DRAWING_PRECISION_CM, diagram_scales
-from .scene import ANSWER_KINDS, FixedPath, GuideSlider, Scene, split_name
+from .scene import GuideSlider, Scene
 from .solution import Solution, solve
 
 __all__ = ["Verdict", "check_answers", "run_check", "answer_tolerance", "verdicts_text",

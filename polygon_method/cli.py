@@ -35,6 +35,9 @@ def write_output(path, data, *, binary=False) -> None:
         with os.fdopen(fd, "wb" if binary else "w", **({} if binary else
                                                        {"encoding": "utf-8"})) as fh:
             fh.write(data)
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)  # as an ordinary new file (mkstemp makes it 0600)
         os.replace(tmp, path)
     except BaseException:
         try:
@@ -86,7 +89,7 @@ def _cmd_draw(args) -> int:
 
 
 def _cmd_sweep(args) -> int:
-    from .sweep import run_sweep
+    from .sweeps import run_sweep
 
     return run_sweep(args)
 
@@ -137,13 +140,16 @@ def build_parser() -> argparse.ArgumentParser:
 
     s = sub.add_parser("sweep", help="the whole crank cycle")
     s.add_argument("scene")
-    s.add_argument("--steps", type=int)
-    s.add_argument("--from", dest="start", type=float)
-    s.add_argument("--to", dest="stop", type=float)
-    s.add_argument("--step", type=float)
-    s.add_argument("--csv")
-    s.add_argument("--plot")
-    s.add_argument("--summary", action="store_true")
+    s.add_argument("--steps", type=int, help="N crank angles over a turn (default 360)")
+    s.add_argument("--from", dest="start", type=float, help="first crank angle (deg)")
+    s.add_argument("--to", dest="stop", type=float, help="last crank angle (deg)")
+    s.add_argument("--step", type=float, help="crank angle step (deg)")
+    s.add_argument("--csv", help="FILE.csv: one row per crank angle")
+    s.add_argument("--plot", help="FILE.svg, .png or .pdf")
+    s.add_argument("--points", help="points to plot, e.g. C,E (default: all moving points)")
+    s.add_argument("--links", help="links to plot, e.g. BC,CD (default: all moving links)")
+    s.add_argument("--summary", action="store_true",
+                   help="maxima and minima with their crank angles")
     s.set_defaults(func=_cmd_sweep)
 
     s = sub.add_parser("linkage", help="Grashof, toggle positions, transmission angle")

@@ -309,7 +309,7 @@ def _acceleration(sol, st) -> Construction:
             under = _add(A[st.g1], (-wg * wg * r[0] - ag * r[1], -wg * wg * r[1] + ag * r[0]))
             cor = sol.S[X][2]
             through = _add(under, cor)
-            tl = f"the end of the Coriolis component"
+            tl = "the end of the Coriolis component"
             rel = f"parallel to {st.guide}"
             given += [Vector(A[st.g1], under, f"{lab(X)}1", "relative",
                              f"a of the point of {st.guide} under {X}", ""),

@@ -239,7 +239,7 @@ def load_scene(path) -> Scene:
         raise SceneError("not a text file (it holds binary data); a scene is TOML text",
                          file=str(path))
     try:
-        text = data.decode("utf-8")
+        text = data.decode("utf-8-sig")  # a byte-order mark (some Windows editors) is fine
     except UnicodeDecodeError as exc:
         raise SceneError(f"not UTF-8 text (byte {exc.start}); save the scene as UTF-8",
                          file=str(path)) from None
@@ -435,6 +435,10 @@ class _Loader:
                                  + ", ".join(TOP_KEYS), file=self.file, key=where,
                                  line=self.line_of(key) if kind == "table" else self.top_line(key))
         units = raw.get("units", "mm")
+        if not isinstance(units, str):
+            raise SceneError("units is a string: units = \"mm\" (or \"cm\", \"m\", \"in\")",
+                             file=self.file, key="units",
+                             line=self.top_line("units") or self.line_of("units"))
         if units not in LENGTH_UNITS:
             raise SceneError(f"unknown length unit {units!r}{_suggest(units, _UNIT_ORDER)}; "
                              "use mm, cm, m or in", file=self.file, key="units",

@@ -26,7 +26,7 @@ from typing import NamedTuple
 
 from .errors import TOL
 from .plan import Context, Dyad, Plan, SliderDyad, SlottedLink, compile_plan
-from .scene import FixedPath, GuideSlider, Scene
+from .scene import FixedPath, Scene
 
 
 

@@ -20,8 +20,8 @@ from dataclasses import dataclass
 
 from .errors import SceneError
 
-__all__ = ["Quantity", "parse_quantity", "UNITS", "LENGTH_UNITS", "format_unit_list",
-           "suggest", "did_you_mean"]
+__all__ = ["Quantity", "parse_quantity", "UNITS", "LENGTH_UNITS", "ABSURD", "TINY",
+           "format_unit_list", "suggest", "did_you_mean"]
 
 _PI = math.pi
 
@@ -46,9 +46,31 @@ UNITS: dict[str, dict[str, float]] = {
     "percent": {"%": 0.01},
 }
 
+#: the largest magnitude (SI) that makes sense for a mechanism, by kind: beyond it a value
+#: is a units slip, and the squares and products of the solution would overflow
+ABSURD: dict[str, float] = {
+    "angle": 1e6,  # rad
+    "angular_velocity": 1e6,  # rad/s (nearly 10 million rpm)
+    "angular_acceleration": 1e9,  # rad/s^2
+    "force": 1e9,  # N
+    "torque": 1e9,  # N m
+    "velocity": 1e6,  # m/s
+    "acceleration": 1e12,  # m/s^2
+}
+
+#: the smallest magnitude (SI) other than zero that makes sense, by kind: below it a value
+#: is a units slip, and products such as F v underflow to zero
+TINY: dict[str, float] = {
+    "angular_velocity": 1e-9,  # rad/s (one turn in 200 years)
+    "force": 1e-9,  # N
+    "torque": 1e-12,  # N m
+}
+
 #: the lengths a scene may be written in (``units = ...``)
 LENGTH_UNITS = {"mm", "cm", "m", "in"}
 
+_SI_NAME = {"angle": "rad", "angular_velocity": "rad/s", "angular_acceleration": "rad/s^2",
+            "force": "N", "torque": "N m", "velocity": "m/s", "acceleration": "m/s^2"}
 _SENSES = {"cw", "ccw", "acw"}
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _QUANTITY = re.compile(rf"^\s*({_NUMBER})\s*(.*?)\s*$")
@@ -178,6 +200,13 @@ def parse_quantity(raw, kind: str, *, where: str = "", default_unit: str | None 
     if need_sense and sense is None and value != 0:
         raise SceneError(f"'{raw}' has no sense: add cw or ccw (e.g. \"{raw} ccw\")", key=where)
     si = value * factor
+    if kind in ABSURD and not abs(si) <= ABSURD[kind]:
+        raise SceneError(f"'{raw}' is absurd for a mechanism (more than {ABSURD[kind]:g} "
+                         f"{_SI_NAME[kind]}); check the value and its unit", key=where)
+    if kind in TINY and si != 0 and abs(si) < TINY[kind]:
+        raise SceneError(f"'{raw}' is absurdly small for a mechanism (less than "
+                         f"{TINY[kind]:g} {_SI_NAME[kind]}); check the value and its unit",
+                         key=where)
     if sense == "cw":
         si = -si
     return Quantity(si, sense)

@@ -1,0 +1,273 @@
+"""Linkage properties against the lecture's closed forms.
+
+Grashof's classes on textbook linkages; toggle positions from the law of cosines;
+transmission angle extremes from the law of cosines; dead centres, stroke and time ratio
+of the offset slider crank from right triangles; the slotted lever's return angle
+2 acos(r / d); the slider crank's approximate formulas evaluated here by hand.
+"""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from polygon_method import parse_scene
+from polygon_method.cli import main
+from polygon_method.linkage import analyse, grashof
+
+
+def fourbar(crank, coupler, output, ground, angle=60.0, side="above"):
+    return parse_scene(f"""
+[ground]
+A = [0, 0]
+D = [{ground}, 0]
+[links]
+AB = {crank}
+BC = {coupler}
+CD = {output}
+[assembly]
+C = "{side}"
+[input]
+crank = "AB"
+angle = {angle}
+speed = "10 rad/s ccw"
+""")
+
+
+@pytest.mark.parametrize("lengths, kind, turns_in, turns_out", [
+    ((30, 90, 70, 100), "crank-rocker", True, False),  # s = crank: 130 < 160
+    ((60, 80, 70, 30), "double crank", True, True),  # s = ground: 110 < 130
+    ((70, 80, 30, 60), "rocker-crank", False, True),  # s = output
+    ((70, 30, 60, 80), "double rocker", False, False),  # s = coupler
+    ((50, 66, 56, 100), "non-Grashof triple rocker", False, False),  # 150 > 122
+    ((150, 450, 300, 200), "non-Grashof triple rocker", False, False),
+    ((40, 100, 40, 100), "parallelogram", True, True),  # 140 = 140, opposite equal
+    ((100, 40, 40, 100), "deltoid", False, True),  # adjacent equal; BC, CD shortest
+    ((40, 40, 100, 100), "deltoid", True, False),  # AB, BC shortest
+    ((50, 50, 50, 50), "rhombus", True, True),
+    ((20, 60, 50, 30), "special Grashof crank-rocker", True, False),  # 20 + 60 = 50 + 30
+])
+def test_grashof_classes(lengths, kind, turns_in, turns_out):
+    g = grashof(*(x / 1000 for x in lengths))
+    assert g.kind == kind
+    assert (g.input_turns, g.output_turns) == (turns_in, turns_out)
+
+
+def test_anti_parallelogram_from_the_scene():
+    sc = fourbar(40, 100, 40, 100, angle=60, side="below")  # crossed: C below
+    assert analyse(sc).grashof.kind == "anti-parallelogram"
+    assert analyse(fourbar(40, 100, 40, 100, angle=60)).grashof.kind == "parallelogram"
+
+
+def test_crank_rocker_toggles_swing_and_time_ratio():
+    """a = 30, b = 90, c = 70, d = 100 (mm). Driven from the output the linkage locks where
+    the crank and coupler are in line: |AC| = b + a = 120 (extended) or b - a = 60
+    (folded); angle at A: cos = (d^2 + AC^2 - c^2) / (2 d AC)."""
+    a, b, c, d = 30.0, 90.0, 70.0, 100.0
+    lk = analyse(fourbar(a, b, c, d))
+    assert lk.grashof.kind == "crank-rocker" and lk.turns_fully
+    ext = math.degrees(math.acos((d * d + (a + b) ** 2 - c * c) / (2 * d * (a + b))))
+    fold = 180 + math.degrees(math.acos((d * d + (b - a) ** 2 - c * c) / (2 * d * (b - a))))
+    got = sorted(s.deg for s in lk.stationary)
+    assert got == pytest.approx(sorted([ext, fold]), abs=1e-7)
+    # the rocker's extreme angles, at D, between DA (180 deg) and DC
+    psi = [180 - math.degrees(math.acos((d * d + c * c - L * L) / (2 * d * c)))
+           for L in (a + b, b - a)]
+    assert math.degrees(lk.output_min) == pytest.approx(min(psi), abs=1e-7)
+    assert math.degrees(lk.output_max) == pytest.approx(max(psi), abs=1e-7)
+    arc = fold - ext  # the crank turns ccw from extended to folded
+    assert lk.time_ratio == pytest.approx(max(arc, 360 - arc) / min(arc, 360 - arc), rel=1e-9)
+    assert "extended" in lk.text() and "folded" in lk.text()
+
+
+def test_transmission_angle_extremes_by_the_law_of_cosines():
+    """cos mu = (b^2 + c^2 - AD'^2) / 2bc with |AD'| = d - a (crank at 0) and d + a (at 180);
+    here mu runs from 49.99 to 108.03 deg, so the acute angle's maximum is 90 deg, reached
+    where a^2 + d^2 - 2ad cos t = b^2 + c^2."""
+    a, b, c, d = 30.0, 90.0, 70.0, 100.0
+    lk = analyse(fourbar(a, b, c, d))
+    (t,) = lk.transmission
+    mu0 = math.degrees(math.acos((b * b + c * c - (d - a) ** 2) / (2 * b * c)))
+    mu180 = math.degrees(math.acos((b * b + c * c - (d + a) ** 2) / (2 * b * c)))
+    assert t.minimum == pytest.approx(min(mu0, 180 - mu180), abs=1e-7)
+    assert t.at_min == pytest.approx(0.0, abs=1e-5)
+    assert t.maximum == pytest.approx(90.0, abs=1e-7)
+    t90 = math.degrees(math.acos((a * a + d * d - b * b - c * c) / (2 * a * d)))
+    assert t.at_max == pytest.approx(t90, abs=1e-5) or t.at_max == pytest.approx(360 - t90,
+                                                                                 abs=1e-5)
+    # now, at 60 deg: |BD|^2 = a^2 + d^2 - 2ad cos 60
+    bd2 = a * a + d * d - 2 * a * d * 0.5
+    mu = math.degrees(math.acos((b * b + c * c - bd2) / (2 * b * c)))
+    assert t.now == pytest.approx(min(mu, 180 - mu), abs=1e-9)
+    assert not t.warn and "WARNING" not in lk.text()
+
+
+def test_transmission_warning_below_40_deg():
+    """a = 40, b = 120, c = 80, d = 100: mu at crank 0 is acos((120^2 + 80^2 - 60^2) /
+    (2 120 80)) = 26.4 deg < 40; it is below 40 while |AD'|^2 = a^2 + d^2 - 2ad cos t is
+    below b^2 + c^2 - 2bc cos 40."""
+    a, b, c, d = 40.0, 120.0, 80.0, 100.0
+    lk = analyse(fourbar(a, b, c, d, angle=120))
+    (t,) = lk.transmission
+    assert t.minimum == pytest.approx(math.degrees(math.acos(
+        (b * b + c * c - (d - a) ** 2) / (2 * b * c))), abs=1e-7)
+    assert t.warn and "WARNING" in lk.text()
+    e2 = b * b + c * c - 2 * b * c * math.cos(math.radians(40))
+    edge = math.degrees(math.acos((a * a + d * d - e2) / (2 * a * d)))
+    ((lo, hi),) = t.below
+    assert lo == pytest.approx(360 - edge, abs=1e-6)
+    assert hi == pytest.approx(edge, abs=1e-6)
+
+
+def test_non_grashof_toggles_driven_from_the_input():
+    """O2A 150, AB 450, BO4 300, O2O4 200: the input's toggles where AB and BO4 are in line,
+    O4A = 450 - 300: cos t = (150^2 + 200^2 - 150^2) / (2 150 200) = 2/3."""
+    sc = parse_scene("""
+[ground]
+O2 = [0, 0]
+O4 = [200, 0]
+[links]
+"O2-A" = 150
+"A-B" = 450
+"B-O4" = 300
+[assembly]
+B = "above"
+[input]
+crank = "O2-A"
+angle = 150
+speed = "200 rad/s ccw"
+""")
+    lk = analyse(sc)
+    assert lk.grashof.kind == "non-Grashof triple rocker" and not lk.turns_fully
+    lim = math.degrees(math.acos(2 / 3))
+    assert lk.range_deg == pytest.approx((lim, 360 - lim), abs=1e-8)
+    text = lk.text()
+    assert f"{lim:.4f}" in text and f"{360 - lim:.4f}" in text
+    assert "quick return: not applicable" in text
+
+
+def offset_slider_crank(r=100, l=400, e=40):
+    return parse_scene(f"""
+[ground]
+O = [0, 0]
+[links]
+OA = {r}
+AB = {l}
+[sliders]
+B = {{ path = "horizontal", through = [0, {-e}] }}
+[assembly]
+B = "right"
+[input]
+crank = "OA"
+angle = 60
+speed = "300 rpm cw"
+""")
+
+
+def test_offset_slider_crank_dead_centres_stroke_and_time_ratio():
+    """Dead centres where crank and rod are in line: B at x = sqrt((l +- r)^2 - e^2) on the
+    line y = -e; stroke their difference; the crank angles between them give the time
+    ratio."""
+    r, l, e = 100.0, 400.0, 40.0
+    lk = analyse(offset_slider_crank(r, l, e))
+    x1, x2 = math.sqrt((l + r) ** 2 - e * e), math.sqrt((l - r) ** 2 - e * e)
+    t_ext = math.degrees(math.atan2(-e, x1)) % 360
+    t_fold = math.degrees(math.atan2(e, -x2)) % 360
+    assert sorted(s.deg for s in lk.stationary) == pytest.approx(sorted([t_ext, t_fold]),
+                                                                  abs=1e-7)
+    assert (lk.output_max - lk.output_min) * 1000 == pytest.approx(x1 - x2, rel=1e-10)
+    arc = (t_ext - t_fold) % 360
+    assert lk.time_ratio == pytest.approx(max(arc, 360 - arc) / min(arc, 360 - arc),
+                                          rel=1e-9)
+    assert "in-line slider crank only" in lk.text()
+
+
+def test_slotted_lever_time_ratio():
+    """The lever's extreme positions are where the crank is perpendicular to it: the
+    return takes 2 acos(r / d) of the crank (r = 120, d = 300)."""
+    sc = parse_scene("""
+[ground]
+O4 = [0, 0]
+O2 = [0, 300]
+[links]
+"O2-A" = 120
+"O4-P" = 600
+"P-Q" = 200
+[sliders]
+A = { along = "O4-P" }
+Q = { path = "horizontal", through = [0, 620] }
+[assembly]
+Q = "right"
+[input]
+crank = "O2-A"
+angle = 45
+speed = "60 rpm cw"
+""")
+    lk = analyse(sc)
+    ret = 2 * math.degrees(math.acos(120 / 300))
+    assert lk.time_ratio == pytest.approx((360 - ret) / ret, rel=1e-9)
+    assert lk.kind == "crank and slotted lever"
+
+
+def test_slider_crank_formulas_beside_the_exact_values():
+    """The notes' engine: r = 150, l = 600 mm, 450 rpm, 60 deg from i.d.c.; the formulas
+    v = r w (sin t + sin 2t / 2n), a = r w^2 (cos t + cos 2t / n) evaluated here, the exact
+    values from x = r cos t + sqrt(l^2 - r^2 sin^2 t)."""
+    sc = parse_scene("""
+[ground]
+O = [0, 0]
+[links]
+OA = 150
+AB = 600
+[sliders]
+B = { path = "horizontal", through = "O" }
+[assembly]
+B = "right"
+[input]
+crank = "OA"
+angle = 60
+speed = "450 rpm ccw"
+""")
+    lk = analyse(sc)
+    r, l, n, w, t = 0.15, 0.6, 4.0, 450 * math.pi / 30, math.radians(60)
+    v_ap = r * w * (math.sin(t) + math.sin(2 * t) / (2 * n))
+    a_ap = r * w * w * (math.cos(t) + math.cos(2 * t) / n)
+    q = math.sqrt(l * l - r * r * math.sin(t) ** 2)
+    v_ex = r * w * (math.sin(t) + r * math.sin(t) * math.cos(t) / q)
+    text = "\n".join(lk.formulas)
+    assert f"{v_ap:.6g}" in text and f"{a_ap:.6g}" in text and f"{v_ex:.6g}" in text
+    err = 100 * (v_ap - v_ex) / v_ex
+    assert f"{err:+.3f} %" in text
+    assert lk.stationary[0].deg == pytest.approx(0.0, abs=1e-6)
+    assert lk.time_ratio == pytest.approx(1.0, abs=1e-9)
+
+
+def test_parallelogram_change_points_reported():
+    lk = analyse(fourbar(40, 100, 40, 100))
+    assert len(lk.change_points) == 2
+    assert all("change point" in c for c in lk.change_points)
+    (t,) = lk.transmission
+    assert t.minimum == 0.0
+
+
+def test_linkage_command(tmp_path, capsys):
+    p = tmp_path / "cr.toml"
+    p.write_text("""
+[ground]
+A = [0, 0]
+D = [100, 0]
+[links]
+AB = 30
+BC = 90
+CD = 70
+[input]
+crank = "AB"
+angle = 60
+speed = "10 rad/s ccw"
+""")
+    assert main(["linkage", str(p)]) == 0
+    out = capsys.readouterr().out
+    assert "crank-rocker" in out and "transmission angle" in out
+    assert main(["linkage", str(tmp_path / "missing.toml")]) == 2
+    assert len(capsys.readouterr().err.strip().splitlines()) == 1
