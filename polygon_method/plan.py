@@ -523,7 +523,7 @@ class Plan:
     scene: Scene = field(repr=False)
     notes: tuple = ()
     fixed_links: dict = field(default_factory=dict)
-    pins: tuple = ()  # (point, radius, body names, their links or None, (("a|b", i, j), ...))
+    pins: tuple = ()  # (point, radius, body names, their links or None, "a|b" keys, (i, j))
     _compiled: dict = field(default_factory=dict, repr=False, compare=False)
 
     def bodies_at(self, point) -> tuple:
@@ -610,9 +610,9 @@ class Plan:
         body.append("    W = {" + ", ".join(f"{lk.key!r}: w_{j}" for j, lk in
                                              enumerate(sc.links)) + "}")
         rub = []
-        for point, radius, _, links, pairs in self.pins:
+        for point, radius, _, links, _, pairs in self.pins:
             w = [f"w_{n[lk]}" if lk is not None else "0.0" for lk in links]
-            vals = "".join(f"abs({w[i]} - {w[j]}) * {radius!r}, " for _, i, j in pairs)
+            vals = "".join(f"abs({w[i]} - {w[j]}) * {radius!r}, " for i, j in pairs)
             rub.append(f"{point!r}: ({vals})")
         body.append("    ctx.rubbing = {" + ", ".join(rub) + "}")
         body.append("    if not acc: return P, V, {}, W, {}, {" + ", ".join(
@@ -745,7 +745,8 @@ class _Compiler:
             pairs = tuple((f"{a[0]}|{b[0]}", i, j) for i, a in enumerate(joined)
                           for j, b in enumerate(joined) if j > i)
             pins.append((pin.point, pin.radius, tuple(b for b, _ in joined),
-                         tuple(lk for _, lk in joined), pairs))
+                         tuple(lk for _, lk in joined), tuple(k for k, _, _ in pairs),
+                         tuple((i, j) for _, i, j in pairs)))
         pins = tuple(pins)
         return replace(plan, pins=pins)
 

@@ -22,7 +22,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import NamedTuple
 
 from .errors import TOL
 from .plan import Context, Dyad, Plan, SliderDyad, SlottedLink, compile_plan
@@ -61,17 +60,33 @@ def fmt_angular(value: float, unit: str, digits: int = 4) -> str:
     return f"{abs(value):.{digits}g} {unit}" + (f" {s}" if s else "")
 
 
-class PinRubbing(NamedTuple):
-    """Rubbing velocity at a pin: |w1 - w2| r for each pair of bodies the pin joins."""
+class PinRubbing:
+    """Rubbing velocity at a pin: ``|w1 - w2| r`` for each pair of bodies the pin joins.
 
-    point: str
-    radius: float
-    bodies: dict  # body name -> omega
-    pairs: dict  # "AB|BC" -> rubbing velocity
+    Attributes: ``point``, ``radius``, ``pairs`` ({"AB|BC": v}), ``bodies`` ({body: omega})
+    and ``rubbing_velocity`` (the largest pair).
+    """
+
+    __slots__ = ("point", "radius", "_keys", "_values", "_names", "_omegas")
+
+    def __init__(self, point, radius, keys, values, names, omegas):
+        self.point, self.radius = point, radius
+        self._keys, self._values, self._names, self._omegas = keys, values, names, omegas
+
+    @property
+    def pairs(self) -> dict:
+        return dict(zip(self._keys, self._values))
+
+    @property
+    def bodies(self) -> dict:
+        return dict(zip(self._names, self._omegas))
 
     @property
     def rubbing_velocity(self) -> float:
-        return max(self.pairs.values(), default=0.0)
+        return max(self._values, default=0.0)
+
+    def __repr__(self):
+        return f"PinRubbing({self.point!r}, radius={self.radius!r}, pairs={self.pairs!r})"
 
 
 @dataclass(frozen=True)
@@ -146,13 +161,10 @@ class Solution:
         At each pin, for each pair of bodies it joins: ``|w1 - w2| r`` (signed omegas: the
         sum of the magnitudes when they turn in opposite senses, the difference when alike).
         """
-        out = {}
         W, R = self.W, self.R
-        for point, radius, names, links, pairs in self.plan.pins:
-            omegas = [W[link] if link is not None else 0.0 for link in links]
-            rub = {key: v for (key, _, _), v in zip(pairs, R[point])}
-            out[point] = PinRubbing(point, radius, dict(zip(names, omegas)), rub)
-        return out
+        return {point: PinRubbing(point, radius, keys, R[point], names,
+                                  [W[lk] if lk is not None else 0.0 for lk in links])
+                for point, radius, names, links, keys, _ in self.plan.pins}
 
     @cached
     def power_terms(self) -> list:

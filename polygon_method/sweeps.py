@@ -609,10 +609,10 @@ def _frame_of(res: SweepResult) -> Frame:
 
 def _rubbing(plan, W, n):
     out = {}
-    for point, radius, _names, links, pairs in getattr(plan, "pins", ()):
+    for point, radius, _names, links, _keys, pairs in getattr(plan, "pins", ()):
         w = [W[lk] if lk is not None else None for lk in links]
         best = np.zeros(n)
-        for _, i, j in pairs:
+        for i, j in pairs:
             a = w[i] if w[i] is not None else 0.0
             b = w[j] if w[j] is not None else 0.0
             np.maximum(best, np.abs(a - b) * radius, out=best)
