@@ -341,6 +341,18 @@ def _suggest(word, choices) -> str:
     return did_you_mean(word, list(choices))
 
 
+def _printable(text):
+    """``text`` with line breaks and control characters escaped, so that a message built
+    from the file's own names stays one clean line on a terminal.
+
+    >>> print(_printable('A\\nB'), _printable('BC'))
+    A\\nB BC
+    """
+    if text is None or str(text).isprintable():
+        return text
+    return "".join(c if c.isprintable() else repr(c)[1:-1] for c in str(text))
+
+
 def _which_point(name, known) -> str:
     """A did-you-mean, or else the scene's points, for a message about an unknown point."""
     names = sorted(known, key=lambda p: (p[0], len(p), p))
@@ -377,7 +389,8 @@ class _Loader:
 
     def error(self, message, table=None, key=None, cls=SceneError):
         label = f"[{table}] {key}" if table and key else (f"[{table}]" if table else key)
-        return cls(message, file=self.file, key=label, line=self.line_of(table, key))
+        return cls(_printable(message), file=self.file, key=_printable(label),
+                   line=self.line_of(table, key))
 
     def top_line(self, key):
         for i, line in enumerate(self.lines, 1):
@@ -432,7 +445,7 @@ class _Loader:
                 kind = "table" if isinstance(raw[key], dict) else "key"
                 where = f"[{key}]" if kind == "table" else key
                 raise SceneError(f"unknown {kind}{_suggest(key, TOP_KEYS)}; a scene has "
-                                 + ", ".join(TOP_KEYS), file=self.file, key=where,
+                                 + ", ".join(TOP_KEYS), file=self.file, key=_printable(where),
                                  line=self.line_of(key) if kind == "table" else self.top_line(key))
         units = raw.get("units", "mm")
         if not isinstance(units, str):
@@ -845,7 +858,8 @@ class _Loader:
                             "nothing)") if guess else ""
                     raise self.error(f"point {p} appears only in link {lk.key} and nowhere "
                                      f"else: nothing holds it (a typo?){hint}", "links", lk.key)
-        for name in lonely:
+        if lonely:
+            name = lonely[0]
             raise SceneError(f"ground point {name} is not joined to any link: add its link "
                              "or remove it", file=self.file, key=f"[ground] {name}",
                              line=self.line_of("ground", name))
