@@ -34,9 +34,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .errors import TOL
+from .errors import TOL, SingularStepError
 from .plan import Carried, Crank, Dyad, SliderDyad, SlottedLink, compile_plan
 from .scene import FixedPath, Scene
+from .solution import solve
 from .sweeps import TWO_PI, Frame, Sweeper, _degrees_fn, _run, _valid
 
 __all__ = ["grashof", "Grashof", "analyse", "Linkage", "Stationary", "Transmission",
@@ -460,6 +461,9 @@ class Linkage:
                            "drive the crank through")
                 for s in self.stationary:
                     out.append(f"    crank at {s.deg:9.4f} deg: {s.what}")
+            elif any("dwells" in n for n in self.notes):
+                out.append(f"  driving from the output ({self.output_label}): it dwells over "
+                           "whole ranges of the crank (see below)")
             else:
                 out.append(f"  driving from the output ({self.output_label}): none (it never "
                            "stands still while the crank turns)")
@@ -497,6 +501,9 @@ def _mm(x, scene) -> str:
 
 def _dir_deg(x, y) -> float:
     return math.degrees(math.atan2(y, x))
+
+
+_MAX_STATIONARY = 12  # more than this: the output dwells (a degenerate linkage)
 
 
 def analyse(scene: Scene) -> Linkage:
@@ -583,11 +590,22 @@ def analyse(scene: Scene) -> Linkage:
     if out is not None:
         stationary, out_lines, omin, omax, ratio, tlines = _output_motion(cyc, out, scene,
                                                                           fb, sk, slot)
+        if len(stationary) > _MAX_STATIONARY:  # a degenerate linkage: the output dwells
+            notes.append(f"{out.label} stands still at {len(stationary)} of the sampled "
+                         "crank angles: it dwells over whole ranges of the crank (a degenerate "
+                         "linkage), so no single toggle positions are listed")
+            stationary, ratio, tlines = (), None, ()
     trans = tuple(_transmission(cyc, st, scene) for st in plan.steps
                   if isinstance(st, (Dyad, SliderDyad)))
     formulas = ()
     if sk is not None and sk.inline:
-        formulas = tuple(_engine_lines(cyc, sk, scene))
+        try:
+            solve(scene)  # the exact values exist at the scene's instant
+        except SingularStepError as exc:
+            notes.append("the approximate formulas are not compared at the scene's instant: "
+                         f"{exc.step}: {exc.message}")
+        else:
+            formulas = tuple(_engine_lines(cyc, sk, scene))
     elif sk is not None:
         notes.append("the approximate formulas v = r w (sin t + sin 2t / 2n) etc. hold for an "
                      "in-line slider crank only")

@@ -419,7 +419,7 @@ def _torque_items(sol):
         if load.force is not None:
             F = math.hypot(*load.force)
             v = sol.speed(target)
-            if v > 0 and F > 0:
+            if F * v > 0:  # (both may be positive and their product underflow to 0)
                 vx, vy = sol.V[target]
                 cos = (load.force[0] * vx + load.force[1] * vy) / (F * v)
                 ang = math.degrees(math.acos(max(-1.0, min(1.0, cos))))

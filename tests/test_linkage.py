@@ -271,3 +271,35 @@ speed = "10 rad/s ccw"
     assert "crank-rocker" in out and "transmission angle" in out
     assert main(["linkage", str(tmp_path / "missing.toml")]) == 2
     assert len(capsys.readouterr().err.strip().splitlines()) == 1
+
+
+def test_degenerate_slider_crank_at_a_singular_instant_prints_no_nan(capsys):
+    """r = l: the slider can dwell at the crank pivot, and at 90 deg the rod is square to the
+    path (a dead centre for the slider step): the report must say so, never print nan/inf,
+    and must not list the dwell as hundreds of toggle positions."""
+    import tempfile
+    from pathlib import Path
+
+    from polygon_method.cli import main
+
+    text = """
+    [ground]
+    O = [0, 0]
+    [links]
+    OA = 1
+    AB = 1
+    [sliders]
+    B = { path = "horizontal", through = [0, 0] }
+    [input]
+    crank = "OA"
+    angle = 90
+    speed = "1 rad/s cw"
+    """
+    with tempfile.TemporaryDirectory() as d:
+        path = Path(d) / "degenerate.toml"
+        path.write_text(text)
+        assert main(["linkage", str(path)]) == 0
+    out = capsys.readouterr().out
+    assert "nan" not in out and "inf " not in out
+    assert "not compared at the scene's instant" in out
+    assert out.count("crank at") < 20
