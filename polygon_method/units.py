@@ -71,7 +71,9 @@ LENGTH_UNITS = {"mm", "cm", "m", "in"}
 
 _SI_NAME = {"angle": "rad", "angular_velocity": "rad/s", "angular_acceleration": "rad/s^2",
             "force": "N", "torque": "N m", "velocity": "m/s", "acceleration": "m/s^2"}
-_SENSES = {"cw", "ccw", "acw"}
+#: sense words: the format's cw/ccw, and the spellings textbooks use
+_SENSES = {"cw": "cw", "clockwise": "cw", "ccw": "ccw", "acw": "ccw", "anticlockwise": "ccw",
+           "anti-clockwise": "ccw", "counterclockwise": "ccw", "counter-clockwise": "ccw"}
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _QUANTITY = re.compile(rf"^\s*({_NUMBER})\s*(.*?)\s*$")
 
@@ -172,7 +174,7 @@ def parse_quantity(raw, kind: str, *, where: str = "", default_unit: str | None 
         text = raw.strip()
         words = text.split()
         if words and words[-1].lower() in _SENSES:
-            sense = "ccw" if words[-1].lower() in ("ccw", "acw") else "cw"
+            sense = _SENSES[words[-1].lower()]
             text = " ".join(words[:-1])
         m = _QUANTITY.match(text)
         if not m:

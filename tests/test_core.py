@@ -502,3 +502,10 @@ def test_crank_with_ground_point_second_in_its_name():
     b = solve(parse_scene(FOURBAR.replace("AB = 50", "BA = 50").replace('crank = "AB"', 'crank = "BA"')))
     assert a.P["C"] == b.P["C"]
     assert b.omega("BA") == a.omega("AB")
+
+
+@pytest.mark.parametrize("word, sign", [("clockwise", -1), ("anticlockwise", 1), ("acw", 1),
+                                        ("counter-clockwise", 1), ("cw", -1), ("CCW", 1)])
+def test_sense_words_as_textbooks_write_them(word, sign):
+    scene = parse_scene(FOURBAR.replace('"10.5 rad/s cw"', f'"100 rpm {word}"'))
+    assert scene.input.omega == pytest.approx(sign * 100 * 2 * math.pi / 60)
