@@ -38,7 +38,7 @@ from .errors import TOL, SingularStepError
 from .plan import Carried, Crank, Dyad, SliderDyad, SlottedLink, compile_plan
 from .scene import FixedPath, Scene
 from .solution import solve
-from .sweeps import TWO_PI, Frame, Sweeper, _degrees_fn, _run, _valid
+from .sweeps import TWO_PI, Sweeper, _degrees_fn, _merge, _run, _valid
 
 __all__ = ["grashof", "Grashof", "analyse", "Linkage", "Stationary", "Transmission",
            "run_linkage", "engine_formula_lines", "slider_crank_of"]
@@ -304,7 +304,7 @@ class _Cycle:
                 idx = np.nonzero(seg == k)[0]
                 out[int(k)] = (idx, _run(self.dom.segments[int(k)][2], t[idx], self.sw.omega,
                                          self.sw.alpha, vel=False, acc=False))
-            fr = _merge_positions(t, out)
+            fr = _merge(t, out)
             return fr, fr.bad | bad
         fr = self.sw.evaluate(pts)
         return fr, _valid(fr, self.plan)
@@ -368,25 +368,6 @@ class _Cycle:
         plan = self.dom.segments[int(seg[0])][2]
         return _run(plan, np.array([float(theta)]), self.sw.omega, self.sw.alpha,
                     vel=False, acc=False)
-
-
-def _merge_positions(t, parts):
-    """Positions (and conditions) of several segment frames, back in the order of ``t``."""
-    n = len(t)
-    first = next(iter(parts.values()))[1]
-
-    def put(get):
-        out = np.empty(n)
-        for idx, fr in parts.values():
-            out[idx] = get(fr)
-        return out
-
-    P = {k: (put(lambda f: f.P[k][0]), put(lambda f: f.P[k][1])) for k in first.P}
-    cond = {i: put(lambda f: f.cond[i]) for i in first.cond}
-    bad = np.zeros(n, dtype=bool)
-    for idx, fr in parts.values():
-        bad[idx] = fr.bad
-    return Frame(t, P, {}, {}, {}, {}, {}, cond, bad)
 
 
 # --------------------------------------------------------------------------- results
