@@ -625,7 +625,15 @@ class _Loader:
                 if "path" in spec or "through" in spec:
                     raise self.error("a block slides either on a fixed path or along a link, "
                                      "not both", "sliders", name)
-                link, pts = self.find_link(spec["along"], "sliders", name)
+                guide = spec["along"]
+                if len(split_name(guide)) == 2 and not self.index.get(frozenset(
+                        split_name(guide))) and any(p in self.ground
+                                                    for p in split_name(guide)):
+                    raise self.error(
+                        f"the guide {guide} is not in [links]: add it with its length, e.g. "
+                        f"\"{guide}\" = 500 (if the problem does not give the lever's length, "
+                        "any length will do: it only places the end of the lever)", "sliders", name)
+                link, pts = self.find_link(guide, "sliders", name)
                 if name in link.points:
                     raise self.error(f"{name} is an end of {link.key}; a block slides along a "
                                      "link between its ends", "sliders", name)
