@@ -345,9 +345,15 @@ def _velocity(doc, sol, vscale):
             t += f"; at {vscale.text} that is {vscale.cm(c.found[0].magnitude):.2f} cm"
         for g in c.given:
             t += f"; set out {g.name} = {fmt(g.magnitude)} m/s ({vscale.cm(g.magnitude):.2f} cm)"
-        if c.condition < 0.5 and c.lines:
-            t += (f" (the lines cross at {fmt(math.degrees(math.asin(min(c.condition, 1))), 3)}"
-                  " deg: read carefully)")
+        if c.lines:
+            kind = sol.plan.steps[c.step].kind
+            if kind == "slotted":  # the two lines are square; the measure is |KA| / length
+                t += f" (condition {fmt(c.condition, 3)})"
+            else:
+                t += (f" (the lines cross at "
+                      f"{fmt(math.degrees(math.asin(min(c.condition, 1))), 3)} deg, condition "
+                      f"{fmt(c.condition, 3)}" + ("; read carefully" if c.condition < 0.5
+                                                  else "") + ")")
         items.append(t)
     doc.items(items)
 

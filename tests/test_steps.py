@@ -259,3 +259,23 @@ def test_space_scale_in_scene_units():
     sol = solve(parse_scene(FOURBAR))
     space, _, _ = diagram_scales(sol)
     assert space.unit == "mm" and space.text == "1 cm = 10 mm"
+
+
+def test_each_construction_states_where_its_lines_cross():
+    """The angle printed for a dyad is the angle between its two links at the joint,
+    measured here from the positions (the transmission angle, acute)."""
+    import re
+    from pathlib import Path
+
+    from polygon_method import load_scene
+
+    path = Path(__file__).parent.parent / "worked_problems" / "toggle_mechanism.toml"
+    sol = solve(load_scene(path))
+    text = steps_text(sol)
+    (ax, ay), (bx, by), (cx, cy) = sol.P["A"], sol.P["B"], sol.P["C"]
+    ang = math.degrees(abs(math.atan2((ax - bx) * (cy - by) - (ay - by) * (cx - bx),
+                                      (ax - bx) * (cx - bx) + (ay - by) * (cy - by))))
+    acute = min(ang, 180 - ang)
+    m = re.search(r"Step 2 \(dyad AB, CB at B\).*?the lines cross at ([0-9.]+) deg",
+                  text, re.S)
+    assert m and float(m.group(1)) == pytest.approx(acute, abs=0.05)
