@@ -110,12 +110,17 @@ class Tolerances:
         another circle or line counts as touching rather than missing.
     transmission_warn_deg : float
         The lecture's advice: keep the transmission angle above 40 deg.
+    negligible : float
+        A value smaller than this fraction of the largest of its kind in the same solution
+        (a coupler that translates: omega 3e-13 beside 10 rad/s) is rounding noise: reports
+        and step tables show it as 0 with no sense; the JSON keeps the raw number.
     """
 
     singular = 1e-3
     warn = 0.08715574274765817  # sin(5 deg)
     closure = 1e-12
     transmission_warn_deg = 40.0
+    negligible = 1e-10
 
 
 TOL = Tolerances()

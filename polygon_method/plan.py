@@ -648,7 +648,8 @@ class Plan:
 def _singular_why(st, c):
     if isinstance(st, Dyad):
         return (f"{st.link1} and {st.link2} are in line (transmission angle "
-                f"{math.degrees(math.asin(min(c, 1.0))):.3g} deg): a toggle position, where the "
+                f"{math.degrees(math.asin(min(c, 1.0))):.3g} deg): a toggle position (or a change point, "
+                f"where the linkage may switch branch), where the "
                 f"direction lines perpendicular to {st.link1} and {st.link2} are parallel and "
                 f"the velocity of {st.point} is indeterminate")
     if isinstance(st, SliderDyad):

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 
+from .errors import TOL
 from .solution import Solution, fmt_angular
 
 __all__ = ["solution_text", "direction_deg"]
@@ -15,9 +16,9 @@ def direction_deg(x: float, y: float) -> float:
     return 0.0 if d >= 359.9995 else d
 
 
-def _vec(x, y, digits=4):
+def _vec(x, y, digits=4, scale=0.0):
     m = math.hypot(x, y)
-    if m == 0:
+    if m <= TOL.negligible * scale:
         return "0"
     return f"{m:.{digits}g} at {direction_deg(x, y):.1f} deg"
 
@@ -39,11 +40,12 @@ def solution_text(sol: Solution) -> str:
     for p in sc.point_names:
         x, y = sol.P[p]
         pos = f"({x / u:.4f}, {y / u:.4f})"
-        lines.append(f"{p:<6} {pos:<24} {_vec(*sol.V[p]):<24} {_vec(*sol.A[p]):<24}")
+        lines.append(f"{p:<6} {pos:<24} {_vec(*sol.V[p], scale=sol.scales['v']):<24} "
+                     f"{_vec(*sol.A[p], scale=sol.scales['a']):<24}")
     lines.append("")
     lines.append(f"{'link':<8} {'length (' + sc.units + ')':<14} {'omega':<22} {'alpha':<22}")
     for lk in sc.links:
-        w, al = sol.W[lk.key], sol.Al[lk.key]
+        w, al = sol.shown(sol.W[lk.key], "omega"), sol.shown(sol.Al[lk.key], "alpha")
         lines.append(f"{lk.key:<8} {lk.length / u:<14.6g} {fmt_angular(w, 'rad/s'):<22} "
                      f"{fmt_angular(al, 'rad/s^2'):<22}")
     if sc.sliders:
@@ -52,9 +54,10 @@ def solution_text(sol: Solution) -> str:
                      f"{'sliding a (m/s^2)':<20} {'Coriolis (m/s^2)':<24}")
         for s in sc.sliders:
             vs, a_s, cor = sol.S[s.point]
+            vs, a_s = sol.shown(vs, "v"), sol.shown(a_s, "a")
             guide = getattr(s, "label", None) or getattr(s, "guide", "")
             lines.append(f"{s.point:<8} {guide:<16} {vs:<18.5g} {a_s:<20.5g} "
-                         f"{_vec(*cor):<24}")
+                         f"{_vec(*cor, scale=sol.scales['a']):<24}")
     if sc.pins:
         lines.append("")
         lines.append("pin   radius (" + sc.units + ")  rubbing velocity (m/s)")

@@ -201,6 +201,21 @@ class Solution:
     def notes(self) -> tuple:
         return self.plan.notes
 
+    # ----- presentation
+    @cached
+    def scales(self) -> dict:
+        """The largest value of each kind in this solution (for :meth:`shown`)."""
+        w = max((abs(x) for x in self.W.values()), default=0.0)
+        return {"v": max((math.hypot(*v) for v in self.V.values()), default=0.0),
+                "a": max((math.hypot(*a) for a in self.A.values()), default=0.0),
+                "omega": w,
+                "alpha": max((abs(x) for x in self.Al.values()), default=0.0) + w * w}
+
+    def shown(self, value, kind):
+        """``value`` as reports show it: 0 where it is below ``TOL.negligible`` of the
+        largest of its ``kind`` ("v", "a", "omega", "alpha"): rounding noise, not a motion."""
+        return 0.0 if abs(value) <= TOL.negligible * self.scales[kind] else value
+
     # ----- output
     def to_dict(self) -> dict:
         """The JSON contract of ``solve --json`` (SI, ccw positive)."""

@@ -364,8 +364,8 @@ def _angular_velocity_items(sol):
     for lk in sc.links:
         if lk.key in sol.plan.fixed_links:
             continue
-        w = sol.W[lk.key]
-        v = sol.speed(lk.q, lk.p)
+        w = sol.shown(sol.W[lk.key], "omega")
+        v = sol.shown(sol.speed(lk.q, lk.p), "v")
         if lk.key == sc.input.crank:
             items.append(f"omega_{lk.key} = {fmt(abs(w))} rad/s {sense_word(w)} (the input)")
             continue
@@ -541,7 +541,7 @@ def _acceleration(doc, sol, ascale):
     for lk in sc.links:
         if lk.key in sol.plan.fixed_links:
             continue
-        al = sol.Al[lk.key]
+        al = sol.shown(sol.Al[lk.key], "alpha")
         if lk.key == sc.input.crank:
             items.append(f"alpha_{lk.key} = {fmt(abs(al))} rad/s^2 {sense_word(al)} "
                          "(the input)".replace("  ", " "))

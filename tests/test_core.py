@@ -509,3 +509,32 @@ def test_crank_with_ground_point_second_in_its_name():
 def test_sense_words_as_textbooks_write_them(word, sign):
     scene = parse_scene(FOURBAR.replace('"10.5 rad/s cw"', f'"100 rpm {word}"'))
     assert scene.input.omega == pytest.approx(sign * 100 * 2 * math.pi / 60)
+
+
+def test_parallelogram_coupler_translates_and_reports_say_zero():
+    """AB = CD, BC = AD: the coupler translates (omega_BC = 0, closed form) and the rocker
+    turns with the crank. Rounding leaves ~1e-13 rad/s in omega_BC: reports show 0 with no
+    sense; the JSON keeps the raw number."""
+    from polygon_method.steps import steps_text
+
+    scene = parse_scene("""
+    [ground]
+    A = [0, 0]
+    D = [100, 0]
+    [links]
+    AB = 40
+    BC = 100
+    CD = 40
+    [assembly]
+    C = "above"
+    [input]
+    crank = "AB"
+    angle = 30
+    speed = "10 rad/s ccw"
+    """)
+    sol = solve(scene)
+    assert abs(sol.omega("BC")) < 1e-12 and sol.omega("CD") == pytest.approx(10, rel=1e-12)
+    assert abs(sol.alpha("CD")) < 1e-8
+    row = next(line for line in sol.report().splitlines() if line.startswith("BC "))
+    assert "0 rad/s " in row and "cw" not in row and "ccw" not in row
+    assert "omega_BC = v_CB / BC = 0 / 0.1 = 0 rad/s\n" in steps_text(sol) + "\n"
