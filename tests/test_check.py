@@ -385,3 +385,31 @@ def test_parse_scale_round_trip():
     assert s.per_cm == 0.5 and s.text == "1 cm = 0.5 m/s"
     with pytest.raises(SceneError):
         parse_scale("1 cm = 0.1 rad/s")
+
+
+def test_zero_answer_for_a_translating_coupler_is_right(tmp_path):
+    """A parallelogram's coupler translates: omega_BC = 0 exactly (closed form); the
+    solver's ~1e-15 of rounding must not make a student's 0 wrong or print 100 % error."""
+    from polygon_method.check import check_answers
+    from polygon_method.scene import parse_answers
+
+    scene = parse_scene("""
+    [ground]
+    A = [0, 0]
+    D = [100, 0]
+    [links]
+    AB = 40
+    BC = 100
+    CD = 40
+    [assembly]
+    C = "above"
+    [input]
+    crank = "AB"
+    angle = 30
+    speed = "10 rad/s ccw"
+    """)
+    sol = solve(scene)
+    _, answers = parse_answers('[answers]\nomega_BC = "0 rad/s"\nalpha_BC = "0 rad/s^2"\n', scene)
+    verdicts = check_answers(sol, answers, None)
+    assert all(v.ok for v in verdicts), verdicts
+    assert all(v.correct == 0 for v in verdicts)
