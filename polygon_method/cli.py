@@ -85,13 +85,13 @@ def _cmd_check(args) -> int:
 def _cmd_draw(args) -> int:
     from .draw import run_draw
 
-    return run_draw(args)
+    return run_draw(args, write_output)
 
 
 def _cmd_sweep(args) -> int:
     from .sweeps import run_sweep
 
-    return run_sweep(args)
+    return run_sweep(args, write_output)
 
 
 def _cmd_linkage(args) -> int:

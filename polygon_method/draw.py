@@ -1093,13 +1093,13 @@ def svg_string(sol, diagram: str = "all", scales=None) -> str:
     return render(sol, "svg", diagram, scales)[0]
 
 
-def run_draw(args) -> int:
+def run_draw(args, write) -> int:
     """``polygon-method draw SCENE -o FILE.svg [--diagram ...] [--scale "1 cm = 0.1 m/s"]``.
 
-    The file is written whole, or not at all when the scene cannot be solved."""
+    The file is written by ``write(path, data, binary=...)`` (the command line's, which
+    writes whole or not at all), and not at all when the scene cannot be solved."""
     from pathlib import Path
 
-    from .cli import write_output
     from .scene import load_scene
     from .solution import solve
 
@@ -1114,6 +1114,6 @@ def run_draw(args) -> int:
     data, used, warnings = render(sol, fmt, diagram, scales)
     for w in list(sol.warnings) + warnings:
         print(f"warning: {w}", file=sys.stderr)
-    write_output(out, data, binary=fmt != "svg")
+    write(out, data, binary=fmt != "svg")
     print(f"{out}: " + "; ".join(f"{name} {_display_unit(s.text)}" for name, s in used.items()))
     return 0

@@ -1139,10 +1139,10 @@ def _requested_angles(args):
     return np.linspace(0.0, TWO_PI, n, endpoint=False)
 
 
-def run_sweep(args) -> int:
+def run_sweep(args, write) -> int:
     """``polygon-method sweep SCENE [--steps N | --from A --to B --step S] [--csv FILE]
-    [--plot FILE.svg] [--summary]``: print the summary, write the CSV and the plot."""
-    from .cli import write_output
+    [--plot FILE.svg] [--summary]``: print the summary; the CSV and the plot are written by
+    ``write(path, data, binary=...)``, the command line's (whole or not at all)."""
     from .scene import load_scene
 
     plot = getattr(args, "plot", None)
@@ -1166,7 +1166,7 @@ def run_sweep(args) -> int:
         outputs.append((plot, plot_bytes(res, plot, points=_names(args, "points"),
                                          links=_names(args, "links")), True))
     for path, data, binary in outputs:
-        write_output(path, data, binary=binary)
+        write(path, data, binary=binary)
     if want_summary:
         print(res.summary().text())
     else:
