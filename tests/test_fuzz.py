@@ -92,6 +92,8 @@ def _check_solution(sol) -> None:
     json.dumps(d, allow_nan=False)
     _finite_tree(d, "json")
     text = sol.report()
+    if sol.scene.title:  # the scene's own words may spell "inf" (a mutated title did)
+        text = text.replace(sol.scene.title, "")
     assert not _NONFINITE.search(text), text
     for ans in sol.scene.answers:
         value = sol.value(ans.kind, ans.names)
