@@ -656,6 +656,25 @@ class _Diagnoser:
                                   "(the power is F . v = F v cos theta)"))
         return out
 
+    def own_slip(self, ans):
+        """A copying slip: the answer is the student's own value for the same quantity
+        (v_BD and v_DB have one magnitude) with its leading digits lost: 36 for 2.36."""
+        m = _NUM.search(str(ans.raw))
+        mine = _digits(m.group()) if m else None
+        if mine is None or len(mine[0]) < 2:
+            return None
+        for other in self.given.values():
+            if other.key == ans.key or other.kind != ans.kind or \
+                    set(other.names) != set(ans.names):
+                continue
+            mo = _NUM.search(str(other.raw))
+            theirs = _digits(mo.group()) if mo else None
+            if theirs and len(theirs[0]) > len(mine[0]) and theirs[0].endswith(mine[0]):
+                return _Candidate(ans.value, "transcription_slip",
+                                  f"a slip of the pen: {m.group()} is your own {other.key} = "
+                                  f"{mo.group()} with its leading digits lost")
+        return None
+
     # -- the verdict
     def diagnose(self, ans, given, correct, tol, signed):
         matches = []
@@ -671,7 +690,7 @@ class _Diagnoser:
                 rel = dev / max(abs(c.value), 1e-300)
                 # equal to rounding: the simpler mistake (earlier in the list) first
                 matches.append((rel if rel > 1e-9 else 0.0, order, c))
-        slip = _slip(ans.raw, given, correct, signed)
+        slip = _slip(ans.raw, given, correct, signed) or self.own_slip(ans)
         if slip is not None:
             matches.append((math.inf, 0, slip))
         if not matches:

@@ -329,7 +329,9 @@ def test_worked_toggle_notes():
     sc = load_scene(ROOT / "worked_problems" / "toggle_mechanism.toml")
     got = {v.key: v for v in check_answers(solve(sc))}
     wrong = {k for k, v in got.items() if not v.ok}
-    assert wrong == {"rub_A", "torque"}
+    assert wrong == {"v_BD", "rub_A", "torque"}
+    assert got["v_BD"].mistake == "transcription_slip"  # 36 printed for the 2.36 used next
+    assert "v_DB = 2.36" in got["v_BD"].diagnosis
     assert got["rub_A"].mistake == "links_not_at_pin"
     assert got["torque"].mistake == "wrong_omega_in_power_balance"
     assert "omega_CB" in got["torque"].diagnosis
@@ -342,8 +344,9 @@ def test_cli_exit_codes_and_json(tmp_path, capsys):
     scene = ROOT / "worked_problems" / "toggle_mechanism.toml"
     assert main(["check", str(scene), "--json"]) == 1
     d = json.loads(capsys.readouterr().out)
-    assert d["wrong"] == 2 and not d["all_right"]
-    assert {a["key"] for a in d["answers"] if a["verdict"] == "wrong"} == {"rub_A", "torque"}
+    assert d["wrong"] == 3 and not d["all_right"]
+    assert {a["key"] for a in d["answers"] if a["verdict"] == "wrong"} == {"v_BD", "rub_A",
+                                                                           "torque"}
     good = tmp_path / "good.toml"
     good.write_text('student = "A. Student"\n[answers]\nv_D = "2.04 m/s"\n'
                     'omega_AB = "2.58 rad/s ccw"\n')
