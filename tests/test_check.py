@@ -18,6 +18,7 @@ from polygon_method.cli import main
 from polygon_method.errors import SceneError
 from polygon_method.scales import parse_scale
 from polygon_method.scene import parse_answers
+from scenes import TRANSLATING_COUPLER
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -396,21 +397,7 @@ def test_zero_answer_for_a_translating_coupler_is_right(tmp_path):
     from polygon_method.check import check_answers
     from polygon_method.scene import parse_answers
 
-    scene = parse_scene("""
-    [ground]
-    A = [0, 0]
-    D = [100, 0]
-    [links]
-    AB = 40
-    BC = 100
-    CD = 40
-    [assembly]
-    C = "above"
-    [input]
-    crank = "AB"
-    angle = 30
-    speed = "10 rad/s ccw"
-    """)
+    scene = parse_scene(TRANSLATING_COUPLER)
     sol = solve(scene)
     _, answers = parse_answers('[answers]\nomega_BC = "0 rad/s"\nalpha_BC = "0 rad/s^2"\n', scene)
     verdicts = check_answers(sol, answers, None)

@@ -16,6 +16,7 @@ import pytest
 from polygon_method import parse_scene, solve
 from polygon_method.cli import main
 from polygon_method.plan import Context, compile_plan
+from scenes import TRANSLATING_COUPLER
 
 FOURBAR = """
 [ground]
@@ -517,21 +518,7 @@ def test_parallelogram_coupler_translates_and_reports_say_zero():
     sense; the JSON keeps the raw number."""
     from polygon_method.steps import steps_text
 
-    scene = parse_scene("""
-    [ground]
-    A = [0, 0]
-    D = [100, 0]
-    [links]
-    AB = 40
-    BC = 100
-    CD = 40
-    [assembly]
-    C = "above"
-    [input]
-    crank = "AB"
-    angle = 30
-    speed = "10 rad/s ccw"
-    """)
+    scene = parse_scene(TRANSLATING_COUPLER)
     sol = solve(scene)
     assert abs(sol.omega("BC")) < 1e-12 and sol.omega("CD") == pytest.approx(10, rel=1e-12)
     assert abs(sol.alpha("CD")) < 1e-8

@@ -12,6 +12,8 @@ import math
 
 import pytest
 
+from scenes import NON_GRASHOF, SLOTTED_LEVER
+
 from polygon_method import parse_scene
 from polygon_method.cli import main
 from polygon_method.linkage import analyse, grashof
@@ -123,21 +125,7 @@ def test_transmission_warning_below_40_deg():
 def test_non_grashof_toggles_driven_from_the_input():
     """O2A 150, AB 450, BO4 300, O2O4 200: the input's toggles where AB and BO4 are in line,
     O4A = 450 - 300: cos t = (150^2 + 200^2 - 150^2) / (2 150 200) = 2/3."""
-    sc = parse_scene("""
-[ground]
-O2 = [0, 0]
-O4 = [200, 0]
-[links]
-"O2-A" = 150
-"A-B" = 450
-"B-O4" = 300
-[assembly]
-B = "above"
-[input]
-crank = "O2-A"
-angle = 150
-speed = "200 rad/s ccw"
-""")
+    sc = parse_scene(NON_GRASHOF)
     lk = analyse(sc)
     assert lk.grashof.kind == "non-Grashof triple rocker" and not lk.turns_fully
     lim = math.degrees(math.acos(2 / 3))
@@ -186,24 +174,7 @@ def test_offset_slider_crank_dead_centres_stroke_and_time_ratio():
 def test_slotted_lever_time_ratio():
     """The lever's extreme positions are where the crank is perpendicular to it: the
     return takes 2 acos(r / d) of the crank (r = 120, d = 300)."""
-    sc = parse_scene("""
-[ground]
-O4 = [0, 0]
-O2 = [0, 300]
-[links]
-"O2-A" = 120
-"O4-P" = 600
-"P-Q" = 200
-[sliders]
-A = { along = "O4-P" }
-Q = { path = "horizontal", through = [0, 620] }
-[assembly]
-Q = "right"
-[input]
-crank = "O2-A"
-angle = 45
-speed = "60 rpm cw"
-""")
+    sc = parse_scene(SLOTTED_LEVER)
     lk = analyse(sc)
     ret = 2 * math.degrees(math.acos(120 / 300))
     assert lk.time_ratio == pytest.approx((360 - ret) / ret, rel=1e-9)

@@ -19,6 +19,7 @@ import pytest
 from polygon_method import parse_scene, solve
 from polygon_method.cli import main
 from polygon_method.sweeps import Sweeper, summarize, sweep
+from scenes import NON_GRASHOF, SLOTTED_LEVER as SLOTTED
 
 FOURBAR = """
 [ground]
@@ -57,41 +58,6 @@ angle = 60
 speed = "450 rpm ccw"
 [loads]
 B = { force = "1 kN", direction = 180 }
-"""
-
-SLOTTED = """
-[ground]
-O4 = [0, 0]
-O2 = [0, 300]
-[links]
-"O2-A" = 120
-"O4-P" = 600
-"P-Q" = 200
-[sliders]
-A = { along = "O4-P" }
-Q = { path = "horizontal", through = [0, 620] }
-[assembly]
-Q = "right"
-[input]
-crank = "O2-A"
-angle = 45
-speed = "60 rpm cw"
-"""
-
-NON_GRASHOF = """
-[ground]
-O2 = [0, 0]
-O4 = [200, 0]
-[links]
-"O2-A" = 150
-"A-B" = 450
-"B-O4" = 300
-[assembly]
-B = "above"
-[input]
-crank = "O2-A"
-angle = 150
-speed = "200 rad/s ccw"
 """
 
 PARALLELOGRAM = """

@@ -1,0 +1,53 @@
+"""Scenes shared by several test modules (each used as it stands in more than one)."""
+
+SLOTTED_LEVER = """
+[ground]
+O4 = [0, 0]
+O2 = [0, 300]
+[links]
+"O2-A" = 120
+"O4-P" = 600
+"P-Q" = 200
+[sliders]
+A = { along = "O4-P" }
+Q = { path = "horizontal", through = [0, 620] }
+[assembly]
+Q = "right"
+[input]
+crank = "O2-A"
+angle = 45
+speed = "60 rpm cw"
+"""
+
+NON_GRASHOF = """
+[ground]
+O2 = [0, 0]
+O4 = [200, 0]
+[links]
+"O2-A" = 150
+"A-B" = 450
+"B-O4" = 300
+[assembly]
+B = "above"
+[input]
+crank = "O2-A"
+angle = 150
+speed = "200 rad/s ccw"
+"""
+
+# AB = CD, BC = AD: the coupler translates
+TRANSLATING_COUPLER = """
+[ground]
+A = [0, 0]
+D = [100, 0]
+[links]
+AB = 40
+BC = 100
+CD = 40
+[assembly]
+C = "above"
+[input]
+crank = "AB"
+angle = 30
+speed = "10 rad/s ccw"
+"""
