@@ -113,7 +113,7 @@ def sweep_per_position(scene, n):
     th = inp.angle + np.linspace(-1e-3, 1e-3, n)
 
     def run():
-        ctx = Context(th, inp.omega, inp.alpha, array=True, scene=scene)
+        ctx = Context(th, inp.omega, inp.alpha, array=True)
         return plan.evaluate(ctx)
     return run
 

@@ -928,7 +928,7 @@ def finite_differences(scene: Scene, h=None) -> Kinematics:
     plan = compile_plan(scene)
     t = np.array([-h, 0.0, h])
     theta = inp.angle + inp.omega * t + 0.5 * inp.alpha * t * t
-    ctx = Context(theta, inp.omega, inp.alpha, array=True, scene=scene)
+    ctx = Context(theta, inp.omega, inp.alpha, array=True)
     P3 = dict(plan.ground)
     for st in plan.steps:
         st.positions(P3, ctx)

@@ -43,10 +43,9 @@ class Context:
     """What a kernel needs besides the state: the input motion and the maths for floats
     or arrays. In scalar mode a failing step raises; in array mode it is masked."""
 
-    def __init__(self, theta, omega, alpha, *, array=False, scene=None):
+    def __init__(self, theta, omega, alpha, *, array=False):
         self.theta, self.omega, self.alpha = theta, omega, alpha
         self.array = array
-        self.scene = scene
         self.cond = {}
         self.bad = None  # array mode: positions where a step failed
         self.failures = {}  # array mode: step index -> mask
@@ -641,9 +640,6 @@ class Plan:
             if c < TOL.singular:
                 raise SingularStepError(_singular_why(st, c), step=st.label)
 
-    def step_for(self, point):
-        return next((s for s in self.steps if point in s.finds), None)
-
 
 def _singular_why(st, c):
     if isinstance(st, Dyad):
@@ -704,8 +700,7 @@ class _Compiler:
         self.scene = scene
         self.unit = scene.length_unit
         self.uname = scene.units
-        self.ctx = Context(scene.input.angle, scene.input.omega, scene.input.alpha,
-                           scene=scene)
+        self.ctx = Context(scene.input.angle, scene.input.omega, scene.input.alpha)
         self.P = dict(scene.ground)
         self.steps = []
         self.used_links = {lk.key for lk in scene.links

@@ -148,12 +148,6 @@ class Solution:
         return self.S[point][2]
 
     # ----- derived quantities
-    def bodies_at(self, point) -> dict:
-        """Each body a pin at ``point`` joins, with its angular velocity."""
-        W = self.W
-        return {body: (W[link] if link is not None else 0.0)
-                for body, link in self.plan.bodies_at(point)}
-
     @cached
     def rubbing(self) -> dict:
         """Pin -> :class:`PinRubbing`, for every pin with a size in ``[pins]``.

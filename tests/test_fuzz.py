@@ -125,7 +125,7 @@ def _check_sweep(scene) -> None:
         _check_error(exc)
         return
     theta = scene.input.angle + np.linspace(0.0, 2 * np.pi, 25)
-    ctx = Context(theta, scene.input.omega, scene.input.alpha, array=True, scene=scene)
+    ctx = Context(theta, scene.input.omega, scene.input.alpha, array=True)
     with np.errstate(all="ignore"):
         out = plan.evaluate(ctx)
     ok = np.ones_like(theta, dtype=bool)
