@@ -148,9 +148,29 @@ def slotted_xy(kx, ky, ax, ay, length, sigma, ctx, step):
 class Step:
     index: int
 
+    #: whether the step has two assemblies (a branch ``sigma`` to choose)
+    branching = False
+
     @property
     def label(self) -> str:
         return f"step {self.index + 1} ({self.title})"
+
+    def singular_why(self, c) -> str:
+        """Why the step fails at condition ``c`` (below ``TOL.singular``)."""
+        return f"the step is singular (condition {c:.2g})"
+
+    def warning(self, c) -> str:
+        """The warning line for a condition ``c`` below ``TOL.warn``."""
+        return f"{self.label}: condition {c:.3g}"
+
+    def limit_why(self) -> str:
+        """Why the linkage cannot be assembled beyond a limit position of this step."""
+        return "the linkage cannot be assembled beyond it"
+
+    def condition_column(self):
+        """(name, unit, words) of this step's condition in a sweep summary: the
+        transmission angle for the steps whose condition is its sine."""
+        return (f"mu at {self.finds[0]}", "deg", "transmission angle (acute)")
 
     def positions(self, P, ctx):
         """Place this step's point into ``P`` (one step at a time; the kernel does all)."""
@@ -241,6 +261,25 @@ class Dyad(Step):
         (bx, by), (dx, dy) = P[self.b], P[self.d]
         s = self.sigma if sigma is None else sigma
         return dyad_xy(bx, by, dx, dy, self.l1, self.l2, s, ctx, self)
+
+    branching = True
+
+    def singular_why(self, c) -> str:
+        return (f"{self.link1} and {self.link2} are in line (transmission angle "
+                f"{math.degrees(math.asin(min(c, 1.0))):.3g} deg): a toggle position (or a "
+                "change point, where the linkage may switch branch), where the direction "
+                f"lines perpendicular to {self.link1} and {self.link2} are parallel and the "
+                f"velocity of {self.point} is indeterminate")
+
+    def warning(self, c) -> str:
+        deg = math.degrees(math.asin(min(c, 1.0)))
+        return (f"{self.label}: {self.link1} and {self.link2} are nearly in line (transmission "
+                f"angle {deg:.3g} deg, condition {c:.3g}): near a toggle position the "
+                "intersection of the direction lines is ill-conditioned")
+
+    def limit_why(self) -> str:
+        return (f"{self.side(1)} and {self.side(2)} come into line (a toggle: {self.point} "
+                "cannot be assembled beyond it)")
 
     def coincident(self):
         if self.l1 == self.l2:
@@ -347,6 +386,21 @@ class SliderDyad(Step):
         s = self.sigma if sigma is None else sigma
         return slider_xy(bx, by, qx, qy, ux, uy, self.length, s, ctx, self)
 
+    branching = True
+
+    def singular_why(self, c) -> str:
+        return (f"{self.link} is perpendicular to the guide of {self.point} (sine {c:.2g}): a "
+                f"dead centre for this step, where the line perpendicular to {self.link} is "
+                "parallel to the guide")
+
+    def warning(self, c) -> str:
+        return (f"{self.label}: the line perpendicular to {self.link} is nearly parallel to "
+                f"the guide (condition {c:.3g}): near a dead centre for this step")
+
+    def limit_why(self) -> str:
+        return (f"{self.link} stands perpendicular to the guide of {self.point} (it cannot "
+                "reach the guide beyond it)")
+
     def _why(self, dist):
         u = self.unit
         where = f"path {self.path.label}" if self.path else f"line of {self.guide}"
@@ -435,6 +489,18 @@ class SlottedLink(Step):
         (kx, ky), (ax, ay) = P[self.known], P[self.point]
         s = self.sigma if sigma is None else sigma
         return slotted_xy(kx, ky, ax, ay, self.length, s, ctx, self)
+
+    branching = True
+
+    def warning(self, c) -> str:
+        return (f"{self.label}: block {self.point} is close to {self.known}, the pivot of "
+                f"{self.guide} (condition {c:.3g})")
+
+    def limit_why(self) -> str:
+        return f"block {self.point} reaches the pivot {self.known} of {self.guide}"
+
+    def condition_column(self):
+        return (f"cond step {self.index + 1}", "1", f"|{self.known}{self.point}| / {self.guide}")
 
     def at_pivot(self):
         return SingularStepError(f"block {self.point} is at {self.known}, the pivot of "
@@ -638,21 +704,7 @@ class Plan:
         for st in self.steps:
             c = cond[st.index]
             if c < TOL.singular:
-                raise SingularStepError(_singular_why(st, c), step=st.label)
-
-
-def _singular_why(st, c):
-    if isinstance(st, Dyad):
-        return (f"{st.link1} and {st.link2} are in line (transmission angle "
-                f"{math.degrees(math.asin(min(c, 1.0))):.3g} deg): a toggle position (or a change point, "
-                f"where the linkage may switch branch), where the "
-                f"direction lines perpendicular to {st.link1} and {st.link2} are parallel and "
-                f"the velocity of {st.point} is indeterminate")
-    if isinstance(st, SliderDyad):
-        return (f"{st.link} is perpendicular to the guide of {st.point} (sine {c:.2g}): a dead "
-                f"centre for this step, where the line perpendicular to {st.link} is parallel "
-                "to the guide")
-    return f"the step is singular (condition {c:.2g})"
+                raise SingularStepError(st.singular_why(c), step=st.label)
 
 
 # --------------------------------------------------------------------------- compiling

@@ -24,7 +24,7 @@ import math
 from dataclasses import dataclass, field
 
 from .errors import TOL
-from .plan import Context, Dyad, Plan, SliderDyad, SlottedLink, compile_plan
+from .plan import Context, Plan, compile_plan
 from .scene import FixedPath, Scene
 
 
@@ -188,7 +188,7 @@ class Solution:
         for st in self.plan.steps:
             c = self.conditions.get(st.index, 1.0)
             if c < TOL.warn:
-                out.append(_warning(st, c))
+                out.append(st.warning(c))
         return tuple(out)
 
     @property
@@ -276,21 +276,6 @@ class Solution:
         if kind == "torque":
             return self.input_torque
         raise KeyError(kind)
-
-
-def _warning(st, c) -> str:
-    if isinstance(st, Dyad):
-        deg = math.degrees(math.asin(min(c, 1.0)))
-        return (f"{st.label}: {st.link1} and {st.link2} are nearly in line (transmission "
-                f"angle {deg:.3g} deg, condition {c:.3g}): near a toggle position the "
-                "intersection of the direction lines is ill-conditioned")
-    if isinstance(st, SliderDyad):
-        return (f"{st.label}: the line perpendicular to {st.link} is nearly parallel to the "
-                f"guide (condition {c:.3g}): near a dead centre for this step")
-    if isinstance(st, SlottedLink):
-        return (f"{st.label}: block {st.point} is close to {st.known}, the pivot of "
-                f"{st.guide} (condition {c:.3g})")
-    return f"{st.label}: condition {c:.3g}"
 
 
 def solve(scene: Scene) -> Solution:

@@ -45,7 +45,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from .errors import TOL, PolygonMethodError, SceneError, SingularStepError
-from .plan import Context, Dyad, SliderDyad, SlottedLink, compile_plan
+from .plan import Context, compile_plan
 from .scene import FixedPath, Scene
 
 __all__ = ["sweep", "summarize", "SweepResult", "Summary", "Extreme", "LimitPosition",
@@ -185,7 +185,7 @@ def _variant(plan, flips):
 
 
 def _branch_steps(plan):
-    return [s for s in plan.steps if isinstance(s, (Dyad, SliderDyad, SlottedLink))]
+    return [s for s in plan.steps if s.branching]
 
 
 class Sweeper:
@@ -291,16 +291,7 @@ class Sweeper:
 
     def _limit_why(self, plan, label) -> str:
         st = next((s for s in plan.steps if s.label == label), None)
-        if isinstance(st, Dyad):
-            return (f"{st.side(1) if hasattr(st, 'side') else st.link1} and "
-                    f"{st.side(2) if hasattr(st, 'side') else st.link2} come into line "
-                    f"(a toggle: {st.point} cannot be assembled beyond it)")
-        if isinstance(st, SliderDyad):
-            return (f"{st.link} stands perpendicular to the guide of {st.point} (it cannot "
-                    "reach the guide beyond it)")
-        if isinstance(st, SlottedLink):
-            return f"block {st.point} reaches the pivot {st.known} of {st.guide}"
-        return "the linkage cannot be assembled beyond it"
+        return st.limit_why() if st is not None else "the linkage cannot be assembled beyond it"
 
     def _refine_limit(self, plan, good, bad):
         """Bisect (33 points a pass) between an assembling and a failing crank angle to the
@@ -581,7 +572,7 @@ class SweepResult:
         if self.input_torque is not None:
             cols.append(("torque", "N m", self.input_torque))
         for st in compile_plan(sc).steps:
-            if isinstance(st, (Dyad, SliderDyad, SlottedLink)):
+            if st.branching:
                 cols.append((f"condition_step{st.index + 1}", "1", self.conditions[st.index]))
         return cols
 
@@ -952,12 +943,8 @@ class _Reducer:
         if t is not None:
             yield "torque", "N m", t, "input torque, ccw +"
         for st in _branch_steps(plan):
-            c = fr.cond[st.index]
-            if isinstance(st, SlottedLink):
-                yield (f"cond step {st.index + 1}", "1", c,
-                       f"|{st.known}{st.point}| / {st.guide}")
-            else:  # reduced as the condition (sin mu), shown as the angle
-                yield (f"mu at {st.finds[0]}", "deg", c, "transmission angle (acute)")
+            name, unit, words = st.condition_column()  # "deg": the sine, shown as the angle
+            yield name, unit, fr.cond[st.index], words
 
     @staticmethod
     def shown(unit, value):
