@@ -595,7 +595,7 @@ def _configuration(sol, scale: Scale) -> _Sketch:
     inp = sc.input
     drive = f"crank {inp.crank} at {_deg(inp.angle)}, {inp.speed_text}"
     if inp.alpha:
-        from .solution import fmt_angular
+        from .numbers import fmt_angular
         drive += f", {fmt_angular(inp.alpha, 'rad/s²')}"
     _header(sk, "configuration", "Configuration diagram", scale, lines=[drive])
     return sk

@@ -29,14 +29,13 @@ import math
 from dataclasses import dataclass, field, replace
 
 from .errors import TOL, AssemblyError, MobilityError, PolygonMethodError, SingularStepError
+from .numbers import in_units as _mm
 from .scene import FixedPath, GuideSlider, Scene, split_name
 
 __all__ = ["Plan", "compile_plan", "Crank", "Dyad", "SliderDyad", "SlottedLink", "Carried",
            "Context"]
 
 
-def _mm(x: float, unit_len: float) -> str:
-    return f"{x / unit_len:.6g}"
 
 
 class Context:

@@ -5,7 +5,8 @@ from __future__ import annotations
 import math
 
 from .errors import TOL
-from .solution import Solution, fmt_angular
+from .numbers import fmt_angular
+from .solution import Solution
 
 __all__ = ["solution_text", "direction_deg"]
 

@@ -24,6 +24,7 @@ import math
 from dataclasses import dataclass, field
 
 from .errors import TOL
+from .numbers import fmt_angular, sense  # noqa: F401  (re-exported)
 from .plan import Context, Plan, compile_plan
 from .scene import FixedPath, Scene
 
@@ -47,17 +48,6 @@ def cached(method):
 
 
 __all__ = ["solve", "Solution", "PinRubbing", "sense", "fmt_angular"]
-
-
-def sense(value: float) -> str:
-    """``ccw`` for a positive angular quantity, ``cw`` for a negative one, '' for zero."""
-    return "ccw" if value > 0 else ("cw" if value < 0 else "")
-
-
-def fmt_angular(value: float, unit: str, digits: int = 4) -> str:
-    """``5.150 rad/s ccw``: magnitude, unit and sense."""
-    s = sense(value)
-    return f"{abs(value):.{digits}g} {unit}" + (f" {s}" if s else "")
 
 
 class PinRubbing:

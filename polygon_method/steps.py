@@ -36,6 +36,7 @@ import math
 import re
 import textwrap
 
+from .numbers import fixed as _fixed, fmt, sense_word
 from .constructions import acceleration_constructions, velocity_constructions
 from .plan import Carried, Crank, Dyad, SliderDyad, SlottedLink
 from .scales import DRAWING_PRECISION_CM, diagram_scales, extent
@@ -48,39 +49,6 @@ _WIDTH = 92
 
 
 # --------------------------------------------------------------------------- numbers
-
-
-def fmt(x: float, digits: int = 4) -> str:
-    """A value to ``digits`` significant figures, without an exponent for usual sizes.
-
-    >>> fmt(18.849555921538759), fmt(0.0660), fmt(216.6367), fmt(0)
-    ('18.85', '0.066', '216.6', '0')
-    """
-    if x == 0 or not math.isfinite(x):
-        return "0" if x == 0 else str(x)
-    s = f"{x:.{digits}g}"
-    if "e" in s:
-        mag = math.floor(math.log10(abs(x)))
-        if -6 <= mag < 0:
-            s = f"{x:.{digits - 1 - mag}f}".rstrip("0").rstrip(".")
-        elif mag >= digits:
-            s = f"{x:.0f}"
-    return s
-
-
-def _fixed(x: float, digits: int = 3) -> str:
-    """Three significant figures, trailing zeros kept (a value read off a drawing)."""
-    if x == 0:
-        return "0"
-    if abs(x) >= 10 ** digits:
-        return f"{x:.0f}"
-    s = f"{x:#.{digits}g}"
-    return s.rstrip(".") if "e" not in s else fmt(x, digits)
-
-
-def sense_word(value: float) -> str:
-    """``ccw`` / ``cw`` / '' (ccw positive)."""
-    return "ccw" if value > 0 else ("cw" if value < 0 else "")
 
 
 def read_off(value: float, scale) -> tuple[float, float]:

@@ -1,0 +1,62 @@
+"""How numbers are written: one place for every view (report, step table, check, drawings,
+sweep summaries, linkage properties).
+
+>>> fmt(18.849555921538759), fmt(0.0660), fmt(216.6367), fmt(0)
+('18.85', '0.066', '216.6', '0')
+>>> fmt_angular(-10.5, "rad/s")
+'10.5 rad/s cw'
+"""
+
+from __future__ import annotations
+
+import math
+
+__all__ = ["fmt", "fixed", "sense", "sense_word", "fmt_angular", "in_units"]
+
+
+def fmt(x: float, digits: int = 4) -> str:
+    """A value to ``digits`` significant figures, without an exponent for usual sizes."""
+    if x == 0 or not math.isfinite(x):
+        return "0" if x == 0 else str(x)
+    s = f"{x:.{digits}g}"
+    if "e" in s:
+        mag = math.floor(math.log10(abs(x)))
+        if -6 <= mag < 0:
+            s = f"{x:.{digits - 1 - mag}f}".rstrip("0").rstrip(".")
+        elif mag >= digits:
+            s = f"{x:.0f}"
+    return s
+
+
+def fixed(x: float, digits: int = 3) -> str:
+    """Three significant figures, trailing zeros kept (a value read off a drawing).
+
+    >>> fixed(0.4), fixed(12.5)
+    ('0.400', '12.5')
+    """
+    if x == 0:
+        return "0"
+    if abs(x) >= 10 ** digits:
+        return f"{x:.0f}"
+    s = f"{x:#.{digits}g}"
+    return s.rstrip(".") if "e" not in s else fmt(x, digits)
+
+
+def sense(value: float) -> str:
+    """``ccw`` for a positive angular quantity, ``cw`` for a negative one, '' for zero."""
+    return "ccw" if value > 0 else ("cw" if value < 0 else "")
+
+
+#: the same word, under the name the step tables use
+sense_word = sense
+
+
+def fmt_angular(value: float, unit: str, digits: int = 4) -> str:
+    """``5.150 rad/s ccw``: magnitude, unit and sense."""
+    s = sense(value)
+    return f"{abs(value):.{digits}g} {unit}" + (f" {s}" if s else "")
+
+
+def in_units(x: float, unit_len: float) -> str:
+    """A length in metres written in the scene's unit (``unit_len`` metres), 6 digits."""
+    return f"{x / unit_len:.6g}"
