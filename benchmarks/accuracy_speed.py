@@ -39,7 +39,7 @@ HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
 sys.path.insert(0, str(HERE))
 
-from polygon_method import methods as M  # noqa: E402
+import methods as M  # noqa: E402
 from polygon_method.errors import PolygonMethodError  # noqa: E402
 from polygon_method.scene import load_scene, parse_scene  # noqa: E402
 

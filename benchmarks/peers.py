@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 import warnings
 
-from polygon_method.methods import Kinematics, is_fourbar
+from methods import Kinematics, is_fourbar
 
 
 def _frame(scene):

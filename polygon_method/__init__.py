@@ -32,6 +32,26 @@ __all__ = ["load_scene", "parse_scene", "solve", "compile_plan", "sweep", "Scene
            "SingularStepError", "__version__"]
 
 
+def _solution_svg(sol):
+    """The three diagrams as SVG, for Jupyter (``Solution._repr_svg_``)."""
+    try:
+        from .draw import svg_string
+    except ImportError:  # drawing not available
+        return None
+    return svg_string(sol)
+
+
+def _solution_report(sol) -> str:
+    """The solution as text, the way ``polygon-method solve`` prints it."""
+    from .report import solution_text
+    return solution_text(sol)
+
+
+# the views sit above the solution: they are attached here, at the top of the package
+Solution._repr_svg_ = _solution_svg
+Solution.report = _solution_report
+
+
 def __getattr__(name):  # lazy: sweeps need numpy, which `solve` does not
     if name == "sweep":
         from .sweeps import sweep

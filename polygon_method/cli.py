@@ -55,7 +55,8 @@ def _cmd_solve(args) -> int:
     if args.json:
         print(json.dumps(sol.to_dict(), indent=2, allow_nan=False))
     else:
-        print(sol.report())
+        from .report import solution_text
+        print(solution_text(sol))
     return 0
 
 
@@ -70,7 +71,7 @@ def _cmd_plan(args) -> int:
 def _cmd_steps(args) -> int:
     from .scene import load_scene
     from .solution import solve
-    from .steps import steps_text
+    from .steptable import steps_text
 
     print(steps_text(solve(load_scene(args.scene)), fmt=args.format))
     return 0

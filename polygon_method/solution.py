@@ -20,32 +20,13 @@
 
 from __future__ import annotations
 
-import math
-from dataclasses import dataclass, field
-
+from .derived import input_torque as _torque
+from .derived import pin_rubbing, power_terms
 from .errors import TOL
+from .kinematics import Motion, hypot
 from .numbers import fmt_angular, sense  # noqa: F401  (re-exported)
 from .plan import Context, Plan, compile_plan
 from .scene import FixedPath, Scene
-
-
-
-def cached(method):
-    """A property computed once per Solution (functools.cached_property takes a lock in
-    Python 3.11, which costs more than the arithmetic here)."""
-    name = method.__name__
-
-    def get(self):
-        cache = self._cache
-        try:
-            return cache[name]
-        except KeyError:
-            value = cache[name] = method(self)
-            return value
-
-    get.__doc__ = method.__doc__
-    return property(get)
-
 
 __all__ = ["solve", "Solution", "PinRubbing", "sense", "fmt_angular"]
 
@@ -79,121 +60,81 @@ class PinRubbing:
         return f"PinRubbing({self.point!r}, radius={self.radius!r}, pairs={self.pairs!r})"
 
 
-@dataclass(frozen=True)
-class Solution:
-    """Positions, velocities, accelerations of every point and link at one instant (SI)."""
+class Solution(Motion):
+    """The :class:`~polygon_method.kinematics.Motion` at the scene's instant (floats, SI),
+    with what a textbook asks of it: rubbing, torque, warnings, the JSON contract."""
 
-    scene: Scene
-    plan: Plan
-    P: dict
-    V: dict
-    A: dict
-    W: dict
-    Al: dict
-    S: dict
-    conditions: dict
-    R: dict = field(default_factory=dict, repr=False)  # pin -> rubbing of each pair
-    _cache: dict = field(default_factory=dict, repr=False, compare=False)
+    __slots__ = ("_cache",)
 
-    # ----- points
-    def position(self, point):
-        return self.P[point]
+    def __init__(self, scene, plan, P, V, A, W, Al, S, cond, theta=None):
+        Motion.__init__(self, scene, plan, theta, P, V, A, W, Al, S, cond)
+        self._cache = {}
 
-    def velocity(self, point, relative_to=None):
-        """Velocity of ``point`` (relative to ``relative_to``: v_XY = v_X - v_Y)."""
-        vx, vy = self.V[point]
-        if relative_to is None:
-            return (vx, vy)
-        ux, uy = self.V[relative_to]
-        return (vx - ux, vy - uy)
-
-    def acceleration(self, point, relative_to=None):
-        ax, ay = self.A[point]
-        if relative_to is None:
-            return (ax, ay)
-        bx, by = self.A[relative_to]
-        return (ax - bx, ay - by)
+    def _get(self, name, make):
+        try:
+            return self._cache[name]
+        except KeyError:
+            value = self._cache[name] = make()
+            return value
 
     def speed(self, point, relative_to=None) -> float:
-        return math.hypot(*self.velocity(point, relative_to))
-
-    def acceleration_magnitude(self, point, relative_to=None) -> float:
-        return math.hypot(*self.acceleration(point, relative_to))
-
-    # ----- links
-    def omega(self, link) -> float:
-        return self.W[self.scene.link(link).key]
-
-    def alpha(self, link) -> float:
-        return self.Al[self.scene.link(link).key]
-
-    # ----- sliders
-    def sliding_velocity(self, point) -> float:
-        return self.S[point][0]
-
-    def sliding_acceleration(self, point) -> float:
-        return self.S[point][1]
-
-    def coriolis(self, point):
-        return self.S[point][2]
+        return hypot(*self.velocity(point, relative_to))
 
     # ----- derived quantities
-    @cached
+    @property
+    def R(self) -> dict:
+        """pin -> rubbing velocity of each pair of bodies it joins."""
+        return self._get("R", lambda: pin_rubbing(self.plan, self.W, self.plan.dims.radii))
+
+    @property
     def rubbing(self) -> dict:
         """Pin -> :class:`PinRubbing`, for every pin with a size in ``[pins]``.
 
         At each pin, for each pair of bodies it joins: ``|w1 - w2| r`` (signed omegas: the
         sum of the magnitudes when they turn in opposite senses, the difference when alike).
         """
-        W, R = self.W, self.R
-        return {point: PinRubbing(point, radius, keys, R[point], names,
-                                  [W[lk] if lk is not None else 0.0 for lk in links])
-                for point, radius, names, links, keys, _ in self.plan.pins}
+        def make():
+            W, R, radii = self.W, self.R, self.plan.dims.radii
+            return {point: PinRubbing(point, radii[point], keys, R[point], names,
+                                      [W[lk] if lk is not None else 0.0 for lk in links])
+                    for point, names, links, keys, _ in self.plan.pins}
+        return self._get("rubbing", make)
 
-    @cached
+    @property
     def power_terms(self) -> list:
         """(what, power in W) of each load: F . v for forces, T w for torques on links."""
-        out = []
-        for load in self.scene.loads:
-            if load.force is not None:
-                fx, fy = load.force
-                vx, vy = self.V[load.target]
-                out.append((load.target, fx * vx + fy * vy))
-            else:
-                out.append((load.target, load.torque * self.W[load.target]))
-        return out
+        return self._get("power", lambda: power_terms(self.scene, self.V, self.W))
 
-    @cached
+    @property
     def input_torque(self):
         """T on the crank, ccw positive: T w + sum(F . v) = 0. None without loads."""
-        if not self.scene.loads:
-            return None
-        return -sum(p for _, p in self.power_terms) / self.scene.input.omega
+        return self._get("torque", lambda: _torque(self.scene, self.V, self.W,
+                                                   self.scene.input.omega))
 
     # ----- conditioning
-    @cached
+    @property
     def warnings(self) -> tuple:
         """One line per ill-conditioned step (condition below sin 5 deg)."""
-        out = []
-        for st in self.plan.steps:
-            c = self.conditions.get(st.index, 1.0)
-            if c < TOL.warn:
-                out.append(st.warning(c))
-        return tuple(out)
+        def make():
+            return tuple(st.warning(c) for st in self.plan.steps
+                         if (c := self.cond.get(st.index, 1.0)) < TOL.warn)
+        return self._get("warnings", make)
 
     @property
     def notes(self) -> tuple:
         return self.plan.notes
 
     # ----- presentation
-    @cached
+    @property
     def scales(self) -> dict:
         """The largest value of each kind in this solution (for :meth:`shown`)."""
-        w = max((abs(x) for x in self.W.values()), default=0.0)
-        return {"v": max((math.hypot(*v) for v in self.V.values()), default=0.0),
-                "a": max((math.hypot(*a) for a in self.A.values()), default=0.0),
-                "omega": w,
-                "alpha": max((abs(x) for x in self.Al.values()), default=0.0) + w * w}
+        def make():
+            w = max((abs(x) for x in self.W.values()), default=0.0)
+            return {"v": max((hypot(*v) for v in self.V.values()), default=0.0),
+                    "a": max((hypot(*a) for a in self.A.values()), default=0.0),
+                    "omega": w,
+                    "alpha": max((abs(x) for x in self.Al.values()), default=0.0) + w * w}
+        return self._get("scales", make)
 
     def shown(self, value, kind):
         """``value`` as reports show it: 0 where it is below ``TOL.negligible`` of the
@@ -212,7 +153,7 @@ class Solution:
         if sc.sliders:
             d["sliders"] = {s.point: {"sliding_velocity": self.S[s.point][0],
                                       "sliding_acceleration": self.S[s.point][1],
-                                      "coriolis": list(self.S[s.point][2]),
+                                      "coriolis": list(self.coriolis(s.point)),
                                       "guide": (s.label if isinstance(s, FixedPath)
                                                 else s.guide)}
                             for s in sc.sliders}
@@ -227,23 +168,11 @@ class Solution:
             d["input_torque"] = self.input_torque
         d["steps"] = [{"step": st.index + 1, "kind": st.kind, "title": st.title,
                        "finds": list(st.finds),
-                       "condition": self.conditions.get(st.index, 1.0)}
+                       "condition": self.cond.get(st.index, 1.0)}
                       for st in self.plan.steps]
         d["warnings"] = list(self.warnings)
         d["notes"] = list(self.notes)
         return d
-
-    def report(self) -> str:
-        """The solution as text, the way ``polygon-method solve`` prints it."""
-        from .report import solution_text
-        return solution_text(self)
-
-    def _repr_svg_(self):  # Jupyter
-        try:
-            from .draw import svg_string
-        except ImportError:  # drawing not available
-            return None
-        return svg_string(self)
 
     def value(self, kind: str, names: tuple):
         """The exact value behind an answer key (``kind`` as in ``[answers]``)."""
@@ -260,7 +189,7 @@ class Solution:
         if kind == "as":
             return self.sliding_acceleration(names[0])
         if kind == "ac":
-            return math.hypot(*self.coriolis(names[0]))
+            return hypot(*self.coriolis(names[0]))
         if kind == "rub":
             return self.rubbing[names[0]].rubbing_velocity
         if kind == "torque":
@@ -269,7 +198,7 @@ class Solution:
 
 
 def solve(scene: Scene) -> Solution:
-    """Compile (once per scene) and evaluate the plan at the scene's crank angle.
+    """Compile (once per scene content) and evaluate the plan at the scene's crank angle.
 
     Raises :class:`~polygon_method.errors.AssemblyError` or
     :class:`~polygon_method.errors.SingularStepError` where the construction fails.
@@ -277,6 +206,5 @@ def solve(scene: Scene) -> Solution:
     plan = compile_plan(scene)
     inp = scene.input
     ctx = Context(inp.angle, inp.omega, inp.alpha)
-    P, V, A, W, Al, S = plan.evaluate(ctx)
-    return Solution(scene, plan, P, V, A, W, Al, S, ctx.cond, ctx.rubbing)
-
+    m = plan.run(ctx)
+    return Solution(scene, plan, m.P, m.V, m.A, m.W, m.Al, m.S, ctx.cond, inp.angle)

@@ -44,6 +44,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from .derived import input_torque, largest, pin_rubbing
 from .errors import TOL, PolygonMethodError, SceneError, SingularStepError
 from .plan import Context, compile_plan
 from .scene import FixedPath, Scene
@@ -599,30 +600,14 @@ def _frame_of(res: SweepResult) -> Frame:
 
 
 def _rubbing(plan, W, n):
-    out = {}
-    for point, radius, _names, links, _keys, pairs in getattr(plan, "pins", ()):
-        w = [W[lk] if lk is not None else None for lk in links]
-        best = np.zeros(n)
-        for i, j in pairs:
-            a = w[i] if w[i] is not None else 0.0
-            b = w[j] if w[j] is not None else 0.0
-            np.maximum(best, np.abs(a - b) * radius, out=best)
-        out[point] = best
-    return out
+    radii = plan.dims.radii
+    return {point: np.broadcast_to(largest(values), (n,)) if values else np.zeros(n)
+            for point, values in pin_rubbing(plan, W, radii).items()}
 
 
 def _torque(scene, V, W, omega, n):
-    if not scene.loads:
-        return None
-    power = np.zeros(n)
-    for load in scene.loads:
-        if load.force is not None:
-            fx, fy = load.force
-            vx, vy = V[load.target]
-            power += fx * vx + fy * vy
-        else:
-            power += load.torque * W[scene.link(load.target).key]
-    return -power / omega
+    t = input_torque(scene, V, W, omega)
+    return None if t is None else np.broadcast_to(t, (n,)) + 0.0
 
 
 def _angles_ok(sw: Sweeper, theta):

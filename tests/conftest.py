@@ -5,3 +5,7 @@ from pathlib import Path
 _TESTS = str(Path(__file__).resolve().parent)
 if _TESTS not in sys.path:
     sys.path.insert(0, _TESTS)
+# benchmarks/methods.py (the other ways of solving, for comparison) is imported as `methods`
+_BENCH = str(Path(__file__).resolve().parent.parent / "benchmarks")
+if _BENCH not in sys.path:
+    sys.path.insert(0, _BENCH)

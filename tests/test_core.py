@@ -516,7 +516,7 @@ def test_parallelogram_coupler_translates_and_reports_say_zero():
     """AB = CD, BC = AD: the coupler translates (omega_BC = 0, closed form) and the rocker
     turns with the crank. Rounding leaves ~1e-13 rad/s in omega_BC: reports show 0 with no
     sense; the JSON keeps the raw number."""
-    from polygon_method.steps import steps_text
+    from polygon_method.steptable import steps_text
 
     scene = parse_scene(TRANSLATING_COUPLER)
     sol = solve(scene)

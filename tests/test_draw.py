@@ -422,7 +422,7 @@ def test_single_diagram_uses_the_scale_the_steps_state(path):
     from polygon_method.draw import DIAGRAMS, layout
     from polygon_method.scales import diagram_scales
     from polygon_method import load_scene
-    from polygon_method.steps import steps_text
+    from polygon_method.steptable import steps_text
 
     sol = solve(load_scene(path))
     text = steps_text(sol)

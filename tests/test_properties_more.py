@@ -16,7 +16,7 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from polygon_method.errors import TOL, AssemblyError, SingularStepError
-from polygon_method.methods import Kinematics, compare
+from methods import Kinematics, compare
 from polygon_method.plan import Dyad, SliderDyad, SlottedLink
 from polygon_method.scene import parse_scene
 from polygon_method.solution import solve

@@ -14,7 +14,7 @@ import pytest
 
 from polygon_method.cli import main
 from polygon_method.errors import TOL, SingularStepError
-from polygon_method.methods import Kinematics, compare
+from methods import Kinematics, compare
 from polygon_method.scene import parse_scene
 from polygon_method.solution import solve
 from reference import reference_solution

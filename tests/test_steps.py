@@ -16,7 +16,7 @@ from hypothesis import strategies as st
 from polygon_method import load_scene, parse_scene, solve
 from polygon_method.cli import main
 from polygon_method.scales import choose_scale, diagram_scales, extent, parse_scale
-from polygon_method.steps import read_off, steps_text
+from polygon_method.steptable import read_off, steps_text
 
 ROOT = Path(__file__).resolve().parent.parent
 WORKED = sorted((ROOT / "worked_problems").glob("*.toml"))

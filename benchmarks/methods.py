@@ -51,9 +51,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from .errors import AssemblyError, PolygonMethodError, SingularStepError
-from .plan import Carried, Context, Crank, Dyad, SliderDyad, SlottedLink, compile_plan
-from .scene import FixedPath, Scene
+from polygon_method.errors import AssemblyError, PolygonMethodError, SingularStepError
+from polygon_method.plan import Carried, Context, Crank, Dyad, SliderDyad, SlottedLink, compile_plan
+from polygon_method.scene import FixedPath, Scene
 
 __all__ = ["Kinematics", "METHODS", "production", "shapely_polygons", "algebraic_fourbar",
            "newton_raphson", "finite_differences", "hand_drawing", "Pencil", "Jet",
@@ -109,7 +109,7 @@ def _cross(a, b):
 
 def production(scene: Scene) -> Kinematics:
     """The plan's polygon construction (:func:`polygon_method.solve`)."""
-    from .solution import solve
+    from polygon_method.solution import solve
 
     sol = solve(scene)
     S = {k: (v[0], v[1]) for k, v in sol.S.items()}

@@ -38,7 +38,6 @@ import textwrap
 
 from .numbers import fixed as _fixed, fmt, sense_word
 from .constructions import acceleration_constructions, velocity_constructions
-from .plan import Carried, Crank, Dyad, SliderDyad, SlottedLink
 from .scales import DRAWING_PRECISION_CM, diagram_scales, extent
 from .scene import FixedPath, GuideSlider, split_name
 from .solution import Solution
@@ -223,27 +222,9 @@ def _which(sol, X):
 
 
 def _position_words(sol, st, space) -> str:
-    sc = sol.scene
     L = lambda x: f"{_len_unit(sol, x)} ({space.cm(x):.2f} cm)"  # noqa: E731
-    if isinstance(st, Crank):
-        return (f"{st.pivot}{st.tip}: from {st.pivot} draw {st.pivot}{st.tip} = "
-                f"{L(st.length)} at {fmt(math.degrees(sc.input.angle), 5)} deg")
-    if isinstance(st, Dyad):
-        return (f"{st.point}: arcs of radius {st.link1} = {L(st.l1)} about {st.b} and "
-                f"{st.link2} = {L(st.l2)} about {st.d} meet at {st.point} (of the two "
-                f"intersections, {_which(sol, st.point)})")
-    if isinstance(st, SliderDyad):
-        where = (f"the {st.path.label} path of {st.point}" if st.path is not None
-                 else f"the line of {st.guide}")
-        return (f"{st.point}: an arc of radius {st.link} = {L(st.length)} about {st.b} cuts "
-                f"{where} at {st.point} ({_which(sol, st.point)})")
-    if isinstance(st, SlottedLink):
-        return (f"{st.new}: {st.guide} passes through the block at {st.point}: draw the line "
-                f"from {st.known} through {st.point} and mark {st.known}{st.new} = "
-                f"{L(st.length)} on it")
-    if isinstance(st, Carried):
-        return f"{st.point}: {st.how or 'on ' + st.link}"
-    return st.title
+    angle = fmt(math.degrees(sol.scene.input.angle), 5)
+    return st.position_words(L, lambda point: _which(sol, point), angle)
 
 
 def _input(doc, sol):
@@ -436,15 +417,7 @@ def _orient(sol):
     """link key -> (X, Y): its relative motion as the plan takes it (X relative to Y)."""
     out = {}
     for st in sol.plan.steps:
-        if isinstance(st, Crank):
-            out[st.link] = (st.tip, st.pivot)
-        elif isinstance(st, Dyad):
-            out[st.link1] = (st.point, st.b)
-            out[st.link2] = (st.point, st.d)
-        elif isinstance(st, SliderDyad):
-            out[st.link] = (st.point, st.b)
-        elif isinstance(st, SlottedLink):
-            out[st.guide] = (st.new, st.known)
+        out.update(st.orient())
     for lk in sol.scene.links:
         out.setdefault(lk.key, (lk.q, lk.p))
     return out
@@ -458,7 +431,7 @@ def _acceleration_table(sol):
         if isinstance(s, GuideSlider):
             g = sc.link(s.guide).key
             vs = sol.S[s.point][0]
-            cor = math.hypot(*sol.S[s.point][2])
+            cor = math.hypot(*sol.coriolis(s.point))
             coriolis[g] = (f"2 omega v = 2 x {fmt(abs(sol.W[g]))} x {fmt(abs(vs))} = "
                            f"{fmt(cor)} (block {s.point}, perp. to {s.guide})")
     rows = []
@@ -524,7 +497,7 @@ def _acceleration(doc, sol, ascale):
     sl = []
     for s in sc.sliders:
         a_s = sol.S[s.point][1]
-        cor = math.hypot(*sol.S[s.point][2])
+        cor = math.hypot(*sol.coriolis(s.point))
         t = f"as_{s.point} = {fmt(a_s)} m/s^2 (signed along the guide)"
         if isinstance(s, GuideSlider):
             t += f"; Coriolis component {fmt(cor)} m/s^2"

@@ -1,0 +1,72 @@
+"""What follows from a motion: rubbing velocities at pins, the input torque by power
+balance, the transmission angles. One set of formulas for one instant (floats) and for a
+sweep (arrays).
+
+* rubbing at a pin joining bodies 1 and 2: ``|w1 - w2| r`` (signed omegas: the sum of the
+  magnitudes when they turn in opposite senses, the difference when alike);
+* input torque T on the crank (ccw positive): ``T w + sum(F . v) + sum(T_load w_link) = 0``;
+* transmission angle at a dyad or slider: ``asin(condition)`` (acute).
+"""
+
+from __future__ import annotations
+
+import math
+
+__all__ = ["pin_rubbing", "largest", "power_terms", "input_torque", "transmission_angle"]
+
+
+def pin_rubbing(plan, W, radii) -> dict:
+    """pin -> tuple of ``|w_i - w_j| r``, one per pair of bodies the pin joins (the pair
+    keys are ``plan.pins``' "a|b" names)."""
+    out = {}
+    for point, _names, links, _keys, pairs in plan.pins:
+        r = radii[point]
+        w = [W[lk] if lk is not None else 0.0 for lk in links]
+        out[point] = tuple(abs(w[i] - w[j]) * r for i, j in pairs)
+    return out
+
+
+def largest(values):
+    """The largest of floats or, entry by entry, of arrays (0 for none)."""
+    if not values:
+        return 0.0
+    best = values[0]
+    if isinstance(best, float):
+        return max(values)
+    import numpy as np
+    best = np.array(best, dtype=float)
+    for v in values[1:]:
+        np.maximum(best, v, out=best)
+    return best
+
+
+def power_terms(scene, V, W) -> list:
+    """(what, power in W) of each load: F . v for forces, T w for torques on links."""
+    out = []
+    for load in scene.loads:
+        if load.force is not None:
+            fx, fy = load.force
+            vx, vy = V[load.target]
+            out.append((load.target, fx * vx + fy * vy))
+        else:
+            out.append((load.target, load.torque * W[scene.link(load.target).key]))
+    return out
+
+
+def input_torque(scene, V, W, omega):
+    """T on the crank, ccw positive, from the power balance; None without loads."""
+    if not scene.loads:
+        return None
+    terms = power_terms(scene, V, W)
+    total = terms[0][1]
+    for _, p in terms[1:]:
+        total = total + p
+    return -total / omega
+
+
+def transmission_angle(condition):
+    """The transmission angle (deg, acute) from a step's condition (its sine)."""
+    if isinstance(condition, float):
+        return math.degrees(math.asin(min(condition, 1.0)))
+    import numpy as np
+    return np.degrees(np.arcsin(np.minimum(condition, 1.0)))

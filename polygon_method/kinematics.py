@@ -1,0 +1,126 @@
+"""The motion record: what a plan's evaluation gives, at one instant or at many.
+
+:class:`Motion` holds positions, velocities and accelerations of every point, omega and
+alpha of every link, the sliding velocity, sliding acceleration and Coriolis component of
+every slider, and the condition of every step: floats for one configuration
+(:func:`polygon_method.solution.solve`), numpy arrays for many (a sweep over crank angles,
+or many mechanisms of one shape). Everything derived (rubbing, torque, transmission
+angle) is computed from it (:mod:`polygon_method.derived`).
+
+>>> from polygon_method.scene import parse_scene
+>>> from polygon_method.plan import compile_plan
+>>> sc = parse_scene('''
+... [ground]
+... O = [0, 0]
+... [links]
+... OA = 150
+... AB = 600
+... [sliders]
+... B = { path = "horizontal" }
+... [input]
+... crank = "OA"
+... angle = 90
+... speed = "10 rad/s ccw"
+... ''')
+>>> m = evaluate(compile_plan(sc), upto=1)          # positions and velocities only
+>>> round(m.speed("B"), 6), m.A == {}
+(1.5, True)
+"""
+
+from __future__ import annotations
+
+import math
+
+from .plan import Context, Dims, Plan
+
+__all__ = ["Motion", "evaluate", "hypot"]
+
+
+def hypot(x, y):
+    """|(x, y)| for floats or arrays."""
+    if isinstance(x, float) and isinstance(y, float):
+        return math.hypot(x, y)
+    import numpy as np
+    return np.hypot(x, y)
+
+
+class Motion:
+    """Positions, velocities and accelerations of a mechanism (SI, ccw positive).
+
+    ``P, V, A``: point -> (x, y); ``W, Al``: link key -> omega, alpha; ``S``: slider point ->
+    (vs, as, coriolis x, coriolis y); ``cond``: step index -> condition measure; ``theta``:
+    the crank angle(s); ``bad``: in array mode, the entries where a step failed (or None).
+    Phases not evaluated are empty dicts.
+    """
+
+    __slots__ = ("scene", "plan", "theta", "P", "V", "A", "W", "Al", "S", "cond", "bad")
+
+    def __init__(self, scene, plan, theta, P, V, A, W, Al, S, cond, bad=None):
+        self.scene, self.plan, self.theta = scene, plan, theta
+        self.P, self.V, self.A, self.W, self.Al, self.S = P, V, A, W, Al, S
+        self.cond, self.bad = cond, bad
+
+    # ----- points
+    def position(self, point):
+        return self.P[point]
+
+    def velocity(self, point, relative_to=None):
+        """Velocity of ``point`` (relative to ``relative_to``: v_XY = v_X - v_Y)."""
+        vx, vy = self.V[point]
+        if relative_to is None:
+            return (vx, vy)
+        ux, uy = self.V[relative_to]
+        return (vx - ux, vy - uy)
+
+    def acceleration(self, point, relative_to=None):
+        ax, ay = self.A[point]
+        if relative_to is None:
+            return (ax, ay)
+        bx, by = self.A[relative_to]
+        return (ax - bx, ay - by)
+
+    def speed(self, point, relative_to=None):
+        return hypot(*self.velocity(point, relative_to))
+
+    def acceleration_magnitude(self, point, relative_to=None):
+        return hypot(*self.acceleration(point, relative_to))
+
+    # ----- links
+    def _key(self, link):
+        return self.scene.link(link).key if self.scene is not None else link
+
+    def omega(self, link):
+        return self.W[self._key(link)]
+
+    def alpha(self, link):
+        return self.Al[self._key(link)]
+
+    # ----- sliders
+    def sliding_velocity(self, point):
+        return self.S[point][0]
+
+    def sliding_acceleration(self, point):
+        return self.S[point][1]
+
+    def coriolis(self, point):
+        s = self.S[point]
+        return (s[2], s[3])
+
+    @property
+    def conditions(self) -> dict:
+        return self.cond
+
+
+def evaluate(plan: Plan, theta=None, omega=None, alpha=None, *, dims: Dims | None = None,
+             upto: int = 2, array: bool = False) -> Motion:
+    """Evaluate ``plan`` (at its own scene's dimensions, or at ``dims``) and return the
+    :class:`Motion`. ``upto``: 0 positions only, 1 with velocities, 2 with accelerations.
+    ``theta``/``omega``/``alpha`` default to the dimensions' own; with ``array=True`` they
+    (and any dimension) may be numpy arrays."""
+    d = plan.dims if dims is None else dims
+    ctx = Context(d.theta if theta is None else theta, d.omega if omega is None else omega,
+                  d.alpha if alpha is None else alpha, array=array)
+    m = plan.run(ctx, dims, upto)
+    return Motion(plan.scene, plan, ctx.theta, m.P, m.V if upto >= 1 else {},
+                  m.A if upto >= 2 else {}, m.W if upto >= 1 else {},
+                  m.Al if upto >= 2 else {}, m.S, ctx.cond, ctx.bad)

@@ -1,0 +1,272 @@
+"""What every construction step shares: the evaluation context, the state a plan fills in,
+the step base class, and the records a step gives to step tables and drawings.
+
+A step kind is one module of :mod:`polygon_method.steps`; this module holds nothing of any
+one kind. ``perp(x, y) = (-y, x)`` turns a vector 90 deg counter-clockwise, so that
+``omega x r = omega perp(r)`` in the plane.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from ..errors import TOL, AssemblyError
+
+__all__ = ["Context", "State", "Step", "Vector", "DirectionLine", "Construction",
+           "image_label", "pole_text", "unit", "sub", "add", "perp"]
+
+
+class Context:
+    """What an evaluation needs besides the state: the input motion and the maths for
+    floats or arrays. In scalar mode a failing step raises; in array mode it is masked
+    (``bad``, ``failures``) and the evaluation goes on."""
+
+    __slots__ = ("theta", "omega", "alpha", "array", "cond", "bad", "failures", "np",
+                 "cos", "sin")
+
+    def __init__(self, theta, omega, alpha, *, array=False):
+        self.theta, self.omega, self.alpha = theta, omega, alpha
+        self.array = array
+        self.cond = {}
+        self.bad = None  # array mode: positions where a step failed
+        self.failures = {}  # array mode: step index -> mask
+        if array:
+            import numpy as np
+            self.np = np
+            self.cos, self.sin = np.cos, np.sin
+        else:
+            self.np = None
+            self.cos, self.sin = math.cos, math.sin
+
+    def root(self, disc, scale2, step, why):
+        """sqrt(disc), where disc < 0 means the step cannot assemble (``why()`` says why)."""
+        if self.array:
+            np = self.np
+            miss = disc < -TOL.closure * scale2
+            if miss.any():
+                self.fail(step, miss)
+            return np.sqrt(np.maximum(disc, 0.0))
+        if disc < -TOL.closure * scale2:
+            raise AssemblyError(why(), step=step.label)
+        return disc ** 0.5 if disc > 0 else 0.0
+
+    def fail(self, step, mask):
+        prev = self.failures.get(step.index)
+        self.failures[step.index] = mask if prev is None else (prev | mask)
+        self.bad = mask if self.bad is None else (self.bad | mask)
+
+    def safe(self, den, step):
+        """A denominator that is never exactly zero (array mode: singular entries masked)."""
+        if self.array:
+            zero = den == 0
+            if zero.any():
+                self.fail(step, zero)
+                return self.np.where(zero, 1.0, den)
+        return den
+
+    def minimum(self, a, b):
+        return self.np.minimum(a, b) if self.array else min(a, b)
+
+
+class State:
+    """The values a plan fills in, step by step: ``P, V, A`` point -> (x, y); ``W, Al``
+    link -> omega, alpha; ``S`` slider point -> [vs, as, coriolis x, coriolis y];
+    ``cond`` step index -> condition. Floats, or arrays over many positions."""
+
+    __slots__ = ("P", "V", "A", "W", "Al", "S", "cond", "ctx")
+
+    def __init__(self, P, V, A, W, Al, S, ctx):
+        self.P, self.V, self.A, self.W, self.Al, self.S = P, V, A, W, Al, S
+        self.cond = ctx.cond
+        self.ctx = ctx
+
+
+@dataclass(frozen=True)
+class Step:
+    """One hand construction: finds one point (``finds``) from points already known.
+
+    A kind fills in: ``finds``, ``links`` (the links whose omega and alpha it determines),
+    ``needs`` (the points it reads), ``params`` (its dimensions, as the plan's scene gives
+    them), ``place`` (its position formula), ``velocity``/``acceleration`` (write into a
+    :class:`State`), the words below and ``construction`` (what it draws).
+    """
+
+    index: int
+
+    #: the name of the kind ("crank", "dyad", ...), as in the JSON ``steps``
+    kind = "step"
+    #: whether the step has two assemblies (a branch ``sigma`` to choose)
+    branching = False
+    #: whether the step's image is found by a similar triangle off the line of two images
+    image_by_similar_triangle = False
+
+    @property
+    def label(self) -> str:
+        return f"step {self.index + 1} ({self.title})"
+
+    # ----- evaluation
+    def position(self, m: State, prm) -> None:
+        x, y, c = self.place(m.P, prm, m.ctx)
+        m.P[self.finds[0]] = (x, y)
+        m.cond[self.index] = c
+
+    def positions(self, P, ctx):
+        """Place this step's point into the dict ``P`` (one step alone, at the plan's own
+        dimensions)."""
+        x, y, c = self.place(P, self.params, ctx)
+        P[self.finds[0]] = (x, y)
+        ctx.cond[self.index] = c
+
+    def candidates(self, P, ctx):
+        """The two assemblies as (midpoint, half the vector from one to the other)."""
+        prm = self.params
+        (x1, y1, _), (x2, y2, _) = self.place(P, prm, ctx, 1.0), self.place(P, prm, ctx, -1.0)
+        return ((x1 + x2) / 2, (y1 + y2) / 2), ((x1 - x2) / 2, (y1 - y2) / 2)
+
+    def reach(self) -> float:
+        """The largest length of the step (a scale for its tolerances)."""
+        return 1e-9
+
+    # ----- words
+    def singular_why(self, c) -> str:
+        """Why the step fails at condition ``c`` (below ``TOL.singular``)."""
+        return f"the step is singular (condition {c:.2g})"
+
+    def warning(self, c) -> str:
+        """The warning line for a condition ``c`` below ``TOL.warn``."""
+        return f"{self.label}: condition {c:.3g}"
+
+    def limit_why(self) -> str:
+        """Why the linkage cannot be assembled beyond a limit position of this step."""
+        return "the linkage cannot be assembled beyond it"
+
+    def condition_column(self):
+        """(name, unit, words) of this step's condition in a sweep summary: the
+        transmission angle for the steps whose condition is its sine."""
+        return (f"mu at {self.finds[0]}", "deg", "transmission angle (acute)")
+
+    def transmission(self):
+        """Words for the transmission angle this step's condition measures
+        (``"between BC and CD"``), or None if its condition is no transmission angle."""
+        return None
+
+    def orient(self) -> dict:
+        """link -> (X, Y): the relative motion of each link the step finds, X relative to Y,
+        as the step table's acceleration table names it."""
+        return {}
+
+    def default_hint(self, P):
+        """Which of the two positions the step takes when the scene does not say."""
+        return "above"
+
+
+# --------------------------------------------------------------------------- records
+
+
+@dataclass(frozen=True)
+class Vector:
+    """A segment of a polygon, from ``start`` to ``end`` (polygon coordinates, SI).
+
+    ``kind``: ``absolute`` (from the pole), ``relative`` (between two images),
+    ``centripetal``, ``tangential``, ``coriolis``, ``sliding``.
+    """
+
+    start: tuple
+    end: tuple
+    label: str  # e.g. "bc"
+    kind: str
+    name: str  # e.g. "v_CB" or "centripetal of CB"
+    text: str  # how it is found: "omega_BC^2 x BC, parallel to BC, towards B"
+
+    @property
+    def magnitude(self) -> float:
+        return math.hypot(self.end[0] - self.start[0], self.end[1] - self.start[1])
+
+
+@dataclass(frozen=True)
+class DirectionLine:
+    """An infinite line of known direction through a known polygon point."""
+
+    point: tuple
+    direction: tuple  # unit vector
+    through: str  # label of the point it is drawn through, e.g. "b"
+    relation: str  # "perpendicular to BC", "parallel to the path", ...
+
+
+@dataclass(frozen=True)
+class Construction:
+    """One plan step on one polygon."""
+
+    step: int
+    title: str
+    phase: str  # "velocity" or "acceleration"
+    finds: str  # the image label found, e.g. "c"
+    point: tuple  # where it is
+    given: tuple  # Vectors known before the step (drawn first)
+    lines: tuple  # the two DirectionLines, or () for a direct step
+    found: tuple  # Vectors the step determines
+    text: str
+    condition: float
+
+
+def image_label(sol, point: str, phase: str = "velocity") -> str:
+    """``b`` for B on the velocity polygon, ``b'`` on the acceleration polygon; fixed
+    points are the pole ``o``/``o'``."""
+    prime = "'" if phase == "acceleration" else ""
+    if point in sol.scene.ground:
+        return "o" + prime
+    return point.lower() + prime
+
+
+def pole_text(sol, point, phase):
+    """Label for text: ``d (at o)`` for a fixed point that is not named O."""
+    lab = image_label(sol, point, phase)
+    own = point.lower() + ("'" if phase == "acceleration" else "")
+    if lab != own:
+        return f"{own} (at {lab})"
+    return lab
+
+
+def unit(x, y):
+    n = math.hypot(x, y)
+    return (x / n, y / n) if n else (0.0, 0.0)
+
+
+def sub(a, b):
+    return (a[0] - b[0], a[1] - b[1])
+
+
+def add(a, b):
+    return (a[0] + b[0], a[1] + b[1])
+
+
+def perp(v):
+    return (-v[1], v[0])
+
+
+def relative(sol, X, Y, D, phase, kind="relative"):
+    """Vector from the image of Y to the image of X (v_XY)."""
+    lx, ly = image_label(sol, X, phase), image_label(sol, Y, phase)
+    sym = "v" if phase == "velocity" else "a"
+    return Vector(D[Y], D[X], f"{ly}{lx}", kind, f"{sym}_{X}{Y}", "")
+
+
+def absolute(sol, X, D, phase):
+    o = "o" if phase == "velocity" else "o'"
+    sym = "v" if phase == "velocity" else "a"
+    return Vector((0.0, 0.0), D[X], f"{o}{image_label(sol, X, phase)}", "absolute",
+                  f"{sym}_{X}", "")
+
+
+def centripetal(sol, X, B, link, ph):
+    """Centripetal component of a_XB: w^2 |XB| along XB, towards B, drawn from b'."""
+    w = sol.W[link]
+    r = sub(sol.P[X], sol.P[B])
+    start = sol.A[B]
+    end = add(start, (-w * w * r[0], -w * w * r[1]))
+    L = math.hypot(*r)
+    return Vector(start, end, f"{image_label(sol, B, ph)}{X.lower()}c", "centripetal",
+                  f"centripetal of {X}{B}",
+                  f"v_{X}{B}^2 / {X}{B} = {w * w * L:.4g} m/s^2, parallel to {X}{B}, "
+                  f"towards {B}")

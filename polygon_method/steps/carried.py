@@ -1,0 +1,128 @@
+"""A point carried on a known link (or plate): its image is found by similar triangles.
+
+``X = P + lam (Q - P) + mu perp(Q - P)`` from two known points P, Q of the same body; the
+same holds for the velocity and acceleration images (triangle pqx similar to PQX, read the
+same way round). ``mu = 0``: x on the line pq (produced if lam is outside 0..1).
+
+>>> image(1.0, 2.0, 3.0, 2.0, 0.5, 0.5)
+(2.0, 3.0)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .base import Construction, Step, absolute, image_label, relative
+
+__all__ = ["Carried", "image", "recognise"]
+
+
+def image(px, py, qx, qy, lam, mu):
+    """P + lam (Q - P) + mu perp(Q - P): a position, a velocity or an acceleration image."""
+    dx, dy = qx - px, qy - py
+    return px + lam * dx - mu * dy, py + lam * dy + mu * dx
+
+
+def _image(px, py, qx, qy, lam, mu):
+    # the same as image(), skipping zero terms (exactly as a hand construction does)
+    dx, dy = qx - px, qy - py
+    x, y = px, py
+    if lam:
+        x, y = x + lam * dx, y + lam * dy
+    if mu:
+        x, y = x - mu * dy, y + mu * dx
+    return x, y
+
+
+def recognise(g, name):
+    """A body of ``name`` with two known points."""
+    sc = g.scene
+    cp = g.carried(name)
+    for key in g.bodies_of(name):
+        b = g.body(key)
+        known = [p for p in b if p in g.P]
+        if len(known) >= 2:
+            lk = sc.link(key)
+            if key not in g.used_links and name in lk.points:
+                continue  # both ends known, the link unused: redundant, reported later
+            ends = [p for p in lk.points if p in g.P]
+            refs = ends if len(ends) == 2 else known[:2]
+            how = cp.how if cp is not None and cp.link == key else ""
+            lam, mu = g.bodies.coefficients(key, refs[0], refs[1], name)
+            return Carried(g.next_index, name, key, refs[0], refs[1], lam, mu, how)
+    return None
+
+
+@dataclass(frozen=True)
+class Carried(Step):
+    """X = P + lam (Q - P) + mu perp(Q - P); the same for v and a (the image point)."""
+
+    point: str
+    link: str
+    p: str
+    q: str
+    lam: float
+    mu: float
+    how: str = ""
+
+    kind = "carried"
+
+    @property
+    def image_by_similar_triangle(self):
+        return self.mu != 0
+
+    @property
+    def finds(self):
+        return (self.point,)
+
+    @property
+    def links(self):
+        return ()
+
+    @property
+    def needs(self):
+        return (self.p, self.q)
+
+    @property
+    def title(self):
+        return f"point {self.point} on {self.link}"
+
+    @property
+    def params(self):
+        return (self.lam, self.mu)
+
+    def dimensions(self, scene, bodies):
+        return bodies.coefficients(self.link, self.p, self.q, self.point)
+
+    def condition_column(self):
+        return None
+
+    def place(self, P, prm, ctx, sigma=None):
+        x, y = _image(*P[self.p], *P[self.q], prm[0], prm[1])
+        return x, y, 1.0
+
+    def velocity(self, m, prm):
+        V = m.V
+        V[self.point] = _image(*V[self.p], *V[self.q], prm[0], prm[1])
+
+    def acceleration(self, m, prm):
+        A = m.A
+        A[self.point] = _image(*A[self.p], *A[self.q], prm[0], prm[1])
+
+    def position_words(self, L, which, angle_deg):
+        return f"{self.point}: {self.how or 'on ' + self.link}"
+
+    def construction(self, sol, ph):
+        lab = lambda p: image_label(sol, p, ph)  # noqa: E731
+        D = sol.V if ph == "velocity" else sol.A
+        X, p, q = self.point, self.p, self.q
+        if self.mu == 0:
+            text = (f"{lab(p)}{lab(X)} / {lab(p)}{lab(q)} = {p}{X} / {p}{q} = {self.lam:.4g}: "
+                    f"{lab(X)} on {lab(p)}{lab(q)}"
+                    + (" produced" if not 0 <= self.lam <= 1 else ""))
+        else:
+            text = (f"triangle {lab(p)}{lab(q)}{lab(X)} similar to {p}{q}{X}, read the same "
+                    f"way round ({'ccw' if self.mu > 0 else 'cw'}): {lab(X)} is the image of {X}")
+        found = (absolute(sol, X, D, ph), relative(sol, X, p, D, ph))
+        return Construction(self.index, self.title, ph, lab(X), D[X], (), (), found, text,
+                            sol.conditions.get(self.index, 1.0))

@@ -1,0 +1,127 @@
+"""The driving crank: its tip from the fixed pivot, the crank angle and speed.
+
+Position: ``T = O + r (cos theta, sin theta)``. Velocity: ``v_T = omega perp(r)`` (oa
+perpendicular to OA, omega x OA). Acceleration: ``a_T = -omega^2 r + alpha perp(r)``
+(centripetal towards O, tangential perpendicular to OA).
+
+>>> velocity(0.0, 0.05, -10.0)
+(0.5, -0.0)
+>>> acceleration(0.0, 0.05, -10.0, 0.0)
+(-0.0, -5.0)
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from .base import Construction, Step, Vector, absolute, centripetal, image_label, pole_text, sub
+
+__all__ = ["Crank", "velocity", "acceleration"]
+
+
+def velocity(rx, ry, omega):
+    """v_T - v_O = omega perp(r), r = T - O."""
+    return -omega * ry, omega * rx
+
+
+def acceleration(rx, ry, omega, alpha):
+    """a_T - a_O = -omega^2 r + alpha perp(r)."""
+    k = omega * omega
+    return -k * rx - alpha * ry, -k * ry + alpha * rx
+
+
+@dataclass(frozen=True)
+class Crank(Step):
+    """Tip = pivot + r (cos theta, sin theta); v = omega perp(r); a = -omega^2 r + alpha perp(r)."""
+
+    link: str
+    pivot: str
+    tip: str
+    length: float
+
+    kind = "crank"
+
+    @property
+    def finds(self):
+        return (self.tip,)
+
+    @property
+    def links(self):
+        return (self.link,)
+
+    @property
+    def needs(self):
+        return (self.pivot,)
+
+    @property
+    def title(self):
+        return f"crank {self.link}"
+
+    @property
+    def params(self):
+        return (self.length,)
+
+    def dimensions(self, scene, bodies):
+        return (scene.link(self.link).length,)
+
+    def reach(self):
+        return max(self.length, 1e-9)
+
+    def place(self, P, prm, ctx, sigma=None):
+        ox, oy = P[self.pivot]
+        r = prm[0]
+        return ox + r * ctx.cos(ctx.theta), oy + r * ctx.sin(ctx.theta), 1.0
+
+    def velocity(self, m, prm):
+        P, V, O, T = m.P, m.V, self.pivot, self.tip
+        (ox, oy), (tx, ty), (vox, voy) = P[O], P[T], V[O]
+        omega = m.ctx.omega
+        vx, vy = velocity(tx - ox, ty - oy, omega)
+        m.W[self.link] = omega
+        V[T] = (vox + vx, voy + vy)
+
+    def acceleration(self, m, prm):
+        P, A, O, T = m.P, m.A, self.pivot, self.tip
+        (ox, oy), (tx, ty), (aox, aoy) = P[O], P[T], A[O]
+        ctx = m.ctx
+        ax, ay = acceleration(tx - ox, ty - oy, ctx.omega, ctx.alpha)
+        m.Al[self.link] = ctx.alpha
+        A[T] = (aox + ax, aoy + ay)
+
+    # ----- words
+    def orient(self):
+        return {self.link: (self.tip, self.pivot)}
+
+    def position_words(self, L, which, angle_deg):
+        """The configuration diagram's line for this step (``L`` writes a length)."""
+        return (f"{self.pivot}{self.tip}: from {self.pivot} draw {self.pivot}{self.tip} = "
+                f"{L(self.length)} at {angle_deg} deg")
+
+    def construction(self, sol, ph):
+        O, T = self.pivot, self.tip
+        cond = sol.conditions.get(self.index, 1.0)
+        lab = lambda p: image_label(sol, p, ph)  # noqa: E731
+        if ph == "velocity":
+            V = sol.V
+            w = sol.W[self.link]
+            v = absolute(sol, T, V, ph)
+            text = (f"from {pole_text(sol, O, ph)} draw {lab(O)}{lab(T)} "
+                    f"perpendicular to {O}{T}, = omega x {O}{T} = "
+                    f"{abs(w):.4g} x {self.length:.4g} = {v.magnitude:.4g} m/s")
+            return Construction(self.index, self.title, ph, lab(T), V[T], (), (), (v,),
+                                text, cond)
+        A = sol.A
+        cen = centripetal(sol, T, O, self.link, ph)
+        al = sol.Al[self.link]
+        r = sub(sol.P[T], sol.P[O])
+        tan = Vector(cen.end, A[T], f"{lab(T)}t", "tangential", f"tangential of {T}{O}",
+                     f"alpha x {O}{T} = {abs(al) * math.hypot(*r):.4g} m/s^2, "
+                     f"perpendicular to {O}{T}")
+        text = (f"from {pole_text(sol, O, ph)} draw the centripetal component {cen.text}"
+                + (f"; add the tangential component {tan.text}" if al else
+                   " (no tangential component: the crank turns uniformly)")
+                + f"; its end is {lab(T)}")
+        found = (cen, tan, absolute(sol, T, A, ph)) if al else (cen, absolute(sol, T, A, ph))
+        return Construction(self.index, self.title, ph, lab(T), A[T], (cen,), (), found, text,
+                            cond)

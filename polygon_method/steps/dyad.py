@@ -1,0 +1,251 @@
+"""RRR dyad: a point joined by two links (or two sides of plates) to two known points.
+
+Position: X with |XB| = l1, |XD| = l2, the intersection of two circles (the branch
+``sigma`` says which). Velocity: through b a line perpendicular to BX, through d one
+perpendicular to DX; they meet at x. In numbers, ``w1 perp(r1) - w2 perp(r2) = vD - vB``
+with r1 = X - B, r2 = X - D::
+
+    w1 = (vD - vB).r2 / (r1 x r2),   w2 = (vD - vB).r1 / (r1 x r2)
+
+Acceleration: the same with the right side ``(aD - w2^2 r2) - (aB - w1^2 r1)`` (the
+centripetal components drawn first, the tangential ones along the direction lines).
+Condition: |r1 x r2| / (l1 l2), the sine of the transmission angle at X.
+
+>>> x, y, c = place(0.0, 0.0, 2.0, 0.0, 2 ** 0.5, 2 ** 0.5, 1.0)
+>>> round(x, 12), round(y, 12), round(c, 12)
+(1.0, 1.0, 1.0)
+>>> velocity(1.0, 1.0, -1.0, 1.0, 0.0, 1.0, 0.0, 0.0)   # B moves up at 1, D fixed: both cw
+(-0.5, -0.5, 0.5, 0.5)
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from ..errors import AssemblyError, SingularStepError
+from ..numbers import in_units
+from ..scene import split_name
+from .base import (Construction, DirectionLine, Step, Vector, absolute, centripetal,
+                   image_label, perp, pole_text, relative, sub, unit)
+
+__all__ = ["Dyad", "place", "velocity", "acceleration", "recognise"]
+
+
+def place(bx, by, dx, dy, l1, l2, sigma, ctx=None, step=None):
+    """X with |XB| = l1, |XD| = l2: along BD by (l1^2 - l2^2 + e^2) / 2e, off it by h.
+
+    ``4 e^2 h^2 = (l1+l2+e)(l1+l2-e)(e+l1-l2)(e-l1+l2)`` keeps h exact near a toggle.
+    Returns x, y and the condition e h / (l1 l2) = |sin| of the angle at X.
+    """
+    ex, ey = dx - bx, dy - by
+    e2 = ex * ex + ey * ey
+    e = e2 ** 0.5
+    q = (l1 + l2 + e) * (l1 + l2 - e) * (e + l1 - l2) * (e - l1 + l2)
+    if ctx is None:
+        h = max(q, 0.0) ** 0.5 / (2 * e)
+    else:
+        if not ctx.array and e == 0:
+            raise step.coincident()
+        e = ctx.safe(e, step)
+        h = ctx.root(q, (l1 * l2) ** 2, step, lambda: step.why(e)) / (2 * e)
+    along = (l1 * l1 - l2 * l2 + e2) / (2 * e)
+    ux, uy = ex / e, ey / e
+    return (bx + along * ux - sigma * h * uy, by + along * uy + sigma * h * ux,
+            e * h / (l1 * l2))
+
+
+def velocity(r1x, r1y, r2x, r2y, vbx, vby, vdx, vdy, d=None):
+    """(w1, w2, vx, vy): the angular velocities of XB and XD and the velocity of X.
+    ``d`` is r1 x r2 if the caller has made it safe (arrays)."""
+    if d is None:
+        d = r1x * r2y - r1y * r2x
+    wx, wy = vdx - vbx, vdy - vby
+    w1 = (wx * r2x + wy * r2y) / d
+    w2 = (wx * r1x + wy * r1y) / d
+    return w1, w2, vbx - w1 * r1y, vby + w1 * r1x
+
+
+def acceleration(r1x, r1y, r2x, r2y, w1, w2, abx, aby, adx, ady, d=None):
+    """(al1, al2, ax, ay): the angular accelerations of XB and XD and the acceleration of X."""
+    if d is None:
+        d = r1x * r2y - r1y * r2x
+    k1, k2 = w1 * w1, w2 * w2
+    qx = (adx - k2 * r2x) - (abx - k1 * r1x)
+    qy = (ady - k2 * r2y) - (aby - k1 * r1y)
+    al1 = (qx * r2x + qy * r2y) / d
+    al2 = (qx * r1x + qy * r1y) / d
+    return al1, al2, abx - k1 * r1x - al1 * r1y, aby - k1 * r1y + al1 * r1x
+
+
+def recognise(g, name):
+    """Two bodies of ``name`` that each have one known point and are not used yet."""
+    free = g.free(name)
+    if len(free) >= 2:
+        (k1, b1, l1), (k2, b2, l2) = free[0], free[1]
+        return Dyad(g.next_index, name, b1, k1, l1, b2, k2, l2, unit=g.unit, uname=g.uname)
+    return None
+
+
+@dataclass(frozen=True)
+class Dyad(Step):
+    """RRR: point X with XB = l1 to known B and XD = l2 to known D (see the module)."""
+
+    point: str
+    b: str
+    link1: str
+    l1: float
+    d: str
+    link2: str
+    l2: float
+    sigma: float = 1.0
+    unit: float = 1e-3
+    uname: str = "mm"
+
+    kind = "dyad"
+    branching = True
+
+    @property
+    def finds(self):
+        return (self.point,)
+
+    @property
+    def links(self):
+        return (self.link1, self.link2)
+
+    @property
+    def needs(self):
+        return (self.b, self.d)
+
+    @property
+    def title(self):
+        return f"dyad {self.link1}, {self.link2} at {self.point}"
+
+    @property
+    def params(self):
+        return (self.l1, self.l2)
+
+    def dimensions(self, scene, bodies):
+        return (bodies.distance(self.link1, self.b, self.point),
+                bodies.distance(self.link2, self.d, self.point))
+
+    def reach(self):
+        return max(self.l1, self.l2, 1e-9)
+
+    def place(self, P, prm, ctx, sigma=None):
+        (bx, by), (dx, dy) = P[self.b], P[self.d]
+        s = self.sigma if sigma is None else sigma
+        return place(bx, by, dx, dy, prm[0], prm[1], s, ctx, self)
+
+    def _r(self, P):
+        (x, y), (bx, by), (dx, dy) = P[self.point], P[self.b], P[self.d]
+        return x - bx, y - by, x - dx, y - dy
+
+    def velocity(self, m, prm):
+        r1x, r1y, r2x, r2y = self._r(m.P)
+        V = m.V
+        d = m.ctx.safe(r1x * r2y - r1y * r2x, self)
+        w1, w2, vx, vy = velocity(r1x, r1y, r2x, r2y, *V[self.b], *V[self.d], d)
+        m.W[self.link1] = w1
+        m.W[self.link2] = w2
+        V[self.point] = (vx, vy)
+
+    def acceleration(self, m, prm):
+        r1x, r1y, r2x, r2y = self._r(m.P)
+        A, W = m.A, m.W
+        d = m.ctx.safe(r1x * r2y - r1y * r2x, self)
+        al1, al2, ax, ay = acceleration(r1x, r1y, r2x, r2y, W[self.link1], W[self.link2],
+                                        *A[self.b], *A[self.d], d)
+        m.Al[self.link1] = al1
+        m.Al[self.link2] = al2
+        A[self.point] = (ax, ay)
+
+    # ----- failures and words
+    def coincident(self):
+        if self.l1 == self.l2:
+            return SingularStepError(f"{self.b} and {self.d} coincide and {self.side(1)} = "
+                                     f"{self.side(2)}: {self.point} may be anywhere on a "
+                                     "circle", step=self.label)
+        return AssemblyError(self.why(0.0), step=self.label)
+
+    def side(self, which) -> str:
+        """The name of a side: the link itself, or ``BE (on BC)`` for a side of a plate."""
+        key, k = (self.link1, self.b) if which == 1 else (self.link2, self.d)
+        if set(split_name(key)) == {k, self.point}:
+            return key
+        return f"{k}{self.point} (on {key})"
+
+    def why(self, e):
+        u, n = self.unit, self.uname
+        if self.l1 + self.l2 < e:
+            return (f"cannot assemble {self.point}: {self.side(1)} + {self.side(2)} = "
+                    f"{in_units(self.l1 + self.l2, u)} {n} < {self.b}{self.d} = "
+                    f"{in_units(e, u)} {n} (short by {in_units(e - self.l1 - self.l2, u)} {n})")
+        return (f"cannot assemble {self.point}: |{self.side(1)} - {self.side(2)}| = "
+                f"{in_units(abs(self.l1 - self.l2), u)} {n} > {self.b}{self.d} = "
+                f"{in_units(e, u)} {n} (by {in_units(abs(self.l1 - self.l2) - e, u)} {n})")
+
+    def singular_why(self, c) -> str:
+        return (f"{self.link1} and {self.link2} are in line (transmission angle "
+                f"{math.degrees(math.asin(min(c, 1.0))):.3g} deg): a toggle position (or a "
+                "change point, where the linkage may switch branch), where the direction "
+                f"lines perpendicular to {self.link1} and {self.link2} are parallel and the "
+                f"velocity of {self.point} is indeterminate")
+
+    def warning(self, c) -> str:
+        deg = math.degrees(math.asin(min(c, 1.0)))
+        return (f"{self.label}: {self.link1} and {self.link2} are nearly in line (transmission "
+                f"angle {deg:.3g} deg, condition {c:.3g}): near a toggle position the "
+                "intersection of the direction lines is ill-conditioned")
+
+    def limit_why(self) -> str:
+        return (f"{self.side(1)} and {self.side(2)} come into line (a toggle: {self.point} "
+                "cannot be assembled beyond it)")
+
+    def transmission(self):
+        return f"between {self.side(1)} and {self.side(2)}"
+
+    def orient(self):
+        return {self.link1: (self.point, self.b), self.link2: (self.point, self.d)}
+
+    def position_words(self, L, which, angle_deg):
+        return (f"{self.point}: arcs of radius {self.link1} = {L(self.l1)} about {self.b} and "
+                f"{self.link2} = {L(self.l2)} about {self.d} meet at {self.point} (of the two "
+                f"intersections, {which(self.point)})")
+
+    # ----- the polygons
+    def construction(self, sol, ph):
+        P, X, B, D = sol.P, self.point, self.b, self.d
+        cond = sol.conditions.get(self.index, 1.0)
+        lab = lambda p: image_label(sol, p, ph)  # noqa: E731
+        d1 = unit(*perp(sub(P[X], P[B])))
+        d2 = unit(*perp(sub(P[X], P[D])))
+        if ph == "velocity":
+            V = sol.V
+            lines = (DirectionLine(V[B], d1, lab(B), f"perpendicular to {B}{X}"),
+                     DirectionLine(V[D], d2, lab(D), f"perpendicular to {D}{X}"))
+            text = (f"through {pole_text(sol, B, ph)} draw a line perpendicular to {B}{X}; "
+                    f"through {pole_text(sol, D, ph)}, one perpendicular to {D}{X}; they meet "
+                    f"at {lab(X)}")
+            found = (relative(sol, X, B, V, ph), relative(sol, X, D, V, ph),
+                     absolute(sol, X, V, ph))
+            return Construction(self.index, self.title, ph, lab(X), V[X], (), lines, found,
+                                text, cond)
+        A = sol.A
+        c1 = centripetal(sol, X, B, self.link1, ph)
+        c2 = centripetal(sol, X, D, self.link2, ph)
+        lines = (DirectionLine(c1.end, d1, f"the end of the centripetal of {X}{B}",
+                               f"perpendicular to {B}{X}"),
+                 DirectionLine(c2.end, d2, f"the end of the centripetal of {X}{D}",
+                               f"perpendicular to {D}{X}"))
+        text = (f"from {pole_text(sol, B, ph)} draw the centripetal of {X}{B} ({c1.text}), and "
+                f"through its end a line perpendicular to {B}{X}; from {pole_text(sol, D, ph)} "
+                f"draw the centripetal of {X}{D} ({c2.text}), and through its end a line "
+                f"perpendicular to {D}{X}; they meet at {lab(X)}")
+        found = (Vector(c1.end, A[X], f"t{X}{B}", "tangential", f"tangential of {X}{B}",
+                        f"alpha_{self.link1} x {B}{X}"),
+                 Vector(c2.end, A[X], f"t{X}{D}", "tangential", f"tangential of {X}{D}",
+                        f"alpha_{self.link2} x {D}{X}"),
+                 relative(sol, X, B, A, ph), relative(sol, X, D, A, ph), absolute(sol, X, A, ph))
+        return Construction(self.index, self.title, ph, lab(X), A[X], (c1, c2), lines, found,
+                            text, cond)

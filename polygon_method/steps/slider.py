@@ -1,0 +1,323 @@
+"""RRP: a link and a slider. Point X is joined by a link to known B and slides on a
+guide line: a fixed path, or a moving link whose two ends are known.
+
+Position: X on the line Q + s u with |XB| = l: ``s = -(Q - B).u +- sqrt(l^2 - d^2)``,
+d = (Q - B) x u. Velocity: through b a line perpendicular to BX, through the guide's point
+coincident with X (o for a fixed path) a line parallel to the guide::
+
+    w perp(r) - vs u = vX' - vB,   w = u x (vX' - vB) / (r.u),   vs = -r.(vX' - vB) / (r.u)
+
+with r = X - B and X' the guide's point under the block. Acceleration: the right side
+``aX' + 2 wG vs perp(u) - aB + w^2 r`` (with the Coriolis component on a moving guide).
+Condition: |r.u| / l, the sine of the angle between the two direction lines.
+
+>>> x, y, c = place(0.0, 0.3, 0.0, 0.0, 1.0, 0.0, 0.5, 1.0)   # a rod of 0.5 from (0, 0.3)
+>>> round(x, 12), round(y, 12), round(c, 12)
+(0.4, 0.0, 0.8)
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from ..numbers import in_units
+from ..scene import FixedPath, GuideSlider
+from .base import (Construction, DirectionLine, Step, Vector, absolute, add, centripetal,
+                   image_label, perp, pole_text, relative, sub, unit)
+
+__all__ = ["SliderDyad", "place", "velocity", "acceleration", "guide_point", "recognise"]
+
+
+def place(bx, by, qx, qy, ux, uy, ell, sigma, ctx=None, step=None):
+    """X on the line Q + s u with |XB| = ell. Returns x, y and the condition
+    sqrt(ell^2 - d^2) / ell = |r.u| / ell."""
+    wx, wy = qx - bx, qy - by
+    b = wx * ux + wy * uy
+    dist = wx * uy - wy * ux
+    disc = (ell - dist) * (ell + dist)
+    if ctx is None:
+        half = max(disc, 0.0) ** 0.5
+    else:
+        half = ctx.root(disc, ell * ell, step, lambda: step.why(dist))
+    s = sigma * half - b
+    return qx + s * ux, qy + s * uy, half / ell
+
+
+def guide_point(gx, gy, x, y, w, vgx, vgy):
+    """The velocity of the guide's point under the block at (x, y): vG + w perp(X - G)."""
+    return vgx - w * (y - gy), vgy + w * (x - gx)
+
+
+def guide_point_acceleration(gx, gy, x, y, w, al, agx, agy):
+    """The acceleration of the guide's point under the block: aG - w^2 (X - G) + al perp(X - G)."""
+    px, py = x - gx, y - gy
+    k = w * w
+    return agx - k * px - al * py, agy - k * py + al * px
+
+
+def velocity(rx, ry, ux, uy, wx, wy, vbx, vby, d=None):
+    """(w, vs, vx, vy) with ``wx, wy`` = vX' - vB: the link's omega, the sliding velocity
+    along u, the velocity of X."""
+    if d is None:
+        d = rx * ux + ry * uy
+    w = (ux * wy - uy * wx) / d
+    vs = -(rx * wx + ry * wy) / d
+    return w, vs, vbx - w * ry, vby + w * rx
+
+
+def acceleration(rx, ry, ux, uy, tx, ty, w, abx, aby, d=None):
+    """(al, as, ax, ay) with ``tx, ty`` = aX' + Coriolis: the link's alpha, the sliding
+    acceleration along u, the acceleration of X."""
+    if d is None:
+        d = rx * ux + ry * uy
+    k = w * w
+    qx = tx - abx + k * rx
+    qy = ty - aby + k * ry
+    al = (ux * qy - uy * qx) / d
+    a_s = -(rx * qx + ry * qy) / d
+    return al, a_s, abx - k * rx - al * ry, aby - k * ry + al * rx
+
+
+def coriolis(w, vs, ux, uy):
+    """2 omega_guide vs perp(u)."""
+    return -2 * w * vs * uy, 2 * w * vs * ux
+
+
+def recognise(g, name):
+    """A slider whose point has one free body with a known point, on a fixed path or on a
+    guide link already found."""
+    sc = g.scene
+    sl = g.slider(name)
+    if sl is None or name in g.used_sliders:
+        return None
+    free = g.free(name)
+    if not free:
+        return None
+    key, k, length = free[0]
+    if isinstance(sl, FixedPath):
+        g.used_sliders.add(name)
+        return SliderDyad(g.next_index, name, k, key, length, path=sl, unit=g.unit,
+                          uname=g.uname)
+    if isinstance(sl, GuideSlider):
+        guide = sc.link(sl.guide)
+        if g.known_link(guide) and guide.key in g.used_links:
+            g.used_sliders.add(name)
+            return SliderDyad(g.next_index, name, k, key, length, guide=guide.key,
+                              g1=sl.first, g2=sl.second, unit=g.unit, uname=g.uname)
+    return None
+
+
+@dataclass(frozen=True)
+class SliderDyad(Step):
+    """RRP: point X with XB = l to known B, sliding on a guide line (see the module)."""
+
+    point: str
+    b: str
+    link: str
+    length: float
+    path: FixedPath | None = None  # fixed guide
+    guide: str | None = None  # moving guide link (both ends known)
+    g1: str | None = None
+    g2: str | None = None
+    sigma: float = 1.0
+    unit: float = 1e-3
+    uname: str = "mm"
+
+    kind = "slider"
+    branching = True
+
+    @property
+    def finds(self):
+        return (self.point,)
+
+    @property
+    def links(self):
+        return (self.link,)
+
+    @property
+    def needs(self):
+        return (self.b,) if self.path is not None else (self.b, self.g1, self.g2)
+
+    @property
+    def title(self):
+        if self.path is None:
+            where = f"link {self.guide}"
+        elif self.path.label in ("horizontal", "vertical"):
+            where = f"the {self.path.label} path"
+        else:
+            where = f"the path {self.path.label}"
+        return f"link {self.link}, slider {self.point} on {where}"
+
+    @property
+    def params(self):
+        if self.path is None:
+            return (self.length,)
+        (qx, qy), (ux, uy) = self.path.through, self.path.u
+        return (self.length, qx, qy, ux, uy)
+
+    def dimensions(self, scene, bodies):
+        ell = bodies.distance(self.link, self.b, self.point)
+        if self.path is None:
+            return (ell,)
+        path = scene.slider(self.point)
+        (qx, qy), (ux, uy) = path.through, path.u
+        return (ell, qx, qy, ux, uy)
+
+    def reach(self):
+        return max(self.length, 1e-9)
+
+    def line(self, P, prm=None):
+        """A point of the guide line and its unit direction."""
+        if self.path is not None:
+            prm = self.params if prm is None else prm
+            return prm[1], prm[2], prm[3], prm[4]
+        (gx, gy), (hx, hy) = P[self.g1], P[self.g2]
+        ux, uy = hx - gx, hy - gy
+        m = (ux * ux + uy * uy) ** 0.5
+        return gx, gy, ux / m, uy / m
+
+    def place(self, P, prm, ctx, sigma=None):
+        qx, qy, ux, uy = self.line(P, prm)
+        bx, by = P[self.b]
+        s = self.sigma if sigma is None else sigma
+        return place(bx, by, qx, qy, ux, uy, prm[0], s, ctx, self)
+
+    def default_hint(self, P):
+        _, _, ux, uy = self.line(P)
+        return (ux, uy)  # along the guide's direction
+
+    def velocity(self, m, prm):
+        P, V, X, B = m.P, m.V, self.point, self.b
+        (x, y), (bx, by) = P[X], P[B]
+        _, _, ux, uy = self.line(P, prm)
+        rx, ry = x - bx, y - by
+        vbx, vby = V[B]
+        if self.path is None:
+            g1x, g1y = P[self.g1]
+            cx, cy = guide_point(g1x, g1y, x, y, m.W[self.guide], *V[self.g1])
+            wx, wy = cx - vbx, cy - vby
+        else:
+            wx, wy = -vbx, -vby
+        d = m.ctx.safe(rx * ux + ry * uy, self)
+        w, vs, vx, vy = velocity(rx, ry, ux, uy, wx, wy, vbx, vby, d)
+        m.W[self.link] = w
+        m.S[X] = [vs, None, 0.0, 0.0]
+        V[X] = (vx, vy)
+
+    def acceleration(self, m, prm):
+        P, A, X, B = m.P, m.A, self.point, self.b
+        (x, y), (bx, by) = P[X], P[B]
+        _, _, ux, uy = self.line(P, prm)
+        rx, ry = x - bx, y - by
+        s = m.S[X]
+        if self.path is None:
+            wg = m.W[self.guide]
+            g1x, g1y = P[self.g1]
+            cx, cy = coriolis(wg, s[0], ux, uy)
+            tx, ty = guide_point_acceleration(g1x, g1y, x, y, wg, m.Al[self.guide],
+                                              *A[self.g1])
+            tx, ty = tx + cx, ty + cy
+        else:
+            cx = cy = tx = ty = 0.0
+        d = m.ctx.safe(rx * ux + ry * uy, self)
+        al, a_s, ax, ay = acceleration(rx, ry, ux, uy, tx, ty, m.W[self.link], *A[B], d)
+        m.Al[self.link] = al
+        s[1], s[2], s[3] = a_s, cx, cy
+        A[X] = (ax, ay)
+
+    # ----- failures and words
+    def why(self, dist):
+        u, n = self.unit, self.uname
+        where = f"path {self.path.label}" if self.path else f"line of {self.guide}"
+        return (f"cannot assemble {self.point}: {self.link} = {in_units(self.length, u)} {n} "
+                f"< distance of {self.b} from the {where} = {in_units(abs(dist), u)} {n}")
+
+    def singular_why(self, c) -> str:
+        return (f"{self.link} is perpendicular to the guide of {self.point} (sine {c:.2g}): a "
+                f"dead centre for this step, where the line perpendicular to {self.link} is "
+                "parallel to the guide")
+
+    def warning(self, c) -> str:
+        return (f"{self.label}: the line perpendicular to {self.link} is nearly parallel to "
+                f"the guide (condition {c:.3g}): near a dead centre for this step")
+
+    def limit_why(self) -> str:
+        return (f"{self.link} stands perpendicular to the guide of {self.point} (it cannot "
+                "reach the guide beyond it)")
+
+    def transmission(self):
+        return f"between {self.link} and the normal to the path of {self.point}"
+
+    def orient(self):
+        return {self.link: (self.point, self.b)}
+
+    def position_words(self, L, which, angle_deg):
+        where = (f"the {self.path.label} path of {self.point}" if self.path is not None
+                 else f"the line of {self.guide}")
+        return (f"{self.point}: an arc of radius {self.link} = {L(self.length)} about {self.b} "
+                f"cuts {where} at {self.point} ({which(self.point)})")
+
+    # ----- the polygons
+    def construction(self, sol, ph):
+        P, X, B = sol.P, self.point, self.b
+        cond = sol.conditions.get(self.index, 1.0)
+        lab = lambda p: image_label(sol, p, ph)  # noqa: E731
+        d1 = unit(*perp(sub(P[X], P[B])))
+        (x, y) = P[X]
+        if ph == "velocity":
+            V = sol.V
+            given = ()
+            if self.path is not None:
+                u, through, tl = self.path.u, (0.0, 0.0), "o"
+                rel = f"parallel to the path ({self.path.label})"
+            else:
+                g1 = P[self.g1]
+                u = unit(*sub(P[self.g2], g1))
+                through = guide_point(*g1, x, y, sol.W[self.guide], *V[self.g1])
+                tl = f"{lab(X)}1"
+                rel = f"parallel to {self.guide}"
+                given = (Vector(V[self.g1], through, f"{lab(self.g1)}{tl}", "relative",
+                                f"v of the point of {self.guide} under {X}",
+                                f"omega_{self.guide} x {self.g1}{X}"),)
+            lines = (DirectionLine(V[B], d1, lab(B), f"perpendicular to {B}{X}"),
+                     DirectionLine(through, u, tl, rel))
+            text = (f"through {pole_text(sol, B, ph)} draw a line perpendicular to {B}{X}; "
+                    f"through {tl}, one {rel}; they meet at {lab(X)}")
+            found = (relative(sol, X, B, V, ph), absolute(sol, X, V, ph),
+                     Vector(through, V[X], f"{tl}{lab(X)}", "sliding", f"vs_{X}",
+                            "sliding velocity"))
+            return Construction(self.index, self.title, ph, lab(X), V[X], given, lines, found,
+                                text, cond)
+        A = sol.A
+        c1 = centripetal(sol, X, B, self.link, ph)
+        given = [c1]
+        if self.path is not None:
+            u, through, tl = self.path.u, (0.0, 0.0), "o'"
+            rel = f"parallel to the path ({self.path.label})"
+        else:
+            g1 = P[self.g1]
+            u = unit(*sub(P[self.g2], g1))
+            under = guide_point_acceleration(*g1, x, y, sol.W[self.guide], sol.Al[self.guide],
+                                             *A[self.g1])
+            cor = sol.coriolis(X)
+            through = add(under, cor)
+            tl = "the end of the Coriolis component"
+            rel = f"parallel to {self.guide}"
+            given += [Vector(A[self.g1], under, f"{lab(X)}1", "relative",
+                             f"a of the point of {self.guide} under {X}", ""),
+                      Vector(under, through, "cor", "coriolis", f"Coriolis at {X}",
+                             f"2 omega_{self.guide} vs = "
+                             f"{math.hypot(*cor):.4g} m/s^2")]
+        lines = (DirectionLine(c1.end, d1, f"the end of the centripetal of {X}{B}",
+                               f"perpendicular to {B}{X}"),
+                 DirectionLine(through, u, tl, rel))
+        text = (f"from {pole_text(sol, B, ph)} draw the centripetal of {X}{B} ({c1.text}) and "
+                f"through its end a line perpendicular to {B}{X}; through {tl}, one {rel}; "
+                f"they meet at {lab(X)}")
+        found = (Vector(c1.end, A[X], f"t{X}{B}", "tangential", f"tangential of {X}{B}",
+                        f"alpha_{self.link} x {B}{X}"),
+                 Vector(through, A[X], "s", "sliding", f"as_{X}", "sliding acceleration"),
+                 relative(sol, X, B, A, ph), absolute(sol, X, A, ph))
+        return Construction(self.index, self.title, ph, lab(X), A[X], tuple(given), lines,
+                            found, text, cond)

@@ -1,0 +1,247 @@
+"""RPR: a slotted link. A block pinned at known A slides along link K-N, which turns about
+known K (crank and slotted lever, Whitworth, a swivel or trunnion).
+
+Position: ``N = K + L sigma (A - K) / |A - K|``. Velocity: ``vA = vK + wG perp(d) + vs u``
+with d = A - K; the two direction lines (perpendicular to KA through k, parallel to the
+link through a) are at right angles::
+
+    wG = (vA - vK) x u / -(d.u),   vs = (vA - vK).d / (d.u)
+
+Acceleration: ``aA = aK - wG^2 d + aG perp(d) + 2 wG vs perp(u) + as u`` (the Coriolis
+component 2 omega v). ``u`` is the guide's direction from its first point to its second, as
+named. Condition: min(1, |KA| / L): the block near the pivot makes the link's motion
+ill-defined.
+
+>>> x, y, c = place(0.0, 0.0, 0.3, 0.4, 1.0, 1.0)
+>>> round(x, 12), round(y, 12), c
+(0.6, 0.8, 0.5)
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from ..errors import TOL, SingularStepError
+from ..scene import GuideSlider
+from .base import (Construction, DirectionLine, Step, Vector, absolute, add, image_label, perp,
+                   pole_text, sub, unit)
+
+__all__ = ["SlottedLink", "place", "velocity", "acceleration", "recognise"]
+
+
+def place(kx, ky, ax, ay, length, sigma, ctx=None, step=None):
+    """The free end N = K + L sigma (A - K) / |A - K| of a link through the block at A.
+    Returns x, y and the condition min(1, |KA| / L)."""
+    dx, dy = ax - kx, ay - ky
+    m = (dx * dx + dy * dy) ** 0.5
+    if ctx is not None:
+        if not ctx.array and m <= TOL.singular * length:
+            raise step.at_pivot()
+        m = ctx.safe(m, step)
+    f = sigma * length / m
+    c = m / length
+    return kx + f * dx, ky + f * dy, (ctx.minimum(c, 1.0) if ctx is not None else min(c, 1.0))
+
+
+def velocity(dx, dy, ux, uy, ex, ey, d=None):
+    """(wG, vs) from d = A - K, the unit u along the guide and e = vA - vK."""
+    if d is None:
+        d = -(dx * ux + dy * uy)
+    return (ex * uy - ux * ey) / d, -(dx * ex + dy * ey) / d
+
+
+def coriolis(w, vs, ux, uy):
+    """2 omega_guide vs perp(u)."""
+    return -2 * w * vs * uy, 2 * w * vs * ux
+
+
+def acceleration(dx, dy, ux, uy, ex, ey, d=None):
+    """(alG, as) from e = aA - aK + wG^2 d - Coriolis."""
+    return velocity(dx, dy, ux, uy, ex, ey, d)
+
+
+def recognise(g, name):
+    """A block at a known point sliding on a link with one end known and ``name`` the other
+    (tried when no point can be found otherwise)."""
+    sc = g.scene
+    for sl in sc.sliders:
+        if not isinstance(sl, GuideSlider) or sl.point in g.used_sliders:
+            continue
+        guide = sc.link(sl.guide)
+        if sl.point not in g.P or guide.key in g.used_links or name not in guide.points:
+            continue
+        ends = [p for p in guide.points if p in g.P]
+        if len(ends) != 1:
+            continue
+        known = ends[0]
+        g.used_sliders.add(sl.point)
+        return SlottedLink(g.next_index, sl.point, guide.key, known, guide.other(known),
+                           guide.length, sl.first, sl.second, unit=g.unit, uname=g.uname)
+    return None
+
+
+@dataclass(frozen=True)
+class SlottedLink(Step):
+    """RPR: a block pinned at known A slides along link K-N that turns about known K."""
+
+    point: str  # the block's pin (known)
+    guide: str
+    known: str
+    new: str
+    length: float
+    first: str
+    second: str
+    sigma: float = 1.0
+    unit: float = 1e-3
+    uname: str = "mm"
+
+    kind = "slotted"
+    branching = True
+
+    @property
+    def finds(self):
+        return (self.new,)
+
+    @property
+    def links(self):
+        return (self.guide,)
+
+    @property
+    def needs(self):
+        return (self.known, self.point)
+
+    @property
+    def title(self):
+        return f"block {self.point} sliding on {self.guide}"
+
+    @property
+    def params(self):
+        return (self.length,)
+
+    def dimensions(self, scene, bodies):
+        return (scene.link(self.guide).length,)
+
+    def reach(self):
+        return max(self.length, 1e-9)
+
+    def place(self, P, prm, ctx, sigma=None):
+        (kx, ky), (ax, ay) = P[self.known], P[self.point]
+        s = self.sigma if sigma is None else sigma
+        return place(kx, ky, ax, ay, prm[0], s, ctx, self)
+
+    def default_hint(self, P):
+        return "block side"
+
+    def _frame(self, P, L):
+        (f1x, f1y), (f2x, f2y) = P[self.first], P[self.second]
+        (ax, ay), (kx, ky) = P[self.point], P[self.known]
+        return (f2x - f1x) / L, (f2y - f1y) / L, ax - kx, ay - ky
+
+    def velocity(self, m, prm):
+        P, V, A_, K, N = m.P, m.V, self.point, self.known, self.new
+        ux, uy, dx, dy = self._frame(P, prm[0])
+        d = m.ctx.safe(-(dx * ux + dy * uy), self)
+        (vax, vay), (vkx, vky) = V[A_], V[K]
+        w, vs = velocity(dx, dy, ux, uy, vax - vkx, vay - vky, d)
+        m.W[self.guide] = w
+        m.S[A_] = [vs, None, 0.0, 0.0]
+        (nx, ny), (kx, ky) = P[N], P[K]
+        V[N] = (vkx - w * (ny - ky), vky + w * (nx - kx))
+
+    def acceleration(self, m, prm):
+        P, A, A_, K, N = m.P, m.A, self.point, self.known, self.new
+        ux, uy, dx, dy = self._frame(P, prm[0])
+        d = m.ctx.safe(-(dx * ux + dy * uy), self)
+        w = m.W[self.guide]
+        s = m.S[A_]
+        cx, cy = coriolis(w, s[0], ux, uy)
+        k = w * w
+        (aax, aay), (akx, aky) = A[A_], A[K]
+        ex = aax - akx + k * dx - cx
+        ey = aay - aky + k * dy - cy
+        al, a_s = acceleration(dx, dy, ux, uy, ex, ey, d)
+        m.Al[self.guide] = al
+        s[1], s[2], s[3] = a_s, cx, cy
+        (nx, ny), (kx, ky) = P[N], P[K]
+        px, py = nx - kx, ny - ky
+        A[N] = (akx - k * px - al * py, aky - k * py + al * px)
+
+    # ----- failures and words
+    def at_pivot(self):
+        return SingularStepError(f"block {self.point} is at {self.known}, the pivot of "
+                                 f"{self.guide}: the link's direction is undefined",
+                                 step=self.label)
+
+    def warning(self, c) -> str:
+        return (f"{self.label}: block {self.point} is close to {self.known}, the pivot of "
+                f"{self.guide} (condition {c:.3g})")
+
+    def limit_why(self) -> str:
+        return f"block {self.point} reaches the pivot {self.known} of {self.guide}"
+
+    def condition_column(self):
+        return (f"cond step {self.index + 1}", "1", f"|{self.known}{self.point}| / {self.guide}")
+
+    def orient(self):
+        return {self.guide: (self.new, self.known)}
+
+    def position_words(self, L, which, angle_deg):
+        return (f"{self.new}: {self.guide} passes through the block at {self.point}: draw the "
+                f"line from {self.known} through {self.point} and mark {self.known}{self.new} = "
+                f"{L(self.length)} on it")
+
+    # ----- the polygons
+    def construction(self, sol, ph):
+        P, Ab, K, N = sol.P, self.point, self.known, self.new
+        cond = sol.conditions.get(self.index, 1.0)
+        lab = lambda p: image_label(sol, p, ph)  # noqa: E731
+        kA = sub(P[Ab], P[K])
+        w = sol.W[self.guide]
+        u = unit(*sub(P[self.second], P[self.first]))
+        if ph == "velocity":
+            V = sol.V
+            coincident = add(V[K], (-w * kA[1], w * kA[0]))
+            c = f"{lab(Ab)}1"
+            lines = (DirectionLine(V[K], unit(*perp(kA)), lab(K), f"perpendicular to {K}{Ab}"),
+                     DirectionLine(V[Ab], u, lab(Ab), f"parallel to {self.guide}"))
+            text = (f"through {pole_text(sol, K, ph)} draw a line perpendicular to {K}{Ab} (the "
+                    f"point of {self.guide} under the block); through {lab(Ab)}, one parallel "
+                    f"to {self.guide} (the sliding); they meet at {c}; then {lab(K)}{lab(N)} / "
+                    f"{lab(K)}{c} = {K}{N} / {K}{Ab} gives {lab(N)}")
+            found = (Vector(V[K], coincident, f"{lab(K)}{c}", "relative",
+                            f"v of the point of {self.guide} under {Ab}", ""),
+                     Vector(coincident, V[Ab], f"{c}{lab(Ab)}", "sliding", f"vs_{Ab}",
+                            "sliding velocity of the block"),
+                     absolute(sol, N, V, ph))
+            return Construction(self.index, self.title, ph, lab(N), V[N], (), lines, found,
+                                text, cond)
+        A = sol.A
+        al = sol.Al[self.guide]
+        cen_end = add(A[K], (-w * w * kA[0], -w * w * kA[1]))
+        under = add(cen_end, (-al * kA[1], al * kA[0]))
+        cor = sol.coriolis(Ab)
+        back = sub(A[Ab], cor)
+        c = f"{lab(Ab)[:-1]}1'"
+        cen = Vector(A[K], cen_end, "cen", "centripetal", f"centripetal of {Ab}{K} on "
+                     f"{self.guide}", f"omega^2 x {K}{Ab} = {w * w * math.hypot(*kA):.4g} "
+                     f"m/s^2, towards {K}")
+        corv = Vector(back, A[Ab], "cor", "coriolis", f"Coriolis at {Ab}",
+                      f"2 omega_{self.guide} vs = {math.hypot(*cor):.4g} m/s^2, perpendicular "
+                      f"to {self.guide}")
+        lines = (DirectionLine(cen_end, unit(*perp(kA)), "the end of the centripetal",
+                               f"perpendicular to {K}{Ab}"),
+                 DirectionLine(back, u, "the start of the Coriolis component",
+                               f"parallel to {self.guide}"))
+        text = (f"from {pole_text(sol, K, ph)} draw the centripetal of the point of "
+                f"{self.guide} under the block ({cen.text}) and through its end a line "
+                f"perpendicular to {K}{Ab}; from {lab(Ab)} draw the Coriolis component "
+                f"backwards ({corv.text}) and through its start a line parallel to "
+                f"{self.guide}; they meet at {c}; {lab(N)} follows by {lab(K)}{lab(N)} / "
+                f"{lab(K)}{c} = {K}{N} / {K}{Ab}")
+        found = (Vector(cen_end, under, "t", "tangential", f"tangential of {Ab}{K}",
+                        f"alpha_{self.guide} x {K}{Ab}"),
+                 Vector(under, back, "s", "sliding", f"as_{Ab}", "sliding acceleration"),
+                 absolute(sol, N, A, ph))
+        return Construction(self.index, self.title, ph, lab(N), A[N], (cen, corv), lines, found,
+                            text, cond)
