@@ -12,18 +12,22 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["pin_rubbing", "largest", "power_terms", "input_torque", "transmission_angle"]
+__all__ = ["rubbing_at", "pin_rubbing", "largest", "power_terms", "input_torque", "transmission_angle"]
+
+
+def rubbing_at(pin, W, radius) -> tuple:
+    """``|w_i - w_j| r`` for each pair of bodies a pin joins (``pin``: an entry of
+    ``plan.pins``; a body without a link, the ground or a block on a fixed path, does not
+    turn)."""
+    links, pairs = pin[2], pin[4]
+    w = [W[lk] if lk is not None else 0.0 for lk in links]
+    return tuple(abs(w[i] - w[j]) * radius for i, j in pairs)
 
 
 def pin_rubbing(plan, W, radii) -> dict:
-    """pin -> tuple of ``|w_i - w_j| r``, one per pair of bodies the pin joins (the pair
-    keys are ``plan.pins``' "a|b" names)."""
-    out = {}
-    for point, _names, links, _keys, pairs in plan.pins:
-        r = radii[point]
-        w = [W[lk] if lk is not None else 0.0 for lk in links]
-        out[point] = tuple(abs(w[i] - w[j]) * r for i, j in pairs)
-    return out
+    """pin -> :func:`rubbing_at` for every sized pin (the pair keys are ``plan.pins``'
+    "a|b" names)."""
+    return {pin[0]: rubbing_at(pin, W, radii[pin[0]]) for pin in plan.pins}
 
 
 def largest(values):

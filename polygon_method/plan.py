@@ -159,41 +159,43 @@ class Plan:
         that cannot assemble, or whose condition is below ``TOL.singular``, raises.
         """
         if dims is None:
-            dims = self.dims
-            ground = self.ground
+            ground, phases = self.ground, self._phases
         else:
-            ground = dims.ground
-        steps = self.steps
-        prms = dims.steps
+            ground, phases = dims.ground, self.bind(dims)
         zero = self._zero
         m = State(dict(ground), dict(zero), dict(zero), dict(self.fixed_links),
                   dict(self.fixed_links), {}, ctx)
         try:
-            for st, prm in zip(steps, prms):
-                st.position(m, prm)
+            for f in phases[0]:
+                f(m)
             if not ctx.array:
                 cond = m.cond
-                for st in steps:
-                    c = cond[st.index]
-                    if c < TOL.singular:
-                        raise SingularStepError(st.singular_why(c), step=st.label)
+                for i, st in self._checked:
+                    if cond[i] < TOL.singular:
+                        raise SingularStepError(st.singular_why(cond[i]), step=st.label)
             if upto >= 1:
-                for st, prm in zip(steps, prms):
-                    st.velocity(m, prm)
+                for f in phases[1]:
+                    f(m)
             if upto >= 2:
-                for st, prm in zip(steps, prms):
-                    st.acceleration(m, prm)
+                for f in phases[2]:
+                    f(m)
         except PolygonMethodError as exc:  # name the scene file in the one-line message
             raise exc.located(self.scene.file)
         return m
 
-    @property
-    def _zero(self):
-        z = self.__dict__.get("_zero_cache")
-        if z is None:
-            z = {name: (0.0, 0.0) for name in self.ground}
-            object.__setattr__(self, "_zero_cache", z)
-        return z
+    def bind(self, dims: Dims) -> tuple:
+        """(positions, velocities, accelerations): each the steps' phase functions, in
+        order, for ``dims``."""
+        bound = [st.bind(prm) for st, prm in zip(self.steps, dims.steps)]
+        return tuple(tuple(b[k] for b in bound) for k in range(3))
+
+    def __post_init__(self):
+        # what every evaluation at the plan's own dimensions starts from (made anew by
+        # dataclasses.replace, so a plan with other steps never runs stale functions)
+        object.__setattr__(self, "_zero", {name: (0.0, 0.0) for name in self.ground})
+        object.__setattr__(self, "_phases", self.bind(self.dims) if self.dims else None)
+        object.__setattr__(self, "_checked", tuple((st.index, st) for st in self.steps
+                                                   if st.branching))
 
     def evaluate(self, ctx, *, velocities=True, accelerations=True):
         """Run the plan at the compiled scene's dimensions: dicts ``P, V, A`` (point ->

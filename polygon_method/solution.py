@@ -21,7 +21,7 @@
 from __future__ import annotations
 
 from .derived import input_torque as _torque
-from .derived import pin_rubbing, power_terms
+from .derived import power_terms, rubbing_at
 from .errors import TOL
 from .kinematics import Motion, hypot
 from .numbers import fmt_angular, sense  # noqa: F401  (re-exported)
@@ -38,23 +38,32 @@ class PinRubbing:
     and ``rubbing_velocity`` (the largest pair).
     """
 
-    __slots__ = ("point", "radius", "_keys", "_values", "_names", "_omegas")
+    __slots__ = ("point", "radius", "_pin", "_W", "_values")
 
-    def __init__(self, point, radius, keys, values, names, omegas):
-        self.point, self.radius = point, radius
-        self._keys, self._values, self._names, self._omegas = keys, values, names, omegas
+    def __init__(self, point, radius, pin, W):
+        self.point, self.radius, self._pin, self._W = point, radius, pin, W
+        self._values = None
+
+    @property
+    def values(self) -> tuple:
+        v = self._values
+        if v is None:
+            v = self._values = rubbing_at(self._pin, self._W, self.radius)
+        return v
 
     @property
     def pairs(self) -> dict:
-        return dict(zip(self._keys, self._values))
+        return dict(zip(self._pin[3], self.values))
 
     @property
     def bodies(self) -> dict:
-        return dict(zip(self._names, self._omegas))
+        W = self._W
+        return {name: (W[lk] if lk is not None else 0.0)
+                for name, lk in zip(self._pin[1], self._pin[2])}
 
     @property
     def rubbing_velocity(self) -> float:
-        return max(self._values, default=0.0)
+        return max(self.values, default=0.0)
 
     def __repr__(self):
         return f"PinRubbing({self.point!r}, radius={self.radius!r}, pairs={self.pairs!r})"
@@ -67,7 +76,9 @@ class Solution(Motion):
     __slots__ = ("_cache",)
 
     def __init__(self, scene, plan, P, V, A, W, Al, S, cond, theta=None):
-        Motion.__init__(self, scene, plan, theta, P, V, A, W, Al, S, cond)
+        self.scene, self.plan, self.theta = scene, plan, theta
+        self.P, self.V, self.A, self.W, self.Al, self.S = P, V, A, W, Al, S
+        self.cond, self.bad = cond, None
         self._cache = {}
 
     def _get(self, name, make):
@@ -84,7 +95,7 @@ class Solution(Motion):
     @property
     def R(self) -> dict:
         """pin -> rubbing velocity of each pair of bodies it joins."""
-        return self._get("R", lambda: pin_rubbing(self.plan, self.W, self.plan.dims.radii))
+        return {p: r.values for p, r in self.rubbing.items()}
 
     @property
     def rubbing(self) -> dict:
@@ -93,12 +104,13 @@ class Solution(Motion):
         At each pin, for each pair of bodies it joins: ``|w1 - w2| r`` (signed omegas: the
         sum of the magnitudes when they turn in opposite senses, the difference when alike).
         """
-        def make():
-            W, R, radii = self.W, self.R, self.plan.dims.radii
-            return {point: PinRubbing(point, radii[point], keys, R[point], names,
-                                      [W[lk] if lk is not None else 0.0 for lk in links])
-                    for point, names, links, keys, _ in self.plan.pins}
-        return self._get("rubbing", make)
+        c = self._cache
+        r = c.get("rubbing")
+        if r is None:
+            W, radii = self.W, self.plan.dims.radii
+            r = c["rubbing"] = {pin[0]: PinRubbing(pin[0], radii[pin[0]], pin, W)
+                                for pin in self.plan.pins}
+        return r
 
     @property
     def power_terms(self) -> list:
@@ -108,8 +120,12 @@ class Solution(Motion):
     @property
     def input_torque(self):
         """T on the crank, ccw positive: T w + sum(F . v) = 0. None without loads."""
-        return self._get("torque", lambda: _torque(self.scene, self.V, self.W,
-                                                   self.scene.input.omega))
+        c = self._cache
+        try:
+            return c["torque"]
+        except KeyError:
+            t = c["torque"] = _torque(self.scene, self.V, self.W, self.scene.input.omega)
+            return t
 
     # ----- conditioning
     @property

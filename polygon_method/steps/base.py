@@ -74,12 +74,13 @@ class State:
     link -> omega, alpha; ``S`` slider point -> [vs, as, coriolis x, coriolis y];
     ``cond`` step index -> condition. Floats, or arrays over many positions."""
 
-    __slots__ = ("P", "V", "A", "W", "Al", "S", "cond", "ctx")
+    __slots__ = ("P", "V", "A", "W", "Al", "S", "cond", "ctx", "array")
 
     def __init__(self, P, V, A, W, Al, S, ctx):
         self.P, self.V, self.A, self.W, self.Al, self.S = P, V, A, W, Al, S
         self.cond = ctx.cond
         self.ctx = ctx
+        self.array = ctx.array  # arrays: singular entries are masked, not raised
 
 
 @dataclass(frozen=True)
@@ -88,8 +89,9 @@ class Step:
 
     A kind fills in: ``finds``, ``links`` (the links whose omega and alpha it determines),
     ``needs`` (the points it reads), ``params`` (its dimensions, as the plan's scene gives
-    them), ``place`` (its position formula), ``velocity``/``acceleration`` (write into a
-    :class:`State`), the words below and ``construction`` (what it draws).
+    them) and ``dimensions(scene, bodies)`` (the same read from another scene), ``place``
+    (its position formula, either branch), ``bind`` (its three phases), the words below and
+    ``construction`` (what it draws on either polygon).
     """
 
     index: int
@@ -106,10 +108,11 @@ class Step:
         return f"step {self.index + 1} ({self.title})"
 
     # ----- evaluation
-    def position(self, m: State, prm) -> None:
-        x, y, c = self.place(m.P, prm, m.ctx)
-        m.P[self.finds[0]] = (x, y)
-        m.cond[self.index] = c
+    def bind(self, prm):
+        """(position, velocity, acceleration): the step's three phases for the dimensions
+        ``prm``, each a function of a :class:`State` that fills in what the step finds. They
+        call the kind's module-level formulas, which take floats or arrays alike."""
+        raise NotImplementedError
 
     def positions(self, P, ctx):
         """Place this step's point into the dict ``P`` (one step alone, at the plan's own

@@ -101,13 +101,28 @@ class Carried(Step):
         x, y = _image(*P[self.p], *P[self.q], prm[0], prm[1])
         return x, y, 1.0
 
-    def velocity(self, m, prm):
-        V = m.V
-        V[self.point] = _image(*V[self.p], *V[self.q], prm[0], prm[1])
+    def bind(self, prm):
+        """The step's three phases for dimensions ``prm``: functions of a State."""
+        X, p, q, i, (lam, mu) = self.point, self.p, self.q, self.index, prm
+        img = _image
 
-    def acceleration(self, m, prm):
-        A = m.A
-        A[self.point] = _image(*A[self.p], *A[self.q], prm[0], prm[1])
+        def position(m):  # its condition is 1: nothing to intersect
+            P = m.P
+            (px, py), (qx, qy) = P[p], P[q]
+            P[X] = img(px, py, qx, qy, lam, mu)
+            m.cond[i] = 1.0
+
+        def velocity(m):
+            V = m.V
+            (px, py), (qx, qy) = V[p], V[q]
+            V[X] = img(px, py, qx, qy, lam, mu)
+
+        def acceleration(m):
+            A = m.A
+            (px, py), (qx, qy) = A[p], A[q]
+            A[X] = img(px, py, qx, qy, lam, mu)
+
+        return position, velocity, acceleration
 
     def position_words(self, L, which, angle_deg):
         return f"{self.point}: {self.how or 'on ' + self.link}"

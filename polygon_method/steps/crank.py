@@ -73,21 +73,32 @@ class Crank(Step):
         r = prm[0]
         return ox + r * ctx.cos(ctx.theta), oy + r * ctx.sin(ctx.theta), 1.0
 
-    def velocity(self, m, prm):
-        P, V, O, T = m.P, m.V, self.pivot, self.tip
-        (ox, oy), (tx, ty), (vox, voy) = P[O], P[T], V[O]
-        omega = m.ctx.omega
-        vx, vy = velocity(tx - ox, ty - oy, omega)
-        m.W[self.link] = omega
-        V[T] = (vox + vx, voy + vy)
+    def bind(self, prm):
+        """The step's three phases for dimensions ``prm``: functions of a State."""
+        O, T, link, i, r = self.pivot, self.tip, self.link, self.index, prm[0]
 
-    def acceleration(self, m, prm):
-        P, A, O, T = m.P, m.A, self.pivot, self.tip
-        (ox, oy), (tx, ty), (aox, aoy) = P[O], P[T], A[O]
-        ctx = m.ctx
-        ax, ay = acceleration(tx - ox, ty - oy, ctx.omega, ctx.alpha)
-        m.Al[self.link] = ctx.alpha
-        A[T] = (aox + ax, aoy + ay)
+        def position(m):  # its condition is 1: nothing to intersect
+            ctx = m.ctx
+            ox, oy = m.P[O]
+            m.P[T] = (ox + r * ctx.cos(ctx.theta), oy + r * ctx.sin(ctx.theta))
+            m.cond[i] = 1.0
+
+        def velocity_(m):
+            P = m.P
+            (ox, oy), (tx, ty), (vox, voy) = P[O], P[T], m.V[O]
+            omega = m.ctx.omega
+            vx, vy = velocity(tx - ox, ty - oy, omega)
+            m.W[link] = omega
+            m.V[T] = (vox + vx, voy + vy)
+
+        def acceleration_(m):
+            P, ctx = m.P, m.ctx
+            (ox, oy), (tx, ty), (aox, aoy) = P[O], P[T], m.A[O]
+            ax, ay = acceleration(tx - ox, ty - oy, ctx.omega, ctx.alpha)
+            m.Al[link] = ctx.alpha
+            m.A[T] = (aox + ax, aoy + ay)
+
+        return position, velocity_, acceleration_
 
     # ----- words
     def orient(self):

@@ -23,7 +23,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..errors import AssemblyError, SingularStepError
+from ..errors import TOL, AssemblyError, SingularStepError
 from ..numbers import in_units
 from ..scene import split_name
 from .base import (Construction, DirectionLine, Step, Vector, absolute, centripetal,
@@ -42,11 +42,14 @@ def place(bx, by, dx, dy, l1, l2, sigma, ctx=None, step=None):
     e2 = ex * ex + ey * ey
     e = e2 ** 0.5
     q = (l1 + l2 + e) * (l1 + l2 - e) * (e + l1 - l2) * (e - l1 + l2)
-    if ctx is None:
-        h = max(q, 0.0) ** 0.5 / (2 * e)
+    if ctx is None or not ctx.array:
+        if step is not None:
+            if e == 0:
+                raise step.coincident()
+            if q < -TOL.closure * (l1 * l2) ** 2:
+                raise AssemblyError(step.why(e), step=step.label)
+        h = (q ** 0.5 if q > 0 else 0.0) / (2 * e)
     else:
-        if not ctx.array and e == 0:
-            raise step.coincident()
         e = ctx.safe(e, step)
         h = ctx.root(q, (l1 * l2) ** 2, step, lambda: step.why(e)) / (2 * e)
     along = (l1 * l1 - l2 * l2 + e2) / (2 * e)
@@ -137,28 +140,42 @@ class Dyad(Step):
         s = self.sigma if sigma is None else sigma
         return place(bx, by, dx, dy, prm[0], prm[1], s, ctx, self)
 
-    def _r(self, P):
-        (x, y), (bx, by), (dx, dy) = P[self.point], P[self.b], P[self.d]
-        return x - bx, y - by, x - dx, y - dy
+    def bind(self, prm):
+        """The step's three phases for dimensions ``prm``: functions of a State."""
+        X, B, D, j1, j2, i = self.point, self.b, self.d, self.link1, self.link2, self.index
+        l1, l2, sigma, step = prm[0], prm[1], self.sigma, self
 
-    def velocity(self, m, prm):
-        r1x, r1y, r2x, r2y = self._r(m.P)
-        V = m.V
-        d = m.ctx.safe(r1x * r2y - r1y * r2x, self)
-        w1, w2, vx, vy = velocity(r1x, r1y, r2x, r2y, *V[self.b], *V[self.d], d)
-        m.W[self.link1] = w1
-        m.W[self.link2] = w2
-        V[self.point] = (vx, vy)
+        def position(m):
+            (bx, by), (dx, dy) = m.P[B], m.P[D]
+            x, y, c = place(bx, by, dx, dy, l1, l2, sigma, m.ctx, step)
+            m.P[X] = (x, y)
+            m.cond[i] = c
 
-    def acceleration(self, m, prm):
-        r1x, r1y, r2x, r2y = self._r(m.P)
-        A, W = m.A, m.W
-        d = m.ctx.safe(r1x * r2y - r1y * r2x, self)
-        al1, al2, ax, ay = acceleration(r1x, r1y, r2x, r2y, W[self.link1], W[self.link2],
-                                        *A[self.b], *A[self.d], d)
-        m.Al[self.link1] = al1
-        m.Al[self.link2] = al2
-        A[self.point] = (ax, ay)
+        def velocity_(m):
+            P, V = m.P, m.V
+            (x, y), (bx, by), (dx, dy) = P[X], P[B], P[D]
+            r1x, r1y, r2x, r2y = x - bx, y - by, x - dx, y - dy
+            d = r1x * r2y - r1y * r2x
+            if m.array:
+                d = m.ctx.safe(d, step)
+            w1, w2, vx, vy = velocity(r1x, r1y, r2x, r2y, *V[B], *V[D], d)
+            m.W[j1] = w1
+            m.W[j2] = w2
+            V[X] = (vx, vy)
+
+        def acceleration_(m):
+            P, A, W = m.P, m.A, m.W
+            (x, y), (bx, by), (dx, dy) = P[X], P[B], P[D]
+            r1x, r1y, r2x, r2y = x - bx, y - by, x - dx, y - dy
+            d = r1x * r2y - r1y * r2x
+            if m.array:
+                d = m.ctx.safe(d, step)
+            al1, al2, ax, ay = acceleration(r1x, r1y, r2x, r2y, W[j1], W[j2], *A[B], *A[D], d)
+            m.Al[j1] = al1
+            m.Al[j2] = al2
+            A[X] = (ax, ay)
+
+        return position, velocity_, acceleration_
 
     # ----- failures and words
     def coincident(self):

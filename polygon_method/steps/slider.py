@@ -187,44 +187,71 @@ class SliderDyad(Step):
         _, _, ux, uy = self.line(P)
         return (ux, uy)  # along the guide's direction
 
-    def velocity(self, m, prm):
-        P, V, X, B = m.P, m.V, self.point, self.b
-        (x, y), (bx, by) = P[X], P[B]
-        _, _, ux, uy = self.line(P, prm)
-        rx, ry = x - bx, y - by
-        vbx, vby = V[B]
-        if self.path is None:
-            g1x, g1y = P[self.g1]
-            cx, cy = guide_point(g1x, g1y, x, y, m.W[self.guide], *V[self.g1])
-            wx, wy = cx - vbx, cy - vby
-        else:
-            wx, wy = -vbx, -vby
-        d = m.ctx.safe(rx * ux + ry * uy, self)
-        w, vs, vx, vy = velocity(rx, ry, ux, uy, wx, wy, vbx, vby, d)
-        m.W[self.link] = w
-        m.S[X] = [vs, None, 0.0, 0.0]
-        V[X] = (vx, vy)
+    def bind(self, prm):
+        """The step's three phases for dimensions ``prm``: functions of a State."""
+        X, B, link, i, sigma, step = self.point, self.b, self.link, self.index, self.sigma, self
+        ell = prm[0]
+        fixed = self.path is not None
+        G1, G2, guide = self.g1, self.g2, self.guide
+        if fixed:
+            qx, qy, fux, fuy = prm[1], prm[2], prm[3], prm[4]
 
-    def acceleration(self, m, prm):
-        P, A, X, B = m.P, m.A, self.point, self.b
-        (x, y), (bx, by) = P[X], P[B]
-        _, _, ux, uy = self.line(P, prm)
-        rx, ry = x - bx, y - by
-        s = m.S[X]
-        if self.path is None:
-            wg = m.W[self.guide]
-            g1x, g1y = P[self.g1]
-            cx, cy = coriolis(wg, s[0], ux, uy)
-            tx, ty = guide_point_acceleration(g1x, g1y, x, y, wg, m.Al[self.guide],
-                                              *A[self.g1])
-            tx, ty = tx + cx, ty + cy
-        else:
-            cx = cy = tx = ty = 0.0
-        d = m.ctx.safe(rx * ux + ry * uy, self)
-        al, a_s, ax, ay = acceleration(rx, ry, ux, uy, tx, ty, m.W[self.link], *A[B], d)
-        m.Al[self.link] = al
-        s[1], s[2], s[3] = a_s, cx, cy
-        A[X] = (ax, ay)
+        def line(P):
+            if fixed:
+                return qx, qy, fux, fuy
+            (gx, gy), (hx, hy) = P[G1], P[G2]
+            ux, uy = hx - gx, hy - gy
+            n = (ux * ux + uy * uy) ** 0.5
+            return gx, gy, ux / n, uy / n
+
+        def position(m):
+            P = m.P
+            gx, gy, ux, uy = line(P)
+            x, y, c = place(*P[B], gx, gy, ux, uy, ell, sigma, m.ctx, step)
+            P[X] = (x, y)
+            m.cond[i] = c
+
+        def velocity_(m):
+            P, V = m.P, m.V
+            (x, y), (bx, by) = P[X], P[B]
+            gx, gy, ux, uy = line(P)
+            rx, ry = x - bx, y - by
+            vbx, vby = V[B]
+            if fixed:
+                wx, wy = -vbx, -vby
+            else:
+                cx, cy = guide_point(gx, gy, x, y, m.W[guide], *V[G1])
+                wx, wy = cx - vbx, cy - vby
+            d = rx * ux + ry * uy
+            if m.array:
+                d = m.ctx.safe(d, step)
+            w, vs, vx, vy = velocity(rx, ry, ux, uy, wx, wy, vbx, vby, d)
+            m.W[link] = w
+            m.S[X] = [vs, None, 0.0, 0.0]
+            V[X] = (vx, vy)
+
+        def acceleration_(m):
+            P, A = m.P, m.A
+            (x, y), (bx, by) = P[X], P[B]
+            gx, gy, ux, uy = line(P)
+            rx, ry = x - bx, y - by
+            s = m.S[X]
+            if fixed:
+                cx = cy = tx = ty = 0.0
+            else:
+                wg = m.W[guide]
+                cx, cy = coriolis(wg, s[0], ux, uy)
+                tx, ty = guide_point_acceleration(gx, gy, x, y, wg, m.Al[guide], *A[G1])
+                tx, ty = tx + cx, ty + cy
+            d = rx * ux + ry * uy
+            if m.array:
+                d = m.ctx.safe(d, step)
+            al, a_s, ax, ay = acceleration(rx, ry, ux, uy, tx, ty, m.W[link], *A[B], d)
+            m.Al[link] = al
+            s[1], s[2], s[3] = a_s, cx, cy
+            A[X] = (ax, ay)
+
+        return position, velocity_, acceleration_
 
     # ----- failures and words
     def why(self, dist):

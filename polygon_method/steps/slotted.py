@@ -133,39 +133,56 @@ class SlottedLink(Step):
     def default_hint(self, P):
         return "block side"
 
-    def _frame(self, P, L):
-        (f1x, f1y), (f2x, f2y) = P[self.first], P[self.second]
-        (ax, ay), (kx, ky) = P[self.point], P[self.known]
-        return (f2x - f1x) / L, (f2y - f1y) / L, ax - kx, ay - ky
+    def bind(self, prm):
+        """The step's three phases for dimensions ``prm``: functions of a State."""
+        Ab, K, N, F1, F2, guide = self.point, self.known, self.new, self.first, self.second, \
+            self.guide
+        i, sigma, step, L = self.index, self.sigma, self, prm[0]
 
-    def velocity(self, m, prm):
-        P, V, A_, K, N = m.P, m.V, self.point, self.known, self.new
-        ux, uy, dx, dy = self._frame(P, prm[0])
-        d = m.ctx.safe(-(dx * ux + dy * uy), self)
-        (vax, vay), (vkx, vky) = V[A_], V[K]
-        w, vs = velocity(dx, dy, ux, uy, vax - vkx, vay - vky, d)
-        m.W[self.guide] = w
-        m.S[A_] = [vs, None, 0.0, 0.0]
-        (nx, ny), (kx, ky) = P[N], P[K]
-        V[N] = (vkx - w * (ny - ky), vky + w * (nx - kx))
+        def frame(P):
+            (f1x, f1y), (f2x, f2y) = P[F1], P[F2]
+            (ax, ay), (kx, ky) = P[Ab], P[K]
+            return (f2x - f1x) / L, (f2y - f1y) / L, ax - kx, ay - ky
 
-    def acceleration(self, m, prm):
-        P, A, A_, K, N = m.P, m.A, self.point, self.known, self.new
-        ux, uy, dx, dy = self._frame(P, prm[0])
-        d = m.ctx.safe(-(dx * ux + dy * uy), self)
-        w = m.W[self.guide]
-        s = m.S[A_]
-        cx, cy = coriolis(w, s[0], ux, uy)
-        k = w * w
-        (aax, aay), (akx, aky) = A[A_], A[K]
-        ex = aax - akx + k * dx - cx
-        ey = aay - aky + k * dy - cy
-        al, a_s = acceleration(dx, dy, ux, uy, ex, ey, d)
-        m.Al[self.guide] = al
-        s[1], s[2], s[3] = a_s, cx, cy
-        (nx, ny), (kx, ky) = P[N], P[K]
-        px, py = nx - kx, ny - ky
-        A[N] = (akx - k * px - al * py, aky - k * py + al * px)
+        def position(m):
+            P = m.P
+            x, y, c = place(*P[K], *P[Ab], L, sigma, m.ctx, step)
+            P[N] = (x, y)
+            m.cond[i] = c
+
+        def velocity_(m):
+            P, V = m.P, m.V
+            ux, uy, dx, dy = frame(P)
+            d = -(dx * ux + dy * uy)
+            if m.array:
+                d = m.ctx.safe(d, step)
+            (vax, vay), (vkx, vky) = V[Ab], V[K]
+            w, vs = velocity(dx, dy, ux, uy, vax - vkx, vay - vky, d)
+            m.W[guide] = w
+            m.S[Ab] = [vs, None, 0.0, 0.0]
+            (nx, ny), (kx, ky) = P[N], P[K]
+            V[N] = (vkx - w * (ny - ky), vky + w * (nx - kx))
+
+        def acceleration_(m):
+            P, A = m.P, m.A
+            ux, uy, dx, dy = frame(P)
+            d = -(dx * ux + dy * uy)
+            if m.array:
+                d = m.ctx.safe(d, step)
+            w = m.W[guide]
+            s = m.S[Ab]
+            cx, cy = coriolis(w, s[0], ux, uy)
+            k = w * w
+            (aax, aay), (akx, aky) = A[Ab], A[K]
+            al, a_s = acceleration(dx, dy, ux, uy, aax - akx + k * dx - cx,
+                                   aay - aky + k * dy - cy, d)
+            m.Al[guide] = al
+            s[1], s[2], s[3] = a_s, cx, cy
+            (nx, ny), (kx, ky) = P[N], P[K]
+            px, py = nx - kx, ny - ky
+            A[N] = (akx - k * px - al * py, aky - k * py + al * px)
+
+        return position, velocity_, acceleration_
 
     # ----- failures and words
     def at_pivot(self):
