@@ -60,6 +60,7 @@ class Bodies:
     def __init__(self, scene: Scene):
         self.scene = scene
         self._frames = {}
+        self._links = {lk.key: lk for lk in scene.links}
         self._carried = {}
         for cp in scene.points:
             self._carried.setdefault(cp.link, []).append(cp)
@@ -67,7 +68,7 @@ class Bodies:
     def frame(self, key) -> dict:
         b = self._frames.get(key)
         if b is None:
-            lk = self.scene.link(key)
+            lk = self._links.get(key) or self.scene.link(key)
             b = {lk.p: (0.0, 0.0), lk.q: (lk.length, 0.0)}
             for cp in self._carried.get(lk.key, ()):
                 b[cp.name] = (cp.lam * lk.length, cp.mu * lk.length)
@@ -237,15 +238,11 @@ _KEEP = 256
 
 
 def _content(scene: Scene):
-    def frozen(v):
-        if isinstance(v, dict):
-            return tuple((k, frozen(x)) for k, x in v.items())
-        if isinstance(v, (list, tuple)):
-            return tuple(frozen(x) for x in v)
-        return v
-
-    return (scene.units, frozen(scene.ground), scene.links, scene.points, scene.sliders,
-            frozen(scene.assembly), scene.input, scene.pins, scene.file)
+    """What a plan depends on, hashable (TypeError if a value is not)."""
+    key = (scene.units, tuple(scene.ground.items()), scene.links, scene.points, scene.sliders,
+           tuple(scene.assembly.items()), scene.input, scene.pins, scene.file)
+    hash(key)
+    return key
 
 
 def compile_plan(scene: Scene) -> Plan:
@@ -269,7 +266,7 @@ def compile_plan(scene: Scene) -> Plan:
         except PolygonMethodError as exc:  # name the scene file in the one-line message
             raise exc.located(scene.file)
         if key is not None:
-            if len(_BY_CONTENT) >= _KEEP:
+            while _BY_CONTENT and len(_BY_CONTENT) >= _KEEP:
                 _BY_CONTENT.pop(next(iter(_BY_CONTENT)))
             _BY_CONTENT[key] = plan
     try:
@@ -312,6 +309,7 @@ class _Compiler:
 
     def __init__(self, scene: Scene):
         self.scene = scene
+        self.names = scene.point_names
         self.unit = scene.length_unit
         self.uname = scene.units
         self.ctx = Context(scene.input.angle, scene.input.omega, scene.input.alpha)
@@ -387,8 +385,8 @@ class _Compiler:
         inp = sc.input
         crank = sc.link(inp.crank)
         self.add(Crank(0, crank.key, inp.pivot, inp.tip, crank.length))
-        order = {p: i for i, p in enumerate(sc.point_names)}
-        names = list(order)
+        names = self.names
+        order = {p: i for i, p in enumerate(names)}
         heap = list(range(len(names)))  # sorted: a heap
         while True:
             found = None
@@ -450,7 +448,7 @@ class _Compiler:
                                   f"(default; set [assembly] {name} to choose)")
         else:
             sigma = self.pick(name, hint, plus, minus, step)
-        return replace(step, sigma=sigma)
+        return step if sigma == step.sigma else replace(step, sigma=sigma)
 
     def pick(self, name, hint, plus, minus, step, default=False):
         sep = math.dist(plus, minus)
@@ -492,7 +490,7 @@ class _Compiler:
     # ----- what is left over
     def finish(self):
         sc = self.scene
-        missing = [p for p in sc.point_names if p not in self.P]
+        missing = [p for p in self.names if p not in self.P]
         extra_links = [lk.key for lk in sc.links if lk.key not in self.used_links]
         extra_sliders = [s.point for s in sc.sliders if s.point not in self.used_sliders]
         if not missing and not extra_links and not extra_sliders:
