@@ -35,7 +35,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .errors import TOL, SingularStepError
-from .plan import Carried, Crank, Dyad, SliderDyad, SlottedLink, compile_plan
+from .derived import transmission_angle
+from .plan import compile_plan
 from .scene import FixedPath, Scene
 from .solution import solve
 from .sweeps import TWO_PI, Sweeper, _degrees_fn, _merge, _run, _valid
@@ -175,14 +176,14 @@ class SliderCrank:
 
 
 def _core_steps(plan):
-    return [s for s in plan.steps if not isinstance(s, Carried)]
+    return [s for s in plan.steps if s.kind != "carried"]
 
 
 def four_bar_of(scene: Scene):
     """The four-bar of the plan (crank + one dyad closing on a ground pivot), or None."""
     plan = compile_plan(scene)
     core = _core_steps(plan)
-    if len(core) != 2 or not isinstance(core[0], Crank) or not isinstance(core[1], Dyad):
+    if [s.kind for s in core] != ["crank", "dyad"]:
         return None
     cr, dy = core
     ends = {dy.b: (dy.link1, dy.l1), dy.d: (dy.link2, dy.l2)}
@@ -202,7 +203,7 @@ def slider_crank_of(scene: Scene):
     """The slider crank of the plan (crank + rod + slider on a fixed path), or None."""
     plan = compile_plan(scene)
     core = _core_steps(plan)
-    if len(core) != 2 or not isinstance(core[0], Crank) or not isinstance(core[1], SliderDyad):
+    if [s.kind for s in core] != ["crank", "slider"]:
         return None
     cr, sd = core
     if sd.path is None or sd.b != cr.tip:
@@ -217,7 +218,7 @@ def slider_crank_of(scene: Scene):
 def _slotted_of(scene: Scene):
     plan = compile_plan(scene)
     core = _core_steps(plan)
-    if len(core) < 2 or not isinstance(core[0], Crank) or not isinstance(core[1], SlottedLink):
+    if [s.kind for s in core[:2]] != ["crank", "slotted"]:
         return None
     cr, sl = core[0], core[1]
     if sl.point != cr.tip or sl.known not in scene.ground:
@@ -257,15 +258,15 @@ class _Output:
 def _output_of(scene, plan):
     out = None
     for st in plan.steps:
-        if isinstance(st, Dyad):
+        if st.kind == "dyad":
             for g, link in ((st.d, st.link2), (st.b, st.link1)):
                 if g in scene.ground:
                     out = _Output("rocker", link, f"output link {link}", g, st.point)
                     break
-        elif isinstance(st, SliderDyad) and st.path is not None:
+        elif st.kind == "slider" and st.path is not None:
             out = _Output("slider", st.point, f"slider {st.point}", point=st.point,
                           path=st.path)
-        elif isinstance(st, SlottedLink) and st.known in scene.ground:
+        elif st.kind == "slotted" and st.known in scene.ground:
             out = _Output("lever", st.guide, f"lever {st.guide}", st.known, st.new)
     return out
 
@@ -577,7 +578,7 @@ def analyse(scene: Scene) -> Linkage:
                          "linkage), so no single toggle positions are listed")
             stationary, ratio, tlines = (), None, ()
     trans = tuple(_transmission(cyc, st, scene) for st in plan.steps
-                  if isinstance(st, (Dyad, SliderDyad)))
+                  if st.transmission() is not None)
     formulas = ()
     if sk is not None and sk.inline:
         try:
@@ -742,13 +743,9 @@ def _what_stationary(fr, out, scene, fb, sk, slot, v) -> str:
 
 def _transmission(cyc: _Cycle, st, scene) -> Transmission:
     def mu(fr):
-        return np.degrees(np.arcsin(np.minimum(fr.cond[st.index], 1.0)))
+        return transmission_angle(fr.cond[st.index])
 
-    if isinstance(st, Dyad):
-        between = f"between {st.side(1) if hasattr(st, 'side') else st.link1} and " \
-                  f"{st.side(2) if hasattr(st, 'side') else st.link2}"
-    else:
-        between = f"between {st.link} and the normal to the path of {st.point}"
+    between = st.transmission()
     now = None
     t0 = scene.input.angle
     fr0 = cyc.at(cyc.dom.map(np.array([t0]))[0][0], vel=False)

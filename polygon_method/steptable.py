@@ -36,6 +36,7 @@ import math
 import re
 import textwrap
 
+from .derived import transmission_angle
 from .numbers import fixed as _fixed, fmt, sense_word
 from .constructions import acceleration_constructions, velocity_constructions
 from .scales import DRAWING_PRECISION_CM, diagram_scales, extent
@@ -300,7 +301,7 @@ def _velocity(doc, sol, vscale):
                 t += f" (condition {fmt(c.condition, 3)})"
             else:
                 t += (f" (the lines cross at "
-                      f"{fmt(math.degrees(math.asin(min(c.condition, 1))), 3)} deg, condition "
+                      f"{fmt(transmission_angle(float(c.condition)), 3)} deg, condition "
                       f"{fmt(c.condition, 3)}" + ("; read carefully" if c.condition < 0.5
                                                   else "") + ")")
         items.append(t)
