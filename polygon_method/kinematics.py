@@ -30,6 +30,7 @@ angle) is computed from it (:mod:`polygon_method.derived`).
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 from .plan import Context, Dims, Plan
 
@@ -112,11 +113,18 @@ class Motion:
 
 
 def evaluate(plan: Plan, theta=None, omega=None, alpha=None, *, dims: Dims | None = None,
-             upto: int = 2, array: bool = False) -> Motion:
+             upto: int = 2, array: bool = False, points=None, links=None) -> Motion:
     """Evaluate ``plan`` (at its own scene's dimensions, or at ``dims``) and return the
     :class:`Motion`. ``upto``: 0 positions only, 1 with velocities, 2 with accelerations.
     ``theta``/``omega``/``alpha`` default to the dimensions' own; with ``array=True`` they
-    (and any dimension) may be numpy arrays."""
+    (and any dimension) may be numpy arrays. ``points``/``links``: evaluate only the steps
+    these depend on (the motion then holds those and what they need)."""
+    if points is not None or links is not None:
+        if dims is not None:
+            keep = {st.index for st in plan.restricted(points or (), links or ()).steps}
+            dims = replace(dims, steps=tuple(p for st, p in zip(plan.steps, dims.steps)
+                                             if st.index in keep))
+        plan = plan.restricted(points or (), links or ())
     d = plan.dims if dims is None else dims
     ctx = Context(d.theta if theta is None else theta, d.omega if omega is None else omega,
                   d.alpha if alpha is None else alpha, array=array)

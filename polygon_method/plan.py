@@ -143,6 +143,56 @@ class Plan:
             lines.append(f"  {st.index + 1}. {st.title}: finds {', '.join(st.finds)}")
         return "\n".join(lines)
 
+    # ----- only what is asked
+    def restricted(self, points=(), links=()) -> "Plan":
+        """The plan cut down to the steps that the given points (position, velocity,
+        acceleration) and links (omega, alpha) depend on, in the same order. A slider on a
+        moving link needs the step that turns that link; a carried point, the two points it
+        is carried by. The steps keep their indices.
+
+        >>> from polygon_method.scene import parse_scene
+        >>> sc = parse_scene('''
+        ... [ground]
+        ... O = [0, 0]
+        ... [links]
+        ... OA = 150
+        ... AB = 600
+        ... [points]
+        ... M = { on = "AB", along = 300 }
+        ... [sliders]
+        ... B = { path = "horizontal" }
+        ... [input]
+        ... crank = "OA"
+        ... angle = 90
+        ... speed = "10 rad/s ccw"
+        ... ''')
+        >>> plan = compile_plan(sc)
+        >>> [st.title for st in plan.restricted(points=["A"]).steps]
+        ['crank OA']
+        >>> [st.title for st in plan.restricted(points=["M"]).steps]
+        ['crank OA', 'link AB, slider B on the horizontal path', 'point M on AB']
+        """
+        finder = {}
+        for st in self.steps:
+            for p in st.finds:
+                finder[p] = st
+            for lk in st.links:
+                finder[("link", lk)] = st
+        want = [finder[p] for p in points if p in finder]
+        want += [finder[("link", lk)] for lk in links if ("link", lk) in finder]
+        keep = set()
+        while want:
+            st = want.pop()
+            if st.index in keep:
+                continue
+            keep.add(st.index)
+            want += [finder[p] for p in st.needs if p in finder]
+            want += [finder[("link", lk)] for lk in st.needs_links if ("link", lk) in finder]
+        pos = [i for i, st in enumerate(self.steps) if st.index in keep]
+        steps = tuple(self.steps[i] for i in pos)
+        dims = replace(self.dims, steps=tuple(self.dims.steps[i] for i in pos))
+        return replace(self, steps=steps, dims=dims)
+
     # ----- inputs
     def dimensions(self, scene: Scene) -> Dims:
         """The dimensions of ``scene``, a mechanism of this plan's shape."""

@@ -127,6 +127,11 @@ class Step:
         (x1, y1, _), (x2, y2, _) = self.place(P, prm, ctx, 1.0), self.place(P, prm, ctx, -1.0)
         return ((x1 + x2) / 2, (y1 + y2) / 2), ((x1 - x2) / 2, (y1 - y2) / 2)
 
+    @property
+    def needs_links(self) -> tuple:
+        """Links (other than its own) whose omega and alpha the step reads."""
+        return ()
+
     def reach(self) -> float:
         """The largest length of the step (a scale for its tolerances)."""
         return 1e-9

@@ -104,7 +104,8 @@ class Carried(Step):
     def bind(self, prm):
         """The step's three phases for dimensions ``prm``: functions of a State."""
         X, p, q, i, (lam, mu) = self.point, self.p, self.q, self.index, prm
-        img = _image
+        scalar = isinstance(lam, (int, float)) and isinstance(mu, (int, float))
+        img = _image if scalar else image  # arrays of dimensions: every term
 
         def position(m):  # its condition is 1: nothing to intersect
             P = m.P

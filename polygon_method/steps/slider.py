@@ -140,6 +140,10 @@ class SliderDyad(Step):
         return (self.b,) if self.path is not None else (self.b, self.g1, self.g2)
 
     @property
+    def needs_links(self):
+        return () if self.path is not None else (self.guide,)
+
+    @property
     def title(self):
         if self.path is None:
             where = f"link {self.guide}"
