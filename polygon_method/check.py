@@ -47,7 +47,7 @@ import textwrap
 from dataclasses import dataclass, replace
 
 from .errors import PolygonMethodError, SceneError
-from .plan import Context, Dyad, SliderDyad
+from .plan import Context
 from .scales import DRAWING_PRECISION_CM, diagram_scales
 from .scene import GuideSlider, Scene
 from .solution import Solution, solve
@@ -291,7 +291,7 @@ class _Alternatives:
         out = []
         ctx = Context(sc.input.angle, sc.input.omega, sc.input.alpha)
         for st in sol.plan.steps:
-            if not isinstance(st, (Dyad, SliderDyad)):
+            if st.kind not in ("dyad", "slider"):
                 continue
             try:
                 base, off, *_ = st.candidates(dict(sol.P), ctx)
