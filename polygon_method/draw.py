@@ -735,12 +735,11 @@ def drawn_vectors(sol, phase: str) -> tuple:
     before a component, a component before a relative vector). The n-th is drawn with
     gid ``{phase}-vector-{n}-shaft`` / ``-head``. A carried point's relative vector is
     left out: its image triangle (or the line it lies on) shows it."""
-    from .plan import Carried
     cons = velocity_constructions(sol) if phase == "velocity" else \
         acceleration_constructions(sol)
     steps = sol.plan.steps
     vecs = [v for c in cons for v in c.given + c.found
-            if not (v.kind == "relative" and isinstance(steps[c.step], Carried))]
+            if not (v.kind == "relative" and steps[c.step].kind == "carried")]
     ref = max((v.magnitude for v in vecs), default=0.0)
     tol = 1e-9 * ref
     keep = {}
@@ -776,7 +775,6 @@ _POINT_LABEL = re.compile(r"^[a-z][0-9]*'?$")
 
 
 def _polygon(sol, scale: Scale, phase: str) -> _Sketch:
-    from .plan import Carried
     s = scale.per_cm
     D = sol.V if phase == "velocity" else sol.A
     prime = "" if phase == "velocity" else "'"
@@ -791,7 +789,7 @@ def _polygon(sol, scale: Scale, phase: str) -> _Sketch:
     steps = sol.plan.steps
     for c in cons:
         st = steps[c.step]
-        if isinstance(st, Carried) and st.mu != 0:
+        if st.image_by_similar_triangle:
             tri = [cm(D[st.p]), cm(D[st.q]), cm(D[st.point])]
             sk.polygon(tri, gid=f"{phase}-image-{st.point}", face=IMAGE_FACE, edge="#b08d00",
                        lw=0.5, alpha=0.45, z=1, obstacle="edge")
@@ -857,7 +855,7 @@ def _polygon(sol, scale: Scale, phase: str) -> _Sketch:
     sk.place_labels()
     if phase == "velocity":
         legend = [("line", "construction line (\u22a5 / \u2225 to a link)")]
-        if any(isinstance(steps[c.step], Carried) and steps[c.step].mu != 0 for c in cons):
+        if any(steps[c.step].image_by_similar_triangle for c in cons):
             legend.append(("image", "image of a link triangle"))
         _header(sk, phase, "Velocity polygon", scale, legend=legend)
     else:
