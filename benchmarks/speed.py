@@ -1,20 +1,25 @@
-"""Speed of polygon-method against the issue's targets, and against PyPI peers if installed.
+"""Speed of polygon-method, side by side with PyPI peers measured in the same run.
 
-    python benchmarks/speed.py            # everything (about a minute)
+    python benchmarks/speed.py            # everything (a few minutes)
     python benchmarks/speed.py --quick    # fewer repeats
 
-Measures (medians of repeated runs; the machine's other load shows in the spread):
+Each figure is the median of repeated runs (the machine's other load shows in the spread),
+beside the peer it is compared with and the ratio the architecture issue asks for:
 
-* one configuration, full analysis of ``worked_problems/fourbar_image_points.toml`` after
-  loading (plan cached on the scene): ``solve(scene)`` plus rubbing and input torque;
-* a full cycle of 3600 crank angles, every quantity (``sweep``), for a Grashof four-bar and
-  for the image-points four-bar (non-Grashof: 3600 angles across its reachable range);
-* 1,000,000 crank angles: ``sweep`` (all arrays kept) and ``summarize`` (reduced chunk by
-  chunk), each in a fresh process for its peak memory;
-* the command line end to end: ``sweep --steps 1000000 --summary`` and ``solve --json``
-  (cold start; also checks that ``solve`` imports neither matplotlib nor shapely);
-* the peers ``pylinkage`` and ``mechanism`` (``pip install polygon-method[peers]``) on the
-  same four-bar, when they can be imported; the ratios are printed.
+* a mechanism never seen before: from a loaded scene (its constraint graph) to one solved
+  position, plan caches cleared, against pylinkage building its ``Linkage`` and stepping
+  once (the same four-bar); from scene text as well (TOML parsing included);
+* a warm full solve of ``worked_problems/fourbar_image_points.toml`` (E, F, G, rubbing
+  at four pins and the input torque read) against one pylinkage ``step_with_derivatives``
+  position;
+* 3600 positions of a Grashof four-bar (``sweep``) against pylinkage's numba path
+  (``step_fast_with_kinematics``, prebuilt, JIT warm) where numba is installed;
+* 1,000,000 crank angles: ``sweep`` and ``summarize`` in a fresh process (time and peak
+  memory), and ``sweep --steps 1000000 --summary`` end to end;
+* planning time against the number of links: chains of dyads up to 10,001 links solved
+  from the command line;
+* a positions-only sweep against a full one;
+* ``solve --json`` from a cold start (and that it loads neither matplotlib nor shapely).
 
 A benchmark, not a test: nothing here fails on time.
 """
@@ -35,13 +40,6 @@ PROBLEMS = ROOT / "worked_problems"
 IMAGE_POINTS = PROBLEMS / "fourbar_image_points.toml"
 GRASHOF = PROBLEMS / "fourbar_crank_acceleration.toml"  # AB 40, BC 120, CD 80, AD 100
 
-TARGETS = {  # seconds
-    "single": 15e-6,
-    "cycle": 1.5e-3,
-    "million": 0.2,
-    "cli_million": 1.0,
-    "cli_solve": 0.25,
-}
 
 
 def timeit(fn, repeat, number=1):
@@ -63,10 +61,6 @@ def fmt(t):
     return f"{t:8.3f} s "
 
 
-def verdict(t, target):
-    return f"target {fmt(target).strip():>9}: {'met' if t <= target else 'MISSED'}"
-
-
 def run_child(code):
     """Run ``code`` in a fresh interpreter; it prints one JSON line, returned as a dict."""
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
@@ -74,23 +68,80 @@ def run_child(code):
     return json.loads(out.stdout.strip().splitlines()[-1])
 
 
+FOURBAR_TEXT = """
+[ground]
+A = [0, 0]
+D = [100, 0]
+[links]
+AB = 40
+BC = 120
+CD = 80
+[input]
+crank = "AB"
+angle = 120
+speed = "20 rad/s ccw"
+"""
+
+
 def bench_single(repeat):
-    from polygon_method import load_scene, solve
+    from polygon_method import load_scene, parse_scene, solve
+    from polygon_method import plan as plan_module
 
     scene = load_scene(IMAGE_POINTS)
     solve(scene)  # compiles and caches the plan
 
-    def full():  # and the rubbing table as objects, and the torque
+    def full():  # every quantity, rubbing at every pin read, the torque read
         sol = solve(scene)
-        sol.rubbing
+        for r in sol.rubbing.values():
+            r.rubbing_velocity
         sol.input_torque
         return sol
 
-    # solve() computes positions, velocities, accelerations, E, F, G and the rubbing
-    # velocity of every pair at every pin (in the compiled kernel)
-    solve_med, solve_min = timeit(lambda: solve(scene), repeat, 2000)
-    full_med, _ = timeit(full, repeat, 2000)
-    return {"single": solve_med, "single_min": solve_min, "single_tables": full_med}
+    out = {}
+    out["single"], out["single_min"] = timeit(lambda: solve(scene), repeat, 2000)
+    out["single_full"], _ = timeit(full, repeat, 2000)
+
+    fresh = parse_scene(FOURBAR_TEXT)
+
+    def never_seen():  # the plan caches emptied: compile and solve
+        plan_module._BY_ID.clear()
+        plan_module._BY_CONTENT.clear()
+        return solve(fresh)
+
+    def from_text():
+        plan_module._BY_ID.clear()
+        plan_module._BY_CONTENT.clear()
+        return solve(parse_scene(FOURBAR_TEXT))
+
+    out["fresh"], _ = timeit(never_seen, repeat, 300)
+    out["fresh_text"], _ = timeit(from_text, repeat, 100)
+    return out
+
+
+def bench_chain(repeat):
+    """Chains of dyads (crank G0-P0, then P(i) joined to P(i-1) and to ground G(i)),
+    solved from the command line: planning is linear in the number of links."""
+    import tempfile
+
+    out = {}
+    with tempfile.TemporaryDirectory() as d:
+        for n in (1250, 2500, 5000):
+            lines = ['title = "chain of dyads"', "[ground]"]
+            lines += [f"G{i} = [{100 * i}, 0]" for i in range(n + 1)]
+            lines += ["[links]", "G0P0 = 100"]
+            for i in range(1, n + 1):
+                lines += [f"P{i - 1}P{i} = 100", f"G{i}P{i} = 100"]
+            lines += ["[input]", 'crank = "G0P0"', "angle = 80", 'speed = "10 rad/s ccw"']
+            path = Path(d) / f"chain{n}.toml"
+            path.write_text("\n".join(lines) + "\n")
+            runs = []
+            for _ in range(max(1, repeat // 5)):
+                t = time.perf_counter()
+                subprocess.run([sys.executable, "-m", "polygon_method", "solve", str(path),
+                                "--json"], cwd=ROOT, check=True, capture_output=True)
+                runs.append(time.perf_counter() - t)
+            out[f"chain_{2 * n + 1}"] = statistics.median(runs)
+    return out
 
 
 def bench_cycle(repeat):
@@ -113,6 +164,10 @@ def bench_cycle(repeat):
     res = sweep(ip, th2)
     assert len(res) == 3600
     out["cycle_image_points"], _ = timeit(lambda: sweep(ip, th2), repeat, 20)
+    sw = Sweeper(g)
+    big = np.linspace(0.0, 2 * math.pi, 100_000, endpoint=False)
+    out["positions_only"], _ = timeit(lambda: sw.evaluate(big, vel=False, acc=False), repeat)
+    out["positions_full"], _ = timeit(lambda: sw.evaluate(big), repeat)
     return out
 
 
@@ -187,11 +242,31 @@ def bench_pylinkage(repeat):
         m.set_input_velocity(m._driver_links[0], 20.0, 150.0)
         return m
 
+    def build_and_step():  # the same four-bar, a Linkage built and stepped once
+        import warnings
+
+        from pylinkage.actuators import Crank
+        from pylinkage.components import Ground
+        from pylinkage.dyads import RRRDyad
+        from pylinkage.simulation import Linkage
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            g1, g2 = Ground(0.0, 0.0, name="A"), Ground(0.1, 0.0, name="D")
+            crank = Crank(anchor=g1, radius=0.04, angular_velocity=0.0,
+                          initial_angle=math.radians(120))
+            dyad = RRRDyad(anchor1=crank.output, anchor2=g2, distance1=0.12, distance2=0.08,
+                           x=0.05, y=0.08)
+            lk = Linkage([g1, g2, crank, dyad], name="four-bar")
+            lk.set_input_velocity(crank, omega=20.0, alpha=0.0)
+            return next(iter(lk.step_with_derivatives(iterations=1, dt=0)))
+
     m = make()
     list(m.step_with_derivatives(iterations=10))
+    build, _ = timeit(build_and_step, repeat, 100)
     per_cycle, _ = timeit(lambda: list(make().step_with_derivatives(iterations=3600)),
                           max(1, repeat // 3))
-    out = {"pylinkage_cycle": per_cycle, "pylinkage_step": per_cycle / 3600}
+    out = {"pylinkage_cycle": per_cycle, "pylinkage_step": per_cycle / 3600,
+           "pylinkage_build_step": build}
     try:  # the numba path, where numba is installed
         import numba  # noqa: F401
         m = make()
@@ -250,6 +325,7 @@ def main(argv=None):
     r.update(bench_cycle(repeat))
     r.update(bench_million(max(2, repeat // 5)))
     r.update(bench_cli(repeat))
+    r.update(bench_chain(repeat))
     peers = {}
     for fn in (bench_pylinkage, bench_mechanism):
         p = fn(repeat)
@@ -258,42 +334,51 @@ def main(argv=None):
     r.update(peers)
 
     print(f"polygon-method speed ({sys.platform}, Python {sys.version.split()[0]})")
-    print(f"one configuration, full analysis (solve: image points, rubbing): "
-          f"{fmt(r['single'])}  (min {fmt(r['single_min']).strip()}; with the rubbing "
-          f"table's objects and the torque {fmt(r['single_tables']).strip()})"
-          f"  {verdict(r['single'], TARGETS['single'])}")
-    print(f"full cycle, 3600 angles, every quantity (Grashof four-bar): {fmt(r['cycle'])}"
-          f"  (first call, finding the branch: {fmt(r['cycle_cold']).strip()})"
-          f"  {verdict(r['cycle'], TARGETS['cycle'])}")
-    print(f"  3600 angles over the image-points four-bar's reachable range: "
-          f"{fmt(r['cycle_image_points'])}")
-    print(f"1,000,000 angles, sweep (all arrays kept): {fmt(r['million_sweep'])}, peak "
-          f"{r['million_sweep_rss']:.0f} MB  {verdict(r['million_sweep'], TARGETS['million'])}")
-    print(f"1,000,000 angles, summarize (reduced per chunk): {fmt(r['million_summarize'])}, "
-          f"peak {r['million_summarize_rss']:.0f} MB  "
-          f"{verdict(r['million_summarize'], TARGETS['million'])}")
-    print(f"CLI sweep --steps 1000000 --summary, end to end: {fmt(r['cli_million'])}  "
-          f"{verdict(r['cli_million'], TARGETS['cli_million'])}")
-    print(f"CLI solve --json, cold start: {fmt(r['cli_solve'])}  "
-          f"{verdict(r['cli_solve'], TARGETS['cli_solve'])}; imports: "
-          + ", ".join(f"{k} {'YES' if v else 'no'}" for k, v in r["solve_imports"].items()))
-    if "pylinkage_step" in r:
-        print(f"pylinkage (step_with_derivatives): {fmt(r['pylinkage_step'])} per position, "
-              f"{fmt(r['pylinkage_cycle'])} per 3600-angle cycle: "
-              f"{r['pylinkage_step'] / r['single']:.1f}x our single position, "
-              f"{r['pylinkage_cycle'] / r['cycle']:.0f}x our cycle")
-        if "pylinkage_numba_cycle" in r:
-            print(f"pylinkage (numba): {fmt(r['pylinkage_numba_cycle'])} per cycle: "
-                  f"{r['pylinkage_numba_cycle'] / r['cycle']:.1f}x ours")
-    else:
-        print("pylinkage: not installed (pip install polygon-method[peers])")
+    row = "{:<58} {:>12} {:>12} {:>7}  {}"
+    print(row.format("", "ours", "peer", "ratio", "target"))
+
+    def vs(name, ours, peer_key, target_ratio, words):
+        peer = r.get(peer_key)
+        if peer is None:
+            print(row.format(name, fmt(ours).strip(), "-", "-", words + " (peer not installed)"))
+            return
+        ratio = ours / peer
+        print(row.format(name, fmt(ours).strip(), fmt(peer).strip(), f"{ratio:.2f}",
+                         f"{words}: {'met' if ratio <= target_ratio else 'MISSED'}"))
+
+    vs("new mechanism, loaded scene -> one solved position", r["fresh"],
+       "pylinkage_build_step", 1.0, "faster than pylinkage build + step")
+    vs("  the same from scene text (TOML parsed)", r["fresh_text"], "pylinkage_build_step",
+       1.0, "faster than pylinkage build + step")
+    vs("warm full solve: E, F, G, rubbing at 4 pins, torque", r["single_full"],
+       "pylinkage_step", 1 / 3, "<= 1/3 of a pylinkage step")
+    print(row.format("  solve() alone", fmt(r["single"]).strip(), "", "", ""))
+    vs("3600 positions, Grashof four-bar", r["cycle"], "pylinkage_numba_cycle", 0.25,
+       "<= 1/4 of pylinkage's numba path")
+    vs("  against pylinkage's pure-Python path", r["cycle"], "pylinkage_cycle", 1.0, "faster")
+    print(row.format("sweep --steps 1000000 --summary (fresh process)",
+                     fmt(r["cli_million"]).strip(), "", "", "under 0.35 s: "
+                     + ("met" if r["cli_million"] < 0.35 else "MISSED")))
+    print(row.format("1,000,000 angles, sweep (all arrays kept)", fmt(r["million_sweep"]).strip(),
+                     "", "", f"peak {r['million_sweep_rss']:.0f} MB"))
+    print(row.format("1,000,000 angles, summarize (per chunk)",
+                     fmt(r["million_summarize"]).strip(), "", "",
+                     f"peak {r['million_summarize_rss']:.0f} MB (under 300 MB: "
+                     + ("met)" if r["million_summarize_rss"] < 300 else "MISSED)")))
+    print(row.format("positions-only evaluation, 100,000 angles", fmt(r["positions_only"]).strip(),
+                     fmt(r["positions_full"]).strip(),
+                     f"{r['positions_only'] / r['positions_full']:.2f}",
+                     "<= 1/2 of a full one: " + ("met" if r["positions_only"] <= 0.5 *
+                                                 r["positions_full"] else "MISSED")))
+    for k in sorted((k for k in r if k.startswith("chain_")), key=lambda k: int(k[6:])):
+        print(row.format(f"solve --json, chain of dyads, {k[6:]} links", fmt(r[k]).strip(),
+                         "", "", "under 10 s: " + ("met" if r[k] < 10 else "MISSED")))
+    print(row.format("solve --json, cold start", fmt(r["cli_solve"]).strip(), "", "",
+                     "imports: " + ", ".join(f"{k} {'YES' if v else 'no'}"
+                                              for k, v in r["solve_imports"].items())))
     if "mechanism_step" in r:
         print(f"mechanism (fsolve): {fmt(r['mechanism_step'])} per position, "
-              f"{fmt(r['mechanism_cycle'])} per 3600-angle cycle: "
-              f"{r['mechanism_step'] / r['single']:.0f}x our single position, "
-              f"{r['mechanism_cycle'] / r['cycle']:.0f}x our cycle")
-    else:
-        print("mechanism: not installed (pip install polygon-method[peers])")
+              f"{r['mechanism_step'] / r['single']:.0f}x our single position")
     if args.json:
         print(json.dumps(r, default=str))
     return 0

@@ -19,9 +19,8 @@ def rubbing_at(pin, W, radius) -> tuple:
     """``|w_i - w_j| r`` for each pair of bodies a pin joins (``pin``: an entry of
     ``plan.pins``; a body without a link, the ground or a block on a fixed path, does not
     turn)."""
-    links, pairs = pin[2], pin[4]
-    w = [W[lk] if lk is not None else 0.0 for lk in links]
-    return tuple(abs(w[i] - w[j]) * radius for i, j in pairs)
+    w = W.get  # a body without a link (None) is not in W: it does not turn
+    return tuple([abs(w(a, 0.0) - w(b, 0.0)) * radius for a, b in pin[5]])
 
 
 def pin_rubbing(plan, W, radii) -> dict:

@@ -122,7 +122,8 @@ class Plan:
     scene: Scene = field(repr=False, compare=False)
     notes: tuple = ()
     fixed_links: dict = field(default_factory=dict)
-    #: (point, body names, their links or None, "a|b" keys, (i, j) pairs) per sized pin
+    #: per sized pin: (point, body names, their links or None, "a|b" keys, (i, j) pairs,
+    #: the pairs' links)
     pins: tuple = ()
     dims: Dims | None = field(default=None, repr=False, compare=False)
 
@@ -467,8 +468,10 @@ class _Compiler:
             joined = _bodies_at(sc, pin.point)
             pairs = tuple((f"{a[0]}|{b[0]}", i, j) for i, a in enumerate(joined)
                           for j, b in enumerate(joined) if j > i)
-            pins.append((pin.point, tuple(b for b, _ in joined), tuple(lk for _, lk in joined),
-                         tuple(k for k, _, _ in pairs), tuple((i, j) for _, i, j in pairs)))
+            links = tuple(lk for _, lk in joined)
+            pins.append((pin.point, tuple(b for b, _ in joined), links,
+                         tuple(k for k, _, _ in pairs), tuple((i, j) for _, i, j in pairs),
+                         tuple((links[i], links[j]) for _, i, j in pairs)))
         steps = tuple(self.steps)
         dims = Dims(dict(sc.ground), tuple(st.params for st in steps), inp.angle, inp.omega,
                     inp.alpha, {p.point: p.radius for p in sc.pins})

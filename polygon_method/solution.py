@@ -34,22 +34,16 @@ __all__ = ["solve", "Solution", "PinRubbing", "sense", "fmt_angular"]
 class PinRubbing:
     """Rubbing velocity at a pin: ``|w1 - w2| r`` for each pair of bodies the pin joins.
 
-    Attributes: ``point``, ``radius``, ``pairs`` ({"AB|BC": v}), ``bodies`` ({body: omega})
-    and ``rubbing_velocity`` (the largest pair).
+    Attributes: ``point``, ``radius``, ``values`` (one per pair), ``pairs`` ({"AB|BC": v}),
+    ``bodies`` ({body: omega}) and ``rubbing_velocity`` (the largest pair).
     """
 
-    __slots__ = ("point", "radius", "_pin", "_W", "_values")
+    __slots__ = ("point", "radius", "values", "rubbing_velocity", "_pin", "_W")
 
     def __init__(self, point, radius, pin, W):
         self.point, self.radius, self._pin, self._W = point, radius, pin, W
-        self._values = None
-
-    @property
-    def values(self) -> tuple:
-        v = self._values
-        if v is None:
-            v = self._values = rubbing_at(self._pin, self._W, self.radius)
-        return v
+        self.values = v = rubbing_at(pin, W, radius)
+        self.rubbing_velocity = max(v) if v else 0.0
 
     @property
     def pairs(self) -> dict:
@@ -58,12 +52,7 @@ class PinRubbing:
     @property
     def bodies(self) -> dict:
         W = self._W
-        return {name: (W[lk] if lk is not None else 0.0)
-                for name, lk in zip(self._pin[1], self._pin[2])}
-
-    @property
-    def rubbing_velocity(self) -> float:
-        return max(self.values, default=0.0)
+        return {name: W.get(lk, 0.0) for name, lk in zip(self._pin[1], self._pin[2])}
 
     def __repr__(self):
         return f"PinRubbing({self.point!r}, radius={self.radius!r}, pairs={self.pairs!r})"
@@ -108,8 +97,10 @@ class Solution(Motion):
         r = c.get("rubbing")
         if r is None:
             W, radii = self.W, self.plan.dims.radii
-            r = c["rubbing"] = {pin[0]: PinRubbing(pin[0], radii[pin[0]], pin, W)
-                                for pin in self.plan.pins}
+            r = c["rubbing"] = {}
+            for pin in self.plan.pins:
+                p = pin[0]
+                r[p] = PinRubbing(p, radii[p], pin, W)
         return r
 
     @property
