@@ -148,7 +148,8 @@ def bench_cycle(repeat):
     import numpy as np
 
     from polygon_method import load_scene
-    from polygon_method.sweeps import Sweeper, sweep
+    from polygon_method.sweeps import sweep
+    from polygon_method.tracking import Sweeper
 
     out = {}
     g = load_scene(GRASHOF)
@@ -175,7 +176,8 @@ MILLION_SWEEP = """
 import json, math, resource, time
 import numpy as np
 from polygon_method import load_scene
-from polygon_method.sweeps import {fn}
+from polygon_method.sweeps import sweep
+from polygon_method.summary import summarize
 scene = load_scene({path!r})
 th = np.linspace(0.0, 2 * math.pi, 1_000_000, endpoint=False)
 {fn}(scene, th[:3600])  # plan and domain cached, as after loading

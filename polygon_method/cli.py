@@ -8,13 +8,14 @@ Only this module writes files, and it writes them whole or not at all.
 from __future__ import annotations
 
 import argparse
+import math
 import json
 import os
 import sys
 import tempfile
 from pathlib import Path
 
-from .errors import PolygonMethodError
+from .errors import PolygonMethodError, SceneError
 
 __all__ = ["main", "write_output"]
 
@@ -89,10 +90,83 @@ def _cmd_draw(args) -> int:
     return run_draw(args, write_output)
 
 
-def _cmd_sweep(args) -> int:
-    from .sweeps import run_sweep
+def _requested_angles(args):
+    """Crank angles (rad) from ``--steps N`` or ``--from A --to B --step S`` (deg)."""
+    import numpy as np
+    ranged = any(v is not None for v in (args.start, args.stop, args.step))
+    if args.steps is not None and ranged:
+        raise SceneError("give either --steps N or --from A --to B --step S, not both")
+    if ranged:
+        if args.start is None or args.stop is None or args.step is None:
+            raise SceneError("--from, --to and --step go together (degrees)")
+        a, b, s = args.start, args.stop, args.step
+        if not all(math.isfinite(v) for v in (a, b, s)):
+            raise SceneError("--from, --to and --step must be finite numbers")
+        if s == 0 or (b - a) * s < 0:
+            raise SceneError(f"--step {s:g} does not lead from {a:g} to {b:g} deg")
+        count = int(math.floor((b - a) / s + 1e-9)) + 1
+        if count > 100_000_000:
+            raise SceneError(f"{count} crank angles are too many (at most 10^8)")
+        return np.radians(a + s * np.arange(count))
+    n = 360 if args.steps is None else args.steps
+    if n < 1:
+        raise SceneError(f"--steps must be at least 1, got {n}")
+    if n > 100_000_000:
+        raise SceneError(f"--steps {n} is too many (at most 10^8)")
+    return np.linspace(0.0, 2.0 * math.pi, n, endpoint=False)
 
-    return run_sweep(args, write_output)
+
+def _cmd_sweep(args) -> int:
+    """``polygon-method sweep SCENE [--steps N | --from A --to B --step S] [--csv FILE]
+    [--plot FILE.svg] [--summary]``: print the summary; the CSV and the plot are written by
+    ``write_output`` (whole or not at all)."""
+    from .plots import plot_bytes
+    from .scene import load_scene
+    from .summary import summarize, summary_of
+    from .sweeps import sweep
+
+    plot = getattr(args, "plot", None)
+    if plot and not plot.lower().endswith((".svg", ".png", ".pdf")):
+        raise SceneError(f"--plot {plot}: the file must end in .svg, .png or .pdf")
+    scene = load_scene(args.scene)
+    angles = _requested_angles(args)
+    want_summary = args.summary or not (args.csv or plot)
+    if not (args.csv or plot):
+        print(summarize(scene, angles).text())
+        return 0
+    res = sweep(scene, angles)
+    if not len(res):
+        raise PolygonMethodError("none of the requested crank angles can be reached "
+                                 "on the scene's branch " + _limits_text(res.domain),
+                                 file=scene.file)
+    outputs = []
+    if args.csv:
+        outputs.append((args.csv, res.to_csv(), False))
+    if plot:
+        outputs.append((plot, plot_bytes(res, plot, points=_names(args, "points"),
+                                         links=_names(args, "links")), True))
+    for path, data, binary in outputs:
+        write_output(path, data, binary=binary)
+    if want_summary:
+        print(summary_of(res).text())
+    else:
+        print(f"{len(res)} of {res.requested} crank angles evaluated"
+              + (f"; {_limits_text(res.domain)}" if res.domain.limits else ""))
+    return 0
+
+
+def _names(args, what):
+    raw = getattr(args, what, None)
+    if not raw:
+        return None
+    return tuple(x.strip() for x in raw.split(",") if x.strip())
+
+
+def _limits_text(dom) -> str:
+    if not dom.limits:
+        return ""
+    return ("(limit positions at " + " and ".join(f"{lp.degrees:.4f} deg" for lp in dom.limits)
+            + ")")
 
 
 def _cmd_linkage(args) -> int:

@@ -111,6 +111,11 @@ class Motion:
     def conditions(self) -> dict:
         return self.cond
 
+    @property
+    def n(self) -> int:
+        """How many positions: the length of ``theta`` (1 for one instant)."""
+        return len(self.theta) if hasattr(self.theta, "__len__") else 1
+
 
 def evaluate(plan: Plan, theta=None, omega=None, alpha=None, *, dims: Dims | None = None,
              upto: int = 2, array: bool = False, points=None, links=None) -> Motion:

@@ -17,7 +17,7 @@ Mechanisms covered
   ground or sliding on a fixed path, with its stationary positions and time ratio.
 
 Everything over the cycle is found on the scene's own assembly branch (see
-:mod:`polygon_method.sweeps`), not on a formula that assumes one.
+:mod:`polygon_method.tracking`), not on a formula that assumes one.
 
 >>> from polygon_method.scene import parse_scene
 >>> g = grashof(50, 66, 56, 100)   # crank, coupler, output, ground
@@ -39,7 +39,7 @@ from .derived import transmission_angle
 from .plan import compile_plan
 from .scene import FixedPath, Scene
 from .solution import solve
-from .sweeps import TWO_PI, Sweeper, _degrees_fn, _merge, _run, _valid
+from .tracking import TWO_PI, Sweeper, degrees_fn, merge, run_arrays, valid_mask
 
 __all__ = ["grashof", "Grashof", "analyse", "Linkage", "Stationary", "Transmission",
            "run_linkage", "engine_formula_lines", "slider_crank_of"]
@@ -148,7 +148,7 @@ class FourBar:
     r3: float
     r4: float
     r1: float
-    step: Dyad
+    step: object  # the dyad step
 
 
 @dataclass(frozen=True)
@@ -164,7 +164,7 @@ class SliderCrank:
     l: float
     e: float
     u: tuple
-    step: SliderDyad
+    step: object  # the slider step
 
     @property
     def inline(self) -> bool:
@@ -285,8 +285,8 @@ class _Cycle:
         self.grid = dom.lo + span * (np.arange(n) + 0.5) / n
         self.h = span / n
         self.fr = sw.evaluate(self.grid)
-        self.bad = _valid(self.fr, self.plan)
-        self.deg = _degrees_fn(dom)
+        self.bad = valid_mask(self.fr, self.plan)
+        self.deg = degrees_fn(dom)
 
     def evaluate(self, pts, positions=False):
         """A frame at crank angles ``pts`` (in the domain) and the mask of those where it is
@@ -303,12 +303,12 @@ class _Cycle:
             out = {}
             for k in np.unique(seg):
                 idx = np.nonzero(seg == k)[0]
-                out[int(k)] = (idx, _run(self.dom.segments[int(k)][2], t[idx], self.sw.omega,
+                out[int(k)] = (idx, run_arrays(self.dom.segments[int(k)][2], t[idx], self.sw.omega,
                                          self.sw.alpha, vel=False, acc=False))
-            fr = _merge(t, out)
+            fr = merge(t, out)
             return fr, fr.bad | bad
         fr = self.sw.evaluate(pts)
-        return fr, _valid(fr, self.plan)
+        return fr, valid_mask(fr, self.plan)
 
     def extreme(self, f, sense, positions=False):
         """(crank angle, value) of the largest ``sense * f`` over the cycle, refined."""
@@ -367,7 +367,7 @@ class _Cycle:
             return fr
         seg = self.sw.segment_plans(np.array([theta]))
         plan = self.dom.segments[int(seg[0])][2]
-        return _run(plan, np.array([float(theta)]), self.sw.omega, self.sw.alpha,
+        return run_arrays(plan, np.array([float(theta)]), self.sw.omega, self.sw.alpha,
                     vel=False, acc=False)
 
 

@@ -18,7 +18,9 @@ import pytest
 
 from polygon_method import parse_scene, solve
 from polygon_method.cli import main
-from polygon_method.sweeps import Sweeper, summarize, sweep
+from polygon_method.summary import summarize, summary_of
+from polygon_method.sweeps import sweep
+from polygon_method.tracking import Sweeper
 from scenes import NON_GRASHOF, SLOTTED_LEVER as SLOTTED
 
 FOURBAR = """
@@ -262,7 +264,7 @@ def test_summary_reduces_like_the_stored_sweep():
     sc = parse_scene(FOURBAR)
     t = np.radians(np.arange(0.0, 360.0, 0.25))
     a = summarize(sc, t, chunk=97, refine=False)
-    b = sweep(sc, t).summary(refine=False)
+    b = summary_of(sweep(sc, t), refine=False)
     for ea, eb in zip(a.extremes, b.extremes):
         assert ea.name == eb.name
         assert ea.maximum == pytest.approx(eb.maximum, rel=1e-13, abs=1e-15)

@@ -1,0 +1,138 @@
+"""Plots of a sweep: velocities and accelerations of points, omega and alpha of links
+against the crank angle, the scene's own instant marked (matplotlib, imported lazily)."""
+
+from __future__ import annotations
+
+import io
+import math
+
+import numpy as np
+
+from .errors import PolygonMethodError, SceneError
+from .solution import solve
+from .sweeps import SweepResult
+from .tracking import degrees_fn
+
+__all__ = ["plot_bytes"]
+
+
+
+def plot_bytes(res: SweepResult, path: str, *, points=None, links=None) -> bytes:
+    """Velocities and accelerations of ``points`` and omega, alpha of ``links`` against the
+    crank angle, with the scene's own instant marked (matplotlib, imported here only)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+
+    sc = res.scene
+    ground = set(sc.ground)
+    pts = points or tuple(p for p in sc.point_names if p not in ground)
+    for p in pts:
+        if p not in res.P:
+            raise SceneError(f"--points: no point {p} in the scene", file=sc.file)
+    keys = []
+    for name in links or [lk.key for lk in sc.links
+                          if not (lk.p in ground and lk.q in ground)]:
+        if not sc.has_link(name):
+            raise SceneError(f"--links: no link {name} in [links]", file=sc.file)
+        keys.append(sc.link(name).key)
+    dom = res.domain
+    if dom.full_turn:
+        deg = res.degrees
+        t0 = math.degrees(sc.input.angle)
+    else:  # continuous over the reachable range
+        show = degrees_fn(dom)
+        shift = show(dom.lo) - math.degrees(dom.lo)
+        deg = np.degrees(dom.map(res.theta)[0]) + shift
+        t0 = math.degrees(float(dom.map(np.array([sc.input.angle]))[0][0])) + shift
+    order = np.argsort(deg, kind="stable") if np.any(np.diff(deg) < 0) else slice(None)
+    x = deg[order]
+    if dom.full_turn and len(x):  # the scene's angle, shown in the plotted range
+        k = math.floor((x.min() - t0) / 360.0 + 1.0)
+        t0 = t0 + 360.0 * k if t0 + 360.0 * k <= x.max() + 1e-9 else t0 + 360.0 * (k - 1)
+    gaps = np.nonzero(np.diff(x) > 1.5 * np.median(np.diff(x)))[0] + 1 if len(x) > 2 else []
+    x = np.insert(x, gaps, np.nan)  # no line across angles left out
+    here = _scene_values(sc)
+    fig = Figure(figsize=(10, 7.5), layout="constrained")
+    axes = fig.subplots(2, 2, sharex=True)
+    panels = [
+        (axes[0][0], "velocity (m/s)", [(f"v_{p}", res.speed(p), here.get(f"v_{p}"))
+                                        for p in pts]
+         + [(f"vs_{s.point}", res.S[s.point][0], here.get(f"vs_{s.point}"))
+            for s in sc.sliders]),
+        (axes[1][0], "acceleration (m/s^2)",
+         [(f"a_{p}", res.acceleration_magnitude(p), here.get(f"a_{p}")) for p in pts]),
+        (axes[0][1], "angular velocity (rad/s, ccw +)",
+         [(f"omega_{k}", res.W[k], here.get(f"omega_{k}")) for k in keys]),
+        (axes[1][1], "angular acceleration (rad/s^2, ccw +)",
+         [(f"alpha_{k}", res.Al[k], here.get(f"alpha_{k}")) for k in keys]),
+    ]
+    clipped = False
+    w, k = abs(sc.input.omega), sc.input.omega ** 2 + abs(sc.input.alpha)
+    size = max([lk.length for lk in sc.links] + [1e-3])
+    scales = [w * size, k * size, w, k]
+    for (ax, label, series), unit_scale in zip(panels, scales):
+        big = []
+        for name, y, y0 in series:
+            yy = np.insert(np.asarray(y, dtype=float)[order], gaps, np.nan)
+            line, = ax.plot(x, yy, lw=1.2, label=name)
+            if y0 is not None:
+                ax.plot([t0], [y0], "o", color=line.get_color(), ms=5)
+            if len(y):
+                big.append((np.nanpercentile(np.abs(yy), 90), np.nanmax(np.abs(yy))))
+        ax.ticklabel_format(axis="y", useOffset=False)
+        if big and res.limits:  # values grow without bound near a limit position
+            typical, top = max(b[0] for b in big), max(b[1] for b in big)
+            if typical > 0 and top > 8 * typical:
+                lo = min(0.0, *(np.nanmin(np.asarray(y, dtype=float)) for _, y, _ in series))
+                ax.set_ylim(max(lo, -3 * typical), 3 * typical)
+                clipped = True
+        elif big:  # a constant (up to rounding) is drawn as one, not as magnified noise
+            ys = np.concatenate([np.asarray(y, dtype=float) for _, y, _ in series])
+            lo, hi = float(np.nanmin(ys)), float(np.nanmax(ys))
+            size = max(abs(lo), abs(hi))
+            if hi - lo <= 1e-6 * size or size < 1e-8 * unit_scale:
+                pad = 0.1 * size if size >= 1e-8 * unit_scale else 1.0
+                ax.set_ylim(0.5 * (lo + hi) - pad, 0.5 * (lo + hi) + pad)
+        ax.axvline(t0, color="0.3", ls="--", lw=0.8)
+        show = degrees_fn(dom)
+        for lp in res.limits:
+            ax.axvline(show(lp.theta), color="tab:red", ls=":", lw=0.8)
+        for cp in res.change_points:
+            ax.axvline(show(cp.theta), color="tab:purple", ls="-.", lw=0.8)
+        ax.set_ylabel(label)
+        ax.grid(True, lw=0.3)
+        if series:
+            ax.legend(fontsize=7, ncol=2)
+    for ax in axes[1]:
+        ax.set_xlabel("crank angle (deg)")
+    title = sc.title or sc.file or "mechanism"
+    fig.suptitle(f"{title}: crank {sc.input.crank}, dashed: the scene's instant "
+                 f"({math.degrees(sc.input.angle):g} deg)"
+                 + ("; dotted red: limit positions" if res.limits else "")
+                 + ("; dash-dot: change points" if res.change_points else "")
+                 + ("\n(the vertical scale is cut: values grow without bound near the "
+                    "limit positions)" if clipped else ""), fontsize=10)
+    buf = io.BytesIO()
+    fmt = path.rsplit(".", 1)[-1].lower()
+    fig.savefig(buf, format=fmt, **({"metadata": {"Date": None}} if fmt == "svg" else {}))
+    return buf.getvalue()
+
+
+def _scene_values(scene) -> dict:
+    """The scene's own instant (the marked points), or nothing where it is singular."""
+    try:
+        sol = solve(scene)
+    except PolygonMethodError:
+        return {}
+    out = {}
+    for p in scene.point_names:
+        out[f"v_{p}"] = sol.speed(p)
+        out[f"a_{p}"] = sol.acceleration_magnitude(p)
+    for lk in scene.links:
+        out[f"omega_{lk.key}"] = sol.W[lk.key]
+        out[f"alpha_{lk.key}"] = sol.Al[lk.key]
+    for s in scene.sliders:
+        out[f"vs_{s.point}"] = sol.S[s.point][0]
+    return out
+

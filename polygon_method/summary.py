@@ -1,0 +1,316 @@
+"""Sweep summaries: the maxima and minima of every quantity over the crank's turn, with
+the crank angles where they occur (refined between samples), reduced chunk by chunk so that
+a million angles need little memory.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .kinematics import Motion
+from .linkage import engine_formula_lines
+from .scene import FixedPath, Scene
+from .sweeps import (SweepResult, rubbing_arrays, select, torque_array, tune_malloc, angles_ok,
+                    evaluate_all, sweep_angles)
+from .tracking import CHUNK, TWO_PI, Sweeper, branch_steps, degrees_fn, fmt_deg, valid_mask
+
+__all__ = ["summarize", "summary_of", "Summary", "Extreme"]
+
+
+# --------------------------------------------------------------------------- summaries
+
+
+@dataclass(frozen=True)
+class Extreme:
+    """The largest and smallest value of one quantity over the sweep, with the crank angles
+    (deg) where they occur. ``at_max``/``at_min`` are None for a constant quantity."""
+
+    name: str
+    unit: str
+    maximum: float
+    at_max: float | None
+    minimum: float
+    at_min: float | None
+    what: str = ""
+    refined: bool = False
+
+    @property
+    def constant(self) -> bool:
+        return self.at_max is None
+
+
+@dataclass(frozen=True)
+class Summary:
+    """Extremes of every quantity, the reachable range and the notes of a sweep.
+
+    Crank angles are in degrees: in [0, 360) when the crank turns fully, otherwise
+    continuous across the reachable range (which may then run below 0 or above 360).
+    """
+
+    scene: Scene
+    requested: int
+    evaluated: int
+    extremes: tuple
+    limits: tuple
+    change_points: tuple
+    notes: tuple = ()
+    formulas: tuple = ()  # lines comparing a textbook's approximate formula with the exact
+    range_deg: tuple | None = None  # (lo, hi) where the crank cannot turn fully
+    deg: object = field(default=math.degrees, repr=False, compare=False)  # rad -> shown deg
+
+    def extreme(self, name) -> Extreme:
+        """The entry of one quantity (``v_C``, ``omega_BC``, ``vs_B``, ``mu at C``...)."""
+        for e in self.extremes:
+            if e.name == name:
+                return e
+        raise KeyError(name)
+
+    def text(self) -> str:
+        sc = self.scene
+        inp = sc.input
+        out = [f"sweep of {sc.title or sc.file or 'the mechanism'}",
+               f"crank {inp.crank} at {abs(inp.omega):.6g} rad/s "
+               f"{'ccw' if inp.omega > 0 else 'cw'}"
+               + (f", {inp.alpha:+.6g} rad/s^2" if inp.alpha else "")
+               + f" at every angle; {self.evaluated} of {self.requested} crank angles "
+               "evaluated"]
+        deg = self.deg
+        if self.limits and self.range_deg is not None:
+            lo, hi = self.range_deg
+            out.append(f"the crank cannot turn fully: it reaches {lo:.4f} to {hi:.4f} deg "
+                       "on the scene's branch")
+            for lp in self.limits:
+                out.append(f"  limit position at {fmt_deg(deg(lp.theta))} deg: {lp.step}: "
+                           f"{lp.why}")
+        if self.evaluated < self.requested:
+            out.append(f"  {self.requested - self.evaluated} requested angle(s) are left out "
+                       "(beyond the limit positions, or singular)")
+        for cp in self.change_points:
+            out.append(f"change point at crank angle {fmt_deg(deg(cp.theta))} deg: {cp.why}")
+        out.extend(self.notes)
+        out.append("")
+        if self.extremes:
+            w = max(len(e.name) for e in self.extremes)
+            out.append(f"{'quantity':<{w}}  {'unit':<7} {'maximum':>12} {'at (deg)':>10}"
+                       f" {'minimum':>12} {'at (deg)':>10}")
+            for e in self.extremes:
+                if e.constant:
+                    out.append(f"{e.name:<{w}}  {e.unit:<7} {e.maximum:>12.6g} "
+                               f"{'(constant)':>10}")
+                    continue
+                out.append(f"{e.name:<{w}}  {e.unit:<7} {e.maximum:>12.6g} "
+                           f"{fmt_deg(e.at_max, 3):>10} {e.minimum:>12.6g} "
+                           f"{fmt_deg(e.at_min, 3):>10}"
+                           + (f"  {e.what}" if e.what else ""))
+        if self.formulas:
+            out.append("")
+            out.extend(self.formulas)
+        return "\n".join(out)
+
+
+class _Reducer:
+    """Running maxima and minima over chunks (with the index where each occurs)."""
+
+    def __init__(self, scene, sw: Sweeper):
+        self.scene, self.sw = scene, sw
+        self.plan = sw.plan
+        self.best = {}  # name -> [max, imax, min, imin, unit, what]
+
+    def quantities(self, fr: Motion):
+        """(name, unit, array, what) of the quantities summarised."""
+        sc, plan = self.scene, self.plan
+        ground = set(sc.ground)
+        for p in sc.point_names:
+            if p in ground:
+                continue
+            yield f"v_{p}", "m/s", np.hypot(*fr.V[p]), "speed"
+            yield f"a_{p}", "m/s^2", np.hypot(*fr.A[p]), "acceleration"
+        for lk in sc.links:
+            if lk.p in ground and lk.q in ground:
+                continue
+            yield f"omega_{lk.key}", "rad/s", fr.W[lk.key], "ccw +"
+            yield f"alpha_{lk.key}", "rad/s^2", fr.Al[lk.key], "ccw +"
+        for s in sc.sliders:
+            vs, a_s, cx, cy = fr.S[s.point]
+            if isinstance(s, FixedPath):
+                (qx, qy), (ux, uy) = s.through, s.u
+                x, y = fr.P[s.point]
+                yield f"s_{s.point}", "m", (x - qx) * ux + (y - qy) * uy, "position on the path"
+            yield f"vs_{s.point}", "m/s", vs, "sliding, signed"
+            yield f"as_{s.point}", "m/s^2", a_s, "sliding, signed"
+            if not isinstance(s, FixedPath):
+                yield f"ac_{s.point}", "m/s^2", np.hypot(cx, cy), "Coriolis"
+        if getattr(plan, "pins", ()):
+            for pin, r in rubbing_arrays(plan, fr.W, fr.n).items():
+                yield f"rub_{pin}", "m/s", r, "rubbing"
+        t = torque_array(sc, fr.V, fr.W, self.sw.omega, fr.n)
+        if t is not None:
+            yield "torque", "N m", t, "input torque, ccw +"
+        for st in branch_steps(plan):
+            name, unit, words = st.condition_column()  # "deg": the sine, shown as the angle
+            yield name, unit, fr.cond[st.index], words
+
+    @staticmethod
+    def shown(unit, value):
+        """A reduced value as shown: the transmission angle from its sine."""
+        if unit == "deg":
+            return math.degrees(math.asin(min(max(value, -1.0), 1.0)))
+        return value
+
+    def add(self, fr: Motion, index):
+        for name, unit, arr, what in self.quantities(fr):
+            if not len(arr):
+                continue
+            i, j = int(np.argmax(arr)), int(np.argmin(arr))
+            b = self.best.get(name)
+            if b is None:
+                self.best[name] = [float(arr[i]), int(index[i]), float(arr[j]), int(index[j]),
+                                   unit, what]
+                continue
+            if arr[i] > b[0]:
+                b[0], b[1] = float(arr[i]), int(index[i])
+            if arr[j] < b[2]:
+                b[2], b[3] = float(arr[j]), int(index[j])
+
+    def _refine(self, tasks, passes):
+        """Zoom on sampled extremes, all at once: 17 points across each bracket a pass.
+        ``tasks``: [name, sense, a, b, best value, best angle]; updated in place."""
+        sw = self.sw
+        for _ in range(passes):
+            live = [t for t in tasks if t[2] < t[3]]
+            if not live:
+                return
+            pts = np.concatenate([np.linspace(t[2], t[3], 17) for t in live])
+            ok = angles_ok(sw, pts)
+            fr = sw.evaluate(pts)
+            invalid = valid_mask(fr, self.plan)
+            if ok is not None:
+                invalid |= ~ok
+            q = {nm: arr for nm, _, arr, _ in self.quantities(fr)}
+            for k, t in enumerate(live):
+                name, sense = t[0], t[1]
+                sl = slice(17 * k, 17 * k + 17)
+                vals = np.where(invalid[sl], -np.inf, q[name][sl] * sense)
+                j = int(np.argmax(vals))
+                if not np.isfinite(vals[j]):
+                    t[3] = t[2]  # give up on this one
+                    continue
+                if vals[j] * sense * sense >= t[4] * sense:
+                    t[4], t[5] = float(vals[j] * sense), float(pts[sl][j])
+                p = pts[sl]
+                t[2], t[3] = p[max(j - 1, 0)], p[min(j + 1, 16)]
+
+    def finish(self, theta, requested, evaluated, *, refine=True):
+        sw = self.sw
+        dom = sw.domain
+        n = len(theta)
+        spacing = None
+        if n > 2:
+            step = np.abs(np.diff(theta[:10001]))
+            spacing = float(np.median(step))
+        cps = [c.theta for c in dom.change_points]
+        tasks, rows = [], []
+        scales = self._scales()
+        for name, (mx, imx, mn, imn, unit, what) in self.best.items():
+            zero = 1e-9 * scales.get(unit, 0.0)  # rounding about a true zero
+            mx, mn = (0.0 if abs(mx) <= zero else mx), (0.0 if abs(mn) <= zero else mn)
+            scale = max(abs(mx), abs(mn))
+            if n > 1 and (mx - mn <= 1e-10 * scale or scale == 0.0):
+                rows.append([name, unit, mx, None, mn, None, what])
+                continue
+            row = [name, unit, mx, float(theta[imx]), mn, float(theta[imn]), what]
+            rows.append(row)
+            if not (refine and spacing and spacing > 1e-12):
+                continue
+            for sense, i in ((1.0, imx), (-1.0, imn)):
+                if not _interior(theta, i, spacing):
+                    continue
+                t = float(theta[i])
+                a, b = t - spacing, t + spacing
+                (tm,), _ = dom.map(np.array([t]))
+                if any(abs(tc - tm) < 2 * spacing + 0.02 for tc in cps):
+                    continue  # values next to a change point are not refined
+                tasks.append([name, sense, a, b, row[2] if sense > 0 else row[4], t, row])
+        if tasks:
+            passes = max(1, min(12, math.ceil(math.log(2 * spacing / 1e-11, 8))))
+            self._refine(tasks, passes)
+            for name, sense, _, _, val, t, row in tasks:
+                if sense > 0:
+                    row[2], row[3] = val, t
+                else:
+                    row[4], row[5] = val, t
+        deg = degrees_fn(dom)
+        extremes = tuple(Extreme(nm, u, self.shown(u, mx), None if tmx is None else deg(tmx),
+                                 self.shown(u, mn), None if tmn is None else deg(tmn), what,
+                                 bool(tasks))
+                         for nm, u, mx, tmx, mn, tmn, what in rows)
+        formulas = ()
+        try:
+            formulas = tuple(engine_formula_lines(self.scene, {e.name: e for e in extremes}))
+        except ImportError:
+            formulas = ()
+        rng = None
+        if not dom.full_turn:
+            rng = (deg(dom.lo), deg(dom.lo) + math.degrees(dom.hi - dom.lo))
+        return Summary(self.scene, requested, evaluated, extremes, dom.limits,
+                       dom.change_points, tuple(dom.notes), formulas, rng, deg)
+
+    def _scales(self) -> dict:
+        """Typical sizes per unit, below a 1e-9 part of which a value is zero (rounding)."""
+        sc = self.scene
+        w = abs(self.sw.omega)
+        k = w * w + abs(self.sw.alpha)
+        lengths = [lk.length for lk in sc.links] + [math.hypot(*xy) for xy in
+                                                    sc.ground.values()]
+        L = max(lengths) if lengths else 1.0
+        return {"rad/s": w, "rad/s^2": k, "m/s": w * L, "m/s^2": k * L, "m": L}
+
+
+def _interior(theta, i, spacing) -> bool:
+    """Whether sample i has neighbours (in the order asked, the ends joined) about
+    ``spacing`` away on both sides, so that the extreme found there is a local one and not
+    the end of the requested range."""
+    n = len(theta)
+    if n < 3:
+        return False
+    t = theta[i]
+    d = [(theta[(i + k) % n] - t + math.pi) % TWO_PI - math.pi for k in (-1, 1)]
+    return (abs(d[0]) <= 1.5 * spacing and abs(d[1]) <= 1.5 * spacing and d[0] * d[1] < 0)
+
+
+def summarize(scene: Scene, angles=None, *, chunk: int = CHUNK, refine: bool = True) -> Summary:
+    """Maxima and minima of every quantity over ``angles`` (rad; default every degree),
+    reduced chunk by chunk: memory stays that of one chunk whatever the number of angles.
+    Each extreme found between samples is then refined by zooming in on it."""
+    th_req = sweep_angles(angles)
+    sw = Sweeper(scene)
+    ok = angles_ok(sw, th_req)
+    th = th_req if ok is None else th_req[ok]
+    if len(th) > chunk:
+        tune_malloc()
+    red = _Reducer(scene, sw)
+    n_valid = 0
+    for sl, fr in evaluate_all(sw, th, chunk):
+        bad = valid_mask(fr, sw.plan)
+        index = np.arange(sl.start, sl.stop)
+        if bad.any():
+            fr = select(fr, ~bad)
+            index = index[~bad]
+        n_valid += len(index)
+        red.add(fr, index)
+    return red.finish(th, len(th_req), n_valid, refine=refine)
+
+
+# --------------------------------------------------------------------------- command line
+
+
+
+def summary_of(res: SweepResult, **kw) -> Summary:
+    """The summary of a sweep already made (its own angles, no new evaluation but the
+    refinement of the extremes)."""
+    red = _Reducer(res.scene, Sweeper(res.scene))
+    red.add(res, np.arange(len(res.theta)))
+    return red.finish(res.theta, res.requested, len(res.theta), **kw)

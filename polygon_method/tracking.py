@@ -1,0 +1,498 @@
+"""Following the scene's assembly branch over the crank's turn.
+
+The same plan that :func:`~polygon_method.solution.solve` runs for one instant is run
+with ``Context(theta_array, omega, alpha, array=True)``: every step's formulas are plain
+arithmetic, so one pass over a chunk of crank angles gives every position, velocity and
+acceleration for all of them (a :class:`~polygon_method.kinematics.Motion` of arrays).
+
+The assembly branch is the scene's own, followed continuously from the scene's instant
+(the crank speed and acceleration are the scene's at every angle):
+
+* where the crank cannot turn fully (a non-Grashof input, or a dyad that stops
+  assembling) the motion stops at the limit positions, where the discriminant of the
+  failing step vanishes (:class:`LimitPosition`); angles beyond are left out, never filled
+  with NaN or with the other branch;
+* at a change point (the two assemblies of a step meet, as in a parallelogram with all
+  its pivots in line) it follows the branch that is continuous in velocity and says so
+  (:class:`ChangePoint`); if the two branches leave with the same velocity it stops there.
+
+:class:`Sweeper` finds the :class:`Domain` once per plan and evaluates any crank angles on
+it.
+"""
+
+from __future__ import annotations
+
+import math
+import weakref
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from .errors import TOL, SingularStepError
+from .kinematics import Motion
+from .plan import Context, compile_plan
+from .scene import Scene
+
+__all__ = ["Sweeper", "Domain", "LimitPosition", "ChangePoint", "run_arrays", "merge",
+           "valid_mask", "degrees_fn", "fmt_deg", "TWO_PI", "CHUNK", "NEAR"]
+
+#: crank angles evaluated per pass (about 32k: the temporaries of one pass stay in cache)
+CHUNK = 32768
+#: scouting grid for limit positions and change points, per turn of the crank
+SCOUT = 4096
+TWO_PI = 2.0 * math.pi
+#: a step whose condition falls below this (and rises again) is checked for a change point
+_CANDIDATE = 0.2
+#: ... and is a change point where its refined minimum is below this
+_CHANGE = 1e-7
+#: a reachable range narrower than this (rad) is a locked linkage, not a motion
+_LOCKED = 1e-5
+#: offset either side of a change point when comparing the branches' velocities (rad)
+_DELTA = 1e-6
+#: samples this close to a change point (rad) get their velocities and accelerations by
+#: extrapolation from both sides (the construction is indeterminate there)
+_NEAR = 2e-3
+
+
+# --------------------------------------------------------------------------- records
+
+
+@dataclass(frozen=True)
+class LimitPosition:
+    """A crank angle beyond which the sweep cannot go on the scene's branch.
+
+    ``theta`` is in the sweep's domain (rad, continuous with the scene's angle); ``step``
+    names the construction step that stops assembling (its discriminant vanishes there).
+    """
+
+    theta: float
+    step: str
+    why: str
+
+    @property
+    def degrees(self) -> float:
+        return math.degrees(self.theta) % 360.0
+
+
+@dataclass(frozen=True)
+class ChangePoint:
+    """A crank angle where a step's two assemblies meet (its condition reaches zero and
+    rises again): the branch is indeterminate there. ``followed`` says whether the sweep
+    went on (on the branch continuous in velocity) or stopped."""
+
+    theta: float
+    step: str
+    point: str
+    followed: bool
+    flipped: bool
+    why: str
+    radius: float = _NEAR  # rad: closer than this the construction is not trusted
+
+    @property
+    def degrees(self) -> float:
+        return math.degrees(self.theta) % 360.0
+
+
+@dataclass(frozen=True)
+class Domain:
+    """The crank angles reachable from the scene's instant on its branch.
+
+    ``lo <= theta <= hi`` (rad, continuous with the scene's angle); ``full_turn`` when the
+    crank turns fully (then ``hi = lo + 2 pi``). ``segments`` are ``(start, end, plan)``
+    with the plan (its branches) valid between change points.
+    """
+
+    lo: float
+    hi: float
+    full_turn: bool
+    segments: tuple
+    limits: tuple = ()
+    change_points: tuple = ()
+    notes: tuple = ()
+
+    def map(self, theta):
+        """Crank angles (rad, any turn) -> the same angles in ``[lo, lo + 2 pi)`` and a mask
+        of those the crank reaches."""
+        t = self.lo + np.mod(np.asarray(theta, dtype=float) - self.lo, TWO_PI)
+        if self.full_turn:
+            return t, np.ones(t.shape, dtype=bool)
+        return t, t <= self.hi + 1e-12
+
+
+#: the domain of each plan (a plan is one scene's content), found once
+_DOMAINS = weakref.WeakKeyDictionary()
+
+# --------------------------------------------------------------------------- evaluation
+
+
+def _motion(theta, P, V, A, W, Al, S, cond, bad) -> Motion:
+    return Motion(None, None, theta, P, V, A, W, Al, S, cond, bad)
+
+
+def _full(v, n):
+    """An array of length n from an evaluated value: a float (a ground point, a fixed
+    link) becomes a read-only broadcast view of it."""
+    if isinstance(v, np.ndarray) and v.shape == (n,):
+        return v
+    return np.broadcast_to(np.float64(v if v is not None else 0.0), (n,))
+
+
+def run_arrays(plan, theta, omega, alpha, vel=True, acc=True) -> Motion:
+    """Evaluate ``plan`` over one array of crank angles (one pass, no chunking)."""
+    n = len(theta)
+    ctx = Context(theta, omega, alpha, array=True)
+    upto = 2 if (vel and acc) else (1 if vel else 0)
+    with np.errstate(all="ignore"):
+        m = plan.run(ctx, upto=upto)
+    fix = lambda d: {k: (_full(v[0], n), _full(v[1], n)) for k, v in d.items()}  # noqa: E731
+    P = fix(m.P)
+    V = fix(m.V) if upto >= 1 else {}
+    A = fix(m.A) if upto >= 2 else {}
+    W = {k: _full(v, n) for k, v in m.W.items()} if upto >= 1 else {}
+    Al = {k: _full(v, n) for k, v in m.Al.items()} if upto >= 2 else {}
+    S = {k: tuple(_full(x, n) for x in v) for k, v in m.S.items()} if upto >= 1 else {}
+    cond = {i: _full(c, n) for i, c in ctx.cond.items()}
+    bad = ctx.bad if ctx.bad is not None else np.zeros(n, dtype=bool)
+    return _motion(theta, P, V, A, W, Al, S, cond, bad)
+
+
+def _variant(plan, flips):
+    """The plan with the branch (sigma) of the steps in ``flips`` reversed."""
+    if not flips:
+        return plan
+    steps = tuple(replace(s, sigma=-s.sigma) if s.index in flips else s for s in plan.steps)
+    kw = {"steps": steps}
+    if "_compiled" in getattr(plan, "__dataclass_fields__", {}):
+        kw["_compiled"] = {}  # a new kernel for the new branches
+    return replace(plan, **kw)
+
+
+def branch_steps(plan):
+    return [s for s in plan.steps if s.branching]
+
+
+class Sweeper:
+    """Evaluates a scene's plan at any crank angles, on the assembly branch continuous with
+    the scene's instant (see :class:`Domain`). The domain is found once per scene."""
+
+    def __init__(self, scene: Scene):
+        self.scene = scene
+        self.plan = compile_plan(scene)
+        inp = scene.input
+        self.theta0, self.omega, self.alpha = inp.angle, inp.omega, inp.alpha
+        dom = _DOMAINS.get(self.plan)
+        if dom is None:
+            dom = _DOMAINS[self.plan] = self._explore()
+        self.domain = dom
+        if not dom.full_turn and dom.hi - dom.lo < _LOCKED:
+            lp = dom.limits[0] if dom.limits else None
+            raise SingularStepError(
+                f"the crank can move only {math.degrees(dom.hi - dom.lo):.2g} deg from its "
+                f"angle in the scene: the linkage is locked there"
+                + (f" ({lp.why})" if lp else ""), step=lp.step if lp else None,
+                file=scene.file)
+
+    # ----- exploring the branch
+    def _scout(self, plan, grid):
+        return run_arrays(plan, grid, self.omega, self.alpha, vel=False, acc=False)
+
+    def _explore(self) -> Domain:
+        t0 = self.theta0
+        rsegs, rcps, rlim = self._walk(+1, TWO_PI)
+        if rlim is None:  # the crank turns fully: show the turn centred on the scene's angle
+            rsegs = [(a, min(b, t0 + math.pi), p) for a, b, p in rsegs if a < t0 + math.pi]
+            rcps = [c for c in rcps if c.theta < t0 + math.pi]
+            lsegs, lcps, llim = self._walk(-1, math.pi)
+            lo, hi, full = t0 - math.pi, t0 + math.pi, True
+            notes = []
+            if llim is not None:  # cannot happen for a periodic motion; be safe
+                lo, full = llim.theta, False
+            elif self._flips(lsegs[-1][2]) != self._flips(rsegs[-1][2]):
+                notes.append("after a full turn of the crank the linkage is on its other "
+                             "branch: the motion repeats only every two turns; the sweep "
+                             "shows the turn centred on the scene's instant")
+            limits = tuple(x for x in (llim,) if x is not None)
+        else:
+            lsegs, lcps, llim = self._walk(-1, TWO_PI - (rlim.theta - t0))
+            lo = llim.theta if llim is not None else rlim.theta - TWO_PI
+            hi, full, notes = rlim.theta, False, []
+            limits = tuple(x for x in (llim, rlim) if x is not None)
+        segs = [(b, a, p) for a, b, p in reversed(lsegs)] + list(rsegs)
+        merged = []
+        for a, b, p in segs:  # neighbours on the same branches are one segment
+            if merged and self._flips(merged[-1][2]) == self._flips(p):
+                merged[-1] = (merged[-1][0], b, merged[-1][2])
+            elif b > a or not merged:
+                merged.append((a, b, p))
+        segs = [(a, b, p) for a, b, p in merged if b > a] or merged[:1]
+        cps = tuple(sorted(lcps + rcps, key=lambda c: c.theta))
+        return Domain(lo, hi, full, tuple(segs), limits, cps, tuple(notes))
+
+    def _flips(self, plan):
+        return tuple(s.sigma for s in plan.steps if hasattr(s, "sigma"))
+
+    def _walk(self, direction, budget):
+        """Turn the crank from the scene's angle in ``direction`` for up to ``budget`` rad;
+        returns the segments passed (in walking order, as ``(from, to, plan)``), the change
+        points met and the limit position where it stopped (or None)."""
+        plan, start, done = self.plan, self.theta0, 0.0
+        segs, cps = [], []
+        while budget - done > 1e-12:
+            left = budget - done
+            n = max(65, int(SCOUT * left / TWO_PI) + 2)
+            grid = start + direction * np.linspace(0.0, left, n)
+            fr = self._scout(plan, grid)
+            fail = fr.bad | ~np.isfinite(fr.P[self.plan.steps[-1].finds[0]][0])
+            k = int(np.argmax(fail)) if fail.any() else n
+            if k == 0:  # the very first angle fails: we stand on a limit
+                segs.append((start, start, plan))
+                step = self._step_failing(plan, start) or "the plan"
+                return segs, cps, LimitPosition(start, step, self._limit_why(plan, step))
+            found = self._change_point(plan, grid, fr, k)
+            if found is not None:
+                tc, st = found
+                new, cp = self._decide(plan, st, tc, direction)
+                cps.append(cp)
+                segs.append(self._seg(start, tc, plan, direction))
+                if not cp.followed:
+                    return segs, cps, LimitPosition(tc, st.label, cp.why)
+                done += abs(tc - start)
+                start, plan = tc, new
+                continue
+            if k < n:
+                t_lim, step = self._refine_limit(plan, grid[k - 1], grid[k])
+                segs.append(self._seg(start, t_lim, plan, direction))
+                return segs, cps, LimitPosition(t_lim, step, self._limit_why(plan, step))
+            segs.append(self._seg(start, grid[-1], plan, direction))
+            return segs, cps, None
+        return segs, cps, None
+
+    @staticmethod
+    def _seg(a, b, plan, direction):
+        """A segment passed from ``a`` to ``b`` (either way round)."""
+        return (a, b, plan)
+
+    def _limit_why(self, plan, label) -> str:
+        st = next((s for s in plan.steps if s.label == label), None)
+        return st.limit_why() if st is not None else "the linkage cannot be assembled beyond it"
+
+    def _refine_limit(self, plan, good, bad):
+        """Bisect (33 points a pass) between an assembling and a failing crank angle to the
+        angle where the failing step's discriminant vanishes."""
+        step = None
+        for _ in range(12):
+            pts = np.linspace(good, bad, 33)
+            fr = self._scout(plan, pts)
+            j = int(np.argmax(fr.bad)) if fr.bad.any() else None
+            if j is None:  # the failure was tangential: the far end assembles after all
+                good = bad
+                break
+            if step is None:
+                step = self._step_failing(plan, pts[j])
+            if j == 0:
+                break
+            good, bad = pts[j - 1], pts[j]
+            if abs(bad - good) < 1e-14:
+                break
+        return float(good), step or "the plan"
+
+    def _step_failing(self, plan, theta):
+        ctx = Context(np.array([theta]), self.omega, self.alpha, array=True)
+        with np.errstate(all="ignore"):
+            plan.evaluate(ctx, velocities=False, accelerations=False)
+        for i in sorted(ctx.failures):
+            if ctx.failures[i].any():
+                return plan.steps[i].label
+        return None
+
+    def _change_point(self, plan, grid, fr, k):
+        """The first change point on ``grid[:k]``: a local minimum of a step's condition
+        that refines to zero (the two assemblies meet and part again)."""
+        best = None
+        for st in branch_steps(plan):
+            c = fr.cond[st.index][:k]
+            if len(c) < 3:
+                continue
+            inner = (c[1:-1] <= c[:-2]) & (c[1:-1] <= c[2:]) & (c[1:-1] < _CANDIDATE)
+            for i in np.nonzero(inner)[0] + 1:
+                if best is not None and abs(grid[i] - grid[0]) >= abs(best[0] - grid[0]):
+                    break
+                tc, cmin = self._minimize(plan, st, grid[i - 1], grid[i + 1])
+                if cmin < _CHANGE:
+                    best = (tc, st)
+                    break
+        return best
+
+    def _minimize(self, plan, st, a, b):
+        """The crank angle where step ``st``'s condition is smallest in [a, b] (zooming)."""
+        for _ in range(10):
+            pts = np.linspace(a, b, 33)
+            fr = self._scout(plan, pts)
+            c = np.where(fr.bad, np.inf, fr.cond[st.index])
+            j = int(np.argmin(c))
+            a, b = pts[max(j - 1, 0)], pts[min(j + 1, 32)]
+        return float(pts[j]), float(c[j])
+
+    def _velocity_vector(self, plan, theta):
+        fr = run_arrays(plan, np.array([theta]), self.omega, self.alpha, acc=False)
+        parts = [v for xy in fr.V.values() for v in xy] + list(fr.W.values())
+        return np.array([float(p[0]) for p in parts])
+
+    def _decide(self, plan, st, tc, direction):
+        """At a change point: keep the branch or flip ``st``'s, whichever leaves with the
+        velocity the linkage arrives with."""
+        before = self._velocity_vector(plan, tc - direction * _DELTA)
+        keep = self._velocity_vector(plan, tc + direction * _DELTA)
+        flipped_plan = _variant(plan, {st.index})
+        flip = self._velocity_vector(flipped_plan, tc + direction * _DELTA)
+        scale = np.linalg.norm(before) + 1e-300
+        dk, df = np.linalg.norm(keep - before), np.linalg.norm(flip - before)
+        lo, hi = min(dk, df), max(dk, df)
+        pt = st.finds[0]
+        where = f"{st.label}: the two assemblies of {pt} meet"
+        if lo <= 1e-3 * scale and lo < 0.1 * hi:
+            flipped = df < dk
+            new = flipped_plan if flipped else plan
+            what = ("the branch continuous in velocity is followed" +
+                    (f" ({pt} passes to its other side)" if flipped else ""))
+            # where the condition is below a few times the singular limit, the values are
+            # taken from both sides instead (see richardson)
+            probe = 0.01
+            c1 = self._scout(plan, np.array([tc - direction * probe])).cond[st.index][0]
+            c2 = self._scout(new, np.array([tc + direction * probe])).cond[st.index][0]
+            slope = max(min(c1, c2) / probe, 1e-12)
+            radius = min(max(_NEAR, 4 * TOL.singular / slope), 0.05)
+            return new, ChangePoint(tc, st.label, pt, True, flipped, f"{where}; {what}",
+                                    radius)
+        why = (f"{where}, and both branches leave with the same velocity: which one the "
+               "linkage takes cannot be told (a third, phase-shifted crank would decide it); "
+               "the sweep stops here")
+        return plan, ChangePoint(tc, st.label, pt, False, False, why)
+
+    # ----- evaluating
+    def segment_plans(self, t):
+        """For mapped angles ``t``: the index of the segment each lies in."""
+        segs = self.domain.segments
+        if len(segs) == 1:
+            return np.zeros(t.shape, dtype=np.intp)
+        bounds = np.array([b for _, b, _ in segs[:-1]])
+        return np.searchsorted(bounds, t, side="left")
+
+    def evaluate(self, theta, *, vel=True, acc=True):
+        """Evaluate at crank angles ``theta`` (rad, any turn; all reachable), one pass.
+
+        Returns a :class:`Frame` in the order given.
+        """
+        theta = np.asarray(theta, dtype=float)
+        dom = self.domain
+        if len(dom.segments) == 1 and (dom.full_turn or (
+                len(theta) and dom.lo <= theta.min() and theta.max() <= dom.hi)):
+            return run_arrays(dom.segments[0][2], theta, self.omega, self.alpha, vel, acc)
+        t, _ = dom.map(theta)
+        seg = self.segment_plans(t)
+        first = int(seg[0]) if len(seg) else 0
+        if len(seg) and (seg == first).all():
+            return run_arrays(dom.segments[first][2], t, self.omega, self.alpha, vel, acc)
+        frames = {}
+        for s in np.unique(seg):
+            idx = np.nonzero(seg == s)[0]
+            frames[int(s)] = (idx, run_arrays(dom.segments[int(s)][2], t[idx], self.omega,
+                                        self.alpha, vel, acc))
+        return merge(theta, frames)
+
+    def near_change_points(self, theta):
+        """[(indices, h)]: the angles closer to a followed change point than its radius,
+        and the step to take either side of them (twice the radius)."""
+        cps = [c for c in self.domain.change_points if c.followed]
+        if not cps:
+            return []
+        t, _ = self.domain.map(theta)
+        out = []
+        for c in cps:
+            d = np.abs(t - c.theta)
+            if self.domain.full_turn:
+                d = np.minimum(d, TWO_PI - d)
+            idx = np.nonzero(d < c.radius)[0]
+            if len(idx):
+                out.append((idx, 2.0 * c.radius))
+        return out
+
+    def richardson(self, theta, h=2.5 * _NEAR):
+        """Velocities and accelerations at angles next to a change point, where the
+        construction is indeterminate, from both sides: f(t) = [15 m(h) - 6 m(2h) + m(3h)]
+        / 10, m(h) the mean of f(t - h) and f(t + h) (error O(h^6))."""
+        th = np.asarray(theta, dtype=float)
+        fr = {s: self.evaluate(th + s * h) for s in (-3, -2, -1, 1, 2, 3)}
+        base = self.evaluate(th)
+
+        def comb(get):
+            m = [(get(fr[-k]) + get(fr[k])) / 2 for k in (1, 2, 3)]
+            return (15 * m[0] - 6 * m[1] + m[2]) / 10
+
+        V = {k: (comb(lambda f: f.V[k][0]), comb(lambda f: f.V[k][1])) for k in base.V}
+        A = {k: (comb(lambda f: f.A[k][0]), comb(lambda f: f.A[k][1])) for k in base.A}
+        W = {k: comb(lambda f: f.W[k]) for k in base.W}
+        Al = {k: comb(lambda f: f.Al[k]) for k in base.Al}
+        S = {k: tuple(comb(lambda f, j=j: f.S[k][j]) for j in range(len(v)))
+             for k, v in base.S.items()}
+        return _motion(th, base.P, V, A, W, Al, S, base.cond, base.bad)
+
+
+def merge(theta, frames) -> Motion:
+    """One motion from the motions of several index sets (``frames``: key -> (index, motion))."""
+    n = len(theta)
+    any_fr = next(iter(frames.values()))[1]
+
+    def put(get):
+        out = np.empty(n)
+        for idx, fr in frames.values():
+            out[idx] = get(fr)
+        return out
+
+    P = {k: (put(lambda f: f.P[k][0]), put(lambda f: f.P[k][1])) for k in any_fr.P}
+    V = {k: (put(lambda f: f.V[k][0]), put(lambda f: f.V[k][1])) for k in any_fr.V}
+    A = {k: (put(lambda f: f.A[k][0]), put(lambda f: f.A[k][1])) for k in any_fr.A}
+    W = {k: put(lambda f: f.W[k]) for k in any_fr.W}
+    Al = {k: put(lambda f: f.Al[k]) for k in any_fr.Al}
+    S = {k: tuple(put(lambda f, j=j: f.S[k][j]) for j in range(len(v)))
+         for k, v in any_fr.S.items()}
+    cond = {i: put(lambda f: f.cond[i]) for i in any_fr.cond}
+    bad = np.zeros(n, dtype=bool)
+    for idx, fr in frames.values():
+        bad[idx] = fr.bad
+    return _motion(theta, P, V, A, W, Al, S, cond, bad)
+
+
+def valid_mask(fr: Motion, plan):
+    """Angles where a step failed or is singular (True: not valid)."""
+    bad = fr.bad.copy()
+    for st in branch_steps(plan):
+        bad |= fr.cond[st.index] < TOL.singular
+    return bad
+
+
+def fmt_deg(d, digits=4) -> str:
+    s = f"{d:.{digits}f}"
+    return s if s.strip("-0.") else f"{0.0:.{digits}f}"
+
+
+def degrees_fn(dom: Domain):
+    """Radians in the domain -> the degrees shown: [0, 360) for a full turn, else continuous
+    over the reachable range, shifted by whole turns so that it starts in [-180, 180)."""
+    if dom.full_turn:
+        def deg(t):
+            d = math.degrees(t) % 360.0
+            return 0.0 if d >= 360.0 - 5e-4 else d
+        return deg
+    shift = -360.0 * math.floor((math.degrees(dom.lo) + 180.0) / 360.0)
+
+    def deg(t):
+        (tm,), _ = dom.map(np.array([t]))
+        return math.degrees(float(tm)) + shift
+    return deg
+
+
+
+
+#: samples this close to a change point (rad) get their values from both sides
+NEAR = _NEAR
