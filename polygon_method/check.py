@@ -52,7 +52,7 @@ from .scales import DRAWING_PRECISION_CM, diagram_scales
 from .scene import GuideSlider, Scene
 from .solution import Solution, solve
 
-__all__ = ["Verdict", "check_answers", "run_check", "answer_tolerance", "verdicts_text",
+__all__ = ["Verdict", "check_answers", "answer_tolerance", "verdicts_text",
            "verdicts_dict", "ROUNDING"]
 
 #: relative error of a value rounded to three significant figures (the floor of every
@@ -857,34 +857,3 @@ def verdicts_dict(verdicts, scene: str | None = None, answers: str | None = None
     return {"scene": scene, "answers_file": answers, "all_right": wrong == 0,
             "right": len(verdicts) - wrong, "wrong": wrong,
             "answers": [v.to_dict() for v in verdicts]}
-
-
-def _finite(x):
-    return x if isinstance(x, (int, float)) and math.isfinite(x) else None
-
-
-def run_check(args) -> int:
-    """``polygon-method check SCENE [ANSWERS] [--json]``: 0 all right, 1 any wrong."""
-    from .scene import load_answers, load_scene
-
-    scene = load_scene(args.scene)
-    sol = solve(scene)
-    if args.answers:
-        tolerance, answers = load_answers(args.answers, scene)
-    else:
-        tolerance, answers = scene.tolerance, scene.answers
-    if not answers:
-        raise SceneError("nothing to check: the scene has no [answers] and no answer file "
-                         "was given", file=args.scene, key="[answers]")
-    verdicts = check_answers(sol, answers, tolerance)
-    if getattr(args, "json", False):
-        d = verdicts_dict(verdicts, args.scene, args.answers)
-        for a in d["answers"]:
-            for k in ("error_percent", "tolerance_percent"):
-                a[k] = _finite(a[k])
-        print(json.dumps(d, indent=2, allow_nan=False))
-    else:
-        title = f"{scene.title or args.scene}: answers from " + \
-            (args.answers if args.answers else "the scene")
-        print(verdicts_text(verdicts, title))
-    return 0 if all(v.ok for v in verdicts) else 1

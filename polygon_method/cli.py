@@ -8,8 +8,8 @@ Only this module writes files, and it writes them whole or not at all.
 from __future__ import annotations
 
 import argparse
-import math
 import json
+import math
 import os
 import sys
 import tempfile
@@ -78,16 +78,61 @@ def _cmd_steps(args) -> int:
     return 0
 
 
-def _cmd_check(args) -> int:
-    from .check import run_check
+def _finite(x):
+    """A number JSON can carry: None for an infinite or undefined one."""
+    return x if isinstance(x, (int, float)) and math.isfinite(x) else None
 
-    return run_check(args)
+
+def _cmd_check(args) -> int:
+    """``polygon-method check SCENE [ANSWERS] [--json]``: 0 all right, 1 any wrong."""
+    from .check import check_answers, verdicts_dict, verdicts_text
+    from .scene import load_answers, load_scene
+    from .solution import solve
+
+    scene = load_scene(args.scene)
+    sol = solve(scene)
+    if args.answers:
+        tolerance, answers = load_answers(args.answers, scene)
+    else:
+        tolerance, answers = scene.tolerance, scene.answers
+    if not answers:
+        raise SceneError("nothing to check: the scene has no [answers] and no answer file "
+                         "was given", file=args.scene, key="[answers]")
+    verdicts = check_answers(sol, answers, tolerance)
+    if getattr(args, "json", False):
+        d = verdicts_dict(verdicts, args.scene, args.answers)
+        for a in d["answers"]:
+            for k in ("error_percent", "tolerance_percent"):
+                a[k] = _finite(a[k])
+        print(json.dumps(d, indent=2, allow_nan=False))
+    else:
+        title = f"{scene.title or args.scene}: answers from " + \
+            (args.answers if args.answers else "the scene")
+        print(verdicts_text(verdicts, title))
+    return 0 if all(v.ok for v in verdicts) else 1
 
 
 def _cmd_draw(args) -> int:
-    from .draw import run_draw
+    """``polygon-method draw SCENE -o FILE.svg [--diagram ...] [--scale "1 cm = 0.1 m/s"]``:
+    written whole or not at all, and not at all when the scene cannot be solved."""
+    from .draw import FORMATS, display_unit, parse_scales, render
+    from .scene import load_scene
+    from .solution import solve
 
-    return run_draw(args, write_output)
+    out = Path(args.output)
+    fmt = out.suffix.lower().lstrip(".")
+    if fmt not in FORMATS:
+        raise PolygonMethodError(f"cannot draw to {out}: the file name must end in .svg, .png "
+                                 "or .pdf", key="-o")
+    scales = parse_scales(getattr(args, "scale", None))
+    sol = solve(load_scene(args.scene))
+    diagram = getattr(args, "diagram", None) or "all"
+    data, used, warnings = render(sol, fmt, diagram, scales)
+    for w in list(sol.warnings) + warnings:
+        print(f"warning: {w}", file=sys.stderr)
+    write_output(out, data, binary=fmt != "svg")
+    print(f"{out}: " + "; ".join(f"{name} {display_unit(s.text)}" for name, s in used.items()))
+    return 0
 
 
 def _requested_angles(args):
@@ -170,9 +215,12 @@ def _limits_text(dom) -> str:
 
 
 def _cmd_linkage(args) -> int:
-    from .linkage import run_linkage
+    """``polygon-method linkage SCENE``: print the linkage's properties."""
+    from .linkage import analyse
+    from .scene import load_scene
 
-    return run_linkage(args)
+    print(analyse(load_scene(args.scene)).text())
+    return 0
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -14,9 +14,9 @@ The drawing functions take a matplotlib Axes and return the artists they made::
     draw_acceleration(ax, sol, scale)
 
 :func:`make_figure` puts one or all three side by side on a sheet of the right physical
-size; :func:`render` returns SVG text, PNG or PDF bytes; :func:`run_draw` is the
-``polygon-method draw`` command. matplotlib is imported only inside these functions, so
-that ``import polygon_method`` and ``solve`` stay fast.
+size; :func:`render` returns SVG text, PNG or PDF bytes (the command line writes them).
+matplotlib is imported only inside these functions, so that ``import polygon_method`` and
+``solve`` stay fast.
 
 Labels are placed by trying positions around each point (shapely boxes) and taking the
 first whose box touches no line, arrow, outline or other label and is nearer to its own point
@@ -57,7 +57,7 @@ from .scales import Scale, choose_scale, diagram_scales, parse_scale
 from .scene import FixedPath
 
 __all__ = ["draw_configuration", "draw_velocity", "draw_acceleration", "make_figure",
-           "render", "svg_string", "run_draw", "choose_scales", "drawn_vectors",
+           "render", "svg_string", "choose_scales", "drawn_vectors",
            "DIAGRAMS", "CM_PER_INCH", "PT_PER_CM"]
 
 CM_PER_INCH = 2.54
@@ -109,7 +109,7 @@ IMAGE_FACE = "#f4d35e"
 # --------------------------------------------------------------------------- scales
 
 
-def _display_unit(text: str) -> str:
+def display_unit(text: str) -> str:
     return text.replace("^2", "\u00b2")
 
 
@@ -475,12 +475,12 @@ def _header(sk: _Sketch, tag: str, title: str, scale: Scale, lines=(), legend=()
         rows.append((h, lambda y: sk.note(x0, y, text, size, gid=gid, weight=weight)))
 
     text_row(title, TITLE_PT, "bold", gid=f"note-{tag}-title")
-    text_row(_display_unit(scale.text), NOTE_PT, gid=f"note-{tag}-scale")
+    text_row(display_unit(scale.text), NOTE_PT, gid=f"note-{tag}-scale")
     for ln in lines:
         text_row(ln, SMALL_PT, gid=f"note-{tag}-line-{len(rows)}")
     # scale bar: whole centimetres, labelled at both ends
     n = int(max(2, min(5, math.floor(max(width, 5.0) - 2.0))))
-    end_text = _display_unit(f"{_fmt_number(scale, n)} {scale.unit}")
+    end_text = display_unit(f"{_fmt_number(scale, n)} {scale.unit}")
 
     def bar(y):
         pts = [(x0 + 0.1, y), (x0 + 0.1 + n, y)]
@@ -1028,9 +1028,9 @@ def layout(sol, diagram: str = "all", scales=None):
         w, h = _panel_size(sketches[name])
         if max(w, h) > MAX_FIGURE_CM:
             raise PolygonMethodError(
-                f"the {name} diagram at {_display_unit(scale[name].text)} would be "
+                f"the {name} diagram at {display_unit(scale[name].text)} would be "
                 f"{max(w, h):.0f} cm across; use a coarser scale such as "
-                f"{_display_unit(choose_scales(sol, name)[name].text)}", key="--scale")
+                f"{display_unit(choose_scales(sol, name)[name].text)}", key="--scale")
         out.append((name, scale[name], sketches[name]))
     return out
 
@@ -1089,29 +1089,3 @@ def render(sol, fmt: str = "svg", diagram: str = "all", scales=None):
 def svg_string(sol, diagram: str = "all", scales=None) -> str:
     """The three diagrams side by side as SVG text (``Solution._repr_svg_``)."""
     return render(sol, "svg", diagram, scales)[0]
-
-
-def run_draw(args, write) -> int:
-    """``polygon-method draw SCENE -o FILE.svg [--diagram ...] [--scale "1 cm = 0.1 m/s"]``.
-
-    The file is written by ``write(path, data, binary=...)`` (the command line's, which
-    writes whole or not at all), and not at all when the scene cannot be solved."""
-    from pathlib import Path
-
-    from .scene import load_scene
-    from .solution import solve
-
-    out = Path(args.output)
-    fmt = out.suffix.lower().lstrip(".")
-    if fmt not in FORMATS:
-        raise PolygonMethodError(f"cannot draw to {out}: the file name must end in .svg, .png "
-                                 "or .pdf", key="-o")
-    scales = parse_scales(getattr(args, "scale", None))
-    sol = solve(load_scene(args.scene))
-    diagram = getattr(args, "diagram", None) or "all"
-    data, used, warnings = render(sol, fmt, diagram, scales)
-    for w in list(sol.warnings) + warnings:
-        print(f"warning: {w}", file=sys.stderr)
-    write(out, data, binary=fmt != "svg")
-    print(f"{out}: " + "; ".join(f"{name} {_display_unit(s.text)}" for name, s in used.items()))
-    return 0

@@ -42,7 +42,7 @@ from .solution import solve
 from .tracking import TWO_PI, Sweeper, degrees_fn, merge, run_arrays, valid_mask
 
 __all__ = ["grashof", "Grashof", "analyse", "Linkage", "Stationary", "Transmission",
-           "run_linkage", "engine_formula_lines", "slider_crank_of"]
+           "engine_formula_lines", "slider_crank_of"]
 
 #: relative tolerance of the equality S + L = P + Q (and of equal lengths)
 _EQUAL = 1e-9
@@ -895,12 +895,3 @@ def engine_formula_lines(scene: Scene, extremes=None) -> list:
 
 
 # --------------------------------------------------------------------------- command line
-
-
-def run_linkage(args) -> int:
-    """``polygon-method linkage SCENE``: print the linkage's properties."""
-    from .scene import load_scene
-
-    scene = load_scene(args.scene)
-    print(analyse(scene).text())
-    return 0
