@@ -40,7 +40,6 @@ values computed rather than drawn (the crank's) get 0.5 %.
 from __future__ import annotations
 
 import itertools
-import json
 import math
 import re
 import textwrap

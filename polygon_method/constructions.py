@@ -27,10 +27,15 @@ velocity (or acceleration) vector from the pole ``o`` (``o'``); the image of poi
 
 from __future__ import annotations
 
+import math
+
 from .steps import Construction, DirectionLine, Vector, image_label
 
 __all__ = ["Vector", "DirectionLine", "Construction", "velocity_constructions",
-           "acceleration_constructions", "image_label"]
+           "acceleration_constructions", "image_label", "drawn_vectors", "PRIORITY"]
+
+#: which of two coinciding vectors is drawn (the first in this order)
+PRIORITY = ("absolute", "coriolis", "centripetal", "tangential", "sliding", "relative")
 
 
 def velocity_constructions(sol) -> tuple:
@@ -43,3 +48,33 @@ def acceleration_constructions(sol) -> tuple:
     """The acceleration polygon, step by step."""
     return sol._get("acons", lambda: tuple(st.construction(sol, "acceleration")
                                            for st in sol.plan.steps))
+
+
+def drawn_vectors(sol, phase: str) -> tuple:
+    """The vectors a polygon shows, in drawing order: every given and found vector of the
+    construction records, zero ones left out, and of two that coincide only one (a total
+    before a component, a component before a relative vector). The n-th is drawn with
+    gid ``{phase}-vector-{n}-shaft`` / ``-head``. A carried point's relative vector is
+    left out: its image triangle (or the line it lies on) shows it."""
+    cons = velocity_constructions(sol) if phase == "velocity" else \
+        acceleration_constructions(sol)
+    steps = sol.plan.steps
+    vecs = [v for c in cons for v in c.given + c.found
+            if not (v.kind == "relative" and steps[c.step].kind == "carried")]
+    ref = max((v.magnitude for v in vecs), default=0.0)
+    tol = 1e-9 * ref
+    keep = {}
+    for v in vecs:
+        if v.magnitude <= tol:
+            continue
+        key = None
+        for k, w in keep.items():
+            if (math.dist(v.start, w.start) <= tol and math.dist(v.end, w.end) <= tol):
+                key = k
+                break
+        if key is None:
+            keep[len(keep)] = v
+        elif PRIORITY.index(v.kind) < PRIORITY.index(keep[key].kind):
+            keep[key] = v
+    return tuple(keep.values())
+

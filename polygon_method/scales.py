@@ -18,11 +18,13 @@ import re
 from dataclasses import dataclass
 from decimal import Decimal
 
-from .errors import SceneError
+from .constructions import acceleration_constructions, drawn_vectors, velocity_constructions
+from .errors import PolygonMethodError, SceneError
 from .units import UNITS
 
-__all__ = ["Scale", "choose_scale", "parse_scale", "diagram_scales", "MANTISSAS",
-           "FIT_CM", "SPACE_FIT_CM", "DRAWING_PRECISION_CM", "extent"]
+__all__ = ["Scale", "choose_scale", "parse_scale", "diagram_scales", "choose_scales",
+           "parse_scales", "coarser", "finer", "MANTISSAS", "FIT_CM", "SPACE_FIT_CM",
+           "DRAWING_PRECISION_CM", "extent", "DIAGRAMS", "KIND_OF_DIAGRAM"]
 
 #: the round numbers a textbook scale is made of (times a power of ten)
 MANTISSAS = ("1", "2", "2.5", "5")
@@ -155,8 +157,6 @@ def diagram_scales(sol, fit_cm: float = FIT_CM, space_fit_cm: float = SPACE_FIT_
     point for a polygon, and the ends of the components its construction draws) is at most ``space_fit_cm`` (configuration, in the scene's length
     unit) or ``fit_cm`` (each polygon).
     """
-    from .constructions import acceleration_constructions, velocity_constructions
-
     def drawn(records):  # every end of every vector the construction draws
         return [p for c in records for v in c.given + c.found for p in (v.start, v.end)]
 
@@ -167,3 +167,104 @@ def diagram_scales(sol, fit_cm: float = FIT_CM, space_fit_cm: float = SPACE_FIT_
     return (choose_scale(extent(sol.P.values()), space_fit_cm, unit=sc.units),
             choose_scale(extent(vel), fit_cm, unit="m/s"),
             choose_scale(extent(acc), fit_cm, unit="m/s^2"))
+
+# --------------------------------------------------------------------------- the sheets
+
+
+def display_unit(text: str) -> str:
+    """``m/s^2`` as printed on a drawing: ``m/s\u00b2``."""
+    return text.replace("^2", "\u00b2")
+
+DIAGRAMS = ("configuration", "velocity", "acceleration")
+KIND_OF_DIAGRAM = {"configuration": "length", "velocity": "velocity",
+                   "acceleration": "acceleration"}
+#: A4 portrait for one diagram, A4 landscape for the three side by side (cm)
+SHEET_ONE = (21.0, 29.7)
+SHEET_ALL = (29.7, 21.0)
+MARGIN = 0.8  # sheet margin (cm)
+GAP = 0.8  # between panels (cm)
+
+
+def _scale_unit(kind: str, sol) -> str:
+    return {"length": sol.scene.units, "velocity": "m/s", "acceleration": "m/s^2"}[kind]
+
+
+def _extents_si(sol, diagram):
+    """Width and height (SI) of what a diagram must show: the mechanism's points, or the
+    pole and every point and vector end of a polygon."""
+    if diagram == "configuration":
+        pts = list(sol.P.values())
+    else:
+        pts = [(0.0, 0.0)] + [p for v in drawn_vectors(sol, diagram) for p in (v.start, v.end)]
+        pts += list((sol.V if diagram == "velocity" else sol.A).values())
+    xs = [p[0] for p in pts]
+    ys = [p[1] for p in pts]
+    return max(xs) - min(xs), max(ys) - min(ys)
+
+
+def _room(diagram: str, n: int):
+    """(width, height) in cm left for the geometry of one panel on its sheet: the sheet
+    less its margins, the gaps, a header and room for labels around the figure."""
+    sw, sh = SHEET_ALL if n > 1 else SHEET_ONE
+    w = (sw - 2 * MARGIN - (n - 1) * GAP) / min(n, 2)  # (the sheet is shared out later)
+    h = sh - 2 * MARGIN
+    header = 4.2 if diagram == "acceleration" else 3.0
+    return w - 1.6, h - header - 1.6
+
+
+def _fit_scale(sol, diagram, room) -> Scale:
+    """The smallest textbook-round scale at which the diagram fits ``room`` (cm)."""
+    ex, ey = _extents_si(sol, diagram)
+    need = max(ex / room[0], ey / room[1])
+    unit = _scale_unit(KIND_OF_DIAGRAM[diagram], sol)
+    return choose_scale(need, 1.0, unit=unit)
+
+
+def coarser(scale: Scale) -> Scale:
+    """The next round scale after ``scale`` (the drawing gets smaller)."""
+    return choose_scale(scale.per_cm * (1 + 1e-9), 1.0, unit=scale.unit)
+
+
+def finer(scale: Scale) -> Scale:
+    """The round scale before ``scale`` (the drawing gets larger)."""
+    s = choose_scale(scale.per_cm / 2.6, 1.0, unit=scale.unit)
+    while True:
+        n = coarser(s)
+        if n.per_cm >= scale.per_cm * (1 - 1e-9):
+            return s
+        s = n
+
+
+def choose_scales(sol, diagram: str = "all", given=None) -> dict:
+    """First choice of each diagram's scale: ``given`` ones (by diagram name or kind) are
+    kept, the others are the smallest textbook-round scales at which the diagram's points
+    fit the room a panel can have on an A4 page (portrait for one diagram, landscape for
+    three side by side). The drawing's layout then coarsens them until the labelled sheet
+    fits."""
+    names = DIAGRAMS if diagram == "all" else (diagram,)
+    given = dict(given or {})
+    out = {}
+    for name in names:
+        s = given.get(name) or given.get(KIND_OF_DIAGRAM[name])
+        if s is None and len(names) == 1:  # one diagram: the scale `steps` states
+            s = dict(zip(DIAGRAMS, diagram_scales(sol)))[name]
+        out[name] = s if s is not None else _fit_scale(sol, name, _room(name, len(names)))
+    return out
+
+
+def parse_scales(texts) -> dict:
+    """``--scale`` arguments (possibly repeated) -> {kind: Scale}; a kind given twice is an
+    error."""
+    out = {}
+    for text in texts or ():
+        try:
+            s = parse_scale(text)
+        except PolygonMethodError as exc:
+            raise PolygonMethodError(exc.message, key="--scale") from None
+        if s.kind in out:
+            raise PolygonMethodError(f"two {s.kind} scales given ({out[s.kind]} and {s})",
+                                     key="--scale")
+        out[s.kind] = s
+    return out
+
+

@@ -25,7 +25,7 @@ from .derived import power_terms, rubbing_at
 from .errors import TOL
 from .kinematics import Motion, hypot
 from .numbers import fmt_angular, sense  # noqa: F401  (re-exported)
-from .plan import Context, Plan, compile_plan
+from .plan import Context, compile_plan
 from .scene import FixedPath, Scene
 
 __all__ = ["solve", "Solution", "PinRubbing", "sense", "fmt_angular"]

@@ -1,0 +1,347 @@
+"""The three diagrams as sketches: the configuration (space) diagram and the velocity and
+acceleration polygons, read from the solution and the steps' construction records."""
+
+from __future__ import annotations
+
+import math
+import re
+
+from ..constructions import (acceleration_constructions, drawn_vectors, image_label,
+                             velocity_constructions)
+from ..numbers import fmt_angular
+from ..scales import Scale
+from ..scene import FixedPath
+from .sketch import _angle_between, _header, _Sketch
+from .style import (BAR, BODY_EDGE, BODY_FACE, DOT_R, IMAGE_FACE, JOINT_R, LABEL_PT,
+                     LEGEND_NAMES, LINE_STYLE, MARK_PT, OVERSHOOT, POLE_R, STYLE)
+
+# --------------------------------------------------------------------------- configuration
+
+
+def _configuration(sol, scale: Scale) -> _Sketch:
+    from shapely.geometry import MultiPoint
+    sc = sol.scene
+    s = scale.per_cm
+    P = {k: (x / s, y / s) for k, (x, y) in sol.P.items()}
+    sk = _Sketch()
+    carried_on = {}
+    for cp in sc.points:
+        carried_on.setdefault(cp.link, []).append(cp.name)
+    # frame: links between two ground points
+    for lk in sc.links:
+        if lk.p in sc.ground and lk.q in sc.ground:
+            sk.line([P[lk.p], P[lk.q]], gid=f"frame-{lk.key}", color="#555555", lw=0.6,
+                    dashes=(6, 2, 1, 2), z=1)
+    # sliders on fixed paths: line of stroke, guide wall with hatching
+    for sl in sc.sliders:
+        if isinstance(sl, FixedPath):
+            _fixed_guide(sk, sc, sl, P, s)
+    # links as bars, a link with carried points as a plate
+    for lk in sc.links:
+        if lk.p in sc.ground and lk.q in sc.ground:
+            continue
+        pts = [P[lk.p], P[lk.q]] + [P[c] for c in carried_on.get(lk.key, ())]
+        body = MultiPoint(pts).convex_hull.buffer(BAR / 2, quad_segs=8)
+        sk.polygon(list(body.exterior.coords), gid=f"link-{lk.key}", face=BODY_FACE,
+                   edge=BODY_EDGE, lw=0.8, z=2, obstacle="edge")
+        for a in pts:
+            for b in pts:
+                if a < b:
+                    sk.hints.append((a, b))
+    # blocks
+    for sl in sc.sliders:
+        X = P[sl.point]
+        if isinstance(sl, FixedPath):
+            u = sl.u
+        else:
+            (x1, y1), (x2, y2) = P[sl.first], P[sl.second]
+            n = math.hypot(x2 - x1, y2 - y1)
+            u = ((x2 - x1) / n, (y2 - y1) / n)
+        size = _block_size(sc, sl.point, P)
+        sk.polygon(_rect(X, u, size, 0.55 * size), gid=f"block-{sl.point}", face="#ffffff",
+                   edge="#000000", lw=0.9, z=3)
+        sk.hints.append(((X[0] - size / 2 * u[0], X[1] - size / 2 * u[1]),
+                         (X[0] + size / 2 * u[0], X[1] + size / 2 * u[1])))
+    # pins at their given sizes
+    for pin in sc.pins:
+        r = pin.radius / s
+        if r > JOINT_R * 1.2:
+            sk.circle(P[pin.point], r, gid=f"pin-{pin.point}", face="none", edge="#8a8a8a",
+                      lw=0.6, z=4, obstacle="edge")
+    # ground pivots, hatched
+    for g in sc.ground:
+        away = [P[lk.other(g)] for lk in sc.links if g in lk.points
+                and lk.other(g) not in sc.ground]
+        away += [P[c] for lk in sc.links if g in lk.points for c in carried_on.get(lk.key, ())]
+        if away:
+            near = [P[p] for p in sc.point_names if p != g and 0 < math.dist(P[p], P[g]) < 1.2]
+            _ground_symbol(sk, g, P[g], away + near)
+    # the crank angle
+    _crank_angle(sk, sc, P)
+    # joints and points
+    joints = set(sc.ground) | {p for lk in sc.links for p in lk.points} | \
+        {sl.point for sl in sc.sliders}
+    for name in sc.point_names:
+        if name in joints:
+            sk.circle(P[name], JOINT_R, gid=f"joint-{name}", z=6)
+        else:
+            sk.circle(P[name], DOT_R, gid=f"joint-{name}", face="#000000", z=6)
+    for name in sc.point_names:
+        sk.label(name, [P[name]], LABEL_PT, gid=f"label-{name}", point=True)
+    _crank_angle_label(sk, sc, P)
+    sk.place_labels()
+    inp = sc.input
+    drive = f"crank {inp.crank} at {_deg(inp.angle)}, {inp.speed_text}"
+    if inp.alpha:
+        drive += f", {fmt_angular(inp.alpha, 'rad/s²')}"
+    _header(sk, "configuration", "Configuration diagram", scale, lines=[drive])
+    return sk
+
+
+def _deg(rad: float) -> str:
+    d = math.degrees(rad)
+    return f"{d:.4g}\u00b0"
+
+
+def _block_size(sc, point, P):
+    """A slider block's length (cm): 0.9, less on short links so the block does not hide
+    them."""
+    near = [math.dist(P[point], P[lk.other(point)]) for lk in sc.links if point in lk.points]
+    return min(0.9, max(0.5, 0.45 * min(near, default=2.0)))
+
+
+def _rect(c, u, length, width):
+    ux, uy = u
+    nx, ny = -uy, ux
+    a, b = length / 2, width / 2
+    return [(c[0] + sx * a * ux + sy * b * nx, c[1] + sx * a * uy + sy * b * ny)
+            for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+
+
+def _fixed_guide(sk, sc, sl, P, s):
+    """The line of stroke (chain-dotted, through the path's given point) and the guide's
+    wall on the side away from the connecting link, hatched."""
+    X = P[sl.point]
+    ux, uy = sl.u
+    nx, ny = -uy, ux
+    tx, ty = sl.through[0] / s, sl.through[1] / s
+    t_through = (tx - X[0]) * ux + (ty - X[1]) * uy
+    lo, hi = min(-1.8, t_through - 0.5), max(1.8, t_through + 0.5)
+    sk.line([(X[0] + lo * ux, X[1] + lo * uy), (X[0] + hi * ux, X[1] + hi * uy)],
+            gid=f"stroke-{sl.point}", color="#555555", lw=0.5, dashes=(6, 2, 1, 2), z=1)
+    rod = next((P[lk.other(sl.point)] for lk in sc.links if sl.point in lk.points), None)
+    side = 1.0
+    if rod is not None and ((rod[0] - X[0]) * nx + (rod[1] - X[1]) * ny) > 0:
+        side = -1.0
+    off = 0.55 * _block_size(sc, sl.point, P) / 2 + 0.02
+    a = (X[0] - 1.6 * ux + side * off * nx, X[1] - 1.6 * uy + side * off * ny)
+    b = (X[0] + 1.6 * ux + side * off * nx, X[1] + 1.6 * uy + side * off * ny)
+    sk.line([a, b], gid=f"guide-{sl.point}", lw=1.0, z=2)
+    hatch = []
+    for i in range(12):
+        t = -1.42 + i * 3.02 / 11
+        p = (X[0] + t * ux + side * off * nx, X[1] + t * uy + side * off * ny)
+        q = (p[0] + side * 0.18 * nx - 0.18 * ux, p[1] + side * 0.18 * ny - 0.18 * uy)
+        hatch.append((p, q))
+    sk.segments(hatch, gid=f"guide-{sl.point}-hatch", lw=0.5, z=2)
+    far = (a[0] + side * 0.2 * nx, a[1] + side * 0.2 * ny)
+    far2 = (b[0] + side * 0.2 * nx, b[1] + side * 0.2 * ny)
+    from shapely.geometry import Polygon
+    sk.obstacles.append(Polygon([a, b, far2, far]).buffer(0.02))
+    sk.bounds.append((min(a[0], far[0], b[0], far2[0]), min(a[1], far[1], b[1], far2[1]),
+                      max(a[0], far[0], b[0], far2[0]), max(a[1], far[1], b[1], far2[1])))
+
+
+def _ground_symbol(sk, name, g, away):
+    """A fixed pivot: a bracket (triangle) from the pin to a hatched base, turned away from
+    the links that leave it (below it where that is clear)."""
+    out = [math.atan2(p[1] - g[1], p[0] - g[0]) for p in away if math.dist(p, g) > 1e-9]
+    q = math.pi / 4
+    best, best_c = -math.pi / 2, -1.0
+    for th, need in ((-2 * q, 45), (4 * q, 60), (0.0, 60), (2 * q, 60), (-3 * q, 60),
+                     (-q, 60), (3 * q, 60), (q, 60)):
+        c = min((_angle_between(th, a) for a in out), default=math.pi)
+        if c >= math.radians(need):
+            best = th
+            break
+        if c > best_c:
+            best, best_c = th, c
+    dx, dy = math.cos(best), math.sin(best)
+    nx, ny = -dy, dx
+    d, half, wide = 0.5, 0.3, 0.42
+    base = (g[0] + d * dx, g[1] + d * dy)
+    tri = [g, (base[0] + half * nx, base[1] + half * ny),
+           (base[0] - half * nx, base[1] - half * ny)]
+    sk.polygon(tri, gid=f"ground-{name}", face="#ffffff", edge="#000000", lw=0.8, z=4)
+    sk.line([(base[0] + wide * nx, base[1] + wide * ny),
+             (base[0] - wide * nx, base[1] - wide * ny)], gid=f"ground-{name}-base", lw=1.0,
+            z=4)
+    hatch = []
+    for i in range(6):
+        t = -wide + 0.17 + i * (2 * wide - 0.17) / 5
+        p = (base[0] + t * nx, base[1] + t * ny)
+        hatch.append((p, (p[0] + 0.17 * dx - 0.17 * nx, p[1] + 0.17 * dy - 0.17 * ny)))
+    sk.segments(hatch, gid=f"ground-{name}-hatch", lw=0.5, z=4)
+    from shapely.geometry import Polygon
+    far = (base[0] + 0.2 * dx, base[1] + 0.2 * dy)
+    sk.obstacles.append(Polygon([(base[0] + (wide + 0.2) * nx, base[1] + (wide + 0.2) * ny),
+                                 (base[0] - (wide + 0.2) * nx, base[1] - (wide + 0.2) * ny),
+                                 (far[0] - (wide + 0.2) * nx, far[1] - (wide + 0.2) * ny),
+                                 (far[0] + (wide + 0.2) * nx, far[1] + (wide + 0.2) * ny)]))
+    for p, q in hatch:
+        sk._bound([p, q])
+
+
+def _crank_arc(sc, P):
+    inp = sc.input
+    O = P[inp.pivot]
+    th = math.remainder(inp.angle, 2 * math.pi)
+    crank = math.dist(O, P[inp.tip])
+    r = min(max(min(0.55 * crank, crank - 0.6), 0.45), 1.4)
+    return O, th, r
+
+
+def _crank_angle(sk, sc, P):
+    """The crank angle: a reference line along +x from the crank's pivot and an arc from it
+    to the crank."""
+    O, th, r = _crank_arc(sc, P)
+    if abs(th) < 1e-9:
+        return
+    sk.line([O, (O[0] + r + 0.5, O[1])], gid="crank-reference", color="#555555", lw=0.5,
+            dashes=(6, 2, 1, 2), z=1)
+    n = max(8, int(abs(math.degrees(th)) / 3))
+    pts = [(O[0] + r * math.cos(th * i / n), O[1] + r * math.sin(th * i / n))
+           for i in range(n + 1)]
+    sk.line(pts, gid="crank-angle", lw=0.6, z=3, hint=False)
+
+
+def _crank_angle_label(sk, sc, P):
+    O, th, r = _crank_arc(sc, P)
+    if abs(th) < 1e-9:
+        return
+    mids = [(O[0] + r * math.cos(th * f), O[1] + r * math.sin(th * f)) for f in (0.5, 0.3, 0.7)]
+    sk.label(_deg(abs(th)), mids, MARK_PT, gid="label-crank-angle", leader=True)
+
+
+# --------------------------------------------------------------------------- polygons
+
+
+
+_RELATION = [(re.compile(r"^perpendicular to (.+)$"), "\u22a5 {}"),
+             (re.compile(r"^parallel to the path.*$"), "\u2225 path"),
+             (re.compile(r"^parallel to (.+)$"), "\u2225 {}")]
+
+
+def _relation_mark(text: str) -> str:
+    for pat, fmt in _RELATION:
+        m = pat.match(text)
+        if m:
+            return fmt.format(*m.groups())
+    return text
+
+
+_POINT_LABEL = re.compile(r"^[a-z][0-9]*'?$")
+
+
+def _polygon(sol, scale: Scale, phase: str) -> _Sketch:
+    s = scale.per_cm
+    D = sol.V if phase == "velocity" else sol.A
+    prime = "" if phase == "velocity" else "'"
+    cm = lambda p: (p[0] / s, p[1] / s)  # noqa: E731
+    cons = velocity_constructions(sol) if phase == "velocity" else \
+        acceleration_constructions(sol)
+    vectors = drawn_vectors(sol, phase)
+    ref = max([v.magnitude for v in vectors] + [math.hypot(*p) for p in D.values()] + [0.0])
+    tol = 1e-9 * ref if ref else 1e-12
+    sk = _Sketch()
+    # image triangles, lightly shaded
+    steps = sol.plan.steps
+    for c in cons:
+        st = steps[c.step]
+        if st.image_by_similar_triangle:
+            tri = [cm(D[st.p]), cm(D[st.q]), cm(D[st.point])]
+            sk.polygon(tri, gid=f"{phase}-image-{st.point}", face=IMAGE_FACE, edge="#b08d00",
+                       lw=0.5, alpha=0.45, z=1, obstacle="edge")
+    # construction lines, dashed, through the point they start from
+    marks = []
+    for c in cons:
+        on = [c.point] + [p for v in c.given + c.found for p in (v.start, v.end)]
+        for i, ln in enumerate(c.lines):
+            (px, py), (dx, dy) = ln.point, ln.direction
+            ts = [0.0] + [((q[0] - px) * dx + (q[1] - py) * dy) for q in on
+                          if abs((q[0] - px) * dy - (q[1] - py) * dx) <= tol]
+            lo, hi = min(ts) / s - OVERSHOOT, max(ts) / s + OVERSHOOT
+            a = (px / s + lo * dx, py / s + lo * dy)
+            b = (px / s + hi * dx, py / s + hi * dy)
+            color, lw, dashes = LINE_STYLE
+            sk.line([a, b], gid=f"{phase}-line-{c.step}-{i}", color=color, lw=lw,
+                    dashes=dashes, z=2)
+            marks.append((_relation_mark(ln.relation), [b, a], f"{phase}-mark-{c.step}-{i}"))
+    # vectors
+    for n, v in enumerate(vectors):
+        color, lw, dashes = STYLE[v.kind]
+        sk.arrow(cm(v.start), cm(v.end), f"{phase}-vector-{n}", color, lw, dashes)
+    # points: the pole, every image point, the named intermediate points
+    names = {}
+
+    def name_at(xy, text):
+        for k in names:
+            if math.dist(k, xy) <= tol:
+                if text not in names[k]:
+                    names[k].append(text)
+                return
+        names[tuple(xy)] = [text]
+
+    pole = "o" + prime
+    name_at((0.0, 0.0), pole)
+    for p in sol.scene.point_names:
+        if p not in sol.scene.ground:
+            name_at(D[p], image_label(sol, p, phase))
+    for c in cons:
+        for ln in c.lines:
+            if _POINT_LABEL.match(ln.through):
+                name_at(ln.point, ln.through)
+        for v in c.given + c.found:
+            for k, labs in list(names.items()):
+                if math.dist(k, v.start) <= tol:
+                    for lab in labs:
+                        rest = v.label[len(lab):] if v.label.startswith(lab) else ""
+                        if _POINT_LABEL.match(rest) and rest not in labs:
+                            if not any(math.dist(k2, v.end) <= tol for k2 in names):
+                                name_at(v.end, rest)
+                    break
+    for xy, labs in names.items():
+        r = POLE_R if pole in labs else DOT_R
+        sk.circle(cm(xy), r, gid=f"{phase}-point-{'-'.join(labs).replace(chr(39), 'p')}",
+                  face="#000000", z=6)
+    for xy, labs in sorted(names.items(), key=lambda kv: pole not in kv[1]):
+        labs = [pole] + [x for x in labs if x != pole] if pole in labs else labs
+        sk.label(", ".join(labs), [cm(xy)], LABEL_PT,
+                 gid=f"label-{'-'.join(labs).replace(chr(39), 'p')}", point=True)
+    for text, anchors, gid in marks:
+        sk.label(text, anchors, MARK_PT, gid=f"label-{gid}",
+                 color="#555555")
+    sk.place_labels()
+    if phase == "velocity":
+        legend = [("line", "construction line (\u22a5 / \u2225 to a link)")]
+        if any(steps[c.step].image_by_similar_triangle for c in cons):
+            legend.append(("image", "image of a link triangle"))
+        _header(sk, phase, "Velocity polygon", scale, legend=legend)
+    else:
+        kinds = []
+        for v in vectors:
+            if v.kind not in kinds:
+                kinds.append(v.kind)
+        order = ["centripetal", "tangential", "coriolis", "sliding", "absolute", "relative"]
+        legend = [(k, LEGEND_NAMES[k]) for k in order if k in kinds]
+        legend.append(("line", "construction line"))
+        _header(sk, phase, "Acceleration polygon", scale, legend=legend)
+    return sk
+
+
+def _sketch(sol, diagram: str, scale: Scale) -> _Sketch:
+    if diagram == "configuration":
+        return _configuration(sol, scale)
+    return _polygon(sol, scale, diagram)
+
+

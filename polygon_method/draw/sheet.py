@@ -1,0 +1,228 @@
+"""Painting sketches on matplotlib Axes, and the sheet: one diagram or all three side by
+side on a page of the right physical size, rendered as SVG (byte-stable), PNG or PDF."""
+
+from __future__ import annotations
+
+import io
+
+from ..errors import PolygonMethodError
+from ..scales import choose_scales, coarser, display_unit, finer, parse_scale
+from .diagrams import _configuration, _polygon, _sketch
+from .sketch import _Sketch
+from .style import (CM_PER_INCH, DIAGRAMS, FONT, FORMATS, GAP, KIND_OF_DIAGRAM, MARGIN,
+                     MAX_FIGURE_CM, PNG_DPI, SHEET_ALL, SHEET_ONE)
+
+# --------------------------------------------------------------------------- painting
+
+
+def _paint(ax, sk: _Sketch, pad: float = 0.3) -> list:
+    """Make the matplotlib artists of a sketch on ``ax`` (data units: cm) and set the axes'
+    limits to the panel's extent. Returns the artists."""
+    from matplotlib.collections import LineCollection
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Circle, Polygon
+
+    artists = []
+    used = set()
+
+    def unique(gid):  # SVG ids must be unique (a point B1's image b1 and a coincident b1)
+        base, k = gid, 1
+        while gid in used:
+            k += 1
+            gid = f"{base}-{k}"
+        used.add(gid)
+        return gid
+
+    for kind, geo, st in sk.items:
+        gid, z = st["gid"], st["z"]
+        if kind == "line":
+            a = Line2D([p[0] for p in geo], [p[1] for p in geo], color=st["color"],
+                       linewidth=st["lw"], zorder=z, solid_capstyle="butt",
+                       dash_capstyle="butt", solid_joinstyle="round")
+            if st["dashes"]:
+                a.set_dashes(st["dashes"])
+            ax.add_line(a)
+        elif kind == "polygon":
+            a = Polygon(geo, closed=True, facecolor=st["face"], edgecolor=st["edge"],
+                        linewidth=st["lw"], zorder=z, alpha=st["alpha"] if st["alpha"] < 1
+                        else None, joinstyle="miter" if gid and "head" in gid else "round")
+            ax.add_patch(a)
+        elif kind == "segments":
+            a = LineCollection(geo, colors=st["color"], linewidths=st["lw"], zorder=z)
+            ax.add_collection(a, autolim=False)
+        elif kind == "circle":
+            a = Circle(geo[0], geo[1], facecolor=st["face"], edgecolor=st["edge"],
+                       linewidth=st["lw"], zorder=z)
+            ax.add_patch(a)
+        else:  # pragma: no cover
+            raise ValueError(kind)
+        a.set_gid(unique(gid) if gid else None)
+        a.set_clip_on(False)
+        artists.append(a)
+    for lab in sk.labels + sk.notes:
+        cx, cy, w, h = lab.box
+        t = ax.text(cx, cy, lab.text, fontsize=lab.size, fontfamily=FONT,
+                    fontweight=lab.weight, color=lab.color, ha="center", va="center",
+                    parse_math=False, zorder=8)
+        t.set_gid(unique(lab.gid))
+        t.set_clip_on(False)
+        artists.append(t)
+    x0, y0, x1, y1 = sk.content_box()
+    if sk.notes:
+        n0, m0, n1, m1 = sk.note_box()
+        x0, y0, x1, y1 = min(x0, n0), min(y0, m0), max(x1, n1), max(y1, m1)
+    ax.set_xlim(x0 - pad, x1 + pad)
+    ax.set_ylim(y0 - pad, y1 + pad)
+    ax.set_aspect("equal")
+    ax.set_axis_off()
+    return artists
+
+
+def _scale_arg(sol, diagram, scale):
+    if scale is None:
+        return choose_scales(sol, diagram)[diagram]
+    if isinstance(scale, str):
+        return parse_scale(scale, KIND_OF_DIAGRAM[diagram])
+    return scale
+
+
+def draw_configuration(ax, sol, scale=None) -> list:
+    """Draw the configuration (space) diagram on ``ax`` in centimetres of paper: links as
+    bars (a link carrying a point as a plate), hatched ground pivots, slider blocks and
+    guides, pins at their given sizes, point labels, the crank angle, the scale.
+    ``scale``: a :class:`~polygon_method.scales.Scale`, ``"1 cm = 20 mm"``, or None
+    (chosen to fit A4). Returns the artists."""
+    return _paint(ax, _configuration(sol, _scale_arg(sol, "configuration", scale)))
+
+
+def draw_velocity(ax, sol, scale=None) -> list:
+    """Draw the velocity polygon on ``ax`` (cm of paper): pole o, vectors from o, the
+    dashed construction lines marked perpendicular/parallel, image triangles shaded, the
+    scale note and bar. Returns the artists."""
+    return _paint(ax, _polygon(sol, _scale_arg(sol, "velocity", scale), "velocity"))
+
+
+def draw_acceleration(ax, sol, scale=None) -> list:
+    """Draw the acceleration polygon on ``ax`` (cm of paper): pole o', centripetal,
+    tangential and Coriolis components in their own styles, the totals, image points, the
+    scale note. Returns the artists."""
+    return _paint(ax, _polygon(sol, _scale_arg(sol, "acceleration", scale), "acceleration"))
+
+
+# --------------------------------------------------------------------------- the sheet
+
+
+def _panel_size(sk: _Sketch, pad=0.3):
+    x0, y0, x1, y1 = sk.content_box()
+    n0, m0, n1, m1 = sk.note_box()
+    return (max(x1, n1) - min(x0, n0) + 2 * pad, max(y1, m1) - min(y0, m0) + 2 * pad)
+
+
+def layout(sol, diagram: str = "all", scales=None):
+    """The sketches and scales of a sheet: ``[(name, scale, sketch)]``. Scales not given
+    start as the largest round ones a panel could take and, while the sheet overflows A4,
+    the widest panel (or one too tall) is made one round step coarser."""
+    names = DIAGRAMS if diagram == "all" else (diagram,)
+    if diagram not in DIAGRAMS + ("all",):
+        raise PolygonMethodError(f"unknown diagram {diagram!r}; use configuration, velocity, "
+                                 "acceleration or all", key="--diagram")
+    given = dict(scales or {})
+    scale = choose_scales(sol, diagram, given)
+    fixed = {n: (given.get(n) or given.get(KIND_OF_DIAGRAM[n])) is not None for n in names}
+    sw, sh = SHEET_ALL if len(names) > 1 else SHEET_ONE
+    room_w, room_h = sw - 2 * MARGIN - (len(names) - 1) * GAP, sh - 2 * MARGIN
+    sketches = {n: _sketch(sol, n, scale[n]) for n in names}
+    for _ in range(8 * len(names)):  # coarsen the widest (or a too tall) panel until it fits
+        size = {n: _panel_size(sketches[n]) for n in names}
+        free = [n for n in names if not fixed[n]]
+        tall = [n for n in free if size[n][1] > room_h]
+        if not tall and sum(w for w, _ in size.values()) <= room_w:
+            break
+        if not free:
+            break
+        n = tall[0] if tall else max(free, key=lambda k: size[k][0])
+        scale[n] = coarser(scale[n])
+        sketches[n] = _sketch(sol, n, scale[n])
+    def fits(trial):
+        size = [_panel_size(trial[n]) for n in names]
+        return (sum(w for w, _ in size) <= room_w and all(h <= room_h for _, h in size))
+
+    if len(names) > 1 and fits(sketches):  # use the room left: a step finer where it fits
+        # (one diagram keeps the scale `steps` states, so the two agree)
+        for _ in range(4):
+            better = False
+            for n in sorted(free, key=lambda k: k == "configuration"):
+                trial = dict(sketches)
+                step = finer(scale[n])
+                trial[n] = _sketch(sol, n, step)
+                if fits(trial):
+                    scale[n], sketches, better = step, trial, True
+            if not better:
+                break
+    out = []
+    for name in names:
+        w, h = _panel_size(sketches[name])
+        if max(w, h) > MAX_FIGURE_CM:
+            raise PolygonMethodError(
+                f"the {name} diagram at {display_unit(scale[name].text)} would be "
+                f"{max(w, h):.0f} cm across; use a coarser scale such as "
+                f"{display_unit(choose_scales(sol, name)[name].text)}", key="--scale")
+        out.append((name, scale[name], sketches[name]))
+    return out
+
+
+def make_figure(sol, diagram: str = "all", scales=None):
+    """A matplotlib Figure of the physical size of its content: one axes per diagram, each
+    positioned so that one data unit is one centimetre on the page.
+
+    Returns ``(figure, {diagram: Scale}, warnings)``."""
+    from matplotlib.figure import Figure
+
+    panels = layout(sol, diagram, scales)
+    sizes = [_panel_size(sk) for _, _, sk in panels]
+    W = 2 * MARGIN + sum(w for w, _ in sizes) + GAP * (len(sizes) - 1)
+    H = 2 * MARGIN + max(h for _, h in sizes)
+    fig = Figure(figsize=(W / CM_PER_INCH, H / CM_PER_INCH), dpi=72)
+    x = MARGIN
+    warnings = []
+    for (name, scale, sk), (w, h) in zip(panels, sizes):
+        ax = fig.add_axes((x / W, (H - MARGIN - h) / H, w / W, h / H))
+        ax.set_gid(f"panel-{name}")
+        _paint(ax, sk)
+        warnings += [f"{name}: {m}" for m in sk.warnings]
+        x += w + GAP
+    return fig, {name: scale for name, scale, _ in panels}, warnings
+
+
+def _rc():
+    return {"svg.hashsalt": "polygon-method", "svg.fonttype": "path", "font.family": FONT,
+            "path.simplify": False, "svg.image_inline": True}
+
+
+def render(sol, fmt: str = "svg", diagram: str = "all", scales=None):
+    """The sheet as SVG text (deterministic: fixed hash salt, no date) or PNG/PDF bytes.
+
+    Returns ``(data, {diagram: Scale}, warnings)``."""
+    import matplotlib
+
+    if fmt not in FORMATS:
+        raise PolygonMethodError(f"cannot draw {fmt!r}: use svg, png or pdf")
+    with matplotlib.rc_context(_rc()):
+        fig, used, warnings = make_figure(sol, diagram, scales)
+        if fmt == "svg":
+            buf = io.StringIO()
+            fig.savefig(buf, format="svg", metadata={"Date": None})
+            return buf.getvalue(), used, warnings
+        buf = io.BytesIO()
+        if fmt == "png":
+            fig.savefig(buf, format="png", dpi=PNG_DPI, metadata={"Software": None})
+        else:
+            fig.savefig(buf, format="pdf", metadata={"CreationDate": None, "ModDate": None,
+                                                     "Producer": None})
+        return buf.getvalue(), used, warnings
+
+
+def svg_string(sol, diagram: str = "all", scales=None) -> str:
+    """The three diagrams side by side as SVG text (``Solution._repr_svg_``)."""
+    return render(sol, "svg", diagram, scales)[0]
+

@@ -1,0 +1,43 @@
+"""Sizes, fonts and line styles of the drawings (cm on paper, pt for text and lines)."""
+
+from __future__ import annotations
+
+# the sheets and the drawing order of coinciding vectors are the scales' and the
+# constructions' (one place each); they are named here for the drawing modules
+from ..constructions import PRIORITY  # noqa: F401
+from ..scales import DIAGRAMS, GAP, KIND_OF_DIAGRAM, MARGIN, SHEET_ALL, SHEET_ONE  # noqa: F401
+
+CM_PER_INCH = 2.54
+PT_PER_CM = 72.0 / 2.54
+FORMATS = ("svg", "png", "pdf")
+FONT = "DejaVu Sans"
+PNG_DPI = 200
+
+#: the largest figure any scale may make (cm): beyond A0 it is a mistake in the scale
+MAX_FIGURE_CM = 120.0
+
+# sizes on paper (cm) and in points (text, line widths)
+BAR = 0.28  # width of a link drawn as a bar
+JOINT_R = 0.08  # a pin joint's circle
+DOT_R = 0.045  # an image point
+POLE_R = 0.06
+HEAD_LEN, HEAD_HALF = 0.26, 0.075  # arrowheads
+OVERSHOOT = 0.6  # how far a direction line runs past the points it joins
+LABEL_PT, MARK_PT, NOTE_PT, TITLE_PT, SMALL_PT = 10.0, 7.5, 8.5, 10.5, 7.0
+CLEAR = 0.05  # clearance of a label from any line (cm)
+
+#: line styles of the vectors by kind (colour, width in pt, dashes or None)
+STYLE = {
+    "absolute": ("#000000", 1.5, None),
+    "relative": ("#000000", 0.9, None),
+    "sliding": ("#7b3294", 1.1, (5.0, 1.5, 1.0, 1.5)),
+    "centripetal": ("#1f5fbf", 1.2, None),
+    "tangential": ("#d95f02", 1.2, (4.0, 1.5)),
+    "coriolis": ("#1a9641", 2.2, None),
+}
+LINE_STYLE = ("#777777", 0.6, (4.0, 2.5))  # construction (direction) lines
+LEGEND_NAMES = {"absolute": "total (from the pole)", "relative": "relative (between images)",
+                "centripetal": "centripetal component", "tangential": "tangential component",
+                "coriolis": "Coriolis component", "sliding": "sliding component"}
+BODY_FACE, BODY_EDGE = "#dde6f2", "#23395d"
+IMAGE_FACE = "#f4d35e"
