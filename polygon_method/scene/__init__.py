@@ -1,0 +1,37 @@
+"""Scene files: a mechanism problem as a textbook states it (see ``docs/scene-format.md``).
+
+The reader checks every table and key,
+turns quantities into SI and resolves names, so that everything after it works on a
+:class:`Scene` that is known to be well formed (whether the links can be assembled is the
+plan's business).
+
+>>> s = parse_scene('''
+... [ground]
+... A = [0, 0]
+... D = [100, 0]
+... [links]
+... AB = 50
+... BC = 66
+... CD = 56
+... [input]
+... crank = "AB"
+... angle = 60
+... speed = "10.5 rad/s cw"
+... ''')
+>>> s.link("CB").length
+0.066
+>>> s.input.omega
+-10.5
+"""
+
+from __future__ import annotations
+
+from .reading import load_answers, load_scene, parse_answers, parse_scene
+from .records import (ANSWER_KINDS, Answer, CarriedPoint, FixedPath, GuideSlider, Input, Link,
+                      Load, Pin, Scene, split_name)
+
+__all__ = [
+    "Scene", "Link", "CarriedPoint", "FixedPath", "GuideSlider", "Input", "Pin", "Load",
+    "Answer", "load_scene", "parse_scene", "split_name", "ANSWER_KINDS", "parse_answers",
+    "load_answers",
+]

@@ -1,0 +1,393 @@
+"""Reading a scene: TOML text (or a file) checked table by table into a :class:`Scene`,
+every failure one :class:`SceneError` naming the file, key and line."""
+
+from __future__ import annotations
+
+import math
+import re
+import tomllib
+from dataclasses import replace
+from pathlib import Path
+
+from ..errors import PolygonMethodError, SceneError
+from ..units import LENGTH_UNITS, UNITS, parse_quantity
+from .records import (_ABSURD_LONG, _ABSURD_SHORT, _POINT_ONLY, _UNIT_ORDER, TOP_KEYS, FixedPath,
+                      GuideSlider, Link, Scene, split_name)
+from .tables import _suggest, _Tables
+
+def load_scene(path) -> Scene:
+    """Read and check a scene file. Raises :class:`SceneError` naming file, key and line."""
+    path = Path(path)
+    try:
+        data = path.read_bytes()
+    except FileNotFoundError:
+        raise SceneError("no such file", file=str(path)) from None
+    except IsADirectoryError:
+        raise SceneError("is a directory, not a scene file", file=str(path)) from None
+    except OSError as exc:
+        raise SceneError(f"cannot read: {exc.strerror}", file=str(path)) from None
+    if b"\x00" in data:
+        raise SceneError("not a text file (it holds binary data); a scene is TOML text",
+                         file=str(path))
+    try:
+        text = data.decode("utf-8-sig")  # a byte-order mark (some Windows editors) is fine
+    except UnicodeDecodeError as exc:
+        raise SceneError(f"not UTF-8 text (byte {exc.start}); save the scene as UTF-8",
+                         file=str(path)) from None
+    try:
+        return parse_scene(text, file=str(path))
+    except PolygonMethodError as exc:
+        raise exc.located(str(path))
+
+
+def parse_scene(text: str, file: str | None = None) -> Scene:
+    """Parse scene text (TOML). See :func:`load_scene`."""
+    if not text.strip():
+        raise SceneError("the file is empty; a scene needs [ground], [links] and [input]",
+                         file=file)
+    try:
+        raw = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise _syntax_error(str(exc), text, file) from None
+    except RecursionError:
+        raise SceneError("TOML nested too deeply (brackets or braces inside each other "
+                         "hundreds of times); a scene needs at most [x, y] pairs and small "
+                         "tables", file=file, key=_deepest_key(text)) from None
+    if not raw:
+        raise SceneError("the file has no tables or keys (only comments); a scene needs "
+                         "[ground], [links] and [input]", file=file)
+    return _Loader(raw, text, file).scene()
+
+
+#: tomllib's messages, in the words of this tool
+_TOML_WORDS = [
+    (r"^Unclosed array$", "unclosed array: a ']' is missing"),
+    (r"^Unclosed inline table$", "unclosed inline table: a '}' is missing"),
+    (r"^Illegal character '\\n'$", "a string is not closed before the end of the line "
+     "(a '\"' is missing)"),
+    (r"^Expected '\]' at the end of a table declaration$",
+     "expected ']' at the end of a table header such as [links]"),
+    (r"^Cannot declare \((.*?),?\) twice$", None),
+    (r"^Expected newline or end of document after a statement$",
+     "expected the end of the line after a value (a missing quote, comma or '=', or two "
+     "values on one line?)"),
+    (r"^Invalid value$", "invalid value (strings need quotes: \"50 mm\", \"AB\")"),
+]
+
+
+def _syntax_error(msg, text, file) -> SceneError:
+    """A TOML decode error as a :class:`SceneError` at its line and column."""
+    m = re.search(r"\(at line (\d+), column (\d+)\)", msg)
+    core = re.sub(r"\s*\(at (line|end).*?\)", "", msg).strip()
+    where = f"line {m.group(1)}, column {m.group(2)}" if m else None
+    if core.startswith("Cannot overwrite a value"):
+        dup = _duplicate_key(text)
+        if dup is not None:
+            table, key, first, again = dup
+            label = f"[{table}] {key}" if table else key
+            return SceneError(f"duplicate key {key} (first given on line {first}); give each "
+                              "key once", file=file, key=label, line=again)
+    for pattern, words in _TOML_WORDS:
+        hit = re.match(pattern, core)
+        if hit:
+            if words is None:  # a table declared twice
+                name = ".".join(part.strip(" '\"") for part in hit.group(1).split(","))
+                words = f"[{name}] is declared twice; put all its keys under one header"
+            core = words
+            break
+    else:
+        core = core[:1].lower() + core[1:]
+    return SceneError(f"TOML syntax error: {core}", file=file, key=where)
+
+
+def _duplicate_key(text):
+    """(table, key, first line, second line) of a key given twice in one table, or None."""
+    table, seen = "", {}
+    for i, line in enumerate(text.splitlines(), 1):
+        head = re.match(r"^\s*\[\s*([^\[\]]+?)\s*\]\s*(#.*)?$", line)
+        if head:
+            table = head.group(1).strip('"')
+            continue
+        m = re.match(r"^\s*(\"[^\"]*\"|[A-Za-z0-9_\-]+)\s*=", line)
+        if m:
+            key = m.group(1).strip('"')
+            if (table, key) in seen:
+                return table, key, seen[(table, key)], i
+            seen[(table, key)] = i
+    return None
+
+
+def _deepest_key(text):
+    """The key whose value opens the most brackets on one line (for nesting errors)."""
+    best, where = 0, None
+    for i, line in enumerate(text.splitlines(), 1):
+        m = re.match(r"^\s*([^=\s]+)\s*=", line)
+        depth = line.count("[") + line.count("{")
+        if m and depth > best:
+            best, where = depth, f"{m.group(1).strip(chr(34))} (line {i})"
+    return where
+
+
+def _printable(text):
+    """``text`` with line breaks and control characters escaped, so that a message built
+    from the file's own names stays one clean line on a terminal.
+
+    >>> print(_printable('A\\nB'), _printable('BC'))
+    A\\nB BC
+    """
+    if text is None or str(text).isprintable():
+        return text
+    return "".join(c if c.isprintable() else repr(c)[1:-1] for c in str(text))
+
+
+class _Loader(_Tables):
+    def __init__(self, raw: dict, text: str, file):
+        self.raw = raw
+        self.lines = text.splitlines()
+        self.file = file
+        self.unit = "mm"
+
+    # -- locations
+    def line_of(self, table: str | None, key: str | None = None):
+        """Line number of ``[table] key`` (or of the table header) in the file, if found."""
+        current = None
+        header = re.compile(r"^\s*\[\s*([A-Za-z0-9_.\-\"]+)\s*\]\s*(#.*)?$")
+        for i, line in enumerate(self.lines, 1):
+            m = header.match(line)
+            if m:
+                current = m.group(1).strip('"')
+                if key is None and current == table:
+                    return i
+                continue
+            if key is not None and current == table:
+                if re.match(rf"^\s*\"?{re.escape(key)}\"?\s*=", line):
+                    return i
+        return None
+
+    def error(self, message, table=None, key=None, cls=SceneError):
+        label = f"[{table}] {key}" if table and key else (f"[{table}]" if table else key)
+        return cls(_printable(message), file=self.file, key=_printable(label),
+                   line=self.line_of(table, key))
+
+    def top_line(self, key):
+        for i, line in enumerate(self.lines, 1):
+            if re.match(r"^\s*\[", line):
+                return None
+            if re.match(rf"^\s*{re.escape(key)}\s*=", line):
+                return i
+        return None
+
+    def qty(self, raw, kind, table, key, **kw):
+        try:
+            return parse_quantity(raw, kind, where="", **kw)
+        except SceneError as exc:
+            raise self.error(exc.message, table, key) from None
+
+    def length(self, raw, table, key, *, positive=True):
+        q = self.qty(raw, "length", table, key, default_unit=self.unit).value
+        if positive and q <= 0:
+            raise self.error(f"length must be positive, got {raw!r}", table, key)
+        if abs(q) > _ABSURD_LONG or (positive and q < _ABSURD_SHORT):
+            raise self.error(f"length {raw!r} ({q:g} m) is absurd for a mechanism; "
+                             f"check the units (units = \"{self.unit}\")", table, key)
+        return q
+
+    def coords(self, raw, table, key):
+        if not (isinstance(raw, list) and len(raw) == 2):
+            raise self.error("expected coordinates [x, y]", table, key)
+        return tuple(self.length(v, table, key, positive=False) for v in raw)
+
+    def table(self, name, required=False) -> dict:
+        value = self.raw.get(name)
+        if value is None:
+            if required:
+                raise SceneError(f"missing [{name}] table", file=self.file, key=f"[{name}]")
+            return {}
+        if not isinstance(value, dict):
+            raise SceneError(f"'{name}' must be a table [{name}]", file=self.file, key=name,
+                             line=self.top_line(name))
+        return value
+
+    def point_name(self, name, table, key=None):
+        if not _POINT_ONLY.match(str(name)):
+            raise self.error(f"'{name}' is not a point name (a capital letter, optionally "
+                             "followed by digits: A, O2, B1)", table, key or name)
+        return name
+
+    # -- the scene
+    def scene(self) -> Scene:
+        raw = self.raw
+        for key in raw:
+            if key not in TOP_KEYS:
+                kind = "table" if isinstance(raw[key], dict) else "key"
+                where = f"[{key}]" if kind == "table" else key
+                raise SceneError(f"unknown {kind}{_suggest(key, TOP_KEYS)}; a scene has "
+                                 + ", ".join(TOP_KEYS), file=self.file, key=_printable(where),
+                                 line=self.line_of(key) if kind == "table" else self.top_line(key))
+        units = raw.get("units", "mm")
+        if not isinstance(units, str):
+            raise SceneError("units is a string: units = \"mm\" (or \"cm\", \"m\", \"in\")",
+                             file=self.file, key="units",
+                             line=self.top_line("units") or self.line_of("units"))
+        if units not in LENGTH_UNITS:
+            raise SceneError(f"unknown length unit {units!r}{_suggest(units, _UNIT_ORDER)}; "
+                             "use mm, cm, m or in", file=self.file, key="units",
+                             line=self.top_line("units"))
+        self.unit = units
+        title = raw.get("title", "")
+        if not isinstance(title, str):
+            raise SceneError("title must be a string", file=self.file, key="title")
+
+        ground = {}
+        for name, value in self.table("ground", required=True).items():
+            self.point_name(name, "ground")
+            ground[name] = self.coords(value, "ground", name)
+        if not ground:
+            raise SceneError("[ground] is empty; give at least the crank's fixed pivot",
+                             file=self.file, key="[ground]", line=self.line_of("ground"))
+
+        links, index = [], {}
+        for key, value in self.table("links", required=True).items():
+            pts = split_name(key)
+            if len(pts) != 2:
+                raise self.error(f"{key!r} is not a link name: a link is named by its two "
+                                 "joint points, e.g. BC or \"O2-A\"", "links", key)
+            if pts[0] == pts[1]:
+                raise self.error("a link joins two different points", "links", key)
+            if isinstance(value, dict):
+                raise self.error("a link's value is its length, e.g. BC = 66", "links", key)
+            length = self.length(value, "links", key)
+            pair = frozenset(pts)
+            if pair in index:
+                raise self.error(f"duplicate link: {index[pair].key} and {key} join the same "
+                                 "points", "links", key)
+            link = Link(key, pts[0], pts[1], length)
+            index[pair] = link
+            links.append(link)
+            if pts[0] in ground and pts[1] in ground:
+                gx = math.dist(ground[pts[0]], ground[pts[1]])
+                if abs(gx - length) > 1e-9 * max(gx, length):
+                    raise self.error(f"both ends are ground points {gx / self.scale():g} "
+                                     f"{self.unit} apart, but the link is {value}", "links", key)
+        if not links:
+            raise SceneError("[links] is empty", file=self.file, key="[links]",
+                             line=self.line_of("links"))
+        self.index = index
+        self.ground = ground
+
+        points = self.carried_points(index, ground)
+        sliders = self.sliders(index, ground, {p.name for p in points})
+        known = set(ground) | {p for lk in links for p in lk.points} | {p.name for p in points}
+        self.known = known
+        inp = self.input(index, ground)
+        sliders = [replace(s, through=ground[inp.pivot])
+                   if isinstance(s, FixedPath) and s.through[1] is None else s
+                   for s in sliders]
+        assembly = self.assembly(known)
+        pins = self.pins(known)
+        loads = self.loads(known)
+        tolerance, answers = self.answers(known, sliders, pins, loads)
+        self.connected(links, points, sliders, ground, inp)
+        return Scene(title=title, units=units, ground=ground, links=tuple(links),
+                     points=tuple(points), sliders=tuple(sliders), assembly=assembly,
+                     input=inp, pins=tuple(pins), loads=tuple(loads), answers=tuple(answers),
+                     tolerance=tolerance, file=self.file, _link_index=index)
+
+    def scale(self):
+        return UNITS["length"][self.unit]
+
+    def find_link(self, name, table, key):
+        pts = split_name(name) if isinstance(name, str) else ()
+        if len(pts) != 2:
+            raise self.error(f"'{name}' is not a link name (two points, e.g. BC)", table, key)
+        link = self.index.get(frozenset(pts))
+        if link is None:
+            raise self.error(f"no link {name} in [links]"
+                             f"{_suggest(name, [lk.key for lk in self.index.values()])}",
+                             table, key)
+        return link, pts
+
+    def connected(self, links, points, sliders, ground, inp):
+        """Every point must take part: a dangling point is almost always a typo."""
+        uses = {}
+        for lk in links:
+            for p in lk.points:
+                uses[p] = uses.get(p, 0) + 1
+        roles = set(ground) | {p.name for p in points} | {s.point for s in sliders}
+        roles |= {p for s in sliders if isinstance(s, GuideSlider) for p in (s.first, s.second)}
+        plates = {p.link for p in points}  # a link carrying points is a plate: its ends belong
+        roles |= {q for lk in links if lk.key in plates for q in lk.points}
+        through = {s.through for s in sliders if isinstance(s, FixedPath)}
+        lonely = [name for name, xy in ground.items()
+                  if name not in uses and xy not in through and name != inp.pivot
+                  and name not in {s.point for s in sliders}]
+        for lk in links:
+            for p in lk.points:
+                if uses[p] == 1 and p not in roles:
+                    other = lk.other(p)
+                    guess = [f"{other}{g}" if len(other) == len(g) == 1 else f"{other}-{g}"
+                             for g in lonely]
+                    hint = (f" (did you mean {guess[0]}? ground point {lonely[0]} is joined to "
+                            "nothing)") if guess else ""
+                    raise self.error(f"point {p} appears only in link {lk.key} and nowhere "
+                                     f"else: nothing holds it (a typo?){hint}", "links", lk.key)
+        if lonely:
+            name = lonely[0]
+            raise SceneError(f"ground point {name} is not joined to any link: add its link "
+                             "or remove it", file=self.file, key=f"[ground] {name}",
+                             line=self.line_of("ground", name))
+
+
+# --------------------------------------------------------------------------- answer files
+
+_ANSWER_FILE_KEYS = ("answers", "title", "student", "name", "notes", "source")
+
+
+def parse_answers(text: str, scene: Scene, file: str | None = None):
+    """Read an answer file (an ``[answers]`` table, e.g. a student's) against ``scene``.
+
+    Keys and values follow the scene's ``[answers]`` rules. Returns
+    ``(tolerance or None, tuple of Answer)``; raises :class:`SceneError` naming the key.
+    """
+    try:
+        raw = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        m = re.search(r"\(at line (\d+), column (\d+)\)", str(exc))
+        core = re.sub(r"\s*\(at line.*?\)", "", str(exc)).strip()
+        raise SceneError(f"TOML syntax error: {core}", file=file,
+                         key=f"line {m.group(1)}, column {m.group(2)}" if m else None) from None
+    for key in raw:
+        if key not in _ANSWER_FILE_KEYS:
+            raise SceneError("an answer file holds an [answers] table (and optionally title, "
+                             f"student){_suggest(key, _ANSWER_FILE_KEYS)}", file=file, key=key)
+    if not isinstance(raw.get("answers"), dict) or not raw["answers"]:
+        raise SceneError("no [answers] table (or it is empty)", file=file, key="[answers]")
+    loader = _Loader(raw, text, file)
+    loader.unit = scene.units
+    loader.index = scene._link_index
+    tolerance, answers = loader.answers(set(scene.point_names), scene.sliders, scene.pins,
+                                        scene.loads)
+    return tolerance, tuple(answers)
+
+
+def load_answers(path, scene: Scene):
+    """Read an answer file from ``path``; see :func:`parse_answers`."""
+    path = Path(path)
+    try:
+        data = path.read_bytes()
+        text = data.decode("utf-8")
+    except FileNotFoundError:
+        raise SceneError("no such file", file=str(path)) from None
+    except IsADirectoryError:
+        raise SceneError("is a directory, not an answer file", file=str(path)) from None
+    except UnicodeDecodeError as exc:
+        raise SceneError(f"not UTF-8 text (byte {exc.start})", file=str(path)) from None
+    except OSError as exc:
+        raise SceneError(f"cannot read: {exc.strerror}", file=str(path)) from None
+    if "\x00" in text:
+        raise SceneError("not a text file (it holds binary data)", file=str(path))
+    try:
+        return parse_answers(text, scene, file=str(path))
+    except PolygonMethodError as exc:
+        raise exc.located(str(path))
+

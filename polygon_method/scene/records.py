@@ -1,0 +1,191 @@
+"""The scene's records: a mechanism problem as a textbook states it, in SI, checked.
+
+Names: a point is a capital letter with optional digits (``B``, ``O2``); a link is named
+by its two points (``BC``, ``"O2-A"``), in either order.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+from ..errors import SceneError
+from ..units import UNITS
+
+POINT_NAME = re.compile(r"[A-Z][0-9]*")
+_POINT_ONLY = re.compile(r"^[A-Z][0-9]*$")
+_LINK_NAME = re.compile(r"^(?:[A-Z][0-9]*-?)+$")
+
+_UNIT_ORDER = ("mm", "cm", "m", "in")
+
+#: the largest and smallest lengths a scene may state, in metres
+_ABSURD_LONG = 1e4
+_ABSURD_SHORT = 1e-7
+
+TOP_KEYS = ("title", "source", "notes", "units", "ground", "links", "points", "sliders",
+            "assembly", "input", "pins", "loads", "answers")
+INPUT_KEYS = ("crank", "angle", "speed", "acceleration")
+
+#: answer key prefix -> (unit kind, what it names, sense allowed)
+ANSWER_KINDS = {
+    "v": ("velocity", "point", False),
+    "a": ("acceleration", "point", False),
+    "omega": ("angular_velocity", "link", True),
+    "alpha": ("angular_acceleration", "link", True),
+    "vs": ("velocity", "slider", True),
+    "as": ("acceleration", "slider", True),
+    "ac": ("acceleration", "slider", False),
+    "rub": ("velocity", "pin", False),
+}
+
+
+def split_name(name: str) -> tuple[str, ...]:
+    """Point names in a link or relative name: ``"BC"`` -> (B, C), ``"O2-A"`` -> (O2, A)."""
+    if not isinstance(name, str) or not _LINK_NAME.match(name) or name.endswith("-"):
+        return ()
+    return tuple(POINT_NAME.findall(name))
+
+
+@dataclass(frozen=True)
+class Link:
+    """A rigid binary link between two joint points, named as in the scene."""
+
+    key: str
+    p: str
+    q: str
+    length: float
+
+    @property
+    def points(self) -> tuple[str, str]:
+        return (self.p, self.q)
+
+    def other(self, point: str) -> str:
+        return self.q if point == self.p else self.p
+
+
+@dataclass(frozen=True)
+class CarriedPoint:
+    """A point fixed on a link: ``X = P + lam (Q - P) + mu perp(Q - P)``.
+
+    ``P``, ``Q`` are the link's two joint points (``link.p``, ``link.q``) and ``perp`` turns a
+    vector 90 deg counter-clockwise. The image point on a polygon follows the same formula.
+    """
+
+    name: str
+    link: str
+    lam: float
+    mu: float
+    how: str  # the scene's own words, for step tables
+
+
+@dataclass(frozen=True)
+class FixedPath:
+    """A slider moving on a fixed straight line through ``through`` along unit ``u``."""
+
+    point: str
+    u: tuple[float, float]
+    through: tuple[float, float]
+    label: str
+
+
+@dataclass(frozen=True)
+class GuideSlider:
+    """A block pinned at ``point`` that slides along moving link ``guide`` (first -> second)."""
+
+    point: str
+    guide: str
+    first: str
+    second: str
+
+
+@dataclass(frozen=True)
+class Input:
+    """The driving crank: link ``crank`` turning about ground point ``pivot``."""
+
+    crank: str
+    pivot: str
+    tip: str
+    angle: float  # rad, direction of pivot -> tip
+    omega: float  # rad/s, ccw positive
+    alpha: float  # rad/s^2, ccw positive
+    speed_text: str
+
+
+@dataclass(frozen=True)
+class Pin:
+    point: str
+    radius: float
+    given: str  # "diameter" or "radius", as the scene gave it
+
+
+@dataclass(frozen=True)
+class Load:
+    """A force on a point (N), or a torque on a link (N m, ccw positive)."""
+
+    target: str
+    force: tuple[float, float] | None = None
+    torque: float | None = None
+
+
+@dataclass(frozen=True)
+class Answer:
+    key: str
+    kind: str  # prefix of ANSWER_KINDS or "torque"
+    names: tuple[str, ...]
+    value: float  # SI; signed when a sense was given
+    sense: str | None
+    raw: str
+    line: int | None = None
+
+
+@dataclass(frozen=True)
+class Scene:
+    """A loaded, checked scene. Lengths in metres, angles in radians, SI throughout."""
+
+    title: str
+    units: str
+    ground: dict
+    links: tuple
+    points: tuple
+    sliders: tuple
+    assembly: dict
+    input: Input
+    pins: tuple = ()
+    loads: tuple = ()
+    answers: tuple = ()
+    tolerance: float | None = None
+    file: str | None = None
+    _link_index: dict = field(default_factory=dict, repr=False, compare=False)
+
+    # ----- lookups
+    def link(self, name: str) -> Link:
+        """The link joining the two points of ``name``, in either order."""
+        pts = split_name(name)
+        found = self._link_index.get(frozenset(pts)) if len(pts) == 2 else None
+        if found is None:
+            raise SceneError(f"no link {name} in [links]", file=self.file)
+        return found
+
+    def has_link(self, name: str) -> bool:
+        pts = split_name(name)
+        return len(pts) == 2 and frozenset(pts) in self._link_index
+
+    @property
+    def point_names(self) -> tuple[str, ...]:
+        """Every point of the scene: ground, joints, carried points (in file order)."""
+        seen = dict.fromkeys(self.ground)
+        for link in self.links:
+            seen.update(dict.fromkeys(link.points))
+        for cp in self.points:
+            seen[cp.name] = None
+        return tuple(seen)
+
+    def carried(self, name: str) -> CarriedPoint | None:
+        return next((c for c in self.points if c.name == name), None)
+
+    def slider(self, name: str):
+        return next((s for s in self.sliders if s.point == name), None)
+
+    @property
+    def length_unit(self) -> float:
+        return UNITS["length"][self.units]

@@ -1,0 +1,344 @@
+"""The tables after [ground] and [links]: carried points, sliders, the input, assembly
+hints, pins, loads and answers, each checked and turned into records (a part of the
+scene reader)."""
+
+from __future__ import annotations
+
+import math
+import re
+
+from ..errors import SceneError
+from ..units import UNITS, did_you_mean
+from .records import (ANSWER_KINDS, INPUT_KEYS, Answer, CarriedPoint, FixedPath, GuideSlider,
+                      Input, Load, Pin, split_name)
+
+
+def _suggest(word, choices) -> str:
+    return did_you_mean(word, list(choices))
+
+
+def _which_point(name, known) -> str:
+    """A did-you-mean, or else the scene's points, for a message about an unknown point."""
+    names = sorted(known, key=lambda p: (p[0], len(p), p))
+    hint = _suggest(name, names)
+    if hint or not names:
+        return hint
+    listed = ", ".join(names[:12]) + (", ..." if len(names) > 12 else "")
+    return f" (its points are {listed})"
+
+
+class _Tables:
+    """The scene reader's methods for one table each (mixed into the reader)."""
+
+    def carried_points(self, index, ground):
+        table = self.table("points")
+        local = {}  # link key -> {point: (x, y) in the link frame, P at 0, Q at (L, 0)}
+        out = []
+        for name, spec in table.items():
+            self.point_name(name, "points")
+            if name in ground:
+                raise self.error(f"{name} is a ground point and a carried point; a point has "
+                                 "one role", "points", name)
+            if not isinstance(spec, dict) or "on" not in spec:
+                raise self.error("a carried point is a table such as { on = \"BC\", along = "
+                                 "40 } or { on = \"BC\", distances = { B = 45, C = 30 }, turn "
+                                 "= \"cw\" }", "points", name)
+            allowed = ("on", "along", "from", "distances", "turn")
+            for k in spec:
+                if k not in allowed:
+                    raise self.error(f"unknown key '{k}'{_suggest(k, allowed)}", "points", name)
+            link, pts = self.find_link(spec["on"], "points", name)
+            if name in link.points:
+                raise self.error(f"{name} is a joint of link {link.key}; it cannot also be "
+                                 "carried on it", "points", name)
+            frame = local.setdefault(link.key, {link.p: (0.0, 0.0), link.q: (link.length, 0.0)})
+            has_along, has_dist = "along" in spec, "distances" in spec
+            if has_along == has_dist:
+                raise self.error("give either along (with an optional from) or distances "
+                                 "with turn", "points", name)
+            if has_along:
+                start = spec.get("from", pts[0])
+                if start not in link.points:
+                    raise self.error(f"from = {start!r} is not an end of {link.key}",
+                                     "points", name)
+                if "turn" in spec:
+                    raise self.error("turn goes with distances, not with along", "points", name)
+                d = self.length(spec["along"], "points", name, positive=False)
+                sx, sy = frame[start]
+                ox, oy = frame[link.other(start)]
+                t = d / link.length
+                xy = (sx + t * (ox - sx), sy + t * (oy - sy))
+                how = f"on {spec['on']}, {spec['along']} from {start}"
+            else:
+                dist = spec["distances"]
+                if not isinstance(dist, dict) or len(dist) != 2:
+                    raise self.error("distances names two points of the link, e.g. "
+                                     "{ B = 45, C = 30 }", "points", name)
+                turn = spec.get("turn")
+                if turn not in ("cw", "ccw"):
+                    raise self.error("turn = \"cw\" or \"ccw\": how the triangle (the two "
+                                     "points of distances, then this point) reads", "points",
+                                     name)
+                (r1, d1), (r2, d2) = dist.items()
+                for r in (r1, r2):
+                    if r not in frame:
+                        raise self.error(f"{r} is not a point of link {link.key}", "points",
+                                         name)
+                d1 = self.length(d1, "points", name)
+                d2 = self.length(d2, "points", name)
+                (x1, y1), (x2, y2) = frame[r1], frame[r2]
+                e = math.hypot(x2 - x1, y2 - y1)
+                u = self.scale()
+                if d1 + d2 < e * (1 - 1e-12) or abs(d1 - d2) > e * (1 + 1e-12):
+                    if d1 + d2 < e:
+                        why = (f"{r1}{name} + {r2}{name} = {(d1 + d2) / u:g} < {r1}{r2} = "
+                               f"{e / u:g} {self.unit}")
+                    else:
+                        why = (f"|{r1}{name} - {r2}{name}| = {abs(d1 - d2) / u:g} > {r1}{r2} = "
+                               f"{e / u:g} {self.unit}")
+                    raise self.error(f"the triangle {r1}{r2}{name} cannot close: {why}",
+                                     "points", name)
+                along = (d1 * d1 - d2 * d2 + e * e) / (2 * e)
+                h = math.sqrt(max(d1 * d1 - along * along, 0.0))
+                ex, ey = (x2 - x1) / e, (y2 - y1) / e
+                sign = 1.0 if turn == "ccw" else -1.0
+                xy = (x1 + along * ex - sign * h * ey, y1 + along * ey + sign * h * ex)
+                how = (f"on {spec['on']}, {r1}{name} = {spec['distances'][r1]}, {r2}{name} = "
+                       f"{spec['distances'][r2]}, {r1}{r2}{name} read {turn}")
+            frame[name] = xy
+            L = link.length
+            out.append(CarriedPoint(name, link.key, xy[0] / L, xy[1] / L, how))
+        return out
+
+    def sliders(self, index, ground, carried):
+        out = []
+        for name, spec in self.table("sliders").items():
+            self.point_name(name, "sliders")
+            if not isinstance(spec, dict):
+                raise self.error("a slider is a table: { path = \"horizontal\", through = "
+                                 "[x, y] } or { along = \"CP\" }", "sliders", name)
+            allowed = ("path", "through", "along")
+            for k in spec:
+                if k not in allowed:
+                    raise self.error(f"unknown key '{k}'{_suggest(k, allowed)}", "sliders", name)
+            if "along" in spec:
+                if "path" in spec or "through" in spec:
+                    raise self.error("a block slides either on a fixed path or along a link, "
+                                     "not both", "sliders", name)
+                guide = spec["along"]
+                if len(split_name(guide)) == 2 and not self.index.get(frozenset(
+                        split_name(guide))) and any(p in self.ground
+                                                    for p in split_name(guide)):
+                    raise self.error(
+                        f"the guide {guide} is not in [links]: add it with its length, e.g. "
+                        f"\"{guide}\" = 500 (if the problem does not give the lever's length, "
+                        "any length will do: it only places the end of the lever)", "sliders", name)
+                link, pts = self.find_link(guide, "sliders", name)
+                if name in link.points:
+                    raise self.error(f"{name} is an end of {link.key}; a block slides along a "
+                                     "link between its ends", "sliders", name)
+                if all(p in ground for p in pts):
+                    raise self.error(f"{link.key} is fixed (both ends are ground points): "
+                                     "use path/through for a fixed guide", "sliders", name)
+                out.append(GuideSlider(name, link.key, pts[0], pts[1]))
+                continue
+            if name in ground:
+                raise self.error(f"{name} is a ground point; it cannot slide on a fixed path",
+                                 "sliders", name)
+            if name in carried:
+                raise self.error(f"{name} is carried on a link and also slides on a fixed "
+                                 "path: one constraint too many", "sliders", name)
+            if "path" not in spec:
+                raise self.error("the slider's path has no direction: add path = "
+                                 "\"horizontal\", \"vertical\" or an angle such as \"30 deg\"",
+                                 "sliders", name)
+            path = spec["path"]
+            if isinstance(path, str) and not re.match(r"^\s*[-+.\d]", path) \
+                    and path not in ("horizontal", "vertical"):
+                raise self.error(f"path = {path!r}: use \"horizontal\", \"vertical\" or an "
+                                 "angle such as \"30 deg\"" + _suggest(path, ("horizontal",
+                                                                            "vertical")),
+                                 "sliders", name)
+            if path == "horizontal":
+                ang, label = 0.0, "horizontal"
+            elif path == "vertical":
+                ang, label = math.pi / 2, "vertical"
+            else:
+                ang = self.qty(path, "angle", "sliders", name, default_unit="deg").value
+                label = f"at {math.degrees(ang):g} deg"
+            through = spec.get("through")
+            if through is None:
+                through = ("input pivot", None)
+            elif isinstance(through, str):
+                if through not in ground:
+                    raise self.error(f"through = {through!r} is not a ground point"
+                                     f"{_suggest(through, ground)}", "sliders", name)
+                through = ground[through]
+            else:
+                through = self.coords(through, "sliders", name)
+            u = {0.0: (1.0, 0.0), math.pi / 2: (0.0, 1.0)}.get(ang, (math.cos(ang), math.sin(ang)))
+            out.append(FixedPath(name, u, through, label))
+        return out
+
+    def input(self, index, ground):
+        if "input" not in self.raw:
+            raise SceneError("missing [input] table: which link is the crank, its angle and "
+                             "speed", file=self.file, key="[input]")
+        spec = self.table("input")
+        for k in spec:
+            if k not in INPUT_KEYS:
+                raise self.error(f"unknown key{_suggest(k, INPUT_KEYS)}", "input", k)
+        for k in ("crank", "angle", "speed"):
+            if k not in spec:
+                example = {"crank": "crank = \"AB\"", "angle": "angle = 60",
+                           "speed": "speed = \"10 rad/s ccw\""}[k]
+                raise self.error(f"[input] has no {k}: add e.g. {example}", "input")
+        link, pts = self.find_link(spec["crank"], "input", "crank")
+        on_ground = [p for p in pts if p in ground]
+        if not on_ground:
+            raise self.error(f"crank {link.key} is not pinned to the ground: neither "
+                             f"{pts[0]} nor {pts[1]} is in [ground]", "input", "crank")
+        if len(on_ground) == 2:
+            raise self.error(f"crank {link.key} has both ends in [ground]; it cannot turn",
+                             "input", "crank")
+        pivot = on_ground[0]
+        tip = link.other(pivot)
+        angle = self.qty(spec["angle"], "angle", "input", "angle", default_unit="deg").value
+        speed = self.qty(spec["speed"], "angular_velocity", "input", "speed", need_sense=True)
+        acc = spec.get("acceleration", 0)
+        if isinstance(acc, (int, float)) and not isinstance(acc, bool) and acc == 0:
+            alpha = 0.0
+        else:
+            alpha = self.qty(acc, "angular_acceleration", "input", "acceleration",
+                             need_sense=True).value
+        if speed.value == 0:
+            raise self.error("the crank speed is zero: nothing moves", "input", "speed")
+        return Input(link.key, pivot, tip, angle, speed.value, alpha, str(spec["speed"]))
+
+    def assembly(self, known):
+        out = {}
+        for name, hint in self.table("assembly").items():
+            if name not in known:
+                raise self.error(f"no point {name} in the scene{_which_point(name, known)}",
+                                 "assembly", name)
+            if isinstance(hint, str):
+                if hint not in ("above", "below", "left", "right"):
+                    raise self.error(f"{hint!r}: use above, below, left, right or a rough "
+                                     "position [x, y]", "assembly", name)
+                out[name] = hint
+            else:
+                out[name] = self.coords(hint, "assembly", name)
+        return out
+
+    def pins(self, known):
+        out = []
+        for name, spec in self.table("pins").items():
+            if name not in known:
+                raise self.error(f"no point {name} in the scene{_which_point(name, known)}",
+                                 "pins", name)
+            if not isinstance(spec, dict) or len(spec) != 1 or \
+                    next(iter(spec)) not in ("diameter", "radius"):
+                raise self.error("a pin is { diameter = 30 } or { radius = 15 }", "pins", name)
+            (k, v), = spec.items()
+            size = self.length(v, "pins", name)
+            out.append(Pin(name, size / 2 if k == "diameter" else size, k))
+        return out
+
+    def loads(self, known):
+        out = []
+        for name, spec in self.table("loads").items():
+            if not isinstance(spec, dict):
+                raise self.error("a load is { force = \"2 kN\", direction = 0 }, { force = "
+                                 "[Fx, Fy] } or, on a link, { torque = \"20 N m cw\" }",
+                                 "loads", name)
+            allowed = ("force", "direction", "torque")
+            for k in spec:
+                if k not in allowed:
+                    raise self.error(f"unknown key '{k}'{_suggest(k, allowed)}", "loads", name)
+            if "torque" in spec:
+                if not self.index.get(frozenset(split_name(name))):
+                    raise self.error(f"a torque acts on a link; no link {name} in [links]",
+                                     "loads", name)
+                t = self.qty(spec["torque"], "torque", "loads", name, need_sense=True).value
+                out.append(Load(self.index[frozenset(split_name(name))].key, torque=t))
+                continue
+            if name not in known:
+                raise self.error(f"load on unknown point {name}{_which_point(name, known)}",
+                                 "loads", name)
+            f = spec.get("force")
+            if f is None:
+                raise self.error("a load needs force", "loads", name)
+            if isinstance(f, list):
+                if len(f) != 2 or "direction" in spec:
+                    raise self.error("force = [Fx, Fy] in N (no direction with a vector)",
+                                     "loads", name)
+                fx, fy = (self.qty(c, "force", "loads", name, default_unit="N").value
+                          for c in f)
+            else:
+                mag = self.qty(f, "force", "loads", name, default_unit="N").value
+                if "direction" not in spec:
+                    raise self.error("a force needs a direction (deg, ccw from +x)",
+                                     "loads", name)
+                ang = self.qty(spec["direction"], "angle", "loads", name,
+                               default_unit="deg").value
+                fx, fy = mag * math.cos(ang), mag * math.sin(ang)
+            out.append(Load(name, force=(fx, fy)))
+        return out
+
+    def answers(self, known, sliders, pins, loads):
+        spec = self.table("answers")
+        tolerance = None
+        out = []
+        slider_names = {s.point for s in sliders}
+        pin_names = {p.point for p in pins}
+        for key, value in spec.items():
+            if key == "tolerance":
+                q = self.qty(value, "percent", "answers", key, default_unit="%").value
+                if not 0 < q < 1:
+                    raise self.error(f"tolerance {value!r} must be between 0 and 100 %",
+                                     "answers", key)
+                tolerance = q
+                continue
+            out.append(self.answer(key, value, known, slider_names, pin_names, loads))
+        return tolerance, out
+
+    def answer(self, key, value, known, slider_names, pin_names, loads):
+        line = self.line_of("answers", key)
+        if key == "torque":
+            if not loads:
+                raise self.error("a torque answer needs [loads] to balance", "answers", key)
+            q = self.qty(value, "torque", "answers", key, default_unit="N m", allow_sense=True)
+            return Answer(key, "torque", (), q.value, q.sense, str(value), line)
+        prefix, _, rest = key.partition("_")
+        if prefix not in ANSWER_KINDS or not rest:
+            examples = ["v_C", "a_C", "v_CB", "omega_BC", "alpha_BC", "vs_D", "as_D", "ac_A",
+                        "rub_B", "torque"]
+            raise self.error(f"unknown answer key{_suggest(key, examples)}; keys are v_X, "
+                             "a_X, v_XY, a_XY, omega_L, alpha_L, vs_X, as_X, ac_X, rub_X, "
+                             "torque", "answers", key)
+        kind, what, sense_ok = ANSWER_KINDS[prefix]
+        names = split_name(rest)
+        if not names:
+            raise self.error(f"'{rest}' is not a point or link name", "answers", key)
+        if what == "point":
+            if len(names) > 2:
+                raise self.error("v_X or v_XY: one or two points", "answers", key)
+            for n in names:
+                if n not in known:
+                    raise self.error(f"no point {n} in the scene{_which_point(n, known)}",
+                                     "answers", key)
+        elif what == "link":
+            if len(names) != 2 or frozenset(names) not in self.index:
+                raise self.error(f"no link {rest} in [links]"
+                                 f"{_suggest(rest, [lk.key for lk in self.index.values()])}",
+                                 "answers", key)
+        elif what == "slider":
+            if len(names) != 1 or names[0] not in slider_names:
+                raise self.error(f"no slider {rest} in [sliders]", "answers", key)
+        elif what == "pin":
+            if len(names) != 1 or names[0] not in pin_names:
+                raise self.error(f"rubbing at {rest} needs its size in [pins]", "answers", key)
+        q = self.qty(value, kind, "answers", key, default_unit=next(iter(UNITS[kind])),
+                     allow_sense=sense_ok)
+        return Answer(key, prefix, names, q.value, q.sense, str(value), line)
+
