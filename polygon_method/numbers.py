@@ -11,7 +11,8 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["fmt", "fixed", "sense", "sense_word", "fmt_angular", "in_units"]
+__all__ = ["fmt", "fixed", "textbook", "working", "sense", "sense_word", "fmt_angular",
+           "in_units"]
 
 
 def fmt(x: float, digits: int = 4) -> str:
@@ -40,6 +41,25 @@ def fixed(x: float, digits: int = 3) -> str:
         return f"{x:.0f}"
     s = f"{x:#.{digits}g}"
     return s.rstrip(".") if "e" not in s else fmt(x, digits)
+
+
+def textbook(x: float) -> str:
+    """A value as a textbook writes it: four significant figures (an exponent if needed).
+
+    >>> textbook(0.39183), textbook(0), textbook(1.5e-7)
+    ('0.3918', '0', '1.5000e-07')
+    """
+    if x == 0:
+        return "0"
+    s = f"{x:.4g}"
+    if "e" in s:
+        s = f"{x:.4e}"
+    return s
+
+
+def working(x: float) -> str:
+    """A number as written in working: up to five significant figures."""
+    return f"{x:.5g}"
 
 
 def sense(value: float) -> str:

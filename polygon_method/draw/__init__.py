@@ -46,10 +46,10 @@ True
 from __future__ import annotations
 
 from ..constructions import drawn_vectors
-from ..scales import choose_scales, display_unit, parse_scales
+from ..scales import (DIAGRAMS, choose_scales, display_unit, parse_scales)
 from .sheet import (draw_acceleration, draw_configuration, draw_velocity, layout, make_figure,
                     render, svg_string)
-from .style import CM_PER_INCH, DIAGRAMS, FORMATS, PT_PER_CM
+from .style import CM_PER_INCH, FORMATS, PT_PER_CM
 
 __all__ = ["draw_configuration", "draw_velocity", "draw_acceleration", "make_figure",
            "render", "svg_string", "choose_scales", "parse_scales", "drawn_vectors", "layout",

@@ -6,11 +6,11 @@ from __future__ import annotations
 import io
 
 from ..errors import PolygonMethodError
-from ..scales import choose_scales, coarser, display_unit, finer, parse_scale
+from ..scales import (DIAGRAMS, GAP, KIND_OF_DIAGRAM, MARGIN, SHEET_ALL, SHEET_ONE,
+                      choose_scales, coarser, display_unit, finer, parse_scale)
 from .diagrams import _configuration, _polygon, _sketch
 from .sketch import _Sketch
-from .style import (CM_PER_INCH, DIAGRAMS, FONT, FORMATS, GAP, KIND_OF_DIAGRAM, MARGIN,
-                     MAX_FIGURE_CM, PNG_DPI, SHEET_ALL, SHEET_ONE)
+from .style import CM_PER_INCH, FONT, FORMATS, MAX_FIGURE_CM, PNG_DPI
 
 # --------------------------------------------------------------------------- painting
 

@@ -2,10 +2,6 @@
 
 from __future__ import annotations
 
-# the sheets and the drawing order of coinciding vectors are the scales' and the
-# constructions' (one place each); they are named here for the drawing modules
-from ..constructions import PRIORITY  # noqa: F401
-from ..scales import DIAGRAMS, GAP, KIND_OF_DIAGRAM, MARGIN, SHEET_ALL, SHEET_ONE  # noqa: F401
 
 CM_PER_INCH = 2.54
 PT_PER_CM = 72.0 / 2.54

@@ -1,0 +1,99 @@
+"""Check answers (a student's or a book's) against the solution, and name the mistake.
+
+For every answer: the value given, the correct value, the error in %, the verdict; for a
+wrong one, the known mistake that explains it where one does (rpm used as rad/s, a
+relative velocity given for an absolute one, the other assembly branch, the sum of angular
+velocities where the difference applies, ...). The alternatives are computed by the solver
+(a re-solved scene with the mistaken speed, angle or branch) or from its numbers; no
+kinematics is redone here.
+
+Tolerance rule (when the answers do not state ``tolerance``): what a careful drawing at the
+chosen scales allows. A length on a diagram is drawn and read to half a millimetre
+(0.05 cm); at the velocity scale ``s_v`` (m/s per cm) that is ``0.05 s_v``; a value derived
+from a read-off inherits its error (omega = v / l: ``0.05 s_v / l``; rubbing
+|w1 - w2| r: the sum of both; torque = sum(F . v) / omega: ``sum |F| 0.05 s_v / omega``).
+Where the two direction lines of a construction cross at less than 30 deg the read-off
+error grows as ``1 / (2 sin gamma)``. Never tighter than 0.5 % (three significant figures);
+values computed rather than drawn (the crank's) get 0.5 %.
+
+>>> from polygon_method import parse_scene, solve
+>>> sol = solve(parse_scene('''
+... [ground]
+... O = [0, 0]
+... [links]
+... OA = 150
+... AB = 600
+... [sliders]
+... B = { path = "horizontal" }
+... [input]
+... crank = "OA"
+... angle = 90
+... speed = "300 rpm ccw"
+... [answers]
+... v_A = "45 m/s"
+... '''))
+>>> v = check_answers(sol)[0]
+>>> v.ok, v.mistake                    # 300 x 0.15: N used as omega
+(False, 'rpm_as_rad_s')
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..errors import SceneError
+from ..solution import Solution
+from .mistakes import _Diagnoser
+from .tolerance import _Tolerances, answer_tolerance
+from .verdicts import _NOISE_KIND, ROUNDING, UNIT_OF, Verdict, verdicts_dict, verdicts_text
+
+__all__ = ["Verdict", "check_answers", "answer_tolerance", "verdicts_text",
+           "verdicts_dict", "ROUNDING"]
+
+
+def check_answers(sol: Solution, answers=None, tolerance: float | None = None) -> tuple:
+    """Check ``answers`` (default: the scene's ``[answers]``) against ``sol``.
+
+    Parameters
+    ----------
+    answers : iterable of :class:`~polygon_method.scene.Answer`, optional
+    tolerance : float, optional
+        Relative tolerance (0.03 for 3 %); default the scene's ``tolerance``, else the
+        drawing rule (module docstring).
+
+    Returns
+    -------
+    tuple of :class:`Verdict`, in the answers' order.
+    """
+    if answers is None:
+        answers = sol.scene.answers
+        if tolerance is None:
+            tolerance = sol.scene.tolerance
+    answers = tuple(answers)
+    tols = _Tolerances(sol)
+    diag = _Diagnoser(sol, answers)
+    out = []
+    for ans in answers:
+        kind = ans.kind
+        exact = sol.value(kind, ans.names)
+        if exact is None or not math.isfinite(exact):
+            raise SceneError(f"{ans.key}: no value to check against", key=f"[answers] {ans.key}",
+                             line=ans.line)
+        if kind in _NOISE_KIND:  # rounding noise is a zero (a translating coupler's omega)
+            exact = sol.shown(exact, _NOISE_KIND[kind])
+        signed = ans.sense is not None or ans.value < 0
+        if kind in ("v", "a", "ac", "rub"):
+            signed = False
+        given = ans.value if signed else abs(ans.value)
+        correct = exact if signed else abs(exact)
+        tol, rule = answer_tolerance(sol, kind, ans.names, correct, tolerance, _tols=tols)
+        err = abs(given - correct)
+        rel = err / abs(correct) if correct != 0 else None
+        ok = err <= tol * (1 + 1e-12)
+        mistake = diagnosis = None
+        if not ok:
+            mistake, diagnosis = diag.diagnose(ans, given, correct, tol, signed)
+        out.append(Verdict(ans.key, ans.raw, given, correct, UNIT_OF[kind], rel,
+                           tol / abs(correct) if correct else math.inf, tol, rule, ok, signed,
+                           mistake, diagnosis, ans.line))
+    return tuple(out)

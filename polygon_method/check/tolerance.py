@@ -1,0 +1,133 @@
+"""The tolerance of an answer: what a careful drawing at the chosen scales allows (see
+the package's rule)."""
+
+from __future__ import annotations
+
+import math
+
+from ..scales import DRAWING_PRECISION_CM, diagram_scales
+from ..scene import GuideSlider
+from ..solution import Solution
+from .verdicts import ROUNDING, UNIT_OF
+
+_SIN30 = 0.5
+
+
+
+def _terms(terms) -> str:
+    """``a - b + c`` from (sign, text) pairs."""
+    out = ("" if terms[0][0] > 0 else "-") + terms[0][1]
+    for sg, t in terms[1:]:
+        out += f" {'+' if sg > 0 else '-'} {t}"
+    return out
+
+
+class _Tolerances:
+    """Drawing tolerances of one solution (see the module docstring)."""
+
+    def __init__(self, sol: Solution):
+        self.sol = sol
+        _, self.sv, self.sa = diagram_scales(sol)
+        self.d = DRAWING_PRECISION_CM
+        steps = sol.plan.steps
+        self.factor = {}
+        worst = 1.0
+        for st in steps:
+            worst = min(worst, sol.conditions.get(st.index, 1.0))
+            f = max(1.0, _SIN30 / max(worst, 1e-12))
+            for p in st.finds:
+                self.factor[p] = f
+            for lk in st.links:
+                self.factor[lk] = f
+        self.crank = steps[0]
+
+    def f(self, what) -> float:
+        return self.factor.get(what, 1.0)
+
+    def link_factor(self, key) -> float:
+        return self.factor.get(key, 1.0)
+
+    def omega_abs(self, key) -> float:
+        """Drawing error of omega of link ``key``: 0.05 s_v / l (zero for the crank)."""
+        sc = self.sol.scene
+        if key == self.crank.link or key in self.sol.plan.fixed_links:
+            return 0.0
+        lk = sc.link(key)
+        return self.d * self.sv.per_cm * self.link_factor(lk.key) / lk.length
+
+    def body_omega_abs(self, body) -> float:
+        sc = self.sol.scene
+        if body == "ground":
+            return 0.0
+        if body.startswith("block "):
+            sl = sc.slider(body[6:])
+            return self.omega_abs(sc.link(sl.guide).key) if isinstance(sl, GuideSlider) else 0.0
+        return self.omega_abs(body)
+
+    def drawing(self, kind, names) -> tuple[float, str]:
+        """(absolute drawing tolerance, what it is read from) of an answer."""
+        sol, d = self.sol, self.d
+        sv, sa = self.sv.per_cm, self.sa.per_cm
+        vt, at = f"velocity diagram at {self.sv.text}", f"acceleration diagram at {self.sa.text}"
+        if kind in ("v", "a"):
+            if len(names) == 1 and names[0] == self.crank.tip:
+                return 0.0, "computed (crank)"
+            f = max(self.f(n) for n in names)
+            return (d * sv * f, vt) if kind == "v" else (d * sa * f, at)
+        if kind in ("omega", "alpha"):
+            lk = sol.scene.link("-".join(names))
+            if lk.key == self.crank.link:
+                return 0.0, "computed (crank)"
+            f = self.link_factor(lk.key)
+            s = sv if kind == "omega" else sa
+            return d * s * f / lk.length, (vt if kind == "omega" else at)
+        if kind in ("vs", "as"):
+            f = self.f(names[0])
+            return (d * sv * f, vt) if kind == "vs" else (d * sa * f, at)
+        if kind == "ac":
+            sl = sol.scene.slider(names[0])
+            if not isinstance(sl, GuideSlider):
+                return d * sa, at
+            g = sol.scene.link(sl.guide)
+            w, vs = abs(sol.W[g.key]), abs(sol.S[names[0]][0])
+            return 2 * d * sv * self.f(names[0]) * (w + vs / g.length), vt
+        if kind == "rub":
+            r = sol.rubbing[names[0]]
+            if not r.pairs:
+                return d * sv, vt
+            pair = max(r.pairs, key=r.pairs.get)
+            a, b = pair.split("|")
+            return r.radius * (self.body_omega_abs(a) + self.body_omega_abs(b)), vt
+        if kind == "torque":
+            sc = sol.scene
+            tot = 0.0
+            for load in sc.loads:
+                if load.force is not None:
+                    tot += math.hypot(*load.force) * d * sv * self.f(load.target)
+                else:
+                    tot += abs(load.torque) * self.omega_abs(load.target)
+            return tot / abs(sc.input.omega), vt
+        raise KeyError(kind)
+
+
+def answer_tolerance(sol: Solution, kind: str, names: tuple, correct: float,
+                     relative: float | None = None, _tols=None) -> tuple[float, str]:
+    """(absolute tolerance, rule) for one answer.
+
+    ``relative`` (the answers' ``tolerance``) gives ``relative |correct|``; without it the
+    drawing rule of the module docstring applies. Never tighter than 0.5 % of |correct|.
+    """
+    tols = _tols or _Tolerances(sol)
+    draw, where = tols.drawing(kind, names)
+    if relative is not None:
+        tol = relative * abs(correct)
+        if tol == 0:
+            tol = draw or 1e-12
+        return tol, f"{100 * relative:g} % (the answers' tolerance)"
+    tol = max(ROUNDING * abs(correct), draw)
+    if tol == 0:
+        tol = tols.d * (tols.sv.per_cm if UNIT_OF[kind] in ("m/s", "rad/s") else tols.sa.per_cm)
+    if draw <= ROUNDING * abs(correct):
+        return tol, "0.5 % (three significant figures)" if where.startswith("computed") else \
+            f"0.5 % (three significant figures; 0.05 cm on the {where} is finer)"
+    return tol, f"0.05 cm on the {where}"

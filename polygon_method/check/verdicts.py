@@ -1,0 +1,104 @@
+"""A verdict on one answer, and the verdicts as text and as JSON."""
+
+from __future__ import annotations
+
+import math
+import textwrap
+from dataclasses import dataclass
+
+from ..numbers import textbook as _g
+
+#: relative error of a value rounded to three significant figures (the floor of every
+#: tolerance)
+ROUNDING = 0.005
+_SIN30 = 0.5
+
+UNIT_OF = {"v": "m/s", "a": "m/s^2", "omega": "rad/s", "alpha": "rad/s^2", "vs": "m/s",
+           "as": "m/s^2", "ac": "m/s^2", "rub": "m/s", "torque": "N m"}
+_ANGULAR = ("omega", "alpha", "torque")
+
+
+#: answer kind -> the kind of quantity whose largest value sets what is rounding noise
+_NOISE_KIND = {"v": "v", "vs": "v", "rub": "v", "a": "a", "as": "a", "ac": "a",
+               "omega": "omega", "alpha": "alpha"}
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """One answer checked.
+
+    ``given`` and ``correct`` are in SI; both are signed (ccw positive, or along the guide)
+    when the answer states a sense or a sign, else magnitudes. ``error`` and ``tolerance``
+    are relative (fractions); ``error`` is None when the correct value is zero.
+    """
+
+    key: str
+    raw: str
+    given: float
+    correct: float
+    unit: str
+    error: float | None
+    tolerance: float
+    tolerance_abs: float
+    rule: str
+    ok: bool
+    signed: bool
+    mistake: str | None = None
+    diagnosis: str | None = None
+    line: int | None = None
+
+    @property
+    def error_percent(self):
+        return None if self.error is None else 100.0 * self.error
+
+    def to_dict(self) -> dict:
+        return {"key": self.key, "given": self.given, "given_text": self.raw,
+                "correct": self.correct, "unit": self.unit,
+                "error_percent": self.error_percent,
+                "tolerance_percent": 100.0 * self.tolerance, "rule": self.rule,
+                "verdict": "right" if self.ok else "wrong", "mistake": self.mistake,
+                "diagnosis": self.diagnosis, "line": self.line}
+
+
+def _show(v: Verdict, x: float) -> str:
+    if v.unit in ("rad/s", "rad/s^2", "N m") and v.signed:
+        s = "ccw" if x > 0 else ("cw" if x < 0 else "")
+        return f"{_g(abs(x))} {v.unit}" + (f" {s}" if s else "")
+    return f"{_g(x)} {v.unit}"
+
+
+def verdicts_text(verdicts, title: str = "") -> str:
+    """The verdicts as a terminal table, with the mistake named under a wrong answer."""
+    rows = [("answer", "given", "correct", "error", "tolerance", "verdict")]
+    for v in verdicts:
+        err = "-" if v.error is None else f"{100 * v.error:.2f} %"
+        tol = "-" if not math.isfinite(v.tolerance) else f"{100 * v.tolerance:.2g} %"
+        rows.append((v.key, v.raw, _show(v, v.correct), err, tol, "right" if v.ok else "WRONG"))
+    widths = [max(len(r[i]) for r in rows) for i in range(6)]
+    lines = [title] if title else []
+    for i, r in enumerate(rows):
+        lines.append("  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip())
+        if i == 0:
+            lines.append("  ".join("-" * w for w in widths))
+            continue
+        v = verdicts[i - 1]
+        if not v.ok:
+            lines.append(textwrap.fill(f"mistake: {v.diagnosis}", 92, initial_indent="    ",
+                                       subsequent_indent="      ") if v.diagnosis else
+                         "    mistake: none of the known ones explains it")
+    wrong = sum(not v.ok for v in verdicts)
+    lines.append("")
+    rules = sorted({v.rule for v in verdicts})
+    lines.append("tolerance: " + "; ".join(rules))
+    lines.append(f"{len(verdicts) - wrong} of {len(verdicts)} right" +
+                 (f", {wrong} wrong" if wrong else ""))
+    return "\n".join(lines)
+
+
+def verdicts_dict(verdicts, scene: str | None = None, answers: str | None = None) -> dict:
+    """The verdicts for ``check --json`` (SI values)."""
+    wrong = sum(not v.ok for v in verdicts)
+    return {"scene": scene, "answers_file": answers, "all_right": wrong == 0,
+            "right": len(verdicts) - wrong, "wrong": wrong,
+            "answers": [v.to_dict() for v in verdicts]}
+
