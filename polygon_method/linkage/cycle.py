@@ -1,0 +1,110 @@
+"""The linkage over its cycle: the scene's plan on its branch, sampled and refined where
+something stands still or turns over."""
+
+from __future__ import annotations
+
+
+import numpy as np
+
+from ..tracking import TWO_PI, Sweeper, degrees_fn, merge, run_arrays, valid_mask
+from .shapes import _GRID
+
+
+# --------------------------------------------------------------------------- over the cycle
+
+
+class _Cycle:
+    """Dense evaluation of the scene over the reachable crank angles, with refinement."""
+
+    def __init__(self, scene, n=_GRID):
+        self.sw = sw = Sweeper(scene)
+        self.dom = dom = sw.domain
+        self.plan = sw.plan
+        span = TWO_PI if dom.full_turn else dom.hi - dom.lo
+        self.grid = dom.lo + span * (np.arange(n) + 0.5) / n
+        self.h = span / n
+        self.fr = sw.evaluate(self.grid)
+        self.bad = valid_mask(self.fr, self.plan)
+        self.deg = degrees_fn(dom)
+
+    def evaluate(self, pts, positions=False):
+        """A frame at crank angles ``pts`` (in the domain) and the mask of those where it is
+        not to be used: not assembled, or (unless ``positions``) singular."""
+        pts = np.asarray(pts, dtype=float)
+        lo, hi = self.dom.lo, self.dom.hi
+        if not self.dom.full_turn:
+            pts = np.clip(pts, lo, hi)
+        if positions:
+            t, _ = self.dom.map(pts)
+            seg = self.sw.segment_plans(t)
+            fr = None
+            bad = np.zeros(len(pts), dtype=bool)
+            out = {}
+            for k in np.unique(seg):
+                idx = np.nonzero(seg == k)[0]
+                out[int(k)] = (idx, run_arrays(self.dom.segments[int(k)][2], t[idx], self.sw.omega,
+                                         self.sw.alpha, vel=False, acc=False))
+            fr = merge(t, out)
+            return fr, fr.bad | bad
+        fr = self.sw.evaluate(pts)
+        return fr, valid_mask(fr, self.plan)
+
+    def extreme(self, f, sense, positions=False):
+        """(crank angle, value) of the largest ``sense * f`` over the cycle, refined."""
+        base_bad = self.fr.bad if positions else self.bad
+        vals = np.where(base_bad, -np.inf, f(self.fr) * sense)
+        i = int(np.argmax(vals))
+        t, best = float(self.grid[i]), float(vals[i])
+        a, b = t - self.h, t + self.h
+        for _ in range(14):
+            pts = np.linspace(a, b, 17)
+            fr, bad = self.evaluate(pts, positions)
+            v = np.where(bad, -np.inf, f(fr) * sense)
+            j = int(np.argmax(v))
+            if not np.isfinite(v[j]):
+                break
+            if v[j] >= best:
+                t, best = float(pts[j]), float(v[j])
+            a, b = pts[max(j - 1, 0)], pts[min(j + 1, 16)]
+            if b - a < 1e-13:
+                break
+        return t, best * sense
+
+    def zeros(self, f, level=0.0, positions=False):
+        """Crank angles where ``f - level`` changes sign over the cycle, refined."""
+        g = f(self.fr) - level
+        ok = ~(self.fr.bad if positions else self.bad)
+        grid = self.grid
+        if self.dom.full_turn:  # close the turn
+            grid = np.append(grid, grid[0] + TWO_PI)
+            g = np.append(g, g[0])
+            ok = np.append(ok, ok[0])
+        s = np.sign(g)
+        idx = np.nonzero(ok[:-1] & ok[1:] & (s[:-1] * s[1:] <= 0) & (s[:-1] != 0))[0]
+        out = []
+        for i in idx:
+            a, b = grid[i], grid[i + 1]
+            ga = g[i]
+            for _ in range(10):
+                pts = np.linspace(a, b, 33)
+                fr, bad = self.evaluate(pts, positions)
+                v = f(fr) - level
+                ch = np.nonzero((np.sign(v[1:]) != np.sign(ga)) & ~bad[1:])[0]
+                if not len(ch):
+                    break
+                j = ch[0] + 1
+                a, b = pts[j - 1], pts[j]
+                if b - a < 1e-14:
+                    break
+            out.append(0.5 * (a + b))
+        return out
+
+    def at(self, theta, vel=True):
+        """One evaluation at a crank angle in the domain (positions only with vel=False)."""
+        if vel:
+            fr, bad = self.evaluate([theta])
+            return fr
+        seg = self.sw.segment_plans(np.array([theta]))
+        plan = self.dom.segments[int(seg[0])][2]
+        return run_arrays(plan, np.array([float(theta)]), self.sw.omega, self.sw.alpha,
+                    vel=False, acc=False)
