@@ -165,7 +165,6 @@ def _cmd_sweep(args) -> int:
     """``polygon-method sweep SCENE [--steps N | --from A --to B --step S] [--csv FILE]
     [--plot FILE.svg] [--summary]``: print the summary; the CSV and the plot are written by
     ``write_output`` (whole or not at all)."""
-    from .plots import plot_bytes
     from .scene import load_scene
     from .summary import summarize, summary_of
     from .sweeps import sweep
@@ -188,6 +187,7 @@ def _cmd_sweep(args) -> int:
     if args.csv:
         outputs.append((args.csv, res.to_csv(), False))
     if plot:
+        from .plots import plot_bytes
         outputs.append((plot, plot_bytes(res, plot, points=_names(args, "points"),
                                          links=_names(args, "links")), True))
     for path, data, binary in outputs:

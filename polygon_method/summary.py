@@ -11,7 +11,6 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .kinematics import Motion
-from .linkage import engine_formula_lines
 from .scene import FixedPath, Scene
 from .sweeps import (SweepResult, rubbing_arrays, select, torque_array, tune_malloc, angles_ok,
                     evaluate_all, sweep_angles)
@@ -248,10 +247,9 @@ class _Reducer:
                                  bool(tasks))
                          for nm, u, mx, tmx, mn, tmn, what in rows)
         formulas = ()
-        try:
+        if [st.kind for st in self.plan.steps if st.kind != "carried"] == ["crank", "slider"]:
+            from .linkage import engine_formula_lines  # (only a slider crank has any)
             formulas = tuple(engine_formula_lines(self.scene, {e.name: e for e in extremes}))
-        except ImportError:
-            formulas = ()
         rng = None
         if not dom.full_turn:
             rng = (deg(dom.lo), deg(dom.lo) + math.degrees(dom.hi - dom.lo))

@@ -235,8 +235,19 @@ def sweep(scene: Scene, angles=None, *, chunk: int = CHUNK) -> SweepResult:
                        torque, len(th_req), len(th_req) - n, sw.domain, tuple(notes))
 
 
+def _constant(v) -> bool:
+    """A column that is one number for every angle (a zero-stride view)."""
+    return v.strides == (0,)
+
+
+def _const(v, n):
+    return np.broadcast_to(v[0] if len(v) else np.float64(0.0), (n,))
+
+
 class _Store:
-    """One block of rows (one allocation) that chunk frames are copied into."""
+    """One block of rows (one allocation) that chunk frames are copied into; constant
+    columns (ground points, fixed links, the crank's speed) get no row: they stay one
+    number, as a zero-stride view."""
 
     def __init__(self, theta, first: Motion):
         self.theta, self.first = theta, first
@@ -249,18 +260,32 @@ class _Store:
         for k, v in first.S.items():
             keys += [("S", k, j) for j in range(len(v))]
         keys += [("cond", i, None) for i in first.cond]
-        self.keys = keys
-        self.block = np.empty((len(keys), len(theta)))
-        self.bad = np.zeros(len(theta), dtype=bool)
+        n = len(theta)
+        self.constants = {}
+        self.keys = []
+        for key in keys:
+            v = self._get(first, key)
+            if _constant(v):
+                self.constants[key] = _const(v, n)
+            else:
+                self.keys.append(key)
+        self.block = np.empty((len(self.keys), n))
+        self.bad = np.zeros(n, dtype=bool)
+
+    @staticmethod
+    def _get(fr, key):
+        kind, k, j = key
+        v = getattr(fr, kind)[k]
+        return v if j is None else v[j]
 
     def put(self, sl, fr: Motion):
-        for r, (kind, k, j) in enumerate(self.keys):
-            v = getattr(fr, kind)[k]
-            self.block[r, sl] = v if j is None else v[j]
+        for r, key in enumerate(self.keys):
+            self.block[r, sl] = self._get(fr, key)
         self.bad[sl] = fr.bad
 
     def frame(self) -> Motion:
         rows = dict(zip(self.keys, self.block))
+        rows.update(self.constants)
         f = self.first
         P = {k: (rows[("P", k, 0)], rows[("P", k, 1)]) for k in f.P}
         V = {k: (rows[("V", k, 0)], rows[("V", k, 1)]) for k in f.V}
@@ -273,10 +298,16 @@ class _Store:
 
 
 def select(fr: Motion, keep) -> Motion:
-    two = lambda d: {k: (v[0][keep], v[1][keep]) for k, v in d.items()}  # noqa: E731
+    """The motion at the angles ``keep`` (a mask); constant columns stay constants."""
+    m = int(np.count_nonzero(keep))
+
+    def take(v):
+        return _const(v, m) if _constant(v) else v[keep]
+
+    two = lambda d: {k: (take(v[0]), take(v[1])) for k, v in d.items()}  # noqa: E731
     return _motion(fr.theta[keep], two(fr.P), two(fr.V), two(fr.A),
-                 {k: v[keep] for k, v in fr.W.items()}, {k: v[keep] for k, v in fr.Al.items()},
-                 {k: tuple(a[keep] for a in v) for k, v in fr.S.items()},
-                 {i: c[keep] for i, c in fr.cond.items()}, fr.bad[keep])
+                   {k: take(v) for k, v in fr.W.items()}, {k: take(v) for k, v in fr.Al.items()},
+                   {k: tuple(take(a) for a in v) for k, v in fr.S.items()},
+                   {i: take(c) for i, c in fr.cond.items()}, fr.bad[keep])
 
 

@@ -129,12 +129,17 @@ def _motion(theta, P, V, A, W, Al, S, cond, bad) -> Motion:
     return Motion(None, None, theta, P, V, A, W, Al, S, cond, bad)
 
 
-def _full(v, n):
-    """An array of length n from an evaluated value: a float (a ground point, a fixed
-    link) becomes a read-only broadcast view of it."""
+def _full(v, n, const):
+    """An array of length n from an evaluated value. A constant (a ground point, a fixed
+    link, the crank's speed) stays one number: a read-only zero-stride view of it, shared
+    by every column of that value (``const``), with no memory per angle."""
     if isinstance(v, np.ndarray) and v.shape == (n,):
         return v
-    return np.broadcast_to(np.float64(v if v is not None else 0.0), (n,))
+    x = float(v) if v is not None else 0.0
+    view = const.get(x)
+    if view is None:
+        view = const[x] = np.broadcast_to(np.float64(x), (n,))
+    return view
 
 
 def run_arrays(plan, theta, omega, alpha, vel=True, acc=True) -> Motion:
@@ -144,14 +149,17 @@ def run_arrays(plan, theta, omega, alpha, vel=True, acc=True) -> Motion:
     upto = 2 if (vel and acc) else (1 if vel else 0)
     with np.errstate(all="ignore"):
         m = plan.run(ctx, upto=upto)
-    fix = lambda d: {k: (_full(v[0], n), _full(v[1], n)) for k, v in d.items()}  # noqa: E731
+    const = {}
+    fix = lambda d: {k: (_full(v[0], n, const), _full(v[1], n, const))  # noqa: E731
+                     for k, v in d.items()}
     P = fix(m.P)
     V = fix(m.V) if upto >= 1 else {}
     A = fix(m.A) if upto >= 2 else {}
-    W = {k: _full(v, n) for k, v in m.W.items()} if upto >= 1 else {}
-    Al = {k: _full(v, n) for k, v in m.Al.items()} if upto >= 2 else {}
-    S = {k: tuple(_full(x, n) for x in v) for k, v in m.S.items()} if upto >= 1 else {}
-    cond = {i: _full(c, n) for i, c in ctx.cond.items()}
+    W = {k: _full(v, n, const) for k, v in m.W.items()} if upto >= 1 else {}
+    Al = {k: _full(v, n, const) for k, v in m.Al.items()} if upto >= 2 else {}
+    S = ({k: tuple(_full(x, n, const) for x in v) for k, v in m.S.items()} if upto >= 1
+         else {})
+    cond = {i: _full(c, n, const) for i, c in ctx.cond.items()}
     bad = ctx.bad if ctx.bad is not None else np.zeros(n, dtype=bool)
     return _motion(theta, P, V, A, W, Al, S, cond, bad)
 

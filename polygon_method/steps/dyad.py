@@ -41,7 +41,8 @@ def place(bx, by, dx, dy, l1, l2, sigma, ctx=None, step=None):
     ex, ey = dx - bx, dy - by
     e2 = ex * ex + ey * ey
     e = e2 ** 0.5
-    q = (l1 + l2 + e) * (l1 + l2 - e) * (e + l1 - l2) * (e - l1 + l2)
+    s, t = l1 + l2, l1 - l2
+    q = (s * s - e2) * (e2 - t * t)  # (s + e)(s - e)(e + t)(e - t), from e^2 unrounded
     if ctx is None or not ctx.array:
         if step is not None:
             if e == 0:
