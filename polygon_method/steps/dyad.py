@@ -33,30 +33,32 @@ __all__ = ["Dyad", "place", "velocity", "acceleration", "recognise"]
 
 
 def place(bx, by, dx, dy, l1, l2, sigma, ctx=None, step=None):
-    """X with |XB| = l1, |XD| = l2: along BD by (l1^2 - l2^2 + e^2) / 2e, off it by h.
+    """X with |XB| = l1, |XD| = l2, on the side ``sigma`` of B -> D.
 
-    ``4 e^2 h^2 = (l1+l2+e)(l1+l2-e)(e+l1-l2)(e-l1+l2)`` keeps h exact near a toggle.
-    Returns x, y and the condition e h / (l1 l2) = |sin| of the angle at X.
+    With e = |BD|: ``X = B + a (D - B) + sigma (h / e) perp(D - B)``, where
+    ``a = (l1^2 - l2^2 + e^2) / 2e^2`` and ``h / e = sqrt(q) / 2e^2`` with
+    ``q = 4 e^2 h^2 = ((l1+l2)^2 - e^2)(e^2 - (l1-l2)^2)``, computed from e^2 unrounded (no
+    square root of e^2 is taken: h stays exact near a toggle). Returns x, y and the
+    condition ``e h / (l1 l2) = sqrt(q) / (2 l1 l2)``, the |sin| of the angle at X.
     """
     ex, ey = dx - bx, dy - by
     e2 = ex * ex + ey * ey
-    e = e2 ** 0.5
     s, t = l1 + l2, l1 - l2
-    q = (s * s - e2) * (e2 - t * t)  # (s + e)(s - e)(e + t)(e - t), from e^2 unrounded
+    q = (s * s - e2) * (e2 - t * t)
     if ctx is None or not ctx.array:
         if step is not None:
-            if e == 0:
+            if e2 == 0:
                 raise step.coincident()
             if q < -TOL.closure * (l1 * l2) ** 2:
-                raise AssemblyError(step.why(e), step=step.label)
-        h = (q ** 0.5 if q > 0 else 0.0) / (2 * e)
+                raise AssemblyError(step.why(e2 ** 0.5), step=step.label)
+        root = q ** 0.5 if q > 0 else 0.0
     else:
-        e = ctx.safe(e, step)
-        h = ctx.root(q, (l1 * l2) ** 2, step, lambda: step.why(e)) / (2 * e)
-    along = (l1 * l1 - l2 * l2 + e2) / (2 * e)
-    ux, uy = ex / e, ey / e
-    return (bx + along * ux - sigma * h * uy, by + along * uy + sigma * h * ux,
-            e * h / (l1 * l2))
+        e2 = ctx.safe(e2, step)
+        root = ctx.root(q, (l1 * l2) ** 2, step, None)
+    w = 0.5 / e2
+    a = (l1 * l1 - l2 * l2 + e2) * w
+    g = (sigma * root) * w
+    return bx + a * ex - g * ey, by + a * ey + g * ex, root * (0.5 / (l1 * l2))
 
 
 def velocity(r1x, r1y, r2x, r2y, vbx, vby, vdx, vdy, d=None):
