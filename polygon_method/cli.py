@@ -11,11 +11,12 @@ import argparse
 import json
 import math
 import os
+import stat
 import sys
 import tempfile
 from pathlib import Path
 
-from .errors import PolygonMethodError, SceneError
+from .errors import PolygonMethodError, SceneError, printable
 
 __all__ = ["main", "write_output"]
 
@@ -25,27 +26,99 @@ class _Parser(argparse.ArgumentParser):
         self.exit(2, f"{self.prog}: error: {message}\n")
 
 
-def write_output(path, data, *, binary=False) -> None:
-    """Write ``data`` to ``path`` atomically: a temporary file renamed into place."""
-    path = Path(path)
-    directory = path.parent if str(path.parent) else Path(".")
-    if not directory.is_dir():
-        raise PolygonMethodError(f"cannot write {path}: no directory {directory}")
-    fd, tmp = tempfile.mkstemp(dir=directory, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "wb" if binary else "w", **({} if binary else
-                                                       {"encoding": "utf-8"})) as fh:
-            fh.write(data)
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)  # as an ordinary new file (mkstemp makes it 0600)
-        os.replace(tmp, path)
-    except BaseException:
+class _Target:
+    """Where one output goes: a new or regular file (written beside it, then renamed over
+    it), or a special file (a device, a pipe: written straight into it). A symbolic link is
+    written through, never replaced."""
+
+    def __init__(self, path, option, protect=()):
+        self.shown, self.option = str(path), option
+        real = Path(os.path.realpath(path))
+        if real.is_dir():
+            raise PolygonMethodError(f"cannot write {path}: it is a directory", key=option)
+        for other in protect:
+            if other and real.exists() and os.path.exists(other) and \
+                    os.path.samefile(real, other):
+                raise PolygonMethodError(f"cannot write {path}: it is the scene file "
+                                         "itself", key=option)
+        self.path = real
+        self.special = real.exists() and not stat.S_ISREG(real.stat().st_mode)
+        directory = real.parent
+        if not self.special:
+            if not directory.is_dir():
+                raise PolygonMethodError(f"cannot write {path}: no directory {directory}",
+                                         key=option)
+            if not os.access(directory, os.W_OK | os.X_OK):
+                raise PolygonMethodError(f"cannot write {path}: the directory {directory} is "
+                                         "not writable", key=option)
+            if real.exists() and not os.access(real, os.W_OK):
+                raise PolygonMethodError(f"cannot write {path}: the file is read-only",
+                                         key=option)
+        self.tmp = None
+
+    def fail(self, exc: OSError):
+        return PolygonMethodError(f"cannot write {self.shown}: "
+                                  f"{exc.strerror or type(exc).__name__}", key=self.option)
+
+    def stage(self, data, binary):
+        self.data, self.binary = data, binary
+        if self.special:
+            return
+        fd, self.tmp = tempfile.mkstemp(dir=self.path.parent, prefix=f".{self.path.name}.",
+                                        suffix=".tmp")
         try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        raise
+            with os.fdopen(fd, "wb" if binary else "w",
+                           **({} if binary else {"encoding": "utf-8"})) as fh:
+                fh.write(data)
+            umask = os.umask(0)
+            os.umask(umask)
+            os.chmod(self.tmp, 0o666 & ~umask)  # as an ordinary new file (mkstemp: 0600)
+        except OSError as exc:
+            raise self.fail(exc) from None
+
+    def commit(self):
+        try:
+            if self.special:
+                with open(self.path, "wb" if self.binary else "w",
+                          **({} if self.binary else {"encoding": "utf-8"})) as fh:
+                    fh.write(self.data)
+            else:
+                os.replace(self.tmp, self.path)
+                self.tmp = None
+        except OSError as exc:
+            raise self.fail(exc) from None
+
+    def discard(self):
+        if self.tmp is not None:
+            try:
+                os.unlink(self.tmp)
+            except OSError:
+                pass
+            self.tmp = None
+
+
+def check_outputs(paths, protect=()) -> list:
+    """Every output path checked before anything is computed or written: ``paths`` as
+    (path, option) pairs; ``protect``: files that must not be written over (the scene)."""
+    return [_Target(path, option, protect) for path, option in paths]
+
+
+def write_outputs(targets, datas) -> None:
+    """Write every output or none: each staged beside its file first, then all renamed into
+    place (special files last, written straight)."""
+    try:
+        for t, (data, binary) in zip(targets, datas):
+            t.stage(data, binary)
+        for t in sorted(targets, key=lambda t: t.special):
+            t.commit()
+    finally:
+        for t in targets:
+            t.discard()
+
+
+def write_output(path, data, *, binary=False, option=None, protect=()) -> None:
+    """Write ``data`` to ``path`` whole or not at all (see :func:`write_outputs`)."""
+    write_outputs(check_outputs([(path, option)], protect), [(data, binary)])
 
 
 def _cmd_solve(args) -> int:
@@ -125,12 +198,13 @@ def _cmd_draw(args) -> int:
         raise PolygonMethodError(f"cannot draw to {out}: the file name must end in .svg, .png "
                                  "or .pdf", key="-o")
     scales = parse_scales(getattr(args, "scale", None))
+    targets = check_outputs([(out, "-o")], protect=[args.scene])
     sol = solve(load_scene(args.scene))
     diagram = getattr(args, "diagram", None) or "all"
     data, used, warnings = render(sol, fmt, diagram, scales)
     for w in list(sol.warnings) + warnings:
         print(f"warning: {w}", file=sys.stderr)
-    write_output(out, data, binary=fmt != "svg")
+    write_outputs(targets, [(data, fmt != "svg")])
     print(f"{out}: " + "; ".join(f"{name} {display_unit(s.text)}" for name, s in used.items()))
     return 0
 
@@ -147,6 +221,9 @@ def _requested_angles(args):
         a, b, s = args.start, args.stop, args.step
         if not all(math.isfinite(v) for v in (a, b, s)):
             raise SceneError("--from, --to and --step must be finite numbers")
+        if max(abs(a), abs(b)) > MAX_ANGLE_DEG:
+            raise SceneError(f"--from and --to are crank angles in degrees, within "
+                             f"+-{MAX_ANGLE_DEG:g} (got {a:g} and {b:g})")
         if s == 0 or (b - a) * s < 0:
             raise SceneError(f"--step {s:g} does not lead from {a:g} to {b:g} deg")
         count = int(math.floor((b - a) / s + 1e-9)) + 1
@@ -172,8 +249,23 @@ def _cmd_sweep(args) -> int:
     plot = getattr(args, "plot", None)
     if plot and not plot.lower().endswith((".svg", ".png", ".pdf")):
         raise SceneError(f"--plot {plot}: the file must end in .svg, .png or .pdf")
+    if not plot and (getattr(args, "points", None) or getattr(args, "links", None)):
+        raise SceneError("--points and --links choose what --plot draws: give --plot FILE "
+                         "as well", key="--points" if getattr(args, "points", None)
+                         else "--links")
+    wanted = [(path, option) for path, option in ((args.csv, "--csv"), (plot, "--plot"))
+              if path]
+    targets = check_outputs(wanted, protect=[args.scene])
     scene = load_scene(args.scene)
     angles = _requested_angles(args)
+    if args.csv:
+        need = _csv_bytes(scene, len(angles))
+        if need > MAX_CSV_BYTES:
+            raise SceneError(f"a CSV of {len(angles)} crank angles would need about "
+                             f"{need / 2 ** 30:.1f} GiB of memory (at most "
+                             f"{MAX_CSV_BYTES / 2 ** 30:g} GiB): ask for fewer --steps, or "
+                             "--summary alone, which needs little memory at any count",
+                             key="--csv")
     want_summary = args.summary or not (args.csv or plot)
     if not (args.csv or plot):
         print(summarize(scene, angles).text())
@@ -185,19 +277,32 @@ def _cmd_sweep(args) -> int:
                                  file=scene.file)
     outputs = []
     if args.csv:
-        outputs.append((args.csv, res.to_csv(), False))
+        outputs.append((res.to_csv(), False))
     if plot:
         from .plots import plot_bytes
-        outputs.append((plot, plot_bytes(res, plot, points=_names(args, "points"),
-                                         links=_names(args, "links")), True))
-    for path, data, binary in outputs:
-        write_output(path, data, binary=binary)
+        outputs.append((plot_bytes(res, plot, points=_names(args, "points"),
+                                   links=_names(args, "links")), True))
+    write_outputs(targets, outputs)
     if want_summary:
         print(summary_of(res).text())
     else:
         print(f"{len(res)} of {res.requested} crank angles evaluated"
               + (f"; {_limits_text(res.domain)}" if res.domain.limits else ""))
     return 0
+
+
+#: the largest crank angle (deg) a sweep's --from/--to may name
+MAX_ANGLE_DEG = 1e6
+#: the most memory a CSV may need (the arrays, their table and its text)
+MAX_CSV_BYTES = 2 * 2 ** 30
+
+
+def _csv_bytes(scene, n) -> int:
+    """About what a CSV of ``n`` rows needs: each of its columns as an array, in the table
+    that is written and as text (8 + 8 + 18 bytes a number)."""
+    cols = (1 + 6 * len(scene.point_names) + 2 * len(scene.links) + 4 * len(scene.sliders)
+            + len(scene.pins) + 1 + len(scene.links))
+    return n * cols * 34
 
 
 def _names(args, what):
@@ -285,9 +390,20 @@ def main(argv=None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
     try:
-        return args.func(args)
+        code = args.func(args)
+        sys.stdout.flush()  # a full disk on standard output is one line too
+        return code
     except PolygonMethodError as exc:
         print(f"polygon-method {args.command}: {exc.one_line()}", file=sys.stderr)
+        return 2
+    except OSError as exc:  # the system refused a read or a write (not a bug of ours)
+        where = f"{printable(str(exc.filename))}: " if exc.filename else ""
+        _quiet_stdout()
+        print(f"polygon-method {args.command}: {where}{exc.strerror or exc}", file=sys.stderr)
+        return 2
+    except MemoryError:
+        print(f"polygon-method {args.command}: not enough memory for this request (ask for "
+              "fewer crank angles)", file=sys.stderr)
         return 2
     except KeyboardInterrupt:
         return 130
@@ -297,6 +413,15 @@ def main(argv=None) -> int:
         print(f"polygon-method {args.command}: internal error ({type(exc).__name__}: {exc}); "
               "please report it with the scene file", file=sys.stderr)
         return 3
+
+
+def _quiet_stdout():
+    """After standard output failed, drop what is still buffered (so that the exit does not
+    fail again)."""
+    try:
+        sys.stdout = open(os.devnull, "w")
+    except OSError:
+        pass
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -26,6 +26,7 @@ __all__ = [
     "SingularStepError",
     "Tolerances",
     "TOL",
+    "printable",
 ]
 
 
@@ -59,19 +60,31 @@ class PolygonMethodError(Exception):
         """The error as one line: ``file: key (line n): step: message``."""
         parts = []
         if self.file:
-            parts.append(str(self.file))
-        where = self.key or ""
+            parts.append(printable(str(self.file)))
+        where = printable(self.key or "")
         if self.line is not None:
             where = f"{where} (line {self.line})" if where else f"line {self.line}"
         if where:
             parts.append(where)
         if self.step:
-            parts.append(self.step)
-        parts.append(" ".join(str(self.message).split()))
+            parts.append(printable(self.step))
+        parts.append(printable(" ".join(str(self.message).split())))
         return ": ".join(parts)
 
     def __str__(self) -> str:
         return self.one_line()
+
+
+def printable(text: str) -> str:
+    r"""``text`` with line breaks and other control characters shown escaped, so that a
+    message built from a file's name, a title or a key stays one clean line.
+
+    >>> print(printable("bad\nname.toml"), printable("BC"))
+    bad\nname.toml BC
+    """
+    if text.isprintable():
+        return text
+    return "".join(c if c.isprintable() or c == " " else repr(c)[1:-1] for c in text)
 
 
 class SceneError(PolygonMethodError):

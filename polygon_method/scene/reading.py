@@ -15,17 +15,25 @@ from .records import (_ABSURD_LONG, _ABSURD_SHORT, _POINT_ONLY, _UNIT_ORDER, TOP
                       GuideSlider, Link, Scene, split_name)
 from .tables import _suggest, _Tables
 
+#: the most a scene file may hold: a scene is a page of text (``/dev/zero`` is not read on)
+MAX_SCENE_BYTES = 1 << 20
+
+
 def load_scene(path) -> Scene:
     """Read and check a scene file. Raises :class:`SceneError` naming file, key and line."""
     path = Path(path)
     try:
-        data = path.read_bytes()
+        with open(path, "rb") as fh:
+            data = fh.read(MAX_SCENE_BYTES + 1)
     except FileNotFoundError:
         raise SceneError("no such file", file=str(path)) from None
     except IsADirectoryError:
         raise SceneError("is a directory, not a scene file", file=str(path)) from None
     except OSError as exc:
         raise SceneError(f"cannot read: {exc.strerror}", file=str(path)) from None
+    if len(data) > MAX_SCENE_BYTES:
+        raise SceneError(f"larger than {MAX_SCENE_BYTES >> 20} MiB: not a scene file (a "
+                         "scene is a page of TOML text)", file=str(path))
     if b"\x00" in data:
         raise SceneError("not a text file (it holds binary data); a scene is TOML text",
                          file=str(path))
@@ -374,7 +382,11 @@ def load_answers(path, scene: Scene):
     """Read an answer file from ``path``; see :func:`parse_answers`."""
     path = Path(path)
     try:
-        data = path.read_bytes()
+        with open(path, "rb") as fh:
+            data = fh.read(MAX_SCENE_BYTES + 1)
+        if len(data) > MAX_SCENE_BYTES:
+            raise SceneError(f"larger than {MAX_SCENE_BYTES >> 20} MiB: not an answer file",
+                             file=str(path))
         text = data.decode("utf-8")
     except FileNotFoundError:
         raise SceneError("no such file", file=str(path)) from None

@@ -1,0 +1,120 @@
+"""A user's files are never destroyed or half-written, and every refusal is one line with
+exit code 2: links are written through, special files written into, several outputs are
+checked before anything is computed and written all or none, the scene is never written
+over, and what is read or asked for is bounded."""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from polygon_method.cli import main
+
+ROOT = Path(__file__).resolve().parent.parent
+SCENE = ROOT / "worked_problems" / "fourbar_crank_acceleration.toml"
+
+
+def run(argv, capsys):
+    code = main([str(a) for a in argv])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def one_line_refusal(code, err):
+    assert code == 2, err
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and "internal error" not in err and "Traceback" not in err, err
+    return lines[0]
+
+
+def test_a_link_is_written_through(tmp_path, capsys):
+    target = tmp_path / "target.csv"
+    target.write_text("old\n")
+    link = tmp_path / "link.csv"
+    link.symlink_to(target.name)
+    code, _, err = run(["sweep", SCENE, "--steps", "8", "--csv", link], capsys)
+    assert code == 0, err
+    assert link.is_symlink() and os.readlink(link) == target.name
+    assert target.read_text().startswith("theta [deg]")
+
+
+@pytest.mark.skipif(not Path("/dev/full").exists(), reason="no /dev/full here")
+def test_a_full_device_is_one_line_and_stays_a_device(capsys):
+    code, _, err = run(["sweep", SCENE, "--steps", "8", "--csv", "/dev/full"], capsys)
+    line = one_line_refusal(code, err)
+    assert "/dev/full" in line and "No space left" in line
+    assert Path("/dev/full").is_char_device()
+
+
+def test_a_directory_is_refused(tmp_path, capsys):
+    d = tmp_path / "out.svg"
+    d.mkdir()
+    line = one_line_refusal(*run(["draw", SCENE, "-o", d], capsys)[::2])
+    assert "is a directory" in line
+    assert d.is_dir() and not any(d.iterdir())
+
+
+def test_several_outputs_are_written_all_or_none(tmp_path, capsys):
+    csv = tmp_path / "a.csv"
+    csv.write_text("keep\n")
+    line = one_line_refusal(*run(["sweep", SCENE, "--steps", "8", "--csv", csv, "--plot",
+                                  tmp_path / "missing" / "p.svg"], capsys)[::2])
+    assert "--plot" in line and "no directory" in line
+    assert csv.read_text() == "keep\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.csv"]  # no temporary left
+
+
+def test_the_scene_is_never_written_over(tmp_path, capsys):
+    scene = tmp_path / "s.toml"
+    shutil.copy(SCENE, scene)
+    before = scene.read_bytes()
+    for argv in (["sweep", scene, "--csv", scene], ["draw", scene, "-o",
+                                                      tmp_path / "s.toml"]):
+        line = one_line_refusal(*run(argv, capsys)[::2])
+        assert "scene file itself" in line or "must end in" in line
+    link = tmp_path / "s.svg"
+    link.symlink_to(scene.name)
+    line = one_line_refusal(*run(["draw", scene, "-o", link], capsys)[::2])
+    assert "scene file itself" in line
+    assert scene.read_bytes() == before
+
+
+@pytest.mark.skipif(not Path("/dev/zero").exists(), reason="no /dev/zero here")
+def test_reading_is_bounded(capsys):
+    line = one_line_refusal(*run(["solve", "/dev/zero"], capsys)[::2])
+    assert "larger than 1 MiB" in line
+
+
+def test_control_characters_in_a_path_are_shown_escaped(tmp_path, capsys):
+    line = one_line_refusal(*run(["solve", tmp_path / "no\nsuch\tfile.toml"], capsys)[::2])
+    assert "no\\nsuch\\tfile.toml" in line
+
+
+def test_points_without_a_plot_and_absurd_ranges_are_refused(capsys):
+    line = one_line_refusal(*run(["sweep", SCENE, "--points", "C"], capsys)[::2])
+    assert "--plot" in line
+    line = one_line_refusal(*run(["sweep", SCENE, "--from", "1e300", "--to", "1e301",
+                                  "--step", "1"], capsys)[::2])
+    assert "within" in line
+
+
+def test_a_csv_too_large_is_refused_up_front_with_its_memory(tmp_path, capsys):
+    out = tmp_path / "big.csv"
+    line = one_line_refusal(*run(["sweep", SCENE, "--steps", "10000000", "--csv", out],
+                                 capsys)[::2])
+    assert "GiB" in line and "--summary" in line
+    assert not out.exists()
+
+
+@pytest.mark.skipif(not Path("/dev/full").exists(), reason="no /dev/full here")
+def test_a_full_standard_output_is_one_line():
+    with open("/dev/full", "w") as full:
+        p = subprocess.run([sys.executable, "-m", "polygon_method", "solve", str(SCENE)],
+                           stdout=full, stderr=subprocess.PIPE, text=True, cwd=ROOT)
+    line = one_line_refusal(p.returncode, p.stderr)
+    assert "No space left" in line
