@@ -32,6 +32,7 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 
+from .errors import SceneError
 from .plan import Context, Dims, Plan
 
 __all__ = ["Motion", "evaluate", "hypot"]
@@ -62,22 +63,35 @@ class Motion:
         self.cond, self.bad = cond, bad
 
     # ----- points
+    def _lookup(self, table, name, what):
+        try:
+            return table[name]
+        except (KeyError, TypeError):
+            raise self._unknown(name, what) from None
+
+    def _unknown(self, name, what):
+        known = {"point": self.P, "link": self.W, "slider": self.S}[what]
+        if what == "point" and name in self.P and not self.V:
+            return SceneError(f"the velocities of {name} were not evaluated (positions only)")
+        return SceneError(f"no {what} {name!r} here; the {what}s are "
+                          + ", ".join(map(str, known)))
+
     def position(self, point):
-        return self.P[point]
+        return self._lookup(self.P, point, "point")
 
     def velocity(self, point, relative_to=None):
         """Velocity of ``point`` (relative to ``relative_to``: v_XY = v_X - v_Y)."""
-        vx, vy = self.V[point]
+        vx, vy = self._lookup(self.V, point, "point")
         if relative_to is None:
             return (vx, vy)
-        ux, uy = self.V[relative_to]
+        ux, uy = self._lookup(self.V, relative_to, "point")
         return (vx - ux, vy - uy)
 
     def acceleration(self, point, relative_to=None):
-        ax, ay = self.A[point]
+        ax, ay = self._lookup(self.A, point, "point")
         if relative_to is None:
             return (ax, ay)
-        bx, by = self.A[relative_to]
+        bx, by = self._lookup(self.A, relative_to, "point")
         return (ax - bx, ay - by)
 
     def speed(self, point, relative_to=None):
@@ -88,23 +102,28 @@ class Motion:
 
     # ----- links
     def _key(self, link):
-        return self.scene.link(link).key if self.scene is not None else link
+        if self.scene is None:
+            return link
+        try:
+            return self.scene.link(link).key
+        except (SceneError, TypeError, AttributeError):
+            raise self._unknown(link, "link") from None
 
     def omega(self, link):
-        return self.W[self._key(link)]
+        return self._lookup(self.W, self._key(link), "link")
 
     def alpha(self, link):
-        return self.Al[self._key(link)]
+        return self._lookup(self.Al, self._key(link), "link")
 
     # ----- sliders
     def sliding_velocity(self, point):
-        return self.S[point][0]
+        return self._lookup(self.S, point, "slider")[0]
 
     def sliding_acceleration(self, point):
-        return self.S[point][1]
+        return self._lookup(self.S, point, "slider")[1]
 
     def coriolis(self, point):
-        s = self.S[point]
+        s = self._lookup(self.S, point, "slider")
         return (s[2], s[3])
 
     @property

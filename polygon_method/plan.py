@@ -40,7 +40,8 @@ import math
 import weakref
 from dataclasses import dataclass, field, replace
 
-from .errors import TOL, AssemblyError, MobilityError, PolygonMethodError, SingularStepError
+from .errors import (TOL, AssemblyError, MobilityError, PolygonMethodError, SceneError,
+                     SingularStepError)
 from .numbers import in_units
 from .scene import FixedPath, GuideSlider, Scene
 from .steps import TIERS, Carried, Context, Crank, Dyad, SliderDyad, SlottedLink, State
@@ -241,6 +242,15 @@ class Plan:
         bound = [st.bind(prm) for st, prm in zip(self.steps, dims.steps)]
         return tuple(tuple(b[k] for b in bound) for k in range(3))
 
+    def __getstate__(self):  # the bound phases are made again, not pickled
+        return {k: v for k, v in self.__dict__.items()
+                if k not in ("_zero", "_phases", "_checked")}
+
+    def __setstate__(self, state):
+        for k, v in state.items():
+            object.__setattr__(self, k, v)
+        self.__post_init__()
+
     def __post_init__(self):
         # what every evaluation at the plan's own dimensions starts from (made anew by
         # dataclasses.replace, so a plan with other steps never runs stale functions)
@@ -309,9 +319,12 @@ def compile_plan(scene: Scene) -> Plan:
     try:
         key = _content(scene)
         plan = _BY_CONTENT.get(key)
-    except TypeError:  # something unhashable: no caching by content
+    except (TypeError, AttributeError):  # unhashable, or not a scene: no caching by content
         key, plan = None, None
     if plan is None:
+        if not isinstance(scene, Scene):
+            raise SceneError(f"a Scene is needed (load_scene(path) or parse_scene(text)), "
+                             f"not {type(scene).__name__} {str(scene)[:60]!r}")
         try:
             plan = _Compiler(scene).run()
         except PolygonMethodError as exc:  # name the scene file in the one-line message
@@ -354,11 +367,30 @@ def gruebler(scene: Scene) -> int:
     return 3 * (n - 1) - 2 * j
 
 
+def _finite_inputs(scene: Scene) -> None:
+    """A scene made through the API (``dataclasses.replace``) is checked as the loader
+    checks a file: finite numbers, positive lengths."""
+    inp = scene.input
+    for name, v in (("angle", inp.angle), ("speed", inp.omega), ("acceleration", inp.alpha)):
+        if not isinstance(v, (int, float)) or not math.isfinite(v):
+            raise SceneError(f"the crank's {name} must be a finite number, got {v!r}",
+                             key=f"[input] {name}", file=scene.file)
+    for p, xy in scene.ground.items():
+        if not all(isinstance(c, (int, float)) and math.isfinite(c) for c in xy):
+            raise SceneError(f"ground point {p} must have finite coordinates, got {xy!r}",
+                             key=f"[ground] {p}", file=scene.file)
+    for lk in scene.links:
+        if not isinstance(lk.length, (int, float)) or not (0 < lk.length < math.inf):
+            raise SceneError(f"link {lk.key} must have a finite positive length, got "
+                             f"{lk.length!r}", key=f"[links] {lk.key}", file=scene.file)
+
+
 class _Compiler:
     """The constraint graph as the recognisers see it (``g`` in the steps' ``recognise``):
     the points found so far (``P``), the links and sliders already used, the bodies."""
 
     def __init__(self, scene: Scene):
+        _finite_inputs(scene)
         self.scene = scene
         self.names = scene.point_names
         self.unit = scene.length_unit

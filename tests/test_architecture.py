@@ -124,3 +124,40 @@ def test_evaluation_computes_only_what_is_asked():
     assert e_only.A == {}
     positions = evaluate(plan, upto=0)
     assert positions.V == {} and positions.P["E"] == full.P["E"]
+
+
+def test_api_misuse_is_an_error_of_the_family():
+    from polygon_method import PolygonMethodError
+
+    with pytest.raises(PolygonMethodError, match="a Scene is needed"):
+        solve("worked_problems/fourbar_image_points.toml")
+    sol = solve(parse_scene(FOURBAR))
+    with pytest.raises(PolygonMethodError, match="no point 'Z'"):
+        sol.speed("Z")
+    with pytest.raises(PolygonMethodError, match="no link"):
+        sol.omega("XY")
+    with pytest.raises(PolygonMethodError, match="no slider"):
+        sol.sliding_velocity("C")
+
+
+@pytest.mark.parametrize("field, value", [("angle", math.nan), ("omega", math.inf),
+                                          ("alpha", -math.inf)])
+def test_non_finite_input_through_the_api_is_refused(field, value):
+    from polygon_method import SceneError
+
+    sc = parse_scene(FOURBAR)
+    bad = dataclasses.replace(sc, input=dataclasses.replace(sc.input, **{field: value}))
+    with pytest.raises(SceneError, match="finite"):
+        solve(bad)
+
+
+def test_a_solution_pickles_and_its_plan_still_solves():
+    import pickle
+
+    sc = parse_scene(FOURBAR)
+    sol = solve(sc)
+    back = pickle.loads(pickle.dumps(sol))
+    assert back.P == sol.P and back.V == sol.V and back.Al == sol.Al
+    m = evaluate(back.plan)
+    assert m.A["E"] == sol.A["E"]
+    assert pickle.loads(pickle.dumps(sc)) == sc
