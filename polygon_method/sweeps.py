@@ -145,6 +145,9 @@ def _patch(fr: Motion, fix: Motion, idx):
         if arr.flags.writeable:  # read-only: a constant (ground point, fixed link)
             arr[idx] = new
 
+    for k in fr.P:
+        for j in (0, 1):
+            put(fr.P[k][j], fix.P[k][j])
     for k in fr.V:
         for j in (0, 1):
             put(fr.V[k][j], fix.V[k][j])
@@ -226,6 +229,12 @@ def sweep(scene: Scene, angles=None, *, chunk: int = CHUNK) -> SweepResult:
     if bad.any():
         notes.append(f"{int(bad.sum())} crank angle(s) at a singular position (a toggle "
                      "where the velocity is indeterminate) were left out")
+    open_ = unclosed(scene, fr) & ~bad
+    if open_.any():
+        notes.append(f"{int(open_.sum())} crank angle(s) where the links would not keep their "
+                     "lengths (an indeterminate position) were left out")
+        bad |= open_
+    if bad.any():
         fr = select(fr, ~bad)
         th = th[~bad]
     n = len(th)
@@ -233,6 +242,18 @@ def sweep(scene: Scene, angles=None, *, chunk: int = CHUNK) -> SweepResult:
     torque = torque_array(scene, fr.V, fr.W, sw.omega, n)
     return SweepResult(scene, plan, th, fr.P, fr.V, fr.A, fr.W, fr.Al, fr.S, fr.cond, rub,
                        torque, len(th_req), len(th_req) - n, sw.domain, tuple(notes))
+
+
+def unclosed(scene, fr: Motion):
+    """Mask of the rows where some link does not keep its length (beyond rounding): every
+    row a sweep keeps is a possible position of the mechanism."""
+    bad = np.zeros(len(fr.theta), dtype=bool)
+    for lk in scene.links:
+        (px, py), (qx, qy) = fr.P[lk.p], fr.P[lk.q]
+        with np.errstate(invalid="ignore"):
+            off = np.abs(np.hypot(qx - px, qy - py) - lk.length)
+        bad |= ~(off <= 1e-9 * lk.length)
+    return bad
 
 
 def _constant(v) -> bool:

@@ -190,6 +190,10 @@ class Sweeper:
         self.theta0, self.omega, self.alpha = inp.angle, inp.omega, inp.alpha
         dom = _DOMAINS.get(self.plan)
         if dom is None:
+            # the branch followed is the one the scene states; where the scene's own instant
+            # is singular (a toggle or change point: both assemblies meet), that branch
+            # cannot be told, and the sweep refuses as solve does
+            self.plan.run(Context(inp.angle, inp.omega, inp.alpha), upto=0)
             dom = _DOMAINS[self.plan] = self._explore()
         self.domain = dom
         if not dom.full_turn and dom.hi - dom.lo < _LOCKED:
@@ -426,8 +430,8 @@ class Sweeper:
         return out
 
     def richardson(self, theta, h=2.5 * _NEAR):
-        """Velocities and accelerations at angles next to a change point, where the
-        construction is indeterminate, from both sides: f(t) = [15 m(h) - 6 m(2h) + m(3h)]
+        """Positions, velocities and accelerations at angles next to a change point, where
+        the construction is indeterminate, from both sides: f(t) = [15 m(h) - 6 m(2h) + m(3h)]
         / 10, m(h) the mean of f(t - h) and f(t + h) (error O(h^6))."""
         th = np.asarray(theta, dtype=float)
         fr = {s: self.evaluate(th + s * h) for s in (-3, -2, -1, 1, 2, 3)}
@@ -437,13 +441,14 @@ class Sweeper:
             m = [(get(fr[-k]) + get(fr[k])) / 2 for k in (1, 2, 3)]
             return (15 * m[0] - 6 * m[1] + m[2]) / 10
 
+        P = {k: (comb(lambda f: f.P[k][0]), comb(lambda f: f.P[k][1])) for k in base.P}
         V = {k: (comb(lambda f: f.V[k][0]), comb(lambda f: f.V[k][1])) for k in base.V}
         A = {k: (comb(lambda f: f.A[k][0]), comb(lambda f: f.A[k][1])) for k in base.A}
         W = {k: comb(lambda f: f.W[k]) for k in base.W}
         Al = {k: comb(lambda f: f.Al[k]) for k in base.Al}
         S = {k: tuple(comb(lambda f, j=j: f.S[k][j]) for j in range(len(v)))
              for k, v in base.S.items()}
-        return _motion(th, base.P, V, A, W, Al, S, base.cond, base.bad)
+        return _motion(th, P, V, A, W, Al, S, base.cond, base.bad)
 
 
 def merge(theta, frames) -> Motion:

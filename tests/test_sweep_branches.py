@@ -1,0 +1,93 @@
+"""Sweeps never jump branch and never keep an impossible row: a scene whose own instant is
+at a change point is refused with solve's message; samples exactly at a change point keep
+every link's length."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from polygon_method import SingularStepError, parse_scene, solve
+from polygon_method.sweeps import sweep
+
+PARALLELOGRAM = """
+[ground]
+A = [0, 0]
+D = [100, 0]
+[links]
+AB = 40
+BC = 100
+CD = 40
+[assembly]
+C = "above"
+[input]
+crank = "AB"
+angle = {angle}
+speed = "10 rad/s ccw"
+"""
+
+ISOSCELES_ENGINE = """
+[ground]
+O = [0, 0]
+[links]
+OA = 100
+AB = 100
+[sliders]
+B = {{ path = "horizontal" }}
+[input]
+crank = "OA"
+angle = {angle}
+speed = "10 rad/s ccw"
+"""
+
+
+def _message(fn):
+    with pytest.raises(SingularStepError) as err:
+        fn()
+    return err.value.one_line()
+
+
+@pytest.mark.parametrize("text, angle", [(PARALLELOGRAM, 180.02), (PARALLELOGRAM, -0.03),
+                                         (ISOSCELES_ENGINE, 90.01)])
+def test_a_scene_at_a_change_point_is_refused_as_solve_refuses_it(text, angle):
+    sc = parse_scene(text.format(angle=angle))
+    said = _message(lambda: solve(sc))
+    assert _message(lambda: sweep(sc, np.radians([angle - 1.0, angle + 1.0]))) == said
+
+
+@pytest.mark.parametrize("lengths, angle", [((100, 100, 100), 90), ((100, 60, 60), 30)],
+                         ids=["rhombus", "deltoid"])
+def test_samples_at_a_change_point_keep_every_link_length(lengths, angle):
+    ab, bc, cd = lengths
+    text = f"""
+    [ground]
+    A = [0, 0]
+    D = [100, 0]
+    [links]
+    AB = {ab}
+    BC = {bc}
+    CD = {cd}
+    [input]
+    crank = "AB"
+    angle = {angle}
+    speed = "10 rad/s ccw"
+    """
+    sc = parse_scene(text)
+    res = sweep(sc, np.radians(np.arange(0.0, 360.0, 0.5)))
+    assert len(res) > 0
+    for lk in sc.links:
+        (px, py), (qx, qy) = res.P[lk.p], res.P[lk.q]
+        off = np.abs(np.hypot(qx - px, qy - py) - lk.length)
+        assert off.max() <= 1e-9 * lk.length, (lk.key, float(off.max()))
+    assert np.isfinite(res.W["CD"]).all() and np.isfinite(res.Al["CD"]).all()
+
+
+def test_the_stated_branch_is_followed_on_both_sides():
+    """Just clear of the change point the parallelogram stays a parallelogram: the
+    follower turns with the crank (omega_CD = omega_AB) on both sides of the scene."""
+    sc = parse_scene(PARALLELOGRAM.format(angle=175.0))
+    res = sweep(sc, np.radians(np.arange(170.0, 180.0, 0.5)))
+    assert np.allclose(res.W["CD"], 10.0, rtol=1e-9)
+    assert math.isclose(solve(sc).W["CD"], 10.0, rel_tol=1e-9)
