@@ -285,6 +285,7 @@ def summarize(scene: Scene, angles=None, *, chunk: int = CHUNK, refine: bool = T
     Each extreme found between samples is then refined by zooming in on it."""
     th_req = sweep_angles(angles)
     sw = Sweeper(scene)
+    sw.stated_branch()
     ok = angles_ok(sw, th_req)
     th = th_req if ok is None else th_req[ok]
     if len(th) > chunk:

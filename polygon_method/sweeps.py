@@ -205,6 +205,7 @@ def sweep(scene: Scene, angles=None, *, chunk: int = CHUNK) -> SweepResult:
     """
     th_req = sweep_angles(angles)
     sw = Sweeper(scene)
+    sw.stated_branch()
     plan = sw.plan
     ok = angles_ok(sw, th_req)
     th = th_req if ok is None else th_req[ok]

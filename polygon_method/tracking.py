@@ -190,10 +190,6 @@ class Sweeper:
         self.theta0, self.omega, self.alpha = inp.angle, inp.omega, inp.alpha
         dom = _DOMAINS.get(self.plan)
         if dom is None:
-            # the branch followed is the one the scene states; where the scene's own instant
-            # is singular (a toggle or change point: both assemblies meet), that branch
-            # cannot be told, and the sweep refuses as solve does
-            self.plan.run(Context(inp.angle, inp.omega, inp.alpha), upto=0)
             dom = _DOMAINS[self.plan] = self._explore()
         self.domain = dom
         if not dom.full_turn and dom.hi - dom.lo < _LOCKED:
@@ -203,6 +199,12 @@ class Sweeper:
                 f"angle in the scene: the linkage is locked there"
                 + (f" ({lp.why})" if lp else ""), step=lp.step if lp else None,
                 file=scene.file)
+
+    def stated_branch(self) -> None:
+        """Raise as :func:`~polygon_method.solution.solve` does where the scene's own instant
+        is singular (a toggle or a change point, where both assemblies meet): the branch the
+        scene states cannot be told there, so a sweep of values does not start from it."""
+        self.plan.run(Context(self.theta0, self.omega, self.alpha), upto=0)
 
     # ----- exploring the branch
     def _scout(self, plan, grid):

@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from polygon_method import SingularStepError, parse_scene, solve
+from polygon_method.summary import summarize
 from polygon_method.sweeps import sweep
 
 PARALLELOGRAM = """
@@ -55,6 +56,7 @@ def test_a_scene_at_a_change_point_is_refused_as_solve_refuses_it(text, angle):
     sc = parse_scene(text.format(angle=angle))
     said = _message(lambda: solve(sc))
     assert _message(lambda: sweep(sc, np.radians([angle - 1.0, angle + 1.0]))) == said
+    assert _message(lambda: summarize(sc, np.radians([angle - 1.0, angle + 1.0]))) == said
 
 
 @pytest.mark.parametrize("lengths, angle", [((100, 100, 100), 90), ((100, 60, 60), 30)],
