@@ -20,7 +20,11 @@ def rubbing_at(pin, W, radius) -> tuple:
     ``plan.pins``; a body without a link, the ground or a block on a fixed path, does not
     turn)."""
     w = W.get  # a body without a link (None) is not in W: it does not turn
-    return tuple([abs(w(a, 0.0) - w(b, 0.0)) * radius for a, b in pin[5]])
+    pairs = pin[5]
+    if len(pairs) == 1:  # a pin of two bodies (the usual one)
+        (a, b), = pairs
+        return (abs(w(a, 0.0) - w(b, 0.0)) * radius,)
+    return tuple([abs(w(a, 0.0) - w(b, 0.0)) * radius for a, b in pairs])
 
 
 def pin_rubbing(plan, W, radii) -> dict:

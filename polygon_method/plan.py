@@ -239,7 +239,19 @@ class Plan:
     def bind(self, dims: Dims) -> tuple:
         """(positions, velocities, accelerations): each the steps' phase functions, in
         order, for ``dims``."""
-        bound = [st.bind(prm) for st, prm in zip(self.steps, dims.steps)]
+        bound, steps, prms, i = [], self.steps, dims.steps, 0
+        while i < len(steps):
+            st, j = steps[i], i + 1
+            key = st.group_key
+            if key is not None:  # neighbours the kind can do in one go (points on one body)
+                while j < len(steps) and type(steps[j]) is type(st) and \
+                        steps[j].group_key == key:
+                    j += 1
+            if j - i > 1:
+                bound.append(type(st).bind_group(steps[i:j], prms[i:j]))
+            else:
+                bound.append(st.bind(prms[i]))
+            i = j
         return tuple(tuple(b[k] for b in bound) for k in range(3))
 
     def __getstate__(self):  # the bound phases are made again, not pickled

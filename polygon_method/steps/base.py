@@ -127,6 +127,10 @@ class Step:
         (x1, y1, _), (x2, y2, _) = self.place(P, prm, ctx, 1.0), self.place(P, prm, ctx, -1.0)
         return ((x1 + x2) / 2, (y1 + y2) / 2), ((x1 - x2) / 2, (y1 - y2) / 2)
 
+    #: steps of one kind next to each other with the same key may be bound together
+    #: (``bind_group``): the same formulas, fewer calls
+    group_key = None
+
     @property
     def needs_links(self) -> tuple:
         """Links (other than its own) whose omega and alpha the step reads."""

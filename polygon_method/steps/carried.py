@@ -125,6 +125,40 @@ class Carried(Step):
 
         return position, velocity, acceleration
 
+    @property
+    def group_key(self):
+        return (self.p, self.q)
+
+    @staticmethod
+    def bind_group(steps, prms):
+        """The phases of several points carried by the same two points (E, F, G on BC),
+        in one call each: the same image formula."""
+        p, q = steps[0].p, steps[0].q
+        items = tuple((st.point, st.index, prm[0], prm[1]) for st, prm in zip(steps, prms))
+        scalar = all(isinstance(v, (int, float)) for it in items for v in it[2:])
+        img = _image if scalar else image
+
+        def position(m):
+            P, cond = m.P, m.cond
+            (px, py), (qx, qy) = P[p], P[q]
+            for X, i, lam, mu in items:
+                P[X] = img(px, py, qx, qy, lam, mu)
+                cond[i] = 1.0
+
+        def velocity(m):
+            V = m.V
+            (px, py), (qx, qy) = V[p], V[q]
+            for X, _, lam, mu in items:
+                V[X] = img(px, py, qx, qy, lam, mu)
+
+        def acceleration(m):
+            A = m.A
+            (px, py), (qx, qy) = A[p], A[q]
+            for X, _, lam, mu in items:
+                A[X] = img(px, py, qx, qy, lam, mu)
+
+        return position, velocity, acceleration
+
     def position_words(self, L, which, angle_deg):
         return f"{self.point}: {self.how or 'on ' + self.link}"
 
