@@ -142,6 +142,17 @@ def _cmd_plan(args) -> int:
     return 0
 
 
+def _cmd_centres(args) -> int:
+    """``polygon-method centres SCENE``: the instantaneous centre method."""
+    from .centres import locate
+    from .centretable import centres_text
+    from .scene import load_scene
+    from .solution import solve
+
+    print(centres_text(locate(solve(load_scene(args.scene)))))
+    return 0
+
+
 def _cmd_steps(args) -> int:
     from .scene import load_scene
     from .solution import solve
@@ -383,6 +394,11 @@ def build_parser() -> argparse.ArgumentParser:
     s = sub.add_parser("linkage", help="Grashof, toggle positions, transmission angle")
     s.add_argument("scene")
     s.set_defaults(func=_cmd_linkage)
+
+    s = sub.add_parser("centres", help="instantaneous centres (Kennedy's theorem) and the "
+                       "velocities they give")
+    s.add_argument("scene")
+    s.set_defaults(func=_cmd_centres)
     return p
 
 

@@ -22,7 +22,8 @@ from __future__ import annotations
 
 from .derived import input_torque as _torque
 from .derived import power_terms, rubbing_at
-from .errors import TOL
+from .centres import JSON_BODIES, centres_dict, locate
+from .errors import TOL, PolygonMethodError
 from .kinematics import Motion, hypot
 from .numbers import fmt_angular, sense  # noqa: F401  (re-exported)
 from .plan import Context, compile_plan
@@ -173,11 +174,18 @@ class Solution(Motion):
                 d["pins"][name] = entry
         if sc.loads:
             d["input_torque"] = self.input_torque
+        warnings = list(self.warnings)
+        bodies = 1 + sum(len(st.bodies()) for st in self.plan.steps)
+        if bodies <= JSON_BODIES:
+            try:
+                d["centres"] = centres_dict(locate(self))
+            except PolygonMethodError as exc:
+                warnings.append(f"instantaneous centres: {exc.message}")
         d["steps"] = [{"step": st.index + 1, "kind": st.kind, "title": st.title,
                        "finds": list(st.finds),
                        "condition": self.cond.get(st.index, 1.0)}
                       for st in self.plan.steps]
-        d["warnings"] = list(self.warnings)
+        d["warnings"] = warnings
         d["notes"] = list(self.notes)
         return d
 

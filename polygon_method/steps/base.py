@@ -163,6 +163,11 @@ class Step:
         (``"between BC and CD"``), or None if its condition is no transmission angle."""
         return None
 
+    def bodies(self) -> tuple:
+        """The bodies this step sets moving (links, blocks), in the order a textbook numbers
+        them (ground 1, crank 2, ...)."""
+        return ()
+
     def orient(self) -> dict:
         """link -> (X, Y): the relative motion of each link the step finds, X relative to Y,
         as the step table's acceleration table names it."""

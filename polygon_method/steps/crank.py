@@ -101,6 +101,10 @@ class Crank(Step):
         return position, velocity_, acceleration_
 
     # ----- words
+    def bodies(self):
+        """The bodies this step sets moving, in the textbook's numbering order."""
+        return (self.link,)
+
     def orient(self):
         return {self.link: (self.tip, self.pivot)}
 

@@ -225,6 +225,9 @@ class Dyad(Step):
     def transmission(self):
         return f"between {self.side(1)} and {self.side(2)}"
 
+    def bodies(self):
+        return (self.link1, self.link2)
+
     def orient(self):
         return {self.link1: (self.point, self.b), self.link2: (self.point, self.d)}
 

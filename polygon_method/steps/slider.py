@@ -280,6 +280,9 @@ class SliderDyad(Step):
     def transmission(self):
         return f"between {self.link} and the normal to the path of {self.point}"
 
+    def bodies(self):
+        return (self.link, f"block {self.point}")
+
     def orient(self):
         return {self.link: (self.point, self.b)}
 

@@ -200,6 +200,9 @@ class SlottedLink(Step):
     def condition_column(self):
         return (f"cond step {self.index + 1}", "1", f"|{self.known}{self.point}| / {self.guide}")
 
+    def bodies(self):
+        return (f"block {self.point}", self.guide)
+
     def orient(self):
         return {self.guide: (self.new, self.known)}
 

@@ -1,0 +1,396 @@
+"""Instantaneous centres: the textbook's second method (Kennedy's theorem).
+
+The bodies are numbered as a textbook does: the ground 1, the crank 2, then the bodies in
+the order the construction sets them moving (a block counts as a body). Of the
+``N = n (n - 1) / 2`` centres, the **primary** ones come from the joints: a pin is the
+centre of the bodies it joins; a block sliding on a straight fixed path has its centre with
+the ground at infinity perpendicular to the path, and a block sliding on a moving link has
+its centre with that link at infinity perpendicular to the link. The others are found by
+**Kennedy's theorem**: the three centres of any three bodies lie on one line, so ``I_ij``
+is where the line through ``I_ik, I_kj`` crosses the line through ``I_il, I_lj``.
+
+A centre at infinity is a direction, never a huge coordinate. Two lines that cross at a
+small angle give a far, ill-conditioned centre: the sine of the angle is the centre's
+condition, with the polygon steps' policy (a warning below ``TOL.warn``, an error below
+``TOL.singular``, except exactly parallel lines: a centre at infinity).
+
+Velocities follow from the centres alone: a body j turning about ``I_1j`` moves a point X
+with ``v = omega_j x (X - I_1j)``; the angular-velocity-ratio theorem gives omega_j from a
+body i already known, ``omega_j (I_ij - I_1j) = omega_i (I_ij - I_1i)`` (I_ij is a point of
+both bodies, with one velocity). A test compares every value with the polygon solution.
+
+>>> from polygon_method import parse_scene, solve
+>>> sol = solve(parse_scene('''
+... [ground]
+... A = [0, 0]
+... D = [100, 0]
+... [links]
+... AB = 50
+... BC = 66
+... CD = 56
+... [input]
+... crank = "AB"
+... angle = 60
+... speed = "10.5 rad/s cw"
+... '''))
+>>> ic = locate(sol)
+>>> ic.bodies, len(ic.centres)
+(('ground', 'AB', 'BC', 'CD'), 6)
+>>> [ic.centres[k].label for k in ic.order if not ic.centres[k].primary]
+['I13', 'I24']
+>>> round(ic.omega(3), 9) == round(sol.W["BC"], 9)
+True
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from .errors import TOL, SceneError, SingularStepError
+from .scene import FixedPath, GuideSlider
+
+__all__ = ["Centre", "Centres", "locate", "centres_dict", "MAX_BODIES", "JSON_BODIES"]
+
+#: more bodies than this have too many centres to list (n = 30: 435 centres)
+MAX_BODIES = 30
+#: ``solve --json`` lists the centres of mechanisms of at most this many bodies (66 centres)
+JSON_BODIES = 12
+#: two lines closer to parallel than this (sine of their angle) meet at infinity
+PARALLEL = 1e-12
+
+
+@dataclass(frozen=True)
+class Centre:
+    """The instantaneous centre of bodies ``i < j`` (textbook numbers).
+
+    ``point``: its position (m), or None when it is at infinity, in ``direction`` (a unit
+    vector; the bodies' relative motion is then a translation perpendicular to it).
+    ``how``: in words; ``lines``: for a centre found by Kennedy's theorem, the two pairs of
+    centres whose lines cross here; ``condition``: the sine of their crossing angle.
+    """
+
+    i: int
+    j: int
+    point: tuple | None
+    direction: tuple | None
+    how: str
+    lines: tuple = ()
+    condition: float = 1.0
+
+    @property
+    def label(self) -> str:
+        return f"I{self.i}{self.j}" if max(self.i, self.j) < 10 else f"I{self.i},{self.j}"
+
+    @property
+    def primary(self) -> bool:
+        return not self.lines
+
+    @property
+    def at_infinity(self) -> bool:
+        return self.point is None
+
+
+@dataclass(frozen=True)
+class Centres:
+    """Every instantaneous centre of a solved mechanism, and the velocities they give.
+
+    ``bodies``: body names, ``bodies[k - 1]`` is body k; ``centres``: (i, j) -> Centre;
+    ``order``: the keys in the order found (primary first); ``omegas``: body -> omega by the
+    angular-velocity-ratio theorem, with ``ratio_from`` body -> the body it came from;
+    ``warnings``: ill-conditioned centres.
+    """
+
+    bodies: tuple
+    centres: dict
+    order: tuple
+    omegas: dict
+    ratio_from: dict
+    warnings: tuple
+    sol: object
+
+    @property
+    def n(self) -> int:
+        return len(self.bodies)
+
+    def centre(self, i, j) -> Centre:
+        return self.centres[(min(i, j), max(i, j))]
+
+    def omega(self, body) -> float:
+        return self.omegas[self._number(body)]
+
+    def _number(self, body) -> int:
+        if isinstance(body, int):
+            return body
+        names = [b.lower() for b in self.bodies]
+        key = self.sol.scene.link(body).key.lower() if self.sol.scene.has_link(body) else \
+            str(body).lower()
+        return names.index(key) + 1
+
+    def velocity(self, point, body=None):
+        """The velocity of ``point`` (on ``body``, by default the first body it is on) from
+        the centres: omega_j x (X - I_1j), or the translation of a body whose I_1j is at
+        infinity."""
+        j = self._number(body) if body is not None else self.body_of(point)
+        return self._field(j, self.sol.P[point])
+
+    def body_of(self, point) -> int:
+        for name, _ in self.sol.plan.bodies_at(point):
+            k = self._index.get(name)
+            if k is not None and k != 1:
+                return k
+        return 1
+
+    @property
+    def _index(self):
+        return {b: k + 1 for k, b in enumerate(self.bodies)}
+
+    def _field(self, j, x):
+        if j == 1:
+            return (0.0, 0.0)
+        c = self.centre(1, j)
+        w = self.omegas[j]
+        if c.point is not None:
+            return (-w * (x[1] - c.point[1]), w * (x[0] - c.point[0]))
+        i = self.ratio_from[j]  # a translating body: the velocity of its centre with i
+        return self._field(i, self.centre(i, j).point)
+
+
+def _body_names(sol):
+    """Ground, then the bodies in the order the steps set them moving."""
+    names = ["ground"]
+    for st in sol.plan.steps:
+        for b in st.bodies():
+            if b not in names:
+                names.append(b)
+    return tuple(names)
+
+
+def _number_of(sol, names):
+    fixed = set(sol.plan.fixed_links)
+    index = {b: k + 1 for k, b in enumerate(names)}
+    return lambda name: 1 if name in fixed else index.get(name)
+
+
+def _unit(x, y):
+    n = math.hypot(x, y)
+    return (x / n, y / n)
+
+
+def _primary(sol, names):
+    sc = sol.scene
+    num = _number_of(sol, names)
+    found = {}
+    for p in sc.point_names:
+        joined = sorted({num(name) for name, _ in sol.plan.bodies_at(p)} - {None})
+        for a in range(len(joined)):
+            for b in range(a + 1, len(joined)):
+                key = (joined[a], joined[b])
+                if key not in found:
+                    found[key] = Centre(*key, tuple(sol.P[p]), None, f"the pin at {p}")
+    for s in sc.sliders:
+        blk = num(f"block {s.point}")
+        if isinstance(s, FixedPath):
+            d = _unit(-s.u[1], s.u[0])
+            key = (1, blk)
+            how = (f"block {s.point} slides on the {s.label} path: at infinity, "
+                   "perpendicular to the path")
+        elif isinstance(s, GuideSlider):
+            (x1, y1), (x2, y2) = sol.P[s.first], sol.P[s.second]
+            ux, uy = _unit(x2 - x1, y2 - y1)
+            d = (-uy, ux)
+            g = num(sc.link(s.guide).key)
+            key = (min(g, blk), max(g, blk))
+            how = (f"block {s.point} slides along {s.guide}: at infinity, perpendicular "
+                   f"to {s.guide}")
+        else:  # pragma: no cover
+            continue
+        found[key] = Centre(*key, None, d, how)
+    return found
+
+
+def _line(a: Centre, b: Centre):
+    """(point, unit direction) of the line through two centres, or None (the line at
+    infinity, or two centres at one place)."""
+    if a.point is not None and b.point is not None:
+        dx, dy = b.point[0] - a.point[0], b.point[1] - a.point[1]
+        if math.hypot(dx, dy) == 0.0:
+            return None
+        return a.point, _unit(dx, dy)
+    if a.point is not None:
+        return a.point, b.direction
+    if b.point is not None:
+        return b.point, a.direction
+    return None
+
+
+def _cross(l1, l2, scale):
+    """Where two lines meet: ('point', xy, sine), ('infinity', direction, 0.0) for parallel
+    lines, or None for one line twice."""
+    (p1, d1), (p2, d2) = l1, l2
+    s = d1[0] * d2[1] - d1[1] * d2[0]
+    wx, wy = p2[0] - p1[0], p2[1] - p1[1]
+    if abs(s) <= PARALLEL:
+        if abs(wx * d1[1] - wy * d1[0]) <= 1e-9 * scale:
+            return None  # the same line: no crossing
+        return ("infinity", d1, 0.0)  # parallel lines meet at infinity along them
+    t = (wx * d2[1] - wy * d2[0]) / s
+    return ("point", (p1[0] + t * d1[0], p1[1] + t * d1[1]), abs(s))
+
+
+def locate(sol) -> "Centres":
+    """Every instantaneous centre of the solved mechanism ``sol``, by Kennedy's theorem, and
+    the angular velocities by the angular-velocity-ratio theorem."""
+    names = _body_names(sol)
+    n = len(names)
+    if n > MAX_BODIES:
+        raise SceneError(f"{n} bodies have {n * (n - 1) // 2} instantaneous centres: more "
+                         f"than this tool lists (at most {MAX_BODIES} bodies)")
+    scale = max((math.hypot(*p) for p in sol.P.values()), default=1.0) or 1.0
+    found = _primary(sol, names)
+    order = sorted(found)
+    warnings = []
+    missing = [(i, j) for i in range(1, n + 1) for j in range(i + 1, n + 1)
+               if (i, j) not in found]
+    while missing:
+        # as a textbook goes: the next centre is the first that two lines locate well;
+        # one that only nearly parallel lines locate waits until better lines are known
+        pick, fallback = None, None
+        for key in missing:
+            c = _kennedy(key, found, n, scale)
+            if c is None:
+                continue
+            if c.point is None or c.condition >= TOL.warn:
+                pick = c
+                break
+            if fallback is None or c.condition > fallback.condition:
+                fallback = c
+        c = pick or fallback
+        if c is None:
+            break
+        if c.point is not None and c.condition < TOL.singular:
+            raise SingularStepError(
+                f"{c.label} is where {_words(c.lines[0])} and {_words(c.lines[1])} cross, "
+                f"at {math.degrees(math.asin(c.condition)):.2g} deg (condition "
+                f"{c.condition:.2g}): the lines are nearly parallel, the centre far and "
+                "ill-determined", step=f"centre {c.label}")
+        if c.point is not None and c.condition < TOL.warn:
+            warnings.append(f"centre {c.label}: its lines cross at "
+                            f"{math.degrees(math.asin(c.condition)):.3g} deg (condition "
+                            f"{c.condition:.3g}): far and ill-conditioned")
+        key = (c.i, c.j)
+        found[key] = c
+        order.append(key)
+        missing.remove(key)
+    if missing:
+        raise SingularStepError(
+            "Kennedy's theorem cannot locate " + ", ".join(f"I{i}{j}" for i, j in missing)
+            + " (every pair of lines through known centres is the same line or lies at "
+            "infinity)", step="centres")
+    omegas, ratio_from = _omegas(sol, names, found)
+    return Centres(names, found, tuple(order), omegas, ratio_from, tuple(warnings), sol)
+
+
+def _words(pair):
+    (a, b) = pair
+    return f"the line {a.label}-{b.label}"
+
+
+def _kennedy(key, found, n, scale):
+    i, j = key
+    lines = []
+    for k in range(1, n + 1):
+        if k in key:
+            continue
+        a, b = found.get((min(i, k), max(i, k))), found.get((min(k, j), max(k, j)))
+        if a is None or b is None:
+            continue
+        ln = _line(a, b)
+        if ln is not None:
+            lines.append((ln, (a, b)))
+    best = None
+    for p in range(len(lines)):
+        for q in range(p + 1, len(lines)):
+            hit = _cross(lines[p][0], lines[q][0], scale)
+            if hit is None:
+                continue
+            kind, where, cond = hit
+            pairs = (lines[p][1], lines[q][1])
+            how = (f"Kennedy: on the line {pairs[0][0].label}-{pairs[0][1].label} and the "
+                   f"line {pairs[1][0].label}-{pairs[1][1].label}")
+            if kind == "infinity":
+                return Centre(i, j, None, where, how + " (parallel: at infinity)", pairs, 0.0)
+            c = Centre(i, j, where, None, how, pairs, cond)
+            if best is None or cond > best.condition:
+                best = c
+    return best
+
+
+def _omegas(sol, names, found):
+    """omega of every body, from the crank's by the angular-velocity-ratio theorem."""
+    n = len(names)
+    w = {1: 0.0, 2: sol.scene.input.omega}
+    frm = {}
+
+    def get(i, j):
+        return found[(min(i, j), max(i, j))]
+
+    def field(i, x):
+        if i == 1:
+            return (0.0, 0.0)
+        c = get(1, i)
+        if c.point is not None:
+            return (-w[i] * (x[1] - c.point[1]), w[i] * (x[0] - c.point[0]))
+        return field(frm[i], get(frm[i], i).point)
+
+    pending = list(range(3, n + 1))
+    while pending:
+        done = False
+        for j in list(pending):
+            c1j = get(1, j)
+            best = None
+            for i in list(w):
+                if i == j:
+                    continue
+                cij = get(i, j)
+                if cij.point is None:
+                    if c1j.point is not None and get(1, i).point is not None:
+                        best = (float("inf"), i, w[i])  # the same omega (parallel motion)
+                    continue
+                if c1j.point is None:  # j translates
+                    best = best or (float("inf"), i, 0.0)
+                    continue
+                rx, ry = cij.point[0] - c1j.point[0], cij.point[1] - c1j.point[1]
+                r2 = rx * rx + ry * ry
+                if r2 == 0.0:
+                    continue
+                vx, vy = field(i, cij.point)
+                cand = ((r2, i, (rx * vy - ry * vx) / r2))
+                if best is None or cand[0] > best[0]:
+                    best = cand
+            if best is not None:
+                _, i, wj = best
+                w[j], frm[j] = wj, i
+                pending.remove(j)
+                done = True
+        if not done:
+            raise SingularStepError("the angular velocities cannot be had from the centres "
+                                    "(every body's centres with the known ones coincide)",
+                                    step="centres")
+    return w, frm
+
+
+def centres_dict(ic: Centres) -> dict:
+    """The centres for the JSON contract: label -> bodies, position (m) or direction."""
+    out = {}
+    for key in ic.order:
+        c = ic.centres[key]
+        d = {"bodies": [ic.bodies[c.i - 1], ic.bodies[c.j - 1]], "how": c.how}
+        if c.point is None:
+            d["direction"] = list(c.direction)
+        else:
+            d["position"] = list(c.point)
+        if not c.primary:
+            d["condition"] = c.condition
+        out[c.label] = d
+    return out

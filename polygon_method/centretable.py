@@ -1,0 +1,106 @@
+"""The instantaneous-centre method as a textbook writes it out: the links numbered, the
+number of centres, the primary centres from the joints, each other centre by Kennedy's
+theorem with the two lines that locate it, then the angular velocities by the
+angular-velocity-ratio theorem and the velocities of the points (``polygon-method
+centres``).
+
+>>> from polygon_method import parse_scene, solve
+>>> from polygon_method.centres import locate
+>>> sol = solve(parse_scene('''
+... [ground]
+... O = [0, 0]
+... [links]
+... OA = 150
+... AB = 600
+... [sliders]
+... B = { path = "horizontal" }
+... [input]
+... crank = "OA"
+... angle = 90
+... speed = "10 rad/s ccw"
+... '''))
+>>> text = centres_text(locate(sol))
+>>> "N = n (n - 1) / 2 = 4 x 3 / 2 = 6" in text, "I14  at infinity" in text
+(True, True)
+"""
+
+from __future__ import annotations
+
+import math
+
+from .centres import Centre, Centres
+from .numbers import fmt, fmt_angular
+
+__all__ = ["centres_text"]
+
+
+def _where(sol, c: Centre) -> str:
+    u, name = sol.scene.length_unit, sol.scene.units
+    if c.point is None:
+        deg = math.degrees(math.atan2(c.direction[1], c.direction[0])) % 180.0
+        return f"at infinity, direction {fmt(deg, 4)} deg"
+    return f"({fmt(c.point[0] / u, 6)}, {fmt(c.point[1] / u, 6)}) {name}"
+
+
+def centres_text(ic: Centres) -> str:
+    sol = ic.sol
+    sc = sol.scene
+    n = ic.n
+    out = [f"{sc.title or 'Instantaneous centres'}: instantaneous centre method", ""]
+    out.append("Links (the ground is 1, the crank 2):")
+    for k, name in enumerate(ic.bodies, 1):
+        out.append(f"  {k}  {name}")
+    out.append(f"Number of centres: N = n (n - 1) / 2 = {n} x {n - 1} / 2 = {n * (n - 1) // 2}")
+    out.append("")
+    out.append("Primary centres (from the joints):")
+    for key in ic.order:
+        c = ic.centres[key]
+        if c.primary:
+            out.append(f"  {c.label:<5}{_where(sol, c):<40} {c.how}")
+    secondary = [ic.centres[k] for k in ic.order if not ic.centres[k].primary]
+    if secondary:
+        out.append("")
+        out.append("Secondary centres by Kennedy's theorem (the three centres of any three "
+                   "links lie on one line):")
+        for c in secondary:
+            (a, b), (p, q) = c.lines
+            cond = "" if c.condition >= 0.999 or c.point is None else \
+                f"; lines cross at {fmt(math.degrees(math.asin(min(c.condition, 1.0))), 3)} deg"
+            out.append(f"  {c.label:<5}{_where(sol, c):<40} on {a.label}-{b.label} and "
+                       f"{p.label}-{q.label}{cond}")
+    out.append("")
+    out.append("Angular velocities (angular-velocity-ratio theorem: omega_j / omega_i = "
+               "I1i-Iij / I1j-Iij):")
+    for k in range(2, n + 1):
+        w = ic.omegas[k]
+        name = ic.bodies[k - 1]
+        if k == 2:
+            out.append(f"  omega_{k} ({name}) = {fmt_angular(w, 'rad/s')} (the input)")
+            continue
+        i = ic.ratio_from.get(k, 2)
+        c1j = ic.centre(1, k)
+        if c1j.point is None:
+            out.append(f"  omega_{k} ({name}) = 0: I1{k} is at infinity, {name} translates")
+            continue
+        out.append(f"  omega_{k} ({name}) = {fmt_angular(sol.shown(w, 'omega'), 'rad/s')} "
+                   f"(from omega_{i} with {ic.centre(1, i).label}, {ic.centre(1, k).label}, "
+                   f"{ic.centre(i, k).label})")
+    out.append("")
+    out.append("Velocities of the points (v = omega x distance from the centre with the "
+               "ground):")
+    for p in sc.point_names:
+        if p in sc.ground:
+            continue
+        k = ic.body_of(p)
+        vx, vy = ic.velocity(p, k)
+        v = sol.shown(math.hypot(vx, vy), "v")
+        c = ic.centre(1, k)
+        if c.point is None:
+            out.append(f"  v_{p} = {fmt(v)} m/s (link {k} translates)")
+            continue
+        r = math.hypot(sol.P[p][0] - c.point[0], sol.P[p][1] - c.point[1])
+        out.append(f"  v_{p} = omega_{k} x {p}-{c.label} = {fmt(abs(ic.omegas[k]))} x "
+                   f"{fmt(r / sc.length_unit, 5)} {sc.units} = {fmt(v)} m/s")
+    for w in ic.warnings:
+        out.append(f"warning: {w}")
+    return "\n".join(out)

@@ -1,0 +1,149 @@
+"""The instantaneous-centre method against the polygon solution (a second method): every
+centre is where the two bodies' velocity fields of the polygon solution agree, the three
+centres of any three bodies are in line (Kennedy), and the velocities the centres give equal
+the polygon's to 1e-9, on every worked problem and on random mechanisms of every kind."""
+
+from __future__ import annotations
+
+import dataclasses
+import glob
+import json
+import math
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import strategies as st
+
+from polygon_method import PolygonMethodError, load_scene, solve
+from polygon_method.centres import locate
+from polygon_method.cli import main
+from polygon_method.scene import FixedPath
+
+ROOT = Path(__file__).resolve().parent.parent
+WORKED = sorted(glob.glob(str(ROOT / "worked_problems" / "*.toml")))
+
+
+def _field(sol, name):
+    """(point on the body, its velocity, omega) from the polygon solution."""
+    if name == "ground" or name in sol.plan.fixed_links:
+        return (0.0, 0.0), (0.0, 0.0), 0.0
+    if name.startswith("block "):
+        p = name.split()[1]
+        sl = sol.scene.slider(p)
+        w = 0.0 if isinstance(sl, FixedPath) else sol.W[sol.scene.link(sl.guide).key]
+        return sol.P[p], sol.V[p], w
+    lk = sol.scene.link(name)
+    return sol.P[lk.p], sol.V[lk.p], sol.W[lk.key]
+
+
+def _v(field, x):
+    (kx, ky), (vx, vy), w = field
+    return vx - w * (x[1] - ky), vy + w * (x[0] - kx)
+
+
+def agree(sol, tol=1e-9):
+    ic = locate(sol)
+    vmax = max(math.hypot(*v) for v in sol.V.values())
+    wmax = max(abs(w) for w in sol.W.values())
+    L = max(math.hypot(*p) for p in sol.P.values())
+    # each centre: the two bodies' velocities agree there (at infinity: the same omega,
+    # and a relative translation perpendicular to the centre's direction)
+    for (i, j), c in ic.centres.items():
+        fi, fj = _field(sol, ic.bodies[i - 1]), _field(sol, ic.bodies[j - 1])
+        if c.point is not None:
+            a, b = _v(fi, c.point), _v(fj, c.point)
+            assert math.hypot(a[0] - b[0], a[1] - b[1]) <= tol * vmax * max(
+                1.0, math.hypot(*c.point) / L), (c.label, a, b)
+        else:
+            assert abs(fi[2] - fj[2]) <= tol * wmax, c.label
+            a, b = _v(fi, (0.0, 0.0)), _v(fj, (0.0, 0.0))
+            rel = (a[0] - b[0], a[1] - b[1])
+            assert abs(rel[0] * c.direction[0] + rel[1] * c.direction[1]) <= tol * vmax
+    # Kennedy: any three centres of three bodies are in line
+    n = ic.n
+    for i in range(1, n + 1):
+        for j in range(i + 1, n + 1):
+            for k in range(j + 1, n + 1):
+                cs = [ic.centre(i, j), ic.centre(j, k), ic.centre(i, k)]
+                fin = [c.point for c in cs if c.point is not None]
+                if len(fin) == 3:
+                    (x1, y1), (x2, y2), (x3, y3) = fin
+                    area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+                    assert abs(area) <= 1e-7 * L * L * max(
+                        1.0, max(math.hypot(*p) for p in fin) / L) ** 2
+    # the velocities the centres give
+    for k, name in enumerate(ic.bodies, 1):
+        assert abs(ic.omega(k) - _field(sol, name)[2]) <= tol * wmax, name
+    for p in sol.scene.point_names:
+        v = ic.velocity(p)
+        assert math.hypot(v[0] - sol.V[p][0], v[1] - sol.V[p][1]) <= tol * vmax, p
+    return ic
+
+
+@pytest.mark.parametrize("path", WORKED, ids=[Path(p).stem for p in WORKED])
+def test_worked_problems_agree_with_the_polygon(path):
+    agree(solve(load_scene(path)))
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(which=st.sampled_from(WORKED), angle=st.floats(0.0, 360.0),
+       scale=st.lists(st.floats(0.85, 1.15), min_size=12, max_size=12))
+def test_random_mechanisms_of_every_kind_agree(which, angle, scale):
+    sc = load_scene(which)
+    links = tuple(dataclasses.replace(lk, length=lk.length * scale[k % 12])
+                  if not (lk.p in sc.ground and lk.q in sc.ground) else lk
+                  for k, lk in enumerate(sc.links))
+    sc = dataclasses.replace(sc, links=links, assembly={},
+                             input=dataclasses.replace(sc.input, angle=math.radians(angle)))
+    try:
+        sol = solve(sc)
+        agree(sol)
+    except PolygonMethodError:
+        assume(False)
+
+
+def test_a_slider_s_centre_is_at_infinity_perpendicular_to_its_path():
+    sol = solve(load_scene(ROOT / "worked_problems" / "offset_slider_crank.toml"))
+    ic = locate(sol)
+    c = ic.centre(1, 4)
+    assert c.at_infinity and c.primary
+    sl = sol.scene.sliders[0]
+    assert abs(c.direction[0] * sl.u[0] + c.direction[1] * sl.u[1]) < 1e-15
+
+
+def test_a_translating_coupler_has_its_centre_at_infinity():
+    """A parallelogram's coupler translates: I13 is at infinity (parallel lines), given as a
+    direction, and omega_3 is exactly 0."""
+    from polygon_method import parse_scene
+    sol = solve(parse_scene("""
+    [ground]
+    A = [0, 0]
+    D = [100, 0]
+    [links]
+    AB = 40
+    BC = 100
+    CD = 40
+    [assembly]
+    C = "above"
+    [input]
+    crank = "AB"
+    angle = 70
+    speed = "10 rad/s ccw"
+    """))
+    ic = agree(sol)
+    c = ic.centre(1, 3)
+    assert c.at_infinity and not c.primary
+    assert ic.omega(3) == 0.0
+
+
+def test_the_command_and_the_json(capsys):
+    path = ROOT / "worked_problems" / "six_link_second_slider.toml"
+    assert main(["centres", str(path)]) == 0
+    out = capsys.readouterr().out
+    assert "N = n (n - 1) / 2 = 6 x 5 / 2 = 15" in out and "Kennedy" in out
+    assert main(["solve", str(path), "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    assert len(d["centres"]) == 15
+    for c in d["centres"].values():
+        assert ("position" in c) != ("direction" in c)
