@@ -370,8 +370,8 @@ def build_parser() -> argparse.ArgumentParser:
     s = sub.add_parser("draw", help="true-to-scale SVG/PNG/PDF diagrams")
     s.add_argument("scene")
     s.add_argument("-o", "--output", required=True, help="FILE.svg, .png or .pdf")
-    s.add_argument("--diagram", choices=("configuration", "velocity", "acceleration", "all"),
-                   default="all")
+    s.add_argument("--diagram", choices=("configuration", "velocity", "acceleration", "all",
+                                         "centres"), default="all")
     s.add_argument("--scale", action="append", default=[],
                    help='e.g. "1 cm = 0.1 m/s" (may be repeated: space, velocity, '
                         'acceleration)')

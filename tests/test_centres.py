@@ -9,6 +9,7 @@ import dataclasses
 import glob
 import json
 import math
+import re
 from pathlib import Path
 
 import pytest
@@ -147,3 +148,57 @@ def test_the_command_and_the_json(capsys):
     assert len(d["centres"]) == 15
     for c in d["centres"].values():
         assert ("position" in c) != ("direction" in c)
+
+
+@pytest.mark.parametrize("name", ["fourbar_image_points", "crank_slotted_lever",
+                                  "six_link_second_slider"])
+def test_the_centres_drawing_marks_every_centre(name):
+    from polygon_method.draw import render
+
+    sol = solve(load_scene(ROOT / "worked_problems" / f"{name}.toml"))
+    svg, used, _ = render(sol, "svg", "centres")
+    assert svg == render(sol, "svg", "centres")[0]  # byte-stable
+    ic = locate(sol)
+    for c in ic.centres.values():
+        assert f'id="centre-{c.label}' in svg, c.label
+        assert f'id="chord-{c.label}"' in svg, c.label
+    assert set(used) == {"centres"}
+
+
+def _check(text_answers):
+    from polygon_method.check import check_answers
+    from polygon_method.scene import parse_answers
+    sc = load_scene(ROOT / "worked_problems" / "fourbar_image_points.toml")
+    sol = solve(sc)
+    tol, answers = parse_answers(text_answers, sc)
+    return sol, check_answers(sol, answers, tol)
+
+
+def test_centre_answers_are_checked_against_the_centres():
+    sol, vs = _check("[answers]\nI_13 = [76.0, 131.5]\nI_24 = [-213.6, 0]\n")
+    assert [v.ok for v in vs] == [True, True]
+    ic = locate(sol)
+    x, y = ic.centre(2, 4).point
+    sol, vs = _check(f"[answers]\nI_13 = [{x * 1e3:.3f}, {y * 1e3:.3f}]\n")
+    assert not vs[0].ok and vs[0].mistake == "another_centre" and "I24" in vs[0].diagnosis
+    sol, vs = _check("[answers]\ntolerance = \"40 %\"\nI_13 = [100, 150]\n")
+    assert vs[0].ok and "stated" in vs[0].rule
+
+
+@pytest.mark.parametrize("line, words", [("I_11 = [0, 0]", "two different link numbers"),
+                                         ("I_1x = [0, 0]", "two different link numbers"),
+                                         ("I_13 = 5", "position [x, y]"),
+                                         ("I_13 = [1, \"a\"]", "position [x, y]")])
+def test_bad_centre_answers_are_one_clear_error(line, words):
+    from polygon_method import SceneError
+    with pytest.raises(SceneError, match=re.escape(words)):
+        _check(f"[answers]\n{line}\n")
+
+
+def test_a_centre_of_a_link_that_is_not_there(capsys, tmp_path):
+    answers = tmp_path / "a.toml"
+    answers.write_text("[answers]\nI_15 = [0, 0]\n")
+    code = main(["check", str(ROOT / "worked_problems" / "fourbar_image_points.toml"),
+                 str(answers)])
+    err = capsys.readouterr().err
+    assert code == 2 and "there are 4 links" in err and len(err.strip().splitlines()) == 1

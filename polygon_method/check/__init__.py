@@ -43,6 +43,7 @@ import math
 
 from ..errors import SceneError
 from ..solution import Solution
+from .centres import centre_verdict
 from .mistakes import _Diagnoser
 from .tolerance import _Tolerances, answer_tolerance
 from .verdicts import _NOISE_KIND, ROUNDING, UNIT_OF, Verdict, verdicts_dict, verdicts_text
@@ -73,8 +74,12 @@ def check_answers(sol: Solution, answers=None, tolerance: float | None = None) -
     tols = _Tolerances(sol)
     diag = _Diagnoser(sol, answers)
     out = []
+    centres = []
     for ans in answers:
         kind = ans.kind
+        if kind == "centre":
+            out.append(centre_verdict(sol, ans, tolerance, centres))
+            continue
         exact = sol.value(kind, ans.names)
         if exact is None or not math.isfinite(exact):
             raise SceneError(f"{ans.key}: no value to check against", key=f"[answers] {ans.key}",

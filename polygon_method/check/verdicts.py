@@ -46,6 +46,8 @@ class Verdict:
     mistake: str | None = None
     diagnosis: str | None = None
     line: int | None = None
+    correct_text: str | None = None  # how the correct value is shown, where not a number
+    extra: dict | None = None  # more for the JSON (a centre's positions)
 
     @property
     def error_percent(self):
@@ -57,7 +59,7 @@ class Verdict:
                 "error_percent": self.error_percent,
                 "tolerance_percent": 100.0 * self.tolerance, "rule": self.rule,
                 "verdict": "right" if self.ok else "wrong", "mistake": self.mistake,
-                "diagnosis": self.diagnosis, "line": self.line}
+                "diagnosis": self.diagnosis, "line": self.line, **(self.extra or {})}
 
 
 def _show(v: Verdict, x: float) -> str:
@@ -73,7 +75,8 @@ def verdicts_text(verdicts, title: str = "") -> str:
     for v in verdicts:
         err = "-" if v.error is None else f"{100 * v.error:.2f} %"
         tol = "-" if not math.isfinite(v.tolerance) else f"{100 * v.tolerance:.2g} %"
-        rows.append((v.key, v.raw, _show(v, v.correct), err, tol, "right" if v.ok else "WRONG"))
+        rows.append((v.key, v.raw, v.correct_text or _show(v, v.correct), err, tol,
+                     "right" if v.ok else "WRONG"))
     widths = [max(len(r[i]) for r in rows) for i in range(6)]
     lines = [title] if title else []
     for i, r in enumerate(rows):

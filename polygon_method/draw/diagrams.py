@@ -19,11 +19,28 @@ from .style import (BAR, BODY_EDGE, BODY_FACE, DOT_R, IMAGE_FACE, JOINT_R, LABEL
 
 
 def _configuration(sol, scale: Scale) -> _Sketch:
+    sk = _Sketch()
+    _mechanism(sk, sol, scale)
+    _header(sk, "configuration", "Configuration diagram", scale, lines=[_drive(sol)])
+    return sk
+
+
+def _drive(sol) -> str:
+    inp = sol.scene.input
+    drive = f"crank {inp.crank} at {_deg(inp.angle)}, {inp.speed_text}"
+    if inp.alpha:
+        drive += f", {fmt_angular(inp.alpha, 'rad/s²')}"
+    return drive
+
+
+def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
+    """The mechanism drawn on ``sk`` to ``scale`` (links, plates, blocks, guides, pins,
+    ground symbols, the crank angle, labelled points); ``extra(sk, P)`` adds more before
+    the labels are placed. Returns the points in cm."""
     from shapely.geometry import MultiPoint
     sc = sol.scene
     s = scale.per_cm
     P = {k: (x / s, y / s) for k, (x, y) in sol.P.items()}
-    sk = _Sketch()
     carried_on = {}
     for cp in sc.points:
         carried_on.setdefault(cp.link, []).append(cp.name)
@@ -89,13 +106,10 @@ def _configuration(sol, scale: Scale) -> _Sketch:
     for name in sc.point_names:
         sk.label(name, [P[name]], LABEL_PT, gid=f"label-{name}", point=True)
     _crank_angle_label(sk, sc, P)
+    if extra is not None:
+        extra(sk, P)
     sk.place_labels()
-    inp = sc.input
-    drive = f"crank {inp.crank} at {_deg(inp.angle)}, {inp.speed_text}"
-    if inp.alpha:
-        drive += f", {fmt_angular(inp.alpha, 'rad/s²')}"
-    _header(sk, "configuration", "Configuration diagram", scale, lines=[drive])
-    return sk
+    return P
 
 
 def _deg(rad: float) -> str:

@@ -122,10 +122,12 @@ def layout(sol, diagram: str = "all", scales=None):
     """The sketches and scales of a sheet: ``[(name, scale, sketch)]``. Scales not given
     start as the largest round ones a panel could take and, while the sheet overflows A4,
     the widest panel (or one too tall) is made one round step coarser."""
+    if diagram == "centres":
+        return _centres_layout(sol, scales)
     names = DIAGRAMS if diagram == "all" else (diagram,)
     if diagram not in DIAGRAMS + ("all",):
         raise PolygonMethodError(f"unknown diagram {diagram!r}; use configuration, velocity, "
-                                 "acceleration or all", key="--diagram")
+                                 "acceleration, all or centres", key="--diagram")
     given = dict(scales or {})
     scale = choose_scales(sol, diagram, given)
     fixed = {n: (given.get(n) or given.get(KIND_OF_DIAGRAM[n])) is not None for n in names}
@@ -171,6 +173,37 @@ def layout(sol, diagram: str = "all", scales=None):
     return out
 
 
+def _centres_layout(sol, scales=None):
+    """The centres sheet: the mechanism with its centres (to scale, coarsened until the
+    A4 landscape sheet holds it) and the circle diagram (not to scale)."""
+    from ..centres import locate
+    from .centres import centres_sketch, circle_sketch
+
+    ic = locate(sol)
+    given = dict(scales or {})
+    s = given.get("centres") or given.get("length")
+    fixed = s is not None
+    if s is None:
+        s = choose_scales(sol, "configuration")["configuration"]
+    circle = circle_sketch(ic)
+    cw, ch = _panel_size(circle)
+    room_w, room_h = SHEET_ALL[0] - 2 * MARGIN - GAP - cw, SHEET_ALL[1] - 2 * MARGIN
+    sk = centres_sketch(sol, s, ic)
+    for _ in range(12):
+        w, h = _panel_size(sk)
+        if fixed or (w <= room_w and h <= room_h):
+            break
+        s = coarser(s)
+        sk = centres_sketch(sol, s, ic)
+    w, h = _panel_size(sk)
+    if max(w, h) > MAX_FIGURE_CM:
+        raise PolygonMethodError(f"the centres diagram at {display_unit(s.text)} would be "
+                                 f"{max(w, h):.0f} cm across; use a coarser scale",
+                                 key="--scale")
+    sk.warnings.extend(ic.warnings)
+    return [("centres", s, sk), ("circle", None, circle)]
+
+
 def make_figure(sol, diagram: str = "all", scales=None):
     """A matplotlib Figure of the physical size of its content: one axes per diagram, each
     positioned so that one data unit is one centimetre on the page.
@@ -191,7 +224,7 @@ def make_figure(sol, diagram: str = "all", scales=None):
         _paint(ax, sk)
         warnings += [f"{name}: {m}" for m in sk.warnings]
         x += w + GAP
-    return fig, {name: scale for name, scale, _ in panels}, warnings
+    return fig, {name: scale for name, scale, _ in panels if scale is not None}, warnings
 
 
 def _rc():

@@ -130,9 +130,9 @@ class Load:
 @dataclass(frozen=True)
 class Answer:
     key: str
-    kind: str  # prefix of ANSWER_KINDS or "torque"
-    names: tuple[str, ...]
-    value: float  # SI; signed when a sense was given
+    kind: str  # prefix of ANSWER_KINDS, "torque" or "centre"
+    names: tuple  # points or a link's points; (i, j) link numbers for a centre
+    value: float  # SI; signed when a sense was given; (x, y) in m for a centre
     sense: str | None
     raw: str
     line: int | None = None

@@ -302,6 +302,25 @@ class _Tables:
             out.append(self.answer(key, value, known, slider_names, pin_names, loads))
         return tolerance, out
 
+    def centre_answer(self, key, rest, value, line):
+        """``I_13 = [x, y]``: the instantaneous centre of links 1 and 3 (textbook numbers:
+        ground 1, crank 2), in the scene's units; ``I_1_12`` past link 9."""
+        parts = rest.split("_") if "_" in rest else list(rest)
+        if len(parts) != 2 or not all(p.isdigit() and int(p) > 0 for p in parts) or \
+                int(parts[0]) == int(parts[1]):
+            raise self.error("an instantaneous centre is I_ij with two different link "
+                             "numbers (ground 1, crank 2), e.g. I_13, or I_1_12 past 9",
+                             "answers", key)
+        if not (isinstance(value, list) and len(value) == 2 and
+                all(isinstance(v, (int, float)) and not isinstance(v, bool) and
+                    math.isfinite(v) for v in value)):
+            raise self.error(f"a centre's answer is its position [x, y] in {self.unit}, "
+                             f"got {value!r}", "answers", key)
+        i, j = sorted(int(p) for p in parts)
+        u = self.scale()
+        return Answer(key, "centre", (i, j), (value[0] * u, value[1] * u), None,
+                      f"[{value[0]:g}, {value[1]:g}] {self.unit}", line)
+
     def answer(self, key, value, known, slider_names, pin_names, loads):
         line = self.line_of("answers", key)
         if key == "torque":
@@ -310,12 +329,14 @@ class _Tables:
             q = self.qty(value, "torque", "answers", key, default_unit="N m", allow_sense=True)
             return Answer(key, "torque", (), q.value, q.sense, str(value), line)
         prefix, _, rest = key.partition("_")
+        if prefix == "I" and rest:
+            return self.centre_answer(key, rest, value, line)
         if prefix not in ANSWER_KINDS or not rest:
             examples = ["v_C", "a_C", "v_CB", "omega_BC", "alpha_BC", "vs_D", "as_D", "ac_A",
                         "rub_B", "torque"]
             raise self.error(f"unknown answer key{_suggest(key, examples)}; keys are v_X, "
                              "a_X, v_XY, a_XY, omega_L, alpha_L, vs_X, as_X, ac_X, rub_X, "
-                             "torque", "answers", key)
+                             "torque, I_ij (a centre)", "answers", key)
         kind, what, sense_ok = ANSWER_KINDS[prefix]
         names = split_name(rest)
         if not names:

@@ -1,0 +1,77 @@
+"""Answers by the instantaneous-centre method: a centre's position ``I_13 = [x, y]``.
+
+A centre is read off the configuration diagram, so its tolerance is the drawing rule's
+half millimetre at the configuration scale, grown as ``1 / (2 sin gamma)`` where the two
+lines that locate it cross at less than 30 deg, never less than 0.5 % of its distance from
+the crank's pivot (or of the longest link, if that is more). The error is the distance from
+the correct centre, relative to the same length.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..centres import locate
+from ..errors import PolygonMethodError, SceneError
+from ..numbers import fmt
+from ..scales import DRAWING_PRECISION_CM, diagram_scales
+from .verdicts import ROUNDING, Verdict
+
+__all__ = ["centre_verdict"]
+
+
+def centre_verdict(sol, ans, tolerance, cache: list) -> Verdict:
+    """The verdict on ``I_ij = [x, y]`` (``cache``: a list that keeps the located centres
+    for the other answers)."""
+    if not cache:
+        try:
+            cache.append(locate(sol))
+        except PolygonMethodError as exc:
+            raise SceneError(f"{ans.key}: the centres cannot be located here: {exc.message}",
+                             key=f"[answers] {ans.key}", line=ans.line) from None
+    ic = cache[0]
+    i, j = ans.names
+    sc = sol.scene
+    if j > ic.n:
+        raise SceneError(f"there are {ic.n} links (ground 1, crank 2): no centre I{i}{j}",
+                         key=f"[answers] {ans.key}", line=ans.line)
+    c = ic.centre(i, j)
+    u, un = sc.length_unit, sc.units
+    pivot = sol.P[sc.input.pivot]
+    longest = max(lk.length for lk in sc.links)
+    gx, gy = ans.value
+    if c.point is None:
+        deg = math.degrees(math.atan2(c.direction[1], c.direction[0])) % 180.0
+        return Verdict(ans.key, ans.raw, math.hypot(gx - pivot[0], gy - pivot[1]), math.inf,
+                       "m", None, math.inf, math.inf, "a centre at infinity", False, False,
+                       "centre_at_infinity",
+                       f"{c.label} is at infinity (direction {fmt(deg, 4)} deg): {c.how}",
+                       ans.line, f"at infinity, {fmt(deg, 4)} deg",
+                       {"given_position": [gx, gy], "correct_direction": list(c.direction)})
+    cx, cy = c.point
+    base = max(math.hypot(cx - pivot[0], cy - pivot[1]), longest)
+    err = math.hypot(gx - cx, gy - cy)
+    if tolerance is not None:
+        tol, rule = tolerance * base, f"{100 * tolerance:g} % (stated)"
+    else:
+        space = diagram_scales(sol)[0]
+        grow = 1.0 if c.condition >= 0.5 else 1.0 / (2.0 * c.condition)
+        tol = max(DRAWING_PRECISION_CM * space.per_cm * grow, ROUNDING * base)
+        rule = (f"a centre: {10 * DRAWING_PRECISION_CM:g} mm on the configuration diagram at "
+                f"{space.text}, / (2 sin gamma) where its lines cross under 30 deg")
+    ok = err <= tol * (1 + 1e-12)
+    mistake = diagnosis = None
+    if not ok:
+        for other in ic.centres.values():
+            if other is not c and other.point is not None and \
+                    math.hypot(gx - other.point[0], gy - other.point[1]) <= tol:
+                mistake = "another_centre"
+                diagnosis = (f"that is {other.label}, the centre of links {other.i} and "
+                             f"{other.j} (the links numbered otherwise: ground 1, crank 2, "
+                             f"then {', '.join(ic.bodies[2:])})")
+                break
+    return Verdict(ans.key, ans.raw, math.hypot(gx - pivot[0], gy - pivot[1]),
+                   math.hypot(cx - pivot[0], cy - pivot[1]), "m", err / base, tol / base, tol,
+                   rule, ok, False, mistake, diagnosis, ans.line,
+                   f"[{fmt(cx / u, 5)}, {fmt(cy / u, 5)}] {un}",
+                   {"given_position": [gx, gy], "correct_position": [cx, cy]})

@@ -1,0 +1,149 @@
+"""The instantaneous-centre diagram: the mechanism to scale with every centre marked and
+labelled (I13), the lines Kennedy's theorem used to find each one dashed, centres far off
+the sheet shown by an arrow at the edge with their distance, centres at infinity by an
+arrow and the sign of infinity; and beside it the circle diagram with its chords."""
+
+from __future__ import annotations
+
+import math
+
+from ..scales import Scale
+from .diagrams import _drive, _mechanism
+from .sketch import _header, _Sketch
+from .style import SMALL_PT
+
+CENTRE_COLOR = "#c0392b"
+KENNEDY_LINE = ("#7f8c8d", 0.5, (3.0, 2.0))
+#: how far around the mechanism (times its size) the centres are drawn where they are
+WINDOW = 1.0
+
+
+def _window(P):
+    xs = [p[0] for p in P.values()]
+    ys = [p[1] for p in P.values()]
+    w = max(max(xs) - min(xs), max(ys) - min(ys), 1.0)
+    return (min(xs) - WINDOW * w, min(ys) - WINDOW * w, max(xs) + WINDOW * w,
+            max(ys) + WINDOW * w)
+
+
+def _inside(box, p):
+    return box[0] <= p[0] <= box[2] and box[1] <= p[1] <= box[3]
+
+
+def _clip(box, p, d):
+    """The segment of the line p + t d inside ``box`` (Liang-Barsky), or None."""
+    t0, t1 = -math.inf, math.inf
+    for q, dq, lo, hi in ((p[0], d[0], box[0], box[2]), (p[1], d[1], box[1], box[3])):
+        if abs(dq) < 1e-15:
+            if not lo <= q <= hi:
+                return None
+            continue
+        a, b = (lo - q) / dq, (hi - q) / dq
+        t0, t1 = max(t0, min(a, b)), min(t1, max(a, b))
+    if t0 > t1:
+        return None
+    return (p[0] + t0 * d[0], p[1] + t0 * d[1]), (p[0] + t1 * d[0], p[1] + t1 * d[1])
+
+
+def centres_sketch(sol, scale: Scale, ic) -> _Sketch:
+    """The mechanism with its instantaneous centres (``ic``: a located ``Centres``)."""
+    s = scale.per_cm
+    unit, uname = sol.scene.length_unit, sol.scene.units
+    sk = _Sketch()
+
+    def cm(p):
+        return (p[0] / s, p[1] / s)
+
+    def extra(sk, P):
+        box = _window(P)
+        mid = ((box[0] + box[2]) / 2, (box[1] + box[3]) / 2)
+        # the lines that located the secondary centres, dashed
+        color, lw, dashes = KENNEDY_LINE
+        for key in ic.order:
+            c = ic.centres[key]
+            for a, b in c.lines:
+                pts = [cm(x.point) for x in (a, b, c) if x.point is not None]
+                if len(pts) >= 2:
+                    p0, p1 = pts[0], max(pts[1:], key=lambda q: math.dist(q, pts[0]))
+                    d = (p1[0] - p0[0], p1[1] - p0[1])
+                else:
+                    inf = next(x for x in (a, b, c) if x.point is None)
+                    p0, d = pts[0], inf.direction
+                seg = _clip(box, p0, d)
+                if seg is not None:
+                    sk.line(list(seg), gid=f"kennedy-{c.label}-{a.label}-{b.label}",
+                            color=color, lw=lw, dashes=dashes, z=1, obstacle=False,
+                            hint=False)
+        # the centres: a ring where it is, an arrow at the edge where it is off the sheet
+        for key in ic.order:
+            c = ic.centres[key]
+            if c.point is not None and _inside(box, cm(c.point)):
+                where = cm(c.point)
+                sk.circle(where, 0.07, gid=f"centre-{c.label}", face="#ffffff",
+                          edge=CENTRE_COLOR, lw=1.0, z=7)
+                sk.label(c.label, [where], SMALL_PT + 1, gid=f"label-{c.label}",
+                         color=CENTRE_COLOR, point=True)
+                continue
+            if c.point is not None:
+                d = (cm(c.point)[0] - mid[0], cm(c.point)[1] - mid[1])
+                far = math.hypot(c.point[0] - sol.P[sol.scene.input.pivot][0],
+                                 c.point[1] - sol.P[sol.scene.input.pivot][1]) / unit
+                text = f"{c.label} ({far:.4g} {uname} from {sol.scene.input.pivot})"
+            else:
+                d = c.direction
+                text = f"{c.label} \u221e"
+            n = math.hypot(*d)
+            d = (d[0] / n, d[1] / n)
+            seg = _clip(box, mid, d)
+            tip = seg[1] if seg is not None else mid
+            tail = (tip[0] - 0.9 * d[0], tip[1] - 0.9 * d[1])
+            sk.arrow(tail, tip, f"centre-{c.label}", CENTRE_COLOR, 1.0)
+            sk.label(text, [tip], SMALL_PT, gid=f"label-{c.label}", color=CENTRE_COLOR,
+                     point=True)
+
+    _mechanism(sk, sol, scale, extra)
+    n = ic.n
+    _header(sk, "centres", "Instantaneous centres", scale,
+            lines=[_drive(sol), f"{n} links, N = {n * (n - 1) // 2} centres; dashed: the "
+                   "lines of Kennedy's theorem"])
+    return sk
+
+
+def circle_sketch(ic, radius: float = 2.6) -> _Sketch:
+    """The circle diagram: the links as points 1..n round a circle, a chord for each centre
+    (solid: primary, from a joint; dashed: by Kennedy's theorem, numbered in the order
+    found)."""
+    sk = _Sketch()
+    n = ic.n
+    pos = {k: (radius * math.cos(math.pi / 2 - 2 * math.pi * (k - 1) / n),
+               radius * math.sin(math.pi / 2 - 2 * math.pi * (k - 1) / n))
+           for k in range(1, n + 1)}
+    ring = [(radius * math.cos(2 * math.pi * t / 96), radius * math.sin(2 * math.pi * t / 96))
+            for t in range(97)]
+    sk.line(ring, gid="circle", color="#999999", lw=0.5, obstacle=False, hint=False, z=1)
+    nth = 0
+    for key in ic.order:
+        c = ic.centres[key]
+        a, b = pos[c.i], pos[c.j]
+        if c.primary:
+            sk.line([a, b], gid=f"chord-{c.label}", color="#000000", lw=0.9, z=2,
+                    obstacle=False, hint=False)
+        else:
+            nth += 1
+            sk.line([a, b], gid=f"chord-{c.label}", color="#1f5fbf", lw=0.9, dashes=(4, 2),
+                    z=2, obstacle=False, hint=False)
+            m = (0.62 * a[0] + 0.38 * b[0], 0.62 * a[1] + 0.38 * b[1])  # nearer its first
+            sk.label(f"{nth}", [m], SMALL_PT, gid=f"chord-order-{c.label}", color="#1f5fbf")
+    for k, p in pos.items():
+        sk.circle(p, 0.09, gid=f"circle-point-{k}", face="#000000", z=6)
+        out = (p[0] * (1 + 0.5 / radius), p[1] * (1 + 0.5 / radius))
+        sk.label(str(k), [out], SMALL_PT + 2, gid=f"circle-label-{k}", weight="bold")
+    sk.place_labels()
+    x0, y0, x1, y1 = sk.content_box()
+    top = y1 + 0.4
+    rows = ["Circle diagram", "solid: primary centres (joints)",
+            "dashed: by Kennedy's theorem, numbered as found"]
+    for i, text in enumerate(reversed(rows)):
+        sk.note(x0, top + 0.45 * i, text, SMALL_PT + (3.5 if i == len(rows) - 1 else 0),
+                gid=f"note-circle-{i}", weight="bold" if i == len(rows) - 1 else "normal")
+    return sk
