@@ -181,6 +181,8 @@ def test_centre_answers_are_checked_against_the_centres():
     x, y = ic.centre(2, 4).point
     sol, vs = _check(f"[answers]\nI_13 = [{x * 1e3:.3f}, {y * 1e3:.3f}]\n")
     assert not vs[0].ok and vs[0].mistake == "another_centre" and "I24" in vs[0].diagnosis
+    sol, vs = _check("[answers]\nI_ground_BC = [76.0, 131.5]\nI_AB_CD = [-213.6, 0]\n")
+    assert [v.ok for v in vs] == [True, True]
     sol, vs = _check("[answers]\ntolerance = \"40 %\"\nI_13 = [100, 150]\n")
     assert vs[0].ok and "stated" in vs[0].rule
 

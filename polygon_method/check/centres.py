@@ -30,8 +30,14 @@ def centre_verdict(sol, ans, tolerance, cache: list) -> Verdict:
             raise SceneError(f"{ans.key}: the centres cannot be located here: {exc.message}",
                              key=f"[answers] {ans.key}", line=ans.line) from None
     ic = cache[0]
-    i, j = ans.names
     sc = sol.scene
+    if all(isinstance(x, int) for x in ans.names):
+        i, j = ans.names
+    else:  # by the scene's names
+        i, j = sorted(1 if str(x).lower() == "ground" else ic._number(x) for x in ans.names)
+        if i == j:
+            raise SceneError(f"{ans.key}: both name the same body", key=f"[answers] {ans.key}",
+                             line=ans.line)
     if j > ic.n:
         raise SceneError(f"there are {ic.n} links (ground 1, crank 2): no centre I{i}{j}",
                          key=f"[answers] {ans.key}", line=ans.line)

@@ -306,19 +306,24 @@ class _Tables:
         """``I_13 = [x, y]``: the instantaneous centre of links 1 and 3 (textbook numbers:
         ground 1, crank 2), in the scene's units; ``I_1_12`` past link 9."""
         parts = rest.split("_") if "_" in rest else list(rest)
-        if len(parts) != 2 or not all(p.isdigit() and int(p) > 0 for p in parts) or \
+        named = len(parts) == 2 and not any(p.isdigit() for p in parts)
+        if named:  # the scene's names: I_ground_BC, I_AB_CD
+            for part in parts:
+                if part.lower() != "ground":
+                    self.find_link(part, "answers", key)
+        elif len(parts) != 2 or not all(p.isdigit() and int(p) > 0 for p in parts) or \
                 int(parts[0]) == int(parts[1]):
             raise self.error("an instantaneous centre is I_ij with two different link "
-                             "numbers (ground 1, crank 2), e.g. I_13, or I_1_12 past 9",
-                             "answers", key)
+                             "numbers (ground 1, crank 2), e.g. I_13, or I_1_12 past 9, or "
+                             "two link names, e.g. I_ground_BC", "answers", key)
         if not (isinstance(value, list) and len(value) == 2 and
                 all(isinstance(v, (int, float)) and not isinstance(v, bool) and
                     math.isfinite(v) for v in value)):
             raise self.error(f"a centre's answer is its position [x, y] in {self.unit}, "
                              f"got {value!r}", "answers", key)
-        i, j = sorted(int(p) for p in parts)
+        pair = tuple(parts) if named else tuple(sorted(int(p) for p in parts))
         u = self.scale()
-        return Answer(key, "centre", (i, j), (value[0] * u, value[1] * u), None,
+        return Answer(key, "centre", pair, (value[0] * u, value[1] * u), None,
                       f"[{value[0]:g}, {value[1]:g}] {self.unit}", line)
 
     def answer(self, key, value, known, slider_names, pin_names, loads):
