@@ -274,3 +274,47 @@ def test_degenerate_slider_crank_at_a_singular_instant_prints_no_nan(capsys):
     assert "nan" not in out and "inf " not in out
     assert "not compared at the scene's instant" in out
     assert out.count("crank at") < 20
+
+
+@pytest.mark.parametrize("text", [
+    # a four-bar micrometres from locked: BC + CD just reach across
+    *[f"""
+[ground]
+A = [0, 0]
+D = [100, 0]
+[links]
+AB = 50
+BC = 25
+CD = {cd}
+[input]
+crank = "AB"
+angle = 0
+speed = "10 rad/s ccw"
+""" for cd in ("25.001", "25.00001", "25.000001", "25.0000001")],
+    # a slider's path nearly tangent to the circle the rod's end can reach
+    *[f"""
+[ground]
+O = [0, 0]
+[links]
+OA = 100
+AB = 50
+[sliders]
+B = {{ path = "horizontal", through = [0, {y}] }}
+[input]
+crank = "OA"
+angle = 90
+speed = "10 rad/s ccw"
+""" for y in ("149.999", "149.99999", "149.9999999")]])
+def test_nearly_locked_linkages_give_a_result_or_one_line(text, tmp_path, capsys):
+    from polygon_method.cli import main
+
+    path = tmp_path / "locked.toml"
+    path.write_text(text)
+    code = main(["linkage", str(path)])
+    out, err = capsys.readouterr()
+    assert code in (0, 2), err
+    assert "internal error" not in err and "Traceback" not in err
+    if code == 2:
+        assert len(err.strip().splitlines()) == 1
+    else:
+        assert "nan" not in out.lower() and "inf " not in out.lower()

@@ -316,19 +316,22 @@ def _output_motion(cyc: _Cycle, out: _Output, scene, fb, sk, slot):
     lines = []
     omin = omax = None
     ratio, tlines = None, []
+    # the output's range is a matter of positions: every sample that assembles counts,
+    # also those where the velocities are indeterminate (a nearly locked linkage has no other)
+    placed = ~cyc.fr.bad
     if out.kind == "slider":
-        all_v = out.value(cyc.fr)[~cyc.bad]
-        if vals:
+        all_v = out.value(cyc.fr)[placed]
+        if vals and len(all_v):
             omin, omax = min(vals + [float(all_v.min())]), max(vals + [float(all_v.max())])
             lines.append(f"{out.label}: moves between {_fmt_out(out, omin, scene)} and "
                          f"{_fmt_out(out, omax, scene)}: stroke "
                          f"{(omax - omin) / scene.length_unit:.6g} {scene.units}")
     else:
-        ang = np.unwrap(out.value(cyc.fr)[~cyc.bad])
+        ang = np.unwrap(out.value(cyc.fr)[placed])
         span = float(ang.max() - ang.min()) if len(ang) else 0.0
-        if dom.full_turn and abs(ang[-1] - ang[0]) > math.pi:
+        if dom.full_turn and len(ang) and abs(ang[-1] - ang[0]) > math.pi:
             lines.append(f"{out.label}: turns fully")
-        elif vals:
+        elif vals and len(ang):
             ref = float(ang[0])
             unwrapped = [ref + ((v - ref + math.pi) % TWO_PI) - math.pi for v in vals]
             omin, omax = min(unwrapped), max(unwrapped)
