@@ -573,7 +573,8 @@ class _Compiler:
                     key=f"[assembly] {name}", file=self.scene.file)
             return 1.0 if d > 0 else -1.0
         d1, d2 = math.dist(hint, plus), math.dist(hint, minus)
-        if min(d1, d2) > step.reach() or abs(d1 - d2) <= 1e-9 * scale:
+        # a rough position must be decisively nearer one of them (not in the middle tenth)
+        if min(d1, d2) > step.reach() or abs(d1 - d2) <= 0.1 * sep:
             raise AssemblyError(
                 f"assembly {name} = {self.fmt(hint)} matches neither position of {name} "
                 f"({self.fmt(plus)} or {self.fmt(minus)}); give a rough position near the "

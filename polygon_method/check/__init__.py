@@ -48,6 +48,10 @@ from .mistakes import _Diagnoser
 from .tolerance import _Tolerances, answer_tolerance
 from .verdicts import _NOISE_KIND, ROUNDING, UNIT_OF, Verdict, verdicts_dict, verdicts_text
 
+#: answers that are magnitudes (a negative one is a mistake of its own)
+_MAGNITUDES = {"v": "a speed", "a": "an acceleration's size", "ac": "a Coriolis component's "
+               "size", "rub": "a rubbing velocity"}
+
 __all__ = ["Verdict", "check_answers", "answer_tolerance", "verdicts_text",
            "verdicts_dict", "ROUNDING"]
 
@@ -96,7 +100,11 @@ def check_answers(sol: Solution, answers=None, tolerance: float | None = None) -
         rel = err / abs(correct) if correct != 0 else None
         ok = err <= tol * (1 + 1e-12)
         mistake = diagnosis = None
-        if not ok:
+        if kind in _MAGNITUDES and ans.value < 0 and correct != 0:
+            ok, mistake = False, "negative_magnitude"
+            diagnosis = (f"{_MAGNITUDES[kind]} is a magnitude, never negative: give its size "
+                         f"({abs(ans.value):g}), and its direction in words where asked")
+        elif not ok:
             mistake, diagnosis = diag.diagnose(ans, given, correct, tol, signed)
         out.append(Verdict(ans.key, ans.raw, given, correct, UNIT_OF[kind], rel,
                            tol / abs(correct) if correct else math.inf, tol, rule, ok, signed,

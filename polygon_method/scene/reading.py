@@ -360,10 +360,7 @@ def parse_answers(text: str, scene: Scene, file: str | None = None):
     try:
         raw = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        m = re.search(r"\(at line (\d+), column (\d+)\)", str(exc))
-        core = re.sub(r"\s*\(at line.*?\)", "", str(exc)).strip()
-        raise SceneError(f"TOML syntax error: {core}", file=file,
-                         key=f"line {m.group(1)}, column {m.group(2)}" if m else None) from None
+        raise _syntax_error(str(exc), text, file) from None
     for key in raw:
         if key not in _ANSWER_FILE_KEYS:
             raise SceneError("an answer file holds an [answers] table (and optionally title, "

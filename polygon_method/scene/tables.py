@@ -256,6 +256,10 @@ class _Tables:
                 if k not in allowed:
                     raise self.error(f"unknown key '{k}'{_suggest(k, allowed)}", "loads", name)
             if "torque" in spec:
+                if "force" in spec or "direction" in spec:
+                    raise self.error("a torque acts on a link, a force at a point: give the "
+                                     "force under the name of the point it acts at",
+                                     "loads", name)
                 if not self.index.get(frozenset(split_name(name))):
                     raise self.error(f"a torque acts on a link; no link {name} in [links]",
                                      "loads", name)

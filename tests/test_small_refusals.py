@@ -1,0 +1,65 @@
+"""Small things that were silently wrong: a link's force lost beside its torque, an
+assembly hint as near to both positions, a negative speed marked right, an answer file's
+duplicate key without its name."""
+
+from __future__ import annotations
+
+import pytest
+
+from polygon_method import AssemblyError, SceneError, parse_scene, solve
+from polygon_method.check import check_answers
+from polygon_method.plan import compile_plan
+from polygon_method.steps import Context
+from polygon_method.scene import parse_answers
+
+FOURBAR = """
+[ground]
+A = [0, 0]
+D = [100, 0]
+[links]
+AB = 50
+BC = 66
+CD = 56
+[input]
+crank = "AB"
+angle = 60
+speed = "10.5 rad/s cw"
+"""
+
+
+def test_a_link_with_a_torque_and_a_force_is_refused():
+    with pytest.raises(SceneError, match="force under the name of the point"):
+        parse_scene(FOURBAR + '[loads]\nCD = { torque = "20 N m cw", force = "2 kN", '
+                    'direction = 0 }\n')
+
+
+def test_an_assembly_hint_about_as_near_to_both_positions_is_refused():
+    sc = parse_scene(FOURBAR)
+    c_up = solve(sc).P["C"]
+    # the two positions of C: their midpoint, moved 1 % of the way towards one of them
+    st = compile_plan(sc).steps[1]
+    (mx, my), (hx, hy) = st.candidates(dict(solve(sc).P), Context(sc.input.angle, 0.0, 0.0))
+    mid = ((mx + 0.01 * hx) * 1e3, (my + 0.01 * hy) * 1e3)
+    with pytest.raises(AssemblyError, match="matches neither position"):
+        solve(parse_scene(FOURBAR + f"[assembly]\nC = [{mid[0]:.6f}, {mid[1]:.6f}]\n"))
+    near = (c_up[0] * 1e3 + 3.0, c_up[1] * 1e3 + 3.0)  # a rough reading near the upper one
+    got = solve(parse_scene(FOURBAR + f"[assembly]\nC = [{near[0]:.3f}, {near[1]:.3f}]\n"))
+    assert got.P["C"] == pytest.approx(c_up, rel=1e-12)
+
+
+def test_a_negative_speed_is_wrong_and_named():
+    sc = parse_scene(FOURBAR)
+    sol = solve(sc)
+    v = sol.speed("C")
+    tol, answers = parse_answers(f'[answers]\nv_C = "{-v:.6f} m/s"\n', sc)
+    verdict = check_answers(sol, answers, tol)[0]
+    assert not verdict.ok and verdict.mistake == "negative_magnitude"
+    assert "never negative" in verdict.diagnosis
+
+
+def test_a_duplicate_key_in_an_answer_file_is_named():
+    sc = parse_scene(FOURBAR)
+    with pytest.raises(SceneError) as err:
+        parse_answers('[answers]\nv_C = "0.4 m/s"\nv_C = "0.5 m/s"\n', sc, file="a.toml")
+    line = err.value.one_line()
+    assert "duplicate key v_C" in line and "line 3" in line
