@@ -35,6 +35,8 @@ class Extreme:
     at_min: float | None
     what: str = ""
     refined: bool = False
+    max_unbounded: bool = False  # grows without bound towards the limit position at_max
+    min_unbounded: bool = False
 
     @property
     def constant(self) -> bool:
@@ -100,10 +102,17 @@ class Summary:
                     out.append(f"{e.name:<{w}}  {e.unit:<7} {e.maximum:>12.6g} "
                                f"{'(constant)':>10}")
                     continue
-                out.append(f"{e.name:<{w}}  {e.unit:<7} {e.maximum:>12.6g} "
-                           f"{fmt_deg(e.at_max, 3):>10} {e.minimum:>12.6g} "
+                mx = "+unbounded" if e.max_unbounded else f"{e.maximum:.6g}"
+                mn = "-unbounded" if e.min_unbounded else f"{e.minimum:.6g}"
+                out.append(f"{e.name:<{w}}  {e.unit:<7} {mx:>12} "
+                           f"{fmt_deg(e.at_max, 3):>10} {mn:>12} "
                            f"{fmt_deg(e.at_min, 3):>10}"
                            + (f"  {e.what}" if e.what else ""))
+                for flag, at, word in ((e.max_unbounded, e.at_max, "grows"),
+                                       (e.min_unbounded, e.at_min, "falls")):
+                    if flag:
+                        out.append(f"{'':<{w}}  ({word} without bound towards the limit "
+                                   f"position at {fmt_deg(at, 3)} deg)")
         if self.formulas:
             out.append("")
             out.extend(self.formulas)
@@ -242,9 +251,16 @@ class _Reducer:
                 else:
                     row[4], row[5] = val, t
         deg = degrees_fn(dom)
+        unbounded = self._unbounded(rows, spacing)
+        for row in rows:  # an unbounded extreme is at the limit position, not a sample
+            nm = row[0]
+            if (nm, 1.0) in unbounded:
+                row[3] = unbounded[(nm, 1.0)]
+            if (nm, -1.0) in unbounded:
+                row[5] = unbounded[(nm, -1.0)]
         extremes = tuple(Extreme(nm, u, self.shown(u, mx), None if tmx is None else deg(tmx),
                                  self.shown(u, mn), None if tmn is None else deg(tmn), what,
-                                 bool(tasks))
+                                 bool(tasks), (nm, 1.0) in unbounded, (nm, -1.0) in unbounded)
                          for nm, u, mx, tmx, mn, tmn, what in rows)
         formulas = ()
         if [st.kind for st in self.plan.steps if st.kind != "carried"] == ["crank", "slider"]:
@@ -255,6 +271,36 @@ class _Reducer:
             rng = (deg(dom.lo), deg(dom.lo) + math.degrees(dom.hi - dom.lo))
         return Summary(self.scene, requested, evaluated, extremes, dom.limits,
                        dom.change_points, tuple(dom.notes), formulas, rng, deg)
+
+    def _unbounded(self, rows, spacing) -> dict:
+        """(name, sense) -> the limit position's angle, for the extremes found next to a limit position that grow without
+        bound towards it (a toggle of the driven side: velocities as 1 / sqrt(d),
+        accelerations as 1 / d^1.5, d the crank's distance from the limit). The quantity is
+        probed at 1e-2, 1e-3 and 1e-4 rad from the limit; it is unbounded where it grows
+        monotonically by more than five times."""
+        dom = self.sw.domain
+        if dom.full_turn or not dom.limits:
+            return {}
+        near = max(2.5 * (spacing or 0.0), 0.02)
+        found = {}
+        for lp in dom.limits:
+            inward = -1.0 if abs(lp.theta - dom.hi) < abs(lp.theta - dom.lo) else 1.0
+            probe = lp.theta + inward * np.array([1e-2, 1e-3, 1e-4])
+            fr = self.sw.evaluate(probe)
+            q = {nm: np.asarray(arr, dtype=float) for nm, _, arr, _ in self.quantities(fr)}
+            for nm, u, mx, tmx, mn, tmn, what in rows:
+                if u == "deg" or nm not in q or tmx is None:
+                    continue
+                vals = q[nm]
+                for sense, t in ((1.0, tmx), (-1.0, tmn)):
+                    (tm,), _ = dom.map(np.array([t]))
+                    if abs(tm - lp.theta) > near:
+                        continue
+                    v = sense * vals
+                    if np.all(np.isfinite(v)) and v[0] > 0 and np.all(np.diff(v) > 0) \
+                            and v[-1] > 5.0 * v[0]:
+                        found[(nm, sense)] = lp.theta
+        return found
 
     def _scales(self) -> dict:
         """Typical sizes per unit, below a 1e-9 part of which a value is zero (rounding)."""

@@ -93,3 +93,30 @@ def test_the_stated_branch_is_followed_on_both_sides():
     res = sweep(sc, np.radians(np.arange(170.0, 180.0, 0.5)))
     assert np.allclose(res.W["CD"], 10.0, rtol=1e-9)
     assert math.isclose(solve(sc).W["CD"], 10.0, rel_tol=1e-9)
+
+
+def test_an_extreme_at_a_limit_position_is_said_to_grow_without_bound():
+    """Towards a toggle of the driven side omega_CD grows as 1 / sqrt(d) and alpha_CD as
+    1 / d^1.5: the summary says so, at the limit position, whatever the sampling."""
+    from pathlib import Path
+    from polygon_method import load_scene
+    sc = load_scene(Path(__file__).resolve().parent.parent / "worked_problems" /
+                    "fourbar_image_points.toml")
+    for n in (360, 36000):
+        s = summarize(sc, np.radians(np.linspace(0.0, 360.0, n, endpoint=False)))
+        lims = sorted(s.deg(lp.theta) for lp in s.limits)
+        w = s.extreme("omega_CD")
+        assert w.max_unbounded and w.min_unbounded
+        assert {round(w.at_max, 6), round(w.at_min, 6)} == {round(x, 6) for x in lims}
+        assert s.extreme("a_C").max_unbounded and not s.extreme("a_C").min_unbounded
+        assert s.extreme("v_B").constant and not s.extreme("v_B").max_unbounded
+        assert "grows without bound towards the limit position" in s.text()
+
+
+def test_a_crank_that_turns_fully_has_no_unbounded_extreme():
+    from pathlib import Path
+    from polygon_method import load_scene
+    sc = load_scene(Path(__file__).resolve().parent.parent / "worked_problems" /
+                    "fourbar_crank_acceleration.toml")
+    s = summarize(sc)
+    assert not any(e.max_unbounded or e.min_unbounded for e in s.extremes)
