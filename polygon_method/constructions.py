@@ -60,7 +60,7 @@ def drawn_vectors(sol, phase: str) -> tuple:
         acceleration_constructions(sol)
     steps = sol.plan.steps
     vecs = [v for c in cons for v in c.given + c.found
-            if not (v.kind == "relative" and steps[c.step].kind == "carried")]
+            if not (v.kind == "relative" and not steps[c.step].draws_relative)]
     ref = max((v.magnitude for v in vecs), default=0.0)
     tol = 1e-9 * ref
     keep = {}

@@ -296,8 +296,7 @@ def _velocity(doc, sol, vscale):
         for g in c.given:
             t += f"; set out {g.name} = {fmt(g.magnitude)} m/s ({vscale.cm(g.magnitude):.2f} cm)"
         if c.lines:
-            kind = sol.plan.steps[c.step].kind
-            if kind == "slotted":  # the two lines are square; the measure is |KA| / length
+            if sol.plan.steps[c.step].transmission() is None:  # no transmission angle
                 t += f" (condition {fmt(c.condition, 3)})"
             else:
                 t += (f" (the lines cross at "

@@ -62,7 +62,7 @@ class _Alternatives:
         out = []
         ctx = Context(sc.input.angle, sc.input.omega, sc.input.alpha)
         for st in sol.plan.steps:
-            if st.kind not in ("dyad", "slider"):
+            if not st.other_assembly_mistake:
                 continue
             try:
                 base, off, *_ = st.candidates(dict(sol.P), ctx)

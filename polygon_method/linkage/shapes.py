@@ -224,15 +224,15 @@ class _Output:
 
 def _output_of(scene, plan):
     out = None
-    for st in plan.steps:
-        if st.kind == "dyad":
-            for g, link in ((st.d, st.link2), (st.b, st.link1)):
-                if g in scene.ground:
-                    out = _Output("rocker", link, f"output link {link}", g, st.point)
-                    break
-        elif st.kind == "slider" and st.path is not None:
-            out = _Output("slider", st.point, f"slider {st.point}", point=st.point,
-                          path=st.path)
-        elif st.kind == "slotted" and st.known in scene.ground:
-            out = _Output("lever", st.guide, f"lever {st.guide}", st.known, st.new)
+    for st in plan.steps:  # the last step that drives something is the output
+        o = st.output(scene.ground)
+        if o is None:
+            continue
+        if o[0] == "rocker":
+            out = _Output("rocker", o[1], f"output link {o[1]}", o[2], o[3])
+        elif o[0] == "slider":
+            out = _Output("slider", o[1], f"slider {o[1]}", point=o[1],
+                          path=scene.slider(o[1]))
+        else:
+            out = _Output("lever", o[1], f"lever {o[1]}", o[2], o[3])
     return out

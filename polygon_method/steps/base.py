@@ -102,6 +102,12 @@ class Step:
     branching = False
     #: whether the step's image is found by a similar triangle off the line of two images
     image_by_similar_triangle = False
+    #: whether a polygon shows the relative vectors this step finds (a carried point's
+    #: image triangle shows them instead)
+    draws_relative = True
+    #: whether a student drawing the other of the step's two assemblies is a mistake to
+    #: look for when checking answers
+    other_assembly_mistake = False
 
     @property
     def label(self) -> str:
@@ -167,6 +173,11 @@ class Step:
         """The bodies this step sets moving (links, blocks), in the order a textbook numbers
         them (ground 1, crank 2, ...)."""
         return ()
+
+    def output(self, ground):
+        """What this step drives that a linkage analysis may call the output: ("rocker",
+        link, pivot, point), ("slider", point), ("lever", link, pivot, free end), or None."""
+        return None
 
     def orient(self) -> dict:
         """link -> (X, Y): the relative motion of each link the step finds, X relative to Y,

@@ -66,6 +66,7 @@ class Carried(Step):
     how: str = ""
 
     kind = "carried"
+    draws_relative = False
 
     @property
     def image_by_similar_triangle(self):

@@ -110,6 +110,7 @@ class Dyad(Step):
 
     kind = "dyad"
     branching = True
+    other_assembly_mistake = True
 
     @property
     def finds(self):
@@ -230,6 +231,12 @@ class Dyad(Step):
 
     def orient(self):
         return {self.link1: (self.point, self.b), self.link2: (self.point, self.d)}
+
+    def output(self, ground):
+        for g, link in ((self.d, self.link2), (self.b, self.link1)):
+            if g in ground:
+                return ("rocker", link, g, self.point)
+        return None
 
     def position_words(self, L, which, angle_deg):
         return (f"{self.point}: arcs of radius {self.link1} = {L(self.l1)} about {self.b} and "

@@ -126,6 +126,7 @@ class SliderDyad(Step):
 
     kind = "slider"
     branching = True
+    other_assembly_mistake = True
 
     @property
     def finds(self):
@@ -285,6 +286,9 @@ class SliderDyad(Step):
 
     def orient(self):
         return {self.link: (self.point, self.b)}
+
+    def output(self, ground):
+        return ("slider", self.point) if self.path is not None else None
 
     def position_words(self, L, which, angle_deg):
         where = (f"the {self.path.label} path of {self.point}" if self.path is not None

@@ -206,6 +206,9 @@ class SlottedLink(Step):
     def orient(self):
         return {self.guide: (self.new, self.known)}
 
+    def output(self, ground):
+        return ("lever", self.guide, self.known, self.new) if self.known in ground else None
+
     def position_words(self, L, which, angle_deg):
         return (f"{self.new}: {self.guide} passes through the block at {self.point}: draw the "
                 f"line from {self.known} through {self.point} and mark {self.known}{self.new} = "
