@@ -12,9 +12,10 @@ import numpy as np
 
 from .kinematics import Motion
 from .scene import FixedPath, Scene
-from .sweeps import (SweepResult, rubbing_arrays, select, torque_array, tune_malloc, angles_ok,
+from .sweeps import (SweepResult, rubbing_arrays, select, torque_array, angles_ok,
                     evaluate_all, sweep_angles)
-from .tracking import CHUNK, TWO_PI, Sweeper, branch_steps, degrees_fn, fmt_deg, valid_mask
+from .tracking import (CHUNK, TWO_PI, Sweeper, branch_steps, degrees_fn, fmt_deg, tune_malloc,
+                       valid_mask)
 
 __all__ = ["summarize", "summary_of", "Summary", "Extreme"]
 

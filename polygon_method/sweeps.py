@@ -164,27 +164,6 @@ def _patch(fr: Motion, fix: Motion, idx):
             fr.cond[i][idx] = np.maximum(fr.cond[i][idx], TOL.singular)
 
 
-_MALLOC_TUNED = []
-
-
-def tune_malloc():
-    """Keep freed chunk temporaries on the heap (glibc): otherwise every pass over a chunk
-    maps and faults fresh pages, which costs several times the arithmetic."""
-    if _MALLOC_TUNED:
-        return
-    _MALLOC_TUNED.append(True)
-    try:
-        import ctypes
-        import sys
-        if not sys.platform.startswith("linux"):
-            return
-        libc = ctypes.CDLL("libc.so.6")
-        libc.mallopt(-1, 64 << 20)  # M_TRIM_THRESHOLD
-        libc.mallopt(-3, 4 << 20)  # M_MMAP_THRESHOLD
-    except (OSError, AttributeError):
-        pass
-
-
 def sweep_angles(angles):
     if angles is None:
         return np.radians(np.arange(360.0))
@@ -210,8 +189,6 @@ def sweep(scene: Scene, angles=None, *, chunk: int = CHUNK) -> SweepResult:
     ok = angles_ok(sw, th_req)
     th = th_req if ok is None else th_req[ok]
     n = len(th)
-    if n > chunk:
-        tune_malloc()
     fr = None
     store = None
     for sl, part in evaluate_all(sw, th, chunk):
@@ -230,7 +207,9 @@ def sweep(scene: Scene, angles=None, *, chunk: int = CHUNK) -> SweepResult:
     if bad.any():
         notes.append(f"{int(bad.sum())} crank angle(s) at a singular position (a toggle "
                      "where the velocity is indeterminate) were left out")
-    open_ = unclosed(scene, fr) & ~bad
+    # each step places its point at its links' lengths; only where values were taken from
+    # both sides of a change point (or a step was masked) could a row fail to close
+    open_ = unclosed(scene, fr) & ~bad if sw.domain.change_points else bad & False
     if open_.any():
         notes.append(f"{int(open_.sum())} crank angle(s) where the links would not keep their "
                      "lengths (an indeterminate position) were left out")
@@ -246,14 +225,18 @@ def sweep(scene: Scene, angles=None, *, chunk: int = CHUNK) -> SweepResult:
 
 
 def unclosed(scene, fr: Motion):
-    """Mask of the rows where some link does not keep its length (beyond rounding): every
-    row a sweep keeps is a possible position of the mechanism."""
+    """Mask of the rows where some link does not keep its length (beyond rounding: the
+    squared length within 2e-9 of its own): every row a sweep keeps is a possible position
+    of the mechanism."""
     bad = np.zeros(len(fr.theta), dtype=bool)
-    for lk in scene.links:
-        (px, py), (qx, qy) = fr.P[lk.p], fr.P[lk.q]
-        with np.errstate(invalid="ignore"):
-            off = np.abs(np.hypot(qx - px, qy - py) - lk.length)
-        bad |= ~(off <= 1e-9 * lk.length)
+    with np.errstate(invalid="ignore", over="ignore"):
+        for lk in scene.links:
+            if lk.p in scene.ground and lk.q in scene.ground:
+                continue
+            (px, py), (qx, qy) = fr.P[lk.p], fr.P[lk.q]
+            dx, dy = qx - px, qy - py
+            L2 = lk.length * lk.length
+            bad |= ~(np.abs(dx * dx + dy * dy - L2) <= 2e-9 * L2)
     return bad
 
 

@@ -34,7 +34,8 @@ from .plan import Context, compile_plan
 from .scene import Scene
 
 __all__ = ["Sweeper", "Domain", "LimitPosition", "ChangePoint", "run_arrays", "merge",
-           "valid_mask", "degrees_fn", "fmt_deg", "TWO_PI", "CHUNK", "NEAR"]
+           "valid_mask", "degrees_fn", "fmt_deg", "tune_malloc", "TWO_PI", "CHUNK",
+           "NEAR"]
 
 #: crank angles evaluated per pass (about 32k: the temporaries of one pass stay in cache)
 CHUNK = 32768
@@ -125,6 +126,28 @@ _DOMAINS = weakref.WeakKeyDictionary()
 # --------------------------------------------------------------------------- evaluation
 
 
+_MALLOC_TUNED = []
+
+
+def tune_malloc():
+    """Keep freed temporaries on the heap (glibc): otherwise every pass over an array of
+    crank angles maps and faults fresh pages, which costs as much as the arithmetic (twice,
+    for 3600 angles). Once per process."""
+    if _MALLOC_TUNED:
+        return
+    _MALLOC_TUNED.append(True)
+    try:
+        import ctypes
+        import sys
+        if not sys.platform.startswith("linux"):
+            return
+        libc = ctypes.CDLL("libc.so.6")
+        libc.mallopt(-1, 64 << 20)  # M_TRIM_THRESHOLD
+        libc.mallopt(-3, 4 << 20)  # M_MMAP_THRESHOLD
+    except (OSError, AttributeError):
+        pass
+
+
 def _motion(theta, P, V, A, W, Al, S, cond, bad) -> Motion:
     return Motion(None, None, theta, P, V, A, W, Al, S, cond, bad)
 
@@ -145,6 +168,7 @@ def _full(v, n, const):
 def run_arrays(plan, theta, omega, alpha, vel=True, acc=True) -> Motion:
     """Evaluate ``plan`` over one array of crank angles (one pass, no chunking)."""
     n = len(theta)
+    tune_malloc()
     ctx = Context(theta, omega, alpha, array=True)
     upto = 2 if (vel and acc) else (1 if vel else 0)
     with np.errstate(all="ignore"):
