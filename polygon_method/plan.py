@@ -43,7 +43,7 @@ from dataclasses import dataclass, field, replace
 from .errors import (TOL, AssemblyError, MobilityError, PolygonMethodError, SceneError,
                      SingularStepError)
 from .numbers import in_units
-from .scene import FixedPath, GuideSlider, Scene
+from .scene import FixedPath, GuideSlider, Scene, key_line
 from .steps import TIERS, Carried, Context, Crank, Dyad, SliderDyad, SlottedLink, State
 
 __all__ = ["Plan", "Dims", "Bodies", "compile_plan", "gruebler", "Crank", "Dyad",
@@ -339,7 +339,9 @@ def compile_plan(scene: Scene) -> Plan:
                              f"not {type(scene).__name__} {str(scene)[:60]!r}")
         try:
             plan = _Compiler(scene).run()
-        except PolygonMethodError as exc:  # name the scene file in the one-line message
+        except PolygonMethodError as exc:  # name the scene file and line in the message
+            if exc.line is None and exc.key:
+                exc.line = key_line(scene, exc.key)
             raise exc.located(scene.file)
         if key is not None:
             while _BY_CONTENT and len(_BY_CONTENT) >= _KEEP:

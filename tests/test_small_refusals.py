@@ -63,3 +63,16 @@ def test_a_duplicate_key_in_an_answer_file_is_named():
         parse_answers('[answers]\nv_C = "0.4 m/s"\nv_C = "0.5 m/s"\n', sc, file="a.toml")
     line = err.value.one_line()
     assert "duplicate key v_C" in line and "line 3" in line
+
+
+def test_errors_the_plan_finds_name_the_line(tmp_path):
+    from polygon_method import load_scene
+    path = tmp_path / "s.toml"
+    path.write_text(FOURBAR.replace("[input]", "[assembly]\nC = [1000, 1000]\n[input]"))
+    with pytest.raises(AssemblyError) as err:
+        solve(load_scene(path))
+    assert "[assembly] C (line 11)" in err.value.one_line()
+    path.write_text(FOURBAR.replace("CD = 56", "CD = 56\nBD = 70"))
+    with pytest.raises(SceneError) as err:
+        solve(load_scene(path))
+    assert "[links] BD (line 9)" in err.value.one_line()

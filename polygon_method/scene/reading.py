@@ -83,6 +83,34 @@ _TOML_WORDS = [
 ]
 
 
+_HEADER = re.compile(r"^\s*\[\s*([A-Za-z0-9_.\-\"]+)\s*\]\s*(#.*)?$")
+
+
+def line_of(lines, table: str | None, key: str | None = None):
+    """Line number of ``[table] key`` (or of the table header) in ``lines``, if found."""
+    current = None
+    for i, line in enumerate(lines, 1):
+        m = _HEADER.match(line)
+        if m:
+            current = m.group(1).strip('"')
+            if key is None and current == table:
+                return i
+            continue
+        if key is not None and current == table:
+            if re.match(rf"^\s*\"?{re.escape(key)}\"?\s*=", line):
+                return i
+    return None
+
+
+def key_line(scene, key: str | None):
+    """The line of a located key such as ``[assembly] C`` or ``[links] BC, CD`` (its first
+    name) in the file the scene was read from, or None."""
+    m = re.match(r"^\[([A-Za-z_]+)\]\s*([^,\s]+)?", key or "")
+    if not m or not scene._lines:
+        return None
+    return line_of(scene._lines, m.group(1), m.group(2))
+
+
 def _syntax_error(msg, text, file) -> SceneError:
     """A TOML decode error as a :class:`SceneError` at its line and column."""
     m = re.search(r"\(at line (\d+), column (\d+)\)", msg)
@@ -158,19 +186,7 @@ class _Loader(_Tables):
     # -- locations
     def line_of(self, table: str | None, key: str | None = None):
         """Line number of ``[table] key`` (or of the table header) in the file, if found."""
-        current = None
-        header = re.compile(r"^\s*\[\s*([A-Za-z0-9_.\-\"]+)\s*\]\s*(#.*)?$")
-        for i, line in enumerate(self.lines, 1):
-            m = header.match(line)
-            if m:
-                current = m.group(1).strip('"')
-                if key is None and current == table:
-                    return i
-                continue
-            if key is not None and current == table:
-                if re.match(rf"^\s*\"?{re.escape(key)}\"?\s*=", line):
-                    return i
-        return None
+        return line_of(self.lines, table, key)
 
     def error(self, message, table=None, key=None, cls=SceneError):
         label = f"[{table}] {key}" if table and key else (f"[{table}]" if table else key)
@@ -299,7 +315,8 @@ class _Loader(_Tables):
         return Scene(title=title, units=units, ground=ground, links=tuple(links),
                      points=tuple(points), sliders=tuple(sliders), assembly=assembly,
                      input=inp, pins=tuple(pins), loads=tuple(loads), answers=tuple(answers),
-                     tolerance=tolerance, file=self.file, _link_index=index)
+                     tolerance=tolerance, file=self.file, _link_index=index,
+                     _lines=tuple(self.lines))
 
     def scale(self):
         return UNITS["length"][self.unit]

@@ -156,6 +156,7 @@ class Scene:
     tolerance: float | None = None
     file: str | None = None
     _link_index: dict = field(default_factory=dict, repr=False, compare=False)
+    _lines: tuple = field(default=(), repr=False, compare=False)  # the file's text, by line
 
     # ----- lookups
     def link(self, name: str) -> Link:
