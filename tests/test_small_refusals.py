@@ -71,7 +71,7 @@ def test_errors_the_plan_finds_name_the_line(tmp_path):
     path.write_text(FOURBAR.replace("[input]", "[assembly]\nC = [1000, 1000]\n[input]"))
     with pytest.raises(AssemblyError) as err:
         solve(load_scene(path))
-    assert "[assembly] C (line 11)" in err.value.one_line()
+    assert "[assembly] C (line 10)" in err.value.one_line()
     path.write_text(FOURBAR.replace("CD = 56", "CD = 56\nBD = 70"))
     with pytest.raises(SceneError) as err:
         solve(load_scene(path))
