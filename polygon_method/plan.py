@@ -310,14 +310,6 @@ _BY_CONTENT: dict = {}  # content key -> plan (bounded)
 _KEEP = 256
 
 
-def _content(scene: Scene):
-    """What a plan depends on, hashable (TypeError if a value is not)."""
-    key = (scene.units, tuple(scene.ground.items()), scene.links, scene.points, scene.sliders,
-           tuple(scene.assembly.items()), scene.input, scene.pins, scene.file)
-    hash(key)
-    return key
-
-
 def compile_plan(scene: Scene) -> Plan:
     """Compile the scene's constraint graph into a plan and choose each assembly branch.
 
@@ -328,11 +320,8 @@ def compile_plan(scene: Scene) -> Plan:
     hit = _BY_ID.get(id(scene))
     if hit is not None and hit[0]() is scene:
         return hit[1]
-    try:
-        key = _content(scene)
-        plan = _BY_CONTENT.get(key)
-    except (TypeError, AttributeError):  # unhashable, or not a scene: no caching by content
-        key, plan = None, None
+    key = getattr(scene, "_key", None)  # the scene's content (made with the scene)
+    plan = _BY_CONTENT.get(key) if key is not None else None
     if plan is None:
         if not isinstance(scene, Scene):
             raise SceneError(f"a Scene is needed (load_scene(path) or parse_scene(text)), "
@@ -381,30 +370,11 @@ def gruebler(scene: Scene) -> int:
     return 3 * (n - 1) - 2 * j
 
 
-def _finite_inputs(scene: Scene) -> None:
-    """A scene made through the API (``dataclasses.replace``) is checked as the loader
-    checks a file: finite numbers, positive lengths."""
-    inp = scene.input
-    for name, v in (("angle", inp.angle), ("speed", inp.omega), ("acceleration", inp.alpha)):
-        if not isinstance(v, (int, float)) or not math.isfinite(v):
-            raise SceneError(f"the crank's {name} must be a finite number, got {v!r}",
-                             key=f"[input] {name}", file=scene.file)
-    for p, xy in scene.ground.items():
-        if not all(isinstance(c, (int, float)) and math.isfinite(c) for c in xy):
-            raise SceneError(f"ground point {p} must have finite coordinates, got {xy!r}",
-                             key=f"[ground] {p}", file=scene.file)
-    for lk in scene.links:
-        if not isinstance(lk.length, (int, float)) or not (0 < lk.length < math.inf):
-            raise SceneError(f"link {lk.key} must have a finite positive length, got "
-                             f"{lk.length!r}", key=f"[links] {lk.key}", file=scene.file)
-
-
 class _Compiler:
     """The constraint graph as the recognisers see it (``g`` in the steps' ``recognise``):
     the points found so far (``P``), the links and sliders already used, the bodies."""
 
     def __init__(self, scene: Scene):
-        _finite_inputs(scene)
         self.scene = scene
         self.names = scene.point_names
         self.unit = scene.length_unit
@@ -464,9 +434,10 @@ class _Compiler:
     # ----- compiling
     def add(self, step):
         if step.branching:
-            step = self.choose_branch(step)
-        x, y, _ = step.place(self.P, step.params, self.ctx)
-        self.P[step.finds[0]] = (x, y)
+            step, xy = self.choose_branch(step)
+        else:
+            xy = step.place(self.P, step.params, self.ctx)[:2]
+        self.P[step.finds[0]] = xy
         self.steps.append(step)
         self.used_links.update(step.links)
 
@@ -480,7 +451,7 @@ class _Compiler:
     def run(self) -> Plan:
         sc = self.scene
         inp = sc.input
-        crank = sc.link(inp.crank)
+        crank = self.bodies._links.get(inp.crank) or sc.link(inp.crank)
         self.add(Crank(0, crank.key, inp.pivot, inp.tip, crank.length))
         names = self.names
         order = {p: i for i, p in enumerate(names)}
@@ -519,9 +490,10 @@ class _Compiler:
                          tuple(k for k, _, _ in pairs), tuple((i, j) for _, i, j in pairs),
                          tuple((links[i], links[j]) for _, i, j in pairs)))
         steps = tuple(self.steps)
-        dims = Dims(dict(sc.ground), tuple(st.params for st in steps), inp.angle, inp.omega,
+        ground = dict(sc.ground)
+        dims = Dims(ground, tuple(st.params for st in steps), inp.angle, inp.omega,
                     inp.alpha, {p.point: p.radius for p in sc.pins})
-        return Plan(steps, dict(sc.ground), sc, tuple(self.notes), fixed, tuple(pins), dims)
+        return Plan(steps, ground, sc, tuple(self.notes), fixed, tuple(pins), dims)
 
     def _first(self, kinds, name):
         for recognise in kinds:
@@ -547,7 +519,8 @@ class _Compiler:
                                   f"(default; set [assembly] {name} to choose)")
         else:
             sigma = self.pick(name, hint, plus, minus, step)
-        return step if sigma == step.sigma else replace(step, sigma=sigma)
+        chosen = step if sigma == step.sigma else replace(step, sigma=sigma)
+        return chosen, (plus if sigma > 0 else minus)
 
     def pick(self, name, hint, plus, minus, step, default=False):
         sep = math.dist(plus, minus)
@@ -590,6 +563,9 @@ class _Compiler:
     # ----- what is left over
     def finish(self):
         sc = self.scene
+        if len(self.P) == len(self.names) and len(self.used_links) == len(sc.links) and \
+                len(self.used_sliders) == len(sc.sliders):
+            return  # every point found, every link and slider used
         missing = [p for p in self.names if p not in self.P]
         extra_links = [lk.key for lk in sc.links if lk.key not in self.used_links]
         extra_sliders = [s.point for s in sc.sliders if s.point not in self.used_sliders]

@@ -146,9 +146,8 @@ def test_non_finite_input_through_the_api_is_refused(field, value):
     from polygon_method import SceneError
 
     sc = parse_scene(FOURBAR)
-    bad = dataclasses.replace(sc, input=dataclasses.replace(sc.input, **{field: value}))
-    with pytest.raises(SceneError, match="finite"):
-        solve(bad)
+    with pytest.raises(SceneError, match="finite"):  # at replace(), before any solve
+        solve(dataclasses.replace(sc, input=dataclasses.replace(sc.input, **{field: value})))
 
 
 def test_a_solution_pickles_and_its_plan_still_solves():

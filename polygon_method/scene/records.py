@@ -6,6 +6,7 @@ by its two points (``BC``, ``"O2-A"``), in either order.
 
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import dataclass, field
 
@@ -158,6 +159,43 @@ class Scene:
     _link_index: dict = field(default_factory=dict, repr=False, compare=False)
     _lines: tuple = field(default=(), repr=False, compare=False)  # the file's text, by line
 
+    def __post_init__(self):
+        # made once per scene (and anew by dataclasses.replace, which is checked as the
+        # loader checks a file): the points in file order, and the scene's content as a key
+        # for the plans cached outside it
+        self._check_numbers()
+        seen = dict.fromkeys(self.ground)
+        for link in self.links:
+            seen.update(dict.fromkeys(link.points))
+        for cp in self.points:
+            seen[cp.name] = None
+        object.__setattr__(self, "_names", tuple(seen))
+        try:
+            key = (self.units, tuple(self.ground.items()), self.links, self.points,
+                   self.sliders, tuple(self.assembly.items()), self.input, self.pins,
+                   self.file)
+            hash(key)
+        except (TypeError, AttributeError):  # something unhashable: not cached by content
+            key = None
+        object.__setattr__(self, "_key", key)
+
+    def _check_numbers(self) -> None:
+        """Finite numbers, positive lengths (a scene made through the API, too)."""
+        inp = self.input
+        for name, v in (("angle", inp.angle), ("speed", inp.omega),
+                        ("acceleration", inp.alpha)):
+            if not isinstance(v, (int, float)) or not math.isfinite(v):
+                raise SceneError(f"the crank's {name} must be a finite number, got {v!r}",
+                                 key=f"[input] {name}", file=self.file)
+        for p, xy in self.ground.items():
+            if not all(isinstance(c, (int, float)) and math.isfinite(c) for c in xy):
+                raise SceneError(f"ground point {p} must have finite coordinates, got {xy!r}",
+                                 key=f"[ground] {p}", file=self.file)
+        for lk in self.links:
+            if not isinstance(lk.length, (int, float)) or not (0 < lk.length < math.inf):
+                raise SceneError(f"link {lk.key} must have a finite positive length, got "
+                                 f"{lk.length!r}", key=f"[links] {lk.key}", file=self.file)
+
     # ----- lookups
     def link(self, name: str) -> Link:
         """The link joining the two points of ``name``, in either order."""
@@ -174,12 +212,7 @@ class Scene:
     @property
     def point_names(self) -> tuple[str, ...]:
         """Every point of the scene: ground, joints, carried points (in file order)."""
-        seen = dict.fromkeys(self.ground)
-        for link in self.links:
-            seen.update(dict.fromkeys(link.points))
-        for cp in self.points:
-            seen[cp.name] = None
-        return tuple(seen)
+        return self._names
 
     def carried(self, name: str) -> CarriedPoint | None:
         return next((c for c in self.points if c.name == name), None)

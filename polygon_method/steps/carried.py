@@ -40,6 +40,8 @@ def recognise(g, name):
     cp = g.carried(name)
     for key in g.bodies_of(name):
         b = g.body(key)
+        if len(b) == 2:  # a plain link: its other end alone is no second known point
+            continue
         known = [p for p in b if p in g.P]
         if len(known) >= 2:
             lk = sc.link(key)
