@@ -242,11 +242,11 @@ def test_physical_size_is_the_content_not_a_tight_bbox(fourbar):
         assert (x1 - x0) / fig.dpi * 2.54 == pytest.approx(1.0, rel=1e-9)
         assert (y1 - y0) / fig.dpi * 2.54 == pytest.approx(1.0, rel=1e-9)
     w, h = fig.get_size_inches() * 2.54
-    assert w <= 29.7 and h <= 21.0  # the three side by side on A4 landscape
+    assert w <= 29.7  # the panels flow in rows no wider than A4 landscape
 
 
 def test_scales_are_textbook_round_and_fit_a4(fourbar):
-    for diagram, sheet in (("all", (29.7, 21.0)), ("velocity", (21.0, 29.7)),
+    for diagram, sheet in (("all", (29.7, math.inf)), ("velocity", (21.0, 29.7)),
                            ("configuration", (21.0, 29.7))):
         text, used, _ = render(fourbar, "svg", diagram)
         for s in used.values():
@@ -299,7 +299,15 @@ def test_worked_problem_sheets(path):
     assert warnings == []
     _check_labels(text)
     w, h = Svg(text).size_cm()
-    assert w <= 29.7 and h <= 21.0
+    assert w <= 29.7  # rows no wider than A4 landscape
+    # one diagram, one scale: the sheet states the scales the step table states
+    from polygon_method.scales import diagram_scales
+    from polygon_method.steptable import steps_text
+    stated = [s.text for s in diagram_scales(sol)]
+    assert [used[n].text for n in ("configuration", "velocity", "acceleration")] == stated
+    table = steps_text(sol)
+    for t in stated:
+        assert t in table
 
 
 # --------------------------------------------------------------------------- image points

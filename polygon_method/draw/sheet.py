@@ -6,8 +6,8 @@ from __future__ import annotations
 import io
 
 from ..errors import PolygonMethodError
-from ..scales import (DIAGRAMS, GAP, KIND_OF_DIAGRAM, MARGIN, SHEET_ALL, SHEET_ONE,
-                      choose_scales, coarser, display_unit, finer, parse_scale)
+from ..scales import (DIAGRAMS, GAP, KIND_OF_DIAGRAM, MARGIN, SHEET_ALL, choose_scales,
+                      coarser, diagram_scales, display_unit, parse_scale)
 from .diagrams import _configuration, _polygon, _sketch
 from .sketch import _Sketch
 from .style import CM_PER_INCH, FONT, FORMATS, MAX_FIGURE_CM, PNG_DPI
@@ -119,9 +119,10 @@ def _panel_size(sk: _Sketch, pad=0.3):
 
 
 def layout(sol, diagram: str = "all", scales=None):
-    """The sketches and scales of a sheet: ``[(name, scale, sketch)]``. Scales not given
-    start as the largest round ones a panel could take and, while the sheet overflows A4,
-    the widest panel (or one too tall) is made one round step coarser."""
+    """The sketches and scales of a sheet: ``[(name, scale, sketch)]``. One diagram, one
+    scale everywhere: each diagram is drawn at the scale the step table states (and the
+    checker's tolerance uses), unless ``--scale`` gives another; the sheet's layout, not
+    the scales, changes where the three do not fit side by side (:func:`rows`)."""
     if diagram == "centres":
         return _centres_layout(sol, scales)
     names = DIAGRAMS if diagram == "all" else (diagram,)
@@ -129,47 +130,32 @@ def layout(sol, diagram: str = "all", scales=None):
         raise PolygonMethodError(f"unknown diagram {diagram!r}; use configuration, velocity, "
                                  "acceleration, all or centres", key="--diagram")
     given = dict(scales or {})
-    scale = choose_scales(sol, diagram, given)
-    fixed = {n: (given.get(n) or given.get(KIND_OF_DIAGRAM[n])) is not None for n in names}
-    sw, sh = SHEET_ALL if len(names) > 1 else SHEET_ONE
-    room_w, room_h = sw - 2 * MARGIN - (len(names) - 1) * GAP, sh - 2 * MARGIN
-    sketches = {n: _sketch(sol, n, scale[n]) for n in names}
-    for _ in range(8 * len(names)):  # coarsen the widest (or a too tall) panel until it fits
-        size = {n: _panel_size(sketches[n]) for n in names}
-        free = [n for n in names if not fixed[n]]
-        tall = [n for n in free if size[n][1] > room_h]
-        if not tall and sum(w for w, _ in size.values()) <= room_w:
-            break
-        if not free:
-            break
-        n = tall[0] if tall else max(free, key=lambda k: size[k][0])
-        scale[n] = coarser(scale[n])
-        sketches[n] = _sketch(sol, n, scale[n])
-    def fits(trial):
-        size = [_panel_size(trial[n]) for n in names]
-        return (sum(w for w, _ in size) <= room_w and all(h <= room_h for _, h in size))
-
-    if len(names) > 1 and fits(sketches):  # use the room left: a step finer where it fits
-        # (one diagram keeps the scale `steps` states, so the two agree)
-        for _ in range(4):
-            better = False
-            for n in sorted(free, key=lambda k: k == "configuration"):
-                trial = dict(sketches)
-                step = finer(scale[n])
-                trial[n] = _sketch(sol, n, step)
-                if fits(trial):
-                    scale[n], sketches, better = step, trial, True
-            if not better:
-                break
+    stated = dict(zip(DIAGRAMS, diagram_scales(sol)))
     out = []
     for name in names:
-        w, h = _panel_size(sketches[name])
+        s = given.get(name) or given.get(KIND_OF_DIAGRAM[name]) or stated[name]
+        sk = _sketch(sol, name, s)
+        w, h = _panel_size(sk)
         if max(w, h) > MAX_FIGURE_CM:
             raise PolygonMethodError(
-                f"the {name} diagram at {display_unit(scale[name].text)} would be "
+                f"the {name} diagram at {display_unit(s.text)} would be "
                 f"{max(w, h):.0f} cm across; use a coarser scale such as "
-                f"{display_unit(choose_scales(sol, name)[name].text)}", key="--scale")
-        out.append((name, scale[name], sketches[name]))
+                f"{display_unit(stated[name].text)}", key="--scale")
+        out.append((name, s, sk))
+    return out
+
+
+def rows(sizes, width=SHEET_ALL[0] - 2 * MARGIN):
+    """Panels (their sizes, cm) flowed into rows no wider than an A4 landscape sheet's
+    room: the three side by side where they fit, else on more rows. Returns lists of
+    indices."""
+    out, used = [[]], 0.0
+    for k, (w, _) in enumerate(sizes):
+        if out[-1] and used + GAP + w > width:
+            out.append([])
+            used = 0.0
+        used += (GAP if out[-1] else 0.0) + w
+        out[-1].append(k)
     return out
 
 
@@ -213,17 +199,25 @@ def make_figure(sol, diagram: str = "all", scales=None):
 
     panels = layout(sol, diagram, scales)
     sizes = [_panel_size(sk) for _, _, sk in panels]
-    W = 2 * MARGIN + sum(w for w, _ in sizes) + GAP * (len(sizes) - 1)
-    H = 2 * MARGIN + max(h for _, h in sizes)
+    lines = rows(sizes) if len(panels) > 1 else [[0]]
+    widths = [sum(sizes[k][0] for k in r) + GAP * (len(r) - 1) for r in lines]
+    heights = [max(sizes[k][1] for k in r) for r in lines]
+    W = 2 * MARGIN + max(widths)
+    H = 2 * MARGIN + sum(heights) + GAP * (len(lines) - 1)
     fig = Figure(figsize=(W / CM_PER_INCH, H / CM_PER_INCH), dpi=72)
-    x = MARGIN
     warnings = []
-    for (name, scale, sk), (w, h) in zip(panels, sizes):
-        ax = fig.add_axes((x / W, (H - MARGIN - h) / H, w / W, h / H))
-        ax.set_gid(f"panel-{name}")
-        _paint(ax, sk)
-        warnings += [f"{name}: {m}" for m in sk.warnings]
-        x += w + GAP
+    top = MARGIN
+    for r, row_h in zip(lines, heights):
+        x = MARGIN
+        for k in r:
+            name, scale, sk = panels[k]
+            w, h = sizes[k]
+            ax = fig.add_axes((x / W, (H - top - h) / H, w / W, h / H))
+            ax.set_gid(f"panel-{name}")
+            _paint(ax, sk)
+            warnings += [f"{name}: {m}" for m in sk.warnings]
+            x += w + GAP
+        top += row_h + GAP
     return fig, {name: scale for name, scale, _ in panels if scale is not None}, warnings
 
 
