@@ -37,8 +37,8 @@ than to any other; a label that has to stand off gets a leader line.
 ... speed = "10 rad/s ccw"
 ... '''))
 >>> svg, scales, warnings = render(sol, "svg", "all")
->>> [str(s) for s in scales.values()]
-['1 cm = 100 mm', '1 cm = 0.2 m/s', '1 cm = 2 m/s^2']
+>>> [str(s) for s in scales.values()]     # the scales the step table states
+['1 cm = 50 mm', '1 cm = 0.2 m/s', '1 cm = 2 m/s^2']
 >>> svg.startswith("<?xml") and 'id="velocity-vector-0-shaft"' in svg
 True
 """
