@@ -21,7 +21,7 @@ from shapely.geometry import LineString, Polygon, box
 
 from polygon_method import parse_scene, solve
 from polygon_method.cli import main
-from polygon_method.constructions import acceleration_constructions
+from polygon_method.constructions import acceleration_constructions, velocity_constructions
 from polygon_method.draw import (choose_scales, drawn_vectors, make_figure, render,
                                  svg_string)
 from polygon_method.scales import parse_scale
@@ -439,3 +439,25 @@ def test_single_diagram_uses_the_scale_the_steps_state(path):
         assert drawn_name == name
         assert scale.text == stated.text
         assert stated.text in text
+
+
+@pytest.mark.parametrize("name", ["crank_slotted_lever", "whitworth"])
+def test_the_point_under_the_block_is_marked_on_both_polygons(name):
+    """a1 and a1', which the step table names, are drawn and labelled where the lever's
+    point under the block moves: v = w perp(KA), a = -w^2 KA + al perp(KA)."""
+    from polygon_method import load_scene
+    sol = solve(load_scene(Path(__file__).parent.parent / "worked_problems" / f"{name}.toml"))
+    st = next(s for s in sol.plan.steps if s.kind == "slotted")
+    (kx, ky), (ax, ay) = sol.P[st.known], sol.P[st.point]
+    rx, ry = ax - kx, ay - ky
+    w, al = sol.W[st.guide], sol.Al[st.guide]
+    want = {"velocity": (-w * ry, w * rx),
+            "acceleration": (-w * w * rx - al * ry, -w * w * ry + al * rx)}
+    for phase, prime in (("velocity", ""), ("acceleration", "'")):
+        cons = (velocity_constructions if phase == "velocity" else
+                acceleration_constructions)(sol)
+        (label, xy), = cons[st.index].named
+        assert label == st.point.lower() + "1" + prime
+        assert xy == pytest.approx(want[phase], rel=1e-12, abs=1e-12)
+        text, _, _ = render(sol, "svg", phase)
+        assert f'id="label-{label.replace(chr(39), "p")}"' in text

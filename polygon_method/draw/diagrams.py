@@ -312,6 +312,8 @@ def _polygon(sol, scale: Scale, phase: str) -> _Sketch:
         if p not in sol.scene.ground:
             name_at(D[p], image_label(sol, p, phase))
     for c in cons:
+        for text, xy in c.named:  # the intermediate points the step's text names (a1')
+            name_at(xy, text)
         for ln in c.lines:
             if _POINT_LABEL.match(ln.through):
                 name_at(ln.point, ln.through)

@@ -236,6 +236,7 @@ class Construction:
     found: tuple  # Vectors the step determines
     text: str
     condition: float
+    named: tuple = ()  # (label, point) of intermediate points the text names (a1')
 
 
 def image_label(sol, point: str, phase: str = "velocity") -> str:

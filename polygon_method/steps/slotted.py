@@ -238,7 +238,7 @@ class SlottedLink(Step):
                             "sliding velocity of the block"),
                      absolute(sol, N, V, ph))
             return Construction(self.index, self.title, ph, lab(N), V[N], (), lines, found,
-                                text, cond)
+                                text, cond, ((c, coincident),))
         A = sol.A
         al = sol.Al[self.guide]
         cen_end = add(A[K], (-w * w * kA[0], -w * w * kA[1]))
@@ -267,4 +267,4 @@ class SlottedLink(Step):
                  Vector(under, back, "s", "sliding", f"as_{Ab}", "sliding acceleration"),
                  absolute(sol, N, A, ph))
         return Construction(self.index, self.title, ph, lab(N), A[N], (cen, corv), lines, found,
-                            text, cond)
+                            text, cond, ((c, under),))
