@@ -461,3 +461,35 @@ def test_the_point_under_the_block_is_marked_on_both_polygons(name):
         assert xy == pytest.approx(want[phase], rel=1e-12, abs=1e-12)
         text, _, _ = render(sol, "svg", phase)
         assert f'id="label-{label.replace(chr(39), "p")}"' in text
+
+
+def test_a_point_on_a_link_produced_has_its_image_line_produced():
+    """T on BC produced: bc (b'c') is drawn produced to t (t'), on the line of b and c."""
+    sol = solve(parse_scene("""
+    [ground]
+    A = [0, 0]
+    D = [100, 0]
+    [links]
+    AB = 50
+    BC = 66
+    CD = 56
+    [points]
+    T = { on = "BC", along = 100 }
+    [input]
+    crank = "AB"
+    angle = 60
+    speed = "10.5 rad/s cw"
+    """))
+    from polygon_method.draw.diagrams import _polygon
+    from polygon_method.scales import diagram_scales
+    _, vs, as_ = diagram_scales(sol)
+    for phase, scale, D in (("velocity", vs, sol.V), ("acceleration", as_, sol.A)):
+        sk = _polygon(sol, scale, phase)
+        (a, b), = [pts for kind, pts, kw in sk.items
+                   if kind == "line" and kw["gid"] == f"{phase}-produced-T"]
+        s = scale.per_cm
+        bx, by = D["B"][0] / s, D["B"][1] / s
+        tx, ty = D["T"][0] / s, D["T"][1] / s
+        assert a == pytest.approx((bx, by), abs=1e-9) and b == pytest.approx((tx, ty), abs=1e-9)
+        cx, cy = D["C"][0] / s, D["C"][1] / s
+        assert abs((cx - bx) * (ty - by) - (cy - by) * (tx - bx)) < 1e-9 * (1 + tx * tx + ty * ty)

@@ -276,6 +276,13 @@ def _polygon(sol, scale: Scale, phase: str) -> _Sketch:
             tri = [cm(D[st.p]), cm(D[st.q]), cm(D[st.point])]
             sk.polygon(tri, gid=f"{phase}-image-{st.point}", face=IMAGE_FACE, edge="#b08d00",
                        lw=0.5, alpha=0.45, z=1, obstacle="edge")
+    # a point on a link produced: the image line produced to its image (qr produced to t)
+    for c in cons:
+        produced = steps[c.step].produced()
+        if produced is not None:
+            a, x = produced
+            sk.line([cm(D[a]), cm(D[x])], gid=f"{phase}-produced-{x}", color="#000000",
+                    lw=0.6, dashes=(2.0, 1.5), z=2)
     # construction lines, dashed, through the point they start from
     marks = []
     for c in cons:

@@ -174,6 +174,11 @@ class Step:
         them (ground 1, crank 2, ...)."""
         return ()
 
+    def produced(self):
+        """(A, X) where the step's point X lies on a line AB produced beyond B (the image
+        line is drawn produced, from a to x), else None."""
+        return None
+
     def output(self, ground):
         """What this step drives that a linkage analysis may call the output: ("rocker",
         link, pivot, point), ("slider", point), ("lever", link, pivot, free end), or None."""

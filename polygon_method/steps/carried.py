@@ -162,6 +162,11 @@ class Carried(Step):
 
         return position, velocity, acceleration
 
+    def produced(self):
+        if self.mu != 0 or 0.0 <= self.lam <= 1.0:
+            return None
+        return (self.q if self.lam < 0 else self.p, self.point)
+
     def position_words(self, L, which, angle_deg):
         return f"{self.point}: {self.how or 'on ' + self.link}"
 
