@@ -333,8 +333,15 @@ class _Diagnoser:
         pair = max(rub.pairs, key=rub.pairs.get)
         a, b = pair.split("|")
         wa, wb = rub.bodies[a], rub.bodies[b]
-        rule = (f"pin {X} joins {' and '.join(rub.bodies)}: rub_{X} = |w_{a} - w_{b}| r = "
-                f"{_g(correct)} m/s")
+        why = ""
+        if wa != 0 and wb != 0 and (wa > 0) != (wb > 0):  # in magnitudes, as written by hand
+            how, why = f"(|w_{a}| + |w_{b}|) r", " (the sum: they turn in opposite senses)"
+        elif wa != 0 and wb != 0:
+            how, why = f"| |w_{a}| - |w_{b}| | r", " (the difference: they turn alike)"
+        else:
+            how = f"|w_{a} - w_{b}| r"
+        rule = (f"pin {X} joins {' and '.join(rub.bodies)}: rub_{X} = {how} = "
+                f"{_g(correct)} m/s{why}")
         if wa != 0 and wb != 0:
             if (wa > 0) == (wb > 0):
                 out.append(_Candidate((abs(wa) + abs(wb)) * r, "sum_for_difference",
@@ -394,7 +401,13 @@ class _Diagnoser:
         if used:
             powers.insert(0, (theirs, f" with your {', '.join(used)}"))
         sign = (lambda t: t) if signed else abs
+        exact_power = powers[-1][0]
         for power, label in powers:
+            # with the student's own velocities the right method gives another torque than
+            # the correct one: say so, so that the two numbers do not read as a contradiction
+            then = "" if not label else (
+                f" (with the exact velocities: {_g(abs(exact_power))} / {_g(abs(w))} = "
+                f"{_g(abs(exact_power / w))} N m)")
             if label:
                 out.append(_Candidate(sign(-power / w), "carried_error",
                                       f"carried from your velocities: T = {_g(abs(power))} / "
@@ -409,7 +422,8 @@ class _Diagnoser:
                         f"the power {_num(abs(power))} W{label} divided by omega_{lk.key} = "
                         f"{_num(wl)} rad/s{' (yours)' if lk.key in yours else ''} instead of "
                         f"the crank's omega_{crank} = {_g(abs(w))} rad/s: T = P / omega_{crank}"
-                        f" = {_g(abs(power))} / {_g(abs(w))} = {_g(abs(power / w))} N m"))
+                        f" = {_g(abs(power))} / {_g(abs(w))} = {_g(abs(power / w))} N m"
+                        f"{then}"))
             for factor, code, words in _speed_mistakes(sc):
                 out.append(_Candidate(sign(-power / (w * factor)), code,
                                       f"{words}, in T = P / omega"))
