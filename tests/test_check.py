@@ -403,3 +403,28 @@ def test_zero_answer_for_a_translating_coupler_is_right(tmp_path):
     verdicts = check_answers(sol, answers, None)
     assert all(v.ok for v in verdicts), verdicts
     assert all(v.correct == 0 for v in verdicts)
+
+
+@pytest.mark.parametrize("kind", ["v", "a"])
+def test_the_point_under_the_block_given_for_the_block_is_named(kind):
+    """The classic slotted-lever slip: a1 (a1') read off for the block A itself. The value
+    is computed here independently: v = w perp(KA), a = -w^2 KA + al perp(KA)."""
+    import math
+    from pathlib import Path
+
+    from polygon_method import load_scene, solve
+    from polygon_method.scene import parse_answers
+    sc = load_scene(Path(__file__).resolve().parent.parent / "worked_problems" /
+                    "crank_slotted_lever.toml")
+    sol = solve(sc)
+    lever = sc.link("O4-P")
+    (kx, ky), (x, y) = sol.P["O4"], sol.P["A"]
+    rx, ry = x - kx, y - ky
+    w, al = sol.W[lever.key], sol.Al[lever.key]
+    value = (math.hypot(-w * ry, w * rx) if kind == "v" else
+             math.hypot(-w * w * rx - al * ry, -w * w * ry + al * rx))
+    unit = "m/s" if kind == "v" else "m/s^2"
+    tol, answers = parse_answers(f'[answers]\n{kind}_A = "{value:.4f} {unit}"\n', sc)
+    v = check_answers(sol, answers, tol)[0]
+    assert not v.ok and v.mistake == "coincident_for_block", v.diagnosis
+    assert "under the block" in v.diagnosis

@@ -229,10 +229,22 @@ class _Diagnoser:
                 out.append(_Candidate(mag(X, Y), "relative_for_absolute",
                                       f"the relative {sym}_{X}{Y} given for the absolute "
                                       f"{sym}_{X}"))
-            if kind == "v" and isinstance(self.sc.slider(X), GuideSlider):
-                out.append(_Candidate(abs(sol.sliding_velocity(X)), "relative_for_absolute",
-                                      f"the sliding velocity of {X} on its guide given for "
-                                      f"its absolute velocity"))
+            sl = self.sc.slider(X)
+            if kind in ("v", "a") and isinstance(sl, GuideSlider):
+                if kind == "v":
+                    out.append(_Candidate(abs(sol.sliding_velocity(X)), "relative_for_absolute",
+                                          f"the sliding velocity of {X} on its guide given for "
+                                          f"its absolute velocity"))
+                # the classic slotted-lever slip: the guide's point under the block for the
+                # block itself (a1 for a: they differ by the sliding velocity)
+                under = self.point_under_block(X, sl, kind)
+                if under is not None:
+                    out.append(_Candidate(math.hypot(*under), "coincident_for_block",
+                                          f"{sym} of the point of {sl.guide} under the block "
+                                          f"({X.lower()}1{chr(39) if kind == 'a' else ''}) "
+                                          f"given for the block {X}'s own: they differ by "
+                                          "the sliding" + (" and Coriolis components" if
+                                                           kind == "a" else " velocity")))
             if kind == "a":
                 for lk in self.sc.links:
                     if X in lk.points and lk.other(X) in self.sc.ground:
@@ -248,6 +260,22 @@ class _Diagnoser:
             if kind == "a" and lk is not None:
                 out += self.components(X, Y, lk, f"a_{X}{Y}")
         return out
+
+    def point_under_block(self, X, sl, kind):
+        """Velocity (kind "v") or acceleration ("a") of the guide link's point that lies
+        under the block at X, from the guide's known point, omega and alpha."""
+        sol = self.sol
+        g = self.sc.link(sl.guide)
+        K = next((p for p in g.points if p in self.sc.ground), g.points[0])
+        (kx, ky), (x, y) = sol.P[K], sol.P[X]
+        rx, ry = x - kx, y - ky
+        w = sol.W[g.key]
+        if kind == "v":
+            vx, vy = sol.V[K]
+            return (vx - w * ry, vy + w * rx)
+        al = sol.Al[g.key]
+        ax, ay = sol.A[K]
+        return (ax - w * w * rx - al * ry, ay - w * w * ry + al * rx)
 
     def components(self, X, Y, lk, name):
         sol = self.sol
