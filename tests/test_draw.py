@@ -493,3 +493,43 @@ def test_a_point_on_a_link_produced_has_its_image_line_produced():
         assert a == pytest.approx((bx, by), abs=1e-9) and b == pytest.approx((tx, ty), abs=1e-9)
         cx, cy = D["C"][0] / s, D["C"][1] / s
         assert abs((cx - bx) * (ty - by) - (cy - by) * (tx - bx)) < 1e-9 * (1 + tx * tx + ty * ty)
+
+
+SWIVEL = """
+[ground]
+O = [0, 0]
+C = [150, 0]
+[links]
+OA = 50
+AB = 250
+[sliders]
+C = { along = "AB" }
+[input]
+crank = "OA"
+angle = 60
+speed = "10 rad/s ccw"
+"""
+
+
+def test_a_swivel_block_is_drawn_as_textbooks_draw_it():
+    """A block at a fixed swivel: its pivot symbol, the lever's point under it named c1
+    (c1'), and the lever's image line a c1 produced to b drawn on both polygons."""
+    from polygon_method.steptable import steps_text
+    sol = solve(parse_scene(SWIVEL))
+    text, _, _ = render(sol, "svg", "all")
+    assert 'id="ground-C"' in text
+    assert 'id="label-c1"' in text and 'id="label-c1p"' in text
+    table = steps_text(sol)
+    assert "c1" in table and "o1" not in table
+    assert "under C, relative to A" in table
+    for phase, D in (("velocity", sol.V), ("acceleration", sol.A)):
+        cons = (velocity_constructions if phase == "velocity" else
+                acceleration_constructions)(sol)
+        st = next(s for s in sol.plan.steps if s.kind == "slotted")
+        line = [v for v in cons[st.index].found if v.kind == "relative" and
+                v.name.endswith("BA")]
+        assert line and line[0].start == D["A"] and line[0].end == D["B"]
+        (_, c1), = cons[st.index].named  # a, c1 and b are in line
+        (ax, ay), (bx, by) = D["A"], D["B"]
+        cross = (bx - ax) * (c1[1] - ay) - (by - ay) * (c1[0] - ax)
+        assert abs(cross) <= 1e-9 * ((bx - ax) ** 2 + (by - ay) ** 2)

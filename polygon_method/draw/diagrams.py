@@ -90,6 +90,9 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
         away = [P[lk.other(g)] for lk in sc.links if g in lk.points
                 and lk.other(g) not in sc.ground]
         away += [P[c] for lk in sc.links if g in lk.points for c in carried_on.get(lk.key, ())]
+        sl = sc.slider(g)
+        if sl is not None and not isinstance(sl, FixedPath):  # a block at a fixed swivel
+            away += [P[p] for p in (sl.first, sl.second) if p not in sc.ground]
         if away:
             near = [P[p] for p in sc.point_names if p != g and 0 < math.dist(P[p], P[g]) < 1.2]
             _ground_symbol(sk, g, P[g], away + near)

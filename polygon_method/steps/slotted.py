@@ -25,7 +25,7 @@ from dataclasses import dataclass
 from ..errors import TOL, SingularStepError
 from ..scene import GuideSlider
 from .base import (Construction, DirectionLine, Step, Vector, absolute, add, image_label, perp,
-                   pole_text, sub, unit)
+                   pole_text, relative, sub, unit)
 
 __all__ = ["SlottedLink", "place", "velocity", "acceleration", "recognise"]
 
@@ -225,7 +225,7 @@ class SlottedLink(Step):
         if ph == "velocity":
             V = sol.V
             coincident = add(V[K], (-w * kA[1], w * kA[0]))
-            c = f"{lab(Ab)}1"
+            c = f"{Ab.lower()}1"  # the lever's point under the block (c1 at a swivel C)
             lines = (DirectionLine(V[K], unit(*perp(kA)), lab(K), f"perpendicular to {K}{Ab}"),
                      DirectionLine(V[Ab], u, lab(Ab), f"parallel to {self.guide}"))
             text = (f"through {pole_text(sol, K, ph)} draw a line perpendicular to {K}{Ab} (the "
@@ -233,10 +233,13 @@ class SlottedLink(Step):
                     f"to {self.guide} (the sliding); they meet at {c}; then {lab(K)}{lab(N)} / "
                     f"{lab(K)}{c} = {K}{N} / {K}{Ab} gives {lab(N)}")
             found = (Vector(V[K], coincident, f"{lab(K)}{c}", "relative",
-                            f"v of the point of {self.guide} under {Ab}", ""),
+                            f"v of the point of {self.guide} under {Ab}"
+                            + ("" if K in sol.scene.ground else f", relative to {K}"), ""),
                      Vector(coincident, V[Ab], f"{c}{lab(Ab)}", "sliding", f"vs_{Ab}",
                             "sliding velocity of the block"),
                      absolute(sol, N, V, ph))
+            if K not in sol.scene.ground:  # the lever's image line k c1 produced to n
+                found += (relative(sol, N, K, V, ph),)
             return Construction(self.index, self.title, ph, lab(N), V[N], (), lines, found,
                                 text, cond, ((c, coincident),))
         A = sol.A
@@ -245,7 +248,7 @@ class SlottedLink(Step):
         under = add(cen_end, (-al * kA[1], al * kA[0]))
         cor = sol.coriolis(Ab)
         back = sub(A[Ab], cor)
-        c = f"{lab(Ab)[:-1]}1'"
+        c = f"{Ab.lower()}1'"
         cen = Vector(A[K], cen_end, "cen", "centripetal", f"centripetal of {Ab}{K} on "
                      f"{self.guide}", f"omega^2 x {K}{Ab} = {w * w * math.hypot(*kA):.4g} "
                      f"m/s^2, towards {K}")
@@ -266,5 +269,7 @@ class SlottedLink(Step):
                         f"alpha_{self.guide} x {K}{Ab}"),
                  Vector(under, back, "s", "sliding", f"as_{Ab}", "sliding acceleration"),
                  absolute(sol, N, A, ph))
+        if K not in sol.scene.ground:  # the lever's image line k' c1' produced to n'
+            found += (relative(sol, N, K, A, ph),)
         return Construction(self.index, self.title, ph, lab(N), A[N], (cen, corv), lines, found,
                             text, cond, ((c, under),))
