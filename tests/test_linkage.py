@@ -318,3 +318,30 @@ def test_nearly_locked_linkages_give_a_result_or_one_line(text, tmp_path, capsys
         assert len(err.strip().splitlines()) == 1
     else:
         assert "nan" not in out.lower() and "inf " not in out.lower()
+
+
+def test_an_oscillating_cylinder_has_its_swing_and_quick_return():
+    """Crank r about O, the link through a swivel at C, |OC| = c: the link swings
+    +-asin(r/c) and returns quickly: the crank turns 360 - 2 acos(r/c) deg one way."""
+    from polygon_method import parse_scene
+    from polygon_method.linkage import analyse
+    r, c = 50.0, 150.0
+    sc = parse_scene(f"""
+    [ground]
+    O = [0, 0]
+    C = [{c}, 0]
+    [links]
+    OA = {r}
+    AB = 250
+    [sliders]
+    C = {{ along = "AB" }}
+    [input]
+    crank = "OA"
+    angle = 60
+    speed = "10 rad/s ccw"
+    """)
+    text = analyse(sc).text()
+    swing = 2 * math.degrees(math.asin(r / c))
+    forward = 360 - 2 * math.degrees(math.acos(r / c))
+    assert f"swing {swing:.4f} deg" in text
+    assert f"time ratio {forward / (360 - forward):.6f}" in text

@@ -207,7 +207,11 @@ class SlottedLink(Step):
         return {self.guide: (self.new, self.known)}
 
     def output(self, ground):
-        return ("lever", self.guide, self.known, self.new) if self.known in ground else None
+        if self.known in ground:  # a slotted lever about its fixed pivot
+            return ("lever", self.guide, self.known, self.new)
+        if self.point in ground:  # an oscillating cylinder: the link swings about the swivel
+            return ("lever", self.guide, self.point, self.new)
+        return None
 
     def position_words(self, L, which, angle_deg):
         return (f"{self.new}: {self.guide} passes through the block at {self.point}: draw the "
