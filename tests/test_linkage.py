@@ -345,3 +345,13 @@ def test_an_oscillating_cylinder_has_its_swing_and_quick_return():
     forward = 360 - 2 * math.degrees(math.acos(r / c))
     assert f"swing {swing:.4f} deg" in text
     assert f"time ratio {forward / (360 - forward):.6f}" in text
+
+
+def test_no_negative_zero_in_the_text():
+    import re
+    from pathlib import Path
+    from polygon_method import load_scene
+    from polygon_method.linkage import analyse
+    for path in sorted((Path(__file__).parent.parent / "worked_problems").glob("*.toml")):
+        text = analyse(load_scene(path)).text()
+        assert not re.search(r"(?<![\d.])-0\.0+(?!\d)", text), path.name

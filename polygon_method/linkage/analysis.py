@@ -4,6 +4,7 @@ quick-return ratio, and the text that prints them."""
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 
 import numpy as np
@@ -123,7 +124,8 @@ class Linkage:
         if self.notes:
             out.append("")
             out.extend(self.notes)
-        return "\n".join(out)
+        # a value that rounds to zero is written 0.00, never -0.00
+        return re.sub(r"(?<![\d.])-(0\.0+)(?![\d])", r"\1", "\n".join(out))
 
 
 def _mm(x, scene) -> str:
