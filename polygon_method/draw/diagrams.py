@@ -13,7 +13,7 @@ from ..scales import Scale
 from ..scene import FixedPath
 from .sketch import _angle_between, _header, _Sketch
 from .style import (BAR, BODY_EDGE, BODY_FACE, DOT_R, IMAGE_FACE, JOINT_R, LABEL_PT,
-                     LEGEND_NAMES, LINE_STYLE, MARK_PT, OVERSHOOT, POLE_R, STYLE)
+                     LEGEND_NAMES, LINE_STYLE, MARK_PT, OVERSHOOT, POLE_R, SMALL_PT, STYLE)
 
 # --------------------------------------------------------------------------- configuration
 
@@ -79,10 +79,17 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
                    edge="#000000", lw=0.9, z=3)
         sk.hints.append(((X[0] - size / 2 * u[0], X[1] - size / 2 * u[1]),
                          (X[0] + size / 2 * u[0], X[1] + size / 2 * u[1])))
-    # pins at their given sizes
+    # pins at their given sizes, where that stays legible; a pin as large as the links it
+    # joins is marked by its diameter instead of a circle that would swamp them
+    pin_notes = []
     for pin in sc.pins:
         r = pin.radius / s
-        if r > JOINT_R * 1.2:
+        near = [math.dist(P[pin.point], P[lk.other(pin.point)]) for lk in sc.links
+                if pin.point in lk.points]
+        if r > 0.3 * min(near, default=math.inf):
+            dia = 2 * pin.radius / sc.length_unit
+            pin_notes.append((pin.point, f"\u2300 {dia:.4g} {sc.units}"))
+        elif r > JOINT_R * 1.2:
             sk.circle(P[pin.point], r, gid=f"pin-{pin.point}", face="none", edge="#8a8a8a",
                       lw=0.6, z=4, obstacle="edge")
     # ground pivots, hatched
@@ -108,6 +115,9 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
             sk.circle(P[name], DOT_R, gid=f"joint-{name}", face="#000000", z=6)
     for name in sc.point_names:
         sk.label(name, [P[name]], LABEL_PT, gid=f"label-{name}", point=True)
+    for name, text in pin_notes:
+        sk.label(text, [P[name]], SMALL_PT, gid=f"label-pin-{name}", color="#666666",
+                 point=True)
     _crank_angle_label(sk, sc, P)
     if extra is not None:
         extra(sk, P)
