@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import io
 import math
+import textwrap
 
 import numpy as np
 
@@ -13,11 +14,11 @@ from .solution import solve
 from .sweeps import SweepResult
 from .tracking import degrees_fn
 
-__all__ = ["plot_bytes"]
+__all__ = ["plot_bytes", "plot_figure"]
 
 
 
-def plot_bytes(res: SweepResult, path: str, *, points=None, links=None) -> bytes:
+def plot_figure(res: SweepResult, *, points=None, links=None):
     """Velocities and accelerations of ``points`` and omega, alpha of ``links`` against the
     crank angle, with the scene's own instant marked (matplotlib, imported here only)."""
     import matplotlib
@@ -107,12 +108,21 @@ def plot_bytes(res: SweepResult, path: str, *, points=None, links=None) -> bytes
     for ax in axes[1]:
         ax.set_xlabel("crank angle (deg)")
     title = sc.title or sc.file or "mechanism"
-    fig.suptitle(f"{title}: crank {sc.input.crank}, dashed: the scene's instant "
-                 f"({math.degrees(sc.input.angle):g} deg)"
-                 + ("; dotted red: limit positions" if res.limits else "")
-                 + ("; dash-dot: change points" if res.change_points else "")
-                 + ("\n(the vertical scale is cut: values grow without bound near the "
-                    "limit positions)" if clipped else ""), fontsize=10)
+    key = (f"crank {sc.input.crank}; dashed: the scene's instant "
+           f"({math.degrees(sc.input.angle):g} deg)"
+           + ("; dotted red: limit positions" if res.limits else "")
+           + ("; dash-dot: change points" if res.change_points else ""))
+    lines = textwrap.wrap(title, 90) + textwrap.wrap(key, 110)  # within the figure's width
+    if clipped:
+        lines.append("(the vertical scale is cut: values grow without bound near the limit "
+                     "positions)")
+    fig.suptitle("\n".join(lines), fontsize=10)
+    return fig
+
+
+def plot_bytes(res: SweepResult, path: str, *, points=None, links=None) -> bytes:
+    """:func:`plot_figure` as the bytes of the file ``path`` names (SVG, PNG or PDF)."""
+    fig = plot_figure(res, points=points, links=links)
     buf = io.BytesIO()
     fmt = path.rsplit(".", 1)[-1].lower()
     fig.savefig(buf, format=fmt, **({"metadata": {"Date": None}} if fmt == "svg" else {}))

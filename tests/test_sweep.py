@@ -333,3 +333,19 @@ def test_package_level_sweep_is_the_function():
     # at 90 deg the rod's angle is stationary: the piston moves with the crank pin
     assert res.sliding_velocity("B")[0] == pytest.approx(-0.15 * 450 * math.pi / 30,
                                                          rel=1e-12)
+
+
+def test_the_plot_title_stays_inside_the_figure():
+    """A long scene title is wrapped, never clipped at the figure's edges."""
+    from pathlib import Path
+
+    from polygon_method import load_scene
+    from polygon_method.plots import plot_figure
+    sc = load_scene(Path(__file__).resolve().parent.parent / "worked_problems" /
+                    "fourbar_image_points.toml")
+    fig = plot_figure(sweep(sc))
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    canvas = FigureCanvasAgg(fig)
+    canvas.draw()
+    box = fig._suptitle.get_window_extent(canvas.get_renderer())
+    assert box.x0 >= 0 and box.x1 <= fig.bbox.x1 and box.y1 <= fig.bbox.y1
