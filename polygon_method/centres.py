@@ -44,6 +44,7 @@ True
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 
@@ -77,10 +78,12 @@ class Centre:
     how: str
     lines: tuple = ()
     condition: float = 1.0
+    prefix: str = "I"  # "I13" or, as some courses write it, "13"
 
     @property
     def label(self) -> str:
-        return f"I{self.i}{self.j}" if max(self.i, self.j) < 10 else f"I{self.i},{self.j}"
+        pair = f"{self.i}{self.j}" if max(self.i, self.j) < 10 else f"{self.i},{self.j}"
+        return self.prefix + pair
 
     @property
     def primary(self) -> bool:
@@ -238,9 +241,10 @@ def _cross(l1, l2, scale):
     return ("point", (p1[0] + t * d1[0], p1[1] + t * d1[1]), abs(s))
 
 
-def locate(sol) -> "Centres":
+def locate(sol, prefix: str = "I") -> "Centres":
     """Every instantaneous centre of the solved mechanism ``sol``, by Kennedy's theorem, and
-    the angular velocities by the angular-velocity-ratio theorem."""
+    the angular velocities by the angular-velocity-ratio theorem. ``prefix``: the centres
+    are labelled ``I13`` (the default) or, with ``prefix=""``, ``13``."""
     names = _body_names(sol)
     n = len(names)
     if n > MAX_BODIES:
@@ -288,7 +292,24 @@ def locate(sol) -> "Centres":
             + " (every pair of lines through known centres is the same line or lies at "
             "infinity)", step="centres")
     omegas, ratio_from = _omegas(sol, names, found)
+    if prefix != "I":
+        found = _relabelled(found, order, prefix)
     return Centres(names, found, tuple(order), omegas, ratio_from, tuple(warnings), sol)
+
+
+def _relabelled(found, order, prefix):
+    """The centres labelled with another prefix (their lines and words too)."""
+    out = {}
+    for key in order:
+        c = found[key]
+        lines = tuple((out[(a.i, a.j)], out[(b.i, b.j)]) for a, b in c.lines)
+        how = c.how
+        if lines:
+            how = (f"Kennedy: on the line {lines[0][0].label}-{lines[0][1].label} and the "
+                   f"line {lines[1][0].label}-{lines[1][1].label}") + \
+                (" (parallel: at infinity)" if c.point is None else "")
+        out[key] = dataclasses.replace(c, lines=lines, how=how, prefix=prefix)
+    return out
 
 
 def _words(pair):

@@ -149,7 +149,8 @@ def _cmd_centres(args) -> int:
     from .scene import load_scene
     from .solution import solve
 
-    print(centres_text(locate(solve(load_scene(args.scene)))))
+    prefix = "" if getattr(args, "centre_labels", "I13") == "13" else "I"
+    print(centres_text(locate(solve(load_scene(args.scene)), prefix)))
     return 0
 
 
@@ -212,7 +213,8 @@ def _cmd_draw(args) -> int:
     targets = check_outputs([(out, "-o")], protect=[args.scene])
     sol = solve(load_scene(args.scene))
     diagram = getattr(args, "diagram", None) or "all"
-    data, used, warnings = render(sol, fmt, diagram, scales)
+    prefix = "" if getattr(args, "centre_labels", "I13") == "13" else "I"
+    data, used, warnings = render(sol, fmt, diagram, scales, prefix)
     for w in list(sol.warnings) + warnings:
         print(f"warning: {w}", file=sys.stderr)
     write_outputs(targets, [(data, fmt != "svg")])
@@ -375,6 +377,8 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--scale", action="append", default=[],
                    help='e.g. "1 cm = 0.1 m/s" (may be repeated: space, velocity, '
                         'acceleration)')
+    s.add_argument("--centre-labels", choices=("I13", "13"), default="I13",
+                   help="how the centres of --diagram centres are labelled")
     s.set_defaults(func=_cmd_draw)
 
     s = sub.add_parser("sweep", help="the whole crank cycle")
@@ -398,6 +402,8 @@ def build_parser() -> argparse.ArgumentParser:
     s = sub.add_parser("centres", help="instantaneous centres (Kennedy's theorem) and the "
                        "velocities they give")
     s.add_argument("scene")
+    s.add_argument("--centre-labels", choices=("I13", "13"), default="I13",
+                   help="label the centres I13 (default) or 13, as the course writes them")
     s.set_defaults(func=_cmd_centres)
     return p
 

@@ -204,3 +204,19 @@ def test_a_centre_of_a_link_that_is_not_there(capsys, tmp_path):
                  str(answers)])
     err = capsys.readouterr().err
     assert code == 2 and "there are 4 links" in err and len(err.strip().splitlines()) == 1
+
+
+def test_centres_labelled_as_the_course_writes_them(capsys, tmp_path):
+    sol = solve(load_scene(ROOT / "worked_problems" / "fourbar_image_points.toml"))
+    plain = locate(sol, prefix="")
+    assert [plain.centres[k].label for k in plain.order] == ["12", "14", "23", "34", "13", "24"]
+    assert "on the line 12-23" in plain.centre(1, 3).how
+    path = ROOT / "worked_problems" / "fourbar_image_points.toml"
+    assert main(["centres", str(path), "--centre-labels", "13"]) == 0
+    out = capsys.readouterr().out
+    assert "  13   (" in out and "I13" not in out
+    svg = tmp_path / "c.svg"
+    assert main(["draw", str(path), "--diagram", "centres", "--centre-labels", "13", "-o",
+                 str(svg)]) == 0
+    text = svg.read_text()
+    assert 'id="centre-13"' in text and 'id="centre-I13"' not in text

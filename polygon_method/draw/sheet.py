@@ -118,13 +118,13 @@ def _panel_size(sk: _Sketch, pad=0.3):
     return (max(x1, n1) - min(x0, n0) + 2 * pad, max(y1, m1) - min(y0, m0) + 2 * pad)
 
 
-def layout(sol, diagram: str = "all", scales=None):
+def layout(sol, diagram: str = "all", scales=None, centre_prefix: str = "I"):
     """The sketches and scales of a sheet: ``[(name, scale, sketch)]``. One diagram, one
     scale everywhere: each diagram is drawn at the scale the step table states (and the
     checker's tolerance uses), unless ``--scale`` gives another; the sheet's layout, not
     the scales, changes where the three do not fit side by side (:func:`rows`)."""
     if diagram == "centres":
-        return _centres_layout(sol, scales)
+        return _centres_layout(sol, scales, centre_prefix)
     names = DIAGRAMS if diagram == "all" else (diagram,)
     if diagram not in DIAGRAMS + ("all",):
         raise PolygonMethodError(f"unknown diagram {diagram!r}; use configuration, velocity, "
@@ -159,13 +159,13 @@ def rows(sizes, width=SHEET_ALL[0] - 2 * MARGIN):
     return out
 
 
-def _centres_layout(sol, scales=None):
+def _centres_layout(sol, scales=None, prefix="I"):
     """The centres sheet: the mechanism with its centres (to scale, coarsened until the
     A4 landscape sheet holds it) and the circle diagram (not to scale)."""
     from ..centres import locate
     from .centres import centres_sketch, circle_sketch
 
-    ic = locate(sol)
+    ic = locate(sol, prefix)
     given = dict(scales or {})
     s = given.get("centres") or given.get("length")
     fixed = s is not None
@@ -190,14 +190,14 @@ def _centres_layout(sol, scales=None):
     return [("centres", s, sk), ("circle", None, circle)]
 
 
-def make_figure(sol, diagram: str = "all", scales=None):
+def make_figure(sol, diagram: str = "all", scales=None, centre_prefix: str = "I"):
     """A matplotlib Figure of the physical size of its content: one axes per diagram, each
     positioned so that one data unit is one centimetre on the page.
 
     Returns ``(figure, {diagram: Scale}, warnings)``."""
     from matplotlib.figure import Figure
 
-    panels = layout(sol, diagram, scales)
+    panels = layout(sol, diagram, scales, centre_prefix)
     sizes = [_panel_size(sk) for _, _, sk in panels]
     lines = rows(sizes) if len(panels) > 1 else [[0]]
     widths = [sum(sizes[k][0] for k in r) + GAP * (len(r) - 1) for r in lines]
@@ -226,7 +226,8 @@ def _rc():
             "path.simplify": False, "svg.image_inline": True}
 
 
-def render(sol, fmt: str = "svg", diagram: str = "all", scales=None):
+def render(sol, fmt: str = "svg", diagram: str = "all", scales=None,
+           centre_prefix: str = "I"):
     """The sheet as SVG text (deterministic: fixed hash salt, no date) or PNG/PDF bytes.
 
     Returns ``(data, {diagram: Scale}, warnings)``."""
@@ -235,7 +236,7 @@ def render(sol, fmt: str = "svg", diagram: str = "all", scales=None):
     if fmt not in FORMATS:
         raise PolygonMethodError(f"cannot draw {fmt!r}: use svg, png or pdf")
     with matplotlib.rc_context(_rc()):
-        fig, used, warnings = make_figure(sol, diagram, scales)
+        fig, used, warnings = make_figure(sol, diagram, scales, centre_prefix)
         if fmt == "svg":
             buf = io.StringIO()
             fig.savefig(buf, format="svg", metadata={"Date": None})
