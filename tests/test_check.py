@@ -105,7 +105,7 @@ def test_stated_tolerance_is_the_boundary():
     assert outside["v_B"].error == pytest.approx(0.021, rel=1e-6)
 
 
-def test_drawing_rule_is_half_a_millimetre_at_the_velocity_scale():
+def test_the_default_is_never_tighter_than_half_a_millimetre_at_the_velocity_scale():
     sc = slider_scene()
     sol = solve(sc)
     v_b = slider_closed_form(30, 300 * RPM)["v_B"]
@@ -117,9 +117,10 @@ def test_drawing_rule_is_half_a_millimetre_at_the_velocity_scale():
     band = 0.05 * s
     assert band > 0.005 * v_b  # the drawing, not the rounding floor, decides here
     ok = one(sc, "v_B", v_b + 0.98 * band, "m/s")
-    bad = one(sc, "v_B", v_b + 1.02 * band, "m/s")
-    assert ok.ok and not bad.ok
-    assert "0.05 cm" in bad.rule and f"{s:g} m/s" in bad.rule
+    assert ok.ok
+    assert ok.tolerance_abs >= band * (1 - 1e-12)
+    far = one(sc, "v_B", v_b * 1.25, "m/s")  # a quarter off: no careful drawing is
+    assert not far.ok
 
 
 def test_sense_is_checked_only_where_given():
@@ -428,3 +429,29 @@ def test_the_point_under_the_block_given_for_the_block_is_named(kind):
     v = check_answers(sol, answers, tol)[0]
     assert not v.ok and v.mistake == "coincident_for_block", v.diagnosis
     assert "under the block" in v.diagnosis
+
+
+def test_textbook_drawn_answers_pass_without_a_stated_tolerance():
+    """A careful hand drawing is a few per cent off: Khurmi & Gupta's drawn answers and five
+    plausible hand answers to the seed four-bar are right under the default tolerance,
+    while the known mistakes are still caught (the other tests of this module)."""
+    from pathlib import Path
+    from polygon_method.scene import parse_answers
+    root = Path(__file__).resolve().parent.parent / "worked_problems"
+    book = load_scene(root / "fourbar_velocity_khurmi.toml")
+    sol = solve(book)
+    answers = [a for a in book.answers]
+    vs = check_answers(sol, answers, None)  # the book's answers, no stated tolerance
+    assert sum(v.ok for v in vs) >= 0.9 * len(vs), [(v.key, v.error) for v in vs]
+    seed = load_scene(root / "fourbar_image_points.toml")
+    sol = solve(seed)
+    _, hand = parse_answers("""[answers]
+v_C = "0.395 m/s"
+omega_BC = "5.1 rad/s"
+omega_CD = "7.0 rad/s"
+a_C = "5.9 m/s^2"
+alpha_CD = "92 rad/s^2"
+""", seed)
+    vs = check_answers(sol, hand, None)
+    assert all(v.ok for v in vs), [(v.key, v.error, v.tolerance) for v in vs]
+    assert all("hand drawing" in v.rule for v in vs)

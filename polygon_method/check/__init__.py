@@ -14,7 +14,9 @@ from a read-off inherits its error (omega = v / l: ``0.05 s_v / l``; rubbing
 |w1 - w2| r: the sum of both; torque = sum(F . v) / omega: ``sum |F| 0.05 s_v / omega``).
 Where the two direction lines of a construction cross at less than 30 deg the read-off
 error grows as ``1 / (2 sin gamma)``. Never tighter than 0.5 % (three significant figures);
-values computed rather than drawn (the crank's) get 0.5 %.
+values computed rather than drawn (the crank's) get 0.5 %. For speeds, accelerations,
+omegas and alphas a simulated careful hand drawing (:mod:`.handdrawn`) decides where it
+allows more.
 
 >>> from polygon_method import parse_scene, solve
 >>> sol = solve(parse_scene('''

@@ -179,6 +179,12 @@ class Step:
         line is drawn produced, from a to x), else None."""
         return None
 
+    def drawn(self, prm, pencil, P):
+        """The step's dimensions as a hand drawing makes them: ``pencil(scale)`` gives a
+        pencil's error in length (over ``scale``); ``P`` the positions. By default a step
+        draws nothing of its own."""
+        return prm
+
     def output(self, ground):
         """What this step drives that a linkage analysis may call the output: ("rocker",
         link, pivot, point), ("slider", point), ("lever", link, pivot, free end), or None."""

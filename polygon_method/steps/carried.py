@@ -97,6 +97,11 @@ class Carried(Step):
     def dimensions(self, scene, bodies):
         return bodies.coefficients(self.link, self.p, self.q, self.point)
 
+    def drawn(self, prm, pencil, P):
+        (px, py), (qx, qy) = P[self.p], P[self.q]
+        L = ((qx - px) ** 2 + (qy - py) ** 2) ** 0.5  # the point is set out from p and q
+        return (prm[0] + pencil(L), prm[1] + pencil(L))
+
     def condition_column(self):
         return None
 

@@ -65,6 +65,9 @@ class Crank(Step):
     def dimensions(self, scene, bodies):
         return (scene.link(self.link).length,)
 
+    def drawn(self, prm, pencil, P):
+        return (prm[0] + pencil(),)
+
     def reach(self):
         return max(self.length, 1e-9)
 

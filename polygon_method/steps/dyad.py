@@ -136,6 +136,9 @@ class Dyad(Step):
         return (bodies.distance(self.link1, self.b, self.point),
                 bodies.distance(self.link2, self.d, self.point))
 
+    def drawn(self, prm, pencil, P):
+        return (prm[0] + pencil(), prm[1] + pencil())
+
     def reach(self):
         return max(self.l1, self.l2, 1e-9)
 

@@ -169,6 +169,11 @@ class SliderDyad(Step):
         (qx, qy), (ux, uy) = path.through, path.u
         return (ell, qx, qy, ux, uy)
 
+    def drawn(self, prm, pencil, P):
+        if self.path is None:
+            return (prm[0] + pencil(),)
+        return (prm[0] + pencil(), prm[1] + pencil(), prm[2] + pencil(), prm[3], prm[4])
+
     def reach(self):
         return max(self.length, 1e-9)
 

@@ -1,0 +1,151 @@
+"""A careful hand drawing of the construction, and how far it may be off: the default
+tolerance of an answer.
+
+A student draws the configuration at the scale the step table states, then each polygon at
+its own, with a pencil, a ruler and a set square: every length set out or read is off by
+about ``PENCIL_CM`` on the paper and every direction by about ``PENCIL_DEG`` (standard
+deviations). The errors are followed through the construction as it is drawn:
+
+* the configuration: each link's length, each fixed point's place and the crank angle as
+  drawn move every direction line the polygons are built from. Many drawn mechanisms are
+  evaluated at once (the plan's dimensions as arrays, a fixed seed: the same scene always
+  gets the same tolerances);
+* the polygons, step by step from their construction records: a vector set out from a
+  known image carries that image's error, plus the pencil's on its length and direction;
+  a direction line through a point is off at the found image by that point's error and
+  its direction error over the distance; two lines crossing at gamma put the image
+  ``sqrt(e1^2 + e2^2) / sin gamma`` off (a later step inherits the earlier ones);
+* the value read off: its own pencil error.
+
+The tolerance of an answer is the 95th percentile of its relative error over the drawings:
+the configuration's spread combined with 1.96 times the polygon's, never below 0.5 %.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+from ..constructions import acceleration_constructions, velocity_constructions
+from ..kinematics import evaluate
+from ..scales import diagram_scales
+
+__all__ = ["HandDrawing", "PENCIL_CM", "PENCIL_DEG", "SAMPLES"]
+
+#: a pencil's error on paper, lengths (cm) and directions (deg): standard deviations
+PENCIL_CM = 0.025
+PENCIL_DEG = 0.25
+#: configurations drawn per scene
+SAMPLES = 300
+Z95 = 1.96
+
+
+class HandDrawing:
+    """How far a careful hand drawing of one solution may be off, quantity by quantity."""
+
+    def __init__(self, sol, samples: int = SAMPLES, seed: int = 7):
+        import numpy as np
+        self.np, self.sol = np, sol
+        space, self.sv, self.sa = diagram_scales(sol)
+        self.space = space
+        rng = np.random.default_rng(seed)
+        n, plan = samples, sol.plan
+        dims = plan.dims
+        d_len = PENCIL_CM * space.per_cm
+
+        def pencil(scale=1.0):
+            return rng.normal(0.0, d_len, n) / scale
+
+        ground = {p: (x + pencil(), y + pencil()) for p, (x, y) in dims.ground.items()}
+        steps = tuple(st.drawn(prm, pencil, sol.P) for st, prm in zip(plan.steps, dims.steps))
+        theta = dims.theta + rng.normal(0.0, math.radians(PENCIL_DEG), n)
+        drawn = dataclasses.replace(dims, ground=ground, steps=steps, theta=theta)
+        with np.errstate(all="ignore"):
+            self.m = evaluate(plan, dims=drawn, array=True)
+        ok = np.ones(n, dtype=bool) if self.m.bad is None else ~self.m.bad
+        for x, y in self.m.P.values():
+            ok &= np.isfinite(x) & np.isfinite(y)
+        self.ok, self.n = ok, n
+        self.sigma = {"velocity": self._polygon(velocity_constructions(sol), sol.V, self.sv),
+                      "acceleration": self._polygon(acceleration_constructions(sol), sol.A,
+                                                    self.sa)}
+
+    # ----- the polygons, as drawn
+    def _polygon(self, cons, D, scale):
+        """point -> the standard deviation (SI) of its image as drawn, step by step."""
+        p = PENCIL_CM * scale.per_cm
+        th = math.radians(PENCIL_DEG)
+        known = [((0.0, 0.0), 0.0)]  # (image, its sigma): the pole
+
+        def sigma_at(xy):
+            best = min(known, key=lambda k: math.dist(k[0], xy))
+            return best[1] if math.dist(best[0], xy) <= 1e-9 * (1 + math.hypot(*xy)) \
+                else None
+
+        def set_out(vec):  # a vector drawn from a known image: its end's sigma
+            s0 = sigma_at(vec.start)
+            s0 = 0.0 if s0 is None else s0
+            return math.sqrt(s0 ** 2 + p ** 2 + (th * vec.magnitude) ** 2)
+
+        out = {}
+        for c in cons:
+            for g in c.given:
+                known.append((g.end, set_out(g)))
+            x = c.point
+            if c.lines:
+                offs = []
+                for ln in c.lines:
+                    s0 = sigma_at(ln.point)
+                    s0 = p if s0 is None else s0
+                    offs.append(math.hypot(s0, th * math.dist(ln.point, x)))
+                s = math.hypot(*offs) / max(c.condition, 1e-3)
+            else:  # set out directly (a crank, an image by similar triangles)
+                ends = [set_out(v) for v in c.found if math.dist(v.end, x) <= 1e-9 *
+                        (1 + math.hypot(*x))]
+                s = min(ends) if ends else p
+            known.append((x, s))
+            for v in c.found:
+                if sigma_at(v.end) is None:
+                    known.append((v.end, math.hypot(s, p)))
+        for name, xy in D.items():
+            s = sigma_at(xy)
+            out[name] = 0.0 if s is None else s
+        return out
+
+    # ----- the answers
+    def _spread(self, kind, names):
+        """(values over the drawn configurations, sigma of the polygon drawing and reading
+        for this quantity, SI)."""
+        np, m, sol = self.np, self.m, self.sol
+        sv = self.sigma["velocity"]
+        sa = self.sigma["acceleration"]
+        rv, ra = PENCIL_CM * self.sv.per_cm, PENCIL_CM * self.sa.per_cm
+        if kind in ("v", "a"):
+            s = sv if kind == "v" else sa
+            r = rv if kind == "v" else ra
+            poly = math.sqrt(sum(s.get(x, 0.0) ** 2 for x in names) + r ** 2)
+            vals = m.speed(*names) if kind == "v" else m.acceleration_magnitude(*names)
+            return vals, poly
+        if kind in ("omega", "alpha"):
+            lk = sol.scene.link("-".join(names))
+            s = sv if kind == "omega" else sa
+            r = rv if kind == "omega" else ra
+            poly = math.sqrt(s.get(lk.p, 0.0) ** 2 + s.get(lk.q, 0.0) ** 2 + r ** 2) / lk.length
+            vals = np.abs(m.omega(lk.key) if kind == "omega" else m.alpha(lk.key))
+            return vals, poly
+        return None, None
+
+    def tolerance(self, kind, names, correct):
+        """The 95th percentile of the relative error, or None where this model does not
+        cover the quantity (the drawing rule applies there)."""
+        np = self.np
+        if correct == 0 or not self.ok.any():
+            return None
+        vals, poly = self._spread(kind, names)
+        if vals is None:
+            return None
+        x = np.broadcast_to(np.asarray(vals, dtype=float), (self.n,))[self.ok]
+        config = np.abs(np.abs(x) - abs(correct))
+        total = np.sqrt(config ** 2 + (Z95 * poly) ** 2) / abs(correct)
+        total = total[np.isfinite(total)]
+        return float(np.percentile(total, 95.0)) if len(total) else None
