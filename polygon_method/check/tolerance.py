@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 
+from ..errors import PolygonMethodError
 from ..scales import DRAWING_PRECISION_CM, diagram_scales
 from .handdrawn import HandDrawing
 from ..scene import GuideSlider
@@ -47,7 +48,7 @@ class _Tolerances:
         if not hasattr(self, "_hand"):
             try:
                 self._hand = HandDrawing(self.sol)
-            except Exception:  # noqa: BLE001 - no simulation: the drawing rule applies
+            except PolygonMethodError:  # no simulation here: the drawing rule applies
                 self._hand = None
         if self._hand is None:
             return None
