@@ -168,14 +168,76 @@ def _finite(x):
     return x if isinstance(x, (int, float)) and math.isfinite(x) else None
 
 
+def _answer_files(paths):
+    """The answer files named: files as given, a directory's *.toml in order."""
+    out = []
+    for p in paths:
+        path = Path(p)
+        if path.is_dir():
+            out += sorted(str(q) for q in path.glob("*.toml"))
+        else:
+            out.append(p)
+    return out
+
+
+def _cmd_class(args, scene, sol, files) -> int:
+    """A whole class: a row per answer file, the summary, the gradebook."""
+    from .check import check_answers, tolerances
+    from .check.classroom import (Row, class_dict, class_text, gradebook_csv,
+                                  gradebook_markdown, summary_text)
+    from .scene import load_answers
+
+    book = getattr(args, "gradebook", None)
+    if book and not book.lower().endswith((".csv", ".md")):
+        raise SceneError(f"--gradebook {book}: the file must end in .csv or .md",
+                         key="--gradebook")
+    targets = check_outputs([(book, "--gradebook")], protect=[args.scene]) if book else []
+    tols = tolerances(sol)
+    rows = []
+    for f in files:
+        student = Path(f).stem
+        try:
+            tolerance, answers = load_answers(f, scene)
+            if tolerance is None:
+                tolerance = scene.tolerance
+            rows.append(Row(student, f, check_answers(sol, answers, tolerance, _tols=tols)))
+        except PolygonMethodError as exc:  # a row with its error, never the whole run
+            line = exc.one_line()
+            where = f"{printable(str(f))}: "
+            rows.append(Row(student, f, (), error=line[len(where):] if line.startswith(where)
+                            else line))
+    if getattr(args, "json", False):
+        print(json.dumps(class_dict(rows), indent=2, allow_nan=False, default=_finite))
+    else:
+        print(f"{scene.title or args.scene}: {len(files)} answer files")
+        print(class_text(rows))
+        print()
+        print(summary_text(rows))
+    if targets:
+        data = gradebook_csv(rows) if book.lower().endswith(".csv") else \
+            gradebook_markdown(rows)
+        write_outputs(targets, [(data, False)])
+    return 0
+
+
 def _cmd_check(args) -> int:
-    """``polygon-method check SCENE [ANSWERS] [--json]``: 0 all right, 1 any wrong."""
+    """``polygon-method check SCENE [ANSWERS ...] [--json] [--gradebook FILE]``: one
+    answer file (or the scene's answers): 0 all right, 1 any wrong; several, or a
+    directory: the whole class, 0."""
     from .check import check_answers, verdicts_dict, verdicts_text
     from .scene import load_answers, load_scene
     from .solution import solve
 
     scene = load_scene(args.scene)
     sol = solve(scene)
+    files = _answer_files(args.answers or [])
+    if len(files) > 1 or (args.answers and Path(args.answers[0]).is_dir()) or \
+            getattr(args, "gradebook", None):
+        if not files:
+            raise SceneError(f"no answer files in {', '.join(args.answers or ['(none)'])}",
+                             key="answers")
+        return _cmd_class(args, scene, sol, files)
+    args.answers = files[0] if files else None
     if args.answers:
         tolerance, answers = load_answers(args.answers, scene)
     else:
@@ -365,8 +427,11 @@ def build_parser() -> argparse.ArgumentParser:
 
     s = sub.add_parser("check", help="check answers against the solution")
     s.add_argument("scene")
-    s.add_argument("answers", nargs="?", help="a TOML file with an [answers] table")
+    s.add_argument("answers", nargs="*",
+                   help="TOML files with an [answers] table (several, or a directory of "
+                        "them: a whole class)")
     s.add_argument("--json", action="store_true")
+    s.add_argument("--gradebook", help="FILE.csv or FILE.md: the class's gradebook")
     s.set_defaults(func=_cmd_check)
 
     s = sub.add_parser("draw", help="true-to-scale SVG/PNG/PDF diagrams")

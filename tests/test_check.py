@@ -455,3 +455,39 @@ alpha_CD = "92 rad/s^2"
     vs = check_answers(sol, hand, None)
     assert all(v.ok for v in vs), [(v.key, v.error, v.tolerance) for v in vs]
     assert all("hand drawing" in v.rule for v in vs)
+
+
+def test_a_whole_class_at_once(tmp_path, capsys):
+    """A directory of answer files: a row each (an unreadable one is a row with its error),
+    the class summary with the questions most often wrong and the mistakes behind them, and
+    a gradebook as CSV."""
+    import csv
+    import io
+    from pathlib import Path
+
+    from polygon_method.cli import main
+    scene = Path(__file__).resolve().parent.parent / "worked_problems" / \
+        "fourbar_image_points.toml"
+    sol = solve(load_scene(scene))
+    v, w = sol.speed("C"), abs(sol.W["BC"])
+    d = tmp_path / "class"
+    d.mkdir()
+    for i in range(40):
+        (d / f"s{i:02d}.toml").write_text(f'[answers]\nv_C = "{v:.4f} m/s"\n'
+                                         f'omega_BC = "{w:.3f} rad/s"\n')
+    for i in range(3):  # rpm read as rad/s: omega = N
+        (d / f"t{i}.toml").write_text(f'[answers]\nv_C = "{v:.4f} m/s"\n'
+                                      f'omega_BC = "{w * 60 / (2 * math.pi):.3f} rad/s"\n')
+    (d / "zz.toml").write_text("answers = [\n")
+    book = tmp_path / "book.csv"
+    assert main(["check", str(scene), str(d), "--gradebook", str(book)]) == 0
+    out = capsys.readouterr().out
+    assert "43 of 44 answer files read" in out
+    assert "omega_BC: 3 of 43 students" in out
+    assert "rpm used as rad/s: 3 students" in out
+    assert "could not be read: line 1" in out or "could not be read:" in out
+    table = list(csv.DictReader(io.StringIO(book.read_text())))
+    assert len(table) == 44
+    by = {r["student"]: r for r in table}
+    assert by["s00"]["v_C"] == "right" and by["t0"]["omega_BC"].startswith("WRONG")
+    assert by["zz"]["error"] and by["zz"]["right"] == ""

@@ -54,11 +54,17 @@ from .verdicts import _NOISE_KIND, ROUNDING, UNIT_OF, Verdict, verdicts_dict, ve
 _MAGNITUDES = {"v": "a speed", "a": "an acceleration's size", "ac": "a Coriolis component's "
                "size", "rub": "a rubbing velocity"}
 
-__all__ = ["Verdict", "check_answers", "answer_tolerance", "verdicts_text",
+def tolerances(sol: Solution):
+    """The tolerances of one solution, to share among many answer files."""
+    return _Tolerances(sol)
+
+
+__all__ = ["tolerances", "Verdict", "check_answers", "answer_tolerance", "verdicts_text",
            "verdicts_dict", "ROUNDING"]
 
 
-def check_answers(sol: Solution, answers=None, tolerance: float | None = None) -> tuple:
+def check_answers(sol: Solution, answers=None, tolerance: float | None = None,
+                  _tols=None) -> tuple:
     """Check ``answers`` (default: the scene's ``[answers]``) against ``sol``.
 
     Parameters
@@ -77,7 +83,7 @@ def check_answers(sol: Solution, answers=None, tolerance: float | None = None) -
         if tolerance is None:
             tolerance = sol.scene.tolerance
     answers = tuple(answers)
-    tols = _Tolerances(sol)
+    tols = _tols or _Tolerances(sol)  # (one for a whole class: the same drawings)
     diag = _Diagnoser(sol, answers)
     out = []
     centres = []

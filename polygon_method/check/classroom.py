@@ -1,0 +1,176 @@
+"""A whole class at once: one row per student's answer file, a gradebook (CSV or
+Markdown) and, first for the teacher, which questions were most often wrong and which
+mistakes explain them.
+
+>>> rows = [Row("ann", "ann.toml", (_v("v_C", True),)),
+...         Row("bob", "bob.toml", (_v("v_C", False, "rpm_as_rad_s"),)),
+...         Row("cy", "cy.toml", (), error="line 3: unknown answer key")]
+>>> print(summary_text(rows).splitlines()[0])
+2 of 3 answer files read (1 could not be: see its row); 1 of 2 answers right
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+from collections import Counter
+from dataclasses import dataclass
+
+__all__ = ["Row", "class_text", "summary_text", "gradebook_csv", "gradebook_markdown",
+           "class_dict", "MISTAKE_WORDS"]
+
+#: the mistakes in a teacher's words (the codes ``check`` names)
+MISTAKE_WORDS = {
+    "rpm_as_rad_s": "rpm used as rad/s",
+    "rad_s_as_rpm": "rad/s used as rpm",
+    "rps_as_rad_s": "rev/s used as rad/s",
+    "rad_s_as_rps": "rad/s used as rev/s",
+    "rps_rpm": "rev/s and rpm confused",
+    "diameter_as_radius": "a diameter used as a radius",
+    "radius_as_diameter": "a radius used as a diameter",
+    "relative_for_absolute": "a relative value given for an absolute one",
+    "absolute_for_relative": "an absolute value given for a relative one",
+    "other_branch": "the other assembly of the linkage",
+    "sum_for_difference": "a sum of angular velocities where the difference applies",
+    "difference_for_sum": "a difference of angular velocities where the sum applies",
+    "wrong_omega_in_power_balance": "the wrong omega in the power balance",
+    "coincident_for_block": "the guide's point under a block given for the block",
+    "negative_magnitude": "a negative magnitude",
+    "component_only": "one acceleration component only",
+    "total_for_tangential": "the total acceleration for its tangential component",
+    "not_divided_by_length": "omega or alpha not divided by the length",
+    "absolute_over_length": "an absolute velocity over a link's length",
+    "links_not_at_pin": "omegas of links that do not meet at the pin",
+    "one_link_only": "one link's omega only at a pin",
+    "one_pair": "one pair of bodies only at a pin",
+    "force_times_speed": "F x v without the angle between them",
+    "coriolis_factor": "the Coriolis component without its factor 2",
+    "angle_in_radians": "the crank angle taken in radians",
+    "deg_rad": "degrees and radians confused",
+    "mm_m": "millimetres and metres confused",
+    "decimal_point": "the decimal point misplaced",
+    "transcription_slip": "a slip of the pen",
+    "carried_error": "an error carried from earlier answers",
+    "another_centre": "the centre of other links",
+    "centre_at_infinity": "a finite point for a centre at infinity",
+}
+
+
+@dataclass(frozen=True)
+class Row:
+    """One student's answer file: its verdicts, or the error that kept it from being read."""
+
+    student: str
+    file: str
+    verdicts: tuple
+    error: str | None = None
+
+    @property
+    def right(self) -> int:
+        return sum(v.ok for v in self.verdicts)
+
+
+def _v(key, ok, mistake=None):  # a verdict for the doctest
+    from .verdicts import Verdict
+    return Verdict(key, "", 0.0, 0.0, "m/s", 0.0, 0.0, 0.0, "", ok, False, mistake)
+
+
+def _words(code):
+    return MISTAKE_WORDS.get(code, (code or "").replace("_", " "))
+
+
+def _keys(rows):
+    keys = []
+    for r in rows:
+        for v in r.verdicts:
+            if v.key not in keys:
+                keys.append(v.key)
+    return keys
+
+
+def class_text(rows) -> str:
+    """A row per student: right of total, and the wrong answers with their mistakes."""
+    out = []
+    w = max([len(r.student) for r in rows] + [7])
+    out.append(f"{'student':<{w}}  {'right':>9}  wrong answers (mistake)")
+    for r in rows:
+        if r.error:
+            out.append(f"{r.student:<{w}}  {'-':>9}  could not be read: {r.error}")
+            continue
+        wrong = [f"{v.key} ({_words(v.mistake) if v.mistake else 'unexplained'})"
+                 for v in r.verdicts if not v.ok]
+        out.append(f"{r.student:<{w}}  {f'{r.right} of {len(r.verdicts)}':>9}  "
+                   + ("; ".join(wrong) if wrong else "-"))
+    return "\n".join(out)
+
+
+def summary_text(rows) -> str:
+    """The class summary: how many files were read, the questions most often wrong, the
+    mistakes that explain them (most students first)."""
+    read = [r for r in rows if r.error is None]
+    total = sum(len(r.verdicts) for r in read)
+    right = sum(r.right for r in read)
+    out = [f"{len(read)} of {len(rows)} answer files read"
+           + (f" ({len(rows) - len(read)} could not be: see its row)" if len(read) < len(rows)
+              else "") + f"; {right} of {total} answers right"]
+    wrong_by_key = Counter(v.key for r in read for v in r.verdicts if not v.ok)
+    asked = Counter(v.key for r in read for v in r.verdicts)
+    if wrong_by_key:
+        out.append("most often wrong:")
+        for key, n in sorted(wrong_by_key.items(), key=lambda kv: (-kv[1], kv[0])):
+            out.append(f"  {key}: {n} of {asked[key]} students")
+    students_by_mistake = Counter()
+    for r in read:
+        for code in {v.mistake for v in r.verdicts if not v.ok and v.mistake}:
+            students_by_mistake[code] += 1
+    if students_by_mistake:
+        out.append("mistakes behind them:")
+        for code, n in sorted(students_by_mistake.items(), key=lambda kv: (-kv[1], kv[0])):
+            out.append(f"  {_words(code)}: {n} student{'s' if n != 1 else ''}")
+    return "\n".join(out)
+
+
+def _table(rows):
+    keys = _keys(rows)
+    head = ["student", "file"] + keys + ["right", "of", "error"]
+    body = []
+    for r in rows:
+        by_key = {v.key: v for v in r.verdicts}
+        cells = [r.student, r.file]
+        for k in keys:
+            v = by_key.get(k)
+            cells.append("" if v is None else ("right" if v.ok else
+                                               f"WRONG ({_words(v.mistake)})" if v.mistake
+                                               else "WRONG"))
+        cells += [str(r.right) if r.error is None else "", str(len(r.verdicts))
+                  if r.error is None else "", r.error or ""]
+        body.append(cells)
+    return head, body
+
+
+def gradebook_csv(rows) -> str:
+    head, body = _table(rows)
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(head)
+    w.writerows(body)
+    return buf.getvalue()
+
+
+def gradebook_markdown(rows) -> str:
+    head, body = _table(rows)
+
+    def cell(x):
+        return str(x).replace("|", "\\|")
+
+    out = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    out += ["| " + " | ".join(cell(c) for c in cells) + " |" for cells in body]
+    return "\n".join(out) + "\n\n" + summary_text(rows) + "\n"
+
+
+def class_dict(rows) -> dict:
+    """The class for ``check --json``."""
+    return {"students": [{"student": r.student, "file": r.file, "error": r.error,
+                          "right": r.right, "answers": [v.to_dict() for v in r.verdicts]}
+                         for r in rows],
+            "summary": summary_text(rows).splitlines()}
