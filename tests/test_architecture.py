@@ -160,3 +160,45 @@ def test_a_solution_pickles_and_its_plan_still_solves():
     m = evaluate(back.plan)
     assert m.A["E"] == sol.A["E"]
     assert pickle.loads(pickle.dumps(sc)) == sc
+
+
+def test_a_new_step_kind_is_one_module_and_one_line(monkeypatch):
+    """A kind defined here (an RRR dyad under another name, found before the dyad) and
+    registered with one line in the tiers: the plan uses it, and solving, the step table,
+    the drawings and checking answers work without a change anywhere else."""
+    from dataclasses import dataclass
+
+    from polygon_method import plan as plan_module
+    from polygon_method.check import check_answers
+    from polygon_method.draw import render
+    from polygon_method.scene import parse_answers
+    from polygon_method.steps import TIERS, dyad
+    from polygon_method.steptable import steps_text
+
+    @dataclass(frozen=True)
+    class Elbow(dyad.Dyad):
+        kind = "elbow"
+
+        @property
+        def title(self):
+            return f"elbow {self.link1}, {self.link2} at {self.point}"
+
+    def recognise(g, name):
+        st = dyad.recognise(g, name)
+        return None if st is None else Elbow(**{f: getattr(st, f) for f in
+                                               st.__dataclass_fields__})
+
+    tiers = ((TIERS[0][0], TIERS[0][1], recognise),) + TIERS[1:]  # the one line
+    monkeypatch.setattr(plan_module, "TIERS", tiers)
+    monkeypatch.setattr(plan_module, "_BY_ID", {})
+    monkeypatch.setattr(plan_module, "_BY_CONTENT", {})
+    sc = parse_scene(FOURBAR)
+    sol = solve(sc)
+    assert [st.kind for st in sol.plan.steps] == ["crank", "elbow", "carried"]
+    ex, ey = _fourbar(66, 56)
+    assert (sol.P["C"][0] * 1e3, sol.P["C"][1] * 1e3) == pytest.approx((ex, ey), rel=1e-12)
+    assert "elbow BC, CD at C" in steps_text(sol)
+    svg, _, _ = render(sol, "svg", "all")
+    assert "velocity-line-1-0" in svg
+    _, answers = parse_answers(f'[answers]\nv_C = "{sol.speed("C"):.4f} m/s"\n', sc)
+    assert check_answers(sol, answers, None)[0].ok
