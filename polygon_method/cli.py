@@ -104,12 +104,13 @@ def check_outputs(paths, protect=()) -> list:
 
 
 def write_outputs(targets, datas) -> None:
-    """Write every output or none: each staged beside its file first, then all renamed into
-    place (special files last, written straight)."""
+    """Write every output or none: each regular file staged beside itself first; then the
+    special files (a device, a pipe: written straight, so the first that fails stops
+    everything before any file is replaced); then the staged files renamed into place."""
     try:
         for t, (data, binary) in zip(targets, datas):
             t.stage(data, binary)
-        for t in sorted(targets, key=lambda t: t.special):
+        for t in sorted(targets, key=lambda t: not t.special):
             t.commit()
     finally:
         for t in targets:

@@ -118,3 +118,78 @@ def test_a_full_standard_output_is_one_line():
                            stdout=full, stderr=subprocess.PIPE, text=True, cwd=ROOT)
     line = one_line_refusal(p.returncode, p.stderr)
     assert "No space left" in line
+
+
+from hypothesis import HealthCheck, given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+KINDS = ["new", "existing", "link", "directory", "missing_dir", "scene", "dev_full"]
+
+
+def _make(kind, tmp, name, scene):
+    if kind == "new":
+        return tmp / f"{name}"
+    if kind == "existing":
+        p = tmp / f"{name}"
+        p.write_text("keep\n")
+        return p
+    if kind == "link":
+        target = tmp / f"target-{name}"
+        target.write_text("keep\n")
+        p = tmp / f"{name}"
+        p.symlink_to(target.name)
+        return p
+    if kind == "directory":
+        p = tmp / f"{name}"
+        p.mkdir()
+        return p
+    if kind == "missing_dir":
+        return tmp / "nowhere" / f"{name}"
+    if kind == "scene":
+        return scene
+    return Path("/dev/full")
+
+
+@settings(max_examples=60, deadline=None,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
+@given(csv_kind=st.sampled_from(KINDS), plot_kind=st.sampled_from(KINDS + [None]))
+def test_fuzz_output_paths(tmp_path_factory, csv_kind, plot_kind):
+    """Any mix of output paths: exit 0 with every output written, or exit 2 with one line
+    and nothing of the user's destroyed or half-written: regular files keep their text,
+    links stay links, directories stay directories, no temporary file is left."""
+    if "dev_full" in (csv_kind, plot_kind) and not Path("/dev/full").exists():
+        return
+    tmp = tmp_path_factory.mktemp("out")
+    scene = tmp / "scene.toml"
+    shutil.copy(SCENE, scene)
+    before = scene.read_bytes()
+    csv_path = _make(csv_kind, tmp, "a.csv", scene)
+    argv = [sys.executable, "-m", "polygon_method", "sweep", str(scene), "--steps", "12",
+            "--csv", str(csv_path)]
+    plot_path = None
+    if plot_kind is not None:
+        plot_path = _make(plot_kind, tmp, "p.svg", scene)
+        if plot_kind == "scene":
+            plot_path = scene
+        argv += ["--plot", str(plot_path)]
+    snapshot = {p: (p.is_symlink(), p.is_dir(), p.read_text() if p.is_file() else None)
+                for p in tmp.rglob("*")}
+    run = subprocess.run(argv, capture_output=True, text=True, cwd=ROOT)
+    assert run.returncode in (0, 2), run.stderr
+    assert scene.read_bytes() == before
+    leftovers = [p for p in tmp.rglob(".*.tmp")]
+    assert not leftovers, leftovers
+    if run.returncode == 2:
+        line = one_line_refusal(run.returncode, run.stderr)
+        assert line
+        for p, (link, is_dir, text) in snapshot.items():  # nothing changed
+            assert p.is_symlink() == link and p.is_dir() == is_dir
+            if text is not None and not link:
+                assert p.read_text() == text, p
+        return
+    for p, kind in ((csv_path, csv_kind), (plot_path, plot_kind)):
+        if p is None or kind == "dev_full":
+            continue
+        if kind == "link":
+            assert p.is_symlink()
+        assert p.is_file() and p.stat().st_size > 0
