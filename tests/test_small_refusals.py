@@ -76,3 +76,14 @@ def test_errors_the_plan_finds_name_the_line(tmp_path):
     with pytest.raises(SceneError) as err:
         solve(load_scene(path))
     assert "[links] BD (line 9)" in err.value.one_line()
+
+
+def test_dotted_keys_are_located_too(tmp_path):
+    from polygon_method import load_scene
+    path = tmp_path / "dotted.toml"
+    path.write_text('ground.A = [0, 0]\nground.D = [100, 0]\nlinks.AB = 50\nlinks.BC = -66\n'
+                    'links.CD = 56\ninput.crank = "AB"\ninput.angle = 60\n'
+                    'input.speed = "10.5 rad/s cw"\n')
+    with pytest.raises(SceneError) as err:
+        load_scene(path)
+    assert "[links] BC (line 4)" in err.value.one_line()

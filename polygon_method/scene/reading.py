@@ -99,6 +99,12 @@ def line_of(lines, table: str | None, key: str | None = None):
         if key is not None and current == table:
             if re.match(rf"^\s*\"?{re.escape(key)}\"?\s*=", line):
                 return i
+    if key is not None and table:  # a dotted key: links.BC = 66, or input.angle = 30
+        dotted = re.compile(rf"^\s*\"?{re.escape(table)}\"?\s*\.\s*\"?{re.escape(key)}"
+                            rf"\"?\s*=")
+        for i, line in enumerate(lines, 1):
+            if dotted.match(line):
+                return i
     return None
 
 
