@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["rubbing_at", "pin_rubbing", "largest", "power_terms", "input_torque", "transmission_angle"]
+__all__ = ["rubbing_at", "pin_rubbing", "rubbing_of_pins", "largest", "power_terms", "input_torque", "transmission_angle"]
 
 
 def rubbing_at(pin, W, radius) -> tuple:
@@ -31,6 +31,24 @@ def pin_rubbing(plan, W, radii) -> dict:
     """pin -> :func:`rubbing_at` for every sized pin (the pair keys are ``plan.pins``'
     "a|b" names)."""
     return {pin[0]: rubbing_at(pin, W, radii[pin[0]]) for pin in plan.pins}
+
+
+def rubbing_of_pins(pins, W, radii) -> list:
+    """[(pin, radius, values, largest)] for every sized pin of one instant (floats): the
+    values of :func:`rubbing_at`, in one pass."""
+    w = W.get
+    out = []
+    for pin in pins:
+        r = radii[pin[0]]
+        pairs = pin[5]
+        if len(pairs) == 1:  # a pin of two bodies (the usual one)
+            (a, b), = pairs
+            v = abs(w(a, 0.0) - w(b, 0.0)) * r
+            out.append((pin, r, (v,), v))
+        else:
+            vs = tuple([abs(w(a, 0.0) - w(b, 0.0)) * r for a, b in pairs])
+            out.append((pin, r, vs, max(vs) if vs else 0.0))
+    return out
 
 
 def largest(values):

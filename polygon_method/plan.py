@@ -40,8 +40,7 @@ import math
 import weakref
 from dataclasses import dataclass, field, replace
 
-from .errors import (TOL, AssemblyError, MobilityError, PolygonMethodError, SceneError,
-                     SingularStepError)
+from .errors import TOL, AssemblyError, MobilityError, PolygonMethodError, SceneError
 from .numbers import in_units
 from .scene import FixedPath, GuideSlider, Scene, key_line
 from .steps import TIERS, Carried, Context, Crank, Dyad, SliderDyad, SlottedLink, State
@@ -212,7 +211,10 @@ class Plan:
         that cannot assemble, or whose condition is below ``TOL.singular``, raises.
         """
         if dims is None:
-            ground, phases = self.ground, self._phases
+            ground = self.ground
+            if upto >= 2 and not ctx.array:  # one instant: each step's phases in a row
+                return self._run_instant(ctx, ground)
+            phases = self._phases or self._bind_own()
         else:
             ground, phases = dims.ground, self.bind(dims)
         zero = self._zero
@@ -225,7 +227,7 @@ class Plan:
                 cond = m.cond
                 for i, st in self._checked:
                     if cond[i] < TOL.singular:
-                        raise SingularStepError(st.singular_why(cond[i]), step=st.label)
+                        raise st.singular(cond[i])
             if upto >= 1:
                 for f in phases[1]:
                     f(m)
@@ -236,10 +238,25 @@ class Plan:
             raise exc.located(self.scene.file)
         return m
 
-    def bind(self, dims: Dims) -> tuple:
-        """(positions, velocities, accelerations): each the steps' phase functions, in
-        order, for ``dims``."""
-        bound, steps, prms, i = [], self.steps, dims.steps, 0
+    def _run_instant(self, ctx, ground):
+        """All three phases at the plan's own dimensions for one instant (floats): each
+        step's position, check, velocity and acceleration in a row (``bind_instant``), the
+        same formulas with fewer calls. A step that cannot assemble, or is singular, raises
+        before any later step is placed."""
+        zero = self._zero
+        fixed = self.fixed_links
+        m = State(dict(ground), dict(zero), dict(zero), dict(fixed), dict(fixed), {}, ctx)
+        try:
+            for f in self._instant or self._bind_own_instant():
+                f(m)
+        except PolygonMethodError as exc:  # name the scene file in the one-line message
+            raise exc.located(self.scene.file)
+        return m
+
+    def _groups(self, dims: Dims):
+        """The steps in runs that a kind binds together (``group_key``), with their
+        dimensions."""
+        steps, prms, i = self.steps, dims.steps, 0
         while i < len(steps):
             st, j = steps[i], i + 1
             key = st.group_key
@@ -247,16 +264,33 @@ class Plan:
                 while j < len(steps) and type(steps[j]) is type(st) and \
                         steps[j].group_key == key:
                     j += 1
-            if j - i > 1:
-                bound.append(type(st).bind_group(steps[i:j], prms[i:j]))
-            else:
-                bound.append(st.bind(prms[i]))
+            yield steps[i:j], prms[i:j]
             i = j
+
+    def bind(self, dims: Dims) -> tuple:
+        """(positions, velocities, accelerations): each the steps' phase functions, in
+        order, for ``dims``."""
+        bound = [type(g[0]).bind_group(g, p) if len(g) > 1 else g[0].bind(p[0])
+                 for g, p in self._groups(dims)]
         return tuple(tuple(b[k] for b in bound) for k in range(3))
+
+    def bind_instant(self, dims: Dims) -> tuple:
+        """One function per step (or group of steps) doing its three phases in a row, for
+        one instant at ``dims`` (floats)."""
+        return tuple(type(g[0]).bind_group_instant(g, p) if len(g) > 1
+                     else g[0].bind_instant(p[0]) for g, p in self._groups(dims))
+
+    def _bind_own(self):
+        object.__setattr__(self, "_phases", self.bind(self.dims))
+        return self._phases
+
+    def _bind_own_instant(self):
+        object.__setattr__(self, "_instant", self.bind_instant(self.dims))
+        return self._instant
 
     def __getstate__(self):  # the bound phases are made again, not pickled
         return {k: v for k, v in self.__dict__.items()
-                if k not in ("_zero", "_phases", "_checked")}
+                if k not in ("_zero", "_phases", "_instant", "_checked")}
 
     def __setstate__(self, state):
         for k, v in state.items():
@@ -267,7 +301,10 @@ class Plan:
         # what every evaluation at the plan's own dimensions starts from (made anew by
         # dataclasses.replace, so a plan with other steps never runs stale functions)
         object.__setattr__(self, "_zero", {name: (0.0, 0.0) for name in self.ground})
-        object.__setattr__(self, "_phases", self.bind(self.dims) if self.dims else None)
+        # the bound phases, made when first needed (a plan that solves one instant binds
+        # only its one-instant functions)
+        object.__setattr__(self, "_phases", None)
+        object.__setattr__(self, "_instant", None)
         object.__setattr__(self, "_checked", tuple((st.index, st) for st in self.steps
                                                    if st.branching))
 

@@ -21,7 +21,7 @@
 from __future__ import annotations
 
 from .derived import input_torque as _torque
-from .derived import power_terms, rubbing_at
+from .derived import power_terms, rubbing_of_pins
 from .centres import JSON_BODIES, centres_dict, locate
 from .errors import TOL, PolygonMethodError
 from .kinematics import Motion, hypot
@@ -41,10 +41,9 @@ class PinRubbing:
 
     __slots__ = ("point", "radius", "values", "rubbing_velocity", "_pin", "_W")
 
-    def __init__(self, point, radius, pin, W):
-        self.point, self.radius, self._pin, self._W = point, radius, pin, W
-        self.values = v = rubbing_at(pin, W, radius)
-        self.rubbing_velocity = max(v) if v else 0.0
+    def __init__(self, pin, radius, values, largest, W):
+        self.point, self.radius, self._pin, self._W = pin[0], radius, pin, W
+        self.values, self.rubbing_velocity = values, largest
 
     @property
     def pairs(self) -> dict:
@@ -97,11 +96,10 @@ class Solution(Motion):
         c = self._cache
         r = c.get("rubbing")
         if r is None:
-            W, radii = self.W, self.plan.dims.radii
-            r = c["rubbing"] = {}
-            for pin in self.plan.pins:
-                p = pin[0]
-                r[p] = PinRubbing(p, radii[p], pin, W)
+            W = self.W
+            r = c["rubbing"] = {pin[0]: PinRubbing(pin, radius, values, largest, W)
+                                for pin, radius, values, largest
+                                in rubbing_of_pins(self.plan.pins, W, self.plan.dims.radii)}
         return r
 
     @property

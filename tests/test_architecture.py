@@ -202,3 +202,42 @@ def test_a_new_step_kind_is_one_module_and_one_line(monkeypatch):
     assert "velocity-line-1-0" in svg
     _, answers = parse_answers(f'[answers]\nv_C = "{sol.speed("C"):.4f} m/s"\n', sc)
     assert check_answers(sol, answers, None)[0].ok
+
+
+def _worked():
+    root = Path(__file__).resolve().parent.parent / "worked_problems"
+    return sorted(root.glob("*.toml"))
+
+
+@pytest.mark.parametrize("path", _worked(), ids=lambda p: p.stem)
+def test_one_instant_path_is_the_phased_path_to_the_last_bit(path):
+    """A solve runs each step's phases in a row (``bind_instant``); a plan given its
+    dimensions runs all positions, then all velocities, then all accelerations. The two
+    call the same formulas, so every number is the same to the last bit."""
+    from polygon_method import load_scene
+    from polygon_method.plan import Context
+
+    scene = load_scene(path)
+    sol = solve(scene)
+    plan = compile_plan(scene)
+    inp = scene.input
+    m = plan.run(Context(inp.angle, inp.omega, inp.alpha), plan.dims)
+    for mine, theirs in ((sol.P, m.P), (sol.V, m.V), (sol.A, m.A), (sol.W, m.W),
+                         (sol.Al, m.Al), (sol.S, m.S), (sol.cond, m.cond)):
+        assert mine == theirs
+
+
+def test_one_instant_path_refuses_a_singular_step_as_the_phased_path_does():
+    """At a toggle (condition below the refusal band) both paths raise the same error."""
+    from polygon_method.errors import SingularStepError
+    from polygon_method.plan import Context
+
+    # crank AB along AD: B = (50, 0), |BD| = 50 and BC + |BD| = CD, so C lies on the line BD
+    sc = parse_scene(FOURBAR.replace("angle = 60", "angle = 0").replace("CD = 56", "CD = 116"))
+    with pytest.raises(SingularStepError) as one:
+        solve(sc)
+    plan = compile_plan(sc)
+    inp = sc.input
+    with pytest.raises(SingularStepError) as other:
+        plan.run(Context(inp.angle, inp.omega, inp.alpha), plan.dims)
+    assert str(one.value) == str(other.value)

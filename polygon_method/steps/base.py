@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..errors import TOL, AssemblyError
+from ..errors import TOL, AssemblyError, SingularStepError
 
 __all__ = ["Context", "State", "Step", "Vector", "DirectionLine", "Construction",
            "image_label", "pole_text", "unit", "sub", "add", "perp"]
@@ -119,6 +119,50 @@ class Step:
         ``prm``, each a function of a :class:`State` that fills in what the step finds. They
         call the kind's module-level formulas, which take floats or arrays alike."""
         raise NotImplementedError
+
+    def bind_instant(self, prm):
+        """One function of a :class:`State` for one instant (floats): the step's position,
+        the check of its condition (a branching step below ``TOL.singular`` raises), its
+        velocity and its acceleration, in a row. By default the three phases of
+        :meth:`bind`; a kind may give one that passes its intermediates from phase to phase,
+        calling the same module-level formulas (the numbers are the same to the last bit)."""
+        position, velocity, acceleration = self.bind(prm)
+        if not self.branching:
+            def instant(m):
+                position(m)
+                velocity(m)
+                acceleration(m)
+            return instant
+        i, step = self.index, self
+
+        def instant(m):
+            position(m)
+            c = m.cond[i]
+            if c < TOL.singular:
+                raise step.singular(c)
+            velocity(m)
+            acceleration(m)
+        return instant
+
+    @classmethod
+    def bind_group_instant(cls, steps, prms):
+        """:meth:`bind_instant` for steps bound together (``group_key``): by default the
+        three phases of ``bind_group`` in a row."""
+        position, velocity, acceleration = cls.bind_group(steps, prms)
+        checked = tuple(st for st in steps if st.branching)
+
+        def instant(m):
+            position(m)
+            for st in checked:
+                if m.cond[st.index] < TOL.singular:
+                    raise st.singular(m.cond[st.index])
+            velocity(m)
+            acceleration(m)
+        return instant
+
+    def singular(self, c):
+        """The error of this step at a condition ``c`` below ``TOL.singular``."""
+        return SingularStepError(self.singular_why(c), step=self.label)
 
     def positions(self, P, ctx):
         """Place this step's point into the dict ``P`` (one step alone, at the plan's own

@@ -167,6 +167,31 @@ class Carried(Step):
 
         return position, velocity, acceleration
 
+    def bind_instant(self, prm):
+        """The three phases in a row for one instant (the same formula, see ``bind``)."""
+        return Carried.bind_group_instant((self,), (prm,))
+
+    @staticmethod
+    def bind_group_instant(steps, prms):
+        """The three phases of ``bind_group`` in a row, for one instant."""
+        p, q = steps[0].p, steps[0].q
+        items = tuple((st.point, st.index, prm[0], prm[1]) for st, prm in zip(steps, prms))
+        scalar = all(isinstance(v, (int, float)) for it in items for v in it[2:])
+        img = _image if scalar else image
+
+        def instant(m):
+            P, V, A, cond = m.P, m.V, m.A, m.cond
+            (px, py), (qx, qy) = P[p], P[q]
+            (vpx, vpy), (vqx, vqy) = V[p], V[q]
+            (apx, apy), (aqx, aqy) = A[p], A[q]
+            for X, i, lam, mu in items:
+                P[X] = img(px, py, qx, qy, lam, mu)
+                cond[i] = 1.0
+                V[X] = img(vpx, vpy, vqx, vqy, lam, mu)
+                A[X] = img(apx, apy, aqx, aqy, lam, mu)
+
+        return instant
+
     def produced(self):
         if self.mu != 0 or 0.0 <= self.lam <= 1.0:
             return None

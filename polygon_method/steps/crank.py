@@ -103,6 +103,29 @@ class Crank(Step):
 
         return position, velocity_, acceleration_
 
+    def bind_instant(self, prm):
+        """The three phases in a row for one instant (the same formulas, see ``bind``)."""
+        O, T, link, i, r = self.pivot, self.tip, self.link, self.index, prm[0]
+
+        def instant(m):
+            ctx, P = m.ctx, m.P
+            ox, oy = P[O]
+            tx, ty = ox + r * ctx.cos(ctx.theta), oy + r * ctx.sin(ctx.theta)
+            P[T] = (tx, ty)
+            m.cond[i] = 1.0
+            omega, alpha = ctx.omega, ctx.alpha
+            rx, ry = tx - ox, ty - oy
+            vox, voy = m.V[O]
+            vx, vy = velocity(rx, ry, omega)
+            m.W[link] = omega
+            m.V[T] = (vox + vx, voy + vy)
+            aox, aoy = m.A[O]
+            ax, ay = acceleration(rx, ry, omega, alpha)
+            m.Al[link] = alpha
+            m.A[T] = (aox + ax, aoy + ay)
+
+        return instant
+
     # ----- words
     def bodies(self):
         """The bodies this step sets moving, in the textbook's numbering order."""

@@ -184,6 +184,34 @@ class Dyad(Step):
 
         return position, velocity_, acceleration_
 
+    def bind_instant(self, prm):
+        """The three phases in a row for one instant (the same formulas, see ``bind``)."""
+        X, B, D, j1, j2, i = self.point, self.b, self.d, self.link1, self.link2, self.index
+        l1, l2, sigma, step = prm[0], prm[1], self.sigma, self
+
+        def instant(m):
+            P, V, A, W, Al = m.P, m.V, m.A, m.W, m.Al
+            (bx, by), (dx, dy) = P[B], P[D]
+            x, y, c = place(bx, by, dx, dy, l1, l2, sigma, m.ctx, step)
+            P[X] = (x, y)
+            m.cond[i] = c
+            if c < TOL.singular:
+                raise step.singular(c)
+            r1x, r1y, r2x, r2y = x - bx, y - by, x - dx, y - dy
+            d = r1x * r2y - r1y * r2x
+            (vbx, vby), (vdx, vdy) = V[B], V[D]
+            w1, w2, vx, vy = velocity(r1x, r1y, r2x, r2y, vbx, vby, vdx, vdy, d)
+            W[j1] = w1
+            W[j2] = w2
+            V[X] = (vx, vy)
+            (abx, aby), (adx, ady) = A[B], A[D]
+            al1, al2, ax, ay = acceleration(r1x, r1y, r2x, r2y, w1, w2, abx, aby, adx, ady, d)
+            Al[j1] = al1
+            Al[j2] = al2
+            A[X] = (ax, ay)
+
+        return instant
+
     # ----- failures and words
     def coincident(self):
         if self.l1 == self.l2:
