@@ -106,7 +106,8 @@ def methods_for(scene, quick, peer_fns):
 def sweep_per_position(scene, n):
     """The production kernels on a whole sweep (numpy): time per position."""
     import numpy as np
-    from polygon_method.plan import Context, compile_plan
+    from polygon_method.compiler import compile_plan
+    from polygon_method.plan import Context
 
     plan = compile_plan(scene)
     inp = scene.input

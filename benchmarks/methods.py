@@ -52,7 +52,8 @@ import math
 from dataclasses import dataclass, field
 
 from polygon_method.errors import AssemblyError, PolygonMethodError, SingularStepError
-from polygon_method.plan import Carried, Context, Crank, Dyad, SliderDyad, SlottedLink, compile_plan
+from polygon_method.compiler import compile_plan
+from polygon_method.plan import Carried, Context, Crank, Dyad, SliderDyad, SlottedLink
 from polygon_method.scene import FixedPath, Scene
 
 __all__ = ["Kinematics", "METHODS", "production", "shapely_polygons", "algebraic_fourbar",

@@ -91,7 +91,7 @@ speed = "20 rad/s ccw"
 
 def bench_single(repeat):
     from polygon_method import load_scene, parse_scene, solve
-    from polygon_method import plan as plan_module
+    from polygon_method import compiler as plan_module
 
     scene = load_scene(IMAGE_POINTS)
     solve(scene)  # compiles and caches the plan

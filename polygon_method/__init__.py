@@ -21,7 +21,8 @@
 
 from .errors import (AssemblyError, MobilityError, PolygonMethodError, SceneError,
                      SingularStepError)
-from .plan import Plan, compile_plan
+from .compiler import compile_plan
+from .plan import Plan
 from .scene import Scene, load_scene, parse_scene
 from .solution import Solution, solve
 

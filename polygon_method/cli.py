@@ -136,7 +136,7 @@ def _cmd_solve(args) -> int:
 
 
 def _cmd_plan(args) -> int:
-    from .plan import compile_plan
+    from .compiler import compile_plan
     from .scene import load_scene
 
     print(compile_plan(load_scene(args.scene)))

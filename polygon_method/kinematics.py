@@ -8,7 +8,7 @@ or many mechanisms of one shape). Everything derived (rubbing, torque, transmiss
 angle) is computed from it (:mod:`polygon_method.derived`).
 
 >>> from polygon_method.scene import parse_scene
->>> from polygon_method.plan import compile_plan
+>>> from polygon_method.compiler import compile_plan
 >>> sc = parse_scene('''
 ... [ground]
 ... O = [0, 0]

@@ -26,7 +26,8 @@ from .centres import JSON_BODIES, centres_dict, locate
 from .errors import TOL, PolygonMethodError
 from .kinematics import Motion, hypot
 from .numbers import fmt_angular, sense  # noqa: F401  (re-exported)
-from .plan import Context, compile_plan
+from .compiler import compile_plan
+from .plan import Context
 from .scene import FixedPath, Scene
 
 __all__ = ["solve", "Solution", "PinRubbing", "sense", "fmt_angular"]

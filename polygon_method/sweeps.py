@@ -28,7 +28,7 @@ import numpy as np
 from .derived import input_torque, largest, pin_rubbing
 from .errors import TOL, SceneError
 from .kinematics import Motion
-from .plan import compile_plan
+from .compiler import compile_plan
 from .scene import Scene
 from .tracking import CHUNK, Domain, Sweeper, _motion, run_arrays, valid_mask
 

@@ -30,7 +30,8 @@ import numpy as np
 
 from .errors import TOL, SingularStepError
 from .kinematics import Motion
-from .plan import Context, compile_plan
+from .compiler import compile_plan
+from .plan import Context
 from .scene import Scene
 
 __all__ = ["Sweeper", "Domain", "LimitPosition", "ChangePoint", "run_arrays", "merge",

@@ -15,7 +15,7 @@ import pytest
 
 from polygon_method import parse_scene, solve
 from polygon_method.kinematics import evaluate
-from polygon_method.plan import compile_plan
+from polygon_method.compiler import compile_plan
 
 PACKAGE = Path(__file__).resolve().parent.parent / "polygon_method"
 STEP_CLASSES = ("Crank", "Dyad", "SliderDyad", "SlottedLink", "Carried")
@@ -168,7 +168,7 @@ def test_a_new_step_kind_is_one_module_and_one_line(monkeypatch):
     the drawings and checking answers work without a change anywhere else."""
     from dataclasses import dataclass
 
-    from polygon_method import plan as plan_module
+    from polygon_method import compiler as plan_module
     from polygon_method.check import check_answers
     from polygon_method.draw import render
     from polygon_method.scene import parse_answers

@@ -15,7 +15,8 @@ import pytest
 
 from polygon_method import parse_scene, solve
 from polygon_method.cli import main
-from polygon_method.plan import Context, compile_plan
+from polygon_method.compiler import compile_plan
+from polygon_method.plan import Context
 from scenes import TRANSLATING_COUPLER
 
 FOURBAR = """

@@ -42,7 +42,8 @@ from hypothesis import strategies as st
 
 from polygon_method.cli import main
 from polygon_method.errors import TOL, PolygonMethodError
-from polygon_method.plan import Context, compile_plan
+from polygon_method.compiler import compile_plan
+from polygon_method.plan import Context
 from polygon_method.scene import FixedPath, parse_scene
 from polygon_method.solution import solve
 

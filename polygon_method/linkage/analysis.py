@@ -11,7 +11,7 @@ import numpy as np
 
 from ..derived import transmission_angle
 from ..errors import TOL, SingularStepError
-from ..plan import compile_plan
+from ..compiler import compile_plan
 from ..scene import Scene
 from ..solution import solve
 from ..tracking import TWO_PI

@@ -1,0 +1,348 @@
+"""Compiling a scene: its constraint graph walked into a :class:`~polygon_method.plan.Plan`.
+
+The crank is the first step; then, for each point not yet found (in the scene's order),
+each recogniser of :data:`polygon_method.steps.TIERS` is tried in turn. A point is looked
+at again only when one of its neighbours has just been found, so compiling is linear in
+the size of the scene. Each branching step chooses its assembly at the scene's crank
+angle. Plans are kept in a small cache keyed by the scene's content (never inside the
+scene): a changed scene gets its own plan.
+
+>>> from polygon_method.scene import parse_scene
+>>> sc = parse_scene('''
+... [ground]
+... O = [0, 0]
+... [links]
+... OA = 150
+... AB = 600
+... [sliders]
+... B = { path = "horizontal" }
+... [input]
+... crank = "OA"
+... angle = 90
+... speed = "10 rad/s ccw"
+... ''')
+>>> [st.kind for st in compile_plan(sc).steps], gruebler(sc)
+(['crank', 'slider'], 1)
+"""
+
+from __future__ import annotations
+
+import functools
+import heapq
+import math
+import weakref
+from dataclasses import replace
+
+from .errors import AssemblyError, MobilityError, PolygonMethodError, SceneError
+from .numbers import in_units
+from .plan import Bodies, Dims, Plan, _bodies_at
+from .scene import GuideSlider, Scene, key_line
+from .steps import TIERS, Context, Crank
+
+__all__ = ["compile_plan", "gruebler", "step_scale"]
+
+
+# --------------------------------------------------------------------------- compiling
+
+_BY_ID: dict = {}  # id(scene) -> (weak reference to the scene, plan)
+_BY_CONTENT: dict = {}  # content key -> plan (bounded)
+_KEEP = 256
+
+
+def compile_plan(scene: Scene) -> Plan:
+    """Compile the scene's constraint graph into a plan and choose each assembly branch.
+
+    Raises :class:`MobilityError` when the scene is not a one-degree-of-freedom mechanism
+    that these steps can build, :class:`AssemblyError` when it cannot be put together at the
+    given crank angle.
+    """
+    hit = _BY_ID.get(id(scene))
+    if hit is not None and hit[0]() is scene:
+        return hit[1]
+    key = getattr(scene, "_key", None)  # the scene's content (made with the scene)
+    plan = _BY_CONTENT.get(key) if key is not None else None
+    if plan is None:
+        if not isinstance(scene, Scene):
+            raise SceneError(f"a Scene is needed (load_scene(path) or parse_scene(text)), "
+                             f"not {type(scene).__name__} {str(scene)[:60]!r}")
+        try:
+            plan = _Compiler(scene).run()
+        except PolygonMethodError as exc:  # name the scene file and line in the message
+            if exc.line is None and exc.key:
+                exc.line = key_line(scene, exc.key)
+            raise exc.located(scene.file)
+        if key is not None:
+            while _BY_CONTENT and len(_BY_CONTENT) >= _KEEP:
+                _BY_CONTENT.pop(next(iter(_BY_CONTENT)))
+            _BY_CONTENT[key] = plan
+    try:
+        ident = id(scene)
+        _BY_ID[ident] = (weakref.ref(scene, functools.partial(_forget, ident=ident)), plan)
+    except TypeError:
+        pass
+    return plan
+
+
+def _forget(ref, ident, by_id=_BY_ID):
+    """A scene has gone: drop its entry (unless its id already names a newer scene)."""
+    hit = by_id.get(ident)
+    if hit is not None and hit[0] is ref:
+        del by_id[ident]
+
+
+def gruebler(scene: Scene) -> int:
+    """Mobility M = 3 (n - 1) - 2 j (lower pairs only): n bodies incl. ground and blocks."""
+    ground = set(scene.ground)
+    moving = [lk for lk in scene.links if not (lk.p in ground and lk.q in ground)]
+    n = 1 + len(moving) + len(scene.sliders)
+    bodies_at = {}
+    for lk in moving:
+        for p in lk.points:
+            bodies_at.setdefault(p, set()).add(lk.key)
+    for cp in scene.points:
+        bodies_at.setdefault(cp.name, set()).add(scene.link(cp.link).key)
+    for p in ground:
+        bodies_at.setdefault(p, set()).add("ground")
+    for s in scene.sliders:
+        bodies_at.setdefault(s.point, set()).add(f"block {s.point}")
+    j = sum(len(b) - 1 for b in bodies_at.values()) + len(scene.sliders)
+    return 3 * (n - 1) - 2 * j
+
+
+class _Compiler:
+    """The constraint graph as the recognisers see it (``g`` in the steps' ``recognise``):
+    the points found so far (``P``), the links and sliders already used, the bodies."""
+
+    def __init__(self, scene: Scene):
+        self.scene = scene
+        self.names = scene.point_names
+        self.unit = scene.length_unit
+        self.uname = scene.units
+        self.ctx = Context(scene.input.angle, scene.input.omega, scene.input.alpha)
+        self.P = dict(scene.ground)
+        self.steps = []
+        self.used_links = {lk.key for lk in scene.links
+                           if lk.p in scene.ground and lk.q in scene.ground}
+        self.used_sliders = set()
+        self.notes = []
+        self.bodies = Bodies(scene)
+        self._carried = {cp.name: cp for cp in scene.points}
+        self._sliders = {s.point: s for s in scene.sliders}
+        self._bodies_of = {}
+        for lk in scene.links:
+            for p in self.bodies.frame(lk.key):
+                self._bodies_of.setdefault(p, []).append(lk.key)
+        self._guided = {}  # link key -> slider points that slide on it
+        for s in scene.sliders:
+            if isinstance(s, GuideSlider):
+                self._guided.setdefault(scene.link(s.guide).key, []).append(s.point)
+
+    # ----- what the recognisers ask
+    @property
+    def next_index(self) -> int:
+        return len(self.steps)
+
+    def carried(self, name):
+        return self._carried.get(name)
+
+    def slider(self, name):
+        return self._sliders.get(name)
+
+    def body(self, key) -> dict:
+        return self.bodies.frame(key)
+
+    def bodies_of(self, name):
+        return self._bodies_of.get(name, ())
+
+    def known_link(self, link):
+        return link.p in self.P and link.q in self.P
+
+    def free(self, name):
+        """(body key, its known point K, |KX|) for each unused body of ``name`` that has
+        exactly one known point (none if a body has two: that is a carried point)."""
+        out = []
+        for key in self.bodies_of(name):
+            b = self.body(key)
+            known = [p for p in b if p in self.P]
+            if len(known) == 1 and key not in self.used_links:
+                k = known[0]
+                (kx, ky), (x, y) = b[k], b[name]
+                out.append((key, k, math.hypot(x - kx, y - ky)))
+        return out
+
+    # ----- compiling
+    def add(self, step):
+        if step.branching:
+            step, xy = self.choose_branch(step)
+        else:
+            xy = step.place(self.P, step.params, self.ctx)[:2]
+        self.P[step.finds[0]] = xy
+        self.steps.append(step)
+        self.used_links.update(step.links)
+
+    def neighbours(self, name):
+        out = set()
+        for key in self.bodies_of(name):
+            out.update(self.body(key))
+            out.update(self._guided.get(key, ()))
+        return out
+
+    def run(self) -> Plan:
+        sc = self.scene
+        inp = sc.input
+        crank = self.bodies._links.get(inp.crank) or sc.link(inp.crank)
+        self.add(Crank(0, crank.key, inp.pivot, inp.tip, crank.length))
+        names = self.names
+        order = {p: i for i, p in enumerate(names)}
+        heap = list(range(len(names)))  # sorted: a heap
+        while True:
+            found = None
+            while heap and found is None:
+                name = names[heapq.heappop(heap)]
+                if name in self.P:
+                    continue
+                found = self._first(TIERS[0], name)
+            for tier in TIERS[1:]:
+                if found is not None:
+                    break
+                for name in names:
+                    if name not in self.P:
+                        found = self._first(tier, name)
+                        if found is not None:
+                            break
+            if found is None:
+                break
+            self.add(found)
+            for p in self.neighbours(found.finds[0]):
+                i = order.get(p)
+                if i is not None and p not in self.P:
+                    heapq.heappush(heap, i)
+        self.finish()
+        fixed = {lk.key: 0.0 for lk in sc.links if lk.p in sc.ground and lk.q in sc.ground}
+        pins = []
+        for pin in sc.pins:
+            joined = _bodies_at(sc, pin.point)
+            pairs = tuple((f"{a[0]}|{b[0]}", i, j) for i, a in enumerate(joined)
+                          for j, b in enumerate(joined) if j > i)
+            links = tuple(lk for _, lk in joined)
+            pins.append((pin.point, tuple(b for b, _ in joined), links,
+                         tuple(k for k, _, _ in pairs), tuple((i, j) for _, i, j in pairs),
+                         tuple((links[i], links[j]) for _, i, j in pairs)))
+        steps = tuple(self.steps)
+        ground = dict(sc.ground)
+        dims = Dims(ground, tuple(st.params for st in steps), inp.angle, inp.omega,
+                    inp.alpha, {p.point: p.radius for p in sc.pins})
+        return Plan(steps, ground, sc, tuple(self.notes), fixed, tuple(pins), dims)
+
+    def _first(self, kinds, name):
+        for recognise in kinds:
+            step = recognise(self, name)
+            if step is not None:
+                return step
+        return None
+
+    # ----- branches
+    def choose_branch(self, step):
+        sc = self.scene
+        name = step.finds[0]
+        prm = step.params
+        plus = step.place(self.P, prm, self.ctx, 1.0)[:2]
+        minus = step.place(self.P, prm, self.ctx, -1.0)[:2]
+        hint = sc.assembly.get(name)
+        if hint is None:
+            default = step.default_hint(self.P)
+            sigma = self.pick(name, default, plus, minus, step, default=True)
+            if math.dist(plus, minus) > 1e-9 * step.reach():
+                side = default if isinstance(default, str) else "farther along the guide"
+                self.notes.append(f"{name}: of its two positions the one {side} was taken "
+                                  f"(default; set [assembly] {name} to choose)")
+        else:
+            sigma = self.pick(name, hint, plus, minus, step)
+        chosen = step if sigma == step.sigma else replace(step, sigma=sigma)
+        return chosen, (plus if sigma > 0 else minus)
+
+    def pick(self, name, hint, plus, minus, step, default=False):
+        sep = math.dist(plus, minus)
+        scale = step.reach()
+        if sep <= 1e-12 * scale:
+            return 1.0
+        if hint == "block side":
+            return 1.0
+        if isinstance(hint, tuple) and default:
+            ux, uy = hint
+            d = (plus[0] - minus[0]) * ux + (plus[1] - minus[1]) * uy
+            return 1.0 if d >= 0 else -1.0
+        if isinstance(hint, str):
+            axis, want = {"above": (1, 1), "below": (1, -1), "right": (0, 1),
+                          "left": (0, -1)}[hint]
+            d = (plus[axis] - minus[axis]) * want
+            if abs(d) <= 1e-9 * scale:
+                if default:  # level: take the right-hand one
+                    return 1.0 if plus[0] >= minus[0] else -1.0
+                other = "left/right" if axis == 1 else "above/below"
+                raise AssemblyError(
+                    f"assembly {name} = \"{hint}\" matches neither position: both are at the "
+                    f"same {'height' if axis == 1 else 'x'} ({self.fmt(plus)} and "
+                    f"{self.fmt(minus)}); use {other} or a rough position [x, y]",
+                    key=f"[assembly] {name}", file=self.scene.file)
+            return 1.0 if d > 0 else -1.0
+        d1, d2 = math.dist(hint, plus), math.dist(hint, minus)
+        # a rough position must be decisively nearer one of them (not in the middle tenth)
+        if min(d1, d2) > step.reach() or abs(d1 - d2) <= 0.1 * sep:
+            raise AssemblyError(
+                f"assembly {name} = {self.fmt(hint)} matches neither position of {name} "
+                f"({self.fmt(plus)} or {self.fmt(minus)}); give a rough position near the "
+                "one the figure shows", key=f"[assembly] {name}",
+                file=self.scene.file)
+        return 1.0 if d1 < d2 else -1.0
+
+    def fmt(self, xy):
+        return f"[{in_units(xy[0], self.unit)}, {in_units(xy[1], self.unit)}]"
+
+    # ----- what is left over
+    def finish(self):
+        sc = self.scene
+        if len(self.P) == len(self.names) and len(self.used_links) == len(sc.links) and \
+                len(self.used_sliders) == len(sc.sliders):
+            return  # every point found, every link and slider used
+        missing = [p for p in self.names if p not in self.P]
+        extra_links = [lk.key for lk in sc.links if lk.key not in self.used_links]
+        extra_sliders = [s.point for s in sc.sliders if s.point not in self.used_sliders]
+        if not missing and not extra_links and not extra_sliders:
+            return
+        m = gruebler(sc)
+        mob = f"mobility {m} (Gruebler: 3(n-1) - 2j)"
+        if missing:
+            if m > 1:
+                why = (f"{mob}: the mechanism is under-constrained; "
+                       f"{', '.join(missing)} {'is' if len(missing) == 1 else 'are'} not "
+                       "determined by the crank (add the missing link or slider)")
+            elif m < 1:
+                why = (f"{mob}: the mechanism is over-constrained (a structure); "
+                       f"{', '.join(missing)} cannot move")
+            else:
+                why = (f"{', '.join(missing)} cannot be found by the construction steps "
+                       "(crank, dyad, slider, slotted link, carried point): the chain needs "
+                       "a construction these steps do not make, or a part is missing")
+            loose = [lk.key for lk in sc.links
+                     if lk.key not in self.used_links and (lk.p in missing or lk.q in missing)]
+            where = f"[links] {', '.join(loose)}" if loose else "[links]"
+            raise MobilityError(why, file=sc.file, key=where)
+        parts = []
+        if extra_links:
+            parts.append(f"link{'s' if len(extra_links) > 1 else ''} "
+                         f"{', '.join(extra_links)} {'is' if len(extra_links) == 1 else 'are'}"
+                         " redundant (both ends already fixed by the other links): remove "
+                         f"{'it' if len(extra_links) == 1 else 'them'} or check the scene")
+        if extra_sliders:
+            parts.append(f"slider{'s' if len(extra_sliders) > 1 else ''} "
+                         f"{', '.join(extra_sliders)} cannot slide (already fixed)")
+        where = (f"[links] {', '.join(extra_links)}" if extra_links
+                 else f"[sliders] {', '.join(extra_sliders)}")
+        raise MobilityError(f"{mob}: over-constrained: " + "; ".join(parts), file=sc.file,
+                            key=where)
+
+
+def step_scale(step) -> float:
+    """The largest length of a step (a scale for tolerances)."""
+    return step.reach()
