@@ -21,7 +21,7 @@ WORDS = {  # what each layer is for (the contract names the modules)
     4: "results: one solve, a sweep",
     5: "derived: rubbing, torque, transmission angle; centres",
     6: "following the branch over the cycle",
-    7: "the motion record",
+    7: "the motion record; compiling a scene into a plan",
     8: "the plan: topology + branches; dimensions are inputs",
     9: "one module per construction kind",
     10: "the scene: records and the reader",
