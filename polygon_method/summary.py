@@ -128,15 +128,22 @@ class _Reducer:
         self.plan = sw.plan
         self.best = {}  # name -> [max, imax, min, imin, unit, what]
 
+    def values(self, fr: Motion):
+        """(name, unit, array, what) of the quantities summarised, magnitudes made."""
+        for name, unit, arr, what in self.quantities(fr):
+            yield name, unit, (np.hypot(*arr) if isinstance(arr, tuple) else arr), what
+
     def quantities(self, fr: Motion):
-        """(name, unit, array, what) of the quantities summarised."""
+        """(name, unit, array, what) of the quantities summarised; a magnitude comes as its
+        (x, y) components, so that its extremes are found on the squares (no root over
+        every sample) and the root taken where they are."""
         sc, plan = self.scene, self.plan
         ground = set(sc.ground)
         for p in sc.point_names:
             if p in ground:
                 continue
-            yield f"v_{p}", "m/s", np.hypot(*fr.V[p]), "speed"
-            yield f"a_{p}", "m/s^2", np.hypot(*fr.A[p]), "acceleration"
+            yield f"v_{p}", "m/s", tuple(fr.V[p]), "speed"
+            yield f"a_{p}", "m/s^2", tuple(fr.A[p]), "acceleration"
         for lk in sc.links:
             if lk.p in ground and lk.q in ground:
                 continue
@@ -151,7 +158,7 @@ class _Reducer:
             yield f"vs_{s.point}", "m/s", vs, "sliding, signed"
             yield f"as_{s.point}", "m/s^2", a_s, "sliding, signed"
             if not isinstance(s, FixedPath):
-                yield f"ac_{s.point}", "m/s^2", np.hypot(cx, cy), "Coriolis"
+                yield f"ac_{s.point}", "m/s^2", (cx, cy), "Coriolis"
         if getattr(plan, "pins", ()):
             for pin, r in rubbing_arrays(plan, fr.W, fr.n).items():
                 yield f"rub_{pin}", "m/s", r, "rubbing"
@@ -171,18 +178,27 @@ class _Reducer:
 
     def add(self, fr: Motion, index):
         for name, unit, arr, what in self.quantities(fr):
-            if not len(arr):
-                continue
-            i, j = int(np.argmax(arr)), int(np.argmin(arr))
+            if isinstance(arr, tuple):  # a magnitude: extremes of x^2 + y^2
+                x, y = arr
+                if not len(x):
+                    continue
+                sq = x * x
+                sq += y * y
+                i, j = int(np.argmax(sq)), int(np.argmin(sq))
+                hi, lo = math.hypot(x[i], y[i]), math.hypot(x[j], y[j])
+            else:
+                if not len(arr):
+                    continue
+                i, j = int(np.argmax(arr)), int(np.argmin(arr))
+                hi, lo = float(arr[i]), float(arr[j])
             b = self.best.get(name)
             if b is None:
-                self.best[name] = [float(arr[i]), int(index[i]), float(arr[j]), int(index[j]),
-                                   unit, what]
+                self.best[name] = [hi, int(index[i]), lo, int(index[j]), unit, what]
                 continue
-            if arr[i] > b[0]:
-                b[0], b[1] = float(arr[i]), int(index[i])
-            if arr[j] < b[2]:
-                b[2], b[3] = float(arr[j]), int(index[j])
+            if hi > b[0]:
+                b[0], b[1] = hi, int(index[i])
+            if lo < b[2]:
+                b[2], b[3] = lo, int(index[j])
 
     def _refine(self, tasks, passes):
         """Zoom on sampled extremes, all at once: 17 points across each bracket a pass.
@@ -198,7 +214,7 @@ class _Reducer:
             invalid = valid_mask(fr, self.plan)
             if ok is not None:
                 invalid |= ~ok
-            q = {nm: arr for nm, _, arr, _ in self.quantities(fr)}
+            q = {nm: arr for nm, _, arr, _ in self.values(fr)}
             for k, t in enumerate(live):
                 name, sense = t[0], t[1]
                 sl = slice(17 * k, 17 * k + 17)
@@ -288,7 +304,7 @@ class _Reducer:
             inward = -1.0 if abs(lp.theta - dom.hi) < abs(lp.theta - dom.lo) else 1.0
             probe = lp.theta + inward * np.array([1e-2, 1e-3, 1e-4])
             fr = self.sw.evaluate(probe)
-            q = {nm: np.asarray(arr, dtype=float) for nm, _, arr, _ in self.quantities(fr)}
+            q = {nm: np.asarray(arr, dtype=float) for nm, _, arr, _ in self.values(fr)}
             for nm, u, mx, tmx, mn, tmn, what in rows:
                 if u == "deg" or nm not in q or tmx is None:
                     continue
