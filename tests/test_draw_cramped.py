@@ -62,3 +62,27 @@ def test_the_crank_angle_label_sits_by_its_arc(path):
     arc = LineString(svg.path("crank-angle"))
     label = svg.text_box("label-crank-angle")
     assert label.distance(arc) <= 0.4 * CM, f"{label.distance(arc) / CM:.2f} cm away"
+
+
+CORE = ("FOURBAR", "SIX_LINK", "SLOTTED_LEVER", "WHITWORTH", "OFFSET_SLIDER")
+
+
+@pytest.mark.parametrize("scene", WORKED + list(CORE),
+                         ids=lambda p: Path(p).stem)
+def test_a_line_mark_is_not_read_with_a_point_label(scene):
+    """A construction line's mark ("perp EF") keeps 1.5 mm from every image point's label,
+    so that it is never read as one text with e' beside it (the worked problems and the
+    core tests' scenes)."""
+    import test_core
+    from polygon_method import parse_scene
+    sc = parse_scene(getattr(test_core, scene)) if scene in CORE else load_scene(scene)
+    svg = Svg(svg_string(solve(sc), "all"))
+    labels = [g for g in svg.groups if g.startswith("label-")]
+    marks = [g for g in labels if "-mark-" in g]
+    points = [g for g in labels if "-mark-" not in g and g != "label-crank-angle"
+              and not g.startswith("label-pin-") and not g[len("label-"):][:1].isupper()]
+    assert marks and points
+    for m in marks:
+        for p in points:
+            gap = svg.text_box(m).distance(svg.text_box(p)) / CM
+            assert gap >= 0.15, f"{m} is {gap:.2f} cm from {p}"

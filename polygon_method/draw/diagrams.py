@@ -13,8 +13,8 @@ from ..scales import Scale
 from ..scene import FixedPath
 from .sketch import _angle_between, _header, _Sketch
 from .style import (BAR, BLOCK_CLEAR, BLOCK_MIN, BODY_EDGE, BODY_FACE, DOT_R, IMAGE_FACE,
-                    JOINT_R, LABEL_PT, LEGEND_NAMES, LINE_STYLE, MARK_PT, OVERSHOOT, PIN_ZONE,
-                    POLE_R, SMALL_PT, STYLE)
+                    JOINT_R, LABEL_PT, LEGEND_NAMES, LINE_STYLE, MARK_APART, MARK_PT,
+                    OVERSHOOT, PIN_ZONE, POLE_R, SMALL_PT, STYLE)
 
 # --------------------------------------------------------------------------- configuration
 
@@ -390,8 +390,8 @@ def _polygon(sol, scale: Scale, phase: str) -> _Sketch:
         sk.label(", ".join(labs), [cm(xy)], LABEL_PT,
                  gid=f"label-{'-'.join(labs).replace(chr(39), 'p')}", point=True)
     for text, anchors, gid in marks:
-        sk.label(text, anchors, MARK_PT, gid=f"label-{gid}",
-                 color="#555555")
+        sk.label(text, anchors, MARK_PT, gid=f"label-{gid}", color="#555555",
+                 apart=MARK_APART)
     sk.place_labels()
     if phase == "velocity":
         legend = [("line", "construction line (\u22a5 / \u2225 to a link)")]
