@@ -15,8 +15,9 @@ from a read-off inherits its error (omega = v / l: ``0.05 s_v / l``; rubbing
 Where the two direction lines of a construction cross at less than 30 deg the read-off
 error grows as ``1 / (2 sin gamma)``. Never tighter than 0.5 % (three significant figures);
 values computed rather than drawn (the crank's) get 0.5 %. For speeds, accelerations,
-omegas and alphas a simulated careful hand drawing (:mod:`.handdrawn`) decides where it
-allows more.
+omegas, alphas, rubbing velocities, the input torque and the sliding quantities (sliding
+velocity and acceleration, Coriolis) a simulated careful hand drawing (:mod:`.handdrawn`)
+decides where it allows more.
 
 >>> from polygon_method import parse_scene, solve
 >>> sol = solve(parse_scene('''

@@ -15,7 +15,13 @@ deviations). The errors are followed through the construction as it is drawn:
   a direction line through a point is off at the found image by that point's error and
   its direction error over the distance; two lines crossing at gamma put the image
   ``sqrt(e1^2 + e2^2) / sin gamma`` off (a later step inherits the earlier ones);
-* the value read off: its own pencil error.
+* the value read off: its own pencil error;
+* a quantity built from read-offs follows its construction: a rubbing velocity
+  ``|w1 -/+ w2| r`` with the drawn omegas (the crank's is given), the input torque
+  ``-sum(F . v + T w) / omega`` with the drawn velocities and omegas, a sliding velocity or
+  acceleration read off between the two images it joins (c1 to c; o to x on a fixed
+  path), the Coriolis component ``2 omega vs`` with both factors as drawn. The drawn
+  configurations give each its spread too.
 
 The tolerance of an answer is the 95th percentile of its relative error over the drawings:
 the configuration's spread combined with 1.96 times the polygon's, never below 0.5 %.
@@ -27,10 +33,11 @@ import dataclasses
 import math
 
 from ..constructions import acceleration_constructions, velocity_constructions
+from ..derived import input_torque, rubbing_at
 from ..kinematics import evaluate
 from ..scales import diagram_scales
 
-__all__ = ["HandDrawing", "PENCIL_CM", "PENCIL_DEG", "SAMPLES"]
+__all__ = ["BUILT", "HandDrawing", "HOW", "PENCIL_CM", "PENCIL_DEG", "SAMPLES"]
 
 #: a pencil's error on paper, lengths (cm) and directions (deg): standard deviations
 PENCIL_CM = 0.025
@@ -38,6 +45,13 @@ PENCIL_DEG = 0.25
 #: configurations drawn per scene
 SAMPLES = 300
 Z95 = 1.96
+#: how a quantity built from read-offs is drawn, as the check's rule says it (after BUILT)
+BUILT = "; built as: "
+HOW = {"rub": "rub = |w1 -/+ w2| r with the drawn omegas",
+       "torque": "T = -sum(F . v) / omega with the drawn velocities",
+       "vs": "read off between the two images the sliding joins",
+       "as": "read off between the two images the sliding joins",
+       "ac": "2 omega vs with the drawn omega and vs"}
 
 
 class HandDrawing:
@@ -66,6 +80,7 @@ class HandDrawing:
         for x, y in self.m.P.values():
             ok &= np.isfinite(x) & np.isfinite(y)
         self.ok, self.n = ok, n
+        self.sliding = {}  # "vs_A" / "as_A" -> sigma of the sliding vector as drawn
         self.sigma = {"velocity": self._polygon(velocity_constructions(sol), sol.V, self.sv),
                       "acceleration": self._polygon(acceleration_constructions(sol), sol.A,
                                                     self.sa)}
@@ -110,6 +125,12 @@ class HandDrawing:
         for name, xy in D.items():
             s = sigma_at(xy)
             out[name] = 0.0 if s is None else s
+        # a sliding component is read between the two images it joins (c1 to c)
+        for c in cons:
+            for v in c.found:
+                if v.kind == "sliding":
+                    ends = [sigma_at(v.start), sigma_at(v.end)]
+                    self.sliding[v.name] = math.hypot(*(e or 0.0 for e in ends))
         return out
 
     # ----- the answers
@@ -133,7 +154,58 @@ class HandDrawing:
             poly = math.sqrt(s.get(lk.p, 0.0) ** 2 + s.get(lk.q, 0.0) ** 2 + r ** 2) / lk.length
             vals = np.abs(m.omega(lk.key) if kind == "omega" else m.alpha(lk.key))
             return vals, poly
+        if kind in ("vs", "as"):  # read off between the images the sliding joins
+            X = names[0]
+            s, r = (sv, rv) if kind == "vs" else (sa, ra)
+            drawn = self.sliding.get(f"{kind}_{X}", s.get(X, 0.0))  # on a path: o to x
+            vals = m.sliding_velocity(X) if kind == "vs" else m.sliding_acceleration(X)
+            return np.abs(vals), math.hypot(drawn, r)
+        if kind == "ac":  # 2 omega vs, both factors as drawn
+            X = names[0]
+            guide = getattr(sol.scene.slider(X), "guide", None)
+            if guide is None:
+                return None, None
+            w, vs = abs(sol.W[sol.scene.link(guide).key]), abs(sol.sliding_velocity(X))
+            s_vs = math.hypot(self.sliding.get(f"vs_{X}", sv.get(X, 0.0)), rv)
+            poly = 2 * math.hypot(self.omega_sigma(guide) * vs, w * s_vs)
+            return np.hypot(*m.coriolis(X)), poly
+        if kind == "rub":  # |w1 -/+ w2| r with the drawn omegas (the largest pair)
+            pin = next(p for p in sol.plan.pins if p[0] == names[0])
+            r = sol.plan.dims.radii[names[0]]
+            vals = np.max(np.broadcast_arrays(*(np.asarray(v, dtype=float)
+                                                for v in rubbing_at(pin, m.W, r))), axis=0)
+            rub = sol.rubbing[names[0]]
+            if not rub.pairs:
+                return None, None
+            i = max(range(len(rub.values)), key=rub.values.__getitem__)
+            a, b = pin[5][i]
+            return vals, r * math.hypot(self.omega_sigma(a), self.omega_sigma(b))
+        if kind == "torque":  # T = -sum(F . v + T_l w_l) / omega with the drawn v, omega
+            sc, w = sol.scene, sol.plan.dims.omega
+            vals = input_torque(sc, m.V, m.W, w)
+            if vals is None:
+                return None, None
+            var = 0.0
+            for load in sc.loads:
+                if load.force is not None:
+                    var += math.hypot(*load.force) ** 2 * (sv.get(load.target, 0.0) ** 2 + rv ** 2)
+                else:
+                    var += (load.torque * self.omega_sigma(load.target)) ** 2
+            return np.abs(vals), math.sqrt(var) / abs(w)
         return None, None
+
+    def omega_sigma(self, link) -> float:
+        """The standard deviation of omega of ``link`` as read off the velocity polygon
+        (zero for the crank, whose omega is given, and for a body that does not turn)."""
+        sol = self.sol
+        if link is None or link in sol.plan.fixed_links:
+            return 0.0
+        lk = sol.scene.link(link)
+        if lk.key == sol.plan.steps[0].link:
+            return 0.0
+        s = self.sigma["velocity"]
+        r = PENCIL_CM * self.sv.per_cm
+        return math.sqrt(s.get(lk.p, 0.0) ** 2 + s.get(lk.q, 0.0) ** 2 + r ** 2) / lk.length
 
     def tolerance(self, kind, names, correct):
         """The 95th percentile of the relative error, or None where this model does not

@@ -7,7 +7,7 @@ import math
 
 from ..errors import PolygonMethodError
 from ..scales import DRAWING_PRECISION_CM, diagram_scales
-from .handdrawn import HandDrawing
+from .handdrawn import BUILT, HOW, HandDrawing
 from ..scene import GuideSlider
 from ..solution import Solution
 from .verdicts import ROUNDING, UNIT_OF
@@ -139,9 +139,10 @@ def answer_tolerance(sol: Solution, kind: str, names: tuple, correct: float,
         return tol, f"{100 * relative:g} % (the answers' tolerance)"
     hand = None if where.startswith("computed") else tols.hand(kind, names, correct)
     if hand is not None and hand * abs(correct) > max(ROUNDING * abs(correct), draw):
+        how = f"{BUILT}{HOW[kind]}" if kind in HOW else ""
         return hand * abs(correct), (
             "a careful hand drawing at the step table's scales (pencil 0.25 mm and 0.25 deg), "
-            "simulated: 95 % of drawings are this close")
+            f"simulated: 95 % of drawings are this close{how}")
     tol = max(ROUNDING * abs(correct), draw)
     if tol == 0:
         tol = tols.d * (tols.sv.per_cm if UNIT_OF[kind] in ("m/s", "rad/s") else tols.sa.per_cm)

@@ -91,11 +91,24 @@ def verdicts_text(verdicts, title: str = "") -> str:
                          "    mistake: none of the known ones explains it")
     wrong = sum(not v.ok for v in verdicts)
     lines.append("")
-    rules = sorted({v.rule for v in verdicts})
-    lines.append("tolerance: " + "; ".join(rules))
+    lines.append("tolerance: " + "; ".join(_rules(v.rule for v in verdicts)))
     lines.append(f"{len(verdicts) - wrong} of {len(verdicts)} right" +
                  (f", {wrong} wrong" if wrong else ""))
     return "\n".join(lines)
+
+
+def _rules(rules) -> list:
+    """The rules used, each once: one rule built several ways is written once with its
+    constructions after it ("...; built as: a; b" and "...; built as: c" -> one rule)."""
+    built = "; built as: "
+    heads: dict = {}
+    for r in rules:
+        head, _, how = r.partition(built)
+        heads.setdefault(head, set())
+        if how:
+            heads[head].add(how)
+    return [h + (f" (built as: {'; '.join(sorted(hows))})" if hows else "")
+            for h, hows in sorted(heads.items())]
 
 
 def verdicts_dict(verdicts, scene: str | None = None, answers: str | None = None) -> dict:

@@ -12,8 +12,9 @@ from ..numbers import fmt_angular
 from ..scales import Scale
 from ..scene import FixedPath
 from .sketch import _angle_between, _header, _Sketch
-from .style import (BAR, BODY_EDGE, BODY_FACE, DOT_R, IMAGE_FACE, JOINT_R, LABEL_PT,
-                     LEGEND_NAMES, LINE_STYLE, MARK_PT, OVERSHOOT, POLE_R, SMALL_PT, STYLE)
+from .style import (BAR, BLOCK_CLEAR, BLOCK_MIN, BODY_EDGE, BODY_FACE, DOT_R, IMAGE_FACE,
+                    JOINT_R, LABEL_PT, LEGEND_NAMES, LINE_STYLE, MARK_APART, MARK_PT,
+                    OVERSHOOT, PIN_ZONE, POLE_R, SMALL_PT, STYLE)
 
 # --------------------------------------------------------------------------- configuration
 
@@ -37,13 +38,14 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
     """The mechanism drawn on ``sk`` to ``scale`` (links, plates, blocks, guides, pins,
     ground symbols, the crank angle, labelled points); ``extra(sk, P)`` adds more before
     the labels are placed. Returns the points in cm."""
-    from shapely.geometry import MultiPoint
+    from shapely.geometry import MultiPoint, Polygon
     sc = sol.scene
     s = scale.per_cm
     P = {k: (x / s, y / s) for k, (x, y) in sol.P.items()}
     carried_on = {}
     for cp in sc.points:
         carried_on.setdefault(cp.link, []).append(cp.name)
+    solid = []  # (link key or block, its outline): what brackets and arcs keep clear of
     # frame: links between two ground points
     for lk in sc.links:
         if lk.p in sc.ground and lk.q in sc.ground:
@@ -59,6 +61,7 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
             continue
         pts = [P[lk.p], P[lk.q]] + [P[c] for c in carried_on.get(lk.key, ())]
         body = MultiPoint(pts).convex_hull.buffer(BAR / 2, quad_segs=8)
+        solid.append((lk.key, body))
         sk.polygon(list(body.exterior.coords), gid=f"link-{lk.key}", face=BODY_FACE,
                    edge=BODY_EDGE, lw=0.8, z=2, obstacle="edge")
         for a in pts:
@@ -77,6 +80,7 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
         size = _block_size(sc, sl.point, P)
         sk.polygon(_rect(X, u, size, 0.55 * size), gid=f"block-{sl.point}", face="#ffffff",
                    edge="#000000", lw=0.9, z=3)
+        solid.append((f"block {sl.point}", Polygon(_rect(X, u, size, 0.55 * size))))
         sk.hints.append(((X[0] - size / 2 * u[0], X[1] - size / 2 * u[1]),
                          (X[0] + size / 2 * u[0], X[1] + size / 2 * u[1])))
     # pins at their given sizes, where that stays legible; a pin as large as the links it
@@ -102,7 +106,7 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
             away += [P[p] for p in (sl.first, sl.second) if p not in sc.ground]
         if away:
             near = [P[p] for p in sc.point_names if p != g and 0 < math.dist(P[p], P[g]) < 1.2]
-            _ground_symbol(sk, g, P[g], away + near)
+            _ground_symbol(sk, g, P[g], near, [b for _, b in solid])
     # the crank angle
     _crank_angle(sk, sc, P)
     # joints and points
@@ -132,9 +136,20 @@ def _deg(rad: float) -> str:
 
 def _block_size(sc, point, P):
     """A slider block's length (cm): 0.9, less on short links so the block does not hide
-    them."""
+    them, and less again where another pin lies near (the end of a short lever beside its
+    block): the block never covers another point's pin (it is 0.55 as wide as long; at
+    least 0.35 long)."""
     near = [math.dist(P[point], P[lk.other(point)]) for lk in sc.links if point in lk.points]
-    return min(0.9, max(0.5, 0.45 * min(near, default=2.0)))
+    size = min(0.9, max(0.5, 0.45 * min(near, default=2.0)))
+    X = P[point]
+    for q in sc.point_names:
+        d = math.dist(P[q], X)
+        if q == point or d < 1e-9:
+            continue
+        # the rectangle's half-diagonal reaches sqrt(1 + 0.55^2) / 2 of its length
+        room = (d - JOINT_R - BLOCK_CLEAR) / (0.5 * math.hypot(1.0, 0.55))
+        size = min(size, max(room, BLOCK_MIN))
+    return size
 
 
 def _rect(c, u, length, width):
@@ -179,20 +194,40 @@ def _fixed_guide(sk, sc, sl, P, s):
                       max(a[0], far[0], b[0], far2[0]), max(a[1], far[1], b[1], far2[1])))
 
 
-def _ground_symbol(sk, name, g, away):
-    """A fixed pivot: a bracket (triangle) from the pin to a hatched base, turned away from
-    the links that leave it (below it where that is clear)."""
-    out = [math.atan2(p[1] - g[1], p[0] - g[0]) for p in away if math.dist(p, g) > 1e-9]
-    q = math.pi / 4
-    best, best_c = -math.pi / 2, -1.0
-    for th, need in ((-2 * q, 45), (4 * q, 60), (0.0, 60), (2 * q, 60), (-3 * q, 60),
-                     (-q, 60), (3 * q, 60), (q, 60)):
-        c = min((_angle_between(th, a) for a in out), default=math.pi)
-        if c >= math.radians(need):
+def _ground_symbol(sk, name, g, near, solid):
+    """A fixed pivot: a bracket (triangle) from the pin to a hatched base, below the pin
+    where that keeps it off every link and block beyond the pin (``PIN_ZONE`` around it,
+    where the link's rounded end and the bracket meet) and off the points ``near`` it;
+    else turned as little from below as that needs (15 deg steps); else where it overlaps
+    least."""
+    from shapely.geometry import LineString, Point, Polygon
+    from shapely.ops import unary_union
+    bodies = unary_union(solid) if solid else None
+    zone = Point(g).buffer(PIN_ZONE, quad_segs=8)
+    spots = [Point(p).buffer(0.12, quad_segs=4) for p in near]
+    d, half, wide = 0.5, 0.3, 0.42
+    best, best_cost = -math.pi / 2, math.inf
+    for k in (0, -1, 1, -2, 2, -3, 3, -4, 4, -5, 5, -6, 6, -7, 7, -8, 8, -9, 9, -10, 10, -11,
+              11, 12):
+        th = -math.pi / 2 + k * math.pi / 12
+        dx, dy = math.cos(th), math.sin(th)
+        nx, ny = -dy, dx
+        base = (g[0] + d * dx, g[1] + d * dy)
+        far = (base[0] + 0.2 * dx, base[1] + 0.2 * dy)
+        foot = Polygon([g, (base[0] + half * nx, base[1] + half * ny),
+                        (base[0] - half * nx, base[1] - half * ny)]).union(
+            Polygon([(base[0] + wide * nx, base[1] + wide * ny),
+                     (base[0] - wide * nx, base[1] - wide * ny),
+                     (far[0] - wide * nx, far[1] - wide * ny),
+                     (far[0] + wide * nx, far[1] + wide * ny)])).union(
+            LineString([base, far]).buffer(0.01)).difference(zone)
+        cost = (foot.intersection(bodies).area if bodies is not None else 0.0) + \
+            sum(foot.intersection(q).area for q in spots)
+        if cost <= 1e-9:
             best = th
             break
-        if c > best_c:
-            best, best_c = th, c
+        if cost < best_cost - 1e-12:
+            best, best_cost = th, cost
     dx, dy = math.cos(best), math.sin(best)
     nx, ny = -dy, dx
     d, half, wide = 0.5, 0.3, 0.42
@@ -355,8 +390,8 @@ def _polygon(sol, scale: Scale, phase: str) -> _Sketch:
         sk.label(", ".join(labs), [cm(xy)], LABEL_PT,
                  gid=f"label-{'-'.join(labs).replace(chr(39), 'p')}", point=True)
     for text, anchors, gid in marks:
-        sk.label(text, anchors, MARK_PT, gid=f"label-{gid}",
-                 color="#555555")
+        sk.label(text, anchors, MARK_PT, gid=f"label-{gid}", color="#555555",
+                 apart=MARK_APART)
     sk.place_labels()
     if phase == "velocity":
         legend = [("line", "construction line (\u22a5 / \u2225 to a link)")]

@@ -52,6 +52,7 @@ class _Label:
     box: tuple | None = None  # (cx, cy, w, h) once placed
     point: bool = False  # names a point: must be nearer to it than to any other point
     leader: bool = False  # drawn with a leader line when far from its anchor
+    apart: float = 0.0  # keeps this far (cm) from the points' labels, where it can
 
 
 @dataclass
@@ -128,10 +129,10 @@ class _Sketch:
                      edge=color, lw=0.4, z=z)
 
     def label(self, text, anchors, size=LABEL_PT, gid=None, color="#000000", weight="normal",
-              point=False, leader=False):
+              point=False, leader=False, apart=0.0):
         self.labels.append(_Label(text, [tuple(map(float, a)) for a in anchors], size,
                                   gid or f"label-{len(self.labels)}", color, weight,
-                                  point=point, leader=leader or point))
+                                  point=point, leader=leader or point, apart=apart))
 
     def note(self, x, y, text, size=NOTE_PT, ha="left", gid=None, weight="normal",
              color="#000000"):
@@ -155,49 +156,15 @@ class _Sketch:
         from shapely import STRtree, box
         from shapely.geometry import Point
         tree = STRtree(self.obstacles) if self.obstacles else None
-        placed = []
+        placed, named = [], []  # every box placed; the boxes of the points' labels
         spots = [Point(lab.anchors[0]) for lab in self.labels if lab.point]
         for lab in self.labels:
             w, h = _text_size(lab.text, lab.size, lab.weight)
-            best, clear_only, clashes = None, None, []
-            for ring, gap in enumerate((0.06, 0.2, 0.38, 0.6, 0.9, 1.3)):
-                options = []
-                for ai, (ax, ay) in enumerate(lab.anchors):
-                    away = self._incident(ax, ay)
-                    for k in range(16):
-                        th = math.pi / 4 + k * math.pi / 8
-                        c, s = math.cos(th), math.sin(th)
-                        edge = min(w / 2 / abs(c) if abs(c) > 1e-12 else math.inf,
-                                   h / 2 / abs(s) if abs(s) > 1e-12 else math.inf)
-                        cx, cy = ax + (gap + edge) * c, ay + (gap + edge) * s
-                        clearance = min((_angle_between(th, a) for a in away), default=math.pi)
-                        options.append((-round(clearance, 6), ai, k, cx, cy))
-                options.sort()
-                for _, ai, _, cx, cy in options:
-                    b = box(cx - w / 2 - CLEAR, cy - h / 2 - CLEAR, cx + w / 2 + CLEAR,
-                            cy + h / 2 + CLEAR)
-                    hits = list(tree.query(b, predicate="intersects")) if tree else []
-                    crowd = [p for p in placed if p.intersects(b)]
-                    if hits or crowd:
-                        clashes.append((b, hits, crowd, (cx, cy)))
-                        continue
-                    leader = None
-                    if lab.leader and gap > 0.5:  # far from its point: a leader line to it
-                        leader = _leader(lab.anchors[ai], (cx, cy, w, h))
-                        if any(p.intersects(leader) for p in placed):
-                            clashes.append((b, [], [], (cx, cy)))
-                            continue
-                    if lab.point:  # nearer to its own point than to any other?
-                        here = Point(lab.anchors[ai])
-                        own = b.distance(here)
-                        others = [q.distance(b) for q in spots if q.distance(here) > 1e-9]
-                        margin = min(others, default=math.inf) - own
-                        if margin < 0.08:
-                            if clear_only is None or margin > clear_only[0] + 1e-9:
-                                clear_only = (margin, (cx, cy), leader)
-                            continue
-                    best = (cx, cy, leader)
-                    break
+            # a label kept apart from the points' labels (a line's mark, so that "perp EF"
+            # is not read with e' beside it) first tries to be, then settles for less
+            for apart in ((lab.apart, 0.0) if lab.apart else (0.0,)):
+                best, clear_only, clashes = self._place(lab, w, h, tree, placed, named,
+                                                        spots, apart)
                 if best is not None:
                     break
             if best is None and clear_only is not None:
@@ -211,11 +178,63 @@ class _Sketch:
             lab.box = (best[0], best[1], w, h)
             placed.append(box(best[0] - w / 2, best[1] - h / 2, best[0] + w / 2,
                               best[1] + h / 2))
+            if lab.point:
+                named.append(placed[-1])
             if best[2] is not None:
                 placed.append(best[2].buffer(0.02))
                 self.items.append(("line", list(best[2].coords),
                                    dict(color="#555555", lw=0.4, dashes=None, z=7,
                                         gid=f"leader-{lab.gid}")))
+
+    def _place(self, lab, w, h, tree, placed, named, spots, apart):
+        """(best (cx, cy, leader) or None, the best position only clear of lines, the
+        clashing positions) of one label: rings of growing distance around its anchors."""
+        from shapely import box
+        from shapely.geometry import Point
+        best, clear_only, clashes = None, None, []
+        for ring, gap in enumerate((0.06, 0.2, 0.38, 0.6, 0.9, 1.3)):
+            options = []
+            for ai, (ax, ay) in enumerate(lab.anchors):
+                away = self._incident(ax, ay)
+                for k in range(16):
+                    th = math.pi / 4 + k * math.pi / 8
+                    c, s = math.cos(th), math.sin(th)
+                    edge = min(w / 2 / abs(c) if abs(c) > 1e-12 else math.inf,
+                               h / 2 / abs(s) if abs(s) > 1e-12 else math.inf)
+                    cx, cy = ax + (gap + edge) * c, ay + (gap + edge) * s
+                    clearance = min((_angle_between(th, a) for a in away), default=math.pi)
+                    options.append((-round(clearance, 6), ai, k, cx, cy))
+            options.sort()
+            for _, ai, _, cx, cy in options:
+                b = box(cx - w / 2 - CLEAR, cy - h / 2 - CLEAR, cx + w / 2 + CLEAR,
+                        cy + h / 2 + CLEAR)
+                hits = list(tree.query(b, predicate="intersects")) if tree else []
+                crowd = [p for p in placed if p.intersects(b)]
+                if hits or crowd:
+                    clashes.append((b, hits, crowd, (cx, cy)))
+                    continue
+                if apart and any(q.distance(b) < apart for q in named):
+                    continue
+                leader = None
+                if lab.leader and gap > 0.5:  # far from its point: a leader line to it
+                    leader = _leader(lab.anchors[ai], (cx, cy, w, h))
+                    if any(p.intersects(leader) for p in placed):
+                        clashes.append((b, [], [], (cx, cy)))
+                        continue
+                if lab.point:  # nearer to its own point than to any other?
+                    here = Point(lab.anchors[ai])
+                    own = b.distance(here)
+                    others = [q.distance(b) for q in spots if q.distance(here) > 1e-9]
+                    margin = min(others, default=math.inf) - own
+                    if margin < 0.08:
+                        if clear_only is None or margin > clear_only[0] + 1e-9:
+                            clear_only = (margin, (cx, cy), leader)
+                        continue
+                best = (cx, cy, leader)
+                break
+            if best is not None:
+                break
+        return best, clear_only, clashes
 
     def _incident(self, x, y):
         """Directions (angles) of the lines that leave the point (x, y)."""

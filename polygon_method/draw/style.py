@@ -21,6 +21,9 @@ HEAD_LEN, HEAD_HALF = 0.26, 0.075  # arrowheads
 OVERSHOOT = 0.6  # how far a direction line runs past the points it joins
 LABEL_PT, MARK_PT, NOTE_PT, TITLE_PT, SMALL_PT = 10.0, 7.5, 8.5, 10.5, 7.0
 CLEAR = 0.05  # clearance of a label from any line (cm)
+MARK_APART = 0.25  # a line's mark ("perp EF") from the points' labels, where there is room
+PIN_ZONE = 0.3  # around a fixed pin, where its bracket and the links' rounded ends meet (cm)
+BLOCK_MIN, BLOCK_CLEAR = 0.35, 0.04  # a block's least length; its clearance of other pins
 
 #: line styles of the vectors by kind (colour, width in pt, dashes or None)
 STYLE = {
