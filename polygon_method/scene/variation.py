@@ -159,7 +159,8 @@ class _Variants:
             i = 0 if sub == "x" else 1
             if name in ground:
                 return [self._values(key, value, "length", self.unit, ("ground", name, i),
-                                     f"{sub} of ground point {name}", table_key=name)]
+                                     f"{sub} of ground point {name}", positive=False,
+                                     table_key=name)]
             if slider is not None and hasattr(slider, "u"):
                 through = raw["sliders"][name].get("through")
                 if isinstance(through, str):
@@ -173,7 +174,7 @@ class _Variants:
                 return [self._values(key, value, "length", self.unit,
                                      ("sliders", name, "through", i),
                                      f"{sub} of the path of slider {name}", setup=setup,
-                                     table_key=name)]
+                                     positive=False, table_key=name)]
             raise self.error(f"{name} is not a ground point or a slider on a fixed path: "
                              f"its {sub} is not stated", "variants", name)
         spec = raw.get("points", {}).get(name)
