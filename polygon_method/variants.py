@@ -567,27 +567,35 @@ def sheet_markdown(vs: VariantSet) -> str:
     return "\n".join(out)
 
 
-def sheet_pdf(vs: VariantSet) -> bytes:
-    """The problem sheet as a PDF, a page per variant (A4, plain text)."""
-    import matplotlib
-    from matplotlib.backends.backend_pdf import PdfPages
-    from matplotlib.figure import Figure
+def sheet_pages(vs: VariantSet):
+    """The problem sheet's pages, one matplotlib figure (A4, plain text) per variant."""
     import textwrap
 
-    del matplotlib
+    from matplotlib.figure import Figure
+
+    base = vs.base
+    for head, lines in sheet_sections(vs):
+        fig = Figure(figsize=(8.27, 11.69))
+        fig.text(0.08, 0.95, f"{base.title or base.file}".replace("$", r"\$"), fontsize=11,
+                 va="top")
+        fig.text(0.08, 0.92, head, fontsize=15, weight="bold", va="top")
+        y = 0.88
+        for line in lines:
+            for part in textwrap.wrap(line.replace("`", "").replace("$", r"\$"), 90) or [""]:
+                fig.text(0.08, y, part, fontsize=10, va="top")
+                y -= 0.022
+        yield fig
+
+
+def sheet_pdf(vs: VariantSet) -> bytes:
+    """The problem sheet as a PDF, a page per variant."""
+    from matplotlib.backends.backend_pdf import PdfPages
+
     buf = io.BytesIO()
     base = vs.base
     with PdfPages(buf, metadata={"Title": f"{base.title or base.file}: problem sheet",
                                  "CreationDate": None}) as pdf:
-        for head, lines in sheet_sections(vs):
-            fig = Figure(figsize=(8.27, 11.69))
-            fig.text(0.08, 0.95, f"{base.title or base.file}", fontsize=11, va="top")
-            fig.text(0.08, 0.92, head, fontsize=15, weight="bold", va="top")
-            y = 0.88
-            for line in lines:
-                for part in textwrap.wrap(line.replace("`", ""), 95) or [""]:
-                    fig.text(0.08, y, part, fontsize=9.5, va="top", family="DejaVu Sans")
-                    y -= 0.022
+        for fig in sheet_pages(vs):
             pdf.savefig(fig)
     return buf.getvalue()
 

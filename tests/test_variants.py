@@ -313,3 +313,21 @@ def test_a_scene_without_variants_is_one_clear_line(tmp_path, capsys):
     assert err.count("\n") == 1 and "no [variants] table" in err
     with pytest.raises(SceneError):
         generate(parse_scene(FOURBAR.split("[variants]")[0]), 3, 0)
+
+
+def test_the_worked_problems_variants_table_changes_no_solution(capsys):
+    """The seed four-bar states [variants]: its solve --json is that of the scene without
+    the table, and 40 variants of it exist (it stays a triple rocker)."""
+    from pathlib import Path
+    path = Path(__file__).parent.parent / "worked_problems" / "fourbar_image_points.toml"
+    text = path.read_text()
+    assert "[variants]" in text
+    with_table = solve(parse_scene(text)).to_dict()
+    without = solve(parse_scene(text.split("[variants]")[0])).to_dict()
+    assert with_table == without
+    vs = generate(parse_scene(text), 40, 7)
+    assert len(vs.variants) == 40 and vs.linkage == "four-bar: non-Grashof triple rocker"
+    for v in vs.variants:
+        raw = tomllib.loads(v.text)
+        s, *pq, l = sorted([raw["links"]["AB"], raw["links"]["BC"], raw["links"]["CD"], 100])
+        assert s + l > sum(pq)
