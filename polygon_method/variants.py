@@ -146,7 +146,7 @@ class VariantSet:
                  f"only {n} good variants found in {self.tried} of the {self.space} "
                  "combinations of [variants]")
         return (f"{where} (assembled on the stated branch, every step's condition at least "
-                f"{self.base.variation.min_text}, still a {self.linkage.split(': ', 1)[1]}), "
+                f"{self.base.variation.min_text}, the class kept: {self.linkage}), "
                 f"not {self.requested}" + (f"; turned down: {why}" if why else "")
                 + f": widen the ranges or ask for --count {n}")
 
@@ -385,7 +385,7 @@ def generate(scene: Scene, count: int, seed: int, *, batch: int | None = None) -
                 continue
             if len(found) >= count:
                 break
-            v = _confirm(b, len(found) + 1, width, var, scene, title, seed, shape, cls,
+            v = _confirm(b, len(found) + 1, width, var, plan, title, seed, shape, cls,
                          branches, rejected)
             if v is not None:
                 found.append(v)
@@ -393,12 +393,37 @@ def generate(scene: Scene, count: int, seed: int, *, batch: int | None = None) -
                       dict(rejected), cls, qs)
 
 
-def _confirm(b, k, width, var, scene, title, seed, shape, cls, branches, rejected):
+def _hints_moved(r, plan, sc):
+    """An assembly hint given as a rough position is the base figure's: in a variant it
+    becomes the point's position on the base scene's branch (to 0.1 of the scene's unit),
+    so that the variant's file shows its own figure."""
+    hints = r.get("assembly", {})
+    if not any(isinstance(h, list) for h in hints.values()):
+        return r
+    m = evaluate(plan, dims=plan.dimensions(sc), upto=0)
+    u = sc.length_unit
+    r["assembly"] = {p: ([_round(m.P[p][0] / u), _round(m.P[p][1] / u)]
+                         if isinstance(h, list) and p in m.P else h)
+                     for p, h in hints.items()}
+    return r
+
+
+def _round(x):
+    y = round(float(x), 1)
+    return int(y) if y.is_integer() else y
+
+
+def _confirm(b, k, width, var, plan, title, seed, shape, cls, branches, rejected):
     """Write the candidate as a scene, read it back and solve it plainly: a Variant, or
     None (with the reason counted) where it does not pass again."""
-    t, r, _ = b
+    t, r, sc0 = b
     vid = f"{k:0{width}d}"
     name = f"variant-{vid}.toml"
+    try:
+        r = _hints_moved(copy.deepcopy(r), plan, sc0)
+    except PolygonMethodError:
+        rejected["does not solve"] += 1
+        return None
     r = dict(r)
     r["title"] = f"{title}, variant {vid}"
     values = {v.key: v.values[i] for v, i in zip(var.varied, t)}
@@ -462,7 +487,7 @@ def answer_key_markdown(vs: VariantSet) -> str:
     out = [f"# Answer key: {base.title or base.file}", "",
            f"{len(vs.variants)} variants, seed {vs.seed}; each assembled as the base scene, "
            f"every construction step's condition at least {base.variation.min_text}, "
-           f"the linkage still a {vs.linkage.split(': ', 1)[1]}. Values to four significant "
+           f"the linkage's class kept ({vs.linkage}). Values to four significant "
            "figures (the CSV has ten); grade with `polygon-method check BASE ANSWERS "
            "--variants DIR`.", ""]
     head = ["variant"] + keys + [q[0] for q in vs.questions]
@@ -515,8 +540,9 @@ def _given(sc: Scene, raw: dict) -> list:
                        if s["path"] in ("horizontal", "vertical")
                        else f"slider {name} moves on a path at {s['path']}{where}")
     for p, h in raw.get("assembly", {}).items():
-        out.append(f"{p} assembled {h}" if isinstance(h, str)
-                   else f"{p} near ({_n(h[0])}, {_n(h[1])}) {u}")
+        out.append(f"{p} assembled {h} (of its two positions)" if isinstance(h, str)
+                   else f"{p} assembled near ({_n(h[0])}, {_n(h[1])}) {u} (of its two "
+                   "positions)")
     inp = raw["input"]
     line = (f"crank {inp['crank']} at {_q(inp['angle'], 'deg')} from +x (ccw), turning at "
             f"{inp['speed']}")

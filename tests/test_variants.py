@@ -331,3 +331,23 @@ def test_the_worked_problems_variants_table_changes_no_solution(capsys):
         raw = tomllib.loads(v.text)
         s, *pq, l = sorted([raw["links"]["AB"], raw["links"]["BC"], raw["links"]["CD"], 100])
         assert s + l > sum(pq)
+
+
+def test_a_rough_position_hint_follows_each_variants_own_figure():
+    """Whitworth's lever end P is placed by a rough position read off the base figure; in
+    each variant it is that variant's own P, on the base scene's branch."""
+    from pathlib import Path
+    text = (Path(__file__).parent.parent / "worked_problems" / "whitworth.toml").read_text()
+    text += "\n[variants]\nangle = { from = 0, to = 355, step = 5 }\n"
+    base = parse_scene(text)
+    assert isinstance(base.assembly["P"], tuple)
+    sigma = [getattr(st, "sigma", None) for st in compile_plan(base).steps]
+    vs = generate(base, 12, 3)
+    for v in vs.variants:
+        hint = tomllib.loads(v.text)["assembly"]["P"]
+        sol = solve(v.scene)
+        assert [c * 1e3 for c in sol.P["P"]] == pytest.approx(hint, abs=0.051)
+        assert [getattr(st, "sigma", None) for st in compile_plan(v.scene).steps] == sigma
+        # the slotted lever passes through the block: O4, A and P in line
+        (ox, oy), (ax, ay), (px, py) = sol.P["O4"], sol.P["A"], sol.P["P"]
+        assert abs((ax - ox) * (py - oy) - (ay - oy) * (px - ox)) < 1e-12
