@@ -16,7 +16,6 @@ import math
 from dataclasses import dataclass
 
 from ..errors import SceneError
-from ..units import parse_quantity
 from .records import split_name
 
 __all__ = ["Varied", "Variation", "VariantOf", "DEFAULT_MIN_CONDITION", "MAX_VALUES"]
