@@ -294,6 +294,7 @@ def test_too_few_variants_is_one_line_and_writes_nothing(tmp_path, capsys):
     ("min_condition = 1.5", "a sine between 0 and 1"),
     ("A = { z = [1] }", "unknown key 'z'"),
     ("BC = { from = 60, to = 75 }", "the range has no step"),
+    ("BC = { from = 60, to = 75, step = 5e-324 }", "holds 10001 values"),
 ])
 def test_a_bad_variants_table_is_one_located_line(tmp_path, capsys, line, words):
     text = FOURBAR.split("[variants]")[0] + "[variants]\n" + line + "\n"
@@ -351,3 +352,42 @@ def test_a_rough_position_hint_follows_each_variants_own_figure():
         # the slotted lever passes through the block: O4, A and P in line
         (ox, oy), (ax, ay), (px, py) = sol.P["O4"], sol.P["A"], sol.P["P"]
         assert abs((ax - ox) * (py - oy) - (ay - oy) * (px - ox)) < 1e-12
+
+
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+_leaf = st.one_of(st.integers(-10**6, 10**6), st.floats(allow_nan=True, allow_infinity=True),
+                  st.booleans(), st.sampled_from(["60 mm", "100 rpm", "15 deg", "x", "",
+                                                  "3 rad/s ccw", "-5 cm", "1e9 m"]))
+_value = st.recursive(_leaf, lambda inner: st.one_of(
+    st.lists(inner, max_size=4),
+    st.dictionaries(st.sampled_from(["from", "to", "step", "unit", "x", "y", "along",
+                                     "distances", "B", "C", "diameter", "force", "z"]),
+                    inner, max_size=4)), max_leaves=8)
+_keys = st.sampled_from(["BC", "CD", "AB", "angle", "speed", "acceleration", "min_condition",
+                         "A", "D", "E", "B", "C", "Q", "BX", "O2-A", "id"])
+
+
+@settings(max_examples=150, deadline=None)
+@given(table=st.dictionaries(_keys, _value, max_size=4),
+       variant=st.one_of(st.none(), st.dictionaries(st.sampled_from(["id", "of", "seed", "q"]),
+                                                    _leaf, max_size=3)))
+def test_any_variants_table_reads_or_is_one_scene_error(table, variant):
+    """Whatever [variants] and [variant] hold: a scene, or a SceneError naming the table;
+    never another exception."""
+    raw = tomllib.loads(FOURBAR.split("[variants]")[0])
+    raw["pins"] = {"B": {"diameter": 20}}
+    raw["variants"] = table
+    if variant is not None:
+        raw["variant"] = variant
+    try:
+        sc = scene_from_table(raw)
+    except SceneError as exc:
+        assert exc.key and ("variant" in exc.key or "[variants]" in exc.key)
+        return
+    if sc.variation is not None:
+        assert sc.variation.varied and 0 < sc.variation.min_condition < 1
+        for v in sc.variation.varied:
+            assert len(v.values) == len(v.si) == len(set(v.si)) >= 1
+            assert all(math.isfinite(x) for x in v.si)

@@ -289,7 +289,8 @@ class _Variants:
         if b < a:
             raise self.error(f"{key}: the range is empty (from {a!r} is above to {b!r})",
                              "variants", where)
-        n = int(math.floor((b - a) / s + 1e-9)) + 1
+        span = (b - a) / s
+        n = int(math.floor(span + 1e-9)) + 1 if span < 10 * MAX_VALUES else MAX_VALUES + 1
         if n > MAX_VALUES:
             raise self.error(f"{key}: the range holds {n} values (at most {MAX_VALUES}); take "
                              "a larger step", "variants", where)
