@@ -292,8 +292,8 @@ class _Variants:
         span = (b - a) / s
         n = int(math.floor(span + 1e-9)) + 1 if span < 10 * MAX_VALUES else MAX_VALUES + 1
         if n > MAX_VALUES:
-            raise self.error(f"{key}: the range holds {n} values (at most {MAX_VALUES}); take "
-                             "a larger step", "variants", where)
+            raise self.error(f"{key}: the range holds more than {MAX_VALUES} values; take a "
+                             "larger step", "variants", where)
         vals = [_g(a + i * s) for i in range(n)]
         if u == unit:
             return vals
