@@ -393,3 +393,26 @@ def test_any_variants_table_reads_or_is_one_scene_error(table, variant):
         for v in sc.variation.varied:
             assert len(v.values) == len(v.si) == len(set(v.si)) >= 1
             assert all(math.isfinite(x) for x in v.si)
+
+
+def test_variants_output_directory_rules(tmp_path, capsys):
+    base = _write(tmp_path, FOURBAR)
+    afile = tmp_path / "a.txt"
+    afile.write_text("keep")
+    assert main(["variants", str(base), "--count", "3", "-o", str(afile)]) == 2
+    assert "not a directory" in capsys.readouterr().err and afile.read_text() == "keep"
+    assert main(["variants", str(base), "--count", "3", "-o",
+                 str(tmp_path / "no" / "such")]) == 2
+    assert "no directory" in capsys.readouterr().err
+    out = tmp_path / "class"
+    assert main(["variants", str(base), "--count", "4", "--seed", "1", "-o", str(out)]) == 0
+    first = (out / "variant-01.toml").read_text()
+    capsys.readouterr()
+    # a smaller class into the same directory would leave variant-04 of the earlier run
+    assert main(["variants", str(base), "--count", "3", "--seed", "2", "-o", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "variant-04.toml" in err
+    assert (out / "variant-01.toml").read_text() == first  # nothing was replaced
+    assert main(["variants", str(base), "--count", "4", "--seed", "2", "-o", str(out)]) == 0
+    assert (out / "variant-01.toml").read_text() != first
+    assert main(["variants", str(base), "--count", "0", "-o", str(out)]) == 2
