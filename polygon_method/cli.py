@@ -11,6 +11,7 @@ import argparse
 import json
 import math
 import os
+import re
 import stat
 import sys
 import tempfile
@@ -198,11 +199,13 @@ class _VariantBook:
 
     @staticmethod
     def _names(text):
-        text = text.strip()
-        if text.lower().endswith(".toml"):
+        """The names a variant goes by: "variant-07.toml", "variant-07", "Variant 07", "07",
+        "7" are one."""
+        text = text.strip().lower()
+        if text.endswith(".toml"):
             text = text[:-5]
-        bare = text[len("variant-"):] if text.lower().startswith("variant-") else text
-        return {text.lower(), bare.lower()} | ({str(int(bare))} if bare.isdigit() else set())
+        bare = re.sub(r"^variant[\s_-]*", "", text)
+        return {text, bare} | ({str(int(bare))} if bare.isdigit() else set())
 
     def find(self, named):
         """(id, solution, tolerances) of the variant a student names; raises a

@@ -252,6 +252,7 @@ def test_cli_writes_scenes_key_and_sheet_and_check_pairs_each_student(tmp_path):
               f'omega_BC = "{abs(float(key["07"]["omega_BC (rad/s)"])):.4f} rad/s"\n')
     (answers / "ann.toml").write_text('variant = "07"\n' + right7)
     (answers / "bob.toml").write_text('variant = "variant-03.toml"\n' + right7)
+    (answers / "eve.toml").write_text("variant = \"Variant 7\"\n" + right7)
     (answers / "cy.toml").write_text(right7)  # names no variant
     (answers / "dee.toml").write_text('variant = "77"\n' + right7)
     book = tmp_path / "book.csv"
@@ -262,6 +263,7 @@ def test_cli_writes_scenes_key_and_sheet_and_check_pairs_each_student(tmp_path):
     assert graded["bob"]["variant"] == "03" and graded["bob"]["v_C"].startswith("WRONG")
     assert graded["cy"]["error"] and "names no variant" in graded["cy"]["error"]
     assert graded["dee"]["variant"] == "77" and "not in" in graded["dee"]["error"]
+    assert graded["eve"]["variant"] == "07" and graded["eve"]["right"] == "2"
     # one file: 0 against its own variant, 1 against another
     assert main(["check", str(base), str(answers / "ann.toml"), "--variants", str(out)]) == 0
     assert main(["check", str(out / "variant-07.toml"), str(answers / "ann.toml")]) == 0
