@@ -323,8 +323,7 @@ def generate(scene: Scene, count: int, seed: int, *, batch: int | None = None) -
                          "docs/variants.md)", file=scene.file, key="[variants]")
     if count < 1:
         raise SceneError(f"--count must be at least 1, got {count}", key="--count")
-    base_sol = solve(scene)  # the base problem itself must solve
-    del base_sol
+    solve(scene)  # the base problem itself must solve (else its error, as solve gives it)
     plan = compile_plan(scene)
     branches = _branches(plan)
     shape = _shape(scene)
