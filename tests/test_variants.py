@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import csv
 import math
+import re
 import tomllib
 
 import numpy as np
@@ -234,7 +235,8 @@ def test_cli_writes_scenes_key_and_sheet_and_check_pairs_each_student(tmp_path):
     names = sorted(p.name for p in out.iterdir())
     assert names == ["answer-key.csv", "answer-key.md", "problem-sheet.md",
                      "problem-sheet.pdf"] + [f"variant-{k:02d}.toml" for k in range(1, 9)]
-    assert (out / "problem-sheet.pdf").read_bytes().startswith(b"%PDF")
+    pdf = (out / "problem-sheet.pdf").read_bytes()
+    assert pdf.startswith(b"%PDF") and len(re.findall(rb"/Type /Page\b", pdf)) == 8
     rows = list(csv.DictReader((out / "answer-key.csv").open()))
     assert [r["variant"] for r in rows] == [f"{k:02d}" for k in range(1, 9)]
     for r in rows:  # the key against the loop equations solved by hand
