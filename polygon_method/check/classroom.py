@@ -64,6 +64,7 @@ class Row:
     file: str
     verdicts: tuple
     error: str | None = None
+    variant: str | None = None  # the student's own variant, where variants are graded
 
     @property
     def right(self) -> int:
@@ -88,18 +89,29 @@ def _keys(rows):
     return keys
 
 
+def _with_variants(rows) -> bool:
+    return any(r.variant is not None for r in rows)
+
+
 def class_text(rows) -> str:
-    """A row per student: right of total, and the wrong answers with their mistakes."""
+    """A row per student: right of total, and the wrong answers with their mistakes (and
+    each student's variant, where variants are graded)."""
     out = []
     w = max([len(r.student) for r in rows] + [7])
-    out.append(f"{'student':<{w}}  {'right':>9}  wrong answers (mistake)")
+    vw = max([len(r.variant or "-") for r in rows] + [7]) if _with_variants(rows) else 0
+
+    def var(r):
+        return f"{r.variant or '-':<{vw}}  " if vw else ""
+
+    out.append(f"{'student':<{w}}  " + (f"{'variant':<{vw}}  " if vw else "")
+               + f"{'right':>9}  wrong answers (mistake)")
     for r in rows:
         if r.error:
-            out.append(f"{r.student:<{w}}  {'-':>9}  could not be read: {r.error}")
+            out.append(f"{r.student:<{w}}  {var(r)}{'-':>9}  could not be read: {r.error}")
             continue
         wrong = [f"{v.key} ({_words(v.mistake) if v.mistake else 'unexplained'})"
                  for v in r.verdicts if not v.ok]
-        out.append(f"{r.student:<{w}}  {f'{r.right} of {len(r.verdicts)}':>9}  "
+        out.append(f"{r.student:<{w}}  {var(r)}{f'{r.right} of {len(r.verdicts)}':>9}  "
                    + ("; ".join(wrong) if wrong else "-"))
     return "\n".join(out)
 
@@ -132,11 +144,13 @@ def summary_text(rows) -> str:
 
 def _table(rows):
     keys = _keys(rows)
-    head = ["student", "file"] + keys + ["right", "of", "error"]
+    variants = _with_variants(rows)
+    head = ["student", "file"] + (["variant"] if variants else []) + keys + \
+        ["right", "of", "error"]
     body = []
     for r in rows:
         by_key = {v.key: v for v in r.verdicts}
-        cells = [r.student, r.file]
+        cells = [r.student, r.file] + ([r.variant or ""] if variants else [])
         for k in keys:
             v = by_key.get(k)
             cells.append("" if v is None else ("right" if v.ok else
@@ -171,6 +185,7 @@ def gradebook_markdown(rows) -> str:
 def class_dict(rows) -> dict:
     """The class for ``check --json``."""
     return {"students": [{"student": r.student, "file": r.file, "error": r.error,
+                          **({"variant": r.variant} if _with_variants(rows) else {}),
                           "right": r.right, "answers": [v.to_dict() for v in r.verdicts]}
                          for r in rows],
             "summary": summary_text(rows).splitlines()}

@@ -14,6 +14,7 @@ from ..units import LENGTH_UNITS, UNITS, parse_quantity
 from .records import (_ABSURD_LONG, _ABSURD_SHORT, _POINT_ONLY, _UNIT_ORDER, TOP_KEYS, FixedPath,
                       GuideSlider, Link, Scene, split_name)
 from .tables import _suggest, _Tables
+from .variation import _Variants
 
 #: the most a scene file may hold: a scene is a page of text (``/dev/zero`` is not read on)
 MAX_SCENE_BYTES = 1 << 20
@@ -65,6 +66,18 @@ def parse_scene(text: str, file: str | None = None) -> Scene:
         raise SceneError("the file has no tables or keys (only comments); a scene needs "
                          "[ground], [links] and [input]", file=file)
     return _Loader(raw, text, file).scene()
+
+
+def scene_table(scene: Scene) -> dict:
+    """The TOML table a scene was read from (its text parsed again), for making variants
+    of it; empty for a scene not read from text."""
+    return tomllib.loads("\n".join(scene._lines)) if scene._lines else {}
+
+
+def scene_from_table(raw: dict, file: str | None = None) -> Scene:
+    """A scene from a TOML table already parsed (checked exactly as a file's would be; the
+    messages name no line)."""
+    return _Loader(raw, "", file).scene()
 
 
 #: tomllib's messages, in the words of this tool
@@ -182,7 +195,7 @@ def _printable(text):
     return "".join(c if c.isprintable() else repr(c)[1:-1] for c in str(text))
 
 
-class _Loader(_Tables):
+class _Loader(_Tables, _Variants):
     def __init__(self, raw: dict, text: str, file):
         self.raw = raw
         self.lines = text.splitlines()
@@ -318,10 +331,13 @@ class _Loader(_Tables):
         loads = self.loads(known)
         tolerance, answers = self.answers(known, sliders, pins, loads)
         self.connected(links, points, sliders, ground, inp)
+        variation = self.variation(inp, ground, sliders, loads)
+        variant = self.variant_of()
         return Scene(title=title, units=units, ground=ground, links=tuple(links),
                      points=tuple(points), sliders=tuple(sliders), assembly=assembly,
                      input=inp, pins=tuple(pins), loads=tuple(loads), answers=tuple(answers),
-                     tolerance=tolerance, file=self.file, _link_index=index,
+                     tolerance=tolerance, file=self.file, variation=variation,
+                     variant=variant, _link_index=index,
                      _lines=tuple(self.lines))
 
     def scale(self):
@@ -371,14 +387,17 @@ class _Loader(_Tables):
 
 # --------------------------------------------------------------------------- answer files
 
-_ANSWER_FILE_KEYS = ("answers", "title", "student", "name", "notes", "source")
+_ANSWER_FILE_KEYS = ("answers", "title", "student", "name", "notes", "source", "variant")
 
 
-def parse_answers(text: str, scene: Scene, file: str | None = None):
+def parse_answers(text: str, scene: Scene, file: str | None = None, *,
+                  with_variant: bool = False):
     """Read an answer file (an ``[answers]`` table, e.g. a student's) against ``scene``.
 
     Keys and values follow the scene's ``[answers]`` rules. Returns
-    ``(tolerance or None, tuple of Answer)``; raises :class:`SceneError` naming the key.
+    ``(tolerance or None, tuple of Answer)``, and with ``with_variant`` the variant the
+    file names (``variant = "07"``, a number, or a variant's file name; None if it names
+    none) as a third item; raises :class:`SceneError` naming the key.
     """
     try:
         raw = tomllib.loads(text)
@@ -395,10 +414,19 @@ def parse_answers(text: str, scene: Scene, file: str | None = None):
     loader.index = scene._link_index
     tolerance, answers = loader.answers(set(scene.point_names), scene.sliders, scene.pins,
                                         scene.loads)
-    return tolerance, tuple(answers)
+    if not with_variant:
+        return tolerance, tuple(answers)
+    variant = raw.get("variant")
+    if isinstance(variant, int) and not isinstance(variant, bool):
+        variant = f"{variant:02d}"
+    if variant is not None and (not isinstance(variant, str) or not variant.strip()):
+        raise SceneError("variant names the student's variant: variant = \"07\" (or its "
+                         "file name, \"variant-07.toml\")", file=file, key="variant",
+                         line=loader.top_line("variant"))
+    return tolerance, tuple(answers), (variant.strip() if variant else None)
 
 
-def load_answers(path, scene: Scene):
+def load_answers(path, scene: Scene, *, with_variant: bool = False):
     """Read an answer file from ``path``; see :func:`parse_answers`."""
     path = Path(path)
     try:
@@ -419,7 +447,7 @@ def load_answers(path, scene: Scene):
     if "\x00" in text:
         raise SceneError("not a text file (it holds binary data)", file=str(path))
     try:
-        return parse_answers(text, scene, file=str(path))
+        return parse_answers(text, scene, file=str(path), with_variant=with_variant)
     except PolygonMethodError as exc:
         raise exc.located(str(path))
 

@@ -24,7 +24,7 @@ _ABSURD_LONG = 1e4
 _ABSURD_SHORT = 1e-7
 
 TOP_KEYS = ("title", "source", "notes", "units", "ground", "links", "points", "sliders",
-            "assembly", "input", "pins", "loads", "answers")
+            "assembly", "input", "pins", "loads", "answers", "variants", "variant")
 INPUT_KEYS = ("crank", "angle", "speed", "acceleration")
 
 #: answer key prefix -> (unit kind, what it names, sense allowed)
@@ -156,6 +156,9 @@ class Scene:
     answers: tuple = ()
     tolerance: float | None = None
     file: str | None = None
+    #: the scene's [variants] (what may vary per student), and [variant] (which one it is)
+    variation: object = field(default=None, compare=False)
+    variant: object = field(default=None, compare=False)
     _link_index: dict = field(default_factory=dict, repr=False, compare=False)
     _lines: tuple = field(default=(), repr=False, compare=False)  # the file's text, by line
 

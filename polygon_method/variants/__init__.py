@@ -1,0 +1,448 @@
+"""A variant per student: the scene's ``[variants]`` table says what may vary and how; this
+module chooses the variants (pure: no files are read or written here).
+
+A candidate is a choice of one value for every varied key, drawn with
+``numpy.random.default_rng(seed)``. Candidates are screened many at a time: the base
+scene's plan (its steps and assembly branches) is evaluated once over all of them, with
+every dimension an array (``Plan.dimensions`` of each candidate, stacked), and a candidate
+passes where every step assembles, every step's condition is at least ``min_condition``
+and the linkage keeps its class (Grashof's class of a four-bar, whether a slider crank's
+crank turns fully, Whitworth or oscillating slotted lever; for any other mechanism,
+whether the crank turns fully on its branch). Each chosen candidate is then written as a
+scene, read back by the scene reader, compiled on its own (its assembly hints must choose
+the base scene's branches) and solved plainly; only a variant that passes again is kept.
+Candidates differ in at least one value (values that are equal in SI are listed once), so
+no two variants are the same.
+
+Small spaces (at most :data:`ENUMERATE` combinations) are visited in a random order to
+the end, so "only N variants exist" is exact; larger ones are sampled without repeats up
+to :data:`MAX_TRIED` candidates.
+"""
+
+from __future__ import annotations
+
+import copy
+import json
+import math
+import re
+from collections import Counter
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from ..errors import PolygonMethodError, SceneError
+from ..kinematics import evaluate
+from ..linkage import four_bar_of, grashof, slider_crank_of
+from ..compiler import compile_plan
+from ..scene import Scene, parse_scene, scene_from_table, scene_table
+from ..solution import solve
+from .papers import (answer, answer_key_csv, answer_key_markdown, sheet_markdown, sheet_pdf,
+                     summary_text)
+
+__all__ = ["generate", "VariantSet", "Variant", "linkage_class", "dump_toml", "questions",
+           "screen", "answer", "ENUMERATE", "MAX_TRIED", "answer_key_csv",
+           "answer_key_markdown", "sheet_markdown", "sheet_pdf", "summary_text"]
+
+#: a space of at most this many combinations is visited whole
+ENUMERATE = 50_000
+#: at most this many candidates are screened in a larger space
+MAX_TRIED = 20_000
+
+
+# --------------------------------------------------------------------------- the class
+
+
+def _shape(scene: Scene):
+    """What kind of linkage the scene is, for keeping its class: ("four-bar", names),
+    ("slider crank", names), ("slotted", names) or ("mechanism", None)."""
+    fb = four_bar_of(scene)
+    if fb is not None:
+        return ("four-bar", (fb.crank, fb.coupler, fb.output, fb.o2, fb.o4))
+    sk = slider_crank_of(scene)
+    if sk is not None:
+        return ("slider crank", (sk.o, sk.crank, sk.rod, sk.b))
+    plan = compile_plan(scene)
+    core = [s for s in plan.steps if s.kind != "carried"]
+    if [s.kind for s in core[:2]] == ["crank", "slotted"] and \
+            core[1].point == core[0].tip and core[1].known in scene.ground:
+        return ("slotted", (core[0].link, core[0].pivot, core[1].known))
+    return ("mechanism", None)
+
+
+def linkage_class(scene: Scene, shape=None) -> str:
+    """The class a variant must keep, in words: "four-bar: crank-rocker", "slider crank:
+    the crank turns fully", "slotted lever: Whitworth", "mechanism: the crank turns fully"."""
+    kind, names = shape or _shape(scene)
+    if kind == "four-bar":
+        crank, coupler, output, o2, o4 = names
+        (ax, ay), (dx, dy) = scene.ground[o2], scene.ground[o4]
+        g = grashof(scene.link(crank).length, scene.link(coupler).length,
+                    scene.link(output).length, math.hypot(dx - ax, dy - ay))
+        return f"four-bar: {g.kind}"
+    if kind == "slider crank":
+        o, crank, rod, b = names
+        (ox, oy) = scene.ground[o]
+        path = scene.slider(b)
+        (qx, qy), (ux, uy) = path.through, path.u
+        e = abs((ox - qx) * uy - (oy - qy) * ux)
+        r, ell = scene.link(crank).length, scene.link(rod).length
+        return "slider crank: " + ("the crank turns fully" if ell >= (r + e) * (1 - 1e-12)
+                                   else "the crank rocks")
+    if kind == "slotted":
+        crank, pivot, known = names
+        (ox, oy), (kx, ky) = scene.ground[pivot], scene.ground[known]
+        whit = scene.link(crank).length > math.hypot(kx - ox, ky - oy)
+        return "slotted lever: " + ("Whitworth (the lever turns fully)" if whit
+                                    else "oscillating lever")
+    from ..tracking import Sweeper
+    try:
+        turns = Sweeper(scene).domain.full_turn
+    except PolygonMethodError:
+        return "mechanism: locked"
+    return "mechanism: " + ("the crank turns fully" if turns else "the crank rocks")
+
+
+# --------------------------------------------------------------------------- records
+
+
+@dataclass(frozen=True)
+class Variant:
+    """One student's problem: its id, file name, the values chosen (as the scene writes
+    them, by ``[variants]`` key), its scene text, the scene read back and its solution."""
+
+    id: str
+    name: str
+    values: dict
+    shown: dict
+    text: str
+    scene: Scene
+    solution: object
+    least_condition: float
+    linkage: str
+
+
+@dataclass(frozen=True)
+class VariantSet:
+    base: Scene
+    variants: tuple
+    requested: int
+    seed: int
+    space: int  # combinations the ranges allow
+    tried: int  # candidates screened
+    exhaustive: bool  # every combination was screened
+    rejected: dict  # why candidates were turned down -> how many
+    linkage: str
+    questions: tuple  # (key, kind, names, unit, signed)
+
+    def shortfall(self) -> str | None:
+        """One line when fewer variants than asked were found, else None."""
+        n = len(self.variants)
+        if n >= self.requested:
+            return None
+        why = ", ".join(f"{k}: {v}" for k, v in sorted(self.rejected.items(),
+                                                          key=lambda kv: -kv[1]))
+        where = (f"only {n} of the {self.space} combinations of [variants] make a good variant"
+                 if self.exhaustive else
+                 f"only {n} good variants found in {self.tried} of the {self.space} "
+                 "combinations of [variants]")
+        return (f"{where} (assembled on the stated branch, every step's condition at least "
+                f"{self.base.variation.min_text}, the class kept: {self.linkage}), "
+                f"not {self.requested}" + (f"; turned down: {why}" if why else "")
+                + f": widen the ranges or ask for --count {n}")
+
+
+# --------------------------------------------------------------------------- TOML
+
+
+_BARE = re.compile(r"^[A-Za-z0-9_-]+$")
+
+
+def _key(k) -> str:
+    return k if _BARE.match(k) else json.dumps(k, ensure_ascii=False)
+
+
+def _value(v) -> str:
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, int):
+        return str(v)
+    if isinstance(v, float):
+        return repr(v)
+    if isinstance(v, str):
+        return json.dumps(v, ensure_ascii=False)
+    if isinstance(v, list):
+        return "[" + ", ".join(_value(x) for x in v) + "]"
+    if isinstance(v, dict):
+        return "{ " + ", ".join(f"{_key(k)} = {_value(x)}" for k, x in v.items()) + " }"
+    raise TypeError(f"cannot write {type(v).__name__} as TOML")
+
+
+def dump_toml(raw: dict, header: str = "") -> str:
+    """A scene's table as TOML text: top-level keys first, then one ``[table]`` each."""
+    out = [f"# {line}" if line else "#" for line in header.splitlines()]
+    for k, v in raw.items():
+        if not isinstance(v, dict):
+            out.append(f"{_key(k)} = {_value(v)}")
+    for k, v in raw.items():
+        if isinstance(v, dict):
+            out.append("")
+            out.append(f"[{_key(k)}]")
+            out.extend(f"{_key(kk)} = {_value(vv)}" for kk, vv in v.items())
+    return "\n".join(out) + "\n"
+
+
+def _put(raw, path, value):
+    d = raw
+    for p in path[:-1]:
+        d = d[p]
+    d[path[-1]] = value
+
+
+# --------------------------------------------------------------------------- questions
+
+
+_UNITS = {"v": "m/s", "a": "m/s^2", "omega": "rad/s", "alpha": "rad/s^2", "vs": "m/s",
+          "as": "m/s^2", "ac": "m/s^2", "rub": "m/s", "torque": "N m"}
+
+
+def questions(scene: Scene) -> tuple:
+    """What the answer key gives: the base scene's ``[answers]`` keys where it has them
+    (centres aside), else every moving point's speed and acceleration, every moving link's
+    omega and alpha, each slider's sliding velocity and acceleration, the input torque.
+    Each as (key, kind, names, unit, signed)."""
+    asked = [a for a in scene.answers if a.kind != "centre"]
+    if asked:
+        return tuple((a.key, a.kind, tuple(a.names), _UNITS[a.kind],
+                      a.kind in ("omega", "alpha", "vs", "as", "torque")) for a in asked)
+    out = []
+    ground = set(scene.ground)
+    for p in scene.point_names:
+        if p not in ground:
+            out.append((f"v_{p}", "v", (p,), "m/s", False))
+    for p in scene.point_names:
+        if p not in ground:
+            out.append((f"a_{p}", "a", (p,), "m/s^2", False))
+    from ..scene import split_name
+    for lk in scene.links:  # the crank's omega is given
+        if not (lk.p in ground and lk.q in ground) and lk.key != scene.input.crank:
+            out.append((f"omega_{lk.key}", "omega", split_name(lk.key), "rad/s", True))
+    for lk in scene.links:
+        if not (lk.p in ground and lk.q in ground) and lk.key != scene.input.crank:
+            out.append((f"alpha_{lk.key}", "alpha", split_name(lk.key), "rad/s^2", True))
+    for s in scene.sliders:
+        out.append((f"vs_{s.point}", "vs", (s.point,), "m/s", True))
+        out.append((f"as_{s.point}", "as", (s.point,), "m/s^2", True))
+    for p in scene.pins:
+        out.append((f"rub_{p.point}", "rub", (p.point,), "m/s", False))
+    if scene.loads:
+        out.append(("torque", "torque", (), "N m", True))
+    return tuple(out)
+
+
+# --------------------------------------------------------------------------- screening
+
+
+def _stack(values):
+    """Per-candidate values (numbers, or tuples of them) as arrays (or tuples of arrays)."""
+    first = values[0]
+    if isinstance(first, tuple):
+        return tuple(_stack([v[i] for v in values]) for i in range(len(first)))
+    if isinstance(first, (int, float)):
+        return np.array(values, dtype=float)
+    return first
+
+
+def _stack_dims(dl):
+    d0 = dl[0]
+    ground = {p: _stack([d.ground[p] for d in dl]) for p in d0.ground}
+    steps = tuple(_stack([d.steps[i] for d in dl]) for i in range(len(d0.steps)))
+    radii = {p: _stack([d.radii[p] for d in dl]) for p in d0.radii}
+    return replace(d0, ground=ground, steps=steps, theta=_stack([d.theta for d in dl]),
+                   omega=_stack([d.omega for d in dl]), alpha=_stack([d.alpha for d in dl]),
+                   radii=radii)
+
+
+def screen(plan, scenes, min_condition):
+    """For each candidate scene (of the plan's shape): does it assemble on the plan's
+    branches with every step's condition at least ``min_condition``? Returns (mask, least
+    condition per candidate), from one evaluation of the plan over all of them."""
+    dims = _stack_dims([plan.dimensions(s) for s in scenes])
+    m = evaluate(plan, dims=dims, array=True, upto=0)
+    n = len(scenes)
+    least = np.full(n, np.inf)
+    for i, c in m.cond.items():
+        least = np.minimum(least, np.broadcast_to(np.asarray(c, dtype=float), (n,)))
+    ok = least >= min_condition
+    if m.bad is not None:
+        ok &= ~np.broadcast_to(np.asarray(m.bad, dtype=bool), (n,))
+    ok &= np.isfinite(least)
+    return ok, least
+
+
+def _branches(plan) -> tuple:
+    return tuple(getattr(st, "sigma", None) for st in plan.steps)
+
+
+# --------------------------------------------------------------------------- generation
+
+
+def _candidates(rng, sizes, total):
+    """Index tuples in a random order without repeats: all of them for a small space, a
+    sample for a large one."""
+    if total <= ENUMERATE:
+        for flat in rng.permutation(total):
+            idx, rest = [], int(flat)
+            for n in reversed(sizes):
+                idx.append(rest % n)
+                rest //= n
+            yield tuple(reversed(idx))
+        return
+    seen = set()
+    while len(seen) < min(total, MAX_TRIED):
+        block = np.stack([rng.integers(0, n, size=256) for n in sizes], axis=1)
+        for row in block:
+            t = tuple(int(i) for i in row)
+            if t not in seen:
+                seen.add(t)
+                yield t
+                if len(seen) >= MAX_TRIED:
+                    return
+
+
+def _id_width(count):
+    return max(2, len(str(count)))
+
+
+def generate(scene: Scene, count: int, seed: int, *, batch: int | None = None) -> VariantSet:
+    """Choose ``count`` variants of ``scene`` (see the module docstring), reproducibly
+    from ``seed``. Fewer are returned where fewer exist (:meth:`VariantSet.shortfall`)."""
+    var = scene.variation
+    if var is None:
+        raise SceneError("the scene has no [variants] table: add one saying what may vary, "
+                         "e.g. [variants] BC = { from = 60, to = 75, step = 1 } (see "
+                         "docs/variants.md)", file=scene.file, key="[variants]")
+    if count < 1:
+        raise SceneError(f"--count must be at least 1, got {count}", key="--count")
+    solve(scene)  # the base problem itself must solve (else its error, as solve gives it)
+    plan = compile_plan(scene)
+    branches = _branches(plan)
+    shape = _shape(scene)
+    cls = linkage_class(scene, shape)
+    raw = scene_table(scene)
+    for k in ("variants", "answers", "variant"):
+        raw.pop(k, None)
+    title = scene.title or (scene.file or "scene")
+    sizes = [len(v) for v in var.varied]
+    total = math.prod(sizes)
+    rng = np.random.default_rng(seed)
+    width = _id_width(count)
+    batch = batch or max(4 * count, 64)
+    found, rejected, tried = [], Counter(), 0
+    qs = questions(scene)
+    gen = _candidates(rng, sizes, total)
+    while len(found) < count:
+        picks = []
+        for t in gen:
+            picks.append(t)
+            if len(picks) >= batch:
+                break
+        if not picks:
+            break
+        tried += len(picks)
+        built = []
+        for t in picks:
+            r = copy.deepcopy(raw)
+            for v, i in zip(var.varied, t):
+                for path, value in v.setup:
+                    _put(r, path, copy.deepcopy(value))
+                _put(r, v.path, v.values[i])
+            try:
+                built.append((t, r, scene_from_table(r, scene.file)))
+            except PolygonMethodError:
+                rejected["does not read as a scene (a triangle that cannot close, ...)"] += 1
+        if not built:
+            continue
+        kept = []
+        if shape[0] != "mechanism":
+            for b in built:
+                if linkage_class(b[2], shape) == cls:
+                    kept.append(b)
+                else:
+                    rejected["another linkage class"] += 1
+        else:
+            kept = built
+        if not kept:
+            continue
+        ok, least = screen(plan, [b[2] for b in kept], var.min_condition)
+        for good, b in zip(ok, kept):
+            if not good:
+                rejected["does not assemble, or a step's condition below the minimum"] += 1
+                continue
+            if len(found) >= count:
+                break
+            v = _confirm(b, len(found) + 1, width, var, plan, title, seed, shape, cls,
+                         branches, rejected)
+            if v is not None:
+                found.append(v)
+    return VariantSet(scene, tuple(found), count, seed, total, tried, tried >= total,
+                      dict(rejected), cls, qs)
+
+
+def _hints_moved(r, plan, sc):
+    """An assembly hint given as a rough position is the base figure's: in a variant it
+    becomes the point's position on the base scene's branch (to 0.1 of the scene's unit),
+    so that the variant's file shows its own figure."""
+    hints = r.get("assembly", {})
+    if not any(isinstance(h, list) for h in hints.values()):
+        return r
+    m = evaluate(plan, dims=plan.dimensions(sc), upto=0)
+    u = sc.length_unit
+    r["assembly"] = {p: ([_round(m.P[p][0] / u), _round(m.P[p][1] / u)]
+                         if isinstance(h, list) and p in m.P else h)
+                     for p, h in hints.items()}
+    return r
+
+
+def _round(x):
+    y = round(float(x), 1)
+    return int(y) if y.is_integer() else y
+
+
+def _confirm(b, k, width, var, plan, title, seed, shape, cls, branches, rejected):
+    """Write the candidate as a scene, read it back and solve it plainly: a Variant, or
+    None (with the reason counted) where it does not pass again."""
+    t, r, sc0 = b
+    vid = f"{k:0{width}d}"
+    name = f"variant-{vid}.toml"
+    try:
+        r = _hints_moved(copy.deepcopy(r), plan, sc0)
+    except PolygonMethodError:
+        rejected["does not solve"] += 1
+        return None
+    r = dict(r)
+    r["title"] = f"{title}, variant {vid}"
+    values = {v.key: v.values[i] for v, i in zip(var.varied, t)}
+    shown = {v.key: v.shown[i] for v, i in zip(var.varied, t)}
+    r["variant"] = {"id": vid, "of": title, "seed": int(seed)}
+    header = (f"Variant {vid} of \"{title}\" (seed {seed}): " +
+              ", ".join(f"{v.label} {shown[v.key]}" for v in var.varied))
+    text = dump_toml(r, header)
+    try:
+        sc = parse_scene(text, file=name)
+        if _branches(compile_plan(sc)) != branches:
+            rejected["its assembly hints choose the other branch"] += 1
+            return None
+        sol = solve(sc)
+    except PolygonMethodError:
+        rejected["does not solve"] += 1
+        return None
+    least = min(sol.conditions.values(), default=1.0)
+    if least < var.min_condition:
+        rejected["does not assemble, or a step's condition below the minimum"] += 1
+        return None
+    got = linkage_class(sc, shape)
+    if got != cls:
+        rejected["another linkage class"] += 1
+        return None
+    return Variant(vid, name, values, shown, text, sc, sol, least, got)
+
