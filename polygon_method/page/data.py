@@ -7,7 +7,7 @@ the box each diagram needs in centimetres of paper.
 >>> from polygon_method.page.frames import frames
 >>> d = page_data(frames(pm.load_scene("worked_problems/fourbar_image_points.toml"), 12))
 >>> d["points"], [s["text"] for s in d["scales"]]
-(['B', 'C', 'E', 'F'], ['1 cm = 10 mm', '1 cm = 0.05 m/s', '1 cm = 1 m/s²'])
+(['B', 'C', 'E', 'F', 'G'], ['1 cm = 10 mm', '1 cm = 0.05 m/s', '1 cm = 1 m/s²'])
 """
 
 from __future__ import annotations
