@@ -20,8 +20,8 @@ from .frames import Frames, round_sig
 
 __all__ = ["page_data", "diagram_box"]
 
-#: how far a diagram's box may reach beyond the scene's instant, in its own sizes
-REACH = 0.4
+#: the largest polygon a diagram's box holds, in times the median polygon of the cycle
+REACH = 3.0
 
 
 def _flat(xy) -> list:
@@ -37,9 +37,9 @@ def _xy(fr: Frames, phase):
 
 def diagram_box(fr: Frames, phase: str, scale) -> list:
     """[x0, y0, x1, y1] (cm of paper, y up) that the diagram needs over the frames: every
-    point of every frame (and the pole), but no further than ``REACH`` of its size at the
-    scene's instant beyond its box there (near a limit position the polygons grow without
-    bound; the rest is cut off)."""
+    point of every frame (and the pole), except on frames where a polygon is more than
+    ``REACH`` times its median size (near a limit position, where the polygons grow without
+    bound: what reaches beyond the box is cut off there)."""
     n = len(fr)
     table = _xy(fr, phase)
     names = fr.sol.scene.point_names if phase == "configuration" else fr.moving
@@ -47,11 +47,12 @@ def diagram_box(fr: Frames, phase: str, scale) -> list:
     y = np.array([np.broadcast_to(table[p][1], (n,)) for p in names]) / scale.per_cm
     if phase != "configuration":  # the pole, where every fixed point's image is
         x, y = np.vstack([x, np.zeros((1, n))]), np.vstack([y, np.zeros((1, n))])
-    k = fr.start
-    sx0, sx1, sy0, sy1 = x[:, k].min(), x[:, k].max(), y[:, k].min(), y[:, k].max()
-    reach = REACH * max(sx1 - sx0, sy1 - sy0, 2.0)
-    return [round(float(max(x.min(), sx0 - reach)), 3), round(float(max(y.min(), sy0 - reach)), 3),
-            round(float(min(x.max(), sx1 + reach)), 3), round(float(min(y.max(), sy1 + reach)), 3)]
+        size = np.hypot(x, y).max(axis=0)
+        keep = size <= REACH * np.median(size)
+        keep[fr.start] = True
+        x, y = x[:, keep], y[:, keep]
+    return [round(float(x.min()), 3), round(float(y.min()), 3), round(float(x.max()), 3),
+            round(float(y.max()), 3)]
 
 
 def page_data(fr: Frames) -> dict:
@@ -63,7 +64,7 @@ def page_data(fr: Frames) -> dict:
     sliders = []
     for s in sc.sliders:
         if hasattr(s, "guide"):
-            sliders.append({"point": s.point, "guide": [s.first, s.second]})
+            sliders.append({"point": s.point, "guide": [s.first, s.second], "link": s.guide})
         else:
             sliders.append({"point": s.point, "u": [float(c) for c in s.u],
                             "through": [float(c) for c in s.through]})

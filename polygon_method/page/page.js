@@ -92,6 +92,15 @@ function setup(phase) {
       }
     }
     for (const [p, q, key] of D.links) g.items.push([el(svg, "line", {class: "relative", id: v + "-rel-" + key}, "rel:" + key), "rel", [p, q, key]]);
+    for (const s of D.sliders) {  // a block on a moving link: the link's point under it
+      if (!s.guide) continue;
+      g.items.push([el(svg, "line", {class: "relative"}, "under:" + s.point), "under", s]);
+      g.items.push([el(svg, "line", {class: "sliding", id: v + "-slide-" + s.point, "marker-end": "url(#" + phase + "-head)"}, "sliding:" + s.point), "sliding", s]);
+      if (v === "a") g.items.push([el(svg, "line", {class: "coriolis", "marker-end": "url(#" + phase + "-head)"}, "coriolis:" + s.point), "coriolis", s]);
+      const t = el(svg, "text", {class: "label image-label"}, "under:" + s.point);
+      t.textContent = s.point.toLowerCase() + "1" + (v === "a" ? "'" : "");
+      g.items.push([t, "underlabel", s]);
+    }
     for (const p of D.points) g.items.push([el(svg, "line", {class: "absolute", id: v + "-abs-" + p, "marker-end": "url(#" + phase + "-head)"}, "abs:" + p), "abs", p]);
     const o = el(svg, "text", {class: "label pole", id: v + "-lab-pole"}, "pole:" + phase);
     o.textContent = v === "a" ? "o'" : "o";
@@ -113,6 +122,17 @@ function blockCorners(c, u, size) {  // a square block at c, its sides along u
 function unit(a, b) {
   const dx = b[0] - a[0], dy = b[1] - a[1], L = Math.hypot(dx, dy) || 1;
   return [dx / L, dy / L];
+}
+
+// the image of the guide's point under a sliding block, and (accelerations) the start of
+// the Coriolis component: v_X = v_X1 + vs u; a_X = a_X1 + as u + coriolis
+function under(phase, s, k) {
+  const u = unit(vec("configuration", s.guide[0], k), vec("configuration", s.guide[1], k));
+  const x = vec(phase, s.point, k), S = D.S[s.point];
+  const cor = phase === "velocity" ? [0, 0] : [S[2][k], S[3][k]];
+  const along = phase === "velocity" ? S[0][k] : S[1][k];
+  const back = [x[0] - cor[0], x[1] - cor[1]];
+  return [[back[0] - along * u[0], back[1] - along * u[1]], back];
 }
 
 function update(phase, k) {
@@ -138,6 +158,13 @@ function update(phase, k) {
       const ap = vec("acceleration", p, k);
       const knee = [(ap[0] - w * w * (Pq[0] - Pp[0])) / s, -(ap[1] - w * w * (Pq[1] - Pp[1])) / s];
       if (kind === "cen") line(e, P(p), knee); else line(e, knee, P(q));
+    } else if (kind === "under" || kind === "sliding" || kind === "coriolis" || kind === "underlabel") {
+      const sc = scaleOf(phase).perCm, [u1, back] = under(phase, x, k);
+      const C = (a) => [a[0] / sc, -a[1] / sc];
+      if (kind === "under") line(e, P(x.guide[0]), C(u1));
+      else if (kind === "sliding") line(e, C(u1), C(back));
+      else if (kind === "coriolis") line(e, C(back), P(x.point));
+      else { const c = C(u1); place(e, [c[0] - 0.6 * fs, c[1] + 0.35 * fs]); }
     } else if (kind === "pole") {  // the pole's label, on the side away from the images
       let sx = 0, sy = 0;
       for (const p of D.points) { const c = P(p); const L = Math.hypot(c[0], c[1]) || 1; sx += c[0] / L; sy += c[1] / L; }
@@ -230,6 +257,9 @@ function tipText(tip, k) {
     const link = D.links.find((l) => l[2] === name);
     return link ? "ω_" + name + " = " + angular(D.W[name][k], "rad/s") : tipText("abs:" + name, k);
   }
+  if (kind === "under") return "the point of link " + D.sliders.find((s) => s.point === name).link + " under the block " + name + " (" + name.toLowerCase() + "1 on the velocity polygon)";
+  if (kind === "sliding") return "sliding velocity of " + name + " = " + fmt(D.S[name][0][k]) + " m/s; sliding acceleration " + fmt(D.S[name][1][k]) + " m/s²";
+  if (kind === "coriolis") return "Coriolis component at " + name + " = 2ωv = " + fmt(Math.hypot(D.S[name][2][k], D.S[name][3][k])) + " m/s²";
   if (kind === "slider" || kind === "guide") return "slider " + name + ": sliding velocity " + fmt(D.S[name][0][k]) + " m/s";
   return name;
 }
