@@ -88,6 +88,7 @@ def _matplotlib(fr: Frames, fmt_: str):
     panels = shapes(fr)
     with matplotlib.rc_context({"font.family": "DejaVu Sans"}):
         fig = Figure(figsize=(12, 4.4), dpi=80)
+        fig.subplots_adjust(left=0.01, right=0.99, bottom=0.02, top=0.86, wspace=0.06)
         title = fig.suptitle(_title(fr, 0), fontsize=11)
         artists = []
         for i, (phase, scale, box, lines, labels) in enumerate(panels):

@@ -21,7 +21,7 @@ from .frames import Frames, round_sig
 __all__ = ["page_data", "diagram_box"]
 
 #: the largest polygon a diagram's box holds, in times the median polygon of the cycle
-REACH = 3.0
+REACH = 1.5
 
 
 def _flat(xy) -> list:
