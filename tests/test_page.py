@@ -214,3 +214,25 @@ def test_page_and_animation_of_every_worked_problem(tmp_path, path):
     from PIL import Image
     with Image.open(tmp_path / "c.gif") as im:
         assert im.n_frames == 2
+
+
+def test_the_scene_is_never_written_over_by_a_page(tmp_path, capsys):
+    scene = tmp_path / "s.toml"
+    scene.write_bytes(Path(SEED).read_bytes())
+    link = tmp_path / "s.html"
+    link.symlink_to(scene.name)
+    for argv in (["page", str(scene), "-o", str(link)],
+                 ["draw", str(scene), "--animate", "-o", str(tmp_path / "s.svg")]):
+        if argv[0] == "draw":
+            (tmp_path / "s.svg").symlink_to(scene.name)
+        code = main(argv)
+        err = capsys.readouterr().err
+        assert code == 2 and "scene file itself" in err and len(err.strip().splitlines()) == 1
+    assert scene.read_bytes() == Path(SEED).read_bytes()
+
+
+@pytest.mark.skipif(not Path("/dev/full").exists(), reason="no /dev/full here")
+def test_a_page_to_a_device_is_one_line(capsys):
+    code = main(["page", SEED, "-o", "/dev/full", "--frames", "4"])  # not an .html name
+    err = capsys.readouterr().err
+    assert code == 2 and ".html" in err and len(err.strip().splitlines()) == 1
