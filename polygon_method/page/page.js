@@ -136,7 +136,7 @@ function under(phase, s, k) {
 }
 
 function update(phase, k) {
-  const g = drawn[phase], fs = g.fs, P = (p) => cm(phase, p, k);
+  const g = drawn[phase], fs = g.fs, P = (p) => cm(phase, p, k), labels = [];
   for (const [e, kind, x] of g.items) {
     if (kind === "plate") poly(e, x.map(P));
     else if (kind === "link" || kind === "rel") line(e, P(x[0]), P(x[1]));
@@ -171,17 +171,32 @@ function update(phase, k) {
       const L = Math.hypot(sx, sy);
       const u = L > 1e-9 ? [-sx / L, -sy / L] : [-0.7, 0.7];
       place(e, [0.8 * fs * u[0], 0.8 * fs * u[1] + 0.35 * fs]);
-    } else if (kind === "label") {
-      const c = P(x);
-      let off;
-      if (phase === "configuration") off = [0.45 * fs, -0.45 * fs];
-      else {
-        const L = Math.hypot(c[0], c[1]);
-        off = L > 1e-9 ? [0.7 * fs * c[0] / L, 0.7 * fs * c[1] / L] : [0.5 * fs, -0.5 * fs];
-      }
-      place(e, [c[0] + off[0], c[1] + off[1] + 0.35 * fs]);
-    }
+    } else if (kind === "label") labels.push([e, x]);
   }
+  placeLabels(labels, phase, k, fs);
+}
+
+// labels beside their points, each where it is clear of the labels already placed and of
+// the other points (tried around the point, the preferred side first)
+function placeLabels(labels, phase, k, fs) {
+  const P = (p) => cm(phase, p, k);
+  const pts = labels.map(([, p]) => P(p));
+  if (phase !== "configuration") pts.push([0, 0]);
+  const placed = [];
+  const clear = (q, own) => placed.every((c) => Math.hypot(q[0] - c[0], q[1] - c[1]) > 1.1 * fs) &&
+    pts.every((c, i) => i === own || Math.hypot(q[0] - c[0], q[1] - c[1]) > 0.6 * fs);
+  labels.forEach(([e, p], i) => {
+    const c = pts[i], L = Math.hypot(c[0], c[1]);
+    const a0 = phase === "configuration" || L < 1e-9 ? -Math.PI / 4 : Math.atan2(c[1], c[0]);
+    let best = null;
+    for (const turn of [0, 1, -1, 2, -2, 3, -3, 4]) {
+      const a = a0 + turn * Math.PI / 4, q = [c[0] + 0.75 * fs * Math.cos(a), c[1] + 0.75 * fs * Math.sin(a)];
+      if (best === null) best = q;
+      if (clear(q, i)) { best = q; break; }
+    }
+    placed.push(best);
+    place(e, [best[0], best[1] + 0.35 * fs]);
+  });
 }
 
 // ---------------------------------------------------------------- values and tooltips
