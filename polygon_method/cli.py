@@ -294,13 +294,13 @@ def _cmd_draw(args) -> int:
     return 0
 
 
-def _frame_count(args):
-    from .page import MAX_FRAMES
-    n = args.frames
-    if not 2 <= n <= MAX_FRAMES:
-        raise SceneError(f"--frames {n}: give between 2 and {MAX_FRAMES} frames",
+def _frames(args, scene):
+    """The scene's frames over its cycle (``--frames``: 2 to MAX_FRAMES)."""
+    from .page import MAX_FRAMES, frames
+    if not 2 <= args.frames <= MAX_FRAMES:
+        raise SceneError(f"--frames {args.frames}: give between 2 and {MAX_FRAMES} frames",
                          key="--frames")
-    return n
+    return frames(scene, args.frames)
 
 
 def _scene_source(path):
@@ -317,47 +317,39 @@ def _scene_source(path):
 def _cmd_page(args) -> int:
     """``polygon-method page SCENE -o page.html [--answers FILE] [--frames N]``: the page a
     student opens in a browser, written whole or not at all."""
-    from .page import frames, page_html
+    from .check import check_answers
+    from .page import page_html
     from .scene import load_answers, load_scene
 
     out = Path(args.output)
     if out.suffix.lower() not in (".html", ".htm"):
         raise PolygonMethodError(f"cannot write the page to {out}: the file name must end in "
                                  ".html", key="-o")
-    n = _frame_count(args)
     targets = check_outputs([(out, "-o")], protect=[args.scene])
     scene = load_scene(args.scene)
-    fr = frames(scene, n)
-    verdicts, title = None, ""
-    if args.answers:
-        tolerance, answers = load_answers(args.answers, scene)
-        title = f"answers from {Path(args.answers).name}"
-    else:
-        tolerance, answers = scene.tolerance, scene.answers
-        title = "answers from the scene"
-    if answers:
-        from .check import check_answers
-        verdicts = check_answers(fr.sol, answers, tolerance)
+    fr = _frames(args, scene)
+    tolerance, answers = load_answers(args.answers, scene) if args.answers else \
+        (scene.tolerance, scene.answers)
+    title = f"answers from {Path(args.answers).name if args.answers else 'the scene'}"
+    verdicts = check_answers(fr.sol, answers, tolerance) if answers else None
     html = page_html(fr, source=_scene_source(args.scene), verdicts=verdicts,
                      answers_title=title)
     for w in fr.sol.warnings:
         print(f"warning: {w}", file=sys.stderr)
     write_outputs(targets, [(html, False)])
-    print(f"{out}: {len(fr)} frames over "
-          + ("a full turn" if fr.full_turn else f"the range between the limit positions "
-             f"({fr.limits_text})") + "; " + "; ".join(s.text for s in fr.scales)
-          + f"; {len(html.encode()) / 1024:.0f} KiB")
+    cycle = "a full turn" if fr.full_turn else f"between the limit positions ({fr.limits_text})"
+    print(f"{out}: {len(fr)} frames over {cycle}; "
+          + "; ".join(s.text for s in fr.scales) + f"; {len(html.encode()) / 1024:.0f} KiB")
     return 0
 
 
 def _cmd_animate(args, out, fmt) -> int:
     """``draw SCENE --animate -o cycle.gif`` (.gif, .html or .svg)."""
-    from .page import animation, frames
+    from .page import animation
     from .scene import load_scene
 
-    n = _frame_count(args)
     targets = check_outputs([(out, "-o")], protect=[args.scene])
-    fr = frames(load_scene(args.scene), n)
+    fr = _frames(args, load_scene(args.scene))
     data = animation(fr, fmt)
     write_outputs(targets, [(data, isinstance(data, bytes))])
     print(f"{out}: {len(fr)} frames; " + "; ".join(s.text for s in fr.scales))
