@@ -28,6 +28,8 @@ __all__ = ["animation", "shapes", "FPS"]
 
 #: frames a second of the animations
 FPS = 15
+#: the SVG animation's text size, in cm of paper (it is drawn true to scale)
+FONT_CM = 0.35
 _COLOR = {"link": "#222222", "absolute": "#1f5fa8", "relative": "#c2410c"}
 
 
@@ -163,7 +165,7 @@ def _svg(fr: Frames) -> str:
         x0, y0, x1, y1 = box
         pad = 0.08 * max(x1 - x0, y1 - y0, 4)
         w, h = x1 - x0 + 2 * pad, y1 - y0 + 2 * pad
-        fs = 0.035 * max(w, h, 8)
+        fs = FONT_CM
         g = [f'<svg x="{x_at:.3f}" y="1.2" width="{w:.3f}" height="{h:.3f}" '
              f'viewBox="{x0 - pad:.3f} {-y1 - pad:.3f} {w:.3f} {h:.3f}">',
              f'<text x="{x0 - pad + 0.2:.3f}" y="{-y1 - pad + fs:.3f}" font-size="{fs:.3f}">'
