@@ -337,9 +337,12 @@ def _cmd_page(args) -> int:
     for w in fr.sol.warnings:
         print(f"warning: {w}", file=sys.stderr)
     write_outputs(targets, [(html, False)])
-    cycle = "a full turn" if fr.full_turn else f"between the limit positions ({fr.limits_text})"
-    print(f"{out}: {len(fr)} frames over {cycle}; "
-          + "; ".join(s.text for s in fr.scales) + f"; {len(html.encode()) / 1024:.0f} KiB")
+    from .scales import display_unit
+    cycle = "over a full turn" if fr.full_turn else \
+        f"between the limit positions ({fr.limits_text})"
+    print(f"{out}: {len(fr)} frames {cycle}; " + "; ".join(display_unit(s.text) for s in
+                                                        fr.scales)
+          + f"; {len(html.encode()) / 1024:.0f} KiB")
     return 0
 
 

@@ -37,9 +37,10 @@ def _xy(fr: Frames, phase):
 
 def diagram_box(fr: Frames, phase: str, scale) -> list:
     """[x0, y0, x1, y1] (cm of paper, y up) that the diagram needs over the frames: every
-    point of every frame (and the pole), except on frames where a polygon is more than
-    ``REACH`` times its median size (near a limit position, where the polygons grow without
-    bound: what reaches beyond the box is cut off there)."""
+    point of every frame (and the pole); where the crank cannot turn fully, except on
+    frames where a polygon is more than ``REACH`` times its median size (near a limit
+    position, where the polygons grow without bound: what reaches beyond the box is cut
+    off there)."""
     n = len(fr)
     table = _xy(fr, phase)
     names = fr.sol.scene.point_names if phase == "configuration" else fr.moving
@@ -47,6 +48,7 @@ def diagram_box(fr: Frames, phase: str, scale) -> list:
     y = np.array([np.broadcast_to(table[p][1], (n,)) for p in names]) / scale.per_cm
     if phase != "configuration":  # the pole, where every fixed point's image is
         x, y = np.vstack([x, np.zeros((1, n))]), np.vstack([y, np.zeros((1, n))])
+    if phase != "configuration" and not fr.full_turn:
         size = np.hypot(x, y).max(axis=0)
         keep = size <= REACH * np.median(size)
         keep[fr.start] = True
