@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import TOL
 from ..numbers import sense
 from ..scales import DIAGRAMS, display_unit
 from .frames import Frames, round_sig
@@ -94,5 +95,14 @@ def page_data(fr: Frames) -> dict:
         "torque": None if res.input_torque is None else
         round_sig(np.broadcast_to(res.input_torque, (n,))),
         "sense": sense(sc.input.omega),
+        "warnBelow": TOL.warn,
     }
+    conds = [(st.label, np.broadcast_to(res.cond[st.index], (n,))) for st in res.plan.steps
+             if st.index in res.cond]
+    if conds:  # each frame's worst-conditioned step: its condition and which step it is
+        table = np.array([c for _, c in conds])
+        worst = table.argmin(axis=0)
+        d["condition"] = round_sig(table.min(axis=0), 4)
+        d["conditionStep"] = [int(i) for i in worst]
+        d["stepLabels"] = [label for label, _ in conds]
     return d

@@ -140,7 +140,8 @@ def page_html(fr: Frames, *, source: str | None = None, verdicts=None,
     title = d["title"]
     cycle = "a full turn of the crank" if fr.full_turn else \
         f"the range between the limit positions ({fr.limits_text}): the crank cannot " \
-        "turn fully"
+        "turn fully, and near its limit positions the polygons grow without bound and run " \
+        "off their panels"
     figs = []
     for s in d["scales"]:
         name = s["diagram"]

@@ -222,6 +222,11 @@ function valuesRows(k) {
     if (c > 0) rows.push(["ac-" + s, "Coriolis component at " + s, fmt(c) + " m/s²"]);
   }
   if (D.torque) rows.push(["torque", "input torque", angular(D.torque[k], "N m")]);
+  if (D.condition) {
+    const c = D.condition[k], why = D.stepLabels[D.conditionStep[k]];
+    rows.push(["condition", "condition (sine of the angle between two direction lines)",
+      fmt(c, 3) + " at " + why + (c < D.warnBelow ? ": below sin 5°, near a singular position, values sensitive" : "")]);
+  }
   return rows;
 }
 function buildValues() {
