@@ -15,18 +15,19 @@ OUT = ROOT / "docs" / "images" / "architecture.svg"
 
 WORDS = {  # what each layer is for (the contract names the modules)
     0: "command line: parses, reads files, prints, writes",
-    1: "views",
-    2: "views they share",
-    3: "what each step draws",
-    4: "results: one solve, a sweep",
-    5: "derived: rubbing, torque, transmission angle; centres",
-    6: "following the branch over the cycle",
-    7: "the motion record; compiling a scene into a plan",
-    8: "the plan: topology + branches; dimensions are inputs",
-    9: "one module per construction kind",
-    10: "the scene: records and the reader",
-    11: "units, how numbers are written",
-    12: "one error family",
+    1: "the page and the animations: a whole cycle",
+    2: "views",
+    3: "views they share",
+    4: "what each step draws",
+    5: "results: one solve, a sweep",
+    6: "derived: rubbing, torque, transmission angle; centres",
+    7: "following the branch over the cycle",
+    8: "the motion record; compiling a scene into a plan",
+    9: "the plan: topology + branches; dimensions are inputs",
+    10: "one module per construction kind",
+    11: "the scene: records and the reader",
+    12: "units, how numbers are written",
+    13: "one error family",
 }
 
 

@@ -443,6 +443,15 @@ def _cmd_draw(args) -> int:
 
     out = Path(args.output)
     fmt = out.suffix.lower().lstrip(".")
+    if getattr(args, "animate", False):
+        if fmt not in ("gif", "html", "svg"):
+            raise PolygonMethodError(f"cannot animate to {out}: the file name must end in "
+                                     ".gif, .html or .svg", key="-o")
+        if args.diagram not in (None, "all") or args.scale:
+            raise PolygonMethodError("--animate draws the three diagrams at the scales of "
+                                     "the step table: leave out --diagram and --scale",
+                                     key="--animate")
+        return _cmd_animate(args, out, fmt)
     if fmt not in FORMATS:
         raise PolygonMethodError(f"cannot draw to {out}: the file name must end in .svg, .png "
                                  "or .pdf", key="-o")
@@ -456,6 +465,71 @@ def _cmd_draw(args) -> int:
         print(f"warning: {w}", file=sys.stderr)
     write_outputs(targets, [(data, fmt != "svg")])
     print(f"{out}: " + "; ".join(f"{name} {display_unit(s.text)}" for name, s in used.items()))
+    return 0
+
+
+def _frames(args, scene):
+    """The scene's frames over its cycle (``--frames``: 2 to MAX_FRAMES)."""
+    from .page import MAX_FRAMES, frames
+    if not 2 <= args.frames <= MAX_FRAMES:
+        raise SceneError(f"--frames {args.frames}: give between 2 and {MAX_FRAMES} frames",
+                         key="--frames")
+    return frames(scene, args.frames)
+
+
+def _scene_source(path):
+    """The scene's ``source`` line (for the page's heading), or None."""
+    import tomllib
+    try:
+        with open(path, "rb") as fh:
+            src = tomllib.load(fh).get("source")
+    except (OSError, tomllib.TOMLDecodeError, UnicodeDecodeError):
+        return None
+    return src if isinstance(src, str) else None
+
+
+def _cmd_page(args) -> int:
+    """``polygon-method page SCENE -o page.html [--answers FILE] [--frames N]``: the page a
+    student opens in a browser, written whole or not at all."""
+    from .check import check_answers
+    from .page import page_html
+    from .scene import load_answers, load_scene
+
+    out = Path(args.output)
+    if out.suffix.lower() not in (".html", ".htm"):
+        raise PolygonMethodError(f"cannot write the page to {out}: the file name must end in "
+                                 ".html", key="-o")
+    targets = check_outputs([(out, "-o")], protect=[args.scene])
+    scene = load_scene(args.scene)
+    fr = _frames(args, scene)
+    tolerance, answers = load_answers(args.answers, scene) if args.answers else \
+        (scene.tolerance, scene.answers)
+    title = f"answers from {Path(args.answers).name if args.answers else 'the scene'}"
+    verdicts = check_answers(fr.sol, answers, tolerance) if answers else None
+    html = page_html(fr, source=_scene_source(args.scene), verdicts=verdicts,
+                     answers_title=title)
+    for w in fr.sol.warnings:
+        print(f"warning: {w}", file=sys.stderr)
+    write_outputs(targets, [(html, False)])
+    from .scales import display_unit
+    cycle = "over a full turn" if fr.full_turn else \
+        f"between the limit positions ({fr.limits_text})"
+    print(f"{out}: {len(fr)} frames {cycle}; " + "; ".join(display_unit(s.text) for s in
+                                                        fr.scales)
+          + f"; {len(html.encode()) / 1024:.0f} KiB")
+    return 0
+
+
+def _cmd_animate(args, out, fmt) -> int:
+    """``draw SCENE --animate -o cycle.gif`` (.gif, .html or .svg)."""
+    from .page import animation
+    from .scene import load_scene
+
+    targets = check_outputs([(out, "-o")], protect=[args.scene])
+    fr = _frames(args, load_scene(args.scene))
+    data = animation(fr, fmt)
+    write_outputs(targets, [(data, isinstance(data, bytes))])
+    print(f"{out}: {len(fr)} frames; " + "; ".join(s.text for s in fr.scales))
     return 0
 
 
@@ -541,6 +615,8 @@ def _cmd_sweep(args) -> int:
     return 0
 
 
+#: frames of a page or an animation (as :data:`polygon_method.page.DEFAULT_FRAMES`)
+DEFAULT_FRAMES = 180
 #: the largest crank angle (deg) a sweep's --from/--to may name
 MAX_ANGLE_DEG = 1e6
 #: the most memory a CSV may need (the arrays, their table and its text)
@@ -632,7 +708,21 @@ def build_parser() -> argparse.ArgumentParser:
                         'acceleration)')
     s.add_argument("--centre-labels", choices=("I13", "13"), default="I13",
                    help="how the centres of --diagram centres are labelled")
+    s.add_argument("--animate", action="store_true",
+                   help="the three diagrams over the crank's cycle (-o FILE.gif, .html or "
+                        ".svg)")
+    s.add_argument("--frames", type=int, default=DEFAULT_FRAMES,
+                   help=f"frames over the cycle (default {DEFAULT_FRAMES})")
     s.set_defaults(func=_cmd_draw)
+
+    s = sub.add_parser("page", help="one self-contained HTML page: the diagrams moving with "
+                       "the crank, values, plots, the steps and the check")
+    s.add_argument("scene")
+    s.add_argument("-o", "--output", required=True, help="FILE.html")
+    s.add_argument("--answers", help="a TOML file with an [answers] table to check")
+    s.add_argument("--frames", type=int, default=DEFAULT_FRAMES,
+                   help=f"frames over the cycle (default {DEFAULT_FRAMES})")
+    s.set_defaults(func=_cmd_page)
 
     s = sub.add_parser("sweep", help="the whole crank cycle")
     s.add_argument("scene")

@@ -1,0 +1,108 @@
+"""The page's data: the frames as plain lists, rounded to six significant figures (a
+thousandth of a per cent, far below what a drawing or the page's four-figure values show),
+with what the script needs to draw them: names, links, plates, sliders, the scales, and
+the box each diagram needs in centimetres of paper.
+
+>>> import polygon_method as pm
+>>> from polygon_method.page.frames import frames
+>>> d = page_data(frames(pm.load_scene("worked_problems/fourbar_image_points.toml"), 12))
+>>> d["points"], [s["text"] for s in d["scales"]]
+(['B', 'C', 'E', 'F', 'G'], ['1 cm = 10 mm', '1 cm = 0.05 m/s', '1 cm = 1 m/s²'])
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..errors import TOL
+from ..numbers import sense
+from ..scales import DIAGRAMS, display_unit
+from .frames import Frames, round_sig
+
+__all__ = ["page_data", "diagram_box"]
+
+#: the largest polygon a diagram's box holds, in times the median polygon of the cycle
+REACH = 1.5
+
+
+def _flat(xy) -> list:
+    """(x array, y array) -> [x0, y0, x1, y1, ...] rounded."""
+    x, y = (np.asarray(c, dtype=float) for c in xy)
+    return round_sig(np.column_stack([np.broadcast_to(x, y.shape), y]))
+
+
+def _xy(fr: Frames, phase):
+    res = fr.res
+    return {"configuration": res.P, "velocity": res.V, "acceleration": res.A}[phase]
+
+
+def diagram_box(fr: Frames, phase: str, scale) -> list:
+    """[x0, y0, x1, y1] (cm of paper, y up) that the diagram needs over the frames: every
+    point of every frame (and the pole); where the crank cannot turn fully, except on
+    frames where a polygon is more than ``REACH`` times its median size (near a limit
+    position, where the polygons grow without bound: what reaches beyond the box is cut
+    off there)."""
+    n = len(fr)
+    table = _xy(fr, phase)
+    names = fr.sol.scene.point_names if phase == "configuration" else fr.moving
+    x = np.array([np.broadcast_to(table[p][0], (n,)) for p in names]) / scale.per_cm
+    y = np.array([np.broadcast_to(table[p][1], (n,)) for p in names]) / scale.per_cm
+    if phase != "configuration":  # the pole, where every fixed point's image is
+        x, y = np.vstack([x, np.zeros((1, n))]), np.vstack([y, np.zeros((1, n))])
+    if phase != "configuration" and not fr.full_turn:
+        size = np.hypot(x, y).max(axis=0)
+        keep = size <= REACH * np.median(size)
+        keep[fr.start] = True
+        x, y = x[:, keep], y[:, keep]
+    return [round(float(x.min()), 3), round(float(y.min()), 3), round(float(x.max()), 3),
+            round(float(y.max()), 3)]
+
+
+def page_data(fr: Frames) -> dict:
+    """Everything the page's script reads (SI, counter-clockwise positive)."""
+    sol, res = fr.sol, fr.res
+    sc = sol.scene
+    moving = list(fr.moving)
+    links = [lk for lk in sc.links if not (lk.p in sc.ground and lk.q in sc.ground)]
+    sliders = []
+    for s in sc.sliders:
+        if hasattr(s, "guide"):
+            sliders.append({"point": s.point, "guide": [s.first, s.second], "link": s.guide})
+        else:
+            sliders.append({"point": s.point, "u": [float(c) for c in s.u],
+                            "through": [float(c) for c in s.through]})
+    n = len(fr)
+    d = {
+        "title": sc.title or sc.file or "mechanism",
+        "units": sc.units, "unit": sc.length_unit,
+        "scales": [{"diagram": name, "text": display_unit(s.text), "perCm": s.per_cm,
+                    "box": diagram_box(fr, name, s)} for name, s in zip(DIAGRAMS, fr.scales)],
+        "theta": [round(float(t), 6) for t in fr.degrees],
+        "start": fr.start, "fullTurn": fr.full_turn, "limits": fr.limits_text,
+        "crank": sc.input.crank, "pivot": sc.input.pivot,
+        "ground": {p: [float(c) for c in xy] for p, xy in sc.ground.items()},
+        "points": moving,
+        "links": [[lk.p, lk.q, lk.key] for lk in links],
+        "plates": [[sc.link(cp.link).p, sc.link(cp.link).q, cp.name] for cp in sc.points],
+        "sliders": sliders,
+        "P": {p: _flat(res.P[p]) for p in moving},
+        "V": {p: _flat(res.V[p]) for p in moving},
+        "A": {p: _flat(res.A[p]) for p in moving},
+        "W": {lk.key: round_sig(np.broadcast_to(res.W[lk.key], (n,))) for lk in links},
+        "Al": {lk.key: round_sig(np.broadcast_to(res.Al[lk.key], (n,))) for lk in links},
+        "S": {s.point: [round_sig(np.broadcast_to(res.S[s.point][j], (n,))) for j in range(4)]
+              for s in sc.sliders},
+        "torque": None if res.input_torque is None else
+        round_sig(np.broadcast_to(res.input_torque, (n,))),
+        "sense": sense(sc.input.omega),
+        "warnBelow": TOL.warn,
+    }
+    conds = [(st.label, np.broadcast_to(res.cond[st.index], (n,))) for st in res.plan.steps
+             if st.index in res.cond]
+    if conds:  # each frame's worst-conditioned step: its condition and which step it is
+        table = np.array([c for _, c in conds])
+        worst = table.argmin(axis=0)
+        d["condition"] = round_sig(table.min(axis=0), 4)
+        d["conditionStep"] = [int(i) for i in worst]
+        d["stepLabels"] = [label for label, _ in conds]
+    return d

@@ -1,0 +1,109 @@
+"""The frames of an animation: one vectorised sweep of the scene over its crank's cycle (the
+full turn, or between its limit positions), at the scales of ``steps`` and ``draw``.
+
+The frames are the sweep's own arrays (SI, counter-clockwise positive): nothing is solved
+here. Over a full turn they start at the scene's instant and follow the crank's sense of
+rotation; where the crank cannot turn fully they run between the limit positions (a little
+inside them, where the velocities stay finite), with the scene's instant among them.
+
+>>> import polygon_method as pm
+>>> fr = frames(pm.load_scene("worked_problems/crank_slotted_lever.toml"), 180)
+>>> len(fr), fr.start, fr.full_turn, [round(float(d), 6) for d in fr.degrees[:3]]
+(180, 0, True, [45.0, 43.0, 41.0])
+>>> [s.text for s in fr.scales]       # the scales of ``steps``
+['1 cm = 50 mm', '1 cm = 0.1 m/s', '1 cm = 0.5 m/s^2']
+>>> fr = frames(pm.load_scene("worked_problems/fourbar_image_points.toml"), 180)
+>>> fr.full_turn, fr.limits_text, round(float(fr.degrees[fr.start]), 6)
+(False, '256.21 deg and 103.79 deg', 60.0)
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..scales import diagram_scales
+from ..solution import solve
+from ..sweeps import sweep
+
+__all__ = ["Frames", "frames", "frame_angles", "DEFAULT_FRAMES", "MAX_FRAMES", "round_sig"]
+
+#: frames of a cycle when none are asked for (2 deg apart over a full turn)
+DEFAULT_FRAMES = 180
+#: the most frames a page or an animation may have
+MAX_FRAMES = 3600
+#: how far inside a limit position the frames stop, as a fraction of the range
+INSIDE = 0.004
+
+
+@dataclass(frozen=True)
+class Frames:
+    """A scene's motion over its cycle, frame by frame.
+
+    ``res`` is the :class:`~polygon_method.sweeps.SweepResult` (its ``theta`` in frame
+    order), ``sol`` the solution at the scene's instant (frame ``start``), ``scales`` the
+    (space, velocity, acceleration) scales of the step table, ``full_turn`` whether the crank
+    turns fully.
+    """
+
+    res: object
+    sol: object
+    scales: tuple
+    start: int
+    full_turn: bool
+
+    def __len__(self):
+        return len(self.res)
+
+    @property
+    def degrees(self) -> np.ndarray:
+        """The crank angle of each frame (deg, continuous from frame to frame)."""
+        return np.degrees(self.res.theta)
+
+    @property
+    def moving(self) -> tuple:
+        """The points that move (not ground), in the scene's order."""
+        sc = self.sol.scene
+        return tuple(p for p in sc.point_names if p not in sc.ground)
+
+    @property
+    def limits_text(self) -> str:
+        lim = self.res.domain.limits
+        return " and ".join(f"{lp.degrees:.2f} deg" for lp in lim)
+
+
+def frame_angles(scene, n: int, domain) -> tuple[np.ndarray, int]:
+    """``n`` crank angles (rad) over the cycle and the index of the scene's own angle."""
+    t0 = scene.input.angle
+    if domain.full_turn:
+        sense = -1.0 if scene.input.omega < 0 else 1.0
+        return t0 + sense * (2 * math.pi / n) * np.arange(n), 0
+    lo, hi = domain.lo, domain.hi
+    pad = INSIDE * (hi - lo)
+    th = np.linspace(lo + pad, hi - pad, max(n - 1, 1))
+    k = int(np.searchsorted(th, t0))
+    return np.insert(th, k, t0), k
+
+
+def frames(scene, n: int = DEFAULT_FRAMES) -> Frames:
+    """The scene's motion at ``n`` crank angles over its cycle, in one vectorised sweep."""
+    sol = solve(scene)  # the stated instant: the scales, and its errors first
+    scales = diagram_scales(sol)
+    probe = sweep(scene, [scene.input.angle])
+    th, start = frame_angles(scene, n, probe.domain)
+    res = sweep(scene, th)
+    kept = res.theta
+    if len(kept) != len(th):  # angles at a singular position were left out
+        start = int(np.argmin(np.abs(kept - scene.input.angle)))
+    return Frames(res, sol, scales, start, bool(probe.domain.full_turn))
+
+
+def round_sig(a, digits: int = 6) -> list:
+    """Values rounded to ``digits`` significant figures (for the page's data): a list.
+
+    >>> round_sig([0.392034567, -12345678.0, 0.0])
+    [0.392035, -12345700.0, 0.0]
+    """
+    return [float(f"{x:.{digits}g}") for x in np.asarray(a, dtype=float).ravel().tolist()]

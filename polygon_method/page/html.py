@@ -1,0 +1,212 @@
+"""The page: one self-contained HTML file (inline SVG, script and style; nothing fetched).
+
+It holds the problem in words, the three diagrams with a crank-angle slider and a play
+button (drawn by ``page.js`` from the frame arrays of :mod:`.data`), the main values at the
+current angle, the sweep plots, the step-by-step solution at the scene's instant (the step
+table's blocks as HTML tables) and, where there are answers, the check table.
+
+>>> import polygon_method as pm
+>>> from polygon_method.page import frames
+>>> html = page_html(frames(pm.load_scene("worked_problems/fourbar_image_points.toml"), 36))
+>>> html.startswith("<!DOCTYPE html>") and 'id="frames"' in html and 'src="http' not in html
+True
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from html import escape
+from importlib.resources import files
+
+from ..numbers import fmt, sense
+from ..steptable import steps_blocks
+from .data import page_data
+from .frames import Frames
+
+__all__ = ["page_html", "scene_words", "blocks_html", "check_html"]
+
+
+def _asset(name: str) -> str:
+    return files(__package__).joinpath(name).read_text(encoding="utf-8")
+
+
+def _len(sc, metres: float) -> str:
+    return f"{fmt(metres / sc.length_unit)} {sc.units}"
+
+
+def scene_words(sc) -> list:
+    """The scene's data as a textbook states it, one sentence a line."""
+    out = []
+    if sc.ground:
+        out.append("Fixed points: " + ", ".join(
+            f"{p} at ({fmt(x / sc.length_unit)}, {fmt(y / sc.length_unit)}) {sc.units}"
+            for p, (x, y) in sc.ground.items()) + ".")
+    out.append("Links: " + ", ".join(f"{lk.key} = {_len(sc, lk.length)}" for lk in sc.links)
+               + ".")
+    for cp in sc.points:
+        out.append(f"Point {cp.name} on link {cp.link}: {cp.how}.")
+    for s in sc.sliders:
+        if hasattr(s, "guide"):
+            out.append(f"A block at {s.point} slides along link {s.guide}.")
+        else:
+            out.append(f"Slider {s.point} moves on a fixed {s.label} path.")
+    inp = sc.input
+    words = (f"The crank {inp.crank} turns about {inp.pivot}; at the instant shown it makes "
+             f"{fmt(math.degrees(inp.angle) % 360)}° with the x axis (counter-clockwise), "
+             f"turning at {inp.speed_text}")
+    if "rad/s" not in inp.speed_text:
+        words += f" ({fmt(abs(inp.omega))} rad/s {sense(inp.omega)})"
+    if inp.alpha:
+        words += f", with an angular acceleration of {fmt(abs(inp.alpha))} rad/s² " \
+                 f"{sense(inp.alpha)}"
+    out.append(words + ".")
+    for pin in sc.pins:
+        out.append(f"Pin at {pin.point}: {pin.given} {_len(sc, pin.radius * (2 if pin.given == 'diameter' else 1))}.")
+    for ld in sc.loads:
+        if ld.force is not None:
+            fx, fy = ld.force
+            out.append(f"A force of {fmt(math.hypot(fx, fy))} N acts at {ld.target} at "
+                       f"{fmt(math.degrees(math.atan2(fy, fx)) % 360)}°.")
+        elif ld.torque is not None:
+            out.append(f"A torque of {fmt(abs(ld.torque))} N m {sense(ld.torque)} acts on "
+                       f"link {ld.target}.")
+    return out
+
+
+def blocks_html(blocks) -> str:
+    """The step table's blocks (headings, paragraphs, lists, tables) as HTML."""
+    out = []
+    for b in blocks:
+        kind = b[0]
+        if kind == "title":
+            continue
+        if kind == "h":
+            out.append(f"<h3>{escape(b[1])}</h3>")
+        elif kind == "p":
+            out.append(f"<p>{escape(b[1])}</p>")
+        elif kind == "list":
+            out.append("<ul>" + "".join(f"<li>{escape(i)}</li>" for i in b[1]) + "</ul>")
+        else:
+            head = "".join(f"<th>{escape(c)}</th>" for c in b[1])
+            rows = "".join("<tr>" + "".join(f"<td>{escape(c)}</td>" for c in r) + "</tr>"
+                           for r in b[2])
+            out.append(f"<table><thead><tr>{head}</tr></thead><tbody>{rows}</tbody></table>")
+    return "\n".join(out)
+
+
+def _shown(v, x) -> str:
+    if v.unit in ("rad/s", "rad/s^2", "N m") and v.signed:
+        s = sense(x)
+        return f"{fmt(abs(x))} {v.unit}" + (f" {s}" if s else "")
+    return f"{fmt(x)} {v.unit}"
+
+
+def check_html(verdicts, title: str) -> str:
+    """The check table: each answer given, correct, error, tolerance, verdict, diagnosis."""
+    rows = []
+    for v in verdicts:
+        err = "-" if v.error is None else f"{100 * v.error:.2f} %"
+        tol = "-" if not math.isfinite(v.tolerance) else f"{100 * v.tolerance:.2g} %"
+        verdict = '<span class="right">right</span>' if v.ok else '<span class="wrong">WRONG</span>'
+        why = "" if v.ok else escape(v.diagnosis or "none of the known mistakes explains it")
+        rows.append("<tr>" + "".join(f"<td>{escape(c)}</td>" for c in (
+            v.key, v.raw, v.correct_text or _shown(v, v.correct), err, tol))
+            + f"<td>{verdict}</td><td>{why}</td></tr>")
+    wrong = sum(not v.ok for v in verdicts)
+    rules = "; ".join(sorted({v.rule for v in verdicts}))
+    return (f"<p>{escape(title)}</p><table id=\"check\"><thead><tr><th>answer</th><th>given"
+            "</th><th>correct</th><th>error</th><th>tolerance</th><th>verdict</th><th>mistake"
+            f"</th></tr></thead><tbody>{''.join(rows)}</tbody></table>"
+            f"<p>tolerance: {escape(rules)}. {len(verdicts) - wrong} of {len(verdicts)} right"
+            + (f", {wrong} wrong" if wrong else "") + ".</p>")
+
+
+def _json(d) -> str:
+    """JSON safe inside a <script> element."""
+    return json.dumps(d, separators=(",", ":"), allow_nan=False).replace("</", "<\\/")
+
+
+_CAPTION = {"configuration": "Configuration diagram", "velocity":
+            "Velocity polygon (pole o; image points b, c, …)", "acceleration":
+            "Acceleration polygon (pole o'; centripetal dashed, tangential dotted)"}
+
+
+def page_html(fr: Frames, *, source: str | None = None, verdicts=None,
+              answers_title: str = "") -> str:
+    """The page for the frames ``fr``: an HTML document as text."""
+    sc = fr.sol.scene
+    d = page_data(fr)
+    title = d["title"]
+    cycle = "a full turn of the crank" if fr.full_turn else \
+        f"the range between the limit positions ({fr.limits_text}): the crank cannot " \
+        "turn fully, and near its limit positions the polygons grow without bound and run " \
+        "off their panels"
+    figs = []
+    for s in d["scales"]:
+        name = s["diagram"]
+        figs.append(f'<figure><figcaption>{escape(_CAPTION[name])}, {escape(s["text"])}'
+                    f'</figcaption><svg class="diagram" id="{name}" '
+                    f'role="img" '
+                    f'aria-label="{name} diagram"></svg></figure>')
+    notes = "".join(f"<li>{escape(n)}</li>" for n in fr.res.notes)
+    check = ""
+    if verdicts:
+        check = f"<h2>Answers checked</h2>\n{check_html(verdicts, answers_title)}"
+    return f"""<!DOCTYPE html>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<title>{escape(title)}</title>
+<style>
+{_asset("page.css")}
+</style>
+</head>
+<body>
+<h1>{escape(title)}</h1>
+{f'<p class="source">{escape(source)}</p>' if source else ''}
+<details open><summary><b>The problem</b></summary>
+<ul>{''.join(f'<li>{escape(w)}</li>' for w in scene_words(sc))}</ul>
+</details>
+<div class="controls">
+<button id="play" type="button">▶ play</button>
+<label for="angle">crank angle</label>
+<input type="range" id="angle" min="0" max="{len(fr) - 1}" step="1" value="{fr.start}">
+<span id="angle-now"></span>
+</div>
+<p class="legend-line">{len(fr)} frames over {escape(cycle)}; each diagram keeps the
+scale of the step-by-step solution. The stated instant is θ =
+{fmt(math.degrees(sc.input.angle) % 360)}°. Hover or tap a vector or a point for its
+value.</p>
+{f'<ul>{notes}</ul>' if notes else ''}
+<div class="diagrams">
+{''.join(figs)}
+</div>
+<div class="columns">
+<div>
+<h2>Values at the current angle</h2>
+<table id="values"><tbody></tbody></table>
+</div>
+<div>
+<h2>Over the cycle</h2>
+<div class="plots">
+<svg class="plot" id="plot-v" viewBox="0 0 320 190"></svg>
+<svg class="plot" id="plot-w" viewBox="0 0 320 190"></svg>
+<svg class="plot" id="plot-a" viewBox="0 0 320 190"></svg>
+</div>
+</div>
+</div>
+<h2>Step by step, at the stated instant</h2>
+{blocks_html(steps_blocks(fr.sol).blocks)}
+{check}
+<footer>Made by polygon-method: the relative-velocity method, exact to rounding; the frames
+are one sweep of the scene on its own branch.</footer>
+<div id="tooltip" hidden></div>
+<script type="application/json" id="frames">{_json(d)}</script>
+<script>
+{_asset("page.js")}
+</script>
+</body>
+</html>
+"""
