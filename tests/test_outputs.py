@@ -193,3 +193,16 @@ def test_fuzz_output_paths(tmp_path_factory, csv_kind, plot_kind):
         if kind == "link":
             assert p.is_symlink()
         assert p.is_file() and p.stat().st_size > 0
+
+
+def test_a_reader_that_goes_away_is_no_error():
+    """``polygon-method sweep ... | head``: the reader closes the pipe after a line; the
+    command stops quietly, exit 0, nothing on stderr."""
+    p = subprocess.Popen([sys.executable, "-m", "polygon_method", "sweep", str(SCENE),
+                          "--steps", "300000"], stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, cwd=ROOT)
+    p.stdout.readline()
+    p.stdout.close()
+    err = p.stderr.read()
+    assert p.wait(timeout=60) == 0
+    assert err == b""

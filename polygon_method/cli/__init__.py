@@ -1,0 +1,167 @@
+"""The ``polygon-method`` command: ``main(argv) -> int``.
+
+Exit codes: 0 success; 1 ``check`` found a wrong answer; 2 bad input (one line on stderr,
+never a traceback); 3 an internal error (a bug: please report it).
+Only this package reads and writes files and prints, and it writes them whole or not at
+all (:mod:`.files`). The commands live in :mod:`.commands` (one scene: solve, steps, draw,
+page, sweep, ...) and :mod:`.classroom` (check, variants).
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+
+from ..errors import PolygonMethodError, printable
+from .classroom import _cmd_check, _cmd_variants
+from .commands import (DEFAULT_FRAMES, _cmd_centres, _cmd_draw, _cmd_linkage, _cmd_page,
+                       _cmd_plan, _cmd_solve, _cmd_steps, _cmd_sweep)
+from .files import check_outputs, write_output, write_outputs
+
+__all__ = ["main", "build_parser", "write_output", "write_outputs", "check_outputs"]
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message):  # one line, exit 2
+        self.exit(2, f"{self.prog}: error: {message}\n")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    p = _Parser(prog="polygon-method",
+                description="Planar mechanisms by the relative-velocity (polygon) method.")
+    from .. import __version__
+    p.add_argument("--version", action="version", version=f"polygon-method {__version__}")
+    sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+    sub.required = True
+
+    s = sub.add_parser("solve", help="solve a scene at its stated instant")
+    s.add_argument("scene")
+    s.add_argument("--json", action="store_true", help="machine-readable output (SI)")
+    s.set_defaults(func=_cmd_solve)
+
+    s = sub.add_parser("plan", help="print the construction plan")
+    s.add_argument("scene")
+    s.set_defaults(func=_cmd_plan)
+
+    s = sub.add_parser("steps", help="the hand solution, step by step")
+    s.add_argument("scene")
+    s.add_argument("--format", choices=("text", "markdown"), default="text")
+    s.set_defaults(func=_cmd_steps)
+
+    s = sub.add_parser("check", help="check answers against the solution")
+    s.add_argument("scene")
+    s.add_argument("answers", nargs="*",
+                   help="TOML files with an [answers] table (several, or a directory of "
+                        "them: a whole class)")
+    s.add_argument("--json", action="store_true")
+    s.add_argument("--gradebook", help="FILE.csv or FILE.md: the class's gradebook")
+    s.add_argument("--variants", help="DIR: the variant scenes `variants -o DIR` wrote; each "
+                   "answer file is graded against the variant it names (variant = \"07\")")
+    s.set_defaults(func=_cmd_check)
+
+    s = sub.add_parser("variants", help="a variant of the scene per student, the answer key "
+                       "and the problem sheet")
+    s.add_argument("scene")
+    s.add_argument("--count", type=int, default=40, help="how many variants (default 40)")
+    s.add_argument("--seed", type=int, default=0, help="the random seed (the same seed "
+                   "gives the same variants)")
+    s.add_argument("-o", "--output", required=True, help="DIR: the variants, answer key and "
+                   "problem sheet are written into it")
+    s.add_argument("--pdf", action="store_true", help="the problem sheet as PDF too")
+    s.set_defaults(func=_cmd_variants)
+
+    s = sub.add_parser("draw", help="true-to-scale SVG/PNG/PDF diagrams")
+    s.add_argument("scene")
+    s.add_argument("-o", "--output", required=True, help="FILE.svg, .png or .pdf")
+    s.add_argument("--diagram", choices=("configuration", "velocity", "acceleration", "all",
+                                         "centres"), default="all")
+    s.add_argument("--scale", action="append", default=[],
+                   help='e.g. "1 cm = 0.1 m/s" (may be repeated: space, velocity, '
+                        'acceleration)')
+    s.add_argument("--centre-labels", choices=("I13", "13"), default="I13",
+                   help="how the centres of --diagram centres are labelled")
+    s.add_argument("--animate", action="store_true",
+                   help="the three diagrams over the crank's cycle (-o FILE.gif, .html or "
+                        ".svg)")
+    s.add_argument("--frames", type=int, default=DEFAULT_FRAMES,
+                   help=f"frames over the cycle (default {DEFAULT_FRAMES})")
+    s.set_defaults(func=_cmd_draw)
+
+    s = sub.add_parser("page", help="one self-contained HTML page: the diagrams moving with "
+                       "the crank, values, plots, the steps and the check")
+    s.add_argument("scene")
+    s.add_argument("-o", "--output", required=True, help="FILE.html")
+    s.add_argument("--answers", help="a TOML file with an [answers] table to check")
+    s.add_argument("--frames", type=int, default=DEFAULT_FRAMES,
+                   help=f"frames over the cycle (default {DEFAULT_FRAMES})")
+    s.set_defaults(func=_cmd_page)
+
+    s = sub.add_parser("sweep", help="the whole crank cycle")
+    s.add_argument("scene")
+    s.add_argument("--steps", type=int, help="N crank angles over a turn (default 360)")
+    s.add_argument("--from", dest="start", type=float, help="first crank angle (deg)")
+    s.add_argument("--to", dest="stop", type=float, help="last crank angle (deg)")
+    s.add_argument("--step", type=float, help="crank angle step (deg)")
+    s.add_argument("--csv", help="FILE.csv: one row per crank angle")
+    s.add_argument("--plot", help="FILE.svg, .png or .pdf")
+    s.add_argument("--points", help="points to plot, e.g. C,E (default: all moving points)")
+    s.add_argument("--links", help="links to plot, e.g. BC,CD (default: all moving links)")
+    s.add_argument("--summary", action="store_true",
+                   help="maxima and minima with their crank angles")
+    s.set_defaults(func=_cmd_sweep)
+
+    s = sub.add_parser("linkage", help="Grashof, toggle positions, transmission angle")
+    s.add_argument("scene")
+    s.set_defaults(func=_cmd_linkage)
+
+    s = sub.add_parser("centres", help="instantaneous centres (Kennedy's theorem) and the "
+                       "velocities they give")
+    s.add_argument("scene")
+    s.add_argument("--centre-labels", choices=("I13", "13"), default="I13",
+                   help="label the centres I13 (default) or 13, as the course writes them")
+    s.set_defaults(func=_cmd_centres)
+    return p
+
+
+def main(argv=None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        code = args.func(args)
+        sys.stdout.flush()  # a full disk on standard output is one line too
+        return code
+    except PolygonMethodError as exc:
+        print(f"polygon-method {args.command}: {exc.one_line()}", file=sys.stderr)
+        return 2
+    except BrokenPipeError:  # the reader went away (``... | head``): nothing to say
+        _quiet_stdout()
+        return 0
+    except OSError as exc:  # the system refused a read or a write (not a bug of ours)
+        where = f"{printable(str(exc.filename))}: " if exc.filename else ""
+        _quiet_stdout()
+        print(f"polygon-method {args.command}: {where}{exc.strerror or exc}", file=sys.stderr)
+        return 2
+    except MemoryError:
+        print(f"polygon-method {args.command}: not enough memory for this request (ask for "
+              "fewer crank angles)", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        return 130
+    except Exception as exc:  # a bug: still one line, never a traceback
+        print(f"polygon-method {args.command}: internal error ({type(exc).__name__}: {exc}); "
+              "please report it with the scene file", file=sys.stderr)
+        return 3
+
+
+def _quiet_stdout():
+    """After standard output failed, drop what is still buffered (so that the exit does not
+    fail again)."""
+    try:
+        sys.stdout = open(os.devnull, "w")
+    except OSError:
+        pass
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

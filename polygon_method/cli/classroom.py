@@ -1,0 +1,281 @@
+"""The commands of the classroom: check (one answer file, or a whole class with its
+gradebook, each student against their own variant) and variants (a scene per student)."""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+from pathlib import Path
+
+from ..errors import PolygonMethodError, SceneError, printable
+from .files import check_outputs, write_outputs
+
+
+def _finite(x):
+    """A number JSON can carry: None for an infinite or undefined one."""
+    return x if isinstance(x, (int, float)) and math.isfinite(x) else None
+
+
+def _answer_files(paths):
+    """The answer files named: files as given, a directory's *.toml in order."""
+    out = []
+    for p in paths:
+        path = Path(p)
+        if path.is_dir():
+            out += sorted(str(q) for q in path.glob("*.toml"))
+        else:
+            out.append(p)
+    return out
+
+
+class _VariantBook:
+    """The variant scenes of ``check --variants DIR``, by id, each solved once when a
+    student first names it."""
+
+    def __init__(self, folder, base):
+        self.folder, self.base = Path(folder), base
+        if not self.folder.is_dir():
+            raise SceneError(f"--variants {folder}: not a directory of variant scenes",
+                             key="--variants")
+        self.files = sorted(self.folder.glob("*.toml"))
+        if not self.files:
+            raise SceneError(f"--variants {folder}: no variant scenes (*.toml) in it",
+                             key="--variants")
+        self.done = {}
+
+    @staticmethod
+    def _names(text):
+        """The names a variant goes by: "variant-07.toml", "variant-07", "Variant 07", "07",
+        "7" are one."""
+        text = text.strip().lower()
+        if text.endswith(".toml"):
+            text = text[:-5]
+        bare = re.sub(r"^variant[\s_-]*", "", text)
+        return {text, bare} | ({str(int(bare))} if bare.isdigit() else set())
+
+    def find(self, named):
+        """(id, solution, tolerances) of the variant a student names; raises a
+        :class:`PolygonMethodError` (that student's row) if it is not there."""
+        from ..check import tolerances
+        from ..scene import load_scene
+        from ..solution import solve
+
+        want = self._names(named)
+        hits = [f for f in self.files if self._names(f.name) & want]
+        if not hits:  # the id inside a file named otherwise
+            for f in self.files:
+                try:
+                    sc = load_scene(f)
+                except PolygonMethodError:
+                    continue
+                if sc.variant is not None and self._names(sc.variant.id) & want:
+                    hits = [f]
+                    break
+        if not hits:
+            shown = ", ".join(f.name for f in self.files[:3]) + \
+                (", ..." if len(self.files) > 3 else "")
+            raise SceneError(f"variant {printable(named)!r} is not in {self.folder} (its "
+                             f"variants: {shown})", key="variant")
+        f = hits[0]
+        if f not in self.done:
+            try:
+                sc = load_scene(f)
+                if sc.variant is None:
+                    raise SceneError(f"{f.name} in {self.folder} is not a generated variant "
+                                     "(it has no [variant] table)", key="variant")
+                base_title = self.base.title or ""
+                if base_title and sc.variant.of != base_title:
+                    raise SceneError(f"{f.name} is a variant of {sc.variant.of!r}, not of "
+                                     f"{base_title!r}", key="variant")
+                sol = solve(sc)
+                self.done[f] = (sc.variant.id, sol, tolerances(sol), None)
+            except PolygonMethodError as exc:
+                self.done[f] = (None, None, None, exc)
+        vid, sol, tols, exc = self.done[f]
+        if exc is not None:
+            raise exc
+        return vid, sol, tols
+
+
+def _graded_against(named, scene, sol, tols, book):
+    """The solution a student's answers are graded against: their own variant's (with
+    ``--variants``), or the scene's own."""
+    if book is not None:
+        if named is None:
+            raise SceneError("names no variant: add variant = \"07\" (the number on the "
+                             "student's problem sheet)", key="variant")
+        return book.find(named)
+    if named is not None:
+        own = scene.variant
+        if own is None or not (_VariantBook._names(own.id) & _VariantBook._names(named)):
+            raise SceneError(f"names variant {printable(named)!r}: grade it against its own "
+                             "variant with --variants DIR (the directory `variants -o` "
+                             "wrote)", key="variant")
+        return own.id, sol, tols
+    return None, sol, tols
+
+
+def _cmd_class(args, scene, sol, files) -> int:
+    """A whole class: a row per answer file, the summary, the gradebook."""
+    from ..check import check_answers, tolerances
+    from ..check.classroom import (Row, class_dict, class_text, gradebook_csv,
+                                  gradebook_markdown, summary_text)
+    from ..scene import load_answers
+
+    book = getattr(args, "gradebook", None)
+    if book and not book.lower().endswith((".csv", ".md")):
+        raise SceneError(f"--gradebook {book}: the file must end in .csv or .md",
+                         key="--gradebook")
+    targets = check_outputs([(book, "--gradebook")], protect=[args.scene]) if book else []
+    variants = getattr(args, "variants", None)
+    vbook = _VariantBook(variants, scene) if variants else None
+    tols = tolerances(sol)
+    rows = []
+    for f in files:
+        student = Path(f).stem
+        named = None
+        try:
+            tolerance, answers, named = load_answers(f, scene, with_variant=True)
+            if tolerance is None:
+                tolerance = scene.tolerance
+            vid, vsol, vtols = _graded_against(named, scene, sol, tols, vbook)
+            rows.append(Row(student, f, check_answers(vsol, answers, tolerance, _tols=vtols),
+                            variant=vid if vbook is None else (vid or "")))
+        except PolygonMethodError as exc:  # a row with its error, never the whole run
+            line = exc.one_line()
+            where = f"{printable(str(f))}: "
+            rows.append(Row(student, f, (), error=line[len(where):] if line.startswith(where)
+                            else line,
+                            variant=(printable(named) if named else "") if vbook else None))
+    if getattr(args, "json", False):
+        print(json.dumps(class_dict(rows), indent=2, allow_nan=False, default=_finite))
+    else:
+        print(f"{scene.title or args.scene}: {len(files)} answer files"
+              + (f", each graded against its own variant in {variants}" if vbook else ""))
+        print(class_text(rows))
+        print()
+        print(summary_text(rows))
+    if targets:
+        data = gradebook_csv(rows) if book.lower().endswith(".csv") else \
+            gradebook_markdown(rows)
+        write_outputs(targets, [(data, False)])
+    return 0
+
+
+def _cmd_check(args) -> int:
+    """``polygon-method check SCENE [ANSWERS ...] [--json] [--gradebook FILE] [--variants
+    DIR]``: one answer file (or the scene's answers): 0 all right, 1 any wrong; several, or
+    a directory: the whole class, 0. With ``--variants``, each answer file is graded
+    against the variant it names."""
+    from ..check import check_answers, verdicts_dict, verdicts_text
+    from ..scene import load_answers, load_scene
+    from ..solution import solve
+
+    scene = load_scene(args.scene)
+    sol = solve(scene)
+    files = _answer_files(args.answers or [])
+    if len(files) > 1 or (args.answers and Path(args.answers[0]).is_dir()) or \
+            getattr(args, "gradebook", None):
+        if not files:
+            raise SceneError(f"no answer files in {', '.join(args.answers or ['(none)'])}",
+                             key="answers")
+        return _cmd_class(args, scene, sol, files)
+    args.answers = files[0] if files else None
+    variants = getattr(args, "variants", None)
+    title = f"{scene.title or args.scene}: answers from " + \
+        (args.answers if args.answers else "the scene")
+    if args.answers:
+        tolerance, answers, named = load_answers(args.answers, scene, with_variant=True)
+        if tolerance is None:
+            tolerance = scene.tolerance
+        try:
+            vid, sol, _ = _graded_against(named, scene, sol, None,
+                                          _VariantBook(variants, scene) if variants else None)
+        except PolygonMethodError as exc:
+            raise exc.located(args.answers)
+        if vid and variants:
+            title += f", graded against variant {vid}"
+    else:
+        if variants:
+            raise SceneError("--variants grades answer files: give the students' files (or "
+                             "their directory)", key="--variants")
+        tolerance, answers = scene.tolerance, scene.answers
+    if not answers:
+        raise SceneError("nothing to check: the scene has no [answers] and no answer file "
+                         "was given", file=args.scene, key="[answers]")
+    verdicts = check_answers(sol, answers, tolerance)
+    if getattr(args, "json", False):
+        d = verdicts_dict(verdicts, args.scene, args.answers)
+        for a in d["answers"]:
+            for k in ("error_percent", "tolerance_percent"):
+                a[k] = _finite(a[k])
+        print(json.dumps(d, indent=2, allow_nan=False))
+    else:
+        print(verdicts_text(verdicts, title))
+    return 0 if all(v.ok for v in verdicts) else 1
+
+
+def _cmd_variants(args) -> int:
+    """``polygon-method variants SCENE --count N --seed S -o DIR [--pdf]``: a scene per
+    student, the answer key (Markdown and CSV) and the problem sheet, written all or none;
+    fewer good variants than asked: one line, exit 2, nothing written."""
+    from ..scene import load_scene
+    from ..variants import (answer_key_csv, answer_key_markdown, generate, sheet_markdown,
+                           sheet_pdf, summary_text)
+
+    if args.count < 1 or args.count > MAX_VARIANTS:
+        raise SceneError(f"--count {args.count}: between 1 and {MAX_VARIANTS}",
+                         key="--count")
+    if args.seed < 0:
+        raise SceneError(f"--seed {args.seed}: a whole number, 0 or more", key="--seed")
+    out = Path(args.output)
+    made = not out.exists()
+    if out.exists() and not out.is_dir():
+        raise PolygonMethodError(f"cannot write into {out}: it is not a directory", key="-o")
+    if made and not out.parent.is_dir():
+        raise PolygonMethodError(f"cannot write into {out}: no directory {out.parent}",
+                                 key="-o")
+    scene = load_scene(args.scene)
+    vs = generate(scene, args.count, args.seed)
+    short = vs.shortfall()
+    if short:
+        raise PolygonMethodError(short, file=args.scene, key="[variants]")
+    files = [(v.name, v.text, False) for v in vs.variants]
+    files += [("answer-key.md", answer_key_markdown(vs), False),
+              ("answer-key.csv", answer_key_csv(vs), False),
+              ("problem-sheet.md", sheet_markdown(vs), False)]
+    if args.pdf:
+        files.append(("problem-sheet.pdf", sheet_pdf(vs), True))
+    names = {f[0] for f in files}
+    if not made:  # variants of an earlier run would be paired with the wrong students
+        stale = sorted(p.name for p in out.glob("variant-*.toml") if p.name not in names)
+        if stale:
+            raise PolygonMethodError(f"{out} holds {stale[0]}"
+                                     + (f" and {len(stale) - 1} more" if len(stale) > 1
+                                        else "")
+                                     + " from an earlier run that this one would not "
+                                     "replace: remove them or write to a new directory",
+                                     key="-o")
+    if made:
+        out.mkdir()
+    try:
+        targets = check_outputs([(out / name, "-o") for name, _, _ in files],
+                                protect=[args.scene])
+        write_outputs(targets, [(data, binary) for _, data, binary in files])
+    except BaseException:
+        if made:
+            try:
+                out.rmdir()  # only if nothing was written into it
+            except OSError:
+                pass
+        raise
+    print(summary_text(vs))
+    print(f"written to {out}: {len(vs.variants)} scenes ({vs.variants[0].name} ... "
+          f"{vs.variants[-1].name}), answer-key.md, answer-key.csv, problem-sheet.md"
+          + (", problem-sheet.pdf" if args.pdf else ""))
+    return 0
+
+
+#: the most variants one run writes
+MAX_VARIANTS = 9999

@@ -1,0 +1,275 @@
+"""The commands that solve and show one scene: solve, plan, centres, steps, draw (and its
+animations), page, sweep, linkage. Each reads its files, prints and writes here only."""
+
+from __future__ import annotations
+
+import json
+import math
+import sys
+from pathlib import Path
+
+from ..errors import PolygonMethodError, SceneError
+from .files import check_outputs, write_outputs
+
+
+def _cmd_solve(args) -> int:
+    from ..scene import load_scene
+    from ..solution import solve
+
+    sol = solve(load_scene(args.scene))
+    if args.json:
+        print(json.dumps(sol.to_dict(), indent=2, allow_nan=False))
+    else:
+        from ..report import solution_text
+        print(solution_text(sol))
+    return 0
+
+
+def _cmd_plan(args) -> int:
+    from ..compiler import compile_plan
+    from ..scene import load_scene
+
+    print(compile_plan(load_scene(args.scene)))
+    return 0
+
+
+def _cmd_centres(args) -> int:
+    """``polygon-method centres SCENE``: the instantaneous centre method."""
+    from ..centres import locate
+    from ..centretable import centres_text
+    from ..scene import load_scene
+    from ..solution import solve
+
+    prefix = "" if getattr(args, "centre_labels", "I13") == "13" else "I"
+    print(centres_text(locate(solve(load_scene(args.scene)), prefix)))
+    return 0
+
+
+def _cmd_steps(args) -> int:
+    from ..scene import load_scene
+    from ..solution import solve
+    from ..steptable import steps_text
+
+    print(steps_text(solve(load_scene(args.scene)), fmt=args.format))
+    return 0
+
+
+
+def _cmd_draw(args) -> int:
+    """``polygon-method draw SCENE -o FILE.svg [--diagram ...] [--scale "1 cm = 0.1 m/s"]``:
+    written whole or not at all, and not at all when the scene cannot be solved."""
+    from ..draw import FORMATS, display_unit, parse_scales, render
+    from ..scene import load_scene
+    from ..solution import solve
+
+    out = Path(args.output)
+    fmt = out.suffix.lower().lstrip(".")
+    if getattr(args, "animate", False):
+        if fmt not in ("gif", "html", "svg"):
+            raise PolygonMethodError(f"cannot animate to {out}: the file name must end in "
+                                     ".gif, .html or .svg", key="-o")
+        if args.diagram not in (None, "all") or args.scale:
+            raise PolygonMethodError("--animate draws the three diagrams at the scales of "
+                                     "the step table: leave out --diagram and --scale",
+                                     key="--animate")
+        return _cmd_animate(args, out, fmt)
+    if fmt not in FORMATS:
+        raise PolygonMethodError(f"cannot draw to {out}: the file name must end in .svg, .png "
+                                 "or .pdf", key="-o")
+    scales = parse_scales(getattr(args, "scale", None))
+    targets = check_outputs([(out, "-o")], protect=[args.scene])
+    sol = solve(load_scene(args.scene))
+    diagram = getattr(args, "diagram", None) or "all"
+    prefix = "" if getattr(args, "centre_labels", "I13") == "13" else "I"
+    data, used, warnings = render(sol, fmt, diagram, scales, prefix)
+    for w in list(sol.warnings) + warnings:
+        print(f"warning: {w}", file=sys.stderr)
+    write_outputs(targets, [(data, fmt != "svg")])
+    print(f"{out}: " + "; ".join(f"{name} {display_unit(s.text)}" for name, s in used.items()))
+    return 0
+
+
+def _frames(args, scene):
+    """The scene's frames over its cycle (``--frames``: 2 to MAX_FRAMES)."""
+    from ..page import MAX_FRAMES, frames
+    if not 2 <= args.frames <= MAX_FRAMES:
+        raise SceneError(f"--frames {args.frames}: give between 2 and {MAX_FRAMES} frames",
+                         key="--frames")
+    return frames(scene, args.frames)
+
+
+def _scene_source(path):
+    """The scene's ``source`` line (for the page's heading), or None."""
+    import tomllib
+    try:
+        with open(path, "rb") as fh:
+            src = tomllib.load(fh).get("source")
+    except (OSError, tomllib.TOMLDecodeError, UnicodeDecodeError):
+        return None
+    return src if isinstance(src, str) else None
+
+
+def _cmd_page(args) -> int:
+    """``polygon-method page SCENE -o page.html [--answers FILE] [--frames N]``: the page a
+    student opens in a browser, written whole or not at all."""
+    from ..check import check_answers
+    from ..page import page_html
+    from ..scene import load_answers, load_scene
+
+    out = Path(args.output)
+    if out.suffix.lower() not in (".html", ".htm"):
+        raise PolygonMethodError(f"cannot write the page to {out}: the file name must end in "
+                                 ".html", key="-o")
+    targets = check_outputs([(out, "-o")], protect=[args.scene])
+    scene = load_scene(args.scene)
+    fr = _frames(args, scene)
+    tolerance, answers = load_answers(args.answers, scene) if args.answers else \
+        (scene.tolerance, scene.answers)
+    title = f"answers from {Path(args.answers).name if args.answers else 'the scene'}"
+    verdicts = check_answers(fr.sol, answers, tolerance) if answers else None
+    html = page_html(fr, source=_scene_source(args.scene), verdicts=verdicts,
+                     answers_title=title)
+    for w in fr.sol.warnings:
+        print(f"warning: {w}", file=sys.stderr)
+    write_outputs(targets, [(html, False)])
+    from ..scales import display_unit
+    cycle = "over a full turn" if fr.full_turn else \
+        f"between the limit positions ({fr.limits_text})"
+    print(f"{out}: {len(fr)} frames {cycle}; " + "; ".join(display_unit(s.text) for s in
+                                                        fr.scales)
+          + f"; {len(html.encode()) / 1024:.0f} KiB")
+    return 0
+
+
+def _cmd_animate(args, out, fmt) -> int:
+    """``draw SCENE --animate -o cycle.gif`` (.gif, .html or .svg)."""
+    from ..page import animation
+    from ..scene import load_scene
+
+    targets = check_outputs([(out, "-o")], protect=[args.scene])
+    fr = _frames(args, load_scene(args.scene))
+    data = animation(fr, fmt)
+    write_outputs(targets, [(data, isinstance(data, bytes))])
+    print(f"{out}: {len(fr)} frames; " + "; ".join(s.text for s in fr.scales))
+    return 0
+
+
+def _requested_angles(args):
+    """Crank angles (rad) from ``--steps N`` or ``--from A --to B --step S`` (deg)."""
+    import numpy as np
+    ranged = any(v is not None for v in (args.start, args.stop, args.step))
+    if args.steps is not None and ranged:
+        raise SceneError("give either --steps N or --from A --to B --step S, not both")
+    if ranged:
+        if args.start is None or args.stop is None or args.step is None:
+            raise SceneError("--from, --to and --step go together (degrees)")
+        a, b, s = args.start, args.stop, args.step
+        if not all(math.isfinite(v) for v in (a, b, s)):
+            raise SceneError("--from, --to and --step must be finite numbers")
+        if max(abs(a), abs(b)) > MAX_ANGLE_DEG:
+            raise SceneError(f"--from and --to are crank angles in degrees, within "
+                             f"+-{MAX_ANGLE_DEG:g} (got {a:g} and {b:g})")
+        if s == 0 or (b - a) * s < 0:
+            raise SceneError(f"--step {s:g} does not lead from {a:g} to {b:g} deg")
+        count = int(math.floor((b - a) / s + 1e-9)) + 1
+        if count > 100_000_000:
+            raise SceneError(f"{count} crank angles are too many (at most 10^8)")
+        return np.radians(a + s * np.arange(count))
+    n = 360 if args.steps is None else args.steps
+    if n < 1:
+        raise SceneError(f"--steps must be at least 1, got {n}")
+    if n > 100_000_000:
+        raise SceneError(f"--steps {n} is too many (at most 10^8)")
+    return np.linspace(0.0, 2.0 * math.pi, n, endpoint=False)
+
+
+def _cmd_sweep(args) -> int:
+    """``polygon-method sweep SCENE [--steps N | --from A --to B --step S] [--csv FILE]
+    [--plot FILE.svg] [--summary]``: print the summary; the CSV and the plot are written by
+    ``write_output`` (whole or not at all)."""
+    from ..scene import load_scene
+    from ..summary import summarize, summary_of
+    from ..sweeps import sweep
+
+    plot = getattr(args, "plot", None)
+    if plot and not plot.lower().endswith((".svg", ".png", ".pdf")):
+        raise SceneError(f"--plot {plot}: the file must end in .svg, .png or .pdf")
+    if not plot and (getattr(args, "points", None) or getattr(args, "links", None)):
+        raise SceneError("--points and --links choose what --plot draws: give --plot FILE "
+                         "as well", key="--points" if getattr(args, "points", None)
+                         else "--links")
+    wanted = [(path, option) for path, option in ((args.csv, "--csv"), (plot, "--plot"))
+              if path]
+    targets = check_outputs(wanted, protect=[args.scene])
+    scene = load_scene(args.scene)
+    angles = _requested_angles(args)
+    if args.csv:
+        need = _csv_bytes(scene, len(angles))
+        if need > MAX_CSV_BYTES:
+            raise SceneError(f"a CSV of {len(angles)} crank angles would need about "
+                             f"{need / 2 ** 30:.1f} GiB of memory (at most "
+                             f"{MAX_CSV_BYTES / 2 ** 30:g} GiB): ask for fewer --steps, or "
+                             "--summary alone, which needs little memory at any count",
+                             key="--csv")
+    want_summary = args.summary or not (args.csv or plot)
+    if not (args.csv or plot):
+        print(summarize(scene, angles).text())
+        return 0
+    res = sweep(scene, angles)
+    if not len(res):
+        raise PolygonMethodError("none of the requested crank angles can be reached "
+                                 "on the scene's branch " + _limits_text(res.domain),
+                                 file=scene.file)
+    outputs = []
+    if args.csv:
+        outputs.append((res.to_csv(), False))
+    if plot:
+        from ..plots import plot_bytes
+        outputs.append((plot_bytes(res, plot, points=_names(args, "points"),
+                                   links=_names(args, "links")), True))
+    write_outputs(targets, outputs)
+    if want_summary:
+        print(summary_of(res).text())
+    else:
+        print(f"{len(res)} of {res.requested} crank angles evaluated"
+              + (f"; {_limits_text(res.domain)}" if res.domain.limits else ""))
+    return 0
+
+
+#: frames of a page or an animation (as :data:`polygon_method.page.DEFAULT_FRAMES`)
+DEFAULT_FRAMES = 180
+#: the largest crank angle (deg) a sweep's --from/--to may name
+MAX_ANGLE_DEG = 1e6
+#: the most memory a CSV may need (the arrays, their table and its text)
+MAX_CSV_BYTES = 2 * 2 ** 30
+
+
+def _csv_bytes(scene, n) -> int:
+    """About what a CSV of ``n`` rows needs: each of its columns as an array, in the table
+    that is written and as text (8 + 8 + 18 bytes a number)."""
+    cols = (1 + 6 * len(scene.point_names) + 2 * len(scene.links) + 4 * len(scene.sliders)
+            + len(scene.pins) + 1 + len(scene.links))
+    return n * cols * 34
+
+
+def _names(args, what):
+    raw = getattr(args, what, None)
+    if not raw:
+        return None
+    return tuple(x.strip() for x in raw.split(",") if x.strip())
+
+
+def _limits_text(dom) -> str:
+    if not dom.limits:
+        return ""
+    return ("(limit positions at " + " and ".join(f"{lp.degrees:.4f} deg" for lp in dom.limits)
+            + ")")
+
+
+def _cmd_linkage(args) -> int:
+    """``polygon-method linkage SCENE``: print the linkage's properties."""
+    from ..linkage import analyse
+    from ..scene import load_scene
+
+    print(analyse(load_scene(args.scene)).text())
+    return 0

@@ -1,0 +1,110 @@
+"""Writing a command's outputs: every path checked before anything is computed, every file
+written whole or not at all, through symbolic links and into special files, never over the
+scene."""
+
+from __future__ import annotations
+
+import os
+import stat
+import tempfile
+from pathlib import Path
+
+from ..errors import PolygonMethodError
+
+__all__ = ["check_outputs", "write_outputs", "write_output"]
+
+
+class _Target:
+    """Where one output goes: a new or regular file (written beside it, then renamed over
+    it), or a special file (a device, a pipe: written straight into it). A symbolic link is
+    written through, never replaced."""
+
+    def __init__(self, path, option, protect=()):
+        self.shown, self.option = str(path), option
+        real = Path(os.path.realpath(path))
+        if real.is_dir():
+            raise PolygonMethodError(f"cannot write {path}: it is a directory", key=option)
+        for other in protect:
+            if other and real.exists() and os.path.exists(other) and \
+                    os.path.samefile(real, other):
+                raise PolygonMethodError(f"cannot write {path}: it is the scene file "
+                                         "itself", key=option)
+        self.path = real
+        self.special = real.exists() and not stat.S_ISREG(real.stat().st_mode)
+        directory = real.parent
+        if not self.special:
+            if not directory.is_dir():
+                raise PolygonMethodError(f"cannot write {path}: no directory {directory}",
+                                         key=option)
+            if not os.access(directory, os.W_OK | os.X_OK):
+                raise PolygonMethodError(f"cannot write {path}: the directory {directory} is "
+                                         "not writable", key=option)
+            if real.exists() and not os.access(real, os.W_OK):
+                raise PolygonMethodError(f"cannot write {path}: the file is read-only",
+                                         key=option)
+        self.tmp = None
+
+    def fail(self, exc: OSError):
+        return PolygonMethodError(f"cannot write {self.shown}: "
+                                  f"{exc.strerror or type(exc).__name__}", key=self.option)
+
+    def stage(self, data, binary):
+        self.data, self.binary = data, binary
+        if self.special:
+            return
+        fd, self.tmp = tempfile.mkstemp(dir=self.path.parent, prefix=f".{self.path.name}.",
+                                        suffix=".tmp")
+        try:
+            with os.fdopen(fd, "wb" if binary else "w",
+                           **({} if binary else {"encoding": "utf-8"})) as fh:
+                fh.write(data)
+            umask = os.umask(0)
+            os.umask(umask)
+            os.chmod(self.tmp, 0o666 & ~umask)  # as an ordinary new file (mkstemp: 0600)
+        except OSError as exc:
+            raise self.fail(exc) from None
+
+    def commit(self):
+        try:
+            if self.special:
+                with open(self.path, "wb" if self.binary else "w",
+                          **({} if self.binary else {"encoding": "utf-8"})) as fh:
+                    fh.write(self.data)
+            else:
+                os.replace(self.tmp, self.path)
+                self.tmp = None
+        except OSError as exc:
+            raise self.fail(exc) from None
+
+    def discard(self):
+        if self.tmp is not None:
+            try:
+                os.unlink(self.tmp)
+            except OSError:
+                pass
+            self.tmp = None
+
+
+def check_outputs(paths, protect=()) -> list:
+    """Every output path checked before anything is computed or written: ``paths`` as
+    (path, option) pairs; ``protect``: files that must not be written over (the scene)."""
+    return [_Target(path, option, protect) for path, option in paths]
+
+
+def write_outputs(targets, datas) -> None:
+    """Write every output or none: each regular file staged beside itself first; then the
+    special files (a device, a pipe: written straight, so the first that fails stops
+    everything before any file is replaced); then the staged files renamed into place."""
+    try:
+        for t, (data, binary) in zip(targets, datas):
+            t.stage(data, binary)
+        for t in sorted(targets, key=lambda t: not t.special):
+            t.commit()
+    finally:
+        for t in targets:
+            t.discard()
+
+
+def write_output(path, data, *, binary=False, option=None, protect=()) -> None:
+    """Write ``data`` to ``path`` whole or not at all (see :func:`write_outputs`)."""
+    write_outputs(check_outputs([(path, option)], protect), [(data, binary)])
