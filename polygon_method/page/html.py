@@ -128,7 +128,7 @@ def _json(d) -> str:
 
 
 _CAPTION = {"configuration": "Configuration diagram", "velocity":
-            "Velocity polygon (pole o; image points b, c, …)", "acceleration":
+            "Velocity polygon (pole o; image points in lower case)", "acceleration":
             "Acceleration polygon (pole o'; centripetal dashed, tangential dotted)"}
 
 
