@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["rubbing_at", "pin_rubbing", "rubbing_of_pins", "largest", "power_terms", "input_torque", "transmission_angle"]
+__all__ = ["PinRubbing", "rubbing_at", "pin_rubbing", "pin_records", "largest", "power_terms", "input_torque", "transmission_angle"]
 
 
 def rubbing_at(pin, W, radius) -> tuple:
@@ -33,22 +33,49 @@ def pin_rubbing(plan, W, radii) -> dict:
     return {pin[0]: rubbing_at(pin, W, radii[pin[0]]) for pin in plan.pins}
 
 
-def rubbing_of_pins(pins, W, radii) -> list:
-    """[(pin, radius, values, largest)] for every sized pin of one instant (floats): the
-    values of :func:`rubbing_at`, in one pass."""
+def pin_records(pins, W, radii) -> dict:
+    """pin -> :class:`PinRubbing` for every sized pin at one instant (floats): the values of
+    :func:`rubbing_at`, in one pass."""
     w = W.get
-    out = []
+    out = {}
     for pin in pins:
-        r = radii[pin[0]]
+        p = pin[0]
+        r = radii[p]
         pairs = pin[5]
         if len(pairs) == 1:  # a pin of two bodies (the usual one)
-            (a, b), = pairs
+            a, b = pairs[0]
             v = abs(w(a, 0.0) - w(b, 0.0)) * r
-            out.append((pin, r, (v,), v))
+            out[p] = PinRubbing(pin, r, (v,), v, W)
         else:
             vs = tuple([abs(w(a, 0.0) - w(b, 0.0)) * r for a, b in pairs])
-            out.append((pin, r, vs, max(vs) if vs else 0.0))
+            out[p] = PinRubbing(pin, r, vs, max(vs) if vs else 0.0, W)
     return out
+
+
+class PinRubbing:
+    """Rubbing velocity at a pin: ``|w1 - w2| r`` for each pair of bodies the pin joins.
+
+    Attributes: ``point``, ``radius``, ``values`` (one per pair), ``pairs`` ({"AB|BC": v}),
+    ``bodies`` ({body: omega}) and ``rubbing_velocity`` (the largest pair).
+    """
+
+    __slots__ = ("point", "radius", "values", "rubbing_velocity", "_pin", "_W")
+
+    def __init__(self, pin, radius, values, largest, W):
+        self.point, self.radius, self._pin, self._W = pin[0], radius, pin, W
+        self.values, self.rubbing_velocity = values, largest
+
+    @property
+    def pairs(self) -> dict:
+        return dict(zip(self._pin[3], self.values))
+
+    @property
+    def bodies(self) -> dict:
+        W = self._W
+        return {name: W.get(lk, 0.0) for name, lk in zip(self._pin[1], self._pin[2])}
+
+    def __repr__(self):
+        return f"PinRubbing({self.point!r}, radius={self.radius!r}, pairs={self.pairs!r})"
 
 
 def largest(values):

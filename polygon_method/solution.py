@@ -21,7 +21,7 @@
 from __future__ import annotations
 
 from .derived import input_torque as _torque
-from .derived import power_terms, rubbing_of_pins
+from .derived import PinRubbing, pin_records, power_terms
 from .centres import JSON_BODIES, centres_dict, locate
 from .errors import TOL, PolygonMethodError
 from .kinematics import Motion, hypot
@@ -31,32 +31,6 @@ from .plan import Context
 from .scene import FixedPath, Scene
 
 __all__ = ["solve", "Solution", "PinRubbing", "sense", "fmt_angular"]
-
-
-class PinRubbing:
-    """Rubbing velocity at a pin: ``|w1 - w2| r`` for each pair of bodies the pin joins.
-
-    Attributes: ``point``, ``radius``, ``values`` (one per pair), ``pairs`` ({"AB|BC": v}),
-    ``bodies`` ({body: omega}) and ``rubbing_velocity`` (the largest pair).
-    """
-
-    __slots__ = ("point", "radius", "values", "rubbing_velocity", "_pin", "_W")
-
-    def __init__(self, pin, radius, values, largest, W):
-        self.point, self.radius, self._pin, self._W = pin[0], radius, pin, W
-        self.values, self.rubbing_velocity = values, largest
-
-    @property
-    def pairs(self) -> dict:
-        return dict(zip(self._pin[3], self.values))
-
-    @property
-    def bodies(self) -> dict:
-        W = self._W
-        return {name: W.get(lk, 0.0) for name, lk in zip(self._pin[1], self._pin[2])}
-
-    def __repr__(self):
-        return f"PinRubbing({self.point!r}, radius={self.radius!r}, pairs={self.pairs!r})"
 
 
 class Solution(Motion):
@@ -97,10 +71,7 @@ class Solution(Motion):
         c = self._cache
         r = c.get("rubbing")
         if r is None:
-            W = self.W
-            r = c["rubbing"] = {pin[0]: PinRubbing(pin, radius, values, largest, W)
-                                for pin, radius, values, largest
-                                in rubbing_of_pins(self.plan.pins, W, self.plan.dims.radii)}
+            r = c["rubbing"] = pin_records(self.plan.pins, self.W, self.plan.dims.radii)
         return r
 
     @property
@@ -219,6 +190,5 @@ def solve(scene: Scene) -> Solution:
     """
     plan = compile_plan(scene)
     inp = scene.input
-    ctx = Context(inp.angle, inp.omega, inp.alpha)
-    m = plan.run(ctx)
-    return Solution(scene, plan, m.P, m.V, m.A, m.W, m.Al, m.S, ctx.cond, inp.angle)
+    m = plan.run(Context(inp.angle, inp.omega, inp.alpha))
+    return Solution(scene, plan, m.P, m.V, m.A, m.W, m.Al, m.S, m.cond, inp.angle)
