@@ -329,13 +329,16 @@ def _cmd_sweep(args) -> int:
         raise SceneError("--points and --links choose what --plot draws: give --plot FILE "
                          "as well", key="--points" if getattr(args, "points", None)
                          else "--links")
+    if getattr(args, "error_bound", False) and not args.csv:
+        raise SceneError("--error-bound adds a column to the CSV: give --csv FILE as well",
+                         key="--error-bound")
     wanted = [(path, option) for path, option in ((args.csv, "--csv"), (plot, "--plot"))
               if path]
     targets = check_outputs(wanted, protect=[args.scene])
     scene = load_scene(args.scene)
     angles = _requested_angles(args)
     if args.csv:
-        need = _csv_bytes(scene, len(angles))
+        need = _csv_bytes(scene, len(angles), getattr(args, "error_bound", False))
         if need > MAX_CSV_BYTES:
             raise SceneError(f"a CSV of {len(angles)} crank angles would need about "
                              f"{need / 2 ** 30:.1f} GiB of memory (at most "
@@ -353,7 +356,7 @@ def _cmd_sweep(args) -> int:
                                  file=scene.file)
     outputs = []
     if args.csv:
-        outputs.append((res.to_csv(), False))
+        outputs.append((res.to_csv(getattr(args, "error_bound", False)), False))
     if plot:
         from .plots import plot_bytes
         outputs.append((plot_bytes(res, plot, points=_names(args, "points"),
@@ -373,11 +376,14 @@ MAX_ANGLE_DEG = 1e6
 MAX_CSV_BYTES = 2 * 2 ** 30
 
 
-def _csv_bytes(scene, n) -> int:
+def _csv_bytes(scene, n, error_bound=False) -> int:
     """About what a CSV of ``n`` rows needs: each of its columns as an array, in the table
-    that is written and as text (8 + 8 + 18 bytes a number)."""
+    that is written and as text (8 + 8 + 18 bytes a number); with ``--error-bound``, the
+    bounds of every quantity as arrays too."""
     cols = (1 + 6 * len(scene.point_names) + 2 * len(scene.links) + 4 * len(scene.sliders)
             + len(scene.pins) + 1 + len(scene.links))
+    if error_bound:
+        cols += 3 * len(scene.point_names) + 2 * len(scene.links) + 3 * len(scene.sliders) + 1
     return n * cols * 34
 
 
@@ -454,6 +460,9 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--to", dest="stop", type=float, help="last crank angle (deg)")
     s.add_argument("--step", type=float, help="crank angle step (deg)")
     s.add_argument("--csv", help="FILE.csv: one row per crank angle")
+    s.add_argument("--error-bound", action="store_true",
+                   help="add to the CSV a column err_max: the largest estimated relative "
+                        "error of any quantity at that angle")
     s.add_argument("--plot", help="FILE.svg, .png or .pdf")
     s.add_argument("--points", help="points to plot, e.g. C,E (default: all moving points)")
     s.add_argument("--links", help="links to plot, e.g. BC,CD (default: all moving links)")

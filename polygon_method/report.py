@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 
+from .errorbound import SHOWN, shown_bounds
 from .errors import TOL
 from .numbers import fmt_angular
 from .solution import Solution
@@ -83,6 +84,12 @@ def solution_text(sol: Solution) -> str:
         c = sol.conditions.get(st.index, 1.0)
         lines.append(f"  {st.index + 1}. {st.title}: finds {', '.join(st.finds)}"
                      f"   condition {c:.3g}")
+    bounds = shown_bounds(sol)
+    if bounds:
+        lines.append(f"estimated error above {SHOWN:g} (rounding times 1/condition along "
+                     "each quantity's steps; relative to the largest of its kind):")
+        for what, b in bounds:
+            lines.append(f"  {what}: {b:.2g}")
     for w in sol.warnings:
         lines.append(f"warning: {w}")
     for n in sol.notes:

@@ -23,6 +23,7 @@ from __future__ import annotations
 from .derived import input_torque as _torque
 from .derived import power_terms, rubbing_at
 from .centres import JSON_BODIES, centres_dict, locate
+from .errorbound import bounds_dict
 from .errors import TOL, PolygonMethodError
 from .kinematics import Motion, hypot
 from .numbers import fmt_angular, sense  # noqa: F401  (re-exported)
@@ -187,6 +188,7 @@ class Solution(Motion):
                       for st in self.plan.steps]
         d["warnings"] = warnings
         d["notes"] = list(self.notes)
+        d["error_bounds"] = bounds_dict(self)
         return d
 
     def value(self, kind: str, names: tuple):
