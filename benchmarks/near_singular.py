@@ -12,7 +12,10 @@ the refusal band) and returns the scene's TOML text. Lengths in mm, angles exact
   perpendicular to the guide (the step's dead centre);
 * ``block_at_pivot``: a crank and slotted lever, the block near the lever's pivot;
 * ``chain``: a toggle four-bar driving a second dyad from its coupler point (errors carried
-  through two steps).
+  through two steps);
+* ``toggle and slider``: a toggle four-bar whose extended follower drives a slider.
+
+:func:`make` adds a pin size at every moving joint and a force and a torque as loads.
 """
 
 from __future__ import annotations
@@ -146,22 +149,106 @@ A = {{ along = "O4-P" }}
 
 
 def chain(rng, c):
-    """A toggle four-bar (condition c at C) whose coupler point E drives a dyad EF, FG
-    (a well-conditioned second step, so errors are carried, not made, there)."""
-    text = toggle(rng, c)
-    head, inp = text.split("[assembly]")
-    # E's rough place is not known here: the second dyad is sized from the four-bar's
-    # ground: F somewhere near, G a further ground point
-    gx, gy = rng.uniform(150, 250), rng.uniform(-100, 100)
-    ef, fg = rng.uniform(150, 300), rng.uniform(80, 200)
-    head = head.replace("[links]\n", f"[links]\nEF = {_r(ef)}\nFG = {_r(fg)}\n")
-    head = head.replace("D = [", f"G = [{_r(gx)}, {_r(gy)}]\nD = [", 1)
-    return head + "[assembly]" + inp.replace("[input]", 'F = "above"\n[input]')
+    """A toggle four-bar (condition c at C) whose coupler point E drives a dyad EF, FG to
+    a further ground point G (a well-conditioned second step that carries the errors)."""
+    d = 100.0
+    a = rng.uniform(15, 60)
+    th = rng.uniform(-math.pi, math.pi)
+    bx, by = a * math.cos(th), a * math.sin(th)
+    e = math.hypot(d - bx, by)
+    b, cl = _coupler_lengths(rng, e, c)
+    cx, cy = _circle(bx, by, d, 0.0, b, cl, rng.choice([1.0, -1.0]))
+    along = rng.uniform(-0.5, 1.5) * b
+    ex, ey = bx + along * (cx - bx) / b, by + along * (cy - by) / b
+    ef, fg = rng.uniform(100, 250), rng.uniform(80, 200)
+    phi = rng.uniform(-math.pi, math.pi)
+    fx, fy = ex + ef * math.cos(phi), ey + ef * math.sin(phi)
+    psi = phi + math.pi + rng.uniform(0.5, 2.6) * rng.choice([1.0, -1.0])  # F's angle 30..150
+    gx, gy = fx + fg * math.cos(psi), fy + fg * math.sin(psi)
+    return f"""[ground]
+A = [0, 0]
+D = [{_r(d)}, 0]
+G = [{_r(gx)}, {_r(gy)}]
+[links]
+AB = {_r(a)}
+BC = {_r(b)}
+CD = {_r(cl)}
+EF = {_r(ef)}
+FG = {_r(fg)}
+[points]
+E = {{ on = "BC", along = {_r(along)} }}
+[assembly]
+C = [{_r(cx)}, {_r(cy)}]
+F = [{_r(fx)}, {_r(fy)}]
+""" + _input(rng, "AB", th)
+
+
+def toggle_slider(rng, c):
+    """A toggle four-bar (condition c at C) whose follower, extended to E, drives a slider F
+    on an inclined fixed path (a dyad's errors carried through a slider step)."""
+    d = 100.0
+    a = rng.uniform(15, 60)
+    th = rng.uniform(-math.pi, math.pi)
+    bx, by = a * math.cos(th), a * math.sin(th)
+    e = math.hypot(d - bx, by)
+    b, cl = _coupler_lengths(rng, e, c)
+    cx, cy = _circle(bx, by, d, 0.0, b, cl, rng.choice([1.0, -1.0]))
+    along = cl * rng.uniform(1.1, 1.6)  # E on CD's extension beyond C, from D
+    ex, ey = d + along * (cx - d) / cl, along * cy / cl
+    ell = rng.uniform(100, 250)
+    beta = rng.uniform(0, 180)
+    ux, uy = math.cos(math.radians(beta)), math.sin(math.radians(beta))
+    gam = rng.uniform(0.3, 1.2) * rng.choice([1.0, -1.0])  # rod 17..69 deg from the guide
+    fx = ex + ell * (ux * math.cos(gam) - uy * math.sin(gam))
+    fy = ey + ell * (ux * math.sin(gam) + uy * math.cos(gam))
+    return f"""[ground]
+A = [0, 0]
+D = [{_r(d)}, 0]
+[links]
+AB = {_r(a)}
+BC = {_r(b)}
+DC = {_r(cl)}
+EF = {_r(ell)}
+[points]
+E = {{ on = "DC", along = {_r(along)} }}
+[sliders]
+F = {{ path = "{_r(beta)} deg", through = [{_r(fx + 20 * ux)}, {_r(fy + 20 * uy)}] }}
+[assembly]
+C = [{_r(cx)}, {_r(cy)}]
+F = [{_r(fx)}, {_r(fy)}]
+""" + _input(rng, "AB", th)
+
+
+def loaded(text, rng):
+    """The scene with a pin size at every moving joint of two links and a force on the last
+    point and a torque on the last link (for the rubbing and torque bounds)."""
+    import tomllib
+    t = tomllib.loads(text)
+    links = list(t["links"])
+    ground = set(t["ground"])
+    joints = {}
+    for k in links:
+        ends = k.split("-") if "-" in k else [k[0], k[1:]]
+        for p in ends:
+            joints[p] = joints.get(p, 0) + 1
+    sliders = list(t.get("sliders", {}))
+    points = [p for p, n in joints.items()
+              if (n >= 2 or p in sliders) and p not in ground]
+    pins = "".join(f'"{p}" = {{ radius = {_r(rng.uniform(5, 20))} }}\n' for p in points)
+    target = sliders or points
+    fx, fy = rng.uniform(-500, 500), rng.uniform(-500, 500)
+    loads = (f'"{target[-1]}" = {{ force = [{_r(fx)}, {_r(fy)}] }}\n'
+             f'"{links[-1]}" = {{ torque = "{_r(rng.uniform(1, 50))} N m ccw" }}\n')
+    head, inp = text.split("[input]")
+    return head + "[pins]\n" + pins + "[loads]\n" + loads + "[input]" + inp
 
 
 FAMILIES = {"toggle": toggle, "change point": change_point, "dead centre": dead_centre,
-            "block at pivot": block_at_pivot, "chain": chain}
+            "block at pivot": block_at_pivot, "chain": chain,
+            "toggle and slider": toggle_slider}
 
 
-def make(family, rng, c):
-    return FAMILIES[family](rng, c)
+def make(family, rng, c, loads=True):
+    """The scene text of ``family`` at condition ``c``, with pins and loads unless not."""
+    text = FAMILIES[family](rng, c)
+    return loaded(text, rng) if loads else text

@@ -22,12 +22,28 @@ mechanism at that instant (``scales``, the same sizes the accuracy chart measure
   change point, where the motion stays finite, R ~ 1 and the acceleration's error grows
   like eps/c^3;
 * a slotted link (RPR): the lever's direction is the block's offset from the pivot divided
-  by its length, so each phase divides once: ``eP = g (K eps + eP_in)``,
-  ``eV = g (K eps + eV_in) + eP``, ``eA = g (K eps + eA_in) + eV``;
-* a crank: ``K eps``; a carried point: the errors of the two points it is carried by,
+  by its length, so each phase divides once, and the direction's error (g eP) turns the
+  block's motion relative to the pivot (``dV = |vA - vK| / velocity_scale``,
+  ``dA = (|aA - aK| + omega_scale |vA - vK|) / acceleration_scale``) once more::
+
+      eP = K eps + g eP_in
+      eV = K eps + g eV_in + eP + g eP dV                 -> eps/c, to eps/c^2 where the
+      eA = K eps + g eA_in + eV + g (eP + eV) dA             block slides fast
+
+  (its own rounding, of the lever's direction and of its omega and alpha, is relative to
+  them: only what it is given is divided by c);
+
+  the block's sliding velocity ``e_vs = K eps + eV_in + eP dV`` (the lever's direction is
+  off by eP), its sliding acceleration and Coriolis component ``K eps + eA_in + eP dA +
+  2 omega_scale (eV |vs| + e_vs velocity_scale) / acceleration_scale``;
+* a crank: ``K eps`` for its tip's position; its velocity and acceleration are computed
+  from the tip's coordinates minus the pivot's, so ``K eps (|O| + |T|) / |OT|``; a carried
+  point: the errors of the two points it is carried by,
   times ``1 + (|XN1| + |XN2|) / |N1N2|`` (how far out of its base it reaches), plus
   ``K eps``.
 
+Every ``K eps`` is multiplied by ``max(1, largest |coordinate| / longest link)``: a
+mechanism far from the origin is rounded to the digits of its coordinates.
 ``eX_in`` is the largest error of that kind among the points (and link omegas) the step
 reads. A link's omega and alpha get its step's ``eV`` and ``eA``; a slider's sliding
 velocity ``eV``, its sliding acceleration and Coriolis component ``eA``. ``K`` was fitted on
@@ -48,9 +64,9 @@ SHOWN = 1e-9
 #: unit roundoff of IEEE double precision
 EPS = 2.0 ** -53
 #: the constant of each kind of step (fitted against the 50-digit reference, with a margin)
-K = {"crank": 8.0, "carried": 8.0, "dyad": 32.0, "slider": 32.0, "slotted": 32.0}
+K = {"crank": 8.0, "carried": 8.0, "dyad": 48.0, "slider": 48.0, "slotted": 16.0}
 #: a step of a kind not listed here is bounded as a dyad (two direction lines)
-K_OTHER = 32.0
+K_OTHER = 48.0
 #: the conditions are at least the refusal band's edge; never divide by less than this
 C_FLOOR = 1e-12
 
@@ -60,6 +76,10 @@ def _max(a, b):
         return a if a >= b else b
     import numpy as np
     return np.maximum(a, b)
+
+
+def _sub(a, b):
+    return (a[0] - b[0], a[1] - b[1])
 
 
 def _abs(x):
@@ -152,6 +172,7 @@ def error_bounds(motion) -> ErrorBounds:
     sizes = scales(motion)
     ratio = sizes["omega"] ** 2 / sizes["alpha"]
     eP, eV, eA, eW, eAl, eS = {}, {}, {}, {}, {}, {}
+    slide = {}  # a block on a slotted link: its sliding, from its step
 
     def worst(table, names, other=None, links=()):
         vals = [table[n] for n in names if n in table]
@@ -159,15 +180,22 @@ def error_bounds(motion) -> ErrorBounds:
             vals += [other[lk] for lk in links if lk in other]
         return largest(vals) if vals else 0.0
 
+    # coordinates far from the origin, compared with the links, are rounded to the digits
+    # of the coordinates: every rounding is that much larger, relative to the links
+    far = largest([hypot(*xy) for xy in P.values()]) / sizes["position"]
+    far = _max(far, 1.0)
     for st in plan.steps:
         kind = st.kind
-        k = K.get(kind, K_OTHER) * EPS
+        k = K.get(kind, K_OTHER) * EPS * far
         needs, nlinks = st.needs, st.needs_links
         p_in = worst(eP, needs)
         v_in = worst(eV, needs, eW, nlinks)
         a_in = worst(eA, needs, eAl, nlinks)
-        if kind == "crank":
-            p = v = a = k
+        if kind == "crank":  # v = omega perp(T - O): T - O from the coordinates
+            p = k
+            (ox, oy), (tx, ty) = P[needs[0]], P[st.finds[0]]
+            gain = (hypot(ox, oy) + hypot(tx, ty)) / hypot(tx - ox, ty - oy)
+            v = a = K.get(kind, K_OTHER) * EPS * _max(gain, 1.0)
         elif kind == "carried":
             pair = [n for n in needs if n in P][:2]
             x = st.finds[0]
@@ -177,9 +205,24 @@ def error_bounds(motion) -> ErrorBounds:
             c = cond.get(st.index, 1.0)
             g = 1.0 / _max(c, C_FLOOR)
             if kind == "slotted":
-                p = g * (k + p_in)
-                v = g * (k + v_in) + p
-                a = g * (k + a_in) + v
+                # the lever's direction is off by g p: its end's velocity by that times
+                # the block's velocity relative to the pivot, over the lever's length
+                n1, n2 = needs[0], needs[1]
+                dv = hypot(*_sub(motion.V[n1], motion.V[n2])) / sizes["velocity"]
+                da = (hypot(*_sub(motion.A[n1], motion.A[n2]))
+                      + sizes["omega"] * hypot(*_sub(motion.V[n1], motion.V[n2])))
+                da = da / sizes["acceleration"]
+                p = k + g * p_in
+                v = k + g * v_in + p + g * p * dv
+                a = k + g * a_in + v + g * (p + v) * da
+                # the block's sliding along the lever: (vA - vK) and (aA - aK ...) along
+                # the lever's direction; Coriolis 2 omega vs
+                vs = _abs(motion.S[n2][0]) if n2 in motion.S else sizes["velocity"]
+                sv = k + v_in + p * dv
+                sa = (k + a_in + p * da
+                      + 2 * sizes["omega"] * (v * vs + sv * sizes["velocity"])
+                      / sizes["acceleration"])
+                slide[n2] = (sv, sa, sa)
             else:
                 p = g * (k + p_in)
                 v = g * (k + v_in + p)
@@ -199,6 +242,9 @@ def error_bounds(motion) -> ErrorBounds:
     for s in scene.sliders:  # the block's point, and the guide's turning when it moves
         x = s.point
         if x not in eV:
+            continue
+        if x in slide:
+            eS[x] = slide[x]
             continue
         v, a = eV[x], eA[x]
         guide = getattr(s, "guide", None)
