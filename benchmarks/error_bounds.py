@@ -200,10 +200,12 @@ def main(argv=None) -> int:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--cases", type=int, default=500, help="mechanisms per family")
     p.add_argument("--seed", type=int, default=1)
+    p.add_argument("--family", action="append", choices=list(FAMILIES),
+                   help="only this family (may be repeated)")
     p.add_argument("--json", help="write every number here")
     args = p.parse_args(argv)
     t0 = time.perf_counter()
-    results = run(args.cases, args.seed)
+    results = run(args.cases, args.seed, families=args.family)
     table = summary(results)
     print(markdown(table))
     print(f"\n{sum(t['cases'] for t in table.values())} mechanisms, "

@@ -28,7 +28,8 @@ mechanism at that instant (``scales``, the same sizes the accuracy chart measure
 
       eP = K eps + g eP_in
       eV = K eps + g eV_in + eP + g eP dV                 -> eps/c, to eps/c^2 where the
-      eA = K eps + g eA_in + eV + g (eP + eV) dA             block slides fast
+      eA = K eps + g eA_in + 2 eV + eP + g (eP + eV) dA      block slides fast
+           + R eP + 2 eV omega_scale |vs| / (|KA| alpha_scale)
 
   (its own rounding, of the lever's direction and of its omega and alpha, is relative to
   them: only what it is given is divided by c);
@@ -36,8 +37,9 @@ mechanism at that instant (``scales``, the same sizes the accuracy chart measure
   the block's sliding velocity ``e_vs = K eps + eV_in + eP dV`` (the lever's direction is
   off by eP), its sliding acceleration and Coriolis component ``K eps + eA_in + eP dA +
   2 omega_scale (eV |vs| + e_vs velocity_scale) / acceleration_scale``;
-* a crank: ``K eps`` for its tip's position; its velocity and acceleration are computed
-  from the tip's coordinates minus the pivot's, so ``K eps (|O| + |T|) / |OT|``; a carried
+* a crank: ``K eps (|O| + r) / position_scale`` for its tip's position; its velocity and acceleration are computed
+  from the tip's coordinates minus the pivot's, so ``K eps (|O| + |T|) / |OT|`` of the
+  tip's own velocity (omega r) and acceleration ((omega^2 + |alpha|) r); a carried
   point: the errors of the two points it is carried by,
   times ``1 + (|XN1| + |XN2|) / |N1N2|`` (how far out of its base it reaches), plus
   ``K eps``.
@@ -165,6 +167,36 @@ def _carried_gain(P, x, a, b):
     return 1.0 + (hypot(px - ax, py - ay) + hypot(px - bx, py - by)) / base
 
 
+def _slotted(motion, sizes, st, k, p_in, v_in, a_in):
+    """(eP, eV, eA of the lever's end, eW, eAl of the lever, the block's sliding (e_vs,
+    e_as, e_coriolis)) of a slotted link: the lever's direction is d = A - K over |d|, so
+    the error of d (its points' error) turns it by that over |d| = c L; the block's motion
+    relative to the pivot (e, e_a), turned so, errs by e times that angle; omega = e x u /
+    |d| and alpha = e_a x u / |d| divide once more."""
+    K_, A_ = st.needs[0], st.needs[1]
+    P, V, A = motion.P, motion.V, motion.A
+    Ls, Vs, As = sizes["position"], sizes["velocity"], sizes["acceleration"]
+    Om, Als = sizes["omega"], sizes["alpha"]
+    m = _max(hypot(*_sub(P[A_], P[K_])), C_FLOOR * Ls)
+    n = st.finds[0]
+    L = hypot(*_sub(P[n], P[K_]))
+    vs = _abs(motion.S[A_][0]) if A_ in motion.S else Vs
+    w = _abs(motion.W.get(st.links[0], 0.0)) if st.links else Om
+    al = _abs(motion.Al.get(st.links[0], 0.0)) if st.links else Als
+    e = hypot(*_sub(V[A_], V[K_]))
+    ea = hypot(*_sub(A[A_], A[K_])) + w * w * m + 2 * w * vs
+    turn = p_in * Ls / m + k                            # the lever's direction, rad
+    d_w = (v_in * Vs + e * turn) / m + k * w           # omega, rad/s
+    d_vs = v_in * Vs + e * turn + k * Vs               # sliding velocity, m/s
+    d_al = (a_in * As + ea * turn + 2 * d_w * vs + 2 * w * d_vs) / m + k * al
+    d_as = a_in * As + ea * turn + 2 * w * d_w * m + k * As
+    d_cor = 2 * (d_w * vs + w * d_vs) + k * As
+    p = k + p_in + turn * L / Ls
+    v = k + (v_in * Vs + L * d_w + w * L * turn) / Vs
+    a = k + (a_in * As + L * d_al + 2 * w * d_w * L + (w * w + al) * L * turn) / As
+    return p, v, a, d_w / Om + k, d_al / Als + k, (d_vs / Vs, d_as / As, d_cor / As)
+
+
 def error_bounds(motion) -> ErrorBounds:
     """The :class:`ErrorBounds` of ``motion`` (a solution or a sweep, with accelerations):
     rounding carried along the plan's steps, each step multiplying by 1/condition."""
@@ -191,11 +223,14 @@ def error_bounds(motion) -> ErrorBounds:
         p_in = worst(eP, needs)
         v_in = worst(eV, needs, eW, nlinks)
         a_in = worst(eA, needs, eAl, nlinks)
-        if kind == "crank":  # v = omega perp(T - O): T - O from the coordinates
-            p = k
+        if kind == "crank":  # T = O + r (cos, sin), v = omega perp(T - O)
             (ox, oy), (tx, ty) = P[needs[0]], P[st.finds[0]]
-            gain = (hypot(ox, oy) + hypot(tx, ty)) / hypot(tx - ox, ty - oy)
-            v = a = K.get(kind, K_OTHER) * EPS * _max(gain, 1.0)
+            r = hypot(tx - ox, ty - oy)
+            p = K.get(kind, K_OTHER) * EPS * (hypot(ox, oy) + r) / sizes["position"]
+            gain = K.get(kind, K_OTHER) * EPS * _max((hypot(ox, oy) + hypot(tx, ty)) / r, 1.0)
+            inp = motion.scene.input  # relative to the crank tip's own motion
+            v = gain * _abs(inp.omega) * r / sizes["velocity"]
+            a = gain * (inp.omega ** 2 + _abs(inp.alpha)) * r / sizes["acceleration"]
         elif kind == "carried":
             pair = [n for n in needs if n in P][:2]
             x = st.finds[0]
@@ -205,32 +240,19 @@ def error_bounds(motion) -> ErrorBounds:
             c = cond.get(st.index, 1.0)
             g = 1.0 / _max(c, C_FLOOR)
             if kind == "slotted":
-                # the lever's direction is off by g p: its end's velocity by that times
-                # the block's velocity relative to the pivot, over the lever's length
-                n1, n2 = needs[0], needs[1]
-                dv = hypot(*_sub(motion.V[n1], motion.V[n2])) / sizes["velocity"]
-                da = (hypot(*_sub(motion.A[n1], motion.A[n2]))
-                      + sizes["omega"] * hypot(*_sub(motion.V[n1], motion.V[n2])))
-                da = da / sizes["acceleration"]
-                p = k + g * p_in
-                v = k + g * v_in + p + g * p * dv
-                a = k + g * a_in + v + g * (p + v) * da
-                # the block's sliding along the lever: (vA - vK) and (aA - aK ...) along
-                # the lever's direction; Coriolis 2 omega vs
-                vs = _abs(motion.S[n2][0]) if n2 in motion.S else sizes["velocity"]
-                sv = k + v_in + p * dv
-                sa = (k + a_in + p * da
-                      + 2 * sizes["omega"] * (v * vs + sv * sizes["velocity"])
-                      / sizes["acceleration"])
-                slide[n2] = (sv, sa, sa)
+                p, v, a, w, al, slide[needs[1]] = _slotted(motion, sizes, st, k, p_in,
+                                                           v_in, a_in)
             else:
                 p = g * (k + p_in)
                 v = g * (k + v_in + p)
                 a = g * (k + a_in + p + ratio * v)
+                w, al = v, a
+        if kind in ("crank", "carried"):
+            w, al = v, a
         for x in st.finds:
             eP[x], eV[x], eA[x] = p, v, a
         for lk in st.links:
-            eW[lk], eAl[lk] = v, a
+            eW[lk], eAl[lk] = w, al
     for lk in motion.W:  # the crank's omega and alpha are given; fixed links do not turn
         eW.setdefault(lk, EPS)
         eAl.setdefault(lk, EPS)
