@@ -147,3 +147,43 @@ def test_error_bound_without_csv_is_one_line(tmp_path, capsys):
     assert main(["sweep", str(path), "--error-bound"]) == 2
     out, err = capsys.readouterr()
     assert out == "" and err.count("\n") == 1 and "--csv" in err
+
+
+WORKED = sorted((__import__("pathlib").Path(__file__).resolve().parent.parent
+                 / "worked_problems").glob("*.toml"))
+
+
+@pytest.mark.parametrize("path", WORKED, ids=[p.stem for p in WORKED])
+def test_worked_problems_within_their_bounds(path):
+    """Every step kind as the textbook uses it (blocks on moving links, carried points,
+    second sliders): each quantity within its bound of the reference; the bounds far
+    below the promise of 1e-9."""
+    from polygon_method.scene import load_scene
+    sol = solve(load_scene(str(path)))
+    for kind, name, err, bound in compare_case(sol, REF):
+        assert err <= bound, (kind, name, err, bound)
+        assert bound < 1e-11
+
+
+@pytest.mark.parametrize("name", ["whitworth", "six_link_second_slider",
+                                  "two_slider_mechanism", "crank_slotted_lever"])
+def test_sweep_bounds_are_the_solves_bounds(name):
+    """The same formulas on arrays: each sample of a sweep has the bounds of a solve at
+    that angle."""
+    from polygon_method.kinematics import evaluate
+    from polygon_method.scene import load_scene
+    scene = load_scene(str(WORKED[0].parent / f"{name}.toml"))
+    angles = [0.3, 1.7, 2.9, 4.4]
+    res = sweep(scene, angles)
+    b = error_bounds(res)
+    for i, th in enumerate(res.theta):
+        one = error_bounds(evaluate(res.plan, theta=float(th)))
+        for table, single in ((b.P, one.P), (b.V, one.V), (b.A, one.A), (b.W, one.W),
+                              (b.Al, one.Al)):
+            for k, v in single.items():
+                got = v if isinstance(table[k], float) else table[k][i]
+                assert got == pytest.approx(v, rel=1e-6, abs=1e-30), (k, th)
+        for k, t in one.S.items():
+            for got, want in zip(b.S[k], t):
+                got = got if isinstance(got, float) else got[i]
+                assert got == pytest.approx(want, rel=1e-6), (k, th)
