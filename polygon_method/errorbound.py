@@ -21,34 +21,25 @@ mechanism at that instant (``scales``, the same sizes the accuracy chart measure
   grow faster still and the error relative to them is one power of c smaller (R ~ c); at a
   change point, where the motion stays finite, R ~ 1 and the acceleration's error grows
   like eps/c^3;
-* a slotted link (RPR): the lever's direction is the block's offset from the pivot divided
-  by its length, so each phase divides once, and the direction's error (g eP) turns the
-  block's motion relative to the pivot (``dV = |vA - vK| / velocity_scale``,
-  ``dA = (|aA - aK| + omega_scale |vA - vK|) / acceleration_scale``) once more::
-
-      eP = K eps + g eP_in
-      eV = K eps + g eV_in + eP + g eP dV                 -> eps/c, to eps/c^2 where the
-      eA = K eps + g eA_in + 2 eV + eP + g (eP + eV) dA      block slides fast
-           + R eP + 2 eV omega_scale |vs| / (|KA| alpha_scale)
-
-  (its own rounding, of the lever's direction and of its omega and alpha, is relative to
-  them: only what it is given is divided by c);
-
-  the block's sliding velocity ``e_vs = K eps + eV_in + eP dV`` (the lever's direction is
-  off by eP), its sliding acceleration and Coriolis component ``K eps + eA_in + eP dA +
-  2 omega_scale (eV |vs| + e_vs velocity_scale) / acceleration_scale``;
-* a crank: ``K eps (|O| + r) / position_scale`` for its tip's position; its velocity and acceleration are computed
-  from the tip's coordinates minus the pivot's, so ``K eps (|O| + |T|) / |OT|`` of the
-  tip's own velocity (omega r) and acceleration ((omega^2 + |alpha|) r); a carried
-  point: the errors of the two points it is carried by,
-  times ``1 + (|XN1| + |XN2|) / |N1N2|`` (how far out of its base it reaches), plus
-  ``K eps``.
+* a slotted link (RPR): the lever's direction ``d = A - K`` over ``|d| = c L`` turns by
+  ``turn = eP_in L_scale / |d| + K eps`` (only what the step is given is divided by c);
+  omega ``= (vA - vK) x u / |d|``, the sliding velocity, alpha and the sliding
+  acceleration follow from that turn and from the block's motion relative to the pivot
+  (its size read from the motion), each as its own relative error (:func:`_slotted`):
+  eps/c where the block slides slowly, an eps/c^2 part where it slides fast;
+* a crank: ``K eps (|O| + r) / position_scale`` for its tip's position; its velocity and
+  acceleration are computed from the tip's coordinates minus the pivot's, so
+  ``K eps (|O| + |T|) / r`` of the tip's own velocity (omega r) and acceleration
+  ((omega^2 + |alpha|) r);
+* a carried point: the errors of the two points it is carried by, times
+  ``1 + (|XN1| + |XN2|) / |N1N2|`` (how far out of its base it reaches), plus ``K eps``.
 
 Every ``K eps`` is multiplied by ``max(1, largest |coordinate| / longest link)``: a
 mechanism far from the origin is rounded to the digits of its coordinates.
 ``eX_in`` is the largest error of that kind among the points (and link omegas) the step
 reads. A link's omega and alpha get its step's ``eV`` and ``eA``; a slider's sliding
-velocity ``eV``, its sliding acceleration and Coriolis component ``eA``. ``K`` was fitted on
+velocity ``eV``, its sliding acceleration and Coriolis component ``eA`` (a block on a
+slotted link, its own). ``K`` was fitted on
 thousands of random mechanisms near every singular family against the 50-digit reference
 and then given a margin (``benchmarks/error_bounds.py``). The same formulas take floats
 (one instant) or numpy arrays (a sweep).
@@ -58,7 +49,8 @@ from __future__ import annotations
 
 from .kinematics import hypot
 
-__all__ = ["EPS", "K", "ErrorBounds", "error_bounds", "scales", "bounds_dict", "shown_bounds", "SHOWN"]
+__all__ = ["EPS", "K", "ErrorBounds", "error_bounds", "scales", "bounds_dict",
+           "shown_bounds", "SHOWN"]
 
 #: the text report shows a bound only above this (the promise of agreement everywhere else)
 SHOWN = 1e-9
