@@ -1,19 +1,21 @@
 """Validate the error bound of every quantity against the 50-digit reference, on random
 mechanisms near every singular family.
 
-    python benchmarks/error_bounds.py                 # 500 mechanisms a family (minutes)
+    python benchmarks/error_bounds.py                 # 2,000 mechanisms a family (90 s)
     python benchmarks/error_bounds.py --cases 20      # fewer
-    python benchmarks/error_bounds.py --json FILE     # every number, for the chart
+    python benchmarks/error_bounds.py --family toggle # one family (may be repeated)
+    python benchmarks/error_bounds.py --json FILE     # every number
 
 For each family of ``near_singular.py`` (a toggle, a change point, a slider's dead centre,
 a block near its lever's pivot, a toggle carried through a second dyad or a slider), each
 mechanism is drawn with the condition of its singular step log-uniform between 1e-3 (the
 edge of the refusal band) and 1 (every other one between 1e-3 and 2e-3), with pins at its
-joints and a force and a torque as loads. It is solved, its ``error_bounds`` computed, and every quantity (positions,
-velocities and accelerations of the points, omega and alpha of the links, the sliders'
-sliding velocity, sliding acceleration and Coriolis component, each pin's rubbing velocity,
-the input torque) is compared with the reference (``tests/reference.py``, Newton on the
-loop-closure equations in mpmath) relative to the same size as its bound.
+joints and a force and a torque as loads. It is solved, its ``error_bounds`` computed,
+and every quantity (positions, velocities and accelerations of the points, omega and
+alpha of the links, the sliders' sliding velocity, sliding acceleration and Coriolis
+component, each pin's rubbing velocity, the input torque) is compared with the reference
+(``tests/reference.py``, Newton on the loop-closure equations in mpmath) relative to the
+same size as its bound.
 
 Printed: per family and per kind of quantity, how many were compared, the largest
 ``error / bound`` (the bound holds where it is at most 1) and the median ``bound / error``
@@ -56,8 +58,9 @@ def load_reference(digits=DIGITS):
                                                   ROOT / "tests" / "reference.py")
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)
-    mod.mp.dps = digits
-    mod.NEWTON_TOL = mod.mpf(10) ** (-(digits - 6))
+    mod.DIGITS = digits  # used in a context (compare_case): the global precision stays
+    with mod.mpmath.workdps(digits):
+        mod.NEWTON_TOL = mod.mpf(10) ** (-(digits - 6))
     return mod
 
 
@@ -66,7 +69,8 @@ def compare_case(sol, ref_mod):
     reference and the bound, both relative to the same size (the bound's ``scales``, of
     the reference's values)."""
     sc = sol.scene
-    r = ref_mod.reference_solution(sc, sol.P)
+    with ref_mod.mpmath.workdps(ref_mod.DIGITS):
+        r = ref_mod.reference_solution(sc, sol.P)
     bounds = error_bounds(sol)
 
     def fl(d):
@@ -214,7 +218,7 @@ def markdown(table) -> str:
 
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--cases", type=int, default=500, help="mechanisms per family")
+    p.add_argument("--cases", type=int, default=2000, help="mechanisms per family")
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--family", action="append", choices=list(FAMILIES),
                    help="only this family (may be repeated)")
