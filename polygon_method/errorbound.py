@@ -269,10 +269,11 @@ def error_bounds(motion) -> ErrorBounds:
     return ErrorBounds(eP, eV, eA, eW, eAl, eS, sizes)
 
 
-def bounds_dict(sol) -> dict:
+def bounds_dict(sol, b=None) -> dict:
     """The ``error_bounds`` object of ``solve --json``: each quantity's bound, keyed as the
-    quantities themselves, and the sizes they are relative to."""
-    b = error_bounds(sol)
+    quantities themselves, and the sizes they are relative to (``b``: the bounds, if
+    already computed)."""
+    b = error_bounds(sol) if b is None else b
     sc = sol.scene
     d = {"relative_to": {k: float(v) for k, v in b.scales.items()},
          "points": {p: {"position": b.P[p], "velocity": b.V[p], "acceleration": b.A[p]}
@@ -291,10 +292,10 @@ def bounds_dict(sol) -> dict:
     return d
 
 
-def shown_bounds(sol) -> list:
+def shown_bounds(sol, b=None) -> list:
     """(quantity, bound) of every quantity whose bound exceeds :data:`SHOWN`, largest
-    first, for the text report."""
-    b = error_bounds(sol)
+    first, for the text report (``b``: the bounds, if already computed)."""
+    b = error_bounds(sol) if b is None else b
     out = []
     for p in sol.scene.point_names:
         for what, t in (("position", b.P), ("velocity", b.V), ("acceleration", b.A)):

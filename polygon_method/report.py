@@ -84,7 +84,7 @@ def solution_text(sol: Solution) -> str:
         c = sol.conditions.get(st.index, 1.0)
         lines.append(f"  {st.index + 1}. {st.title}: finds {', '.join(st.finds)}"
                      f"   condition {c:.3g}")
-    bounds = shown_bounds(sol)
+    bounds = shown_bounds(sol, sol.error_bounds)
     if bounds:
         lines.append(f"estimated error above {SHOWN:g} (rounding times 1/condition along "
                      "each quantity's steps; relative to the largest of its kind):")

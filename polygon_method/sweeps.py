@@ -75,6 +75,12 @@ class SweepResult(Motion):
     def __len__(self):
         return len(self.theta)
 
+    @property
+    def error_bounds(self):
+        """The estimated error bound of every quantity at every angle (arrays; see
+        :class:`~polygon_method.errorbound.ErrorBounds`), computed on each call."""
+        return error_bounds(self)
+
     def columns(self, error_bound=False):
         """(name, unit, array) of every quantity, the CSV's columns in order; with
         ``error_bound``, last, ``err_max``: the largest estimated relative error of any
@@ -101,7 +107,7 @@ class SweepResult(Motion):
             if st.branching:
                 cols.append((f"condition_step{st.index + 1}", "1", self.conditions[st.index]))
         if error_bound:
-            worst = error_bounds(self).worst
+            worst = self.error_bounds.worst
             cols.append(("err_max", "1", np.broadcast_to(worst, np.shape(self.theta))))
         return cols
 
