@@ -21,6 +21,8 @@ mechanism at that instant (``scales``, the same sizes the accuracy chart measure
   grow faster still and the error relative to them is one power of c smaller (R ~ c); at a
   change point, where the motion stays finite, R ~ 1 and the acceleration's error grows
   like eps/c^3;
+  a dyad carries its errors component by component (:func:`_dyad`): only the part of a
+  point's error along the link to it reaches the point it finds;
 * a slotted link (RPR): the lever's direction ``d = A - K`` over ``|d| = c L`` turns by
   ``turn = eP_in L_scale / |d| + K eps`` (only what the step is given is divided by c);
   omega ``= (vA - vK) x u / |d|``, the sliding velocity, alpha and the sliding
@@ -70,6 +72,13 @@ def _max(a, b):
         return a if a >= b else b
     import numpy as np
     return np.maximum(a, b)
+
+
+def _min(a, b):
+    if isinstance(a, float) and isinstance(b, float):
+        return a if a <= b else b
+    import numpy as np
+    return np.minimum(a, b)
 
 
 def _sub(a, b):
@@ -189,6 +198,55 @@ def _slotted(motion, sizes, st, k, p_in, v_in, a_in):
     return p, v, a, d_w / Om + k, d_al / Als + k, (d_vs / Vs, d_as / As, d_cor / As)
 
 
+class _Boxes(dict):
+    """(phase, point) -> (error along x, error along y); a point a dyad did not find has
+    its scalar bound in both."""
+
+    def __init__(self, eP, eV, eA):
+        super().__init__()
+        self.tables = (eP, eV, eA)
+
+    def of(self, phase, point):
+        b = self.get((phase, point))
+        if b is None:
+            e = self.tables[phase].get(point, 0.0)
+            return e, e
+        return b
+
+
+def _dyad(P, st, g, k, ratio, box):
+    """A dyad's bounds, component by component. Linearised, ``r1 . dX = r1 . dB`` and
+    ``r2 . dX = r2 . dD`` (the same two rows for positions, velocities and
+    accelerations), so ``dX = (-(u1 . dB) perp(u2) + (u2 . dD) perp(u1)) / c``: only the
+    component of B's error along XB, and of D's along XD, is carried, and it is carried
+    across the other link. A chain of dyads then carries its errors without multiplying
+    them by 1/c at every step where the geometry does not."""
+    B, D = st.needs[0], st.needs[1]
+    X = st.finds[0]
+    (x, y), (bx, by), (dx, dy) = P[X], P[B], P[D]
+    r1x, r1y, r2x, r2y = x - bx, y - by, x - dx, y - dy
+    n1 = _max(hypot(r1x, r1y), 1e-300)
+    n2 = _max(hypot(r2x, r2y), 1e-300)
+    u1x, u1y, u2x, u2y = _abs(r1x / n1), _abs(r1y / n1), _abs(r2x / n2), _abs(r2y / n2)
+
+    def carry(phase, own):
+        """(bound of |dX|, (bound along x, bound along y)); ``own``: what the step adds
+        in any direction."""
+        table = box.tables[phase]
+        ebx, eby = box.of(phase, B)
+        edx, edy = box.of(phase, D)
+        s1 = _min(u1x * ebx + u1y * eby, table.get(B, 0.0))  # |u . dB| <= |dB| too
+        s2 = _min(u2x * edx + u2y * edy, table.get(D, 0.0))
+        ex = g * (s1 * u2y + s2 * u1y + own)
+        ey = g * (s1 * u2x + s2 * u1x + own)
+        return g * (s1 + s2 + own), (ex, ey)
+
+    p, bp = carry(0, k)
+    v, bv = carry(1, k + p)
+    a, ba = carry(2, k + p + ratio * v)
+    return p, v, a, {(0, X): bp, (1, X): bv, (2, X): ba}
+
+
 def error_bounds(motion) -> ErrorBounds:
     """The :class:`ErrorBounds` of ``motion`` (a solution or a sweep, with accelerations):
     rounding carried along the plan's steps, each step multiplying by 1/condition."""
@@ -197,6 +255,7 @@ def error_bounds(motion) -> ErrorBounds:
     ratio = sizes["omega"] ** 2 / sizes["alpha"]
     eP, eV, eA, eW, eAl, eS = {}, {}, {}, {}, {}, {}
     slide = {}  # a block on a slotted link: its sliding, from its step
+    box = _Boxes(eP, eV, eA)  # a dyad's errors by component (x, y)
 
     def worst(table, names, other=None, links=()):
         vals = [table[n] for n in names if n in table]
@@ -234,6 +293,10 @@ def error_bounds(motion) -> ErrorBounds:
             if kind == "slotted":
                 p, v, a, w, al, slide[needs[1]] = _slotted(motion, sizes, st, k, p_in,
                                                            v_in, a_in)
+            elif kind == "dyad":
+                p, v, a, boxes = _dyad(P, st, g, k, ratio, box)
+                w, al = v, a
+                box.update(boxes)
             else:
                 p = g * (k + p_in)
                 v = g * (k + v_in + p)

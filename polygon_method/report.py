@@ -11,6 +11,9 @@ from .solution import Solution
 
 __all__ = ["solution_text", "direction_deg"]
 
+#: the most bounds the report lists (the largest first)
+SHOWN_LINES = 12
+
 
 def direction_deg(x: float, y: float) -> float:
     """Direction of a vector in degrees, ccw from +x, in [0, 360)."""
@@ -88,8 +91,11 @@ def solution_text(sol: Solution) -> str:
     if bounds:
         lines.append(f"estimated error above {SHOWN:g} (rounding times 1/condition along "
                      "each quantity's steps; relative to the largest of its kind):")
-        for what, b in bounds:
+        for what, b in bounds[:SHOWN_LINES]:
             lines.append(f"  {what}: {b:.2g}")
+        if len(bounds) > SHOWN_LINES:
+            lines.append(f"  ... and {len(bounds) - SHOWN_LINES} more (every bound: "
+                         "solve --json, error_bounds)")
     for w in sol.warnings:
         lines.append(f"warning: {w}")
     for n in sol.notes:

@@ -187,3 +187,37 @@ def test_sweep_bounds_are_the_solves_bounds(name):
             for got, want in zip(b.S[k], t):
                 got = got if isinstance(got, float) else got[i]
                 assert got == pytest.approx(want, rel=1e-6), (k, th)
+
+
+def chain_of_dyads(n):
+    """A crank and n dyads, each P(i) joined to P(i-1) and to ground G(i): a chain of
+    parallelograms (every step at condition sin 80 deg)."""
+    lines = ["[ground]"] + [f"G{i} = [{100 * i}, 0]" for i in range(n + 1)]
+    lines += ["[links]", "G0P0 = 100"]
+    for i in range(1, n + 1):
+        lines += [f"P{i - 1}P{i} = 100", f"G{i}P{i} = 100"]
+    lines += ["[input]", 'crank = "G0P0"', "angle = 80", 'speed = "10 rad/s ccw"']
+    return "\n".join(lines) + "\n"
+
+
+def test_a_chain_of_dyads_is_not_multiplied_by_one_over_c_at_every_step():
+    """Carried component by component, a chain's bound grows like a power of its length,
+    not like (1/c)^n; and it holds against the reference."""
+    sol = solve(parse_scene(chain_of_dyads(20)))
+    for kind, name, err, bound in compare_case(sol, REF):
+        assert err <= bound, (kind, name, err, bound)
+    assert sol.error_bounds.worst < 1e-9
+    long = solve(parse_scene(chain_of_dyads(2000)))
+    assert long.error_bounds.P["P2000"] < 1e-6  # (1/sin 80 deg)^2000 would be 1e13
+
+
+def test_text_report_lists_at_most_twelve_bounds(tmp_path, capsys):
+    path = tmp_path / "chain.toml"
+    path.write_text(chain_of_dyads(300))
+    assert main(["solve", str(path)]) == 0
+    out = capsys.readouterr().out
+    block = out.split("estimated error above 1e-09")[1].split("\nnote:")[0]
+    listed = [ln for ln in block.splitlines()[1:] if ln.startswith("  ") and ": " in ln
+              and not ln.startswith("  ...")]
+    assert len(listed) == 12
+    assert "more (every bound: solve --json, error_bounds)" in block
