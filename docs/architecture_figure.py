@@ -19,7 +19,7 @@ WORDS = {  # what each layer is for (the contract names the modules)
     2: "views they share",
     3: "what each step draws",
     4: "results: one solve, a sweep",
-    5: "derived: rubbing, torque, transmission angle; centres",
+    5: "derived: rubbing, torque, transmission angle; centres; error bounds",
     6: "following the branch over the cycle",
     7: "the motion record",
     8: "the plan: topology + branches; dimensions are inputs",

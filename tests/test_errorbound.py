@@ -34,7 +34,7 @@ def test_bound_holds_for_every_quantity_near_every_singular_family(seed):
     acceleration, Coriolis component, rubbing velocity and input torque is within its bound
     of the reference; the bound is within a factor 1000 of the error on the median
     mechanism of each family."""
-    results = run(12, seed=seed, digits=40)
+    results = run(24, seed=seed, digits=40)
     for fam, rows in results.items():
         ratios = []
         for cond, qs in rows:
