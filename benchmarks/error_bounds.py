@@ -5,6 +5,7 @@ mechanisms near every singular family.
     python benchmarks/error_bounds.py --cases 20      # fewer
     python benchmarks/error_bounds.py --family toggle # one family (may be repeated)
     python benchmarks/error_bounds.py --json FILE     # every number
+    python benchmarks/error_bounds.py --exponents     # and how the errors grow with 1/c
 
 For each family of ``near_singular.py`` (a toggle, a change point, a slider's dead centre,
 a block near its lever's pivot, a toggle carried through a second dyad or a slider), each
@@ -196,6 +197,35 @@ def summary(results) -> dict:
     return table
 
 
+def growth(results, kinds=("position", "velocity", "acceleration", "omega", "alpha")):
+    """{family: {kind: p}}: how the largest errors grow as the condition falls, as eps/c^p:
+    the 90th percentile of each mechanism's largest error of that kind, among those with
+    the condition from 1e-3 to EDGE and those from 0.1 to 1, against the geometric mean of
+    their conditions."""
+    out = {}
+    for fam, rows in results.items():
+        out[fam] = {}
+        for kind in kinds:
+            lo, hi = [], []
+            for c, qs in rows:
+                e = max((q[2] for q in qs or () if q[0] == kind), default=0.0)
+                if e > 0 and c < EDGE:
+                    lo.append((c, e))
+                elif e > 0 and 0.1 <= c < 1.0:
+                    hi.append((c, e))
+            if len(lo) < 10 or len(hi) < 10:
+                continue
+
+            def q90(v):
+                v = sorted(x[1] for x in v)
+                return v[int(0.9 * len(v))]
+
+            def gmean(v):
+                return math.exp(statistics.mean(math.log(x[0]) for x in v))
+            out[fam][kind] = math.log(q90(lo) / q90(hi)) / math.log(gmean(hi) / gmean(lo))
+    return out
+
+
 def markdown(table) -> str:
     lines = ["| family | mechanisms | largest error / bound | median (largest bound / largest "
              f"error) | condition {EDGE:g} down to the band: mechanisms, median largest "
@@ -223,11 +253,19 @@ def main(argv=None) -> int:
     p.add_argument("--family", action="append", choices=list(FAMILIES),
                    help="only this family (may be repeated)")
     p.add_argument("--json", help="write every number here")
+    p.add_argument("--exponents", action="store_true",
+                   help="also print how the errors grow: p of eps/c^p, per family and kind")
     args = p.parse_args(argv)
     t0 = time.perf_counter()
     results = run(args.cases, args.seed, families=args.family)
     table = summary(results)
     print(markdown(table))
+    if args.exponents:
+        kinds = ("position", "velocity", "acceleration", "omega", "alpha")
+        print("\n| family | " + " | ".join(kinds) + " |\n| --- |" + " --- |" * len(kinds))
+        for fam, ps in growth(results, kinds).items():
+            print(f"| {fam} | " + " | ".join(f"{ps[k]:.1f}" if k in ps else "-"
+                                             for k in kinds) + " |")
     print(f"\n{sum(t['cases'] for t in table.values())} mechanisms, "
           f"{time.perf_counter() - t0:.0f} s")
     if args.json:
