@@ -3,6 +3,7 @@
     python benchmarks/accuracy_speed.py            # full run (a few minutes)
     python benchmarks/accuracy_speed.py --quick    # few samples (CI runs this)
     python benchmarks/accuracy_speed.py --out DIR  # charts elsewhere (default benchmarks/charts)
+    python benchmarks/accuracy_speed.py --stability-only   # only the chart near singular positions
 
 Writes, into the output folder:
 
@@ -10,7 +11,8 @@ Writes, into the output folder:
   point per worked problem;
 * ``error_vs_singularity.svg/.png``: error against the distance to a singular position,
   per method: a toggle (transmission angle to 0), ``A_x`` to ``d`` (the algebraic method's
-  division), a slider-crank at dead centre, a parallelogram at its change point;
+  division), a slider-crank at dead centre, a parallelogram at its change point, with the
+  error bound the tool states for its own answers (dashed) next to its actual error;
 * ``finite_difference_step.svg/.png``: the finite-difference step-size trade-off;
 * ``results.json`` (every number) and ``results.md`` (the tables quoted in
   docs/accuracy.md, with the hand-drawing errors per quantity).
@@ -44,6 +46,7 @@ from polygon_method.errors import PolygonMethodError  # noqa: E402
 from polygon_method.scene import load_scene, parse_scene  # noqa: E402
 
 REFUSED = 10.0  # where a refusal is drawn (errors are never that large)
+BOUND = "production: stated error bound"  # the series of the tool's own error bound
 FLOOR = 1e-17  # an error of exactly 0 is drawn here (log scale)
 HAND_SECONDS = 1800.0  # a careful hand drawing of both polygons: about half an hour
 PENCIL = (0.25, 0.25)  # mm, deg: one standard deviation of each line drawn or read
@@ -310,6 +313,13 @@ def singular(quick, drawings, peer_fns):
                     series.setdefault(name, []).append((x, e, False))
                 except Exception:  # noqa: BLE001 (any failure of a method: refused)
                     series.setdefault(name, []).append((x, REFUSED, True))
+            try:  # the bound the tool states for its own answer, next to its error
+                from polygon_method.errorbound import error_bounds
+                from polygon_method.solution import solve
+                b = float(error_bounds(solve(scene)).worst)
+                series.setdefault(BOUND, []).append((x, b, False))
+            except PolygonMethodError:
+                pass
             try:
                 import numpy as np
                 hd = M.hand_drawing(scene, drawings, length_mm=PENCIL[0], angle_deg=PENCIL[1])
@@ -462,6 +472,10 @@ def chart_singular(data, out, plt):
         for name, pts in d["series"].items():
             m, c = _style(name)
             pts = sorted(pts)
+            if name == BOUND:  # a dashed line in the production's colour, no markers
+                ax.plot([p[0] for p in pts], [max(p[1], FLOOR) for p in pts], "--",
+                        color=_style("production")[1], lw=1.6, label=name)
+                continue
             xs = [p[0] for p in pts]
             ys = [max(p[1], FLOOR) for p in pts]
             ax.plot(xs, ys, "-", color=c, alpha=0.5, lw=1)
@@ -591,6 +605,9 @@ def main(argv=None) -> int:
     ap.add_argument("--quick", action="store_true", help="few samples (CI)")
     ap.add_argument("--out", default=str(HERE / "charts"), help="output folder")
     ap.add_argument("--drawings", type=int, help="simulated hand drawings per case")
+    ap.add_argument("--stability-only", action="store_true",
+                    help="redraw only the chart near singular positions (and its data in "
+                         "results.json)")
     args = ap.parse_args(argv)
     global REF
     REF = load_reference()
@@ -605,6 +622,16 @@ def main(argv=None) -> int:
     drawings = args.drawings or (50 if args.quick else 2000)
     peer_fns = {} if args.quick else peers()
     t0 = time.perf_counter()
+    if args.stability_only:
+        sing = singular(args.quick, drawings, peer_fns)
+        chart_singular(sing, out, plt)
+        res = out / "results.json"
+        if res.exists():
+            data = json.loads(res.read_text(encoding="utf-8"))
+            data["singular"] = sing
+            res.write_text(json.dumps(data, indent=1, default=str), encoding="utf-8")
+        print(f"stability chart in {out} ({time.perf_counter() - t0:.1f} s)")
+        return 0
     rows = worked(args.quick, drawings, peer_fns)
     sing = singular(args.quick, drawings, peer_fns)
     fd = fd_steps(args.quick)

@@ -4,11 +4,15 @@ from __future__ import annotations
 
 import math
 
+from .errorbound import SHOWN, shown_bounds
 from .errors import TOL
 from .numbers import fmt_angular
 from .solution import Solution
 
 __all__ = ["solution_text", "direction_deg"]
+
+#: the most bounds the report lists (the largest first)
+SHOWN_LINES = 12
 
 
 def direction_deg(x: float, y: float) -> float:
@@ -83,6 +87,15 @@ def solution_text(sol: Solution) -> str:
         c = sol.conditions.get(st.index, 1.0)
         lines.append(f"  {st.index + 1}. {st.title}: finds {', '.join(st.finds)}"
                      f"   condition {c:.3g}")
+    bounds = shown_bounds(sol, sol.error_bounds)
+    if bounds:
+        lines.append(f"estimated error above {SHOWN:g} (rounding times 1/condition along "
+                     "each quantity's steps; relative to the largest of its kind):")
+        for what, b in bounds[:SHOWN_LINES]:
+            lines.append(f"  {what}: {b:.2g}")
+        if len(bounds) > SHOWN_LINES:
+            lines.append(f"  ... and {len(bounds) - SHOWN_LINES} more (every bound: "
+                         "solve --json, error_bounds)")
     for w in sol.warnings:
         lines.append(f"warning: {w}")
     for n in sol.notes:

@@ -23,6 +23,7 @@ from __future__ import annotations
 from .derived import input_torque as _torque
 from .derived import PinRubbing, pin_records, power_terms
 from .centres import JSON_BODIES, centres_dict, locate
+from .errorbound import bounds_dict, error_bounds
 from .errors import TOL, PolygonMethodError
 from .kinematics import Motion, hypot
 from .numbers import fmt_angular, sense  # noqa: F401  (re-exported)
@@ -91,6 +92,13 @@ class Solution(Motion):
 
     # ----- conditioning
     @property
+    def error_bounds(self):
+        """The estimated error bound of every quantity
+        (:class:`~polygon_method.errorbound.ErrorBounds`: ``P, V, A, W, Al, S``, relative to
+        ``scales``; ``worst``), from the conditions of the steps each depends on."""
+        return self._get("error_bounds", lambda: error_bounds(self))
+
+    @property
     def warnings(self) -> tuple:
         """One line per ill-conditioned step (condition below sin 5 deg)."""
         def make():
@@ -157,6 +165,7 @@ class Solution(Motion):
                       for st in self.plan.steps]
         d["warnings"] = warnings
         d["notes"] = list(self.notes)
+        d["error_bounds"] = bounds_dict(self, self.error_bounds)
         return d
 
     def value(self, kind: str, names: tuple):

@@ -26,6 +26,7 @@ import io
 import numpy as np
 
 from .derived import input_torque, largest, pin_rubbing
+from .errorbound import error_bounds
 from .errors import TOL, SceneError
 from .kinematics import Motion
 from .compiler import compile_plan
@@ -74,8 +75,16 @@ class SweepResult(Motion):
     def __len__(self):
         return len(self.theta)
 
-    def columns(self):
-        """(name, unit, array) of every quantity, the CSV's columns in order."""
+    @property
+    def error_bounds(self):
+        """The estimated error bound of every quantity at every angle (arrays; see
+        :class:`~polygon_method.errorbound.ErrorBounds`), computed on each call."""
+        return error_bounds(self)
+
+    def columns(self, error_bound=False):
+        """(name, unit, array) of every quantity, the CSV's columns in order; with
+        ``error_bound``, last, ``err_max``: the largest estimated relative error of any
+        quantity at that angle (:mod:`polygon_method.errorbound`)."""
         sc = self.scene
         cols = [("theta", "deg", self.degrees)]
         for p in sc.point_names:
@@ -97,11 +106,14 @@ class SweepResult(Motion):
         for st in compile_plan(sc).steps:
             if st.branching:
                 cols.append((f"condition_step{st.index + 1}", "1", self.conditions[st.index]))
+        if error_bound:
+            worst = self.error_bounds.worst
+            cols.append(("err_max", "1", np.broadcast_to(worst, np.shape(self.theta))))
         return cols
 
-    def to_csv(self) -> str:
+    def to_csv(self, error_bound=False) -> str:
         """One row per crank angle; the header names each quantity with its unit."""
-        cols = self.columns()
+        cols = self.columns(error_bound)
         buf = io.StringIO()
         buf.write(",".join(f"{n} [{u}]" for n, u, _ in cols) + "\n")
         if len(self.theta):

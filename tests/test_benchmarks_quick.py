@@ -39,3 +39,9 @@ def test_quick_run_writes_charts_and_tables(tmp_path):
     assert min(ax["algebraic"])[1] > 1e-3  # the lecture's division by A_x - d
     md = (tmp_path / "results.md").read_text(encoding="utf-8")
     assert "| production |" in md and "95 % of drawings" in md
+    # the stated error bound is charted next to the error, and holds at every point
+    for case, d in res["singular"].items():
+        bound = {x: b for x, b, _ in d["series"][script.BOUND]}
+        for x, err, refused in d["series"]["production"]:
+            if not refused:
+                assert err <= bound[x], (case, x, err, bound[x])

@@ -104,6 +104,9 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--to", dest="stop", type=float, help="last crank angle (deg)")
     s.add_argument("--step", type=float, help="crank angle step (deg)")
     s.add_argument("--csv", help="FILE.csv: one row per crank angle")
+    s.add_argument("--error-bound", action="store_true",
+                   help="add to the CSV a column err_max: the largest estimated relative "
+                        "error of any quantity at that angle")
     s.add_argument("--plot", help="FILE.svg, .png or .pdf")
     s.add_argument("--points", help="points to plot, e.g. C,E (default: all moving points)")
     s.add_argument("--links", help="links to plot, e.g. BC,CD (default: all moving links)")

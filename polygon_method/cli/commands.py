@@ -198,13 +198,16 @@ def _cmd_sweep(args) -> int:
         raise SceneError("--points and --links choose what --plot draws: give --plot FILE "
                          "as well", key="--points" if getattr(args, "points", None)
                          else "--links")
+    if getattr(args, "error_bound", False) and not args.csv:
+        raise SceneError("--error-bound adds a column to the CSV: give --csv FILE as well",
+                         key="--error-bound")
     wanted = [(path, option) for path, option in ((args.csv, "--csv"), (plot, "--plot"))
               if path]
     targets = check_outputs(wanted, protect=[args.scene])
     scene = load_scene(args.scene)
     angles = _requested_angles(args)
     if args.csv:
-        need = _csv_bytes(scene, len(angles))
+        need = _csv_bytes(scene, len(angles), getattr(args, "error_bound", False))
         if need > MAX_CSV_BYTES:
             raise SceneError(f"a CSV of {len(angles)} crank angles would need about "
                              f"{need / 2 ** 30:.1f} GiB of memory (at most "
@@ -222,7 +225,7 @@ def _cmd_sweep(args) -> int:
                                  file=scene.file)
     outputs = []
     if args.csv:
-        outputs.append((res.to_csv(), False))
+        outputs.append((res.to_csv(getattr(args, "error_bound", False)), False))
     if plot:
         from ..plots import plot_bytes
         outputs.append((plot_bytes(res, plot, points=_names(args, "points"),
@@ -244,11 +247,14 @@ MAX_ANGLE_DEG = 1e6
 MAX_CSV_BYTES = 2 * 2 ** 30
 
 
-def _csv_bytes(scene, n) -> int:
+def _csv_bytes(scene, n, error_bound=False) -> int:
     """About what a CSV of ``n`` rows needs: each of its columns as an array, in the table
-    that is written and as text (8 + 8 + 18 bytes a number)."""
+    that is written and as text (8 + 8 + 18 bytes a number); with ``--error-bound``, the
+    bounds of every quantity as arrays too."""
     cols = (1 + 6 * len(scene.point_names) + 2 * len(scene.links) + 4 * len(scene.sliders)
             + len(scene.pins) + 1 + len(scene.links))
+    if error_bound:
+        cols += 3 * len(scene.point_names) + 2 * len(scene.links) + 3 * len(scene.sliders) + 1
     return n * cols * 34
 
 
