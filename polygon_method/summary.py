@@ -280,9 +280,8 @@ class _Reducer:
                                  bool(tasks), (nm, 1.0) in unbounded, (nm, -1.0) in unbounded)
                          for nm, u, mx, tmx, mn, tmn, what in rows)
         formulas = ()
-        if [st.kind for st in self.plan.steps if st.kind != "carried"] == ["crank", "slider"]:
-            from .linkage import engine_formula_lines  # (only a slider crank has any)
-            formulas = tuple(engine_formula_lines(self.scene, {e.name: e for e in extremes}))
+        from .linkage import engine_formula_lines  # an in-line slider crank's, or none
+        formulas = tuple(engine_formula_lines(self.scene, {e.name: e for e in extremes}))
         rng = None
         if not dom.full_turn:
             rng = (deg(dom.lo), deg(dom.lo) + math.degrees(dom.hi - dom.lo))

@@ -55,6 +55,26 @@ def test_views_never_test_a_step_class():
         assert not pattern.search(text), path
 
 
+#: the kinds' names, as ``Step.kind`` gives them
+STEP_KINDS = ("crank", "dyad", "slider", "slotted", "carried")
+
+
+def test_views_never_branch_on_a_step_kind():
+    """No ``st.kind == "dyad"`` (or ``kind in ("crank", ...)``) outside the steps package:
+    what depends on the kind is asked of the step. The one exception names a whole
+    mechanism by the kinds of its steps (a four-bar is a crank and a dyad): the linkage's
+    shapes."""
+    names = "|".join(STEP_KINDS)
+    pattern = re.compile(rf"\b(st|step|s|steps\[\w+\])\.kind\b\s*(==|!=|in)\s*[\(\[]?\s*"
+                         rf"[\"']({names})[\"']|\.kind for \w+ in [^\]]*\]\s*(==|!=)"
+                         rf"|\bkind\s*=\s*(st|step|s)\.kind\b")
+    for path, text in _sources():
+        rel = path.relative_to(PACKAGE)
+        if "steps" in rel.parts[:-1] or rel.as_posix() == "linkage/shapes.py":
+            continue
+        assert not pattern.search(text), (path, pattern.search(text).group(0))
+
+
 def _fourbar(bc, cd, angle=60.0):
     """C of the four-bar A(0,0) D(100,0) AB 50 by hand: circle-circle, the upper one."""
     t = math.radians(angle)

@@ -17,7 +17,7 @@ from ..solution import solve
 from ..tracking import TWO_PI
 from .cycle import _Cycle
 from .engine import _engine_lines
-from .shapes import (FourBar, Grashof, _Output, _output_of, _slotted_of, four_bar_of,
+from .shapes import (FourBar, Grashof, _Output, _output_of, slotted_of, four_bar_of,
                      grashof, slider_crank_of)
 
 
@@ -146,7 +146,7 @@ def analyse(scene: Scene) -> Linkage:
     dom = cyc.dom
     fb = four_bar_of(scene)
     sk = slider_crank_of(scene)
-    slot = _slotted_of(scene)
+    slot = slotted_of(scene)
     notes = []
     g = None
     classification = []

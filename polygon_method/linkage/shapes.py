@@ -182,7 +182,9 @@ def slider_crank_of(scene: Scene):
                        e, (ux, uy), sd)
 
 
-def _slotted_of(scene: Scene):
+def slotted_of(scene: Scene):
+    """The crank and the slotted link of a crank and slotted lever (the block at the crank
+    pin, the lever about a ground pivot), or None."""
     plan = compile_plan(scene)
     core = _core_steps(plan)
     if [s.kind for s in core[:2]] != ["crank", "slotted"]:

@@ -12,6 +12,7 @@ import math
 from dataclasses import dataclass
 
 from ..errors import TOL, AssemblyError, SingularStepError
+from .rounding import two_lines
 
 __all__ = ["Context", "State", "Step", "Vector", "DirectionLine", "Construction",
            "image_label", "pole_text", "unit", "sub", "add", "perp"]
@@ -176,6 +177,19 @@ class Step:
         prm = self.params
         (x1, y1, _), (x2, y2, _) = self.place(P, prm, ctx, 1.0), self.place(P, prm, ctx, -1.0)
         return ((x1 + x2) / 2, (y1 + y2) / 2), ((x1 - x2) / 2, (y1 - y2) / 2)
+
+    #: the rounding constant of the kind in its error bound (fitted against the 50-digit
+    #: reference, with a margin: ``benchmarks/error_bounds.py``)
+    rounding = 48.0
+
+    def error_bound(self, walk, k, p_in, v_in, a_in):
+        """(eP, eV, eA, eW, eAl): the relative error bounds of what this step finds (its
+        points' positions, velocities, accelerations; its links' omegas and alphas), from
+        the largest bounds of what it reads (``p_in, v_in, a_in``) and its own rounding
+        ``k``. ``walk`` (:mod:`polygon_method.errorbound`) holds the motion, the sizes the
+        bounds are relative to (``walk.sizes``, ``walk.ratio``) and the step's condition
+        (``walk.condition(step)``). By default: two direction lines (:mod:`.rounding`)."""
+        return two_lines(walk.condition(self), walk.ratio, k, p_in, v_in, a_in)
 
     #: steps of one kind next to each other with the same key may be bound together
     #: (``bind_group``): the same formulas, fewer calls

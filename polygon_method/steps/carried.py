@@ -13,6 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from .base import Construction, Step, absolute, image_label, relative
+from .rounding import vhypot
 
 __all__ = ["Carried", "image", "recognise"]
 
@@ -191,6 +192,22 @@ class Carried(Step):
                 A[X] = img(apx, apy, aqx, aqy, lam, mu)
 
         return instant
+
+    rounding = 8.0
+
+    def error_bound(self, walk, k, p_in, v_in, a_in):
+        """The errors of the two points it is carried by, times ``1 + (|XP| + |XQ|) /
+        |PQ|`` (how far out of its base it reaches), plus its own rounding."""
+        P = walk.P
+        x = self.point
+        if self.p in P and self.q in P and x in P:
+            (px, py), (ax, ay), (bx, by) = P[x], P[self.p], P[self.q]
+            gain = 1.0 + (vhypot(px - ax, py - ay) + vhypot(px - bx, py - by)) \
+                / vhypot(bx - ax, by - ay)
+        else:
+            gain = 1.0
+        p, v, a = gain * p_in + k, gain * v_in + k, gain * a_in + k
+        return p, v, a, v, a
 
     def produced(self):
         if self.mu != 0 or 0.0 <= self.lam <= 1.0:

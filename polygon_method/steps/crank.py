@@ -16,6 +16,7 @@ import math
 from dataclasses import dataclass
 
 from .base import Construction, Step, Vector, absolute, centripetal, image_label, pole_text, sub
+from .rounding import EPS, vhypot, vmax
 
 __all__ = ["Crank", "velocity", "acceleration"]
 
@@ -125,6 +126,22 @@ class Crank(Step):
             m.A[T] = (aox + ax, aoy + ay)
 
         return instant
+
+    rounding = 8.0
+
+    def error_bound(self, walk, k, p_in, v_in, a_in):
+        """T = O + r (cos, sin): its position errs by the rounding of O's coordinates and
+        r; its velocity and acceleration are made from T - O, so they err relative to the
+        tip's own motion (omega r, (omega^2 + |alpha|) r) by the rounding of the
+        coordinates over r."""
+        P, sizes, inp = walk.P, walk.sizes, walk.motion.scene.input
+        (ox, oy), (tx, ty) = P[self.pivot], P[self.tip]
+        r = vhypot(tx - ox, ty - oy)
+        p = self.rounding * EPS * (vhypot(ox, oy) + r) / sizes["position"]
+        gain = self.rounding * EPS * vmax((vhypot(ox, oy) + vhypot(tx, ty)) / r, 1.0)
+        v = gain * abs(inp.omega) * r / sizes["velocity"]
+        a = gain * (inp.omega ** 2 + abs(inp.alpha)) * r / sizes["acceleration"]
+        return p, v, a, v, a
 
     # ----- words
     def bodies(self):

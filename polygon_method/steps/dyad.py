@@ -26,6 +26,7 @@ from dataclasses import dataclass
 from ..errors import TOL, AssemblyError, SingularStepError
 from ..numbers import in_units
 from ..scene import split_name
+from .rounding import C_FLOOR, vhypot, vmax, vmin
 from .base import (Construction, DirectionLine, Step, Vector, absolute, centripetal,
                    image_label, perp, pole_text, relative, sub, unit)
 
@@ -211,6 +212,36 @@ class Dyad(Step):
             A[X] = (ax, ay)
 
         return instant
+
+    def error_bound(self, walk, k, p_in, v_in, a_in):
+        """Component by component. Linearised, ``r1 . dX = r1 . dB`` and ``r2 . dX = r2 .
+        dD`` (the same two rows for positions, velocities and accelerations), so ``dX =
+        (-(u1 . dB) perp(u2) + (u2 . dD) perp(u1)) / c``: only the component of B's error
+        along XB, and of D's along XD, is carried, across the other link. A chain of dyads
+        then carries its errors without multiplying them by 1/c at every step where the
+        geometry does not. ``walk.box`` keeps each point's error along x and y."""
+        P, box = walk.P, walk.box
+        g = 1.0 / vmax(walk.condition(self), C_FLOOR)
+        B, D, X = self.b, self.d, self.point
+        (x, y), (bx, by), (dx, dy) = P[X], P[B], P[D]
+        r1x, r1y, r2x, r2y = x - bx, y - by, x - dx, y - dy
+        n1 = vmax(vhypot(r1x, r1y), 1e-300)
+        n2 = vmax(vhypot(r2x, r2y), 1e-300)
+        u1x, u1y, u2x, u2y = abs(r1x / n1), abs(r1y / n1), abs(r2x / n2), abs(r2y / n2)
+
+        def carry(phase, own):
+            table = box.tables[phase]
+            ebx, eby = box.of(phase, B)
+            edx, edy = box.of(phase, D)
+            s1 = vmin(u1x * ebx + u1y * eby, table.get(B, 0.0))  # |u . dB| <= |dB| too
+            s2 = vmin(u2x * edx + u2y * edy, table.get(D, 0.0))
+            box[(phase, X)] = (g * (s1 * u2y + s2 * u1y + own), g * (s1 * u2x + s2 * u1x + own))
+            return g * (s1 + s2 + own)
+
+        p = carry(0, k)
+        v = carry(1, k + p)
+        a = carry(2, k + p + walk.ratio * v)
+        return p, v, a, v, a
 
     # ----- failures and words
     def coincident(self):

@@ -24,6 +24,7 @@ from dataclasses import dataclass
 
 from ..errors import TOL, SingularStepError
 from ..scene import GuideSlider
+from .rounding import C_FLOOR, vhypot, vmax
 from .base import (Construction, DirectionLine, Step, Vector, absolute, add, image_label, perp,
                    pole_text, relative, sub, unit)
 
@@ -183,6 +184,40 @@ class SlottedLink(Step):
             A[N] = (akx - k * px - al * py, aky - k * py + al * px)
 
         return position, velocity_, acceleration_
+
+    rounding = 16.0
+
+    def error_bound(self, walk, k, p_in, v_in, a_in):
+        """The lever's direction is d = A - K over |d|, so the error of d (its points'
+        error) turns it by that over |d|; the block's motion relative to the pivot (e,
+        e_a), turned so, errs by e times that angle; omega = e x u / |d| and alpha = e_a x
+        u / |d| divide once more. Its own rounding is relative to them: only what it is
+        given is divided. The block's sliding velocity, sliding acceleration and Coriolis
+        component go to ``walk.slide``."""
+        K_, A_ = self.known, self.point
+        m_, P, V, A = walk.motion, walk.P, walk.V, walk.A
+        sizes = walk.sizes
+        Ls, Vs, As = sizes["position"], sizes["velocity"], sizes["acceleration"]
+        Om, Als = sizes["omega"], sizes["alpha"]
+        m = vmax(vhypot(P[A_][0] - P[K_][0], P[A_][1] - P[K_][1]), C_FLOOR * Ls)
+        n = self.new
+        L = vhypot(P[n][0] - P[K_][0], P[n][1] - P[K_][1])
+        vs = abs(m_.S[A_][0]) if A_ in m_.S else Vs
+        w = abs(m_.W.get(self.guide, 0.0))
+        al = abs(m_.Al.get(self.guide, 0.0))
+        e = vhypot(V[A_][0] - V[K_][0], V[A_][1] - V[K_][1])
+        ea = vhypot(A[A_][0] - A[K_][0], A[A_][1] - A[K_][1]) + w * w * m + 2 * w * vs
+        turn = p_in * Ls / m + k                            # the lever's direction, rad
+        d_w = (v_in * Vs + e * turn) / m + k * w           # omega, rad/s
+        d_vs = v_in * Vs + e * turn + k * Vs               # sliding velocity, m/s
+        d_al = (a_in * As + ea * turn + 2 * d_w * vs + 2 * w * d_vs) / m + k * al
+        d_as = a_in * As + ea * turn + 2 * w * d_w * m + k * As
+        d_cor = 2 * (d_w * vs + w * d_vs) + k * As
+        walk.slide[A_] = (d_vs / Vs, d_as / As, d_cor / As)
+        p = k + p_in + turn * L / Ls
+        v = k + (v_in * Vs + L * d_w + w * L * turn) / Vs
+        a = k + (a_in * As + L * d_al + 2 * w * d_w * L + (w * w + al) * L * turn) / As
+        return p, v, a, d_w / Om + k, d_al / Als + k
 
     # ----- failures and words
     def at_pivot(self):

@@ -32,7 +32,7 @@ import numpy as np
 
 from ..errors import PolygonMethodError, SceneError
 from ..kinematics import evaluate
-from ..linkage import four_bar_of, grashof, slider_crank_of
+from ..linkage import four_bar_of, grashof, slider_crank_of, slotted_of
 from ..compiler import compile_plan
 from ..scene import Scene, parse_scene, scene_from_table, scene_table
 from ..solution import solve
@@ -61,11 +61,10 @@ def _shape(scene: Scene):
     sk = slider_crank_of(scene)
     if sk is not None:
         return ("slider crank", (sk.o, sk.crank, sk.rod, sk.b))
-    plan = compile_plan(scene)
-    core = [s for s in plan.steps if s.kind != "carried"]
-    if [s.kind for s in core[:2]] == ["crank", "slotted"] and \
-            core[1].point == core[0].tip and core[1].known in scene.ground:
-        return ("slotted", (core[0].link, core[0].pivot, core[1].known))
+    slot = slotted_of(scene)
+    if slot is not None:
+        crank, lever = slot
+        return ("slotted", (crank.link, crank.pivot, lever.known))
     return ("mechanism", None)
 
 

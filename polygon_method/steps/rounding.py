@@ -1,0 +1,65 @@
+"""How rounding passes through a construction step: the helpers each kind's
+``error_bound`` uses (for floats or numpy arrays alike) and the rule of two direction lines
+that most kinds share. The walk along the plan, the sizes the bounds are relative to and
+the output records are in :mod:`polygon_method.errorbound`.
+
+A step that intersects two direction lines divides by its condition ``c`` (the sine of the
+angle between them), so it multiplies the errors it is given, and the rounding ``k`` it
+makes itself, by ``g = 1/c``::
+
+    eP = g (k + eP_in)
+    eV = g (k + eV_in + eP)
+    eA = g (k + eA_in + eP + R eV)
+
+with ``R = omega_scale^2 / alpha_scale`` (where velocities themselves grow like 1/c the
+accelerations grow faster still, and the error relative to them is one power of c smaller).
+
+>>> p, v, a, w, al = two_lines(0.5, 1.0, 1.0, 0.0, 0.0, 0.0)   # c = 1/2, own rounding 1
+>>> p, v, a
+(2.0, 6.0, 18.0)
+"""
+
+from __future__ import annotations
+
+import math
+
+__all__ = ["EPS", "C_FLOOR", "vmax", "vmin", "vhypot", "two_lines"]
+
+#: unit roundoff of IEEE double precision
+EPS = 2.0 ** -53
+#: the conditions are at least the refusal band's edge; never divide by less than this
+C_FLOOR = 1e-12
+
+
+def vmax(a, b):
+    """The larger of two floats, or entry by entry of arrays."""
+    if isinstance(a, float) and isinstance(b, float):
+        return a if a >= b else b
+    import numpy as np
+    return np.maximum(a, b)
+
+
+def vmin(a, b):
+    """The smaller of two floats, or entry by entry of arrays."""
+    if isinstance(a, float) and isinstance(b, float):
+        return a if a <= b else b
+    import numpy as np
+    return np.minimum(a, b)
+
+
+def vhypot(x, y):
+    """|(x, y)| for floats or arrays."""
+    if isinstance(x, float) and isinstance(y, float):
+        return math.hypot(x, y)
+    import numpy as np
+    return np.hypot(x, y)
+
+
+def two_lines(c, ratio, k, p_in, v_in, a_in):
+    """(eP, eV, eA, eW, eAl) of a step that intersects two direction lines at condition
+    ``c`` (see the module): its omegas and alphas err as its velocities and accelerations."""
+    g = 1.0 / vmax(c, C_FLOOR)
+    p = g * (k + p_in)
+    v = g * (k + v_in + p)
+    a = g * (k + a_in + p + ratio * v)
+    return p, v, a, v, a
