@@ -5,7 +5,7 @@ off").
 Every quantity is computed in double precision (unit roundoff ``EPS`` = 2^-53, about
 1.1e-16). A step that intersects two direction lines (a dyad, a slider, a slotted link)
 divides by its condition ``c`` (the sine of the angle between the lines, or the block's
-distance from the pivot over the lever's length), so it multiplies the errors it is given,
+distance from the pivot over the links that place them), so it multiplies the errors it is given,
 and the rounding it makes itself, by ``g = 1/c``. Positions, velocities and accelerations
 are carried step by step along the plan, each relative to the size of its kind in the
 mechanism at that instant (``scales``, the same sizes the accuracy chart measures against):

@@ -81,12 +81,13 @@ def solution_text(sol: Solution) -> str:
                      "(power balance, no friction or inertia)")
     lines.append("")
     lines.append("plan (condition: the sine of the angle between the step's two direction "
-                 "lines; for a slotted link, the block's distance from the pivot / the "
-                 "link's length):")
+                 "lines, unless it says otherwise):")
     for st in sol.plan.steps:
         c = sol.conditions.get(st.index, 1.0)
+        col = st.condition_column()
+        own = f" = {col[2]}" if col is not None and col[1] != "deg" else ""
         lines.append(f"  {st.index + 1}. {st.title}: finds {', '.join(st.finds)}"
-                     f"   condition {c:.3g}")
+                     f"   condition {c:.3g}{own}")
     bounds = shown_bounds(sol, sol.error_bounds)
     if bounds:
         lines.append(f"estimated error above {SHOWN:g} (rounding times 1/condition along "

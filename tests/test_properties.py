@@ -189,7 +189,9 @@ angle = {th!r}
     scene = parse_scene(text)
 
     def conditions(P):
-        out = {0: 1.0, 1: min(math.hypot(*map(float, sub(P["A"], P["O4"]))) / (L * 1e-3), 1.0)}
+        # the block's distance from the pivot over the crank, the link that places it
+        out = {0: 1.0, 1: min(math.hypot(*map(float, sub(P["A"], P["O4"]))) / (crank * 1e-3),
+                              1.0)}
         if with_ram:
             out[2] = sine_between(sub(P["Q"], P["P"]), (0.0, 1.0))
         return out

@@ -50,7 +50,13 @@ def expected_condition(step, P, scene):
         u = step.path.u if step.path is not None else _sub(P[step.g2], P[step.g1])
         return abs(r[0] * u[0] + r[1] * u[1]) / (math.hypot(*r) * math.hypot(*u))
     if isinstance(step, SlottedLink):
-        return min(1.0, math.hypot(*_sub(P[step.point], P[step.known])) / step.length)
+        # over the longest other link at the block or the pivot (the guide's own length
+        # where none): the size of what places them
+        pts = (step.point, step.known)
+        others = [lk.length for lk in scene.links
+                  if lk.key != step.guide and (lk.p in pts or lk.q in pts)]
+        rho = max(others) if others else step.length
+        return min(1.0, math.hypot(*_sub(P[step.point], P[step.known])) / rho)
     return 1.0
 
 

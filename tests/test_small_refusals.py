@@ -87,3 +87,49 @@ def test_dotted_keys_are_located_too(tmp_path):
     with pytest.raises(SceneError) as err:
         load_scene(path)
     assert "[links] BC (line 4)" in err.value.one_line()
+
+
+def _lever(length, gap, angle=90.0):
+    """Crank O2-A of 100 mm about O2 = (0, 100 + gap): at 270 deg, A is ``gap`` mm above the
+    lever's pivot O4 = (0, 0); the lever O4-P is ``length`` mm long."""
+    return parse_scene(f"""
+[ground]
+O2 = [0, {100 + gap!r}]
+O4 = [0, 0]
+[links]
+"O2-A" = 100
+"O4-P" = {length!r}
+[sliders]
+A = {{ along = "O4-P" }}
+[input]
+crank = "O2-A"
+angle = {angle!r}
+speed = "10 rad/s ccw"
+""")
+
+
+def test_the_block_near_the_pivot_is_judged_against_the_crank_not_the_lever():
+    """A 5 m lever with its block 3.5 mm from the pivot (a 100 mm crank): the lever's
+    length does not make the block's offset any less exact, so it is solved, and agrees with
+    the 50-digit reference; the same offset on a 100 mm lever has the same condition. A block
+    0.05 mm from the pivot (5e-4 of the crank) is refused, whatever the lever."""
+    import math
+
+    from polygon_method import SingularStepError
+
+    from reference import reference_solution
+
+    long_, short = _lever(5000.0, 3.5, 270.0), _lever(100.0, 3.5, 270.0)
+    a, b = solve(long_), solve(short)
+    assert a.conditions[1] == pytest.approx(0.035, rel=1e-9)
+    assert b.conditions[1] == pytest.approx(0.035, rel=1e-9)
+    ref = reference_solution(long_, a.P)
+    scale = max(math.hypot(*a.V[p]) for p in a.V)
+    for p in ("A", "P"):
+        for i in (0, 1):
+            assert abs(a.V[p][i] - float(ref["velocities"][p][i])) <= 1e-9 * scale
+    w = float(ref["omega"]["O4-P"])
+    assert a.W["O4-P"] == pytest.approx(w, rel=1e-9)
+    for length in (100.0, 5000.0):
+        with pytest.raises(SingularStepError, match="pivot"):
+            solve(_lever(length, 0.05, 270.0))

@@ -102,7 +102,7 @@ def page_data(fr: Frames) -> dict:
     if conds:  # each frame's worst-conditioned step: its condition and which step it is
         table = np.array([c for _, c in conds])
         worst = table.argmin(axis=0)
-        d["condition"] = round_sig(table.min(axis=0), 4)
+        d["condition"] = round_sig(table.min(axis=0))  # six figures: shown to three, rounded once
         d["conditionStep"] = [int(i) for i in worst]
         d["stepLabels"] = [label for label, _ in conds]
     return d

@@ -9,10 +9,13 @@ link through a) are at right angles::
 
 Acceleration: ``aA = aK - wG^2 d + aG perp(d) + 2 wG vs perp(u) + as u`` (the Coriolis
 component 2 omega v). ``u`` is the guide's direction from its first point to its second, as
-named. Condition: min(1, |KA| / L): the block near the pivot makes the link's motion
-ill-defined.
+named. Condition: min(1, |KA| / rho): the block near the pivot makes the link's direction,
+and so its motion, ill-defined. ``rho`` is the length of the links that place the block and
+the pivot (the largest link at A or K other than the guide, e.g. the crank; the guide's own
+length where there is none): the rounding of A and K is of their size, so the direction's
+error is that over |KA|, whatever the lever's length.
 
->>> x, y, c = place(0.0, 0.0, 0.3, 0.4, 1.0, 1.0)
+>>> x, y, c = place(0.0, 0.0, 0.3, 0.4, 1.0, 1.0, 1.0)
 >>> round(x, 12), round(y, 12), c
 (0.6, 0.8, 0.5)
 """
@@ -31,17 +34,17 @@ from .base import (Construction, DirectionLine, Step, Vector, absolute, add, ima
 __all__ = ["SlottedLink", "place", "velocity", "acceleration", "recognise"]
 
 
-def place(kx, ky, ax, ay, length, sigma, ctx=None, step=None):
+def place(kx, ky, ax, ay, length, rho, sigma, ctx=None, step=None):
     """The free end N = K + L sigma (A - K) / |A - K| of a link through the block at A.
-    Returns x, y and the condition min(1, |KA| / L)."""
+    Returns x, y and the condition min(1, |KA| / rho)."""
     dx, dy = ax - kx, ay - ky
     m = (dx * dx + dy * dy) ** 0.5
     if ctx is not None:
-        if not ctx.array and m <= TOL.singular * length:
+        if not ctx.array and m <= TOL.singular * rho:
             raise step.at_pivot()
         m = ctx.safe(m, step)
     f = sigma * length / m
-    c = m / length
+    c = m / rho
     return kx + f * dx, ky + f * dy, (ctx.minimum(c, 1.0) if ctx is not None else min(c, 1.0))
 
 
@@ -77,8 +80,27 @@ def recognise(g, name):
             continue
         known = ends[0]
         g.used_sliders.add(sl.point)
+        ref = _reference(sc, guide.key, (sl.point, known)) or guide.key
         return SlottedLink(g.next_index, sl.point, guide.key, known, guide.other(known),
-                           guide.length, sl.first, sl.second, unit=g.unit, uname=g.uname)
+                           guide.length, sl.first, sl.second, unit=g.unit, uname=g.uname,
+                           ref=ref, rho=sc.link(ref).length)
+
+
+def _reference(sc, guide, points):
+    """The longest link (or plate) other than ``guide`` at any of ``points``: the size of
+    what places them (None where no other link meets them)."""
+    best = None
+    for lk in sc.links:
+        if lk.key != guide and (lk.p in points or lk.q in points) and \
+                (best is None or lk.length > best.length):
+            best = lk
+    for p in points:
+        cp = sc.carried(p)
+        if cp is not None and cp.link != guide:
+            lk = sc.link(cp.link)
+            if best is None or lk.length > best.length:
+                best = lk
+    return None if best is None else best.key
     return None
 
 
@@ -96,6 +118,9 @@ class SlottedLink(Step):
     sigma: float = 1.0
     unit: float = 1e-3
     uname: str = "mm"
+    #: the link whose length is the condition's scale (see the module), and that length
+    ref: str = ""
+    rho: float = 0.0
 
     kind = "slotted"
     branching = True
@@ -118,10 +143,11 @@ class SlottedLink(Step):
 
     @property
     def params(self):
-        return (self.length,)
+        return (self.length, self.rho or self.length)
 
     def dimensions(self, scene, bodies):
-        return (scene.link(self.guide).length,)
+        length = scene.link(self.guide).length
+        return (length, scene.link(self.ref).length if self.ref else length)
 
     def reach(self):
         return max(self.length, 1e-9)
@@ -129,7 +155,7 @@ class SlottedLink(Step):
     def place(self, P, prm, ctx, sigma=None):
         (kx, ky), (ax, ay) = P[self.known], P[self.point]
         s = self.sigma if sigma is None else sigma
-        return place(kx, ky, ax, ay, prm[0], s, ctx, self)
+        return place(kx, ky, ax, ay, prm[0], prm[1], s, ctx, self)
 
     def default_hint(self, P):
         return "block side"
@@ -138,7 +164,7 @@ class SlottedLink(Step):
         """The step's three phases for dimensions ``prm``: functions of a State."""
         Ab, K, N, F1, F2, guide = self.point, self.known, self.new, self.first, self.second, \
             self.guide
-        i, sigma, step, L = self.index, self.sigma, self, prm[0]
+        i, sigma, step, L, rho = self.index, self.sigma, self, prm[0], prm[1]
 
         def frame(P):
             (f1x, f1y), (f2x, f2y) = P[F1], P[F2]
@@ -147,7 +173,7 @@ class SlottedLink(Step):
 
         def position(m):
             P = m.P
-            x, y, c = place(*P[K], *P[Ab], L, sigma, m.ctx, step)
+            x, y, c = place(*P[K], *P[Ab], L, rho, sigma, m.ctx, step)
             P[N] = (x, y)
             m.cond[i] = c
 
@@ -233,7 +259,8 @@ class SlottedLink(Step):
         return f"block {self.point} reaches the pivot {self.known} of {self.guide}"
 
     def condition_column(self):
-        return (f"cond step {self.index + 1}", "1", f"|{self.known}{self.point}| / {self.guide}")
+        return (f"cond step {self.index + 1}", "1",
+                f"|{self.known}{self.point}| / {self.ref or self.guide} (at most 1)")
 
     def bodies(self):
         return (f"block {self.point}", self.guide)
