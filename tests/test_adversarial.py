@@ -1,0 +1,159 @@
+"""An adversarial user of page, draw --animate, variants and check --variants: what once
+crashed, lost a file or gave a silently wrong result, each kept as a test of its kind.
+
+The expected values never come from the code under test: a student's answers are those of
+the variant file they were written for (solved on its own), lengths and positions are
+read back from the files written, counts are counted here."""
+
+from __future__ import annotations
+
+import csv
+import math
+import tomllib
+
+import pytest
+
+from polygon_method import load_scene, parse_scene, solve
+from polygon_method.cli import main
+from polygon_method.errors import PolygonMethodError
+
+FOURBAR = """
+title = "Four-bar for a class"
+units = "mm"
+
+[ground]
+A = [0, 0]
+D = [100, 0]
+
+[links]
+AB = 30
+BC = 90
+CD = 70
+
+[assembly]
+C = "above"
+
+[input]
+crank = "AB"
+angle = 60
+speed = "120 rpm cw"
+
+[answers]
+v_C = "0.3 m/s"
+omega_BC = "3 rad/s"
+
+[variants]
+BC = { from = 80, to = 100, step = 1 }
+angle = { from = 30, to = 90, step = 10 }
+"""
+
+
+def _err_line(capsys):
+    err = capsys.readouterr().err
+    lines = [x for x in err.splitlines() if not x.startswith("warning:")]
+    assert len(lines) == 1, err
+    return lines[0]
+
+
+def _answers_for(variant_file, named):
+    """A student's right answers to the variant in ``variant_file`` (solved on its own)."""
+    sol = solve(load_scene(variant_file))
+    return (f"variant = {named}\n[answers]\n"
+            f'v_C = "{sol.speed("C"):.6f} m/s"\n'
+            f'omega_BC = "{abs(sol.omega("BC")):.6f} rad/s"\n')
+
+
+@pytest.fixture
+def klass(tmp_path):
+    base = tmp_path / "base.toml"
+    base.write_text(FOURBAR)
+    out = tmp_path / "class"
+    assert main(["variants", str(base), "--count", "4", "--seed", "3", "-o", str(out)]) == 0
+    answers = tmp_path / "answers"
+    answers.mkdir()
+    return base, out, answers
+
+
+def _book(tmp_path, base, answers, out, capsys):
+    book = tmp_path / "book.csv"
+    assert main(["check", str(base), str(answers), "--variants", str(out), "--gradebook",
+                 str(book)]) == 0
+    capsys.readouterr()
+    return {r["student"]: r for r in csv.DictReader(book.open())}
+
+
+def test_a_student_is_graded_against_the_variant_whose_id_they_name(tmp_path, klass,
+                                                                     capsys):
+    """A renamed variant file is still found by its id; a copy of another variant under
+    the name "03.toml" never pairs a student with the wrong variant."""
+    base, out, answers = klass
+    (out / "variant-02.toml").rename(out / "bobs-problem.toml")
+    (answers / "bob.toml").write_text(_answers_for(out / "bobs-problem.toml", '"02"'))
+    (out / "03.toml").write_text((out / "variant-04.toml").read_text())  # a stray copy
+    (answers / "cy.toml").write_text(_answers_for(out / "variant-03.toml", '"3"'))
+    (answers / "dee.toml").write_text(_answers_for(out / "variant-04.toml", "4"))
+    (answers / "eve.toml").write_text(_answers_for(out / "variant-01.toml", '"variant-01"'))
+    graded = _book(tmp_path, base, answers, out, capsys)
+    assert graded["bob"]["variant"] == "02" and graded["bob"]["right"] == "2"
+    assert graded["cy"]["variant"] == "03" and graded["cy"]["right"] == "2"
+    # 04 is in two files now: an error on that row, never a guess
+    assert "is in 2 files" in graded["dee"]["error"] and graded["dee"]["right"] == ""
+    assert graded["eve"]["right"] == "2"
+
+
+@pytest.mark.parametrize("named", ['"²"', '"٣"', '"0\\u001b3"', '"../x"', "-3", '"variant"',
+                                   '"answer-key"', "99999999999999999999"])
+def test_an_odd_variant_name_is_that_students_row_never_a_crash(tmp_path, klass, capsys,
+                                                                 named):
+    base, out, answers = klass
+    (answers / "ann.toml").write_text(_answers_for(out / "variant-03.toml", named))
+    (answers / "zed.toml").write_text(_answers_for(out / "variant-01.toml", '"01"'))
+    graded = _book(tmp_path, base, answers, out, capsys)
+    if named == '"٣"':  # an Arabic-Indic three is the number 3
+        assert graded["ann"]["right"] == "2"
+    else:
+        assert graded["ann"]["error"] and "\n" not in graded["ann"]["error"]
+    assert graded["zed"]["right"] == "2"
+
+
+def test_junk_in_the_variants_directory_is_named_not_fatal(tmp_path, klass, capsys):
+    base, out, answers = klass
+    (out / "notes.toml").write_text("this = = is not TOML")
+    (answers / "ann.toml").write_text(_answers_for(out / "variant-01.toml", '"notes"'))
+    (answers / "bob.toml").write_text(_answers_for(out / "variant-02.toml", '"2"'))
+    graded = _book(tmp_path, base, answers, out, capsys)
+    assert "notes.toml" in graded["ann"]["error"] and "cannot be read" in graded["ann"]["error"]
+    assert graded["bob"]["right"] == "2"
+
+
+def test_the_gradebook_is_never_written_over_a_file_the_command_reads(tmp_path, klass,
+                                                                       capsys):
+    base, out, answers = klass
+    ann = answers / "ann.csv"  # an answer file may have any name
+    ann.write_text(_answers_for(out / "variant-01.toml", '"01"'))
+    bob = answers / "bob.toml"
+    bob.write_text(_answers_for(out / "variant-02.toml", '"02"'))
+    before = ann.read_bytes()
+    assert main(["check", str(base), str(ann), str(bob), "--variants", str(out),
+                 "--gradebook", str(ann)]) == 2
+    assert "which this command reads" in _err_line(capsys)
+    assert ann.read_bytes() == before
+    link = tmp_path / "key.md"
+    link.symlink_to(bob)
+    assert main(["check", str(base), str(ann), str(bob), "--variants", str(out),
+                 "--gradebook", str(link)]) == 2
+    _err_line(capsys)
+    assert bob.read_text().startswith("variant = ")
+
+
+def test_a_student_file_name_with_a_line_break_stays_one_row(tmp_path, klass, capsys):
+    base, out, answers = klass
+    (answers / "new\nline.toml").write_text(_answers_for(out / "variant-01.toml", '"01"'))
+    (answers / "bob.toml").write_text(_answers_for(out / "variant-02.toml", '"02"'))
+    book = tmp_path / "book.md"
+    assert main(["check", str(base), str(answers), "--variants", str(out), "--gradebook",
+                 str(book)]) == 0
+    printed = capsys.readouterr().out
+    rows = [x for x in book.read_text().splitlines() if x.startswith("|")]
+    assert len(rows) == 2 + 2  # the head, its rule and one row per student
+    assert any(x.startswith("new\\nline ") for x in printed.splitlines())
