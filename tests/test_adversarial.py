@@ -157,3 +157,72 @@ def test_a_student_file_name_with_a_line_break_stays_one_row(tmp_path, klass, ca
     rows = [x for x in book.read_text().splitlines() if x.startswith("|")]
     assert len(rows) == 2 + 2  # the head, its rule and one row per student
     assert any(x.startswith("new\\nline ") for x in printed.splitlines())
+
+
+SLIDER = """
+title = "Slider crank on an inclined path"
+units = "mm"
+
+[ground]
+O = [0, 0]
+
+[links]
+OA = 40
+AB = 160
+
+[sliders]
+B = { path = "20 deg" }
+
+[assembly]
+B = "right"
+
+[input]
+crank = "OA"
+angle = 60
+speed = "100 rpm ccw"
+
+[pins]
+A = { radius = 10 }
+"""
+
+
+def test_every_varied_value_is_in_the_file_written(tmp_path, capsys):
+    """x and y of a path that passes through the crank's pivot (no `through` written):
+    each variant's file holds the pair its sheet names, and the four pairs are the four
+    combinations of the lists (one key's setting once undid the other's value)."""
+    base = tmp_path / "base.toml"
+    base.write_text(SLIDER + "\n[variants]\nB = { x = [0, 5], y = [-10, 10] }\n")
+    out = tmp_path / "class"
+    assert main(["variants", str(base), "--count", "4", "-o", str(out)]) == 0
+    pairs = set()
+    for k in range(1, 5):
+        text = (out / f"variant-{k:02d}.toml").read_text()
+        through = tuple(tomllib.loads(text)["sliders"]["B"]["through"])
+        header = text.splitlines()[0]  # "... x of the path of slider B 5 mm, y of ... -10 mm"
+        x = float(header.split("x of the path of slider B ")[1].split()[0])
+        y = float(header.split("y of the path of slider B ")[1].split()[0])
+        assert through == (x, y)
+        pairs.add(through)
+    assert pairs == {(0, -10), (0, 10), (5, -10), (5, 10)}
+
+
+@pytest.mark.parametrize("table, words", [
+    ("BC = [80, 85]\nCB = [90]", "BC and CB both vary link BC"),
+    ("A = { radius = [5, 6], diameter = [14] }", "both vary pin A"),
+])
+def test_two_keys_for_one_quantity_are_refused(table, words):
+    text = FOURBAR.split("[variants]")[0] + "[pins]\nA = { radius = 5 }\n[variants]\n" + table
+    with pytest.raises(PolygonMethodError, match=words):
+        parse_scene(text)
+
+
+def test_moving_a_path_along_itself_is_refused():
+    """x of a horizontal path (y of a vertical one) changes no mechanism: every variant
+    would be the same problem under other numbers."""
+    text = SLIDER.replace('"20 deg"', '"horizontal"')
+    with pytest.raises(PolygonMethodError, match="changes nothing"):
+        parse_scene(text + "\n[variants]\nB = { x = [0, 5] }\n")
+    parse_scene(text + "\n[variants]\nB = { y = [0, 5] }\n")  # across the path: a variant
+    with pytest.raises(PolygonMethodError, match="changes nothing"):
+        parse_scene(text.replace('"horizontal"', '"vertical"')
+                    + "\n[variants]\nB = { y = [0, 5] }\n")

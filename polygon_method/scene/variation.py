@@ -93,7 +93,19 @@ class _Variants:
         if not varied:
             raise self.error("[variants] varies nothing: give a range or a list, e.g. "
                              "BC = { from = 60, to = 75, step = 1 }", "variants")
+        self._one_key_each(varied)
         return Variation(tuple(varied), min_condition, min_text)
+
+    def _one_key_each(self, varied):
+        """Two keys that set one quantity (BC and CB; a pin's radius and its diameter)
+        would write one value and show the other on the problem sheet: refused."""
+        seen = {}
+        for v in varied:
+            what = v.path[:2] if v.path[0] == "pins" else v.path
+            if what in seen:
+                raise self.error(f"{seen[what]} and {v.key} both vary {v.label.split(' of ')[-1]}"
+                                 ": vary it by one key", "variants", v.key.split(".")[0])
+            seen[what] = v.key
 
     def _min_condition(self, value):
         if isinstance(value, (int, float)) and not isinstance(value, bool):
@@ -161,6 +173,10 @@ class _Variants:
                                      f"{sub} of ground point {name}", positive=False,
                                      table_key=name)]
             if slider is not None and hasattr(slider, "u"):
+                if abs(slider.u[1 - i]) < 1e-12:  # along the path itself: nothing moves
+                    raise self.error(f"the path of {name} runs along {sub}: moving it along "
+                                     f"{sub} changes nothing (vary its "
+                                     f"{'y' if sub == 'x' else 'x'})", "variants", name)
                 through = raw["sliders"][name].get("through")
                 if isinstance(through, str):
                     raise self.error(f"the path of {name} passes through ground point "

@@ -352,9 +352,10 @@ def generate(scene: Scene, count: int, seed: int, *, batch: int | None = None) -
         built = []
         for t in picks:
             r = copy.deepcopy(raw)
-            for v, i in zip(var.varied, t):
+            for v in var.varied:  # every setting first, so that none undoes a value
                 for path, value in v.setup:
                     _put(r, path, copy.deepcopy(value))
+            for v, i in zip(var.varied, t):
                 _put(r, v.path, v.values[i])
             try:
                 built.append((t, r, scene_from_table(r, scene.file)))
