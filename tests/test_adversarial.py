@@ -226,3 +226,60 @@ def test_moving_a_path_along_itself_is_refused():
     with pytest.raises(PolygonMethodError, match="changes nothing"):
         parse_scene(text.replace('"horizontal"', '"vertical"')
                     + "\n[variants]\nB = { y = [0, 5] }\n")
+
+
+SEED = "worked_problems/fourbar_image_points.toml"
+
+
+@pytest.mark.parametrize("n", [0, 1, -1, 2.5, "10", True, None, float("nan"), 3601, 10**9])
+def test_frames_through_the_api_are_a_whole_number_in_range(n):
+    from polygon_method.page import frames
+    with pytest.raises(PolygonMethodError, match="--frames"):
+        frames(load_scene(SEED), n)
+
+
+def test_an_animation_is_of_a_format_it_knows_and_a_size_it_can_hold():
+    from polygon_method.page import MAX_PICTURE_FRAMES, animation, frames
+    fr = frames(load_scene(SEED), 4)
+    for fmt in ("png", "SVG", None, "gif "):
+        with pytest.raises(PolygonMethodError, match="cannot animate"):
+            animation(fr, fmt)
+    big = frames(load_scene(SEED), MAX_PICTURE_FRAMES + 1)
+    assert animation(big, "svg").count("<animate ") > 0  # vector: fine
+    for fmt in ("gif", "html"):
+        with pytest.raises(PolygonMethodError, match="--frames"):
+            animation(big, fmt)
+
+
+def test_an_animation_never_holds_fewer_frames_than_it_says(monkeypatch):
+    """matplotlib's HTML player drops the frames beyond its size limit with no more than a
+    log line: a player short of frames is an error, never a file."""
+    import matplotlib.animation as mpa
+    from polygon_method.page import animation, frames
+
+    fr = frames(load_scene(SEED), 6)
+    html = animation(fr, "html")
+    assert len(__import__("re").findall(r'frames\[\d+\] = "data:image', html)) == 6
+    grab = mpa.HTMLWriter.grab_frame
+    calls = []
+
+    def lossy(self, **kw):  # as when the limit is reached: the later frames are dropped
+        calls.append(1)
+        if len(calls) <= 3:
+            grab(self, **kw)
+
+    monkeypatch.setattr(mpa.HTMLWriter, "grab_frame", lossy)
+    with pytest.raises(PolygonMethodError, match="holds 3 of its 6 frames"):
+        animation(fr, "html")
+
+
+@pytest.mark.parametrize("ext", ["gif", "html"])
+def test_too_many_picture_frames_is_one_line_before_anything_is_computed(tmp_path, capsys,
+                                                                          ext):
+    from polygon_method.page import MAX_PICTURE_FRAMES
+    out = tmp_path / f"cycle.{ext}"
+    out.write_text("keep me")
+    assert main(["draw", SEED, "--animate", "-o", str(out), "--frames",
+                 str(MAX_PICTURE_FRAMES + 1)]) == 2
+    assert f"from 2 to {MAX_PICTURE_FRAMES}" in _err_line(capsys)
+    assert out.read_text() == "keep me"

@@ -89,12 +89,10 @@ def _cmd_draw(args) -> int:
     return 0
 
 
-def _frames(args, scene):
-    """The scene's frames over its cycle (``--frames``: 2 to MAX_FRAMES)."""
-    from ..page import MAX_FRAMES, frames
-    if not 2 <= args.frames <= MAX_FRAMES:
-        raise SceneError(f"--frames {args.frames}: give between 2 and {MAX_FRAMES} frames",
-                         key="--frames")
+def _frames(args, scene, fmt=None):
+    """The scene's frames over its cycle (``--frames``: 2 to the most ``fmt`` allows)."""
+    from ..page import check_frames, frames
+    check_frames(args.frames, fmt)
     return frames(scene, args.frames)
 
 
@@ -146,8 +144,10 @@ def _cmd_animate(args, out, fmt) -> int:
     from ..page import animation
     from ..scene import load_scene
 
+    from ..page import check_frames
+    check_frames(args.frames, fmt)  # before anything is computed
     targets = check_outputs([(out, "-o")], protect=[args.scene])
-    fr = _frames(args, load_scene(args.scene))
+    fr = _frames(args, load_scene(args.scene), fmt)
     data = animation(fr, fmt)
     write_outputs(targets, [(data, isinstance(data, bytes))])
     print(f"{out}: {len(fr)} frames; " + "; ".join(s.text for s in fr.scales))
