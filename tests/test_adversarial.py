@@ -283,3 +283,45 @@ def test_too_many_picture_frames_is_one_line_before_anything_is_computed(tmp_pat
                  str(MAX_PICTURE_FRAMES + 1)]) == 2
     assert f"from 2 to {MAX_PICTURE_FRAMES}" in _err_line(capsys)
     assert out.read_text() == "keep me"
+
+
+@pytest.mark.parametrize("count, seed, words", [
+    (0, 0, "--count 0"), (-1, 0, "--count -1"), (2.5, 0, "--count 2.5"), ("3", 0, "--count"),
+    (10**6, 0, "to 9999"), (3, -1, "--seed -1"), (3, 1.5, "--seed 1.5"),
+    (3, None, "--seed None"), (True, 0, "--count True")])
+def test_generate_through_the_api_refuses_odd_counts_and_seeds(count, seed, words):
+    from polygon_method.variants import generate
+    with pytest.raises(PolygonMethodError, match=words.replace("+", r"\+")):
+        generate(parse_scene(FOURBAR), count, seed)
+
+
+def test_no_good_variant_at_all_asks_for_no_count_of_zero(tmp_path, capsys):
+    base = tmp_path / "base.toml"
+    base.write_text(FOURBAR.split("[variants]")[0] + "[variants]\nBC = [300, 301]\n")
+    assert main(["variants", str(base), "--count", "2", "-o", str(tmp_path / "o")]) == 2
+    line = _err_line(capsys)
+    assert "only 0 of the 2" in line and "--count 0" not in line
+    assert not (tmp_path / "o").exists()
+
+
+def test_a_long_problem_goes_on_over_the_page_of_the_pdf_sheet():
+    """A problem longer than a page (many points, every point's speed and acceleration
+    asked): every line of it is on a page, none below the page's foot."""
+    from polygon_method.variants import generate
+    from polygon_method.variants.papers import sheet_pages, sheet_sections
+    names = "EFGHIJKLMNOPQRSTUVW"
+    pts = "".join(f'{p} = {{ on = "BC", along = {5 + 4 * k} }}\n' for k, p in enumerate(names))
+    text = FOURBAR.split("[answers]")[0].replace("[assembly]", f"[points]\n{pts}\n[assembly]")
+    vs = generate(parse_scene(text + "[variants]\nangle = [50, 60]\n"), 2, 0)
+    wanted = [x.replace("`", "") for _, lines in sheet_sections(vs) for x in lines if x]
+    assert len(wanted) > 2 * 45  # more than a page each
+    shown, pages = [], 0
+    for fig in sheet_pages(vs):
+        pages += 1
+        for t in fig.texts:
+            assert t.get_position()[1] >= 0.03, t.get_text()
+            shown.append(t.get_text())
+    assert pages > 2
+    joined = " ".join(shown)
+    for line in wanted:  # each line (wrapped at 90 characters) is there
+        assert all(word in joined for word in line.split()[:3]), line

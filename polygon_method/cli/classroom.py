@@ -243,6 +243,7 @@ def _cmd_variants(args) -> int:
     from ..variants import (answer_key_csv, answer_key_markdown, generate, sheet_markdown,
                            sheet_pdf, summary_text)
 
+    from ..variants import MAX_VARIANTS
     if args.count < 1 or args.count > MAX_VARIANTS:
         raise SceneError(f"--count {args.count}: between 1 and {MAX_VARIANTS}",
                          key="--count")
@@ -295,6 +296,3 @@ def _cmd_variants(args) -> int:
           + (", problem-sheet.pdf" if args.pdf else ""))
     return 0
 
-
-#: the most variants one run writes
-MAX_VARIANTS = 9999

@@ -40,13 +40,15 @@ from .papers import (answer, answer_key_csv, answer_key_markdown, sheet_markdown
                      summary_text)
 
 __all__ = ["generate", "VariantSet", "Variant", "linkage_class", "dump_toml", "questions",
-           "screen", "answer", "ENUMERATE", "MAX_TRIED", "answer_key_csv",
+           "screen", "answer", "ENUMERATE", "MAX_TRIED", "MAX_VARIANTS", "answer_key_csv",
            "answer_key_markdown", "sheet_markdown", "sheet_pdf", "summary_text"]
 
 #: a space of at most this many combinations is visited whole
 ENUMERATE = 50_000
 #: at most this many candidates are screened in a larger space
 MAX_TRIED = 20_000
+#: the most variants one run makes
+MAX_VARIANTS = 9999
 
 
 # --------------------------------------------------------------------------- the class
@@ -148,7 +150,8 @@ class VariantSet:
         return (f"{where} (assembled on the stated branch, every step's condition at least "
                 f"{self.base.variation.min_text}, the class kept: {self.linkage}), "
                 f"not {self.requested}" + (f"; turned down: {why}" if why else "")
-                + f": widen the ranges or ask for --count {n}")
+                + (f": widen the ranges or ask for --count {n}" if n else
+                   ": widen the ranges or lower min_condition"))
 
 
 # --------------------------------------------------------------------------- TOML
@@ -321,8 +324,12 @@ def generate(scene: Scene, count: int, seed: int, *, batch: int | None = None) -
         raise SceneError("the scene has no [variants] table: add one saying what may vary, "
                          "e.g. [variants] BC = { from = 60, to = 75, step = 1 } (see "
                          "docs/variants.md)", file=scene.file, key="[variants]")
-    if count < 1:
-        raise SceneError(f"--count must be at least 1, got {count}", key="--count")
+    for name, v, low, high in (("--count", count, 1, MAX_VARIANTS),
+                               ("--seed", seed, 0, None)):
+        if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < low or \
+                (high is not None and v > high):
+            raise SceneError(f"{name} {v!r}: a whole number from {low}"
+                             + (f" to {high}" if high else ""), key=name)
     solve(scene)  # the base problem itself must solve (else its error, as solve gives it)
     plan = compile_plan(scene)
     branches = _branches(plan)
