@@ -325,3 +325,21 @@ def test_a_long_problem_goes_on_over_the_page_of_the_pdf_sheet():
     joined = " ".join(shown)
     for line in wanted:  # each line (wrapped at 90 characters) is there
         assert all(word in joined for word in line.split()[:3]), line
+
+
+def test_a_class_as_json_with_an_error_against_a_right_value_of_zero(tmp_path, capsys):
+    """v_A of a ground point and alpha of a crank at constant speed are 0: a wrong answer
+    is an infinite per cent off, written as null (it was an internal error)."""
+    import json
+    base = tmp_path / "base.toml"
+    base.write_text(FOURBAR)
+    answers = tmp_path / "answers"
+    answers.mkdir()
+    (answers / "ann.toml").write_text('[answers]\nv_A = "0.1 m/s"\nalpha_AB = "1 rad/s^2 cw"\n')
+    (answers / "bob.toml").write_text('[answers]\nv_A = "0 m/s"\n')
+    assert main(["check", str(base), str(answers), "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    ann = next(s for s in d["students"] if s["student"] == "ann")
+    assert [a["error_percent"] for a in ann["answers"]] == [None, None]
+    assert main(["check", str(base), str(answers / "ann.toml"), "--json"]) == 1
+    assert json.loads(capsys.readouterr().out)["right"] == 0

@@ -17,6 +17,20 @@ def _finite(x):
     return x if isinstance(x, (int, float)) and math.isfinite(x) else None
 
 
+def _json(d) -> str:
+    """``d`` as JSON, every infinite or undefined number in it (an error of a per cent
+    against a right value of 0) written as null."""
+    def clean(x):
+        if isinstance(x, float):
+            return _finite(x)
+        if isinstance(x, dict):
+            return {k: clean(v) for k, v in x.items()}
+        if isinstance(x, (list, tuple)):
+            return [clean(v) for v in x]
+        return x
+    return json.dumps(clean(d), indent=2, allow_nan=False)
+
+
 def _answer_files(paths):
     """The answer files named: files as given, a directory's *.toml in order."""
     out = []
@@ -168,7 +182,7 @@ def _cmd_class(args, scene, sol, files) -> int:
                             else line,
                             variant=(printable(named) if named else "") if vbook else None))
     if getattr(args, "json", False):
-        print(json.dumps(class_dict(rows), indent=2, allow_nan=False, default=_finite))
+        print(_json(class_dict(rows)))
     else:
         print(f"{scene.title or args.scene}: {len(files)} answer files"
               + (f", each graded against its own variant in {variants}" if vbook else ""))
@@ -225,11 +239,7 @@ def _cmd_check(args) -> int:
                          "was given", file=args.scene, key="[answers]")
     verdicts = check_answers(sol, answers, tolerance)
     if getattr(args, "json", False):
-        d = verdicts_dict(verdicts, args.scene, args.answers)
-        for a in d["answers"]:
-            for k in ("error_percent", "tolerance_percent"):
-                a[k] = _finite(a[k])
-        print(json.dumps(d, indent=2, allow_nan=False))
+        print(_json(verdicts_dict(verdicts, args.scene, args.answers)))
     else:
         print(verdicts_text(verdicts, title))
     return 0 if all(v.ok for v in verdicts) else 1
