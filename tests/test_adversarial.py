@@ -343,3 +343,18 @@ def test_a_class_as_json_with_an_error_against_a_right_value_of_zero(tmp_path, c
     assert [a["error_percent"] for a in ann["answers"]] == [None, None]
     assert main(["check", str(base), str(answers / "ann.toml"), "--json"]) == 1
     assert json.loads(capsys.readouterr().out)["right"] == 0
+
+
+def test_the_page_checks_a_variants_answers_against_that_variant_only(tmp_path, klass,
+                                                                      capsys):
+    base, out, answers = klass
+    ann = answers / "ann.toml"
+    ann.write_text(_answers_for(out / "variant-03.toml", '"03"'))
+    page = tmp_path / "page.html"
+    for scene in (base, out / "variant-04.toml"):
+        assert main(["page", str(scene), "-o", str(page), "--answers", str(ann)]) == 2
+        assert "names variant '03'" in _err_line(capsys)
+        assert not page.exists()
+    assert main(["page", str(out / "variant-03.toml"), "-o", str(page), "--answers",
+                 str(ann)]) == 0
+    assert page.exists()

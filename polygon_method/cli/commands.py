@@ -121,8 +121,11 @@ def _cmd_page(args) -> int:
     targets = check_outputs([(out, "-o")], protect=[args.scene])
     scene = load_scene(args.scene)
     fr = _frames(args, scene)
-    tolerance, answers = load_answers(args.answers, scene) if args.answers else \
-        (scene.tolerance, scene.answers)
+    if args.answers:
+        tolerance, answers, named = load_answers(args.answers, scene, with_variant=True)
+        _own_variant(named, scene, args.answers)
+    else:
+        tolerance, answers = scene.tolerance, scene.answers
     title = f"answers from {Path(args.answers).name if args.answers else 'the scene'}"
     verdicts = check_answers(fr.sol, answers, tolerance) if answers else None
     html = page_html(fr, source=_scene_source(args.scene), verdicts=verdicts,
@@ -137,6 +140,21 @@ def _cmd_page(args) -> int:
                                                         fr.scales)
           + f"; {len(html.encode()) / 1024:.0f} KiB")
     return 0
+
+
+def _own_variant(named, scene, file):
+    """An answer file that names a variant is checked against that variant only (as
+    ``check`` does): never silently against the base problem or another variant."""
+    from .classroom import _VariantBook
+    if named is None:
+        return
+    own = scene.variant
+    if own is None or not (_VariantBook._names(own.id) & _VariantBook._names(named)):
+        from ..errors import printable
+        raise SceneError(f"names variant '{printable(named)}', and this scene is "
+                         + (f"variant '{printable(own.id)}'" if own else "not a variant")
+                         + ": make the page of that variant's own scene (the file "
+                         "`variants -o DIR` wrote)", file=file, key="variant")
 
 
 def _cmd_animate(args, out, fmt) -> int:
