@@ -358,3 +358,14 @@ def test_the_page_checks_a_variants_answers_against_that_variant_only(tmp_path, 
     assert main(["page", str(out / "variant-03.toml"), "-o", str(page), "--answers",
                  str(ann)]) == 0
     assert page.exists()
+
+
+def test_crank_angles_a_turn_apart_are_one_problem():
+    """0, 360 and -360 deg (and 30 and 390) put the mechanism in one position: two
+    students given them would have the same problem under other numbers."""
+    text = FOURBAR.split("[variants]")[0]
+    sc = parse_scene(text + "[variants]\nangle = [0, 360, -360, 30, 390, \"6.283185307179586 rad\"]\n")
+    (angle,) = sc.variation.varied
+    assert len(angle) == 2
+    sc = parse_scene(text + "[variants]\nangle = { from = -720, to = 720, step = 90 }\n")
+    assert len(sc.variation.varied[0]) == 4

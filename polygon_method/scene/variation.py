@@ -266,9 +266,12 @@ class _Variants:
                                  "variants", where)
             if kind == "length":
                 self.length(item, "variants", where, positive=positive)
-            if q.value in seen:  # the same value written twice (60 and "6 cm"): once
+            same = q.value
+            if kind == "angle":  # 0 and 360 deg are one position: one problem
+                same = round(math.degrees(q.value) % 360.0, 9) % 360.0
+            if same in seen:  # the same value written twice (60 and "6 cm"): once
                 continue
-            seen.add(q.value)
+            seen.add(same)
             values.append(item)
             si.append(q.value)
             if isinstance(item, str):
