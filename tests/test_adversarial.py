@@ -369,3 +369,16 @@ def test_crank_angles_a_turn_apart_are_one_problem():
     assert len(angle) == 2
     sc = parse_scene(text + "[variants]\nangle = { from = -720, to = 720, step = 90 }\n")
     assert len(sc.variation.varied[0]) == 4
+
+
+@pytest.mark.parametrize("argv, option", [
+    (["--frames", "10"], "--frames"),
+    (["--centre-labels", "13"], "--centre-labels"),
+    (["--diagram", "velocity", "--centre-labels", "I13"], "--centre-labels"),
+    (["--animate", "--centre-labels", "13"], "--animate"),
+])
+def test_a_draw_option_that_would_do_nothing_is_refused(tmp_path, capsys, argv, option):
+    out = tmp_path / "d.svg"
+    assert main(["draw", SEED, "-o", str(out), *argv]) == 2
+    assert f": {option}: " in _err_line(capsys)
+    assert not out.exists()

@@ -68,11 +68,20 @@ def _cmd_draw(args) -> int:
         if fmt not in ("gif", "html", "svg"):
             raise PolygonMethodError(f"cannot animate to {out}: the file name must end in "
                                      ".gif, .html or .svg", key="-o")
-        if args.diagram not in (None, "all") or args.scale:
+        if args.diagram not in (None, "all") or args.scale or \
+                getattr(args, "centre_labels", None):
             raise PolygonMethodError("--animate draws the three diagrams at the scales of "
-                                     "the step table: leave out --diagram and --scale",
-                                     key="--animate")
+                                     "the step table: leave out --diagram, --scale and "
+                                     "--centre-labels", key="--animate")
+        if args.frames is None:
+            args.frames = DEFAULT_FRAMES
         return _cmd_animate(args, out, fmt)
+    if getattr(args, "frames", None) is not None:  # never silently ignored
+        raise PolygonMethodError("--frames counts the frames of --animate: give --animate "
+                                 "as well", key="--frames")
+    if getattr(args, "centre_labels", None) and getattr(args, "diagram", None) != "centres":
+        raise PolygonMethodError("--centre-labels labels the centres of --diagram centres: "
+                                 "give that as well", key="--centre-labels")
     if fmt not in FORMATS:
         raise PolygonMethodError(f"cannot draw to {out}: the file name must end in .svg, .png "
                                  "or .pdf", key="-o")
