@@ -382,3 +382,17 @@ def test_a_draw_option_that_would_do_nothing_is_refused(tmp_path, capsys, argv, 
     assert main(["draw", SEED, "-o", str(out), *argv]) == 2
     assert f": {option}: " in _err_line(capsys)
     assert not out.exists()
+
+
+def test_a_gradebook_cell_never_starts_a_spreadsheet_formula(tmp_path, klass, capsys):
+    base, out, answers = klass
+    for name in ("=HYPERLINK(1)", "+1", "@SUM(A1)", "-2", "ann"):
+        (answers / f"{name}.toml").write_text(_answers_for(out / "variant-01.toml", '"01"'))
+    book = tmp_path / "book.csv"
+    assert main(["check", str(base), str(answers), "--variants", str(out), "--gradebook",
+                 str(book)]) == 0
+    capsys.readouterr()
+    for row in list(csv.reader(book.open()))[1:]:
+        assert all(not c or c[0] not in "=+-@" for c in row), row
+    names = [r["student"] for r in csv.DictReader(book.open())]
+    assert sorted(names) == sorted(["'=HYPERLINK(1)", "'+1", "'@SUM(A1)", "'-2", "ann"])
