@@ -396,3 +396,11 @@ def test_a_gradebook_cell_never_starts_a_spreadsheet_formula(tmp_path, klass, ca
         assert all(not c or c[0] not in "=+-@" for c in row), row
     names = [r["student"] for r in csv.DictReader(book.open())]
     assert sorted(names) == sorted(["'=HYPERLINK(1)", "'+1", "'@SUM(A1)", "'-2", "ann"])
+
+
+def test_the_page_is_never_written_over_its_answer_file(tmp_path, capsys):
+    ans = tmp_path / "answers.html"  # an answer file may have any name
+    ans.write_text('[answers]\nv_C = "0.4 m/s"\n')
+    assert main(["page", SEED, "-o", str(ans), "--answers", str(ans)]) == 2
+    assert "which this command reads" in _err_line(capsys)
+    assert ans.read_text() == '[answers]\nv_C = "0.4 m/s"\n'

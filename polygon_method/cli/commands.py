@@ -127,7 +127,7 @@ def _cmd_page(args) -> int:
     if out.suffix.lower() not in (".html", ".htm"):
         raise PolygonMethodError(f"cannot write the page to {out}: the file name must end in "
                                  ".html", key="-o")
-    targets = check_outputs([(out, "-o")], protect=[args.scene])
+    targets = check_outputs([(out, "-o")], protect=[args.scene, args.answers])
     scene = load_scene(args.scene)
     fr = _frames(args, scene)
     if args.answers:
