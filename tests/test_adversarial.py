@@ -404,3 +404,16 @@ def test_the_page_is_never_written_over_its_answer_file(tmp_path, capsys):
     assert main(["page", SEED, "-o", str(ans), "--answers", str(ans)]) == 2
     assert "which this command reads" in _err_line(capsys)
     assert ans.read_text() == '[answers]\nv_C = "0.4 m/s"\n'
+
+
+def test_the_views_api_refuses_what_is_not_theirs_with_an_error_of_the_family():
+    from polygon_method.page import animation, page_html
+    from polygon_method.variants import generate
+    sc = load_scene(SEED)
+    for bad in (sc, solve(sc), None, "page.html"):
+        with pytest.raises(PolygonMethodError, match="frames of a scene are needed"):
+            page_html(bad)
+        with pytest.raises(PolygonMethodError, match="frames of a scene are needed"):
+            animation(bad, "svg")
+    with pytest.raises(PolygonMethodError, match="a Scene is needed"):
+        generate(SEED, 3, 0)

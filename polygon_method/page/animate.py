@@ -24,7 +24,7 @@ import numpy as np
 from ..errors import PolygonMethodError, SceneError
 from ..scales import DIAGRAMS, display_unit
 from .data import diagram_box
-from .frames import Frames, check_frames
+from .frames import Frames, check_frames, need_frames
 
 __all__ = ["animation", "shapes", "FPS"]
 
@@ -76,6 +76,7 @@ def shapes(fr: Frames):
 def animation(fr: Frames, fmt_: str):
     """The animation as GIF bytes, HTML text or SVG text (``fmt_``: "gif", "html" or
     "svg"; a GIF or HTML animation has at most :data:`MAX_PICTURE_FRAMES` frames)."""
+    need_frames(fr)
     if fmt_ not in ("gif", "html", "svg"):
         raise SceneError(f"cannot animate to {fmt_!r}: gif, html or svg", key="-o")
     check_frames(len(fr), fmt_)

@@ -30,7 +30,7 @@ from ..solution import solve
 from ..sweeps import sweep
 
 __all__ = ["Frames", "frames", "frame_angles", "DEFAULT_FRAMES", "MAX_FRAMES",
-           "MAX_PICTURE_FRAMES", "max_frames", "check_frames", "round_sig"]
+           "MAX_PICTURE_FRAMES", "max_frames", "check_frames", "need_frames", "round_sig"]
 
 #: frames of a cycle when none are asked for (2 deg apart over a full turn)
 DEFAULT_FRAMES = 180
@@ -122,6 +122,15 @@ def frames(scene, n: int = DEFAULT_FRAMES) -> Frames:
     if len(kept) != len(th):  # angles at a singular position were left out
         start = int(np.argmin(np.abs(kept - scene.input.angle)))
     return Frames(res, sol, scales, start, bool(probe.domain.full_turn))
+
+
+def need_frames(fr) -> Frames:
+    """``fr`` if it is the frames of a scene, else a :class:`SceneError` saying how to make
+    them (an API misuse is an error of the family, never an AttributeError)."""
+    if not isinstance(fr, Frames):
+        raise SceneError("the frames of a scene are needed (polygon_method.page.frames(scene, "
+                         f"n)), not {type(fr).__name__}")
+    return fr
 
 
 def round_sig(a, digits: int = 6) -> list:

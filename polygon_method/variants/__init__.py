@@ -319,6 +319,9 @@ def _id_width(count):
 def generate(scene: Scene, count: int, seed: int, *, batch: int | None = None) -> VariantSet:
     """Choose ``count`` variants of ``scene`` (see the module docstring), reproducibly
     from ``seed``. Fewer are returned where fewer exist (:meth:`VariantSet.shortfall`)."""
+    if not isinstance(scene, Scene):
+        raise SceneError("a Scene is needed (load_scene(path) or parse_scene(text)), not "
+                         f"{type(scene).__name__}")
     var = scene.variation
     if var is None:
         raise SceneError("the scene has no [variants] table: add one saying what may vary, "
