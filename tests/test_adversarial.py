@@ -417,3 +417,39 @@ def test_the_views_api_refuses_what_is_not_theirs_with_an_error_of_the_family():
             animation(bad, "svg")
     with pytest.raises(PolygonMethodError, match="a Scene is needed"):
         generate(SEED, 3, 0)
+
+
+from hypothesis import given, settings, strategies as st  # noqa: E402
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.text(), st.text(), st.text(min_size=1))
+def test_a_variants_file_reads_back_whatever_its_strings_hold(title, header, key):
+    """Any title, header or key (control characters, DEL, line separators, quotes,
+    backslashes): the TOML written reads back to the same table."""
+    from polygon_method.variants import dump_toml
+    raw = {"title": title, "units": "mm", "points": {key: {"on": title, "along": 1.5}}}
+    assert tomllib.loads(dump_toml(raw, header)) == raw
+
+
+def test_a_title_with_control_characters_still_gives_variants(tmp_path, capsys):
+    base = tmp_path / "base.toml"
+    base.write_text(FOURBAR.replace('title = "Four-bar for a class"',
+                                    'title = "Four-bar\\u001b\\u007f\\u2028 for a class"'))
+    out = tmp_path / "class"
+    assert main(["variants", str(base), "--count", "3", "-o", str(out)]) == 0
+    for k in (1, 2, 3):
+        title = tomllib.loads((out / f"variant-0{k}.toml").read_text())["title"]
+        assert title.startswith("Four-bar\x1b\x7f\u2028 for a class")
+
+
+@pytest.mark.parametrize("brk", ["\u2028", "\x85", "\u2029"])
+def test_a_line_break_that_toml_does_not_count_moves_no_line_number(brk):
+    """U+2028, U+2029 or NEL in a comment is no new line for TOML: the message names the
+    key's line as an editor numbers it (line feeds only)."""
+    text = FOURBAR.split("[variants]")[0].replace("[links]", f"# a{brk}comment\n[links]")
+    text = text.replace("BC = 90", "BC = -90")
+    n = text.split("\n").index("BC = -90") + 1
+    with pytest.raises(PolygonMethodError) as e:
+        parse_scene(text)
+    assert e.value.line == n

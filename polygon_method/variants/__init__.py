@@ -30,7 +30,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..errors import PolygonMethodError, SceneError
+from ..errors import PolygonMethodError, SceneError, printable
 from ..kinematics import evaluate
 from ..linkage import four_bar_of, grashof, slider_crank_of
 from ..compiler import compile_plan
@@ -160,8 +160,14 @@ class VariantSet:
 _BARE = re.compile(r"^[A-Za-z0-9_-]+$")
 
 
+def _string(text: str) -> str:
+    """``text`` as a TOML basic string: JSON's escapes are TOML's, save that TOML also
+    wants DEL escaped."""
+    return json.dumps(text, ensure_ascii=False).replace("\x7f", "\\u007f")
+
+
 def _key(k) -> str:
-    return k if _BARE.match(k) else json.dumps(k, ensure_ascii=False)
+    return k if _BARE.match(k) else _string(k)
 
 
 def _value(v) -> str:
@@ -172,7 +178,7 @@ def _value(v) -> str:
     if isinstance(v, float):
         return repr(v)
     if isinstance(v, str):
-        return json.dumps(v, ensure_ascii=False)
+        return _string(v)
     if isinstance(v, list):
         return "[" + ", ".join(_value(x) for x in v) + "]"
     if isinstance(v, dict):
@@ -182,7 +188,9 @@ def _value(v) -> str:
 
 def dump_toml(raw: dict, header: str = "") -> str:
     """A scene's table as TOML text: top-level keys first, then one ``[table]`` each."""
-    out = [f"# {line}" if line else "#" for line in header.splitlines()]
+    # a comment holds no control character (a title may: it is shown escaped here)
+    out = [f"# {printable(line)}" if line else "#"
+           for line in header.split("\n")]
     for k, v in raw.items():
         if not isinstance(v, dict):
             out.append(f"{_key(k)} = {_value(v)}")
