@@ -453,3 +453,18 @@ def test_a_line_break_that_toml_does_not_count_moves_no_line_number(brk):
     with pytest.raises(PolygonMethodError) as e:
         parse_scene(text)
     assert e.value.line == n
+
+
+def test_no_frame_is_shown_twice_when_the_instant_is_on_the_grid():
+    """The seed four-bar at 0 deg: its limits are symmetric about 0, so an odd grid between
+    them holds 0 already; the frames still run one way, n of them, the instant among them."""
+    import numpy as np
+    from polygon_method.page import frames
+    text = open(SEED).read().replace("angle = 60", "angle = 0", 1)
+    sc = parse_scene(text)
+    for n in (2, 3, 4, 5, 24, 25, 50, 51):
+        fr = frames(sc, n)
+        d = fr.degrees
+        assert len(fr) == n
+        assert np.all(np.diff(d) > 0) or np.all(np.diff(d) < 0), d
+        assert d[fr.start] == 0.0

@@ -106,6 +106,12 @@ def frame_angles(scene, n: int, domain) -> tuple[np.ndarray, int]:
     pad = INSIDE * (hi - lo)
     th = np.linspace(lo + pad, hi - pad, max(n - 1, 1))
     k = int(np.searchsorted(th, t0))
+    near = [j for j in (k - 1, k) if 0 <= j < len(th) and abs(th[j] - t0) <= 1e-12 * (hi - lo)]
+    if near:  # the instant is a frame already (0 in a range symmetric about it): n frames
+        th = np.linspace(lo + pad, hi - pad, n)  # of which the nearest is the instant,
+        k = int(np.argmin(np.abs(th - t0)))      # none twice
+        th[k] = t0
+        return th, k
     return np.insert(th, k, t0), k
 
 
