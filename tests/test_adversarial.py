@@ -468,3 +468,10 @@ def test_no_frame_is_shown_twice_when_the_instant_is_on_the_grid():
         assert len(fr) == n
         assert np.all(np.diff(d) > 0) or np.all(np.diff(d) < 0), d
         assert d[fr.start] == 0.0
+
+
+def test_a_list_of_values_is_bounded_as_a_range_is():
+    from polygon_method.scene.variation import MAX_VALUES
+    values = ", ".join(str(80 + k * 1e-4) for k in range(MAX_VALUES + 1))
+    with pytest.raises(PolygonMethodError, match=f"more than {MAX_VALUES}"):
+        parse_scene(FOURBAR.split("[variants]")[0] + f"[variants]\nBC = [{values}]\n")

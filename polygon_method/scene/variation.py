@@ -244,6 +244,9 @@ class _Variants:
         elif isinstance(value, list):
             if not value:
                 raise self.error(f"{key}: the list of values is empty", "variants", where)
+            if len(value) > MAX_VALUES:
+                raise self.error(f"{key}: the list holds {len(value)} values, more than "
+                                 f"{MAX_VALUES}", "variants", where)
             items = list(value)
         else:
             raise self.error(f"{key} = {value!r}: give a range {{ from = 60, to = 75, step = "
