@@ -167,7 +167,7 @@ def _string(text: str) -> str:
 
 
 def _key(k) -> str:
-    return k if _BARE.match(k) else _string(k)
+    return k if _BARE.fullmatch(k) else _string(k)
 
 
 def _value(v) -> str:
