@@ -475,3 +475,18 @@ def test_a_list_of_values_is_bounded_as_a_range_is():
     values = ", ".join(str(80 + k * 1e-4) for k in range(MAX_VALUES + 1))
     with pytest.raises(PolygonMethodError, match=f"more than {MAX_VALUES}"):
         parse_scene(FOURBAR.split("[variants]")[0] + f"[variants]\nBC = [{values}]\n")
+
+
+def test_the_page_grades_an_answer_file_as_check_does(tmp_path, capsys):
+    """The scene states tolerance = "3%"; an answer file with none is graded at 3 % by
+    `check`, and so on the page (it used a hand drawing's tolerance, 2.8 % for v_C here)."""
+    import re
+    v_c = solve(load_scene(SEED)).speed("C")
+    ans = tmp_path / "ann.toml"
+    ans.write_text(f'[answers]\nv_C = "{v_c * 0.971:.6f} m/s"\n')  # 2.9 % low
+    assert main(["check", SEED, str(ans)]) == 0
+    page = tmp_path / "p.html"
+    assert main(["page", SEED, "-o", str(page), "--answers", str(ans), "--frames", "4"]) == 0
+    capsys.readouterr()
+    table = re.search(r'<table id="check">.*?</table>', page.read_text(), re.S).group(0)
+    assert "right" in table and "WRONG" not in table and "3 %" in table

@@ -133,6 +133,8 @@ def _cmd_page(args) -> int:
     if args.answers:
         tolerance, answers, named = load_answers(args.answers, scene, with_variant=True)
         _own_variant(named, scene, args.answers)
+        if tolerance is None:  # the scene's stated tolerance, as `check` grades
+            tolerance = scene.tolerance
     else:
         tolerance, answers = scene.tolerance, scene.answers
     title = f"answers from {Path(args.answers).name if args.answers else 'the scene'}"
