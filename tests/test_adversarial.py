@@ -490,3 +490,23 @@ def test_the_page_grades_an_answer_file_as_check_does(tmp_path, capsys):
     capsys.readouterr()
     table = re.search(r'<table id="check">.*?</table>', page.read_text(), re.S).group(0)
     assert "right" in table and "WRONG" not in table and "3 %" in table
+
+
+def test_a_pipe_in_a_listed_directory_is_a_row_never_a_wait(tmp_path, klass):
+    """A named pipe among the answer files or the variant scenes would be waited on for
+    ever if opened: it is named as not read, and the class is graded."""
+    import os
+    import subprocess
+    import sys
+    base, out, answers = klass
+    (answers / "ann.toml").write_text(_answers_for(out / "variant-01.toml", '"01"'))
+    os.mkfifo(answers / "pipe.toml")
+    os.mkfifo(out / "zz.toml")
+    book = tmp_path / "book.csv"
+    run = subprocess.run([sys.executable, "-m", "polygon_method", "check", str(base),
+                          str(answers), "--variants", str(out), "--gradebook", str(book)],
+                         capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0, run.stderr
+    graded = {r["student"]: r for r in csv.DictReader(book.open())}
+    assert graded["ann"]["right"] == "2"
+    assert "not a regular file" in graded["pipe"]["error"]

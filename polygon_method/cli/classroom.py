@@ -43,6 +43,14 @@ def _answer_files(paths):
     return out
 
 
+def _listed(path: Path):
+    """A file found by listing a directory is opened only if it is a regular file (or a
+    directory, which the reader names): a pipe or a device would be waited on for ever."""
+    if path.exists() and not path.is_file() and not path.is_dir():
+        raise SceneError("not a regular file (a pipe or a device): not read",
+                         file=printable(str(path)))
+
+
 class _VariantBook:
     """The variant scenes of ``check --variants DIR``, by the id in each one's ``[variant]``
     table (not by its file's name: a copied or renamed file cannot pair a student with the
@@ -77,6 +85,7 @@ class _VariantBook:
             self._index = []
             for f in self.files:
                 try:
+                    _listed(f)
                     self._index.append((f, load_scene(f)))
                 except PolygonMethodError as exc:
                     self._index.append((f, exc))
@@ -164,10 +173,13 @@ def _cmd_class(args, scene, sol, files) -> int:
     targets = check_outputs([(book, "--gradebook")], protect=inputs) if book else []
     tols = tolerances(sol)
     rows = []
+    given = set(args.answers or ())  # named on the command line (a pipe given is read)
     for f in files:
         student = printable(Path(f).stem)
         named = None
         try:
+            if f not in given:
+                _listed(Path(f))
             tolerance, answers, named = load_answers(f, scene, with_variant=True)
             if tolerance is None:
                 tolerance = scene.tolerance
