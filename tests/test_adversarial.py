@@ -510,3 +510,11 @@ def test_a_pipe_in_a_listed_directory_is_a_row_never_a_wait(tmp_path, klass):
     graded = {r["student"]: r for r in csv.DictReader(book.open())}
     assert graded["ann"]["right"] == "2"
     assert "not a regular file" in graded["pipe"]["error"]
+
+
+def test_a_link_to_a_variant_is_the_same_variant_not_a_copy(tmp_path, klass, capsys):
+    base, out, answers = klass
+    (out / "latest.toml").symlink_to(out / "variant-02.toml")
+    (answers / "bob.toml").write_text(_answers_for(out / "variant-02.toml", '"02"'))
+    graded = _book(tmp_path, base, answers, out, capsys)
+    assert graded["bob"]["right"] == "2", graded["bob"]["error"]

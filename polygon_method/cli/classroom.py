@@ -82,8 +82,12 @@ class _VariantBook:
         """[(file, its scene or the error that kept it from being read)], read once."""
         from ..scene import load_scene
         if self._index is None:
-            self._index = []
+            self._index, seen = [], set()
             for f in self.files:
+                real = f.resolve()
+                if real in seen:  # a link to a variant listed already: one variant
+                    continue
+                seen.add(real)
                 try:
                     _listed(f)
                     self._index.append((f, load_scene(f)))
