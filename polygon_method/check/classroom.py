@@ -162,12 +162,19 @@ def _table(rows):
     return head, body
 
 
+def _inert(cell) -> str:
+    """A cell a spreadsheet shows as text: one that would start a formula (a student's
+    file named ``=HYPERLINK(...).toml``) gets a leading apostrophe."""
+    cell = str(cell)
+    return "'" + cell if cell[:1] in ("=", "+", "-", "@", "\t", "\r") else cell
+
+
 def gradebook_csv(rows) -> str:
     head, body = _table(rows)
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(head)
-    w.writerows(body)
+    w.writerows([[_inert(c) for c in cells] for cells in body])
     return buf.getvalue()
 
 

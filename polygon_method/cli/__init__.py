@@ -79,13 +79,13 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--scale", action="append", default=[],
                    help='e.g. "1 cm = 0.1 m/s" (may be repeated: space, velocity, '
                         'acceleration)')
-    s.add_argument("--centre-labels", choices=("I13", "13"), default="I13",
-                   help="how the centres of --diagram centres are labelled")
+    s.add_argument("--centre-labels", choices=("I13", "13"),
+                   help="how the centres of --diagram centres are labelled (default I13)")
     s.add_argument("--animate", action="store_true",
                    help="the three diagrams over the crank's cycle (-o FILE.gif, .html or "
                         ".svg)")
-    s.add_argument("--frames", type=int, default=DEFAULT_FRAMES,
-                   help=f"frames over the cycle (default {DEFAULT_FRAMES})")
+    s.add_argument("--frames", type=int,
+                   help=f"frames of --animate over the cycle (default {DEFAULT_FRAMES})")
     s.set_defaults(func=_cmd_draw)
 
     s = sub.add_parser("page", help="one self-contained HTML page: the diagrams moving with "

@@ -17,6 +17,20 @@ def _finite(x):
     return x if isinstance(x, (int, float)) and math.isfinite(x) else None
 
 
+def _json(d) -> str:
+    """``d`` as JSON, every infinite or undefined number in it (an error of a per cent
+    against a right value of 0) written as null."""
+    def clean(x):
+        if isinstance(x, float):
+            return _finite(x)
+        if isinstance(x, dict):
+            return {k: clean(v) for k, v in x.items()}
+        if isinstance(x, (list, tuple)):
+            return [clean(v) for v in x]
+        return x
+    return json.dumps(clean(d), indent=2, allow_nan=False)
+
+
 def _answer_files(paths):
     """The answer files named: files as given, a directory's *.toml in order."""
     out = []
@@ -29,9 +43,18 @@ def _answer_files(paths):
     return out
 
 
+def _listed(path: Path):
+    """A file found by listing a directory is opened only if it is a regular file (or a
+    directory, which the reader names): a pipe or a device would be waited on for ever."""
+    if path.exists() and not path.is_file() and not path.is_dir():
+        raise SceneError("not a regular file (a pipe or a device): not read",
+                         file=printable(str(path)))
+
+
 class _VariantBook:
-    """The variant scenes of ``check --variants DIR``, by id, each solved once when a
-    student first names it."""
+    """The variant scenes of ``check --variants DIR``, by the id in each one's ``[variant]``
+    table (not by its file's name: a copied or renamed file cannot pair a student with the
+    wrong variant), each solved once when a student first names it."""
 
     def __init__(self, folder, base):
         self.folder, self.base = Path(folder), base
@@ -43,6 +66,7 @@ class _VariantBook:
             raise SceneError(f"--variants {folder}: no variant scenes (*.toml) in it",
                              key="--variants")
         self.done = {}
+        self._index = None
 
     @staticmethod
     def _names(text):
@@ -52,38 +76,57 @@ class _VariantBook:
         if text.endswith(".toml"):
             text = text[:-5]
         bare = re.sub(r"^variant[\s_-]*", "", text)
-        return {text, bare} | ({str(int(bare))} if bare.isdigit() else set())
+        return {text, bare} | ({str(int(bare))} if bare.isdecimal() else set())
+
+    def index(self):
+        """[(file, its scene or the error that kept it from being read)], read once."""
+        from ..scene import load_scene
+        if self._index is None:
+            self._index, seen = [], set()
+            for f in self.files:
+                real = f.resolve()
+                if real in seen:  # a link to a variant listed already: one variant
+                    continue
+                seen.add(real)
+                try:
+                    _listed(f)
+                    self._index.append((f, load_scene(f)))
+                except PolygonMethodError as exc:
+                    self._index.append((f, exc))
+        return self._index
 
     def find(self, named):
         """(id, solution, tolerances) of the variant a student names; raises a
-        :class:`PolygonMethodError` (that student's row) if it is not there."""
+        :class:`PolygonMethodError` (that student's row) if it is not there, or if two
+        files hold it."""
         from ..check import tolerances
-        from ..scene import load_scene
         from ..solution import solve
 
         want = self._names(named)
-        hits = [f for f in self.files if self._names(f.name) & want]
-        if not hits:  # the id inside a file named otherwise
-            for f in self.files:
-                try:
-                    sc = load_scene(f)
-                except PolygonMethodError:
-                    continue
-                if sc.variant is not None and self._names(sc.variant.id) & want:
-                    hits = [f]
-                    break
+        hits = [(f, sc) for f, sc in self.index() if not isinstance(sc, Exception)
+                and sc.variant is not None and self._names(sc.variant.id) & want]
         if not hits:
+            named_so = [(f, sc) for f, sc in self.index() if self._names(f.name) & want]
+            if named_so:  # a file of that name that is no variant of its own
+                f, sc = named_so[0]
+                if isinstance(sc, Exception):
+                    raise SceneError(f"{f.name} in {self.folder} cannot be read: "
+                                     f"{sc.one_line()}", key="variant")
+                raise SceneError(f"{f.name} in {self.folder} is not a generated variant "
+                                 + ("(it has no [variant] table)" if sc.variant is None
+                                    else f"'{printable(named)}' (it holds variant "
+                                    f"'{printable(sc.variant.id)}')"), key="variant")
             shown = ", ".join(f.name for f in self.files[:3]) + \
                 (", ..." if len(self.files) > 3 else "")
-            raise SceneError(f"variant {printable(named)!r} is not in {self.folder} (its "
+            raise SceneError(f"variant '{printable(named)}' is not in {self.folder} (its "
                              f"variants: {shown})", key="variant")
-        f = hits[0]
+        if len(hits) > 1:
+            raise SceneError(f"variant '{printable(named)}' is in {len(hits)} files of "
+                             f"{self.folder} ({', '.join(f.name for f, _ in hits[:3])}): "
+                             "remove the copies", key="variant")
+        f, sc = hits[0]
         if f not in self.done:
             try:
-                sc = load_scene(f)
-                if sc.variant is None:
-                    raise SceneError(f"{f.name} in {self.folder} is not a generated variant "
-                                     "(it has no [variant] table)", key="variant")
                 base_title = self.base.title or ""
                 if base_title and sc.variant.of != base_title:
                     raise SceneError(f"{f.name} is a variant of {sc.variant.of!r}, not of "
@@ -109,7 +152,7 @@ def _graded_against(named, scene, sol, tols, book):
     if named is not None:
         own = scene.variant
         if own is None or not (_VariantBook._names(own.id) & _VariantBook._names(named)):
-            raise SceneError(f"names variant {printable(named)!r}: grade it against its own "
+            raise SceneError(f"names variant '{printable(named)}': grade it against its own "
                              "variant with --variants DIR (the directory `variants -o` "
                              "wrote)", key="variant")
         return own.id, sol, tols
@@ -127,29 +170,35 @@ def _cmd_class(args, scene, sol, files) -> int:
     if book and not book.lower().endswith((".csv", ".md")):
         raise SceneError(f"--gradebook {book}: the file must end in .csv or .md",
                          key="--gradebook")
-    targets = check_outputs([(book, "--gradebook")], protect=[args.scene]) if book else []
     variants = getattr(args, "variants", None)
     vbook = _VariantBook(variants, scene) if variants else None
+    # every file read is an input the gradebook must not be written over
+    inputs = [args.scene, *files, *(vbook.files if vbook else ())]
+    targets = check_outputs([(book, "--gradebook")], protect=inputs) if book else []
     tols = tolerances(sol)
     rows = []
+    given = set(args.answers or ())  # named on the command line (a pipe given is read)
     for f in files:
-        student = Path(f).stem
+        student = printable(Path(f).stem)
         named = None
         try:
+            if f not in given:
+                _listed(Path(f))
             tolerance, answers, named = load_answers(f, scene, with_variant=True)
             if tolerance is None:
                 tolerance = scene.tolerance
             vid, vsol, vtols = _graded_against(named, scene, sol, tols, vbook)
-            rows.append(Row(student, f, check_answers(vsol, answers, tolerance, _tols=vtols),
+            rows.append(Row(student, printable(str(f)),
+                            check_answers(vsol, answers, tolerance, _tols=vtols),
                             variant=vid if vbook is None else (vid or "")))
         except PolygonMethodError as exc:  # a row with its error, never the whole run
             line = exc.one_line()
             where = f"{printable(str(f))}: "
-            rows.append(Row(student, f, (), error=line[len(where):] if line.startswith(where)
+            rows.append(Row(student, printable(str(f)), (), error=line[len(where):] if line.startswith(where)
                             else line,
                             variant=(printable(named) if named else "") if vbook else None))
     if getattr(args, "json", False):
-        print(json.dumps(class_dict(rows), indent=2, allow_nan=False, default=_finite))
+        print(_json(class_dict(rows)))
     else:
         print(f"{scene.title or args.scene}: {len(files)} answer files"
               + (f", each graded against its own variant in {variants}" if vbook else ""))
@@ -206,11 +255,7 @@ def _cmd_check(args) -> int:
                          "was given", file=args.scene, key="[answers]")
     verdicts = check_answers(sol, answers, tolerance)
     if getattr(args, "json", False):
-        d = verdicts_dict(verdicts, args.scene, args.answers)
-        for a in d["answers"]:
-            for k in ("error_percent", "tolerance_percent"):
-                a[k] = _finite(a[k])
-        print(json.dumps(d, indent=2, allow_nan=False))
+        print(_json(verdicts_dict(verdicts, args.scene, args.answers)))
     else:
         print(verdicts_text(verdicts, title))
     return 0 if all(v.ok for v in verdicts) else 1
@@ -224,6 +269,7 @@ def _cmd_variants(args) -> int:
     from ..variants import (answer_key_csv, answer_key_markdown, generate, sheet_markdown,
                            sheet_pdf, summary_text)
 
+    from ..variants import MAX_VARIANTS
     if args.count < 1 or args.count > MAX_VARIANTS:
         raise SceneError(f"--count {args.count}: between 1 and {MAX_VARIANTS}",
                          key="--count")
@@ -276,6 +322,3 @@ def _cmd_variants(args) -> int:
           + (", problem-sheet.pdf" if args.pdf else ""))
     return 0
 
-
-#: the most variants one run writes
-MAX_VARIANTS = 9999

@@ -68,11 +68,20 @@ def _cmd_draw(args) -> int:
         if fmt not in ("gif", "html", "svg"):
             raise PolygonMethodError(f"cannot animate to {out}: the file name must end in "
                                      ".gif, .html or .svg", key="-o")
-        if args.diagram not in (None, "all") or args.scale:
+        if args.diagram not in (None, "all") or args.scale or \
+                getattr(args, "centre_labels", None):
             raise PolygonMethodError("--animate draws the three diagrams at the scales of "
-                                     "the step table: leave out --diagram and --scale",
-                                     key="--animate")
+                                     "the step table: leave out --diagram, --scale and "
+                                     "--centre-labels", key="--animate")
+        if args.frames is None:
+            args.frames = DEFAULT_FRAMES
         return _cmd_animate(args, out, fmt)
+    if getattr(args, "frames", None) is not None:  # never silently ignored
+        raise PolygonMethodError("--frames counts the frames of --animate: give --animate "
+                                 "as well", key="--frames")
+    if getattr(args, "centre_labels", None) and getattr(args, "diagram", None) != "centres":
+        raise PolygonMethodError("--centre-labels labels the centres of --diagram centres: "
+                                 "give that as well", key="--centre-labels")
     if fmt not in FORMATS:
         raise PolygonMethodError(f"cannot draw to {out}: the file name must end in .svg, .png "
                                  "or .pdf", key="-o")
@@ -89,12 +98,10 @@ def _cmd_draw(args) -> int:
     return 0
 
 
-def _frames(args, scene):
-    """The scene's frames over its cycle (``--frames``: 2 to MAX_FRAMES)."""
-    from ..page import MAX_FRAMES, frames
-    if not 2 <= args.frames <= MAX_FRAMES:
-        raise SceneError(f"--frames {args.frames}: give between 2 and {MAX_FRAMES} frames",
-                         key="--frames")
+def _frames(args, scene, fmt=None):
+    """The scene's frames over its cycle (``--frames``: 2 to the most ``fmt`` allows)."""
+    from ..page import check_frames, frames
+    check_frames(args.frames, fmt)
     return frames(scene, args.frames)
 
 
@@ -120,11 +127,16 @@ def _cmd_page(args) -> int:
     if out.suffix.lower() not in (".html", ".htm"):
         raise PolygonMethodError(f"cannot write the page to {out}: the file name must end in "
                                  ".html", key="-o")
-    targets = check_outputs([(out, "-o")], protect=[args.scene])
+    targets = check_outputs([(out, "-o")], protect=[args.scene, args.answers])
     scene = load_scene(args.scene)
     fr = _frames(args, scene)
-    tolerance, answers = load_answers(args.answers, scene) if args.answers else \
-        (scene.tolerance, scene.answers)
+    if args.answers:
+        tolerance, answers, named = load_answers(args.answers, scene, with_variant=True)
+        _own_variant(named, scene, args.answers)
+        if tolerance is None:  # the scene's stated tolerance, as `check` grades
+            tolerance = scene.tolerance
+    else:
+        tolerance, answers = scene.tolerance, scene.answers
     title = f"answers from {Path(args.answers).name if args.answers else 'the scene'}"
     verdicts = check_answers(fr.sol, answers, tolerance) if answers else None
     html = page_html(fr, source=_scene_source(args.scene), verdicts=verdicts,
@@ -141,13 +153,30 @@ def _cmd_page(args) -> int:
     return 0
 
 
+def _own_variant(named, scene, file):
+    """An answer file that names a variant is checked against that variant only (as
+    ``check`` does): never silently against the base problem or another variant."""
+    from .classroom import _VariantBook
+    if named is None:
+        return
+    own = scene.variant
+    if own is None or not (_VariantBook._names(own.id) & _VariantBook._names(named)):
+        from ..errors import printable
+        raise SceneError(f"names variant '{printable(named)}', and this scene is "
+                         + (f"variant '{printable(own.id)}'" if own else "not a variant")
+                         + ": make the page of that variant's own scene (the file "
+                         "`variants -o DIR` wrote)", file=file, key="variant")
+
+
 def _cmd_animate(args, out, fmt) -> int:
     """``draw SCENE --animate -o cycle.gif`` (.gif, .html or .svg)."""
     from ..page import animation
     from ..scene import load_scene
 
+    from ..page import check_frames
+    check_frames(args.frames, fmt)  # before anything is computed
     targets = check_outputs([(out, "-o")], protect=[args.scene])
-    fr = _frames(args, load_scene(args.scene))
+    fr = _frames(args, load_scene(args.scene), fmt)
     data = animation(fr, fmt)
     write_outputs(targets, [(data, isinstance(data, bytes))])
     print(f"{out}: {len(fr)} frames; " + "; ".join(s.text for s in fr.scales))

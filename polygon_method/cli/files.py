@@ -9,7 +9,7 @@ import stat
 import tempfile
 from pathlib import Path
 
-from ..errors import PolygonMethodError
+from ..errors import PolygonMethodError, printable
 
 __all__ = ["check_outputs", "write_outputs", "write_output"]
 
@@ -24,11 +24,12 @@ class _Target:
         real = Path(os.path.realpath(path))
         if real.is_dir():
             raise PolygonMethodError(f"cannot write {path}: it is a directory", key=option)
-        for other in protect:
+        for k, other in enumerate(protect):
             if other and real.exists() and os.path.exists(other) and \
                     os.path.samefile(real, other):
-                raise PolygonMethodError(f"cannot write {path}: it is the scene file "
-                                         "itself", key=option)
+                what = "the scene file itself" if k == 0 else \
+                    f"{printable(str(other))}, which this command reads"
+                raise PolygonMethodError(f"cannot write {path}: it is {what}", key=option)
         self.path = real
         self.special = real.exists() and not stat.S_ISREG(real.stat().st_mode)
         directory = real.parent
@@ -87,7 +88,8 @@ class _Target:
 
 def check_outputs(paths, protect=()) -> list:
     """Every output path checked before anything is computed or written: ``paths`` as
-    (path, option) pairs; ``protect``: files that must not be written over (the scene)."""
+    (path, option) pairs; ``protect``: files that must not be written over (the scene
+    first, then any other file the command reads)."""
     return [_Target(path, option, protect) for path, option in paths]
 
 

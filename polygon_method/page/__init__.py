@@ -6,9 +6,11 @@
 ``page.css``), :mod:`.animate` makes GIF, HTML or SVG animations with matplotlib.
 """
 
-from .frames import DEFAULT_FRAMES, MAX_FRAMES, Frames, frames
+from .frames import (DEFAULT_FRAMES, MAX_FRAMES, MAX_PICTURE_FRAMES, Frames, check_frames,
+                     frames, max_frames)
 
-__all__ = ["frames", "Frames", "DEFAULT_FRAMES", "MAX_FRAMES", "page_html", "animation"]
+__all__ = ["frames", "Frames", "DEFAULT_FRAMES", "MAX_FRAMES", "MAX_PICTURE_FRAMES",
+           "max_frames", "check_frames", "page_html", "animation"]
 
 
 def page_html(*args, **kw):

@@ -16,13 +16,15 @@ True
 from __future__ import annotations
 
 import io
+import re
 from html import escape
 
 import numpy as np
 
+from ..errors import PolygonMethodError, SceneError
 from ..scales import DIAGRAMS, display_unit
 from .data import diagram_box
-from .frames import Frames
+from .frames import Frames, check_frames, need_frames
 
 __all__ = ["animation", "shapes", "FPS"]
 
@@ -72,7 +74,12 @@ def shapes(fr: Frames):
 
 
 def animation(fr: Frames, fmt_: str):
-    """The animation as GIF bytes, HTML text or SVG text."""
+    """The animation as GIF bytes, HTML text or SVG text (``fmt_``: "gif", "html" or
+    "svg"; a GIF or HTML animation has at most :data:`MAX_PICTURE_FRAMES` frames)."""
+    need_frames(fr)
+    if fmt_ not in ("gif", "html", "svg"):
+        raise SceneError(f"cannot animate to {fmt_!r}: gif, html or svg", key="-o")
+    check_frames(len(fr), fmt_)
     if fmt_ == "svg":
         return _svg(fr)
     return _matplotlib(fr, fmt_)
@@ -88,7 +95,10 @@ def _matplotlib(fr: Frames, fmt_: str):
     from matplotlib.figure import Figure
 
     panels = shapes(fr)
-    with matplotlib.rc_context({"font.family": "DejaVu Sans"}):
+    # no frame of the HTML player may be dropped for its size (matplotlib's default
+    # limit is 20 MB, about 650 frames): the count of frames is bounded instead
+    with matplotlib.rc_context({"font.family": "DejaVu Sans",
+                                "animation.embed_limit": 4096.0}):
         fig = Figure(figsize=(12, 4.4), dpi=80)
         fig.subplots_adjust(left=0.01, right=0.99, bottom=0.02, top=0.86, wspace=0.06)
         title = fig.suptitle(_title(fr, 0), fontsize=11)
@@ -124,17 +134,36 @@ def _matplotlib(fr: Frames, fmt_: str):
 
         anim = FuncAnimation(fig, draw, frames=len(fr), interval=1000 / FPS, blit=False)
         if fmt_ == "html":
-            return anim.to_jshtml(fps=FPS, default_mode="loop")
+            html = anim.to_jshtml(fps=FPS, default_mode="loop")
+            _all_there(len(re.findall(r'frames\[\d+\] = "data:', html)), fr)
+            return html
         writer = _GifWriter(fps=FPS)
         anim.save("cycle.gif", writer=writer)
+        _all_there(len(writer._frames), fr)
         return writer.data
+
+
+def _all_there(made: int, fr: Frames):
+    """Every frame is in the animation, or an error (never fewer frames than stated)."""
+    if made != len(fr):
+        raise PolygonMethodError(f"the animation holds {made} of its {len(fr)} frames: ask "
+                                 "for fewer --frames", key="--frames")
 
 
 def _gif_writer_class():
     from matplotlib.animation import PillowWriter
 
     class GifWriter(PillowWriter):
-        """PillowWriter whose GIF is kept in memory (the command line writes the file)."""
+        """PillowWriter whose GIF is kept in memory (the command line writes the file),
+        each frame kept as the GIF will hold it (a palette image: a third of the memory
+        of its colours)."""
+
+        def grab_frame(self, **kw):
+            super().grab_frame(**kw)
+            im = self._frames[-1]
+            if im.mode == "RGB":
+                from PIL import Image
+                self._frames[-1] = im.convert("P", palette=Image.Palette.ADAPTIVE)
 
         def finish(self):
             buf = io.BytesIO()

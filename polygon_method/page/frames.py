@@ -24,16 +24,38 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..errors import SceneError
 from ..scales import diagram_scales
 from ..solution import solve
 from ..sweeps import sweep
 
-__all__ = ["Frames", "frames", "frame_angles", "DEFAULT_FRAMES", "MAX_FRAMES", "round_sig"]
+__all__ = ["Frames", "frames", "frame_angles", "DEFAULT_FRAMES", "MAX_FRAMES",
+           "MAX_PICTURE_FRAMES", "max_frames", "check_frames", "need_frames", "round_sig"]
 
 #: frames of a cycle when none are asked for (2 deg apart over a full turn)
 DEFAULT_FRAMES = 180
-#: the most frames a page or an animation may have
+#: the most frames a page or an SVG animation may have
 MAX_FRAMES = 3600
+#: the most frames of an animation made of pictures (GIF, HTML player): each frame is a
+#: picture held in memory until the file is whole (about 0.35 MB in a GIF, 30 KB in the
+#: HTML player), and drawing one takes about 0.06 s
+MAX_PICTURE_FRAMES = 360
+
+
+def max_frames(fmt: str | None = None) -> int:
+    """The most frames of a page (``fmt`` None), or of an animation to ``fmt``."""
+    return MAX_PICTURE_FRAMES if fmt in ("gif", "html") else MAX_FRAMES
+
+
+def check_frames(n, fmt: str | None = None) -> int:
+    """``n`` as a count of frames (a whole number from 2 to :func:`max_frames`), or a
+    :class:`SceneError` naming ``--frames``."""
+    top = max_frames(fmt)
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 2 <= n <= top:
+        what = f"a {fmt.upper()} animation" if fmt in ("gif", "html") else "a page or an SVG"
+        raise SceneError(f"--frames {n!r}: give a whole number of frames from 2 to {top} "
+                         f"(for {what})", key="--frames")
+    return int(n)
 #: how far inside a limit position the frames stop, as a fraction of the range
 INSIDE = 0.004
 
@@ -84,11 +106,19 @@ def frame_angles(scene, n: int, domain) -> tuple[np.ndarray, int]:
     pad = INSIDE * (hi - lo)
     th = np.linspace(lo + pad, hi - pad, max(n - 1, 1))
     k = int(np.searchsorted(th, t0))
+    near = [j for j in (k - 1, k) if 0 <= j < len(th) and abs(th[j] - t0) <= 1e-12 * (hi - lo)]
+    if near:  # the instant is a frame already (0 in a range symmetric about it): n frames
+        th = np.linspace(lo + pad, hi - pad, n)  # of which the nearest is the instant,
+        k = int(np.argmin(np.abs(th - t0)))      # none twice
+        th[k] = t0
+        return th, k
     return np.insert(th, k, t0), k
 
 
 def frames(scene, n: int = DEFAULT_FRAMES) -> Frames:
-    """The scene's motion at ``n`` crank angles over its cycle, in one vectorised sweep."""
+    """The scene's motion at ``n`` crank angles over its cycle, in one vectorised sweep
+    (``n`` from 2 to :data:`MAX_FRAMES`)."""
+    n = check_frames(n)
     sol = solve(scene)  # the stated instant: the scales, and its errors first
     scales = diagram_scales(sol)
     probe = sweep(scene, [scene.input.angle])
@@ -98,6 +128,15 @@ def frames(scene, n: int = DEFAULT_FRAMES) -> Frames:
     if len(kept) != len(th):  # angles at a singular position were left out
         start = int(np.argmin(np.abs(kept - scene.input.angle)))
     return Frames(res, sol, scales, start, bool(probe.domain.full_turn))
+
+
+def need_frames(fr) -> Frames:
+    """``fr`` if it is the frames of a scene, else a :class:`SceneError` saying how to make
+    them (an API misuse is an error of the family, never an AttributeError)."""
+    if not isinstance(fr, Frames):
+        raise SceneError("the frames of a scene are needed (polygon_method.page.frames(scene, "
+                         f"n)), not {type(fr).__name__}")
+    return fr
 
 
 def round_sig(a, digits: int = 6) -> list:

@@ -22,7 +22,7 @@ from importlib.resources import files
 from ..numbers import fmt, sense
 from ..steptable import steps_blocks
 from .data import page_data
-from .frames import Frames
+from .frames import Frames, need_frames
 
 __all__ = ["page_html", "scene_words", "blocks_html", "check_html"]
 
@@ -135,7 +135,7 @@ _CAPTION = {"configuration": "Configuration diagram", "velocity":
 def page_html(fr: Frames, *, source: str | None = None, verdicts=None,
               answers_title: str = "") -> str:
     """The page for the frames ``fr``: an HTML document as text."""
-    sc = fr.sol.scene
+    sc = need_frames(fr).sol.scene
     d = page_data(fr)
     title = d["title"]
     cycle = "a full turn of the crank" if fr.full_turn else \

@@ -68,6 +68,13 @@ def parse_scene(text: str, file: str | None = None) -> Scene:
     return _Loader(raw, text, file).scene()
 
 
+def toml_lines(text: str) -> list:
+    """The lines of a TOML text as TOML counts them: split at line feeds only (not at the
+    form feeds, U+2028 and other breaks that ``str.splitlines`` also splits at, which a
+    string or a comment may hold)."""
+    return [line[:-1] if line.endswith("\r") else line for line in text.split("\n")]
+
+
 def scene_table(scene: Scene) -> dict:
     """The TOML table a scene was read from (its text parsed again), for making variants
     of it; empty for a scene not read from text."""
@@ -158,7 +165,7 @@ def _syntax_error(msg, text, file) -> SceneError:
 def _duplicate_key(text):
     """(table, key, first line, second line) of a key given twice in one table, or None."""
     table, seen = "", {}
-    for i, line in enumerate(text.splitlines(), 1):
+    for i, line in enumerate(toml_lines(text), 1):
         head = re.match(r"^\s*\[\s*([^\[\]]+?)\s*\]\s*(#.*)?$", line)
         if head:
             table = head.group(1).strip('"')
@@ -175,7 +182,7 @@ def _duplicate_key(text):
 def _deepest_key(text):
     """The key whose value opens the most brackets on one line (for nesting errors)."""
     best, where = 0, None
-    for i, line in enumerate(text.splitlines(), 1):
+    for i, line in enumerate(toml_lines(text), 1):
         m = re.match(r"^\s*([^=\s]+)\s*=", line)
         depth = line.count("[") + line.count("{")
         if m and depth > best:
@@ -198,7 +205,7 @@ def _printable(text):
 class _Loader(_Tables, _Variants):
     def __init__(self, raw: dict, text: str, file):
         self.raw = raw
-        self.lines = text.splitlines()
+        self.lines = toml_lines(text)
         self.file = file
         self.unit = "mm"
 

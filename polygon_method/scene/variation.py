@@ -93,7 +93,19 @@ class _Variants:
         if not varied:
             raise self.error("[variants] varies nothing: give a range or a list, e.g. "
                              "BC = { from = 60, to = 75, step = 1 }", "variants")
+        self._one_key_each(varied)
         return Variation(tuple(varied), min_condition, min_text)
+
+    def _one_key_each(self, varied):
+        """Two keys that set one quantity (BC and CB; a pin's radius and its diameter)
+        would write one value and show the other on the problem sheet: refused."""
+        seen = {}
+        for v in varied:
+            what = v.path[:2] if v.path[0] == "pins" else v.path
+            if what in seen:
+                raise self.error(f"{seen[what]} and {v.key} both vary {v.label.split(' of ')[-1]}"
+                                 ": vary it by one key", "variants", v.key.split(".")[0])
+            seen[what] = v.key
 
     def _min_condition(self, value):
         if isinstance(value, (int, float)) and not isinstance(value, bool):
@@ -161,6 +173,10 @@ class _Variants:
                                      f"{sub} of ground point {name}", positive=False,
                                      table_key=name)]
             if slider is not None and hasattr(slider, "u"):
+                if abs(slider.u[1 - i]) < 1e-12:  # along the path itself: nothing moves
+                    raise self.error(f"the path of {name} runs along {sub}: moving it along "
+                                     f"{sub} changes nothing (vary its "
+                                     f"{'y' if sub == 'x' else 'x'})", "variants", name)
                 through = raw["sliders"][name].get("through")
                 if isinstance(through, str):
                     raise self.error(f"the path of {name} passes through ground point "
@@ -228,6 +244,9 @@ class _Variants:
         elif isinstance(value, list):
             if not value:
                 raise self.error(f"{key}: the list of values is empty", "variants", where)
+            if len(value) > MAX_VALUES:
+                raise self.error(f"{key}: the list holds {len(value)} values, more than "
+                                 f"{MAX_VALUES}", "variants", where)
             items = list(value)
         else:
             raise self.error(f"{key} = {value!r}: give a range {{ from = 60, to = 75, step = "
@@ -250,9 +269,12 @@ class _Variants:
                                  "variants", where)
             if kind == "length":
                 self.length(item, "variants", where, positive=positive)
-            if q.value in seen:  # the same value written twice (60 and "6 cm"): once
+            same = q.value
+            if kind == "angle":  # 0 and 360 deg are one position: one problem
+                same = round(math.degrees(q.value) % 360.0, 9) % 360.0
+            if same in seen:  # the same value written twice (60 and "6 cm"): once
                 continue
-            seen.add(q.value)
+            seen.add(same)
             values.append(item)
             si.append(q.value)
             if isinstance(item, str):

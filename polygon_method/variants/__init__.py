@@ -30,7 +30,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..errors import PolygonMethodError, SceneError
+from ..errors import PolygonMethodError, SceneError, printable
 from ..kinematics import evaluate
 from ..linkage import four_bar_of, grashof, slider_crank_of, slotted_of
 from ..compiler import compile_plan
@@ -40,13 +40,15 @@ from .papers import (answer, answer_key_csv, answer_key_markdown, sheet_markdown
                      summary_text)
 
 __all__ = ["generate", "VariantSet", "Variant", "linkage_class", "dump_toml", "questions",
-           "screen", "answer", "ENUMERATE", "MAX_TRIED", "answer_key_csv",
+           "screen", "answer", "ENUMERATE", "MAX_TRIED", "MAX_VARIANTS", "answer_key_csv",
            "answer_key_markdown", "sheet_markdown", "sheet_pdf", "summary_text"]
 
 #: a space of at most this many combinations is visited whole
 ENUMERATE = 50_000
 #: at most this many candidates are screened in a larger space
 MAX_TRIED = 20_000
+#: the most variants one run makes
+MAX_VARIANTS = 9999
 
 
 # --------------------------------------------------------------------------- the class
@@ -147,7 +149,8 @@ class VariantSet:
         return (f"{where} (assembled on the stated branch, every step's condition at least "
                 f"{self.base.variation.min_text}, the class kept: {self.linkage}), "
                 f"not {self.requested}" + (f"; turned down: {why}" if why else "")
-                + f": widen the ranges or ask for --count {n}")
+                + (f": widen the ranges or ask for --count {n}" if n else
+                   ": widen the ranges or lower min_condition"))
 
 
 # --------------------------------------------------------------------------- TOML
@@ -156,8 +159,14 @@ class VariantSet:
 _BARE = re.compile(r"^[A-Za-z0-9_-]+$")
 
 
+def _string(text: str) -> str:
+    """``text`` as a TOML basic string: JSON's escapes are TOML's, save that TOML also
+    wants DEL escaped."""
+    return json.dumps(text, ensure_ascii=False).replace("\x7f", "\\u007f")
+
+
 def _key(k) -> str:
-    return k if _BARE.match(k) else json.dumps(k, ensure_ascii=False)
+    return k if _BARE.fullmatch(k) else _string(k)
 
 
 def _value(v) -> str:
@@ -168,7 +177,7 @@ def _value(v) -> str:
     if isinstance(v, float):
         return repr(v)
     if isinstance(v, str):
-        return json.dumps(v, ensure_ascii=False)
+        return _string(v)
     if isinstance(v, list):
         return "[" + ", ".join(_value(x) for x in v) + "]"
     if isinstance(v, dict):
@@ -178,7 +187,9 @@ def _value(v) -> str:
 
 def dump_toml(raw: dict, header: str = "") -> str:
     """A scene's table as TOML text: top-level keys first, then one ``[table]`` each."""
-    out = [f"# {line}" if line else "#" for line in header.splitlines()]
+    # a comment holds no control character (a title may: it is shown escaped here)
+    out = [f"# {printable(line)}" if line else "#"
+           for line in header.split("\n")]
     for k, v in raw.items():
         if not isinstance(v, dict):
             out.append(f"{_key(k)} = {_value(v)}")
@@ -315,13 +326,20 @@ def _id_width(count):
 def generate(scene: Scene, count: int, seed: int, *, batch: int | None = None) -> VariantSet:
     """Choose ``count`` variants of ``scene`` (see the module docstring), reproducibly
     from ``seed``. Fewer are returned where fewer exist (:meth:`VariantSet.shortfall`)."""
+    if not isinstance(scene, Scene):
+        raise SceneError("a Scene is needed (load_scene(path) or parse_scene(text)), not "
+                         f"{type(scene).__name__}")
     var = scene.variation
     if var is None:
         raise SceneError("the scene has no [variants] table: add one saying what may vary, "
                          "e.g. [variants] BC = { from = 60, to = 75, step = 1 } (see "
                          "docs/variants.md)", file=scene.file, key="[variants]")
-    if count < 1:
-        raise SceneError(f"--count must be at least 1, got {count}", key="--count")
+    for name, v, low, high in (("--count", count, 1, MAX_VARIANTS),
+                               ("--seed", seed, 0, None)):
+        if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < low or \
+                (high is not None and v > high):
+            raise SceneError(f"{name} {v!r}: a whole number from {low}"
+                             + (f" to {high}" if high else ""), key=name)
     solve(scene)  # the base problem itself must solve (else its error, as solve gives it)
     plan = compile_plan(scene)
     branches = _branches(plan)
@@ -351,9 +369,10 @@ def generate(scene: Scene, count: int, seed: int, *, batch: int | None = None) -
         built = []
         for t in picks:
             r = copy.deepcopy(raw)
-            for v, i in zip(var.varied, t):
+            for v in var.varied:  # every setting first, so that none undoes a value
                 for path, value in v.setup:
                     _put(r, path, copy.deepcopy(value))
+            for v, i in zip(var.varied, t):
                 _put(r, v.path, v.values[i])
             try:
                 built.append((t, r, scene_from_table(r, scene.file)))

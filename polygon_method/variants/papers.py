@@ -161,17 +161,28 @@ def sheet_pages(vs):
     from matplotlib.figure import Figure
 
     base = vs.base
-    for head, lines in sheet_sections(vs):
+
+    def page(head):
         fig = Figure(figsize=(8.27, 11.69))
         fig.text(0.08, 0.95, f"{base.title or base.file}".replace("$", r"\$"), fontsize=11,
                  va="top")
         fig.text(0.08, 0.92, head, fontsize=15, weight="bold", va="top")
-        y = 0.88
+        return fig
+
+    for head, lines in sheet_sections(vs):
+        fig, y = page(head), 0.88
         for line in lines:
             for part in textwrap.wrap(line.replace("`", "").replace("$", r"\$"), 90) or [""]:
+                if y < BOTTOM:  # the page is full: the problem goes on over the page
+                    yield fig
+                    fig, y = page(f"{head} (continued)"), 0.88
                 fig.text(0.08, y, part, fontsize=10, va="top")
                 y -= 0.022
         yield fig
+
+
+#: the lowest line of a problem sheet's page (fraction of its height from the bottom)
+BOTTOM = 0.05
 
 
 def sheet_pdf(vs) -> bytes:
