@@ -206,3 +206,27 @@ def test_a_reader_that_goes_away_is_no_error():
     err = p.stderr.read()
     assert p.wait(timeout=60) == 0
     assert err == b""
+
+
+@pytest.mark.parametrize("args", [
+    ["sweep", str(SCENE), "--csv", ""], ["sweep", str(SCENE), "--plot", " "],
+    ["draw", str(SCENE), "-o", ""], ["check", str(SCENE), "--gradebook", ""],
+    ["variants", str(ROOT / "worked_problems" / "fourbar_image_points.toml"), "-o", ""],
+    ["solve", ""]])
+def test_an_empty_name_is_refused_never_taken_as_not_given(args, capsys, tmp_path,
+                                                           monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    assert main(args) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "empty" in err
+    assert list(tmp_path.iterdir()) == []  # nothing written (not even here)
+
+
+def test_variants_into_a_dangling_link_is_one_clear_line(tmp_path, capsys):
+    link = tmp_path / "out"
+    link.symlink_to(tmp_path / "nowhere" / "dir")
+    code = main(["variants", str(ROOT / "worked_problems" / "fourbar_image_points.toml"),
+                 "--count", "2", "-o", str(link)])
+    err = capsys.readouterr().err
+    assert code == 2 and "does not exist" in err and err.count("\n") == 1
+    assert not (tmp_path / "nowhere").exists()

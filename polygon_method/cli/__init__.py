@@ -130,6 +130,11 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv=None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
+    for dest, value in vars(args).items():  # an empty name is never "not given"
+        if isinstance(value, str) and dest != "command" and not value.strip():
+            flag = {"output": "-o", "scene": "SCENE"}.get(dest, "--" + dest.replace("_", "-"))
+            print(f"polygon-method {args.command}: {flag}: an empty value", file=sys.stderr)
+            return 2
     try:
         code = args.func(args)
         sys.stdout.flush()  # a full disk on standard output is one line too

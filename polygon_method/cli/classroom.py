@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import math
+import os
 import re
 from pathlib import Path
 
@@ -275,7 +276,12 @@ def _cmd_variants(args) -> int:
                          key="--count")
     if args.seed < 0:
         raise SceneError(f"--seed {args.seed}: a whole number, 0 or more", key="--seed")
+    if not args.output.strip():
+        raise PolygonMethodError("an empty path: name the directory to write into", key="-o")
     out = Path(args.output)
+    if out.is_symlink() and not out.exists():
+        raise PolygonMethodError(f"cannot write into {out}: it is a link to "
+                                 f"{os.readlink(out)}, which does not exist", key="-o")
     made = not out.exists()
     if out.exists() and not out.is_dir():
         raise PolygonMethodError(f"cannot write into {out}: it is not a directory", key="-o")

@@ -21,6 +21,8 @@ class _Target:
 
     def __init__(self, path, option, protect=()):
         self.shown, self.option = str(path), option
+        if not str(path).strip():
+            raise PolygonMethodError("an empty file name", key=option)
         real = Path(os.path.realpath(path))
         if real.is_dir():
             raise PolygonMethodError(f"cannot write {path}: it is a directory", key=option)
