@@ -64,7 +64,9 @@ def _coupler_lengths(rng, e, c):
     return b, cl
 
 
-def toggle(rng, c, carried=True):
+def _toggle_four_bar(rng, c):
+    """A four-bar A(0, 0), D(100, 0) with a random crank and its coupler and rocker made so
+    that the dyad at C has condition c: (d, a, theta, B, b, cl, C) flattened."""
     d = 100.0
     a = rng.uniform(15, 60)
     th = rng.uniform(-math.pi, math.pi)
@@ -72,6 +74,11 @@ def toggle(rng, c, carried=True):
     e = math.hypot(d - bx, by)
     b, cl = _coupler_lengths(rng, e, c)
     cx, cy = _circle(bx, by, d, 0.0, b, cl, rng.choice([1.0, -1.0]))
+    return d, a, th, bx, by, b, cl, cx, cy
+
+
+def toggle(rng, c, carried=True):
+    d, a, th, bx, by, b, cl, cx, cy = _toggle_four_bar(rng, c)
     text = f"""[ground]
 A = [0, 0]
 D = [{_r(d)}, 0]
@@ -151,13 +158,7 @@ A = {{ along = "O4-P" }}
 def chain(rng, c):
     """A toggle four-bar (condition c at C) whose coupler point E drives a dyad EF, FG to
     a further ground point G (a well-conditioned second step that carries the errors)."""
-    d = 100.0
-    a = rng.uniform(15, 60)
-    th = rng.uniform(-math.pi, math.pi)
-    bx, by = a * math.cos(th), a * math.sin(th)
-    e = math.hypot(d - bx, by)
-    b, cl = _coupler_lengths(rng, e, c)
-    cx, cy = _circle(bx, by, d, 0.0, b, cl, rng.choice([1.0, -1.0]))
+    d, a, th, bx, by, b, cl, cx, cy = _toggle_four_bar(rng, c)
     along = rng.uniform(-0.5, 1.5) * b
     ex, ey = bx + along * (cx - bx) / b, by + along * (cy - by) / b
     ef, fg = rng.uniform(100, 250), rng.uniform(80, 200)
@@ -186,13 +187,7 @@ F = [{_r(fx)}, {_r(fy)}]
 def toggle_slider(rng, c):
     """A toggle four-bar (condition c at C) whose follower, extended to E, drives a slider F
     on an inclined fixed path (a dyad's errors carried through a slider step)."""
-    d = 100.0
-    a = rng.uniform(15, 60)
-    th = rng.uniform(-math.pi, math.pi)
-    bx, by = a * math.cos(th), a * math.sin(th)
-    e = math.hypot(d - bx, by)
-    b, cl = _coupler_lengths(rng, e, c)
-    cx, cy = _circle(bx, by, d, 0.0, b, cl, rng.choice([1.0, -1.0]))
+    d, a, th, bx, by, b, cl, cx, cy = _toggle_four_bar(rng, c)
     along = cl * rng.uniform(1.1, 1.6)  # E on CD's extension beyond C, from D
     ex, ey = d + along * (cx - d) / cl, along * cy / cl
     ell = rng.uniform(100, 250)
