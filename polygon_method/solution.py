@@ -200,5 +200,5 @@ def solve(scene: Scene) -> Solution:
     """
     plan = compile_plan(scene)
     inp = scene.input
-    m = plan.run(Context(inp.angle, inp.omega, inp.alpha))
+    m = plan.instant(Context(inp.angle, inp.omega, inp.alpha))  # = plan.run(ctx), one instant
     return Solution(scene, plan, m.P, m.V, m.A, m.W, m.Al, m.S, m.cond, inp.angle)
