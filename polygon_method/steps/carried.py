@@ -26,13 +26,15 @@ def image(px, py, qx, qy, lam, mu):
 
 def _image(px, py, qx, qy, lam, mu):
     # the same as image(), skipping zero terms (exactly as a hand construction does)
-    dx, dy = qx - px, qy - py
-    x, y = px, py
+    dx = qx - px
+    dy = qy - py
     if lam:
-        x, y = x + lam * dx, y + lam * dy
+        if mu:
+            return px + lam * dx - mu * dy, py + lam * dy + mu * dx
+        return px + lam * dx, py + lam * dy
     if mu:
-        x, y = x - mu * dy, y + mu * dx
-    return x, y
+        return px - mu * dy, py + mu * dx
+    return px, py
 
 
 def recognise(g, name):
