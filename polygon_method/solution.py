@@ -201,4 +201,20 @@ def solve(scene: Scene) -> Solution:
     plan = compile_plan(scene)
     inp = scene.input
     m = plan.instant(Context(inp.angle, inp.omega, inp.alpha))  # = plan.run(ctx), one instant
-    return Solution(scene, plan, m.P, m.V, m.A, m.W, m.Al, m.S, m.cond, inp.angle)
+    sol = _new(Solution)  # Solution(scene, plan, m.P, ...) filled in here: one call fewer
+    sol.scene = scene
+    sol.plan = plan
+    sol.theta = inp.angle
+    sol.P = m.P
+    sol.V = m.V
+    sol.A = m.A
+    sol.W = m.W
+    sol.Al = m.Al
+    sol.S = m.S
+    sol.cond = m.cond
+    sol.bad = None
+    sol._cache = {}
+    return sol
+
+
+_new = object.__new__
