@@ -47,12 +47,15 @@ def place(bx, by, dx, dy, l1, l2, sigma, ctx=None, step=None):
     s, t = l1 + l2, l1 - l2
     q = (s * s - e2) * (e2 - t * t)
     if ctx is None or not ctx.array:
-        if step is not None:
-            if e2 == 0:
-                raise step.coincident()
-            if q < -TOL.closure * (l1 * l2) ** 2:
-                raise AssemblyError(step.why(e2 ** 0.5), step=step.label)
-        root = q ** 0.5 if q > 0 else 0.0
+        if q > 0:  # two assemblies (e2 = 0 gives q <= 0)
+            root = q ** 0.5
+        else:
+            if step is not None:
+                if e2 == 0:
+                    raise step.coincident()
+                if q < -TOL.closure * (l1 * l2) ** 2:
+                    raise AssemblyError(step.why(e2 ** 0.5), step=step.label)
+            root = 0.0
     else:
         e2 = ctx.safe(e2, step)
         root = ctx.root(q, (l1 * l2) ** 2, step, None)
