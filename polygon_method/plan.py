@@ -46,6 +46,8 @@ __all__ = ["Plan", "Dims", "Bodies", "Crank", "Dyad", "SliderDyad", "SlottedLink
            "Context", "State"]
 
 
+_new = object.__new__
+
 # --------------------------------------------------------------------------- bodies
 
 
@@ -211,7 +213,7 @@ class Plan:
         if dims is None:
             ground = self.ground
             if upto >= 2 and not ctx.array:  # one instant: each step's phases in a row
-                return self._run_instant(ctx, ground)
+                return self.instant(ctx)
             phases = self._phases or self._bind_own()
         else:
             ground, phases = dims.ground, self.bind(dims)
@@ -236,14 +238,23 @@ class Plan:
             raise exc.located(self.scene.file)
         return m
 
-    def _run_instant(self, ctx, ground):
-        """All three phases at the plan's own dimensions for one instant (floats): each
-        step's position, check, velocity and acceleration in a row (``bind_instant``), the
-        same formulas with fewer calls. A step that cannot assemble, or is singular, raises
-        before any later step is placed."""
+    def instant(self, ctx: Context) -> State:
+        """``run(ctx)`` for one instant (floats, ``ctx.array`` false): all three phases at
+        the plan's own dimensions, each step's position, check, velocity and acceleration in
+        a row (``bind_instant``), the same formulas with fewer calls. A step that cannot
+        assemble, or is singular, raises before any later step is placed."""
         zero = self._zero
         fixed = self.fixed_links
-        m = State(dict(ground), dict(zero), dict(zero), dict(fixed), dict(fixed), {}, ctx)
+        m = _new(State)  # State(...) filled in here: one Python call fewer per solve
+        m.P = self.ground.copy()
+        m.V = zero.copy()
+        m.A = zero.copy()
+        m.W = fixed.copy()
+        m.Al = fixed.copy()
+        m.S = {}
+        m.cond = ctx.cond
+        m.ctx = ctx
+        m.array = ctx.array  # false: one instant
         try:
             for f in self._instant or self._bind_own_instant():
                 f(m)

@@ -33,6 +33,8 @@ from .scene import FixedPath, Scene
 
 __all__ = ["solve", "Solution", "PinRubbing", "sense", "fmt_angular"]
 
+_UNSET = object()  # a quantity not yet derived (its value may be None)
+
 
 class Solution(Motion):
     """The :class:`~polygon_method.kinematics.Motion` at the scene's instant (floats, SI),
@@ -47,11 +49,11 @@ class Solution(Motion):
         self._cache = {}
 
     def _get(self, name, make):
-        try:
-            return self._cache[name]
-        except KeyError:
-            value = self._cache[name] = make()
-            return value
+        c = self._cache
+        value = c.get(name, _UNSET)
+        if value is _UNSET:
+            value = c[name] = make()
+        return value
 
     def speed(self, point, relative_to=None) -> float:
         return hypot(*self.velocity(point, relative_to))
@@ -84,11 +86,10 @@ class Solution(Motion):
     def input_torque(self):
         """T on the crank, ccw positive: T w + sum(F . v) = 0. None without loads."""
         c = self._cache
-        try:
-            return c["torque"]
-        except KeyError:
+        t = c.get("torque", _UNSET)  # None is a value (no loads): a sentinel, not a raise
+        if t is _UNSET:
             t = c["torque"] = _torque(self.scene, self.V, self.W, self.scene.input.omega)
-            return t
+        return t
 
     # ----- conditioning
     @property
@@ -199,5 +200,21 @@ def solve(scene: Scene) -> Solution:
     """
     plan = compile_plan(scene)
     inp = scene.input
-    m = plan.run(Context(inp.angle, inp.omega, inp.alpha))
-    return Solution(scene, plan, m.P, m.V, m.A, m.W, m.Al, m.S, m.cond, inp.angle)
+    m = plan.instant(Context(inp.angle, inp.omega, inp.alpha))  # = plan.run(ctx), one instant
+    sol = _new(Solution)  # Solution(scene, plan, m.P, ...) filled in here: one call fewer
+    sol.scene = scene
+    sol.plan = plan
+    sol.theta = inp.angle
+    sol.P = m.P
+    sol.V = m.V
+    sol.A = m.A
+    sol.W = m.W
+    sol.Al = m.Al
+    sol.S = m.S
+    sol.cond = m.cond
+    sol.bad = None
+    sol._cache = {}
+    return sol
+
+
+_new = object.__new__

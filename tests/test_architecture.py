@@ -261,3 +261,38 @@ def test_one_instant_path_refuses_a_singular_step_as_the_phased_path_does():
     with pytest.raises(SingularStepError) as other:
         plan.run(Context(inp.angle, inp.omega, inp.alpha), plan.dims)
     assert str(one.value) == str(other.value)
+
+
+def _slots(cls):
+    return [s for c in cls.__mro__ for s in getattr(c, "__slots__", ())]
+
+
+def test_records_filled_in_place_have_every_field_their_constructor_sets():
+    """``Plan.instant``, ``solve`` and ``derived.pin_records`` fill their State, Solution
+    and PinRubbing records in place (no ``__init__`` call): every slot is set, to what the
+    constructor would give."""
+    from polygon_method.derived import PinRubbing, pin_records
+    from polygon_method.plan import Context, State
+    from polygon_method.solution import Solution
+
+    sc = parse_scene(FOURBAR + "\n[pins]\nB = { radius = 40 }\nC = { radius = 25 }\n")
+    sol = solve(sc)
+    plan = compile_plan(sc)
+    inp = sc.input
+    ctx = Context(inp.angle, inp.omega, inp.alpha)
+    m = plan.instant(ctx)
+    made = State(dict(plan.ground), dict(plan._zero), dict(plan._zero), dict(plan.fixed_links),
+                 dict(plan.fixed_links), {}, ctx)
+    for name in _slots(State):
+        assert hasattr(m, name), name
+        if name not in ("P", "V", "A", "W", "Al", "cond"):  # the filled-in values
+            assert getattr(m, name) == getattr(made, name), name
+    other = Solution(sc, plan, m.P, m.V, m.A, m.W, m.Al, m.S, m.cond, inp.angle)
+    for name in _slots(Solution):
+        assert getattr(sol, name) == getattr(other, name), name
+    assert set(sol.rubbing) == {"B", "C"}
+    for rec in pin_records(plan.pins, m.W, plan.dims.radii).values():
+        assert isinstance(rec, PinRubbing)
+        for name in _slots(PinRubbing):
+            assert hasattr(rec, name), name
+        assert rec.rubbing_velocity == max(rec.values) and rec.point in rec._pin

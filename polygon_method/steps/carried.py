@@ -26,13 +26,15 @@ def image(px, py, qx, qy, lam, mu):
 
 def _image(px, py, qx, qy, lam, mu):
     # the same as image(), skipping zero terms (exactly as a hand construction does)
-    dx, dy = qx - px, qy - py
-    x, y = px, py
+    dx = qx - px
+    dy = qy - py
     if lam:
-        x, y = x + lam * dx, y + lam * dy
+        if mu:
+            return px + lam * dx - mu * dy, py + lam * dy + mu * dx
+        return px + lam * dx, py + lam * dy
     if mu:
-        x, y = x - mu * dy, y + mu * dx
-    return x, y
+        return px - mu * dy, py + mu * dx
+    return px, py
 
 
 def recognise(g, name):
@@ -181,10 +183,16 @@ class Carried(Step):
         img = _image if scalar else image
 
         def instant(m):
-            P, V, A, cond = m.P, m.V, m.A, m.cond
-            (px, py), (qx, qy) = P[p], P[q]
-            (vpx, vpy), (vqx, vqy) = V[p], V[q]
-            (apx, apy), (aqx, aqy) = A[p], A[q]
+            P = m.P
+            V = m.V
+            A = m.A
+            cond = m.cond
+            px, py = P[p]
+            qx, qy = P[q]
+            vpx, vpy = V[p]
+            vqx, vqy = V[q]
+            apx, apy = A[p]
+            aqx, aqy = A[q]
             for X, i, lam, mu in items:
                 P[X] = img(px, py, qx, qy, lam, mu)
                 cond[i] = 1.0

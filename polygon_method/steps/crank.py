@@ -109,21 +109,28 @@ class Crank(Step):
         O, T, link, i, r = self.pivot, self.tip, self.link, self.index, prm[0]
 
         def instant(m):
-            ctx, P = m.ctx, m.P
+            ctx = m.ctx
+            P = m.P
             ox, oy = P[O]
-            tx, ty = ox + r * ctx.cos(ctx.theta), oy + r * ctx.sin(ctx.theta)
+            theta = ctx.theta
+            tx = ox + r * ctx.cos(theta)
+            ty = oy + r * ctx.sin(theta)
             P[T] = (tx, ty)
             m.cond[i] = 1.0
-            omega, alpha = ctx.omega, ctx.alpha
-            rx, ry = tx - ox, ty - oy
-            vox, voy = m.V[O]
+            omega = ctx.omega
+            rx = tx - ox
+            ry = ty - oy
+            V = m.V
+            vox, voy = V[O]
             vx, vy = velocity(rx, ry, omega)
             m.W[link] = omega
-            m.V[T] = (vox + vx, voy + vy)
-            aox, aoy = m.A[O]
+            V[T] = (vox + vx, voy + vy)
+            A = m.A
+            aox, aoy = A[O]
+            alpha = ctx.alpha
             ax, ay = acceleration(rx, ry, omega, alpha)
             m.Al[link] = alpha
-            m.A[T] = (aox + ax, aoy + ay)
+            A[T] = (aox + ax, aoy + ay)
 
         return instant
 

@@ -47,12 +47,15 @@ def place(bx, by, dx, dy, l1, l2, sigma, ctx=None, step=None):
     s, t = l1 + l2, l1 - l2
     q = (s * s - e2) * (e2 - t * t)
     if ctx is None or not ctx.array:
-        if step is not None:
-            if e2 == 0:
-                raise step.coincident()
-            if q < -TOL.closure * (l1 * l2) ** 2:
-                raise AssemblyError(step.why(e2 ** 0.5), step=step.label)
-        root = q ** 0.5 if q > 0 else 0.0
+        if q > 0:  # two assemblies (e2 = 0 gives q <= 0)
+            root = q ** 0.5
+        else:
+            if step is not None:
+                if e2 == 0:
+                    raise step.coincident()
+                if q < -TOL.closure * (l1 * l2) ** 2:
+                    raise AssemblyError(step.why(e2 ** 0.5), step=step.label)
+            root = 0.0
     else:
         e2 = ctx.safe(e2, step)
         root = ctx.root(q, (l1 * l2) ** 2, step, None)
@@ -191,22 +194,32 @@ class Dyad(Step):
         l1, l2, sigma, step = prm[0], prm[1], self.sigma, self
 
         def instant(m):
-            P, V, A, W, Al = m.P, m.V, m.A, m.W, m.Al
-            (bx, by), (dx, dy) = P[B], P[D]
+            P = m.P
+            bx, by = P[B]
+            dx, dy = P[D]
             x, y, c = place(bx, by, dx, dy, l1, l2, sigma, m.ctx, step)
             P[X] = (x, y)
             m.cond[i] = c
             if c < TOL.singular:
                 raise step.singular(c)
-            r1x, r1y, r2x, r2y = x - bx, y - by, x - dx, y - dy
+            r1x = x - bx
+            r1y = y - by
+            r2x = x - dx
+            r2y = y - dy
             d = r1x * r2y - r1y * r2x
-            (vbx, vby), (vdx, vdy) = V[B], V[D]
+            V = m.V
+            vbx, vby = V[B]
+            vdx, vdy = V[D]
             w1, w2, vx, vy = velocity(r1x, r1y, r2x, r2y, vbx, vby, vdx, vdy, d)
+            W = m.W
             W[j1] = w1
             W[j2] = w2
             V[X] = (vx, vy)
-            (abx, aby), (adx, ady) = A[B], A[D]
+            A = m.A
+            abx, aby = A[B]
+            adx, ady = A[D]
             al1, al2, ax, ay = acceleration(r1x, r1y, r2x, r2y, w1, w2, abx, aby, adx, ady, d)
+            Al = m.Al
             Al[j1] = al1
             Al[j2] = al2
             A[X] = (ax, ay)
