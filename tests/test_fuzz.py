@@ -448,6 +448,9 @@ some_key = st.one_of(point, link_key, answer_key, st.sampled_from(
 
 def _plausible(draw, doc) -> None:
     """Add or change one entry with a value of the right kind, using the scene's names."""
+    if any(not isinstance(doc.get(t, {}), dict) for t in
+           ("links", "ground", "points", "sliders", "assembly", "input", "pins", "loads")):
+        return  # an earlier fault made a table something else: broken enough already
     pts = sorted({p for key in doc.get("links", {}) for p in re.findall(r"[A-Z][0-9]*", key)}
                  | set(doc.get("ground", {})))
     links = list(doc.get("links", {})) or ["AB"]

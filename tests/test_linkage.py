@@ -355,3 +355,35 @@ def test_no_negative_zero_in_the_text():
     for path in sorted((Path(__file__).parent.parent / "worked_problems").glob("*.toml")):
         text = analyse(load_scene(path)).text()
         assert not re.search(r"(?<![\d.])-0\.0+(?!\d)", text), path.name
+
+
+def test_a_slider_that_stands_still_has_no_stroke_and_no_formula_errors():
+    """An isosceles slider crank on the branch where the slider stays at the crank centre
+    (rod as long as the crank, the path through the centre): rounding about a standstill is
+    no stroke, and the engine formulas, which assume a moving piston, are not compared (no
+    'inf %', no error of 1e11 %)."""
+    import re as _re
+
+    from polygon_method import parse_scene
+    from polygon_method.linkage import analyse
+
+    sc = parse_scene("""
+[ground]
+O = [0, 0]
+[links]
+OA = 1.0
+AB = 1.0
+[sliders]
+B = { path = "1.0 deg", through = [0, 2.225073858507e-311] }
+[assembly]
+B = "left"
+[input]
+crank = "OA"
+angle = 0.0
+speed = "1.0 rad/s cw"
+""")
+    text = str(analyse(sc))
+    assert "no stroke" in text and "moves between" not in text
+    assert "do not apply" in text
+    assert not _re.search(r"(?<![A-Za-z])(nan|inf)(?![A-Za-z])", text, _re.I)
+    assert not _re.search(r"e\+0[5-9]|e\+[1-9]\d", text)  # no absurd percentages

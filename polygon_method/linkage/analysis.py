@@ -325,9 +325,16 @@ def _output_motion(cyc: _Cycle, out: _Output, scene, fb, sk, slot):
         all_v = out.value(cyc.fr)[placed]
         if vals and len(all_v):
             omin, omax = min(vals + [float(all_v.min())]), max(vals + [float(all_v.max())])
-            lines.append(f"{out.label}: moves between {_fmt_out(out, omin, scene)} and "
-                         f"{_fmt_out(out, omax, scene)}: stroke "
-                         f"{(omax - omin) / scene.length_unit:.6g} {scene.units}")
+            size = max(lk.length for lk in scene.links)
+            if omax - omin <= 1e-9 * size:  # rounding about a standstill, not a stroke
+                mid = 0.5 * (omin + omax)
+                omin = omax = 0.0 if abs(mid) <= 1e-9 * size else mid
+                lines.append(f"{out.label}: stands still at {_fmt_out(out, omin, scene)}: "
+                             "no stroke")
+            else:
+                lines.append(f"{out.label}: moves between {_fmt_out(out, omin, scene)} and "
+                             f"{_fmt_out(out, omax, scene)}: stroke "
+                             f"{(omax - omin) / scene.length_unit:.6g} {scene.units}")
     else:
         ang = np.unwrap(out.value(cyc.fr)[placed])
         span = float(ang.max() - ang.min()) if len(ang) else 0.0

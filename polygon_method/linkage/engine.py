@@ -28,6 +28,12 @@ def _engine_lines(cyc: _Cycle, sk: SliderCrank, scene) -> list:
     t = (sg * (inp.angle - th_idc)) % TWO_PI
     x, y = fr0.P[sk.b]
     (ox, oy) = scene.ground[sk.o]
+    px, py = cyc.fr.P[sk.b]  # the stroke over the sampled cycle
+    along = np.broadcast_to((px - ox) * d[0] + (py - oy) * d[1], cyc.grid.shape)[~cyc.bad]
+    if not len(along) or float(along.max() - along.min()) <= 1e-9 * r:
+        return [f"in-line slider crank: slider {sk.b} stands still on this branch (it stays "
+                f"at the crank centre {sk.o}, the rod being as long as the crank): the "
+                "approximate formulas do not apply"]
     vx, vy = fr0.V[sk.b]
     ax, ay = fr0.A[sk.b]
     xe = l + r - float(((x - ox) * d[0] + (y - oy) * d[1])[0])
@@ -56,8 +62,10 @@ def _engine_lines(cyc: _Cycle, sk: SliderCrank, scene) -> list:
            + ("; the formulas take the crank speed as uniform" if al else "")]
     wlab = max(len(rw[0]) for rw in rows)
     out.append(f"  {'quantity':<{wlab}} {'exact':>12} {'formula':>12} {'error':>9}  formula")
+    sizes = {"m": r, "m/s": r * W, "m/s^2": r * (W * W + abs(al)), "rad/s": W,
+             "rad/s^2": W * W + abs(al)}
     for name, unit, ex, ap, form in rows:
-        err = _err(ap, ex)
+        err = _err(ap, ex, sizes[unit])
         out.append(f"  {name:<{wlab}} {ex:>12.6g} {ap:>12.6g} {err:>9}  {form} ({unit})")
     # maximum piston velocity: exact (refined over the cycle) and by the formula
     dvec = d
@@ -69,13 +77,16 @@ def _engine_lines(cyc: _Cycle, sk: SliderCrank, scene) -> list:
     vs = r * W * (math.sin(ts) + math.sin(2 * ts) / (2 * n))
     out.append(f"  maximum piston velocity: exact {vm:.6g} m/s at {math.degrees(tmx):.4f} deg "
                f"from i.d.c.; formula {vs:.6g} m/s at {math.degrees(ts):.4f} deg "
-               f"(cos t = (-n + sqrt(n^2 + 8)) / 4 = {c:.6g}), error {_err(vs, vm).strip()}")
+               f"(cos t = (-n + sqrt(n^2 + 8)) / 4 = {c:.6g}), error {_err(vs, vm, r * W).strip()}")
     return out
 
 
-def _err(approx, exact) -> str:
-    if exact == 0:
-        return "0" if approx == 0 else "n/a"
+def _err(approx, exact, size) -> str:
+    """The formula's error in per cent of the exact value; "n/a" where the exact value is
+    zero (to rounding, 1e-12 of the quantity's ``size``) and the formula's is not."""
+    zero = 1e-12 * size
+    if abs(exact) <= zero:
+        return "0" if abs(approx) <= zero else "n/a"
     return f"{100.0 * (approx - exact) / abs(exact):+.3f} %"
 
 
