@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import math
 
+from .steps.rounding import largest
+
 __all__ = ["PinRubbing", "rubbing_at", "pin_rubbing", "pin_records", "largest", "power_terms", "input_torque", "transmission_angle"]
 
 
@@ -86,20 +88,6 @@ class PinRubbing:
 
     def __repr__(self):
         return f"PinRubbing({self.point!r}, radius={self.radius!r}, pairs={self.pairs!r})"
-
-
-def largest(values):
-    """The largest of floats or, entry by entry, of arrays (0 for none)."""
-    if not values:
-        return 0.0
-    best = values[0]
-    if isinstance(best, float):
-        return max(values)
-    import numpy as np
-    best = np.array(best, dtype=float)
-    for v in values[1:]:
-        np.maximum(best, v, out=best)
-    return best
 
 
 def power_terms(scene, V, W) -> list:

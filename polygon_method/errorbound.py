@@ -31,7 +31,7 @@ and then given a margin (``benchmarks/error_bounds.py``). The same formulas take
 from __future__ import annotations
 
 from .kinematics import hypot
-from .steps.rounding import C_FLOOR, EPS, vmax, vmin
+from .steps.rounding import C_FLOOR, EPS, largest, vmax
 
 __all__ = ["EPS", "C_FLOOR", "ErrorBounds", "error_bounds", "scales", "bounds_dict",
            "shown_bounds", "SHOWN"]
@@ -41,24 +41,6 @@ SHOWN = 1e-9
 
 #: each kind's rounding constant is the ``rounding`` of its step class (fitted against the
 #: 50-digit reference, with a margin); its rule, the step's ``error_bound``
-_max, _min, _abs = vmax, vmin, abs
-
-
-def _sub(a, b):
-    return (a[0] - b[0], a[1] - b[1])
-
-
-def largest(values):
-    """The largest of floats and arrays, entry by entry (0.0 for none)."""
-    if not values:
-        return 0.0
-    if all(isinstance(v, float) for v in values):
-        return max(values)
-    import numpy as np
-    best = np.zeros(np.broadcast_shapes(*(np.shape(v) for v in values)))
-    for v in values:
-        np.maximum(best, v, out=best)
-    return best
 
 
 def scales(motion) -> dict:
@@ -74,10 +56,10 @@ def scales(motion) -> dict:
     w2 = inp.omega ** 2 + abs(inp.alpha)
     return {
         "position": max(lk.length for lk in sc.links),
-        "velocity": _max(w * r, largest([hypot(*v) for v in motion.V.values()])),
-        "acceleration": _max(w2 * r, largest([hypot(*a) for a in motion.A.values()])),
-        "omega": _max(w, largest([_abs(x) for x in motion.W.values()])),
-        "alpha": _max(w2, largest([_abs(x) for x in motion.Al.values()])),
+        "velocity": vmax(w * r, largest([hypot(*v) for v in motion.V.values()])),
+        "acceleration": vmax(w2 * r, largest([hypot(*a) for a in motion.A.values()])),
+        "omega": vmax(w, largest([abs(x) for x in motion.W.values()])),
+        "alpha": vmax(w2, largest([abs(x) for x in motion.Al.values()])),
     }
 
 
@@ -168,7 +150,7 @@ def error_bounds(motion) -> ErrorBounds:
     # coordinates far from the origin, compared with the links, are rounded to the digits
     # of the coordinates: every rounding is that much larger, relative to the links
     far = largest([hypot(*xy) for xy in P.values()]) / sizes["position"]
-    far = _max(far, 1.0)
+    far = vmax(far, 1.0)
     for st in plan.steps:  # each kind's rule is its step's error_bound
         needs, nlinks = st.needs, st.needs_links
         p, v, a, w, al = st.error_bound(walk, st.rounding * EPS * far, worst(eP, needs),
@@ -198,7 +180,7 @@ def error_bounds(motion) -> ErrorBounds:
         guide = getattr(s, "guide", None)
         if guide is not None:
             key = scene.link(guide).key
-            v, a = _max(v, eW.get(key, 0.0)), _max(a, eAl.get(key, 0.0))
+            v, a = vmax(v, eW.get(key, 0.0)), vmax(a, eAl.get(key, 0.0))
         eS[x] = (v, a, a)
     return ErrorBounds(eP, eV, eA, eW, eAl, eS, sizes)
 

@@ -29,21 +29,15 @@ angle) is computed from it (:mod:`polygon_method.derived`).
 
 from __future__ import annotations
 
-import math
 from dataclasses import replace
 
 from .errors import SceneError
 from .plan import Context, Dims, Plan
+from .steps.rounding import vhypot as hypot  # |(x, y)| for floats or arrays
 
 __all__ = ["Motion", "evaluate", "hypot"]
 
 
-def hypot(x, y):
-    """|(x, y)| for floats or arrays."""
-    if isinstance(x, float) and isinstance(y, float):
-        return math.hypot(x, y)
-    import numpy as np
-    return np.hypot(x, y)
 
 
 class Motion:

@@ -1,6 +1,8 @@
 """How rounding passes through a construction step: the helpers each kind's
-``error_bound`` uses (for floats or numpy arrays alike) and the rule of two direction lines
-that most kinds share. The walk along the plan, the sizes the bounds are relative to and
+``error_bound`` uses (for floats or numpy arrays alike, and shared with the layers above:
+``vhypot`` is :func:`polygon_method.kinematics.hypot`, ``largest`` the one of
+:mod:`polygon_method.derived` and :mod:`polygon_method.errorbound`) and the rule of two
+direction lines that most kinds share. The walk along the plan, the sizes the bounds are relative to and
 the output records are in :mod:`polygon_method.errorbound`.
 
 A step that intersects two direction lines divides by its condition ``c`` (the sine of the
@@ -23,7 +25,7 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["EPS", "C_FLOOR", "vmax", "vmin", "vhypot", "two_lines"]
+__all__ = ["EPS", "C_FLOOR", "vmax", "vmin", "vhypot", "largest", "two_lines"]
 
 #: unit roundoff of IEEE double precision
 EPS = 2.0 ** -53
@@ -53,6 +55,19 @@ def vhypot(x, y):
         return math.hypot(x, y)
     import numpy as np
     return np.hypot(x, y)
+
+
+def largest(values):
+    """The largest of floats, or entry by entry of arrays and floats (0.0 for none)."""
+    if not values:
+        return 0.0
+    if all(isinstance(v, float) for v in values):
+        return max(values)
+    import numpy as np
+    best = np.full(np.broadcast_shapes(*(np.shape(v) for v in values)), -np.inf)
+    for v in values:
+        np.maximum(best, v, out=best)
+    return best
 
 
 def two_lines(c, ratio, k, p_in, v_in, a_in):
