@@ -28,6 +28,7 @@ from ..errors import SceneError
 from ..scales import diagram_scales
 from ..solution import solve
 from ..sweeps import sweep
+from ..tracking import Sweeper
 
 __all__ = ["Frames", "frames", "frame_angles", "DEFAULT_FRAMES", "MAX_FRAMES",
            "MAX_PICTURE_FRAMES", "max_frames", "check_frames", "need_frames", "round_sig"]
@@ -56,6 +57,8 @@ def check_frames(n, fmt: str | None = None) -> int:
         raise SceneError(f"--frames {n!r}: give a whole number of frames from 2 to {top} "
                          f"(for {what})", key="--frames")
     return int(n)
+
+
 #: how far inside a limit position the frames stop, as a fraction of the range
 INSIDE = 0.004
 
@@ -121,13 +124,13 @@ def frames(scene, n: int = DEFAULT_FRAMES) -> Frames:
     n = check_frames(n)
     sol = solve(scene)  # the stated instant: the scales, and its errors first
     scales = diagram_scales(sol)
-    probe = sweep(scene, [scene.input.angle])
-    th, start = frame_angles(scene, n, probe.domain)
+    domain = Sweeper(scene).domain  # the cycle on the scene's branch (found once a scene)
+    th, start = frame_angles(scene, n, domain)
     res = sweep(scene, th)
     kept = res.theta
     if len(kept) != len(th):  # angles at a singular position were left out
         start = int(np.argmin(np.abs(kept - scene.input.angle)))
-    return Frames(res, sol, scales, start, bool(probe.domain.full_turn))
+    return Frames(res, sol, scales, start, bool(domain.full_turn))
 
 
 def need_frames(fr) -> Frames:
