@@ -105,17 +105,6 @@ def _frames(args, scene, fmt=None):
     return frames(scene, args.frames)
 
 
-def _scene_source(path):
-    """The scene's ``source`` line (for the page's heading), or None."""
-    import tomllib
-    try:
-        with open(path, "rb") as fh:
-            src = tomllib.load(fh).get("source")
-    except (OSError, tomllib.TOMLDecodeError, UnicodeDecodeError):
-        return None
-    return src if isinstance(src, str) else None
-
-
 def _cmd_page(args) -> int:
     """``polygon-method page SCENE -o page.html [--answers FILE] [--frames N]``: the page a
     student opens in a browser, written whole or not at all."""
@@ -139,8 +128,7 @@ def _cmd_page(args) -> int:
         tolerance, answers = scene.tolerance, scene.answers
     title = f"answers from {Path(args.answers).name if args.answers else 'the scene'}"
     verdicts = check_answers(fr.sol, answers, tolerance) if answers else None
-    html = page_html(fr, source=_scene_source(args.scene), verdicts=verdicts,
-                     answers_title=title)
+    html = page_html(fr, verdicts=verdicts, answers_title=title)
     for w in fr.sol.warnings:
         print(f"warning: {w}", file=sys.stderr)
     write_outputs(targets, [(html, False)])

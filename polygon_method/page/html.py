@@ -132,10 +132,10 @@ _CAPTION = {"configuration": "Configuration diagram", "velocity":
             "Acceleration polygon (pole o'; centripetal dashed, tangential dotted)"}
 
 
-def page_html(fr: Frames, *, source: str | None = None, verdicts=None,
-              answers_title: str = "") -> str:
+def page_html(fr: Frames, *, verdicts=None, answers_title: str = "") -> str:
     """The page for the frames ``fr``: an HTML document as text."""
     sc = need_frames(fr).sol.scene
+    source = sc.source
     d = page_data(fr)
     title = d["title"]
     cycle = "a full turn of the crank" if fr.full_turn else \

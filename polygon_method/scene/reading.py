@@ -287,6 +287,7 @@ class _Loader(_Tables, _Variants):
         title = raw.get("title", "")
         if not isinstance(title, str):
             raise SceneError("title must be a string", file=self.file, key="title")
+        source = raw.get("source")
 
         ground = {}
         for name, value in self.table("ground", required=True).items():
@@ -343,7 +344,8 @@ class _Loader(_Tables, _Variants):
         return Scene(title=title, units=units, ground=ground, links=tuple(links),
                      points=tuple(points), sliders=tuple(sliders), assembly=assembly,
                      input=inp, pins=tuple(pins), loads=tuple(loads), answers=tuple(answers),
-                     tolerance=tolerance, file=self.file, variation=variation,
+                     tolerance=tolerance, file=self.file,
+                     source=source if isinstance(source, str) else None, variation=variation,
                      variant=variant, _link_index=index,
                      _lines=tuple(self.lines))
 

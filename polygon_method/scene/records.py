@@ -156,6 +156,8 @@ class Scene:
     answers: tuple = ()
     tolerance: float | None = None
     file: str | None = None
+    #: where the problem comes from (the scene's ``source``), for headings
+    source: str | None = field(default=None, compare=False)
     #: the scene's [variants] (what may vary per student), and [variant] (which one it is)
     variation: object = field(default=None, compare=False)
     variant: object = field(default=None, compare=False)
