@@ -113,41 +113,28 @@ class Carried(Step):
         return x, y, 1.0
 
     def bind(self, prm):
-        """The step's three phases for dimensions ``prm``: functions of a State."""
-        X, p, q, i, (lam, mu) = self.point, self.p, self.q, self.index, prm
-        scalar = isinstance(lam, (int, float)) and isinstance(mu, (int, float))
-        img = _image if scalar else image  # arrays of dimensions: every term
-
-        def position(m):  # its condition is 1: nothing to intersect
-            P = m.P
-            (px, py), (qx, qy) = P[p], P[q]
-            P[X] = img(px, py, qx, qy, lam, mu)
-            m.cond[i] = 1.0
-
-        def velocity(m):
-            V = m.V
-            (px, py), (qx, qy) = V[p], V[q]
-            V[X] = img(px, py, qx, qy, lam, mu)
-
-        def acceleration(m):
-            A = m.A
-            (px, py), (qx, qy) = A[p], A[q]
-            A[X] = img(px, py, qx, qy, lam, mu)
-
-        return position, velocity, acceleration
+        """The step's three phases for dimensions ``prm``: functions of a State (a group
+        of one, see ``bind_group``)."""
+        return Carried.bind_group((self,), (prm,))
 
     @property
     def group_key(self):
         return (self.p, self.q)
 
     @staticmethod
+    def _group(steps, prms):
+        """What the phases of points carried by the same two points share: those points
+        ``p, q``, each point's (name, step index, lam, mu), and the image formula (zero
+        terms skipped for floats, every term for arrays of dimensions)."""
+        items = tuple((st.point, st.index, prm[0], prm[1]) for st, prm in zip(steps, prms))
+        scalar = all(isinstance(v, (int, float)) for it in items for v in it[2:])
+        return steps[0].p, steps[0].q, items, (_image if scalar else image)
+
+    @staticmethod
     def bind_group(steps, prms):
         """The phases of several points carried by the same two points (E, F, G on BC),
         in one call each: the same image formula."""
-        p, q = steps[0].p, steps[0].q
-        items = tuple((st.point, st.index, prm[0], prm[1]) for st, prm in zip(steps, prms))
-        scalar = all(isinstance(v, (int, float)) for it in items for v in it[2:])
-        img = _image if scalar else image
+        p, q, items, img = Carried._group(steps, prms)
 
         def position(m):
             P, cond = m.P, m.cond
@@ -177,10 +164,7 @@ class Carried(Step):
     @staticmethod
     def bind_group_instant(steps, prms):
         """The three phases of ``bind_group`` in a row, for one instant."""
-        p, q = steps[0].p, steps[0].q
-        items = tuple((st.point, st.index, prm[0], prm[1]) for st, prm in zip(steps, prms))
-        scalar = all(isinstance(v, (int, float)) for it in items for v in it[2:])
-        img = _image if scalar else image
+        p, q, items, img = Carried._group(steps, prms)
 
         def instant(m):
             P = m.P
