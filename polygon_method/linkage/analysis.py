@@ -15,7 +15,7 @@ from ..compiler import compile_plan
 from ..scene import Scene
 from ..solution import solve
 from ..tracking import TWO_PI
-from .cycle import _Cycle
+from .cycle import _Cycle, stands_still
 from .engine import _engine_lines
 from .shapes import (FourBar, Grashof, _Output, _output_of, slotted_of, four_bar_of,
                      grashof, slider_crank_of)
@@ -325,10 +325,9 @@ def _output_motion(cyc: _Cycle, out: _Output, scene, fb, sk, slot):
         all_v = out.value(cyc.fr)[placed]
         if vals and len(all_v):
             omin, omax = min(vals + [float(all_v.min())]), max(vals + [float(all_v.max())])
-            size = max(lk.length for lk in scene.links)
-            if omax - omin <= 1e-9 * size:  # rounding about a standstill, not a stroke
+            if stands_still(omax - omin, scene):  # rounding about a standstill, no stroke
                 mid = 0.5 * (omin + omax)
-                omin = omax = 0.0 if abs(mid) <= 1e-9 * size else mid
+                omin = omax = 0.0 if stands_still(abs(mid), scene) else mid
                 lines.append(f"{out.label}: stands still at {_fmt_out(out, omin, scene)}: "
                              "no stroke")
             else:

@@ -10,6 +10,16 @@ from ..tracking import TWO_PI, Sweeper, degrees_fn, merge, run_arrays, valid_mas
 from .shapes import _GRID
 
 
+#: a range of positions narrower than this fraction of the longest link is rounding about a
+#: standstill, not a stroke
+STANDSTILL = 1e-9
+
+
+def stands_still(span, scene) -> bool:
+    """Whether a point whose positions span ``span`` (m) over the cycle stands still."""
+    return span <= STANDSTILL * max(lk.length for lk in scene.links)
+
+
 # --------------------------------------------------------------------------- over the cycle
 
 

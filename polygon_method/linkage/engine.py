@@ -8,7 +8,7 @@ import numpy as np
 
 from ..scene import Scene
 from ..tracking import TWO_PI
-from .cycle import _Cycle
+from .cycle import _Cycle, stands_still
 from .shapes import SliderCrank, slider_crank_of
 
 
@@ -30,7 +30,7 @@ def _engine_lines(cyc: _Cycle, sk: SliderCrank, scene) -> list:
     (ox, oy) = scene.ground[sk.o]
     px, py = cyc.fr.P[sk.b]  # the stroke over the sampled cycle
     along = np.broadcast_to((px - ox) * d[0] + (py - oy) * d[1], cyc.grid.shape)[~cyc.bad]
-    if not len(along) or float(along.max() - along.min()) <= 1e-9 * r:
+    if not len(along) or stands_still(float(along.max() - along.min()), scene):
         return [f"in-line slider crank: slider {sk.b} stands still on this branch (it stays "
                 f"at the crank centre {sk.o}, the rod being as long as the crank): the "
                 "approximate formulas do not apply"]
