@@ -360,7 +360,8 @@ class SliderDyad(Step):
                 f"they meet at {lab(X)}")
         found = (Vector(c1.end, A[X], f"t{X}{B}", "tangential", f"tangential of {X}{B}",
                         f"alpha_{self.link} x {B}{X}"),
-                 Vector(through, A[X], "s", "sliding", f"as_{X}", "sliding acceleration"),
+                 Vector(through, A[X], f"{tl}{lab(X)}" if self.path is not None else "s",
+                        "sliding", f"as_{X}", "sliding acceleration"),
                  relative(sol, X, B, A, ph), absolute(sol, X, A, ph))
         return Construction(self.index, self.title, ph, lab(X), A[X], tuple(given), lines,
                             found, text, cond)
