@@ -33,7 +33,7 @@ import dataclasses
 import math
 
 from ..constructions import acceleration_constructions, velocity_constructions
-from ..derived import input_torque, rubbing_at
+from ..derived import input_torque, largest, rubbing_at
 from ..kinematics import evaluate
 from ..scales import diagram_scales
 
@@ -172,8 +172,7 @@ class HandDrawing:
         if kind == "rub":  # |w1 -/+ w2| r with the drawn omegas (the largest pair)
             pin = next(p for p in sol.plan.pins if p[0] == names[0])
             r = sol.plan.dims.radii[names[0]]
-            vals = np.max(np.broadcast_arrays(*(np.asarray(v, dtype=float)
-                                                for v in rubbing_at(pin, m.W, r))), axis=0)
+            vals = np.asarray(largest(rubbing_at(pin, m.W, r)), dtype=float)
             rub = sol.rubbing[names[0]]
             if not rub.pairs:
                 return None, None
