@@ -21,57 +21,15 @@ from importlib.resources import files
 
 from ..numbers import fmt, sense
 from ..steptable import steps_blocks
+from ..words import given
 from .data import page_data
 from .frames import Frames, need_frames
 
-__all__ = ["page_html", "scene_words", "blocks_html", "check_html"]
+__all__ = ["page_html", "blocks_html", "check_html"]
 
 
 def _asset(name: str) -> str:
     return files(__package__).joinpath(name).read_text(encoding="utf-8")
-
-
-def _len(sc, metres: float) -> str:
-    return f"{fmt(metres / sc.length_unit)} {sc.units}"
-
-
-def scene_words(sc) -> list:
-    """The scene's data as a textbook states it, one sentence a line."""
-    out = []
-    if sc.ground:
-        out.append("Fixed points: " + ", ".join(
-            f"{p} at ({fmt(x / sc.length_unit)}, {fmt(y / sc.length_unit)}) {sc.units}"
-            for p, (x, y) in sc.ground.items()) + ".")
-    out.append("Links: " + ", ".join(f"{lk.key} = {_len(sc, lk.length)}" for lk in sc.links)
-               + ".")
-    for cp in sc.points:
-        out.append(f"Point {cp.name} on link {cp.link}: {cp.how}.")
-    for s in sc.sliders:
-        if hasattr(s, "guide"):
-            out.append(f"A block at {s.point} slides along link {s.guide}.")
-        else:
-            out.append(f"Slider {s.point} moves on a fixed {s.label} path.")
-    inp = sc.input
-    words = (f"The crank {inp.crank} turns about {inp.pivot}; at the instant shown it makes "
-             f"{fmt(math.degrees(inp.angle) % 360)}° with the x axis (counter-clockwise), "
-             f"turning at {inp.speed_text}")
-    if "rad/s" not in inp.speed_text:
-        words += f" ({fmt(abs(inp.omega))} rad/s {sense(inp.omega)})"
-    if inp.alpha:
-        words += f", with an angular acceleration of {fmt(abs(inp.alpha))} rad/s² " \
-                 f"{sense(inp.alpha)}"
-    out.append(words + ".")
-    for pin in sc.pins:
-        out.append(f"Pin at {pin.point}: {pin.given} {_len(sc, pin.radius * (2 if pin.given == 'diameter' else 1))}.")
-    for ld in sc.loads:
-        if ld.force is not None:
-            fx, fy = ld.force
-            out.append(f"A force of {fmt(math.hypot(fx, fy))} N acts at {ld.target} at "
-                       f"{fmt(math.degrees(math.atan2(fy, fx)) % 360)}°.")
-        elif ld.torque is not None:
-            out.append(f"A torque of {fmt(abs(ld.torque))} N m {sense(ld.torque)} acts on "
-                       f"link {ld.target}.")
-    return out
 
 
 def blocks_html(blocks) -> str:
@@ -167,7 +125,7 @@ def page_html(fr: Frames, *, verdicts=None, answers_title: str = "") -> str:
 <h1>{escape(title)}</h1>
 {f'<p class="source">{escape(source)}</p>' if source else ''}
 <details open><summary><b>The problem</b></summary>
-<ul>{''.join(f'<li>{escape(w)}</li>' for w in scene_words(sc))}</ul>
+<ul>{''.join(f'<li>{escape(w)}</li>' for w in given(sc))}</ul>
 </details>
 <div class="controls">
 <button id="play" type="button">▶ play</button>

@@ -8,7 +8,7 @@ import csv
 import io
 
 from ..numbers import fmt, sense
-from ..scene import Scene, scene_table
+from ..words import given
 
 
 def answer(sol, q) -> float:
@@ -81,62 +81,11 @@ def _question(q) -> str:
     return f"{what} (`{key}`)"
 
 
-def _given(sc: Scene, raw: dict) -> list:
-    u = sc.units
-    out = []
-    g = raw.get("ground", {})
-    out.append("fixed pivots: " + ", ".join(f"{p} at ({_n(x)}, {_n(y)}) {u}"
-                                           for p, (x, y) in g.items()))
-    out.append("links: " + ", ".join(f"{k} = {_q(v, u)}" for k, v in raw["links"].items()))
-    for cp in sc.points:
-        out.append(f"point {cp.name}: {cp.how} ({u})")
-    for name, s in raw.get("sliders", {}).items():
-        if "along" in s:
-            out.append(f"block {name} slides along {s['along']}")
-        else:
-            thr = s.get("through")
-            where = (f" through ({_n(thr[0])}, {_n(thr[1])}) {u}" if isinstance(thr, list)
-                     else f" through {thr}" if thr else "")
-            out.append(f"slider {name} moves on a {s['path']} path{where}"
-                       if s["path"] in ("horizontal", "vertical")
-                       else f"slider {name} moves on a path at {s['path']}{where}")
-    for p, h in raw.get("assembly", {}).items():
-        out.append(f"{p} assembled {h} (of its two positions)" if isinstance(h, str)
-                   else f"{p} assembled near ({_n(h[0])}, {_n(h[1])}) {u} (of its two "
-                   "positions)")
-    inp = raw["input"]
-    line = (f"crank {inp['crank']} at {_q(inp['angle'], 'deg')} from +x (ccw), turning at "
-            f"{inp['speed']}")
-    if inp.get("acceleration") not in (None, 0):
-        line += f", angular acceleration {inp['acceleration']}"
-    out.append(line)
-    for p, spec in raw.get("pins", {}).items():
-        (k, v), = spec.items()
-        out.append(f"pin {p}: {k} {_q(v, u)}")
-    for p, spec in raw.get("loads", {}).items():
-        if "torque" in spec:
-            out.append(f"torque on {p}: {spec['torque']}")
-        elif isinstance(spec.get("force"), list):
-            out.append(f"force at {p}: ({spec['force'][0]}, {spec['force'][1]}) N")
-        else:
-            out.append(f"force at {p}: {_q(spec['force'], 'N')} at {_q(spec['direction'], 'deg')}")
-    return out
-
-
-def _n(x):
-    return f"{x:g}" if isinstance(x, (int, float)) else str(x)
-
-
-def _q(v, unit):
-    return v if isinstance(v, str) else f"{v:g} {unit}"
-
-
 def sheet_sections(vs) -> list:
     """(heading, lines) for each variant's problem."""
     out = []
     for v in vs.variants:
-        raw = scene_table(v.scene)
-        lines = ["Given:"] + [f"- {x}" for x in _given(v.scene, raw)]
+        lines = ["Given:"] + [f"- {x}" for x in given(v.scene)]
         lines += ["", "Find, by the velocity and acceleration polygons:"]
         lines += [f"- {_question(q)}" for q in vs.questions]
         lines += ["", f"Write your answers in a file with `variant = \"{v.id}\"` and an "

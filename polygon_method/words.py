@@ -1,0 +1,87 @@
+"""The problem in words, as a textbook states it: one sentence a line, made from the scene's
+records (lengths in the scene's own units, the crank's speed as the scene wrote it). The page
+shows them above its diagrams; a class's problem sheet lists each variant's under "Given".
+
+>>> import polygon_method as pm
+>>> for line in given(pm.load_scene("worked_problems/whitworth.toml")):
+...     print(line)
+Fixed points: O4 at (0, 0) mm, O2 at (0, 50) mm.
+Links: O2-A = 100 mm, O4-P = 150 mm, P-Q = 450 mm.
+A block at A slides along link O4-P.
+Slider Q moves on a fixed horizontal path through (0, 250) mm.
+Of its two positions, P is the one near (98, 113) mm.
+Of its two positions, Q is the one to the right.
+The crank O2-A turns about O2; at the instant shown it makes 30° with the x axis (counter-clockwise), turning at 60 rpm cw (6.283 rad/s cw).
+"""
+
+from __future__ import annotations
+
+import math
+
+from .numbers import fmt, sense
+
+__all__ = ["given"]
+
+
+def given(sc) -> list:
+    """The scene's data as a textbook states it, one sentence a line."""
+    out = []
+    if sc.ground:
+        out.append("Fixed points: " + ", ".join(f"{p} at {_at(sc, xy)}"
+                                                for p, xy in sc.ground.items()) + ".")
+    out.append("Links: " + ", ".join(f"{lk.key} = {_len(sc, lk.length)}" for lk in sc.links)
+               + ".")
+    for cp in sc.points:
+        out.append(f"Point {cp.name}: {cp.how} ({sc.units}).")  # "on BC, 40 from B"
+    for s in sc.sliders:
+        if hasattr(s, "guide"):  # a block on a moving link (a scene record, not a step)
+            out.append(f"A block at {s.point} slides along link {s.guide}.")
+        else:
+            path = (f"{s.label} path" if s.label in ("horizontal", "vertical")
+                    else f"path {s.label}")  # "at 30 deg"
+            out.append(f"Slider {s.point} moves on a fixed {path} through "
+                       f"{_at(sc, s.through)}.")
+    for p, hint in sc.assembly.items():
+        where = (_SIDE.get(hint, hint) if isinstance(hint, str)
+                 else f"near {_at(sc, hint)}")
+        out.append(f"Of its two positions, {p} is the one {where}.")
+    inp = sc.input
+    words = (f"The crank {inp.crank} turns about {inp.pivot}; at the instant shown it makes "
+             f"{fmt(math.degrees(inp.angle) % 360)}° with the x axis (counter-clockwise), "
+             f"turning at {inp.speed_text}")
+    if "rad/s" not in inp.speed_text:
+        words += f" ({fmt(abs(inp.omega))} rad/s {sense(inp.omega)})"
+    if inp.alpha:
+        words += (f", with an angular acceleration of {fmt(abs(inp.alpha))} rad/s² "
+                  f"{sense(inp.alpha)}")
+    out.append(words + ".")
+    for pin in sc.pins:
+        size = pin.radius * (2 if pin.given == "diameter" else 1)
+        out.append(f"Pin at {pin.point}: {pin.given} {_len(sc, size)}.")
+    for ld in sc.loads:
+        if ld.force is not None:
+            fx, fy = ld.force
+            out.append(f"A force of {fmt(math.hypot(fx, fy))} N acts at {ld.target} at "
+                       f"{fmt(math.degrees(math.atan2(fy, fx)) % 360)}°.")
+        elif ld.torque is not None:
+            out.append(f"A torque of {fmt(abs(ld.torque))} N m {sense(ld.torque)} acts on "
+                       f"link {ld.target}.")
+    return out
+
+
+_SIDE = {"left": "to the left", "right": "to the right"}
+
+
+def _len(sc, metres: float) -> str:
+    return f"{_given(metres / sc.length_unit)} {sc.units}"
+
+
+def _at(sc, xy) -> str:
+    x, y = xy
+    return f"({_given(x / sc.length_unit)}, {_given(y / sc.length_unit)}) {sc.units}"
+
+
+def _given(x: float) -> str:
+    """A datum as the scene gave it (ten significant figures: no rounding of the data, and
+    no trace of the conversion to SI and back)."""
+    return f"{x:.10g}"

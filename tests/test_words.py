@@ -1,0 +1,88 @@
+"""The problem in words (page and problem sheet): every datum a student needs to solve the
+problem by hand is stated, in the scene's own units, for every worked problem."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+
+import polygon_method as pm
+from polygon_method.numbers import fmt
+
+
+def g(x):  # a datum, unrounded
+    return f"{x:.10g}"
+from polygon_method.words import given
+
+SCENES = sorted((Path(__file__).parent.parent / "worked_problems").glob("*.toml"))
+
+
+@pytest.mark.parametrize("path", SCENES, ids=lambda p: p.stem)
+def test_every_datum_is_stated(path):
+    sc = pm.load_scene(path)
+    text = "\n".join(given(sc))
+    u = sc.length_unit
+    for lk in sc.links:
+        assert f"{lk.key} = {g(lk.length / u)} {sc.units}" in text
+    for p, (x, y) in sc.ground.items():
+        assert f"{p} at ({g(x / u)}, {g(y / u)}) {sc.units}" in text
+    for s in sc.sliders:
+        if hasattr(s, "through"):
+            tx, ty = s.through
+            assert f"Slider {s.point} moves on a fixed" in text
+            assert f"through ({g(tx / u)}, {g(ty / u)}) {sc.units}" in text
+        else:
+            assert f"A block at {s.point} slides along link {s.guide}" in text
+    for p in sc.assembly:
+        assert f"Of its two positions, {p} is the one " in text
+    for cp in sc.points:
+        assert f"Point {cp.name}: on {cp.link}, " in text
+    inp = sc.input
+    assert f"makes {fmt(math.degrees(inp.angle) % 360)}°" in text
+    assert inp.speed_text in text
+    for pin in sc.pins:
+        assert f"Pin at {pin.point}" in text
+    assert len(given(sc)) == len(set(given(sc)))  # nothing said twice
+
+
+def test_data_are_not_rounded():
+    sc = pm.parse_scene("""
+[ground]
+A = [0, 0]
+D = [100.123456, 0]
+[links]
+AB = 40.0625
+BC = 123.4567
+CD = 80
+[input]
+crank = "AB"
+angle = 120
+speed = "20 rad/s ccw"
+""")
+    text = "\n".join(given(sc))
+    assert "D at (100.123456, 0) mm" in text
+    assert "AB = 40.0625 mm, BC = 123.4567 mm, CD = 80 mm" in text
+
+
+def test_a_path_at_an_angle_and_an_acceleration_are_said():
+    sc = pm.parse_scene("""
+[ground]
+O = [0, 0]
+[links]
+OA = 50
+AB = 200
+[sliders]
+B = { path = "30 deg", through = [0, -20] }
+[input]
+crank = "OA"
+angle = 45
+speed = "300 rpm ccw"
+acceleration = "5 rad/s^2 cw"
+""")
+    lines = given(sc)
+    assert "Slider B moves on a fixed path at 30 deg through (0, -20) mm." in lines
+    crank = [x for x in lines if x.startswith("The crank")][0]
+    assert "300 rpm ccw (31.42 rad/s ccw)" in crank
+    assert "angular acceleration of 5 rad/s² cw" in crank
