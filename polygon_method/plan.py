@@ -238,14 +238,16 @@ class Plan:
             raise exc.located(self.scene.file)
         return m
 
-    def instant(self, ctx: Context) -> State:
+    def instant(self, ctx: Context, m=None) -> State:
         """``run(ctx)`` for one instant (floats, ``ctx.array`` false): all three phases at
         the plan's own dimensions, each step's position, check, velocity and acceleration in
         a row (``bind_instant``), the same formulas with fewer calls. A step that cannot
-        assemble, or is singular, raises before any later step is placed."""
+        assemble, or is singular, raises before any later step is placed. ``m``: the record
+        to fill (a State's slots; a new State when None)."""
         zero = self._zero
         fixed = self.fixed_links
-        m = _new(State)  # State(...) filled in here: one Python call fewer per solve
+        if m is None:
+            m = _new(State)  # State(...) filled in here: one Python call fewer per solve
         m.P = self.ground.copy()
         m.V = zero.copy()
         m.A = zero.copy()

@@ -40,13 +40,14 @@ class Solution(Motion):
     """The :class:`~polygon_method.kinematics.Motion` at the scene's instant (floats, SI),
     with what a textbook asks of it: rubbing, torque, warnings, the JSON contract."""
 
-    __slots__ = ("_cache",)
+    __slots__ = ("_cache", "ctx", "array")  # ctx, array: what the plan's steps read
 
     def __init__(self, scene, plan, P, V, A, W, Al, S, cond, theta=None):
         self.scene, self.plan, self.theta = scene, plan, theta
         self.P, self.V, self.A, self.W, self.Al, self.S = P, V, A, W, Al, S
         self.cond, self.bad = cond, None
         self._cache = {}
+        self.ctx, self.array = None, False  # solve: the instant the plan filled it at
 
     def _get(self, name, make):
         c = self._cache
@@ -200,18 +201,11 @@ def solve(scene: Scene) -> Solution:
     """
     plan = compile_plan(scene)
     inp = scene.input
-    m = plan.instant(Context(inp.angle, inp.omega, inp.alpha))  # = plan.run(ctx), one instant
-    sol = _new(Solution)  # Solution(scene, plan, m.P, ...) filled in here: one call fewer
+    sol = _new(Solution)  # Solution(scene, plan, ...): filled in here, by the plan too
+    plan.instant(Context(inp.angle, inp.omega, inp.alpha), sol)  # = plan.run(ctx), one instant
     sol.scene = scene
     sol.plan = plan
     sol.theta = inp.angle
-    sol.P = m.P
-    sol.V = m.V
-    sol.A = m.A
-    sol.W = m.W
-    sol.Al = m.Al
-    sol.S = m.S
-    sol.cond = m.cond
     sol.bad = None
     sol._cache = {}
     return sol

@@ -289,6 +289,10 @@ def test_records_filled_in_place_have_every_field_their_constructor_sets():
             assert getattr(m, name) == getattr(made, name), name
     other = Solution(sc, plan, m.P, m.V, m.A, m.W, m.Al, m.S, m.cond, inp.angle)
     for name in _slots(Solution):
+        if name == "ctx":  # the instant solve filled it at; None when made by hand
+            assert (sol.ctx.theta, sol.ctx.omega, sol.ctx.alpha) == \
+                (inp.angle, inp.omega, inp.alpha) and other.ctx is None
+            continue
         assert getattr(sol, name) == getattr(other, name), name
     assert set(sol.rubbing) == {"B", "C"}
     for rec in pin_records(plan.pins, m.W, plan.dims.radii).values():

@@ -107,14 +107,15 @@ class Crank(Step):
     def bind_instant(self, prm):
         """The three phases in a row for one instant (the same formulas, see ``bind``)."""
         O, T, link, i, r = self.pivot, self.tip, self.link, self.index, prm[0]
+        cos, sin = math.cos, math.sin  # one instant: floats
 
         def instant(m):
             ctx = m.ctx
             P = m.P
             ox, oy = P[O]
             theta = ctx.theta
-            tx = ox + r * ctx.cos(theta)
-            ty = oy + r * ctx.sin(theta)
+            tx = ox + r * cos(theta)
+            ty = oy + r * sin(theta)
             P[T] = (tx, ty)
             m.cond[i] = 1.0
             omega = ctx.omega
