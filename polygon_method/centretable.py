@@ -29,6 +29,7 @@ from __future__ import annotations
 import math
 
 from .centres import Centre, Centres
+from .errors import TOL
 from .numbers import fmt, fmt_angular
 
 __all__ = ["centres_text"]
@@ -39,7 +40,11 @@ def _where(sol, c: Centre) -> str:
     if c.point is None:
         deg = math.degrees(math.atan2(c.direction[1], c.direction[0])) % 180.0
         return f"at infinity, direction {fmt(deg, 4)} deg"
-    return f"({fmt(c.point[0] / u, 6)}, {fmt(c.point[1] / u, 6)}) {name}"
+    # rounding noise (a coordinate below TOL.negligible of the mechanism's size) is 0
+    size = max([lk.length for lk in sol.scene.links]
+               + [math.hypot(*p) for p in sol.P.values()])
+    x, y = (0.0 if abs(v) <= TOL.negligible * size else v for v in c.point)
+    return f"({fmt(x / u, 6)}, {fmt(y / u, 6)}) {name}"
 
 
 def centres_text(ic: Centres) -> str:

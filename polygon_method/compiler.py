@@ -253,7 +253,8 @@ class _Compiler:
             default = step.default_hint(self.P)
             sigma = self.pick(name, default, plus, minus, step, default=True)
             if math.dist(plus, minus) > 1e-9 * step.reach():
-                side = default if isinstance(default, str) else "farther along the guide"
+                side = ("on the side of the block" if default == "block side"
+                        else default if isinstance(default, str) else "farther along the guide")
                 self.notes.append(f"{name}: of its two positions the one {side} was taken "
                                   f"(default; set [assembly] {name} to choose)")
         else:

@@ -28,6 +28,12 @@ def _vec(x, y, digits=4, scale=0.0):
     return f"{m:.{digits}g} at {direction_deg(x, y):.1f} deg"
 
 
+def _coord(x: float) -> str:
+    """A coordinate to 4 decimals, never ``-0.0000`` (rounding noise about zero)."""
+    s = f"{x:.4f}"
+    return s[1:] if s.startswith("-") and float(s) == 0 else s
+
+
 def solution_text(sol: Solution) -> str:
     sc = sol.scene
     u = sc.length_unit
@@ -44,7 +50,7 @@ def solution_text(sol: Solution) -> str:
                  f"{'acceleration (m/s^2)':<24}")
     for p in sc.point_names:
         x, y = sol.P[p]
-        pos = f"({x / u:.4f}, {y / u:.4f})"
+        pos = f"({_coord(x / u)}, {_coord(y / u)})"
         lines.append(f"{p:<6} {pos:<24} {_vec(*sol.V[p], scale=sol.scales['v']):<24} "
                      f"{_vec(*sol.A[p], scale=sol.scales['a']):<24}")
     lines.append("")

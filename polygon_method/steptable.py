@@ -41,7 +41,7 @@ from .numbers import fixed as _fixed, fmt, sense_word
 from .constructions import acceleration_constructions, velocity_constructions
 from .scales import DRAWING_PRECISION_CM, diagram_scales, extent
 from .scene import FixedPath, GuideSlider, split_name
-from .solution import Solution
+from .solution import Solution, tidied
 
 __all__ = ["steps_text", "steps_blocks", "read_off", "fmt", "sense_word"]
 
@@ -328,6 +328,11 @@ def _sliding_items(sol):
     out = []
     for s in sol.scene.sliders:
         vs = sol.S[s.point][0]
+        if vs == 0:  # (noise is 0 here: the solution is tidied)
+            guide = f"the {s.label} path" if isinstance(s, FixedPath) else s.guide
+            out.append(f"vs_{s.point} = 0 m/s: {s.point} does not slide along {guide} at "
+                       "this instant")
+            continue
         if isinstance(s, FixedPath):
             along = f"along the {s.label} path ({'+' if vs >= 0 else '-'} direction)"
         else:
@@ -508,7 +513,9 @@ def _acceleration(doc, sol, ascale):
 
 
 def steps_blocks(sol: Solution) -> _Doc:
-    """The hand solution as a document (headings, paragraphs, lists, tables)."""
+    """The hand solution as a document (headings, paragraphs, lists, tables). Rounding
+    noise is written as 0 (:func:`~polygon_method.solution.tidied`)."""
+    sol = tidied(sol)
     sc = sol.scene
     space, vscale, ascale = diagram_scales(sol)
     doc = _Doc()
