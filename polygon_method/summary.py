@@ -10,6 +10,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .errors import TOL
 from .kinematics import Motion
 from .scene import FixedPath, Scene
 from .sweeps import (SweepResult, rubbing_arrays, select, torque_array, angles_ok,
@@ -103,8 +104,12 @@ class Summary:
                     out.append(f"{e.name:<{w}}  {e.unit:<7} {e.maximum:>12.6g} "
                                f"{'(constant)':>10}")
                     continue
-                mx = "+unbounded" if e.max_unbounded else f"{e.maximum:.6g}"
-                mn = "-unbounded" if e.min_unbounded else f"{e.minimum:.6g}"
+                # rounding noise about a true zero (a speed at a dead centre) is 0
+                tiny = TOL.negligible * max(abs(e.maximum), abs(e.minimum))
+                mx = "+unbounded" if e.max_unbounded else \
+                    f"{0.0 if abs(e.maximum) <= tiny else e.maximum:.6g}"
+                mn = "-unbounded" if e.min_unbounded else \
+                    f"{0.0 if abs(e.minimum) <= tiny else e.minimum:.6g}"
                 out.append(f"{e.name:<{w}}  {e.unit:<7} {mx:>12} "
                            f"{fmt_deg(e.at_max, 3):>10} {mn:>12} "
                            f"{fmt_deg(e.at_min, 3):>10}"

@@ -233,3 +233,23 @@ def test_default_slotted_end_note_reads_as_english():
     _, sol, _ = solved(HERE / "oscillating_cylinder.toml")
     assert ("C: of its two positions the one on the side of the block was taken"
             in " ".join(sol.notes))
+
+
+def test_sweep_summary_writes_a_true_zero_as_zero():
+    """The rocker's end C stands still at the ends of its swing: the summary's minimum of
+    v_C is 0 (it printed 1.18743e-13)."""
+    from polygon_method.summary import summarize
+    scene = load_scene(HERE / "block_on_coupler.toml")
+    text = summarize(scene, [math.radians(5.0 * k) for k in range(72)]).text()
+    row = next(ln for ln in text.splitlines() if ln.startswith("v_C "))
+    assert row.split()[4] == "0", row
+    assert not NOISE.search(text), NOISE.search(text).group(0)
+
+
+def test_engine_formulas_write_a_true_zero_as_zero():
+    """At 90 deg from i.d.c. the rod does not turn: exact and formula are 0 (the exact
+    printed 6.57668e-15, the formula 2.13741e-15)."""
+    from polygon_method.linkage import analyse
+    text = analyse(load_scene(HERE / "engine_inline_270.toml")).text()
+    row = next(ln for ln in text.splitlines() if "rod CP: |omega|" in ln)
+    assert row.split()[3:6] == ["0", "0", "0"], row
