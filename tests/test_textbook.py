@@ -253,3 +253,18 @@ def test_engine_formulas_write_a_true_zero_as_zero():
     text = analyse(load_scene(HERE / "engine_inline_270.toml")).text()
     row = next(ln for ln in text.splitlines() if "rod CP: |omega|" in ln)
     assert row.split()[3:6] == ["0", "0", "0"], row
+
+
+def test_page_data_writes_rounding_noise_as_zero():
+    """The page's values at the scene's angle (slotted lever at 270 deg): omega of the ram's
+    rod and the block's sliding velocity are 0, not 1.6e-15 rad/s ccw, written out by the
+    page as 0.0000000000000016."""
+    from polygon_method.page.data import page_data
+    from polygon_method.page.frames import frames
+    d = page_data(frames(load_scene(HERE / "slotted_lever_270.toml"), 12))
+    k = d["start"]
+    assert d["theta"][k] == 270.0
+    assert d["W"]["P-R"][k] == 0.0 and d["S"]["A"][0][k] == 0.0
+    assert d["S"]["A"][2][k] == 0.0 and d["S"]["A"][3][k] == 0.0
+    assert d["P"]["A"][2 * k] == 0.0  # A on the y axis
+    assert d["W"]["P-R"][k + 1] != 0.0  # only the noise: the next frame's omega is kept
