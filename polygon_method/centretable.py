@@ -39,6 +39,8 @@ def _where(sol, c: Centre) -> str:
     u, name = sol.scene.length_unit, sol.scene.units
     if c.point is None:
         deg = math.degrees(math.atan2(c.direction[1], c.direction[0])) % 180.0
+        if min(deg, 180.0 - deg) <= 1e-9:  # rounding noise about the x axis
+            deg = 0.0
         return f"at infinity, direction {fmt(deg, 4)} deg"
     # rounding noise (a coordinate below TOL.negligible of the mechanism's size) is 0
     size = max([lk.length for lk in sol.scene.links]
@@ -71,6 +73,11 @@ def centres_text(ic: Centres) -> str:
             (a, b), (p, q) = c.lines
             cond = "" if c.condition >= 0.999 or c.point is None else \
                 f"; lines cross at {fmt(math.degrees(math.asin(min(c.condition, 1.0))), 3)} deg"
+            if "coincide" in c.how:  # located by the velocities on the common line
+                same = "" if (a, b) == (p, q) else f" = {p.label}-{q.label}: the same line"
+                out.append(f"  {c.label:<5}{_where(sol, c):<40} on {a.label}-{b.label}{same}; "
+                           f"on it where omega_{c.i} and omega_{c.j} give one velocity")
+                continue
             out.append(f"  {c.label:<5}{_where(sol, c):<40} on {a.label}-{b.label} and "
                        f"{p.label}-{q.label}{cond}")
     out.append("")

@@ -268,3 +268,70 @@ def test_page_data_writes_rounding_noise_as_zero():
     assert d["S"]["A"][2][k] == 0.0 and d["S"]["A"][3][k] == 0.0
     assert d["P"]["A"][2 * k] == 0.0  # A on the y axis
     assert d["W"]["P-R"][k + 1] != 0.0  # only the noise: the next frame's omega is kept
+
+
+def _body_field(sol, name):
+    """The velocity field of a body, from the polygon solution: (omega, point, velocity)."""
+    sc = sol.scene
+    if name == "ground":
+        return 0.0, (0.0, 0.0), (0.0, 0.0)
+    if name.startswith("block "):
+        x = name.split()[1]
+        s = next(s for s in sc.sliders if s.point == x)
+        w = sol.W[sc.link(s.guide).key] if isinstance(s, GuideSlider) else 0.0
+        return w, sol.P[x], sol.V[x]
+    lk = sc.link(name)
+    return sol.W[lk.key], sol.P[lk.p], sol.V[lk.p]
+
+
+def _v_at(field, X):
+    w, (px, py), (vx, vy) = field
+    return (vx - w * (X[1] - py), vy + w * (X[0] - px))
+
+
+def _at(path, angle):
+    text = Path(path).read_text(encoding="utf-8")
+    return re.sub(r"(?m)^angle = .*$", f"angle = {angle}", text)
+
+
+CENTRE_CASES = [pytest.param(f.read_text(encoding="utf-8"), id=f.stem) for f in FILES] + [
+    pytest.param(_at(HERE / name, a), id=f"{Path(name).stem}-{a}")
+    for name in ("slotted_lever_270.toml", "shaper_offset_ram.toml") for a in (90, 270)]
+
+
+@pytest.mark.parametrize("text", CENTRE_CASES)
+def test_every_centre_is_where_the_two_bodies_move_alike(text):
+    """Each centre I_ij: the point where bodies i and j have one velocity (by the polygon's
+    omegas and velocities); at infinity, the two bodies' relative motion is a translation
+    perpendicular to its direction. A crank and slotted lever at mid-stroke (crank at 90 or
+    270 deg: every Kennedy line through the known centres is the one line O1-O2) used to be
+    refused: "Kennedy's theorem cannot locate I25, I26"."""
+    from polygon_method import parse_scene
+    sol = solve(parse_scene(text))
+    ic = locate(sol)
+    vmax = max(math.hypot(*v) for v in sol.V.values())
+    wmax = max(abs(w) for w in sol.W.values())
+    assert len(ic.centres) == ic.n * (ic.n - 1) // 2
+    for (i, j), c in ic.centres.items():
+        fi, fj = (_body_field(sol, ic.bodies[k - 1]) for k in (i, j))
+        if c.point is None:
+            assert abs(fi[0] - fj[0]) <= 1e-9 * wmax, c.label
+            d = [a - b for a, b in zip(_v_at(fi, (0, 0)), _v_at(fj, (0, 0)))]
+            assert abs(d[0] * c.direction[0] + d[1] * c.direction[1]) <= 1e-9 * vmax, c.label
+            continue
+        vi, vj = _v_at(fi, c.point), _v_at(fj, c.point)
+        assert math.dist(vi, vj) <= 1e-9 * vmax, (c.label, vi, vj)
+    for k in range(2, ic.n + 1):  # and the omegas by the ratio theorem are the polygon's
+        assert ic.omegas[k] == pytest.approx(_body_field(sol, ic.bodies[k - 1])[0],
+                                             rel=1e-9, abs=1e-9 * wmax)
+
+
+def test_centres_drawing_with_two_centres_at_one_pin():
+    """The centres' diagram of the slotted lever at mid-stroke: a Kennedy line through two
+    centres at one place (I23 = I24 at A) has no direction of its own; the drawing failed
+    with "OverflowError: cannot convert float infinity to integer"."""
+    from polygon_method.draw import render
+    sol = solve(load_scene(HERE / "slotted_lever_270.toml"))
+    data, _, _ = render(sol, "svg", "centres", None, "I")
+    svg = data.decode() if isinstance(data, bytes) else data
+    assert "I25" in svg and "nan" not in svg.lower()
