@@ -7,7 +7,7 @@ import math
 from .errorbound import SHOWN, shown_bounds
 from .errors import TOL
 from .numbers import fmt_angular
-from .solution import Solution
+from .solution import Solution, tidied
 
 __all__ = ["solution_text", "direction_deg"]
 
@@ -82,7 +82,7 @@ def solution_text(sol: Solution) -> str:
                          + (f"   ({detail})" if len(r.pairs) > 1 else ""))
     if sol.input_torque is not None:
         lines.append("")
-        t = sol.input_torque
+        t = tidied(sol).input_torque  # from the velocities without rounding noise
         lines.append(f"input torque on {inp.crank}: {fmt_angular(t, 'N m')} "
                      "(power balance, no friction or inertia)")
     lines.append("")

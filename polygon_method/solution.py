@@ -242,5 +242,14 @@ def tidied(sol: Solution) -> Solution:
     lim = tiny * k["a"]
     S = {n: (sol.shown(s[0], "v"), sol.shown(s[1], "a"))
          + tuple(0.0 if abs(c) <= lim else c for c in s[2:]) for n, s in sol.S.items()}
-    return Solution(sc, sol.plan, vec(sol.P, size), vec(sol.V, k["v"]), vec(sol.A, k["a"]),
-                    num(sol.W, "omega"), num(sol.Al, "alpha"), S, sol.cond, sol.theta)
+    out = Solution(sc, sol.plan, vec(sol.P, size), vec(sol.V, k["v"]), vec(sol.A, k["a"]),
+                   num(sol.W, "omega"), num(sol.Al, "alpha"), S, sol.cond, sol.theta)
+    t = out.input_torque
+    if t is not None:  # each load's power against |F| v or |T_L| omega; the torque against
+        sizes = [hypot(*ld.force) * k["v"] if ld.force is not None  # their sum over the
+                 else abs(ld.torque) * k["omega"] for ld in sc.loads]  # crank's omega
+        out._cache["power"] = [(what, 0.0 if abs(p) <= tiny * size else p)
+                               for (what, p), size in zip(out.power_terms, sizes)]
+        if abs(t) <= tiny * sum(sizes) / abs(sc.input.omega):
+            out._cache["torque"] = 0.0
+    return out

@@ -267,18 +267,20 @@ def _readoff_rows(sol, constructions, scale, unit):
     """(name, label, length cm, read value, exact value) of every vector a construction
     finds; the crank's own vector is set out, not read (its length is exact)."""
     rows, seen = [], set()
+    kind = "v" if unit == "m/s" else "a"
     for c in constructions:
         for v in c.found:
             name = _vector_name(v)
             if name in seen or _is_ground_relative(sol, v) or v.kind == "centripetal":
                 continue
             seen.add(name)
+            mag = sol.shown(v.magnitude, kind)  # a difference of equal images: 0
             if c.step == 0 and c.phase == "velocity":
-                cm, val = scale.cm(v.magnitude), v.magnitude
+                cm, val = scale.cm(mag), mag
             else:
-                cm, val = read_off(v.magnitude, scale)
+                cm, val = read_off(mag, scale)
             rows.append((name, v.label, f"{cm:.2f}", f"{_fixed(val)} {unit}",
-                         f"{fmt(v.magnitude)} {unit}"))
+                         f"{fmt(mag)} {unit}"))
     return rows
 
 

@@ -64,8 +64,10 @@ def worst_error(scene, sol, ref):
         scale = max(_norm(v) for v in ref[tab].values())
         errs += [(_err(tuple(got[n]), ref[tab][n], scale), f"{tab} {n}")
                  for n in scene.point_names]
-    for tab, got in (("omega", sol.W), ("alpha", sol.Al)):
-        scale = max(_norm(v) for v in ref[tab].values())
+    w = max(_norm(v) for v in ref["omega"].values())
+    for tab, got, scale in (("omega", sol.W, w),  # alpha's size: omega^2 as well (a
+                            ("alpha", sol.Al,     # parallelogram has every alpha 0)
+                             max(_norm(v) for v in ref["alpha"].values()) + w * w)):
         errs += [(_err(got[lk.key], ref[tab][lk.key], scale), f"{tab} {lk.key}")
                  for lk in scene.links]
     vs = max(_norm(v) for v in ref["velocities"].values())
@@ -335,3 +337,41 @@ def test_centres_drawing_with_two_centres_at_one_pin():
     data, _, _ = render(sol, "svg", "centres", None, "I")
     svg = data.decode() if isinstance(data, bytes) else data
     assert "I25" in svg and "nan" not in svg.lower()
+
+
+def test_a_load_that_takes_no_power_gives_no_torque():
+    """The coupling rod translates horizontally, its weight acts straight down: the input
+    torque is 0 (solve printed "6.51e-14 N m ccw", the step table "F . v = -1.154e-12 W"
+    and "5.511e-14 N m cw", the force "direction = 270" had an x component of -1.8e-13 N)."""
+    scene, sol, ref = solved(HERE / "coupling_rod_90.toml")
+    assert scene.loads[0].force == (0.0, -1000.0)
+    assert "input torque on AB: 0 N m " in solution_text(sol)
+    text = steps_text(sol)
+    assert "cos 90 deg = 0 W" in text and "= 0 N m" in text
+    assert not NOISE.search(text)
+    from polygon_method.page.data import page_data
+    from polygon_method.page.frames import frames
+    d = page_data(frames(scene, 12))
+    assert d["torque"][d["start"]] == 0.0 and d["torque"][d["start"] + 1] != 0.0
+
+
+def test_path_and_force_directions_are_exact_at_right_angles():
+    from polygon_method import parse_scene
+    sc = parse_scene("""
+[ground]
+O = [0, 0]
+[links]
+OA = 40
+AB = 150
+[sliders]
+B = { path = "180 deg" }
+[input]
+crank = "OA"
+angle = 30
+speed = "10 rad/s ccw"
+[loads]
+A = { force = "1 kN", direction = -90 }
+B = { force = "2 kN", direction = "180 deg" }
+""")
+    assert sc.sliders[0].u == (-1.0, 0.0)
+    assert [ld.force for ld in sc.loads] == [(0.0, -1000.0), (-2000.0, 0.0)]

@@ -48,6 +48,14 @@ def _noise_scales(res, moving, links, n) -> dict:
             "W": w, "Al": most([np.abs(b(res.Al[lk.key])) for lk in links]) + w * w}
 
 
+def _torque_scale(sc, k):
+    """Per frame, the size of the input torque's terms: sum |F| v + |T| omega, over the
+    crank's omega (what the torque's rounding noise is measured against)."""
+    forces = sum(float(np.hypot(*ld.force)) for ld in sc.loads if ld.force is not None)
+    torques = sum(abs(ld.torque) for ld in sc.loads if ld.torque is not None)
+    return (forces * k["V"] + torques * k["W"]) / abs(sc.input.omega)
+
+
 def _quiet(x, scale, n):
     """``x`` (one value per frame) with rounding noise, at most ``TOL.negligible`` of its
     frame's ``scale``, set to 0: the page writes 0, not 1.6e-15 rad/s ccw."""
@@ -118,7 +126,7 @@ def page_data(fr: Frames) -> dict:
         "S": {s.point: [round_sig(_quiet(res.S[s.point][j], k["V" if j == 0 else "A"], n))
                         for j in range(4)] for s in sc.sliders},
         "torque": None if res.input_torque is None else
-        round_sig(np.broadcast_to(res.input_torque, (n,))),
+        round_sig(_quiet(res.input_torque, _torque_scale(sc, k), n)),
         "sense": sense(sc.input.omega),
         "warnBelow": TOL.warn,
     }

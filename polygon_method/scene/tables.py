@@ -13,6 +13,18 @@ from .records import (ANSWER_KINDS, INPUT_KEYS, Answer, CarriedPoint, FixedPath,
                       Input, Load, Pin, split_name)
 
 
+
+def _unit_at(ang: float) -> tuple:
+    """(cos, sin) of a direction (rad), exact where it is a whole number of right angles
+    (a force "direction = 270" is straight down, not 1.8e-16 to the side; a path at
+    "180 deg" is horizontal)."""
+    q = ang / (math.pi / 2)
+    k = round(q)
+    if abs(q - k) <= 1e-12:
+        return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[k % 4]
+    return (math.cos(ang), math.sin(ang))
+
+
 def _suggest(word, choices) -> str:
     return did_you_mean(word, list(choices))
 
@@ -176,7 +188,7 @@ class _Tables:
                 through = ground[through]
             else:
                 through = self.coords(through, "sliders", name)
-            u = {0.0: (1.0, 0.0), math.pi / 2: (0.0, 1.0)}.get(ang, (math.cos(ang), math.sin(ang)))
+            u = _unit_at(ang)
             out.append(FixedPath(name, u, through, label))
         return out
 
@@ -285,7 +297,8 @@ class _Tables:
                                      "loads", name)
                 ang = self.qty(spec["direction"], "angle", "loads", name,
                                default_unit="deg").value
-                fx, fy = mag * math.cos(ang), mag * math.sin(ang)
+                ux, uy = _unit_at(ang)
+                fx, fy = mag * ux, mag * uy
             out.append(Load(name, force=(fx, fy)))
         return out
 
