@@ -33,7 +33,7 @@ import math
 import weakref
 from dataclasses import replace
 
-from .errors import AssemblyError, MobilityError, PolygonMethodError, SceneError
+from .errors import TOL, AssemblyError, MobilityError, PolygonMethodError, SceneError
 from .numbers import in_units
 from .plan import Bodies, Dims, Plan, _bodies_at
 from .scene import GuideSlider, Scene, key_line
@@ -298,7 +298,10 @@ class _Compiler:
         return 1.0 if d1 < d2 else -1.0
 
     def fmt(self, xy):
-        return f"[{in_units(xy[0], self.unit)}, {in_units(xy[1], self.unit)}]"
+        """A position in the scene's units; rounding noise about an axis written 0."""
+        size = max([lk.length for lk in self.scene.links] + [abs(c) for c in xy])
+        x, y = (0.0 if abs(c) <= TOL.negligible * size else c for c in xy)
+        return f"[{in_units(x, self.unit)}, {in_units(y, self.unit)}]"
 
     # ----- what is left over
     def finish(self):

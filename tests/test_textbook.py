@@ -375,3 +375,14 @@ B = { force = "2 kN", direction = "180 deg" }
 """)
     assert sc.sliders[0].u == (-1.0, 0.0)
     assert [ld.force for ld in sc.loads] == [(0.0, -1000.0), (-2000.0, 0.0)]
+
+
+def test_assembly_refusal_names_positions_without_noise():
+    """The Whitworth scene's rough position for P does not fit the crank at 90 deg (the
+    lever is vertical): the refusal printed P's positions as [5.08699e-15, 120]."""
+    from polygon_method import parse_scene
+    from polygon_method.errors import AssemblyError
+    with pytest.raises(AssemblyError) as exc:
+        solve(parse_scene(_at(HERE / "whitworth_180.toml", 90)))
+    assert "[0, 120]" in str(exc.value) and "[0, -120]" in str(exc.value)
+    assert not NOISE.search(str(exc.value))
