@@ -386,3 +386,20 @@ def test_assembly_refusal_names_positions_without_noise():
         solve(parse_scene(_at(HERE / "whitworth_180.toml", 90)))
     assert "[0, 120]" in str(exc.value) and "[0, -120]" in str(exc.value)
     assert not NOISE.search(str(exc.value))
+
+
+def test_variants_answer_key_writes_a_true_zero_as_zero():
+    """A variant at mid-stroke (crank at 270 deg): the key gave omega_P-R as "3.68e-15
+    rad/s ccw" and vs_A as "2.664e-16 m/s"."""
+    from polygon_method import parse_scene
+    from polygon_method.variants import generate
+    from polygon_method.variants.papers import answer_key_csv, answer_key_markdown
+    text = (HERE / "slotted_lever_270.toml").read_text(encoding="utf-8") + """
+[variants]
+angle = [270]
+"O2-A" = { from = 90, to = 120, step = 10 }
+"""
+    vs = generate(parse_scene(text), 3, 1)
+    md, csv = answer_key_markdown(vs), answer_key_csv(vs)
+    assert not NOISE.search(md) and not NOISE.search(csv), (md, csv)
+    assert all(v.solution.omega("P-R") == 0.0 for v in vs.variants)
