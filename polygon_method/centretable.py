@@ -35,6 +35,11 @@ from .numbers import fmt, fmt_angular
 __all__ = ["centres_text"]
 
 
+def _size(sol) -> float:
+    """The mechanism's size (m): its longest link or farthest point from the origin."""
+    return max([lk.length for lk in sol.scene.links] + [math.hypot(*p) for p in sol.P.values()])
+
+
 def _where(sol, c: Centre) -> str:
     u, name = sol.scene.length_unit, sol.scene.units
     if c.point is None:
@@ -43,8 +48,7 @@ def _where(sol, c: Centre) -> str:
             deg = 0.0
         return f"at infinity, direction {fmt(deg, 4)} deg"
     # rounding noise (a coordinate below TOL.negligible of the mechanism's size) is 0
-    size = max([lk.length for lk in sol.scene.links]
-               + [math.hypot(*p) for p in sol.P.values()])
+    size = _size(sol)
     x, y = (0.0 if abs(v) <= TOL.negligible * size else v for v in c.point)
     return f"({fmt(x / u, 6)}, {fmt(y / u, 6)}) {name}"
 
@@ -100,6 +104,7 @@ def centres_text(ic: Centres) -> str:
     out.append("")
     out.append("Velocities of the points (v = omega x distance from the centre with the "
                "ground):")
+    size = _size(sol)
     for p in sc.point_names:
         if p in sc.ground:
             continue
@@ -111,6 +116,8 @@ def centres_text(ic: Centres) -> str:
             out.append(f"  v_{p} = {fmt(v)} m/s (link {k} translates)")
             continue
         r = math.hypot(sol.P[p][0] - c.point[0], sol.P[p][1] - c.point[1])
+        if r <= TOL.negligible * size:  # the point is the centre (noise apart)
+            r = 0.0
         out.append(f"  v_{p} = omega_{k} x {p}-{c.label} = {fmt(abs(ic.omegas[k]))} x "
                    f"{fmt(r / sc.length_unit, 5)} {sc.units} = {fmt(v)} m/s")
     for w in ic.warnings:

@@ -72,7 +72,7 @@ def solution_text(sol: Solution) -> str:
     if sc.pins:
         lines.append("")
         lines.append("pin   radius (" + sc.units + ")  rubbing velocity (m/s)")
-        for name, r in sol.rubbing.items():
+        for name, r in tidied(sol).rubbing.items():  # two equal omegas rub at 0
             if not r.pairs:
                 lines.append(f"{name:<5} {r.radius / u:<12.6g} 0 (the pin joins only "
                              f"{', '.join(r.bodies) or 'nothing'})")

@@ -244,6 +244,10 @@ def tidied(sol: Solution) -> Solution:
          + tuple(0.0 if abs(c) <= lim else c for c in s[2:]) for n, s in sol.S.items()}
     out = Solution(sc, sol.plan, vec(sol.P, size), vec(sol.V, k["v"]), vec(sol.A, k["a"]),
                    num(sol.W, "omega"), num(sol.Al, "alpha"), S, sol.cond, sol.theta)
+    for rec in out.rubbing.values():  # |w1 - w2| r of two equal omegas: 0
+        lim = tiny * k["omega"] * rec.radius
+        rec.values = tuple(0.0 if v <= lim else v for v in rec.values)
+        rec.rubbing_velocity = max(rec.values, default=0.0)
     t = out.input_torque
     if t is not None:  # each load's power against |F| v or |T_L| omega; the torque against
         sizes = [hypot(*ld.force) * k["v"] if ld.force is not None  # their sum over the

@@ -403,3 +403,24 @@ angle = [270]
     md, csv = answer_key_markdown(vs), answer_key_csv(vs)
     assert not NOISE.search(md) and not NOISE.search(csv), (md, csv)
     assert all(v.solution.omega("P-R") == 0.0 for v in vs.variants)
+
+
+def test_pin_between_links_turning_alike_rubs_at_zero():
+    """Crank along the line of centres (180 deg): |O4A| is stationary, so the transmission
+    angle is too and the coupler and the rocker turn alike: pin B does not rub. solve
+    printed 1.421e-17 m/s, the steps "|6.818 - 6.818| x 0.008 = 1.421e-17 m/s"."""
+    from polygon_method import parse_scene
+    sol = solve(parse_scene(_at(HERE / "fourbar_crank_rocker_crossed.toml", 180)))
+    assert sol.omega("A-B") == pytest.approx(sol.omega("O4-B"), rel=1e-12)
+    assert re.search(r"(?m)^B +8 +0$", solution_text(sol))
+    text = steps_text(sol)
+    assert "|6.818 - 6.818| x 0.008 = 0 m/s" in text and not NOISE.search(text)
+
+
+def test_centres_distance_of_a_point_at_its_centre_is_zero():
+    """The piston at the outer dead centre is its rod's centre with the ground: the table
+    gave its distance as 4.2863e-17 m."""
+    from polygon_method import parse_scene
+    sol = solve(parse_scene(_at(HERE / "engine_inline_270.toml", 180)))
+    text = centres_text(locate(sol))
+    assert "x 0 m = 0 m/s" in text and not NOISE.search(text)
