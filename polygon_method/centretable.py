@@ -118,7 +118,8 @@ def centres_text(ic: Centres) -> str:
         r = math.hypot(sol.P[p][0] - c.point[0], sol.P[p][1] - c.point[1])
         if r <= TOL.negligible * size:  # the point is the centre (noise apart)
             r = 0.0
-        out.append(f"  v_{p} = omega_{k} x {p}-{c.label} = {fmt(abs(ic.omegas[k]))} x "
+        out.append(f"  v_{p} = omega_{k} x {p}-{c.label} = "
+                   f"{fmt(abs(sol.shown(ic.omegas[k], 'omega')))} x "
                    f"{fmt(r / sc.length_unit, 5)} {sc.units} = {fmt(v)} m/s")
     for w in ic.warnings:
         out.append(f"warning: {w}")

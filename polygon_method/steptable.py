@@ -446,7 +446,7 @@ def _acceleration_table(sol):
         if lk.key in sol.plan.fixed_links:
             continue
         X, Y = orient[lk.key]
-        v = sol.speed(X, Y)
+        v = sol.shown(sol.speed(X, Y), "v")  # two equal images: 0
         L = lk.length
         cen = v * v / L
         al = sol.Al[lk.key]
