@@ -443,3 +443,28 @@ def test_centres_distance_of_a_point_at_its_centre_is_zero():
     sol = solve(parse_scene(_at(HERE / "engine_inline_270.toml", 180)))
     text = centres_text(locate(sol))
     assert "x 0 m = 0 m/s" in text and not NOISE.search(text)
+
+
+def test_answers_in_inch_units():
+    """A problem set in inches gives its answers in in/s, ft/s^2 and lbf in (it was
+    refused: "unknown unit 'in/s'")."""
+    from polygon_method import parse_scene
+    from polygon_method.check import check_answers
+    scene, sol, ref = solved(HERE / "fourbar_inches.toml")
+    v = float(mpmath_norm(ref["velocities"]["A"])) / 0.0254
+    a = float(mpmath_norm(ref["accelerations"]["B"])) / 0.3048
+    t = abs(sol.input_torque) / (4.4482216152605 * 0.0254)
+    text = (HERE / "fourbar_inches.toml").read_text(encoding="utf-8") + f"""
+[answers]
+tolerance = "0.01%"
+v_A = "{v:.7g} in/s"
+a_B = "{a:.7g} ft/s^2"
+torque = "{t:.7g} lbf in"
+"""
+    verdicts = check_answers(solve(parse_scene(text)))
+    assert [vd.ok for vd in verdicts] == [True, True, True], verdicts
+
+
+def mpmath_norm(v):
+    import mpmath
+    return mpmath.sqrt(v[0] ** 2 + v[1] ** 2)
