@@ -468,3 +468,12 @@ torque = "{t:.7g} lbf in"
 def mpmath_norm(v):
     import mpmath
     return mpmath.sqrt(v[0] ** 2 + v[1] ** 2)
+
+
+@pytest.mark.parametrize("path", FILES, ids=[f.stem for f in FILES])
+def test_linkage_text_has_no_double_blank_line(path):
+    """The oscillating cylinder has no transmission angle: its output's range followed two
+    blank lines."""
+    from polygon_method.linkage import analyse
+    text = analyse(load_scene(path)).text()
+    assert "\n\n\n" not in text
