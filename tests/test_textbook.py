@@ -477,3 +477,13 @@ def test_linkage_text_has_no_double_blank_line(path):
     from polygon_method.linkage import analyse
     text = analyse(load_scene(path)).text()
     assert "\n\n\n" not in text
+
+
+def test_carried_points_are_described_with_their_unit():
+    """The step table said "E: on BC, 280 from B" (no unit) and "E: on AB, -30 from A" for
+    a point on the crank produced backwards."""
+    words = {f.stem: steps_text(solved(f)[1]) for f in FILES}
+    assert "  - E: on BC, 280 mm from B" in words["oscillating_cylinder"]
+    assert "  - E: on AB produced beyond A, 30 mm from A" in words["crank_point_beyond"]
+    assert "  - D: on AB produced beyond B, 220 mm from A" in words["inclined_slider"]
+    assert "F: on BC, EF = 50 mm, CF = 70 mm, ECF read ccw" in words["coupler_plate_four_points"]

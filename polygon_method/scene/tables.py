@@ -42,6 +42,10 @@ def _which_point(name, known) -> str:
 class _Tables:
     """The scene reader's methods for one table each (mixed into the reader)."""
 
+    def _words(self, metres: float) -> str:
+        """A length (m) in the scene's unit, as the step tables write it: ``280 mm``."""
+        return f"{metres / self.scale():.6g} {self.unit}"
+
     def carried_points(self, index, ground):
         table = self.table("points")
         local = {}  # link key -> {point: (x, y) in the link frame, P at 0, Q at (L, 0)}
@@ -80,7 +84,11 @@ class _Tables:
                 ox, oy = frame[link.other(start)]
                 t = d / link.length
                 xy = (sx + t * (ox - sx), sy + t * (oy - sy))
-                how = f"on {spec['on']}, {spec['along']} from {start}"
+                far = link.other(start)
+                where = (f"{spec['on']} produced beyond {start}" if d < 0 else
+                         f"{spec['on']} produced beyond {far}" if d > link.length else
+                         spec['on'])
+                how = f"on {where}, {self._words(abs(d))} from {start}"
             else:
                 dist = spec["distances"]
                 if not isinstance(dist, dict) or len(dist) != 2:
@@ -115,8 +123,8 @@ class _Tables:
                 ex, ey = (x2 - x1) / e, (y2 - y1) / e
                 sign = 1.0 if turn == "ccw" else -1.0
                 xy = (x1 + along * ex - sign * h * ey, y1 + along * ey + sign * h * ex)
-                how = (f"on {spec['on']}, {r1}{name} = {spec['distances'][r1]}, {r2}{name} = "
-                       f"{spec['distances'][r2]}, {r1}{r2}{name} read {turn}")
+                how = (f"on {spec['on']}, {r1}{name} = {self._words(d1)}, {r2}{name} = "
+                       f"{self._words(d2)}, {r1}{r2}{name} read {turn}")
             frame[name] = xy
             L = link.length
             out.append(CarriedPoint(name, link.key, xy[0] / L, xy[1] / L, how))

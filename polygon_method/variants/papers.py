@@ -89,7 +89,7 @@ def _given(sc: Scene, raw: dict) -> list:
                                            for p, (x, y) in g.items()))
     out.append("links: " + ", ".join(f"{k} = {_q(v, u)}" for k, v in raw["links"].items()))
     for cp in sc.points:
-        out.append(f"point {cp.name}: {cp.how} ({u})")
+        out.append(f"point {cp.name}: {cp.how}")
     for name, s in raw.get("sliders", {}).items():
         if "along" in s:
             out.append(f"block {name} slides along {s['along']}")
