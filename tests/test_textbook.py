@@ -216,15 +216,20 @@ def test_steps_write_no_rounding_noise_at_mid_stroke():
     assert "2 x 3.491 x 0 = 0" in text
 
 
+_TURNED = {}
+
+
 def _turned(path, angle):
     """The scene with its crank at ``angle``, or None where it is not assembled there (or
-    its hints do not fit)."""
+    its hints do not fit); cached."""
     from polygon_method import parse_scene
     from polygon_method.errors import PolygonMethodError
-    try:
-        return solve(parse_scene(_at(path, angle)))
-    except PolygonMethodError:
-        return None
+    if (path, angle) not in _TURNED:
+        try:
+            _TURNED[path, angle] = solve(parse_scene(_at(path, angle)))
+        except PolygonMethodError:
+            _TURNED[path, angle] = None
+    return _TURNED[path, angle]
 
 
 # every scene at the textbook's special crank angles, where exact zeros abound
@@ -487,3 +492,18 @@ def test_carried_points_are_described_with_their_unit():
     assert "  - E: on AB produced beyond A, 30 mm from A" in words["crank_point_beyond"]
     assert "  - D: on AB produced beyond B, 220 mm from A" in words["inclined_slider"]
     assert "F: on BC, EF = 50 mm, CF = 70 mm, ECF read ccw" in words["coupler_plate_four_points"]
+
+
+TURNED = [pytest.param(f, a, id=f"{f.stem}-{a}") for f in FILES for a in (0, 90, 180, 270)]
+
+
+@pytest.mark.parametrize("path,angle", TURNED)
+def test_turned_to_the_special_angles_matches_reference(path, angle):
+    """Every scene with its crank at 0, 90, 180 and 270 deg (where it assembles on the
+    scene's hints): dead centres, mid-strokes, links along the line of centres."""
+    sol = _turned(path, angle)
+    if sol is None:
+        pytest.skip("not assembled at this angle")
+    ref = reference_solution(sol.scene, sol.P)
+    err, what = worst_error(sol.scene, sol, ref)
+    assert err < REL, f"{what}: relative error {err:.2e}"
