@@ -507,3 +507,19 @@ def test_turned_to_the_special_angles_matches_reference(path, angle):
     ref = reference_solution(sol.scene, sol.P)
     err, what = worst_error(sol.scene, sol, ref)
     assert err < REL, f"{what}: relative error {err:.2e}"
+
+
+def test_check_takes_a_zero_torque_as_zero():
+    """The coupling rod's weight takes no power: an answer of 0 N m is right, and the table
+    shows 0 (it showed "1.2021e-13 N m, error 100.00 %, tolerance 8e+15 %")."""
+    from polygon_method.check import check_answers, verdicts_text
+    from polygon_method.scene import parse_scene
+    text = (HERE / "coupling_rod_90.toml").read_text(encoding="utf-8") + """
+[answers]
+torque = "0 N m"
+rub_B = "0.6283 m/s"
+"""
+    verdicts = check_answers(solve(parse_scene(text)))
+    assert [v.ok for v in verdicts] == [True, True]
+    assert verdicts[0].correct == 0.0
+    assert "e+" not in verdicts_text(verdicts) and not NOISE.search(verdicts_text(verdicts))
