@@ -523,3 +523,17 @@ rub_B = "0.6283 m/s"
     assert [v.ok for v in verdicts] == [True, True]
     assert verdicts[0].correct == 0.0
     assert "e+" not in verdicts_text(verdicts) and not NOISE.search(verdicts_text(verdicts))
+
+
+DEFAULTED = [(f, s.point) for f in FILES for s in load_scene(f).sliders
+             if isinstance(s, FixedPath) and s.point not in load_scene(f).assembly]
+
+
+@pytest.mark.parametrize("path,X", DEFAULTED, ids=[f"{f.stem}-{X}" for f, X in DEFAULTED])
+def test_default_slider_position_is_the_one_farther_along_its_path(path, X):
+    """scene-format.md: without a hint, a slider takes the position farther along its
+    guide's direction (a path at -120 deg: down and to the left)."""
+    scene, sol, _ = solved(path)
+    u = next(s.u for s in scene.sliders if s.point == X)
+    here, other = sol.P[X], _other_position(scene, sol.P, X)
+    assert (here[0] - other[0]) * u[0] + (here[1] - other[1]) * u[1] > 0
