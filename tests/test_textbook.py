@@ -537,3 +537,14 @@ def test_default_slider_position_is_the_one_farther_along_its_path(path, X):
     u = next(s.u for s in scene.sliders if s.point == X)
     here, other = sol.P[X], _other_position(scene, sol.P, X)
     assert (here[0] - other[0]) * u[0] + (here[1] - other[1]) * u[1] > 0
+
+
+def test_rocker_driven_through_a_block_is_the_output():
+    """A rocker whose end slides on the moving input lever is the linkage's output: its
+    swing (2 acos(O2-A / O2O4) = 132.84 deg, between the limit positions where it stands
+    perpendicular to the lever) was not reported."""
+    from polygon_method.linkage import analyse
+    text = analyse(load_scene(HERE / "slotted_lever_driven.toml")).text()
+    swing = math.degrees(2 * math.acos(120 / 300))
+    assert f"output link O2-A: swings between -156.4218 and -23.5782 deg: swing {swing:.4f} deg" \
+        in text, text

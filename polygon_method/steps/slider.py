@@ -293,7 +293,11 @@ class SliderDyad(Step):
         return {self.link: (self.point, self.b)}
 
     def output(self, ground):
-        return ("slider", self.point) if self.path is not None else None
+        if self.path is not None:
+            return ("slider", self.point)
+        if self.b in ground:  # a rocker about its fixed pivot, its end sliding on a moving link
+            return ("rocker", self.link, self.b, self.point)
+        return None
 
     def position_words(self, L, which, angle_deg):
         where = (f"the {self.path.label} path of {self.point}" if self.path is not None
