@@ -548,3 +548,19 @@ def test_rocker_driven_through_a_block_is_the_output():
     swing = math.degrees(2 * math.acos(120 / 300))
     assert f"output link O2-A: swings between -156.4218 and -23.5782 deg: swing {swing:.4f} deg" \
         in text, text
+
+
+def test_point_under_the_block_is_not_labelled_as_a_point_of_the_scene():
+    """A slotted lever carrying a point named A1: the lever's point under the block A was
+    labelled a1 too (two a1 on the velocity polygon, two a1' on the acceleration one)."""
+    from polygon_method import parse_scene
+    from polygon_method.constructions import acceleration_constructions, velocity_constructions
+    text = (HERE / "slotted_lever_270.toml").read_text(encoding="utf-8").replace(
+        "[sliders]", '[points]\nA1 = { on = "O1-P", along = 450 }\n\n[sliders]')
+    sol = solve(parse_scene(text))
+    for cons, a1 in ((velocity_constructions(sol), "a1"),
+                     (acceleration_constructions(sol), "a1'")):
+        labels = [c.finds for c in cons] + [lab for c in cons for lab, _ in c.named]
+        assert labels.count(a1) == 1, labels
+        assert ("a2'" if a1.endswith("'") else "a2") in labels
+    assert "meet at a2; then op / oa2 = O1P / O1A" in steps_text(sol)
