@@ -564,3 +564,18 @@ def test_point_under_the_block_is_not_labelled_as_a_point_of_the_scene():
         assert labels.count(a1) == 1, labels
         assert ("a2'" if a1.endswith("'") else "a2") in labels
     assert "meet at a2; then op / oa2 = O1P / O1A" in steps_text(sol)
+
+
+def test_check_of_a_centre_on_an_axis_shows_no_noise():
+    """I25 of the slotted lever at mid-stroke is on the y axis: the check table showed the
+    correct position as [4.4904e-14, -116.67] mm."""
+    from polygon_method.check import check_answers, verdicts_text
+    from polygon_method.scene import parse_scene
+    text = (HERE / "slotted_lever_270.toml").read_text(encoding="utf-8") + """
+[answers]
+I_25 = [0, -116.7]
+"""
+    verdicts = check_answers(solve(parse_scene(text)))
+    assert verdicts[0].ok
+    text = verdicts_text(verdicts)
+    assert "[0, -116.67] mm" in text and not NOISE.search(text)
