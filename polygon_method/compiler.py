@@ -339,8 +339,12 @@ class _Compiler:
                          " redundant (both ends already fixed by the other links): remove "
                          f"{'it' if len(extra_links) == 1 else 'them'} or check the scene")
         if extra_sliders:
-            parts.append(f"slider{'s' if len(extra_sliders) > 1 else ''} "
-                         f"{', '.join(extra_sliders)} cannot slide (already fixed)")
+            one = len(extra_sliders) == 1
+            names, be = ", ".join(extra_sliders), "is" if one else "are"
+            parts.append(f"slider{'' if one else 's'} {names} {be} redundant ({names} {be} "
+                         "already placed by the other links and the crank: "
+                         f"{'its path adds' if one else 'their paths add'} a constraint, not "
+                         f"a motion): remove {'it' if one else 'them'} or check the scene")
         where = (f"[links] {', '.join(extra_links)}" if extra_links
                  else f"[sliders] {', '.join(extra_sliders)}")
         raise MobilityError(f"{mob}: over-constrained: " + "; ".join(parts), file=sc.file,

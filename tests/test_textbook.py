@@ -579,3 +579,36 @@ I_25 = [0, -116.7]
     assert verdicts[0].ok
     text = verdicts_text(verdicts)
     assert "[0, -116.67] mm" in text and not NOISE.search(text)
+
+
+def test_elliptic_trammel_with_both_sliders_is_refused_as_redundant():
+    """A trammel bar BC driven at its middle A by a crank OA = BC / 2, with both ends on
+    sliders, is over-constrained (Gruebler 0; the second slider's path holds anyway). The
+    refusal said "slider C cannot slide (already fixed)", while C does slide; the scene
+    with B's slider alone solves, and C stays on the y axis by itself."""
+    from polygon_method import parse_scene
+    from polygon_method.errors import MobilityError
+    text = """
+[ground]
+O = [0, 0]
+[links]
+OA = 50
+BC = 100
+[points]
+A = { on = "BC", along = 50 }
+{C}
+[sliders]
+B = { path = "horizontal", through = "O" }
+{slider}
+[input]
+crank = "OA"
+angle = 30
+speed = "10 rad/s ccw"
+"""
+    with pytest.raises(MobilityError) as exc:
+        solve(parse_scene(text.replace("{C}", "").replace(
+            "{slider}", 'C = { path = "vertical", through = "O" }')))
+    assert "slider C is redundant (C is already placed" in str(exc.value)
+    assert "cannot slide" not in str(exc.value)
+    sol = solve(parse_scene(text.replace("{C}", "").replace("{slider}", "")))
+    assert abs(sol.P["C"][0]) < 1e-15 and abs(sol.V["C"][0]) < 1e-15
