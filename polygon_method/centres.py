@@ -336,14 +336,15 @@ def _by_velocities(sol, names, found, order, missing, warnings):
         if not lines:
             continue
         dw = w[i] - w[j]
-        vi, vj = field(i, (0.0, 0.0)), field(j, (0.0, 0.0))  # velocities at the origin
+        p0 = next(x.point for x in lines[0] if x.point is not None)  # a point of the line
+        vi, vj = field(i, p0), field(j, p0)
         dx, dy = vj[0] - vi[0], vj[1] - vi[1]
         how = ("Kennedy's lines coincide: on that line where the two bodies' velocities "
                "are equal (angular-velocity ratio)")
         cond = min(1.0, abs(dw) / big)
         if cond <= PARALLEL:  # the same omega: a relative translation
-            if math.hypot(dx, dy) <= PARALLEL * big * max(1.0, math.hypot(*vi)):
-                continue
+            if math.hypot(dx, dy) <= TOL.negligible * sol.scales["v"]:
+                continue  # (and no relative motion: the two move as one, no centre)
             c = Centre(i, j, None, _unit(dy, -dx), how + " (the same omega: at infinity)",
                        (lines[0], lines[-1]), 0.0)
         else:
@@ -355,8 +356,10 @@ def _by_velocities(sol, names, found, order, missing, warnings):
             if cond < TOL.warn:
                 warnings.append(f"centre I{i}{j}: the two bodies' omegas differ by "
                                 f"{cond:.3g} of the largest: far and ill-conditioned")
-            # omega_i k x X + v_i(0) = omega_j k x X + v_j(0):  k x X = (dx, dy) / dw
-            c = Centre(i, j, (dy / dw, -dx / dw), None, how, (lines[0], lines[-1]), cond)
+            # v_i(p0) + omega_i k x (X - p0) = v_j(p0) + omega_j k x (X - p0):
+            # k x (X - p0) = (dx, dy) / dw
+            c = Centre(i, j, (p0[0] + dy / dw, p0[1] - dx / dw), None, how,
+                       (lines[0], lines[-1]), cond)
         found[key] = c
         order.append(key)
         missing.remove(key)

@@ -249,11 +249,13 @@ def tidied(sol: Solution) -> Solution:
         rec.values = tuple(0.0 if v <= lim else v for v in rec.values)
         rec.rubbing_velocity = max(rec.values, default=0.0)
     t = out.input_torque
-    if t is not None:  # each load's power against |F| v or |T_L| omega; the torque against
-        sizes = [hypot(*ld.force) * k["v"] if ld.force is not None  # their sum over the
-                 else abs(ld.torque) * k["omega"] for ld in sc.loads]  # crank's omega
-        out._cache["power"] = [(what, 0.0 if abs(p) <= tiny * size else p)
-                               for (what, p), size in zip(out.power_terms, sizes)]
+    if t is not None:
+        # each load's power is noise against |F| v (|T_L| omega), the torque against their
+        # sum over the crank's omega
+        sizes = [hypot(*ld.force) * k["v"] if ld.force is not None
+                 else abs(ld.torque) * k["omega"] for ld in sc.loads]
+        out._cache["power"] = [(what, 0.0 if abs(p) <= tiny * bound else p)
+                               for (what, p), bound in zip(out.power_terms, sizes)]
         if abs(t) <= tiny * sum(sizes) / abs(sc.input.omega):
             out._cache["torque"] = 0.0
     return out
