@@ -1,0 +1,113 @@
+"""The textbook corpus (tests/textbook/*.toml) and what its tests share: the scenes, their
+solutions and 50-digit references (cached), the comparison with the reference, the scenes
+turned to other crank angles, the other assembly of a point."""
+
+import math
+import re
+from pathlib import Path
+
+from mpmath import mpf
+
+from polygon_method import load_scene, parse_scene, solve
+from polygon_method.errors import PolygonMethodError
+from polygon_method.scene import FixedPath
+from reference import reference_solution
+
+__all__ = ["HERE", "FILES", "REL", "NOISE", "solved", "worst_error", "at_angle", "turned",
+           "other_position"]
+
+HERE = Path(__file__).resolve().parent / "textbook"
+FILES = sorted(HERE.glob("*.toml"))
+REL = 1e-9
+NOISE = re.compile(r"\d(\.\d+)?e-(1[0-9]|[2-9][0-9])")  # a number below 1e-10: noise
+
+
+def _norm(v):
+    return math.hypot(float(v[0]), float(v[1])) if isinstance(v, tuple) else abs(float(v))
+
+
+def _err(got, want, scale):
+    if isinstance(want, tuple):
+        d = math.hypot(float(mpf(got[0]) - want[0]), float(mpf(got[1]) - want[1]))
+    else:
+        d = abs(float(mpf(got) - want))
+    return d / max(_norm(want), scale, 1e-300)
+
+
+_CACHE = {}
+
+
+def solved(path):
+    if path not in _CACHE:
+        scene = load_scene(path)
+        sol = solve(scene)
+        _CACHE[path] = scene, sol, reference_solution(scene, sol.P)
+    return _CACHE[path]
+
+
+def worst_error(scene, sol, ref):
+    """(relative error, what) of the worst quantity against the reference."""
+    errs = []
+    for tab, got in (("positions", sol.P), ("velocities", sol.V), ("accelerations", sol.A)):
+        scale = max(_norm(v) for v in ref[tab].values())
+        errs += [(_err(tuple(got[n]), ref[tab][n], scale), f"{tab} {n}")
+                 for n in scene.point_names]
+    w = max(_norm(v) for v in ref["omega"].values())
+    for tab, got, scale in (("omega", sol.W, w),  # alpha's size: omega^2 as well (a
+                            ("alpha", sol.Al,     # parallelogram has every alpha 0)
+                             max(_norm(v) for v in ref["alpha"].values()) + w * w)):
+        errs += [(_err(got[lk.key], ref[tab][lk.key], scale), f"{tab} {lk.key}")
+                 for lk in scene.links]
+    vs = max(_norm(v) for v in ref["velocities"].values())
+    as_ = max(_norm(v) for v in ref["accelerations"].values())
+    for sl in scene.sliders:
+        want, got = ref["sliders"][sl.point], sol.S[sl.point]
+        errs += [(_err(got[0], want["vs"], vs), f"sliding velocity {sl.point}"),
+                 (_err(got[1], want["as"], as_), f"sliding acceleration {sl.point}"),
+                 (_err(tuple(sol.coriolis(sl.point)), want["coriolis"], as_),
+                  f"Coriolis {sl.point}")]
+    return max(errs)
+
+
+def _mirror(x, a, b):
+    """x reflected in the line through a and b."""
+    ux, uy = b[0] - a[0], b[1] - a[1]
+    n = math.hypot(ux, uy)
+    ux, uy = ux / n, uy / n
+    dx, dy = x[0] - a[0], x[1] - a[1]
+    t = dx * ux + dy * uy
+    fx, fy = a[0] + t * ux, a[1] + t * uy
+    return (2 * fx - x[0], 2 * fy - x[1])
+
+
+def other_position(scene, P, X):
+    """The other assembly of X: the mirror image in the line of the two centres of its
+    dyad, or, for a slider, in the normal to its path through the link's other end."""
+    ends = [lk.q if lk.p == X else lk.p for lk in scene.links if X in (lk.p, lk.q)]
+    path = next((s for s in scene.sliders if s.point == X and isinstance(s, FixedPath)), None)
+    if path is not None:
+        b = P[ends[0]]
+        return _mirror(P[X], b, (b[0] - path.u[1], b[1] + path.u[0]))
+    if len(ends) >= 2:  # the first two links at X in the file: the dyad that finds X
+        return _mirror(P[X], P[ends[0]], P[ends[1]])
+    return None
+
+
+_TURNED = {}
+
+
+def turned(path, angle):
+    """The scene with its crank at ``angle``, or None where it is not assembled there (or
+    its hints do not fit); cached."""
+    if (path, angle) not in _TURNED:
+        try:
+            _TURNED[path, angle] = solve(parse_scene(at_angle(path, angle)))
+        except PolygonMethodError:
+            _TURNED[path, angle] = None
+    return _TURNED[path, angle]
+
+
+def at_angle(path, angle):
+    text = Path(path).read_text(encoding="utf-8")
+    return re.sub(r"(?m)^angle = .*$", f"angle = {angle}", text)
+
