@@ -20,13 +20,14 @@ bodies move alike. Reports without rounding noise: tests/test_textbook_words.py.
 import math
 from pathlib import Path
 
+import mpmath
 import pytest
 from mpmath import mpf
 
 from polygon_method import load_scene, solve
 from polygon_method.centres import locate
 from polygon_method.scene import FixedPath, GuideSlider
-from reference import reference_solution
+from reference import reference_positions, reference_solution
 from textbook_corpus import (FILES, HERE, REL, at_angle, other_position, solved, turned,
                              worst_error)
 
@@ -40,10 +41,8 @@ def test_matches_reference(path):
     assert not sol.warnings  # every scene is well away from a toggle
 
 
-
 HINTED = [(f, X) for f in FILES for X in load_scene(f).assembly
           if other_position(load_scene(f), solve(load_scene(f)).P, X) is not None]
-
 
 
 @pytest.mark.parametrize("path,X", HINTED, ids=[f"{f.stem}-{X}" for f, X in HINTED])
@@ -56,7 +55,6 @@ def test_assembly_hint_is_honoured(path, X):
         assert (here[axis] - other[axis]) * sign > 0, (here, other)
     else:
         assert math.dist(here, hint) < math.dist(other, hint), (here, other)
-
 
 
 def _bodies_at_pin(scene, name, omega):
@@ -77,9 +75,7 @@ def _bodies_at_pin(scene, name, omega):
     return out
 
 
-
 PINNED = [f for f in FILES if load_scene(f).pins]
-
 
 
 @pytest.mark.parametrize("path", PINNED, ids=[f.stem for f in PINNED])
@@ -92,14 +88,14 @@ def test_rubbing_velocities_by_hand(path):
         assert abs(got - float(want)) <= 1e-9 * max(float(want), 1e-12), pin.point
 
 
-
 LOADED = [f for f in FILES if load_scene(f).loads]
-
 
 
 @pytest.mark.parametrize("path", LOADED, ids=[f.stem for f in LOADED])
 def test_input_torque_by_virtual_work(path):
-    """T omega + sum F . v + sum T_L omega_L = 0 with the reference's velocities."""
+    """T omega + sum F . v + sum T_L omega_L = 0 with the reference's velocities; and by
+    virtual displacements alone, T = -(sum F . dr/dtheta + sum T_L dphi_L/dtheta), the
+    derivatives central differences of the reference's positions at theta +- 1e-20 rad."""
     scene, sol, ref = solved(path)
     power = mpf(0)
     for load in scene.loads:
@@ -111,6 +107,19 @@ def test_input_torque_by_virtual_work(path):
     want = float(-power / mpf(scene.input.omega))
     assert sol.input_torque == pytest.approx(want, rel=1e-9, abs=1e-12)
 
+    h, th = mpf("1e-20"), mpf(scene.input.angle)
+    P = {s: reference_positions(scene, ref["positions"], th + s * h)[0] for s in (-1, 1)}
+    work = mpf(0)  # per radian of the crank
+    for load in scene.loads:
+        if load.force is not None:
+            d = [(P[1][load.target][k] - P[-1][load.target][k]) / (2 * h) for k in (0, 1)]
+            work += mpf(load.force[0]) * d[0] + mpf(load.force[1]) * d[1]
+        else:
+            lk = scene.link(load.target)
+            phi = {s: mpmath.atan2(P[s][lk.q][1] - P[s][lk.p][1], P[s][lk.q][0] - P[s][lk.p][0])
+                   for s in (-1, 1)}
+            work += mpf(load.torque) * (phi[1] - phi[-1]) / (2 * h)
+    assert sol.input_torque == pytest.approx(float(-work), rel=1e-9, abs=1e-12)
 
 
 def test_corpus_covers_the_format():
@@ -132,7 +141,6 @@ def test_corpus_covers_the_format():
     assert any(ld.force is not None for sc in scenes for ld in sc.loads)
 
 
-
 def _body_field(sol, name):
     """The velocity field of a body, from the polygon solution: (omega, point, velocity)."""
     sc = sol.scene
@@ -147,17 +155,14 @@ def _body_field(sol, name):
     return sol.W[lk.key], sol.P[lk.p], sol.V[lk.p]
 
 
-
 def _v_at(field, X):
     w, (px, py), (vx, vy) = field
     return (vx - w * (X[1] - py), vy + w * (X[0] - px))
 
 
-
 CENTRE_CASES = [pytest.param(f.read_text(encoding="utf-8"), id=f.stem) for f in FILES] + [
     pytest.param(at_angle(HERE / name, a), id=f"{Path(name).stem}-{a}")
     for name in ("slotted_lever_270.toml", "shaper_offset_ram.toml") for a in (90, 270)]
-
 
 
 @pytest.mark.parametrize("text", CENTRE_CASES)
@@ -187,7 +192,6 @@ def test_every_centre_is_where_the_two_bodies_move_alike(text):
                                              rel=1e-9, abs=1e-9 * wmax)
 
 
-
 def test_answers_in_inch_units():
     """A problem set in inches gives its answers in in/s, ft/s^2 and lbf in (it was
     refused: "unknown unit 'in/s'")."""
@@ -208,15 +212,12 @@ torque = "{t:.7g} lbf in"
     assert [vd.ok for vd in verdicts] == [True, True, True], verdicts
 
 
-
 def mpmath_norm(v):
     import mpmath
     return mpmath.sqrt(v[0] ** 2 + v[1] ** 2)
 
 
-
 TURNED = [pytest.param(f, a, id=f"{f.stem}-{a}") for f in FILES for a in (0, 90, 180, 270)]
-
 
 
 @pytest.mark.parametrize("path,angle", TURNED)
@@ -231,10 +232,8 @@ def test_turned_to_the_special_angles_matches_reference(path, angle):
     assert err < REL, f"{what}: relative error {err:.2e}"
 
 
-
 DEFAULTED = [(f, s.point) for f in FILES for s in load_scene(f).sliders
              if isinstance(s, FixedPath) and s.point not in load_scene(f).assembly]
-
 
 
 @pytest.mark.parametrize("path,X", DEFAULTED, ids=[f"{f.stem}-{X}" for f, X in DEFAULTED])
@@ -247,7 +246,6 @@ def test_default_slider_position_is_the_one_farther_along_its_path(path, X):
     assert (here[0] - other[0]) * u[0] + (here[1] - other[1]) * u[1] > 0
 
 
-
 def test_rocker_driven_through_a_block_is_the_output():
     """A rocker whose end slides on the moving input lever is the linkage's output: its
     swing (2 acos(O2-A / O2O4) = 132.84 deg, between the limit positions where it stands
@@ -257,4 +255,3 @@ def test_rocker_driven_through_a_block_is_the_output():
     swing = math.degrees(2 * math.acos(120 / 300))
     assert f"output link O2-A: swings between -156.4218 and -23.5782 deg: swing {swing:.4f} deg" \
         in text, text
-

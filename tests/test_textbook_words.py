@@ -33,10 +33,8 @@ def test_steps_write_no_rounding_noise_at_mid_stroke():
     assert "2 x 3.491 x 0 = 0" in text
 
 
-
 NOISE_CASES = [pytest.param(f, None, id=f.stem) for f in FILES] + [
     pytest.param(f, a, id=f"{f.stem}-{a}") for f in FILES for a in (0, 90, 180, 270)]
-
 
 
 @pytest.mark.parametrize("path,angle", NOISE_CASES)
@@ -57,12 +55,10 @@ def test_reports_write_no_noise(path, angle):
     assert not NOISE.search(text), NOISE.search(text).group(0)
 
 
-
 def test_default_slotted_end_note_reads_as_english():
     _, sol, _ = solved(HERE / "oscillating_cylinder.toml")
     assert ("C: of its two positions the one on the side of the block was taken"
             in " ".join(sol.notes))
-
 
 
 def test_sweep_summary_writes_a_true_zero_as_zero():
@@ -76,7 +72,6 @@ def test_sweep_summary_writes_a_true_zero_as_zero():
     assert not NOISE.search(text), NOISE.search(text).group(0)
 
 
-
 def test_engine_formulas_write_a_true_zero_as_zero():
     """At 90 deg from i.d.c. the rod does not turn: exact and formula are 0 (the exact
     printed 6.57668e-15, the formula 2.13741e-15)."""
@@ -84,7 +79,6 @@ def test_engine_formulas_write_a_true_zero_as_zero():
     text = analyse(load_scene(HERE / "engine_inline_270.toml")).text()
     row = next(ln for ln in text.splitlines() if "rod CP: |omega|" in ln)
     assert row.split()[3:6] == ["0", "0", "0"], row
-
 
 
 def test_page_data_writes_rounding_noise_as_zero():
@@ -102,7 +96,6 @@ def test_page_data_writes_rounding_noise_as_zero():
     assert d["W"]["P-R"][k + 1] != 0.0  # only the noise: the next frame's omega is kept
 
 
-
 def test_centres_drawing_with_two_centres_at_one_pin():
     """The centres' diagram of the slotted lever at mid-stroke: a Kennedy line through two
     centres at one place (I23 = I24 at A) has no direction of its own; the drawing failed
@@ -112,7 +105,6 @@ def test_centres_drawing_with_two_centres_at_one_pin():
     data, _, _ = render(sol, "svg", "centres", None, "I")
     svg = data.decode() if isinstance(data, bytes) else data
     assert "I25" in svg and "nan" not in svg.lower()
-
 
 
 def test_a_load_that_takes_no_power_gives_no_torque():
@@ -129,7 +121,6 @@ def test_a_load_that_takes_no_power_gives_no_torque():
     from polygon_method.page.frames import frames
     d = page_data(frames(scene, 12))
     assert d["torque"][d["start"]] == 0.0 and d["torque"][d["start"] + 1] != 0.0
-
 
 
 def test_path_and_force_directions_are_exact_at_right_angles():
@@ -154,7 +145,6 @@ B = { force = "2 kN", direction = "180 deg" }
     assert [ld.force for ld in sc.loads] == [(0.0, -1000.0), (-2000.0, 0.0)]
 
 
-
 def test_assembly_refusal_names_positions_without_noise():
     """The Whitworth scene's rough position for P does not fit the crank at 90 deg (the
     lever is vertical): the refusal printed P's positions as [5.08699e-15, 120]."""
@@ -164,7 +154,6 @@ def test_assembly_refusal_names_positions_without_noise():
         solve(parse_scene(at_angle(HERE / "whitworth_180.toml", 90)))
     assert "[0, 120]" in str(exc.value) and "[0, -120]" in str(exc.value)
     assert not NOISE.search(str(exc.value))
-
 
 
 def test_variants_answer_key_writes_a_true_zero_as_zero():
@@ -184,7 +173,6 @@ angle = [270]
     assert all(v.solution.omega("P-R") == 0.0 for v in vs.variants)
 
 
-
 def test_pin_between_links_turning_alike_rubs_at_zero():
     """Crank along the line of centres (180 deg): |O4A| is stationary, so the transmission
     angle is too and the coupler and the rocker turn alike: pin B does not rub. solve
@@ -197,7 +185,6 @@ def test_pin_between_links_turning_alike_rubs_at_zero():
     assert "|6.818 - 6.818| x 0.008 = 0 m/s" in text and not NOISE.search(text)
 
 
-
 def test_centres_distance_of_a_point_at_its_centre_is_zero():
     """The piston at the outer dead centre is its rod's centre with the ground: the table
     gave its distance as 4.2863e-17 m."""
@@ -205,7 +192,6 @@ def test_centres_distance_of_a_point_at_its_centre_is_zero():
     sol = solve(parse_scene(at_angle(HERE / "engine_inline_270.toml", 180)))
     text = centres_text(locate(sol))
     assert "x 0 m = 0 m/s" in text and not NOISE.search(text)
-
 
 
 @pytest.mark.parametrize("path", FILES, ids=[f.stem for f in FILES])
@@ -217,7 +203,6 @@ def test_linkage_text_has_no_double_blank_line(path):
     assert "\n\n\n" not in text
 
 
-
 def test_carried_points_are_described_with_their_unit():
     """The step table said "E: on BC, 280 from B" (no unit) and "E: on AB, -30 from A" for
     a point on the crank produced backwards."""
@@ -226,7 +211,6 @@ def test_carried_points_are_described_with_their_unit():
     assert "  - E: on AB produced beyond A, 30 mm from A" in words["crank_point_beyond"]
     assert "  - D: on AB produced beyond B, 220 mm from A" in words["inclined_slider"]
     assert "F: on BC, EF = 50 mm, CF = 70 mm, ECF read ccw" in words["coupler_plate_four_points"]
-
 
 
 def test_check_takes_a_zero_torque_as_zero():
@@ -245,7 +229,6 @@ rub_B = "0.6283 m/s"
     assert "e+" not in verdicts_text(verdicts) and not NOISE.search(verdicts_text(verdicts))
 
 
-
 def test_point_under_the_block_is_not_labelled_as_a_point_of_the_scene():
     """A slotted lever carrying a point named A1: the lever's point under the block A was
     labelled a1 too (two a1 on the velocity polygon, two a1' on the acceleration one)."""
@@ -262,7 +245,6 @@ def test_point_under_the_block_is_not_labelled_as_a_point_of_the_scene():
     assert "meet at a2; then op / oa2 = O1P / O1A" in steps_text(sol)
 
 
-
 def test_check_of_a_centre_on_an_axis_shows_no_noise():
     """I25 of the slotted lever at mid-stroke is on the y axis: the check table showed the
     correct position as [4.4904e-14, -116.67] mm."""
@@ -276,7 +258,6 @@ I_25 = [0, -116.7]
     assert verdicts[0].ok
     text = verdicts_text(verdicts)
     assert "[0, -116.67] mm" in text and not NOISE.search(text)
-
 
 
 def test_elliptic_trammel_with_both_sliders_is_refused_as_redundant():
@@ -310,4 +291,3 @@ speed = "10 rad/s ccw"
     assert "cannot slide" not in str(exc.value)
     sol = solve(parse_scene(text.replace("{C}", "").replace("{slider}", "")))
     assert abs(sol.P["C"][0]) < 1e-15 and abs(sol.V["C"][0]) < 1e-15
-

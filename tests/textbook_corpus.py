@@ -110,4 +110,3 @@ def turned(path, angle):
 def at_angle(path, angle):
     text = Path(path).read_text(encoding="utf-8")
     return re.sub(r"(?m)^angle = .*$", f"angle = {angle}", text)
-
