@@ -342,24 +342,20 @@ def _by_velocities(sol, names, found, order, missing, warnings):
         how = ("Kennedy's lines coincide: on that line where the two bodies' velocities "
                "are equal (angular-velocity ratio)")
         cond = min(1.0, abs(dw) / big)
-        if cond <= PARALLEL:  # the same omega: a relative translation
-            if math.hypot(dx, dy) <= TOL.negligible * sol.scales["v"]:
-                continue  # (and no relative motion: the two move as one, no centre)
-            c = Centre(i, j, None, _unit(dy, -dx), how + " (the same omega: at infinity)",
-                       (lines[0], lines[-1]), 0.0)
-        else:
-            if cond < TOL.singular:
-                raise SingularStepError(
-                    f"I{i}{j}: Kennedy's lines coincide and the two bodies' omegas differ "
-                    f"by {cond:.2g} of the largest: the centre is far and ill-determined",
-                    step=f"centre I{i}{j}")
-            if cond < TOL.warn:
-                warnings.append(f"centre I{i}{j}: the two bodies' omegas differ by "
-                                f"{cond:.3g} of the largest: far and ill-conditioned")
-            # v_i(p0) + omega_i k x (X - p0) = v_j(p0) + omega_j k x (X - p0):
-            # k x (X - p0) = (dx, dy) / dw
-            c = Centre(i, j, (p0[0] + dy / dw, p0[1] - dx / dw), None, how,
-                       (lines[0], lines[-1]), cond)
+        if cond <= PARALLEL:
+            continue  # the same omega (a relative translation): left to the refusal
+        if cond < TOL.singular:
+            raise SingularStepError(
+                f"I{i}{j}: Kennedy's lines coincide and the two bodies' omegas differ by "
+                f"{cond:.2g} of the largest: the centre is far and ill-determined",
+                step=f"centre I{i}{j}")
+        if cond < TOL.warn:
+            warnings.append(f"centre I{i}{j}: the two bodies' omegas differ by {cond:.3g} "
+                            "of the largest: far and ill-conditioned")
+        # v_i(p0) + omega_i k x (X - p0) = v_j(p0) + omega_j k x (X - p0):
+        # k x (X - p0) = (dx, dy) / dw
+        c = Centre(i, j, (p0[0] + dy / dw, p0[1] - dx / dw), None, how,
+                   (lines[0], lines[-1]), cond)
         found[key] = c
         order.append(key)
         missing.remove(key)
