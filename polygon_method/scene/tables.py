@@ -13,7 +13,6 @@ from .records import (ANSWER_KINDS, INPUT_KEYS, Answer, CarriedPoint, FixedPath,
                       Input, Load, Pin, split_name)
 
 
-
 def _unit_at(ang: float) -> tuple:
     """(cos, sin) of a direction (rad), exact where it is a whole number of right angles
     (a force "direction = 270" is straight down, not 1.8e-16 to the side; a path at
