@@ -291,3 +291,24 @@ speed = "10 rad/s ccw"
     assert "cannot slide" not in str(exc.value)
     sol = solve(parse_scene(text.replace("{C}", "").replace("{slider}", "")))
     assert abs(sol.P["C"][0]) < 1e-15 and abs(sol.V["C"][0]) < 1e-15
+
+
+def test_check_shows_the_correct_value_in_the_answers_own_unit():
+    """A problem set in inches is answered in in/s and lbf in: the table showed the correct
+    values in SI only ("3.192 m/s" beside "125.7 in/s")."""
+    from polygon_method.check import check_answers, verdicts_text
+    from polygon_method.scene import parse_scene
+    scene, sol, _ = solved(HERE / "fourbar_inches.toml")
+    text = (HERE / "fourbar_inches.toml").read_text(encoding="utf-8") + """
+[answers]
+v_A = "125.7 in/s"
+omega_A-B = "100 rpm"
+v_B = "3 m/s"
+"""
+    table = verdicts_text(check_answers(solve(parse_scene(text))))
+    v_a = math.hypot(*sol.V["A"])
+    assert f"{v_a:.4g} m/s ({v_a / 0.0254:.4g} in/s)" in table, table
+    w = abs(sol.omega("A-B"))
+    assert f"({w * 60 / (2 * math.pi):.4g} rpm)" in table
+    row = next(ln for ln in table.splitlines() if ln.startswith("v_B "))
+    assert "(" not in row  # given in SI: SI only
