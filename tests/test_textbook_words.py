@@ -312,3 +312,6 @@ v_B = "3 m/s"
     assert f"({w * 60 / (2 * math.pi):.4g} rpm)" in table
     row = next(ln for ln in table.splitlines() if ln.startswith("v_B "))
     assert "(" not in row  # given in SI: SI only
+    from polygon_method.page.html import check_html  # the page's table says the same
+    html = check_html(check_answers(solve(parse_scene(text))), "")
+    assert f"{v_a:.4g} m/s ({v_a / 0.0254:.4g} in/s)" in html

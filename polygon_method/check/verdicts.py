@@ -85,6 +85,11 @@ def _given_unit(v: Verdict):
     return unit, factor
 
 
+def correct_text(v: Verdict) -> str:
+    """How the check table (terminal and page) writes the correct value."""
+    return v.correct_text or _show(v, v.correct)
+
+
 def _show(v: Verdict, x: float) -> str:
     """The correct value in SI, and in the answer's own unit where it was another (a
     problem set in inches or rpm is answered in its units)."""
@@ -102,7 +107,7 @@ def verdicts_text(verdicts, title: str = "") -> str:
     for v in verdicts:
         err = "-" if v.error is None else f"{100 * v.error:.2f} %"
         tol = "-" if not math.isfinite(v.tolerance) else f"{100 * v.tolerance:.2g} %"
-        rows.append((v.key, v.raw, v.correct_text or _show(v, v.correct), err, tol,
+        rows.append((v.key, v.raw, correct_text(v), err, tol,
                      "right" if v.ok else "WRONG"))
     widths = [max(len(r[i]) for r in rows) for i in range(6)]
     lines = [title] if title else []
