@@ -315,3 +315,23 @@ v_B = "3 m/s"
     from polygon_method.page.html import check_html  # the page's table says the same
     html = check_html(check_answers(solve(parse_scene(text))), "")
     assert f"{v_a:.4g} m/s ({v_a / 0.0254:.4g} in/s)" in html
+
+
+def test_sweep_summary_transmission_angle_at_a_change_point_is_zero():
+    """A parallelogram's four pivots come into line at crank 0 and 180 deg: its transmission
+    angle (equal to the crank angle between 0 and 90 deg) is 0 there. The summary gave
+    0.0572958 deg, the refusal threshold's value carried by the samples next to it (and
+    the linkage command says 0.00)."""
+    from polygon_method.summary import summarize
+    scene = load_scene(HERE / "coupling_rod_90.toml")
+
+    def mu_row(degrees):
+        text = summarize(scene, [math.radians(d) for d in degrees]).text()
+        return next(ln for ln in text.splitlines() if ln.startswith("mu at C ")).split()
+
+    row = mu_row(range(0, 360, 5))
+    assert row[6:8] == ["0", "0.000"] or row[6:8] == ["0", "180.000"], row
+    row = mu_row(range(3, 360, 7))  # not sampled at the change points: still found
+    assert row[6] == "0" and row[7] in ("0.000", "180.000"), row
+    row = mu_row(range(3, 171, 7))  # no change point in the range: the sampled minimum
+    assert row[6:8] == ["3", "3.000"], row
