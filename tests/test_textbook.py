@@ -28,8 +28,8 @@ from polygon_method import load_scene, solve
 from polygon_method.centres import locate
 from polygon_method.scene import FixedPath, GuideSlider
 from reference import reference_positions, reference_solution
-from textbook_corpus import (FILES, HERE, REL, at_angle, other_position, solved, turned,
-                             worst_error)
+from textbook_corpus import (FILES, HERE, REL, at_angle, guide_direction, other_position,
+                             solved, turned, worst_error)
 
 
 @pytest.mark.parametrize("path", FILES, ids=[f.stem for f in FILES])
@@ -233,15 +233,17 @@ def test_turned_to_the_special_angles_matches_reference(path, angle):
 
 
 DEFAULTED = [(f, s.point) for f in FILES for s in load_scene(f).sliders
-             if isinstance(s, FixedPath) and s.point not in load_scene(f).assembly]
+             if s.point not in load_scene(f).assembly and s.point not in load_scene(f).ground
+             and other_position(load_scene(f), solved(f)[1].P, s.point) is not None]
 
 
 @pytest.mark.parametrize("path,X", DEFAULTED, ids=[f"{f.stem}-{X}" for f, X in DEFAULTED])
 def test_default_slider_position_is_the_one_farther_along_its_path(path, X):
     """scene-format.md: without a hint, a slider takes the position farther along its
-    guide's direction (a path at -120 deg: down and to the left)."""
+    guide's direction (a path at -120 deg: down and to the left; a block on a moving link,
+    from the guide's first point towards its second)."""
     scene, sol, _ = solved(path)
-    u = next(s.u for s in scene.sliders if s.point == X)
+    u = guide_direction(scene, sol.P, X)
     here, other = sol.P[X], other_position(scene, sol.P, X)
     assert (here[0] - other[0]) * u[0] + (here[1] - other[1]) * u[1] > 0
 
@@ -255,3 +257,30 @@ def test_rocker_driven_through_a_block_is_the_output():
     swing = math.degrees(2 * math.acos(120 / 300))
     assert f"output link O2-A: swings between -156.4218 and -23.5782 deg: swing {swing:.4f} deg" \
         in text, text
+
+
+def _free_ends(scene):
+    """(block, pivot, free end) of each slotted link (a block at the crank's tip or at a
+    fixed swivel) whose free end the scene leaves to the default."""
+    out = []
+    for s in scene.sliders:
+        if not isinstance(s, GuideSlider) or not (s.point in scene.ground
+                                                   or s.point == scene.input.tip):
+            continue
+        for end, pivot in ((s.first, s.second), (s.second, s.first)):
+            if end not in scene.ground and end != scene.input.tip and \
+                    end not in scene.assembly:
+                out.append((s.point, pivot, end))
+    return out
+
+
+FREE_ENDS = [(f, e) for f in FILES for e in _free_ends(load_scene(f))]
+
+
+@pytest.mark.parametrize("path,ends", FREE_ENDS, ids=[f"{f.stem}-{e[2]}" for f, e in FREE_ENDS])
+def test_default_slotted_link_end_is_on_the_side_of_the_block(path, ends):
+    """scene-format.md: without a hint, a slotted link's free end is on the side of the
+    block (the oscillating cylinder's rod end C beyond the trunnion O)."""
+    scene, sol, _ = solved(path)
+    b, k, n = (sol.P[x] for x in ends)
+    assert (n[0] - k[0]) * (b[0] - k[0]) + (n[1] - k[1]) * (b[1] - k[1]) > 0

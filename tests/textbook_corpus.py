@@ -10,11 +10,11 @@ from mpmath import mpf
 
 from polygon_method import load_scene, parse_scene, solve
 from polygon_method.errors import PolygonMethodError
-from polygon_method.scene import FixedPath
+from polygon_method.scene import FixedPath, GuideSlider
 from reference import reference_solution
 
 __all__ = ["HERE", "FILES", "REL", "NOISE", "solved", "worst_error", "at_angle", "turned",
-           "other_position"]
+           "other_position", "guide_direction"]
 
 HERE = Path(__file__).resolve().parent / "textbook"
 FILES = sorted(HERE.glob("*.toml"))
@@ -80,14 +80,34 @@ def _mirror(x, a, b):
     return (2 * fx - x[0], 2 * fy - x[1])
 
 
+def guide_direction(scene, P, X):
+    """The unit direction of the path or guide of a slider at X (a moving guide from its
+    first point to its second), or None."""
+    s = next((s for s in scene.sliders if s.point == X), None)
+    if s is None:
+        return None
+    if isinstance(s, FixedPath):
+        return s.u
+    (x1, y1), (x2, y2) = P[s.first], P[s.second]
+    n = math.hypot(x2 - x1, y2 - y1)
+    return ((x2 - x1) / n, (y2 - y1) / n)
+
+
 def other_position(scene, P, X):
     """The other assembly of X: the mirror image in the line of the two centres of its
-    dyad, or, for a slider, in the normal to its path through the link's other end."""
+    dyad; for a slider, in the normal to its path through the link's other end; for the
+    free end of a slotted link, through the link's pivot. None for the crank's tip."""
+    if X == scene.input.tip:
+        return None  # the crank's tip has one position
+    for s in scene.sliders:  # the free end of a slotted link: on the other side of its pivot
+        if isinstance(s, GuideSlider) and s.point != X and X in (s.first, s.second):
+            k = P[s.second if X == s.first else s.first]
+            return (2 * k[0] - P[X][0], 2 * k[1] - P[X][1])
     ends = [lk.q if lk.p == X else lk.p for lk in scene.links if X in (lk.p, lk.q)]
-    path = next((s for s in scene.sliders if s.point == X and isinstance(s, FixedPath)), None)
-    if path is not None:
+    u = guide_direction(scene, P, X)
+    if u is not None and len(ends) == 1:  # a link and a slider: the arc cuts the guide twice
         b = P[ends[0]]
-        return _mirror(P[X], b, (b[0] - path.u[1], b[1] + path.u[0]))
+        return _mirror(P[X], b, (b[0] - u[1], b[1] + u[0]))
     if len(ends) >= 2:  # the first two links at X in the file: the dyad that finds X
         return _mirror(P[X], P[ends[0]], P[ends[1]])
     return None
