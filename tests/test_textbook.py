@@ -284,3 +284,17 @@ def test_default_slotted_link_end_is_on_the_side_of_the_block(path, ends):
     scene, sol, _ = solved(path)
     b, k, n = (sol.P[x] for x in ends)
     assert (n[0] - k[0]) * (b[0] - k[0]) + (n[1] - k[1]) * (b[1] - k[1]) > 0
+
+
+def test_peaucellier_point_moves_on_its_straight_line():
+    """Closed form: D is the inverse of C (OC x OD = OA^2 - AC^2 = 20000 mm^2) and C runs on
+    a circle through O, so D stays on the line x = 20000 / (2 OQ) = 100 mm: its x, and the
+    x components of its velocity and acceleration, are 100 mm, 0, 0 at any crank angle."""
+    for angle in (20, 45, 60, 80):  # (the figure's D: left of C, until they meet at 90)
+        sol = turned(HERE / "peaucellier.toml", angle)
+        assert sol is not None
+        vs, as_ = sol.scales["v"], sol.scales["a"]
+        assert sol.P["D"][0] == pytest.approx(0.1, abs=1e-15)
+        assert abs(sol.V["D"][0]) <= 1e-12 * vs and abs(sol.A["D"][0]) <= 1e-12 * as_
+        oc, od = math.hypot(*sol.P["C"]), math.hypot(*sol.P["D"])
+        assert oc * od == pytest.approx(0.15 ** 2 - 0.05 ** 2, rel=1e-13)
