@@ -256,36 +256,41 @@ def locate(sol, prefix: str = "I") -> "Centres":
     warnings = []
     missing = [(i, j) for i in range(1, n + 1) for j in range(i + 1, n + 1)
                if (i, j) not in found]
-    while missing:
-        # as a textbook goes: the next centre is the first that two lines locate well;
-        # one that only nearly parallel lines locate waits until better lines are known
-        pick, fallback = None, None
-        for key in missing:
-            c = _kennedy(key, found, n, scale)
+    while True:
+        while missing:
+            # as a textbook goes: the next centre is the first that two lines locate well;
+            # one that only nearly parallel lines locate waits until better lines are known
+            pick, fallback = None, None
+            for key in missing:
+                c = _kennedy(key, found, n, scale)
+                if c is None:
+                    continue
+                if c.point is None or c.condition >= TOL.warn:
+                    pick = c
+                    break
+                if fallback is None or c.condition > fallback.condition:
+                    fallback = c
+            c = pick or fallback
             if c is None:
-                continue
-            if c.point is None or c.condition >= TOL.warn:
-                pick = c
                 break
-            if fallback is None or c.condition > fallback.condition:
-                fallback = c
-        c = pick or fallback
-        if c is None:
+            if c.point is not None and c.condition < TOL.singular:
+                raise SingularStepError(
+                    f"{c.label} is where {_words(c.lines[0])} and {_words(c.lines[1])} cross, "
+                    f"at {math.degrees(math.asin(c.condition)):.2g} deg (condition "
+                    f"{c.condition:.2g}): the lines are nearly parallel, the centre far and "
+                    "ill-determined", step=f"centre {c.label}")
+            if c.point is not None and c.condition < TOL.warn:
+                warnings.append(f"centre {c.label}: its lines cross at "
+                                f"{math.degrees(math.asin(c.condition)):.3g} deg (condition "
+                                f"{c.condition:.3g}): far and ill-conditioned")
+            key = (c.i, c.j)
+            found[key] = c
+            order.append(key)
+            missing.remove(key)
+        # every line through known centres coincides: one centre where the velocities
+        # agree on that line, then Kennedy's theorem again
+        if not missing or not _by_velocities(sol, names, found, order, missing, warnings):
             break
-        if c.point is not None and c.condition < TOL.singular:
-            raise SingularStepError(
-                f"{c.label} is where {_words(c.lines[0])} and {_words(c.lines[1])} cross, "
-                f"at {math.degrees(math.asin(c.condition)):.2g} deg (condition "
-                f"{c.condition:.2g}): the lines are nearly parallel, the centre far and "
-                "ill-determined", step=f"centre {c.label}")
-        if c.point is not None and c.condition < TOL.warn:
-            warnings.append(f"centre {c.label}: its lines cross at "
-                            f"{math.degrees(math.asin(c.condition)):.3g} deg (condition "
-                            f"{c.condition:.3g}): far and ill-conditioned")
-        key = (c.i, c.j)
-        found[key] = c
-        order.append(key)
-        missing.remove(key)
     if missing:
         raise SingularStepError(
             "Kennedy's theorem cannot locate " + ", ".join(f"I{i}{j}" for i, j in missing)
@@ -295,6 +300,78 @@ def locate(sol, prefix: str = "I") -> "Centres":
     if prefix != "I":
         found = _relabelled(found, order, prefix)
     return Centres(names, found, tuple(order), omegas, ratio_from, tuple(warnings), sol)
+
+
+def _by_velocities(sol, names, found, order, missing, warnings):
+    """The centres Kennedy's theorem leaves on one line (every line through known centres
+    is the same line: a slotted lever at mid-stroke, its rod translating), located on it
+    by the angular-velocity-ratio theorem read the other way: I_ij is the point whose
+    velocity is the same as a point of i and of j, ``omega_i x (X - I_1i) = omega_j x
+    (X - I_1j)``, with the omegas the ratio theorem gives from the centres already found.
+    Moves the first it locates from ``missing`` into ``found`` and ``order``: True, or
+    False where none can be."""
+    try:
+        w, frm = _omegas(sol, names, found)
+    except (KeyError, SingularStepError):
+        return False  # some omega cannot be had either: the caller says which are left
+
+    def field(i, x):
+        return _velocity_field(found, w, frm, i, x)
+
+    big = max(abs(x) for x in w.values()) or 1.0
+
+    def lines_of(key):
+        i, j = key
+        out = []
+        for k in range(1, len(names) + 1):
+            a, b = found.get((min(i, k), max(i, k))), found.get((min(k, j), max(k, j)))
+            if k not in key and a is not None and b is not None and _line(a, b) is not None:
+                out.append((a, b))
+        return out
+
+    # first the centres with the most lines (all the same line), in the textbook's order
+    for key in sorted(missing, key=lambda kk: -len(lines_of(kk))):
+        i, j = key
+        lines = lines_of(key)
+        if not lines:
+            continue
+        dw = w[i] - w[j]
+        p0 = next(x.point for x in lines[0] if x.point is not None)  # a point of the line
+        vi, vj = field(i, p0), field(j, p0)
+        dx, dy = vj[0] - vi[0], vj[1] - vi[1]
+        how = ("Kennedy's lines coincide: on that line where the two bodies' velocities "
+               "are equal (angular-velocity ratio)")
+        cond = min(1.0, abs(dw) / big)
+        if cond <= PARALLEL:
+            continue  # the same omega (a relative translation): left to the refusal
+        if cond < TOL.singular:
+            raise SingularStepError(
+                f"I{i}{j}: Kennedy's lines coincide and the two bodies' omegas differ by "
+                f"{cond:.2g} of the largest: the centre is far and ill-determined",
+                step=f"centre I{i}{j}")
+        if cond < TOL.warn:
+            warnings.append(f"centre I{i}{j}: the two bodies' omegas differ by {cond:.3g} "
+                            "of the largest: far and ill-conditioned")
+        # v_i(p0) + omega_i k x (X - p0) = v_j(p0) + omega_j k x (X - p0):
+        # k x (X - p0) = (dx, dy) / dw
+        c = Centre(i, j, (p0[0] + dy / dw, p0[1] - dx / dw), None, how,
+                   (lines[0], lines[-1]), cond)
+        found[key] = c
+        order.append(key)
+        missing.remove(key)
+        return True
+    return False
+
+
+def _velocity_field(found, w, frm, i, x):
+    """The velocity of the point x as a point of body i (from the centres and omegas)."""
+    if i == 1:
+        return (0.0, 0.0)
+    c = found[(1, i)]
+    if c.point is not None:
+        return (-w[i] * (x[1] - c.point[1]), w[i] * (x[0] - c.point[0]))
+    k = frm[i]  # a translating body: the velocity of its centre with k
+    return _velocity_field(found, w, frm, k, found[(min(k, i), max(k, i))].point)
 
 
 def _relabelled(found, order, prefix):
@@ -357,12 +434,7 @@ def _omegas(sol, names, found):
         return found[(min(i, j), max(i, j))]
 
     def field(i, x):
-        if i == 1:
-            return (0.0, 0.0)
-        c = get(1, i)
-        if c.point is not None:
-            return (-w[i] * (x[1] - c.point[1]), w[i] * (x[0] - c.point[0]))
-        return field(frm[i], get(frm[i], i).point)
+        return _velocity_field(found, w, frm, i, x)
 
     pending = list(range(3, n + 1))
     while pending:
@@ -371,8 +443,8 @@ def _omegas(sol, names, found):
             c1j = get(1, j)
             best = None
             for i in list(w):
-                if i == j:
-                    continue
+                if i == j or (min(i, j), max(i, j)) not in found:
+                    continue  # (not yet located: the omegas from the others)
                 cij = get(i, j)
                 if cij.point is None:
                     if c1j.point is not None and get(1, i).point is not None:

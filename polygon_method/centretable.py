@@ -29,17 +29,28 @@ from __future__ import annotations
 import math
 
 from .centres import Centre, Centres
+from .errors import TOL
 from .numbers import fmt, fmt_angular
 
 __all__ = ["centres_text"]
+
+
+def _size(sol) -> float:
+    """The mechanism's size (m): its longest link or farthest point from the origin."""
+    return max([lk.length for lk in sol.scene.links] + [math.hypot(*p) for p in sol.P.values()])
 
 
 def _where(sol, c: Centre) -> str:
     u, name = sol.scene.length_unit, sol.scene.units
     if c.point is None:
         deg = math.degrees(math.atan2(c.direction[1], c.direction[0])) % 180.0
+        if min(deg, 180.0 - deg) <= 1e-9:  # rounding noise about the x axis
+            deg = 0.0
         return f"at infinity, direction {fmt(deg, 4)} deg"
-    return f"({fmt(c.point[0] / u, 6)}, {fmt(c.point[1] / u, 6)}) {name}"
+    # rounding noise (a coordinate below TOL.negligible of the mechanism's size) is 0
+    size = _size(sol)
+    x, y = (0.0 if abs(v) <= TOL.negligible * size else v for v in c.point)
+    return f"({fmt(x / u, 6)}, {fmt(y / u, 6)}) {name}"
 
 
 def centres_text(ic: Centres) -> str:
@@ -66,6 +77,11 @@ def centres_text(ic: Centres) -> str:
             (a, b), (p, q) = c.lines
             cond = "" if c.condition >= 0.999 or c.point is None else \
                 f"; lines cross at {fmt(math.degrees(math.asin(min(c.condition, 1.0))), 3)} deg"
+            if "coincide" in c.how:  # located by the velocities on the common line
+                same = "" if (a, b) == (p, q) else f" = {p.label}-{q.label}: the same line"
+                out.append(f"  {c.label:<5}{_where(sol, c):<40} on {a.label}-{b.label}{same}; "
+                           f"on it where omega_{c.i} and omega_{c.j} give one velocity")
+                continue
             out.append(f"  {c.label:<5}{_where(sol, c):<40} on {a.label}-{b.label} and "
                        f"{p.label}-{q.label}{cond}")
     out.append("")
@@ -88,6 +104,7 @@ def centres_text(ic: Centres) -> str:
     out.append("")
     out.append("Velocities of the points (v = omega x distance from the centre with the "
                "ground):")
+    size = _size(sol)
     for p in sc.point_names:
         if p in sc.ground:
             continue
@@ -99,7 +116,10 @@ def centres_text(ic: Centres) -> str:
             out.append(f"  v_{p} = {fmt(v)} m/s (link {k} translates)")
             continue
         r = math.hypot(sol.P[p][0] - c.point[0], sol.P[p][1] - c.point[1])
-        out.append(f"  v_{p} = omega_{k} x {p}-{c.label} = {fmt(abs(ic.omegas[k]))} x "
+        if r <= TOL.negligible * size:  # the point is the centre (noise apart)
+            r = 0.0
+        out.append(f"  v_{p} = omega_{k} x {p}-{c.label} = "
+                   f"{fmt(abs(sol.shown(ic.omegas[k], 'omega')))} x "
                    f"{fmt(r / sc.length_unit, 5)} {sc.units} = {fmt(v)} m/s")
     for w in ic.warnings:
         out.append(f"warning: {w}")

@@ -33,7 +33,7 @@ import math
 import weakref
 from dataclasses import replace
 
-from .errors import AssemblyError, MobilityError, PolygonMethodError, SceneError
+from .errors import TOL, AssemblyError, MobilityError, PolygonMethodError, SceneError
 from .numbers import in_units
 from .plan import Bodies, Dims, Plan, _bodies_at
 from .scene import GuideSlider, Scene, key_line
@@ -253,7 +253,8 @@ class _Compiler:
             default = step.default_hint(self.P)
             sigma = self.pick(name, default, plus, minus, step, default=True)
             if math.dist(plus, minus) > 1e-9 * step.reach():
-                side = default if isinstance(default, str) else "farther along the guide"
+                side = ("on the side of the block" if default == "block side"
+                        else default if isinstance(default, str) else "farther along the guide")
                 self.notes.append(f"{name}: of its two positions the one {side} was taken "
                                   f"(default; set [assembly] {name} to choose)")
         else:
@@ -297,7 +298,10 @@ class _Compiler:
         return 1.0 if d1 < d2 else -1.0
 
     def fmt(self, xy):
-        return f"[{in_units(xy[0], self.unit)}, {in_units(xy[1], self.unit)}]"
+        """A position in the scene's units; rounding noise about an axis written 0."""
+        size = max([lk.length for lk in self.scene.links] + [abs(c) for c in xy])
+        x, y = (0.0 if abs(c) <= TOL.negligible * size else c for c in xy)
+        return f"[{in_units(x, self.unit)}, {in_units(y, self.unit)}]"
 
     # ----- what is left over
     def finish(self):
@@ -335,8 +339,12 @@ class _Compiler:
                          " redundant (both ends already fixed by the other links): remove "
                          f"{'it' if len(extra_links) == 1 else 'them'} or check the scene")
         if extra_sliders:
-            parts.append(f"slider{'s' if len(extra_sliders) > 1 else ''} "
-                         f"{', '.join(extra_sliders)} cannot slide (already fixed)")
+            one = len(extra_sliders) == 1
+            names, be = ", ".join(extra_sliders), "is" if one else "are"
+            parts.append(f"slider{'' if one else 's'} {names} {be} redundant ({names} {be} "
+                         "already placed by the other links and the crank: "
+                         f"{'its path adds' if one else 'their paths add'} a constraint, not "
+                         f"a motion): remove {'it' if one else 'them'} or check the scene")
         where = (f"[links] {', '.join(extra_links)}" if extra_links
                  else f"[sliders] {', '.join(extra_sliders)}")
         raise MobilityError(f"{mob}: over-constrained: " + "; ".join(parts), file=sc.file,

@@ -7,7 +7,7 @@ import math
 from .errorbound import SHOWN, shown_bounds
 from .errors import TOL
 from .numbers import fmt_angular
-from .solution import Solution
+from .solution import Solution, tidied
 
 __all__ = ["solution_text", "direction_deg"]
 
@@ -28,6 +28,12 @@ def _vec(x, y, digits=4, scale=0.0):
     return f"{m:.{digits}g} at {direction_deg(x, y):.1f} deg"
 
 
+def _coord(x: float) -> str:
+    """A coordinate to 4 decimals, never ``-0.0000`` (rounding noise about zero)."""
+    s = f"{x:.4f}"
+    return s[1:] if s.startswith("-") and float(s) == 0 else s
+
+
 def solution_text(sol: Solution) -> str:
     sc = sol.scene
     u = sc.length_unit
@@ -44,7 +50,7 @@ def solution_text(sol: Solution) -> str:
                  f"{'acceleration (m/s^2)':<24}")
     for p in sc.point_names:
         x, y = sol.P[p]
-        pos = f"({x / u:.4f}, {y / u:.4f})"
+        pos = f"({_coord(x / u)}, {_coord(y / u)})"
         lines.append(f"{p:<6} {pos:<24} {_vec(*sol.V[p], scale=sol.scales['v']):<24} "
                      f"{_vec(*sol.A[p], scale=sol.scales['a']):<24}")
     lines.append("")
@@ -66,7 +72,7 @@ def solution_text(sol: Solution) -> str:
     if sc.pins:
         lines.append("")
         lines.append("pin   radius (" + sc.units + ")  rubbing velocity (m/s)")
-        for name, r in sol.rubbing.items():
+        for name, r in tidied(sol).rubbing.items():  # two equal omegas rub at 0
             if not r.pairs:
                 lines.append(f"{name:<5} {r.radius / u:<12.6g} 0 (the pin joins only "
                              f"{', '.join(r.bodies) or 'nothing'})")
@@ -76,7 +82,7 @@ def solution_text(sol: Solution) -> str:
                          + (f"   ({detail})" if len(r.pairs) > 1 else ""))
     if sol.input_torque is not None:
         lines.append("")
-        t = sol.input_torque
+        t = tidied(sol).input_torque  # from the velocities without rounding noise
         lines.append(f"input torque on {inp.crank}: {fmt_angular(t, 'N m')} "
                      "(power balance, no friction or inertia)")
     lines.append("")

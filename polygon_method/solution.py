@@ -212,3 +212,44 @@ def solve(scene: Scene) -> Solution:
 
 
 _new = object.__new__
+
+
+def tidied(sol: Solution) -> Solution:
+    """``sol`` with its rounding noise set to exact zeros, for reports that write every
+    number out (the step table, the centres): a component below ``TOL.negligible`` of the
+    largest of its kind (a position of the mechanism's size) is 0, so a link that does not
+    turn has no sense and a block that does not slide no Coriolis component."""
+    sc = sol.scene
+    k = sol.scales
+    tiny = TOL.negligible
+    size = max([lk.length for lk in sc.links]
+               + [hypot(*p) for p in sol.P.values()] + [0.0])
+
+    def vec(d, scale):
+        lim = tiny * scale
+        return {n: (0.0 if abs(x) <= lim else x, 0.0 if abs(y) <= lim else y)
+                for n, (x, y) in d.items()}
+
+    def num(d, kind):
+        return {n: sol.shown(x, kind) for n, x in d.items()}
+
+    lim = tiny * k["a"]
+    S = {n: (sol.shown(s[0], "v"), sol.shown(s[1], "a"))
+         + tuple(0.0 if abs(c) <= lim else c for c in s[2:]) for n, s in sol.S.items()}
+    out = Solution(sc, sol.plan, vec(sol.P, size), vec(sol.V, k["v"]), vec(sol.A, k["a"]),
+                   num(sol.W, "omega"), num(sol.Al, "alpha"), S, sol.cond, sol.theta)
+    for rec in out.rubbing.values():  # |w1 - w2| r of two equal omegas: 0
+        lim = tiny * k["omega"] * rec.radius
+        rec.values = tuple(0.0 if v <= lim else v for v in rec.values)
+        rec.rubbing_velocity = max(rec.values, default=0.0)
+    t = out.input_torque
+    if t is not None:
+        # each load's power is noise against |F| v (|T_L| omega), the torque against their
+        # sum over the crank's omega
+        sizes = [hypot(*ld.force) * k["v"] if ld.force is not None
+                 else abs(ld.torque) * k["omega"] for ld in sc.loads]
+        out._cache["power"] = [(what, 0.0 if abs(p) <= tiny * bound else p)
+                               for (what, p), bound in zip(out.power_terms, sizes)]
+        if abs(t) <= tiny * sum(sizes) / abs(sc.input.omega):
+            out._cache["torque"] = 0.0
+    return out

@@ -41,7 +41,7 @@ from .numbers import fixed as _fixed, fmt, sense_word
 from .constructions import acceleration_constructions, velocity_constructions
 from .scales import DRAWING_PRECISION_CM, diagram_scales, extent
 from .scene import FixedPath, GuideSlider, split_name
-from .solution import Solution
+from .solution import Solution, tidied
 
 __all__ = ["steps_text", "steps_blocks", "read_off", "fmt", "sense_word"]
 
@@ -267,18 +267,20 @@ def _readoff_rows(sol, constructions, scale, unit):
     """(name, label, length cm, read value, exact value) of every vector a construction
     finds; the crank's own vector is set out, not read (its length is exact)."""
     rows, seen = [], set()
+    kind = "v" if unit == "m/s" else "a"
     for c in constructions:
         for v in c.found:
             name = _vector_name(v)
             if name in seen or _is_ground_relative(sol, v) or v.kind == "centripetal":
                 continue
             seen.add(name)
+            mag = sol.shown(v.magnitude, kind)  # a difference of equal images: 0
             if c.step == 0 and c.phase == "velocity":
-                cm, val = scale.cm(v.magnitude), v.magnitude
+                cm, val = scale.cm(mag), mag
             else:
-                cm, val = read_off(v.magnitude, scale)
+                cm, val = read_off(mag, scale)
             rows.append((name, v.label, f"{cm:.2f}", f"{_fixed(val)} {unit}",
-                         f"{fmt(v.magnitude)} {unit}"))
+                         f"{fmt(mag)} {unit}"))
     return rows
 
 
@@ -328,6 +330,11 @@ def _sliding_items(sol):
     out = []
     for s in sol.scene.sliders:
         vs = sol.S[s.point][0]
+        if vs == 0:  # (noise is 0 here: the solution is tidied)
+            guide = f"the {s.label} path" if isinstance(s, FixedPath) else s.guide
+            out.append(f"vs_{s.point} = 0 m/s: {s.point} does not slide along {guide} at "
+                       "this instant")
+            continue
         if isinstance(s, FixedPath):
             along = f"along the {s.label} path ({'+' if vs >= 0 else '-'} direction)"
         else:
@@ -439,7 +446,7 @@ def _acceleration_table(sol):
         if lk.key in sol.plan.fixed_links:
             continue
         X, Y = orient[lk.key]
-        v = sol.speed(X, Y)
+        v = sol.shown(sol.speed(X, Y), "v")  # two equal images: 0
         L = lk.length
         cen = v * v / L
         al = sol.Al[lk.key]
@@ -508,7 +515,9 @@ def _acceleration(doc, sol, ascale):
 
 
 def steps_blocks(sol: Solution) -> _Doc:
-    """The hand solution as a document (headings, paragraphs, lists, tables)."""
+    """The hand solution as a document (headings, paragraphs, lists, tables). Rounding
+    noise is written as 0 (:func:`~polygon_method.solution.tidied`)."""
+    sol = tidied(sol)
     sc = sol.scene
     space, vscale, ascale = diagram_scales(sol)
     doc = _Doc()

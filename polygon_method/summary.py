@@ -10,6 +10,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .errors import TOL
 from .kinematics import Motion
 from .scene import FixedPath, Scene
 from .sweeps import (SweepResult, rubbing_arrays, select, torque_array, angles_ok,
@@ -103,8 +104,12 @@ class Summary:
                     out.append(f"{e.name:<{w}}  {e.unit:<7} {e.maximum:>12.6g} "
                                f"{'(constant)':>10}")
                     continue
-                mx = "+unbounded" if e.max_unbounded else f"{e.maximum:.6g}"
-                mn = "-unbounded" if e.min_unbounded else f"{e.minimum:.6g}"
+                # rounding noise about a true zero (a speed at a dead centre) is 0
+                tiny = TOL.negligible * max(abs(e.maximum), abs(e.minimum))
+                mx = "+unbounded" if e.max_unbounded else \
+                    f"{0.0 if abs(e.maximum) <= tiny else e.maximum:.6g}"
+                mn = "-unbounded" if e.min_unbounded else \
+                    f"{0.0 if abs(e.minimum) <= tiny else e.minimum:.6g}"
                 out.append(f"{e.name:<{w}}  {e.unit:<7} {mx:>12} "
                            f"{fmt_deg(e.at_max, 3):>10} {mn:>12} "
                            f"{fmt_deg(e.at_min, 3):>10}"
@@ -267,6 +272,9 @@ class _Reducer:
                     row[2], row[3] = val, t
                 else:
                     row[4], row[5] = val, t
+        if n:
+            self._change_point_minima(rows, spacing, float(np.min(theta)),
+                                      float(np.max(theta)))
         deg = degrees_fn(dom)
         unbounded = self._unbounded(rows, spacing)
         for row in rows:  # an unbounded extreme is at the limit position, not a sample
@@ -287,6 +295,27 @@ class _Reducer:
             rng = (deg(dom.lo), deg(dom.lo) + math.degrees(dom.hi - dom.lo))
         return Summary(self.scene, requested, evaluated, extremes, dom.limits,
                        dom.change_points, tuple(dom.notes), formulas, rng, deg)
+
+    def _change_point_minima(self, rows, spacing, lo, hi):
+        """At a change point the step's two assemblies meet: its transmission angle is 0
+        there (the samples next to it, whose construction is not trusted, carry the refusal
+        threshold's value instead). A row whose minimum is next to a followed change point
+        of its step gets 0 at the change point's angle, where that is within the requested
+        angles ``lo`` to ``hi``."""
+        dom = self.sw.domain
+        near = 2 * (spacing or 0.0) + 0.02
+        for cp in dom.change_points:
+            if not cp.followed:
+                continue
+            for row in rows:
+                if row[0] != f"mu at {cp.point}" or row[5] is None:
+                    continue
+                (tm,), _ = dom.map(np.array([row[5]]))
+                d = cp.theta - float(tm)
+                if dom.full_turn:
+                    d = (d + math.pi) % TWO_PI - math.pi
+                if abs(d) < near and lo <= row[5] + d <= hi:
+                    row[4], row[5] = 0.0, row[5] + d
 
     def _unbounded(self, rows, spacing) -> dict:
         """(name, sense) -> the limit position's angle, for the extremes found next to a limit position that grow without

@@ -37,12 +37,15 @@ UNITS: dict[str, dict[str, float]] = {
     "angular_acceleration": {"rad/s^2": 1.0, "rad/s²": 1.0, "rad/s2": 1.0,
                              "rad/s/s": 1.0},
     "force": {"N": 1.0, "kN": 1e3, "MN": 1e6, "lbf": 4.4482216152605},
-    "velocity": {"m/s": 1.0, "mm/s": 1e-3, "cm/s": 1e-2, "km/h": 1 / 3.6},
+    "velocity": {"m/s": 1.0, "mm/s": 1e-3, "cm/s": 1e-2, "km/h": 1 / 3.6,
+                 "in/s": 0.0254, "ft/s": 0.3048},
     "acceleration": {"m/s^2": 1.0, "m/s²": 1.0, "m/s2": 1.0, "mm/s^2": 1e-3, "mm/s²": 1e-3,
-                     "mm/s2": 1e-3, "cm/s^2": 1e-2, "cm/s²": 1e-2, "cm/s2": 1e-2},
+                     "mm/s2": 1e-3, "cm/s^2": 1e-2, "cm/s²": 1e-2, "cm/s2": 1e-2,
+                     "in/s^2": 0.0254, "in/s²": 0.0254, "ft/s^2": 0.3048, "ft/s²": 0.3048},
     "torque": {"N m": 1.0, "N·m": 1.0, "Nm": 1.0, "N.m": 1.0, "N-m": 1.0,
                "kN m": 1e3, "kN·m": 1e3, "kNm": 1e3, "kN.m": 1e3, "N mm": 1e-3, "Nmm": 1e-3,
-               "N·mm": 1e-3},
+               "N·mm": 1e-3, "lbf in": 4.4482216152605 * 0.0254,
+               "lbf ft": 4.4482216152605 * 0.3048},
     "percent": {"%": 0.01},
 }
 

@@ -32,7 +32,7 @@ def given(sc) -> list:
     out.append("Links: " + ", ".join(f"{lk.key} = {_len(sc, lk.length)}" for lk in sc.links)
                + ".")
     for cp in sc.points:
-        out.append(f"Point {cp.name}: {cp.how} ({sc.units}).")  # "on BC, 40 from B"
+        out.append(f"Point {cp.name}: {cp.how}.")  # "on BC, 40 mm from B"
     for s in sc.sliders:
         if hasattr(s, "guide"):  # a block on a moving link (a scene record, not a step)
             out.append(f"A block at {s.point} slides along link {s.guide}.")

@@ -38,7 +38,7 @@ def test_every_datum_is_stated(path):
     for p in sc.assembly:
         assert f"Of its two positions, {p} is the one " in text
     for cp in sc.points:
-        assert f"Point {cp.name}: on {cp.link}, " in text
+        assert f"Point {cp.name}: on {cp.link}" in text
     inp = sc.input
     assert f"makes {fmt(math.degrees(inp.angle) % 360)}°" in text
     assert inp.speed_text in text

@@ -7,6 +7,7 @@ import textwrap
 from dataclasses import dataclass
 
 from ..numbers import textbook as _g
+from ..units import UNITS
 
 #: relative error of a value rounded to three significant figures (the floor of every
 #: tolerance)
@@ -62,11 +63,42 @@ class Verdict:
                 "diagnosis": self.diagnosis, "line": self.line, **(self.extra or {})}
 
 
+#: the SI unit of an answer -> the kind of quantity (units.UNITS) it is given in
+_KIND_OF_UNIT = {"m/s": "velocity", "m/s^2": "acceleration", "rad/s": "angular_velocity",
+                 "rad/s^2": "angular_acceleration", "N m": "torque"}
+
+
+def _given_unit(v: Verdict):
+    """(unit, factor to SI) the answer was written in, where that is not the SI unit
+    (``"125.7 in/s"`` -> ``("in/s", 0.0254)``), else None."""
+    if not isinstance(v.raw, str):
+        return None
+    words = v.raw.split()[1:]
+    if words and words[-1] in ("cw", "ccw", "clockwise", "anticlockwise", "acw",
+                               "counterclockwise"):
+        words = words[:-1]
+    unit = " ".join(words)
+    table = UNITS.get(_KIND_OF_UNIT.get(v.unit, ""), {})
+    factor = table.get(unit)
+    if not unit or factor is None or factor == 1.0:
+        return None
+    return unit, factor
+
+
+def correct_text(v: Verdict) -> str:
+    """How the check table (terminal and page) writes the correct value."""
+    return v.correct_text or _show(v, v.correct)
+
+
 def _show(v: Verdict, x: float) -> str:
+    """The correct value in SI, and in the answer's own unit where it was another (a
+    problem set in inches or rpm is answered in its units)."""
+    own = _given_unit(v)
     if v.unit in ("rad/s", "rad/s^2", "N m") and v.signed:
         s = "ccw" if x > 0 else ("cw" if x < 0 else "")
-        return f"{_g(abs(x))} {v.unit}" + (f" {s}" if s else "")
-    return f"{_g(x)} {v.unit}"
+        text = f"{_g(abs(x))} {v.unit}" + (f" {s}" if s else "")
+        return text + (f" ({_g(abs(x) / own[1])} {own[0]})" if own else "")
+    return f"{_g(x)} {v.unit}" + (f" ({_g(x / own[1])} {own[0]})" if own else "")
 
 
 def verdicts_text(verdicts, title: str = "") -> str:
@@ -75,7 +107,7 @@ def verdicts_text(verdicts, title: str = "") -> str:
     for v in verdicts:
         err = "-" if v.error is None else f"{100 * v.error:.2f} %"
         tol = "-" if not math.isfinite(v.tolerance) else f"{100 * v.tolerance:.2g} %"
-        rows.append((v.key, v.raw, v.correct_text or _show(v, v.correct), err, tol,
+        rows.append((v.key, v.raw, correct_text(v), err, tol,
                      "right" if v.ok else "WRONG"))
     widths = [max(len(r[i]) for r in rows) for i in range(6)]
     lines = [title] if title else []

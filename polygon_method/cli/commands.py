@@ -252,7 +252,7 @@ def _cmd_sweep(args) -> int:
         print(summary_of(res).text())
     else:
         print(f"{len(res)} of {res.requested} crank angles evaluated"
-              + (f"; {_limits_text(res.domain)}" if res.domain.limits else ""))
+              + (f" {_limits_text(res.domain)}" if res.domain.limits else ""))
     return 0
 
 

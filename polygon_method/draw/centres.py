@@ -63,12 +63,15 @@ def centres_sketch(sol, scale: Scale, ic) -> _Sketch:
             c = ic.centres[key]
             for a, b in c.lines:
                 pts = [cm(x.point) for x in (a, b, c) if x.point is not None]
-                if len(pts) >= 2:
-                    p0, p1 = pts[0], max(pts[1:], key=lambda q: math.dist(q, pts[0]))
+                p0 = pts[0]
+                p1 = max(pts[1:], key=lambda q: math.dist(q, p0), default=p0)
+                if math.dist(p0, p1) > 1e-9 * (box[2] - box[0]):
                     d = (p1[0] - p0[0], p1[1] - p0[1])
-                else:
-                    inf = next(x for x in (a, b, c) if x.point is None)
-                    p0, d = pts[0], inf.direction
+                else:  # the known points at one place (two centres at one pin)
+                    inf = next((x for x in (a, b, c) if x.point is None), None)
+                    if inf is None:
+                        continue  # a line through one point only: nothing to draw
+                    d = inf.direction
                 seg = _clip(box, p0, d)
                 if seg is not None:
                     sk.line(list(seg), gid=f"kennedy-{c.label}-{a.label}-{b.label}",

@@ -114,7 +114,8 @@ class Linkage:
                 out.append(f"  WARNING: below {TOL.transmission_warn_deg:g} deg (the "
                            f"lecture's advice) for crank angles {rng} deg")
         if self.output_range:
-            out.append("")
+            if out[-1]:  # (no transmission angle above: one blank line is enough)
+                out.append("")
             out.extend(self.output_range)
         if self.time_lines:
             out.extend(self.time_lines)

@@ -66,6 +66,8 @@ def _engine_lines(cyc: _Cycle, sk: SliderCrank, scene) -> list:
              "rad/s^2": W * W + abs(al)}
     for name, unit, ex, ap, form in rows:
         err = _err(ap, ex, sizes[unit])
+        zero = 1e-12 * sizes[unit]  # rounding noise about a true zero is written 0
+        ex, ap = (0.0 if abs(v) <= zero else v for v in (ex, ap))
         out.append(f"  {name:<{wlab}} {ex:>12.6g} {ap:>12.6g} {err:>9}  {form} ({unit})")
     # maximum piston velocity: exact (refined over the cycle) and by the formula
     dvec = d

@@ -31,6 +31,38 @@ def _flat(xy) -> list:
     return round_sig(np.column_stack([np.broadcast_to(x, y.shape), y]))
 
 
+def _noise_scales(res, moving, links, n) -> dict:
+    """Per frame, the largest of each kind (as :attr:`Solution.scales`, and the mechanism's
+    size for positions): what rounding noise is measured against."""
+    def b(x):
+        return np.broadcast_to(np.asarray(x, dtype=float), (n,))
+
+    def most(arrays):
+        return np.max(np.array(arrays), axis=0) if arrays else np.zeros(n)
+
+    w = most([np.abs(b(res.W[lk.key])) for lk in links])
+    size = np.maximum(most([np.hypot(b(res.P[p][0]), b(res.P[p][1])) for p in moving]),
+                      max([lk.length for lk in links] + [0.0]))
+    return {"P": size, "V": most([np.hypot(b(res.V[p][0]), b(res.V[p][1])) for p in moving]),
+            "A": most([np.hypot(b(res.A[p][0]), b(res.A[p][1])) for p in moving]),
+            "W": w, "Al": most([np.abs(b(res.Al[lk.key])) for lk in links]) + w * w}
+
+
+def _torque_scale(sc, k):
+    """Per frame, the size of the input torque's terms: sum |F| v + |T| omega, over the
+    crank's omega (what the torque's rounding noise is measured against)."""
+    forces = sum(float(np.hypot(*ld.force)) for ld in sc.loads if ld.force is not None)
+    torques = sum(abs(ld.torque) for ld in sc.loads if ld.torque is not None)
+    return (forces * k["V"] + torques * k["W"]) / abs(sc.input.omega)
+
+
+def _quiet(x, scale, n):
+    """``x`` (one value per frame) with rounding noise, at most ``TOL.negligible`` of its
+    frame's ``scale``, set to 0: the page writes 0, not 1.6e-15 rad/s ccw."""
+    x = np.broadcast_to(np.asarray(x, dtype=float), (n,))
+    return np.where(np.abs(x) <= TOL.negligible * scale, 0.0, x)
+
+
 def _xy(fr: Frames, phase):
     res = fr.res
     return {"configuration": res.P, "velocity": res.V, "acceleration": res.A}[phase]
@@ -72,6 +104,7 @@ def page_data(fr: Frames) -> dict:
             sliders.append({"point": s.point, "u": [float(c) for c in s.u],
                             "through": [float(c) for c in s.through]})
     n = len(fr)
+    k = _noise_scales(res, moving, links, n)
     d = {
         "title": sc.title or sc.file or "mechanism",
         "units": sc.units, "unit": sc.length_unit,
@@ -85,15 +118,15 @@ def page_data(fr: Frames) -> dict:
         "links": [[lk.p, lk.q, lk.key] for lk in links],
         "plates": [[sc.link(cp.link).p, sc.link(cp.link).q, cp.name] for cp in sc.points],
         "sliders": sliders,
-        "P": {p: _flat(res.P[p]) for p in moving},
-        "V": {p: _flat(res.V[p]) for p in moving},
-        "A": {p: _flat(res.A[p]) for p in moving},
-        "W": {lk.key: round_sig(np.broadcast_to(res.W[lk.key], (n,))) for lk in links},
-        "Al": {lk.key: round_sig(np.broadcast_to(res.Al[lk.key], (n,))) for lk in links},
-        "S": {s.point: [round_sig(np.broadcast_to(res.S[s.point][j], (n,))) for j in range(4)]
-              for s in sc.sliders},
+        "P": {p: _flat([_quiet(c, k["P"], n) for c in res.P[p]]) for p in moving},
+        "V": {p: _flat([_quiet(c, k["V"], n) for c in res.V[p]]) for p in moving},
+        "A": {p: _flat([_quiet(c, k["A"], n) for c in res.A[p]]) for p in moving},
+        "W": {lk.key: round_sig(_quiet(res.W[lk.key], k["W"], n)) for lk in links},
+        "Al": {lk.key: round_sig(_quiet(res.Al[lk.key], k["Al"], n)) for lk in links},
+        "S": {s.point: [round_sig(_quiet(res.S[s.point][j], k["V" if j == 0 else "A"], n))
+                        for j in range(4)] for s in sc.sliders},
         "torque": None if res.input_torque is None else
-        round_sig(np.broadcast_to(res.input_torque, (n,))),
+        round_sig(_quiet(res.input_torque, _torque_scale(sc, k), n)),
         "sense": sense(sc.input.omega),
         "warnBelow": TOL.warn,
     }

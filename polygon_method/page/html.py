@@ -19,6 +19,7 @@ import math
 from html import escape
 from importlib.resources import files
 
+from ..check.verdicts import correct_text
 from ..numbers import fmt, sense
 from ..steptable import steps_blocks
 from ..words import given
@@ -53,13 +54,6 @@ def blocks_html(blocks) -> str:
     return "\n".join(out)
 
 
-def _shown(v, x) -> str:
-    if v.unit in ("rad/s", "rad/s^2", "N m") and v.signed:
-        s = sense(x)
-        return f"{fmt(abs(x))} {v.unit}" + (f" {s}" if s else "")
-    return f"{fmt(x)} {v.unit}"
-
-
 def check_html(verdicts, title: str) -> str:
     """The check table: each answer given, correct, error, tolerance, verdict, diagnosis."""
     rows = []
@@ -69,7 +63,7 @@ def check_html(verdicts, title: str) -> str:
         verdict = '<span class="right">right</span>' if v.ok else '<span class="wrong">WRONG</span>'
         why = "" if v.ok else escape(v.diagnosis or "none of the known mistakes explains it")
         rows.append("<tr>" + "".join(f"<td>{escape(c)}</td>" for c in (
-            v.key, v.raw, v.correct_text or _shown(v, v.correct), err, tol))
+            v.key, v.raw, correct_text(v), err, tol))
             + f"<td>{verdict}</td><td>{why}</td></tr>")
     wrong = sum(not v.ok for v in verdicts)
     rules = "; ".join(sorted({v.rule for v in verdicts}))

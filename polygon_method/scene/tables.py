@@ -13,6 +13,17 @@ from .records import (ANSWER_KINDS, INPUT_KEYS, Answer, CarriedPoint, FixedPath,
                       Input, Load, Pin, split_name)
 
 
+def _unit_at(ang: float) -> tuple:
+    """(cos, sin) of a direction (rad), exact where it is a whole number of right angles
+    (a force "direction = 270" is straight down, not 1.8e-16 to the side; a path at
+    "180 deg" is horizontal)."""
+    q = ang / (math.pi / 2)
+    k = round(q)
+    if abs(q - k) <= 1e-12:
+        return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[k % 4]
+    return (math.cos(ang), math.sin(ang))
+
+
 def _suggest(word, choices) -> str:
     return did_you_mean(word, list(choices))
 
@@ -29,6 +40,10 @@ def _which_point(name, known) -> str:
 
 class _Tables:
     """The scene reader's methods for one table each (mixed into the reader)."""
+
+    def _words(self, metres: float) -> str:
+        """A length (m) in the scene's unit, as the step tables write it: ``280 mm``."""
+        return f"{metres / self.scale():.6g} {self.unit}"
 
     def carried_points(self, index, ground):
         table = self.table("points")
@@ -68,7 +83,11 @@ class _Tables:
                 ox, oy = frame[link.other(start)]
                 t = d / link.length
                 xy = (sx + t * (ox - sx), sy + t * (oy - sy))
-                how = f"on {spec['on']}, {spec['along']} from {start}"
+                far = link.other(start)
+                where = (f"{spec['on']} produced beyond {start}" if d < 0 else
+                         f"{spec['on']} produced beyond {far}" if d > link.length else
+                         spec['on'])
+                how = f"on {where}, {self._words(abs(d))} from {start}"
             else:
                 dist = spec["distances"]
                 if not isinstance(dist, dict) or len(dist) != 2:
@@ -103,8 +122,8 @@ class _Tables:
                 ex, ey = (x2 - x1) / e, (y2 - y1) / e
                 sign = 1.0 if turn == "ccw" else -1.0
                 xy = (x1 + along * ex - sign * h * ey, y1 + along * ey + sign * h * ex)
-                how = (f"on {spec['on']}, {r1}{name} = {spec['distances'][r1]}, {r2}{name} = "
-                       f"{spec['distances'][r2]}, {r1}{r2}{name} read {turn}")
+                how = (f"on {spec['on']}, {r1}{name} = {self._words(d1)}, {r2}{name} = "
+                       f"{self._words(d2)}, {r1}{r2}{name} read {turn}")
             frame[name] = xy
             L = link.length
             out.append(CarriedPoint(name, link.key, xy[0] / L, xy[1] / L, how))
@@ -176,7 +195,7 @@ class _Tables:
                 through = ground[through]
             else:
                 through = self.coords(through, "sliders", name)
-            u = {0.0: (1.0, 0.0), math.pi / 2: (0.0, 1.0)}.get(ang, (math.cos(ang), math.sin(ang)))
+            u = _unit_at(ang)
             out.append(FixedPath(name, u, through, label))
         return out
 
@@ -285,7 +304,8 @@ class _Tables:
                                      "loads", name)
                 ang = self.qty(spec["direction"], "angle", "loads", name,
                                default_unit="deg").value
-                fx, fy = mag * math.cos(ang), mag * math.sin(ang)
+                ux, uy = _unit_at(ang)
+                fx, fy = mag * ux, mag * uy
             out.append(Load(name, force=(fx, fy)))
         return out
 

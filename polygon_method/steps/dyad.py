@@ -273,6 +273,8 @@ class Dyad(Step):
 
     def why(self, e):
         u, n = self.unit, self.uname
+        if e <= TOL.negligible * (self.l1 + self.l2):
+            e = 0.0  # B and D coincide to rounding (e.g. at cos 180 deg): 0, not 1.2e-14
         if self.l1 + self.l2 < e:
             return (f"cannot assemble {self.point}: {self.side(1)} + {self.side(2)} = "
                     f"{in_units(self.l1 + self.l2, u)} {n} < {self.b}{self.d} = "

@@ -23,6 +23,7 @@ from dataclasses import dataclass
 
 from ..numbers import in_units
 from ..scene import FixedPath, GuideSlider
+from .slotted import under_label
 from .base import (Construction, DirectionLine, Step, Vector, absolute, add, centripetal,
                    image_label, perp, pole_text, relative, sub, unit)
 
@@ -293,7 +294,11 @@ class SliderDyad(Step):
         return {self.link: (self.point, self.b)}
 
     def output(self, ground):
-        return ("slider", self.point) if self.path is not None else None
+        if self.path is not None:
+            return ("slider", self.point)
+        if self.b in ground:  # a rocker about its fixed pivot, its end sliding on a moving link
+            return ("rocker", self.link, self.b, self.point)
+        return None
 
     def position_words(self, L, which, angle_deg):
         where = (f"the {self.path.label} path of {self.point}" if self.path is not None
@@ -318,7 +323,7 @@ class SliderDyad(Step):
                 g1 = P[self.g1]
                 u = unit(*sub(P[self.g2], g1))
                 through = guide_point(*g1, x, y, sol.W[self.guide], *V[self.g1])
-                tl = f"{lab(X)}1"
+                tl = under_label(sol, X, ph)
                 rel = f"parallel to {self.guide}"
                 given = (Vector(V[self.g1], through, f"{lab(self.g1)}{tl}", "relative",
                                 f"v of the point of {self.guide} under {X}",
@@ -347,7 +352,7 @@ class SliderDyad(Step):
             through = add(under, cor)
             tl = "the end of the Coriolis component"
             rel = f"parallel to {self.guide}"
-            given += [Vector(A[self.g1], under, f"{lab(X)}1", "relative",
+            given += [Vector(A[self.g1], under, under_label(sol, X, ph), "relative",
                              f"a of the point of {self.guide} under {X}", ""),
                       Vector(under, through, "cor", "coriolis", f"Coriolis at {X}",
                              f"2 omega_{self.guide} vs = "

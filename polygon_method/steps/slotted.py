@@ -104,6 +104,16 @@ def _reference(sc, guide, points):
     return None
 
 
+
+def under_label(sol, X: str, phase: str = "velocity") -> str:
+    """The image of the guide's point under the block at X: ``a1`` (``a1'``), or ``a2``
+    and so on where the scene has a point A1 of its own (whose image is a1)."""
+    names = {p.upper() for p in sol.scene.point_names}
+    k = 1
+    while f"{X}{k}".upper() in names:
+        k += 1
+    return f"{X.lower()}{k}" + ("'" if phase == "acceleration" else "")
+
 @dataclass(frozen=True)
 class SlottedLink(Step):
     """RPR: a block pinned at known A slides along link K-N that turns about known K."""
@@ -291,7 +301,7 @@ class SlottedLink(Step):
         if ph == "velocity":
             V = sol.V
             coincident = add(V[K], (-w * kA[1], w * kA[0]))
-            c = f"{Ab.lower()}1"  # the lever's point under the block (c1 at a swivel C)
+            c = under_label(sol, Ab, ph)  # the lever's point under the block (c1 at a swivel C)
             lines = (DirectionLine(V[K], unit(*perp(kA)), lab(K), f"perpendicular to {K}{Ab}"),
                      DirectionLine(V[Ab], u, lab(Ab), f"parallel to {self.guide}"))
             text = (f"through {pole_text(sol, K, ph)} draw a line perpendicular to {K}{Ab} (the "
@@ -314,7 +324,7 @@ class SlottedLink(Step):
         under = add(cen_end, (-al * kA[1], al * kA[0]))
         cor = sol.coriolis(Ab)
         back = sub(A[Ab], cor)
-        c = f"{Ab.lower()}1'"
+        c = under_label(sol, Ab, ph)
         cen = Vector(A[K], cen_end, "cen", "centripetal", f"centripetal of {Ab}{K} on "
                      f"{self.guide}", f"omega^2 x {K}{Ab} = {w * w * math.hypot(*kA):.4g} "
                      f"m/s^2, towards {K}")

@@ -35,7 +35,7 @@ from ..kinematics import evaluate
 from ..linkage import four_bar_of, grashof, slider_crank_of, slotted_of
 from ..compiler import compile_plan
 from ..scene import Scene, parse_scene, scene_from_table, scene_table
-from ..solution import solve
+from ..solution import solve, tidied
 from .papers import (answer, answer_key_csv, answer_key_markdown, sheet_markdown, sheet_pdf,
                      summary_text)
 
@@ -462,5 +462,6 @@ def _confirm(b, k, width, var, plan, title, seed, shape, cls, branches, rejected
     if got != cls:
         rejected["another linkage class"] += 1
         return None
-    return Variant(vid, name, values, shown, text, sc, sol, least, got)
+    # the key's values without rounding noise (a rod that does not turn: 0, not 3.7e-15)
+    return Variant(vid, name, values, shown, text, sc, tidied(sol), least, got)
 

@@ -1,0 +1,146 @@
+"""The textbook corpus (tests/textbook/*.toml) and what its tests share: the scenes, their
+solutions and 50-digit references (cached), the comparison with the reference, the scenes
+turned to other crank angles, the other assembly of a point."""
+
+import math
+import re
+from pathlib import Path
+
+from mpmath import mpf
+
+from polygon_method import load_scene, parse_scene, solve
+from polygon_method.errors import PolygonMethodError
+from polygon_method.scene import FixedPath, GuideSlider
+from reference import reference_solution
+
+__all__ = ["HERE", "FILES", "REL", "NOISE", "solved", "worst_error", "at_angle", "turned",
+           "other_position", "guide_direction"]
+
+HERE = Path(__file__).resolve().parent / "textbook"
+FILES = sorted(HERE.glob("*.toml"))
+REL = 1e-9
+NOISE = re.compile(r"\d(\.\d+)?e-(1[0-9]|[2-9][0-9])")  # a number below 1e-10: noise
+
+
+def _norm(v):
+    return math.hypot(float(v[0]), float(v[1])) if isinstance(v, tuple) else abs(float(v))
+
+
+def _err(got, want, scale):
+    if isinstance(want, tuple):
+        d = math.hypot(float(mpf(got[0]) - want[0]), float(mpf(got[1]) - want[1]))
+    else:
+        d = abs(float(mpf(got) - want))
+    return d / max(_norm(want), scale, 1e-300)
+
+
+_CACHE = {}
+
+
+def solved(path):
+    if path not in _CACHE:
+        scene = load_scene(path)
+        sol = solve(scene)
+        _CACHE[path] = scene, sol, reference_solution(scene, sol.P)
+    return _CACHE[path]
+
+
+def worst_error(scene, sol, ref):
+    """(relative error, what) of the worst quantity against the reference."""
+    errs = []
+    for tab, got in (("positions", sol.P), ("velocities", sol.V), ("accelerations", sol.A)):
+        scale = max(_norm(v) for v in ref[tab].values())
+        errs += [(_err(tuple(got[n]), ref[tab][n], scale), f"{tab} {n}")
+                 for n in scene.point_names]
+    w = max(_norm(v) for v in ref["omega"].values())
+    for tab, got, scale in (("omega", sol.W, w),  # alpha's size: omega^2 as well (a
+                            ("alpha", sol.Al,     # parallelogram has every alpha 0)
+                             max(_norm(v) for v in ref["alpha"].values()) + w * w)):
+        errs += [(_err(got[lk.key], ref[tab][lk.key], scale), f"{tab} {lk.key}")
+                 for lk in scene.links]
+    vs = max(_norm(v) for v in ref["velocities"].values())
+    as_ = max(_norm(v) for v in ref["accelerations"].values())
+    for sl in scene.sliders:
+        want, got = ref["sliders"][sl.point], sol.S[sl.point]
+        errs += [(_err(got[0], want["vs"], vs), f"sliding velocity {sl.point}"),
+                 (_err(got[1], want["as"], as_), f"sliding acceleration {sl.point}"),
+                 (_err(tuple(sol.coriolis(sl.point)), want["coriolis"], as_),
+                  f"Coriolis {sl.point}")]
+    return max(errs)
+
+
+def _mirror(x, a, b):
+    """x reflected in the line through a and b."""
+    ux, uy = b[0] - a[0], b[1] - a[1]
+    n = math.hypot(ux, uy)
+    ux, uy = ux / n, uy / n
+    dx, dy = x[0] - a[0], x[1] - a[1]
+    t = dx * ux + dy * uy
+    fx, fy = a[0] + t * ux, a[1] + t * uy
+    return (2 * fx - x[0], 2 * fy - x[1])
+
+
+def guide_direction(scene, P, X):
+    """The unit direction of the path or guide of a slider at X (a moving guide from its
+    first point to its second), or None."""
+    s = next((s for s in scene.sliders if s.point == X), None)
+    if s is None:
+        return None
+    if isinstance(s, FixedPath):
+        return s.u
+    (x1, y1), (x2, y2) = P[s.first], P[s.second]
+    n = math.hypot(x2 - x1, y2 - y1)
+    return ((x2 - x1) / n, (y2 - y1) / n)
+
+
+def other_position(scene, P, X):
+    """The other assembly of X: the mirror image in the line of the two centres of its
+    dyad; for a slider, in the normal to its path through the link's other end; for the
+    free end of a slotted link, through the link's pivot. None for the crank's tip."""
+    if X == scene.input.tip:
+        return None  # the crank's tip has one position
+    for s in scene.sliders:  # the free end of a slotted link: on the other side of its pivot
+        if isinstance(s, GuideSlider) and s.point != X and X in (s.first, s.second):
+            k = P[s.second if X == s.first else s.first]
+            return (2 * k[0] - P[X][0], 2 * k[1] - P[X][1])
+    ends = [lk.q if lk.p == X else lk.p for lk in scene.links if X in (lk.p, lk.q)]
+    u = guide_direction(scene, P, X)
+    if u is not None and len(ends) == 1:  # a link and a slider: the arc cuts the guide twice
+        b = P[ends[0]]
+        return _mirror(P[X], b, (b[0] - u[1], b[1] + u[0]))
+    if len(ends) >= 2:  # the first two links at X in the file: the dyad that finds X
+        return _mirror(P[X], P[ends[0]], P[ends[1]])
+    return None
+
+
+_TURNED = {}
+
+
+def turned(path, angle):
+    """The scene with its crank at ``angle``, or None where it is not assembled there (or
+    its hints do not fit); cached."""
+    if (path, angle) not in _TURNED:
+        try:
+            _TURNED[path, angle] = solve(parse_scene(at_angle(path, angle)))
+        except PolygonMethodError:
+            _TURNED[path, angle] = None
+    return _TURNED[path, angle]
+
+
+def turned_cases():
+    """(path, angle) at 0, 90, 180, 270 deg: those that assemble (on the scene's hints),
+    and those refused there, each with its refusal."""
+    good, refused = [], []
+    for f in FILES:
+        for a in (0, 90, 180, 270):
+            try:
+                solve(parse_scene(at_angle(f, a)))
+                good.append((f, a))
+            except PolygonMethodError as exc:
+                refused.append((f, a, exc))
+    return good, refused
+
+
+def at_angle(path, angle):
+    text = Path(path).read_text(encoding="utf-8")
+    return re.sub(r"(?m)^angle = .*$", f"angle = {angle}", text)
