@@ -12,6 +12,7 @@ from ..errors import PolygonMethodError
 from ..plan import Context
 from ..scene import GuideSlider, Scene
 from ..solution import Solution, solve
+from ..steps import under_label
 from ..numbers import textbook as _g
 from ..numbers import working as _num
 from .tolerance import _terms
@@ -238,10 +239,11 @@ class _Diagnoser:
                 # the classic slotted-lever slip: the guide's point under the block for the
                 # block itself (a1 for a: they differ by the sliding velocity)
                 under = self.point_under_block(X, sl, kind)
+                phase = "acceleration" if kind == "a" else "velocity"
                 if under is not None:
                     out.append(_Candidate(math.hypot(*under), "coincident_for_block",
                                           f"{sym} of the point of {sl.guide} under the block "
-                                          f"({X.lower()}1{chr(39) if kind == 'a' else ''}) "
+                                          f"({under_label(self.sol, X, phase)}) "
                                           f"given for the block {X}'s own: they differ by "
                                           "the sliding" + (" and Coriolis components" if
                                                            kind == "a" else " velocity")))

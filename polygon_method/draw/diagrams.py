@@ -11,7 +11,7 @@ from ..constructions import (acceleration_constructions, drawn_vectors, image_la
 from ..numbers import fmt_angular
 from ..scales import Scale
 from ..scene import FixedPath
-from .sketch import _angle_between, _header, _Sketch
+from .sketch import _header, _Sketch
 from .style import (BAR, BLOCK_CLEAR, BLOCK_MIN, BODY_EDGE, BODY_FACE, DOT_R, IMAGE_FACE,
                     JOINT_R, LABEL_PT, LEGEND_NAMES, LINE_STYLE, MARK_APART, MARK_PT,
                     OVERSHOOT, PIN_ZONE, POLE_R, SMALL_PT, STYLE)

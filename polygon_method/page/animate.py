@@ -23,6 +23,7 @@ import numpy as np
 
 from ..errors import PolygonMethodError, SceneError
 from ..scales import DIAGRAMS, display_unit
+from ..steps import image_name
 from .data import diagram_box
 from .frames import Frames, check_frames, need_frames
 
@@ -68,7 +69,7 @@ def shapes(fr: Frames):
             lines += [("relative", (*P[lk.p], *P[lk.q])) for lk in links]
             lines += [("absolute", (zero, zero, *P[p])) for p in fr.moving]
             labels = [("o" + prime, (zero - 0.3, zero - 0.3))]
-            labels += [(p.lower() + prime, P[p]) for p in fr.moving]
+            labels += [(image_name(sc, p) + prime, P[p]) for p in fr.moving]
         out.append((phase, scale, box, lines, labels))
     return out
 
@@ -91,7 +92,7 @@ def _title(fr, k) -> str:
 
 def _matplotlib(fr: Frames, fmt_: str):
     import matplotlib
-    from matplotlib.animation import FuncAnimation, PillowWriter
+    from matplotlib.animation import FuncAnimation
     from matplotlib.figure import Figure
 
     panels = shapes(fr)

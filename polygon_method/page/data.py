@@ -17,6 +17,7 @@ import numpy as np
 from ..errors import TOL
 from ..numbers import sense
 from ..scales import DIAGRAMS, display_unit
+from ..steps import image_name, under_label
 from .frames import Frames, round_sig
 
 __all__ = ["page_data", "diagram_box"]
@@ -115,6 +116,9 @@ def page_data(fr: Frames) -> dict:
         "crank": sc.input.crank, "pivot": sc.input.pivot,
         "ground": {p: [float(c) for c in xy] for p, xy in sc.ground.items()},
         "points": moving,
+        "images": {p: image_name(sc, p) for p in sc.point_names},  # b for B (o1: a moving O)
+        "under": {s.point: under_label(sol, s.point) for s in sc.sliders
+                  if hasattr(s, "guide")},  # the guide's point under a block: a1 (or a2)
         "links": [[lk.p, lk.q, lk.key] for lk in links],
         "plates": [[sc.link(cp.link).p, sc.link(cp.link).q, cp.name] for cp in sc.points],
         "sliders": sliders,

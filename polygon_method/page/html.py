@@ -20,7 +20,7 @@ from html import escape
 from importlib.resources import files
 
 from ..check.verdicts import correct_text
-from ..numbers import fmt, sense
+from ..numbers import fmt
 from ..steptable import steps_blocks
 from ..words import given
 from .data import page_data

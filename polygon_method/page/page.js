@@ -39,7 +39,7 @@ function cm(phase, p, k) {  // on the paper (cm), y down for SVG
   return [v[0] / s, -v[1] / s];
 }
 const r3 = (x) => Math.round(x * 1000) / 1000;
-const label = (p, phase) => phase === "acceleration" ? p.toLowerCase() + "'" : p.toLowerCase();
+const label = (p, phase) => D.images[p] + (phase === "acceleration" ? "'" : "");
 
 function el(parent, tag, attrs, tip) {
   const e = document.createElementNS(SVGNS, tag);
@@ -98,7 +98,7 @@ function setup(phase) {
       g.items.push([el(svg, "line", {class: "sliding", id: v + "-slide-" + s.point, "marker-end": "url(#" + phase + "-head)"}, "sliding:" + s.point), "sliding", s]);
       if (v === "a") g.items.push([el(svg, "line", {class: "coriolis", "marker-end": "url(#" + phase + "-head)"}, "coriolis:" + s.point), "coriolis", s]);
       const t = el(svg, "text", {class: "label image-label"}, "under:" + s.point);
-      t.textContent = s.point.toLowerCase() + "1" + (v === "a" ? "'" : "");
+      t.textContent = D.under[s.point] + (v === "a" ? "'" : "");
       g.items.push([t, "underlabel", s]);
     }
     for (const p of D.points) g.items.push([el(svg, "line", {class: "absolute", id: v + "-abs-" + p, "marker-end": "url(#" + phase + "-head)"}, "abs:" + p), "abs", p]);

@@ -20,12 +20,12 @@ function) and add it to :data:`TIERS`.
 
 from . import carried, dyad, slider, slotted
 from .base import (Construction, Context, DirectionLine, State, Step, Vector, image_label,
-                   pole_text)
+                   image_name, pole_text)
 from .carried import Carried
 from .crank import Crank
 from .dyad import Dyad
 from .slider import SliderDyad
-from .slotted import SlottedLink
+from .slotted import SlottedLink, under_label
 
 #: the recognisers the compiler tries, tier by tier: for each unknown point (in the scene's
 #: order) every kind of the first tier in turn; the next tier only when no point of the
@@ -34,4 +34,5 @@ TIERS = ((carried.recognise, slider.recognise, dyad.recognise),
          (slotted.recognise,))
 
 __all__ = ["TIERS", "Step", "Context", "State", "Crank", "Dyad", "SliderDyad", "SlottedLink",
-           "Carried", "Construction", "Vector", "DirectionLine", "image_label", "pole_text"]
+           "Carried", "Construction", "Vector", "DirectionLine", "image_label", "image_name",
+           "pole_text", "under_label"]

@@ -15,7 +15,7 @@ from ..errors import TOL, AssemblyError, SingularStepError
 from .rounding import two_lines
 
 __all__ = ["Context", "State", "Step", "Vector", "DirectionLine", "Construction",
-           "image_label", "pole_text", "unit", "sub", "add", "perp"]
+           "image_name", "image_label", "pole_text", "unit", "sub", "add", "perp"]
 
 
 class Context:
@@ -308,13 +308,26 @@ class Construction:
     named: tuple = ()  # (label, point) of intermediate points the text names (a1')
 
 
+def image_name(scene, point: str) -> str:
+    """The image letter of ``point``: ``b`` for B. A moving point named O would take the
+    pole's letter: it is ``o1`` instead (``o2`` and so on where the scene has an O1)."""
+    own = point.lower()
+    if own != "o" or point in scene.ground:
+        return own
+    names = {p.upper() for p in scene.point_names}
+    k = 1
+    while f"O{k}" in names:
+        k += 1
+    return f"o{k}"
+
+
 def image_label(sol, point: str, phase: str = "velocity") -> str:
     """``b`` for B on the velocity polygon, ``b'`` on the acceleration polygon; fixed
     points are the pole ``o``/``o'``."""
     prime = "'" if phase == "acceleration" else ""
     if point in sol.scene.ground:
         return "o" + prime
-    return point.lower() + prime
+    return image_name(sol.scene, point) + prime
 
 
 def pole_text(sol, point, phase):

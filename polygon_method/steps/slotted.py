@@ -28,8 +28,8 @@ from dataclasses import dataclass
 from ..errors import TOL, SingularStepError
 from ..scene import GuideSlider
 from .rounding import C_FLOOR, vhypot, vmax
-from .base import (Construction, DirectionLine, Step, Vector, absolute, add, image_label, perp,
-                   pole_text, relative, sub, unit)
+from .base import (Construction, DirectionLine, Step, Vector, absolute, add, image_label,
+                   image_name, perp, pole_text, relative, sub, unit)
 
 __all__ = ["SlottedLink", "place", "velocity", "acceleration", "recognise"]
 
@@ -108,9 +108,10 @@ def _reference(sc, guide, points):
 def under_label(sol, X: str, phase: str = "velocity") -> str:
     """The image of the guide's point under the block at X: ``a1`` (``a1'``), or ``a2``
     and so on where the scene has a point A1 of its own (whose image is a1)."""
-    names = {p.upper() for p in sol.scene.point_names}
+    sc = sol.scene
+    taken = {image_name(sc, p) for p in sc.point_names} | {p.lower() for p in sc.point_names}
     k = 1
-    while f"{X}{k}".upper() in names:
+    while f"{X.lower()}{k}" in taken:
         k += 1
     return f"{X.lower()}{k}" + ("'" if phase == "acceleration" else "")
 
