@@ -16,6 +16,9 @@ from .style import (BAR, BLOCK_CLEAR, BLOCK_MIN, BODY_EDGE, BODY_FACE, DOT_R, IM
                     JOINT_R, LABEL_PT, LEGEND_NAMES, LINE_STYLE, MARK_APART, MARK_PT,
                     OVERSHOOT, PIN_ZONE, POLE_R, SMALL_PT, STYLE)
 
+#: the least distance (cm) of the crank-angle arc from another point
+ARC_CLEAR = 0.25
+
 # --------------------------------------------------------------------------- configuration
 
 
@@ -106,7 +109,8 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
             away += [P[p] for p in (sl.first, sl.second) if p not in sc.ground]
         if away:
             near = [P[p] for p in sc.point_names if p != g and 0 < math.dist(P[p], P[g]) < 1.2]
-            _ground_symbol(sk, g, P[g], near, [b for _, b in solid])
+            _ground_symbol(sk, g, P[g], near,
+                           [b for _, b in solid] + _crank_angle_shapes(sc, P))
     # the crank angle
     _crank_angle(sk, sc, P)
     # joints and points
@@ -255,12 +259,53 @@ def _ground_symbol(sk, name, g, near, solid):
 
 
 def _crank_arc(sc, P):
+    """(pivot, signed angle, radius) of the crank-angle arc. The radius is 0.55 of the
+    crank (0.45 to 1.4 cm, 0.6 short of the crank pin), moved (0.05 cm steps, nearest
+    first) where that arc would pass within ``ARC_CLEAR`` of another point's pin, so that
+    the arc is never read as part of another joint or its bracket."""
     inp = sc.input
     O = P[inp.pivot]
     th = math.remainder(inp.angle, 2 * math.pi)
     crank = math.dist(O, P[inp.tip])
     r = min(max(min(0.55 * crank, crank - 0.6), 0.45), 1.4)
+    others = [P[q] for q in sc.point_names if q not in (inp.pivot, inp.tip)]
+    lo, hi = 0.45, max(0.45, min(1.4, crank - JOINT_R - ARC_CLEAR))
+
+    def clear(rad):
+        return all(_arc_distance(O, th, rad, q) >= ARC_CLEAR for q in others)
+
+    if not clear(r):
+        for k in range(1, 40):
+            for cand in (r - 0.05 * k, r + 0.05 * k):
+                if lo - 1e-9 <= cand <= hi + 1e-9 and clear(cand):
+                    return O, th, cand
     return O, th, r
+
+
+def _arc_distance(O, th, r, q):
+    """Distance from the point ``q`` to the arc of radius ``r`` about ``O`` from angle 0
+    to ``th``."""
+    phi = math.atan2(q[1] - O[1], q[0] - O[0])
+    lo, hi = min(0.0, th), max(0.0, th)
+    phi = phi if lo <= phi <= hi else phi - 2 * math.pi if lo <= phi - 2 * math.pi <= hi \
+        else phi + 2 * math.pi if lo <= phi + 2 * math.pi <= hi else None
+    if phi is not None:
+        return abs(math.dist(O, q) - r)
+    return min(math.dist(q, (O[0] + r * math.cos(a), O[1] + r * math.sin(a)))
+               for a in (0.0, th))
+
+
+def _crank_angle_shapes(sc, P):
+    """The crank angle's reference line and arc as shapes (what a bracket keeps off)."""
+    from shapely.geometry import LineString
+    O, th, r = _crank_arc(sc, P)
+    if abs(th) < 1e-9:
+        return []
+    n = max(8, int(abs(math.degrees(th)) / 3))
+    arc = [(O[0] + r * math.cos(th * i / n), O[1] + r * math.sin(th * i / n))
+           for i in range(n + 1)]
+    return [LineString(arc).buffer(0.05), LineString([(O[0] + PIN_ZONE, O[1]),
+                                                      (O[0] + r + 0.5, O[1])]).buffer(0.05)]
 
 
 def _crank_angle(sk, sc, P):
