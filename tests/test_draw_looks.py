@@ -67,3 +67,32 @@ def test_the_crank_angle_keeps_off_other_pins_and_brackets(case):
         centre = Polygon(svg.path(j)).centroid
         gap = arc.distance(centre) / CM
         assert gap >= 0.2, f"the arc passes {gap:.2f} cm from {j}"
+
+
+CIRCLES = ["watt_six_bar", "stephenson_six_bar", "peaucellier", "stone_crusher",
+           "shaper_offset_ram", "coupler_plate_four_points"]
+
+
+@pytest.mark.parametrize("name", CIRCLES)
+def test_the_circle_diagram_numbers_sit_on_their_chords_clear_of_the_rest(name):
+    """Each number of a centre found by Kennedy's theorem is written on its own chord,
+    and touches no other chord, no other number and no link's point."""
+    from polygon_method.draw import render
+    sol = solve(load_scene(ROOT / "tests" / "textbook" / f"{name}.toml"))
+    svg = Svg(render(sol, "svg", "centres")[0])
+    chords = {g[len("chord-"):]: LineString(svg.path(g)) for g in svg.groups
+              if g.startswith("chord-") and not g.startswith("chord-order-")}
+    numbers = {g[len("chord-order-"):]: svg.text_box(g) for g in svg.groups
+               if g.startswith("chord-order-") and not g.endswith("-patch")}
+    points = [Polygon(svg.path(g)).buffer(0) for g in svg.groups
+              if g.startswith("circle-point-")]
+    assert numbers
+    for label, ink in numbers.items():
+        assert ink.centroid.distance(chords[label]) < 0.1 * CM, f"{label}'s number is off it"
+        for other, chord in chords.items():
+            if other != label:
+                assert not ink.intersects(chord.buffer(0.5)), f"{label}'s number on {other}"
+        for other, ink2 in numbers.items():
+            if other != label:
+                assert not ink.intersects(ink2), f"{label}'s number on {other}'s"
+        assert not any(ink.intersects(p) for p in points)
