@@ -29,6 +29,7 @@ def _turned(path, degrees):
 
 TURNED = [(ROOT / "worked_problems" / "whitworth.toml", 270),
           (ROOT / "worked_problems" / "whitworth.toml", 0),
+          (ROOT / "worked_problems" / "whitworth.toml", 225),
           (ROOT / "worked_problems" / "crank_slotted_lever.toml", 270),
           (ROOT / "tests" / "textbook" / "toggle_press.toml", 90)]
 
