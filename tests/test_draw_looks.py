@@ -97,3 +97,21 @@ def test_the_circle_diagram_numbers_sit_on_their_chords_clear_of_the_rest(name):
             if other != label:
                 assert not ink.intersects(ink2), f"{label}'s number on {other}'s"
         assert not any(ink.intersects(p) for p in points)
+
+
+@pytest.mark.parametrize("name", ["toggle_press", "two_sliders_trammel", "drag_link"])
+def test_a_point_s_label_sits_by_it_even_beside_a_nearer_point(name):
+    """A point's label keeps by its point (within 4.5 mm) and nearer to it than to any
+    other point, also where another point lies closer than the usual margin (the pole o
+    of the toggle press, with d 0.6 mm from it)."""
+    sol = solve(load_scene(ROOT / "tests" / "textbook" / f"{name}.toml"))
+    svg = Svg(svg_string(sol, "all"))
+    dots = {g[len("velocity-point-"):]: Polygon(svg.path(g)).centroid for g in svg.groups
+            if g.startswith("velocity-point-")}
+    for name, dot in dots.items():
+        ink = svg.text_box(f"label-{name}")
+        own = ink.distance(dot)
+        assert own <= 0.45 * CM, f"{name}'s label is {own / CM:.2f} cm from it"
+        for other, q in dots.items():
+            if other != name:
+                assert ink.distance(q) > own, f"{name}'s label is nearer {other}"
