@@ -115,3 +115,27 @@ def test_a_point_s_label_sits_by_it_even_beside_a_nearer_point(name):
         for other, q in dots.items():
             if other != name:
                 assert ink.distance(q) > own, f"{name}'s label is nearer {other}"
+
+
+@pytest.mark.parametrize("path", [ROOT / "worked_problems" / "crank_slotted_lever.toml",
+                                  ROOT / "tests" / "textbook" / "watt_six_bar.toml",
+                                  ROOT / "tests" / "textbook" / "toggle_press.toml"],
+                         ids=lambda p: Path(p).stem)
+def test_the_centres_diagram_shows_no_more_plane_than_its_centres_need(path):
+    """Kennedy's lines reach no further than 0.3 of the mechanism's size beyond the
+    mechanism and the centres drawn where they are, so the mechanism is drawn as large as
+    the sheet allows (it was drawn in a square three times its size)."""
+    from polygon_method.draw import render
+    svg = Svg(render(solve(load_scene(path)), "svg", "centres")[0])
+    joints = [Polygon(svg.path(g)).centroid for g in svg.groups if g.startswith("joint-")]
+    rings = [Polygon(svg.path(g)).centroid for g in svg.groups if g.startswith("centre-")
+             and not g.endswith(("-shaft", "-head"))]
+    xs, ys = [p.x for p in joints], [p.y for p in joints]
+    size = max(max(xs) - min(xs), max(ys) - min(ys))
+    xs += [p.x for p in rings]
+    ys += [p.y for p in rings]
+    ends = [q for g in svg.groups if g.startswith("kennedy-") for q in svg.path(g)]
+    assert ends
+    pad = 0.3 * size + 0.01 * CM
+    assert min(q[0] for q in ends) >= min(xs) - pad and max(q[0] for q in ends) <= max(xs) + pad
+    assert min(q[1] for q in ends) >= min(ys) - pad and max(q[1] for q in ends) <= max(ys) + pad

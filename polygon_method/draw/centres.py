@@ -20,14 +20,25 @@ _CHORD_SPOTS = (0.5, 0.45, 0.55, 0.4, 0.6, 0.35, 0.65, 0.3, 0.7, 0.25, 0.75, 0.2
 _ROOM = 0.12
 #: how far around the mechanism (times its size) the centres are drawn where they are
 WINDOW = 1.0
+#: the margin (times the mechanism's size) around the mechanism and the centres drawn
+PAD = 0.3
 
 
-def _window(P):
+def _window(P, centres=()):
+    """The part of the plane the centres' diagram shows (cm): the mechanism and the
+    centres within ``WINDOW`` times its size of it, with ``PAD`` times its size around
+    them (no more: the rest of the sheet would only shrink the mechanism)."""
     xs = [p[0] for p in P.values()]
     ys = [p[1] for p in P.values()]
     w = max(max(xs) - min(xs), max(ys) - min(ys), 1.0)
-    return (min(xs) - WINDOW * w, min(ys) - WINDOW * w, max(xs) + WINDOW * w,
-            max(ys) + WINDOW * w)
+    reach = (min(xs) - WINDOW * w, min(ys) - WINDOW * w, max(xs) + WINDOW * w,
+             max(ys) + WINDOW * w)
+    inside = [c for c in centres if _inside(reach, c)]
+    xs += [c[0] for c in inside]
+    ys += [c[1] for c in inside]
+    pad = PAD * w
+    return (max(min(xs) - pad, reach[0]), max(min(ys) - pad, reach[1]),
+            min(max(xs) + pad, reach[2]), min(max(ys) + pad, reach[3]))
 
 
 def _inside(box, p):
@@ -59,7 +70,8 @@ def centres_sketch(sol, scale: Scale, ic) -> _Sketch:
         return (p[0] / s, p[1] / s)
 
     def extra(sk, P):
-        box = _window(P)
+        box = _window(P, [cm(ic.centres[k].point) for k in ic.order
+                          if ic.centres[k].point is not None])
         mid = ((box[0] + box[2]) / 2, (box[1] + box[3]) / 2)
         # the lines that located the secondary centres, dashed
         color, lw, dashes = KENNEDY_LINE
