@@ -139,3 +139,29 @@ def test_the_centres_diagram_shows_no_more_plane_than_its_centres_need(path):
     pad = 0.3 * size + 0.01 * CM
     assert min(q[0] for q in ends) >= min(xs) - pad and max(q[0] for q in ends) <= max(xs) + pad
     assert min(q[1] for q in ends) >= min(ys) - pad and max(q[1] for q in ends) <= max(ys) + pad
+
+
+@pytest.mark.parametrize("path, degrees", [
+    (ROOT / "tests" / "textbook" / "slotted_lever_270.toml", 270),
+    (ROOT / "tests" / "textbook" / "engine_inline_270.toml", 270),
+    (ROOT / "worked_problems" / "whitworth.toml", 30),
+    (ROOT / "worked_problems" / "whitworth.toml", 225),
+    (ROOT / "worked_problems" / "fourbar_acceleration.toml", -60)],
+    ids=lambda x: Path(x).stem if isinstance(x, Path) else str(x))
+def test_the_crank_angle_is_drawn_as_the_scene_states_it(path, degrees):
+    """The arc sweeps the stated angle from +x, the stated way round (270 deg ccw is not
+    drawn as 90 deg cw), and its label reads it."""
+    import math
+    sol = _turned(path, degrees)
+    text = svg_string(sol, "configuration")
+    svg = Svg(text)
+    arc = svg.path("crank-angle")
+    o = Polygon(svg.path(f"joint-{sol.scene.input.pivot}")).centroid
+    sweep = 0.0
+    for (x1, y1), (x2, y2) in zip(arc, arc[1:]):  # SVG's y points down
+        a1, a2 = math.atan2(o.y - y1, x1 - o.x), math.atan2(o.y - y2, x2 - o.x)
+        sweep += math.remainder(a2 - a1, 2 * math.pi)
+    assert math.degrees(sweep) == pytest.approx(degrees, abs=0.5)
+    assert math.degrees(math.atan2(o.y - arc[0][1], arc[0][0] - o.x)) == pytest.approx(0, abs=0.5)
+    label = text[text.index('id="label-crank-angle"'):]
+    assert label.split("<!--")[1].split("-->")[0].strip() == f"{abs(degrees)}\u00b0"

@@ -280,7 +280,11 @@ def _crank_arc(sc, P, feet=()):
     its bracket; as it was where no radius clears them all."""
     inp = sc.input
     O = P[inp.pivot]
-    th = math.remainder(inp.angle, 2 * math.pi)
+    # the angle the scene states, the way it states it (270 deg ccw is not 90 deg cw), less
+    # whole turns
+    th = math.copysign(math.fmod(abs(inp.angle), 2 * math.pi), inp.angle)
+    if abs(abs(th) - 2 * math.pi) < 1e-12:
+        th = 0.0
     crank = math.dist(O, P[inp.tip])
     r = min(max(min(0.55 * crank, crank - 0.6), 0.45), 1.4)
     if abs(th) < 1e-9:
