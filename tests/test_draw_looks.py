@@ -165,3 +165,20 @@ def test_the_crank_angle_is_drawn_as_the_scene_states_it(path, degrees):
     assert math.degrees(math.atan2(o.y - arc[0][1], arc[0][0] - o.x)) == pytest.approx(0, abs=0.5)
     label = text[text.index('id="label-crank-angle"'):]
     assert label.split("<!--")[1].split("-->")[0].strip() == f"{abs(degrees)}\u00b0"
+
+
+@pytest.mark.parametrize("path", SCENES, ids=lambda p: Path(p).stem)
+def test_a_block_on_a_moving_link_sits_on_that_link_drawn(path):
+    """A block sliding on a moving link sits on the link as drawn: where the block is
+    beyond the link's ends (block_on_coupler: G on BC produced) the link is drawn produced
+    through it."""
+    from polygon_method.scene import FixedPath
+    sol = solve(load_scene(path))
+    blocks = [sl for sl in sol.scene.sliders if not isinstance(sl, FixedPath)]
+    if not blocks:
+        return
+    svg = Svg(svg_string(sol, "configuration"))
+    for sl in blocks:
+        link = Polygon(svg.path(f"link-{sl.guide}")).buffer(0)
+        pin = Polygon(svg.path(f"joint-{sl.point}")).centroid
+        assert link.contains(pin), f"{sl.point} hangs off {sl.guide}"

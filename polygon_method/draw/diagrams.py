@@ -65,6 +65,14 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
         if lk.p in sc.ground and lk.q in sc.ground:
             continue
         pts = [P[lk.p], P[lk.q]] + [P[c] for c in carried_on.get(lk.key, ())]
+        # a block sliding on the link beyond its ends: the link produced through the block
+        for sl in sc.sliders:
+            if not isinstance(sl, FixedPath) and sl.guide == lk.key:
+                (x1, y1), (x2, y2) = P[sl.first], P[sl.second]
+                n = math.hypot(x2 - x1, y2 - y1)
+                X, half = P[sl.point], _block_size(sc, sl.point, P) / 2 + BAR / 2
+                pts += [(X[0] + k * half * (x2 - x1) / n, X[1] + k * half * (y2 - y1) / n)
+                        for k in (-1, 1)]
         body = MultiPoint(pts).convex_hull.buffer(BAR / 2, quad_segs=8)
         solid.append((lk.key, body))
         sk.polygon(list(body.exterior.coords), gid=f"link-{lk.key}", face=BODY_FACE,
