@@ -70,16 +70,19 @@ def test_the_crank_angle_keeps_off_other_pins_and_brackets(case):
         assert gap >= 0.2, f"the arc passes {gap:.2f} cm from {j}"
 
 
-CIRCLES = ["watt_six_bar", "stephenson_six_bar", "peaucellier", "stone_crusher",
-           "shaper_offset_ram", "coupler_plate_four_points"]
+CIRCLES = [ROOT / "tests" / "textbook" / f"{name}.toml" for name in (
+    "watt_six_bar", "stephenson_six_bar", "peaucellier", "stone_crusher",
+    "shaper_offset_ram", "coupler_plate_four_points")] + [
+    ROOT / "worked_problems" / "engine_analytical.toml"]
 
 
-@pytest.mark.parametrize("name", CIRCLES)
-def test_the_circle_diagram_numbers_sit_on_their_chords_clear_of_the_rest(name):
+@pytest.mark.parametrize("path", CIRCLES, ids=lambda p: Path(p).stem)
+def test_the_circle_diagram_numbers_sit_on_their_chords_clear_of_the_rest(path):
     """Each number of a centre found by Kennedy's theorem is written on its own chord,
-    and touches no other chord, no other number and no link's point."""
+    and touches no other chord, no other number and no link's point; on a four-link's
+    circle (two chords crossing at its middle) it keeps 2 mm clear of the other chord."""
     from polygon_method.draw import render
-    sol = solve(load_scene(ROOT / "tests" / "textbook" / f"{name}.toml"))
+    sol = solve(load_scene(path))
     svg = Svg(render(sol, "svg", "centres")[0])
     chords = {g[len("chord-"):]: LineString(svg.path(g)) for g in svg.groups
               if g.startswith("chord-") and not g.startswith("chord-order-")}
@@ -93,6 +96,8 @@ def test_the_circle_diagram_numbers_sit_on_their_chords_clear_of_the_rest(name):
         for other, chord in chords.items():
             if other != label:
                 assert not ink.intersects(chord.buffer(0.5)), f"{label}'s number on {other}"
+                if len(chords) == 6:
+                    assert ink.distance(chord) > 0.2 * CM, f"{label}'s number by {other}"
         for other, ink2 in numbers.items():
             if other != label:
                 assert not ink.intersects(ink2), f"{label}'s number on {other}'s"

@@ -15,9 +15,9 @@ from .style import SMALL_PT
 CENTRE_COLOR = "#c0392b"
 KENNEDY_LINE = ("#7f8c8d", 0.5, (3.0, 2.0))
 #: where along its chord a centre's number may sit (fractions, most wanted first), and
-#: the clearance (cm) beyond which a place is as good as any
+#: the clearance (cm) beyond which a place is as good as any (half a centimetre)
 _CHORD_SPOTS = (0.5, 0.45, 0.55, 0.4, 0.6, 0.35, 0.65, 0.3, 0.7, 0.25, 0.75, 0.2, 0.8)
-_ROOM = 0.12
+_ROOM = 0.5
 #: how far around the mechanism (times its size) the centres are drawn where they are
 WINDOW = 1.0
 #: the margin (times the mechanism's size) around the mechanism and the centres drawn
