@@ -187,3 +187,20 @@ def test_a_block_on_a_moving_link_sits_on_that_link_drawn(path):
         link = Polygon(svg.path(f"link-{sl.guide}")).buffer(0)
         pin = Polygon(svg.path(f"joint-{sl.point}")).centroid
         assert link.contains(pin), f"{sl.point} hangs off {sl.guide}"
+
+
+@pytest.mark.parametrize("path", TEXTBOOK, ids=lambda p: Path(p).stem)
+def test_textbook_sheets_labels_clear_and_on_the_sheet(path):
+    """The textbook corpus's sheets as the worked problems' are checked: no label on
+    another label or on any line, arrow or outline, and every text inside the sheet."""
+    from shapely.geometry import box
+    from polygon_method.draw import render
+    from test_draw import _check_labels
+    text, _, warnings = render(solve(load_scene(path)), "svg", "all")
+    assert warnings == []
+    svg = _check_labels(text)
+    w, h = svg.size_cm()
+    sheet = box(0, 0, w * CM, h * CM)
+    for gid in svg.texts():
+        ink = svg.text_box(gid)
+        assert ink is None or sheet.contains(ink), f"{gid} is off the sheet"
