@@ -231,9 +231,9 @@ class _Sketch:
                     margin = min(others, default=math.inf) - own
                     # by 0.8 mm, or (a point closer than that to another, where no place
                     # can) by nine tenths of what the other point's distance allows
-                    gap = min((q.distance(here) for q in spots if q.distance(here) > 1e-9),
-                              default=math.inf)
-                    if margin < min(POINT_MARGIN, 0.9 * gap):
+                    nearest = min((q.distance(here) for q in spots
+                                   if q.distance(here) > 1e-9), default=math.inf)
+                    if margin < min(POINT_MARGIN, 0.9 * nearest):
                         if clear_only is None or margin > clear_only[0] + 1e-9:
                             clear_only = (margin, (cx, cy), leader)
                         continue
