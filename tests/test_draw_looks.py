@@ -204,3 +204,22 @@ def test_textbook_sheets_labels_clear_and_on_the_sheet(path):
     for gid in svg.texts():
         ink = svg.text_box(gid)
         assert ink is None or sheet.contains(ink), f"{gid} is off the sheet"
+
+
+@pytest.mark.parametrize("name", ["block_on_coupler", "double_rocker", "stone_crusher",
+                                  "whitworth_180", "shaper_offset_ram", "watt_six_bar"])
+def test_a_label_far_from_its_point_has_a_leader_and_a_near_one_none(name):
+    """A point's label more than 6 mm from its point has a leader line to it; one within
+    3 mm has none."""
+    sol = solve(load_scene(ROOT / "tests" / "textbook" / f"{name}.toml"))
+    svg = Svg(svg_string(sol, "all"))
+    for g in svg.groups:
+        for pre in ("joint-", "velocity-point-", "acceleration-point-"):
+            if not g.startswith(pre) or f"label-{g[len(pre):]}" not in svg.groups:
+                continue
+            label = f"label-{g[len(pre):]}"
+            gap = svg.text_box(label).distance(Polygon(svg.path(g)).centroid) / CM
+            if gap > 0.6:
+                assert f"leader-{label}" in svg.groups, f"{label}: {gap:.2f} cm, no leader"
+            if gap < 0.3:
+                assert f"leader-{label}" not in svg.groups, f"{label}: {gap:.2f} cm, a leader"
