@@ -9,21 +9,36 @@ import math
 
 from ..scales import Scale
 from .diagrams import _drive, _mechanism
-from .sketch import _header, _Sketch
+from .sketch import _header, _Sketch, _text_size
 from .style import SMALL_PT
 
 CENTRE_COLOR = "#c0392b"
 KENNEDY_LINE = ("#7f8c8d", 0.5, (3.0, 2.0))
+#: where along its chord a centre's number may sit (fractions, most wanted first), and
+#: the clearance (cm) beyond which a place is as good as any (half a centimetre)
+_CHORD_SPOTS = (0.5, 0.45, 0.55, 0.4, 0.6, 0.35, 0.65, 0.3, 0.7, 0.25, 0.75, 0.2, 0.8)
+_ROOM = 0.5
 #: how far around the mechanism (times its size) the centres are drawn where they are
 WINDOW = 1.0
+#: the margin (times the mechanism's size) around the mechanism and the centres drawn
+PAD = 0.3
 
 
-def _window(P):
+def _window(P, centres=()):
+    """The part of the plane the centres' diagram shows (cm): the mechanism and the
+    centres within ``WINDOW`` times its size of it, with ``PAD`` times its size around
+    them (no more: the rest of the sheet would only shrink the mechanism)."""
     xs = [p[0] for p in P.values()]
     ys = [p[1] for p in P.values()]
     w = max(max(xs) - min(xs), max(ys) - min(ys), 1.0)
-    return (min(xs) - WINDOW * w, min(ys) - WINDOW * w, max(xs) + WINDOW * w,
-            max(ys) + WINDOW * w)
+    reach = (min(xs) - WINDOW * w, min(ys) - WINDOW * w, max(xs) + WINDOW * w,
+             max(ys) + WINDOW * w)
+    inside = [c for c in centres if _inside(reach, c)]
+    xs += [c[0] for c in inside]
+    ys += [c[1] for c in inside]
+    pad = PAD * w
+    return (max(min(xs) - pad, reach[0]), max(min(ys) - pad, reach[1]),
+            min(max(xs) + pad, reach[2]), min(max(ys) + pad, reach[3]))
 
 
 def _inside(box, p):
@@ -55,7 +70,8 @@ def centres_sketch(sol, scale: Scale, ic) -> _Sketch:
         return (p[0] / s, p[1] / s)
 
     def extra(sk, P):
-        box = _window(P)
+        box = _window(P, [cm(ic.centres[k].point) for k in ic.order
+                          if ic.centres[k].point is not None])
         mid = ((box[0] + box[2]) / 2, (box[1] + box[3]) / 2)
         # the lines that located the secondary centres, dashed
         color, lw, dashes = KENNEDY_LINE
@@ -116,6 +132,7 @@ def circle_sketch(ic, radius: float = 2.6) -> _Sketch:
     """The circle diagram: the links as points 1..n round a circle, a chord for each centre
     (solid: primary, from a joint; dashed: by Kennedy's theorem, numbered in the order
     found)."""
+    from shapely.geometry import LineString, Point, box
     sk = _Sketch()
     n = ic.n
     pos = {k: (radius * math.cos(math.pi / 2 - 2 * math.pi * (k - 1) / n),
@@ -124,19 +141,42 @@ def circle_sketch(ic, radius: float = 2.6) -> _Sketch:
     ring = [(radius * math.cos(2 * math.pi * t / 96), radius * math.sin(2 * math.pi * t / 96))
             for t in range(97)]
     sk.line(ring, gid="circle", color="#999999", lw=0.5, obstacle=False, hint=False, z=1)
-    nth = 0
+    chords = []  # (centre, its chord as a line)
     for key in ic.order:
         c = ic.centres[key]
         a, b = pos[c.i], pos[c.j]
+        chords.append((c, LineString([a, b])))
         if c.primary:
             sk.line([a, b], gid=f"chord-{c.label}", color="#000000", lw=0.9, z=2,
                     obstacle=False, hint=False)
         else:
-            nth += 1
             sk.line([a, b], gid=f"chord-{c.label}", color="#1f5fbf", lw=0.9, dashes=(4, 2),
                     z=2, obstacle=False, hint=False)
-            m = (0.62 * a[0] + 0.38 * b[0], 0.62 * a[1] + 0.38 * b[1])  # nearer its first
-            sk.label(f"{nth}", [m], SMALL_PT, gid=f"chord-order-{c.label}", color="#1f5fbf")
+    # each number on its own chord, on a white patch, where it keeps clearest of the other
+    # chords, the other numbers and the links' points
+    taken = [Point(p).buffer(0.3) for p in pos.values()]
+    nth = 0
+    for c, chord in chords:
+        if c.primary:
+            continue
+        nth += 1
+        text = f"{nth}"
+        w, h = _text_size(text, SMALL_PT)
+        w, h = w + 0.08, h + 0.02
+        others = [g for d, g in chords if d is not c]
+        best = None
+        for t in _CHORD_SPOTS:
+            m = chord.interpolate(t, normalized=True)
+            patch = box(m.x - w / 2, m.y - h / 2, m.x + w / 2, m.y + h / 2)
+            gap = min([patch.distance(g) for g in others + taken] + [_ROOM])
+            if best is None or gap > best[0] + 1e-9:
+                best = (gap, m.x, m.y, patch)
+        _, x, y, patch = best
+        taken.append(patch)
+        sk.polygon(list(patch.exterior.coords), gid=f"chord-order-{c.label}-patch",
+                   face="#ffffff", edge="#ffffff", lw=0.0, z=3, obstacle=None)
+        sk.note(x, y, text, SMALL_PT, ha="center", gid=f"chord-order-{c.label}",
+                color="#1f5fbf")
     for k, p in pos.items():
         sk.circle(p, 0.09, gid=f"circle-point-{k}", face="#000000", z=6)
         out = (p[0] * (1 + 0.5 / radius), p[1] * (1 + 0.5 / radius))

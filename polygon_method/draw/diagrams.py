@@ -16,6 +16,11 @@ from .style import (BAR, BLOCK_CLEAR, BLOCK_MIN, BODY_EDGE, BODY_FACE, DOT_R, IM
                     JOINT_R, LABEL_PT, LEGEND_NAMES, LINE_STYLE, MARK_APART, MARK_PT,
                     OVERSHOOT, PIN_ZONE, POLE_R, SMALL_PT, STYLE)
 
+#: the least distance (cm) of the crank-angle arc from another point
+ARC_CLEAR = 0.25
+#: the least gap (cm) between the crank-angle arc and a fixed pivot's bracket
+ARC_GAP = 0.1
+
 # --------------------------------------------------------------------------- configuration
 
 
@@ -60,6 +65,14 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
         if lk.p in sc.ground and lk.q in sc.ground:
             continue
         pts = [P[lk.p], P[lk.q]] + [P[c] for c in carried_on.get(lk.key, ())]
+        # a block sliding on the link beyond its ends: the link produced through the block
+        for sl in sc.sliders:
+            if not isinstance(sl, FixedPath) and sl.guide == lk.key:
+                (x1, y1), (x2, y2) = P[sl.first], P[sl.second]
+                n = math.hypot(x2 - x1, y2 - y1)
+                X, half = P[sl.point], _block_size(sc, sl.point, P) / 2 + BAR / 2
+                pts += [(X[0] + k * half * (x2 - x1) / n, X[1] + k * half * (y2 - y1) / n)
+                        for k in (-1, 1)]
         body = MultiPoint(pts).convex_hull.buffer(BAR / 2, quad_segs=8)
         solid.append((lk.key, body))
         sk.polygon(list(body.exterior.coords), gid=f"link-{lk.key}", face=BODY_FACE,
@@ -96,7 +109,10 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
         elif r > JOINT_R * 1.2:
             sk.circle(P[pin.point], r, gid=f"pin-{pin.point}", face="none", edge="#8a8a8a",
                       lw=0.6, z=4, obstacle="edge")
-    # ground pivots, hatched
+    # ground pivots, hatched, off the crank angle's sector where they can be; a bracket
+    # that must sit in it is cleared by the arc drawn beyond it
+    arc = _crank_arc(sc, P)
+    feet = []
     for g in sc.ground:
         away = [P[lk.other(g)] for lk in sc.links if g in lk.points
                 and lk.other(g) not in sc.ground]
@@ -106,9 +122,11 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
             away += [P[p] for p in (sl.first, sl.second) if p not in sc.ground]
         if away:
             near = [P[p] for p in sc.point_names if p != g and 0 < math.dist(P[p], P[g]) < 1.2]
-            _ground_symbol(sk, g, P[g], near, [b for _, b in solid])
+            feet.append(_ground_symbol(sk, g, P[g], near, [b for _, b in solid],
+                                       _crank_angle_shapes(arc)))
+    arc = _crank_arc(sc, P, feet)
     # the crank angle
-    _crank_angle(sk, sc, P)
+    _crank_angle(sk, arc)
     # joints and points
     joints = set(sc.ground) | {p for lk in sc.links for p in lk.points} | \
         {sl.point for sl in sc.sliders}
@@ -122,7 +140,7 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
     for name, text in pin_notes:
         sk.label(text, [P[name]], SMALL_PT, gid=f"label-pin-{name}", color="#666666",
                  point=True)
-    _crank_angle_label(sk, sc, P)
+    _crank_angle_label(sk, arc)
     if extra is not None:
         extra(sk, P)
     sk.place_labels()
@@ -194,19 +212,21 @@ def _fixed_guide(sk, sc, sl, P, s):
                       max(a[0], far[0], b[0], far2[0]), max(a[1], far[1], b[1], far2[1])))
 
 
-def _ground_symbol(sk, name, g, near, solid):
+def _ground_symbol(sk, name, g, near, solid, soft=()):
     """A fixed pivot: a bracket (triangle) from the pin to a hatched base, below the pin
     where that keeps it off every link and block beyond the pin (``PIN_ZONE`` around it,
-    where the link's rounded end and the bracket meet) and off the points ``near`` it;
-    else turned as little from below as that needs (15 deg steps); else where it overlaps
-    least."""
-    from shapely.geometry import LineString, Point, Polygon
+    where the link's rounded end and the bracket meet), off the points ``near`` it and off
+    the ``soft`` shapes (the crank angle's sector and reference line); else turned as
+    little from below as that needs (15 deg steps); else where it overlaps the links and
+    points least, and of those the soft shapes least. Returns what it drew beyond the
+    pin's zone (a shape)."""
+    from shapely.geometry import LineString, MultiLineString, Point, Polygon
     from shapely.ops import unary_union
     bodies = unary_union(solid) if solid else None
     zone = Point(g).buffer(PIN_ZONE, quad_segs=8)
     spots = [Point(p).buffer(0.12, quad_segs=4) for p in near]
     d, half, wide = 0.5, 0.3, 0.42
-    best, best_cost = -math.pi / 2, math.inf
+    best, best_cost = -math.pi / 2, (math.inf, math.inf)
     for k in (0, -1, 1, -2, 2, -3, 3, -4, 4, -5, 5, -6, 6, -7, 7, -8, 8, -9, 9, -10, 10, -11,
               11, 12):
         th = -math.pi / 2 + k * math.pi / 12
@@ -221,12 +241,13 @@ def _ground_symbol(sk, name, g, near, solid):
                      (far[0] - wide * nx, far[1] - wide * ny),
                      (far[0] + wide * nx, far[1] + wide * ny)])).union(
             LineString([base, far]).buffer(0.01)).difference(zone)
-        cost = (foot.intersection(bodies).area if bodies is not None else 0.0) + \
+        hard = (foot.intersection(bodies).area if bodies is not None else 0.0) + \
             sum(foot.intersection(q).area for q in spots)
-        if cost <= 1e-9:
+        cost = (round(hard, 9), round(sum(foot.intersection(q).area for q in soft), 9))
+        if cost == (0.0, 0.0):
             best = th
             break
-        if cost < best_cost - 1e-12:
+        if cost < best_cost:
             best, best_cost = th, cost
     dx, dy = math.cos(best), math.sin(best)
     nx, ny = -dy, dx
@@ -244,7 +265,6 @@ def _ground_symbol(sk, name, g, near, solid):
         p = (base[0] + t * nx, base[1] + t * ny)
         hatch.append((p, (p[0] + 0.17 * dx - 0.17 * nx, p[1] + 0.17 * dy - 0.17 * ny)))
     sk.segments(hatch, gid=f"ground-{name}-hatch", lw=0.5, z=4)
-    from shapely.geometry import Polygon
     far = (base[0] + 0.2 * dx, base[1] + 0.2 * dy)
     sk.obstacles.append(Polygon([(base[0] + (wide + 0.2) * nx, base[1] + (wide + 0.2) * ny),
                                  (base[0] - (wide + 0.2) * nx, base[1] - (wide + 0.2) * ny),
@@ -252,21 +272,86 @@ def _ground_symbol(sk, name, g, near, solid):
                                  (far[0] + (wide + 0.2) * nx, far[1] + (wide + 0.2) * ny)]))
     for p, q in hatch:
         sk._bound([p, q])
+    # what was drawn, beyond the pin's own zone
+    return Polygon(tri).union(LineString([(base[0] + wide * nx, base[1] + wide * ny),
+                                          (base[0] - wide * nx, base[1] - wide * ny)])
+                              .buffer(0.02)).union(
+        MultiLineString(hatch).buffer(0.02)).difference(zone)
 
 
-def _crank_arc(sc, P):
+def _crank_arc(sc, P, feet=()):
+    """(pivot, signed angle, radius) of the crank-angle arc. The radius is 0.55 of the
+    crank (0.45 to 1.4 cm, 0.6 short of the crank pin), moved (0.05 cm steps, nearest
+    first, 0.45 cm at least, short of the crank pin) where that arc would pass within
+    ``ARC_CLEAR`` of another point's pin or within ``ARC_GAP`` of a fixed pivot's bracket
+    (``feet``: the shapes drawn), so that the arc is never read as part of another joint or
+    its bracket; as it was where no radius clears them all."""
     inp = sc.input
     O = P[inp.pivot]
-    th = math.remainder(inp.angle, 2 * math.pi)
+    # the angle the scene states, the way it states it (270 deg ccw is not 90 deg cw), less
+    # whole turns
+    th = math.copysign(math.fmod(abs(inp.angle), 2 * math.pi), inp.angle)
+    if abs(abs(th) - 2 * math.pi) < 1e-12:
+        th = 0.0
     crank = math.dist(O, P[inp.tip])
     r = min(max(min(0.55 * crank, crank - 0.6), 0.45), 1.4)
+    if abs(th) < 1e-9:
+        return O, th, r
+    others = [P[q] for q in sc.point_names if q not in (inp.pivot, inp.tip)]
+    lo, hi = 0.45, max(0.45, min(1.4, crank - JOINT_R - ARC_CLEAR))
+
+    def clear(rad):
+        if not all(_arc_distance(O, th, rad, q) >= ARC_CLEAR for q in others):
+            return False
+        line = _arc_line(O, th, rad) if feet else None
+        return all(line.distance(f) >= ARC_GAP for f in feet)
+
+    if not clear(r):
+        for k in range(1, 40):
+            for cand in (r - 0.05 * k, r + 0.05 * k):
+                if lo - 1e-9 <= cand <= hi + 1e-9 and clear(cand):
+                    return O, th, cand
     return O, th, r
 
 
-def _crank_angle(sk, sc, P):
+def _arc_distance(O, th, r, q):
+    """Distance from the point ``q`` to the arc of radius ``r`` about ``O`` from angle 0
+    to ``th``."""
+    phi = math.atan2(q[1] - O[1], q[0] - O[0])
+    lo, hi = min(0.0, th), max(0.0, th)
+    phi = phi if lo <= phi <= hi else phi - 2 * math.pi if lo <= phi - 2 * math.pi <= hi \
+        else phi + 2 * math.pi if lo <= phi + 2 * math.pi <= hi else None
+    if phi is not None:
+        return abs(math.dist(O, q) - r)
+    return min(math.dist(q, (O[0] + r * math.cos(a), O[1] + r * math.sin(a)))
+               for a in (0.0, th))
+
+
+def _arc_line(O, th, r):
+    from shapely.geometry import LineString
+    n = max(8, int(abs(math.degrees(th)) / 3))
+    return LineString([(O[0] + r * math.cos(th * i / n), O[1] + r * math.sin(th * i / n))
+                       for i in range(n + 1)])
+
+
+def _crank_angle_shapes(arc):
+    """The crank angle's sector (out to a little beyond its arc) and reference line as
+    shapes: where the angle is read, which a bracket keeps off."""
+    from shapely.geometry import LineString, Polygon
+    O, th, r = arc
+    if abs(th) < 1e-9:
+        return []
+    n = max(8, int(abs(math.degrees(th)) / 3))
+    arc = [(O[0] + (r + 0.1) * math.cos(th * i / n), O[1] + (r + 0.1) * math.sin(th * i / n))
+           for i in range(n + 1)]
+    return [Polygon([O] + arc), LineString([(O[0] + PIN_ZONE, O[1]),
+                                            (O[0] + r + 0.5, O[1])]).buffer(0.05)]
+
+
+def _crank_angle(sk, arc):
     """The crank angle: a reference line along +x from the crank's pivot and an arc from it
     to the crank."""
-    O, th, r = _crank_arc(sc, P)
+    O, th, r = arc
     if abs(th) < 1e-9:
         return
     sk.line([O, (O[0] + r + 0.5, O[1])], gid="crank-reference", color="#555555", lw=0.5,
@@ -277,8 +362,8 @@ def _crank_angle(sk, sc, P):
     sk.line(pts, gid="crank-angle", lw=0.6, z=3, hint=False)
 
 
-def _crank_angle_label(sk, sc, P):
-    O, th, r = _crank_arc(sc, P)
+def _crank_angle_label(sk, arc):
+    O, th, r = arc
     if abs(th) < 1e-9:
         return
     mids = [(O[0] + r * math.cos(th * f), O[1] + r * math.sin(th * f)) for f in (0.5, 0.3, 0.7)]

@@ -40,6 +40,9 @@ def _text_size(text: str, size: float, weight: str = "normal"):
 
 # --------------------------------------------------------------------------- a sketch
 
+#: how much nearer (cm) a point's label is to its own point than to any other point
+POINT_MARGIN = 0.08
+
 
 @dataclass
 class _Label:
@@ -226,7 +229,11 @@ class _Sketch:
                     own = b.distance(here)
                     others = [q.distance(b) for q in spots if q.distance(here) > 1e-9]
                     margin = min(others, default=math.inf) - own
-                    if margin < 0.08:
+                    # by 0.8 mm, or (a point closer than that to another, where no place
+                    # can) by nine tenths of what the other point's distance allows
+                    nearest = min((q.distance(here) for q in spots
+                                   if q.distance(here) > 1e-9), default=math.inf)
+                    if margin < min(POINT_MARGIN, 0.9 * nearest):
                         if clear_only is None or margin > clear_only[0] + 1e-9:
                             clear_only = (margin, (cx, cy), leader)
                         continue
