@@ -190,7 +190,12 @@ def parse_quantity(raw, kind: str, *, where: str = "", default_unit: str | None 
             unit = default_unit
         factor = _unit_factor(unit, kind, where)
     else:
-        value = float(raw)
+        try:
+            value = float(raw)
+        except OverflowError:  # an integer of hundreds of digits
+            raise SceneError(f"the integer {str(raw)[:8]}... ({len(str(abs(raw)))} digits) is "
+                             "absurd for a mechanism; check the value and its unit",
+                             key=where) from None
         if default_unit is None:
             raise SceneError(f"{raw} has no unit; write it as a string such as "
                              f"\"{raw} {format_unit_list(kind).split(', ')[0]}\"", key=where)
@@ -199,8 +204,14 @@ def parse_quantity(raw, kind: str, *, where: str = "", default_unit: str | None 
         raise SceneError(f"'{raw}' is not a finite number", key=where)
     if sense is not None and not (need_sense or allow_sense):
         raise SceneError(f"'{raw}': a sense (cw/ccw) does not belong here", key=where)
+    if sense is not None and value < 0:  # "-10 rad/s cw": cw, or ccw (minus cw)?
+        raise SceneError(f"'{raw}': a negative value with a sense reads two ways; give the "
+                         f"size and its sense (\"{_magnitude(raw)} cw\" or \"... ccw\")",
+                         key=where)
     if need_sense and sense is None and value != 0:
-        raise SceneError(f"'{raw}' has no sense: add cw or ccw (e.g. \"{raw} ccw\")", key=where)
+        raw_size = _magnitude(raw) if value < 0 else str(raw).strip()
+        raise SceneError(f"'{raw}' has no sense: add cw or ccw (e.g. \"{raw_size} ccw\")",
+                         key=where)
     si = value * factor
     if kind in ABSURD and not abs(si) <= ABSURD[kind]:
         raise SceneError(f"'{raw}' is absurd for a mechanism (more than {ABSURD[kind]:g} "
@@ -212,6 +223,14 @@ def parse_quantity(raw, kind: str, *, where: str = "", default_unit: str | None 
     if sense == "cw":
         si = -si
     return Quantity(si, sense)
+
+
+def _magnitude(raw) -> str:
+    """``raw`` without its minus sign and its sense: "-10 rad/s cw" -> "10 rad/s"."""
+    words = str(raw).strip().split()
+    if words and words[-1].lower() in _SENSES:
+        words = words[:-1]
+    return " ".join(words).lstrip("-").lstrip()
 
 
 def _kind_of(raw) -> str:

@@ -254,7 +254,10 @@ def _cmd_check(args) -> int:
     if not answers:
         raise SceneError("nothing to check: the scene has no [answers] and no answer file "
                          "was given", file=args.scene, key="[answers]")
-    verdicts = check_answers(sol, answers, tolerance)
+    try:
+        verdicts = check_answers(sol, answers, tolerance)
+    except PolygonMethodError as exc:  # a centre the mechanism has not (I_19 of four links)
+        raise exc.located(args.answers or args.scene)
     if getattr(args, "json", False):
         print(_json(verdicts_dict(verdicts, args.scene, args.answers)))
     else:

@@ -127,7 +127,10 @@ def _cmd_page(args) -> int:
     else:
         tolerance, answers = scene.tolerance, scene.answers
     title = f"answers from {Path(args.answers).name if args.answers else 'the scene'}"
-    verdicts = check_answers(fr.sol, answers, tolerance) if answers else None
+    try:
+        verdicts = check_answers(fr.sol, answers, tolerance) if answers else None
+    except PolygonMethodError as exc:
+        raise exc.located(args.answers or args.scene)
     html = page_html(fr, verdicts=verdicts, answers_title=title)
     for w in fr.sol.warnings:
         print(f"warning: {w}", file=sys.stderr)

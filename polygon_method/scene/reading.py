@@ -202,6 +202,26 @@ def _printable(text):
     return "".join(c if c.isprintable() else repr(c)[1:-1] for c in str(text))
 
 
+#: TOML's integers are 64-bit ("an integer that cannot be represented losslessly must be
+#: an error"); tomllib reads longer ones, which no float can hold
+_INT64 = 1 << 63
+
+
+def _long_integer(raw):
+    """The keys leading to the first integer of ``raw`` outside TOML's 64-bit range, and
+    the integer, or None."""
+    todo = [((), raw)]
+    while todo:
+        path, value = todo.pop()
+        if isinstance(value, dict):
+            todo.extend((path + (k,), v) for k, v in reversed(value.items()))
+        elif isinstance(value, list):
+            todo.extend((path, v) for v in reversed(value))
+        elif isinstance(value, int) and not -_INT64 <= value < _INT64:
+            return path, value
+    return None
+
+
 class _Loader(_Tables, _Variants):
     def __init__(self, raw: dict, text: str, file):
         self.raw = raw
@@ -264,9 +284,26 @@ class _Loader(_Tables, _Variants):
                              "followed by digits: A, O2, B1)", table, key or name)
         return name
 
+    def check_integers(self):
+        """Refuse an integer beyond TOML's 64-bit range (``BC = 10**400`` written out):
+        named by its key, never an overflow further on."""
+        hit = _long_integer(self.raw)
+        if hit is None:
+            return
+        path, value = hit
+        digits = str(abs(value))
+        shown = f"{'-' if value < 0 else ''}{digits[:6]}...({len(digits)} digits)"
+        message = (f"the integer {shown} is beyond TOML's 64-bit integers, and absurd for a "
+                   "mechanism; check the value and its unit")
+        if len(path) >= 2:
+            raise self.error(message, path[0], path[1])
+        raise SceneError(message, file=self.file, key=path[0] if path else None,
+                         line=self.top_line(path[0]) if path else None)
+
     # -- the scene
     def scene(self) -> Scene:
         raw = self.raw
+        self.check_integers()
         for key in raw:
             if key not in TOP_KEYS:
                 kind = "table" if isinstance(raw[key], dict) else "key"
@@ -419,6 +456,7 @@ def parse_answers(text: str, scene: Scene, file: str | None = None, *,
     if not isinstance(raw.get("answers"), dict) or not raw["answers"]:
         raise SceneError("no [answers] table (or it is empty)", file=file, key="[answers]")
     loader = _Loader(raw, text, file)
+    loader.check_integers()
     loader.unit = scene.units
     loader.index = scene._link_index
     tolerance, answers = loader.answers(set(scene.point_names), scene.sliders, scene.pins,

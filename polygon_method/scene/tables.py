@@ -325,6 +325,8 @@ class _Tables:
                     math.isfinite(v) for v in value)):
             raise self.error(f"a centre's answer is its position [x, y] in {self.unit}, "
                              f"got {value!r}", "answers", key)
+        for v in value:  # [1e300, 0]: a units slip, never an error of 1e299 per cent
+            self.length(v, "answers", key, positive=False)
         pair = tuple(parts) if named else tuple(sorted(int(p) for p in parts))
         u = self.scale()
         return Answer(key, "centre", pair, (value[0] * u, value[1] * u), None,

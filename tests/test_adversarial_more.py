@@ -1,0 +1,176 @@
+"""More of what an adversarial user gives every command: what once crashed (exit 3), named
+no file, or answered silently wrong, each kept as a test of its kind.
+
+Expected values come from the inputs themselves (a number the user wrote, a link that
+cannot move, a count of lines), never from the code under test."""
+
+from __future__ import annotations
+
+import pytest
+
+from polygon_method import load_scene, parse_scene, solve
+from polygon_method.cli import main
+from polygon_method.errors import PolygonMethodError, SceneError
+
+FOURBAR = """[ground]
+A = [0, 0]
+D = [100, 0]
+[links]
+AB = 50
+BC = 66
+CD = 56
+[input]
+crank = "AB"
+angle = 60
+speed = "10.5 rad/s cw"
+"""
+
+
+def _one_line(capsys):
+    captured = capsys.readouterr()
+    lines = [x for x in captured.err.splitlines() if not x.startswith("warning:")]
+    assert len(lines) == 1, captured.err
+    assert not captured.out.strip(), captured.out
+    return lines[0]
+
+
+def _scene(tmp_path, text, name="s.toml"):
+    path = tmp_path / name
+    path.write_text(text)
+    return str(path)
+
+
+# ----------------------------------------------------------------- TOML's own edges
+
+
+@pytest.mark.parametrize("old, new, where", [
+    ("BC = 66", "BC = " + "9" * 400, "[links] BC (line 6)"),
+    ("angle = 60", "angle = -" + "1" * 30, "[input] angle (line 10)"),
+    ("D = [100, 0]", "D = [100, " + "7" * 25 + "]", "[ground] D (line 3)"),
+])
+@pytest.mark.parametrize("command", ["solve", "sweep", "linkage"])
+def test_an_integer_beyond_64_bits_is_one_line_not_an_overflow(tmp_path, capsys, old, new,
+                                                              where, command):
+    """TOML's integers are 64-bit; tomllib reads longer ones, which no float holds (it was
+    an internal error, exit 3)."""
+    path = _scene(tmp_path, FOURBAR.replace(old, new))
+    assert main([command, path]) == 2
+    line = _one_line(capsys)
+    assert where in line and "64-bit" in line and "s.toml" in line
+
+
+def test_a_long_integer_in_an_answer_file_or_a_variants_range_is_named(tmp_path, capsys):
+    from polygon_method.scene import parse_answers
+    sc = parse_scene(FOURBAR)
+    with pytest.raises(SceneError, match="64-bit") as err:
+        parse_answers("[answers]\nv_C = 1" + "0" * 30 + "\n", sc, file="ann.toml")
+    assert "[answers] v_C (line 2)" in err.value.one_line()
+    with pytest.raises(SceneError, match="64-bit") as err:
+        parse_scene(FOURBAR + "[variants]\nBC = { from = 60, to = 1" + "0" * 40
+                    + ", step = 1 }\n")
+    assert "[variants] BC" in err.value.one_line()
+    parse_scene(FOURBAR.replace("angle = 60", f"angle = {2**63 - 1}".replace(
+        str(2**63 - 1), "60")))  # an ordinary integer is still an integer
+
+
+def test_parse_quantity_refuses_a_huge_integer_in_its_own_words():
+    from polygon_method.units import parse_quantity
+    with pytest.raises(SceneError, match="absurd"):
+        parse_quantity(10**400, "length", default_unit="mm")
+
+
+# ----------------------------------------------------------------- senses
+
+
+@pytest.mark.parametrize("key, value", [
+    ("speed", "-10 rad/s cw"), ("speed", "-100 rpm ccw"),
+    ("acceleration", "-5 rad/s^2 ccw"),
+])
+def test_a_negative_value_with_a_sense_is_refused_not_turned_round(key, value):
+    """"-10 rad/s cw" was taken as 10 rad/s ccw (minus clockwise): it reads two ways."""
+    text = FOURBAR.replace('speed = "10.5 rad/s cw"', f'speed = "10.5 rad/s cw"\n{key} = '
+                           f'"{value}"') if key == "acceleration" else \
+        FOURBAR.replace('"10.5 rad/s cw"', f'"{value}"')
+    with pytest.raises(SceneError, match="reads two ways") as err:
+        parse_scene(text)
+    size = value.lstrip("-").rsplit(" ", 1)[0]
+    assert f'"{size} cw"' in err.value.one_line()
+
+
+def test_a_negative_speed_without_a_sense_is_shown_its_size_not_a_negative_example():
+    with pytest.raises(SceneError) as err:
+        parse_scene(FOURBAR.replace('"10.5 rad/s cw"', '"-10 rad/s"'))
+    assert 'e.g. "10 rad/s ccw"' in err.value.one_line()
+
+
+def test_a_negative_torque_answer_with_a_sense_is_refused_by_name():
+    from polygon_method.scene import parse_answers
+    sc = parse_scene(FOURBAR + '[loads]\nC = { force = "100 N", direction = 0 }\n')
+    with pytest.raises(SceneError, match="reads two ways") as err:
+        parse_answers('[answers]\ntorque = "-3 N m cw"\n', sc, file="a.toml")
+    assert "[answers] torque (line 2)" in err.value.one_line()
+
+
+# ----------------------------------------------------------------- a structure in the scene
+
+STRUCTURE = FOURBAR.replace("D = [100, 0]", "D = [100, 0]\nE = [200, 0]\nG = [250, 0]") \
+    .replace("CD = 56", "CD = 56\nEF = 30\nFG = 30")
+
+
+def test_links_that_never_move_are_swept_and_analysed():
+    """EF and FG join two ground points: F is a fixed point placed by two links (a
+    structure). The cycle's arrays met a step whose inputs are all fixed numbers (an
+    internal error in sweep, linkage, page); now F stands still at its place, and the
+    linkage's output is the four-bar's CD, never the standing FG."""
+    import math
+
+    import numpy as np
+
+    from polygon_method import sweep
+    from polygon_method.linkage import analyse
+    sc = parse_scene(STRUCTURE)
+    sw = sweep(sc, np.radians(np.arange(-90.0, 91.0, 15.0)))
+    fx, fy = 225.0e-3, math.sqrt(30.0**2 - 25.0**2) * 1e-3  # the triangle E, F, G by hand
+    assert np.all(np.abs(sw.P["F"][0] - fx) <= 1e-15)
+    assert np.all(np.abs(sw.P["F"][1] - fy) <= 1e-15)
+    assert np.all(sw.V["F"][0] == 0) and np.all(sw.V["F"][1] == 0)
+    lk = analyse(sc)
+    assert lk.output_label == "output link CD"
+    assert [t.point for t in lk.transmission] == ["C"]  # F's never changes: not reported
+
+
+@pytest.mark.parametrize("argv", [["sweep", "--steps", "8"], ["linkage"], ["steps"]])
+def test_every_command_takes_a_scene_with_a_structure(tmp_path, capsys, argv):
+    path = _scene(tmp_path, STRUCTURE)
+    assert main([argv[0], path, *argv[1:]]) == 0, capsys.readouterr().err
+
+
+def test_centres_that_cannot_be_located_name_the_scene_file(tmp_path, capsys):
+    """EF and FG never move: their centres with a moving link are nowhere. The refusal
+    named the step ("centres") but no file."""
+    path = _scene(tmp_path, STRUCTURE)
+    assert main(["centres", path]) == 2
+    line = _one_line(capsys)
+    assert line.startswith(f"polygon-method centres: {path}: centres: Kennedy's theorem")
+
+
+# ----------------------------------------------------------------- answers
+
+
+def test_an_answer_naming_a_centre_the_mechanism_has_not_names_its_file(tmp_path, capsys):
+    """I_19 of a four-link chain: the message named no file (it was raised while
+    checking, after the file was read)."""
+    scene = _scene(tmp_path, FOURBAR)
+    ans = _scene(tmp_path, "[answers]\nI_19 = [1, 2]\n", "ann.toml")
+    assert main(["check", scene, ans]) == 2
+    line = _one_line(capsys)
+    assert "ann.toml: [answers] I_19 (line 2)" in line and "no centre I19" in line
+    assert main(["check", _scene(tmp_path, FOURBAR + "[answers]\nI_19 = [1, 2]\n")]) == 2
+    assert "s.toml: [answers] I_19 (line 13)" in _one_line(capsys)
+
+
+def test_a_centre_answer_far_beyond_any_mechanism_is_a_units_slip():
+    """I_24 = [1e300, 2] was graded 4.7e299 % off, a number of 300 digits in the table."""
+    with pytest.raises(SceneError, match="absurd") as err:
+        parse_scene(FOURBAR + "[answers]\nI_24 = [1e300, 2]\n")
+    assert "[answers] I_24 (line 13)" in err.value.one_line()
