@@ -35,6 +35,11 @@ SPACE_FIT_CM = 15.0
 #: how closely a careful drawing is drawn and read: half a millimetre
 DRAWING_PRECISION_CM = 0.05
 
+#: the SI a centimetre of drawing may stand for, by kind: beyond, a scale is a slip (its
+#: diagram would be kilometres across, or a speck) and its text hundreds of digits long
+_SANE_PER_CM = {"length": (1e-9, 1e4), "velocity": (1e-12, 1e6), "acceleration": (1e-12, 1e12)}
+_SI = {"length": "m", "velocity": "m/s", "acceleration": "m/s^2"}
+
 _KIND_OF_UNIT = {u: k for k in ("length", "velocity", "acceleration") for u in UNITS[k]}
 
 
@@ -139,7 +144,13 @@ def parse_scale(text: str, kind: str | None = None) -> Scale:
     if not (paper > 0 and value > 0 and value.is_finite()):
         raise SceneError(f"scale {text!r}: both sides must be positive", key="scale")
     per = value / paper
-    return Scale(_text(per), unit, got, float(per) * UNITS[got][unit])
+    si = float(per) * UNITS[got][unit]
+    low, high = _SANE_PER_CM[got]
+    if not low <= si <= high:
+        raise SceneError(f"scale {text!r} is absurd for a mechanism's diagram (1 cm for "
+                         f"{si:g} {_SI[got]}; between {low:g} and {high:g}); leave --scale "
+                         "out and the tool chooses one", key="scale")
+    return Scale(_text(per), unit, got, si)
 
 
 def extent(points) -> float:

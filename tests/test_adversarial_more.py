@@ -174,3 +174,68 @@ def test_a_centre_answer_far_beyond_any_mechanism_is_a_units_slip():
     with pytest.raises(SceneError, match="absurd") as err:
         parse_scene(FOURBAR + "[answers]\nI_24 = [1e300, 2]\n")
     assert "[answers] I_24 (line 13)" in err.value.one_line()
+
+
+# ----------------------------------------------------------------- options at their extremes
+
+SEED = "worked_problems/fourbar_image_points.toml"
+
+
+def test_a_seed_beyond_64_bits_is_refused_not_every_variant_turned_down(tmp_path, capsys):
+    """Each variant file records its seed; TOML's integers are 64-bit. A larger seed
+    turned every combination down as "does not solve" (widen the ranges, it said)."""
+    from polygon_method.variants import MAX_SEED, generate
+    assert MAX_SEED == 2**63 - 1
+    out = tmp_path / "class"
+    assert main(["variants", SEED, "--count", "2", "--seed", str(2**64), "-o", str(out)]) == 2
+    line = _one_line(capsys)
+    assert "--seed" in line and "64-bit" in line and not out.exists()
+    with pytest.raises(PolygonMethodError, match="--seed"):
+        generate(load_scene(SEED), 2, 2**63)
+    assert main(["variants", SEED, "--count", "2", "--seed", str(2**63 - 1), "-o",
+                 str(out)]) == 0
+    capsys.readouterr()
+    assert load_scene(out / "variant-01.toml").variant.seed == 2**63 - 1
+
+
+@pytest.mark.parametrize("scale", ["1 cm = 1e-300 m/s", "1 cm = 1e300 m/s",
+                                   "1 cm = 1e20 m/s^2", "1 cm = 1e9 m"])
+def test_an_absurd_scale_is_one_short_line(tmp_path, capsys, scale):
+    """1e-300 m/s per cm printed the scale and the figure's size as numbers of 300
+    digits; 1e300 m/s per cm drew a speck."""
+    out = tmp_path / "d.svg"
+    assert main(["draw", SEED, "-o", str(out), "--scale", scale]) == 2
+    line = _one_line(capsys)
+    assert len(line) < 250 and "absurd" in line and "--scale" in line
+    assert not out.exists()
+
+
+def test_a_scale_that_draws_a_speck_is_refused_and_a_coarse_one_is_not(tmp_path, capsys):
+    out = tmp_path / "d.svg"
+    v_max = max(solve(load_scene(SEED)).speed(p) for p in "BCEFG")  # about 0.53 m/s
+    # 1000 m/s per cm: the polygon would be 0.5 mm / 1000 across
+    assert main(["draw", SEED, "-o", str(out), "--scale", "1 cm = 1000 m/s"]) == 2
+    assert "a speck" in _one_line(capsys) and not out.exists()
+    # 1 m/s per cm: half a centimetre, small but drawn as asked
+    assert v_max / 1.0 > 0.3
+    assert main(["draw", SEED, "-o", str(out), "--scale", "1 cm = 1 m/s"]) == 0
+    assert "velocity 1 cm = 1 m/s" in capsys.readouterr().out
+
+
+def test_a_too_fine_scale_says_the_size_in_a_few_digits(tmp_path, capsys):
+    out = tmp_path / "d.svg"
+    assert main(["draw", SEED, "-o", str(out), "--scale", "1 cm = 1e-11 m/s"]) == 2
+    line = _one_line(capsys)
+    assert "e+10 cm across" in line and len(line) < 200
+
+
+@pytest.mark.parametrize("diagram, scale", [("velocity", "1 cm = 1 m/s^2"),
+                                            ("acceleration", "1 cm = 0.1 m/s"),
+                                            ("centres", "1 cm = 0.1 m/s"),
+                                            ("configuration", "1 cm = 1 m/s^2")])
+def test_a_scale_for_a_diagram_not_drawn_is_refused_never_ignored(tmp_path, capsys, diagram,
+                                                                  scale):
+    out = tmp_path / "d.svg"
+    assert main(["draw", SEED, "-o", str(out), "--diagram", diagram, "--scale", scale]) == 2
+    line = _one_line(capsys)
+    assert f"--diagram {diagram} draws no" in line and not out.exists()

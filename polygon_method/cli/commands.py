@@ -86,6 +86,14 @@ def _cmd_draw(args) -> int:
         raise PolygonMethodError(f"cannot draw to {out}: the file name must end in .svg, .png "
                                  "or .pdf", key="-o")
     scales = parse_scales(getattr(args, "scale", None))
+    drawn = {"all": ("length", "velocity", "acceleration"), "centres": ("length",),
+             "configuration": ("length",)}.get(args.diagram or "all", (args.diagram,))
+    for kind, s in scales.items():  # never silently ignored
+        if kind not in drawn:
+            raise PolygonMethodError(f"{s.text} is {'an' if kind[0] == 'a' else 'a'} {kind} "
+                                     f"scale, and --diagram {args.diagram} draws no {kind} "
+                                     "diagram: leave it out",
+                                     key="--scale")
     targets = check_outputs([(out, "-o")], protect=[args.scene])
     sol = solve(load_scene(args.scene))
     diagram = getattr(args, "diagram", None) or "all"
