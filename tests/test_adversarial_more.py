@@ -239,3 +239,69 @@ def test_a_scale_for_a_diagram_not_drawn_is_refused_never_ignored(tmp_path, caps
     assert main(["draw", SEED, "-o", str(out), "--diagram", diagram, "--scale", scale]) == 2
     line = _one_line(capsys)
     assert f"--diagram {diagram} draws no" in line and not out.exists()
+
+
+# ----------------------------------------------------------------- the Python API
+
+
+@pytest.mark.parametrize("bad", [None, 123, b"/no/such/file", "", "  ", "/tmp/a\x00b"])
+def test_load_scene_of_what_names_no_file_is_a_scene_error(bad):
+    """None and 123 were TypeErrors, a NUL byte a ValueError, "" read the directory "."."""
+    with pytest.raises(SceneError) as err:
+        load_scene(bad)
+    assert "directory" not in str(err.value)
+
+
+@pytest.mark.parametrize("bad", [None, 123, b"[ground]\nA = [0, 0]\n", ["A"]])
+def test_parse_scene_of_what_is_no_text_is_a_scene_error(bad):
+    with pytest.raises(SceneError, match="str"):
+        parse_scene(bad)
+
+
+def test_load_answers_and_parse_answers_refuse_what_is_not_theirs(tmp_path):
+    from polygon_method.scene import load_answers, parse_answers
+    sc = parse_scene(FOURBAR)
+    with pytest.raises(SceneError):
+        load_answers(None, sc)
+    with pytest.raises(SceneError, match="str"):
+        parse_answers(None, sc)
+    with pytest.raises(SceneError, match="Scene"):
+        parse_answers('[answers]\nv_C = "1 m/s"\n', FOURBAR)
+
+
+@pytest.mark.parametrize("field, value, words", [
+    ("omega", 0.0, "zero: nothing moves"), ("omega", 1e300, "absurd"),
+    ("omega", 1e-300, "absurd"), ("alpha", 1e300, "absurd"), ("angle", 1e300, "absurd"),
+])
+def test_a_scene_made_through_the_api_meets_the_files_bounds(field, value, words):
+    """dataclasses.replace gave a zero speed (ZeroDivisionError in the input torque) or
+    1e300 rad/s (OverflowError); a file could state neither."""
+    import dataclasses
+    sc = parse_scene(FOURBAR + '[loads]\nC = { force = "100 N", direction = 0 }\n')
+    with pytest.raises(SceneError, match=words):
+        dataclasses.replace(sc, input=dataclasses.replace(sc.input, **{field: value}))
+    fine = dataclasses.replace(sc, input=dataclasses.replace(sc.input, omega=-3.0))
+    assert solve(fine).omega("AB") == -3.0
+
+
+def test_a_link_of_absurd_length_through_the_api_is_refused():
+    import dataclasses
+    sc = parse_scene(FOURBAR)
+    long_ = dataclasses.replace(sc.links[0], length=1e300)
+    with pytest.raises(SceneError, match="length between"):
+        dataclasses.replace(sc, links=(long_,) + sc.links[1:])
+
+
+@pytest.mark.parametrize("angles", ["abc", [1j], [1e300], [[0.1, 0.2]]])
+def test_sweep_angles_that_are_no_crank_angles_are_a_scene_error(angles):
+    from polygon_method import sweep
+    with pytest.raises(SceneError, match="crank angles"):
+        sweep(parse_scene(FOURBAR), angles)
+
+
+@pytest.mark.parametrize("chunk", [0, -1, 1.5, True])
+def test_a_sweep_chunk_is_a_whole_number(chunk):
+    """chunk = -1 gave an empty sweep, 0 a ValueError."""
+    from polygon_method import sweep
+    with pytest.raises(SceneError, match="chunk"):
+        sweep(parse_scene(FOURBAR), [0.0, 1.0], chunk=chunk)

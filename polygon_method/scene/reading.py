@@ -4,12 +4,13 @@ every failure one :class:`SceneError` naming the file, key and line."""
 from __future__ import annotations
 
 import math
+import os
 import re
 import tomllib
 from dataclasses import replace
 from pathlib import Path
 
-from ..errors import PolygonMethodError, SceneError
+from ..errors import PolygonMethodError, SceneError, printable
 from ..units import LENGTH_UNITS, UNITS, parse_quantity
 from .records import (_ABSURD_LONG, _ABSURD_SHORT, _POINT_ONLY, _UNIT_ORDER, TOP_KEYS, FixedPath,
                       GuideSlider, Link, Scene, split_name)
@@ -22,7 +23,7 @@ MAX_SCENE_BYTES = 1 << 20
 
 def load_scene(path) -> Scene:
     """Read and check a scene file. Raises :class:`SceneError` naming file, key and line."""
-    path = Path(path)
+    path = _path_of(path, "scene")
     try:
         with open(path, "rb") as fh:
             data = fh.read(MAX_SCENE_BYTES + 1)
@@ -49,8 +50,29 @@ def load_scene(path) -> Scene:
         raise exc.located(str(path))
 
 
+def _path_of(path, what) -> Path:
+    """``path`` as a :class:`Path`, or a :class:`SceneError` for what names no file (None,
+    a number, an empty name, a NUL byte)."""
+    if isinstance(path, bytes):
+        path = os.fsdecode(path)
+    if not isinstance(path, (str, os.PathLike)):
+        raise SceneError(f"a {what} file's path is needed (a str or a Path), not "
+                         f"{type(path).__name__}")
+    if not str(path).strip():
+        raise SceneError(f"an empty file name: name the {what} file")
+    if "\x00" in str(path):
+        raise SceneError(f"a file name cannot hold a NUL byte: {printable(str(path))}")
+    return Path(path)
+
+
 def parse_scene(text: str, file: str | None = None) -> Scene:
     """Parse scene text (TOML). See :func:`load_scene`."""
+    if isinstance(text, (bytes, bytearray)):
+        raise SceneError("the scene's text is needed as a str: decode the bytes (UTF-8), or "
+                         "give the file to load_scene", file=file)
+    if not isinstance(text, str):
+        raise SceneError(f"the scene's text (TOML) is needed as a str, not "
+                         f"{type(text).__name__}; load_scene reads a file", file=file)
     if not text.strip():
         raise SceneError("the file is empty; a scene needs [ground], [links] and [input]",
                          file=file)
@@ -445,6 +467,12 @@ def parse_answers(text: str, scene: Scene, file: str | None = None, *,
     file names (``variant = "07"``, a number, or a variant's file name; None if it names
     none) as a third item; raises :class:`SceneError` naming the key.
     """
+    if not isinstance(text, str):
+        raise SceneError(f"the answer file's text (TOML) is needed as a str, not "
+                         f"{type(text).__name__}", file=file)
+    if not isinstance(scene, Scene):
+        raise SceneError(f"a Scene is needed to read answers against, not "
+                         f"{type(scene).__name__}", file=file)
     try:
         raw = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
@@ -475,7 +503,7 @@ def parse_answers(text: str, scene: Scene, file: str | None = None, *,
 
 def load_answers(path, scene: Scene, *, with_variant: bool = False):
     """Read an answer file from ``path``; see :func:`parse_answers`."""
-    path = Path(path)
+    path = _path_of(path, "answer")
     try:
         with open(path, "rb") as fh:
             data = fh.read(MAX_SCENE_BYTES + 1)
