@@ -305,3 +305,59 @@ def test_a_sweep_chunk_is_a_whole_number(chunk):
     from polygon_method import sweep
     with pytest.raises(SceneError, match="chunk"):
         sweep(parse_scene(FOURBAR), [0.0, 1.0], chunk=chunk)
+
+
+# ----------------------------------------------------------------- answer files, names
+
+
+def test_an_answer_file_with_a_byte_order_mark_is_read_as_a_scene_is(tmp_path, capsys):
+    """A scene may start with a UTF-8 byte-order mark; an answer file saved by the same
+    editor was a TOML syntax error at line 1, column 1."""
+    scene = _scene(tmp_path, FOURBAR)
+    v_c = solve(parse_scene(FOURBAR)).speed("C")
+    ans = tmp_path / "ann.toml"
+    ans.write_bytes(b"\xef\xbb\xbf" + f'[answers]\r\nv_C = "{v_c:.5f} m/s"\r\n'.encode())
+    assert main(["check", scene, str(ans)]) == 0
+    assert "right" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("text, where", [
+    ('[answers]\n"v_C\\n" = "1 m/s"\n', "[answers] v_C\\n"),
+    ('[answers]\n"omega_BC\\n" = "1 rad/s ccw"\n', "[answers] omega_BC\\n"),
+])
+def test_a_name_with_a_trailing_line_break_is_no_name(text, where):
+    """`$` in a regular expression matches before a final line feed: "v_C\\n" was graded as
+    v_C (and printed with the line break, splitting the table's row)."""
+    from polygon_method.scene import parse_answers
+    with pytest.raises(SceneError) as err:
+        parse_answers(text, parse_scene(FOURBAR), file="a.toml")
+    line = err.value.one_line()
+    assert where in line and "\n" not in line
+
+
+def test_a_point_or_link_name_with_a_trailing_line_break_is_refused():
+    with pytest.raises(SceneError, match="not a point name"):
+        parse_scene(FOURBAR.replace("A = [0, 0]", 'A = [0, 0]\n"D\\n" = [5, 5]'))
+    with pytest.raises(SceneError, match="not a link name"):
+        parse_scene(FOURBAR.replace("BC = 66", 'BC = 66\n"CD\\n" = 56'))
+
+
+def test_a_value_with_a_line_break_is_shown_escaped_in_the_table(tmp_path, capsys):
+    scene = _scene(tmp_path, FOURBAR)
+    ans = _scene(tmp_path, '[answers]\nv_C = "0.4\\nm/s"\nomega_BC = "5.15\\trad/s ccw"\n',
+                 "ann.toml")
+    main(["check", scene, ans])
+    rows = [x for x in capsys.readouterr().out.splitlines() if x.startswith(("v_C", "omega"))]
+    assert len(rows) == 2 and "0.4\\nm/s" in rows[0] and "5.15\\trad/s" in rows[1]
+
+
+def test_a_value_thousands_of_characters_long_is_quoted_short(tmp_path, capsys):
+    scene = _scene(tmp_path, FOURBAR)
+    ans = _scene(tmp_path, '[answers]\nv_C = "' + "9" * 5000 + ' m/s"\n', "ann.toml")
+    assert main(["check", scene, ans]) == 2
+    line = _one_line(capsys)
+    assert len(line) < 300 and "(5004 characters)" in line and "[answers] v_C (line 2)" in line
+    with pytest.raises(SceneError) as err:
+        parse_scene(FOURBAR.replace('"10.5 rad/s cw"', '"10.5 ' + "r" * 3000 + '"'))
+    assert len(err.value.one_line()) < 300
+

@@ -510,7 +510,7 @@ def load_answers(path, scene: Scene, *, with_variant: bool = False):
         if len(data) > MAX_SCENE_BYTES:
             raise SceneError(f"larger than {MAX_SCENE_BYTES >> 20} MiB: not an answer file",
                              file=str(path))
-        text = data.decode("utf-8")
+        text = data.decode("utf-8-sig")  # a byte-order mark is fine, as in a scene
     except FileNotFoundError:
         raise SceneError("no such file", file=str(path)) from None
     except IsADirectoryError:

@@ -14,8 +14,8 @@ from ..errors import SceneError
 from ..units import ABSURD, TINY, UNITS
 
 POINT_NAME = re.compile(r"[A-Z][0-9]*")
-_POINT_ONLY = re.compile(r"^[A-Z][0-9]*$")
-_LINK_NAME = re.compile(r"^(?:[A-Z][0-9]*-?)+$")
+_POINT_ONLY = re.compile(r"^[A-Z][0-9]*\Z")  # \Z: "A\n" is no point name
+_LINK_NAME = re.compile(r"^(?:[A-Z][0-9]*-?)+\Z")
 
 _UNIT_ORDER = ("mm", "cm", "m", "in")
 

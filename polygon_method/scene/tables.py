@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 import re
 
-from ..errors import SceneError
+from ..errors import SceneError, printable
 from ..units import UNITS, did_you_mean
 from .records import (ANSWER_KINDS, INPUT_KEYS, Answer, CarriedPoint, FixedPath, GuideSlider,
                       Input, Load, Pin, split_name)
@@ -338,7 +338,7 @@ class _Tables:
             if not loads:
                 raise self.error("a torque answer needs [loads] to balance", "answers", key)
             q = self.qty(value, "torque", "answers", key, default_unit="N m", allow_sense=True)
-            return Answer(key, "torque", (), q.value, q.sense, str(value), line)
+            return Answer(key, "torque", (), q.value, q.sense, printable(str(value)), line)
         prefix, _, rest = key.partition("_")
         if prefix == "I" and rest:
             return self.centre_answer(key, rest, value, line)
@@ -372,5 +372,5 @@ class _Tables:
                 raise self.error(f"rubbing at {rest} needs its size in [pins]", "answers", key)
         q = self.qty(value, kind, "answers", key, default_unit=next(iter(UNITS[kind])),
                      allow_sense=sense_ok)
-        return Answer(key, prefix, names, q.value, q.sense, str(value), line)
+        return Answer(key, prefix, names, q.value, q.sense, printable(str(value)), line)
 
