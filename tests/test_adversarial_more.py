@@ -361,3 +361,35 @@ def test_a_value_thousands_of_characters_long_is_quoted_short(tmp_path, capsys):
         parse_scene(FOURBAR.replace('"10.5 rad/s cw"', '"10.5 ' + "r" * 3000 + '"'))
     assert len(err.value.one_line()) < 300
 
+
+
+SLOTTED_IN_LINE = """[ground]
+O2 = [0, 100]
+O4 = [0, 0]
+[links]
+"O2-A" = 100
+"O4-P" = 150
+[sliders]
+A = { along = "O4-P" }
+[input]
+crank = "O2-A"
+angle = 90
+speed = "10 rad/s ccw"
+"""
+
+
+def test_centres_a_rounding_apart_draw_no_line_to_infinity(tmp_path, capsys):
+    """The crank and lever in line: I13 falls on I14 but for 6e-15 mm of rounding, and the
+    Kennedy line through them had no direction (a line clipped to infinity: an internal
+    error while drawing). The sheet is drawn, with I13 where I14 is."""
+    import xml.etree.ElementTree as ET
+    from polygon_method.centres import locate
+    ic = locate(solve(parse_scene(SLOTTED_IN_LINE)))
+    i13, i14 = ic.centre(1, 3).point, ic.centre(1, 4).point
+    assert abs(i13[0] - i14[0]) < 1e-15 and abs(i13[1] - i14[1]) < 1e-15  # O4, by hand
+    out = tmp_path / "c.svg"
+    assert main(["draw", _scene(tmp_path, SLOTTED_IN_LINE), "--diagram", "centres", "-o",
+                 str(out)]) == 0, capsys.readouterr().err
+    root = ET.parse(out).getroot()
+    width = float(root.get("width").rstrip("pt"))
+    assert 0 < width < 2000

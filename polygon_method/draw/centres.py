@@ -40,7 +40,7 @@ def _clip(box, p, d):
             continue
         a, b = (lo - q) / dq, (hi - q) / dq
         t0, t1 = max(t0, min(a, b)), min(t1, max(a, b))
-    if t0 > t1:
+    if t0 > t1 or not (math.isfinite(t0) and math.isfinite(t1)):  # no direction: no line
         return None
     return (p[0] + t0 * d[0], p[1] + t0 * d[1]), (p[0] + t1 * d[0], p[1] + t1 * d[1])
 
@@ -63,12 +63,17 @@ def centres_sketch(sol, scale: Scale, ic) -> _Sketch:
             c = ic.centres[key]
             for a, b in c.lines:
                 pts = [cm(x.point) for x in (a, b, c) if x.point is not None]
-                if len(pts) >= 2:
-                    p0, p1 = pts[0], max(pts[1:], key=lambda q: math.dist(q, pts[0]))
+                far = max(pts[1:], key=lambda q: math.dist(q, pts[0])) if len(pts) >= 2 \
+                    else None
+                # two finite centres a rounding apart (I13 on I14) give no direction
+                if far is not None and math.dist(far, pts[0]) > 1e-9 * (box[2] - box[0]):
+                    p0, p1 = pts[0], far
                     d = (p1[0] - p0[0], p1[1] - p0[1])
-                else:
+                elif any(x.point is None for x in (a, b, c)):
                     inf = next(x for x in (a, b, c) if x.point is None)
                     p0, d = pts[0], inf.direction
+                else:
+                    continue
                 seg = _clip(box, p0, d)
                 if seg is not None:
                     sk.line(list(seg), gid=f"kennedy-{c.label}-{a.label}-{b.label}",
