@@ -29,6 +29,7 @@ from __future__ import annotations
 import math
 
 from .centres import Centre, Centres
+from .errors import TOL
 from .numbers import fmt, fmt_angular
 
 __all__ = ["centres_text"]
@@ -39,7 +40,9 @@ def _where(sol, c: Centre) -> str:
     if c.point is None:
         deg = math.degrees(math.atan2(c.direction[1], c.direction[0])) % 180.0
         return f"at infinity, direction {fmt(deg, 4)} deg"
-    return f"({fmt(c.point[0] / u, 6)}, {fmt(c.point[1] / u, 6)}) {name}"
+    noise = TOL.negligible * max(lk.length for lk in sol.scene.links)  # 6e-15 mm is 0
+    x, y = (0.0 if abs(q) <= noise else q / u for q in c.point)
+    return f"({fmt(x, 6)}, {fmt(y, 6)}) {name}"
 
 
 def centres_text(ic: Centres) -> str:

@@ -393,3 +393,10 @@ def test_centres_a_rounding_apart_draw_no_line_to_infinity(tmp_path, capsys):
     root = ET.parse(out).getroot()
     width = float(root.get("width").rstrip("pt"))
     assert 0 < width < 2000
+
+
+def test_a_centre_on_an_axis_is_printed_on_it_not_a_rounding_off(tmp_path, capsys):
+    """I23 is the pin at A = (0, 200) mm by hand; it was printed (6.12323e-15, 200)."""
+    assert main(["centres", _scene(tmp_path, SLOTTED_IN_LINE)]) == 0
+    out = capsys.readouterr().out
+    assert "I23  (0, 200) mm" in out and "e-15" not in out
