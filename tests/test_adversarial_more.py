@@ -400,3 +400,20 @@ def test_a_centre_on_an_axis_is_printed_on_it_not_a_rounding_off(tmp_path, capsy
     assert main(["centres", _scene(tmp_path, SLOTTED_IN_LINE)]) == 0
     out = capsys.readouterr().out
     assert "I23  (0, 200) mm" in out and "e-15" not in out
+
+
+def test_two_outputs_into_one_file_are_refused_before_anything_is_written(tmp_path, capsys):
+    """--csv x.svg --plot x.svg wrote the CSV and then the plot over it: the CSV was lost
+    without a word (also through a link to the other name)."""
+    same = tmp_path / "same.svg"
+    assert main(["sweep", SEED, "--steps", "10", "--csv", str(same), "--plot",
+                 str(same)]) == 2
+    assert "are one file" in _one_line(capsys) and not same.exists()
+    link = tmp_path / "link.csv"
+    link.symlink_to(same)
+    assert main(["sweep", SEED, "--steps", "10", "--csv", str(link), "--plot",
+                 str(same)]) == 2
+    assert "--csv" in _one_line(capsys) and not same.exists()
+    assert main(["sweep", SEED, "--steps", "10", "--csv", str(tmp_path / "a.csv"), "--plot",
+                 str(same)]) == 0
+    assert same.exists() and (tmp_path / "a.csv").read_text().startswith("theta")

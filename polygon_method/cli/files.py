@@ -92,7 +92,16 @@ def check_outputs(paths, protect=()) -> list:
     """Every output path checked before anything is computed or written: ``paths`` as
     (path, option) pairs; ``protect``: files that must not be written over (the scene
     first, then any other file the command reads)."""
-    return [_Target(path, option, protect) for path, option in paths]
+    targets = [_Target(path, option, protect) for path, option in paths]
+    seen = {}
+    for t in targets:  # two outputs into one file: the one written last would be all of it
+        if t.path in seen and not t.special:
+            first = seen[t.path]
+            raise PolygonMethodError(f"{first.option} {first.shown} and {t.option} {t.shown} "
+                                     "are one file: give each output its own",
+                                     key=t.option)
+        seen[t.path] = t
+    return targets
 
 
 def write_outputs(targets, datas) -> None:
