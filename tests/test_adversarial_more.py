@@ -417,3 +417,46 @@ def test_two_outputs_into_one_file_are_refused_before_anything_is_written(tmp_pa
     assert main(["sweep", SEED, "--steps", "10", "--csv", str(tmp_path / "a.csv"), "--plot",
                  str(same)]) == 0
     assert same.exists() and (tmp_path / "a.csv").read_text().startswith("theta")
+
+
+# ----------------------------------------------------------------- what to do
+
+
+def test_a_crank_set_where_the_links_cannot_meet_is_told_where_they_can():
+    """A double rocker (AB 90, BC 66, CD 56, AD 100) at 90 deg: C cannot be assembled. The
+    message said so but not what to do; now it gives the crank's range, here where BD =
+    BC + CD by the law of cosines: cos(theta) = (90^2 + 100^2 - 122^2) / (2 90 100)."""
+    import math
+
+    from polygon_method import AssemblyError
+    text = FOURBAR.replace("AB = 50", "AB = 90").replace("angle = 60", "angle = 90")
+    with pytest.raises(AssemblyError) as err:
+        solve(parse_scene(text))
+    edge = math.degrees(math.acos((90**2 + 100**2 - 122**2) / (2 * 90 * 100)))
+    assert f"can be set only from {-edge:.2f} to {edge:.2f} deg" in err.value.one_line()
+    text = text.replace("angle = 90", "angle = 180")  # the same range, named the same way
+    with pytest.raises(AssemblyError) as err:
+        solve(parse_scene(text))
+    assert f"from {-edge:.2f} to {edge:.2f} deg" in err.value.one_line()
+
+
+def test_a_slider_out_of_reach_is_told_both_ranges_of_its_crank():
+    """The bad scene: crank OA 150 at 90 deg, rod AB 100, B on the horizontal path
+    through O. B reaches the path where |150 sin(theta)| <= 100: two ranges about 0 and
+    180 deg, asin(100 / 150) either side."""
+    import math
+
+    from polygon_method import AssemblyError
+    with pytest.raises(AssemblyError) as err:
+        solve(load_scene("tests/bad_scenes/slider_cannot_reach.toml"))
+    a = math.degrees(math.asin(100 / 150))
+    assert (f"the crank OA can be set only from {-a:.2f} to {a:.2f} deg, or from "
+            f"{180 - a:.2f} to {180 + a:.2f} deg: give an angle there") in \
+        err.value.one_line()
+
+
+def test_links_that_meet_at_no_crank_angle_say_so():
+    from polygon_method import AssemblyError
+    text = FOURBAR.replace("BC = 66", "BC = 20").replace("CD = 56", "CD = 20")
+    with pytest.raises(AssemblyError, match="no angle of the crank AB assembles it"):
+        solve(parse_scene(text))
