@@ -460,3 +460,27 @@ def test_links_that_meet_at_no_crank_angle_say_so():
     text = FOURBAR.replace("BC = 66", "BC = 20").replace("CD = 56", "CD = 20")
     with pytest.raises(AssemblyError, match="no angle of the crank AB assembles it"):
         solve(parse_scene(text))
+
+
+# ----------------------------------------------------------------- titles and file names in a page
+
+
+@pytest.mark.parametrize("title", ["<!--<script>", "</script><script>alert(1)</script>",
+                                   "a <!-- b <script> c"])
+def test_a_title_never_ends_or_runs_on_the_pages_data(tmp_path, capsys, title):
+    """The page's data is JSON inside <script type="application/json">: "</" was escaped,
+    but "<!--<script>" from a title put the HTML parser in a state where the element's
+    own end tag does not end it (the rest of the page was read as script)."""
+    import json
+    import re
+    text = open(SEED).read().split("[variants]")[0]
+    text = re.sub(r'(?m)^title = .*$', "title = " + json.dumps(title), text)
+    page = tmp_path / "p.html"
+    ans = _scene(tmp_path, '[answers]\nv_C = "0.4 m/s"\n', "<!--<script>.toml")
+    assert main(["page", _scene(tmp_path, text), "-o", str(page), "--frames", "3",
+                 "--answers", ans]) == 0, capsys.readouterr().err
+    html = page.read_text()
+    m = re.search(r'<script type="application/json" id="frames">(.*?)</script>', html, re.S)
+    data = m.group(1)
+    assert "<" not in data  # no markup of any kind inside the element
+    assert json.loads(data)["title"] == title
