@@ -484,3 +484,65 @@ def test_a_title_never_ends_or_runs_on_the_pages_data(tmp_path, capsys, title):
     data = m.group(1)
     assert "<" not in data  # no markup of any kind inside the element
     assert json.loads(data)["title"] == title
+
+
+# ----------------------------------------------------------------- gigantic scenes
+
+
+def _many_points(n):
+    pts = "".join(f'E{i} = {{ on = "BC", along = {1 + 0.01 * i:.2f} }}\n' for i in range(n))
+    return FOURBAR + "[points]\n" + pts
+
+
+def test_a_scene_of_thousands_of_points_is_refused_by_its_count(tmp_path, capsys):
+    """3000 points on one link: a sweep's summary held every point at every refining angle
+    at once (gigabytes, killed after minutes)."""
+    from polygon_method.scene.reading import MAX_POINTS
+    from polygon_method.tracking import MAX_CYCLE_POINTS
+    with pytest.raises(SceneError, match=f"the scene has {MAX_POINTS + 1} points: at most"):
+        parse_scene(_many_points(MAX_POINTS + 1 - 4))  # A, B, C, D and the carried ones
+    path = _scene(tmp_path, _many_points(MAX_CYCLE_POINTS + 1 - 4))
+    for argv in (["sweep", path, "--steps", "4"], ["linkage", path]):
+        assert main(argv) == 2
+        assert f"has {MAX_CYCLE_POINTS + 1} points: the crank's cycle" in _one_line(capsys)
+    assert main(["solve", path]) == 0
+
+
+def test_refining_extremes_a_batch_at_a_time_finds_the_same_extremes(monkeypatch):
+    """The summary refines its extremes a batch of brackets at a time (bounded memory);
+    the batches change nothing: the same extremes, at the same angles, as all at once."""
+    import numpy as np
+
+    from polygon_method import summary
+    sc = load_scene(SEED)
+    angles = np.radians(np.arange(-100.0, 100.0, 2.0))
+    whole = summary.summarize(sc, angles)
+    monkeypatch.setattr(summary, "_REFINE_BUDGET", 17 * 7 * 3)  # three brackets a batch
+    parts = summary.summarize(sc, angles)
+    assert [(e.name, e.maximum, e.at_max, e.minimum, e.at_min) for e in whole.extremes] == \
+        [(e.name, e.maximum, e.at_max, e.minimum, e.at_min) for e in parts.extremes]
+
+
+def test_a_drawing_of_too_many_labels_is_refused_before_minutes_of_placing(tmp_path,
+                                                                          capsys):
+    """300 carried points: the labels' placement ran for over five minutes."""
+    import time
+
+    from polygon_method.draw.sheet import MAX_DRAWN_POINTS
+    path = _scene(tmp_path, _many_points(MAX_DRAWN_POINTS - 3))
+    out = tmp_path / "d.svg"
+    t0 = time.perf_counter()
+    assert main(["draw", path, "-o", str(out)]) == 2
+    assert time.perf_counter() - t0 < 5
+    assert f"has {MAX_DRAWN_POINTS + 1} points: a drawing labels at most" in _one_line(capsys)
+    assert not out.exists()
+    assert main(["page", path, "-o", str(tmp_path / "p.html"), "--frames", "3"]) == 0
+
+
+def test_labels_that_cannot_be_placed_are_one_warning_per_diagram(tmp_path, capsys):
+    """Forty labels crowded on one link were forty warning lines."""
+    path = _scene(tmp_path, _many_points(40))
+    assert main(["draw", path, "-o", str(tmp_path / "d.svg"), "--diagram",
+                 "configuration"]) == 0
+    warnings = [x for x in capsys.readouterr().err.splitlines() if x.startswith("warning:")]
+    assert len(warnings) == 1 and "more could not be placed" in warnings[0]

@@ -112,6 +112,10 @@ def draw_acceleration(ax, sol, scale=None) -> list:
 # --------------------------------------------------------------------------- the sheet
 
 
+#: the most points a drawing labels (placing each label clear of the others takes time
+#: that grows faster than their number: about 30 s for 100 points)
+MAX_DRAWN_POINTS = 80
+
 #: a diagram drawn this many times smaller than the step table's scale draws it is a speck
 #: (a polygon of at most 12 cm shrunk under 1.2 mm): a scale given by mistake
 _SPECK = 100.0
@@ -128,6 +132,11 @@ def layout(sol, diagram: str = "all", scales=None, centre_prefix: str = "I"):
     scale everywhere: each diagram is drawn at the scale the step table states (and the
     checker's tolerance uses), unless ``--scale`` gives another; the sheet's layout, not
     the scales, changes where the three do not fit side by side (:func:`rows`)."""
+    n = len(sol.scene.point_names)
+    if n > MAX_DRAWN_POINTS:  # each label is placed clear of every line and label: minutes
+        raise PolygonMethodError(f"the scene has {n} points: a drawing labels at most "
+                                 f"{MAX_DRAWN_POINTS} (the page, `polygon-method page`, "
+                                 "shows any number)", file=sol.scene.file)
     if diagram == "centres":
         return _centres_layout(sol, scales, centre_prefix)
     names = DIAGRAMS if diagram == "all" else (diagram,)

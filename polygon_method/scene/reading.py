@@ -19,6 +19,9 @@ from .variation import _Variants
 
 #: the most a scene file may hold: a scene is a page of text (``/dev/zero`` is not read on)
 MAX_SCENE_BYTES = 1 << 20
+#: the most points a scene may have (a textbook's mechanism has a few dozen; a long chain
+#: of dyads for studying how rounding grows has a few thousand)
+MAX_POINTS = 5000
 
 
 def load_scene(path) -> Scene:
@@ -398,6 +401,9 @@ class _Loader(_Tables, _Variants):
         loads = self.loads(known)
         tolerance, answers = self.answers(known, sliders, pins, loads)
         self.connected(links, points, sliders, ground, inp)
+        if len(known) > MAX_POINTS:
+            raise SceneError(f"the scene has {len(known)} points: at most {MAX_POINTS} (a "
+                             "mechanism of a textbook has a few dozen)", file=self.file)
         variation = self.variation(inp, ground, sliders, loads)
         variant = self.variant_of()
         return Scene(title=title, units=units, ground=ground, links=tuple(links),
