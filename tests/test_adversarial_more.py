@@ -546,3 +546,11 @@ def test_labels_that_cannot_be_placed_are_one_warning_per_diagram(tmp_path, caps
                  "configuration"]) == 0
     warnings = [x for x in capsys.readouterr().err.splitlines() if x.startswith("warning:")]
     assert len(warnings) == 1 and "more could not be placed" in warnings[0]
+
+
+@pytest.mark.parametrize("head", ["title = 5\n", "title = [\"a\"]\n", "[title]\nx = 1\n"])
+def test_a_title_that_is_no_string_names_its_line_and_the_form(head):
+    with pytest.raises(SceneError) as err:
+        parse_scene(head + FOURBAR)
+    line = err.value.one_line()
+    assert line.startswith("title (line 1): title must be a string: title = \"")

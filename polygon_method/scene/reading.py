@@ -348,7 +348,9 @@ class _Loader(_Tables, _Variants):
         self.unit = units
         title = raw.get("title", "")
         if not isinstance(title, str):
-            raise SceneError("title must be a string", file=self.file, key="title")
+            raise SceneError("title must be a string: title = \"Four-bar chain ABCD\"",
+                             file=self.file, key="title",
+                             line=self.top_line("title") or self.line_of("title"))
         source = raw.get("source")
 
         ground = {}
