@@ -554,3 +554,13 @@ def test_a_title_that_is_no_string_names_its_line_and_the_form(head):
         parse_scene(head + FOURBAR)
     line = err.value.one_line()
     assert line.startswith("title (line 1): title must be a string: title = \"")
+
+
+def test_a_file_with_lone_carriage_returns_is_told_its_line_endings():
+    """Lines ended by CR alone (an old Mac editor) are one line to TOML: the syntax error
+    at "line 1, column 9" said nothing of why."""
+    text = FOURBAR.replace("\n", "\r")
+    with pytest.raises(SceneError, match="lone carriage return") as err:
+        parse_scene(text)
+    assert "line 1" in err.value.one_line()
+    assert parse_scene(FOURBAR.replace("\n", "\r\n")).links[1].length == pytest.approx(0.066)

@@ -184,6 +184,9 @@ def _syntax_error(msg, text, file) -> SceneError:
             break
     else:
         core = core[:1].lower() + core[1:]
+    if re.search(r"\r(?!\n)", text):  # an old Mac's line ends: TOML sees one long line
+        core += ("; the file ends its lines with a lone carriage return (CR): save it with "
+                 "LF or CRLF line endings")
     return SceneError(f"TOML syntax error: {core}", file=file, key=where)
 
 
