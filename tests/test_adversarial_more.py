@@ -564,3 +564,22 @@ def test_a_file_with_lone_carriage_returns_is_told_its_line_endings():
         parse_scene(text)
     assert "line 1" in err.value.one_line()
     assert parse_scene(FOURBAR.replace("\n", "\r\n")).links[1].length == pytest.approx(0.066)
+
+
+def test_a_plot_of_one_point_or_link_named_twice_draws_one_curve_each(tmp_path):
+    """--points C,C --links BC,CB drew each curve twice, two legend entries of one name."""
+    import numpy as np
+
+    from polygon_method import sweep
+    from polygon_method.plots import plot_figure
+    res = sweep(load_scene(SEED), np.radians(np.arange(-90.0, 91.0, 10.0)))
+    fig = plot_figure(res, points=("C", "C"), links=("BC", "CB"))
+    labels = [ln.get_label() for ax in fig.axes for ln in ax.get_lines()
+              if not ln.get_label().startswith("_")]
+    assert sorted(labels) == ["a_C", "alpha_BC", "omega_BC", "v_C"]
+
+
+def test_a_list_of_names_of_only_commas_is_refused_not_taken_as_all(tmp_path, capsys):
+    plot = tmp_path / "p.svg"
+    assert main(["sweep", SEED, "--steps", "12", "--points", ",,", "--plot", str(plot)]) == 2
+    assert "--points ',,' names no point" in _one_line(capsys) and not plot.exists()

@@ -290,7 +290,11 @@ def _names(args, what):
     raw = getattr(args, what, None)
     if not raw:
         return None
-    return tuple(x.strip() for x in raw.split(",") if x.strip())
+    names = tuple(x.strip() for x in raw.split(",") if x.strip())
+    if not names:  # ",," is not "all of them"
+        raise SceneError(f"--{what} {raw!r} names no {what[:-1]}: give names such as "
+                         + ("C,E" if what == "points" else "BC,CD"), key=f"--{what}")
+    return names
 
 
 def _limits_text(dom) -> str:
