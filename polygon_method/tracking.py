@@ -302,8 +302,9 @@ class Sweeper:
                 new, cp = self._decide(plan, st, tc, direction)
                 cps.append(cp)
                 segs.append(self._seg(start, tc, plan, direction))
-                if not cp.followed:
-                    return segs, cps, LimitPosition(tc, st.label, cp.why)
+                if not cp.followed:  # its words without the step, as a limit's why is
+                    why = cp.why.removeprefix(f"{st.label}: ")
+                    return segs, cps, LimitPosition(tc, st.label, why)
                 done += abs(tc - start)
                 start, plan = tc, new
                 continue

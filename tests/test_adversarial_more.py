@@ -583,3 +583,16 @@ def test_a_list_of_names_of_only_commas_is_refused_not_taken_as_all(tmp_path, ca
     plot = tmp_path / "p.svg"
     assert main(["sweep", SEED, "--steps", "12", "--points", ",,", "--plot", str(plot)]) == 2
     assert "--points ',,' names no point" in _one_line(capsys) and not plot.exists()
+
+
+def test_a_limit_at_an_undecidable_change_point_names_its_step_once():
+    """AD 1e-8 mm shorter than a parallelogram's: at 0 deg the two assemblies meet and
+    leave with one velocity, a limit of the sweep. Its words repeated the step's label
+    ("step 2 (...): step 2 (...): the two assemblies ...")."""
+    from polygon_method.summary import summarize
+    text = FOURBAR.replace("D = [100, 0]", "D = [65.99999999, 0]").replace(
+        "AB = 50", "AB = 56").replace('"10.5 rad/s cw"', '"10 rad/s ccw"')
+    s = summarize(parse_scene(text))
+    (lp,) = [lp for lp in s.limits if "the two assemblies" in lp.why]
+    assert not lp.why.startswith("step") and lp.step.startswith("step 2")
+    assert s.text().count("step 2 (dyad BC, CD at C): step 2") == 0
