@@ -596,3 +596,27 @@ def test_a_limit_at_an_undecidable_change_point_names_its_step_once():
     (lp,) = [lp for lp in s.limits if "the two assemblies" in lp.why]
     assert not lp.why.startswith("step") and lp.step.startswith("step 2")
     assert s.text().count("step 2 (dyad BC, CD at C): step 2") == 0
+
+
+def test_a_named_pipe_with_no_writer_is_one_line_not_a_wait(tmp_path):
+    """A scene or answer file that is a named pipe nobody writes into: the open waited
+    for ever. Now it reads at once; with nothing in it, it says so."""
+    import os
+    import subprocess
+    import sys
+    fifo = tmp_path / "scene.toml"
+    os.mkfifo(fifo)
+    for argv in (["solve", str(fifo)], ["check", SEED, str(fifo)]):
+        run = subprocess.run([sys.executable, "-m", "polygon_method", *argv],
+                             capture_output=True, text=True, timeout=60)
+        assert run.returncode == 2 and "named pipe that nothing is writing into" in run.stderr
+        assert len(run.stderr.splitlines()) == 1
+
+
+def test_a_scene_through_a_pipe_with_its_writer_is_read_whole():
+    import subprocess
+    import sys
+    text = open(SEED).read()
+    run = subprocess.run([sys.executable, "-m", "polygon_method", "solve", "/dev/stdin"],
+                         input=text, capture_output=True, text=True, timeout=60)
+    assert run.returncode == 0 and "crank AB at 60 deg" in run.stdout

@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 import os
 import re
+import stat
 import tomllib
 from dataclasses import replace
 from pathlib import Path
@@ -28,8 +29,7 @@ def load_scene(path) -> Scene:
     """Read and check a scene file. Raises :class:`SceneError` naming file, key and line."""
     path = _path_of(path, "scene")
     try:
-        with open(path, "rb") as fh:
-            data = fh.read(MAX_SCENE_BYTES + 1)
+        data = _read_start(path)
     except FileNotFoundError:
         raise SceneError("no such file", file=str(path)) from None
     except IsADirectoryError:
@@ -51,6 +51,28 @@ def load_scene(path) -> Scene:
         return parse_scene(text, file=str(path))
     except PolygonMethodError as exc:
         raise exc.located(str(path))
+
+
+def _read_start(path) -> bytes:
+    """The first ``MAX_SCENE_BYTES + 1`` bytes of ``path``. A named pipe is opened without
+    waiting for a writer (a plain open would wait for ever where none comes): what a writer
+    has put in is read, and a pipe that nobody writes into reads as empty."""
+    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_BINARY", 0)
+    fd = os.open(path, flags)
+    try:
+        if hasattr(os, "set_blocking"):
+            os.set_blocking(fd, True)  # then read as any file: to the end, or the limit
+        fh = os.fdopen(fd, "rb")
+    except BaseException:
+        os.close(fd)
+        raise
+    with fh:
+        data = fh.read(MAX_SCENE_BYTES + 1)
+        if not data and stat.S_ISFIFO(os.fstat(fh.fileno()).st_mode):
+            raise SceneError("a named pipe that nothing is writing into: nothing to read "
+                             "(start its writer first, or give the file itself)",
+                             file=str(path))
+        return data
 
 
 def _path_of(path, what) -> Path:
@@ -516,8 +538,7 @@ def load_answers(path, scene: Scene, *, with_variant: bool = False):
     """Read an answer file from ``path``; see :func:`parse_answers`."""
     path = _path_of(path, "answer")
     try:
-        with open(path, "rb") as fh:
-            data = fh.read(MAX_SCENE_BYTES + 1)
+        data = _read_start(path)
         if len(data) > MAX_SCENE_BYTES:
             raise SceneError(f"larger than {MAX_SCENE_BYTES >> 20} MiB: not an answer file",
                              file=str(path))
