@@ -620,3 +620,38 @@ def test_a_scene_through_a_pipe_with_its_writer_is_read_whole():
     run = subprocess.run([sys.executable, "-m", "polygon_method", "solve", "/dev/stdin"],
                          input=text, capture_output=True, text=True, timeout=60)
     assert run.returncode == 0 and "crank AB at 60 deg" in run.stdout
+
+
+def test_an_output_that_is_a_named_pipe_with_no_reader_is_one_line_not_a_wait(tmp_path):
+    """-o or --csv onto a named pipe nobody reads: the write waited for ever."""
+    import os
+    import subprocess
+    import sys
+    for name, argv in (("d.svg", ["draw", SEED, "-o"]),
+                       ("s.csv", ["sweep", SEED, "--steps", "5", "--csv"])):
+        fifo = tmp_path / name
+        os.mkfifo(fifo)
+        run = subprocess.run([sys.executable, "-m", "polygon_method", *argv, str(fifo)],
+                             capture_output=True, text=True, timeout=60)
+        assert run.returncode == 2, run.stderr
+        assert "a named pipe that nothing is reading from" in run.stderr
+        assert len(run.stderr.splitlines()) == 1
+
+
+def test_an_output_pipe_with_its_reader_gets_the_whole_file(tmp_path):
+    import os
+    import subprocess
+    import sys
+    import threading
+    fifo = tmp_path / "s.csv"
+    os.mkfifo(fifo)
+    got = []
+    reader = threading.Thread(target=lambda: got.append(open(fifo).read()))
+    reader.start()
+    run = subprocess.run([sys.executable, "-m", "polygon_method", "sweep", SEED, "--steps",
+                          "5", "--csv", str(fifo)], capture_output=True, text=True,
+                         timeout=60)
+    reader.join(timeout=60)
+    assert run.returncode == 0, run.stderr
+    rows = got[0].splitlines()
+    assert rows[0].startswith("theta") and len(rows) == 1 + 3  # 3 of 5 angles reachable

@@ -4,6 +4,7 @@ scene."""
 
 from __future__ import annotations
 
+import errno
 import os
 import stat
 import tempfile
@@ -48,6 +49,10 @@ class _Target:
         self.tmp = None
 
     def fail(self, exc: OSError):
+        if exc.errno == errno.ENXIO and self.special and stat.S_ISFIFO(self.path.stat().st_mode):
+            return PolygonMethodError(f"cannot write {self.shown}: a named pipe that nothing "
+                                      "is reading from (start its reader first)",
+                                      key=self.option)
         return PolygonMethodError(f"cannot write {self.shown}: "
                                   f"{exc.strerror or type(exc).__name__}", key=self.option)
 
@@ -69,9 +74,18 @@ class _Target:
 
     def commit(self):
         try:
-            if self.special:
-                with open(self.path, "wb" if self.binary else "w",
-                          **({} if self.binary else {"encoding": "utf-8"})) as fh:
+            if self.special:  # a pipe is opened without waiting for a reader that may
+                fd = os.open(self.path,  # never come (ENXIO where none is there)
+                             os.O_WRONLY | getattr(os, "O_NONBLOCK", 0))
+                try:
+                    if hasattr(os, "set_blocking"):
+                        os.set_blocking(fd, True)
+                    fh = os.fdopen(fd, "wb" if self.binary else "w",
+                                   **({} if self.binary else {"encoding": "utf-8"}))
+                except BaseException:
+                    os.close(fd)
+                    raise
+                with fh:
                     fh.write(self.data)
             else:
                 os.replace(self.tmp, self.path)
