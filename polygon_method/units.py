@@ -177,6 +177,9 @@ def parse_quantity(raw, kind: str, *, where: str = "", default_unit: str | None 
         if words and words[-1].lower() in _SENSES:
             sense = _SENSES[words[-1].lower()]
             text = " ".join(words[:-1])
+            if len(words) > 2 and words[-2].lower() in _SENSES:  # "10 rad/s cw ccw"
+                raise SceneError(f"'{shown}' gives two senses: give one, cw or ccw",
+                                 key=where)
         m = _QUANTITY.match(text)
         if not m:
             raise SceneError(f"cannot read '{shown}' as a quantity (a number, then a unit)",

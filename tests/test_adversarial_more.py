@@ -655,3 +655,11 @@ def test_an_output_pipe_with_its_reader_gets_the_whole_file(tmp_path):
     assert run.returncode == 0, run.stderr
     rows = got[0].splitlines()
     assert rows[0].startswith("theta") and len(rows) == 1 + 3  # 3 of 5 angles reachable
+
+
+@pytest.mark.parametrize("speed", ["10 rad/s cw ccw", "10 rad/s ccw ccw", "10 rpm cw clockwise"])
+def test_a_speed_with_two_senses_is_told_so(speed):
+    """"10 rad/s cw ccw" was an unknown unit 'rad/s cw' (did you mean 'rad/s'?)."""
+    with pytest.raises(SceneError, match="gives two senses: give one") as err:
+        parse_scene(FOURBAR.replace('"10.5 rad/s cw"', f'"{speed}"'))
+    assert "[input] speed (line 11)" in err.value.one_line()
