@@ -202,7 +202,9 @@ class _Compiler:
             ctx = Context(np.asarray(theta, dtype=float), inp.omega, inp.alpha, array=True)
             with np.errstate(all="ignore"):
                 plan.run(ctx, upto=0)
-            return np.zeros(len(theta), dtype=bool) if ctx.bad is None else ctx.bad
+            if ctx.bad is None:
+                return np.zeros(len(theta), dtype=bool)
+            return np.broadcast_to(ctx.bad, (len(theta),))  # a step of fixed points: one
 
         two_pi = 2.0 * math.pi
         grid = [inp.angle + two_pi * (k / n - 0.5) for k in range(n)]

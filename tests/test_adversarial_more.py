@@ -663,3 +663,15 @@ def test_a_speed_with_two_senses_is_told_so(speed):
     with pytest.raises(SceneError, match="gives two senses: give one") as err:
         parse_scene(FOURBAR.replace('"10.5 rad/s cw"', f'"{speed}"'))
     assert "[input] speed (line 11)" in err.value.one_line()
+
+
+def test_links_between_fixed_points_that_cannot_meet_say_no_angle_helps():
+    """EF + FG = 60 mm between ground points 248 mm apart: the crank's angle changes
+    nothing. Saying where the crank could be set met a step of fixed points only (its
+    failure a single true, not an array per angle): an internal error."""
+    from polygon_method import AssemblyError
+    text = STRUCTURE.replace("E = [200, 0]", "E = [2, 0]")
+    with pytest.raises(AssemblyError) as err:
+        solve(parse_scene(text))
+    line = err.value.one_line()
+    assert "EF + FG = 60 mm < EG = 248 mm" in line and "no angle of the crank AB" in line
