@@ -670,7 +670,8 @@ def test_links_between_fixed_points_that_cannot_meet_say_no_angle_helps():
     nothing. Saying where the crank could be set met a step of fixed points only (its
     failure a single true, not an array per angle): an internal error."""
     from polygon_method import AssemblyError
-    text = STRUCTURE.replace("E = [200, 0]", "E = [2, 0]")
+    # AB 20: the four-bar turns fully (20 + 100 < 66 + 56), so only F's step fails
+    text = STRUCTURE.replace("E = [200, 0]", "E = [2, 0]").replace("AB = 50", "AB = 20")
     with pytest.raises(AssemblyError) as err:
         solve(parse_scene(text))
     line = err.value.one_line()
