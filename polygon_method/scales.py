@@ -154,10 +154,31 @@ def parse_scale(text: str, kind: str | None = None) -> Scale:
 
 
 def extent(points) -> float:
-    """The size of a diagram: the largest distance between two of its points."""
-    pts = list(points)
+    """The size of a diagram: the largest distance between two of its points (two corners
+    of their convex hull: a thousand points are not a million pairs)."""
+    pts = _hull(points)
     return max((math.dist(p, q) for i, p in enumerate(pts) for q in pts[i + 1:]),
                default=0.0)
+
+
+def _hull(points) -> list:
+    """The corners of the convex hull of ``points`` (Andrew's monotone chain; collinear
+    points dropped, as no farthest pair needs them)."""
+    pts = sorted(set((float(x), float(y)) for x, y in points))
+    if len(pts) <= 3:
+        return pts
+
+    def half(seq):
+        out = []
+        for p in seq:
+            while len(out) >= 2 and ((out[-1][0] - out[-2][0]) * (p[1] - out[-2][1]) -
+                                     (out[-1][1] - out[-2][1]) * (p[0] - out[-2][0])) <= 0:
+                out.pop()
+            out.append(p)
+        return out
+
+    lower, upper = half(pts), half(reversed(pts))
+    return lower[:-1] + upper[:-1]
 
 
 def diagram_scales(sol, fit_cm: float = FIT_CM, space_fit_cm: float = SPACE_FIT_CM):

@@ -689,3 +689,23 @@ def test_frames_times_points_are_bounded_before_anything_is_computed(tmp_path, c
     line = _one_line(capsys)
     assert f"--frames {frames} of 400 points" in line and \
         f"give at most {MAX_FRAME_POINTS // 400} frames" in line and not page.exists()
+
+
+from hypothesis import given, settings, strategies as st  # noqa: E402
+
+_coord = st.floats(-1e4, 1e4, allow_nan=False, allow_infinity=False)
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.tuples(_coord, _coord), max_size=40))
+def test_a_diagrams_extent_is_its_farthest_pair(points):
+    """The extent (which sets every scale) from the convex hull's corners equals the
+    farthest pair found by trying every pair (it tried every pair: the step table of a
+    thousand points spent seconds there)."""
+    import itertools
+    import math
+
+    from polygon_method.scales import extent
+    brute = max((math.dist(p, q) for p, q in itertools.combinations(points, 2)), default=0.0)
+    assert extent(points) == brute
+
