@@ -254,10 +254,13 @@ class _Compiler:
         names = self.names
         order = {p: i for i, p in enumerate(names)}
         heap = list(range(len(names)))  # sorted: a heap
-        while True:
+        waiting = set(heap)  # each point in the heap once (a plate of many carried points
+        while True:          # would push its every point again for each found: quadratic)
             found = None
             while heap and found is None:
-                name = names[heapq.heappop(heap)]
+                i = heapq.heappop(heap)
+                waiting.discard(i)
+                name = names[i]
                 if name in self.P:
                     continue
                 found = self._first(TIERS[0], name)
@@ -274,8 +277,9 @@ class _Compiler:
             self.add(found)
             for p in self.neighbours(found.finds[0]):
                 i = order.get(p)
-                if i is not None and p not in self.P:
+                if i is not None and p not in self.P and i not in waiting:
                     heapq.heappush(heap, i)
+                    waiting.add(i)
         self.finish()
         fixed = {lk.key: 0.0 for lk in sc.links if lk.p in sc.ground and lk.q in sc.ground}
         pins = []
