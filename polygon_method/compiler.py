@@ -41,6 +41,9 @@ from .steps import TIERS, Context, Crank
 
 __all__ = ["compile_plan", "gruebler", "step_scale"]
 
+#: crank angles tried per turn for saying where a scene that cannot assemble could
+_REACH_GRID = 720
+
 
 # --------------------------------------------------------------------------- compiling
 
@@ -172,13 +175,69 @@ class _Compiler:
 
     # ----- compiling
     def add(self, step):
-        if step.branching:
-            step, xy = self.choose_branch(step)
-        else:
-            xy = step.place(self.P, step.params, self.ctx)[:2]
+        try:
+            if step.branching:
+                step, xy = self.choose_branch(step)
+            else:
+                xy = step.place(self.P, step.params, self.ctx)[:2]
+        except AssemblyError as exc:
+            if exc.key is None:  # not an [assembly] hint: the links cannot meet here
+                exc.message = f"{exc.message}; {self.reach(step)}"
+            raise
         self.P[step.finds[0]] = xy
         self.steps.append(step)
         self.used_links.update(step.links)
+
+    def reach(self, failing, n=_REACH_GRID) -> str:
+        """Where the crank can be set so that the steps so far and ``failing`` assemble
+        (each end to about 1e-4 deg): what to do when the stated angle cannot."""
+        sc, inp = self.scene, self.scene.input
+        steps = tuple(self.steps) + (failing,)
+        plan = Plan(steps, dict(sc.ground), sc, (), {}, (),
+                    Dims(dict(sc.ground), tuple(st.params for st in steps), inp.angle,
+                         inp.omega, inp.alpha, {}))
+
+        def fails(theta):
+            import numpy as np
+            ctx = Context(np.asarray(theta, dtype=float), inp.omega, inp.alpha, array=True)
+            with np.errstate(all="ignore"):
+                plan.run(ctx, upto=0)
+            if ctx.bad is None:
+                return np.zeros(len(theta), dtype=bool)
+            return np.broadcast_to(ctx.bad, (len(theta),))  # a step of fixed points: one
+
+        two_pi = 2.0 * math.pi
+        grid = [inp.angle + two_pi * (k / n - 0.5) for k in range(n)]
+        bad = fails(grid)
+        crank = inp.crank
+        if bad.all():
+            return (f"no angle of the crank {crank} assembles it: the links are too short "
+                    "or too long (check the lengths)")
+        if not bad.any():
+            return f"(it assembles at the angles either side: a limit of the crank {crank})"
+
+        def edge(good, wrong):  # bisection between an angle that assembles and one that not
+            for _ in range(24):
+                mid = 0.5 * (good + wrong)
+                if fails([mid])[0]:
+                    wrong = mid
+                else:
+                    good = mid
+            return math.degrees(good)
+
+        h = two_pi / n
+        ranges = []
+        for i in range(n):
+            if not bad[i] and bad[i - 1]:  # a range starts at i (the grid closes the turn)
+                j = i
+                while not bad[(j + 1) % n]:
+                    j += 1
+                lo = edge(grid[i], grid[i] - h)
+                hi = edge(grid[j % n] + two_pi * (j // n), grid[j % n] + two_pi * (j // n) + h)
+                shown = (lo + 180.0) % 360.0 - 180.0  # from -180 to 180, the end follows
+                ranges.append(f"{shown:.2f} to {shown + hi - lo:.2f} deg")
+        return (f"the crank {crank} can be set only from " + ", or from ".join(ranges)
+                + ": give an angle there")
 
     def neighbours(self, name):
         out = set()
@@ -195,10 +254,13 @@ class _Compiler:
         names = self.names
         order = {p: i for i, p in enumerate(names)}
         heap = list(range(len(names)))  # sorted: a heap
-        while True:
+        waiting = set(heap)  # each point in the heap once (a plate of many carried points
+        while True:          # would push its every point again for each found: quadratic)
             found = None
             while heap and found is None:
-                name = names[heapq.heappop(heap)]
+                i = heapq.heappop(heap)
+                waiting.discard(i)
+                name = names[i]
                 if name in self.P:
                     continue
                 found = self._first(TIERS[0], name)
@@ -215,8 +277,9 @@ class _Compiler:
             self.add(found)
             for p in self.neighbours(found.finds[0]):
                 i = order.get(p)
-                if i is not None and p not in self.P:
+                if i is not None and p not in self.P and i not in waiting:
                     heapq.heappush(heap, i)
+                    waiting.add(i)
         self.finish()
         fixed = {lk.key: 0.0 for lk in sc.links if lk.p in sc.ground and lk.q in sc.ground}
         pins = []

@@ -27,8 +27,8 @@ def plot_figure(res: SweepResult, *, points=None, links=None):
 
     sc = res.scene
     ground = set(sc.ground)
-    pts = points or tuple(p for p in sc.point_names if p not in ground)
-    for p in pts:
+    pts = tuple(dict.fromkeys(points or (p for p in sc.point_names if p not in ground)))
+    for p in pts:  # (each once: "C,C" is not two curves under one name)
         if p not in res.P:
             raise SceneError(f"--points: no point {p} in the scene", file=sc.file)
     keys = []
@@ -36,7 +36,8 @@ def plot_figure(res: SweepResult, *, points=None, links=None):
                           if not (lk.p in ground and lk.q in ground)]:
         if not sc.has_link(name):
             raise SceneError(f"--links: no link {name} in [links]", file=sc.file)
-        keys.append(sc.link(name).key)
+        if sc.link(name).key not in keys:  # BC and CB are one link
+            keys.append(sc.link(name).key)
     dom = res.domain
     if dom.full_turn:
         deg = res.degrees

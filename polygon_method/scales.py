@@ -35,6 +35,11 @@ SPACE_FIT_CM = 15.0
 #: how closely a careful drawing is drawn and read: half a millimetre
 DRAWING_PRECISION_CM = 0.05
 
+#: the SI a centimetre of drawing may stand for, by kind: beyond, a scale is a slip (its
+#: diagram would be kilometres across, or a speck) and its text hundreds of digits long
+_SANE_PER_CM = {"length": (1e-9, 1e4), "velocity": (1e-12, 1e6), "acceleration": (1e-12, 1e12)}
+_SI = {"length": "m", "velocity": "m/s", "acceleration": "m/s^2"}
+
 _KIND_OF_UNIT = {u: k for k in ("length", "velocity", "acceleration") for u in UNITS[k]}
 
 
@@ -139,14 +144,41 @@ def parse_scale(text: str, kind: str | None = None) -> Scale:
     if not (paper > 0 and value > 0 and value.is_finite()):
         raise SceneError(f"scale {text!r}: both sides must be positive", key="scale")
     per = value / paper
-    return Scale(_text(per), unit, got, float(per) * UNITS[got][unit])
+    si = float(per) * UNITS[got][unit]
+    low, high = _SANE_PER_CM[got]
+    if not low <= si <= high:
+        raise SceneError(f"scale {text!r} is absurd for a mechanism's diagram (1 cm for "
+                         f"{si:g} {_SI[got]}; between {low:g} and {high:g}); leave --scale "
+                         "out and the tool chooses one", key="scale")
+    return Scale(_text(per), unit, got, si)
 
 
 def extent(points) -> float:
-    """The size of a diagram: the largest distance between two of its points."""
-    pts = list(points)
+    """The size of a diagram: the largest distance between two of its points (two corners
+    of their convex hull: a thousand points are not a million pairs)."""
+    pts = _hull(points)
     return max((math.dist(p, q) for i, p in enumerate(pts) for q in pts[i + 1:]),
                default=0.0)
+
+
+def _hull(points) -> list:
+    """The corners of the convex hull of ``points`` (Andrew's monotone chain; collinear
+    points dropped, as no farthest pair needs them)."""
+    pts = sorted(set((float(x), float(y)) for x, y in points))
+    if len(pts) <= 3:
+        return pts
+
+    def half(seq):
+        out = []
+        for p in seq:
+            while len(out) >= 2 and ((out[-1][0] - out[-2][0]) * (p[1] - out[-2][1]) -
+                                     (out[-1][1] - out[-2][1]) * (p[0] - out[-2][0])) <= 0:
+                out.pop()
+            out.append(p)
+        return out
+
+    lower, upper = half(pts), half(reversed(pts))
+    return lower[:-1] + upper[:-1]
 
 
 def diagram_scales(sol, fit_cm: float = FIT_CM, space_fit_cm: float = SPACE_FIT_CM):

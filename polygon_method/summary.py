@@ -125,6 +125,10 @@ class Summary:
         return "\n".join(out)
 
 
+#: angles times points evaluated at once when refining extremes (about 100 MB of arrays)
+_REFINE_BUDGET = 1_000_000
+
+
 class _Reducer:
     """Running maxima and minima over chunks (with the index where each occurs)."""
 
@@ -208,30 +212,39 @@ class _Reducer:
     def _refine(self, tasks, passes):
         """Zoom on sampled extremes, all at once: 17 points across each bracket a pass.
         ``tasks``: [name, sense, a, b, best value, best angle]; updated in place."""
-        sw = self.sw
+        # a batch of brackets at a time: every angle evaluates every point, so all of them
+        # at once would hold (brackets x points), quadratic in the scene's size (gigabytes
+        # for a thousand points)
+        batch = max(1, _REFINE_BUDGET // (17 * max(1, len(self.scene.point_names))))
         for _ in range(passes):
             live = [t for t in tasks if t[2] < t[3]]
             if not live:
                 return
-            pts = np.concatenate([np.linspace(t[2], t[3], 17) for t in live])
-            ok = angles_ok(sw, pts)
-            fr = sw.evaluate(pts)
-            invalid = valid_mask(fr, self.plan)
-            if ok is not None:
-                invalid |= ~ok
-            q = {nm: arr for nm, _, arr, _ in self.values(fr)}
-            for k, t in enumerate(live):
-                name, sense = t[0], t[1]
-                sl = slice(17 * k, 17 * k + 17)
-                vals = np.where(invalid[sl], -np.inf, q[name][sl] * sense)
-                j = int(np.argmax(vals))
-                if not np.isfinite(vals[j]):
-                    t[3] = t[2]  # give up on this one
-                    continue
-                if vals[j] * sense * sense >= t[4] * sense:
-                    t[4], t[5] = float(vals[j] * sense), float(pts[sl][j])
-                p = pts[sl]
-                t[2], t[3] = p[max(j - 1, 0)], p[min(j + 1, 16)]
+            for k in range(0, len(live), batch):
+                self._refine_pass(live[k:k + batch])
+
+    def _refine_pass(self, live):
+        """One pass of :meth:`_refine` over the brackets ``live``."""
+        sw = self.sw
+        pts = np.concatenate([np.linspace(t[2], t[3], 17) for t in live])
+        ok = angles_ok(sw, pts)
+        fr = sw.evaluate(pts)
+        invalid = valid_mask(fr, self.plan)
+        if ok is not None:
+            invalid |= ~ok
+        q = {nm: arr for nm, _, arr, _ in self.values(fr)}
+        for k, t in enumerate(live):
+            name, sense = t[0], t[1]
+            sl = slice(17 * k, 17 * k + 17)
+            vals = np.where(invalid[sl], -np.inf, q[name][sl] * sense)
+            j = int(np.argmax(vals))
+            if not np.isfinite(vals[j]):
+                t[3] = t[2]  # give up on this one
+                continue
+            if vals[j] * sense * sense >= t[4] * sense:
+                t[4], t[5] = float(vals[j] * sense), float(pts[sl][j])
+            p = pts[sl]
+            t[2], t[3] = p[max(j - 1, 0)], p[min(j + 1, 16)]
 
     def finish(self, theta, requested, evaluated, *, refine=True):
         sw = self.sw

@@ -32,6 +32,7 @@ from .kinematics import Motion
 from .compiler import compile_plan
 from .scene import Scene
 from .tracking import CHUNK, Domain, Sweeper, _motion, run_arrays, valid_mask
+from .units import ABSURD
 
 __all__ = ["sweep", "SweepResult", "evaluate_all", "angles_ok", "sweep_angles", "CHUNK"]
 
@@ -179,11 +180,18 @@ def _patch(fr: Motion, fix: Motion, idx):
 def sweep_angles(angles):
     if angles is None:
         return np.radians(np.arange(360.0))
-    th = np.atleast_1d(np.asarray(angles, dtype=float))
+    try:
+        th = np.atleast_1d(np.asarray(angles, dtype=float))
+    except (TypeError, ValueError):
+        raise SceneError("the crank angles must be numbers (radians), got "
+                         f"{str(angles)[:60]!r}") from None
     if th.ndim != 1:
         raise SceneError("the crank angles must be a 1-D sequence")
     if not np.isfinite(th).all():
         raise SceneError("the crank angles must be finite numbers")
+    if len(th) and np.abs(th).max() > ABSURD["angle"]:  # cos(1e300) is rounding, not a turn
+        raise SceneError(f"the crank angles must be within +-{ABSURD['angle']:g} rad, got "
+                         f"{np.abs(th).max():g}")
     return th
 
 
@@ -195,6 +203,8 @@ def sweep(scene: Scene, angles=None, *, chunk: int = CHUNK) -> SweepResult:
     out and reported (``left_out``, ``limits``), never filled with NaN or another branch.
     """
     th_req = sweep_angles(angles)
+    if isinstance(chunk, bool) or not isinstance(chunk, (int, np.integer)) or chunk < 1:
+        raise SceneError(f"chunk = {chunk!r}: a whole number of crank angles, 1 or more")
     sw = Sweeper(scene)
     sw.stated_branch()
     plan = sw.plan

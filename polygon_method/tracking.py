@@ -28,7 +28,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from .errors import TOL, SingularStepError
+from .errors import TOL, SceneError, SingularStepError
 from .kinematics import Motion
 from .compiler import compile_plan
 from .plan import Context
@@ -36,7 +36,7 @@ from .scene import Scene
 
 __all__ = ["Sweeper", "Domain", "LimitPosition", "ChangePoint", "run_arrays", "merge",
            "valid_mask", "degrees_fn", "fmt_deg", "tune_malloc", "TWO_PI", "CHUNK",
-           "NEAR"]
+           "NEAR", "MAX_CYCLE_POINTS"]
 
 #: crank angles evaluated per pass (about 32k: the temporaries of one pass stay in cache)
 CHUNK = 32768
@@ -47,6 +47,9 @@ TWO_PI = 2.0 * math.pi
 _CANDIDATE = 0.2
 #: ... and is a change point where its refined minimum is below this
 _CHANGE = 1e-7
+#: the most points whose motion over the crank's cycle is followed (a sweep's summary of
+#: 1000 takes about 10 s)
+MAX_CYCLE_POINTS = 1000
 #: a reachable range narrower than this (rad) is a locked linkage, not a motion
 _LOCKED = 1e-5
 #: offset either side of a change point when comparing the branches' velocities (rad)
@@ -210,6 +213,12 @@ class Sweeper:
 
     def __init__(self, scene: Scene):
         self.scene = scene
+        n = len(scene.point_names)
+        if n > MAX_CYCLE_POINTS:  # every angle evaluates every point, and extremes are
+            raise SceneError(    # refined for each: minutes for thousands
+                f"the scene has {n} points: the crank's cycle (sweep, linkage, page, "
+                f"--animate) is followed for at most {MAX_CYCLE_POINTS}; solve and steps "
+                "take more", file=scene.file)
         self.plan = compile_plan(scene)
         inp = scene.input
         self.theta0, self.omega, self.alpha = inp.angle, inp.omega, inp.alpha
@@ -293,8 +302,9 @@ class Sweeper:
                 new, cp = self._decide(plan, st, tc, direction)
                 cps.append(cp)
                 segs.append(self._seg(start, tc, plan, direction))
-                if not cp.followed:
-                    return segs, cps, LimitPosition(tc, st.label, cp.why)
+                if not cp.followed:  # its words without the step, as a limit's why is
+                    why = cp.why.removeprefix(f"{st.label}: ")
+                    return segs, cps, LimitPosition(tc, st.label, why)
                 done += abs(tc - start)
                 start, plan = tc, new
                 continue

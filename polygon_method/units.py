@@ -145,10 +145,10 @@ def _unit_factor(unit: str, kind: str, where: str) -> float:
         return folded[unit.lower()]
     other = next((k for k, t in UNITS.items() if unit in t), None)
     if other is not None:
-        raise SceneError(f"'{unit}' is a unit of {other.replace('_', ' ')}, "
+        raise SceneError(f"'{_clip(unit)}' is a unit of {other.replace('_', ' ')}, "
                          f"not of {kind.replace('_', ' ')} (use {format_unit_list(kind)})",
                          key=where)
-    raise SceneError(f"unknown unit '{unit}'{did_you_mean(unit, table)}; "
+    raise SceneError(f"unknown unit '{_clip(unit)}'{did_you_mean(unit, table)}; "
                      f"use {format_unit_list(kind)}", key=where)
 
 
@@ -173,48 +173,77 @@ def parse_quantity(raw, kind: str, *, where: str = "", default_unit: str | None 
         raise SceneError(f"expected a number or a string such as \"50 mm\", got {_kind_of(raw)}",
                          key=where)
     sense = None
+    shown = _clip(raw)
     if isinstance(raw, str):
         text = raw.strip()
         words = text.split()
         if words and words[-1].lower() in _SENSES:
             sense = _SENSES[words[-1].lower()]
             text = " ".join(words[:-1])
+            if len(words) > 2 and words[-2].lower() in _SENSES:  # "10 rad/s cw ccw"
+                raise SceneError(f"'{shown}' gives two senses: give one, cw or ccw",
+                                 key=where)
         m = _QUANTITY.match(text)
         if not m:
-            raise SceneError(f"cannot read '{raw}' as a quantity (a number, then a unit)",
+            raise SceneError(f"cannot read '{shown}' as a quantity (a number, then a unit)",
                              key=where)
         value = float(m.group(1))
         unit = m.group(2).strip()
         if not unit:
             if default_unit is None:
-                raise SceneError(f"'{raw}' has no unit; write it as e.g. "
+                raise SceneError(f"'{shown}' has no unit; write it as e.g. "
                                  f"\"{m.group(1)} {format_unit_list(kind).split(', ')[0]}\"",
                                  key=where)
             unit = default_unit
         factor = _unit_factor(unit, kind, where)
     else:
-        value = float(raw)
+        try:
+            value = float(raw)
+        except OverflowError:  # an integer of hundreds of digits
+            raise SceneError(f"the integer {str(raw)[:8]}... ({len(str(abs(raw)))} digits) is "
+                             "absurd for a mechanism; check the value and its unit",
+                             key=where) from None
         if default_unit is None:
             raise SceneError(f"{raw} has no unit; write it as a string such as "
                              f"\"{raw} {format_unit_list(kind).split(', ')[0]}\"", key=where)
         factor = _unit_factor(default_unit, kind, where)
     if not math.isfinite(value):
-        raise SceneError(f"'{raw}' is not a finite number", key=where)
+        raise SceneError(f"'{shown}' is not a finite number", key=where)
     if sense is not None and not (need_sense or allow_sense):
-        raise SceneError(f"'{raw}': a sense (cw/ccw) does not belong here", key=where)
+        raise SceneError(f"'{shown}': a sense (cw/ccw) does not belong here", key=where)
+    if sense is not None and value < 0:  # "-10 rad/s cw": cw, or ccw (minus cw)?
+        raise SceneError(f"'{shown}': a negative value with a sense reads two ways; give the "
+                         f"size and its sense (\"{_clip(_magnitude(raw))} cw\" or \"... ccw\")",
+                         key=where)
     if need_sense and sense is None and value != 0:
-        raise SceneError(f"'{raw}' has no sense: add cw or ccw (e.g. \"{raw} ccw\")", key=where)
+        raw_size = _clip(_magnitude(raw) if value < 0 else str(raw).strip())
+        raise SceneError(f"'{shown}' has no sense: add cw or ccw (e.g. \"{raw_size} ccw\")",
+                         key=where)
     si = value * factor
     if kind in ABSURD and not abs(si) <= ABSURD[kind]:
-        raise SceneError(f"'{raw}' is absurd for a mechanism (more than {ABSURD[kind]:g} "
+        raise SceneError(f"'{shown}' is absurd for a mechanism (more than {ABSURD[kind]:g} "
                          f"{_SI_NAME[kind]}); check the value and its unit", key=where)
     if kind in TINY and si != 0 and abs(si) < TINY[kind]:
-        raise SceneError(f"'{raw}' is absurdly small for a mechanism (less than "
+        raise SceneError(f"'{shown}' is absurdly small for a mechanism (less than "
                          f"{TINY[kind]:g} {_SI_NAME[kind]}); check the value and its unit",
                          key=where)
     if sense == "cw":
         si = -si
     return Quantity(si, sense)
+
+
+def _clip(raw, most=60) -> str:
+    """``raw`` as a message quotes it: a long value cut short, so the line stays short."""
+    text = str(raw)
+    return text if len(text) <= most else f"{text[:40]}... ({len(text)} characters)"
+
+
+def _magnitude(raw) -> str:
+    """``raw`` without its minus sign and its sense: "-10 rad/s cw" -> "10 rad/s"."""
+    words = str(raw).strip().split()
+    if words and words[-1].lower() in _SENSES:
+        words = words[:-1]
+    return " ".join(words).lstrip("-").lstrip()
 
 
 def _kind_of(raw) -> str:

@@ -140,6 +140,8 @@ def main(argv=None) -> int:
         sys.stdout.flush()  # a full disk on standard output is one line too
         return code
     except PolygonMethodError as exc:
+        if exc.step and getattr(args, "scene", None):  # a step of the scene's mechanism
+            exc.located(args.scene)
         print(f"polygon-method {args.command}: {exc.one_line()}", file=sys.stderr)
         return 2
     except BrokenPipeError:  # the reader went away (``... | head``): nothing to say

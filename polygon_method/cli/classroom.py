@@ -254,7 +254,10 @@ def _cmd_check(args) -> int:
     if not answers:
         raise SceneError("nothing to check: the scene has no [answers] and no answer file "
                          "was given", file=args.scene, key="[answers]")
-    verdicts = check_answers(sol, answers, tolerance)
+    try:
+        verdicts = check_answers(sol, answers, tolerance)
+    except PolygonMethodError as exc:  # a centre the mechanism has not (I_19 of four links)
+        raise exc.located(args.answers or args.scene)
     if getattr(args, "json", False):
         print(_json(verdicts_dict(verdicts, args.scene, args.answers)))
     else:
@@ -270,12 +273,14 @@ def _cmd_variants(args) -> int:
     from ..variants import (answer_key_csv, answer_key_markdown, generate, sheet_markdown,
                            sheet_pdf, summary_text)
 
-    from ..variants import MAX_VARIANTS
+    from ..variants import MAX_SEED, MAX_VARIANTS
     if args.count < 1 or args.count > MAX_VARIANTS:
         raise SceneError(f"--count {args.count}: between 1 and {MAX_VARIANTS}",
                          key="--count")
-    if args.seed < 0:
-        raise SceneError(f"--seed {args.seed}: a whole number, 0 or more", key="--seed")
+    if not 0 <= args.seed <= MAX_SEED:
+        raise SceneError(f"--seed {args.seed}: a whole number from 0 to {MAX_SEED} (each "
+                         "variant file records it, and TOML's integers are 64-bit)",
+                         key="--seed")
     if not args.output.strip():
         raise PolygonMethodError("an empty path: name the directory to write into", key="-o")
     out = Path(args.output)

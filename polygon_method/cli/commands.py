@@ -86,6 +86,14 @@ def _cmd_draw(args) -> int:
         raise PolygonMethodError(f"cannot draw to {out}: the file name must end in .svg, .png "
                                  "or .pdf", key="-o")
     scales = parse_scales(getattr(args, "scale", None))
+    drawn = {"all": ("length", "velocity", "acceleration"), "centres": ("length",),
+             "configuration": ("length",)}.get(args.diagram or "all", (args.diagram,))
+    for kind, s in scales.items():  # never silently ignored
+        if kind not in drawn:
+            raise PolygonMethodError(f"{s.text} is {'an' if kind[0] == 'a' else 'a'} {kind} "
+                                     f"scale, and --diagram {args.diagram} draws no {kind} "
+                                     "diagram: leave it out",
+                                     key="--scale")
     targets = check_outputs([(out, "-o")], protect=[args.scene])
     sol = solve(load_scene(args.scene))
     diagram = getattr(args, "diagram", None) or "all"
@@ -127,7 +135,10 @@ def _cmd_page(args) -> int:
     else:
         tolerance, answers = scene.tolerance, scene.answers
     title = f"answers from {Path(args.answers).name if args.answers else 'the scene'}"
-    verdicts = check_answers(fr.sol, answers, tolerance) if answers else None
+    try:
+        verdicts = check_answers(fr.sol, answers, tolerance) if answers else None
+    except PolygonMethodError as exc:
+        raise exc.located(args.answers or args.scene)
     html = page_html(fr, verdicts=verdicts, answers_title=title)
     for w in fr.sol.warnings:
         print(f"warning: {w}", file=sys.stderr)
@@ -279,7 +290,11 @@ def _names(args, what):
     raw = getattr(args, what, None)
     if not raw:
         return None
-    return tuple(x.strip() for x in raw.split(",") if x.strip())
+    names = tuple(x.strip() for x in raw.split(",") if x.strip())
+    if not names:  # ",," is not "all of them"
+        raise SceneError(f"--{what} {raw!r} names no {what[:-1]}: give names such as "
+                         + ("C,E" if what == "points" else "BC,CD"), key=f"--{what}")
+    return names
 
 
 def _limits_text(dom) -> str:

@@ -4,6 +4,7 @@ scene."""
 
 from __future__ import annotations
 
+import errno
 import os
 import stat
 import tempfile
@@ -48,6 +49,10 @@ class _Target:
         self.tmp = None
 
     def fail(self, exc: OSError):
+        if exc.errno == errno.ENXIO and self.special and stat.S_ISFIFO(self.path.stat().st_mode):
+            return PolygonMethodError(f"cannot write {self.shown}: a named pipe that nothing "
+                                      "is reading from (start its reader first)",
+                                      key=self.option)
         return PolygonMethodError(f"cannot write {self.shown}: "
                                   f"{exc.strerror or type(exc).__name__}", key=self.option)
 
@@ -69,9 +74,18 @@ class _Target:
 
     def commit(self):
         try:
-            if self.special:
-                with open(self.path, "wb" if self.binary else "w",
-                          **({} if self.binary else {"encoding": "utf-8"})) as fh:
+            if self.special:  # a pipe is opened without waiting for a reader that may
+                fd = os.open(self.path,  # never come (ENXIO where none is there)
+                             os.O_WRONLY | getattr(os, "O_NONBLOCK", 0))
+                try:
+                    if hasattr(os, "set_blocking"):
+                        os.set_blocking(fd, True)
+                    fh = os.fdopen(fd, "wb" if self.binary else "w",
+                                   **({} if self.binary else {"encoding": "utf-8"}))
+                except BaseException:
+                    os.close(fd)
+                    raise
+                with fh:
                     fh.write(self.data)
             else:
                 os.replace(self.tmp, self.path)
@@ -92,7 +106,16 @@ def check_outputs(paths, protect=()) -> list:
     """Every output path checked before anything is computed or written: ``paths`` as
     (path, option) pairs; ``protect``: files that must not be written over (the scene
     first, then any other file the command reads)."""
-    return [_Target(path, option, protect) for path, option in paths]
+    targets = [_Target(path, option, protect) for path, option in paths]
+    seen = {}
+    for t in targets:  # two outputs into one file: the one written last would be all of it
+        if t.path in seen and not t.special:
+            first = seen[t.path]
+            raise PolygonMethodError(f"{first.option} {first.shown} and {t.option} {t.shown} "
+                                     "are one file: give each output its own",
+                                     key=t.option)
+        seen[t.path] = t
+    return targets
 
 
 def write_outputs(targets, datas) -> None:

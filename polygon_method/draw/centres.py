@@ -55,7 +55,7 @@ def _clip(box, p, d):
             continue
         a, b = (lo - q) / dq, (hi - q) / dq
         t0, t1 = max(t0, min(a, b)), min(t1, max(a, b))
-    if t0 > t1:
+    if t0 > t1 or not (math.isfinite(t0) and math.isfinite(t1)):  # no direction: no line
         return None
     return (p[0] + t0 * d[0], p[1] + t0 * d[1]), (p[0] + t1 * d[0], p[1] + t1 * d[1])
 

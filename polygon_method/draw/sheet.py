@@ -112,6 +112,15 @@ def draw_acceleration(ax, sol, scale=None) -> list:
 # --------------------------------------------------------------------------- the sheet
 
 
+#: the most points a drawing labels (placing each label clear of the others takes time
+#: that grows faster than their number: about 30 s for 100 points)
+MAX_DRAWN_POINTS = 80
+
+#: a diagram drawn this many times smaller than the step table's scale draws it is a speck
+#: (a polygon of at most 12 cm shrunk under 1.2 mm): a scale given by mistake
+_SPECK = 100.0
+
+
 def _panel_size(sk: _Sketch, pad=0.3):
     x0, y0, x1, y1 = sk.content_box()
     n0, m0, n1, m1 = sk.note_box()
@@ -123,6 +132,11 @@ def layout(sol, diagram: str = "all", scales=None, centre_prefix: str = "I"):
     scale everywhere: each diagram is drawn at the scale the step table states (and the
     checker's tolerance uses), unless ``--scale`` gives another; the sheet's layout, not
     the scales, changes where the three do not fit side by side (:func:`rows`)."""
+    n = len(sol.scene.point_names)
+    if n > MAX_DRAWN_POINTS:  # each label is placed clear of every line and label: minutes
+        raise PolygonMethodError(f"the scene has {n} points: a drawing labels at most "
+                                 f"{MAX_DRAWN_POINTS} (the page, `polygon-method page`, "
+                                 "shows any number)", file=sol.scene.file)
     if diagram == "centres":
         return _centres_layout(sol, scales, centre_prefix)
     names = DIAGRAMS if diagram == "all" else (diagram,)
@@ -139,8 +153,14 @@ def layout(sol, diagram: str = "all", scales=None, centre_prefix: str = "I"):
         if max(w, h) > MAX_FIGURE_CM:
             raise PolygonMethodError(
                 f"the {name} diagram at {display_unit(s.text)} would be "
-                f"{max(w, h):.0f} cm across; use a coarser scale such as "
+                f"{max(w, h):.3g} cm across; use a coarser scale such as "
                 f"{display_unit(stated[name].text)}", key="--scale")
+        if s.per_cm > _SPECK * stated[name].per_cm:
+            raise PolygonMethodError(
+                f"the {name} diagram at {display_unit(s.text)} would be a speck, "
+                f"{s.per_cm / stated[name].per_cm:.3g} times smaller than at "
+                f"{display_unit(stated[name].text)}, the scale of the step table; use a "
+                "finer scale", key="--scale")
         out.append((name, s, sk))
     return out
 
@@ -184,7 +204,7 @@ def _centres_layout(sol, scales=None, prefix="I"):
     w, h = _panel_size(sk)
     if max(w, h) > MAX_FIGURE_CM:
         raise PolygonMethodError(f"the centres diagram at {display_unit(s.text)} would be "
-                                 f"{max(w, h):.0f} cm across; use a coarser scale",
+                                 f"{max(w, h):.3g} cm across; use a coarser scale",
                                  key="--scale")
     sk.warnings.extend(ic.warnings)
     return [("centres", s, sk), ("circle", None, circle)]

@@ -160,6 +160,7 @@ class _Sketch:
         from shapely.geometry import Point
         tree = STRtree(self.obstacles) if self.obstacles else None
         placed, named = [], []  # every box placed; the boxes of the points' labels
+        unplaced = []  # labels that overlap a line: one warning for them all
         spots = [Point(lab.anchors[0]) for lab in self.labels if lab.point]
         for lab in self.labels:
             w, h = _text_size(lab.text, lab.size, lab.weight)
@@ -176,18 +177,22 @@ class _Sketch:
                 best = (*min(clashes, key=lambda c: (
                     sum(self.obstacles[i].intersection(c[0]).area for i in c[1])
                     + sum(p.intersection(c[0]).area for p in c[2]) * 10))[3], None)
-                self.warnings.append(f"label {lab.text!r} could not be placed clear of the "
-                                     "lines")
+                unplaced.append(repr(lab.text))
             lab.box = (best[0], best[1], w, h)
             placed.append(box(best[0] - w / 2, best[1] - h / 2, best[0] + w / 2,
                               best[1] + h / 2))
             if lab.point:
                 named.append(placed[-1])
-            if best[2] is not None:
+            if best[2] is not None:  # a leader from a label set off to its point
                 placed.append(best[2].buffer(0.02))
                 self.items.append(("line", list(best[2].coords),
                                    dict(color="#555555", lw=0.4, dashes=None, z=7,
                                         gid=f"leader-{lab.gid}")))
+        if unplaced:
+            shown = ", ".join(unplaced[:6]) + (f" and {len(unplaced) - 6} more"
+                                               if len(unplaced) > 6 else "")
+            self.warnings.append(f"label{'s' if len(unplaced) > 1 else ''} {shown} could not "
+                                 "be placed clear of the lines")
 
     def _place(self, lab, w, h, tree, placed, named, spots, apart):
         """(best (cx, cy, leader) or None, the best position only clear of lines, the

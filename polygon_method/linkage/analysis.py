@@ -17,8 +17,8 @@ from ..solution import solve
 from ..tracking import TWO_PI
 from .cycle import _Cycle, stands_still
 from .engine import _engine_lines
-from .shapes import (FourBar, Grashof, _Output, _output_of, slotted_of, four_bar_of,
-                     grashof, slider_crank_of)
+from .shapes import (FourBar, Grashof, _Output, _output_of, four_bar_of, grashof,
+                     slider_crank_of, slotted_of, standing_steps)
 
 
 # --------------------------------------------------------------------------- results
@@ -229,8 +229,9 @@ def analyse(scene: Scene) -> Linkage:
                          "crank angles: it dwells over whole ranges of the crank (a degenerate "
                          "linkage), so no single toggle positions are listed")
             stationary, ratio, tlines = (), None, ()
+    still = standing_steps(scene, plan)
     trans = tuple(_transmission(cyc, st, scene) for st in plan.steps
-                  if st.transmission() is not None)
+                  if st.transmission() is not None and st.index not in still)
     formulas = ()
     if sk is not None and sk.inline:
         try:

@@ -224,9 +224,24 @@ class _Output:
         return fr.W[self.name]
 
 
+def standing_steps(scene, plan) -> set:
+    """The indices of the steps that find a point from fixed points only (a pivot placed
+    by two links from ground points: a structure, not a moving part): they drive nothing
+    and their transmission angle never changes."""
+    fixed, still = set(scene.ground), set()
+    for st in plan.steps[1:]:
+        if set(st.needs) <= fixed:
+            fixed.update(st.finds)
+            still.add(st.index)
+    return still
+
+
 def _output_of(scene, plan):
     out = None
+    still = standing_steps(scene, plan)
     for st in plan.steps:  # the last step that drives something is the output
+        if st.index in still:
+            continue
         o = st.output(scene.ground)
         if o is None:
             continue

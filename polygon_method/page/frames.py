@@ -31,7 +31,8 @@ from ..sweeps import sweep
 from ..tracking import Sweeper
 
 __all__ = ["Frames", "frames", "frame_angles", "DEFAULT_FRAMES", "MAX_FRAMES",
-           "MAX_PICTURE_FRAMES", "max_frames", "check_frames", "need_frames", "round_sig"]
+           "MAX_PICTURE_FRAMES", "max_frames", "check_frames", "need_frames", "round_sig",
+           "MAX_FRAME_POINTS"]
 
 #: frames of a cycle when none are asked for (2 deg apart over a full turn)
 DEFAULT_FRAMES = 180
@@ -58,6 +59,10 @@ def check_frames(n, fmt: str | None = None) -> int:
                          f"(for {what})", key="--frames")
     return int(n)
 
+
+#: frames times points a page or animation holds at most (about 60 bytes each on a page:
+#: some 60 MB, which a browser still opens)
+MAX_FRAME_POINTS = 1_000_000
 
 #: how far inside a limit position the frames stop, as a fraction of the range
 INSIDE = 0.004
@@ -122,6 +127,12 @@ def frames(scene, n: int = DEFAULT_FRAMES) -> Frames:
     """The scene's motion at ``n`` crank angles over its cycle, in one vectorised sweep
     (``n`` from 2 to :data:`MAX_FRAMES`)."""
     n = check_frames(n)
+    points = len(getattr(scene, "point_names", ()))
+    if n * points > MAX_FRAME_POINTS:  # the page holds every point at every frame
+        raise SceneError(f"--frames {n} of {points} points would make a page of about "
+                         f"{n * points * 60 / 1e6:.0f} MB: give at most "
+                         f"{max(2, MAX_FRAME_POINTS // max(points, 1))} frames for this scene",
+                         key="--frames")
     sol = solve(scene)  # the stated instant: the scales, and its errors first
     scales = diagram_scales(sol)
     domain = Sweeper(scene).domain  # the cycle on the scene's branch (found once a scene)

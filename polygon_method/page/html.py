@@ -75,8 +75,10 @@ def check_html(verdicts, title: str) -> str:
 
 
 def _json(d) -> str:
-    """JSON safe inside a <script> element."""
-    return json.dumps(d, separators=(",", ":"), allow_nan=False).replace("</", "<\\/")
+    """JSON safe inside a <script> element: no "<" at all, so neither "</script" nor
+    "<!--" (which, before a "<script", keeps the element open past its end tag) from a
+    title or a file name can end it or run it on."""
+    return json.dumps(d, separators=(",", ":"), allow_nan=False).replace("<", "\\u003c")
 
 
 _CAPTION = {"configuration": "Configuration diagram", "velocity":

@@ -4,12 +4,14 @@ every failure one :class:`SceneError` naming the file, key and line."""
 from __future__ import annotations
 
 import math
+import os
 import re
+import stat
 import tomllib
 from dataclasses import replace
 from pathlib import Path
 
-from ..errors import PolygonMethodError, SceneError
+from ..errors import PolygonMethodError, SceneError, printable
 from ..units import LENGTH_UNITS, UNITS, parse_quantity
 from .records import (_ABSURD_LONG, _ABSURD_SHORT, _POINT_ONLY, _UNIT_ORDER, TOP_KEYS, FixedPath,
                       GuideSlider, Link, Scene, split_name)
@@ -18,14 +20,17 @@ from .variation import _Variants
 
 #: the most a scene file may hold: a scene is a page of text (``/dev/zero`` is not read on)
 MAX_SCENE_BYTES = 1 << 20
+#: the most points a scene may have (a textbook's mechanism has a few dozen; a long chain
+#: of dyads for studying how rounding grows has thousands: the chain of 10,001 links that
+#: measures planning time has 10,002)
+MAX_POINTS = 20000
 
 
 def load_scene(path) -> Scene:
     """Read and check a scene file. Raises :class:`SceneError` naming file, key and line."""
-    path = Path(path)
+    path = _path_of(path, "scene")
     try:
-        with open(path, "rb") as fh:
-            data = fh.read(MAX_SCENE_BYTES + 1)
+        data = _read_start(path)
     except FileNotFoundError:
         raise SceneError("no such file", file=str(path)) from None
     except IsADirectoryError:
@@ -49,8 +54,51 @@ def load_scene(path) -> Scene:
         raise exc.located(str(path))
 
 
+def _read_start(path) -> bytes:
+    """The first ``MAX_SCENE_BYTES + 1`` bytes of ``path``. A named pipe is opened without
+    waiting for a writer (a plain open would wait for ever where none comes): what a writer
+    has put in is read, and a pipe that nobody writes into reads as empty."""
+    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_BINARY", 0)
+    fd = os.open(path, flags)
+    try:
+        if hasattr(os, "set_blocking"):
+            os.set_blocking(fd, True)  # then read as any file: to the end, or the limit
+        fh = os.fdopen(fd, "rb")
+    except BaseException:
+        os.close(fd)
+        raise
+    with fh:
+        data = fh.read(MAX_SCENE_BYTES + 1)
+        if not data and stat.S_ISFIFO(os.fstat(fh.fileno()).st_mode):
+            raise SceneError("a named pipe that nothing is writing into: nothing to read "
+                             "(start its writer first, or give the file itself)",
+                             file=str(path))
+        return data
+
+
+def _path_of(path, what) -> Path:
+    """``path`` as a :class:`Path`, or a :class:`SceneError` for what names no file (None,
+    a number, an empty name, a NUL byte)."""
+    if isinstance(path, bytes):
+        path = os.fsdecode(path)
+    if not isinstance(path, (str, os.PathLike)):
+        raise SceneError(f"a {what} file's path is needed (a str or a Path), not "
+                         f"{type(path).__name__}")
+    if not str(path).strip():
+        raise SceneError(f"an empty file name: name the {what} file")
+    if "\x00" in str(path):
+        raise SceneError(f"a file name cannot hold a NUL byte: {printable(str(path))}")
+    return Path(path)
+
+
 def parse_scene(text: str, file: str | None = None) -> Scene:
     """Parse scene text (TOML). See :func:`load_scene`."""
+    if isinstance(text, (bytes, bytearray)):
+        raise SceneError("the scene's text is needed as a str: decode the bytes (UTF-8), or "
+                         "give the file to load_scene", file=file)
+    if not isinstance(text, str):
+        raise SceneError(f"the scene's text (TOML) is needed as a str, not "
+                         f"{type(text).__name__}; load_scene reads a file", file=file)
     if not text.strip():
         raise SceneError("the file is empty; a scene needs [ground], [links] and [input]",
                          file=file)
@@ -159,6 +207,9 @@ def _syntax_error(msg, text, file) -> SceneError:
             break
     else:
         core = core[:1].lower() + core[1:]
+    if re.search(r"\r(?!\n)", text):  # an old Mac's line ends: TOML sees one long line
+        core += ("; the file ends its lines with a lone carriage return (CR): save it with "
+                 "LF or CRLF line endings")
     return SceneError(f"TOML syntax error: {core}", file=file, key=where)
 
 
@@ -200,6 +251,26 @@ def _printable(text):
     if text is None or str(text).isprintable():
         return text
     return "".join(c if c.isprintable() else repr(c)[1:-1] for c in str(text))
+
+
+#: TOML's integers are 64-bit ("an integer that cannot be represented losslessly must be
+#: an error"); tomllib reads longer ones, which no float can hold
+_INT64 = 1 << 63
+
+
+def _long_integer(raw):
+    """The keys leading to the first integer of ``raw`` outside TOML's 64-bit range, and
+    the integer, or None."""
+    todo = [((), raw)]
+    while todo:
+        path, value = todo.pop()
+        if isinstance(value, dict):
+            todo.extend((path + (k,), v) for k, v in reversed(value.items()))
+        elif isinstance(value, list):
+            todo.extend((path, v) for v in reversed(value))
+        elif isinstance(value, int) and not -_INT64 <= value < _INT64:
+            return path, value
+    return None
 
 
 class _Loader(_Tables, _Variants):
@@ -264,9 +335,26 @@ class _Loader(_Tables, _Variants):
                              "followed by digits: A, O2, B1)", table, key or name)
         return name
 
+    def check_integers(self):
+        """Refuse an integer beyond TOML's 64-bit range (``BC = 10**400`` written out):
+        named by its key, never an overflow further on."""
+        hit = _long_integer(self.raw)
+        if hit is None:
+            return
+        path, value = hit
+        digits = str(abs(value))
+        shown = f"{'-' if value < 0 else ''}{digits[:6]}...({len(digits)} digits)"
+        message = (f"the integer {shown} is beyond TOML's 64-bit integers, and absurd for a "
+                   "mechanism; check the value and its unit")
+        if len(path) >= 2:
+            raise self.error(message, path[0], path[1])
+        raise SceneError(message, file=self.file, key=path[0] if path else None,
+                         line=self.top_line(path[0]) if path else None)
+
     # -- the scene
     def scene(self) -> Scene:
         raw = self.raw
+        self.check_integers()
         for key in raw:
             if key not in TOP_KEYS:
                 kind = "table" if isinstance(raw[key], dict) else "key"
@@ -286,7 +374,9 @@ class _Loader(_Tables, _Variants):
         self.unit = units
         title = raw.get("title", "")
         if not isinstance(title, str):
-            raise SceneError("title must be a string", file=self.file, key="title")
+            raise SceneError("title must be a string: title = \"Four-bar chain ABCD\"",
+                             file=self.file, key="title",
+                             line=self.top_line("title") or self.line_of("title"))
         source = raw.get("source")
 
         ground = {}
@@ -339,6 +429,9 @@ class _Loader(_Tables, _Variants):
         loads = self.loads(known)
         tolerance, answers = self.answers(known, sliders, pins, loads)
         self.connected(links, points, sliders, ground, inp)
+        if len(known) > MAX_POINTS:
+            raise SceneError(f"the scene has {len(known)} points: at most {MAX_POINTS} (a "
+                             "mechanism of a textbook has a few dozen)", file=self.file)
         variation = self.variation(inp, ground, sliders, loads)
         variant = self.variant_of()
         return Scene(title=title, units=units, ground=ground, links=tuple(links),
@@ -408,6 +501,12 @@ def parse_answers(text: str, scene: Scene, file: str | None = None, *,
     file names (``variant = "07"``, a number, or a variant's file name; None if it names
     none) as a third item; raises :class:`SceneError` naming the key.
     """
+    if not isinstance(text, str):
+        raise SceneError(f"the answer file's text (TOML) is needed as a str, not "
+                         f"{type(text).__name__}", file=file)
+    if not isinstance(scene, Scene):
+        raise SceneError(f"a Scene is needed to read answers against, not "
+                         f"{type(scene).__name__}", file=file)
     try:
         raw = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
@@ -419,6 +518,7 @@ def parse_answers(text: str, scene: Scene, file: str | None = None, *,
     if not isinstance(raw.get("answers"), dict) or not raw["answers"]:
         raise SceneError("no [answers] table (or it is empty)", file=file, key="[answers]")
     loader = _Loader(raw, text, file)
+    loader.check_integers()
     loader.unit = scene.units
     loader.index = scene._link_index
     tolerance, answers = loader.answers(set(scene.point_names), scene.sliders, scene.pins,
@@ -437,14 +537,13 @@ def parse_answers(text: str, scene: Scene, file: str | None = None, *,
 
 def load_answers(path, scene: Scene, *, with_variant: bool = False):
     """Read an answer file from ``path``; see :func:`parse_answers`."""
-    path = Path(path)
+    path = _path_of(path, "answer")
     try:
-        with open(path, "rb") as fh:
-            data = fh.read(MAX_SCENE_BYTES + 1)
+        data = _read_start(path)
         if len(data) > MAX_SCENE_BYTES:
             raise SceneError(f"larger than {MAX_SCENE_BYTES >> 20} MiB: not an answer file",
                              file=str(path))
-        text = data.decode("utf-8")
+        text = data.decode("utf-8-sig")  # a byte-order mark is fine, as in a scene
     except FileNotFoundError:
         raise SceneError("no such file", file=str(path)) from None
     except IsADirectoryError:

@@ -11,11 +11,11 @@ import re
 from dataclasses import dataclass, field
 
 from ..errors import SceneError
-from ..units import UNITS
+from ..units import ABSURD, TINY, UNITS
 
 POINT_NAME = re.compile(r"[A-Z][0-9]*")
-_POINT_ONLY = re.compile(r"^[A-Z][0-9]*$")
-_LINK_NAME = re.compile(r"^(?:[A-Z][0-9]*-?)+$")
+_POINT_ONLY = re.compile(r"^[A-Z][0-9]*\Z")  # \Z: "A\n" is no point name
+_LINK_NAME = re.compile(r"^(?:[A-Z][0-9]*-?)+\Z")
 
 _UNIT_ORDER = ("mm", "cm", "m", "in")
 
@@ -187,18 +187,29 @@ class Scene:
     def _check_numbers(self) -> None:
         """Finite numbers, positive lengths (a scene made through the API, too)."""
         inp = self.input
-        for name, v in (("angle", inp.angle), ("speed", inp.omega),
-                        ("acceleration", inp.alpha)):
+        for name, v, kind in (("angle", inp.angle, "angle"),
+                              ("speed", inp.omega, "angular_velocity"),
+                              ("acceleration", inp.alpha, "angular_acceleration")):
             if not isinstance(v, (int, float)) or not math.isfinite(v):
                 raise SceneError(f"the crank's {name} must be a finite number, got {v!r}",
                                  key=f"[input] {name}", file=self.file)
+            # the bounds a file's values meet, for a scene made through the API too: beyond
+            # them the squares of the solution overflow, or the input torque divides by 0
+            if not abs(v) <= ABSURD[kind] or (name == "speed" and not abs(v) >= TINY[kind]):
+                raise SceneError(f"the crank's {name} {v!r} (SI) is "
+                                 + ("zero: nothing moves" if name == "speed" and v == 0 else
+                                    "absurd for a mechanism"),
+                                 key=f"[input] {name}", file=self.file)
         for p, xy in self.ground.items():
-            if not all(isinstance(c, (int, float)) and math.isfinite(c) for c in xy):
-                raise SceneError(f"ground point {p} must have finite coordinates, got {xy!r}",
-                                 key=f"[ground] {p}", file=self.file)
+            if not all(isinstance(c, (int, float)) and abs(c) <= _ABSURD_LONG for c in xy):
+                raise SceneError(f"ground point {p} must have finite coordinates within "
+                                 f"{_ABSURD_LONG:g} m, got {xy!r}", key=f"[ground] {p}",
+                                 file=self.file)
         for lk in self.links:
-            if not isinstance(lk.length, (int, float)) or not (0 < lk.length < math.inf):
-                raise SceneError(f"link {lk.key} must have a finite positive length, got "
+            if not isinstance(lk.length, (int, float)) or \
+                    not _ABSURD_SHORT <= lk.length <= _ABSURD_LONG:
+                raise SceneError(f"link {lk.key} must have a length between "
+                                 f"{_ABSURD_SHORT:g} and {_ABSURD_LONG:g} m, got "
                                  f"{lk.length!r}", key=f"[links] {lk.key}", file=self.file)
 
     # ----- lookups

@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 import re
 
-from ..errors import SceneError
+from ..errors import SceneError, printable
 from ..units import UNITS, did_you_mean
 from .records import (ANSWER_KINDS, INPUT_KEYS, Answer, CarriedPoint, FixedPath, GuideSlider,
                       Input, Load, Pin, split_name)
@@ -345,6 +345,8 @@ class _Tables:
                     math.isfinite(v) for v in value)):
             raise self.error(f"a centre's answer is its position [x, y] in {self.unit}, "
                              f"got {value!r}", "answers", key)
+        for v in value:  # [1e300, 0]: a units slip, never an error of 1e299 per cent
+            self.length(v, "answers", key, positive=False)
         pair = tuple(parts) if named else tuple(sorted(int(p) for p in parts))
         u = self.scale()
         return Answer(key, "centre", pair, (value[0] * u, value[1] * u), None,
@@ -356,7 +358,7 @@ class _Tables:
             if not loads:
                 raise self.error("a torque answer needs [loads] to balance", "answers", key)
             q = self.qty(value, "torque", "answers", key, default_unit="N m", allow_sense=True)
-            return Answer(key, "torque", (), q.value, q.sense, str(value), line)
+            return Answer(key, "torque", (), q.value, q.sense, printable(str(value)), line)
         prefix, _, rest = key.partition("_")
         if prefix == "I" and rest:
             return self.centre_answer(key, rest, value, line)
@@ -390,5 +392,5 @@ class _Tables:
                 raise self.error(f"rubbing at {rest} needs its size in [pins]", "answers", key)
         q = self.qty(value, kind, "answers", key, default_unit=next(iter(UNITS[kind])),
                      allow_sense=sense_ok)
-        return Answer(key, prefix, names, q.value, q.sense, str(value), line)
+        return Answer(key, prefix, names, q.value, q.sense, printable(str(value)), line)
 

@@ -45,7 +45,7 @@ class Context:
         if self.array:
             np = self.np
             miss = disc < -TOL.closure * scale2
-            if miss.any():
+            if np.any(miss):  # a scalar too: a step whose points are all fixed
                 self.fail(step, miss)
             return np.sqrt(np.maximum(disc, 0.0))
         if disc < -TOL.closure * scale2:
@@ -61,7 +61,7 @@ class Context:
         """A denominator that is never exactly zero (array mode: singular entries masked)."""
         if self.array:
             zero = den == 0
-            if zero.any():
+            if self.np.any(zero):  # a scalar too: a step whose points are all fixed
                 self.fail(step, zero)
                 return self.np.where(zero, 1.0, den)
         return den

@@ -40,8 +40,9 @@ from .papers import (answer, answer_key_csv, answer_key_markdown, sheet_markdown
                      summary_text)
 
 __all__ = ["generate", "VariantSet", "Variant", "linkage_class", "dump_toml", "questions",
-           "screen", "answer", "ENUMERATE", "MAX_TRIED", "MAX_VARIANTS", "answer_key_csv",
-           "answer_key_markdown", "sheet_markdown", "sheet_pdf", "summary_text"]
+           "screen", "answer", "ENUMERATE", "MAX_TRIED", "MAX_VARIANTS", "MAX_SEED",
+           "answer_key_csv", "answer_key_markdown", "sheet_markdown", "sheet_pdf",
+           "summary_text"]
 
 #: a space of at most this many combinations is visited whole
 ENUMERATE = 50_000
@@ -49,6 +50,8 @@ ENUMERATE = 50_000
 MAX_TRIED = 20_000
 #: the most variants one run makes
 MAX_VARIANTS = 9999
+#: the largest seed: each variant file records its seed, and TOML's integers are 64-bit
+MAX_SEED = (1 << 63) - 1
 
 
 # --------------------------------------------------------------------------- the class
@@ -335,11 +338,13 @@ def generate(scene: Scene, count: int, seed: int, *, batch: int | None = None) -
                          "e.g. [variants] BC = { from = 60, to = 75, step = 1 } (see "
                          "docs/variants.md)", file=scene.file, key="[variants]")
     for name, v, low, high in (("--count", count, 1, MAX_VARIANTS),
-                               ("--seed", seed, 0, None)):
+                               ("--seed", seed, 0, MAX_SEED)):
         if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < low or \
                 (high is not None and v > high):
             raise SceneError(f"{name} {v!r}: a whole number from {low}"
-                             + (f" to {high}" if high else ""), key=name)
+                             + (f" to {high}" if high else "")
+                             + (" (each variant file records it, and TOML's integers are "
+                                "64-bit)" if name == "--seed" else ""), key=name)
     solve(scene)  # the base problem itself must solve (else its error, as solve gives it)
     plan = compile_plan(scene)
     branches = _branches(plan)
