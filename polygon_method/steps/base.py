@@ -45,7 +45,8 @@ class Context:
         if self.array:
             np = self.np
             miss = disc < -TOL.closure * scale2
-            if np.any(miss):  # a scalar too: a step whose points are all fixed
+            if miss is True or (miss is not False and miss.any()):  # a bool where a
+                # step's points are all fixed; .any() of an array is cheaper than np.any
                 self.fail(step, miss)
             return np.sqrt(np.maximum(disc, 0.0))
         if disc < -TOL.closure * scale2:
@@ -61,7 +62,7 @@ class Context:
         """A denominator that is never exactly zero (array mode: singular entries masked)."""
         if self.array:
             zero = den == 0
-            if self.np.any(zero):  # a scalar too: a step whose points are all fixed
+            if zero is True or (zero is not False and zero.any()):  # (as in root)
                 self.fail(step, zero)
                 return self.np.where(zero, 1.0, den)
         return den
