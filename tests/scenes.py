@@ -1,5 +1,19 @@
 """Scenes shared by several test modules (each used as it stands in more than one)."""
 
+#: the seed four-bar, no more than its links, pivots and crank
+FOURBAR = """[ground]
+A = [0, 0]
+D = [100, 0]
+[links]
+AB = 50
+BC = 66
+CD = 56
+[input]
+crank = "AB"
+angle = 60
+speed = "10.5 rad/s cw"
+"""
+
 SLOTTED_LEVER = """
 [ground]
 O4 = [0, 0]

@@ -12,18 +12,7 @@ from polygon_method import load_scene, parse_scene, solve
 from polygon_method.cli import main
 from polygon_method.errors import PolygonMethodError, SceneError
 
-FOURBAR = """[ground]
-A = [0, 0]
-D = [100, 0]
-[links]
-AB = 50
-BC = 66
-CD = 56
-[input]
-crank = "AB"
-angle = 60
-speed = "10.5 rad/s cw"
-"""
+from scenes import FOURBAR
 
 
 def _one_line(capsys):

@@ -12,19 +12,7 @@ from polygon_method.compiler import compile_plan
 from polygon_method.steps import Context
 from polygon_method.scene import parse_answers
 
-FOURBAR = """
-[ground]
-A = [0, 0]
-D = [100, 0]
-[links]
-AB = 50
-BC = 66
-CD = 56
-[input]
-crank = "AB"
-angle = 60
-speed = "10.5 rad/s cw"
-"""
+from scenes import FOURBAR
 
 
 def test_a_link_with_a_torque_and_a_force_is_refused():
@@ -71,11 +59,11 @@ def test_errors_the_plan_finds_name_the_line(tmp_path):
     path.write_text(FOURBAR.replace("[input]", "[assembly]\nC = [1000, 1000]\n[input]"))
     with pytest.raises(AssemblyError) as err:
         solve(load_scene(path))
-    assert "[assembly] C (line 10)" in err.value.one_line()
+    assert "[assembly] C (line 9)" in err.value.one_line()
     path.write_text(FOURBAR.replace("CD = 56", "CD = 56\nBD = 70"))
     with pytest.raises(SceneError) as err:
         solve(load_scene(path))
-    assert "[links] BD (line 9)" in err.value.one_line()
+    assert "[links] BD (line 8)" in err.value.one_line()
 
 
 def test_dotted_keys_are_located_too(tmp_path):
