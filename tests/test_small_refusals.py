@@ -121,3 +121,16 @@ def test_the_block_near_the_pivot_is_judged_against_the_crank_not_the_lever():
     for length in (100.0, 5000.0):
         with pytest.raises(SingularStepError, match="pivot"):
             solve(_lever(length, 0.05, 270.0))
+
+
+@pytest.mark.parametrize("line", ["source = 5", "notes = [1, 2]", "notes = { a = 1 }"])
+def test_free_text_that_is_not_text_is_refused_on_its_line(tmp_path, line):
+    """``source`` and ``notes`` are free text: a number, a list or a table is a slip that
+    was silently ignored."""
+    from polygon_method import load_scene
+    path = tmp_path / "s.toml"
+    path.write_text(line + "\n" + FOURBAR)
+    with pytest.raises(SceneError) as err:
+        load_scene(path)
+    key = line.split()[0]
+    assert f"{key} (line 1)" in err.value.one_line() and "string" in err.value.one_line()

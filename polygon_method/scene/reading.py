@@ -378,6 +378,11 @@ class _Loader(_Tables, _Variants):
                              file=self.file, key="title",
                              line=self.top_line("title") or self.line_of("title"))
         source = raw.get("source")
+        for key in ("source", "notes"):  # free text: a number or a table is a slip
+            if key in raw and not isinstance(raw[key], str):
+                raise SceneError(f"{key} is free text, a string: {key} = \"...\"",
+                                 file=self.file, key=key,
+                                 line=self.top_line(key) or self.line_of(key))
 
         ground = {}
         for name, value in self.table("ground", required=True).items():
