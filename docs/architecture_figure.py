@@ -20,7 +20,7 @@ WORDS = {  # what each layer is for (the contract names the modules)
     3: "views they share",
     4: "what each step draws",
     5: "results: one solve, a sweep",
-    6: "derived: rubbing, torque, transmission angle; centres; error bounds",
+    6: "rubbing, torque, transmission; centres; error bounds",
     7: "following the branch over the cycle",
     8: "the motion record; compiling a scene into a plan",
     9: "the plan: topology + branches; dimensions are inputs",
