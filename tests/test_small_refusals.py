@@ -134,3 +134,27 @@ def test_free_text_that_is_not_text_is_refused_on_its_line(tmp_path, line):
         load_scene(path)
     key = line.split()[0]
     assert f"{key} (line 1)" in err.value.one_line() and "string" in err.value.one_line()
+
+
+def test_every_integer_beyond_64_bits_is_written_with_a_long_run():
+    """The scene reader walks its values for integers beyond TOML's 64 bits only where the
+    text has a run of 16 digits: every such integer, in every way TOML writes integers
+    (decimal, with underscores, hex, octal, binary), has one."""
+    import random
+
+    from polygon_method.scene.reading import _LONG_RUN
+    rnd = random.Random(5)
+    values = [1 << 63, (1 << 63) + 1, -(1 << 63) - 1, 10 ** 19, 10 ** 400]
+    values += [rnd.randrange(1 << 63, 1 << 200) for _ in range(200)]
+    for v in values:
+        a = abs(v)
+        for text in (str(v), f"{v:_}", f"0x{a:x}", f"0x{a:_x}", f"0o{a:o}", f"0o{a:_o}",
+                     f"0b{a:b}", f"0b{a:_b}"):
+            assert _LONG_RUN.search(f"BC = {text}"), text
+    assert not _LONG_RUN.search("BC = 66\nspeed = \"10.5 rad/s cw\"")
+
+
+def test_an_integer_beyond_64_bits_in_hex_or_with_underscores_is_refused():
+    for text in ("0x1_0000_0000_0000_0000", "9_223_372_036_854_775_808"):
+        with pytest.raises(SceneError, match="beyond TOML's 64-bit integers"):
+            parse_scene(FOURBAR.replace("BC = 66", f"BC = {text}"))

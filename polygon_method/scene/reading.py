@@ -256,6 +256,10 @@ def _printable(text):
 #: TOML's integers are 64-bit ("an integer that cannot be represented losslessly must be
 #: an error"); tomllib reads longer ones, which no float can hold
 _INT64 = 1 << 63
+#: what any integer beyond 64 bits is written with: 16 or more digits in a row (decimal
+#: 19, hex 16, octal 21, binary 64, underscores between them); a text without such a run
+#: has none, and its values need not be walked
+_LONG_RUN = re.compile(r"[0-9A-Fa-f_]{16,}")
 
 
 def _long_integer(raw):
@@ -277,6 +281,7 @@ class _Loader(_Tables, _Variants):
     def __init__(self, raw: dict, text: str, file):
         self.raw = raw
         self.lines = toml_lines(text)
+        self.long_run = _LONG_RUN.search(text) is not None
         self.file = file
         self.unit = "mm"
 
@@ -338,7 +343,7 @@ class _Loader(_Tables, _Variants):
     def check_integers(self):
         """Refuse an integer beyond TOML's 64-bit range (``BC = 10**400`` written out):
         named by its key, never an overflow further on."""
-        hit = _long_integer(self.raw)
+        hit = _long_integer(self.raw) if self.long_run else None
         if hit is None:
             return
         path, value = hit
