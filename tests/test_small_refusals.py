@@ -158,3 +158,14 @@ def test_an_integer_beyond_64_bits_in_hex_or_with_underscores_is_refused():
     for text in ("0x1_0000_0000_0000_0000", "9_223_372_036_854_775_808"):
         with pytest.raises(SceneError, match="beyond TOML's 64-bit integers"):
             parse_scene(FOURBAR.replace("BC = 66", f"BC = {text}"))
+
+
+def test_a_negative_number_in_exponent_form_is_an_option_s_value(capsys):
+    """``--from -1e1`` was read as an unknown option (argparse knows -10, not -1e1); it is
+    the same sweep as ``--from -10``."""
+    from polygon_method.cli import main
+    scene = "worked_problems/fourbar_crank_acceleration.toml"
+    assert main(["sweep", scene, "--from", "-10", "--to", "10", "--step", "10"]) == 0
+    plain = capsys.readouterr().out
+    assert main(["sweep", scene, "--from", "-1e1", "--to", "1e1", "--step", "1e1"]) == 0
+    assert capsys.readouterr().out == plain and "3 of 3 crank angles" in plain

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import re
 import sys
 
 from ..errors import PolygonMethodError, printable
@@ -127,9 +128,27 @@ def build_parser() -> argparse.ArgumentParser:
     return p
 
 
+#: a negative number argparse takes for an option: an exponent ("-1e3", "-2.5E-4"); its own
+#: rule knows "-30" and "-0.5" only
+_NEGATIVE_EXPONENT = re.compile(r"^-(\d+\.?\d*|\.\d+)[eE][+-]?\d+$")
+
+
+def _negative_values(argv: list) -> list:
+    """``--from -1e3`` as ``--from=-1e3``: a negative number in exponent form after a long
+    option is that option's value, as "-30" is."""
+    out = []
+    for tok in argv:
+        if out and _NEGATIVE_EXPONENT.match(tok) and out[-1].startswith("--") \
+                and "=" not in out[-1]:
+            out[-1] = f"{out[-1]}={tok}"
+        else:
+            out.append(tok)
+    return out
+
+
 def main(argv=None) -> int:
     parser = build_parser()
-    args = parser.parse_args(argv)
+    args = parser.parse_args(_negative_values(list(sys.argv[1:] if argv is None else argv)))
     for dest, value in vars(args).items():  # an empty name is never "not given"
         if isinstance(value, str) and dest != "command" and not value.strip():
             flag = {"output": "-o", "scene": "SCENE"}.get(dest, "--" + dest.replace("_", "-"))
