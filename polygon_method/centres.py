@@ -59,6 +59,9 @@ MAX_BODIES = 30
 JSON_BODIES = 12
 #: two lines closer to parallel than this (sine of their angle) meet at infinity
 PARALLEL = 1e-12
+#: what a student can do where a centre is too far to locate
+_POLYGONS_STAND = ("; the velocity and acceleration polygons are not affected "
+                   "(polygon-method steps), or set the crank a few degrees away")
 
 
 @dataclass(frozen=True)
@@ -278,7 +281,7 @@ def locate(sol, prefix: str = "I") -> "Centres":
                     f"{c.label} is where {_words(c.lines[0])} and {_words(c.lines[1])} cross, "
                     f"at {math.degrees(math.asin(c.condition)):.2g} deg (condition "
                     f"{c.condition:.2g}): the lines are nearly parallel, the centre far and "
-                    "ill-determined", step=f"centre {c.label}")
+                    f"ill-determined{_POLYGONS_STAND}", step=f"centre {c.label}")
             if c.point is not None and c.condition < TOL.warn:
                 warnings.append(f"centre {c.label}: its lines cross at "
                                 f"{math.degrees(math.asin(c.condition)):.3g} deg (condition "
@@ -347,7 +350,8 @@ def _by_velocities(sol, names, found, order, missing, warnings):
         if cond < TOL.singular:
             raise SingularStepError(
                 f"I{i}{j}: Kennedy's lines coincide and the two bodies' omegas differ by "
-                f"{cond:.2g} of the largest: the centre is far and ill-determined",
+                f"{cond:.2g} of the largest: the centre is far and ill-determined"
+                f"{_POLYGONS_STAND}",
                 step=f"centre I{i}{j}")
         if cond < TOL.warn:
             warnings.append(f"centre I{i}{j}: the two bodies' omegas differ by {cond:.3g} "

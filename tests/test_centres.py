@@ -220,3 +220,16 @@ def test_centres_labelled_as_the_course_writes_them(capsys, tmp_path):
                  str(svg)]) == 0
     text = svg.read_text()
     assert 'id="centre-13"' in text and 'id="centre-I13"' not in text
+
+
+def test_a_centre_too_far_to_locate_is_one_line_that_says_what_still_works(tmp_path, capsys):
+    """The Watt six-bar at 95 deg: I46's lines cross at 0.018 deg. The refusal names the
+    centre and its lines, and says the polygons still solve the position, which they do."""
+    from polygon_method.cli import main
+    text = (Path(__file__).parent / "textbook" / "watt_six_bar.toml").read_text()
+    scene = tmp_path / "w.toml"
+    scene.write_text(re.sub(r"(?m)^angle = .*$", "angle = 95", text))
+    assert main(["centres", str(scene)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert "\n" not in err and "centre I46" in err and "polygons are not affected" in err
+    assert main(["steps", str(scene)]) == 0
