@@ -29,8 +29,7 @@ from __future__ import annotations
 import math
 
 from .centres import Centre, Centres
-from .errors import TOL
-from .numbers import fmt, fmt_angular
+from .numbers import fmt, fmt_angular, quiet
 
 __all__ = ["centres_text"]
 
@@ -49,7 +48,7 @@ def _where(sol, c: Centre) -> str:
         return f"at infinity, direction {fmt(deg, 4)} deg"
     # rounding noise (a coordinate below TOL.negligible of the mechanism's size) is 0
     size = _size(sol)
-    x, y = (0.0 if abs(v) <= TOL.negligible * size else v for v in c.point)
+    x, y = (quiet(v, size) for v in c.point)
     return f"({fmt(x / u, 6)}, {fmt(y / u, 6)}) {name}"
 
 
@@ -115,9 +114,8 @@ def centres_text(ic: Centres) -> str:
         if c.point is None:
             out.append(f"  v_{p} = {fmt(v)} m/s (link {k} translates)")
             continue
-        r = math.hypot(sol.P[p][0] - c.point[0], sol.P[p][1] - c.point[1])
-        if r <= TOL.negligible * size:  # the point is the centre (noise apart)
-            r = 0.0
+        # 0 where the point is the centre (noise apart)
+        r = quiet(math.hypot(sol.P[p][0] - c.point[0], sol.P[p][1] - c.point[1]), size)
         out.append(f"  v_{p} = omega_{k} x {p}-{c.label} = "
                    f"{fmt(abs(sol.shown(ic.omegas[k], 'omega')))} x "
                    f"{fmt(r / sc.length_unit, 5)} {sc.units} = {fmt(v)} m/s")

@@ -33,8 +33,8 @@ import math
 import weakref
 from dataclasses import replace
 
-from .errors import TOL, AssemblyError, MobilityError, PolygonMethodError, SceneError
-from .numbers import in_units
+from .errors import AssemblyError, MobilityError, PolygonMethodError, SceneError
+from .numbers import in_units, quiet
 from .plan import Bodies, Dims, Plan, _bodies_at
 from .scene import GuideSlider, Scene, key_line
 from .steps import TIERS, Context, Crank
@@ -363,7 +363,7 @@ class _Compiler:
     def fmt(self, xy):
         """A position in the scene's units; rounding noise about an axis written 0."""
         size = max([lk.length for lk in self.scene.links] + [abs(c) for c in xy])
-        x, y = (0.0 if abs(c) <= TOL.negligible * size else c for c in xy)
+        x, y = (quiet(c, size) for c in xy)
         return f"[{in_units(x, self.unit)}, {in_units(y, self.unit)}]"
 
     # ----- what is left over

@@ -11,8 +11,25 @@ from __future__ import annotations
 
 import math
 
+from .errors import TOL
+
 __all__ = ["fmt", "fixed", "textbook", "working", "sense", "sense_word", "fmt_angular",
-           "in_units"]
+           "in_units", "quiet"]
+
+
+def quiet(x, scale):
+    """``x``, or 0 where it is at most ``TOL.negligible`` of ``scale``: rounding noise about
+    a true zero (a coordinate on an axis, a link that does not turn) is written 0, not
+    1.6e-15 with a sense. Floats, or numpy arrays entry by entry.
+
+    >>> quiet(1.6e-15, 10.0), quiet(-0.25, 10.0)
+    (0.0, -0.25)
+    """
+    lim = TOL.negligible * scale
+    if isinstance(x, (int, float)) and isinstance(lim, (int, float)):
+        return 0.0 if abs(x) <= lim else x
+    import numpy as np
+    return np.where(np.abs(x) <= lim, 0.0, x)
 
 
 def fmt(x: float, digits: int = 4) -> str:

@@ -5,8 +5,7 @@ from __future__ import annotations
 import math
 
 from .errorbound import SHOWN, shown_bounds
-from .errors import TOL
-from .numbers import fmt_angular
+from .numbers import fmt_angular, quiet
 from .solution import Solution, tidied
 
 __all__ = ["solution_text", "direction_deg"]
@@ -23,7 +22,7 @@ def direction_deg(x: float, y: float) -> float:
 
 def _vec(x, y, digits=4, scale=0.0):
     m = math.hypot(x, y)
-    if m <= TOL.negligible * scale:
+    if quiet(m, scale) == 0:
         return "0"
     return f"{m:.{digits}g} at {direction_deg(x, y):.1f} deg"
 

@@ -26,7 +26,7 @@ from .centres import JSON_BODIES, centres_dict, locate
 from .errorbound import bounds_dict, error_bounds
 from .errors import TOL, PolygonMethodError
 from .kinematics import Motion, hypot
-from .numbers import fmt_angular, sense  # noqa: F401  (re-exported)
+from .numbers import fmt_angular, quiet, sense  # noqa: F401  (re-exported)
 from .compiler import compile_plan
 from .plan import Context
 from .scene import FixedPath, Scene
@@ -127,7 +127,7 @@ class Solution(Motion):
     def shown(self, value, kind):
         """``value`` as reports show it: 0 where it is below ``TOL.negligible`` of the
         largest of its ``kind`` ("v", "a", "omega", "alpha"): rounding noise, not a motion."""
-        return 0.0 if abs(value) <= TOL.negligible * self.scales[kind] else value
+        return quiet(value, self.scales[kind])
 
     # ----- output
     def to_dict(self) -> dict:
@@ -221,26 +221,21 @@ def tidied(sol: Solution) -> Solution:
     turn has no sense and a block that does not slide no Coriolis component."""
     sc = sol.scene
     k = sol.scales
-    tiny = TOL.negligible
     size = max([lk.length for lk in sc.links]
                + [hypot(*p) for p in sol.P.values()] + [0.0])
 
     def vec(d, scale):
-        lim = tiny * scale
-        return {n: (0.0 if abs(x) <= lim else x, 0.0 if abs(y) <= lim else y)
-                for n, (x, y) in d.items()}
+        return {n: (quiet(x, scale), quiet(y, scale)) for n, (x, y) in d.items()}
 
     def num(d, kind):
         return {n: sol.shown(x, kind) for n, x in d.items()}
 
-    lim = tiny * k["a"]
     S = {n: (sol.shown(s[0], "v"), sol.shown(s[1], "a"))
-         + tuple(0.0 if abs(c) <= lim else c for c in s[2:]) for n, s in sol.S.items()}
+         + tuple(quiet(c, k["a"]) for c in s[2:]) for n, s in sol.S.items()}
     out = Solution(sc, sol.plan, vec(sol.P, size), vec(sol.V, k["v"]), vec(sol.A, k["a"]),
                    num(sol.W, "omega"), num(sol.Al, "alpha"), S, sol.cond, sol.theta)
     for rec in out.rubbing.values():  # |w1 - w2| r of two equal omegas: 0
-        lim = tiny * k["omega"] * rec.radius
-        rec.values = tuple(0.0 if v <= lim else v for v in rec.values)
+        rec.values = tuple(quiet(v, k["omega"] * rec.radius) for v in rec.values)
         rec.rubbing_velocity = max(rec.values, default=0.0)
     t = out.input_torque
     if t is not None:
@@ -248,8 +243,7 @@ def tidied(sol: Solution) -> Solution:
         # sum over the crank's omega
         sizes = [hypot(*ld.force) * k["v"] if ld.force is not None
                  else abs(ld.torque) * k["omega"] for ld in sc.loads]
-        out._cache["power"] = [(what, 0.0 if abs(p) <= tiny * bound else p)
+        out._cache["power"] = [(what, quiet(p, bound))
                                for (what, p), bound in zip(out.power_terms, sizes)]
-        if abs(t) <= tiny * sum(sizes) / abs(sc.input.omega):
-            out._cache["torque"] = 0.0
+        out._cache["torque"] = quiet(t, sum(sizes) / abs(sc.input.omega))
     return out

@@ -10,8 +10,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .errors import TOL
 from .kinematics import Motion
+from .numbers import quiet
 from .scene import FixedPath, Scene
 from .sweeps import (SweepResult, rubbing_arrays, select, torque_array, angles_ok,
                     evaluate_all, sweep_angles)
@@ -105,11 +105,9 @@ class Summary:
                                f"{'(constant)':>10}")
                     continue
                 # rounding noise about a true zero (a speed at a dead centre) is 0
-                tiny = TOL.negligible * max(abs(e.maximum), abs(e.minimum))
-                mx = "+unbounded" if e.max_unbounded else \
-                    f"{0.0 if abs(e.maximum) <= tiny else e.maximum:.6g}"
-                mn = "-unbounded" if e.min_unbounded else \
-                    f"{0.0 if abs(e.minimum) <= tiny else e.minimum:.6g}"
+                big = max(abs(e.maximum), abs(e.minimum))
+                mx = "+unbounded" if e.max_unbounded else f"{quiet(e.maximum, big):.6g}"
+                mn = "-unbounded" if e.min_unbounded else f"{quiet(e.minimum, big):.6g}"
                 out.append(f"{e.name:<{w}}  {e.unit:<7} {mx:>12} "
                            f"{fmt_deg(e.at_max, 3):>10} {mn:>12} "
                            f"{fmt_deg(e.at_min, 3):>10}"

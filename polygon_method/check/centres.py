@@ -12,8 +12,8 @@ from __future__ import annotations
 import math
 
 from ..centres import locate
-from ..errors import TOL, PolygonMethodError, SceneError
-from ..numbers import fmt
+from ..errors import PolygonMethodError, SceneError
+from ..numbers import fmt, quiet
 from ..scales import DRAWING_PRECISION_CM, diagram_scales
 from .verdicts import ROUNDING, Verdict
 
@@ -79,6 +79,6 @@ def centre_verdict(sol, ans, tolerance, cache: list) -> Verdict:
     return Verdict(ans.key, ans.raw, math.hypot(gx - pivot[0], gy - pivot[1]),
                    math.hypot(cx - pivot[0], cy - pivot[1]), "m", err / base, tol / base, tol,
                    rule, ok, False, mistake, diagnosis, ans.line,
-                   "[" + ", ".join(fmt(0.0 if abs(v) <= TOL.negligible * base else v / u, 5)
+                   "[" + ", ".join(fmt(quiet(v, base) / u, 5)
                                    for v in (cx, cy)) + f"] {un}",  # (noise about an axis: 0)
                    {"given_position": [gx, gy], "correct_position": [cx, cy]})

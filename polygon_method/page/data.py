@@ -15,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import TOL
-from ..numbers import sense
+from ..numbers import quiet, sense
 from ..scales import DIAGRAMS, display_unit
 from ..steps import image_name, under_label
 from .frames import Frames, round_sig
@@ -60,8 +60,7 @@ def _torque_scale(sc, k):
 def _quiet(x, scale, n):
     """``x`` (one value per frame) with rounding noise, at most ``TOL.negligible`` of its
     frame's ``scale``, set to 0: the page writes 0, not 1.6e-15 rad/s ccw."""
-    x = np.broadcast_to(np.asarray(x, dtype=float), (n,))
-    return np.where(np.abs(x) <= TOL.negligible * scale, 0.0, x)
+    return quiet(np.broadcast_to(np.asarray(x, dtype=float), (n,)), scale)
 
 
 def _xy(fr: Frames, phase):

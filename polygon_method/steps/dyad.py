@@ -24,7 +24,7 @@ import math
 from dataclasses import dataclass
 
 from ..errors import TOL, AssemblyError, SingularStepError
-from ..numbers import in_units
+from ..numbers import in_units, quiet
 from ..scene import split_name
 from .rounding import C_FLOOR, vhypot, vmax, vmin
 from .base import (Construction, DirectionLine, Step, Vector, absolute, centripetal,
@@ -273,8 +273,7 @@ class Dyad(Step):
 
     def why(self, e):
         u, n = self.unit, self.uname
-        if e <= TOL.negligible * (self.l1 + self.l2):
-            e = 0.0  # B and D coincide to rounding (e.g. at cos 180 deg): 0, not 1.2e-14
+        e = quiet(e, self.l1 + self.l2)  # B on D to rounding (cos 180 deg): 0, not 1.2e-14
         if self.l1 + self.l2 < e:
             return (f"cannot assemble {self.point}: {self.side(1)} + {self.side(2)} = "
                     f"{in_units(self.l1 + self.l2, u)} {n} < {self.b}{self.d} = "
