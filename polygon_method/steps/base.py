@@ -15,7 +15,7 @@ from ..errors import TOL, AssemblyError, SingularStepError
 from .rounding import two_lines
 
 __all__ = ["Context", "State", "Step", "Vector", "DirectionLine", "Construction",
-           "image_name", "image_label", "pole_text", "unit", "sub", "add", "perp"]
+           "image_name", "image_label", "numbered", "pole_text", "unit", "sub", "add", "perp"]
 
 
 class Context:
@@ -315,11 +315,16 @@ def image_name(scene, point: str) -> str:
     own = point.lower()
     if own != "o" or point in scene.ground:
         return own
-    names = {p.upper() for p in scene.point_names}
+    return numbered("o", {p.lower() for p in scene.point_names})
+
+
+def numbered(stem: str, taken) -> str:
+    """``stem1``, or ``stem2`` and so on: the first not in ``taken`` (a letter of its own
+    beside the scene's points: o1 for a moving O, a1 for the point under a block)."""
     k = 1
-    while f"O{k}" in names:
+    while f"{stem}{k}" in taken:
         k += 1
-    return f"o{k}"
+    return f"{stem}{k}"
 
 
 def image_label(sol, point: str, phase: str = "velocity") -> str:

@@ -29,7 +29,7 @@ from ..errors import TOL, SingularStepError
 from ..scene import GuideSlider
 from .rounding import C_FLOOR, vhypot, vmax
 from .base import (Construction, DirectionLine, Step, Vector, absolute, add, image_label,
-                   image_name, perp, pole_text, relative, sub, unit)
+                   image_name, numbered, perp, pole_text, relative, sub, unit)
 
 __all__ = ["SlottedLink", "place", "velocity", "acceleration", "recognise"]
 
@@ -110,10 +110,7 @@ def under_label(sol, X: str, phase: str = "velocity") -> str:
     and so on where the scene has a point A1 of its own (whose image is a1)."""
     sc = sol.scene
     taken = {image_name(sc, p) for p in sc.point_names} | {p.lower() for p in sc.point_names}
-    k = 1
-    while f"{X.lower()}{k}" in taken:
-        k += 1
-    return f"{X.lower()}{k}" + ("'" if phase == "acceleration" else "")
+    return numbered(X.lower(), taken) + ("'" if phase == "acceleration" else "")
 
 @dataclass(frozen=True)
 class SlottedLink(Step):
