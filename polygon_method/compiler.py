@@ -34,7 +34,8 @@ import weakref
 from dataclasses import replace
 
 from .errors import AssemblyError, MobilityError, PolygonMethodError, SceneError
-from .numbers import in_units, quiet
+from .given import completed, resolve
+from .numbers import in_units, quiet, sense
 from .plan import Bodies, Dims, Plan, _bodies_at
 from .scene import GuideSlider, Scene, key_line
 from .steps import TIERS, Context, Crank
@@ -74,16 +75,45 @@ def compile_plan(scene: Scene) -> Plan:
             if exc.line is None and exc.key:
                 exc.line = key_line(scene, exc.key)
             raise exc.located(scene.file)
+        if scene.input.given is not None:
+            plan = _given(plan)
         if key is not None:
             while _BY_CONTENT and len(_BY_CONTENT) >= _KEEP:
                 _BY_CONTENT.pop(next(iter(_BY_CONTENT)))
             _BY_CONTENT[key] = plan
+    if scene.input.omega is None:  # the crank's speed found from the given motion
+        object.__setattr__(scene, "input", plan.scene.input)
     try:
         ident = id(scene)
         _BY_ID[ident] = (weakref.ref(scene, functools.partial(_forget, ident=ident)), plan)
     except TypeError:
         pass
     return plan
+
+
+def _given(plan):
+    """The plan with the crank's omega and alpha found from the scene's given motion
+    (:mod:`polygon_method.given`); the scene's input completed with them (a scene is
+    complete once compiled: every view reads its crank's speed)."""
+    sc = plan.scene
+    try:
+        res = resolve(plan)
+    except PolygonMethodError as exc:
+        if exc.line is None:
+            exc.line = key_line(sc, f"[input] {sc.input.given.key}")
+            exc.key, exc.step = exc.step, None
+        raise exc.located(sc.file)
+    object.__setattr__(sc, "input", completed(sc, res))
+    g = sc.input.given
+    per = "m/s" if g.kind != "omega" else "rad/s"
+    note = (f"the crank {sc.input.crank}'s speed is found from {g.key} = {g.text}: "
+            f"{g.key} is {res.per_omega:.6g} {per} per rad/s of the crank, so omega_"
+            f"{sc.input.crank} = {abs(res.omega):.6g} rad/s {sense(res.omega)}")
+    if g.rate is not None:
+        note += (f", and from {g.rate_key} = {g.rate_text}: alpha_{sc.input.crank} = "
+                 f"{abs(res.alpha):.6g} rad/s^2 {sense(res.alpha)}")
+    dims = replace(plan.dims, omega=res.omega, alpha=res.alpha)
+    return replace(plan, dims=dims, notes=(note,) + res.notes + plan.notes, given=res)
 
 
 def _forget(ref, ident, by_id=_BY_ID):
@@ -121,7 +151,9 @@ class _Compiler:
         self.names = scene.point_names
         self.unit = scene.length_unit
         self.uname = scene.units
-        self.ctx = Context(scene.input.angle, scene.input.omega, scene.input.alpha)
+        inp = scene.input
+        self.ctx = Context(inp.angle, 1.0 if inp.omega is None else inp.omega,
+                           inp.alpha or 0.0)  # only positions are placed here
         self.P = dict(scene.ground)
         self.steps = []
         self.used_links = {lk.key for lk in scene.links

@@ -182,7 +182,41 @@ def error_bounds(motion) -> ErrorBounds:
             key = scene.link(guide).key
             v, a = vmax(v, eW.get(key, 0.0)), vmax(a, eAl.get(key, 0.0))
         eS[x] = (v, a, a)
+    res = getattr(plan, "given", None)
+    if res is not None:
+        _given_spread(motion, res, sizes, eV, eA, eW, eAl, eS)
     return ErrorBounds(eP, eV, eA, eW, eAl, eS, sizes)
+
+
+def _given_spread(motion, res, sizes, eV, eA, eW, eAl, eS):
+    """The crank's speed found from a given motion (``omega = Y / Y1``) errs as ``Y1``
+    does, relative to ``Y``: every velocity and omega (proportional to omega) by that
+    much; every acceleration and alpha twice that, plus the error of the given quantity's
+    rate carried through ``alpha = (Y' - omega^2 H) / Y1``."""
+    g = motion.scene.input.given
+    if g.kind == "omega":
+        key = motion.scene.link("-".join(g.names)).key
+        ev, ea, kv, ka = eW.get(key, EPS), eAl.get(key, EPS), "omega", "alpha"
+        y = abs(motion.W[key])
+    elif g.kind == "vs":
+        ev, ea, _ = eS.get(g.names[0], (EPS,) * 3)
+        kv, ka = "velocity", "acceleration"
+        y = abs(motion.S[g.names[0]][0])
+    else:
+        ev, ea, kv, ka = eV[g.names[0]], eA[g.names[0]], "velocity", "acceleration"
+        y = hypot(*motion.V[g.names[0]])
+    y = vmax(y, sizes[kv] * 1e-300)
+    rw = ev * sizes[kv] / y + 2 * EPS
+    time = vmax(sizes["velocity"] / sizes["acceleration"], sizes["omega"] / sizes["alpha"])
+    ra = ea * sizes[ka] / y * time + 2 * rw
+    for t in (eV, eW):
+        for k in t:
+            t[k] = t[k] + rw
+    for t in (eA, eAl):
+        for k in t:
+            t[k] = t[k] + ra
+    for k, (v, a, c) in eS.items():
+        eS[k] = (v + rw, a + ra, c + ra)
 
 
 def bounds_dict(sol, b=None) -> dict:

@@ -125,6 +125,9 @@ class Plan:
     #: the pairs' links)
     pins: tuple = ()
     dims: Dims | None = field(default=None, repr=False, compare=False)
+    #: how the crank's speed was found where the scene gives the motion on another
+    #: quantity (a :class:`polygon_method.given.Resolution`), else None
+    given: object = field(default=None, repr=False, compare=False)
 
     def __hash__(self):
         return id(self)

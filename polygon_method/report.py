@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 
 from .errorbound import SHOWN, shown_bounds
+from .given import stated
 from .numbers import fmt_angular, quiet
 from .solution import Solution, tidied
 
@@ -42,7 +43,8 @@ def solution_text(sol: Solution) -> str:
     lines.append(title)
     lines.append(f"crank {inp.crank} at {math.degrees(inp.angle):g} deg, "
                  f"{fmt_angular(inp.omega, 'rad/s')}"
-                 + ("" if "rad/s" in inp.speed_text else f" ({inp.speed_text})")
+                 + ("" if "rad/s" in inp.speed_text and inp.given is None
+                    else f" ({'from ' if inp.given else ''}{stated(inp)})")
                  + (f", {fmt_angular(inp.alpha, 'rad/s^2')}" if inp.alpha else ""))
     lines.append("")
     lines.append(f"{'point':<6} {'position (' + sc.units + ')':<24} {'velocity (m/s)':<24} "

@@ -104,8 +104,15 @@ class Solution(Motion):
     def warnings(self) -> tuple:
         """One line per ill-conditioned step (condition below sin 5 deg)."""
         def make():
-            return tuple(st.warning(c) for st in self.plan.steps
-                         if (c := self.cond.get(st.index, 1.0)) < TOL.warn)
+            out = tuple(st.warning(c) for st in self.plan.steps
+                        if (c := self.cond.get(st.index, 1.0)) < TOL.warn)
+            res = self.plan.given
+            if res is not None and res.condition < TOL.warn:
+                g = self.scene.input.given
+                out += (f"[input] {g.key}: near a dead centre for this input (condition "
+                        f"{res.condition:.3g}): the crank's speed found from it is very "
+                        "sensitive to it",)
+            return out
         return self._get("warnings", make)
 
     @property
@@ -154,6 +161,16 @@ class Solution(Motion):
                 d["pins"][name] = entry
         if sc.loads:
             d["input_torque"] = self.input_torque
+        inp = sc.input
+        d["input"] = {"crank": inp.crank, "angle": inp.angle, "omega": inp.omega,
+                      "alpha": inp.alpha}
+        res = self.plan.given
+        if res is not None:
+            g = inp.given
+            d["input"]["given"] = {"key": g.key, "value": g.value, "rate_key": g.rate_key,
+                                   "rate": g.rate, "per_omega": res.per_omega,
+                                   "per_omega2": res.per_omega2,
+                                   "condition": res.condition}
         warnings = list(self.warnings)
         bodies = 1 + sum(len(st.bodies()) for st in self.plan.steps)
         if bodies <= JSON_BODIES:

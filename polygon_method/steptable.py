@@ -37,6 +37,7 @@ import re
 import textwrap
 
 from .derived import transmission_angle
+from .given import working
 from .numbers import fixed as _fixed, fmt, sense_word
 from .constructions import acceleration_constructions, velocity_constructions
 from .scales import DRAWING_PRECISION_CM, diagram_scales, extent
@@ -150,6 +151,9 @@ def _speed_working(sol) -> tuple[str, str]:
     w = inp.omega
     name = f"omega_{inp.crank}"
     result = f"{fmt(abs(w))} rad/s {sense_word(w)}"
+    lines = working(sol.plan, fmt)
+    if lines is not None:  # the motion given on another quantity: scaled from 1 rad/s
+        return "; ".join(lines), result
     m = re.match(r"^\s*([-+]?[0-9.]+(?:[eE][-+]?\d+)?)\s*([^\s]*)", inp.speed_text)
     number, unit = (m.group(1), m.group(2).lower()) if m else ("", "")
     if unit in ("rpm", "r.p.m.", "r.p.m", "rev/min"):
@@ -240,7 +244,9 @@ def _input(doc, sol):
              f"{fmt(r, 5)} = {fmt(v)} m/s, perpendicular to {inp.crank}"]
     if inp.alpha:
         items.append(f"alpha_{inp.crank} = {fmt(abs(inp.alpha))} rad/s^2 "
-                     f"{sense_word(inp.alpha)} (given)")
+                     f"{sense_word(inp.alpha)} "
+                     + ("(given)" if inp.given is None or inp.given.rate is None
+                        else f"(found from {inp.given.rate_key}, above)"))
     else:
         items.append(f"alpha_{inp.crank} = 0 (the crank turns at a uniform speed)")
     doc.items(items)

@@ -47,11 +47,15 @@ def given(sc) -> list:
         out.append(f"Of its two positions, {p} is the one {where}.")
     inp = sc.input
     words = (f"The crank {inp.crank} turns about {inp.pivot}; at the instant shown it makes "
-             f"{fmt(math.degrees(inp.angle) % 360)}° with the x axis (counter-clockwise), "
-             f"turning at {inp.speed_text}")
-    if "rad/s" not in inp.speed_text:
+             f"{fmt(math.degrees(inp.angle) % 360)}° with the x axis (counter-clockwise)")
+    g = inp.given
+    if g is not None:
+        words += f". At this instant {_given_words(g)}"
+    else:
+        words += f", turning at {inp.speed_text}"
+    if g is None and "rad/s" not in inp.speed_text:
         words += f" ({fmt(abs(inp.omega))} rad/s {sense(inp.omega)})"
-    if inp.alpha:
+    if inp.alpha and (g is None or g.rate is None):
         words += (f", with an angular acceleration of {fmt(abs(inp.alpha))} rad/s² "
                   f"{sense(inp.alpha)}")
     out.append(words + ".")
@@ -85,3 +89,15 @@ def _given(x: float) -> str:
     """A datum as the scene gave it (ten significant figures: no rounding of the data, and
     no trace of the conversion to SI and back)."""
     return f"{x:.10g}"
+
+
+def _given_words(g) -> str:
+    """The given motion as a book states it: ``the block B slides at 5 m/s left``."""
+    name = "-".join(g.names) if any(len(n) > 1 for n in g.names) else "".join(g.names)
+    what = {"omega": f"link {name} turns at {g.text}",
+            "vs": f"the block {name} slides along its guide at {g.text}",
+            "v": f"{name} moves at {g.text}"}[g.kind]
+    if g.rate is not None:
+        what += f", its {'angular acceleration' if g.kind == 'omega' else 'acceleration'} " \
+                f"being {g.rate_text}"
+    return what

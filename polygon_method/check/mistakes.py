@@ -45,7 +45,8 @@ class _Alternatives:
     def speed(self, factor):
         sc = self.sol.scene
         return self.solve(("speed", factor),
-                          replace(sc, input=replace(sc.input, omega=sc.input.omega * factor)))
+                          replace(sc, input=replace(sc.input, omega=sc.input.omega * factor,
+                                                    given=None)))  # that speed, as given
 
     def angle_as_radians(self):
         sc = self.sol.scene
@@ -90,6 +91,9 @@ class _Alternatives:
 def _speed_mistakes(scene: Scene):
     """(factor on the crank's omega, code, words) for the speed confusions that the way the
     scene states the speed makes possible."""
+    g = scene.input.given
+    if g is not None:  # the crank's speed was found from a given motion
+        return _given_mistakes(scene, g)
     unit = re.sub(r"^[-+0-9.eE\s]+", "", scene.input.speed_text).split()
     unit = unit[0].lower() if unit else "rad/s"
     k = 60 / (2 * math.pi)
@@ -102,6 +106,23 @@ def _speed_mistakes(scene: Scene):
                 (1 / 60, "rps_rpm", "rps taken as rpm (omega = 2 pi n / 60)"))
     return ((1 / k, "rad_s_as_rpm", "rad/s taken as rpm (converted again by 2 pi / 60)"),
             (2 * math.pi, "rad_s_as_rps", "rad/s taken as rps (multiplied by 2 pi)"))
+
+
+def _given_mistakes(scene, g):
+    """The slips of a speed given on another quantity: the given speed taken as the crank
+    pin's (omega = v / r), or the given link's omega taken as the crank's."""
+    w = abs(scene.input.omega)
+    if g.kind == "omega":
+        wrong = abs(g.value)
+        words = (f"the given omega_{''.join(g.names)} taken as the crank's (the polygon not "
+                 "scaled to it)")
+    else:
+        wrong = abs(g.value) / scene.link(scene.input.crank).length
+        words = (f"the given speed of {g.names[0]} ({g.text}) taken as the crank pin's "
+                 f"(omega_{scene.input.crank} = v / r, the polygon not scaled to it)")
+    if abs(wrong - w) <= 1e-6 * w:
+        return ()
+    return ((wrong / w, "given_as_crank", words),)
 
 
 _FACTOR_MISTAKES = {

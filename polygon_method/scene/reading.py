@@ -430,6 +430,7 @@ class _Loader(_Tables, _Variants):
         sliders = self.sliders(index, ground, {p.name for p in points})
         known = set(ground) | {p for lk in links for p in lk.points} | {p.name for p in points}
         self.known = known
+        self.slider_points = {s.point: s for s in sliders}
         inp = self.input(index, ground)
         sliders = [replace(s, through=ground[inp.pivot])
                    if isinstance(s, FixedPath) and s.through[1] is None else s

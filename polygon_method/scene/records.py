@@ -26,6 +26,9 @@ _ABSURD_SHORT = 1e-7
 TOP_KEYS = ("title", "source", "notes", "units", "ground", "links", "points", "sliders",
             "assembly", "input", "pins", "loads", "answers", "variants", "variant")
 INPUT_KEYS = ("crank", "angle", "speed", "acceleration")
+#: the kinds of quantity on which [input] may give the motion instead of the crank's speed
+#: (named as answer keys: ``omega_BC``, ``vs_B``, ``v_B``), with their rate's prefix
+GIVEN_KINDS = {"omega": "alpha", "vs": "as", "v": "a"}
 
 #: answer key prefix -> (unit kind, what it names, sense allowed)
 ANSWER_KINDS = {
@@ -100,16 +103,47 @@ class GuideSlider:
 
 
 @dataclass(frozen=True)
+class GivenRate:
+    """The input's motion given on another quantity than the crank's speed, as a book
+    gives it ("the piston moves at 5 m/s", "the coupler turns at 3 rad/s cw"): ``kind`` an
+    answer key's prefix (``omega`` a link's angular velocity, ``vs`` a slider's sliding
+    velocity along its guide, ``v`` a point's speed in ``direction``), ``names`` the link's
+    points or the point, ``value`` SI (signed: ccw for omega, along the guide for vs, along
+    ``direction`` for v), ``rate`` its rate of change (alpha; the sliding acceleration; the
+    rate of change of the point's speed, positive speeding up) or None, ``text`` and
+    ``rate_text`` as the scene wrote them.
+
+    The crank's omega follows from ``value = omega * Y1``, with ``Y1`` the quantity when
+    the crank turns at 1 rad/s; its alpha from ``rate = alpha * Y1 + omega^2 * H``, with
+    ``H`` the rate when the crank turns uniformly at 1 rad/s (velocities are linear in the
+    crank's speed; accelerations linear in its alpha and in omega^2)."""
+
+    key: str
+    kind: str
+    names: tuple
+    value: float
+    rate: float | None
+    direction: tuple | None
+    text: str
+    rate_key: str | None = None
+    rate_text: str | None = None
+
+
+@dataclass(frozen=True)
 class Input:
-    """The driving crank: link ``crank`` turning about ground point ``pivot``."""
+    """The driving crank: link ``crank`` turning about ground point ``pivot``; its angle
+    sets the position. Its speed is ``omega`` (and ``alpha``), or is found from ``given``
+    (a :class:`GivenRate`) when the scene is compiled: until then ``omega`` is None (and
+    ``alpha`` None unless the scene gives the crank's own)."""
 
     crank: str
     pivot: str
     tip: str
     angle: float  # rad, direction of pivot -> tip
-    omega: float  # rad/s, ccw positive
-    alpha: float  # rad/s^2, ccw positive
+    omega: float | None  # rad/s, ccw positive
+    alpha: float | None  # rad/s^2, ccw positive
     speed_text: str
+    given: GivenRate | None = None
 
 
 @dataclass(frozen=True)
@@ -190,6 +224,8 @@ class Scene:
         for name, v, kind in (("angle", inp.angle, "angle"),
                               ("speed", inp.omega, "angular_velocity"),
                               ("acceleration", inp.alpha, "angular_acceleration")):
+            if v is None and inp.given is not None and name != "angle":
+                continue  # found from the given motion when the scene is compiled
             if not isinstance(v, (int, float)) or not math.isfinite(v):
                 raise SceneError(f"the crank's {name} must be a finite number, got {v!r}",
                                  key=f"[input] {name}", file=self.file)

@@ -9,8 +9,8 @@ import re
 
 from ..errors import SceneError, printable
 from ..units import UNITS, did_you_mean
-from .records import (ANSWER_KINDS, INPUT_KEYS, Answer, CarriedPoint, FixedPath, GuideSlider,
-                      Input, Load, Pin, split_name)
+from .records import (ANSWER_KINDS, GIVEN_KINDS, INPUT_KEYS, Answer, CarriedPoint, FixedPath,
+                      GivenRate, GuideSlider, Input, Load, Pin, split_name)
 
 
 def _unit_at(ang: float) -> tuple:
@@ -22,6 +22,25 @@ def _unit_at(ang: float) -> tuple:
     if abs(q - k) <= 1e-12:
         return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[k % 4]
     return (math.cos(ang), math.sin(ang))
+
+
+#: a speed followed by a direction: up, down, left, right (upwards, to the left, ...), or
+#: "at 30 deg"
+_DIRECTED = re.compile(r"^(.*?\S)\s+(?:(up(?:wards?)?|down(?:wards?)?|(?:to the )?left(?:wards?)?|"
+                       r"(?:to the )?right(?:wards?)?)|at\s+(.+))$", re.IGNORECASE)
+_WORDS = {"up": (0.0, 1.0), "down": (0.0, -1.0), "left": (-1.0, 0.0), "right": (1.0, 0.0)}
+
+
+def _given_key(key):
+    """(prefix, names) of an [input] key naming a given motion or its rate (``vs_B`` ->
+    ("vs", ("B",))), or None."""
+    prefix, _, rest = key.partition("_")
+    if prefix not in ("omega", "vs", "v", "alpha", "as", "a") or not rest:
+        return None
+    names = split_name(rest)
+    if not names or len(names) > 2 or (prefix in ("omega", "alpha")) != (len(names) == 2):
+        return None
+    return prefix, names
 
 
 def _suggest(word, choices) -> str:
@@ -204,10 +223,24 @@ class _Tables:
             raise SceneError("missing [input] table: which link is the crank, its angle and "
                              "speed", file=self.file, key="[input]")
         spec = self.table("input")
-        for k in spec:
-            if k not in INPUT_KEYS:
-                raise self.error(f"unknown key{_suggest(k, INPUT_KEYS)}", "input", k)
-        for k in ("crank", "angle", "speed"):
+        rates = {k: _given_key(k) for k in spec if k not in INPUT_KEYS}
+        for k, parsed in rates.items():
+            if parsed is None:
+                raise self.error(f"unknown key{_suggest(k, INPUT_KEYS)}; [input] takes crank, "
+                                 "angle, speed, acceleration, or the given motion named as an "
+                                 "answer key (omega_BC, vs_B, v_B and alpha_BC, as_B, a_B)",
+                                 "input", k)
+        given_keys = [k for k, p in rates.items() if p[0] in GIVEN_KINDS]
+        rate_keys = [k for k, p in rates.items() if p[0] not in GIVEN_KINDS]
+        if len(given_keys) > 1:
+            raise self.error(f"[input] gives the motion twice ({', '.join(given_keys)}): a "
+                             "mechanism of one degree of freedom takes one input", "input",
+                             given_keys[1])
+        if given_keys and "speed" in spec:
+            raise self.error(f"[input] gives both the crank's speed and {given_keys[0]}: one "
+                             "input only (remove speed to find the crank's from "
+                             f"{given_keys[0]})", "input", given_keys[0])
+        for k in ("crank", "angle") + (() if given_keys else ("speed",)):
             if k not in spec:
                 example = {"crank": "crank = \"AB\"", "angle": "angle = 60",
                            "speed": "speed = \"10 rad/s ccw\""}[k]
@@ -223,16 +256,105 @@ class _Tables:
         pivot = on_ground[0]
         tip = link.other(pivot)
         angle = self.qty(spec["angle"], "angle", "input", "angle", default_unit="deg").value
-        speed = self.qty(spec["speed"], "angular_velocity", "input", "speed", need_sense=True)
-        acc = spec.get("acceleration", 0)
-        if isinstance(acc, (int, float)) and not isinstance(acc, bool) and acc == 0:
+        acc = spec.get("acceleration", 0 if not given_keys else None)
+        if acc is None:
+            alpha = None
+        elif isinstance(acc, (int, float)) and not isinstance(acc, bool) and acc == 0:
             alpha = 0.0
         else:
             alpha = self.qty(acc, "angular_acceleration", "input", "acceleration",
                              need_sense=True).value
+        if given_keys:
+            given = self.given_rate(given_keys[0], rate_keys, spec, index)
+            if given.rate is not None and "acceleration" in spec:
+                raise self.error(f"[input] gives both the crank's acceleration and "
+                                 f"{given.rate_key}: one only", "input", given.rate_key)
+            return Input(link.key, pivot, tip, angle, None, alpha, given.text, given)
+        if rate_keys:
+            raise self.error(f"{rate_keys[0]} is the rate of a given motion, but [input] gives "
+                             "the crank's speed: give the crank's acceleration instead",
+                             "input", rate_keys[0])
+        speed = self.qty(spec["speed"], "angular_velocity", "input", "speed", need_sense=True)
         if speed.value == 0:
             raise self.error("the crank speed is zero: nothing moves", "input", "speed")
         return Input(link.key, pivot, tip, angle, speed.value, alpha, str(spec["speed"]))
+
+    def given_rate(self, key, rate_keys, spec, index) -> GivenRate:
+        """``omega_BC = "3 rad/s cw"``, ``vs_B = "1.5 m/s up"``, ``v_B = "3 m/s down"`` in
+        [input], with its rate (``alpha_BC``, ``as_B``, ``a_B``) if given."""
+        kind, names = _given_key(key)
+        rate_kind = GIVEN_KINDS[kind]
+        for r in rate_keys:
+            rk, rnames = _given_key(r)
+            if rk != rate_kind or rnames != names:
+                raise self.error(f"{r} does not go with {key}: the given motion's rate is "
+                                 f"{rate_kind}_{'-'.join(names) if len(names) > 1 and any(len(n) > 1 for n in names) else ''.join(names)}",
+                                 "input", r)
+        rate_key = rate_keys[0] if rate_keys else None
+        raw, raw_rate = spec[key], spec.get(rate_key) if rate_key else None
+        direction = None
+        if kind == "omega":
+            if len(names) != 2 or frozenset(names) not in index:
+                raise self.error(f"no link {''.join(names)} in [links]", "input", key)
+            value = self.qty(raw, "angular_velocity", "input", key, need_sense=True).value
+            rate = None if raw_rate is None else (
+                0.0 if raw_rate == 0 else self.qty(raw_rate, "angular_acceleration", "input",
+                                                   rate_key, need_sense=True).value)
+            names = index[frozenset(names)].points
+        else:
+            point = names[0] if len(names) == 1 else None
+            if kind == "vs":
+                sl = self.slider_points.get(point)
+                if sl is None:
+                    raise self.error(f"no slider {''.join(names)} in [sliders]", "input", key)
+                u = getattr(sl, "u", None)
+            else:
+                if point is None or point not in self.known:
+                    raise self.error(f"no point {''.join(names)} in the scene", "input", key)
+                u = None
+            value, direction = self.directed(raw, "velocity", key, u, need=kind == "v")
+            rate = None
+            if raw_rate is not None:
+                rate, _ = self.directed(raw_rate, "acceleration", rate_key,
+                                        u if kind == "vs" else None, need=False)
+        if value == 0:
+            raise self.error(f"{key} is zero: it does not set the crank's speed (give the "
+                             "crank's speed instead)", "input", key)
+        return GivenRate(key, kind, tuple(names), value, rate, direction,
+                         printable(str(raw)), rate_key,
+                         None if raw_rate is None else printable(str(raw_rate)))
+
+    def directed(self, raw, kind, key, u, need):
+        """A speed (or its rate) with an optional direction word: ``"3 m/s down"``,
+        ``"1.5 m/s up"``, ``"2 m/s at 30 deg"``. Returns (value, unit direction): with a
+        guide ``u``, the value is signed along u and the direction is u."""
+        text = raw.strip() if isinstance(raw, str) else raw
+        d = None
+        if isinstance(text, str):
+            m = _DIRECTED.match(text)
+            if m:
+                text, word, ang = m.group(1), m.group(2), m.group(3)
+                if ang is not None:
+                    d = _unit_at(self.qty(ang, "angle", "input", key, default_unit="deg").value)
+                else:
+                    d = _WORDS[word.lower().rstrip("s").replace("to the ", "").replace("ward", "")]
+        value = self.qty(text, kind, "input", key, default_unit=next(iter(UNITS[kind]))).value
+        if u is not None:
+            if d is not None:
+                along = d[0] * u[0] + d[1] * u[1]
+                if abs(along) < 1e-9:
+                    raise self.error(f"{raw!r}: the guide is perpendicular to that direction; "
+                                     "give the speed along the guide, signed, or up, down, "
+                                     "left, right", "input", key)
+                value = value * (1.0 if along > 0 else -1.0)
+            return value, tuple(u)
+        if d is None:
+            if need:
+                raise self.error(f"{raw!r}: say which way the point moves, e.g. \"3 m/s down\" "
+                                 "or \"3 m/s at 240 deg\" (up, down, left, right or an angle)",
+                                 "input", key)
+            return value, None
+        return value, d
 
     def assembly(self, known):
         out = {}

@@ -236,11 +236,13 @@ def questions(scene: Scene) -> tuple:
         if p not in ground:
             out.append((f"a_{p}", "a", (p,), "m/s^2", False))
     from ..scene import split_name
-    for lk in scene.links:  # the crank's omega is given
-        if not (lk.p in ground and lk.q in ground) and lk.key != scene.input.crank:
+    # the crank's omega is given, unless the scene gives the motion on another quantity
+    crank = scene.input.crank if scene.input.given is None else None
+    for lk in scene.links:
+        if not (lk.p in ground and lk.q in ground) and lk.key != crank:
             out.append((f"omega_{lk.key}", "omega", split_name(lk.key), "rad/s", True))
     for lk in scene.links:
-        if not (lk.p in ground and lk.q in ground) and lk.key != scene.input.crank:
+        if not (lk.p in ground and lk.q in ground) and lk.key != crank:
             out.append((f"alpha_{lk.key}", "alpha", split_name(lk.key), "rad/s^2", True))
     for s in scene.sliders:
         out.append((f"vs_{s.point}", "vs", (s.point,), "m/s", True))

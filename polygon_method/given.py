@@ -1,0 +1,203 @@
+"""The input's motion given on another quantity than the crank's speed.
+
+A book may set the position by the crank's angle but give the motion elsewhere: "the
+piston moves at 5 m/s", "the coupler turns at 3 rad/s cw", "B moves down at 3 m/s". The
+polygons are linear in the crank's speed: at the crank's angle, with the crank turning at
+1 rad/s (``alpha = 0``), every velocity is ``Y1`` per rad/s and every acceleration ``H``
+per (rad/s)^2, so the given quantity is::
+
+    Y = omega * Y1                      ->  omega = Y / Y1
+    Y' = alpha * Y1 + omega^2 * H       ->  alpha = (Y' - omega^2 H) / Y1
+
+(superposition: the motion due to the crank's alpha plus that due to its speed). Where
+``Y1`` is zero the given quantity does not move whatever the crank's speed (a dead centre
+for a piston): the crank's speed is unbounded, and the step says so with its condition,
+``|Y1|`` over its size at the crank's tip (``r`` for a velocity, 1 for an omega).
+
+>>> from polygon_method.scene import parse_scene
+>>> from polygon_method.compiler import compile_plan
+>>> sc = parse_scene('''
+... [ground]
+... O = [0, 0]
+... [links]
+... OA = 150
+... AB = 600
+... [sliders]
+... B = { path = "horizontal" }
+... [input]
+... crank = "OA"
+... angle = 90
+... vs_B = "-1.5 m/s"
+... ''')
+>>> plan = compile_plan(sc)
+>>> round(sc.input.omega, 12)   # at 90 deg the piston moves as fast as the crank pin
+10.0
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+from .errors import TOL, SingularStepError
+from .plan import Context, Plan
+from .scene import GIVEN_KINDS
+
+__all__ = ["resolve", "quantity", "Resolution", "completed", "stated", "working"]
+
+
+class Resolution:
+    """How the crank's speed was found from the given motion: ``omega``, ``alpha``, the
+    quantity per rad/s (``per_omega``), its rate per (rad/s)^2 at a uniform crank
+    (``per_omega2``), the ``condition`` and a note for the output."""
+
+    __slots__ = ("omega", "alpha", "per_omega", "per_omega2", "condition", "notes")
+
+    def __init__(self, omega, alpha, per_omega, per_omega2, condition, notes):
+        self.omega, self.alpha = omega, alpha
+        self.per_omega, self.per_omega2 = per_omega, per_omega2
+        self.condition, self.notes = condition, notes
+
+
+def quantity(given, m, direction=None):
+    """(value, rate) of the given kind of quantity in a filled State ``m``."""
+    kind, names = given.kind, given.names
+    if kind == "omega":
+        key = _link_key(m, names)
+        return m.W[key], m.Al[key]
+    if kind == "vs":
+        s = m.S[names[0]]
+        return s[0], s[1]
+    (vx, vy), (ax, ay) = m.V[names[0]], m.A[names[0]]
+    dx, dy = direction
+    return vx * dx + vy * dy, ax * dx + ay * dy
+
+
+def _link_key(m, names):
+    for key in m.W:
+        if key.replace("-", "") in ("".join(names), "".join(reversed(names))):
+            return key
+    raise KeyError(names)
+
+
+def resolve(plan: Plan) -> Resolution:
+    """The crank's omega and alpha that give the scene's stated motion (see the module)."""
+    sc = plan.scene
+    inp, given = sc.input, sc.input.given
+    label = f"the given motion {given.key} = {given.text}"
+    m = plan.run(Context(inp.angle, 1.0, 0.0))
+    notes = []
+    direction = given.direction
+    r = sc.link(inp.crank).length
+    if given.kind == "v":
+        (vx, vy) = m.V[given.names[0]]
+        speed1 = math.hypot(vx, vy)
+        size = r
+        cond = speed1 / size
+        _check(cond, label, given, inp)
+        cos = (vx * direction[0] + vy * direction[1]) / speed1
+        off = math.degrees(math.acos(max(-1.0, min(1.0, abs(cos)))))
+        if off > 30.0:
+            raise SingularStepError(
+                f"{given.names[0]} cannot move as {given.key} = {given.text} says: here it "
+                f"moves along {math.degrees(math.atan2(vy, vx)) % 180.0:.4g} deg (or the "
+                f"opposite way), {off:.3g} deg from the stated direction; give its direction "
+                "as the mechanism allows", step=f"[input] {given.key}")
+        if off > 1e-6:
+            notes.append(f"{given.key}: {given.names[0]} moves along "
+                         f"{math.degrees(math.atan2(vy, vx)) % 360.0:.6g} deg here, {off:.3g} "
+                         "deg from the stated direction: the stated speed is taken along its "
+                         "true direction")
+        sign = 1.0 if cos > 0 else -1.0
+        y1 = sign * speed1  # the speed along the true direction, per rad/s
+        direction = (sign * vx / speed1, sign * vy / speed1)
+        h = m.A[given.names[0]][0] * direction[0] + m.A[given.names[0]][1] * direction[1]
+        omega = given.value / y1
+        # the rate of change of speed: a . (v / |v|), v = given.value * direction
+        s = 1.0 if given.value > 0 else -1.0
+        if given.rate is not None:
+            alpha = (s * given.rate - omega * omega * h) / y1
+        else:
+            alpha = None
+    else:
+        y1, h = quantity(given, m)
+        size = 1.0 if given.kind == "omega" else r
+        cond = abs(y1) / size
+        _check(cond, label, given, inp)
+        omega = given.value / y1
+        alpha = None if given.rate is None else (given.rate - omega * omega * h) / y1
+    if alpha is None:
+        alpha = inp.alpha if inp.alpha is not None else 0.0
+        if inp.alpha is None:
+            notes.append(f"the crank {inp.crank} is taken to turn uniformly (alpha = 0; give "
+                         f"{_rate_key(given)} or the crank's acceleration to set it)")
+    cond = min(cond, 1.0)
+    return Resolution(omega, alpha, y1, h, cond, tuple(notes))
+
+
+def _rate_key(given):
+    """The [input] key of the given motion's rate (``alpha_BC``, ``as_B``, ``a_B``)."""
+    return f"{GIVEN_KINDS[given.kind]}_{given.key.partition('_')[2]}"
+
+
+def _check(cond, label, given, inp):
+    if not cond >= TOL.singular:
+        what = {"omega": f"link {''.join(given.names)} does not turn",
+                "vs": f"the block {given.names[0]} does not slide",
+                "v": f"{given.names[0]} does not move"}[given.kind]
+        raise SingularStepError(
+            f"{label} cannot set the crank's speed here: at this position {what} whatever "
+            f"the crank {inp.crank}'s speed (a dead centre for this input; condition "
+            f"{cond:.2g}): the crank's speed would be unbounded", step=f"[input] {given.key}")
+
+
+def completed(scene, res: Resolution):
+    """The scene's input with the crank's omega and alpha found (the given motion kept)."""
+    return replace(scene.input, omega=res.omega, alpha=res.alpha)
+
+
+def stated(inp) -> str:
+    """How the scene gives the motion, in words: ``the crank turns at 10 rad/s cw`` or
+    ``vs_B = 5 m/s left`` (with its rate)."""
+    g = inp.given
+    if g is None:
+        return inp.speed_text
+    out = f"{g.key} = {g.text}"
+    if g.rate is not None:
+        out += f", {g.rate_key} = {g.rate_text}"
+    return out
+
+
+def working(plan, fmt) -> list:
+    """The step table's lines for a crank speed found from the given motion (``fmt``
+    writes a number): the polygons drawn for 1 rad/s first, then scaled, as a book
+    does when the speed is given elsewhere; None where the crank's speed is given."""
+    res, inp = plan.given, plan.scene.input
+    if res is None:
+        return None
+    g, c = inp.given, inp.crank
+    what = {"omega": f"omega_{''.join(g.names)}", "vs": f"vs_{g.names[0]}",
+            "v": f"v_{g.names[0]} (along its motion)"}[g.kind]
+    unit = "rad/s" if g.kind == "omega" else "m/s"
+    rate_unit = "rad/s^2" if g.kind == "omega" else "m/s^2"
+    out = [f"the motion is given: {g.key} = {g.text} = {fmt(g.value)} {unit}; draw the "
+           f"velocity polygon for omega_{c} = 1 rad/s ccw: on it {what} = "
+           f"{fmt(res.per_omega)} {unit}; every velocity is proportional to omega_{c}, so "
+           f"omega_{c} = {fmt(g.value)} / {fmt(res.per_omega)} = {fmt(abs(res.omega))} rad/s "
+           f"{_sense(res.omega)}"]
+    if g.rate is not None:
+        out.append(f"the acceleration polygon for the crank turning uniformly at 1 rad/s "
+                   f"gives {g.rate_key} = {fmt(res.per_omega2)} {rate_unit}; every "
+                   f"acceleration is alpha_{c} x (the velocity polygon at 1 rad/s) + "
+                   f"omega_{c}^2 x (that acceleration polygon), so alpha_{c} = "
+                   f"({fmt(g.rate)} - {fmt(res.omega)}^2 x {fmt(res.per_omega2)}) / "
+                   f"{fmt(res.per_omega)} = {fmt(abs(res.alpha))} rad/s^2 "
+                   f"{_sense(res.alpha)}")
+    if res.condition < TOL.warn:
+        out.append(f"condition {res.condition:.3g}: near a dead centre for this input, the "
+                   "crank's speed is very sensitive to the given motion")
+    return out
+
+
+def _sense(x):
+    return "ccw" if x > 0 else ("cw" if x < 0 else "")
