@@ -212,6 +212,15 @@ def _primary(sol, names):
         else:  # pragma: no cover
             continue
         found[key] = Centre(*key, None, d, how)
+    for c in sc.cylinders:  # the rod slides in the barrel: at infinity, across the cylinder
+        (x1, y1), (x2, y2) = sol.P[c.barrel], sol.P[c.rod]
+        ux, uy = _unit(x2 - x1, y2 - y1)
+        a, b = num(f"barrel {c.key}"), num(f"rod {c.key}")
+        if a is None or b is None:
+            continue
+        key = (min(a, b), max(a, b))
+        found[key] = Centre(*key, None, (-uy, ux), f"the rod of {c.key} slides in its barrel: "
+                            "at infinity, perpendicular to the cylinder")
     return found
 
 

@@ -38,7 +38,7 @@ from .given import completed, resolve
 from .numbers import in_units, quiet, sense
 from .plan import Bodies, Dims, Plan, _bodies_at
 from .scene import GuideSlider, Scene, key_line
-from .steps import TIERS, Context, Crank
+from .steps import TIERS, Context, Crank, cylinder
 
 __all__ = ["compile_plan", "gruebler", "step_scale"]
 
@@ -99,7 +99,7 @@ def _given(plan):
     try:
         res = resolve(plan)
     except PolygonMethodError as exc:
-        if exc.line is None:
+        if exc.line is None and (exc.step or "").startswith("[input]"):
             exc.line = key_line(sc, f"[input] {sc.input.given.key}")
             exc.key, exc.step = exc.step, None
         raise exc.located(sc.file)
@@ -109,9 +109,10 @@ def _given(plan):
     note = (f"the crank {sc.input.crank}'s speed is found from {g.key} = {g.text}: "
             f"{g.key} is {res.per_omega:.6g} {per} per rad/s of the crank, so omega_"
             f"{sc.input.crank} = {abs(res.omega):.6g} rad/s {sense(res.omega)}")
-    if g.rate is not None:
-        note += (f", and from {g.rate_key} = {g.rate_text}: alpha_{sc.input.crank} = "
-                 f"{abs(res.alpha):.6g} rad/s^2 {sense(res.alpha)}")
+    if res.rate is not None:
+        note += (f", and from {g.rate_key or 'its rate'} = "
+                 f"{g.rate_text if g.rate is not None else '0 (steady)'}: alpha_"
+                 f"{sc.input.crank} = {abs(res.alpha):.6g} rad/s^2 {sense(res.alpha)}")
     dims = replace(plan.dims, omega=res.omega, alpha=res.alpha)
     return replace(plan, dims=dims, notes=(note,) + res.notes + plan.notes, given=res)
 
@@ -138,7 +139,12 @@ def gruebler(scene: Scene) -> int:
         bodies_at.setdefault(p, set()).add("ground")
     for s in scene.sliders:
         bodies_at.setdefault(s.point, set()).add(f"block {s.point}")
-    j = sum(len(b) - 1 for b in bodies_at.values()) + len(scene.sliders)
+    for c in scene.cylinders:  # barrel and rod: two bodies, a sliding pair between them
+        n += 2
+        bodies_at.setdefault(c.barrel, set()).add(f"barrel {c.key}")
+        bodies_at.setdefault(c.rod, set()).add(f"rod {c.key}")
+    j = sum(len(b) - 1 for b in bodies_at.values()) + len(scene.sliders) + \
+        len(scene.cylinders)
     return 3 * (n - 1) - 2 * j
 
 
@@ -312,6 +318,8 @@ class _Compiler:
                 if i is not None and p not in self.P and i not in waiting:
                     heapq.heappush(heap, i)
                     waiting.add(i)
+        for st in cylinder.recognise_all(self):  # both ends known: last, they find no point
+            self.steps.append(st)
         self.finish()
         fixed = {lk.key: 0.0 for lk in sc.links if lk.p in sc.ground and lk.q in sc.ground}
         pins = []

@@ -182,6 +182,9 @@ def error_bounds(motion) -> ErrorBounds:
             key = scene.link(guide).key
             v, a = vmax(v, eW.get(key, 0.0)), vmax(a, eAl.get(key, 0.0))
         eS[x] = (v, a, a)
+    for cyl in scene.cylinders:  # its rate of extension, as a slider's sliding velocity
+        if cyl.key in slide:
+            eS[cyl.key] = slide[cyl.key]
     res = getattr(plan, "given", None)
     if res is not None:
         _given_spread(motion, res, sizes, eV, eA, eW, eAl, eS)

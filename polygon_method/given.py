@@ -43,7 +43,7 @@ from .errors import TOL, SingularStepError
 from .plan import Context, Plan
 from .scene import GIVEN_KINDS
 
-__all__ = ["resolve", "quantity", "Resolution", "completed", "stated", "working"]
+__all__ = ["resolve", "quantity", "Resolution", "completed", "stated", "working", "held"]
 
 
 class Resolution:
@@ -51,10 +51,10 @@ class Resolution:
     quantity per rad/s (``per_omega``), its rate per (rad/s)^2 at a uniform crank
     (``per_omega2``), the ``condition`` and a note for the output."""
 
-    __slots__ = ("omega", "alpha", "per_omega", "per_omega2", "condition", "notes")
+    __slots__ = ("omega", "alpha", "per_omega", "per_omega2", "condition", "notes", "rate")
 
-    def __init__(self, omega, alpha, per_omega, per_omega2, condition, notes):
-        self.omega, self.alpha = omega, alpha
+    def __init__(self, omega, alpha, per_omega, per_omega2, condition, notes, rate=None):
+        self.omega, self.alpha, self.rate = omega, alpha, rate
         self.per_omega, self.per_omega2 = per_omega, per_omega2
         self.condition, self.notes = condition, notes
 
@@ -119,20 +119,24 @@ def resolve(plan: Plan) -> Resolution:
             alpha = (s * given.rate - omega * omega * h) / y1
         else:
             alpha = None
+        if given.rate is None and inp.alpha is None:
+            alpha = -omega * omega * h / y1  # steady: the rate of change of speed is 0
     else:
         y1, h = quantity(given, m)
         size = 1.0 if given.kind == "omega" else r
         cond = abs(y1) / size
         _check(cond, label, given, inp)
         omega = given.value / y1
-        alpha = None if given.rate is None else (given.rate - omega * omega * h) / y1
+        rate = given.rate if given.rate is not None else (0.0 if inp.alpha is None else None)
+        alpha = None if rate is None else (rate - omega * omega * h) / y1
+    if given.rate is None and inp.alpha is None:
+        notes.append(f"{_rate_key(given)} = 0 is taken: the given motion is steady (give "
+                     f"{_rate_key(given)} or the crank's acceleration to set it)")
+    rate = given.rate if given.rate is not None else (0.0 if inp.alpha is None else None)
     if alpha is None:
-        alpha = inp.alpha if inp.alpha is not None else 0.0
-        if inp.alpha is None:
-            notes.append(f"the crank {inp.crank} is taken to turn uniformly (alpha = 0; give "
-                         f"{_rate_key(given)} or the crank's acceleration to set it)")
+        alpha = inp.alpha
     cond = min(cond, 1.0)
-    return Resolution(omega, alpha, y1, h, cond, tuple(notes))
+    return Resolution(omega, alpha, y1, h, cond, tuple(notes), rate)
 
 
 def _rate_key(given):
@@ -185,12 +189,13 @@ def working(plan, fmt) -> list:
            f"{fmt(res.per_omega)} {unit}; every velocity is proportional to omega_{c}, so "
            f"omega_{c} = {fmt(g.value)} / {fmt(res.per_omega)} = {fmt(abs(res.omega))} rad/s "
            f"{_sense(res.omega)}"]
-    if g.rate is not None:
+    if res.rate is not None:
+        rate_key = g.rate_key or _rate_key(g)
         out.append(f"the acceleration polygon for the crank turning uniformly at 1 rad/s "
-                   f"gives {g.rate_key} = {fmt(res.per_omega2)} {rate_unit}; every "
+                   f"gives {rate_key} = {fmt(res.per_omega2)} {rate_unit}; every "
                    f"acceleration is alpha_{c} x (the velocity polygon at 1 rad/s) + "
                    f"omega_{c}^2 x (that acceleration polygon), so alpha_{c} = "
-                   f"({fmt(g.rate)} - {fmt(res.omega)}^2 x {fmt(res.per_omega2)}) / "
+                   f"({fmt(res.rate)} - {fmt(res.omega)}^2 x {fmt(res.per_omega2)}) / "
                    f"{fmt(res.per_omega)} = {fmt(abs(res.alpha))} rad/s^2 "
                    f"{_sense(res.alpha)}")
     if res.condition < TOL.warn:
@@ -201,3 +206,44 @@ def working(plan, fmt) -> list:
 
 def _sense(x):
     return "ccw" if x > 0 else ("cw" if x < 0 else "")
+
+
+def held(plan, theta):
+    """(omega, alpha) arrays of the crank over the crank angles ``theta`` that hold the
+    given motion at its stated value and rate (a cylinder extending at its stated rate, a
+    piston at its stated speed) over a sweep: the same relation as :func:`resolve`, at each
+    angle, from one evaluation at 1 rad/s. Where the quantity does not move (a dead centre)
+    the crank's speed is unbounded: those angles are masked by the caller (inf)."""
+    import numpy as np
+    res, inp = plan.given, plan.scene.input
+    g = inp.given
+    ctx = Context(theta, 1.0, 0.0, array=True)
+    with np.errstate(all="ignore"):
+        m = plan.run(ctx)
+        if g.kind == "v":
+            (vx, vy), (ax, ay) = m.V[g.names[0]], m.A[g.names[0]]
+            sp = np.hypot(vx, vy)
+            v0x, v0y = _dir0(plan)
+            # the way it moves at the scene's instant, followed continuously
+            turn = np.where(vx * v0x + vy * v0y >= 0, 1.0, -1.0) * np.sign(res.per_omega)
+            y1 = turn * sp
+            h = turn * (ax * vx + ay * vy) / np.where(sp > 0, sp, 1.0)
+            value = g.value
+            rate = None if res.rate is None else (res.rate if g.value > 0 else -res.rate)
+        else:
+            y1, h = quantity(g, m)
+            value, rate = g.value, res.rate
+        size = 1.0 if g.kind == "omega" else plan.scene.link(inp.crank).length
+        # where the quantity hardly moves the crank's speed is unbounded (as resolve says)
+        y1 = np.where(np.abs(y1) >= TOL.singular * size, y1, np.nan)
+        omega = value / y1
+        alpha = (rate - omega * omega * h) / y1 if rate is not None else \
+            np.full_like(omega, inp.alpha)
+    return omega, alpha
+
+
+def _dir0(plan):
+    """The direction a point given a velocity moves in at the scene's instant (1 rad/s)."""
+    m = plan.run(Context(plan.scene.input.angle, 1.0, 0.0))
+    vx, vy = m.V[plan.scene.input.given.names[0]]
+    return vx, vy

@@ -101,7 +101,18 @@ class Motion:
         try:
             return self.scene.link(link).key
         except (SceneError, TypeError, AttributeError):
+            cyl = self.scene.cylinder(link) if isinstance(link, str) else None
+            if cyl is not None:  # a cylinder turns as a link does
+                return cyl.key
             raise self._unknown(link, "link") from None
+
+    def cylinder_length(self, name):
+        """The pin-to-pin length of cylinder ``name`` (m)."""
+        cyl = self.scene.cylinder(name)
+        if cyl is None:
+            raise SceneError(f"no cylinder {name!r} in [cylinders]")
+        (rx, ry), (kx, ky) = self.P[cyl.rod], self.P[cyl.barrel]
+        return hypot(rx - kx, ry - ky)
 
     def omega(self, link):
         return self._lookup(self.W, self._key(link), "link")

@@ -143,7 +143,8 @@ class Plan:
     def __str__(self):
         lines = [f"plan: {len(self.steps)} steps"]
         for st in self.steps:
-            lines.append(f"  {st.index + 1}. {st.title}: finds {', '.join(st.finds)}")
+            lines.append(f"  {st.index + 1}. {st.title}: finds "
+                         f"{', '.join(st.finds) or 'its length and rates (no new point)'}")
         return "\n".join(lines)
 
     # ----- only what is asked
@@ -346,6 +347,11 @@ def _bodies_at(sc, point) -> tuple:
     cp = sc.carried(point)
     if cp is not None:
         out.append((cp.link, cp.link))
+    for cyl in sc.cylinders:  # barrel and rod turn together (the cylinder's omega)
+        if point == cyl.barrel:
+            out.append((f"barrel {cyl.key}", cyl.key))
+        elif point == cyl.rod:
+            out.append((f"rod {cyl.key}", cyl.key))
     sl = sc.slider(point)
     if isinstance(sl, FixedPath):
         out.append((f"block {point}", None))

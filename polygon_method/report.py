@@ -70,6 +70,16 @@ def solution_text(sol: Solution) -> str:
             guide = getattr(s, "label", None) or getattr(s, "guide", "")
             lines.append(f"{s.point:<8} {guide:<16} {vs:<18.5g} {a_s:<20.5g} "
                          f"{_vec(*cor, scale=sol.scales['a']):<24}")
+    if sc.cylinders:
+        lines.append("")
+        lines.append(f"{'cylinder':<10} {'length (' + sc.units + ')':<14} {'extension (m/s)':<17} "
+                     f"{'its rate (m/s^2)':<18} {'omega':<20} {'alpha':<22}")
+        for cyl in sc.cylinders:
+            n = sol.cylinder_length(cyl.key)
+            vs, a_s = sol.shown(sol.S[cyl.key][0], "v"), sol.shown(sol.S[cyl.key][1], "a")
+            w, al = sol.shown(sol.W[cyl.key], "omega"), sol.shown(sol.Al[cyl.key], "alpha")
+            lines.append(f"{cyl.key:<10} {n / u:<14.6g} {vs:<17.5g} {a_s:<18.5g} "
+                         f"{fmt_angular(w, 'rad/s'):<20} {fmt_angular(al, 'rad/s^2'):<22}")
     if sc.pins:
         lines.append("")
         lines.append("pin   radius (" + sc.units + ")  rubbing velocity (m/s)")
@@ -93,7 +103,8 @@ def solution_text(sol: Solution) -> str:
         c = sol.conditions.get(st.index, 1.0)
         col = st.condition_column()
         own = f" = {col[2]}" if col is not None and col[1] != "deg" else ""
-        lines.append(f"  {st.index + 1}. {st.title}: finds {', '.join(st.finds)}"
+        lines.append(f"  {st.index + 1}. {st.title}: finds "
+                     f"{', '.join(st.finds) or 'its length and rates (no new point)'}"
                      f"   condition {c:.3g}{own}")
     bounds = shown_bounds(sol, sol.error_bounds)
     if bounds:

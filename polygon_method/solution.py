@@ -152,6 +152,14 @@ class Solution(Motion):
                                       "guide": (s.label if isinstance(s, FixedPath)
                                                 else s.guide)}
                             for s in sc.sliders}
+        if sc.cylinders:
+            d["cylinders"] = {c.key: {"length": self.cylinder_length(c.key),
+                                      "extension_rate": self.S[c.key][0],
+                                      "extension_acceleration": self.S[c.key][1],
+                                      "coriolis": [self.S[c.key][2], self.S[c.key][3]],
+                                      "omega": self.W[c.key], "alpha": self.Al[c.key],
+                                      "barrel": c.barrel, "rod": c.rod}
+                              for c in sc.cylinders}
         if sc.pins:
             d["pins"] = {}
             for name, r in self.rubbing.items():

@@ -15,6 +15,7 @@ from .numbers import quiet
 from .scene import FixedPath, Scene
 from .sweeps import (SweepResult, rubbing_arrays, select, torque_array, angles_ok,
                     evaluate_all, sweep_angles)
+from .compiler import compile_plan
 from .tracking import (CHUNK, TWO_PI, Sweeper, branch_steps, degrees_fn, fmt_deg, tune_malloc,
                        valid_mask)
 
@@ -74,11 +75,26 @@ class Summary:
     def text(self) -> str:
         sc = self.scene
         inp = sc.input
+        if inp.given is not None:
+            g = inp.given
+            held = (f"{g.key} held at {g.text}" + (f", {g.rate_key} at {g.rate_text}"
+                                                    if g.rate is not None else
+                                                    " (steady)"
+                                                    if compile_plan(sc).given.rate is not None
+                                                    else ", the crank's alpha constant")
+                    + f" at every angle (the crank's speed follows); ")
+        else:
+            held = (f"crank {inp.crank} at {abs(inp.omega):.6g} rad/s "
+                    f"{'ccw' if inp.omega > 0 else 'cw'}"
+                    + (f", {inp.alpha:+.6g} rad/s^2" if inp.alpha else "")
+                    + " at every angle; ")
+        if inp.given is not None and self.evaluated < self.requested:
+            held = (f"{held.rstrip('; ')}; where {inp.given.key} hardly moves whatever the "
+                    "crank's speed (its condition below 1e-3, a dead centre for this input) "
+                    "the crank's speed is unbounded: those angles are left out and the "
+                    "extremes beside them grow without bound; ")
         out = [f"sweep of {sc.title or sc.file or 'the mechanism'}",
-               f"crank {inp.crank} at {abs(inp.omega):.6g} rad/s "
-               f"{'ccw' if inp.omega > 0 else 'cw'}"
-               + (f", {inp.alpha:+.6g} rad/s^2" if inp.alpha else "")
-               + f" at every angle; {self.evaluated} of {self.requested} crank angles "
+               held + f"{self.evaluated} of {self.requested} crank angles "
                "evaluated"]
         deg = self.deg
         if self.limits and self.range_deg is not None:

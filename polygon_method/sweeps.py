@@ -241,7 +241,9 @@ def sweep(scene: Scene, angles=None, *, chunk: int = CHUNK) -> SweepResult:
         th = th[~bad]
     n = len(th)
     rub = rubbing_arrays(plan, fr.W, n)
-    torque = torque_array(scene, fr.V, fr.W, sw.omega, n)
+    crank = scene.link(scene.input.crank).key
+    omega = fr.W[crank] if scene.input.given is not None else sw.omega
+    torque = torque_array(scene, fr.V, fr.W, omega, n)
     return SweepResult(scene, plan, th, fr.P, fr.V, fr.A, fr.W, fr.Al, fr.S, fr.cond, rub,
                        torque, len(th_req), len(th_req) - n, sw.domain, tuple(notes))
 

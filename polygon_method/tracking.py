@@ -31,6 +31,7 @@ import numpy as np
 from .errors import TOL, SceneError, SingularStepError
 from .kinematics import Motion
 from .compiler import compile_plan
+from .given import held
 from .plan import Context
 from .scene import Scene
 
@@ -173,6 +174,14 @@ def run_arrays(plan, theta, omega, alpha, vel=True, acc=True) -> Motion:
     """Evaluate ``plan`` over one array of crank angles (one pass, no chunking)."""
     n = len(theta)
     tune_malloc()
+    unbounded = None
+    if getattr(plan, "given", None) is not None and vel:  # the given motion held
+        omega, alpha = held(plan, theta)
+        unbounded = ~(np.isfinite(omega) & np.isfinite(alpha))  # at a dead centre of it
+        if unbounded.any():
+            omega, alpha = np.where(unbounded, 1.0, omega), np.where(unbounded, 0.0, alpha)
+        else:
+            unbounded = None
     ctx = Context(theta, omega, alpha, array=True)
     upto = 2 if (vel and acc) else (1 if vel else 0)
     with np.errstate(all="ignore"):
@@ -189,6 +198,8 @@ def run_arrays(plan, theta, omega, alpha, vel=True, acc=True) -> Motion:
          else {})
     cond = {i: _full(c, n, const) for i, c in ctx.cond.items()}
     bad = ctx.bad if ctx.bad is not None else np.zeros(n, dtype=bool)
+    if unbounded is not None:
+        bad = bad | unbounded
     return _motion(theta, P, V, A, W, Al, S, cond, bad)
 
 
@@ -290,7 +301,8 @@ class Sweeper:
             n = max(65, int(SCOUT * left / TWO_PI) + 2)
             grid = start + direction * np.linspace(0.0, left, n)
             fr = self._scout(plan, grid)
-            fail = fr.bad | ~np.isfinite(fr.P[self.plan.steps[-1].finds[0]][0])
+            last = next(st for st in reversed(self.plan.steps) if st.finds)
+            fail = fr.bad | ~np.isfinite(fr.P[last.finds[0]][0])
             k = int(np.argmax(fail)) if fail.any() else n
             if k == 0:  # the very first angle fails: we stand on a limit
                 segs.append((start, start, plan))

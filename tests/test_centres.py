@@ -34,6 +34,11 @@ def _field(sol, name):
         sl = sol.scene.slider(p)
         w = 0.0 if isinstance(sl, FixedPath) else sol.W[sol.scene.link(sl.guide).key]
         return sol.P[p], sol.V[p], w
+    if name.startswith(("barrel ", "rod ")):  # a cylinder's barrel (at its pivot), its rod
+        part, key = name.split(" ", 1)
+        cyl = sol.scene.cylinder(key)
+        p = cyl.barrel if part == "barrel" else cyl.rod
+        return sol.P[p], sol.V[p], sol.W[cyl.key]
     lk = sol.scene.link(name)
     return sol.P[lk.p], sol.V[lk.p], sol.W[lk.key]
 

@@ -82,15 +82,19 @@ def _ref_quantity(scene, ref, kind, names, direction=None):
     return v[0] * direction[0] + v[1] * direction[1], a[0] * direction[0] + a[1] * direction[1]
 
 
-def reference_given(scene, sol, kind, names, value, rate, direction=None):
-    """The 50-digit solution for the crank's speed that gives ``value`` (and ``rate``)."""
+def reference_given(scene, sol, kind, names, value, rate, direction=None, crank_alpha=None):
+    """The 50-digit solution for the crank's speed that gives ``value`` and ``rate`` (0:
+    the given motion steady), or with the crank's own ``crank_alpha``."""
     guess = dict(sol.P)
     unit = dataclasses.replace(scene, input=dataclasses.replace(scene.input, omega=1.0,
                                                                alpha=0.0, given=None))
     r1 = reference_solution(unit, guess)
     y1, h = _ref_quantity(scene, r1, kind, names, direction)
     w = mpf(value) / y1
-    al = (mpf(rate) - w * w * h) / y1 if rate is not None else mpf(0)
+    if crank_alpha is not None:
+        al = mpf(crank_alpha)
+    else:
+        al = (mpf(rate or 0) - w * w * h) / y1
     full = dataclasses.replace(unit, input=dataclasses.replace(unit.input, omega=float(w),
                                                                alpha=float(al)))
     # the float omega and alpha above only carry the reference's to the solver's scene: the
@@ -129,9 +133,14 @@ def test_piston_given(e, angle, given):
     scene = parse_scene(SLIDER.format(e=e, angle=angle, given=given))
     sol = solve(scene)
     g = scene.input.given
-    w, al, ref, _ = reference_given(scene, sol, "vs", ("B",), g.value, g.rate)
+    w, al, ref, _ = reference_given(scene, sol, "vs", ("B",), g.value, g.rate,
+                                    crank_alpha=scene.input.alpha if "acceleration" in given
+                                    else None)
     _compare(scene, sol, ref, w, al)
     assert abs(sol.sliding_velocity("B") - g.value) <= REL * abs(g.value)
+    if "acceleration" not in given:  # the given motion's rate, or 0: steady
+        assert abs(sol.sliding_acceleration("B") - (g.rate or 0.0)) <= REL * (
+            max(math.hypot(*a) for a in sol.A.values()))
 
 
 @pytest.mark.parametrize("angle", (60, 100, 290))

@@ -15,6 +15,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from polygon_method.scene import load_scene
+
 import polygon_method as pm
 from polygon_method.cli import main
 from polygon_method.page import frames, page_html
@@ -207,9 +209,14 @@ def test_page_and_animation_of_every_worked_problem(tmp_path, path):
     out = tmp_path / "page.html"
     assert main(["page", path, "-o", str(out), "--frames", "24"]) == 0
     d = _json_of(out.read_text(encoding="utf-8"))
-    assert len(d["theta"]) == 24 and 0 <= d["start"] < 24
+    given = load_scene(path).input.given is not None
+    n = len(d["theta"])
+    # a motion given on a piston leaves out the frames at its dead centres (the crank's
+    # speed unbounded there): 0 and 180 deg of a full turn in 15 deg steps
+    assert n == 24 or (given and n == 22), n
+    assert 0 <= d["start"] < n
     for values in list(d["P"].values()) + list(d["V"].values()) + list(d["A"].values()):
-        assert len(values) == 48 and all(math.isfinite(v) for v in values)
+        assert len(values) == 2 * n and all(math.isfinite(v) for v in values)
     assert main(["draw", path, "--animate", "-o", str(tmp_path / "c.svg"), "--frames",
                  "8"]) == 0
     assert main(["draw", path, "--animate", "-o", str(tmp_path / "c.gif"), "--frames",

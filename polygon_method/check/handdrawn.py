@@ -148,11 +148,16 @@ class HandDrawing:
             vals = m.speed(*names) if kind == "v" else m.acceleration_magnitude(*names)
             return vals, poly
         if kind in ("omega", "alpha"):
-            lk = sol.scene.link("-".join(names))
             s = sv if kind == "omega" else sa
             r = rv if kind == "omega" else ra
-            poly = math.sqrt(s.get(lk.p, 0.0) ** 2 + s.get(lk.q, 0.0) ** 2 + r ** 2) / lk.length
-            vals = np.abs(m.omega(lk.key) if kind == "omega" else m.alpha(lk.key))
+            cyl = sol.scene.cylinder("-".join(names))
+            if cyl is not None:  # a cylinder: over its length now, as drawn
+                key, p, q, length = cyl.key, cyl.barrel, cyl.rod, sol.cylinder_length(cyl.key)
+            else:
+                lk = sol.scene.link("-".join(names))
+                key, p, q, length = lk.key, lk.p, lk.q, lk.length
+            poly = math.sqrt(s.get(p, 0.0) ** 2 + s.get(q, 0.0) ** 2 + r ** 2) / length
+            vals = np.abs(m.omega(key) if kind == "omega" else m.alpha(key))
             return vals, poly
         if kind in ("vs", "as"):  # read off between the images the sliding joins
             X = names[0]

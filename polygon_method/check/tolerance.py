@@ -83,16 +83,21 @@ class _Tolerances:
         sv, sa = self.sv.per_cm, self.sa.per_cm
         vt, at = f"velocity diagram at {self.sv.text}", f"acceleration diagram at {self.sa.text}"
         if kind in ("v", "a"):
-            if len(names) == 1 and names[0] == self.crank.tip:
+            if len(names) == 1 and names[0] == self.crank.tip and \
+                    sol.scene.input.given is None:
                 return 0.0, "computed (crank)"
             f = max(self.f(n) for n in names)
             return (d * sv * f, vt) if kind == "v" else (d * sa * f, at)
         if kind in ("omega", "alpha"):
+            s = sv if kind == "omega" else sa
+            cyl = sol.scene.cylinder("-".join(names))
+            if cyl is not None:  # read off the polygon over the cylinder's length now
+                return d * s / sol.cylinder_length(cyl.key), (vt if kind == "omega" else at)
             lk = sol.scene.link("-".join(names))
-            if lk.key == self.crank.link:
+            given = sol.scene.input.given is not None  # the crank's speed read off too
+            if lk.key == self.crank.link and not given:
                 return 0.0, "computed (crank)"
             f = self.link_factor(lk.key)
-            s = sv if kind == "omega" else sa
             return d * s * f / lk.length, (vt if kind == "omega" else at)
         if kind in ("vs", "as"):
             f = self.f(names[0])

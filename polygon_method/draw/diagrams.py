@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 import re
 
+from ..given import stated
 from ..constructions import (acceleration_constructions, drawn_vectors, image_label,
                              velocity_constructions)
 from ..numbers import fmt_angular
@@ -33,7 +34,9 @@ def _configuration(sol, scale: Scale) -> _Sketch:
 
 def _drive(sol) -> str:
     inp = sol.scene.input
-    drive = f"crank {inp.crank} at {_deg(inp.angle)}, {inp.speed_text}"
+    drive = (f"crank {inp.crank} at {_deg(inp.angle)}, "
+             + (inp.speed_text if inp.given is None
+                else f"{fmt_angular(inp.omega, 'rad/s')} (from {stated(inp)})"))
     if inp.alpha:
         drive += f", {fmt_angular(inp.alpha, 'rad/s²')}"
     return drive
@@ -81,6 +84,24 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
             for b in pts:
                 if a < b:
                     sk.hints.append((a, b))
+    # cylinders: a wide barrel from its pivot, a narrow rod from its end, overlapping
+    for cyl in sc.cylinders:
+        K, R = P[cyl.barrel], P[cyl.rod]
+        n = math.dist(K, R)
+        u = ((R[0] - K[0]) / n, (R[1] - K[1]) / n)
+        barrel = 0.6 * n
+        mid = (K[0] + u[0] * barrel / 2, K[1] + u[1] * barrel / 2)
+        shape = _rect(mid, u, barrel, 2.2 * BAR)
+        sk.polygon(shape, gid=f"cylinder-{cyl.key}-barrel", face="#ffffff", edge="#000000",
+                   lw=0.9, z=3)
+        solid.append((f"barrel {cyl.key}", Polygon(shape)))
+        rod = 0.55 * n
+        mid = (R[0] - u[0] * rod / 2, R[1] - u[1] * rod / 2)
+        shape = _rect(mid, u, rod, 0.8 * BAR)
+        sk.polygon(shape, gid=f"cylinder-{cyl.key}-rod", face=BODY_FACE, edge=BODY_EDGE,
+                   lw=0.8, z=2)
+        solid.append((f"rod {cyl.key}", Polygon(shape)))
+        sk.hints.append((K, R))
     # blocks
     for sl in sc.sliders:
         X = P[sl.point]
@@ -117,6 +138,8 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
         away = [P[lk.other(g)] for lk in sc.links if g in lk.points
                 and lk.other(g) not in sc.ground]
         away += [P[c] for lk in sc.links if g in lk.points for c in carried_on.get(lk.key, ())]
+        away += [P[c.rod] for c in sc.cylinders if c.barrel == g]
+        away += [P[c.barrel] for c in sc.cylinders if c.rod == g]
         sl = sc.slider(g)
         if sl is not None and not isinstance(sl, FixedPath):  # a block at a fixed swivel
             away += [P[p] for p in (sl.first, sl.second) if p not in sc.ground]
@@ -129,7 +152,7 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
     _crank_angle(sk, arc)
     # joints and points
     joints = set(sc.ground) | {p for lk in sc.links for p in lk.points} | \
-        {sl.point for sl in sc.sliders}
+        {sl.point for sl in sc.sliders} | {p for c in sc.cylinders for p in (c.barrel, c.rod)}
     for name in sc.point_names:
         if name in joints:
             sk.circle(P[name], JOINT_R, gid=f"joint-{name}", z=6)

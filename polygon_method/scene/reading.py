@@ -431,6 +431,7 @@ class _Loader(_Tables, _Variants):
         known = set(ground) | {p for lk in links for p in lk.points} | {p.name for p in points}
         self.known = known
         self.slider_points = {s.point: s for s in sliders}
+        self.cylinder_list = cylinders = self.cylinders(known)
         inp = self.input(index, ground)
         sliders = [replace(s, through=ground[inp.pivot])
                    if isinstance(s, FixedPath) and s.through[1] is None else s
@@ -439,7 +440,7 @@ class _Loader(_Tables, _Variants):
         pins = self.pins(known)
         loads = self.loads(known)
         tolerance, answers = self.answers(known, sliders, pins, loads)
-        self.connected(links, points, sliders, ground, inp)
+        self.connected(links, points, sliders, ground, inp, cylinders)
         if len(known) > MAX_POINTS:
             raise SceneError(f"the scene has {len(known)} points: at most {MAX_POINTS} (a "
                              "mechanism of a textbook has a few dozen)", file=self.file)
@@ -448,7 +449,7 @@ class _Loader(_Tables, _Variants):
         return Scene(title=title, units=units, ground=ground, links=tuple(links),
                      points=tuple(points), sliders=tuple(sliders), assembly=assembly,
                      input=inp, pins=tuple(pins), loads=tuple(loads), answers=tuple(answers),
-                     tolerance=tolerance, file=self.file,
+                     tolerance=tolerance, file=self.file, cylinders=tuple(cylinders),
                      source=source if isinstance(source, str) else None, variation=variation,
                      variant=variant, _link_index=index,
                      _lines=tuple(self.lines))
@@ -467,9 +468,12 @@ class _Loader(_Tables, _Variants):
                              table, key)
         return link, pts
 
-    def connected(self, links, points, sliders, ground, inp):
+    def connected(self, links, points, sliders, ground, inp, cylinders=()):
         """Every point must take part: a dangling point is almost always a typo."""
         uses = {}
+        for cyl in cylinders:
+            for p in (cyl.barrel, cyl.rod):
+                uses[p] = uses.get(p, 0) + 1
         for lk in links:
             for p in lk.points:
                 uses[p] = uses.get(p, 0) + 1
@@ -483,7 +487,7 @@ class _Loader(_Tables, _Variants):
                   and name not in {s.point for s in sliders}]
         for lk in links:
             for p in lk.points:
-                if uses[p] == 1 and p not in roles:
+                if uses[p] == 1 and p not in roles:  # (a cylinder's end is used twice)
                     other = lk.other(p)
                     guess = [f"{other}{g}" if len(other) == len(g) == 1 else f"{other}-{g}"
                              for g in lonely]
@@ -532,6 +536,7 @@ def parse_answers(text: str, scene: Scene, file: str | None = None, *,
     loader.check_integers()
     loader.unit = scene.units
     loader.index = scene._link_index
+    loader.cylinder_list = scene.cylinders
     tolerance, answers = loader.answers(set(scene.point_names), scene.sliders, scene.pins,
                                         scene.loads)
     if not with_variant:

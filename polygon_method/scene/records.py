@@ -24,7 +24,7 @@ _ABSURD_LONG = 1e4
 _ABSURD_SHORT = 1e-7
 
 TOP_KEYS = ("title", "source", "notes", "units", "ground", "links", "points", "sliders",
-            "assembly", "input", "pins", "loads", "answers", "variants", "variant")
+            "cylinders", "assembly", "input", "pins", "loads", "answers", "variants", "variant")
 INPUT_KEYS = ("crank", "angle", "speed", "acceleration")
 #: the kinds of quantity on which [input] may give the motion instead of the crank's speed
 #: (named as answer keys: ``omega_BC``, ``vs_B``, ``v_B``), with their rate's prefix
@@ -100,6 +100,18 @@ class GuideSlider:
     guide: str
     first: str
     second: str
+
+
+@dataclass(frozen=True)
+class Cylinder:
+    """A hydraulic or pneumatic cylinder: its barrel pivoted at ``barrel``, its rod pinned
+    at ``rod``; ``key`` as the scene names it (barrel first: ``"O-R"``); ``stroke`` its
+    shortest and longest pin-to-pin length (m), or None."""
+
+    key: str
+    barrel: str
+    rod: str
+    stroke: tuple | None = None
 
 
 @dataclass(frozen=True)
@@ -190,6 +202,8 @@ class Scene:
     answers: tuple = ()
     tolerance: float | None = None
     file: str | None = None
+    #: hydraulic or pneumatic cylinders (:class:`Cylinder`)
+    cylinders: tuple = ()
     #: where the problem comes from (the scene's ``source``), for headings
     source: str | None = field(default=None, compare=False)
     #: the scene's [variants] (what may vary per student), and [variant] (which one it is)
@@ -212,7 +226,7 @@ class Scene:
         try:
             key = (self.units, tuple(self.ground.items()), self.links, self.points,
                    self.sliders, tuple(self.assembly.items()), self.input, self.pins,
-                   self.file)
+                   self.file, self.cylinders)
             hash(key)
         except (TypeError, AttributeError):  # something unhashable: not cached by content
             key = None
@@ -268,6 +282,12 @@ class Scene:
 
     def carried(self, name: str) -> CarriedPoint | None:
         return next((c for c in self.points if c.name == name), None)
+
+    def cylinder(self, name: str):
+        """The cylinder of [cylinders] named ``name`` (either order of its points), or None."""
+        pts = split_name(name)
+        return next((c for c in self.cylinders if len(pts) == 2
+                     and {c.barrel, c.rod} == set(pts)), None)
 
     def slider(self, name: str):
         return next((s for s in self.sliders if s.point == name), None)

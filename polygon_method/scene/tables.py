@@ -9,7 +9,8 @@ import re
 
 from ..errors import SceneError, printable
 from ..units import UNITS, did_you_mean
-from .records import (ANSWER_KINDS, GIVEN_KINDS, INPUT_KEYS, Answer, CarriedPoint, FixedPath,
+from .records import (ANSWER_KINDS, GIVEN_KINDS, INPUT_KEYS, Answer, CarriedPoint, Cylinder,
+                      FixedPath,
                       GivenRate, GuideSlider, Input, Load, Pin, split_name)
 
 
@@ -31,6 +32,20 @@ _DIRECTED = re.compile(r"^(.*?\S)\s+(?:(up(?:wards?)?|down(?:wards?)?|(?:to the 
 _WORDS = {"up": (0.0, 1.0), "down": (0.0, -1.0), "left": (-1.0, 0.0), "right": (1.0, 0.0)}
 
 
+def _extending(raw):
+    """A cylinder's rate with a word: ``"0.2 m/s extending"`` -> 0.2 m/s, ``retracting`` ->
+    its negative (a signed number: + extending)."""
+    if isinstance(raw, str):
+        m = re.match(r"^\s*(.*?\S)\s+(extending|retracting|outwards?|inwards?)\s*$", raw,
+                     re.IGNORECASE)
+        if m:
+            text = m.group(1).strip()
+            if m.group(2).lower() in ("retracting", "inward", "inwards"):
+                text = text[1:] if text.startswith("-") else "-" + text.lstrip("+")
+            return text
+    return raw
+
+
 def _given_key(key):
     """(prefix, names) of an [input] key naming a given motion or its rate (``vs_B`` ->
     ("vs", ("B",))), or None."""
@@ -38,8 +53,9 @@ def _given_key(key):
     if prefix not in ("omega", "vs", "v", "alpha", "as", "a") or not rest:
         return None
     names = split_name(rest)
-    if not names or len(names) > 2 or (prefix in ("omega", "alpha")) != (len(names) == 2):
-        return None
+    if not names or len(names) > 2 or (prefix in ("omega", "alpha") and len(names) != 2) \
+            or (prefix in ("v", "a") and len(names) != 1):
+        return None  # vs_OR, as_OR: a cylinder's rate of extension
     return prefix, names
 
 
@@ -218,6 +234,42 @@ class _Tables:
             out.append(FixedPath(name, u, through, label))
         return out
 
+    def cylinders(self, known):
+        """``[cylinders] "O-R" = {}``: a cylinder, barrel pivoted at O, rod pinned at R;
+        optionally ``{ stroke = [closed, extended] }`` (pin-to-pin lengths)."""
+        out = []
+        for key, spec in self.table("cylinders").items():
+            pts = split_name(key)
+            if len(pts) != 2 or pts[0] == pts[1]:
+                raise self.error(f"{key!r} is not a cylinder's name: its barrel's pivot, then "
+                                 "its rod's end, e.g. \"O-R\" or OR", "cylinders", key)
+            for p in pts:
+                if p not in known:
+                    raise self.error(f"no point {p} in the scene{_which_point(p, known)}: a "
+                                     "cylinder joins two points of the mechanism (a ground "
+                                     "point or a link's joint)", "cylinders", key)
+            if frozenset(pts) in self.index:
+                raise self.error(f"{key} is also a rigid link in [links]: a cylinder changes "
+                                 "its length; remove one of them", "cylinders", key)
+            if not isinstance(spec, dict) or set(spec) - {"stroke"}:
+                raise self.error("a cylinder is {} or { stroke = [closed, extended] }",
+                                 "cylinders", key)
+            stroke = spec.get("stroke")
+            if stroke is not None:
+                if not (isinstance(stroke, list) and len(stroke) == 2):
+                    raise self.error("stroke = [closed, extended]: its shortest and longest "
+                                     "pin-to-pin lengths", "cylinders", key)
+                lo, hi = (self.length(v, "cylinders", key) for v in stroke)
+                if not lo < hi:
+                    raise self.error(f"stroke {stroke}: the closed length must be shorter "
+                                     "than the extended one", "cylinders", key)
+                stroke = (lo, hi)
+            if any({c.barrel, c.rod} == set(pts) for c in out):
+                raise self.error("the same two points have a cylinder already", "cylinders",
+                                 key)
+            out.append(Cylinder(key, pts[0], pts[1], stroke))
+        return out
+
     def input(self, index, ground):
         if "input" not in self.raw:
             raise SceneError("missing [input] table: which link is the crank, its angle and "
@@ -292,6 +344,8 @@ class _Tables:
                                  "input", r)
         rate_key = rate_keys[0] if rate_keys else None
         raw, raw_rate = spec[key], spec.get(rate_key) if rate_key else None
+        text = printable(str(raw))
+        rate_text = None if raw_rate is None else printable(str(raw_rate))
         direction = None
         if kind == "omega":
             if len(names) != 2 or frozenset(names) not in index:
@@ -303,7 +357,15 @@ class _Tables:
             names = index[frozenset(names)].points
         else:
             point = names[0] if len(names) == 1 else None
-            if kind == "vs":
+            if kind == "vs" and point is None:  # a cylinder's rate of extension
+                cyl = self.find_cylinder(names)
+                if cyl is None:
+                    raise self.error(f"no cylinder {'-'.join(names)} in [cylinders]", "input",
+                                     key)
+                names, u = (cyl.key,), (1.0, 0.0)  # signed: + extending
+                raw = _extending(raw)
+                raw_rate = None if raw_rate is None else _extending(raw_rate)
+            elif kind == "vs":
                 sl = self.slider_points.get(point)
                 if sl is None:
                     raise self.error(f"no slider {''.join(names)} in [sliders]", "input", key)
@@ -320,9 +382,11 @@ class _Tables:
         if value == 0:
             raise self.error(f"{key} is zero: it does not set the crank's speed (give the "
                              "crank's speed instead)", "input", key)
-        return GivenRate(key, kind, tuple(names), value, rate, direction,
-                         printable(str(raw)), rate_key,
-                         None if raw_rate is None else printable(str(raw_rate)))
+        return GivenRate(key, kind, tuple(names), value, rate, direction, text, rate_key,
+                         rate_text)
+
+    def find_cylinder(self, names):
+        return next((c for c in self.cylinder_list if {c.barrel, c.rod} == set(names)), None)
 
     def directed(self, raw, kind, key, u, need):
         """A speed (or its rate) with an optional direction word: ``"3 m/s down"``,
@@ -501,6 +565,11 @@ class _Tables:
                 if n not in known:
                     raise self.error(f"no point {n} in the scene{_which_point(n, known)}",
                                      "answers", key)
+        elif what == "link" and len(names) == 2 and self.find_cylinder(names):
+            names = tuple(split_name(self.find_cylinder(names).key))
+        elif what == "slider" and len(names) == 2 and self.find_cylinder(names) and \
+                prefix in ("vs", "as"):
+            names = (self.find_cylinder(names).key,)
         elif what == "link":
             if len(names) != 2 or frozenset(names) not in self.index:
                 raise self.error(f"no link {rest} in [links]"

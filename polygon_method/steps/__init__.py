@@ -12,17 +12,19 @@ carried    a point on a known link or plate (the image point, similar triangles)
 slider     RRP: a link and a slider on a fixed path or on a moving link
 dyad       RRR: the joint of two links (or plate sides) to two known points
 slotted    RPR: a link that a block slides along (slotted lever, Whitworth, swivel)
+cylinder   a hydraulic cylinder between two known points: length, extension rate, omega
 =========  ===========================================================================
 
 Adding a kind: write its module (a frozen ``Step`` subclass and a ``recognise(g, name)``
 function) and add it to :data:`TIERS`.
 """
 
-from . import carried, dyad, slider, slotted
+from . import carried, cylinder, dyad, slider, slotted
 from .base import (Construction, Context, DirectionLine, State, Step, Vector, image_label,
                    image_name, pole_text)
 from .carried import Carried
 from .crank import Crank
+from .cylinder import CylinderStep
 from .dyad import Dyad
 from .slider import SliderDyad
 from .slotted import SlottedLink, under_label
@@ -34,5 +36,5 @@ TIERS = ((carried.recognise, slider.recognise, dyad.recognise),
          (slotted.recognise,))
 
 __all__ = ["TIERS", "Step", "Context", "State", "Crank", "Dyad", "SliderDyad", "SlottedLink",
-           "Carried", "Construction", "Vector", "DirectionLine", "image_label", "image_name",
+           "Carried", "CylinderStep", "Construction", "Vector", "DirectionLine", "image_label", "image_name",
            "pole_text", "under_label"]
