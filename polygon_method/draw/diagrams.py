@@ -33,7 +33,8 @@ def _configuration(sol, scale: Scale) -> _Sketch:
 
 def _drive(sol) -> str:
     inp = sol.scene.input
-    drive = f"crank {inp.crank} at {_deg(inp.angle)}, {inp.speed_text}"
+    said = f" ({inp.angle_words})" if inp.angle_words else ""
+    drive = f"crank {inp.crank} at {_deg(inp.angle)}{said}, {inp.speed_text}"
     if inp.alpha:
         drive += f", {fmt_angular(inp.alpha, 'rad/s²')}"
     return drive

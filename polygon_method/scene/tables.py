@@ -9,6 +9,7 @@ import re
 
 from ..errors import SceneError, printable
 from ..units import UNITS, did_you_mean
+from .angles import dead_centres, is_book_form, read_angle, side_along
 from .records import (ANSWER_KINDS, INPUT_KEYS, Answer, CarriedPoint, FixedPath, GuideSlider,
                       Input, Load, Pin, split_name)
 
@@ -175,16 +176,21 @@ class _Tables:
             if isinstance(path, str) and not re.match(r"^\s*[-+.\d]", path) \
                     and path not in ("horizontal", "vertical"):
                 raise self.error(f"path = {path!r}: use \"horizontal\", \"vertical\" or an "
-                                 "angle such as \"30 deg\"" + _suggest(path, ("horizontal",
-                                                                            "vertical")),
+                                 "angle such as \"30 deg\" or \"30 deg below the horizontal\""
+                                 + _suggest(path, ("horizontal", "vertical")),
                                  "sliders", name)
             if path == "horizontal":
                 ang, label = 0.0, "horizontal"
             elif path == "vertical":
                 ang, label = math.pi / 2, "vertical"
             else:
-                ang = self.qty(path, "angle", "sliders", name, default_unit="deg").value
-                label = f"at {math.degrees(ang):g} deg"
+                book = self.book_angle(path, "path", "sliders", name, f"slider {name}'s path")
+                if book is None:
+                    ang = self.qty(path, "angle", "sliders", name, default_unit="deg").value
+                    label = f"at {math.degrees(ang):g} deg"
+                else:
+                    ang = book.value
+                    label = f"at {math.degrees(ang):.9g} deg ({book.words})"
             through = spec.get("through")
             if through is None:
                 through = ("input pivot", None)
@@ -197,7 +203,63 @@ class _Tables:
                 through = self.coords(through, "sliders", name)
             u = _unit_at(ang)
             out.append(FixedPath(name, u, through, label))
+            self.strokes[name] = ang
+            self.fixed.append(out[-1])
         return out
+
+    def book_angle(self, raw, where, table, key, what, **kw):
+        """An angle in a book's words (:mod:`.angles`), its reading noted (the crank's is
+        noted with the crank: a copy of the scene at another angle has no such note); None
+        for a plain angle."""
+        try:
+            book = read_angle(raw, where, strokes=self.strokes, **kw)
+        except SceneError as exc:
+            raise self.error(exc.message, table, key) from None
+        if book is not None and where != "angle":
+            self.read_notes.append(f"{what}: {book.note}")
+        return book
+
+    def dead_centres(self, link, pivot, tip, ground):
+        """The candidate dead centres of the slider crank that ``link`` drives, for
+        :func:`.angles.read_angle`: ``[(inner, outer, keeps)]``."""
+        rods = [(lk, s) for lk in self.index.values() if tip in lk.points and lk is not link
+                for s in self.fixed if s.point == lk.other(tip)]
+        if len(rods) != 1:
+            raise SceneError(
+                "a dead centre is where the crank and the rod of a slider crank are in line; "
+                + (f"crank {link.key} drives no rod whose other end slides on a fixed path "
+                   "in [sliders]: give the angle from +x, the horizontal or the vertical"
+                   if not rods else f"crank {link.key} drives {len(rods)} slider rods "
+                   f"({', '.join(lk.key for lk, _ in rods)}): give the angle from +x"))
+        (rod, slider), = rods
+        O, r, l = ground[pivot], link.length, rod.length
+        through = O if slider.through[1] is None else slider.through
+        u = slider.u
+        unit = (self.unit, self.scale())
+        hint = (self.raw.get("assembly") or {}).get(slider.point) \
+            if isinstance(self.raw.get("assembly"), dict) else None
+        if not (isinstance(hint, list) and len(hint) == 2):
+            side = side_along(hint, u)
+            return [(*dead_centres(O, r, l, through, u, side, unit), None)]
+        try:
+            hx, hy = (self.length(c, "assembly", slider.point, positive=False) for c in hint)
+        except SceneError:
+            return [(*dead_centres(O, r, l, through, u, 1, unit), None)]  # refused later, by name
+
+        def keeps(side):
+            def test(theta):
+                ax, ay = O[0] + r * math.cos(theta), O[1] + r * math.sin(theta)
+                t = (ax - through[0]) * u[0] + (ay - through[1]) * u[1]
+                fx, fy = through[0] + t * u[0], through[1] + t * u[1]
+                h2 = l * l - (ax - fx) ** 2 - (ay - fy) ** 2
+                if h2 <= 0:
+                    return False
+                h = math.sqrt(h2)
+                ahead = math.dist((fx + h * u[0], fy + h * u[1]), (hx, hy))
+                behind = math.dist((fx - h * u[0], fy - h * u[1]), (hx, hy))
+                return (ahead < behind) == (side > 0)
+            return test
+        return [(*dead_centres(O, r, l, through, u, side, unit), keeps(side)) for side in (1, -1)]
 
     def input(self, index, ground):
         if "input" not in self.raw:
@@ -222,8 +284,16 @@ class _Tables:
                              "input", "crank")
         pivot = on_ground[0]
         tip = link.other(pivot)
-        angle = self.qty(spec["angle"], "angle", "input", "angle", default_unit="deg").value
+        said = ()
+        if not is_book_form(spec["angle"]):
+            angle = self.qty(spec["angle"], "angle", "input", "angle", default_unit="deg").value
         speed = self.qty(spec["speed"], "angular_velocity", "input", "speed", need_sense=True)
+        if is_book_form(spec["angle"]):  # a dead centre is passed in the crank's sense
+            book = self.book_angle(spec["angle"], "angle", "input", "angle", "crank angle",
+                                   dead=lambda: self.dead_centres(link, pivot, tip, ground),
+                                   sense=speed.value)
+            angle = book.value
+            said = (book.words, angle, book.slips, f"crank angle: {book.note}")
         acc = spec.get("acceleration", 0)
         if isinstance(acc, (int, float)) and not isinstance(acc, bool) and acc == 0:
             alpha = 0.0
@@ -232,7 +302,8 @@ class _Tables:
                              need_sense=True).value
         if speed.value == 0:
             raise self.error("the crank speed is zero: nothing moves", "input", "speed")
-        return Input(link.key, pivot, tip, angle, speed.value, alpha, str(spec["speed"]))
+        return Input(link.key, pivot, tip, angle, speed.value, alpha, str(spec["speed"]),
+                     said=said)
 
     def assembly(self, known):
         out = {}
@@ -302,8 +373,10 @@ class _Tables:
                 if "direction" not in spec:
                     raise self.error("a force needs a direction (deg, ccw from +x)",
                                      "loads", name)
-                ang = self.qty(spec["direction"], "angle", "loads", name,
-                               default_unit="deg").value
+                book = self.book_angle(spec["direction"], "direction", "loads", name,
+                                       f"direction of the force at {name}")
+                ang = book.value if book is not None else self.qty(
+                    spec["direction"], "angle", "loads", name, default_unit="deg").value
                 ux, uy = _unit_at(ang)
                 fx, fy = mag * ux, mag * uy
             out.append(Load(name, force=(fx, fy)))
