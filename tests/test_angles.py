@@ -72,6 +72,7 @@ HAND = [
     ("30 deg below the horizontal", 330),
     ("30 deg above the horizontal, left", 150),
     ("30 deg below the horizontal to the left", 210),
+    ("30 deg below the horizontal on the left", 210),
     ("60 deg right of the vertical", 30),
     ("60 deg left of the vertical", 150),
     ("20 deg right of the downward vertical", 290),
@@ -347,3 +348,19 @@ B = {{ force = [{-2000 * 4.4482216152605!r}, 0] }}
         assert ft.W[k] == pytest.approx(si.W[k], rel=1e-9)
         assert ft.Al[k] == pytest.approx(si.Al[k], rel=1e-9)
     assert ft.input_torque == pytest.approx(si.input_torque, rel=1e-9)
+
+
+def test_check_names_the_misread_dead_centre():
+    """A student who measured "30 deg past the inner dead centre" from the outer one: the
+    piston speed at that angle (closed form of the offset slider crank, path y = -e:
+    x_B = r cos t + sqrt(l^2 - (r sin t + e)^2)) is diagnosed as that slip."""
+    from polygon_method.check import check_answers
+    r, l, e, w = 0.1, 0.4, 0.03, 10.0
+    t = math.pi - math.asin(e / (l - r)) + math.radians(30)  # the outer dead centre + 30
+    h = r * math.sin(t) + e
+    v = abs(w * (-r * math.sin(t) - h * r * math.cos(t) / math.sqrt(l * l - h * h)))
+    sc = engine("30 deg past the inner dead centre", through=", through = [0, -30]",
+                assembly=f'[assembly]\nB = "right"\n[answers]\nv_B = "{v:.6g} m/s"')
+    verdict, = check_answers(solve(sc))
+    assert not verdict.ok
+    assert "other dead centre" in str(verdict), verdict

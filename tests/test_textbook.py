@@ -7,7 +7,8 @@ path through a named point), an oscillating cylinder, crank and slotted lever (a
 from the lever), Whitworth and shaper quick returns, Watt and Stephenson six-bars, a stone
 crusher and a toggle press, a block sliding on a moving coupler, a coupling rod, points on
 links produced, plates, pins, loads, crank angular acceleration, rpm / rps / deg/s,
-mm / cm / m / in.
+mm / cm / m / in / ft (with inches, "4 ft 6 in"), angles in a book's words (past the inner dead
+centre, from the line of stroke).
 
 Against the 50-digit reference (tests/reference.py) at 1e-9 of the size of each kind, also
 with the crank turned to 0, 90, 180 and 270 deg; the branch each [assembly] hint asks for

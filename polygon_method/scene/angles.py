@@ -112,7 +112,7 @@ def _tidy(raw: str) -> str:
     text = re.sub(r"\banti-\s*clockwise|\bcounter-\s*clockwise", lambda m: m.group(0)
                   .replace("-", "").replace(" ", ""), text)
     text = re.sub(r"[,;()]", " ", text)
-    text = re.sub(r"\b(the|measured|to|is|at)\b", "", text)
+    text = re.sub(r"\b(the|measured|to|on|is|at)\b", "", text)
     text = text.replace("x-axis", "x axis")
     return re.sub(r"\s+", " ", text).strip()
 

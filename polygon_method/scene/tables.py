@@ -188,9 +188,9 @@ class _Tables:
                 if book is None:
                     ang = self.qty(path, "angle", "sliders", name, default_unit="deg").value
                     label = f"at {math.degrees(ang):g} deg"
-                else:
+                else:  # the words are in the notes; the tables keep their width
                     ang = book.value
-                    label = f"at {math.degrees(ang):.9g} deg ({book.words})"
+                    label = f"at {math.degrees(ang):g} deg"
             through = spec.get("through")
             if through is None:
                 through = ("input pivot", None)
