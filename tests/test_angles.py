@@ -63,7 +63,10 @@ def fourbar(angle):
 
 
 def deg(scene):
-    return math.degrees(scene.input.angle)
+    """The crank angle in degrees, in [0, 360) (the reader gives (-180, 180])."""
+    a = scene.input.angle
+    assert -math.pi < a <= math.pi
+    return math.degrees(a) % 360
 
 
 # the words, and the angle from +x worked out by hand
@@ -103,13 +106,15 @@ def test_words_that_name_a_plain_angle_give_exactly_the_plain_angle():
     """"60 deg right of the vertical" is the plain 30 deg to the last bit (so the two
     scenes' answers are identical, not merely close)."""
     assert fourbar("60 deg right of the vertical").input.angle == fourbar("30 deg").input.angle
-    assert fourbar("30 deg below the horizontal").input.angle == fourbar("330").input.angle
+    assert fourbar("30 deg below the horizontal").input.angle == fourbar("-30").input.angle
+    assert fourbar("30 deg above the horizontal, left").input.angle == \
+        fourbar("150").input.angle
 
 
 def test_plain_angles_are_read_as_before():
     assert fourbar("0.5 rad").input.angle == 0.5  # radians already worked
     assert fourbar("60 deg").input.angle == math.radians(60)
-    assert fourbar("-30").input.angle == math.radians(-30)  # not turned into [0, 360)
+    assert fourbar("330").input.angle == math.radians(330)  # not turned into (-180, 180]
     sc = fourbar("60 deg")
     assert sc.input.angle_words is None and sc.reading_notes == ()
     assert not any("from +x" in n for n in solve(sc).notes)
@@ -229,7 +234,7 @@ def test_offset_dead_centres_against_the_closed_form(r, l, e, side, sense):
 
 def test_a_dead_centre_note_says_where_it_is():
     sol = solve(engine("30 deg past the inner dead centre", "cw"))
-    assert sol.notes[0] == ("crank angle: '30 deg past the inner dead centre' = 330 deg from "
+    assert sol.notes[0] == ("crank angle: '30 deg past the inner dead centre' = -30 deg from "
                             "+x (the inner dead centre is at 0 deg, the crank turning cw)")
 
 
@@ -272,9 +277,9 @@ B = { force = "1 kN", direction = "180 deg from the line of stroke, ccw" }
     assert deg(sc) == pytest.approx(15)
     assert sc.loads[0].force == pytest.approx((-1000 * u[0], -1000 * u[1]))
     sol = solve(sc)
-    assert any(n.startswith("slider B's path: '30 deg below the horizontal' = 330 deg")
+    assert any(n.startswith("slider B's path: '30 deg below the horizontal' = -30 deg")
                for n in sol.notes), sol.notes
-    assert any("line of stroke is at 330 deg" in n for n in sol.notes), sol.notes
+    assert any("line of stroke is at -30 deg" in n for n in sol.notes), sol.notes
     # the line of stroke is not a path's reference, nor a dead centre
     with pytest.raises(SceneError, match="a slider's path is a line of stroke"):
         parse_scene(text.replace('"30 deg below the horizontal"', '"10 deg from the line of '

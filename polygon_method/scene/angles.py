@@ -3,13 +3,14 @@ vertical", "45 deg from the line of stroke, ccw", "30 deg past the inner dead ce
 
 Every form comes down to a reference direction ``ref`` and a size ``phi`` measured from it
 in a sense ``s`` (+1 counter-clockwise, -1 clockwise): ``theta = ref + s phi``, returned
-in [0, 360) deg, counter-clockwise from +x like a plain angle. The references:
+in (-180, 180] deg, counter-clockwise from +x like a plain angle (so that 30 deg below the
+horizontal is -30, drawn as a book draws it, 30 deg clockwise). The references:
 
 ==============================  ===============================================  =======
 form                            reference and sense                              example
 ==============================  ===============================================  =======
 ``above the horizontal``        +x, ccw (``, left``: -x, cw)                     30 -> 30
-``below the horizontal``        +x, cw (``, left``: -x, ccw)                     30 -> 330
+``below the horizontal``        +x, cw (``, left``: -x, ccw)                     30 -> -30
 ``right of the vertical``       +y (upward), cw (``downward vertical``: -y, ccw) 60 -> 30
 ``left of the vertical``        +y (upward), ccw (``downward vertical``: -y, cw) 60 -> 150
 ``from the vertical, cw``       +y (upward) or -y (``downward``), the sense given 60 -> 30
@@ -36,8 +37,8 @@ and the other way at the outer one: for a horizontal path below O (``e`` below) 
 piston on the right, ``theta_IDC = -asin(e / (l + r))`` and
 ``theta_ODC = 180 deg - asin(e / (l - r))``.
 
->>> math.degrees(read_angle("30 deg below the horizontal", "path").value)
-330.0
+>>> round(math.degrees(read_angle("30 deg below the horizontal", "path").value), 12)
+-30.0
 >>> read_angle("60 deg right of the vertical", "path").value == math.radians(30)
 True
 >>> read_angle("30 deg", "path") is None   # a plain angle: read as before
@@ -90,7 +91,7 @@ class Slip:
 
 @dataclass(frozen=True)
 class BookAngle:
-    """An angle read from a book's words: ``value`` (rad, ccw from +x, in [0, 2 pi)), the
+    """An angle read from a book's words: ``value`` (rad, ccw from +x, in (-pi, pi]), the
     scene's ``words`` as written (tidied), the ``note`` saying how they were read, and the
     ``slips`` a student reading them might make."""
 
@@ -148,13 +149,13 @@ def read_angle(raw, where: str, *, dead=None, sense: float | None = None,
         raise SceneError(f"'{shown}' is more than a full turn from its reference; {good}")
 
     def turned(ref, s):
-        """``ref + s phi`` in [0, 2 pi); a reference in degrees (a float from the tables
+        """``ref + s phi`` in (-pi, pi]; a reference in degrees (a float from the tables
         here) is turned in degrees where the size is, so that "60 deg right of the
         vertical" is exactly the plain 30 deg; a dead centre or a stroke is in rad."""
         if isinstance(ref, float) and in_deg:
-            return ((ref + s * size) % 360.0) * UNITS["angle"]["deg"]
+            return _half_turn(ref + s * size, 180.0) * UNITS["angle"]["deg"]
         base = math.radians(ref) if isinstance(ref, float) else ref.rad
-        return (base + s * phi) % (2 * math.pi)
+        return _half_turn(base + s * phi, math.pi)
 
     def done(ref, s, ref_words, slips=()):
         theta = turned(ref, s)
@@ -262,10 +263,21 @@ class _Rad:
     rad: float
 
 
+def _half_turn(a, half):
+    """``a`` turned by whole turns into (-half, half] (``half`` = 180 or pi).
+
+    >>> _half_turn(330.0, 180.0), _half_turn(-180.0, 180.0), _half_turn(0.0, 180.0)
+    (-30.0, 180.0, 0.0)
+    """
+    if -half < a <= half:
+        return a + 0.0  # as it is, to the last bit (and never -0.0)
+    d = (a + half) % (2 * half) - half
+    return half if d == -half else d
+
+
 def _deg(theta) -> str:
-    d = math.degrees(theta) % 360.0
-    r = round(d, 9)
-    return f"{0.0 if r == 360 else r:g}"
+    """An angle (rad) in degrees for the notes, in (-180, 180]."""
+    return f"{_half_turn(round(math.degrees(theta), 9), 180.0):g}"
 
 
 def _stroke(strokes: dict, name: str, shown: str):
@@ -329,4 +341,4 @@ def dead_centres(pivot, r, l, through, u, side, unit=("m", 1.0)) -> tuple:
         bx, by = fx + t * ux - ox, fy + t * uy - oy
         ang = math.atan2(by, bx)
         out.append(ang + math.pi if words == "outer" else ang)
-    return tuple(a % (2 * math.pi) for a in out)
+    return tuple(_half_turn(a, math.pi) for a in out)
