@@ -133,7 +133,8 @@ def test_corpus_covers_the_format():
     assert any(isinstance(s, GuideSlider) for s in sliders)
     labels = {s.label for s in sliders if isinstance(s, FixedPath)}
     assert {"horizontal", "vertical"} <= labels and len(labels) >= 4
-    assert {sc.units for sc in scenes} == {"mm", "cm", "m", "in"}
+    assert {sc.units for sc in scenes} == {"mm", "cm", "m", "in", "ft"}
+    assert any(sc.input.angle_words for sc in scenes)  # an angle in a book's words
     assert any(sc.input.alpha for sc in scenes)
     assert {round(math.degrees(sc.input.angle)) % 360 for sc in scenes} >= {0, 90, 180, 270}
     assert any(cp.lam > 1 or cp.lam < 0 for sc in scenes for cp in sc.points)  # produced
