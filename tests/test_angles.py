@@ -369,3 +369,28 @@ def test_check_names_the_misread_dead_centre():
     verdict, = check_answers(solve(sc))
     assert not verdict.ok
     assert "other dead centre" in str(verdict), verdict
+
+
+def _offset_speed(t, r=0.1, l=0.4, e=0.03, w=10.0):
+    """|v_B| of the offset slider crank (path y = -e, piston right) at crank angle t:
+    x_B = r cos t + sqrt(l^2 - (r sin t + e)^2), differentiated by hand."""
+    h = r * math.sin(t) + e
+    return abs(w * (-r * math.sin(t) - h * r * math.cos(t) / math.sqrt(l * l - h * h)))
+
+
+@pytest.mark.parametrize("words,e,slip_deg,code_words", [
+    ("30 deg below the horizontal", 0.03, 30, "above the horizontal instead of below"),
+    ("60 deg right of the vertical", 0.03, 60, "from the horizontal instead of the vertical"),
+    ("150 deg before the IDC", 0.08, -math.degrees(math.asin(0.08 / 0.5)) + 150,
+     "against the crank's rotation"),
+])
+def test_check_names_the_other_misreadings(words, e, slip_deg, code_words):
+    from polygon_method.check import check_answers
+    v = _offset_speed(math.radians(slip_deg), e=e)
+    through = f", through = [0, {-e * 1000:g}]"
+    assert abs(v - _offset_speed(solve(engine(words, through=through)).scene.input.angle,
+                                 e=e)) > 0.05 * v  # a slip worth telling
+    sc = engine(words, through=through,
+                assembly=f'[assembly]\nB = "right"\n[answers]\nv_B = "{v:.6g} m/s"')
+    verdict, = check_answers(solve(sc))
+    assert not verdict.ok and code_words in str(verdict), verdict
