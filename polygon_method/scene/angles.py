@@ -55,7 +55,7 @@ from ..errors import SceneError
 from ..units import UNITS
 
 __all__ = ["BookAngle", "Slip", "read_angle", "is_book_form", "dead_centres", "side_along",
-           "EXAMPLES"]
+           "candidates", "EXAMPLES"]
 
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _UNIT = r"deg|degrees|degree|°|rad"
@@ -342,3 +342,30 @@ def dead_centres(pivot, r, l, through, u, side, unit=("m", 1.0)) -> tuple:
         ang = math.atan2(by, bx)
         out.append(ang + math.pi if words == "outer" else ang)
     return tuple(_half_turn(a, math.pi) for a in out)
+
+
+def candidates(pivot, r, l, through, u, hint, unit=("m", 1.0)) -> list:
+    """The dead centres of a slider crank as :func:`read_angle` takes them,
+    ``[(inner, outer, keeps)]``: one candidate for the piston's side that an [assembly]
+    word (or none) sets; for a rough position ``hint = (x, y)``, one per side, each with a
+    test of the final crank angle: whether the position is nearer the piston on that side
+    there (as the compiler picks it)."""
+    if not isinstance(hint, tuple):
+        return [(*dead_centres(pivot, r, l, through, u, side_along(hint, u), unit), None)]
+    (ox, oy), (qx, qy), (ux, uy) = pivot, through, u
+
+    def keeps(side):
+        def test(theta):
+            ax, ay = ox + r * math.cos(theta), oy + r * math.sin(theta)
+            t = (ax - qx) * ux + (ay - qy) * uy
+            fx, fy = qx + t * ux, qy + t * uy  # the foot of the crank pin on the path
+            h2 = l * l - (ax - fx) ** 2 - (ay - fy) ** 2
+            if h2 <= 0:
+                return False
+            h = math.sqrt(h2)
+            ahead = math.dist((fx + h * ux, fy + h * uy), hint)
+            behind = math.dist((fx - h * ux, fy - h * uy), hint)
+            return (ahead < behind) == (side > 0)
+        return test
+    return [(*dead_centres(pivot, r, l, through, u, side, unit), keeps(side))
+            for side in (1, -1)]

@@ -9,7 +9,7 @@ import re
 
 from ..errors import SceneError, printable
 from ..units import UNITS, did_you_mean
-from .angles import dead_centres, is_book_form, read_angle, side_along
+from .angles import candidates, is_book_form, read_angle
 from .records import (ANSWER_KINDS, INPUT_KEYS, Answer, CarriedPoint, FixedPath, GuideSlider,
                       Input, Load, Pin, split_name)
 
@@ -184,13 +184,11 @@ class _Tables:
             elif path == "vertical":
                 ang, label = math.pi / 2, "vertical"
             else:
+                # a book's words are in the notes; the label keeps the tables' width
                 book = self.book_angle(path, "path", "sliders", name, f"slider {name}'s path")
-                if book is None:
-                    ang = self.qty(path, "angle", "sliders", name, default_unit="deg").value
-                    label = f"at {math.degrees(ang):g} deg"
-                else:  # the words are in the notes; the tables keep their width
-                    ang = book.value
-                    label = f"at {math.degrees(ang):g} deg"
+                ang = book.value if book is not None else self.qty(
+                    path, "angle", "sliders", name, default_unit="deg").value
+                label = f"at {math.degrees(ang):g} deg"
             through = spec.get("through")
             if through is None:
                 through = ("input pivot", None)
@@ -232,34 +230,17 @@ class _Tables:
                    if not rods else f"crank {link.key} drives {len(rods)} slider rods "
                    f"({', '.join(lk.key for lk, _ in rods)}): give the angle from +x"))
         (rod, slider), = rods
-        O, r, l = ground[pivot], link.length, rod.length
-        through = O if slider.through[1] is None else slider.through
-        u = slider.u
-        unit = (self.unit, self.scale())
-        hint = (self.raw.get("assembly") or {}).get(slider.point) \
-            if isinstance(self.raw.get("assembly"), dict) else None
-        if not (isinstance(hint, list) and len(hint) == 2):
-            side = side_along(hint, u)
-            return [(*dead_centres(O, r, l, through, u, side, unit), None)]
-        try:
-            hx, hy = (self.length(c, "assembly", slider.point, positive=False) for c in hint)
-        except SceneError:
-            return [(*dead_centres(O, r, l, through, u, 1, unit), None)]  # refused later, by name
-
-        def keeps(side):
-            def test(theta):
-                ax, ay = O[0] + r * math.cos(theta), O[1] + r * math.sin(theta)
-                t = (ax - through[0]) * u[0] + (ay - through[1]) * u[1]
-                fx, fy = through[0] + t * u[0], through[1] + t * u[1]
-                h2 = l * l - (ax - fx) ** 2 - (ay - fy) ** 2
-                if h2 <= 0:
-                    return False
-                h = math.sqrt(h2)
-                ahead = math.dist((fx + h * u[0], fy + h * u[1]), (hx, hy))
-                behind = math.dist((fx - h * u[0], fy - h * u[1]), (hx, hy))
-                return (ahead < behind) == (side > 0)
-            return test
-        return [(*dead_centres(O, r, l, through, u, side, unit), keeps(side)) for side in (1, -1)]
+        through = ground[pivot] if slider.through[1] is None else slider.through
+        hint = self.raw.get("assembly")
+        hint = hint.get(slider.point) if isinstance(hint, dict) else None
+        if isinstance(hint, list) and len(hint) == 2:
+            try:
+                hint = tuple(self.length(c, "assembly", slider.point, positive=False)
+                             for c in hint)
+            except SceneError:
+                hint = None  # refused when [assembly] is read, by its own key
+        return candidates(ground[pivot], link.length, rod.length, through, slider.u, hint,
+                          (self.unit, self.scale()))
 
     def input(self, index, ground):
         if "input" not in self.raw:
