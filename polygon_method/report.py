@@ -41,7 +41,8 @@ def solution_text(sol: Solution) -> str:
     lines = []
     title = sc.title or (sc.file or "mechanism")
     lines.append(title)
-    lines.append(f"crank {inp.crank} at {math.degrees(inp.angle):g} deg, "
+    said = f" ({inp.angle_words})" if inp.angle_words else ""
+    lines.append(f"crank {inp.crank} at {math.degrees(inp.angle):g} deg{said}, "
                  f"{fmt_angular(inp.omega, 'rad/s')}"
                  + ("" if "rad/s" in inp.speed_text and inp.given is None
                     else f" ({'from ' if inp.given else ''}{stated(inp)})")

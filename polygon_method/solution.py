@@ -117,7 +117,10 @@ class Solution(Motion):
 
     @property
     def notes(self) -> tuple:
-        return self.plan.notes
+        """How the scene's words were read, then the defaults the plan took."""
+        said = self.scene.input.angle_note
+        return ((said,) if said else ()) + tuple(self.scene.reading_notes) + \
+            tuple(self.plan.notes)
 
     # ----- presentation
     @property

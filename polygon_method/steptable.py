@@ -189,8 +189,9 @@ def _config(doc, sol, space):
                     facts.append(f"{a}{b} = {fmt(d / u, 5)} {sc.units} (between the fixed "
                                  "points)")
     ang = math.degrees(inp.angle)
-    crank_dir = f"crank {inp.crank} at {fmt(ang, 5)} deg (direction {inp.pivot}{inp.tip}, " \
-        "counter-clockwise from the +x axis)"
+    said = f"{inp.angle_words}; " if inp.angle_words else ""
+    crank_dir = f"crank {inp.crank} at {fmt(ang, 5)} deg ({said}direction {inp.pivot}" \
+        f"{inp.tip}, counter-clockwise from the +x axis)"
     others = [n for n in sc.ground if n != inp.pivot]
     if len(others) == 1:
         ox, oy = sc.ground[inp.pivot]

@@ -6,6 +6,8 @@ Quantity(value=0.05, sense=None)
 18.84955592153876
 >>> parse_quantity("10.5 rad/s cw", "angular_velocity", need_sense=True)
 Quantity(value=-10.5, sense='cw')
+>>> parse_quantity("2 ft 6 in", "length").value == parse_quantity("30 in", "length").value
+True
 
 Values come back in SI (m, rad, rad/s, rad/s^2, N, m/s, m/s^2, N m); a sense ``cw`` makes
 the value negative (counter-clockwise positive).
@@ -27,7 +29,8 @@ _PI = math.pi
 
 #: unit spellings by kind: factor to SI
 UNITS: dict[str, dict[str, float]] = {
-    "length": {"mm": 1e-3, "cm": 1e-2, "m": 1.0, "in": 0.0254, "inch": 0.0254, "ft": 0.3048},
+    "length": {"mm": 1e-3, "cm": 1e-2, "m": 1.0, "in": 0.0254, "inch": 0.0254,
+               "inches": 0.0254, "ft": 0.3048, "feet": 0.3048, "foot": 0.3048},
     "angle": {"deg": _PI / 180, "°": _PI / 180, "degree": _PI / 180, "degrees": _PI / 180,
               "rad": 1.0},
     "angular_velocity": {"rad/s": 1.0, "rpm": 2 * _PI / 60, "r.p.m.": 2 * _PI / 60,
@@ -70,7 +73,7 @@ TINY: dict[str, float] = {
 }
 
 #: the lengths a scene may be written in (``units = ...``)
-LENGTH_UNITS = {"mm", "cm", "m", "in"}
+LENGTH_UNITS = {"mm", "cm", "m", "in", "ft"}
 
 _SI_NAME = {"angle": "rad", "angular_velocity": "rad/s", "angular_acceleration": "rad/s^2",
             "force": "N", "torque": "N m", "velocity": "m/s", "acceleration": "m/s^2"}
@@ -79,6 +82,10 @@ _SENSES = {"cw": "cw", "clockwise": "cw", "ccw": "ccw", "acw": "ccw", "anticlock
            "anti-clockwise": "ccw", "counterclockwise": "ccw", "counter-clockwise": "ccw"}
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _QUANTITY = re.compile(rf"^\s*({_NUMBER})\s*(.*?)\s*$")
+#: a length in feet and inches, as US books write it: "2 ft 6 in" (a minus sign before it
+#: applies to the whole: "-2 ft 6 in" is -2.5 ft)
+_FEET_INCHES = re.compile(r"^\s*([-+]?)\s*(\d+\.?\d*|\.\d+)\s*(?:ft|feet|foot)\s+"
+                          r"(\d+\.?\d*|\.\d+)\s*(?:in|inch|inches)\s*$")
 
 
 @dataclass(frozen=True)
@@ -174,6 +181,14 @@ def parse_quantity(raw, kind: str, *, where: str = "", default_unit: str | None 
                          key=where)
     sense = None
     shown = _clip(raw)
+    if kind == "length" and isinstance(raw, str) and _FEET_INCHES.match(raw):
+        sign, feet, inches = _FEET_INCHES.match(raw).groups()
+        si = float(feet) * UNITS["length"]["ft"] + float(inches) * UNITS["length"]["in"]
+        if float(inches) >= 12:
+            raise SceneError(f"'{shown}': {inches} in is a foot or more; write the feet and "
+                             "the inches below 12, or the whole in one unit (\"30 in\")",
+                             key=where)
+        return Quantity(-si if sign == "-" else si)
     if isinstance(raw, str):
         text = raw.strip()
         words = text.split()

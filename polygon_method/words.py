@@ -47,7 +47,8 @@ def given(sc) -> list:
         out.append(f"Of its two positions, {p} is the one {where}.")
     inp = sc.input
     words = (f"The crank {inp.crank} turns about {inp.pivot}; at the instant shown it makes "
-             f"{fmt(math.degrees(inp.angle) % 360)}° with the x axis (counter-clockwise)")
+             f"{fmt(math.degrees(inp.angle) % 360)}° with the x axis (counter-clockwise"
+             + (f"; {inp.angle_words}" if inp.angle_words else "") + ")")
     g = inp.given
     if g is not None:
         words += f". At this instant {_given_words(g)}"

@@ -7,7 +7,8 @@ path through a named point), an oscillating cylinder, crank and slotted lever (a
 from the lever), Whitworth and shaper quick returns, Watt and Stephenson six-bars, a stone
 crusher and a toggle press, a block sliding on a moving coupler, a coupling rod, points on
 links produced, plates, pins, loads, crank angular acceleration, rpm / rps / deg/s,
-mm / cm / m / in.
+mm / cm / m / in / ft (with inches, "4 ft 6 in"), angles in a book's words (past the inner dead
+centre, from the line of stroke).
 
 Against the 50-digit reference (tests/reference.py) at 1e-9 of the size of each kind, also
 with the crank turned to 0, 90, 180 and 270 deg; the branch each [assembly] hint asks for
@@ -132,7 +133,8 @@ def test_corpus_covers_the_format():
     assert any(isinstance(s, GuideSlider) for s in sliders)
     labels = {s.label for s in sliders if isinstance(s, FixedPath)}
     assert {"horizontal", "vertical"} <= labels and len(labels) >= 4
-    assert {sc.units for sc in scenes} == {"mm", "cm", "m", "in"}
+    assert {sc.units for sc in scenes} == {"mm", "cm", "m", "in", "ft"}
+    assert any(sc.input.angle_words for sc in scenes)  # an angle in a book's words
     assert any(sc.input.alpha for sc in scenes)
     assert {round(math.degrees(sc.input.angle)) % 360 for sc in scenes} >= {0, 90, 180, 270}
     assert any(cp.lam > 1 or cp.lam < 0 for sc in scenes for cp in sc.points)  # produced

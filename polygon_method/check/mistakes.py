@@ -54,6 +54,15 @@ class _Alternatives:
         return self.solve(("radians",),
                           replace(sc, input=replace(sc.input, angle=deg)))
 
+    def angle_slips(self):
+        """(slip, solution or None) for each classic misreading of the crank angle's words
+        (the other dead centre, against the rotation, above for below, from the horizontal
+        for from the vertical): the scene's reader lists them with the words."""
+        sc = self.sol.scene
+        return [(slip, self.solve(("slip", slip.code, slip.value),
+                                  replace(sc, input=replace(sc.input, angle=slip.value))))
+                for slip in sc.input.angle_slips]
+
     def branches(self):
         """(point, words, solution) for the other branch of every two-way step."""
         out = self.cache.get("branches")
@@ -231,6 +240,11 @@ class _Diagnoser:
                                       f"{_OPPOSITE[side]})"))
             except (KeyError, TypeError):
                 pass
+        for slip, alt in self.alts.angle_slips():
+            if alt is not None and kind != "torque":
+                out.append(_Candidate(val(alt), slip.code, f"{slip.text} (crank at "
+                                      f"{_g(math.degrees(slip.value))} deg from +x instead of "
+                                      f"{_g(math.degrees(sc.input.angle) % 360)})"))
         alt = self.alts.angle_as_radians()
         if alt is not None and kind != "torque":
             out.append(_Candidate(val(alt), "angle_in_radians", "the crank angle in degrees used as "

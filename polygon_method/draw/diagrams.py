@@ -34,7 +34,8 @@ def _configuration(sol, scale: Scale) -> _Sketch:
 
 def _drive(sol) -> str:
     inp = sol.scene.input
-    drive = (f"crank {inp.crank} at {_deg(inp.angle)}, "
+    said = f" ({inp.angle_words})" if inp.angle_words else ""
+    drive = (f"crank {inp.crank} at {_deg(inp.angle)}{said}, "
              + (inp.speed_text if inp.given is None
                 else f"{fmt_angular(inp.omega, 'rad/s')} (from {stated(inp)})"))
     if inp.alpha:

@@ -103,7 +103,8 @@ class Linkage:
         for t in self.transmission:
             out.append(f"transmission angle at {t.point} ({t.between}, acute angle)")
             if t.now is not None:
-                out.append(f"  now (crank at {math.degrees(sc.input.angle):g} deg): "
+                said = f", {sc.input.angle_words}" if sc.input.angle_words else ""
+                out.append(f"  now (crank at {math.degrees(sc.input.angle):g} deg{said}): "
                            f"{t.now:.2f} deg")
             out.append(f"  over the motion: minimum {t.minimum:.2f} deg at crank "
                        f"{t.at_min:.2f} deg, maximum {t.maximum:.2f} deg at crank "

@@ -131,7 +131,7 @@ def page_html(fr: Frames, *, verdicts=None, answers_title: str = "") -> str:
 </div>
 <p class="legend-line">{len(fr)} frames over {escape(cycle)}; each diagram keeps the
 scale of the step-by-step solution. The stated instant is θ =
-{fmt(math.degrees(sc.input.angle) % 360)}°. Hover or tap a vector or a point for its
+{fmt(math.degrees(sc.input.angle) % 360)}°{escape(f" ({sc.input.angle_words})" if sc.input.angle_words else "")}. Hover or tap a vector or a point for its
 value.</p>
 {f'<ul>{notes}</ul>' if notes else ''}
 <div class="diagrams">

@@ -284,6 +284,8 @@ class _Loader(_Tables, _Variants):
         self.long_run = _LONG_RUN.search(text) is not None
         self.file = file
         self.unit = "mm"
+        self.strokes, self.fixed = {}, []  # the fixed paths: directions (rad), records
+        self.read_notes = []  # how angles in a book's words were read
 
     # -- locations
     def line_of(self, table: str | None, key: str | None = None):
@@ -369,12 +371,13 @@ class _Loader(_Tables, _Variants):
                                  line=self.line_of(key) if kind == "table" else self.top_line(key))
         units = raw.get("units", "mm")
         if not isinstance(units, str):
-            raise SceneError("units is a string: units = \"mm\" (or \"cm\", \"m\", \"in\")",
+            raise SceneError("units is a string: units = \"mm\" (or \"cm\", \"m\", \"in\", "
+                             "\"ft\")",
                              file=self.file, key="units",
                              line=self.top_line("units") or self.line_of("units"))
         if units not in LENGTH_UNITS:
             raise SceneError(f"unknown length unit {units!r}{_suggest(units, _UNIT_ORDER)}; "
-                             "use mm, cm, m or in", file=self.file, key="units",
+                             "use mm, cm, m, in or ft", file=self.file, key="units",
                              line=self.top_line("units"))
         self.unit = units
         title = raw.get("title", "")
@@ -451,7 +454,7 @@ class _Loader(_Tables, _Variants):
                      input=inp, pins=tuple(pins), loads=tuple(loads), answers=tuple(answers),
                      tolerance=tolerance, file=self.file, cylinders=tuple(cylinders),
                      source=source if isinstance(source, str) else None, variation=variation,
-                     variant=variant, _link_index=index,
+                     variant=variant, reading_notes=tuple(self.read_notes), _link_index=index,
                      _lines=tuple(self.lines))
 
     def scale(self):

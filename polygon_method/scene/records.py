@@ -17,7 +17,7 @@ POINT_NAME = re.compile(r"[A-Z][0-9]*")
 _POINT_ONLY = re.compile(r"^[A-Z][0-9]*\Z")  # \Z: "A\n" is no point name
 _LINK_NAME = re.compile(r"^(?:[A-Z][0-9]*-?)+\Z")
 
-_UNIT_ORDER = ("mm", "cm", "m", "in")
+_UNIT_ORDER = ("mm", "cm", "m", "in", "ft")
 
 #: the largest and smallest lengths a scene may state, in metres
 _ABSURD_LONG = 1e4
@@ -156,6 +156,26 @@ class Input:
     alpha: float | None  # rad/s^2, ccw positive
     speed_text: str
     given: GivenRate | None = None
+    #: an angle the scene gave in a book's words: (words, the angle they gave (rad), the
+    #: slips a reader of them might make (:class:`~.angles.Slip`), the note saying how
+    #: they were read); empty for a plain angle
+    said: tuple = field(default=(), compare=False)
+
+    @property
+    def angle_words(self) -> str | None:
+        """The scene's own words for the crank angle ("30 deg past the inner dead centre"),
+        while the angle is the one they gave (a copy turned to another angle has none)."""
+        return self.said[0] if self.said and self.said[1] == self.angle else None
+
+    @property
+    def angle_note(self) -> str | None:
+        """How the reader read the words of :attr:`angle_words` (None without them)."""
+        return self.said[3] if self.angle_words is not None else None
+
+    @property
+    def angle_slips(self) -> tuple:
+        """The classic misreadings of the scene's words for the angle (see ``said``)."""
+        return self.said[2] if self.angle_words is not None else ()
 
 
 @dataclass(frozen=True)
@@ -209,6 +229,9 @@ class Scene:
     #: the scene's [variants] (what may vary per student), and [variant] (which one it is)
     variation: object = field(default=None, compare=False)
     variant: object = field(default=None, compare=False)
+    #: how the reader read what a book's words gave ("crank angle: '30 deg past the inner
+    #: dead centre' = 210 deg from +x (...)"), notes of every solution
+    reading_notes: tuple = field(default=(), compare=False)
     _link_index: dict = field(default_factory=dict, repr=False, compare=False)
     _lines: tuple = field(default=(), repr=False, compare=False)  # the file's text, by line
 

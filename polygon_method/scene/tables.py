@@ -9,9 +9,9 @@ import re
 
 from ..errors import SceneError, printable
 from ..units import UNITS, did_you_mean
+from .angles import candidates, is_book_form, read_angle
 from .records import (ANSWER_KINDS, GIVEN_KINDS, INPUT_KEYS, Answer, CarriedPoint, Cylinder,
-                      FixedPath,
-                      GivenRate, GuideSlider, Input, Load, Pin, split_name)
+                      FixedPath, GivenRate, GuideSlider, Input, Load, Pin, split_name)
 
 
 def _unit_at(ang: float) -> tuple:
@@ -210,15 +210,18 @@ class _Tables:
             if isinstance(path, str) and not re.match(r"^\s*[-+.\d]", path) \
                     and path not in ("horizontal", "vertical"):
                 raise self.error(f"path = {path!r}: use \"horizontal\", \"vertical\" or an "
-                                 "angle such as \"30 deg\"" + _suggest(path, ("horizontal",
-                                                                            "vertical")),
+                                 "angle such as \"30 deg\" or \"30 deg below the horizontal\""
+                                 + _suggest(path, ("horizontal", "vertical")),
                                  "sliders", name)
             if path == "horizontal":
                 ang, label = 0.0, "horizontal"
             elif path == "vertical":
                 ang, label = math.pi / 2, "vertical"
             else:
-                ang = self.qty(path, "angle", "sliders", name, default_unit="deg").value
+                # a book's words are in the notes; the label keeps the tables' width
+                book = self.book_angle(path, "path", "sliders", name, f"slider {name}'s path")
+                ang = book.value if book is not None else self.qty(
+                    path, "angle", "sliders", name, default_unit="deg").value
                 label = f"at {math.degrees(ang):g} deg"
             through = spec.get("through")
             if through is None:
@@ -232,6 +235,8 @@ class _Tables:
                 through = self.coords(through, "sliders", name)
             u = _unit_at(ang)
             out.append(FixedPath(name, u, through, label))
+            self.strokes[name] = ang
+            self.fixed.append(out[-1])
         return out
 
     def cylinders(self, known):
@@ -270,6 +275,43 @@ class _Tables:
             out.append(Cylinder(key, pts[0], pts[1], stroke))
         return out
 
+    def book_angle(self, raw, where, table, key, what, **kw):
+        """An angle in a book's words (:mod:`.angles`), its reading noted (the crank's is
+        noted with the crank: a copy of the scene at another angle has no such note); None
+        for a plain angle."""
+        try:
+            book = read_angle(raw, where, strokes=self.strokes, **kw)
+        except SceneError as exc:
+            raise self.error(exc.message, table, key) from None
+        if book is not None and where != "angle":
+            self.read_notes.append(f"{what}: {book.note}")
+        return book
+
+    def dead_centres(self, link, pivot, tip, ground):
+        """The candidate dead centres of the slider crank that ``link`` drives, for
+        :func:`.angles.read_angle`: ``[(inner, outer, keeps)]``."""
+        rods = [(lk, s) for lk in self.index.values() if tip in lk.points and lk is not link
+                for s in self.fixed if s.point == lk.other(tip)]
+        if len(rods) != 1:
+            raise SceneError(
+                "a dead centre is where the crank and the rod of a slider crank are in line; "
+                + (f"crank {link.key} drives no rod whose other end slides on a fixed path "
+                   "in [sliders]: give the angle from +x, the horizontal or the vertical"
+                   if not rods else f"crank {link.key} drives {len(rods)} slider rods "
+                   f"({', '.join(lk.key for lk, _ in rods)}): give the angle from +x"))
+        (rod, slider), = rods
+        through = ground[pivot] if slider.through[1] is None else slider.through
+        hint = self.raw.get("assembly")
+        hint = hint.get(slider.point) if isinstance(hint, dict) else None
+        if isinstance(hint, list) and len(hint) == 2:
+            try:
+                hint = tuple(self.length(c, "assembly", slider.point, positive=False)
+                             for c in hint)
+            except SceneError:
+                hint = None  # refused when [assembly] is read, by its own key
+        return candidates(ground[pivot], link.length, rod.length, through, slider.u, hint,
+                          (self.unit, self.scale()))
+
     def input(self, index, ground):
         if "input" not in self.raw:
             raise SceneError("missing [input] table: which link is the crank, its angle and "
@@ -307,7 +349,23 @@ class _Tables:
                              "input", "crank")
         pivot = on_ground[0]
         tip = link.other(pivot)
-        angle = self.qty(spec["angle"], "angle", "input", "angle", default_unit="deg").value
+        said = ()
+        if not is_book_form(spec["angle"]):
+            angle = self.qty(spec["angle"], "angle", "input", "angle", default_unit="deg").value
+        speed = None if given_keys else self.qty(spec["speed"], "angular_velocity", "input",
+                                                  "speed", need_sense=True)
+        if is_book_form(spec["angle"]):  # a dead centre is passed in the crank's sense
+            if given_keys and re.search(r"\b(past|before|after|beyond)\b", str(spec["angle"]),
+                                        re.IGNORECASE):
+                raise self.error(f"{spec['angle']!r}: past or before a dead centre follows the "
+                                 "crank's sense, which a given motion leaves to be found; give "
+                                 "the angle from +x, the horizontal or the vertical", "input",
+                                 "angle")
+            book = self.book_angle(spec["angle"], "angle", "input", "angle", "crank angle",
+                                   dead=lambda: self.dead_centres(link, pivot, tip, ground),
+                                   sense=None if speed is None else speed.value)
+            angle = book.value
+            said = (book.words, angle, book.slips, f"crank angle: {book.note}")
         acc = spec.get("acceleration", 0 if not given_keys else None)
         if acc is None:
             alpha = None
@@ -321,15 +379,16 @@ class _Tables:
             if given.rate is not None and "acceleration" in spec:
                 raise self.error(f"[input] gives both the crank's acceleration and "
                                  f"{given.rate_key}: one only", "input", given.rate_key)
-            return Input(link.key, pivot, tip, angle, None, alpha, given.text, given)
+            return Input(link.key, pivot, tip, angle, None, alpha, given.text, given,
+                         said=said)
         if rate_keys:
             raise self.error(f"{rate_keys[0]} is the rate of a given motion, but [input] gives "
                              "the crank's speed: give the crank's acceleration instead",
                              "input", rate_keys[0])
-        speed = self.qty(spec["speed"], "angular_velocity", "input", "speed", need_sense=True)
         if speed.value == 0:
             raise self.error("the crank speed is zero: nothing moves", "input", "speed")
-        return Input(link.key, pivot, tip, angle, speed.value, alpha, str(spec["speed"]))
+        return Input(link.key, pivot, tip, angle, speed.value, alpha, str(spec["speed"]),
+                     said=said)
 
     def given_rate(self, key, rate_keys, spec, index) -> GivenRate:
         """``omega_BC = "3 rad/s cw"``, ``vs_B = "1.5 m/s up"``, ``v_B = "3 m/s down"`` in
@@ -488,8 +547,10 @@ class _Tables:
                 if "direction" not in spec:
                     raise self.error("a force needs a direction (deg, ccw from +x)",
                                      "loads", name)
-                ang = self.qty(spec["direction"], "angle", "loads", name,
-                               default_unit="deg").value
+                book = self.book_angle(spec["direction"], "direction", "loads", name,
+                                       f"direction of the force at {name}")
+                ang = book.value if book is not None else self.qty(
+                    spec["direction"], "angle", "loads", name, default_unit="deg").value
                 ux, uy = _unit_at(ang)
                 fx, fy = mag * ux, mag * uy
             out.append(Load(name, force=(fx, fy)))
