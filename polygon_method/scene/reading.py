@@ -13,6 +13,7 @@ from pathlib import Path
 
 from ..errors import PolygonMethodError, SceneError, printable
 from ..units import LENGTH_UNITS, UNITS, parse_quantity
+from .rolling import read_rolling
 from .records import (_ABSURD_LONG, _ABSURD_SHORT, _POINT_ONLY, _UNIT_ORDER, TOP_KEYS, FixedPath,
                       GuideSlider, Link, Scene, split_name)
 from .tables import _suggest, _Tables
@@ -428,6 +429,7 @@ class _Loader(_Tables, _Variants):
 
         points = self.carried_points(index, ground)
         sliders = self.sliders(index, ground, {p.name for p in points})
+        rolling = read_rolling(self, ground, sliders, {p.name for p in points})
         known = set(ground) | {p for lk in links for p in lk.points} | {p.name for p in points}
         self.known = known
         inp = self.input(index, ground)
@@ -438,7 +440,7 @@ class _Loader(_Tables, _Variants):
         pins = self.pins(known)
         loads = self.loads(known)
         tolerance, answers = self.answers(known, sliders, pins, loads)
-        self.connected(links, points, sliders, ground, inp)
+        self.connected(links, points, sliders, ground, inp, rolling)
         if len(known) > MAX_POINTS:
             raise SceneError(f"the scene has {len(known)} points: at most {MAX_POINTS} (a "
                              "mechanism of a textbook has a few dozen)", file=self.file)
@@ -449,7 +451,7 @@ class _Loader(_Tables, _Variants):
                      input=inp, pins=tuple(pins), loads=tuple(loads), answers=tuple(answers),
                      tolerance=tolerance, file=self.file,
                      source=source if isinstance(source, str) else None, variation=variation,
-                     variant=variant, _link_index=index,
+                     variant=variant, rolling=tuple(rolling), _link_index=index,
                      _lines=tuple(self.lines))
 
     def scale(self):
@@ -466,7 +468,7 @@ class _Loader(_Tables, _Variants):
                              table, key)
         return link, pts
 
-    def connected(self, links, points, sliders, ground, inp):
+    def connected(self, links, points, sliders, ground, inp, rolling=()):
         """Every point must take part: a dangling point is almost always a typo."""
         uses = {}
         for lk in links:
@@ -474,6 +476,9 @@ class _Loader(_Tables, _Variants):
                 uses[p] = uses.get(p, 0) + 1
         roles = set(ground) | {p.name for p in points} | {s.point for s in sliders}
         roles |= {p for s in sliders if isinstance(s, GuideSlider) for p in (s.first, s.second)}
+        roles |= {p for r in rolling for p in (r.centre, r.rim)}  # a wheel's points roll
+        roles |= {p for r in rolling if r.base for p in self.index[frozenset(
+            split_name(r.base))].points}  # and so does the gear a wheel meshes with
         plates = {p.link for p in points}  # a link carrying points is a plate: its ends belong
         roles |= {q for lk in links if lk.key in plates for q in lk.points}
         through = {s.through for s in sliders if isinstance(s, FixedPath)}

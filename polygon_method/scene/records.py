@@ -24,7 +24,7 @@ _ABSURD_LONG = 1e4
 _ABSURD_SHORT = 1e-7
 
 TOP_KEYS = ("title", "source", "notes", "units", "ground", "links", "points", "sliders",
-            "assembly", "input", "pins", "loads", "answers", "variants", "variant")
+            "rolling", "assembly", "input", "pins", "loads", "answers", "variants", "variant")
 INPUT_KEYS = ("crank", "angle", "speed", "acceleration")
 
 #: answer key prefix -> (unit kind, what it names, sense allowed)
@@ -100,6 +100,38 @@ class GuideSlider:
 
 
 @dataclass(frozen=True)
+class RollingPair:
+    """A wheel or gear rolling without slip: link ``wheel`` from its centre ``centre`` to
+    the point ``rim`` on it, rolling (pitch) radius ``radius`` (m), on one of
+
+    - a fixed line (``on = "line"``) through ``through`` along unit ``u``, the wheel on the
+      side of unit normal ``m`` (from the line towards the centre);
+    - a fixed circle (``on = "circle"``) about ground point ``base_centre``;
+    - a gear (``on = "gear"``): link ``base`` turning about its ground end ``base_centre``.
+
+    ``inside``: the wheel rolls inside the circle (a ring, an internal gear).
+    ``base_radius``: the circle's radius as the problem states it (None: from the centre
+    distance). ``angle``: the direction centre -> rim (rad) at the scene's crank angle
+    (None: towards the contact point). ``label``: the line or circle in words.
+    """
+
+    wheel: str
+    centre: str
+    rim: str
+    radius: float
+    on: str
+    label: str
+    u: tuple | None = None
+    through: tuple | None = None
+    m: tuple | None = None
+    base: str | None = None
+    base_centre: str | None = None
+    inside: bool = False
+    base_radius: float | None = None
+    angle: float | None = None
+
+
+@dataclass(frozen=True)
 class Input:
     """The driving crank: link ``crank`` turning about ground point ``pivot``."""
 
@@ -156,6 +188,8 @@ class Scene:
     answers: tuple = ()
     tolerance: float | None = None
     file: str | None = None
+    #: wheels and gears rolling without slip (the scene's [rolling])
+    rolling: tuple = ()
     #: where the problem comes from (the scene's ``source``), for headings
     source: str | None = field(default=None, compare=False)
     #: the scene's [variants] (what may vary per student), and [variant] (which one it is)
@@ -178,7 +212,7 @@ class Scene:
         try:
             key = (self.units, tuple(self.ground.items()), self.links, self.points,
                    self.sliders, tuple(self.assembly.items()), self.input, self.pins,
-                   self.file)
+                   self.file, self.rolling)
             hash(key)
         except (TypeError, AttributeError):  # something unhashable: not cached by content
             key = None
@@ -235,6 +269,10 @@ class Scene:
 
     def slider(self, name: str):
         return next((s for s in self.sliders if s.point == name), None)
+
+    def rolling_of(self, point: str):
+        """The rolling pair whose wheel has ``point`` as its rim point, or None."""
+        return next((r for r in self.rolling if r.rim == point), None)
 
     @property
     def length_unit(self) -> float:
