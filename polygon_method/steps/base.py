@@ -233,6 +233,12 @@ class Step:
         them (ground 1, crank 2, ...)."""
         return ()
 
+    def contacts(self, P):
+        """The rolling contacts this step makes, ((body, body, point, words), ...): each
+        contact point is the instantaneous centre of its two bodies (no slip), a primary
+        centre for Kennedy's theorem. By default none."""
+        return ()
+
     def produced(self):
         """(A, X) where the step's point X lies on a line AB produced beyond B (the image
         line is drawn produced, from a to x), else None."""

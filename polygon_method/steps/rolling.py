@@ -358,9 +358,11 @@ class RollingWheel(Step):
         out.append((P[self.base_centre], self.dims[2], self.where))
         return tuple(out), None
 
-    def pair_words(self):
-        """The rolling pair in words, for the centres' table."""
-        return f"rolling contact of {self.wheel} on {self.where}"
+    def contacts(self, P):
+        """The contact point: the centre of the wheel and what it rolls on (no slip)."""
+        I, _ = self.contact(P)
+        return ((self.base or "ground", self.wheel, I,
+                 f"the contact of {self.wheel} rolling on {self.where} (no slip)"),)
 
     # ----- words
     def why(self, g):
