@@ -190,6 +190,12 @@ class Solution(Motion):
             return self.rubbing[names[0]].rubbing_velocity
         if kind == "torque":
             return self.input_torque
+        if kind in ("vI", "aI"):  # the wheel's point at its rolling contact
+            wheel = self.scene.link("-".join(names)).key
+            for st in self.plan.steps:
+                got = st.contact_motion(self) if wheel in st.links else None
+                if got is not None:
+                    return hypot(*got[1 if kind == "vI" else 2])
         raise KeyError(kind)
 
 

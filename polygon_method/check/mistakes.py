@@ -197,6 +197,8 @@ class _Diagnoser:
             out += self.relative(ans, signed)
         if kind in ("omega", "alpha"):
             out += self.per_length(ans)
+        if kind in ("a", "aI"):
+            out += self.contact_at_rest(ans)
         if kind == "vs":
             out.append(_Candidate(sol.speed(names[0]), "absolute_for_relative",
                                   f"the absolute velocity of {names[0]} given for its "
@@ -471,6 +473,30 @@ class _Diagnoser:
                                   "(the power is F . v = F v cos theta)"))
         return out
 
+    def contact_at_rest(self, ans):
+        """The classic slip of rolling: the contact point's acceleration taken as zero (its
+        velocity is zero, its acceleration omega^2 r towards the centre is not), for the
+        contact itself and for a point of the wheel found from it."""
+        sol = self.sol
+        words = ("the contact point's acceleration taken as zero: rolling without slip makes "
+                 "its velocity zero, not its acceleration (omega^2 r towards the centre)")
+        if ans.kind == "aI":
+            return [_Candidate(0.0, "contact_acceleration_zero", words)]
+        X = ans.names[0]
+        out = []
+        if len(ans.names) != 1:
+            return out
+        for st in sol.plan.steps:
+            got = st.contact_motion(sol)
+            on = {p for w in st.links for p in sol.scene.link(w).points}
+            on |= {c.name for c in sol.scene.points if c.link in st.links}
+            if got is None or X not in on:
+                continue
+            ax, ay = sol.A[X]
+            out.append(_Candidate(math.hypot(ax - got[2][0], ay - got[2][1]),
+                                  "contact_acceleration_zero", words))
+        return out
+
     def own_slip(self, ans):
         """A copying slip: the answer is the student's own value for the same quantity
         (v_BD and v_DB have one magnitude) with its leading digits lost: 36 for 2.36."""
@@ -497,7 +523,7 @@ class _Diagnoser:
             if not math.isfinite(c.value) or abs(c.value - correct) <= tol:
                 continue
             # the answer's relative tolerance, applied to the mistaken value
-            window = tol * abs(c.value) / abs(correct) if correct else tol
+            window = tol * abs(c.value) / abs(correct) if correct and c.value else tol
             if c.window is not None:
                 window = min(window, c.window * abs(c.value))
             dev = abs(given - c.value)

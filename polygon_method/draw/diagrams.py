@@ -81,6 +81,13 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
             for b in pts:
                 if a < b:
                     sk.hints.append((a, b))
+    # what the steps draw besides links: pitch circles, ground lines, rolling contacts
+    contacts = []
+    for st in sol.plan.steps:
+        for shape in st.shapes(sol.P):
+            c = _step_shape(sk, shape, s, f"{st.index + 1}-{len(contacts)}")
+            if c is not None:
+                contacts.append(c)
     # blocks
     for sl in sc.sliders:
         X = P[sl.point]
@@ -137,6 +144,10 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
             sk.circle(P[name], DOT_R, gid=f"joint-{name}", face="#000000", z=6)
     for name in sc.point_names:
         sk.label(name, [P[name]], LABEL_PT, gid=f"label-{name}", point=True)
+    for k, xy in enumerate(contacts):  # the contact: the wheel's centre with what it rolls on
+        sk.circle(xy, DOT_R, gid=f"contact-{k}", face="#000000", z=6)
+        sk.label("I" if "I" not in sc.point_names and len(contacts) == 1 else f"I{k + 1}",
+                 [xy], SMALL_PT, gid=f"label-contact-{k}", point=True)
     for name, text in pin_notes:
         sk.label(text, [P[name]], SMALL_PT, gid=f"label-pin-{name}", color="#666666",
                  point=True)
@@ -145,6 +156,33 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
         extra(sk, P)
     sk.place_labels()
     return P
+
+
+def _step_shape(sk, shape, s, tag):
+    """One of a step's shapes (``Step.shapes``, metres) drawn at ``s`` metres per cm;
+    a contact point is returned (drawn with the joints)."""
+    kind = shape[0]
+    if kind == "circle":
+        (cx, cy), r = (shape[1][0] / s, shape[1][1] / s), shape[2] / s
+        pts = [(cx + r * math.cos(2 * math.pi * k / 96), cy + r * math.sin(2 * math.pi * k / 96))
+               for k in range(97)]
+        sk.line(pts, gid=f"pitch-{tag}", color="#333333", lw=0.7, dashes=(6, 2, 1, 2), z=1,
+                hint=False)
+        return None
+    if kind == "ground line":
+        (x, y), (ux, uy), (nx, ny) = (shape[1][0] / s, shape[1][1] / s), shape[2], shape[3]
+        a, b = (x - 2.0 * ux, y - 2.0 * uy), (x + 2.0 * ux, y + 2.0 * uy)
+        sk.line([a, b], gid=f"ground-line-{tag}", lw=1.0, z=2)
+        hatch = []
+        for i in range(14):
+            t = -1.85 + i * 3.7 / 13
+            p = (x + t * ux, y + t * uy)
+            hatch.append((p, (p[0] - 0.18 * nx - 0.18 * ux, p[1] - 0.18 * ny - 0.18 * uy)))
+        sk.segments(hatch, gid=f"ground-line-{tag}-hatch", lw=0.5, z=2)
+        return None
+    if kind == "contact":
+        return (shape[1][0] / s, shape[1][1] / s)
+    return None
 
 
 def _deg(rad: float) -> str:

@@ -430,6 +430,7 @@ class _Loader(_Tables, _Variants):
         points = self.carried_points(index, ground)
         sliders = self.sliders(index, ground, {p.name for p in points})
         rolling = read_rolling(self, ground, sliders, {p.name for p in points})
+        self.rolling_pairs = rolling
         known = set(ground) | {p for lk in links for p in lk.points} | {p.name for p in points}
         self.known = known
         inp = self.input(index, ground)
@@ -536,6 +537,7 @@ def parse_answers(text: str, scene: Scene, file: str | None = None, *,
     loader.check_integers()
     loader.unit = scene.units
     loader.index = scene._link_index
+    loader.rolling_pairs = scene.rolling
     tolerance, answers = loader.answers(set(scene.point_names), scene.sliders, scene.pins,
                                         scene.loads)
     if not with_variant:

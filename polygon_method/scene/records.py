@@ -37,6 +37,8 @@ ANSWER_KINDS = {
     "as": ("acceleration", "slider", True),
     "ac": ("acceleration", "slider", False),
     "rub": ("velocity", "pin", False),
+    "vI": ("velocity", "wheel", False),
+    "aI": ("acceleration", "wheel", False),
 }
 
 

@@ -239,6 +239,18 @@ class Step:
         centre for Kennedy's theorem. By default none."""
         return ()
 
+    def contact_motion(self, sol):
+        """(I, v_I, a_I) of a rolling contact the step makes: the contact point and the
+        velocity and acceleration of the rolling body's point there; None by default."""
+        return None
+
+    def shapes(self, P):
+        """What a configuration diagram draws for this step besides its links, in metres:
+        ``("circle", centre, radius)`` (a pitch circle, chain-dotted), ``("ground line",
+        point, direction, normal)`` (a fixed line, hatched on the side away from
+        ``normal``), ``("contact", point)`` (a rolling contact). By default none."""
+        return ()
+
     def produced(self):
         """(A, X) where the step's point X lies on a line AB produced beyond B (the image
         line is drawn produced, from a to x), else None."""

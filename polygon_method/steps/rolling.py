@@ -347,16 +347,17 @@ class RollingWheel(Step):
                                     *sol.V[self.centre], *sol.A[self.centre])
         return I, (vx, vy), (ax, ay)
 
-    def circles(self, P):
-        """What a configuration diagram draws: ((centre, radius, words), ...) of the pitch
-        circles, and the ground line as (point, unit direction) or None."""
-        r = self.dims[1]
-        out = [(P[self.centre], r, f"wheel {self.wheel}")]
+    def shapes(self, P):
+        """The wheel's pitch circle, what it rolls on (a circle, or the ground line hatched
+        on the far side) and the contact point."""
+        I, (mx, my) = self.contact(P)
+        out = [("circle", P[self.centre], self.dims[1])]
         if self.on == "line":
-            ell, r, tx, ty, mx, my = self.dims[:6]
-            return tuple(out), ((tx, ty), (-my, mx))
-        out.append((P[self.base_centre], self.dims[2], self.where))
-        return tuple(out), None
+            out.append(("ground line", I, (-my, mx), (mx, my)))
+        else:
+            out.append(("circle", P[self.base_centre], self.dims[2]))
+        out.append(("contact", I))
+        return tuple(out)
 
     def contacts(self, P):
         """The contact point: the centre of the wheel and what it rolls on (no slip)."""
