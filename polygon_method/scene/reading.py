@@ -483,6 +483,7 @@ class _Loader(_Tables, _Variants):
         plates = {p.link for p in points}  # a link carrying points is a plate: its ends belong
         roles |= {q for lk in links if lk.key in plates for q in lk.points}
         through = {s.through for s in sliders if isinstance(s, FixedPath)}
+        through |= {r.through for r in rolling if r.through is not None}  # a ground line's
         lonely = [name for name, xy in ground.items()
                   if name not in uses and xy not in through and name != inp.pivot
                   and name not in {s.point for s in sliders}]

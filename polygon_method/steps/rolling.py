@@ -142,9 +142,9 @@ def _params(scene, bodies, pr, *, s0=None, kd_rate=0.0, kb_rate=0.0):
     R = (dist - r) if e > 0 else (dist + r)
     where = f"[rolling] {pr.wheel}"
     if R <= 0 or dist == 0:
-        raise SceneError(f"the wheel {pr.wheel} (radius {in_units(r, scene.length_unit):g} "
+        raise SceneError(f"the wheel {pr.wheel} (radius {in_units(r, scene.length_unit)} "
                          f"{scene.units}) cannot roll {'outside' if e > 0 else 'inside'} "
-                         f"{pr.label}: its centre is {in_units(dist, scene.length_unit):g} "
+                         f"{pr.label}: its centre is {in_units(dist, scene.length_unit)} "
                          f"{scene.units} from {pr.base_centre}"
                          + ("" if e < 0 else " (not more than its radius: inside = true?)"),
                          key=where, file=scene.file)
@@ -152,9 +152,9 @@ def _params(scene, bodies, pr, *, s0=None, kd_rate=0.0, kb_rate=0.0):
         u, n = scene.length_unit, scene.units
         want = pr.base_radius + e * r
         raise SceneError(f"the contact leaves the pitch point: the centre distance "
-                         f"{pr.base_centre}{pr.centre} = {in_units(dist, u):g} {n} is not "
-                         f"{'R + r' if e > 0 else 'R - r'} = {in_units(want, u):g} {n} "
-                         f"(R = {in_units(pr.base_radius, u):g}, r = {in_units(r, u):g}): "
+                         f"{pr.base_centre}{pr.centre} = {in_units(dist, u)} {n} is not "
+                         f"{'R + r' if e > 0 else 'R - r'} = {in_units(want, u)} {n} "
+                         f"(R = {in_units(pr.base_radius, u)}, r = {in_units(r, u)}): "
                          "the gears would not mesh", key=where, file=scene.file)
     kd, kb = 1.0 + e * R / r, -e * R / r
     dx, dy = C0[0] - O[0], C0[1] - O[1]
@@ -310,8 +310,53 @@ class RollingWheel(Step):
         return position, velocity_, acceleration_
 
     def bind_instant(self, prm):
-        """The three phases in a row (the default: the same formulas)."""
-        return Step.bind_instant(self, prm)
+        """The three phases in a row for one instant, the same formulas as ``bind`` (its
+        intermediates passed on: the centre, the wheel's angle, omega)."""
+        C, X, W, i, step = self.centre, self.rim, self.wheel, self.index, self
+        ell, r = prm[0], prm[1]
+        O, base = self.base_centre, self.base
+        cos, sin = math.cos, math.sin
+        if self.on == "line":
+            tx, ty = -prm[5], prm[4]  # t = perp(m)
+
+            def instant(m):
+                P, V, A = m.P, m.V, m.A
+                cx, cy = P[C]
+                step._check(cx, cy, prm, m.ctx)
+                phi = step._phi(cx, cy, prm, m.ctx)
+                x, y = cx + ell * cos(phi), cy + ell * sin(phi)
+                P[X] = (x, y)
+                rx, ry = x - cx, y - cy  # as the phases read it back (the same bits)
+                m.cond[i] = 1.0
+                vcx, vcy = V[C]
+                acx, acy = A[C]
+                w, al = line_rates(tx, ty, r, vcx, vcy, acx, acy)
+                vx, vy, ax, ay = rim_motion(rx, ry, w, al, vcx, vcy, acx, acy)
+                m.W[W], m.Al[W] = w, al
+                V[X], A[X] = (vx, vy), (ax, ay)
+            return instant
+        kd, kb, phi0, th0, K = prm[3], prm[4], prm[5], prm[6], prm[7]
+
+        def instant(m):
+            P, V, A = m.P, m.V, m.A
+            cx, cy = P[C]
+            ox, oy = P[O]
+            ctx = m.ctx
+            step._check(cx, cy, prm, ctx)
+            phi = phi0 + K * (ctx.theta - th0)
+            x, y = cx + ell * cos(phi), cy + ell * sin(phi)
+            P[X] = (x, y)
+            rx, ry = x - cx, y - cy  # as the phases read it back (the same bits)
+            m.cond[i] = 1.0
+            (vcx, vcy), (vox, voy) = V[C], V[O]
+            (acx, acy), (aox, aoy) = A[C], A[O]
+            w, al = circle_rates(cx - ox, cy - oy, vcx - vox, vcy - voy, acx - aox, acy - aoy,
+                                 kd, kb, m.W[base] if base else 0.0,
+                                 m.Al[base] if base else 0.0)
+            vx, vy, ax, ay = rim_motion(rx, ry, w, al, vcx, vcy, acx, acy)
+            m.W[W], m.Al[W] = w, al
+            V[X], A[X] = (vx, vy), (ax, ay)
+        return instant
 
     rounding = 8.0
 
