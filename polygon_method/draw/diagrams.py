@@ -172,13 +172,13 @@ def _step_shape(sk, shape, s, tag):
     if kind == "ground line":
         (x, y), (ux, uy), (nx, ny) = (shape[1][0] / s, shape[1][1] / s), shape[2], shape[3]
         a, b = (x - 2.0 * ux, y - 2.0 * uy), (x + 2.0 * ux, y + 2.0 * uy)
-        sk.line([a, b], gid=f"ground-line-{tag}", lw=1.0, z=2)
+        sk.line([a, b], gid=f"rolling-line-{tag}", lw=1.0, z=2)
         hatch = []
         for i in range(14):
             t = -1.85 + i * 3.7 / 13
             p = (x + t * ux, y + t * uy)
             hatch.append((p, (p[0] - 0.18 * nx - 0.18 * ux, p[1] - 0.18 * ny - 0.18 * uy)))
-        sk.segments(hatch, gid=f"ground-line-{tag}-hatch", lw=0.5, z=2)
+        sk.segments(hatch, gid=f"rolling-line-{tag}-hatch", lw=0.5, z=2)
         return None
     if kind == "contact":
         return (shape[1][0] / s, shape[1][1] / s)
