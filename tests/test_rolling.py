@@ -268,3 +268,26 @@ speed = "10.5 rad/s cw"
     assert dyad_plan.steps[1].kind == "dyad"
     for sc in (planet, wheel):
         assert cost(sc, "rolling") <= 2.0 * d
+
+
+def test_check_keys_and_the_contact_at_rest_slip():
+    """aI_CP is omega^2 r (the 50-digit-free closed form); an answer of 0 for it, and a_P
+    found as if the contact point were at rest (|a_P - a_I|), are diagnosed as that slip."""
+    from polygon_method.check import check_answers
+    from polygon_method.scene import parse_answers
+    path = HERE.parent / "worked_problems" / "rolling_wheel_rod_slider.toml"
+    sc = load_scene(path)
+    sol = solve(sc)
+    I, vI, aI = next(st.contact_motion(sol) for st in sol.plan.steps
+                     if st.contact_motion(sol) is not None)
+    at_rest = math.hypot(sol.A["P"][0] - aI[0], sol.A["P"][1] - aI[1])
+    _, answers = parse_answers(f'[answers]\naI_CP = 0\nvI_CP = 0\na_P = "{at_rest:.4f} m/s^2"\n'
+                               f'omega_CP = "{abs(sol.W["CP"]):.4f} rad/s cw"\n', sc)
+    v = {x.key: x for x in check_answers(sol, answers)}
+    assert v["aI_CP"].correct == pytest.approx(sol.W["CP"] ** 2 * 0.05, rel=1e-12)
+    assert not v["aI_CP"].ok and v["aI_CP"].mistake == "contact_acceleration_zero"
+    assert v["vI_CP"].ok  # no slip: at rest
+    assert not v["a_P"].ok and v["a_P"].mistake == "contact_acceleration_zero"
+    assert v["omega_CP"].ok
+    with pytest.raises(PolygonMethodError, match="no wheel of \\[rolling\\]"):
+        parse_answers('[answers]\naI_AC = 1\n', sc)

@@ -474,27 +474,22 @@ class _Diagnoser:
         return out
 
     def contact_at_rest(self, ans):
-        """The classic slip of rolling: the contact point's acceleration taken as zero (its
-        velocity is zero, its acceleration omega^2 r towards the centre is not), for the
-        contact itself and for a point of the wheel found from it."""
-        sol = self.sol
-        words = ("the contact point's acceleration taken as zero: rolling without slip makes "
-                 "its velocity zero, not its acceleration (omega^2 r towards the centre)")
+        """Rolling's classic slip: the contact point's acceleration taken as zero (for the
+        contact, and for a point of the wheel found from it)."""
+        sol, X = self.sol, ans.names[0]
+        c = ("contact_acceleration_zero", "the contact point's acceleration taken as zero: "
+             "no slip makes its velocity zero, not its acceleration (omega^2 r towards the "
+             "centre)")
         if ans.kind == "aI":
-            return [_Candidate(0.0, "contact_acceleration_zero", words)]
-        X = ans.names[0]
+            return [_Candidate(0.0, *c)]
         out = []
-        if len(ans.names) != 1:
-            return out
-        for st in sol.plan.steps:
+        for st in sol.plan.steps if len(ans.names) == 1 else ():
             got = st.contact_motion(sol)
             on = {p for w in st.links for p in sol.scene.link(w).points}
-            on |= {c.name for c in sol.scene.points if c.link in st.links}
-            if got is None or X not in on:
-                continue
-            ax, ay = sol.A[X]
-            out.append(_Candidate(math.hypot(ax - got[2][0], ay - got[2][1]),
-                                  "contact_acceleration_zero", words))
+            if got is not None and X in on | {q.name for q in sol.scene.points
+                                              if q.link in st.links}:
+                (ax, ay), (bx, by) = sol.A[X], got[2]
+                out.append(_Candidate(math.hypot(ax - bx, ay - by), *c))
         return out
 
     def own_slip(self, ans):

@@ -445,10 +445,26 @@ class RollingWheel(Step):
         return "above"
 
     def position_words(self, L, which, angle_deg):
-        r = self.dims[1]
+        r, ell = self.dims[1], self.dims[0]
+        phi = math.degrees(self.dims[6] if self.on == "line" else self.dims[5])
+        how = ("the wheel turns 1/r rad for each unit its centre moves along the line"
+               if self.on == "line" else
+               f"the wheel turns {self.dims[7]:.4g} times the crank's angle, by the gear ratio")
         return (f"{self.rim}: the wheel {self.wheel} (radius {L(r)}) rolls without slipping on "
-                f"{self.where}; {self.centre}{self.rim} = {L(self.dims[0])} turned as far as "
-                "the rolling carries it")
+                f"{self.where}; from {self.centre} draw {self.centre}{self.rim} = {L(ell)} at "
+                f"{phi:.4g} deg ({how})")
+
+    def _omega_words(self, sol, w, vI):
+        """How omega follows from no slip at the contact I, in the book's words."""
+        C, W, r = self.centre, self.wheel, self.dims[1]
+        sense = f"{abs(w):.4g} rad/s {'ccw' if w >= 0 else 'cw'}"
+        if self.on != "gear":
+            return (f"no slip: the wheel's point at the contact I with {self.where} is at rest, "
+                    f"so I is the wheel's instantaneous centre and omega_{W} = v_{C} / {C}I = "
+                    f"{math.hypot(*sol.V[C]):.4g} / {r:.4g} = {sense}")
+        return (f"no slip: the wheel's point at the pitch point I moves as the gear's, v_I = "
+                f"omega_{self.base} x {self.base_centre}I = {math.hypot(*vI):.4g} m/s; "
+                f"omega_{W} = (v_I - v_{C}) / {C}I, perpendicular to {C}I, = {sense}")
 
     def construction(self, sol, ph):
         C, X, W = self.centre, self.rim, self.wheel
@@ -456,15 +472,10 @@ class RollingWheel(Step):
         cond = sol.conditions.get(self.index, 1.0)
         I, vI, aI = self.contact_motion(sol)
         w, al, r = sol.W[W], sol.Al[W], self.dims[1]
-        base = ("the ground's, zero" if self.on != "gear" else
-                f"that of the gear {self.base} there, omega_{self.base} x {self.base_centre}I = "
-                f"{math.hypot(*vI):.4g} m/s")
         if ph == "velocity":
             V = sol.V
-            text = (f"no slip: the wheel's point at the contact I has the velocity of {base}; "
-                    f"so omega_{W} = {abs(w):.4g} rad/s {'ccw' if w >= 0 else 'cw'} "
-                    f"(v_{C} along the contact / r, r = {r:.4g} m); from {pole_text(sol, C, ph)}"
-                    f" draw {lab(C)}{lab(X)} perpendicular to {C}{X} = omega x {C}{X} = "
+            text = (self._omega_words(sol, w, vI) + f"; from {pole_text(sol, C, ph)} draw "
+                    f"{lab(C)}{lab(X)} perpendicular to {C}{X} = omega x {C}{X} = "
                     f"{abs(w) * self.dims[0]:.4g} m/s")
             found = (relative(sol, X, C, V, ph), absolute(sol, X, V, ph))
             return Construction(self.index, self.title, ph, lab(X), V[X], (), (), found, text,
@@ -474,11 +485,16 @@ class RollingWheel(Step):
         tan = Vector(cen.end, A[X], f"{lab(X)}t", "tangential", f"tangential of {X}{C}",
                      f"alpha x {C}{X} = {abs(al) * self.dims[0]:.4g} m/s^2, "
                      f"perpendicular to {C}{X}")
+        where = (f"omega^2 r = {w * w * r:.4g} m/s^2 towards the centre {C}" if self.on == "line"
+                 else f"{math.hypot(*aI):.4g} m/s^2")
+        why = (f"the tangential acceleration of {C} along the contact, over r"
+               if self.on != "gear" else "the two gears' points at I have one tangential "
+               "acceleration")
         text = (f"alpha_{W} = {abs(al):.4g} rad/s^2 {'ccw' if al >= 0 else 'cw'} from the no-slip "
-                f"relation; from {pole_text(sol, C, ph)} draw the centripetal component "
-                f"{cen.text}, then the tangential {tan.text}; its end is {lab(X)}. The contact "
-                f"point's acceleration is not zero: {math.hypot(*aI):.4g} m/s^2"
-                + (f" = omega^2 r, towards the centre {C}" if self.on == "line" else ""))
+                f"relation ({why}); from "
+                f"{pole_text(sol, C, ph)} draw the centripetal component {cen.text}, then the "
+                f"tangential {tan.text}; its end is {lab(X)}. The contact point I is not at rest "
+                f"in acceleration: a_I = {where}")
         found = (cen, tan, relative(sol, X, C, A, ph), absolute(sol, X, A, ph))
         return Construction(self.index, self.title, ph, lab(X), A[X], (cen,), (), found, text,
                             cond)
