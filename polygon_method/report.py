@@ -68,6 +68,16 @@ def solution_text(sol: Solution) -> str:
             guide = getattr(s, "label", None) or getattr(s, "guide", "")
             lines.append(f"{s.point:<8} {guide:<16} {vs:<18.5g} {a_s:<20.5g} "
                          f"{_vec(*cor, scale=sol.scales['a']):<24}")
+    contacts = [(st.links[0], st.contact_motion(sol)) for st in sol.plan.steps]
+    contacts = [(k, c) for k, c in contacts if c is not None]
+    if contacts:  # the wheel's point at each contact: no slip, not at rest in acceleration
+        lines.append("")
+        lines.append(f"{'wheel':<8} {'contact (' + sc.units + ')':<24} {'velocity (m/s)':<24} "
+                     f"{'acceleration (m/s^2)':<24}")
+        for k, (I, v, a) in contacts:
+            pos = f"({_coord(I[0] / u)}, {_coord(I[1] / u)})"
+            lines.append(f"{k:<8} {pos:<24} {_vec(*v, scale=sol.scales['v']):<24} "
+                         f"{_vec(*a, scale=sol.scales['a']):<24}")
     if sc.pins:
         lines.append("")
         lines.append("pin   radius (" + sc.units + ")  rubbing velocity (m/s)")

@@ -154,6 +154,11 @@ class Solution(Motion):
                 d["pins"][name] = entry
         if sc.loads:
             d["input_torque"] = self.input_torque
+        contacts = {st.links[0]: st.contact_motion(self) for st in self.plan.steps}
+        contacts = {k: c for k, c in contacts.items() if c is not None}
+        if contacts:  # the wheel's point at each rolling contact
+            d["rolling"] = {k: {"contact": list(c[0]), "velocity": list(c[1]),
+                                "acceleration": list(c[2])} for k, c in contacts.items()}
         warnings = list(self.warnings)
         bodies = 1 + sum(len(st.bodies()) for st in self.plan.steps)
         if bodies <= JSON_BODIES:

@@ -291,3 +291,44 @@ def test_check_keys_and_the_contact_at_rest_slip():
     assert v["omega_CP"].ok
     with pytest.raises(PolygonMethodError, match="no wheel of \\[rolling\\]"):
         parse_answers('[answers]\naI_AC = 1\n', sc)
+
+
+def test_random_planets_and_gear_pairs_against_the_gear_ratio_and_time_derivatives():
+    """Random dimensions (seeded): a planet on a fixed sun or in a fixed ring, the arm the
+    crank, with its point at a random angle; the gear ratio and the time derivatives of the
+    point's position."""
+    rng = np.random.default_rng(20)
+    for _ in range(30):
+        inside = bool(rng.integers(2))
+        rp = float(rng.uniform(10, 60))
+        arm = float(rng.uniform(rp + 5, 150)) if not inside else float(rng.uniform(5, 150))
+        w = float(rng.uniform(1, 30)) * (1 if rng.integers(2) else -1)
+        al = float(rng.uniform(0, 50))
+        sc = parse_scene(f"""[ground]
+O = [0, 0]
+[links]
+OA = {arm}
+AP = {rp * float(rng.uniform(0.3, 1.5))}
+[rolling]
+AP = {{ on = "O", radius = {rp}{", inside = true" if inside else ""}, angle = {float(rng.uniform(0, 360))} }}
+[input]
+crank = "OA"
+angle = {float(rng.uniform(0, 360))}
+speed = "{abs(w)} rad/s {'ccw' if w > 0 else 'cw'}"
+acceleration = "{al} rad/s^2 ccw"
+""")
+        sol = solve(sc)
+        R = (arm + rp) / rp if inside else (arm - rp) / rp
+        ratio = 1 - R if inside else 1 + R
+        assert sol.W["AP"] == pytest.approx(ratio * w, rel=1e-11)
+        assert sol.Al["AP"] == pytest.approx(ratio * al, rel=1e-11)
+        h = 1e-3 / abs(w)
+        th = _theta_series(sc, h)
+        m = evaluate(compile_plan(sc), theta=th, array=True, upto=0)
+        for k in (0, 1):
+            x = np.asarray(m.P["P"][k], dtype=float)
+            v = (x[0] - 8 * x[1] + 8 * x[3] - x[4]) / (12 * h)
+            a = (-x[0] + 16 * x[1] - 30 * x[2] + 16 * x[3] - x[4]) / (12 * h * h)
+            vmax, amax = math.hypot(*sol.V["P"]) + 1e-3, math.hypot(*sol.A["P"]) + 1e-3
+            assert abs(v - sol.V["P"][k]) <= 1e-7 * vmax
+            assert abs(a - sol.A["P"][k]) <= 1e-5 * amax
