@@ -85,6 +85,8 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
     contacts = []
     for st in sol.plan.steps:
         for shape in st.shapes(sol.P):
+            if shape[0] == "circle":  # about a point of the mechanism
+                shape = ("circle", sol.P[shape[1]], shape[2])
             c = _step_shape(sk, shape, s, f"{st.index + 1}-{len(contacts)}")
             if c is not None:
                 contacts.append(c)

@@ -246,7 +246,7 @@ class Step:
 
     def shapes(self, P):
         """What a configuration diagram draws for this step besides its links, in metres:
-        ``("circle", centre, radius)`` (a pitch circle, chain-dotted), ``("ground line",
+        ``("circle", centre point's name, radius)`` (a pitch circle, chain-dotted), ``("ground line",
         point, direction, normal)`` (a fixed line, hatched on the side away from
         ``normal``), ``("contact", point)`` (a rolling contact). By default none."""
         return ()

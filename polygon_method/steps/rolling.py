@@ -396,11 +396,11 @@ class RollingWheel(Step):
         """The wheel's pitch circle, what it rolls on (a circle, or the ground line hatched
         on the far side) and the contact point."""
         I, (mx, my) = self.contact(P)
-        out = [("circle", P[self.centre], self.dims[1])]
+        out = [("circle", self.centre, self.dims[1])]
         if self.on == "line":
             out.append(("ground line", I, (-my, mx), (mx, my)))
         else:
-            out.append(("circle", P[self.base_centre], self.dims[2]))
+            out.append(("circle", self.base_centre, self.dims[2]))
         out.append(("contact", I))
         return tuple(out)
 
