@@ -268,6 +268,7 @@ speed = "10.5 rad/s cw"
     assert dyad_plan.steps[1].kind == "dyad"
     for sc in (planet, wheel):
         assert cost(sc, "rolling") <= 2.0 * d
+    assert cost(wheel, "wheel centre") <= 2.0 * d
 
 
 def test_check_keys_and_the_contact_at_rest_slip():

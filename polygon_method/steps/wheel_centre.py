@@ -18,6 +18,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ..errors import TOL
 from ..numbers import in_units
 from .base import (Construction, DirectionLine, Step, Vector, absolute, centripetal,
                    image_label, perp, pole_text, relative, sub, unit)
@@ -141,8 +142,29 @@ class WheelCentre(Step):
         return position, velocity_, acceleration_
 
     def bind_instant(self, prm):
-        """The three phases in a row, its condition checked (the default)."""
-        return Step.bind_instant(self, prm)
+        """The three phases in a row for one instant, its condition checked (the same
+        formulas as ``bind``, the intermediates passed on)."""
+        X, B, link, i, sigma, step = self.point, self.b, self.link, self.index, self.sigma, self
+        ell, qx, qy, ux, uy = prm
+
+        def instant(m):
+            P = m.P
+            bx, by = P[B]
+            x, y, c = place(bx, by, qx, qy, ux, uy, ell, sigma, m.ctx, step)
+            P[X] = (x, y)
+            m.cond[i] = c
+            if c < TOL.singular:
+                raise step.singular(c)
+            rx, ry = x - bx, y - by
+            vbx, vby = m.V[B]
+            d = rx * ux + ry * uy
+            w, _, vx, vy = velocity(rx, ry, ux, uy, -vbx, -vby, vbx, vby, d)
+            m.W[link] = w
+            m.V[X] = (vx, vy)
+            al, _, ax, ay = acceleration(rx, ry, ux, uy, 0.0, 0.0, w, *m.A[B], d)
+            m.Al[link] = al
+            m.A[X] = (ax, ay)
+        return instant
 
     rounding = 48.0
 
