@@ -333,3 +333,22 @@ acceleration = "{al} rad/s^2 ccw"
             vmax, amax = math.hypot(*sol.V["P"]) + 1e-3, math.hypot(*sol.A["P"]) + 1e-3
             assert abs(v - sol.V["P"][k]) <= 1e-7 * vmax
             assert abs(a - sol.A["P"][k]) <= 1e-5 * amax
+
+
+def test_a_centre_off_its_line_at_the_stated_angle_is_the_scenes_error(tmp_path):
+    out = _run("""[ground]
+O = [0, 0]
+[links]
+OC = 50
+CP = 40
+[rolling]
+CP = { on = "horizontal", through = "O" }
+[input]
+crank = "OC"
+angle = 90
+speed = "10 rad/s ccw"
+""", tmp_path)
+    assert out.returncode == 2
+    line = out.stderr.strip()
+    assert "\n" not in line and "[rolling] CP (line 7)" in line
+    assert "is 50 mm from the horizontal line, not its radius 40 mm" in line

@@ -88,7 +88,7 @@ def recognise(g, name):
         (cx, cy), (tx, ty), (mx, my) = g.P[pr.centre], pr.through, pr.m
         s0 = (cx - tx) * -my + (cy - ty) * mx
         return RollingWheel(g.next_index, pr.wheel, pr.centre, name, pr.on, pr.label,
-                            _params(sc, g.bodies, pr, s0=s0))
+                            _params(sc, g.bodies, pr, s0=s0), unit=g.unit, uname=g.uname)
     if pr.on == "gear":
         base = sc.link(pr.base)
         if not (g.known_link(base) and base.key in g.used_links):
@@ -117,7 +117,7 @@ def recognise(g, name):
     return RollingWheel(g.next_index, pr.wheel, pr.centre, name, pr.on, pr.label,
                         _params(sc, g.bodies, pr, kd_rate=kd_rate, kb_rate=kb_rate),
                         base=pr.base, base_centre=O, inside=pr.inside, kd_rate=kd_rate,
-                        kb_rate=kb_rate)
+                        kb_rate=kb_rate, unit=g.unit, uname=g.uname)
 
 
 def _params(scene, bodies, pr, *, s0=None, kd_rate=0.0, kb_rate=0.0):
@@ -178,6 +178,8 @@ class RollingWheel(Step):
     inside: bool = False
     kd_rate: float = 0.0  # the line of centres' turning per radian of the crank (0 or 1)
     kb_rate: float = 0.0  # the base's turning per radian of the crank
+    unit: float = 1e-3  # the scene's length unit (m), for messages
+    uname: str = "mm"
 
     kind = "rolling"
 
@@ -225,9 +227,13 @@ class RollingWheel(Step):
         return max(self.dims[0], self.dims[1], 1e-9)
 
     def place(self, P, prm, ctx, sigma=None):
+        """The point at the compiler's instant (the scene's own): a centre off its line or
+        pitch circle there is the scene's error, named by its [rolling] key."""
         cx, cy = P[self.centre]
         phi = self._phi(cx, cy, prm, ctx)
-        self._check(cx, cy, prm, ctx)
+        g = self.gap(cx, cy, prm)
+        if not ctx.array and abs(g) > _GAP:
+            raise SceneError(self._off_words(cx, cy, prm), key=f"[rolling] {self.wheel}")
         ell = prm[0]
         return cx + ell * ctx.cos(phi), cy + ell * ctx.sin(phi), 1.0
 
@@ -409,6 +415,22 @@ class RollingWheel(Step):
         I, _ = self.contact(P)
         return ((self.base or "ground", self.wheel, I,
                  f"the contact of {self.wheel} rolling on {self.where} (no slip)"),)
+
+    def _off_words(self, cx, cy, prm):
+        r = prm[1]
+        if self.on == "line":
+            tx, ty, mx, my = prm[2:6]
+            d = (cx - tx) * mx + (cy - ty) * my
+            return (f"at the stated crank angle the centre {self.centre} of wheel {self.wheel} "
+                    f"is {in_units(d, self.unit)} {self.uname} from {self.where}, not its radius "
+                    f"{in_units(r, self.unit)} {self.uname}: "
+                    "the wheel cannot roll on it there (check the line's through, the radius "
+                    "and the links that place the centre)")
+        dist = math.hypot(cx - prm[8], cy - prm[9])
+        return (f"at the stated crank angle the centre {self.centre} of wheel {self.wheel} is "
+                f"{in_units(dist, self.unit)} {self.uname} from {self.base_centre}: the contact "
+                "leaves the pitch "
+                "point (check the radii)")
 
     # ----- words
     def why(self, g):
