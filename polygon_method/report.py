@@ -68,8 +68,8 @@ def solution_text(sol: Solution) -> str:
             guide = getattr(s, "label", None) or getattr(s, "guide", "")
             lines.append(f"{s.point:<8} {guide:<16} {vs:<18.5g} {a_s:<20.5g} "
                          f"{_vec(*cor, scale=sol.scales['a']):<24}")
-    contacts = [(st.links[0], st.contact_motion(sol)) for st in sol.plan.steps]
-    contacts = [(k, c) for k, c in contacts if c is not None]
+    contacts = [(st, st.contact_motion(sol)) for st in sol.plan.steps]
+    contacts = [(st.bodies()[0], c) for st, c in contacts if c is not None]
     if contacts:  # the wheel's point at each contact: no slip, not at rest in acceleration
         lines.append("")
         lines.append(f"{'wheel':<8} {'contact (' + sc.units + ')':<24} {'velocity (m/s)':<24} "

@@ -154,8 +154,11 @@ class Solution(Motion):
                 d["pins"][name] = entry
         if sc.loads:
             d["input_torque"] = self.input_torque
-        contacts = {st.links[0]: st.contact_motion(self) for st in self.plan.steps}
-        contacts = {k: c for k, c in contacts.items() if c is not None}
+        contacts = {}
+        for st in self.plan.steps:
+            c = st.contact_motion(self)
+            if c is not None:
+                contacts[st.bodies()[0]] = c
         if contacts:  # the wheel's point at each rolling contact
             d["rolling"] = {k: {"contact": list(c[0]), "velocity": list(c[1]),
                                 "acceleration": list(c[2])} for k, c in contacts.items()}
