@@ -72,7 +72,7 @@ def solution_text(sol: Solution) -> str:
     contacts = [(st.bodies()[0], c) for st, c in contacts if c is not None]
     if contacts:  # the wheel's point at each contact: no slip, not at rest in acceleration
         lines.append("")
-        lines.append(f"{'wheel':<8} {'contact (' + sc.units + ')':<24} {'velocity (m/s)':<24} "
+        lines.append(f"{'rolling':<8} {'contact (' + sc.units + ')':<24} {'velocity (m/s)':<24} "
                      f"{'acceleration (m/s^2)':<24}")
         for k, (I, v, a) in contacts:
             pos = f"({_coord(I[0] / u)}, {_coord(I[1] / u)})"

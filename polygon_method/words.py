@@ -42,6 +42,10 @@ def given(sc) -> list:
             out.append(f"Slider {s.point} moves on a fixed {path} through "
                        f"{_at(sc, s.through)}.")
     for r in getattr(sc, "rolling", ()):  # a wheel or gear rolling without slip
+        if r.on == "rack":
+            out.append(f"The block {r.rim} is a rack meshing with {r.label}; its point is at "
+                       f"{_at(sc, sc.slider(r.rim).through)} at the instant shown.")
+            continue
         if r.on == "gear":
             what = (f"The gear {r.wheel} (centre {r.centre}, pitch radius "
                     f"{_len(sc, r.radius)}) meshes {'internally ' if r.inside else ''}with "

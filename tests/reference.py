@@ -17,6 +17,9 @@ the coordinates ``q`` (x, y of every non-ground point):
   gear ratio: ``K = (1 + e R/r) K_arm - e (R/r) K_base`` (e = +1 outside, -1 inside; K_arm 1
   when the crank carries the centre, K_base 1 for the crank, the K of a wheel for a wheel).
   Evaluated at the scene's own angle, where phi = phi0 (s0 is C's place there).
+* a rack R on a fixed path (T, u) meshing with a pinion about O:  ``(R - T).u - k K (th - th0)
+  = 0`` with k = -(T - O).perp(u) (the pinion's point at the pitch point moves as the rack)
+  and K the pinion's turns per turn of the crank (with the path's equation above).
 
 Positions: Newton-Raphson from the solver's float positions.  Every constraint is at most
 quadratic in ``q``, so along a motion ``f'' = J q'' + gamma`` with a closed-form ``gamma``:
@@ -114,6 +117,13 @@ def _equations(scene):
             eqs.append(("path", (sl.point, _v(sl.through), _unit(_v(sl.u)))))
     rates = {inp.crank: mpf(1)}
     for pr in getattr(scene, "rolling", ()):
+        if pr.on == "rack":
+            sl = scene.slider(pr.rim)
+            T, u = _v(sl.through), _unit(_v(sl.u))
+            O = _v(scene.ground[pr.base_centre])
+            k = -_dot(_sub(T, O), _perp(u))
+            eqs.append(("rack", (pr.rim, T, u, k, pr.base, rates, mpf(inp.angle))))
+            continue
         ell = mpf(scene.link(pr.wheel).length)
         r = mpf(pr.radius)
         if pr.on == "line":
@@ -174,6 +184,10 @@ def _eval(kind, d, P, th):
         a, b = _sub(P[x], P[g1]), _sub(P[g2], P[g1])
         return _cross(a, b), [(x, b[1], -b[0]), (g2, -a[1], a[0]),
                               (g1, a[1] - b[1], b[0] - a[0])]
+    if kind == "rack":
+        x, T, u, k, base, rates, th0 = d
+        K = rates.get(base, 0)  # (at the scene's own angle th = th0 the term is zero)
+        return _dot(_sub(P[x], T), u) - k * K * (th - th0), [(x, u[0], u[1])]
     if kind == "wheelline":
         x, T, m, r = d
         return _dot(_sub(P[x], T), m) - r, [(x, m[0], m[1])]
@@ -276,13 +290,15 @@ def reference_solution(scene, guess_positions):
 
     rates = {inp.crank: mpf(1)}
     for pr in getattr(scene, "rolling", ()):  # in the scene's order: a gear before its mate
-        if pr.on != "line":
+        if pr.on not in ("line", "rack"):
             _wheel_rate(scene, pr, rates, P)
     ft = mpmath.matrix(n, 1)
     for i, (kind, d) in enumerate(eqs):
         if kind == "crank":
             o, tip, _, c = d
             ft[i] = -w * _perp(_sub(P[tip], P[o]))[c]
+        elif kind == "rack":
+            ft[i] = -d[3] * rates[d[4]] * w
         elif kind == "rim" and d[4][0] == "circle":
             x, cen, ell, _, how, c = d
             e = _unit(_sub(P[x], P[cen]))
@@ -303,6 +319,8 @@ def reference_solution(scene, guess_positions):
         elif kind == "guide":
             x, g1, g2 = d
             gamma[i] = 2 * _cross(_sub(V[x], V[g1]), _sub(V[g2], V[g1]))
+        elif kind == "rack":
+            gamma[i] = -d[3] * rates[d[4]] * al
         elif kind == "rim":  # X - C - l e(phi): gamma = l phi'^2 e - l perp(e) phi_tt
             x, cen, ell, _, how, c = d
             e = _unit(_sub(P[x], P[cen]))

@@ -352,3 +352,44 @@ speed = "10 rad/s ccw"
     line = out.stderr.strip()
     assert "\n" not in line and "[rolling] CP (line 7)" in line
     assert "is 50 mm from the horizontal line, not its radius 40 mm" in line
+
+
+def test_a_pinion_between_two_racks_drives_them_opposite_ways():
+    """vs = -(signed distance of the pitch line from O) omega: the rack below the pinion
+    moves with the pinion's lowest point, the one above the other way; as likewise."""
+    sc = load_scene(HERE / "textbook" / "rolling_pinion_two_racks.toml")
+    sol = solve(sc)
+    w, al = sc.input.omega, sc.input.alpha
+    assert sol.S["R1"][0] == pytest.approx(0.04 * w, rel=1e-12)
+    assert sol.S["R2"][0] == pytest.approx(-0.04 * w, rel=1e-12)
+    assert sol.S["R1"][1] == pytest.approx(0.04 * al, rel=1e-12)
+    assert sol.V["R1"][1] == 0.0 and sol.A["R2"][1] == 0.0
+
+
+@pytest.mark.parametrize("sliders,rolling,words", [
+    ('R = { path = "horizontal" }', 'R = { on = "OA" }', "needs its place: through"),
+    ('', 'R = { on = "OA" }', "a rack is a block on a fixed path"),
+    ('R = { path = "horizontal", through = [0, -40] }', 'R = { on = "OA", radius = 4 }',
+     "unknown key 'radius' for a rack"),
+    ('R = { path = "horizontal", through = [0, -40] }', 'R = { on = "OA", on_radius = 30 }',
+     "the contact leaves the pitch point"),
+])
+def test_bad_racks_get_one_clear_line(sliders, rolling, words, tmp_path):
+    out = _run(f"""[ground]
+O = [0, 0]
+[links]
+OA = 40
+RS = 100
+[sliders]
+{sliders}
+S = {{ path = "vertical", through = [90, 0] }}
+[rolling]
+{rolling}
+[input]
+crank = "OA"
+angle = 30
+speed = "10 rad/s ccw"
+""", tmp_path)
+    assert out.returncode == 2, out.stderr
+    assert len(out.stderr.strip().splitlines()) == 1 and words in out.stderr, out.stderr
+    assert "[rolling] R" in out.stderr

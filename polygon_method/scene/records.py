@@ -109,7 +109,9 @@ class RollingPair:
     - a fixed line (``on = "line"``) through ``through`` along unit ``u``, the wheel on the
       side of unit normal ``m`` (from the line towards the centre);
     - a fixed circle (``on = "circle"``) about ground point ``base_centre``;
-    - a gear (``on = "gear"``): link ``base`` turning about its ground end ``base_centre``.
+    - a gear (``on = "gear"``): link ``base`` turning about its ground end ``base_centre``;
+    - a rack (``on = "rack"``): the block ``rim`` on a fixed path (its pitch line), meshing
+      with the gear ``base`` (``wheel`` is the block's point, ``centre`` None).
 
     ``inside``: the wheel rolls inside the circle (a ring, an internal gear).
     ``base_radius``: the circle's radius as the problem states it (None: from the centre
@@ -210,6 +212,8 @@ class Scene:
             seen.update(dict.fromkeys(link.points))
         for cp in self.points:
             seen[cp.name] = None
+        for r in self.rolling:  # a rack's point, on no link
+            seen[r.rim] = None
         object.__setattr__(self, "_names", tuple(seen))
         try:
             key = (self.units, tuple(self.ground.items()), self.links, self.points,

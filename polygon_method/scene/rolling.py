@@ -35,6 +35,36 @@ def _unit_at(ang):
     return (math.cos(ang), math.sin(ang))
 
 
+def _rack(rd, key, spec, ground, sliders, _suggest):
+    """``R = { on = "O-A" }``: the block R on a fixed path is a rack, its pitch line the
+    path, meshing with the gear O-A; the path's ``through`` is where R is at the stated
+    crank angle."""
+    sl = next((s for s in sliders if s.point == key), None)
+    if sl is None or getattr(sl, "u", None) is None:
+        raise rd.error(f"a rack is a block on a fixed path: add {key} to [sliders] with path "
+                       "and through (where the rack's point is at the instant shown)",
+                       "rolling", key)
+    if sl.through[1] is None:
+        raise rd.error(f"the rack {key} needs its place: through = [x, y] in [sliders] (where "
+                       "its point is at the instant shown)", "rolling", key)
+    for k in spec:
+        if k not in ("on", "on_radius"):
+            raise rd.error(f"unknown key '{k}' for a rack{_suggest(k, ('on', 'on_radius'))}; "
+                           "a rack has on (its pinion) and on_radius", "rolling", key)
+    if "on" not in spec:
+        raise rd.error(f"the rack {key} has no pinion: add on = \"O-A\" (a gear turning "
+                       "about a ground point)", "rolling", key)
+    base, bpts = rd.find_link(spec["on"], "rolling", key)
+    fixed = [p for p in bpts if p in ground]
+    if len(fixed) != 1:
+        raise rd.error(f"the pinion {base.key} must turn about a fixed centre: one of its "
+                       "ends a ground point", "rolling", key)
+    return RollingPair(key, None, key, 0.0, "rack", f"the pinion {base.key}", base=base.key,
+                       base_centre=fixed[0],
+                       base_radius=(rd.length(spec["on_radius"], "rolling", key)
+                                    if "on_radius" in spec else None))
+
+
 def read_rolling(rd, ground, sliders, points) -> list:
     """The [rolling] table's pairs, checked (``rd`` is the scene reader)."""
     from .tables import _suggest  # the reader's own did-you-mean
@@ -49,6 +79,9 @@ def read_rolling(rd, ground, sliders, points) -> list:
         for k in spec:
             if k not in _KEYS:
                 raise rd.error(f"unknown key '{k}'{_suggest(k, _KEYS)}", "rolling", key)
+        if len(split_name(key)) == 1:  # a rack: a block on a fixed path, on a pinion
+            out.append(_rack(rd, key, spec, ground, sliders, _suggest))
+            continue
         link, pts = rd.find_link(key, "rolling", key)
         centre, rim = pts
         if link.key in wheels:

@@ -14,13 +14,14 @@ dyad         RRR: the joint of two links (or plate sides) to two known points
 slotted      RPR: a link that a block slides along (slotted lever, Whitworth, swivel)
 rolling      a wheel or gear rolling without slip on a line, a fixed circle or a gear
 wheel_centre the centre of a wheel rolling on a line, found from a link pinned to it
+rack         a rack (a block on a fixed path) driven by a pinion without slip
 ============ ===========================================================================
 
 Adding a kind: write its module (a frozen ``Step`` subclass and a ``recognise(g, name)``
 function) and add it to :data:`TIERS`.
 """
 
-from . import carried, dyad, rolling, slider, slotted, wheel_centre
+from . import carried, dyad, rack, rolling, slider, slotted, wheel_centre
 from .base import (Construction, Context, DirectionLine, State, Step, Vector, image_label,
                    image_name, pole_text)
 from .carried import Carried
@@ -33,8 +34,8 @@ from .slotted import SlottedLink, under_label
 #: the recognisers the compiler tries, tier by tier: for each unknown point (in the scene's
 #: order) every kind of the first tier in turn; the next tier only when no point of the
 #: tiers before can be found. The crank is the plan's first step and is not recognised.
-TIERS = ((rolling.recognise, wheel_centre.recognise, carried.recognise, slider.recognise,
-          dyad.recognise),
+TIERS = ((rolling.recognise, wheel_centre.recognise, rack.recognise, carried.recognise,
+          slider.recognise, dyad.recognise),
          (slotted.recognise,))
 
 __all__ = ["TIERS", "Step", "Context", "State", "Crank", "Dyad", "SliderDyad", "SlottedLink",

@@ -80,7 +80,7 @@ def recognise(g, name):
     known."""
     sc = g.scene
     pr = sc.rolling_of(name)
-    if pr is None or pr.centre not in g.P or pr.wheel in g.used_links:
+    if pr is None or pr.on == "rack" or pr.centre not in g.P or pr.wheel in g.used_links:
         return None
     inp = sc.input
     where = f"[rolling] {pr.wheel}"
