@@ -56,10 +56,13 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
         if lk.p in sc.ground and lk.q in sc.ground:
             sk.line([P[lk.p], P[lk.q]], gid=f"frame-{lk.key}", color="#555555", lw=0.6,
                     dashes=(6, 2, 1, 2), z=1)
-    # sliders on fixed paths: line of stroke, guide wall with hatching
+    # sliders on fixed paths: line of stroke, guide wall with hatching (on the side away
+    # from its rod, or from what a step keeps clear: a rack's pinion)
+    clear = {sh[1]: (sh[2][0] / s, sh[2][1] / s) for st in sol.plan.steps
+             for sh in st.shapes(sol.P) if sh[0] == "guide clear of"}
     for sl in sc.sliders:
         if isinstance(sl, FixedPath):
-            _fixed_guide(sk, sc, sl, P, s)
+            _fixed_guide(sk, sc, sl, P, s, clear.get(sl.point))
     # links as bars, a link with carried points as a plate
     for lk in sc.links:
         if lk.p in sc.ground and lk.q in sc.ground:
@@ -218,7 +221,7 @@ def _rect(c, u, length, width):
             for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
 
 
-def _fixed_guide(sk, sc, sl, P, s):
+def _fixed_guide(sk, sc, sl, P, s, away=None):
     """The line of stroke (chain-dotted, through the path's given point) and the guide's
     wall on the side away from the connecting link, hatched."""
     X = P[sl.point]
@@ -229,7 +232,8 @@ def _fixed_guide(sk, sc, sl, P, s):
     lo, hi = min(-1.8, t_through - 0.5), max(1.8, t_through + 0.5)
     sk.line([(X[0] + lo * ux, X[1] + lo * uy), (X[0] + hi * ux, X[1] + hi * uy)],
             gid=f"stroke-{sl.point}", color="#555555", lw=0.5, dashes=(6, 2, 1, 2), z=1)
-    rod = next((P[lk.other(sl.point)] for lk in sc.links if sl.point in lk.points), None)
+    rod = away or next((P[lk.other(sl.point)] for lk in sc.links if sl.point in lk.points),
+                       None)
     side = 1.0
     if rod is not None and ((rod[0] - X[0]) * nx + (rod[1] - X[1]) * ny) > 0:
         side = -1.0

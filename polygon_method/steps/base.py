@@ -248,7 +248,9 @@ class Step:
         """What a configuration diagram draws for this step besides its links, in metres:
         ``("circle", centre point's name, radius)`` (a pitch circle, chain-dotted), ``("ground line",
         point, direction, normal)`` (a fixed line, hatched on the side away from
-        ``normal``), ``("contact", point)`` (a rolling contact). By default none."""
+        ``normal``), ``("contact", point)`` (a rolling contact), ``("guide clear of", slider
+        point, position)`` (its guide's wall on the side away from that position: a rack's
+        pinion). By default none."""
         return ()
 
     def produced(self):

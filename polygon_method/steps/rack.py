@@ -191,7 +191,8 @@ class RackStep(Step):
                  f"the pitch point of rack {self.point} and pinion {self.base} (no slip)"),)
 
     def shapes(self, P):
-        return (("circle", self.base_centre, abs(self.dims[4])), ("contact", self.contact(P)))
+        return (("circle", self.base_centre, abs(self.dims[4])), ("contact", self.contact(P)),
+                ("guide clear of", self.point, P[self.base_centre]))
 
     # ----- words
     def why(self, g):
