@@ -5,7 +5,8 @@ the order the construction sets them moving (a block counts as a body). Of the
 ``N = n (n - 1) / 2`` centres, the **primary** ones come from the joints: a pin is the
 centre of the bodies it joins; a block sliding on a straight fixed path has its centre with
 the ground at infinity perpendicular to the path, and a block sliding on a moving link has
-its centre with that link at infinity perpendicular to the link. The others are found by
+its centre with that link at infinity perpendicular to the link; a wheel rolling without
+slip has its centre with what it rolls on at the contact point. The others are found by
 **Kennedy's theorem**: the three centres of any three bodies lie on one line, so ``I_ij``
 is where the line through ``I_ik, I_kj`` crosses the line through ``I_il, I_lj``.
 
@@ -221,6 +222,10 @@ def _primary(sol, names):
         key = (min(a, b), max(a, b))
         found[key] = Centre(*key, None, (-uy, ux), f"the rod of {c.key} slides in its barrel: "
                             "at infinity, perpendicular to the cylinder")
+    for st in sol.plan.steps:  # rolling without slip: the contact point
+        for a, b, xy, how in st.contacts(sol.P):
+            key = tuple(sorted((num(a), num(b))))
+            found[key] = Centre(*key, tuple(xy), None, how)
     return found
 
 

@@ -125,7 +125,8 @@ def _forget(ref, ident, by_id=_BY_ID):
 
 
 def gruebler(scene: Scene) -> int:
-    """Mobility M = 3 (n - 1) - 2 j (lower pairs only): n bodies incl. ground and blocks."""
+    """Mobility M = 3 (n - 1) - 2 j - h: n bodies incl. ground and blocks, j lower pairs,
+    h rolling pairs (each takes one freedom: no slip)."""
     ground = set(scene.ground)
     moving = [lk for lk in scene.links if not (lk.p in ground and lk.q in ground)]
     n = 1 + len(moving) + len(scene.sliders)
@@ -145,7 +146,7 @@ def gruebler(scene: Scene) -> int:
         bodies_at.setdefault(c.rod, set()).add(f"rod {c.key}")
     j = sum(len(b) - 1 for b in bodies_at.values()) + len(scene.sliders) + \
         len(scene.cylinders)
-    return 3 * (n - 1) - 2 * j
+    return 3 * (n - 1) - 2 * j - len(scene.rolling)
 
 
 class _Compiler:
@@ -418,7 +419,7 @@ class _Compiler:
         if not missing and not extra_links and not extra_sliders:
             return
         m = gruebler(sc)
-        mob = f"mobility {m} (Gruebler: 3(n-1) - 2j)"
+        mob = f"mobility {m} (Gruebler: 3(n-1) - 2j{' - h' if sc.rolling else ''})"
         if missing:
             if m > 1:
                 why = (f"{mob}: the mechanism is under-constrained; "
@@ -429,7 +430,7 @@ class _Compiler:
                        f"{', '.join(missing)} cannot move")
             else:
                 why = (f"{', '.join(missing)} cannot be found by the construction steps "
-                       "(crank, dyad, slider, slotted link, carried point): the chain needs "
+                       "(crank, dyad, slider, slotted link, carried point, rolling wheel): the chain needs "
                        "a construction these steps do not make, or a part is missing")
             loose = [lk.key for lk in sc.links
                      if lk.key not in self.used_links and (lk.p in missing or lk.q in missing)]

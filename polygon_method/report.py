@@ -81,6 +81,16 @@ def solution_text(sol: Solution) -> str:
             w, al = sol.shown(sol.W[cyl.key], "omega"), sol.shown(sol.Al[cyl.key], "alpha")
             lines.append(f"{cyl.key:<10} {n / u:<14.6g} {vs:<17.5g} {a_s:<18.5g} "
                          f"{fmt_angular(w, 'rad/s'):<20} {fmt_angular(al, 'rad/s^2'):<22}")
+    contacts = [(st, st.contact_motion(sol)) for st in sol.plan.steps]
+    contacts = [(st.bodies()[0], c) for st, c in contacts if c is not None]
+    if contacts:  # the wheel's point at each contact: no slip, not at rest in acceleration
+        lines.append("")
+        lines.append(f"{'rolling':<8} {'contact (' + sc.units + ')':<24} {'velocity (m/s)':<24} "
+                     f"{'acceleration (m/s^2)':<24}")
+        for k, (I, v, a) in contacts:
+            pos = f"({_coord(I[0] / u)}, {_coord(I[1] / u)})"
+            lines.append(f"{k:<8} {pos:<24} {_vec(*v, scale=sol.scales['v']):<24} "
+                         f"{_vec(*a, scale=sol.scales['a']):<24}")
     if sc.pins:
         lines.append("")
         lines.append("pin   radius (" + sc.units + ")  rubbing velocity (m/s)")

@@ -182,6 +182,14 @@ class Solution(Motion):
                                    "rate": g.rate, "per_omega": res.per_omega,
                                    "per_omega2": res.per_omega2,
                                    "condition": res.condition}
+        contacts = {}
+        for st in self.plan.steps:
+            c = st.contact_motion(self)
+            if c is not None:
+                contacts[st.bodies()[0]] = c
+        if contacts:  # the wheel's point at each rolling contact
+            d["rolling"] = {k: {"contact": list(c[0]), "velocity": list(c[1]),
+                                "acceleration": list(c[2])} for k, c in contacts.items()}
         warnings = list(self.warnings)
         bodies = 1 + sum(len(st.bodies()) for st in self.plan.steps)
         if bodies <= JSON_BODIES:
@@ -218,6 +226,12 @@ class Solution(Motion):
             return self.rubbing[names[0]].rubbing_velocity
         if kind == "torque":
             return self.input_torque
+        if kind in ("vI", "aI"):  # the wheel's point at its rolling contact
+            wheel = self.scene.link("-".join(names)).key
+            for st in self.plan.steps:
+                got = st.contact_motion(self) if wheel in st.links else None
+                if got is not None:
+                    return hypot(*got[1 if kind == "vI" else 2])
         raise KeyError(kind)
 
 

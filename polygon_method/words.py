@@ -41,6 +41,25 @@ def given(sc) -> list:
                     else f"path {s.label}")  # "at 30 deg"
             out.append(f"Slider {s.point} moves on a fixed {path} through "
                        f"{_at(sc, s.through)}.")
+    for r in getattr(sc, "rolling", ()):  # a wheel or gear rolling without slip
+        if r.on == "rack":
+            out.append(f"The block {r.rim} is a rack meshing with {r.label}; its point is at "
+                       f"{_at(sc, sc.slider(r.rim).through)} at the instant shown.")
+            continue
+        if r.on == "gear":
+            what = (f"The gear {r.wheel} (centre {r.centre}, pitch radius "
+                    f"{_len(sc, r.radius)}) meshes {'internally ' if r.inside else ''}with "
+                    f"{r.label}")
+        else:
+            on = (f"on {r.label} through {_at(sc, r.through)}" if r.on == "line" else
+                  f"{'inside' if r.inside else 'outside'} {r.label}")
+            what = (f"The wheel {r.wheel} (centre {r.centre}, radius {_len(sc, r.radius)}) "
+                    f"rolls without slipping {on}")
+        if r.base_radius:
+            what += f" (radius {_len(sc, r.base_radius)})"
+        out.append(what + (f"; {r.wheel} is at {fmt(math.degrees(r.angle) % 360)}° at the "
+                           "instant shown" if r.angle is not None else
+                           f"; {r.rim} is its point in contact at the instant shown") + ".")
     for p, hint in sc.assembly.items():
         where = (_SIDE.get(hint, hint) if isinstance(hint, str)
                  else f"near {_at(sc, hint)}")

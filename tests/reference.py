@@ -10,6 +10,16 @@ the coordinates ``q`` (x, y of every non-ground point):
 * a carried point X on link PQ:  ``X - (P + lam (Q - P) + mu perp(Q - P)) = 0``
 * a slider X on a fixed path:  ``cross(X - through, u) = 0``
 * a block X sliding along moving link G1 G2:  ``cross(X - G1, G2 - G1) = 0``
+* a wheel CX of radius r rolling without slip ([rolling]): ``X - C - l (cos phi, sin phi) = 0``
+  with, on a fixed line (T a point of it, m its normal towards the wheel, t = perp(m)),
+  ``phi = phi0 + ((C - T).t - s0) / r`` and the centre ``(C - T).m - r = 0``; on a circle
+  or a gear, ``phi = phi0 + K (th - th0)``, K the wheel's turns per turn of the crank from the
+  gear ratio: ``K = (1 + e R/r) K_arm - e (R/r) K_base`` (e = +1 outside, -1 inside; K_arm 1
+  when the crank carries the centre, K_base 1 for the crank, the K of a wheel for a wheel).
+  Evaluated at the scene's own angle, where phi = phi0 (s0 is C's place there).
+* a rack R on a fixed path (T, u) meshing with a pinion about O:  ``(R - T).u - k K (th - th0)
+  = 0`` with k = -(T - O).perp(u) (the pinion's point at the pitch point moves as the rack)
+  and K the pinion's turns per turn of the crank (with the path's equation above).
 
 Positions: Newton-Raphson from the solver's float positions.  Every constraint is at most
 quadratic in ``q``, so along a motion ``f'' = J q'' + gamma`` with a closed-form ``gamma``:
@@ -88,8 +98,9 @@ def _equations(scene):
     ground = scene.ground
     inp = scene.input
     eqs = []
+    wheels = {pr.wheel for pr in getattr(scene, "rolling", ())}  # their rim equations below
     for lk in scene.links:
-        if lk.key == inp.crank or (lk.p in ground and lk.q in ground):
+        if lk.key == inp.crank or (lk.p in ground and lk.q in ground) or lk.key in wheels:
             continue
         eqs.append(("link", (lk.p, lk.q, mpf(lk.length))))
     crank = scene.link(inp.crank)
@@ -104,7 +115,43 @@ def _equations(scene):
             eqs.append(("guide", (sl.point, sl.first, sl.second)))
         else:
             eqs.append(("path", (sl.point, _v(sl.through), _unit(_v(sl.u)))))
+    rates = {inp.crank: mpf(1)}
+    for pr in getattr(scene, "rolling", ()):
+        if pr.on == "rack":
+            sl = scene.slider(pr.rim)
+            T, u = _v(sl.through), _unit(_v(sl.u))
+            O = _v(scene.ground[pr.base_centre])
+            k = -_dot(_sub(T, O), _perp(u))
+            eqs.append(("rack", (pr.rim, T, u, k, pr.base, rates, mpf(inp.angle))))
+            continue
+        ell = mpf(scene.link(pr.wheel).length)
+        r = mpf(pr.radius)
+        if pr.on == "line":
+            T, m = _v(pr.through), _v(pr.m)
+            eqs.append(("wheelline", (pr.centre, T, m, r)))
+            for c in (0, 1):
+                eqs.append(("rim", (pr.rim, pr.centre, ell, pr.angle, ("line", T, m, r), c)))
+            continue
+        O = _v(scene.ground[pr.base_centre])
+        e = -1 if pr.inside else 1
+        for c in (0, 1):
+            eqs.append(("rim", (pr.rim, pr.centre, ell, pr.angle,
+                                ("circle", O, e, r, pr, rates), c)))
     return eqs
+
+
+def _wheel_rate(scene, pr, rates, P):
+    """K: the wheel's turning per radian of the crank, from the gear ratio."""
+    O = _v(scene.ground[pr.base_centre])
+    e = -1 if pr.inside else 1
+    d = _sub(P[pr.centre], O)
+    r = mpf(pr.radius)
+    R = mpmath.sqrt(_dot(d, d)) - e * r
+    k_arm = 0 if pr.centre in scene.ground else 1
+    k_base = 0 if pr.base is None else rates[pr.base]
+    K = (1 + e * R / r) * k_arm - e * (R / r) * k_base
+    rates[pr.wheel] = K
+    return K, R
 
 
 def _eval(kind, d, P, th):
@@ -137,7 +184,37 @@ def _eval(kind, d, P, th):
         a, b = _sub(P[x], P[g1]), _sub(P[g2], P[g1])
         return _cross(a, b), [(x, b[1], -b[0]), (g2, -a[1], a[0]),
                               (g1, a[1] - b[1], b[0] - a[0])]
+    if kind == "rack":
+        x, T, u, k, base, rates, th0 = d
+        K = rates.get(base, 0)  # (at the scene's own angle th = th0 the term is zero)
+        return _dot(_sub(P[x], T), u) - k * K * (th - th0), [(x, u[0], u[1])]
+    if kind == "wheelline":
+        x, T, m, r = d
+        return _dot(_sub(P[x], T), m) - r, [(x, m[0], m[1])]
+    if kind == "rim":
+        x, cen, ell, phi0, how, c = d
+        phi, dphi = _rim_angle(P, cen, phi0, how)
+        e = (mpmath.cos(phi), mpmath.sin(phi))
+        val = P[x][c] - P[cen][c] - ell * e[c]
+        pe = _perp(e)[c]  # d e_c / d phi
+        g = (mpf(1), mpf(0)) if c == 0 else (mpf(0), mpf(1))
+        return val, [(x, g[0], g[1]), (cen, -g[0] - ell * pe * dphi[0],
+                                       -g[1] - ell * pe * dphi[1])]
     raise ValueError(kind)
+
+
+def _rim_angle(P, cen, phi0, how):
+    """The wheel's angle at the scene's own angle and its gradient in C (see the module)."""
+    if how[0] == "line":
+        _, T, m, r = how
+        t = _perp(m)
+        phi = phi0 if phi0 is not None else mpmath.atan2(-m[1], -m[0])
+        return mpf(phi), (t[0] / r, t[1] / r)
+    _, O, e, r, pr, rates = how
+    if phi0 is None:
+        d = _sub(P[cen], O)
+        phi0 = mpmath.atan2(-e * d[1], -e * d[0])
+    return mpf(phi0), (mpf(0), mpf(0))
 
 
 def _unknowns(scene):
@@ -211,11 +288,21 @@ def reference_solution(scene, guess_positions):
     _, J, eqs, names = _system(scene, P, th)
     n = len(eqs)
 
+    rates = {inp.crank: mpf(1)}
+    for pr in getattr(scene, "rolling", ()):  # in the scene's order: a gear before its mate
+        if pr.on not in ("line", "rack"):
+            _wheel_rate(scene, pr, rates, P)
     ft = mpmath.matrix(n, 1)
     for i, (kind, d) in enumerate(eqs):
         if kind == "crank":
             o, tip, _, c = d
             ft[i] = -w * _perp(_sub(P[tip], P[o]))[c]
+        elif kind == "rack":
+            ft[i] = -d[3] * rates[d[4]] * w
+        elif kind == "rim" and d[4][0] == "circle":
+            x, cen, ell, _, how, c = d
+            e = _unit(_sub(P[x], P[cen]))
+            ft[i] = -ell * _perp(e)[c] * rates[how[4].wheel] * w
     qd = mpmath.lu_solve(J, -ft)
     V = {g: ZERO2 for g in scene.ground}
     V.update({nm: (qd[2 * i], qd[2 * i + 1]) for i, nm in enumerate(names)})
@@ -232,6 +319,18 @@ def reference_solution(scene, guess_positions):
         elif kind == "guide":
             x, g1, g2 = d
             gamma[i] = 2 * _cross(_sub(V[x], V[g1]), _sub(V[g2], V[g1]))
+        elif kind == "rack":
+            gamma[i] = -d[3] * rates[d[4]] * al
+        elif kind == "rim":  # X - C - l e(phi): gamma = l phi'^2 e - l perp(e) phi_tt
+            x, cen, ell, _, how, c = d
+            e = _unit(_sub(P[x], P[cen]))
+            if how[0] == "line":
+                t = _perp(how[2])
+                dphi, phitt = _dot(V[cen], t) / how[3], 0
+            else:
+                K = rates[how[4].wheel]
+                dphi, phitt = K * w, K * al
+            gamma[i] = ell * dphi * dphi * e[c] - ell * _perp(e)[c] * phitt
     qdd = mpmath.lu_solve(J, -gamma)
     A = {g: ZERO2 for g in scene.ground}
     A.update({nm: (qdd[2 * i], qdd[2 * i + 1]) for i, nm in enumerate(names)})

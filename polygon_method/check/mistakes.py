@@ -227,6 +227,8 @@ class _Diagnoser:
             out += self.relative(ans, signed)
         if kind in ("omega", "alpha"):
             out += self.per_length(ans)
+        if kind in ("a", "aI"):
+            out += self.contact_at_rest(ans)
         if kind == "vs":
             out.append(_Candidate(sol.speed(names[0]), "absolute_for_relative",
                                   f"the absolute velocity of {names[0]} given for its "
@@ -506,6 +508,25 @@ class _Diagnoser:
                                   "(the power is F . v = F v cos theta)"))
         return out
 
+    def contact_at_rest(self, ans):
+        """Rolling's classic slip: the contact point's acceleration taken as zero (for the
+        contact, and for a point of the wheel found from it)."""
+        sol, X = self.sol, ans.names[0]
+        c = ("contact_acceleration_zero", "the contact point's acceleration taken as zero: "
+             "no slip makes its velocity zero, not its acceleration (omega^2 r towards the "
+             "centre)")
+        if ans.kind == "aI":
+            return [_Candidate(0.0, *c)]
+        out = []
+        for st in sol.plan.steps if len(ans.names) == 1 else ():
+            got = st.contact_motion(sol)
+            on = {p for w in st.links for p in sol.scene.link(w).points}
+            if got is not None and X in on | {q.name for q in sol.scene.points
+                                              if q.link in st.links}:
+                (ax, ay), (bx, by) = sol.A[X], got[2]
+                out.append(_Candidate(math.hypot(ax - bx, ay - by), *c))
+        return out
+
     def own_slip(self, ans):
         """A copying slip: the answer is the student's own value for the same quantity
         (v_BD and v_DB have one magnitude) with its leading digits lost: 36 for 2.36."""
@@ -532,7 +553,7 @@ class _Diagnoser:
             if not math.isfinite(c.value) or abs(c.value - correct) <= tol:
                 continue
             # the answer's relative tolerance, applied to the mistaken value
-            window = tol * abs(c.value) / abs(correct) if correct else tol
+            window = tol * abs(c.value) / abs(correct) if correct and c.value else tol
             if c.window is not None:
                 window = min(window, c.window * abs(c.value))
             dev = abs(given - c.value)

@@ -99,6 +99,9 @@ class _Tolerances:
                 return 0.0, "computed (crank)"
             f = self.link_factor(lk.key)
             return d * s * f / lk.length, (vt if kind == "omega" else at)
+        if kind in ("vI", "aI"):  # read off at the contact's image, like the wheel's point
+            f = max(self.f(n) for n in names)
+            return (d * sv * f, vt) if kind == "vI" else (d * sa * f, at)
         if kind in ("vs", "as"):
             f = self.f(names[0])
             return (d * sv * f, vt) if kind == "vs" else (d * sa * f, at)

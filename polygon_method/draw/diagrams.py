@@ -60,10 +60,13 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
         if lk.p in sc.ground and lk.q in sc.ground:
             sk.line([P[lk.p], P[lk.q]], gid=f"frame-{lk.key}", color="#555555", lw=0.6,
                     dashes=(6, 2, 1, 2), z=1)
-    # sliders on fixed paths: line of stroke, guide wall with hatching
+    # sliders on fixed paths: line of stroke, guide wall with hatching (on the side away
+    # from its rod, or from what a step keeps clear: a rack's pinion)
+    clear = {sh[1]: (sh[2][0] / s, sh[2][1] / s) for st in sol.plan.steps
+             for sh in st.shapes(sol.P) if sh[0] == "guide clear of"}
     for sl in sc.sliders:
         if isinstance(sl, FixedPath):
-            _fixed_guide(sk, sc, sl, P, s)
+            _fixed_guide(sk, sc, sl, P, s, clear.get(sl.point))
     # links as bars, a link with carried points as a plate
     for lk in sc.links:
         if lk.p in sc.ground and lk.q in sc.ground:
@@ -103,6 +106,15 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
                    lw=0.8, z=2)
         solid.append((f"rod {cyl.key}", Polygon(shape)))
         sk.hints.append((K, R))
+    # what the steps draw besides links: pitch circles, ground lines, rolling contacts
+    contacts = []
+    for st in sol.plan.steps:
+        for shape in st.shapes(sol.P):
+            if shape[0] == "circle":  # about a point of the mechanism
+                shape = ("circle", sol.P[shape[1]], shape[2])
+            c = _step_shape(sk, shape, s, f"{st.index + 1}-{len(contacts)}")
+            if c is not None:
+                contacts.append(c)
     # blocks
     for sl in sc.sliders:
         X = P[sl.point]
@@ -161,6 +173,10 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
             sk.circle(P[name], DOT_R, gid=f"joint-{name}", face="#000000", z=6)
     for name in sc.point_names:
         sk.label(name, [P[name]], LABEL_PT, gid=f"label-{name}", point=True)
+    for k, xy in enumerate(contacts):  # the contact: the wheel's centre with what it rolls on
+        sk.circle(xy, DOT_R, gid=f"contact-{k}", face="#000000", z=6)
+        sk.label("I" if "I" not in sc.point_names and len(contacts) == 1 else f"I{k + 1}",
+                 [xy], SMALL_PT, gid=f"label-contact-{k}", point=True)
     for name, text in pin_notes:
         sk.label(text, [P[name]], SMALL_PT, gid=f"label-pin-{name}", color="#666666",
                  point=True)
@@ -169,6 +185,33 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
         extra(sk, P)
     sk.place_labels()
     return P
+
+
+def _step_shape(sk, shape, s, tag):
+    """One of a step's shapes (``Step.shapes``, metres) drawn at ``s`` metres per cm;
+    a contact point is returned (drawn with the joints)."""
+    kind = shape[0]
+    if kind == "circle":
+        (cx, cy), r = (shape[1][0] / s, shape[1][1] / s), shape[2] / s
+        pts = [(cx + r * math.cos(2 * math.pi * k / 96), cy + r * math.sin(2 * math.pi * k / 96))
+               for k in range(97)]
+        sk.line(pts, gid=f"pitch-{tag}", color="#333333", lw=0.7, dashes=(6, 2, 1, 2), z=1,
+                hint=False)
+        return None
+    if kind == "ground line":
+        (x, y), (ux, uy), (nx, ny) = (shape[1][0] / s, shape[1][1] / s), shape[2], shape[3]
+        a, b = (x - 2.0 * ux, y - 2.0 * uy), (x + 2.0 * ux, y + 2.0 * uy)
+        sk.line([a, b], gid=f"rolling-line-{tag}", lw=1.0, z=2)
+        hatch = []
+        for i in range(14):
+            t = -1.85 + i * 3.7 / 13
+            p = (x + t * ux, y + t * uy)
+            hatch.append((p, (p[0] - 0.18 * nx - 0.18 * ux, p[1] - 0.18 * ny - 0.18 * uy)))
+        sk.segments(hatch, gid=f"rolling-line-{tag}-hatch", lw=0.5, z=2)
+        return None
+    if kind == "contact":
+        return (shape[1][0] / s, shape[1][1] / s)
+    return None
 
 
 def _deg(rad: float) -> str:
@@ -202,7 +245,7 @@ def _rect(c, u, length, width):
             for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
 
 
-def _fixed_guide(sk, sc, sl, P, s):
+def _fixed_guide(sk, sc, sl, P, s, away=None):
     """The line of stroke (chain-dotted, through the path's given point) and the guide's
     wall on the side away from the connecting link, hatched."""
     X = P[sl.point]
@@ -213,7 +256,8 @@ def _fixed_guide(sk, sc, sl, P, s):
     lo, hi = min(-1.8, t_through - 0.5), max(1.8, t_through + 0.5)
     sk.line([(X[0] + lo * ux, X[1] + lo * uy), (X[0] + hi * ux, X[1] + hi * uy)],
             gid=f"stroke-{sl.point}", color="#555555", lw=0.5, dashes=(6, 2, 1, 2), z=1)
-    rod = next((P[lk.other(sl.point)] for lk in sc.links if sl.point in lk.points), None)
+    rod = away or next((P[lk.other(sl.point)] for lk in sc.links if sl.point in lk.points),
+                       None)
     side = 1.0
     if rod is not None and ((rod[0] - X[0]) * nx + (rod[1] - X[1]) * ny) > 0:
         side = -1.0

@@ -103,6 +103,10 @@ def page_data(fr: Frames) -> dict:
         else:
             sliders.append({"point": s.point, "u": [float(c) for c in s.u],
                             "through": [float(c) for c in s.through]})
+    shapes = [sh for st in sol.plan.steps for sh in st.shapes(sol.P)]
+    wheels = [[sh[1], float(sh[2])] for sh in shapes if sh[0] == "circle"]  # pitch circles
+    lines = [[[float(c) for c in sh[1]], [float(c) for c in sh[2]]] for sh in shapes
+             if sh[0] == "ground line"]  # the fixed lines wheels roll on
     n = len(fr)
     k = _noise_scales(res, moving, links, n)
     d = {
@@ -121,6 +125,8 @@ def page_data(fr: Frames) -> dict:
         "links": [[lk.p, lk.q, lk.key] for lk in links],
         "plates": [[sc.link(cp.link).p, sc.link(cp.link).q, cp.name] for cp in sc.points],
         "sliders": sliders,
+        "wheels": wheels,
+        "rollLines": lines,
         "P": {p: _flat([_quiet(c, k["P"], n) for c in res.P[p]]) for p in moving},
         "V": {p: _flat([_quiet(c, k["V"], n) for c in res.V[p]]) for p in moving},
         "A": {p: _flat([_quiet(c, k["A"], n) for c in res.A[p]]) for p in moving},

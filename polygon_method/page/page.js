@@ -73,6 +73,8 @@ function setup(phase) {
     for (const s of D.sliders) {
       if (s.u) g.items.push([el(svg, "line", {class: "guide"}, "guide:" + s.point), "guide", s]);
     }
+    for (const w of D.wheels) g.items.push([el(svg, "circle", {class: "pitch"}, "pitch circle about " + w[0]), "pitch", w]);
+    for (const l of D.rollLines) g.items.push([el(svg, "line", {class: "guide"}, "the line a wheel rolls on"), "rollline", l]);
     for (const [p, q, key] of D.links) g.items.push([el(svg, "line", {class: "link", id: "c-link-" + key}, "link:" + key), "link", [p, q, key]]);
     for (const s of D.sliders) g.items.push([el(svg, "polygon", {class: "block"}, "slider:" + s.point), "block", s]);
     for (const p in D.ground) g.items.push([el(svg, "polygon", {class: "ground"}, "ground:" + p), "ground", p]);
@@ -147,6 +149,14 @@ function update(phase, k) {
       poly(e, [c, [c[0] - h * 0.6, c[1] + h], [c[0] + h * 0.6, c[1] + h]]);
     } else if (kind === "guide") {
       const s = scaleOf("configuration").perCm, c = P(x.point), u = [x.u[0], -x.u[1]], L = 50;
+      line(e, [c[0] - L * u[0], c[1] - L * u[1]], [c[0] + L * u[0], c[1] + L * u[1]]);
+    } else if (kind === "pitch") {  // a pitch circle about a point, its radius to scale
+      const c = P(x[0]);
+      e.setAttribute("cx", r3(c[0])); e.setAttribute("cy", r3(c[1]));
+      e.setAttribute("r", r3(x[1] / scaleOf("configuration").perCm));
+    } else if (kind === "rollline") {  // a fixed line through a point of it
+      const s = scaleOf("configuration").perCm, c = [x[0][0] / s, -x[0][1] / s];
+      const u = [x[1][0], -x[1][1]], L = 50;
       line(e, [c[0] - L * u[0], c[1] - L * u[1]], [c[0] + L * u[0], c[1] + L * u[1]]);
     } else if (kind === "block") {
       const u = x.u ? [x.u[0], -x.u[1]] : unit(P(x.guide[0]), P(x.guide[1]));

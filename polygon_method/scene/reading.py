@@ -13,6 +13,7 @@ from pathlib import Path
 
 from ..errors import PolygonMethodError, SceneError, printable
 from ..units import LENGTH_UNITS, UNITS, parse_quantity
+from .rolling import read_rolling
 from .records import (_ABSURD_LONG, _ABSURD_SHORT, _POINT_ONLY, _UNIT_ORDER, TOP_KEYS, FixedPath,
                       GuideSlider, Link, Scene, split_name)
 from .tables import _suggest, _Tables
@@ -431,6 +432,8 @@ class _Loader(_Tables, _Variants):
 
         points = self.carried_points(index, ground)
         sliders = self.sliders(index, ground, {p.name for p in points})
+        rolling = read_rolling(self, ground, sliders, {p.name for p in points})
+        self.rolling_pairs = rolling
         known = set(ground) | {p for lk in links for p in lk.points} | {p.name for p in points}
         self.known = known
         self.slider_points = {s.point: s for s in sliders}
@@ -443,7 +446,7 @@ class _Loader(_Tables, _Variants):
         pins = self.pins(known)
         loads = self.loads(known)
         tolerance, answers = self.answers(known, sliders, pins, loads)
-        self.connected(links, points, sliders, ground, inp, cylinders)
+        self.connected(links, points, sliders, ground, inp, cylinders, rolling)
         if len(known) > MAX_POINTS:
             raise SceneError(f"the scene has {len(known)} points: at most {MAX_POINTS} (a "
                              "mechanism of a textbook has a few dozen)", file=self.file)
@@ -455,6 +458,7 @@ class _Loader(_Tables, _Variants):
                      tolerance=tolerance, file=self.file, cylinders=tuple(cylinders),
                      source=source if isinstance(source, str) else None, variation=variation,
                      variant=variant, reading_notes=tuple(self.read_notes), _link_index=index,
+                     rolling=tuple(rolling),
                      _lines=tuple(self.lines))
 
     def scale(self):
@@ -471,7 +475,7 @@ class _Loader(_Tables, _Variants):
                              table, key)
         return link, pts
 
-    def connected(self, links, points, sliders, ground, inp, cylinders=()):
+    def connected(self, links, points, sliders, ground, inp, cylinders=(), rolling=()):
         """Every point must take part: a dangling point is almost always a typo."""
         uses = {}
         for cyl in cylinders:
@@ -482,9 +486,13 @@ class _Loader(_Tables, _Variants):
                 uses[p] = uses.get(p, 0) + 1
         roles = set(ground) | {p.name for p in points} | {s.point for s in sliders}
         roles |= {p for s in sliders if isinstance(s, GuideSlider) for p in (s.first, s.second)}
+        roles |= {p for r in rolling for p in (r.centre, r.rim)}  # a wheel's points roll
+        roles |= {p for r in rolling if r.base for p in self.index[frozenset(
+            split_name(r.base))].points}  # and so does the gear a wheel meshes with
         plates = {p.link for p in points}  # a link carrying points is a plate: its ends belong
         roles |= {q for lk in links if lk.key in plates for q in lk.points}
         through = {s.through for s in sliders if isinstance(s, FixedPath)}
+        through |= {r.through for r in rolling if r.through is not None}  # a ground line's
         lonely = [name for name, xy in ground.items()
                   if name not in uses and xy not in through and name != inp.pivot
                   and name not in {s.point for s in sliders}]
@@ -540,6 +548,7 @@ def parse_answers(text: str, scene: Scene, file: str | None = None, *,
     loader.unit = scene.units
     loader.index = scene._link_index
     loader.cylinder_list = scene.cylinders
+    loader.rolling_pairs = scene.rolling
     tolerance, answers = loader.answers(set(scene.point_names), scene.sliders, scene.pins,
                                         scene.loads)
     if not with_variant:

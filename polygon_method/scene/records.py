@@ -24,7 +24,8 @@ _ABSURD_LONG = 1e4
 _ABSURD_SHORT = 1e-7
 
 TOP_KEYS = ("title", "source", "notes", "units", "ground", "links", "points", "sliders",
-            "cylinders", "assembly", "input", "pins", "loads", "answers", "variants", "variant")
+            "cylinders", "rolling", "assembly", "input", "pins", "loads", "answers", "variants",
+            "variant")
 INPUT_KEYS = ("crank", "angle", "speed", "acceleration")
 #: the kinds of quantity on which [input] may give the motion instead of the crank's speed
 #: (named as answer keys: ``omega_BC``, ``vs_B``, ``v_B``), with their rate's prefix
@@ -40,6 +41,8 @@ ANSWER_KINDS = {
     "as": ("acceleration", "slider", True),
     "ac": ("acceleration", "slider", False),
     "rub": ("velocity", "pin", False),
+    "vI": ("velocity", "wheel", False),
+    "aI": ("acceleration", "wheel", False),
 }
 
 
@@ -142,6 +145,40 @@ class GivenRate:
 
 
 @dataclass(frozen=True)
+class RollingPair:
+    """A wheel or gear rolling without slip: link ``wheel`` from its centre ``centre`` to
+    the point ``rim`` on it, rolling (pitch) radius ``radius`` (m), on one of
+
+    - a fixed line (``on = "line"``) through ``through`` along unit ``u``, the wheel on the
+      side of unit normal ``m`` (from the line towards the centre);
+    - a fixed circle (``on = "circle"``) about ground point ``base_centre``;
+    - a gear (``on = "gear"``): link ``base`` turning about its ground end ``base_centre``;
+    - a rack (``on = "rack"``): the block ``rim`` on a fixed path (its pitch line), meshing
+      with the gear ``base`` (``wheel`` is the block's point, ``centre`` None).
+
+    ``inside``: the wheel rolls inside the circle (a ring, an internal gear).
+    ``base_radius``: the circle's radius as the problem states it (None: from the centre
+    distance). ``angle``: the direction centre -> rim (rad) at the scene's crank angle
+    (None: towards the contact point). ``label``: the line or circle in words.
+    """
+
+    wheel: str
+    centre: str
+    rim: str
+    radius: float
+    on: str
+    label: str
+    u: tuple | None = None
+    through: tuple | None = None
+    m: tuple | None = None
+    base: str | None = None
+    base_centre: str | None = None
+    inside: bool = False
+    base_radius: float | None = None
+    angle: float | None = None
+
+
+@dataclass(frozen=True)
 class Input:
     """The driving crank: link ``crank`` turning about ground point ``pivot``; its angle
     sets the position. Its speed is ``omega`` (and ``alpha``), or is found from ``given``
@@ -224,6 +261,8 @@ class Scene:
     file: str | None = None
     #: hydraulic or pneumatic cylinders (:class:`Cylinder`)
     cylinders: tuple = ()
+    #: wheels and gears rolling without slip (the scene's [rolling])
+    rolling: tuple = ()
     #: where the problem comes from (the scene's ``source``), for headings
     source: str | None = field(default=None, compare=False)
     #: the scene's [variants] (what may vary per student), and [variant] (which one it is)
@@ -245,11 +284,13 @@ class Scene:
             seen.update(dict.fromkeys(link.points))
         for cp in self.points:
             seen[cp.name] = None
+        for r in self.rolling:  # a rack's point, on no link
+            seen[r.rim] = None
         object.__setattr__(self, "_names", tuple(seen))
         try:
             key = (self.units, tuple(self.ground.items()), self.links, self.points,
                    self.sliders, tuple(self.assembly.items()), self.input, self.pins,
-                   self.file, self.cylinders)
+                   self.file, self.cylinders, self.rolling)
             hash(key)
         except (TypeError, AttributeError):  # something unhashable: not cached by content
             key = None
@@ -314,6 +355,10 @@ class Scene:
 
     def slider(self, name: str):
         return next((s for s in self.sliders if s.point == name), None)
+
+    def rolling_of(self, point: str):
+        """The rolling pair whose wheel has ``point`` as its rim point, or None."""
+        return next((r for r in self.rolling if r.rim == point), None)
 
     @property
     def length_unit(self) -> float:

@@ -614,7 +614,7 @@ class _Tables:
                         "rub_B", "torque"]
             raise self.error(f"unknown answer key{_suggest(key, examples)}; keys are v_X, "
                              "a_X, v_XY, a_XY, omega_L, alpha_L, vs_X, as_X, ac_X, rub_X, "
-                             "torque, I_ij (a centre)", "answers", key)
+                             "torque, I_ij (a centre), vI_L, aI_L (a wheel's contact point)", "answers", key)
         kind, what, sense_ok = ANSWER_KINDS[prefix]
         names = split_name(rest)
         if not names:
@@ -639,6 +639,12 @@ class _Tables:
         elif what == "slider":
             if len(names) != 1 or names[0] not in slider_names:
                 raise self.error(f"no slider {rest} in [sliders]", "answers", key)
+        elif what == "wheel":  # the wheel's point at its rolling contact
+            wheels = {r.wheel for r in getattr(self, "rolling_pairs", ())}
+            lk = self.index.get(frozenset(names)) if len(names) == 2 else None
+            if lk is None or lk.key not in wheels:
+                raise self.error(f"{prefix}_{rest}: {rest} is no wheel of [rolling] (the key "
+                                 "names a rolling wheel's link, e.g. aI_CP)", "answers", key)
         elif what == "pin":
             if len(names) != 1 or names[0] not in pin_names:
                 raise self.error(f"rubbing at {rest} needs its size in [pins]", "answers", key)

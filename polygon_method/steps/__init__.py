@@ -6,7 +6,6 @@ acceleration as plain functions on floats or numpy arrays, its condition and the
 why it is singular or at a limit, what it draws on the polygons (``construction``) and its
 line of the step table (``position_words``).
 
-=========  ===========================================================================
 crank      the driving crank's tip
 carried    a point on a known link or plate (the image point, similar triangles)
 slider     RRP: a link and a slider on a fixed path or on a moving link
@@ -14,27 +13,42 @@ dyad       RRR: the joint of two links (or plate sides) to two known points
 slotted    RPR: a link that a block slides along (slotted lever, Whitworth, swivel)
 cylinder   a hydraulic cylinder between two known points: length, extension rate, omega
 =========  ===========================================================================
+=======
+============ ===========================================================================
+crank        the driving crank's tip
+carried      a point on a known link or plate (the image point, similar triangles)
+slider       RRP: a link and a slider on a fixed path or on a moving link
+dyad         RRR: the joint of two links (or plate sides) to two known points
+slotted      RPR: a link that a block slides along (slotted lever, Whitworth, swivel)
+rolling      a wheel or gear rolling without slip on a line, a fixed circle or a gear
+wheel_centre the centre of a wheel rolling on a line, found from a link pinned to it
+rack         a rack (a block on a fixed path) driven by a pinion without slip
+cylinder     a hydraulic cylinder between two known points: length, extension rate, omega
+============ ===========================================================================
 
 Adding a kind: write its module (a frozen ``Step`` subclass and a ``recognise(g, name)``
 function) and add it to :data:`TIERS`.
 """
 
-from . import carried, cylinder, dyad, slider, slotted
+from . import carried, cylinder, dyad, rack, rolling, slider, slotted, wheel_centre
 from .base import (Construction, Context, DirectionLine, State, Step, Vector, image_label,
                    image_name, pole_text)
 from .carried import Carried
 from .crank import Crank
 from .cylinder import CylinderStep
 from .dyad import Dyad
+from .rolling import RollingWheel
 from .slider import SliderDyad
 from .slotted import SlottedLink, under_label
 
 #: the recognisers the compiler tries, tier by tier: for each unknown point (in the scene's
 #: order) every kind of the first tier in turn; the next tier only when no point of the
 #: tiers before can be found. The crank is the plan's first step and is not recognised.
-TIERS = ((carried.recognise, slider.recognise, dyad.recognise),
+TIERS = ((rolling.recognise, wheel_centre.recognise, rack.recognise, carried.recognise,
+          slider.recognise, dyad.recognise),
          (slotted.recognise,))
 
 __all__ = ["TIERS", "Step", "Context", "State", "Crank", "Dyad", "SliderDyad", "SlottedLink",
-           "Carried", "CylinderStep", "Construction", "Vector", "DirectionLine", "image_label", "image_name",
+           "Carried", "CylinderStep", "RollingWheel", "Construction", "Vector", "DirectionLine",
+           "image_label", "image_name",
            "pole_text", "under_label"]

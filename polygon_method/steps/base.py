@@ -233,6 +233,26 @@ class Step:
         them (ground 1, crank 2, ...)."""
         return ()
 
+    def contacts(self, P):
+        """The rolling contacts this step makes, ((body, body, point, words), ...): each
+        contact point is the instantaneous centre of its two bodies (no slip), a primary
+        centre for Kennedy's theorem. By default none."""
+        return ()
+
+    def contact_motion(self, sol):
+        """(I, v_I, a_I) of a rolling contact the step makes: the contact point and the
+        velocity and acceleration of the rolling body's point there; None by default."""
+        return None
+
+    def shapes(self, P):
+        """What a configuration diagram draws for this step besides its links, in metres:
+        ``("circle", centre point's name, radius)`` (a pitch circle, chain-dotted), ``("ground line",
+        point, direction, normal)`` (a fixed line, hatched on the side away from
+        ``normal``), ``("contact", point)`` (a rolling contact), ``("guide clear of", slider
+        point, position)`` (its guide's wall on the side away from that position: a rack's
+        pinion). By default none."""
+        return ()
+
     def produced(self):
         """(A, X) where the step's point X lies on a line AB produced beyond B (the image
         line is drawn produced, from a to x), else None."""

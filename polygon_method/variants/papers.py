@@ -66,7 +66,9 @@ _QUESTION_WORDS = {"v": "the velocity of {0}", "a": "the acceleration of {0}",
                    "alpha": "the angular acceleration of link {0}",
                    "vs": "the sliding velocity at {0}", "as": "the sliding acceleration at {0}",
                    "ac": "the Coriolis component at {0}", "rub": "the rubbing velocity at pin {0}",
-                   "torque": "the input torque on the crank"}
+                   "torque": "the input torque on the crank",
+                   "vI": "the velocity of the point of wheel {0} in contact",
+                   "aI": "the acceleration of the point of wheel {0} in contact"}
 
 
 def _question(q) -> str:
@@ -75,7 +77,7 @@ def _question(q) -> str:
         what = ("the velocity of {0} relative to {1}" if kind == "v"
                 else "the acceleration of {0} relative to {1}").format(*names)
     else:
-        what = _QUESTION_WORDS[kind].format("".join(names) if kind in ("omega", "alpha")
+        what = _QUESTION_WORDS[kind].format("".join(names) if kind in ("omega", "alpha", "vI", "aI")
                                             and all(len(n) == 1 for n in names)
                                             else "-".join(names))
     return f"{what} (`{key}`)"

@@ -1,0 +1,185 @@
+"""The scene's [rolling] table: wheels and gears rolling without slip (a part of the scene
+reader).
+
+Each key is a wheel's link, written centre first (``CP``: centre C, P a point on the
+wheel); its value says what the wheel rolls on::
+
+    CP = { on = "horizontal", through = [0, 0] }   # a fixed line (or "vertical", "30 deg")
+    "A-P" = { on = "O" }                            # outside a fixed circle about O (a sun)
+    "A-P" = { on = "O", inside = true }             # inside a fixed ring about O
+    "O2-Q" = { on = "O1-A" }                        # a gear meshing with gear O1-A
+
+``radius`` is the wheel's rolling (pitch) radius (default: its link's length, the point
+on the pitch circle); ``on_radius`` the circle's, when the problem states it (it must then
+agree with the centre distance); ``angle`` the direction centre -> point at the stated
+crank angle (default: towards the contact point); ``side`` which side of a line the wheel
+is on (``above`` by default, ``right`` of a vertical line).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+from .records import RollingPair, split_name
+
+_KEYS = ("on", "through", "radius", "on_radius", "inside", "angle", "side")
+_SIDES = ("above", "below", "left", "right")
+
+
+def _unit_at(ang):
+    q = ang / (math.pi / 2)
+    k = round(q)
+    if abs(q - k) <= 1e-12:
+        return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[k % 4]
+    return (math.cos(ang), math.sin(ang))
+
+
+def _rack(rd, key, spec, ground, sliders, _suggest):
+    """``R = { on = "O-A" }``: the block R on a fixed path is a rack, its pitch line the
+    path, meshing with the gear O-A; the path's ``through`` is where R is at the stated
+    crank angle."""
+    sl = next((s for s in sliders if s.point == key), None)
+    if sl is None or getattr(sl, "u", None) is None:
+        raise rd.error(f"a rack is a block on a fixed path: add {key} to [sliders] with path "
+                       "and through (where the rack's point is at the instant shown)",
+                       "rolling", key)
+    if sl.through[1] is None:
+        raise rd.error(f"the rack {key} needs its place: through = [x, y] in [sliders] (where "
+                       "its point is at the instant shown)", "rolling", key)
+    for k in spec:
+        if k not in ("on", "on_radius"):
+            raise rd.error(f"unknown key '{k}' for a rack{_suggest(k, ('on', 'on_radius'))}; "
+                           "a rack has on (its pinion) and on_radius", "rolling", key)
+    if "on" not in spec:
+        raise rd.error(f"the rack {key} has no pinion: add on = \"O-A\" (a gear turning "
+                       "about a ground point)", "rolling", key)
+    base, bpts = rd.find_link(spec["on"], "rolling", key)
+    fixed = [p for p in bpts if p in ground]
+    if len(fixed) != 1:
+        raise rd.error(f"the pinion {base.key} must turn about a fixed centre: one of its "
+                       "ends a ground point", "rolling", key)
+    return RollingPair(key, None, key, 0.0, "rack", f"the pinion {base.key}", base=base.key,
+                       base_centre=fixed[0],
+                       base_radius=(rd.length(spec["on_radius"], "rolling", key)
+                                    if "on_radius" in spec else None))
+
+
+def read_rolling(rd, ground, sliders, points) -> list:
+    """The [rolling] table's pairs, checked (``rd`` is the scene reader)."""
+    from .tables import _suggest  # the reader's own did-you-mean
+    out = []
+    wheels = set()
+    for key, spec in rd.table("rolling").items():
+        example = ("a rolling wheel is a table: { on = \"horizontal\", through = [0, 0] } "
+                   "(a ground line), { on = \"O\" } (a fixed circle about O) or { on = "
+                   "\"O1-A\" } (a gear)")
+        if not isinstance(spec, dict):
+            raise rd.error(example, "rolling", key)
+        for k in spec:
+            if k not in _KEYS:
+                raise rd.error(f"unknown key '{k}'{_suggest(k, _KEYS)}", "rolling", key)
+        if len(split_name(key)) == 1:  # a rack: a block on a fixed path, on a pinion
+            out.append(_rack(rd, key, spec, ground, sliders, _suggest))
+            continue
+        link, pts = rd.find_link(key, "rolling", key)
+        centre, rim = pts
+        if link.key in wheels:
+            raise rd.error(f"wheel {link.key} is named twice", "rolling", key)
+        wheels.add(link.key)
+        if "on" not in spec:
+            raise rd.error(f"the rolling wheel {key} has no ground line or circle: add on = "
+                           "\"horizontal\" with through = [x, y] (a line), on = \"O\" (a "
+                           "fixed circle about O) or on = \"O1-A\" (a gear)", "rolling", key)
+        if rim in ground:
+            raise rd.error(f"{rim} is a ground point: write the wheel's link centre first, "
+                           f"then a point on the wheel ({rim}{centre}?)", "rolling", key)
+        if rim in points:
+            raise rd.error(f"{rim} is a carried point: the wheel's link ends at a joint",
+                           "rolling", key)
+        if rim in {s.point for s in sliders}:
+            raise rd.error(f"{rim} slides on a guide and rolls with a wheel: one constraint "
+                           "too many", "rolling", key)
+        radius = (rd.length(spec["radius"], "rolling", key) if "radius" in spec
+                  else link.length)
+        inside = spec.get("inside", False)
+        if not isinstance(inside, bool):
+            raise rd.error("inside = true or false", "rolling", key)
+        angle = (rd.qty(spec["angle"], "angle", "rolling", key, default_unit="deg").value
+                 if "angle" in spec else None)
+        on = spec["on"]
+        if not isinstance(on, str):
+            raise rd.error(f"on = {on!r}: " + example[example.index("{"):], "rolling", key)
+        line = on in ("horizontal", "vertical") or re.match(r"^\s*[-+.\d]", on)
+        if line:
+            if "inside" in spec or "on_radius" in spec:
+                raise rd.error("a line has no inside and no radius", "rolling", key)
+            if "through" not in spec:
+                raise rd.error(f"the ground line of wheel {key} needs a point: through = "
+                               "[x, y] or a ground point's name", "rolling", key)
+            if on == "horizontal":
+                ang, label = 0.0, "the horizontal line"
+            elif on == "vertical":
+                ang, label = math.pi / 2, "the vertical line"
+            else:
+                ang = rd.qty(on, "angle", "rolling", key, default_unit="deg").value
+                label = f"the line at {math.degrees(ang):g} deg"
+            through = spec["through"]
+            if isinstance(through, str):
+                if through not in ground:
+                    raise rd.error(f"through = {through!r} is not a ground point"
+                                   f"{_suggest(through, ground)}", "rolling", key)
+                through = ground[through]
+            else:
+                through = rd.coords(through, "rolling", key)
+            u = _unit_at(ang)
+            side = spec.get("side")
+            if side is not None and side not in _SIDES:
+                raise rd.error(f"side = {side!r}: above, below, left or right"
+                               f"{_suggest(str(side), _SIDES)}", "rolling", key)
+            m = (-u[1], u[0])
+            vertical = abs(m[1]) <= 1e-12
+            want = side or ("right" if vertical else "above")
+            axis, sign = {"above": (1, 1), "below": (1, -1), "right": (0, 1),
+                          "left": (0, -1)}[want]
+            if abs(m[axis]) <= 1e-12:
+                raise rd.error(f"side = {want!r}: a {'vertical' if vertical else 'horizontal'}"
+                               f" line has {'a left and a right' if vertical else 'an above and a below'}",
+                               "rolling", key)
+            if m[axis] * sign < 0:
+                m = (-m[0], -m[1])
+            if centre in ground:
+                raise rd.error(f"the wheel's centre {centre} is a ground point: a wheel on a "
+                               "line rolls along it", "rolling", key)
+            if centre in {s.point for s in sliders}:
+                raise rd.error(f"the wheel's centre {centre} moves along the line at the "
+                               "wheel's radius: remove its [sliders] entry", "rolling", key)
+            out.append(RollingPair(link.key, centre, rim, radius, "line", label, u=u,
+                                   through=through, m=m, angle=angle))
+            continue
+        if "through" in spec or "side" in spec:
+            raise rd.error(f"through/side belong to a line; on = {on!r} is a circle",
+                           "rolling", key)
+        base_radius = (rd.length(spec["on_radius"], "rolling", key) if "on_radius" in spec
+                       else None)
+        if on in ground:
+            out.append(RollingPair(link.key, centre, rim, radius, "circle",
+                                   f"the fixed circle about {on}", base_centre=on,
+                                   inside=inside, base_radius=base_radius, angle=angle))
+            continue
+        if len(split_name(on)) != 2:
+            raise rd.error(f"on = {on!r} is no line, ground point or gear (a link such as "
+                           "\"O1-A\")" + _suggest(on, list(ground) + ["horizontal",
+                                                                     "vertical"]),
+                           "rolling", key)
+        base, bpts = rd.find_link(on, "rolling", key)
+        fixed = [p for p in bpts if p in ground]
+        if len(fixed) != 1:
+            raise rd.error(f"the gear {base.key} must turn about a fixed centre: one of its "
+                           "ends a ground point", "rolling", key)
+        if base.key == link.key:
+            raise rd.error("a wheel cannot roll on itself", "rolling", key)
+        out.append(RollingPair(link.key, centre, rim, radius, "gear", f"the gear {base.key}",
+                               base=base.key, base_centre=fixed[0], inside=inside,
+                               base_radius=base_radius, angle=angle))
+    return out

@@ -1,0 +1,522 @@
+"""Rolling without slip: a wheel or gear on a fixed line, on a fixed circle, or meshing
+with a gear.
+
+No slip: the wheel's point at the contact I has the velocity of the base's point there.
+On a fixed line (unit normal m from the line to the centre C, t = perp(m) along it) that
+velocity is zero, so ``v_C + omega perp(I - C) = 0`` with ``I - C = -r m``::
+
+    omega = v_C . t / r,   alpha = a_C . t / r,   phi = phi0 + ((C - T) . t - s0) / r
+
+(T a point of the line, s0 the centre's place at the stated crank angle). The contact point's
+acceleration is not zero: ``a_I = omega^2 r m``, towards the centre.
+
+On a circle of radius R about O, or on a gear of pitch radius R turning about O (omega_B),
+with d = C - O turning at omega_d, ``e = +1`` outside and ``-1`` inside the circle::
+
+    (omega - omega_d) r = -e (omega_B - omega_d) R
+    omega = (1 + e R/r) omega_d - e (R/r) omega_B      (the same for alpha, with alpha_d)
+
+where ``omega_d = d x v_d / |d|^2`` and ``alpha_d = d x a_d / |d|^2 - 2 (d x v_d)(d . v_d) /
+|d|^4``. The wheel's angle follows the crank's (its centre is fixed or is the crank's tip, and
+the base turns at a fixed ratio of the crank): ``phi = phi0 + K (theta - theta0)``. A gear
+pair with both centres fixed: ``omega_2 = -e (r1 / r2) omega_1``; a planet on a fixed sun,
+its arm the crank: ``omega_p = (1 + r_s / r_p) omega_arm`` (the same sense as the arm).
+
+The point P of the wheel (its link CP, |CP| = l) is then ``C + l (cos phi, sin phi)``, and
+``v_P = v_C + omega perp(P - C)``, ``a_P = a_C - omega^2 (P - C) + alpha perp(P - C)``.
+
+>>> line_rates(-1.0, 0.0, 0.5, 2.0, 0.0, 4.0, 0.0)   # rolling to the right: clockwise
+(-4.0, -8.0)
+>>> circle_rates(0.3, 0.0, 0.0, 3.0, -30.0, 0.0, 3.0, -2.0, 0.0, 0.0)   # planet, fixed sun
+(30.0, 0.0)
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from ..errors import AssemblyError, SceneError
+from ..numbers import in_units
+from .base import (Construction, Step, Vector, absolute, centripetal, image_label, pole_text,
+                   relative, sub)
+
+__all__ = ["RollingWheel", "line_rates", "circle_rates", "rim_motion", "recognise"]
+
+#: how far (relative to the radii) a wheel's centre may leave its line or pitch circle
+_GAP = 1e-9
+
+
+def line_rates(tx, ty, r, vx, vy, ax, ay):
+    """(omega, alpha) of a wheel of radius r rolling on a fixed line along t = perp(m),
+    its centre moving at v, a: ``v.t / r``, ``a.t / r``."""
+    return (vx * tx + vy * ty) / r, (ax * tx + ay * ty) / r
+
+
+def circle_rates(dx, dy, vdx, vdy, adx, ady, kd, kb, wb, ab):
+    """(omega, alpha) of a wheel rolling on a circle: ``kd omega_d + kb omega_B``,
+    ``kd alpha_d + kb alpha_B``, d = C - O the line of centres (its velocity vd and
+    acceleration ad), kd = 1 + e R/r, kb = -e R/r."""
+    n2 = dx * dx + dy * dy
+    c = dx * vdy - dy * vdx
+    wd = c / n2
+    ad = (dx * ady - dy * adx) / n2 - 2.0 * c * (dx * vdx + dy * vdy) / (n2 * n2)
+    return kd * wd + kb * wb, kd * ad + kb * ab
+
+
+def rim_motion(rx, ry, w, al, vcx, vcy, acx, acy):
+    """(vx, vy, ax, ay) of the wheel's point at C + r: ``v_C + w perp(r)``,
+    ``a_C - w^2 r + al perp(r)``."""
+    k = w * w
+    return (vcx - w * ry, vcy + w * rx, acx - k * rx - al * ry, acy - k * ry + al * rx)
+
+
+def _pair(scene, wheel):
+    return next(r for r in scene.rolling if r.wheel == wheel)
+
+
+def recognise(g, name):
+    """The point of a rolling wheel, once its centre (and the gear it meshes with) is
+    known."""
+    sc = g.scene
+    pr = sc.rolling_of(name)
+    if pr is None or pr.on == "rack" or pr.centre not in g.P or pr.wheel in g.used_links:
+        return None
+    inp = sc.input
+    where = f"[rolling] {pr.wheel}"
+    if pr.on == "line":
+        (cx, cy), (tx, ty), (mx, my) = g.P[pr.centre], pr.through, pr.m
+        s0 = (cx - tx) * -my + (cy - ty) * mx
+        return RollingWheel(g.next_index, pr.wheel, pr.centre, name, pr.on, pr.label,
+                            _params(sc, g.bodies, pr, s0=s0), unit=g.unit, uname=g.uname)
+    if pr.on == "gear":
+        base = sc.link(pr.base)
+        if not (g.known_link(base) and base.key in g.used_links):
+            return None
+        if base.key == inp.crank:
+            kb_rate = 1.0
+        else:
+            kb_rate = next((getattr(st, "theta_rate", None) for st in g.steps
+                            if base.key in st.links), None)
+            if kb_rate is None:
+                raise SceneError(f"the gear {base.key} that {pr.wheel} meshes with turns "
+                                 "other than at a fixed ratio to the crank: not supported yet "
+                                 "(a gear on the crank, or on a gear that meshes with it)",
+                                 key=where, file=sc.file)
+    else:
+        kb_rate = 0.0
+    O = pr.base_centre
+    if pr.centre in sc.ground:
+        kd_rate = 0.0
+    elif pr.centre == inp.tip and O == inp.pivot:
+        kd_rate = 1.0  # the crank is the arm carrying the wheel
+    else:
+        raise SceneError(f"the centre {pr.centre} of wheel {pr.wheel} must be a fixed point or "
+                         f"the tip of the crank turning about {O} (the arm): another carrier is "
+                         "not supported yet", key=where, file=sc.file)
+    return RollingWheel(g.next_index, pr.wheel, pr.centre, name, pr.on, pr.label,
+                        _params(sc, g.bodies, pr, kd_rate=kd_rate, kb_rate=kb_rate),
+                        base=pr.base, base_centre=O, inside=pr.inside, kd_rate=kd_rate,
+                        kb_rate=kb_rate, unit=g.unit, uname=g.uname)
+
+
+def _params(scene, bodies, pr, *, s0=None, kd_rate=0.0, kb_rate=0.0):
+    """The step's dimensions, read from ``scene``: for a line (l, r, tx, ty, mx, my, phi0,
+    s0); for a circle (l, r, R, kd, kb, phi0, theta0, K, ox, oy), K = kd kd_rate + kb kb_rate
+    the wheel's turning per radian of the crank."""
+    ell = bodies.distance(pr.wheel, pr.centre, pr.rim)
+    r = pr.radius
+    if pr.on == "line":
+        (tx, ty), (mx, my) = pr.through, pr.m
+        phi0 = pr.angle if pr.angle is not None else math.atan2(-my, -mx)
+        return (ell, r, tx, ty, mx, my, phi0, s0)
+    inp = scene.input
+    O = scene.ground[pr.base_centre]
+    if pr.centre in scene.ground:
+        C0 = scene.ground[pr.centre]
+    else:  # the crank's tip at the stated angle
+        L = scene.link(inp.crank).length
+        C0 = (O[0] + L * math.cos(inp.angle), O[1] + L * math.sin(inp.angle))
+    dist = math.dist(C0, O)
+    e = -1.0 if pr.inside else 1.0
+    R = (dist - r) if e > 0 else (dist + r)
+    where = f"[rolling] {pr.wheel}"
+    if R <= 0 or dist == 0:
+        raise SceneError(f"the wheel {pr.wheel} (radius {in_units(r, scene.length_unit)} "
+                         f"{scene.units}) cannot roll {'outside' if e > 0 else 'inside'} "
+                         f"{pr.label}: its centre is {in_units(dist, scene.length_unit)} "
+                         f"{scene.units} from {pr.base_centre}"
+                         + ("" if e < 0 else " (not more than its radius: inside = true?)"),
+                         key=where, file=scene.file)
+    if pr.base_radius is not None and abs(pr.base_radius - R) > _GAP * (R + r):
+        u, n = scene.length_unit, scene.units
+        want = pr.base_radius + e * r
+        raise SceneError(f"the contact leaves the pitch point: the centre distance "
+                         f"{pr.base_centre}{pr.centre} = {in_units(dist, u)} {n} is not "
+                         f"{'R + r' if e > 0 else 'R - r'} = {in_units(want, u)} {n} "
+                         f"(R = {in_units(pr.base_radius, u)}, r = {in_units(r, u)}): "
+                         "the gears would not mesh", key=where, file=scene.file)
+    kd, kb = 1.0 + e * R / r, -e * R / r
+    dx, dy = C0[0] - O[0], C0[1] - O[1]
+    phi0 = pr.angle if pr.angle is not None else math.atan2(-e * dy, -e * dx)
+    return (ell, r, R, kd, kb, phi0, inp.angle, kd * kd_rate + kb * kb_rate, O[0], O[1])
+
+
+@dataclass(frozen=True)
+class RollingWheel(Step):
+    """The point P of a wheel CP rolling without slip (see the module): its angle from the
+    no-slip relation, ``v_P = v_C + omega perp(CP)``."""
+
+    wheel: str
+    centre: str
+    rim: str
+    on: str  # "line", "circle" or "gear"
+    where: str  # what it rolls on, in words
+    dims: tuple = ()
+    base: str | None = None
+    base_centre: str | None = None
+    inside: bool = False
+    kd_rate: float = 0.0  # the line of centres' turning per radian of the crank (0 or 1)
+    kb_rate: float = 0.0  # the base's turning per radian of the crank
+    unit: float = 1e-3  # the scene's length unit (m), for messages
+    uname: str = "mm"
+
+    kind = "rolling"
+
+    @property
+    def theta_rate(self):
+        """The wheel's turning per radian of the crank (a gear meshing with it reads it)."""
+        return None if self.on == "line" else self.dims[7]
+
+    @property
+    def finds(self):
+        return (self.rim,)
+
+    @property
+    def links(self):
+        return (self.wheel,)
+
+    @property
+    def needs(self):
+        return (self.centre,) + ((self.base_centre,) if self.on != "line" else ())
+
+    @property
+    def needs_links(self):
+        return (self.base,) if self.base else ()
+
+    @property
+    def title(self):
+        return f"wheel {self.wheel} rolling on {self.where}"
+
+    @property
+    def params(self):
+        return self.dims
+
+    def dimensions(self, scene, bodies):
+        pr = _pair(scene, self.wheel)
+        if self.on == "line":
+            raise SceneError(f"wheel {self.wheel} rolls on a line: variants of such a scene are "
+                             "not supported yet", key=f"[rolling] {self.wheel}",
+                             file=scene.file)
+        return _params(scene, bodies, pr, kd_rate=self.kd_rate, kb_rate=self.kb_rate)
+
+    def drawn(self, prm, pencil, P):
+        return (prm[0] + pencil(),) + tuple(prm[1:])
+
+    def reach(self):
+        return max(self.dims[0], self.dims[1], 1e-9)
+
+    def place(self, P, prm, ctx, sigma=None):
+        """The point at the compiler's instant (the scene's own): a centre off its line or
+        pitch circle there is the scene's error, named by its [rolling] key."""
+        cx, cy = P[self.centre]
+        phi = self._phi(cx, cy, prm, ctx)
+        g = self.gap(cx, cy, prm)
+        if not ctx.array and abs(g) > _GAP:
+            raise SceneError(self._off_words(cx, cy, prm), key=f"[rolling] {self.wheel}")
+        ell = prm[0]
+        return cx + ell * ctx.cos(phi), cy + ell * ctx.sin(phi), 1.0
+
+    def _phi(self, cx, cy, prm, ctx):
+        if self.on == "line":
+            ell, r, tx, ty, mx, my, phi0, s0 = prm
+            return phi0 + ((cx - tx) * -my + (cy - ty) * mx - s0) / r
+        return prm[5] + prm[7] * (ctx.theta - prm[6])
+
+    def gap(self, cx, cy, prm):
+        """How far the centre is off its line (or its pitch circle), over the radii."""
+        if self.on == "line":
+            ell, r, tx, ty, mx, my = prm[:6]
+            return ((cx - tx) * mx + (cy - ty) * my - r) / r
+        ell, r, R = prm[:3]
+        dx, dy = cx - prm[8], cy - prm[9]
+        e = -1.0 if self.inside else 1.0
+        return ((dx * dx + dy * dy) ** 0.5 - (R + e * r)) / (R + r)
+
+    def _check(self, cx, cy, prm, ctx):
+        g = self.gap(cx, cy, prm)
+        if ctx is None:
+            return
+        if ctx.array:
+            bad = abs(g) > _GAP
+            if bad is True or (bad is not False and bad.any()):
+                ctx.fail(self, bad)
+        elif abs(g) > _GAP:
+            raise AssemblyError(self.why(g), step=self.label)
+
+    def bind(self, prm):
+        """The step's three phases for dimensions ``prm``: functions of a State."""
+        C, X, W, i = self.centre, self.rim, self.wheel, self.index
+        ell, r = prm[0], prm[1]
+        line = self.on == "line"
+        O, base = self.base_centre, self.base
+        step = self
+        if line:
+            tx, ty = -prm[5], prm[4]  # t = perp(m)
+        else:
+            kd, kb = prm[3], prm[4]
+
+        def position(m):
+            P, ctx = m.P, m.ctx
+            cx, cy = P[C]
+            step._check(cx, cy, prm, ctx)
+            phi = step._phi(cx, cy, prm, ctx)
+            P[X] = (cx + ell * ctx.cos(phi), cy + ell * ctx.sin(phi))
+            m.cond[i] = 1.0
+
+        def rates(m, acc):
+            V, A = m.V, m.A
+            if line:
+                return line_rates(tx, ty, r, *V[C], *(A[C] if acc else (0.0, 0.0)))
+            (cx, cy), (ox, oy) = m.P[C], m.P[O]
+            (vcx, vcy), (vox, voy) = V[C], V[O]
+            if acc:
+                (acx, acy), (aox, aoy) = A[C], A[O]
+            else:
+                acx = acy = aox = aoy = 0.0
+            wb = m.W[base] if base else 0.0
+            ab = m.Al[base] if base and acc else 0.0
+            return circle_rates(cx - ox, cy - oy, vcx - vox, vcy - voy, acx - aox, acy - aoy,
+                                kd, kb, wb, ab)
+
+        def velocity_(m):
+            (cx, cy), (x, y) = m.P[C], m.P[X]
+            w, _ = rates(m, False)
+            vcx, vcy = m.V[C]
+            m.W[W] = w
+            m.V[X] = (vcx - w * (y - cy), vcy + w * (x - cx))
+
+        def acceleration_(m):
+            (cx, cy), (x, y) = m.P[C], m.P[X]
+            w, al = rates(m, True)
+            _, _, ax, ay = rim_motion(x - cx, y - cy, w, al, 0.0, 0.0, *m.A[C])
+            m.Al[W] = al
+            m.A[X] = (ax, ay)
+
+        return position, velocity_, acceleration_
+
+    def bind_instant(self, prm):
+        """The three phases in a row for one instant, the same formulas as ``bind`` (its
+        intermediates passed on: the centre, the wheel's angle, omega)."""
+        C, X, W, i, step = self.centre, self.rim, self.wheel, self.index, self
+        ell, r = prm[0], prm[1]
+        O, base = self.base_centre, self.base
+        cos, sin = math.cos, math.sin
+        if self.on == "line":
+            tx, ty = -prm[5], prm[4]  # t = perp(m)
+
+            def instant(m):
+                P, V, A = m.P, m.V, m.A
+                cx, cy = P[C]
+                step._check(cx, cy, prm, m.ctx)
+                phi = step._phi(cx, cy, prm, m.ctx)
+                x, y = cx + ell * cos(phi), cy + ell * sin(phi)
+                P[X] = (x, y)
+                rx, ry = x - cx, y - cy  # as the phases read it back (the same bits)
+                m.cond[i] = 1.0
+                vcx, vcy = V[C]
+                acx, acy = A[C]
+                w, al = line_rates(tx, ty, r, vcx, vcy, acx, acy)
+                vx, vy, ax, ay = rim_motion(rx, ry, w, al, vcx, vcy, acx, acy)
+                m.W[W], m.Al[W] = w, al
+                V[X], A[X] = (vx, vy), (ax, ay)
+            return instant
+        kd, kb, phi0, th0, K = prm[3], prm[4], prm[5], prm[6], prm[7]
+
+        def instant(m):
+            P, V, A = m.P, m.V, m.A
+            cx, cy = P[C]
+            ox, oy = P[O]
+            ctx = m.ctx
+            step._check(cx, cy, prm, ctx)
+            phi = phi0 + K * (ctx.theta - th0)
+            x, y = cx + ell * cos(phi), cy + ell * sin(phi)
+            P[X] = (x, y)
+            rx, ry = x - cx, y - cy  # as the phases read it back (the same bits)
+            m.cond[i] = 1.0
+            (vcx, vcy), (vox, voy) = V[C], V[O]
+            (acx, acy), (aox, aoy) = A[C], A[O]
+            w, al = circle_rates(cx - ox, cy - oy, vcx - vox, vcy - voy, acx - aox, acy - aoy,
+                                 kd, kb, m.W[base] if base else 0.0,
+                                 m.Al[base] if base else 0.0)
+            vx, vy, ax, ay = rim_motion(rx, ry, w, al, vcx, vcy, acx, acy)
+            m.W[W], m.Al[W] = w, al
+            V[X], A[X] = (vx, vy), (ax, ay)
+        return instant
+
+    rounding = 8.0
+
+    def error_bound(self, walk, k, p_in, v_in, a_in):
+        """The centre's errors (and the base's), times ``1 + l / r`` (the point is set out
+        from the centre at l, the angle from the no-slip relation over r), plus its own
+        rounding."""
+        gain = 1.0 + self.dims[0] / self.dims[1]
+        p, v, a = gain * p_in + k, gain * v_in + k, gain * a_in + k
+        return p, v, a, v, a
+
+    # ----- what the views ask
+    def contact(self, P):
+        """The contact point I (the instantaneous centre of the wheel and what it rolls on)
+        and the unit normal m from I towards the centre."""
+        cx, cy = P[self.centre]
+        if self.on == "line":
+            ell, r, tx, ty, mx, my = self.dims[:6]
+            return (cx - r * mx, cy - r * my), (mx, my)
+        R = self.dims[2]
+        ox, oy = P[self.base_centre]
+        n = math.hypot(cx - ox, cy - oy)
+        ux, uy = (cx - ox) / n, (cy - oy) / n
+        e = -1.0 if self.inside else 1.0
+        return (ox + R * ux, oy + R * uy), (e * ux, e * uy)
+
+    def contact_motion(self, sol):
+        """(I, v_I, a_I): the contact point and the velocity and acceleration of the wheel's
+        point there (v_I is the base's point's velocity: no slip)."""
+        I, _ = self.contact(sol.P)
+        rx, ry = sub(I, sol.P[self.centre])
+        vx, vy, ax, ay = rim_motion(rx, ry, sol.W[self.wheel], sol.Al[self.wheel],
+                                    *sol.V[self.centre], *sol.A[self.centre])
+        return I, (vx, vy), (ax, ay)
+
+    def shapes(self, P):
+        """The wheel's pitch circle, what it rolls on (a circle, or the ground line hatched
+        on the far side) and the contact point."""
+        I, (mx, my) = self.contact(P)
+        out = [("circle", self.centre, self.dims[1])]
+        if self.on == "line":
+            out.append(("ground line", I, (-my, mx), (mx, my)))
+        else:
+            out.append(("circle", self.base_centre, self.dims[2]))
+        out.append(("contact", I))
+        return tuple(out)
+
+    def contacts(self, P):
+        """The contact point: the centre of the wheel and what it rolls on (no slip)."""
+        I, _ = self.contact(P)
+        return ((self.base or "ground", self.wheel, I,
+                 f"the contact of {self.wheel} rolling on {self.where} (no slip)"),)
+
+    def _off_words(self, cx, cy, prm):
+        r = prm[1]
+        if self.on == "line":
+            tx, ty, mx, my = prm[2:6]
+            d = (cx - tx) * mx + (cy - ty) * my
+            return (f"at the stated crank angle the centre {self.centre} of wheel {self.wheel} "
+                    f"is {in_units(d, self.unit)} {self.uname} from {self.where}, not its radius "
+                    f"{in_units(r, self.unit)} {self.uname}: "
+                    "the wheel cannot roll on it there (check the line's through, the radius "
+                    "and the links that place the centre)")
+        dist = math.hypot(cx - prm[8], cy - prm[9])
+        return (f"at the stated crank angle the centre {self.centre} of wheel {self.wheel} is "
+                f"{in_units(dist, self.unit)} {self.uname} from {self.base_centre}: the contact "
+                "leaves the pitch "
+                "point (check the radii)")
+
+    # ----- words
+    def why(self, g):
+        return (f"the centre {self.centre} of wheel {self.wheel} is off "
+                + ("its line" if self.on == "line" else "its pitch circle")
+                + f" by {abs(g):.3g} of the radii: the contact leaves the pitch point "
+                "(the wheel would slip or lift)")
+
+    def singular_why(self, c):
+        return f"the wheel {self.wheel} has left its contact (condition {c:.2g})"
+
+    def warning(self, c):
+        return f"{self.label}: the wheel {self.wheel} is near leaving its contact ({c:.3g})"
+
+    def limit_why(self):
+        return f"the wheel {self.wheel} would leave {self.where}"
+
+    def transmission(self):
+        return None
+
+    def condition_column(self):
+        return None
+
+    def bodies(self):
+        return (self.wheel,)
+
+    def orient(self):
+        return {self.wheel: (self.rim, self.centre)}
+
+    def output(self, ground):
+        return None
+
+    def default_hint(self, P):
+        return "above"
+
+    def position_words(self, L, which, angle_deg):
+        r, ell = self.dims[1], self.dims[0]
+        phi = math.degrees(self.dims[6] if self.on == "line" else self.dims[5])
+        how = ("the wheel turns 1/r rad for each unit its centre moves along the line"
+               if self.on == "line" else
+               f"the wheel turns {self.dims[7]:.4g} times the crank's angle, by the gear ratio")
+        return (f"{self.rim}: the wheel {self.wheel} (radius {L(r)}) rolls without slipping on "
+                f"{self.where}; from {self.centre} draw {self.centre}{self.rim} = {L(ell)} at "
+                f"{phi:.4g} deg ({how})")
+
+    def _omega_words(self, sol, w, vI):
+        """How omega follows from no slip at the contact I, in the book's words."""
+        C, W, r = self.centre, self.wheel, self.dims[1]
+        sense = f"{abs(w):.4g} rad/s {'ccw' if w >= 0 else 'cw'}"
+        if self.on != "gear":
+            return (f"no slip: the wheel's point at the contact I with {self.where} is at rest, "
+                    f"so I is the wheel's instantaneous centre and omega_{W} = v_{C} / {C}I = "
+                    f"{math.hypot(*sol.V[C]):.4g} / {r:.4g} = {sense}")
+        return (f"no slip: the wheel's point at the pitch point I moves as the gear's, v_I = "
+                f"omega_{self.base} x {self.base_centre}I = {math.hypot(*vI):.4g} m/s; "
+                f"omega_{W} = (v_I - v_{C}) / {C}I, perpendicular to {C}I, = {sense}")
+
+    def construction(self, sol, ph):
+        C, X, W = self.centre, self.rim, self.wheel
+        lab = lambda p: image_label(sol, p, ph)  # noqa: E731
+        cond = sol.conditions.get(self.index, 1.0)
+        I, vI, aI = self.contact_motion(sol)
+        w, al, r = sol.W[W], sol.Al[W], self.dims[1]
+        if ph == "velocity":
+            V = sol.V
+            text = (self._omega_words(sol, w, vI) + f"; from {pole_text(sol, C, ph)} draw "
+                    f"{lab(C)}{lab(X)} perpendicular to {C}{X} = omega x {C}{X} = "
+                    f"{abs(w) * self.dims[0]:.4g} m/s")
+            found = (relative(sol, X, C, V, ph), absolute(sol, X, V, ph))
+            return Construction(self.index, self.title, ph, lab(X), V[X], (), (), found, text,
+                                cond)
+        A = sol.A
+        cen = centripetal(sol, X, C, W, ph)
+        tan = Vector(cen.end, A[X], f"{lab(X)}t", "tangential", f"tangential of {X}{C}",
+                     f"alpha x {C}{X} = {abs(al) * self.dims[0]:.4g} m/s^2, "
+                     f"perpendicular to {C}{X}")
+        where = (f"omega^2 r = {w * w * r:.4g} m/s^2 towards the centre {C}" if self.on == "line"
+                 else f"{math.hypot(*aI):.4g} m/s^2")
+        why = (f"the tangential acceleration of {C} along the contact, over r"
+               if self.on != "gear" else "the two gears' points at I have one tangential "
+               "acceleration")
+        text = (f"alpha_{W} = {abs(al):.4g} rad/s^2 {'ccw' if al >= 0 else 'cw'} from the no-slip "
+                f"relation ({why}); from "
+                f"{pole_text(sol, C, ph)} draw the centripetal component {cen.text}, then the "
+                f"tangential {tan.text}; its end is {lab(X)}. The contact point I is not at rest "
+                f"in acceleration: a_I = {where}")
+        found = (cen, tan, relative(sol, X, C, A, ph), absolute(sol, X, A, ph))
+        return Construction(self.index, self.title, ph, lab(X), A[X], (cen,), (), found, text,
+                            cond)
