@@ -185,7 +185,9 @@ class _Reducer:
         if getattr(plan, "pins", ()):
             for pin, r in rubbing_arrays(plan, fr.W, fr.n).items():
                 yield f"rub_{pin}", "m/s", r, "rubbing"
-        t = torque_array(sc, fr.V, fr.W, self.sw.omega, fr.n)
+        omega = fr.W[sc.link(sc.input.crank).key] if sc.input.given is not None \
+            else self.sw.omega  # a given motion held: the crank's speed follows
+        t = torque_array(sc, fr.V, fr.W, omega, fr.n)
         if t is not None:
             yield "torque", "N m", t, "input torque, ccw +"
         for st in branch_steps(plan):

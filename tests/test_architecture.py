@@ -300,3 +300,42 @@ def test_records_filled_in_place_have_every_field_their_constructor_sets():
         for name in _slots(PinRubbing):
             assert hasattr(rec, name), name
         assert rec.rubbing_velocity == max(rec.values) and rec.point in rec._pin
+
+
+def test_the_step_contract_is_checked_when_a_kind_is_defined():
+    """A kind that leaves a member of the contract to the base class is refused at once
+    (at import), naming what it lacks; every kind of the package gives them all."""
+    import dataclasses
+
+    from polygon_method.steps import base
+
+    with pytest.raises(TypeError, match="does not give .*reach.*bodies"):
+        @dataclasses.dataclass(frozen=True)
+        class Forgetful(base.Step):  # noqa: F841  (defining it is the test)
+            kind = "forgetful"
+            finds = links = needs = ()
+            title = "forgetful"
+            params = ()
+
+            def dimensions(self, scene, bodies):
+                return ()
+
+            def place(self, P, prm, ctx, sigma=None):
+                return 0.0, 0.0, 1.0
+
+            def bind(self, prm):
+                return (), (), ()
+
+    def kinds(cls):
+        for sub in cls.__subclasses__():
+            yield sub
+            yield from kinds(sub)
+
+    import polygon_method.steps as steps_pkg  # noqa: F401  (every kind imported)
+    found = {k.kind for k in kinds(base.Step) if k.__module__.startswith("polygon_method")}
+    assert {"crank", "dyad", "slider", "slotted", "carried", "cylinder"} <= found
+    for k in kinds(base.Step):
+        if k.__module__.startswith("polygon_method"):
+            for name in base.REQUIRED:
+                assert any(name in vars(c) for c in k.__mro__[:-1] if c is not base.Step), \
+                    (k.__name__, name)

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from ..errors import TOL, AssemblyError, SingularStepError
 from .rounding import two_lines
 
-__all__ = ["Context", "State", "Step", "Vector", "DirectionLine", "Construction",
+__all__ = ["REQUIRED", "OPTIONAL", "Context", "State", "Step", "Vector", "DirectionLine", "Construction",
            "image_name", "image_label", "numbered", "pole_text", "unit", "sub", "add", "perp"]
 
 
@@ -85,6 +85,45 @@ class State:
         self.array = ctx.array  # arrays: singular entries are masked, not raised
 
 
+#: what every kind of step must give itself (the step contract): a kind that leaves one to
+#: the base class fails when its module is imported, never silently in a view.
+#:
+#: ``kind``           its name in the JSON ``steps``
+#: ``finds``          the points it finds (a cylinder finds none, a triad three)
+#: ``links``          the links whose omega and alpha it determines
+#: ``needs``          the points it reads
+#: ``title``          its words in the plan ("dyad BC, CD at C")
+#: ``params``         its dimensions, as the compiled scene gives them
+#: ``dimensions``     the same, read from another scene of the same shape
+#: ``place``          its position formula (either branch) with its condition
+#: ``bind``           its three phases (position, velocity, acceleration) for dimensions
+#: ``reach``          its largest length: the scale of its tolerances
+#: ``bodies``         the bodies it sets moving, in the textbook's numbering order
+#: ``orient``         each link it finds: which point relative to which (the step table)
+#: ``position_words`` its line of the configuration diagram's construction
+#: ``construction``   what it draws on either polygon, and the sentence
+#: ``singular_why``   why it fails at a small condition
+#: ``warning``        the line for a condition below ``TOL.warn``
+#: ``limit_why``      why the linkage cannot be assembled beyond its limit position
+#: ``condition_column`` its condition's column in a sweep summary (or None)
+#: ``transmission``   the transmission angle its condition measures, in words (or None)
+REQUIRED = ("kind", "finds", "links", "needs", "title", "params", "dimensions", "place",
+            "bind", "reach", "bodies", "orient", "position_words", "construction",
+            "singular_why", "warning", "limit_why", "condition_column", "transmission")
+
+#: what a kind may leave to the base class, each default right for most kinds: ``branching``
+#: (False: one assembly), ``image_by_similar_triangle``, ``draws_relative``,
+#: ``other_assembly_mistake``, ``needs_links`` (none), ``bind_instant`` (its three phases
+#: in a row), ``group_key``/``bind_group``/``bind_group_instant`` (not bound in groups),
+#: ``rounding``/``error_bound`` (the rule of two direction lines), ``contacts``,
+#: ``contact_motion``, ``shapes`` (no rolling contact, nothing drawn besides links),
+#: ``produced``, ``drawn`` (draws nothing of its own), ``output``, ``default_hint``
+OPTIONAL = ("branching", "image_by_similar_triangle", "draws_relative",
+            "other_assembly_mistake", "needs_links", "bind_instant", "group_key",
+            "bind_group", "bind_group_instant", "rounding", "error_bound", "contacts",
+            "contact_motion", "shapes", "produced", "drawn", "output", "default_hint")
+
+
 @dataclass(frozen=True)
 class Step:
     """One hand construction: finds one point (``finds``) from points already known.
@@ -97,6 +136,16 @@ class Step:
     """
 
     index: int
+
+    def __init_subclass__(cls, **kw):
+        """The step contract (:data:`REQUIRED`), checked when a kind is defined: a kind
+        that leaves a member to this base class is refused at import."""
+        super().__init_subclass__(**kw)
+        missing = [name for name in REQUIRED
+                   if not any(name in vars(k) for k in cls.__mro__[:-1] if k is not Step)]
+        if missing:
+            raise TypeError(f"step kind {cls.__name__} does not give {', '.join(missing)} "
+                            "(the step contract: polygon_method.steps.base.REQUIRED)")
 
     #: the name of the kind ("crank", "dyad", ...), as in the JSON ``steps``
     kind = "step"

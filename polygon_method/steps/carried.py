@@ -108,6 +108,29 @@ class Carried(Step):
     def condition_column(self):
         return None
 
+    def reach(self):
+        """Its distance from the first point it is carried by, over the line of the two
+        (a scale only: a carried point has one position)."""
+        return max(1e-9, (self.lam * self.lam + self.mu * self.mu) ** 0.5)
+
+    def singular_why(self, c) -> str:
+        return f"the point {self.point} is carried on {self.link}: it is never singular"
+
+    def warning(self, c) -> str:
+        return f"{self.label}: condition {c:.3g}"
+
+    def limit_why(self) -> str:
+        return "the linkage cannot be assembled beyond it"
+
+    def transmission(self):
+        return None
+
+    def bodies(self):
+        return ()  # it moves with the body it is carried on
+
+    def orient(self):
+        return {}
+
     def place(self, P, prm, ctx, sigma=None):
         x, y = _image(*P[self.p], *P[self.q], prm[0], prm[1])
         return x, y, 1.0

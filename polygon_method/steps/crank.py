@@ -152,6 +152,21 @@ class Crank(Step):
         return p, v, a, v, a
 
     # ----- words
+    def singular_why(self, c) -> str:
+        return f"the crank {self.link} is never singular (condition {c:.2g})"
+
+    def warning(self, c) -> str:
+        return f"{self.label}: condition {c:.3g}"
+
+    def limit_why(self) -> str:
+        return "the linkage cannot be assembled beyond it"
+
+    def condition_column(self):
+        return None  # its condition is always 1
+
+    def transmission(self):
+        return None
+
     def bodies(self):
         """The bodies this step sets moving, in the textbook's numbering order."""
         return (self.link,)

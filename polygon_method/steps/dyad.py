@@ -299,6 +299,10 @@ class Dyad(Step):
         return (f"{self.side(1)} and {self.side(2)} come into line (a toggle: {self.point} "
                 "cannot be assembled beyond it)")
 
+    def condition_column(self):
+        """Its condition is the sine of the transmission angle at the point it finds."""
+        return (f"mu at {self.finds[0]}", "deg", "transmission angle (acute)")
+
     def transmission(self):
         return f"between {self.side(1)} and {self.side(2)}"
 

@@ -284,6 +284,10 @@ class SliderDyad(Step):
         return (f"{self.link} stands perpendicular to the guide of {self.point} (it cannot "
                 "reach the guide beyond it)")
 
+    def condition_column(self):
+        """Its condition is the sine of the transmission angle at the point it finds."""
+        return (f"mu at {self.finds[0]}", "deg", "transmission angle (acute)")
+
     def transmission(self):
         return f"between {self.link} and the normal to the path of {self.point}"
 

@@ -259,6 +259,13 @@ class SlottedLink(Step):
                                  f"{self.guide}: the link's direction is undefined",
                                  step=self.label)
 
+    def singular_why(self, c) -> str:
+        return (f"block {self.point} is at {self.known}, the pivot of {self.guide} (condition "
+                f"{c:.2g}): the link's direction is undefined")
+
+    def transmission(self):
+        return None  # its condition is the block's distance from the pivot, not an angle
+
     def warning(self, c) -> str:
         return (f"{self.label}: block {self.point} is close to {self.known}, the pivot of "
                 f"{self.guide} (condition {c:.3g})")
