@@ -12,13 +12,15 @@ carried    a point on a known link or plate (the image point, similar triangles)
 slider     RRP: a link and a slider on a fixed path or on a moving link
 dyad       RRR: the joint of two links (or plate sides) to two known points
 slotted    RPR: a link that a block slides along (slotted lever, Whitworth, swivel)
+triad      class-III group: a plate whose three vertices are each linked to a known point
+           (three points at once: Newton on the loop equations; Goodman's auxiliary point)
 =========  ===========================================================================
 
 Adding a kind: write its module (a frozen ``Step`` subclass and a ``recognise(g, name)``
 function) and add it to :data:`TIERS`.
 """
 
-from . import carried, dyad, slider, slotted
+from . import carried, dyad, slider, slotted, triad
 from .base import (Construction, Context, DirectionLine, State, Step, Vector, image_label,
                    image_name, pole_text)
 from .carried import Carried
@@ -26,13 +28,15 @@ from .crank import Crank
 from .dyad import Dyad
 from .slider import SliderDyad
 from .slotted import SlottedLink, under_label
+from .triad import Triad
 
 #: the recognisers the compiler tries, tier by tier: for each unknown point (in the scene's
 #: order) every kind of the first tier in turn; the next tier only when no point of the
 #: tiers before can be found. The crank is the plan's first step and is not recognised.
 TIERS = ((carried.recognise, slider.recognise, dyad.recognise),
-         (slotted.recognise,))
+         (slotted.recognise,),
+         (triad.recognise,))
 
 __all__ = ["TIERS", "Step", "Context", "State", "Crank", "Dyad", "SliderDyad", "SlottedLink",
-           "Carried", "Construction", "Vector", "DirectionLine", "image_label", "image_name",
+           "Carried", "Triad", "Construction", "Vector", "DirectionLine", "image_label", "image_name",
            "pole_text", "under_label"]

@@ -87,7 +87,8 @@ class State:
 
 @dataclass(frozen=True)
 class Step:
-    """One hand construction: finds one point (``finds``) from points already known.
+    """One hand construction: finds one point (``finds``; a class-III group finds three
+    at once) from points already known.
 
     A kind fills in: ``finds``, ``links`` (the links whose omega and alpha it determines),
     ``needs`` (the points it reads), ``params`` (its dimensions, as the plan's scene gives
@@ -168,7 +169,7 @@ class Step:
 
     def positions(self, P, ctx):
         """Place this step's point into the dict ``P`` (one step alone, at the plan's own
-        dimensions)."""
+        dimensions; a step finding several points places them all)."""
         x, y, c = self.place(P, self.params, ctx)
         P[self.finds[0]] = (x, y)
         ctx.cond[self.index] = c
@@ -257,6 +258,13 @@ class Step:
     def default_hint(self, P):
         """Which of the two positions the step takes when the scene does not say."""
         return "above"
+
+    def assemble(self, g):
+        """(the step with its assembly chosen, {point: (x, y)}) for a step that chooses
+        its own assembly when compiled (``g``: the compiler, its ``P``, ``scene``,
+        ``notes``), or None: the compiler chooses between the two positions of
+        :meth:`place` (``sigma`` = +1 or -1) by the scene's [assembly] hint."""
+        return None
 
 
 # --------------------------------------------------------------------------- records

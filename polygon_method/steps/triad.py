@@ -1,0 +1,838 @@
+"""Class-III group (a triad): a plate with three vertices V1, V2, V3, each joined by a
+binary link to a known point K1, K2, K3. No vertex can be found alone (each has one link
+to a known point): the three are found at once.
+
+Position: the plate's pose ``q = (x, y, th)``, V1 = (x, y), ``Vi = V1 + R(th) ui`` with
+ui the vertex's place on the plate relative to V1 (u1 = 0), from the loop equations
+``Fi = |Vi - Ki|^2 - li^2 = 0`` by Newton's method, ``M dq = -F / 2`` with the rows of
+``M``::
+
+    (rix, riy, (Vi - V1) x ri),   ri = Vi - Ki
+
+Several assemblies exist (up to six); the one the scene states is followed from the
+scene's instant by continuation (each new position from the nearest one already solved,
+in small steps where the inputs move far, never across a change of sign of det M).
+
+Velocity: ``vVi = v1 + w perp(Vi - V1)`` and ``ri . (vVi - vKi) = 0``, one 3x3 solve
+``M (v1x, v1y, w) = (ri . vKi)``. Acceleration: ``aVi = a1 + al perp(Vi - V1) - w^2 (Vi -
+V1)`` and ``ri . (aVi - aKi) + |vVi - vKi|^2 = 0``, the same matrix with the right side
+``ri . (aKi + w^2 (Vi - V1)) - |vVi - vKi|^2``. A link's omega is ``ri x (vVi - vKi) /
+|ri|^2`` (alpha the same with accelerations).
+
+Condition: ``|det N| / prod |Ni|`` with the rows ``Ni = (uix, uiy, (Vi - G) x ui / rho)``,
+ui the unit vector along link i, G the plate's centroid and rho the RMS distance of its
+vertices from G: 1 when the three links pull along orthogonal directions, 0 when their
+lines meet in one point (or are parallel), where the plate can turn about that point
+without any link moving (the triad's singular position).
+
+>>> solve3((1.0, 0.0, 0.0, 0.0, 2.0, 0.0, 0.0, 0.0, 4.0), (1.0, 1.0, 1.0))
+(1.0, 0.5, 0.25)
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from ..errors import TOL, AssemblyError
+from ..numbers import in_units
+from .base import (Construction, DirectionLine, Step, Vector, absolute, image_label, perp,
+                   pole_text, relative, sub, unit)
+from .rounding import two_lines
+
+__all__ = ["Triad", "recognise", "solve3", "vertices", "velocity", "acceleration",
+           "condition", "newton_step", "assemblies"]
+
+#: Newton's residual (|Fi| / 2 li, relative to the largest length) taken as converged
+_CONVERGED = 1e-13
+#: the most plate positions continuation keeps per step (for starting new solves)
+_KEEP = 4096
+#: solved positions passed sequentially in array mode (the rest start from them)
+_SUBSAMPLE = 256
+
+
+# --------------------------------------------------------------------------- formulas
+
+
+def solve3(m, h):
+    """z with M z = h for a 3x3 matrix ``m`` (9 entries, rows first) by Cramer's rule;
+    floats or arrays. Returns the three entries of z."""
+    a, b, c, d, e, f, g, k, l_ = m
+    h1, h2, h3 = h
+    c1 = e * l_ - f * k
+    c2 = f * g - d * l_
+    c3 = d * k - e * g
+    det = a * c1 + b * c2 + c * c3
+    z1 = (h1 * c1 + b * (f * h3 - h2 * l_) + c * (h2 * k - e * h3)) / det
+    z2 = (a * (h2 * l_ - f * h3) + h1 * c2 + c * (d * h3 - h2 * g)) / det
+    z3 = (a * (e * h3 - h2 * k) + b * (h2 * g - d * h3) + h1 * c3) / det
+    return z1, z2, z3
+
+
+def det3(m):
+    a, b, c, d, e, f, g, k, l_ = m
+    return a * (e * l_ - f * k) + b * (f * g - d * l_) + c * (d * k - e * g)
+
+
+def vertices(x, y, th, prm, cos, sin):
+    """The plate's vertices V1, V2, V3 at pose (x, y, th); ``prm`` = (l1, l2, l3, u2x, u2y,
+    u3x, u3y)."""
+    c, s = cos(th), sin(th)
+    u2x, u2y, u3x, u3y = prm[3], prm[4], prm[5], prm[6]
+    return ((x, y), (x + c * u2x - s * u2y, y + s * u2x + c * u2y),
+            (x + c * u3x - s * u3y, y + s * u3x + c * u3y))
+
+
+def matrix(V, K):
+    """The rows (rix, riy, (Vi - V1) x ri) of the loop equations' Jacobian (halved)."""
+    (x1, y1) = V[0]
+    out = []
+    for (vx, vy), (kx, ky) in zip(V, K):
+        rx, ry = vx - kx, vy - ky
+        out += [rx, ry, (vx - x1) * ry - (vy - y1) * rx]
+    return tuple(out)
+
+
+def newton_step(q, K, prm, cos, sin):
+    """One Newton step from pose ``q``: (new pose, residual max |Fi| / 2 li, det M at q)."""
+    x, y, th = q
+    V = vertices(x, y, th, prm, cos, sin)
+    m = matrix(V, K)
+    F = []
+    res = None
+    for i in range(3):
+        rx, ry = V[i][0] - K[i][0], V[i][1] - K[i][1]
+        f = 0.5 * (rx * rx + ry * ry - prm[i] * prm[i])
+        F.append(-f)
+        r = abs(f) / prm[i]
+        res = r if res is None else _vmax(r, res)
+    dx, dy, dth = solve3(m, F)
+    return (x + dx, y + dy, th + dth), res, det3(m)
+
+
+def _vmax(a, b):
+    if isinstance(a, float) and isinstance(b, float):
+        return a if a >= b else b
+    import numpy as np
+    return np.maximum(a, b)
+
+
+def condition(V, K):
+    """|det N| / prod |Ni| (see the module): 1 at best, 0 where the three links' lines
+    meet in one point."""
+    gx = (V[0][0] + V[1][0] + V[2][0]) / 3.0
+    gy = (V[0][1] + V[1][1] + V[2][1]) / 3.0
+    rho2 = sum((vx - gx) ** 2 + (vy - gy) ** 2 for vx, vy in V) / 3.0
+    rho = rho2 ** 0.5
+    rows, norm = [], 1.0
+    for (vx, vy), (kx, ky) in zip(V, K):
+        rx, ry = vx - kx, vy - ky
+        n = (rx * rx + ry * ry) ** 0.5
+        ux, uy = rx / n, ry / n
+        t = ((vx - gx) * uy - (vy - gy) * ux) / rho
+        rows += [ux, uy, t]
+        norm = norm * (1.0 + t * t) ** 0.5
+    return abs(det3(rows)) / norm
+
+
+def velocity(V, K, VK):
+    """(v1, w, (vV1, vV2, vV3), (w1, w2, w3)): the plate's and the links' angular velocities
+    and the vertices' velocities, from the known points' velocities ``VK``."""
+    m = matrix(V, K)
+    h = tuple((V[i][0] - K[i][0]) * VK[i][0] + (V[i][1] - K[i][1]) * VK[i][1]
+              for i in range(3))
+    vx, vy, w = solve3(m, h)
+    x1, y1 = V[0]
+    vv, wl = [], []
+    for i in range(3):
+        dx, dy = V[i][0] - x1, V[i][1] - y1
+        ex, ey = vx - w * dy, vy + w * dx
+        vv.append((ex, ey))
+        rx, ry = V[i][0] - K[i][0], V[i][1] - K[i][1]
+        wl.append((rx * (ey - VK[i][1]) - ry * (ex - VK[i][0])) / (rx * rx + ry * ry))
+    return w, tuple(vv), tuple(wl)
+
+
+def acceleration(V, K, VV, VK, AK, w):
+    """(al, (aV1, aV2, aV3), (al1, al2, al3)) from the known points' accelerations ``AK``,
+    the vertices' and known points' velocities and the plate's omega ``w``."""
+    m = matrix(V, K)
+    x1, y1 = V[0]
+    w2 = w * w
+    h = []
+    for i in range(3):
+        rx, ry = V[i][0] - K[i][0], V[i][1] - K[i][1]
+        sx, sy = VV[i][0] - VK[i][0], VV[i][1] - VK[i][1]
+        h.append(rx * (AK[i][0] + w2 * (V[i][0] - x1)) + ry * (AK[i][1] + w2 * (V[i][1] - y1))
+                 - (sx * sx + sy * sy))
+    ax, ay, al = solve3(m, h)
+    aa, all_ = [], []
+    for i in range(3):
+        dx, dy = V[i][0] - x1, V[i][1] - y1
+        ex, ey = ax - al * dy - w2 * dx, ay + al * dx - w2 * dy
+        aa.append((ex, ey))
+        rx, ry = V[i][0] - K[i][0], V[i][1] - K[i][1]
+        all_.append((rx * (ey - AK[i][1]) - ry * (ex - AK[i][0])) / (rx * rx + ry * ry))
+    return al, tuple(aa), tuple(all_)
+
+
+# --------------------------------------------------------------------------- positions
+
+
+def _scale(prm):
+    return max(abs(prm[0]), abs(prm[1]), abs(prm[2]), math.hypot(prm[3], prm[4]),
+               math.hypot(prm[5], prm[6]), 1e-300)
+
+
+def _newton(q, K, prm, size, iters=40):
+    """Newton to machine precision from pose q (floats): (pose, det M) or None."""
+    cos, sin = math.cos, math.sin
+    tol = _CONVERGED * max(size, *(abs(c) for xy in K for c in xy), abs(q[0]), abs(q[1]))
+    polished = False
+    for _ in range(iters):
+        new, res, det = newton_step(q, K, prm, cos, sin)
+        if not all(math.isfinite(v) for v in new):
+            return None
+        dx, dy, dth = new[0] - q[0], new[1] - q[1], new[2] - q[2]
+        if math.hypot(dx, dy) > size or abs(dth) > 1.0:  # a wild step: not near a solution
+            return None
+        q = new
+        if polished:
+            return q, det
+        polished = res <= tol
+    return None
+
+
+def _flat(K, prm):
+    return tuple(c for xy in K for c in xy) + tuple(prm)
+
+
+def follow(q, a, b, size, det_sign):
+    """Continuation (floats) of pose ``q``, solved at inputs ``a`` (K and dimensions
+    flattened), to inputs ``b``: straight along the inputs, in steps halved where Newton
+    fails, jumps or changes the sign of det M (another assembly). The pose at ``b`` or
+    None (the assembly ends on the way: a limit position)."""
+    t, h = 0.0, 1.0
+    dist = max(abs(u - v) for u, v in zip(a, b)) / size
+    if dist > 0.05:
+        h = 0.05 / dist
+    while t < 1.0:
+        s = min(1.0, t + h)
+        inp = tuple(u + s * (v - u) for u, v in zip(a, b))
+        K, prm = ((inp[0], inp[1]), (inp[2], inp[3]), (inp[4], inp[5])), inp[6:]
+        got = _newton(q, K, prm, size, iters=12 if s < 1.0 else 40)
+        ok = got is not None and (det_sign == 0 or got[1] * det_sign > 0)
+        if ok:
+            moved = math.hypot(got[0][0] - q[0], got[0][1] - q[1])
+            step = max(abs(u - v) for u, v in zip(a, b)) * (s - t)
+            ok = moved <= 4.0 * step + 0.1 * size and abs(got[0][2] - q[2]) < 0.5
+        if ok:
+            q, t = got[0], s
+            h = min(2.0 * h, 1.0)
+        else:
+            h *= 0.5
+            if h < 1e-7:
+                return None
+    return q
+
+
+def assemblies(K, prm, n=2048):
+    """Every assembly of the triad at known points ``K`` (floats): a list of poses, found
+    by turning link 1 about K1 (angle phi), placing the plate about V1 so that V2 is on its
+    circle about K2 (two ways), and taking the sign changes of |V3 - K3|^2 - l3^2, each
+    polished by Newton."""
+    import numpy as np
+    l1, l2, l3, u2x, u2y, u3x, u3y = prm
+    size = _scale(prm)
+    phi = np.linspace(0.0, 2.0 * math.pi, n + 1)
+    x1 = K[0][0] + l1 * np.cos(phi)
+    y1 = K[0][1] + l1 * np.sin(phi)
+    dx, dy = K[1][0] - x1, K[1][1] - y1
+    dn = np.hypot(dx, dy)
+    un = math.hypot(u2x, u2y)
+    c = (un * un + dn * dn - l2 * l2) / 2.0
+    with np.errstate(all="ignore"):
+        arg = c / (dn * un)
+    ok = np.abs(arg) <= 1.0
+    base = np.arctan2(dy, dx) - math.atan2(u2y, u2x)
+    found = []
+    for sign in (1.0, -1.0):
+        th = base + sign * np.arccos(np.clip(arg, -1.0, 1.0))
+        x3 = x1 + np.cos(th) * u3x - np.sin(th) * u3y
+        y3 = y1 + np.sin(th) * u3x + np.cos(th) * u3y
+        g = (x3 - K[2][0]) ** 2 + (y3 - K[2][1]) ** 2 - l3 * l3
+        for i in np.nonzero(ok[:-1] & ok[1:] & (np.sign(g[:-1]) != np.sign(g[1:])))[0]:
+            w = g[i] / (g[i] - g[i + 1]) if g[i] != g[i + 1] else 0.5
+            q0 = (x1[i] + w * (x1[i + 1] - x1[i]), y1[i] + w * (y1[i + 1] - y1[i]),
+                  th[i] + w * (th[i + 1] - th[i]))
+            got = _newton(tuple(float(v) for v in q0), K, prm, size)
+            if got is None:
+                continue
+            q = got[0]
+            if all(math.hypot(q[0] - p[0], q[1] - p[1]) > 1e-7 * size or
+                   abs(math.remainder(q[2] - p[2], 2 * math.pi)) > 1e-7 for p in found):
+                found.append((q[0], q[1], math.remainder(q[2], 2 * math.pi)))
+    return found
+
+
+class _Memo:
+    """The poses this step has solved (its inputs flattened, the pose, sign of det M):
+    the scene's own first, then what continuation passed (at most ``_KEEP``)."""
+
+    def __init__(self, anchor):
+        self.items = [anchor]
+
+    def nearest(self, inp, size):
+        best, bd = None, None
+        for it in self.items:
+            d = max(abs(u - v) for u, v in zip(it[0], inp)) / size
+            if bd is None or d < bd:
+                best, bd = it, d
+                if d == 0.0:
+                    break
+        return best, bd
+
+    def add(self, inp, q, sign):
+        if len(self.items) >= _KEEP:
+            del self.items[1:_KEEP // 2]
+        self.items.append((inp, q, sign))
+
+
+def solve_scalar(memo, K, prm):
+    """The pose at inputs (K, prm) on the scene's assembly (floats), or None."""
+    size = _scale(prm)
+    inp = _flat(K, prm)
+    it, d = memo.nearest(inp, size)
+    if d == 0.0:
+        got = _newton(it[1], K, prm, size)
+        if got is not None and got[1] * it[2] > 0:
+            return got[0]
+        return None
+    q = follow(it[1], it[0], inp, size, it[2])
+    if q is not None:
+        det = newton_step(q, K, prm, math.cos, math.sin)[2]
+        memo.add(inp, q, 1.0 if det > 0 else -1.0)
+    return q
+
+
+def solve_array(memo, K, prm, np):
+    """Poses for arrays of inputs (continuation in the arrays' order from the element
+    nearest to a solved one; the rest by Newton from the two solved neighbours, in one
+    vectorised pass). Returns (x, y, th, bad mask)."""
+    cols = [np.asarray(c, dtype=float) for xy in K for c in xy] + \
+        [np.asarray(p, dtype=float) for p in prm]
+    n = max([c.size for c in cols] + [1])
+    cols = [np.broadcast_to(c, (n,)) if c.ndim else np.full(n, float(c)) for c in cols]
+    data = np.stack(cols, axis=1)  # n x 13
+    size = float(max(_scale(tuple(np.max(np.abs(data[:, 6:]), axis=0))), 1e-300))
+    # the element nearest to a solved input starts the walk
+    ref = np.array([it[0] for it in memo.items])
+    dist = np.abs(data[:, None, :] - ref[None, :, :]).max(axis=2) if n * len(ref) < 4e6 \
+        else np.abs(data[:, None, :] - ref[None, :1, :]).max(axis=2)
+    a = int(np.argmin(dist.min(axis=1)))
+    step = max(1, -(-n // _SUBSAMPLE))
+    sub_idx = sorted(set(range(0, n, step)) | {a, n - 1})
+    qs = {}
+    inp_of = lambda i: tuple(float(v) for v in data[i])  # noqa: E731
+
+    def kp(inp):
+        return ((inp[0], inp[1]), (inp[2], inp[3]), (inp[4], inp[5])), inp[6:]
+
+    Ka, pa = kp(inp_of(a))
+    qa = solve_scalar(memo, Ka, pa)
+    if qa is not None:
+        qs[a] = qa
+        pos = sub_idx.index(a)
+        for order in (sub_idx[pos + 1:], sub_idx[:pos][::-1]):
+            prev = a
+            for i in order:
+                q = follow(qs[prev], inp_of(prev), inp_of(i), size,
+                           _sign(newton_step(qs[prev], *kp(inp_of(prev)), math.cos,
+                                             math.sin)[2]))
+                if q is None:
+                    break
+                qs[i] = q
+                prev = i
+    # the rest: Newton from the straight line between the solved neighbours
+    known = np.array(sorted(qs), dtype=np.intp)
+    bad = np.ones(n, dtype=bool)
+    x = np.zeros(n)
+    y = np.zeros(n)
+    th = np.zeros(n)
+    if len(known) == 0:
+        return x, y, th, bad
+    kq = np.array([qs[i] for i in known])
+    idx = np.arange(n)
+    j = np.clip(np.searchsorted(known, idx), 1, max(len(known) - 1, 1))
+    if len(known) == 1:
+        lo = hi = np.zeros(n, dtype=np.intp)
+        w = np.zeros(n)
+    else:
+        lo, hi = j - 1, j
+        span = (known[hi] - known[lo]).astype(float)
+        w = np.clip((idx - known[lo]) / span, 0.0, 1.0)
+        # only between two solved neighbours that are next to each other on the walk
+        gap = np.array([sub_idx.index(int(known[k + 1])) - sub_idx.index(int(known[k]))
+                        for k in range(len(known) - 1)] + [1])
+        inside = (idx >= known[0]) & (idx <= known[-1]) & (gap[lo] == 1)
+        w = np.where(inside, w, 0.0)
+        hi = np.where(inside, hi, lo)
+    q = [kq[lo, c] + w * (kq[hi, c] - kq[lo, c]) for c in range(3)]
+    Kx = tuple((data[:, 2 * i], data[:, 2 * i + 1]) for i in range(3))
+    pr = tuple(data[:, 6 + c] for c in range(7))
+    signs = np.sign([newton_step(tuple(kq[k]), *kp(inp_of(int(known[k]))), math.cos,
+                                 math.sin)[2] for k in range(len(known))])
+    with np.errstate(all="ignore"):
+        for _ in range(8):
+            q, res, det = newton_step(tuple(q), Kx, pr, np.cos, np.sin)
+        q, res, det = newton_step(tuple(q), Kx, pr, np.cos, np.sin)
+    good = np.isfinite(res) & (res <= 1e3 * _CONVERGED * size) & \
+        (np.sign(det) == signs[lo]) & (np.sign(det) == signs[hi])
+    good &= (idx >= known[0]) & (idx <= known[-1])
+    # where the walk stopped (a limit), nothing beyond it is trusted
+    for k in known:
+        good[k] = True
+    x, y, th = (np.where(good, c, kq[lo, i]) for i, c in enumerate(q))
+    for k in known:
+        x[k], y[k], th[k] = qs[int(k)]
+    return x, y, th, ~good
+
+
+def _sign(d):
+    return 1.0 if d > 0 else -1.0
+
+
+# --------------------------------------------------------------------------- recognition
+
+
+def recognise(g, name):
+    """A plate (a link with carried points: a body of three or more points, none known)
+    with ``name`` among three of its points that each have exactly one unused link to a
+    known point; no other kind can find any point when this is tried."""
+    for key in g.bodies_of(name):
+        if key in g.used_links:
+            continue
+        b = g.body(key)
+        if len(b) < 3 or any(p in g.P for p in b):
+            continue
+        verts = []
+        for p in b:
+            free = [f for f in g.free(p) if f[0] != key]
+            if len(free) == 1:
+                verts.append((p, free[0]))
+        if name not in [v[0] for v in verts] or len(verts) < 3:
+            continue
+        verts = verts[:3]
+        if len({f[0] for _, f in verts}) < 3:
+            continue  # one link to two vertices: no triad
+        f = b
+        (p1, (k1, K1, l1)), (p2, (k2, K2, l2)), (p3, (k3, K3, l3)) = verts
+        return Triad(g.next_index, (p1, p2, p3), key, (K1, K2, K3), (k1, k2, k3),
+                     (l1, l2, l3), (f[p2][0] - f[p1][0], f[p2][1] - f[p1][1],
+                                    f[p3][0] - f[p1][0], f[p3][1] - f[p1][1]),
+                     unit=g.unit, uname=g.uname)
+    return None
+
+
+# --------------------------------------------------------------------------- the step
+
+
+@dataclass(frozen=True)
+class Triad(Step):
+    """A class-III group: plate ``plate`` with vertices ``points`` joined by ``links`` of
+    ``lengths`` to the known points ``knowns`` (see the module). ``offsets``: V2 - V1 and
+    V3 - V1 on the plate (its own frame). ``start``: the scene's assembly (inputs, pose,
+    sign of det M), chosen when compiling; ``count``: how many assemblies there are."""
+
+    points: tuple
+    plate: str
+    knowns: tuple
+    links_: tuple
+    lengths: tuple
+    offsets: tuple
+    sigma: float = 1.0  # one assembly is followed by continuation, never flipped
+    unit: float = 1e-3
+    uname: str = "mm"
+    start: tuple = ()
+    count: int = 0
+    memo: object = field(default=None, compare=False, repr=False)
+
+    kind = "triad"
+    branching = True
+    other_assembly_mistake = False
+
+    def __post_init__(self):
+        if self.start and self.memo is None:
+            object.__setattr__(self, "memo", _Memo(self.start))
+
+    # ----- what it is
+    @property
+    def finds(self):
+        return self.points
+
+    @property
+    def links(self):
+        return (self.plate,) + self.links_
+
+    @property
+    def needs(self):
+        return tuple(dict.fromkeys(self.knowns))
+
+    @property
+    def needs_links(self):
+        return ()
+
+    @property
+    def title(self):
+        return (f"triad: plate {self.plate} ({', '.join(self.points)}) on "
+                f"{', '.join(self.links_)}")
+
+    @property
+    def params(self):
+        return tuple(self.lengths) + tuple(self.offsets)
+
+    def dimensions(self, scene, bodies):
+        f = bodies.frame(self.plate)
+        (x1, y1), (x2, y2), (x3, y3) = (f[p] for p in self.points)
+        return tuple(bodies.distance(k, K, V) for k, K, V in
+                     zip(self.links_, self.knowns, self.points)) + \
+            (x2 - x1, y2 - y1, x3 - x1, y3 - y1)
+
+    def drawn(self, prm, pencil, P):
+        return tuple(v + pencil() for v in prm)
+
+    def reach(self):
+        return _scale(self.params)
+
+    # ----- compiling: the assembly the scene states
+    def assemble(self, g):
+        """(the step with its assembly, {vertex: position}) at the compiler's instant: every
+        assembly is found; the [assembly] hints of the vertices choose one (a rough position
+        [x, y]: the nearest; above/below/left/right: the extreme one), else the one with the
+        first vertex highest (stated in the notes)."""
+        K = tuple(g.P[k] for k in self.knowns)
+        prm = self.params
+        found = assemblies(K, prm)
+        if not found:
+            raise AssemblyError(self.why(), step=self.label, key=f"[links] {self.links_[0]}")
+        places = [dict(zip(self.points, vertices(*q, prm, math.cos, math.sin)))
+                  for q in found]
+        hints = {p: g.scene.assembly[p] for p in self.points if p in g.scene.assembly}
+        size = self.reach()
+        coords = {p: h for p, h in hints.items() if isinstance(h, tuple)}
+        if coords:
+            d = [sum(math.dist(pl[p], h) ** 2 for p, h in coords.items()) ** 0.5
+                 for pl in places]
+            order = sorted(range(len(found)), key=d.__getitem__)
+            best = order[0]
+            key = f"[assembly] {', '.join(coords)}"
+            if d[best] > size:
+                raise AssemblyError(
+                    f"assembly {', '.join(coords)} matches no assembly of the triad "
+                    f"({self._listed(places, coords)}); give rough positions near the one "
+                    "the figure shows", key=key, file=g.scene.file)
+            if len(order) > 1:
+                sep = max(math.dist(places[best][p], places[order[1]][p]) for p in coords)
+                if d[order[1]] - d[best] <= 0.1 * sep:
+                    raise AssemblyError(
+                        f"assembly {', '.join(coords)} is as near one assembly of the triad "
+                        f"as another ({self._listed(places, coords)}): give rough positions "
+                        "nearer the one the figure shows", key=key, file=g.scene.file)
+        elif hints:
+            p, h = next(iter(hints.items()))
+            axis, want = {"above": (1, 1), "below": (1, -1), "right": (0, 1),
+                          "left": (0, -1)}[h]
+            best = max(range(len(found)), key=lambda i: places[i][p][axis] * want)
+        else:
+            p = self.points[0]
+            best = max(range(len(found)), key=lambda i: (places[i][p][1], places[i][p][0]))
+            if len(found) > 1:
+                g.notes.append(
+                    f"{', '.join(self.points)}: of the triad's {len(found)} assemblies the one "
+                    f"with {p} highest was taken (default; set [assembly] {p} = [x, y] to a "
+                    "rough position to choose)")
+        q = found[best]
+        det = newton_step(q, K, prm, math.cos, math.sin)[2]
+        chosen = Triad(self.index, self.points, self.plate, self.knowns, self.links_,
+                       self.lengths, self.offsets, self.sigma, self.unit, self.uname,
+                       (_flat(K, prm), q, _sign(det)), len(found))
+        return chosen, places[best]
+
+    def _listed(self, places, coords):
+        u, n = self.unit, self.uname
+        return "; ".join(", ".join(f"{p} [{in_units(pl[p][0], u)}, {in_units(pl[p][1], u)}]"
+                                   for p in coords) + f" {n}" for pl in places)
+
+    # ----- evaluation
+    def place(self, P, prm, ctx, sigma=None):
+        K = tuple(P[k] for k in self.knowns)
+        q = solve_scalar(self.memo, K, prm)
+        if q is None:
+            raise AssemblyError(self.why(), step=self.label)
+        V = vertices(*q, prm, math.cos, math.sin)
+        return V[0][0], V[0][1], condition(V, K)
+
+    def positions(self, P, ctx):
+        K = tuple(P[k] for k in self.knowns)
+        q = solve_scalar(self.memo, K, self.params)
+        if q is None:
+            raise AssemblyError(self.why(), step=self.label)
+        V = vertices(*q, self.params, math.cos, math.sin)
+        for p, xy in zip(self.points, V):
+            P[p] = xy
+        ctx.cond[self.index] = condition(V, K)
+
+    def candidates(self, P, ctx):
+        x, y, _ = self.place(P, self.params, ctx)
+        return (x, y), (0.0, 0.0)
+
+    def bind(self, prm):
+        pts, kn, i, step = self.points, self.knowns, self.index, self
+        plate, lk = self.plate, self.links_
+
+        def position(m):
+            K = tuple(m.P[k] for k in kn)
+            if m.array:
+                np = m.ctx.np
+                x, y, th, bad = solve_array(step.memo, K, prm, np)
+                if bad.any():
+                    m.ctx.fail(step, bad)
+                V = vertices(x, y, th, prm, np.cos, np.sin)
+                with np.errstate(all="ignore"):
+                    c = condition(V, K)
+                c = np.where(np.isfinite(c), c, 0.0)
+            else:
+                q = solve_scalar(step.memo, K, prm)
+                if q is None:
+                    raise AssemblyError(step.why(), step=step.label)
+                V = vertices(*q, prm, math.cos, math.sin)
+                c = condition(V, K)
+            for p, xy in zip(pts, V):
+                m.P[p] = xy
+            m.cond[i] = c
+
+        def parts(m):
+            V = tuple(m.P[p] for p in pts)
+            K = tuple(m.P[k] for k in kn)
+            if m.array:  # a singular entry (masked) must not divide by zero
+                np = m.ctx.np
+                d = det3(matrix(V, K))
+                zero = d == 0
+                if np.any(zero):
+                    m.ctx.fail(step, zero)
+                    V = tuple((np.where(zero, vx + 1e-3 * (j + 1), vx), vy)
+                              for j, (vx, vy) in enumerate(V))
+            return V, K
+
+        def velocity_(m):
+            V, K = parts(m)
+            w, vv, wl = velocity(V, K, tuple(m.V[k] for k in kn))
+            for p, v in zip(pts, vv):
+                m.V[p] = v
+            m.W[plate] = w
+            for k, wk in zip(lk, wl):
+                m.W[k] = wk
+
+        def acceleration_(m):
+            V, K = parts(m)
+            al, aa, all_ = acceleration(V, K, tuple(m.V[p] for p in pts),
+                                        tuple(m.V[k] for k in kn), tuple(m.A[k] for k in kn),
+                                        m.W[plate])
+            for p, a in zip(pts, aa):
+                m.A[p] = a
+            m.Al[plate] = al
+            for k, ak in zip(lk, all_):
+                m.Al[k] = ak
+
+        return position, velocity_, acceleration_
+
+    def bind_instant(self, prm):
+        return Step.bind_instant(self, prm)
+
+    rounding = 96.0
+
+    def error_bound(self, walk, k, p_in, v_in, a_in):
+        """The rule of two direction lines with the triad's condition: Newton's positions
+        are exact to rounding, and one 3x3 solve at condition c multiplies the errors it
+        is given by about 1/c."""
+        return two_lines(walk.condition(self), walk.ratio, k, p_in, v_in, a_in)
+
+    # ----- words
+    def _lines(self):
+        return ", ".join(f"{K}{V}" for K, V in zip(self.knowns, self.points))
+
+    def why(self, e=None):
+        return (f"cannot assemble the triad {', '.join(self.points)}: the plate {self.plate} "
+                f"cannot reach the links {', '.join(self.links_)} from "
+                f"{', '.join(self.knowns)} in its assembly at this crank angle (a limit of "
+                "the triad, or the lengths do not close)")
+
+    def singular_why(self, c) -> str:
+        return (f"the lines of {self._lines()} meet in one point (or are parallel; condition "
+                f"{c:.2g}): the plate {self.plate} could turn about that point while the "
+                "links stand still, so its velocity is indeterminate (a limit position of "
+                "the triad, where two of its assemblies meet)")
+
+    def warning(self, c) -> str:
+        return (f"{self.label}: the lines of {self._lines()} nearly meet in one point "
+                f"(condition {c:.3g}): near a limit of the triad the auxiliary point "
+                "construction is ill-conditioned")
+
+    def limit_why(self) -> str:
+        return (f"the lines of {self._lines()} meet in one point (the triad "
+                f"{', '.join(self.points)} cannot be assembled beyond it on its branch)")
+
+    def transmission(self):
+        return None
+
+    def condition_column(self):
+        return (f"cond {''.join(self.points)}", "", "triad condition (0: the three links' "
+                "lines meet in a point)")
+
+    def bodies(self):
+        return (self.links_[0], self.plate, self.links_[1], self.links_[2])
+
+    def orient(self):
+        out = {self.plate: (self.points[1], self.points[0])}
+        for k, K, V in zip(self.links_, self.knowns, self.points):
+            out[k] = (V, K)
+        return out
+
+    def output(self, ground):
+        return None
+
+    def default_hint(self, P):
+        return "above"
+
+    def position_words(self, L, which, angle_deg):
+        arcs = "; ".join(f"{V} on the arc of radius {k} = {L(l)} about {K}" for V, k, K, l in
+                         zip(self.points, self.links_, self.knowns, self.lengths))
+        return (f"{', '.join(self.points)} together (no one of them can be found alone): "
+                f"{arcs}; the plate {self.plate} is fitted to the three arcs by trial (or "
+                f"by the loop equations), the assembly of the figure"
+                + (f" (one of {self.count})" if self.count > 1 else ""))
+
+    # ----- the polygons (the auxiliary point construction)
+    def _aux(self, P):
+        """(i, j, m, S): the two links whose lines cross at the largest angle, where they
+        cross (S, a point of the plate), and the third link."""
+        V = [P[p] for p in self.points]
+        K = [P[k] for k in self.knowns]
+        best = None
+        for i, j, m in ((0, 1, 2), (0, 2, 1), (1, 2, 0)):
+            a, b = unit(*sub(V[i], K[i])), unit(*sub(V[j], K[j]))
+            s = abs(a[0] * b[1] - a[1] * b[0])
+            if best is None or s > best[0]:
+                best = (s, i, j, m)
+        _, i, j, m = best
+        (ax, ay), (bx, by) = sub(V[i], K[i]), sub(V[j], K[j])
+        den = ax * by - ay * bx
+        wx, wy = K[j][0] - K[i][0], K[j][1] - K[i][1]
+        t = (wx * by - wy * bx) / den if den else 0.0
+        return i, j, m, (K[i][0] + t * ax, K[i][1] + t * ay)
+
+    def _aux_label(self, sol):
+        taken = {p.lower() for p in sol.scene.point_names}
+        if "s" not in taken:
+            return "s"
+        k = 1
+        while f"s{k}" in taken:
+            k += 1
+        return f"s{k}"
+
+    def construction(self, sol, ph):
+        P = sol.P
+        i, j, m, S = self._aux(P)
+        pts, kn, lk = self.points, self.knowns, self.links_
+        Vi, Vj, Vm = pts[i], pts[j], pts[m]
+        Ki, Kj, Km = kn[i], kn[j], kn[m]
+        cond = sol.conditions.get(self.index, 1.0)
+        lab = lambda p: image_label(sol, p, ph)  # noqa: E731
+        w = sol.W[self.plate]
+        prime = "'" if ph == "acceleration" else ""
+        s_lab = self._aux_label(sol) + prime
+        perp_to = lambda a, b: unit(*perp(sub(P[b], P[a])))  # noqa: E731
+        D = sol.V if ph == "velocity" else sol.A
+        x1, y1 = P[pts[0]]
+        ref = D[pts[0]]
+        if ph == "velocity":
+            img_s = (ref[0] - w * (S[1] - y1), ref[1] + w * (S[0] - x1))
+        else:
+            al = sol.Al[self.plate]
+            img_s = (ref[0] - al * (S[1] - y1) - w * w * (S[0] - x1),
+                     ref[1] + al * (S[0] - x1) - w * w * (S[1] - y1))
+        aux = f"S, where {Ki}{Vi} and {Kj}{Vj} (produced) meet, a point of the plate {self.plate}"
+        if ph == "velocity":
+            lines = (DirectionLine(D[Ki], perp_to(Ki, Vi), lab(Ki), f"perpendicular to {Ki}{Vi}"),
+                     DirectionLine(D[Kj], perp_to(Kj, Vj), lab(Kj), f"perpendicular to {Kj}{Vj}"),
+                     DirectionLine(img_s, unit(*perp(sub(P[Vm], S))), s_lab,
+                                   f"perpendicular to S{Vm}"),
+                     DirectionLine(D[Km], perp_to(Km, Vm), lab(Km), f"perpendicular to {Km}{Vm}"),
+                     DirectionLine(D[Vm], perp_to(Vm, Vi), lab(Vm), f"perpendicular to {Vm}{Vi}"),
+                     DirectionLine(D[Vm], perp_to(Vm, Vj), lab(Vm), f"perpendicular to {Vm}{Vj}"))
+            text = (f"auxiliary point (Goodman): {aux}, moves perpendicular to both lines; "
+                    f"through {pole_text(sol, Ki, ph)} draw a line perpendicular to {Ki}{Vi}, "
+                    f"through {pole_text(sol, Kj, ph)} one perpendicular to {Kj}{Vj}: they "
+                    f"meet at {s_lab}; through {s_lab} draw a line perpendicular to S{Vm}, "
+                    f"through {pole_text(sol, Km, ph)} one perpendicular to {Km}{Vm}: they meet "
+                    f"at {lab(Vm)}; through {lab(Vm)} draw lines perpendicular to {Vm}{Vi} and "
+                    f"{Vm}{Vj}: they cut the first two lines at {lab(Vi)} and {lab(Vj)}")
+            found = tuple(relative(sol, V, K, D, ph) for V, K in zip(pts, kn)) + \
+                (relative(sol, Vi, Vm, D, ph), relative(sol, Vj, Vm, D, ph)) + \
+                tuple(absolute(sol, V, D, ph) for V in pts)
+            return Construction(self.index, self.title, ph, ", ".join(lab(p) for p in pts),
+                                D[Vm], (), lines, found, text, cond, ((s_lab, img_s),))
+        W = sol.W
+
+        def cen(start, X, Y, om, name):  # centripetal of X about Y: om^2 XY towards Y
+            r = sub(P[X] if isinstance(X, str) else X, P[Y] if isinstance(Y, str) else Y)
+            end = (start[0] - om * om * r[0], start[1] - om * om * r[1])
+            return Vector(start, end, f"c{name}", "centripetal", f"centripetal of {name}",
+                          f"{om * om * math.hypot(*r):.4g} m/s^2, parallel to {name}, "
+                          f"towards its second point")
+
+        ci = cen(D[Ki], Vi, Ki, W[lk[i]], f"{Vi}{Ki}")
+        cj = cen(D[Kj], Vj, Kj, W[lk[j]], f"{Vj}{Kj}")
+        csi = cen(ci.end, S, Vi, w, f"S{Vi}")
+        csj = cen(cj.end, S, Vj, w, f"S{Vj}")
+        cm = cen(img_s, Vm, S, w, f"{Vm}S")
+        ck = cen(D[Km], Vm, Km, W[lk[m]], f"{Vm}{Km}")
+        cmi = cen(D[Vm], Vi, Vm, w, f"{Vi}{Vm}")
+        cmj = cen(D[Vm], Vj, Vm, w, f"{Vj}{Vm}")
+        lines = (DirectionLine(csi.end, perp_to(Ki, Vi), f"the end of the centripetal of S{Vi}",
+                               f"perpendicular to {Ki}{Vi}"),
+                 DirectionLine(csj.end, perp_to(Kj, Vj), f"the end of the centripetal of S{Vj}",
+                               f"perpendicular to {Kj}{Vj}"),
+                 DirectionLine(cm.end, unit(*perp(sub(P[Vm], S))),
+                               f"the end of the centripetal of {Vm}S", f"perpendicular to S{Vm}"),
+                 DirectionLine(ck.end, perp_to(Km, Vm), f"the end of the centripetal of {Vm}{Km}",
+                               f"perpendicular to {Km}{Vm}"),
+                 DirectionLine(cmi.end, perp_to(Vm, Vi), f"the end of the centripetal of {Vi}{Vm}",
+                               f"perpendicular to {Vm}{Vi}"),
+                 DirectionLine(cmj.end, perp_to(Vm, Vj), f"the end of the centripetal of {Vj}{Vm}",
+                               f"perpendicular to {Vm}{Vj}"),
+                 DirectionLine(ci.end, perp_to(Ki, Vi), f"the end of the centripetal of {Vi}{Ki}",
+                               f"perpendicular to {Ki}{Vi}"),
+                 DirectionLine(cj.end, perp_to(Kj, Vj), f"the end of the centripetal of {Vj}{Kj}",
+                               f"perpendicular to {Kj}{Vj}"))
+        text = (f"auxiliary point (Goodman): {aux}; from {pole_text(sol, Ki, ph)} draw the "
+                f"centripetal of {Vi}{Ki} and from its end the centripetal of S{Vi} (both "
+                f"along {Ki}{Vi}), and through the end a line perpendicular to {Ki}{Vi}; the "
+                f"same from {pole_text(sol, Kj, ph)} along {Kj}{Vj}: the two lines meet at "
+                f"{s_lab}; from {s_lab} the centripetal of {Vm}S and a line perpendicular to "
+                f"S{Vm}, from {pole_text(sol, Km, ph)} the centripetal of {Vm}{Km} and a line "
+                f"perpendicular to {Km}{Vm}: they meet at {lab(Vm)}; from {lab(Vm)} the "
+                f"centripetals of {Vi}{Vm} and {Vj}{Vm} and lines perpendicular to {Vm}{Vi} "
+                f"and {Vm}{Vj}; they cut the lines perpendicular to {Ki}{Vi} and {Kj}{Vj} "
+                f"drawn through the ends of the centripetals of {Vi}{Ki} and {Vj}{Kj} at "
+                f"{lab(Vi)} and {lab(Vj)} (omega of the plate {self.plate} from the velocity "
+                "polygon)")
+        found = tuple(Vector(c.end, D[V], f"t{V}{K}", "tangential", f"tangential of {V}{K}",
+                             f"alpha_{k} x {K}{V}")
+                      for c, V, K, k in ((ci, Vi, Ki, lk[i]), (cj, Vj, Kj, lk[j]),
+                                         (ck, Vm, Km, lk[m]))) + \
+            tuple(relative(sol, V, K, D, ph) for V, K in zip(pts, kn)) + \
+            tuple(absolute(sol, V, D, ph) for V in pts)
+        return Construction(self.index, self.title, ph, ", ".join(lab(p) for p in pts),
+                            D[Vm], (ci, cj, csi, csj, cm, ck, cmi, cmj), lines, found, text,
+                            cond, ((s_lab, img_s),))
