@@ -46,7 +46,7 @@ __all__ = ["Triad", "recognise", "solve3", "vertices", "velocity", "acceleration
 #: Newton's residual (|Fi| / 2 li, relative to the largest length) taken as converged
 _CONVERGED = 1e-13
 #: the most plate positions continuation keeps per step (for starting new solves)
-_KEEP = 4096
+_KEEP = 1024
 #: solved positions passed sequentially in array mode (the rest start from them)
 _SUBSAMPLE = 256
 
@@ -281,16 +281,29 @@ class _Memo:
 
     def __init__(self, anchor):
         self.items = [anchor]
+        self._array = None
+
+    def array(self):
+        if self._array is None or len(self._array) != len(self.items):
+            import numpy as np
+            self._array = np.array([it[0] for it in self.items])
+        return self._array
 
     def nearest(self, inp, size):
-        best, bd = None, None
-        for it in self.items:
-            d = max(abs(u - v) for u, v in zip(it[0], inp)) / size
-            if bd is None or d < bd:
-                best, bd = it, d
-                if d == 0.0:
-                    break
-        return best, bd
+        first = self.items[0]
+        if first[0] == inp:
+            return first, 0.0
+        if len(self.items) < 16:
+            best, bd = None, None
+            for it in self.items:
+                d = max(abs(u - v) for u, v in zip(it[0], inp)) / size
+                if bd is None or d < bd:
+                    best, bd = it, d
+            return best, bd
+        import numpy as np
+        d = np.abs(self.array() - np.asarray(inp)).max(axis=1)
+        k = int(np.argmin(d))
+        return self.items[k], float(d[k]) / size
 
     def add(self, inp, q, sign):
         if len(self.items) >= _KEEP:
@@ -310,91 +323,101 @@ def solve_scalar(memo, K, prm):
         return None
     q = follow(it[1], it[0], inp, size, it[2])
     if q is not None:
-        det = newton_step(q, K, prm, math.cos, math.sin)[2]
-        memo.add(inp, q, 1.0 if det > 0 else -1.0)
+        memo.add(inp, q, _sign(newton_step(q, K, prm, math.cos, math.sin)[2]))
     return q
 
 
+def _kp(inp):
+    return ((inp[0], inp[1]), (inp[2], inp[3]), (inp[4], inp[5])), inp[6:]
+
+
+def _det_sign(q, inp):
+    return _sign(newton_step(q, *_kp(inp), math.cos, math.sin)[2])
+
+
 def solve_array(memo, K, prm, np):
-    """Poses for arrays of inputs (continuation in the arrays' order from the element
-    nearest to a solved one; the rest by Newton from the two solved neighbours, in one
-    vectorised pass). Returns (x, y, th, bad mask)."""
+    """Poses for arrays of inputs: continuation in the arrays' order (a crank's turn) from
+    the element nearest to a pose already solved, over a subsample (at most
+    ``_SUBSAMPLE`` points); the rest by Newton from the straight line between their two
+    solved neighbours, in one vectorised pass; an element where that fails (near a limit)
+    by continuation from its neighbour. Returns (x, y, th, bad mask)."""
     cols = [np.asarray(c, dtype=float) for xy in K for c in xy] + \
         [np.asarray(p, dtype=float) for p in prm]
     n = max([c.size for c in cols] + [1])
     cols = [np.broadcast_to(c, (n,)) if c.ndim else np.full(n, float(c)) for c in cols]
     data = np.stack(cols, axis=1)  # n x 13
     size = float(max(_scale(tuple(np.max(np.abs(data[:, 6:]), axis=0))), 1e-300))
-    # the element nearest to a solved input starts the walk
-    ref = np.array([it[0] for it in memo.items])
-    dist = np.abs(data[:, None, :] - ref[None, :, :]).max(axis=2) if n * len(ref) < 4e6 \
-        else np.abs(data[:, None, :] - ref[None, :1, :]).max(axis=2)
-    a = int(np.argmin(dist.min(axis=1)))
     step = max(1, -(-n // _SUBSAMPLE))
-    sub_idx = sorted(set(range(0, n, step)) | {a, n - 1})
-    qs = {}
+    sub_idx = sorted(set(range(0, n, step)) | {n - 1})
+    ref = memo.array()
+    dist = np.abs(data[sub_idx][:, None, :] - ref[None, :, :]).max(axis=2).min(axis=1)
+    a = sub_idx[int(np.argmin(dist))]
     inp_of = lambda i: tuple(float(v) for v in data[i])  # noqa: E731
-
-    def kp(inp):
-        return ((inp[0], inp[1]), (inp[2], inp[3]), (inp[4], inp[5])), inp[6:]
-
-    Ka, pa = kp(inp_of(a))
-    qa = solve_scalar(memo, Ka, pa)
+    qs, signs = {}, {}
+    qa = solve_scalar(memo, *_kp(inp_of(a)))
     if qa is not None:
         qs[a] = qa
+        signs[a] = _det_sign(qa, inp_of(a))
         pos = sub_idx.index(a)
         for order in (sub_idx[pos + 1:], sub_idx[:pos][::-1]):
             prev = a
             for i in order:
-                q = follow(qs[prev], inp_of(prev), inp_of(i), size,
-                           _sign(newton_step(qs[prev], *kp(inp_of(prev)), math.cos,
-                                             math.sin)[2]))
-                if q is None:
+                q = follow(qs[prev], inp_of(prev), inp_of(i), size, signs[prev])
+                if q is None:  # a limit before i: each element up to it in turn
+                    d = 1 if i > prev else -1
+                    for e in range(prev + d, i, d):
+                        q = follow(qs[prev], inp_of(prev), inp_of(e), size, signs[prev])
+                        if q is None:
+                            break
+                        qs[e] = q
+                        signs[e] = _det_sign(q, inp_of(e))
+                        prev = e
                     break
                 qs[i] = q
+                signs[i] = _det_sign(q, inp_of(i))
+                memo.add(inp_of(i), q, signs[i])
                 prev = i
-    # the rest: Newton from the straight line between the solved neighbours
-    known = np.array(sorted(qs), dtype=np.intp)
+    x, y, th = np.zeros(n), np.zeros(n), np.zeros(n)
     bad = np.ones(n, dtype=bool)
-    x = np.zeros(n)
-    y = np.zeros(n)
-    th = np.zeros(n)
-    if len(known) == 0:
+    if not qs:
         return x, y, th, bad
-    kq = np.array([qs[i] for i in known])
+    known = np.array(sorted(qs), dtype=np.intp)
+    kq = np.array([qs[int(i)] for i in known])
+    ks = np.array([signs[int(i)] for i in known])
     idx = np.arange(n)
-    j = np.clip(np.searchsorted(known, idx), 1, max(len(known) - 1, 1))
+    inside = (idx >= known[0]) & (idx <= known[-1])
     if len(known) == 1:
         lo = hi = np.zeros(n, dtype=np.intp)
         w = np.zeros(n)
     else:
-        lo, hi = j - 1, j
-        span = (known[hi] - known[lo]).astype(float)
-        w = np.clip((idx - known[lo]) / span, 0.0, 1.0)
-        # only between two solved neighbours that are next to each other on the walk
-        gap = np.array([sub_idx.index(int(known[k + 1])) - sub_idx.index(int(known[k]))
-                        for k in range(len(known) - 1)] + [1])
-        inside = (idx >= known[0]) & (idx <= known[-1]) & (gap[lo] == 1)
-        w = np.where(inside, w, 0.0)
-        hi = np.where(inside, hi, lo)
+        hi = np.clip(np.searchsorted(known, idx), 1, len(known) - 1)
+        lo = hi - 1
+        w = np.clip((idx - known[lo]) / (known[hi] - known[lo]), 0.0, 1.0)
     q = [kq[lo, c] + w * (kq[hi, c] - kq[lo, c]) for c in range(3)]
     Kx = tuple((data[:, 2 * i], data[:, 2 * i + 1]) for i in range(3))
     pr = tuple(data[:, 6 + c] for c in range(7))
-    signs = np.sign([newton_step(tuple(kq[k]), *kp(inp_of(int(known[k]))), math.cos,
-                                 math.sin)[2] for k in range(len(known))])
     with np.errstate(all="ignore"):
         for _ in range(8):
             q, res, det = newton_step(tuple(q), Kx, pr, np.cos, np.sin)
         q, res, det = newton_step(tuple(q), Kx, pr, np.cos, np.sin)
-    good = np.isfinite(res) & (res <= 1e3 * _CONVERGED * size) & \
-        (np.sign(det) == signs[lo]) & (np.sign(det) == signs[hi])
-    good &= (idx >= known[0]) & (idx <= known[-1])
-    # where the walk stopped (a limit), nothing beyond it is trusted
-    for k in known:
-        good[k] = True
-    x, y, th = (np.where(good, c, kq[lo, i]) for i, c in enumerate(q))
+        scale = np.maximum(size, np.abs(data[:, :6]).max(axis=1))
+        good = inside & np.isfinite(res) & (res <= 1e3 * _CONVERGED * scale) & \
+            (np.sign(det) == ks[lo]) & (np.sign(det) == ks[hi])
+    x, y, th = (np.where(good, c, 0.0) for c in q)
     for k in known:
         x[k], y[k], th[k] = qs[int(k)]
+        good[k] = True
+    # what Newton missed between two solved neighbours: continuation from the neighbour
+    for side in (idx[(idx > a) & inside & ~good], idx[(idx < a) & inside & ~good][::-1]):
+        for i in side:
+            prev = i - 1 if i > a else i + 1
+            if not good[prev]:
+                continue
+            p = (float(x[prev]), float(y[prev]), float(th[prev]))
+            got = follow(p, inp_of(prev), inp_of(i), size, _det_sign(p, inp_of(prev)))
+            if got is not None:
+                x[i], y[i], th[i] = got
+                good[i] = True
     return x, y, th, ~good
 
 

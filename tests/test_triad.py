@@ -1,0 +1,244 @@
+"""Class-III groups (triads): a plate whose three vertices are each linked to a known
+point, found together (polygon_method/steps/triad.py).
+
+Against independent references: the 50-digit Newton solve of the scene's constraints
+(tests/reference.py) at angles round the turn, finite differences of the swept positions
+in time, the loop-closure residual of every swept position, the condition against the
+smallest singular value of the normalised Jacobian (numpy's SVD), the assemblies found
+against a brute-force search. The branch stated by [assembly] is kept, and followed over
+the crank's turn.
+"""
+
+import math
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+from mpmath import mpf
+
+from polygon_method import load_scene, parse_scene, solve
+from polygon_method.compiler import compile_plan
+from polygon_method.errors import AssemblyError
+from polygon_method.steps import triad
+from polygon_method.tracking import Sweeper, run_arrays
+from reference import reference_solution
+from textbook_corpus import worst_error
+
+ROOT = Path(__file__).resolve().parent.parent
+SIX = ROOT / "tests" / "textbook" / "class3_six_bar.toml"
+WORKED = ROOT / "worked_problems" / "class3_six_bar.toml"
+
+
+def at(text, angle):
+    return re.sub(r"(?m)^angle = .*$", f"angle = {angle}", text)
+
+
+def test_the_plan_has_one_triad_step_finding_three_points():
+    plan = compile_plan(load_scene(SIX))
+    kinds = [st.kind for st in plan.steps]
+    assert kinds == ["crank", "triad", "carried"]
+    st = plan.steps[1]
+    assert st.finds == ("B", "C", "D") and set(st.links) == {"BC", "AB", "EC", "FD"}
+
+
+@pytest.mark.parametrize("angle", [0, 45, 135, 200, 315])
+def test_matches_the_50_digit_reference_round_the_turn(angle):
+    """The branch at each angle is the one swept continuously from the scene's instant;
+    the reference polishes the solver's positions and is compared to 1e-9."""
+    text = SIX.read_text()
+    sw = Sweeper(load_scene(SIX))
+    fr = sw.evaluate(np.array([math.radians(angle)]))
+    scene = parse_scene(at(text, angle))
+    sol = solve(scene)
+    for p in "BCD":  # the scene at this angle, hinted by B only, is on the swept branch
+        assert math.dist(sol.P[p], (fr.P[p][0][0], fr.P[p][1][0])) < 1e-9
+    ref = reference_solution(scene, sol.P)
+    assert ref["residual"] < mpf("1e-40")
+    err, what = worst_error(scene, sol, ref)
+    assert err < 1e-9, f"{what}: {err:.2e}"
+
+
+def test_velocities_and_accelerations_are_the_time_derivatives_of_positions():
+    """Central differences of positions swept at theta +- k h (constant crank speed)."""
+    sc = load_scene(SIX)
+    plan = compile_plan(sc)
+    w = 7.0
+    t0 = math.radians(100.0)
+    h = 1e-4  # s
+    ks = np.array([-2, -1, 0, 1, 2], dtype=float)
+    fr = run_arrays(plan, t0 + w * h * ks, w, 0.0)
+    for p in "BCD":
+        for c in (0, 1):
+            x = fr.P[p][c]
+            v = (8 * (x[3] - x[1]) - (x[4] - x[0])) / (12 * h)
+            a = (-(x[4] + x[0]) + 16 * (x[3] + x[1]) - 30 * x[2]) / (12 * h * h)
+            vs, as_ = fr.V[p][c][2], fr.A[p][c][2]
+            assert abs(v - vs) < 1e-7 * (1 + abs(vs)), (p, c, v, vs)
+            assert abs(a - as_) < 1e-3 * (1 + abs(as_)), (p, c, a, as_)
+    for lk in ("AB", "BC", "EC", "FD"):
+        assert np.isfinite(fr.W[lk]).all() and np.isfinite(fr.Al[lk]).all()
+
+
+def test_a_full_turn_closes_every_loop_and_comes_back_to_the_same_assembly():
+    sc = load_scene(SIX)
+    sw = Sweeper(sc)
+    assert sw.domain.full_turn
+    th = np.linspace(sw.domain.lo, sw.domain.lo + 2 * math.pi, 3601)
+    fr = sw.evaluate(th)
+    assert not fr.bad.any()
+    P = fr.P
+    lengths = {"AB": ("A", "B", 0.110), "EC": ("E", "C", 0.122), "FD": ("F", "D", 0.101),
+               "BC": ("B", "C", 0.078)}
+    for a, b, L in lengths.values():
+        r = np.hypot(np.asarray(P[a][0]) - P[b][0], np.asarray(P[a][1]) - P[b][1])
+        assert np.max(np.abs(r - L)) < 1e-14
+    for p in "BCD":  # continuous: no jump to another assembly between neighbours
+        step = np.hypot(np.diff(P[p][0]), np.diff(P[p][1]))
+        assert step.max() < 5e-4
+        assert math.dist((P[p][0][0], P[p][1][0]), (P[p][0][-1], P[p][1][-1])) < 1e-12
+
+
+def test_array_mode_equals_one_instant_at_each_angle():
+    sc = load_scene(SIX)
+    plan = compile_plan(sc)
+    angles = np.radians(np.arange(0.0, 360.0, 7.5))
+    fr = run_arrays(plan, angles, sc.input.omega, sc.input.alpha)
+    text = SIX.read_text()
+    for k in (0, 11, 29, 47):
+        sol = solve(parse_scene(at(text, math.degrees(angles[k]))))
+        for p in "BCD":
+            assert math.dist(sol.V[p], (fr.V[p][0][k], fr.V[p][1][k])) < 1e-12
+            assert math.dist(sol.A[p], (fr.A[p][0][k], fr.A[p][1][k])) < 1e-10
+
+
+def _brute_force(K, prm, n=720):
+    """Assemblies by a brute-force grid over B on its circle and the plate's angle, each
+    polished by numpy least squares Newton (an independent search)."""
+    l1, l2, l3, u2x, u2y, u3x, u3y = prm
+    found = []
+    for phi in np.linspace(0, 2 * math.pi, 36, endpoint=False):
+        for th in np.linspace(-math.pi, math.pi, 36, endpoint=False):
+            q = np.array([K[0][0] + l1 * math.cos(phi), K[0][1] + l1 * math.sin(phi), th])
+            for _ in range(60):
+                c, s = math.cos(q[2]), math.sin(q[2])
+                V = [q[:2], q[:2] + [c * u2x - s * u2y, s * u2x + c * u2y],
+                     q[:2] + [c * u3x - s * u3y, s * u3x + c * u3y]]
+                F = np.array([np.sum((V[i] - K[i]) ** 2) - prm[i] ** 2 for i in range(3)])
+                J = np.array([[2 * (V[i] - K[i])[0], 2 * (V[i] - K[i])[1],
+                               2 * np.dot(V[i] - K[i], [-(V[i] - q[:2])[1],
+                                                        (V[i] - q[:2])[0]])]
+                              for i in range(3)])
+                try:
+                    dq = np.linalg.solve(J, F)
+                except np.linalg.LinAlgError:
+                    break
+                q = q - dq
+                if not np.all(np.isfinite(q)) or np.max(np.abs(dq)) > 10:
+                    break
+                if np.max(np.abs(dq)) < 1e-14:
+                    break
+            if np.all(np.isfinite(q)) and np.max(np.abs(F)) < 1e-15:
+                qq = (q[0], q[1], math.remainder(q[2], 2 * math.pi))
+                if all(math.dist(qq[:2], f[:2]) > 1e-6 for f in found):
+                    found.append(qq)
+    return found
+
+
+def test_every_assembly_is_found():
+    sc = load_scene(SIX)
+    plan = compile_plan(sc)
+    st = plan.steps[1]
+    P = solve(sc).P
+    K = tuple(P[k] for k in st.knowns)
+    mine = triad.assemblies(K, st.params)
+    ref = _brute_force([np.array(k) for k in K], st.params)
+    assert len(mine) == len(ref) == st.count == 2
+    for q in ref:
+        assert min(math.dist(q[:2], m[:2]) for m in mine) < 1e-12
+
+
+def test_the_assembly_hint_chooses_and_the_default_is_a_note():
+    text = SIX.read_text()
+    sol = solve(load_scene(SIX))
+    other = text.replace("B = [100, 80]", "B = [120, 22]")  # the second assembly's B
+    alt = solve(parse_scene(other))
+    assert math.dist(alt.P["B"], sol.P["B"]) > 0.01
+    ref = reference_solution(alt.scene, alt.P)  # a true assembly too
+    assert ref["residual"] < mpf("1e-40")
+    assert worst_error(alt.scene, alt, ref)[0] < 1e-9
+    bare = solve(parse_scene(text.replace("B = [100, 80]", "")))
+    assert any("triad's 2 assemblies" in n for n in bare.notes)
+    with pytest.raises(AssemblyError, match="as near one assembly"):
+        solve(parse_scene(text.replace("B = [100, 80]", "B = [109.9, 51.3]")))
+
+
+def test_condition_is_the_hadamard_ratio_of_the_normalised_jacobian():
+    rng = np.random.default_rng(5)
+    for _ in range(20):
+        V = [tuple(rng.normal(size=2)) for _ in range(3)]
+        K = [tuple(rng.normal(size=2) * 3) for _ in range(3)]
+        G = np.mean(V, axis=0)
+        rho = math.sqrt(np.mean([np.sum((np.array(v) - G) ** 2) for v in V]))
+        rows = []
+        for v, k in zip(V, K):
+            u = (np.array(v) - k) / np.linalg.norm(np.array(v) - k)
+            d = np.array(v) - G
+            rows.append([u[0], u[1], (d[0] * u[1] - d[1] * u[0]) / rho])
+        N = np.array(rows)
+        want = abs(np.linalg.det(N)) / np.prod(np.linalg.norm(N, axis=1))
+        assert abs(triad.condition(V, K) - want) < 1e-12
+    # three lines through one point: singular
+    V = [(1.0, 0.0), (0.0, 1.0), (-1.0, -0.5)]
+    K = [(3.0, 0.0), (0.0, 2.0), (-2.0, -1.0)]  # all on lines through the origin
+    assert triad.condition(V, K) < 1e-15
+
+
+def test_a_triad_that_cannot_close_is_one_line_and_exit_code_2(tmp_path):
+    bad = tmp_path / "bad.toml"
+    bad.write_text(SIX.read_text().replace("FD = 101", "FD = 30"))
+    r = subprocess.run([sys.executable, "-m", "polygon_method", "solve", str(bad)],
+                       capture_output=True, text=True, cwd=ROOT)
+    assert r.returncode == 2
+    assert r.stderr.count("\n") == 1 and "cannot assemble the triad B, C, D" in r.stderr
+    assert "Traceback" not in r.stderr
+
+
+LIMITED = """
+[ground]
+O = [0, 0]
+E = [120, 230]
+F = [270, 20]
+[links]
+OA = 40
+AB = 92
+BC = 78
+EC = 108
+FD = 108
+[points]
+D = { on = "BC", distances = { B = 73, C = 71 }, turn = "cw" }
+[assembly]
+B = [100, 80]
+[input]
+crank = "OA"
+angle = 60
+speed = "10 rad/s ccw"
+"""
+
+
+def test_a_sweep_stops_at_the_triads_limits_where_its_condition_vanishes():
+    sc = parse_scene(LIMITED)
+    sw = Sweeper(sc)
+    dom = sw.domain
+    assert not dom.full_turn and len(dom.limits) == 2
+    plan = compile_plan(sc)
+    for lim in dom.limits:
+        assert "triad" in lim.step and "meet in one point" in lim.why
+        inside = lim.theta + math.copysign(1e-6, sc.input.angle - lim.theta)
+        fr = run_arrays(plan, np.array([inside]), 10.0, 0.0, vel=False, acc=False)
+        assert not fr.bad.any() and fr.cond[1][0] < 1e-2, (lim, fr.cond[1])
+        beyond = lim.theta - math.copysign(1e-6, sc.input.angle - lim.theta)
+        fr = run_arrays(plan, np.array([beyond]), 10.0, 0.0, vel=False, acc=False)
+        assert fr.bad.all()
