@@ -242,3 +242,75 @@ def test_a_sweep_stops_at_the_triads_limits_where_its_condition_vanishes():
         beyond = lim.theta - math.copysign(1e-6, sc.input.angle - lim.theta)
         fr = run_arrays(plan, np.array([beyond]), 10.0, 0.0, vel=False, acc=False)
         assert fr.bad.all()
+
+
+def _designed(seed):
+    """A class-III six-bar drawn at random, its lengths measured off the drawing (so the
+    drawing is an exact assembly): (scene text, the drawn B, C, D in mm)."""
+    rng = np.random.default_rng(seed)
+    r, ang = rng.uniform(10, 30), rng.uniform(0, 360)
+    A = (r * math.cos(math.radians(ang)), r * math.sin(math.radians(ang)))
+    G = np.array([120.0, 90.0]) + rng.normal(size=2) * 10
+    V = [tuple(G + 45 * np.array([math.cos(t), math.sin(t)]) * rng.uniform(0.8, 1.2))
+         for t in np.radians([200, 320, 80]) + rng.normal(size=3) * 0.2]
+    B, C, D = V
+    E = tuple(np.array(C) + rng.uniform(90, 130) * np.array([math.cos(a), math.sin(a)])
+              for a in [rng.uniform(1.5, 2.5)])[0]
+    F = tuple(np.array(D) + rng.uniform(90, 130) * np.array([math.cos(a), math.sin(a)])
+              for a in [rng.uniform(-1.5, -0.5)])[0]
+    d = math.dist
+    turn = "cw" if (C[0] - B[0]) * (D[1] - B[1]) - (C[1] - B[1]) * (D[0] - B[0]) < 0 else "ccw"
+    text = f"""
+[ground]
+O = [0, 0]
+E = [{float(E[0])!r}, {float(E[1])!r}]
+F = [{float(F[0])!r}, {float(F[1])!r}]
+[links]
+OA = {float(r)!r}
+AB = {float(d(A, B))!r}
+BC = {float(d(B, C))!r}
+EC = {float(d(E, C))!r}
+FD = {float(d(F, D))!r}
+[points]
+D = {{ on = "BC", distances = {{ B = {float(d(B, D))!r}, C = {float(d(C, D))!r} }}, turn = "{turn}" }}
+[assembly]
+B = [{float(B[0])!r}, {float(B[1])!r}]
+C = [{float(C[0])!r}, {float(C[1])!r}]
+[input]
+crank = "OA"
+angle = {float(ang)!r}
+speed = "{float(rng.uniform(50, 300))!r} rpm ccw"
+acceleration = "{float(rng.uniform(1, 50))!r} rad/s^2 cw"
+"""
+    return text, {"B": B, "C": C, "D": D}
+
+
+@pytest.mark.parametrize("seed", range(8))
+def test_random_triads_solve_their_drawing_and_match_the_reference(seed):
+    text, drawn = _designed(seed)
+    sol = solve(parse_scene(text))
+    for p, xy in drawn.items():  # the drawing is an exact assembly: it is found again
+        assert math.dist(sol.P[p], (xy[0] * 1e-3, xy[1] * 1e-3)) < 1e-12, p
+    ref = reference_solution(sol.scene, sol.P)
+    assert worst_error(sol.scene, sol, ref)[0] < 1e-9
+
+
+def test_a_plate_of_three_links_is_the_same_triad_as_a_plate_with_a_carried_point():
+    TRI = ROOT / "tests" / "textbook" / "class3_triangle_plate.toml"
+    tri = solve(parse_scene(at(TRI.read_text(), 60).replace("90 rpm cw", "120 rpm ccw")
+                            + "acceleration = \"30 rad/s^2 cw\"\n"))
+    plate = solve(load_scene(SIX))
+    assert [st.kind for st in tri.plan.steps] == ["crank", "triad"]
+    for p in "BCD":
+        assert math.dist(tri.P[p], plate.P[p]) < 1e-12
+        assert math.dist(tri.V[p], plate.V[p]) < 1e-12
+        assert math.dist(tri.A[p], plate.A[p]) < 1e-10
+    for side in ("BC", "CD", "DB"):  # every side turns with the plate
+        assert abs(tri.W[side] - plate.W["BC"]) < 1e-12
+        assert abs(tri.Al[side] - plate.Al["BC"]) < 1e-10
+    # its mirror image is a family of assemblies of its own: hinted, it is found
+    st = tri.plan.steps[1]
+    K = tuple(tri.P[k] for k in st.knowns)
+    mirrored = triad.assemblies(K, st.params[:6] + (-st.params[6],))
+    same = triad.assemblies(K, st.params)
+    assert st.count == len(mirrored) + len(same)

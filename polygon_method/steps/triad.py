@@ -454,7 +454,52 @@ def recognise(g, name):
                      (l1, l2, l3), (f[p2][0] - f[p1][0], f[p2][1] - f[p1][1],
                                     f[p3][0] - f[p1][0], f[p3][1] - f[p1][1]),
                      unit=g.unit, uname=g.uname)
+    return _triangle(g, name)
+
+
+def _one_free(g, p, exclude):
+    free = [f for f in g.free(p) if f[0] not in exclude]
+    return free[0] if len(free) == 1 else None
+
+
+def _triangle(g, name):
+    """Three links joined in a triangle (a rigid plate made of links: name-X, X-Y, Y-name),
+    none of their points known, each point with one other link to a known point."""
+    ends = {}
+    for key in g.bodies_of(name):
+        b = g.body(key)
+        if key in g.used_links or len(b) != 2:
+            continue
+        other = next(p for p in b if p != name)
+        if other not in g.P:
+            ends.setdefault(other, key)
+    names = list(ends)
+    for i, X in enumerate(names):
+        for Y in names[i + 1:]:
+            side = next((k for k in g.bodies_of(X) if k not in g.used_links and
+                         set(g.body(k)) == {X, Y}), None)
+            if side is None:
+                continue
+            tri = {ends[X], side, ends[Y]}
+            free = [(p, _one_free(g, p, tri)) for p in (name, X, Y)]
+            if any(f is None for _, f in free) or len({f[0] for _, f in free}) < 3:
+                continue
+            (p1, (k1, K1, l1)), (p2, (k2, K2, l2)), (p3, (k3, K3, l3)) = free
+            a = g.bodies.distance(ends[X], name, X)
+            b = g.bodies.distance(side, X, Y)
+            c = g.bodies.distance(ends[Y], Y, name)
+            return Triad(g.next_index, (p1, p2, p3), ends[X], (K1, K2, K3), (k1, k2, k3),
+                         (l1, l2, l3), _triangle_offsets(a, b, c, 1.0),
+                         unit=g.unit, uname=g.uname,
+                         sides=((side, X, Y), (ends[Y], Y, name)))
     return None
+
+
+def _triangle_offsets(a, b, c, hand):
+    """V2 - V1 and V3 - V1 of a triangle with V1V2 = a, V2V3 = b, V3V1 = c, V3 on the
+    side ``hand`` (+1: left of V1 -> V2)."""
+    x3 = (a * a + c * c - b * b) / (2.0 * a)
+    return (a, 0.0, x3, hand * max(c * c - x3 * x3, 0.0) ** 0.5)
 
 
 # --------------------------------------------------------------------------- the step
@@ -478,6 +523,10 @@ class Triad(Step):
     uname: str = "mm"
     start: tuple = ()
     count: int = 0
+    #: a plate made of three links: the other two sides, (key, from, to) each, and the
+    #: side of V1 -> V2 its third vertex is on (chosen when compiling: two assemblies each)
+    sides: tuple = ()
+    hand: float = 1.0
     memo: object = field(default=None, compare=False, repr=False)
 
     kind = "triad"
@@ -495,7 +544,7 @@ class Triad(Step):
 
     @property
     def links(self):
-        return (self.plate,) + self.links_
+        return (self.plate,) + tuple(k for k, _, _ in self.sides) + self.links_
 
     @property
     def needs(self):
@@ -507,19 +556,29 @@ class Triad(Step):
 
     @property
     def title(self):
-        return (f"triad: plate {self.plate} ({', '.join(self.points)}) on "
-                f"{', '.join(self.links_)}")
+        return f"triad: {self._plate_words} ({', '.join(self.points)}) on {', '.join(self.links_)}"
+
+    @property
+    def _plate_words(self):
+        """``plate BC``, or ``plate BC, CD, DB`` for a plate of three links."""
+        return "plate " + ", ".join((self.plate,) + tuple(k for k, _, _ in self.sides))
 
     @property
     def params(self):
         return tuple(self.lengths) + tuple(self.offsets)
 
     def dimensions(self, scene, bodies):
+        own = tuple(bodies.distance(k, K, V) for k, K, V in
+                    zip(self.links_, self.knowns, self.points))
+        if self.sides:
+            p1, p2, _ = self.points
+            (k2, a2, b2), (k3, a3, b3) = self.sides
+            return own + _triangle_offsets(bodies.distance(self.plate, p1, p2),
+                                           bodies.distance(k2, a2, b2),
+                                           bodies.distance(k3, a3, b3), self.hand)
         f = bodies.frame(self.plate)
         (x1, y1), (x2, y2), (x3, y3) = (f[p] for p in self.points)
-        return tuple(bodies.distance(k, K, V) for k, K, V in
-                     zip(self.links_, self.knowns, self.points)) + \
-            (x2 - x1, y2 - y1, x3 - x1, y3 - y1)
+        return own + (x2 - x1, y2 - y1, x3 - x1, y3 - y1)
 
     def drawn(self, prm, pencil, P):
         return tuple(v + pencil() for v in prm)
@@ -536,10 +595,17 @@ class Triad(Step):
         K = tuple(g.P[k] for k in self.knowns)
         prm = self.params
         found = assemblies(K, prm)
+        hands = [self.hand] * len(found)
+        if self.sides:  # a triangle of links: its mirror image assembles too
+            mirror = prm[:6] + (-prm[6],)
+            more = assemblies(K, mirror)
+            found += more
+            hands += [-self.hand] * len(more)
         if not found:
             raise AssemblyError(self.why(), step=self.label, key=f"[links] {self.links_[0]}")
-        places = [dict(zip(self.points, vertices(*q, prm, math.cos, math.sin)))
-                  for q in found]
+        prms = [prm if h == self.hand else prm[:6] + (-prm[6],) for h in hands]
+        places = [dict(zip(self.points, vertices(*q, pr, math.cos, math.sin)))
+                  for q, pr in zip(found, prms)]
         hints = {p: g.scene.assembly[p] for p in self.points if p in g.scene.assembly}
         size = self.reach()
         coords = {p: h for p, h in hints.items() if isinstance(h, tuple)}
@@ -574,11 +640,12 @@ class Triad(Step):
                     f"{', '.join(self.points)}: of the triad's {len(found)} assemblies the one "
                     f"with {p} highest was taken (default; set [assembly] {p} = [x, y] to a "
                     "rough position to choose)")
-        q = found[best]
+        q, prm = found[best], prms[best]
         det = newton_step(q, K, prm, math.cos, math.sin)[2]
         chosen = Triad(self.index, self.points, self.plate, self.knowns, self.links_,
-                       self.lengths, self.offsets, self.sigma, self.unit, self.uname,
-                       (_flat(K, prm), q, _sign(det)), len(found))
+                       self.lengths, prm[3:], self.sigma, self.unit, self.uname,
+                       (_flat(K, prm), q, _sign(det)), len(found), sides=self.sides,
+                       hand=hands[best])
         return chosen, places[best]
 
     def _listed(self, places, coords):
@@ -612,6 +679,7 @@ class Triad(Step):
     def bind(self, prm):
         pts, kn, i, step = self.points, self.knowns, self.index, self
         plate, lk = self.plate, self.links_
+        sides = tuple(k for k, _, _ in self.sides)
 
         def position(m):
             K = tuple(m.P[k] for k in kn)
@@ -653,6 +721,8 @@ class Triad(Step):
             for p, v in zip(pts, vv):
                 m.V[p] = v
             m.W[plate] = w
+            for k in sides:
+                m.W[k] = w
             for k, wk in zip(lk, wl):
                 m.W[k] = wk
 
@@ -664,6 +734,8 @@ class Triad(Step):
             for p, a in zip(pts, aa):
                 m.A[p] = a
             m.Al[plate] = al
+            for k in sides:
+                m.Al[k] = al
             for k, ak in zip(lk, all_):
                 m.Al[k] = ak
 
@@ -685,14 +757,14 @@ class Triad(Step):
         return ", ".join(f"{K}{V}" for K, V in zip(self.knowns, self.points))
 
     def why(self, e=None):
-        return (f"cannot assemble the triad {', '.join(self.points)}: the plate {self.plate} "
+        return (f"cannot assemble the triad {', '.join(self.points)}: the {self._plate_words} "
                 f"cannot reach the links {', '.join(self.links_)} from "
                 f"{', '.join(self.knowns)} in its assembly at this crank angle (a limit of "
                 "the triad, or the lengths do not close)")
 
     def singular_why(self, c) -> str:
         return (f"the lines of {self._lines()} meet in one point (or are parallel; condition "
-                f"{c:.2g}): the plate {self.plate} could turn about that point while the "
+                f"{c:.2g}): the {self._plate_words} could turn about that point while the "
                 "links stand still, so its velocity is indeterminate (a limit position of "
                 "the triad, where two of its assemblies meet)")
 
@@ -713,10 +785,13 @@ class Triad(Step):
                 "lines meet in a point)")
 
     def bodies(self):
-        return (self.links_[0], self.plate, self.links_[1], self.links_[2])
+        return (self.links_[0], self.plate) + tuple(k for k, _, _ in self.sides) + \
+            (self.links_[1], self.links_[2])
 
     def orient(self):
         out = {self.plate: (self.points[1], self.points[0])}
+        for k, a, b in self.sides:
+            out[k] = (b, a)
         for k, K, V in zip(self.links_, self.knowns, self.points):
             out[k] = (V, K)
         return out
@@ -731,7 +806,7 @@ class Triad(Step):
         arcs = "; ".join(f"{V} on the arc of radius {k} = {L(l)} about {K}" for V, k, K, l in
                          zip(self.points, self.links_, self.knowns, self.lengths))
         return (f"{', '.join(self.points)} together (no one of them can be found alone): "
-                f"{arcs}; the plate {self.plate} is fitted to the three arcs by trial (or "
+                f"{arcs}; the {self._plate_words} is fitted to the three arcs by trial (or "
                 f"by the loop equations), the assembly of the figure"
                 + (f" (one of {self.count})" if self.count > 1 else ""))
 
@@ -784,7 +859,7 @@ class Triad(Step):
             al = sol.Al[self.plate]
             img_s = (ref[0] - al * (S[1] - y1) - w * w * (S[0] - x1),
                      ref[1] + al * (S[0] - x1) - w * w * (S[1] - y1))
-        aux = f"S, where {Ki}{Vi} and {Kj}{Vj} (produced) meet, a point of the plate {self.plate}"
+        aux = f"S, where {Ki}{Vi} and {Kj}{Vj} (produced) meet, a point of the {self._plate_words}"
         if ph == "velocity":
             lines = (DirectionLine(D[Ki], perp_to(Ki, Vi), lab(Ki), f"perpendicular to {Ki}{Vi}"),
                      DirectionLine(D[Kj], perp_to(Kj, Vj), lab(Kj), f"perpendicular to {Kj}{Vj}"),
@@ -848,7 +923,7 @@ class Triad(Step):
                 f"centripetals of {Vi}{Vm} and {Vj}{Vm} and lines perpendicular to {Vm}{Vi} "
                 f"and {Vm}{Vj}; they cut the lines perpendicular to {Ki}{Vi} and {Kj}{Vj} "
                 f"drawn through the ends of the centripetals of {Vi}{Ki} and {Vj}{Kj} at "
-                f"{lab(Vi)} and {lab(Vj)} (omega of the plate {self.plate} from the velocity "
+                f"{lab(Vi)} and {lab(Vj)} (omega of the {self._plate_words} from the velocity "
                 "polygon)")
         found = tuple(Vector(c.end, D[V], f"t{V}{K}", "tangential", f"tangential of {V}{K}",
                              f"alpha_{k} x {K}{V}")
