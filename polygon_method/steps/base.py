@@ -259,6 +259,12 @@ class Step:
         """Which of the two positions the step takes when the scene does not say."""
         return "above"
 
+    def auxiliary(self, P) -> tuple:
+        """Points a construction adds to the configuration diagram: (label, (x, y), the
+        points it is drawn from (each a line from that point to it)), as Goodman's
+        auxiliary point where two links produced meet. None by default."""
+        return ()
+
     def assemble(self, g):
         """(the step with its assembly chosen, {point: (x, y)}) for a step that chooses
         its own assembly when compiled (``g``: the compiler, its ``P``, ``scene``,

@@ -829,6 +829,21 @@ class Triad(Step):
         t = (wx * by - wy * bx) / den if den else 0.0
         return i, j, m, (K[i][0] + t * ax, K[i][1] + t * ay)
 
+    def auxiliary(self, P):
+        """S, where the two links' lines that cross best meet, drawn from their fixed or
+        known ends (the links produced)."""
+        i, j, _, S = self._aux(P)
+        return ((self._aux_name(P).upper(), S, (self.knowns[i], self.knowns[j])),)
+
+    def _aux_name(self, names):
+        taken = {p.lower() for p in names}
+        if "s" not in taken:
+            return "s"
+        k = 1
+        while f"s{k}" in taken:
+            k += 1
+        return f"s{k}"
+
     def _aux_label(self, sol):
         taken = {p.lower() for p in sol.scene.point_names}
         if "s" not in taken:
