@@ -314,3 +314,33 @@ def test_a_plate_of_three_links_is_the_same_triad_as_a_plate_with_a_carried_poin
     mirrored = triad.assemblies(K, st.params[:6] + (-st.params[6],))
     same = triad.assemblies(K, st.params)
     assert st.count == len(mirrored) + len(same)
+
+
+def test_check_names_the_other_assembly_of_the_triad():
+    """Answers of the other assembly (found by the brute-force search, solved by the
+    50-digit reference) are diagnosed as the other branch."""
+    from polygon_method.check import check_answers
+    from polygon_method.scene import parse_answers
+    sc = load_scene(WORKED)
+    sol = solve(sc)
+    st = sol.plan.steps[1]
+    K = tuple(sol.P[k] for k in st.knowns)
+    prm = st.params
+    others = [q for q in _brute_force([np.array(k) for k in K], prm)
+              if math.dist(q[:2], sol.P["B"]) > 1e-6]
+    assert others
+    q = others[0]
+    guess = dict(sol.P)
+    guess.update(zip("BCD", triad.vertices(*q, prm, math.cos, math.sin)))
+    ref = reference_solution(sc, guess)
+    vB = ref["velocities"]["B"]
+    wrong = float(mpmath_hypot(vB))
+    assert abs(wrong - math.hypot(*sol.V["B"])) > 0.1
+    tol, ans = parse_answers(f'[answers]\nv_B = "{wrong!r} m/s"\n', sc)
+    v = {x.key: x for x in check_answers(sol, ans, tol)}["v_B"]
+    assert v.mistake == "other_branch" and "the other assembly" in v.diagnosis
+
+
+def mpmath_hypot(v):
+    import mpmath
+    return mpmath.sqrt(v[0] ** 2 + v[1] ** 2)
