@@ -344,3 +344,16 @@ def test_check_names_the_other_assembly_of_the_triad():
 def mpmath_hypot(v):
     import mpmath
     return mpmath.sqrt(v[0] ** 2 + v[1] ** 2)
+
+
+def test_an_angle_beyond_the_triads_limits_is_refused_with_the_range_the_sweep_reaches():
+    """The refusal's range comes from a search of all assemblies at each angle; the
+    sweep's limits from continuation of the scene's assembly: the two agree."""
+    sc = parse_scene(LIMITED)
+    lims = sorted(math.degrees(lim.theta) for lim in Sweeper(sc).domain.limits)
+    with pytest.raises(AssemblyError) as exc:
+        solve(parse_scene(LIMITED.replace("angle = 60", "angle = 100")))
+    msg = str(exc.value)
+    assert "no position of the plate BC reaches the links AB, EC, FD" in msg
+    lo, hi = (float(x) for x in re.search(r"from (-?[\d.]+) to (-?[\d.]+) deg", msg).groups())
+    assert abs(lo - lims[0]) < 0.01 and abs(hi - lims[1]) < 0.01

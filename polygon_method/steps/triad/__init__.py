@@ -100,6 +100,24 @@ def _triangle_offsets(a, b, c, hand):
     return (a, 0.0, x3, hand * max(c * c - x3 * x3, 0.0) ** 0.5)
 
 
+def _any_assembly(K, prm, np):
+    """(x, y, th, bad): an assembly of each element, if any (a step whose assembly is not
+    chosen yet: where can the crank be set so that it assembles at all)."""
+    cols = [np.asarray(c, dtype=float) for xy in K for c in xy] + \
+        [np.asarray(p, dtype=float) for p in prm]
+    n = max([c.size for c in cols] + [1])
+    cols = [np.broadcast_to(c, (n,)) if c.ndim else np.full(n, float(c)) for c in cols]
+    out = np.zeros((3, n))
+    bad = np.ones(n, dtype=bool)
+    for i in range(n):
+        v = [float(c[i]) for c in cols]
+        found = assemblies(((v[0], v[1]), (v[2], v[3]), (v[4], v[5])), tuple(v[6:]))
+        if found:
+            out[:, i] = found[0]
+            bad[i] = False
+    return out[0], out[1], out[2], bad
+
+
 # --------------------------------------------------------------------------- the step
 
 
@@ -200,7 +218,7 @@ class Triad(Step):
             found += more
             hands += [-self.hand] * len(more)
         if not found:
-            raise AssemblyError(self.why(), step=self.label, key=f"[links] {self.links_[0]}")
+            raise AssemblyError(self.why(), step=self.label)
         prms = [prm if h == self.hand else prm[:6] + (-prm[6],) for h in hands]
         places = [dict(zip(self.points, vertices(*q, pr, math.cos, math.sin)))
                   for q, pr in zip(found, prms)]
@@ -304,7 +322,10 @@ class Triad(Step):
             K = tuple(m.P[k] for k in kn)
             if m.array:
                 np = m.ctx.np
-                x, y, th, bad = solve_array(step.memo, K, prm, np)
+                if step.memo is None:  # no assembly chosen (the compiler's search of
+                    x, y, th, bad = _any_assembly(K, prm, np)  # where it assembles)
+                else:
+                    x, y, th, bad = solve_array(step.memo, K, prm, np)
                 if bad.any():
                     m.ctx.fail(step, bad)
                 V = vertices(x, y, th, prm, np.cos, np.sin)
@@ -376,10 +397,13 @@ class Triad(Step):
         return ", ".join(f"{K}{V}" for K, V in zip(self.knowns, self.points))
 
     def why(self, e=None):
-        return (f"cannot assemble the triad {', '.join(self.points)}: the {self._plate_words} "
-                f"cannot reach the links {', '.join(self.links_)} from "
-                f"{', '.join(self.knowns)} in its assembly at this crank angle (a limit of "
-                "the triad, or the lengths do not close)")
+        if not self.start:  # no assembly chosen yet: none exists here
+            return (f"cannot assemble the triad {', '.join(self.points)}: no position of the "
+                    f"{self._plate_words} reaches the links {', '.join(self.links_)} from "
+                    f"{', '.join(self.knowns)} at this crank angle")
+        return (f"cannot assemble the triad {', '.join(self.points)}: its assembly ends before "
+                f"this crank angle (a limit of the triad, where the lines of "
+                f"{self._lines()} meet in one point)")
 
     def singular_why(self, c) -> str:
         return (f"the lines of {self._lines()} meet in one point (or are parallel; condition "
@@ -416,6 +440,9 @@ class Triad(Step):
         return out
 
     def output(self, ground):
+        return None
+
+    def produced(self):
         return None
 
     def default_hint(self, P):
