@@ -357,3 +357,38 @@ def test_an_angle_beyond_the_triads_limits_is_refused_with_the_range_the_sweep_r
     assert "no position of the plate BC reaches the links AB, EC, FD" in msg
     lo, hi = (float(x) for x in re.search(r"from (-?[\d.]+) to (-?[\d.]+) deg", msg).groups())
     assert abs(lo - lims[0]) < 0.01 and abs(hi - lims[1]) < 0.01
+
+
+@pytest.mark.parametrize("delta", [3.0, 0.3, 0.03, 0.003])
+def test_the_error_bound_holds_near_the_triads_limit(delta):
+    """Approaching the limit (the condition falls like the root of the distance) every
+    error against the 50-digit reference stays within its bound."""
+    from polygon_method.errorbound import error_bounds
+    hi = max(math.degrees(lim.theta) for lim in Sweeper(parse_scene(LIMITED)).domain.limits)
+    text = LIMITED.replace("angle = 60", f"angle = {hi - delta!r}").replace(
+        "B = [100, 80]", "B = [99, 70]")
+    sol = solve(parse_scene(text))
+    ref = reference_solution(sol.scene, sol.P)
+    b = error_bounds(sol)
+    sz = b.scales
+    worst = 0.0
+    for p in "BCD":
+        for tab, got, bound, size in (("positions", sol.P, b.P, sz["position"]),
+                                      ("velocities", sol.V, b.V, sz["velocity"]),
+                                      ("accelerations", sol.A, b.A, sz["acceleration"])):
+            err = math.dist(got[p], tuple(float(c) for c in ref[tab][p]))
+            worst = max(worst, err / (bound[p] * size))
+    for lk in ("AB", "BC", "EC", "FD"):
+        worst = max(worst, abs(sol.W[lk] - float(ref["omega"][lk])) / (b.W[lk] * sz["omega"]),
+                    abs(sol.Al[lk] - float(ref["alpha"][lk])) / (b.Al[lk] * sz["alpha"]))
+    assert worst <= 1.0, worst
+    assert sol.conditions[1] < 0.6
+
+
+def test_at_the_limit_the_triad_is_refused_as_singular_with_its_words():
+    from polygon_method.errors import SingularStepError
+    hi = max(math.degrees(lim.theta) for lim in Sweeper(parse_scene(LIMITED)).domain.limits)
+    text = LIMITED.replace("angle = 60", f"angle = {hi - 1e-9!r}").replace(
+        "B = [100, 80]", "B = [99, 70]")
+    with pytest.raises(SingularStepError, match="the lines of AB, EC, FD meet in one point"):
+        solve(parse_scene(text))

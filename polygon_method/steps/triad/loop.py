@@ -255,10 +255,18 @@ def assemblies(K, prm, n=2048):
         x3 = x1 + np.cos(th) * u3x - np.sin(th) * u3y
         y3 = y1 + np.sin(th) * u3x + np.cos(th) * u3y
         g = (x3 - K[2][0]) ** 2 + (y3 - K[2][1]) ** 2 - l3 * l3
+        seeds = []
         for i in np.nonzero(ok[:-1] & ok[1:] & (np.sign(g[:-1]) != np.sign(g[1:])))[0]:
             w = g[i] / (g[i] - g[i + 1]) if g[i] != g[i + 1] else 0.5
-            q0 = (x1[i] + w * (x1[i + 1] - x1[i]), y1[i] + w * (y1[i + 1] - y1[i]),
-                  th[i] + w * (th[i + 1] - th[i]))
+            seeds.append((x1[i] + w * (x1[i + 1] - x1[i]), y1[i] + w * (y1[i + 1] - y1[i]),
+                          th[i] + w * (th[i + 1] - th[i])))
+        # two roots closer than the grid (near a limit) make no sign change: the small
+        # local minima of |g| are tried too
+        a = np.abs(g)
+        near = ok[1:-1] & ok[:-2] & ok[2:] & (a[1:-1] <= a[:-2]) & (a[1:-1] <= a[2:]) & \
+            (a[1:-1] < 0.05 * l3 * size)
+        seeds += [(x1[i], y1[i], th[i]) for i in np.nonzero(near)[0] + 1]
+        for q0 in seeds:
             got = _newton(tuple(float(v) for v in q0), K, prm, size)
             if got is None:
                 continue
