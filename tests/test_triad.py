@@ -114,36 +114,36 @@ def test_array_mode_equals_one_instant_at_each_angle():
             assert math.dist(sol.A[p], (fr.A[p][0][k], fr.A[p][1][k])) < 1e-10
 
 
-def _brute_force(K, prm, n=720):
-    """Assemblies by a brute-force grid over B on its circle and the plate's angle, each
-    polished by numpy least squares Newton (an independent search)."""
+def _brute_force(K, prm, n=36):
+    """Assemblies by a brute-force grid of starts (B on its circle, the plate's angle),
+    each by plain Newton on the three closing equations with numpy's linear solve, all
+    starts at once (an independent search)."""
     l1, l2, l3, u2x, u2y, u3x, u3y = prm
+    phi, th = np.meshgrid(np.linspace(0, 2 * math.pi, n, endpoint=False),
+                          np.linspace(-math.pi, math.pi, n, endpoint=False))
+    q = np.stack([K[0][0] + l1 * np.cos(phi.ravel()), K[0][1] + l1 * np.sin(phi.ravel()),
+                  th.ravel()], axis=1)
+    u = np.array([[0.0, 0.0], [u2x, u2y], [u3x, u3y]])
+    Ks = np.array(K)
+    for _ in range(80):
+        c, s = np.cos(q[:, 2]), np.sin(q[:, 2])
+        R = np.stack([np.stack([c, -s], 1), np.stack([s, c], 1)], 1)  # N x 2 x 2
+        V = q[:, None, :2] + np.einsum("nij,kj->nki", R, u)  # N x 3 x 2
+        r = V - Ks[None]
+        F = np.sum(r * r, axis=2) - np.array(prm[:3]) ** 2
+        d = V - V[:, :1]
+        J = np.stack([2 * r[..., 0], 2 * r[..., 1],
+                      2 * (d[..., 0] * r[..., 1] - d[..., 1] * r[..., 0])], axis=2)
+        ok = np.abs(np.linalg.det(J)) > 1e-30
+        J[~ok] = np.eye(3)
+        dq = np.linalg.solve(J, F[..., None])[..., 0]
+        q = q - np.clip(dq, -0.05, 0.05)
+    good = np.all(np.isfinite(q), axis=1) & (np.max(np.abs(F), axis=1) < 1e-15)
     found = []
-    for phi in np.linspace(0, 2 * math.pi, 36, endpoint=False):
-        for th in np.linspace(-math.pi, math.pi, 36, endpoint=False):
-            q = np.array([K[0][0] + l1 * math.cos(phi), K[0][1] + l1 * math.sin(phi), th])
-            for _ in range(60):
-                c, s = math.cos(q[2]), math.sin(q[2])
-                V = [q[:2], q[:2] + [c * u2x - s * u2y, s * u2x + c * u2y],
-                     q[:2] + [c * u3x - s * u3y, s * u3x + c * u3y]]
-                F = np.array([np.sum((V[i] - K[i]) ** 2) - prm[i] ** 2 for i in range(3)])
-                J = np.array([[2 * (V[i] - K[i])[0], 2 * (V[i] - K[i])[1],
-                               2 * np.dot(V[i] - K[i], [-(V[i] - q[:2])[1],
-                                                        (V[i] - q[:2])[0]])]
-                              for i in range(3)])
-                try:
-                    dq = np.linalg.solve(J, F)
-                except np.linalg.LinAlgError:
-                    break
-                q = q - dq
-                if not np.all(np.isfinite(q)) or np.max(np.abs(dq)) > 10:
-                    break
-                if np.max(np.abs(dq)) < 1e-14:
-                    break
-            if np.all(np.isfinite(q)) and np.max(np.abs(F)) < 1e-15:
-                qq = (q[0], q[1], math.remainder(q[2], 2 * math.pi))
-                if all(math.dist(qq[:2], f[:2]) > 1e-6 for f in found):
-                    found.append(qq)
+    for qq in q[good]:
+        qq = (qq[0], qq[1], math.remainder(qq[2], 2 * math.pi))
+        if all(math.dist(qq[:2], f[:2]) > 1e-6 for f in found):
+            found.append(qq)
     return found
 
 
