@@ -3,10 +3,10 @@ point, found together (polygon_method/steps/triad.py).
 
 Against independent references: the 50-digit Newton solve of the scene's constraints
 (tests/reference.py) at angles round the turn, finite differences of the swept positions
-in time, the loop-closure residual of every swept position, the condition against the
-smallest singular value of the normalised Jacobian (numpy's SVD), the assemblies found
-against a brute-force search. The branch stated by [assembly] is kept, and followed over
-the crank's turn.
+in time, the loop-closure residual of every swept position, the condition against numpy's
+determinant of the normalised Jacobian, the assemblies found against a brute-force
+search, the error bounds near a limit. The branch stated by [assembly] is kept, and
+followed over the crank's turn.
 """
 
 import math
