@@ -349,11 +349,16 @@ def solve_array(memo, K, prm, np):
     cols = [np.broadcast_to(c, (n,)) if c.ndim else np.full(n, float(c)) for c in cols]
     data = np.stack(cols, axis=1)  # n x 13
     size = float(max(scale(tuple(np.max(np.abs(data[:, 6:]), axis=0))), 1e-300))
-    step = max(1, -(-n // _SUBSAMPLE))
-    sub_idx = sorted(set(range(0, n, step)) | {n - 1})
+    # the subsample: every 2 % of the largest length the inputs move (at most _SUBSAMPLE)
+    moved = np.concatenate([[0.0], np.cumsum(np.abs(np.diff(data, axis=0)).max(axis=1))])
+    marks = np.searchsorted(moved, np.arange(0.0, moved[-1], 0.02 * size))
+    if len(marks) > _SUBSAMPLE:
+        marks = range(0, n, max(1, -(-n // _SUBSAMPLE)))
+    sub_idx = sorted(set(int(i) for i in marks) | {0, n - 1})
     ref = memo.array()
-    dist = np.abs(data[sub_idx][:, None, :] - ref[None, :, :]).max(axis=2).min(axis=1)
-    a = sub_idx[int(np.argmin(dist))]
+    probe = sub_idx[::max(1, len(sub_idx) // 16)]  # where the walk starts: near a solved one
+    dist = np.abs(data[probe][:, None, :] - ref[None, :, :]).max(axis=2).min(axis=1)
+    a = probe[int(np.argmin(dist))]
     inp_of = lambda i: tuple(float(v) for v in data[i])  # noqa: E731
     qs, signs = {}, {}
     qa = solve_scalar(memo, *kp(inp_of(a)))
