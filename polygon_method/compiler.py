@@ -215,15 +215,19 @@ class _Compiler:
     # ----- compiling
     def add(self, step):
         try:
-            if step.branching:
+            own = step.assemble(self)  # a step that chooses its own assembly
+            if own is not None:
+                step, placed = own
+            elif step.branching:
                 step, xy = self.choose_branch(step)
+                placed = {step.finds[0]: xy}
             else:
-                xy = step.place(self.P, step.params, self.ctx)[:2]
+                placed = {step.finds[0]: step.place(self.P, step.params, self.ctx)[:2]}
         except AssemblyError as exc:
             if exc.key is None:  # not an [assembly] hint: the links cannot meet here
                 exc.message = f"{exc.message}; {self.reach(step)}"
             raise
-        self.P[step.finds[0]] = xy
+        self.P.update(placed)
         self.steps.append(step)
         self.used_links.update(step.links)
 
@@ -314,11 +318,12 @@ class _Compiler:
             if found is None:
                 break
             self.add(found)
-            for p in self.neighbours(found.finds[0]):
-                i = order.get(p)
-                if i is not None and p not in self.P and i not in waiting:
-                    heapq.heappush(heap, i)
-                    waiting.add(i)
+            for x in found.finds:
+                for p in self.neighbours(x):
+                    i = order.get(p)
+                    if i is not None and p not in self.P and i not in waiting:
+                        heapq.heappush(heap, i)
+                        waiting.add(i)
         for st in cylinder.recognise_all(self):  # both ends known: last, they find no point
             self.steps.append(st)
         self.finish()
@@ -430,7 +435,8 @@ class _Compiler:
                        f"{', '.join(missing)} cannot move")
             else:
                 why = (f"{', '.join(missing)} cannot be found by the construction steps "
-                       "(crank, dyad, slider, slotted link, carried point, rolling wheel): the chain needs "
+                       "(crank, dyad, slider, slotted link, carried point, rolling wheel, triad): "
+                       "the chain needs "
                        "a construction these steps do not make, or a part is missing")
             loose = [lk.key for lk in sc.links
                      if lk.key not in self.used_links and (lk.p in missing or lk.q in missing)]

@@ -101,6 +101,9 @@ def other_position(scene, P, X):
         return None  # the crank's tip has one position
     if any(r.rim == X for r in scene.rolling):
         return None  # a rolling wheel's point, a rack: one position (the no-slip relation)
+    tri = _triad_other(scene, P, X)
+    if tri is not False:
+        return tri
     for s in scene.sliders:  # the free end of a slotted link: on the other side of its pivot
         if isinstance(s, GuideSlider) and s.point != X and X in (s.first, s.second):
             k = P[s.second if X == s.first else s.first]
@@ -113,6 +116,29 @@ def other_position(scene, P, X):
     if len(ends) >= 2:  # the first two links at X in the file: the dyad that finds X
         return _mirror(P[X], P[ends[0]], P[ends[1]])
     return None
+
+
+def _triad_other(scene, P, X):
+    """For a point of a class-III group: its place in the nearest other assembly of the
+    group (all of them searched, test_triad checks the search against a brute-force one),
+    None if there is none; False for a point no triad finds."""
+    from polygon_method.compiler import compile_plan
+    from polygon_method.steps import triad
+    st = next((s for s in compile_plan(scene).steps if s.kind == "triad" and X in s.finds),
+              None)
+    if st is None:
+        return False
+    K = tuple(P[k] for k in st.knowns)
+    here = {p: P[p] for p in st.finds}
+    best = None
+    for h in ((1.0, -1.0) if st.sides else (1.0,)):
+        prm = st.params[:6] + (h * st.params[6],)
+        for q in triad.assemblies(K, prm):
+            V = dict(zip(st.finds, triad.vertices(*q, prm, math.cos, math.sin)))
+            d = sum(math.dist(V[p], here[p]) for p in st.finds)
+            if d > 1e-9 and (best is None or d < best[0]):
+                best = (d, V[X])
+    return None if best is None else best[1]
 
 
 _TURNED = {}

@@ -27,9 +27,30 @@ ARC_GAP = 0.1
 
 def _configuration(sol, scale: Scale) -> _Sketch:
     sk = _Sketch()
-    _mechanism(sk, sol, scale)
+    _mechanism(sk, sol, scale, extra=lambda sk, P: _auxiliary(sk, sol, scale, P))
     _header(sk, "configuration", "Configuration diagram", scale, lines=[_drive(sol)])
     return sk
+
+
+def _auxiliary(sk, sol, scale, P):
+    """The points a construction step adds (Goodman's auxiliary point S, where two links
+    produced meet), dashed from the links' ends; one far outside the mechanism is left to
+    the step table's words."""
+    s = scale.per_cm
+    xs = [x for x, _ in P.values()]
+    ys = [y for _, y in P.values()]
+    cx, cy = (max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2
+    reach = max(max(xs) - min(xs), max(ys) - min(ys), 1e-9)
+    for st in sol.plan.steps:
+        for label, (x, y), ends in st.auxiliary(sol.P):
+            xy = (x / s, y / s)
+            if math.dist(xy, (cx, cy)) > 0.75 * reach:
+                continue
+            for e in ends:
+                sk.line([P[e], xy], gid=f"auxiliary-{label}-{e}", color="#555555", lw=0.5,
+                        dashes=(2.0, 1.5), z=1)
+            sk.circle(xy, DOT_R, gid=f"auxiliary-{label}", face="#000000", z=6)
+            sk.label(label, [xy], LABEL_PT, gid=f"label-auxiliary-{label}", point=True)
 
 
 def _drive(sol) -> str:

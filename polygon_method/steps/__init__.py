@@ -11,7 +11,9 @@ carried    a point on a known link or plate (the image point, similar triangles)
 slider     RRP: a link and a slider on a fixed path or on a moving link
 dyad       RRR: the joint of two links (or plate sides) to two known points
 slotted    RPR: a link that a block slides along (slotted lever, Whitworth, swivel)
-cylinder   a hydraulic cylinder between two known points: length, extension rate, omega
+cylinder     a hydraulic cylinder between two known points: length, extension rate, omega
+triad        class-III group: a plate whose three vertices are each linked to a known point
+             (three points at once: Newton on the loop equations; Goodman's auxiliary point)
 =========  ===========================================================================
 =======
 ============ ===========================================================================
@@ -30,7 +32,7 @@ Adding a kind: write its module (a frozen ``Step`` subclass and a ``recognise(g,
 function) and add it to :data:`TIERS`.
 """
 
-from . import carried, cylinder, dyad, rack, rolling, slider, slotted, wheel_centre
+from . import carried, cylinder, dyad, rack, rolling, slider, slotted, triad, wheel_centre
 from .base import (Construction, Context, DirectionLine, State, Step, Vector, image_label,
                    image_name, pole_text)
 from .carried import Carried
@@ -40,15 +42,17 @@ from .dyad import Dyad
 from .rolling import RollingWheel
 from .slider import SliderDyad
 from .slotted import SlottedLink, under_label
+from .triad import Triad
 
 #: the recognisers the compiler tries, tier by tier: for each unknown point (in the scene's
 #: order) every kind of the first tier in turn; the next tier only when no point of the
 #: tiers before can be found. The crank is the plan's first step and is not recognised.
 TIERS = ((rolling.recognise, wheel_centre.recognise, rack.recognise, carried.recognise,
           slider.recognise, dyad.recognise),
-         (slotted.recognise,))
+         (slotted.recognise,),
+         (triad.recognise,))
 
 __all__ = ["TIERS", "Step", "Context", "State", "Crank", "Dyad", "SliderDyad", "SlottedLink",
-           "Carried", "CylinderStep", "RollingWheel", "Construction", "Vector", "DirectionLine",
-           "image_label", "image_name",
+           "Carried", "CylinderStep", "RollingWheel", "Triad", "Construction", "Vector",
+           "DirectionLine", "image_label", "image_name",
            "pole_text", "under_label"]

@@ -117,8 +117,9 @@ REQUIRED = ("kind", "finds", "links", "needs", "title", "params", "dimensions", 
 #: in a row), ``group_key``/``bind_group``/``bind_group_instant`` (not bound in groups),
 #: ``rounding``/``error_bound`` (the rule of two direction lines), ``contacts``,
 #: ``contact_motion``, ``shapes`` (no rolling contact, nothing drawn besides links),
-#: ``produced``, ``drawn`` (draws nothing of its own), ``output``, ``default_hint``
-OPTIONAL = ("branching", "image_by_similar_triangle", "draws_relative",
+#: ``produced``, ``drawn`` (draws nothing of its own), ``output``, ``default_hint``,
+#: ``assemble`` (placed by ``place`` and its branch), ``auxiliary`` (no auxiliary point)
+OPTIONAL = ("assemble", "auxiliary", "branching", "image_by_similar_triangle", "draws_relative",
             "other_assembly_mistake", "needs_links", "bind_instant", "group_key",
             "bind_group", "bind_group_instant", "rounding", "error_bound", "contacts",
             "contact_motion", "shapes", "produced", "drawn", "output", "default_hint")
@@ -126,7 +127,8 @@ OPTIONAL = ("branching", "image_by_similar_triangle", "draws_relative",
 
 @dataclass(frozen=True)
 class Step:
-    """One hand construction: finds one point (``finds``) from points already known.
+    """One hand construction: finds one point (``finds``; a class-III group finds three
+    at once) from points already known.
 
     A kind fills in: ``finds``, ``links`` (the links whose omega and alpha it determines),
     ``needs`` (the points it reads), ``params`` (its dimensions, as the plan's scene gives
@@ -217,7 +219,7 @@ class Step:
 
     def positions(self, P, ctx):
         """Place this step's point into the dict ``P`` (one step alone, at the plan's own
-        dimensions)."""
+        dimensions; a step finding several points places them all)."""
         x, y, c = self.place(P, self.params, ctx)
         P[self.finds[0]] = (x, y)
         ctx.cond[self.index] = c
@@ -326,6 +328,19 @@ class Step:
     def default_hint(self, P):
         """Which of the two positions the step takes when the scene does not say."""
         return "above"
+
+    def auxiliary(self, P) -> tuple:
+        """Points a construction adds to the configuration diagram: (label, (x, y), the
+        points it is drawn from (each a line from that point to it)), as Goodman's
+        auxiliary point where two links produced meet. None by default."""
+        return ()
+
+    def assemble(self, g):
+        """(the step with its assembly chosen, {point: (x, y)}) for a step that chooses
+        its own assembly when compiled (``g``: the compiler, its ``P``, ``scene``,
+        ``notes``), or None: the compiler chooses between the two positions of
+        :meth:`place` (``sigma`` = +1 or -1) by the scene's [assembly] hint."""
+        return None
 
 
 # --------------------------------------------------------------------------- records

@@ -1,0 +1,597 @@
+"""Class-III group (a triad): a plate with three vertices, each joined by a binary link to
+a known point, its three vertices found at once. This module is the step (recognition,
+assembly, the three phases, the words, the polygons with Goodman's auxiliary point); its
+loop equations, their Newton solution, the continuation of the scene's assembly and the
+search of every assembly are in :mod:`.loop` (see its docstring for the formulas).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from ...errors import AssemblyError
+from ...numbers import in_units
+from ..base import (Construction, DirectionLine, Step, Vector, absolute, image_label, perp,
+                    pole_text, relative, sub, unit)
+from ..rounding import two_lines
+from .loop import (Memo, acceleration, assemblies, condition, det3, flat, matrix,
+                   newton_step, scale, sign, solve3, solve_array, solve_scalar, velocity,
+                   vertices)
+
+__all__ = ["Triad", "recognise", "solve3", "vertices", "velocity", "acceleration",
+           "condition", "newton_step", "assemblies"]
+
+
+# --------------------------------------------------------------------------- recognition
+
+
+def recognise(g, name):
+    """A plate (a link with carried points: a body of three or more points, none known)
+    with ``name`` among three of its points that each have exactly one unused link to a
+    known point; no other kind can find any point when this is tried."""
+    for key in g.bodies_of(name):
+        if key in g.used_links:
+            continue
+        b = g.body(key)
+        if len(b) < 3 or any(p in g.P for p in b):
+            continue
+        verts = []
+        for p in b:
+            free = [f for f in g.free(p) if f[0] != key]
+            if len(free) == 1:
+                verts.append((p, free[0]))
+        if name not in [v[0] for v in verts] or len(verts) < 3:
+            continue
+        verts = verts[:3]
+        if len({f[0] for _, f in verts}) < 3:
+            continue  # one link to two vertices: no triad
+        f = b
+        (p1, (k1, K1, l1)), (p2, (k2, K2, l2)), (p3, (k3, K3, l3)) = verts
+        return Triad(g.next_index, (p1, p2, p3), key, (K1, K2, K3), (k1, k2, k3),
+                     (l1, l2, l3), (f[p2][0] - f[p1][0], f[p2][1] - f[p1][1],
+                                    f[p3][0] - f[p1][0], f[p3][1] - f[p1][1]),
+                     unit=g.unit, uname=g.uname)
+    return _triangle(g, name)
+
+
+def _one_free(g, p, exclude):
+    free = [f for f in g.free(p) if f[0] not in exclude]
+    return free[0] if len(free) == 1 else None
+
+
+def _triangle(g, name):
+    """Three links joined in a triangle (a rigid plate made of links: name-X, X-Y, Y-name),
+    none of their points known, each point with one other link to a known point."""
+    ends = {}
+    for key in g.bodies_of(name):
+        b = g.body(key)
+        if key in g.used_links or len(b) != 2:
+            continue
+        other = next(p for p in b if p != name)
+        if other not in g.P:
+            ends.setdefault(other, key)
+    names = list(ends)
+    for i, X in enumerate(names):
+        for Y in names[i + 1:]:
+            side = next((k for k in g.bodies_of(X) if k not in g.used_links and
+                         set(g.body(k)) == {X, Y}), None)
+            if side is None:
+                continue
+            tri = {ends[X], side, ends[Y]}
+            free = [(p, _one_free(g, p, tri)) for p in (name, X, Y)]
+            if any(f is None for _, f in free) or len({f[0] for _, f in free}) < 3:
+                continue
+            (p1, (k1, K1, l1)), (p2, (k2, K2, l2)), (p3, (k3, K3, l3)) = free
+            a = g.bodies.distance(ends[X], name, X)
+            b = g.bodies.distance(side, X, Y)
+            c = g.bodies.distance(ends[Y], Y, name)
+            return Triad(g.next_index, (p1, p2, p3), ends[X], (K1, K2, K3), (k1, k2, k3),
+                         (l1, l2, l3), _triangle_offsets(a, b, c, 1.0),
+                         unit=g.unit, uname=g.uname,
+                         sides=((side, X, Y), (ends[Y], Y, name)))
+    return None
+
+
+def _triangle_offsets(a, b, c, hand):
+    """V2 - V1 and V3 - V1 of a triangle with V1V2 = a, V2V3 = b, V3V1 = c, V3 on the
+    side ``hand`` (+1: left of V1 -> V2)."""
+    x3 = (a * a + c * c - b * b) / (2.0 * a)
+    return (a, 0.0, x3, hand * max(c * c - x3 * x3, 0.0) ** 0.5)
+
+
+def _any_assembly(K, prm, np):
+    """(x, y, th, bad): an assembly of each element, if any (a step whose assembly is not
+    chosen yet: where can the crank be set so that it assembles at all)."""
+    cols = [np.asarray(c, dtype=float) for xy in K for c in xy] + \
+        [np.asarray(p, dtype=float) for p in prm]
+    n = max([c.size for c in cols] + [1])
+    cols = [np.broadcast_to(c, (n,)) if c.ndim else np.full(n, float(c)) for c in cols]
+    out = np.zeros((3, n))
+    bad = np.ones(n, dtype=bool)
+    for i in range(n):
+        v = [float(c[i]) for c in cols]
+        found = assemblies(((v[0], v[1]), (v[2], v[3]), (v[4], v[5])), tuple(v[6:]))
+        if found:
+            out[:, i] = found[0]
+            bad[i] = False
+    return out[0], out[1], out[2], bad
+
+
+# --------------------------------------------------------------------------- the step
+
+
+@dataclass(frozen=True)
+class Triad(Step):
+    """A class-III group: plate ``plate`` with vertices ``points`` joined by ``links`` of
+    ``lengths`` to the known points ``knowns`` (see the module). ``offsets``: V2 - V1 and
+    V3 - V1 on the plate (its own frame). ``start``: the scene's assembly (inputs, pose,
+    sign of det M), chosen when compiling; ``count``: how many assemblies there are."""
+
+    points: tuple
+    plate: str
+    knowns: tuple
+    links_: tuple
+    lengths: tuple
+    offsets: tuple
+    sigma: float = 1.0  # one assembly is followed by continuation, never flipped
+    unit: float = 1e-3
+    uname: str = "mm"
+    start: tuple = ()
+    count: int = 0
+    #: a plate made of three links: the other two sides, (key, from, to) each, and the
+    #: side of V1 -> V2 its third vertex is on (chosen when compiling: two assemblies each)
+    sides: tuple = ()
+    hand: float = 1.0
+    memo: object = field(default=None, compare=False, repr=False)
+
+    kind = "triad"
+    branching = True
+    other_assembly_mistake = True
+
+    def __post_init__(self):
+        if self.start and self.memo is None:
+            object.__setattr__(self, "memo", Memo(self.start))
+
+    # ----- what it is
+    @property
+    def finds(self):
+        return self.points
+
+    @property
+    def links(self):
+        return (self.plate,) + tuple(k for k, _, _ in self.sides) + self.links_
+
+    @property
+    def needs(self):
+        return tuple(dict.fromkeys(self.knowns))
+
+    @property
+    def needs_links(self):
+        return ()
+
+    @property
+    def title(self):
+        return f"triad: {self._plate_words} ({', '.join(self.points)}) on {', '.join(self.links_)}"
+
+    @property
+    def _plate_words(self):
+        """``plate BC``, or ``plate BC, CD, DB`` for a plate of three links."""
+        return "plate " + ", ".join((self.plate,) + tuple(k for k, _, _ in self.sides))
+
+    @property
+    def params(self):
+        return tuple(self.lengths) + tuple(self.offsets)
+
+    def dimensions(self, scene, bodies):
+        own = tuple(bodies.distance(k, K, V) for k, K, V in
+                    zip(self.links_, self.knowns, self.points))
+        if self.sides:
+            p1, p2, _ = self.points
+            (k2, a2, b2), (k3, a3, b3) = self.sides
+            return own + _triangle_offsets(bodies.distance(self.plate, p1, p2),
+                                           bodies.distance(k2, a2, b2),
+                                           bodies.distance(k3, a3, b3), self.hand)
+        f = bodies.frame(self.plate)
+        (x1, y1), (x2, y2), (x3, y3) = (f[p] for p in self.points)
+        return own + (x2 - x1, y2 - y1, x3 - x1, y3 - y1)
+
+    def drawn(self, prm, pencil, P):
+        return tuple(v + pencil() for v in prm)
+
+    def reach(self):
+        return scale(self.params)
+
+    # ----- compiling: the assembly the scene states
+    def assemble(self, g):
+        """(the step with its assembly, {vertex: position}) at the compiler's instant: every
+        assembly is found; the [assembly] hints of the vertices choose one (a rough position
+        [x, y]: the nearest; above/below/left/right: the extreme one), else the one with the
+        first vertex highest (stated in the notes)."""
+        K = tuple(g.P[k] for k in self.knowns)
+        prm = self.params
+        found = assemblies(K, prm)
+        hands = [self.hand] * len(found)
+        if self.sides:  # a triangle of links: its mirror image assembles too
+            mirror = prm[:6] + (-prm[6],)
+            more = assemblies(K, mirror)
+            found += more
+            hands += [-self.hand] * len(more)
+        if not found:
+            raise AssemblyError(self.why(), step=self.label)
+        prms = [prm if h == self.hand else prm[:6] + (-prm[6],) for h in hands]
+        places = [dict(zip(self.points, vertices(*q, pr, math.cos, math.sin)))
+                  for q, pr in zip(found, prms)]
+        hints = {p: g.scene.assembly[p] for p in self.points if p in g.scene.assembly}
+        size = self.reach()
+        coords = {p: h for p, h in hints.items() if isinstance(h, tuple)}
+        if coords:
+            d = [sum(math.dist(pl[p], h) ** 2 for p, h in coords.items()) ** 0.5
+                 for pl in places]
+            order = sorted(range(len(found)), key=d.__getitem__)
+            best = order[0]
+            key = f"[assembly] {', '.join(coords)}"
+            if d[best] > size:
+                raise AssemblyError(
+                    f"assembly {', '.join(coords)} matches no assembly of the triad "
+                    f"({self._listed(places, coords)}); give rough positions near the one "
+                    "the figure shows", key=key, file=g.scene.file)
+            if len(order) > 1:
+                sep = max(math.dist(places[best][p], places[order[1]][p]) for p in coords)
+                if d[order[1]] - d[best] <= 0.1 * sep:
+                    raise AssemblyError(
+                        f"assembly {', '.join(coords)} is as near one assembly of the triad "
+                        f"as another ({self._listed(places, coords)}): give rough positions "
+                        "nearer the one the figure shows", key=key, file=g.scene.file)
+        elif hints:
+            p, h = next(iter(hints.items()))
+            axis, want = {"above": (1, 1), "below": (1, -1), "right": (0, 1),
+                          "left": (0, -1)}[h]
+            best = max(range(len(found)), key=lambda i: places[i][p][axis] * want)
+        else:
+            p = self.points[0]
+            best = max(range(len(found)), key=lambda i: (places[i][p][1], places[i][p][0]))
+            if len(found) > 1:
+                g.notes.append(
+                    f"{', '.join(self.points)}: of the triad's {len(found)} assemblies the one "
+                    f"with {p} highest was taken (default; set [assembly] {p} = [x, y] to a "
+                    "rough position to choose)")
+        q, prm = found[best], prms[best]
+        det = newton_step(q, K, prm, math.cos, math.sin)[2]
+        chosen = Triad(self.index, self.points, self.plate, self.knowns, self.links_,
+                       self.lengths, prm[3:], self.sigma, self.unit, self.uname,
+                       (flat(K, prm), q, sign(det)), len(found), sides=self.sides,
+                       hand=hands[best])
+        return chosen, places[best]
+
+    def _listed(self, places, coords):
+        u, n = self.unit, self.uname
+        return "; ".join(", ".join(f"{p} [{in_units(pl[p][0], u)}, {in_units(pl[p][1], u)}]"
+                                   for p in coords) + f" {n}" for pl in places)
+
+    # ----- evaluation
+    def place(self, P, prm, ctx, sigma=None):
+        K = tuple(P[k] for k in self.knowns)
+        q = solve_scalar(self.memo, K, prm)
+        if q is None:
+            raise AssemblyError(self.why(), step=self.label)
+        V = vertices(*q, prm, math.cos, math.sin)
+        return V[0][0], V[0][1], condition(V, K)
+
+    def positions(self, P, ctx):
+        K = tuple(P[k] for k in self.knowns)
+        q = solve_scalar(self.memo, K, self.params)
+        if q is None:
+            raise AssemblyError(self.why(), step=self.label)
+        V = vertices(*q, self.params, math.cos, math.sin)
+        for p, xy in zip(self.points, V):
+            P[p] = xy
+        ctx.cond[self.index] = condition(V, K)
+
+    @property
+    def point(self):
+        """The first vertex: where the checker's other-assembly mistake is hinted."""
+        return self.points[0]
+
+    def candidates(self, P, ctx):
+        """(midpoint, half the vector from the other to this) of the first vertex, between
+        this assembly and the nearest other one of the triad at ``P`` (no other: a zero
+        half-vector)."""
+        K = tuple(P[k] for k in self.knowns)
+        here = tuple(P[p] for p in self.points)
+        best = None
+        for h in ((1.0, -1.0) if self.sides else (1.0,)):
+            prm = self.params[:6] + (h * self.params[6],)
+            for q in assemblies(K, prm):
+                V = vertices(*q, prm, math.cos, math.sin)
+                d = sum(math.dist(a, b) for a, b in zip(V, here))
+                if d > 1e-9 * self.reach() and (best is None or d < best[0]):
+                    best = (d, V[0])
+        x, y = here[0]
+        if best is None:
+            return (x, y), (0.0, 0.0)
+        ox, oy = best[1]
+        return ((x + ox) / 2, (y + oy) / 2), ((x - ox) / 2, (y - oy) / 2)
+
+    def bind(self, prm):
+        pts, kn, i, step = self.points, self.knowns, self.index, self
+        plate, lk = self.plate, self.links_
+        sides = tuple(k for k, _, _ in self.sides)
+
+        def position(m):
+            K = tuple(m.P[k] for k in kn)
+            if m.array:
+                np = m.ctx.np
+                if step.memo is None:  # no assembly chosen (the compiler's search of
+                    x, y, th, bad = _any_assembly(K, prm, np)  # where it assembles)
+                else:
+                    x, y, th, bad = solve_array(step.memo, K, prm, np)
+                if bad.any():
+                    m.ctx.fail(step, bad)
+                V = vertices(x, y, th, prm, np.cos, np.sin)
+                with np.errstate(all="ignore"):
+                    c = condition(V, K)
+                c = np.where(np.isfinite(c), c, 0.0)
+            else:
+                q = solve_scalar(step.memo, K, prm)
+                if q is None:
+                    raise AssemblyError(step.why(), step=step.label)
+                V = vertices(*q, prm, math.cos, math.sin)
+                c = condition(V, K)
+            for p, xy in zip(pts, V):
+                m.P[p] = xy
+            m.cond[i] = c
+
+        def parts(m):
+            V = tuple(m.P[p] for p in pts)
+            K = tuple(m.P[k] for k in kn)
+            if m.array:  # a singular entry (masked) must not divide by zero
+                np = m.ctx.np
+                d = det3(matrix(V, K))
+                zero = d == 0
+                if np.any(zero):
+                    m.ctx.fail(step, zero)
+                    V = tuple((np.where(zero, vx + 1e-3 * (j + 1), vx), vy)
+                              for j, (vx, vy) in enumerate(V))
+            return V, K
+
+        def velocity_(m):
+            V, K = parts(m)
+            w, vv, wl = velocity(V, K, tuple(m.V[k] for k in kn))
+            for p, v in zip(pts, vv):
+                m.V[p] = v
+            m.W[plate] = w
+            for k in sides:
+                m.W[k] = w
+            for k, wk in zip(lk, wl):
+                m.W[k] = wk
+
+        def acceleration_(m):
+            V, K = parts(m)
+            al, aa, all_ = acceleration(V, K, tuple(m.V[p] for p in pts),
+                                        tuple(m.V[k] for k in kn), tuple(m.A[k] for k in kn),
+                                        m.W[plate])
+            for p, a in zip(pts, aa):
+                m.A[p] = a
+            m.Al[plate] = al
+            for k in sides:
+                m.Al[k] = al
+            for k, ak in zip(lk, all_):
+                m.Al[k] = ak
+
+        return position, velocity_, acceleration_
+
+    def bind_instant(self, prm):
+        return Step.bind_instant(self, prm)
+
+    rounding = 96.0
+
+    def error_bound(self, walk, k, p_in, v_in, a_in):
+        """The rule of two direction lines with the triad's condition: Newton's positions
+        are exact to rounding, and one 3x3 solve at condition c multiplies the errors it
+        is given by about 1/c."""
+        return two_lines(walk.condition(self), walk.ratio, k, p_in, v_in, a_in)
+
+    # ----- words
+    def _lines(self):
+        return ", ".join(f"{K}{V}" for K, V in zip(self.knowns, self.points))
+
+    def why(self, e=None):
+        if not self.start:  # no assembly chosen yet: none exists here
+            return (f"cannot assemble the triad {', '.join(self.points)}: no position of the "
+                    f"{self._plate_words} reaches the links {', '.join(self.links_)} from "
+                    f"{', '.join(self.knowns)} at this crank angle")
+        return (f"cannot assemble the triad {', '.join(self.points)}: its assembly ends before "
+                f"this crank angle (a limit of the triad, where the lines of "
+                f"{self._lines()} meet in one point)")
+
+    def singular_why(self, c) -> str:
+        return (f"the lines of {self._lines()} meet in one point (or are parallel; condition "
+                f"{c:.2g}): the {self._plate_words} could turn about that point while the "
+                "links stand still, so its velocity is indeterminate (a limit position of "
+                "the triad, where two of its assemblies meet)")
+
+    def warning(self, c) -> str:
+        return (f"{self.label}: the lines of {self._lines()} nearly meet in one point "
+                f"(condition {c:.3g}): near a limit of the triad the auxiliary point "
+                "construction is ill-conditioned")
+
+    def limit_why(self) -> str:
+        return (f"the lines of {self._lines()} meet in one point (the triad "
+                f"{', '.join(self.points)} cannot be assembled beyond it on its branch)")
+
+    def transmission(self):
+        return None
+
+    def condition_column(self):
+        return (f"cond {''.join(self.points)}", "", "triad condition (0: the three links' "
+                "lines meet in a point)")
+
+    def bodies(self):
+        return (self.links_[0], self.plate) + tuple(k for k, _, _ in self.sides) + \
+            (self.links_[1], self.links_[2])
+
+    def orient(self):
+        out = {self.plate: (self.points[1], self.points[0])}
+        for k, a, b in self.sides:
+            out[k] = (b, a)
+        for k, K, V in zip(self.links_, self.knowns, self.points):
+            out[k] = (V, K)
+        return out
+
+    def output(self, ground):
+        return None
+
+    def produced(self):
+        return None
+
+    def default_hint(self, P):
+        return "above"
+
+    def position_words(self, L, which, angle_deg):
+        arcs = "; ".join(f"{V} on the arc of radius {k} = {L(l)} about {K}" for V, k, K, l in
+                         zip(self.points, self.links_, self.knowns, self.lengths))
+        return (f"{', '.join(self.points)} together (no one of them can be found alone): "
+                f"{arcs}; the {self._plate_words} is fitted to the three arcs by trial (or "
+                f"by the loop equations), the assembly of the figure"
+                + (f" (one of {self.count})" if self.count > 1 else ""))
+
+    # ----- the polygons (the auxiliary point construction)
+    def _aux(self, P):
+        """(i, j, m, S): the two links whose lines cross at the largest angle, where they
+        cross (S, a point of the plate), and the third link."""
+        V = [P[p] for p in self.points]
+        K = [P[k] for k in self.knowns]
+        best = None
+        for i, j, m in ((0, 1, 2), (0, 2, 1), (1, 2, 0)):
+            a, b = unit(*sub(V[i], K[i])), unit(*sub(V[j], K[j]))
+            s = abs(a[0] * b[1] - a[1] * b[0])
+            if best is None or s > best[0]:
+                best = (s, i, j, m)
+        _, i, j, m = best
+        (ax, ay), (bx, by) = sub(V[i], K[i]), sub(V[j], K[j])
+        den = ax * by - ay * bx
+        wx, wy = K[j][0] - K[i][0], K[j][1] - K[i][1]
+        t = (wx * by - wy * bx) / den if den else 0.0
+        return i, j, m, (K[i][0] + t * ax, K[i][1] + t * ay)
+
+    def auxiliary(self, P):
+        """S, where the two links' lines that cross best meet, drawn from their fixed or
+        known ends (the links produced)."""
+        i, j, _, S = self._aux(P)
+        return ((self._aux_name(P).upper(), S, (self.knowns[i], self.knowns[j])),)
+
+    def _aux_name(self, names):
+        taken = {p.lower() for p in names}
+        if "s" not in taken:
+            return "s"
+        k = 1
+        while f"s{k}" in taken:
+            k += 1
+        return f"s{k}"
+
+    def _aux_label(self, sol):
+        taken = {p.lower() for p in sol.scene.point_names}
+        if "s" not in taken:
+            return "s"
+        k = 1
+        while f"s{k}" in taken:
+            k += 1
+        return f"s{k}"
+
+    def construction(self, sol, ph):
+        P = sol.P
+        i, j, m, S = self._aux(P)
+        pts, kn, lk = self.points, self.knowns, self.links_
+        Vi, Vj, Vm = pts[i], pts[j], pts[m]
+        Ki, Kj, Km = kn[i], kn[j], kn[m]
+        cond = sol.conditions.get(self.index, 1.0)
+        lab = lambda p: image_label(sol, p, ph)  # noqa: E731
+        w = sol.W[self.plate]
+        prime = "'" if ph == "acceleration" else ""
+        s_lab = self._aux_label(sol) + prime
+        perp_to = lambda a, b: unit(*perp(sub(P[b], P[a])))  # noqa: E731
+        D = sol.V if ph == "velocity" else sol.A
+        x1, y1 = P[pts[0]]
+        ref = D[pts[0]]
+        if ph == "velocity":
+            img_s = (ref[0] - w * (S[1] - y1), ref[1] + w * (S[0] - x1))
+        else:
+            al = sol.Al[self.plate]
+            img_s = (ref[0] - al * (S[1] - y1) - w * w * (S[0] - x1),
+                     ref[1] + al * (S[0] - x1) - w * w * (S[1] - y1))
+        aux = f"S, where {Ki}{Vi} and {Kj}{Vj} (produced) meet, a point of the {self._plate_words}"
+        if ph == "velocity":
+            lines = (DirectionLine(D[Ki], perp_to(Ki, Vi), lab(Ki), f"perpendicular to {Ki}{Vi}"),
+                     DirectionLine(D[Kj], perp_to(Kj, Vj), lab(Kj), f"perpendicular to {Kj}{Vj}"),
+                     DirectionLine(img_s, unit(*perp(sub(P[Vm], S))), s_lab,
+                                   f"perpendicular to S{Vm}"),
+                     DirectionLine(D[Km], perp_to(Km, Vm), lab(Km), f"perpendicular to {Km}{Vm}"),
+                     DirectionLine(D[Vm], perp_to(Vm, Vi), lab(Vm), f"perpendicular to {Vm}{Vi}"),
+                     DirectionLine(D[Vm], perp_to(Vm, Vj), lab(Vm), f"perpendicular to {Vm}{Vj}"))
+            text = (f"auxiliary point (Goodman): {aux}, moves perpendicular to both lines; "
+                    f"through {pole_text(sol, Ki, ph)} draw a line perpendicular to {Ki}{Vi}, "
+                    f"through {pole_text(sol, Kj, ph)} one perpendicular to {Kj}{Vj}: they "
+                    f"meet at {s_lab}; through {s_lab} draw a line perpendicular to S{Vm}, "
+                    f"through {pole_text(sol, Km, ph)} one perpendicular to {Km}{Vm}: they meet "
+                    f"at {lab(Vm)}; through {lab(Vm)} draw lines perpendicular to {Vm}{Vi} and "
+                    f"{Vm}{Vj}: they cut the first two lines at {lab(Vi)} and {lab(Vj)}")
+            found = tuple(relative(sol, V, K, D, ph) for V, K in zip(pts, kn)) + \
+                (relative(sol, Vi, Vm, D, ph), relative(sol, Vj, Vm, D, ph)) + \
+                tuple(absolute(sol, V, D, ph) for V in pts)
+            return Construction(self.index, self.title, ph, ", ".join(lab(p) for p in pts),
+                                D[Vm], (), lines, found, text, cond, ((s_lab, img_s),))
+        W = sol.W
+
+        def cen(start, X, Y, om, name):  # centripetal of X about Y: om^2 XY towards Y
+            r = sub(P[X] if isinstance(X, str) else X, P[Y] if isinstance(Y, str) else Y)
+            end = (start[0] - om * om * r[0], start[1] - om * om * r[1])
+            return Vector(start, end, f"c{name}", "centripetal", f"centripetal of {name}",
+                          f"{om * om * math.hypot(*r):.4g} m/s^2, parallel to {name}, "
+                          f"towards its second point")
+
+        ci = cen(D[Ki], Vi, Ki, W[lk[i]], f"{Vi}{Ki}")
+        cj = cen(D[Kj], Vj, Kj, W[lk[j]], f"{Vj}{Kj}")
+        csi = cen(ci.end, S, Vi, w, f"S{Vi}")
+        csj = cen(cj.end, S, Vj, w, f"S{Vj}")
+        cm = cen(img_s, Vm, S, w, f"{Vm}S")
+        ck = cen(D[Km], Vm, Km, W[lk[m]], f"{Vm}{Km}")
+        cmi = cen(D[Vm], Vi, Vm, w, f"{Vi}{Vm}")
+        cmj = cen(D[Vm], Vj, Vm, w, f"{Vj}{Vm}")
+        lines = (DirectionLine(csi.end, perp_to(Ki, Vi), f"the end of the centripetal of S{Vi}",
+                               f"perpendicular to {Ki}{Vi}"),
+                 DirectionLine(csj.end, perp_to(Kj, Vj), f"the end of the centripetal of S{Vj}",
+                               f"perpendicular to {Kj}{Vj}"),
+                 DirectionLine(cm.end, unit(*perp(sub(P[Vm], S))),
+                               f"the end of the centripetal of {Vm}S", f"perpendicular to S{Vm}"),
+                 DirectionLine(ck.end, perp_to(Km, Vm), f"the end of the centripetal of {Vm}{Km}",
+                               f"perpendicular to {Km}{Vm}"),
+                 DirectionLine(cmi.end, perp_to(Vm, Vi), f"the end of the centripetal of {Vi}{Vm}",
+                               f"perpendicular to {Vm}{Vi}"),
+                 DirectionLine(cmj.end, perp_to(Vm, Vj), f"the end of the centripetal of {Vj}{Vm}",
+                               f"perpendicular to {Vm}{Vj}"),
+                 DirectionLine(ci.end, perp_to(Ki, Vi), f"the end of the centripetal of {Vi}{Ki}",
+                               f"perpendicular to {Ki}{Vi}"),
+                 DirectionLine(cj.end, perp_to(Kj, Vj), f"the end of the centripetal of {Vj}{Kj}",
+                               f"perpendicular to {Kj}{Vj}"))
+        text = (f"auxiliary point (Goodman): {aux}; from {pole_text(sol, Ki, ph)} draw the "
+                f"centripetal of {Vi}{Ki} and from its end the centripetal of S{Vi} (both "
+                f"along {Ki}{Vi}), and through the end a line perpendicular to {Ki}{Vi}; the "
+                f"same from {pole_text(sol, Kj, ph)} along {Kj}{Vj}: the two lines meet at "
+                f"{s_lab}; from {s_lab} the centripetal of {Vm}S and a line perpendicular to "
+                f"S{Vm}, from {pole_text(sol, Km, ph)} the centripetal of {Vm}{Km} and a line "
+                f"perpendicular to {Km}{Vm}: they meet at {lab(Vm)}; from {lab(Vm)} the "
+                f"centripetals of {Vi}{Vm} and {Vj}{Vm} and lines perpendicular to {Vm}{Vi} "
+                f"and {Vm}{Vj}; they cut the lines perpendicular to {Ki}{Vi} and {Kj}{Vj} "
+                f"drawn through the ends of the centripetals of {Vi}{Ki} and {Vj}{Kj} at "
+                f"{lab(Vi)} and {lab(Vj)} (omega of the {self._plate_words} from the velocity "
+                "polygon)")
+        found = tuple(Vector(c.end, D[V], f"t{V}{K}", "tangential", f"tangential of {V}{K}",
+                             f"alpha_{k} x {K}{V}")
+                      for c, V, K, k in ((ci, Vi, Ki, lk[i]), (cj, Vj, Kj, lk[j]),
+                                         (ck, Vm, Km, lk[m]))) + \
+            tuple(relative(sol, V, K, D, ph) for V, K in zip(pts, kn)) + \
+            tuple(absolute(sol, V, D, ph) for V in pts)
+        return Construction(self.index, self.title, ph, ", ".join(lab(p) for p in pts),
+                            D[Vm], (ci, cj, csi, csj, cm, ck, cmi, cmj), lines, found, text,
+                            cond, ((s_lab, img_s),))
