@@ -311,8 +311,12 @@ def locate(sol, prefix: str = "I") -> "Centres":
     if missing:
         raise SingularStepError(
             "Kennedy's theorem cannot locate " + ", ".join(f"I{i}{j}" for i, j in missing)
-            + " (every pair of lines through known centres is the same line or lies at "
-            "infinity)", step="centres")
+            + (" (two inputs: with two degrees of freedom a centre of two bodies depends on "
+               "the ratio of the input speeds, and Kennedy's theorem does not reach it from "
+               "the pins alone; the polygons give every velocity)"
+               if sol.scene.input.second is not None else
+               " (every pair of lines through known centres is the same line or lies at "
+               "infinity)"), step="centres")
     omegas, ratio_from = _omegas(sol, names, found)
     if prefix != "I":
         found = _relabelled(found, order, prefix)

@@ -39,6 +39,7 @@ from .numbers import in_units, quiet, sense
 from .plan import Bodies, Dims, Plan, _bodies_at
 from .scene import GuideSlider, Scene, key_line
 from .steps import TIERS, Context, Crank, cylinder
+from .steps.second_crank import SecondCrank
 
 __all__ = ["compile_plan", "gruebler", "step_scale"]
 
@@ -294,6 +295,11 @@ class _Compiler:
         inp = sc.input
         crank = self.bodies._links.get(inp.crank) or sc.link(inp.crank)
         self.add(Crank(0, crank.key, inp.pivot, inp.tip, crank.length))
+        two = inp.second
+        if two is not None:  # two degrees of freedom: the second crank is the next step
+            link = sc.link(two.crank)
+            self.add(SecondCrank(1, link.key, two.pivot, two.tip, link.length, two.angle,
+                                 two.omega, two.alpha, inp.angle, inp.omega))
         names = self.names
         order = {p: i for i, p in enumerate(names)}
         heap = list(range(len(names)))  # sorted: a heap

@@ -105,8 +105,8 @@ def power_terms(scene, V, W) -> list:
 
 def input_torque(scene, V, W, omega):
     """T on the crank, ccw positive, from the power balance; None without loads."""
-    if not scene.loads:
-        return None
+    if not scene.loads or scene.input.second is not None:
+        return None  # two inputs: one power balance does not give two driving torques
     terms = power_terms(scene, V, W)
     total = terms[0][1]
     for _, p in terms[1:]:

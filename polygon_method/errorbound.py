@@ -239,7 +239,7 @@ def bounds_dict(sol, b=None) -> dict:
                         for s in sc.sliders}
     if sc.pins:
         d["pins"] = {pin[0]: {"rubbing_velocity": b.rubbing(pin)} for pin in sol.plan.pins}
-    if sc.loads:
+    if sc.loads and sc.input.second is None:
         d["input_torque"] = b.torque(sc)
     d["worst"] = b.worst
     return d
@@ -266,6 +266,6 @@ def shown_bounds(sol, b=None) -> list:
         for pin in sol.plan.pins:
             if b.rubbing(pin) > SHOWN:
                 out.append((f"rubbing at {pin[0]}", b.rubbing(pin)))
-    if sol.scene.loads and b.torque(sol.scene) > SHOWN:
+    if sol.scene.loads and sol.scene.input.second is None and b.torque(sol.scene) > SHOWN:
         out.append(("input torque", b.torque(sol.scene)))
     return sorted(out, key=lambda t: -t[1])

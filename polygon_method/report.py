@@ -47,6 +47,15 @@ def solution_text(sol: Solution) -> str:
                  + ("" if "rad/s" in inp.speed_text and inp.given is None
                     else f" ({'from ' if inp.given else ''}{stated(inp)})")
                  + (f", {fmt_angular(inp.alpha, 'rad/s^2')}" if inp.alpha else ""))
+    two = inp.second
+    if two is not None:
+        lines.append(f"second input: crank {two.crank} at {math.degrees(two.angle):g} deg, "
+                     f"{fmt_angular(two.omega, 'rad/s')}"
+                     + (f", {fmt_angular(two.alpha, 'rad/s^2')}" if two.alpha else "")
+                     + " (two degrees of freedom)")
+        if sc.loads:
+            lines.append("no input torque: with two inputs one power balance does not give "
+                         "the two driving torques")
     lines.append("")
     lines.append(f"{'point':<6} {'position (' + sc.units + ')':<24} {'velocity (m/s)':<24} "
                  f"{'acceleration (m/s^2)':<24}")

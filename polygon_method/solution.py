@@ -170,11 +170,15 @@ class Solution(Motion):
                 if len(r.bodies) > 2:
                     entry["pairs"] = dict(r.pairs)
                 d["pins"][name] = entry
-        if sc.loads:
+        if sc.loads and inp_second_free(sc):
             d["input_torque"] = self.input_torque
         inp = sc.input
         d["input"] = {"crank": inp.crank, "angle": inp.angle, "omega": inp.omega,
                       "alpha": inp.alpha}
+        if inp.second is not None:
+            two = inp.second
+            d["input"]["second"] = {"crank": two.crank, "angle": two.angle,
+                                    "omega": two.omega, "alpha": two.alpha}
         res = self.plan.given
         if res is not None:
             g = inp.given
@@ -254,6 +258,11 @@ def solve(scene: Scene) -> Solution:
 
 
 _new = object.__new__
+
+
+def inp_second_free(sc) -> bool:
+    """One input: the power balance gives its torque (two inputs: not one torque each)."""
+    return sc.input.second is None
 
 
 def tidied(sol: Solution) -> Solution:

@@ -35,6 +35,7 @@ from __future__ import annotations
 import math
 import re
 import textwrap
+from dataclasses import replace
 
 from .derived import transmission_angle
 from .given import working
@@ -42,6 +43,7 @@ from .numbers import fixed as _fixed, fmt, sense_word
 from .constructions import acceleration_constructions, velocity_constructions
 from .scales import DRAWING_PRECISION_CM, diagram_scales, extent
 from .scene import FixedPath, GuideSlider, split_name
+from .kinematics import evaluate
 from .solution import Solution, tidied
 
 __all__ = ["steps_text", "steps_blocks", "read_off", "fmt", "sense_word"]
@@ -236,7 +238,7 @@ def _position_words(sol, st, space) -> str:
 def _input(doc, sol):
     sc = sol.scene
     inp = sc.input
-    doc.h(f"2. Input link {inp.crank}")
+    doc.h(f"2. Input link {inp.crank}" + (f" and {inp.second.crank}" if inp.second else ""))
     working, _ = _speed_working(sol)
     r = sc.link(inp.crank).length
     v = sol.speed(inp.tip)
@@ -250,7 +252,50 @@ def _input(doc, sol):
                         else f"(found from {inp.given.rate_key}, above)"))
     else:
         items.append(f"alpha_{inp.crank} = 0 (the crank turns at a uniform speed)")
+    two = inp.second
+    if two is not None:
+        r2 = sc.link(two.crank).length
+        items.append(f"the second input, {two.crank}: omega_{two.crank} = "
+                     f"{fmt(abs(two.omega))} rad/s {sense_word(two.omega)} (given); v_{two.tip} "
+                     f"= {fmt(abs(two.omega))} x {fmt(r2, 5)} = {fmt(sol.speed(two.tip))} m/s, "
+                     f"perpendicular to {two.crank}; alpha_{two.crank} = "
+                     f"{fmt(abs(two.alpha))} rad/s^2 {sense_word(two.alpha)}")
     doc.items(items)
+    if two is not None:
+        _superposition(doc, sol)
+
+
+def _superposition(doc, sol):
+    """Two inputs: the velocity polygon as the sum of the polygons for each input alone
+    (the velocities are linear in the two speeds), as a book draws it."""
+    sc = sol.scene
+    inp, two = sc.input, sc.input.second
+    plan = sol.plan
+    k = next(i for i, st in enumerate(plan.steps) if st.kind == "second crank")
+    held = tuple(prm if i != k else prm[:2] + (0.0, 0.0) + prm[4:]
+                 for i, prm in enumerate(plan.dims.steps))
+    first = evaluate(plan, omega=inp.omega, alpha=0.0, upto=1,
+                     dims=replace(plan.dims, steps=held))
+    second = evaluate(plan, omega=0.0, alpha=0.0, upto=1)
+    doc.p(f"Two inputs (two degrees of freedom): the velocities are linear in the two speeds, "
+          f"so the velocity polygon is drawn for {inp.crank} alone ({two.crank} held), then "
+          f"for {two.crank} alone ({inp.crank} held), and the two are added, image by image: "
+          f"v = v' + v''.")
+    rows = []
+    for p in sc.point_names:
+        if p in sc.ground:
+            continue
+        a, b = first.V[p], second.V[p]
+        rows.append((p, _polar(a), _polar(b), _polar((a[0] + b[0], a[1] + b[1]))))
+    doc.table(("point", f"v' ({inp.crank} alone)", f"v'' ({two.crank} alone)",
+               "v = v' + v''"), rows)
+
+
+def _polar(v) -> str:
+    m = math.hypot(*v)
+    if m <= 1e-12 * (1 + abs(v[0]) + abs(v[1])):
+        return "0"
+    return f"{fmt(m)} m/s at {fmt(math.degrees(math.atan2(v[1], v[0])) % 360, 4)} deg"
 
 
 def _vector_name(v) -> str:

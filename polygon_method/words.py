@@ -79,6 +79,13 @@ def given(sc) -> list:
         words += (f", with an angular acceleration of {fmt(abs(inp.alpha))} rad/s² "
                   f"{sense(inp.alpha)}")
     out.append(words + ".")
+    two = inp.second
+    if two is not None:
+        out.append(f"A second crank {two.crank} is driven too, about {two.pivot}: at the "
+                   f"instant shown it makes {fmt(math.degrees(two.angle) % 360)}° with the x "
+                   f"axis, turning at {two.speed_text}"
+                   + (f", with an angular acceleration of {fmt(abs(two.alpha))} rad/s² "
+                      f"{sense(two.alpha)}" if two.alpha else "") + ".")
     for pin in sc.pins:
         size = pin.radius * (2 if pin.given == "diameter" else 1)
         out.append(f"Pin at {pin.point}: {pin.given} {_len(sc, size)}.")

@@ -102,10 +102,19 @@ def _equations(scene):
     for lk in scene.links:
         if lk.key == inp.crank or (lk.p in ground and lk.q in ground) or lk.key in wheels:
             continue
+        two = getattr(inp, "second", None)
+        if two is not None and lk.key == scene.link(two.crank).key:
+            continue
         eqs.append(("link", (lk.p, lk.q, mpf(lk.length))))
     crank = scene.link(inp.crank)
     eqs.append(("crank", (inp.pivot, inp.tip, mpf(crank.length), 0)))
     eqs.append(("crank", (inp.pivot, inp.tip, mpf(crank.length), 1)))
+    two = getattr(inp, "second", None)
+    if two is not None:  # a second driven crank, at its own angle, speed and acceleration
+        r2 = mpf(scene.link(two.crank).length)
+        for c in (0, 1):
+            eqs.append(("crank2", (two.pivot, two.tip, r2, c, mpf(two.angle), mpf(two.omega),
+                                   mpf(two.alpha))))
     for cp in scene.points:
         lk = scene.link(cp.link)
         for comp in (0, 1):
@@ -160,8 +169,10 @@ def _eval(kind, d, P, th):
         p, q, L = d
         r = _sub(P[p], P[q])
         return _dot(r, r) - L * L, [(p, 2 * r[0], 2 * r[1]), (q, -2 * r[0], -2 * r[1])]
-    if kind == "crank":
-        o, tip, r, c = d
+    if kind in ("crank", "crank2"):
+        o, tip, r, c = d[:4]
+        if kind == "crank2":
+            th = d[4]
         trig = mpmath.cos(th) if c == 0 else mpmath.sin(th)
         val = P[tip][c] - P[o][c] - r * trig
         g = (1, 0) if c == 0 else (0, 1)
@@ -297,6 +308,9 @@ def reference_solution(scene, guess_positions):
         if kind == "crank":
             o, tip, _, c = d
             ft[i] = -w * _perp(_sub(P[tip], P[o]))[c]
+        elif kind == "crank2":
+            o, tip, _, c, _, w2, _ = d
+            ft[i] = -w2 * _perp(_sub(P[tip], P[o]))[c]
         elif kind == "rack":
             ft[i] = -d[3] * rates[d[4]] * w
         elif kind == "rim" and d[4][0] == "circle":
@@ -316,6 +330,10 @@ def reference_solution(scene, guess_positions):
             o, tip, _, c = d
             r = _sub(P[tip], P[o])
             gamma[i] = -(al * _perp(r)[c] - w * w * r[c])
+        elif kind == "crank2":
+            o, tip, _, c, _, w2, al2 = d
+            r = _sub(P[tip], P[o])
+            gamma[i] = -(al2 * _perp(r)[c] - w2 * w2 * r[c])
         elif kind == "guide":
             x, g1, g2 = d
             gamma[i] = 2 * _cross(_sub(V[x], V[g1]), _sub(V[g2], V[g1]))

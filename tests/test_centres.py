@@ -87,7 +87,12 @@ def agree(sol, tol=1e-9):
     return ic
 
 
-@pytest.mark.parametrize("path", WORKED, ids=[Path(p).stem for p in WORKED])
+# a mechanism of two degrees of freedom has centres Kennedy's theorem does not reach (they
+# depend on the ratio of the input speeds): not generated here (tests/test_two_inputs.py)
+ONE_INPUT = [p for p in WORKED if "[input.second]" not in Path(p).read_text(encoding="utf-8")]
+
+
+@pytest.mark.parametrize("path", ONE_INPUT, ids=[Path(p).stem for p in ONE_INPUT])
 def test_worked_problems_agree_with_the_polygon(path):
     agree(solve(load_scene(path)))
 

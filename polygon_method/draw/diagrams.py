@@ -61,6 +61,9 @@ def _drive(sol) -> str:
                 else f"{fmt_angular(inp.omega, 'rad/s')} (from {stated(inp)})"))
     if inp.alpha:
         drive += f", {fmt_angular(inp.alpha, 'rad/s²')}"
+    if inp.second is not None:
+        two = inp.second
+        drive += f"; {two.crank} at {_deg(two.angle)}, {two.speed_text}"
     return drive
 
 

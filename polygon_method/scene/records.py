@@ -193,6 +193,8 @@ class Input:
     alpha: float | None  # rad/s^2, ccw positive
     speed_text: str
     given: GivenRate | None = None
+    #: a second driving crank (two degrees of freedom): an Input of its own, or None
+    second: "Input | None" = None
     #: an angle the scene gave in a book's words: (words, the angle they gave (rad), the
     #: slips a reader of them might make (:class:`~.angles.Slip`), the note saying how
     #: they were read); empty for a plain angle

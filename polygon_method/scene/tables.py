@@ -317,6 +317,10 @@ class _Tables:
             raise SceneError("missing [input] table: which link is the crank, its angle and "
                              "speed", file=self.file, key="[input]")
         spec = self.table("input")
+        second = None
+        if "second" in spec:  # a second driving crank: two degrees of freedom
+            second = self.second_input(spec["second"], ground)
+            spec = {k: v for k, v in spec.items() if k != "second"}
         rates = {k: _given_key(k) for k in spec if k not in INPUT_KEYS}
         for k, parsed in rates.items():
             if parsed is None:
@@ -374,6 +378,10 @@ class _Tables:
         else:
             alpha = self.qty(acc, "angular_acceleration", "input", "acceleration",
                              need_sense=True).value
+        if given_keys and second is not None:
+            raise self.error(f"{given_keys[0]} with two inputs: give each crank's speed (a "
+                             "motion given elsewhere sets one input only)", "input",
+                             given_keys[0])
         if given_keys:
             given = self.given_rate(given_keys[0], rate_keys, spec, index)
             if given.rate is not None and "acceleration" in spec:
@@ -387,8 +395,46 @@ class _Tables:
                              "input", rate_keys[0])
         if speed.value == 0:
             raise self.error("the crank speed is zero: nothing moves", "input", "speed")
+        self.two_inputs = second is not None
+        if second is not None and second.crank == link.key:
+            raise self.error(f"the second input is the crank {link.key} again: name another "
+                             "link pivoted on the ground", "input.second", "crank")
         return Input(link.key, pivot, tip, angle, speed.value, alpha, str(spec["speed"]),
-                     said=said)
+                     said=said, second=second)
+
+    def second_input(self, spec, ground):
+        """``[input.second]``: a second driving crank, with its crank, angle, speed and
+        (optional) acceleration, read as the first's."""
+        if not isinstance(spec, dict):
+            raise self.error("the second input is a table: [input.second] with crank, "
+                             "angle, speed", "input", "second")
+        for k in spec:
+            if k not in INPUT_KEYS:
+                raise self.error(f"unknown key{_suggest(k, INPUT_KEYS)}; the second input "
+                                 "takes crank, angle, speed, acceleration", "input.second", k)
+        for k in ("crank", "angle", "speed"):
+            if k not in spec:
+                raise self.error(f"[input.second] has no {k}", "input.second")
+        link, pts = self.find_link(spec["crank"], "input.second", "crank")
+        on_ground = [p for p in pts if p in ground]
+        if len(on_ground) != 1:
+            raise self.error(f"the second crank {link.key} must turn about one ground point",
+                             "input.second", "crank")
+        pivot = on_ground[0]
+        angle = self.qty(spec["angle"], "angle", "input.second", "angle",
+                         default_unit="deg").value
+        speed = self.qty(spec["speed"], "angular_velocity", "input.second", "speed",
+                         need_sense=True)
+        if speed.value == 0:
+            raise self.error("the second crank's speed is zero: give it, or make it part of "
+                             "the frame", "input.second", "speed")
+        acc = spec.get("acceleration", 0)
+        alpha = 0.0 if (isinstance(acc, (int, float)) and not isinstance(acc, bool)
+                        and acc == 0) else self.qty(acc, "angular_acceleration",
+                                                    "input.second", "acceleration",
+                                                    need_sense=True).value
+        return Input(link.key, pivot, link.other(pivot), angle, speed.value, alpha,
+                     str(spec["speed"]))
 
     def given_rate(self, key, rate_keys, spec, index) -> GivenRate:
         """``omega_BC = "3 rad/s cw"``, ``vs_B = "1.5 m/s up"``, ``v_B = "3 m/s down"`` in
@@ -604,6 +650,9 @@ class _Tables:
         if key == "torque":
             if not loads:
                 raise self.error("a torque answer needs [loads] to balance", "answers", key)
+            if getattr(self, "two_inputs", False):
+                raise self.error("with two inputs one power balance does not give the two "
+                                 "driving torques: no torque answer", "answers", key)
             q = self.qty(value, "torque", "answers", key, default_unit="N m", allow_sense=True)
             return Answer(key, "torque", (), q.value, q.sense, printable(str(value)), line)
         prefix, _, rest = key.partition("_")

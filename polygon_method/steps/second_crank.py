@@ -1,0 +1,177 @@
+"""A second driving crank (two degrees of freedom: a five-bar with two driven cranks, a
+link hung from two driven cranks). Its tip from its fixed pivot, its own angle, speed and
+acceleration (``[input.second]``); everything else in the plan follows from both cranks.
+
+Position: ``T = O + r (cos theta2, sin theta2)``; over a sweep of the first crank the second
+turns with it at the ratio of their speeds, ``theta2 = theta2_0 + (omega2 / omega1)(theta -
+theta_0)`` (both cranks driven at their stated speeds). Velocity and acceleration are the
+first crank's relations (:mod:`.crank`): ``v_T = omega2 perp(r)``, ``a_T = -omega2^2 r +
+alpha2 perp(r)``. The velocities of the mechanism are linear in the two speeds: the
+polygon for both is the sum of the polygons for each alone (superposition), which the
+step table shows.
+
+>>> from polygon_method.steps.crank import velocity
+>>> velocity(0.0, 0.1, 5.0)     # the second crank's tip, straight up, 5 rad/s ccw
+(-0.5, 0.0)
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from .base import Construction, Step, Vector, absolute, centripetal, image_label, pole_text, sub
+from .crank import acceleration, velocity
+
+__all__ = ["SecondCrank"]
+
+
+@dataclass(frozen=True)
+class SecondCrank(Step):
+    """A second driven crank: tip = pivot + r (cos theta2, sin theta2), theta2 following the
+    first crank at the ratio of their speeds; v = omega2 perp(r); a = -omega2^2 r +
+    alpha2 perp(r)."""
+
+    link: str
+    pivot: str
+    tip: str
+    length: float
+    angle: float
+    omega: float
+    alpha: float
+    angle1: float  # the first crank's angle at the scene's instant
+    omega1: float  # the first crank's speed (the ratio over a sweep)
+
+    kind = "second crank"
+
+    @property
+    def finds(self):
+        return (self.tip,)
+
+    @property
+    def links(self):
+        return (self.link,)
+
+    @property
+    def needs(self):
+        return (self.pivot,)
+
+    @property
+    def title(self):
+        return f"second crank {self.link}"
+
+    @property
+    def params(self):
+        return (self.length, self.angle, self.omega, self.alpha, self.angle1, self.omega1)
+
+    def dimensions(self, scene, bodies):
+        two, one = scene.input.second, scene.input
+        return (scene.link(self.link).length, two.angle, two.omega, two.alpha, one.angle,
+                one.omega)
+
+    def drawn(self, prm, pencil, P):
+        return (prm[0] + pencil(),) + tuple(prm[1:])
+
+    def reach(self):
+        return max(self.length, 1e-9)
+
+    def place(self, P, prm, ctx, sigma=None):
+        ox, oy = P[self.pivot]
+        th = _theta2(ctx, prm)
+        return ox + prm[0] * ctx.cos(th), oy + prm[0] * ctx.sin(th), 1.0
+
+    def bind(self, prm):
+        O, T, link, i = self.pivot, self.tip, self.link, self.index
+        r, w2, a2 = prm[0], prm[2], prm[3]
+
+        def position(m):
+            ctx = m.ctx
+            ox, oy = m.P[O]
+            th = _theta2(ctx, prm)
+            m.P[T] = (ox + r * ctx.cos(th), oy + r * ctx.sin(th))
+            m.cond[i] = 1.0
+
+        def velocity_(m):
+            (ox, oy), (tx, ty), (vox, voy) = m.P[O], m.P[T], m.V[O]
+            vx, vy = velocity(tx - ox, ty - oy, w2)
+            m.W[link] = w2
+            m.V[T] = (vox + vx, voy + vy)
+
+        def acceleration_(m):
+            (ox, oy), (tx, ty), (aox, aoy) = m.P[O], m.P[T], m.A[O]
+            ax, ay = acceleration(tx - ox, ty - oy, w2, a2)
+            m.Al[link] = a2
+            m.A[T] = (aox + ax, aoy + ay)
+
+        return position, velocity_, acceleration_
+
+    rounding = 8.0
+
+    def error_bound(self, walk, k, p_in, v_in, a_in):
+        """As the first crank's: its tip relative to its own motion."""
+        from .rounding import EPS, vhypot, vmax
+        P, sizes = walk.P, walk.sizes
+        (ox, oy), (tx, ty) = P[self.pivot], P[self.tip]
+        r = vhypot(tx - ox, ty - oy)
+        p = self.rounding * EPS * (vhypot(ox, oy) + r) / sizes["position"]
+        gain = self.rounding * EPS * vmax((vhypot(ox, oy) + vhypot(tx, ty)) / r, 1.0)
+        v = gain * abs(self.omega) * r / sizes["velocity"]
+        a = gain * (self.omega ** 2 + abs(self.alpha)) * r / sizes["acceleration"]
+        return p, v, a, v, a
+
+    # ----- words
+    def singular_why(self, c) -> str:
+        return f"the second crank {self.link} is never singular (condition {c:.2g})"
+
+    def warning(self, c) -> str:
+        return f"{self.label}: condition {c:.3g}"
+
+    def limit_why(self) -> str:
+        return "the linkage cannot be assembled beyond it"
+
+    def condition_column(self):
+        return None
+
+    def transmission(self):
+        return None
+
+    def bodies(self):
+        return (self.link,)
+
+    def orient(self):
+        return {self.link: (self.tip, self.pivot)}
+
+    def position_words(self, L, which, angle_deg):
+        return (f"{self.pivot}{self.tip}: from {self.pivot} draw {self.pivot}{self.tip} = "
+                f"{L(self.length)} at {math.degrees(self.angle):.5g} deg (the second input)")
+
+    def construction(self, sol, ph):
+        O, T = self.pivot, self.tip
+        cond = sol.conditions.get(self.index, 1.0)
+        lab = lambda p: image_label(sol, p, ph)  # noqa: E731
+        if ph == "velocity":
+            v = absolute(sol, T, sol.V, ph)
+            text = (f"the second input: from {pole_text(sol, O, ph)} draw {lab(O)}{lab(T)} "
+                    f"perpendicular to {O}{T}, = omega x {O}{T} = {abs(self.omega):.4g} x "
+                    f"{self.length:.4g} = {v.magnitude:.4g} m/s")
+            return Construction(self.index, self.title, ph, lab(T), sol.V[T], (), (), (v,),
+                                text, cond)
+        A = sol.A
+        cen = centripetal(sol, T, O, self.link, ph)
+        r = sub(sol.P[T], sol.P[O])
+        tan = Vector(cen.end, A[T], f"{lab(T)}t", "tangential", f"tangential of {T}{O}",
+                     f"alpha x {O}{T} = {abs(self.alpha) * math.hypot(*r):.4g} m/s^2, "
+                     f"perpendicular to {O}{T}")
+        text = (f"the second input: from {pole_text(sol, O, ph)} draw the centripetal "
+                f"component {cen.text}" + (f"; add the tangential component {tan.text}"
+                                           if self.alpha else "") + f"; its end is {lab(T)}")
+        found = (cen, tan, absolute(sol, T, A, ph)) if self.alpha else \
+            (cen, absolute(sol, T, A, ph))
+        return Construction(self.index, self.title, ph, lab(T), A[T], (cen,), (), found, text,
+                            cond)
+
+
+def _theta2(ctx, prm):
+    """The second crank's angle: its own at the first crank's stated angle, turning with
+    the first at the ratio of their speeds."""
+    return prm[1] + (prm[2] / prm[5]) * (ctx.theta - prm[4])
