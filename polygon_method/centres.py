@@ -195,11 +195,11 @@ def _primary(sol, names):
                 if key not in found:
                     found[key] = Centre(*key, tuple(sol.P[p]), None, f"the pin at {p}")
     for s in sc.sliders:
-        blk = num(f"block {s.point}")
+        blk = num(f"block {s.key}")  # a peg in two slots: a block in each
         if isinstance(s, FixedPath):
             d = _unit(-s.u[1], s.u[0])
             key = (1, blk)
-            how = (f"block {s.point} slides on the {s.label} path: at infinity, "
+            how = (f"block {s.key} slides on the {s.label} path: at infinity, "
                    "perpendicular to the path")
         elif isinstance(s, GuideSlider):
             (x1, y1), (x2, y2) = sol.P[s.first], sol.P[s.second]
@@ -207,7 +207,7 @@ def _primary(sol, names):
             d = (-uy, ux)
             g = num(sc.link(s.guide).key)
             key = (min(g, blk), max(g, blk))
-            how = (f"block {s.point} slides along {s.guide}: at infinity, perpendicular "
+            how = (f"block {s.key} slides along {s.guide}: at infinity, perpendicular "
                    f"to {s.guide}")
         else:  # pragma: no cover
             continue

@@ -343,9 +343,9 @@ def _bodies_at(sc, point) -> tuple:
     cp = sc.carried(point)
     if cp is not None:
         out.append((cp.link, cp.link))
-    sl = sc.slider(point)
-    if isinstance(sl, FixedPath):
-        out.append((f"block {point}", None))
-    elif isinstance(sl, GuideSlider):
-        out.append((f"block {point}", sc.link(sl.guide).key))
+    for sl in sc.slots(point):  # a block; a peg in two slots has a block in each
+        if isinstance(sl, FixedPath):
+            out.append((f"block {sl.key}", None))
+        elif isinstance(sl, GuideSlider):
+            out.append((f"block {sl.key}", sc.link(sl.guide).key))
     return tuple(out)

@@ -10,6 +10,8 @@ the coordinates ``q`` (x, y of every non-ground point):
 * a carried point X on link PQ:  ``X - (P + lam (Q - P) + mu perp(Q - P)) = 0``
 * a slider X on a fixed path:  ``cross(X - through, u) = 0``
 * a block X sliding along moving link G1 G2:  ``cross(X - G1, G2 - G1) = 0``
+* a peg in two slots: one of the two above for each slot (two equations for its point);
+  its sliding quantities are keyed by slot (``P_OA``, ``P_ground``)
 
 Positions: Newton-Raphson from the solver's float positions.  Every constraint is at most
 quadratic in ``q``, so along a motion ``f'' = J q'' + gamma`` with a closed-form ``gamma``:
@@ -260,7 +262,7 @@ def reference_solution(scene, guess_positions):
         else:
             u = _unit(_v(sl.u))
             vs, acc, cor = _dot(V[x], u), _dot(A[x], u), ZERO2
-        sliders[x] = {"vs": vs, "as": acc, "coriolis": cor}
+        sliders[getattr(sl, "key", x)] = {"vs": vs, "as": acc, "coriolis": cor}
 
     return {"positions": P, "velocities": V, "accelerations": A, "omega": omega,
             "alpha": alpha, "sliders": sliders, "residual": res}

@@ -30,8 +30,8 @@ def _field(sol, name):
     if name == "ground" or name in sol.plan.fixed_links:
         return (0.0, 0.0), (0.0, 0.0), 0.0
     if name.startswith("block "):
-        p = name.split()[1]
-        sl = sol.scene.slider(p)
+        sl = sol.scene.slider(name.split()[1])  # by its key: a peg has two blocks
+        p = sl.point
         w = 0.0 if isinstance(sl, FixedPath) else sol.W[sol.scene.link(sl.guide).key]
         return sol.P[p], sol.V[p], w
     lk = sol.scene.link(name)

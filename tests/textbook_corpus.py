@@ -60,12 +60,12 @@ def worst_error(scene, sol, ref):
                  for lk in scene.links]
     vs = max(_norm(v) for v in ref["velocities"].values())
     as_ = max(_norm(v) for v in ref["accelerations"].values())
-    for sl in scene.sliders:
-        want, got = ref["sliders"][sl.point], sol.S[sl.point]
-        errs += [(_err(got[0], want["vs"], vs), f"sliding velocity {sl.point}"),
-                 (_err(got[1], want["as"], as_), f"sliding acceleration {sl.point}"),
-                 (_err(tuple(sol.coriolis(sl.point)), want["coriolis"], as_),
-                  f"Coriolis {sl.point}")]
+    for sl in scene.sliders:  # by the slider's key: a peg in two slots has one per slot
+        want, got = ref["sliders"][sl.key], sol.S[sl.key]
+        errs += [(_err(got[0], want["vs"], vs), f"sliding velocity {sl.key}"),
+                 (_err(got[1], want["as"], as_), f"sliding acceleration {sl.key}"),
+                 (_err(tuple(sol.coriolis(sl.key)), want["coriolis"], as_),
+                  f"Coriolis {sl.key}")]
     return max(errs)
 
 

@@ -27,6 +27,15 @@ class _Candidate:
     window: float | None = None  # narrower matching window (absolute), for wide families
 
 
+def _direction(sol, s):
+    """The unit direction of a slider's guide: its fixed path, or its link first to second."""
+    if not isinstance(s, GuideSlider):
+        return s.u
+    (x1, y1), (x2, y2) = sol.P[s.first], sol.P[s.second]
+    n = math.hypot(x2 - x1, y2 - y1)
+    return ((x2 - x1) / n, (y2 - y1) / n)
+
+
 class _Alternatives:
     """Solutions of the same scene with one mistake made (asked of the solver, cached)."""
 
@@ -197,9 +206,12 @@ class _Diagnoser:
             out += self.relative(ans, signed)
         if kind in ("omega", "alpha"):
             out += self.per_length(ans)
+        if kind in ("a", "as"):
+            out += self.coriolis_left_out(kind, names[0])
         if kind == "vs":
-            out.append(_Candidate(sol.speed(names[0]), "absolute_for_relative",
-                                  f"the absolute velocity of {names[0]} given for its "
+            X = sc.slider(names[0]).point  # a peg's slot: vs_P_OA is of the peg P
+            out.append(_Candidate(sol.speed(X), "absolute_for_relative",
+                                  f"the absolute velocity of {X} given for its "
                                   "sliding velocity"))
         if kind == "rub":
             out += self.rubbing(names[0])
@@ -335,6 +347,43 @@ class _Diagnoser:
             theirs.update(self.their_w)
             sets.insert(0, (theirs, frozenset(self.their_w)))
         return sets
+
+    def coriolis_left_out(self, kind, name):
+        """A peg in two slots drawn without the Coriolis component of one moving slot i:
+        the line parallel to slot i is drawn through the end of the point under the peg,
+        not through the end of the Coriolis component. With j the other slot, ``x u_i - y
+        u_j = cor_i`` (a 2x2 solve): the peg's acceleration moves by ``y u_j``, the sliding
+        accelerations by ``x`` (slot i) and ``y`` (slot j)."""
+        sol, sc = self.sol, self.sc
+        sl = sc.slider(name)
+        if sl is None or not sl.slot:
+            return []
+        X = sl.point
+        slots = sc.slots(X)
+        out = []
+        for i, si in enumerate(slots):
+            if not isinstance(si, GuideSlider):
+                continue
+            sj = slots[1 - i]
+            ui, uj = (_direction(sol, s) for s in (si, sj))
+            cx, cy = sol.coriolis(si.key)
+            cross = ui[0] * uj[1] - ui[1] * uj[0]
+            if (cx == 0 and cy == 0) or cross == 0:
+                continue
+            x = (cx * uj[1] - cy * uj[0]) / cross
+            y = (cx * ui[1] - cy * ui[0]) / cross
+            if kind == "a":
+                ax, ay = sol.A[X]
+                value = math.hypot(ax + y * uj[0], ay + y * uj[1])
+            elif name == si.key:
+                value = sol.S[si.key][1] + x
+            else:
+                value = sol.S[sj.key][1] + y
+            out.append(_Candidate(value if kind == "as" else abs(value), "coriolis_omitted",
+                                  f"the Coriolis component in the slot of {si.guide} (2 "
+                                  f"omega_{si.guide} vs_{si.key}) left out of the "
+                                  f"acceleration polygon of the peg {X}"))
+        return out
 
     def rubbing(self, X):
         sol, sc = self.sol, self.sc

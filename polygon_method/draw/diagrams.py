@@ -70,7 +70,8 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
             if not isinstance(sl, FixedPath) and sl.guide == lk.key:
                 (x1, y1), (x2, y2) = P[sl.first], P[sl.second]
                 n = math.hypot(x2 - x1, y2 - y1)
-                X, half = P[sl.point], _block_size(sc, sl.point, P) / 2 + BAR / 2
+                size = _block_size(sc, sl.point, P)
+                X, half = P[sl.point], (_slot_half(size) + SLOT_W if sl.slot else size / 2) + BAR / 2
                 pts += [(X[0] + k * half * (x2 - x1) / n, X[1] + k * half * (y2 - y1) / n)
                         for k in (-1, 1)]
         body = MultiPoint(pts).convex_hull.buffer(BAR / 2, quad_segs=8)
@@ -91,6 +92,16 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
             n = math.hypot(x2 - x1, y2 - y1)
             u = ((x2 - x1) / n, (y2 - y1) / n)
         size = _block_size(sc, sl.point, P)
+        if sl.slot:  # a peg in two slots: the pin in a slot cut along each (no block)
+            from shapely.geometry import LineString
+            h = _slot_half(size)
+            cut = LineString([(X[0] - h * u[0], X[1] - h * u[1]),
+                              (X[0] + h * u[0], X[1] + h * u[1])]).buffer(SLOT_W, quad_segs=8)
+            sk.polygon(list(cut.exterior.coords), gid=f"slot-{sl.key}", face="#ffffff",
+                       edge="#000000", lw=0.8, z=3)
+            solid.append((f"block {sl.key}", cut))
+            sk.hints.append(((X[0] - h * u[0], X[1] - h * u[1]), (X[0] + h * u[0], X[1] + h * u[1])))
+            continue
         sk.polygon(_rect(X, u, size, 0.55 * size), gid=f"block-{sl.point}", face="#ffffff",
                    edge="#000000", lw=0.9, z=3)
         solid.append((f"block {sl.point}", Polygon(_rect(X, u, size, 0.55 * size))))
@@ -150,6 +161,15 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
 def _deg(rad: float) -> str:
     d = math.degrees(rad)
     return f"{d:.4g}\u00b0"
+
+
+#: a slot's half-width (cm): the pin's circle and a little play
+SLOT_W = 1.6 * JOINT_R
+
+
+def _slot_half(size):
+    """Half the length of the slot drawn around a peg (cm), for a block of ``size``."""
+    return 0.8 * size
 
 
 def _block_size(sc, point, P):

@@ -87,6 +87,14 @@ class FixedPath:
     u: tuple[float, float]
     through: tuple[float, float]
     label: str
+    #: for a peg in two slots (see :class:`GuideSlider`): "ground"; else ""
+    slot: str = ""
+
+    @property
+    def key(self) -> str:
+        """The slider's name in the solution and in answer keys: its point (``D``), or for
+        a peg in two slots the point and the slot (``P_ground``)."""
+        return f"{self.point}_{self.slot}" if self.slot else self.point
 
 
 @dataclass(frozen=True)
@@ -97,6 +105,16 @@ class GuideSlider:
     guide: str
     first: str
     second: str
+    #: for a peg in two slots (``P = { along = ["OA", "QB"] }``, or one link and a fixed
+    #: path): the guide's key, so that the two slots of one point have names of their own
+    #: (``P_OA``, ``P_QB``); "" for a block on one guide
+    slot: str = ""
+
+    @property
+    def key(self) -> str:
+        """The slider's name in the solution and in answer keys: its point (``A``), or for
+        a peg in two slots the point and the slot (``P_OA``)."""
+        return f"{self.point}_{self.slot}" if self.slot else self.point
 
 
 @dataclass(frozen=True)
@@ -174,6 +192,9 @@ class Scene:
             seen.update(dict.fromkeys(link.points))
         for cp in self.points:
             seen[cp.name] = None
+        for sl in self.sliders:  # a peg in two slots need be no joint of a link
+            if getattr(sl, "slot", ""):
+                seen[sl.point] = None
         object.__setattr__(self, "_names", tuple(seen))
         try:
             key = (self.units, tuple(self.ground.items()), self.links, self.points,
@@ -234,7 +255,13 @@ class Scene:
         return next((c for c in self.points if c.name == name), None)
 
     def slider(self, name: str):
-        return next((s for s in self.sliders if s.point == name), None)
+        """The slider named ``name``: a block's point (``D``), or one slot of a peg in two
+        slots (``P_OA``; the point alone gives its first slot)."""
+        return next((s for s in self.sliders if s.point == name or s.key == name), None)
+
+    def slots(self, point: str) -> tuple:
+        """Every slider record at ``point``: one for a block, two for a peg in two slots."""
+        return tuple(s for s in self.sliders if s.point == point)
 
     @property
     def length_unit(self) -> float:

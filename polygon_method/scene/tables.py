@@ -140,10 +140,14 @@ class _Tables:
             for k in spec:
                 if k not in allowed:
                     raise self.error(f"unknown key '{k}'{_suggest(k, allowed)}", "sliders", name)
+            if "along" in spec and (isinstance(spec["along"], list) or "path" in spec):
+                out.extend(self.peg(name, spec, ground, carried))
+                continue
             if "along" in spec:
-                if "path" in spec or "through" in spec:
+                if "through" in spec:
                     raise self.error("a block slides either on a fixed path or along a link, "
-                                     "not both", "sliders", name)
+                                     "not both (a peg in a fixed slot and in the slot of a "
+                                     "link: along = \"OA\" with path = ...)", "sliders", name)
                 guide = spec["along"]
                 if len(split_name(guide)) == 2 and not self.index.get(frozenset(
                         split_name(guide))) and any(p in self.ground
@@ -167,36 +171,83 @@ class _Tables:
             if name in carried:
                 raise self.error(f"{name} is carried on a link and also slides on a fixed "
                                  "path: one constraint too many", "sliders", name)
-            if "path" not in spec:
-                raise self.error("the slider's path has no direction: add path = "
-                                 "\"horizontal\", \"vertical\" or an angle such as \"30 deg\"",
+            out.append(self.fixed_path(name, spec, ground))
+        return out
+
+    def fixed_path(self, name, spec, ground, slot=""):
+        """The fixed path of ``spec`` (its path and through) for the slider at ``name``."""
+        if "path" not in spec:
+            raise self.error("the slider's path has no direction: add path = "
+                             "\"horizontal\", \"vertical\" or an angle such as \"30 deg\"",
+                             "sliders", name)
+        path = spec["path"]
+        if isinstance(path, str) and not re.match(r"^\s*[-+.\d]", path) \
+                and path not in ("horizontal", "vertical"):
+            raise self.error(f"path = {path!r}: use \"horizontal\", \"vertical\" or an "
+                             "angle such as \"30 deg\"" + _suggest(path, ("horizontal",
+                                                                        "vertical")),
+                             "sliders", name)
+        if path == "horizontal":
+            ang, label = 0.0, "horizontal"
+        elif path == "vertical":
+            ang, label = math.pi / 2, "vertical"
+        else:
+            ang = self.qty(path, "angle", "sliders", name, default_unit="deg").value
+            label = f"at {math.degrees(ang):g} deg"
+        through = spec.get("through")
+        if through is None:
+            through = ("input pivot", None)
+        elif isinstance(through, str):
+            if through not in ground:
+                raise self.error(f"through = {through!r} is not a ground point"
+                                 f"{_suggest(through, ground)}", "sliders", name)
+            through = ground[through]
+        else:
+            through = self.coords(through, "sliders", name)
+        u = _unit_at(ang)
+        return FixedPath(name, u, through, label, slot)
+
+    def peg(self, name, spec, ground, carried):
+        """A peg in two slots: ``along = ["OA", "QB"]`` (two slotted links) or ``along =
+        "OA"`` with ``path`` (and ``through``): the slot of a link and a fixed slot. Two
+        records, one per slot, named ``P_OA`` and ``P_QB`` or ``P_ground``."""
+        along = spec["along"]
+        guides = along if isinstance(along, list) else [along]
+        fixed = "path" in spec
+        if len(guides) + fixed != 2 or not guides:
+            raise self.error("a peg sits in two slots: along = [\"OA\", \"QB\"] (two "
+                             "slotted links), or along = \"OA\" with path = ... (a link's "
+                             f"slot and a fixed one); got {len(guides) + fixed}", "sliders",
+                             name)
+        if name in ground:
+            raise self.error(f"{name} is a ground point; a peg in two slots moves along "
+                             "them", "sliders", name)
+        if name in carried:
+            raise self.error(f"{name} is carried on a link and also sits in two slots: two "
+                             "constraints too many", "sliders", name)
+        out, seen = [], []
+        for guide in guides:
+            if not isinstance(guide, str):
+                raise self.error(f"along = {guide!r}: a slot is named by its link, e.g. "
+                                 "\"OA\"", "sliders", name)
+            link, pts = self.find_link(guide, "sliders", name)
+            if name in link.points:
+                raise self.error(f"{name} is an end of {link.key}; a peg slides in the slot "
+                                 "of a link between its ends", "sliders", name)
+            if all(p in ground for p in pts):
+                raise self.error(f"{link.key} is fixed (both ends are ground points): use "
+                                 "path/through for a fixed slot", "sliders", name)
+            if link.key in seen:
+                raise self.error(f"a pin in two parallel slots: both are the slot of "
+                                 f"{link.key}, so the peg can be anywhere along it",
                                  "sliders", name)
-            path = spec["path"]
-            if isinstance(path, str) and not re.match(r"^\s*[-+.\d]", path) \
-                    and path not in ("horizontal", "vertical"):
-                raise self.error(f"path = {path!r}: use \"horizontal\", \"vertical\" or an "
-                                 "angle such as \"30 deg\"" + _suggest(path, ("horizontal",
-                                                                            "vertical")),
-                                 "sliders", name)
-            if path == "horizontal":
-                ang, label = 0.0, "horizontal"
-            elif path == "vertical":
-                ang, label = math.pi / 2, "vertical"
-            else:
-                ang = self.qty(path, "angle", "sliders", name, default_unit="deg").value
-                label = f"at {math.degrees(ang):g} deg"
-            through = spec.get("through")
-            if through is None:
-                through = ("input pivot", None)
-            elif isinstance(through, str):
-                if through not in ground:
-                    raise self.error(f"through = {through!r} is not a ground point"
-                                     f"{_suggest(through, ground)}", "sliders", name)
-                through = ground[through]
-            else:
-                through = self.coords(through, "sliders", name)
-            u = _unit_at(ang)
-            out.append(FixedPath(name, u, through, label))
+            seen.append(link.key)
+            out.append(GuideSlider(name, link.key, pts[0], pts[1], link.key))
+        if fixed:
+            out.append(self.fixed_path(name, spec, ground, "ground"))
+        elif "through" in spec:
+            raise self.error("through goes with path (a fixed slot); a peg in two slotted "
+                             "links has none", "sliders", name)
         return out
 
     def input(self, index, ground):
@@ -313,7 +364,7 @@ class _Tables:
         spec = self.table("answers")
         tolerance = None
         out = []
-        slider_names = {s.point for s in sliders}
+        slider_names = {s.key: s for s in sliders}
         pin_names = {p.point for p in pins}
         for key, value in spec.items():
             if key == "tolerance":
@@ -369,7 +420,7 @@ class _Tables:
                              "a_X, v_XY, a_XY, omega_L, alpha_L, vs_X, as_X, ac_X, rub_X, "
                              "torque, I_ij (a centre)", "answers", key)
         kind, what, sense_ok = ANSWER_KINDS[prefix]
-        names = split_name(rest)
+        names = (rest,) if what == "slider" and rest in slider_names else split_name(rest)
         if not names:
             raise self.error(f"'{rest}' is not a point or link name", "answers", key)
         if what == "point":
@@ -386,6 +437,11 @@ class _Tables:
                                  "answers", key)
         elif what == "slider":
             if len(names) != 1 or names[0] not in slider_names:
+                slots = [k for k, s in slider_names.items() if s.point == rest]
+                if slots:  # a peg in two slots: which one?
+                    raise self.error(f"{rest} sits in two slots: name the slot, "
+                                     + " or ".join(f"{prefix}_{k}" for k in slots),
+                                     "answers", key)
                 raise self.error(f"no slider {rest} in [sliders]", "answers", key)
         elif what == "pin":
             if len(names) != 1 or names[0] not in pin_names:
