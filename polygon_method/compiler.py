@@ -140,9 +140,12 @@ class _Compiler:
             for p in self.bodies.frame(lk.key):
                 self._bodies_of.setdefault(p, []).append(lk.key)
         self._guided = {}  # link key -> slider points that slide on it
+        self._yokes = {}  # a pin -> the yoke whose slot it slides in
         for s in scene.sliders:
             if isinstance(s, GuideSlider):
                 self._guided.setdefault(scene.link(s.guide).key, []).append(s.point)
+            elif hasattr(s, "yoke"):
+                self._yokes.setdefault(s.point, []).append(s.yoke)
 
     # ----- what the recognisers ask
     @property
@@ -253,6 +256,7 @@ class _Compiler:
         for key in self.bodies_of(name):
             out.update(self.body(key))
             out.update(self._guided.get(key, ()))
+        out.update(self._yokes.get(name, ()))
         return out
 
     def run(self) -> Plan:
@@ -399,7 +403,8 @@ class _Compiler:
                        f"{', '.join(missing)} cannot move")
             else:
                 why = (f"{', '.join(missing)} cannot be found by the construction steps "
-                       "(crank, dyad, slider, slotted link, carried point, peg in two slots): the chain needs "
+                       "(crank, dyad, slider, slotted link, carried point, peg in two slots, "
+                       "yoke): the chain needs "
                        "a construction these steps do not make, or a part is missing")
             loose = [lk.key for lk in sc.links
                      if lk.key not in self.used_links and (lk.p in missing or lk.q in missing)]

@@ -348,4 +348,6 @@ def _bodies_at(sc, point) -> tuple:
             out.append((f"block {sl.key}", None))
         elif isinstance(sl, GuideSlider):
             out.append((f"block {sl.key}", sc.link(sl.guide).key))
+        else:  # in the slot of a translating yoke: the block does not turn
+            out.append((f"block {sl.key}", None))
     return tuple(out)

@@ -142,7 +142,8 @@ class Solution(Motion):
             d["sliders"] = {s.key: {"sliding_velocity": self.S[s.key][0],
                                     "sliding_acceleration": self.S[s.key][1],
                                     "coriolis": list(self.coriolis(s.key)),
-                                      "guide": (s.label if isinstance(s, FixedPath)
+                                      "guide": (s.label if isinstance(s, FixedPath) else
+                                                f"block {s.yoke}" if hasattr(s, "yoke")
                                                 else s.guide)}
                             for s in sc.sliders}
         if sc.pins:

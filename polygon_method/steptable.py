@@ -203,6 +203,8 @@ def _config(doc, sol, space):
         elif isinstance(s, FixedPath):
             facts.append(f"slider {s.point} on a {s.label} path through "
                          f"({fmt(s.through[0] / u, 5)}, {fmt(s.through[1] / u, 5)})")
+        elif hasattr(s, "yoke"):  # the slot of a translating yoke
+            facts.append(f"block {s.point} slides in the {s.label} slot of yoke {s.yoke}")
         else:
             facts.append(f"block {s.point} slides along {s.guide}")
     doc.items(facts)
@@ -335,12 +337,16 @@ def _sliding_items(sol):
     for s in sol.scene.sliders:
         vs = sol.S[s.key][0]
         if vs == 0:  # (noise is 0 here: the solution is tidied)
-            guide = f"the {s.label} path" if isinstance(s, FixedPath) else s.guide
+            guide = (f"the {s.label} path" if isinstance(s, FixedPath) else
+                     f"the slot of yoke {s.yoke}" if hasattr(s, "yoke") else s.guide)
             out.append(f"vs_{s.key} = 0 m/s: {s.point} does not slide along {guide} at "
                        "this instant")
             continue
         if isinstance(s, FixedPath):
             along = f"along the {s.label} path ({'+' if vs >= 0 else '-'} direction)"
+        elif hasattr(s, "yoke"):
+            along = (f"along the {s.label} slot of yoke {s.yoke} ({'+' if vs >= 0 else '-'} "
+                     "direction), relative to the yoke")
         else:
             along = (f"along {s.guide}, {'from ' + s.first + ' towards ' + s.second if vs >= 0 else 'from ' + s.second + ' towards ' + s.first}")
         out.append(f"vs_{s.key} = {fmt(abs(vs))} m/s {along}")

@@ -164,7 +164,7 @@ class _Reducer:
                 yield f"s_{s.key}", "m", (x - qx) * ux + (y - qy) * uy, "position on the path"
             yield f"vs_{s.key}", "m/s", vs, "sliding, signed"
             yield f"as_{s.key}", "m/s^2", a_s, "sliding, signed"
-            if not isinstance(s, FixedPath):
+            if hasattr(s, "guide"):  # a moving guide that turns: its Coriolis component
                 yield f"ac_{s.key}", "m/s^2", (cx, cy), "Coriolis"
         if getattr(plan, "pins", ()):
             for pin, r in rubbing_arrays(plan, fr.W, fr.n).items():

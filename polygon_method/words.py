@@ -47,6 +47,10 @@ def given(sc) -> list:
                 out.append(f"A peg {s.point} runs in two slots: "
                            + " and ".join(_slot(sc, t) for t in sc.slots(s.point)) + ".")
             continue
+        if hasattr(s, "yoke"):  # the slot of a translating yoke
+            out.append(f"A block at {s.point} slides in the {s.label} slot of the yoke "
+                       f"{s.yoke}.")
+            continue
         if hasattr(s, "guide"):  # a block on a moving link (a scene record, not a step)
             out.append(f"A block at {s.point} slides along link {s.guide}.")
         else:

@@ -19,7 +19,6 @@ from hypothesis import strategies as st
 from polygon_method import PolygonMethodError, load_scene, solve
 from polygon_method.centres import locate
 from polygon_method.cli import main
-from polygon_method.scene import FixedPath
 
 ROOT = Path(__file__).resolve().parent.parent
 WORKED = sorted(glob.glob(str(ROOT / "worked_problems" / "*.toml")))
@@ -32,8 +31,9 @@ def _field(sol, name):
     if name.startswith("block "):
         sl = sol.scene.slider(name.split()[1])  # by its key: a peg has two blocks
         p = sl.point
-        w = 0.0 if isinstance(sl, FixedPath) else sol.W[sol.scene.link(sl.guide).key]
-        return sol.P[p], sol.V[p], w
+        if not hasattr(sl, "guide"):  # on a fixed path, or in a translating yoke's slot
+            return sol.P[p], sol.V[p], 0.0
+        return sol.P[p], sol.V[p], sol.W[sol.scene.link(sl.guide).key]
     lk = sol.scene.link(name)
     return sol.P[lk.p], sol.V[lk.p], sol.W[lk.key]
 

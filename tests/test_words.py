@@ -36,6 +36,9 @@ def test_every_datum_is_stated(path):
                 assert f"a fixed slot ({s.label}) through ({g(tx / u)}, {g(ty / u)})" in text
             else:
                 assert f"the slot of link {s.guide}" in text
+        elif hasattr(s, "yoke"):  # the slot of a translating yoke
+            assert f"A block at {s.point} slides in the {s.label} slot of the yoke {s.yoke}" \
+                in text
         elif hasattr(s, "through"):
             tx, ty = s.through
             assert f"Slider {s.point} moves on a fixed" in text

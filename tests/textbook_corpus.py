@@ -88,6 +88,8 @@ def guide_direction(scene, P, X):
         return None
     if isinstance(s, FixedPath):
         return s.u
+    if hasattr(s, "yoke"):  # the slot of a translating yoke
+        return s.direction
     (x1, y1), (x2, y2) = P[s.first], P[s.second]
     n = math.hypot(x2 - x1, y2 - y1)
     return ((x2 - x1) / n, (y2 - y1) / n)

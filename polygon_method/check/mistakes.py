@@ -15,6 +15,7 @@ from ..solution import Solution, solve
 from ..steps import under_label
 from ..numbers import textbook as _g
 from ..numbers import working as _num
+from .slots import coriolis_left_out
 from .tolerance import _terms
 
 
@@ -25,15 +26,6 @@ class _Candidate:
     code: str
     text: str
     window: float | None = None  # narrower matching window (absolute), for wide families
-
-
-def _direction(sol, s):
-    """The unit direction of a slider's guide: its fixed path, or its link first to second."""
-    if not isinstance(s, GuideSlider):
-        return s.u
-    (x1, y1), (x2, y2) = sol.P[s.first], sol.P[s.second]
-    n = math.hypot(x2 - x1, y2 - y1)
-    return ((x2 - x1) / n, (y2 - y1) / n)
 
 
 class _Alternatives:
@@ -349,41 +341,9 @@ class _Diagnoser:
         return sets
 
     def coriolis_left_out(self, kind, name):
-        """A peg in two slots drawn without the Coriolis component of one moving slot i:
-        the line parallel to slot i is drawn through the end of the point under the peg,
-        not through the end of the Coriolis component. With j the other slot, ``x u_i - y
-        u_j = cor_i`` (a 2x2 solve): the peg's acceleration moves by ``y u_j``, the sliding
-        accelerations by ``x`` (slot i) and ``y`` (slot j)."""
-        sol, sc = self.sol, self.sc
-        sl = sc.slider(name)
-        if sl is None or not sl.slot:
-            return []
-        X = sl.point
-        slots = sc.slots(X)
-        out = []
-        for i, si in enumerate(slots):
-            if not isinstance(si, GuideSlider):
-                continue
-            sj = slots[1 - i]
-            ui, uj = (_direction(sol, s) for s in (si, sj))
-            cx, cy = sol.coriolis(si.key)
-            cross = ui[0] * uj[1] - ui[1] * uj[0]
-            if (cx == 0 and cy == 0) or cross == 0:
-                continue
-            x = (cx * uj[1] - cy * uj[0]) / cross
-            y = (cx * ui[1] - cy * ui[0]) / cross
-            if kind == "a":
-                ax, ay = sol.A[X]
-                value = math.hypot(ax + y * uj[0], ay + y * uj[1])
-            elif name == si.key:
-                value = sol.S[si.key][1] + x
-            else:
-                value = sol.S[sj.key][1] + y
-            out.append(_Candidate(value if kind == "as" else abs(value), "coriolis_omitted",
-                                  f"the Coriolis component in the slot of {si.guide} (2 "
-                                  f"omega_{si.guide} vs_{si.key}) left out of the "
-                                  f"acceleration polygon of the peg {X}"))
-        return out
+        """A peg in two slots drawn without the Coriolis component of a moving slot."""
+        return [_Candidate(v, code, text) for v, code, text in
+                coriolis_left_out(self.sol, kind, name)]
 
     def rubbing(self, X):
         sol, sc = self.sol, self.sc

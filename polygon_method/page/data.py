@@ -112,6 +112,9 @@ def page_data(fr: Frames) -> dict:
         if hasattr(s, "guide"):
             sliders.append({"point": s.point, "key": s.key, "guide": [s.first, s.second],
                             "link": s.guide})
+        elif hasattr(s, "yoke"):  # a yoke's slot: a line through the pin, moving with it
+            sliders.append({"point": s.point, "key": s.key,
+                            "u": [float(c) for c in s.direction]})
         else:
             sliders.append({"point": s.point, "key": s.key, "u": [float(c) for c in s.u],
                             "through": [float(c) for c in s.through]})

@@ -429,7 +429,8 @@ class _Loader(_Tables, _Variants):
         points = self.carried_points(index, ground)
         sliders = self.sliders(index, ground, {p.name for p in points})
         known = set(ground) | {p for lk in links for p in lk.points} | {p.name for p in points}
-        known |= {s.point for s in sliders if s.slot}  # a peg in two slots
+        known |= {s.point for s in sliders if s.slot}  # a peg in two slots; a yoke
+        known |= {s.yoke for s in sliders if hasattr(s, "yoke")}
         self.known = known
         inp = self.input(index, ground)
         sliders = [replace(s, through=ground[inp.pivot])

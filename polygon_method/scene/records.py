@@ -118,6 +118,24 @@ class GuideSlider:
 
 
 @dataclass(frozen=True)
+class YokeSlot:
+    """A block pinned at ``point`` that slides in the slot of a translating yoke: the yoke
+    is the block at ``yoke`` on a fixed path, its slot the line through it along unit
+    ``direction`` (fixed: the yoke does not turn). The Scotch yoke's crank pin."""
+
+    point: str
+    yoke: str
+    direction: tuple[float, float]
+    label: str  # "vertical", "at 60 deg"
+    slot: str = ""
+
+    @property
+    def key(self) -> str:
+        """The slider's name in the solution and in answer keys: its point."""
+        return self.point
+
+
+@dataclass(frozen=True)
 class Input:
     """The driving crank: link ``crank`` turning about ground point ``pivot``."""
 
@@ -192,9 +210,11 @@ class Scene:
             seen.update(dict.fromkeys(link.points))
         for cp in self.points:
             seen[cp.name] = None
-        for sl in self.sliders:  # a peg in two slots need be no joint of a link
-            if getattr(sl, "slot", ""):
+        for sl in self.sliders:  # a peg in two slots need be no joint of a link, nor a
+            if getattr(sl, "slot", ""):  # yoke (a block on a fixed path with a slot)
                 seen[sl.point] = None
+            elif isinstance(sl, YokeSlot):
+                seen[sl.yoke] = None
         object.__setattr__(self, "_names", tuple(seen))
         try:
             key = (self.units, tuple(self.ground.items()), self.links, self.points,

@@ -10,7 +10,7 @@ import re
 from ..errors import SceneError, printable
 from ..units import UNITS, did_you_mean
 from .records import (ANSWER_KINDS, INPUT_KEYS, Answer, CarriedPoint, FixedPath, GuideSlider,
-                      Input, Load, Pin, split_name)
+                      Input, Load, Pin, YokeSlot, split_name)
 
 
 def _unit_at(ang: float) -> tuple:
@@ -136,10 +136,16 @@ class _Tables:
             if not isinstance(spec, dict):
                 raise self.error("a slider is a table: { path = \"horizontal\", through = "
                                  "[x, y] } or { along = \"CP\" }", "sliders", name)
-            allowed = ("path", "through", "along")
+            allowed = ("path", "through", "along", "direction")
             for k in spec:
                 if k not in allowed:
                     raise self.error(f"unknown key '{k}'{_suggest(k, allowed)}", "sliders", name)
+            if isinstance(spec.get("along"), str) and spec["along"].startswith("block "):
+                out.append(self.yoke_slot(name, spec, ground))
+                continue
+            if "direction" in spec:
+                raise self.error("direction goes with along = \"block Y\" (the slot of a "
+                                 "translating yoke Y)", "sliders", name)
             if "along" in spec and (isinstance(spec["along"], list) or "path" in spec):
                 out.extend(self.peg(name, spec, ground, carried))
                 continue
@@ -172,7 +178,59 @@ class _Tables:
                 raise self.error(f"{name} is carried on a link and also slides on a fixed "
                                  "path: one constraint too many", "sliders", name)
             out.append(self.fixed_path(name, spec, ground))
+        for sl in out:  # a yoke's slot: its yoke is a block on a fixed path, not along it
+            if isinstance(sl, YokeSlot):
+                self.check_yoke(sl, out)
         return out
+
+    def yoke_slot(self, name, spec, ground):
+        """``P = { along = "block Y", direction = "vertical" }``: a block at P in the slot of
+        the yoke Y (a block on a fixed path), the slot through Y along ``direction``."""
+        yoke = spec["along"][len("block "):].strip()
+        if "path" in spec or "through" in spec:
+            raise self.error("a block slides either on a fixed path or in a yoke's slot, not "
+                             "both", "sliders", name)
+        if name in ground:
+            raise self.error(f"{name} is a ground point; it cannot slide in a moving yoke",
+                             "sliders", name)
+        if yoke == name:
+            raise self.error(f"{name} cannot slide in its own slot: the yoke is another "
+                             "block, e.g. along = \"block Y\"", "sliders", name)
+        if "direction" not in spec:
+            raise self.error("the yoke's slot has no direction: add direction = "
+                             "\"vertical\", \"horizontal\" or an angle such as \"60 deg\"",
+                             "sliders", name)
+        ang, label = self.direction(spec["direction"], name)
+        return YokeSlot(name, yoke, _unit_at(ang), label)
+
+    def check_yoke(self, sl, sliders):
+        """The yoke of a slot is a block on a fixed path, its slot across that path."""
+        name, yoke = sl.point, sl.yoke
+        path = next((s for s in sliders if s.point == yoke and not s.slot), None)
+        if not isinstance(path, FixedPath):
+            raise self.error(f"along = \"block {yoke}\": {yoke} must be a block on a fixed "
+                             f"path in [sliders] (the yoke), e.g. {yoke} = {{ path = "
+                             "\"horizontal\" }", "sliders", name)
+        (ux, uy), (dx, dy) = path.u, sl.direction
+        if abs(ux * dy - uy * dx) < 1e-9:
+            raise self.error(f"a pin in two parallel slots: the slot of block {yoke} runs "
+                             f"{sl.label}, along the yoke's own {path.label} path, so "
+                             "nothing moves the yoke", "sliders", name)
+
+    def direction(self, value, name):
+        """(angle in rad, label) of a direction: "horizontal", "vertical" or an angle."""
+        if isinstance(value, str) and not re.match(r"^\s*[-+.\d]", value) \
+                and value not in ("horizontal", "vertical"):
+            raise self.error(f"{value!r}: use \"horizontal\", \"vertical\" or an "
+                             "angle such as \"30 deg\"" + _suggest(value, ("horizontal",
+                                                                          "vertical")),
+                             "sliders", name)
+        if value == "horizontal":
+            return 0.0, "horizontal"
+        if value == "vertical":
+            return math.pi / 2, "vertical"
+        ang = self.qty(value, "angle", "sliders", name, default_unit="deg").value
+        return ang, f"at {math.degrees(ang):g} deg"
 
     def fixed_path(self, name, spec, ground, slot=""):
         """The fixed path of ``spec`` (its path and through) for the slider at ``name``."""

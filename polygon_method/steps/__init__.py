@@ -14,28 +14,33 @@ dyad       RRR: the joint of two links (or plate sides) to two known points
 slotted    RPR: a link that a block slides along (slotted lever, Whitworth, swivel)
 peg        a pin in two slots: where a fixed slot and a slotted link, or two slotted links,
            cross (two sliding pairs, a Coriolis component in each moving slot)
+yoke       a translating slotted yoke on a fixed path, placed by a known pin in its slot
+           (the Scotch yoke)
 =========  ===========================================================================
 
 Adding a kind: write its module (a frozen ``Step`` subclass and a ``recognise(g, name)``
 function) and add it to :data:`TIERS`.
 """
 
-from . import carried, dyad, peg, slider, slotted
+from . import carried, dyad, peg, slider, slotted, yoke
 from .base import (Construction, Context, DirectionLine, State, Step, Vector, image_label,
                    image_name, pole_text)
 from .carried import Carried
 from .crank import Crank
 from .dyad import Dyad
 from .peg import Peg, slot_labels
+from .yoke import Yoke
 from .slider import SliderDyad
 from .slotted import SlottedLink, under_label
 
 #: the recognisers the compiler tries, tier by tier: for each unknown point (in the scene's
 #: order) every kind of the first tier in turn; the next tier only when no point of the
 #: tiers before can be found. The crank is the plan's first step and is not recognised.
-TIERS = ((carried.recognise, slider.recognise, dyad.recognise, peg.recognise),
+TIERS = ((carried.recognise, slider.recognise, dyad.recognise, peg.recognise,
+          yoke.recognise),
          (slotted.recognise,))
 
-__all__ = ["TIERS", "Step", "Context", "State", "Crank", "Dyad", "SliderDyad", "SlottedLink", "Peg",
+__all__ = ["TIERS", "Step", "Context", "State", "Crank", "Dyad", "SliderDyad", "SlottedLink",
+           "Peg", "Yoke",
            "Carried", "Construction", "Vector", "DirectionLine", "image_label", "image_name",
            "pole_text", "under_label", "slot_labels"]
