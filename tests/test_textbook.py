@@ -71,7 +71,9 @@ def _bodies_at_pin(scene, name, omega):
         out["ground"] = 0
     for s in scene.sliders:
         if s.point == name:
-            out["block"] = omega[scene.link(s.guide).key] if isinstance(s, GuideSlider) else 0
+            # (a peg in two slots: a block in each, the one in a moving slot turning with it)
+            out[f"block {s.key}"] = (omega[scene.link(s.guide).key] if isinstance(s, GuideSlider)
+                                     else 0)
     return out
 
 

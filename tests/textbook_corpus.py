@@ -101,6 +101,8 @@ def other_position(scene, P, X):
     free end of a slotted link, through the link's pivot. None for the crank's tip."""
     if X == scene.input.tip:
         return None  # the crank's tip has one position
+    if len(scene.slots(X)) == 2:
+        return None  # a peg in two slots: where they cross, one position
     for s in scene.sliders:  # the free end of a slotted link: on the other side of its pivot
         if isinstance(s, GuideSlider) and s.point != X and X in (s.first, s.second):
             k = P[s.second if X == s.first else s.first]
