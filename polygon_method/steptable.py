@@ -200,6 +200,10 @@ def _config(doc, sol, space):
             facts.append(f"peg {s.point} in the slot of {s.guide}" if isinstance(s, GuideSlider)
                          else f"peg {s.point} in a fixed {s.label} slot through "
                          f"({fmt(s.through[0] / u, 5)}, {fmt(s.through[1] / u, 5)})")
+        elif isinstance(s, FixedPath) and any(getattr(t, "yoke", None) == s.point
+                                              for t in sc.sliders):
+            facts.append(f"yoke {s.point} on a {s.label} path through "
+                         f"({fmt(s.through[0] / u, 5)}, {fmt(s.through[1] / u, 5)})")
         elif isinstance(s, FixedPath):
             facts.append(f"slider {s.point} on a {s.label} path through "
                          f"({fmt(s.through[0] / u, 5)}, {fmt(s.through[1] / u, 5)})")

@@ -36,7 +36,8 @@ from .base import (Construction, DirectionLine, Step, Vector, absolute, add, ima
                    image_name, numbered, pole_text, sub, unit)
 from .rounding import two_lines, vhypot, vmax
 
-__all__ = ["Peg", "place", "velocity", "acceleration", "under_point", "recognise",
+__all__ = ["Peg", "place", "velocity", "acceleration", "under_velocity", "under_acceleration",
+           "under_point", "recognise",
            "under_labels", "slot_labels"]
 
 
@@ -68,12 +69,22 @@ def acceleration(u1x, u1y, u2x, u2y, ex, ey, cross):
     return velocity(u1x, u1y, u2x, u2y, ex, ey, cross)
 
 
-def under_point(gx, gy, x, y, w, al, vgx, vgy, agx, agy):
-    """The velocity and acceleration of the slotted body's point under the peg at (x, y):
-    vG + w perp(P - G), aG - w^2 (P - G) + al perp(P - G)."""
+def under_velocity(gx, gy, x, y, w, vgx, vgy):
+    """The velocity of the slotted body's point under the peg at (x, y): vG + w perp(P - G)."""
+    return vgx - w * (y - gy), vgy + w * (x - gx)
+
+
+def under_acceleration(gx, gy, x, y, w, al, agx, agy):
+    """Its acceleration: aG - w^2 (P - G) + al perp(P - G)."""
     px, py = x - gx, y - gy
     k = w * w
-    return (vgx - w * py, vgy + w * px), (agx - k * px - al * py, agy - k * py + al * px)
+    return agx - k * px - al * py, agy - k * py + al * px
+
+
+def under_point(gx, gy, x, y, w, al, vgx, vgy, agx, agy):
+    """Both: the velocity and the acceleration of the point under the peg."""
+    return (under_velocity(gx, gy, x, y, w, vgx, vgy),
+            under_acceleration(gx, gy, x, y, w, al, agx, agy))
 
 
 def coriolis(w, vs, ux, uy):
@@ -250,14 +261,16 @@ class Peg(Step):
             P[X] = (x, y)
             m.cond[i] = c
 
-        def under(m, fixed, guide, g, x, y):
+        def under_v(m, fixed, guide, g, x, y):
             if fixed:
-                return (0.0, 0.0), (0.0, 0.0), 0.0
+                return 0.0, 0.0
+            return under_velocity(*m.P[g], x, y, m.W[guide], *m.V[g])
+
+        def under_a(m, fixed, guide, g, x, y):
+            if fixed:
+                return (0.0, 0.0), 0.0
             w = m.W[guide]
-            al = m.Al.get(guide, 0.0)
-            aG = m.A.get(g, (0.0, 0.0))
-            vc, ac = under_point(*m.P[g], x, y, w, al, *m.V[g], *aG)
-            return vc, ac, w
+            return under_acceleration(*m.P[g], x, y, w, m.Al[guide], *m.A[g]), w
 
         def cross_of(m, s1, s2):
             cr = s1[2] * s2[3] - s1[3] * s2[2]
@@ -267,7 +280,7 @@ class Peg(Step):
             P = m.P
             x, y = P[X]
             s1, s2 = frames(P)
-            (c1, _, _), (c2, _, _) = under(m, f1, L1, a1, x, y), under(m, f2, L2, a2, x, y)
+            c1, c2 = under_v(m, f1, L1, a1, x, y), under_v(m, f2, L2, a2, x, y)
             vs1, vs2 = velocity(s1[2], s1[3], s2[2], s2[3], c2[0] - c1[0], c2[1] - c1[1],
                                 cross_of(m, s1, s2))
             m.S[k1] = [vs1, None, 0.0, 0.0]
@@ -278,7 +291,7 @@ class Peg(Step):
             P = m.P
             x, y = P[X]
             s1, s2 = frames(P)
-            (_, d1, w1), (_, d2, w2) = under(m, f1, L1, a1, x, y), under(m, f2, L2, a2, x, y)
+            (d1, w1), (d2, w2) = under_a(m, f1, L1, a1, x, y), under_a(m, f2, L2, a2, x, y)
             t1, t2 = m.S[k1], m.S[k2]
             cx1, cy1 = coriolis(w1, t1[0], s1[2], s1[3])
             cx2, cy2 = coriolis(w2, t2[0], s2[2], s2[3])
