@@ -50,7 +50,7 @@ import math
 from dataclasses import dataclass
 
 from .errors import TOL, SceneError, SingularStepError
-from .scene import FixedPath, GuideSlider
+from .scene import FixedPath, GuideSlider, YokeSlot
 
 __all__ = ["Centre", "Centres", "locate", "centres_dict", "MAX_BODIES", "JSON_BODIES"]
 
@@ -196,11 +196,11 @@ def _primary(sol, names):
                 if key not in found:
                     found[key] = Centre(*key, tuple(sol.P[p]), None, f"the pin at {p}")
     for s in sc.sliders:
-        blk = num(f"block {s.point}")
+        blk = num(f"block {s.key}")  # a peg in two slots: a block in each
         if isinstance(s, FixedPath):
             d = _unit(-s.u[1], s.u[0])
             key = (1, blk)
-            how = (f"block {s.point} slides on the {s.label} path: at infinity, "
+            how = (f"block {s.key} slides on the {s.label} path: at infinity, "
                    "perpendicular to the path")
         elif isinstance(s, GuideSlider):
             (x1, y1), (x2, y2) = sol.P[s.first], sol.P[s.second]
@@ -208,8 +208,14 @@ def _primary(sol, names):
             d = (-uy, ux)
             g = num(sc.link(s.guide).key)
             key = (min(g, blk), max(g, blk))
-            how = (f"block {s.point} slides along {s.guide}: at infinity, perpendicular "
+            how = (f"block {s.key} slides along {s.guide}: at infinity, perpendicular "
                    f"to {s.guide}")
+        elif isinstance(s, YokeSlot):  # a block in the slot of a translating yoke
+            d = _unit(-s.direction[1], s.direction[0])
+            g = num(f"block {s.yoke}")
+            key = (min(g, blk), max(g, blk))
+            how = (f"block {s.point} slides in the {s.label} slot of yoke {s.yoke}: at "
+                   "infinity, perpendicular to the slot")
         else:  # pragma: no cover
             continue
         found[key] = Centre(*key, None, d, how)
@@ -419,6 +425,7 @@ def _words(pair):
 def _kennedy(key, found, n, scale):
     i, j = key
     lines = []
+    far = None  # two centres at infinity in two directions: the line at infinity
     for k in range(1, n + 1):
         if k in key:
             continue
@@ -428,6 +435,9 @@ def _kennedy(key, found, n, scale):
         ln = _line(a, b)
         if ln is not None:
             lines.append((ln, (a, b)))
+        elif a.point is None and b.point is None and \
+                abs(a.direction[0] * b.direction[1] - a.direction[1] * b.direction[0]) > PARALLEL:
+            far = (a, b)
     best = None
     for p in range(len(lines)):
         for q in range(p + 1, len(lines)):
@@ -443,6 +453,12 @@ def _kennedy(key, found, n, scale):
             c = Centre(i, j, where, None, how, pairs, cond)
             if best is None or cond > best.condition:
                 best = c
+    if best is None and far is not None and lines:  # a line and the line at infinity (a
+        (_, d), pair = lines[0]                       # body that translates: the Scotch yoke)
+        how = (f"Kennedy: on the line {pair[0].label}-{pair[1].label} and the line at "
+               f"infinity through {far[0].label} and {far[1].label}: at infinity along the "
+               "first")
+        return Centre(i, j, None, d, how, (pair, far), 0.0)
     return best
 
 

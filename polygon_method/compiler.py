@@ -139,8 +139,8 @@ def gruebler(scene: Scene) -> int:
         bodies_at.setdefault(cp.name, set()).add(scene.link(cp.link).key)
     for p in ground:
         bodies_at.setdefault(p, set()).add("ground")
-    for s in scene.sliders:
-        bodies_at.setdefault(s.point, set()).add(f"block {s.point}")
+    for s in scene.sliders:  # a peg in two slots: a block in each, pinned together
+        bodies_at.setdefault(s.point, set()).add(f"block {s.key}")
     for c in scene.cylinders:  # barrel and rod: two bodies, a sliding pair between them
         n += 2
         bodies_at.setdefault(c.barrel, set()).add(f"barrel {c.key}")
@@ -170,15 +170,22 @@ class _Compiler:
         self.notes = []
         self.bodies = Bodies(scene)
         self._carried = {cp.name: cp for cp in scene.points}
-        self._sliders = {s.point: s for s in scene.sliders}
+        self._sliders = {s.point: s for s in scene.sliders if not s.slot}
+        self._slots = {}  # a peg's point -> its two slots
+        for s in scene.sliders:
+            if s.slot:
+                self._slots.setdefault(s.point, []).append(s)
         self._bodies_of = {}
         for lk in scene.links:
             for p in self.bodies.frame(lk.key):
                 self._bodies_of.setdefault(p, []).append(lk.key)
         self._guided = {}  # link key -> slider points that slide on it
+        self._yokes = {}  # a pin -> the yoke whose slot it slides in
         for s in scene.sliders:
             if isinstance(s, GuideSlider):
                 self._guided.setdefault(scene.link(s.guide).key, []).append(s.point)
+            elif hasattr(s, "yoke"):
+                self._yokes.setdefault(s.point, []).append(s.yoke)
 
     # ----- what the recognisers ask
     @property
@@ -189,7 +196,12 @@ class _Compiler:
         return self._carried.get(name)
 
     def slider(self, name):
+        """The block at ``name`` (none for a peg in two slots: see :meth:`slots`)."""
         return self._sliders.get(name)
+
+    def slots(self, name):
+        """The two slots of a peg at ``name`` (empty where it is none)."""
+        return tuple(self._slots.get(name, ()))
 
     def body(self, key) -> dict:
         return self.bodies.frame(key)
@@ -288,6 +300,7 @@ class _Compiler:
         for key in self.bodies_of(name):
             out.update(self.body(key))
             out.update(self._guided.get(key, ()))
+        out.update(self._yokes.get(name, ()))
         return out
 
     def run(self) -> Plan:
@@ -426,7 +439,8 @@ class _Compiler:
             return  # every point found, every link and slider used
         missing = [p for p in self.names if p not in self.P]
         extra_links = [lk.key for lk in sc.links if lk.key not in self.used_links]
-        extra_sliders = [s.point for s in sc.sliders if s.point not in self.used_sliders]
+        extra_sliders = list(dict.fromkeys(s.point for s in sc.sliders
+                                           if s.key not in self.used_sliders))
         if not missing and not extra_links and not extra_sliders:
             return
         m = gruebler(sc)
@@ -441,8 +455,8 @@ class _Compiler:
                        f"{', '.join(missing)} cannot move")
             else:
                 why = (f"{', '.join(missing)} cannot be found by the construction steps "
-                       "(crank, dyad, slider, slotted link, carried point, rolling wheel, triad): "
-                       "the chain needs "
+                       "(crank, dyad, slider, slotted link, carried point, rolling wheel, triad, "
+                       "peg in two slots, yoke): the chain needs "
                        "a construction these steps do not make, or a part is missing")
             loose = [lk.key for lk in sc.links
                      if lk.key not in self.used_links and (lk.p in missing or lk.q in missing)]

@@ -173,15 +173,15 @@ def error_bounds(motion) -> ErrorBounds:
         x = s.point
         if x not in eV:
             continue
-        if x in slide:
-            eS[x] = slide[x]
+        if s.key in slide:
+            eS[s.key] = slide[s.key]
             continue
         v, a = eV[x], eA[x]
         guide = getattr(s, "guide", None)
         if guide is not None:
             key = scene.link(guide).key
             v, a = vmax(v, eW.get(key, 0.0)), vmax(a, eAl.get(key, 0.0))
-        eS[x] = (v, a, a)
+        eS[s.key] = (v, a, a)
     for cyl in scene.cylinders:  # its rate of extension, as a slider's sliding velocity
         if cyl.key in slide:
             eS[cyl.key] = slide[cyl.key]
@@ -234,8 +234,8 @@ def bounds_dict(sol, b=None) -> dict:
          "links": {lk.key: {"omega": b.W.get(lk.key, EPS), "alpha": b.Al.get(lk.key, EPS)}
                    for lk in sc.links}}
     if sc.sliders:
-        d["sliders"] = {s.point: dict(zip(("sliding_velocity", "sliding_acceleration",
-                                           "coriolis"), b.S.get(s.point, (EPS,) * 3)))
+        d["sliders"] = {s.key: dict(zip(("sliding_velocity", "sliding_acceleration",
+                                         "coriolis"), b.S.get(s.key, (EPS,) * 3)))
                         for s in sc.sliders}
     if sc.pins:
         d["pins"] = {pin[0]: {"rubbing_velocity": b.rubbing(pin)} for pin in sol.plan.pins}

@@ -352,9 +352,11 @@ def _bodies_at(sc, point) -> tuple:
             out.append((f"barrel {cyl.key}", cyl.key))
         elif point == cyl.rod:
             out.append((f"rod {cyl.key}", cyl.key))
-    sl = sc.slider(point)
-    if isinstance(sl, FixedPath):
-        out.append((f"block {point}", None))
-    elif isinstance(sl, GuideSlider):
-        out.append((f"block {point}", sc.link(sl.guide).key))
+    for sl in sc.slots(point):  # a block; a peg in two slots has a block in each
+        if isinstance(sl, FixedPath):
+            out.append((f"block {sl.key}", None))
+        elif isinstance(sl, GuideSlider):
+            out.append((f"block {sl.key}", sc.link(sl.guide).key))
+        else:  # in the slot of a translating yoke: the block does not turn
+            out.append((f"block {sl.key}", None))
     return tuple(out)

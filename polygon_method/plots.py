@@ -60,7 +60,7 @@ def plot_figure(res: SweepResult, *, points=None, links=None):
     panels = [
         (axes[0][0], "velocity (m/s)", [(f"v_{p}", res.speed(p), here.get(f"v_{p}"))
                                         for p in pts]
-         + [(f"vs_{s.point}", res.S[s.point][0], here.get(f"vs_{s.point}"))
+         + [(f"vs_{s.key}", res.S[s.key][0], here.get(f"vs_{s.key}"))
             for s in sc.sliders]),
         (axes[1][0], "acceleration (m/s^2)",
          [(f"a_{p}", res.acceleration_magnitude(p), here.get(f"a_{p}")) for p in pts]),
@@ -144,6 +144,6 @@ def _scene_values(scene) -> dict:
         out[f"omega_{lk.key}"] = sol.W[lk.key]
         out[f"alpha_{lk.key}"] = sol.Al[lk.key]
     for s in scene.sliders:
-        out[f"vs_{s.point}"] = sol.S[s.point][0]
+        out[f"vs_{s.key}"] = sol.S[s.key][0]
     return out
 

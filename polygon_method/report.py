@@ -75,10 +75,10 @@ def solution_text(sol: Solution) -> str:
         lines.append(f"{'slider':<8} {'guide':<16} {'sliding v (m/s)':<18} "
                      f"{'sliding a (m/s^2)':<20} {'Coriolis (m/s^2)':<24}")
         for s in sc.sliders:
-            vs, a_s, cor = sol.S[s.point][0], sol.S[s.point][1], sol.coriolis(s.point)
+            vs, a_s, cor = sol.S[s.key][0], sol.S[s.key][1], sol.coriolis(s.key)
             vs, a_s = sol.shown(vs, "v"), sol.shown(a_s, "a")
             guide = getattr(s, "label", None) or getattr(s, "guide", "")
-            lines.append(f"{s.point:<8} {guide:<16} {vs:<18.5g} {a_s:<20.5g} "
+            lines.append(f"{s.key:<8} {guide:<16} {vs:<18.5g} {a_s:<20.5g} "
                          f"{_vec(*cor, scale=sol.scales['a']):<24}")
     if sc.cylinders:
         lines.append("")

@@ -149,10 +149,11 @@ class Solution(Motion):
              "links": {lk.key: {"omega": self.W[lk.key], "alpha": self.Al[lk.key]}
                        for lk in sc.links}}
         if sc.sliders:
-            d["sliders"] = {s.point: {"sliding_velocity": self.S[s.point][0],
-                                      "sliding_acceleration": self.S[s.point][1],
-                                      "coriolis": list(self.coriolis(s.point)),
-                                      "guide": (s.label if isinstance(s, FixedPath)
+            d["sliders"] = {s.key: {"sliding_velocity": self.S[s.key][0],
+                                    "sliding_acceleration": self.S[s.key][1],
+                                    "coriolis": list(self.coriolis(s.key)),
+                                      "guide": (s.label if isinstance(s, FixedPath) else
+                                                f"block {s.yoke}" if hasattr(s, "yoke")
                                                 else s.guide)}
                             for s in sc.sliders}
         if sc.cylinders:

@@ -203,9 +203,19 @@ def _config(doc, sol, space):
         crank_dir += f"; angle {others[0]}{inp.pivot}{inp.tip} = {fmt(math.degrees(between), 4)} deg"
     facts.append(crank_dir)
     for s in sc.sliders:
-        if isinstance(s, FixedPath):
+        if s.slot:  # a peg in two slots
+            facts.append(f"peg {s.point} in the slot of {s.guide}" if isinstance(s, GuideSlider)
+                         else f"peg {s.point} in a fixed {s.label} slot through "
+                         f"({fmt(s.through[0] / u, 5)}, {fmt(s.through[1] / u, 5)})")
+        elif isinstance(s, FixedPath) and any(getattr(t, "yoke", None) == s.point
+                                              for t in sc.sliders):
+            facts.append(f"yoke {s.point} on a {s.label} path through "
+                         f"({fmt(s.through[0] / u, 5)}, {fmt(s.through[1] / u, 5)})")
+        elif isinstance(s, FixedPath):
             facts.append(f"slider {s.point} on a {s.label} path through "
                          f"({fmt(s.through[0] / u, 5)}, {fmt(s.through[1] / u, 5)})")
+        elif hasattr(s, "yoke"):  # the slot of a translating yoke
+            facts.append(f"block {s.point} slides in the {s.label} slot of yoke {s.yoke}")
         else:
             facts.append(f"block {s.point} slides along {s.guide}")
     doc.items(facts)
@@ -381,17 +391,21 @@ def _angular_velocity_items(sol):
 def _sliding_items(sol):
     out = []
     for s in sol.scene.sliders:
-        vs = sol.S[s.point][0]
+        vs = sol.S[s.key][0]
         if vs == 0:  # (noise is 0 here: the solution is tidied)
-            guide = f"the {s.label} path" if isinstance(s, FixedPath) else s.guide
-            out.append(f"vs_{s.point} = 0 m/s: {s.point} does not slide along {guide} at "
+            guide = (f"the {s.label} path" if isinstance(s, FixedPath) else
+                     f"the slot of yoke {s.yoke}" if hasattr(s, "yoke") else s.guide)
+            out.append(f"vs_{s.key} = 0 m/s: {s.point} does not slide along {guide} at "
                        "this instant")
             continue
         if isinstance(s, FixedPath):
             along = f"along the {s.label} path ({'+' if vs >= 0 else '-'} direction)"
+        elif hasattr(s, "yoke"):
+            along = (f"along the {s.label} slot of yoke {s.yoke} ({'+' if vs >= 0 else '-'} "
+                     "direction), relative to the yoke")
         else:
             along = (f"along {s.guide}, {'from ' + s.first + ' towards ' + s.second if vs >= 0 else 'from ' + s.second + ' towards ' + s.first}")
-        out.append(f"vs_{s.point} = {fmt(abs(vs))} m/s {along}")
+        out.append(f"vs_{s.key} = {fmt(abs(vs))} m/s {along}")
     return out
 
 
@@ -489,10 +503,10 @@ def _acceleration_table(sol):
     for s in sc.sliders:
         if isinstance(s, GuideSlider):
             g = sc.link(s.guide).key
-            vs = sol.S[s.point][0]
-            cor = math.hypot(*sol.coriolis(s.point))
+            vs = sol.S[s.key][0]
+            cor = math.hypot(*sol.coriolis(s.key))
             coriolis[g] = (f"2 omega v = 2 x {fmt(abs(sol.W[g]))} x {fmt(abs(vs))} = "
-                           f"{fmt(cor)} (block {s.point}, perp. to {s.guide})")
+                           f"{fmt(cor)} (block {s.key}, perp. to {s.guide})")
     rows = []
     for lk in sc.links:
         if lk.key in sol.plan.fixed_links:
@@ -555,9 +569,9 @@ def _acceleration(doc, sol, ascale):
     doc.items(items)
     sl = []
     for s in sc.sliders:
-        a_s = sol.S[s.point][1]
-        cor = math.hypot(*sol.coriolis(s.point))
-        t = f"as_{s.point} = {fmt(a_s)} m/s^2 (signed along the guide)"
+        a_s = sol.S[s.key][1]
+        cor = math.hypot(*sol.coriolis(s.key))
+        t = f"as_{s.key} = {fmt(a_s)} m/s^2 (signed along the guide)"
         if isinstance(s, GuideSlider):
             t += f"; Coriolis component {fmt(cor)} m/s^2"
         sl.append(t)

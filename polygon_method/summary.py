@@ -173,15 +173,15 @@ class _Reducer:
             yield f"omega_{lk.key}", "rad/s", fr.W[lk.key], "ccw +"
             yield f"alpha_{lk.key}", "rad/s^2", fr.Al[lk.key], "ccw +"
         for s in sc.sliders:
-            vs, a_s, cx, cy = fr.S[s.point]
+            vs, a_s, cx, cy = fr.S[s.key]
             if isinstance(s, FixedPath):
                 (qx, qy), (ux, uy) = s.through, s.u
                 x, y = fr.P[s.point]
-                yield f"s_{s.point}", "m", (x - qx) * ux + (y - qy) * uy, "position on the path"
-            yield f"vs_{s.point}", "m/s", vs, "sliding, signed"
-            yield f"as_{s.point}", "m/s^2", a_s, "sliding, signed"
-            if not isinstance(s, FixedPath):
-                yield f"ac_{s.point}", "m/s^2", (cx, cy), "Coriolis"
+                yield f"s_{s.key}", "m", (x - qx) * ux + (y - qy) * uy, "position on the path"
+            yield f"vs_{s.key}", "m/s", vs, "sliding, signed"
+            yield f"as_{s.key}", "m/s^2", a_s, "sliding, signed"
+            if hasattr(s, "guide"):  # a moving guide that turns: its Coriolis component
+                yield f"ac_{s.key}", "m/s^2", (cx, cy), "Coriolis"
         if getattr(plan, "pins", ()):
             for pin, r in rubbing_arrays(plan, fr.W, fr.n).items():
                 yield f"rub_{pin}", "m/s", r, "rubbing"

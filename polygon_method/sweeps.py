@@ -97,9 +97,9 @@ class SweepResult(Motion):
             cols += [(f"omega_{lk.key}", "rad/s", self.W[lk.key]),
                      (f"alpha_{lk.key}", "rad/s^2", self.Al[lk.key])]
         for s in sc.sliders:
-            vs, a_s, cx, cy = self.S[s.point]
-            cols += [(f"vs_{s.point}", "m/s", vs), (f"as_{s.point}", "m/s^2", a_s),
-                     (f"acx_{s.point}", "m/s^2", cx), (f"acy_{s.point}", "m/s^2", cy)]
+            vs, a_s, cx, cy = self.S[s.key]
+            cols += [(f"vs_{s.key}", "m/s", vs), (f"as_{s.key}", "m/s^2", a_s),
+                     (f"acx_{s.key}", "m/s^2", cx), (f"acy_{s.key}", "m/s^2", cy)]
         for pin, r in self.rubbing.items():
             cols.append((f"rub_{pin}", "m/s", r))
         if self.input_torque is not None:

@@ -23,6 +23,14 @@ from .numbers import fmt, sense
 __all__ = ["given"]
 
 
+
+def _slot(sc, s) -> str:
+    """One slot of a peg in words: ``the slot of link O4-B``, ``a fixed horizontal slot
+    through (0, 450) mm``."""
+    if hasattr(s, "guide"):
+        return f"the slot of link {s.guide}"
+    return f"a fixed slot ({s.label}) through {_at(sc, s.through)}"
+
 def given(sc) -> list:
     """The scene's data as a textbook states it, one sentence a line."""
     out = []
@@ -34,6 +42,15 @@ def given(sc) -> list:
     for cp in sc.points:
         out.append(f"Point {cp.name}: {cp.how}.")  # "on BC, 40 mm from B"
     for s in sc.sliders:
+        if s.slot:  # a peg in two slots: one sentence, at its first slot
+            if s is sc.slots(s.point)[0]:
+                out.append(f"A peg {s.point} runs in two slots: "
+                           + " and ".join(_slot(sc, t) for t in sc.slots(s.point)) + ".")
+            continue
+        if hasattr(s, "yoke"):  # the slot of a translating yoke
+            out.append(f"A block at {s.point} slides in the {s.label} slot of the yoke "
+                       f"{s.yoke}.")
+            continue
         if hasattr(s, "guide"):  # a block on a moving link (a scene record, not a step)
             out.append(f"A block at {s.point} slides along link {s.guide}.")
         else:

@@ -20,6 +20,10 @@ the coordinates ``q`` (x, y of every non-ground point):
 * a rack R on a fixed path (T, u) meshing with a pinion about O:  ``(R - T).u - k K (th - th0)
   = 0`` with k = -(T - O).perp(u) (the pinion's point at the pitch point moves as the rack)
   and K the pinion's turns per turn of the crank (with the path's equation above).
+* a pin X in the slot of a translating yoke Y (a block on a fixed path), the slot along
+  the fixed unit d:  ``cross(X - Y, d) = 0`` (linear: ``gamma = 0``)
+* a peg in two slots: one of the two above for each slot (two equations for its point);
+  its sliding quantities are keyed by slot (``P_OA``, ``P_ground``)
 
 Positions: Newton-Raphson from the solver's float positions.  Every constraint is at most
 quadratic in ``q``, so along a motion ``f'' = J q'' + gamma`` with a closed-form ``gamma``:
@@ -122,6 +126,8 @@ def _equations(scene):
     for sl in scene.sliders:
         if hasattr(sl, "guide"):
             eqs.append(("guide", (sl.point, sl.first, sl.second)))
+        elif hasattr(sl, "yoke"):  # the slot of a translating yoke: a line of fixed direction
+            eqs.append(("yoke", (sl.point, sl.yoke, _unit(_v(sl.direction)))))
         else:
             eqs.append(("path", (sl.point, _v(sl.through), _unit(_v(sl.u)))))
     rates = {inp.crank: mpf(1)}
@@ -190,6 +196,10 @@ def _eval(kind, d, P, th):
         x, through, u = d
         a = _sub(P[x], through)
         return _cross(a, u), [(x, u[1], -u[0])]
+    if kind == "yoke":
+        x, y, u = d
+        a = _sub(P[x], P[y])
+        return _cross(a, u), [(x, u[1], -u[0]), (y, -u[1], u[0])]
     if kind == "guide":
         x, g1, g2 = d
         a, b = _sub(P[x], P[g1]), _sub(P[g2], P[g1])
@@ -374,10 +384,14 @@ def reference_solution(scene, guess_positions):
             ax_ = (A[g1][0] - wg * wg * rel[0] + ag * _perp(rel)[0],
                    A[g1][1] - wg * wg * rel[1] + ag * _perp(rel)[1])
             acc = _dot(_sub(_sub(A[x], ax_), cor), u)
+        elif hasattr(sl, "yoke"):  # relative to the yoke, which translates: no Coriolis
+            u = _unit(_v(sl.direction))
+            vs, acc = _dot(_sub(V[x], V[sl.yoke]), u), _dot(_sub(A[x], A[sl.yoke]), u)
+            cor = ZERO2
         else:
             u = _unit(_v(sl.u))
             vs, acc, cor = _dot(V[x], u), _dot(A[x], u), ZERO2
-        sliders[x] = {"vs": vs, "as": acc, "coriolis": cor}
+        sliders[getattr(sl, "key", x)] = {"vs": vs, "as": acc, "coriolis": cor}
 
     return {"positions": P, "velocities": V, "accelerations": A, "omega": omega,
             "alpha": alpha, "sliders": sliders, "residual": res}

@@ -19,7 +19,6 @@ from hypothesis import strategies as st
 from polygon_method import PolygonMethodError, load_scene, solve
 from polygon_method.centres import locate
 from polygon_method.cli import main
-from polygon_method.scene import FixedPath
 
 ROOT = Path(__file__).resolve().parent.parent
 WORKED = sorted(glob.glob(str(ROOT / "worked_problems" / "*.toml")))
@@ -30,10 +29,11 @@ def _field(sol, name):
     if name == "ground" or name in sol.plan.fixed_links:
         return (0.0, 0.0), (0.0, 0.0), 0.0
     if name.startswith("block "):
-        p = name.split()[1]
-        sl = sol.scene.slider(p)
-        w = 0.0 if isinstance(sl, FixedPath) else sol.W[sol.scene.link(sl.guide).key]
-        return sol.P[p], sol.V[p], w
+        sl = sol.scene.slider(name.split()[1])  # by its key: a peg has two blocks
+        p = sl.point
+        if not hasattr(sl, "guide"):  # on a fixed path, or in a translating yoke's slot
+            return sol.P[p], sol.V[p], 0.0
+        return sol.P[p], sol.V[p], sol.W[sol.scene.link(sl.guide).key]
     if name.startswith(("barrel ", "rod ")):  # a cylinder's barrel (at its pivot), its rod
         part, key = name.split(" ", 1)
         cyl = sol.scene.cylinder(key)

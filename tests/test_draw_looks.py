@@ -183,10 +183,11 @@ def test_a_block_on_a_moving_link_sits_on_that_link_drawn(path):
     if not blocks:
         return
     svg = Svg(svg_string(sol, "configuration"))
-    for sl in blocks:
-        link = Polygon(svg.path(f"link-{sl.guide}")).buffer(0)
+    for sl in blocks:  # (a Scotch yoke's block sits on the yoke's bar)
+        body = f"link-{sl.guide}" if hasattr(sl, "guide") else f"yoke-{sl.yoke}"
+        link = Polygon(svg.path(body)).buffer(0)
         pin = Polygon(svg.path(f"joint-{sl.point}")).centroid
-        assert link.contains(pin), f"{sl.point} hangs off {sl.guide}"
+        assert link.contains(pin), f"{sl.point} hangs off {body}"
 
 
 @pytest.mark.parametrize("path", TEXTBOOK, ids=lambda p: Path(p).stem)

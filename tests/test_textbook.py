@@ -72,7 +72,9 @@ def _bodies_at_pin(scene, name, omega):
         out["ground"] = 0
     for s in scene.sliders:
         if s.point == name:
-            out["block"] = omega[scene.link(s.guide).key] if isinstance(s, GuideSlider) else 0
+            # (a peg in two slots: a block in each, the one in a moving slot turning with it)
+            out[f"block {s.key}"] = (omega[scene.link(s.guide).key] if isinstance(s, GuideSlider)
+                                     else 0)
     return out
 
 
@@ -149,10 +151,9 @@ def _body_field(sol, name):
     if name == "ground":
         return 0.0, (0.0, 0.0), (0.0, 0.0)
     if name.startswith("block "):
-        x = name.split()[1]
-        s = next(s for s in sc.sliders if s.point == x)
+        s = sc.slider(name.split()[1])  # by its key: a peg has a block in each slot
         w = sol.W[sc.link(s.guide).key] if isinstance(s, GuideSlider) else 0.0
-        return w, sol.P[x], sol.V[x]
+        return w, sol.P[s.point], sol.V[s.point]
     lk = sc.link(name)
     return sol.W[lk.key], sol.P[lk.p], sol.V[lk.p]
 

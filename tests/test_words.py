@@ -29,7 +29,17 @@ def test_every_datum_is_stated(path):
     for p, (x, y) in sc.ground.items():
         assert f"{p} at ({g(x / u)}, {g(y / u)}) {sc.units}" in text
     for s in sc.sliders:
-        if hasattr(s, "through"):
+        if s.slot:  # a peg in two slots: each slot named in its sentence
+            assert f"A peg {s.point} runs in two slots: " in text
+            if hasattr(s, "through"):
+                tx, ty = s.through
+                assert f"a fixed slot ({s.label}) through ({g(tx / u)}, {g(ty / u)})" in text
+            else:
+                assert f"the slot of link {s.guide}" in text
+        elif hasattr(s, "yoke"):  # the slot of a translating yoke
+            assert f"A block at {s.point} slides in the {s.label} slot of the yoke {s.yoke}" \
+                in text
+        elif hasattr(s, "through"):
             tx, ty = s.through
             assert f"Slider {s.point} moves on a fixed" in text
             assert f"through ({g(tx / u)}, {g(ty / u)}) {sc.units}" in text

@@ -60,12 +60,12 @@ def worst_error(scene, sol, ref):
                  for lk in scene.links]
     vs = max(_norm(v) for v in ref["velocities"].values())
     as_ = max(_norm(v) for v in ref["accelerations"].values())
-    for sl in scene.sliders:
-        want, got = ref["sliders"][sl.point], sol.S[sl.point]
-        errs += [(_err(got[0], want["vs"], vs), f"sliding velocity {sl.point}"),
-                 (_err(got[1], want["as"], as_), f"sliding acceleration {sl.point}"),
-                 (_err(tuple(sol.coriolis(sl.point)), want["coriolis"], as_),
-                  f"Coriolis {sl.point}")]
+    for sl in scene.sliders:  # by the slider's key: a peg in two slots has one per slot
+        want, got = ref["sliders"][sl.key], sol.S[sl.key]
+        errs += [(_err(got[0], want["vs"], vs), f"sliding velocity {sl.key}"),
+                 (_err(got[1], want["as"], as_), f"sliding acceleration {sl.key}"),
+                 (_err(tuple(sol.coriolis(sl.key)), want["coriolis"], as_),
+                  f"Coriolis {sl.key}")]
     return max(errs)
 
 
@@ -88,6 +88,8 @@ def guide_direction(scene, P, X):
         return None
     if isinstance(s, FixedPath):
         return s.u
+    if hasattr(s, "yoke"):  # the slot of a translating yoke
+        return s.direction
     (x1, y1), (x2, y2) = P[s.first], P[s.second]
     n = math.hypot(x2 - x1, y2 - y1)
     return ((x2 - x1) / n, (y2 - y1) / n)
@@ -99,6 +101,8 @@ def other_position(scene, P, X):
     free end of a slotted link, through the link's pivot. None for the crank's tip."""
     if X == scene.input.tip:
         return None  # the crank's tip has one position
+    if len(scene.slots(X)) == 2:
+        return None  # a peg in two slots: where they cross, one position
     if any(r.rim == X for r in scene.rolling):
         return None  # a rolling wheel's point, a rack: one position (the no-slip relation)
     tri = _triad_other(scene, P, X)

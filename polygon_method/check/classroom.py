@@ -45,6 +45,7 @@ MISTAKE_WORDS = {
     "one_pair": "one pair of bodies only at a pin",
     "force_times_speed": "F x v without the angle between them",
     "coriolis_factor": "the Coriolis component without its factor 2",
+    "coriolis_omitted": "the Coriolis component of a moving slot left out",
     "angle_in_radians": "the crank angle taken in radians",
     "other_dead_centre": "the crank angle measured from the other dead centre",
     "against_rotation": "the crank angle measured against the rotation",

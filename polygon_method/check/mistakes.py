@@ -15,6 +15,7 @@ from ..solution import Solution, solve
 from ..steps import under_label
 from ..numbers import textbook as _g
 from ..numbers import working as _num
+from .slots import coriolis_left_out
 from .tolerance import _terms
 
 
@@ -229,9 +230,12 @@ class _Diagnoser:
             out += self.per_length(ans)
         if kind in ("a", "aI"):
             out += self.contact_at_rest(ans)
+        if kind in ("a", "as"):
+            out += self.coriolis_left_out(kind, names[0])
         if kind == "vs":
-            out.append(_Candidate(sol.speed(names[0]), "absolute_for_relative",
-                                  f"the absolute velocity of {names[0]} given for its "
+            X = sc.slider(names[0]).point  # a peg's slot: vs_P_OA is of the peg P
+            out.append(_Candidate(sol.speed(X), "absolute_for_relative",
+                                  f"the absolute velocity of {X} given for its "
                                   "sliding velocity"))
         if kind == "rub":
             out += self.rubbing(names[0])
@@ -372,6 +376,11 @@ class _Diagnoser:
             theirs.update(self.their_w)
             sets.insert(0, (theirs, frozenset(self.their_w)))
         return sets
+
+    def coriolis_left_out(self, kind, name):
+        """A peg in two slots drawn without the Coriolis component of a moving slot."""
+        return [_Candidate(v, code, text) for v, code, text in
+                coriolis_left_out(self.sol, kind, name)]
 
     def rubbing(self, X):
         sol, sc = self.sol, self.sc

@@ -98,10 +98,12 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
         pts = [P[lk.p], P[lk.q]] + [P[c] for c in carried_on.get(lk.key, ())]
         # a block sliding on the link beyond its ends: the link produced through the block
         for sl in sc.sliders:
-            if not isinstance(sl, FixedPath) and sl.guide == lk.key:
+            if getattr(sl, "guide", None) == lk.key:
                 (x1, y1), (x2, y2) = P[sl.first], P[sl.second]
                 n = math.hypot(x2 - x1, y2 - y1)
-                X, half = P[sl.point], _block_size(sc, sl.point, P) / 2 + BAR / 2
+                size = _block_size(sc, sl.point, P)
+                reach = _slot_half(size) + SLOT_W if sl.slot else size / 2
+                X, half = P[sl.point], reach + BAR / 2
                 pts += [(X[0] + k * half * (x2 - x1) / n, X[1] + k * half * (y2 - y1) / n)
                         for k in (-1, 1)]
         body = MultiPoint(pts).convex_hull.buffer(BAR / 2, quad_segs=8)
@@ -139,16 +141,36 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
             c = _step_shape(sk, shape, s, f"{st.index + 1}-{len(contacts)}")
             if c is not None:
                 contacts.append(c)
+    # a translating yoke: a bar through its block along its slot, over the pin's block
+    for sl in sc.sliders:
+        if hasattr(sl, "yoke"):
+            body = _yoke_bar(sc, sl, P)
+            solid.append((f"yoke {sl.yoke}", body))
+            sk.polygon(list(body.exterior.coords), gid=f"yoke-{sl.yoke}", face=BODY_FACE,
+                       edge=BODY_EDGE, lw=0.8, z=2, obstacle="edge")
     # blocks
     for sl in sc.sliders:
         X = P[sl.point]
         if isinstance(sl, FixedPath):
             u = sl.u
+        elif hasattr(sl, "yoke"):
+            u = sl.direction
         else:
             (x1, y1), (x2, y2) = P[sl.first], P[sl.second]
             n = math.hypot(x2 - x1, y2 - y1)
             u = ((x2 - x1) / n, (y2 - y1) / n)
         size = _block_size(sc, sl.point, P)
+        if sl.slot:  # a peg in two slots: the pin in a slot cut along each (no block)
+            from shapely.geometry import LineString
+            h = _slot_half(size)
+            cut = LineString([(X[0] - h * u[0], X[1] - h * u[1]),
+                              (X[0] + h * u[0], X[1] + h * u[1])]).buffer(SLOT_W, quad_segs=8)
+            sk.polygon(list(cut.exterior.coords), gid=f"slot-{sl.key}", face="#ffffff",
+                       edge="#000000", lw=0.8, z=3)
+            solid.append((f"block {sl.key}", cut))
+            sk.hints.append(((X[0] - h * u[0], X[1] - h * u[1]),
+                             (X[0] + h * u[0], X[1] + h * u[1])))
+            continue
         sk.polygon(_rect(X, u, size, 0.55 * size), gid=f"block-{sl.point}", face="#ffffff",
                    edge="#000000", lw=0.9, z=3)
         solid.append((f"block {sl.point}", Polygon(_rect(X, u, size, 0.55 * size))))
@@ -241,6 +263,26 @@ def _step_shape(sk, shape, s, tag):
 def _deg(rad: float) -> str:
     d = math.degrees(rad)
     return f"{d:.4g}\u00b0"
+
+
+def _yoke_bar(sc, sl, P):
+    """The yoke of a Scotch yoke: a bar through its block Y along its slot, reaching past
+    the pin's block at P on both sides (the slot's length over the pin's travel)."""
+    from shapely.geometry import MultiPoint
+    (yx, yy), (px, py), (dx, dy) = P[sl.yoke], P[sl.point], sl.direction
+    t = (px - yx) * dx + (py - yy) * dy
+    reach = max(abs(t), 1.0) + _block_size(sc, sl.point, P)
+    ends = [(yx - reach * dx, yy - reach * dy), (yx + reach * dx, yy + reach * dy)]
+    return MultiPoint(ends).convex_hull.buffer(BAR / 2, quad_segs=8)
+
+
+#: a slot's half-width (cm): the pin's circle and a little play
+SLOT_W = 1.6 * JOINT_R
+
+
+def _slot_half(size):
+    """Half the length of the slot drawn around a peg (cm), for a block of ``size``."""
+    return 0.8 * size
 
 
 def _block_size(sc, point, P):

@@ -17,7 +17,7 @@ import numpy as np
 from ..errors import TOL
 from ..numbers import quiet, sense
 from ..scales import DIAGRAMS, display_unit
-from ..steps import image_name, under_label
+from ..steps import image_name, slot_labels, under_label
 from .frames import Frames, round_sig
 
 __all__ = ["page_data", "diagram_box"]
@@ -90,6 +90,17 @@ def diagram_box(fr: Frames, phase: str, scale) -> list:
             round(float(y.max()), 3)]
 
 
+def _unders(sol) -> dict:
+    """Each block on a moving guide (by its slider key): the image letter of the guide's
+    point under it (a1; a peg in two slots: p1 and p2)."""
+    out = {}
+    for s in sol.scene.sliders:
+        if hasattr(s, "guide"):
+            out[s.key] = (slot_labels(sol, s.point)[s.key] if s.slot
+                          else under_label(sol, s.point))
+    return out
+
+
 def page_data(fr: Frames) -> dict:
     """Everything the page's script reads (SI, counter-clockwise positive)."""
     sol, res = fr.sol, fr.res
@@ -99,9 +110,13 @@ def page_data(fr: Frames) -> dict:
     sliders = []
     for s in sc.sliders:
         if hasattr(s, "guide"):
-            sliders.append({"point": s.point, "guide": [s.first, s.second], "link": s.guide})
+            sliders.append({"point": s.point, "key": s.key, "guide": [s.first, s.second],
+                            "link": s.guide})
+        elif hasattr(s, "yoke"):  # a yoke's slot: a line through the pin, moving with it
+            sliders.append({"point": s.point, "key": s.key,
+                            "u": [float(c) for c in s.direction]})
         else:
-            sliders.append({"point": s.point, "u": [float(c) for c in s.u],
+            sliders.append({"point": s.point, "key": s.key, "u": [float(c) for c in s.u],
                             "through": [float(c) for c in s.through]})
     shapes = [sh for st in sol.plan.steps for sh in st.shapes(sol.P)]
     wheels = [[sh[1], float(sh[2])] for sh in shapes if sh[0] == "circle"]  # pitch circles
@@ -120,8 +135,7 @@ def page_data(fr: Frames) -> dict:
         "ground": {p: [float(c) for c in xy] for p, xy in sc.ground.items()},
         "points": moving,
         "images": {p: image_name(sc, p) for p in sc.point_names},  # b for B (o1: a moving O)
-        "under": {s.point: under_label(sol, s.point) for s in sc.sliders
-                  if hasattr(s, "guide")},  # the guide's point under a block: a1 (or a2)
+        "under": _unders(sol),  # the guide's point under a block: a1 (or a2)
         "links": [[lk.p, lk.q, lk.key] for lk in links],
         "plates": [[sc.link(cp.link).p, sc.link(cp.link).q, cp.name] for cp in sc.points],
         "sliders": sliders,
@@ -132,7 +146,7 @@ def page_data(fr: Frames) -> dict:
         "A": {p: _flat([_quiet(c, k["A"], n) for c in res.A[p]]) for p in moving},
         "W": {lk.key: round_sig(_quiet(res.W[lk.key], k["W"], n)) for lk in links},
         "Al": {lk.key: round_sig(_quiet(res.Al[lk.key], k["Al"], n)) for lk in links},
-        "S": {s.point: [round_sig(_quiet(res.S[s.point][j], k["V" if j == 0 else "A"], n))
+        "S": {s.key: [round_sig(_quiet(res.S[s.key][j], k["V" if j == 0 else "A"], n))
                         for j in range(4)] for s in sc.sliders},
         "torque": None if res.input_torque is None else
         round_sig(_quiet(res.input_torque, _torque_scale(sc, k), n)),

@@ -71,12 +71,12 @@ function setup(phase) {
   if (phase === "configuration") {
     for (const [p, q, c] of D.plates) g.items.push([el(svg, "polygon", {class: "plate"}, "plate:" + c), "plate", [p, q, c]]);
     for (const s of D.sliders) {
-      if (s.u) g.items.push([el(svg, "line", {class: "guide"}, "guide:" + s.point), "guide", s]);
+      if (s.u) g.items.push([el(svg, "line", {class: "guide"}, "guide:" + s.key), "guide", s]);
     }
     for (const w of D.wheels) g.items.push([el(svg, "circle", {class: "pitch"}, "pitch circle about " + w[0]), "pitch", w]);
     for (const l of D.rollLines) g.items.push([el(svg, "line", {class: "guide"}, "the line a wheel rolls on"), "rollline", l]);
     for (const [p, q, key] of D.links) g.items.push([el(svg, "line", {class: "link", id: "c-link-" + key}, "link:" + key), "link", [p, q, key]]);
-    for (const s of D.sliders) g.items.push([el(svg, "polygon", {class: "block"}, "slider:" + s.point), "block", s]);
+    for (const s of D.sliders) g.items.push([el(svg, "polygon", {class: "block"}, "slider:" + s.key), "block", s]);
     for (const p in D.ground) g.items.push([el(svg, "polygon", {class: "ground"}, "ground:" + p), "ground", p]);
     for (const p of Object.keys(D.ground).concat(D.points)) {
       g.items.push([el(svg, "circle", {class: "joint", r: r3(fs * 0.18)}, "point:" + p), "joint", p]);
@@ -96,11 +96,11 @@ function setup(phase) {
     for (const [p, q, key] of D.links) g.items.push([el(svg, "line", {class: "relative", id: v + "-rel-" + key}, "rel:" + key), "rel", [p, q, key]]);
     for (const s of D.sliders) {  // a block on a moving link: the link's point under it
       if (!s.guide) continue;
-      g.items.push([el(svg, "line", {class: "relative"}, "under:" + s.point), "under", s]);
-      g.items.push([el(svg, "line", {class: "sliding", id: v + "-slide-" + s.point, "marker-end": "url(#" + phase + "-head)"}, "sliding:" + s.point), "sliding", s]);
-      if (v === "a") g.items.push([el(svg, "line", {class: "coriolis", "marker-end": "url(#" + phase + "-head)"}, "coriolis:" + s.point), "coriolis", s]);
-      const t = el(svg, "text", {class: "label image-label"}, "under:" + s.point);
-      t.textContent = D.under[s.point] + (v === "a" ? "'" : "");
+      g.items.push([el(svg, "line", {class: "relative"}, "under:" + s.key), "under", s]);
+      g.items.push([el(svg, "line", {class: "sliding", id: v + "-slide-" + s.key, "marker-end": "url(#" + phase + "-head)"}, "sliding:" + s.key), "sliding", s]);
+      if (v === "a") g.items.push([el(svg, "line", {class: "coriolis", "marker-end": "url(#" + phase + "-head)"}, "coriolis:" + s.key), "coriolis", s]);
+      const t = el(svg, "text", {class: "label image-label"}, "under:" + s.key);
+      t.textContent = D.under[s.key] + (v === "a" ? "'" : "");
       g.items.push([t, "underlabel", s]);
     }
     for (const p of D.points) g.items.push([el(svg, "line", {class: "absolute", id: v + "-abs-" + p, "marker-end": "url(#" + phase + "-head)"}, "abs:" + p), "abs", p]);
@@ -130,7 +130,7 @@ function unit(a, b) {
 // the Coriolis component: v_X = v_X1 + vs u; a_X = a_X1 + as u + coriolis
 function under(phase, s, k) {
   const u = unit(vec("configuration", s.guide[0], k), vec("configuration", s.guide[1], k));
-  const x = vec(phase, s.point, k), S = D.S[s.point];
+  const x = vec(phase, s.point, k), S = D.S[s.key];
   const cor = phase === "velocity" ? [0, 0] : [S[2][k], S[3][k]];
   const along = phase === "velocity" ? S[0][k] : S[1][k];
   const back = [x[0] - cor[0], x[1] - cor[1]];
@@ -287,7 +287,7 @@ function tipText(tip, k) {
     const link = D.links.find((l) => l[2] === name);
     return link ? "ω_" + name + " = " + angular(D.W[name][k], "rad/s") : tipText("abs:" + name, k);
   }
-  if (kind === "under") return "the point of link " + D.sliders.find((s) => s.point === name).link + " under the block " + name + " (" + name.toLowerCase() + "1 on the velocity polygon)";
+  if (kind === "under") return "the point of link " + D.sliders.find((s) => s.key === name).link + " under the block " + name + " (" + D.under[name] + " on the velocity polygon)";
   if (kind === "sliding") return "sliding velocity of " + name + " = " + fmt(D.S[name][0][k]) + " m/s; sliding acceleration " + fmt(D.S[name][1][k]) + " m/s²";
   if (kind === "coriolis") return "Coriolis component at " + name + " = 2ωv = " + fmt(Math.hypot(D.S[name][2][k], D.S[name][3][k])) + " m/s²";
   if (kind === "slider" || kind === "guide") return "slider " + name + ": sliding velocity " + fmt(D.S[name][0][k]) + " m/s";

@@ -29,12 +29,13 @@ from __future__ import annotations
 from .reading import (key_line, load_answers, load_scene, parse_answers, parse_scene,
                       scene_from_table, scene_table)
 from .records import (ANSWER_KINDS, GIVEN_KINDS, Answer, CarriedPoint, Cylinder, FixedPath,
-                      GivenRate,
-                      GuideSlider, Input, Link, Load, Pin, Scene, split_name)
+                      GivenRate, GuideSlider, Input, Link, Load, Pin, Scene, YokeSlot,
+                      split_name)
 from .variation import Variation, VariantOf, Varied
 
 __all__ = [
-    "Scene", "Link", "CarriedPoint", "FixedPath", "GuideSlider", "Input", "Pin", "Load",
+    "Scene", "Link", "CarriedPoint", "FixedPath", "GuideSlider", "YokeSlot", "Input", "Pin",
+    "Load",
     "Answer", "load_scene", "parse_scene", "split_name", "ANSWER_KINDS", "parse_answers",
     "load_answers", "key_line", "scene_table", "scene_from_table", "Variation", "Varied",
     "VariantOf", "GivenRate", "GIVEN_KINDS", "Cylinder",

@@ -435,6 +435,8 @@ class _Loader(_Tables, _Variants):
         rolling = read_rolling(self, ground, sliders, {p.name for p in points})
         self.rolling_pairs = rolling
         known = set(ground) | {p for lk in links for p in lk.points} | {p.name for p in points}
+        known |= {s.point for s in sliders if s.slot}  # a peg in two slots; a yoke
+        known |= {s.yoke for s in sliders if hasattr(s, "yoke")}
         self.known = known
         self.slider_points = {s.point: s for s in sliders}
         self.cylinder_list = cylinders = self.cylinders(known)

@@ -93,6 +93,14 @@ class FixedPath:
     u: tuple[float, float]
     through: tuple[float, float]
     label: str
+    #: for a peg in two slots (see :class:`GuideSlider`): "ground"; else ""
+    slot: str = ""
+
+    @property
+    def key(self) -> str:
+        """The slider's name in the solution and in answer keys: its point (``D``), or for
+        a peg in two slots the point and the slot (``P_ground``)."""
+        return f"{self.point}_{self.slot}" if self.slot else self.point
 
 
 @dataclass(frozen=True)
@@ -103,6 +111,34 @@ class GuideSlider:
     guide: str
     first: str
     second: str
+    #: for a peg in two slots (``P = { along = ["OA", "QB"] }``, or one link and a fixed
+    #: path): the guide's key, so that the two slots of one point have names of their own
+    #: (``P_OA``, ``P_QB``); "" for a block on one guide
+    slot: str = ""
+
+    @property
+    def key(self) -> str:
+        """The slider's name in the solution and in answer keys: its point (``A``), or for
+        a peg in two slots the point and the slot (``P_OA``)."""
+        return f"{self.point}_{self.slot}" if self.slot else self.point
+
+
+@dataclass(frozen=True)
+class YokeSlot:
+    """A block pinned at ``point`` that slides in the slot of a translating yoke: the yoke
+    is the block at ``yoke`` on a fixed path, its slot the line through it along unit
+    ``direction`` (fixed: the yoke does not turn). The Scotch yoke's crank pin."""
+
+    point: str
+    yoke: str
+    direction: tuple[float, float]
+    label: str  # "vertical", "at 60 deg"
+    slot: str = ""
+
+    @property
+    def key(self) -> str:
+        """The slider's name in the solution and in answer keys: its point."""
+        return self.point
 
 
 @dataclass(frozen=True)
@@ -288,6 +324,11 @@ class Scene:
             seen[cp.name] = None
         for r in self.rolling:  # a rack's point, on no link
             seen[r.rim] = None
+        for sl in self.sliders:  # a peg in two slots need be no joint of a link, nor a
+            if getattr(sl, "slot", ""):  # yoke (a block on a fixed path with a slot)
+                seen[sl.point] = None
+            elif isinstance(sl, YokeSlot):
+                seen[sl.yoke] = None
         object.__setattr__(self, "_names", tuple(seen))
         try:
             key = (self.units, tuple(self.ground.items()), self.links, self.points,
@@ -356,7 +397,13 @@ class Scene:
                      and {c.barrel, c.rod} == set(pts)), None)
 
     def slider(self, name: str):
-        return next((s for s in self.sliders if s.point == name), None)
+        """The slider named ``name``: a block's point (``D``), or one slot of a peg in two
+        slots (``P_OA``; the point alone gives its first slot)."""
+        return next((s for s in self.sliders if s.point == name or s.key == name), None)
+
+    def slots(self, point: str) -> tuple:
+        """Every slider record at ``point``: one for a block, two for a peg in two slots."""
+        return tuple(s for s in self.sliders if s.point == point)
 
     def rolling_of(self, point: str):
         """The rolling pair whose wheel has ``point`` as its rim point, or None."""

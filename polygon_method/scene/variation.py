@@ -165,7 +165,8 @@ class _Variants:
 
     def _point(self, name, sub, value, ground, sliders, inp, raw):
         key = f"{name}.{sub}"
-        slider = next((s for s in sliders if s.point == name), None)
+        at = [s for s in sliders if s.point == name]  # a peg in two slots: its fixed one
+        slider = next((s for s in at if hasattr(s, "u")), at[0] if at else None)
         if sub in ("x", "y"):
             i = 0 if sub == "x" else 1
             if name in ground:

@@ -6,18 +6,9 @@ acceleration as plain functions on floats or numpy arrays, its condition and the
 why it is singular or at a limit, what it draws on the polygons (``construction``) and its
 line of the step table (``position_words``).
 
-crank      the driving crank's tip
-carried    a point on a known link or plate (the image point, similar triangles)
-slider     RRP: a link and a slider on a fixed path or on a moving link
-dyad       RRR: the joint of two links (or plate sides) to two known points
-slotted    RPR: a link that a block slides along (slotted lever, Whitworth, swivel)
-cylinder     a hydraulic cylinder between two known points: length, extension rate, omega
-triad        class-III group: a plate whose three vertices are each linked to a known point
-             (three points at once: Newton on the loop equations; Goodman's auxiliary point)
-=========  ===========================================================================
-=======
 ============ ===========================================================================
 crank        the driving crank's tip
+second crank a second driven crank (two degrees of freedom): its own angle and speed
 carried      a point on a known link or plate (the image point, similar triangles)
 slider       RRP: a link and a slider on a fixed path or on a moving link
 dyad         RRR: the joint of two links (or plate sides) to two known points
@@ -25,14 +16,21 @@ slotted      RPR: a link that a block slides along (slotted lever, Whitworth, sw
 rolling      a wheel or gear rolling without slip on a line, a fixed circle or a gear
 wheel_centre the centre of a wheel rolling on a line, found from a link pinned to it
 rack         a rack (a block on a fixed path) driven by a pinion without slip
+peg          a pin in two slots: where a fixed slot and a slotted link, or two slotted
+             links, cross (two sliding pairs, a Coriolis component in each moving slot)
+yoke         a translating slotted yoke on a fixed path, placed by a known pin in its slot
+             (the Scotch yoke)
 cylinder     a hydraulic cylinder between two known points: length, extension rate, omega
+triad        class-III group: a plate whose three vertices are each linked to a known point
+             (three points at once: Newton on the loop equations; Goodman's auxiliary point)
 ============ ===========================================================================
 
 Adding a kind: write its module (a frozen ``Step`` subclass and a ``recognise(g, name)``
 function) and add it to :data:`TIERS`.
 """
 
-from . import carried, cylinder, dyad, rack, rolling, slider, slotted, triad, wheel_centre
+from . import (carried, cylinder, dyad, peg, rack, rolling, slider, slotted, triad,
+               wheel_centre, yoke)
 from .base import (Construction, Context, DirectionLine, State, Step, Vector, image_label,
                    image_name, pole_text)
 from .carried import Carried
@@ -40,6 +38,8 @@ from .crank import Crank
 from .cylinder import CylinderStep
 from .dyad import Dyad
 from .rolling import RollingWheel
+from .peg import Peg, slot_labels
+from .yoke import Yoke
 from .slider import SliderDyad
 from .slotted import SlottedLink, under_label
 from .triad import Triad
@@ -48,11 +48,11 @@ from .triad import Triad
 #: order) every kind of the first tier in turn; the next tier only when no point of the
 #: tiers before can be found. The crank is the plan's first step and is not recognised.
 TIERS = ((rolling.recognise, wheel_centre.recognise, rack.recognise, carried.recognise,
-          slider.recognise, dyad.recognise),
+          slider.recognise, dyad.recognise, peg.recognise, yoke.recognise),
          (slotted.recognise,),
          (triad.recognise,))
 
 __all__ = ["TIERS", "Step", "Context", "State", "Crank", "Dyad", "SliderDyad", "SlottedLink",
-           "Carried", "CylinderStep", "RollingWheel", "Triad", "Construction", "Vector",
-           "DirectionLine", "image_label", "image_name",
-           "pole_text", "under_label"]
+           "Carried", "CylinderStep", "RollingWheel", "Triad", "Peg", "Yoke", "Construction",
+           "Vector", "DirectionLine", "image_label", "image_name", "pole_text", "under_label",
+           "slot_labels"]

@@ -70,7 +70,7 @@ def recognise(g, name):
     (tried when no point can be found otherwise)."""
     sc = g.scene
     for sl in sc.sliders:
-        if not isinstance(sl, GuideSlider) or sl.point in g.used_sliders:
+        if not isinstance(sl, GuideSlider) or sl.slot or sl.point in g.used_sliders:
             continue
         guide = sc.link(sl.guide)
         if sl.point not in g.P or guide.key in g.used_links or name not in guide.points:

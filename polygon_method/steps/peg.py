@@ -1,0 +1,441 @@
+"""A peg in two slots: point P sits in the slots of two known bodies (a slotted link, or a
+fixed slot) and goes where the two slots cross (a peg in a fixed slot driven by a slotted
+lever, a peg in two slotted links).
+
+Slot i is the line ``G_i + s u_i`` of its body: a fixed path (``G`` its point, ``u`` its
+direction) or a moving link's centre line (``G`` its first point, ``u`` towards its second).
+Position: ``s_1 = (G_2 - G_1) x u_2 / (u_1 x u_2)``, ``P = G_1 + s_1 u_1``. Condition:
+``|u_1 x u_2|``, the sine of the angle between the slots (two parallel slots: no crossing).
+
+Velocity: the point C_i of body i under the peg moves with ``vC_i = vG_i + w_i perp(P -
+G_i)`` (zero for a fixed slot); the peg slides along each slot, ``vP = vC_i + vs_i u_i``:
+through the image c_i of each a line parallel to slot i, meeting at p::
+
+    vs_1 u_1 - vs_2 u_2 = vC_2 - vC_1 = e,   vs_1 = e x u_2 / (u_1 x u_2),
+    vs_2 = e x u_1 / (u_1 x u_2)
+
+Acceleration: ``aP = aC_i + 2 w_i vs_i perp(u_i) + as_i u_i`` (the Coriolis component of
+each moving slot, laid off from c_i' first), with ``aC_i = aG_i - w_i^2 (P - G_i) + al_i
+perp(P - G_i)``: the same 2x2 solve with ``e = (aC_2 + cor_2) - (aC_1 + cor_1)``.
+
+>>> x, y, c = place(0.0, 0.0, 1.0, 0.0, 2.0, -1.0, 0.0, 1.0)   # y = 0 and x = 2
+>>> x, y, c
+(2.0, 0.0, 1.0)
+>>> velocity(1.0, 0.0, 0.0, 1.0, 0.5, -0.25, 1.0)   # e = vs_1 u_1 - vs_2 u_2
+(0.5, 0.25)
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from ..errors import TOL, SingularStepError
+from ..scene import FixedPath, GuideSlider
+from .base import (Construction, DirectionLine, Step, Vector, absolute, add, image_label,
+                   image_name, numbered, pole_text, sub, unit)
+from .rounding import two_lines, vhypot, vmax
+
+__all__ = ["Peg", "place", "velocity", "acceleration", "under_velocity", "under_acceleration",
+           "under_point", "recognise",
+           "under_labels", "slot_labels"]
+
+
+def place(g1x, g1y, u1x, u1y, g2x, g2y, u2x, u2y, ctx=None, step=None):
+    """Where the slots G_1 + s u_1 and G_2 + t u_2 cross. Returns x, y and the condition
+    |u_1 x u_2|."""
+    cross = u1x * u2y - u1y * u2x
+    c = abs(cross)
+    if ctx is not None:
+        if ctx.array:
+            near = c < TOL.singular
+            if near is True or (near is not False and near.any()):
+                ctx.fail(step, near)
+                cross = ctx.np.where(near, 1.0, cross)
+        elif c < TOL.singular:
+            raise step.singular(c)
+    wx, wy = g2x - g1x, g2y - g1y
+    s1 = (wx * u2y - wy * u2x) / cross
+    return g1x + s1 * u1x, g1y + s1 * u1y, c
+
+
+def velocity(u1x, u1y, u2x, u2y, ex, ey, cross):
+    """(vs_1, vs_2) with e = vC_2 - vC_1 = vs_1 u_1 - vs_2 u_2 and cross = u_1 x u_2."""
+    return (ex * u2y - ey * u2x) / cross, (ex * u1y - ey * u1x) / cross
+
+
+def acceleration(u1x, u1y, u2x, u2y, ex, ey, cross):
+    """(as_1, as_2) with e = (aC_2 + cor_2) - (aC_1 + cor_1): the same 2x2 solve."""
+    return velocity(u1x, u1y, u2x, u2y, ex, ey, cross)
+
+
+def under_velocity(gx, gy, x, y, w, vgx, vgy):
+    """The velocity of the slotted body's point under the peg at (x, y): vG + w perp(P - G)."""
+    return vgx - w * (y - gy), vgy + w * (x - gx)
+
+
+def under_acceleration(gx, gy, x, y, w, al, agx, agy):
+    """Its acceleration: aG - w^2 (P - G) + al perp(P - G)."""
+    px, py = x - gx, y - gy
+    k = w * w
+    return agx - k * px - al * py, agy - k * py + al * px
+
+
+def under_point(gx, gy, x, y, w, al, vgx, vgy, agx, agy):
+    """Both: the velocity and the acceleration of the point under the peg."""
+    return (under_velocity(gx, gy, x, y, w, vgx, vgy),
+            under_acceleration(gx, gy, x, y, w, al, agx, agy))
+
+
+def coriolis(w, vs, ux, uy):
+    """2 omega_slot vs perp(u)."""
+    return -2 * w * vs * uy, 2 * w * vs * ux
+
+
+def recognise(g, name):
+    """A peg in two slots whose bodies are both known: fixed, or a link whose two ends and
+    omega are found."""
+    sc = g.scene
+    slots = g.slots(name)
+    if len(slots) != 2 or any(s.key in g.used_sliders for s in slots):
+        return None
+    sizes = []
+    for s in slots:
+        if isinstance(s, GuideSlider):
+            guide = sc.link(s.guide)
+            if not (g.known_link(guide) and guide.key in g.used_links):
+                return None
+            sizes.append(guide.length)
+    g.used_sliders.update(s.key for s in slots)
+    size = max(sizes) if sizes else sc.link(sc.input.crank).length
+    return Peg(g.next_index, name, slots[0], slots[1], size, unit=g.unit, uname=g.uname)
+
+
+def _slot_words(s) -> str:
+    """``the slot of OA`` or ``the fixed slot (horizontal)``."""
+    if isinstance(s, FixedPath):
+        return f"the fixed slot ({s.label})"
+    return f"the slot of {s.guide}"
+
+
+def under_labels(sol, X: str, phase: str = "velocity") -> tuple:
+    """The images of the two slotted bodies' points under the peg at X: ``p1`` and ``p2``
+    (primed on the acceleration polygon), numbered past the scene's own points; the pole
+    for a fixed slot."""
+    sc = sol.scene
+    taken = {image_name(sc, p) for p in sc.point_names} | {p.lower() for p in sc.point_names}
+    prime = "'" if phase == "acceleration" else ""
+    out = []
+    for s in sol.scene.slots(X):
+        if isinstance(s, FixedPath):
+            out.append("o" + prime)
+            continue
+        lab = numbered(X.lower(), taken)
+        taken.add(lab)
+        out.append(lab + prime)
+    return tuple(out)
+
+
+def slot_labels(sol, X: str) -> dict:
+    """slider key -> the velocity image letter of its slotted body's point under the peg."""
+    return dict(zip((s.key for s in sol.scene.slots(X)), under_labels(sol, X)))
+
+
+@dataclass(frozen=True)
+class Peg(Step):
+    """A peg at ``point`` in two slots (``first``, ``second``: the scene's slider records of
+    its two slots, each a :class:`FixedPath` or a :class:`GuideSlider`)."""
+
+    point: str
+    first: object
+    second: object
+    #: the longest slotted link (the crank's length where none): a scale
+    size: float = 1.0
+    unit: float = 1e-3
+    uname: str = "mm"
+
+    kind = "peg"
+    branching = False
+
+    @property
+    def finds(self):
+        return (self.point,)
+
+    @property
+    def links(self):
+        return ()
+
+    @property
+    def slots(self):
+        return (self.first, self.second)
+
+    @property
+    def needs(self):
+        return tuple(p for s in self.slots if isinstance(s, GuideSlider)
+                     for p in (s.first, s.second))
+
+    @property
+    def needs_links(self):
+        return tuple(s.guide for s in self.slots if isinstance(s, GuideSlider))
+
+    @property
+    def title(self):
+        return (f"peg {self.point} in {_slot_words(self.first)} and "
+                f"{_slot_words(self.second)}")
+
+    @property
+    def params(self):
+        return self._fixed(self.first) + self._fixed(self.second)
+
+    @staticmethod
+    def _fixed(s):
+        """A fixed slot's point and direction; zeros for a moving one (read from P)."""
+        if isinstance(s, FixedPath):
+            (qx, qy), (ux, uy) = s.through, s.u
+            return (qx, qy, ux, uy)
+        return (0.0, 0.0, 0.0, 0.0)
+
+    def dimensions(self, scene, bodies):
+        return self._fixed(scene.slider(self.first.key)) + \
+            self._fixed(scene.slider(self.second.key))
+
+    def drawn(self, prm, pencil, P):
+        """A fixed slot's point as a hand drawing places it (its direction is given)."""
+        out = list(prm)
+        for j, s in ((0, self.first), (4, self.second)):
+            if isinstance(s, FixedPath):
+                out[j] += pencil()
+                out[j + 1] += pencil()
+        return tuple(out)
+
+    def reach(self):
+        return max(self.size, 1e-9)
+
+    def lines(self, P, prm=None):
+        """(gx, gy, ux, uy) of each slot: fixed from ``prm``, moving from the positions."""
+        prm = self.params if prm is None else prm
+        out = []
+        for j, s in ((0, self.first), (4, self.second)):
+            if isinstance(s, FixedPath):
+                out.append(prm[j:j + 4])
+            else:
+                (gx, gy), (hx, hy) = P[s.first], P[s.second]
+                ux, uy = hx - gx, hy - gy
+                n = (ux * ux + uy * uy) ** 0.5
+                out.append((gx, gy, ux / n, uy / n))
+        return out
+
+    def place(self, P, prm, ctx, sigma=None):
+        a, b = self.lines(P, prm)
+        return place(*a, *b, ctx, self)
+
+    def default_hint(self, P):
+        return "above"  # one position only: never asked
+
+    def bind(self, prm):
+        """The step's three phases for dimensions ``prm``: functions of a State."""
+        X, i, step = self.point, self.index, self
+        spec = []
+        for j, s in ((0, self.first), (4, self.second)):
+            if isinstance(s, FixedPath):
+                spec.append((True, s.key, None, None, None, prm[j:j + 4]))
+            else:
+                spec.append((False, s.key, s.guide, s.first, s.second, None))
+        (f1, k1, L1, a1, b1, q1), (f2, k2, L2, a2, b2, q2) = spec
+
+        def line(P, fixed, g1, g2, q):
+            if fixed:
+                return q
+            (gx, gy), (hx, hy) = P[g1], P[g2]
+            ux, uy = hx - gx, hy - gy
+            n = (ux * ux + uy * uy) ** 0.5
+            return gx, gy, ux / n, uy / n
+
+        def frames(P):
+            return line(P, f1, a1, b1, q1), line(P, f2, a2, b2, q2)
+
+        def position(m):
+            P = m.P
+            s1, s2 = frames(P)
+            x, y, c = place(*s1, *s2, m.ctx, step)
+            P[X] = (x, y)
+            m.cond[i] = c
+
+        def under_v(m, fixed, guide, g, x, y):
+            if fixed:
+                return 0.0, 0.0
+            return under_velocity(*m.P[g], x, y, m.W[guide], *m.V[g])
+
+        def under_a(m, fixed, guide, g, x, y):
+            if fixed:
+                return (0.0, 0.0), 0.0
+            w = m.W[guide]
+            return under_acceleration(*m.P[g], x, y, w, m.Al[guide], *m.A[g]), w
+
+        def cross_of(m, s1, s2):
+            cr = s1[2] * s2[3] - s1[3] * s2[2]
+            return m.ctx.safe(cr, step) if m.array else cr
+
+        def velocity_(m):
+            P = m.P
+            x, y = P[X]
+            s1, s2 = frames(P)
+            c1, c2 = under_v(m, f1, L1, a1, x, y), under_v(m, f2, L2, a2, x, y)
+            vs1, vs2 = velocity(s1[2], s1[3], s2[2], s2[3], c2[0] - c1[0], c2[1] - c1[1],
+                                cross_of(m, s1, s2))
+            m.S[k1] = [vs1, None, 0.0, 0.0]
+            m.S[k2] = [vs2, None, 0.0, 0.0]
+            m.V[X] = (c1[0] + vs1 * s1[2], c1[1] + vs1 * s1[3])
+
+        def acceleration_(m):
+            P = m.P
+            x, y = P[X]
+            s1, s2 = frames(P)
+            (d1, w1), (d2, w2) = under_a(m, f1, L1, a1, x, y), under_a(m, f2, L2, a2, x, y)
+            t1, t2 = m.S[k1], m.S[k2]
+            cx1, cy1 = coriolis(w1, t1[0], s1[2], s1[3])
+            cx2, cy2 = coriolis(w2, t2[0], s2[2], s2[3])
+            e1x, e1y = d1[0] + cx1, d1[1] + cy1
+            as1, as2 = acceleration(s1[2], s1[3], s2[2], s2[3], d2[0] + cx2 - e1x,
+                                    d2[1] + cy2 - e1y, cross_of(m, s1, s2))
+            t1[1], t1[2], t1[3] = as1, cx1, cy1
+            t2[1], t2[2], t2[3] = as2, cx2, cy2
+            m.A[X] = (e1x + as1 * s1[2], e1y + as1 * s1[3])
+
+        return position, velocity_, acceleration_
+
+    def bind_instant(self, prm):
+        """The three phases in a row (the position raises where the slots are parallel)."""
+        position, velocity_, acceleration_ = self.bind(prm)
+
+        def instant(m):
+            position(m)
+            velocity_(m)
+            acceleration_(m)
+        return instant
+
+    rounding = 48.0
+
+    def error_bound(self, walk, k, p_in, v_in, a_in):
+        """Two direction lines (the slots) at the condition |u_1 x u_2|; a moving slot's
+        direction is its link's, so its points' error turns it by that over the link's
+        length, which moves the crossing by as much times the peg's distance from the
+        slot's point. The sliding quantities err as the peg's velocity and acceleration."""
+        P = walk.P
+        Ls = walk.sizes["position"]
+        lever = 1.0
+        for s in self.slots:
+            if isinstance(s, GuideSlider):
+                (gx, gy), (hx, hy) = P[s.first], P[s.second]
+                x, y = P[self.point]
+                far = vhypot(x - gx, y - gy) / vmax(vhypot(hx - gx, hy - gy), 1e-12 * Ls)
+                lever = vmax(lever, 1.0 + far)
+        p, v, a, w, al = two_lines(walk.condition(self), walk.ratio, k, p_in * lever,
+                                   v_in * lever, a_in * lever)
+        for s in self.slots:
+            walk.slide[s.key] = (v, a, a)
+        return p, v, a, w, al
+
+    # ----- failures and words
+    def why(self, *_):
+        return (f"a pin in two parallel slots: {_slot_words(self.first)} and "
+                f"{_slot_words(self.second)} do not cross")
+
+    def singular(self, c):
+        return SingularStepError(self.singular_why(c), step=self.label)
+
+    def singular_why(self, c) -> str:
+        return (f"a pin in two parallel slots: {_slot_words(self.first)} and "
+                f"{_slot_words(self.second)} are parallel (sine {c:.2g}): they do not cross "
+                f"at one point, and {self.point} is undetermined")
+
+    def warning(self, c) -> str:
+        return (f"{self.label}: {_slot_words(self.first)} and {_slot_words(self.second)} "
+                f"are nearly parallel (condition {c:.3g}): the peg {self.point} is "
+                "ill-determined")
+
+    def limit_why(self) -> str:
+        return (f"{_slot_words(self.first)} and {_slot_words(self.second)} turn parallel: "
+                f"the peg {self.point} runs off along them")
+
+    def transmission(self):
+        return None
+
+    def condition_column(self):
+        return (f"cond step {self.index + 1}", "1",
+                f"sine of the angle between the two slots of {self.point}")
+
+    def bodies(self):
+        return tuple(f"block {s.key}" for s in self.slots)
+
+    def orient(self):
+        return {}
+
+    def output(self, ground):
+        return None
+
+    def position_words(self, L, which, angle_deg):
+        return (f"{self.point}: {_slot_words(self.first)} and {_slot_words(self.second)} "
+                f"cross at {self.point}")
+
+    # ----- the polygons
+    def construction(self, sol, ph):
+        X = self.point
+        cond = sol.conditions.get(self.index, 1.0)
+        lab = image_label(sol, X, ph)
+        unders = under_labels(sol, X, ph)
+        P = sol.P
+        x, y = P[X]
+        D = sol.V if ph == "velocity" else sol.A
+        given, lines, found, named, parts = [], [], [], [], []
+        for s, tl in zip(self.slots, unders):
+            words = _slot_words(s)
+            if isinstance(s, FixedPath):
+                u, start = s.u, (0.0, 0.0)
+                lines.append(DirectionLine(start, u, tl, f"parallel to {words}"))
+                parts.append(f"through {tl} (a fixed slot) one parallel to {words}")
+                found.append(Vector(start, D[X], f"{tl}{lab}", "sliding",
+                                    f"{'vs' if ph == 'velocity' else 'as'}_{s.key}",
+                                    f"sliding {ph} of {X} in {words}"))
+                continue
+            g1 = s.first
+            u = unit(*sub(P[s.second], P[g1]))
+            w = sol.W[s.guide]
+            vc, ac = under_point(*P[g1], x, y, w, sol.Al.get(s.guide, 0.0), *sol.V[g1],
+                                 *sol.A.get(g1, (0.0, 0.0)))
+            g_lab = pole_text(sol, g1, ph)
+            if ph == "velocity":
+                given.append(Vector(sol.V[g1], vc, f"{image_label(sol, g1, ph)}{tl}",
+                                    "relative", f"v of the point of {s.guide} under {X}",
+                                    f"omega_{s.guide} x {g1}{X}, perpendicular to {g1}{X}"))
+                named.append((tl, vc))
+                lines.append(DirectionLine(vc, u, tl, f"parallel to {s.guide}"))
+                parts.append(f"from {g_lab} draw {image_label(sol, g1, ph)}{tl} = omega_"
+                             f"{s.guide} x {g1}{X} perpendicular to {g1}{X} ({tl}: the point "
+                             f"of {s.guide} under the peg) and through {tl} a line parallel "
+                             f"to {s.guide}")
+                found.append(Vector(vc, D[X], f"{tl}{lab}", "sliding", f"vs_{s.key}",
+                                    f"sliding velocity of {X} in {words}"))
+                continue
+            cor = sol.coriolis(s.key)
+            end = add(ac, cor)
+            given.append(Vector(sol.A[g1], ac, f"{image_label(sol, g1, ph)}{tl}", "relative",
+                                f"a of the point of {s.guide} under {X}",
+                                f"omega_{s.guide}^2 x {g1}{X} towards {g1} and alpha_"
+                                f"{s.guide} x {g1}{X}"))
+            given.append(Vector(ac, end, f"cor {s.key}", "coriolis", f"Coriolis at {X} in "
+                                f"{s.guide}", f"2 omega_{s.guide} vs_{s.key} = "
+                                f"{math.hypot(*cor):.4g} m/s^2, perpendicular to {s.guide}"))
+            named.append((tl, ac))
+            lines.append(DirectionLine(end, u, f"the end of the Coriolis component in "
+                                       f"{s.guide}", f"parallel to {s.guide}"))
+            parts.append(f"from {g_lab} draw {tl}, the acceleration of the point of {s.guide} "
+                         f"under the peg, lay off from {tl} the Coriolis component 2 omega_"
+                         f"{s.guide} vs_{s.key} = {math.hypot(*cor):.4g} m/s^2 perpendicular "
+                         f"to {s.guide}, and through its end a line parallel to {s.guide}")
+            found.append(Vector(end, D[X], "s", "sliding", f"as_{s.key}",
+                                f"sliding acceleration of {X} in {words}"))
+        text = "; ".join(parts) + f"; the two lines meet at {lab}"
+        found.append(absolute(sol, X, D, ph))
+        return Construction(self.index, self.title, ph, lab, D[X], tuple(given),
+                            tuple(lines), tuple(found), text, cond, tuple(named))
