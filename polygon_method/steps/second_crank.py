@@ -21,40 +21,25 @@ import math
 from dataclasses import dataclass
 
 from .base import Construction, Step, Vector, absolute, centripetal, image_label, pole_text, sub
-from .crank import acceleration, velocity
+from .crank import Crank, acceleration, velocity
 
 __all__ = ["SecondCrank"]
 
 
 @dataclass(frozen=True)
-class SecondCrank(Step):
+class SecondCrank(Crank):
     """A second driven crank: tip = pivot + r (cos theta2, sin theta2), theta2 following the
     first crank at the ratio of their speeds; v = omega2 perp(r); a = -omega2^2 r +
-    alpha2 perp(r)."""
+    alpha2 perp(r). What it finds, reads and sets moving is the first crank's."""
 
-    link: str
-    pivot: str
-    tip: str
-    length: float
-    angle: float
-    omega: float
-    alpha: float
-    angle1: float  # the first crank's angle at the scene's instant
-    omega1: float  # the first crank's speed (the ratio over a sweep)
+    angle: float = 0.0
+    omega: float = 0.0
+    alpha: float = 0.0
+    angle1: float = 0.0  # the first crank's angle at the scene's instant
+    omega1: float = 1.0  # the first crank's speed (the ratio over a sweep)
 
     kind = "second crank"
-
-    @property
-    def finds(self):
-        return (self.tip,)
-
-    @property
-    def links(self):
-        return (self.link,)
-
-    @property
-    def needs(self):
-        return (self.pivot,)
+    bind_instant = Step.bind_instant  # its three phases in a row (not the first crank's)
 
     @property
     def title(self):
@@ -71,9 +56,6 @@ class SecondCrank(Step):
 
     def drawn(self, prm, pencil, P):
         return (prm[0] + pencil(),) + tuple(prm[1:])
-
-    def reach(self):
-        return max(self.length, 1e-9)
 
     def place(self, P, prm, ctx, sigma=None):
         ox, oy = P[self.pivot]
@@ -134,12 +116,6 @@ class SecondCrank(Step):
 
     def transmission(self):
         return None
-
-    def bodies(self):
-        return (self.link,)
-
-    def orient(self):
-        return {self.link: (self.tip, self.pivot)}
 
     def position_words(self, L, which, angle_deg):
         return (f"{self.pivot}{self.tip}: from {self.pivot} draw {self.pivot}{self.tip} = "

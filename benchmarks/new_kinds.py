@@ -1,0 +1,112 @@
+"""Warm cost of the newer step kinds against a dyad's, and of a solve whose motion is given
+on another quantity against the same solve given the crank's speed.
+
+Each figure is the median of many warm ``solve`` calls (the plan compiled once, as for a
+student's repeated solve); a step's own cost is the difference between a scene with it and
+the same scene without it. Run: ``python benchmarks/new_kinds.py``.
+"""
+
+from __future__ import annotations
+
+import statistics
+import sys
+import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+
+from polygon_method import parse_scene, solve  # noqa: E402
+
+SLIDER = """
+[ground]
+O = [0, 0]
+{extra_ground}
+[links]
+OA = 150
+AB = 600
+{extra_links}
+[sliders]
+B = {{ path = "horizontal" }}
+{extra}
+[input]
+crank = "OA"
+angle = 40
+{speed}
+"""
+
+FOURBAR = """
+[ground]
+A = [0, 0]
+D = [100, 0]
+[links]
+AB = 50
+BC = 66
+CD = 56
+{extra_links}
+[input]
+crank = "AB"
+angle = 60
+speed = "10 rad/s cw"
+"""
+
+CASES = {
+    "slider crank, crank's speed given": SLIDER.format(extra_links="", extra="", extra_ground="",
+                                                        speed='speed = "10 rad/s ccw"'),
+    "slider crank, piston's speed given (vs_B)": SLIDER.format(
+        extra_links="", extra="", extra_ground="",
+        speed='vs_B = "5 m/s left"\nas_B = "-20 m/s^2"'),
+    "slider crank + a cylinder Q-A": SLIDER.format(
+        extra_links="", extra='[cylinders]\n"Q-A" = {}', extra_ground="Q = [-700, -300]",
+        speed='speed = "10 rad/s ccw"'),
+    "four-bar": FOURBAR.format(extra_links=""),
+    "four-bar + a dyad": FOURBAR.format(extra_links="CE = 60\nDE = 70\n"),
+    "five-bar (a crank, a second crank, a dyad)": """
+[ground]
+A = [0, 0]
+E = [120, 0]
+[links]
+AB = 60
+BC = 140
+CD = 140
+DE = 60
+[input]
+crank = "AB"
+angle = 60
+speed = "10 rad/s ccw"
+[input.second]
+crank = "ED"
+angle = 120
+speed = "5 rad/s cw"
+""",
+}
+
+
+def warm(text, n=4000, repeat=7):
+    scene = parse_scene(text)
+    solve(scene)
+    runs = []
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        for _ in range(n):
+            solve(scene)
+        runs.append((time.perf_counter() - t0) / n)
+    return statistics.median(runs)
+
+
+def main():
+    t = {name: warm(text) for name, text in CASES.items()}
+    for name, v in t.items():
+        print(f"{name:<52} {v * 1e6:7.2f} us")
+    dyad = t["four-bar + a dyad"] - t["four-bar"]
+    cyl = t["slider crank + a cylinder Q-A"] - t["slider crank, crank's speed given"]
+    five = t["five-bar (a crank, a second crank, a dyad)"] - t["four-bar"]
+    print(f"a dyad's warm cost:              {dyad * 1e6:6.2f} us")
+    print(f"a cylinder step's warm cost:     {cyl * 1e6:6.2f} us ({cyl / dyad:.2f} of a dyad)")
+    print(f"a second crank's warm cost:      {five * 1e6:6.2f} us ({five / dyad:.2f} of a dyad)")
+    given = t["slider crank, piston's speed given (vs_B)"] / \
+        t["slider crank, crank's speed given"]
+    print(f"a solve with the piston's speed given / with the crank's: {given:.2f}")
+
+
+if __name__ == "__main__":
+    main()
