@@ -34,7 +34,7 @@ import weakref
 from dataclasses import replace
 
 from .errors import AssemblyError, MobilityError, PolygonMethodError, SceneError
-from .given import completed, resolve
+from .given import completed, place_roots, resolve
 from .numbers import in_units, quiet, sense
 from .plan import Bodies, Dims, Plan, _bodies_at
 from .scene import GuideSlider, Scene, key_line
@@ -71,7 +71,12 @@ def compile_plan(scene: Scene) -> Plan:
             raise SceneError(f"a Scene is needed (load_scene(path) or parse_scene(text)), "
                              f"not {type(scene).__name__} {str(scene)[:60]!r}")
         try:
+            notes = ()
+            if scene.input.placed is not None and not scene.input.placed.found:
+                notes = _place(scene)  # the crank's angle that gives the stated position
             plan = _Compiler(scene).run()
+            if notes:
+                plan = replace(plan, notes=notes + plan.notes)
         except PolygonMethodError as exc:  # name the scene file and line in the message
             if exc.line is None and exc.key:
                 exc.line = key_line(scene, exc.key)
@@ -82,8 +87,9 @@ def compile_plan(scene: Scene) -> Plan:
             while _BY_CONTENT and len(_BY_CONTENT) >= _KEEP:
                 _BY_CONTENT.pop(next(iter(_BY_CONTENT)))
             _BY_CONTENT[key] = plan
-    if scene.input.omega is None:  # the crank's speed found from the given motion
-        object.__setattr__(scene, "input", plan.scene.input)
+    if scene.input.omega is None or (scene.input.placed is not None
+                                     and not scene.input.placed.found):
+        object.__setattr__(scene, "input", plan.scene.input)  # completed when compiled
     try:
         ident = id(scene)
         _BY_ID[ident] = (weakref.ref(scene, functools.partial(_forget, ident=ident)), plan)
@@ -116,6 +122,54 @@ def _given(plan):
                  f"{sc.input.crank} = {abs(res.alpha):.6g} rad/s^2 {sense(res.alpha)}")
     dims = replace(plan.dims, omega=res.omega, alpha=res.alpha)
     return replace(plan, dims=dims, notes=(note,) + res.notes + plan.notes, given=res)
+
+
+def _place(scene) -> tuple:
+    """Set the scene's crank angle to the one that gives the position it states otherwise
+    (``[input] length_OR``, ``s_B``, ``angle_CD``): the mechanism is compiled at a trial
+    angle (``near``, else the first of a turn's grid that assembles), the turn searched for
+    the angles that give it, and the one nearest ``near`` (else the first from 0 deg) taken.
+    The scene is then compiled at it, its branches chosen there. Returns the notes."""
+    inp = scene.input
+    pl = inp.placed
+    trials = ([pl.near] if pl.near is not None else []) + \
+        [math.radians(d) for d in range(0, 360, 10)]
+    plan = None
+    for t in trials:
+        trial = replace(scene, input=replace(inp, angle=t,
+                                             placed=replace(pl, found=True)))
+        try:
+            plan = _Compiler(trial).run()
+            break
+        except PolygonMethodError:
+            continue
+    key = f"[input] {pl.key}"
+    if plan is None:
+        raise AssemblyError(f"{pl.key} = {pl.text}: the mechanism assembles at no crank angle "
+                            f"of {inp.crank}", key=key)
+    roots, seen = place_roots(plan)
+    if not roots:
+        unit = 1.0 if pl.kind == "angle" else scene.length_unit
+        what = (f"; over the turn it runs from {in_units(seen[0] + pl.value, unit)} to "
+                f"{in_units(seen[1] + pl.value, unit)} {scene.units}"
+                if seen is not None and pl.kind != "angle" else "")
+        raise AssemblyError(f"{pl.key} = {pl.text}: no angle of the crank {inp.crank} gives it"
+                            f"{what}", key=key)
+    if pl.near is not None:
+        theta = min(roots, key=lambda t: abs(math.remainder(t - pl.near, 2 * math.pi)))
+    else:
+        theta = min(roots, key=lambda t: t % (2 * math.pi))
+    shown = ", ".join(f"{math.degrees(t) % 360:.6g}" for t in sorted(
+        roots, key=lambda t: t % (2 * math.pi)))
+    note = (f"the crank {inp.crank}'s angle is found from {pl.key} = {pl.text}: "
+            f"{math.degrees(theta) % 360:.10g} deg")
+    if len(roots) > 1:
+        note += (f" (of the crank angles that give it, {shown} deg, the "
+                 + ("one nearest near" if pl.near is not None else "first from 0 deg")
+                 + "; set near = a rough angle to choose)")
+    object.__setattr__(scene, "input", replace(inp, angle=theta,
+                                               placed=replace(pl, found=True)))
+    return (note,)
 
 
 def _forget(ref, ident, by_id=_BY_ID):

@@ -43,7 +43,8 @@ from .errors import TOL, SingularStepError
 from .plan import Context, Plan
 from .scene import GIVEN_KINDS
 
-__all__ = ["resolve", "quantity", "Resolution", "completed", "stated", "working", "held"]
+__all__ = ["resolve", "quantity", "Resolution", "completed", "stated", "working", "held",
+           "placing", "place_roots"]
 
 
 class Resolution:
@@ -247,3 +248,99 @@ def _dir0(plan):
     m = plan.run(Context(plan.scene.input.angle, 1.0, 0.0))
     vx, vy = m.V[plan.scene.input.given.names[0]]
     return vx, vy
+
+
+# --------------------------------------------------------------------------- the position
+
+def placing(scene):
+    """``g(P)``: how far the positions ``P`` are from the position the scene states
+    otherwise than by the crank's angle (:class:`~polygon_method.scene.PositionGiven`), zero
+    where they give it; floats or arrays. For a direction, ``sin(phi - value)``, with
+    ``cos(phi - value)`` to tell the direction from its opposite (``ahead``)."""
+    pl = scene.input.placed
+    if pl.kind == "length":
+        a, b = pl.names
+
+        def g(P):
+            (ax, ay), (bx, by) = P[a], P[b]
+            return ((bx - ax) ** 2 + (by - ay) ** 2) ** 0.5 - pl.value
+        return g, None
+    if pl.kind == "s":
+        sl = scene.slider(pl.names[0])
+        (qx, qy), (ux, uy) = sl.through, sl.u
+        x = pl.names[0]
+
+        def g(P):
+            px, py = P[x]
+            return (px - qx) * ux + (py - qy) * uy - pl.value
+        return g, None
+    a, b = pl.names
+    c, s_ = math.cos(pl.value), math.sin(pl.value)
+
+    def g(P):
+        (ax, ay), (bx, by) = P[a], P[b]
+        dx, dy = bx - ax, by - ay
+        n = (dx * dx + dy * dy) ** 0.5
+        return (c * dy - s_ * dx) / n  # sin(phi - value)
+
+    def ahead(P):
+        (ax, ay), (bx, by) = P[a], P[b]
+        return c * (bx - ax) + s_ * (by - ay) > 0
+    return g, ahead
+
+
+def place_roots(plan, grid=720):
+    """The crank angles (rad, in one turn from the plan's own) that give the stated
+    position: sign changes of ``g`` over a grid of the turn, each refined by bisection to
+    the last bit; with the plan's branches. Returns (roots, the range of the quantity seen
+    over the turn as (min, max) or None)."""
+    import numpy as np
+    sc = plan.scene
+    g, ahead = placing(sc)
+    theta0 = sc.input.angle
+    th = theta0 + np.linspace(0.0, 2.0 * math.pi, grid + 1)
+    ctx = Context(th, 1.0, 0.0, array=True)
+    with np.errstate(all="ignore"):
+        m = plan.run(ctx, upto=0)
+        val = np.asarray(g(m.P), dtype=float) * np.ones(len(th))
+    ok = np.isfinite(val)
+    if ctx.bad is not None:
+        ok &= ~np.broadcast_to(ctx.bad, th.shape)
+    seen = (float(val[ok].min()), float(val[ok].max())) if ok.any() else None
+
+    def f(t):
+        try:
+            mm = plan.run(Context(t, 1.0, 0.0), upto=0)
+        except Exception:  # noqa: BLE001  (cannot assemble there: no root)
+            return None
+        return g(mm.P), (ahead(mm.P) if ahead is not None else True)
+
+    roots = []
+    for i in range(grid):
+        if not (ok[i] and ok[i + 1]):
+            continue
+        a, b = float(th[i]), float(th[i + 1])
+        fa, fb = val[i], val[i + 1]
+        if fa == 0.0:
+            cand = a
+        elif fa * fb < 0:
+            for _ in range(80):  # bisection to the last bit
+                mid = 0.5 * (a + b)
+                r = f(mid)
+                if r is None or mid in (a, b):
+                    break
+                if (r[0] < 0) == (fa < 0):
+                    a, fa = mid, r[0]
+                else:
+                    b = mid
+            cand = 0.5 * (a + b)
+        else:
+            continue
+        r = f(cand)
+        if r is not None and r[1]:
+            roots.append(math.remainder(cand, 2.0 * math.pi))
+    out = []
+    for t in roots:  # a root at a grid point may be found twice
+        if all(abs(math.remainder(t - u, 2.0 * math.pi)) > 1e-12 for u in out):
+            out.append(t)
+    return out, seen

@@ -215,6 +215,25 @@ class RollingPair:
 
 
 @dataclass(frozen=True)
+class PositionGiven:
+    """The position given otherwise than by the crank's angle, as a book gives it ("when
+    the cylinder is 850 mm long", "when the piston is 300 mm from O", "when the rocker
+    makes 30 deg"): ``kind`` ``length`` (the distance of two points, ``names``), ``s`` (a
+    slider's place along its fixed path from its ``through`` point) or ``angle`` (the
+    direction of ``names[0] -> names[1]``); ``value`` SI; ``near`` a rough crank angle
+    (rad) choosing among the angles that give it, or None; ``text`` as written. The crank's
+    angle is found when the scene is compiled (``Input.angle`` is then that angle)."""
+
+    key: str
+    kind: str
+    names: tuple
+    value: float
+    near: float | None
+    text: str
+    found: bool = False
+
+
+@dataclass(frozen=True)
 class Input:
     """The driving crank: link ``crank`` turning about ground point ``pivot``; its angle
     sets the position. Its speed is ``omega`` (and ``alpha``), or is found from ``given``
@@ -231,6 +250,8 @@ class Input:
     given: GivenRate | None = None
     #: a second driving crank (two degrees of freedom): an Input of its own, or None
     second: "Input | None" = None
+    #: the position given otherwise than by the crank's angle (:class:`PositionGiven`)
+    placed: PositionGiven | None = None
     #: an angle the scene gave in a book's words: (words, the angle they gave (rad), the
     #: slips a reader of them might make (:class:`~.angles.Slip`), the note saying how
     #: they were read); empty for a plain angle

@@ -11,7 +11,8 @@ from ..errors import SceneError, printable
 from ..units import UNITS, did_you_mean
 from .angles import candidates, is_book_form, read_angle
 from .records import (ANSWER_KINDS, GIVEN_KINDS, INPUT_KEYS, Answer, CarriedPoint, Cylinder,
-                      FixedPath, GivenRate, GuideSlider, Input, Load, Pin, YokeSlot, split_name)
+                      FixedPath, GivenRate, GuideSlider, Input, Load, Pin, PositionGiven,
+                      YokeSlot, split_name)
 
 
 def _unit_at(ang: float) -> tuple:
@@ -432,6 +433,19 @@ class _Tables:
         if "second" in spec:  # a second driving crank: two degrees of freedom
             second = self.second_input(spec["second"], ground)
             spec = {k: v for k, v in spec.items() if k != "second"}
+        placed = None
+        at = [k for k in spec if k.partition("_")[0] in ("length", "s", "angle")
+              and k.partition("_")[2]]
+        if at:  # the position given otherwise than by the crank's angle
+            if "angle" in spec or len(at) > 1:
+                raise self.error(f"[input] gives the position twice ({', '.join(['angle'] * ('angle' in spec) + at)}): "
+                                 "one only (the crank's angle is then found)", "input", at[-1])
+            placed = self.placed_at(at[0], spec[at[0]], spec.get("near"))
+            spec = {k: v for k, v in spec.items() if k not in (at[0], "near")}
+        elif "near" in spec:
+            raise self.error("near is a rough crank angle choosing among those that give a "
+                             "position stated otherwise (length_OR, s_B, angle_CD): there is "
+                             "none", "input", "near")
         rates = {k: _given_key(k) for k in spec if k not in INPUT_KEYS}
         for k, parsed in rates.items():
             if parsed is None:
@@ -449,7 +463,7 @@ class _Tables:
             raise self.error(f"[input] gives both the crank's speed and {given_keys[0]}: one "
                              "input only (remove speed to find the crank's from "
                              f"{given_keys[0]})", "input", given_keys[0])
-        for k in ("crank", "angle") + (() if given_keys else ("speed",)):
+        for k in ("crank",) + (() if placed else ("angle",)) + (() if given_keys else ("speed",)):
             if k not in spec:
                 example = {"crank": "crank = \"AB\"", "angle": "angle = 60",
                            "speed": "speed = \"10 rad/s ccw\""}[k]
@@ -465,6 +479,8 @@ class _Tables:
         pivot = on_ground[0]
         tip = link.other(pivot)
         said = ()
+        if placed is not None:  # a provisional angle: the one that gives it is found later
+            spec = dict(spec, angle=math.degrees(placed.near) if placed.near is not None else 0)
         if not is_book_form(spec["angle"]):
             angle = self.qty(spec["angle"], "angle", "input", "angle", default_unit="deg").value
         speed = None if given_keys else self.qty(spec["speed"], "angular_velocity", "input",
@@ -499,7 +515,7 @@ class _Tables:
                 raise self.error(f"[input] gives both the crank's acceleration and "
                                  f"{given.rate_key}: one only", "input", given.rate_key)
             return Input(link.key, pivot, tip, angle, None, alpha, given.text, given,
-                         said=said)
+                         said=said, placed=placed)
         if rate_keys:
             raise self.error(f"{rate_keys[0]} is the rate of a given motion, but [input] gives "
                              "the crank's speed: give the crank's acceleration instead",
@@ -511,7 +527,37 @@ class _Tables:
             raise self.error(f"the second input is the crank {link.key} again: name another "
                              "link pivoted on the ground", "input.second", "crank")
         return Input(link.key, pivot, tip, angle, speed.value, alpha, str(spec["speed"]),
-                     said=said, second=second)
+                     said=said, second=second, placed=placed)
+
+    def placed_at(self, key, raw, near):
+        """``length_OR = 850`` (two points' distance, a cylinder's length), ``s_B = 300`` (a
+        slider's place on its path from its through point), ``angle_CD = 30`` (the direction
+        C -> D): the position as a book gives it; ``near``: a rough crank angle."""
+        kind, _, rest = key.partition("_")
+        names = split_name(rest)
+        if kind == "s":
+            sl = self.slider_points.get(names[0]) if len(names) == 1 else None
+            if not isinstance(sl, FixedPath):
+                raise self.error(f"s_{rest}: no slider {rest} on a fixed path in [sliders] (s_B "
+                                 "is B's place along its path, from its through point)",
+                                 "input", key)
+            value = self.length(raw, "input", key, positive=False)
+        elif kind == "length":
+            if len(names) != 2 or any(n not in self.known for n in names):
+                raise self.error(f"length_{rest}: two points of the scene, e.g. length_OR (the "
+                                 "distance O to R, a cylinder's length)", "input", key)
+            value = self.length(raw, "input", key)
+        else:
+            if len(names) != 2 or any(n not in self.known for n in names):
+                raise self.error(f"angle_{rest}: two points of the scene, e.g. angle_CD (the "
+                                 "direction C -> D)", "input", key)
+            value = self.qty(raw, "angle", "input", key, default_unit="deg").value
+        near_v = None if near is None else self.qty(near, "angle", "input", "near",
+                                                    default_unit="deg").value
+        text = printable(str(raw))
+        if isinstance(raw, (int, float)) and not isinstance(raw, bool):
+            text += " deg" if kind == "angle" else f" {self.unit}"
+        return PositionGiven(key, kind, tuple(names), value, near_v, text)
 
     def second_input(self, spec, ground):
         """``[input.second]``: a second driving crank, with its crank, angle, speed and
