@@ -81,18 +81,24 @@ def given(sc) -> list:
         where = (_SIDE.get(hint, hint) if isinstance(hint, str)
                  else f"near {_at(sc, hint)}")
         out.append(f"Of its two positions, {p} is the one {where}.")
+    for c in sc.cylinders:
+        stroke = (f", its stroke {_len(sc, c.stroke[0])} to {_len(sc, c.stroke[1])}"
+                  if c.stroke else "")
+        out.append(f"A hydraulic cylinder {c.key}: its barrel pivoted at {c.barrel}, its rod "
+                   f"pinned at {c.rod}{stroke}.")
     inp = sc.input
     words = (f"The crank {inp.crank} turns about {inp.pivot}; at the instant shown it makes "
              f"{fmt(math.degrees(inp.angle) % 360)}° with the x axis (counter-clockwise"
              + (f"; {inp.angle_words}" if inp.angle_words else "") + ")")
     g = inp.given
     if g is not None:
-        words += f". At this instant {_given_words(g)}"
+        words += (f". At this instant "
+                  f"{_given_words(g, sc.cylinder(g.names[0]) is not None)}")
     else:
         words += f", turning at {inp.speed_text}"
     if g is None and "rad/s" not in inp.speed_text:
         words += f" ({fmt(abs(inp.omega))} rad/s {sense(inp.omega)})"
-    if inp.alpha and (g is None or g.rate is None):
+    if inp.alpha and g is None:
         words += (f", with an angular acceleration of {fmt(abs(inp.alpha))} rad/s² "
                   f"{sense(inp.alpha)}")
     out.append(words + ".")
@@ -135,11 +141,12 @@ def _given(x: float) -> str:
     return f"{x:.10g}"
 
 
-def _given_words(g) -> str:
+def _given_words(g, cylinder=False) -> str:
     """The given motion as a book states it: ``the block B slides at 5 m/s left``."""
     name = "-".join(g.names) if any(len(n) > 1 for n in g.names) else "".join(g.names)
     what = {"omega": f"link {name} turns at {g.text}",
-            "vs": f"the block {name} slides along its guide at {g.text}",
+            "vs": (f"the cylinder {g.names[0]} extends at {g.text}" if cylinder
+                   else f"the block {name} slides along its guide at {g.text}"),
             "v": f"{name} moves at {g.text}"}[g.kind]
     if g.rate is not None:
         what += f", its {'angular acceleration' if g.kind == 'omega' else 'acceleration'} " \

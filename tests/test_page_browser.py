@@ -23,6 +23,9 @@ ROOT = Path(__file__).resolve().parents[1]
 SEED = ROOT / "worked_problems" / "fourbar_image_points.toml"
 SLOTTED = ROOT / "worked_problems" / "crank_slotted_lever.toml"
 STEEP = ROOT / "worked_problems" / "fourbar_acceleration.toml"  # ill-conditioned at its ends
+# a cylinder whose rate of extension is given: each frame holds it (the crank's speed follows)
+TIPPER = ROOT / "worked_problems" / "tipper_cylinder.toml"
+PISTON = ROOT / "worked_problems" / "piston_driven_slider_crank.toml"
 ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
         "--disable-background-networking", "--disable-component-update", "--disable-sync"]
 
@@ -59,7 +62,8 @@ def browser():
 def pages(tmp_path_factory):
     d = tmp_path_factory.mktemp("pages")
     out = {}
-    for name, scene in (("seed", SEED), ("slotted", SLOTTED), ("steep", STEEP)):
+    for name, scene in (("seed", SEED), ("slotted", SLOTTED), ("steep", STEEP),
+                        ("tipper", TIPPER), ("piston", PISTON)):
         path = d / f"{name}.html"
         assert main(["page", str(scene), "-o", str(path)]) == 0
         out[name] = path
@@ -147,7 +151,8 @@ def test_page_loads_with_no_error_and_no_request(opened):
 
 @pytest.mark.parametrize("name, scene, frames", [
     ("seed", SEED, (141, 20, 170, 0)), ("slotted", SLOTTED, (0, 47, 123)),
-    ("steep", STEEP, (0, 90, 179))])
+    ("steep", STEEP, (0, 90, 179)), ("tipper", TIPPER, (0, 60, 179)),
+    ("piston", PISTON, (3, 50, 100, 170))])
 def test_slider_moves_drawings_and_values_to_the_solve_at_that_angle(opened, name, scene,
                                                                      frames):
     o = opened(name)

@@ -17,6 +17,7 @@ import numpy as np
 from ..errors import TOL
 from ..numbers import quiet, sense
 from ..scales import DIAGRAMS, display_unit
+from ..scene import Link
 from ..steps import image_name, slot_labels, under_label
 from .frames import Frames, round_sig
 
@@ -30,6 +31,12 @@ def _flat(xy) -> list:
     """(x array, y array) -> [x0, y0, x1, y1, ...] rounded."""
     x, y = (np.asarray(c, dtype=float) for c in xy)
     return round_sig(np.column_stack([np.broadcast_to(x, y.shape), y]))
+
+
+def res_length(res, cyl) -> float:
+    """A cylinder's longest pin-to-pin length over the frames (a size for the noise)."""
+    (bx, by), (rx, ry) = res.P[cyl.barrel], res.P[cyl.rod]
+    return float(np.max(np.hypot(np.asarray(rx) - bx, np.asarray(ry) - by)))
 
 
 def _noise_scales(res, moving, links, n) -> dict:
@@ -107,6 +114,9 @@ def page_data(fr: Frames) -> dict:
     sc = sol.scene
     moving = list(fr.moving)
     links = [lk for lk in sc.links if not (lk.p in sc.ground and lk.q in sc.ground)]
+    # a cylinder is drawn and tabled as a link between its barrel's pivot and its rod's end
+    # (it turns as one, at its omega; its length changes)
+    links += [Link(c.key, c.barrel, c.rod, res_length(res, c)) for c in sc.cylinders]
     sliders = []
     for s in sc.sliders:
         if hasattr(s, "guide"):
