@@ -23,11 +23,12 @@ WORDS = {  # what each layer is for (the contract names the modules)
     6: "rubbing, torque, transmission; centres; error bounds",
     7: "following the branch over the cycle",
     8: "the motion record; compiling a scene into a plan",
-    9: "the plan: topology + branches; dimensions are inputs",
-    10: "one module per construction kind",
-    11: "the scene: records and the reader",
-    12: "units, how numbers are written",
-    13: "one error family",
+    9: "the input given otherwise: the crank's speed and angle found",
+    10: "the plan: topology + branches; dimensions are inputs",
+    11: "one module per construction kind",
+    12: "the scene: records and the reader",
+    13: "units, how numbers are written",
+    14: "one error family",
 }
 
 
