@@ -499,11 +499,19 @@ class _Compiler:
             return
         m = gruebler(sc)
         mob = f"mobility {m} (Gruebler: 3(n-1) - 2j{' - h' if sc.rolling else ''})"
+        if sc.input.second is not None and m < 2:
+            raise MobilityError(
+                f"{mob}: two inputs over-determine the chain (a mechanism of {m} degree"
+                f"{'' if m == 1 else 's'} of freedom takes {max(m, 0)} input"
+                f"{'' if m == 1 else 's'}): remove [input.second]", file=sc.file,
+                key="[input.second] crank")
         if missing:
             if m > 1:
                 why = (f"{mob}: the mechanism is under-constrained; "
                        f"{', '.join(missing)} {'is' if len(missing) == 1 else 'are'} not "
-                       "determined by the crank (add the missing link or slider)")
+                       "determined by the crank (add the missing link or slider"
+                       + (", or a second driven crank: [input.second]"
+                          if m == 2 and sc.input.second is None else "") + ")")
             elif m < 1:
                 why = (f"{mob}: the mechanism is over-constrained (a structure); "
                        f"{', '.join(missing)} cannot move")

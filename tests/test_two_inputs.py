@@ -109,3 +109,20 @@ def test_views_and_refusals(tmp_path, capsys):
     assert main(["solve", str(f)]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and "second" in err
+
+
+def test_two_inputs_on_one_freedom_and_one_on_two(tmp_path, capsys):
+    """A four-bar given two inputs is over-determined; a five-bar given one is not
+    determined: each one line naming what to do."""
+    f = tmp_path / "od.toml"
+    f.write_text('[ground]\nA = [0, 0]\nD = [100, 0]\n[links]\nAB = 50\nBC = 66\nCD = 56\n'
+                 '[input]\ncrank = "AB"\nangle = 60\nspeed = "10 rad/s cw"\n'
+                 '[input.second]\ncrank = "DC"\nangle = 100\nspeed = "1 rad/s cw"\n')
+    assert main(["solve", str(f)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "over-determine" in err and "mobility 1" in err
+    f.write_text(FIVE_BAR.format(a1=60, a2=120, w2="5 rad/s cw", acc2="", al1=0)
+                 .split("[input.second]")[0])
+    assert main(["solve", str(f)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "mobility 2" in err and "[input.second]" in err
