@@ -100,6 +100,13 @@ class SweepResult(Motion):
             vs, a_s, cx, cy = self.S[s.key]
             cols += [(f"vs_{s.key}", "m/s", vs), (f"as_{s.key}", "m/s^2", a_s),
                      (f"acx_{s.key}", "m/s^2", cx), (f"acy_{s.key}", "m/s^2", cy)]
+        for c in sc.cylinders:  # its length, rate of extension and its acceleration
+            (bx, by), (rx, ry) = self.P[c.barrel], self.P[c.rod]
+            vs, a_s, _, _ = self.S[c.key]
+            cols += [(f"length_{c.key}", "m", np.hypot(rx - bx, ry - by)),
+                     (f"vs_{c.key}", "m/s", vs), (f"as_{c.key}", "m/s^2", a_s),
+                     (f"omega_{c.key}", "rad/s", self.W[c.key]),
+                     (f"alpha_{c.key}", "rad/s^2", self.Al[c.key])]
         for pin, r in self.rubbing.items():
             cols.append((f"rub_{pin}", "m/s", r))
         if self.input_torque is not None:

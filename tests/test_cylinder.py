@@ -206,3 +206,31 @@ def test_every_view(tmp_path, capsys):
         assert main([argv[0], str(f), *argv[1:]]) == 0, argv
     out = capsys.readouterr().out
     assert "cylinder O-R" in out
+
+
+def test_csv_has_the_cylinder_and_holds_its_rate(tmp_path):
+    """The sweep's CSV carries the cylinder's length and rates; the rate of extension is the
+    stated one at every angle, and the length is |R - O| from the CSV's own positions (the
+    CSV writes ten significant figures)."""
+    import csv
+    f = tmp_path / "t.toml"
+    f.write_text(TIPPER.format(ox=-1500, oy=-300, stroke="", angle=150,
+                               given='vs_OR = "0.1 m/s extending"'))
+    out = tmp_path / "s.csv"
+    assert main(["sweep", str(f), "--steps", "36", "--csv", str(out)]) == 0
+    rows = list(csv.DictReader(out.open()))
+    assert rows
+    for r in rows:
+        assert abs(float(r["vs_O-R [m/s]"]) - 0.1) < 1e-10
+        L = math.hypot(float(r["x_R [m]"]) + 1.5, float(r["y_R [m]"]) + 0.3)
+        assert abs(float(r["length_O-R [m]"]) - L) < 1e-9 * L
+
+
+def test_variants_of_a_given_motion_cannot_vary_the_crank_speed(tmp_path, capsys):
+    f = tmp_path / "t.toml"
+    f.write_text(TIPPER.format(ox=-1500, oy=-300, stroke="", angle=150,
+                               given='vs_OR = "0.1 m/s extending"')
+                 + '[variants]\nspeed = { from = 1, to = 2, step = 1, unit = "rad/s" }\n')
+    assert main(["variants", str(f), "--count", "2", "-o", str(tmp_path / "v")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "[variants] speed" in err and "vs_OR" in err

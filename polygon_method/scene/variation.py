@@ -158,6 +158,11 @@ class _Variants:
             return self._values(key, value, "angle", "deg", ("input", "angle"), "crank angle")
         kind = "angular_velocity" if key == "speed" else "angular_acceleration"
         base = inp.omega if key == "speed" else inp.alpha
+        if base is None:  # the motion is given on another quantity: the crank's is found
+            raise self.error(f"{key}: the scene gives the motion on {inp.given.key}, and the "
+                             f"crank's {'speed' if key == 'speed' else 'acceleration'} is "
+                             "found from it: there is no crank speed to vary",
+                             "variants", key)
         sense = "ccw" if base > 0 else ("cw" if base < 0 else None)
         return self._values(key, value, kind, None, ("input", key),
                             f"crank {'speed' if key == 'speed' else 'acceleration'}",
