@@ -16,6 +16,7 @@ from ..units import LENGTH_UNITS, UNITS, parse_quantity
 from .rolling import read_rolling
 from .records import (_ABSURD_LONG, _ABSURD_SHORT, _POINT_ONLY, _UNIT_ORDER, TOP_KEYS, FixedPath,
                       GuideSlider, Link, Scene, split_name)
+from .inputs import _Input
 from .tables import _suggest, _Tables
 from .variation import _Variants
 
@@ -278,7 +279,7 @@ def _long_integer(raw):
     return None
 
 
-class _Loader(_Tables, _Variants):
+class _Loader(_Tables, _Input, _Variants):
     def __init__(self, raw: dict, text: str, file):
         self.raw = raw
         self.lines = toml_lines(text)

@@ -1,0 +1,337 @@
+"""The [input] table (a part of the scene reader): the driving crank, its angle (or the
+position it gives, stated otherwise: ``length_OR``, ``s_B``, ``angle_DC``), its speed (or
+the motion given on another quantity: ``vs_B``, ``omega_BC``, ``v_C``), a second driven
+crank (``[input.second]``), and the slider crank's dead centres for angles in a book's
+words."""
+
+from __future__ import annotations
+
+import math
+import re
+
+from ..errors import SceneError, printable
+from ..units import UNITS
+from .angles import candidates, is_book_form
+from .records import (GIVEN_KINDS, INPUT_KEYS, FixedPath, GivenRate, Input, PositionGiven,
+                      split_name)
+from .tables import _suggest, _unit_at
+
+#: a speed followed by a direction: up, down, left, right (upwards, to the left, ...), or
+#: "at 30 deg"
+_DIRECTED = re.compile(r"^(.*?\S)\s+(?:(up(?:wards?)?|down(?:wards?)?|(?:to the )?left(?:wards?)?|"
+                       r"(?:to the )?right(?:wards?)?)|at\s+(.+))$", re.IGNORECASE)
+_WORDS = {"up": (0.0, 1.0), "down": (0.0, -1.0), "left": (-1.0, 0.0), "right": (1.0, 0.0)}
+
+
+def _extending(raw):
+    """A cylinder's rate with a word: ``"0.2 m/s extending"`` -> 0.2 m/s, ``retracting`` ->
+    its negative (a signed number: + extending)."""
+    if isinstance(raw, str):
+        m = re.match(r"^\s*(.*?\S)\s+(extending|retracting|outwards?|inwards?)\s*$", raw,
+                     re.IGNORECASE)
+        if m:
+            text = m.group(1).strip()
+            if m.group(2).lower() in ("retracting", "inward", "inwards"):
+                text = text[1:] if text.startswith("-") else "-" + text.lstrip("+")
+            return text
+    return raw
+
+
+def _given_key(key):
+    """(prefix, names) of an [input] key naming a given motion or its rate (``vs_B`` ->
+    ("vs", ("B",))), or None."""
+    prefix, _, rest = key.partition("_")
+    if prefix not in ("omega", "vs", "v", "alpha", "as", "a") or not rest:
+        return None
+    names = split_name(rest)
+    if not names or len(names) > 2 or (prefix in ("omega", "alpha") and len(names) != 2) \
+            or (prefix in ("v", "a") and len(names) != 1):
+        return None  # vs_OR, as_OR: a cylinder's rate of extension
+    return prefix, names
+
+
+class _Input:
+    """The [input] table's methods of the scene reader."""
+
+    def dead_centres(self, link, pivot, tip, ground):
+        """The candidate dead centres of the slider crank that ``link`` drives, for
+        :func:`.angles.read_angle`: ``[(inner, outer, keeps)]``."""
+        rods = [(lk, s) for lk in self.index.values() if tip in lk.points and lk is not link
+                for s in self.fixed if s.point == lk.other(tip)]
+        if len(rods) != 1:
+            raise SceneError(
+                "a dead centre is where the crank and the rod of a slider crank are in line; "
+                + (f"crank {link.key} drives no rod whose other end slides on a fixed path "
+                   "in [sliders]: give the angle from +x, the horizontal or the vertical"
+                   if not rods else f"crank {link.key} drives {len(rods)} slider rods "
+                   f"({', '.join(lk.key for lk, _ in rods)}): give the angle from +x"))
+        (rod, slider), = rods
+        through = ground[pivot] if slider.through[1] is None else slider.through
+        hint = self.raw.get("assembly")
+        hint = hint.get(slider.point) if isinstance(hint, dict) else None
+        if isinstance(hint, list) and len(hint) == 2:
+            try:
+                hint = tuple(self.length(c, "assembly", slider.point, positive=False)
+                             for c in hint)
+            except SceneError:
+                hint = None  # refused when [assembly] is read, by its own key
+        return candidates(ground[pivot], link.length, rod.length, through, slider.u, hint,
+                          (self.unit, self.scale()))
+
+    def input(self, index, ground):
+        if "input" not in self.raw:
+            raise SceneError("missing [input] table: which link is the crank, its angle and "
+                             "speed", file=self.file, key="[input]")
+        spec = self.table("input")
+        second = None
+        if "second" in spec:  # a second driving crank: two degrees of freedom
+            second = self.second_input(spec["second"], ground)
+            spec = {k: v for k, v in spec.items() if k != "second"}
+        placed = None
+        at = [k for k in spec if k.partition("_")[0] in ("length", "s", "angle")
+              and k.partition("_")[2]]
+        if at:  # the position given otherwise than by the crank's angle
+            if "angle" in spec or len(at) > 1:
+                raise self.error(f"[input] gives the position twice ({', '.join(['angle'] * ('angle' in spec) + at)}): "
+                                 "one only (the crank's angle is then found)", "input", at[-1])
+            placed = self.placed_at(at[0], spec[at[0]], spec.get("near"))
+            spec = {k: v for k, v in spec.items() if k not in (at[0], "near")}
+        elif "near" in spec:
+            raise self.error("near is a rough crank angle choosing among those that give a "
+                             "position stated otherwise (length_OR, s_B, angle_CD): there is "
+                             "none", "input", "near")
+        rates = {k: _given_key(k) for k in spec if k not in INPUT_KEYS}
+        for k, parsed in rates.items():
+            if parsed is None:
+                raise self.error(f"unknown key{_suggest(k, INPUT_KEYS)}; [input] takes crank, "
+                                 "angle, speed, acceleration, or the given motion named as an "
+                                 "answer key (omega_BC, vs_B, v_B and alpha_BC, as_B, a_B)",
+                                 "input", k)
+        given_keys = [k for k, p in rates.items() if p[0] in GIVEN_KINDS]
+        rate_keys = [k for k, p in rates.items() if p[0] not in GIVEN_KINDS]
+        if len(given_keys) > 1:
+            raise self.error(f"[input] gives the motion twice ({', '.join(given_keys)}): a "
+                             "mechanism of one degree of freedom takes one input", "input",
+                             given_keys[1])
+        if given_keys and "speed" in spec:
+            raise self.error(f"[input] gives both the crank's speed and {given_keys[0]}: one "
+                             "input only (remove speed to find the crank's from "
+                             f"{given_keys[0]})", "input", given_keys[0])
+        for k in ("crank",) + (() if placed else ("angle",)) + (() if given_keys else ("speed",)):
+            if k not in spec:
+                example = {"crank": "crank = \"AB\"", "angle": "angle = 60",
+                           "speed": "speed = \"10 rad/s ccw\""}[k]
+                raise self.error(f"[input] has no {k}: add e.g. {example}", "input")
+        link, pts = self.find_link(spec["crank"], "input", "crank")
+        on_ground = [p for p in pts if p in ground]
+        if not on_ground:
+            raise self.error(f"crank {link.key} is not pinned to the ground: neither "
+                             f"{pts[0]} nor {pts[1]} is in [ground]", "input", "crank")
+        if len(on_ground) == 2:
+            raise self.error(f"crank {link.key} has both ends in [ground]; it cannot turn",
+                             "input", "crank")
+        pivot = on_ground[0]
+        tip = link.other(pivot)
+        said = ()
+        if placed is not None:  # a provisional angle: the one that gives it is found later
+            spec = dict(spec, angle=math.degrees(placed.near) if placed.near is not None else 0)
+        if not is_book_form(spec["angle"]):
+            angle = self.qty(spec["angle"], "angle", "input", "angle", default_unit="deg").value
+        speed = None if given_keys else self.qty(spec["speed"], "angular_velocity", "input",
+                                                  "speed", need_sense=True)
+        if is_book_form(spec["angle"]):  # a dead centre is passed in the crank's sense
+            if given_keys and re.search(r"\b(past|before|after|beyond)\b", str(spec["angle"]),
+                                        re.IGNORECASE):
+                raise self.error(f"{spec['angle']!r}: past or before a dead centre follows the "
+                                 "crank's sense, which a given motion leaves to be found; give "
+                                 "the angle from +x, the horizontal or the vertical", "input",
+                                 "angle")
+            book = self.book_angle(spec["angle"], "angle", "input", "angle", "crank angle",
+                                   dead=lambda: self.dead_centres(link, pivot, tip, ground),
+                                   sense=None if speed is None else speed.value)
+            angle = book.value
+            said = (book.words, angle, book.slips, f"crank angle: {book.note}")
+        acc = spec.get("acceleration", 0 if not given_keys else None)
+        if acc is None:
+            alpha = None
+        elif isinstance(acc, (int, float)) and not isinstance(acc, bool) and acc == 0:
+            alpha = 0.0
+        else:
+            alpha = self.qty(acc, "angular_acceleration", "input", "acceleration",
+                             need_sense=True).value
+        if given_keys and second is not None:
+            raise self.error(f"{given_keys[0]} with two inputs: give each crank's speed (a "
+                             "motion given elsewhere sets one input only)", "input",
+                             given_keys[0])
+        if given_keys:
+            given = self.given_rate(given_keys[0], rate_keys, spec, index)
+            if given.rate is not None and "acceleration" in spec:
+                raise self.error(f"[input] gives both the crank's acceleration and "
+                                 f"{given.rate_key}: one only", "input", given.rate_key)
+            return Input(link.key, pivot, tip, angle, None, alpha, given.text, given,
+                         said=said, placed=placed)
+        if rate_keys:
+            raise self.error(f"{rate_keys[0]} is the rate of a given motion, but [input] gives "
+                             "the crank's speed: give the crank's acceleration instead",
+                             "input", rate_keys[0])
+        if speed.value == 0:
+            raise self.error("the crank speed is zero: nothing moves", "input", "speed")
+        self.two_inputs = second is not None
+        if second is not None and second.crank == link.key:
+            raise self.error(f"the second input is the crank {link.key} again: name another "
+                             "link pivoted on the ground", "input.second", "crank")
+        return Input(link.key, pivot, tip, angle, speed.value, alpha, str(spec["speed"]),
+                     said=said, second=second, placed=placed)
+
+    def placed_at(self, key, raw, near):
+        """``length_OR = 850`` (two points' distance, a cylinder's length), ``s_B = 300`` (a
+        slider's place on its path from its through point), ``angle_CD = 30`` (the direction
+        C -> D): the position as a book gives it; ``near``: a rough crank angle."""
+        kind, _, rest = key.partition("_")
+        names = split_name(rest)
+        if kind == "s":
+            sl = self.slider_points.get(names[0]) if len(names) == 1 else None
+            if not isinstance(sl, FixedPath):
+                raise self.error(f"s_{rest}: no slider {rest} on a fixed path in [sliders] (s_B "
+                                 "is B's place along its path, from its through point)",
+                                 "input", key)
+            value = self.length(raw, "input", key, positive=False)
+        elif kind == "length":
+            if len(names) != 2 or any(n not in self.known for n in names):
+                raise self.error(f"length_{rest}: two points of the scene, e.g. length_OR (the "
+                                 "distance O to R, a cylinder's length)", "input", key)
+            value = self.length(raw, "input", key)
+        else:
+            if len(names) != 2 or any(n not in self.known for n in names):
+                raise self.error(f"angle_{rest}: two points of the scene, e.g. angle_CD (the "
+                                 "direction C -> D)", "input", key)
+            value = self.qty(raw, "angle", "input", key, default_unit="deg").value
+        near_v = None if near is None else self.qty(near, "angle", "input", "near",
+                                                    default_unit="deg").value
+        text = printable(str(raw))
+        if isinstance(raw, (int, float)) and not isinstance(raw, bool):
+            text += " deg" if kind == "angle" else f" {self.unit}"
+        return PositionGiven(key, kind, tuple(names), value, near_v, text)
+
+    def second_input(self, spec, ground):
+        """``[input.second]``: a second driving crank, with its crank, angle, speed and
+        (optional) acceleration, read as the first's."""
+        if not isinstance(spec, dict):
+            raise self.error("the second input is a table: [input.second] with crank, "
+                             "angle, speed", "input", "second")
+        for k in spec:
+            if k not in INPUT_KEYS:
+                raise self.error(f"unknown key{_suggest(k, INPUT_KEYS)}; the second input "
+                                 "takes crank, angle, speed, acceleration", "input.second", k)
+        for k in ("crank", "angle", "speed"):
+            if k not in spec:
+                raise self.error(f"[input.second] has no {k}", "input.second")
+        link, pts = self.find_link(spec["crank"], "input.second", "crank")
+        on_ground = [p for p in pts if p in ground]
+        if len(on_ground) != 1:
+            raise self.error(f"the second crank {link.key} must turn about one ground point",
+                             "input.second", "crank")
+        pivot = on_ground[0]
+        angle = self.qty(spec["angle"], "angle", "input.second", "angle",
+                         default_unit="deg").value
+        speed = self.qty(spec["speed"], "angular_velocity", "input.second", "speed",
+                         need_sense=True)
+        if speed.value == 0:
+            raise self.error("the second crank's speed is zero: give it, or make it part of "
+                             "the frame", "input.second", "speed")
+        acc = spec.get("acceleration", 0)
+        alpha = 0.0 if (isinstance(acc, (int, float)) and not isinstance(acc, bool)
+                        and acc == 0) else self.qty(acc, "angular_acceleration",
+                                                    "input.second", "acceleration",
+                                                    need_sense=True).value
+        return Input(link.key, pivot, link.other(pivot), angle, speed.value, alpha,
+                     str(spec["speed"]))
+
+    def given_rate(self, key, rate_keys, spec, index) -> GivenRate:
+        """``omega_BC = "3 rad/s cw"``, ``vs_B = "1.5 m/s up"``, ``v_B = "3 m/s down"`` in
+        [input], with its rate (``alpha_BC``, ``as_B``, ``a_B``) if given."""
+        kind, names = _given_key(key)
+        rate_kind = GIVEN_KINDS[kind]
+        for r in rate_keys:
+            rk, rnames = _given_key(r)
+            if rk != rate_kind or rnames != names:
+                raise self.error(f"{r} does not go with {key}: the given motion's rate is "
+                                 f"{rate_kind}_{'-'.join(names) if len(names) > 1 and any(len(n) > 1 for n in names) else ''.join(names)}",
+                                 "input", r)
+        rate_key = rate_keys[0] if rate_keys else None
+        raw, raw_rate = spec[key], spec.get(rate_key) if rate_key else None
+        text = printable(str(raw))
+        rate_text = None if raw_rate is None else printable(str(raw_rate))
+        direction = None
+        if kind == "omega":
+            if len(names) != 2 or frozenset(names) not in index:
+                raise self.error(f"no link {''.join(names)} in [links]", "input", key)
+            value = self.qty(raw, "angular_velocity", "input", key, need_sense=True).value
+            rate = None if raw_rate is None else (
+                0.0 if raw_rate == 0 else self.qty(raw_rate, "angular_acceleration", "input",
+                                                   rate_key, need_sense=True).value)
+            names = index[frozenset(names)].points
+        else:
+            point = names[0] if len(names) == 1 else None
+            if kind == "vs" and point is None:  # a cylinder's rate of extension
+                cyl = self.find_cylinder(names)
+                if cyl is None:
+                    raise self.error(f"no cylinder {'-'.join(names)} in [cylinders]", "input",
+                                     key)
+                names, u = (cyl.key,), (1.0, 0.0)  # signed: + extending
+                raw = _extending(raw)
+                raw_rate = None if raw_rate is None else _extending(raw_rate)
+            elif kind == "vs":
+                sl = self.slider_points.get(point)
+                if sl is None:
+                    raise self.error(f"no slider {''.join(names)} in [sliders]", "input", key)
+                u = getattr(sl, "u", None)
+            else:
+                if point is None or point not in self.known:
+                    raise self.error(f"no point {''.join(names)} in the scene", "input", key)
+                u = None
+            value, direction = self.directed(raw, "velocity", key, u, need=kind == "v")
+            rate = None
+            if raw_rate is not None:
+                rate, _ = self.directed(raw_rate, "acceleration", rate_key,
+                                        u if kind == "vs" else None, need=False)
+        if value == 0:
+            raise self.error(f"{key} is zero: it does not set the crank's speed (give the "
+                             "crank's speed instead)", "input", key)
+        return GivenRate(key, kind, tuple(names), value, rate, direction, text, rate_key,
+                         rate_text)
+
+    def find_cylinder(self, names):
+        return next((c for c in self.cylinder_list if {c.barrel, c.rod} == set(names)), None)
+
+    def directed(self, raw, kind, key, u, need):
+        """A speed (or its rate) with an optional direction word: ``"3 m/s down"``,
+        ``"1.5 m/s up"``, ``"2 m/s at 30 deg"``. Returns (value, unit direction): with a
+        guide ``u``, the value is signed along u and the direction is u."""
+        text = raw.strip() if isinstance(raw, str) else raw
+        d = None
+        if isinstance(text, str):
+            m = _DIRECTED.match(text)
+            if m:
+                text, word, ang = m.group(1), m.group(2), m.group(3)
+                if ang is not None:
+                    d = _unit_at(self.qty(ang, "angle", "input", key, default_unit="deg").value)
+                else:
+                    d = _WORDS[word.lower().rstrip("s").replace("to the ", "").replace("ward", "")]
+        value = self.qty(text, kind, "input", key, default_unit=next(iter(UNITS[kind]))).value
+        if u is not None:
+            if d is not None:
+                along = d[0] * u[0] + d[1] * u[1]
+                if abs(along) < 1e-9:
+                    raise self.error(f"{raw!r}: the guide is perpendicular to that direction; "
+                                     "give the speed along the guide, signed, or up, down, "
+                                     "left, right", "input", key)
+                value = value * (1.0 if along > 0 else -1.0)
+            return value, tuple(u)
+        if d is None:
+            if need:
+                raise self.error(f"{raw!r}: say which way the point moves, e.g. \"3 m/s down\" "
+                                 "or \"3 m/s at 240 deg\" (up, down, left, right or an angle)",
+                                 "input", key)
+            return value, None
+        return value, d
