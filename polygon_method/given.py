@@ -40,6 +40,7 @@ import math
 from dataclasses import replace
 
 from .errors import TOL, SingularStepError
+from .numbers import sense
 from .plan import Context, Plan
 from .scene import GIVEN_KINDS
 
@@ -60,25 +61,14 @@ class Resolution:
         self.condition, self.notes = condition, notes
 
 
-def quantity(given, m, direction=None):
-    """(value, rate) of the given kind of quantity in a filled State ``m``."""
-    kind, names = given.kind, given.names
-    if kind == "omega":
-        key = _link_key(m, names)
+def quantity(given, m, scene):
+    """(value, rate) of a given angular velocity or sliding velocity in a filled State
+    ``m`` (a point's speed is read along its motion where it is resolved)."""
+    if given.kind == "omega":
+        key = scene.link("-".join(given.names)).key
         return m.W[key], m.Al[key]
-    if kind == "vs":
-        s = m.S[names[0]]
-        return s[0], s[1]
-    (vx, vy), (ax, ay) = m.V[names[0]], m.A[names[0]]
-    dx, dy = direction
-    return vx * dx + vy * dy, ax * dx + ay * dy
-
-
-def _link_key(m, names):
-    for key in m.W:
-        if key.replace("-", "") in ("".join(names), "".join(reversed(names))):
-            return key
-    raise KeyError(names)
+    s = m.S[given.names[0]]
+    return s[0], s[1]
 
 
 def resolve(plan: Plan) -> Resolution:
@@ -123,7 +113,7 @@ def resolve(plan: Plan) -> Resolution:
         if given.rate is None and inp.alpha is None:
             alpha = -omega * omega * h / y1  # steady: the rate of change of speed is 0
     else:
-        y1, h = quantity(given, m)
+        y1, h = quantity(given, m, sc)
         size = 1.0 if given.kind == "omega" else r
         cond = abs(y1) / size
         _check(cond, label, given, inp)
@@ -189,7 +179,7 @@ def working(plan, fmt) -> list:
            f"velocity polygon for omega_{c} = 1 rad/s ccw: on it {what} = "
            f"{fmt(res.per_omega)} {unit}; every velocity is proportional to omega_{c}, so "
            f"omega_{c} = {fmt(g.value)} / {fmt(res.per_omega)} = {fmt(abs(res.omega))} rad/s "
-           f"{_sense(res.omega)}"]
+           f"{sense(res.omega)}"]
     if res.rate is not None:
         rate_key = g.rate_key or _rate_key(g)
         out.append(f"the acceleration polygon for the crank turning uniformly at 1 rad/s "
@@ -198,15 +188,11 @@ def working(plan, fmt) -> list:
                    f"omega_{c}^2 x (that acceleration polygon), so alpha_{c} = "
                    f"({fmt(res.rate)} - {fmt(res.omega)}^2 x {fmt(res.per_omega2)}) / "
                    f"{fmt(res.per_omega)} = {fmt(abs(res.alpha))} rad/s^2 "
-                   f"{_sense(res.alpha)}")
+                   f"{sense(res.alpha)}")
     if res.condition < TOL.warn:
         out.append(f"condition {res.condition:.3g}: near a dead centre for this input, the "
                    "crank's speed is very sensitive to the given motion")
     return out
-
-
-def _sense(x):
-    return "ccw" if x > 0 else ("cw" if x < 0 else "")
 
 
 def held(plan, theta):
@@ -232,7 +218,7 @@ def held(plan, theta):
             value = g.value
             rate = None if res.rate is None else (res.rate if g.value > 0 else -res.rate)
         else:
-            y1, h = quantity(g, m)
+            y1, h = quantity(g, m, plan.scene)
             value, rate = g.value, res.rate
         size = 1.0 if g.kind == "omega" else plan.scene.link(inp.crank).length
         # where the quantity hardly moves the crank's speed is unbounded (as resolve says)

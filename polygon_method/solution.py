@@ -171,7 +171,7 @@ class Solution(Motion):
                 if len(r.bodies) > 2:
                     entry["pairs"] = dict(r.pairs)
                 d["pins"][name] = entry
-        if sc.loads and inp_second_free(sc):
+        if sc.loads and sc.input.second is None:  # two inputs: no one torque
             d["input_torque"] = self.input_torque
         inp = sc.input
         d["input"] = {"crank": inp.crank, "angle": inp.angle, "omega": inp.omega,
@@ -260,10 +260,6 @@ def solve(scene: Scene) -> Solution:
 
 _new = object.__new__
 
-
-def inp_second_free(sc) -> bool:
-    """One input: the power balance gives its torque (two inputs: not one torque each)."""
-    return sc.input.second is None
 
 
 def tidied(sol: Solution) -> Solution:

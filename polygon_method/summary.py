@@ -82,7 +82,7 @@ class Summary:
                                                     " (steady)"
                                                     if compile_plan(sc).given.rate is not None
                                                     else ", the crank's alpha constant")
-                    + f" at every angle (the crank's speed follows); ")
+                    + " at every angle (the crank's speed follows); ")
         else:
             held = (f"crank {inp.crank} at {abs(inp.omega):.6g} rad/s "
                     f"{'ccw' if inp.omega > 0 else 'cw'}"
@@ -185,9 +185,7 @@ class _Reducer:
         if getattr(plan, "pins", ()):
             for pin, r in rubbing_arrays(plan, fr.W, fr.n).items():
                 yield f"rub_{pin}", "m/s", r, "rubbing"
-        omega = fr.W[sc.link(sc.input.crank).key] if sc.input.given is not None \
-            else self.sw.omega  # a given motion held: the crank's speed follows
-        t = torque_array(sc, fr.V, fr.W, omega, fr.n)
+        t = torque_array(sc, fr.V, fr.W, self.sw.omega, fr.n)
         if t is not None:
             yield "torque", "N m", t, "input torque, ccw +"
         for st in branch_steps(plan):

@@ -137,6 +137,10 @@ def rubbing_arrays(plan, W, n):
 
 
 def torque_array(scene, V, W, omega, n):
+    """The input torque over a sweep (``omega`` the crank's; where the motion is given
+    on another quantity and held, the crank's speed at each angle, ``W`` of the crank)."""
+    if scene.input.given is not None:
+        omega = W[scene.link(scene.input.crank).key]
     t = input_torque(scene, V, W, omega)
     return None if t is None else np.broadcast_to(t, (n,)) + 0.0
 
@@ -248,9 +252,7 @@ def sweep(scene: Scene, angles=None, *, chunk: int = CHUNK) -> SweepResult:
         th = th[~bad]
     n = len(th)
     rub = rubbing_arrays(plan, fr.W, n)
-    crank = scene.link(scene.input.crank).key
-    omega = fr.W[crank] if scene.input.given is not None else sw.omega
-    torque = torque_array(scene, fr.V, fr.W, omega, n)
+    torque = torque_array(scene, fr.V, fr.W, sw.omega, n)
     return SweepResult(scene, plan, th, fr.P, fr.V, fr.A, fr.W, fr.Al, fr.S, fr.cond, rub,
                        torque, len(th_req), len(th_req) - n, sw.domain, tuple(notes))
 

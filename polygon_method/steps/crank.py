@@ -142,14 +142,19 @@ class Crank(Step):
         r; its velocity and acceleration are made from T - O, so they err relative to the
         tip's own motion (omega r, (omega^2 + |alpha|) r) by the rounding of the
         coordinates over r."""
-        P, sizes, inp = walk.P, walk.sizes, walk.motion.scene.input
+        P, sizes = walk.P, walk.sizes
+        omega, alpha = self.rates(walk.motion.scene)
         (ox, oy), (tx, ty) = P[self.pivot], P[self.tip]
         r = vhypot(tx - ox, ty - oy)
         p = self.rounding * EPS * (vhypot(ox, oy) + r) / sizes["position"]
         gain = self.rounding * EPS * vmax((vhypot(ox, oy) + vhypot(tx, ty)) / r, 1.0)
-        v = gain * abs(inp.omega) * r / sizes["velocity"]
-        a = gain * (inp.omega ** 2 + abs(inp.alpha)) * r / sizes["acceleration"]
+        v = gain * abs(omega) * r / sizes["velocity"]
+        a = gain * (omega ** 2 + abs(alpha)) * r / sizes["acceleration"]
         return p, v, a, v, a
+
+    def rates(self, scene):
+        """(omega, alpha) the crank is driven at: the scene's input."""
+        return scene.input.omega, scene.input.alpha
 
     # ----- words
     def singular_why(self, c) -> str:
@@ -179,6 +184,10 @@ class Crank(Step):
         return (f"{self.pivot}{self.tip}: from {self.pivot} draw {self.pivot}{self.tip} = "
                 f"{L(self.length)} at {angle_deg} deg")
 
+    #: the words a construction sentence opens with, and says of a crank with no alpha
+    lead = ""
+    uniform = " (no tangential component: the crank turns uniformly)"
+
     def construction(self, sol, ph):
         O, T = self.pivot, self.tip
         cond = sol.conditions.get(self.index, 1.0)
@@ -187,7 +196,7 @@ class Crank(Step):
             V = sol.V
             w = sol.W[self.link]
             v = absolute(sol, T, V, ph)
-            text = (f"from {pole_text(sol, O, ph)} draw {lab(O)}{lab(T)} "
+            text = (f"{self.lead}from {pole_text(sol, O, ph)} draw {lab(O)}{lab(T)} "
                     f"perpendicular to {O}{T}, = omega x {O}{T} = "
                     f"{abs(w):.4g} x {self.length:.4g} = {v.magnitude:.4g} m/s")
             return Construction(self.index, self.title, ph, lab(T), V[T], (), (), (v,),
@@ -199,9 +208,9 @@ class Crank(Step):
         tan = Vector(cen.end, A[T], f"{lab(T)}t", "tangential", f"tangential of {T}{O}",
                      f"alpha x {O}{T} = {abs(al) * math.hypot(*r):.4g} m/s^2, "
                      f"perpendicular to {O}{T}")
-        text = (f"from {pole_text(sol, O, ph)} draw the centripetal component {cen.text}"
-                + (f"; add the tangential component {tan.text}" if al else
-                   " (no tangential component: the crank turns uniformly)")
+        text = (f"{self.lead}from {pole_text(sol, O, ph)} draw the centripetal component "
+                f"{cen.text}" + (f"; add the tangential component {tan.text}" if al else
+                                 self.uniform)
                 + f"; its end is {lab(T)}")
         found = (cen, tan, absolute(sol, T, A, ph)) if al else (cen, absolute(sol, T, A, ph))
         return Construction(self.index, self.title, ph, lab(T), A[T], (cen,), (), found, text,

@@ -20,7 +20,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .base import Construction, Step, Vector, absolute, centripetal, image_label, pole_text, sub
+from .base import Step
 from .crank import Crank, acceleration, velocity
 
 __all__ = ["SecondCrank"]
@@ -87,64 +87,20 @@ class SecondCrank(Crank):
 
         return position, velocity_, acceleration_
 
-    rounding = 8.0
+    def rates(self, scene):
+        """(omega, alpha) it is driven at: its own (the first crank's error rule)."""
+        return self.omega, self.alpha
 
-    def error_bound(self, walk, k, p_in, v_in, a_in):
-        """As the first crank's: its tip relative to its own motion."""
-        from .rounding import EPS, vhypot, vmax
-        P, sizes = walk.P, walk.sizes
-        (ox, oy), (tx, ty) = P[self.pivot], P[self.tip]
-        r = vhypot(tx - ox, ty - oy)
-        p = self.rounding * EPS * (vhypot(ox, oy) + r) / sizes["position"]
-        gain = self.rounding * EPS * vmax((vhypot(ox, oy) + vhypot(tx, ty)) / r, 1.0)
-        v = gain * abs(self.omega) * r / sizes["velocity"]
-        a = gain * (self.omega ** 2 + abs(self.alpha)) * r / sizes["acceleration"]
-        return p, v, a, v, a
+    # ----- words (the rest, and the error bound, are the first crank's)
+    lead = "the second input: "
+    uniform = ""
 
-    # ----- words
     def singular_why(self, c) -> str:
         return f"the second crank {self.link} is never singular (condition {c:.2g})"
-
-    def warning(self, c) -> str:
-        return f"{self.label}: condition {c:.3g}"
-
-    def limit_why(self) -> str:
-        return "the linkage cannot be assembled beyond it"
-
-    def condition_column(self):
-        return None
-
-    def transmission(self):
-        return None
 
     def position_words(self, L, which, angle_deg):
         return (f"{self.pivot}{self.tip}: from {self.pivot} draw {self.pivot}{self.tip} = "
                 f"{L(self.length)} at {math.degrees(self.angle):.5g} deg (the second input)")
-
-    def construction(self, sol, ph):
-        O, T = self.pivot, self.tip
-        cond = sol.conditions.get(self.index, 1.0)
-        lab = lambda p: image_label(sol, p, ph)  # noqa: E731
-        if ph == "velocity":
-            v = absolute(sol, T, sol.V, ph)
-            text = (f"the second input: from {pole_text(sol, O, ph)} draw {lab(O)}{lab(T)} "
-                    f"perpendicular to {O}{T}, = omega x {O}{T} = {abs(self.omega):.4g} x "
-                    f"{self.length:.4g} = {v.magnitude:.4g} m/s")
-            return Construction(self.index, self.title, ph, lab(T), sol.V[T], (), (), (v,),
-                                text, cond)
-        A = sol.A
-        cen = centripetal(sol, T, O, self.link, ph)
-        r = sub(sol.P[T], sol.P[O])
-        tan = Vector(cen.end, A[T], f"{lab(T)}t", "tangential", f"tangential of {T}{O}",
-                     f"alpha x {O}{T} = {abs(self.alpha) * math.hypot(*r):.4g} m/s^2, "
-                     f"perpendicular to {O}{T}")
-        text = (f"the second input: from {pole_text(sol, O, ph)} draw the centripetal "
-                f"component {cen.text}" + (f"; add the tangential component {tan.text}"
-                                           if self.alpha else "") + f"; its end is {lab(T)}")
-        found = (cen, tan, absolute(sol, T, A, ph)) if self.alpha else \
-            (cen, absolute(sol, T, A, ph))
-        return Construction(self.index, self.title, ph, lab(T), A[T], (cen,), (), found, text,
-                            cond)
 
 
 def _theta2(ctx, prm):
