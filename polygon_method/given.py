@@ -171,8 +171,7 @@ def working(plan, fmt) -> list:
     if res is None:
         return None
     g, c = inp.given, inp.crank
-    what = {"omega": f"omega_{''.join(g.names)}", "vs": f"vs_{g.names[0]}",
-            "v": f"v_{g.names[0]} (along its motion)"}[g.kind]
+    what = g.key + (" (along its motion)" if g.kind == "v" else "")
     unit = "rad/s" if g.kind == "omega" else "m/s"
     rate_unit = "rad/s^2" if g.kind == "omega" else "m/s^2"
     out = [f"the motion is given: {g.key} = {g.text} = {fmt(g.value)} {unit}; draw the "
@@ -186,7 +185,7 @@ def working(plan, fmt) -> list:
                    f"gives {rate_key} = {fmt(res.per_omega2)} {rate_unit}; every "
                    f"acceleration is alpha_{c} x (the velocity polygon at 1 rad/s) + "
                    f"omega_{c}^2 x (that acceleration polygon), so alpha_{c} = "
-                   f"({fmt(res.rate)} - {fmt(res.omega)}^2 x {fmt(res.per_omega2)}) / "
+                   f"({fmt(res.rate)} - {fmt(abs(res.omega))}^2 x {fmt(res.per_omega2)}) / "
                    f"{fmt(res.per_omega)} = {fmt(abs(res.alpha))} rad/s^2 "
                    f"{sense(res.alpha)}")
     if res.condition < TOL.warn:

@@ -258,8 +258,9 @@ def _input(doc, sol):
     if inp.alpha:
         items.append(f"alpha_{inp.crank} = {fmt(abs(inp.alpha))} rad/s^2 "
                      f"{sense_word(inp.alpha)} "
-                     + ("(given)" if inp.given is None or inp.given.rate is None
-                        else f"(found from {inp.given.rate_key}, above)"))
+                     + ("(given)" if inp.given is None
+                        else f"(found from {inp.given.rate_key or 'the given motion'}, "
+                             "above)"))
     else:
         items.append(f"alpha_{inp.crank} = 0 (the crank turns at a uniform speed)")
     two = inp.second
@@ -380,7 +381,9 @@ def _angular_velocity_items(sol):
         w = sol.shown(sol.W[lk.key], "omega")
         v = sol.shown(sol.speed(lk.q, lk.p), "v")
         if lk.key == sc.input.crank:
-            items.append(f"omega_{lk.key} = {fmt(abs(w))} rad/s {sense_word(w)} (the input)")
+            items.append(f"omega_{lk.key} = {fmt(abs(w))} rad/s {sense_word(w)} "
+                         + ("(the input)" if sc.input.given is None
+                            else f"(the crank's, found from {sc.input.given.key})"))
             continue
         rel = _key("v", (lk.q, lk.p))
         items.append(f"omega_{lk.key} = {rel} / {lk.key} = {fmt(v)} / {fmt(lk.length, 5)} = "
@@ -557,8 +560,9 @@ def _acceleration(doc, sol, ascale):
             continue
         al = sol.shown(sol.Al[lk.key], "alpha")
         if lk.key == sc.input.crank:
-            items.append(f"alpha_{lk.key} = {fmt(abs(al))} rad/s^2 {sense_word(al)} "
-                         "(the input)".replace("  ", " "))
+            items.append((f"alpha_{lk.key} = {fmt(abs(al))} rad/s^2 {sense_word(al)} "
+                          + ("(the input)" if sc.input.given is None
+                             else "(the crank's, found above)")).replace("  ", " "))
             continue
         X, Y = orient[lk.key]
         tan = abs(al) * lk.length
