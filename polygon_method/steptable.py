@@ -388,6 +388,12 @@ def _angular_velocity_items(sol):
         rel = _key("v", (lk.q, lk.p))
         items.append(f"omega_{lk.key} = {rel} / {lk.key} = {fmt(v)} / {fmt(lk.length, 5)} = "
                      f"{fmt(abs(w))} rad/s {sense_word(w)}".rstrip())
+    for c in sc.cylinders:  # the barrel's point under the rod's end: omega x its length
+        w = sol.shown(sol.W[c.key], "omega")
+        L = sol.cylinder_length(c.key)
+        items.append(f"omega_{c.key} = (the barrel's point under {c.rod}) / {c.barrel}{c.rod} "
+                     f"= {fmt(abs(w) * L)} / {fmt(L, 5)} = {fmt(abs(w))} rad/s "
+                     f"{sense_word(w)}".rstrip())
     return items
 
 

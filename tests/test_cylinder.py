@@ -234,3 +234,16 @@ def test_variants_of_a_given_motion_cannot_vary_the_crank_speed(tmp_path, capsys
     assert main(["variants", str(f), "--count", "2", "-o", str(tmp_path / "v")]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and "[variants] speed" in err and "vs_OR" in err
+
+
+def test_step_table_reads_the_cylinder_omega_off_the_polygon():
+    """The step table's omega of the cylinder: the barrel's point under the rod's end over
+    the cylinder's length, equal to the reference's omega (four figures, as printed)."""
+    from polygon_method.steptable import steps_text
+    sc = parse_scene(TIPPER.format(ox=-1500, oy=-300, stroke="", angle=150,
+                                   given='speed = "0.2 rad/s cw"'))
+    sol = solve(sc)
+    ref = reference_solution(sc, dict(sol.P))
+    w = float(_cyl_ref(ref, "O", "R")[3])
+    line = next(x for x in steps_text(sol).splitlines() if "omega_O-R =" in x)
+    assert f"= {float(f'{abs(w):.4g}'):g} rad/s {'ccw' if w > 0 else 'cw'}" in line, line
