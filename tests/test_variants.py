@@ -306,7 +306,7 @@ def test_a_bad_variants_table_is_one_located_line(tmp_path, capsys, line, words)
     text = FOURBAR.split("[variants]")[0] + "[variants]\n" + line + "\n"
     n = text.splitlines().index(line) + 1
     base = _write(tmp_path, text)
-    assert main(["solve", str(base)]) == 2
+    assert main(["variants", str(base), "-o", str(tmp_path / "out")]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1
     assert f"base.toml: [variants] {line.split()[0]} (line {n}): " in err

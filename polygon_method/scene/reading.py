@@ -11,6 +11,11 @@ import tomllib
 from dataclasses import replace
 from pathlib import Path
 
+try:  # a compiled TOML reader: a scene in a twentieth of tomllib's time
+    import rtoml as _fast_toml
+except ImportError:  # pragma: no cover - the pure-Python reader does it all, slower
+    _fast_toml = None
+
 from ..errors import PolygonMethodError, SceneError, printable
 from ..units import LENGTH_UNITS, UNITS, parse_quantity
 from .rolling import read_rolling
@@ -28,8 +33,10 @@ MAX_SCENE_BYTES = 1 << 20
 MAX_POINTS = 20000
 
 
-def load_scene(path) -> Scene:
-    """Read and check a scene file. Raises :class:`SceneError` naming file, key and line."""
+def load_scene(path, *, variants: bool = True) -> Scene:
+    """Read and check a scene file. Raises :class:`SceneError` naming file, key and line.
+    With ``variants=False`` the ``[variants]`` table is left unread (``scene.variation``
+    is None): for a command that makes no variants, which need not pay for reading it."""
     path = _path_of(path, "scene")
     try:
         data = _read_start(path)
@@ -51,7 +58,7 @@ def load_scene(path) -> Scene:
         raise SceneError(f"not UTF-8 text (byte {exc.start}); save the scene as UTF-8",
                          file=str(path)) from None
     try:
-        return parse_scene(text, file=str(path))
+        return parse_scene(text, file=str(path), variants=variants)
     except PolygonMethodError as exc:
         raise exc.located(str(path))
 
@@ -93,7 +100,30 @@ def _path_of(path, what) -> Path:
     return Path(path)
 
 
-def parse_scene(text: str, file: str | None = None) -> Scene:
+def toml_table(text: str) -> dict:
+    """The TOML table of ``text``: read by the compiled reader where it reads it, else by
+    ``tomllib``, whose errors (:class:`tomllib.TOMLDecodeError`, ``RecursionError``) are
+    the ones this module words. The compiled reader is tried first for speed only: where it
+    fails (too deep, an integer past 64 bits, a float past the largest, bad syntax) tomllib
+    reads the text again, so every text tomllib reads gives the same table, and every text
+    it refuses is refused in the same words, except what TOML 1.1 added (a newline or a
+    trailing comma in an inline table, ``\\e`` and ``\\xHH`` escapes, times without
+    seconds), which is read.
+
+    >>> toml_table("a = 1\\n[b]\\nc = 'x'")
+    {'a': 1, 'b': {'c': 'x'}}
+    >>> toml_table('a = 9223372036854775808')   # past 64 bits: tomllib reads it
+    {'a': 9223372036854775808}
+    """
+    if _fast_toml is not None:
+        try:
+            return _fast_toml.loads(text)
+        except Exception:  # noqa: BLE001 - any refusal: tomllib reads it, or words why not
+            pass
+    return tomllib.loads(text)
+
+
+def parse_scene(text: str, file: str | None = None, *, variants: bool = True) -> Scene:
     """Parse scene text (TOML). See :func:`load_scene`."""
     if isinstance(text, (bytes, bytearray)):
         raise SceneError("the scene's text is needed as a str: decode the bytes (UTF-8), or "
@@ -105,7 +135,7 @@ def parse_scene(text: str, file: str | None = None) -> Scene:
         raise SceneError("the file is empty; a scene needs [ground], [links] and [input]",
                          file=file)
     try:
-        raw = tomllib.loads(text)
+        raw = toml_table(text)
     except tomllib.TOMLDecodeError as exc:
         raise _syntax_error(str(exc), text, file) from None
     except RecursionError:
@@ -115,7 +145,9 @@ def parse_scene(text: str, file: str | None = None) -> Scene:
     if not raw:
         raise SceneError("the file has no tables or keys (only comments); a scene needs "
                          "[ground], [links] and [input]", file=file)
-    return _Loader(raw, text, file).scene()
+    loader = _Loader(raw, text, file)
+    loader.read_variants = variants
+    return loader.scene()
 
 
 def toml_lines(text: str) -> list:
@@ -128,7 +160,7 @@ def toml_lines(text: str) -> list:
 def scene_table(scene: Scene) -> dict:
     """The TOML table a scene was read from (its text parsed again), for making variants
     of it; empty for a scene not read from text."""
-    return tomllib.loads("\n".join(scene._lines)) if scene._lines else {}
+    return toml_table("\n".join(scene._lines)) if scene._lines else {}
 
 
 def scene_from_table(raw: dict, file: str | None = None) -> Scene:
@@ -176,6 +208,57 @@ def line_of(lines, table: str | None, key: str | None = None):
             if dotted.match(line):
                 return i
     return None
+
+
+def _unquoted(name):
+    """A key as written before its ``=``, without the spaces after it and one quote on each
+    side."""
+    name = name.rstrip()
+    if name.startswith('"'):
+        name = name[1:]
+    return name[:-1] if name.endswith('"') else name
+
+
+class LineIndex:
+    """Every ``[table] key``'s line in one pass over the lines, found as :func:`line_of`
+    finds them one at a time (the first key line of the table's section, else the first
+    dotted ``table.key =`` line; a header's own line for ``key=None``), for a reader that
+    asks for many: the lines of a scene's answers.
+
+    >>> ix = LineIndex(['a = 1', '[t]', 'k = 2', '"O-R" = {x = 1}', 'u.w = 3'])
+    >>> ix('t', 'k'), ix('t', 'O-R'), ix('t', None), ix(None, 'a'), ix('u', 'w'), ix('t', 'z')
+    (3, 4, 2, 1, 5, None)
+    """
+
+    def __init__(self, lines):
+        self.keys, self.headers, self.dotted = {}, {}, {}
+        current = None
+        for i, line in enumerate(lines, 1):
+            head = line.lstrip()
+            if head.startswith("["):
+                m = _HEADER.match(line)
+                if m:
+                    current = m.group(1).strip('"')
+                    self.headers.setdefault(current, i)
+                    continue
+            cut = head.find("=")
+            if cut < 0:
+                continue
+            name = _unquoted(head[:cut])
+            self.keys.setdefault((current, name), i)
+            table, dot, rest = name.partition(".")
+            if dot:
+                table = _unquoted(table)
+                if table and not any(c in table for c in '"= \t'):
+                    self.dotted.setdefault((table, _unquoted(rest.lstrip())), i)
+
+    def __call__(self, table: str | None, key: str | None = None):
+        if key is None:
+            return self.headers.get(table)
+        found = self.keys.get((table, key))
+        if found is None and table:
+            found = self.dotted.get((table, key))
+        return found
 
 
 def key_line(scene, key: str | None):
@@ -291,8 +374,12 @@ class _Loader(_Tables, _Input, _Variants):
 
     # -- locations
     def line_of(self, table: str | None, key: str | None = None):
-        """Line number of ``[table] key`` (or of the table header) in the file, if found."""
-        return line_of(self.lines, table, key)
+        """Line number of ``[table] key`` (or of the table header) in the file, if found
+        (all of them found in one pass, the first time one is asked for)."""
+        index = self.__dict__.get("_line_index")
+        if index is None:
+            index = self._line_index = LineIndex(self.lines)
+        return index(table, key)
 
     def error(self, message, table=None, key=None, cls=SceneError):
         label = f"[{table}] {key}" if table and key else (f"[{table}]" if table else key)
@@ -453,7 +540,8 @@ class _Loader(_Tables, _Input, _Variants):
         if len(known) > MAX_POINTS:
             raise SceneError(f"the scene has {len(known)} points: at most {MAX_POINTS} (a "
                              "mechanism of a textbook has a few dozen)", file=self.file)
-        variation = self.variation(inp, ground, sliders, loads)
+        variation = self.variation(inp, ground, sliders, loads) \
+            if getattr(self, "read_variants", True) else None
         variant = self.variant_of()
         return Scene(title=title, units=units, ground=ground, links=tuple(links),
                      points=tuple(points), sliders=tuple(sliders), assembly=assembly,
@@ -537,7 +625,7 @@ def parse_answers(text: str, scene: Scene, file: str | None = None, *,
         raise SceneError(f"a Scene is needed to read answers against, not "
                          f"{type(scene).__name__}", file=file)
     try:
-        raw = tomllib.loads(text)
+        raw = toml_table(text)
     except tomllib.TOMLDecodeError as exc:
         raise _syntax_error(str(exc), text, file) from None
     for key in raw:

@@ -1,0 +1,94 @@
+"""The scene reader's speed-ups read exactly what the slow path reads.
+
+* ``toml_table`` (a compiled TOML reader first, tomllib where it refuses) gives the table
+  tomllib gives for every TOML file in the repository and for every one-line deletion and
+  duplication of them; where tomllib refuses a text, the scene reader's message is the one
+  it gives with tomllib alone.
+* ``LineIndex`` (every key's line in one pass) finds the line ``line_of`` finds one key at
+  a time, for every table and key of every file, and for keys that are not there.
+* A command that makes no variants does not read ``[variants]``.
+"""
+
+import tomllib
+from pathlib import Path
+
+import pytest
+
+from polygon_method.cli import main
+from polygon_method.errors import SceneError
+from polygon_method.scene import parse_scene
+from polygon_method.scene import reading
+from polygon_method.scene.reading import LineIndex, line_of, toml_lines, toml_table
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def _texts():
+    for f in sorted(ROOT.glob("worked_problems/*.toml")) + sorted(ROOT.glob("tests/**/*.toml")):
+        try:
+            yield f.name, f.read_text(encoding="utf-8")
+        except UnicodeDecodeError:  # the corpus of bad files holds some on purpose
+            continue
+
+
+TEXTS = list(_texts())
+
+
+def _variants(text):
+    lines = text.split("\n")
+    yield text
+    for i in range(len(lines)):
+        yield "\n".join(lines[:i] + lines[i + 1:])
+        yield "\n".join(lines[:i + 1] + lines[i:])
+
+
+def test_the_corpus_is_there():
+    assert len(TEXTS) > 40
+
+
+@pytest.mark.parametrize("name,text", TEXTS, ids=[n for n, _ in TEXTS])
+def test_the_fast_reader_reads_what_tomllib_reads(name, text, monkeypatch):
+    compared = refused = 0
+    for t in _variants(text):
+        try:
+            want = tomllib.loads(t)
+        except (tomllib.TOMLDecodeError, RecursionError):
+            with pytest.raises(SceneError) as fast:
+                parse_scene(t, file="x.toml")
+            with monkeypatch.context() as m:
+                m.setattr(reading, "_fast_toml", None)
+                with pytest.raises(SceneError) as slow:
+                    parse_scene(t, file="x.toml")
+            assert str(fast.value) == str(slow.value)
+            refused += 1
+            continue
+        assert repr(toml_table(t)) == repr(want)  # (nan is not nan: compared as text)
+        compared += 1
+    assert compared >= 1
+
+
+@pytest.mark.parametrize("name,text", TEXTS, ids=[n for n, _ in TEXTS])
+def test_the_line_index_finds_what_line_of_finds(name, text):
+    try:
+        raw = tomllib.loads(text)
+    except (tomllib.TOMLDecodeError, RecursionError):
+        raw = {}
+    lines = toml_lines(text)
+    index = LineIndex(lines)
+    asked = [(None, k) for k in raw] + [(t, None) for t in raw]
+    asked += [(t, k) for t, v in raw.items() if isinstance(v, dict) for k in v]
+    asked += [(t, f"{k}x") for t, k in asked if k] + [("nowhere", None), ("links", "ZZ")]
+    for table, key in asked:
+        assert index(table, key) == line_of(lines, table, key), (table, key)
+
+
+def test_a_command_that_makes_no_variants_does_not_read_them(tmp_path, capsys):
+    seed = (ROOT / "worked_problems" / "fourbar_image_points.toml").read_text()
+    broken = seed.replace("BC = { from = 60, to = 72, step = 1 }", "BC = { from = 60 }")
+    assert broken != seed
+    f = tmp_path / "s.toml"
+    f.write_text(broken)
+    assert main(["solve", str(f)]) == 0
+    assert main(["variants", str(f), "--count", "2", "-o", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "[variants] BC" in err[0] and "no to" in err[0]
