@@ -15,21 +15,16 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from .relations import rigid_acceleration, rigid_velocity
 from .base import Construction, Step, Vector, absolute, centripetal, image_label, pole_text, sub
 from .rounding import EPS, vhypot, vmax
 
 __all__ = ["Crank", "velocity", "acceleration"]
 
 
-def velocity(rx, ry, omega):
-    """v_T - v_O = omega perp(r), r = T - O."""
-    return -omega * ry, omega * rx
-
-
-def acceleration(rx, ry, omega, alpha):
-    """a_T - a_O = -omega^2 r + alpha perp(r)."""
-    k = omega * omega
-    return -k * rx - alpha * ry, -k * ry + alpha * rx
+#: the crank's pin relative to its pivot: the rigid-body relations (``relations``)
+velocity = rigid_velocity
+acceleration = rigid_acceleration
 
 
 @dataclass(frozen=True)

@@ -27,7 +27,8 @@ from ..numbers import in_units
 from .base import (Construction, DirectionLine, Step, Vector, add, image_label, perp,
                    pole_text, sub, unit)
 from .rounding import EPS, vhypot, vmax
-from .slotted import coriolis, velocity
+from .relations import coriolis
+from .slotted import velocity
 
 __all__ = ["CylinderStep", "velocity_of", "recognise"]
 

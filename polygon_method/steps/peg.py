@@ -30,6 +30,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from .relations import coriolis
 from ..errors import TOL, SingularStepError
 from ..scene import FixedPath, GuideSlider
 from .base import (Construction, DirectionLine, Step, Vector, absolute, add, image_label,
@@ -86,10 +87,6 @@ def under_point(gx, gy, x, y, w, al, vgx, vgy, agx, agy):
     return (under_velocity(gx, gy, x, y, w, vgx, vgy),
             under_acceleration(gx, gy, x, y, w, al, agx, agy))
 
-
-def coriolis(w, vs, ux, uy):
-    """2 omega_slot vs perp(u)."""
-    return -2 * w * vs * uy, 2 * w * vs * ux
 
 
 def recognise(g, name):

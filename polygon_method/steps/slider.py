@@ -21,6 +21,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from .relations import coriolis
 from ..numbers import in_units
 from ..scene import FixedPath, GuideSlider
 from .slotted import under_label
@@ -79,10 +80,6 @@ def acceleration(rx, ry, ux, uy, tx, ty, w, abx, aby, d=None):
     a_s = -(rx * qx + ry * qy) / d
     return al, a_s, abx - k * rx - al * ry, aby - k * ry + al * rx
 
-
-def coriolis(w, vs, ux, uy):
-    """2 omega_guide vs perp(u)."""
-    return -2 * w * vs * uy, 2 * w * vs * ux
 
 
 def recognise(g, name):

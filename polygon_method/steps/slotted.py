@@ -25,6 +25,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from .relations import coriolis
 from ..errors import TOL, SingularStepError
 from ..scene import GuideSlider
 from .rounding import C_FLOOR, vhypot, vmax
@@ -54,10 +55,6 @@ def velocity(dx, dy, ux, uy, ex, ey, d=None):
         d = -(dx * ux + dy * uy)
     return (ex * uy - ux * ey) / d, -(dx * ex + dy * ey) / d
 
-
-def coriolis(w, vs, ux, uy):
-    """2 omega_guide vs perp(u)."""
-    return -2 * w * vs * uy, 2 * w * vs * ux
 
 
 def acceleration(dx, dy, ux, uy, ex, ey, d=None):
