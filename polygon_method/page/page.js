@@ -437,7 +437,13 @@ function buildPlots() {
     svg.setAttribute("viewBox", "0 0 " + W + " " + H);
     // legend rows under the title, then the plot's area
     let lx = L, rows = 0;
-    const place = ss.map(() => { if (lx > W - R - 36) { lx = L; rows++; } const at = [lx, 28 + 12 * rows]; lx += 40; return at; });
+    const place = ss.map(([name]) => {
+      const w = 24 + 6 * (name[0].length + 0.75 * name[1].length);
+      if (lx + w > W - R && lx > L) { lx = L; rows++; }
+      const at = [lx, 28 + 12 * rows];
+      lx += w;
+      return at;
+    });
     const T = 36 + 12 * rows;
     // the range of most values (near a limit position they grow without bound: cut off)
     const all = [];
@@ -458,13 +464,14 @@ function buildPlots() {
       text(svg, {x: L - 3, y: r3(Y(y) + 3.5), class: "tick", "text-anchor": "end"}, fmt(y, 3));
     }
     const span = Math.abs(t1 - t0), dstep = [5, 10, 15, 30, 45, 60, 90, 180].find((s) => span / s <= 6) || 360;
-    for (const t of roundTicks(Math.min(t0, t1), Math.max(t0, t1), span / dstep).filter((t) => Math.abs(t / dstep - Math.round(t / dstep)) < 1e-6)) {
+    for (let j = Math.ceil(Math.min(t0, t1) / dstep - 1e-9); j * dstep <= Math.max(t0, t1) + 1e-9; j++) {
+      const t = j * dstep;  // a round angle, written between 0 and 360
       el(svg, "line", {x1: r3(X(t)), y1: T, x2: r3(X(t)), y2: H - B, class: "grid"});
-      text(svg, {x: r3(X(t)), y: H - B + 11, class: "tick", "text-anchor": "middle"}, deg(t) + "°");
+      text(svg, {x: r3(X(t)), y: H - B + 11, class: "tick", "text-anchor": "middle"}, String(((t % 360) + 360) % 360) + "°");
     }
     el(svg, "line", {x1: L, y1: T, x2: L, y2: H - B, class: "axis"});
     text(svg, {x: (L + W - R) / 2, y: H - 6, class: "axis-title", "text-anchor": "middle"},
-      "crank angle θ, as the crank turns (" + (t1 < t0 ? "cw" : "ccw") + ")");
+      D.fullTurn ? "crank angle θ, as the crank turns (" + (t1 < t0 ? "cw" : "ccw") + ")" : "crank angle θ, between the limit positions");
     text(svg, {x: 0, y: 0, class: "axis-title", "text-anchor": "middle", transform: "translate(10," + r3((T + H - B) / 2) + ") rotate(-90)"}, ytitle);
     const [ic, iw, idash] = D.style.marks.instant;
     el(svg, "line", {x1: r3(X(D.theta[D.start])), x2: r3(X(D.theta[D.start])), y1: T, y2: H - B, stroke: ic, "stroke-width": iw,
