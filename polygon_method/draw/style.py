@@ -41,13 +41,3 @@ LEGEND_NAMES = {"absolute": "total (from the pole)", "relative": "relative (betw
 BODY_FACE, BODY_EDGE = "#dde6f2", "#23395d"
 IMAGE_FACE = "#f4d35e"
 PITCH_STYLE = ("#333333", 0.7, (6.0, 2.0, 1.0, 2.0))  # pitch circles
-
-#: the plots' curves, in turn (matplotlib's own cycle, so the page's plots and
-#: ``sweep --plot`` colour a quantity alike), and the marks across them: the angle shown,
-#: the scene's stated instant, the limit positions, the change points (colour, pt, dashes)
-SERIES_COLORS = ("#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b",
-                 "#e377c2", "#7f7f7f", "#bcbd22", "#17becf")
-MARKS = {"now": ("#cc0000", 1.2, None), "instant": ("#4d4d4d", 0.8, (4.0, 2.0)),
-         "limit": ("#d62728", 0.8, (1.0, 2.0)), "change": ("#9467bd", 0.8, (4.0, 1.5, 1.0, 1.5))}
-MARK_NAMES = {"now": "the angle shown", "instant": "the scene's stated instant",
-              "limit": "a limit position", "change": "a change point"}

@@ -15,9 +15,10 @@ from __future__ import annotations
 import numpy as np
 
 from ..draw.style import (BODY_EDGE, BODY_FACE, HEAD_HALF, HEAD_LEN, IMAGE_FACE, LINE_STYLE,
-                          MARKS, PITCH_STYLE, SERIES_COLORS, STYLE)
+                          PITCH_STYLE, STYLE)
 from ..errors import TOL
 from ..numbers import quiet, sense
+from ..plots import MARKS, SERIES_COLORS
 from ..scales import DIAGRAMS, display_unit
 from ..scene import Link
 from ..steps import image_name, slot_labels, under_label

@@ -20,9 +20,9 @@ from html import escape
 from importlib.resources import files
 
 from ..check.verdicts import correct_text
-from ..draw.style import (BODY_EDGE, BODY_FACE, IMAGE_FACE, LEGEND_NAMES, LINE_STYLE, MARK_NAMES,
-                          MARKS, STYLE)
+from ..draw.style import BODY_EDGE, BODY_FACE, IMAGE_FACE, LEGEND_NAMES, LINE_STYLE, STYLE
 from ..numbers import fmt
+from ..plots import MARK_NAMES, MARKS
 from ..steptable import steps_blocks
 from ..words import given
 from .data import page_data
