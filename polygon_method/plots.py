@@ -14,7 +14,39 @@ from .solution import solve
 from .sweeps import SweepResult
 from .tracking import degrees_fn
 
-__all__ = ["plot_bytes", "plot_figure"]
+__all__ = ["plot_bytes", "plot_figure", "typeset", "SERIES_COLORS", "MARKS", "MARK_NAMES"]
+
+#: the plots' curves, in turn (matplotlib's own cycle, so the page's plots and
+#: ``sweep --plot`` colour a quantity alike), and the marks across them: the angle shown,
+#: the scene's stated instant, the limit positions, the change points (colour, pt, dashes)
+SERIES_COLORS = ("#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b",
+                 "#e377c2", "#7f7f7f", "#bcbd22", "#17becf")
+MARKS = {"now": ("#cc0000", 1.2, None), "instant": ("#4d4d4d", 0.8, (4.0, 2.0)),
+         "limit": ("#d62728", 0.8, (1.0, 2.0)), "change": ("#9467bd", 0.8, (4.0, 1.5, 1.0, 1.5))}
+MARK_NAMES = {"now": "the angle shown", "instant": "the scene's stated instant",
+              "limit": "a limit position", "change": "a change point"}
+
+_MATH_SPECIAL = {c: "\\" + c for c in "_$%#&{}"}
+_MATH_SPECIAL.update({"-": r"\text{-}", "^": r"\^{}", "~": r"\~{}", "\\": r"\backslash{}"})
+
+
+def typeset(symbol: str, name: str) -> str:
+    r"""A quantity's name as mathtext, its symbol with the point or link below:
+    ``typeset("omega", "BC")`` is ω with BC as a subscript.
+
+    >>> typeset("omega", "BC"), typeset("v", "O4-P")
+    ('$\\omega_{\\mathrm{BC}}$', '$v_{\\mathrm{O4\\text{-}P}}$')
+    """
+    safe = "".join(_MATH_SPECIAL.get(c, c) for c in name)
+    sym = "\\" + symbol if symbol in ("omega", "alpha") else symbol
+    return f"${sym}_{{\\mathrm{{{safe}}}}}$"
+
+
+def _mark(ax, x, kind):
+    color, lw, dashes = MARKS[kind]
+    line = ax.axvline(x, color=color, lw=lw)
+    if dashes:
+        line.set_dashes(dashes)
 
 
 
@@ -58,16 +90,16 @@ def plot_figure(res: SweepResult, *, points=None, links=None):
     fig = Figure(figsize=(10, 7.5), layout="constrained")
     axes = fig.subplots(2, 2, sharex=True)
     panels = [
-        (axes[0][0], "velocity (m/s)", [(f"v_{p}", res.speed(p), here.get(f"v_{p}"))
-                                        for p in pts]
-         + [(f"vs_{s.key}", res.S[s.key][0], here.get(f"vs_{s.key}"))
+        (axes[0][0], "speed v (m/s)", [(typeset("v", p), res.speed(p), here.get(f"v_{p}"))
+                                       for p in pts]
+         + [(typeset("v", "s," + s.key), res.S[s.key][0], here.get(f"vs_{s.key}"))
             for s in sc.sliders]),
-        (axes[1][0], "acceleration (m/s^2)",
-         [(f"a_{p}", res.acceleration_magnitude(p), here.get(f"a_{p}")) for p in pts]),
-        (axes[0][1], "angular velocity (rad/s, ccw +)",
-         [(f"omega_{k}", res.W[k], here.get(f"omega_{k}")) for k in keys]),
-        (axes[1][1], "angular acceleration (rad/s^2, ccw +)",
-         [(f"alpha_{k}", res.Al[k], here.get(f"alpha_{k}")) for k in keys]),
+        (axes[1][0], "acceleration a (m/s²)",
+         [(typeset("a", p), res.acceleration_magnitude(p), here.get(f"a_{p}")) for p in pts]),
+        (axes[0][1], "angular velocity ω (rad/s, ccw +)",
+         [(typeset("omega", k), res.W[k], here.get(f"omega_{k}")) for k in keys]),
+        (axes[1][1], "angular acceleration α (rad/s², ccw +)",
+         [(typeset("alpha", k), res.Al[k], here.get(f"alpha_{k}")) for k in keys]),
     ]
     clipped = False
     w, k = abs(sc.input.omega), sc.input.omega ** 2 + abs(sc.input.alpha)
@@ -75,9 +107,10 @@ def plot_figure(res: SweepResult, *, points=None, links=None):
     scales = [w * size, k * size, w, k]
     for (ax, label, series), unit_scale in zip(panels, scales):
         big = []
-        for name, y, y0 in series:
+        for i, (name, y, y0) in enumerate(series):
             yy = np.insert(np.asarray(y, dtype=float)[order], gaps, np.nan)
-            line, = ax.plot(x, yy, lw=1.2, label=name)
+            line, = ax.plot(x, yy, lw=1.2, label=name,
+                            color=SERIES_COLORS[i % len(SERIES_COLORS)])
             if y0 is not None:
                 ax.plot([t0], [y0], "o", color=line.get_color(), ms=5)
             if len(y):
@@ -96,18 +129,18 @@ def plot_figure(res: SweepResult, *, points=None, links=None):
             if hi - lo <= 1e-6 * size or size < 1e-8 * unit_scale:
                 pad = 0.1 * size if size >= 1e-8 * unit_scale else 1.0
                 ax.set_ylim(0.5 * (lo + hi) - pad, 0.5 * (lo + hi) + pad)
-        ax.axvline(t0, color="0.3", ls="--", lw=0.8)
+        _mark(ax, t0, "instant")
         show = degrees_fn(dom)
         for lp in res.limits:
-            ax.axvline(show(lp.theta), color="tab:red", ls=":", lw=0.8)
+            _mark(ax, show(lp.theta), "limit")
         for cp in res.change_points:
-            ax.axvline(show(cp.theta), color="tab:purple", ls="-.", lw=0.8)
+            _mark(ax, show(cp.theta), "change")
         ax.set_ylabel(label)
         ax.grid(True, lw=0.3)
         if series:
-            ax.legend(fontsize=7, ncol=2)
+            ax.legend(fontsize=8, ncol=2)
     for ax in axes[1]:
-        ax.set_xlabel("crank angle (deg)")
+        ax.set_xlabel("crank angle θ (°)")
     title = sc.title or sc.file or "mechanism"
     key = (f"crank {sc.input.crank}; dashed: the scene's instant "
            f"({math.degrees(sc.input.angle):g} deg)"

@@ -565,7 +565,8 @@ def test_a_plot_of_one_point_or_link_named_twice_draws_one_curve_each(tmp_path):
     fig = plot_figure(res, points=("C", "C"), links=("BC", "CB"))
     labels = [ln.get_label() for ax in fig.axes for ln in ax.get_lines()
               if not ln.get_label().startswith("_")]
-    assert sorted(labels) == ["a_C", "alpha_BC", "omega_BC", "v_C"]
+    assert sorted(labels) == sorted(["$a_{\\mathrm{C}}$", "$\\alpha_{\\mathrm{BC}}$",
+                                     "$\\omega_{\\mathrm{BC}}$", "$v_{\\mathrm{C}}$"])
 
 
 def test_a_list_of_names_of_only_commas_is_refused_not_taken_as_all(tmp_path, capsys):

@@ -246,3 +246,83 @@ def test_a_page_to_a_device_is_one_line(capsys):
     code = main(["page", SEED, "-o", "/dev/full", "--frames", "4"])  # not an .html name
     err = capsys.readouterr().err
     assert code == 2 and ".html" in err and len(err.strip().splitlines()) == 1
+
+
+def test_animation_html_is_self_contained(tmp_path):
+    """No network reference at all: no URL (http, https or protocol-relative), no <link>,
+    no src but the frames' own data, so that its buttons work offline."""
+    out = tmp_path / "cycle.html"
+    assert main(["draw", SEED, "--animate", "-o", str(out), "--frames", "5"]) == 0
+    html = out.read_text(encoding="utf-8")
+    assert "http://" not in html and "https://" not in html and "//cdn" not in html
+    assert "<link" not in html and "@import" not in html and "url(" not in html
+    assert re.findall(r'src="(?!data:)', html) == []
+    assert html.count("data:image/png;base64,") == 5
+    for button in ('id="play"', 'id="back"', 'id="next"'):  # labelled in text, not icons
+        assert re.search(button + r'[^>]*>[^<]+</button>', html), button
+
+
+def _polygon_extents(table, names, n):
+    """Per frame, the extent (SI) of a polygon's images and its pole, from the sweep."""
+    xy = [np.zeros((n, 2))] + [np.column_stack([np.broadcast_to(table[p][0], (n,)),
+                                                np.broadcast_to(table[p][1], (n,))])
+                               for p in names]
+    xy = np.stack(xy)
+    return np.max(xy.max(axis=0) - xy.min(axis=0), axis=1)
+
+
+@pytest.mark.parametrize("name", ["fourbar_image_points", "crank_slotted_lever",
+                                  "whitworth", "rolling_epicyclic"])
+def test_animation_pictures_state_round_scales_that_fit_their_panels(name):
+    """Each picture is at least 800 px wide; each polygon's stated scale is round (1, 2 or
+    5 x 10^k per cm) and at it the polygon (its images and pole, from the sweep) fits its
+    panel and spans at least a quarter of it, wherever it is not near rest."""
+    from polygon_method.page.raster import PANEL, PX_PER_CM, Pictures
+    fr = frames(pm.load_scene(f"worked_problems/{name}.toml"), 48)
+    pics = Pictures(fr)
+    assert pics.size[0] >= 800
+    n = len(fr)
+    for phase, table in (("velocity", fr.res.V), ("acceleration", fr.res.A)):
+        size = _polygon_extents(table, fr.moving, n)
+        rest = 0.05 * np.median(size)
+        looked = 0
+        for k in range(n):
+            words = pics.scale_text(phase, k).split()
+            per = float(words[3])
+            m = per / 10 ** math.floor(math.log10(per) + 1e-12)
+            assert min(abs(m - r) for r in (1, 2, 5)) < 1e-9, words
+            px = size[k] / per * PX_PER_CM
+            assert px <= PANEL, (phase, k, px)
+            if size[k] > rest:
+                assert px >= PANEL / 4, (phase, k, px)
+                looked += 1
+        assert looked > n // 2
+    first = pics.picture(0)
+    assert first.size == pics.size and first.mode == "P"
+
+
+def test_gif_frames_are_written_as_they_are_drawn(monkeypatch):
+    """Never more than one picture alive at a time: each frame goes into the GIF as soon as
+    it is drawn (bounded memory, whatever the count of frames)."""
+    import gc
+    import weakref
+    from PIL import Image
+    from polygon_method.page import raster
+
+    alive, most = [], [0]
+    draw = raster.Pictures.picture
+
+    def counted(self, k):
+        gc.collect()
+        live = [r for r in alive if r() is not None]
+        most[0] = max(most[0], len(live))
+        im = draw(self, k)
+        alive.append(weakref.ref(im))
+        return im
+
+    monkeypatch.setattr(raster.Pictures, "picture", counted)
+    fr = frames(pm.load_scene(SEED), 12)
+    gif = animation(fr, "gif")
+    assert len(alive) == 12 and most[0] <= 1
+    with Image.open(io.BytesIO(gif)) as im:
+        assert im.n_frames == 12 and im.size[0] >= 800

@@ -95,6 +95,21 @@ class Opened:
         self.page.evaluate("(k) => { const s = document.getElementById('angle'); s.value = k; "
                            "s.dispatchEvent(new Event('input')); }", k)
 
+    def shown_scale(self, phase) -> float:
+        """The scale stated beside a diagram ("1 cm = 0.5 m/s"), in SI per cm, after checking
+        that it is round (1, 2 or 5 x 10^k) and is the one the diagram is drawn at."""
+        words = self.text(f"#scale-{phase}").split()
+        assert words[:3] == ["1", "cm", "="] and len(words) == 5, words
+        value, unit = float(words[3]), words[4]
+        mantissa = value / 10 ** math.floor(math.log10(value) + 1e-12)
+        assert min(abs(mantissa - m) for m in (1, 2, 5)) < 1e-9, words
+        si = value * (self.data["unit"] if phase == "configuration" else 1.0)
+        assert unit == {"configuration": self.data["units"], "velocity": "m/s",
+                        "acceleration": "m/s²"}[phase]
+        drawn = float(self.page.get_attribute(f"#{phase}", "data-per-cm"))
+        assert abs(drawn - si) <= 1e-9 * si, (drawn, si)
+        return si
+
     def text(self, sel):
         return self.page.text_content(sel).strip()
 
@@ -157,11 +172,13 @@ def test_slider_moves_drawings_and_values_to_the_solve_at_that_angle(opened, nam
                                                                      frames):
     o = opened(name)
     d = o.data
-    vscale, ascale = d["scales"][1]["perCm"], d["scales"][2]["perCm"]
-    space = d["scales"][0]["perCm"]
     seen = set()
     for k in frames:
         o.slide(k)
+        # each diagram's scale at this frame, as the page states it (mm of the panel: 10 a
+        # centimetre)
+        space, vscale, ascale = (o.shown_scale(ph) / 10 for ph in
+                                 ("configuration", "velocity", "acceleration"))
         theta = d["theta"][k]
         sol = solve_at(scene, theta)
         assert o.text("#angle-now") == f"θ = {theta % 360:.1f}°"
@@ -170,7 +187,7 @@ def test_slider_moves_drawings_and_values_to_the_solve_at_that_angle(opened, nam
             shown = o.text(f"#val-v-{p}")
             assert agrees(shown.split()[0], sol.speed(p)), (k, p, shown)
             assert agrees(o.text(f"#val-a-{p}").split()[0], sol.acceleration_magnitude(p))
-            # the vector drawn from the pole ends at the image point, to scale (cm; y down)
+            # the vector drawn from the pole ends at the image point, to scale (mm; y down)
             x2, y2 = o.attrs(f"#v-abs-{p}", ("x2", "y2"))
             vx, vy = sol.V[p]
             assert near_cm(x2, vx / vscale) and near_cm(y2, -vy / vscale)
@@ -224,8 +241,9 @@ def test_play_turns_back_at_the_limit_positions(opened):
 def test_tooltip_names_a_vector_with_its_value(opened):
     o = opened("seed")
     o.slide(o.data["start"])
-    o.page.hover("#v-lab-C")
+    o.page.click("#v-lab-C")  # a click or a tap; a hover shows the same as its <title>
     tip = o.text("#tooltip")
+    assert o.page.text_content("#v-lab-C title") == tip
     sol = pm.solve(pm.load_scene(str(SEED)))
     assert tip.startswith("v_C = oc = ") and f"{fmt(sol.speed('C'))} m/s" in tip
 

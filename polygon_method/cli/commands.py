@@ -178,7 +178,9 @@ def _cmd_animate(args, out, fmt) -> int:
     fr = _frames(args, load_scene(args.scene, variants=False), fmt)
     data = animation(fr, fmt)
     write_outputs(targets, [(data, isinstance(data, bytes))])
-    print(f"{out}: {len(fr)} frames; " + "; ".join(s.text for s in fr.scales))
+    scales = ("; ".join(s.text for s in fr.scales) if fmt == "svg" else
+              "each polygon at its own round scale per frame, written on each picture")
+    print(f"{out}: {len(fr)} frames; {scales}")
     return 0
 
 

@@ -40,3 +40,4 @@ LEGEND_NAMES = {"absolute": "total (from the pole)", "relative": "relative (betw
                 "coriolis": "Coriolis component", "sliding": "sliding component"}
 BODY_FACE, BODY_EDGE = "#dde6f2", "#23395d"
 IMAGE_FACE = "#f4d35e"
+PITCH_STYLE = ("#333333", 0.7, (6.0, 2.0, 1.0, 2.0))  # pitch circles

@@ -1,9 +1,11 @@
 """``draw --animate``: the three diagrams over the crank's cycle as an animation file for
 slides, from the same frames as the page (one sweep, the step table's scales).
 
-GIF and HTML are made with matplotlib's animation module (``PillowWriter``, ``to_jshtml``),
-imported only here and only when asked; SVG is written directly, its motion as SMIL
-``<animate>`` elements (no script), so that it plays in a browser or a slide program.
+GIF and HTML are made of the pictures of :mod:`.raster` (PIL; each polygon at its own round
+scale per frame, the scales and the crank angle on each picture): the GIF is written a frame
+at a time as each is drawn, the HTML is a player that needs nothing else (no network, no
+icon fetched). SVG is written directly, its motion as SMIL ``<animate>`` elements (no
+script), so that it plays in a browser or a slide program.
 
 >>> import polygon_method as pm
 >>> from polygon_method.page import frames
@@ -15,17 +17,20 @@ True
 
 from __future__ import annotations
 
+import base64
 import io
-import re
+import json
 from html import escape
 
 import numpy as np
 
-from ..errors import PolygonMethodError, SceneError
+from ..draw.style import BODY_EDGE, STYLE
+from ..errors import SceneError
 from ..scales import DIAGRAMS, display_unit
 from ..steps import image_name
 from .data import diagram_box
 from .frames import Frames, check_frames, need_frames
+from .raster import Pictures
 
 __all__ = ["animation", "shapes", "FPS"]
 
@@ -33,7 +38,7 @@ __all__ = ["animation", "shapes", "FPS"]
 FPS = 15
 #: the SVG animation's text size, in cm of paper (it is drawn true to scale)
 FONT_CM = 0.35
-_COLOR = {"link": "#222222", "absolute": "#1f5fa8", "relative": "#c2410c"}
+_COLOR = {"link": BODY_EDGE, "absolute": STYLE["absolute"][0], "relative": STYLE["relative"][0]}
 
 
 def _cm(fr: Frames, phase: str, scale, p):
@@ -83,101 +88,93 @@ def animation(fr: Frames, fmt_: str):
     check_frames(len(fr), fmt_)
     if fmt_ == "svg":
         return _svg(fr)
-    return _matplotlib(fr, fmt_)
+    return _gif(fr) if fmt_ == "gif" else _html(fr)
 
 
-def _title(fr, k) -> str:
-    return f"{fr.sol.scene.title or 'mechanism'}: crank angle {fr.degrees[k] % 360:.1f}°"
+def _gif(fr: Frames) -> bytes:
+    """The GIF, each frame written as soon as it is drawn (one palette, stated once): the
+    memory is the pictures' of one frame and the file itself."""
+    from PIL import GifImagePlugin
+
+    pics = Pictures(fr)
+    out = io.BytesIO()
+    ms = round(1000 / FPS)
+    for k in range(len(fr)):
+        im = pics.picture(k)
+        if k == 0:
+            head, _ = GifImagePlugin.getheader(im, info={"loop": 0, "duration": ms})
+            out.write(b"".join(head))
+        out.write(b"".join(GifImagePlugin.getdata(im, duration=ms)))
+    out.write(b";")
+    return out.getvalue()
 
 
-def _matplotlib(fr: Frames, fmt_: str):
-    import matplotlib
-    from matplotlib.animation import FuncAnimation
-    from matplotlib.figure import Figure
+_PLAYER_CSS = """body { font-family: system-ui, sans-serif; margin: 1em; color: #222; }
+img { max-width: 100%; height: auto; display: block; border: 1px solid #ddd; }
+.controls { display: flex; flex-wrap: wrap; gap: 0.5em; align-items: center; margin: 0.5em 0; }
+.controls input[type=range] { flex: 1; min-width: 10em; }
+button { font-size: 1em; padding: 0.2em 0.7em; }"""
 
-    panels = shapes(fr)
-    # no frame of the HTML player may be dropped for its size (matplotlib's default
-    # limit is 20 MB, about 650 frames): the count of frames is bounded instead
-    with matplotlib.rc_context({"font.family": "DejaVu Sans",
-                                "animation.embed_limit": 4096.0}):
-        fig = Figure(figsize=(12, 4.4), dpi=80)
-        fig.subplots_adjust(left=0.01, right=0.99, bottom=0.02, top=0.86, wspace=0.06)
-        title = fig.suptitle(_title(fr, 0), fontsize=11)
-        artists = []
-        for i, (phase, scale, box, lines, labels) in enumerate(panels):
-            ax = fig.add_subplot(1, 3, i + 1)
-            x0, y0, x1, y1 = box
-            pad = 0.08 * max(x1 - x0, y1 - y0, 4)
-            ax.set_xlim(x0 - pad, x1 + pad)
-            ax.set_ylim(y0 - pad, y1 + pad)
-            ax.set_aspect("equal")
-            ax.set_xticks([])
-            ax.set_yticks([])
-            ax.set_title(f"{phase}, {display_unit(scale.text)}", fontsize=9)
-            for kind, (a, b, c, d) in lines:
-                ln, = ax.plot([a[0], c[0]], [b[0], d[0]], color=_COLOR[kind],
-                              lw=2.2 if kind == "link" else 1.6,
-                              marker="o" if kind == "link" else None, ms=3)
-                artists.append((ln, "line", (a, b, c, d)))
-            for text, (x, y) in labels:
-                t = ax.text(x[0], y[0], f" {text}", fontsize=9, style="italic",
-                            ha="left", va="bottom")
-                artists.append((t, "text", (x, y)))
-
-        def draw(k):
-            title.set_text(_title(fr, k))
-            for a, kind, v in artists:
-                if kind == "line":
-                    a.set_data([v[0][k], v[2][k]], [v[1][k], v[3][k]])
-                else:
-                    a.set_position((v[0][k], v[1][k]))
-            return []
-
-        anim = FuncAnimation(fig, draw, frames=len(fr), interval=1000 / FPS, blit=False)
-        if fmt_ == "html":
-            html = anim.to_jshtml(fps=FPS, default_mode="loop")
-            _all_there(len(re.findall(r'frames\[\d+\] = "data:', html)), fr)
-            return html
-        writer = _GifWriter(fps=FPS)
-        anim.save("cycle.gif", writer=writer)
-        _all_there(len(writer._frames), fr)
-        return writer.data
+_PLAYER_JS = """"use strict";
+const F = JSON.parse(document.getElementById("frames").textContent);
+const pic = document.getElementById("pic"), slider = document.getElementById("k");
+const play = document.getElementById("play"), now = document.getElementById("now");
+let k = 0, timer = null;
+function show(j) {
+  k = (j + F.pictures.length) % F.pictures.length;
+  pic.src = F.pictures[k];
+  slider.value = k;
+  now.textContent = "frame " + (k + 1) + " of " + F.pictures.length + ", crank angle " + F.angles[k] + "\u00b0";
+}
+play.addEventListener("click", () => {
+  if (timer === null) { timer = setInterval(() => show(k + 1), 1000 / F.fps); play.textContent = "\u275a\u275a pause"; }
+  else { clearInterval(timer); timer = null; play.textContent = "\u25b6 play"; }
+});
+document.getElementById("back").addEventListener("click", () => show(k - 1));
+document.getElementById("next").addEventListener("click", () => show(k + 1));
+slider.addEventListener("input", () => show(Number(slider.value)));
+show(0);"""
 
 
-def _all_there(made: int, fr: Frames):
-    """Every frame is in the animation, or an error (never fewer frames than stated)."""
-    if made != len(fr):
-        raise PolygonMethodError(f"the animation holds {made} of its {len(fr)} frames: ask "
-                                 "for fewer --frames", key="--frames")
-
-
-def _gif_writer_class():
-    from matplotlib.animation import PillowWriter
-
-    class GifWriter(PillowWriter):
-        """PillowWriter whose GIF is kept in memory (the command line writes the file),
-        each frame kept as the GIF will hold it (a palette image: a third of the memory
-        of its colours)."""
-
-        def grab_frame(self, **kw):
-            super().grab_frame(**kw)
-            im = self._frames[-1]
-            if im.mode == "RGB":
-                from PIL import Image
-                self._frames[-1] = im.convert("P", palette=Image.Palette.ADAPTIVE)
-
-        def finish(self):
-            buf = io.BytesIO()
-            self._frames[0].save(buf, format="GIF", save_all=True,
-                                 append_images=self._frames[1:],
-                                 duration=int(1000 / self.fps), loop=0)
-            self.data = buf.getvalue()
-
-    return GifWriter
-
-
-def _GifWriter(**kw):  # noqa: N802 (a class made on first use: matplotlib stays lazy)
-    return _gif_writer_class()(**kw)
+def _html(fr: Frames) -> str:
+    """A player that needs nothing else (no network, no script or icon fetched): the
+    pictures as PNG data, play/pause, a frame at a time, a slider."""
+    pics = Pictures(fr)
+    frames_ = []
+    for k in range(len(fr)):
+        buf = io.BytesIO()
+        pics.picture(k).save(buf, format="PNG", compress_level=1)
+        frames_.append("data:image/png;base64," + base64.b64encode(buf.getvalue()).decode())
+    data = json.dumps({"pictures": frames_, "fps": FPS,
+                       "angles": [f"{a % 360:.1f}" for a in fr.degrees]}, separators=(",", ":"))
+    title = escape(fr.sol.scene.title or "mechanism")
+    w, h = pics.size
+    return f"""<!DOCTYPE html>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<title>{title}</title>
+<style>
+{_PLAYER_CSS}
+</style>
+</head>
+<body>
+<img id="pic" width="{w}" height="{h}" alt="{title}: the configuration diagram, the velocity and the acceleration polygons over the crank's cycle">
+<div class="controls">
+<button id="back" type="button" title="a frame back">\u25c0</button>
+<button id="play" type="button">\u25b6 play</button>
+<button id="next" type="button" title="a frame on">\u25b6</button>
+<input type="range" id="k" min="0" max="{len(fr) - 1}" step="1" value="0" aria-label="frame">
+<span id="now"></span>
+</div>
+<script type="application/json" id="frames">{data}</script>
+<script>
+{_PLAYER_JS}
+</script>
+</body>
+</html>
+"""
 
 
 def _values(a) -> str:

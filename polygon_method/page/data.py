@@ -14,14 +14,17 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..draw.style import (BODY_EDGE, BODY_FACE, HEAD_HALF, HEAD_LEN, IMAGE_FACE, LINE_STYLE,
+                          PITCH_STYLE, STYLE)
 from ..errors import TOL
 from ..numbers import quiet, sense
+from ..plots import MARKS, SERIES_COLORS
 from ..scales import DIAGRAMS, display_unit
 from ..scene import Link
 from ..steps import image_name, slot_labels, under_label
 from .frames import Frames, round_sig
 
-__all__ = ["page_data", "diagram_box"]
+__all__ = ["page_data", "diagram_box", "page_style"]
 
 #: the largest polygon a diagram's box holds, in times the median polygon of the cycle
 REACH = 1.5
@@ -108,6 +111,17 @@ def _unders(sol) -> dict:
     return out
 
 
+def page_style() -> dict:
+    """The drawings' colours, widths (pt) and dashes (in line widths), as ``draw`` and
+    ``sweep --plot`` have them (:mod:`polygon_method.draw.style`), for the page's script."""
+    lines = {k: [c, w, list(d) if d else None] for k, (c, w, d) in STYLE.items()}
+    lines["line"] = [LINE_STYLE[0], LINE_STYLE[1], list(LINE_STYLE[2])]
+    lines["pitch"] = [PITCH_STYLE[0], PITCH_STYLE[1], list(PITCH_STYLE[2])]
+    return {"lines": lines, "head": [HEAD_LEN, HEAD_HALF], "body": [BODY_FACE, BODY_EDGE],
+            "image": IMAGE_FACE, "series": list(SERIES_COLORS),
+            "marks": {k: [c, w, list(d) if d else None] for k, (c, w, d) in MARKS.items()}}
+
+
 def page_data(fr: Frames) -> dict:
     """Everything the page's script reads (SI, counter-clockwise positive)."""
     sol, res = fr.sol, fr.res
@@ -162,6 +176,7 @@ def page_data(fr: Frames) -> dict:
         round_sig(_quiet(res.input_torque, _torque_scale(sc, k), n)),
         "sense": sense(sc.input.omega),
         "warnBelow": TOL.warn,
+        "style": page_style(),
     }
     conds = [(st.label, np.broadcast_to(res.cond[st.index], (n,))) for st in res.plan.steps
              if st.index in res.cond]

@@ -20,13 +20,15 @@ from html import escape
 from importlib.resources import files
 
 from ..check.verdicts import correct_text
+from ..draw.style import BODY_EDGE, BODY_FACE, IMAGE_FACE, LEGEND_NAMES, LINE_STYLE, STYLE
 from ..numbers import fmt
+from ..plots import MARK_NAMES, MARKS
 from ..steptable import steps_blocks
 from ..words import given
 from .data import page_data
 from .frames import Frames, need_frames
 
-__all__ = ["page_html", "blocks_html", "check_html"]
+__all__ = ["page_html", "blocks_html", "check_html", "legend_html"]
 
 
 def _asset(name: str) -> str:
@@ -50,7 +52,8 @@ def blocks_html(blocks) -> str:
             head = "".join(f"<th>{escape(c)}</th>" for c in b[1])
             rows = "".join("<tr>" + "".join(f"<td>{escape(c)}</td>" for c in r) + "</tr>"
                            for r in b[2])
-            out.append(f"<table><thead><tr>{head}</tr></thead><tbody>{rows}</tbody></table>")
+            out.append(f'<div class="scroll"><table><thead><tr>{head}</tr></thead><tbody>{rows}'
+                       "</tbody></table></div>")
     return "\n".join(out)
 
 
@@ -67,9 +70,9 @@ def check_html(verdicts, title: str) -> str:
             + f"<td>{verdict}</td><td>{why}</td></tr>")
     wrong = sum(not v.ok for v in verdicts)
     rules = "; ".join(sorted({v.rule for v in verdicts}))
-    return (f"<p>{escape(title)}</p><table id=\"check\"><thead><tr><th>answer</th><th>given"
-            "</th><th>correct</th><th>error</th><th>tolerance</th><th>verdict</th><th>mistake"
-            f"</th></tr></thead><tbody>{''.join(rows)}</tbody></table>"
+    return (f"<p>{escape(title)}</p><div class=\"scroll\"><table id=\"check\"><thead><tr><th>"
+            "answer</th><th>given</th><th>correct</th><th>error</th><th>tolerance</th><th>"
+            f"verdict</th><th>mistake</th></tr></thead><tbody>{''.join(rows)}</tbody></table></div>"
             f"<p>tolerance: {escape(rules)}. {len(verdicts) - wrong} of {len(verdicts)} right"
             + (f", {wrong} wrong" if wrong else "") + ".</p>")
 
@@ -83,7 +86,35 @@ def _json(d) -> str:
 
 _CAPTION = {"configuration": "Configuration diagram", "velocity":
             "Velocity polygon (pole o; image points in lower case)", "acceleration":
-            "Acceleration polygon (pole o'; centripetal dashed, tangential dotted)"}
+            "Acceleration polygon (pole o'; image points b', c', ...)"}
+
+#: the legend's entries, in its order: the vectors' kinds, then the plots' marks
+_KINDS = ("absolute", "relative", "centripetal", "tangential", "sliding", "coriolis")
+
+
+def _swatch(color: str, width_pt: float, dashes, *, head: bool = False) -> str:
+    """A short line drawn as the page draws that kind (px: 1 pt is 4/3 px)."""
+    w = 4 * width_pt / 3
+    dash = (f' stroke-dasharray="{" ".join(f"{d * w:.2f}" for d in dashes)}"'
+            if dashes else "")
+    tip = (f'<path d="M30,2 L38,6 L30,10 z" fill="{color}"/>' if head else "")
+    return (f'<svg class="sw" width="40" height="12" viewBox="0 0 40 12" aria-hidden="true">'
+            f'<line x1="1" y1="6" x2="{31 if head else 39}" y2="6" stroke="{color}" '
+            f'stroke-width="{w:.2f}"{dash}/>{tip}</svg>')
+
+
+def legend_html(kinds=_KINDS) -> str:
+    """The legend of the colours and dashes, the same as ``draw``'s and the plots'."""
+    items = [_swatch(*STYLE[k], head=k != "relative") + escape(LEGEND_NAMES[k]) for k in kinds]
+    items.append(_swatch(*LINE_STYLE) + "a path or a guide")
+    items.append(f'<span class="sw box" style="background:{BODY_FACE};border-color:'
+                 f'{BODY_EDGE}"></span>a link carrying a third point')
+    items.append(f'<span class="sw box" style="background:{IMAGE_FACE}"></span>its image')
+    marks = [_swatch(*MARKS[k]) + escape(MARK_NAMES[k]) for k in ("now", "instant")]
+    return ('<div class="legend"><p><b>Legend</b> (as on the drawings of <code>draw</code> '
+            'and the plots of <code>sweep --plot</code>):</p><ul>'
+            + "".join(f"<li>{i}</li>" for i in items) + "</ul><p>On the plots:</p><ul>"
+            + "".join(f"<li>{i}</li>" for i in marks) + "</ul></div>")
 
 
 def page_html(fr: Frames, *, verdicts=None, answers_title: str = "") -> str:
@@ -94,13 +125,14 @@ def page_html(fr: Frames, *, verdicts=None, answers_title: str = "") -> str:
     title = d["title"]
     cycle = "a full turn of the crank" if fr.full_turn else \
         f"the range between the limit positions ({fr.limits_text}): the crank cannot " \
-        "turn fully, and near its limit positions the polygons grow without bound and run " \
-        "off their panels"
+        "turn fully, and near its limit positions the polygons grow without bound (their " \
+        "scales grow with them)"
     figs = []
     for s in d["scales"]:
         name = s["diagram"]
-        figs.append(f'<figure><figcaption>{escape(_CAPTION[name])}, {escape(s["text"])}'
-                    f'</figcaption><svg class="diagram" id="{name}" '
+        figs.append(f'<figure><figcaption>{escape(_CAPTION[name])}: <b class="scale" '
+                    f'id="scale-{name}">{escape(s["text"])}</b></figcaption>'
+                    f'<svg class="diagram" id="{name}" '
                     f'role="img" '
                     f'aria-label="{name} diagram"></svg></figure>')
     notes = "".join(f"<li>{escape(n)}</li>" for n in fr.res.notes)
@@ -129,25 +161,29 @@ def page_html(fr: Frames, *, verdicts=None, answers_title: str = "") -> str:
 <input type="range" id="angle" min="0" max="{len(fr) - 1}" step="1" value="{fr.start}">
 <span id="angle-now"></span>
 </div>
-<p class="legend-line">{len(fr)} frames over {escape(cycle)}; each diagram keeps the
-scale of the step-by-step solution. The stated instant is θ =
-{fmt(math.degrees(sc.input.angle) % 360)}°{escape(f" ({sc.input.angle_words})" if sc.input.angle_words else "")}. Hover or tap a vector or a point for its
-value.</p>
+<p class="legend-line">{len(fr)} frames over {escape(cycle)}. The configuration diagram keeps
+one scale over the cycle; each polygon is drawn, at each angle, at the round scale
+(1, 2 or 5 x 10<sup>k</sup> per cm) at which it fills its panel, stated above it (a centimetre
+of the screen as the browser measures it, 96 px = 2.54 cm; the step-by-step solution states
+the scales of a drawing on paper). The stated instant is θ =
+{fmt(math.degrees(sc.input.angle) % 360)}°{escape(f" ({sc.input.angle_words})" if sc.input.angle_words else "")}. Hover over a vector or a point for its
+value, or tap it.</p>
 {f'<ul>{notes}</ul>' if notes else ''}
 <div class="diagrams">
 {''.join(figs)}
 </div>
+{legend_html(_KINDS if d["under"] else _KINDS[:4])}
 <div class="columns">
 <div>
 <h2>Values at the current angle</h2>
-<table id="values"><tbody></tbody></table>
+<div class="scroll"><table id="values"><tbody></tbody></table></div>
 </div>
 <div>
 <h2>Over the cycle</h2>
 <div class="plots">
-<svg class="plot" id="plot-v" viewBox="0 0 320 190"></svg>
-<svg class="plot" id="plot-w" viewBox="0 0 320 190"></svg>
-<svg class="plot" id="plot-a" viewBox="0 0 320 190"></svg>
+<svg class="plot" id="plot-v" viewBox="0 0 320 210" role="img" aria-label="speeds over the cycle"></svg>
+<svg class="plot" id="plot-w" viewBox="0 0 320 210" role="img" aria-label="angular velocities over the cycle"></svg>
+<svg class="plot" id="plot-a" viewBox="0 0 320 210" role="img" aria-label="accelerations over the cycle"></svg>
 </div>
 </div>
 </div>

@@ -1,11 +1,22 @@
 // The page's own script: draws the three diagrams, the values and the sweep plots of the
 // frame chosen by the slider, from the frame arrays in <script id="frames">. No library.
+//
+// Each diagram is drawn in millimetres of the screen (one SVG unit is a CSS millimetre,
+// 96 px = 25.4 mm; tiny font sizes would render badly in centimetres). The configuration diagram keeps one scale over the cycle; each
+// polygon gets, at each frame, the smallest round scale (1, 2 or 5 x 10^k per cm) at which
+// it fits its panel, stated beside the panel. Colours and dashes are the drawings' own
+// (D.style, from polygon_method/draw/style.py).
 "use strict";
 const D = JSON.parse(document.getElementById("frames").textContent);
 const N = D.theta.length;
 const SVGNS = "http://www.w3.org/2000/svg";
 const PHASES = ["configuration", "velocity", "acceleration"];
 const UNIT = {velocity: "m/s", acceleration: "m/s²"};
+const MM = 96 / 25.4;         // px in a CSS millimetre: the diagrams' unit
+const PT = 25.4 / 72;         // a point (line widths, dashes) in mm
+const FS = 3.6;               // the labels' size (mm)
+const FILL = {configuration: 0.86, velocity: 0.8, acceleration: 0.8};  // most of a panel a diagram takes
+const REST = 0.01;            // a polygon under this share of its median size is at rest
 let frame = D.start;
 
 // numbers as the tool writes them: four significant figures, no exponent for usual sizes
@@ -22,6 +33,10 @@ function angular(x, unit) {
 }
 const deg = (t) => (((t % 360) + 360) % 360).toFixed(1);
 const dir = (x, y) => deg(Math.atan2(y, x) * 180 / Math.PI);
+const esc = (s) => String(s).replace(/&/g, "&amp;").replace(/</g, "&lt;").replace(/>/g, "&gt;");
+const sub = (base, s) => base + "<sub>" + esc(s) + "</sub>";  // v_B typeset: v with B below
+const r3 = (x) => Math.round(x * 1000) / 1000;
+const label = (p, phase) => D.images[p] + (phase === "acceleration" ? "'" : "");
 
 // a point's vector (position, velocity or acceleration) at frame k, SI
 function vec(phase, p, k) {
@@ -33,101 +48,12 @@ function vec(phase, p, k) {
   const t = phase === "velocity" ? D.V : D.A;
   return [t[p][2 * k], t[p][2 * k + 1]];
 }
-const scaleOf = (phase) => D.scales[PHASES.indexOf(phase)];
-function cm(phase, p, k) {  // on the paper (cm), y down for SVG
-  const v = vec(phase, p, k), s = scaleOf(phase).perCm;
-  return [v[0] / s, -v[1] / s];
-}
-const r3 = (x) => Math.round(x * 1000) / 1000;
-const label = (p, phase) => D.images[p] + (phase === "acceleration" ? "'" : "");
-
-function el(parent, tag, attrs, tip) {
-  const e = document.createElementNS(SVGNS, tag);
-  for (const k in attrs) e.setAttribute(k, attrs[k]);
-  if (tip) e.dataset.tip = tip;
-  parent.appendChild(e);
-  return e;
-}
-function line(e, a, b) {
-  e.setAttribute("x1", r3(a[0])); e.setAttribute("y1", r3(a[1]));
-  e.setAttribute("x2", r3(b[0])); e.setAttribute("y2", r3(b[1]));
-}
-function place(e, a) { e.setAttribute("x", r3(a[0])); e.setAttribute("y", r3(a[1])); }
-function poly(e, pts) { e.setAttribute("points", pts.map((a) => r3(a[0]) + "," + r3(a[1])).join(" ")); }
-
-// ---------------------------------------------------------------- the three diagrams
-const drawn = {};
-function setup(phase) {
-  const svg = document.getElementById(phase);
-  const s = scaleOf(phase), b = s.box, w = b[2] - b[0], h = b[3] - b[1];
-  const pad = 0.08 * Math.max(w, h, 4), fs = 0.035 * Math.max(w + 2 * pad, h + 2 * pad, 8);
-  svg.setAttribute("viewBox", [b[0] - pad, -b[3] - pad, w + 2 * pad, h + 2 * pad].map(r3).join(" "));
-  svg.style.setProperty("--fs", fs);
-  const g = {fs: fs, items: []};
-  const defs = el(svg, "defs", {});
-  const m = el(defs, "marker", {id: phase + "-head", viewBox: "0 0 10 10", refX: 10, refY: 5,
-    markerWidth: 5, markerHeight: 5, orient: "auto-start-reverse"});
-  el(m, "path", {d: "M0,1 L10,5 L0,9 z", class: "head"});
-  if (phase === "configuration") {
-    for (const [p, q, c] of D.plates) g.items.push([el(svg, "polygon", {class: "plate"}, "plate:" + c), "plate", [p, q, c]]);
-    for (const s of D.sliders) {
-      if (s.u) g.items.push([el(svg, "line", {class: "guide"}, "guide:" + s.key), "guide", s]);
-    }
-    for (const w of D.wheels) g.items.push([el(svg, "circle", {class: "pitch"}, "pitch circle about " + w[0]), "pitch", w]);
-    for (const l of D.rollLines) g.items.push([el(svg, "line", {class: "guide"}, "the line a wheel rolls on"), "rollline", l]);
-    for (const [p, q, key] of D.links) g.items.push([el(svg, "line", {class: "link", id: "c-link-" + key}, "link:" + key), "link", [p, q, key]]);
-    for (const s of D.sliders) g.items.push([el(svg, "polygon", {class: "block"}, "slider:" + s.key), "block", s]);
-    for (const p in D.ground) g.items.push([el(svg, "polygon", {class: "ground"}, "ground:" + p), "ground", p]);
-    for (const p of Object.keys(D.ground).concat(D.points)) {
-      g.items.push([el(svg, "circle", {class: "joint", r: r3(fs * 0.18)}, "point:" + p), "joint", p]);
-      const t = el(svg, "text", {class: "label", id: "c-lab-" + p}, "point:" + p);
-      t.textContent = p;
-      g.items.push([t, "label", p]);
-    }
-  } else {
-    const v = phase === "velocity" ? "v" : "a";
-    for (const [p, q, c] of D.plates) g.items.push([el(svg, "polygon", {class: "image"}, "image:" + c), "plate", [p, q, c]]);
-    if (v === "a") {
-      for (const [p, q, key] of D.links) {
-        g.items.push([el(svg, "line", {class: "centripetal", "marker-end": "url(#acceleration-head)"}, "cen:" + key), "cen", [p, q, key]]);
-        g.items.push([el(svg, "line", {class: "tangential", "marker-end": "url(#acceleration-head)"}, "tan:" + key), "tan", [p, q, key]]);
-      }
-    }
-    for (const [p, q, key] of D.links) g.items.push([el(svg, "line", {class: "relative", id: v + "-rel-" + key}, "rel:" + key), "rel", [p, q, key]]);
-    for (const s of D.sliders) {  // a block on a moving link: the link's point under it
-      if (!s.guide) continue;
-      g.items.push([el(svg, "line", {class: "relative"}, "under:" + s.key), "under", s]);
-      g.items.push([el(svg, "line", {class: "sliding", id: v + "-slide-" + s.key, "marker-end": "url(#" + phase + "-head)"}, "sliding:" + s.key), "sliding", s]);
-      if (v === "a") g.items.push([el(svg, "line", {class: "coriolis", "marker-end": "url(#" + phase + "-head)"}, "coriolis:" + s.key), "coriolis", s]);
-      const t = el(svg, "text", {class: "label image-label"}, "under:" + s.key);
-      t.textContent = D.under[s.key] + (v === "a" ? "'" : "");
-      g.items.push([t, "underlabel", s]);
-    }
-    for (const p of D.points) g.items.push([el(svg, "line", {class: "absolute", id: v + "-abs-" + p, "marker-end": "url(#" + phase + "-head)"}, "abs:" + p), "abs", p]);
-    const o = el(svg, "text", {class: "label pole", id: v + "-lab-pole"}, "pole:" + phase);
-    o.textContent = v === "a" ? "o'" : "o";
-    g.items.push([o, "pole", null]);
-    for (const p of D.points) {
-      const t = el(svg, "text", {class: "label image-label", id: v + "-lab-" + p}, "abs:" + p);
-      t.textContent = label(p, phase);
-      g.items.push([t, "label", p]);
-    }
-  }
-  drawn[phase] = g;
-}
-
-function blockCorners(c, u, size) {  // a square block at c, its sides along u
-  const n = [-u[1], u[0]], h = size / 2;
-  return [[1, 1], [1, -1], [-1, -1], [-1, 1]].map(([i, j]) =>
-    [c[0] + h * (i * u[0] + j * n[0]), c[1] + h * (i * u[1] + j * n[1])]);
-}
 function unit(a, b) {
   const dx = b[0] - a[0], dy = b[1] - a[1], L = Math.hypot(dx, dy) || 1;
   return [dx / L, dy / L];
 }
-
 // the image of the guide's point under a sliding block, and (accelerations) the start of
-// the Coriolis component: v_X = v_X1 + vs u; a_X = a_X1 + as u + coriolis
+// the Coriolis component: v_X = v_X1 + vs u; a_X = a_X1 + as u + coriolis (SI)
 function under(phase, s, k) {
   const u = unit(vec("configuration", s.guide[0], k), vec("configuration", s.guide[1], k));
   const x = vec(phase, s.point, k), S = D.S[s.key];
@@ -136,66 +62,243 @@ function under(phase, s, k) {
   const back = [x[0] - cor[0], x[1] - cor[1]];
   return [[back[0] - along * u[0], back[1] - along * u[1]], back];
 }
+// where a link's centripetal component (of q about p) ends and its tangential one starts (SI)
+function knee([p, q, key], k) {
+  const w = D.W[key][k], Pp = vec("configuration", p, k), Pq = vec("configuration", q, k);
+  const ap = vec("acceleration", p, k);
+  return [ap[0] - w * w * (Pq[0] - Pp[0]), ap[1] - w * w * (Pq[1] - Pp[1])];
+}
+
+// ---------------------------------------------------------------- scales and panels
+// every point a diagram draws at frame k (SI): what its panel must hold
+function vertices(phase, k) {
+  if (phase === "configuration") {
+    const out = Object.values(D.ground).concat(D.points.map((p) => vec(phase, p, k)));
+    for (const [c, r] of D.wheels) { const x = vec(phase, c, k); out.push([x[0] - r, x[1] - r], [x[0] + r, x[1] + r]); }
+    return out;
+  }
+  const out = [[0, 0]].concat(D.points.map((p) => vec(phase, p, k)));
+  if (phase === "acceleration") for (const l of D.links) out.push(knee(l, k));
+  for (const s of D.sliders) if (s.guide) out.push(...under(phase, s, k));
+  return out;
+}
+function bbox(pts) {
+  const b = [Infinity, Infinity, -Infinity, -Infinity];
+  for (const [x, y] of pts) { b[0] = Math.min(b[0], x); b[1] = Math.min(b[1], y); b[2] = Math.max(b[2], x); b[3] = Math.max(b[3], y); }
+  return b;
+}
+const span = (b) => Math.max(b[2] - b[0], b[3] - b[1]);
+function roundUp(x) {  // the smallest 1, 2 or 5 x 10^k that is at least x
+  const e = Math.floor(Math.log10(x)), m = x / 10 ** e;
+  return [1, 2, 5, 10].find((s) => s >= m * (1 - 1e-9)) * 10 ** e;
+}
+const factor = (phase) => phase === "configuration" ? D.unit : 1;  // SI per unit of the scale's text
+const unitText = (phase) => phase === "configuration" ? D.units : UNIT[phase];
+
+const view = {};  // per diagram: the panel (mm), the size below which it is at rest, the scale now
+function layout() {
+  for (const phase of PHASES) {
+    const svg = document.getElementById(phase);
+    const W = (svg.clientWidth || 320) / MM, H = (svg.clientHeight || 320) / MM;
+    const v = view[phase] || (view[phase] = {});
+    v.W = W; v.H = H;
+    if (v.rest === undefined) {
+      const sizes = [];
+      let all = [Infinity, Infinity, -Infinity, -Infinity];
+      for (let k = 0; k < N; k++) {
+        const b = bbox(vertices(phase, k));
+        sizes.push(span(b));
+        all = [Math.min(all[0], b[0]), Math.min(all[1], b[1]), Math.max(all[2], b[2]), Math.max(all[3], b[3])];
+      }
+      sizes.sort((a, b) => a - b);
+      v.rest = Math.max(REST * sizes[Math.floor(N / 2)], 1e-12);
+      v.all = all;  // the configuration's box over the cycle
+    }
+  }
+}
+// the scale (SI per cm) and the panel's box (mm, y down) of a diagram at frame k
+function frameView(phase, k) {
+  const v = view[phase], b = phase === "configuration" ? v.all : bbox(vertices(phase, k));
+  const w = Math.max(b[2] - b[0], v.rest), h = Math.max(b[3] - b[1], v.rest);
+  const need = 10 * Math.max(w / (FILL[phase] * v.W), h / (FILL[phase] * v.H)) / factor(phase);
+  v.per = roundUp(need) * factor(phase);
+  v.text = "1 cm = " + fmt(v.per / factor(phase)) + " " + unitText(phase);
+  v.box = [5 * (b[0] + b[2]) / v.per - v.W / 2, -5 * (b[1] + b[3]) / v.per - v.H / 2];
+  v.box.push(v.box[0] + v.W, v.box[1] + v.H);  // [x0, y0, x1, y1] in mm, y down
+  return v;
+}
+// a point (SI) in mm of the panel, y down
+const toMm = (phase, a) => [10 * a[0] / view[phase].per, -10 * a[1] / view[phase].per];
+const mm = (phase, p, k) => toMm(phase, vec(phase, p, k));
+
+// ---------------------------------------------------------------- the three diagrams
+function el(parent, tag, attrs, tip) {
+  const e = document.createElementNS(SVGNS, tag);
+  for (const k in attrs) e.setAttribute(k, attrs[k]);
+  parent.appendChild(e);
+  if (tip) titled(e, tip);
+  return e;
+}
+// a tooltip that needs no script to show: an SVG <title>, rewritten at each frame
+const titles = [];
+function titled(e, tip) {
+  e.dataset.tip = tip;
+  const t = document.createElementNS(SVGNS, "title");
+  e.insertBefore(t, e.firstChild);
+  titles.push([t, tip]);
+}
+function text(parent, attrs, words, tip) {
+  const t = el(parent, "text", attrs);
+  t.textContent = words;
+  if (tip) titled(t, tip);
+  return t;
+}
+function styled(kind, extra) {  // a kind's colour, width and dashes as the drawings have them
+  const [c, w, dash] = D.style.lines[kind], a = {stroke: c, "stroke-width": r3(w * PT), fill: "none"};
+  if (dash) a["stroke-dasharray"] = dash.map((d) => r3(d * w * PT)).join(" ");
+  return Object.assign(a, extra || {});
+}
+function line(e, a, b) {
+  e.setAttribute("x1", r3(a[0])); e.setAttribute("y1", r3(a[1]));
+  e.setAttribute("x2", r3(b[0])); e.setAttribute("y2", r3(b[1]));
+}
+function place(e, a) { e.setAttribute("x", r3(a[0])); e.setAttribute("y", r3(a[1])); }
+function dot(e, a) { e.setAttribute("cx", r3(a[0])); e.setAttribute("cy", r3(a[1])); }
+function poly(e, pts) { e.setAttribute("points", pts.map((a) => r3(a[0]) + "," + r3(a[1])).join(" ")); }
+// the part of the line through c along u inside the rectangle r (null where none is)
+function clipLine(c, u, r) {
+  let t0 = -Infinity, t1 = Infinity;
+  for (const [p, q, lo, hi] of [[c[0], u[0], r[0], r[2]], [c[1], u[1], r[1], r[3]]]) {
+    if (Math.abs(q) < 1e-12) { if (p < lo || p > hi) return null; continue; }
+    const a = (lo - p) / q, b = (hi - p) / q;
+    t0 = Math.max(t0, Math.min(a, b)); t1 = Math.min(t1, Math.max(a, b));
+  }
+  return t0 < t1 ? [[c[0] + t0 * u[0], c[1] + t0 * u[1]], [c[0] + t1 * u[0], c[1] + t1 * u[1]]] : null;
+}
+
+const drawn = {};
+function setup(phase) {
+  const svg = document.getElementById(phase);
+  const items = [], add = (e, kind, x) => { items.push([e, kind, x]); return e; };
+  const defs = el(svg, "defs", {});
+  const head = (kind) => {  // an arrowhead of the kind's colour, as long as the drawings'
+    const id = phase + "-head-" + kind, [L, half] = D.style.head.map((x) => 10 * x);  // cm -> mm
+    const m = el(defs, "marker", {id: id, viewBox: [0, 0, L, 2 * half].map(r3).join(" "), refX: r3(L), refY: r3(half),
+      markerWidth: r3(L), markerHeight: r3(2 * half), markerUnits: "userSpaceOnUse", orient: "auto"});
+    el(m, "path", {d: "M0,0 L" + r3(L) + "," + r3(half) + " L0," + r3(2 * half) + " z", fill: D.style.lines[kind][0]});
+    return "url(#" + id + ")";
+  };
+  if (phase === "configuration") {
+    for (const [p, q, c] of D.plates) add(el(svg, "polygon", {class: "plate", fill: D.style.body[0], stroke: D.style.body[1]}, "plate:" + c), "plate", [p, q, c]);
+    for (const s of D.sliders) if (s.u) add(el(svg, "line", styled("line"), "guide:" + s.key), "guide", s);
+    for (const w of D.wheels) add(el(svg, "circle", styled("pitch"), "pitch circle about " + w[0]), "pitch", w);
+    for (const l of D.rollLines) add(el(svg, "line", styled("line"), "the line a wheel rolls on"), "rollline", l);
+    for (const [p, q, key] of D.links) add(el(svg, "line", {class: "link", stroke: D.style.body[1], id: "c-link-" + key}, "link:" + key), "link", [p, q, key]);
+    for (const s of D.sliders) add(el(svg, "polygon", {class: "block", fill: D.style.body[0], stroke: D.style.body[1]}, "slider:" + s.key), "block", s);
+    for (const p in D.ground) add(el(svg, "polygon", {class: "ground"}, "ground:" + p), "ground", p);
+    for (const p of Object.keys(D.ground).concat(D.points)) {
+      add(el(svg, "circle", {class: "joint point", r: r3(FS * 0.18), stroke: D.style.body[1]}, "point:" + p), "joint", p);
+      add(text(svg, {class: "label", id: "c-lab-" + p}, p, "point:" + p), "label", p);
+    }
+  } else {
+    const v = phase === "velocity" ? "v" : "a";
+    for (const [p, q, c] of D.plates) add(el(svg, "polygon", {class: "image", fill: D.style.image}, "image:" + c), "plate", [p, q, c]);
+    if (v === "a") {
+      for (const l of D.links) {
+        add(el(svg, "line", styled("centripetal", {"marker-end": head("centripetal")}), "cen:" + l[2]), "cen", l);
+        add(el(svg, "line", styled("tangential", {"marker-end": head("tangential")}), "tan:" + l[2]), "tan", l);
+      }
+    }
+    for (const [p, q, key] of D.links) add(el(svg, "line", styled("relative", {id: v + "-rel-" + key}), "rel:" + key), "rel", [p, q, key]);
+    for (const s of D.sliders) {  // a block on a moving link: the link's point under it
+      if (!s.guide) continue;
+      add(el(svg, "line", styled("relative"), "under:" + s.key), "under", s);
+      add(el(svg, "line", styled("sliding", {id: v + "-slide-" + s.key, "marker-end": head("sliding")}), "sliding:" + s.key), "sliding", s);
+      if (v === "a") add(el(svg, "line", styled("coriolis", {"marker-end": head("coriolis")}), "coriolis:" + s.key), "coriolis", s);
+      add(el(svg, "circle", {class: "point", r: r3(FS * 0.12)}, "under:" + s.key), "underdot", s);
+      add(text(svg, {class: "label image-label"}, D.under[s.key] + (v === "a" ? "'" : ""), "under:" + s.key), "underlabel", s);
+    }
+    for (const p of D.points) add(el(svg, "line", styled("absolute", {id: v + "-abs-" + p, "marker-end": head("absolute")}), "abs:" + p), "abs", p);
+    add(el(svg, "circle", {class: "point pole", r: r3(FS * 0.14), cx: 0, cy: 0}, "pole:" + phase), "poledot", null);
+    add(text(svg, {class: "label pole", id: v + "-lab-pole"}, v === "a" ? "o'" : "o", "pole:" + phase), "pole", null);
+    for (const p of D.points) {
+      add(el(svg, "circle", {class: "point", r: r3(FS * 0.1), id: v + "-dot-" + p}, "abs:" + p), "dot", p);
+      add(text(svg, {class: "label image-label", id: v + "-lab-" + p}, label(p, phase), "abs:" + p), "label", p);
+    }
+  }
+  drawn[phase] = items;
+}
+
+function blockCorners(c, u, size) {  // a square block at c, its sides along u
+  const n = [-u[1], u[0]], h = size / 2;
+  return [[1, 1], [1, -1], [-1, -1], [-1, 1]].map(([i, j]) =>
+    [c[0] + h * (i * u[0] + j * n[0]), c[1] + h * (i * u[1] + j * n[1])]);
+}
 
 function update(phase, k) {
-  const g = drawn[phase], fs = g.fs, P = (p) => cm(phase, p, k), labels = [];
-  for (const [e, kind, x] of g.items) {
+  const v = frameView(phase, k), fs = FS, P = (p) => mm(phase, p, k), C = (a) => toMm(phase, a), labels = [];
+  const svg = document.getElementById(phase);
+  svg.setAttribute("viewBox", [v.box[0], v.box[1], v.W, v.H].map(r3).join(" "));
+  svg.dataset.perCm = v.per;
+  document.getElementById("scale-" + phase).textContent = v.text;
+  const inside = [v.box[0] + 0.2, v.box[1] + 0.2, v.box[2] - 0.2, v.box[3] - 0.2];
+  const along = (e, c, u) => {  // a line through c along u, as far as the panel goes
+    const seg = clipLine(c, u, inside);
+    e.style.display = seg ? "" : "none";
+    if (seg) line(e, seg[0], seg[1]);
+  };
+  for (const [e, kind, x] of drawn[phase]) {
     if (kind === "plate") poly(e, x.map(P));
     else if (kind === "link" || kind === "rel") line(e, P(x[0]), P(x[1]));
     else if (kind === "abs") line(e, [0, 0], P(x));
-    else if (kind === "joint") { e.setAttribute("cx", r3(P(x)[0])); e.setAttribute("cy", r3(P(x)[1])); }
+    else if (kind === "joint" || kind === "dot") dot(e, P(x));
     else if (kind === "ground") {
       const c = P(x), h = fs * 0.45;
       poly(e, [c, [c[0] - h * 0.6, c[1] + h], [c[0] + h * 0.6, c[1] + h]]);
-    } else if (kind === "guide") {
-      const s = scaleOf("configuration").perCm, c = P(x.point), u = [x.u[0], -x.u[1]], L = 50;
-      line(e, [c[0] - L * u[0], c[1] - L * u[1]], [c[0] + L * u[0], c[1] + L * u[1]]);
-    } else if (kind === "pitch") {  // a pitch circle about a point, its radius to scale
-      const c = P(x[0]);
-      e.setAttribute("cx", r3(c[0])); e.setAttribute("cy", r3(c[1]));
-      e.setAttribute("r", r3(x[1] / scaleOf("configuration").perCm));
-    } else if (kind === "rollline") {  // a fixed line through a point of it
-      const s = scaleOf("configuration").perCm, c = [x[0][0] / s, -x[0][1] / s];
-      const u = [x[1][0], -x[1][1]], L = 50;
-      line(e, [c[0] - L * u[0], c[1] - L * u[1]], [c[0] + L * u[0], c[1] + L * u[1]]);
+    } else if (kind === "guide") along(e, P(x.point), [x.u[0], -x.u[1]]);
+    else if (kind === "rollline") along(e, C(x[0]), [x[1][0], -x[1][1]]);
+    else if (kind === "pitch") {  // a pitch circle about a point, its radius to scale
+      dot(e, P(x[0]));
+      e.setAttribute("r", r3(10 * x[1] / v.per));
     } else if (kind === "block") {
       const u = x.u ? [x.u[0], -x.u[1]] : unit(P(x.guide[0]), P(x.guide[1]));
       poly(e, blockCorners(P(x.point), u, fs * 0.9));
     } else if (kind === "cen" || kind === "tan") {
       // the relative acceleration of q to p: centripetal (towards p) then tangential
-      const [p, q, key] = x, w = D.W[key][k], s = scaleOf("acceleration").perCm;
-      const Pp = vec("configuration", p, k), Pq = vec("configuration", q, k);
-      const ap = vec("acceleration", p, k);
-      const knee = [(ap[0] - w * w * (Pq[0] - Pp[0])) / s, -(ap[1] - w * w * (Pq[1] - Pp[1])) / s];
-      if (kind === "cen") line(e, P(p), knee); else line(e, knee, P(q));
-    } else if (kind === "under" || kind === "sliding" || kind === "coriolis" || kind === "underlabel") {
-      const sc = scaleOf(phase).perCm, [u1, back] = under(phase, x, k);
-      const C = (a) => [a[0] / sc, -a[1] / sc];
-      if (kind === "under") line(e, P(x.guide[0]), C(u1));
-      else if (kind === "sliding") line(e, C(u1), C(back));
-      else if (kind === "coriolis") line(e, C(back), P(x.point));
-      else { const c = C(u1); place(e, [c[0] - 0.6 * fs, c[1] + 0.35 * fs]); }
+      const b = C(knee(x, k));
+      if (kind === "cen") line(e, P(x[0]), b); else line(e, b, P(x[1]));
+    } else if (["under", "sliding", "coriolis", "underdot", "underlabel"].includes(kind)) {
+      const [u1, back] = under(phase, x, k).map(C);
+      if (kind === "under") line(e, P(x.guide[0]), u1);
+      else if (kind === "sliding") line(e, u1, back);
+      else if (kind === "coriolis") line(e, back, P(x.point));
+      else if (kind === "underdot") dot(e, u1);
+      else labels.push([e, u1]);
     } else if (kind === "pole") {  // the pole's label, on the side away from the images
       let sx = 0, sy = 0;
       for (const p of D.points) { const c = P(p); const L = Math.hypot(c[0], c[1]) || 1; sx += c[0] / L; sy += c[1] / L; }
       const L = Math.hypot(sx, sy);
       const u = L > 1e-9 ? [-sx / L, -sy / L] : [-0.7, 0.7];
-      place(e, [0.8 * fs * u[0], 0.8 * fs * u[1] + 0.35 * fs]);
-    } else if (kind === "label") labels.push([e, x]);
+      place(e, keepIn([0.8 * fs * u[0], 0.8 * fs * u[1]], v.box, e.lastChild.nodeValue.length));
+    } else if (kind === "label") labels.push([e, P(x)]);
   }
-  placeLabels(labels, phase, k, fs);
+  placeLabels(labels, phase, v.box);
 }
-
+// a label's place moved inside the panel (its text is about 0.6 fs wide a letter)
+function keepIn(q, box, letters) {
+  const hw = 0.35 * FS * letters + 0.5;
+  return [Math.min(Math.max(q[0], box[0] + hw), box[2] - hw),
+    Math.min(Math.max(q[1], box[1] + 0.5 * FS), box[3] - 0.6 * FS) + 0.35 * FS];
+}
 // labels beside their points, each where it is clear of the labels already placed and of
 // the other points (tried around the point, the preferred side first)
-function placeLabels(labels, phase, k, fs) {
-  const P = (p) => cm(phase, p, k);
-  const pts = labels.map(([, p]) => P(p));
+function placeLabels(labels, phase, box) {
+  const pts = labels.map(([, c]) => c);
   if (phase !== "configuration") pts.push([0, 0]);
-  const placed = [];
+  const placed = [], fs = FS;
   const clear = (q, own) => placed.every((c) => Math.hypot(q[0] - c[0], q[1] - c[1]) > 1.1 * fs) &&
     pts.every((c, i) => i === own || Math.hypot(q[0] - c[0], q[1] - c[1]) > 0.6 * fs);
-  labels.forEach(([e, p], i) => {
+  labels.forEach(([e], i) => {
     const c = pts[i], L = Math.hypot(c[0], c[1]);
     const a0 = phase === "configuration" || L < 1e-9 ? -Math.PI / 4 : Math.atan2(c[1], c[0]);
     let best = null;
@@ -205,7 +308,7 @@ function placeLabels(labels, phase, k, fs) {
       if (clear(q, i)) { best = q; break; }
     }
     placed.push(best);
-    place(e, [best[0], best[1] + 0.35 * fs]);
+    place(e, keepIn(best, box, e.lastChild.nodeValue.length));  // (the text after its <title>)
   });
 }
 
@@ -214,22 +317,22 @@ function pointValues(p, k) {
   const v = vec("velocity", p, k), a = vec("acceleration", p, k);
   return {v: Math.hypot(v[0], v[1]), vdir: dir(v[0], v[1]), a: Math.hypot(a[0], a[1]), adir: dir(a[0], a[1])};
 }
-function valuesRows(k) {
+function valuesRows(k) {  // [id, name (HTML), value]
   const rows = [["theta", "crank angle θ", deg(D.theta[k]) + "°"]];
   for (const p of D.points) {
     const pv = pointValues(p, k);
-    rows.push(["v-" + p, "v_" + p + " (o" + label(p, "velocity") + ")", fmt(pv.v) + " m/s at " + pv.vdir + "°"]);
-    rows.push(["a-" + p, "a_" + p + " (o'" + label(p, "acceleration") + ")", fmt(pv.a) + " m/s² at " + pv.adir + "°"]);
+    rows.push(["v-" + p, sub("v", p) + " (o" + esc(label(p, "velocity")) + ")", fmt(pv.v) + " m/s at " + pv.vdir + "°"]);
+    rows.push(["a-" + p, sub("a", p) + " (o'" + esc(label(p, "acceleration")) + ")", fmt(pv.a) + " m/s² at " + pv.adir + "°"]);
   }
   for (const [, , key] of D.links) {
-    rows.push(["w-" + key, "ω_" + key, angular(D.W[key][k], "rad/s")]);
-    rows.push(["al-" + key, "α_" + key, angular(D.Al[key][k], "rad/s²")]);
+    rows.push(["w-" + key, sub("ω", key), angular(D.W[key][k], "rad/s")]);
+    rows.push(["al-" + key, sub("α", key), angular(D.Al[key][k], "rad/s²")]);
   }
   for (const s in D.S) {
-    rows.push(["vs-" + s, "sliding velocity of " + s, fmt(D.S[s][0][k]) + " m/s"]);
-    rows.push(["as-" + s, "sliding acceleration of " + s, fmt(D.S[s][1][k]) + " m/s²"]);
+    rows.push(["vs-" + s, "sliding velocity of " + esc(s), fmt(D.S[s][0][k]) + " m/s"]);
+    rows.push(["as-" + s, "sliding acceleration of " + esc(s), fmt(D.S[s][1][k]) + " m/s²"]);
     const c = Math.hypot(D.S[s][2][k], D.S[s][3][k]);
-    if (c > 0) rows.push(["ac-" + s, "Coriolis component at " + s, fmt(c) + " m/s²"]);
+    if (c > 0) rows.push(["ac-" + s, "Coriolis component at " + esc(s), fmt(c) + " m/s²"]);
   }
   if (D.torque) rows.push(["torque", "input torque", angular(D.torque[k], "N m")]);
   if (D.condition) {
@@ -243,18 +346,19 @@ function buildValues() {
   const body = document.querySelector("#values tbody");
   for (const [id, name] of valuesRows(frame)) {
     const tr = document.createElement("tr");
-    tr.innerHTML = "<th></th><td></td>";
-    tr.firstChild.textContent = name;
+    tr.innerHTML = "<th>" + name + "</th><td></td>";
     tr.lastChild.id = "val-" + id;
     body.appendChild(tr);
   }
 }
 function tipText(tip, k) {
+  if (!tip.includes(":")) return tip;
   const [kind, name] = tip.split(":");
   const u = D.units, f = D.unit;
   if (kind === "point" || kind === "ground") {
     const c = vec("configuration", name, k);
-    return name + " at (" + fmt(c[0] / f) + ", " + fmt(c[1] / f) + ") " + u;
+    return (kind === "ground" ? "fixed pivot " : "") + name + " at (" + fmt(c[0] / f) + ", " + fmt(c[1] / f) + ") " + u +
+      (kind === "point" && !(name in D.ground) ? "; " + tipText("abs:" + name, k) : "");
   }
   if (kind === "link") {
     const [p, q] = D.links.find((l) => l[2] === name);
@@ -269,7 +373,6 @@ function tipText(tip, k) {
   }
   if (kind === "rel" || kind === "cen" || kind === "tan") {
     const [p, q] = D.links.find((l) => l[2] === name);
-    const ph = kind === "rel" ? null : "acceleration";
     const one = (phase) => {
       const a = vec(phase, p, k), b = vec(phase, q, k);
       return fmt(Math.hypot(b[0] - a[0], b[1] - a[1])) + " " + UNIT[phase];
@@ -283,41 +386,65 @@ function tipText(tip, k) {
   }
   if (kind === "plate" || kind === "image") return "point " + name + " on its link: " + tipText("abs:" + name, k);
   if (kind === "pole") return (name === "velocity" ? "o" : "o'") + ": the pole, image of every fixed point (zero " + (name === "velocity" ? "velocity)" : "acceleration)");
-  if (kind === "series") {
-    const link = D.links.find((l) => l[2] === name);
-    return link ? "ω_" + name + " = " + angular(D.W[name][k], "rad/s") : tipText("abs:" + name, k);
+  if (kind === "under") {
+    const s = D.sliders.find((x) => x.key === name), [uv] = under("velocity", s, k), [ua] = under("acceleration", s, k);
+    return D.under[name] + ": the point of link " + s.link + " under the block " + s.point + " (coincident with it), v = o" +
+      D.under[name] + " = " + fmt(Math.hypot(uv[0], uv[1])) + " m/s, a = o'" + D.under[name] + "' = " + fmt(Math.hypot(ua[0], ua[1])) + " m/s²";
   }
-  if (kind === "under") return "the point of link " + D.sliders.find((s) => s.key === name).link + " under the block " + name + " (" + D.under[name] + " on the velocity polygon)";
   if (kind === "sliding") return "sliding velocity of " + name + " = " + fmt(D.S[name][0][k]) + " m/s; sliding acceleration " + fmt(D.S[name][1][k]) + " m/s²";
   if (kind === "coriolis") return "Coriolis component at " + name + " = 2ωv = " + fmt(Math.hypot(D.S[name][2][k], D.S[name][3][k])) + " m/s²";
   if (kind === "slider" || kind === "guide") return "slider " + name + ": sliding velocity " + fmt(D.S[name][0][k]) + " m/s";
   return name;
 }
+// a tap or a click shows the same words in a box (touch screens show no <title>)
 const tooltip = document.getElementById("tooltip");
-function showTip(ev) {
+document.addEventListener("click", (ev) => {
   const t = ev.target.closest("[data-tip]");
   if (!t) { tooltip.hidden = true; return; }
   tooltip.textContent = tipText(t.dataset.tip, frame);
   tooltip.hidden = false;
-  tooltip.style.left = (ev.pageX + 12) + "px";
+  const w = tooltip.offsetWidth;
+  tooltip.style.left = Math.max(4, Math.min(ev.pageX + 12, document.documentElement.clientWidth - w - 4)) + "px";
   tooltip.style.top = (ev.pageY + 12) + "px";
-}
-for (const kind of ["mouseover", "click"]) document.addEventListener(kind, showTip);
+});
 
 // ---------------------------------------------------------------- sweep plots
+// each series: [name as SVG text parts [base, subscript], f(k)]
 const PLOTS = [
-  ["plot-v", "speeds (m/s)", () => D.points.map((p) => [p, (k) => pointValues(p, k).v])],
-  ["plot-w", "angular velocities (rad/s, ccw +)", () => D.links.map(([, , key]) => [key, (k) => D.W[key][k]])],
-  ["plot-a", "accelerations (m/s²)", () => D.points.map((p) => [p, (k) => pointValues(p, k).a])],
+  ["plot-v", "speeds of the points", "speed (m/s)", () => D.points.map((p) => [["v", p], (k) => pointValues(p, k).v])],
+  ["plot-w", "angular velocities of the links", "ω (rad/s, ccw +)", () => D.links.map(([, , key]) => [["ω", key], (k) => D.W[key][k]])],
+  ["plot-a", "accelerations of the points", "acceleration (m/s²)", () => D.points.map((p) => [["a", p], (k) => pointValues(p, k).a])],
 ];
-const COLORS = ["#1f5fa8", "#c2410c", "#15803d", "#7e22ce", "#b91c1c", "#0e7490", "#a16207", "#4b5563"];
+function roundTicks(lo, hi, most) {  // round ticks (1, 2, 5 x 10^k apart) over [lo, hi]
+  const step = roundUp((hi - lo) / most), out = [];
+  for (let t = Math.ceil(lo / step - 1e-9) * step; t <= hi + 1e-9 * step; t += step) out.push(Math.abs(t) < 1e-9 * step ? 0 : t);
+  return out;
+}
+function typeset(parent, attrs, [base, s]) {
+  const t = el(parent, "text", attrs);
+  t.textContent = base;
+  const e = el(t, "tspan", {"baseline-shift": "sub", "font-size": "75%"});
+  e.textContent = s;
+  return t;
+}
 const markers = [];
 function buildPlots() {
-  const W = 320, H = 190, L = 44, R = 16, T = 22, B = 28;
-  const t0 = D.theta[0], t1 = D.theta[N - 1], lo = Math.min(t0, t1), hi = Math.max(t0, t1) || 1;
-  const X = (t) => L + (W - L - R) * (t - lo) / ((hi - lo) || 1);
-  for (const [id, title, series] of PLOTS) {
+  const W = 320, H = 210, L = 50, R = 12, B = 34, t0 = D.theta[0], t1 = D.theta[N - 1];
+  // frame order, left to right: the marker moves as the crank turns (cw or ccw)
+  const X = (t) => L + (W - L - R) * (t - t0) / ((t1 - t0) || 1);
+  for (const [id, title, ytitle, series] of PLOTS) {
     const svg = document.getElementById(id), ss = series();
+    svg.setAttribute("viewBox", "0 0 " + W + " " + H);
+    // legend rows under the title, then the plot's area
+    let lx = L, rows = 0;
+    const place = ss.map(([name]) => {
+      const w = 24 + 6 * (name[0].length + 0.75 * name[1].length);
+      if (lx + w > W - R && lx > L) { lx = L; rows++; }
+      const at = [lx, 28 + 12 * rows];
+      lx += w;
+      return at;
+    });
+    const T = 36 + 12 * rows;
     // the range of most values (near a limit position they grow without bound: cut off)
     const all = [];
     for (const [, f] of ss) for (let k = 0; k < N; k++) all.push(f(k));
@@ -325,22 +452,39 @@ function buildPlots() {
     const q = (x) => all[Math.min(all.length - 1, Math.floor(x * all.length))];
     const lo5 = q(0.05), hi95 = q(0.95), room = 0.5 * (hi95 - lo5);
     let ymin = Math.min(0, Math.max(all[0], lo5 - room)), ymax = Math.max(0, Math.min(all[all.length - 1], hi95 + room));
-    if (ymax === ymin) ymax = ymin + 1;
+    if (!(ymax - ymin > 1e-12 * Math.max(Math.abs(ymin), Math.abs(ymax), 1e-300))) { ymax = ymin + Math.max(1, Math.abs(ymin)); }
+    const yt = roundTicks(ymin, ymax, 4), step = yt.length > 1 ? yt[1] - yt[0] : ymax - ymin;
+    ymin = Math.min(ymin, Math.floor(ymin / step + 1e-9) * step); ymax = Math.max(ymax, Math.ceil(ymax / step - 1e-9) * step);
+    const Y = (y) => T + (H - T - B) * (ymax - y) / (ymax - ymin);
     const clip = el(el(svg, "defs", {}), "clipPath", {id: id + "-clip"});
     el(clip, "rect", {x: L, y: T, width: W - L - R, height: H - T - B});
-    const Y = (y) => T + (H - T - B) * (ymax - y) / (ymax - ymin);
-    el(svg, "text", {x: L, y: 14, class: "plot-title"}).textContent = title;
-    el(svg, "line", {x1: L, y1: Y(0), x2: W - R, y2: Y(0), class: "axis"});
+    text(svg, {x: L, y: 13, class: "plot-title"}, title);
+    for (const y of roundTicks(ymin, ymax, 4)) {
+      el(svg, "line", {x1: L, y1: r3(Y(y)), x2: W - R, y2: r3(Y(y)), class: y === 0 ? "axis" : "grid"});
+      text(svg, {x: L - 3, y: r3(Y(y) + 3.5), class: "tick", "text-anchor": "end"}, fmt(y, 3));
+    }
+    const span = Math.abs(t1 - t0), dstep = [5, 10, 15, 30, 45, 60, 90, 180].find((s) => span / s <= 6) || 360;
+    for (let j = Math.ceil(Math.min(t0, t1) / dstep - 1e-9); j * dstep <= Math.max(t0, t1) + 1e-9; j++) {
+      const t = j * dstep;  // a round angle, written between 0 and 360
+      el(svg, "line", {x1: r3(X(t)), y1: T, x2: r3(X(t)), y2: H - B, class: "grid"});
+      text(svg, {x: r3(X(t)), y: H - B + 11, class: "tick", "text-anchor": "middle"}, String(((t % 360) + 360) % 360) + "°");
+    }
     el(svg, "line", {x1: L, y1: T, x2: L, y2: H - B, class: "axis"});
-    for (const y of [ymin, ymax]) el(svg, "text", {x: L - 3, y: Y(y) + 4, class: "tick", "text-anchor": "end"}).textContent = fmt(y, 3);
-    for (const t of [lo, (lo + hi) / 2, hi]) el(svg, "text", {x: X(t), y: H - 10, class: "tick", "text-anchor": "middle"}).textContent = deg(t) + "°";
+    text(svg, {x: (L + W - R) / 2, y: H - 6, class: "axis-title", "text-anchor": "middle"},
+      D.fullTurn ? "crank angle θ, as the crank turns (" + (t1 < t0 ? "cw" : "ccw") + ")" : "crank angle θ, between the limit positions");
+    text(svg, {x: 0, y: 0, class: "axis-title", "text-anchor": "middle", transform: "translate(10," + r3((T + H - B) / 2) + ") rotate(-90)"}, ytitle);
+    const [ic, iw, idash] = D.style.marks.instant;
+    el(svg, "line", {x1: r3(X(D.theta[D.start])), x2: r3(X(D.theta[D.start])), y1: T, y2: H - B, stroke: ic, "stroke-width": iw,
+      "stroke-dasharray": idash.join(" ")}, "the stated instant, θ = " + deg(D.theta[D.start]) + "°");
     ss.forEach(([name, f], i) => {
-      const pts = [];
+      const pts = [], color = D.style.series[i % D.style.series.length];
       for (let k = 0; k < N; k++) pts.push(r3(X(D.theta[k])) + "," + r3(Y(f(k))));
-      el(svg, "polyline", {points: pts.join(" "), class: "series", stroke: COLORS[i % COLORS.length], "clip-path": "url(#" + id + "-clip)"}, "series:" + name);
-      el(svg, "text", {x: W - R - 4, y: T + 12 * (i + 1), class: "legend", fill: COLORS[i % COLORS.length], "text-anchor": "end"}).textContent = name;
+      el(svg, "polyline", {points: pts.join(" "), class: "series", stroke: color, "clip-path": "url(#" + id + "-clip)"}, "series:" + name[1]);
+      el(svg, "line", {x1: place[i][0], x2: place[i][0] + 12, y1: place[i][1] - 3.5, y2: place[i][1] - 3.5, stroke: color, "stroke-width": 2});
+      typeset(svg, {x: place[i][0] + 15, y: place[i][1], class: "legend"}, name);
     });
-    markers.push([el(svg, "line", {class: "marker", y1: T, y2: H - B, id: id + "-marker"}), X]);
+    const [mc, mw] = D.style.marks.now;
+    markers.push([el(svg, "line", {class: "marker", stroke: mc, "stroke-width": mw, y1: T, y2: H - B, id: id + "-marker"}), X]);
   }
 }
 
@@ -351,7 +495,8 @@ function show(k) {
   frame = k;
   slider.value = k;
   for (const phase of PHASES) update(phase, k);
-  for (const [id, , text] of valuesRows(k)) document.getElementById("val-" + id).textContent = text;
+  for (const [t, tip] of titles) t.textContent = tipText(tip, k);
+  for (const [id, , words] of valuesRows(k)) document.getElementById("val-" + id).textContent = words;
   document.getElementById("angle-now").textContent = "θ = " + deg(D.theta[k]) + "°";
   for (const [m, X] of markers) { m.setAttribute("x1", r3(X(D.theta[k]))); m.setAttribute("x2", r3(X(D.theta[k]))); }
 }
@@ -368,6 +513,8 @@ play.addEventListener("click", () => {
 });
 slider.max = N - 1;
 slider.addEventListener("input", () => show(Number(slider.value)));
+window.addEventListener("resize", () => { layout(); show(frame); });
+layout();
 for (const phase of PHASES) setup(phase);
 buildValues();
 buildPlots();
