@@ -17,6 +17,7 @@ import pytest
 from polygon_method import parse_scene, solve
 from polygon_method.cli import main
 from polygon_method.errors import SceneError
+from scenes import seed
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -43,19 +44,7 @@ def engine(angle, sense="ccw", through="", assembly="", r=100, l=400):
     return parse_scene(text.replace("'", '"'))
 
 
-FOURBAR = """
-[ground]
-A = [0, 0]
-D = [100, 0]
-[links]
-AB = 50
-BC = 66
-CD = 56
-[input]
-crank = "AB"
-angle = "{angle}"
-speed = "10 rad/s ccw"
-"""
+FOURBAR = seed(drive='angle = "{angle}"\nspeed = "10 rad/s ccw"')
 
 
 def fourbar(angle):

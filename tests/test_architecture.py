@@ -16,25 +16,12 @@ import pytest
 from polygon_method import parse_scene, solve
 from polygon_method.kinematics import evaluate
 from polygon_method.compiler import compile_plan
+from scenes import seed
 
 PACKAGE = Path(__file__).resolve().parent.parent / "polygon_method"
 STEP_CLASSES = ("Crank", "Dyad", "SliderDyad", "SlottedLink", "Carried")
 
-FOURBAR = """
-[ground]
-A = [0, 0]
-D = [100, 0]
-[links]
-AB = 50
-BC = 66
-CD = 56
-[points]
-E = { on = "BC", along = 40 }
-[input]
-crank = "AB"
-angle = 60
-speed = "10.5 rad/s cw"
-"""
+FOURBAR = seed(middle='[points]\nE = { on = "BC", along = 40 }\n')
 
 
 def _sources():

@@ -18,7 +18,7 @@ from polygon_method.cli import main
 from polygon_method.errors import SceneError
 from polygon_method.scales import parse_scale
 from polygon_method.scene import parse_answers
-from scenes import TRANSLATING_COUPLER
+from scenes import TRANSLATING_COUPLER, seed
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -225,26 +225,9 @@ def fourbar_closed_form(theta2_deg=60.0, w2=-10.5, a=0.05, b=0.066, c=0.056, d=0
     return w3, w4
 
 
-FOURBAR = """
-[ground]
-A = [0, 0]
-D = [100, 0]
-[links]
-AB = 50
-BC = 66
-CD = 56
-[assembly]
-C = "above"
-[input]
-crank = "AB"
-angle = 60
-speed = "10.5 rad/s cw"
-[pins]
-A = { radius = 30 }
-B = { radius = 40 }
-[loads]
-C = { force = [0, -500] }
-"""
+FOURBAR = seed(middle='[assembly]\nC = "above"\n',
+               after='[pins]\nA = { radius = 30 }\nB = { radius = 40 }\n[loads]\n'
+                     'C = { force = [0, -500] }\n')
 
 
 def test_closed_form_fourbar_agrees():

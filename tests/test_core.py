@@ -17,33 +17,15 @@ from polygon_method import parse_scene, solve
 from polygon_method.cli import main
 from polygon_method.compiler import compile_plan
 from polygon_method.plan import Context
-from scenes import TRANSLATING_COUPLER
+from scenes import TRANSLATING_COUPLER, seed
 
-FOURBAR = """
-[ground]
-A = [0, 0]
-D = [100, 0]
-[links]
-AB = 50
-BC = 66
-CD = 56
-[points]
-E = { on = "BC", along = 40 }
-F = { on = "BC", distances = { B = 45, C = 30 }, turn = "cw" }
-G = { on = "CD", distances = { C = 24, D = 44 }, turn = "cw" }
-[assembly]
-C = "above"
-[input]
-crank = "AB"
-angle = 60
-speed = "10.5 rad/s cw"
-acceleration = "40 rad/s^2 ccw"
-[pins]
-A = { radius = 30 }
-B = { radius = 40 }
-C = { radius = 25 }
-D = { diameter = 70 }
-"""
+FOURBAR = seed(middle='[points]\nE = { on = "BC", along = 40 }\n'
+                      'F = { on = "BC", distances = { B = 45, C = 30 }, turn = "cw" }\n'
+                      'G = { on = "CD", distances = { C = 24, D = 44 }, turn = "cw" }\n'
+                      '[assembly]\nC = "above"\n',
+               drive='angle = 60\nspeed = "10.5 rad/s cw"\nacceleration = "40 rad/s^2 ccw"',
+               after='[pins]\nA = { radius = 30 }\nB = { radius = 40 }\n'
+                     'C = { radius = 25 }\nD = { diameter = 70 }\n')
 
 OFFSET_SLIDER = """
 [ground]
@@ -126,27 +108,12 @@ speed = "200 rpm ccw"
 acceleration = "30 rad/s^2 cw"
 """
 
-MOVING_GUIDE = """
-[ground]
-A = [0, 0]
-D = [100, 0]
-H = [60, 130]
-[links]
-AB = 50
-BC = 66
-CD = 56
-HX = 80
-[sliders]
-X = { along = "BC" }
-[assembly]
-C = "above"
-X = [70, 55]
-[input]
-crank = "AB"
-angle = 60
-speed = "10.5 rad/s cw"
-acceleration = "12 rad/s^2 cw"
-"""
+MOVING_GUIDE = seed(ground='H = [60, 130]\n',
+                    links='HX = 80\n',
+                    middle='[sliders]\nX = { along = "BC" }\n[assembly]\nC = "above"\n'
+                           'X = [70, 55]\n',
+                    drive='angle = 60\nspeed = "10.5 rad/s cw"\n'
+                          'acceleration = "12 rad/s^2 cw"')
 
 SIX_LINK = """
 [ground]

@@ -21,6 +21,7 @@ from polygon_method.cli import main
 from polygon_method.compiler import gruebler
 from polygon_method.scene import parse_scene
 from reference import reference_solution
+from scenes import seed
 
 REL = 1e-9
 
@@ -42,22 +43,9 @@ angle = {angle}
 """
 
 # a four-bar whose coupler pin C is pushed by a cylinder from the frame (a loader's arm)
-FOURBAR = """
-[ground]
-A = [0, 0]
-D = [100, 0]
-E = [150, -60]
-[links]
-AB = 50
-BC = 66
-CD = 56
-[cylinders]
-EC = {{}}
-[input]
-crank = "AB"
-angle = {angle}
-{given}
-"""
+FOURBAR = seed(ground='E = [150, -60]\n',
+               middle='[cylinders]\nEC = {{}}\n',
+               drive='angle = {angle}\n{given}')
 
 
 def _cyl_ref(ref, k, r):

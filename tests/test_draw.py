@@ -26,6 +26,7 @@ from polygon_method.draw import (choose_scales, drawn_vectors, make_figure, rend
                                  svg_string)
 from polygon_method.scales import parse_scale
 from reference import reference_solution
+from scenes import seed
 
 ROOT = Path(__file__).resolve().parents[1]
 WORKED = sorted(glob.glob(str(ROOT / "worked_problems" / "*.toml")))
@@ -33,28 +34,12 @@ SVGNS = "{http://www.w3.org/2000/svg}"
 XLINK = "{http://www.w3.org/1999/xlink}href"
 CM = 72 / 2.54  # pt per cm
 
-FOURBAR = """
-[ground]
-A = [0, 0]
-D = [100, 0]
-[links]
-AB = 50
-BC = 66
-CD = 56
-[points]
-E = { on = "BC", along = 40 }
-F = { on = "BC", distances = { B = 45, C = 30 }, turn = "cw" }
-G = { on = "CD", distances = { C = 24, D = 44 }, turn = "cw" }
-[assembly]
-C = "above"
-[input]
-crank = "AB"
-angle = 60
-speed = "10.5 rad/s cw"
-acceleration = "40 rad/s^2 ccw"
-[pins]
-B = { radius = 10 }
-"""
+FOURBAR = seed(middle='[points]\nE = { on = "BC", along = 40 }\n'
+                      'F = { on = "BC", distances = { B = 45, C = 30 }, turn = "cw" }\n'
+                      'G = { on = "CD", distances = { C = 24, D = 44 }, turn = "cw" }\n'
+                      '[assembly]\nC = "above"\n',
+               drive='angle = 60\nspeed = "10.5 rad/s cw"\nacceleration = "40 rad/s^2 ccw"',
+               after='[pins]\nB = { radius = 10 }\n')
 
 SLOTTED = """
 [ground]

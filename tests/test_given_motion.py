@@ -19,6 +19,7 @@ from polygon_method import SingularStepError, solve
 from polygon_method.cli import main
 from polygon_method.scene import parse_scene
 from reference import reference_solution
+from scenes import seed
 
 REL = 1e-9
 
@@ -36,21 +37,9 @@ angle = {angle}
 {given}
 """
 
-FOURBAR = """
-[ground]
-A = [0, 0]
-D = [100, 0]
-[links]
-AB = 50
-BC = 66
-CD = 56
-[points]
-F = {{ on = "BC", distances = {{ B = 45, C = 30 }}, turn = "cw" }}
-[input]
-crank = "AB"
-angle = {angle}
-{given}
-"""
+FOURBAR = seed(middle='[points]\n'
+                      'F = {{ on = "BC", distances = {{ B = 45, C = 30 }}, turn = "cw" }}\n',
+               drive='angle = {angle}\n{given}')
 
 SLOTTED = """
 [ground]

@@ -9,6 +9,7 @@ import pytest
 from polygon_method import AssemblyError, solve
 from polygon_method.cli import main
 from polygon_method.scene import parse_scene
+from scenes import seed
 
 SLIDER = """
 units = "mm"
@@ -25,22 +26,9 @@ crank = "OA"
 speed = "10 rad/s ccw"
 """
 
-FOURBAR = """
-units = "mm"
-[ground]
-A = [0, 0]
-D = [100, 0]
-[links]
-AB = 50
-BC = 66
-CD = 56
-[assembly]
-C = "above"
-[input]
-crank = "AB"
-{pos}
-speed = "10.5 rad/s cw"
-"""
+FOURBAR = seed(top='units = "mm"\n',
+               middle='[assembly]\nC = "above"\n',
+               drive='{pos}\nspeed = "10.5 rad/s cw"')
 
 TIPPER = """
 units = "mm"

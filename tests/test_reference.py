@@ -17,26 +17,13 @@ from polygon_method.scene import parse_scene
 from reference import (constraint_jacobian, constraint_residuals, reference_fourbar_algebraic,
                        reference_positions, reference_slider_crank, reference_solution,
                        theta_at)
+from scenes import seed
 
 REL = 1e-9  # solver (floats) against the reference
 
-FOURBAR = """
-[ground]
-A = [0, 0]
-D = [100, 0]
-[links]
-AB = 50
-BC = 66
-CD = 56
-[points]
-E = {{ on = "BC", along = 40 }}
-F = {{ on = "BC", distances = {{ B = 45, C = 30 }}, turn = "cw" }}
-[input]
-crank = "AB"
-angle = {angle}
-speed = "10.5 rad/s cw"
-{acc}
-"""
+FOURBAR = seed(middle='[points]\nE = {{ on = "BC", along = 40 }}\n'
+                      'F = {{ on = "BC", distances = {{ B = 45, C = 30 }}, turn = "cw" }}\n',
+               drive='angle = {angle}\nspeed = "10.5 rad/s cw"\n{acc}')
 
 SLIDER_CRANK = """
 [ground]
@@ -92,46 +79,18 @@ speed = "20 rad/s ccw"
 """
 
 # four-bar plus a slider G driven from the coupler point F (on a 30 deg path)
-SIX_LINK = """
-[ground]
-A = [0, 0]
-D = [100, 0]
-T = [150, 0]
-[links]
-AB = 50
-BC = 66
-CD = 56
-FG = 100
-[points]
-F = {{ on = "BC", distances = {{ B = 45, C = 30 }}, turn = "cw" }}
-[sliders]
-G = {{ path = "30 deg", through = "T" }}
-[input]
-crank = "AB"
-angle = {angle}
-speed = "10.5 rad/s cw"
-{acc}
-"""
+SIX_LINK = seed(ground='T = [150, 0]\n',
+                links='FG = 100\n',
+                middle='[points]\n'
+                       'F = {{ on = "BC", distances = {{ B = 45, C = 30 }}, turn = "cw" }}\n'
+                       '[sliders]\nG = {{ path = "30 deg", through = "T" }}\n',
+                drive='angle = {angle}\nspeed = "10.5 rad/s cw"\n{acc}')
 
 # four-bar plus a block G, pinned to the rocker HG, sliding along the moving rocker CD
-GUIDE_DYAD = """
-[ground]
-A = [0, 0]
-D = [100, 0]
-H = [60, -40]
-[links]
-AB = 50
-BC = 66
-CD = 56
-HG = 60
-[sliders]
-G = {{ along = "{guide}" }}
-[input]
-crank = "AB"
-angle = {angle}
-speed = "10.5 rad/s cw"
-{acc}
-"""
+GUIDE_DYAD = seed(ground='H = [60, -40]\n',
+                  links='HG = 60\n',
+                  middle='[sliders]\nG = {{ along = "{guide}" }}\n',
+                  drive='angle = {angle}\nspeed = "10.5 rad/s cw"\n{acc}')
 
 ACC = 'acceleration = "80 rad/s^2 ccw"'
 SWIVEL_GROUND_LINK = '"A-O" = 123.69316876852982'  # = |AO|: only to get O past the loader

@@ -17,33 +17,16 @@ from polygon_method import load_scene, parse_scene, solve
 from polygon_method.cli import main
 from polygon_method.scales import choose_scale, diagram_scales, extent, parse_scale
 from polygon_method.steptable import read_off, steps_text
+from scenes import seed
 
 ROOT = Path(__file__).resolve().parent.parent
 WORKED = sorted((ROOT / "worked_problems").glob("*.toml"))
 TOGGLE = ROOT / "worked_problems" / "toggle_mechanism.toml"
 
-FOURBAR = """
-title = "four-bar"
-[ground]
-A = [0, 0]
-D = [100, 0]
-[links]
-AB = 50
-BC = 66
-CD = 56
-[points]
-E = { on = "BC", along = 40 }
-[assembly]
-C = "above"
-[input]
-crank = "AB"
-angle = 60
-speed = "10.5 rad/s cw"
-acceleration = "40 rad/s^2 ccw"
-[pins]
-B = { diameter = 80 }
-C = { radius = 25 }
-"""
+FOURBAR = seed(top='title = "four-bar"\n',
+               middle='[points]\nE = { on = "BC", along = 40 }\n[assembly]\nC = "above"\n',
+               drive='angle = 60\nspeed = "10.5 rad/s cw"\nacceleration = "40 rad/s^2 ccw"',
+               after='[pins]\nB = { diameter = 80 }\nC = { radius = 25 }\n')
 
 SLOTTED = """
 [ground]
