@@ -41,7 +41,7 @@ from .scene import GuideSlider, Scene, key_line
 from .steps import TIERS, Context, Crank, cylinder
 from .steps.second_crank import SecondCrank
 
-__all__ = ["compile_plan", "gruebler", "step_scale"]
+__all__ = ["compile_plan", "gruebler"]
 
 #: crank angles tried per turn for saying where a scene that cannot assemble could
 _REACH_GRID = 720
@@ -542,7 +542,3 @@ class _Compiler:
         raise MobilityError(f"{mob}: over-constrained: " + "; ".join(parts), file=sc.file,
                             key=where)
 
-
-def step_scale(step) -> float:
-    """The largest length of a step (a scale for tolerances)."""
-    return step.reach()
