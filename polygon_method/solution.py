@@ -337,9 +337,9 @@ def tidied(sol: Solution) -> Solution:
         if kind is None:
             return {n: (quiet(x, size), quiet(y, size)) for n, (x, y) in d.items()}
         out = {}
-        for n, (x, y) in d.items():
+        for n, (x, y) in d.items():  # a component within the vector's bound: 0
             lim = sol.noise(kind, n)
-            out[n] = (0.0, 0.0) if hypot(x, y) <= lim else (x, y)
+            out[n] = (0.0 if abs(x) <= lim else x, 0.0 if abs(y) <= lim else y)
         return out
 
     def num(d, kind):
@@ -347,10 +347,8 @@ def tidied(sol: Solution) -> Solution:
 
     def slide(n, s):
         vs, a_s = sol.shown(s[0], "vs", n), sol.shown(s[1], "as", n)
-        cor = tuple(s[2:])
-        if cor and hypot(*cor[:2]) <= sol.noise("ac", n):
-            cor = (0.0,) * len(cor)
-        return (vs, a_s) + cor
+        lim = sol.noise("ac", n)
+        return (vs, a_s) + tuple(0.0 if abs(c) <= lim else c for c in s[2:])
 
     S = {n: slide(n, s) for n, s in sol.S.items()}
     out = Solution(sc, sol.plan, vec(sol.P, None), vec(sol.V, "v"), vec(sol.A, "a"),

@@ -69,8 +69,9 @@ def test_nothing_above_its_bound_is_zeroed(d, r, w, pivot):
             true = float(math.hypot(*table[p]))
             if mine == (0.0, 0.0):
                 assert true <= sol.noise(kind, p) * (1 + 1e-9) or true == 0
-            elif true > 2 * sol.noise(kind, p):
-                assert math.hypot(*mine) == pytest.approx(true, rel=1e-6)
+            elif true > 2 * sol.noise(kind, p):  # shown: right to its bound (a component
+                # within the bound may be 0)
+                assert abs(math.hypot(*mine) - true) <= sol.noise(kind, p) + 1e-9 * true
                 checked += 1
     for lk in sc.links:
         for mine, table, kind in ((clean.W[lk.key], ref["omega"], "omega"),
@@ -83,7 +84,9 @@ def test_nothing_above_its_bound_is_zeroed(d, r, w, pivot):
     s = ref["sliders"]["C"]
     vs, a_s, cx, cy = clean.S["C"]
     assert a_s == pytest.approx(float(s["as"]), rel=1e-6) and a_s != 0
-    assert math.hypot(cx, cy) == pytest.approx(float(math.hypot(*s["coriolis"])), rel=1e-6)
+    cor = float(math.hypot(*s["coriolis"]))
+    assert cor > 2 * sol.noise("ac", "C")
+    assert abs(math.hypot(cx, cy) - cor) <= sol.noise("ac", "C") + 1e-9 * cor
     assert math.hypot(*clean.A["C"]) == pytest.approx(small, rel=1e-9)
     assert checked >= 10
 
