@@ -10,6 +10,7 @@ from __future__ import annotations
 import csv
 import io
 import math
+import re
 
 import mpmath
 import numpy as np
@@ -165,16 +166,42 @@ def test_engine_that_cannot_turn_its_stroke_ends_at_the_limits(r, l, e):
         assert rod.max_unbounded or rod.min_unbounded
 
 
-def test_linkage_angles_within_one_turn(capsys, tmp_path):
-    # a scene whose reachable range starts near 180 deg: it runs past 360
+@pytest.mark.parametrize("scene_angle", [0.0, 90.0, -80.0, 400.0])
+def test_linkage_and_summary_angles_within_one_turn(capsys, tmp_path, scene_angle):
+    # a non-Grashof crank (50 + 100 > 66 + 56) whose reachable range passes 0 deg: its
+    # limits are where BC and CD fold, A-C = CD - BC ... or extend, A-C = BC + CD
+    text = f"""
+units = "mm"
+[ground]
+A = [0, 0]
+D = [100, 0]
+[links]
+AB = 50
+BC = 66
+CD = 56
+[assembly]
+C = "above"
+[input]
+crank = "AB"
+angle = {scene_angle}
+speed = "10 rad/s ccw"
+"""
     f = tmp_path / "wide.toml"
-    f.write_text(FOURBAR.format(a=150, b=450, c=300, d=200, angle=-60, w=10.0))
+    f.write_text(text)
+    cos = (50 ** 2 + 100 ** 2 - (66 + 56) ** 2) / (2 * 50 * 100)  # BD = BC + CD
+    lim = math.degrees(math.acos(cos))
     assert main(["linkage", str(f)]) == 0
     out = capsys.readouterr().out
-    angles = [float(m) for m in __import__("re").findall(r"crank (?:at |angle )?\s*(-?[\d.]+) deg",
-                                                          out)]
-    assert angles
-    assert all(0 <= a < 360 for a in angles)
+    angles = [float(m) for m in re.findall(r"crank (?:at |angle )?\s*(-?[\d.]+) deg", out)]
+    assert len(angles) >= 2 and all(0 <= a < 360 for a in angles)
+    assert any(abs(a - lim) < 1e-3 for a in angles)
+    assert any(abs(a - (360 - lim)) < 1e-3 for a in angles)
+    s = summarize(parse_scene(text), _angles(360))
+    assert s.range_deg == pytest.approx((360 - lim, lim), abs=1e-6)
+    assert "(through 0)" in s.text()
+    for e in s.extremes:
+        if not e.constant:
+            assert 0 <= e.at_max < 360 and 0 <= e.at_min < 360
 
 
 def test_csv_has_full_precision(tmp_path):
