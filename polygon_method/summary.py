@@ -430,9 +430,10 @@ class _Reducer:
         without bound towards a limit position within the requested angles (a toggle of the
         driven side: velocities as 1 / sqrt(d), accelerations as 1 / d^1.5, d the crank's
         distance from the limit), wherever its sampled extreme is. The quantity is probed
-        at 1e-2, 1e-3 and 1e-4 rad from the limit; it is unbounded where its size grows
-        monotonically, with one sign, by more than five times (the size of a quantity that
-        tends to a finite value changes by far less)."""
+        at 1e-2, 1e-3 and 1e-4 rad from the limit; it is unbounded where its size grows,
+        with one sign, by more than twice each decade (as d^-0.5 does, 3.2 times: a
+        quantity that tends to a finite value, even one that passes 0 near the first
+        probe, does not grow so over the last decade)."""
         found = {}
         for lp, inward in self._limits_in(theta, spacing):
             probe = lp.theta + inward * np.array([1e-2, 1e-3, 1e-4])
@@ -444,8 +445,8 @@ class _Reducer:
                 vals = q[nm]
                 for sense in (1.0, -1.0):
                     v = sense * vals
-                    if np.all(np.isfinite(v)) and v[0] > 0 and np.all(np.diff(v) > 0) \
-                            and v[-1] > 5.0 * v[0]:
+                    if np.all(np.isfinite(v)) and v[0] > 0 and v[1] > 2.0 * v[0] \
+                            and v[2] > 2.0 * v[1]:  # (d^-0.5 grows 3.2 times a decade)
                         found.setdefault((nm, sense), lp.theta)
         return found
 

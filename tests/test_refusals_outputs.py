@@ -185,6 +185,13 @@ def test_title_the_font_lacks_is_said_once(tmp_path, capsys, recwarn, title):
                  str(tmp_path / "a.gif")]) == 0
     err = capsys.readouterr().err
     assert err.count("no glyph") == 1
+    v = tmp_path / "v.toml"
+    v.write_text(VARIED.format(u="mm", d=40, ab=20, bc=30, cd=25, cx=30, cy=20, bc1=29,
+                               bc2=31, cd1=24, cd2=26).replace("small four-bar", title))
+    assert main(["variants", str(v), "--count", "2", "--pdf", "-o",
+                 str(tmp_path / "class")]) == 0
+    err = capsys.readouterr().err
+    assert err.count("no glyph") == 1 and "Glyph" not in err
     assert not [w for w in recwarn if "Glyph" in str(w.message)]
 
 
