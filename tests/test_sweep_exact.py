@@ -20,7 +20,6 @@ from reference import reference_slider_crank
 from polygon_method import parse_scene
 from polygon_method.cli import main
 from polygon_method.summary import summarize
-from polygon_method.sweeps import sweep
 
 ENGINE = """
 units = "mm"
