@@ -247,8 +247,7 @@ def _given_spread(motion, res, sizes, eV, eA, eW, eAl, eS):
 def bounds_dict(sol, b=None) -> dict:
     """The ``error_bounds`` object of ``solve --json``: each quantity's bound, keyed as the
     quantities themselves, and the sizes they are relative to (``b``: the bounds, if
-    already computed). A bound of :data:`USELESS` or more is null, and
-    ``no_useful_bound`` says why and how many."""
+    already computed)."""
     b = error_bounds(sol) if b is None else b
     sc = sol.scene
     d = {"relative_to": {k: float(v) for k, v in b.scales.items()},
@@ -265,27 +264,12 @@ def bounds_dict(sol, b=None) -> dict:
     if sc.loads and sc.input.second is None:
         d["input_torque"] = b.torque(sc)
     d["worst"] = b.worst
-    useless = [0]
-
-    def clean(x):
-        if isinstance(x, dict):
-            return {k: clean(v) for k, v in x.items()}
-        if x < USELESS:
-            return float(x)
-        useless[0] += 1
-        return None
-    out = {"relative_to": d.pop("relative_to")}
-    out.update(clean(d))
-    if useless[0]:
-        out["no_useful_bound"] = {"count": useless[0] - (out["worst"] is None),
-                                  "reason": NO_BOUND}
-    return out
+    return d
 
 
 def shown_bounds(sol, b=None) -> list:
     """(quantity, bound) of every quantity whose bound exceeds :data:`SHOWN`, largest
-    first, for the text report (``b``: the bounds, if already computed); a bound of
-    :data:`USELESS` or more is no useful bound (:data:`NO_BOUND`)."""
+    first, for the text report (``b``: the bounds, if already computed)."""
     b = error_bounds(sol) if b is None else b
     out = []
     for p in sol.scene.point_names:

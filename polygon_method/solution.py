@@ -23,7 +23,7 @@ from __future__ import annotations
 from .derived import input_torque as _torque
 from .derived import PinRubbing, pin_records, power_terms
 from .centres import JSON_BODIES, centres_dict, locate
-from .errorbound import bounds_dict, error_bounds
+from .errorbound import NO_BOUND, USELESS, bounds_dict, error_bounds
 from .errors import TOL, PolygonMethodError
 from .kinematics import Motion, hypot
 from .numbers import fmt_angular, quiet, sense  # noqa: F401  (re-exported)
@@ -244,7 +244,7 @@ class Solution(Motion):
                       for st in self.plan.steps]
         d["warnings"] = warnings
         d["notes"] = list(self.notes)
-        d["error_bounds"] = bounds_dict(self, self.error_bounds)
+        d["error_bounds"] = _useful(bounds_dict(self, self.error_bounds))
         return _finite(d)
 
     def value(self, kind: str, names: tuple):
@@ -274,6 +274,27 @@ class Solution(Motion):
                 if got is not None:
                     return hypot(*got[1 if kind == "vI" else 2])
         raise KeyError(kind)
+
+
+def _useful(d: dict) -> dict:
+    """The JSON's ``error_bounds`` with each bound of :data:`USELESS` or more (no useful
+    bound: it may be as large as the largest value of its kind) written as None, and
+    ``no_useful_bound`` giving their count and the reason."""
+    count = [0]
+
+    def clean(x):
+        if isinstance(x, dict):
+            return {k: clean(v) for k, v in x.items()}
+        if x < USELESS:
+            return float(x)
+        count[0] += 1
+        return None
+    out = {"relative_to": d["relative_to"]}
+    out.update(clean({k: v for k, v in d.items() if k != "relative_to"}))
+    if count[0]:
+        out["no_useful_bound"] = {"count": count[0] - (out["worst"] is None),
+                                  "reason": NO_BOUND}
+    return out
 
 
 def _finite(d: dict) -> dict:
