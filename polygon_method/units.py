@@ -257,7 +257,7 @@ def implausible(value: float, kind: str) -> str | None:
     slip, or a mechanism near a toggle that really moves so fast), or None.
 
     >>> implausible(2.5e9, "angular_acceleration")[:40]
-    'more than 1e+09 rad/s^2: far beyond what '
+    'more than 1e+09 rad/s^2: far beyond what'
     """
     if kind in ABSURD and not abs(value) <= ABSURD[kind]:
         return (f"more than {ABSURD[kind]:g} {_SI_NAME[kind]}: far beyond what a mechanism "
