@@ -34,6 +34,11 @@ from .numbers import fmt, fmt_angular, quiet
 __all__ = ["centres_text"]
 
 
+def _own(sol, body):
+    """The link key whose omega bound is a body's (None: the largest of all links')."""
+    return body if body in sol.W else None
+
+
 def _size(sol) -> float:
     """The mechanism's size (m): its longest link or farthest point from the origin."""
     return max([lk.length for lk in sol.scene.links] + [math.hypot(*p) for p in sol.P.values()])
@@ -97,7 +102,7 @@ def centres_text(ic: Centres) -> str:
         if c1j.point is None:
             out.append(f"  omega_{k} ({name}) = 0: I1{k} is at infinity, {name} translates")
             continue
-        out.append(f"  omega_{k} ({name}) = {fmt_angular(sol.shown(w, 'omega'), 'rad/s')} "
+        out.append(f"  omega_{k} ({name}) = {fmt_angular(sol.shown(w, 'omega', _own(sol, name)), 'rad/s')} "
                    f"(from omega_{i} with {ic.centre(1, i).label}, {ic.centre(1, k).label}, "
                    f"{ic.centre(i, k).label})")
     out.append("")
@@ -109,7 +114,7 @@ def centres_text(ic: Centres) -> str:
             continue
         k = ic.body_of(p)
         vx, vy = ic.velocity(p, k)
-        v = sol.shown(math.hypot(vx, vy), "v")
+        v = sol.shown(math.hypot(vx, vy), "v", p)
         c = ic.centre(1, k)
         if c.point is None:
             out.append(f"  v_{p} = {fmt(v)} m/s (link {k} translates)")
@@ -117,7 +122,7 @@ def centres_text(ic: Centres) -> str:
         # 0 where the point is the centre (noise apart)
         r = quiet(math.hypot(sol.P[p][0] - c.point[0], sol.P[p][1] - c.point[1]), size)
         out.append(f"  v_{p} = omega_{k} x {p}-{c.label} = "
-                   f"{fmt(abs(sol.shown(ic.omegas[k], 'omega')))} x "
+                   f"{fmt(abs(sol.shown(ic.omegas[k], 'omega', _own(sol, ic.bodies[k - 1]))))} x "
                    f"{fmt(r / sc.length_unit, 5)} {sc.units} = {fmt(v)} m/s")
     for w in ic.warnings:
         out.append(f"warning: {w}")

@@ -34,10 +34,27 @@ from .kinematics import hypot
 from .steps.rounding import C_FLOOR, EPS, largest, vmax
 
 __all__ = ["EPS", "C_FLOOR", "ErrorBounds", "error_bounds", "scales", "bounds_dict",
-           "shown_bounds", "SHOWN"]
+           "shown_bounds", "SHOWN", "USELESS", "NO_BOUND"]
 
 #: the text report shows a bound only above this (the promise of agreement everywhere else)
 SHOWN = 1e-9
+#: a relative bound at or above this says nothing (the error may be the size of the largest
+#: value of its kind): "no useful bound", null in the JSON
+USELESS = 1.0
+#: bounds saturate here, never overflow to inf (a long chain of steps that each multiply
+#: the bound): far above :data:`USELESS`, far below the largest float
+CAP = 1e100
+#: the reason given, in words and in the JSON, where a bound is no useful bound
+NO_BOUND = ("no useful bound: the rounding carried along the steps a quantity depends on "
+            "may reach its size (a long chain of steps, or ill-conditioned ones)")
+
+
+def _cap(x):
+    """``x`` saturated at :data:`CAP` (an undefined one too): floats or arrays."""
+    if isinstance(x, float):
+        return x if x < CAP else CAP
+    import numpy as np
+    return np.fmin(x, CAP)
 
 #: each kind's rounding constant is the ``rounding`` of its step class (fitted against the
 #: 50-digit reference, with a margin); its rule, the step's ``error_bound``
@@ -156,6 +173,7 @@ def error_bounds(motion) -> ErrorBounds:
         p, v, a, w, al = st.error_bound(walk, st.rounding * EPS * far, worst(eP, needs),
                                         worst(eV, needs, eW, nlinks),
                                         worst(eA, needs, eAl, nlinks))
+        p, v, a, w, al = _cap(p), _cap(v), _cap(a), _cap(w), _cap(al)
         for x in st.finds:
             eP[x], eV[x], eA[x] = p, v, a
         for lk in st.links:
@@ -188,6 +206,10 @@ def error_bounds(motion) -> ErrorBounds:
     res = getattr(plan, "given", None)
     if res is not None:
         _given_spread(motion, res, sizes, eV, eA, eW, eAl, eS)
+        for t in (eV, eA, eW, eAl):
+            for k in t:
+                t[k] = _cap(t[k])
+        eS.update((k, tuple(_cap(x) for x in t)) for k, t in eS.items())
     return ErrorBounds(eP, eV, eA, eW, eAl, eS, sizes)
 
 

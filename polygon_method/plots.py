@@ -74,9 +74,8 @@ def plot_figure(res: SweepResult, *, points=None, links=None):
     if dom.full_turn:
         deg = res.degrees
         t0 = math.degrees(sc.input.angle)
-    else:  # continuous over the reachable range
-        show = degrees_fn(dom)
-        shift = show(dom.lo) - math.degrees(dom.lo)
+    else:  # an axis continuous over the reachable range, starting in [-180, 180)
+        shift = -360.0 * math.floor((math.degrees(dom.lo) + 180.0) / 360.0)
         deg = np.degrees(dom.map(res.theta)[0]) + shift
         t0 = math.degrees(float(dom.map(np.array([sc.input.angle]))[0][0])) + shift
     order = np.argsort(deg, kind="stable") if np.any(np.diff(deg) < 0) else slice(None)
@@ -130,7 +129,8 @@ def plot_figure(res: SweepResult, *, points=None, links=None):
                 pad = 0.1 * size if size >= 1e-8 * unit_scale else 1.0
                 ax.set_ylim(0.5 * (lo + hi) - pad, 0.5 * (lo + hi) + pad)
         _mark(ax, t0, "instant")
-        show = degrees_fn(dom)
+        show = degrees_fn(dom) if dom.full_turn else (
+            lambda t: math.degrees(float(dom.map(np.array([t]))[0][0])) + shift)
         for lp in res.limits:
             _mark(ax, show(lp.theta), "limit")
         for cp in res.change_points:

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import math
 
-from .errorbound import SHOWN, shown_bounds
+from .errorbound import NO_BOUND, SHOWN, USELESS, shown_bounds
 from .given import stated
-from .numbers import fmt_angular, quiet
+from .numbers import fmt_angular
 from .solution import Solution, tidied
 
 __all__ = ["solution_text", "direction_deg"]
@@ -21,11 +21,17 @@ def direction_deg(x: float, y: float) -> float:
     return 0.0 if d >= 359.9995 else d
 
 
-def _vec(x, y, digits=4, scale=0.0):
+def _vec(x, y, digits=4, noise=0.0):
+    """A vector's size and direction, or 0 within ``noise`` (its own error bound)."""
     m = math.hypot(x, y)
-    if quiet(m, scale) == 0:
+    if m <= noise:
         return "0"
     return f"{m:.{digits}g} at {direction_deg(x, y):.1f} deg"
+
+
+def _rim(st) -> tuple:
+    """The points a rolling step reads and finds: the contact's bound is theirs."""
+    return tuple(dict.fromkeys((*st.needs, *st.finds)))
 
 
 def _coord(x: float) -> str:
@@ -62,12 +68,13 @@ def solution_text(sol: Solution) -> str:
     for p in sc.point_names:
         x, y = sol.P[p]
         pos = f"({_coord(x / u)}, {_coord(y / u)})"
-        lines.append(f"{p:<6} {pos:<24} {_vec(*sol.V[p], scale=sol.scales['v']):<24} "
-                     f"{_vec(*sol.A[p], scale=sol.scales['a']):<24}")
+        lines.append(f"{p:<6} {pos:<24} {_vec(*sol.V[p], noise=sol.noise('v', p)):<24} "
+                     f"{_vec(*sol.A[p], noise=sol.noise('a', p)):<24}")
     lines.append("")
     lines.append(f"{'link':<8} {'length (' + sc.units + ')':<14} {'omega':<22} {'alpha':<22}")
     for lk in sc.links:
-        w, al = sol.shown(sol.W[lk.key], "omega"), sol.shown(sol.Al[lk.key], "alpha")
+        w, al = (sol.shown(sol.W[lk.key], "omega", lk.key),
+                 sol.shown(sol.Al[lk.key], "alpha", lk.key))
         lines.append(f"{lk.key:<8} {lk.length / u:<14.6g} {fmt_angular(w, 'rad/s'):<22} "
                      f"{fmt_angular(al, 'rad/s^2'):<22}")
     if sc.sliders:
@@ -76,30 +83,32 @@ def solution_text(sol: Solution) -> str:
                      f"{'sliding a (m/s^2)':<20} {'Coriolis (m/s^2)':<24}")
         for s in sc.sliders:
             vs, a_s, cor = sol.S[s.key][0], sol.S[s.key][1], sol.coriolis(s.key)
-            vs, a_s = sol.shown(vs, "v"), sol.shown(a_s, "a")
+            vs, a_s = sol.shown(vs, "vs", s.key), sol.shown(a_s, "as", s.key)
             guide = getattr(s, "label", None) or getattr(s, "guide", "")
             lines.append(f"{s.key:<8} {guide:<16} {vs:<18.5g} {a_s:<20.5g} "
-                         f"{_vec(*cor, scale=sol.scales['a']):<24}")
+                         f"{_vec(*cor, noise=sol.noise('ac', s.key)):<24}")
     if sc.cylinders:
         lines.append("")
         lines.append(f"{'cylinder':<10} {'length (' + sc.units + ')':<14} {'extension (m/s)':<17} "
                      f"{'its rate (m/s^2)':<18} {'omega':<20} {'alpha':<22}")
         for cyl in sc.cylinders:
             n = sol.cylinder_length(cyl.key)
-            vs, a_s = sol.shown(sol.S[cyl.key][0], "v"), sol.shown(sol.S[cyl.key][1], "a")
-            w, al = sol.shown(sol.W[cyl.key], "omega"), sol.shown(sol.Al[cyl.key], "alpha")
+            vs = sol.shown(sol.S[cyl.key][0], "vs", cyl.key)
+            a_s = sol.shown(sol.S[cyl.key][1], "as", cyl.key)
+            w = sol.shown(sol.W[cyl.key], "omega", cyl.key)
+            al = sol.shown(sol.Al[cyl.key], "alpha", cyl.key)
             lines.append(f"{cyl.key:<10} {n / u:<14.6g} {vs:<17.5g} {a_s:<18.5g} "
                          f"{fmt_angular(w, 'rad/s'):<20} {fmt_angular(al, 'rad/s^2'):<22}")
     contacts = [(st, st.contact_motion(sol)) for st in sol.plan.steps]
-    contacts = [(st.bodies()[0], c) for st, c in contacts if c is not None]
+    contacts = [(st.bodies()[0], c, _rim(st)) for st, c in contacts if c is not None]
     if contacts:  # the wheel's point at each contact: no slip, not at rest in acceleration
         lines.append("")
         lines.append(f"{'rolling':<8} {'contact (' + sc.units + ')':<24} {'velocity (m/s)':<24} "
                      f"{'acceleration (m/s^2)':<24}")
-        for k, (I, v, a) in contacts:
+        for k, (I, v, a), rim in contacts:
             pos = f"({_coord(I[0] / u)}, {_coord(I[1] / u)})"
-            lines.append(f"{k:<8} {pos:<24} {_vec(*v, scale=sol.scales['v']):<24} "
-                         f"{_vec(*a, scale=sol.scales['a']):<24}")
+            lines.append(f"{k:<8} {pos:<24} {_vec(*v, noise=sol.noise('v', rim)):<24} "
+                         f"{_vec(*a, noise=sol.noise('a', rim)):<24}")
     if sc.pins:
         lines.append("")
         lines.append("pin   radius (" + sc.units + ")  rubbing velocity (m/s)")
@@ -131,7 +140,11 @@ def solution_text(sol: Solution) -> str:
         lines.append(f"estimated error above {SHOWN:g} (rounding times 1/condition along "
                      "each quantity's steps; relative to the largest of its kind):")
         for what, b in bounds[:SHOWN_LINES]:
-            lines.append(f"  {what}: {b:.2g}")
+            lines.append(f"  {what}: {b:.2g}" if b < USELESS else f"  {what}: no useful bound")
+        useless = sum(1 for _, b in bounds if not b < USELESS)
+        if useless:
+            lines.append(f"  ({useless} quantit{'y has' if useless == 1 else 'ies have'} "
+                         f"{NO_BOUND})")
         if len(bounds) > SHOWN_LINES:
             lines.append(f"  ... and {len(bounds) - SHOWN_LINES} more (every bound: "
                          "solve --json, error_bounds)")

@@ -23,7 +23,7 @@ from __future__ import annotations
 from .derived import input_torque as _torque
 from .derived import PinRubbing, pin_records, power_terms
 from .centres import JSON_BODIES, centres_dict, locate
-from .errorbound import bounds_dict, error_bounds
+from .errorbound import NO_BOUND, USELESS, bounds_dict, error_bounds
 from .errors import TOL, PolygonMethodError
 from .kinematics import Motion, hypot
 from .numbers import fmt_angular, quiet, sense  # noqa: F401  (re-exported)
@@ -34,6 +34,12 @@ from .scene import FixedPath, Scene
 __all__ = ["solve", "Solution", "PinRubbing", "sense", "fmt_angular"]
 
 _UNSET = object()  # a quantity not yet derived (its value may be None)
+
+#: answer kind -> (its table of :class:`~polygon_method.errorbound.ErrorBounds`, the size
+#: that bound is relative to)
+_BOUND_OF = {"v": ("V", "velocity"), "a": ("A", "acceleration"), "omega": ("W", "omega"),
+             "alpha": ("Al", "alpha"), "vs": ("S", "velocity"), "as": ("S", "acceleration"),
+             "ac": ("S", "acceleration")}
 
 
 class Solution(Motion):
@@ -134,10 +140,40 @@ class Solution(Motion):
                     "alpha": max((abs(x) for x in self.Al.values()), default=0.0) + w * w}
         return self._get("scales", make)
 
-    def shown(self, value, kind):
-        """``value`` as reports show it: 0 where it is below ``TOL.negligible`` of the
-        largest of its ``kind`` ("v", "a", "omega", "alpha"): rounding noise, not a motion."""
-        return quiet(value, self.scales[kind])
+    def noise(self, kind, name=None) -> float:
+        """The absolute error bound of a quantity: its own relative bound
+        (:attr:`error_bounds`) times the size of its kind it is relative to. ``kind``:
+        "v", "a" (``name`` a point, or a tuple of points: a relative vector, the sum of
+        theirs), "omega", "alpha" (a link's key), "vs", "as", "ac" (a slider's key);
+        without a name, the largest of that kind. 0 where the bound is no useful bound
+        (1 or more of its size): then nothing is hidden, the report says why.
+        """
+        b = self.error_bounds
+        table, size = _BOUND_OF[kind]
+        size = b.scales[size]
+        if table == "S":
+            j = ("vs", "as", "ac").index(kind)
+            vals = ([b.S.get(name, (0.0,) * 3)[j]] if name is not None
+                    else [t[j] for t in b.S.values()])
+        else:
+            t = getattr(b, table)
+            names = (name,) if isinstance(name, str) else name
+            vals = [t.get(n, 0.0) for n in names] if names is not None else list(t.values())
+            if names is not None and len(vals) > 1:
+                vals = [sum(vals)]
+        e = max(vals, default=0.0)
+        if not e < 1.0:  # inf, nan or >= 1: no useful bound, hide nothing
+            return 0.0
+        return float(e * size)
+
+    def shown(self, value, kind, name=None):
+        """``value`` as reports show it: 0 where it is within its own error bound
+        (:meth:`noise`: ``kind`` "v", "a", "omega", "alpha", "vs", "as", "ac" and the
+        quantity's ``name``): rounding noise about a true zero, not a motion. Only noise is
+        hidden: a value above its bound is shown however small beside the largest of its
+        kind (an acceleration of 40 m/s^2 beside 7e11 near a toggle)."""
+        lim = self.noise(kind, name)
+        return 0.0 if abs(value) <= lim else value
 
     # ----- output
     def to_dict(self) -> dict:
@@ -208,8 +244,8 @@ class Solution(Motion):
                       for st in self.plan.steps]
         d["warnings"] = warnings
         d["notes"] = list(self.notes)
-        d["error_bounds"] = bounds_dict(self, self.error_bounds)
-        return d
+        d["error_bounds"] = _useful(bounds_dict(self, self.error_bounds))
+        return _finite(d)
 
     def value(self, kind: str, names: tuple):
         """The exact value behind an answer key (``kind`` as in ``[answers]``)."""
@@ -240,6 +276,51 @@ class Solution(Motion):
         raise KeyError(kind)
 
 
+def _useful(d: dict) -> dict:
+    """The JSON's ``error_bounds`` with each bound of :data:`USELESS` or more (no useful
+    bound: it may be as large as the largest value of its kind) written as None, and
+    ``no_useful_bound`` giving their count and the reason."""
+    count = [0]
+
+    def clean(x):
+        if isinstance(x, dict):
+            return {k: clean(v) for k, v in x.items()}
+        if x < USELESS:
+            return float(x)
+        count[0] += 1
+        return None
+    out = {"relative_to": d["relative_to"]}
+    out.update(clean({k: v for k, v in d.items() if k != "relative_to"}))
+    if count[0]:
+        out["no_useful_bound"] = {"count": count[0] - (out["worst"] is None),
+                                  "reason": NO_BOUND}
+    return out
+
+
+def _finite(d: dict) -> dict:
+    """``d`` with every number JSON cannot hold (an overflow to inf, an undefined value)
+    written as None, and a warning saying so: the JSON never holds NaN or inf."""
+    bad = []
+
+    def clean(x, where):
+        if isinstance(x, float):
+            if x - x == 0.0:  # finite
+                return x
+            bad.append(where)
+            return None
+        if isinstance(x, dict):
+            return {k: clean(v, f"{where}.{k}" if where else str(k)) for k, v in x.items()}
+        if isinstance(x, (list, tuple)):
+            return [clean(v, where) for v in x]
+        return x
+    out = clean(d, "")
+    if bad:
+        out["warnings"].append(f"{len(bad)} number(s) overflowed or are undefined, written "
+                               f"as null: {', '.join(dict.fromkeys(bad[:5]))}"
+                               + (" ..." if len(bad) > 5 else ""))
+    return out
+
+
 def solve(scene: Scene) -> Solution:
     """Compile (once per scene content) and evaluate the plan at the scene's crank angle.
 
@@ -264,34 +345,54 @@ _new = object.__new__
 
 def tidied(sol: Solution) -> Solution:
     """``sol`` with its rounding noise set to exact zeros, for reports that write every
-    number out (the step table, the centres): a component below ``TOL.negligible`` of the
-    largest of its kind (a position of the mechanism's size) is 0, so a link that does not
-    turn has no sense and a block that does not slide no Coriolis component."""
+    number out (the step table, the centres): a velocity, acceleration, omega, alpha,
+    sliding velocity or acceleration within its own error bound (:meth:`Solution.noise`)
+    is 0, so a link that does not turn has no sense and a block that does not slide no
+    Coriolis component; a position below ``TOL.negligible`` of the mechanism's size is 0.
+    A value above its bound stays, however small beside the largest of its kind."""
     sc = sol.scene
-    k = sol.scales
     size = max([lk.length for lk in sc.links]
                + [hypot(*p) for p in sol.P.values()] + [0.0])
 
-    def vec(d, scale):
-        return {n: (quiet(x, scale), quiet(y, scale)) for n, (x, y) in d.items()}
+    def vec(d, kind):
+        if kind is None:
+            return {n: (quiet(x, size), quiet(y, size)) for n, (x, y) in d.items()}
+        out = {}
+        for n, (x, y) in d.items():  # a component within the vector's bound: 0
+            lim = sol.noise(kind, n)
+            out[n] = (0.0 if abs(x) <= lim else x, 0.0 if abs(y) <= lim else y)
+        return out
 
     def num(d, kind):
-        return {n: sol.shown(x, kind) for n, x in d.items()}
+        return {n: sol.shown(x, kind, n) for n, x in d.items()}
 
-    S = {n: (sol.shown(s[0], "v"), sol.shown(s[1], "a"))
-         + tuple(quiet(c, k["a"]) for c in s[2:]) for n, s in sol.S.items()}
-    out = Solution(sc, sol.plan, vec(sol.P, size), vec(sol.V, k["v"]), vec(sol.A, k["a"]),
+    def slide(n, s):
+        vs, a_s = sol.shown(s[0], "vs", n), sol.shown(s[1], "as", n)
+        lim = sol.noise("ac", n)
+        return (vs, a_s) + tuple(0.0 if abs(c) <= lim else c for c in s[2:])
+
+    S = {n: slide(n, s) for n, s in sol.S.items()}
+    out = Solution(sc, sol.plan, vec(sol.P, None), vec(sol.V, "v"), vec(sol.A, "a"),
                    num(sol.W, "omega"), num(sol.Al, "alpha"), S, sol.cond, sol.theta)
-    for rec in out.rubbing.values():  # |w1 - w2| r of two equal omegas: 0
-        rec.values = tuple(quiet(v, k["omega"] * rec.radius) for v in rec.values)
+    b = sol.error_bounds
+    k = b.scales
+    for pin, rec in zip(sol.plan.pins, out.rubbing.values()):  # |w1 - w2| r of equal omegas
+        e = b.rubbing(pin)
+        lim = e * k["omega"] * rec.radius if e < 1.0 else 0.0
+        rec.values = tuple(0.0 if abs(v) <= lim else v for v in rec.values)
         rec.rubbing_velocity = max(rec.values, default=0.0)
     t = out.input_torque
     if t is not None:
-        # each load's power is noise against |F| v (|T_L| omega), the torque against their
-        # sum over the crank's omega
-        sizes = [hypot(*ld.force) * k["v"] if ld.force is not None
+        # each load's power within its bound (the bound of the velocity or omega it takes,
+        # times |F| or |T_L|), the torque within theirs over the crank's omega
+        sizes = [hypot(*ld.force) * k["velocity"] if ld.force is not None
                  else abs(ld.torque) * k["omega"] for ld in sc.loads]
-        out._cache["power"] = [(what, quiet(p, bound))
-                               for (what, p), bound in zip(out.power_terms, sizes)]
-        out._cache["torque"] = quiet(t, sum(sizes) / abs(sc.input.omega))
+        e = b.torque(sc)
+        e = e if e < 1.0 else 0.0
+        loads = [b.V.get(ld.target, 0.0) if ld.force is not None
+                 else b.W.get(sc.link(ld.target).key, 0.0) for ld in sc.loads]
+        out._cache["power"] = [(what, 0.0 if abs(p) <= (el if el < 1.0 else 0.0) * sz
+                                else p)
+                               for (what, p), el, sz in zip(out.power_terms, loads, sizes)]
+        out._cache["torque"] = 0.0 if abs(t) <= e * sum(sizes) / abs(sc.input.omega) else t
     return out

@@ -317,6 +317,21 @@ def _vector_name(v) -> str:
     return v.name
 
 
+def _vector_points(sol, v, c) -> tuple:
+    """The points whose error bounds bound a construction vector's: the two of ``v_CB``,
+    the one of ``v_C``; else those the step reads and finds (a centripetal, tangential or
+    Coriolis component)."""
+    m = re.match(r"^(v|a)_([A-Z0-9]+)$", v.name)
+    names = set(sol.P)
+    if m:
+        got = tuple(split_name(m.group(2)))
+        if got and all(p in names for p in got):
+            return got
+    st = sol.plan.steps[c.step] if 0 <= c.step < len(sol.plan.steps) else None
+    got = tuple(p for p in ((*st.needs, *st.finds) if st is not None else ()) if p in names)
+    return got or None
+
+
 def _is_ground_relative(sol, v) -> bool:
     """A relative vector to a fixed point duplicates the absolute one."""
     m = re.match(r"^(v|a)_([A-Z0-9]+)$", v.name)
@@ -337,7 +352,7 @@ def _readoff_rows(sol, constructions, scale, unit):
             if name in seen or _is_ground_relative(sol, v) or v.kind == "centripetal":
                 continue
             seen.add(name)
-            mag = sol.shown(v.magnitude, kind)  # a difference of equal images: 0
+            mag = sol.shown(v.magnitude, kind, _vector_points(sol, v, c))  # equal images: 0
             if c.step == 0 and c.phase == "velocity":
                 cm, val = scale.cm(mag), mag
             else:
@@ -378,8 +393,8 @@ def _angular_velocity_items(sol):
     for lk in sc.links:
         if lk.key in sol.plan.fixed_links:
             continue
-        w = sol.shown(sol.W[lk.key], "omega")
-        v = sol.shown(sol.speed(lk.q, lk.p), "v")
+        w = sol.shown(sol.W[lk.key], "omega", lk.key)
+        v = sol.shown(sol.speed(lk.q, lk.p), "v", (lk.q, lk.p))
         if lk.key == sc.input.crank:
             items.append(f"omega_{lk.key} = {fmt(abs(w))} rad/s {sense_word(w)} "
                          + ("(the input)" if sc.input.given is None
@@ -389,7 +404,7 @@ def _angular_velocity_items(sol):
         items.append(f"omega_{lk.key} = {rel} / {lk.key} = {fmt(v)} / {fmt(lk.length, 5)} = "
                      f"{fmt(abs(w))} rad/s {sense_word(w)}".rstrip())
     for c in sc.cylinders:  # the barrel's point under the rod's end: omega x its length
-        w = sol.shown(sol.W[c.key], "omega")
+        w = sol.shown(sol.W[c.key], "omega", c.key)
         L = sol.cylinder_length(c.key)
         items.append(f"omega_{c.key} = (the barrel's point under {c.rod}) / {c.barrel}{c.rod} "
                      f"= {fmt(abs(w) * L)} / {fmt(L, 5)} = {fmt(abs(w))} rad/s "
@@ -521,7 +536,7 @@ def _acceleration_table(sol):
         if lk.key in sol.plan.fixed_links:
             continue
         X, Y = orient[lk.key]
-        v = sol.shown(sol.speed(X, Y), "v")  # two equal images: 0
+        v = sol.shown(sol.speed(X, Y), "v", (X, Y))  # two equal images: 0
         L = lk.length
         cen = v * v / L
         al = sol.Al[lk.key]
@@ -564,7 +579,7 @@ def _acceleration(doc, sol, ascale):
     for lk in sc.links:
         if lk.key in sol.plan.fixed_links:
             continue
-        al = sol.shown(sol.Al[lk.key], "alpha")
+        al = sol.shown(sol.Al[lk.key], "alpha", lk.key)
         if lk.key == sc.input.crank:
             items.append((f"alpha_{lk.key} = {fmt(abs(al))} rad/s^2 {sense_word(al)} "
                           + ("(the input)" if sc.input.given is None

@@ -50,8 +50,8 @@ class Extreme:
 class Summary:
     """Extremes of every quantity, the reachable range and the notes of a sweep.
 
-    Crank angles are in degrees: in [0, 360) when the crank turns fully, otherwise
-    continuous across the reachable range (which may then run below 0 or above 360).
+    Crank angles are in degrees, within one turn: in [0, 360) (a reachable range that
+    passes 0 runs from its start to its end "through 0").
     """
 
     scene: Scene
@@ -100,7 +100,7 @@ class Summary:
         if self.limits and self.range_deg is not None:
             lo, hi = self.range_deg
             out.append(f"the crank cannot turn fully: it reaches {lo:.4f} to {hi:.4f} deg "
-                       "on the scene's branch")
+                       + ("(through 0) " if hi < lo else "") + "on the scene's branch")
             for lp in self.limits:
                 out.append(f"  limit position at {fmt_deg(deg(lp.theta))} deg: {lp.step}: "
                            f"{lp.why}")
@@ -141,6 +141,21 @@ class Summary:
 
 #: angles times points evaluated at once when refining extremes (about 100 MB of arrays)
 _REFINE_BUDGET = 1_000_000
+#: local extremes of each sense kept per quantity and refined (the largest sampled first):
+#: the true extreme may be at another local one than the sampled best
+_CANDIDATES = 6
+#: inward offsets (rad) from a limit position at which a quantity's value is compared with
+#: its value at the limit itself (equal to 1e-7 of its kind: it is finite and smooth there)
+_AT_LIMIT = (1e-9, 2e-9)
+
+
+def _local_extremes(a):
+    """Indices of the interior local maxima of the samples ``a`` (in their order)."""
+    if len(a) < 3:
+        return np.zeros(0, dtype=np.intp)
+    mid = a[1:-1]
+    ok = (mid >= a[:-2]) & (mid >= a[2:]) & ((mid > a[:-2]) | (mid > a[2:]))
+    return np.nonzero(ok)[0] + 1
 
 
 class _Reducer:
@@ -209,19 +224,31 @@ class _Reducer:
                 sq += y * y
                 i, j = int(np.argmax(sq)), int(np.argmin(sq))
                 hi, lo = math.hypot(x[i], y[i]), math.hypot(x[j], y[j])
+                cand = sq
             else:
                 if not len(arr):
                     continue
                 i, j = int(np.argmax(arr)), int(np.argmin(arr))
                 hi, lo = float(arr[i]), float(arr[j])
+                cand = arr
             b = self.best.get(name)
             if b is None:
-                self.best[name] = [hi, int(index[i]), lo, int(index[j]), unit, what]
-                continue
-            if hi > b[0]:
-                b[0], b[1] = hi, int(index[i])
-            if lo < b[2]:
-                b[2], b[3] = lo, int(index[j])
+                b = self.best[name] = [hi, int(index[i]), lo, int(index[j]), unit, what,
+                                       {}, {}]
+            else:
+                if hi > b[0]:
+                    b[0], b[1] = hi, int(index[i])
+                if lo < b[2]:
+                    b[2], b[3] = lo, int(index[j])
+            for sense, keep in ((1.0, b[6]), (-1.0, b[7])):
+                c = sense * np.asarray(cand, dtype=float)
+                ends = [0, len(c) - 1]  # the ends of a run: maybe next to a limit position
+                for k in [*_local_extremes(c), *ends]:
+                    keep[int(index[k])] = float(c[k])
+                if len(keep) > _CANDIDATES:  # the best few local extremes of each sense
+                    top = sorted(keep.items(), key=lambda kv: -kv[1])[:_CANDIDATES]
+                    keep.clear()
+                    keep.update(top)
 
     def _refine(self, tasks, passes):
         """Zoom on sampled extremes, all at once: 17 points across each bracket a pass.
@@ -271,7 +298,8 @@ class _Reducer:
         cps = [c.theta for c in dom.change_points]
         tasks, rows = [], []
         scales = self._scales()
-        for name, (mx, imx, mn, imn, unit, what) in self.best.items():
+        limits = [lp.theta for lp, _ in self._limits_in(theta, spacing)]
+        for name, (mx, imx, mn, imn, unit, what, cmax, cmin) in self.best.items():
             zero = 1e-9 * scales.get(unit, 0.0)  # rounding about a true zero
             mx, mn = (0.0 if abs(mx) <= zero else mx), (0.0 if abs(mn) <= zero else mn)
             scale = max(abs(mx), abs(mn))
@@ -282,28 +310,34 @@ class _Reducer:
             rows.append(row)
             if not (refine and spacing and spacing > 1e-12):
                 continue
-            for sense, i in ((1.0, imx), (-1.0, imn)):
-                if not _interior(theta, i, spacing):
-                    continue
-                t = float(theta[i])
-                a, b = t - spacing, t + spacing
-                (tm,), _ = dom.map(np.array([t]))
-                if any(abs(tc - tm) < 2 * spacing + 0.02 for tc in cps):
-                    continue  # values next to a change point are not refined
-                tasks.append([name, sense, a, b, row[2] if sense > 0 else row[4], t, row])
+            for sense, i, cand in ((1.0, imx, cmax), (-1.0, imn, cmin)):
+                for k in dict.fromkeys([i, *cand]):
+                    t = float(theta[k])
+                    if not (_interior(theta, k, spacing) or any(
+                            abs(lim - dom.map(np.array([t]))[0][0]) <= 1.5 * spacing
+                            for lim in limits)):
+                        continue  # the end of the requested range: its own value
+                    a, b = t - spacing, t + spacing  # (beyond a limit: left out)
+                    (tm,), _ = dom.map(np.array([t]))
+                    if any(abs(tc - tm) < 2 * spacing + 0.02 for tc in cps):
+                        continue  # values next to a change point are not refined
+                    val = (row[2] if sense > 0 else row[4]) if k == i else -sense * math.inf
+                    tasks.append([name, sense, a, b, val, t, row])
         if tasks:
             passes = max(1, min(12, math.ceil(math.log(2 * spacing / 1e-11, 8))))
             self._refine(tasks, passes)
             for name, sense, _, _, val, t, row in tasks:
-                if sense > 0:
+                if sense > 0 and val >= row[2]:
                     row[2], row[3] = val, t
-                else:
+                elif sense < 0 and val <= row[4]:
                     row[4], row[5] = val, t
+        if n and refine:
+            self._at_limits(rows, theta, spacing)
         if n:
             self._change_point_minima(rows, spacing, float(np.min(theta)),
                                       float(np.max(theta)))
         deg = degrees_fn(dom)
-        unbounded = self._unbounded(rows, spacing)
+        unbounded = self._unbounded(rows, theta, spacing) if n else {}
         for row in rows:  # an unbounded extreme is at the limit position, not a sample
             nm = row[0]
             if (nm, 1.0) in unbounded:
@@ -319,7 +353,7 @@ class _Reducer:
         formulas = tuple(engine_formula_lines(self.scene, {e.name: e for e in extremes}))
         rng = None
         if not dom.full_turn:
-            rng = (deg(dom.lo), deg(dom.lo) + math.degrees(dom.hi - dom.lo))
+            rng = (deg(dom.lo), deg(dom.hi))
         return Summary(self.scene, requested, evaluated, extremes, dom.limits,
                        dom.change_points, tuple(dom.notes), formulas, rng, deg)
 
@@ -344,19 +378,64 @@ class _Reducer:
                 if abs(d) < near and lo <= row[5] + d <= hi:
                     row[4], row[5] = 0.0, row[5] + d
 
-    def _unbounded(self, rows, spacing) -> dict:
-        """(name, sense) -> the limit position's angle, for the extremes found next to a limit position that grow without
-        bound towards it (a toggle of the driven side: velocities as 1 / sqrt(d),
-        accelerations as 1 / d^1.5, d the crank's distance from the limit). The quantity is
-        probed at 1e-2, 1e-3 and 1e-4 rad from the limit; it is unbounded where it grows
-        monotonically by more than five times."""
+    def _limits_in(self, theta, spacing):
+        """The limit positions within the requested angles: next to a sample (within one
+        and a half spacings, mapped into the domain)."""
         dom = self.sw.domain
-        if dom.full_turn or not dom.limits:
-            return {}
-        near = max(2.5 * (spacing or 0.0), 0.02)
-        found = {}
+        if dom.full_turn or not dom.limits or not len(theta):
+            return []
+        t, _ = dom.map(np.asarray(theta, dtype=float))
+        reach = 1.5 * (spacing or 0.0) + 1e-9
+        out = []
         for lp in dom.limits:
-            inward = -1.0 if abs(lp.theta - dom.hi) < abs(lp.theta - dom.lo) else 1.0
+            if float(np.min(np.abs(t - lp.theta))) <= reach:
+                inward = -1.0 if abs(lp.theta - dom.hi) < abs(lp.theta - dom.lo) else 1.0
+                out.append((lp, inward))
+        return out
+
+    def _at_limits(self, rows, theta, spacing):
+        """Each quantity evaluated at the limit positions within the requested angles, the
+        crank's exact angles there, and taken as the maximum or minimum where it is beyond
+        the samples': the transmission angle is 0 there, a block's travel ends there. A
+        quantity is taken only where it is finite and smooth at the limit (its values 1e-9
+        and 2e-9 rad inside agree with it to 1e-7 of its kind); one that grows without bound
+        there is marked so (:meth:`_unbounded`)."""
+        scales = self._scales()
+        for lp, inward in self._limits_in(theta, spacing):
+            pts = lp.theta + inward * np.array((0.0,) + _AT_LIMIT)
+            fr = self.sw.evaluate(pts)
+            q = {nm: (u, np.asarray(arr, dtype=float)) for nm, u, arr, _ in self.values(fr)}
+            for row in rows:
+                nm = row[0]
+                if nm not in q:
+                    continue
+                u, vals = q[nm]
+                v = float(vals[0])
+                if not math.isfinite(v):
+                    continue
+                exact = u == "deg" or nm.startswith("s_")  # positions: exact at the limit
+                if not exact:
+                    tol = 1e-7 * max(scales.get(u, 0.0), abs(v))
+                    if not (np.all(np.isfinite(vals)) and np.all(np.abs(vals - v) <= tol)):
+                        continue
+                if row[3] is None:  # a constant stays one
+                    continue
+                if v > row[2]:
+                    row[2], row[3] = v, float(lp.theta)
+                if v < row[4]:
+                    row[4], row[5] = v, float(lp.theta)
+
+    def _unbounded(self, rows, theta, spacing) -> dict:
+        """(name, sense) -> the limit position's angle, for every quantity that grows
+        without bound towards a limit position within the requested angles (a toggle of the
+        driven side: velocities as 1 / sqrt(d), accelerations as 1 / d^1.5, d the crank's
+        distance from the limit), wherever its sampled extreme is. The quantity is probed
+        at 1e-2, 1e-3 and 1e-4 rad from the limit; it is unbounded where its size grows,
+        with one sign, by more than twice each decade (as d^-0.5 does, 3.2 times: a
+        quantity that tends to a finite value, even one that passes 0 near the first
+        probe, does not grow so over the last decade)."""
+        found = {}
+        for lp, inward in self._limits_in(theta, spacing):
             probe = lp.theta + inward * np.array([1e-2, 1e-3, 1e-4])
             fr = self.sw.evaluate(probe)
             q = {nm: np.asarray(arr, dtype=float) for nm, _, arr, _ in self.values(fr)}
@@ -364,14 +443,11 @@ class _Reducer:
                 if u == "deg" or nm not in q or tmx is None:
                     continue
                 vals = q[nm]
-                for sense, t in ((1.0, tmx), (-1.0, tmn)):
-                    (tm,), _ = dom.map(np.array([t]))
-                    if abs(tm - lp.theta) > near:
-                        continue
+                for sense in (1.0, -1.0):
                     v = sense * vals
-                    if np.all(np.isfinite(v)) and v[0] > 0 and np.all(np.diff(v) > 0) \
-                            and v[-1] > 5.0 * v[0]:
-                        found[(nm, sense)] = lp.theta
+                    if np.all(np.isfinite(v)) and v[0] > 0 and v[1] > 2.0 * v[0] \
+                            and v[2] > 2.0 * v[1]:  # (d^-0.5 grows 3.2 times a decade)
+                        found.setdefault((nm, sense), lp.theta)
         return found
 
     def _scales(self) -> dict:

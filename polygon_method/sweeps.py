@@ -126,7 +126,7 @@ class SweepResult(Motion):
         buf.write(",".join(f"{n} [{u}]" for n, u, _ in cols) + "\n")
         if len(self.theta):
             data = np.column_stack([np.asarray(a, dtype=float) for _, _, a in cols])
-            np.savetxt(buf, data, delimiter=",", fmt="%.10g")
+            np.savetxt(buf, data, delimiter=",", fmt="%.17g")  # full precision
         return buf.getvalue()
 
 

@@ -539,18 +539,12 @@ def fmt_deg(d, digits=4) -> str:
 
 
 def degrees_fn(dom: Domain):
-    """Radians in the domain -> the degrees shown: [0, 360) for a full turn, else continuous
-    over the reachable range, shifted by whole turns so that it starts in [-180, 180)."""
-    if dom.full_turn:
-        def deg(t):
-            d = math.degrees(t) % 360.0
-            return 0.0 if d >= 360.0 - 5e-4 else d
-        return deg
-    shift = -360.0 * math.floor((math.degrees(dom.lo) + 180.0) / 360.0)
-
+    """Radians -> the degrees shown, within one turn, [0, 360): for a full turn and for a
+    crank that reaches only a range alike (a range that passes 0 is written "300 to 40
+    (through 0)")."""
     def deg(t):
-        (tm,), _ = dom.map(np.array([t]))
-        return math.degrees(float(tm)) + shift
+        d = math.degrees(t) % 360.0
+        return 0.0 if d >= 360.0 - 5e-4 else d
     return deg
 
 

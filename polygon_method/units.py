@@ -23,7 +23,7 @@ from dataclasses import dataclass
 from .errors import SceneError
 
 __all__ = ["Quantity", "parse_quantity", "UNITS", "LENGTH_UNITS", "ABSURD", "TINY",
-           "format_unit_list", "suggest", "did_you_mean"]
+           "format_unit_list", "suggest", "did_you_mean", "implausible"]
 
 _PI = math.pi
 
@@ -160,7 +160,8 @@ def _unit_factor(unit: str, kind: str, where: str) -> float:
 
 
 def parse_quantity(raw, kind: str, *, where: str = "", default_unit: str | None = None,
-                   need_sense: bool = False, allow_sense: bool = False) -> Quantity:
+                   need_sense: bool = False, allow_sense: bool = False,
+                   refuse_absurd: bool = True) -> Quantity:
     """Parse a bare number or a ``"value unit [cw|ccw]"`` string into SI.
 
     Parameters
@@ -175,6 +176,10 @@ def parse_quantity(raw, kind: str, *, where: str = "", default_unit: str | None 
         The unit of a bare number; without it a bare number is an error.
     need_sense, allow_sense : bool
         Whether ``cw``/``ccw`` must / may follow.
+    refuse_absurd : bool
+        Whether a value beyond :data:`ABSURD` is an error (a scene's input); an answer is
+        read whatever its size (the mechanism may produce it) and warned of instead
+        (:func:`implausible`).
     """
     if isinstance(raw, bool) or not isinstance(raw, (int, float, str)):
         raise SceneError(f"expected a number or a string such as \"50 mm\", got {_kind_of(raw)}",
@@ -235,7 +240,7 @@ def parse_quantity(raw, kind: str, *, where: str = "", default_unit: str | None 
         raise SceneError(f"'{shown}' has no sense: add cw or ccw (e.g. \"{raw_size} ccw\")",
                          key=where)
     si = value * factor
-    if kind in ABSURD and not abs(si) <= ABSURD[kind]:
+    if refuse_absurd and kind in ABSURD and not abs(si) <= ABSURD[kind]:
         raise SceneError(f"'{shown}' is absurd for a mechanism (more than {ABSURD[kind]:g} "
                          f"{_SI_NAME[kind]}); check the value and its unit", key=where)
     if kind in TINY and si != 0 and abs(si) < TINY[kind]:
@@ -245,6 +250,19 @@ def parse_quantity(raw, kind: str, *, where: str = "", default_unit: str | None 
     if sense == "cw":
         si = -si
     return Quantity(si, sense)
+
+
+def implausible(value: float, kind: str) -> str | None:
+    """Words warning of a value beyond :data:`ABSURD` for its ``kind`` (an answer: a units
+    slip, or a mechanism near a toggle that really moves so fast), or None.
+
+    >>> implausible(2.5e9, "angular_acceleration")[:40]
+    'more than 1e+09 rad/s^2: far beyond what'
+    """
+    if kind in ABSURD and not abs(value) <= ABSURD[kind]:
+        return (f"more than {ABSURD[kind]:g} {_SI_NAME[kind]}: far beyond what a mechanism "
+                "usually reaches; check the value and its unit (it is checked as given)")
+    return None
 
 
 def _clip(raw, most=60) -> str:

@@ -55,6 +55,20 @@ from .verdicts import _NOISE_KIND, ROUNDING, UNIT_OF, Verdict, verdicts_dict, ve
 _MAGNITUDES = {"v": "a speed", "a": "an acceleration's size", "ac": "a Coriolis component's "
                "size", "rub": "a rubbing velocity"}
 
+def _noise_of(sol: Solution, kind, names) -> tuple:
+    """(kind, name) of :meth:`Solution.noise` for an answer: its own error bound."""
+    if kind in ("omega", "alpha"):  # a link's, or a cylinder's
+        return kind, sol._key("-".join(names))
+    if kind in ("vs", "as", "ac"):
+        return kind, names[0]
+    if kind in ("vI", "aI"):  # the rolling step's points
+        key = sol.scene.link("-".join(names)).key
+        pts = [p for st in sol.plan.steps if key in st.links
+               for p in (*st.needs, *st.finds)]
+        return kind[0], tuple(dict.fromkeys(pts)) or None
+    return kind, tuple(names)
+
+
 def tolerances(sol: Solution):
     """The tolerances of one solution, to share among many answer files."""
     return _Tolerances(sol)
@@ -98,11 +112,11 @@ def check_answers(sol: Solution, answers=None, tolerance: float | None = None,
         if exact is None or not math.isfinite(exact):
             raise SceneError(f"{ans.key}: no value to check against", key=f"[answers] {ans.key}",
                              line=ans.line)
-        if kind in _NOISE_KIND:  # rounding noise is a zero (a translating coupler's omega)
-            exact = sol.shown(exact, _NOISE_KIND[kind])
-        elif kind in ("torque", "rub"):  # (a load that takes no power, two omegas alike)
+        if kind in ("torque", "rub"):  # (a load that takes no power, two omegas alike)
             clean = clean or tidied(sol)
             exact = clean.value(kind, ans.names)
+        elif kind in _NOISE_KIND:  # noise within its bound is a zero (a translating
+            exact = sol.shown(exact, *_noise_of(sol, kind, ans.names))  # coupler's omega)
         signed = ans.sense is not None or ans.value < 0
         if kind in ("v", "a", "ac", "rub"):
             signed = False

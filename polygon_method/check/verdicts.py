@@ -7,7 +7,7 @@ import textwrap
 from dataclasses import dataclass
 
 from ..numbers import textbook as _g
-from ..units import UNITS
+from ..units import UNITS, implausible
 
 #: relative error of a value rounded to three significant figures (the floor of every
 #: tolerance)
@@ -52,6 +52,15 @@ class Verdict:
     extra: dict | None = None  # more for the JSON (a centre's positions)
 
     @property
+    def warning(self) -> str | None:
+        """Words warning of a given value beyond what a mechanism usually reaches (read
+        and checked all the same: a mechanism near a toggle may produce it)."""
+        kind = _KIND_OF_UNIT.get(self.unit)
+        if kind is None or not isinstance(self.given, (int, float)):
+            return None
+        return implausible(self.given, kind)
+
+    @property
     def error_percent(self):
         return None if self.error is None else 100.0 * self.error
 
@@ -61,7 +70,8 @@ class Verdict:
                 "error_percent": self.error_percent,
                 "tolerance_percent": 100.0 * self.tolerance, "rule": self.rule,
                 "verdict": "right" if self.ok else "wrong", "mistake": self.mistake,
-                "diagnosis": self.diagnosis, "line": self.line, **(self.extra or {})}
+                "diagnosis": self.diagnosis, "line": self.line,
+                **({"warning": self.warning} if self.warning else {}), **(self.extra or {})}
 
 
 #: the SI unit of an answer -> the kind of quantity (units.UNITS) it is given in
@@ -123,6 +133,9 @@ def verdicts_text(verdicts, title: str = "") -> str:
                                        subsequent_indent="      ") if v.diagnosis else
                          "    mistake: none of the known ones explains it")
     wrong = sum(not v.ok for v in verdicts)
+    for v in verdicts:
+        if v.warning:
+            lines.append(f"warning: {v.key} = {v.raw}: {v.warning}")
     lines.append("")
     lines.append("tolerance: " + "; ".join(_rules(v.rule for v in verdicts)))
     lines.append(f"{len(verdicts) - wrong} of {len(verdicts)} right" +

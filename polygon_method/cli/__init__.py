@@ -10,9 +10,12 @@ page, sweep, ...) and :mod:`.classroom` (check, variants).
 from __future__ import annotations
 
 import argparse
+import contextlib
 import os
 import re
 import sys
+import unicodedata
+import warnings
 
 from ..errors import PolygonMethodError, printable
 from .classroom import _cmd_check, _cmd_variants
@@ -155,7 +158,8 @@ def main(argv=None) -> int:
             print(f"polygon-method {args.command}: {flag}: an empty value", file=sys.stderr)
             return 2
     try:
-        code = args.func(args)
+        with _glyphs(args.command):
+            code = args.func(args)
         sys.stdout.flush()  # a full disk on standard output is one line too
         return code
     except PolygonMethodError as exc:
@@ -181,6 +185,46 @@ def main(argv=None) -> int:
         print(f"polygon-method {args.command}: internal error ({type(exc).__name__}: {exc}); "
               "please report it with the scene file", file=sys.stderr)
         return 3
+
+
+#: matplotlib's warning of a character its font cannot draw (one per character and figure)
+_GLYPH = re.compile(r"Glyph \d+ \((.*)\) missing from font\(s\) (.*)\.$")
+
+
+@contextlib.contextmanager
+def _glyphs(command):
+    """Characters the plot font lacks (a title in another script, an emoji): said once, in
+    one line, instead of a warning per character and per figure (they are drawn as the
+    font's empty box). Other warnings pass as they come."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            yield
+        finally:
+            missing, fonts = {}, set()
+            for w in caught:
+                m = _GLYPH.match(str(w.message))
+                if m:
+                    missing.setdefault(_glyph_char(m.group(1)), None)
+                    fonts.add(m.group(2))
+                else:
+                    warnings.showwarning(w.message, w.category, w.filename, w.lineno)
+            if missing:
+                print(f"polygon-method {command}: note: the plot font "
+                      f"({', '.join(sorted(fonts))}) has no glyph for "
+                      f"{' '.join(missing)}: drawn as an empty box (the text files keep "
+                      "them)", file=sys.stderr)
+
+
+def _glyph_char(name: str) -> str:
+    """The character of matplotlib's ``\\N{CJK UNIFIED IDEOGRAPH-6A5F}`` (or its name)."""
+    m = re.match(r"^\\N\{(.*)\}$", name)
+    if m:
+        try:
+            return unicodedata.lookup(m.group(1))
+        except KeyError:
+            return m.group(1)
+    return name
 
 
 def _quiet_stdout():

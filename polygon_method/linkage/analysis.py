@@ -104,7 +104,8 @@ class Linkage:
             out.append(f"transmission angle at {t.point} ({t.between}, acute angle)")
             if t.now is not None:
                 said = f", {sc.input.angle_words}" if sc.input.angle_words else ""
-                out.append(f"  now (crank at {math.degrees(sc.input.angle):g} deg{said}): "
+                out.append(f"  now (crank at {_turn(math.degrees(sc.input.angle)):g} deg"
+                           f"{said}): "
                            f"{t.now:.2f} deg")
             out.append(f"  over the motion: minimum {t.minimum:.2f} deg at crank "
                        f"{t.at_min:.2f} deg, maximum {t.maximum:.2f} deg at crank "
@@ -128,6 +129,12 @@ class Linkage:
             out.extend(self.notes)
         # a value that rounds to zero is written 0.00, never -0.00
         return re.sub(r"(?<![\d.])-(0\.0+)(?![\d])", r"\1", "\n".join(out))
+
+
+def _turn(d: float) -> float:
+    """Degrees within one turn, [0, 360)."""
+    d = d % 360.0
+    return 0.0 if d >= 360.0 - 5e-4 else d
 
 
 def _mm(x, scene) -> str:
@@ -195,10 +202,10 @@ def analyse(scene: Scene) -> Linkage:
     turns = dom.full_turn
     rng = None
     if not turns:
-        lo = cyc.deg(dom.lo)
-        rng = (lo, lo + math.degrees(dom.hi - dom.lo))
+        rng = (cyc.deg(dom.lo), cyc.deg(dom.hi))
         classification.append(f"on the scene's branch the crank {scene.input.crank} reaches "
-                              f"{rng[0]:.4f} to {rng[1]:.4f} deg")
+                              f"{rng[0]:.4f} to {rng[1]:.4f} deg"
+                              + (" (through 0)" if rng[1] < rng[0] else ""))
     # toggles driving from the input: the limits of the crank
     input_toggles = []
     crank = scene.input.crank
@@ -460,9 +467,5 @@ def _intervals_below(cyc: _Cycle, f, lim):
     for a, b in runs:
         ta = cyc.dom.lo if (not full and a == 0) else end(a, -1)
         tb = cyc.dom.hi if (not full and b == n - 1) else end(b, +1)
-        if not full:
-            lo = cyc.deg(cyc.dom.lo)
-            out.append((lo + math.degrees(ta - cyc.dom.lo), lo + math.degrees(tb - cyc.dom.lo)))
-        else:
-            out.append((cyc.deg(ta), cyc.deg(tb)))
+        out.append((cyc.deg(ta), cyc.deg(tb)))
     return out

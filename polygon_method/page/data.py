@@ -16,6 +16,7 @@ import numpy as np
 
 from ..draw.style import (BODY_EDGE, BODY_FACE, HEAD_HALF, HEAD_LEN, IMAGE_FACE, LINE_STYLE,
                           PITCH_STYLE, STYLE)
+from ..errorbound import USELESS
 from ..errors import TOL
 from ..numbers import quiet, sense
 from ..plots import MARKS, SERIES_COLORS
@@ -71,6 +72,38 @@ def _quiet(x, scale, n):
     """``x`` (one value per frame) with rounding noise, at most ``TOL.negligible`` of its
     frame's ``scale``, set to 0: the page writes 0, not 1.6e-15 rad/s ccw."""
     return quiet(np.broadcast_to(np.asarray(x, dtype=float), (n,)), scale)
+
+
+def _lim(e, size, n):
+    """Per frame, the absolute bound of a quantity: its relative bound ``e`` times the
+    ``size`` it is relative to; 0 where it is no useful bound (then nothing is hidden)."""
+    e = np.broadcast_to(np.asarray(e, dtype=float), (n,))
+    size = np.broadcast_to(np.asarray(size, dtype=float), (n,))
+    return np.where(e < USELESS, e * size, 0.0)
+
+
+def _own(x, e, size, n):
+    """``x`` (one value per frame) set to 0 where it is within its own error bound: the
+    page writes 0, not 1.6e-15 rad/s ccw, and never hides a value above its bound."""
+    x = np.broadcast_to(np.asarray(x, dtype=float), (n,))
+    return np.where(np.abs(x) <= _lim(e, size, n), 0.0, x)
+
+
+def _own_vec(xy, e, size, n):
+    """A vector per frame, each component 0 where it is within the vector's own bound
+    (both where its size is)."""
+    lim = _lim(e, size, n)
+    comps = (np.broadcast_to(np.asarray(c, dtype=float), (n,)) for c in xy)
+    return [np.where(np.abs(c) <= lim, 0.0, c) for c in comps]
+
+
+def _sliding(s, e, sizes, n):
+    """A block's sliding velocity, acceleration and Coriolis (x, y), each within its own
+    bound 0."""
+    ev, ea, ec = e if e is not None else (0.0, 0.0, 0.0)
+    cx, cy = _own_vec(s[2:4], ec, sizes["acceleration"], n)
+    return [round_sig(v) for v in (_own(s[0], ev, sizes["velocity"], n),
+                                   _own(s[1], ea, sizes["acceleration"], n), cx, cy)]
 
 
 def _xy(fr: Frames, phase):
@@ -148,6 +181,7 @@ def page_data(fr: Frames) -> dict:
              if sh[0] == "ground line"]  # the fixed lines wheels roll on
     n = len(fr)
     k = _noise_scales(res, moving, links, n)
+    eb = res.error_bounds  # each quantity's own bound, per frame: below it, noise
     d = {
         "title": sc.title or sc.file or "mechanism",
         "units": sc.units, "unit": sc.length_unit,
@@ -166,12 +200,16 @@ def page_data(fr: Frames) -> dict:
         "wheels": wheels,
         "rollLines": lines,
         "P": {p: _flat([_quiet(c, k["P"], n) for c in res.P[p]]) for p in moving},
-        "V": {p: _flat([_quiet(c, k["V"], n) for c in res.V[p]]) for p in moving},
-        "A": {p: _flat([_quiet(c, k["A"], n) for c in res.A[p]]) for p in moving},
-        "W": {lk.key: round_sig(_quiet(res.W[lk.key], k["W"], n)) for lk in links},
-        "Al": {lk.key: round_sig(_quiet(res.Al[lk.key], k["Al"], n)) for lk in links},
-        "S": {s.key: [round_sig(_quiet(res.S[s.key][j], k["V" if j == 0 else "A"], n))
-                        for j in range(4)] for s in sc.sliders},
+        "V": {p: _flat(_own_vec(res.V[p], eb.V.get(p, 0.0), eb.scales["velocity"], n))
+              for p in moving},
+        "A": {p: _flat(_own_vec(res.A[p], eb.A.get(p, 0.0), eb.scales["acceleration"], n))
+              for p in moving},
+        "W": {lk.key: round_sig(_own(res.W[lk.key], eb.W.get(lk.key, 0.0),
+                                     eb.scales["omega"], n)) for lk in links},
+        "Al": {lk.key: round_sig(_own(res.Al[lk.key], eb.Al.get(lk.key, 0.0),
+                                      eb.scales["alpha"], n)) for lk in links},
+        "S": {s.key: _sliding(res.S[s.key], eb.S.get(s.key), eb.scales, n)
+              for s in sc.sliders},
         "torque": None if res.input_torque is None else
         round_sig(_quiet(res.input_torque, _torque_scale(sc, k), n)),
         "sense": sense(sc.input.omega),

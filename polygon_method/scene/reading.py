@@ -628,6 +628,10 @@ def parse_answers(text: str, scene: Scene, file: str | None = None, *,
         raw = toml_table(text)
     except tomllib.TOMLDecodeError as exc:
         raise _syntax_error(str(exc), text, file) from None
+    except RecursionError:
+        raise SceneError("TOML nested too deeply (brackets or braces inside each other "
+                         "hundreds of times); an answer file needs only key = \"value\" "
+                         "lines", file=file, key=_deepest_key(text)) from None
     for key in raw:
         if key not in _ANSWER_FILE_KEYS:
             raise SceneError("an answer file holds an [answers] table (and optionally title, "

@@ -492,7 +492,8 @@ class _Tables:
             if getattr(self, "two_inputs", False):
                 raise self.error("with two inputs one power balance does not give the two "
                                  "driving torques: no torque answer", "answers", key)
-            q = self.qty(value, "torque", "answers", key, default_unit="N m", allow_sense=True)
+            q = self.qty(value, "torque", "answers", key, default_unit="N m", allow_sense=True,
+                         refuse_absurd=False)
             return Answer(key, "torque", (), q.value, q.sense, printable(str(value)), line)
         prefix, _, rest = key.partition("_")
         if prefix == "I" and rest:
@@ -542,6 +543,6 @@ class _Tables:
             if len(names) != 1 or names[0] not in pin_names:
                 raise self.error(f"rubbing at {rest} needs its size in [pins]", "answers", key)
         q = self.qty(value, kind, "answers", key, default_unit=next(iter(UNITS[kind])),
-                     allow_sense=sense_ok)
+                     allow_sense=sense_ok, refuse_absurd=False)  # warned of when checked
         return Answer(key, prefix, names, q.value, q.sense, printable(str(value)), line)
 

@@ -416,21 +416,24 @@ def generate(scene: Scene, count: int, seed: int, *, batch: int | None = None) -
 
 def _hints_moved(r, plan, sc):
     """An assembly hint given as a rough position is the base figure's: in a variant it
-    becomes the point's position on the base scene's branch (to 0.1 of the scene's unit),
-    so that the variant's file shows its own figure."""
+    becomes the point's position on the base scene's branch (to 1e-4 of the mechanism's
+    size, whatever the scene's unit: 0.01 mm of a 450 mm linkage, 0.00001 m of a 0.45 m
+    one), so that the variant's file shows its own figure."""
     hints = r.get("assembly", {})
     if not any(isinstance(h, list) for h in hints.values()):
         return r
     m = evaluate(plan, dims=plan.dimensions(sc), upto=0)
     u = sc.length_unit
-    r["assembly"] = {p: ([_round(m.P[p][0] / u), _round(m.P[p][1] / u)]
+    size = max([lk.length for lk in sc.links] + [0.0]) / u
+    digits = max(1, -math.floor(math.log10(size * 1e-4))) if size > 0 else 1
+    r["assembly"] = {p: ([_round(m.P[p][0] / u, digits), _round(m.P[p][1] / u, digits)]
                          if isinstance(h, list) and p in m.P else h)
                      for p, h in hints.items()}
     return r
 
 
-def _round(x):
-    y = round(float(x), 1)
+def _round(x, digits=1):
+    y = round(float(x), digits)
     return int(y) if y.is_integer() else y
 
 
