@@ -65,13 +65,14 @@ def load_reference(digits=DIGITS):
     return mod
 
 
-def compare_case(sol, ref_mod):
+def compare_case(sol, ref_mod, ref_scene=None):
     """[(kind, name, error, bound)] for every quantity of ``sol``: the error against the
     reference and the bound, both relative to the same size (the bound's ``scales``, of
-    the reference's values)."""
+    the reference's values). ``ref_scene``: the scene the reference solves, if not the
+    solution's own (the same scene with its inputs at full precision)."""
     sc = sol.scene
     with ref_mod.mpmath.workdps(ref_mod.DIGITS):
-        r = ref_mod.reference_solution(sc, sol.P)
+        r = ref_mod.reference_solution(sc if ref_scene is None else ref_scene, sol.P)
     bounds = error_bounds(sol)
 
     def fl(d):
