@@ -17,9 +17,18 @@ returns the scene's TOML text. Besides the families of ``near_singular.py``:
   1e5 times the crank's length away along the path;
 * ``block then toggle``: a block near its lever's pivot, the lever driving a dyad near a
   toggle (two ill-conditioned steps in a row);
+* ``given motion``: a slider crank driven by its piston's speed (and its rate, or the
+  crank's acceleration) ~c rad from a dead centre, where the crank's speed found from it
+  grows as 1/c;
 * ``peg``, ``cylinder``, ``rolling``, ``triad``, ``yoke``: a scene of the kind (from the
-  corpus of textbook exercises) with its lengths varied and its crank turned towards the
-  nearest angle where it refuses, until its worst condition is near ``c``.
+  corpus of textbook exercises) with its lengths varied and its crank turned to where the
+  kind's steps come nearest to singular, and towards the refusal until their condition is
+  near ``c`` (a triad's and a yoke's condition hardly change over a turn: they stay at
+  their corpus shapes' values).
+
+:func:`reference_scene` gives the scene as the reference must read it: the decimals of the
+text at full precision (lengths, a carried point's distances, a path's angle), and a
+given motion's crank speed found by the reference itself.
 """
 
 from __future__ import annotations
@@ -29,7 +38,7 @@ import tomllib
 from decimal import Decimal
 from pathlib import Path
 
-from near_singular import FAMILIES as NEAR, INPUT, _circle, _input, _r, loaded
+from near_singular import FAMILIES as NEAR, _input, _r, loaded
 
 __all__ = ["FAMILIES", "make", "EDGE_FAMILIES"]
 
@@ -80,7 +89,7 @@ def short_side(rng, c):
         point = f'E = {{ on = "BC", along = {_r(ratio * s)} }}'
     else:
         point = (f'E = {{ on = "BC", distances = {{ B = {_r(ratio * s)}, C = '
-                 f'{_r(ratio * s * rng.uniform(0.999, 1.001))} }}, turn = "ccw" }}')
+                 f'{_r(ratio * s + s * rng.uniform(-0.9, 0.9))} }}, turn = "ccw" }}')
     return f"""[ground]
 A = [0, 0]
 D = [{_r(d)}, 0]
@@ -186,6 +195,38 @@ Q = [{_r(qx)}, {_r(qy)}]
 """ + _input(rng, "O2-A", th)
 
 
+def given_motion(rng, c):
+    """An offset slider crank whose motion is given by the piston's speed (and its rate,
+    or the crank's acceleration), the crank ~c rad from a dead centre, where the piston's
+    speed per unit crank speed vanishes and the crank's speed found from it grows as 1/c."""
+    r = rng.uniform(20, 80)
+    ell = r * rng.uniform(2.0, 5.0)
+    e = rng.uniform(-0.3, 0.3) * r
+    # the dead centres: O, A, B in line, B on y = e at |OB| = l + r or l - r
+    dead = [math.asin(e / (ell + r)), math.pi - math.asin(e / (ell - r))]
+    th = rng.choice(dead) + c * rng.uniform(1, 3) * rng.choice([1.0, -1.0])
+    how = rng.choice(["rate", "crank", "steady"])
+    vs = rng.uniform(0.5, 5) * rng.choice([1.0, -1.0])
+    given = f'vs_B = "{_r(vs)} m/s"\n'
+    if how == "rate":
+        given += f'as_B = "{_r(rng.uniform(-50, 50))} m/s^2"\n'
+    elif how == "crank":
+        given += f'acceleration = "{_r(rng.uniform(0, 100))} rad/s^2 ccw"\n'
+    return f"""[ground]
+O = [0, 0]
+[links]
+OA = {_r(r)}
+AB = {_r(ell)}
+[sliders]
+B = {{ path = "horizontal", through = [0, {_r(e)}] }}
+[assembly]
+B = "right"
+[input]
+crank = "OA"
+angle = "{_r(th)} rad"
+""" + given
+
+
 # ------------------------------------------------------------------ kinds from the corpus
 
 #: scene files of each newer kind (varied and turned towards a refusal)
@@ -244,59 +285,68 @@ def _scale_links(text, rng):
     return "\n".join(lines) + "\n"
 
 
-def _worst(text):
+def _worst(text, kind):
+    """The smallest condition among the steps of ``kind`` (or of every step) at the
+    scene's own angle; None where it does not solve."""
+    from polygon_method.errors import PolygonMethodError
     from polygon_method.scene import parse_scene
     from polygon_method.solution import solve
-    sol = solve(parse_scene(text))
-    return min(sol.conditions.values())
+    try:
+        sol = solve(parse_scene(text))
+    except PolygonMethodError:
+        return None
+    own = [sol.conditions.get(st.index, 1.0) for st in sol.plan.steps if st.kind == kind]
+    return min(own or sol.conditions.values())
 
 
-def kind_near(files):
+def kind_near(files, kind, steps=72):
+    """A maker: a scene of ``files`` (lengths varied by 3 %), its crank turned to where the
+    steps of ``kind`` come nearest to singular over the turn, and from there
+    bisected towards the refusal until their condition is between ``c`` and ``2 c`` (or
+    the lowest the turn reaches, where that is above ``c``); ``steps`` angles a turn."""
+    pitch = 360.0 / steps
     def maker(rng, c):
-        from polygon_method.errors import PolygonMethodError
         path = ROOT / rng.choice(files)
         base = _strip(path.read_text())
-        for _ in range(20):
-            text = _scale_links(base, rng) if rng.random() < 0.7 else base
-            th0 = rng.uniform(-180, 180)
-            try:
-                _worst(_set_angle(text, th0))
-            except PolygonMethodError:
-                continue
-            step = rng.choice([1.0, -1.0]) * 5
-            th1 = th0
-            for _ in range(72):  # walk to the first angle that refuses
-                th1 += step
-                try:
-                    if _worst(_set_angle(text, th1)) < c:
-                        break
-                except PolygonMethodError:
-                    break
+        text = _scale_links(base, rng) if rng.random() < 0.7 else base
+        start = rng.uniform(0, pitch)
+        grid = [start + pitch * i for i in range(steps)]
+        conds = [_worst(_set_angle(text, th), kind) for th in grid]
+        ok = [i for i, w in enumerate(conds) if w is not None]
+        if not ok:
+            return base
+        best = min(ok, key=lambda i: conds[i])
+        if conds[best] >= c:
+            return _set_angle(text, grid[best])
+        # a solvable angle above c next to it, then bisect between the two
+        up = next((i for i in ok if conds[i] >= c), None)
+        if up is None:
+            return _set_angle(text, grid[best])
+        near = min((i for i in ok if conds[i] >= c),
+                   key=lambda i: min(abs(i - best), steps - abs(i - best)))
+        lo, hi = grid[near], grid[best]
+        if abs(lo - hi) > 180:
+            hi += 360 if hi < lo else -360
+        for _ in range(60):
+            mid = (lo + hi) / 2
+            w = _worst(_set_angle(text, mid), kind)
+            if w is None or w < c:
+                hi = mid
             else:
-                return _set_angle(text, th0)  # never refuses: any angle will do
-            lo, hi = th0, th1
-            for _ in range(60):  # bisect to a condition just above c
-                mid = (lo + hi) / 2
-                try:
-                    w = _worst(_set_angle(text, mid))
-                except PolygonMethodError:
-                    hi = mid
-                    continue
-                if w < c:
-                    hi = mid
-                else:
-                    lo = mid
-                    if w < 2 * c:
-                        break
-            return _set_angle(text, lo)
-        return base
+                lo = mid
+                if w < 2 * c:
+                    break
+        return _set_angle(text, lo)
     return maker
 
 
 EDGE_FAMILIES = {"flat triangle": flat_triangle, "short side": short_side,
+                 "given motion": given_motion,
                  "hair off round": hair_off_round, "far path": far_path,
                  "block then toggle": block_then_toggle}
-EDGE_FAMILIES.update({k: kind_near(v) for k, v in KIND_FILES.items()})
+# (a triad's solve is slower, and its condition is nearly flat over the turn: 24 angles)
+EDGE_FAMILIES.update({k: kind_near(v, k, 24 if k == "triad" else 72)
+                      for k, v in KIND_FILES.items()})
 
 FAMILIES = dict(NEAR)
 FAMILIES.update(EDGE_FAMILIES)
@@ -344,12 +394,60 @@ def exact_scene(scene, text):
     return _Exact(scene, links, tuple(points), tuple(sliders))
 
 
+def reference_scene(sol, text, ref_mod):
+    """The scene the reference solves for ``sol`` made from ``text``: :func:`exact_scene`,
+    and where the motion is given on another quantity, the crank's omega and alpha found
+    from it by the reference itself (the quantity per unit crank speed, ``Y1``, and its rate
+    at a uniform unit speed, ``H``: ``omega = value / Y1``, ``alpha = (rate - omega^2 H) /
+    Y1``, or the crank's own alpha where the scene gives it), never the solver's."""
+    from polygon_method.scene import parse_scene
+    exact = exact_scene(sol.scene, text)
+    g = sol.scene.input.given
+    if g is None:
+        return exact
+    own_alpha = parse_scene(text).input.alpha
+    mpf = ref_mod.mpf
+    with ref_mod.mpmath.workdps(ref_mod.DIGITS):
+        unit = _Exact(exact, exact.links, exact.points, exact.sliders,
+                      _Input(sol.scene.input, mpf(1), mpf(0)))
+        r1 = ref_mod.reference_solution(unit, sol.P)
+        if g.kind == "omega":
+            key = sol.scene.link("-".join(g.names)).key
+            y1, h = r1["omega"][key], r1["alpha"][key]
+        elif g.kind == "vs" and g.names[0] in r1["sliders"]:
+            y1, h = r1["sliders"][g.names[0]]["vs"], r1["sliders"][g.names[0]]["as"]
+        elif g.kind == "vs":  # a cylinder's rate of extension
+            from error_bounds import cylinder_rates
+            cyl = sol.scene.cylinder(g.names[0])
+            q = cylinder_rates(r1, cyl.barrel, cyl.rod)
+            y1, h = q["vs"], q["as"]
+        else:
+            (vx, vy), (ax, ay), (dx, dy) = (r1["velocities"][g.names[0]],
+                                            r1["accelerations"][g.names[0]], g.direction)
+            y1, h = vx * dx + vy * dy, ax * dx + ay * dy
+        w = mpf(g.value) / y1
+        al = mpf(own_alpha) if own_alpha is not None else (mpf(g.rate or 0) - w * w * h) / y1
+    return _Exact(exact, exact.links, exact.points, exact.sliders,
+                  _Input(sol.scene.input, w, al))
+
+
+class _Input:
+    """The crank's input with its omega and alpha at full precision."""
+
+    def __init__(self, inp, omega, alpha):
+        self._inp, self.omega, self.alpha = inp, omega, alpha
+
+    def __getattr__(self, name):
+        return getattr(self._inp, name)
+
+
 class _Exact:
     """A scene as the reference reads it, with some of its numbers at full precision
     (the scene's records check their numbers are floats: this stands in front of it)."""
 
-    def __init__(self, scene, links, points, sliders):
+    def __init__(self, scene, links, points, sliders, inp=None):
         self._scene, self.links, self.points, self.sliders = scene, links, points, sliders
+        self.input = scene.input if inp is None else inp
         self._by_key = {lk.key: lk for lk in links}
 
     def __getattr__(self, name):
@@ -367,4 +465,3 @@ def make(family, rng, c, loads=True):
     return text
 
 
-del INPUT, _circle
