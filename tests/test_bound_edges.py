@@ -121,3 +121,26 @@ speed = "10 rad/s ccw"
     sol = solve(scene)
     for kind, name, err, bound in compare_case(sol, REF, reference_scene(sol, text, REF)):
         assert err <= bound, (kind, name, err, bound)
+
+
+@pytest.mark.parametrize("far", [1e3, 3e4, 1e6])
+def test_a_yokes_path_through_a_far_point(far):
+    """A path given through a point far from the mechanism (here a scotch yoke's, ``far``
+    mm along the path): its rounding to that point's digits is in the bound."""
+    u = (math.cos(math.radians(10)), math.sin(math.radians(10)))
+    text = f"""[ground]
+O = [0, 0]
+[links]
+OP = 60
+[sliders]
+Y = {{ path = "10 deg", through = [{20 + far * u[0]!r}, {-30 + far * u[1]!r}] }}
+P = {{ along = "block Y", direction = "70 deg" }}
+[input]
+crank = "OP"
+angle = 115
+speed = "12 rad/s cw"
+acceleration = "30 rad/s^2 ccw"
+"""
+    sol = solve(parse_scene(text))
+    for kind, name, err, bound in compare_case(sol, REF, reference_scene(sol, text, REF)):
+        assert err <= bound, (kind, name, err, bound)

@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 from ..numbers import in_units
 from ..scene import FixedPath, GuideSlider
-from .rounding import EPS, turning, two_lines, vhypot, vmax
+from .rounding import line_rounding, turning, two_lines, vhypot, vmax
 from .slotted import under_label
 from .base import (Construction, DirectionLine, Step, Vector, absolute, add, centripetal,
                    image_label, perp, pole_text, relative, sub, unit)
@@ -324,11 +324,9 @@ class SliderDyad(Step):
         (x, y), (bx, by) = P[X], P[B]
         own = k
         if self.path is not None:
-            (qx, qy), ang = self.path.through, self.path.angle
-            du = 2 * EPS if ang is None else 4 * EPS * max(1.0, abs(ang))
-            xq = vhypot(x - qx, y - qy)
-            own = k + (self.rounding * EPS * (vhypot(qx, qy) + xq) + du * xq) \
-                / sz["position"] + du
+            (qx, qy) = self.path.through
+            own = k + line_rounding(self.rounding, qx, qy, x, y, sz["position"],
+                                    getattr(self.path, "angle", None))
         p, v, a, _, _ = two_lines(walk.condition(self), walk.ratio, own, p_in, v_in, a_in)
         tab = walk.box.tables
         dv = vhypot(V[X][0] - V[B][0], V[X][1] - V[B][1])
