@@ -311,7 +311,6 @@ class SliderDyad(Step):
         return (f"{self.point}: an arc of radius {self.link} = {L(self.length)} about {self.b} "
                 f"cuts {where} at {self.point} ({which(self.point)})")
 
-    # ----- the polygons
     def error_bound(self, walk, k, p_in, v_in, a_in):
         """Two direction lines (:mod:`.rounding`), with the path's own numbers in its
         rounding: a path through a point far from the mechanism is rounded to that point's
@@ -335,6 +334,7 @@ class SliderDyad(Step):
                         v + tab[1].get(B, 0.0), a + tab[2].get(B, 0.0), own)
         return p, v, a, vmax(v, w), vmax(a, al)
 
+    # ----- the polygons
     def construction(self, sol, ph):
         P, X, B = sol.P, self.point, self.b
         cond = sol.conditions.get(self.index, 1.0)
