@@ -4,6 +4,7 @@ mechanisms near every singular family.
     python benchmarks/error_bounds.py                 # 2,000 mechanisms a family (90 s)
     python benchmarks/error_bounds.py --cases 20      # fewer
     python benchmarks/error_bounds.py --family toggle # one family (may be repeated)
+    python benchmarks/error_bounds.py --edge          # and every kind at its edges
     python benchmarks/error_bounds.py --json FILE     # every number
     python benchmarks/error_bounds.py --exponents     # and how the errors grow with 1/c
 
@@ -65,13 +66,14 @@ def load_reference(digits=DIGITS):
     return mod
 
 
-def compare_case(sol, ref_mod):
+def compare_case(sol, ref_mod, ref_scene=None):
     """[(kind, name, error, bound)] for every quantity of ``sol``: the error against the
     reference and the bound, both relative to the same size (the bound's ``scales``, of
-    the reference's values)."""
+    the reference's values). ``ref_scene``: the scene the reference solves, if not the
+    solution's own (the same scene with its inputs at full precision)."""
     sc = sol.scene
     with ref_mod.mpmath.workdps(ref_mod.DIGITS):
-        r = ref_mod.reference_solution(sc, sol.P)
+        r = ref_mod.reference_solution(sc if ref_scene is None else ref_scene, sol.P)
     bounds = error_bounds(sol)
 
     def fl(d):
@@ -110,6 +112,21 @@ def compare_case(sol, ref_mod):
         out.append(("coriolis", x, math.hypot(f(s[2], v["coriolis"][0]),
                                               f(s[3], v["coriolis"][1]))
                     / ref_scales["acceleration"], bc))
+    for cyl in getattr(sc, "cylinders", ()):  # its rates from its two pins' motion
+        key = cyl.key
+        q = cylinder_rates(r, cyl.barrel, cyl.rod)
+        out.append(("omega", key, f(sol.W[key], q["omega"]) / ref_scales["omega"],
+                    bounds.W[key]))
+        out.append(("alpha", key, f(sol.Al[key], q["alpha"]) / ref_scales["alpha"],
+                    bounds.Al[key]))
+        bv, ba, bc = bounds.S[key]
+        s = sol.S[key]
+        out.append(("sliding velocity", key, f(s[0], q["vs"]) / ref_scales["velocity"], bv))
+        out.append(("sliding acceleration", key, f(s[1], q["as"])
+                    / ref_scales["acceleration"], ba))
+        out.append(("coriolis", key, math.hypot(f(s[2], q["coriolis"][0]),
+                                                f(s[3], q["coriolis"][1]))
+                    / ref_scales["acceleration"], bc))
     for pin in sol.plan.pins:
         radius = sol.rubbing[pin[0]].radius
         want = max((abs(r["omega"].get(a, 0) - r["omega"].get(b, 0)) * radius
@@ -134,24 +151,52 @@ def compare_case(sol, ref_mod):
     return out
 
 
-def run(cases, seed=1, digits=DIGITS, families=None, lo=-3.0):
+def cylinder_rates(r, barrel, rod):
+    """A cylinder's omega, alpha, rate of extension ``n'`` and its rate ``n''``, and its
+    Coriolis component, from a reference solution ``r`` (``d = R - K``, ``n = |d|``, ``u =
+    d / n``): ``n' = d.v / n``, ``n'' = (v.v + d.a) / n - (d.v)^2 / n^3``, ``omega = d x
+    v / n^2``, ``alpha = d x a / n^2 - 2 n' omega / n``, Coriolis ``2 omega n' perp(u)``
+    (``v, a`` the rod's pin's motion relative to the barrel's)."""
+    P, V, A = r["positions"], r["velocities"], r["accelerations"]
+    d = (P[rod][0] - P[barrel][0], P[rod][1] - P[barrel][1])
+    v = (V[rod][0] - V[barrel][0], V[rod][1] - V[barrel][1])
+    a = (A[rod][0] - A[barrel][0], A[rod][1] - A[barrel][1])
+    n2 = d[0] * d[0] + d[1] * d[1]
+    n = n2 ** 0.5
+    dv = d[0] * v[0] + d[1] * v[1]
+    vs = dv / n
+    acc = (v[0] * v[0] + v[1] * v[1] + d[0] * a[0] + d[1] * a[1]) / n - dv * dv / (n2 * n)
+    w = (d[0] * v[1] - d[1] * v[0]) / n2
+    al = (d[0] * a[1] - d[1] * a[0]) / n2 - 2 * vs * w / n
+    cor = (-2 * w * vs * d[1] / n, 2 * w * vs * d[0] / n)
+    return {"omega": w, "alpha": al, "vs": vs, "as": acc, "coriolis": cor}
+
+
+def run(cases, seed=1, digits=DIGITS, families=None, lo=-3.0, edge=False):
     """{family: [(condition, [(kind, name, error, bound)])]} for ``cases`` mechanisms of
-    each family (refused ones are counted as ``None`` rows)."""
+    each family (refused ones are counted as ``None`` rows). ``edge``: the families of
+    ``edge_families.py`` too (every step kind at its edges, the numbers as a user writes
+    them), each compared with the reference of its numbers at full precision."""
     ref_mod = load_reference(digits)
     out = {}
-    for fam in families or FAMILIES:
+    if edge:
+        from edge_families import FAMILIES as ALL, make as make_any, reference_scene
+    else:
+        ALL, make_any, reference_scene = FAMILIES, make, None
+    for fam in families or ALL:
         rng = random.Random(f"{seed}-{fam}")
         rows = out[fam] = []
         for i in range(cases):
             # every other one just outside the refusal band (condition 1e-3 to 2e-3)
             c = 10.0 ** rng.uniform(lo, 0.0 if i % 2 else lo + math.log10(2.0))
-            scene = parse_scene(make(fam, rng, c))
+            text = make_any(fam, rng, c)
             try:
-                sol = solve(scene)
+                sol = solve(parse_scene(text))
             except PolygonMethodError:
                 rows.append((c, None))
                 continue
-            rows.append((min(sol.conditions.values()), compare_case(sol, ref_mod)))
+            exact = None if reference_scene is None else reference_scene(sol, text, ref_mod)
+            rows.append((min(sol.conditions.values()), compare_case(sol, ref_mod, exact)))
     return out
 
 
@@ -186,6 +231,7 @@ def summary(results) -> dict:
                       "max_error_over_bound": worst_ratio,
                       "median_case_bound_over_error": (statistics.median(case_ratios)
                                                        if case_ratios else None),
+                      "max_case_bound_over_error": max(case_ratios, default=None),
                       "edge": {"cases": len(edge),
                                "median_largest_error": (statistics.median(e for e, _ in edge)
                                                         if edge else None),
@@ -228,14 +274,16 @@ def growth(results, kinds=("position", "velocity", "acceleration", "omega", "alp
 
 def markdown(table) -> str:
     lines = ["| family | mechanisms | largest error / bound | median (largest bound / largest "
-             f"error) | condition {EDGE:g} down to the band: mechanisms, median largest "
-             "error, median largest bound |", "| --- | --- | --- | --- | --- |"]
+             "error) | largest (largest bound / largest error) | condition "
+             f"{EDGE:g} down to the band: mechanisms, median largest error, median largest "
+             "bound |", "| --- | --- | --- | --- | --- | --- |"]
     for fam, t in table.items():
         e = t["edge"]
         edge = (f"{e['cases']}, {e['median_largest_error']:.2g}, "
                 f"{e['median_largest_bound']:.2g}" if e["cases"] else "-")
         lines.append(f"| {fam} | {t['cases']} | {t['max_error_over_bound']:.2g} | "
-                     f"{t['median_case_bound_over_error']:.3g} | {edge} |")
+                     f"{t['median_case_bound_over_error']:.3g} | "
+                     f"{t['max_case_bound_over_error']:.3g} | {edge} |")
     lines += ["", "| family | quantity | compared | largest error / bound | median bound / "
               "error | error exactly 0 |", "| --- | --- | --- | --- | --- | --- |"]
     for fam, t in table.items():
@@ -250,14 +298,19 @@ def main(argv=None) -> int:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--cases", type=int, default=2000, help="mechanisms per family")
     p.add_argument("--seed", type=int, default=1)
-    p.add_argument("--family", action="append", choices=list(FAMILIES),
+    p.add_argument("--family", action="append",
                    help="only this family (may be repeated)")
+    p.add_argument("--edge", action="store_true",
+                   help="also every step kind at its edges (edge_families.py): flat "
+                        "triangles, short sides, paths a hair off a right angle or through "
+                        "a far point, two ill-conditioned steps in a row, given motion, "
+                        "pegs, cylinders, rolling, triads, yokes")
     p.add_argument("--json", help="write every number here")
     p.add_argument("--exponents", action="store_true",
                    help="also print how the errors grow: p of eps/c^p, per family and kind")
     args = p.parse_args(argv)
     t0 = time.perf_counter()
-    results = run(args.cases, args.seed, families=args.family)
+    results = run(args.cases, args.seed, families=args.family, edge=args.edge)
     table = summary(results)
     print(markdown(table))
     if args.exponents:

@@ -145,6 +145,9 @@ class _Walk:
         self.P, self.V, self.A = motion.P, motion.V, motion.A
         self.ratio = sizes["omega"] ** 2 / sizes["alpha"]
         self.slide = {}
+        #: carried point -> how far its place on its body may be off (m), where not 0
+        self.spread = {cp.name: cp.spread for cp in motion.scene.points
+                       if getattr(cp, "spread", 0.0)}
 
     def condition(self, step):
         return self.motion.cond.get(step.index, 1.0)
@@ -176,8 +179,12 @@ def error_bounds(motion) -> ErrorBounds:
         p, v, a, w, al = _cap(p), _cap(v), _cap(a), _cap(w), _cap(al)
         for x in st.finds:
             eP[x], eV[x], eA[x] = p, v, a
-        for lk in st.links:
-            eW[lk], eAl[lk] = w, al
+        if isinstance(w, tuple):  # one bound for each of its links
+            for lk, wi, ali in zip(st.links, w, al):
+                eW[lk], eAl[lk] = wi, ali
+        else:
+            for lk in st.links:
+                eW[lk], eAl[lk] = w, al
     slide = walk.slide
     for lk in motion.W:  # the crank's omega and alpha are given; fixed links do not turn
         eW.setdefault(lk, EPS)

@@ -7,8 +7,10 @@ the coordinates ``q`` (x, y of every non-ground point):
 * a link PQ (not the crank, not both ends on ground):  ``|P - Q|^2 - L^2 = 0``
 * the crank tip T about pivot O:  ``T - O - r (cos th, sin th) = 0``,
   ``th(t) = th0 + omega t + alpha t^2 / 2``
-* a carried point X on link PQ:  ``X - (P + lam (Q - P) + mu perp(Q - P)) = 0``
-* a slider X on a fixed path:  ``cross(X - through, u) = 0``
+* a carried point X on link PQ:  ``X - (P + lam (Q - P) + mu perp(Q - P)) = 0``, lam and mu
+  from the numbers the scene gives it (its triangle solved here, not the loader's)
+* a slider X on a fixed path:  ``cross(X - through, u) = 0``, u from the path's angle as
+  read
 * a block X sliding along moving link G1 G2:  ``cross(X - G1, G2 - G1) = 0``
 * a wheel CX of radius r rolling without slip ([rolling]): ``X - C - l (cos phi, sin phi) = 0``
   with, on a fixed line (T a point of it, m its normal towards the wheel, t = perp(m)),
@@ -119,17 +121,19 @@ def _equations(scene):
         for c in (0, 1):
             eqs.append(("crank2", (two.pivot, two.tip, r2, c, mpf(two.angle), mpf(two.omega),
                                    mpf(two.alpha))))
+    exact = _carried_coefficients(scene)
     for cp in scene.points:
         lk = scene.link(cp.link)
+        lam, mu = exact[cp.name]
         for comp in (0, 1):
-            eqs.append(("carried", (cp.name, lk.p, lk.q, mpf(cp.lam), mpf(cp.mu), comp)))
+            eqs.append(("carried", (cp.name, lk.p, lk.q, lam, mu, comp)))
     for sl in scene.sliders:
         if hasattr(sl, "guide"):
             eqs.append(("guide", (sl.point, sl.first, sl.second)))
         elif hasattr(sl, "yoke"):  # the slot of a translating yoke: a line of fixed direction
             eqs.append(("yoke", (sl.point, sl.yoke, _unit(_v(sl.direction)))))
         else:
-            eqs.append(("path", (sl.point, _v(sl.through), _unit(_v(sl.u)))))
+            eqs.append(("path", (sl.point, _v(sl.through), _path_unit(sl))))
     rates = {inp.crank: mpf(1)}
     for pr in getattr(scene, "rolling", ()):
         if pr.on == "rack":
@@ -153,6 +157,47 @@ def _equations(scene):
             eqs.append(("rim", (pr.rim, pr.centre, ell, pr.angle,
                                 ("circle", O, e, r, pr, rates), c)))
     return eqs
+
+
+def _path_unit(sl):
+    """A fixed path's direction: from its angle as the scene gives it (not the loader's
+    unit vector), else its unit vector."""
+    ang = getattr(sl, "angle", None)
+    if ang is None:
+        return _unit(_v(sl.u))
+    return (mpmath.cos(mpf(ang)), mpmath.sin(mpf(ang)))
+
+
+def _carried_coefficients(scene):
+    """name -> (lam, mu) of each carried point, from the numbers the scene gives it
+    (``source``: along a link, or by its distances from two points of the link, the
+    triangle solved here at full precision; a nearly flat one is flattened only where
+    it does not close), else the loader's lam and mu."""
+    out, frames = {}, {}
+    for cp in scene.points:
+        lk = scene.link(cp.link)
+        L = mpf(lk.length)
+        frame = frames.setdefault(lk.key, {lk.p: (mpf(0), mpf(0)), lk.q: (L, mpf(0))})
+        src = getattr(cp, "source", ())
+        if not src:
+            xy = (mpf(cp.lam) * L, mpf(cp.mu) * L)
+        elif src[0] == "along":
+            _, start, d = src
+            (sx, sy), (ox, oy) = frame[start], frame[lk.other(start)]
+            t = mpf(d) / L
+            xy = (sx + t * (ox - sx), sy + t * (oy - sy))
+        else:
+            _, r1, d1, r2, d2, turn = src
+            d1, d2 = mpf(d1), mpf(d2)
+            (x1, y1), (x2, y2) = frame[r1], frame[r2]
+            e = mpmath.sqrt((x2 - x1) ** 2 + (y2 - y1) ** 2)
+            along = (d1 * d1 - d2 * d2 + e * e) / (2 * e)
+            h = mpmath.sqrt(max(d1 * d1 - along * along, mpf(0)))
+            ex, ey = (x2 - x1) / e, (y2 - y1) / e
+            xy = (x1 + along * ex - turn * h * ey, y1 + along * ey + turn * h * ex)
+        frame[cp.name] = xy
+        out[cp.name] = (xy[0] / L, xy[1] / L)
+    return out
 
 
 def _wheel_rate(scene, pr, rates, P):
@@ -389,7 +434,7 @@ def reference_solution(scene, guess_positions):
             vs, acc = _dot(_sub(V[x], V[sl.yoke]), u), _dot(_sub(A[x], A[sl.yoke]), u)
             cor = ZERO2
         else:
-            u = _unit(_v(sl.u))
+            u = _path_unit(sl)
             vs, acc, cor = _dot(V[x], u), _dot(A[x], u), ZERO2
         sliders[getattr(sl, "key", x)] = {"vs": vs, "as": acc, "coriolis": cor}
 

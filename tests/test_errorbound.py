@@ -23,7 +23,8 @@ from polygon_method.errors import SingularStepError
 from polygon_method.scene import parse_scene
 from polygon_method.solution import solve
 from polygon_method.sweeps import sweep
-from test_stability import NEAR, parallelogram, reference, toggle
+from test_stability import (NEAR, parallelogram, parallelogram_guess, reference, slider,
+                            slider_guess, toggle, toggle_guess)
 
 REF = load_reference(40)
 
@@ -50,15 +51,51 @@ def test_bound_holds_for_every_quantity_near_every_singular_family(seed):
         assert ratios and statistics.median(ratios) < 1000, (fam, ratios)
 
 
-@pytest.mark.parametrize("name, make, guess, angle", NEAR, ids=[n[0] for n in NEAR])
+def closed_form_condition(name, angle):
+    """The condition of the singular step of a case of ``NEAR`` from its geometry alone
+    (not the solver's): the toggle's transmission angle (AB 20, BC 70, CD 50, AD 100 mm),
+    the parallelogram's angle between its coupler and its rocker (the crank's angle), the
+    slider's rod against its path (OA 50, AB 80, the path 30 below O)."""
+    if name.startswith("toggle"):
+        e2 = (0.1 - 0.02 * math.cos(angle)) ** 2 + (0.02 * math.sin(angle)) ** 2
+        cos_mu = (0.07 ** 2 + 0.05 ** 2 - e2) / (2 * 0.07 * 0.05)
+        return math.sqrt(max(0.0, 1 - cos_mu * cos_mu))
+    if name.startswith("change-point"):
+        return abs(math.sin(angle))
+    h = 0.05 * math.sin(angle) + 0.03
+    return math.sqrt(max(0.0, 0.08 ** 2 - h * h)) / 0.08
+
+
+#: test_stability's cases outside the refusal band (with a margin for rounding), by their
+#: geometry (the refused ones are test_stability's), and more between a condition of 0.03
+#: and the band's edge, each at 10^-k from its singular angle
+EDGE_K = (1.5, 2.5, 2.7)
+MORE = [(f"{n}-{k}", mk, g, at(10.0 ** -k)) for n, mk, g, at in (
+    ("toggle", toggle, toggle_guess, lambda x: math.pi - x),
+    ("change-point+", parallelogram, parallelogram_guess, lambda x: x),
+    ("change-point-", parallelogram, parallelogram_guess, lambda x: -x),
+    ("slider", slider, slider_guess, lambda x: math.pi / 2 - x)) for k in EDGE_K]
+APPLY = [n for n in NEAR + MORE if closed_form_condition(n[0], n[3]) > 1.2e-3]
+
+
+def test_the_cases_that_apply_are_those_the_tool_solves():
+    """Every case is generated for the test below exactly when it solves: 7 of
+    test_stability's 40 (the rest are refused, inside the band) and 12 more nearer the
+    band's edge."""
+    assert len(APPLY) == 7 + 12
+    for name, make, _, angle in NEAR + MORE:
+        applies = closed_form_condition(name, angle) > 1.2e-3
+        if not applies:
+            with pytest.raises(SingularStepError):
+                solve(parse_scene(make(angle)))
+
+
+@pytest.mark.parametrize("name, make, guess, angle", APPLY, ids=[n[0] for n in APPLY])
 def test_the_issues_cases_are_within_their_bound(name, make, guess, angle):
     """The cases that found accelerations 1e-8 off near a change point and a dead centre:
     the error of each kind is within the largest bound of that kind."""
     scene = parse_scene(make(angle))
-    try:
-        sol = solve(scene)
-    except SingularStepError:
-        return
+    sol = solve(scene)
     ref = reference(scene, guess(angle))
     err = compare(Kinematics("solve", sol.P, sol.V, sol.A, sol.W, sol.Al,
                              {k: (v[0], v[1]) for k, v in sol.S.items()}), ref, scene)

@@ -23,7 +23,7 @@ from reference import reference_solution
 
 REL = 1e-9
 SETTINGS = settings(max_examples=60, deadline=None, derandomize=True, database=None,
-                    suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+                    suppress_health_check=[HealthCheck.too_slow])
 
 length = st.floats(min_value=20.0, max_value=200.0, allow_nan=False)
 angle = st.floats(min_value=0.0, max_value=360.0, allow_nan=False, exclude_max=True)

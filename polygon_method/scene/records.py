@@ -83,6 +83,14 @@ class CarriedPoint:
     lam: float
     mu: float
     how: str  # the scene's own words, for step tables
+    #: how far (m) its place on the link may be from the one its numbers say: the rounding
+    #: of the distances it is given, carried through the triangle (large only where the
+    #: triangle is nearly flat: its height is then ill-conditioned), plus the spread of the
+    #: points it is set out from
+    spread: float = 0.0
+    #: the numbers it was given, in metres, for an independent check: ``("along", start,
+    #: d)`` or ``("distances", r1, d1, r2, d2, turn)`` (turn +1 ccw, -1 cw)
+    source: tuple = ()
 
 
 @dataclass(frozen=True)
@@ -95,6 +103,9 @@ class FixedPath:
     label: str
     #: for a peg in two slots (see :class:`GuideSlider`): "ground"; else ""
     slot: str = ""
+    #: the path's angle as read (rad, ccw from +x; ``u`` is exact only at whole right
+    #: angles), None where the path was not given by an angle
+    angle: float | None = None
 
     @property
     def key(self) -> str:

@@ -10,17 +10,19 @@ import re
 from ..errors import SceneError, printable
 from ..units import UNITS, did_you_mean
 from .angles import read_angle
+from .triangle import apex
 from .records import (ANSWER_KINDS, Answer, CarriedPoint, Cylinder, FixedPath, GuideSlider,
                       Load, Pin, YokeSlot, split_name)
 
 
 def _unit_at(ang: float) -> tuple:
     """(cos, sin) of a direction (rad), exact where it is a whole number of right angles
-    (a force "direction = 270" is straight down, not 1.8e-16 to the side; a path at
-    "180 deg" is horizontal)."""
+    to the rounding of the angle (a force "direction = 270" is straight down, not 1.8e-16
+    to the side; a path at "180 deg" is horizontal; "90.0000000001 deg" is not vertical:
+    near a dead centre that hair matters)."""
     q = ang / (math.pi / 2)
     k = round(q)
-    if abs(q - k) <= 1e-12:
+    if abs(q - k) <= 4 * 2.0 ** -53 * max(1.0, abs(q)):
         return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[k % 4]
     return (math.cos(ang), math.sin(ang))
 
@@ -49,6 +51,7 @@ class _Tables:
     def carried_points(self, index, ground):
         table = self.table("points")
         local = {}  # link key -> {point: (x, y) in the link frame, P at 0, Q at (L, 0)}
+        spreads = {}  # point -> how far its place on the link may be off (m)
         out = []
         for name, spec in table.items():
             self.point_name(name, "points")
@@ -84,6 +87,7 @@ class _Tables:
                 ox, oy = frame[link.other(start)]
                 t = d / link.length
                 xy = (sx + t * (ox - sx), sy + t * (oy - sy))
+                spread, source = 0.0, ("along", start, d)
                 far = link.other(start)
                 where = (f"{spec['on']} produced beyond {start}" if d < 0 else
                          f"{spec['on']} produced beyond {far}" if d > link.length else
@@ -118,8 +122,13 @@ class _Tables:
                                f"{e / u:g} {self.unit}")
                     raise self.error(f"the triangle {r1}{r2}{name} cannot close: {why}",
                                      "points", name)
-                along = (d1 * d1 - d2 * d2 + e * e) / (2 * e)
-                h = math.sqrt(max(d1 * d1 - along * along, 0.0))
+                # the height by Heron's formula in a stable form (never cancelled to 0
+                # on a nearly flat triangle), and how far the rounding of the distances
+                # and of the points it is set out from may move the point
+                along, h, spread = apex(d1, d2, e)
+                gain = 1.0 + (d1 + d2) / e
+                spread += gain * (spreads.get(r1, 0.0) + spreads.get(r2, 0.0))
+                source = ("distances", r1, d1, r2, d2, 1 if turn == "ccw" else -1)
                 ex, ey = (x2 - x1) / e, (y2 - y1) / e
                 sign = 1.0 if turn == "ccw" else -1.0
                 xy = (x1 + along * ex - sign * h * ey, y1 + along * ey + sign * h * ex)
@@ -127,7 +136,8 @@ class _Tables:
                        f"{self._words(d2)}, {r1}{r2}{name} read {turn}")
             frame[name] = xy
             L = link.length
-            out.append(CarriedPoint(name, link.key, xy[0] / L, xy[1] / L, how))
+            spreads[name] = spread
+            out.append(CarriedPoint(name, link.key, xy[0] / L, xy[1] / L, how, spread, source))
         return out
 
     def sliders(self, index, ground, carried):
@@ -267,7 +277,7 @@ class _Tables:
         else:
             through = self.coords(through, "sliders", name)
         u = _unit_at(ang)
-        record = FixedPath(name, u, through, label, slot)
+        record = FixedPath(name, u, through, label, slot, ang)
         if not slot:  # a slider's line of stroke (for angles measured from it)
             self.strokes[name] = ang
             self.fixed.append(record)

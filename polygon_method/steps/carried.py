@@ -13,7 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from .base import Construction, Step, absolute, image_label, relative
-from .rounding import vhypot
+from .rounding import vhypot, vmax
 
 __all__ = ["Carried", "image", "recognise"]
 
@@ -212,7 +212,9 @@ class Carried(Step):
 
     def error_bound(self, walk, k, p_in, v_in, a_in):
         """The errors of the two points it is carried by, times ``1 + (|XP| + |XQ|) /
-        |PQ|`` (how far out of its base it reaches), plus its own rounding."""
+        |PQ|`` (how far out of its base it reaches), plus its own rounding, plus how far
+        its place on the body may be off from the numbers it is given (its ``spread``:
+        large only on a nearly flat triangle, whose height is ill-conditioned)."""
         P = walk.P
         x = self.point
         if self.p in P and self.q in P and x in P:
@@ -222,6 +224,18 @@ class Carried(Step):
         else:
             gain = 1.0
         p, v, a = gain * p_in + k, gain * v_in + k, gain * a_in + k
+        spread = walk.spread.get(x, 0.0)
+        if spread and self.p in P and self.q in P:
+            # its place on the body is off by `spread` (m): it turns and accelerates with
+            # the body, |omega| = |vQ - vP| / |PQ|, |(alpha, omega^2)| = |aQ - aP| / |PQ|
+            sz, V, A = walk.sizes, walk.V, walk.A
+            pq = vmax(vhypot(bx - ax, by - ay), 1e-300)
+            q_, p_ = self.q, self.p
+            w = vhypot(V[q_][0] - V[p_][0], V[q_][1] - V[p_][1]) / pq
+            acc = vhypot(A[q_][0] - A[p_][0], A[q_][1] - A[p_][1]) / pq
+            p = p + spread / sz["position"]
+            v = v + spread * w / sz["velocity"]
+            a = a + spread * acc / sz["acceleration"]
         return p, v, a, v, a
 
     def produced(self):

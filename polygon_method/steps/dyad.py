@@ -26,7 +26,7 @@ from dataclasses import dataclass
 from ..errors import TOL, AssemblyError, SingularStepError
 from ..numbers import in_units, quiet
 from ..scene import split_name
-from .rounding import C_FLOOR, vhypot, vmax, vmin
+from .rounding import C_FLOOR, turning, vhypot, vmax, vmin
 from .base import (Construction, DirectionLine, Step, Vector, absolute, centripetal,
                    image_label, perp, pole_text, relative, sub, unit)
 
@@ -254,7 +254,18 @@ class Dyad(Step):
         p = carry(0, k)
         v = carry(1, k + p)
         a = carry(2, k + p + walk.ratio * v)
-        return p, v, a, v, a
+        # each link's omega from its own side: r x (vX - vB) / |r|^2 (a short side of a
+        # large plate divides its ends' errors by its own length)
+        V, A = walk.V, walk.A
+        turns = []
+        for K, rx, ry in ((B, r1x, r1y), (D, r2x, r2y)):
+            tab = box.tables
+            dv = vhypot(V[X][0] - V[K][0], V[X][1] - V[K][1])
+            da = vhypot(A[X][0] - A[K][0], A[X][1] - A[K][1])
+            turns.append(turning(walk, rx, ry, dv, da, p + tab[0].get(K, 0.0),
+                                 v + tab[1].get(K, 0.0), a + tab[2].get(K, 0.0), k))
+        (w1, al1), (w2, al2) = turns
+        return p, v, a, (vmax(v, w1), vmax(v, w2)), (vmax(a, al1), vmax(a, al2))
 
     # ----- failures and words
     def coincident(self):

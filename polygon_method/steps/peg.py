@@ -35,7 +35,7 @@ from ..errors import TOL, SingularStepError
 from ..scene import FixedPath, GuideSlider
 from .base import (Construction, DirectionLine, Step, Vector, absolute, add, image_label,
                    image_name, numbered, pole_text, sub, unit)
-from .rounding import two_lines, vhypot, vmax
+from .rounding import line_rounding, two_lines, vhypot, vmax
 
 __all__ = ["Peg", "place", "velocity", "acceleration", "under_velocity", "under_acceleration",
            "under_point", "recognise",
@@ -320,6 +320,11 @@ class Peg(Step):
         slot's point. The sliding quantities err as the peg's velocity and acceleration."""
         P = walk.P
         Ls = walk.sizes["position"]
+        x, y = P[self.point]
+        for s in self.slots:  # a fixed slot's own numbers
+            if hasattr(s, "through"):
+                k = k + line_rounding(self.rounding, s.through[0], s.through[1], x, y, Ls,
+                                      getattr(s, "angle", None))
         lever = 1.0
         for s in self.slots:
             if isinstance(s, GuideSlider):

@@ -25,7 +25,8 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["EPS", "C_FLOOR", "vmax", "vmin", "vhypot", "largest", "two_lines"]
+__all__ = ["EPS", "C_FLOOR", "vmax", "vmin", "vhypot", "largest", "two_lines", "turning",
+           "line_rounding"]
 
 #: unit roundoff of IEEE double precision
 EPS = 2.0 ** -53
@@ -78,3 +79,30 @@ def two_lines(c, ratio, k, p_in, v_in, a_in):
     v = g * (k + v_in + p)
     a = g * (k + a_in + p + ratio * v)
     return p, v, a, v, a
+
+
+def turning(walk, rx, ry, dv, da, p, v, a, k):
+    """(eW, eAl) of a link found from two of its points ``r = (rx, ry)`` apart (m), whose
+    relative velocity ``dv`` and acceleration ``da`` (m/s, m/s^2) are known, the two
+    points' position, velocity and acceleration errors summing to ``p, v, a`` (relative
+    to the sizes of their kinds): ``omega = r x dv / |r|^2`` errs by ``|d dv| / |r| +
+    3 |dv| |dr| / |r|^2`` (and alpha likewise), so a short side of a large plate divides
+    the errors of its ends by its own length, not by the plate's (``k``: own rounding)."""
+    sz = walk.sizes
+    n = vmax(vhypot(rx, ry), C_FLOOR * sz["position"])
+    dr = p * sz["position"] / n  # the side's turn (rad) from its ends' position errors
+    w = (v * sz["velocity"] + 3 * dv * dr) / n / sz["omega"]
+    al = (a * sz["acceleration"] + 3 * da * dr) / n / sz["alpha"]
+    return w + k, al + k
+
+
+def line_rounding(K, qx, qy, x, y, position, angle=None):
+    """The own rounding (relative to ``position``, the size of positions) of a step that
+    places ``(x, y)`` on a fixed line through ``(qx, qy)``: ``X = Q + s u`` is rounded to
+    the digits of ``|Q|`` and ``|XQ|`` (a line through a point far from the mechanism),
+    and the line's direction, read from ``angle`` (rad; None: given as a unit vector), is
+    off by its rounding ``du``, which moves the line by ``du |XQ|`` and turns the
+    velocity and acceleration lines along it by ``du``."""
+    du = 2 * EPS if angle is None else 4 * EPS * vmax(1.0, abs(angle))
+    xq = vhypot(x - qx, y - qy)
+    return (K * EPS * (vhypot(qx, qy) + xq) + du * xq) / position + du

@@ -24,6 +24,7 @@ from dataclasses import dataclass
 from .relations import coriolis
 from ..numbers import in_units
 from ..scene import FixedPath, GuideSlider
+from .rounding import line_rounding, turning, two_lines, vhypot, vmax
 from .slotted import under_label
 from .base import (Construction, DirectionLine, Step, Vector, absolute, add, centripetal,
                    image_label, perp, pole_text, relative, sub, unit)
@@ -306,6 +307,29 @@ class SliderDyad(Step):
                  else f"the line of {self.guide}")
         return (f"{self.point}: an arc of radius {self.link} = {L(self.length)} about {self.b} "
                 f"cuts {where} at {self.point} ({which(self.point)})")
+
+    def error_bound(self, walk, k, p_in, v_in, a_in):
+        """Two direction lines (:mod:`.rounding`), with the path's own numbers in its
+        rounding: a path through a point far from the mechanism is rounded to that point's
+        digits (``X = Q + s u`` cancels ``|Q|``), and its direction, read as an angle, is
+        off by the angle's rounding, which moves the line by that times ``|XQ|`` and turns
+        the velocity and acceleration lines by it. The rod's omega and alpha from its own
+        length (:func:`.rounding.turning`)."""
+        P, V, A, sz = walk.P, walk.V, walk.A, walk.sizes
+        X, B = self.point, self.b
+        (x, y), (bx, by) = P[X], P[B]
+        own = k
+        if self.path is not None:
+            (qx, qy) = self.path.through
+            own = k + line_rounding(self.rounding, qx, qy, x, y, sz["position"],
+                                    getattr(self.path, "angle", None))
+        p, v, a, _, _ = two_lines(walk.condition(self), walk.ratio, own, p_in, v_in, a_in)
+        tab = walk.box.tables
+        dv = vhypot(V[X][0] - V[B][0], V[X][1] - V[B][1])
+        da = vhypot(A[X][0] - A[B][0], A[X][1] - A[B][1])
+        w, al = turning(walk, x - bx, y - by, dv, da, p + tab[0].get(B, 0.0),
+                        v + tab[1].get(B, 0.0), a + tab[2].get(B, 0.0), own)
+        return p, v, a, vmax(v, w), vmax(a, al)
 
     # ----- the polygons
     def construction(self, sol, ph):

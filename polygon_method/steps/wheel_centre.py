@@ -22,6 +22,7 @@ from ..errors import TOL
 from ..numbers import in_units
 from .base import (Construction, DirectionLine, Step, Vector, absolute, centripetal,
                    image_label, perp, pole_text, relative, sub, unit)
+from .rounding import line_rounding
 from .slider import acceleration, place, velocity
 
 __all__ = ["WheelCentre", "place", "recognise"]
@@ -169,7 +170,10 @@ class WheelCentre(Step):
     rounding = 48.0
 
     def error_bound(self, walk, k, p_in, v_in, a_in):
-        """The rule of two direction lines (:mod:`.rounding`), as for a slider."""
+        """The rule of two direction lines (:mod:`.rounding`), as for a slider, the
+        line's own numbers in the rounding (:func:`.rounding.line_rounding`)."""
+        (qx, qy), (x, y) = self.through, walk.P[self.point]
+        k = k + line_rounding(self.rounding, qx, qy, x, y, walk.sizes["position"])
         return Step.error_bound(self, walk, k, p_in, v_in, a_in)
 
     # ----- words

@@ -28,7 +28,7 @@ from ..errors import TOL, SingularStepError
 from ..numbers import in_units
 from ..scene import YokeSlot
 from .base import Construction, DirectionLine, Step, Vector, absolute, image_label
-from .rounding import two_lines
+from .rounding import EPS, line_rounding, two_lines
 
 __all__ = ["Yoke", "place", "velocity", "acceleration", "recognise"]
 
@@ -167,8 +167,13 @@ class Yoke(Step):
     rounding = 48.0
 
     def error_bound(self, walk, k, p_in, v_in, a_in):
-        """Two direction lines (the path, the slot) at the condition |u x d|; the yoke's
-        and the pin's sliding quantities err as the yoke's velocity and acceleration."""
+        """Two direction lines (the path, the slot) at the condition |u x d|, the path's
+        own numbers in the rounding (:func:`.rounding.line_rounding`, and the slot's
+        angle's); the yoke's and the pin's sliding quantities err as the yoke's velocity
+        and acceleration."""
+        (qx, qy), (x, y) = self.path.through, walk.P[self.point]
+        k = k + line_rounding(self.rounding, qx, qy, x, y, walk.sizes["position"],
+                              getattr(self.path, "angle", None)) + 4 * EPS
         p, v, a, w, al = two_lines(walk.condition(self), walk.ratio, k, p_in, v_in, a_in)
         walk.slide[self.point] = walk.slide[self.pin] = (v, a, a)
         return p, v, a, w, al

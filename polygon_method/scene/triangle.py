@@ -1,0 +1,56 @@
+"""A point set out by its distances from two points (a carried point's triangle), and how
+far its place may be off when the triangle is nearly flat.
+
+The apex X of the triangle R1 R2 X with ``|R1 X| = d1``, ``|R2 X| = d2``, ``|R1 R2| = e``
+lies ``along = (d1^2 - d2^2 + e^2) / 2e`` from R1 towards R2 and ``h`` off that line.
+Written as ``h^2 = d1^2 - along^2`` the height cancels to nothing when the triangle is
+nearly flat (``d1 + d2`` close to ``e``: a height of 1e-10 of the sides comes out as 0).
+Here ``h = 2 area / e`` with the area by Heron's formula in the stable form (the sides
+sorted, ``a >= b >= c``)::
+
+    area = sqrt((a + (b + c)) (c - (a - b)) (c + (a - b)) (a + (b - c))) / 4
+
+which is exact to a few roundings for any shape. What no formula can remove is the
+rounding of the distances themselves (given in mm, held in metres): near flat the height
+moves by ``dF / 2h`` for a change ``dF`` of ``F = h^2``, and never by more than
+``sqrt(dF)``. :func:`apex` returns that as ``spread``.
+
+>>> along, h, spread = apex(3.0, 4.0, 5.0)
+>>> along, h
+(1.8, 2.4)
+>>> _, h, spread = apex(0.04, 0.06, 0.1)     # flat: on the line, to the rounding
+>>> h, spread < 1e-8
+(0.0, True)
+"""
+
+from __future__ import annotations
+
+__all__ = ["apex", "ROUNDING"]
+
+#: the rounding of a length given in the scene's unit and held in metres, relative
+ROUNDING = 2.0 ** -52
+
+
+def apex(d1: float, d2: float, e: float, rounding: float = ROUNDING):
+    """(along, h, spread) of the apex at distances ``d1, d2`` from two points ``e`` apart:
+    ``h >= 0`` its height over their line, ``spread`` (m) how far it may be from the apex
+    of the distances as written (each of them, and ``e``, off by ``rounding`` of itself).
+    A triangle that does not quite close (within the caller's tolerance) is flat: ``h =
+    0``, and its spread includes the height that closing it would take."""
+    along = ((d1 - d2) * (d1 + d2) + e * e) / (2 * e)
+    a, b, c = sorted((d1, d2, e), reverse=True)
+    prod = (a + (b + c)) * (c - (a - b)) * (c + (a - b)) * (a + (b - c))
+    short = 0.0
+    if prod > 0:
+        h = prod ** 0.5 / (2 * e)
+    else:
+        h = 0.0
+        short = -prod / (4 * e * e)
+    # F = h^2 = d1^2 - along^2: its change for each length off by `rounding` of itself
+    far = abs(e - along)
+    dF = 2 * rounding * (d1 * d1 * far + abs(along) * d2 * d2 + abs(along) * far * e) / e
+    dF += 8 * ROUNDING * h * h  # the formula's own roundings
+    dF += short
+    dh = dF ** 0.5 if h == 0.0 else min(dF ** 0.5, dF / h)
+    d_along = rounding * (d1 * d1 + d2 * d2 + far * e) / e + 4 * ROUNDING * abs(along)
+    return along, h, dh + d_along
