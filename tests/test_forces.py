@@ -1,0 +1,430 @@
+"""The force analysis against independent references.
+
+- the power balance with inertia, ``T w + sum F.v + sum C w + sum m g.v_G - sum m a_G.v_G
+  - sum I alpha w = 0``, on every force problem (the worked problems and the textbook
+  corpus that the force analysis covers, each given masses, centres off the link's line,
+  gravity in a slanting direction, a load and a couple);
+- Newton-Euler on every body from the pin forces found (the sum of the forces equals
+  ``m a_G``, of the moments about G ``I alpha``), and on the whole mechanism (the shaking
+  force and moment from the loads, the weights and the inertia alone);
+- the engine chapter's closed forms (piston effort, thrust on the rod, side thrust, crank
+  effort, turning moment), derived here from the geometry, the piston's acceleration by
+  50-digit differentiation of its closed-form position;
+- a static case (gravity only): the torque that holds a four-bar is the derivative of its
+  potential energy, by 50-digit differentiation of the closed-form positions.
+
+G's velocity and acceleration are computed here from the links' end points (a point fixed
+on a rigid link), not read from the tool.
+"""
+
+from __future__ import annotations
+
+import glob
+import math
+import random
+from pathlib import Path
+
+import mpmath
+import pytest
+
+from polygon_method.compiler import compile_plan
+from polygon_method.errors import PolygonMethodError, SceneError
+from polygon_method.forces import FRAME, owners
+from polygon_method.scene import FixedPath, load_scene, parse_scene, scene_from_table, scene_table
+from polygon_method.solution import solve
+
+ROOT = Path(__file__).resolve().parent.parent
+FILES = sorted(glob.glob(str(ROOT / "worked_problems" / "*.toml"))) + \
+    sorted(glob.glob(str(ROOT / "tests" / "textbook" / "*.toml")))
+
+
+def _covered(scene):
+    try:
+        owners(scene, compile_plan(scene))
+    except PolygonMethodError:
+        return False
+    return True
+
+
+def _on_link(L, lam, mu, unit):
+    """distances (in the scene's unit) of the point (lam, mu) of a link from its ends."""
+    return (L * math.hypot(lam, mu) / unit, L * math.hypot(1 - lam, mu) / unit)
+
+
+def with_forces(scene, seed):
+    """The scene with masses on every moving link and block, gravity, a load and a couple."""
+    rnd = random.Random(seed)
+    raw = scene_table(scene)
+    unit = scene.length_unit
+    masses = {}
+    moving = [lk for lk in scene.links
+              if not (lk.p in scene.ground and lk.q in scene.ground)]
+    for lk in moving:
+        lam, mu = rnd.uniform(-0.2, 1.2), rnd.choice([-1, 1]) * rnd.uniform(0.05, 0.4)
+        d1, d2 = _on_link(lk.length, lam, mu, unit)
+        masses[lk.key] = {"mass": f"{rnd.uniform(0.5, 8):.4f} kg",
+                          "distances": {lk.p: d1, lk.q: d2},
+                          "turn": "ccw" if mu > 0 else "cw",
+                          "gyration": lk.length * rnd.uniform(0.1, 0.6) / unit}
+    for s in scene.sliders:
+        if isinstance(s, FixedPath) and not s.slot:
+            masses[s.point] = {"mass": f"{rnd.uniform(0.5, 8):.4f} kg"}
+    raw["masses"] = masses
+    raw["gravity"] = {"direction": rnd.uniform(0, 360), "g": "9.81 m/s^2"}
+    loads = dict(raw.get("loads", {}))
+    pts = [p for lk in moving for p in lk.points if p not in scene.ground]
+    p = rnd.choice(sorted(set(pts)))
+    if p not in loads:
+        loads[p] = {"force": [rnd.uniform(-500, 500), rnd.uniform(-500, 500)]}
+    lk = rnd.choice(moving)
+    if lk.key not in loads:
+        loads[lk.key] = {"torque": f"{rnd.uniform(1, 50):.3f} N m ccw"}
+    raw["loads"] = loads
+    return scene_from_table(raw)
+
+
+def _cases():
+    out = []
+    for f in FILES:
+        sc = load_scene(f)
+        if _covered(sc):
+            out.append(pytest.param(f, id=Path(f).stem))
+    return out
+
+
+CASES = _cases()
+
+
+def _kin(sol, m):
+    """(G, v_G, a_G, alpha, omega) of a mass's body, from its link's ends (or its block)."""
+    if m.block:
+        return sol.P[m.body], sol.V[m.body], sol.A[m.body], 0.0, 0.0
+    lk = sol.scene.link(m.body)
+
+    def at(T):
+        (px, py), (qx, qy) = T[lk.p], T[lk.q]
+        dx, dy = qx - px, qy - py
+        return (px + m.lam * dx - m.mu * dy, py + m.lam * dy + m.mu * dx)
+    return at(sol.P), at(sol.V), at(sol.A), sol.Al[lk.key], sol.W[lk.key]
+
+
+def _body(m):
+    return f"block {m.body}" if m.block else m.body
+
+
+def test_the_cases_are_there():
+    # the worked problems and the corpus have force problems of each covered shape
+    kinds = set()
+    for c in CASES:
+        kinds |= {st.kind for st in compile_plan(load_scene(c.values[0])).steps}
+    assert {"crank", "dyad", "slider", "carried"} <= kinds and len(CASES) >= 15
+
+
+@pytest.mark.parametrize("path", CASES)
+@pytest.mark.parametrize("seed", [1, 2])
+def test_power_balance_with_inertia(path, seed):
+    sc = with_forces(load_scene(path), seed)
+    sol = solve(sc)
+    f = sol.forces
+    crank = sc.link(sc.input.crank).key
+    terms = [f.input_torque * sol.W[crank]]
+    for ld in sc.loads:
+        if ld.force is not None:
+            v = sol.V[ld.target]
+            terms.append(ld.force[0] * v[0] + ld.force[1] * v[1])
+        else:
+            terms.append(ld.torque * sol.W[ld.target])
+    g = sc.gravity
+    for m in sc.masses:
+        G, v, a, al, w = _kin(sol, m)
+        terms.append(m.mass * g.g * (g.direction[0] * v[0] + g.direction[1] * v[1]))
+        terms.append(-m.mass * (a[0] * v[0] + a[1] * v[1]))
+        terms.append(-m.inertia * al * w)
+    assert abs(sum(terms)) <= 1e-9 * sum(abs(t) for t in terms)
+
+
+def _newton_euler(sol, f):
+    """body -> (force residual, moment residual, force scale, moment scale)."""
+    sc = sol.scene
+    acc = {}
+
+    def add(body, F, at):
+        if body == FRAME:
+            return
+        e = acc.setdefault(body, [0.0, 0.0, 0.0, [], []])
+        e[0] += F[0]
+        e[1] += F[1]
+        e[3].append((F, at))
+
+    def couple(body, c):
+        acc.setdefault(body, [0.0, 0.0, 0.0, [], []])[4].append(c)
+
+    for p in f.pins:
+        at = sol.P[p.point]
+        add(p.on, p.force, at)
+        add(p.by, (-p.force[0], -p.force[1]), at)
+    for gd in f.guides:
+        add(f"block {gd.point}", gd.force, sol.P[gd.point])
+    for body, items in f.applied.items():
+        for it in items:
+            if len(it) == 3:
+                add(body, it[1], it[2])
+            else:
+                couple(body, it[1])
+    couple(sc.link(sc.input.crank).key, f.input_torque)
+    out = {}
+    for m in sc.masses:
+        G, v, a, al, w = _kin(sol, m)
+        e = acc.setdefault(_body(m), [0.0, 0.0, 0.0, [], []])
+        e[0] -= m.mass * a[0]
+        e[1] -= m.mass * a[1]
+        e[4].append(-m.inertia * al)
+        e.append(G)
+        e.append(m.mass * math.hypot(*a))
+    for body, e in acc.items():
+        G = e[5] if len(e) > 5 else (e[3][0][1] if e[3] else (0.0, 0.0))  # massless: any
+        mom = sum((r[0] - G[0]) * F[1] - (r[1] - G[1]) * F[0] for F, r in e[3]) + sum(e[4])
+        fscale = sum(math.hypot(*F) for F, _ in e[3]) + (e[6] if len(e) > 6 else 0.0)
+        mscale = sum(math.hypot(r[0] - G[0], r[1] - G[1]) * math.hypot(*F) for F, r in e[3]) \
+            + sum(abs(c) for c in e[4])
+        out[body] = (math.hypot(e[0], e[1]), abs(mom), fscale, mscale)
+    return out
+
+
+@pytest.mark.parametrize("path", CASES)
+@pytest.mark.parametrize("seed", [3, 4])
+def test_newton_euler_on_every_body(path, seed):
+    sc = with_forces(load_scene(path), seed)
+    sol = solve(sc)
+    f = sol.forces
+    res = _newton_euler(sol, f)
+    moving = {lk.key for lk in sc.links if not (lk.p in sc.ground and lk.q in sc.ground)}
+    assert moving <= set(res)
+    for body, (rf, rm, fs, ms) in res.items():
+        assert rf <= 1e-9 * fs, (body, rf, fs)
+        assert rm <= 1e-9 * ms, (body, rm, ms)
+    # every load of the scene acts on one body, once, as given
+    given = sorted((ld.target, ld.force or ld.torque) for ld in sc.loads
+                   if ld.target not in sc.ground)
+    seen = sorted((it[0].split(" ")[-1], it[1]) for items in f.applied.values()
+                  for it in items if not it[0].startswith("weight"))
+    assert given == seen
+
+
+@pytest.mark.parametrize("path", CASES[::3])
+def test_shaking_force_and_moment_from_the_whole(path):
+    sc = with_forces(load_scene(path), 5)
+    sol = solve(sc)
+    f = sol.forces
+    g = sc.gravity
+    fx = fy = m = 0.0
+    scale = mscale = 0.0
+    for ld in sc.loads:
+        if ld.target in sc.ground:
+            continue
+        if ld.force is not None:
+            x, y = sol.P[ld.target]
+            fx += ld.force[0]
+            fy += ld.force[1]
+            m += x * ld.force[1] - y * ld.force[0]
+            scale += math.hypot(*ld.force)
+            mscale += math.hypot(x, y) * math.hypot(*ld.force)
+        else:
+            m += ld.torque
+            mscale += abs(ld.torque)
+    for ms in sc.masses:
+        G, v, a, al, w = _kin(sol, ms)
+        for F in ((ms.mass * g.g * g.direction[0], ms.mass * g.g * g.direction[1]),
+                  (-ms.mass * a[0], -ms.mass * a[1])):
+            fx += F[0]
+            fy += F[1]
+            m += G[0] * F[1] - G[1] * F[0]
+            scale += math.hypot(*F)
+            mscale += math.hypot(*G) * math.hypot(*F)
+        m -= ms.inertia * al
+        mscale += abs(ms.inertia * al)
+    assert math.hypot(f.shaking_force[0] - fx, f.shaking_force[1] - fy) <= 1e-9 * scale
+    assert abs(f.shaking_moment - m) <= 1e-9 * (mscale + abs(f.input_torque))
+
+
+ENGINE = """
+title = "horizontal engine"
+units = "mm"
+[ground]
+O = [0, 0]
+[links]
+OA = {r}
+AB = {l}
+[sliders]
+B = {{ path = "horizontal", through = "O" }}
+[assembly]
+B = "right"
+[input]
+crank = "OA"
+angle = {theta}
+speed = "{rpm} rpm ccw"
+[masses]
+B = {{ mass = "{m} kg" }}
+[loads]
+B = {{ pressure = "{p} N/mm^2", bore = {bore}, direction = 180 }}
+"""
+
+
+@pytest.mark.parametrize("theta", [30, 60, 100, 135, 200, 300])
+def test_engine_closed_forms(theta):
+    r, l, rpm, m, p, bore = 150, 600, 1800, 2.5, 2.0, 100
+    sc = parse_scene(ENGINE.format(r=r, l=l, theta=theta, rpm=rpm, m=m, p=p, bore=bore))
+    f = solve(sc).forces
+    mpmath.mp.dps = 50
+    R, L = mpmath.mpf(r) / 1000, mpmath.mpf(l) / 1000
+    w = 2 * mpmath.pi * rpm / 60
+    th = mpmath.radians(theta)
+
+    def x(t):  # the piston's distance from O (right of O)
+        return R * mpmath.cos(t) + mpmath.sqrt(L ** 2 - (R * mpmath.sin(t)) ** 2)
+    a_toward = -w ** 2 * mpmath.diff(x, th, 2)  # the piston's acceleration towards O
+    F_gas = p * 1e6 * mpmath.pi / 4 * (mpmath.mpf(bore) / 1000) ** 2  # towards O
+    F_P = F_gas - m * a_toward  # piston effort, towards O
+    n = L / R
+    phi = mpmath.asin(mpmath.sin(th) / n)
+    F_Q = F_P / mpmath.cos(phi)  # thrust on the rod
+    F_N = F_P * mpmath.tan(phi)  # side thrust on the cylinder walls
+    F_T = F_Q * mpmath.sin(th + phi)  # crank effort
+    T_turn = F_P * R * (mpmath.sin(th) + mpmath.sin(2 * th) / (2 * mpmath.sqrt(n ** 2 - mpmath.sin(th) ** 2)))
+
+    def close(got, want):
+        assert abs(got - float(want)) <= 1e-9 * abs(float(want)), (got, float(want))
+    close(f.input_torque, -T_turn)  # the driver holds the turning moment back
+    close(math.hypot(*f.pin("B", "AB")), abs(F_Q))
+    close(math.hypot(*f.pin("A", "AB")), abs(F_Q))  # a massless rod: one force along it
+    close(abs(f.guides[0].normal), abs(F_N))
+    # the crank effort: the rod's force on the crank at A across OA
+    sol = solve(sc)
+    ax, ay = sol.P["A"]
+    fa = f.pin("A", "OA")
+    close(abs(ax * fa[1] - ay * fa[0]) / math.hypot(ax, ay), abs(F_T))
+    close(abs(F_T) * float(R), abs(T_turn))
+
+
+def _fourbar_U(m_list, th):
+    """The potential energy (g = 9.81 down) of the four-bar below at crank angle th, and
+    B's place (50 digits): O2 (0, 0), O4 (0.2, 0); O2A 0.1, AB 0.25, BO4 0.18, B above."""
+    a, b, c = mpmath.mpf("0.1"), mpmath.mpf("0.25"), mpmath.mpf("0.18")
+    O4 = (mpmath.mpf("0.2"), mpmath.mpf(0))
+    A = (a * mpmath.cos(th), a * mpmath.sin(th))
+    dx, dy = O4[0] - A[0], O4[1] - A[1]
+    d = mpmath.sqrt(dx ** 2 + dy ** 2)
+    k = (b ** 2 - c ** 2 + d ** 2) / (2 * d)
+    h = mpmath.sqrt(b ** 2 - k ** 2)
+    B = (A[0] + k * dx / d - h * dy / d, A[1] + k * dy / d + h * dx / d)  # B above
+    ends = {"O2-A": ((0, 0), A), "A-B": (A, B), "B-O4": (B, O4)}
+    U = 0
+    for key, mass, lam, mu in m_list:
+        (px, py), (qx, qy) = ends[key]
+        U += mass * mpmath.mpf("9.81") * (py + lam * (qy - py) + mu * (qx - px))
+    return U
+
+
+def test_static_torque_is_the_derivative_of_the_potential_energy():
+    text = """
+units = "m"
+[ground]
+O2 = [0, 0]
+O4 = [0.2, 0]
+[links]
+"O2-A" = 0.1
+"A-B" = 0.25
+"B-O4" = 0.18
+[assembly]
+B = "above"
+[input]
+crank = "O2-A"
+angle = 70
+speed = "1e-6 rad/s ccw"
+[masses]
+"O2-A" = { mass = "1.2 kg", along = 0.06 }
+"A-B" = { mass = "3 kg", distances = { A = 0.1, B = 0.2 }, turn = "ccw", gyration = 0.08 }
+"B-O4" = { mass = "2 kg", along = 0.09, from = "B" }
+[gravity]
+"""
+    sc = parse_scene(text)
+    f = solve(sc).forces
+    m_list = [(m.body, m.mass, mpmath.mpf(m.lam), mpmath.mpf(m.mu)) for m in sc.masses]
+    mpmath.mp.dps = 50
+    dU = mpmath.diff(lambda t: _fourbar_U(m_list, t), mpmath.radians(70))
+    # the driver's work T d(theta) raises the potential energy: T = dU/dtheta; the
+    # inertia at 1e-6 rad/s is below 1e-12 of it
+    assert abs(f.input_torque - float(dU)) <= 1e-9 * abs(float(dU))
+
+
+# ----- stating it: one located line for each slip
+
+BASE = """
+units = "mm"
+[ground]
+O = [0, 0]
+[links]
+OA = 150
+AB = 600
+[sliders]
+B = { path = "horizontal", through = "O" }
+[input]
+crank = "OA"
+angle = 60
+speed = "450 rpm ccw"
+"""
+
+
+@pytest.mark.parametrize("extra, words", [
+    ('[masses]\nAB = { mass = "-2 kg" }', "[masses] AB (line 15): a mass must be positive"),
+    ('[masses]\nAB = { mass = "2 kN" }', "'kN' is a unit of force, not of mass"),
+    ('[masses]\nAB = { mass = 2, centre = "B", along = 20 }', "not both"),
+    ('[masses]\nAB = { mass = 2, centre = "O" }', "'O' is not a point of link AB"),
+    ('[masses]\nAB = { mass = 2, intertia = 1 }', "unknown key 'intertia' (did you mean 'inertia'?)"),
+    ('[masses]\nAB = { mass = 2, inertia = 1, gyration = 30 }', "not both"),
+    ('[masses]\nA = { mass = 2 }', "A is no slider"),
+    ('[masses]\nB = { mass = 2, along = 3 }', "give only mass"),
+    ('[masses]\nBC = { mass = 2 }', "no link BC in [links]"),
+    ('[masses]\nAB = 2', "a mass is { mass"),
+    ('[gravity]\ng = 0', "g must be positive"),
+    ('[gravity]\ndirecton = 270', "unknown key 'directon' (did you mean 'direction'?)"),
+    ('[loads]\nB = { pressure = "1 MPa", bore = 100 }', "no direction"),
+    ('[loads]\nA = { pressure = "1 MPa", bore = 100, direction = 180 }', "A is no slider"),
+    ('[loads]\nB = { pressure = "1 mpa", bore = 100, direction = 180 }', "unknown unit 'mpa'"),
+    ('[loads]\nB = { pressure = "1 MPa", bore = 100, rod = 120, direction = 0 }', "thinner"),
+])
+def test_bad_force_input_is_one_located_line(extra, words):
+    with pytest.raises(SceneError) as e:
+        parse_scene(BASE + extra, file="engine.toml")
+    line = e.value.one_line()
+    assert words in line and "\n" not in line and line.startswith("engine.toml: [")
+
+
+def test_a_step_not_covered_is_refused_in_one_line_naming_it():
+    sc = load_scene(ROOT / "worked_problems" / "whitworth.toml")
+    raw = scene_table(sc)
+    raw["gravity"] = {}
+    sol = solve(scene_from_table(raw))
+    with pytest.raises(PolygonMethodError, match=r"a block sliding on a moving link is not "
+                       r"solved for forces yet \(step 2, block A"):
+        sol.forces
+    d = sol.to_dict()
+    assert d["forces"] is None and any("not solved for forces yet" in w for w in d["warnings"])
+
+
+def test_a_scene_without_masses_is_as_before():
+    sc = load_scene(ROOT / "worked_problems" / "engine_analytical.toml")
+    sol = solve(sc)
+    assert sol.forces is None and "forces" not in sol.to_dict()
+
+
+def test_units_of_the_force_chapter():
+    sc = parse_scene(BASE + '[masses]\nAB = { mass = "4 lb", gyration = "2 in", along = '
+                     '"0.1 m" }\nB = { mass = "500 g" }\nOA = { mass = 1, inertia = '
+                     '"2000 kg cm^2" }\n[loads]\nB = { pressure = "3 bar", bore = "4 in", '
+                     'rod = "1 in", direction = 180 }')
+    ab, b, oa = sc.masses
+    assert ab.mass == 4 * 0.45359237 and ab.inertia == pytest.approx(4 * 0.45359237 * 0.0508 ** 2)
+    assert ab.lam == pytest.approx(0.1 / 0.6) and b.mass == 0.5 and oa.inertia == 0.2
+    fx, fy = sc.loads[0].force
+    assert fx == pytest.approx(-3e5 * math.pi / 4 * (0.1016 ** 2 - 0.0254 ** 2)) and fy == 0
