@@ -20,6 +20,7 @@ on a rigid link), not read from the tool.
 from __future__ import annotations
 
 import glob
+import re
 import math
 import random
 from pathlib import Path
@@ -220,7 +221,7 @@ def test_shaking_force_and_moment_from_the_whole(path):
     fx = fy = m = 0.0
     scale = mscale = 0.0
     for ld in sc.loads:
-        if ld.target in sc.ground:
+        if ld.target in sc.ground or ld.gas:  # a gas force acts on the frame too, back
             continue
         if ld.force is not None:
             x, y = sol.P[ld.target]
@@ -428,3 +429,92 @@ def test_units_of_the_force_chapter():
     assert ab.lam == pytest.approx(0.1 / 0.6) and b.mass == 0.5 and oa.inertia == 0.2
     fx, fy = sc.loads[0].force
     assert fx == pytest.approx(-3e5 * math.pi / 4 * (0.1016 ** 2 - 0.0254 ** 2)) and fy == 0
+
+
+def test_the_worked_engine_and_its_written_answers():
+    """worked_problems/engine_forces.toml: the tool to 1e-9 of the closed forms, and the
+    answers its comments write (4 figures) to the closed forms' rounding."""
+    path = ROOT / "worked_problems" / "engine_forces.toml"
+    sc = load_scene(path)
+    sol = solve(sc)
+    f = sol.forces
+    mpmath.mp.dps = 50
+    r, L = mpmath.mpf("0.3"), mpmath.mpf("1.2")
+    w = 2 * mpmath.pi * 250 / 60
+    th = mpmath.radians(60)
+    a = -w ** 2 * mpmath.diff(lambda t: r * mpmath.cos(t)
+                              + mpmath.sqrt(L ** 2 - (r * mpmath.sin(t)) ** 2), th, 2)
+    F_L = mpmath.mpf("0.35e6") * mpmath.pi / 4 * mpmath.mpf("0.5") ** 2
+    F_P = F_L - 250 * a
+    phi = mpmath.asin(mpmath.sin(th) / 4)
+    F_Q, F_N = F_P / mpmath.cos(phi), F_P * mpmath.tan(phi)
+    F_T = F_Q * mpmath.sin(th + phi)
+    T = F_T * r
+    want = {"a_B": a, "F_L": F_L / 1000, "F_I": 250 * a / 1000, "F_P": F_P / 1000,
+            "phi": mpmath.degrees(phi), "F_Q": F_Q / 1000, "F_N": F_N / 1000,
+            "F_T": F_T / 1000, "T": T / 1000}
+    text = path.read_text()
+    for key, value in want.items():
+        written = re.search(rf"#.*\b{key} = (?:[^=\n]*= )?([\d.]+)", text)
+        assert written, key
+        assert float(written.group(1)) == pytest.approx(float(value), rel=6e-4), key
+
+    def close(got, w):
+        assert abs(got - float(w)) <= 1e-9 * abs(float(w))
+    close(-f.input_torque, T)
+    close(f.pin("B", "AB")[0], -F_Q * mpmath.cos(phi))  # the rod pushes... on the piston
+    close(math.hypot(*f.pin("B", "AB")), F_Q)
+    close(f.guides[0].normal, F_N)  # the walls push the piston up: the rod leans down to it
+    close(f.shaking_force[0], 250 * a)  # the gas force is internal: the piston's inertia
+    assert abs(f.shaking_force[1]) <= 1e-9 * float(F_Q)
+
+
+# ----- the views
+
+def test_solve_json_and_steps_show_the_forces(capsys):
+    import json
+
+    from polygon_method.cli import main
+    path = ROOT / "worked_problems" / "engine_forces.toml"
+    assert main(["solve", "--json", str(path)]) == 0
+    d = json.loads(capsys.readouterr().out)
+    fo = d["forces"]
+    assert "on body 'on' by body 'by'" in fo["convention"]
+    assert [(p["on"], p["by"]) for p in fo["pins"]["B"]] == [("AB", "block B")]
+    assert fo["guides"]["B"]["normal"] == [0.0, 1.0] and fo["crank"] == "OA"
+    assert fo["bodies"]["block B"]["mass"] == 250.0
+    assert main(["solve", str(path)]) == 0
+    out = capsys.readouterr().out
+    assert "input torque on OA (inertia, weights and loads): 14490 N m cw" in out
+    assert "guide at B: normal force on block B 10964 N at 90.0 deg" in out
+    for fmt in ("text", "markdown"):
+        assert main(["steps", "--format", fmt, str(path)]) == 0
+        out = capsys.readouterr().out
+        for head in ("6. Inertia forces (D'Alembert)", "7. Forces, group by group",
+                     "Step 2, link AB, slider B on the horizontal path", "Step 1, crank OA",
+                     "8. The driving torque and the frame"):
+            assert head in out, (fmt, head)
+        assert "T on OA = 14490 N m cw" in out
+
+
+@pytest.mark.parametrize("path", CASES[::2])
+def test_every_force_problem_writes_finite_json_and_words(path):
+    import json
+
+    from polygon_method.report import solution_text
+    from polygon_method.steptable import steps_text
+    sol = solve(with_forces(load_scene(path), 7))
+    text = json.dumps(sol.to_dict(), allow_nan=False)
+    assert '"forces": {' in text
+    assert "forces (D'Alembert" in solution_text(sol)
+    assert "8. The driving torque and the frame" in steps_text(sol)
+
+
+def test_a_refused_scene_still_shows_its_motion_and_says_why():
+    from polygon_method.report import solution_text
+    from polygon_method.steptable import steps_text
+    raw = scene_table(load_scene(ROOT / "worked_problems" / "whitworth.toml"))
+    raw["masses"] = {"O2-A": {"mass": 2}}
+    sol = solve(scene_from_table(raw))
+    words = "is not solved for forces yet (step 2, block A"
+    assert words in solution_text(sol) and words in steps_text(sol)

@@ -96,6 +96,8 @@ def gather(scene, motion, owner):
             x, y = P[ld.target]
             led.add(body, ld.force[0], ld.force[1], x, y,
                     f"gas force at {ld.target}" if ld.gas else f"load at {ld.target}")
+            if ld.gas:  # the gas pushes the cylinder's cover (the frame) as hard, back
+                led.add(FRAME, -ld.force[0], -ld.force[1], x, y)  # along the same line
         else:
             led.couple(ld.target, ld.torque, f"couple on {ld.target}")
     return tuple(records), led

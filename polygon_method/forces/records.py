@@ -104,7 +104,8 @@ class Forces:
     pair of bodies at a pin, in the order solved), ``guides`` (:class:`GuideForce`),
     ``input_torque`` (N m, on the crank by its driver, ccw positive, inertia included),
     ``shaking_force`` (the resultant force the mechanism exerts on the frame, through its
-    pins and guides) and ``shaking_moment`` (its moment about the frame's origin, with the
+    pins and guides, and a gas force's push on the cylinder's cover: the gas acts between
+    the piston and the frame) and ``shaking_moment`` (its moment about the frame's origin, with the
     driver's reaction ``-input_torque`` on the frame), ``steps`` (:class:`ForceStep`).
     ``applied``: body -> the loads and weights on it, (what, (Fx, Fy), point) and (what,
     couple) entries."""

@@ -54,7 +54,7 @@ class _Masses:
             lam, mu, where, centre = self._centre(spec, link, pts, carried, name)
             inertia, said = self._inertia(spec, m, name)
             out.append(Mass(link.key, m, lam, mu, inertia, centre=centre,
-                            how=f"G {where}; {said}"))
+                            how=f"centre of mass {where}; {said}"))
         return out
 
     def _centre(self, spec, link, pts, carried, name):
