@@ -518,3 +518,61 @@ def test_a_refused_scene_still_shows_its_motion_and_says_why():
     sol = solve(scene_from_table(raw))
     words = "is not solved for forces yet (step 2, block A"
     assert words in solution_text(sol) and words in steps_text(sol)
+
+
+def test_the_turning_moment_over_a_cycle_in_the_sweep():
+    """The sweep's column of the driver's torque with inertia, against the engine's closed
+    form at every angle (to 1e-9 of the largest), and its shaking force, the piston's
+    inertia force."""
+    import numpy as np
+
+    from polygon_method.sweeps import sweep
+    sc = load_scene(ROOT / "worked_problems" / "engine_forces.toml")
+    angles = np.radians(np.arange(0.0, 360.0, 7.5))
+    res = sweep(sc, angles)
+    cols = {name: a for name, _, a in res.columns()}
+    mpmath.mp.dps = 30
+    r, L, w = mpmath.mpf("0.3"), mpmath.mpf("1.2"), 2 * mpmath.pi * 250 / 60
+    F_L = mpmath.mpf("0.35e6") * mpmath.pi / 4 * mpmath.mpf("0.5") ** 2
+
+    def x(t):
+        return r * mpmath.cos(t) + mpmath.sqrt(L ** 2 - (r * mpmath.sin(t)) ** 2)
+    want = []
+    for t in np.radians(res.degrees):
+        t = mpmath.mpf(float(t))
+        F_P = F_L + 250 * w ** 2 * mpmath.diff(x, t, 2)  # effort towards O
+        want.append(-float(F_P * -mpmath.diff(x, t)))  # the driver's: -(turning moment)
+    want = np.array(want)
+    assert len(res) == len(angles)
+    assert np.max(np.abs(cols["torque_inertia"] - want)) <= 1e-9 * np.max(np.abs(want))
+    assert np.max(np.abs(cols["shake_x"] - 250 * cols["ax_B"] * -1)) <= \
+        1e-9 * np.max(np.abs(250 * cols["ax_B"]))
+
+
+@pytest.mark.parametrize("path", CASES[1::4])
+def test_the_sweep_balances_power_at_every_angle(path):
+    import numpy as np
+
+    from polygon_method.forces import analyse
+    from polygon_method.sweeps import sweep
+    sc = with_forces(load_scene(path), 8)
+    res = sweep(sc, np.radians(np.arange(0.0, 360.0, 10.0)))
+    assert len(res) >= 9  # every case reaches a part of the turn
+    f = analyse(res)
+    crank = sc.link(sc.input.crank).key
+    terms = [f.input_torque * res.W[crank]]
+    for ld in sc.loads:
+        if ld.force is not None:
+            v = res.V[ld.target]
+            terms.append(ld.force[0] * v[0] + ld.force[1] * v[1])
+        else:
+            terms.append(ld.torque * res.W[ld.target])
+    g = sc.gravity
+    for m in sc.masses:
+        G, v, a, al, w = _kin(res, m)
+        terms.append(m.mass * g.g * (g.direction[0] * v[0] + g.direction[1] * v[1]))
+        terms.append(-m.mass * (a[0] * v[0] + a[1] * v[1]))
+        terms.append(-m.inertia * al * w)
+    total = sum(terms)
+    scale = sum(np.abs(t) for t in terms)
+    assert np.all(np.abs(total) <= 1e-9 * scale)

@@ -15,6 +15,12 @@ class Singular(Exception):
     """A force step's equations have no unique solution here (its words: why)."""
 
 
+def any_zero(x) -> bool:
+    """Whether ``x`` (a float, or an array over a sweep) is exactly zero anywhere."""
+    z = x == 0
+    return bool(z) if isinstance(z, bool) else bool(z.any())
+
+
 def cross(ax, ay, bx, by):
     """``a x b`` (the z-component)."""
     return ax * by - ay * bx
@@ -33,7 +39,10 @@ def inertia_record(body, mass, inertia, G, a_G, alpha, how=""):
     fx, fy = -mass * a_G[0], -mass * a_G[1]
     f = (fx * fx + fy * fy) ** 0.5
     couple = -inertia * alpha
-    offset = inertia * alpha / f if f > 0 else None
+    if isinstance(f, float):
+        offset = inertia * alpha / f if f > 0 else None
+    else:  # a sweep (arrays): the force and the couple; no single line
+        offset = None
     return Inertia(body, mass, inertia, G, a_G, alpha, (fx, fy), couple, offset, how)
 
 
@@ -82,8 +91,7 @@ def gather(scene, motion, owner):
         rec = inertia_record(body, m.mass, m.inertia, G, a_G, alpha, m.how)
         records.append(rec)
         led.add(body, rec.force[0], rec.force[1], G[0], G[1])
-        if rec.couple:
-            led.couple(body, rec.couple)
+        led.couple(body, rec.couple)
         if grav is not None:
             w = m.mass * grav.g
             led.add(body, w * grav.direction[0], w * grav.direction[1], G[0], G[1],

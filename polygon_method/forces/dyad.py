@@ -22,13 +22,14 @@ D = (1, 0) and takes it all (the joint's triangle of forces: link 1 carries none
 
 from __future__ import annotations
 
-from .bodies import Singular, cross
+from .bodies import Singular, any_zero, cross
 from .records import ForceStep, PinForce
 
 
 def solve(bx, by, known1, dx, dy, known2, cx, cy):
     """(P on link 1 at C by link 2, the force on link 1 at B, the force on link 2 at D,
-    the condition ``|cross(C - B, C - D)| / (|C - B| |C - D|)``).
+    the condition ``|cross(C - B, C - D)| / (|C - B| |C - D|)``); floats, or arrays over a
+    sweep.
 
     ``known1``, ``known2``: ``(Fx, Fy, M)`` of the known forces on each link, M about the
     origin."""
@@ -39,9 +40,9 @@ def solve(bx, by, known1, dx, dy, known2, cx, cy):
     r1x, r1y = cx - bx, cy - by
     r2x, r2y = cx - dx, cy - dy
     det = cross(r1x, r1y, r2x, r2y)
-    size = ((r1x * r1x + r1y * r1y) * (r2x * r2x + r2y * r2y)) ** 0.5
-    cond = abs(det) / size if size > 0 else 0.0
-    if det == 0:
+    size = ((r1x * r1x + r1y * r1y) * (r2x * r2x + r2y * r2y)) ** 0.5  # links: never 0
+    cond = abs(det) / size
+    if any_zero(det):
         return None, None, None, 0.0
     # -r1y Px + r1x Py = -M1_B ;  -r2y Px + r2x Py = M2_D
     px = (-m1b * r2x - r1x * m2d) / det

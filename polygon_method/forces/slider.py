@@ -18,7 +18,7 @@ Then ``P = N n + R`` and the link's force balance gives the force on it at B, ``
 
 from __future__ import annotations
 
-from .bodies import Singular, cross
+from .bodies import Singular, any_zero, cross
 from .records import FRAME, ForceStep, GuideForce, PinForce, block
 
 
@@ -35,9 +35,9 @@ def solve(bx, by, known_link, xx, xy, known_block, u):
     mb = m - cross(bx, by, fx, fy)
     ex, ey = xx - bx, xy - by
     den = ex * ux + ey * uy
-    size = (ex * ex + ey * ey) ** 0.5
-    cond = abs(den) / size if size > 0 else 0.0
-    if den == 0:
+    size = (ex * ex + ey * ey) ** 0.5  # the link's length: never 0
+    cond = abs(den) / size
+    if any_zero(den):
         return None, None, None, 0.0
     n = -(mb + cross(ex, ey, rx, ry)) / den
     px, py = n * nx + rx, n * ny + ry
