@@ -28,7 +28,7 @@ from .errors import TOL, PolygonMethodError
 from .kinematics import Motion, hypot
 from .numbers import fmt_angular, quiet, sense  # noqa: F401  (re-exported)
 from .compiler import compile_plan
-from .forces import analyse, forces_dict
+from .forces import analyse, force_value, forces_dict
 from .plan import Context
 from .scene import FixedPath, Scene
 
@@ -257,7 +257,9 @@ class Solution(Motion):
         if kind == "rub":
             return self.rubbing[names[0]].rubbing_velocity
         if kind == "torque":
-            return self.input_torque
+            return self.forces.input_torque if self.scene.has_forces else self.input_torque
+        if kind in ("F", "N"):
+            return force_value(self.forces, kind, names[0])
         if kind in ("vI", "aI"):  # the wheel's point at its rolling contact
             wheel = self.scene.link("-".join(names)).key
             for st in self.plan.steps:

@@ -576,3 +576,74 @@ def test_the_sweep_balances_power_at_every_angle(path):
     total = sum(terms)
     scale = sum(np.abs(t) for t in terms)
     assert np.all(np.abs(total) <= 1e-9 * scale)
+
+
+# ----- checking force answers
+
+def _check(scene, text):
+    from polygon_method.check import check_answers
+    from polygon_method.scene import parse_answers
+    _, answers = parse_answers(text, scene)
+    return {v.key: v for v in check_answers(solve(scene), answers)}
+
+
+def test_engine_force_answers_and_the_piston_inertia_left_out():
+    """The slip's numbers from the closed forms with the gas force alone."""
+    sc = load_scene(ROOT / "worked_problems" / "engine_forces.toml")
+    F_L = 0.35e6 * math.pi / 4 * 0.5 ** 2
+    phi = math.asin(math.sin(math.radians(60)) / 4)
+    T = F_L * 0.3 * (math.sin(math.radians(60)) + math.sin(math.radians(120))
+                     / (2 * math.sqrt(16 - math.sin(math.radians(60)) ** 2)))
+    got = _check(sc, f'[answers]\nF_B = "{F_L / math.cos(phi):.5g} N"\n'
+                     f'N_B = "{F_L * math.tan(phi):.5g} N"\ntorque = "{T:.5g} N m cw"\n'
+                     'F_O = "50.64 kN"\n')
+    for key in ("F_B", "N_B"):
+        assert not got[key].ok and got[key].mistake == "piston_inertia_left_out", key
+    # the torque: the same number is the power balance without inertia (both are said)
+    t = got["torque"]
+    assert not t.ok and t.mistake in ("piston_inertia_left_out", "no_inertia")
+    assert "power balance without the inertia" in t.diagnosis and \
+        "reciprocating parts at B left out" in t.diagnosis
+    assert got["F_O"].ok  # a massless crank and rod pass the thrust to the main bearing
+
+
+def test_the_offset_on_the_wrong_side_of_g_is_diagnosed():
+    """A four-bar with a massive coupler: the torque a student gets with the inertia
+    couple's sense reversed, from the power balance computed here."""
+    text = BASE_FOURBAR + '[masses]\n"A-B" = { mass = "3 kg", along = 0.1, gyration = 0.09 }\n'
+    sc = parse_scene(text)
+    sol = solve(sc)
+    G, v, a, al, w = _kin(sol, sc.masses[0])
+    m, inertia = sc.masses[0].mass, sc.masses[0].inertia
+    wrong = -(-m * (a[0] * v[0] + a[1] * v[1]) + inertia * al * w) / sol.W["O2-A"]
+    got = _check(sc, f'[answers]\ntorque = "{abs(wrong):.6g} N m {"ccw" if wrong > 0 else "cw"}"\n')
+    assert not got["torque"].ok and got["torque"].mistake == "offset_wrong_side"
+
+
+BASE_FOURBAR = """
+units = "m"
+[ground]
+O2 = [0, 0]
+O4 = [0.2, 0]
+[links]
+"O2-A" = 0.1
+"A-B" = 0.25
+"B-O4" = 0.18
+[assembly]
+B = "above"
+[input]
+crank = "O2-A"
+angle = 70
+speed = "300 rpm ccw"
+acceleration = "200 rad/s^2 ccw"
+"""
+
+
+@pytest.mark.parametrize("extra, words", [
+    ('[answers]\nF_A = "2 kN"', "a force answer needs the force analysis"),
+    ('[masses]\n"A-B" = { mass = 2 }\n[answers]\nN_A = "2 kN"', "N_X names a slider's block"),
+    ('[masses]\n"A-B" = { mass = 2 }\n[answers]\nF_Q = "2 kN"', "no point Q"),
+])
+def test_bad_force_answer_keys(extra, words):
+    with pytest.raises(SceneError, match=re.escape(words)):
+        parse_scene(BASE_FOURBAR + extra)

@@ -53,7 +53,8 @@ from .verdicts import _NOISE_KIND, ROUNDING, UNIT_OF, Verdict, verdicts_dict, ve
 
 #: answers that are magnitudes (a negative one is a mistake of its own)
 _MAGNITUDES = {"v": "a speed", "a": "an acceleration's size", "ac": "a Coriolis component's "
-               "size", "rub": "a rubbing velocity"}
+               "size", "rub": "a rubbing velocity", "F": "a pin force's size",
+               "N": "a guide's normal force's size"}
 
 def tolerances(sol: Solution):
     """The tolerances of one solution, to share among many answer files."""
@@ -104,7 +105,7 @@ def check_answers(sol: Solution, answers=None, tolerance: float | None = None,
             clean = clean or tidied(sol)
             exact = clean.value(kind, ans.names)
         signed = ans.sense is not None or ans.value < 0
-        if kind in ("v", "a", "ac", "rub"):
+        if kind in ("v", "a", "ac", "rub", "F", "N"):
             signed = False
         given = ans.value if signed else abs(ans.value)
         correct = exact if signed else abs(exact)

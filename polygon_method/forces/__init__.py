@@ -22,7 +22,7 @@ from ..errors import PolygonMethodError
 from . import carried, crank, dyad, slider
 from .bodies import Ledger, Singular, centre, cross, gather
 from .records import (FRAME, Forces, ForceStep, GuideForce, Inertia, PinForce, block,
-                      forces_dict)
+                      force_value, forces_dict)
 
 #: the force step of each kind of kinematic step: its room (``owns(st)``: the bodies its
 #: points act on; ``step(st, P, ledger, owners)``: its pin forces; ``covers(st)``, where
@@ -30,7 +30,8 @@ from .records import (FRAME, Forces, ForceStep, GuideForce, Inertia, PinForce, b
 ROOMS = {"crank": crank, "dyad": dyad, "slider": slider, "carried": carried}
 
 __all__ = ["analyse", "Forces", "Inertia", "PinForce", "GuideForce", "ForceStep", "FRAME",
-           "block", "centre", "cross", "Ledger", "forces_dict", "owners", "ROOMS"]
+           "block", "centre", "cross", "Ledger", "forces_dict", "owners", "ROOMS",
+           "force_value"]
 
 _NOT_YET = {
     "slider": "a block sliding on a moving link",

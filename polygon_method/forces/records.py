@@ -136,6 +136,24 @@ class Forces:
         return next((i for i in self.inertia if i.body == body), None)
 
 
+def force_value(f: Forces, kind: str, name: str) -> float:
+    """The size of what an answer key names: ``F`` the force at pin ``name`` (a pin joining
+    two bodies), ``N`` the guide's normal force on the block at ``name``."""
+    from ..errors import SceneError
+    if kind == "N":
+        g = next((g for g in f.guides if g.point == name), None)
+        if g is None:
+            raise SceneError(f"N_{name}: the block at {name} is on no fixed path")
+        return abs(g.normal)
+    found = [p for p in f.pins if p.point == name]
+    if len(found) != 1:
+        raise SceneError(f"F_{name}: " + (f"no pin joins two bodies at {name}" if not found
+                         else f"the pin at {name} joins more than two bodies ("
+                         + ", ".join(sorted({b for p in found for b in (p.on, p.by)}))
+                         + "): its forces are in solve's table"))
+    return found[0].magnitude
+
+
 def _vec(v):
     return [v[0] + 0.0, v[1] + 0.0]  # + 0.0: no -0.0 in the JSON
 

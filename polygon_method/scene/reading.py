@@ -555,6 +555,7 @@ def parse_answers(text: str, scene: Scene, file: str | None = None, *,
     loader.index = scene._link_index
     loader.cylinder_list = scene.cylinders
     loader.two_inputs = scene.input.second is not None
+    loader.scene_forces = scene.has_forces
     loader.rolling_pairs = scene.rolling
     tolerance, answers = loader.answers(set(scene.point_names), scene.sliders, scene.pins,
                                         scene.loads)

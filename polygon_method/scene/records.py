@@ -43,6 +43,10 @@ ANSWER_KINDS = {
     "rub": ("velocity", "pin", False),
     "vI": ("velocity", "wheel", False),
     "aI": ("acceleration", "wheel", False),
+    # the force analysis (a scene with [masses] or [gravity]): the size of the force at a
+    # pin joining two bodies, of a guide's normal force on its block
+    "F": ("force", "pin_force", False),
+    "N": ("force", "guide", False),
 }
 
 

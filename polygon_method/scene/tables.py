@@ -529,9 +529,13 @@ class _Tables:
 
     def answer(self, key, value, known, slider_names, pin_names, loads):
         line = self.line_of("answers", key)
+        forces = getattr(self, "scene_forces", None)  # an answer file: its scene's
+        if forces is None:
+            forces = bool(self.raw.get("masses")) or "gravity" in self.raw
         if key == "torque":
-            if not loads:
-                raise self.error("a torque answer needs [loads] to balance", "answers", key)
+            if not loads and not forces:
+                raise self.error("a torque answer needs [loads] to balance, or [masses]",
+                                 "answers", key)
             if getattr(self, "two_inputs", False):
                 raise self.error("with two inputs one power balance does not give the two "
                                  "driving torques: no torque answer", "answers", key)
@@ -545,8 +549,12 @@ class _Tables:
                         "rub_B", "torque"]
             raise self.error(f"unknown answer key{_suggest(key, examples)}; keys are v_X, "
                              "a_X, v_XY, a_XY, omega_L, alpha_L, vs_X, as_X, ac_X, rub_X, "
-                             "torque, I_ij (a centre), vI_L, aI_L (a wheel's contact point)", "answers", key)
+                             "torque, I_ij (a centre), vI_L, aI_L (a wheel's contact point), "
+                             "F_X, N_X (forces)", "answers", key)
         kind, what, sense_ok = ANSWER_KINDS[prefix]
+        if what in ("pin_force", "guide") and not forces:
+            raise self.error(f"{key}: a force answer needs the force analysis: give "
+                             "[masses] or [gravity]", "answers", key)
         names = (rest,) if what == "slider" and rest in slider_names else split_name(rest)
         if not names:
             raise self.error(f"'{rest}' is not a point or link name", "answers", key)
@@ -581,6 +589,14 @@ class _Tables:
             if lk is None or lk.key not in wheels:
                 raise self.error(f"{prefix}_{rest}: {rest} is no wheel of [rolling] (the key "
                                  "names a rolling wheel's link, e.g. aI_CP)", "answers", key)
+        elif what == "pin_force":
+            if len(names) != 1 or names[0] not in known:
+                raise self.error(f"F_X names a pin: no point {rest} in the scene"
+                                 f"{_which_point(rest, known)}", "answers", key)
+        elif what == "guide":
+            if len(names) != 1 or names[0] not in slider_names:
+                raise self.error(f"N_X names a slider's block: no slider {rest} in "
+                                 "[sliders]", "answers", key)
         elif what == "pin":
             if len(names) != 1 or names[0] not in pin_names:
                 raise self.error(f"rubbing at {rest} needs its size in [pins]", "answers", key)
