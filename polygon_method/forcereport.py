@@ -130,6 +130,7 @@ def force_blocks(sol) -> list:
         for body, (fx, fy, m) in zip(st.bodies, st.known):
             items.append(f"known on {body}: {_vec((fx, fy), F)}, moment about the origin "
                          f"{_moment(m, M)}")
+        items += list(st.equations)
         for name, val in st.found:
             if isinstance(val, tuple):
                 items.append(f"{name} = {_vec(val, F)}")

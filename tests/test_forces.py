@@ -647,3 +647,24 @@ acceleration = "200 rad/s^2 ccw"
 def test_bad_force_answer_keys(extra, words):
     with pytest.raises(SceneError, match=re.escape(words)):
         parse_scene(BASE_FOURBAR + extra)
+
+
+def test_a_link_on_a_point_of_the_frame():
+    """A dyad hung on a point carried on a link fixed to the ground (a frame member): its
+    reaction is the frame's (in the shaking force), and the fixed link's own mass loads
+    nothing."""
+    sc = parse_scene(BASE_FOURBAR.replace('"B-O4" = 0.18', '"B-E" = 0.18\n"O2-O4" = 0.2')
+                     .replace("[assembly]", '[points]\nE = { on = "O2-O4", distances = '
+                              '{ O2 = 0.15, O4 = 0.08 }, turn = "ccw" }\n[assembly]')
+                     + '[masses]\n"A-B" = { mass = 3, gyration = 0.05 }\n"B-E" = '
+                     '{ mass = 2 }\n"O2-O4" = { mass = 50 }\n[gravity]\n')
+    sol = solve(sc)
+    f = sol.forces
+    assert ("E", "B-E", FRAME) in [(p.point, p.on, p.by) for p in f.pins]
+    fx = fy = 0.0
+    for m in sc.masses[:2]:
+        G, v, a, al, w = _kin(sol, m)
+        fx += -m.mass * a[0]
+        fy += -m.mass * (a[1] + 9.81)
+    assert math.hypot(f.shaking_force[0] - fx, f.shaking_force[1] - fy) <= \
+        1e-9 * math.hypot(fx, fy)

@@ -59,6 +59,12 @@ def _key(scene):
     return "[masses]" if scene.masses else "[gravity]"
 
 
+def frame_links(scene) -> set:
+    """The links with both ends on the ground: parts of the frame (a point carried on one
+    is the frame's; a mass on one moves nothing)."""
+    return {lk.key for lk in scene.links if lk.p in scene.ground and lk.q in scene.ground}
+
+
 def owners(scene, plan) -> dict:
     """point -> the body a load or a later link's pin at that point acts on: the frame for
     a ground point, the crank for its tip, a dyad's first link for its point, the block
@@ -69,11 +75,12 @@ def owners(scene, plan) -> dict:
                                  "two driving torques; the force analysis needs one input",
                                  file=scene.file, key=_key(scene))
     own = {p: FRAME for p in scene.ground}
+    fixed = frame_links(scene)
     for st in plan.steps:
         room = ROOMS.get(st.kind)
         if room is None or not getattr(room, "covers", lambda s: True)(st):
             _refuse(scene, st, _NOT_YET.get(st.kind, f"a {st.kind} step"))
-        own.update(room.owns(st))
+        own.update({p: FRAME if b in fixed else b for p, b in room.owns(st).items()})
     for m in scene.masses:  # a mass on a block the plan does not slide on a fixed path
         if m.block and own.get(m.body) != block(m.body):
             raise PolygonMethodError(f"forces: {m.body} is a block on no fixed path: its "

@@ -80,7 +80,10 @@ def gather(scene, motion, owner):
     grav = scene.gravity
     led = Ledger()
     records = []
+    fixed = {lk.key for lk in scene.links if lk.p in scene.ground and lk.q in scene.ground}
     for m in scene.masses:
+        if m.body in fixed:  # a part of the frame: it neither moves nor loads the mechanism
+            continue
         if m.block:
             G, a_G, alpha, body = P[m.body], A[m.body], 0.0, block(m.body)
         else:

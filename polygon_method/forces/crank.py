@@ -11,6 +11,7 @@ and its driver turns it with the torque T; every other force on it is known by n
 from __future__ import annotations
 
 from .bodies import cross
+from ..numbers import fmt
 from .records import FRAME, ForceStep, PinForce
 
 
@@ -32,7 +33,13 @@ def step(st, P, led, own):
     ox, oy = P[st.pivot]
     r, torque = solve(ox, oy, k)
     led.add(FRAME, -r[0], -r[1], ox, oy)
+    eq = ()
+    if isinstance(torque, float):
+        O = st.pivot
+        eq = (f"moments about {O}: T + M_{O} = 0, M_{O} = {fmt(-torque)} N m the known "
+              f"forces' moment: T = {fmt(torque)} N m",
+              f"forces: F_{O} = -(the known forces) = ({fmt(r[0])}, {fmt(r[1])}) N")
     rec = ForceStep(st.index, "crank", st.title, (st.link,), (k,),
                     ((f"F_{st.pivot} on {st.link} by the frame", r),
-                     (f"T on {st.link}", torque)), 1.0)
+                     (f"T on {st.link}", torque)), 1.0, "", eq)
     return (PinForce(st.pivot, st.link, FRAME, r),), (), rec, torque

@@ -23,6 +23,7 @@ D = (1, 0) and takes it all (the joint's triangle of forces: link 1 carries none
 from __future__ import annotations
 
 from .bodies import Singular, any_zero, cross
+from ..numbers import fmt
 from .records import ForceStep, PinForce
 
 
@@ -69,9 +70,24 @@ def step(st, P, led, own):
             PinForce(st.d, l2, od, fd))
     led.add(ob, -fb[0], -fb[1], bx, by)
     led.add(od, -fd[0], -fd[1], dx, dy)
+    eq = ()
+    if isinstance(cond, float):  # one instant: the working in words
+        X, B, D = st.point, st.b, st.d
+        m1b = k1[2] - cross(bx, by, k1[0], k1[1])
+        m2d = k2[2] - cross(dx, dy, k2[0], k2[1])
+        eq = (f"moments of {l1} about {B}: ({X} - {B}) x F_{X} + M_{B} = 0, with M_{B} = "
+              f"{fmt(m1b)} N m the known forces' moment",
+              f"moments of {l2} about {D}: ({X} - {D}) x (-F_{X}) + M_{D} = 0, with M_{D} = "
+              f"{fmt(m2d)} N m",
+              f"the two together: F_{X} = ({fmt(p[0])}, {fmt(p[1])}) N, the force on {l1} "
+              f"by {l2}",
+              f"forces on {l1}: F_{B} = -(the known forces + F_{X}) = ({fmt(fb[0])}, "
+              f"{fmt(fb[1])}) N",
+              f"forces on {l2}: F_{D} = -(the known forces - F_{X}) = ({fmt(fd[0])}, "
+              f"{fmt(fd[1])}) N")
     rec = ForceStep(st.index, "dyad", st.title, (l1, l2), (k1, k2),
                     ((f"F_{st.point} on {l1} by {l2}", p), (f"F_{st.b} on {l1} by {ob}", fb),
                      (f"F_{st.d} on {l2} by {od}", fd)), cond,
                     f"sine of the angle at {st.point} between {st.point}{st.b} and "
-                    f"{st.point}{st.d}")
+                    f"{st.point}{st.d}", eq)
     return pins, (), rec, None

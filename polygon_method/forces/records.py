@@ -84,7 +84,9 @@ class ForceStep:
     ``(Fx, Fy, M)`` of what was known on it before the step (inertia, weight, loads, the
     forces of the bodies solved before; M about the frame's origin), the unknowns found
     (name -> value), the ``condition`` of its equations (1 best, 0 singular) and ``why``
-    (what the condition measures)."""
+    (what the condition measures); ``equations`` its working in words.
+
+    A sweep's records hold arrays and no words."""
 
     index: int
     kind: str
@@ -94,6 +96,8 @@ class ForceStep:
     found: tuple
     condition: float
     why: str = ""
+    #: the step's equations with their numbers, in the book's words (SI)
+    equations: tuple = ()
 
 
 @dataclass(frozen=True)

@@ -19,6 +19,7 @@ Then ``P = N n + R`` and the link's force balance gives the force on it at B, ``
 from __future__ import annotations
 
 from .bodies import Singular, any_zero, cross
+from ..numbers import fmt
 from .records import FRAME, ForceStep, GuideForce, PinForce, block
 
 
@@ -69,8 +70,21 @@ def step(st, P, led, own):
     g = GuideForce(x, n, (-uy, ux))
     led.add(ob, -fb[0], -fb[1], bx, by)
     led.add(FRAME, -g.force[0], -g.force[1], xx, xy)
+    eq = ()
+    if isinstance(cond, float):  # one instant: the working in words
+        B = st.b
+        mb = kl[2] - cross(bx, by, kl[0], kl[1])
+        ex, ey = xx - bx, xy - by
+        eq = (f"moments of {lk} about {B}: ({x} - {B}) x (N n + R) + M_{B} = 0, R = "
+              f"({fmt(kb[0])}, {fmt(kb[1])}) N the known forces on the block, M_{B} = "
+              f"{fmt(mb)} N m those on {lk}",
+              f"N = -(M_{B} + ({x} - {B}) x R) / (({x} - {B}) . u) = -({fmt(mb)} + "
+              f"{fmt(cross(ex, ey, kb[0], kb[1]))}) / {fmt(ex * ux + ey * uy)} = {fmt(n)} N",
+              f"the block: F_{x} = N n + R = ({fmt(p[0])}, {fmt(p[1])}) N on {lk}",
+              f"forces on {lk}: F_{B} = -(the known forces + F_{x}) = ({fmt(fb[0])}, "
+              f"{fmt(fb[1])}) N")
     rec = ForceStep(st.index, "slider", st.title, (lk, bl), (kl, kb),
                     ((f"N_{x} on {bl} by the guide", n), (f"F_{x} on {lk} by {bl}", p),
                      (f"F_{st.b} on {lk} by {ob}", fb)), cond,
-                    f"cosine of the angle between {st.b}{x} and the path")
+                    f"cosine of the angle between {st.b}{x} and the path", eq)
     return (PinForce(x, lk, bl, p), PinForce(st.b, lk, ob, fb)), (g,), rec, None
