@@ -668,3 +668,93 @@ def test_a_link_on_a_point_of_the_frame():
         fy += -m.mass * (a[1] + 9.81)
     assert math.hypot(f.shaking_force[0] - fx, f.shaking_force[1] - fy) <= \
         1e-9 * math.hypot(fx, fy)
+
+
+def _fourbar_matrix(sol):
+    """The matrix method: the Newton-Euler equations of a four-bar's three links as one
+    9 x 9 system in the pin forces (on the crank at O2 by the frame, on the coupler at A
+    by the crank, on the rocker at B by the coupler, on the rocker at O4 by the frame) and
+    the driving torque; the loads at points of a link and couples on links, the weights
+    and the inertia as the known side. Returns {name: value}."""
+    import numpy as np
+    sc = sol.scene
+    (o2, a, b, o4) = ("O2", "A", "B", "O4")
+    crank, coupler, rocker = "O2-A", "A-B", "B-O4"
+    P = sol.P
+    g = sc.gravity
+    rows, rhs = [], []
+    # unknowns: F_O2 (0,1), F_A (2,3), F_B (4,5), F_O4 (6,7), T (8)
+    known = {}
+    for m in sc.masses:
+        G, v, acc, al, w = _kin(sol, m)
+        F = (m.mass * g.g * g.direction[0] - m.mass * acc[0],
+             m.mass * g.g * g.direction[1] - m.mass * acc[1])
+        known[m.body] = [F[0], F[1], (G[0], G[1]), -m.inertia * al, []]
+    for ld in sc.loads:
+        if ld.force is not None:
+            body = next(lk.key for lk in sc.links if ld.target in lk.points
+                        or (sc.carried(ld.target) and sc.carried(ld.target).link == lk.key))
+            known[body][4].append((ld.force, P[ld.target]))
+        else:
+            known[ld.target][3] += ld.torque
+    # each body: the unknown forces on it, (column of x, sign, point); moments about G
+    on = {crank: [(0, 1, o2), (2, -1, a)], coupler: [(2, 1, a), (4, -1, b)],
+          rocker: [(4, 1, b), (6, 1, o4)]}
+    for body, forces in on.items():
+        fx, fy, G, c, loads = known[body]
+        for f, at in loads:
+            fx, fy = fx + f[0], fy + f[1]
+            c += (at[0] - G[0]) * f[1] - (at[1] - G[1]) * f[0]
+        rx, ry, rm = [0.0] * 9, [0.0] * 9, [0.0] * 9
+        for col, s, pt in forces:
+            rx[col] += s
+            ry[col + 1] += s
+            dx, dy = P[pt][0] - G[0], P[pt][1] - G[1]
+            rm[col] += -s * dy
+            rm[col + 1] += s * dx
+        if body == crank:
+            rm[8] = 1.0
+        rows += [rx, ry, rm]
+        rhs += [-fx, -fy, -c]
+    x = np.linalg.solve(np.array(rows), np.array(rhs))
+    return {"F_O2": x[0:2], "F_A": x[2:4], "F_B": x[4:6], "F_O4": x[6:8], "T": x[8]}
+
+
+@pytest.mark.parametrize("path", [ROOT / "worked_problems" / "fourbar_forces.toml"]
+                         + [c.values[0] for c in CASES if Path(c.values[0]).stem in
+                            ("fourbar_acceleration",)])
+def test_four_bar_against_the_matrix_method(path):
+    sc = load_scene(path)
+    if not sc.has_forces:  # the worked four-bars of the kinematics, given masses here
+        raw = scene_table(sc)
+        raw["masses"] = {"O2-A": {"mass": 2, "along": 40}, "A-B": {"mass": 5, "gyration": 90},
+                         "B-O4": {"mass": 3, "distances": {"B": 200, "O4": 150},
+                                  "turn": "cw", "inertia": 0.04}}
+        raw["gravity"] = {"direction": 250}
+        raw["loads"] = {"B": {"force": [300, -200]}, "B-O4": {"torque": "15 N m ccw"}}
+        sc = scene_from_table(raw)
+    sol = solve(sc)
+    f = sol.forces
+    ref = _fourbar_matrix(sol)
+    scale = max(float(math.hypot(*v)) for k, v in ref.items() if k != "T")
+
+    def close(got, want):
+        assert math.hypot(got[0] - want[0], got[1] - want[1]) <= 1e-9 * scale
+    close(f.pin("O2", "O2-A", FRAME), ref["F_O2"])
+    close(f.pin("A", "A-B", "O2-A"), ref["F_A"])
+    close(f.pin("B", "B-O4", "A-B"), ref["F_B"])
+    close(f.pin("O4", "B-O4", FRAME), ref["F_O4"])
+    assert abs(f.input_torque - ref["T"]) <= 1e-9 * scale * 0.5
+
+
+def test_the_worked_four_bar_and_its_written_answers():
+    path = ROOT / "worked_problems" / "fourbar_forces.toml"
+    ref = _fourbar_matrix(solve(load_scene(path)))
+    text = path.read_text()
+    for key in ("F_O2", "F_A", "F_B", "F_O4"):
+        written = re.search(rf"#.*\b{key} = ([\d.]+)", text)
+        assert float(written.group(1)) == pytest.approx(float(math.hypot(*ref[key])),
+                                                        rel=6e-4), key
+    written = re.search(r"#.*\bT = ([\d.]+) \((c?cw)[:)]", text)
+    assert float(written.group(1)) == pytest.approx(abs(float(ref["T"])), rel=6e-4)
+    assert written.group(2) == ("ccw" if ref["T"] > 0 else "cw")
