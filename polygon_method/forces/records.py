@@ -9,6 +9,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ..errors import SceneError
+
 FRAME = "frame"
 
 
@@ -143,7 +145,6 @@ class Forces:
 def force_value(f: Forces, kind: str, name: str) -> float:
     """The size of what an answer key names: ``F`` the force at pin ``name`` (a pin joining
     two bodies), ``N`` the guide's normal force on the block at ``name``."""
-    from ..errors import SceneError
     if kind == "N":
         g = next((g for g in f.guides if g.point == name), None)
         if g is None:
