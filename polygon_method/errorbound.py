@@ -50,9 +50,12 @@ NO_BOUND = ("no useful bound: the rounding carried along the steps a quantity de
 
 
 def _cap(x):
-    """``x`` saturated at :data:`CAP` (an undefined one too): floats or arrays."""
+    """``x`` saturated at :data:`CAP` (an undefined one too): floats or arrays, or a tuple
+    of them (a step's bound for each of its links, kept a tuple)."""
     if isinstance(x, float):
         return x if x < CAP else CAP
+    if isinstance(x, tuple):
+        return tuple(_cap(e) for e in x)
     import numpy as np
     return np.fmin(x, CAP)
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 
 from .errorbound import NO_BOUND, SHOWN, USELESS, shown_bounds
+from .forcereport import forces_lines
 from .given import stated
 from .numbers import fmt_angular
 from .solution import Solution, tidied
@@ -125,6 +126,7 @@ def solution_text(sol: Solution) -> str:
         t = tidied(sol).input_torque  # from the velocities without rounding noise
         lines.append(f"input torque on {inp.crank}: {fmt_angular(t, 'N m')} "
                      "(power balance, no friction or inertia)")
+    lines += forces_lines(sol)
     lines.append("")
     lines.append("plan (condition: the sine of the angle between the step's two direction "
                  "lines, unless it says otherwise):")

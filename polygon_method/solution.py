@@ -28,6 +28,7 @@ from .errors import TOL, PolygonMethodError
 from .kinematics import Motion, hypot
 from .numbers import fmt_angular, quiet, sense  # noqa: F401  (re-exported)
 from .compiler import compile_plan
+from .forces import analyse, force_value, forces_dict
 from .plan import Context
 from .scene import FixedPath, Scene
 
@@ -97,6 +98,27 @@ class Solution(Motion):
         if t is _UNSET:
             t = c["torque"] = _torque(self.scene, self.V, self.W, self.scene.input.omega)
         return t
+
+    @property
+    def forces(self):
+        """The force analysis (:class:`~polygon_method.forces.Forces`) where the scene gives
+        masses or gravity, else None. Raises a one-line
+        :class:`~polygon_method.errors.PolygonMethodError` for a plan with a step the force
+        analysis does not cover (see :attr:`forces_refused`)."""
+        if not self.scene.has_forces:
+            return None
+        return self._get("forces", lambda: analyse(self))
+
+    @property
+    def forces_refused(self):
+        """Why the force analysis was refused (one line), or None."""
+        if not self.scene.has_forces:
+            return None
+        try:
+            self.forces
+        except PolygonMethodError as exc:
+            return exc.message
+        return None
 
     # ----- conditioning
     @property
@@ -212,6 +234,9 @@ class Solution(Motion):
         inp = sc.input
         d["input"] = {"crank": inp.crank, "angle": inp.angle, "omega": inp.omega,
                       "alpha": inp.alpha}
+        refused = self.forces_refused
+        if sc.has_forces:
+            d["forces"] = None if refused else forces_dict(self.forces)
         if inp.second is not None:
             two = inp.second
             d["input"]["second"] = {"crank": two.crank, "angle": two.angle,
@@ -232,6 +257,8 @@ class Solution(Motion):
             d["rolling"] = {k: {"contact": list(c[0]), "velocity": list(c[1]),
                                 "acceleration": list(c[2])} for k, c in contacts.items()}
         warnings = list(self.warnings)
+        if refused:
+            warnings.append(refused)
         bodies = 1 + sum(len(st.bodies()) for st in self.plan.steps)
         if bodies <= JSON_BODIES:
             try:
@@ -266,7 +293,9 @@ class Solution(Motion):
         if kind == "rub":
             return self.rubbing[names[0]].rubbing_velocity
         if kind == "torque":
-            return self.input_torque
+            return self.forces.input_torque if self.scene.has_forces else self.input_torque
+        if kind in ("F", "N"):
+            return force_value(self.forces, kind, names[0])
         if kind in ("vI", "aI"):  # the wheel's point at its rolling contact
             wheel = self.scene.link("-".join(names)).key
             for st in self.plan.steps:

@@ -40,6 +40,7 @@ from dataclasses import replace
 from .derived import transmission_angle
 from .given import working
 from .numbers import fixed as _fixed, fmt, sense_word
+from .forcereport import force_blocks
 from .constructions import acceleration_constructions, velocity_constructions
 from .scales import DRAWING_PRECISION_CM, diagram_scales, extent
 from .scene import FixedPath, GuideSlider, split_name
@@ -618,6 +619,7 @@ def steps_blocks(sol: Solution) -> _Doc:
     _velocity(doc, sol, vscale)
     _readoffs(doc, sol, vscale)
     _acceleration(doc, sol, ascale)
+    doc.blocks += force_blocks(sol)
     tail = [f"warning: {w}" for w in sol.warnings] + [f"note: {n}" for n in sol.notes]
     if tail:
         doc.h("Notes")

@@ -27,7 +27,8 @@ import numpy as np
 
 from .derived import input_torque, largest, pin_rubbing
 from .errorbound import error_bounds
-from .errors import TOL, SceneError
+from .errors import TOL, PolygonMethodError, SceneError
+from .forces import analyse
 from .kinematics import Motion
 from .compiler import compile_plan
 from .scene import Scene
@@ -111,12 +112,34 @@ class SweepResult(Motion):
             cols.append((f"rub_{pin}", "m/s", r))
         if self.input_torque is not None:
             cols.append(("torque", "N m", self.input_torque))
+        cols += self.force_columns()
         for st in compile_plan(sc).steps:
             if st.branching:
                 cols.append((f"condition_step{st.index + 1}", "1", self.conditions[st.index]))
         if error_bound:
             worst = self.error_bounds.worst
             cols.append(("err_max", "1", np.broadcast_to(worst, np.shape(self.theta))))
+        return cols
+
+    def force_columns(self) -> list:
+        """The force analysis over the sweep, for a scene with masses or gravity (none for a
+        plan the analysis does not cover): the driver's torque with inertia (the negative
+        of an engine's turning moment), the shaking force and moment, each guide's normal
+        force and the size of each pin force (named ``F_<pin>_<on>_<by>``)."""
+        if not self.scene.has_forces or not len(self.theta):
+            return []
+        try:
+            f = analyse(self)
+        except PolygonMethodError:
+            return []
+        n = np.shape(self.theta)
+        cols = [("torque_inertia", "N m", np.broadcast_to(f.input_torque, n)),
+                ("shake_x", "N", np.broadcast_to(f.shaking_force[0], n)),
+                ("shake_y", "N", np.broadcast_to(f.shaking_force[1], n)),
+                ("shake_moment", "N m", np.broadcast_to(f.shaking_moment, n))]
+        cols += [(f"N_{g.point}", "N", np.broadcast_to(g.normal, n)) for g in f.guides]
+        cols += [(f"F_{p.point}_{p.on}_{p.by}".replace(" ", ""), "N",
+                  np.broadcast_to(np.hypot(*p.force), n)) for p in f.pins]
         return cols
 
     def to_csv(self, error_bound=False) -> str:

@@ -9,7 +9,7 @@ Quantity(value=-10.5, sense='cw')
 >>> parse_quantity("2 ft 6 in", "length").value == parse_quantity("30 in", "length").value
 True
 
-Values come back in SI (m, rad, rad/s, rad/s^2, N, m/s, m/s^2, N m); a sense ``cw`` makes
+Values come back in SI (m, rad, rad/s, rad/s^2, N, m/s, m/s^2, N m, kg, kg m^2, Pa); a sense ``cw`` makes
 the value negative (counter-clockwise positive).
 """
 
@@ -50,6 +50,16 @@ UNITS: dict[str, dict[str, float]] = {
                "N·mm": 1e-3, "lbf in": 4.4482216152605 * 0.0254,
                "lbf ft": 4.4482216152605 * 0.3048},
     "percent": {"%": 0.01},
+    # the force chapter: a link's mass, its moment of inertia, a gas pressure
+    "mass": {"kg": 1.0, "g": 1e-3, "t": 1e3, "lb": 0.45359237},
+    "moment_of_inertia": {"kg m^2": 1.0, "kg m²": 1.0, "kg·m^2": 1.0, "kg·m²": 1.0,
+                          "kg m2": 1.0, "kg mm^2": 1e-6, "kg mm²": 1e-6, "kg cm^2": 1e-4,
+                          "kg cm²": 1e-4, "g mm^2": 1e-9, "g cm^2": 1e-7,
+                          "lb ft^2": 0.45359237 * 0.3048 ** 2,
+                          "lb in^2": 0.45359237 * 0.0254 ** 2},
+    "pressure": {"Pa": 1.0, "N/m^2": 1.0, "N/m²": 1.0, "kPa": 1e3, "kN/m^2": 1e3,
+                 "kN/m²": 1e3, "MPa": 1e6, "N/mm^2": 1e6, "N/mm²": 1e6, "bar": 1e5,
+                 "psi": 4.4482216152605 / 0.0254 ** 2},
 }
 
 #: the largest magnitude (SI) that makes sense for a mechanism, by kind: beyond it a value
@@ -62,6 +72,9 @@ ABSURD: dict[str, float] = {
     "torque": 1e9,  # N m
     "velocity": 1e6,  # m/s
     "acceleration": 1e12,  # m/s^2
+    "mass": 1e7,  # kg
+    "moment_of_inertia": 1e7,  # kg m^2
+    "pressure": 1e10,  # Pa
 }
 
 #: the smallest magnitude (SI) other than zero that makes sense, by kind: below it a value
@@ -76,7 +89,8 @@ TINY: dict[str, float] = {
 LENGTH_UNITS = {"mm", "cm", "m", "in", "ft"}
 
 _SI_NAME = {"angle": "rad", "angular_velocity": "rad/s", "angular_acceleration": "rad/s^2",
-            "force": "N", "torque": "N m", "velocity": "m/s", "acceleration": "m/s^2"}
+            "force": "N", "torque": "N m", "velocity": "m/s", "acceleration": "m/s^2", "mass": "kg",
+            "moment_of_inertia": "kg m^2", "pressure": "Pa"}
 #: sense words: the format's cw/ccw, and the spellings textbooks use
 _SENSES = {"cw": "cw", "clockwise": "cw", "ccw": "ccw", "acw": "ccw", "anticlockwise": "ccw",
            "anti-clockwise": "ccw", "counterclockwise": "ccw", "counter-clockwise": "ccw"}
@@ -148,7 +162,7 @@ def _unit_factor(unit: str, kind: str, where: str) -> float:
     if unit in table:
         return table[unit]
     folded = {u.lower(): f for u, f in table.items()}
-    if unit.lower() in folded and kind not in ("force",):
+    if unit.lower() in folded and kind not in ("force", "pressure"):
         return folded[unit.lower()]
     other = next((k for k, t in UNITS.items() if unit in t), None)
     if other is not None:

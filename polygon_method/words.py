@@ -113,13 +113,23 @@ def given(sc) -> list:
         size = pin.radius * (2 if pin.given == "diameter" else 1)
         out.append(f"Pin at {pin.point}: {pin.given} {_len(sc, size)}.")
     for ld in sc.loads:
-        if ld.force is not None:
+        if ld.gas is not None:
+            fx, fy = ld.force
+            out.append(f"The gas pressure on the piston {ld.target} is {ld.gas[2]}, pushing "
+                       f"it at {fmt(math.degrees(math.atan2(fy, fx)) % 360)}°.")
+        elif ld.force is not None:
             fx, fy = ld.force
             out.append(f"A force of {fmt(math.hypot(fx, fy))} N acts at {ld.target} at "
                        f"{fmt(math.degrees(math.atan2(fy, fx)) % 360)}°.")
         elif ld.torque is not None:
             out.append(f"A torque of {fmt(abs(ld.torque))} N m {sense(ld.torque)} acts on "
                        f"link {ld.target}.")
+    for m in sc.masses:
+        what = f"The block {m.body}" if m.block else f"Link {m.body}"
+        out.append(f"{what} has a mass of {_given(m.mass)} kg"
+                   + ("." if m.block else f", its {m.how}."))
+    if sc.gravity is not None:
+        out.append(f"Gravity acts: {sc.gravity.text}.")
     return out
 
 

@@ -10,7 +10,8 @@ from dataclasses import dataclass, replace
 
 from ..errors import PolygonMethodError
 from ..plan import Context
-from ..scene import GuideSlider, Scene
+from ..forces import analyse, force_value
+from ..scene import GuideSlider, Gravity, Scene
 from ..solution import Solution, solve
 from ..steps import under_label
 from ..numbers import textbook as _g
@@ -220,8 +221,10 @@ class _Diagnoser:
                 alt = self.alts.speed(factor)
                 if alt is not None:
                     out.append(_Candidate(val(alt), code, words))
-        else:
+        elif not sc.has_forces:
             out += self.torque(signed)
+        if kind in ("F", "N") or (kind == "torque" and sc.has_forces):
+            out += self.force_slips(kind, names, signed)
         for factor, code, words in _FACTOR_MISTAKES.get(kind, ()):
             out.append(_Candidate(self.cmp(correct, signed) * factor, code, words))
         if kind in ("v", "a"):
@@ -515,6 +518,47 @@ class _Diagnoser:
             out.append(_Candidate(sign(math.copysign(full, -power / w)), "force_times_speed",
                                   "F x v without the angle between force and velocity "
                                   "(the power is F . v = F v cos theta)"))
+        return out
+
+    def force_slips(self, kind, names, signed):
+        """The force chapter's classic slips, each solved again as the slip would have it:
+        the power balance without inertia, the piston's inertia left out, the weights added
+        where the problem leaves them out, the inertia couple left out, the offset h on the
+        wrong side of G (the couple's sense reversed)."""
+        sol, sc = self.sol, self.sc
+        out = []
+
+        def pick(f):
+            return f.input_torque if kind == "torque" else force_value(f, kind, names[0])
+
+        def again(words, code, **changes):
+            try:
+                value = pick(analyse(solve(replace(sc, **changes))))
+            except PolygonMethodError:
+                return
+            out.append(_Candidate(self.cmp(value, signed), code, words))
+
+        if kind == "torque" and sol.input_torque is not None:
+            out.append(_Candidate(self.cmp(sol.input_torque, signed), "no_inertia",
+                                  "the power balance without the inertia forces (T = -sum F . v "
+                                  "/ omega leaves out -m a_G . v_G and -I alpha omega)"))
+        blocks = [m.body for m in sc.masses if m.block]
+        if blocks:
+            again(f"the inertia of the reciprocating parts at {', '.join(blocks)} left out",
+                  "piston_inertia_left_out",
+                  masses=tuple(m for m in sc.masses if not m.block))
+        if sc.gravity is None and sc.masses:
+            again("the weights added: the problem leaves gravity out (a horizontal engine's "
+                  "weights are neglected)", "weight_added",
+                  gravity=Gravity(9.81, (0.0, -1.0), "g = 9.81 m/s^2 downwards"))
+        turning = [m for m in sc.masses if m.inertia and sol.Al.get(m.body, 0.0)]
+        if turning:
+            again("the inertia couple -I alpha left out (the inertia force taken through G)",
+                  "inertia_couple_left_out",
+                  masses=tuple(replace(m, inertia=0.0) for m in sc.masses))
+            again("the inertia force's offset h = I alpha / (m a_G) on the wrong side of G",
+                  "offset_wrong_side",
+                  masses=tuple(replace(m, inertia=-m.inertia) for m in sc.masses))
         return out
 
     def contact_at_rest(self, ans):

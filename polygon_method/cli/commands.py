@@ -283,6 +283,8 @@ def _csv_bytes(scene, n, error_bound=False) -> int:
     bounds of every quantity as arrays too."""
     cols = (1 + 6 * len(scene.point_names) + 2 * len(scene.links) + 4 * len(scene.sliders)
             + len(scene.pins) + 1 + len(scene.links))
+    if scene.has_forces:  # the torque with inertia, the shaking force, guides, pin forces
+        cols += 4 + len(scene.sliders) + 3 * len(scene.links)
     if error_bound:
         cols += 3 * len(scene.point_names) + 2 * len(scene.links) + 3 * len(scene.sliders) + 1
     return n * cols * 34

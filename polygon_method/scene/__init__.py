@@ -29,9 +29,8 @@ from __future__ import annotations
 from .reading import (key_line, load_answers, load_scene, parse_answers, parse_scene,
                       scene_from_table, scene_table)
 from .records import (ANSWER_KINDS, GIVEN_KINDS, Answer, CarriedPoint, Cylinder, FixedPath,
-                      GivenRate, GuideSlider, Input, Link, Load, Pin, PositionGiven, Scene,
-                      YokeSlot,
-                      split_name)
+                      GivenRate, Gravity, GuideSlider, Input, Link, Load, Mass, Pin,
+                      PositionGiven, Scene, YokeSlot, split_name)
 from .variation import Variation, VariantOf, Varied
 
 __all__ = [
@@ -39,5 +38,5 @@ __all__ = [
     "Load",
     "Answer", "load_scene", "parse_scene", "split_name", "ANSWER_KINDS", "parse_answers",
     "load_answers", "key_line", "scene_table", "scene_from_table", "Variation", "Varied",
-    "VariantOf", "GivenRate", "GIVEN_KINDS", "Cylinder", "PositionGiven",
+    "VariantOf", "GivenRate", "GIVEN_KINDS", "Cylinder", "PositionGiven", "Mass", "Gravity",
 ]

@@ -22,6 +22,7 @@ from .rolling import read_rolling
 from .records import (_ABSURD_LONG, _ABSURD_SHORT, _POINT_ONLY, _UNIT_ORDER, TOP_KEYS, FixedPath,
                       GuideSlider, Link, Scene, split_name)
 from .inputs import _Input
+from .masses import _Masses
 from .tables import _suggest, _Tables
 from .variation import _Variants
 
@@ -362,7 +363,7 @@ def _long_integer(raw):
     return None
 
 
-class _Loader(_Tables, _Input, _Variants):
+class _Loader(_Tables, _Input, _Variants, _Masses):
     def __init__(self, raw: dict, text: str, file):
         self.raw = raw
         self.lines = toml_lines(text)
@@ -535,6 +536,8 @@ class _Loader(_Tables, _Input, _Variants):
         assembly = self.assembly(known)
         pins = self.pins(known)
         loads = self.loads(known)
+        masses = self.masses(points, sliders)
+        gravity = self.gravity()
         tolerance, answers = self.answers(known, sliders, pins, loads)
         self.connected(links, points, sliders, ground, inp, cylinders, rolling)
         if len(known) > MAX_POINTS:
@@ -549,7 +552,7 @@ class _Loader(_Tables, _Input, _Variants):
                      tolerance=tolerance, file=self.file, cylinders=tuple(cylinders),
                      source=source if isinstance(source, str) else None, variation=variation,
                      variant=variant, reading_notes=tuple(self.read_notes), _link_index=index,
-                     rolling=tuple(rolling),
+                     rolling=tuple(rolling), masses=tuple(masses), gravity=gravity,
                      _lines=tuple(self.lines))
 
     def scale(self):
@@ -644,6 +647,7 @@ def parse_answers(text: str, scene: Scene, file: str | None = None, *,
     loader.index = scene._link_index
     loader.cylinder_list = scene.cylinders
     loader.two_inputs = scene.input.second is not None
+    loader.scene_forces = scene.has_forces
     loader.rolling_pairs = scene.rolling
     tolerance, answers = loader.answers(set(scene.point_names), scene.sliders, scene.pins,
                                         scene.loads)

@@ -25,7 +25,7 @@ _ABSURD_SHORT = 1e-7
 
 TOP_KEYS = ("title", "source", "notes", "units", "ground", "links", "points", "sliders",
             "cylinders", "rolling", "assembly", "input", "pins", "loads", "answers", "variants",
-            "variant")
+            "variant", "masses", "gravity")
 INPUT_KEYS = ("crank", "angle", "speed", "acceleration")
 #: the kinds of quantity on which [input] may give the motion instead of the crank's speed
 #: (named as answer keys: ``omega_BC``, ``vs_B``, ``v_B``), with their rate's prefix
@@ -43,6 +43,10 @@ ANSWER_KINDS = {
     "rub": ("velocity", "pin", False),
     "vI": ("velocity", "wheel", False),
     "aI": ("acceleration", "wheel", False),
+    # the force analysis (a scene with [masses] or [gravity]): the size of the force at a
+    # pin joining two bodies, of a guide's normal force on its block
+    "F": ("force", "pin_force", False),
+    "N": ("force", "guide", False),
 }
 
 
@@ -294,11 +298,44 @@ class Pin:
 
 @dataclass(frozen=True)
 class Load:
-    """A force on a point (N), or a torque on a link (N m, ccw positive)."""
+    """A force on a point (N), or a torque on a link (N m, ccw positive). A gas force on a
+    piston is a force whose ``gas`` says how it was given: (pressure in Pa, area in m^2,
+    the words "0.5 N/mm^2 on a 100 mm bore"); the force is pressure times area."""
 
     target: str
     force: tuple[float, float] | None = None
     torque: float | None = None
+    gas: tuple | None = None
+
+
+@dataclass(frozen=True)
+class Mass:
+    """A body's mass (kg) for the force analysis: a link's (``body`` its key) or a slider
+    block's, a piston's (``body`` its point, ``block`` True). The centre of mass
+    ``G = P + lam (Q - P) + mu perp(Q - P)`` on the link (``P``, ``Q`` its joint points, as a
+    carried point's); a block's is its point. ``inertia``: the moment of inertia about G
+    (kg m^2; ``m k^2`` when the radius of gyration ``k`` was given). ``how``: the words of
+    the centre and of the inertia, for the step table."""
+
+    body: str
+    mass: float
+    lam: float = 0.0
+    mu: float = 0.0
+    inertia: float = 0.0
+    block: bool = False
+    centre: str | None = None  # the point the scene named as the centre, or None
+    how: str = ""
+
+
+@dataclass(frozen=True)
+class Gravity:
+    """Gravity, when the scene states it (off otherwise): ``g`` (m/s^2) along unit
+    ``direction`` (straight down, (0, -1), unless the scene turns it: a vertical engine
+    drawn lying down)."""
+
+    g: float
+    direction: tuple
+    text: str = ""
 
 
 @dataclass(frozen=True)
@@ -333,6 +370,10 @@ class Scene:
     cylinders: tuple = ()
     #: wheels and gears rolling without slip (the scene's [rolling])
     rolling: tuple = ()
+    #: the bodies' masses (:class:`Mass`) and gravity (:class:`Gravity` or None), for the
+    #: force analysis; a scene without them is solved for its motion alone, as before
+    masses: tuple = ()
+    gravity: Gravity | None = None
     #: where the problem comes from (the scene's ``source``), for headings
     source: str | None = field(default=None, compare=False)
     #: the scene's [variants] (what may vary per student), and [variant] (which one it is)
@@ -436,6 +477,15 @@ class Scene:
     def slots(self, point: str) -> tuple:
         """Every slider record at ``point``: one for a block, two for a peg in two slots."""
         return tuple(s for s in self.sliders if s.point == point)
+
+    def mass_of(self, body: str):
+        """The :class:`Mass` of a link (its key) or of a block (its point), or None."""
+        return next((m for m in self.masses if m.body == body), None)
+
+    @property
+    def has_forces(self) -> bool:
+        """Whether the scene asks for the force analysis: it gives masses or gravity."""
+        return bool(self.masses) or self.gravity is not None
 
     def rolling_of(self, point: str):
         """The rolling pair whose wheel has ``point`` as its rim point, or None."""

@@ -71,74 +71,83 @@ class _Tables:
                 raise self.error(f"{name} is a joint of link {link.key}; it cannot also be "
                                  "carried on it", "points", name)
             frame = local.setdefault(link.key, {link.p: (0.0, 0.0), link.q: (link.length, 0.0)})
-            has_along, has_dist = "along" in spec, "distances" in spec
-            if has_along == has_dist:
-                raise self.error("give either along (with an optional from) or distances "
-                                 "with turn", "points", name)
-            if has_along:
-                start = spec.get("from", pts[0])
-                if start not in link.points:
-                    raise self.error(f"from = {start!r} is not an end of {link.key}",
-                                     "points", name)
-                if "turn" in spec:
-                    raise self.error("turn goes with distances, not with along", "points", name)
-                d = self.length(spec["along"], "points", name, positive=False)
-                sx, sy = frame[start]
-                ox, oy = frame[link.other(start)]
-                t = d / link.length
-                xy = (sx + t * (ox - sx), sy + t * (oy - sy))
-                spread, source = 0.0, ("along", start, d)
-                far = link.other(start)
-                where = (f"{spec['on']} produced beyond {start}" if d < 0 else
-                         f"{spec['on']} produced beyond {far}" if d > link.length else
-                         spec['on'])
-                how = f"on {where}, {self._words(abs(d))} from {start}"
-            else:
-                dist = spec["distances"]
-                if not isinstance(dist, dict) or len(dist) != 2:
-                    raise self.error("distances names two points of the link, e.g. "
-                                     "{ B = 45, C = 30 }", "points", name)
-                turn = spec.get("turn")
-                if turn not in ("cw", "ccw"):
-                    raise self.error("turn = \"cw\" or \"ccw\": how the triangle (the two "
-                                     "points of distances, then this point) reads", "points",
-                                     name)
-                (r1, d1), (r2, d2) = dist.items()
-                for r in (r1, r2):
-                    if r not in frame:
-                        raise self.error(f"{r} is not a point of link {link.key}", "points",
-                                         name)
-                d1 = self.length(d1, "points", name)
-                d2 = self.length(d2, "points", name)
-                (x1, y1), (x2, y2) = frame[r1], frame[r2]
-                e = math.hypot(x2 - x1, y2 - y1)
-                u = self.scale()
-                if d1 + d2 < e * (1 - 1e-12) or abs(d1 - d2) > e * (1 + 1e-12):
-                    if d1 + d2 < e:
-                        why = (f"{r1}{name} + {r2}{name} = {(d1 + d2) / u:g} < {r1}{r2} = "
-                               f"{e / u:g} {self.unit}")
-                    else:
-                        why = (f"|{r1}{name} - {r2}{name}| = {abs(d1 - d2) / u:g} > {r1}{r2} = "
-                               f"{e / u:g} {self.unit}")
-                    raise self.error(f"the triangle {r1}{r2}{name} cannot close: {why}",
-                                     "points", name)
-                # the height by Heron's formula in a stable form (never cancelled to 0
-                # on a nearly flat triangle), and how far the rounding of the distances
-                # and of the points it is set out from may move the point
-                along, h, spread = apex(d1, d2, e)
-                gain = 1.0 + (d1 + d2) / e
-                spread += gain * (spreads.get(r1, 0.0) + spreads.get(r2, 0.0))
-                source = ("distances", r1, d1, r2, d2, 1 if turn == "ccw" else -1)
-                ex, ey = (x2 - x1) / e, (y2 - y1) / e
-                sign = 1.0 if turn == "ccw" else -1.0
-                xy = (x1 + along * ex - sign * h * ey, y1 + along * ey + sign * h * ex)
-                how = (f"on {spec['on']}, {r1}{name} = {self._words(d1)}, {r2}{name} = "
-                       f"{self._words(d2)}, {r1}{r2}{name} read {turn}")
+            xy, how, spread, source = self.on_link(spec, link, pts, frame, "points", name,
+                                                   spreads)
             frame[name] = xy
             L = link.length
             spreads[name] = spread
             out.append(CarriedPoint(name, link.key, xy[0] / L, xy[1] / L, how, spread, source))
         return out
+
+    def on_link(self, spec, link, pts, frame, table, name, spreads=None):
+        """(x, y) in the link's frame (P at 0, Q at (L, 0); ``frame`` the points known in
+        it) of a place given as ``along`` (with ``from``) or ``distances`` with ``turn``, the
+        words of it, how far the rounding of its distances and of the points it is set out
+        from (``spreads``, by name) may move it, and how it was given (``source``)."""
+        spreads = spreads or {}
+        on = spec.get("on", link.key)
+        has_along, has_dist = "along" in spec, "distances" in spec
+        if has_along == has_dist:
+            raise self.error("give either along (with an optional from) or distances "
+                             "with turn", table, name)
+        if has_along:
+            start = spec.get("from", pts[0])
+            if start not in link.points:
+                raise self.error(f"from = {start!r} is not an end of {link.key}",
+                                 table, name)
+            if "turn" in spec:
+                raise self.error("turn goes with distances, not with along", table, name)
+            d = self.length(spec["along"], table, name, positive=False)
+            sx, sy = frame[start]
+            ox, oy = frame[link.other(start)]
+            t = d / link.length
+            xy = (sx + t * (ox - sx), sy + t * (oy - sy))
+            spread, source = 0.0, ("along", start, d)
+            far = link.other(start)
+            where = (f"{on} produced beyond {start}" if d < 0 else
+                     f"{on} produced beyond {far}" if d > link.length else
+                     on)
+            how = f"on {where}, {self._words(abs(d))} from {start}"
+        else:
+            dist = spec["distances"]
+            if not isinstance(dist, dict) or len(dist) != 2:
+                raise self.error("distances names two points of the link, e.g. "
+                                 "{ B = 45, C = 30 }", table, name)
+            turn = spec.get("turn")
+            if turn not in ("cw", "ccw"):
+                raise self.error("turn = \"cw\" or \"ccw\": how the triangle (the two "
+                                 "points of distances, then this point) reads", table, name)
+            (r1, d1), (r2, d2) = dist.items()
+            for r in (r1, r2):
+                if r not in frame:
+                    raise self.error(f"{r} is not a point of link {link.key}", table, name)
+            d1 = self.length(d1, table, name)
+            d2 = self.length(d2, table, name)
+            (x1, y1), (x2, y2) = frame[r1], frame[r2]
+            e = math.hypot(x2 - x1, y2 - y1)
+            u = self.scale()
+            if d1 + d2 < e * (1 - 1e-12) or abs(d1 - d2) > e * (1 + 1e-12):
+                if d1 + d2 < e:
+                    why = (f"{r1}{name} + {r2}{name} = {(d1 + d2) / u:g} < {r1}{r2} = "
+                           f"{e / u:g} {self.unit}")
+                else:
+                    why = (f"|{r1}{name} - {r2}{name}| = {abs(d1 - d2) / u:g} > {r1}{r2} = "
+                           f"{e / u:g} {self.unit}")
+                raise self.error(f"the triangle {r1}{r2}{name} cannot close: {why}",
+                                 table, name)
+            # the height by Heron's formula in a stable form (never cancelled to 0 on a
+            # nearly flat triangle), and how far the rounding of the distances and of the
+            # points it is set out from may move the point
+            along, h, spread = apex(d1, d2, e)
+            gain = 1.0 + (d1 + d2) / e
+            spread += gain * (spreads.get(r1, 0.0) + spreads.get(r2, 0.0))
+            source = ("distances", r1, d1, r2, d2, 1 if turn == "ccw" else -1)
+            ex, ey = (x2 - x1) / e, (y2 - y1) / e
+            sign = 1.0 if turn == "ccw" else -1.0
+            xy = (x1 + along * ex - sign * h * ey, y1 + along * ey + sign * h * ex)
+            how = (f"on {on}, {r1}{name} = {self._words(d1)}, {r2}{name} = "
+                   f"{self._words(d2)}, {r1}{r2}{name} read {turn}")
+        return xy, how, spread, source
 
     def sliders(self, index, ground, carried):
         out = []
@@ -410,10 +419,13 @@ class _Tables:
                 raise self.error("a load is { force = \"2 kN\", direction = 0 }, { force = "
                                  "[Fx, Fy] } or, on a link, { torque = \"20 N m cw\" }",
                                  "loads", name)
-            allowed = ("force", "direction", "torque")
+            allowed = ("force", "direction", "torque", "pressure", "bore", "rod")
             for k in spec:
                 if k not in allowed:
                     raise self.error(f"unknown key '{k}'{_suggest(k, allowed)}", "loads", name)
+            if "pressure" in spec or "bore" in spec or "rod" in spec:
+                out.append(self.gas_load(name, spec))
+                continue
             if "torque" in spec:
                 if "force" in spec or "direction" in spec:
                     raise self.error("a torque acts on a link, a force at a point: give the "
@@ -450,6 +462,40 @@ class _Tables:
                 fx, fy = mag * ux, mag * uy
             out.append(Load(name, force=(fx, fy)))
         return out
+
+    def gas_load(self, name, spec):
+        """A gas force on a piston: pressure times the piston's area (the bore's circle, less
+        the piston rod's on the crank side of a double-acting cylinder), along
+        ``direction``."""
+        if name not in self.slider_points:
+            raise self.error(f"a gas pressure acts on a piston: {name} is no slider",
+                             "loads", name)
+        for k in ("pressure", "bore", "direction"):
+            if k not in spec:
+                raise self.error(f"a gas force needs pressure, bore and direction (the way "
+                                 f"the gas pushes the piston, deg ccw from +x): no {k}",
+                                 "loads", name)
+        if "force" in spec or "torque" in spec:
+            raise self.error("give the gas force by pressure and bore, or a force, not both",
+                             "loads", name)
+        p = self.qty(spec["pressure"], "pressure", "loads", name).value
+        bore = self.length(spec["bore"], "loads", name)
+        area = math.pi / 4 * bore * bore
+        words = f"{spec['pressure']} on a {self._words(bore)} bore"
+        if "rod" in spec:
+            rod = self.length(spec["rod"], "loads", name)
+            if rod >= bore:
+                raise self.error(f"the piston rod ({self._words(rod)}) must be thinner than "
+                                 f"the bore ({self._words(bore)})", "loads", name)
+            area -= math.pi / 4 * rod * rod
+            words += f" less a {self._words(rod)} rod"
+        book = self.book_angle(spec["direction"], "direction", "loads", name,
+                               f"direction of the gas force at {name}")
+        ang = book.value if book is not None else self.qty(
+            spec["direction"], "angle", "loads", name, default_unit="deg").value
+        ux, uy = _unit_at(ang)
+        f = p * area
+        return Load(name, force=(f * ux, f * uy), gas=(p, area, words))
 
     def answers(self, known, sliders, pins, loads):
         spec = self.table("answers")
@@ -496,9 +542,13 @@ class _Tables:
 
     def answer(self, key, value, known, slider_names, pin_names, loads):
         line = self.line_of("answers", key)
+        forces = getattr(self, "scene_forces", None)  # an answer file: its scene's
+        if forces is None:
+            forces = bool(self.raw.get("masses")) or "gravity" in self.raw
         if key == "torque":
-            if not loads:
-                raise self.error("a torque answer needs [loads] to balance", "answers", key)
+            if not loads and not forces:
+                raise self.error("a torque answer needs [loads] to balance, or [masses]",
+                                 "answers", key)
             if getattr(self, "two_inputs", False):
                 raise self.error("with two inputs one power balance does not give the two "
                                  "driving torques: no torque answer", "answers", key)
@@ -513,8 +563,12 @@ class _Tables:
                         "rub_B", "torque"]
             raise self.error(f"unknown answer key{_suggest(key, examples)}; keys are v_X, "
                              "a_X, v_XY, a_XY, omega_L, alpha_L, vs_X, as_X, ac_X, rub_X, "
-                             "torque, I_ij (a centre), vI_L, aI_L (a wheel's contact point)", "answers", key)
+                             "torque, I_ij (a centre), vI_L, aI_L (a wheel's contact point), "
+                             "F_X, N_X (forces)", "answers", key)
         kind, what, sense_ok = ANSWER_KINDS[prefix]
+        if what in ("pin_force", "guide") and not forces:
+            raise self.error(f"{key}: a force answer needs the force analysis: give "
+                             "[masses] or [gravity]", "answers", key)
         names = (rest,) if what == "slider" and rest in slider_names else split_name(rest)
         if not names:
             raise self.error(f"'{rest}' is not a point or link name", "answers", key)
@@ -549,6 +603,14 @@ class _Tables:
             if lk is None or lk.key not in wheels:
                 raise self.error(f"{prefix}_{rest}: {rest} is no wheel of [rolling] (the key "
                                  "names a rolling wheel's link, e.g. aI_CP)", "answers", key)
+        elif what == "pin_force":
+            if len(names) != 1 or names[0] not in known:
+                raise self.error(f"F_X names a pin: no point {rest} in the scene"
+                                 f"{_which_point(rest, known)}", "answers", key)
+        elif what == "guide":
+            if len(names) != 1 or names[0] not in slider_names:
+                raise self.error(f"N_X names a slider's block: no slider {rest} in "
+                                 "[sliders]", "answers", key)
         elif what == "pin":
             if len(names) != 1 or names[0] not in pin_names:
                 raise self.error(f"rubbing at {rest} needs its size in [pins]", "answers", key)

@@ -68,7 +68,8 @@ _QUESTION_WORDS = {"v": "the velocity of {0}", "a": "the acceleration of {0}",
                    "ac": "the Coriolis component at {0}", "rub": "the rubbing velocity at pin {0}",
                    "torque": "the input torque on the crank",
                    "vI": "the velocity of the point of wheel {0} in contact",
-                   "aI": "the acceleration of the point of wheel {0} in contact"}
+                   "aI": "the acceleration of the point of wheel {0} in contact",
+                   "F": "the force at pin {0}", "N": "the guide's normal force on block {0}"}
 
 
 def _question(q) -> str:

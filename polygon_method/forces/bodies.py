@@ -1,0 +1,114 @@
+"""Each body's inertia and the loads on it, gathered as resultants before the pin forces
+are solved.
+
+A body's known forces are kept as one resultant ``(Fx, Fy, M)``, ``M`` about the frame's
+origin: a force ``F`` at ``r`` adds ``F`` and ``cross(r, F)``, a couple ``C`` adds ``C``.
+The moment about another point ``B`` is then ``M - cross(B, F)``.
+"""
+
+from __future__ import annotations
+
+from .records import FRAME, Inertia, block
+
+
+class Singular(Exception):
+    """A force step's equations have no unique solution here (its words: why)."""
+
+
+def any_zero(x) -> bool:
+    """Whether ``x`` (a float, or an array over a sweep) is exactly zero anywhere."""
+    z = x == 0
+    return bool(z) if isinstance(z, bool) else bool(z.any())
+
+
+def cross(ax, ay, bx, by):
+    """``a x b`` (the z-component)."""
+    return ax * by - ay * bx
+
+
+def centre(P, lam, mu, p, q):
+    """``p + lam (q - p) + mu perp(q - p)`` (a point carried on a link, its image on the
+    velocity and the acceleration polygons alike)."""
+    (px, py), (qx, qy) = P[p], P[q]
+    dx, dy = qx - px, qy - py
+    return (px + lam * dx - mu * dy, py + lam * dy + mu * dx)
+
+
+def inertia_record(body, mass, inertia, G, a_G, alpha, how=""):
+    """:class:`Inertia`: ``-m a_G``, ``-I alpha`` and the offset ``I alpha / (m |a_G|)``."""
+    fx, fy = -mass * a_G[0], -mass * a_G[1]
+    f = (fx * fx + fy * fy) ** 0.5
+    couple = -inertia * alpha
+    if isinstance(f, float):
+        offset = inertia * alpha / f if f > 0 else None
+    else:  # a sweep (arrays): the force and the couple; no single line
+        offset = None
+    return Inertia(body, mass, inertia, G, a_G, alpha, (fx, fy), couple, offset, how)
+
+
+class Ledger:
+    """The resultants of the known forces on each body, filled as the solution goes on."""
+
+    def __init__(self):
+        self.total = {}
+        self.applied = {}
+
+    def add(self, body, fx, fy, x, y, what=None):
+        """A force ``(fx, fy)`` acting at ``(x, y)`` on ``body``."""
+        t = self.total.get(body, (0.0, 0.0, 0.0))
+        self.total[body] = (t[0] + fx, t[1] + fy, t[2] + cross(x, y, fx, fy))
+        if what is not None:
+            self.applied.setdefault(body, []).append((what, (fx, fy), (x, y)))
+
+    def couple(self, body, c, what=None):
+        t = self.total.get(body, (0.0, 0.0, 0.0))
+        self.total[body] = (t[0], t[1], t[2] + c)
+        if what is not None:
+            self.applied.setdefault(body, []).append((what, c))
+
+    def of(self, body):
+        """``(Fx, Fy, M about the origin)`` known on ``body``."""
+        return self.total.get(body, (0.0, 0.0, 0.0))
+
+
+def gather(scene, motion, owner):
+    """(inertia records, the :class:`Ledger` of inertia, weights and loads per body).
+
+    ``owner``: point -> the body a load at that point acts on (the frame for a ground
+    point: a load there is not the mechanism's)."""
+    P, A, Al = motion.P, motion.A, motion.Al
+    grav = scene.gravity
+    led = Ledger()
+    records = []
+    fixed = {lk.key for lk in scene.links if lk.p in scene.ground and lk.q in scene.ground}
+    for m in scene.masses:
+        if m.body in fixed:  # a part of the frame: it neither moves nor loads the mechanism
+            continue
+        if m.block:
+            G, a_G, alpha, body = P[m.body], A[m.body], 0.0, block(m.body)
+        else:
+            lk = scene.link(m.body)
+            G = centre(P, m.lam, m.mu, lk.p, lk.q)
+            a_G = centre(A, m.lam, m.mu, lk.p, lk.q)
+            alpha, body = Al[lk.key], lk.key
+        rec = inertia_record(body, m.mass, m.inertia, G, a_G, alpha, m.how)
+        records.append(rec)
+        led.add(body, rec.force[0], rec.force[1], G[0], G[1])
+        led.couple(body, rec.couple)
+        if grav is not None:
+            w = m.mass * grav.g
+            led.add(body, w * grav.direction[0], w * grav.direction[1], G[0], G[1],
+                    f"weight of {body}")
+    for ld in scene.loads:
+        if ld.force is not None:
+            body = owner.get(ld.target, FRAME)
+            if body == FRAME:
+                continue
+            x, y = P[ld.target]
+            led.add(body, ld.force[0], ld.force[1], x, y,
+                    f"gas force at {ld.target}" if ld.gas else f"load at {ld.target}")
+            if ld.gas:  # the gas pushes the cylinder's cover (the frame) as hard, back
+                led.add(FRAME, -ld.force[0], -ld.force[1], x, y)  # along the same line
+        else:
+            led.couple(ld.target, ld.torque, f"couple on {ld.target}")
+    return tuple(records), led

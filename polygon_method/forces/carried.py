@@ -1,0 +1,12 @@
+"""A point carried on a link needs no force step: its loads and the pins of the links
+found from it act on the link that carries it."""
+
+from __future__ import annotations
+
+
+def owns(st) -> dict:
+    return {st.point: st.link}
+
+
+def step(st, P, led, own):
+    return (), (), None, None

@@ -1,0 +1,45 @@
+"""The force step of the crank: the last one solved. The frame holds it at its pivot O
+and its driver turns it with the torque T; every other force on it is known by now::
+
+    R_O = -F            (the frame's force on the crank at O)
+    T = -(M - cross(O, F))      (the moments about O balance)
+
+>>> solve(0.0, 0.0, (3.0, 4.0, 2.0))
+((-3.0, -4.0), -2.0)
+"""
+
+from __future__ import annotations
+
+from .bodies import cross
+from ..numbers import fmt
+from .records import FRAME, ForceStep, PinForce
+
+
+def solve(ox, oy, known):
+    """(the frame's force on the crank at O, the driving torque T, ccw positive)."""
+    fx, fy, m = known
+    return (-fx, -fy), -(m - cross(ox, oy, fx, fy))
+
+
+def owns(st) -> dict:
+    """The crank's tip acts, for loads and later pins, on the crank."""
+    return {st.tip: st.link}
+
+
+def step(st, P, led, own):
+    """The frame's force at the pivot and the driving torque. Returns as
+    :func:`.dyad.step`."""
+    k = led.of(st.link)
+    ox, oy = P[st.pivot]
+    r, torque = solve(ox, oy, k)
+    led.add(FRAME, -r[0], -r[1], ox, oy)
+    eq = ()
+    if isinstance(torque, float):
+        O = st.pivot
+        eq = (f"moments about {O}: T + M_{O} = 0, M_{O} = {fmt(-torque)} N m the known "
+              f"forces' moment: T = {fmt(torque)} N m",
+              f"forces: F_{O} = -(the known forces) = ({fmt(r[0])}, {fmt(r[1])}) N")
+    rec = ForceStep(st.index, "crank", st.title, (st.link,), (k,),
+                    ((f"F_{st.pivot} on {st.link} by the frame", r),
+                     (f"T on {st.link}", torque)), 1.0, "", eq)
+    return (PinForce(st.pivot, st.link, FRAME, r),), (), rec, torque

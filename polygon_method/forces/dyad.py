@@ -1,0 +1,93 @@
+"""The force step of a dyad (RRR): links 1 (B-C) and 2 (D-C) pinned together at C, B and D
+on bodies already solved for their motion.
+
+Unknown: ``P``, the force on link 1 at C by link 2 (link 2 feels ``-P``). The moments of
+each link about its other end, where the unknown pin forces at B and D have no arm::
+
+    cross(C - B, P) + M1_B = 0          (link 1 about B)
+    cross(C - D, -P) + M2_D = 0         (link 2 about D)
+
+with ``M1_B``, ``M2_D`` the moments of the known forces on each link about that end. A 2x2
+system whose determinant is ``cross(C - B, C - D)``: zero when B, C, D are in a line (the
+dyad's dead point, where the kinematics is singular too). Then each link's force balance
+gives its end's pin force: on link 1 at B ``-(F1 + P)``, on link 2 at D ``-(F2 - P)``.
+
+A weight of 1 N at C = (1, 1) on link 1 from B = (0, 0); link 2 stands upright on
+D = (1, 0) and takes it all (the joint's triangle of forces: link 1 carries none):
+
+>>> P, FB, FD, c = solve(0.0, 0.0, (0.0, -1.0, -1.0), 1.0, 0.0, (0.0, 0.0, 0.0), 1.0, 1.0)
+>>> [round(v, 12) + 0.0 for v in P + FB + FD]
+[0.0, 1.0, 0.0, 0.0, 0.0, 1.0]
+"""
+
+from __future__ import annotations
+
+from .bodies import Singular, any_zero, cross
+from ..numbers import fmt
+from .records import ForceStep, PinForce
+
+
+def solve(bx, by, known1, dx, dy, known2, cx, cy):
+    """(P on link 1 at C by link 2, the force on link 1 at B, the force on link 2 at D,
+    the condition ``|cross(C - B, C - D)| / (|C - B| |C - D|)``); floats, or arrays over a
+    sweep.
+
+    ``known1``, ``known2``: ``(Fx, Fy, M)`` of the known forces on each link, M about the
+    origin."""
+    f1x, f1y, m1 = known1
+    f2x, f2y, m2 = known2
+    m1b = m1 - cross(bx, by, f1x, f1y)  # about B
+    m2d = m2 - cross(dx, dy, f2x, f2y)  # about D
+    r1x, r1y = cx - bx, cy - by
+    r2x, r2y = cx - dx, cy - dy
+    det = cross(r1x, r1y, r2x, r2y)
+    size = ((r1x * r1x + r1y * r1y) * (r2x * r2x + r2y * r2y)) ** 0.5  # links: never 0
+    cond = abs(det) / size
+    if any_zero(det):
+        return None, None, None, 0.0
+    # -r1y Px + r1x Py = -M1_B ;  -r2y Px + r2x Py = M2_D
+    px = (-m1b * r2x - r1x * m2d) / det
+    py = (-r1y * m2d - m1b * r2y) / det
+    return (px, py), (-(f1x + px), -(f1y + py)), (-(f2x - px), -(f2y - py)), cond
+
+
+def owns(st) -> dict:
+    """The point the step finds acts, for loads and later pins, on its first link."""
+    return {st.point: st.link1}
+
+
+def step(st, P, led, own):
+    """Solve the step's pin forces from the ledger; enter the reactions on the bodies at B
+    and D. Returns (pin forces, guide forces, :class:`ForceStep`, driving torque or None)."""
+    l1, l2 = st.link1, st.link2
+    k1, k2 = led.of(l1), led.of(l2)
+    (bx, by), (dx, dy), (cx, cy) = P[st.b], P[st.d], P[st.point]
+    p, fb, fd, cond = solve(bx, by, k1, dx, dy, k2, cx, cy)
+    if p is None:
+        raise Singular(f"{st.b}, {st.point} and {st.d} are in a line")
+    ob, od = own[st.b], own[st.d]
+    pins = (PinForce(st.point, l1, l2, p), PinForce(st.b, l1, ob, fb),
+            PinForce(st.d, l2, od, fd))
+    led.add(ob, -fb[0], -fb[1], bx, by)
+    led.add(od, -fd[0], -fd[1], dx, dy)
+    eq = ()
+    if isinstance(cond, float):  # one instant: the working in words
+        X, B, D = st.point, st.b, st.d
+        m1b = k1[2] - cross(bx, by, k1[0], k1[1])
+        m2d = k2[2] - cross(dx, dy, k2[0], k2[1])
+        eq = (f"moments of {l1} about {B}: ({X} - {B}) x F_{X} + M_{B} = 0, with M_{B} = "
+              f"{fmt(m1b)} N m the known forces' moment",
+              f"moments of {l2} about {D}: ({X} - {D}) x (-F_{X}) + M_{D} = 0, with M_{D} = "
+              f"{fmt(m2d)} N m",
+              f"the two together: F_{X} = ({fmt(p[0])}, {fmt(p[1])}) N, the force on {l1} "
+              f"by {l2}",
+              f"forces on {l1}: F_{B} = -(the known forces + F_{X}) = ({fmt(fb[0])}, "
+              f"{fmt(fb[1])}) N",
+              f"forces on {l2}: F_{D} = -(the known forces - F_{X}) = ({fmt(fd[0])}, "
+              f"{fmt(fd[1])}) N")
+    rec = ForceStep(st.index, "dyad", st.title, (l1, l2), (k1, k2),
+                    ((f"F_{st.point} on {l1} by {l2}", p), (f"F_{st.b} on {l1} by {ob}", fb),
+                     (f"F_{st.d} on {l2} by {od}", fd)), cond,
+                    f"sine of the angle at {st.point} between {st.point}{st.b} and "
+                    f"{st.point}{st.d}", eq)
+    return pins, (), rec, None

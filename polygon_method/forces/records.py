@@ -1,0 +1,193 @@
+"""The force analysis' records (SI, counter-clockwise positive).
+
+Sign rule: a pin force is the force *on* one body *by* the other at the pin; the other body
+feels its opposite. A body is a link (its key), a slider block (``block B``) or the frame
+(``frame``). Moments are taken about the frame's origin unless a record says otherwise.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..errors import SceneError
+
+FRAME = "frame"
+
+
+def block(point: str) -> str:
+    """The body name of the slider block at ``point``: ``block B``."""
+    return f"block {point}"
+
+
+@dataclass(frozen=True)
+class Inertia:
+    """D'Alembert's inertia of one body: the force ``-m a_G`` at G and the couple
+    ``-I alpha``; or, as a book draws it, the force alone along a line offset from G by
+    ``h = I alpha / (m |a_G|)``: its point ``G + offset perp(F/|F|)`` (``offset`` signed,
+    ``perp`` turning 90 deg ccw), whose moment about G is the couple
+    (``cross(offset perp(F/|F|), F) = -offset |F| = -I alpha``). ``offset`` is None where
+    ``a_G = 0`` (the couple alone, no single force)."""
+
+    body: str
+    mass: float
+    inertia: float
+    G: tuple
+    a_G: tuple
+    alpha: float
+    force: tuple
+    couple: float
+    offset: float | None
+    how: str = ""
+
+    @property
+    def offset_point(self):
+        """The point of the single resultant's line nearest G, or None."""
+        if self.offset is None:
+            return None
+        fx, fy = self.force
+        f = (fx * fx + fy * fy) ** 0.5
+        return (self.G[0] - self.offset * fy / f, self.G[1] + self.offset * fx / f)
+
+
+@dataclass(frozen=True)
+class PinForce:
+    """The force (N) on body ``on`` by body ``by`` at pin ``point``."""
+
+    point: str
+    on: str
+    by: str
+    force: tuple
+
+    @property
+    def magnitude(self) -> float:
+        return (self.force[0] ** 2 + self.force[1] ** 2) ** 0.5
+
+
+@dataclass(frozen=True)
+class GuideForce:
+    """The guide's normal force on the block at ``point``: ``normal`` (N) along the unit
+    ``n`` (the path's direction turned 90 deg ccw), acting through the block's pin (a
+    frictionless guide; the block's loads all pass through its pin, so the guide adds no
+    couple)."""
+
+    point: str
+    normal: float
+    n: tuple
+
+    @property
+    def force(self) -> tuple:
+        return (self.normal * self.n[0], self.normal * self.n[1])
+
+
+@dataclass(frozen=True)
+class ForceStep:
+    """One step of the force solution, in the order solved (the kinematic plan's, reversed):
+    ``kind`` (crank, dyad, slider), ``title``, ``bodies`` and, for each body, the resultant
+    ``(Fx, Fy, M)`` of what was known on it before the step (inertia, weight, loads, the
+    forces of the bodies solved before; M about the frame's origin), the unknowns found
+    (name -> value), the ``condition`` of its equations (1 best, 0 singular) and ``why``
+    (what the condition measures); ``equations`` its working in words.
+
+    A sweep's records hold arrays and no words."""
+
+    index: int
+    kind: str
+    title: str
+    bodies: tuple
+    known: tuple
+    found: tuple
+    condition: float
+    why: str = ""
+    #: the step's equations with their numbers, in the book's words (SI)
+    equations: tuple = ()
+
+
+@dataclass(frozen=True)
+class Forces:
+    """The force analysis at one instant.
+
+    ``inertia`` (:class:`Inertia` per massive body), ``pins`` (:class:`PinForce`, one per
+    pair of bodies at a pin, in the order solved), ``guides`` (:class:`GuideForce`),
+    ``input_torque`` (N m, on the crank by its driver, ccw positive, inertia included),
+    ``shaking_force`` (the resultant force the mechanism exerts on the frame, through its
+    pins and guides, and a gas force's push on the cylinder's cover: the gas acts between
+    the piston and the frame) and ``shaking_moment`` (its moment about the frame's origin, with the
+    driver's reaction ``-input_torque`` on the frame), ``steps`` (:class:`ForceStep`).
+    ``applied``: body -> the loads and weights on it, (what, (Fx, Fy), point) and (what,
+    couple) entries."""
+
+    inertia: tuple
+    pins: tuple
+    guides: tuple
+    input_torque: float
+    shaking_force: tuple
+    shaking_moment: float
+    steps: tuple
+    applied: dict
+    crank: str
+
+    def pin(self, point: str, on: str, by: str | None = None):
+        """The force on body ``on`` at ``point`` (by ``by``, when the pin joins more than two
+        bodies); the opposite of the stored record where the pair is stored the other way."""
+        for p in self.pins:
+            if p.point != point:
+                continue
+            if p.on == on and (by is None or p.by == by):
+                return p.force
+            if p.by == on and (by is None or p.on == by):
+                return (-p.force[0], -p.force[1])
+        raise KeyError((point, on, by))
+
+    def inertia_of(self, body: str):
+        return next((i for i in self.inertia if i.body == body), None)
+
+
+def force_value(f: Forces, kind: str, name: str) -> float:
+    """The size of what an answer key names: ``F`` the force at pin ``name`` (a pin joining
+    two bodies), ``N`` the guide's normal force on the block at ``name``."""
+    if kind == "N":
+        g = next((g for g in f.guides if g.point == name), None)
+        if g is None:
+            raise SceneError(f"N_{name}: the block at {name} is on no fixed path")
+        return abs(g.normal)
+    found = [p for p in f.pins if p.point == name]
+    if len(found) != 1:
+        raise SceneError(f"F_{name}: " + (f"no pin joins two bodies at {name}" if not found
+                         else f"the pin at {name} joins more than two bodies ("
+                         + ", ".join(sorted({b for p in found for b in (p.on, p.by)}))
+                         + "): its forces are in solve's table"))
+    return found[0].magnitude
+
+
+def _vec(v):
+    return [v[0] + 0.0, v[1] + 0.0]  # + 0.0: no -0.0 in the JSON
+
+
+def forces_dict(f: Forces) -> dict:
+    """The ``forces`` entry of ``solve --json`` (SI, ccw positive; the sign rule in
+    ``convention``)."""
+    pins = {}
+    for p in f.pins:
+        pins.setdefault(p.point, []).append({"on": p.on, "by": p.by, "force": _vec(p.force),
+                                             "magnitude": p.magnitude})
+    return {
+        "convention": "SI, counter-clockwise positive; a pin's force is the force on body "
+                      "'on' by body 'by' (body 'by' feels its opposite); moments about the "
+                      "frame's origin",
+        "bodies": {i.body: {"mass": i.mass, "moment_of_inertia": i.inertia,
+                            "centre_of_mass": _vec(i.G),
+                            "acceleration_of_centre": _vec(i.a_G),
+                            "inertia_force": _vec(i.force), "inertia_couple": i.couple + 0.0,
+                            "offset": i.offset,
+                            "offset_point": None if i.offset is None else _vec(i.offset_point)}
+                   for i in f.inertia},
+        "pins": pins,
+        "guides": {g.point: {"normal_force": g.normal + 0.0, "normal": _vec(g.n),
+                             "force": _vec(g.force)} for g in f.guides},
+        "input_torque": f.input_torque + 0.0,
+        "crank": f.crank,
+        "shaking_force": _vec(f.shaking_force),
+        "shaking_moment": f.shaking_moment + 0.0,
+        "steps": [{"step": s.index + 1, "kind": s.kind, "title": s.title,
+                   "condition": s.condition} for s in f.steps],
+    }

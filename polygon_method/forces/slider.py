@@ -1,0 +1,90 @@
+"""The force step of a slider dyad (RRP): a link B-X whose end X is pinned to a block
+sliding on a fixed, frictionless path (unit ``u``; its normal ``n = perp(u)``).
+
+Unknowns: ``P``, the force on the link at X by the block, and ``N``, the guide's normal
+force on the block along ``n``. The block's loads pass through X (its mass is at its pin),
+so its force balance is ``-P + N n + R = 0`` (R: the known forces on the block) and the
+guide adds no couple. The link's moments about B, where its other pin force has no arm::
+
+    cross(X - B, N n + R) + M_B = 0   =>   N = -(M_B + cross(X - B, R)) / cross(X - B, n)
+
+with ``cross(X - B, n) = (X - B) . u``: zero when the link stands square to the path.
+Then ``P = N n + R`` and the link's force balance gives the force on it at B, ``-(F + P)``.
+
+>>> N, P, FB, c = solve(0.0, 0.0, (0.0, 0.0, 0.0), 1.0, 0.0, (-1.0, 0.0, 0.0), (1.0, 0.0))
+>>> [round(v, 12) + 0.0 for v in (N,) + P + FB]   # 1 N pushing the block towards B
+[0.0, -1.0, 0.0, 1.0, 0.0]
+"""
+
+from __future__ import annotations
+
+from .bodies import Singular, any_zero, cross
+from ..numbers import fmt
+from .records import FRAME, ForceStep, GuideForce, PinForce, block
+
+
+def solve(bx, by, known_link, xx, xy, known_block, u):
+    """(N, P on the link at X by the block, the force on the link at B, the condition
+    ``|(X - B) . u| / |X - B|``).
+
+    ``known_link``: ``(Fx, Fy, M about the origin)`` on the link; ``known_block``: the same
+    on the block (its M is not used: its forces pass through X)."""
+    fx, fy, m = known_link
+    rx, ry = known_block[0], known_block[1]
+    ux, uy = u
+    nx, ny = -uy, ux
+    mb = m - cross(bx, by, fx, fy)
+    ex, ey = xx - bx, xy - by
+    den = ex * ux + ey * uy
+    size = (ex * ex + ey * ey) ** 0.5  # the link's length: never 0
+    cond = abs(den) / size
+    if any_zero(den):
+        return None, None, None, 0.0
+    n = -(mb + cross(ex, ey, rx, ry)) / den
+    px, py = n * nx + rx, n * ny + ry
+    return n, (px, py), (-(fx + px), -(fy + py)), cond
+
+
+def covers(st) -> bool:
+    """Only a block on a fixed path (a block on a moving link is not written yet)."""
+    return st.path is not None
+
+
+def owns(st) -> dict:
+    """The slider's point acts, for loads and later pins, on its block."""
+    return {st.point: block(st.point)}
+
+
+def step(st, P, led, own):
+    """Solve the link's and the block's forces; enter the reaction at B and the block's
+    push on the guide (the frame). Returns as :func:`.dyad.step`."""
+    lk, x = st.link, st.point
+    bl = block(x)
+    kl, kb = led.of(lk), led.of(bl)
+    (bx, by), (xx, xy) = P[st.b], P[x]
+    n, p, fb, cond = solve(bx, by, kl, xx, xy, kb, st.path.u)
+    if n is None:
+        raise Singular(f"{st.b}{x} stands square to the path")
+    ob = own[st.b]
+    ux, uy = st.path.u
+    g = GuideForce(x, n, (-uy, ux))
+    led.add(ob, -fb[0], -fb[1], bx, by)
+    led.add(FRAME, -g.force[0], -g.force[1], xx, xy)
+    eq = ()
+    if isinstance(cond, float):  # one instant: the working in words
+        B = st.b
+        mb = kl[2] - cross(bx, by, kl[0], kl[1])
+        ex, ey = xx - bx, xy - by
+        eq = (f"moments of {lk} about {B}: ({x} - {B}) x (N n + R) + M_{B} = 0, R = "
+              f"({fmt(kb[0])}, {fmt(kb[1])}) N the known forces on the block, M_{B} = "
+              f"{fmt(mb)} N m those on {lk}",
+              f"N = -(M_{B} + ({x} - {B}) x R) / (({x} - {B}) . u) = -({fmt(mb)} + "
+              f"{fmt(cross(ex, ey, kb[0], kb[1]))}) / {fmt(ex * ux + ey * uy)} = {fmt(n)} N",
+              f"the block: F_{x} = N n + R = ({fmt(p[0])}, {fmt(p[1])}) N on {lk}",
+              f"forces on {lk}: F_{B} = -(the known forces + F_{x}) = ({fmt(fb[0])}, "
+              f"{fmt(fb[1])}) N")
+    rec = ForceStep(st.index, "slider", st.title, (lk, bl), (kl, kb),
+                    ((f"N_{x} on {bl} by the guide", n), (f"F_{x} on {lk} by {bl}", p),
+                     (f"F_{st.b} on {lk} by {ob}", fb)), cond,
+                    f"cosine of the angle between {st.b}{x} and the path", eq)
+    return (PinForce(x, lk, bl, p), PinForce(st.b, lk, ob, fb)), (g,), rec, None

@@ -1,0 +1,760 @@
+"""The force analysis against independent references.
+
+- the power balance with inertia, ``T w + sum F.v + sum C w + sum m g.v_G - sum m a_G.v_G
+  - sum I alpha w = 0``, on every force problem (the worked problems and the textbook
+  corpus that the force analysis covers, each given masses, centres off the link's line,
+  gravity in a slanting direction, a load and a couple);
+- Newton-Euler on every body from the pin forces found (the sum of the forces equals
+  ``m a_G``, of the moments about G ``I alpha``), and on the whole mechanism (the shaking
+  force and moment from the loads, the weights and the inertia alone);
+- the engine chapter's closed forms (piston effort, thrust on the rod, side thrust, crank
+  effort, turning moment), derived here from the geometry, the piston's acceleration by
+  50-digit differentiation of its closed-form position;
+- a static case (gravity only): the torque that holds a four-bar is the derivative of its
+  potential energy, by 50-digit differentiation of the closed-form positions.
+
+G's velocity and acceleration are computed here from the links' end points (a point fixed
+on a rigid link), not read from the tool.
+"""
+
+from __future__ import annotations
+
+import glob
+import re
+import math
+import random
+from pathlib import Path
+
+import mpmath
+import pytest
+
+from polygon_method.compiler import compile_plan
+from polygon_method.errors import PolygonMethodError, SceneError
+from polygon_method.forces import FRAME, owners
+from polygon_method.scene import FixedPath, load_scene, parse_scene, scene_from_table, scene_table
+from polygon_method.solution import solve
+
+ROOT = Path(__file__).resolve().parent.parent
+FILES = sorted(glob.glob(str(ROOT / "worked_problems" / "*.toml"))) + \
+    sorted(glob.glob(str(ROOT / "tests" / "textbook" / "*.toml")))
+
+
+def _covered(scene):
+    try:
+        owners(scene, compile_plan(scene))
+    except PolygonMethodError:
+        return False
+    return True
+
+
+def _on_link(L, lam, mu, unit):
+    """distances (in the scene's unit) of the point (lam, mu) of a link from its ends."""
+    return (L * math.hypot(lam, mu) / unit, L * math.hypot(1 - lam, mu) / unit)
+
+
+def with_forces(scene, seed):
+    """The scene with masses on every moving link and block, gravity, a load and a couple."""
+    rnd = random.Random(seed)
+    raw = scene_table(scene)
+    unit = scene.length_unit
+    masses = {}
+    moving = [lk for lk in scene.links
+              if not (lk.p in scene.ground and lk.q in scene.ground)]
+    for lk in moving:
+        lam, mu = rnd.uniform(-0.2, 1.2), rnd.choice([-1, 1]) * rnd.uniform(0.05, 0.4)
+        d1, d2 = _on_link(lk.length, lam, mu, unit)
+        masses[lk.key] = {"mass": f"{rnd.uniform(0.5, 8):.4f} kg",
+                          "distances": {lk.p: d1, lk.q: d2},
+                          "turn": "ccw" if mu > 0 else "cw",
+                          "gyration": lk.length * rnd.uniform(0.1, 0.6) / unit}
+    for s in scene.sliders:
+        if isinstance(s, FixedPath) and not s.slot:
+            masses[s.point] = {"mass": f"{rnd.uniform(0.5, 8):.4f} kg"}
+    raw["masses"] = masses
+    raw["gravity"] = {"direction": rnd.uniform(0, 360), "g": "9.81 m/s^2"}
+    loads = dict(raw.get("loads", {}))
+    pts = [p for lk in moving for p in lk.points if p not in scene.ground]
+    p = rnd.choice(sorted(set(pts)))
+    if p not in loads:
+        loads[p] = {"force": [rnd.uniform(-500, 500), rnd.uniform(-500, 500)]}
+    lk = rnd.choice(moving)
+    if lk.key not in loads:
+        loads[lk.key] = {"torque": f"{rnd.uniform(1, 50):.3f} N m ccw"}
+    raw["loads"] = loads
+    return scene_from_table(raw)
+
+
+def _cases():
+    out = []
+    for f in FILES:
+        sc = load_scene(f)
+        if _covered(sc):
+            out.append(pytest.param(f, id=Path(f).stem))
+    return out
+
+
+CASES = _cases()
+
+
+def _kin(sol, m):
+    """(G, v_G, a_G, alpha, omega) of a mass's body, from its link's ends (or its block)."""
+    if m.block:
+        return sol.P[m.body], sol.V[m.body], sol.A[m.body], 0.0, 0.0
+    lk = sol.scene.link(m.body)
+
+    def at(T):
+        (px, py), (qx, qy) = T[lk.p], T[lk.q]
+        dx, dy = qx - px, qy - py
+        return (px + m.lam * dx - m.mu * dy, py + m.lam * dy + m.mu * dx)
+    return at(sol.P), at(sol.V), at(sol.A), sol.Al[lk.key], sol.W[lk.key]
+
+
+def _body(m):
+    return f"block {m.body}" if m.block else m.body
+
+
+def test_the_cases_are_there():
+    # the worked problems and the corpus have force problems of each covered shape
+    kinds = set()
+    for c in CASES:
+        kinds |= {st.kind for st in compile_plan(load_scene(c.values[0])).steps}
+    assert {"crank", "dyad", "slider", "carried"} <= kinds and len(CASES) >= 15
+
+
+@pytest.mark.parametrize("path", CASES)
+@pytest.mark.parametrize("seed", [1, 2])
+def test_power_balance_with_inertia(path, seed):
+    sc = with_forces(load_scene(path), seed)
+    sol = solve(sc)
+    f = sol.forces
+    crank = sc.link(sc.input.crank).key
+    terms = [f.input_torque * sol.W[crank]]
+    for ld in sc.loads:
+        if ld.force is not None:
+            v = sol.V[ld.target]
+            terms.append(ld.force[0] * v[0] + ld.force[1] * v[1])
+        else:
+            terms.append(ld.torque * sol.W[ld.target])
+    g = sc.gravity
+    for m in sc.masses:
+        G, v, a, al, w = _kin(sol, m)
+        terms.append(m.mass * g.g * (g.direction[0] * v[0] + g.direction[1] * v[1]))
+        terms.append(-m.mass * (a[0] * v[0] + a[1] * v[1]))
+        terms.append(-m.inertia * al * w)
+    assert abs(sum(terms)) <= 1e-9 * sum(abs(t) for t in terms)
+
+
+def _newton_euler(sol, f):
+    """body -> (force residual, moment residual, force scale, moment scale)."""
+    sc = sol.scene
+    acc = {}
+
+    def add(body, F, at):
+        if body == FRAME:
+            return
+        e = acc.setdefault(body, [0.0, 0.0, 0.0, [], []])
+        e[0] += F[0]
+        e[1] += F[1]
+        e[3].append((F, at))
+
+    def couple(body, c):
+        acc.setdefault(body, [0.0, 0.0, 0.0, [], []])[4].append(c)
+
+    for p in f.pins:
+        at = sol.P[p.point]
+        add(p.on, p.force, at)
+        add(p.by, (-p.force[0], -p.force[1]), at)
+    for gd in f.guides:
+        add(f"block {gd.point}", gd.force, sol.P[gd.point])
+    for body, items in f.applied.items():
+        for it in items:
+            if len(it) == 3:
+                add(body, it[1], it[2])
+            else:
+                couple(body, it[1])
+    couple(sc.link(sc.input.crank).key, f.input_torque)
+    out = {}
+    for m in sc.masses:
+        G, v, a, al, w = _kin(sol, m)
+        e = acc.setdefault(_body(m), [0.0, 0.0, 0.0, [], []])
+        e[0] -= m.mass * a[0]
+        e[1] -= m.mass * a[1]
+        e[4].append(-m.inertia * al)
+        e.append(G)
+        e.append(m.mass * math.hypot(*a))
+    for body, e in acc.items():
+        G = e[5] if len(e) > 5 else (e[3][0][1] if e[3] else (0.0, 0.0))  # massless: any
+        mom = sum((r[0] - G[0]) * F[1] - (r[1] - G[1]) * F[0] for F, r in e[3]) + sum(e[4])
+        fscale = sum(math.hypot(*F) for F, _ in e[3]) + (e[6] if len(e) > 6 else 0.0)
+        mscale = sum(math.hypot(r[0] - G[0], r[1] - G[1]) * math.hypot(*F) for F, r in e[3]) \
+            + sum(abs(c) for c in e[4])
+        out[body] = (math.hypot(e[0], e[1]), abs(mom), fscale, mscale)
+    return out
+
+
+@pytest.mark.parametrize("path", CASES)
+@pytest.mark.parametrize("seed", [3, 4])
+def test_newton_euler_on_every_body(path, seed):
+    sc = with_forces(load_scene(path), seed)
+    sol = solve(sc)
+    f = sol.forces
+    res = _newton_euler(sol, f)
+    moving = {lk.key for lk in sc.links if not (lk.p in sc.ground and lk.q in sc.ground)}
+    assert moving <= set(res)
+    for body, (rf, rm, fs, ms) in res.items():
+        assert rf <= 1e-9 * fs, (body, rf, fs)
+        assert rm <= 1e-9 * ms, (body, rm, ms)
+    # every load of the scene acts on one body, once, as given
+    given = sorted((ld.target, ld.force or ld.torque) for ld in sc.loads
+                   if ld.target not in sc.ground)
+    seen = sorted((it[0].split(" ")[-1], it[1]) for items in f.applied.values()
+                  for it in items if not it[0].startswith("weight"))
+    assert given == seen
+
+
+@pytest.mark.parametrize("path", CASES[::3])
+def test_shaking_force_and_moment_from_the_whole(path):
+    sc = with_forces(load_scene(path), 5)
+    sol = solve(sc)
+    f = sol.forces
+    g = sc.gravity
+    fx = fy = m = 0.0
+    scale = mscale = 0.0
+    for ld in sc.loads:
+        if ld.target in sc.ground or ld.gas:  # a gas force acts on the frame too, back
+            continue
+        if ld.force is not None:
+            x, y = sol.P[ld.target]
+            fx += ld.force[0]
+            fy += ld.force[1]
+            m += x * ld.force[1] - y * ld.force[0]
+            scale += math.hypot(*ld.force)
+            mscale += math.hypot(x, y) * math.hypot(*ld.force)
+        else:
+            m += ld.torque
+            mscale += abs(ld.torque)
+    for ms in sc.masses:
+        G, v, a, al, w = _kin(sol, ms)
+        for F in ((ms.mass * g.g * g.direction[0], ms.mass * g.g * g.direction[1]),
+                  (-ms.mass * a[0], -ms.mass * a[1])):
+            fx += F[0]
+            fy += F[1]
+            m += G[0] * F[1] - G[1] * F[0]
+            scale += math.hypot(*F)
+            mscale += math.hypot(*G) * math.hypot(*F)
+        m -= ms.inertia * al
+        mscale += abs(ms.inertia * al)
+    assert math.hypot(f.shaking_force[0] - fx, f.shaking_force[1] - fy) <= 1e-9 * scale
+    assert abs(f.shaking_moment - m) <= 1e-9 * (mscale + abs(f.input_torque))
+
+
+ENGINE = """
+title = "horizontal engine"
+units = "mm"
+[ground]
+O = [0, 0]
+[links]
+OA = {r}
+AB = {l}
+[sliders]
+B = {{ path = "horizontal", through = "O" }}
+[assembly]
+B = "right"
+[input]
+crank = "OA"
+angle = {theta}
+speed = "{rpm} rpm ccw"
+[masses]
+B = {{ mass = "{m} kg" }}
+[loads]
+B = {{ pressure = "{p} N/mm^2", bore = {bore}, direction = 180 }}
+"""
+
+
+@pytest.mark.parametrize("theta", [30, 60, 100, 135, 200, 300])
+def test_engine_closed_forms(theta):
+    r, l, rpm, m, p, bore = 150, 600, 1800, 2.5, 2.0, 100
+    sc = parse_scene(ENGINE.format(r=r, l=l, theta=theta, rpm=rpm, m=m, p=p, bore=bore))
+    f = solve(sc).forces
+    mpmath.mp.dps = 50
+    R, L = mpmath.mpf(r) / 1000, mpmath.mpf(l) / 1000
+    w = 2 * mpmath.pi * rpm / 60
+    th = mpmath.radians(theta)
+
+    def x(t):  # the piston's distance from O (right of O)
+        return R * mpmath.cos(t) + mpmath.sqrt(L ** 2 - (R * mpmath.sin(t)) ** 2)
+    a_toward = -w ** 2 * mpmath.diff(x, th, 2)  # the piston's acceleration towards O
+    F_gas = p * 1e6 * mpmath.pi / 4 * (mpmath.mpf(bore) / 1000) ** 2  # towards O
+    F_P = F_gas - m * a_toward  # piston effort, towards O
+    n = L / R
+    phi = mpmath.asin(mpmath.sin(th) / n)
+    F_Q = F_P / mpmath.cos(phi)  # thrust on the rod
+    F_N = F_P * mpmath.tan(phi)  # side thrust on the cylinder walls
+    F_T = F_Q * mpmath.sin(th + phi)  # crank effort
+    T_turn = F_P * R * (mpmath.sin(th) + mpmath.sin(2 * th) / (2 * mpmath.sqrt(n ** 2 - mpmath.sin(th) ** 2)))
+
+    def close(got, want):
+        assert abs(got - float(want)) <= 1e-9 * abs(float(want)), (got, float(want))
+    close(f.input_torque, -T_turn)  # the driver holds the turning moment back
+    close(math.hypot(*f.pin("B", "AB")), abs(F_Q))
+    close(math.hypot(*f.pin("A", "AB")), abs(F_Q))  # a massless rod: one force along it
+    close(abs(f.guides[0].normal), abs(F_N))
+    # the crank effort: the rod's force on the crank at A across OA
+    sol = solve(sc)
+    ax, ay = sol.P["A"]
+    fa = f.pin("A", "OA")
+    close(abs(ax * fa[1] - ay * fa[0]) / math.hypot(ax, ay), abs(F_T))
+    close(abs(F_T) * float(R), abs(T_turn))
+
+
+def _fourbar_U(m_list, th):
+    """The potential energy (g = 9.81 down) of the four-bar below at crank angle th, and
+    B's place (50 digits): O2 (0, 0), O4 (0.2, 0); O2A 0.1, AB 0.25, BO4 0.18, B above."""
+    a, b, c = mpmath.mpf("0.1"), mpmath.mpf("0.25"), mpmath.mpf("0.18")
+    O4 = (mpmath.mpf("0.2"), mpmath.mpf(0))
+    A = (a * mpmath.cos(th), a * mpmath.sin(th))
+    dx, dy = O4[0] - A[0], O4[1] - A[1]
+    d = mpmath.sqrt(dx ** 2 + dy ** 2)
+    k = (b ** 2 - c ** 2 + d ** 2) / (2 * d)
+    h = mpmath.sqrt(b ** 2 - k ** 2)
+    B = (A[0] + k * dx / d - h * dy / d, A[1] + k * dy / d + h * dx / d)  # B above
+    ends = {"O2-A": ((0, 0), A), "A-B": (A, B), "B-O4": (B, O4)}
+    U = 0
+    for key, mass, lam, mu in m_list:
+        (px, py), (qx, qy) = ends[key]
+        U += mass * mpmath.mpf("9.81") * (py + lam * (qy - py) + mu * (qx - px))
+    return U
+
+
+def test_static_torque_is_the_derivative_of_the_potential_energy():
+    text = """
+units = "m"
+[ground]
+O2 = [0, 0]
+O4 = [0.2, 0]
+[links]
+"O2-A" = 0.1
+"A-B" = 0.25
+"B-O4" = 0.18
+[assembly]
+B = "above"
+[input]
+crank = "O2-A"
+angle = 70
+speed = "1e-6 rad/s ccw"
+[masses]
+"O2-A" = { mass = "1.2 kg", along = 0.06 }
+"A-B" = { mass = "3 kg", distances = { A = 0.1, B = 0.2 }, turn = "ccw", gyration = 0.08 }
+"B-O4" = { mass = "2 kg", along = 0.09, from = "B" }
+[gravity]
+"""
+    sc = parse_scene(text)
+    f = solve(sc).forces
+    m_list = [(m.body, m.mass, mpmath.mpf(m.lam), mpmath.mpf(m.mu)) for m in sc.masses]
+    mpmath.mp.dps = 50
+    dU = mpmath.diff(lambda t: _fourbar_U(m_list, t), mpmath.radians(70))
+    # the driver's work T d(theta) raises the potential energy: T = dU/dtheta; the
+    # inertia at 1e-6 rad/s is below 1e-12 of it
+    assert abs(f.input_torque - float(dU)) <= 1e-9 * abs(float(dU))
+
+
+# ----- stating it: one located line for each slip
+
+BASE = """
+units = "mm"
+[ground]
+O = [0, 0]
+[links]
+OA = 150
+AB = 600
+[sliders]
+B = { path = "horizontal", through = "O" }
+[input]
+crank = "OA"
+angle = 60
+speed = "450 rpm ccw"
+"""
+
+
+@pytest.mark.parametrize("extra, words", [
+    ('[masses]\nAB = { mass = "-2 kg" }', "[masses] AB (line 15): a mass must be positive"),
+    ('[masses]\nAB = { mass = "2 kN" }', "'kN' is a unit of force, not of mass"),
+    ('[masses]\nAB = { mass = 2, centre = "B", along = 20 }', "not both"),
+    ('[masses]\nAB = { mass = 2, centre = "O" }', "'O' is not a point of link AB"),
+    ('[masses]\nAB = { mass = 2, intertia = 1 }', "unknown key 'intertia' (did you mean 'inertia'?)"),
+    ('[masses]\nAB = { mass = 2, inertia = 1, gyration = 30 }', "not both"),
+    ('[masses]\nA = { mass = 2 }', "A is no slider"),
+    ('[masses]\nB = { mass = 2, along = 3 }', "give only mass"),
+    ('[masses]\nBC = { mass = 2 }', "no link BC in [links]"),
+    ('[masses]\nAB = 2', "a mass is { mass"),
+    ('[gravity]\ng = 0', "g must be positive"),
+    ('[gravity]\ndirecton = 270', "unknown key 'directon' (did you mean 'direction'?)"),
+    ('[loads]\nB = { pressure = "1 MPa", bore = 100 }', "no direction"),
+    ('[loads]\nA = { pressure = "1 MPa", bore = 100, direction = 180 }', "A is no slider"),
+    ('[loads]\nB = { pressure = "1 mpa", bore = 100, direction = 180 }', "unknown unit 'mpa'"),
+    ('[loads]\nB = { pressure = "1 MPa", bore = 100, rod = 120, direction = 0 }', "thinner"),
+])
+def test_bad_force_input_is_one_located_line(extra, words):
+    with pytest.raises(SceneError) as e:
+        parse_scene(BASE + extra, file="engine.toml")
+    line = e.value.one_line()
+    assert words in line and "\n" not in line and line.startswith("engine.toml: [")
+
+
+def test_a_step_not_covered_is_refused_in_one_line_naming_it():
+    sc = load_scene(ROOT / "worked_problems" / "whitworth.toml")
+    raw = scene_table(sc)
+    raw["gravity"] = {}
+    sol = solve(scene_from_table(raw))
+    with pytest.raises(PolygonMethodError, match=r"a block sliding on a moving link is not "
+                       r"solved for forces yet \(step 2, block A"):
+        sol.forces
+    d = sol.to_dict()
+    assert d["forces"] is None and any("not solved for forces yet" in w for w in d["warnings"])
+
+
+def test_a_scene_without_masses_is_as_before():
+    sc = load_scene(ROOT / "worked_problems" / "engine_analytical.toml")
+    sol = solve(sc)
+    assert sol.forces is None and "forces" not in sol.to_dict()
+
+
+def test_units_of_the_force_chapter():
+    sc = parse_scene(BASE + '[masses]\nAB = { mass = "4 lb", gyration = "2 in", along = '
+                     '"0.1 m" }\nB = { mass = "500 g" }\nOA = { mass = 1, inertia = '
+                     '"2000 kg cm^2" }\n[loads]\nB = { pressure = "3 bar", bore = "4 in", '
+                     'rod = "1 in", direction = 180 }')
+    ab, b, oa = sc.masses
+    assert ab.mass == 4 * 0.45359237 and ab.inertia == pytest.approx(4 * 0.45359237 * 0.0508 ** 2)
+    assert ab.lam == pytest.approx(0.1 / 0.6) and b.mass == 0.5 and oa.inertia == 0.2
+    fx, fy = sc.loads[0].force
+    assert fx == pytest.approx(-3e5 * math.pi / 4 * (0.1016 ** 2 - 0.0254 ** 2)) and fy == 0
+
+
+def test_the_worked_engine_and_its_written_answers():
+    """worked_problems/engine_forces.toml: the tool to 1e-9 of the closed forms, and the
+    answers its comments write (4 figures) to the closed forms' rounding."""
+    path = ROOT / "worked_problems" / "engine_forces.toml"
+    sc = load_scene(path)
+    sol = solve(sc)
+    f = sol.forces
+    mpmath.mp.dps = 50
+    r, L = mpmath.mpf("0.3"), mpmath.mpf("1.2")
+    w = 2 * mpmath.pi * 250 / 60
+    th = mpmath.radians(60)
+    a = -w ** 2 * mpmath.diff(lambda t: r * mpmath.cos(t)
+                              + mpmath.sqrt(L ** 2 - (r * mpmath.sin(t)) ** 2), th, 2)
+    F_L = mpmath.mpf("0.35e6") * mpmath.pi / 4 * mpmath.mpf("0.5") ** 2
+    F_P = F_L - 250 * a
+    phi = mpmath.asin(mpmath.sin(th) / 4)
+    F_Q, F_N = F_P / mpmath.cos(phi), F_P * mpmath.tan(phi)
+    F_T = F_Q * mpmath.sin(th + phi)
+    T = F_T * r
+    want = {"a_B": a, "F_L": F_L / 1000, "F_I": 250 * a / 1000, "F_P": F_P / 1000,
+            "phi": mpmath.degrees(phi), "F_Q": F_Q / 1000, "F_N": F_N / 1000,
+            "F_T": F_T / 1000, "T": T / 1000}
+    text = path.read_text()
+    for key, value in want.items():
+        written = re.search(rf"#.*\b{key} = (?:[^=\n]*= )?([\d.]+)", text)
+        assert written, key
+        assert float(written.group(1)) == pytest.approx(float(value), rel=6e-4), key
+
+    def close(got, w):
+        assert abs(got - float(w)) <= 1e-9 * abs(float(w))
+    close(-f.input_torque, T)
+    close(f.pin("B", "AB")[0], -F_Q * mpmath.cos(phi))  # the rod pushes... on the piston
+    close(math.hypot(*f.pin("B", "AB")), F_Q)
+    close(f.guides[0].normal, F_N)  # the walls push the piston up: the rod leans down to it
+    close(f.shaking_force[0], 250 * a)  # the gas force is internal: the piston's inertia
+    assert abs(f.shaking_force[1]) <= 1e-9 * float(F_Q)
+
+
+# ----- the views
+
+def test_solve_json_and_steps_show_the_forces(capsys):
+    import json
+
+    from polygon_method.cli import main
+    path = ROOT / "worked_problems" / "engine_forces.toml"
+    assert main(["solve", "--json", str(path)]) == 0
+    d = json.loads(capsys.readouterr().out)
+    fo = d["forces"]
+    assert "on body 'on' by body 'by'" in fo["convention"]
+    assert [(p["on"], p["by"]) for p in fo["pins"]["B"]] == [("AB", "block B")]
+    assert fo["guides"]["B"]["normal"] == [0.0, 1.0] and fo["crank"] == "OA"
+    assert fo["bodies"]["block B"]["mass"] == 250.0
+    assert main(["solve", str(path)]) == 0
+    out = capsys.readouterr().out
+    assert "input torque on OA (inertia, weights and loads): 14490 N m cw" in out
+    assert "guide at B: normal force on block B 10964 N at 90.0 deg" in out
+    for fmt in ("text", "markdown"):
+        assert main(["steps", "--format", fmt, str(path)]) == 0
+        out = capsys.readouterr().out
+        for head in ("6. Inertia forces (D'Alembert)", "7. Forces, group by group",
+                     "Step 2, link AB, slider B on the horizontal path", "Step 1, crank OA",
+                     "8. The driving torque and the frame"):
+            assert head in out, (fmt, head)
+        assert "T on OA = 14490 N m cw" in out
+
+
+@pytest.mark.parametrize("path", CASES[::2])
+def test_every_force_problem_writes_finite_json_and_words(path):
+    import json
+
+    from polygon_method.report import solution_text
+    from polygon_method.steptable import steps_text
+    sol = solve(with_forces(load_scene(path), 7))
+    text = json.dumps(sol.to_dict(), allow_nan=False)
+    assert '"forces": {' in text
+    assert "forces (D'Alembert" in solution_text(sol)
+    assert "8. The driving torque and the frame" in steps_text(sol)
+
+
+def test_a_refused_scene_still_shows_its_motion_and_says_why():
+    from polygon_method.report import solution_text
+    from polygon_method.steptable import steps_text
+    raw = scene_table(load_scene(ROOT / "worked_problems" / "whitworth.toml"))
+    raw["masses"] = {"O2-A": {"mass": 2}}
+    sol = solve(scene_from_table(raw))
+    words = "is not solved for forces yet (step 2, block A"
+    assert words in solution_text(sol) and words in steps_text(sol)
+
+
+def test_the_turning_moment_over_a_cycle_in_the_sweep():
+    """The sweep's column of the driver's torque with inertia, against the engine's closed
+    form at every angle (to 1e-9 of the largest), and its shaking force, the piston's
+    inertia force."""
+    import numpy as np
+
+    from polygon_method.sweeps import sweep
+    sc = load_scene(ROOT / "worked_problems" / "engine_forces.toml")
+    angles = np.radians(np.arange(0.0, 360.0, 7.5))
+    res = sweep(sc, angles)
+    cols = {name: a for name, _, a in res.columns()}
+    mpmath.mp.dps = 30
+    r, L, w = mpmath.mpf("0.3"), mpmath.mpf("1.2"), 2 * mpmath.pi * 250 / 60
+    F_L = mpmath.mpf("0.35e6") * mpmath.pi / 4 * mpmath.mpf("0.5") ** 2
+
+    def x(t):
+        return r * mpmath.cos(t) + mpmath.sqrt(L ** 2 - (r * mpmath.sin(t)) ** 2)
+    want = []
+    for t in np.radians(res.degrees):
+        t = mpmath.mpf(float(t))
+        F_P = F_L + 250 * w ** 2 * mpmath.diff(x, t, 2)  # effort towards O
+        want.append(-float(F_P * -mpmath.diff(x, t)))  # the driver's: -(turning moment)
+    want = np.array(want)
+    assert len(res) == len(angles)
+    assert np.max(np.abs(cols["torque_inertia"] - want)) <= 1e-9 * np.max(np.abs(want))
+    assert np.max(np.abs(cols["shake_x"] - 250 * cols["ax_B"] * -1)) <= \
+        1e-9 * np.max(np.abs(250 * cols["ax_B"]))
+
+
+@pytest.mark.parametrize("path", CASES[1::4])
+def test_the_sweep_balances_power_at_every_angle(path):
+    import numpy as np
+
+    from polygon_method.forces import analyse
+    from polygon_method.sweeps import sweep
+    sc = with_forces(load_scene(path), 8)
+    res = sweep(sc, np.radians(np.arange(0.0, 360.0, 10.0)))
+    assert len(res) >= 9  # every case reaches a part of the turn
+    f = analyse(res)
+    crank = sc.link(sc.input.crank).key
+    terms = [f.input_torque * res.W[crank]]
+    for ld in sc.loads:
+        if ld.force is not None:
+            v = res.V[ld.target]
+            terms.append(ld.force[0] * v[0] + ld.force[1] * v[1])
+        else:
+            terms.append(ld.torque * res.W[ld.target])
+    g = sc.gravity
+    for m in sc.masses:
+        G, v, a, al, w = _kin(res, m)
+        terms.append(m.mass * g.g * (g.direction[0] * v[0] + g.direction[1] * v[1]))
+        terms.append(-m.mass * (a[0] * v[0] + a[1] * v[1]))
+        terms.append(-m.inertia * al * w)
+    total = sum(terms)
+    scale = sum(np.abs(t) for t in terms)
+    assert np.all(np.abs(total) <= 1e-9 * scale)
+
+
+# ----- checking force answers
+
+def _check(scene, text):
+    from polygon_method.check import check_answers
+    from polygon_method.scene import parse_answers
+    _, answers = parse_answers(text, scene)
+    return {v.key: v for v in check_answers(solve(scene), answers)}
+
+
+def test_engine_force_answers_and_the_piston_inertia_left_out():
+    """The slip's numbers from the closed forms with the gas force alone."""
+    sc = load_scene(ROOT / "worked_problems" / "engine_forces.toml")
+    F_L = 0.35e6 * math.pi / 4 * 0.5 ** 2
+    phi = math.asin(math.sin(math.radians(60)) / 4)
+    T = F_L * 0.3 * (math.sin(math.radians(60)) + math.sin(math.radians(120))
+                     / (2 * math.sqrt(16 - math.sin(math.radians(60)) ** 2)))
+    got = _check(sc, f'[answers]\nF_B = "{F_L / math.cos(phi):.5g} N"\n'
+                     f'N_B = "{F_L * math.tan(phi):.5g} N"\ntorque = "{T:.5g} N m cw"\n'
+                     'F_O = "50.64 kN"\n')
+    for key in ("F_B", "N_B"):
+        assert not got[key].ok and got[key].mistake == "piston_inertia_left_out", key
+    # the torque: the same number is the power balance without inertia (both are said)
+    t = got["torque"]
+    assert not t.ok and t.mistake in ("piston_inertia_left_out", "no_inertia")
+    assert "power balance without the inertia" in t.diagnosis and \
+        "reciprocating parts at B left out" in t.diagnosis
+    assert got["F_O"].ok  # a massless crank and rod pass the thrust to the main bearing
+
+
+def test_the_offset_on_the_wrong_side_of_g_is_diagnosed():
+    """A four-bar with a massive coupler: the torque a student gets with the inertia
+    couple's sense reversed, from the power balance computed here."""
+    text = BASE_FOURBAR + '[masses]\n"A-B" = { mass = "3 kg", along = 0.1, gyration = 0.09 }\n'
+    sc = parse_scene(text)
+    sol = solve(sc)
+    G, v, a, al, w = _kin(sol, sc.masses[0])
+    m, inertia = sc.masses[0].mass, sc.masses[0].inertia
+    wrong = -(-m * (a[0] * v[0] + a[1] * v[1]) + inertia * al * w) / sol.W["O2-A"]
+    got = _check(sc, f'[answers]\ntorque = "{abs(wrong):.6g} N m {"ccw" if wrong > 0 else "cw"}"\n')
+    assert not got["torque"].ok and got["torque"].mistake == "offset_wrong_side"
+
+
+BASE_FOURBAR = """
+units = "m"
+[ground]
+O2 = [0, 0]
+O4 = [0.2, 0]
+[links]
+"O2-A" = 0.1
+"A-B" = 0.25
+"B-O4" = 0.18
+[assembly]
+B = "above"
+[input]
+crank = "O2-A"
+angle = 70
+speed = "300 rpm ccw"
+acceleration = "200 rad/s^2 ccw"
+"""
+
+
+@pytest.mark.parametrize("extra, words", [
+    ('[answers]\nF_A = "2 kN"', "a force answer needs the force analysis"),
+    ('[masses]\n"A-B" = { mass = 2 }\n[answers]\nN_A = "2 kN"', "N_X names a slider's block"),
+    ('[masses]\n"A-B" = { mass = 2 }\n[answers]\nF_Q = "2 kN"', "no point Q"),
+])
+def test_bad_force_answer_keys(extra, words):
+    with pytest.raises(SceneError, match=re.escape(words)):
+        parse_scene(BASE_FOURBAR + extra)
+
+
+def test_a_link_on_a_point_of_the_frame():
+    """A dyad hung on a point carried on a link fixed to the ground (a frame member): its
+    reaction is the frame's (in the shaking force), and the fixed link's own mass loads
+    nothing."""
+    sc = parse_scene(BASE_FOURBAR.replace('"B-O4" = 0.18', '"B-E" = 0.18\n"O2-O4" = 0.2')
+                     .replace("[assembly]", '[points]\nE = { on = "O2-O4", distances = '
+                              '{ O2 = 0.15, O4 = 0.08 }, turn = "ccw" }\n[assembly]')
+                     + '[masses]\n"A-B" = { mass = 3, gyration = 0.05 }\n"B-E" = '
+                     '{ mass = 2 }\n"O2-O4" = { mass = 50 }\n[gravity]\n')
+    sol = solve(sc)
+    f = sol.forces
+    assert ("E", "B-E", FRAME) in [(p.point, p.on, p.by) for p in f.pins]
+    fx = fy = 0.0
+    for m in sc.masses[:2]:
+        G, v, a, al, w = _kin(sol, m)
+        fx += -m.mass * a[0]
+        fy += -m.mass * (a[1] + 9.81)
+    assert math.hypot(f.shaking_force[0] - fx, f.shaking_force[1] - fy) <= \
+        1e-9 * math.hypot(fx, fy)
+
+
+def _fourbar_matrix(sol):
+    """The matrix method: the Newton-Euler equations of a four-bar's three links as one
+    9 x 9 system in the pin forces (on the crank at O2 by the frame, on the coupler at A
+    by the crank, on the rocker at B by the coupler, on the rocker at O4 by the frame) and
+    the driving torque; the loads at points of a link and couples on links, the weights
+    and the inertia as the known side. Returns {name: value}."""
+    import numpy as np
+    sc = sol.scene
+    (o2, a, b, o4) = ("O2", "A", "B", "O4")
+    crank, coupler, rocker = "O2-A", "A-B", "B-O4"
+    P = sol.P
+    g = sc.gravity
+    rows, rhs = [], []
+    # unknowns: F_O2 (0,1), F_A (2,3), F_B (4,5), F_O4 (6,7), T (8)
+    known = {}
+    for m in sc.masses:
+        G, v, acc, al, w = _kin(sol, m)
+        F = (m.mass * g.g * g.direction[0] - m.mass * acc[0],
+             m.mass * g.g * g.direction[1] - m.mass * acc[1])
+        known[m.body] = [F[0], F[1], (G[0], G[1]), -m.inertia * al, []]
+    for ld in sc.loads:
+        if ld.force is not None:
+            body = next(lk.key for lk in sc.links if ld.target in lk.points
+                        or (sc.carried(ld.target) and sc.carried(ld.target).link == lk.key))
+            known[body][4].append((ld.force, P[ld.target]))
+        else:
+            known[ld.target][3] += ld.torque
+    # each body: the unknown forces on it, (column of x, sign, point); moments about G
+    on = {crank: [(0, 1, o2), (2, -1, a)], coupler: [(2, 1, a), (4, -1, b)],
+          rocker: [(4, 1, b), (6, 1, o4)]}
+    for body, forces in on.items():
+        fx, fy, G, c, loads = known[body]
+        for f, at in loads:
+            fx, fy = fx + f[0], fy + f[1]
+            c += (at[0] - G[0]) * f[1] - (at[1] - G[1]) * f[0]
+        rx, ry, rm = [0.0] * 9, [0.0] * 9, [0.0] * 9
+        for col, s, pt in forces:
+            rx[col] += s
+            ry[col + 1] += s
+            dx, dy = P[pt][0] - G[0], P[pt][1] - G[1]
+            rm[col] += -s * dy
+            rm[col + 1] += s * dx
+        if body == crank:
+            rm[8] = 1.0
+        rows += [rx, ry, rm]
+        rhs += [-fx, -fy, -c]
+    x = np.linalg.solve(np.array(rows), np.array(rhs))
+    return {"F_O2": x[0:2], "F_A": x[2:4], "F_B": x[4:6], "F_O4": x[6:8], "T": x[8]}
+
+
+@pytest.mark.parametrize("path", [ROOT / "worked_problems" / "fourbar_forces.toml"]
+                         + [c.values[0] for c in CASES if Path(c.values[0]).stem in
+                            ("fourbar_acceleration",)])
+def test_four_bar_against_the_matrix_method(path):
+    sc = load_scene(path)
+    if not sc.has_forces:  # the worked four-bars of the kinematics, given masses here
+        raw = scene_table(sc)
+        raw["masses"] = {"O2-A": {"mass": 2, "along": 40}, "A-B": {"mass": 5, "gyration": 90},
+                         "B-O4": {"mass": 3, "distances": {"B": 200, "O4": 150},
+                                  "turn": "cw", "inertia": 0.04}}
+        raw["gravity"] = {"direction": 250}
+        raw["loads"] = {"B": {"force": [300, -200]}, "B-O4": {"torque": "15 N m ccw"}}
+        sc = scene_from_table(raw)
+    sol = solve(sc)
+    f = sol.forces
+    ref = _fourbar_matrix(sol)
+    scale = max(float(math.hypot(*v)) for k, v in ref.items() if k != "T")
+
+    def close(got, want):
+        assert math.hypot(got[0] - want[0], got[1] - want[1]) <= 1e-9 * scale
+    close(f.pin("O2", "O2-A", FRAME), ref["F_O2"])
+    close(f.pin("A", "A-B", "O2-A"), ref["F_A"])
+    close(f.pin("B", "B-O4", "A-B"), ref["F_B"])
+    close(f.pin("O4", "B-O4", FRAME), ref["F_O4"])
+    assert abs(f.input_torque - ref["T"]) <= 1e-9 * scale * 0.5
+
+
+def test_the_worked_four_bar_and_its_written_answers():
+    path = ROOT / "worked_problems" / "fourbar_forces.toml"
+    ref = _fourbar_matrix(solve(load_scene(path)))
+    text = path.read_text()
+    for key in ("F_O2", "F_A", "F_B", "F_O4"):
+        written = re.search(rf"#.*\b{key} = ([\d.]+)", text)
+        assert float(written.group(1)) == pytest.approx(float(math.hypot(*ref[key])),
+                                                        rel=6e-4), key
+    written = re.search(r"#.*\bT = ([\d.]+) \((c?cw)[:)]", text)
+    assert float(written.group(1)) == pytest.approx(abs(float(ref["T"])), rel=6e-4)
+    assert written.group(2) == ("ccw" if ref["T"] > 0 else "cw")
