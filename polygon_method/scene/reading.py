@@ -442,7 +442,8 @@ class _Loader(_Tables, _Input, _Variants):
         self.slider_points = {s.point: s for s in sliders}
         self.cylinder_list = cylinders = self.cylinders(known)
         inp = self.input(index, ground)
-        sliders = [replace(s, through=ground[inp.pivot])
+        origin = ground[inp.pivot] if inp.pivot is not None else next(iter(ground.values()))
+        sliders = [replace(s, through=origin)
                    if isinstance(s, FixedPath) and s.through[1] is None else s
                    for s in sliders]
         assembly = self.assembly(known)
