@@ -14,7 +14,7 @@ from .kinematics import Motion
 from .numbers import quiet
 from .scene import FixedPath, Scene
 from .sweeps import (SweepResult, rubbing_arrays, select, torque_array, angles_ok,
-                    evaluate_all, sweep_angles)
+                     evaluate_all, stroke_places, sweep_angles)
 from .compiler import compile_plan
 from .tracking import (CHUNK, TWO_PI, Sweeper, branch_steps, degrees_fn, fmt_deg, tune_malloc,
                        valid_mask)
@@ -74,6 +74,8 @@ class Summary:
 
     def text(self) -> str:
         sc = self.scene
+        if sc.input.block is not None:
+            return self._block_text()
         inp = sc.input
         if inp.given is not None:
             g = inp.given
@@ -111,10 +113,48 @@ class Summary:
             out.append(f"change point at crank angle {fmt_deg(deg(cp.theta))} deg: {cp.why}")
         out.extend(self.notes)
         out.append("")
+        self._table(out, "deg")
+        return "\n".join(out)
+
+    def _block_text(self) -> str:
+        """The text of a sweep over a driving block's stroke: places in the scene's units."""
+        sc = self.scene
+        inp, uname = sc.input, sc.units
+        driver = compile_plan(sc).steps[0]
+        deg = self.deg
+        out = [f"sweep of {sc.title or sc.file or 'the mechanism'}",
+               f"block {inp.block} at {abs(inp.omega):.6g} m/s {driver.sense(inp.omega)}"
+               + (f", {abs(inp.alpha):.6g} m/s^2 {driver.sense(inp.alpha)}" if inp.alpha
+                  else "") + f" at every place; {self.evaluated} of {self.requested} places "
+               f"s_{inp.block} along its guide evaluated"]
+        if self.range_deg is not None:
+            lo, hi = self.range_deg
+            out.append(f"the block {inp.block} travels from s_{inp.block} = {lo:.6g} to "
+                       f"{hi:.6g} {uname} on the scene's branch"
+                       + (" (its stated stroke)" if inp.stroke is not None and all(
+                           lp.step == driver.label for lp in self.limits) else ""))
+            for lp in self.limits:
+                out.append(f"  end at s_{inp.block} = {deg(lp.theta):.6g} {uname}: {lp.step}: "
+                           f"{lp.why}")
+        if self.evaluated < self.requested:
+            out.append(f"  {self.requested - self.evaluated} requested place(s) are left out "
+                       "(beyond the ends of its travel, or singular)")
+        for cp in self.change_points:
+            out.append(f"change point at s_{inp.block} = {deg(cp.theta):.6g} {uname}: "
+                       f"{cp.why}")
+        out.extend(self.notes)
+        out.append("")
+        self._table(out, uname)
+        return "\n".join(out)
+
+    def _table(self, out, unit):
+        """The table of extremes, each at its parameter (crank angle in deg, or a block's
+        place in ``unit``)."""
+        at = f"at ({unit})"
         if self.extremes:
             w = max(len(e.name) for e in self.extremes)
-            out.append(f"{'quantity':<{w}}  {'unit':<7} {'maximum':>12} {'at (deg)':>10}"
-                       f" {'minimum':>12} {'at (deg)':>10}")
+            out.append(f"{'quantity':<{w}}  {'unit':<7} {'maximum':>12} {at:>10}"
+                       f" {'minimum':>12} {at:>10}")
             for e in self.extremes:
                 if e.constant:
                     out.append(f"{e.name:<{w}}  {e.unit:<7} {e.maximum:>12.6g} "
@@ -132,11 +172,10 @@ class Summary:
                                        (e.min_unbounded, e.at_min, "falls")):
                     if flag:
                         out.append(f"{'':<{w}}  ({word} without bound towards the limit "
-                                   f"position at {fmt_deg(at, 3)} deg)")
+                                   f"position at {fmt_deg(at, 3)} {unit})")
         if self.formulas:
             out.append("")
             out.extend(self.formulas)
-        return "\n".join(out)
 
 
 #: angles times points evaluated at once when refining extremes (about 100 MB of arrays)
@@ -186,7 +225,9 @@ class _Reducer:
             for pin, r in rubbing_arrays(plan, fr.W, fr.n).items():
                 yield f"rub_{pin}", "m/s", r, "rubbing"
         t = torque_array(sc, fr.V, fr.W, self.sw.omega, fr.n)
-        if t is not None:
+        if t is not None and sc.input.block is not None:  # the force driving the block
+            yield "force", "N", t, "input force, along the guide"
+        elif t is not None:
             yield "torque", "N m", t, "input torque, ccw +"
         for st in branch_steps(plan):
             name, unit, words = st.condition_column()  # "deg": the sine, shown as the angle
@@ -318,7 +359,9 @@ class _Reducer:
         from .linkage import engine_formula_lines  # an in-line slider crank's, or none
         formulas = tuple(engine_formula_lines(self.scene, {e.name: e for e in extremes}))
         rng = None
-        if not dom.full_turn:
+        if not dom.periodic:  # a block driver's stroke, in the scene's units
+            rng = (deg(dom.lo), deg(dom.hi))
+        elif not dom.full_turn:
             rng = (deg(dom.lo), deg(dom.lo) + math.degrees(dom.hi - dom.lo))
         return Summary(self.scene, requested, evaluated, extremes, dom.limits,
                        dom.change_points, tuple(dom.notes), formulas, rng, deg)
@@ -377,6 +420,10 @@ class _Reducer:
     def _scales(self) -> dict:
         """Typical sizes per unit, below a 1e-9 part of which a value is zero (rounding)."""
         sc = self.scene
+        if not self.sw.driver.periodic:  # a block driver: the sizes its input sets
+            v, a, w, k = self.sw.driver.input_scales(sc)
+            return {"rad/s": w, "rad/s^2": k, "m/s": v, "m/s^2": a,
+                    "m": max([lk.length for lk in sc.links])}
         w = abs(self.sw.omega)
         k = w * w + abs(self.sw.alpha)
         lengths = [lk.length for lk in sc.links] + [math.hypot(*xy) for xy in
@@ -401,6 +448,8 @@ def summarize(scene: Scene, angles=None, *, chunk: int = CHUNK, refine: bool = T
     """Maxima and minima of every quantity over ``angles`` (rad; default every degree),
     reduced chunk by chunk: memory stays that of one chunk whatever the number of angles.
     Each extreme found between samples is then refined by zooming in on it."""
+    if angles is None and scene.input.block is not None:
+        angles = stroke_places(scene)  # a driving block: its travel
     th_req = sweep_angles(angles)
     sw = Sweeper(scene)
     sw.stated_branch()
