@@ -92,7 +92,11 @@ def page_html(fr: Frames, *, verdicts=None, answers_title: str = "") -> str:
     source = sc.source
     d = page_data(fr)
     title = d["title"]
+    name, symbol, unit = fr.parameter
+    block = sc.input.block is not None
     cycle = "a full turn of the crank" if fr.full_turn else \
+        f"the block's travel ({fr.limits_text}): near an end where the mechanism stops " \
+        "assembling the polygons grow without bound and run off their panels" if block else \
         f"the range between the limit positions ({fr.limits_text}): the crank cannot " \
         "turn fully, and near its limit positions the polygons grow without bound and run " \
         "off their panels"
@@ -125,13 +129,13 @@ def page_html(fr: Frames, *, verdicts=None, answers_title: str = "") -> str:
 </details>
 <div class="controls">
 <button id="play" type="button">▶ play</button>
-<label for="angle">crank angle</label>
+<label for="angle">{name}</label>
 <input type="range" id="angle" min="0" max="{len(fr) - 1}" step="1" value="{fr.start}">
 <span id="angle-now"></span>
 </div>
 <p class="legend-line">{len(fr)} frames over {escape(cycle)}; each diagram keeps the
-scale of the step-by-step solution. The stated instant is θ =
-{fmt(math.degrees(sc.input.angle) % 360)}°{escape(f" ({sc.input.angle_words})" if sc.input.angle_words else "")}. Hover or tap a vector or a point for its
+scale of the step-by-step solution. The stated instant is {symbol} =
+{fmt(sc.input.angle / sc.length_unit) + unit if block else fmt(math.degrees(sc.input.angle) % 360) + unit}{escape(f" ({sc.input.angle_words})" if sc.input.angle_words else "")}. Hover or tap a vector or a point for its
 value.</p>
 {f'<ul>{notes}</ul>' if notes else ''}
 <div class="diagrams">

@@ -21,6 +21,9 @@ function angular(x, unit) {
   return fmt(Math.abs(x)) + " " + unit + s;
 }
 const deg = (t) => (((t % 360) + 360) % 360).toFixed(1);
+// what the frames step through: the crank angle, or a driving block's place (D.param)
+const PARAM = D.param || ["crank angle", "θ", "°"];
+const at = (t) => D.param ? t.toFixed(1) + PARAM[2] : deg(t) + "°";
 const dir = (x, y) => deg(Math.atan2(y, x) * 180 / Math.PI);
 
 // a point's vector (position, velocity or acceleration) at frame k, SI
@@ -215,7 +218,7 @@ function pointValues(p, k) {
   return {v: Math.hypot(v[0], v[1]), vdir: dir(v[0], v[1]), a: Math.hypot(a[0], a[1]), adir: dir(a[0], a[1])};
 }
 function valuesRows(k) {
-  const rows = [["theta", "crank angle θ", deg(D.theta[k]) + "°"]];
+  const rows = [["theta", PARAM[0] + " " + PARAM[1], at(D.theta[k])]];
   for (const p of D.points) {
     const pv = pointValues(p, k);
     rows.push(["v-" + p, "v_" + p + " (o" + label(p, "velocity") + ")", fmt(pv.v) + " m/s at " + pv.vdir + "°"]);
@@ -333,7 +336,7 @@ function buildPlots() {
     el(svg, "line", {x1: L, y1: Y(0), x2: W - R, y2: Y(0), class: "axis"});
     el(svg, "line", {x1: L, y1: T, x2: L, y2: H - B, class: "axis"});
     for (const y of [ymin, ymax]) el(svg, "text", {x: L - 3, y: Y(y) + 4, class: "tick", "text-anchor": "end"}).textContent = fmt(y, 3);
-    for (const t of [lo, (lo + hi) / 2, hi]) el(svg, "text", {x: X(t), y: H - 10, class: "tick", "text-anchor": "middle"}).textContent = deg(t) + "°";
+    for (const t of [lo, (lo + hi) / 2, hi]) el(svg, "text", {x: X(t), y: H - 10, class: "tick", "text-anchor": "middle"}).textContent = at(t);
     ss.forEach(([name, f], i) => {
       const pts = [];
       for (let k = 0; k < N; k++) pts.push(r3(X(D.theta[k])) + "," + r3(Y(f(k))));
@@ -352,7 +355,7 @@ function show(k) {
   slider.value = k;
   for (const phase of PHASES) update(phase, k);
   for (const [id, , text] of valuesRows(k)) document.getElementById("val-" + id).textContent = text;
-  document.getElementById("angle-now").textContent = "θ = " + deg(D.theta[k]) + "°";
+  document.getElementById("angle-now").textContent = PARAM[1] + " = " + at(D.theta[k]);
   for (const [m, X] of markers) { m.setAttribute("x1", r3(X(D.theta[k]))); m.setAttribute("x2", r3(X(D.theta[k]))); }
 }
 let timer = null, step = 1;
