@@ -354,17 +354,29 @@ class _Compiler:
 
     def reach_block(self, fails, n) -> str:
         """Where the driving block can be placed so that the steps so far assemble: its
-        guide searched either side of the stated place, as far as the links reach."""
+        guide searched from its through point either way, as far as the links reach, past
+        the stated place too (each end to about 1e-6 of that reach)."""
         sc, inp = self.scene, self.scene.input
         span = 2.0 * sum(lk.length for lk in sc.links) + max(
             (math.dist(xy, sc.slider(inp.block).through) for xy in sc.ground.values()),
             default=0.0)
-        grid = [inp.angle + span * (2.0 * k / (n - 1) - 1.0) for k in range(n)]
+        lo, hi = min(inp.angle, 0.0) - span, max(inp.angle, 0.0) + span
+        grid = [lo + (hi - lo) * k / (n - 1) for k in range(n)]
         bad = fails(grid)
         name, u, uname = inp.block, self.unit, self.uname
         if bad.all():
             return (f"no place of the block {name} along its guide assembles it: the links "
                     "are too short or too long (check the lengths)")
+
+        def edge(good, wrong):  # bisection between a place that assembles and one that not
+            for _ in range(30):
+                mid = 0.5 * (good + wrong)
+                if fails([mid])[0]:
+                    wrong = mid
+                else:
+                    good = mid
+            return good
+
         ranges, i = [], 0
         while i < n:
             if bad[i]:
@@ -373,7 +385,9 @@ class _Compiler:
             j = i
             while j + 1 < n and not bad[j + 1]:
                 j += 1
-            ranges.append(f"{in_units(grid[i], u)} to {in_units(grid[j], u)} {uname}")
+            a = "beyond" if i == 0 else in_units(edge(grid[i], grid[i - 1]), u)
+            b = "beyond" if j == n - 1 else in_units(edge(grid[j], grid[j + 1]), u)
+            ranges.append(f"{a} to {b} {uname}")
             i = j + 1
         return (f"the block {name} can be placed only from s_{name} = about "
                 + ", or from ".join(ranges) + ": give a place there")

@@ -30,6 +30,7 @@ and then given a margin (``benchmarks/error_bounds.py``). The same formulas take
 
 from __future__ import annotations
 
+from .compiler import compile_plan
 from .kinematics import hypot
 from .steps.rounding import C_FLOOR, EPS, largest, vmax
 
@@ -50,7 +51,8 @@ def scales(motion) -> dict:
     (omega^2 + |alpha|) r); omega the largest |omega| (at least the crank's); alpha the
     largest |alpha| (at least omega^2 + |alpha| of the crank)."""
     sc = motion.scene
-    v0, a0, w, w2 = motion.plan.steps[0].input_scales(sc)
+    plan = getattr(motion, "plan", None) or compile_plan(sc)
+    v0, a0, w, w2 = plan.steps[0].input_scales(sc)  # the driver's (crank or block)
     return {
         "position": max(lk.length for lk in sc.links),
         "velocity": vmax(v0, largest([hypot(*v) for v in motion.V.values()])),
