@@ -366,6 +366,8 @@ def test_every_view_takes_a_block_driver(tmp_path, capsys):
     for argv in (["solve"], ["solve", "--json"], ["steps"], ["check"], ["centres"],
                  ["draw", "-o", str(tmp_path / "d.svg")],
                  ["draw", "--animate", "-o", str(tmp_path / "a.svg")],
+                 ["draw", "--diagram", "centres", "-o", str(tmp_path / "c.svg")],
+                 ["sweep", "--plot", str(tmp_path / "p.svg")],
                  ["sweep", "--steps", "36", "--summary"],
                  ["sweep", "--csv", str(tmp_path / "s.csv")],
                  ["page", "-o", str(tmp_path / "p.html")],
@@ -401,6 +403,22 @@ def test_bad_block_input_one_line(tmp_path, capsys, given, words):
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and words in err, err
     assert "[input]" in err or "step 2" in err, err  # the key, or the step that fails
+
+
+def test_a_torque_answer_is_refused(tmp_path, capsys):
+    f = tmp_path / "t.toml"
+    f.write_text(trammel(500, 700, 300, 2.0, -5.0)
+                 + '[loads]\nB = { force = [0, -100] }\n[answers]\ntorque = "3 N m"\n')
+    assert main(["check", str(f)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "a force along its guide" in err
+
+
+def test_a_centre_answer_is_checked(tmp_path, capsys):
+    f = tmp_path / "t.toml"  # I13 of the trammel: where the normals to the guides meet
+    f.write_text(trammel(500, 700, 300, 2.0, -5.0) + "[answers]\nI_13 = [300, 400]\n")
+    assert main(["check", str(f)]) == 0
+    assert "1 of 1 right" in capsys.readouterr().out
 
 
 def test_linkage_refuses_in_one_line(tmp_path, capsys):

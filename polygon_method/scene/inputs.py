@@ -251,6 +251,7 @@ class _Input:
                 raise self.error(f"the block's place s = {s / self.scale():.6g} {self.unit} is "
                                  f"outside its stroke {raw}", "input", "stroke")
             stroke = (a, b)
+        self.driving_block = name  # (a torque answer is refused: a block is driven by a force)
         return Input(None, None, name, s, vs, acc, printable(str(spec[vs_key])), block=name,
                      stroke=stroke)
 

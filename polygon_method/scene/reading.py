@@ -553,6 +553,7 @@ def parse_answers(text: str, scene: Scene, file: str | None = None, *,
     loader.index = scene._link_index
     loader.cylinder_list = scene.cylinders
     loader.two_inputs = scene.input.second is not None
+    loader.driving_block = scene.input.block
     loader.rolling_pairs = scene.rolling
     tolerance, answers = loader.answers(set(scene.point_names), scene.sliders, scene.pins,
                                         scene.loads)

@@ -21,7 +21,9 @@ __all__ = ["REQUIRED", "OPTIONAL", "Context", "State", "Step", "Vector", "Direct
 class Context:
     """What an evaluation needs besides the state: the input motion and the maths for
     floats or arrays. In scalar mode a failing step raises; in array mode it is masked
-    (``bad``, ``failures``) and the evaluation goes on."""
+    (``bad``, ``failures``) and the evaluation goes on. ``theta, omega, alpha``: the
+    crank's angle, speed and acceleration; for a driving block, its place s along its
+    guide, its velocity vs and acceleration as."""
 
     __slots__ = ("theta", "omega", "alpha", "array", "cond", "bad", "failures", "np",
                  "cos", "sin")
