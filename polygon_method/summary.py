@@ -189,6 +189,8 @@ class _Reducer:
         self.scene, self.sw = scene, sw
         self.plan = sw.plan
         self.best = {}  # name -> [max, imax, min, imin, unit, what]
+        dom = sw.domain  # the parameter's size of a radian: a driving block's travel / 2 pi
+        self.rad = 1.0 if dom.periodic else (dom.hi - dom.lo) / TWO_PI
 
     def values(self, fr: Motion):
         """(name, unit, array, what) of the quantities summarised, magnitudes made."""
@@ -329,7 +331,7 @@ class _Reducer:
                 t = float(theta[i])
                 a, b = t - spacing, t + spacing
                 (tm,), _ = dom.map(np.array([t]))
-                if any(abs(tc - tm) < 2 * spacing + 0.02 for tc in cps):
+                if any(abs(tc - tm) < 2 * spacing + 0.02 * self.rad for tc in cps):
                     continue  # values next to a change point are not refined
                 tasks.append([name, sense, a, b, row[2] if sense > 0 else row[4], t, row])
         if tasks:
@@ -373,7 +375,7 @@ class _Reducer:
         of its step gets 0 at the change point's angle, where that is within the requested
         angles ``lo`` to ``hi``."""
         dom = self.sw.domain
-        near = 2 * (spacing or 0.0) + 0.02
+        near = 2 * (spacing or 0.0) + 0.02 * self.rad
         for cp in dom.change_points:
             if not cp.followed:
                 continue
@@ -391,16 +393,17 @@ class _Reducer:
         """(name, sense) -> the limit position's angle, for the extremes found next to a limit position that grow without
         bound towards it (a toggle of the driven side: velocities as 1 / sqrt(d),
         accelerations as 1 / d^1.5, d the crank's distance from the limit). The quantity is
-        probed at 1e-2, 1e-3 and 1e-4 rad from the limit; it is unbounded where it grows
-        monotonically by more than five times."""
+        probed at 1e-2, 1e-3 and 1e-4 rad from the limit (for a driving block, those parts
+        of its travel over 2 pi); it is unbounded where it grows monotonically by more than
+        five times."""
         dom = self.sw.domain
         if dom.full_turn or not dom.limits:
             return {}
-        near = max(2.5 * (spacing or 0.0), 0.02)
+        near = max(2.5 * (spacing or 0.0), 0.02 * self.rad)
         found = {}
         for lp in dom.limits:
             inward = -1.0 if abs(lp.theta - dom.hi) < abs(lp.theta - dom.lo) else 1.0
-            probe = lp.theta + inward * np.array([1e-2, 1e-3, 1e-4])
+            probe = lp.theta + inward * self.rad * np.array([1e-2, 1e-3, 1e-4])
             fr = self.sw.evaluate(probe)
             q = {nm: np.asarray(arr, dtype=float) for nm, _, arr, _ in self.values(fr)}
             for nm, u, mx, tmx, mn, tmn, what in rows:

@@ -10,7 +10,7 @@ plan's input ``alpha``; the guide is fixed, so no centripetal and no Coriolis co
 >>> place(0.0, 0.0, 1.0, 0.0, 0.3)
 (0.3, 0.0, 1.0)
 >>> velocity(0.6, 0.8, 2.0)
-(1.2000000000000002, 1.6)
+(1.2, 1.6)
 """
 
 from __future__ import annotations
