@@ -260,7 +260,7 @@ class Sweeper:
                 f"{scene.units} from its place in the scene: the linkage is locked there"
                 + (f" ({lp.why})" if lp else ""), step=lp.step if lp else None,
                 file=scene.file)
-        if not dom.full_turn and dom.hi - dom.lo < _LOCKED:
+        if dom.periodic and not dom.full_turn and dom.hi - dom.lo < _LOCKED:
             lp = dom.limits[0] if dom.limits else None
             raise SingularStepError(
                 f"the crank can move only {math.degrees(dom.hi - dom.lo):.2g} deg from its "
