@@ -1,5 +1,7 @@
-"""Warm cost of the newer step kinds against a dyad's, and of a solve whose motion is given
-on another quantity against the same solve given the crank's speed.
+"""Warm cost of the newer step kinds against a dyad's, of a solve whose motion is given on
+another quantity against the same solve given the crank's speed, and of a chain driven by a
+block on a fixed guide (a block and a slider) against one driven by a crank (a crank and a
+slider).
 
 Each figure is the median of many warm ``solve`` calls (the plan compiled once, as for a
 student's repeated solve); a step's own cost is the difference between a scene with it and
@@ -58,6 +60,20 @@ CASES = {
     "slider crank + a cylinder Q-A": SLIDER.format(
         extra_links="", extra='[cylinders]\n"Q-A" = {}', extra_ground="Q = [-700, -300]",
         speed='speed = "10 rad/s ccw"'),
+    "ellipse trammel driven by block A (a block, a slider)": """
+[ground]
+O = [0, 0]
+[links]
+AB = 600
+[sliders]
+A = { path = "horizontal", through = "O" }
+B = { path = "vertical", through = "O" }
+[input]
+block = "A"
+s_A = 150
+vs_A = "5 m/s left"
+as_A = "-20 m/s^2"
+""",
     "four-bar": FOURBAR.format(extra_links=""),
     "four-bar + a dyad": FOURBAR.format(extra_links="CE = 60\nDE = 70\n"),
     "five-bar (a crank, a second crank, a dyad)": """
@@ -103,6 +119,9 @@ def main():
     print(f"a dyad's warm cost:              {dyad * 1e6:6.2f} us")
     print(f"a cylinder step's warm cost:     {cyl * 1e6:6.2f} us ({cyl / dyad:.2f} of a dyad)")
     print(f"a second crank's warm cost:      {five * 1e6:6.2f} us ({five / dyad:.2f} of a dyad)")
+    block = t["ellipse trammel driven by block A (a block, a slider)"] / \
+        t["slider crank, crank's speed given"]
+    print(f"a solve driven by a block / the same chain driven by a crank: {block:.2f}")
     given = t["slider crank, piston's speed given (vs_B)"] / \
         t["slider crank, crank's speed given"]
     print(f"a solve with the piston's speed given / with the crank's: {given:.2f}")

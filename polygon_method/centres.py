@@ -399,6 +399,8 @@ def _velocity_field(found, w, frm, i, x):
     if c.point is not None:
         return (-w[i] * (x[1] - c.point[1]), w[i] * (x[0] - c.point[0]))
     k = frm[i]  # a translating body: the velocity of its centre with k
+    if isinstance(k, tuple):  # the driving block: its given velocity
+        return k
     return _velocity_field(found, w, frm, k, found[(min(k, i), max(k, i))].point)
 
 
@@ -465,8 +467,11 @@ def _kennedy(key, found, n, scale):
 def _omegas(sol, names, found):
     """omega of every body, from the crank's by the angular-velocity-ratio theorem."""
     n = len(names)
-    w = {1: 0.0, 2: sol.scene.input.omega}
-    frm = {}
+    driver = sol.plan.steps[0]
+    if driver.periodic:  # a crank: body 2 turns at the input's omega
+        w, frm = {1: 0.0, 2: sol.scene.input.omega}, {}
+    else:  # a block driven along its guide: body 2 translates at its given velocity
+        w, frm = {1: 0.0, 2: 0.0}, {2: tuple(sol.V[driver.finds[0]])}
 
     def get(i, j):
         return found[(min(i, j), max(i, j))]

@@ -94,11 +94,21 @@ def centres_text(ic: Centres) -> str:
     for k in range(2, n + 1):
         w = ic.omegas[k]
         name = ic.bodies[k - 1]
+        c1j = ic.centre(1, k)
+        if k == 2 and c1j.point is None:  # a block driven along its guide
+            v = sol.V[sol.plan.steps[0].finds[0]]
+            out.append(f"  omega_{k} ({name}) = 0: {name} translates at "
+                       f"{math.hypot(*v):.4g} m/s along its guide (the input)")
+            continue
         if k == 2:
             out.append(f"  omega_{k} ({name}) = {fmt_angular(w, 'rad/s')} (the input)")
             continue
         i = ic.ratio_from.get(k, 2)
-        c1j = ic.centre(1, k)
+        if i == 2 and ic.centre(1, 2).point is None:  # from the driving block's velocity
+            out.append(f"  omega_{k} ({name}) = {fmt_angular(sol.shown(w, 'omega'), 'rad/s')} "
+                       f"(from the velocity of {ic.bodies[i - 1]} at "
+                       f"{ic.centre(i, k).label}, over its distance from {c1j.label})")
+            continue
         if c1j.point is None:
             out.append(f"  omega_{k} ({name}) = 0: I1{k} is at infinity, {name} translates")
             continue

@@ -39,6 +39,7 @@ from .numbers import in_units, quiet, sense
 from .plan import Bodies, Dims, Plan, _bodies_at
 from .scene import GuideSlider, Scene, key_line
 from .steps import TIERS, Context, Crank, cylinder
+from .steps.block import BlockDriver
 from .steps.second_crank import SecondCrank
 
 __all__ = ["compile_plan", "gruebler"]
@@ -317,6 +318,8 @@ class _Compiler:
             return np.broadcast_to(ctx.bad, (len(theta),))  # a step of fixed points: one
 
         two_pi = 2.0 * math.pi
+        if inp.block is not None:  # a block's place: a stretch of its guide either side
+            return self.reach_block(fails, n)
         grid = [inp.angle + two_pi * (k / n - 0.5) for k in range(n)]
         bad = fails(grid)
         crank = inp.crank
@@ -349,6 +352,46 @@ class _Compiler:
         return (f"the crank {crank} can be set only from " + ", or from ".join(ranges)
                 + ": give an angle there")
 
+    def reach_block(self, fails, n) -> str:
+        """Where the driving block can be placed so that the steps so far assemble: its
+        guide searched from its through point either way, as far as the links reach, past
+        the stated place too (each end to about 1e-6 of that reach)."""
+        sc, inp = self.scene, self.scene.input
+        span = 2.0 * sum(lk.length for lk in sc.links) + max(
+            (math.dist(xy, sc.slider(inp.block).through) for xy in sc.ground.values()),
+            default=0.0)
+        lo, hi = min(inp.angle, 0.0) - span, max(inp.angle, 0.0) + span
+        grid = [lo + (hi - lo) * k / (n - 1) for k in range(n)]
+        bad = fails(grid)
+        name, u, uname = inp.block, self.unit, self.uname
+        if bad.all():
+            return (f"no place of the block {name} along its guide assembles it: the links "
+                    "are too short or too long (check the lengths)")
+
+        def edge(good, wrong):  # bisection between a place that assembles and one that not
+            for _ in range(30):
+                mid = 0.5 * (good + wrong)
+                if fails([mid])[0]:
+                    wrong = mid
+                else:
+                    good = mid
+            return good
+
+        ranges, i = [], 0
+        while i < n:
+            if bad[i]:
+                i += 1
+                continue
+            j = i
+            while j + 1 < n and not bad[j + 1]:
+                j += 1
+            a = "beyond" if i == 0 else in_units(edge(grid[i], grid[i - 1]), u)
+            b = "beyond" if j == n - 1 else in_units(edge(grid[j], grid[j + 1]), u)
+            ranges.append(f"{a} to {b} {uname}")
+            i = j + 1
+        return (f"the block {name} can be placed only from s_{name} = about "
+                + ", or from ".join(ranges) + ": give a place there")
+
     def neighbours(self, name):
         out = set()
         for key in self.bodies_of(name):
@@ -360,8 +403,15 @@ class _Compiler:
     def run(self) -> Plan:
         sc = self.scene
         inp = sc.input
-        crank = self.bodies._links.get(inp.crank) or sc.link(inp.crank)
-        self.add(Crank(0, crank.key, inp.pivot, inp.tip, crank.length))
+        if inp.block is not None:  # a block on a fixed guide drives: its place is the input
+            path = sc.slider(inp.block)
+            named = [p for p, xy in sc.ground.items() if xy == path.through]
+            self.used_sliders.add(path.key)
+            self.add(BlockDriver(0, inp.block, path, named[0] if named else self.fmt(
+                path.through), self.unit, self.uname))
+        else:
+            crank = self.bodies._links.get(inp.crank) or sc.link(inp.crank)
+            self.add(Crank(0, crank.key, inp.pivot, inp.tip, crank.length))
         two = inp.second
         if two is not None:  # two degrees of freedom: the second crank is the next step
             link = sc.link(two.crank)

@@ -30,6 +30,7 @@ and then given a margin (``benchmarks/error_bounds.py``). The same formulas take
 
 from __future__ import annotations
 
+from .compiler import compile_plan
 from .kinematics import hypot
 from .steps.rounding import C_FLOOR, EPS, largest, vmax
 
@@ -70,14 +71,12 @@ def scales(motion) -> dict:
     (omega^2 + |alpha|) r); omega the largest |omega| (at least the crank's); alpha the
     largest |alpha| (at least omega^2 + |alpha| of the crank)."""
     sc = motion.scene
-    inp = sc.input
-    r = sc.link(inp.crank).length
-    w = abs(inp.omega)
-    w2 = inp.omega ** 2 + abs(inp.alpha)
+    plan = getattr(motion, "plan", None) or compile_plan(sc)
+    v0, a0, w, w2 = plan.steps[0].input_scales(sc)  # the driver's (crank or block)
     return {
         "position": max(lk.length for lk in sc.links),
-        "velocity": vmax(w * r, largest([hypot(*v) for v in motion.V.values()])),
-        "acceleration": vmax(w2 * r, largest([hypot(*a) for a in motion.A.values()])),
+        "velocity": vmax(v0, largest([hypot(*v) for v in motion.V.values()])),
+        "acceleration": vmax(a0, largest([hypot(*a) for a in motion.A.values()])),
         "omega": vmax(w, largest([abs(x) for x in motion.W.values()])),
         "alpha": vmax(w2, largest([abs(x) for x in motion.Al.values()])),
     }

@@ -71,7 +71,10 @@ def plot_figure(res: SweepResult, *, points=None, links=None):
         if sc.link(name).key not in keys:  # BC and CB are one link
             keys.append(sc.link(name).key)
     dom = res.domain
-    if dom.full_turn:
+    if not dom.periodic:  # a driving block's places, in the scene's units
+        deg = np.asarray(res.theta, dtype=float) / dom.unit
+        t0 = sc.input.angle / dom.unit
+    elif dom.full_turn:
         deg = res.degrees
         t0 = math.degrees(sc.input.angle)
     else:  # an axis continuous over the reachable range, starting in [-180, 180)
@@ -104,6 +107,9 @@ def plot_figure(res: SweepResult, *, points=None, links=None):
     w, k = abs(sc.input.omega), sc.input.omega ** 2 + abs(sc.input.alpha)
     size = max([lk.length for lk in sc.links] + [1e-3])
     scales = [w * size, k * size, w, k]
+    if not dom.periodic:  # a driving block: the sizes its input sets
+        v0, a0, w0, al0 = res.plan.steps[0].input_scales(sc)
+        scales = [v0, a0, w0, al0]
     for (ax, label, series), unit_scale in zip(panels, scales):
         big = []
         for i, (name, y, y0) in enumerate(series):
@@ -139,11 +145,15 @@ def plot_figure(res: SweepResult, *, points=None, links=None):
         ax.grid(True, lw=0.3)
         if series:
             ax.legend(fontsize=8, ncol=2)
+    block = sc.input.block
     for ax in axes[1]:
-        ax.set_xlabel("crank angle θ (°)")
+        ax.set_xlabel("crank angle θ (°)" if block is None else
+                      f"place s_{block} of block {block} ({sc.units})")
     title = sc.title or sc.file or "mechanism"
     key = (f"crank {sc.input.crank}; dashed: the scene's instant "
-           f"({math.degrees(sc.input.angle):g} deg)"
+           f"({math.degrees(sc.input.angle):g} deg)" if block is None else
+           f"block {block}; dashed: the scene's instant (s_{block} = "
+           f"{sc.input.angle / sc.length_unit:g} {sc.units})"
            + ("; dotted red: limit positions" if res.limits else "")
            + ("; dash-dot: change points" if res.change_points else ""))
     lines = textwrap.wrap(title, 90) + textwrap.wrap(key, 110)  # within the figure's width

@@ -49,11 +49,16 @@ def solution_text(sol: Solution) -> str:
     title = sc.title or (sc.file or "mechanism")
     lines.append(title)
     said = f" ({inp.angle_words})" if inp.angle_words else ""
-    lines.append(f"crank {inp.crank} at {math.degrees(inp.angle):g} deg{said}, "
-                 f"{fmt_angular(inp.omega, 'rad/s')}"
-                 + ("" if "rad/s" in inp.speed_text and inp.given is None
-                    else f" ({'from ' if inp.given else ''}{stated(inp)})")
-                 + (f", {fmt_angular(inp.alpha, 'rad/s^2')}" if inp.alpha else ""))
+    driver = sol.plan.steps[0]
+    own = driver.input_words(sc)  # a block driver's; a crank's are written here
+    if own is not None:
+        lines.append(own)
+    else:
+        lines.append(f"crank {inp.crank} at {math.degrees(inp.angle):g} deg{said}, "
+                     f"{fmt_angular(inp.omega, 'rad/s')}"
+                     + ("" if "rad/s" in inp.speed_text and inp.given is None
+                        else f" ({'from ' if inp.given else ''}{stated(inp)})")
+                     + (f", {fmt_angular(inp.alpha, 'rad/s^2')}" if inp.alpha else ""))
     two = inp.second
     if two is not None:
         lines.append(f"second input: crank {two.crank} at {math.degrees(two.angle):g} deg, "
@@ -124,7 +129,8 @@ def solution_text(sol: Solution) -> str:
     if sol.input_torque is not None:
         lines.append("")
         t = tidied(sol).input_torque  # from the velocities without rounding noise
-        lines.append(f"input torque on {inp.crank}: {fmt_angular(t, 'N m')} "
+        lines.append(driver.effort_words(t) if own is not None else
+                     f"input torque on {inp.crank}: {fmt_angular(t, 'N m')} "
                      "(power balance, no friction or inertia)")
     lines += forces_lines(sol)
     lines.append("")

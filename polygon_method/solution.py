@@ -229,11 +229,18 @@ class Solution(Motion):
                 if len(r.bodies) > 2:
                     entry["pairs"] = dict(r.pairs)
                 d["pins"][name] = entry
-        if sc.loads and sc.input.second is None:  # two inputs: no one torque
-            d["input_torque"] = self.input_torque
         inp = sc.input
-        d["input"] = {"crank": inp.crank, "angle": inp.angle, "omega": inp.omega,
-                      "alpha": inp.alpha}
+        if sc.loads and sc.input.second is None:  # two inputs: no one torque
+            # a block driver: the force along its guide (N, signed along it)
+            d["input_torque" if inp.block is None else "input_force"] = self.input_torque
+        if inp.block is not None:  # a block driven along its guide: its place and rates
+            d["input"] = {"block": inp.block, "s": inp.angle, "vs": inp.omega,
+                          "as": inp.alpha, "direction": list(sc.slider(inp.block).u)}
+            if inp.stroke is not None:
+                d["input"]["stroke"] = list(inp.stroke)
+        else:
+            d["input"] = {"crank": inp.crank, "angle": inp.angle, "omega": inp.omega,
+                          "alpha": inp.alpha}
         refused = self.forces_refused
         if sc.has_forces:
             d["forces"] = None if refused else forces_dict(self.forces)

@@ -191,6 +191,13 @@ def _config(doc, sol, space):
                 if d > 0:
                     facts.append(f"{a}{b} = {fmt(d / u, 5)} {sc.units} (between the fixed "
                                  "points)")
+    driver = sol.plan.steps[0]
+    if not driver.periodic:  # a block driven along its guide: its place is given
+        facts.append(f"driving {driver.title}, at s_{inp.tip} = {_len_unit(sol, inp.angle)} "
+                     f"from {driver.origin} along it (given)")
+        _slider_facts(facts, sc, u)
+        _drawing(doc, sol, space, facts)
+        return
     ang = math.degrees(inp.angle)
     said = f"{inp.angle_words}; " if inp.angle_words else ""
     crank_dir = f"crank {inp.crank} at {fmt(ang, 5)} deg ({said}direction {inp.pivot}" \
@@ -203,7 +210,14 @@ def _config(doc, sol, space):
         between = abs((inp.angle - ref + math.pi) % (2 * math.pi) - math.pi)
         crank_dir += f"; angle {others[0]}{inp.pivot}{inp.tip} = {fmt(math.degrees(between), 4)} deg"
     facts.append(crank_dir)
+    _slider_facts(facts, sc, u)
+    _drawing(doc, sol, space, facts)
+
+
+def _slider_facts(facts, sc, u):
     for s in sc.sliders:
+        if s.point == sc.input.block:  # the driving block: said above
+            continue
         if s.slot:  # a peg in two slots
             facts.append(f"peg {s.point} in the slot of {s.guide}" if isinstance(s, GuideSlider)
                          else f"peg {s.point} in a fixed {s.label} slot through "
@@ -219,6 +233,10 @@ def _config(doc, sol, space):
             facts.append(f"block {s.point} slides in the {s.label} slot of yoke {s.yoke}")
         else:
             facts.append(f"block {s.point} slides along {s.guide}")
+
+
+def _drawing(doc, sol, space, facts):
+    sc, u = sol.scene, sol.scene.length_unit
     doc.items(facts)
     doc.p("Drawing the configuration:")
     doc.items([_position_words(sol, st, space) for st in sol.plan.steps])
@@ -242,13 +260,25 @@ def _which(sol, X):
 
 def _position_words(sol, st, space) -> str:
     L = lambda x: f"{_len_unit(sol, x)} ({space.cm(x):.2f} cm)"  # noqa: E731
-    angle = fmt(math.degrees(sol.scene.input.angle), 5)
+    inp = sol.scene.input
+    angle = (fmt(math.degrees(inp.angle), 5) if sol.plan.steps[0].periodic
+             else _len_unit(sol, inp.angle))  # a block driver's place along its guide
     return st.position_words(L, lambda point: _which(sol, point), angle)
 
 
 def _input(doc, sol):
     sc = sol.scene
     inp = sc.input
+    driver = sol.plan.steps[0]
+    if not driver.periodic:  # a block driven along its guide: its velocity and rate given
+        doc.h(f"2. Input block {inp.tip}")
+        vs, a_s = inp.omega, inp.alpha
+        doc.items([f"vs_{inp.tip} = {fmt(abs(vs))} m/s {driver.sense(vs)} along the guide "
+                   "(given)",
+                   f"as_{inp.tip} = {fmt(abs(a_s))} m/s^2 {driver.sense(a_s)} along the guide "
+                   "(given)" if a_s else
+                   f"as_{inp.tip} = 0 (the block moves at a steady speed)"])
+        return
     doc.h(f"2. Input link {inp.crank}" + (f" and {inp.second.crank}" if inp.second else ""))
     working, _ = _speed_working(sol)
     r = sc.link(inp.crank).length
@@ -467,7 +497,9 @@ def _torque_items(sol):
     if sol.input_torque is None:
         return []
     inp = sc.input
-    out = [f"power balance (no friction, no inertia): T omega_{inp.crank} + sum F . v = 0"]
+    block = not sol.plan.steps[0].periodic  # a block driver: a force along its guide
+    out = [f"power balance (no friction, no inertia): "
+           + (f"F vs_{inp.tip}" if block else f"T omega_{inp.crank}") + " + sum F . v = 0"]
     for load, (target, p) in zip(sc.loads, sol.power_terms):
         if load.force is not None:
             F = math.hypot(*load.force)
@@ -485,6 +517,10 @@ def _torque_items(sol):
                        f"{fmt(load.torque)} x {fmt(sol.W[target])} = {fmt(p)} W")
     total = sum(p for _, p in sol.power_terms)
     t = sol.input_torque
+    if block:
+        out.append(f"F = -(sum F . v) / vs_{inp.tip} = {fmt(-total)} / {fmt(inp.omega)} = "
+                   f"{fmt(t)} N along the guide ({sol.plan.steps[0].sense(t)})")
+        return out
     out.append(f"T = -(sum F . v) / omega_{inp.crank} = {fmt(-total)} / {fmt(inp.omega)} = "
                f"{fmt(abs(t))} N m {sense_word(t)}".rstrip())
     return out
@@ -507,7 +543,7 @@ def _readoffs(doc, sol, vscale):
               "magnitudes when the two turn in opposite senses, the difference when alike):")
         doc.items(_rubbing_items(sol))
     if sol.input_torque is not None:
-        doc.p("Input torque:")
+        doc.p("Input torque:" if sol.plan.steps[0].periodic else "Input force:")
         doc.items(_torque_items(sol))
 
 

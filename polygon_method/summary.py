@@ -14,7 +14,7 @@ from .kinematics import Motion
 from .numbers import quiet
 from .scene import FixedPath, Scene
 from .sweeps import (SweepResult, rubbing_arrays, select, torque_array, angles_ok,
-                    evaluate_all, sweep_angles)
+                     evaluate_all, stroke_places, sweep_angles)
 from .compiler import compile_plan
 from .tracking import (CHUNK, TWO_PI, Sweeper, branch_steps, degrees_fn, fmt_deg, tune_malloc,
                        valid_mask)
@@ -74,6 +74,8 @@ class Summary:
 
     def text(self) -> str:
         sc = self.scene
+        if sc.input.block is not None:
+            return self._block_text()
         inp = sc.input
         if inp.given is not None:
             g = inp.given
@@ -111,10 +113,48 @@ class Summary:
             out.append(f"change point at crank angle {fmt_deg(deg(cp.theta))} deg: {cp.why}")
         out.extend(self.notes)
         out.append("")
+        self._table(out, "deg")
+        return "\n".join(out)
+
+    def _block_text(self) -> str:
+        """The text of a sweep over a driving block's stroke: places in the scene's units."""
+        sc = self.scene
+        inp, uname = sc.input, sc.units
+        driver = compile_plan(sc).steps[0]
+        deg = self.deg
+        out = [f"sweep of {sc.title or sc.file or 'the mechanism'}",
+               f"block {inp.block} at {abs(inp.omega):.6g} m/s {driver.sense(inp.omega)}"
+               + (f", {abs(inp.alpha):.6g} m/s^2 {driver.sense(inp.alpha)}" if inp.alpha
+                  else "") + f" at every place; {self.evaluated} of {self.requested} places "
+               f"s_{inp.block} along its guide evaluated"]
+        if self.range_deg is not None:
+            lo, hi = self.range_deg
+            out.append(f"the block {inp.block} travels from s_{inp.block} = {lo:.6g} to "
+                       f"{hi:.6g} {uname} on the scene's branch"
+                       + (" (its stated stroke)" if inp.stroke is not None and all(
+                           lp.step == driver.label for lp in self.limits) else ""))
+            for lp in self.limits:
+                out.append(f"  end at s_{inp.block} = {deg(lp.theta):.6g} {uname}: {lp.step}: "
+                           f"{lp.why}")
+        if self.evaluated < self.requested:
+            out.append(f"  {self.requested - self.evaluated} requested place(s) are left out "
+                       "(beyond the ends of its travel, or singular)")
+        for cp in self.change_points:
+            out.append(f"change point at s_{inp.block} = {deg(cp.theta):.6g} {uname}: "
+                       f"{cp.why}")
+        out.extend(self.notes)
+        out.append("")
+        self._table(out, uname)
+        return "\n".join(out)
+
+    def _table(self, out, unit):
+        """The table of extremes, each at its parameter (crank angle in deg, or a block's
+        place in ``unit``)."""
+        at = f"at ({unit})"
         if self.extremes:
             w = max(len(e.name) for e in self.extremes)
-            out.append(f"{'quantity':<{w}}  {'unit':<7} {'maximum':>12} {'at (deg)':>10}"
-                       f" {'minimum':>12} {'at (deg)':>10}")
+            out.append(f"{'quantity':<{w}}  {'unit':<7} {'maximum':>12} {at:>10}"
+                       f" {'minimum':>12} {at:>10}")
             for e in self.extremes:
                 if e.constant:
                     out.append(f"{e.name:<{w}}  {e.unit:<7} {e.maximum:>12.6g} "
@@ -132,11 +172,10 @@ class Summary:
                                        (e.min_unbounded, e.at_min, "falls")):
                     if flag:
                         out.append(f"{'':<{w}}  ({word} without bound towards the limit "
-                                   f"position at {fmt_deg(at, 3)} deg)")
+                                   f"position at {fmt_deg(at, 3)} {unit})")
         if self.formulas:
             out.append("")
             out.extend(self.formulas)
-        return "\n".join(out)
 
 
 #: angles times points evaluated at once when refining extremes (about 100 MB of arrays)
@@ -165,6 +204,8 @@ class _Reducer:
         self.scene, self.sw = scene, sw
         self.plan = sw.plan
         self.best = {}  # name -> [max, imax, min, imin, unit, what]
+        dom = sw.domain  # the parameter's size of a radian: a driving block's travel / 2 pi
+        self.rad = 1.0 if dom.periodic else (dom.hi - dom.lo) / TWO_PI
 
     def values(self, fr: Motion):
         """(name, unit, array, what) of the quantities summarised, magnitudes made."""
@@ -201,7 +242,9 @@ class _Reducer:
             for pin, r in rubbing_arrays(plan, fr.W, fr.n).items():
                 yield f"rub_{pin}", "m/s", r, "rubbing"
         t = torque_array(sc, fr.V, fr.W, self.sw.omega, fr.n)
-        if t is not None:
+        if t is not None and sc.input.block is not None:  # the force driving the block
+            yield "force", "N", t, "input force, along the guide"
+        elif t is not None:
             yield "torque", "N m", t, "input torque, ccw +"
         for st in branch_steps(plan):
             name, unit, words = st.condition_column()  # "deg": the sine, shown as the angle
@@ -319,7 +362,7 @@ class _Reducer:
                         continue  # the end of the requested range: its own value
                     a, b = t - spacing, t + spacing  # (beyond a limit: left out)
                     (tm,), _ = dom.map(np.array([t]))
-                    if any(abs(tc - tm) < 2 * spacing + 0.02 for tc in cps):
+                    if any(abs(tc - tm) < 2 * spacing + 0.02 * self.rad for tc in cps):
                         continue  # values next to a change point are not refined
                     val = (row[2] if sense > 0 else row[4]) if k == i else -sense * math.inf
                     tasks.append([name, sense, a, b, val, t, row])
@@ -364,7 +407,7 @@ class _Reducer:
         of its step gets 0 at the change point's angle, where that is within the requested
         angles ``lo`` to ``hi``."""
         dom = self.sw.domain
-        near = 2 * (spacing or 0.0) + 0.02
+        near = 2 * (spacing or 0.0) + 0.02 * self.rad
         for cp in dom.change_points:
             if not cp.followed:
                 continue
@@ -402,7 +445,7 @@ class _Reducer:
         there is marked so (:meth:`_unbounded`)."""
         scales = self._scales()
         for lp, inward in self._limits_in(theta, spacing):
-            pts = lp.theta + inward * np.array((0.0,) + _AT_LIMIT)
+            pts = lp.theta + inward * self.rad * np.array((0.0,) + _AT_LIMIT)
             fr = self.sw.evaluate(pts)
             q = {nm: (u, np.asarray(arr, dtype=float)) for nm, u, arr, _ in self.values(fr)}
             for row in rows:
@@ -430,13 +473,14 @@ class _Reducer:
         without bound towards a limit position within the requested angles (a toggle of the
         driven side: velocities as 1 / sqrt(d), accelerations as 1 / d^1.5, d the crank's
         distance from the limit), wherever its sampled extreme is. The quantity is probed
-        at 1e-2, 1e-3 and 1e-4 rad from the limit; it is unbounded where its size grows,
+        at 1e-2, 1e-3 and 1e-4 rad from the limit (for a driving block, those parts of its
+        travel over 2 pi); it is unbounded where its size grows,
         with one sign, by more than twice each decade (as d^-0.5 does, 3.2 times: a
         quantity that tends to a finite value, even one that passes 0 near the first
         probe, does not grow so over the last decade)."""
         found = {}
         for lp, inward in self._limits_in(theta, spacing):
-            probe = lp.theta + inward * np.array([1e-2, 1e-3, 1e-4])
+            probe = lp.theta + inward * self.rad * np.array([1e-2, 1e-3, 1e-4])
             fr = self.sw.evaluate(probe)
             q = {nm: np.asarray(arr, dtype=float) for nm, _, arr, _ in self.values(fr)}
             for nm, u, mx, tmx, mn, tmn, what in rows:
@@ -453,6 +497,10 @@ class _Reducer:
     def _scales(self) -> dict:
         """Typical sizes per unit, below a 1e-9 part of which a value is zero (rounding)."""
         sc = self.scene
+        if not self.sw.driver.periodic:  # a block driver: the sizes its input sets
+            v, a, w, k = self.sw.driver.input_scales(sc)
+            return {"rad/s": w, "rad/s^2": k, "m/s": v, "m/s^2": a,
+                    "m": max([lk.length for lk in sc.links])}
         w = abs(self.sw.omega)
         k = w * w + abs(self.sw.alpha)
         lengths = [lk.length for lk in sc.links] + [math.hypot(*xy) for xy in
@@ -477,6 +525,8 @@ def summarize(scene: Scene, angles=None, *, chunk: int = CHUNK, refine: bool = T
     """Maxima and minima of every quantity over ``angles`` (rad; default every degree),
     reduced chunk by chunk: memory stays that of one chunk whatever the number of angles.
     Each extreme found between samples is then refined by zooming in on it."""
+    if angles is None and scene.input.block is not None:
+        angles = stroke_places(scene)  # a driving block: its travel
     th_req = sweep_angles(angles)
     sw = Sweeper(scene)
     sw.stated_branch()

@@ -35,7 +35,8 @@ from .scene import Scene
 from .tracking import CHUNK, Domain, Sweeper, _motion, run_arrays, valid_mask
 from .units import ABSURD
 
-__all__ = ["sweep", "SweepResult", "evaluate_all", "angles_ok", "sweep_angles", "CHUNK"]
+__all__ = ["sweep", "SweepResult", "evaluate_all", "angles_ok", "sweep_angles", "stroke_places",
+           "CHUNK"]
 
 
 # --------------------------------------------------------------------------- the result
@@ -88,7 +89,8 @@ class SweepResult(Motion):
         ``error_bound``, last, ``err_max``: the largest estimated relative error of any
         quantity at that angle (:mod:`polygon_method.errorbound`)."""
         sc = self.scene
-        cols = [("theta", "deg", self.degrees)]
+        cols = ([("theta", "deg", self.degrees)] if sc.input.block is None
+                else [(f"s_{sc.input.block}", "m", self.theta)])  # a block driver's place
         for p in sc.point_names:
             (x, y), (vx, vy), (ax, ay) = self.P[p], self.V[p], self.A[p]
             cols += [(f"x_{p}", "m", x), (f"y_{p}", "m", y), (f"vx_{p}", "m/s", vx),
@@ -211,6 +213,19 @@ def _patch(fr: Motion, fix: Motion, idx):
             fr.cond[i][idx] = np.maximum(fr.cond[i][idx], TOL.singular)
 
 
+def stroke_places(scene: Scene, n: int = 361):
+    """``n`` places of a driving block (m, along its guide), evenly from one end of its
+    travel to the other: its stated stroke, both ends included; or, where the mechanism
+    stops assembling (a singular end: :class:`~polygon_method.tracking.Sweeper`), the
+    middles of ``n`` equal parts of its travel."""
+    sw = Sweeper(scene)
+    dom = sw.domain
+    if all(lp.step == sw.driver.label for lp in dom.limits):  # the stated stroke's ends
+        return np.linspace(dom.lo, dom.hi, n) if n > 1 else np.array([dom.lo])
+    # an end where the mechanism stops assembling is singular: the middles of n parts
+    return dom.lo + (dom.hi - dom.lo) * (np.arange(n) + 0.5) / n
+
+
 def sweep_angles(angles):
     if angles is None:
         return np.radians(np.arange(360.0))
@@ -236,6 +251,8 @@ def sweep(scene: Scene, angles=None, *, chunk: int = CHUNK) -> SweepResult:
     Angles the crank cannot reach on the scene's branch (beyond a limit position) are left
     out and reported (``left_out``, ``limits``), never filled with NaN or another branch.
     """
+    if angles is None and scene.input.block is not None:
+        angles = stroke_places(scene)
     th_req = sweep_angles(angles)
     if isinstance(chunk, bool) or not isinstance(chunk, (int, np.integer)) or chunk < 1:
         raise SceneError(f"chunk = {chunk!r}: a whole number of crank angles, 1 or more")

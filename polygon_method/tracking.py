@@ -115,10 +115,20 @@ class Domain:
     limits: tuple = ()
     change_points: tuple = ()
     notes: tuple = ()
+    #: False where the parameter is a block driver's place along its guide (m): nothing
+    #: repeats, ``lo`` and ``hi`` are the ends of its stroke
+    periodic: bool = True
+    #: a block driver's places are shown in the scene's length unit: metres per unit
+    unit: float = 1.0
 
     def map(self, theta):
         """Crank angles (rad, any turn) -> the same angles in ``[lo, lo + 2 pi)`` and a mask
-        of those the crank reaches."""
+        of those the crank reaches (a block driver's places: themselves, and a mask of those
+        in its stroke)."""
+        if not self.periodic:
+            t = np.asarray(theta, dtype=float)
+            tol = 1e-12 * max(abs(self.lo), abs(self.hi), self.hi - self.lo)
+            return t, (t >= self.lo - tol) & (t <= self.hi + tol)
         t = self.lo + np.mod(np.asarray(theta, dtype=float) - self.lo, TWO_PI)
         if self.full_turn:
             return t, np.ones(t.shape, dtype=bool)
@@ -233,11 +243,24 @@ class Sweeper:
         self.plan = compile_plan(scene)
         inp = scene.input
         self.theta0, self.omega, self.alpha = inp.angle, inp.omega, inp.alpha
+        self.driver = self.plan.steps[0]
+        #: the parameter's scouting span: a turn of a crank; a block's guide as far as the
+        #: links reach either side of its place (a length)
+        self.period = TWO_PI if self.driver.periodic else _block_span(scene)
         dom = _DOMAINS.get(self.plan)
         if dom is None:
-            dom = _DOMAINS[self.plan] = self._explore()
+            dom = _DOMAINS[self.plan] = (self._explore() if self.driver.periodic
+                                         else self._stroke())
         self.domain = dom
-        if not dom.full_turn and dom.hi - dom.lo < _LOCKED:
+        if not dom.periodic and dom.hi - dom.lo < _LOCKED * self.period / TWO_PI:
+            lp = dom.limits[0] if dom.limits else None
+            u = scene.length_unit
+            raise SingularStepError(
+                f"the block {inp.block} can move only {(dom.hi - dom.lo) / u:.2g} "
+                f"{scene.units} from its place in the scene: the linkage is locked there"
+                + (f" ({lp.why})" if lp else ""), step=lp.step if lp else None,
+                file=scene.file)
+        if dom.periodic and not dom.full_turn and dom.hi - dom.lo < _LOCKED:
             lp = dom.limits[0] if dom.limits else None
             raise SingularStepError(
                 f"the crank can move only {math.degrees(dom.hi - dom.lo):.2g} deg from its "
@@ -287,6 +310,40 @@ class Sweeper:
         cps = tuple(sorted(lcps + rcps, key=lambda c: c.theta))
         return Domain(lo, hi, full, tuple(segs), limits, cps, tuple(notes))
 
+    def _stroke(self) -> Domain:
+        """The places a driving block reaches from the scene's on its branch: its stated
+        stroke, cut short where the mechanism stops assembling; without a stroke, the
+        first and last places that assemble, which must lie within the links' reach."""
+        sc, t0 = self.scene, self.theta0
+        stroke = sc.input.stroke
+        ends, segs, cps, limits = [], [], [], []
+        for direction in (-1, +1):
+            end = None if stroke is None else stroke[(direction + 1) // 2]
+            budget = self.period if end is None else abs(end - t0)
+            wsegs, wcps, lim = self._walk(direction, budget)
+            if lim is None and end is None:
+                raise SceneError(
+                    f"the block {sc.input.block} can travel {('back', 'on')[(direction + 1) // 2]} from its place "
+                    f"without limit (nothing in the mechanism stops it within "
+                    f"{self.period / sc.length_unit:.6g} {sc.units}): state its stroke, "
+                    "[input] stroke = [from, to]", file=sc.file, key="[input] stroke")
+            if lim is None:
+                lim = LimitPosition(end, self.driver.label, self.driver.limit_why())
+            limits.append(lim)
+            ends.append(lim.theta)
+            cps += wcps
+            segs += [(b, a, p) for a, b, p in reversed(wsegs)] if direction < 0 else wsegs
+        merged = []
+        for a, b, p in segs:
+            if merged and self._flips(merged[-1][2]) == self._flips(p):
+                merged[-1] = (merged[-1][0], b, merged[-1][2])
+            elif b > a or not merged:
+                merged.append((a, b, p))
+        segs = [(a, b, p) for a, b, p in merged if b > a] or merged[:1]
+        cps = tuple(sorted(cps, key=lambda c: c.theta))
+        return Domain(ends[0], ends[1], False, tuple(segs), tuple(limits), cps, (), False,
+                      sc.length_unit)
+
     def _flips(self, plan):
         return tuple(s.sigma for s in plan.steps if hasattr(s, "sigma"))
 
@@ -298,7 +355,7 @@ class Sweeper:
         segs, cps = [], []
         while budget - done > 1e-12:
             left = budget - done
-            n = max(65, int(SCOUT * left / TWO_PI) + 2)
+            n = max(65, int(SCOUT * left / self.period) + 2)
             grid = start + direction * np.linspace(0.0, left, n)
             fr = self._scout(plan, grid)
             last = next(st for st in reversed(self.plan.steps) if st.finds)
@@ -500,6 +557,14 @@ class Sweeper:
         return _motion(th, P, V, A, W, Al, S, base.cond, base.bad)
 
 
+def _block_span(scene) -> float:
+    """How far along its guide a driving block is searched for the ends of its travel,
+    either side of its place: twice the links' lengths and the ground's extent (m)."""
+    path = scene.slider(scene.input.block)
+    return 2.0 * sum(lk.length for lk in scene.links) + max(
+        (math.dist(xy, path.through) for xy in scene.ground.values()), default=0.0)
+
+
 def merge(theta, frames) -> Motion:
     """One motion from the motions of several index sets (``frames``: key -> (index, motion))."""
     n = len(theta)
@@ -541,13 +606,15 @@ def fmt_deg(d, digits=4) -> str:
 def degrees_fn(dom: Domain):
     """Radians -> the degrees shown, within one turn, [0, 360): for a full turn and for a
     crank that reaches only a range alike (a range that passes 0 is written "300 to 40
-    (through 0)")."""
+    (through 0)"). A block driver's places (m) are shown in the scene's length unit
+    instead."""
+    if not dom.periodic:
+        return lambda t: float(t) / dom.unit
+
     def deg(t):
         d = math.degrees(t) % 360.0
         return 0.0 if d >= 360.0 - 5e-4 else d
     return deg
-
-
 
 
 #: samples this close to a change point (rad) get their values from both sides

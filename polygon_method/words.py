@@ -86,6 +86,36 @@ def given(sc) -> list:
                   if c.stroke else "")
         out.append(f"A hydraulic cylinder {c.key}: its barrel pivoted at {c.barrel}, its rod "
                    f"pinned at {c.rod}{stroke}.")
+    if sc.input.block is not None:  # a block driven along its guide: its place and motion
+        out.append(_block_words(sc))
+    else:
+        _crank_words(sc, out)
+    for pin in sc.pins:
+        size = pin.radius * (2 if pin.given == "diameter" else 1)
+        out.append(f"Pin at {pin.point}: {pin.given} {_len(sc, size)}.")
+    for ld in sc.loads:
+        if ld.gas is not None:
+            fx, fy = ld.force
+            out.append(f"The gas pressure on the piston {ld.target} is {ld.gas[2]}, pushing "
+                       f"it at {fmt(math.degrees(math.atan2(fy, fx)) % 360)}°.")
+        elif ld.force is not None:
+            fx, fy = ld.force
+            out.append(f"A force of {fmt(math.hypot(fx, fy))} N acts at {ld.target} at "
+                       f"{fmt(math.degrees(math.atan2(fy, fx)) % 360)}°.")
+        elif ld.torque is not None:
+            out.append(f"A torque of {fmt(abs(ld.torque))} N m {sense(ld.torque)} acts on "
+                       f"link {ld.target}.")
+    for m in sc.masses:
+        what = f"The block {m.body}" if m.block else f"Link {m.body}"
+        out.append(f"{what} has a mass of {_given(m.mass)} kg"
+                   + ("." if m.block else f", its {m.how}."))
+    if sc.gravity is not None:
+        out.append(f"Gravity acts: {sc.gravity.text}.")
+    return out
+
+
+def _crank_words(sc, out):
+    """The driving crank (and a second one) in words, appended to ``out``."""
     inp = sc.input
     words = (f"The crank {inp.crank} turns about {inp.pivot}; at the instant shown it makes "
              f"{fmt(math.degrees(inp.angle) % 360)}° with the x axis (counter-clockwise"
@@ -109,28 +139,32 @@ def given(sc) -> list:
                    f"axis, turning at {two.speed_text}"
                    + (f", with an angular acceleration of {fmt(abs(two.alpha))} rad/s² "
                       f"{sense(two.alpha)}" if two.alpha else "") + ".")
-    for pin in sc.pins:
-        size = pin.radius * (2 if pin.given == "diameter" else 1)
-        out.append(f"Pin at {pin.point}: {pin.given} {_len(sc, size)}.")
-    for ld in sc.loads:
-        if ld.gas is not None:
-            fx, fy = ld.force
-            out.append(f"The gas pressure on the piston {ld.target} is {ld.gas[2]}, pushing "
-                       f"it at {fmt(math.degrees(math.atan2(fy, fx)) % 360)}°.")
-        elif ld.force is not None:
-            fx, fy = ld.force
-            out.append(f"A force of {fmt(math.hypot(fx, fy))} N acts at {ld.target} at "
-                       f"{fmt(math.degrees(math.atan2(fy, fx)) % 360)}°.")
-        elif ld.torque is not None:
-            out.append(f"A torque of {fmt(abs(ld.torque))} N m {sense(ld.torque)} acts on "
-                       f"link {ld.target}.")
-    for m in sc.masses:
-        what = f"The block {m.body}" if m.block else f"Link {m.body}"
-        out.append(f"{what} has a mass of {_given(m.mass)} kg"
-                   + ("." if m.block else f", its {m.how}."))
-    if sc.gravity is not None:
-        out.append(f"Gravity acts: {sc.gravity.text}.")
-    return out
+
+
+def _block_words(sc) -> str:
+    """The driving block in words: its guide, its place and its motion."""
+    inp = sc.input
+    path = sc.slider(inp.block)
+    named = [p for p, xy in sc.ground.items() if xy == path.through]
+    origin = named[0] if named else _at(sc, path.through)
+    guide = (f"the {path.label} guide" if path.label in ("horizontal", "vertical")
+             else f"the guide at {path.label}")
+    vs, a_s = inp.omega, inp.alpha
+
+    def way(v):
+        ux, uy = path.u if v >= 0 else (-path.u[0], -path.u[1])
+        for (wx, wy), word in (((1, 0), "to the right"), ((-1, 0), "to the left"),
+                               ((0, 1), "upwards"), ((0, -1), "downwards")):
+            if abs(ux - wx) < 1e-12 and abs(uy - wy) < 1e-12:
+                return word
+        return f"at {fmt(math.degrees(math.atan2(uy, ux)) % 360)}°"
+
+    return (f"The block {inp.block} drives the mechanism, sliding on {guide} through "
+            f"{origin}; at the instant shown it is {_len(sc, abs(inp.angle))} from {origin}"
+            + (f" ({'+' if inp.angle >= 0 else '-'} along the guide)" if inp.angle else "")
+            + f", moving at {fmt(abs(vs))} m/s {way(vs)}"
+            + (f", with an acceleration of {fmt(abs(a_s))} m/s² {way(a_s)}" if a_s else
+               ", steadily") + ".")
 
 
 _SIDE = {"left": "to the left", "right": "to the right"}

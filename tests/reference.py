@@ -22,6 +22,9 @@ the coordinates ``q`` (x, y of every non-ground point):
 * a rack R on a fixed path (T, u) meshing with a pinion about O:  ``(R - T).u - k K (th - th0)
   = 0`` with k = -(T - O).perp(u) (the pinion's point at the pitch point moves as the rack)
   and K the pinion's turns per turn of the crank (with the path's equation above).
+* a driving block X on its fixed path (T, u) ([input] block): ``(X - T).u - s = 0`` (with the
+  path's equation above), ``s(t) = s0 + vs t + as t^2 / 2``: the "crank angle" th is s,
+  ``f_t = -vs``, ``gamma = -as``
 * a pin X in the slot of a translating yoke Y (a block on a fixed path), the slot along
   the fixed unit d:  ``cross(X - Y, d) = 0`` (linear: ``gamma = 0``)
 * a peg in two slots: one of the two above for each slot (two equations for its point);
@@ -112,9 +115,13 @@ def _equations(scene):
         if two is not None and lk.key == scene.link(two.crank).key:
             continue
         eqs.append(("link", (lk.p, lk.q, mpf(lk.length))))
-    crank = scene.link(inp.crank)
-    eqs.append(("crank", (inp.pivot, inp.tip, mpf(crank.length), 0)))
-    eqs.append(("crank", (inp.pivot, inp.tip, mpf(crank.length), 1)))
+    if getattr(inp, "block", None) is not None:  # a block driven along its fixed path
+        sl = scene.slider(inp.block)
+        eqs.append(("block", (inp.block, _v(sl.through), _unit(_v(sl.u)))))
+    else:
+        crank = scene.link(inp.crank)
+        eqs.append(("crank", (inp.pivot, inp.tip, mpf(crank.length), 0)))
+        eqs.append(("crank", (inp.pivot, inp.tip, mpf(crank.length), 1)))
     two = getattr(inp, "second", None)
     if two is not None:  # a second driven crank, at its own angle, speed and acceleration
         r2 = mpf(scene.link(two.crank).length)
@@ -241,6 +248,9 @@ def _eval(kind, d, P, th):
         x, through, u = d
         a = _sub(P[x], through)
         return _cross(a, u), [(x, u[1], -u[0])]
+    if kind == "block":  # the driving block's place along its path: th is s
+        x, through, u = d
+        return _dot(_sub(P[x], through), u) - th, [(x, u[0], u[1])]
     if kind == "yoke":
         x, y, u = d
         a = _sub(P[x], P[y])
@@ -366,6 +376,8 @@ def reference_solution(scene, guess_positions):
         elif kind == "crank2":
             o, tip, _, c, _, w2, _ = d
             ft[i] = -w2 * _perp(_sub(P[tip], P[o]))[c]
+        elif kind == "block":
+            ft[i] = -w
         elif kind == "rack":
             ft[i] = -d[3] * rates[d[4]] * w
         elif kind == "rim" and d[4][0] == "circle":
@@ -392,6 +404,8 @@ def reference_solution(scene, guess_positions):
         elif kind == "guide":
             x, g1, g2 = d
             gamma[i] = 2 * _cross(_sub(V[x], V[g1]), _sub(V[g2], V[g1]))
+        elif kind == "block":
+            gamma[i] = -al
         elif kind == "rack":
             gamma[i] = -d[3] * rates[d[4]] * al
         elif kind == "rim":  # X - C - l e(phi): gamma = l phi'^2 e - l perp(e) phi_tt

@@ -353,7 +353,10 @@ def test_no_negative_zero_in_the_text():
     from polygon_method import load_scene
     from polygon_method.linkage import analyse
     for path in sorted((Path(__file__).parent.parent / "worked_problems").glob("*.toml")):
-        text = analyse(load_scene(path)).text()
+        scene = load_scene(path)
+        if scene.input.block is not None:  # no crank's turn to analyse (refused)
+            continue
+        text = analyse(scene).text()
         assert not re.search(r"(?<![\d.])-0\.0+(?!\d)", text), path.name
 
 

@@ -50,8 +50,14 @@ def test_every_datum_is_stated(path):
     for cp in sc.points:
         assert f"Point {cp.name}: on {cp.link}" in text
     inp = sc.input
-    assert f"makes {fmt(math.degrees(inp.angle) % 360)}°" in text
-    assert inp.speed_text in text
+    if inp.block is None:
+        assert f"makes {fmt(math.degrees(inp.angle) % 360)}°" in text
+        assert inp.speed_text in text
+    else:  # a driving block: its place along its guide, its speed and acceleration
+        assert f"The block {inp.block} drives the mechanism" in text
+        assert f"it is {g(abs(inp.angle) / u)} {sc.units} from" in text
+        assert f"moving at {fmt(abs(inp.omega))} m/s" in text
+        assert (f"an acceleration of {fmt(abs(inp.alpha))} m/s²" in text) == bool(inp.alpha)
     for pin in sc.pins:
         assert f"Pin at {pin.point}" in text
     assert len(given(sc)) == len(set(given(sc)))  # nothing said twice

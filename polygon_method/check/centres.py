@@ -43,7 +43,7 @@ def centre_verdict(sol, ans, tolerance, cache: list) -> Verdict:
                          key=f"[answers] {ans.key}", line=ans.line)
     c = ic.centre(i, j)
     u, un = sc.length_unit, sc.units
-    pivot = sol.P[sc.input.pivot]
+    pivot = sol.P[sc.input.pivot or next(iter(sc.ground))]  # a block driver: no pivot
     longest = max(lk.length for lk in sc.links)
     gx, gy = ans.value
     if c.point is None:

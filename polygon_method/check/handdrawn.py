@@ -205,7 +205,7 @@ class HandDrawing:
         if link is None or link in sol.plan.fixed_links:
             return 0.0
         lk = sol.scene.link(link)
-        if lk.key == sol.plan.steps[0].link:
+        if lk.key in sol.plan.steps[0].links:  # the crank's (a driving block turns none)
             return 0.0
         s = self.sigma["velocity"]
         r = PENCIL_CM * self.sv.per_cm

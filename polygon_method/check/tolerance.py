@@ -41,7 +41,9 @@ class _Tolerances:
                 self.factor[p] = f
             for lk in st.links:
                 self.factor[lk] = f
-        self.crank = steps[0]
+        self.crank = steps[0]  # the driver: a crank, or a block driven along its guide
+        self.input_links = steps[0].links  # the crank's link (a block's: none)
+        self.input_point = steps[0].finds[0]  # the crank's tip, the block's point
 
     def hand(self, kind, names, correct):
         """The simulated hand drawing's relative tolerance, or None where it says nothing."""
@@ -63,7 +65,7 @@ class _Tolerances:
     def omega_abs(self, key) -> float:
         """Drawing error of omega of link ``key``: 0.05 s_v / l (zero for the crank)."""
         sc = self.sol.scene
-        if key == self.crank.link or key in self.sol.plan.fixed_links:
+        if key in self.input_links or key in self.sol.plan.fixed_links:
             return 0.0
         lk = sc.link(key)
         return self.d * self.sv.per_cm * self.link_factor(lk.key) / lk.length
@@ -85,7 +87,7 @@ class _Tolerances:
         if kind in ("F", "N") or (kind == "torque" and sol.scene.has_forces):
             return 0.0, "computed (the force analysis)"
         if kind in ("v", "a"):
-            if len(names) == 1 and names[0] == self.crank.tip and \
+            if len(names) == 1 and names[0] == self.input_point and \
                     sol.scene.input.given is None:
                 return 0.0, "computed (crank)"
             f = max(self.f(n) for n in names)
@@ -97,7 +99,7 @@ class _Tolerances:
                 return d * s / sol.cylinder_length(cyl.key), (vt if kind == "omega" else at)
             lk = sol.scene.link("-".join(names))
             given = sol.scene.input.given is not None  # the crank's speed read off too
-            if lk.key == self.crank.link and not given:
+            if lk.key in self.input_links and not given:
                 return 0.0, "computed (crank)"
             f = self.link_factor(lk.key)
             return d * s * f / lk.length, (vt if kind == "omega" else at)
@@ -105,6 +107,8 @@ class _Tolerances:
             f = max(self.f(n) for n in names)
             return (d * sv * f, vt) if kind == "vI" else (d * sa * f, at)
         if kind in ("vs", "as"):
+            if names[0] == self.input_point and not self.crank.periodic:
+                return 0.0, "given (the driving block)"
             f = self.f(names[0])
             return (d * sv * f, vt) if kind == "vs" else (d * sa * f, at)
         if kind == "ac":

@@ -145,6 +145,7 @@ def _cmd_page(args) -> int:
     write_outputs(targets, [(html, False)])
     from ..scales import display_unit
     cycle = "over a full turn" if fr.full_turn else \
+        f"over the block's travel ({fr.limits_text})" if fr.sol.scene.input.block else \
         f"between the limit positions ({fr.limits_text})"
     print(f"{out}: {len(fr)} frames {cycle}; " + "; ".join(display_unit(s.text) for s in
                                                         fr.scales)
@@ -184,12 +185,16 @@ def _cmd_animate(args, out, fmt) -> int:
     return 0
 
 
-def _requested_angles(args):
-    """Crank angles (rad) from ``--steps N`` or ``--from A --to B --step S`` (deg)."""
+def _requested_angles(args, scene=None):
+    """Crank angles (rad) from ``--steps N`` or ``--from A --to B --step S`` (deg); for a
+    block driver, its places (m) from ``--steps N`` (over its travel, both ends) or
+    ``--from A --to B --step S`` (the scene's length unit)."""
     import numpy as np
     ranged = any(v is not None for v in (args.start, args.stop, args.step))
     if args.steps is not None and ranged:
         raise SceneError("give either --steps N or --from A --to B --step S, not both")
+    if scene is not None and scene.input.block is not None:
+        return _requested_places(args, scene, ranged)
     if ranged:
         if args.start is None or args.stop is None or args.step is None:
             raise SceneError("--from, --to and --step go together (degrees)")
@@ -211,6 +216,32 @@ def _requested_angles(args):
     if n > 100_000_000:
         raise SceneError(f"--steps {n} is too many (at most 10^8)")
     return np.linspace(0.0, 2.0 * math.pi, n, endpoint=False)
+
+
+def _requested_places(args, scene, ranged):
+    """A driving block's places along its guide (m) for a sweep."""
+    import numpy as np
+    from ..sweeps import stroke_places
+    uname, u = scene.units, scene.length_unit
+    if ranged:
+        if args.start is None or args.stop is None or args.step is None:
+            raise SceneError(f"--from, --to and --step go together (the block's places along "
+                             f"its guide, in {uname})")
+        a, b, s = args.start, args.stop, args.step
+        if not all(math.isfinite(v) for v in (a, b, s)):
+            raise SceneError("--from, --to and --step must be finite numbers")
+        if s == 0 or (b - a) * s < 0:
+            raise SceneError(f"--step {s:g} does not lead from {a:g} to {b:g} {uname}")
+        count = int(math.floor((b - a) / s + 1e-9)) + 1
+        if count > 100_000_000:
+            raise SceneError(f"{count} places are too many (at most 10^8)")
+        return (a + s * np.arange(count)) * u
+    n = 361 if args.steps is None else args.steps
+    if n < 1:
+        raise SceneError(f"--steps must be at least 1, got {n}")
+    if n > 100_000_000:
+        raise SceneError(f"--steps {n} is too many (at most 10^8)")
+    return stroke_places(scene, n)
 
 
 def _cmd_sweep(args) -> int:
@@ -235,7 +266,7 @@ def _cmd_sweep(args) -> int:
               if path]
     targets = check_outputs(wanted, protect=[args.scene])
     scene = load_scene(args.scene, variants=False)
-    angles = _requested_angles(args)
+    angles = _requested_angles(args, scene)
     if args.csv:
         need = _csv_bytes(scene, len(angles), getattr(args, "error_bound", False))
         if need > MAX_CSV_BYTES:
@@ -250,7 +281,7 @@ def _cmd_sweep(args) -> int:
         return 0
     res = sweep(scene, angles)
     if not len(res):
-        raise PolygonMethodError("none of the requested crank angles can be reached "
+        raise PolygonMethodError(f"none of the requested {_what(scene)} can be reached "
                                  "on the scene's branch " + _limits_text(res.domain),
                                  file=scene.file)
     outputs = []
@@ -264,7 +295,7 @@ def _cmd_sweep(args) -> int:
     if want_summary:
         print(summary_of(res).text())
     else:
-        print(f"{len(res)} of {res.requested} crank angles evaluated"
+        print(f"{len(res)} of {res.requested} {_what(scene)} evaluated"
               + (f" {_limits_text(res.domain)}" if res.domain.limits else ""))
     return 0
 
@@ -301,9 +332,19 @@ def _names(args, what):
     return names
 
 
+def _what(scene) -> str:
+    """What a sweep's parameter values are, in words."""
+    if scene.input.block is None:
+        return "crank angles"
+    return f"places of block {scene.input.block} ({scene.units})"
+
+
 def _limits_text(dom) -> str:
     if not dom.limits:
         return ""
+    if not dom.periodic:  # a block driver: the ends of its travel, in the scene's units
+        return ("(its travel ends at s = " + " and ".join(f"{lp.theta / dom.unit:.6g}"
+                                                          for lp in dom.limits) + ")")
     return ("(limit positions at " + " and ".join(f"{lp.degrees:.4f} deg" for lp in dom.limits)
             + ")")
 

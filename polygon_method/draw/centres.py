@@ -79,6 +79,8 @@ def centres_sketch(sol, scale: Scale, ic) -> _Sketch:
             c = ic.centres[key]
             for a, b in c.lines:
                 pts = [cm(x.point) for x in (a, b, c) if x.point is not None]
+                if not pts:  # the line at infinity (two blocks on fixed guides): not drawn
+                    continue
                 p0 = pts[0]
                 p1 = max(pts[1:], key=lambda q: math.dist(q, p0), default=p0)
                 if math.dist(p0, p1) > 1e-9 * (box[2] - box[0]):
@@ -105,9 +107,10 @@ def centres_sketch(sol, scale: Scale, ic) -> _Sketch:
                 continue
             if c.point is not None:
                 d = (cm(c.point)[0] - mid[0], cm(c.point)[1] - mid[1])
-                far = math.hypot(c.point[0] - sol.P[sol.scene.input.pivot][0],
-                                 c.point[1] - sol.P[sol.scene.input.pivot][1]) / unit
-                text = f"{c.label} ({far:.4g} {uname} from {sol.scene.input.pivot})"
+                ref = sol.scene.input.pivot or next(iter(sol.scene.ground))  # (a block
+                far = math.hypot(c.point[0] - sol.P[ref][0],  # driver: no pivot)
+                                 c.point[1] - sol.P[ref][1]) / unit
+                text = f"{c.label} ({far:.4g} {uname} from {ref})"
             else:
                 d = c.direction
                 text = f"{c.label} \u221e"

@@ -9,7 +9,7 @@ import re
 from ..given import stated
 from ..constructions import (acceleration_constructions, drawn_vectors, image_label,
                              velocity_constructions)
-from ..numbers import fmt_angular
+from ..numbers import fmt_angular, in_units
 from ..scales import Scale
 from ..scene import FixedPath
 from .sketch import _header, _Sketch
@@ -55,6 +55,12 @@ def _auxiliary(sk, sol, scale, P):
 
 def _drive(sol) -> str:
     inp = sol.scene.input
+    if inp.block is not None:  # a block driven along its guide
+        driver, u = sol.plan.steps[0], sol.scene.length_unit
+        return (f"block {inp.block} at s = {in_units(inp.angle, u)} {sol.scene.units}, "
+                f"{abs(inp.omega):.4g} m/s {driver.sense(inp.omega)}"
+                + (f", {abs(inp.alpha):.4g} m/s² {driver.sense(inp.alpha)}" if inp.alpha
+                   else ""))
     said = f" ({inp.angle_words})" if inp.angle_words else ""
     drive = (f"crank {inp.crank} at {_deg(inp.angle)}{said}, "
              + (inp.speed_text if inp.given is None
@@ -421,6 +427,8 @@ def _crank_arc(sc, P, feet=()):
     (``feet``: the shapes drawn), so that the arc is never read as part of another joint or
     its bracket; as it was where no radius clears them all."""
     inp = sc.input
+    if inp.pivot is None:  # a block drives: no crank angle to mark (an empty arc)
+        return (P[inp.tip], 0.0, 0.0)
     O = P[inp.pivot]
     # the angle the scene states, the way it states it (270 deg ccw is not 90 deg cw), less
     # whole turns

@@ -10,7 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..derived import transmission_angle
-from ..errors import TOL, SingularStepError
+from ..errors import TOL, SceneError, SingularStepError
 from ..compiler import compile_plan
 from ..scene import Scene
 from ..solution import solve
@@ -151,6 +151,11 @@ _MAX_STATIONARY = 12  # more than this: the output dwells (a degenerate linkage)
 def analyse(scene: Scene) -> Linkage:
     """The linkage's character: see the module docstring for what is covered."""
     plan = compile_plan(scene)
+    if not plan.steps[0].periodic:  # no crank turns: Grashof, quick return, toggles of a turn
+        raise SceneError(f"linkage analyses a crank's turn (Grashof, toggles, quick return): "
+                         f"this mechanism is driven by {plan.steps[0].title}, whose travel "
+                         "`sweep` follows (its ends, every quantity's extremes)",
+                         file=scene.file, key="[input] block")
     cyc = _Cycle(scene)
     dom = cyc.dom
     fb = four_bar_of(scene)

@@ -89,8 +89,22 @@ class Frames:
 
     @property
     def degrees(self) -> np.ndarray:
-        """The crank angle of each frame (deg, continuous from frame to frame)."""
+        """The crank angle of each frame (deg, continuous from frame to frame); for a block
+        driver, the block's place along its guide (in the scene's units)."""
+        dom = self.res.domain
+        if not dom.periodic:
+            return np.asarray(self.res.theta) / dom.unit
         return np.degrees(self.res.theta)
+
+    @property
+    def parameter(self) -> tuple:
+        """(name, symbol, unit) of what the frames step through: the crank angle (deg), or
+        a driving block's place (the scene's length unit)."""
+        sc = self.sol.scene
+        if sc.input.block is None:
+            return ("crank angle", "θ", "°")
+        b = sc.input.block
+        return (f"place of block {b}", f"s_{b}", f" {sc.units}")
 
     @property
     def moving(self) -> tuple:
@@ -100,7 +114,11 @@ class Frames:
 
     @property
     def limits_text(self) -> str:
-        lim = self.res.domain.limits
+        dom = self.res.domain
+        lim = dom.limits
+        if not dom.periodic:  # a block driver: the ends of its travel
+            return " and ".join(f"s = {lp.theta / dom.unit:.6g} {self.sol.scene.units}"
+                                for lp in lim)
         return " and ".join(f"{lp.degrees:.2f} deg" for lp in lim)
 
 

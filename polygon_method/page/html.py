@@ -123,7 +123,11 @@ def page_html(fr: Frames, *, verdicts=None, answers_title: str = "") -> str:
     source = sc.source
     d = page_data(fr)
     title = d["title"]
+    name, symbol, unit = fr.parameter
+    block = sc.input.block is not None
     cycle = "a full turn of the crank" if fr.full_turn else \
+        f"the block's travel ({fr.limits_text}): near an end where the mechanism stops " \
+        "assembling the polygons grow without bound and run off their panels" if block else \
         f"the range between the limit positions ({fr.limits_text}): the crank cannot " \
         "turn fully, and near its limit positions the polygons grow without bound (their " \
         "scales grow with them)"
@@ -157,7 +161,7 @@ def page_html(fr: Frames, *, verdicts=None, answers_title: str = "") -> str:
 </details>
 <div class="controls">
 <button id="play" type="button">▶ play</button>
-<label for="angle">crank angle</label>
+<label for="angle">{name}</label>
 <input type="range" id="angle" min="0" max="{len(fr) - 1}" step="1" value="{fr.start}">
 <span id="angle-now"></span>
 </div>
@@ -165,8 +169,8 @@ def page_html(fr: Frames, *, verdicts=None, answers_title: str = "") -> str:
 one scale over the cycle; each polygon is drawn, at each angle, at the round scale
 (1, 2 or 5 x 10<sup>k</sup> per cm) at which it fills its panel, stated above it (a centimetre
 of the screen as the browser measures it, 96 px = 2.54 cm; the step-by-step solution states
-the scales of a drawing on paper). The stated instant is θ =
-{fmt(math.degrees(sc.input.angle) % 360)}°{escape(f" ({sc.input.angle_words})" if sc.input.angle_words else "")}. Hover over a vector or a point for its
+the scales of a drawing on paper). The stated instant is {symbol} =
+{fmt(sc.input.angle / sc.length_unit) + unit if block else fmt(math.degrees(sc.input.angle) % 360) + unit}{escape(f" ({sc.input.angle_words})" if sc.input.angle_words else "")}. Hover over a vector or a point for its
 value, or tap it.</p>
 {f'<ul>{notes}</ul>' if notes else ''}
 <div class="diagrams">

@@ -32,6 +32,9 @@ function angular(x, unit) {
   return fmt(Math.abs(x)) + " " + unit + s;
 }
 const deg = (t) => (((t % 360) + 360) % 360).toFixed(1);
+// what the frames step through: the crank angle, or a driving block's place (D.param)
+const PARAM = D.param || ["crank angle", "θ", "°"];
+const at = (t) => D.param ? t.toFixed(1) + PARAM[2] : deg(t) + "°";
 const dir = (x, y) => deg(Math.atan2(y, x) * 180 / Math.PI);
 const esc = (s) => String(s).replace(/&/g, "&amp;").replace(/</g, "&lt;").replace(/>/g, "&gt;");
 const sub = (base, s) => base + "<sub>" + esc(s) + "</sub>";  // v_B typeset: v with B below
@@ -318,7 +321,7 @@ function pointValues(p, k) {
   return {v: Math.hypot(v[0], v[1]), vdir: dir(v[0], v[1]), a: Math.hypot(a[0], a[1]), adir: dir(a[0], a[1])};
 }
 function valuesRows(k) {  // [id, name (HTML), value]
-  const rows = [["theta", "crank angle θ", deg(D.theta[k]) + "°"]];
+  const rows = [["theta", PARAM[0] + " " + PARAM[1], at(D.theta[k])]];
   for (const p of D.points) {
     const pv = pointValues(p, k);
     rows.push(["v-" + p, sub("v", p) + " (o" + esc(label(p, "velocity")) + ")", fmt(pv.v) + " m/s at " + pv.vdir + "°"]);
@@ -467,15 +470,15 @@ function buildPlots() {
     for (let j = Math.ceil(Math.min(t0, t1) / dstep - 1e-9); j * dstep <= Math.max(t0, t1) + 1e-9; j++) {
       const t = j * dstep;  // a round angle, written between 0 and 360
       el(svg, "line", {x1: r3(X(t)), y1: T, x2: r3(X(t)), y2: H - B, class: "grid"});
-      text(svg, {x: r3(X(t)), y: H - B + 11, class: "tick", "text-anchor": "middle"}, String(((t % 360) + 360) % 360) + "°");
+      text(svg, {x: r3(X(t)), y: H - B + 11, class: "tick", "text-anchor": "middle"}, D.param ? at(t) : String(((t % 360) + 360) % 360) + "°");
     }
     el(svg, "line", {x1: L, y1: T, x2: L, y2: H - B, class: "axis"});
     text(svg, {x: (L + W - R) / 2, y: H - 6, class: "axis-title", "text-anchor": "middle"},
-      D.fullTurn ? "crank angle θ, as the crank turns (" + (t1 < t0 ? "cw" : "ccw") + ")" : "crank angle θ, between the limit positions");
+      D.param ? PARAM[0] + " " + PARAM[1] + " (" + PARAM[2].trim() + ")" : D.fullTurn ? "crank angle θ, as the crank turns (" + (t1 < t0 ? "cw" : "ccw") + ")" : "crank angle θ, between the limit positions");
     text(svg, {x: 0, y: 0, class: "axis-title", "text-anchor": "middle", transform: "translate(10," + r3((T + H - B) / 2) + ") rotate(-90)"}, ytitle);
     const [ic, iw, idash] = D.style.marks.instant;
     el(svg, "line", {x1: r3(X(D.theta[D.start])), x2: r3(X(D.theta[D.start])), y1: T, y2: H - B, stroke: ic, "stroke-width": iw,
-      "stroke-dasharray": idash.join(" ")}, "the stated instant, θ = " + deg(D.theta[D.start]) + "°");
+      "stroke-dasharray": idash.join(" ")}, "the stated instant, " + PARAM[1] + " = " + at(D.theta[D.start]));
     ss.forEach(([name, f], i) => {
       const pts = [], color = D.style.series[i % D.style.series.length];
       for (let k = 0; k < N; k++) pts.push(r3(X(D.theta[k])) + "," + r3(Y(f(k))));
@@ -497,7 +500,7 @@ function show(k) {
   for (const phase of PHASES) update(phase, k);
   for (const [t, tip] of titles) t.textContent = tipText(tip, k);
   for (const [id, , words] of valuesRows(k)) document.getElementById("val-" + id).textContent = words;
-  document.getElementById("angle-now").textContent = "θ = " + deg(D.theta[k]) + "°";
+  document.getElementById("angle-now").textContent = PARAM[1] + " = " + at(D.theta[k]);
   for (const [m, X] of markers) { m.setAttribute("x1", r3(X(D.theta[k]))); m.setAttribute("x2", r3(X(D.theta[k]))); }
 }
 let timer = null, step = 1;

@@ -83,6 +83,8 @@ class _Input:
             raise SceneError("missing [input] table: which link is the crank, its angle and "
                              "speed", file=self.file, key="[input]")
         spec = self.table("input")
+        if "block" in spec:  # a block on a fixed guide drives the mechanism: no crank
+            return self.block_input(spec, ground)
         second = None
         if "second" in spec:  # a second driving crank: two degrees of freedom
             second = self.second_input(spec["second"], ground)
@@ -182,6 +184,76 @@ class _Input:
                              "link pivoted on the ground", "input.second", "crank")
         return Input(link.key, pivot, tip, angle, speed.value, alpha, str(spec["speed"]),
                      said=said, second=second, placed=placed)
+
+    def block_input(self, spec, ground):
+        """``block = "A"``: the block A, on its fixed path of [sliders], drives the mechanism;
+        ``vs_A`` its velocity along the guide (signed, or up/down/left/right), ``as_A`` its
+        acceleration (default 0: steady), ``s_A`` its place along the guide from the path's
+        through point (or ``A = [x, y]``, a point of the guide), ``stroke = [a, b]`` the
+        range of s a sweep runs over (optional)."""
+        name = spec["block"]
+        if not isinstance(name, str):
+            raise self.error("block names the driving block's point, e.g. block = \"A\"",
+                             "input", "block")
+        sl = self.slider_points.get(name)
+        if not isinstance(sl, FixedPath) or sl.slot:
+            raise self.error(f"no block {name} on a fixed path in [sliders] (the driving block "
+                             "slides on a fixed straight guide: A = { path = \"horizontal\" })",
+                             "input", "block")
+        allowed = ("block", f"s_{name}", f"vs_{name}", f"as_{name}", name, "stroke")
+        for k in spec:
+            if k not in allowed:
+                why = ("a block drives the mechanism: there is no crank, so no crank, angle, "
+                       "speed or acceleration" if k in INPUT_KEYS or k == "second" else
+                       "unknown key")
+                raise self.error(f"{why}; with block = \"{name}\", [input] takes vs_{name} (its "
+                                 f"velocity), as_{name} (its acceleration), s_{name} or {name} = "
+                                 "[x, y] (its place) and stroke = [from, to]", "input", k)
+        vs_key, as_key, s_key = f"vs_{name}", f"as_{name}", f"s_{name}"
+        if vs_key not in spec:
+            raise self.error(f"[input] has no {vs_key}: add the block's velocity, e.g. {vs_key} "
+                             "= \"2 m/s right\"", "input")
+        through = sl.through if sl.through[1] is not None else next(iter(ground.values()))
+        u = sl.u
+        vs, _ = self.directed(spec[vs_key], "velocity", vs_key, u, need=False)
+        if vs == 0:
+            raise self.error(f"{vs_key} is zero: nothing moves", "input", vs_key)
+        raw_as = spec.get(as_key, 0)
+        if isinstance(raw_as, (int, float)) and not isinstance(raw_as, bool) and raw_as == 0:
+            acc = 0.0
+        else:
+            acc, _ = self.directed(raw_as, "acceleration", as_key, u, need=False)
+        if (s_key in spec) == (name in spec):
+            raise self.error(f"[input] gives the block's place {'twice' if name in spec else 'not at all'}:"
+                             f" {s_key} = 300 (along its guide from its through point) or {name} = "
+                             "[x, y], one only", "input", s_key if s_key in spec else None)
+        if s_key in spec:
+            s = self.length(spec[s_key], "input", s_key, positive=False)
+        else:
+            x, y = self.coords(spec[name], "input", name)
+            s = (x - through[0]) * u[0] + (y - through[1]) * u[1]
+            off = -(x - through[0]) * u[1] + (y - through[1]) * u[0]
+            if abs(off) > 1e-9 * max(abs(x), abs(y), abs(s), self.scale()):
+                raise self.error(f"{name} = {spec[name]} is {abs(off) / self.scale():.6g} "
+                                 f"{self.unit} off the guide of {name}: give a point of it",
+                                 "input", name)
+        stroke = None
+        if "stroke" in spec:
+            raw = spec["stroke"]
+            if not isinstance(raw, list) or len(raw) != 2:
+                raise self.error("stroke is [from, to]: the block's places along its guide "
+                                 "(as s), e.g. stroke = [-400, 400]", "input", "stroke")
+            a, b = (self.length(v, "input", "stroke", positive=False) for v in raw)
+            if not a < b:
+                raise self.error(f"stroke = {raw}: from must be less than to", "input",
+                                 "stroke")
+            if not a <= s <= b:
+                raise self.error(f"the block's place s = {s / self.scale():.6g} {self.unit} is "
+                                 f"outside its stroke {raw}", "input", "stroke")
+            stroke = (a, b)
+        self.driving_block = name  # (a torque answer is refused: a block is driven by a force)
+        return Input(None, None, name, s, vs, acc, printable(str(spec[vs_key])), block=name,
+                     stroke=stroke)
 
     def placed_at(self, key, raw, near):
         """``length_OR = 850`` (two points' distance, a cylinder's length), ``s_B = 300`` (a

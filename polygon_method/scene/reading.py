@@ -530,7 +530,8 @@ class _Loader(_Tables, _Input, _Variants, _Masses):
         self.slider_points = {s.point: s for s in sliders}
         self.cylinder_list = cylinders = self.cylinders(known)
         inp = self.input(index, ground)
-        sliders = [replace(s, through=ground[inp.pivot])
+        origin = ground[inp.pivot] if inp.pivot is not None else next(iter(ground.values()))
+        sliders = [replace(s, through=origin)
                    if isinstance(s, FixedPath) and s.through[1] is None else s
                    for s in sliders]
         assembly = self.assembly(known)
@@ -648,6 +649,7 @@ def parse_answers(text: str, scene: Scene, file: str | None = None, *,
     loader.cylinder_list = scene.cylinders
     loader.two_inputs = scene.input.second is not None
     loader.scene_forces = scene.has_forces
+    loader.driving_block = scene.input.block
     loader.rolling_pairs = scene.rolling
     tolerance, answers = loader.answers(set(scene.point_names), scene.sliders, scene.pins,
                                         scene.loads)

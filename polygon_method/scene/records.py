@@ -267,6 +267,16 @@ class Input:
     second: "Input | None" = None
     #: the position given otherwise than by the crank's angle (:class:`PositionGiven`)
     placed: PositionGiven | None = None
+    #: a block on a fixed straight guide driving the mechanism (``[input] block = "A"``):
+    #: its point, or None for a crank. Then ``crank`` and ``pivot`` are None, ``tip`` is the
+    #: block's point, and the motion's parameter is the block's place along its guide:
+    #: ``angle`` holds its displacement s (m, from the guide's through point, along the
+    #: guide's direction), ``omega`` its velocity vs (m/s) and ``alpha`` its acceleration
+    #: as (m/s^2), each signed along the guide
+    block: str | None = None
+    #: a block driver's stated stroke (s from, s to; m), or None: the sweep then runs from
+    #: the first to the last position where the mechanism assembles
+    stroke: tuple | None = None
     #: an angle the scene gave in a book's words: (words, the angle they gave (rad), the
     #: slips a reader of them might make (:class:`~.angles.Slip`), the note saying how
     #: they were read); empty for a plain angle
@@ -415,18 +425,23 @@ class Scene:
     def _check_numbers(self) -> None:
         """Finite numbers, positive lengths (a scene made through the API, too)."""
         inp = self.input
-        for name, v, kind in (("angle", inp.angle, "angle"),
-                              ("speed", inp.omega, "angular_velocity"),
-                              ("acceleration", inp.alpha, "angular_acceleration")):
+        rows = ((("angle", inp.angle, "angle"), ("speed", inp.omega, "angular_velocity"),
+                 ("acceleration", inp.alpha, "angular_acceleration")) if inp.block is None
+                else (("place", inp.angle, "velocity"), ("speed", inp.omega, "velocity"),
+                      ("acceleration", inp.alpha, "acceleration")))  # a block's s, vs, as
+        for name, v, kind in rows:
             if v is None and inp.given is not None and name != "angle":
                 continue  # found from the given motion when the scene is compiled
             if not isinstance(v, (int, float)) or not math.isfinite(v):
-                raise SceneError(f"the crank's {name} must be a finite number, got {v!r}",
+                raise SceneError(f"the {'crank' if inp.block is None else 'block'}'s {name} "
+                                 f"must be a finite number, got {v!r}",
                                  key=f"[input] {name}", file=self.file)
             # the bounds a file's values meet, for a scene made through the API too: beyond
             # them the squares of the solution overflow, or the input torque divides by 0
-            if not abs(v) <= ABSURD[kind] or (name == "speed" and not abs(v) >= TINY[kind]):
-                raise SceneError(f"the crank's {name} {v!r} (SI) is "
+            if not abs(v) <= ABSURD[kind] or (name == "speed"
+                                              and not abs(v) >= TINY.get(kind, 1e-12)):
+                raise SceneError(f"the {'crank' if inp.block is None else 'block'}'s {name} "
+                                 f"{v!r} (SI) is "
                                  + ("zero: nothing moves" if name == "speed" and v == 0 else
                                     "absurd for a mechanism"),
                                  key=f"[input] {name}", file=self.file)

@@ -552,6 +552,10 @@ class _Tables:
             if getattr(self, "two_inputs", False):
                 raise self.error("with two inputs one power balance does not give the two "
                                  "driving torques: no torque answer", "answers", key)
+            if getattr(self, "driving_block", None):
+                raise self.error(f"the block {self.driving_block} drives the mechanism: its "
+                                 "driving effort is a force along its guide, not a torque "
+                                 "(solve prints it; no torque answer)", "answers", key)
             q = self.qty(value, "torque", "answers", key, default_unit="N m", allow_sense=True,
                          refuse_absurd=False)
             return Answer(key, "torque", (), q.value, q.sense, printable(str(value)), line)

@@ -154,6 +154,10 @@ class _Variants:
         return _suggest(key, names)
 
     def _input(self, key, value, inp):
+        if inp.block is not None:  # no crank: its place and rates are s_A, vs_A, as_A
+            raise self.error(f"{key}: the scene is driven by block {inp.block}, which has no "
+                             f"crank {'angle' if key == 'angle' else key} to vary (vary the "
+                             "links, points and paths)", "variants", key)
         if key == "angle":
             return self._values(key, value, "angle", "deg", ("input", "angle"), "crank angle")
         kind = "angular_velocity" if key == "speed" else "angular_acceleration"
@@ -189,9 +193,11 @@ class _Variants:
                                      f"{through}: vary {through} = {{ {sub} = ... }}",
                                      "variants", name)
                 setup = ()
-                if through is None:  # through the crank's pivot, as written in [ground]
+                if through is None:  # through the crank's pivot (a block driver: the first
+                    # ground point), as written in [ground]
+                    origin = inp.pivot if inp.pivot is not None else next(iter(raw["ground"]))
                     setup = ((("sliders", name, "through"),
-                              list(raw["ground"][inp.pivot])),)
+                              list(raw["ground"][origin])),)
                 return [self._values(key, value, "length", self.unit,
                                      ("sliders", name, "through", i),
                                      f"{sub} of the path of slider {name}", setup=setup,

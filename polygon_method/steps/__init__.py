@@ -8,6 +8,7 @@ line of the step table (``position_words``).
 
 ============ ===========================================================================
 crank        the driving crank's tip
+block        a driving block on a fixed guide, its place along it the motion's parameter
 second crank a second driven crank (two degrees of freedom): its own angle and speed
 carried      a point on a known link or plate (the image point, similar triangles)
 slider       RRP: a link and a slider on a fixed path or on a moving link
@@ -31,6 +32,7 @@ function) and add it to :data:`TIERS`.
 
 from . import (carried, cylinder, dyad, peg, rack, rolling, slider, slotted, triad,
                wheel_centre, yoke)
+from .block import BlockDriver
 from .base import (Construction, Context, DirectionLine, State, Step, Vector, image_label,
                    image_name, pole_text)
 from .carried import Carried
@@ -46,13 +48,14 @@ from .triad import Triad
 
 #: the recognisers the compiler tries, tier by tier: for each unknown point (in the scene's
 #: order) every kind of the first tier in turn; the next tier only when no point of the
-#: tiers before can be found. The crank is the plan's first step and is not recognised.
+#: tiers before can be found. The driver (a crank, or a block on a fixed guide) is the plan's
+#: first step and is not recognised.
 TIERS = ((rolling.recognise, wheel_centre.recognise, rack.recognise, carried.recognise,
           slider.recognise, dyad.recognise, peg.recognise, yoke.recognise),
          (slotted.recognise,),
          (triad.recognise,))
 
-__all__ = ["TIERS", "Step", "Context", "State", "Crank", "Dyad", "SliderDyad", "SlottedLink",
-           "Carried", "CylinderStep", "RollingWheel", "Triad", "Peg", "Yoke", "Construction",
+__all__ = ["TIERS", "Step", "Context", "State", "Crank", "BlockDriver", "Dyad", "SliderDyad",
+           "SlottedLink", "Carried", "CylinderStep", "RollingWheel", "Triad", "Peg", "Yoke", "Construction",
            "Vector", "DirectionLine", "image_label", "image_name", "pole_text", "under_label",
            "slot_labels"]

@@ -21,7 +21,9 @@ __all__ = ["REQUIRED", "OPTIONAL", "Context", "State", "Step", "Vector", "Direct
 class Context:
     """What an evaluation needs besides the state: the input motion and the maths for
     floats or arrays. In scalar mode a failing step raises; in array mode it is masked
-    (``bad``, ``failures``) and the evaluation goes on."""
+    (``bad``, ``failures``) and the evaluation goes on. ``theta, omega, alpha``: the
+    crank's angle, speed and acceleration; for a driving block, its place s along its
+    guide, its velocity vs and acceleration as."""
 
     __slots__ = ("theta", "omega", "alpha", "array", "cond", "bad", "failures", "np",
                  "cos", "sin")
@@ -118,8 +120,14 @@ REQUIRED = ("kind", "finds", "links", "needs", "title", "params", "dimensions", 
 #: ``rounding``/``error_bound`` (the rule of two direction lines), ``contacts``,
 #: ``contact_motion``, ``shapes`` (no rolling contact, nothing drawn besides links),
 #: ``produced``, ``drawn`` (draws nothing of its own), ``output``, ``default_hint``,
-#: ``assemble`` (placed by ``place`` and its branch), ``auxiliary`` (no auxiliary point)
-OPTIONAL = ("assemble", "auxiliary", "branching", "image_by_similar_triangle", "draws_relative",
+#: ``assemble`` (placed by ``place`` and its branch), ``auxiliary`` (no auxiliary point);
+#: the driver protocol, asked of the plan's first step: ``periodic`` (True: the motion's
+#: parameter is a crank's angle and repeats every turn; a block driver's is its place
+#: along its guide), ``parameter_words`` (that parameter in words), ``input_scales`` (the
+#: least sizes of velocity, acceleration, omega, alpha the input sets), ``input_words``
+#: and ``effort_words`` (a driver's own line of the printed solution and of its input
+#: effort; None: a crank's, which the views write)
+OPTIONAL = ("periodic", "parameter_words", "input_scales", "input_words", "effort_words", "assemble", "auxiliary", "branching", "image_by_similar_triangle", "draws_relative",
             "other_assembly_mistake", "needs_links", "bind_instant", "group_key",
             "bind_group", "bind_group_instant", "rounding", "error_bound", "contacts",
             "contact_motion", "shapes", "produced", "drawn", "output", "default_hint")
@@ -161,6 +169,29 @@ class Step:
     #: whether a student drawing the other of the step's two assemblies is a mistake to
     #: look for when checking answers
     other_assembly_mistake = False
+    #: the driver protocol (the plan's first step): True where the motion's parameter is
+    #: a crank's angle, repeating every turn; False for a block driven along its guide,
+    #: whose parameter is its place s (a length) and whose sweep runs over its stroke
+    periodic = True
+
+    def parameter_words(self) -> str:
+        """The motion's parameter in words, asked of the plan's first step (the driver)."""
+        return "the crank angle"
+
+    def input_words(self, scene):
+        """The printed solution's line for the input, asked of the plan's first step: None
+        for a crank (the views write its angle and speed)."""
+        return None
+
+    def effort_words(self, effort):
+        """The printed line of the driving effort the power balance gives (``effort``, SI),
+        for a driver whose :meth:`input_words` is not None."""
+        return None
+
+    def input_scales(self, scene):
+        """(v, a, omega, alpha): the least sizes of each kind that the input sets, asked of
+        the plan's first step (the driver; the error bounds are relative to them)."""
+        raise NotImplementedError(f"{self.kind} does not drive a mechanism")
 
     @property
     def label(self) -> str:

@@ -151,6 +151,16 @@ class Crank(Step):
         """(omega, alpha) the crank is driven at: the scene's input."""
         return scene.input.omega, scene.input.alpha
 
+    def input_scales(self, scene):
+        """(v, a, omega, alpha): the least sizes of each kind the input sets (the error
+        bounds are relative to them): omega r, (omega^2 + |alpha|) r, omega, omega^2 +
+        |alpha| of the crank driving the mechanism (the driver protocol)."""
+        inp = scene.input
+        r = scene.link(inp.crank).length
+        w = abs(inp.omega)
+        w2 = inp.omega ** 2 + abs(inp.alpha)
+        return w * r, w2 * r, w, w2
+
     # ----- words
     def singular_why(self, c) -> str:
         return f"the crank {self.link} is never singular (condition {c:.2g})"

@@ -100,9 +100,12 @@ def linkage_class(scene: Scene, shape=None) -> str:
                                     else "oscillating lever")
     from ..tracking import Sweeper
     try:
-        turns = Sweeper(scene).domain.full_turn
+        sw = Sweeper(scene)
+        turns = sw.domain.full_turn
     except PolygonMethodError:
         return "mechanism: locked"
+    if not sw.driver.periodic:  # a block driven along its guide
+        return f"mechanism: driven by {sw.driver.title}"
     return "mechanism: " + ("the crank turns fully" if turns else "the crank rocks")
 
 
