@@ -135,7 +135,7 @@ def plot_figure(res: SweepResult, *, points=None, links=None):
                 pad = 0.1 * size if size >= 1e-8 * unit_scale else 1.0
                 ax.set_ylim(0.5 * (lo + hi) - pad, 0.5 * (lo + hi) + pad)
         _mark(ax, t0, "instant")
-        show = degrees_fn(dom) if dom.full_turn else (
+        show = degrees_fn(dom) if dom.full_turn or not dom.periodic else (
             lambda t: math.degrees(float(dom.map(np.array([t]))[0][0])) + shift)
         for lp in res.limits:
             _mark(ax, show(lp.theta), "limit")
