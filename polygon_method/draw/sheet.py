@@ -9,8 +9,9 @@ from ..errors import PolygonMethodError
 from ..scales import (DIAGRAMS, GAP, KIND_OF_DIAGRAM, MARGIN, SHEET_ALL, choose_scales,
                       coarser, diagram_scales, display_unit, parse_scale)
 from .diagrams import _configuration, _polygon, _sketch
+from .paper import FOOTER, paginate, paper_name
 from .sketch import _Sketch
-from .style import CM_PER_INCH, FONT, FORMATS, MAX_FIGURE_CM, PNG_DPI
+from .style import CM_PER_INCH, FONT, FORMATS, MAX_FIGURE_CM, PNG_DPI, SMALL_PT
 
 # --------------------------------------------------------------------------- painting
 
@@ -127,18 +128,21 @@ def _panel_size(sk: _Sketch, pad=0.3):
     return (max(x1, n1) - min(x0, n0) + 2 * pad, max(y1, m1) - min(y0, m0) + 2 * pad)
 
 
-def layout(sol, diagram: str = "all", scales=None, centre_prefix: str = "I"):
+def layout(sol, diagram: str = "all", scales=None, centre_prefix: str = "I", paper=None):
     """The sketches and scales of a sheet: ``[(name, scale, sketch)]``. One diagram, one
     scale everywhere: each diagram is drawn at the scale the step table states (and the
     checker's tolerance uses), unless ``--scale`` gives another; the sheet's layout, not
-    the scales, changes where the three do not fit side by side (:func:`rows`)."""
+    the scales, changes where the three do not fit side by side (:func:`rows`) or on one
+    page of ``paper`` (:mod:`.paper`). The centres' diagram, whose scale no step table
+    states, is coarsened until it fits beside its circle diagram (on one page of ``paper``;
+    without one, across an A4 landscape sheet)."""
     n = len(sol.scene.point_names)
     if n > MAX_DRAWN_POINTS:  # each label is placed clear of every line and label: minutes
         raise PolygonMethodError(f"the scene has {n} points: a drawing labels at most "
                                  f"{MAX_DRAWN_POINTS} (the page, `polygon-method page`, "
                                  "shows any number)", file=sol.scene.file)
     if diagram == "centres":
-        return _centres_layout(sol, scales, centre_prefix)
+        return _centres_layout(sol, scales, centre_prefix, paper)
     names = DIAGRAMS if diagram == "all" else (diagram,)
     if diagram not in DIAGRAMS + ("all",):
         raise PolygonMethodError(f"unknown diagram {diagram!r}; use configuration, velocity, "
@@ -179,9 +183,10 @@ def rows(sizes, width=SHEET_ALL[0] - 2 * MARGIN):
     return out
 
 
-def _centres_layout(sol, scales=None, prefix="I"):
-    """The centres sheet: the mechanism with its centres (to scale, coarsened until the
-    A4 landscape sheet holds it) and the circle diagram (not to scale)."""
+def _centres_layout(sol, scales=None, prefix="I", paper=None):
+    """The centres sheet: the mechanism with its centres (to scale, coarsened until one page
+    of ``paper`` holds it beside the circle diagram; without a paper, until an A4 landscape
+    sheet does) and the circle diagram (not to scale)."""
     from ..centres import locate
     from .centres import centres_sketch, circle_sketch
 
@@ -194,10 +199,19 @@ def _centres_layout(sol, scales=None, prefix="I"):
     circle = circle_sketch(ic)
     cw, ch = _panel_size(circle)
     room_w, room_h = SHEET_ALL[0] - 2 * MARGIN - GAP - cw, SHEET_ALL[1] - 2 * MARGIN
+
+    def fits(w, h):
+        if paper is None:
+            return w <= room_w and h <= room_h
+        try:
+            return len(paginate([(w, h), (cw, ch)], paper)) == 1
+        except PolygonMethodError:  # larger than the paper alone
+            return False
+
     sk = centres_sketch(sol, s, ic)
     for _ in range(12):
         w, h = _panel_size(sk)
-        if fixed or (w <= room_w and h <= room_h):
+        if fixed or fits(w, h):
             break
         s = coarser(s)
         sk = centres_sketch(sol, s, ic)
@@ -268,6 +282,89 @@ def render(sol, fmt: str = "svg", diagram: str = "all", scales=None,
             fig.savefig(buf, format="pdf", metadata={"CreationDate": None, "ModDate": None,
                                                      "Producer": None})
         return buf.getvalue(), used, warnings
+
+
+# --------------------------------------------------------------------------- on paper
+
+_WHAT = {"configuration": "configuration diagram", "velocity": "velocity polygon",
+         "acceleration": "acceleration polygon", "centres": "centres diagram",
+         "circle": "circle diagram"}
+
+
+def sheet_pages(sol, diagram: str = "all", scales=None, centre_prefix: str = "I",
+                paper: str = "A4"):
+    """The panels of a sheet (:func:`layout`) and the pages of ``paper`` they go on
+    (:func:`.paper.paginate`): ``(panels, sizes, pages)``. A panel larger than the paper
+    at its scale is one line naming the diagram, its scale and what to do (a larger paper,
+    or a coarser ``--scale``, which the step table then does not state)."""
+    panels = layout(sol, diagram, scales, centre_prefix, paper)
+    sizes = [_panel_size(sk) for _, _, sk in panels]
+    names = [f"the {_WHAT[name]}" + (f" at {display_unit(s.text)}" if s is not None else "")
+             for name, s, _ in panels]
+    advice = "; draw it at a coarser --scale" if paper_name(paper) == "A3" else \
+        "; draw it on A3 (--paper A3) or at a coarser --scale"
+    pages = paginate(sizes, paper, names, advice, [name for name, _, _ in panels])
+    return panels, sizes, pages
+
+
+def page_figure(panels, sizes, page):
+    """The matplotlib Figure of one page: the paper's size, each panel placed so that one
+    data unit is one centimetre on the paper, and the line naming the paper at its foot.
+    Returns ``(figure, warnings)``."""
+    from matplotlib.figure import Figure
+
+    W, H = page.size
+    fig = Figure(figsize=(W / CM_PER_INCH, H / CM_PER_INCH), dpi=72)
+    warnings = []
+    for k, x, y in page.placed:
+        name, _, sk = panels[k]
+        w, h = sizes[k]
+        ax = fig.add_axes((x / W, (H - y - h) / H, w / W, h / H))
+        ax.set_gid(f"panel-{name}")
+        _paint(ax, sk)
+        warnings += [f"{name}: {m}" for m in sk.warnings]
+    t = fig.text(MARGIN / W, (MARGIN + FOOTER / 2) / H, page.footer(), fontsize=SMALL_PT,
+                 fontfamily=FONT, ha="left", va="center", parse_math=False)
+    t.set_gid("note-sheet-paper")
+    return fig, warnings
+
+
+def render_pages(sol, fmt: str = "svg", diagram: str = "all", scales=None,
+                 centre_prefix: str = "I", paper: str = "A4"):
+    """The sheet on ``paper`` (A4, A3, letter; portrait or landscape, whichever holds the
+    panels): a PDF of as many pages as it needs, or one SVG text (byte-stable) or PNG per
+    page. Returns ``(datas, {diagram: Scale}, warnings, pages)``: ``datas`` has one item
+    for a PDF, one a page otherwise."""
+    import matplotlib
+
+    if fmt not in FORMATS:
+        raise PolygonMethodError(f"cannot draw {fmt!r}: use svg, png or pdf")
+    with matplotlib.rc_context(_rc()):
+        panels, sizes, pages = sheet_pages(sol, diagram, scales, centre_prefix, paper)
+        figures, warnings = [], []
+        for page in pages:
+            fig, w = page_figure(panels, sizes, page)
+            figures.append(fig)
+            warnings += w
+        used = {name: scale for name, scale, _ in panels if scale is not None}
+        if fmt == "pdf":
+            from matplotlib.backends.backend_pdf import PdfPages
+            buf = io.BytesIO()
+            with PdfPages(buf, metadata={"CreationDate": None, "ModDate": None,
+                                         "Producer": None}) as pdf:
+                for fig in figures:
+                    pdf.savefig(fig)
+            return [buf.getvalue()], used, warnings, pages
+        datas = []
+        for fig in figures:
+            if fmt == "svg":
+                out = io.StringIO()
+                fig.savefig(out, format="svg", metadata={"Date": None})
+            else:
+                out = io.BytesIO()
+                fig.savefig(out, format="png", dpi=PNG_DPI, metadata={"Software": None})
+            datas.append(out.getvalue())
+        return datas, used, warnings, pages
 
 
 def svg_string(sol, diagram: str = "all", scales=None) -> str:
