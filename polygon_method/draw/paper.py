@@ -27,7 +27,7 @@ from ..errors import PolygonMethodError
 from ..scales import GAP, MARGIN
 
 __all__ = ["PAPERS", "PAPER_NAMES", "FOOTER", "Page", "paper_size", "paper_name", "paginate",
-           "room", "page_files"]
+           "room", "fits", "page_files"]
 
 #: paper sizes (cm, portrait): ISO A4 and A3, US letter (8.5 x 11 in)
 PAPERS = {"A4": (21.0, 29.7), "A3": (29.7, 42.0), "letter": (21.59, 27.94)}
@@ -134,6 +134,11 @@ def _one_page(items, paper):
                 return Page(paper, orientation, size,
                             tuple((k, left + x, MARGIN + y) for k, x, y in pos))
     return None
+
+
+def fits(size, paper: str) -> bool:
+    """Whether one page of ``paper`` (either way round) holds a panel of ``size`` (cm)."""
+    return _one_page([(0, tuple(size))], paper_name(paper)) is not None
 
 
 def _groups(n):

@@ -9,7 +9,7 @@ from ..errors import PolygonMethodError
 from ..scales import (DIAGRAMS, GAP, KIND_OF_DIAGRAM, MARGIN, SHEET_ALL, choose_scales,
                       coarser, diagram_scales, display_unit, parse_scale)
 from .diagrams import _configuration, _polygon, _sketch
-from .paper import FOOTER, paginate, paper_name
+from .paper import FOOTER, PAPER_NAMES, PAPERS, fits, paginate, paper_name, room
 from .sketch import _Sketch
 from .style import CM_PER_INCH, FONT, FORMATS, MAX_FIGURE_CM, PNG_DPI, SMALL_PT
 
@@ -134,8 +134,8 @@ def layout(sol, diagram: str = "all", scales=None, centre_prefix: str = "I", pap
     checker's tolerance uses), unless ``--scale`` gives another; the sheet's layout, not
     the scales, changes where the three do not fit side by side (:func:`rows`) or on one
     page of ``paper`` (:mod:`.paper`). The centres' diagram, whose scale no step table
-    states, is coarsened until it fits beside its circle diagram (on one page of ``paper``;
-    without one, across an A4 landscape sheet)."""
+    states, is coarsened until it fits a page of ``paper`` (without one, until it fits
+    beside its circle diagram across an A4 landscape sheet)."""
     n = len(sol.scene.point_names)
     if n > MAX_DRAWN_POINTS:  # each label is placed clear of every line and label: minutes
         raise PolygonMethodError(f"the scene has {n} points: a drawing labels at most "
@@ -185,10 +185,11 @@ def rows(sizes, width=SHEET_ALL[0] - 2 * MARGIN):
 
 def _centres_layout(sol, scales=None, prefix="I", paper=None):
     """The centres sheet: the mechanism with its centres (to scale, coarsened until one page
-    of ``paper`` holds it beside the circle diagram; without a paper, until an A4 landscape
-    sheet does) and the circle diagram (not to scale)."""
+    of ``paper`` holds it, the circle diagram beside it where there is room, else on a page
+    of its own; without a paper, until an A4 landscape sheet holds both side by side) and
+    the circle diagram (not to scale)."""
     from ..centres import locate
-    from .centres import centres_sketch, circle_sketch
+    from .centres import CIRCLE_SMALL, WINDOWS, centres_sketch, circle_sketch
 
     ic = locate(sol, prefix)
     given = dict(scales or {})
@@ -200,21 +201,53 @@ def _centres_layout(sol, scales=None, prefix="I", paper=None):
     cw, ch = _panel_size(circle)
     room_w, room_h = SHEET_ALL[0] - 2 * MARGIN - GAP - cw, SHEET_ALL[1] - 2 * MARGIN
 
-    def fits(w, h):
-        if paper is None:
-            return w <= room_w and h <= room_h
+    def pages(*sizes):  # how many pages of ``paper`` they take (0: more than it holds)
         try:
-            return len(paginate([(w, h), (cw, ch)], paper)) == 1
-        except PolygonMethodError:  # larger than the paper alone
-            return False
+            return len(paginate(list(sizes), paper))
+        except PolygonMethodError:
+            return 0
 
     sk = centres_sketch(sol, s, ic)
-    for _ in range(12):
-        w, h = _panel_size(sk)
-        if fixed or fits(w, h):
-            break
-        s = coarser(s)
-        sk = centres_sketch(sol, s, ic)
+    if paper is None:  # the old rule: both side by side across A4 landscape
+        for _ in range(12):
+            w, h = _panel_size(sk)
+            if fixed or (w <= room_w and h <= room_h):
+                break
+            s = coarser(s)
+            sk = centres_sketch(sol, s, ic)
+    else:  # the finest scale at which a page holds the diagram and the circle diagram
+        # (showing less of the plane around the mechanism, a smaller circle), unless one
+        # round step coarser shows more centres where they are with every label clear;
+        # else the diagram alone, the circle diagram on a page of its own
+        small = circle_sketch(ic, CIRCLE_SMALL)
+
+        def largest(scale, both=True):  # (centres in place, sketch, circle) or None
+            for window in WINDOWS:
+                here = sk if (scale, window) == (s, WINDOWS[0]) else \
+                    centres_sketch(sol, scale, ic, window)
+                size = _panel_size(here)
+                for c in (circle, small) if both else (circle,):
+                    if pages(size, _panel_size(c)) == (1 if both else 2):
+                        return _in_place(here), here, c
+            return None
+
+        for _ in range(12):
+            fine = largest(s)
+            if fixed:
+                sk, circle = fine[1:] if fine else (sk, circle)
+                break
+            rough = largest(coarser(s)) if fine is None or fine[0] < len(ic.order) else None
+            if rough is not None and (fine is None or (rough[0] > fine[0] and
+                                                       not rough[1].warnings)):
+                s, sk, circle = coarser(s), rough[1], rough[2]
+                break
+            if fine is None:
+                fine = largest(s, both=False)
+            if fine is not None:
+                sk, circle = fine[1:]
+                break
+            s = coarser(s)
+            sk = centres_sketch(sol, s, ic)
     w, h = _panel_size(sk)
     if max(w, h) > MAX_FIGURE_CM:
         raise PolygonMethodError(f"the centres diagram at {display_unit(s.text)} would be "
@@ -222,6 +255,12 @@ def _centres_layout(sol, scales=None, prefix="I", paper=None):
                                  key="--scale")
     sk.warnings.extend(ic.warnings)
     return [("centres", s, sk), ("circle", None, circle)]
+
+
+def _in_place(sk) -> int:
+    """How many centres a centres' sketch draws where they are (not as arrows)."""
+    return sum(1 for kind, _, st in sk.items
+               if kind == "circle" and (st["gid"] or "").startswith("centre-"))
 
 
 def make_figure(sol, diagram: str = "all", scales=None, centre_prefix: str = "I"):
@@ -299,11 +338,23 @@ def sheet_pages(sol, diagram: str = "all", scales=None, centre_prefix: str = "I"
     or a coarser ``--scale``, which the step table then does not state)."""
     panels = layout(sol, diagram, scales, centre_prefix, paper)
     sizes = [_panel_size(sk) for _, _, sk in panels]
-    names = [f"the {_WHAT[name]}" + (f" at {display_unit(s.text)}" if s is not None else "")
-             for name, s, _ in panels]
-    advice = "; draw it at a coarser --scale" if paper_name(paper) == "A3" else \
-        "; draw it on A3 (--paper A3) or at a coarser --scale"
-    pages = paginate(sizes, paper, names, advice, [name for name, _, _ in panels])
+    paper = paper_name(paper)
+    given = dict(scales or {})
+    for (name, s, _), size in zip(panels, sizes):
+        if fits(size, paper):
+            continue
+        rw, rh = room(paper, "portrait")
+        what = f"the {_WHAT[name]}" + (f" at {display_unit(s.text)}" if s is not None else "")
+        bigger = sorted((p for p in PAPER_NAMES if p != paper and fits(size, p)),
+                        key=lambda p: PAPERS[p][0] * PAPERS[p][1])
+        advice = f"draw it on {bigger[0]} (--paper {bigger[0]}) or at a coarser --scale" \
+            if bigger else "draw it at a coarser --scale"
+        asked = name in given or KIND_OF_DIAGRAM.get(name) in given or name == "centres"
+        raise PolygonMethodError(
+            f"{what} is {size[0]:.3g} x {size[1]:.3g} cm: more than {paper} holds inside its "
+            f"margins ({rw:.3g} x {rh:.3g} cm, either way round); {advice}",
+            key="--scale" if asked and given else "--paper")
+    pages = paginate(sizes, paper, panels=[name for name, _, _ in panels])
     return panels, sizes, pages
 
 
@@ -341,12 +392,21 @@ def render_pages(sol, fmt: str = "svg", diagram: str = "all", scales=None,
         raise PolygonMethodError(f"cannot draw {fmt!r}: use svg, png or pdf")
     with matplotlib.rc_context(_rc()):
         panels, sizes, pages = sheet_pages(sol, diagram, scales, centre_prefix, paper)
+    datas, warnings = write_pages(panels, sizes, pages, fmt)
+    return datas, {name: s for name, s, _ in panels if s is not None}, warnings, pages
+
+
+def write_pages(panels, sizes, pages, fmt: str = "svg"):
+    """The pages of :func:`sheet_pages` as one PDF (``[bytes]``) or as SVG texts or PNGs,
+    one a page. Returns ``(datas, warnings)``."""
+    import matplotlib
+
+    with matplotlib.rc_context(_rc()):
         figures, warnings = [], []
         for page in pages:
             fig, w = page_figure(panels, sizes, page)
             figures.append(fig)
             warnings += w
-        used = {name: scale for name, scale, _ in panels if scale is not None}
         if fmt == "pdf":
             from matplotlib.backends.backend_pdf import PdfPages
             buf = io.BytesIO()
@@ -354,7 +414,7 @@ def render_pages(sol, fmt: str = "svg", diagram: str = "all", scales=None,
                                          "Producer": None}) as pdf:
                 for fig in figures:
                     pdf.savefig(fig)
-            return [buf.getvalue()], used, warnings, pages
+            return [buf.getvalue()], warnings
         datas = []
         for fig in figures:
             if fmt == "svg":
@@ -364,7 +424,7 @@ def render_pages(sol, fmt: str = "svg", diagram: str = "all", scales=None,
                 out = io.BytesIO()
                 fig.savefig(out, format="png", dpi=PNG_DPI, metadata={"Software": None})
             datas.append(out.getvalue())
-        return datas, used, warnings, pages
+        return datas, warnings
 
 
 def svg_string(sol, diagram: str = "all", scales=None) -> str:
