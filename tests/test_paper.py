@@ -16,10 +16,10 @@ import pytest
 
 from polygon_method import load_scene, solve
 from polygon_method.draw import drawn_vectors, layout, page_files, paginate, render_pages
-from polygon_method.draw.paper import FOOTER, PAPERS, room
+from polygon_method.draw.paper import FOOTER, MARGIN, PAPERS, room
 from polygon_method.draw.sheet import _panel_size, write_pages
 from polygon_method.errors import PolygonMethodError
-from polygon_method.scales import MARGIN, diagram_scales
+from polygon_method.scales import diagram_scales
 from test_draw import CM, SVGNS, WORKED, XLINK, Svg
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -222,10 +222,10 @@ def test_the_layout_keeps_order_and_never_shrinks():
     assert page.orientation == "landscape" and [k for k, _, _ in page.placed] == [0, 1, 2]
     xs = [x for _, x, _ in page.placed]
     assert xs == sorted(xs)
-    # one of 19.5 cm is too wide for portrait A4 (19.4 cm inside the margins), not landscape
-    (page,) = paginate([(19.5, 10.0)], "A4")
+    # one of 19.9 cm is too wide for portrait A4 (19.8 cm inside the margins), not landscape
+    (page,) = paginate([(19.9, 10.0)], "A4")
     assert page.orientation == "landscape"
-    (page,) = paginate([(19.3, 27.0)], "A4")
+    (page,) = paginate([(19.7, 27.9)], "A4")
     assert page.orientation == "portrait"
     # too tall for A4 either way: two pages, in order
     pages = paginate([(15.0, 20.0), (15.0, 20.0)], "A4")

@@ -105,9 +105,11 @@ def _cmd_draw(args) -> int:
     files = [out] if fmt == "pdf" else page_files(out, len(pages))
     if len(files) > 1:  # a page a file: out-1.svg, out-2.svg, ...
         if targets[0].special:
-            raise PolygonMethodError(f"the sheet has {len(pages)} pages on {paper}: an "
-                                     f".{fmt} holds one; write to a file name (one file a "
-                                     "page) or to .pdf", key="-o")
+            targets[0].probe()
+            raise PolygonMethodError(f"the sheet has {len(pages)} pages on {paper} and {out} "
+                                     f"is not a regular file: give a file name (one .{fmt} "
+                                     f"file a page: NAME-1.{fmt}, NAME-2.{fmt}, ...) or write "
+                                     "a .pdf", key="-o")
         targets = check_outputs([(f, "-o") for f in files], protect=[args.scene])
     write_outputs(targets, [(d, fmt != "svg") for d in datas])
     scales_text = "; ".join(f"{name} {display_unit(s.text)}" for name, s in used.items())

@@ -15,7 +15,7 @@ two), else one a page.
 >>> paginate([(30.0, 10.0)], "A4")
 Traceback (most recent call last):
 ...
-polygon_method.errors.PolygonMethodError: --paper: panel 1 is 30 x 10 cm: more than A4 holds inside its margins (19.4 x 27.6 cm, either way round)
+polygon_method.errors.PolygonMethodError: --paper: panel 1 is 30 x 10 cm: more than A4 holds inside its margins (19.8 x 28 cm, either way round)
 """
 
 from __future__ import annotations
@@ -24,7 +24,6 @@ from dataclasses import dataclass
 from itertools import combinations
 
 from ..errors import PolygonMethodError
-from ..scales import GAP, MARGIN
 
 __all__ = ["PAPERS", "PAPER_NAMES", "FOOTER", "Page", "paper_size", "paper_name", "paginate",
            "room", "fits", "page_files"]
@@ -34,6 +33,10 @@ PAPERS = {"A4": (21.0, 29.7), "A3": (29.7, 42.0), "letter": (21.59, 27.94)}
 PAPER_NAMES = tuple(PAPERS)
 #: the strip at the foot of each page (cm) for the line that names the paper
 FOOTER = 0.5
+#: the paper's margin all round and the gap between two panels (cm); each panel has 3 mm
+#: of its own round its drawing, so a drawing is 9 mm from the paper's edge at least
+#: (printers leave 4 to 6 mm blank) and 1 cm from the next
+MARGIN, GAP = 0.6, 0.4
 
 
 def paper_size(name: str) -> tuple:

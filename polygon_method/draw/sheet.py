@@ -9,7 +9,7 @@ from ..errors import PolygonMethodError
 from ..scales import (DIAGRAMS, GAP, KIND_OF_DIAGRAM, MARGIN, SHEET_ALL, choose_scales,
                       coarser, diagram_scales, display_unit, parse_scale)
 from .diagrams import _configuration, _polygon, _sketch
-from .paper import FOOTER, PAPER_NAMES, PAPERS, fits, paginate, paper_name, room
+from .paper import FOOTER, MARGIN as PAGE_MARGIN, PAPER_NAMES, PAPERS, fits, paginate, paper_name, room
 from .sketch import _Sketch
 from .style import CM_PER_INCH, FONT, FORMATS, MAX_FIGURE_CM, PNG_DPI, SMALL_PT
 
@@ -374,8 +374,8 @@ def page_figure(panels, sizes, page):
         ax.set_gid(f"panel-{name}")
         _paint(ax, sk)
         warnings += [f"{name}: {m}" for m in sk.warnings]
-    t = fig.text(MARGIN / W, (MARGIN + FOOTER / 2) / H, page.footer(), fontsize=SMALL_PT,
-                 fontfamily=FONT, ha="left", va="center", parse_math=False)
+    t = fig.text(PAGE_MARGIN / W, (PAGE_MARGIN + FOOTER / 2) / H, page.footer(),
+                 fontsize=SMALL_PT, fontfamily=FONT, ha="left", va="center", parse_math=False)
     t.set_gid("note-sheet-paper")
     return fig, warnings
 
