@@ -83,6 +83,10 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--scale", action="append", default=[],
                    help='e.g. "1 cm = 0.1 m/s" (may be repeated: space, velocity, '
                         'acceleration)')
+    s.add_argument("--paper", default="A4",
+                   help="A4 (default), A3 or letter: the sheet is drawn on it, portrait or "
+                        "landscape, on more pages where the diagrams do not fit one at "
+                        "their scales")
     s.add_argument("--centre-labels", choices=("I13", "13"),
                    help="how the centres of --diagram centres are labelled (default I13)")
     s.add_argument("--animate", action="store_true",

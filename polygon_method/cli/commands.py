@@ -58,7 +58,7 @@ def _cmd_steps(args) -> int:
 def _cmd_draw(args) -> int:
     """``polygon-method draw SCENE -o FILE.svg [--diagram ...] [--scale "1 cm = 0.1 m/s"]``:
     written whole or not at all, and not at all when the scene cannot be solved."""
-    from ..draw import FORMATS, display_unit, parse_scales, render
+    from ..draw import FORMATS, display_unit, page_files, paper_name, parse_scales, render_pages
     from ..scene import load_scene
     from ..solution import solve
 
@@ -94,16 +94,39 @@ def _cmd_draw(args) -> int:
                                      f"scale, and --diagram {args.diagram} draws no {kind} "
                                      "diagram: leave it out",
                                      key="--scale")
+    paper = paper_name(getattr(args, "paper", None) or "A4")
     targets = check_outputs([(out, "-o")], protect=[args.scene])
     sol = solve(load_scene(args.scene, variants=False))
     diagram = getattr(args, "diagram", None) or "all"
     prefix = "" if getattr(args, "centre_labels", "I13") == "13" else "I"
-    data, used, warnings = render(sol, fmt, diagram, scales, prefix)
+    datas, used, warnings, pages = render_pages(sol, fmt, diagram, scales, prefix, paper)
     for w in list(sol.warnings) + warnings:
         print(f"warning: {w}", file=sys.stderr)
-    write_outputs(targets, [(data, fmt != "svg")])
-    print(f"{out}: " + "; ".join(f"{name} {display_unit(s.text)}" for name, s in used.items()))
+    files = [out] if fmt == "pdf" else page_files(out, len(pages))
+    if len(files) > 1:  # a page a file: out-1.svg, out-2.svg, ...
+        if targets[0].special:
+            targets[0].probe()
+            raise PolygonMethodError(f"the sheet has {len(pages)} pages on {paper} and {out} "
+                                     f"is not a regular file: give a file name (one .{fmt} "
+                                     f"file a page: NAME-1.{fmt}, NAME-2.{fmt}, ...) or write "
+                                     "a .pdf", key="-o")
+        targets = check_outputs([(f, "-o") for f in files], protect=[args.scene])
+    write_outputs(targets, [(d, fmt != "svg") for d in datas])
+    scales_text = "; ".join(f"{name} {display_unit(s.text)}" for name, s in used.items())
+    if len(pages) == 1:
+        print(f"{out}: {pages[0].text}; {scales_text}")
+        return 0
+    print(f"{out if fmt == 'pdf' else ', '.join(map(str, files))}: {len(pages)} pages on "
+          f"{paper} (the diagrams do not fit one at their scales); {scales_text}")
+    for f, p in zip(files * len(pages) if fmt == "pdf" else files, pages):
+        print(f"  {f}: page {p.number}, {p.text}: "
+              + ", ".join(_PANEL_NAMES.get(name, name) for name in p.panels))
     return 0
+
+
+_PANEL_NAMES = {"configuration": "configuration diagram", "velocity": "velocity polygon",
+                "acceleration": "acceleration polygon", "centres": "centres diagram",
+                "circle": "circle diagram"}
 
 
 def _frames(args, scene, fmt=None):

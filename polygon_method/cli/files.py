@@ -93,6 +93,16 @@ class _Target:
         except OSError as exc:
             raise self.fail(exc) from None
 
+    def probe(self):
+        """For a special file: fail as writing would (a named pipe nothing reads from),
+        without writing (a reader there sees the end of an empty file)."""
+        if not self.special:
+            return
+        try:
+            os.close(os.open(self.path, os.O_WRONLY | getattr(os, "O_NONBLOCK", 0)))
+        except OSError as exc:
+            raise self.fail(exc) from None
+
     def discard(self):
         if self.tmp is not None:
             try:

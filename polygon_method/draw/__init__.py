@@ -14,7 +14,9 @@ The drawing functions take a matplotlib Axes and return the artists they made::
     draw_acceleration(ax, sol, scale)
 
 :func:`make_figure` puts one or all three side by side on a sheet of the right physical
-size; :func:`render` returns SVG text, PNG or PDF bytes (the command line writes them).
+size; :func:`render` returns SVG text, PNG or PDF bytes of it. :func:`render_pages` lays
+the same panels out on paper (A4, A3, letter; :mod:`.paper`), on more pages where they do
+not fit one, never at other scales: what the command line writes.
 matplotlib is imported only inside these functions, so that ``import polygon_method`` and
 ``solve`` stay fast.
 
@@ -47,10 +49,12 @@ from __future__ import annotations
 
 from ..constructions import drawn_vectors
 from ..scales import (DIAGRAMS, choose_scales, display_unit, parse_scales)
+from .paper import PAPER_NAMES, page_files, paginate, paper_name
 from .sheet import (draw_acceleration, draw_configuration, draw_velocity, layout, make_figure,
-                    render, svg_string)
+                    render, render_pages, svg_string)
 from .style import CM_PER_INCH, FORMATS, PT_PER_CM
 
 __all__ = ["draw_configuration", "draw_velocity", "draw_acceleration", "make_figure",
-           "render", "svg_string", "choose_scales", "parse_scales", "drawn_vectors", "layout",
-           "display_unit", "DIAGRAMS", "FORMATS", "CM_PER_INCH", "PT_PER_CM"]
+           "render", "render_pages", "paginate", "page_files", "paper_name",
+           "PAPER_NAMES", "svg_string",
+           "choose_scales", "parse_scales", "drawn_vectors", "layout", "display_unit", "DIAGRAMS", "FORMATS", "CM_PER_INCH", "PT_PER_CM"]

@@ -18,21 +18,29 @@ KENNEDY_LINE = ("#7f8c8d", 0.5, (3.0, 2.0))
 #: the clearance (cm) beyond which a place is as good as any (half a centimetre)
 _CHORD_SPOTS = (0.5, 0.45, 0.55, 0.4, 0.6, 0.35, 0.65, 0.3, 0.7, 0.25, 0.75, 0.2, 0.8)
 _ROOM = 0.5
-#: how far around the mechanism (times its size) the centres are drawn where they are
+#: how far around the mechanism (times its size) the centres are drawn where they are;
+#: less (``WINDOWS``, in turn) where that lets the paper hold the mechanism at a finer scale
 WINDOW = 1.0
+WINDOWS = (1.0, 0.75, 0.5)
 #: the margin (times the mechanism's size) around the mechanism and the centres drawn
 PAD = 0.3
+#: the distances (cm) at which a label is tried around its centre: farther than on the
+#: other diagrams, as centres crowd round the pins (a leader line leads back)
+RINGS = (0.06, 0.2, 0.38, 0.6, 0.9, 1.3, 1.7, 2.2, 2.8)
+#: how far (cm) a leader keeps from the labels and leaders placed before it: two leaders
+#: side by side would read as one
+LEADER_CLEAR = 0.12
 
 
-def _window(P, centres=()):
+def _window(P, centres=(), window=WINDOW):
     """The part of the plane the centres' diagram shows (cm): the mechanism and the
-    centres within ``WINDOW`` times its size of it, with ``PAD`` times its size around
+    centres within ``window`` times its size of it, with ``PAD`` times its size around
     them (no more: the rest of the sheet would only shrink the mechanism)."""
     xs = [p[0] for p in P.values()]
     ys = [p[1] for p in P.values()]
     w = max(max(xs) - min(xs), max(ys) - min(ys), 1.0)
-    reach = (min(xs) - WINDOW * w, min(ys) - WINDOW * w, max(xs) + WINDOW * w,
-             max(ys) + WINDOW * w)
+    reach = (min(xs) - window * w, min(ys) - window * w, max(xs) + window * w,
+             max(ys) + window * w)
     inside = [c for c in centres if _inside(reach, c)]
     xs += [c[0] for c in inside]
     ys += [c[1] for c in inside]
@@ -60,8 +68,52 @@ def _clip(box, p, d):
     return (p[0] + t0 * d[0], p[1] + t0 * d[1]), (p[0] + t1 * d[0], p[1] + t1 * d[1])
 
 
-def centres_sketch(sol, scale: Scale, ic) -> _Sketch:
-    """The mechanism with its instantaneous centres (``ic``: a located ``Centres``)."""
+def far_words(c, pivot_xy, pivot: str, unit: float, uname: str):
+    """What the arrow of a centre off the sheet says, where it starts, and its direction:
+    a centre at a distance from the crank's pivot (in the scene's unit), in the direction
+    the arrow points, as the crank angle is measured (from +x, anticlockwise); a centre at
+    infinity, the direction of the line it lies along (0 to 180 deg).
+
+    >>> far_words(type("C", (), {"label": "I13", "point": (0.0, -2.0)})(), (0.0, 0.0),
+    ...           "O", 0.001, "mm")
+    ('I13: 2000 mm from O at 270\u00b0', (0.0, 0.0), (0.0, -2.0))
+    """
+    if c.point is not None:
+        d = (c.point[0] - pivot_xy[0], c.point[1] - pivot_xy[1])
+        far = math.hypot(*d) / unit
+        angle = math.degrees(math.atan2(d[1], d[0])) % 360.0
+        return (f"{c.label}: {far:.4g} {uname} from {pivot} at {_degrees(angle, 360)}",
+                pivot_xy, d)
+    d = c.direction
+    angle = math.degrees(math.atan2(d[1], d[0])) % 180.0
+    return f"{c.label} at \u221e, along {_degrees(angle, 180)}", None, d
+
+
+def _degrees(angle: float, whole: int) -> str:
+    """An angle to a tenth of a degree, 360 (or 180) written as 0."""
+    text = f"{angle:.1f}".rstrip("0").rstrip(".")
+    return ("0" if float(text) == whole else text) + "\u00b0"
+
+
+def _solid_obstacles(sk):
+    """On the centres' diagram a label keeps off the links' areas (not only their
+    outlines: a centre's name inside a plate reads as a point of it), the cylinders and
+    blocks, and every hatch; and a leader line keeps off them away from its own point."""
+    from shapely.geometry import LineString, Polygon
+    for kind, geo, st in sk.items:
+        gid = st.get("gid") or ""
+        if kind == "polygon" and gid.startswith(("link-", "yoke-", "cylinder-", "block-",
+                                                 "slot-", "ground-")):
+            sk.solid.append(Polygon(geo).buffer(0.02))
+        elif kind == "segments":
+            sk.solid.extend(LineString(seg).buffer(0.03) for seg in geo)
+    sk.obstacles.extend(sk.solid)
+
+
+def centres_sketch(sol, scale: Scale, ic, window: float = WINDOW) -> _Sketch:
+    """The mechanism with its instantaneous centres (``ic``: a located ``Centres``), those
+    within ``window`` times the mechanism's size of it where they are, the others by an
+    arrow at the edge."""
     s = scale.per_cm
     unit, uname = sol.scene.length_unit, sol.scene.units
     sk = _Sketch()
@@ -70,9 +122,13 @@ def centres_sketch(sol, scale: Scale, ic) -> _Sketch:
         return (p[0] / s, p[1] / s)
 
     def extra(sk, P):
+        _solid_obstacles(sk)
         box = _window(P, [cm(ic.centres[k].point) for k in ic.order
-                          if ic.centres[k].point is not None])
+                          if ic.centres[k].point is not None], window)
         mid = ((box[0] + box[2]) / 2, (box[1] + box[3]) / 2)
+        # the far centres' distances from the crank's pivot (a driving block has none:
+        # from the first fixed point)
+        pivot = sol.scene.input.pivot or next(iter(sol.scene.ground))
         # the lines that located the secondary centres, dashed
         color, lw, dashes = KENNEDY_LINE
         for key in ic.order:
@@ -105,24 +161,19 @@ def centres_sketch(sol, scale: Scale, ic) -> _Sketch:
                 sk.label(c.label, [where], SMALL_PT + 1, gid=f"label-{c.label}",
                          color=CENTRE_COLOR, point=True)
                 continue
-            if c.point is not None:
-                d = (cm(c.point)[0] - mid[0], cm(c.point)[1] - mid[1])
-                ref = sol.scene.input.pivot or next(iter(sol.scene.ground))  # (a block
-                far = math.hypot(c.point[0] - sol.P[ref][0],  # driver: no pivot)
-                                 c.point[1] - sol.P[ref][1]) / unit
-                text = f"{c.label} ({far:.4g} {uname} from {ref})"
-            else:
-                d = c.direction
-                text = f"{c.label} \u221e"
+            text, start, d = far_words(c, sol.P[pivot], pivot, unit, uname)
+            start = cm(start) if start is not None else mid
             n = math.hypot(*d)
             d = (d[0] / n, d[1] / n)
-            seg = _clip(box, mid, d)
-            tip = seg[1] if seg is not None else mid
+            seg = _clip(box, start, d)
+            tip = seg[1] if seg is not None else start
             tail = (tip[0] - 0.9 * d[0], tip[1] - 0.9 * d[1])
             sk.arrow(tail, tip, f"centre-{c.label}", CENTRE_COLOR, 1.0)
             sk.label(text, [tip], SMALL_PT, gid=f"label-{c.label}", color=CENTRE_COLOR,
                      point=True)
 
+    sk.rings = RINGS
+    sk.leader_clear = LEADER_CLEAR
     _mechanism(sk, sol, scale, extra)
     n = ic.n
     _header(sk, "centres", "Instantaneous centres", scale,
@@ -131,7 +182,11 @@ def centres_sketch(sol, scale: Scale, ic) -> _Sketch:
     return sk
 
 
-def circle_sketch(ic, radius: float = 2.6) -> _Sketch:
+#: the circle diagram's radius (cm), and the smaller one where that keeps it on the page
+CIRCLE_RADIUS, CIRCLE_SMALL = 2.6, 1.9
+
+
+def circle_sketch(ic, radius: float = CIRCLE_RADIUS) -> _Sketch:
     """The circle diagram: the links as points 1..n round a circle, a chord for each centre
     (solid: primary, from a joint; dashed: by Kennedy's theorem, numbered in the order
     found)."""
@@ -188,7 +243,7 @@ def circle_sketch(ic, radius: float = 2.6) -> _Sketch:
     x0, y0, x1, y1 = sk.content_box()
     top = y1 + 0.4
     rows = ["Circle diagram", "solid: primary centres (joints)",
-            "dashed: by Kennedy's theorem, numbered as found"]
+            "dashed: by Kennedy's theorem,", "numbered as found"]
     for i, text in enumerate(reversed(rows)):
         sk.note(x0, top + 0.45 * i, text, SMALL_PT + (3.5 if i == len(rows) - 1 else 0),
                 gid=f"note-circle-{i}", weight="bold" if i == len(rows) - 1 else "normal")

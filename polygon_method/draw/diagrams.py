@@ -622,6 +622,8 @@ def _polygon(sol, scale: Scale, phase: str) -> _Sketch:
     sk.place_labels()
     if phase == "velocity":
         legend = [("line", "construction line (\u22a5 / \u2225 to a link)")]
+        if any(v.kind == "sliding" for v in vectors):  # a block's velocity along its guide
+            legend.append(("sliding", LEGEND_NAMES["sliding"]))
         if any(steps[c.step].image_by_similar_triangle for c in cons):
             legend.append(("image", "image of a link triangle"))
         _header(sk, phase, "Velocity polygon", scale, legend=legend)

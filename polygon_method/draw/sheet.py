@@ -9,8 +9,9 @@ from ..errors import PolygonMethodError
 from ..scales import (DIAGRAMS, GAP, KIND_OF_DIAGRAM, MARGIN, SHEET_ALL, choose_scales,
                       coarser, diagram_scales, display_unit, parse_scale)
 from .diagrams import _configuration, _polygon, _sketch
+from .paper import FOOTER, MARGIN as PAGE_MARGIN, PAPER_NAMES, PAPERS, fits, paginate, paper_name, room
 from .sketch import _Sketch
-from .style import CM_PER_INCH, FONT, FORMATS, MAX_FIGURE_CM, PNG_DPI
+from .style import CM_PER_INCH, FONT, FORMATS, MAX_FIGURE_CM, PNG_DPI, SMALL_PT
 
 # --------------------------------------------------------------------------- painting
 
@@ -127,18 +128,21 @@ def _panel_size(sk: _Sketch, pad=0.3):
     return (max(x1, n1) - min(x0, n0) + 2 * pad, max(y1, m1) - min(y0, m0) + 2 * pad)
 
 
-def layout(sol, diagram: str = "all", scales=None, centre_prefix: str = "I"):
+def layout(sol, diagram: str = "all", scales=None, centre_prefix: str = "I", paper=None):
     """The sketches and scales of a sheet: ``[(name, scale, sketch)]``. One diagram, one
     scale everywhere: each diagram is drawn at the scale the step table states (and the
     checker's tolerance uses), unless ``--scale`` gives another; the sheet's layout, not
-    the scales, changes where the three do not fit side by side (:func:`rows`)."""
+    the scales, changes where the three do not fit side by side (:func:`rows`) or on one
+    page of ``paper`` (:mod:`.paper`). The centres' diagram, whose scale no step table
+    states, is coarsened until it fits a page of ``paper`` (without one, until it fits
+    beside its circle diagram across an A4 landscape sheet)."""
     n = len(sol.scene.point_names)
     if n > MAX_DRAWN_POINTS:  # each label is placed clear of every line and label: minutes
         raise PolygonMethodError(f"the scene has {n} points: a drawing labels at most "
                                  f"{MAX_DRAWN_POINTS} (the page, `polygon-method page`, "
                                  "shows any number)", file=sol.scene.file)
     if diagram == "centres":
-        return _centres_layout(sol, scales, centre_prefix)
+        return _centres_layout(sol, scales, centre_prefix, paper)
     names = DIAGRAMS if diagram == "all" else (diagram,)
     if diagram not in DIAGRAMS + ("all",):
         raise PolygonMethodError(f"unknown diagram {diagram!r}; use configuration, velocity, "
@@ -179,11 +183,13 @@ def rows(sizes, width=SHEET_ALL[0] - 2 * MARGIN):
     return out
 
 
-def _centres_layout(sol, scales=None, prefix="I"):
-    """The centres sheet: the mechanism with its centres (to scale, coarsened until the
-    A4 landscape sheet holds it) and the circle diagram (not to scale)."""
+def _centres_layout(sol, scales=None, prefix="I", paper=None):
+    """The centres sheet: the mechanism with its centres (to scale, coarsened until one page
+    of ``paper`` holds it, the circle diagram beside it where there is room, else on a page
+    of its own; without a paper, until an A4 landscape sheet holds both side by side) and
+    the circle diagram (not to scale)."""
     from ..centres import locate
-    from .centres import centres_sketch, circle_sketch
+    from .centres import CIRCLE_SMALL, WINDOWS, centres_sketch, circle_sketch
 
     ic = locate(sol, prefix)
     given = dict(scales or {})
@@ -194,13 +200,54 @@ def _centres_layout(sol, scales=None, prefix="I"):
     circle = circle_sketch(ic)
     cw, ch = _panel_size(circle)
     room_w, room_h = SHEET_ALL[0] - 2 * MARGIN - GAP - cw, SHEET_ALL[1] - 2 * MARGIN
+
+    def pages(*sizes):  # how many pages of ``paper`` they take (0: more than it holds)
+        try:
+            return len(paginate(list(sizes), paper))
+        except PolygonMethodError:
+            return 0
+
     sk = centres_sketch(sol, s, ic)
-    for _ in range(12):
-        w, h = _panel_size(sk)
-        if fixed or (w <= room_w and h <= room_h):
-            break
-        s = coarser(s)
-        sk = centres_sketch(sol, s, ic)
+    if paper is None:  # the old rule: both side by side across A4 landscape
+        for _ in range(12):
+            w, h = _panel_size(sk)
+            if fixed or (w <= room_w and h <= room_h):
+                break
+            s = coarser(s)
+            sk = centres_sketch(sol, s, ic)
+    else:  # the finest scale at which a page holds the diagram and the circle diagram
+        # (showing less of the plane around the mechanism, a smaller circle), unless one
+        # round step coarser shows more centres where they are with every label clear;
+        # else the diagram alone, the circle diagram on a page of its own
+        small = circle_sketch(ic, CIRCLE_SMALL)
+
+        def largest(scale, both=True):  # (centres in place, sketch, circle) or None
+            for window in WINDOWS:
+                here = sk if (scale, window) == (s, WINDOWS[0]) else \
+                    centres_sketch(sol, scale, ic, window)
+                size = _panel_size(here)
+                for c in (circle, small) if both else (circle,):
+                    if pages(size, _panel_size(c)) == (1 if both else 2):
+                        return _in_place(here), here, c
+            return None
+
+        for _ in range(12):
+            fine = largest(s)
+            if fixed:
+                sk, circle = fine[1:] if fine else (sk, circle)
+                break
+            rough = largest(coarser(s)) if fine is None or fine[0] < len(ic.order) else None
+            if rough is not None and (fine is None or (rough[0] > fine[0] and
+                                                       not rough[1].warnings)):
+                s, sk, circle = coarser(s), rough[1], rough[2]
+                break
+            if fine is None:
+                fine = largest(s, both=False)
+            if fine is not None:
+                sk, circle = fine[1:]
+                break
+            s = coarser(s)
+            sk = centres_sketch(sol, s, ic)
     w, h = _panel_size(sk)
     if max(w, h) > MAX_FIGURE_CM:
         raise PolygonMethodError(f"the centres diagram at {display_unit(s.text)} would be "
@@ -208,6 +255,12 @@ def _centres_layout(sol, scales=None, prefix="I"):
                                  key="--scale")
     sk.warnings.extend(ic.warnings)
     return [("centres", s, sk), ("circle", None, circle)]
+
+
+def _in_place(sk) -> int:
+    """How many centres a centres' sketch draws where they are (not as arrows)."""
+    return sum(1 for kind, _, st in sk.items
+               if kind == "circle" and (st["gid"] or "").startswith("centre-"))
 
 
 def make_figure(sol, diagram: str = "all", scales=None, centre_prefix: str = "I"):
@@ -268,6 +321,110 @@ def render(sol, fmt: str = "svg", diagram: str = "all", scales=None,
             fig.savefig(buf, format="pdf", metadata={"CreationDate": None, "ModDate": None,
                                                      "Producer": None})
         return buf.getvalue(), used, warnings
+
+
+# --------------------------------------------------------------------------- on paper
+
+_WHAT = {"configuration": "configuration diagram", "velocity": "velocity polygon",
+         "acceleration": "acceleration polygon", "centres": "centres diagram",
+         "circle": "circle diagram"}
+
+
+def sheet_pages(sol, diagram: str = "all", scales=None, centre_prefix: str = "I",
+                paper: str = "A4"):
+    """The panels of a sheet (:func:`layout`) and the pages of ``paper`` they go on
+    (:func:`.paper.paginate`): ``(panels, sizes, pages)``. A panel larger than the paper
+    at its scale is one line naming the diagram, its scale and what to do (a larger paper,
+    or a coarser ``--scale``, which the step table then does not state)."""
+    panels = layout(sol, diagram, scales, centre_prefix, paper)
+    sizes = [_panel_size(sk) for _, _, sk in panels]
+    paper = paper_name(paper)
+    given = dict(scales or {})
+    for (name, s, _), size in zip(panels, sizes):
+        if fits(size, paper):
+            continue
+        rw, rh = room(paper, "portrait")
+        what = f"the {_WHAT[name]}" + (f" at {display_unit(s.text)}" if s is not None else "")
+        bigger = sorted((p for p in PAPER_NAMES if p != paper and fits(size, p)),
+                        key=lambda p: PAPERS[p][0] * PAPERS[p][1])
+        advice = f"draw it on {bigger[0]} (--paper {bigger[0]}) or at a coarser --scale" \
+            if bigger else "draw it at a coarser --scale"
+        asked = name in given or KIND_OF_DIAGRAM.get(name) in given or name == "centres"
+        raise PolygonMethodError(
+            f"{what} is {size[0]:.3g} x {size[1]:.3g} cm: more than {paper} holds inside its "
+            f"margins ({rw:.3g} x {rh:.3g} cm, either way round); {advice}",
+            key="--scale" if asked and given else "--paper")
+    pages = paginate(sizes, paper, panels=[name for name, _, _ in panels])
+    return panels, sizes, pages
+
+
+def page_figure(panels, sizes, page):
+    """The matplotlib Figure of one page: the paper's size, each panel placed so that one
+    data unit is one centimetre on the paper, and the line naming the paper at its foot.
+    Returns ``(figure, warnings)``."""
+    from matplotlib.figure import Figure
+
+    W, H = page.size
+    fig = Figure(figsize=(W / CM_PER_INCH, H / CM_PER_INCH), dpi=72)
+    warnings = []
+    for k, x, y in page.placed:
+        name, _, sk = panels[k]
+        w, h = sizes[k]
+        ax = fig.add_axes((x / W, (H - y - h) / H, w / W, h / H))
+        ax.set_gid(f"panel-{name}")
+        _paint(ax, sk)
+        warnings += [f"{name}: {m}" for m in sk.warnings]
+    t = fig.text(PAGE_MARGIN / W, (PAGE_MARGIN + FOOTER / 2) / H, page.footer(),
+                 fontsize=SMALL_PT, fontfamily=FONT, ha="left", va="center", parse_math=False)
+    t.set_gid("note-sheet-paper")
+    return fig, warnings
+
+
+def render_pages(sol, fmt: str = "svg", diagram: str = "all", scales=None,
+                 centre_prefix: str = "I", paper: str = "A4"):
+    """The sheet on ``paper`` (A4, A3, letter; portrait or landscape, whichever holds the
+    panels): a PDF of as many pages as it needs, or one SVG text (byte-stable) or PNG per
+    page. Returns ``(datas, {diagram: Scale}, warnings, pages)``: ``datas`` has one item
+    for a PDF, one a page otherwise."""
+    import matplotlib
+
+    if fmt not in FORMATS:
+        raise PolygonMethodError(f"cannot draw {fmt!r}: use svg, png or pdf")
+    with matplotlib.rc_context(_rc()):
+        panels, sizes, pages = sheet_pages(sol, diagram, scales, centre_prefix, paper)
+    datas, warnings = write_pages(panels, sizes, pages, fmt)
+    return datas, {name: s for name, s, _ in panels if s is not None}, warnings, pages
+
+
+def write_pages(panels, sizes, pages, fmt: str = "svg"):
+    """The pages of :func:`sheet_pages` as one PDF (``[bytes]``) or as SVG texts or PNGs,
+    one a page. Returns ``(datas, warnings)``."""
+    import matplotlib
+
+    with matplotlib.rc_context(_rc()):
+        figures, warnings = [], []
+        for page in pages:
+            fig, w = page_figure(panels, sizes, page)
+            figures.append(fig)
+            warnings += w
+        if fmt == "pdf":
+            from matplotlib.backends.backend_pdf import PdfPages
+            buf = io.BytesIO()
+            with PdfPages(buf, metadata={"CreationDate": None, "ModDate": None,
+                                         "Producer": None}) as pdf:
+                for fig in figures:
+                    pdf.savefig(fig)
+            return [buf.getvalue()], warnings
+        datas = []
+        for fig in figures:
+            if fmt == "svg":
+                out = io.StringIO()
+                fig.savefig(out, format="svg", metadata={"Date": None})
+            else:
+                out = io.BytesIO()
+                fig.savefig(out, format="png", dpi=PNG_DPI, metadata={"Software": None})
+            datas.append(out.getvalue())
+        return datas, warnings
 
 
 def svg_string(sol, diagram: str = "all", scales=None) -> str:

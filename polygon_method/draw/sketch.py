@@ -42,6 +42,8 @@ def _text_size(text: str, size: float, weight: str = "normal"):
 
 #: how much nearer (cm) a point's label is to its own point than to any other point
 POINT_MARGIN = 0.08
+#: the distances (cm) from its point at which a label is tried, nearest first
+RINGS = (0.06, 0.2, 0.38, 0.6, 0.9, 1.3)
 
 
 @dataclass
@@ -70,6 +72,12 @@ class _Sketch:
     notes: list = field(default_factory=list)  # fixed texts (header)
     warnings: list = field(default_factory=list)
     bounds: list = field(default_factory=list)  # (xmin, ymin, xmax, ymax) of the content
+    #: the distances (cm) from its point at which a label is tried, nearest first
+    rings: tuple = RINGS
+    #: how far (cm) a leader line keeps from the labels and leaders placed before it
+    leader_clear: float = 0.02
+    #: the areas (shapely) a leader line keeps off, away from its own point
+    solid: list = field(default_factory=list)
 
     # -- primitives (coordinates in cm)
     def line(self, pts, gid=None, color="#000000", lw=0.8, dashes=None, z=3, obstacle=True,
@@ -184,7 +192,7 @@ class _Sketch:
             if lab.point:
                 named.append(placed[-1])
             if best[2] is not None:  # a leader from a label set off to its point
-                placed.append(best[2].buffer(0.02))
+                placed.append(best[2].buffer(self.leader_clear))
                 self.items.append(("line", list(best[2].coords),
                                    dict(color="#555555", lw=0.4, dashes=None, z=7,
                                         gid=f"leader-{lab.gid}")))
@@ -200,7 +208,7 @@ class _Sketch:
         from shapely import box
         from shapely.geometry import Point
         best, clear_only, clashes = None, None, []
-        for ring, gap in enumerate((0.06, 0.2, 0.38, 0.6, 0.9, 1.3)):
+        for ring, gap in enumerate(self.rings):
             options = []
             for ai, (ax, ay) in enumerate(lab.anchors):
                 away = self._incident(ax, ay)
@@ -226,7 +234,8 @@ class _Sketch:
                 leader = None
                 if lab.leader and gap > 0.5:  # far from its point: a leader line to it
                     leader = _leader(lab.anchors[ai], (cx, cy, w, h))
-                    if any(p.intersects(leader) for p in placed):
+                    if any(p.intersects(leader) for p in placed) or \
+                            _crosses(leader, self.solid, lab.anchors[ai]):
                         clashes.append((b, [], [], (cx, cy)))
                         continue
                 if lab.point:  # nearer to its own point than to any other?
@@ -301,6 +310,16 @@ def _leader(anchor, placed_box):
     a, b = 0.1, n - 0.06
     return LineString([(anchor[0] + a * ux, anchor[1] + a * uy),
                        (anchor[0] + b * ux, anchor[1] + b * uy)])
+
+
+def _crosses(leader, solid, anchor):
+    """Whether a leader line crosses one of the ``solid`` areas other than those at its own
+    point (the link whose pin it labels, the plate a centre lies in)."""
+    if not solid:
+        return False
+    from shapely.geometry import Point
+    here = Point(anchor).buffer(0.15)
+    return any(g.intersects(leader) and not g.intersects(here) for g in solid)
 
 
 def _angle_between(a, b):

@@ -1,0 +1,191 @@
+"""Sheets of paper: the diagrams' panels (each at its own true scale) laid out on A4, A3 or
+US letter, portrait or landscape, on as few pages as hold them; never shrunk, never cut off.
+
+A panel is a rectangle of so many centimetres (a diagram with its header, at its scale).
+The panels of a sheet keep their order (configuration, velocity, acceleration) and are
+arranged side by side, stacked, or one beside the other two stacked (every arrangement
+that cuts the sheet straight across, in order). Where the three do not fit one page in any
+arrangement either way round, they go on two pages (the first two together, or the last
+two), else one a page.
+
+>>> [p.text for p in paginate([(9.0, 10.0), (9.0, 11.0), (8.0, 13.5)], "A4")]
+['A4 landscape']
+>>> [p.text for p in paginate([(18.0, 15.0), (12.0, 14.0), (8.0, 13.5)], "A4")]
+['A4 portrait', 'A4 landscape']
+>>> paginate([(30.0, 10.0)], "A4")
+Traceback (most recent call last):
+...
+polygon_method.errors.PolygonMethodError: --paper: panel 1 is 30 x 10 cm: more than A4 holds inside its margins (19.8 x 28 cm, either way round)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from itertools import combinations
+
+from ..errors import PolygonMethodError
+
+__all__ = ["PAPERS", "PAPER_NAMES", "FOOTER", "Page", "paper_size", "paper_name", "paginate",
+           "room", "fits", "page_files"]
+
+#: paper sizes (cm, portrait): ISO A4 and A3, US letter (8.5 x 11 in)
+PAPERS = {"A4": (21.0, 29.7), "A3": (29.7, 42.0), "letter": (21.59, 27.94)}
+PAPER_NAMES = tuple(PAPERS)
+#: the strip at the foot of each page (cm) for the line that names the paper
+FOOTER = 0.5
+#: the paper's margin all round and the gap between two panels (cm); each panel has 3 mm
+#: of its own round its drawing, so a drawing is 9 mm from the paper's edge at least
+#: (printers leave 4 to 6 mm blank) and 1 cm from the next
+MARGIN, GAP = 0.6, 0.4
+
+
+def paper_size(name: str) -> tuple:
+    """(width, height) in cm of the paper ``name`` (portrait), case as a user writes it
+    (``a4``, ``Letter``)."""
+    for key, size in PAPERS.items():
+        if str(name).strip().lower() == key.lower():
+            return size
+    raise PolygonMethodError(f"unknown paper {name!r}; use A4, A3 or letter", key="--paper")
+
+
+def paper_name(name: str) -> str:
+    """The paper's name as this module writes it (``a4`` -> ``A4``, ``LETTER`` ->
+    ``letter``)."""
+    paper_size(name)
+    return next(k for k in PAPERS if k.lower() == str(name).strip().lower())
+
+
+def room(paper: str, orientation: str) -> tuple:
+    """(width, height) in cm a page leaves for panels: the paper less a margin all round
+    and the footer."""
+    w, h = paper_size(paper)
+    if orientation == "landscape":
+        w, h = h, w
+    return w - 2 * MARGIN, h - 2 * MARGIN - FOOTER
+
+
+@dataclass(frozen=True)
+class Page:
+    """One page of a sheet.
+
+    Attributes
+    ----------
+    paper, orientation : str
+        ``A4``, ``A3`` or ``letter``; ``portrait`` or ``landscape``.
+    size : tuple
+        (width, height) of the page in cm, as it is printed.
+    placed : tuple
+        ``(panel index, x, y)``: the panel's top-left corner in cm from the page's
+        top-left corner.
+    number, count : int
+        This page's number and how many pages the sheet has.
+    panels : tuple
+        The names of the panels on it (``configuration``, ...), where the caller gave them.
+    """
+
+    paper: str
+    orientation: str
+    size: tuple
+    placed: tuple
+    number: int = 1
+    count: int = 1
+    panels: tuple = ()
+
+    @property
+    def text(self) -> str:
+        return f"{self.paper} {self.orientation}"
+
+    def footer(self) -> str:
+        """The line each page carries: the paper it was drawn for and how to print it."""
+        w, h = self.size
+        page = f"; page {self.number} of {self.count}" if self.count > 1 else ""
+        return (f"{self.text} ({w:g} x {h:g} cm): print at 100 % (actual size, not fit to "
+                f"page){page}")
+
+
+def _arrangements(items):
+    """Every arrangement of the panels ``items`` ([(index, (w, h))], in order) that cuts
+    straight across: (width, height, [(index, x, y)]); side by side before stacked."""
+    if len(items) == 1:
+        k, (w, h) = items[0]
+        return [(w, h, [(k, 0.0, 0.0)])]
+    out = []
+    for across in (True, False):
+        for cut in range(1, len(items)):
+            for a in _arrangements(items[:cut]):
+                for b in _arrangements(items[cut:]):
+                    if across:  # side by side, tops aligned
+                        w, h = a[0] + GAP + b[0], max(a[1], b[1])
+                        pos = a[2] + [(k, x + a[0] + GAP, y) for k, x, y in b[2]]
+                    else:  # stacked, left edges aligned
+                        w, h = max(a[0], b[0]), a[1] + GAP + b[1]
+                        pos = a[2] + [(k, x, y + a[1] + GAP) for k, x, y in b[2]]
+                    out.append((w, h, pos))
+    return out
+
+
+def _one_page(items, paper):
+    """The page holding ``items``, or None: the first arrangement that fits, portrait
+    before landscape for each; the arrangement centred across the page, at its top."""
+    for w, h, pos in _arrangements(items):
+        for orientation in ("portrait", "landscape"):
+            rw, rh = room(paper, orientation)
+            if w <= rw + 1e-9 and h <= rh + 1e-9:
+                pw, ph = paper_size(paper)
+                size = (pw, ph) if orientation == "portrait" else (ph, pw)
+                left = MARGIN + (rw - w) / 2
+                return Page(paper, orientation, size,
+                            tuple((k, left + x, MARGIN + y) for k, x, y in pos))
+    return None
+
+
+def fits(size, paper: str) -> bool:
+    """Whether one page of ``paper`` (either way round) holds a panel of ``size`` (cm)."""
+    return _one_page([(0, tuple(size))], paper_name(paper)) is not None
+
+
+def _groups(n):
+    """The ways to cut 0..n-1 into runs, fewest runs first."""
+    for cuts in range(n):
+        for at in combinations(range(1, n), cuts):
+            bounds = (0,) + at + (n,)
+            yield [list(range(bounds[i], bounds[i + 1])) for i in range(len(bounds) - 1)]
+
+
+def paginate(sizes, paper: str = "A4", names=None, advice: str = "", panels=None) -> list:
+    """The pages of a sheet whose panels are ``sizes`` ((width, height) in cm, in order):
+    all on one page where an arrangement fits either way round, else on as few pages as
+    hold them, each panel whole. Raises :class:`PolygonMethodError` (key ``--paper``) when
+    one panel alone is larger than the paper holds (``names``: what each panel is, for that
+    line; ``advice``: what to do, after it; ``panels``: their short names, kept on each
+    page)."""
+    paper = paper_name(paper)
+    for k, (w, h) in enumerate(sizes):
+        if _one_page([(k, (w, h))], paper) is None:
+            rw, rh = room(paper, "portrait")
+            raise PolygonMethodError(
+                f"{names[k] if names else f'panel {k + 1}'} is {w:.3g} x {h:.3g} cm: more "
+                f"than {paper} holds inside its margins ({rw:.3g} x {rh:.3g} cm, either way "
+                f"round){advice}", key="--paper")
+    for groups in _groups(len(sizes)):
+        pages = [_one_page([(k, sizes[k]) for k in g], paper) for g in groups]
+        if all(p is not None for p in pages):
+            n = len(pages)
+            return [Page(p.paper, p.orientation, p.size, p.placed, i + 1, n,
+                         tuple(panels[k] for k, _, _ in p.placed) if panels else ())
+                    for i, p in enumerate(pages)]
+    raise AssertionError("unreachable: one panel a page always fits")  # pragma: no cover
+
+
+def page_files(path, count: int) -> list:
+    """The files a sheet of ``count`` pages is written to as SVG or PNG: the name given for
+    one page; ``NAME-1.svg``, ``NAME-2.svg``, ... for more.
+
+    >>> [str(p) for p in page_files("out/sheet.svg", 3)]
+    ['out/sheet-1.svg', 'out/sheet-2.svg', 'out/sheet-3.svg']
+    """
+    from pathlib import Path
+    path = Path(path)
+    if count == 1:
+        return [path]
+    return [path.with_name(f"{path.stem}-{k}{path.suffix}") for k in range(1, count + 1)]
