@@ -467,7 +467,7 @@ function buildPlots() {
       el(svg, "line", {x1: L, y1: r3(Y(y)), x2: W - R, y2: r3(Y(y)), class: y === 0 ? "axis" : "grid"});
       text(svg, {x: L - 3, y: r3(Y(y) + 3.5), class: "tick", "text-anchor": "end"}, fmt(y, 3));
     }
-    const span = Math.abs(t1 - t0), dstep = [5, 10, 15, 30, 45, 60, 90, 180].find((s) => span / s <= 6) || 360;
+    const turned = Math.abs(t1 - t0), dstep = [5, 10, 15, 30, 45, 60, 90, 180].find((s) => turned / s <= 6) || 360;
     for (let j = Math.ceil(Math.min(t0, t1) / dstep - 1e-9); j * dstep <= Math.max(t0, t1) + 1e-9; j++) {
       const t = j * dstep;  // a round angle, written between 0 and 360
       el(svg, "line", {x1: r3(X(t)), y1: T, x2: r3(X(t)), y2: H - B, class: "grid"});
