@@ -151,3 +151,35 @@ def test_every_angle_fills_its_panels_and_stays_inside(browser, pages, scene, wi
             assert max(across, up) >= SPAN, (phase, k, across, up, p["scale"])
             filled += 1
     assert filled >= ANGLES  # the test looked at polygons, not only at rest frames
+
+
+def test_the_animation_player_works_offline(browser, tmp_path):
+    """draw --animate to HTML opened with every request but its own file refused: nothing
+    else is asked for, play moves the frames, and its buttons have text (no icon font)."""
+    out = tmp_path / "cycle.html"
+    assert main(["draw", str(ROOT / "worked_problems" / "crank_slotted_lever.toml"),
+                 "--animate", "-o", str(out), "--frames", "12"]) == 0
+    page = browser.new_page(viewport={"width": 390, "height": 844})
+    asked, errors = [], []
+    url = out.as_uri()
+
+    def route(r):
+        asked.append(r.request.url)
+        if r.request.url == url or r.request.url.startswith("data:"):
+            r.continue_()
+        else:
+            r.abort()
+    page.route("**/*", route)
+    page.on("pageerror", lambda e: errors.append(str(e)))
+    try:
+        page.goto(url)
+        first = page.text_content("#now")
+        page.click("#play")
+        page.wait_for_timeout(500)
+        page.click("#play")
+        assert page.text_content("#now") != first
+        assert all(page.text_content(b).strip() for b in ("#play", "#back", "#next"))
+        assert page.evaluate("document.documentElement.scrollWidth <= innerWidth")
+    finally:
+        page.close()
+    assert errors == [] and [a for a in asked if not a.startswith("data:")] == [url]

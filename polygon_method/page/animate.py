@@ -38,7 +38,10 @@ __all__ = ["animation", "shapes", "FPS"]
 FPS = 15
 #: the SVG animation's text size, in cm of paper (it is drawn true to scale)
 FONT_CM = 0.35
+#: colour and width (cm) of each kind of line, as the drawings have them
 _COLOR = {"link": BODY_EDGE, "absolute": STYLE["absolute"][0], "relative": STYLE["relative"][0]}
+_WIDTH = {"link": 0.06, "absolute": STYLE["absolute"][1] * 2.54 / 72,
+          "relative": STYLE["relative"][1] * 2.54 / 72}
 
 
 def _cm(fr: Frames, phase: str, scale, p):
@@ -198,7 +201,7 @@ def _svg(fr: Frames) -> str:
              f'<text x="{x0 - pad + 0.2:.3f}" y="{-y1 - pad + fs:.3f}" font-size="{fs:.3f}">'
              f'{escape(phase)}, {escape(display_unit(scale.text))}</text>']
         for kind, (a, b, c, d) in lines:
-            g.append(f'<line stroke="{_COLOR[kind]}" stroke-width="{fs * 0.1:.3f}" '
+            g.append(f'<line stroke="{_COLOR[kind]}" stroke-width="{_WIDTH[kind]:.3f}" '
                      f'stroke-linecap="round">' + "".join(
                          f'<animate attributeName="{n}" values="{_values(v)}" {anim}/>'
                          for n, v in (("x1", a), ("y1", -b), ("x2", c), ("y2", -d)))

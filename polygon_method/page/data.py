@@ -1,7 +1,7 @@
 """The page's data: the frames as plain lists, rounded to six significant figures (a
 thousandth of a per cent, far below what a drawing or the page's four-figure values show),
-with what the script needs to draw them: names, links, plates, sliders, the scales, and
-the box each diagram needs in centimetres of paper.
+with what the script needs to draw them: names, links, plates, sliders, the step table's
+scales, and the drawings' colours and dashes.
 
 >>> import polygon_method as pm
 >>> from polygon_method.page.frames import frames
@@ -185,8 +185,9 @@ def page_data(fr: Frames) -> dict:
     d = {
         "title": sc.title or sc.file or "mechanism",
         "units": sc.units, "unit": sc.length_unit,
-        "scales": [{"diagram": name, "text": display_unit(s.text), "perCm": s.per_cm,
-                    "box": diagram_box(fr, name, s)} for name, s in zip(DIAGRAMS, fr.scales)],
+        # the step table's scales (the page draws each polygon at its own per frame)
+        "scales": [{"diagram": name, "text": display_unit(s.text), "perCm": s.per_cm}
+                   for name, s in zip(DIAGRAMS, fr.scales)],
         "theta": [round(float(t), 6) for t in fr.degrees],
         "start": fr.start, "fullTurn": fr.full_turn, "limits": fr.limits_text,
         "crank": sc.input.crank, "pivot": sc.input.pivot,

@@ -240,6 +240,7 @@ function blockCorners(c, u, size) {  // a square block at c, its sides along u
 
 function update(phase, k) {
   const v = frameView(phase, k), fs = FS, P = (p) => mm(phase, p, k), C = (a) => toMm(phase, a), labels = [];
+  let pole = null;
   const svg = document.getElementById(phase);
   svg.setAttribute("viewBox", [v.box[0], v.box[1], v.W, v.H].map(r3).join(" "));
   svg.dataset.perCm = v.per;
@@ -282,10 +283,12 @@ function update(phase, k) {
       for (const p of D.points) { const c = P(p); const L = Math.hypot(c[0], c[1]) || 1; sx += c[0] / L; sy += c[1] / L; }
       const L = Math.hypot(sx, sy);
       const u = L > 1e-9 ? [-sx / L, -sy / L] : [-0.7, 0.7];
-      place(e, keepIn([0.8 * fs * u[0], 0.8 * fs * u[1]], v.box, e.lastChild.nodeValue.length));
+      pole = keepIn([0.8 * fs * u[0], 0.8 * fs * u[1]], v.box, e.lastChild.nodeValue.length);
+      place(e, pole);
+      pole = [pole[0], pole[1] - 0.35 * fs];  // its middle, which the other labels keep clear of
     } else if (kind === "label") labels.push([e, P(x)]);
   }
-  placeLabels(labels, phase, v.box);
+  placeLabels(labels, phase, v.box, pole);
 }
 // a label's place moved inside the panel (its text is about 0.6 fs wide a letter)
 function keepIn(q, box, letters) {
@@ -295,11 +298,12 @@ function keepIn(q, box, letters) {
 }
 // labels beside their points, each where it is clear of the labels already placed and of
 // the other points (tried around the point, the preferred side first)
-function placeLabels(labels, phase, box) {
+function placeLabels(labels, phase, box, pole) {
   const pts = labels.map(([, c]) => c);
   if (phase !== "configuration") pts.push([0, 0]);
-  const placed = [], fs = FS;
-  const clear = (q, own) => placed.every((c) => Math.hypot(q[0] - c[0], q[1] - c[1]) > 1.1 * fs) &&
+  const placed = pole ? [pole] : [], fs = FS;
+  // (labels are wider than high: two letters side by side need more room than one above another)
+  const clear = (q, own) => placed.every((c) => Math.hypot((q[0] - c[0]) / 2, (q[1] - c[1]) / 0.95) > fs) &&
     pts.every((c, i) => i === own || Math.hypot(q[0] - c[0], q[1] - c[1]) > 0.6 * fs);
   labels.forEach(([e], i) => {
     const c = pts[i], L = Math.hypot(c[0], c[1]);
@@ -466,7 +470,7 @@ function buildPlots() {
       el(svg, "line", {x1: L, y1: r3(Y(y)), x2: W - R, y2: r3(Y(y)), class: y === 0 ? "axis" : "grid"});
       text(svg, {x: L - 3, y: r3(Y(y) + 3.5), class: "tick", "text-anchor": "end"}, fmt(y, 3));
     }
-    const span = Math.abs(t1 - t0), dstep = [5, 10, 15, 30, 45, 60, 90, 180].find((s) => span / s <= 6) || 360;
+    const turned = Math.abs(t1 - t0), dstep = [5, 10, 15, 30, 45, 60, 90, 180].find((s) => turned / s <= 6) || 360;
     for (let j = Math.ceil(Math.min(t0, t1) / dstep - 1e-9); j * dstep <= Math.max(t0, t1) + 1e-9; j++) {
       const t = j * dstep;  // a round angle, written between 0 and 360
       el(svg, "line", {x1: r3(X(t)), y1: T, x2: r3(X(t)), y2: H - B, class: "grid"});
