@@ -39,6 +39,14 @@ FILES = sorted(glob.glob(str(ROOT / "worked_problems" / "*.toml"))) + \
     sorted(glob.glob(str(ROOT / "tests" / "textbook" / "*.toml")))
 
 
+@pytest.fixture(autouse=True)
+def _precision():
+    """mpmath's working precision as it was before each test (others rely on theirs)."""
+    dps = mpmath.mp.dps
+    yield
+    mpmath.mp.dps = dps
+
+
 def _covered(scene):
     try:
         owners(scene, compile_plan(scene))
