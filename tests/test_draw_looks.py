@@ -34,7 +34,10 @@ TURNED = [(ROOT / "worked_problems" / "whitworth.toml", 270),
 
 
 def _solutions():
+    """Every scene driven by a crank (a driving block has no crank angle to mark)."""
     for p in SCENES:
+        if load_scene(p).input.crank is None:
+            continue
         yield Path(p).stem, lambda p=p: solve(load_scene(p))
     for p, a in TURNED:
         yield f"{Path(p).stem}@{a}", lambda p=p, a=a: _turned(p, a)

@@ -123,13 +123,24 @@ def _check_scales(svg, sol, used):
         said = _said(svg, f"note-{name}-scale")
         assert said == s.text.replace(" ", "").replace("^2", "2"), (said, s.text)
     measured = 0
-    if "joint-" + inp.pivot in svg.groups and "note-configuration-scale" in svg.groups:
-        crank = next(lk for lk in sc.links if lk.key == inp.crank)
-        got = math.dist(_centre(svg, f"joint-{inp.pivot}"), _centre(svg, f"joint-{inp.tip}"))
-        assert got / CM * used["configuration"].per_cm == pytest.approx(crank.length,
+    # the crank, or for a mechanism driven by a block, its first link between two joints
+    first = (next(lk for lk in sc.links if lk.key == inp.crank) if inp.crank is not None
+             else next(lk for lk in sc.links if f"joint-{lk.p}" in svg.groups
+                       and f"joint-{lk.q}" in svg.groups))
+    if f"joint-{first.p}" in svg.groups and "note-configuration-scale" in svg.groups:
+        got = math.dist(_centre(svg, f"joint-{first.p}"), _centre(svg, f"joint-{first.q}"))
+        assert got / CM * used["configuration"].per_cm == pytest.approx(first.length,
                                                                        rel=1e-5)
         measured += 1
-    if "note-velocity-scale" in svg.groups and inp.pivot in sc.ground:
+    if "note-velocity-scale" in svg.groups and inp.block is not None:
+        n = next(k for k, v in enumerate(drawn_vectors(sol, "velocity"))
+                 if v.kind == "absolute" and v.name == f"v_{inp.block}")
+        tail = svg.path(f"velocity-vector-{n}-shaft")[0]
+        tip = svg.path(f"velocity-vector-{n}-head")[0]
+        got = math.dist(tail, tip) / CM * used["velocity"].per_cm
+        assert got == pytest.approx(abs(inp.omega), rel=1e-5)  # the block's given speed
+        measured += 1
+    elif "note-velocity-scale" in svg.groups and inp.pivot in sc.ground:
         crank = next(lk for lk in sc.links if lk.key == inp.crank)
         n = next(k for k, v in enumerate(drawn_vectors(sol, "velocity"))
                  if v.kind == "absolute" and v.name == f"v_{inp.tip}")
