@@ -26,7 +26,6 @@ ROOT = Path(__file__).resolve().parents[1]
 TEXTBOOK = sorted(glob.glob(str(ROOT / "tests" / "textbook" / "*.toml")))
 PROBLEMS = WORKED + TEXTBOOK
 PT = 72 / 2.54  # points per cm
-MEASURED = {}  # (problem, paper) -> page sizes: printed by the report helper below
 
 
 def _stem(path):
@@ -198,8 +197,6 @@ def test_every_sheet_is_on_its_paper_inside_the_margins_and_true_to_scale(path, 
                 for b in rects[i + 1:]:
                     assert a[2] <= b[0] + 1e-9 or b[2] <= a[0] + 1e-9 or \
                         a[3] <= b[1] + 1e-9 or b[3] <= a[1] + 1e-9
-        MEASURED[(_stem(path), paper)] = [f"{p.orientation} {'+'.join(p.panels)}"
-                                          for p in pages]
         if paper not in written:
             continue
         svgs, warnings = write_pages(panels, sizes, pages, "svg")

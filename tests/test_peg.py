@@ -201,7 +201,8 @@ def test_forgetting_the_coriolis_component_of_the_moving_slot_is_diagnosed():
 def test_cli_views_of_a_peg(tmp_path, capsys):
     for args in (["solve", "--json", str(TWO)], ["steps", str(TWO)], ["centres", str(TWO)],
                  ["check", str(SHAPER)], ["sweep", "--summary", str(SHAPER)],
-                 ["linkage", str(SHAPER)], ["draw", str(TWO), "-o", str(tmp_path / "x.svg")],
+                 ["linkage", str(SHAPER)],
+                 ["draw", str(TWO), "-o", str(tmp_path / "x.svg"), "--paper", "A3"],
                  ["page", str(SHAPER), "-o", str(tmp_path / "x.html")]):
         assert main(args) == 0, args
     out = " ".join(capsys.readouterr().out.split())  # the steps' lines are wrapped

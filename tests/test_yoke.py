@@ -57,7 +57,8 @@ def test_every_view_takes_the_yoke(tmp_path, capsys):
     scene.write_text(YOKE.format(angle=40, w=10, al="0 rad/s^2"), encoding="utf-8")
     for args in (["solve", "--json", str(scene)], ["steps", str(scene)],
                  ["centres", str(scene)], ["sweep", "--summary", str(scene)],
-                 ["linkage", str(scene)], ["draw", str(scene), "-o", str(tmp_path / "y.svg")],
+                 ["linkage", str(scene)],
+                 ["draw", str(scene), "-o", str(tmp_path / "y.svg"), "--paper", "A3"],
                  ["page", str(scene), "-o", str(tmp_path / "y.html")]):
         assert main(args) == 0, args
     out = " ".join(capsys.readouterr().out.split())
