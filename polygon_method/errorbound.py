@@ -86,8 +86,14 @@ class ErrorBounds:
 
     def rubbing(self, pin) -> object:
         """Bound of a pin's rubbing velocity, relative to omega_scale times its radius:
-        the largest omega bound of the links it joins (``pin``: an entry of plan.pins)."""
-        b = [self.W.get(lk, 0.0) for pair in pin[5] for lk in pair if lk is not None]
+        the largest, over the pairs of links it joins, of the sum of their omegas' bounds
+        (the rubbing is the difference of the two omegas; ``pin``: an entry of
+        plan.pins)."""
+        b = []
+        for pair in pin[5]:
+            terms = [self.W.get(lk, 0.0) for lk in pair if lk is not None]
+            if terms:
+                b.append(terms[0] + terms[1] if len(terms) == 2 else terms[0])
         return largest(b) if b else 0.0
 
     def torque(self, scene) -> object:
