@@ -159,7 +159,7 @@ def block_then_toggle(rng, c):
     """A crank O2-A, a block A on the lever O4-P (A at ~c of the crank's length from O4),
     P driving a dyad PQ, QR (R on the ground) at a transmission angle of sine ~c too."""
     r = rng.uniform(20, 100)
-    L = r * 10.0 ** rng.uniform(0, 2)
+    L = r * 10.0 ** rng.uniform(-2, 2)  # a lever 0.01 to 100 times the crank
     phi = rng.uniform(-math.pi, math.pi)
     ax, ay = c * r * math.cos(phi), c * r * math.sin(phi)
     th = rng.uniform(-math.pi, math.pi)

@@ -21,7 +21,8 @@ own motion; a carried point from the two points it is carried by. ``K`` is the k
 Every ``K eps`` is multiplied by ``max(1, largest |coordinate| / longest link)``: a
 mechanism far from the origin is rounded to the digits of its coordinates.
 ``eX_in`` is the largest error of that kind among the points (and link omegas) the step
-reads. A link's omega and alpha get its step's ``eV`` and ``eA``; a slider's sliding
+reads. A link's omega and alpha get its step's ``eV`` and ``eA`` (a dyad's links and a
+slider's rod at least those of the side that turns them, divided by its length); a slider's sliding
 velocity ``eV``, its sliding acceleration and Coriolis component ``eA`` (a block on a
 slotted link, its own). ``K`` was fitted on thousands of random mechanisms near every singular family against the 50-digit reference
 and then given a margin (``benchmarks/error_bounds.py``). The same formulas take floats
@@ -105,8 +106,14 @@ class ErrorBounds:
 
     def rubbing(self, pin) -> object:
         """Bound of a pin's rubbing velocity, relative to omega_scale times its radius:
-        the largest omega bound of the links it joins (``pin``: an entry of plan.pins)."""
-        b = [self.W.get(lk, 0.0) for pair in pin[5] for lk in pair if lk is not None]
+        the largest, over the pairs of links it joins, of the sum of their omegas' bounds
+        (the rubbing is the difference of the two omegas; ``pin``: an entry of
+        plan.pins)."""
+        b = []
+        for pair in pin[5]:
+            terms = [self.W.get(lk, 0.0) for lk in pair if lk is not None]
+            if terms:
+                b.append(terms[0] + terms[1] if len(terms) == 2 else terms[0])
         return largest(b) if b else 0.0
 
     def torque(self, scene) -> object:

@@ -33,8 +33,10 @@ REF = load_reference(40)
 def test_bound_holds_for_every_quantity_near_every_singular_family(seed):
     """Every position, velocity, acceleration, omega, alpha, sliding velocity and
     acceleration, Coriolis component, rubbing velocity and input torque is within its bound
-    of the reference; the bound is within a factor 1000 of the error on the median
-    mechanism of each family."""
+    of the reference; the bound is within a factor 3000 of the error on the median
+    mechanism of each family (a dyad's rows count their positions' error times its own
+    links' omega and alpha: a short link turning fast is covered, a toggle's bound is 2 to
+    6 times looser than a fit to these families alone would make it)."""
     results = run(24, seed=seed, digits=40)
     for fam, rows in results.items():
         ratios = []
@@ -48,7 +50,7 @@ def test_bound_holds_for_every_quantity_near_every_singular_family(seed):
             emax = max(q[2] for q in qs)
             if emax > 0:
                 ratios.append(max(q[3] for q in qs) / emax)
-        assert ratios and statistics.median(ratios) < 1000, (fam, ratios)
+        assert ratios and statistics.median(ratios) < 3000, (fam, ratios)
 
 
 def closed_form_condition(name, angle):

@@ -252,14 +252,22 @@ class Dyad(Step):
             return g * (s1 + s2 + own)
 
         p = carry(0, k)
-        v = carry(1, k + p)
-        a = carry(2, k + p + walk.ratio * v)
+        # each row r . (vX - vB) = 0 (and its acceleration) errs by |dr| |vX - vB| / |r|
+        # = |dr| |omega| (|dr| |(alpha, omega^2)|) from the positions' error: where a short
+        # link turns fast in a mechanism whose sizes a long one sets, that outgrows the
+        # positions' error itself, so it is counted with the dyad's own links' omega and
+        # alpha
+        sz, W, Al, V, A = walk.sizes, walk.motion.W, walk.motion.Al, walk.V, walk.A
+        tab, Ls = box.tables, sz["position"]
+        wm = vmax(abs(W.get(self.link1, 0.0)), abs(W.get(self.link2, 0.0)))
+        am = vmax(abs(Al.get(self.link1, 0.0)), abs(Al.get(self.link2, 0.0)))
+        v = carry(1, k + p * vmax(1.0, wm * Ls / sz["velocity"]))
+        a = carry(2, k + p * vmax(1.0, (wm * wm + am) * Ls / sz["acceleration"])
+                  + walk.ratio * v)
         # each link's omega from its own side: r x (vX - vB) / |r|^2 (a short side of a
         # large plate divides its ends' errors by its own length)
-        V, A = walk.V, walk.A
         turns = []
         for K, rx, ry in ((B, r1x, r1y), (D, r2x, r2y)):
-            tab = box.tables
             dv = vhypot(V[X][0] - V[K][0], V[X][1] - V[K][1])
             da = vhypot(A[X][0] - A[K][0], A[X][1] - A[K][1])
             turns.append(turning(walk, rx, ry, dv, da, p + tab[0].get(K, 0.0),
