@@ -149,7 +149,8 @@ def answer_tolerance(sol: Solution, kind: str, names: tuple, correct: float,
     if hand is not None and hand * abs(correct) > max(ROUNDING * abs(correct), draw):
         how = f"{BUILT}{HOW[kind]}" if kind in HOW else ""
         return hand * abs(correct), (
-            "a careful hand drawing at the step table's scales (pencil 0.25 mm and 0.25 deg), "
+            "a careful hand drawing at the step table's scales (pencil 0.25 mm and 0.25 deg, "
+            "lengths read to the ruler's 1 mm division), "
             f"simulated: 95 % of drawings are this close{how}")
     tol = max(ROUNDING * abs(correct), draw)
     if tol == 0:
