@@ -231,6 +231,9 @@ class Solution(Motion):
             return self.rubbing[names[0]].rubbing_velocity
         if kind == "torque":
             return self.input_torque
+        if kind in ("vu", "au"):  # the guide's point under a block (v_A1, a_A1)
+            return hypot(*self.under_block(names[0], "velocity" if kind == "vu"
+                                           else "acceleration"))
         if kind in ("vI", "aI"):  # the wheel's point at its rolling contact
             wheel = self.scene.link("-".join(names)).key
             for st in self.plan.steps:

@@ -91,12 +91,14 @@ class HandDrawing:
             ok &= np.isfinite(x) & np.isfinite(y)
         self.ok, self.n = ok, n
         self.sliding = {}  # "vs_A" / "as_A" -> sigma of the sliding vector as drawn
-        self.sigma = {"velocity": self._polygon(velocity_constructions(sol), sol.V, self.sv),
+        self.image_sigma = {}  # phase -> the sigma of an image point at (x, y), or None
+        self.sigma = {"velocity": self._polygon(velocity_constructions(sol), sol.V, self.sv,
+                                                "velocity"),
                       "acceleration": self._polygon(acceleration_constructions(sol), sol.A,
-                                                    self.sa)}
+                                                    self.sa, "acceleration")}
 
     # ----- the polygons, as drawn
-    def _polygon(self, cons, D, scale):
+    def _polygon(self, cons, D, scale, phase):
         """point -> the standard deviation (SI) of its image as drawn, step by step."""
         p = LENGTH_CM * scale.per_cm
         th = math.radians(PENCIL_DEG)
@@ -135,6 +137,7 @@ class HandDrawing:
         for name, xy in D.items():
             s = sigma_at(xy)
             out[name] = 0.0 if s is None else s
+        self.image_sigma[phase] = sigma_at
         # a sliding component is read between the two images it joins (c1 to c)
         for c in cons:
             for v in c.found:
@@ -157,6 +160,14 @@ class HandDrawing:
             poly = math.sqrt(sum(s.get(x, 0.0) ** 2 for x in names) + r ** 2)
             vals = m.speed(*names) if kind == "v" else m.acceleration_magnitude(*names)
             return vals, poly
+        if kind in ("vu", "au"):  # the guide's point under a block: its image a1 (a1')
+            phase = "velocity" if kind == "vu" else "acceleration"
+            s, r = (sv, rv) if kind == "vu" else (sa, ra)
+            img = self.image_sigma[phase](sol.under_block(names[0], phase))
+            if img is None:
+                img = s.get(sol.scene.slider(names[0]).point, 0.0)
+            vals = np.hypot(*m.under_block(names[0], phase))
+            return vals, math.hypot(img, r)
         if kind in ("omega", "alpha"):
             s = sv if kind == "omega" else sa
             r = rv if kind == "omega" else ra

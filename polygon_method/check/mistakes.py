@@ -10,13 +10,18 @@ from ..scene import GuideSlider
 from ..solution import Solution
 from ..steps import under_label
 from ..numbers import textbook as _g
-from . import power, slips
+from . import confusions, power, slips
 from .alternatives import _DECIMAL, _FACTOR_MISTAKES, _Alternatives, _Candidate, _speed_mistakes
 from .slips import _SLIP_RANK, _slip
 from .slots import coriolis_left_out
 
 
 _OPPOSITE = {"above": "below", "below": "above", "left": "right", "right": "left"}
+_PHASE = {"v": "velocity", "a": "acceleration"}
+_UNIT_FAMILY = {"v": "v", "vs": "v", "rub": "v", "vu": "v", "vI": "v", "a": "a", "as": "a",
+                "ac": "a", "au": "a", "aI": "a", "omega": "omega", "alpha": "alpha"}
+#: the kind whose unit slips an answer shares (the guide's point under a block: a point's)
+_AS_KIND = {"vu": "v", "au": "a"}
 
 
 class _Diagnoser:
@@ -32,6 +37,22 @@ class _Diagnoser:
                 self.their_w[self.sc.link("-".join(a.names)).key] = abs(a.value)
 
     # -- helpers
+    def unit_slips(self, kind) -> tuple:
+        """The slips of the scene's own length unit where it is not mm or m (a problem in
+        inches): a velocity in in/s given as m/s, a length in inches in omega = v / l."""
+        u, f = self.sc.units, self.sc.length_unit
+        if u in ("mm", "m"):
+            return ()
+        family = _UNIT_FAMILY.get(kind)
+        if family in ("v", "a"):
+            per = "/s" if family == "v" else "/s^2"
+            return ((1 / f, "length_unit", f"{u}{per} given as m{per}"),)
+        if family in ("omega", "alpha"):
+            return ((f, "length_unit", f"a length in {u} used in "
+                     f"{'omega = v' if family == 'omega' else 'alpha = a_t'} / l (l must be "
+                     "in m)"),)
+        return ()
+
     def cmp(self, x, signed):
         return x if signed else abs(x)
 
@@ -78,8 +99,11 @@ class _Diagnoser:
                     out.append(_Candidate(val(alt), code, words))
         else:
             out += self.torque(signed)
-        for factor, code, words in _FACTOR_MISTAKES.get(kind, ()):
+        for factor, code, words in _FACTOR_MISTAKES.get(_AS_KIND.get(kind, kind), ()) + \
+                self.unit_slips(kind):
             out.append(_Candidate(self.cmp(correct, signed) * factor, code, words))
+        if kind in ("vu", "au"):
+            out += confusions.under_block(self, ans)
         if kind in ("v", "a"):
             out += self.relative(ans, signed)
         if kind in ("omega", "alpha"):
@@ -113,20 +137,24 @@ class _Diagnoser:
                                   "radians (calculator in RAD mode)"))
         for factor, code, words in _DECIMAL:
             out.append(_Candidate(self.cmp(correct, signed) * factor, code, words))
+        # last: another quantity of the problem (a named mistake of the same value first)
+        out += confusions.other_quantities(self, ans, signed)
         return out
 
     def relative(self, ans, signed):
         sol = self.sol
         kind, names = ans.kind, ans.names
         sym = kind
+        unit = "m/s" if kind == "v" else "m/s^2"
         mag = sol.speed if kind == "v" else sol.acceleration_magnitude
         out = []
         if len(names) == 1:
             X = names[0]
             for Y in self.body_points(X):
                 out.append(_Candidate(mag(X, Y), "relative_for_absolute",
-                                      f"the relative {sym}_{X}{Y} given for the absolute "
-                                      f"{sym}_{X}"))
+                                      f"you gave {sym}_{X}{Y} ({_g(mag(X, Y))} {unit}), the "
+                                      f"relative {_PHASE[kind]} of {X} to {Y}, for the "
+                                      f"absolute {sym}_{X}"))
             sl = self.sc.slider(X)
             if kind in ("v", "a") and isinstance(sl, GuideSlider):
                 if kind == "v":
@@ -153,7 +181,8 @@ class _Diagnoser:
             for Z in (X, Y):
                 if Z not in self.sc.ground:
                     out.append(_Candidate(mag(Z), "absolute_for_relative",
-                                          f"the absolute {sym}_{Z} given for the relative "
+                                          f"you gave {sym}_{Z} ({_g(mag(Z))} {unit}), the "
+                                          f"absolute {_PHASE[kind]} of {Z}, for the relative "
                                           f"{sym}_{X}{Y}"))
             lk = self.link_at(X, Y)
             if kind == "a" and lk is not None:
@@ -291,7 +320,9 @@ class _Diagnoser:
         best = matches[0][1]
         text = best.text
         others = [c for d, c in matches[1:] if c.code != best.code and d <= 0.005
-                  and matches[0][0] <= 0.005]
+                  and matches[0][0] <= 0.005 and not (  # the same value, named twice
+                      c.code == "another_quantity" and
+                      abs(c.value - best.value) <= 1e-9 * abs(best.value))]
         if others:
             text += "; or " + others[0].text
         return best.code, text

@@ -14,6 +14,12 @@ from .alternatives import _Candidate, _speed_mistakes
 from .tolerance import _terms
 
 
+def _length(sc, x) -> str:
+    """A length in the scene's own unit: ``19.05 mm`` in a scene in mm, ``0.75 in`` in one
+    in inches."""
+    return f"{_g(x / sc.length_unit)} {sc.units}"
+
+
 def rubbing(d, X):
     sol, sc = d.sol, d.sc
     rub = sol.rubbing[X]
@@ -23,14 +29,14 @@ def rubbing(d, X):
     correct = rub.rubbing_velocity
     if pin.given == "diameter":
         out.append(_Candidate(2 * correct, "diameter_as_radius",
-                              f"the diameter {_g(2 * r * 1e3)} mm used as the radius "
-                              f"(r = {_g(r * 1e3)} mm)"))
+                              f"the diameter {_length(sc, 2 * r)} used as the radius "
+                              f"(r = {_length(sc, r)})"))
     else:
         out.append(_Candidate(2 * correct, "diameter_as_radius",
-                              f"twice the radius (a diameter, {_g(2 * r * 1e3)} mm) used "
-                              f"as the radius {_g(r * 1e3)} mm"))
+                              f"twice the radius (a diameter, {_length(sc, 2 * r)}) used "
+                              f"as the radius {_length(sc, r)}"))
     out.append(_Candidate(correct / 2, "radius_as_diameter",
-                          f"the radius {_g(r * 1e3)} mm halved (taken as a diameter)"))
+                          f"the radius {_length(sc, r)} halved (taken as a diameter)"))
     if len(rub.pairs) > 1:
         for pair, v in rub.pairs.items():
             out.append(_Candidate(v, "one_pair",
