@@ -373,8 +373,9 @@ def _cmd_variants(args) -> int:
     files += [("answer-key.md", answer_key_markdown(vs), False),
               ("answer-key.csv", answer_key_csv(vs), False),
               ("problem-sheet.md", sheet_markdown(vs), False)]
-    if args.pdf:
-        files.append(("problem-sheet.pdf", sheet_pdf(vs), True))
+    if args.pdf:  # each student's figure, drawn by the views
+        from ..draw import draw_configuration
+        files.append(("problem-sheet.pdf", sheet_pdf(vs, figure=draw_configuration), True))
     names = {f[0] for f in files}
     if not made:  # variants of an earlier run would be paired with the wrong students
         stale = sorted(p.name for p in out.glob("variant-*.toml") if p.name not in names)
