@@ -31,7 +31,7 @@ from .reading import (key_line, load_answers, load_scene, parse_answers, parse_s
 from .records import (ANSWER_KINDS, GIVEN_KINDS, Answer, CarriedPoint, Cylinder, FixedPath,
                       GivenRate, GuideSlider, Input, Link, Load, Pin, PositionGiven, Scene,
                       YokeSlot,
-                      split_name)
+                      guide_words, split_name)
 from .variation import Variation, VariantOf, Varied
 
 __all__ = [
@@ -39,5 +39,5 @@ __all__ = [
     "Load",
     "Answer", "load_scene", "parse_scene", "split_name", "ANSWER_KINDS", "parse_answers",
     "load_answers", "key_line", "scene_table", "scene_from_table", "Variation", "Varied",
-    "VariantOf", "GivenRate", "GIVEN_KINDS", "Cylinder", "PositionGiven",
+    "VariantOf", "GivenRate", "GIVEN_KINDS", "Cylinder", "PositionGiven", "guide_words",
 ]

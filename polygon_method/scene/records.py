@@ -79,6 +79,21 @@ def under_block_names(point_names, ground, sliders) -> dict:
     return out
 
 
+def guide_words(label: str, noun: str = "path", of: str | None = None) -> str:
+    """A fixed path's (or slot's) words from its label, as a teacher writes them:
+    "horizontal path", "vertical slot", "path at 30 deg" (never "the at 30 deg path");
+    with ``of``, whose: "horizontal path of D", "slot of yoke Y (at 70 deg)".
+
+    >>> guide_words("horizontal"), guide_words("at 30 deg"), guide_words("at 70 deg", "slot")
+    ('horizontal path', 'path at 30 deg', 'slot at 70 deg')
+    >>> guide_words("at 30 deg", of="D"), guide_words("vertical", "slot", "yoke Y")
+    ('path of D (at 30 deg)', 'vertical slot of yoke Y')
+    """
+    if of is None:
+        return f"{noun} {label}" if label.startswith("at ") else f"{label} {noun}"
+    return f"{noun} of {of} ({label})" if label.startswith("at ") else f"{label} {noun} of {of}"
+
+
 def split_name(name: str) -> tuple[str, ...]:
     """Point names in a link or relative name: ``"BC"`` -> (B, C), ``"O2-A"`` -> (O2, A)."""
     if not isinstance(name, str) or not _LINK_NAME.match(name) or name.endswith("-"):

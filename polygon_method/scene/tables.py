@@ -10,7 +10,7 @@ import re
 from ..errors import SceneError, printable
 from ..units import UNITS, did_you_mean
 from .angles import read_angle
-from .records import (ANSWER_KINDS, UNDER_BLOCK_KINDS, Answer, CarriedPoint, Cylinder,
+from .records import (ANSWER_KINDS, UNDER_BLOCK_KINDS, Answer, CarriedPoint, Cylinder, guide_words,
                       FixedPath, GuideSlider, Load, Pin, YokeSlot, split_name,
                       under_block_names)
 
@@ -239,7 +239,7 @@ class _Tables:
         (ux, uy), (dx, dy) = path.u, sl.direction
         if abs(ux * dy - uy * dx) < 1e-9:
             raise self.error(f"a pin in two parallel slots: the slot of block {yoke} runs "
-                             f"{sl.label}, along the yoke's own {path.label} path, so "
+                             f"{sl.label}, along the yoke's own {guide_words(path.label)}, so "
                              "nothing moves the yoke", "sliders", name)
 
     def direction(self, value, name):
