@@ -553,7 +553,7 @@ def _acceleration(doc, sol, ascale):
         set_out = [f"{g.name} {ascale.cm(g.magnitude):.2f} cm" for g in c.given
                    if g.magnitude > 0]
         if set_out:
-            t += "; set out " + ", ".join(set_out)
+            t += "; lengths to set out: " + ", ".join(set_out)
         items.append(t)
     doc.items(items)
     doc.p(f"Read-offs (lengths to {DRAWING_PRECISION_CM} cm at {ascale.text}):")

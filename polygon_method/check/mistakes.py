@@ -166,12 +166,16 @@ class _Diagnoser:
                 under = self.point_under_block(X, sl, kind)
                 phase = "acceleration" if kind == "a" else "velocity"
                 if under is not None:
+                    key = next((f"{sym}_{n}" for n, k in
+                                confusions.under_names(self.sc).items() if k == sl.key),
+                               None)
                     out.append(_Candidate(math.hypot(*under), "coincident_for_block",
-                                          f"{sym} of the point of {sl.guide} under the block "
-                                          f"({under_label(self.sol, X, phase)}) "
-                                          f"given for the block {X}'s own: they differ by "
-                                          "the sliding" + (" and Coriolis components" if
-                                                           kind == "a" else " velocity")))
+                                          "you gave " + (f"{key}, " if key else "")
+                                          + f"the {_PHASE[kind]} of the point of {sl.guide} "
+                                          f"under the block ({under_label(self.sol, X, phase)}"
+                                          f"), for the block {X}'s own {sym}_{X}: they differ "
+                                          "by the sliding" + (" and Coriolis components" if
+                                                              kind == "a" else " velocity")))
             if kind == "a":
                 for lk in self.sc.links:
                     if X in lk.points and lk.other(X) in self.sc.ground:
