@@ -50,7 +50,7 @@ import math
 from dataclasses import dataclass
 
 from .errors import TOL, SceneError, SingularStepError
-from .scene import FixedPath, GuideSlider, YokeSlot
+from .scene import FixedPath, GuideSlider, YokeSlot, guide_words
 
 __all__ = ["Centre", "Centres", "locate", "centres_dict", "MAX_BODIES", "JSON_BODIES"]
 
@@ -200,7 +200,7 @@ def _primary(sol, names):
         if isinstance(s, FixedPath):
             d = _unit(-s.u[1], s.u[0])
             key = (1, blk)
-            how = (f"block {s.key} slides on the {s.label} path: at infinity, "
+            how = (f"block {s.key} slides on the {guide_words(s.label)}: at infinity, "
                    "perpendicular to the path")
         elif isinstance(s, GuideSlider):
             (x1, y1), (x2, y2) = sol.P[s.first], sol.P[s.second]
@@ -214,7 +214,7 @@ def _primary(sol, names):
             d = _unit(-s.direction[1], s.direction[0])
             g = num(f"block {s.yoke}")
             key = (min(g, blk), max(g, blk))
-            how = (f"block {s.point} slides in the {s.label} slot of yoke {s.yoke}: at "
+            how = (f"block {s.point} slides in the {guide_words(s.label, 'slot', f'yoke {s.yoke}')}: at "
                    "infinity, perpendicular to the slot")
         else:  # pragma: no cover
             continue

@@ -131,6 +131,22 @@ class Motion:
         s = self._lookup(self.S, point, "slider")
         return (s[2], s[3])
 
+    def under_block(self, slider, phase="velocity"):
+        """The velocity (``phase`` "velocity") or acceleration of the point of the guide link
+        that lies under the block ``slider`` (a1, a1' on the polygons), from the guide's
+        end K: ``v_K + omega x KA`` and ``a_K - omega^2 KA + alpha x KA``."""
+        sl = self.scene.slider(slider)
+        g = self.scene.link(sl.guide)
+        (kx, ky), (x, y) = self.P[g.p], self.P[sl.point]
+        rx, ry = x - kx, y - ky
+        w = self.W[g.key]
+        if phase == "velocity":
+            vx, vy = self.V[g.p]
+            return (vx - w * ry, vy + w * rx)
+        al = self.Al[g.key]
+        ax, ay = self.A[g.p]
+        return (ax - w * w * rx - al * ry, ay - w * w * ry + al * rx)
+
     @property
     def conditions(self) -> dict:
         return self.cond

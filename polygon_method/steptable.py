@@ -43,7 +43,7 @@ from .numbers import fixed as _fixed, fmt, sense_word
 from .forcereport import force_blocks
 from .constructions import acceleration_constructions, velocity_constructions
 from .scales import DRAWING_PRECISION_CM, diagram_scales, extent
-from .scene import FixedPath, GuideSlider, split_name
+from .scene import FixedPath, GuideSlider, guide_words, split_name
 from .kinematics import evaluate
 from .solution import Solution, tidied
 
@@ -220,17 +220,17 @@ def _slider_facts(facts, sc, u):
             continue
         if s.slot:  # a peg in two slots
             facts.append(f"peg {s.point} in the slot of {s.guide}" if isinstance(s, GuideSlider)
-                         else f"peg {s.point} in a fixed {s.label} slot through "
+                         else f"peg {s.point} in a fixed {guide_words(s.label, 'slot')} through "
                          f"({fmt(s.through[0] / u, 5)}, {fmt(s.through[1] / u, 5)})")
         elif isinstance(s, FixedPath) and any(getattr(t, "yoke", None) == s.point
                                               for t in sc.sliders):
-            facts.append(f"yoke {s.point} on a {s.label} path through "
+            facts.append(f"yoke {s.point} on a {guide_words(s.label)} through "
                          f"({fmt(s.through[0] / u, 5)}, {fmt(s.through[1] / u, 5)})")
         elif isinstance(s, FixedPath):
-            facts.append(f"slider {s.point} on a {s.label} path through "
+            facts.append(f"slider {s.point} on a {guide_words(s.label)} through "
                          f"({fmt(s.through[0] / u, 5)}, {fmt(s.through[1] / u, 5)})")
         elif hasattr(s, "yoke"):  # the slot of a translating yoke
-            facts.append(f"block {s.point} slides in the {s.label} slot of yoke {s.yoke}")
+            facts.append(f"block {s.point} slides in the {guide_words(s.label, 'slot', f'yoke {s.yoke}')}")
         else:
             facts.append(f"block {s.point} slides along {s.guide}")
 
@@ -448,15 +448,15 @@ def _sliding_items(sol):
     for s in sol.scene.sliders:
         vs = sol.S[s.key][0]
         if vs == 0:  # (noise is 0 here: the solution is tidied)
-            guide = (f"the {s.label} path" if isinstance(s, FixedPath) else
+            guide = (f"the {guide_words(s.label)}" if isinstance(s, FixedPath) else
                      f"the slot of yoke {s.yoke}" if hasattr(s, "yoke") else s.guide)
             out.append(f"vs_{s.key} = 0 m/s: {s.point} does not slide along {guide} at "
                        "this instant")
             continue
         if isinstance(s, FixedPath):
-            along = f"along the {s.label} path ({'+' if vs >= 0 else '-'} direction)"
+            along = f"along the {guide_words(s.label)} ({'+' if vs >= 0 else '-'} direction)"
         elif hasattr(s, "yoke"):
-            along = (f"along the {s.label} slot of yoke {s.yoke} ({'+' if vs >= 0 else '-'} "
+            along = (f"along the {guide_words(s.label, 'slot', f'yoke {s.yoke}')} ({'+' if vs >= 0 else '-'} "
                      "direction), relative to the yoke")
         else:
             along = (f"along {s.guide}, {'from ' + s.first + ' towards ' + s.second if vs >= 0 else 'from ' + s.second + ' towards ' + s.first}")
@@ -605,7 +605,7 @@ def _acceleration(doc, sol, ascale):
         set_out = [f"{g.name} {ascale.cm(g.magnitude):.2f} cm" for g in c.given
                    if g.magnitude > 0]
         if set_out:
-            t += "; set out " + ", ".join(set_out)
+            t += "; lengths to set out: " + ", ".join(set_out)
         items.append(t)
     doc.items(items)
     doc.p(f"Read-offs (lengths to {DRAWING_PRECISION_CM} cm at {ascale.text}):")

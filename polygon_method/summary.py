@@ -379,6 +379,7 @@ class _Reducer:
         if n:
             self._change_point_minima(rows, spacing, float(np.min(theta)),
                                       float(np.max(theta)))
+            self._limit_positions(rows, theta, spacing)
         deg = degrees_fn(dom)
         unbounded = self._unbounded(rows, theta, spacing) if n else {}
         for row in rows:  # an unbounded extreme is at the limit position, not a sample
@@ -399,6 +400,36 @@ class _Reducer:
             rng = (deg(dom.lo), deg(dom.hi))
         return Summary(self.scene, requested, evaluated, extremes, dom.limits,
                        dom.change_points, tuple(dom.notes), formulas, rng, deg)
+
+    def _limit_positions(self, rows, theta, spacing):
+        """Where the crank rocks, a slider's extreme place may be at a limit position of
+        the crank (between two samples, where the velocities are not defined): its place
+        there, from the positions alone, is an extreme too, so that the summary gives the
+        same stroke as `linkage`. Only limits the requested angles reach are taken."""
+        dom = self.sw.domain
+        if dom.full_turn or not dom.limits or spacing is None:
+            return
+        mapped, _ = dom.map(np.asarray(theta, dtype=float))
+        lims = [lp.theta for lp in dom.limits
+                if np.min(np.abs(mapped - lp.theta)) <= 1.5 * spacing]
+        if not lims:
+            return
+        fr = self.sw.evaluate(np.array(lims), vel=False, acc=False)
+        by = {row[0]: row for row in rows}
+        for s in self.scene.sliders:
+            row = by.get(f"s_{s.key}")
+            if row is None or not isinstance(s, FixedPath):
+                continue
+            (qx, qy), (ux, uy) = s.through, s.u
+            x, y = fr.P[s.point]
+            for t, v in zip(lims, (x - qx) * ux + (y - qy) * uy):
+                v = float(v)
+                if not math.isfinite(v):
+                    continue
+                if v > row[2]:
+                    row[2], row[3] = v, t
+                if v < row[4]:
+                    row[4], row[5] = v, t
 
     def _change_point_minima(self, rows, spacing, lo, hi):
         """At a change point the step's two assemblies meet: its transmission angle is 0

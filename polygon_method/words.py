@@ -19,6 +19,7 @@ from __future__ import annotations
 import math
 
 from .numbers import fmt, sense
+from .scene import guide_words
 
 __all__ = ["given"]
 
@@ -29,7 +30,7 @@ def _slot(sc, s) -> str:
     through (0, 450) mm``."""
     if hasattr(s, "guide"):
         return f"the slot of link {s.guide}"
-    return f"a fixed slot ({s.label}) through {_at(sc, s.through)}"
+    return f"a fixed {guide_words(s.label, 'slot')} through {_at(sc, s.through)}"
 
 def given(sc) -> list:
     """The scene's data as a textbook states it, one sentence a line."""
@@ -48,14 +49,13 @@ def given(sc) -> list:
                            + " and ".join(_slot(sc, t) for t in sc.slots(s.point)) + ".")
             continue
         if hasattr(s, "yoke"):  # the slot of a translating yoke
-            out.append(f"A block at {s.point} slides in the {s.label} slot of the yoke "
-                       f"{s.yoke}.")
+            out.append(f"A block at {s.point} slides in the "
+                       f"{guide_words(s.label, 'slot', f'the yoke {s.yoke}')}.")
             continue
         if hasattr(s, "guide"):  # a block on a moving link (a scene record, not a step)
             out.append(f"A block at {s.point} slides along link {s.guide}.")
         else:
-            path = (f"{s.label} path" if s.label in ("horizontal", "vertical")
-                    else f"path {s.label}")  # "at 30 deg"
+            path = guide_words(s.label)  # "horizontal path", "path at 30 deg"
             out.append(f"Slider {s.point} moves on a fixed {path} through "
                        f"{_at(sc, s.through)}.")
     for r in getattr(sc, "rolling", ()):  # a wheel or gear rolling without slip

@@ -305,7 +305,8 @@ def test_a_long_problem_goes_on_over_the_page_of_the_pdf_sheet():
     names = "EFGHIJKLMNOPQRSTUVW"
     pts = "".join(f'{p} = {{ on = "BC", along = {5 + 4 * k} }}\n' for k, p in enumerate(names))
     text = FOURBAR.split("[answers]")[0].replace("[assembly]", f"[points]\n{pts}\n[assembly]")
-    vs = generate(parse_scene(text + "[variants]\nangle = [50, 60]\n"), 2, 0)
+    # (three angles: one of them may be the base problem, which is no variant)
+    vs = generate(parse_scene(text + "[variants]\nangle = [50, 55, 60]\n"), 2, 0)
     wanted = [x.replace("`", "") for _, lines in sheet_sections(vs) for x in lines if x]
     assert len(wanted) > 2 * 45  # more than a page each
     shown, pages = [], 0

@@ -143,3 +143,33 @@ def test_a_stated_tolerance_overrides_the_hand_drawing():
     assert all(v.ok and "hand drawing" in v.rule for v in free.values())
     strict = verdicts(sc, text, tolerance=0.01)
     assert all(not v.ok and "answers' tolerance" in v.rule for v in strict.values())
+
+
+# The answers in the worked problems that their books or notes read off a drawn diagram,
+# and, apart, those the files document as slips or method errors (each must still be
+# caught, and named where the mistake is a known one).
+DRAWN = ("fourbar_velocity_khurmi", "slider_crank_midpoint", "fourbar_image_points",
+         "toggle_mechanism", "two_slider_mechanism")
+DOCUMENTED_MISTAKES = {("fourbar_image_points", "v_CB"): "transcription_slip",
+                       ("toggle_mechanism", "v_BD"): "transcription_slip",
+                       ("toggle_mechanism", "rub_A"): "links_not_at_pin",
+                       ("toggle_mechanism", "torque"): "wrong_omega_in_power_balance",
+                       ("two_slider_mechanism", "v_D"): None}  # (the lost figure's BC)
+
+
+def test_nine_in_ten_published_drawn_answers_pass_by_default():
+    """The default tolerance (the pencil and the ruler's 1 mm division) lets at least 9 in
+    10 of the published drawn answers through (the books' own values, not this tool's),
+    while every mistake the problem files document is still WRONG and named."""
+    passed = total = 0
+    for stem in DRAWN:
+        scene = load_scene(ROOT / f"{stem}.toml")
+        for v in check_answers(solve(scene), scene.answers, None):
+            if (stem, v.key) in DOCUMENTED_MISTAKES:
+                code = DOCUMENTED_MISTAKES[stem, v.key]
+                assert not v.ok and v.mistake == code, (stem, v.key, v.mistake)
+                continue
+            total += 1
+            passed += v.ok
+    assert total >= 25
+    assert passed >= 0.9 * total, (passed, total)

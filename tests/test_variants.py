@@ -281,12 +281,14 @@ def test_too_few_variants_is_one_line_and_writes_nothing(tmp_path, capsys):
                                                             "")
     base = _write(tmp_path, text)
     out = tmp_path / "out"
-    assert main(["variants", str(base), "--count", "7", "-o", str(out)]) == 2
+    # 6 combinations, one of them the base problem itself (no variant): 5
+    assert main(["variants", str(base), "--count", "6", "-o", str(out)]) == 2
     err = capsys.readouterr().err.strip()
-    assert "\n" not in err and "only 6 of the 6 combinations" in err and "--count 6" in err
+    assert "\n" not in err and "only 5 of the 6 combinations" in err and "--count 5" in err
+    assert "the base problem itself: 1" in err
     assert not out.exists()
-    assert main(["variants", str(base), "--count", "6", "-o", str(out)]) == 0
-    assert len(list(out.glob("variant-*.toml"))) == 6
+    assert main(["variants", str(base), "--count", "5", "-o", str(out)]) == 0
+    assert len(list(out.glob("variant-*.toml"))) == 5
 
 
 @pytest.mark.parametrize("line, words", [

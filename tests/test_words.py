@@ -10,6 +10,7 @@ import pytest
 
 import polygon_method as pm
 from polygon_method.numbers import fmt
+from polygon_method.scene import guide_words
 
 
 def g(x):  # a datum, unrounded
@@ -33,12 +34,13 @@ def test_every_datum_is_stated(path):
             assert f"A peg {s.point} runs in two slots: " in text
             if hasattr(s, "through"):
                 tx, ty = s.through
-                assert f"a fixed slot ({s.label}) through ({g(tx / u)}, {g(ty / u)})" in text
+                slot = guide_words(s.label, "slot")  # "horizontal slot", "slot at 30 deg"
+                assert f"a fixed {slot} through ({g(tx / u)}, {g(ty / u)})" in text
             else:
                 assert f"the slot of link {s.guide}" in text
         elif hasattr(s, "yoke"):  # the slot of a translating yoke
-            assert f"A block at {s.point} slides in the {s.label} slot of the yoke {s.yoke}" \
-                in text
+            slot = guide_words(s.label, "slot", f"the yoke {s.yoke}")
+            assert f"A block at {s.point} slides in the {slot}" in text
         elif hasattr(s, "through"):
             tx, ty = s.through
             assert f"Slider {s.point} moves on a fixed" in text

@@ -48,13 +48,14 @@ from ..errors import SceneError
 from ..solution import Solution, tidied
 from .centres import centre_verdict
 from .mistakes import _Diagnoser
-from .tolerance import _Tolerances, answer_tolerance
+from .tolerance import SOURCES, Stated, _Tolerances, answer_tolerance, choose_tolerance
 from .verdicts import _NOISE_KIND, ROUNDING, UNIT_OF, Verdict, verdicts_dict, verdicts_text
 
 #: answers that are magnitudes (a negative one is a mistake of its own)
 _MAGNITUDES = {"v": "a speed", "a": "an acceleration's size", "ac": "a Coriolis component's "
                "size", "rub": "a rubbing velocity", "F": "a pin force's size",
-               "N": "a guide's normal force's size"}
+               "N": "a guide's normal force's size", "vu": "a speed",
+               "au": "an acceleration's size"}
 
 def _noise_of(sol: Solution, kind, names) -> tuple:
     """(kind, name) of :meth:`Solution.noise` for an answer: its own error bound."""
@@ -76,7 +77,7 @@ def tolerances(sol: Solution):
 
 
 __all__ = ["tolerances", "Verdict", "check_answers", "answer_tolerance", "verdicts_text",
-           "verdicts_dict", "ROUNDING"]
+           "verdicts_dict", "ROUNDING", "Stated", "choose_tolerance", "SOURCES"]
 
 
 def check_answers(sol: Solution, answers=None, tolerance: float | None = None,
@@ -86,8 +87,9 @@ def check_answers(sol: Solution, answers=None, tolerance: float | None = None,
     Parameters
     ----------
     answers : iterable of :class:`~polygon_method.scene.Answer`, optional
-    tolerance : float, optional
-        Relative tolerance (0.03 for 3 %); default the scene's ``tolerance``, else the
+    tolerance : float or :class:`Stated`, optional
+        Relative tolerance (0.03 for 3 %), or a stated one (relative, or absolute per
+        unit); default the scene's ``tolerance`` for the scene's own answers, else the
         drawing rule (module docstring).
 
     Returns
@@ -107,7 +109,8 @@ def check_answers(sol: Solution, answers=None, tolerance: float | None = None,
     for ans in answers:
         kind = ans.kind
         if kind == "centre":
-            out.append(centre_verdict(sol, ans, tolerance, centres))
+            rel = tolerance.relative if isinstance(tolerance, Stated) else tolerance
+            out.append(centre_verdict(sol, ans, rel, centres))
             continue
         exact = sol.value(kind, ans.names)
         if exact is None or not math.isfinite(exact):
@@ -119,7 +122,7 @@ def check_answers(sol: Solution, answers=None, tolerance: float | None = None,
         elif kind in _NOISE_KIND:  # noise within its bound is a zero (a translating
             exact = sol.shown(exact, *_noise_of(sol, kind, ans.names))  # coupler's omega)
         signed = ans.sense is not None or ans.value < 0
-        if kind in ("v", "a", "ac", "rub", "F", "N"):
+        if kind in ("v", "a", "ac", "rub", "F", "N", "vu", "au"):
             signed = False
         given = ans.value if signed else abs(ans.value)
         correct = exact if signed else abs(exact)

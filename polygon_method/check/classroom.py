@@ -35,6 +35,8 @@ MISTAKE_WORDS = {
     "difference_for_sum": "a difference of angular velocities where the sum applies",
     "wrong_omega_in_power_balance": "the wrong omega in the power balance",
     "coincident_for_block": "the guide's point under a block given for the block",
+    "block_for_coincident": "the block given for the guide's point under it",
+    "another_quantity": "another quantity of the problem given",
     "negative_magnitude": "a negative magnitude",
     "component_only": "one acceleration component only",
     "total_for_tangential": "the total acceleration for its tangential component",
@@ -53,6 +55,7 @@ MISTAKE_WORDS = {
     "from_horizontal": "the angle measured from the horizontal, not the vertical",
     "deg_rad": "degrees and radians confused",
     "mm_m": "millimetres and metres confused",
+    "length_unit": "the problem's length unit taken for metres",
     "decimal_point": "the decimal point misplaced",
     "transcription_slip": "a slip of the pen",
     "carried_error": "an error carried from earlier answers",
@@ -70,6 +73,9 @@ class Row:
     verdicts: tuple
     error: str | None = None
     variant: str | None = None  # the student's own variant, where variants are graded
+    #: the tolerance the file was checked with: "default" (a careful hand drawing), or as
+    #: stated ("5 %", "0.01 m/s"); None where not said
+    tolerance: str | None = None
 
     @property
     def right(self) -> int:
@@ -121,15 +127,42 @@ def class_text(rows) -> str:
     return "\n".join(out)
 
 
-def summary_text(rows) -> str:
+def tolerance_text(rows, book=None) -> str | None:
+    """Which tolerance the files were checked with, and why: ``tolerance: the default
+    (...) for 38 files; 3 % (the file's own or the command line's) for ann, bob``."""
+    by = {}
+    for r in rows:
+        if r.error is None and r.tolerance is not None:
+            by.setdefault(r.tolerance, []).append(r.student)
+    if not by:
+        return None
+    parts = []
+    for tol, who in sorted(by.items(), key=lambda kv: (kv[0] != "default", kv[0])):
+        what = ("the default, what a careful hand drawing at the step table's scales allows"
+                if tol == "default" else tol)
+        whom = f"{len(who)} file{'s' if len(who) != 1 else ''}" if len(by) == 1 or \
+            len(who) > 5 else ", ".join(who)
+        parts.append(f"{what} for {whom}")
+    text = "tolerance: " + "; ".join(parts)
+    if book is not None and "default" in by:
+        text += (f" (not the scene's {100 * book:g} %: that is the book's, for the scene's own "
+                 "answers; give --tolerance to set one)")
+    return text
+
+
+def summary_text(rows, book=None) -> str:
     """The class summary: how many files were read, the questions most often wrong, the
-    mistakes that explain them (most students first)."""
+    mistakes that explain them (most students first), and the tolerance used (``book``:
+    the scene's own tolerance, which is not a student's)."""
     read = [r for r in rows if r.error is None]
     total = sum(len(r.verdicts) for r in read)
     right = sum(r.right for r in read)
     out = [f"{len(read)} of {len(rows)} answer files read"
            + (f" ({len(rows) - len(read)} could not be: see its row)" if len(read) < len(rows)
               else "") + f"; {right} of {total} answers right"]
+    tol = tolerance_text(rows, book)
+    if tol:
+        out.append(tol)
     wrong_by_key = Counter(v.key for r in read for v in r.verdicts if not v.ok)
     asked = Counter(v.key for r in read for v in r.verdicts)
     if wrong_by_key:
@@ -150,8 +183,9 @@ def summary_text(rows) -> str:
 def _table(rows):
     keys = _keys(rows)
     variants = _with_variants(rows)
+    tols = any(r.tolerance is not None for r in rows)
     head = ["student", "file"] + (["variant"] if variants else []) + keys + \
-        ["right", "of", "error"]
+        ["right", "of", "error"] + (["tolerance"] if tols else [])
     body = []
     for r in rows:
         by_key = {v.key: v for v in r.verdicts}
@@ -163,6 +197,8 @@ def _table(rows):
                                                else "WRONG"))
         cells += [str(r.right) if r.error is None else "", str(len(r.verdicts))
                   if r.error is None else "", r.error or ""]
+        if tols:
+            cells.append(r.tolerance or "")
         body.append(cells)
     return head, body
 
@@ -183,7 +219,7 @@ def gradebook_csv(rows) -> str:
     return buf.getvalue()
 
 
-def gradebook_markdown(rows) -> str:
+def gradebook_markdown(rows, book=None) -> str:
     head, body = _table(rows)
 
     def cell(x):
@@ -191,13 +227,14 @@ def gradebook_markdown(rows) -> str:
 
     out = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     out += ["| " + " | ".join(cell(c) for c in cells) + " |" for cells in body]
-    return "\n".join(out) + "\n\n" + summary_text(rows) + "\n"
+    return "\n".join(out) + "\n\n" + summary_text(rows, book) + "\n"
 
 
-def class_dict(rows) -> dict:
+def class_dict(rows, book=None) -> dict:
     """The class for ``check --json``."""
     return {"students": [{"student": r.student, "file": r.file, "error": r.error,
                           **({"variant": r.variant} if _with_variants(rows) else {}),
+                          **({"tolerance": r.tolerance} if r.tolerance is not None else {}),
                           "right": r.right, "answers": [v.to_dict() for v in r.verdicts]}
                          for r in rows],
-            "summary": summary_text(rows).splitlines()}
+            "summary": summary_text(rows, book).splitlines()}

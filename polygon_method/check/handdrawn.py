@@ -2,9 +2,13 @@
 tolerance of an answer.
 
 A student draws the configuration at the scale the step table states, then each polygon at
-its own, with a pencil, a ruler and a set square: every length set out or read is off by
-about ``PENCIL_CM`` on the paper and every direction by about ``PENCIL_DEG`` (standard
-deviations). The errors are followed through the construction as it is drawn:
+its own (the step table's scales fit each diagram on an A4 sheet: 15 cm for the
+configuration, 12 cm for a polygon), with a pencil, a ruler and a set square. Every length
+set out or read is off by the pencil's ``PENCIL_CM`` (where the line ends) and by the
+ruler's reading: a length is read to the ruler's smallest division, ``DIVISION_CM`` (1 mm),
+so it is up to half a division off, evenly spread (a standard deviation of
+``DIVISION_CM / sqrt(12)``); the two together are ``LENGTH_CM``, 0.38 mm. Every direction
+is off by about ``PENCIL_DEG`` (standard deviations). The errors are followed through the construction as it is drawn:
 
 * the configuration: each link's length, each fixed point's place and the crank angle as
   drawn move every direction line the polygons are built from. Many drawn mechanisms are
@@ -37,11 +41,17 @@ from ..derived import input_torque, largest, rubbing_at
 from ..kinematics import evaluate
 from ..scales import diagram_scales
 
-__all__ = ["BUILT", "HandDrawing", "HOW", "PENCIL_CM", "PENCIL_DEG", "SAMPLES"]
+__all__ = ["BUILT", "DIVISION_CM", "HandDrawing", "HOW", "LENGTH_CM", "PENCIL_CM",
+           "PENCIL_DEG", "SAMPLES"]
 
 #: a pencil's error on paper, lengths (cm) and directions (deg): standard deviations
 PENCIL_CM = 0.025
 PENCIL_DEG = 0.25
+#: the smallest division of the ruler a length is read on (cm): 1 mm
+DIVISION_CM = 0.1
+#: a length set out or read on the paper: the pencil's error and the reading's, half a
+#: division either way evenly spread (standard deviation ``DIVISION_CM / sqrt(12)``)
+LENGTH_CM = math.hypot(PENCIL_CM, DIVISION_CM / math.sqrt(12.0))
 #: configurations drawn per scene
 SAMPLES = 300
 Z95 = 1.96
@@ -65,7 +75,7 @@ class HandDrawing:
         rng = np.random.default_rng(seed)
         n, plan = samples, sol.plan
         dims = plan.dims
-        d_len = PENCIL_CM * space.per_cm
+        d_len = LENGTH_CM * space.per_cm
 
         def pencil(scale=1.0):
             return rng.normal(0.0, d_len, n) / scale
@@ -81,14 +91,16 @@ class HandDrawing:
             ok &= np.isfinite(x) & np.isfinite(y)
         self.ok, self.n = ok, n
         self.sliding = {}  # "vs_A" / "as_A" -> sigma of the sliding vector as drawn
-        self.sigma = {"velocity": self._polygon(velocity_constructions(sol), sol.V, self.sv),
+        self.image_sigma = {}  # phase -> the sigma of an image point at (x, y), or None
+        self.sigma = {"velocity": self._polygon(velocity_constructions(sol), sol.V, self.sv,
+                                                "velocity"),
                       "acceleration": self._polygon(acceleration_constructions(sol), sol.A,
-                                                    self.sa)}
+                                                    self.sa, "acceleration")}
 
     # ----- the polygons, as drawn
-    def _polygon(self, cons, D, scale):
+    def _polygon(self, cons, D, scale, phase):
         """point -> the standard deviation (SI) of its image as drawn, step by step."""
-        p = PENCIL_CM * scale.per_cm
+        p = LENGTH_CM * scale.per_cm
         th = math.radians(PENCIL_DEG)
         known = [((0.0, 0.0), 0.0)]  # (image, its sigma): the pole
 
@@ -125,6 +137,7 @@ class HandDrawing:
         for name, xy in D.items():
             s = sigma_at(xy)
             out[name] = 0.0 if s is None else s
+        self.image_sigma[phase] = sigma_at
         # a sliding component is read between the two images it joins (c1 to c)
         for c in cons:
             for v in c.found:
@@ -140,13 +153,21 @@ class HandDrawing:
         np, m, sol = self.np, self.m, self.sol
         sv = self.sigma["velocity"]
         sa = self.sigma["acceleration"]
-        rv, ra = PENCIL_CM * self.sv.per_cm, PENCIL_CM * self.sa.per_cm
+        rv, ra = LENGTH_CM * self.sv.per_cm, LENGTH_CM * self.sa.per_cm
         if kind in ("v", "a"):
             s = sv if kind == "v" else sa
             r = rv if kind == "v" else ra
             poly = math.sqrt(sum(s.get(x, 0.0) ** 2 for x in names) + r ** 2)
             vals = m.speed(*names) if kind == "v" else m.acceleration_magnitude(*names)
             return vals, poly
+        if kind in ("vu", "au"):  # the guide's point under a block: its image a1 (a1')
+            phase = "velocity" if kind == "vu" else "acceleration"
+            s, r = (sv, rv) if kind == "vu" else (sa, ra)
+            img = self.image_sigma[phase](sol.under_block(names[0], phase))
+            if img is None:
+                img = s.get(sol.scene.slider(names[0]).point, 0.0)
+            vals = np.hypot(*m.under_block(names[0], phase))
+            return vals, math.hypot(img, r)
         if kind in ("omega", "alpha"):
             s = sv if kind == "omega" else sa
             r = rv if kind == "omega" else ra
@@ -208,7 +229,7 @@ class HandDrawing:
         if lk.key in sol.plan.steps[0].links:  # the crank's (a driving block turns none)
             return 0.0
         s = self.sigma["velocity"]
-        r = PENCIL_CM * self.sv.per_cm
+        r = LENGTH_CM * self.sv.per_cm
         return math.sqrt(s.get(lk.p, 0.0) ** 2 + s.get(lk.q, 0.0) ** 2 + r ** 2) / lk.length
 
     def tolerance(self, kind, names, correct):

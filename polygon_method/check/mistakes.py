@@ -1,167 +1,30 @@
 """The mistakes behind wrong answers: each known mistake computed from the solver's numbers
-or a re-solved scene, and matched against the answer given."""
+or a re-solved scene, and matched against the answer given (the alternatives:
+``alternatives.py``; rubbing and torque: ``power.py``; slips of the pen: ``slips.py``)."""
 
 from __future__ import annotations
 
-import itertools
 import math
-import re
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 from ..errors import PolygonMethodError
-from ..plan import Context
 from ..forces import analyse, force_value
-from ..scene import GuideSlider, Gravity, Scene
+from ..scene import GuideSlider, Gravity
 from ..solution import Solution, solve
 from ..steps import under_label
 from ..numbers import textbook as _g
-from ..numbers import working as _num
+from . import confusions, power, slips
+from .alternatives import _DECIMAL, _FACTOR_MISTAKES, _Alternatives, _Candidate, _speed_mistakes
+from .slips import _SLIP_RANK, _slip
 from .slots import coriolis_left_out
-from .tolerance import _terms
-
-
-
-@dataclass(frozen=True)
-class _Candidate:
-    value: float
-    code: str
-    text: str
-    window: float | None = None  # narrower matching window (absolute), for wide families
-
-
-class _Alternatives:
-    """Solutions of the same scene with one mistake made (asked of the solver, cached)."""
-
-    def __init__(self, sol: Solution):
-        self.sol = sol
-        self.cache = {}
-
-    def solve(self, key, scene):
-        if key not in self.cache:
-            try:
-                self.cache[key] = solve(scene)
-            except (PolygonMethodError, ValueError, ZeroDivisionError, OverflowError):
-                self.cache[key] = None
-        return self.cache[key]
-
-    def speed(self, factor):
-        sc = self.sol.scene
-        return self.solve(("speed", factor),
-                          replace(sc, input=replace(sc.input, omega=sc.input.omega * factor,
-                                                    given=None)))  # that speed, as given
-
-    def angle_as_radians(self):
-        sc = self.sol.scene
-        deg = math.degrees(sc.input.angle)
-        return self.solve(("radians",),
-                          replace(sc, input=replace(sc.input, angle=deg)))
-
-    def angle_slips(self):
-        """(slip, solution or None) for each classic misreading of the crank angle's words
-        (the other dead centre, against the rotation, above for below, from the horizontal
-        for from the vertical): the scene's reader lists them with the words."""
-        sc = self.sol.scene
-        return [(slip, self.solve(("slip", slip.code, slip.value),
-                                  replace(sc, input=replace(sc.input, angle=slip.value))))
-                for slip in sc.input.angle_slips]
-
-    def branches(self):
-        """(point, words, solution) for the other branch of every two-way step."""
-        out = self.cache.get("branches")
-        if out is not None:
-            return out
-        sol = self.sol
-        sc = sol.scene
-        out = []
-        ctx = Context(sc.input.angle, sc.input.omega, sc.input.alpha)
-        for st in sol.plan.steps:
-            if not st.other_assembly_mistake:
-                continue
-            try:
-                base, off, *_ = st.candidates(dict(sol.P), ctx)
-            except PolygonMethodError:
-                continue
-            X = st.point
-            other = (base[0] - st.sigma * off[0], base[1] - st.sigma * off[1])
-            here = sol.P[X]
-            if math.dist(other, here) <= 1e-9 * max(math.hypot(*off), 1e-9) or \
-                    math.dist(other, here) == 0:
-                continue
-            alt = self.solve(("branch", X),
-                             replace(sc, assembly={**sc.assembly, X: other}))
-            if alt is None:
-                continue
-            dx, dy = other[0] - here[0], other[1] - here[1]
-            side = ("below" if dy < 0 else "above") if abs(dy) >= abs(dx) else \
-                ("left" if dx < 0 else "right")
-            out.append((X, side, alt))
-        self.cache["branches"] = out
-        return out
-
-
-def _speed_mistakes(scene: Scene):
-    """(factor on the crank's omega, code, words) for the speed confusions that the way the
-    scene states the speed makes possible."""
-    g = scene.input.given
-    if g is not None:  # the crank's speed was found from a given motion
-        return _given_mistakes(scene, g)
-    unit = re.sub(r"^[-+0-9.eE\s]+", "", scene.input.speed_text).split()
-    unit = unit[0].lower() if unit else "rad/s"
-    k = 60 / (2 * math.pi)
-    if unit in ("rpm", "r.p.m.", "r.p.m", "rev/min"):
-        return ((k, "rpm_as_rad_s", "rpm used as rad/s (omega = N instead of 2 pi N / 60)"),
-                (60.0, "rps_rpm", "rpm taken as rps (omega = 2 pi N, the / 60 left out)"))
-    if unit in ("rps", "r.p.s.", "r.p.s", "rev/s"):
-        return ((1 / (2 * math.pi), "rps_as_rad_s", "rps used as rad/s (omega = n instead "
-                 "of 2 pi n)"),
-                (1 / 60, "rps_rpm", "rps taken as rpm (omega = 2 pi n / 60)"))
-    return ((1 / k, "rad_s_as_rpm", "rad/s taken as rpm (converted again by 2 pi / 60)"),
-            (2 * math.pi, "rad_s_as_rps", "rad/s taken as rps (multiplied by 2 pi)"))
-
-
-def _given_mistakes(scene, g):
-    """The slips of a speed given on another quantity: the given speed taken as the crank
-    pin's (omega = v / r), or the given link's omega taken as the crank's."""
-    w = abs(scene.input.omega)
-    if g.kind == "omega":
-        wrong = abs(g.value)
-        words = (f"the given omega_{''.join(g.names)} taken as the crank's (the polygon not "
-                 "scaled to it)")
-    else:
-        wrong = abs(g.value) / scene.link(scene.input.crank).length
-        words = (f"the given speed of {g.names[0]} ({g.text}) taken as the crank pin's "
-                 f"(omega_{scene.input.crank} = v / r, the polygon not scaled to it)")
-    if abs(wrong - w) <= 1e-6 * w:
-        return ()
-    return ((wrong / w, "given_as_crank", words),)
-
-
-_FACTOR_MISTAKES = {
-    "v": ((1e3, "mm_m", "mm/s given as m/s"), (1e-3, "mm_m", "m/s given as mm/s")),
-    "vs": ((1e3, "mm_m", "mm/s given as m/s"), (1e-3, "mm_m", "m/s given as mm/s")),
-    "rub": ((1e3, "mm_m", "mm/s given as m/s"), (1e-3, "mm_m", "m/s given as mm/s")),
-    "a": ((1e3, "mm_m", "mm/s^2 given as m/s^2"), (1e-3, "mm_m", "m/s^2 given as mm/s^2")),
-    "as": ((1e3, "mm_m", "mm/s^2 given as m/s^2"), (1e-3, "mm_m", "m/s^2 given as mm/s^2")),
-    "ac": ((1e3, "mm_m", "mm/s^2 given as m/s^2"), (1e-3, "mm_m", "m/s^2 given as mm/s^2"),
-           (0.5, "coriolis_factor", "the factor 2 of the Coriolis component 2 omega v left "
-            "out")),
-    "omega": ((180 / math.pi, "deg_rad", "degrees per second given as rad/s"),
-              (math.pi / 180, "deg_rad", "radians taken as degrees (rad/s x pi / 180)"),
-              (60 / (2 * math.pi), "rpm_as_rad_s", "the answer is in rpm, not rad/s"),
-              (1e-3, "mm_m", "a length in mm used in omega = v / l (l must be in m)"),
-              (1e3, "mm_m", "a velocity in mm/s used in omega = v / l")),
-    "alpha": ((180 / math.pi, "deg_rad", "degrees per second squared given as rad/s^2"),
-              (math.pi / 180, "deg_rad", "radians taken as degrees"),
-              (1e-3, "mm_m", "a length in mm used in alpha = a_t / l (l must be in m)")),
-    "torque": ((1e3, "mm_m", "N mm given as N m"), (1e-3, "mm_m", "N m given as N mm")),
-}
-_DECIMAL = ((10.0, "decimal_point", "the decimal point misplaced (10 times too large)"),
-            (0.1, "decimal_point", "the decimal point misplaced (10 times too small)"),
-            (100.0, "decimal_point", "the decimal point misplaced, or cm for m (100 times)"),
-            (0.01, "decimal_point", "the decimal point misplaced, or m for cm (1/100)"))
 
 
 _OPPOSITE = {"above": "below", "below": "above", "left": "right", "right": "left"}
+_PHASE = {"v": "velocity", "a": "acceleration"}
+_UNIT_FAMILY = {"v": "v", "vs": "v", "rub": "v", "vu": "v", "vI": "v", "a": "a", "as": "a",
+                "ac": "a", "au": "a", "aI": "a", "omega": "omega", "alpha": "alpha"}
+#: the kind whose unit slips an answer shares (the guide's point under a block: a point's)
+_AS_KIND = {"vu": "v", "au": "a"}
 
 
 class _Diagnoser:
@@ -177,6 +40,22 @@ class _Diagnoser:
                 self.their_w[self.sc.link("-".join(a.names)).key] = abs(a.value)
 
     # -- helpers
+    def unit_slips(self, kind) -> tuple:
+        """The slips of the scene's own length unit where it is not mm or m (a problem in
+        inches): a velocity in in/s given as m/s, a length in inches in omega = v / l."""
+        u, f = self.sc.units, self.sc.length_unit
+        if u in ("mm", "m"):
+            return ()
+        family = _UNIT_FAMILY.get(kind)
+        if family in ("v", "a"):
+            per = "/s" if family == "v" else "/s^2"
+            return ((1 / f, "length_unit", f"{u}{per} given as m{per}"),)
+        if family in ("omega", "alpha"):
+            return ((f, "length_unit", f"a length in {u} used in "
+                     f"{'omega = v' if family == 'omega' else 'alpha = a_t'} / l (l must be "
+                     "in m)"),)
+        return ()
+
     def cmp(self, x, signed):
         return x if signed else abs(x)
 
@@ -225,8 +104,11 @@ class _Diagnoser:
             out += self.torque(signed)
         if kind in ("F", "N") or (kind == "torque" and sc.has_forces):
             out += self.force_slips(kind, names, signed)
-        for factor, code, words in _FACTOR_MISTAKES.get(kind, ()):
+        for factor, code, words in _FACTOR_MISTAKES.get(_AS_KIND.get(kind, kind), ()) + \
+                self.unit_slips(kind):
             out.append(_Candidate(self.cmp(correct, signed) * factor, code, words))
+        if kind in ("vu", "au"):
+            out += confusions.under_block(self, ans)
         if kind in ("v", "a"):
             out += self.relative(ans, signed)
         if kind in ("omega", "alpha"):
@@ -260,20 +142,24 @@ class _Diagnoser:
                                   "radians (calculator in RAD mode)"))
         for factor, code, words in _DECIMAL:
             out.append(_Candidate(self.cmp(correct, signed) * factor, code, words))
+        # last: another quantity of the problem (a named mistake of the same value first)
+        out += confusions.other_quantities(self, ans, signed)
         return out
 
     def relative(self, ans, signed):
         sol = self.sol
         kind, names = ans.kind, ans.names
         sym = kind
+        unit = "m/s" if kind == "v" else "m/s^2"
         mag = sol.speed if kind == "v" else sol.acceleration_magnitude
         out = []
         if len(names) == 1:
             X = names[0]
             for Y in self.body_points(X):
                 out.append(_Candidate(mag(X, Y), "relative_for_absolute",
-                                      f"the relative {sym}_{X}{Y} given for the absolute "
-                                      f"{sym}_{X}"))
+                                      f"you gave {sym}_{X}{Y} ({_g(mag(X, Y))} {unit}), the "
+                                      f"relative {_PHASE[kind]} of {X} to {Y}, for the "
+                                      f"absolute {sym}_{X}"))
             sl = self.sc.slider(X)
             if kind in ("v", "a") and isinstance(sl, GuideSlider):
                 if kind == "v":
@@ -285,12 +171,16 @@ class _Diagnoser:
                 under = self.point_under_block(X, sl, kind)
                 phase = "acceleration" if kind == "a" else "velocity"
                 if under is not None:
+                    key = next((f"{sym}_{n}" for n, k in
+                                confusions.under_names(self.sc).items() if k == sl.key),
+                               None)
                     out.append(_Candidate(math.hypot(*under), "coincident_for_block",
-                                          f"{sym} of the point of {sl.guide} under the block "
-                                          f"({under_label(self.sol, X, phase)}) "
-                                          f"given for the block {X}'s own: they differ by "
-                                          "the sliding" + (" and Coriolis components" if
-                                                           kind == "a" else " velocity")))
+                                          "you gave " + (f"{key}, " if key else "")
+                                          + f"the {_PHASE[kind]} of the point of {sl.guide} "
+                                          f"under the block ({under_label(self.sol, X, phase)}"
+                                          f"), for the block {X}'s own {sym}_{X}: they differ "
+                                          "by the sliding" + (" and Coriolis components" if
+                                                              kind == "a" else " velocity")))
             if kind == "a":
                 for lk in self.sc.links:
                     if X in lk.points and lk.other(X) in self.sc.ground:
@@ -300,7 +190,8 @@ class _Diagnoser:
             for Z in (X, Y):
                 if Z not in self.sc.ground:
                     out.append(_Candidate(mag(Z), "absolute_for_relative",
-                                          f"the absolute {sym}_{Z} given for the relative "
+                                          f"you gave {sym}_{Z} ({_g(mag(Z))} {unit}), the "
+                                          f"absolute {_PHASE[kind]} of {Z}, for the relative "
                                           f"{sym}_{X}{Y}"))
             lk = self.link_at(X, Y)
             if kind == "a" and lk is not None:
@@ -386,139 +277,10 @@ class _Diagnoser:
                 coriolis_left_out(self.sol, kind, name)]
 
     def rubbing(self, X):
-        sol, sc = self.sol, self.sc
-        rub = sol.rubbing[X]
-        r = rub.radius
-        pin = next(p for p in sc.pins if p.point == X)
-        out = []
-        correct = rub.rubbing_velocity
-        if pin.given == "diameter":
-            out.append(_Candidate(2 * correct, "diameter_as_radius",
-                                  f"the diameter {_g(2 * r * 1e3)} mm used as the radius "
-                                  f"(r = {_g(r * 1e3)} mm)"))
-        else:
-            out.append(_Candidate(2 * correct, "diameter_as_radius",
-                                  f"twice the radius (a diameter, {_g(2 * r * 1e3)} mm) used "
-                                  f"as the radius {_g(r * 1e3)} mm"))
-        out.append(_Candidate(correct / 2, "radius_as_diameter",
-                              f"the radius {_g(r * 1e3)} mm halved (taken as a diameter)"))
-        if len(rub.pairs) > 1:
-            for pair, v in rub.pairs.items():
-                out.append(_Candidate(v, "one_pair",
-                                      f"the rubbing between {pair.replace('|', ' and ')} "
-                                      f"only; the largest at {X} is {_g(correct)} m/s"))
-        if not rub.pairs:
-            return out
-        pair = max(rub.pairs, key=rub.pairs.get)
-        a, b = pair.split("|")
-        wa, wb = rub.bodies[a], rub.bodies[b]
-        why = ""
-        if wa != 0 and wb != 0 and (wa > 0) != (wb > 0):  # in magnitudes, as written by hand
-            how, why = f"(|w_{a}| + |w_{b}|) r", " (the sum: they turn in opposite senses)"
-        elif wa != 0 and wb != 0:
-            how, why = f"| |w_{a}| - |w_{b}| | r", " (the difference: they turn alike)"
-        else:
-            how = f"|w_{a} - w_{b}| r"
-        rule = (f"pin {X} joins {' and '.join(rub.bodies)}: rub_{X} = {how} = "
-                f"{_g(correct)} m/s{why}")
-        if wa != 0 and wb != 0:
-            if (wa > 0) == (wb > 0):
-                out.append(_Candidate((abs(wa) + abs(wb)) * r, "sum_for_difference",
-                                      f"the sum of the angular velocities of {a} and {b} "
-                                      f"where the difference applies (both turn "
-                                      f"{'ccw' if wa > 0 else 'cw'}); {rule}"))
-            else:
-                out.append(_Candidate(abs(abs(wa) - abs(wb)) * r, "difference_for_sum",
-                                      f"the difference of the angular velocities of {a} and "
-                                      f"{b} where the sum applies ({a} turns "
-                                      f"{'ccw' if wa > 0 else 'cw'}, {b} "
-                                      f"{'ccw' if wb > 0 else 'cw'}); {rule}"))
-            for body, w in ((a, wa), (b, wb)):
-                out.append(_Candidate(abs(w) * r, "one_link_only",
-                                      f"the angular velocity of {body} alone; {rule}"))
-        at_pin = set(rub.bodies)
-        moving = [lk.key for lk in sc.links if lk.key not in sol.plan.fixed_links]
-        for omegas, yours in self.omega_sets():
-            for n in (1, 2, 3):
-                for combo in itertools.combinations(moving, n):
-                    if all(c in at_pin for c in combo):
-                        continue
-                    for signs in itertools.product((1, -1), repeat=n - 1):
-                        terms = [(1, combo[0])] + list(zip(signs, combo[1:]))
-                        s = sum(sg * omegas[c] for sg, c in terms)
-                        if s < 0:
-                            terms = [(-sg, c) for sg, c in terms]
-                        terms.sort(key=lambda t: -t[0])  # a positive term first
-                        expr = _terms([(sg, f"omega_{c}") for sg, c in terms])
-                        nums = _terms([(sg, _num(omegas[c])) for sg, c in terms])
-                        away = [c for c in combo if c not in at_pin]
-                        mine = [c for c in combo if c in yours]
-                        out.append(_Candidate(
-                            abs(s) * r, "links_not_at_pin",
-                            f"angular velocities of links that do not meet at {X} "
-                            f"({', '.join(away)}): ({expr}) r = ({nums}) x {_num(r)}"
-                            + (f" (your {', '.join('omega_' + c for c in mine)})"
-                               if mine else "") + f"; {rule}", window=0.02))
-        return out
+        return power.rubbing(self, X)
 
     def torque(self, signed):
-        sol, sc = self.sol, self.sc
-        w = sc.input.omega
-        crank = sc.input.crank
-        out = []
-        exact_terms = sol.power_terms
-        powers = [(sum(p for _, p in exact_terms), "")]
-        # the student's own velocities at the loaded points
-        theirs, used = 0.0, []
-        for (target, p), load in zip(exact_terms, sc.loads):
-            a = self.given.get(f"v_{target}")
-            if load.force is not None and a is not None and sol.speed(target) > 0:
-                theirs += p * abs(a.value) / sol.speed(target)
-                used.append(f"v_{target} = {a.raw}")
-            else:
-                theirs += p
-        if used:
-            powers.insert(0, (theirs, f" with your {', '.join(used)}"))
-        sign = (lambda t: t) if signed else abs
-        exact_power = powers[-1][0]
-        for power, label in powers:
-            # with the student's own velocities the right method gives another torque than
-            # the correct one: say so, so that the two numbers do not read as a contradiction
-            then = "" if not label else (
-                f" (with the exact velocities: {_g(abs(exact_power))} / {_g(abs(w))} = "
-                f"{_g(abs(exact_power / w))} N m)")
-            if label:
-                out.append(_Candidate(sign(-power / w), "carried_error",
-                                      f"carried from your velocities: T = {_g(abs(power))} / "
-                                      f"{_g(abs(w))}{label} (the method is right)"))
-            for omegas, yours in self.omega_sets():
-                for lk in sc.links:
-                    if lk.key == crank or lk.key in sol.plan.fixed_links or omegas[lk.key] == 0:
-                        continue
-                    wl = omegas[lk.key]
-                    out.append(_Candidate(
-                        sign(-power / (w / abs(w) * wl)), "wrong_omega_in_power_balance",
-                        f"the power {_num(abs(power))} W{label} divided by omega_{lk.key} = "
-                        f"{_num(wl)} rad/s{' (yours)' if lk.key in yours else ''} instead of "
-                        f"the crank's omega_{crank} = {_g(abs(w))} rad/s: T = P / omega_{crank}"
-                        f" = {_g(abs(power))} / {_g(abs(w))} = {_g(abs(power / w))} N m"
-                        f"{then}"))
-            for factor, code, words in _speed_mistakes(sc):
-                out.append(_Candidate(sign(-power / (w * factor)), code,
-                                      f"{words}, in T = P / omega"))
-        # |F| |v| without the angle between them
-        full = 0.0
-        for load in sc.loads:
-            if load.force is not None:
-                full += math.hypot(*load.force) * sol.speed(load.target)
-            else:
-                full += abs(load.torque * sol.W[load.target])
-        power = sum(p for _, p in exact_terms)
-        if abs(full - abs(power)) > 1e-9 * full:
-            out.append(_Candidate(sign(math.copysign(full, -power / w)), "force_times_speed",
-                                  "F x v without the angle between force and velocity "
-                                  "(the power is F . v = F v cos theta)"))
-        return out
+        return power.torque(self, signed)
 
     def force_slips(self, kind, names, signed):
         """The force chapter's classic slips, each solved again as the slip would have it:
@@ -581,23 +343,7 @@ class _Diagnoser:
         return out
 
     def own_slip(self, ans):
-        """A copying slip: the answer is the student's own value for the same quantity
-        (v_BD and v_DB have one magnitude) with its leading digits lost: 36 for 2.36."""
-        m = _NUM.search(str(ans.raw))
-        mine = _digits(m.group()) if m else None
-        if mine is None or len(mine[0]) < 2:
-            return None
-        for other in self.given.values():
-            if other.key == ans.key or other.kind != ans.kind or \
-                    set(other.names) != set(ans.names):
-                continue
-            mo = _NUM.search(str(other.raw))
-            theirs = _digits(mo.group()) if mo else None
-            if theirs and len(theirs[0]) > len(mine[0]) and theirs[0].endswith(mine[0]):
-                return _Candidate(ans.value, "transcription_slip",
-                                  f"a slip of the pen: {m.group()} is your own {other.key} = "
-                                  f"{mo.group()} with its leading digits lost")
-        return None
+        return slips.own_slip(self, ans)
 
     # -- the verdict
     def diagnose(self, ans, given, correct, tol, signed):
@@ -615,8 +361,8 @@ class _Diagnoser:
                 # equal to rounding: the simpler mistake (earlier in the list) first
                 matches.append((rel if rel > 1e-9 else 0.0, order, c))
         slip = _slip(ans.raw, given, correct, signed) or self.own_slip(ans)
-        if slip is not None:
-            matches.append((math.inf, 0, slip))
+        if slip is not None:  # its digits match exactly: before a mistake that only comes
+            matches.append((_SLIP_RANK, 0, slip))  # near (more than rounding off)
         if not matches:
             return None, None
         matches.sort(key=lambda m: m[:2])
@@ -624,66 +370,9 @@ class _Diagnoser:
         best = matches[0][1]
         text = best.text
         others = [c for d, c in matches[1:] if c.code != best.code and d <= 0.005
-                  and matches[0][0] <= 0.005]
+                  and matches[0][0] <= 0.005 and not (  # the same value, named twice
+                      c.code == "another_quantity" and
+                      abs(c.value - best.value) <= 1e-9 * abs(best.value))]
         if others:
             text += "; or " + others[0].text
         return best.code, text
-
-
-_NUM = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
-
-
-def _digits(number: str):
-    """(significant digits, exponent of the last digit) of a written number."""
-    s = number.lstrip("+-")
-    if "e" in s.lower():
-        return None
-    if "." in s:
-        whole, frac = s.split(".")
-    else:
-        whole, frac = s, ""
-    digits = (whole + frac).lstrip("0")
-    return digits, -len(frac)
-
-
-def _slip(raw: str, given: float, correct: float, signed: bool):
-    """A slip of the pen: one digit differs, two are swapped, or leading digits dropped."""
-    m = _NUM.search(str(raw))
-    if not m or float(m.group()) == 0 or correct == 0:
-        return None
-    written = m.group()
-    factor = given / float(written)  # SI per written unit, with the sign of a sense
-    target = correct / factor
-    if not signed:
-        target = abs(target)
-    d = _digits(written)
-    if d is None:
-        return None
-    digits, last = d
-    if len(digits) < 2 or target <= 0:
-        return None
-    q = round(target / 10.0 ** last)
-    right = str(q)
-    if len(right) == len(digits):
-        diff = [i for i in range(len(digits)) if digits[i] != right[i]]
-        if len(diff) == 1 and diff[0] < len(digits) - 1:  # a last digit off is no slip
-            return _Candidate(given, "transcription_slip",
-                              f"a slip of the pen: one digit differs ({written} written for "
-                              f"{_written(q, last)})")
-        if len(diff) == 2 and diff[1] == diff[0] + 1 and \
-                digits[diff[0]] == right[diff[1]] and digits[diff[1]] == right[diff[0]]:
-            return _Candidate(given, "transcription_slip",
-                              f"a slip of the pen: two digits swapped ({written} written for "
-                              f"{_written(q, last)})")
-    if len(right) > len(digits) and right.endswith(digits) and len(digits) >= 2:
-        return _Candidate(given, "transcription_slip",
-                          f"a slip of the pen: leading digits dropped ({written} written for "
-                          f"{_written(q, last)})")
-    return None
-
-
-def _written(q: int, last: int) -> str:
-    if last >= 0:
-        return str(q * 10 ** last)
-    s = str(q).rjust(-last + 1, "0")
-    return f"{s[:last]}.{s[last:]}"

@@ -4,6 +4,7 @@ the package's rule)."""
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 from ..errors import PolygonMethodError
 from ..scales import DRAWING_PRECISION_CM, diagram_scales
@@ -13,6 +14,64 @@ from ..solution import Solution
 from .verdicts import ROUNDING, UNIT_OF
 
 _SIN30 = 0.5
+
+
+@dataclass(frozen=True)
+class Stated:
+    """A tolerance stated instead of the default: ``relative`` (0.05 for 5 %) for every
+    answer, and ``absolute`` ((SI unit of the answers, SI value, as written), ...) for the
+    answers in that unit (``0.01 m/s`` for velocities); ``source`` says where it was
+    stated (a verdict's rule ends with it)."""
+
+    relative: float | None = None
+    absolute: tuple = ()
+    source: str = "the answers' tolerance"
+
+    def text(self) -> str:
+        parts = ([f"{100 * self.relative:g} %"] if self.relative is not None else []) + \
+            [t for _, _, t in self.absolute]
+        return ", ".join(parts)
+
+    def absolute_for(self, unit):
+        return next(((x, t) for u, x, t in self.absolute if u == unit), None)
+
+
+#: where the tolerance of an answer file came from
+SOURCES = {"command line": "--tolerance on the command line",
+           "answer file": "the answer file's own tolerance",
+           "scene": "the scene's [answers] tolerance, the book's, for its own answers",
+           "default": "the default: what a careful hand drawing at the step table's scales "
+                      "allows"}
+
+
+def choose_tolerance(command_line: Stated | None, own: float | None, book: float | None,
+                     scenes_own: bool) -> tuple:
+    """(the tolerance to check with: a :class:`Stated` or None for the default, where it
+    comes from: a key of ``SOURCES``, and why, in words) for one set of answers.
+
+    The command line first, then the answer file's own ``tolerance``; the scene's (the
+    book's) only for the scene's own answers: a student's file is never checked at the
+    book's tolerance without saying so.
+
+    >>> choose_tolerance(None, None, 0.03, scenes_own=False)[1:]
+    ('default', "the default: what a careful hand drawing at the step table's scales allows (not the scene's 3 %: that is the book's, for the scene's own answers)")
+    >>> choose_tolerance(Stated(0.05, source="--tolerance"), 0.02, 0.03, False)[1]
+    'command line'
+    """
+    if command_line is not None:
+        why = f"{command_line.text()}, from {SOURCES['command line']}"
+        if own is not None:
+            why += f" (over the answer file's own {100 * own:g} %)"
+        return command_line, "command line", why
+    if own is not None:
+        return Stated(own), "answer file", f"{100 * own:g} %, {SOURCES['answer file']}"
+    if book is not None and scenes_own:
+        return Stated(book), "scene", f"{100 * book:g} %, {SOURCES['scene']}"
+    why = SOURCES["default"]
+    if book is not None:
+        why += f" (not the scene's {100 * book:g} %: that is the book's, for the scene's " \
+            "own answers)"
+    return None, "default", why
 
 
 
@@ -103,6 +162,9 @@ class _Tolerances:
                 return 0.0, "computed (crank)"
             f = self.link_factor(lk.key)
             return d * s * f / lk.length, (vt if kind == "omega" else at)
+        if kind in ("vu", "au"):  # read off at a1 (a1'), found with the block's step
+            f = self.f(sol.scene.slider(names[0]).point)
+            return (d * sv * f, vt) if kind == "vu" else (d * sa * f, at)
         if kind in ("vI", "aI"):  # read off at the contact's image, like the wheel's point
             f = max(self.f(n) for n in names)
             return (d * sv * f, vt) if kind == "vI" else (d * sa * f, at)
@@ -146,16 +208,24 @@ def answer_tolerance(sol: Solution, kind: str, names: tuple, correct: float,
     """
     tols = _tols or _Tolerances(sol)
     draw, where = tols.drawing(kind, names)
+    source = "the answers' tolerance"
+    if isinstance(relative, Stated):
+        source = relative.source
+        given = relative.absolute_for(UNIT_OF[kind])
+        if given is not None:  # 0.01 m/s for the velocities
+            return given[0], f"{given[1]} ({source})"
+        relative = relative.relative
     if relative is not None:
         tol = relative * abs(correct)
         if tol == 0:
             tol = draw or 1e-12
-        return tol, f"{100 * relative:g} % (the answers' tolerance)"
+        return tol, f"{100 * relative:g} % ({source})"
     hand = None if where.startswith("computed") else tols.hand(kind, names, correct)
     if hand is not None and hand * abs(correct) > max(ROUNDING * abs(correct), draw):
         how = f"{BUILT}{HOW[kind]}" if kind in HOW else ""
         return hand * abs(correct), (
-            "a careful hand drawing at the step table's scales (pencil 0.25 mm and 0.25 deg), "
+            "a careful hand drawing at the step table's scales (pencil 0.25 mm and 0.25 deg, "
+            "lengths read to the ruler's 1 mm division), "
             f"simulated: 95 % of drawings are this close{how}")
     tol = max(ROUNDING * abs(correct), draw)
     if tol == 0:

@@ -16,13 +16,14 @@ _SIN30 = 0.5
 
 UNIT_OF = {"v": "m/s", "a": "m/s^2", "omega": "rad/s", "alpha": "rad/s^2", "vs": "m/s",
            "as": "m/s^2", "ac": "m/s^2", "rub": "m/s", "torque": "N m",
-           "vI": "m/s", "aI": "m/s^2", "F": "N", "N": "N"}
+           "vI": "m/s", "aI": "m/s^2", "F": "N", "N": "N", "vu": "m/s", "au": "m/s^2"}
 _ANGULAR = ("omega", "alpha", "torque")
 
 
 #: answer kind -> the kind of quantity whose largest value sets what is rounding noise
 _NOISE_KIND = {"v": "v", "vs": "v", "rub": "v", "a": "a", "as": "a", "ac": "a",
-               "vI": "v", "aI": "a", "omega": "omega", "alpha": "alpha"}
+               "vI": "v", "aI": "a", "vu": "v", "au": "a", "omega": "omega",
+               "alpha": "alpha"}
 
 
 @dataclass(frozen=True)

@@ -62,6 +62,12 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--gradebook", help="FILE.csv or FILE.md: the class's gradebook")
     s.add_argument("--variants", help="DIR: the variant scenes `variants -o DIR` wrote; each "
                    "answer file is graded against the variant it names (variant = \"07\")")
+    s.add_argument("--tolerance", action="append", metavar="TOL",
+                   help="the tolerance for every answer file: a per cent (5%%) or a value with "
+                        "its unit for the answers in that unit (0.01 m/s); may be given again "
+                        "for another unit. Without it: the answer file's own, else what a "
+                        "careful hand drawing allows (a scene's own tolerance is the book's, "
+                        "for the scene's answers)")
     s.set_defaults(func=_cmd_check)
 
     s = sub.add_parser("variants", help="a variant of the scene per student, the answer key "

@@ -32,6 +32,67 @@ def _json(d) -> str:
     return json.dumps(clean(d), indent=2, allow_nan=False)
 
 
+_ABSOLUTE = (("velocity", "m/s"), ("acceleration", "m/s^2"), ("angular_velocity", "rad/s"),
+             ("angular_acceleration", "rad/s^2"), ("torque", "N m"))
+
+
+def _command_line_tolerance(values):
+    """``--tolerance 5%`` (and ``--tolerance 0.01 m/s``, one per unit) as a
+    :class:`~polygon_method.check.Stated`, or None when not given."""
+    from ..check import SOURCES, Stated
+    from ..scene.tables import decimal_comma
+    from ..units import parse_quantity
+    if not values:
+        return None
+    relative, absolute = None, []
+    for raw in values:
+        text = decimal_comma(raw.strip())
+        shown = printable(raw)
+        if text is None or not text:
+            raise SceneError(f"'{shown}': write a per cent (5%) or a value with "
+                             "its unit (0.01 m/s), with a decimal point", key="--tolerance")
+        if text.endswith("%"):
+            try:
+                q = parse_quantity(text, "percent", default_unit="%").value
+            except PolygonMethodError:
+                q = math.nan
+            if not 0 < q < 1:
+                raise SceneError(f"'{shown}': a per cent between 0 and 100 (e.g. "
+                                 "5%)", key="--tolerance")
+            if relative is not None:
+                raise SceneError(f"'{shown}': a second per cent; give one (and "
+                                 "values with a unit for one kind of answer each)",
+                                 key="--tolerance")
+            relative = q
+            continue
+        for kind, si in _ABSOLUTE:
+            try:
+                q = parse_quantity(text, kind)
+            except PolygonMethodError:
+                continue
+            if not q.value > 0 or q.sense is not None:
+                raise SceneError(f"'{shown}': a tolerance is a positive size",
+                                 key="--tolerance")
+            if any(u == si for u, _, _ in absolute):
+                raise SceneError(f"'{shown}': a second tolerance in {si}",
+                                 key="--tolerance")
+            absolute.append((si, q.value, " ".join(text.split())))
+            break
+        else:
+            raise SceneError(f"'{shown}' is neither a per cent (5%) nor a value with a unit of "
+                             "velocity, acceleration, angular velocity or acceleration, or "
+                             "torque (0.01 m/s)", key="--tolerance")
+    return Stated(relative, tuple(absolute), source=SOURCES["command line"])
+
+
+def _row_tolerance(tolerance, source) -> str:
+    """A student's tolerance for the class table: "default", "5 % (--tolerance)", "3 %
+    (the file's own)"."""
+    if tolerance is None:
+        return "default"
+    return f"{tolerance.text()} ({'--tolerance' if source == 'command line' else 'the file' + chr(39) + 's own'})"
+
+
 def _answer_files(paths):
     """The answer files named: files as given, a directory's *.toml in order."""
     out = []
@@ -162,7 +223,7 @@ def _graded_against(named, scene, sol, tols, book):
 
 def _cmd_class(args, scene, sol, files) -> int:
     """A whole class: a row per answer file, the summary, the gradebook."""
-    from ..check import check_answers, tolerances
+    from ..check import check_answers, choose_tolerance, tolerances
     from ..check.classroom import (Row, class_dict, class_text, gradebook_csv,
                                   gradebook_markdown, summary_text)
     from ..scene import load_answers
@@ -177,6 +238,7 @@ def _cmd_class(args, scene, sol, files) -> int:
     inputs = [args.scene, *files, *(vbook.files if vbook else ())]
     targets = check_outputs([(book, "--gradebook")], protect=inputs) if book else []
     tols = tolerances(sol)
+    stated = _command_line_tolerance(getattr(args, "tolerance", None))
     rows = []
     given = set(args.answers or ())  # named on the command line (a pipe given is read)
     for f in files:
@@ -185,13 +247,16 @@ def _cmd_class(args, scene, sol, files) -> int:
         try:
             if f not in given:
                 _listed(Path(f))
-            tolerance, answers, named = load_answers(f, scene, with_variant=True)
-            if tolerance is None:
-                tolerance = scene.tolerance
+            own, answers, named, name = load_answers(f, scene, with_variant=True,
+                                                     with_student=True)
+            if name:
+                student = printable(name)
+            tolerance, source, _ = choose_tolerance(stated, own, scene.tolerance, False)
             vid, vsol, vtols = _graded_against(named, scene, sol, tols, vbook)
             rows.append(Row(student, printable(str(f)),
                             check_answers(vsol, answers, tolerance, _tols=vtols),
-                            variant=vid if vbook is None else (vid or "")))
+                            variant=vid if vbook is None else (vid or ""),
+                            tolerance=_row_tolerance(tolerance, source)))
         except PolygonMethodError as exc:  # a row with its error, never the whole run
             line = exc.one_line()
             where = f"{printable(str(f))}: "
@@ -199,16 +264,16 @@ def _cmd_class(args, scene, sol, files) -> int:
                             else line,
                             variant=(printable(named) if named else "") if vbook else None))
     if getattr(args, "json", False):
-        print(_json(class_dict(rows)))
+        print(_json(class_dict(rows, book=scene.tolerance)))
     else:
         print(f"{scene.title or args.scene}: {len(files)} answer files"
               + (f", each graded against its own variant in {variants}" if vbook else ""))
         print(class_text(rows))
         print()
-        print(summary_text(rows))
+        print(summary_text(rows, book=scene.tolerance))
     if targets:
         data = gradebook_csv(rows) if book.lower().endswith(".csv") else \
-            gradebook_markdown(rows)
+            gradebook_markdown(rows, book=scene.tolerance)
         write_outputs(targets, [(data, False)])
     return 0
 
@@ -218,10 +283,11 @@ def _cmd_check(args) -> int:
     DIR]``: one answer file (or the scene's answers): 0 all right, 1 any wrong; several, or
     a directory: the whole class, 0. With ``--variants``, each answer file is graded
     against the variant it names."""
-    from ..check import check_answers, verdicts_dict, verdicts_text
+    from ..check import check_answers, choose_tolerance, verdicts_dict, verdicts_text
     from ..scene import load_answers, load_scene
     from ..solution import solve
 
+    stated = _command_line_tolerance(getattr(args, "tolerance", None))
     scene = load_scene(args.scene)
     sol = solve(scene)
     files = _answer_files(args.answers or [])
@@ -236,9 +302,11 @@ def _cmd_check(args) -> int:
     title = f"{scene.title or args.scene}: answers from " + \
         (args.answers if args.answers else "the scene")
     if args.answers:
-        tolerance, answers, named = load_answers(args.answers, scene, with_variant=True)
-        if tolerance is None:
-            tolerance = scene.tolerance
+        own, answers, named, student = load_answers(args.answers, scene, with_variant=True,
+                                                    with_student=True)
+        if student:
+            title += f" ({printable(student)})"
+        tolerance, source, why = choose_tolerance(stated, own, scene.tolerance, False)
         try:
             vid, sol, _ = _graded_against(named, scene, sol, None,
                                           _VariantBook(variants, scene) if variants else None)
@@ -250,7 +318,8 @@ def _cmd_check(args) -> int:
         if variants:
             raise SceneError("--variants grades answer files: give the students' files (or "
                              "their directory)", key="--variants")
-        tolerance, answers = scene.tolerance, scene.answers
+        answers = scene.answers
+        tolerance, source, why = choose_tolerance(stated, None, scene.tolerance, True)
     if not answers:
         raise SceneError("nothing to check: the scene has no [answers] and no answer file "
                          "was given", file=args.scene, key="[answers]")
@@ -259,9 +328,11 @@ def _cmd_check(args) -> int:
     except PolygonMethodError as exc:  # a centre the mechanism has not (I_19 of four links)
         raise exc.located(args.answers or args.scene)
     if getattr(args, "json", False):
-        print(_json(verdicts_dict(verdicts, args.scene, args.answers)))
+        d = verdicts_dict(verdicts, args.scene, args.answers)
+        d["tolerance_used"] = {"source": source, "why": why}
+        print(_json(d))
     else:
-        print(verdicts_text(verdicts, title))
+        print(verdicts_text(verdicts, f"{title}\ntolerance used: {why}"))
     return 0 if all(v.ok for v in verdicts) else 1
 
 
@@ -302,8 +373,9 @@ def _cmd_variants(args) -> int:
     files += [("answer-key.md", answer_key_markdown(vs), False),
               ("answer-key.csv", answer_key_csv(vs), False),
               ("problem-sheet.md", sheet_markdown(vs), False)]
-    if args.pdf:
-        files.append(("problem-sheet.pdf", sheet_pdf(vs), True))
+    if args.pdf:  # each student's figure, drawn by the views
+        from ..draw import draw_configuration
+        files.append(("problem-sheet.pdf", sheet_pdf(vs, figure=draw_configuration), True))
     names = {f[0] for f in files}
     if not made:  # variants of an earlier run would be paired with the wrong students
         stale = sorted(p.name for p in out.glob("variant-*.toml") if p.name not in names)

@@ -139,7 +139,7 @@ def _frames(args, scene, fmt=None):
 def _cmd_page(args) -> int:
     """``polygon-method page SCENE -o page.html [--answers FILE] [--frames N]``: the page a
     student opens in a browser, written whole or not at all."""
-    from ..check import check_answers
+    from ..check import check_answers, choose_tolerance
     from ..page import page_html
     from ..scene import load_answers, load_scene
 
@@ -153,8 +153,9 @@ def _cmd_page(args) -> int:
     if args.answers:
         tolerance, answers, named = load_answers(args.answers, scene, with_variant=True)
         _own_variant(named, scene, args.answers)
-        if tolerance is None:  # the scene's stated tolerance, as `check` grades
-            tolerance = scene.tolerance
+        # as `check` grades: the file's own tolerance, else the default (the scene's is
+        # the book's, for its own answers)
+        tolerance = choose_tolerance(None, tolerance, scene.tolerance, False)[0]
     else:
         tolerance, answers = scene.tolerance, scene.answers
     title = f"answers from {Path(args.answers).name if args.answers else 'the scene'}"

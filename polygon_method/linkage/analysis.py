@@ -309,6 +309,17 @@ def _grashof_lines(g: Grashof, fb: FourBar, scene) -> list:
     return [head, what]
 
 
+def path_origin(path, scene) -> str:
+    """Where a position "along the path" is measured from, and which way is +: "from
+    (0, 40) mm, + to the right"."""
+    (qx, qy), (ux, uy) = path.through, path.u
+    u = scene.length_unit
+    ang = math.degrees(math.atan2(uy, ux))
+    way = {0: "to the right", 90: "upwards", 180: "to the left", -180: "to the left",
+           -90: "downwards"}.get(round(ang, 9), f"at {ang:.4g} deg")
+    return f"from ({qx / u:.6g}, {qy / u:.6g}) {scene.units}, + {way}"
+
+
 def _fmt_out(out, v, scene) -> str:
     if out.kind == "slider":
         return f"{v / scene.length_unit:.6g} {scene.units} along the path"
@@ -338,6 +349,8 @@ def _output_motion(cyc: _Cycle, out: _Output, scene, fb, sk, slot):
     placed = ~cyc.fr.bad
     if out.kind == "slider":
         all_v = out.value(cyc.fr)[placed]
+        lines.append(f"{out.label}: its place along the path is measured "
+                     f"{path_origin(out.path, scene)}")
         if vals and len(all_v):
             omin, omax = min(vals + [float(all_v.min())]), max(vals + [float(all_v.max())])
             if stands_still(omax - omin, scene):  # rounding about a standstill, no stroke

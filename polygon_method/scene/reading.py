@@ -614,13 +614,15 @@ _ANSWER_FILE_KEYS = ("answers", "title", "student", "name", "notes", "source", "
 
 
 def parse_answers(text: str, scene: Scene, file: str | None = None, *,
-                  with_variant: bool = False):
+                  with_variant: bool = False, with_student: bool = False):
     """Read an answer file (an ``[answers]`` table, e.g. a student's) against ``scene``.
 
     Keys and values follow the scene's ``[answers]`` rules. Returns
     ``(tolerance or None, tuple of Answer)``, and with ``with_variant`` the variant the
     file names (``variant = "07"``, a number, or a variant's file name; None if it names
-    none) as a third item; raises :class:`SceneError` naming the key.
+    none) as a third item, and with ``with_student`` the student's name the file gives
+    (``student = "A. Student"``, or ``name``; None if it gives none) after it; raises
+    :class:`SceneError` naming the key.
     """
     if not isinstance(text, str):
         raise SceneError(f"the answer file's text (TOML) is needed as a str, not "
@@ -651,10 +653,19 @@ def parse_answers(text: str, scene: Scene, file: str | None = None, *,
     loader.scene_forces = scene.has_forces
     loader.driving_block = scene.input.block
     loader.rolling_pairs = scene.rolling
+    loader.ground = scene.ground
     tolerance, answers = loader.answers(set(scene.point_names), scene.sliders, scene.pins,
                                         scene.loads)
+    student = None
+    for key in ("student", "name"):
+        if key in raw and student is None:
+            if not isinstance(raw[key], str) or not raw[key].strip():
+                raise SceneError(f"{key} is the student's name, a string: {key} = "
+                                 "\"A. Student\"", file=file, key=key,
+                                 line=loader.top_line(key))
+            student = " ".join(raw[key].split())
     if not with_variant:
-        return tolerance, tuple(answers)
+        return (tolerance, tuple(answers)) + ((student,) if with_student else ())
     variant = raw.get("variant")
     if isinstance(variant, int) and not isinstance(variant, bool):
         variant = f"{variant:02d}"
@@ -662,10 +673,11 @@ def parse_answers(text: str, scene: Scene, file: str | None = None, *,
         raise SceneError("variant names the student's variant: variant = \"07\" (or its "
                          "file name, \"variant-07.toml\")", file=file, key="variant",
                          line=loader.top_line("variant"))
-    return tolerance, tuple(answers), (variant.strip() if variant else None)
+    return (tolerance, tuple(answers), (variant.strip() if variant else None)) + \
+        ((student,) if with_student else ())
 
 
-def load_answers(path, scene: Scene, *, with_variant: bool = False):
+def load_answers(path, scene: Scene, *, with_variant: bool = False, with_student: bool = False):
     """Read an answer file from ``path``; see :func:`parse_answers`."""
     path = _path_of(path, "answer")
     try:
@@ -685,7 +697,8 @@ def load_answers(path, scene: Scene, *, with_variant: bool = False):
     if "\x00" in text:
         raise SceneError("not a text file (it holds binary data)", file=str(path))
     try:
-        return parse_answers(text, scene, file=str(path), with_variant=with_variant)
+        return parse_answers(text, scene, file=str(path), with_variant=with_variant,
+                             with_student=with_student)
     except PolygonMethodError as exc:
         raise exc.located(str(path))
 

@@ -11,8 +11,9 @@ from ..errors import SceneError, printable
 from ..units import UNITS, did_you_mean
 from .angles import read_angle
 from .triangle import apex
-from .records import (ANSWER_KINDS, Answer, CarriedPoint, Cylinder, FixedPath, GuideSlider,
-                      Load, Pin, YokeSlot, split_name)
+from .records import (ANSWER_KINDS, UNDER_BLOCK_KINDS, Answer, CarriedPoint, Cylinder, guide_words,
+                      FixedPath, GuideSlider, Load, Pin, YokeSlot, split_name,
+                      under_block_names)
 
 
 def _unit_at(ang: float) -> tuple:
@@ -29,6 +30,29 @@ def _unit_at(ang: float) -> tuple:
 
 def _suggest(word, choices) -> str:
     return did_you_mean(word, list(choices))
+
+
+#: a number written with a decimal comma: "0,39 m/s", "12,5"
+_COMMA_NUMBER = re.compile(r"^(\s*[-+]?)(\d*),(\d+)(?![\d.,])(.*)$", re.S)
+
+
+def decimal_comma(value):
+    """``value`` with its decimal comma read as a point (``"0,39 m/s"`` -> ``"0.39 m/s"``),
+    or ``value`` as it is; None where the comma reads two ways (``"1,250 m/s"``: 1.25 or
+    1250?).
+
+    >>> decimal_comma("0,39 m/s"), decimal_comma("12,5 rad/s cw"), decimal_comma("1,250")
+    ('0.39 m/s', '12.5 rad/s cw', None)
+    """
+    if not isinstance(value, str):
+        return value
+    m = _COMMA_NUMBER.match(value)
+    if not m:
+        return value
+    sign, whole, frac, rest = m.groups()
+    if whole.lstrip("0") and len(frac) == 3:  # a thousands separator, or a decimal comma?
+        return None
+    return f"{sign}{whole or '0'}.{frac}{rest}"
 
 
 def _which_point(name, known) -> str:
@@ -234,7 +258,7 @@ class _Tables:
         (ux, uy), (dx, dy) = path.u, sl.direction
         if abs(ux * dy - uy * dx) < 1e-9:
             raise self.error(f"a pin in two parallel slots: the slot of block {yoke} runs "
-                             f"{sl.label}, along the yoke's own {path.label} path, so "
+                             f"{sl.label}, along the yoke's own {guide_words(path.label)}, so "
                              "nothing moves the yoke", "sliders", name)
 
     def direction(self, value, name):
@@ -540,11 +564,55 @@ class _Tables:
         return Answer(key, "centre", pair, (value[0] * u, value[1] * u), None,
                       f"[{value[0]:g}, {value[1]:g}] {self.unit}", line)
 
+    def answer_keys(self, known, slider_names, pin_names, loads) -> list:
+        """Every answer key this scene can check (for a did-you-mean)."""
+        moving = [p for p in sorted(known) if p not in getattr(self, "ground", {})]
+        keys = [f"{k}_{p}" for k in ("v", "a") for p in moving]
+        for lk in self.index.values():
+            keys += [f"omega_{lk.key}", f"alpha_{lk.key}", f"v_{lk.p}{lk.q}", f"v_{lk.q}{lk.p}",
+                     f"a_{lk.p}{lk.q}", f"a_{lk.q}{lk.p}"]
+        keys += [f"{k}_{s}" for k in ("vs", "as", "ac") for s in slider_names]
+        keys += [f"rub_{p}" for p in sorted(pin_names)]
+        keys += [f"{k}_{n}" for k in ("v", "a") for n in self.under_names(known, slider_names)]
+        return keys + (["torque"] if loads else [])
+
+    def under_names(self, known, slider_names) -> dict:
+        """``A1`` -> the block at A's slider key: the guide's point under the block."""
+        return under_block_names(sorted(known), getattr(self, "ground", {}),
+                                 slider_names.values())
+
+    def key_hint(self, key, known, slider_names, pin_names, loads) -> str:
+        """`` (did you mean 'v_C'?)``: the key in another case (names are case-sensitive:
+        ``v_c``, ``omega_bc``), or a key one or two typos away; else empty."""
+        keys = self.answer_keys(known, slider_names, pin_names, loads)
+        written = key
+        head, _, rest = key.partition("_")
+        if head.lower() in ("w", "\u03c9"):  # w_BC, \u03c9_BC: omega_BC
+            key = f"omega_{rest}"
+        folded = {k.lower(): k for k in keys}
+        best = folded.get(key.lower())
+        if best is None:
+            for k in keys:  # omega_o2a for omega_O2-A
+                if k.lower().replace("-", "") == key.lower().replace("-", ""):
+                    best = k
+                    break
+        if best is None:
+            from ..units import suggest
+            best = suggest(key, keys)
+        return f" (did you mean '{best}'?)" if best is not None and best != written else ""
+
     def answer(self, key, value, known, slider_names, pin_names, loads):
         line = self.line_of("answers", key)
         forces = getattr(self, "scene_forces", None)  # an answer file: its scene's
         if forces is None:
             forces = bool(self.raw.get("masses")) or "gravity" in self.raw
+        hint = lambda: self.key_hint(key, known, slider_names, pin_names, loads)  # noqa: E731
+        read = decimal_comma(value)
+        if read is None:
+            raise self.error(f"'{printable(str(value))}': the comma reads two ways (a decimal "
+                             "comma, or thousands?): write the number with a decimal point, "
+                             "e.g. \"1.25 m/s\" or \"1250 mm/s\"", "answers", key)
+        raw_text, value = printable(str(value)), read
         if key == "torque":
             if not loads and not forces:
                 raise self.error("a torque answer needs [loads] to balance, or [masses]",
@@ -558,14 +626,14 @@ class _Tables:
                                  "(solve prints it; no torque answer)", "answers", key)
             q = self.qty(value, "torque", "answers", key, default_unit="N m", allow_sense=True,
                          refuse_absurd=False)
-            return Answer(key, "torque", (), q.value, q.sense, printable(str(value)), line)
+            return Answer(key, "torque", (), q.value, q.sense, raw_text, line)
         prefix, _, rest = key.partition("_")
         if prefix == "I" and rest:
             return self.centre_answer(key, rest, value, line)
         if prefix not in ANSWER_KINDS or not rest:
             examples = ["v_C", "a_C", "v_CB", "omega_BC", "alpha_BC", "vs_D", "as_D", "ac_A",
                         "rub_B", "torque"]
-            raise self.error(f"unknown answer key{_suggest(key, examples)}; keys are v_X, "
+            raise self.error(f"unknown answer key{hint() or _suggest(key, examples)}; keys are v_X, "
                              "a_X, v_XY, a_XY, omega_L, alpha_L, vs_X, as_X, ac_X, rub_X, "
                              "torque, I_ij (a centre), vI_L, aI_L (a wheel's contact point), "
                              "F_X, N_X (forces)", "answers", key)
@@ -573,16 +641,22 @@ class _Tables:
         if what in ("pin_force", "guide") and not forces:
             raise self.error(f"{key}: a force answer needs the force analysis: give "
                              "[masses] or [gravity]", "answers", key)
+        if prefix in UNDER_BLOCK_KINDS and rest not in known:
+            under = self.under_names(known, slider_names).get(rest)
+            if under is not None:  # v_A1: the guide's point under the block at A
+                q = self.qty(value, kind, "answers", key, default_unit=next(iter(UNITS[kind])))
+                return Answer(key, UNDER_BLOCK_KINDS[prefix], (under,), q.value, None,
+                              raw_text, line)
         names = (rest,) if what == "slider" and rest in slider_names else split_name(rest)
         if not names:
-            raise self.error(f"'{rest}' is not a point or link name", "answers", key)
+            raise self.error(f"'{rest}' is not a point or link name{hint()}", "answers", key)
         if what == "point":
             if len(names) > 2:
-                raise self.error("v_X or v_XY: one or two points", "answers", key)
+                raise self.error(f"v_X or v_XY: one or two points{hint()}", "answers", key)
             for n in names:
                 if n not in known:
-                    raise self.error(f"no point {n} in the scene{_which_point(n, known)}",
-                                     "answers", key)
+                    raise self.error(f"no point {n} in the scene"
+                                     f"{hint() or _which_point(n, known)}", "answers", key)
         elif what == "link" and len(names) == 2 and self.find_cylinder(names):
             names = tuple(split_name(self.find_cylinder(names).key))
         elif what == "slider" and len(names) == 2 and self.find_cylinder(names) and \
@@ -591,7 +665,7 @@ class _Tables:
         elif what == "link":
             if len(names) != 2 or frozenset(names) not in self.index:
                 raise self.error(f"no link {rest} in [links]"
-                                 f"{_suggest(rest, [lk.key for lk in self.index.values()])}",
+                                 f"{hint() or _suggest(rest, [lk.key for lk in self.index.values()])}",
                                  "answers", key)
         elif what == "slider":
             if len(names) != 1 or names[0] not in slider_names:
@@ -600,7 +674,7 @@ class _Tables:
                     raise self.error(f"{rest} sits in two slots: name the slot, "
                                      + " or ".join(f"{prefix}_{k}" for k in slots),
                                      "answers", key)
-                raise self.error(f"no slider {rest} in [sliders]", "answers", key)
+                raise self.error(f"no slider {rest} in [sliders]{hint()}", "answers", key)
         elif what == "wheel":  # the wheel's point at its rolling contact
             wheels = {r.wheel for r in getattr(self, "rolling_pairs", ())}
             lk = self.index.get(frozenset(names)) if len(names) == 2 else None
@@ -617,8 +691,9 @@ class _Tables:
                                  "[sliders]", "answers", key)
         elif what == "pin":
             if len(names) != 1 or names[0] not in pin_names:
-                raise self.error(f"rubbing at {rest} needs its size in [pins]", "answers", key)
+                raise self.error(f"rubbing at {rest} needs its size in [pins]{hint()}",
+                                 "answers", key)
         q = self.qty(value, kind, "answers", key, default_unit=next(iter(UNITS[kind])),
                      allow_sense=sense_ok, refuse_absurd=False)  # warned of when checked
-        return Answer(key, prefix, names, q.value, q.sense, printable(str(value)), line)
+        return Answer(key, prefix, names, q.value, q.sense, raw_text, line)
 

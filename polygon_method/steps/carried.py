@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .base import Construction, Step, absolute, image_label, relative
+from .base import Construction, Step, absolute, image_label, image_name, relative
 from .rounding import vhypot, vmax
 
 __all__ = ["Carried", "image", "recognise"]
@@ -250,13 +250,19 @@ class Carried(Step):
         lab = lambda p: image_label(sol, p, ph)  # noqa: E731
         D = sol.V if ph == "velocity" else sol.A
         X, p, q = self.point, self.p, self.q
+        # a fixed end keeps its own letter in the figure's name, said to be at the pole:
+        # "triangle cdg (d at the pole o)", not "triangle cog"
+        own = lambda P: image_name(sol.scene, P) + ("'" if ph == "acceleration" else "")  # noqa: E731
+        poles = [P for P in (p, q) if lab(P) != own(P)]
+        at_pole = "".join(f" ({own(P)} at the pole {lab(P)})" for P in poles)
         if self.mu == 0:
-            text = (f"{lab(p)}{lab(X)} / {lab(p)}{lab(q)} = {p}{X} / {p}{q} = {self.lam:.4g}: "
-                    f"{lab(X)} on {lab(p)}{lab(q)}"
-                    + (" produced" if not 0 <= self.lam <= 1 else ""))
+            text = (f"{own(p)}{lab(X)} / {own(p)}{own(q)} = {p}{X} / {p}{q} = {self.lam:.4g}: "
+                    f"{lab(X)} on {own(p)}{own(q)}"
+                    + (" produced" if not 0 <= self.lam <= 1 else "") + at_pole)
         else:
-            text = (f"triangle {lab(p)}{lab(q)}{lab(X)} similar to {p}{q}{X}, read the same "
-                    f"way round ({'ccw' if self.mu > 0 else 'cw'}): {lab(X)} is the image of {X}")
+            text = (f"triangle {own(p)}{own(q)}{lab(X)}{at_pole} similar to {p}{q}{X}, read "
+                    f"the same way round ({'ccw' if self.mu > 0 else 'cw'}): {lab(X)} is the "
+                    f"image of {X}")
         found = (absolute(sol, X, D, ph), relative(sol, X, p, D, ph))
         return Construction(self.index, self.title, ph, lab(X), D[X], (), (), found, text,
                             sol.conditions.get(self.index, 1.0))

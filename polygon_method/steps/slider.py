@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 from .relations import coriolis
 from ..numbers import in_units
-from ..scene import FixedPath, GuideSlider
+from ..scene import FixedPath, GuideSlider, guide_words
 from .rounding import line_rounding, turning, two_lines, vhypot, vmax
 from .slotted import under_label
 from .base import (Construction, DirectionLine, Step, Vector, absolute, add, centripetal,
@@ -148,7 +148,7 @@ class SliderDyad(Step):
         if self.path is None:
             where = f"link {self.guide}"
         elif self.path.label in ("horizontal", "vertical"):
-            where = f"the {self.path.label} path"
+            where = f"the {guide_words(self.path.label)}"
         else:
             where = f"the path {self.path.label}"
         return f"link {self.link}, slider {self.point} on {where}"
@@ -303,7 +303,7 @@ class SliderDyad(Step):
         return None
 
     def position_words(self, L, which, angle_deg):
-        where = (f"the {self.path.label} path of {self.point}" if self.path is not None
+        where = (f"the {guide_words(self.path.label, of=self.point)}" if self.path is not None
                  else f"the line of {self.guide}")
         return (f"{self.point}: an arc of radius {self.link} = {L(self.length)} about {self.b} "
                 f"cuts {where} at {self.point} ({which(self.point)})")

@@ -26,7 +26,7 @@ from dataclasses import dataclass
 
 from ..errors import TOL, SingularStepError
 from ..numbers import in_units
-from ..scene import YokeSlot
+from ..scene import YokeSlot, guide_words
 from .base import Construction, DirectionLine, Step, Vector, absolute, image_label
 from .rounding import EPS, line_rounding, two_lines
 
@@ -103,7 +103,7 @@ class Yoke(Step):
 
     @property
     def title(self):
-        return f"yoke {self.point} on the {self.path.label} path, pin {self.pin} in its slot"
+        return f"yoke {self.point} on the {guide_words(self.path.label)}, pin {self.pin} in its slot"
 
     @property
     def params(self):
@@ -188,7 +188,7 @@ class Yoke(Step):
 
     def singular_why(self, c) -> str:
         return (f"a pin in two parallel slots: the slot of yoke {self.point} is parallel to "
-                f"its {self.path.label} path (sine {c:.2g}): nothing moves the yoke")
+                f"its {guide_words(self.path.label)} (sine {c:.2g}): nothing moves the yoke")
 
     def warning(self, c) -> str:
         return (f"{self.label}: the slot of yoke {self.point} is nearly parallel to its path "
@@ -217,7 +217,7 @@ class Yoke(Step):
         (qx, qy) = self.path.through
         u, n = self.unit, self.uname
         return (f"{self.point}: the line through {self.pin} along the yoke's slot "
-                f"({self.slot.label}) cuts the {self.path.label} path through "
+                f"({self.slot.label}) cuts the {guide_words(self.path.label)} through "
                 f"({in_units(qx, u)}, {in_units(qy, u)}) {n} at {self.point}")
 
     # ----- the polygons
@@ -229,12 +229,12 @@ class Yoke(Step):
         lab, lx = image_label(sol, Y, ph), image_label(sol, X, ph)
         o = "o" if ph == "velocity" else "o'"
         lines = (DirectionLine((0.0, 0.0), self.path.u, o,
-                               f"parallel to the {self.path.label} path"),
+                               f"parallel to the {guide_words(self.path.label)}"),
                  DirectionLine(D[X], self.slot.direction, lx,
                                f"parallel to the slot ({self.slot.label})"))
         what = "velocity" if ph == "velocity" else "acceleration"
         text = (f"the yoke translates: through {o} draw a line parallel to its "
-                f"{self.path.label} path; through {lx}, one parallel to its slot "
+                f"{guide_words(self.path.label)}; through {lx}, one parallel to its slot "
                 f"({self.slot.label}), the pin's sliding {what}; they meet at {lab} (no "
                 "Coriolis component: the slot does not turn)")
         found = (absolute(sol, Y, D, ph),

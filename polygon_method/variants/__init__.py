@@ -12,7 +12,8 @@ whether the crank turns fully on its branch). Each chosen candidate is then writ
 scene, read back by the scene reader, compiled on its own (its assembly hints must choose
 the base scene's branches) and solved plainly; only a variant that passes again is kept.
 Candidates differ in at least one value (values that are equal in SI are listed once), so
-no two variants are the same.
+no two variants are the same; a candidate whose every value is the base problem's (its
+dimensions, crank angle over a turn, speed, loads) is no variant and is turned down.
 
 Small spaces (at most :data:`ENUMERATE` combinations) are visited in a random order to
 the end, so "only N variants exist" is exact; larger ones are sampled without repeats up
@@ -219,7 +220,7 @@ def _put(raw, path, value):
 
 _UNITS = {"v": "m/s", "a": "m/s^2", "omega": "rad/s", "alpha": "rad/s^2", "vs": "m/s",
           "as": "m/s^2", "ac": "m/s^2", "rub": "m/s", "torque": "N m",
-          "vI": "m/s", "aI": "m/s^2", "F": "N", "N": "N"}
+          "vI": "m/s", "aI": "m/s^2", "F": "N", "N": "N", "vu": "m/s", "au": "m/s^2"}
 
 
 def questions(scene: Scene) -> tuple:
@@ -328,6 +329,34 @@ def _candidates(rng, sizes, total):
                     return
 
 
+def _numbers(x):
+    """The numbers in a nest of tuples, lists and dicts, in order."""
+    if isinstance(x, dict):
+        return [y for k in sorted(x, key=str) for y in _numbers(x[k])]
+    if isinstance(x, (tuple, list)):
+        return [y for v in x for y in _numbers(v)]
+    if isinstance(x, (int, float)) and not isinstance(x, bool):
+        return [float(x)]
+    return []
+
+
+def _problem(plan, sc):
+    """What makes ``sc`` the problem it is, as numbers (SI): the plan's dimensions (ground,
+    each step's, pin radii), the crank's speed and acceleration, its angle (over a turn),
+    the loads."""
+    d = plan.dimensions(sc)
+    turn = 2 * math.pi
+    theta = round(float(d.theta) % turn, 12) % turn
+    loads = [(ld.target, ld.force, ld.torque) for ld in sc.loads]
+    return (_numbers((d.ground, d.steps, d.radii, d.omega, d.alpha)) + [theta]
+            + _numbers([(f, t) for _, f, t in loads]))
+
+
+def _same(a, b) -> bool:
+    return len(a) == len(b) and all(abs(x - y) <= 1e-12 * max(1.0, abs(x), abs(y))
+                                    for x, y in zip(a, b))
+
+
 def _id_width(count):
     return max(2, len(str(count)))
 
@@ -367,6 +396,7 @@ def generate(scene: Scene, count: int, seed: int, *, batch: int | None = None) -
     batch = batch or max(4 * count, 64)
     found, rejected, tried = [], Counter(), 0
     qs = questions(scene)
+    base_problem = _problem(plan, scene)
     gen = _candidates(rng, sizes, total)
     while len(found) < count:
         picks = []
@@ -386,9 +416,18 @@ def generate(scene: Scene, count: int, seed: int, *, batch: int | None = None) -
             for v, i in zip(var.varied, t):
                 _put(r, v.path, v.values[i])
             try:
-                built.append((t, r, scene_from_table(r, scene.file)))
+                cand = scene_from_table(r, scene.file)
             except PolygonMethodError:
                 rejected["does not read as a scene (a triangle that cannot close, ...)"] += 1
+                continue
+            try:
+                same = _same(_problem(plan, cand), base_problem)
+            except PolygonMethodError:
+                same = False
+            if same:  # every value as the base problem's: no variant
+                rejected["the base problem itself"] += 1
+                continue
+            built.append((t, r, cand))
         if not built:
             continue
         kept = []

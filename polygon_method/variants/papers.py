@@ -69,7 +69,9 @@ _QUESTION_WORDS = {"v": "the velocity of {0}", "a": "the acceleration of {0}",
                    "torque": "the input torque on the crank",
                    "vI": "the velocity of the point of wheel {0} in contact",
                    "aI": "the acceleration of the point of wheel {0} in contact",
-                   "F": "the force at pin {0}", "N": "the guide's normal force on block {0}"}
+                   "F": "the force at pin {0}", "N": "the guide's normal force on block {0}",
+                   "vu": "the velocity of the point of the guide under the block {0}",
+                   "au": "the acceleration of the point of the guide under the block {0}"}
 
 
 def _question(q) -> str:
@@ -106,8 +108,11 @@ def sheet_markdown(vs) -> str:
     return "\n".join(out)
 
 
-def sheet_pages(vs):
-    """The problem sheet's pages, one matplotlib figure (A4, plain text) per variant."""
+def sheet_pages(vs, figure=None):
+    """The problem sheet's pages, matplotlib figures (A4) per variant: its problem in words
+    and, with ``figure`` (``figure(ax, solution, scale)`` paints a configuration diagram in
+    centimetres of paper, as ``draw.draw_configuration`` does), the student's own figure
+    true to a stated round scale under it (over the page where it does not fit)."""
     import textwrap
 
     from matplotlib.figure import Figure
@@ -115,13 +120,13 @@ def sheet_pages(vs):
     base = vs.base
 
     def page(head):
-        fig = Figure(figsize=(8.27, 11.69))
+        fig = Figure(figsize=(PAGE_CM[0] / 2.54, PAGE_CM[1] / 2.54))
         fig.text(0.08, 0.95, f"{base.title or base.file}".replace("$", r"\$"), fontsize=11,
                  va="top")
         fig.text(0.08, 0.92, head, fontsize=15, weight="bold", va="top")
         return fig
 
-    for head, lines in sheet_sections(vs):
+    for v, (head, lines) in zip(vs.variants, sheet_sections(vs)):
         fig, y = page(head), 0.88
         for line in lines:
             for part in textwrap.wrap(line.replace("`", "").replace("$", r"\$"), 90) or [""]:
@@ -130,22 +135,61 @@ def sheet_pages(vs):
                     fig, y = page(f"{head} (continued)"), 0.88
                 fig.text(0.08, y, part, fontsize=10, va="top")
                 y -= 0.022
+        if figure is not None:
+            if not _put_figure(fig, y, v.solution, figure):
+                yield fig
+                fig = page(f"{head}: the figure")
+                _put_figure(fig, 0.88, v.solution, figure)
         yield fig
 
 
 #: the lowest line of a problem sheet's page (fraction of its height from the bottom)
 BOTTOM = 0.05
+#: the problem sheet's page: A4 portrait (cm), and its side margins
+PAGE_CM = (21.0, 29.7)
+_SIDE_CM = 0.08 * PAGE_CM[0]
 
 
-def sheet_pdf(vs) -> bytes:
-    """The problem sheet as a PDF, a page per variant."""
+def _put_figure(fig, top, sol, figure) -> bool:
+    """Paint ``sol``'s configuration on ``fig`` below ``top`` (a fraction of the page's
+    height), true to scale: at the step table's scale, or the next round scales where it
+    does not fit the room left; False (nothing painted) where the room left is too small
+    for it at half the step table's size."""
+    from ..scales import coarser, diagram_scales
+
+    scale = diagram_scales(sol)[0]
+    first = scale.per_cm
+    room_w = PAGE_CM[0] - 2 * _SIDE_CM
+    room_h = (top - BOTTOM) * PAGE_CM[1] - 1.0  # a line for the scale's words above it
+    while True:
+        ax = fig.add_axes((0.0, 0.0, 0.1, 0.1))
+        figure(ax, sol, scale)
+        (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+        w, h = x1 - x0, y1 - y0
+        if w <= room_w and h <= room_h:
+            break
+        fig.delaxes(ax)
+        if scale.per_cm > 2.01 * first:
+            return False
+        scale = coarser(scale)
+    left = (PAGE_CM[0] - w) / 2
+    bottom = top * PAGE_CM[1] - 1.0 - h
+    ax.set_position((left / PAGE_CM[0], bottom / PAGE_CM[1], w / PAGE_CM[0], h / PAGE_CM[1]))
+    fig.text(0.08, top, f"Figure: the configuration, drawn at {scale.text}", fontsize=10,
+             va="top")
+    return True
+
+
+def sheet_pdf(vs, figure=None) -> bytes:
+    """The problem sheet as a PDF, a page per variant (with its figure: see
+    :func:`sheet_pages`)."""
     from matplotlib.backends.backend_pdf import PdfPages
 
     buf = io.BytesIO()
     base = vs.base
     with PdfPages(buf, metadata={"Title": f"{base.title or base.file}: problem sheet",
                                  "CreationDate": None}) as pdf:
-        for fig in sheet_pages(vs):
+        for fig in sheet_pages(vs, figure):
             pdf.savefig(fig)
     return buf.getvalue()
 
