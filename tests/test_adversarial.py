@@ -472,18 +472,24 @@ def test_a_list_of_values_is_bounded_as_a_range_is():
 
 
 def test_the_page_grades_an_answer_file_as_check_does(tmp_path, capsys):
-    """The scene states tolerance = "3%"; an answer file with none is graded at 3 % by
-    `check`, and so on the page (it used a hand drawing's tolerance, 2.8 % for v_C here)."""
+    """The scene states tolerance = "3%", the book's: an answer file with none is graded by
+    `check` at the default (a hand drawing's tolerance, saying so), and so on the page."""
+    import json
     import re
     v_c = solve(load_scene(SEED)).speed("C")
     ans = tmp_path / "ann.toml"
     ans.write_text(f'[answers]\nv_C = "{v_c * 0.971:.6f} m/s"\n')  # 2.9 % low
-    assert main(["check", SEED, str(ans)]) == 0
+    assert main(["check", SEED, str(ans), "--json"]) == 0
+    got = json.loads(capsys.readouterr().out)
+    assert got["tolerance_used"]["source"] == "default"
+    verdict = got["answers"][0]
+    assert "hand drawing" in verdict["rule"]
     page = tmp_path / "p.html"
     assert main(["page", SEED, "-o", str(page), "--answers", str(ans), "--frames", "4"]) == 0
     capsys.readouterr()
     table = re.search(r'<table id="check">.*?</table>', page.read_text(), re.S).group(0)
-    assert "right" in table and "WRONG" not in table and "3 %" in table
+    assert "right" in table and "WRONG" not in table
+    assert f"{verdict['tolerance_percent']:.2g} %" in table
 
 
 def test_a_pipe_in_a_listed_directory_is_a_row_never_a_wait(tmp_path, klass):

@@ -255,3 +255,16 @@ def test_a_diagnosis_keeps_the_scenes_units():
     v = check_answers(sol, answers, None)[0]
     assert v.mistake == "diameter_as_radius" and "0.75 in" in v.diagnosis
     assert "mm" not in v.diagnosis
+
+
+def test_a_slip_of_the_pen_is_found_in_a_number_with_a_decimal_comma():
+    """v_C with its first digit miswritten, in a decimal comma: still a slip of the pen
+    (the digits compared with the closed form's)."""
+    sc = parse_scene(FOURBAR)
+    right = f"{V_C:.4f}"
+    wrong = ("1" if right[2] != "1" else "2") if right.startswith("0.") else None
+    assert wrong is not None
+    written = f"0,{wrong}{right[3:]}"
+    _, answers = parse_answers(f'[answers]\nv_C = "{written} m/s"\n', sc)
+    v = check_answers(solve(sc), answers, None)[0]
+    assert not v.ok and v.mistake == "transcription_slip", (written, v.diagnosis)

@@ -5,7 +5,13 @@ from __future__ import annotations
 
 import re
 
+from ..scene.tables import decimal_comma
 from .alternatives import _Candidate
+
+
+def _pointed(raw) -> str:
+    """An answer as written, its decimal comma read as a point ("0,39 m/s": "0.39 m/s")."""
+    return str(decimal_comma(str(raw)) or raw)
 
 
 #: where a slip of the pen ranks among the mistakes (by their relative deviation): after
@@ -30,7 +36,7 @@ def _digits(number: str):
 
 def _slip(raw: str, given: float, correct: float, signed: bool):
     """A slip of the pen: one digit differs, two are swapped, or leading digits dropped."""
-    m = _NUM.search(str(raw))
+    m = _NUM.search(_pointed(raw))
     if not m or float(m.group()) == 0 or correct == 0:
         return None
     written = m.group()
@@ -74,7 +80,7 @@ def _written(q: int, last: int) -> str:
 def own_slip(d, ans):
     """A copying slip: the answer is the student's own value for the same quantity
     (v_BD and v_DB have one magnitude) with its leading digits lost: 36 for 2.36."""
-    m = _NUM.search(str(ans.raw))
+    m = _NUM.search(_pointed(ans.raw))
     mine = _digits(m.group()) if m else None
     if mine is None or len(mine[0]) < 2:
         return None
@@ -82,7 +88,7 @@ def own_slip(d, ans):
         if other.key == ans.key or other.kind != ans.kind or \
                 set(other.names) != set(ans.names):
             continue
-        mo = _NUM.search(str(other.raw))
+        mo = _NUM.search(_pointed(other.raw))
         theirs = _digits(mo.group()) if mo else None
         if theirs and len(theirs[0]) > len(mine[0]) and theirs[0].endswith(mine[0]):
             return _Candidate(ans.value, "transcription_slip",
