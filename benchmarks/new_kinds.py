@@ -109,7 +109,37 @@ def warm(text, n=4000, repeat=7):
     return statistics.median(runs)
 
 
+def step_costs(repeat=7, number=2000):
+    """The warm one-instant cost of each rolling step against a dyad's, each step's bound
+    closure timed alone (best of ``repeat``): the seed four-bar's dyad, the planet on a fixed
+    sun and the wheel on the ground of the textbook corpus."""
+    import timeit
+    from pathlib import Path
+    from polygon_method import load_scene
+    from polygon_method.compiler import compile_plan
+    from polygon_method.plan import Context
+    here = Path(__file__).resolve().parents[1] / "tests" / "textbook"
+
+    def cost(scene, kind):
+        plan = compile_plan(scene)
+        inp = scene.input
+        m = plan.instant(Context(inp.angle, inp.omega, inp.alpha))
+        st = next(s for s in plan.steps if s.kind == kind)
+        f = st.bind_instant(st.params)
+        return min(timeit.repeat(lambda: f(m), number=number, repeat=repeat)) / number
+
+    d = cost(parse_scene(CASES["four-bar"]), "dyad")
+    planet = load_scene(here / "rolling_planet_fixed_sun.toml")
+    wheel = load_scene(here / "rolling_wheel_on_ground.toml")
+    return {"dyad": d, "planet's rolling step": cost(planet, "rolling"),
+            "wheel's rolling step": cost(wheel, "rolling"),
+            "wheel's centre on the ground": cost(wheel, "wheel centre")}
+
+
 def main():
+    steps = step_costs()
+    for name, v in steps.items():
+        print(f"{name:<52} {v * 1e6:7.2f} us ({v / steps['dyad']:.2f} of a dyad)")
     t = {name: warm(text) for name, text in CASES.items()}
     for name, v in t.items():
         print(f"{name:<52} {v * 1e6:7.2f} us")
