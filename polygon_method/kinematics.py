@@ -33,6 +33,7 @@ from dataclasses import replace
 
 from .errors import SceneError
 from .plan import Context, Dims, Plan
+from .steps.relations import rigid_acceleration, rigid_velocity
 from .steps.rounding import vhypot as hypot  # |(x, y)| for floats or arrays
 
 __all__ = ["Motion", "evaluate", "hypot"]
@@ -142,10 +143,11 @@ class Motion:
         w = self.W[g.key]
         if phase == "velocity":
             vx, vy = self.V[g.p]
-            return (vx - w * ry, vy + w * rx)
-        al = self.Al[g.key]
+            dx, dy = rigid_velocity(rx, ry, w)
+            return (vx + dx, vy + dy)
         ax, ay = self.A[g.p]
-        return (ax - w * w * rx - al * ry, ay - w * w * ry + al * rx)
+        dx, dy = rigid_acceleration(rx, ry, w, self.Al[g.key])
+        return (ax + dx, ay + dy)
 
     @property
     def conditions(self) -> dict:

@@ -63,6 +63,9 @@ def _noise_of(sol: Solution, kind, names) -> tuple:
         return kind, sol._key("-".join(names))
     if kind in ("vs", "as", "ac"):
         return kind, names[0]
+    if kind in ("vu", "au"):  # the guide's point under a block: from the guide's end and
+        sl = sol.scene.slider(names[0])  # the block's point, the sum of their bounds
+        return kind[0], (sol.scene.link(sl.guide).p, sl.point)
     if kind in ("vI", "aI"):  # the rolling step's points
         key = sol.scene.link("-".join(names)).key
         pts = [p for st in sol.plan.steps if key in st.links

@@ -71,6 +71,20 @@ def _palette() -> list:
     return cols + [_hex(c) for c in (BODY_FACE, IMAGE_FACE, "#999999", "#bbbbbb")]
 
 
+def _missing_glyphs(text: str) -> None:
+    """Warn, in matplotlib's words, of each character of ``text`` the pictures' font (DejaVu
+    Sans) has no glyph for: the command gathers them into one line (it is drawn as the
+    font's empty box)."""
+    import unicodedata
+    import warnings
+    from matplotlib import font_manager, ft2font
+    font = ft2font.FT2Font(font_manager.findfont("DejaVu Sans"))
+    for c in dict.fromkeys(text):
+        if not c.isspace() and font.get_char_index(ord(c)) == 0:
+            name = unicodedata.name(c, f"U+{ord(c):04X}")
+            warnings.warn(f"Glyph {ord(c)} (\\N{{{name}}}) missing from font(s) DejaVu Sans.")
+
+
 def _font(size: int):
     from PIL import ImageFont
     for name in ("DejaVuSans.ttf", "dejavu/DejaVuSans.ttf"):
@@ -196,9 +210,13 @@ class Pictures:
         title = self.d["title"]
         if len(title) > 70:
             title = title[:69] + "…"
+        if k == 0:
+            _missing_glyphs(title)
         w, _ = self.text(im, (GAP * SS, 8 * SS), title, self._big)
+        name, symbol, unit = self.fr.parameter
+        at = self.fr.degrees[k]
         self.text(im, (GAP * SS + w + 24 * SS, 8 * SS),
-                  f"crank angle θ = {self.fr.degrees[k] % 360:.1f}°", self._big)
+                  f"{name} {symbol} = {at % 360 if unit == '°' else at:.1f}{unit}", self._big)
         for i, phase in enumerate(DIAGRAMS):
             x0 = (GAP + i * (PANEL + GAP)) * SS
             self.text(im, (x0, (TOP + 2) * SS), f"{_TITLE[phase]}: {self.scale_text(phase, k)}",
