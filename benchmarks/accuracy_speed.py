@@ -31,7 +31,6 @@ import glob
 import importlib.util
 import json
 import math
-import os
 import sys
 import time
 import timeit

@@ -498,7 +498,7 @@ def _torque_items(sol):
         return []
     inp = sc.input
     block = not sol.plan.steps[0].periodic  # a block driver: a force along its guide
-    out = [f"power balance (no friction, no inertia): "
+    out = ["power balance (no friction, no inertia): "
            + (f"F vs_{inp.tip}" if block else f"T omega_{inp.crank}") + " + sum F . v = 0"]
     for load, (target, p) in zip(sc.loads, sol.power_terms):
         if load.force is not None:

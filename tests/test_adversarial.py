@@ -8,7 +8,6 @@ read back from the files written, counts are counted here."""
 from __future__ import annotations
 
 import csv
-import math
 import tomllib
 
 import pytest

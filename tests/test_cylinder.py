@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 from mpmath import mpf, sqrt
 
-from polygon_method import AssemblyError, solve
+from polygon_method import solve
 from polygon_method.cli import main
 from polygon_method.compiler import gruebler
 from polygon_method.scene import parse_scene

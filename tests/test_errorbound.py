@@ -18,7 +18,7 @@ import pytest
 from error_bounds import compare_case, load_reference, run
 from methods import Kinematics, compare
 from polygon_method.cli import main
-from polygon_method.errorbound import EPS, SHOWN, error_bounds
+from polygon_method.errorbound import SHOWN, error_bounds
 from polygon_method.errors import SingularStepError
 from polygon_method.scene import parse_scene
 from polygon_method.solution import solve

@@ -6,7 +6,7 @@ import math
 
 import pytest
 
-from polygon_method import AssemblyError, solve
+from polygon_method import solve
 from polygon_method.cli import main
 from polygon_method.scene import parse_scene
 from scenes import seed

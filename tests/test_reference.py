@@ -150,8 +150,9 @@ def _diff(got, want):
 def _check(errors, what, got, want, scale, rel):
     err = _diff(got, want) / max(_norm(want), scale)
     if not err < rel:
-        fmt = (lambda v: f"({float(v[0]):.12g}, {float(v[1]):.12g})"
-               if isinstance(v, tuple) else f"{float(v):.12g}")
+        def fmt(v):
+            return (f"({float(v[0]):.12g}, {float(v[1]):.12g})" if isinstance(v, tuple)
+                    else f"{float(v):.12g}")
         errors.append(f"{what}: expected {fmt(want)}, got {fmt(got)} (rel. error {err:.2e})")
 
 

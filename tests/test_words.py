@@ -11,11 +11,12 @@ import pytest
 import polygon_method as pm
 from polygon_method.numbers import fmt
 from polygon_method.scene import guide_words
+from polygon_method.words import given
 
 
 def g(x):  # a datum, unrounded
     return f"{x:.10g}"
-from polygon_method.words import given
+
 
 SCENES = sorted((Path(__file__).parent.parent / "worked_problems").glob("*.toml"))
 

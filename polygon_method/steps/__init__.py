@@ -30,8 +30,8 @@ Adding a kind: write its module (a frozen ``Step`` subclass and a ``recognise(g,
 function) and add it to :data:`TIERS`.
 """
 
-from . import (carried, cylinder, dyad, peg, rack, rolling, slider, slotted, triad,
-               wheel_centre, yoke)
+from . import (carried, dyad, peg, rack, rolling, slider, slotted, triad, wheel_centre,
+               yoke)
 from .block import BlockDriver
 from .base import (Construction, Context, DirectionLine, State, Step, Vector, image_label,
                    image_name, pole_text)

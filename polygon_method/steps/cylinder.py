@@ -30,7 +30,7 @@ from .rounding import EPS, vhypot, vmax
 from .relations import coriolis
 from .slotted import velocity
 
-__all__ = ["CylinderStep", "velocity_of", "recognise"]
+__all__ = ["CylinderStep", "velocity_of", "recognise_all"]
 
 
 def velocity_of(dx, dy, evx, evy):
