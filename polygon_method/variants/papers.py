@@ -27,14 +27,15 @@ def _signed(x, unit, signed):
 
 def answer_key_csv(vs) -> str:
     """One row per variant: its id, file, the values chosen, then each answer in SI
-    (angular quantities and torques signed, counter-clockwise positive)."""
+    (angular quantities and torques signed, counter-clockwise positive), written in full
+    (the shortest text that reads back as the same double)."""
     keys = [v.key for v in vs.base.variation.varied]
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(["variant", "file"] + keys + [f"{q[0]} ({q[3]})" for q in vs.questions])
     for v in vs.variants:
         w.writerow([v.id, v.name] + [v.shown[k] for k in keys]
-                   + [f"{answer(v.solution, q):.10g}" for q in vs.questions])
+                   + [repr(float(answer(v.solution, q))) for q in vs.questions])
     return buf.getvalue()
 
 
