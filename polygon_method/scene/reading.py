@@ -189,28 +189,6 @@ _TOML_WORDS = [
 _HEADER = re.compile(r"^\s*\[\s*([A-Za-z0-9_.\-\"]+)\s*\]\s*(#.*)?$")
 
 
-def line_of(lines, table: str | None, key: str | None = None):
-    """Line number of ``[table] key`` (or of the table header) in ``lines``, if found."""
-    current = None
-    for i, line in enumerate(lines, 1):
-        m = _HEADER.match(line)
-        if m:
-            current = m.group(1).strip('"')
-            if key is None and current == table:
-                return i
-            continue
-        if key is not None and current == table:
-            if re.match(rf"^\s*\"?{re.escape(key)}\"?\s*=", line):
-                return i
-    if key is not None and table:  # a dotted key: links.BC = 66, or input.angle = 30
-        dotted = re.compile(rf"^\s*\"?{re.escape(table)}\"?\s*\.\s*\"?{re.escape(key)}"
-                            rf"\"?\s*=")
-        for i, line in enumerate(lines, 1):
-            if dotted.match(line):
-                return i
-    return None
-
-
 def _unquoted(name):
     """A key as written before its ``=``, without the spaces after it and one quote on each
     side."""
@@ -221,10 +199,9 @@ def _unquoted(name):
 
 
 class LineIndex:
-    """Every ``[table] key``'s line in one pass over the lines, found as :func:`line_of`
-    finds them one at a time (the first key line of the table's section, else the first
-    dotted ``table.key =`` line; a header's own line for ``key=None``), for a reader that
-    asks for many: the lines of a scene's answers.
+    """Every ``[table] key``'s line in one pass over the lines (the first key line of the
+    table's section, else the first dotted ``table.key =`` line; a header's own line for
+    ``key=None``), for a reader that asks for many: the lines of a scene's answers.
 
     >>> ix = LineIndex(['a = 1', '[t]', 'k = 2', '"O-R" = {x = 1}', 'u.w = 3'])
     >>> ix('t', 'k'), ix('t', 'O-R'), ix('t', None), ix(None, 'a'), ix('u', 'w'), ix('t', 'z')
@@ -260,6 +237,12 @@ class LineIndex:
         if found is None and table:
             found = self.dotted.get((table, key))
         return found
+
+
+def line_of(lines, table: str | None, key: str | None = None):
+    """Line number of ``[table] key`` (or of the table header) in ``lines``, if found: the
+    first key line of the table's section, else the first dotted ``table.key =`` line."""
+    return LineIndex(lines)(table, key)
 
 
 def key_line(scene, key: str | None):
