@@ -168,8 +168,8 @@ class _Diagnoser:
                                           f"its absolute velocity"))
                 # the classic slotted-lever slip: the guide's point under the block for the
                 # block itself (a1 for a: they differ by the sliding velocity)
-                under = self.point_under_block(X, sl, kind)
                 phase = "acceleration" if kind == "a" else "velocity"
+                under = sol.under_block(sl.key, phase)
                 if under is not None:
                     key = next((f"{sym}_{n}" for n, k in
                                 confusions.under_names(self.sc).items() if k == sl.key),
@@ -197,22 +197,6 @@ class _Diagnoser:
             if kind == "a" and lk is not None:
                 out += self.components(X, Y, lk, f"a_{X}{Y}")
         return out
-
-    def point_under_block(self, X, sl, kind):
-        """Velocity (kind "v") or acceleration ("a") of the guide link's point that lies
-        under the block at X, from the guide's known point, omega and alpha."""
-        sol = self.sol
-        g = self.sc.link(sl.guide)
-        K = next((p for p in g.points if p in self.sc.ground), g.points[0])
-        (kx, ky), (x, y) = sol.P[K], sol.P[X]
-        rx, ry = x - kx, y - ky
-        w = sol.W[g.key]
-        if kind == "v":
-            vx, vy = sol.V[K]
-            return (vx - w * ry, vy + w * rx)
-        al = sol.Al[g.key]
-        ax, ay = sol.A[K]
-        return (ax - w * w * rx - al * ry, ay - w * w * ry + al * rx)
 
     def components(self, X, Y, lk, name):
         sol = self.sol
