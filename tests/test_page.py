@@ -326,3 +326,12 @@ def test_gif_frames_are_written_as_they_are_drawn(monkeypatch):
     assert len(alive) == 12 and most[0] <= 1
     with Image.open(io.BytesIO(gif)) as im:
         assert im.n_frames == 12 and im.size[0] >= 800
+
+
+@pytest.mark.parametrize("name,words", [("tipper_cylinder", "crank angle"),
+                                        ("ellipse_trammel", "place of block A")])
+def test_the_slider_is_labelled_with_what_the_frames_step_through(name, words):
+    """The page's slider says what it moves: the crank angle, or a driving block's place."""
+    fr = frames(load_scene(ROOT / "worked_problems" / f"{name}.toml"), 12)
+    label = re.search(r'<label for="angle">(.*?)</label>', page_html(fr)).group(1)
+    assert label == words

@@ -133,12 +133,12 @@ def page_html(fr: Frames, *, verdicts=None, answers_title: str = "") -> str:
         "scales grow with them)"
     figs = []
     for s in d["scales"]:
-        name = s["diagram"]
-        figs.append(f'<figure><figcaption>{escape(_CAPTION[name])}: <b class="scale" '
-                    f'id="scale-{name}">{escape(s["text"])}</b></figcaption>'
-                    f'<svg class="diagram" id="{name}" '
+        diagram = s["diagram"]
+        figs.append(f'<figure><figcaption>{escape(_CAPTION[diagram])}: <b class="scale" '
+                    f'id="scale-{diagram}">{escape(s["text"])}</b></figcaption>'
+                    f'<svg class="diagram" id="{diagram}" '
                     f'role="img" '
-                    f'aria-label="{name} diagram"></svg></figure>')
+                    f'aria-label="{diagram} diagram"></svg></figure>')
     notes = "".join(f"<li>{escape(n)}</li>" for n in fr.res.notes)
     check = ""
     if verdicts:
