@@ -41,7 +41,7 @@ ROOT = HERE.parent
 sys.path.insert(0, str(HERE))
 
 import methods as M  # noqa: E402
-from polygon_method.errors import PolygonMethodError  # noqa: E402
+from polygon_method.common.errors import PolygonMethodError  # noqa: E402
 from polygon_method.scene import load_scene, parse_scene  # noqa: E402
 
 REFUSED = 10.0  # where a refusal is drawn (errors are never that large)
@@ -108,8 +108,8 @@ def methods_for(scene, quick, peer_fns):
 def sweep_per_position(scene, n):
     """The production kernels on a whole sweep (numpy): time per position."""
     import numpy as np
-    from polygon_method.compiler import compile_plan
-    from polygon_method.plan import Context
+    from polygon_method.solver.compiler import compile_plan
+    from polygon_method.solver.plan import Context
 
     plan = compile_plan(scene)
     inp = scene.input
@@ -325,8 +325,8 @@ def singular(quick, drawings, peer_fns):
                 except Exception:  # noqa: BLE001 (any failure of a method: refused)
                     series.setdefault(name, []).append((x, REFUSED, True))
             try:  # the bound the tool states for its own answer, next to its error
-                from polygon_method.errorbound import error_bounds
-                from polygon_method.solution import solve
+                from polygon_method.solver.errorbound import error_bounds
+                from polygon_method.motion.solution import solve
                 b = float(error_bounds(solve(scene)).worst)
                 series.setdefault(BOUND, []).append((x, b, False))
             except PolygonMethodError:

@@ -288,9 +288,9 @@ def _scale_links(text, rng):
 def _worst(text, kind):
     """The smallest condition among the steps of ``kind`` (or of every step) at the
     scene's own angle; None where it does not solve."""
-    from polygon_method.errors import PolygonMethodError
+    from polygon_method.common.errors import PolygonMethodError
     from polygon_method.scene import parse_scene
-    from polygon_method.solution import solve
+    from polygon_method.motion.solution import solve
     try:
         sol = solve(parse_scene(text))
     except PolygonMethodError:

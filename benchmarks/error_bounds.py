@@ -42,10 +42,10 @@ ROOT = HERE.parent
 sys.path.insert(0, str(HERE))
 
 from near_singular import FAMILIES, make  # noqa: E402
-from polygon_method.errorbound import error_bounds, scales  # noqa: E402
-from polygon_method.errors import PolygonMethodError  # noqa: E402
+from polygon_method.solver.errorbound import error_bounds, scales  # noqa: E402
+from polygon_method.common.errors import PolygonMethodError  # noqa: E402
 from polygon_method.scene import parse_scene  # noqa: E402
-from polygon_method.solution import solve  # noqa: E402
+from polygon_method.motion.solution import solve  # noqa: E402
 
 #: digits of the reference: the worst amplification near the refusal band is 1/c^3 = 1e9
 #: (nine digits lost of the reference's too), and errors of 1e-16 are to be measured

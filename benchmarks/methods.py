@@ -51,9 +51,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from polygon_method.errors import AssemblyError, PolygonMethodError, SingularStepError
-from polygon_method.compiler import compile_plan
-from polygon_method.plan import Carried, Context, Crank, Dyad, SliderDyad, SlottedLink
+from polygon_method.common.errors import AssemblyError, PolygonMethodError, SingularStepError
+from polygon_method.solver.compiler import compile_plan
+from polygon_method.solver.plan import Carried, Context, Crank, Dyad, SliderDyad, SlottedLink
 from polygon_method.scene import FixedPath, Scene
 
 __all__ = ["Kinematics", "METHODS", "production", "shapely_polygons", "algebraic_fourbar",
@@ -110,7 +110,7 @@ def _cross(a, b):
 
 def production(scene: Scene) -> Kinematics:
     """The plan's polygon construction (:func:`polygon_method.solve`)."""
-    from polygon_method.solution import solve
+    from polygon_method.motion.solution import solve
 
     sol = solve(scene)
     S = {k: (v[0], v[1]) for k, v in sol.S.items()}

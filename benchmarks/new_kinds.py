@@ -116,8 +116,8 @@ def step_costs(repeat=7, number=2000):
     import timeit
     from pathlib import Path
     from polygon_method import load_scene
-    from polygon_method.compiler import compile_plan
-    from polygon_method.plan import Context
+    from polygon_method.solver.compiler import compile_plan
+    from polygon_method.solver.plan import Context
     here = Path(__file__).resolve().parents[1] / "tests" / "textbook"
 
     def cost(scene, kind):

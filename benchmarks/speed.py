@@ -91,7 +91,7 @@ speed = "20 rad/s ccw"
 
 def bench_single(repeat):
     from polygon_method import load_scene, parse_scene, solve
-    from polygon_method import compiler as plan_module
+    from polygon_method.solver import compiler as plan_module
     from polygon_method.scene.reading import toml_table
 
     scene = load_scene(IMAGE_POINTS)
@@ -168,8 +168,8 @@ def bench_cycle(repeat):
     import numpy as np
 
     from polygon_method import load_scene
-    from polygon_method.sweeps import sweep
-    from polygon_method.tracking import Sweeper
+    from polygon_method.motion.sweeps import sweep
+    from polygon_method.solver.tracking import Sweeper
 
     out = {}
     g = load_scene(GRASHOF)
@@ -196,8 +196,8 @@ MILLION_SWEEP = """
 import json, math, resource, time
 import numpy as np
 from polygon_method import load_scene
-from polygon_method.sweeps import sweep
-from polygon_method.summary import summarize
+from polygon_method.motion.sweeps import sweep
+from polygon_method.linkage.summary import summarize
 scene = load_scene({path!r})
 th = np.linspace(0.0, 2 * math.pi, 1_000_000, endpoint=False)
 {fn}(scene, th[:3600])  # plan and domain cached, as after loading

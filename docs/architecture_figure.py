@@ -13,24 +13,17 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 OUT = ROOT / "docs" / "images" / "architecture.svg"
 
-WORDS = {  # what each layer is for (the contract names the modules)
+WORDS = {  # what each layer is for (the contract names the folders)
     0: "command line: parses, reads files, prints, writes",
     1: "the page and the animations: a whole cycle",
-    2: "views",
-    3: "views they share",
-    4: "the forces in words",
-    5: "what each step draws",
-    6: "results: one solve, a sweep",
-    7: "the force analysis: inertia, pin forces, driving torque",
-    8: "rubbing, torque, transmission; centres; error bounds",
-    9: "following the branch over the cycle",
-    10: "the motion record; compiling a scene into a plan",
-    11: "the input given otherwise: the crank's speed and angle found",
-    12: "the plan: topology + branches; dimensions are inputs",
-    13: "one module per construction kind",
-    14: "the scene: records and the reader",
-    15: "units, how numbers are written",
-    16: "one error family",
+    2: "views: checking answers, drawings and plots, variants",
+    3: "the solution in words: report, step table, forces, centres",
+    4: "a cycle's shape; each polygon and its scale",
+    5: "the motion records: one solve, a sweep",
+    6: "plan, motion, branch, bounds, centres; forces",
+    7: "one module per construction kind",
+    8: "the scene: records and the reader",
+    9: "errors, units, how numbers are written",
 }
 
 

@@ -19,12 +19,17 @@
 '5.1502'
 """
 
-from .errors import (AssemblyError, MobilityError, PolygonMethodError, SceneError,
-                     SingularStepError)
-from .compiler import compile_plan
-from .plan import Plan
+import importlib
+import importlib.abc
+import importlib.util
+import sys
+
+from .common.errors import (AssemblyError, MobilityError, PolygonMethodError, SceneError,
+                            SingularStepError)
+from .solver.compiler import compile_plan
+from .solver.plan import Plan
 from .scene import Scene, load_scene, parse_scene
-from .solution import Solution, solve
+from .motion.solution import Solution, solve
 
 __version__ = "0.1.0"
 
@@ -44,7 +49,7 @@ def _solution_svg(sol):
 
 def _solution_report(sol) -> str:
     """The solution as text, the way ``polygon-method solve`` prints it."""
-    from .report import solution_text
+    from .text.report import solution_text
     return solution_text(sol)
 
 
@@ -53,8 +58,47 @@ Solution._repr_svg_ = _solution_svg
 Solution.report = _solution_report
 
 
+# Where the modules that once stood at the top of the package live now (one folder per
+# layer, see docs/architecture.md). `import polygon_method.kinematics` and the like keep
+# working: the old name is the same module object as the new one.
+MOVED = {
+    "errors": "common.errors", "units": "common.units", "numbers": "common.numbers",
+    "plan": "solver.plan", "given": "solver.given", "compiler": "solver.compiler",
+    "kinematics": "solver.kinematics", "tracking": "solver.tracking",
+    "errorbound": "solver.errorbound", "derived": "solver.derived", "centres": "solver.centres",
+    "solution": "motion.solution", "sweeps": "motion.sweeps",
+    "constructions": "polygons.constructions", "scales": "polygons.scales",
+    "summary": "linkage.summary", "report": "text.report", "words": "text.words",
+    "steptable": "text.steptable", "forcereport": "text.forces", "centretable": "text.centres",
+    "plots": "draw.plots",
+}
+
+
+class _OldNames(importlib.abc.MetaPathFinder, importlib.abc.Loader):
+    """Finds ``polygon_method.<old name>`` as the module at its new place."""
+
+    def find_spec(self, fullname, path=None, target=None):
+        head, _, rest = fullname.partition(".")
+        if head == __name__ and rest in MOVED:
+            return importlib.util.spec_from_loader(fullname, self)
+        return None
+
+    def create_module(self, spec):
+        module = importlib.import_module(f"{__name__}.{MOVED[spec.name.partition('.')[2]]}")
+        spec.loader_state = module.__spec__
+        return module
+
+    def exec_module(self, module):
+        # the import system stamped the old name's spec on the module: give it its own back
+        module.__spec__ = module.__spec__.loader_state
+
+
+if not any(isinstance(f, _OldNames) for f in sys.meta_path):
+    sys.meta_path.append(_OldNames())
+
+
 def __getattr__(name):  # lazy: sweeps need numpy, which `solve` does not
     if name == "sweep":
-        from .sweeps import sweep
+        from .motion.sweeps import sweep
         return sweep
     raise AttributeError(name)

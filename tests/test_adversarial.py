@@ -14,7 +14,7 @@ import pytest
 
 from polygon_method import load_scene, parse_scene, solve
 from polygon_method.cli import main
-from polygon_method.errors import PolygonMethodError
+from polygon_method.common.errors import PolygonMethodError
 
 FOURBAR = """
 title = "Four-bar for a class"

@@ -10,7 +10,7 @@ import pytest
 
 from polygon_method import load_scene, parse_scene, solve
 from polygon_method.cli import main
-from polygon_method.errors import PolygonMethodError, SceneError
+from polygon_method.common.errors import PolygonMethodError, SceneError
 
 from scenes import FOURBAR
 
@@ -63,7 +63,7 @@ def test_a_long_integer_in_an_answer_file_or_a_variants_range_is_named(tmp_path,
 
 
 def test_parse_quantity_refuses_a_huge_integer_in_its_own_words():
-    from polygon_method.units import parse_quantity
+    from polygon_method.common.units import parse_quantity
     with pytest.raises(SceneError, match="absurd"):
         parse_quantity(10**400, "length", default_unit="mm")
 
@@ -372,7 +372,7 @@ def test_centres_a_rounding_apart_draw_no_line_to_infinity(tmp_path, capsys):
     Kennedy line through them had no direction (a line clipped to infinity: an internal
     error while drawing). The sheet is drawn, with I13 where I14 is."""
     import xml.etree.ElementTree as ET
-    from polygon_method.centres import locate
+    from polygon_method.solver.centres import locate
     ic = locate(solve(parse_scene(SLOTTED_IN_LINE)))
     i13, i14 = ic.centre(1, 3).point, ic.centre(1, 4).point
     assert abs(i13[0] - i14[0]) < 1e-15 and abs(i13[1] - i14[1]) < 1e-15  # O4, by hand
@@ -487,7 +487,7 @@ def test_a_scene_of_thousands_of_points_is_refused_by_its_count(tmp_path, capsys
     """3000 points on one link: a sweep's summary held every point at every refining angle
     at once (gigabytes, killed after minutes)."""
     from polygon_method.scene.reading import MAX_POINTS
-    from polygon_method.tracking import MAX_CYCLE_POINTS
+    from polygon_method.solver.tracking import MAX_CYCLE_POINTS
     with pytest.raises(SceneError, match=f"the scene has {MAX_POINTS + 1} points: at most"):
         parse_scene(_many_points(MAX_POINTS + 1 - 4))  # A, B, C, D and the carried ones
     path = _scene(tmp_path, _many_points(MAX_CYCLE_POINTS + 1 - 4))
@@ -502,7 +502,7 @@ def test_refining_extremes_a_batch_at_a_time_finds_the_same_extremes(monkeypatch
     the batches change nothing: the same extremes, at the same angles, as all at once."""
     import numpy as np
 
-    from polygon_method import summary
+    from polygon_method.linkage import summary
     sc = load_scene(SEED)
     angles = np.radians(np.arange(-100.0, 100.0, 2.0))
     whole = summary.summarize(sc, angles)
@@ -560,7 +560,7 @@ def test_a_plot_of_one_point_or_link_named_twice_draws_one_curve_each(tmp_path):
     import numpy as np
 
     from polygon_method import sweep
-    from polygon_method.plots import plot_figure
+    from polygon_method.draw.plots import plot_figure
     res = sweep(load_scene(SEED), np.radians(np.arange(-90.0, 91.0, 10.0)))
     fig = plot_figure(res, points=("C", "C"), links=("BC", "CB"))
     labels = [ln.get_label() for ax in fig.axes for ln in ax.get_lines()
@@ -579,7 +579,7 @@ def test_a_limit_at_an_undecidable_change_point_names_its_step_once():
     """AD 1e-8 mm shorter than a parallelogram's: at 0 deg the two assemblies meet and
     leave with one velocity, a limit of the sweep. Its words repeated the step's label
     ("step 2 (...): step 2 (...): the two assemblies ...")."""
-    from polygon_method.summary import summarize
+    from polygon_method.linkage.summary import summarize
     text = FOURBAR.replace("D = [100, 0]", "D = [65.99999999, 0]").replace(
         "AB = 50", "AB = 56").replace('"10.5 rad/s cw"', '"10 rad/s ccw"')
     s = summarize(parse_scene(text))
@@ -695,7 +695,7 @@ def test_a_diagrams_extent_is_its_farthest_pair(points):
     import itertools
     import math
 
-    from polygon_method.scales import extent
+    from polygon_method.polygons.scales import extent
     brute = max((math.dist(p, q) for p, q in itertools.combinations(points, 2)), default=0.0)
     assert extent(points) == brute
 
@@ -707,7 +707,7 @@ def test_compiling_a_plate_of_many_points_looks_at_each_a_few_times(monkeypatch)
     anything was solved). The plan is the same: the points in the scene's order."""
     import heapq
 
-    from polygon_method import compiler
+    from polygon_method.solver import compiler
     pushes = []
     real = heapq.heappush
     monkeypatch.setattr(compiler.heapq, "heappush",

@@ -16,7 +16,7 @@ import pytest
 
 from polygon_method import parse_scene, solve
 from polygon_method.cli import main
-from polygon_method.errors import SceneError
+from polygon_method.common.errors import SceneError
 from scenes import seed
 
 ROOT = Path(__file__).resolve().parent.parent

@@ -14,8 +14,8 @@ import numpy as np
 import pytest
 
 from polygon_method import parse_scene, solve
-from polygon_method.kinematics import evaluate
-from polygon_method.compiler import compile_plan
+from polygon_method.solver.kinematics import evaluate
+from polygon_method.solver.compiler import compile_plan
 from scenes import seed
 
 PACKAGE = Path(__file__).resolve().parent.parent / "polygon_method"
@@ -175,12 +175,12 @@ def test_a_new_step_kind_is_one_module_and_one_line(monkeypatch):
     the drawings and checking answers work without a change anywhere else."""
     from dataclasses import dataclass
 
-    from polygon_method import compiler as plan_module
+    from polygon_method.solver import compiler as plan_module
     from polygon_method.check import check_answers
     from polygon_method.draw import render
     from polygon_method.scene import parse_answers
     from polygon_method.steps import TIERS, dyad
-    from polygon_method.steptable import steps_text
+    from polygon_method.text.steptable import steps_text
 
     @dataclass(frozen=True)
     class Elbow(dyad.Dyad):
@@ -223,7 +223,7 @@ def test_one_instant_path_is_the_phased_path_to_the_last_bit(path):
     dimensions runs all positions, then all velocities, then all accelerations. The two
     call the same formulas, so every number is the same to the last bit."""
     from polygon_method import load_scene
-    from polygon_method.plan import Context
+    from polygon_method.solver.plan import Context
 
     scene = load_scene(path)
     sol = solve(scene)
@@ -237,8 +237,8 @@ def test_one_instant_path_is_the_phased_path_to_the_last_bit(path):
 
 def test_one_instant_path_refuses_a_singular_step_as_the_phased_path_does():
     """At a toggle (condition below the refusal band) both paths raise the same error."""
-    from polygon_method.errors import SingularStepError
-    from polygon_method.plan import Context
+    from polygon_method.common.errors import SingularStepError
+    from polygon_method.solver.plan import Context
 
     # crank AB along AD: B = (50, 0), |BD| = 50 and BC + |BD| = CD, so C lies on the line BD
     sc = parse_scene(FOURBAR.replace("angle = 60", "angle = 0").replace("CD = 56", "CD = 116"))
@@ -259,9 +259,9 @@ def test_records_filled_in_place_have_every_field_their_constructor_sets():
     """``Plan.instant``, ``solve`` and ``derived.pin_records`` fill their State, Solution
     and PinRubbing records in place (no ``__init__`` call): every slot is set, to what the
     constructor would give."""
-    from polygon_method.derived import PinRubbing, pin_records
-    from polygon_method.plan import Context, State
-    from polygon_method.solution import Solution
+    from polygon_method.solver.derived import PinRubbing, pin_records
+    from polygon_method.solver.plan import Context, State
+    from polygon_method.motion.solution import Solution
 
     sc = parse_scene(FOURBAR + "\n[pins]\nB = { radius = 40 }\nC = { radius = 25 }\n")
     sol = solve(sc)
@@ -327,3 +327,32 @@ def test_the_step_contract_is_checked_when_a_kind_is_defined():
             for name in base.REQUIRED:
                 assert any(name in vars(c) for c in k.__mro__[:-1] if c is not base.Step), \
                     (k.__name__, name)
+
+
+def test_the_folders_are_the_layers_of_the_contract():
+    """Every folder of the package is named in the layer contract, no module stands at the
+    top of the package beside them, and the contract names no folder that is not there."""
+    import tomllib
+    root = Path(__file__).resolve().parent.parent
+    cfg = tomllib.loads((root / "pyproject.toml").read_text())["tool"]["importlinter"]
+    named = {m.strip().split(".")[1] for layer in cfg["contracts"][0]["layers"]
+             for m in layer.split("|")}
+    pkg = root / "polygon_method"
+    folders = {p.name for p in pkg.iterdir() if (p / "__init__.py").exists()}
+    flat = sorted(p.name for p in pkg.glob("*.py") if p.name not in ("__init__.py", "__main__.py"))
+    assert flat == []
+    assert folders == named
+
+
+def test_the_old_module_names_still_import_as_the_same_modules():
+    """`import polygon_method.kinematics` (a module that once stood at the top) gives the
+    module at its folder, the very same object, with its own spec."""
+    import importlib
+    import polygon_method
+    for old, new in polygon_method.MOVED.items():
+        a = importlib.import_module(f"polygon_method.{old}")
+        b = importlib.import_module(f"polygon_method.{new}")
+        assert a is b, old
+        assert b.__spec__.name == f"polygon_method.{new}"
+    from polygon_method.solution import solve as old_solve
+    assert old_solve is solve

@@ -13,12 +13,12 @@ from pathlib import Path
 
 import pytest
 
-from polygon_method import errors
+from polygon_method.common import errors
 from polygon_method.cli import main
-from polygon_method.errors import (AssemblyError, MobilityError, PolygonMethodError,
+from polygon_method.common.errors import (AssemblyError, MobilityError, PolygonMethodError,
                                    SceneError, SingularStepError)
 from polygon_method.scene import load_scene, parse_scene
-from polygon_method.solution import solve
+from polygon_method.motion.solution import solve
 
 HERE = Path(__file__).resolve().parent / "bad_scenes"
 SIDECAR = tomllib.loads((HERE / "_expect.toml").read_text(encoding="utf-8"))

@@ -18,9 +18,9 @@ from mpmath import mpf
 
 from polygon_method import load_scene, parse_scene, solve
 from polygon_method.cli import main
-from polygon_method.compiler import compile_plan
-from polygon_method.plan import Context
-from polygon_method.sweeps import sweep
+from polygon_method.solver.compiler import compile_plan
+from polygon_method.solver.plan import Context
+from polygon_method.motion.sweeps import sweep
 from reference import reference_solution
 
 REL = 1e-9
@@ -338,7 +338,7 @@ def test_velocities_are_the_derivatives_of_the_positions(text):
 
 
 def test_centres_give_the_rod_its_omega(tmp_path, capsys):
-    from polygon_method.centres import locate
+    from polygon_method.solver.centres import locate
     case = CASES[0]
     sol = solve(parse_scene(trammel(*case)))
     ic = locate(sol)

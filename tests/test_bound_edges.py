@@ -20,10 +20,10 @@ import pytest
 
 from edge_families import EDGE_FAMILIES, KIND_FILES, make, reference_scene
 from error_bounds import compare_case, load_reference
-from polygon_method.errors import PolygonMethodError
+from polygon_method.common.errors import PolygonMethodError
 from polygon_method.scene import parse_scene
 from polygon_method.scene.triangle import ROUNDING, apex
-from polygon_method.solution import solve
+from polygon_method.motion.solution import solve
 
 REF = load_reference(40)
 

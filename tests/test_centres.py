@@ -17,7 +17,7 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from polygon_method import PolygonMethodError, load_scene, solve
-from polygon_method.centres import locate
+from polygon_method.solver.centres import locate
 from polygon_method.cli import main
 
 ROOT = Path(__file__).resolve().parent.parent

@@ -12,7 +12,7 @@ import pytest
 from shapely.geometry import LineString, Polygon
 
 from polygon_method import load_scene, solve
-from polygon_method.centres import locate
+from polygon_method.solver.centres import locate
 from polygon_method.draw import render_pages
 from test_draw import CM, SVGNS, Svg
 from test_paper import _check_page, _said
@@ -124,7 +124,7 @@ def test_a_centre_off_the_sheet_says_how_far_and_which_way():
 
 def used_per_cm(svg, sol):
     """The centres diagram's scale, read from its own words on the sheet (SI per cm)."""
-    from polygon_method.scales import parse_scale
+    from polygon_method.polygons.scales import parse_scale
     said = _said(svg, "note-centres-scale")
     value = re.fullmatch(r"1cm=([\d.]+)(\w+)", said)
     return parse_scale(f"1 cm = {value.group(1)} {value.group(2)}").per_cm

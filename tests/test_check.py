@@ -15,8 +15,8 @@ import pytest
 from polygon_method import load_scene, parse_scene, solve
 from polygon_method.check import check_answers
 from polygon_method.cli import main
-from polygon_method.errors import SceneError
-from polygon_method.scales import parse_scale
+from polygon_method.common.errors import SceneError
+from polygon_method.polygons.scales import parse_scale
 from polygon_method.scene import parse_answers
 from scenes import TRANSLATING_COUPLER, seed
 

@@ -15,8 +15,8 @@ import pytest
 
 from polygon_method import parse_scene, solve
 from polygon_method.cli import main
-from polygon_method.compiler import compile_plan
-from polygon_method.plan import Context
+from polygon_method.solver.compiler import compile_plan
+from polygon_method.solver.plan import Context
 from scenes import TRANSLATING_COUPLER, seed
 
 FOURBAR = seed(middle='[points]\nE = { on = "BC", along = 40 }\n'
@@ -484,7 +484,7 @@ def test_parallelogram_coupler_translates_and_reports_say_zero():
     """AB = CD, BC = AD: the coupler translates (omega_BC = 0, closed form) and the rocker
     turns with the crank. Rounding leaves ~1e-13 rad/s in omega_BC: reports show 0 with no
     sense; the JSON keeps the raw number."""
-    from polygon_method.steptable import steps_text
+    from polygon_method.text.steptable import steps_text
 
     scene = parse_scene(TRANSLATING_COUPLER)
     sol = solve(scene)

@@ -18,7 +18,7 @@ from mpmath import mpf, sqrt
 
 from polygon_method import solve
 from polygon_method.cli import main
-from polygon_method.compiler import gruebler
+from polygon_method.solver.compiler import gruebler
 from polygon_method.scene import parse_scene
 from reference import reference_solution
 from scenes import seed
@@ -131,7 +131,7 @@ def test_stroke_limits_are_the_sweeps_limit_positions():
     o = (-1.5, -0.3)
     sc = parse_scene(TIPPER.format(ox=-1500, oy=-300, stroke="stroke = [1000, 1900]",
                                    angle=150, given='vs_OR = "0.1 m/s extending"'))
-    from polygon_method.sweeps import sweep
+    from polygon_method.motion.sweeps import sweep
     sw = sweep(sc, np.radians(np.arange(0.0, 360.0, 5.0)))
     lims = sorted(math.degrees(e.theta) % 360 for e in sw.domain.limits)
     r, s, phi = 0.8, math.hypot(*o), math.atan2(o[1], o[0])
@@ -227,7 +227,7 @@ def test_variants_of_a_given_motion_cannot_vary_the_crank_speed(tmp_path, capsys
 def test_step_table_reads_the_cylinder_omega_off_the_polygon():
     """The step table's omega of the cylinder: the barrel's point under the rod's end over
     the cylinder's length, equal to the reference's omega (four figures, as printed)."""
-    from polygon_method.steptable import steps_text
+    from polygon_method.text.steptable import steps_text
     sc = parse_scene(TIPPER.format(ox=-1500, oy=-300, stroke="", angle=150,
                                    given='speed = "0.2 rad/s cw"'))
     sol = solve(sc)

@@ -21,10 +21,10 @@ from shapely.geometry import LineString, Polygon, box
 
 from polygon_method import parse_scene, solve
 from polygon_method.cli import main
-from polygon_method.constructions import acceleration_constructions, velocity_constructions
+from polygon_method.polygons.constructions import acceleration_constructions, velocity_constructions
 from polygon_method.draw import (choose_scales, drawn_vectors, make_figure, render,
                                  svg_string)
-from polygon_method.scales import parse_scale
+from polygon_method.polygons.scales import parse_scale
 from reference import reference_solution
 from scenes import seed
 
@@ -286,8 +286,8 @@ def test_worked_problem_sheets(path):
     w, h = Svg(text).size_cm()
     assert w <= 29.7  # rows no wider than A4 landscape
     # one diagram, one scale: the sheet states the scales the step table states
-    from polygon_method.scales import diagram_scales
-    from polygon_method.steptable import steps_text
+    from polygon_method.polygons.scales import diagram_scales
+    from polygon_method.text.steptable import steps_text
     stated = [s.text for s in diagram_scales(sol)]
     assert [used[n].text for n in ("configuration", "velocity", "acceleration")] == stated
     table = steps_text(sol)
@@ -413,9 +413,9 @@ def test_drawing_functions_take_an_axes_and_return_their_artists(fourbar):
 def test_single_diagram_uses_the_scale_the_steps_state(path):
     """A student drawing from `steps` and comparing with `draw --diagram X` sees one scale."""
     from polygon_method.draw import DIAGRAMS, layout
-    from polygon_method.scales import diagram_scales
+    from polygon_method.polygons.scales import diagram_scales
     from polygon_method import load_scene
-    from polygon_method.steptable import steps_text
+    from polygon_method.text.steptable import steps_text
 
     sol = solve(load_scene(path))
     text = steps_text(sol)
@@ -466,7 +466,7 @@ def test_a_point_on_a_link_produced_has_its_image_line_produced():
     speed = "10.5 rad/s cw"
     """))
     from polygon_method.draw.diagrams import _polygon
-    from polygon_method.scales import diagram_scales
+    from polygon_method.polygons.scales import diagram_scales
     _, vs, as_ = diagram_scales(sol)
     for phase, scale, D in (("velocity", vs, sol.V), ("acceleration", as_, sol.A)):
         sk = _polygon(sol, scale, phase)
@@ -499,7 +499,7 @@ speed = "10 rad/s ccw"
 def test_a_swivel_block_is_drawn_as_textbooks_draw_it():
     """A block at a fixed swivel: its pivot symbol, the lever's point under it named c1
     (c1'), and the lever's image line a c1 produced to b drawn on both polygons."""
-    from polygon_method.steptable import steps_text
+    from polygon_method.text.steptable import steps_text
     sol = solve(parse_scene(SWIVEL))
     text, _, _ = render(sol, "svg", "all")
     assert 'id="ground-C"' in text

@@ -18,11 +18,11 @@ import pytest
 from error_bounds import compare_case, load_reference, run
 from methods import Kinematics, compare
 from polygon_method.cli import main
-from polygon_method.errorbound import SHOWN, error_bounds
-from polygon_method.errors import SingularStepError
+from polygon_method.solver.errorbound import SHOWN, error_bounds
+from polygon_method.common.errors import SingularStepError
 from polygon_method.scene import parse_scene
-from polygon_method.solution import solve
-from polygon_method.sweeps import sweep
+from polygon_method.motion.solution import solve
+from polygon_method.motion.sweeps import sweep
 from test_stability import (NEAR, parallelogram, parallelogram_guess, reference, slider,
                             slider_guess, toggle, toggle_guess)
 
@@ -209,7 +209,7 @@ def test_worked_problems_within_their_bounds(path):
 def test_sweep_bounds_are_the_solves_bounds(name):
     """The same formulas on arrays: each sample of a sweep has the bounds of a solve at
     that angle."""
-    from polygon_method.kinematics import evaluate
+    from polygon_method.solver.kinematics import evaluate
     from polygon_method.scene import load_scene
     scene = load_scene(str(WORKED[0].parent / f"{name}.toml"))
     angles = [0.3, 1.7, 2.9, 4.4]

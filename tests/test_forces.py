@@ -28,11 +28,11 @@ from pathlib import Path
 import mpmath
 import pytest
 
-from polygon_method.compiler import compile_plan
-from polygon_method.errors import PolygonMethodError, SceneError
+from polygon_method.solver.compiler import compile_plan
+from polygon_method.common.errors import PolygonMethodError, SceneError
 from polygon_method.forces import FRAME, owners
 from polygon_method.scene import FixedPath, load_scene, parse_scene, scene_from_table, scene_table
-from polygon_method.solution import solve
+from polygon_method.motion.solution import solve
 
 ROOT = Path(__file__).resolve().parent.parent
 FILES = sorted(glob.glob(str(ROOT / "worked_problems" / "*.toml"))) + \
@@ -509,8 +509,8 @@ def test_solve_json_and_steps_show_the_forces(capsys):
 def test_every_force_problem_writes_finite_json_and_words(path):
     import json
 
-    from polygon_method.report import solution_text
-    from polygon_method.steptable import steps_text
+    from polygon_method.text.report import solution_text
+    from polygon_method.text.steptable import steps_text
     sol = solve(with_forces(load_scene(path), 7))
     text = json.dumps(sol.to_dict(), allow_nan=False)
     assert '"forces": {' in text
@@ -519,8 +519,8 @@ def test_every_force_problem_writes_finite_json_and_words(path):
 
 
 def test_a_refused_scene_still_shows_its_motion_and_says_why():
-    from polygon_method.report import solution_text
-    from polygon_method.steptable import steps_text
+    from polygon_method.text.report import solution_text
+    from polygon_method.text.steptable import steps_text
     raw = scene_table(load_scene(ROOT / "worked_problems" / "whitworth.toml"))
     raw["masses"] = {"O2-A": {"mass": 2}}
     sol = solve(scene_from_table(raw))
@@ -534,7 +534,7 @@ def test_the_turning_moment_over_a_cycle_in_the_sweep():
     inertia force."""
     import numpy as np
 
-    from polygon_method.sweeps import sweep
+    from polygon_method.motion.sweeps import sweep
     sc = load_scene(ROOT / "worked_problems" / "engine_forces.toml")
     angles = np.radians(np.arange(0.0, 360.0, 7.5))
     res = sweep(sc, angles)
@@ -562,7 +562,7 @@ def test_the_sweep_balances_power_at_every_angle(path):
     import numpy as np
 
     from polygon_method.forces import analyse
-    from polygon_method.sweeps import sweep
+    from polygon_method.motion.sweeps import sweep
     sc = with_forces(load_scene(path), 8)
     res = sweep(sc, np.radians(np.arange(0.0, 360.0, 10.0)))
     assert len(res) >= 9  # every case reaches a part of the turn

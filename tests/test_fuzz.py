@@ -9,7 +9,7 @@ Three generators feed the same checks:
   random link lengths and angles, many of which cannot be assembled or sit at a toggle.
 
 For each: ``parse_scene`` then ``solve`` either succeed or raise a
-:class:`~polygon_method.errors.PolygonMethodError` (never anything else); a solution holds
+:class:`~polygon_method.common.errors.PolygonMethodError` (never anything else); a solution holds
 no NaN or inf anywhere (JSON, text report, answer values, a sweep of the plan) and its
 positions close every loop (each link keeps its length, each slider stays on its path);
 the command line returns 0 or 2, prints one line on stderr for 2, and its ``--json`` is
@@ -41,11 +41,11 @@ from hypothesis import HealthCheck, Phase, given, settings
 from hypothesis import strategies as st
 
 from polygon_method.cli import main
-from polygon_method.errors import TOL, PolygonMethodError
-from polygon_method.compiler import compile_plan
-from polygon_method.plan import Context
+from polygon_method.common.errors import TOL, PolygonMethodError
+from polygon_method.solver.compiler import compile_plan
+from polygon_method.solver.plan import Context
 from polygon_method.scene import FixedPath, parse_scene
-from polygon_method.solution import solve
+from polygon_method.motion.solution import solve
 
 _LONG = "FUZZ_EXAMPLES" in os.environ
 EXAMPLES = int(os.environ.get("FUZZ_EXAMPLES", "40"))

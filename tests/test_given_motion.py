@@ -4,7 +4,7 @@ omega_BC, v_C with their rates), against the 50-digit reference.
 The reference finds the crank's speed on its own: it solves the mechanism at the crank's
 angle with the crank turning at 1 rad/s (mpmath, 50 digits), reads the given quantity per
 rad/s, and solves again at the crank's omega and alpha that give it. It shares nothing with
-``polygon_method.given`` but the scene's data.
+``polygon_method.solver.given`` but the scene's data.
 """
 
 import dataclasses

@@ -10,7 +10,7 @@ import polygon_method as pm
 from polygon_method.page import frames
 from polygon_method.page.data import page_data
 from polygon_method.steps import image_label, image_name, under_label
-from polygon_method.steptable import steps_text
+from polygon_method.text.steptable import steps_text
 
 # a four-bar whose coupler point is named O (the pivots are O1 and O2)
 SCENE = """

@@ -22,7 +22,7 @@ from polygon_method.cli import main
 from polygon_method.page import frames, page_html
 from polygon_method.page.animate import animation
 from polygon_method.page.data import page_data
-from polygon_method.scales import diagram_scales
+from polygon_method.polygons.scales import diagram_scales
 
 ROOT = Path(__file__).resolve().parents[1]
 WORKED = sorted(glob.glob(str(ROOT / "worked_problems" / "*.toml")))
@@ -75,7 +75,7 @@ def test_frames_start_at_the_stated_instant_and_keep_the_step_tables_scales():
     assert math.isclose(fr.res.theta[fr.start], scene.input.angle, abs_tol=1e-15)
     assert [s.text for s in fr.scales] == [s.text for s in diagram_scales(pm.solve(scene))]
     steps = pm.solve(scene)
-    from polygon_method.steptable import steps_text
+    from polygon_method.text.steptable import steps_text
     text = steps_text(steps)
     for s in fr.scales:  # the scales the page states are the ones the step table states
         assert s.text in text

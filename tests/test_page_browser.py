@@ -17,7 +17,7 @@ import pytest
 
 import polygon_method as pm
 from polygon_method.cli import main
-from polygon_method.numbers import fmt
+from polygon_method.common.numbers import fmt
 
 ROOT = Path(__file__).resolve().parents[1]
 SEED = ROOT / "worked_problems" / "fourbar_image_points.toml"

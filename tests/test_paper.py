@@ -18,8 +18,8 @@ from polygon_method import load_scene, solve
 from polygon_method.draw import drawn_vectors, layout, page_files, paginate, render_pages
 from polygon_method.draw.paper import FOOTER, MARGIN, PAPERS, room
 from polygon_method.draw.sheet import _panel_size, write_pages
-from polygon_method.errors import PolygonMethodError
-from polygon_method.scales import diagram_scales
+from polygon_method.common.errors import PolygonMethodError
+from polygon_method.polygons.scales import diagram_scales
 from test_draw import CM, SVGNS, WORKED, XLINK, Svg
 
 ROOT = Path(__file__).resolve().parents[1]

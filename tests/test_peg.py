@@ -16,8 +16,8 @@ from mpmath import atan2, cos, diff, mp, mpf, radians, sin
 from polygon_method import parse_scene, solve
 from polygon_method.check import check_answers
 from polygon_method.cli import main
-from polygon_method.compiler import gruebler
-from polygon_method.errors import MobilityError, SingularStepError
+from polygon_method.solver.compiler import gruebler
+from polygon_method.common.errors import MobilityError, SingularStepError
 from polygon_method.scene import parse_answers
 from reference import reference_solution
 from textbook_corpus import worst_error

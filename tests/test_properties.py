@@ -15,10 +15,10 @@ import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
-from polygon_method.errors import TOL, AssemblyError, SingularStepError
+from polygon_method.common.errors import TOL, AssemblyError, SingularStepError
 from methods import Kinematics, compare
 from polygon_method.scene import parse_scene
-from polygon_method.solution import solve
+from polygon_method.motion.solution import solve
 from reference import reference_solution
 
 REL = 1e-9

@@ -16,11 +16,11 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from polygon_method.errors import TOL
+from polygon_method.common.errors import TOL
 from methods import Kinematics, compare
-from polygon_method.plan import Dyad, SliderDyad, SlottedLink
+from polygon_method.solver.plan import Dyad, SliderDyad, SlottedLink
 from polygon_method.scene import parse_scene
-from polygon_method.solution import solve
+from polygon_method.motion.solution import solve
 from reference import reference_solution
 
 SETTINGS = settings(max_examples=40, deadline=None, derandomize=True, database=None,

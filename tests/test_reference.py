@@ -11,8 +11,8 @@ import mpmath
 import pytest
 from mpmath import mpf
 
-from polygon_method.compiler import compile_plan
-from polygon_method.plan import Context
+from polygon_method.solver.compiler import compile_plan
+from polygon_method.solver.plan import Context
 from polygon_method.scene import parse_scene
 from reference import (constraint_jacobian, constraint_residuals, reference_fourbar_algebraic,
                        reference_positions, reference_slider_crank, reference_solution,

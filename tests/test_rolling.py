@@ -12,9 +12,9 @@ import numpy as np
 import pytest
 
 from polygon_method import load_scene, parse_scene, solve
-from polygon_method.compiler import compile_plan
-from polygon_method.errors import PolygonMethodError
-from polygon_method.kinematics import evaluate
+from polygon_method.solver.compiler import compile_plan
+from polygon_method.common.errors import PolygonMethodError
+from polygon_method.solver.kinematics import evaluate
 from polygon_method.steps import Context
 
 HERE = Path(__file__).resolve().parent

@@ -13,9 +13,9 @@ import pytest
 from reference import reference_solution
 from polygon_method import parse_scene, solve
 from polygon_method.check import check_answers
-from polygon_method.report import solution_text
-from polygon_method.solution import tidied
-from polygon_method.steptable import steps_text
+from polygon_method.text.report import solution_text
+from polygon_method.motion.solution import tidied
+from polygon_method.text.steptable import steps_text
 
 SCENE = """
 units = "mm"

@@ -8,7 +8,7 @@ import pytest
 
 from polygon_method import AssemblyError, SceneError, parse_scene, solve
 from polygon_method.check import check_answers
-from polygon_method.compiler import compile_plan
+from polygon_method.solver.compiler import compile_plan
 from polygon_method.steps import Context
 from polygon_method.scene import parse_answers
 

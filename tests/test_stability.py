@@ -13,10 +13,10 @@ import math
 import pytest
 
 from polygon_method.cli import main
-from polygon_method.errors import TOL, SingularStepError
+from polygon_method.common.errors import TOL, SingularStepError
 from methods import Kinematics, compare
 from polygon_method.scene import parse_scene
-from polygon_method.solution import solve
+from polygon_method.motion.solution import solve
 from reference import reference_solution
 
 FOURBAR = """

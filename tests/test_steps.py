@@ -15,8 +15,8 @@ from hypothesis import strategies as st
 
 from polygon_method import load_scene, parse_scene, solve
 from polygon_method.cli import main
-from polygon_method.scales import choose_scale, diagram_scales, extent, parse_scale
-from polygon_method.steptable import read_off, steps_text
+from polygon_method.polygons.scales import choose_scale, diagram_scales, extent, parse_scale
+from polygon_method.text.steptable import read_off, steps_text
 from scenes import seed
 
 ROOT = Path(__file__).resolve().parent.parent

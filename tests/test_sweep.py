@@ -18,9 +18,9 @@ import pytest
 
 from polygon_method import parse_scene, solve
 from polygon_method.cli import main
-from polygon_method.summary import summarize, summary_of
-from polygon_method.sweeps import sweep
-from polygon_method.tracking import Sweeper
+from polygon_method.linkage.summary import summarize, summary_of
+from polygon_method.motion.sweeps import sweep
+from polygon_method.solver.tracking import Sweeper
 from scenes import NON_GRASHOF, SLOTTED_LEVER as SLOTTED
 
 FOURBAR = """
@@ -340,7 +340,7 @@ def test_the_plot_title_stays_inside_the_figure():
     from pathlib import Path
 
     from polygon_method import load_scene
-    from polygon_method.plots import plot_figure
+    from polygon_method.draw.plots import plot_figure
     sc = load_scene(Path(__file__).resolve().parent.parent / "worked_problems" /
                     "fourbar_image_points.toml")
     fig = plot_figure(sweep(sc))

@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 from polygon_method import SingularStepError, parse_scene, solve
-from polygon_method.summary import summarize
-from polygon_method.sweeps import sweep
+from polygon_method.linkage.summary import summarize
+from polygon_method.motion.sweeps import sweep
 
 PARALLELOGRAM = """
 [ground]

@@ -19,7 +19,7 @@ import pytest
 from reference import reference_slider_crank
 from polygon_method import parse_scene
 from polygon_method.cli import main
-from polygon_method.summary import summarize
+from polygon_method.linkage.summary import summarize
 
 ENGINE = """
 units = "mm"

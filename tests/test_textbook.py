@@ -26,7 +26,7 @@ import pytest
 from mpmath import mpf
 
 from polygon_method import load_scene, solve
-from polygon_method.centres import locate
+from polygon_method.solver.centres import locate
 from polygon_method.scene import FixedPath, GuideSlider
 from reference import reference_positions, reference_solution
 from textbook_corpus import (FILES, HERE, REL, at_angle, turned_cases, guide_direction, other_position,
@@ -233,7 +233,7 @@ def test_turned_where_refused_the_refusal_is_one_line_naming_the_step_and_it_is_
     and is an assembly or singularity refusal (never another fault)."""
     import re
 
-    from polygon_method.errors import AssemblyError, SingularStepError
+    from polygon_method.common.errors import AssemblyError, SingularStepError
     msg = str(exc)
     assert isinstance(exc, (AssemblyError, SingularStepError)), msg
     assert "\n" not in msg and re.search(r"step \d+ \(|\[assembly\] ", msg), msg

@@ -11,10 +11,10 @@ import re
 import pytest
 
 from polygon_method import load_scene, solve
-from polygon_method.centres import locate
-from polygon_method.centretable import centres_text
-from polygon_method.report import solution_text
-from polygon_method.steptable import steps_text
+from polygon_method.solver.centres import locate
+from polygon_method.text.centres import centres_text
+from polygon_method.text.report import solution_text
+from polygon_method.text.steptable import steps_text
 from textbook_corpus import FILES, HERE, NOISE, at_angle, solved, turned, turned_cases
 
 
@@ -62,7 +62,7 @@ def test_default_slotted_end_note_reads_as_english():
 def test_sweep_summary_writes_a_true_zero_as_zero():
     """The rocker's end C stands still at the ends of its swing: the summary's minimum of
     v_C is 0 (it printed 1.18743e-13)."""
-    from polygon_method.summary import summarize
+    from polygon_method.linkage.summary import summarize
     scene = load_scene(HERE / "block_on_coupler.toml")
     text = summarize(scene, [math.radians(5.0 * k) for k in range(72)]).text()
     row = next(ln for ln in text.splitlines() if ln.startswith("v_C "))
@@ -147,7 +147,7 @@ def test_assembly_refusal_names_positions_without_noise():
     """The Whitworth scene's rough position for P does not fit the crank at 90 deg (the
     lever is vertical): the refusal printed P's positions as [5.08699e-15, 120]."""
     from polygon_method import parse_scene
-    from polygon_method.errors import AssemblyError
+    from polygon_method.common.errors import AssemblyError
     with pytest.raises(AssemblyError) as exc:
         solve(parse_scene(at_angle(HERE / "whitworth_180.toml", 90)))
     assert "[0, 120]" in str(exc.value) and "[0, -120]" in str(exc.value)
@@ -231,7 +231,7 @@ def test_point_under_the_block_is_not_labelled_as_a_point_of_the_scene():
     """A slotted lever carrying a point named A1: the lever's point under the block A was
     labelled a1 too (two a1 on the velocity polygon, two a1' on the acceleration one)."""
     from polygon_method import parse_scene
-    from polygon_method.constructions import acceleration_constructions, velocity_constructions
+    from polygon_method.polygons.constructions import acceleration_constructions, velocity_constructions
     text = (HERE / "slotted_lever_270.toml").read_text(encoding="utf-8").replace(
         "[sliders]", '[points]\nA1 = { on = "O1-P", along = 450 }\n\n[sliders]')
     sol = solve(parse_scene(text))
@@ -264,7 +264,7 @@ def test_elliptic_trammel_with_both_sliders_is_refused_as_redundant():
     refusal said "slider C cannot slide (already fixed)", while C does slide; the scene
     with B's slider alone solves, and C stays on the y axis by itself."""
     from polygon_method import parse_scene
-    from polygon_method.errors import MobilityError
+    from polygon_method.common.errors import MobilityError
     text = """
 [ground]
 O = [0, 0]
@@ -320,7 +320,7 @@ def test_sweep_summary_transmission_angle_at_a_change_point_is_zero():
     angle (equal to the crank angle between 0 and 90 deg) is 0 there. The summary gave
     0.0572958 deg, the refusal threshold's value carried by the samples next to it (and
     the linkage command says 0.00)."""
-    from polygon_method.summary import summarize
+    from polygon_method.linkage.summary import summarize
     scene = load_scene(HERE / "coupling_rod_90.toml")
 
     def mu_row(degrees):

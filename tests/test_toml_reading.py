@@ -17,7 +17,7 @@ from pathlib import Path
 import pytest
 
 from polygon_method.cli import main
-from polygon_method.errors import SceneError
+from polygon_method.common.errors import SceneError
 from polygon_method.scene import parse_scene
 from polygon_method.scene import reading
 from polygon_method.scene.reading import LineIndex, toml_lines, toml_table

@@ -20,10 +20,10 @@ import pytest
 from mpmath import mpf
 
 from polygon_method import load_scene, parse_scene, solve
-from polygon_method.compiler import compile_plan
-from polygon_method.errors import AssemblyError
+from polygon_method.solver.compiler import compile_plan
+from polygon_method.common.errors import AssemblyError
 from polygon_method.steps import triad
-from polygon_method.tracking import Sweeper, run_arrays
+from polygon_method.solver.tracking import Sweeper, run_arrays
 from reference import reference_solution
 from textbook_corpus import worst_error
 
@@ -363,7 +363,7 @@ def test_an_angle_beyond_the_triads_limits_is_refused_with_the_range_the_sweep_r
 def test_the_error_bound_holds_near_the_triads_limit(delta):
     """Approaching the limit (the condition falls like the root of the distance) every
     error against the 50-digit reference stays within its bound."""
-    from polygon_method.errorbound import error_bounds
+    from polygon_method.solver.errorbound import error_bounds
     hi = max(math.degrees(lim.theta) for lim in Sweeper(parse_scene(LIMITED)).domain.limits)
     text = LIMITED.replace("angle = 60", f"angle = {hi - delta!r}").replace(
         "B = [100, 80]", "B = [99, 70]")
@@ -386,7 +386,7 @@ def test_the_error_bound_holds_near_the_triads_limit(delta):
 
 
 def test_at_the_limit_the_triad_is_refused_as_singular_with_its_words():
-    from polygon_method.errors import SingularStepError
+    from polygon_method.common.errors import SingularStepError
     hi = max(math.degrees(lim.theta) for lim in Sweeper(parse_scene(LIMITED)).domain.limits)
     text = LIMITED.replace("angle = 60", f"angle = {hi - 1e-9!r}").replace(
         "B = [100, 80]", "B = [99, 70]")

@@ -67,7 +67,7 @@ def test_five_bar_against_reference(a1, a2, w2, acc2, al1):
 
 def test_superposition_adds_up(tmp_path, capsys):
     """The step table's v' (first crank alone) + v'' (second alone) = the solved v."""
-    from polygon_method.steptable import steps_text as step_table
+    from polygon_method.text.steptable import steps_text as step_table
     sc = parse_scene(FIVE_BAR.format(a1=60, a2=120, w2="5 rad/s cw", acc2="", al1=0))
     sol = solve(sc)
     text = step_table(sol)

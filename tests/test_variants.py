@@ -16,8 +16,8 @@ import pytest
 
 from polygon_method import parse_scene, solve
 from polygon_method.cli import main
-from polygon_method.errors import SceneError
-from polygon_method.compiler import compile_plan
+from polygon_method.common.errors import SceneError
+from polygon_method.solver.compiler import compile_plan
 from polygon_method.scene import scene_from_table, scene_table
 from polygon_method.variants import generate, screen
 

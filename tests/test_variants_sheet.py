@@ -7,7 +7,7 @@ import pytest
 
 from polygon_method import parse_scene
 from polygon_method.cli import main
-from polygon_method.numbers import textbook
+from polygon_method.common.numbers import textbook
 from polygon_method.variants import generate
 
 BASE = """
@@ -59,7 +59,7 @@ def test_the_problem_sheet_shows_the_students_figure_true_to_scale(variants):
     student's own BC, not the base's), the axes are as large on the paper as the drawing
     says (1 cm of drawing is 1 cm of A4), and no answer is written on the page."""
     from polygon_method.draw import draw_configuration
-    from polygon_method.scales import parse_scale
+    from polygon_method.polygons.scales import parse_scale
     from polygon_method.variants.papers import PAGE_CM, sheet_pages
 
     figs = list(sheet_pages(variants, figure=draw_configuration))

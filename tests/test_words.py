@@ -9,9 +9,9 @@ from pathlib import Path
 import pytest
 
 import polygon_method as pm
-from polygon_method.numbers import fmt
+from polygon_method.common.numbers import fmt
 from polygon_method.scene import guide_words
-from polygon_method.words import given
+from polygon_method.text.words import given
 
 
 def g(x):  # a datum, unrounded

@@ -9,7 +9,7 @@ import pytest
 
 from polygon_method import parse_scene, solve
 from polygon_method.cli import main
-from polygon_method.compiler import gruebler
+from polygon_method.solver.compiler import gruebler
 
 YOKE = """
 [ground]

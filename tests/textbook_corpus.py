@@ -9,7 +9,7 @@ from pathlib import Path
 from mpmath import mpf
 
 from polygon_method import load_scene, parse_scene, solve
-from polygon_method.errors import PolygonMethodError
+from polygon_method.common.errors import PolygonMethodError
 from polygon_method.scene import FixedPath, GuideSlider
 from reference import reference_solution
 
@@ -126,7 +126,7 @@ def _triad_other(scene, P, X):
     """For a point of a class-III group: its place in the nearest other assembly of the
     group (all of them searched, test_triad checks the search against a brute-force one),
     None if there is none; False for a point no triad finds."""
-    from polygon_method.compiler import compile_plan
+    from polygon_method.solver.compiler import compile_plan
     from polygon_method.steps import triad
     st = next((s for s in compile_plan(scene).steps if s.kind == "triad" and X in s.finds),
               None)

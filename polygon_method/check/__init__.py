@@ -44,8 +44,8 @@ from __future__ import annotations
 
 import math
 
-from ..errors import SceneError
-from ..solution import Solution, tidied
+from ..common.errors import SceneError
+from ..motion.solution import Solution, tidied
 from .centres import centre_verdict
 from .mistakes import _Diagnoser
 from .tolerance import SOURCES, Stated, _Tolerances, answer_tolerance, choose_tolerance

@@ -8,10 +8,10 @@ import math
 import re
 from dataclasses import dataclass, replace
 
-from ..errors import PolygonMethodError
-from ..plan import Context
+from ..common.errors import PolygonMethodError
+from ..solver.plan import Context
 from ..scene import Scene
-from ..solution import Solution, solve
+from ..motion.solution import Solution, solve
 
 
 @dataclass(frozen=True)

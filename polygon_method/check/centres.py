@@ -11,10 +11,10 @@ from __future__ import annotations
 
 import math
 
-from ..centres import locate
-from ..errors import PolygonMethodError, SceneError
-from ..numbers import fmt, quiet
-from ..scales import DRAWING_PRECISION_CM, diagram_scales
+from ..solver.centres import locate
+from ..common.errors import PolygonMethodError, SceneError
+from ..common.numbers import fmt, quiet
+from ..polygons.scales import DRAWING_PRECISION_CM, diagram_scales
 from .verdicts import ROUNDING, Verdict
 
 __all__ = ["centre_verdict"]

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import math
 
-from ..numbers import textbook as _g
+from ..common.numbers import textbook as _g
 from ..steps import under_label
 from .alternatives import _Candidate
 

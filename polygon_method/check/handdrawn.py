@@ -36,10 +36,10 @@ from __future__ import annotations
 import dataclasses
 import math
 
-from ..constructions import acceleration_constructions, velocity_constructions
-from ..derived import input_torque, largest, rubbing_at
-from ..kinematics import evaluate
-from ..scales import diagram_scales
+from ..polygons.constructions import acceleration_constructions, velocity_constructions
+from ..solver.derived import input_torque, largest, rubbing_at
+from ..solver.kinematics import evaluate
+from ..polygons.scales import diagram_scales
 
 __all__ = ["BUILT", "DIVISION_CM", "HandDrawing", "HOW", "LENGTH_CM", "PENCIL_CM",
            "PENCIL_DEG", "SAMPLES"]

@@ -7,12 +7,12 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 
-from ..errors import PolygonMethodError
+from ..common.errors import PolygonMethodError
 from ..forces import analyse, force_value
 from ..scene import GuideSlider, Gravity
-from ..solution import Solution, solve
+from ..motion.solution import Solution, solve
 from ..steps import under_label
-from ..numbers import textbook as _g
+from ..common.numbers import textbook as _g
 from . import confusions, power, slips
 from .alternatives import _DECIMAL, _FACTOR_MISTAKES, _Alternatives, _Candidate, _speed_mistakes
 from .slips import _SLIP_RANK, _slip

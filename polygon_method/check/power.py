@@ -8,8 +8,8 @@ from __future__ import annotations
 import itertools
 import math
 
-from ..numbers import textbook as _g
-from ..numbers import working as _num
+from ..common.numbers import textbook as _g
+from ..common.numbers import working as _num
 from .alternatives import _Candidate, _speed_mistakes
 from .tolerance import _terms
 

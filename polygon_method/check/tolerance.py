@@ -6,11 +6,11 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..errors import PolygonMethodError
-from ..scales import DRAWING_PRECISION_CM, diagram_scales
+from ..common.errors import PolygonMethodError
+from ..polygons.scales import DRAWING_PRECISION_CM, diagram_scales
 from .handdrawn import BUILT, HOW, HandDrawing
 from ..scene import GuideSlider
-from ..solution import Solution
+from ..motion.solution import Solution
 from .verdicts import ROUNDING, UNIT_OF
 
 _SIN30 = 0.5

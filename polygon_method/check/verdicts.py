@@ -6,8 +6,8 @@ import math
 import textwrap
 from dataclasses import dataclass
 
-from ..numbers import textbook as _g
-from ..units import UNITS, implausible
+from ..common.numbers import textbook as _g
+from ..common.units import UNITS, implausible
 
 #: relative error of a value rounded to three significant figures (the floor of every
 #: tolerance)

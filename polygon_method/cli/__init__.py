@@ -17,7 +17,7 @@ import sys
 import unicodedata
 import warnings
 
-from ..errors import PolygonMethodError, printable
+from ..common.errors import PolygonMethodError, printable
 from .classroom import _cmd_check, _cmd_variants
 from .commands import (DEFAULT_FRAMES, _cmd_centres, _cmd_draw, _cmd_linkage, _cmd_page,
                        _cmd_plan, _cmd_solve, _cmd_steps, _cmd_sweep)

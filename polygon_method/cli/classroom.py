@@ -9,7 +9,7 @@ import os
 import re
 from pathlib import Path
 
-from ..errors import PolygonMethodError, SceneError, printable
+from ..common.errors import PolygonMethodError, SceneError, printable
 from .files import check_outputs, write_outputs
 
 
@@ -41,7 +41,7 @@ def _command_line_tolerance(values):
     :class:`~polygon_method.check.Stated`, or None when not given."""
     from ..check import SOURCES, Stated
     from ..scene.tables import decimal_comma
-    from ..units import parse_quantity
+    from ..common.units import parse_quantity
     if not values:
         return None
     relative, absolute = None, []
@@ -162,7 +162,7 @@ class _VariantBook:
         :class:`PolygonMethodError` (that student's row) if it is not there, or if two
         files hold it."""
         from ..check import tolerances
-        from ..solution import solve
+        from ..motion.solution import solve
 
         want = self._names(named)
         hits = [(f, sc) for f, sc in self.index() if not isinstance(sc, Exception)
@@ -285,7 +285,7 @@ def _cmd_check(args) -> int:
     against the variant it names."""
     from ..check import check_answers, choose_tolerance, verdicts_dict, verdicts_text
     from ..scene import load_answers, load_scene
-    from ..solution import solve
+    from ..motion.solution import solve
 
     stated = _command_line_tolerance(getattr(args, "tolerance", None))
     scene = load_scene(args.scene)

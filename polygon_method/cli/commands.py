@@ -8,25 +8,25 @@ import math
 import sys
 from pathlib import Path
 
-from ..errors import PolygonMethodError, SceneError
+from ..common.errors import PolygonMethodError, SceneError
 from .files import check_outputs, write_outputs
 
 
 def _cmd_solve(args) -> int:
     from ..scene import load_scene
-    from ..solution import solve
+    from ..motion.solution import solve
 
     sol = solve(load_scene(args.scene, variants=False))
     if args.json:
         print(json.dumps(sol.to_dict(), indent=2, allow_nan=False))
     else:
-        from ..report import solution_text
+        from ..text.report import solution_text
         print(solution_text(sol))
     return 0
 
 
 def _cmd_plan(args) -> int:
-    from ..compiler import compile_plan
+    from ..solver.compiler import compile_plan
     from ..scene import load_scene
 
     print(compile_plan(load_scene(args.scene, variants=False)))
@@ -35,10 +35,10 @@ def _cmd_plan(args) -> int:
 
 def _cmd_centres(args) -> int:
     """``polygon-method centres SCENE``: the instantaneous centre method."""
-    from ..centres import locate
-    from ..centretable import centres_text
+    from ..solver.centres import locate
+    from ..text.centres import centres_text
     from ..scene import load_scene
-    from ..solution import solve
+    from ..motion.solution import solve
 
     prefix = "" if getattr(args, "centre_labels", "I13") == "13" else "I"
     print(centres_text(locate(solve(load_scene(args.scene, variants=False)), prefix)))
@@ -47,8 +47,8 @@ def _cmd_centres(args) -> int:
 
 def _cmd_steps(args) -> int:
     from ..scene import load_scene
-    from ..solution import solve
-    from ..steptable import steps_text
+    from ..motion.solution import solve
+    from ..text.steptable import steps_text
 
     print(steps_text(solve(load_scene(args.scene, variants=False)), fmt=args.format))
     return 0
@@ -60,7 +60,7 @@ def _cmd_draw(args) -> int:
     written whole or not at all, and not at all when the scene cannot be solved."""
     from ..draw import FORMATS, display_unit, page_files, paper_name, parse_scales, render_pages
     from ..scene import load_scene
-    from ..solution import solve
+    from ..motion.solution import solve
 
     out = Path(args.output)
     fmt = out.suffix.lower().lstrip(".")
@@ -167,7 +167,7 @@ def _cmd_page(args) -> int:
     for w in fr.sol.warnings:
         print(f"warning: {w}", file=sys.stderr)
     write_outputs(targets, [(html, False)])
-    from ..scales import display_unit
+    from ..polygons.scales import display_unit
     cycle = "over a full turn" if fr.full_turn else \
         f"over the block's travel ({fr.limits_text})" if fr.sol.scene.input.block else \
         f"between the limit positions ({fr.limits_text})"
@@ -185,7 +185,7 @@ def _own_variant(named, scene, file):
         return
     own = scene.variant
     if own is None or not (_VariantBook._names(own.id) & _VariantBook._names(named)):
-        from ..errors import printable
+        from ..common.errors import printable
         raise SceneError(f"names variant '{printable(named)}', and this scene is "
                          + (f"variant '{printable(own.id)}'" if own else "not a variant")
                          + ": make the page of that variant's own scene (the file "
@@ -245,7 +245,7 @@ def _requested_angles(args, scene=None):
 def _requested_places(args, scene, ranged):
     """A driving block's places along its guide (m) for a sweep."""
     import numpy as np
-    from ..sweeps import stroke_places
+    from ..motion.sweeps import stroke_places
     uname, u = scene.units, scene.length_unit
     if ranged:
         if args.start is None or args.stop is None or args.step is None:
@@ -273,8 +273,8 @@ def _cmd_sweep(args) -> int:
     [--plot FILE.svg] [--summary]``: print the summary; the CSV and the plot are written by
     ``write_output`` (whole or not at all)."""
     from ..scene import load_scene
-    from ..summary import summarize, summary_of
-    from ..sweeps import sweep
+    from ..linkage.summary import summarize, summary_of
+    from ..motion.sweeps import sweep
 
     plot = getattr(args, "plot", None)
     if plot and not plot.lower().endswith((".svg", ".png", ".pdf")):
@@ -312,7 +312,7 @@ def _cmd_sweep(args) -> int:
     if args.csv:
         outputs.append((res.to_csv(getattr(args, "error_bound", False)), False))
     if plot:
-        from ..plots import plot_bytes
+        from ..draw.plots import plot_bytes
         outputs.append((plot_bytes(res, plot, points=_names(args, "points"),
                                    links=_names(args, "links")), True))
     write_outputs(targets, outputs)

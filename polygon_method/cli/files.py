@@ -10,7 +10,7 @@ import stat
 import tempfile
 from pathlib import Path
 
-from ..errors import PolygonMethodError, printable
+from ..common.errors import PolygonMethodError, printable
 
 __all__ = ["check_outputs", "write_outputs", "write_output"]
 

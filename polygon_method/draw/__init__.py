@@ -1,8 +1,8 @@
 """True-to-scale diagrams: the configuration (space) diagram, the velocity polygon and the
 acceleration polygon, drawn as a student draws them, to a scale a ruler can check.
 
-Everything drawn comes from the :class:`~polygon_method.solution.Solution` and the
-construction records of :mod:`polygon_method.constructions`; nothing here redoes the
+Everything drawn comes from the :class:`~polygon_method.motion.solution.Solution` and the
+construction records of :mod:`polygon_method.polygons.constructions`; nothing here redoes the
 kinematics. Each diagram is laid out in *centimetres of paper*: a quantity ``q`` (SI) is
 drawn ``q / per_cm`` cm long, and the figure is sized so that one unit of the axes is one
 centimetre on the page (figure inches = extent in cm / 2.54, no tight-bbox rescaling).
@@ -47,8 +47,8 @@ True
 
 from __future__ import annotations
 
-from ..constructions import drawn_vectors
-from ..scales import (DIAGRAMS, choose_scales, display_unit, parse_scales)
+from ..polygons.constructions import drawn_vectors
+from ..polygons.scales import (DIAGRAMS, choose_scales, display_unit, parse_scales)
 from .paper import PAPER_NAMES, page_files, paginate, paper_name
 from .sheet import (draw_acceleration, draw_configuration, draw_velocity, layout, make_figure,
                     render, render_pages, svg_string)

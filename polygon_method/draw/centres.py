@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import math
 
-from ..scales import Scale
+from ..polygons.scales import Scale
 from .diagrams import _drive, _mechanism
 from .sketch import _header, _Sketch, _text_size
 from .style import SMALL_PT

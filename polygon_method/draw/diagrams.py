@@ -6,11 +6,11 @@ from __future__ import annotations
 import math
 import re
 
-from ..given import stated
-from ..constructions import (acceleration_constructions, drawn_vectors, image_label,
+from ..solver.given import stated
+from ..polygons.constructions import (acceleration_constructions, drawn_vectors, image_label,
                              velocity_constructions)
-from ..numbers import fmt_angular, in_units
-from ..scales import Scale
+from ..common.numbers import fmt_angular, in_units
+from ..polygons.scales import Scale
 from ..scene import FixedPath
 from .sketch import _header, _Sketch
 from .style import (BAR, BLOCK_CLEAR, BLOCK_MIN, BODY_EDGE, BODY_FACE, DOT_R, IMAGE_FACE,

@@ -15,7 +15,7 @@ two), else one a page.
 >>> paginate([(30.0, 10.0)], "A4")
 Traceback (most recent call last):
 ...
-polygon_method.errors.PolygonMethodError: --paper: panel 1 is 30 x 10 cm: more than A4 holds inside its margins (19.8 x 28 cm, either way round)
+polygon_method.common.errors.PolygonMethodError: --paper: panel 1 is 30 x 10 cm: more than A4 holds inside its margins (19.8 x 28 cm, either way round)
 """
 
 from __future__ import annotations
@@ -23,7 +23,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from itertools import combinations
 
-from ..errors import PolygonMethodError
+from ..common.errors import PolygonMethodError
 
 __all__ = ["PAPERS", "PAPER_NAMES", "FOOTER", "Page", "paper_size", "paper_name", "paginate",
            "room", "fits", "page_files"]

@@ -5,8 +5,8 @@ from __future__ import annotations
 
 import io
 
-from ..errors import PolygonMethodError
-from ..scales import (DIAGRAMS, GAP, KIND_OF_DIAGRAM, MARGIN, SHEET_ALL, choose_scales,
+from ..common.errors import PolygonMethodError
+from ..polygons.scales import (DIAGRAMS, GAP, KIND_OF_DIAGRAM, MARGIN, SHEET_ALL, choose_scales,
                       coarser, diagram_scales, display_unit, parse_scale)
 from .diagrams import _configuration, _polygon, _sketch
 from .paper import FOOTER, MARGIN as PAGE_MARGIN, PAPER_NAMES, PAPERS, fits, paginate, paper_name, room
@@ -91,7 +91,7 @@ def draw_configuration(ax, sol, scale=None) -> list:
     """Draw the configuration (space) diagram on ``ax`` in centimetres of paper: links as
     bars (a link carrying a point as a plate), hatched ground pivots, slider blocks and
     guides, pins at their given sizes, point labels, the crank angle, the scale.
-    ``scale``: a :class:`~polygon_method.scales.Scale`, ``"1 cm = 20 mm"``, or None
+    ``scale``: a :class:`~polygon_method.polygons.scales.Scale`, ``"1 cm = 20 mm"``, or None
     (chosen to fit A4). Returns the artists."""
     return _paint(ax, _configuration(sol, _scale_arg(sol, "configuration", scale)))
 
@@ -188,7 +188,7 @@ def _centres_layout(sol, scales=None, prefix="I", paper=None):
     of ``paper`` holds it, the circle diagram beside it where there is room, else on a page
     of its own; without a paper, until an A4 landscape sheet holds both side by side) and
     the circle diagram (not to scale)."""
-    from ..centres import locate
+    from ..solver.centres import locate
     from .centres import CIRCLE_SMALL, WINDOWS, centres_sketch, circle_sketch
 
     ic = locate(sol, prefix)

@@ -8,7 +8,7 @@ import io
 import math
 from dataclasses import dataclass, field
 
-from ..scales import Scale, display_unit
+from ..polygons.scales import Scale, display_unit
 from .style import (CLEAR, FONT, HEAD_HALF, HEAD_LEN, IMAGE_FACE, LABEL_PT, LINE_STYLE,
                      NOTE_PT, PT_PER_CM, SMALL_PT, STYLE, TITLE_PT)
 

@@ -18,7 +18,7 @@ about the frame's origin).
 
 from __future__ import annotations
 
-from ..errors import PolygonMethodError
+from ..common.errors import PolygonMethodError
 from . import carried, crank, dyad, slider
 from .bodies import Ledger, Singular, centre, cross, gather
 from .records import (FRAME, Forces, ForceStep, GuideForce, Inertia, PinForce, block,
@@ -91,7 +91,7 @@ def owners(scene, plan) -> dict:
 
 def analyse(motion) -> Forces:
     """The :class:`Forces` at the instant of ``motion`` (a solved, one-instant
-    :class:`~polygon_method.kinematics.Motion` of a scene with masses or gravity)."""
+    :class:`~polygon_method.solver.kinematics.Motion` of a scene with masses or gravity)."""
     scene, plan = motion.scene, motion.plan
     own = owners(scene, plan)
     records, led = gather(scene, motion, own)

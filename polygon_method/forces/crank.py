@@ -11,7 +11,7 @@ and its driver turns it with the torque T; every other force on it is known by n
 from __future__ import annotations
 
 from .bodies import cross
-from ..numbers import fmt
+from ..common.numbers import fmt
 from .records import FRAME, ForceStep, PinForce
 
 

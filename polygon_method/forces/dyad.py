@@ -23,7 +23,7 @@ D = (1, 0) and takes it all (the joint's triangle of forces: link 1 carries none
 from __future__ import annotations
 
 from .bodies import Singular, any_zero, cross
-from ..numbers import fmt
+from ..common.numbers import fmt
 from .records import ForceStep, PinForce
 
 

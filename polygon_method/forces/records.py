@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..errors import SceneError
+from ..common.errors import SceneError
 
 FRAME = "frame"
 

@@ -19,7 +19,7 @@ Then ``P = N n + R`` and the link's force balance gives the force on it at B, ``
 from __future__ import annotations
 
 from .bodies import Singular, any_zero, cross
-from ..numbers import fmt
+from ..common.numbers import fmt
 from .records import FRAME, ForceStep, GuideForce, PinForce, block
 
 

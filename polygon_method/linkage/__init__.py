@@ -17,7 +17,7 @@ Mechanisms covered
   ground or sliding on a fixed path, with its stationary positions and time ratio.
 
 Everything over the cycle is found on the scene's own assembly branch (see
-:mod:`polygon_method.tracking`), not on a formula that assumes one.
+:mod:`polygon_method.solver.tracking`), not on a formula that assumes one.
 
 >>> from polygon_method.scene import parse_scene
 >>> g = grashof(50, 66, 56, 100)   # crank, coupler, output, ground

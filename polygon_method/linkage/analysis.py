@@ -9,12 +9,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..derived import transmission_angle
-from ..errors import TOL, SceneError, SingularStepError
-from ..compiler import compile_plan
+from ..solver.derived import transmission_angle
+from ..common.errors import TOL, SceneError, SingularStepError
+from ..solver.compiler import compile_plan
 from ..scene import Scene
-from ..solution import solve
-from ..tracking import TWO_PI
+from ..motion.solution import solve
+from ..solver.tracking import TWO_PI
 from .cycle import _Cycle, stands_still
 from .engine import _engine_lines
 from .shapes import (FourBar, Grashof, _Output, _output_of, four_bar_of, grashof,

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..tracking import TWO_PI, Sweeper, degrees_fn, merge, run_arrays, valid_mask
+from ..solver.tracking import TWO_PI, Sweeper, degrees_fn, merge, run_arrays, valid_mask
 from .shapes import _GRID
 
 

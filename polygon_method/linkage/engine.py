@@ -7,7 +7,7 @@ import math
 import numpy as np
 
 from ..scene import Scene
-from ..tracking import TWO_PI
+from ..solver.tracking import TWO_PI
 from .cycle import _Cycle, stands_still
 from .shapes import SliderCrank, slider_crank_of
 

@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..compiler import compile_plan
+from ..solver.compiler import compile_plan
 from ..scene import FixedPath, Scene
 
 #: relative tolerance of the equality S + L = P + Q (and of equal lengths)

@@ -25,8 +25,8 @@ from html import escape
 import numpy as np
 
 from ..draw.style import BODY_EDGE, STYLE
-from ..errors import SceneError
-from ..scales import DIAGRAMS, display_unit
+from ..common.errors import SceneError
+from ..polygons.scales import DIAGRAMS, display_unit
 from ..steps import image_name
 from .data import diagram_box
 from .frames import Frames, check_frames, need_frames

@@ -16,11 +16,11 @@ import numpy as np
 
 from ..draw.style import (BODY_EDGE, BODY_FACE, HEAD_HALF, HEAD_LEN, IMAGE_FACE, LINE_STYLE,
                           PITCH_STYLE, STYLE)
-from ..errorbound import USELESS
-from ..errors import TOL
-from ..numbers import quiet, sense
-from ..plots import MARKS, SERIES_COLORS
-from ..scales import DIAGRAMS, display_unit
+from ..solver.errorbound import USELESS
+from ..common.errors import TOL
+from ..common.numbers import quiet, sense
+from ..draw.plots import MARKS, SERIES_COLORS
+from ..polygons.scales import DIAGRAMS, display_unit
 from ..scene import Link
 from ..steps import image_name, slot_labels, under_label
 from .frames import Frames, round_sig

@@ -24,11 +24,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import SceneError
-from ..scales import diagram_scales
-from ..solution import solve
-from ..sweeps import sweep
-from ..tracking import Sweeper
+from ..common.errors import SceneError
+from ..polygons.scales import diagram_scales
+from ..motion.solution import solve
+from ..motion.sweeps import sweep
+from ..solver.tracking import Sweeper
 
 __all__ = ["Frames", "frames", "frame_angles", "DEFAULT_FRAMES", "MAX_FRAMES",
            "MAX_PICTURE_FRAMES", "max_frames", "check_frames", "need_frames", "round_sig",
@@ -72,7 +72,7 @@ INSIDE = 0.004
 class Frames:
     """A scene's motion over its cycle, frame by frame.
 
-    ``res`` is the :class:`~polygon_method.sweeps.SweepResult` (its ``theta`` in frame
+    ``res`` is the :class:`~polygon_method.motion.sweeps.SweepResult` (its ``theta`` in frame
     order), ``sol`` the solution at the scene's instant (frame ``start``), ``scales`` the
     (space, velocity, acceleration) scales of the step table, ``full_turn`` whether the crank
     turns fully.

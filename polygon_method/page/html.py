@@ -21,10 +21,10 @@ from importlib.resources import files
 
 from ..check.verdicts import correct_text
 from ..draw.style import BODY_EDGE, BODY_FACE, IMAGE_FACE, LEGEND_NAMES, LINE_STYLE, STYLE
-from ..numbers import fmt
-from ..plots import MARK_NAMES, MARKS
-from ..steptable import steps_blocks
-from ..words import given
+from ..common.numbers import fmt
+from ..draw.plots import MARK_NAMES, MARKS
+from ..text.steptable import steps_blocks
+from ..text.words import given
 from .data import page_data
 from .frames import Frames, need_frames
 

@@ -27,7 +27,7 @@ import numpy as np
 
 from ..draw.style import (BODY_EDGE, BODY_FACE, HEAD_HALF, HEAD_LEN, IMAGE_FACE, LINE_STYLE,
                           PITCH_STYLE, STYLE)
-from ..scales import DIAGRAMS
+from ..polygons.scales import DIAGRAMS
 from .data import page_data
 from .frames import Frames
 

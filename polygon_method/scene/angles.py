@@ -51,8 +51,8 @@ import math
 import re
 from dataclasses import dataclass
 
-from ..errors import SceneError
-from ..units import UNITS
+from ..common.errors import SceneError
+from ..common.units import UNITS
 
 __all__ = ["BookAngle", "Slip", "read_angle", "is_book_form", "dead_centres", "side_along",
            "candidates", "EXAMPLES"]

@@ -9,8 +9,8 @@ from __future__ import annotations
 import math
 import re
 
-from ..errors import SceneError, printable
-from ..units import UNITS
+from ..common.errors import SceneError, printable
+from ..common.units import UNITS
 from .angles import candidates, is_book_form
 from .records import (GIVEN_KINDS, INPUT_KEYS, FixedPath, GivenRate, Input, PositionGiven,
                       split_name)

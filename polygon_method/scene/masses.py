@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 
-from ..units import did_you_mean
+from ..common.units import did_you_mean
 from .records import Gravity, Mass, split_name
 from .tables import _unit_at
 

@@ -16,8 +16,8 @@ try:  # a compiled TOML reader: a scene in a twentieth of tomllib's time
 except ImportError:  # pragma: no cover - the pure-Python reader does it all, slower
     _fast_toml = None
 
-from ..errors import PolygonMethodError, SceneError, printable
-from ..units import LENGTH_UNITS, UNITS, parse_quantity
+from ..common.errors import PolygonMethodError, SceneError, printable
+from ..common.units import LENGTH_UNITS, UNITS, parse_quantity
 from .rolling import read_rolling
 from .records import (_ABSURD_LONG, _ABSURD_SHORT, _POINT_ONLY, _UNIT_ORDER, TOP_KEYS, FixedPath,
                       GuideSlider, Link, Scene, split_name)

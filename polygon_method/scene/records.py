@@ -10,8 +10,8 @@ import math
 import re
 from dataclasses import dataclass, field
 
-from ..errors import SceneError
-from ..units import ABSURD, TINY, UNITS
+from ..common.errors import SceneError
+from ..common.units import ABSURD, TINY, UNITS
 
 POINT_NAME = re.compile(r"[A-Z][0-9]*")
 _POINT_ONLY = re.compile(r"^[A-Z][0-9]*\Z")  # \Z: "A\n" is no point name

@@ -7,8 +7,8 @@ from __future__ import annotations
 import math
 import re
 
-from ..errors import SceneError, printable
-from ..units import UNITS, did_you_mean
+from ..common.errors import SceneError, printable
+from ..common.units import UNITS, did_you_mean
 from .angles import read_angle
 from .triangle import apex
 from .records import (ANSWER_KINDS, UNDER_BLOCK_KINDS, Answer, CarriedPoint, Cylinder, guide_words,
@@ -597,7 +597,7 @@ class _Tables:
                     best = k
                     break
         if best is None:
-            from ..units import suggest
+            from ..common.units import suggest
             best = suggest(key, keys)
         return f" (did you mean '{best}'?)" if best is not None and best != written else ""
 

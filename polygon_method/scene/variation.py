@@ -15,7 +15,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..errors import SceneError
+from ..common.errors import SceneError
 from .records import split_name
 
 __all__ = ["Varied", "Variation", "VariantOf", "DEFAULT_MIN_CONDITION", "MAX_VALUES"]

@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..errors import TOL, AssemblyError, SingularStepError
+from ..common.errors import TOL, AssemblyError, SingularStepError
 from .rounding import two_lines
 
 __all__ = ["REQUIRED", "OPTIONAL", "Context", "State", "Step", "Vector", "DirectionLine", "Construction",
@@ -269,7 +269,7 @@ class Step:
         """(eP, eV, eA, eW, eAl): the relative error bounds of what this step finds (its
         points' positions, velocities, accelerations; its links' omegas and alphas), from
         the largest bounds of what it reads (``p_in, v_in, a_in``) and its own rounding
-        ``k``. ``walk`` (:mod:`polygon_method.errorbound`) holds the motion, the sizes the
+        ``k``. ``walk`` (:mod:`polygon_method.solver.errorbound`) holds the motion, the sizes the
         bounds are relative to (``walk.sizes``, ``walk.ratio``) and the step's condition
         (``walk.condition(step)``). By default: two direction lines (:mod:`.rounding`)."""
         return two_lines(walk.condition(self), walk.ratio, k, p_in, v_in, a_in)

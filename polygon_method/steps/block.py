@@ -18,7 +18,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..numbers import in_units
+from ..common.numbers import in_units
 from ..scene import FixedPath
 from .base import Construction, Step, absolute, image_label
 from .rounding import EPS, vhypot

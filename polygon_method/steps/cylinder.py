@@ -22,8 +22,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..errors import TOL, AssemblyError, SingularStepError
-from ..numbers import in_units
+from ..common.errors import TOL, AssemblyError, SingularStepError
+from ..common.numbers import in_units
 from .base import (Construction, DirectionLine, Step, Vector, add, image_label, perp,
                    pole_text, sub, unit)
 from .rounding import EPS, vhypot, vmax

@@ -23,8 +23,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..errors import TOL, AssemblyError, SingularStepError
-from ..numbers import in_units, quiet
+from ..common.errors import TOL, AssemblyError, SingularStepError
+from ..common.numbers import in_units, quiet
 from ..scene import split_name
 from .rounding import C_FLOOR, turning, vhypot, vmax, vmin
 from .base import (Construction, DirectionLine, Step, Vector, absolute, centripetal,

@@ -31,7 +31,7 @@ import math
 from dataclasses import dataclass
 
 from .relations import coriolis
-from ..errors import TOL, SingularStepError
+from ..common.errors import TOL, SingularStepError
 from ..scene import FixedPath, GuideSlider
 from .base import (Construction, DirectionLine, Step, Vector, absolute, add, image_label,
                    image_name, numbered, pole_text, sub, unit)

@@ -21,8 +21,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..errors import SceneError
-from ..numbers import in_units
+from ..common.errors import SceneError
+from ..common.numbers import in_units
 from .base import Construction, DirectionLine, Step, Vector, absolute, image_label
 
 __all__ = ["RackStep", "rack_rates", "recognise"]

@@ -36,8 +36,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..errors import AssemblyError, SceneError
-from ..numbers import in_units
+from ..common.errors import AssemblyError, SceneError
+from ..common.numbers import in_units
 from .base import (Construction, Step, Vector, absolute, centripetal, image_label, pole_text,
                    relative, sub)
 

@@ -1,9 +1,9 @@
 """How rounding passes through a construction step: the helpers each kind's
 ``error_bound`` uses (for floats or numpy arrays alike, and shared with the layers above:
-``vhypot`` is :func:`polygon_method.kinematics.hypot`, ``largest`` the one of
-:mod:`polygon_method.derived` and :mod:`polygon_method.errorbound`) and the rule of two
+``vhypot`` is :func:`polygon_method.solver.kinematics.hypot`, ``largest`` the one of
+:mod:`polygon_method.solver.derived` and :mod:`polygon_method.solver.errorbound`) and the rule of two
 direction lines that most kinds share. The walk along the plan, the sizes the bounds are relative to and
-the output records are in :mod:`polygon_method.errorbound`.
+the output records are in :mod:`polygon_method.solver.errorbound`.
 
 A step that intersects two direction lines divides by its condition ``c`` (the sine of the
 angle between them), so it multiplies the errors it is given, and the rounding ``k`` it

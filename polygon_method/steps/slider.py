@@ -22,7 +22,7 @@ import math
 from dataclasses import dataclass
 
 from .relations import coriolis
-from ..numbers import in_units
+from ..common.numbers import in_units
 from ..scene import FixedPath, GuideSlider, guide_words
 from .rounding import line_rounding, turning, two_lines, vhypot, vmax
 from .slotted import under_label

@@ -26,7 +26,7 @@ import math
 from dataclasses import dataclass
 
 from .relations import coriolis
-from ..errors import TOL, SingularStepError
+from ..common.errors import TOL, SingularStepError
 from ..scene import GuideSlider
 from .rounding import C_FLOOR, vhypot, vmax
 from .base import (Construction, DirectionLine, Step, Vector, absolute, add, image_label,

@@ -18,8 +18,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..errors import TOL
-from ..numbers import in_units
+from ..common.errors import TOL
+from ..common.numbers import in_units
 from .base import (Construction, DirectionLine, Step, Vector, absolute, centripetal,
                    image_label, perp, pole_text, relative, sub, unit)
 from .rounding import line_rounding

@@ -24,8 +24,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..errors import TOL, SingularStepError
-from ..numbers import in_units
+from ..common.errors import TOL, SingularStepError
+from ..common.numbers import in_units
 from ..scene import YokeSlot, guide_words
 from .base import Construction, DirectionLine, Step, Vector, absolute, image_label
 from .rounding import EPS, line_rounding, two_lines

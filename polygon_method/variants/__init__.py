@@ -31,12 +31,12 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..errors import PolygonMethodError, SceneError, printable
-from ..kinematics import evaluate
+from ..common.errors import PolygonMethodError, SceneError, printable
+from ..solver.kinematics import evaluate
 from ..linkage import four_bar_of, grashof, slider_crank_of, slotted_of
-from ..compiler import compile_plan
+from ..solver.compiler import compile_plan
 from ..scene import Scene, parse_scene, scene_from_table, scene_table
-from ..solution import solve, tidied
+from ..motion.solution import solve, tidied
 from .papers import (answer, answer_key_csv, answer_key_markdown, sheet_markdown, sheet_pdf,
                      summary_text)
 
@@ -99,7 +99,7 @@ def linkage_class(scene: Scene, shape=None) -> str:
         whit = scene.link(crank).length > math.hypot(kx - ox, ky - oy)
         return "slotted lever: " + ("Whitworth (the lever turns fully)" if whit
                                     else "oscillating lever")
-    from ..tracking import Sweeper
+    from ..solver.tracking import Sweeper
     try:
         sw = Sweeper(scene)
         turns = sw.domain.full_turn

@@ -7,8 +7,8 @@ from __future__ import annotations
 import csv
 import io
 
-from ..numbers import fmt, sense
-from ..words import given
+from ..common.numbers import fmt, sense
+from ..text.words import given
 
 
 def answer(sol, q) -> float:
@@ -156,7 +156,7 @@ def _put_figure(fig, top, sol, figure) -> bool:
     height), true to scale: at the step table's scale, or the next round scales where it
     does not fit the room left; False (nothing painted) where the room left is too small
     for it at half the step table's size."""
-    from ..scales import coarser, diagram_scales
+    from ..polygons.scales import coarser, diagram_scales
 
     scale = diagram_scales(sol)[0]
     first = scale.per_cm

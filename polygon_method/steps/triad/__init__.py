@@ -10,8 +10,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from ...errors import AssemblyError
-from ...numbers import in_units
+from ...common.errors import AssemblyError
+from ...common.numbers import in_units
 from ..base import (Construction, DirectionLine, Step, Vector, absolute, image_label, perp,
                     pole_text, relative, sub, unit)
 from ..rounding import two_lines

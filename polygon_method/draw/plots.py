@@ -9,10 +9,10 @@ import textwrap
 
 import numpy as np
 
-from .errors import PolygonMethodError, SceneError
-from .solution import solve
-from .sweeps import SweepResult
-from .tracking import degrees_fn
+from ..common.errors import PolygonMethodError, SceneError
+from ..motion.solution import solve
+from ..motion.sweeps import SweepResult
+from ..solver.tracking import degrees_fn
 
 __all__ = ["plot_bytes", "plot_figure", "typeset", "SERIES_COLORS", "MARKS", "MARK_NAMES"]
 

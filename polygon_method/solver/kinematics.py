@@ -3,12 +3,12 @@
 :class:`Motion` holds positions, velocities and accelerations of every point, omega and
 alpha of every link, the sliding velocity, sliding acceleration and Coriolis component of
 every slider, and the condition of every step: floats for one configuration
-(:func:`polygon_method.solution.solve`), numpy arrays for many (a sweep over crank angles,
+(:func:`polygon_method.motion.solution.solve`), numpy arrays for many (a sweep over crank angles,
 or many mechanisms of one shape). Everything derived (rubbing, torque, transmission
-angle) is computed from it (:mod:`polygon_method.derived`).
+angle) is computed from it (:mod:`polygon_method.solver.derived`).
 
 >>> from polygon_method.scene import parse_scene
->>> from polygon_method.compiler import compile_plan
+>>> from polygon_method.solver.compiler import compile_plan
 >>> sc = parse_scene('''
 ... [ground]
 ... O = [0, 0]
@@ -31,10 +31,10 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from .errors import SceneError
+from ..common.errors import SceneError
 from .plan import Context, Dims, Plan
-from .steps.relations import rigid_acceleration, rigid_velocity
-from .steps.rounding import vhypot as hypot  # |(x, y)| for floats or arrays
+from ..steps.relations import rigid_acceleration, rigid_velocity
+from ..steps.rounding import vhypot as hypot  # |(x, y)| for floats or arrays
 
 __all__ = ["Motion", "evaluate", "hypot"]
 

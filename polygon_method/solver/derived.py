@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 
-from .steps.rounding import largest
+from ..steps.rounding import largest
 
 __all__ = ["PinRubbing", "rubbing_at", "pin_rubbing", "pin_records", "largest", "power_terms", "input_torque", "transmission_angle"]
 

@@ -20,23 +20,23 @@
 
 from __future__ import annotations
 
-from .derived import input_torque as _torque
-from .derived import PinRubbing, pin_records, power_terms
-from .centres import JSON_BODIES, centres_dict, locate
-from .errorbound import NO_BOUND, USELESS, bounds_dict, error_bounds
-from .errors import TOL, PolygonMethodError
-from .kinematics import Motion, hypot
-from .numbers import fmt_angular, quiet, sense  # noqa: F401  (re-exported)
-from .compiler import compile_plan
-from .forces import analyse, force_value, forces_dict
-from .plan import Context
-from .scene import FixedPath, Scene
+from ..solver.derived import input_torque as _torque
+from ..solver.derived import PinRubbing, pin_records, power_terms
+from ..solver.centres import JSON_BODIES, centres_dict, locate
+from ..solver.errorbound import NO_BOUND, USELESS, bounds_dict, error_bounds
+from ..common.errors import TOL, PolygonMethodError
+from ..solver.kinematics import Motion, hypot
+from ..common.numbers import fmt_angular, quiet, sense  # noqa: F401  (re-exported)
+from ..solver.compiler import compile_plan
+from ..forces import analyse, force_value, forces_dict
+from ..solver.plan import Context
+from ..scene import FixedPath, Scene
 
 __all__ = ["solve", "Solution", "PinRubbing", "sense", "fmt_angular"]
 
 _UNSET = object()  # a quantity not yet derived (its value may be None)
 
-#: answer kind -> (its table of :class:`~polygon_method.errorbound.ErrorBounds`, the size
+#: answer kind -> (its table of :class:`~polygon_method.solver.errorbound.ErrorBounds`, the size
 #: that bound is relative to)
 _BOUND_OF = {"v": ("V", "velocity"), "a": ("A", "acceleration"), "omega": ("W", "omega"),
              "alpha": ("Al", "alpha"), "vs": ("S", "velocity"), "as": ("S", "acceleration"),
@@ -44,7 +44,7 @@ _BOUND_OF = {"v": ("V", "velocity"), "a": ("A", "acceleration"), "omega": ("W", 
 
 
 class Solution(Motion):
-    """The :class:`~polygon_method.kinematics.Motion` at the scene's instant (floats, SI),
+    """The :class:`~polygon_method.solver.kinematics.Motion` at the scene's instant (floats, SI),
     with what a textbook asks of it: rubbing, torque, warnings, the JSON contract."""
 
     __slots__ = ("_cache", "ctx", "array")  # ctx, array: what the plan's steps read
@@ -103,7 +103,7 @@ class Solution(Motion):
     def forces(self):
         """The force analysis (:class:`~polygon_method.forces.Forces`) where the scene gives
         masses or gravity, else None. Raises a one-line
-        :class:`~polygon_method.errors.PolygonMethodError` for a plan with a step the force
+        :class:`~polygon_method.common.errors.PolygonMethodError` for a plan with a step the force
         analysis does not cover (see :attr:`forces_refused`)."""
         if not self.scene.has_forces:
             return None
@@ -124,7 +124,7 @@ class Solution(Motion):
     @property
     def error_bounds(self):
         """The estimated error bound of every quantity
-        (:class:`~polygon_method.errorbound.ErrorBounds`: ``P, V, A, W, Al, S``, relative to
+        (:class:`~polygon_method.solver.errorbound.ErrorBounds`: ``P, V, A, W, Al, S``, relative to
         ``scales``; ``worst``), from the conditions of the steps each depends on."""
         return self._get("error_bounds", lambda: error_bounds(self))
 
@@ -411,8 +411,8 @@ def _structural_warnings(sol) -> tuple:
 def solve(scene: Scene) -> Solution:
     """Compile (once per scene content) and evaluate the plan at the scene's crank angle.
 
-    Raises :class:`~polygon_method.errors.AssemblyError` or
-    :class:`~polygon_method.errors.SingularStepError` where the construction fails.
+    Raises :class:`~polygon_method.common.errors.AssemblyError` or
+    :class:`~polygon_method.common.errors.SingularStepError` where the construction fails.
     """
     plan = compile_plan(scene)
     inp = scene.input

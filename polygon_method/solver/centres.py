@@ -49,8 +49,8 @@ import dataclasses
 import math
 from dataclasses import dataclass
 
-from .errors import TOL, SceneError, SingularStepError
-from .scene import FixedPath, GuideSlider, YokeSlot, guide_words
+from ..common.errors import TOL, SceneError, SingularStepError
+from ..scene import FixedPath, GuideSlider, YokeSlot, guide_words
 
 __all__ = ["Centre", "Centres", "locate", "centres_dict", "MAX_BODIES", "JSON_BODIES"]
 

@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import math
 
-from .errorbound import NO_BOUND, SHOWN, USELESS, shown_bounds
-from .forcereport import forces_lines
-from .given import stated
-from .numbers import fmt_angular
-from .solution import Solution, tidied
+from ..solver.errorbound import NO_BOUND, SHOWN, USELESS, shown_bounds
+from .forces import forces_lines
+from ..solver.given import stated
+from ..common.numbers import fmt_angular
+from ..motion.solution import Solution, tidied
 
 __all__ = ["solution_text", "direction_deg"]
 

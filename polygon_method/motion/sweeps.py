@@ -25,15 +25,15 @@ import io
 
 import numpy as np
 
-from .derived import input_torque, largest, pin_rubbing
-from .errorbound import error_bounds
-from .errors import TOL, PolygonMethodError, SceneError
-from .forces import analyse
-from .kinematics import Motion
-from .compiler import compile_plan
-from .scene import Scene
-from .tracking import CHUNK, Domain, Sweeper, _motion, run_arrays, valid_mask
-from .units import ABSURD
+from ..solver.derived import input_torque, largest, pin_rubbing
+from ..solver.errorbound import error_bounds
+from ..common.errors import TOL, PolygonMethodError, SceneError
+from ..forces import analyse
+from ..solver.kinematics import Motion
+from ..solver.compiler import compile_plan
+from ..scene import Scene
+from ..solver.tracking import CHUNK, Domain, Sweeper, _motion, run_arrays, valid_mask
+from ..common.units import ABSURD
 
 __all__ = ["sweep", "SweepResult", "evaluate_all", "angles_ok", "sweep_angles", "stroke_places",
            "CHUNK"]
@@ -44,7 +44,7 @@ __all__ = ["sweep", "SweepResult", "evaluate_all", "angles_ok", "sweep_angles", 
 
 class SweepResult(Motion):
     """Every quantity of ``solve`` as an array over the crank angles the linkage reaches:
-    the :class:`~polygon_method.kinematics.Motion` of a sweep.
+    the :class:`~polygon_method.solver.kinematics.Motion` of a sweep.
 
     ``theta`` holds the requested crank angles (rad, in the order asked) that the crank
     reaches on the scene's branch; the others are counted in ``left_out`` and explained by
@@ -81,13 +81,13 @@ class SweepResult(Motion):
     @property
     def error_bounds(self):
         """The estimated error bound of every quantity at every angle (arrays; see
-        :class:`~polygon_method.errorbound.ErrorBounds`), computed on each call."""
+        :class:`~polygon_method.solver.errorbound.ErrorBounds`), computed on each call."""
         return error_bounds(self)
 
     def columns(self, error_bound=False):
         """(name, unit, array) of every quantity, the CSV's columns in order; with
         ``error_bound``, last, ``err_max``: the largest estimated relative error of any
-        quantity at that angle (:mod:`polygon_method.errorbound`)."""
+        quantity at that angle (:mod:`polygon_method.solver.errorbound`)."""
         sc = self.scene
         cols = ([("theta", "deg", self.degrees)] if sc.input.block is None
                 else [(f"s_{sc.input.block}", "m", self.theta)])  # a block driver's place
@@ -216,7 +216,7 @@ def _patch(fr: Motion, fix: Motion, idx):
 def stroke_places(scene: Scene, n: int = 361):
     """``n`` places of a driving block (m, along its guide), evenly from one end of its
     travel to the other: its stated stroke, both ends included; or, where the mechanism
-    stops assembling (a singular end: :class:`~polygon_method.tracking.Sweeper`), the
+    stops assembling (a singular end: :class:`~polygon_method.solver.tracking.Sweeper`), the
     middles of ``n`` equal parts of its travel."""
     sw = Sweeper(scene)
     dom = sw.domain

@@ -18,8 +18,8 @@ from __future__ import annotations
 
 import math
 
-from .numbers import fmt, sense
-from .scene import guide_words
+from ..common.numbers import fmt, sense
+from ..scene import guide_words
 
 __all__ = ["given"]
 

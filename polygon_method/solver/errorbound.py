@@ -33,7 +33,7 @@ from __future__ import annotations
 
 from .compiler import compile_plan
 from .kinematics import hypot
-from .steps.rounding import C_FLOOR, EPS, largest, vmax
+from ..steps.rounding import C_FLOOR, EPS, largest, vmax
 
 __all__ = ["EPS", "C_FLOOR", "ErrorBounds", "error_bounds", "scales", "bounds_dict",
            "shown_bounds", "SHOWN", "USELESS", "NO_BOUND"]

@@ -29,7 +29,7 @@ from __future__ import annotations
 
 import math
 
-from .steps import Construction, DirectionLine, Vector, image_label
+from ..steps import Construction, DirectionLine, Vector, image_label
 
 __all__ = ["Vector", "DirectionLine", "Construction", "velocity_constructions",
            "acceleration_constructions", "image_label", "drawn_vectors", "PRIORITY"]

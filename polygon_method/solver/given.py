@@ -15,7 +15,7 @@ for a piston): the crank's speed is unbounded, and the step says so with its con
 ``|Y1|`` over its size at the crank's tip (``r`` for a velocity, 1 for an omega).
 
 >>> from polygon_method.scene import parse_scene
->>> from polygon_method.compiler import compile_plan
+>>> from polygon_method.solver.compiler import compile_plan
 >>> sc = parse_scene('''
 ... [ground]
 ... O = [0, 0]
@@ -39,10 +39,10 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 
-from .errors import TOL, SingularStepError
-from .numbers import sense
+from ..common.errors import TOL, SingularStepError
+from ..common.numbers import sense
 from .plan import Context, Plan
-from .scene import GIVEN_KINDS
+from ..scene import GIVEN_KINDS
 
 __all__ = ["resolve", "quantity", "Resolution", "completed", "stated", "working", "held",
            "placing", "place_roots"]

@@ -9,12 +9,12 @@ shape, as floats or numpy arrays, and :meth:`Plan.run` evaluates the steps with 
 that one call evaluates many crank angles or many mechanisms. Each step records, as
 defaults, the dimensions of the scene the plan was compiled from.
 
-:mod:`polygon_method.compiler` makes a plan from a scene. One instant (floats) runs each
+:mod:`polygon_method.solver.compiler` makes a plan from a scene. One instant (floats) runs each
 step's three phases in a row (``bind_instant``); arrays run all positions, then all
 velocities, then all accelerations (``bind``). Both call the same formulas.
 
 >>> from polygon_method.scene import parse_scene
->>> from polygon_method.compiler import compile_plan
+>>> from polygon_method.solver.compiler import compile_plan
 >>> print(compile_plan(parse_scene('''
 ... [ground]
 ... A = [0, 0]
@@ -38,9 +38,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field, replace
 
-from .errors import TOL, PolygonMethodError
-from .scene import FixedPath, GuideSlider, Scene
-from .steps import Carried, Context, Crank, Dyad, SliderDyad, SlottedLink, State
+from ..common.errors import TOL, PolygonMethodError
+from ..scene import FixedPath, GuideSlider, Scene
+from ..steps import Carried, Context, Crank, Dyad, SliderDyad, SlottedLink, State
 
 __all__ = ["Plan", "Dims", "Bodies", "Crank", "Dyad", "SliderDyad", "SlottedLink", "Carried",
            "Context", "State"]
@@ -126,7 +126,7 @@ class Plan:
     pins: tuple = ()
     dims: Dims | None = field(default=None, repr=False, compare=False)
     #: how the crank's speed was found where the scene gives the motion on another
-    #: quantity (a :class:`polygon_method.given.Resolution`), else None
+    #: quantity (a :class:`polygon_method.solver.given.Resolution`), else None
     given: object = field(default=None, repr=False, compare=False)
 
     def __hash__(self):
@@ -170,7 +170,7 @@ class Plan:
         ... angle = 90
         ... speed = "10 rad/s ccw"
         ... ''')
-        >>> from polygon_method.compiler import compile_plan
+        >>> from polygon_method.solver.compiler import compile_plan
         >>> plan = compile_plan(sc)
         >>> [st.title for st in plan.restricted(points=["A"]).steps]
         ['crank OA']

@@ -19,8 +19,8 @@ from dataclasses import dataclass
 from decimal import Decimal
 
 from .constructions import acceleration_constructions, drawn_vectors, velocity_constructions
-from .errors import PolygonMethodError, SceneError
-from .units import UNITS
+from ..common.errors import PolygonMethodError, SceneError
+from ..common.units import UNITS
 
 __all__ = ["Scale", "choose_scale", "parse_scale", "diagram_scales", "choose_scales",
            "parse_scales", "coarser", "finer", "MANTISSAS", "FIT_CM", "SPACE_FIT_CM",

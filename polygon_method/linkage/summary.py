@@ -10,13 +10,13 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .kinematics import Motion
-from .numbers import quiet
-from .scene import FixedPath, Scene
-from .sweeps import (SweepResult, rubbing_arrays, select, torque_array, angles_ok,
+from ..solver.kinematics import Motion
+from ..common.numbers import quiet
+from ..scene import FixedPath, Scene
+from ..motion.sweeps import (SweepResult, rubbing_arrays, select, torque_array, angles_ok,
                      evaluate_all, stroke_places, sweep_angles)
-from .compiler import compile_plan
-from .tracking import (CHUNK, TWO_PI, Sweeper, branch_steps, degrees_fn, fmt_deg, tune_malloc,
+from ..solver.compiler import compile_plan
+from ..solver.tracking import (CHUNK, TWO_PI, Sweeper, branch_steps, degrees_fn, fmt_deg, tune_malloc,
                        valid_mask)
 
 __all__ = ["summarize", "summary_of", "Summary", "Extreme"]
@@ -393,7 +393,7 @@ class _Reducer:
                                  bool(tasks), (nm, 1.0) in unbounded, (nm, -1.0) in unbounded)
                          for nm, u, mx, tmx, mn, tmn, what in rows)
         formulas = ()
-        from .linkage import engine_formula_lines  # an in-line slider crank's, or none
+        from . import engine_formula_lines  # an in-line slider crank's, or none
         formulas = tuple(engine_formula_lines(self.scene, {e.name: e for e in extremes}))
         rng = None
         if not dom.full_turn:

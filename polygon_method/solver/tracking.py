@@ -1,9 +1,9 @@
 """Following the scene's assembly branch over the crank's turn.
 
-The same plan that :func:`~polygon_method.solution.solve` runs for one instant is run
+The same plan that :func:`~polygon_method.motion.solution.solve` runs for one instant is run
 with ``Context(theta_array, omega, alpha, array=True)``: every step's formulas are plain
 arithmetic, so one pass over a chunk of crank angles gives every position, velocity and
-acceleration for all of them (a :class:`~polygon_method.kinematics.Motion` of arrays).
+acceleration for all of them (a :class:`~polygon_method.solver.kinematics.Motion` of arrays).
 
 The assembly branch is the scene's own, followed continuously from the scene's instant
 (the crank speed and acceleration are the scene's at every angle):
@@ -28,12 +28,12 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from .errors import TOL, SceneError, SingularStepError
+from ..common.errors import TOL, SceneError, SingularStepError
 from .kinematics import Motion
 from .compiler import compile_plan
 from .given import held
 from .plan import Context
-from .scene import Scene
+from ..scene import Scene
 
 __all__ = ["Sweeper", "Domain", "LimitPosition", "ChangePoint", "run_arrays", "merge",
            "valid_mask", "degrees_fn", "fmt_deg", "tune_malloc", "TWO_PI", "CHUNK",
@@ -269,7 +269,7 @@ class Sweeper:
                 file=scene.file)
 
     def stated_branch(self) -> None:
-        """Raise as :func:`~polygon_method.solution.solve` does where the scene's own instant
+        """Raise as :func:`~polygon_method.motion.solution.solve` does where the scene's own instant
         is singular (a toggle or a change point, where both assemblies meet): the branch the
         scene states cannot be told there, so a sweep of values does not start from it."""
         self.plan.run(Context(self.theta0, self.omega, self.alpha), upto=0)

@@ -11,8 +11,8 @@ from __future__ import annotations
 
 import math
 
-from .forces import FRAME
-from .numbers import fmt, quiet, sense_word
+from ..forces import FRAME
+from ..common.numbers import fmt, quiet, sense_word
 
 __all__ = ["forces_lines", "force_blocks"]
 

@@ -1,4 +1,4 @@
-"""Compiling a scene: its constraint graph walked into a :class:`~polygon_method.plan.Plan`.
+"""Compiling a scene: its constraint graph walked into a :class:`~polygon_method.solver.plan.Plan`.
 
 The crank is the first step; then, for each point not yet found (in the scene's order),
 each recogniser of :data:`polygon_method.steps.TIERS` is tried in turn. A point is looked
@@ -33,14 +33,14 @@ import math
 import weakref
 from dataclasses import replace
 
-from .errors import AssemblyError, MobilityError, PolygonMethodError, SceneError
+from ..common.errors import AssemblyError, MobilityError, PolygonMethodError, SceneError
 from .given import completed, place_roots, resolve
-from .numbers import in_units, quiet, sense
+from ..common.numbers import in_units, quiet, sense
 from .plan import Bodies, Dims, Plan, _bodies_at
-from .scene import GuideSlider, Scene, key_line
-from .steps import TIERS, Context, Crank, cylinder
-from .steps.block import BlockDriver
-from .steps.second_crank import SecondCrank
+from ..scene import GuideSlider, Scene, key_line
+from ..steps import TIERS, Context, Crank, cylinder
+from ..steps.block import BlockDriver
+from ..steps.second_crank import SecondCrank
 
 __all__ = ["compile_plan", "gruebler"]
 
@@ -101,7 +101,7 @@ def compile_plan(scene: Scene) -> Plan:
 
 def _given(plan):
     """The plan with the crank's omega and alpha found from the scene's given motion
-    (:mod:`polygon_method.given`); the scene's input completed with them (a scene is
+    (:mod:`polygon_method.solver.given`); the scene's input completed with them (a scene is
     complete once compiled: every view reads its crank's speed)."""
     sc = plan.scene
     try:

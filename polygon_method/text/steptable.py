@@ -9,7 +9,7 @@
    accelerations.
 
 Everything is read from the solution and its construction records
-(:mod:`polygon_method.constructions`); no kinematics is recomputed here.
+(:mod:`polygon_method.polygons.constructions`); no kinematics is recomputed here.
 
 >>> from polygon_method import parse_scene, solve
 >>> sol = solve(parse_scene('''
@@ -37,15 +37,15 @@ import re
 import textwrap
 from dataclasses import replace
 
-from .derived import transmission_angle
-from .given import working
-from .numbers import fixed as _fixed, fmt, sense_word
-from .forcereport import force_blocks
-from .constructions import acceleration_constructions, velocity_constructions
-from .scales import DRAWING_PRECISION_CM, diagram_scales, extent
-from .scene import FixedPath, GuideSlider, guide_words, split_name
-from .kinematics import evaluate
-from .solution import Solution, tidied
+from ..solver.derived import transmission_angle
+from ..solver.given import working
+from ..common.numbers import fixed as _fixed, fmt, sense_word
+from .forces import force_blocks
+from ..polygons.constructions import acceleration_constructions, velocity_constructions
+from ..polygons.scales import DRAWING_PRECISION_CM, diagram_scales, extent
+from ..scene import FixedPath, GuideSlider, guide_words, split_name
+from ..solver.kinematics import evaluate
+from ..motion.solution import Solution, tidied
 
 __all__ = ["steps_text", "steps_blocks", "read_off", "fmt", "sense_word"]
 
@@ -59,7 +59,7 @@ def read_off(value: float, scale) -> tuple[float, float]:
     """(length read on the drawing in cm, the value it gives) for a vector of ``value``
     (SI) drawn at ``scale``: the length rounded to the drawing's precision (0.05 cm).
 
-    >>> from polygon_method.scales import parse_scale
+    >>> from polygon_method.polygons.scales import parse_scale
     >>> read_off(0.4005, parse_scale("1 cm = 0.05 m/s"))
     (8.0, 0.4)
     """
@@ -644,7 +644,7 @@ def _acceleration(doc, sol, ascale):
 
 def steps_blocks(sol: Solution) -> _Doc:
     """The hand solution as a document (headings, paragraphs, lists, tables). Rounding
-    noise is written as 0 (:func:`~polygon_method.solution.tidied`)."""
+    noise is written as 0 (:func:`~polygon_method.motion.solution.tidied`)."""
     sol = tidied(sol)
     sc = sol.scene
     space, vscale, ascale = diagram_scales(sol)

@@ -5,7 +5,7 @@ angular-velocity-ratio theorem and the velocities of the points (``polygon-metho
 centres``).
 
 >>> from polygon_method import parse_scene, solve
->>> from polygon_method.centres import locate
+>>> from polygon_method.solver.centres import locate
 >>> sol = solve(parse_scene('''
 ... [ground]
 ... O = [0, 0]
@@ -28,8 +28,8 @@ from __future__ import annotations
 
 import math
 
-from .centres import Centre, Centres
-from .numbers import fmt, fmt_angular, quiet
+from ..solver.centres import Centre, Centres
+from ..common.numbers import fmt, fmt_angular, quiet
 
 __all__ = ["centres_text"]
 
