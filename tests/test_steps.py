@@ -262,3 +262,35 @@ def test_each_construction_states_where_its_lines_cross():
     m = re.search(r"Step 2 \(dyad AB, CB at B\).*?the lines cross at ([0-9.]+) deg",
                   text, re.S)
     assert m and float(m.group(1)) == pytest.approx(acute, abs=0.05)
+
+
+TEXTBOOK = sorted((ROOT / "tests" / "textbook").glob("*.toml"))
+
+
+@pytest.mark.parametrize("path", WORKED + TEXTBOOK, ids=lambda p: p.stem)
+def test_every_construction_line_carries_its_mark_and_runs_as_it_says(path):
+    """Each direction line of every construction states the mark the drawing writes beside
+    it (a structured field: the drawing reads no sentence). Where the mark names a link of
+    two points ("\u22a5 BC", "\u2225 BC"), the line's direction is checked against the
+    configuration: perpendicular or parallel to B->C, to 1e-12."""
+    from polygon_method.polygons.constructions import (acceleration_constructions,
+                                                       velocity_constructions)
+    sol = solve(load_scene(path))
+    n = checked = 0
+    for cons in (velocity_constructions(sol), acceleration_constructions(sol)):
+        for c in cons:
+            for ln in c.lines:
+                n += 1
+                assert ln.mark, (c.title, ln.relation)
+                assert ln.mark[0] in "\u22a5\u2225" or ln.mark.startswith("along"), ln.mark
+                m = re.fullmatch("([\u22a5\u2225]) ([A-Z][0-9]*)([A-Z][0-9]*)", ln.mark)
+                if m and m.group(2) in sol.P and m.group(3) in sol.P:
+                    (x1, y1), (x2, y2) = sol.P[m.group(2)], sol.P[m.group(3)]
+                    L = math.hypot(x2 - x1, y2 - y1)
+                    ux, uy = (x2 - x1) / L, (y2 - y1) / L
+                    dx, dy = ln.direction
+                    off = ux * dx + uy * dy if m.group(1) == "\u22a5" else ux * dy - uy * dx
+                    assert abs(off) <= 1e-12, (ln.mark, off)
+                    checked += 1
+    assert n > 0
+    assert checked > 0 or "yoke" in path.stem  # a yoke's lines are its path and its slot

@@ -516,19 +516,6 @@ def _crank_angle_label(sk, arc):
 
 
 
-_RELATION = [(re.compile(r"^perpendicular to (.+)$"), "\u22a5 {}"),
-             (re.compile(r"^parallel to the path.*$"), "\u2225 path"),
-             (re.compile(r"^parallel to (.+)$"), "\u2225 {}")]
-
-
-def _relation_mark(text: str) -> str:
-    for pat, fmt in _RELATION:
-        m = pat.match(text)
-        if m:
-            return fmt.format(*m.groups())
-    return text
-
-
 _POINT_LABEL = re.compile(r"^[a-z][0-9]*'?$")
 
 
@@ -572,7 +559,7 @@ def _polygon(sol, scale: Scale, phase: str) -> _Sketch:
             color, lw, dashes = LINE_STYLE
             sk.line([a, b], gid=f"{phase}-line-{c.step}-{i}", color=color, lw=lw,
                     dashes=dashes, z=2)
-            marks.append((_relation_mark(ln.relation), [b, a], f"{phase}-mark-{c.step}-{i}"))
+            marks.append((ln.mark or ln.relation, [b, a], f"{phase}-mark-{c.step}-{i}"))
     # vectors
     for n, v in enumerate(vectors):
         color, lw, dashes = STYLE[v.kind]

@@ -404,7 +404,8 @@ class DirectionLine:
     point: tuple
     direction: tuple  # unit vector
     through: str  # label of the point it is drawn through, e.g. "b"
-    relation: str  # "perpendicular to BC", "parallel to the path", ...
+    relation: str  # in words: "perpendicular to BC", "parallel to the path", ...
+    mark: str = ""  # what the drawing writes beside the line: "\u22a5 BC", "\u2225 path"
 
 
 @dataclass(frozen=True)

@@ -234,8 +234,9 @@ class CylinderStep(Step):
         if ph == "velocity":
             V = sol.V
             under = add(V[K], (-w * d[1], w * d[0]))
-            lines = (DirectionLine(V[K], unit(*perp(d)), lab(K), f"perpendicular to {K}{R}"),
-                     DirectionLine(V[R], u, lab(R), f"along the cylinder {self.key}"))
+            lines = (DirectionLine(V[K], unit(*perp(d)), lab(K), f"perpendicular to {K}{R}", mark=f"\u22a5 {K}{R}"),
+                     DirectionLine(V[R], u, lab(R), f"along the cylinder {self.key}",
+                                   mark=f"along the cylinder {self.key}"))
             text = (f"through {pole_text(sol, K, ph)} draw a line perpendicular to {K}{R} (the "
                     f"barrel's point under {R}); through {lab(R)}, one along the cylinder; "
                     f"they meet at {c}: {c}{lab(R)} = {abs(s[0]):.4g} m/s is the rate of "
@@ -260,9 +261,9 @@ class CylinderStep(Step):
                       f"2 omega vs = {math.hypot(*cor):.4g} m/s^2, perpendicular to the "
                       "cylinder")
         lines = (DirectionLine(cen_end, unit(*perp(d)), "the end of the centripetal",
-                               f"perpendicular to {K}{R}"),
+                               f"perpendicular to {K}{R}", mark=f"\u22a5 {K}{R}"),
                  DirectionLine(back, u, "the start of the Coriolis component",
-                               "along the cylinder"))
+                               "along the cylinder", mark="along the cylinder"))
         text = (f"from {pole_text(sol, K, ph)} draw the centripetal of the barrel's point "
                 f"under {R} ({cen.text}) and through its end a line perpendicular to {K}{R}; "
                 f"from {lab(R)} draw the Coriolis component backwards ({corv.text}) and "

@@ -351,8 +351,8 @@ class Dyad(Step):
         d2 = unit(*perp(sub(P[X], P[D])))
         if ph == "velocity":
             V = sol.V
-            lines = (DirectionLine(V[B], d1, lab(B), f"perpendicular to {B}{X}"),
-                     DirectionLine(V[D], d2, lab(D), f"perpendicular to {D}{X}"))
+            lines = (DirectionLine(V[B], d1, lab(B), f"perpendicular to {B}{X}", mark=f"\u22a5 {B}{X}"),
+                     DirectionLine(V[D], d2, lab(D), f"perpendicular to {D}{X}", mark=f"\u22a5 {D}{X}"))
             text = (f"through {pole_text(sol, B, ph)} draw a line perpendicular to {B}{X}; "
                     f"through {pole_text(sol, D, ph)}, one perpendicular to {D}{X}; they meet "
                     f"at {lab(X)}")
@@ -364,9 +364,9 @@ class Dyad(Step):
         c1 = centripetal(sol, X, B, self.link1, ph)
         c2 = centripetal(sol, X, D, self.link2, ph)
         lines = (DirectionLine(c1.end, d1, f"the end of the centripetal of {X}{B}",
-                               f"perpendicular to {B}{X}"),
+                               f"perpendicular to {B}{X}", mark=f"\u22a5 {B}{X}"),
                  DirectionLine(c2.end, d2, f"the end of the centripetal of {X}{D}",
-                               f"perpendicular to {D}{X}"))
+                               f"perpendicular to {D}{X}", mark=f"\u22a5 {D}{X}"))
         text = (f"from {pole_text(sol, B, ph)} draw the centripetal of {X}{B} ({c1.text}), and "
                 f"through its end a line perpendicular to {B}{X}; from {pole_text(sol, D, ph)} "
                 f"draw the centripetal of {X}{D} ({c2.text}), and through its end a line "

@@ -394,7 +394,7 @@ class Peg(Step):
             words = _slot_words(s)
             if isinstance(s, FixedPath):
                 u, start = s.u, (0.0, 0.0)
-                lines.append(DirectionLine(start, u, tl, f"parallel to {words}"))
+                lines.append(DirectionLine(start, u, tl, f"parallel to {words}", mark=f"\u2225 {words}"))
                 parts.append(f"through {tl} (a fixed slot) one parallel to {words}")
                 found.append(Vector(start, D[X], f"{tl}{lab}", "sliding",
                                     f"{'vs' if ph == 'velocity' else 'as'}_{s.key}",
@@ -411,7 +411,7 @@ class Peg(Step):
                                     "relative", f"v of the point of {s.guide} under {X}",
                                     f"omega_{s.guide} x {g1}{X}, perpendicular to {g1}{X}"))
                 named.append((tl, vc))
-                lines.append(DirectionLine(vc, u, tl, f"parallel to {s.guide}"))
+                lines.append(DirectionLine(vc, u, tl, f"parallel to {s.guide}", mark=f"\u2225 {s.guide}"))
                 parts.append(f"from {g_lab} draw {image_label(sol, g1, ph)}{tl} = omega_"
                              f"{s.guide} x {g1}{X} perpendicular to {g1}{X} ({tl}: the point "
                              f"of {s.guide} under the peg) and through {tl} a line parallel "
@@ -430,7 +430,7 @@ class Peg(Step):
                                 f"{math.hypot(*cor):.4g} m/s^2, perpendicular to {s.guide}"))
             named.append((tl, ac))
             lines.append(DirectionLine(end, u, f"the end of the Coriolis component in "
-                                       f"{s.guide}", f"parallel to {s.guide}"))
+                                       f"{s.guide}", f"parallel to {s.guide}", mark=f"\u2225 {s.guide}"))
             parts.append(f"from {g_lab} draw {tl}, the acceleration of the point of {s.guide} "
                          f"under the peg, lay off from {tl} the Coriolis component 2 omega_"
                          f"{s.guide} vs_{s.key} = {math.hypot(*cor):.4g} m/s^2 perpendicular "

@@ -251,6 +251,6 @@ class RackStep(Step):
         found = (absolute(sol, X, D, ph),
                  Vector((0.0, 0.0), D[X], f"{o}{lab}", "sliding", f"{sym}s_{X}",
                         "along the path"))
-        line = DirectionLine((0.0, 0.0), u, o, "parallel to the path")
+        line = DirectionLine((0.0, 0.0), u, o, "parallel to the path", mark="\u2225 path")
         return Construction(self.index, self.title, ph, lab, D[X], (), (line,), found, text,
                             1.0)

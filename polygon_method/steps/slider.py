@@ -344,17 +344,19 @@ class SliderDyad(Step):
             if self.path is not None:
                 u, through, tl = self.path.u, (0.0, 0.0), "o"
                 rel = f"parallel to the path ({self.path.label})"
+                mark = "\u2225 path"
             else:
                 g1 = P[self.g1]
                 u = unit(*sub(P[self.g2], g1))
                 through = guide_point(*g1, x, y, sol.W[self.guide], *V[self.g1])
                 tl = under_label(sol, X, ph)
                 rel = f"parallel to {self.guide}"
+                mark = f"\u2225 {self.guide}"
                 given = (Vector(V[self.g1], through, f"{lab(self.g1)}{tl}", "relative",
                                 f"v of the point of {self.guide} under {X}",
                                 f"omega_{self.guide} x {self.g1}{X}"),)
-            lines = (DirectionLine(V[B], d1, lab(B), f"perpendicular to {B}{X}"),
-                     DirectionLine(through, u, tl, rel))
+            lines = (DirectionLine(V[B], d1, lab(B), f"perpendicular to {B}{X}", mark=f"\u22a5 {B}{X}"),
+                     DirectionLine(through, u, tl, rel, mark=mark))
             text = (f"through {pole_text(sol, B, ph)} draw a line perpendicular to {B}{X}; "
                     f"through {tl}, one {rel}; they meet at {lab(X)}")
             found = (relative(sol, X, B, V, ph), absolute(sol, X, V, ph),
@@ -368,6 +370,7 @@ class SliderDyad(Step):
         if self.path is not None:
             u, through, tl = self.path.u, (0.0, 0.0), "o'"
             rel = f"parallel to the path ({self.path.label})"
+            mark = "\u2225 path"
         else:
             g1 = P[self.g1]
             u = unit(*sub(P[self.g2], g1))
@@ -377,14 +380,15 @@ class SliderDyad(Step):
             through = add(under, cor)
             tl = "the end of the Coriolis component"
             rel = f"parallel to {self.guide}"
+            mark = f"\u2225 {self.guide}"
             given += [Vector(A[self.g1], under, under_label(sol, X, ph), "relative",
                              f"a of the point of {self.guide} under {X}", ""),
                       Vector(under, through, "cor", "coriolis", f"Coriolis at {X}",
                              f"2 omega_{self.guide} vs = "
                              f"{math.hypot(*cor):.4g} m/s^2")]
         lines = (DirectionLine(c1.end, d1, f"the end of the centripetal of {X}{B}",
-                               f"perpendicular to {B}{X}"),
-                 DirectionLine(through, u, tl, rel))
+                               f"perpendicular to {B}{X}", mark=f"\u22a5 {B}{X}"),
+                 DirectionLine(through, u, tl, rel, mark=mark))
         text = (f"from {pole_text(sol, B, ph)} draw the centripetal of {X}{B} ({c1.text}) and "
                 f"through its end a line perpendicular to {B}{X}; through {tl}, one {rel}; "
                 f"they meet at {lab(X)}")

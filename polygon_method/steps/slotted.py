@@ -304,8 +304,8 @@ class SlottedLink(Step):
             V = sol.V
             coincident = add(V[K], (-w * kA[1], w * kA[0]))
             c = under_label(sol, Ab, ph)  # the lever's point under the block (c1 at a swivel C)
-            lines = (DirectionLine(V[K], unit(*perp(kA)), lab(K), f"perpendicular to {K}{Ab}"),
-                     DirectionLine(V[Ab], u, lab(Ab), f"parallel to {self.guide}"))
+            lines = (DirectionLine(V[K], unit(*perp(kA)), lab(K), f"perpendicular to {K}{Ab}", mark=f"\u22a5 {K}{Ab}"),
+                     DirectionLine(V[Ab], u, lab(Ab), f"parallel to {self.guide}", mark=f"\u2225 {self.guide}"))
             text = (f"through {pole_text(sol, K, ph)} draw a line perpendicular to {K}{Ab} (the "
                     f"point of {self.guide} under the block); through {lab(Ab)}, one parallel "
                     f"to {self.guide} (the sliding); they meet at {c}; then {lab(K)}{lab(N)} / "
@@ -334,9 +334,9 @@ class SlottedLink(Step):
                       f"2 omega_{self.guide} vs = {math.hypot(*cor):.4g} m/s^2, perpendicular "
                       f"to {self.guide}")
         lines = (DirectionLine(cen_end, unit(*perp(kA)), "the end of the centripetal",
-                               f"perpendicular to {K}{Ab}"),
+                               f"perpendicular to {K}{Ab}", mark=f"\u22a5 {K}{Ab}"),
                  DirectionLine(back, u, "the start of the Coriolis component",
-                               f"parallel to {self.guide}"))
+                               f"parallel to {self.guide}", mark=f"\u2225 {self.guide}"))
         text = (f"from {pole_text(sol, K, ph)} draw the centripetal of the point of "
                 f"{self.guide} under the block ({cen.text}) and through its end a line "
                 f"perpendicular to {K}{Ab}; from {lab(Ab)} draw the Coriolis component "

@@ -223,8 +223,8 @@ class WheelCentre(Step):
         rel = f"parallel to {self.where} (the centre moves along it)"
         if ph == "velocity":
             V = sol.V
-            lines = (DirectionLine(V[B], d1, lab(B), f"perpendicular to {B}{X}"),
-                     DirectionLine((0.0, 0.0), self.u, o, rel))
+            lines = (DirectionLine(V[B], d1, lab(B), f"perpendicular to {B}{X}", mark=f"\u22a5 {B}{X}"),
+                     DirectionLine((0.0, 0.0), self.u, o, rel, mark=f"\u2225 {self.where}"))
             text = (f"through {pole_text(sol, B, ph)} draw a line perpendicular to {B}{X}; "
                     f"through {o}, one {rel}; they meet at {lab(X)}")
             found = (relative(sol, X, B, V, ph), absolute(sol, X, V, ph))
@@ -233,8 +233,8 @@ class WheelCentre(Step):
         A = sol.A
         c1 = centripetal(sol, X, B, self.link, ph)
         lines = (DirectionLine(c1.end, d1, f"the end of the centripetal of {X}{B}",
-                               f"perpendicular to {B}{X}"),
-                 DirectionLine((0.0, 0.0), self.u, o, rel))
+                               f"perpendicular to {B}{X}", mark=f"\u22a5 {B}{X}"),
+                 DirectionLine((0.0, 0.0), self.u, o, rel, mark=f"\u2225 {self.where}"))
         text = (f"from {pole_text(sol, B, ph)} draw the centripetal of {X}{B} ({c1.text}) and "
                 f"through its end a line perpendicular to {B}{X}; through {o}, one {rel}; "
                 f"they meet at {lab(X)}")

@@ -229,9 +229,9 @@ class Yoke(Step):
         lab, lx = image_label(sol, Y, ph), image_label(sol, X, ph)
         o = "o" if ph == "velocity" else "o'"
         lines = (DirectionLine((0.0, 0.0), self.path.u, o,
-                               f"parallel to the {guide_words(self.path.label)}"),
+                               f"parallel to the {guide_words(self.path.label)}", mark=f"\u2225 the {guide_words(self.path.label)}"),
                  DirectionLine(D[X], self.slot.direction, lx,
-                               f"parallel to the slot ({self.slot.label})"))
+                               f"parallel to the slot ({self.slot.label})", mark=f"\u2225 the slot ({self.slot.label})"))
         what = "velocity" if ph == "velocity" else "acceleration"
         text = (f"the yoke translates: through {o} draw a line parallel to its "
                 f"{guide_words(self.path.label)}; through {lx}, one parallel to its slot "

@@ -522,13 +522,13 @@ class Triad(Step):
                      ref[1] + al * (S[0] - x1) - w * w * (S[1] - y1))
         aux = f"S, where {Ki}{Vi} and {Kj}{Vj} (produced) meet, a point of the {self._plate_words}"
         if ph == "velocity":
-            lines = (DirectionLine(D[Ki], perp_to(Ki, Vi), lab(Ki), f"perpendicular to {Ki}{Vi}"),
-                     DirectionLine(D[Kj], perp_to(Kj, Vj), lab(Kj), f"perpendicular to {Kj}{Vj}"),
+            lines = (DirectionLine(D[Ki], perp_to(Ki, Vi), lab(Ki), f"perpendicular to {Ki}{Vi}", mark=f"\u22a5 {Ki}{Vi}"),
+                     DirectionLine(D[Kj], perp_to(Kj, Vj), lab(Kj), f"perpendicular to {Kj}{Vj}", mark=f"\u22a5 {Kj}{Vj}"),
                      DirectionLine(img_s, unit(*perp(sub(P[Vm], S))), s_lab,
-                                   f"perpendicular to S{Vm}"),
-                     DirectionLine(D[Km], perp_to(Km, Vm), lab(Km), f"perpendicular to {Km}{Vm}"),
-                     DirectionLine(D[Vm], perp_to(Vm, Vi), lab(Vm), f"perpendicular to {Vm}{Vi}"),
-                     DirectionLine(D[Vm], perp_to(Vm, Vj), lab(Vm), f"perpendicular to {Vm}{Vj}"))
+                                   f"perpendicular to S{Vm}", mark=f"\u22a5 S{Vm}"),
+                     DirectionLine(D[Km], perp_to(Km, Vm), lab(Km), f"perpendicular to {Km}{Vm}", mark=f"\u22a5 {Km}{Vm}"),
+                     DirectionLine(D[Vm], perp_to(Vm, Vi), lab(Vm), f"perpendicular to {Vm}{Vi}", mark=f"\u22a5 {Vm}{Vi}"),
+                     DirectionLine(D[Vm], perp_to(Vm, Vj), lab(Vm), f"perpendicular to {Vm}{Vj}", mark=f"\u22a5 {Vm}{Vj}"))
             text = (f"auxiliary point (Goodman): {aux}, moves perpendicular to both lines; "
                     f"through {pole_text(sol, Ki, ph)} draw a line perpendicular to {Ki}{Vi}, "
                     f"through {pole_text(sol, Kj, ph)} one perpendicular to {Kj}{Vj}: they "
@@ -559,21 +559,21 @@ class Triad(Step):
         cmi = cen(D[Vm], Vi, Vm, w, f"{Vi}{Vm}")
         cmj = cen(D[Vm], Vj, Vm, w, f"{Vj}{Vm}")
         lines = (DirectionLine(csi.end, perp_to(Ki, Vi), f"the end of the centripetal of S{Vi}",
-                               f"perpendicular to {Ki}{Vi}"),
+                               f"perpendicular to {Ki}{Vi}", mark=f"\u22a5 {Ki}{Vi}"),
                  DirectionLine(csj.end, perp_to(Kj, Vj), f"the end of the centripetal of S{Vj}",
-                               f"perpendicular to {Kj}{Vj}"),
+                               f"perpendicular to {Kj}{Vj}", mark=f"\u22a5 {Kj}{Vj}"),
                  DirectionLine(cm.end, unit(*perp(sub(P[Vm], S))),
-                               f"the end of the centripetal of {Vm}S", f"perpendicular to S{Vm}"),
+                               f"the end of the centripetal of {Vm}S", f"perpendicular to S{Vm}", mark=f"\u22a5 S{Vm}"),
                  DirectionLine(ck.end, perp_to(Km, Vm), f"the end of the centripetal of {Vm}{Km}",
-                               f"perpendicular to {Km}{Vm}"),
+                               f"perpendicular to {Km}{Vm}", mark=f"\u22a5 {Km}{Vm}"),
                  DirectionLine(cmi.end, perp_to(Vm, Vi), f"the end of the centripetal of {Vi}{Vm}",
-                               f"perpendicular to {Vm}{Vi}"),
+                               f"perpendicular to {Vm}{Vi}", mark=f"\u22a5 {Vm}{Vi}"),
                  DirectionLine(cmj.end, perp_to(Vm, Vj), f"the end of the centripetal of {Vj}{Vm}",
-                               f"perpendicular to {Vm}{Vj}"),
+                               f"perpendicular to {Vm}{Vj}", mark=f"\u22a5 {Vm}{Vj}"),
                  DirectionLine(ci.end, perp_to(Ki, Vi), f"the end of the centripetal of {Vi}{Ki}",
-                               f"perpendicular to {Ki}{Vi}"),
+                               f"perpendicular to {Ki}{Vi}", mark=f"\u22a5 {Ki}{Vi}"),
                  DirectionLine(cj.end, perp_to(Kj, Vj), f"the end of the centripetal of {Vj}{Kj}",
-                               f"perpendicular to {Kj}{Vj}"))
+                               f"perpendicular to {Kj}{Vj}", mark=f"\u22a5 {Kj}{Vj}"))
         text = (f"auxiliary point (Goodman): {aux}; from {pole_text(sol, Ki, ph)} draw the "
                 f"centripetal of {Vi}{Ki} and from its end the centripetal of S{Vi} (both "
                 f"along {Ki}{Vi}), and through the end a line perpendicular to {Ki}{Vi}; the "
