@@ -356,3 +356,34 @@ def test_the_old_module_names_still_import_as_the_same_modules():
         assert b.__spec__.name == f"polygon_method.{new}"
     from polygon_method.solution import solve as old_solve
     assert old_solve is solve
+
+
+def test_every_public_definition_says_what_it_is():
+    """Every public class, function and method of the package has a docstring, except the
+    step contract's members in a step's room: those are said once, in the contract
+    (``steps/base.py``, REQUIRED and OPTIONAL), for every kind."""
+    import ast
+    from polygon_method.steps.base import OPTIONAL, REQUIRED
+    contract = set(REQUIRED) | set(OPTIONAL)
+    root = Path(__file__).resolve().parent.parent / "polygon_method"
+    missing, seen = [], 0
+    for path in sorted(root.rglob("*.py")):
+        tree = ast.parse(path.read_text())
+
+        def walk(node, cls=None):
+            nonlocal seen
+            for n in ast.iter_child_nodes(node):
+                if not isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+                    continue
+                if n.name.startswith("_") or (cls or "").startswith("_"):
+                    continue
+                seen += 1
+                in_room = cls is not None and "steps" in path.parts
+                if not (in_room and n.name in contract) and ast.get_docstring(n) is None:
+                    missing.append(f"{path.relative_to(root)}:{n.lineno} "
+                                   f"{cls + '.' if cls else ''}{n.name}")
+                if isinstance(n, ast.ClassDef):
+                    walk(n, n.name)
+        walk(tree)
+    assert seen > 500
+    assert missing == []

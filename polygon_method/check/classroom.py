@@ -79,6 +79,7 @@ class Row:
 
     @property
     def right(self) -> int:
+        """How many of the file's answers are right."""
         return sum(v.ok for v in self.verdicts)
 
 
@@ -211,6 +212,8 @@ def _inert(cell) -> str:
 
 
 def gradebook_csv(rows) -> str:
+    """The gradebook as CSV: one row per file, a column per answer key (cells that would start a
+    spreadsheet formula made inert)."""
     head, body = _table(rows)
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
@@ -220,6 +223,7 @@ def gradebook_csv(rows) -> str:
 
 
 def gradebook_markdown(rows, book=None) -> str:
+    """The gradebook as a Markdown table: one row per file, a column per answer key."""
     head, body = _table(rows)
 
     def cell(x):

@@ -21,6 +21,9 @@ def _length(sc, x) -> str:
 
 
 def rubbing(d, X):
+    """The known slips in a rubbing velocity at pin ``X``: the diameter taken for the radius, the
+    omegas added where they should be subtracted (or the reverse), and the like; ``(value,
+    mistake)`` pairs for the diagnoser ``d``."""
     sol, sc = d.sol, d.sc
     rub = sol.rubbing[X]
     r = rub.radius
@@ -98,6 +101,9 @@ def rubbing(d, X):
 
 
 def torque(d, signed):
+    """The known slips in the input torque by power balance: a load's power left out or its sign
+    turned, the student's own velocities used; ``(value, mistake)`` pairs (``signed``: the answer
+    gave a sense)."""
     sol, sc = d.sol, d.sc
     w = sc.input.omega
     crank = sc.input.crank

@@ -28,11 +28,13 @@ class Stated:
     source: str = "the answers' tolerance"
 
     def text(self) -> str:
+        """The stated tolerance in words: "5 %, 0.01 m/s"."""
         parts = ([f"{100 * self.relative:g} %"] if self.relative is not None else []) + \
             [t for _, _, t in self.absolute]
         return ", ".join(parts)
 
     def absolute_for(self, unit):
+        """The absolute tolerance stated for ``unit`` and its words, ``(value, text)``, or None."""
         return next(((x, t) for u, x, t in self.absolute if u == unit), None)
 
 

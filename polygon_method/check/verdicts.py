@@ -63,9 +63,11 @@ class Verdict:
 
     @property
     def error_percent(self):
+        """The answer's relative error in per cent, or None when it has none (a missing answer)."""
         return None if self.error is None else 100.0 * self.error
 
     def to_dict(self) -> dict:
+        """The verdict as the JSON of ``check --json`` records it."""
         return {"key": self.key, "given": self.given, "given_text": self.raw,
                 "correct": self.correct, "unit": self.unit,
                 "error_percent": self.error_percent,

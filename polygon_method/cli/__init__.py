@@ -32,6 +32,7 @@ class _Parser(argparse.ArgumentParser):
 
 
 def build_parser() -> argparse.ArgumentParser:
+    """The command line's parser: one sub-command per job (solve, steps, draw, page, ...)."""
     p = _Parser(prog="polygon-method",
                 description="Planar mechanisms by the relative-velocity (polygon) method.")
     from .. import __version__
@@ -160,6 +161,8 @@ def _negative_values(argv: list) -> list:
 
 
 def main(argv=None) -> int:
+    """Run the command line on ``argv`` (``sys.argv[1:]`` when None); the exit code: 0 done, 2 a bad
+    scene or argument (one line on stderr), 3 an internal error."""
     parser = build_parser()
     args = parser.parse_args(_negative_values(list(sys.argv[1:] if argv is None else argv)))
     for dest, value in vars(args).items():  # an empty name is never "not given"

@@ -93,6 +93,7 @@ class Page:
 
     @property
     def text(self) -> str:
+        """The paper in words: "A4 portrait"."""
         return f"{self.paper} {self.orientation}"
 
     def footer(self) -> str:

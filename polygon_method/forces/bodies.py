@@ -61,6 +61,8 @@ class Ledger:
             self.applied.setdefault(body, []).append((what, (fx, fy), (x, y)))
 
     def couple(self, body, c, what=None):
+        """Add a known couple ``c`` (N m, ccw positive) on ``body``, with its words ``what`` for the
+        step table."""
         t = self.total.get(body, (0.0, 0.0, 0.0))
         self.total[body] = (t[0], t[1], t[2] + c)
         if what is not None:

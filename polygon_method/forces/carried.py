@@ -5,8 +5,10 @@ from __future__ import annotations
 
 
 def owns(st) -> dict:
+    """A carried point belongs to its link: the forces at it act on that link."""
     return {st.point: st.link}
 
 
 def step(st, P, led, own):
+    """A carried point adds no unknown force: nothing to solve, nothing to record."""
     return (), (), None, None

@@ -60,6 +60,7 @@ class PinForce:
 
     @property
     def magnitude(self) -> float:
+        """The force's size, ``|F|`` (N)."""
         return (self.force[0] ** 2 + self.force[1] ** 2) ** 0.5
 
 
@@ -76,6 +77,7 @@ class GuideForce:
 
     @property
     def force(self) -> tuple:
+        """The normal force as a vector, ``normal n`` (N)."""
         return (self.normal * self.n[0], self.normal * self.n[1])
 
 
@@ -139,6 +141,7 @@ class Forces:
         raise KeyError((point, on, by))
 
     def inertia_of(self, body: str):
+        """The inertia record of ``body``, or None when it has no mass."""
         return next((i for i in self.inertia if i.body == body), None)
 
 

@@ -51,6 +51,7 @@ class Transmission:
 
     @property
     def warn(self) -> bool:
+        """Whether the smallest transmission angle is below the lecture's advice (40 deg)."""
         return self.minimum < TOL.transmission_warn_deg
 
 
@@ -79,6 +80,8 @@ class Linkage:
     notes: tuple
 
     def text(self) -> str:
+        """The report of ``polygon-method linkage``: Grashof, toggles, transmission angles, quick
+        return."""
         sc = self.scene
         out = [sc.title or sc.file or "mechanism", f"{self.kind}: {self.members}", ""]
         out.extend(self.classification)

@@ -45,6 +45,7 @@ class Grashof:
 
     @property
     def special(self) -> bool:
+        """A change-point (special Grashof) linkage: s + l equals p + q."""
         return self.relation == "="
 
 
@@ -135,10 +136,12 @@ class SliderCrank:
 
     @property
     def inline(self) -> bool:
+        """The path passes through the crank's pivot (offset e = 0)."""
         return abs(self.e) <= 1e-9 * self.l
 
     @property
     def n(self) -> float:
+        """The ratio of the rod's length to the crank's, n = l / r."""
         return self.l / self.r
 
 

@@ -43,6 +43,7 @@ class Extreme:
 
     @property
     def constant(self) -> bool:
+        """The quantity does not change over the sweep (it has no maximum of its own)."""
         return self.at_max is None
 
 
@@ -73,6 +74,7 @@ class Summary:
         raise KeyError(name)
 
     def text(self) -> str:
+        """The summary as ``sweep --summary`` prints it."""
         sc = self.scene
         if sc.input.block is not None:
             return self._block_text()

@@ -64,6 +64,7 @@ class Solution(Motion):
         return value
 
     def speed(self, point, relative_to=None) -> float:
+        """The size of ``point``'s velocity (relative to ``relative_to``), m/s."""
         return hypot(*self.velocity(point, relative_to))
 
     # ----- derived quantities

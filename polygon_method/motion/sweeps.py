@@ -65,14 +65,17 @@ class SweepResult(Motion):
 
     @property
     def limits(self) -> tuple:
+        """The limit positions of the sweep's domain (where a step stops assembling)."""
         return self.domain.limits
 
     @property
     def change_points(self) -> tuple:
+        """The change points the sweep passed through (two assemblies meeting)."""
         return self.domain.change_points
 
     @property
     def degrees(self) -> np.ndarray:
+        """The crank angles in degrees."""
         return np.degrees(self.theta)
 
     def __len__(self):
@@ -156,6 +159,8 @@ class SweepResult(Motion):
 
 
 def rubbing_arrays(plan, W, n):
+    """The rubbing velocity at every pin over a sweep of ``n`` positions (the largest over the pairs
+    of bodies each pin joins), from the omegas ``W``."""
     radii = plan.dims.radii
     return {point: np.broadcast_to(largest(values), (n,)) if values else np.zeros(n)
             for point, values in pin_rubbing(plan, W, radii).items()}
@@ -227,6 +232,8 @@ def stroke_places(scene: Scene, n: int = 361):
 
 
 def sweep_angles(angles):
+    """The crank angles of a sweep (radians) as an array: every degree when None; anything that is
+    not numbers is refused in one line."""
     if angles is None:
         return np.radians(np.arange(360.0))
     try:

@@ -14,10 +14,13 @@ __all__ = ["frames", "Frames", "DEFAULT_FRAMES", "MAX_FRAMES", "MAX_PICTURE_FRAM
 
 
 def page_html(*args, **kw):
+    """The animated page as HTML (see :func:`polygon_method.page.html.page_html`)."""
     from .html import page_html as make
     return make(*args, **kw)
 
 
 def animation(*args, **kw):
+    """An animation of the cycle: GIF, HTML or SVG (see
+    :func:`polygon_method.page.animate.animation`)."""
     from .animate import animation as make
     return make(*args, **kw)

@@ -114,6 +114,7 @@ class Frames:
 
     @property
     def limits_text(self) -> str:
+        """The limit positions in words: crank angles, or a block's places along its guide."""
         dom = self.res.domain
         lim = dom.limits
         if not dom.periodic:  # a block driver: the ends of its travel

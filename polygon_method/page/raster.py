@@ -194,6 +194,7 @@ class Pictures:
         return round_up(need / f) * f, (lo + hi) / 2
 
     def scale_text(self, phase, k) -> str:
+        """The round scale of ``phase``'s panel in frame ``k``: "1 cm = 0.5 m/s"."""
         per = self.view[phase][0][k]
         f, unit = ((self.d["unit"], self.d["units"]) if phase == "configuration" else
                    (1.0, {"velocity": "m/s", "acceleration": "m/s²"}[phase]))

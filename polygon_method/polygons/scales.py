@@ -67,6 +67,7 @@ class Scale:
 
     @property
     def text(self) -> str:
+        """The scale as a book writes it: "1 cm = 0.1 m/s"."""
         return f"1 cm = {self.value} {self.unit}"
 
     def __str__(self) -> str:

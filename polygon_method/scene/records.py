@@ -116,9 +116,11 @@ class Link:
 
     @property
     def points(self) -> tuple[str, str]:
+        """The link's two end points, in the scene's order."""
         return (self.p, self.q)
 
     def other(self, point: str) -> str:
+        """The link's end that is not ``point``."""
         return self.q if point == self.p else self.p
 
 
@@ -349,6 +351,7 @@ class Input:
 
 @dataclass(frozen=True)
 class Pin:
+    """A pin of a stated size at ``point`` (radius in m), for its rubbing velocity."""
     point: str
     radius: float
     given: str  # "diameter" or "radius", as the scene gave it
@@ -398,6 +401,8 @@ class Gravity:
 
 @dataclass(frozen=True)
 class Answer:
+    """One answer of ``[answers]`` (or of a student's file): its key, what it names, its value in SI
+    and its sense as given."""
     key: str
     kind: str  # prefix of ANSWER_KINDS, "torque", "centre", or "vu"/"au" (the guide's point
     # under a block: names is the slider's key)
@@ -516,6 +521,7 @@ class Scene:
         return found
 
     def has_link(self, name: str) -> bool:
+        """Whether ``name`` (e.g. "BC" or "CB") is a link of the scene."""
         pts = split_name(name)
         return len(pts) == 2 and frozenset(pts) in self._link_index
 
@@ -525,6 +531,7 @@ class Scene:
         return self._names
 
     def carried(self, name: str) -> CarriedPoint | None:
+        """The carried point named ``name``, or None."""
         return next((c for c in self.points if c.name == name), None)
 
     def cylinder(self, name: str):
@@ -557,4 +564,5 @@ class Scene:
 
     @property
     def length_unit(self) -> float:
+        """The scene's length unit in metres (0.001 for mm)."""
         return UNITS["length"][self.units]

@@ -86,15 +86,20 @@ class Centre:
 
     @property
     def label(self) -> str:
+        """The centre's name as a book writes it: I13 (I1,12 past nine bodies)."""
         pair = f"{self.i}{self.j}" if max(self.i, self.j) < 10 else f"{self.i},{self.j}"
         return self.prefix + pair
 
     @property
     def primary(self) -> bool:
+        """Found by inspection (a pin, a slider's path, a rolling contact), not by Kennedy's
+        theorem."""
         return not self.lines
 
     @property
     def at_infinity(self) -> bool:
+        """The centre is at infinity (its two lines are parallel: the bodies translate relative to
+        each other)."""
         return self.point is None
 
 
@@ -118,12 +123,15 @@ class Centres:
 
     @property
     def n(self) -> int:
+        """The number of bodies, the frame included."""
         return len(self.bodies)
 
     def centre(self, i, j) -> Centre:
+        """The centre of bodies ``i`` and ``j`` (either order)."""
         return self.centres[(min(i, j), max(i, j))]
 
     def omega(self, body) -> float:
+        """The angular velocity of ``body`` (its number, or a link's name), from the centres."""
         return self.omegas[self._number(body)]
 
     def _number(self, body) -> int:
@@ -142,6 +150,7 @@ class Centres:
         return self._field(j, self.sol.P[point])
 
     def body_of(self, point) -> int:
+        """The number of the moving body ``point`` belongs to (1, the frame, for a fixed point)."""
         for name, _ in self.sol.plan.bodies_at(point):
             k = self._index.get(name)
             if k is not None and k != 1:

@@ -79,10 +79,12 @@ class PinRubbing:
 
     @property
     def pairs(self) -> dict:
+        """Each pair of bodies the pin joins and its rubbing velocity |w1 - w2| r."""
         return dict(zip(self._pin[3], self.values))
 
     @property
     def bodies(self) -> dict:
+        """Each body the pin joins and its omega."""
         W = self._W
         return {name: W.get(lk, 0.0) for name, lk in zip(self._pin[1], self._pin[2])}
 

@@ -100,6 +100,7 @@ class ErrorBounds:
 
     @property
     def worst(self):
+        """The largest relative bound of any answer."""
         vals = [*self.P.values(), *self.V.values(), *self.A.values(), *self.W.values(),
                 *self.Al.values(), *(b for t in self.S.values() for b in t)]
         return largest(vals) if vals else EPS

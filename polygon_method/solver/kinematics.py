@@ -72,6 +72,7 @@ class Motion:
                           + ", ".join(map(str, known)))
 
     def position(self, point):
+        """The position of ``point``, (x, y) in m."""
         return self._lookup(self.P, point, "point")
 
     def velocity(self, point, relative_to=None):
@@ -83,6 +84,7 @@ class Motion:
         return (vx - ux, vy - uy)
 
     def acceleration(self, point, relative_to=None):
+        """Acceleration of ``point`` (relative to ``relative_to``: a_XY = a_X - a_Y), m/s^2."""
         ax, ay = self._lookup(self.A, point, "point")
         if relative_to is None:
             return (ax, ay)
@@ -90,9 +92,11 @@ class Motion:
         return (ax - bx, ay - by)
 
     def speed(self, point, relative_to=None):
+        """The size of ``point``'s velocity (relative to ``relative_to``), m/s."""
         return hypot(*self.velocity(point, relative_to))
 
     def acceleration_magnitude(self, point, relative_to=None):
+        """The size of ``point``'s acceleration (relative to ``relative_to``), m/s^2."""
         return hypot(*self.acceleration(point, relative_to))
 
     # ----- links
@@ -116,19 +120,27 @@ class Motion:
         return hypot(rx - kx, ry - ky)
 
     def omega(self, link):
+        """The angular velocity of ``link`` ("BC" or "CB"), rad/s, ccw positive."""
         return self._lookup(self.W, self._key(link), "link")
 
     def alpha(self, link):
+        """The angular acceleration of ``link``, rad/s^2, ccw positive."""
         return self._lookup(self.Al, self._key(link), "link")
 
     # ----- sliders
     def sliding_velocity(self, point):
+        """The velocity of the block at ``point`` along its guide (relative to the guide), m/s,
+        signed along the guide's direction."""
         return self._lookup(self.S, point, "slider")[0]
 
     def sliding_acceleration(self, point):
+        """The acceleration of the block at ``point`` along its guide (relative to the guide),
+        m/s^2."""
         return self._lookup(self.S, point, "slider")[1]
 
     def coriolis(self, point):
+        """The Coriolis component of the block at ``point`` on a turning guide, 2 omega x v_s, as
+        (x, y) in m/s^2 ((0, 0) on a fixed path)."""
         s = self._lookup(self.S, point, "slider")
         return (s[2], s[3])
 
@@ -151,6 +163,8 @@ class Motion:
 
     @property
     def conditions(self) -> dict:
+        """Each step's condition measure (step index -> the sine of the angle between its two
+        direction lines, or its own measure)."""
         return self.cond
 
     @property

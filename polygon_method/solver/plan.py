@@ -65,6 +65,8 @@ class Bodies:
             self._carried.setdefault(cp.link, []).append(cp)
 
     def frame(self, key) -> dict:
+        """The points of link ``key`` in the link's own frame (its first point at the origin, its
+        second on the x axis), carried points included."""
         b = self._frames.get(key)
         if b is None:
             lk = self._links.get(key) or self.scene.link(key)

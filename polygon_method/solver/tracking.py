@@ -77,6 +77,7 @@ class LimitPosition:
 
     @property
     def degrees(self) -> float:
+        """The crank angle of the limit position in degrees, within one turn."""
         return math.degrees(self.theta) % 360.0
 
 
@@ -96,6 +97,7 @@ class ChangePoint:
 
     @property
     def degrees(self) -> float:
+        """The crank angle of the change point in degrees, within one turn."""
         return math.degrees(self.theta) % 360.0
 
 
@@ -225,6 +227,7 @@ def _variant(plan, flips):
 
 
 def branch_steps(plan):
+    """The plan's steps that have two assemblies (a branch to follow)."""
     return [s for s in plan.steps if s.branching]
 
 
@@ -599,6 +602,7 @@ def valid_mask(fr: Motion, plan):
 
 
 def fmt_deg(d, digits=4) -> str:
+    """An angle in degrees to ``digits`` decimals, never "-0.0000"."""
     s = f"{d:.{digits}f}"
     return s if s.strip("-0.") else f"{0.0:.{digits}f}"
 

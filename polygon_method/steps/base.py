@@ -56,6 +56,8 @@ class Context:
         return disc ** 0.5 if disc > 0 else 0.0
 
     def fail(self, step, mask):
+        """Mark the positions in ``mask`` where ``step`` fails (array mode): they are left out of
+        the motion."""
         prev = self.failures.get(step.index)
         self.failures[step.index] = mask if prev is None else (prev | mask)
         self.bad = mask if self.bad is None else (self.bad | mask)
@@ -70,6 +72,7 @@ class Context:
         return den
 
     def minimum(self, a, b):
+        """The smaller of ``a`` and ``b``, element by element for arrays."""
         return self.np.minimum(a, b) if self.array else min(a, b)
 
 
@@ -195,6 +198,7 @@ class Step:
 
     @property
     def label(self) -> str:
+        """The step as errors and warnings name it: "step 3 (dyad C from B and D)"."""
         return f"step {self.index + 1} ({self.title})"
 
     # ----- evaluation
@@ -394,6 +398,7 @@ class Vector:
 
     @property
     def magnitude(self) -> float:
+        """The vector's length on the polygon (m/s or m/s^2)."""
         return math.hypot(self.end[0] - self.start[0], self.end[1] - self.start[1])
 
 
@@ -462,19 +467,23 @@ def pole_text(sol, point, phase):
 
 
 def unit(x, y):
+    """The unit vector along (x, y); (0, 0) for the zero vector."""
     n = math.hypot(x, y)
     return (x / n, y / n) if n else (0.0, 0.0)
 
 
 def sub(a, b):
+    """The difference a - b of two points or vectors."""
     return (a[0] - b[0], a[1] - b[1])
 
 
 def add(a, b):
+    """The sum a + b of two vectors."""
     return (a[0] + b[0], a[1] + b[1])
 
 
 def perp(v):
+    """``v`` turned 90 deg counter-clockwise."""
     return (-v[1], v[0])
 
 
@@ -486,6 +495,7 @@ def relative(sol, X, Y, D, phase, kind="relative"):
 
 
 def absolute(sol, X, D, phase):
+    """Vector from the pole to the image of X (v_X or a_X)."""
     o = "o" if phase == "velocity" else "o'"
     sym = "v" if phase == "velocity" else "a"
     return Vector((0.0, 0.0), D[X], f"{o}{image_label(sol, X, phase)}", "absolute",

@@ -75,6 +75,7 @@ class BlockDriver(Step):
 
     @property
     def where(self):
+        """The guide in words: "the horizontal guide", "the guide at 30 deg"."""
         lab = self.path.label
         return f"the {lab} guide" if lab in ("horizontal", "vertical") else f"the guide {lab}"
 

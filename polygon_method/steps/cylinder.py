@@ -170,10 +170,12 @@ class CylinderStep(Step):
 
     # ----- words
     def shrunk(self):
+        """The error for a cylinder whose two pins coincide: its direction is undefined."""
         return SingularStepError(f"cylinder {self.key} has no length here ({self.rod} is at "
                                  f"{self.barrel}): its direction is undefined", step=self.label)
 
     def why(self, n):
+        """Why the cylinder cannot reach length ``n`` (m): outside its stroke."""
         u, nm = self.unit, self.uname
         lo, hi = self.stroke
         return (f"cylinder {self.key} would be {in_units(n, u)} {nm} long here, outside its "

@@ -277,6 +277,8 @@ class Dyad(Step):
 
     # ----- failures and words
     def coincident(self):
+        """The error when the two known points coincide: singular if the two sides are equal (the
+        point may be anywhere on a circle), else no assembly."""
         if self.l1 == self.l2:
             return SingularStepError(f"{self.b} and {self.d} coincide and {self.side(1)} = "
                                      f"{self.side(2)}: {self.point} may be anywhere on a "
@@ -291,6 +293,8 @@ class Dyad(Step):
         return f"{k}{self.point} (on {key})"
 
     def why(self, e):
+        """Why the dyad cannot assemble with its known points ``e`` apart: too far for the two
+        sides, or too near."""
         u, n = self.unit, self.uname
         e = quiet(e, self.l1 + self.l2)  # B on D to rounding (cos 180 deg): 0, not 1.2e-14
         if self.l1 + self.l2 < e:

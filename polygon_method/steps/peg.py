@@ -164,6 +164,7 @@ class Peg(Step):
 
     @property
     def slots(self):
+        """The peg's two slots, first and second."""
         return (self.first, self.second)
 
     @property
@@ -340,10 +341,12 @@ class Peg(Step):
 
     # ----- failures and words
     def why(self, *_):
+        """Why the peg cannot be placed: its two slots do not cross."""
         return (f"a pin in two parallel slots: {_slot_words(self.first)} and "
                 f"{_slot_words(self.second)} do not cross")
 
     def singular(self, c):
+        """The error for slots that are parallel at condition ``c``."""
         return SingularStepError(self.singular_why(c), step=self.label)
 
     def singular_why(self, c) -> str:

@@ -176,6 +176,7 @@ class RackStep(Step):
 
     # ----- what the views ask
     def contact(self, P):
+        """The pitch point of the rack and its pinion, from the positions ``P``."""
         ox, oy = P[self.base_centre]
         d = -self.dims[4]
         ux, uy = self.dims[2], self.dims[3]
@@ -196,6 +197,7 @@ class RackStep(Step):
 
     # ----- words
     def why(self, g):
+        """Why the rack cannot be placed: it leaves its pinion."""
         return f"the rack {self.point} leaves its pinion {self.base}"
 
     def singular_why(self, c):

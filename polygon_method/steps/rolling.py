@@ -434,6 +434,8 @@ class RollingWheel(Step):
 
     # ----- words
     def why(self, g):
+        """Why the wheel cannot roll here: its centre is off its line or pitch circle by ``g`` of
+        the radii."""
         return (f"the centre {self.centre} of wheel {self.wheel} is off "
                 + ("its line" if self.on == "line" else "its pitch circle")
                 + f" by {abs(g):.3g} of the radii: the contact leaves the pitch point "

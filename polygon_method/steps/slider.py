@@ -264,6 +264,8 @@ class SliderDyad(Step):
 
     # ----- failures and words
     def why(self, dist):
+        """Why the block cannot be placed: its link is shorter than the known end's distance
+        ``dist`` from the path."""
         u, n = self.unit, self.uname
         where = f"path {self.path.label}" if self.path else f"line of {self.guide}"
         return (f"cannot assemble {self.point}: {self.link} = {in_units(self.length, u)} {n} "

@@ -252,6 +252,7 @@ class SlottedLink(Step):
 
     # ----- failures and words
     def at_pivot(self):
+        """The error for a block at the slotted link's pivot: the link's direction is undefined."""
         return SingularStepError(f"block {self.point} is at {self.known}, the pivot of "
                                  f"{self.guide}: the link's direction is undefined",
                                  step=self.label)

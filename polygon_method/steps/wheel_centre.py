@@ -178,6 +178,8 @@ class WheelCentre(Step):
 
     # ----- words
     def why(self, dist):
+        """Why the wheel's centre cannot be placed: its link is shorter than the known end's
+        distance ``dist`` from the centre's line."""
         u, n = self.unit, self.uname
         return (f"cannot assemble {self.point}: {self.link} = {in_units(self.length, u)} {n} "
                 f"< distance of {self.b} from the line of the wheel's centre = "

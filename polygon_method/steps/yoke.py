@@ -180,10 +180,12 @@ class Yoke(Step):
 
     # ----- failures and words
     def why(self, *_):
+        """Why the yoke cannot be placed: its slot runs along its path."""
         return (f"a pin in two parallel slots: the slot of yoke {self.point} runs along its "
                 "path")
 
     def singular(self, c):
+        """The error for a slot parallel to the yoke's path at condition ``c``."""
         return SingularStepError(self.singular_why(c), step=self.label)
 
     def singular_why(self, c) -> str:

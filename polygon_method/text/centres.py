@@ -58,6 +58,8 @@ def _where(sol, c: Centre) -> str:
 
 
 def centres_text(ic: Centres) -> str:
+    """The instantaneous centres as ``centres`` prints them: the links numbered, each centre with
+    how it was found, the omegas from the centres."""
     sol = ic.sol
     sc = sol.scene
     n = ic.n

@@ -42,6 +42,8 @@ def _coord(x: float) -> str:
 
 
 def solution_text(sol: Solution) -> str:
+    """The solution as ``solve`` prints it: the given, positions, velocities, accelerations, omegas
+    and alphas with cw/ccw, sliders, rubbing, the input torque, warnings and error bounds."""
     sc = sol.scene
     u = sc.length_unit
     inp = sc.input

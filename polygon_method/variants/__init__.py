@@ -131,6 +131,8 @@ class Variant:
 
 @dataclass(frozen=True)
 class VariantSet:
+    """The variants made of a base scene: each variant, how many were asked for, the seed, the
+    combinations the ranges allow and how many were screened."""
     base: Scene
     variants: tuple
     requested: int

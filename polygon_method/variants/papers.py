@@ -44,6 +44,8 @@ def _cell(x):
 
 
 def answer_key_markdown(vs) -> str:
+    """The teacher's answer key as Markdown: one row per variant, its varied dimensions and its
+    answers."""
     base = vs.base
     keys = [v.key for v in base.variation.varied]
     out = [f"# Answer key: {base.title or base.file}", "",
@@ -196,6 +198,7 @@ def sheet_pdf(vs, figure=None) -> bytes:
 
 
 def summary_text(vs) -> str:
+    """One line per variant and what varied, as ``variants`` prints it."""
     base = vs.base
     lines = [f"{base.title or base.file}: {len(vs.variants)} variants (seed {vs.seed}) of "
              f"{vs.space} combinations, {vs.tried} screened; class kept: {vs.linkage}; "

@@ -279,6 +279,8 @@ class Triad(Step):
         return V[0][0], V[0][1], condition(V, K)
 
     def positions(self, P, ctx):
+        """Place the triad's three points into ``P`` for one instant (the assembly followed from the
+        memo of poses already solved); refused when none exists."""
         K = tuple(P[k] for k in self.knowns)
         q = solve_scalar(self.memo, K, self.params)
         if q is None:
@@ -397,6 +399,8 @@ class Triad(Step):
         return ", ".join(f"{K}{V}" for K, V in zip(self.knowns, self.points))
 
     def why(self, e=None):
+        """Why the triad cannot assemble at this crank angle: no pose reaches its links, or its
+        assembly ended at a limit."""
         if not self.start:  # no assembly chosen yet: none exists here
             return (f"cannot assemble the triad {', '.join(self.points)}: no position of the "
                     f"{self._plate_words} reaches the links {', '.join(self.links_)} from "

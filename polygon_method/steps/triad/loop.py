@@ -64,6 +64,7 @@ def solve3(m, h):
 
 
 def det3(m):
+    """The determinant of a 3x3 matrix given row by row as nine numbers."""
     a, b, c, d, e, f, g, k, l_ = m
     return a * (e * l_ - f * k) + b * (f * g - d * l_) + c * (d * k - e * g)
 
@@ -174,6 +175,7 @@ def acceleration(V, K, VV, VK, AK, w):
 
 
 def scale(prm):
+    """The triad's size: its largest dimension (the scale of its tolerances)."""
     return max(abs(prm[0]), abs(prm[1]), abs(prm[2]), math.hypot(prm[3], prm[4]),
                math.hypot(prm[5], prm[6]), 1e-300)
 
@@ -198,6 +200,7 @@ def _newton(q, K, prm, size, iters=40):
 
 
 def flat(K, prm):
+    """The known points ``K`` and the dimensions ``prm`` as one flat tuple (the memo's key)."""
     return tuple(c for xy in K for c in xy) + tuple(prm)
 
 
@@ -286,12 +289,15 @@ class Memo:
         self._array = None
 
     def array(self):
+        """The memo's inputs as one array (for the nearest-neighbour search)."""
         if self._array is None or len(self._array) != len(self.items):
             import numpy as np
             self._array = np.array([it[0] for it in self.items])
         return self._array
 
     def nearest(self, inp, size):
+        """The memo's item whose inputs are nearest to ``inp`` and its distance relative to
+        ``size``."""
         first = self.items[0]
         if first[0] == inp:
             return first, 0.0
@@ -308,6 +314,8 @@ class Memo:
         return self.items[k], float(d[k]) / size
 
     def add(self, inp, q, sign):
+        """Remember the pose ``q`` solved at inputs ``inp`` with its determinant's sign (the oldest
+        forgotten past the memo's size)."""
         if len(self.items) >= _KEEP:
             del self.items[1:_KEEP // 2]
         self.items.append((inp, q, sign))
@@ -330,10 +338,12 @@ def solve_scalar(memo, K, prm):
 
 
 def kp(inp):
+    """Flat inputs back into the known points and the dimensions."""
     return ((inp[0], inp[1]), (inp[2], inp[3]), (inp[4], inp[5])), inp[6:]
 
 
 def det_sign(q, inp):
+    """The sign of the loop equations' Jacobian at pose ``q`` (the assembly's side)."""
     return sign(newton_step(q, *kp(inp), math.cos, math.sin)[2])
 
 
@@ -429,6 +439,7 @@ def solve_array(memo, K, prm, np):
 
 
 def sign(d):
+    """+1.0 for a positive ``d``, else -1.0."""
     return 1.0 if d > 0 else -1.0
 
 
