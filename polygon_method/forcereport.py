@@ -137,7 +137,7 @@ def force_blocks(sol) -> list:
             elif name.startswith("T "):
                 items.append(f"{name} = {_moment(val, M)}")
             else:
-                items.append(f"{name} = {fmt(quiet(val, F))} N (along the path's normal, "
+                items.append(f"{name} = {fmt(quiet(val, F))} N (along the guide's normal, "
                              "+ to its left)")
         if st.why:
             items.append(f"condition {st.condition:.3g} ({st.why})")
@@ -146,6 +146,9 @@ def force_blocks(sol) -> list:
                 "slider": "moments of the link about its other end give the guide's normal "
                           "force; the block's force balance the pin force; the link's the "
                           "force at its other end",
+                "slotted": "moments of the lever about its pivot give the normal force "
+                           "between it and the block; the lever's force balance the force "
+                           "at its pivot; the block's the force at its pin",
                 "crank": "the frame holds the crank at its pivot; the moments about the "
                          "pivot give the driving torque"}.get(st.kind, "")
         blocks.append(("p", f"Step {st.index + 1}, {st.title}: {head}."))

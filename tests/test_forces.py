@@ -31,7 +31,7 @@ import pytest
 from polygon_method.compiler import compile_plan
 from polygon_method.errors import PolygonMethodError, SceneError
 from polygon_method.forces import FRAME, owners
-from polygon_method.scene import FixedPath, load_scene, parse_scene, scene_from_table, scene_table
+from polygon_method.scene import FixedPath, GuideSlider, load_scene, parse_scene, scene_from_table, scene_table
 from polygon_method.solution import solve
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -76,7 +76,7 @@ def with_forces(scene, seed):
                           "turn": "ccw" if mu > 0 else "cw",
                           "gyration": lk.length * rnd.uniform(0.1, 0.6) / unit}
     for s in scene.sliders:
-        if isinstance(s, FixedPath) and not s.slot:
+        if isinstance(s, (FixedPath, GuideSlider)) and not s.slot:
             masses[s.point] = {"mass": f"{rnd.uniform(0.5, 8):.4f} kg"}
     raw["masses"] = masses
     raw["gravity"] = {"direction": rnd.uniform(0, 360), "g": "9.81 m/s^2"}
@@ -126,7 +126,7 @@ def test_the_cases_are_there():
     kinds = set()
     for c in CASES:
         kinds |= {st.kind for st in compile_plan(load_scene(c.values[0])).steps}
-    assert {"crank", "dyad", "slider", "carried"} <= kinds and len(CASES) >= 15
+    assert {"crank", "dyad", "slider", "carried", "slotted"} <= kinds and len(CASES) >= 15
 
 
 @pytest.mark.parametrize("path", CASES)
@@ -172,8 +172,9 @@ def _newton_euler(sol, f):
         at = sol.P[p.point]
         add(p.on, p.force, at)
         add(p.by, (-p.force[0], -p.force[1]), at)
-    for gd in f.guides:
+    for gd in f.guides:  # the guide (the frame, or a moving link) feels it back
         add(f"block {gd.point}", gd.force, sol.P[gd.point])
+        add(gd.by, (-gd.force[0], -gd.force[1]), sol.P[gd.point])
     for body, items in f.applied.items():
         for it in items:
             if len(it) == 3:
@@ -410,12 +411,12 @@ def test_bad_force_input_is_one_located_line(extra, words):
 
 
 def test_a_step_not_covered_is_refused_in_one_line_naming_it():
-    sc = load_scene(ROOT / "worked_problems" / "whitworth.toml")
+    sc = load_scene(ROOT / "worked_problems" / "class3_six_bar.toml")
     raw = scene_table(sc)
     raw["gravity"] = {}
     sol = solve(scene_from_table(raw))
-    with pytest.raises(PolygonMethodError, match=r"a block sliding on a moving link is not "
-                       r"solved for forces yet \(step 2, block A"):
+    with pytest.raises(PolygonMethodError, match=r"a triad \(class-III group\) is not "
+                       r"solved for forces yet \(step 2, triad"):
         sol.forces
     d = sol.to_dict()
     assert d["forces"] is None and any("not solved for forces yet" in w for w in d["warnings"])
@@ -521,10 +522,10 @@ def test_every_force_problem_writes_finite_json_and_words(path):
 def test_a_refused_scene_still_shows_its_motion_and_says_why():
     from polygon_method.report import solution_text
     from polygon_method.steptable import steps_text
-    raw = scene_table(load_scene(ROOT / "worked_problems" / "whitworth.toml"))
-    raw["masses"] = {"O2-A": {"mass": 2}}
+    raw = scene_table(load_scene(ROOT / "worked_problems" / "class3_six_bar.toml"))
+    raw["masses"] = {"AB": {"mass": 2}}
     sol = solve(scene_from_table(raw))
-    words = "is not solved for forces yet (step 2, block A"
+    words = "is not solved for forces yet (step 2, triad"
     assert words in solution_text(sol) and words in steps_text(sol)
 
 
@@ -766,3 +767,119 @@ def test_the_worked_four_bar_and_its_written_answers():
     written = re.search(r"#.*\bT = ([\d.]+) \((c?cw)[:)]", text)
     assert float(written.group(1)) == pytest.approx(abs(float(ref["T"])), rel=6e-4)
     assert written.group(2) == ("ccw" if ref["T"] > 0 else "cw")
+
+
+# ----- a block on a moving link: the crank and slotted lever
+
+def _slotted_lever_matrix(sol):
+    """The matrix method on a crank and slotted lever with a ram (crank O2-A, block A in
+    the lever O4-P, rod P-Q, block Q on a fixed path): the five bodies' Newton-Euler
+    equations (forces, and moments about the origin, D'Alembert's inertia at G) as one
+    15 x 15 linear system in every pin force, each guide's normal force and couple, and
+    the driving torque; loads at P act on the lever, at Q on the block. Returns
+    {name: value}; the guides' couples must come out zero (the blocks' loads pass
+    through their pins)."""
+    import numpy as np
+    sc = sol.scene
+    P = sol.P
+    g = sc.gravity
+    sa = next(s for s in sc.sliders if s.point == "A")
+    ux, uy = (P[sa.second][0] - P[sa.first][0], P[sa.second][1] - P[sa.first][1])
+    m = math.hypot(ux, uy)
+    nA = (-uy / m, ux / m)
+    qu = sc.slider("Q").u
+    nQ = (-qu[1], qu[0])
+    bodies = ["O2-A", "block A", "O4-P", "P-Q", "block Q"]
+    row = {b: i for i, b in enumerate(bodies)}
+    M = np.zeros((15, 15))
+    rhs = np.zeros(15)
+
+    def force(body, col_x, col_y, at, sign=1.0, dirn=None):
+        i = 3 * row[body]
+        x, y = at
+        if dirn is None:  # a force with two unknown components
+            M[i, col_x] += sign
+            M[i + 1, col_y] += sign
+            M[i + 2, col_x] += -sign * y
+            M[i + 2, col_y] += sign * x
+        else:  # a force of unknown size along dirn
+            M[i, col_x] += sign * dirn[0]
+            M[i + 1, col_x] += sign * dirn[1]
+            M[i + 2, col_x] += sign * (x * dirn[1] - y * dirn[0])
+
+    def known(body, F, at=(0.0, 0.0), c=0.0):
+        i = 3 * row[body]
+        rhs[i] -= F[0]
+        rhs[i + 1] -= F[1]
+        rhs[i + 2] -= at[0] * F[1] - at[1] * F[0] + c
+
+    force("O2-A", 0, 1, P["O2"])                      # F_O2 on the crank by the frame
+    force("block A", 2, 3, P["A"])                    # F_A on block A by the crank
+    force("O2-A", 2, 3, P["A"], -1.0)
+    force("block A", 4, None, P["A"], 1.0, nA)        # N_A on block A by the lever
+    force("O4-P", 4, None, P["A"], -1.0, nA)
+    M[3 * row["block A"] + 2, 5] += 1.0               # C_A on block A by the lever
+    M[3 * row["O4-P"] + 2, 5] -= 1.0
+    force("O4-P", 6, 7, P["O4"])                      # F_O4 on the lever by the frame
+    force("P-Q", 8, 9, P["P"])                        # F_P on the rod by the lever
+    force("O4-P", 8, 9, P["P"], -1.0)
+    force("P-Q", 10, 11, P["Q"])                      # F_Q on the rod by block Q
+    force("block Q", 10, 11, P["Q"], -1.0)
+    force("block Q", 12, None, P["Q"], 1.0, nQ)       # N_Q on block Q by the path
+    M[3 * row["block Q"] + 2, 13] += 1.0              # C_Q on block Q by the path
+    M[3 * row["O2-A"] + 2, 14] += 1.0                 # T on the crank
+    for ms in sc.masses:
+        G, v, a, al, w = _kin(sol, ms)
+        W = (ms.mass * g.g * g.direction[0], ms.mass * g.g * g.direction[1])
+        known(_body(ms), (W[0] - ms.mass * a[0], W[1] - ms.mass * a[1]), G,
+              -ms.inertia * al)
+    for ld in sc.loads:
+        body = {"P": "O4-P", "Q": "block Q"}.get(ld.target, ld.target)
+        if ld.force is not None:
+            known(body, ld.force, P[ld.target])
+        else:
+            known(body, (0.0, 0.0), c=ld.torque)
+    x = np.linalg.solve(M, rhs)
+    return {"F_O2": x[0:2], "F_A": x[2:4], "N_A": x[4] * np.array(nA), "C_A": x[5],
+            "F_O4": x[6:8], "F_P": x[8:10], "F_Q": x[10:12], "N_Q": x[12] * np.array(nQ),
+            "C_Q": x[13], "T": x[14]}
+
+
+@pytest.mark.parametrize("name, angle", [("crank_slotted_lever", 45), ("crank_slotted_lever", 200),
+                                         ("whitworth", 30), ("whitworth", 250)])
+def test_slotted_lever_against_the_matrix_method(name, angle):
+    sc0 = load_scene(ROOT / "worked_problems" / f"{name}.toml")
+    d1, d2 = _on_link(sc0.link("O4-P").length, 0.6, 0.08, sc0.length_unit)
+    raw = scene_table(sc0)
+    raw["input"]["angle"] = angle
+    raw["input"]["acceleration"] = "4 rad/s^2 ccw"
+    raw["masses"] = {"O2-A": {"mass": 3, "along": 40, "gyration": 35},
+                     "A": {"mass": "1.5 kg"},
+                     "O4-P": {"mass": 12, "distances": {"O4": d1, "P": d2}, "turn": "ccw",
+                              "gyration": 45},
+                     "P-Q": {"mass": 4, "gyration": 60},
+                     "Q": {"mass": "25 kg"}}
+    raw["gravity"] = {"direction": 260}
+    raw["loads"] = {"Q": {"force": "2 kN", "direction": 180},
+                    "P": {"force": [150, -80]},
+                    "P-Q": {"torque": "12 N m cw"}, "O4-P": {"torque": "30 N m ccw"}}
+    raw.pop("answers", None)
+    sol = solve(scene_from_table(raw))
+    f = sol.forces
+    ref = _slotted_lever_matrix(sol)
+    scale = max(float(math.hypot(*v)) for k, v in ref.items() if k[0] in "FN")
+    size = max(math.hypot(*p) for p in sol.P.values())
+    assert abs(ref["C_A"]) <= 1e-9 * scale * size and abs(ref["C_Q"]) <= 1e-9 * scale * size
+
+    def close(got, want):
+        assert math.hypot(got[0] - want[0], got[1] - want[1]) <= 1e-9 * scale, (got, want)
+    close(f.pin("O2", "O2-A", FRAME), ref["F_O2"])
+    close(f.pin("A", "block A", "O2-A"), ref["F_A"])
+    close(f.pin("O4", "O4-P", FRAME), ref["F_O4"])
+    close(f.pin("P", "P-Q", "O4-P"), ref["F_P"])
+    close(f.pin("Q", "P-Q", "block Q"), ref["F_Q"])
+    ga, gq = (next(g for g in f.guides if g.point == p) for p in "AQ")
+    assert ga.by == "O4-P" and gq.by == FRAME
+    close(ga.force, ref["N_A"])
+    close(gq.force, ref["N_Q"])
+    assert abs(f.input_torque - ref["T"]) <= 1e-9 * scale * size

@@ -5,12 +5,13 @@ D'Alembert: each massive body carries its inertia force ``-m a_G`` at its centre
 and the couple ``-I alpha`` (:mod:`.bodies`); with its weight and the scene's loads the
 mechanism is then in equilibrium at the instant, and the pin forces follow group by group
 in the reverse order of the kinematic plan, each group statically determinate: a dyad's
-two links (:mod:`.dyad`), a link with its block on a fixed path (:mod:`.slider`), and last
+two links (:mod:`.dyad`), a link with its block on a guide (:mod:`.slider`), a block on
+a slotted lever with the lever (:mod:`.slotted`), and last
 the crank, whose moments give the driving torque (:mod:`.crank`). A point carried on a link
 needs no step of its own: its loads and the pins there act on the link.
 
-What is not written yet is refused in one line naming the step (a block on a moving guide,
-a cylinder, rolling, a peg, a yoke, a triad, two inputs): no guess.
+What is not written yet is refused in one line naming the step (a cylinder, rolling, a
+peg, a yoke, a triad, two inputs): no guess.
 
 Sign rule: see :mod:`.records` (the force on one body by the other; ccw positive; moments
 about the frame's origin).
@@ -19,23 +20,23 @@ about the frame's origin).
 from __future__ import annotations
 
 from ..errors import PolygonMethodError
-from . import carried, crank, dyad, slider
+from . import carried, crank, dyad, slider, slotted
 from .bodies import Ledger, Singular, centre, cross, gather
 from .records import (FRAME, Forces, ForceStep, GuideForce, Inertia, PinForce, block,
                       force_value, forces_dict)
 
 #: the force step of each kind of kinematic step: its room (``owns(st)``: the bodies its
 #: points act on; ``step(st, P, ledger, owners)``: its pin forces; ``covers(st)``, where
-#: present: whether it covers this step of its kind)
-ROOMS = {"crank": crank, "dyad": dyad, "slider": slider, "carried": carried}
+#: present: whether it covers this step of its kind; ``blocks(st)``, where present: the
+#: slider blocks of its group, each a body a mass may sit on)
+ROOMS = {"crank": crank, "dyad": dyad, "slider": slider, "carried": carried,
+         "slotted": slotted}
 
 __all__ = ["analyse", "Forces", "Inertia", "PinForce", "GuideForce", "ForceStep", "FRAME",
            "block", "centre", "cross", "Ledger", "forces_dict", "owners", "ROOMS",
            "force_value"]
 
 _NOT_YET = {
-    "slider": "a block sliding on a moving link",
-    "slotted": "a block sliding on a moving link",
     "cylinder": "a cylinder",
     "rolling": "rolling without slip",
     "wheel_centre": "a wheel's centre on a line",
@@ -50,7 +51,8 @@ _NOT_YET = {
 def _refuse(scene, st, what):
     raise PolygonMethodError(
         f"forces: {what} is not solved for forces yet (step {st.index + 1}, {st.title}); "
-        "the force analysis covers cranks, dyads, carried points and blocks on fixed paths",
+        "the force analysis covers cranks, dyads, carried points, blocks on fixed paths "
+        "and blocks sliding on moving links",
         file=scene.file, key=_key(scene))
 
 
@@ -76,15 +78,17 @@ def owners(scene, plan) -> dict:
                                  file=scene.file, key=_key(scene))
     own = {p: FRAME for p in scene.ground}
     fixed = frame_links(scene)
+    blocks = set()
     for st in plan.steps:
         room = ROOMS.get(st.kind)
         if room is None or not getattr(room, "covers", lambda s: True)(st):
             _refuse(scene, st, _NOT_YET.get(st.kind, f"a {st.kind} step"))
         own.update({p: FRAME if b in fixed else b for p, b in room.owns(st).items()})
-    for m in scene.masses:  # a mass on a block the plan does not slide on a fixed path
-        if m.block and own.get(m.body) != block(m.body):
-            raise PolygonMethodError(f"forces: {m.body} is a block on no fixed path: its "
-                                     "mass cannot be placed", file=scene.file,
+        blocks.update(getattr(room, "blocks", lambda s: ())(st))
+    for m in scene.masses:  # a mass on a block no group of the plan has
+        if m.block and m.body not in blocks:
+            raise PolygonMethodError(f"forces: {m.body} is a block no force step carries: "
+                                     "its mass cannot be placed", file=scene.file,
                                      key=f"[masses] {m.body}")
     return own
 

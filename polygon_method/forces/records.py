@@ -68,11 +68,13 @@ class GuideForce:
     """The guide's normal force on the block at ``point``: ``normal`` (N) along the unit
     ``n`` (the path's direction turned 90 deg ccw), acting through the block's pin (a
     frictionless guide; the block's loads all pass through its pin, so the guide adds no
-    couple)."""
+    couple). ``by``: the body the guide is, the frame for a fixed path, the link for a
+    block sliding on a moving link (which feels the opposite, at the block's pin)."""
 
     point: str
     normal: float
     n: tuple
+    by: str = FRAME
 
     @property
     def force(self) -> tuple:
@@ -148,7 +150,7 @@ def force_value(f: Forces, kind: str, name: str) -> float:
     if kind == "N":
         g = next((g for g in f.guides if g.point == name), None)
         if g is None:
-            raise SceneError(f"N_{name}: the block at {name} is on no fixed path")
+            raise SceneError(f"N_{name}: the block at {name} slides on no guide")
         return abs(g.normal)
     found = [p for p in f.pins if p.point == name]
     if len(found) != 1:
@@ -183,7 +185,7 @@ def forces_dict(f: Forces) -> dict:
                    for i in f.inertia},
         "pins": pins,
         "guides": {g.point: {"normal_force": g.normal + 0.0, "normal": _vec(g.n),
-                             "force": _vec(g.force)} for g in f.guides},
+                             "force": _vec(g.force), "by": g.by} for g in f.guides},
         "input_torque": f.input_torque + 0.0,
         "crank": f.crank,
         "shaking_force": _vec(f.shaking_force),
