@@ -50,6 +50,22 @@ def _body(name):
     return "the frame" if name == FRAME else name
 
 
+def _driver_lines(f, F, M, said):
+    """The driver's effort: the crank's torque, or a driving block's force along its guide,
+    and a second crank's torque."""
+    if f.driver == "block":
+        v = quiet(f.input_torque, F)
+        out = [f"input force on {f.crank} along its guide{said}: {fmt(abs(v))} N"
+               + ("" if not v else " along the guide's direction" if v > 0 else
+                  " against the guide's direction")]
+    else:
+        out = [f"input torque on {f.crank}{said}: {_moment(f.input_torque, M)}"]
+    if f.second_crank is not None:
+        out.append(f"input torque on {f.second_crank} (the second crank){said}: "
+                   f"{_moment(f.second_torque, M)}")
+    return out
+
+
 def forces_lines(sol) -> list:
     """The force analysis' lines of the ``solve`` report (empty without masses or gravity;
     one line when the plan has a step the analysis does not cover)."""
@@ -78,8 +94,7 @@ def forces_lines(sol) -> list:
         out.append(f"{p.point:<5} {p.on:<10} {_body(p.by):<10} {_vec(p.force, F)}")
     for g in f.guides:
         out.append(f"guide at {g.point}: normal force on block {g.point} {_vec(g.force, F)}")
-    out.append(f"input torque on {f.crank} (inertia, weights and loads): "
-               f"{_moment(f.input_torque, M)}")
+    out += _driver_lines(f, F, M, " (inertia, weights and loads)")
     out.append(f"shaking force on the frame: {_vec(f.shaking_force, F)}; shaking moment "
                f"about the origin: {_moment(f.shaking_moment, M)}")
     for st in f.steps:
@@ -136,6 +151,9 @@ def force_blocks(sol) -> list:
                 items.append(f"{name} = {_vec(val, F)}")
             elif name.startswith("T "):
                 items.append(f"{name} = {_moment(val, M)}")
+            elif name.startswith("F "):
+                items.append(f"{name} = {fmt(quiet(val, F))} N (+ along the guide's "
+                             "direction)")
             else:
                 items.append(f"{name} = {fmt(quiet(val, F))} N (along the guide's normal, "
                              "+ to its left)")
@@ -150,12 +168,16 @@ def force_blocks(sol) -> list:
                            "between it and the block; the lever's force balance the force "
                            "at its pivot; the block's the force at its pin",
                 "crank": "the frame holds the crank at its pivot; the moments about the "
-                         "pivot give the driving torque"}.get(st.kind, "")
+                         "pivot give the driving torque",
+                "second crank": "the frame holds the second crank at its pivot; the "
+                                "moments about the pivot give its own driving torque",
+                "block": "the block's force balance: along the guide the driver's force, "
+                         "across it the guide's normal force"}.get(st.kind, "")
         blocks.append(("p", f"Step {st.index + 1}, {st.title}: {head}."))
         blocks.append(("list", items))
     blocks.append(("h", "8. The driving torque and the frame"))
-    items = [f"input torque on {f.crank}: {_moment(f.input_torque, M)} (inertia, weights and "
-             "loads; its power balances theirs)",
+    items = [line + " (inertia, weights and loads; its power balances theirs)"
+             for line in _driver_lines(f, F, M, "")] + [
              f"shaking force (on the frame, through its pins and guides): "
              f"{_vec(f.shaking_force, F)}",
              f"shaking moment about the origin (with the driver's reaction): "

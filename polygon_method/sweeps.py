@@ -135,10 +135,14 @@ class SweepResult(Motion):
         except PolygonMethodError:
             return []
         n = np.shape(self.theta)
-        cols = [("torque_inertia", "N m", np.broadcast_to(f.input_torque, n)),
-                ("shake_x", "N", np.broadcast_to(f.shaking_force[0], n)),
-                ("shake_y", "N", np.broadcast_to(f.shaking_force[1], n)),
-                ("shake_moment", "N m", np.broadcast_to(f.shaking_moment, n))]
+        cols = [("torque_inertia", "N m", np.broadcast_to(f.input_torque, n))
+                if f.driver == "crank" else
+                ("force_inertia", "N", np.broadcast_to(f.input_torque, n))]
+        if f.second_crank is not None:
+            cols.append(("torque2_inertia", "N m", np.broadcast_to(f.second_torque, n)))
+        cols += [("shake_x", "N", np.broadcast_to(f.shaking_force[0], n)),
+                 ("shake_y", "N", np.broadcast_to(f.shaking_force[1], n)),
+                 ("shake_moment", "N m", np.broadcast_to(f.shaking_moment, n))]
         cols += [(f"N_{g.point}", "N", np.broadcast_to(g.normal, n)) for g in f.guides]
         cols += [(f"F_{p.point}_{p.on}_{p.by}".replace(" ", ""), "N",
                   np.broadcast_to(np.hypot(*p.force), n)) for p in f.pins]

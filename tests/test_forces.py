@@ -117,6 +117,21 @@ def _kin(sol, m):
     return at(sol.P), at(sol.V), at(sol.A), sol.Al[lk.key], sol.W[lk.key]
 
 
+def _driver_power(sc, sol, f):
+    """The drivers' power terms: T w of the crank (and of a second crank), or F vs of a
+    driving block (vs = v_X . u, the guide's unit u from the scene)."""
+    inp = sc.input
+    if inp.block is not None:
+        u = sc.slider(inp.block).u
+        v = sol.V[inp.block]
+        terms = [f.input_torque * (v[0] * u[0] + v[1] * u[1])]
+    else:
+        terms = [f.input_torque * sol.W[sc.link(inp.crank).key]]
+    if inp.second is not None:
+        terms.append(f.second_torque * sol.W[sc.link(inp.second.crank).key])
+    return terms
+
+
 def _body(m):
     return f"block {m.body}" if m.block else m.body
 
@@ -135,8 +150,7 @@ def test_power_balance_with_inertia(path, seed):
     sc = with_forces(load_scene(path), seed)
     sol = solve(sc)
     f = sol.forces
-    crank = sc.link(sc.input.crank).key
-    terms = [f.input_torque * sol.W[crank]]
+    terms = _driver_power(sc, sol, f)
     for ld in sc.loads:
         if ld.force is not None:
             v = sol.V[ld.target]
@@ -181,7 +195,15 @@ def _newton_euler(sol, f):
                 add(body, it[1], it[2])
             else:
                 couple(body, it[1])
-    couple(sc.link(sc.input.crank).key, f.input_torque)
+    inp = sc.input
+    if inp.block is not None:  # the driver pushes the block along its guide
+        u = sc.slider(inp.block).u
+        add(f"block {inp.block}", (f.input_torque * u[0], f.input_torque * u[1]),
+            sol.P[inp.block])
+    else:
+        couple(sc.link(inp.crank).key, f.input_torque)
+    if inp.second is not None:
+        couple(sc.link(inp.second.crank).key, f.second_torque)
     out = {}
     for m in sc.masses:
         G, v, a, al, w = _kin(sol, m)
@@ -565,11 +587,11 @@ def test_the_sweep_balances_power_at_every_angle(path):
     from polygon_method.forces import analyse
     from polygon_method.sweeps import sweep
     sc = with_forces(load_scene(path), 8)
-    res = sweep(sc, np.radians(np.arange(0.0, 360.0, 10.0)))
-    assert len(res) >= 9  # every case reaches a part of the turn
+    # a crank: every 10 deg of a turn; a driving block: its stroke
+    res = sweep(sc, None if sc.input.block else np.radians(np.arange(0.0, 360.0, 10.0)))
+    assert len(res) >= 9  # every case reaches a part of the turn (or of the stroke)
     f = analyse(res)
-    crank = sc.link(sc.input.crank).key
-    terms = [f.input_torque * res.W[crank]]
+    terms = _driver_power(sc, res, f)
     for ld in sc.loads:
         if ld.force is not None:
             v = res.V[ld.target]
@@ -584,7 +606,13 @@ def test_the_sweep_balances_power_at_every_angle(path):
         terms.append(-m.inertia * al * w)
     total = sum(terms)
     scale = sum(np.abs(t) for t in terms)
-    assert np.all(np.abs(total) <= 1e-9 * scale)
+    # a position at a toggle (a step's condition below 1e-6: Peaucellier's cell folded at
+    # 90 deg) is not held to 1e-9: its forces are as ill-determined as its condition says
+    fine = np.ones(len(res), dtype=bool)
+    for st in f.steps:
+        fine &= np.broadcast_to(st.condition, fine.shape) > 1e-6
+    assert fine.sum() >= 9
+    assert np.all((np.abs(total) <= 1e-9 * scale)[fine])
 
 
 # ----- checking force answers
@@ -883,3 +911,119 @@ def test_slotted_lever_against_the_matrix_method(name, angle):
     close(ga.force, ref["N_A"])
     close(gq.force, ref["N_Q"])
     assert abs(f.input_torque - ref["T"]) <= 1e-9 * scale * size
+
+
+# ----- a driving block, and two driving cranks
+
+def test_a_driving_block_held_against_gravity_is_the_derivative_of_the_potential_energy():
+    """The ellipse trammel driven by block A, crawling (1e-6 m/s): the driver's force along
+    the guide is dU/ds (virtual work), U from the closed-form positions (B = (0,
+    sqrt(L^2 - s^2)), G on AB produced) differentiated at 50 digits; and the words."""
+    from polygon_method.report import solution_text
+    raw = scene_table(load_scene(ROOT / "worked_problems" / "ellipse_trammel.toml"))
+    raw["input"]["vs_A"] = "1e-6 m/s right"
+    raw["input"]["as_A"] = "0 m/s^2"
+    raw["masses"] = {"AB": {"mass": 6, "distances": {"A": 420, "B": 120}, "turn": "cw",
+                            "gyration": 150}, "B": {"mass": "2.5 kg"}, "A": {"mass": 4}}
+    raw["gravity"] = {}
+    raw.pop("answers", None)
+    sc = scene_from_table(raw)
+    sol = solve(sc)
+    f = sol.forces
+    ab = next(m for m in sc.masses if m.body == "AB")
+    lam, mu = mpmath.mpf(ab.lam), mpmath.mpf(ab.mu)
+    mpmath.mp.dps = 50
+    L, g = mpmath.mpf("0.5"), mpmath.mpf("9.81")
+
+    def U(s):
+        A, B = (s, 0), (0, mpmath.sqrt(L ** 2 - s ** 2))
+        yG = A[1] + lam * (B[1] - A[1]) + mu * (B[0] - A[0])
+        return 6 * g * yG + mpmath.mpf("2.5") * g * B[1]
+    want = mpmath.diff(U, mpmath.mpf("0.3"))
+    assert f.driver == "block" and f.crank == "block A"
+    assert abs(f.input_torque - float(want)) <= 1e-9 * abs(float(want))
+    # the guide of A carries the weights the vertical guide does not: N_A = the total weight
+    na = next(g.normal for g in f.guides if g.point == "A")
+    assert abs(na - 12.5 * 9.81) <= 1e-9 * 12.5 * 9.81
+    side = "along" if want > 0 else "against"
+    assert (f"input force on block A along its guide (inertia, weights and loads): "
+            f"{abs(float(want)):.4g} N {side} the guide's direction") in solution_text(sol)
+    d = sol.to_dict()["forces"]
+    assert d["block"] == "block A" and d["input_force"] == f.input_torque
+
+
+def _five_bar_matrix(sol):
+    """The matrix method on the five-bar A-B-C-D-E with two driven cranks AB and ED: the
+    four links' Newton-Euler equations (moments about the origin) as one 12 x 12 system in
+    the pin forces at A, B, C, D, E and the two torques; loads at P act on BC."""
+    import numpy as np
+    sc, P, g = sol.scene, sol.P, sol.scene.gravity
+    body = {"AB": 0, "ED": 1, "BC": 2, "CD": 3}
+    M, rhs = np.zeros((12, 12)), np.zeros(12)
+
+    def force(b, col, at, sign=1.0):
+        i, (x, y) = 3 * body[b], at
+        M[i, col] += sign
+        M[i + 1, col + 1] += sign
+        M[i + 2, col] -= sign * y
+        M[i + 2, col + 1] += sign * x
+
+    def known(b, F, at=(0.0, 0.0), c=0.0):
+        i = 3 * body[b]
+        rhs[i] -= F[0]
+        rhs[i + 1] -= F[1]
+        rhs[i + 2] -= at[0] * F[1] - at[1] * F[0] + c
+    force("AB", 0, P["A"])                          # on AB by the frame
+    force("BC", 2, P["B"]), force("AB", 2, P["B"], -1.0)   # on BC by AB
+    force("CD", 4, P["C"]), force("BC", 4, P["C"], -1.0)   # on CD by BC
+    force("CD", 6, P["D"]), force("ED", 6, P["D"], -1.0)   # on CD by ED
+    force("ED", 8, P["E"])                          # on ED by the frame
+    M[2, 10] = 1.0                                  # T1 on AB
+    M[5, 11] = 1.0                                  # T2 on ED
+    for ms in sc.masses:
+        G, v, a, al, w = _kin(sol, ms)
+        known({"DE": "ED"}.get(ms.body, ms.body),
+              (ms.mass * (g.g * g.direction[0] - a[0]), ms.mass * (g.g * g.direction[1] - a[1])),
+              G, -ms.inertia * al)
+    for ld in sc.loads:
+        if ld.force is not None:
+            known("BC", ld.force, P[ld.target])
+        else:
+            known({"DE": "ED"}.get(ld.target, ld.target), (0.0, 0.0), c=ld.torque)
+    x = np.linalg.solve(M, rhs)
+    return {"A": x[0:2], "B": x[2:4], "C": x[4:6], "D": x[6:8], "E": x[8:10], "T1": x[10],
+            "T2": x[11]}
+
+
+@pytest.mark.parametrize("angle", [60, 100, 250])
+def test_two_driving_cranks_against_the_matrix_method(angle):
+    """Both torques of the five-bar (the power balance gives only their weighted sum)."""
+    sc0 = load_scene(ROOT / "worked_problems" / "five_bar_two_inputs.toml")
+    raw = scene_table(sc0)
+    raw["input"]["angle"] = angle
+    raw["input"]["acceleration"] = "30 rad/s^2 cw"
+    raw["input"]["second"]["acceleration"] = "12 rad/s^2 ccw"
+    raw["masses"] = {"AB": {"mass": 1.5, "along": 25, "gyration": 20},
+                     "BC": {"mass": 3, "distances": {"B": 80, "C": 75}, "turn": "ccw",
+                            "gyration": 50},
+                     "CD": {"mass": 2.5, "gyration": 45}, "DE": {"mass": 1, "inertia": 4e-4}}
+    raw["gravity"] = {"direction": 280}
+    raw["loads"] = {"P": {"force": [40, -25]}, "CD": {"torque": "3 N m ccw"}}
+    raw.pop("answers", None)
+    sol = solve(scene_from_table(raw))
+    f = sol.forces
+    ref = _five_bar_matrix(sol)
+    scale = max(float(math.hypot(*ref[k])) for k in "ABCDE")
+    size = max(math.hypot(*p) for p in sol.P.values())
+
+    def close(got, want):
+        assert math.hypot(got[0] - want[0], got[1] - want[1]) <= 1e-9 * scale, (got, want)
+    close(f.pin("A", "AB", FRAME), ref["A"])
+    close(f.pin("B", "BC", "AB"), ref["B"])
+    close(f.pin("C", "CD", "BC"), ref["C"])
+    close(f.pin("D", "CD", "DE"), ref["D"])
+    close(f.pin("E", "DE", FRAME), ref["E"])
+    assert f.second_crank == "DE" or f.second_crank == "ED"
+    assert abs(f.input_torque - ref["T1"]) <= 1e-9 * scale * size
+    assert abs(f.second_torque - ref["T2"]) <= 1e-9 * scale * size
+    assert abs(ref["T2"]) > 1e-3 * scale * size  # both cranks work

@@ -7,11 +7,13 @@ mechanism is then in equilibrium at the instant, and the pin forces follow group
 in the reverse order of the kinematic plan, each group statically determinate: a dyad's
 two links (:mod:`.dyad`), a link with its block on a guide (:mod:`.slider`), a block on
 a slotted lever with the lever (:mod:`.slotted`), and last
-the crank, whose moments give the driving torque (:mod:`.crank`). A point carried on a link
+the driver: the crank, whose moments give the driving torque (:mod:`.crank`; a second
+driving crank the same, in its place: its own torque), or a driving block, whose force
+balance gives the driver's force along its guide (:mod:`.driver`). A point carried on a link
 needs no step of its own: its loads and the pins there act on the link.
 
 What is not written yet is refused in one line naming the step (a cylinder, rolling, a
-peg, a yoke, a triad, two inputs): no guess.
+peg, a yoke, a triad): no guess.
 
 Sign rule: see :mod:`.records` (the force on one body by the other; ccw positive; moments
 about the frame's origin).
@@ -20,6 +22,7 @@ about the frame's origin).
 from __future__ import annotations
 
 from ..errors import PolygonMethodError
+from . import driver
 from . import carried, crank, dyad, slider, slotted
 from .bodies import Ledger, Singular, centre, cross, gather
 from .records import (FRAME, Forces, ForceStep, GuideForce, Inertia, PinForce, block,
@@ -30,7 +33,7 @@ from .records import (FRAME, Forces, ForceStep, GuideForce, Inertia, PinForce, b
 #: present: whether it covers this step of its kind; ``blocks(st)``, where present: the
 #: slider blocks of its group, each a body a mass may sit on)
 ROOMS = {"crank": crank, "dyad": dyad, "slider": slider, "carried": carried,
-         "slotted": slotted}
+         "slotted": slotted, "block": driver, "second crank": crank}
 
 __all__ = ["analyse", "Forces", "Inertia", "PinForce", "GuideForce", "ForceStep", "FRAME",
            "block", "centre", "cross", "Ledger", "forces_dict", "owners", "ROOMS",
@@ -44,7 +47,6 @@ _NOT_YET = {
     "peg": "a peg in slots",
     "yoke": "a yoke",
     "triad": "a triad (class-III group)",
-    "second_crank": "a second driving crank",
 }
 
 
@@ -72,10 +74,6 @@ def owners(scene, plan) -> dict:
     a ground point, the crank for its tip, a dyad's first link for its point, the block
     for a slider's point, the link for a point carried on it. Refuses a plan with a step
     the force analysis does not cover."""
-    if scene.input.second is not None:
-        raise PolygonMethodError("forces: two driving cranks: one balance does not give "
-                                 "two driving torques; the force analysis needs one input",
-                                 file=scene.file, key=_key(scene))
     own = {p: FRAME for p in scene.ground}
     fixed = frame_links(scene)
     blocks = set()
@@ -101,7 +99,7 @@ def analyse(motion) -> Forces:
     records, led = gather(scene, motion, own)
     P = motion.P
     pins, guides, steps = [], [], []
-    torque = None
+    torque = second = None
     for st in reversed(plan.steps):
         try:
             p, g, rec, t = ROOMS[st.kind].step(st, P, led, own)
@@ -114,8 +112,14 @@ def analyse(motion) -> Forces:
         if rec is not None:
             steps.append(rec)
         if t is not None:
-            torque = t
-    fx, fy, m = led.of(FRAME)
-    return Forces(records, tuple(pins), tuple(guides), torque, (fx, fy), m - torque,
+            if st.kind == "second crank":
+                second = t
+            else:
+                torque = t
+    fx, fy, m = led.of(FRAME)  # the drivers' reactions are the frame's too
+    inp = scene.input
+    return Forces(records, tuple(pins), tuple(guides), torque, (fx, fy), m,
                   tuple(steps), {k: tuple(v) for k, v in led.applied.items()},
-                  scene.input.crank)
+                  inp.crank if inp.block is None else block(inp.block),
+                  "crank" if inp.block is None else "block", second,
+                  None if inp.second is None else inp.second.crank)

@@ -110,7 +110,9 @@ class Forces:
 
     ``inertia`` (:class:`Inertia` per massive body), ``pins`` (:class:`PinForce`, one per
     pair of bodies at a pin, in the order solved), ``guides`` (:class:`GuideForce`),
-    ``input_torque`` (N m, on the crank by its driver, ccw positive, inertia included),
+    ``input_torque`` (N m, on the crank by its driver, ccw positive, inertia included; for a
+    driving block, ``driver == "block"``, the force on it by its driver, N, signed along
+    its guide's direction),
     ``shaking_force`` (the resultant force the mechanism exerts on the frame, through its
     pins and guides, and a gas force's push on the cylinder's cover: the gas acts between
     the piston and the frame) and ``shaking_moment`` (its moment about the frame's origin, with the
@@ -127,6 +129,11 @@ class Forces:
     steps: tuple
     applied: dict
     crank: str
+    #: "crank" (a driving torque) or "block" (a driving force along the block's guide)
+    driver: str = "crank"
+    #: a second driving crank's torque (N m, ccw positive) and its link, or None
+    second_torque: float | None = None
+    second_crank: str | None = None
 
     def pin(self, point: str, on: str, by: str | None = None):
         """The force on body ``on`` at ``point`` (by ``by``, when the pin joins more than two
@@ -186,8 +193,10 @@ def forces_dict(f: Forces) -> dict:
         "pins": pins,
         "guides": {g.point: {"normal_force": g.normal + 0.0, "normal": _vec(g.n),
                              "force": _vec(g.force), "by": g.by} for g in f.guides},
-        "input_torque": f.input_torque + 0.0,
-        "crank": f.crank,
+        ("input_torque" if f.driver == "crank" else "input_force"): f.input_torque + 0.0,
+        ("crank" if f.driver == "crank" else "block"): f.crank,
+        **({} if f.second_crank is None else
+           {"second": {"crank": f.second_crank, "input_torque": f.second_torque + 0.0}}),
         "shaking_force": _vec(f.shaking_force),
         "shaking_moment": f.shaking_moment + 0.0,
         "steps": [{"step": s.index + 1, "kind": s.kind, "title": s.title,
