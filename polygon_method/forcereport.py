@@ -53,7 +53,12 @@ def _body(name):
 def _driver_lines(f, F, M, said):
     """The driver's effort: the crank's torque, or a driving block's force along its guide,
     and a second crank's torque."""
-    if f.driver == "block":
+    if f.driver == "cylinder":
+        v = quiet(f.input_torque, F)
+        out = [f"input force in cylinder {f.crank}{said}: {fmt(abs(v))} N"
+               + ("" if not v else " pushing its ends apart" if v > 0 else
+                  " pulling its ends together")]
+    elif f.driver == "block":
         v = quiet(f.input_torque, F)
         out = [f"input force on {f.crank} along its guide{said}: {fmt(abs(v))} N"
                + ("" if not v else " along the guide's direction" if v > 0 else
@@ -171,6 +176,8 @@ def force_blocks(sol) -> list:
                          "pivot give the driving torque",
                 "second crank": "the frame holds the second crank at its pivot; the "
                                 "moments about the pivot give its own driving torque",
+                "cylinder": "a two-force member: its force along its line, pushing (or "
+                            "pulling) the bodies at its ends",
                 "block": "the block's force balance: along the guide the driver's force, "
                          "across it the guide's normal force"}.get(st.kind, "")
         blocks.append(("p", f"Step {st.index + 1}, {st.title}: {head}."))

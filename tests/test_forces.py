@@ -26,6 +26,7 @@ import random
 from pathlib import Path
 
 import mpmath
+import numpy as np
 import pytest
 
 from polygon_method.compiler import compile_plan
@@ -121,7 +122,13 @@ def _driver_power(sc, sol, f):
     """The drivers' power terms: T w of the crank (and of a second crank), or F vs of a
     driving block (vs = v_X . u, the guide's unit u from the scene)."""
     inp = sc.input
-    if inp.block is not None:
+    if f.driver == "cylinder":  # the force in it times its rate of extension
+        cyl = next(c for c in sc.cylinders if c.key == f.crank)
+        (kx, ky), (rx, ry) = sol.P[cyl.barrel], sol.P[cyl.rod]
+        (vkx, vky), (vrx, vry) = sol.V[cyl.barrel], sol.V[cyl.rod]
+        n = np.hypot(rx - kx, ry - ky)
+        terms = [f.input_torque * ((vrx - vkx) * (rx - kx) + (vry - vky) * (ry - ky)) / n]
+    elif inp.block is not None:
         u = sc.slider(inp.block).u
         v = sol.V[inp.block]
         terms = [f.input_torque * (v[0] * u[0] + v[1] * u[1])]
@@ -196,7 +203,9 @@ def _newton_euler(sol, f):
             else:
                 couple(body, it[1])
     inp = sc.input
-    if inp.block is not None:  # the driver pushes the block along its guide
+    if f.driver == "cylinder":  # the cylinder drives: its force is among the pins
+        pass
+    elif inp.block is not None:  # the driver pushes the block along its guide
         u = sc.slider(inp.block).u
         add(f"block {inp.block}", (f.input_torque * u[0], f.input_torque * u[1]),
             sol.P[inp.block])
@@ -587,8 +596,9 @@ def test_the_sweep_balances_power_at_every_angle(path):
     from polygon_method.forces import analyse
     from polygon_method.sweeps import sweep
     sc = with_forces(load_scene(path), 8)
-    # a crank: every 10 deg of a turn; a driving block: its stroke
-    res = sweep(sc, None if sc.input.block else np.radians(np.arange(0.0, 360.0, 10.0)))
+    # a crank: every 5 deg of a turn (from 3 deg: a parallel crank's dead points, where a
+    # sweep's force analysis is refused, are at whole fives); a driving block: its stroke
+    res = sweep(sc, None if sc.input.block else np.radians(np.arange(3.0, 360.0, 5.0)))
     assert len(res) >= 9  # every case reaches a part of the turn (or of the stroke)
     f = analyse(res)
     terms = _driver_power(sc, res, f)
@@ -1027,3 +1037,78 @@ def test_two_driving_cranks_against_the_matrix_method(angle):
     assert abs(f.input_torque - ref["T1"]) <= 1e-9 * scale * size
     assert abs(f.second_torque - ref["T2"]) <= 1e-9 * scale * size
     assert abs(ref["T2"]) > 1e-3 * scale * size  # both cranks work
+
+
+# ----- a hydraulic cylinder
+
+def _tipper(speed):
+    raw = scene_table(load_scene(ROOT / "worked_problems" / "tipper_cylinder.toml"))
+    raw["masses"] = {"QR": {"mass": 800, "distances": {"Q": 1300, "R": 700}, "turn": "ccw",
+                            "gyration": 600}}
+    raw["gravity"] = {}
+    raw.pop("answers", None)
+    if speed is None:  # the crank driven instead (the cylinder then free)
+        raw["input"].pop("vs_OR")
+        raw["input"]["speed"] = "1e-7 rad/s cw"
+    else:
+        raw["input"]["vs_OR"] = speed
+    return scene_from_table(raw)
+
+
+def _tipper_virtual_work(sc, theta_deg):
+    """(dU/dtheta, dL/dtheta) of the tipper at 50 digits: U the body's potential energy, L
+    the cylinder's length, from the closed-form positions (R = Q + 0.8 (cos, sin))."""
+    m = sc.masses[0]
+    lam, mu = mpmath.mpf(m.lam), mpmath.mpf(m.mu)
+    mpmath.mp.dps = 50
+    Q, O, r = (0, 0), (mpmath.mpf("-1.5"), mpmath.mpf("-0.3")), mpmath.mpf("0.8")
+
+    def R(t):
+        return (Q[0] + r * mpmath.cos(t), Q[1] + r * mpmath.sin(t))
+
+    def U(t):
+        (rx, ry) = R(t)
+        return 800 * mpmath.mpf("9.81") * (Q[1] + lam * (ry - Q[1]) + mu * (rx - Q[0]))
+
+    def L(t):
+        (rx, ry) = R(t)
+        return mpmath.sqrt((rx - O[0]) ** 2 + (ry - O[1]) ** 2)
+    th = mpmath.radians(theta_deg)
+    return mpmath.diff(U, th), mpmath.diff(L, th)
+
+
+def test_a_driving_cylinder_against_virtual_work():
+    """The tipper raised slowly (1e-6 m/s) by its cylinder: the force in the cylinder is
+    dU/dL = (dU/dtheta) / (dL/dtheta) (virtual work, 50 digits); the crank is not driven;
+    the pins at R and O carry the cylinder's force along its line; and the words."""
+    from polygon_method.report import solution_text
+    sc = _tipper("1e-6 m/s extending")
+    sol = solve(sc)
+    f = sol.forces
+    dU, dL = _tipper_virtual_work(sc, 150)
+    want = float(dU / dL)
+    assert f.driver == "cylinder" and f.crank == "O-R"
+    assert abs(f.input_torque - want) <= 1e-9 * abs(want)
+    crank_step = next(s for s in f.steps if s.kind == "crank")
+    assert abs(dict(crank_step.found)["T on QR"]) <= 1e-9 * abs(want) * 0.8
+    (rx, ry), (ox, oy) = sol.P["R"], sol.P["O"]
+    n = math.hypot(rx - ox, ry - oy)
+    fr = f.pin("R", "QR", "O-R")  # the cylinder pushes the body out along O -> R
+    assert math.hypot(fr[0] - want * (rx - ox) / n, fr[1] - want * (ry - oy) / n) <= \
+        1e-9 * abs(want)
+    line = next(ln for ln in solution_text(sol).splitlines()
+                if ln.startswith("input force in cylinder O-R (inertia, weights and loads): "))
+    assert line.endswith(" N pushing its ends apart")
+    assert float(line.split(": ")[1].split(" ")[0]) == pytest.approx(abs(want), rel=5e-4)
+    assert sol.to_dict()["forces"]["cylinder"] == "O-R"
+
+
+def test_a_free_cylinder_carries_nothing():
+    """The tipper's crank driven (1e-7 rad/s) with the cylinder free: the cylinder's force
+    is zero and the crank's torque is dU/dtheta."""
+    sc = _tipper(None)
+    f = solve(sc).forces
+    dU, _ = _tipper_virtual_work(sc, 150)
+    assert f.driver == "crank"
+    assert f.pin("R", "O-R") == (0.0, 0.0)
+    assert abs(f.input_torque - float(dU)) <= 1e-9 * abs(float(dU))

@@ -12,8 +12,11 @@ driving crank the same, in its place: its own torque), or a driving block, whose
 balance gives the driver's force along its guide (:mod:`.driver`). A point carried on a link
 needs no step of its own: its loads and the pins there act on the link.
 
-What is not written yet is refused in one line naming the step (a cylinder, rolling, a
-peg, a yoke, a triad): no guess.
+A hydraulic cylinder is a two-force member (:mod:`.cylinder`); where the motion is given
+on it, it is the driver and its force the driver's effort.
+
+What is not written yet is refused in one line naming the step (rolling, a peg, a yoke, a
+triad): no guess.
 
 Sign rule: see :mod:`.records` (the force on one body by the other; ccw positive; moments
 about the frame's origin).
@@ -23,8 +26,8 @@ from __future__ import annotations
 
 from ..errors import PolygonMethodError
 from . import driver
-from . import carried, crank, dyad, slider, slotted
-from .bodies import Ledger, Singular, centre, cross, gather
+from . import carried, crank, cylinder, dyad, slider, slotted
+from .bodies import Ledger, Singular, any_zero, centre, cross, gather
 from .records import (FRAME, Forces, ForceStep, GuideForce, Inertia, PinForce, block,
                       force_value, forces_dict)
 
@@ -33,14 +36,14 @@ from .records import (FRAME, Forces, ForceStep, GuideForce, Inertia, PinForce, b
 #: present: whether it covers this step of its kind; ``blocks(st)``, where present: the
 #: slider blocks of its group, each a body a mass may sit on)
 ROOMS = {"crank": crank, "dyad": dyad, "slider": slider, "carried": carried,
-         "slotted": slotted, "block": driver, "second crank": crank}
+         "slotted": slotted, "block": driver, "second crank": crank,
+         "cylinder": cylinder}
 
 __all__ = ["analyse", "Forces", "Inertia", "PinForce", "GuideForce", "ForceStep", "FRAME",
            "block", "centre", "cross", "Ledger", "forces_dict", "owners", "ROOMS",
            "force_value"]
 
 _NOT_YET = {
-    "cylinder": "a cylinder",
     "rolling": "rolling without slip",
     "wheel_centre": "a wheel's centre on a line",
     "rack": "a rack on a pinion",
@@ -97,7 +100,51 @@ def analyse(motion) -> Forces:
     scene, plan = motion.scene, motion.plan
     own = owners(scene, plan)
     records, led = gather(scene, motion, own)
-    P = motion.P
+    inp = scene.input
+    driving = next((st for st in plan.steps if st.kind == "cylinder"
+                    and cylinder.drives(scene, st)), None)
+    if driving is not None:  # linear in the cylinder's force: F = -T0 / T1
+        t0 = _walk(scene, plan, motion.P, _copy(led), own)[3]
+        unit = Ledger()
+        unit.given[driving.key] = 1.0
+        t1 = _walk(scene, plan, motion.P, unit, own)[3]
+        size = max(driving.rho, 1e-300)
+        cond = abs(t1) / size
+        if isinstance(cond, float):
+            cond = min(cond, 1.0)
+        else:
+            import numpy as np
+            cond = np.minimum(cond, 1.0)
+        if any_zero(t1):
+            raise PolygonMethodError(
+                f"forces: the line of cylinder {driving.key} passes through the crank's "
+                f"pivot: it cannot turn the crank, its force is not determined here (step "
+                f"{driving.index + 1}, {driving.title})", file=scene.file)
+        led.given[driving.key] = -t0 / t1
+        led.conditions[driving.key] = cond
+    pins, guides, steps, torque, second = _walk(scene, plan, motion.P, led, own)
+    fx, fy, m = led.of(FRAME)  # the drivers' reactions are the frame's too
+    if driving is not None:
+        name, kind, effort = driving.key, "cylinder", led.given[driving.key]
+    elif inp.block is not None:
+        name, kind, effort = block(inp.block), "block", torque
+    else:
+        name, kind, effort = inp.crank, "crank", torque
+    return Forces(records, tuple(pins), tuple(guides), effort, (fx, fy), m,
+                  tuple(steps), {k: tuple(v) for k, v in led.applied.items()},
+                  name, kind, second, None if inp.second is None else inp.second.crank)
+
+
+def _copy(led):
+    """A ledger of the same known forces (the first walk must not change the one kept)."""
+    out = Ledger()
+    out.total = dict(led.total)
+    return out
+
+
+def _walk(scene, plan, P, led, own):
+    """The plan's steps in reverse, each group solved from ``led``: (pins, guides, force
+    steps, the crank's torque, a second crank's torque)."""
     pins, guides, steps = [], [], []
     torque = second = None
     for st in reversed(plan.steps):
@@ -116,10 +163,4 @@ def analyse(motion) -> Forces:
                 second = t
             else:
                 torque = t
-    fx, fy, m = led.of(FRAME)  # the drivers' reactions are the frame's too
-    inp = scene.input
-    return Forces(records, tuple(pins), tuple(guides), torque, (fx, fy), m,
-                  tuple(steps), {k: tuple(v) for k, v in led.applied.items()},
-                  inp.crank if inp.block is None else block(inp.block),
-                  "crank" if inp.block is None else "block", second,
-                  None if inp.second is None else inp.second.crank)
+    return pins, guides, steps, torque, second

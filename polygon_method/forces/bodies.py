@@ -52,6 +52,9 @@ class Ledger:
     def __init__(self):
         self.total = {}
         self.applied = {}
+        #: a driving cylinder's force (N), by its key, and the condition it was found with
+        self.given = {}
+        self.conditions = {}
 
     def add(self, body, fx, fy, x, y, what=None):
         """A force ``(fx, fy)`` acting at ``(x, y)`` on ``body``."""

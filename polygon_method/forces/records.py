@@ -129,7 +129,8 @@ class Forces:
     steps: tuple
     applied: dict
     crank: str
-    #: "crank" (a driving torque) or "block" (a driving force along the block's guide)
+    #: "crank" (a driving torque), "block" (a driving force along the block's guide) or
+    #: "cylinder" (the force in the cylinder ``crank`` names, + pushing its ends apart)
     driver: str = "crank"
     #: a second driving crank's torque (N m, ccw positive) and its link, or None
     second_torque: float | None = None
@@ -194,7 +195,7 @@ def forces_dict(f: Forces) -> dict:
         "guides": {g.point: {"normal_force": g.normal + 0.0, "normal": _vec(g.n),
                              "force": _vec(g.force), "by": g.by} for g in f.guides},
         ("input_torque" if f.driver == "crank" else "input_force"): f.input_torque + 0.0,
-        ("crank" if f.driver == "crank" else "block"): f.crank,
+        f.driver: f.crank,
         **({} if f.second_crank is None else
            {"second": {"crank": f.second_crank, "input_torque": f.second_torque + 0.0}}),
         "shaking_force": _vec(f.shaking_force),
