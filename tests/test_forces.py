@@ -32,7 +32,7 @@ import pytest
 from polygon_method.compiler import compile_plan
 from polygon_method.errors import PolygonMethodError, SceneError
 from polygon_method.forces import FRAME, owners
-from polygon_method.scene import FixedPath, GuideSlider, load_scene, parse_scene, scene_from_table, scene_table
+from polygon_method.scene import FixedPath, GuideSlider, YokeSlot, load_scene, parse_scene, scene_from_table, scene_table
 from polygon_method.solution import solve
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -77,7 +77,7 @@ def with_forces(scene, seed):
                           "turn": "ccw" if mu > 0 else "cw",
                           "gyration": lk.length * rnd.uniform(0.1, 0.6) / unit}
     for s in scene.sliders:
-        if isinstance(s, (FixedPath, GuideSlider)) and not s.slot:
+        if isinstance(s, (FixedPath, GuideSlider, YokeSlot)) and s.point not in masses:
             masses[s.point] = {"mass": f"{rnd.uniform(0.5, 8):.4f} kg"}
     raw["masses"] = masses
     raw["gravity"] = {"direction": rnd.uniform(0, 360), "g": "9.81 m/s^2"}
@@ -148,7 +148,8 @@ def test_the_cases_are_there():
     kinds = set()
     for c in CASES:
         kinds |= {st.kind for st in compile_plan(load_scene(c.values[0])).steps}
-    assert {"crank", "dyad", "slider", "carried", "slotted"} <= kinds and len(CASES) >= 15
+    assert {"crank", "dyad", "slider", "carried", "slotted", "block", "second crank",
+            "cylinder", "yoke", "peg"} <= kinds and len(CASES) >= 15
 
 
 @pytest.mark.parametrize("path", CASES)
@@ -196,6 +197,10 @@ def _newton_euler(sol, f):
     for gd in f.guides:  # the guide (the frame, or a moving link) feels it back
         add(f"block {gd.point}", gd.force, sol.P[gd.point])
         add(gd.by, (-gd.force[0], -gd.force[1]), sol.P[gd.point])
+        if gd.couple:  # a translating yoke's path holds it from turning
+            couple(f"block {gd.point}", gd.couple)
+            if gd.by != FRAME:
+                couple(gd.by, -gd.couple)
     for body, items in f.applied.items():
         for it in items:
             if len(it) == 3:
@@ -1112,3 +1117,58 @@ def test_a_free_cylinder_carries_nothing():
     assert f.driver == "crank"
     assert f.pin("R", "O-R") == (0.0, 0.0)
     assert abs(f.input_torque - float(dU)) <= 1e-9 * abs(float(dU))
+
+
+# ----- the Scotch yoke
+
+@pytest.mark.parametrize("theta", [40, 130, 250])
+def test_scotch_yoke_closed_forms(theta):
+    """The yoke of mass M on a horizontal path, a load F along it, the pin's block of mass
+    m in the vertical slot, gravity down: the yoke's x = r cos(theta) (50 digits); the slot
+    pushes the yoke against the load and inertia along the path, the crank's torque is
+    that push's power and the block's over omega, the path carries the yoke's weight, and
+    holds it with the couple of the slot's push about Y."""
+    text = """
+units = "mm"
+[ground]
+O = [0, 0]
+[links]
+OP = 80
+[sliders]
+Y = { path = "horizontal", through = [0, -30] }
+P = { along = "block Y", direction = "vertical" }
+[input]
+crank = "OP"
+angle = %s
+speed = "300 rpm ccw"
+acceleration = "40 rad/s^2 cw"
+[masses]
+Y = { mass = "6 kg" }
+P = { mass = "0.5 kg" }
+[gravity]
+[loads]
+Y = { force = "300 N", direction = 180 }
+""" % theta
+    sc = parse_scene(text)
+    sol = solve(sc)
+    f = sol.forces
+    mpmath.mp.dps = 50
+    r, th = mpmath.mpf("0.08"), mpmath.radians(theta)
+    w, al = 2 * mpmath.pi * 300 / 60, mpmath.mpf(-40)
+    a = -r * (w ** 2 * mpmath.cos(th) + al * mpmath.sin(th))  # the yoke's acceleration
+    net = -300 - 6 * a  # the load and the inertia on the yoke, along +x
+    # the pin's block: weight and inertia at P = r (cos, sin)
+    vP = (-w * r * mpmath.sin(th), w * r * mpmath.cos(th))
+    aP = (-w ** 2 * r * mpmath.cos(th) - al * r * mpmath.sin(th),
+          -w ** 2 * r * mpmath.sin(th) + al * r * mpmath.cos(th))
+    on_block = (-mpmath.mpf("0.5") * aP[0], -mpmath.mpf("0.5") * (aP[1] + mpmath.mpf("9.81")))
+    # T w + net v_Y + (the block's forces) . v_P = 0, v_Y = -r w sin(theta)
+    T = float(-(net * -r * w * mpmath.sin(th) + on_block[0] * vP[0] + on_block[1] * vP[1]) / w)
+    assert abs(f.input_torque - T) <= 1e-9 * abs(float(net)) * 0.08
+    slot = next(g for g in f.guides if g.point == "P")
+    path = next(g for g in f.guides if g.point == "Y")
+    # the block pushes the yoke with -slot.force: it must balance net along the path
+    assert abs(-slot.force[0] + float(net)) <= 1e-9 * abs(float(net))
+    assert slot.by == "block Y" and abs(path.normal - 6 * 9.81) <= 1e-9 * 6 * 9.81
+    (px, py), (yx, yy) = sol.P["P"], sol.P["Y"]
+    assert abs(path.couple - (py - yy) * -slot.force[0]) <= 1e-9 * abs(float(net)) * 0.2

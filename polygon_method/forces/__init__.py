@@ -26,7 +26,7 @@ from __future__ import annotations
 
 from ..errors import PolygonMethodError
 from . import driver
-from . import carried, crank, cylinder, dyad, slider, slotted
+from . import carried, crank, cylinder, dyad, peg, slider, slotted, yoke
 from .bodies import Ledger, Singular, any_zero, centre, cross, gather
 from .records import (FRAME, Forces, ForceStep, GuideForce, Inertia, PinForce, block,
                       force_value, forces_dict)
@@ -37,7 +37,7 @@ from .records import (FRAME, Forces, ForceStep, GuideForce, Inertia, PinForce, b
 #: slider blocks of its group, each a body a mass may sit on)
 ROOMS = {"crank": crank, "dyad": dyad, "slider": slider, "carried": carried,
          "slotted": slotted, "block": driver, "second crank": crank,
-         "cylinder": cylinder}
+         "cylinder": cylinder, "yoke": yoke, "peg": peg}
 
 __all__ = ["analyse", "Forces", "Inertia", "PinForce", "GuideForce", "ForceStep", "FRAME",
            "block", "centre", "cross", "Ledger", "forces_dict", "owners", "ROOMS",
@@ -47,8 +47,6 @@ _NOT_YET = {
     "rolling": "rolling without slip",
     "wheel_centre": "a wheel's centre on a line",
     "rack": "a rack on a pinion",
-    "peg": "a peg in slots",
-    "yoke": "a yoke",
     "triad": "a triad (class-III group)",
 }
 

@@ -68,13 +68,22 @@ class GuideForce:
     """The guide's normal force on the block at ``point``: ``normal`` (N) along the unit
     ``n`` (the path's direction turned 90 deg ccw), acting through the block's pin (a
     frictionless guide; the block's loads all pass through its pin, so the guide adds no
-    couple). ``by``: the body the guide is, the frame for a fixed path, the link for a
+    couple, except a yoke's, see ``couple``). ``by``: the body the guide is, the frame for a fixed path, the link for a
     block sliding on a moving link (which feels the opposite, at the block's pin)."""
 
     point: str
     normal: float
     n: tuple
     by: str = FRAME
+    #: the guide's couple on the block (N m, ccw): a translating yoke's path keeps it from
+    #: turning; 0 for a block whose loads all pass through its pin
+    couple: float = 0.0
+    #: the slot's name where a point slides in two (a peg: ``P_OA``); else the point
+    name: str = ""
+
+    @property
+    def key(self) -> str:
+        return self.name or self.point
 
     @property
     def force(self) -> tuple:
@@ -156,7 +165,7 @@ def force_value(f: Forces, kind: str, name: str) -> float:
     """The size of what an answer key names: ``F`` the force at pin ``name`` (a pin joining
     two bodies), ``N`` the guide's normal force on the block at ``name``."""
     if kind == "N":
-        g = next((g for g in f.guides if g.point == name), None)
+        g = next((g for g in f.guides if g.key == name), None)
         if g is None:
             raise SceneError(f"N_{name}: the block at {name} slides on no guide")
         return abs(g.normal)
@@ -192,8 +201,11 @@ def forces_dict(f: Forces) -> dict:
                             "offset_point": None if i.offset is None else _vec(i.offset_point)}
                    for i in f.inertia},
         "pins": pins,
-        "guides": {g.point: {"normal_force": g.normal + 0.0, "normal": _vec(g.n),
-                             "force": _vec(g.force), "by": g.by} for g in f.guides},
+        "guides": {g.key: {"normal_force": g.normal + 0.0, "normal": _vec(g.n),
+                           "force": _vec(g.force), "by": g.by,
+                           **({"couple": g.couple + 0.0} if g.couple is not None and
+                              isinstance(g.couple, float) and g.couple else {})}
+                   for g in f.guides},
         ("input_torque" if f.driver == "crank" else "input_force"): f.input_torque + 0.0,
         f.driver: f.crank,
         **({} if f.second_crank is None else
