@@ -11,10 +11,12 @@ from __future__ import annotations
 
 import math
 
+from .errorbound import SHOWN, USELESS
 from .forces import FRAME
+from .forces.bounds import NO_BOUND, force_bounds
 from .numbers import fmt, quiet, sense_word
 
-__all__ = ["forces_lines", "force_blocks"]
+__all__ = ["forces_lines", "force_blocks", "bound_lines"]
 
 
 def _scales(sol, f):
@@ -106,6 +108,31 @@ def forces_lines(sol) -> list:
         if st.condition < 0.0871557:  # sin 5 deg, as the kinematic warnings
             out.append(f"warning: forces, step {st.index + 1} ({st.title}): condition "
                        f"{st.condition:.3g} ({st.why}): the pin forces grow as 1/condition")
+    out += bound_lines(sol, f)
+    return out
+
+
+def bound_lines(sol, f) -> list:
+    """The forces whose estimated error bound exceeds :data:`SHOWN` (largest first), in the
+    words of the kinematic bounds below the plan; empty where every force is closer."""
+    b = force_bounds(sol, f)
+    shown = [(f"F_{point} on {on} by {_body(by)}", e) for (point, on, by), e in b.pins.items()
+             if e > SHOWN]
+    shown += [(f"N_{k} (guide)", e) for k, e in b.guides.items() if e > SHOWN]
+    if b.effort > SHOWN:
+        shown.append(("the driver's " + ("torque" if f.driver == "crank" else "force"),
+                      b.effort))
+    if b.second is not None and b.second > SHOWN:
+        shown.append(("the second crank's torque", b.second))
+    if not shown:
+        return []
+    out = [f"estimated error of the forces above {SHOWN:g} (the kinematic bounds through "
+           "each group's equations, each dividing by its condition; relative to the largest "
+           "force, a torque to it times the longest link):"]
+    for what, e in sorted(shown, key=lambda t: -t[1]):
+        out.append(f"  {what}: {e:.2g}" if e < USELESS else f"  {what}: no useful bound")
+    if any(not e < USELESS for _, e in shown):
+        out.append(f"  ({NO_BOUND})")
     return out
 
 
@@ -140,6 +167,7 @@ def force_blocks(sol) -> list:
     blocks.append(("table", ("body", "m (kg)", "I_G (kg m^2)", "G", "a_G", "m a_G, opposite "
                              "to a_G", "-I alpha", f"h ({sc.units})"), rows))
     blocks.append(("h", "7. Forces, group by group (the construction's groups in reverse)"))
+    bounds = force_bounds(sol, f)
     blocks.append(("p", "Each group's bodies are statically determinate: the moments about "
                    "the pins whose forces are not yet known give the pin force between them, "
                    "then each body's force balance the rest. 'Known' is the resultant of the "
@@ -164,6 +192,10 @@ def force_blocks(sol) -> list:
                              "+ to its left)")
         if st.why:
             items.append(f"condition {st.condition:.3g} ({st.why})")
+        e = bounds.steps.get(st.index, 0.0)
+        if e > SHOWN:
+            items.append(f"estimated error of these forces: {e:.2g} of the largest force"
+                         if e < USELESS else f"estimated error of these forces: {NO_BOUND}")
         head = {"dyad": "moments of each link about its other end give the pin force "
                         "between them; each link's force balance its end's",
                 "slider": "moments of the link about its other end give the guide's normal "

@@ -29,6 +29,7 @@ from .kinematics import Motion, hypot
 from .numbers import fmt_angular, quiet, sense  # noqa: F401  (re-exported)
 from .compiler import compile_plan
 from .forces import analyse, force_value, forces_dict
+from .forces.bounds import bounds_dict as force_bounds_dict, force_bounds
 from .plan import Context
 from .scene import FixedPath, Scene
 
@@ -282,6 +283,8 @@ class Solution(Motion):
         d["warnings"] = warnings
         d["notes"] = list(self.notes)
         d["error_bounds"] = _useful(bounds_dict(self, self.error_bounds))
+        if sc.has_forces and not refused:  # each force's bound, null where none is useful
+            d["error_bounds"]["forces"] = force_bounds_dict(force_bounds(self))
         return _finite(d)
 
     def value(self, kind: str, names: tuple):

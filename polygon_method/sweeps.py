@@ -27,6 +27,7 @@ import numpy as np
 
 from .derived import input_torque, largest, pin_rubbing
 from .errorbound import error_bounds
+from .forces.bounds import force_bounds
 from .errors import TOL, PolygonMethodError, SceneError
 from .forces import analyse
 from .kinematics import Motion
@@ -121,18 +122,29 @@ class SweepResult(Motion):
         if error_bound:
             worst = self.error_bounds.worst
             cols.append(("err_max", "1", np.broadcast_to(worst, np.shape(self.theta))))
+            f = self._forces()
+            if f is not None:  # the largest bound of any force (relative to the largest)
+                cols.append(("err_forces", "1", np.broadcast_to(
+                    force_bounds(self, f).worst, np.shape(self.theta))))
         return cols
+
+    def _forces(self):
+        """The force analysis over the sweep, or None (no masses or gravity; a plan, or a
+        position, the analysis does not cover)."""
+        if not self.scene.has_forces or not len(self.theta):
+            return None
+        try:
+            return analyse(self)
+        except PolygonMethodError:
+            return None
 
     def force_columns(self) -> list:
         """The force analysis over the sweep, for a scene with masses or gravity (none for a
         plan the analysis does not cover): the driver's torque with inertia (the negative
         of an engine's turning moment), the shaking force and moment, each guide's normal
         force and the size of each pin force (named ``F_<pin>_<on>_<by>``)."""
-        if not self.scene.has_forces or not len(self.theta):
-            return []
-        try:
-            f = analyse(self)
-        except PolygonMethodError:
+        f = self._forces()
+        if f is None:
             return []
         n = np.shape(self.theta)
         cols = [("torque_inertia", "N m", np.broadcast_to(f.input_torque, n))

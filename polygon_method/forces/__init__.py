@@ -24,6 +24,8 @@ about the frame's origin).
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from ..errors import PolygonMethodError
 from . import driver
 from . import carried, crank, cylinder, dyad, peg, slider, slotted, yoke
@@ -155,7 +157,7 @@ def _walk(scene, plan, P, led, own):
         pins += p
         guides += g
         if rec is not None:
-            steps.append(rec)
+            steps.append(replace(rec, pins=tuple(p), guides=tuple(g)))
         if t is not None:
             if st.kind == "second crank":
                 second = t

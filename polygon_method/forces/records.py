@@ -111,6 +111,9 @@ class ForceStep:
     why: str = ""
     #: the step's equations with their numbers, in the book's words (SI)
     equations: tuple = ()
+    #: the pin forces (:class:`PinForce`) and guide forces (:class:`GuideForce`) it found
+    pins: tuple = ()
+    guides: tuple = ()
 
 
 @dataclass(frozen=True)
