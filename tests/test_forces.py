@@ -1172,3 +1172,27 @@ Y = { force = "300 N", direction = 180 }
     assert slot.by == "block Y" and abs(path.normal - 6 * 9.81) <= 1e-9 * 6 * 9.81
     (px, py), (yx, yy) = sol.P["P"], sol.P["Y"]
     assert abs(path.couple - (py - yy) * -slot.force[0]) <= 1e-9 * abs(float(net)) * 0.2
+
+
+def test_the_worked_shaper_and_its_written_answers():
+    """worked_problems/shaper_forces.toml: the tool to 1e-9 of the matrix method, and the
+    numbers its comments write (4 figures) to the matrix method's rounding."""
+    path = ROOT / "worked_problems" / "shaper_forces.toml"
+    sol = solve(load_scene(path))
+    f = sol.forces
+    ref = _slotted_lever_matrix(sol)
+    text = path.read_text()
+    for key in ("F_O2", "F_A", "N_A", "F_O4", "F_P", "F_Q", "N_Q"):
+        written = re.search(rf"#.*\b{key} = ([\d.]+)", text)
+        assert written, key
+        assert float(written.group(1)) == pytest.approx(float(math.hypot(*ref[key])),
+                                                        rel=6e-4), key
+    written = re.search(r"#.*\bT = ([\d.]+) \((c?cw)[:)]", text)
+    assert float(written.group(1)) == pytest.approx(abs(float(ref["T"])), rel=6e-4)
+    assert written.group(2) == ("ccw" if ref["T"] > 0 else "cw")
+    scale = max(float(math.hypot(*v)) for k, v in ref.items() if k[0] in "FN")
+    assert abs(f.input_torque - ref["T"]) <= 1e-9 * scale
+    assert math.hypot(*(np.subtract(f.pin("P", "P-Q", "O4-P"), ref["F_P"]))) <= 1e-9 * scale
+    # without the inertia: the power balance of the loads alone, as the comment says
+    assert re.search(r"would be\s*#?\s*([\d.]+) N m", text.replace("\n#", "")).group(1) == \
+        f"{abs(sol.input_torque):.4g}"

@@ -101,8 +101,9 @@ def analyse(motion) -> Forces:
     own = owners(scene, plan)
     records, led = gather(scene, motion, own)
     inp = scene.input
-    driving = next((st for st in plan.steps if st.kind == "cylinder"
-                    and cylinder.drives(scene, st)), None)
+    driving = next((st for st in plan.steps
+                    if getattr(ROOMS[st.kind], "drives", lambda sc, s: False)(scene, st)),
+                   None)
     if driving is not None:  # linear in the cylinder's force: F = -T0 / T1
         t0 = _walk(scene, plan, motion.P, _copy(led), own)[3]
         unit = Ledger()
@@ -132,7 +133,8 @@ def analyse(motion) -> Forces:
         name, kind, effort = inp.crank, "crank", torque
     return Forces(records, tuple(pins), tuple(guides), effort, (fx, fy), m,
                   tuple(steps), {k: tuple(v) for k, v in led.applied.items()},
-                  name, kind, second, None if inp.second is None else inp.second.crank)
+                  name, kind, second,
+                  None if inp.second is None else scene.link(inp.second.crank).key)
 
 
 def _copy(led):
@@ -158,9 +160,9 @@ def _walk(scene, plan, P, led, own):
         guides += g
         if rec is not None:
             steps.append(replace(rec, pins=tuple(p), guides=tuple(g)))
-        if t is not None:
-            if st.kind == "second crank":
-                second = t
-            else:
+        if t is not None:  # the first input's torque (or force), or a second crank's
+            if st is plan.steps[0]:
                 torque = t
+            else:
+                second = t
     return pins, guides, steps, torque, second

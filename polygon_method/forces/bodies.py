@@ -21,6 +21,14 @@ def any_zero(x) -> bool:
     return bool(z) if isinstance(z, bool) else bool(z.any())
 
 
+def least(a, b):
+    """The smaller of two floats, or entry by entry of arrays."""
+    if isinstance(a, float) and isinstance(b, float):
+        return a if a <= b else b
+    import numpy as np
+    return np.minimum(a, b)
+
+
 def cross(ax, ay, bx, by):
     """``a x b`` (the z-component)."""
     return ax * by - ay * bx

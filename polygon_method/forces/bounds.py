@@ -88,28 +88,11 @@ def _scale(sol, f):
 
 
 def _divisor(st, rec, P, L):
-    """The length the group's equations divide by (see the module)."""
-    c = rec.condition
-    if st.kind == "dyad":
-        (bx, by), (dx, dy), (cx, cy) = P[st.b], P[st.d], P[st.point]
-        r = vhypot(cx - bx, cy - by)
-        return vmax(0.0, 0.5 * c * _least(r, vhypot(cx - dx, cy - dy)))
-    if st.kind == "slider":
-        (bx, by), (xx, xy) = P[st.b], P[st.point]
-        return c * vhypot(xx - bx, xy - by)
-    if st.kind == "slotted":
-        (kx, ky), (ax, ay) = P[st.known], P[st.point]
-        return vhypot(ax - kx, ay - ky)
-    if st.kind in ("yoke", "peg", "cylinder"):
-        return c * L
-    return L  # a crank, a driving block, a carried point: nothing divided
-
-
-def _least(a, b):
-    if isinstance(a, float) and isinstance(b, float):
-        return min(a, b)
-    import numpy as np
-    return np.minimum(a, b)
+    """The length the group's equations divide by: its room's ``divisor`` (see the
+    module); ``L`` (nothing divided) for a room without one."""
+    from . import ROOMS
+    room = ROOMS[st.kind]
+    return room.divisor(st, rec, P, L) if hasattr(room, "divisor") else L
 
 
 def _inertia_errors(sol, kb, F, L):
@@ -164,11 +147,13 @@ def force_bounds(sol, f=None) -> ForceBounds:
     F = _scale(sol, f)
     start = _inertia_errors(sol, kb, F, L)
     steps = _walk(sol, f, kb, F, L, start)
-    cyl = next((r for r in f.steps if r.kind == "cylinder"), None)
-    if f.driver == "cylinder" and cyl is not None:  # the effort comes from the whole walk
-        crank = next(r for r in f.steps if r.kind == "crank")
-        D = _divisor(next(s for s in sol.plan.steps if s.index == cyl.index), cyl, sol.P, L)
-        e_f = _cap((K * EPS + steps[crank.index]) * L / vmax(D, 1e-300))
+    driver = sol.plan.steps[0]  # the first input's step: a crank or a driving block
+    by_index = {st.index: st for st in sol.plan.steps}
+    cyl = next((r for r in f.steps if r.bodies == (f.crank,)), None) \
+        if f.driver == "cylinder" else None
+    if cyl is not None:  # the effort comes from the whole walk
+        D = _divisor(by_index[cyl.index], cyl, sol.P, L)
+        e_f = _cap((K * EPS + steps[driver.index]) * L / vmax(D, 1e-300))
         start = dict(start)
         for p in cyl.pins:
             if p.by != FRAME:
@@ -181,10 +166,10 @@ def force_bounds(sol, f=None) -> ForceBounds:
             pins[(p.point, p.on, p.by)] = steps[rec.index]
         for g in rec.guides:
             guides[g.key] = steps[rec.index]
-    first = next(r for r in f.steps if r.kind in ("crank", "block")) \
-        if f.driver != "cylinder" else cyl
-    second = next((steps[r.index] for r in f.steps if r.kind == "second crank"), None)
-    return ForceBounds(pins, guides, steps[first.index], second, steps, F, L)
+    first = cyl.index if cyl is not None else driver.index
+    second = next((steps[r.index] for r in f.steps if f.second_crank is not None
+                   and r.bodies == (f.second_crank,)), None)
+    return ForceBounds(pins, guides, steps[first], second, steps, F, L)
 
 
 def bounds_dict(b: ForceBounds) -> dict:

@@ -65,3 +65,9 @@ def step(st, P, led, own):
     # the pins' forces on the cylinder by the bodies at its ends
     return (PinForce(R, st.key, orr, (-fx, -fy)), PinForce(K, st.key, ok, (fx, fy))), (), \
         rec, None
+
+
+def divisor(st, rec, P, L):
+    """A driving cylinder's force divides by its arm about the crank's pivot (its condition
+    is that over the mechanism's size): ``c L``."""
+    return rec.condition * L

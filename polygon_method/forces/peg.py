@@ -74,3 +74,8 @@ def step(st, P, led, own):
                     tuple((f"N_{g.key} on {pb} by {g.by}", g.normal) for g in out), cond,
                     "the sine of the angle between the slots", eq)
     return (), tuple(out), rec, None
+
+
+def divisor(st, rec, P, L):
+    """A force balance divided by ``|u_1 x u_2|``: ``c L``."""
+    return rec.condition * L

@@ -20,6 +20,7 @@ Then ``P = N n + R`` and the link's force balance gives the force on it at B, ``
 
 from __future__ import annotations
 
+from ..steps.rounding import vhypot
 from .bodies import Singular, any_zero, cross
 from ..numbers import fmt
 from .records import FRAME, ForceStep, GuideForce, PinForce, block
@@ -102,3 +103,9 @@ def step(st, P, led, own):
                      (f"F_{st.b} on {lk} by {ob}", fb)), cond,
                     f"cosine of the angle between {st.b}{x} and the guide", eq)
     return (PinForce(x, lk, bl, p), PinForce(st.b, lk, ob, fb)), (g,), rec, None
+
+
+def divisor(st, rec, P, L):
+    """The length the step's equations divide by: ``(X - B) . u = |XB| c``."""
+    (bx, by), (xx, xy) = P[st.b], P[st.point]
+    return rec.condition * vhypot(xx - bx, xy - by)

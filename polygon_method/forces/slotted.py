@@ -27,6 +27,7 @@ N = 2 along n = (-1, 0); the pivot holds the lever with 2 N to the left:
 
 from __future__ import annotations
 
+from ..steps.rounding import vhypot
 from .bodies import Singular, any_zero, cross
 from ..numbers import fmt
 from .records import ForceStep, GuideForce, PinForce, block
@@ -101,3 +102,9 @@ def step(st, P, led, own):
                      (f"F_{a} on {bl} by {oa}", fa)), cond,
                     f"|{k}{a}| / {lv}: the block's distance from the lever's pivot", eq)
     return (PinForce(k, lv, ok, fk), PinForce(a, bl, oa, fa)), (g,), rec, None
+
+
+def divisor(st, rec, P, L):
+    """The length the step's equations divide by: the block's distance from the pivot."""
+    (kx, ky), (ax, ay) = P[st.known], P[st.point]
+    return vhypot(ax - kx, ay - ky)

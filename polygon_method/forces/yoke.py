@@ -93,3 +93,8 @@ def step(st, P, led, own):
                      (f"C on {yb} by the path", c), (f"F_{X} on {xb} by {op}", fp)), cond,
                     "the sine of the angle between the slot and the path", eq)
     return (PinForce(X, xb, op, fp),), (slot, path), rec, None
+
+
+def divisor(st, rec, P, L):
+    """A force balance divided by ``|u x d|``: ``c L``."""
+    return rec.condition * L
