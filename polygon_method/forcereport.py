@@ -101,6 +101,10 @@ def forces_lines(sol) -> list:
         out.append(f"{p.point:<5} {p.on:<10} {_body(p.by):<10} {_vec(p.force, F)}")
     for g in f.guides:
         out.append(f"guide at {g.point}: normal force on block {g.point} {_vec(g.force, F)}")
+    for c in f.contacts:
+        out.append(f"contact of wheel {c.wheel} with the ground: normal {fmt(quiet(c.normal, F))}"
+                   f" N, tangential {fmt(quiet(c.tangential, F))} N ({_vec(c.force, F)}); "
+                   + c.grip_words())
     out += _driver_lines(f, F, M, " (inertia, weights and loads)")
     out.append(f"shaking force on the frame: {_vec(f.shaking_force, F)}; shaking moment "
                f"about the origin: {_moment(f.shaking_moment, M)}")
@@ -184,6 +188,10 @@ def force_blocks(sol) -> list:
                 items.append(f"{name} = {_vec(val, F)}")
             elif name.startswith("T "):
                 items.append(f"{name} = {_moment(val, M)}")
+            elif name.startswith(("N at the contact", "T at the contact")):
+                items.append(f"{name} = {fmt(quiet(val, F))} N ("
+                             + ("normal to the line, + pushing the wheel off it)"
+                                if name[0] == "N" else "along the line, + along perp(m))"))
             elif name.startswith("F "):
                 items.append(f"{name} = {fmt(quiet(val, F))} N (+ along the guide's "
                              "direction)")
@@ -210,6 +218,9 @@ def force_blocks(sol) -> list:
                                 "moments about the pivot give its own driving torque",
                 "cylinder": "a two-force member: its force along its line, pushing (or "
                             "pulling) the bodies at its ends",
+                "wheel centre": "the wheel's moments about its centre give the ground's "
+                                "grip; the link's moments about its other end the ground's "
+                                "normal force; the balances the pin forces",
                 "block": "the block's force balance: along the guide the driver's force, "
                          "across it the guide's normal force"}.get(st.kind, "")
         blocks.append(("p", f"Step {st.index + 1}, {st.title}: {head}."))

@@ -20,6 +20,7 @@ on a rigid link), not read from the tool.
 from __future__ import annotations
 
 import glob
+import json
 import re
 import math
 import random
@@ -201,6 +202,8 @@ def _newton_euler(sol, f):
             couple(f"block {gd.point}", gd.couple)
             if gd.by != FRAME:
                 couple(gd.by, -gd.couple)
+    for c in f.contacts:  # the ground's grip and push on a rolling wheel
+        add(c.wheel, c.force, c.point)
     for body, items in f.applied.items():
         for it in items:
             if len(it) == 3:
@@ -1196,3 +1199,85 @@ def test_the_worked_shaper_and_its_written_answers():
     # without the inertia: the power balance of the loads alone, as the comment says
     assert re.search(r"would be\s*#?\s*([\d.]+) N m", text.replace("\n#", "")).group(1) == \
         f"{abs(sol.input_torque):.4g}"
+
+
+# ----- a wheel rolling on the ground
+
+WHEEL = """
+units = "mm"
+[ground]
+O = [0, 100]
+G = [0, 0]
+[links]
+OA = 60
+AC = 200
+CP = 50
+[rolling]
+CP = { on = "horizontal", through = "G", angle = 90 }
+[assembly]
+C = "right"
+[input]
+crank = "OA"
+angle = 45
+speed = "1e-7 rad/s cw"
+[masses]
+CP = { mass = "3 kg", distances = { C = 20, P = 40 }, turn = "cw", gyration = 35 }
+AC = { mass = "1 kg", along = 80 }
+[gravity]
+"""
+
+
+def _wheel_U(sc, th, th0):
+    """The potential energy (50 digits) of the crank, rod and wheel above at crank angle th:
+    A = O + 0.06 (cos, sin), C = (A_x + sqrt(0.2^2 - (0.05 - A_y)^2), 0.05) (on the line
+    y = r), the wheel turned by -(x_C - x_C0) / r (rolling), P at 90 deg at th0."""
+    O, a, l, r = (0, mpmath.mpf("0.1")), mpmath.mpf("0.06"), mpmath.mpf("0.2"), mpmath.mpf("0.05")
+
+    def C(t):
+        ax, ay = O[0] + a * mpmath.cos(t), O[1] + a * mpmath.sin(t)
+        return (ax, ay), (ax + mpmath.sqrt(l ** 2 - (r - ay) ** 2), r)
+    (ax, ay), (cx, cy) = C(th)
+    phi = mpmath.pi / 2 - (cx - C(th0)[1][0]) / r
+    px, py = cx + r * mpmath.cos(phi), cy + r * mpmath.sin(phi)
+    g = mpmath.mpf("9.81")
+    U = 0
+    for m in sc.masses:
+        lk = sc.link(m.body)
+        ends = {"A": (ax, ay), "C": (cx, cy), "P": (px, py)}
+        (x1, y1), (x2, y2) = ends[lk.p], ends[lk.q]
+        U += m.mass * g * (y1 + mpmath.mpf(m.lam) * (y2 - y1) + mpmath.mpf(m.mu) * (x2 - x1))
+    return U
+
+
+def test_a_wheel_rolling_on_the_ground_against_virtual_work():
+    """Crank, rod and a wheel with its centre of mass off its centre, crawling: the torque
+    is dU/dtheta (closed-form positions with the rolling constraint, 50 digits); the
+    contact's friction coefficient is |T| / N, and with gravity reversed the wheel would
+    lift off, which is said."""
+    from polygon_method.report import solution_text
+    sc = parse_scene(WHEEL)
+    sol = solve(sc)
+    f = sol.forces
+    mpmath.mp.dps = 50
+    th0 = mpmath.radians(45)
+    want = float(mpmath.diff(lambda t: _wheel_U(sc, t, th0), th0))
+    assert abs(f.input_torque - want) <= 1e-9 * abs(want)
+    (c,) = f.contacts
+    assert c.wheel == "CP" and c.point == pytest.approx((sol.P["C"][0], 0.0), abs=1e-15)
+    assert c.required_friction == abs(c.tangential) / c.normal and c.normal > 0
+    assert "no slip needs a friction coefficient of at least" in solution_text(sol)
+    up = solve(parse_scene(WHEEL.replace("[gravity]", '[gravity]\ndirection = 90')))
+    (c,) = up.forces.contacts
+    assert c.normal < 0 and c.required_friction is None
+    assert "it lifts off the line" in solution_text(up)
+    d = json.loads(json.dumps(up.to_dict(), allow_nan=False))["forces"]["contacts"]["CP"]
+    assert d["required_friction"] is None and d["normal_force"] == c.normal
+
+
+def test_rolling_on_a_circle_is_refused_saying_why():
+    sc = load_scene(ROOT / "worked_problems" / "rolling_epicyclic.toml")
+    raw = scene_table(sc)
+    raw["gravity"] = {}
+    with pytest.raises(PolygonMethodError, match="the contact's normal force is not "
+                       "determined by statics"):
+        solve(scene_from_table(raw)).forces

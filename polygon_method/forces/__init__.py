@@ -15,8 +15,11 @@ needs no step of its own: its loads and the pins there act on the link.
 A hydraulic cylinder is a two-force member (:mod:`.cylinder`); where the motion is given
 on it, it is the driver and its force the driver's effort.
 
-What is not written yet is refused in one line naming the step (rolling, a peg, a yoke, a
-triad): no guess.
+A wheel rolling on a fixed line is solved with the link that finds its centre
+(:mod:`.wheel`): the ground's normal and tangential forces, and the friction no slip needs.
+
+What is not written yet is refused in one line naming the step (rolling on a circle or a
+gear, a rack, a triad): no guess.
 
 Sign rule: see :mod:`.records` (the force on one body by the other; ccw positive; moments
 about the frame's origin).
@@ -28,9 +31,9 @@ from dataclasses import replace
 
 from ..errors import PolygonMethodError
 from . import driver
-from . import carried, crank, cylinder, dyad, peg, slider, slotted, yoke
+from . import carried, crank, cylinder, dyad, peg, rolling, slider, slotted, wheel, yoke
 from .bodies import Ledger, Singular, any_zero, centre, cross, gather
-from .records import (FRAME, Forces, ForceStep, GuideForce, Inertia, PinForce, block,
+from .records import (FRAME, Contact, Forces, ForceStep, GuideForce, Inertia, PinForce, block,
                       force_value, forces_dict)
 
 #: the force step of each kind of kinematic step: its room (``owns(st)``: the bodies its
@@ -39,15 +42,17 @@ from .records import (FRAME, Forces, ForceStep, GuideForce, Inertia, PinForce, b
 #: slider blocks of its group, each a body a mass may sit on)
 ROOMS = {"crank": crank, "dyad": dyad, "slider": slider, "carried": carried,
          "slotted": slotted, "block": driver, "second crank": crank,
-         "cylinder": cylinder, "yoke": yoke, "peg": peg}
+         "cylinder": cylinder, "yoke": yoke, "peg": peg, "rolling": rolling,
+         "wheel centre": wheel}
 
 __all__ = ["analyse", "Forces", "Inertia", "PinForce", "GuideForce", "ForceStep", "FRAME",
            "block", "centre", "cross", "Ledger", "forces_dict", "owners", "ROOMS",
            "force_value"]
 
 _NOT_YET = {
-    "rolling": "rolling without slip",
-    "wheel_centre": "a wheel's centre on a line",
+    "rolling": "rolling on a circle or a gear (the contact's normal force is not "
+               "determined by statics where a link holds the centres' distance: a preload or "
+               "the teeth's pressure angle sets it)",
     "rack": "a rack on a pinion",
     "triad": "a triad (class-III group)",
 }
@@ -56,8 +61,9 @@ _NOT_YET = {
 def _refuse(scene, st, what):
     raise PolygonMethodError(
         f"forces: {what} is not solved for forces yet (step {st.index + 1}, {st.title}); "
-        "the force analysis covers cranks, dyads, carried points, blocks on fixed paths "
-        "and blocks sliding on moving links",
+        "the force analysis covers cranks (one or two), driving blocks, dyads, carried "
+        "points, blocks on fixed paths and on moving links, slotted levers, yokes, pegs, "
+        "cylinders and wheels rolling on a line",
         file=scene.file, key=_key(scene))
 
 
@@ -84,6 +90,9 @@ def owners(scene, plan) -> dict:
         room = ROOMS.get(st.kind)
         if room is None or not getattr(room, "covers", lambda s: True)(st):
             _refuse(scene, st, _NOT_YET.get(st.kind, f"a {st.kind} step"))
+        why = getattr(room, "check", lambda s, p: None)(st, plan)
+        if why:
+            _refuse(scene, st, why)
         own.update({p: FRAME if b in fixed else b for p, b in room.owns(st).items()})
         blocks.update(getattr(room, "blocks", lambda s: ())(st))
     for m in scene.masses:  # a mass on a block no group of the plan has
@@ -123,7 +132,7 @@ def analyse(motion) -> Forces:
                 f"{driving.index + 1}, {driving.title})", file=scene.file)
         led.given[driving.key] = -t0 / t1
         led.conditions[driving.key] = cond
-    pins, guides, steps, torque, second = _walk(scene, plan, motion.P, led, own)
+    pins, guides, steps, torque, second, contacts = _walk(scene, plan, motion.P, led, own)
     fx, fy, m = led.of(FRAME)  # the drivers' reactions are the frame's too
     if driving is not None:
         name, kind, effort = driving.key, "cylinder", led.given[driving.key]
@@ -134,7 +143,8 @@ def analyse(motion) -> Forces:
     return Forces(records, tuple(pins), tuple(guides), effort, (fx, fy), m,
                   tuple(steps), {k: tuple(v) for k, v in led.applied.items()},
                   name, kind, second,
-                  None if inp.second is None else scene.link(inp.second.crank).key)
+                  None if inp.second is None else scene.link(inp.second.crank).key,
+                  tuple(contacts))
 
 
 def _copy(led):
@@ -147,7 +157,7 @@ def _copy(led):
 def _walk(scene, plan, P, led, own):
     """The plan's steps in reverse, each group solved from ``led``: (pins, guides, force
     steps, the crank's torque, a second crank's torque)."""
-    pins, guides, steps = [], [], []
+    pins, guides, contacts, steps = [], [], [], []
     torque = second = None
     for st in reversed(plan.steps):
         try:
@@ -157,7 +167,8 @@ def _walk(scene, plan, P, led, own):
                                      f"(step {st.index + 1}, {st.title})",
                                      file=scene.file) from None
         pins += p
-        guides += g
+        for x in g:
+            (contacts if isinstance(x, Contact) else guides).append(x)
         if rec is not None:
             steps.append(replace(rec, pins=tuple(p), guides=tuple(g)))
         if t is not None:  # the first input's torque (or force), or a second crank's
@@ -165,4 +176,4 @@ def _walk(scene, plan, P, led, own):
                 torque = t
             else:
                 second = t
-    return pins, guides, steps, torque, second
+    return pins, guides, steps, torque, second, contacts

@@ -91,6 +91,51 @@ class GuideForce:
 
 
 @dataclass(frozen=True)
+class Contact:
+    """The ground's force on a wheel rolling without slip on a fixed line, at its contact
+    point ``point`` (x, y): ``normal`` (N) along ``m`` (the line's unit normal towards the
+    wheel), ``tangential`` (N) along ``t = perp(m)`` (the grip friction must supply; no
+    slip: the contact point does not move, so neither works). ``required_friction``: the
+    least friction coefficient that holds it, ``|T| / N``, None where ``N <= 0`` (the
+    wheel would lift off)."""
+
+    wheel: str
+    point: tuple
+    normal: float
+    tangential: float
+    m: tuple
+
+    by = FRAME
+    couple = 0.0
+
+    @property
+    def key(self) -> str:
+        return f"contact of {self.wheel}"
+
+    @property
+    def force(self) -> tuple:
+        mx, my = self.m
+        return (self.normal * mx - self.tangential * my, self.normal * my + self.tangential * mx)
+
+    @property
+    def required_friction(self):
+        n, t = self.normal, self.tangential
+        if not isinstance(n, float):  # a sweep: where it lifts off, no number
+            import numpy as np
+            return np.where(n > 0, np.abs(t) / np.where(n > 0, n, 1.0), np.inf)
+        return abs(t) / n if n > 0 else None
+
+    def grip_words(self) -> str:
+        mu = self.required_friction
+        if mu is None:
+            return (f"the ground would have to pull wheel {self.wheel} down (N = "
+                    f"{self.normal:.4g} N): it lifts off the line, and rolling without "
+                    "slip does not hold")
+        return (f"no slip needs a friction coefficient of at least |T| / N = {mu:.3g} at the "
+                f"contact of {self.wheel}")
+
+
+@dataclass(frozen=True)
 class ForceStep:
     """One step of the force solution, in the order solved (the kinematic plan's, reversed):
     ``kind`` (crank, dyad, slider), ``title``, ``bodies`` and, for each body, the resultant
@@ -147,6 +192,8 @@ class Forces:
     #: a second driving crank's torque (N m, ccw positive) and its link, or None
     second_torque: float | None = None
     second_crank: str | None = None
+    #: the ground's contact force on each wheel rolling on a line (:class:`Contact`)
+    contacts: tuple = ()
 
     def pin(self, point: str, on: str, by: str | None = None):
         """The force on body ``on`` at ``point`` (by ``by``, when the pin joins more than two
@@ -213,6 +260,11 @@ def forces_dict(f: Forces) -> dict:
         f.driver: f.crank,
         **({} if f.second_crank is None else
            {"second": {"crank": f.second_crank, "input_torque": f.second_torque + 0.0}}),
+        **({"contacts": {c.wheel: {"point": _vec(c.point), "normal_force": c.normal + 0.0,
+                                   "tangential_force": c.tangential + 0.0,
+                                   "normal": _vec(c.m), "force": _vec(c.force),
+                                   "required_friction": c.required_friction}
+                         for c in f.contacts}} if f.contacts else {}),
         "shaking_force": _vec(f.shaking_force),
         "shaking_moment": f.shaking_moment + 0.0,
         "steps": [{"step": s.index + 1, "kind": s.kind, "title": s.title,
