@@ -18,8 +18,11 @@ on it, it is the driver and its force the driver's effort.
 A wheel rolling on a fixed line is solved with the link that finds its centre
 (:mod:`.wheel`): the ground's normal and tangential forces, and the friction no slip needs.
 
+A triad's plate and three links are solved together (:mod:`.triad`: the textbook's 3x3
+solve).
+
 What is not written yet is refused in one line naming the step (rolling on a circle or a
-gear, a rack, a triad): no guess.
+gear, a rack, a triad whose plate is three links): no guess.
 
 Sign rule: see :mod:`.records` (the force on one body by the other; ccw positive; moments
 about the frame's origin).
@@ -31,7 +34,8 @@ from dataclasses import replace
 
 from ..errors import PolygonMethodError
 from . import driver
-from . import carried, crank, cylinder, dyad, peg, rolling, slider, slotted, wheel, yoke
+from . import (carried, crank, cylinder, dyad, peg, rolling, slider, slotted, triad, wheel,
+               yoke)
 from .bodies import Ledger, Singular, any_zero, centre, cross, gather
 from .records import (FRAME, Contact, Forces, ForceStep, GuideForce, Inertia, PinForce, block,
                       force_value, forces_dict)
@@ -43,7 +47,7 @@ from .records import (FRAME, Contact, Forces, ForceStep, GuideForce, Inertia, Pi
 ROOMS = {"crank": crank, "dyad": dyad, "slider": slider, "carried": carried,
          "slotted": slotted, "block": driver, "second crank": crank,
          "cylinder": cylinder, "yoke": yoke, "peg": peg, "rolling": rolling,
-         "wheel centre": wheel}
+         "wheel centre": wheel, "triad": triad}
 
 __all__ = ["analyse", "Forces", "Inertia", "PinForce", "GuideForce", "ForceStep", "FRAME",
            "block", "centre", "cross", "Ledger", "forces_dict", "owners", "ROOMS",
@@ -54,7 +58,7 @@ _NOT_YET = {
                "determined by statics where a link holds the centres' distance: a preload or "
                "the teeth's pressure angle sets it)",
     "rack": "a rack on a pinion",
-    "triad": "a triad (class-III group)",
+    "triad": "a triad whose plate is made of three links",
 }
 
 
@@ -63,7 +67,7 @@ def _refuse(scene, st, what):
         f"forces: {what} is not solved for forces yet (step {st.index + 1}, {st.title}); "
         "the force analysis covers cranks (one or two), driving blocks, dyads, carried "
         "points, blocks on fixed paths and on moving links, slotted levers, yokes, pegs, "
-        "cylinders and wheels rolling on a line",
+        "cylinders, wheels rolling on a line and triads",
         file=scene.file, key=_key(scene))
 
 
