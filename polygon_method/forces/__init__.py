@@ -33,17 +33,20 @@ from __future__ import annotations
 from dataclasses import replace
 
 from ..errors import PolygonMethodError
-from . import driver
-from . import (carried, crank, cylinder, dyad, peg, rolling, slider, slotted, triad, wheel,
-               yoke)
-from .bodies import Ledger, Singular, any_zero, centre, cross, gather
+from . import (carried, crank, cylinder, driver, dyad, peg, rolling, slider, slotted, triad,
+               wheel, yoke)
+from .bodies import Ledger, Singular, centre, cross, gather
 from .records import (FRAME, Contact, Forces, ForceStep, GuideForce, Inertia, PinForce, block,
                       force_value, forces_dict)
 
 #: the force step of each kind of kinematic step: its room (``owns(st)``: the bodies its
 #: points act on; ``step(st, P, ledger, owners)``: its pin forces; ``covers(st)``, where
-#: present: whether it covers this step of its kind; ``blocks(st)``, where present: the
-#: slider blocks of its group, each a body a mass may sit on)
+#: present: whether it covers this step of its kind; ``check(st, plan)``, where present: why
+#: the plan cannot be solved with it, or None; ``blocks(st)``, where present: the slider
+#: blocks of its group, each a body a mass may sit on; ``divisor(st, rec, P, L)``, where
+#: present: the length its equations divide by (:mod:`.bounds`); ``drives(scene, st)``,
+#: ``unit_ledger(st)``, ``effort(st, t0, t1, ledger)``, where present: whether it drives
+#: the mechanism, and its force from the crank's torque without it and with 1 N in it)
 ROOMS = {"crank": crank, "dyad": dyad, "slider": slider, "carried": carried,
          "slotted": slotted, "block": driver, "second crank": crank,
          "cylinder": cylinder, "yoke": yoke, "peg": peg, "rolling": rolling,
@@ -117,29 +120,20 @@ def analyse(motion) -> Forces:
     driving = next((st for st in plan.steps
                     if getattr(ROOMS[st.kind], "drives", lambda sc, s: False)(scene, st)),
                    None)
-    if driving is not None:  # linear in the cylinder's force: F = -T0 / T1
+    if driving is not None:  # the walk is linear in the driver's force: walk it twice
+        room = ROOMS[driving.kind]
         t0 = _walk(scene, plan, motion.P, _copy(led), own)[3]
-        unit = Ledger()
-        unit.given[driving.key] = 1.0
-        t1 = _walk(scene, plan, motion.P, unit, own)[3]
-        size = max(driving.rho, 1e-300)
-        cond = abs(t1) / size
-        if isinstance(cond, float):
-            cond = min(cond, 1.0)
-        else:
-            import numpy as np
-            cond = np.minimum(cond, 1.0)
-        if any_zero(t1):
-            raise PolygonMethodError(
-                f"forces: the line of cylinder {driving.key} passes through the crank's "
-                f"pivot: it cannot turn the crank, its force is not determined here (step "
-                f"{driving.index + 1}, {driving.title})", file=scene.file)
-        led.given[driving.key] = -t0 / t1
-        led.conditions[driving.key] = cond
+        t1 = _walk(scene, plan, motion.P, room.unit_ledger(driving), own)[3]
+        try:
+            room.effort(driving, t0, t1, led)
+        except Singular as exc:
+            raise PolygonMethodError(f"forces: {exc}: its force is not determined here (step "
+                                     f"{driving.index + 1}, {driving.title})",
+                                     file=scene.file) from None
     pins, guides, steps, torque, second, contacts = _walk(scene, plan, motion.P, led, own)
     fx, fy, m = led.of(FRAME)  # the drivers' reactions are the frame's too
     if driving is not None:
-        name, kind, effort = driving.key, "cylinder", led.given[driving.key]
+        name, kind, effort = driving.key, driving.kind, led.given[driving.key]
     elif inp.block is not None:
         name, kind, effort = block(inp.block), "block", torque
     else:

@@ -20,6 +20,7 @@ pressure pushes nothing.
 from __future__ import annotations
 
 from ..numbers import fmt
+from .bodies import Singular, any_zero
 from .records import ForceStep, PinForce
 
 
@@ -39,6 +40,31 @@ def drives(scene, st) -> bool:
     g = scene.input.given
     return (g is not None and g.kind == "vs" and g.names == (st.key,)
             and scene.input.block is None and scene.input.second is None)
+
+
+def unit_ledger(st):
+    """A ledger with 1 N in the cylinder and nothing else."""
+    from .bodies import Ledger
+    led = Ledger()
+    led.given[st.key] = 1.0
+    return led
+
+
+def effort(st, t0, t1, led):
+    """Enter the driving cylinder's force ``F = -T0 / T1`` (T0 the crank's torque without
+    it, T1 with 1 N in it alone: its arm about the crank's pivot) and its condition ``|T1|
+    / rho`` (at most 1) in ``led``."""
+    if any_zero(t1):
+        raise Singular(f"the line of cylinder {st.key} passes through the crank's pivot: it "
+                       "cannot turn the crank")
+    cond = abs(t1) / (st.rho if st.rho > 0 else 1e-300)
+    if isinstance(cond, float):
+        cond = min(cond, 1.0)
+    else:  # a sweep
+        import numpy as np
+        cond = np.minimum(cond, 1.0)
+    led.given[st.key] = -t0 / t1
+    led.conditions[st.key] = cond
 
 
 def step(st, P, led, own):
