@@ -24,7 +24,7 @@ from .derived import input_torque as _torque
 from .derived import PinRubbing, pin_records, power_terms
 from .centres import JSON_BODIES, centres_dict, locate
 from .errorbound import NO_BOUND, USELESS, bounds_dict, error_bounds
-from .errors import TOL, PolygonMethodError
+from .errors import TOL, PolygonMethodError, SceneError
 from .kinematics import Motion, hypot
 from .numbers import fmt_angular, quiet, sense  # noqa: F401  (re-exported)
 from .compiler import compile_plan
@@ -306,7 +306,13 @@ class Solution(Motion):
         if kind == "rub":
             return self.rubbing[names[0]].rubbing_velocity
         if kind == "torque":
-            return self.forces.input_torque if self.scene.has_forces else self.input_torque
+            if not self.scene.has_forces:
+                return self.input_torque
+            f = self.forces
+            if f.driver != "crank":  # a driving block's or cylinder's effort is a force
+                raise SceneError(f"torque: {f.crank} drives this mechanism with a force, not "
+                                 "a torque (solve gives it as the input force)")
+            return f.input_torque
         if kind in ("F", "N"):
             return force_value(self.forces, kind, names[0])
         if kind in ("vu", "au"):  # the guide's point under a block (v_A1, a_A1)

@@ -1283,3 +1283,18 @@ def test_rolling_on_a_circle_is_refused_saying_why():
     with pytest.raises(PolygonMethodError, match="the contact's normal force is not "
                        "determined by statics"):
         solve(scene_from_table(raw)).forces
+
+
+def test_a_torque_answer_where_a_force_drives_is_one_clear_line(tmp_path, capsys):
+    """The tipper driven by its cylinder: its effort is a force, so a 'torque' answer is
+    refused in one line (exit 2), not compared with the force read as N m."""
+    from polygon_method.cli import main
+    text = (ROOT / "worked_problems" / "tipper_cylinder.toml").read_text()
+    text = text.split("[answers]")[0] + ('[masses]\nQR = { mass = 800, along = 1200 }\n'
+                                         '[gravity]\n[answers]\ntorque = "10 kN m ccw"\n')
+    path = tmp_path / "tipper.toml"
+    path.write_text(text)
+    assert main(["check", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert "torque: O-R drives this mechanism with a force, not a torque" in err
+    assert err.count("\n") <= 1
