@@ -186,8 +186,10 @@ def force_blocks(sol) -> list:
         for name, val in st.found:
             if isinstance(val, tuple):
                 items.append(f"{name} = {_vec(val, F)}")
-            elif name.startswith("T "):
+            elif name.startswith(("T ", "C ")):  # a torque, a guide's couple
                 items.append(f"{name} = {_moment(val, M)}")
+            elif name.startswith("F in "):  # a cylinder's force
+                items.append(f"{name} = {fmt(quiet(val, F))} N")
             elif name.startswith(("N at the contact", "T at the contact")):
                 items.append(f"{name} = {fmt(quiet(val, F))} N ("
                              + ("normal to the line, + pushing the wheel off it)"
@@ -218,6 +220,13 @@ def force_blocks(sol) -> list:
                                 "moments about the pivot give its own driving torque",
                 "cylinder": "a two-force member: its force along its line, pushing (or "
                             "pulling) the bodies at its ends",
+                "yoke": "the yoke's balance along its path gives the slot's force on the "
+                        "block; across it the path's normal force, its moments the path's "
+                        "couple; the block's balance the crank's force on it",
+                "peg": "the peg's balance gives each slot's normal force",
+                "triad": "each link's moments about its known end give its force across "
+                         "it; the plate's three equations together (a 3x3 solve) the "
+                         "forces along the links; each link's balance the rest",
                 "wheel centre": "the wheel's moments about its centre give the ground's "
                                 "grip; the link's moments about its other end the ground's "
                                 "normal force; the balances the pin forces",

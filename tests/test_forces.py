@@ -1298,3 +1298,20 @@ def test_a_torque_answer_where_a_force_drives_is_one_clear_line(tmp_path, capsys
     err = capsys.readouterr().err
     assert "torque: O-R drives this mechanism with a force, not a torque" in err
     assert err.count("\n") <= 1
+
+
+def test_the_steps_write_each_new_group_in_its_units():
+    """The yoke's couple in N m, the cylinder's force in N (no guide words), each group
+    with its head."""
+    import re as _re
+
+    from polygon_method.steptable import steps_text
+    yoke = with_forces(load_scene(ROOT / "worked_problems" / "scotch_yoke.toml"), 1)
+    text = " ".join(steps_text(solve(yoke)).split())
+    assert _re.search(r"C on block Y by the path = [\d.]+ N m c?cw", text)
+    assert "the yoke's balance along its path gives the slot's force" in text
+    text = " ".join(steps_text(solve(_tipper("0.1 m/s extending"))).split())
+    assert _re.search(r"F in O-R, \+ pushing O and R apart = [\d.]+ N -", text)
+    six = with_forces(load_scene(ROOT / "worked_problems" / "class3_six_bar.toml"), 1)
+    assert "the plate's three equations together (a 3x3 solve)" in \
+        " ".join(steps_text(solve(six)).split())
