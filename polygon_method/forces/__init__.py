@@ -5,12 +5,24 @@ D'Alembert: each massive body carries its inertia force ``-m a_G`` at its centre
 and the couple ``-I alpha`` (:mod:`.bodies`); with its weight and the scene's loads the
 mechanism is then in equilibrium at the instant, and the pin forces follow group by group
 in the reverse order of the kinematic plan, each group statically determinate: a dyad's
-two links (:mod:`.dyad`), a link with its block on a fixed path (:mod:`.slider`), and last
-the crank, whose moments give the driving torque (:mod:`.crank`). A point carried on a link
+two links (:mod:`.dyad`), a link with its block on a guide (:mod:`.slider`), a block on
+a slotted lever with the lever (:mod:`.slotted`), and last
+the driver: the crank, whose moments give the driving torque (:mod:`.crank`; a second
+driving crank the same, in its place: its own torque), or a driving block, whose force
+balance gives the driver's force along its guide (:mod:`.driver`). A point carried on a link
 needs no step of its own: its loads and the pins there act on the link.
 
-What is not written yet is refused in one line naming the step (a block on a moving guide,
-a cylinder, rolling, a peg, a yoke, a triad, two inputs): no guess.
+A hydraulic cylinder is a two-force member (:mod:`.cylinder`); where the motion is given
+on it, it is the driver and its force the driver's effort.
+
+A wheel rolling on a fixed line is solved with the link that finds its centre
+(:mod:`.wheel`): the ground's normal and tangential forces, and the friction no slip needs.
+
+A triad's plate and three links are solved together (:mod:`.triad`: the textbook's 3x3
+solve).
+
+What is not written yet is refused in one line naming the step (rolling on a circle or a
+gear, a rack, a triad whose plate is three links): no guess.
 
 Sign rule: see :mod:`.records` (the force on one body by the other; ccw positive; moments
 about the frame's origin).
@@ -18,39 +30,50 @@ about the frame's origin).
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from ..common.errors import PolygonMethodError
-from . import carried, crank, dyad, slider
+from . import (carried, crank, cylinder, driver, dyad, peg, rolling, slider, slotted, triad,
+               wheel, yoke)
 from .bodies import Ledger, Singular, centre, cross, gather
-from .records import (FRAME, Forces, ForceStep, GuideForce, Inertia, PinForce, block,
+from .records import (FRAME, Contact, Forces, ForceStep, GuideForce, Inertia, PinForce, block,
                       force_value, forces_dict)
 
 #: the force step of each kind of kinematic step: its room (``owns(st)``: the bodies its
 #: points act on; ``step(st, P, ledger, owners)``: its pin forces; ``covers(st)``, where
-#: present: whether it covers this step of its kind)
-ROOMS = {"crank": crank, "dyad": dyad, "slider": slider, "carried": carried}
+#: present: whether it covers this step of its kind; ``check(st, plan)``, where present: why
+#: the plan cannot be solved with it, or None; ``blocks(st)``, where present: the slider
+#: blocks of its group, each a body a mass may sit on; ``divisor(st, rec, P, L)``, where
+#: present: the length its equations divide by (:mod:`.bounds`); ``drives(scene, st)``,
+#: ``unit_ledger(st)``, ``effort(st, t0, t1, ledger)``, where present: whether it drives
+#: the mechanism, and its force from the crank's torque without it and with 1 N in it)
+#: the members a room may give, said once above for every room
+ROOM_CONTRACT = ("owns", "step", "covers", "check", "blocks", "divisor", "drives",
+                 "unit_ledger", "effort")
+ROOMS = {"crank": crank, "dyad": dyad, "slider": slider, "carried": carried,
+         "slotted": slotted, "block": driver, "second crank": crank,
+         "cylinder": cylinder, "yoke": yoke, "peg": peg, "rolling": rolling,
+         "wheel centre": wheel, "triad": triad}
 
 __all__ = ["analyse", "Forces", "Inertia", "PinForce", "GuideForce", "ForceStep", "FRAME",
            "block", "centre", "cross", "Ledger", "forces_dict", "owners", "ROOMS",
            "force_value"]
 
 _NOT_YET = {
-    "slider": "a block sliding on a moving link",
-    "slotted": "a block sliding on a moving link",
-    "cylinder": "a cylinder",
-    "rolling": "rolling without slip",
-    "wheel_centre": "a wheel's centre on a line",
+    "rolling": "rolling on a circle or a gear (the contact's normal force is not "
+               "determined by statics where a link holds the centres' distance: a preload or "
+               "the teeth's pressure angle sets it)",
     "rack": "a rack on a pinion",
-    "peg": "a peg in slots",
-    "yoke": "a yoke",
-    "triad": "a triad (class-III group)",
-    "second_crank": "a second driving crank",
+    "triad": "a triad whose plate is made of three links",
 }
 
 
 def _refuse(scene, st, what):
     raise PolygonMethodError(
         f"forces: {what} is not solved for forces yet (step {st.index + 1}, {st.title}); "
-        "the force analysis covers cranks, dyads, carried points and blocks on fixed paths",
+        "the force analysis covers cranks (one or two), driving blocks, dyads, carried "
+        "points, blocks on fixed paths and on moving links, slotted levers, yokes, pegs, "
+        "cylinders, wheels rolling on a line and triads",
         file=scene.file, key=_key(scene))
 
 
@@ -70,21 +93,22 @@ def owners(scene, plan) -> dict:
     a ground point, the crank for its tip, a dyad's first link for its point, the block
     for a slider's point, the link for a point carried on it. Refuses a plan with a step
     the force analysis does not cover."""
-    if scene.input.second is not None:
-        raise PolygonMethodError("forces: two driving cranks: one balance does not give "
-                                 "two driving torques; the force analysis needs one input",
-                                 file=scene.file, key=_key(scene))
     own = {p: FRAME for p in scene.ground}
     fixed = frame_links(scene)
+    blocks = set()
     for st in plan.steps:
         room = ROOMS.get(st.kind)
         if room is None or not getattr(room, "covers", lambda s: True)(st):
             _refuse(scene, st, _NOT_YET.get(st.kind, f"a {st.kind} step"))
+        why = getattr(room, "check", lambda s, p: None)(st, plan)
+        if why:
+            _refuse(scene, st, why)
         own.update({p: FRAME if b in fixed else b for p, b in room.owns(st).items()})
-    for m in scene.masses:  # a mass on a block the plan does not slide on a fixed path
-        if m.block and own.get(m.body) != block(m.body):
-            raise PolygonMethodError(f"forces: {m.body} is a block on no fixed path: its "
-                                     "mass cannot be placed", file=scene.file,
+        blocks.update(getattr(room, "blocks", lambda s: ())(st))
+    for m in scene.masses:  # a mass on a block no group of the plan has
+        if m.block and m.body not in blocks:
+            raise PolygonMethodError(f"forces: {m.body} is a block no force step carries: "
+                                     "its mass cannot be placed", file=scene.file,
                                      key=f"[masses] {m.body}")
     return own
 
@@ -95,9 +119,47 @@ def analyse(motion) -> Forces:
     scene, plan = motion.scene, motion.plan
     own = owners(scene, plan)
     records, led = gather(scene, motion, own)
-    P = motion.P
-    pins, guides, steps = [], [], []
-    torque = None
+    inp = scene.input
+    driving = next((st for st in plan.steps
+                    if getattr(ROOMS[st.kind], "drives", lambda sc, s: False)(scene, st)),
+                   None)
+    if driving is not None:  # the walk is linear in the driver's force: walk it twice
+        room = ROOMS[driving.kind]
+        t0 = _walk(scene, plan, motion.P, _copy(led), own)[3]
+        t1 = _walk(scene, plan, motion.P, room.unit_ledger(driving), own)[3]
+        try:
+            room.effort(driving, t0, t1, led)
+        except Singular as exc:
+            raise PolygonMethodError(f"forces: {exc}: its force is not determined here (step "
+                                     f"{driving.index + 1}, {driving.title})",
+                                     file=scene.file) from None
+    pins, guides, steps, torque, second, contacts = _walk(scene, plan, motion.P, led, own)
+    fx, fy, m = led.of(FRAME)  # the drivers' reactions are the frame's too
+    if driving is not None:
+        name, kind, effort = driving.key, driving.kind, led.given[driving.key]
+    elif inp.block is not None:
+        name, kind, effort = block(inp.block), "block", torque
+    else:
+        name, kind, effort = inp.crank, "crank", torque
+    return Forces(records, tuple(pins), tuple(guides), effort, (fx, fy), m,
+                  tuple(steps), {k: tuple(v) for k, v in led.applied.items()},
+                  name, kind, second,
+                  None if inp.second is None else scene.link(inp.second.crank).key,
+                  tuple(contacts))
+
+
+def _copy(led):
+    """A ledger of the same known forces (the first walk must not change the one kept)."""
+    out = Ledger()
+    out.total = dict(led.total)
+    return out
+
+
+def _walk(scene, plan, P, led, own):
+    """The plan's steps in reverse, each group solved from ``led``: (pins, guides, force
+    steps, the crank's torque, a second crank's torque)."""
+    pins, guides, contacts, steps = [], [], [], []
+    torque = second = None
     for st in reversed(plan.steps):
         try:
             p, g, rec, t = ROOMS[st.kind].step(st, P, led, own)
@@ -106,12 +168,13 @@ def analyse(motion) -> Forces:
                                      f"(step {st.index + 1}, {st.title})",
                                      file=scene.file) from None
         pins += p
-        guides += g
+        for x in g:
+            (contacts if isinstance(x, Contact) else guides).append(x)
         if rec is not None:
-            steps.append(rec)
-        if t is not None:
-            torque = t
-    fx, fy, m = led.of(FRAME)
-    return Forces(records, tuple(pins), tuple(guides), torque, (fx, fy), m - torque,
-                  tuple(steps), {k: tuple(v) for k, v in led.applied.items()},
-                  scene.input.crank)
+            steps.append(replace(rec, pins=tuple(p), guides=tuple(g)))
+        if t is not None:  # the first input's torque (or force), or a second crank's
+            if st is plan.steps[0]:
+                torque = t
+            else:
+                second = t
+    return pins, guides, steps, torque, second, contacts

@@ -21,6 +21,14 @@ def any_zero(x) -> bool:
     return bool(z) if isinstance(z, bool) else bool(z.any())
 
 
+def least(a, b):
+    """The smaller of two floats, or entry by entry of arrays."""
+    if isinstance(a, float) and isinstance(b, float):
+        return a if a <= b else b
+    import numpy as np
+    return np.minimum(a, b)
+
+
 def cross(ax, ay, bx, by):
     """``a x b`` (the z-component)."""
     return ax * by - ay * bx
@@ -52,6 +60,9 @@ class Ledger:
     def __init__(self):
         self.total = {}
         self.applied = {}
+        #: a driving cylinder's force (N), by its key, and the condition it was found with
+        self.given = {}
+        self.conditions = {}
 
     def add(self, body, fx, fy, x, y, what=None):
         """A force ``(fx, fy)`` acting at ``(x, y)`` on ``body``."""

@@ -1,4 +1,5 @@
-"""The force step of the crank: the last one solved. The frame holds it at its pivot O
+"""The force step of the crank: the last one solved (a second driving crank's is the same,
+solved in its place in the plan's reverse order: its own torque from its own moments). The frame holds it at its pivot O
 and its driver turns it with the torque T; every other force on it is known by now::
 
     R_O = -F            (the frame's force on the crank at O)
@@ -33,13 +34,14 @@ def step(st, P, led, own):
     ox, oy = P[st.pivot]
     r, torque = solve(ox, oy, k)
     led.add(FRAME, -r[0], -r[1], ox, oy)
+    led.couple(FRAME, -torque)  # the driver, mounted on the frame, feels -T
     eq = ()
     if isinstance(torque, float):
         O = st.pivot
         eq = (f"moments about {O}: T + M_{O} = 0, M_{O} = {fmt(-torque)} N m the known "
               f"forces' moment: T = {fmt(torque)} N m",
               f"forces: F_{O} = -(the known forces) = ({fmt(r[0])}, {fmt(r[1])}) N")
-    rec = ForceStep(st.index, "crank", st.title, (st.link,), (k,),
+    rec = ForceStep(st.index, st.kind, st.title, (st.link,), (k,),
                     ((f"F_{st.pivot} on {st.link} by the frame", r),
                      (f"T on {st.link}", torque)), 1.0, "", eq)
     return (PinForce(st.pivot, st.link, FRAME, r),), (), rec, torque

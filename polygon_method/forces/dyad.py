@@ -22,7 +22,8 @@ D = (1, 0) and takes it all (the joint's triangle of forces: link 1 carries none
 
 from __future__ import annotations
 
-from .bodies import Singular, any_zero, cross
+from ..steps.rounding import vhypot
+from .bodies import Singular, any_zero, cross, least
 from ..common.numbers import fmt
 from .records import ForceStep, PinForce
 
@@ -91,3 +92,10 @@ def step(st, P, led, own):
                     f"sine of the angle at {st.point} between {st.point}{st.b} and "
                     f"{st.point}{st.d}", eq)
     return pins, (), rec, None
+
+
+def divisor(st, rec, P, L):
+    """The length the step's equations divide by: ``min(|CB|, |CD|) c / 2`` (its
+    determinant over the larger arm, Cramer's rule: see :mod:`.bounds`)."""
+    (bx, by), (dx, dy), (cx, cy) = P[st.b], P[st.d], P[st.point]
+    return 0.5 * rec.condition * least(vhypot(cx - bx, cy - by), vhypot(cx - dx, cy - dy))

@@ -69,16 +69,79 @@ class GuideForce:
     """The guide's normal force on the block at ``point``: ``normal`` (N) along the unit
     ``n`` (the path's direction turned 90 deg ccw), acting through the block's pin (a
     frictionless guide; the block's loads all pass through its pin, so the guide adds no
-    couple)."""
+    couple, except a yoke's, see ``couple``). ``by``: the body the guide is, the frame for a fixed path, the link for a
+    block sliding on a moving link (which feels the opposite, at the block's pin)."""
 
     point: str
     normal: float
     n: tuple
+    by: str = FRAME
+    #: the guide's couple on the block (N m, ccw): a translating yoke's path keeps it from
+    #: turning; 0 for a block whose loads all pass through its pin
+    couple: float = 0.0
+    #: the slot's name where a point slides in two (a peg: ``P_OA``); else the point
+    name: str = ""
+
+    @property
+    def key(self) -> str:
+        """The name the guide's force goes by in the output: the slider's key, or its point."""
+        return self.name or self.point
 
     @property
     def force(self) -> tuple:
         """The normal force as a vector, ``normal n`` (N)."""
         return (self.normal * self.n[0], self.normal * self.n[1])
+
+
+@dataclass(frozen=True)
+class Contact:
+    """The ground's force on a wheel rolling without slip on a fixed line, at its contact
+    point ``point`` (x, y): ``normal`` (N) along ``m`` (the line's unit normal towards the
+    wheel), ``tangential`` (N) along ``t = perp(m)`` (the grip friction must supply; no
+    slip: the contact point does not move, so neither works). ``required_friction``: the
+    least friction coefficient that holds it, ``|T| / N``, None where ``N <= 0`` (the
+    wheel would lift off)."""
+
+    wheel: str
+    point: tuple
+    normal: float
+    tangential: float
+    m: tuple
+
+    by = FRAME
+    couple = 0.0
+
+    @property
+    def key(self) -> str:
+        """The contact's name in the output: "contact of W"."""
+        return f"contact of {self.wheel}"
+
+    @property
+    def force(self) -> tuple:
+        """The contact force on the wheel as a vector: its normal and tangential parts along ``m``
+        and across it (N)."""
+        mx, my = self.m
+        return (self.normal * mx - self.tangential * my, self.normal * my + self.tangential * mx)
+
+    @property
+    def required_friction(self):
+        """The least friction coefficient that keeps the wheel from slipping, |T| / N; None (inf
+        over a sweep) where the wheel would lift off."""
+        n, t = self.normal, self.tangential
+        if not isinstance(n, float):  # a sweep: where it lifts off, no number
+            import numpy as np
+            return np.where(n > 0, np.abs(t) / np.where(n > 0, n, 1.0), np.inf)
+        return abs(t) / n if n > 0 else None
+
+    def grip_words(self) -> str:
+        """The friction rolling needs here, in words (or why the wheel lifts off)."""
+        mu = self.required_friction
+        if mu is None:
+            return (f"the ground would have to pull wheel {self.wheel} down (N = "
+                    f"{self.normal:.4g} N): it lifts off the line, and rolling without "
+                    "slip does not hold")
+        return (f"no slip needs a friction coefficient of at least |T| / N = {mu:.3g} at the "
+                f"contact of {self.wheel}")
 
 
 @dataclass(frozen=True)
@@ -102,6 +165,9 @@ class ForceStep:
     why: str = ""
     #: the step's equations with their numbers, in the book's words (SI)
     equations: tuple = ()
+    #: the pin forces (:class:`PinForce`) and guide forces (:class:`GuideForce`) it found
+    pins: tuple = ()
+    guides: tuple = ()
 
 
 @dataclass(frozen=True)
@@ -110,7 +176,9 @@ class Forces:
 
     ``inertia`` (:class:`Inertia` per massive body), ``pins`` (:class:`PinForce`, one per
     pair of bodies at a pin, in the order solved), ``guides`` (:class:`GuideForce`),
-    ``input_torque`` (N m, on the crank by its driver, ccw positive, inertia included),
+    ``input_torque`` (N m, on the crank by its driver, ccw positive, inertia included; for a
+    driving block, ``driver == "block"``, the force on it by its driver, N, signed along
+    its guide's direction),
     ``shaking_force`` (the resultant force the mechanism exerts on the frame, through its
     pins and guides, and a gas force's push on the cylinder's cover: the gas acts between
     the piston and the frame) and ``shaking_moment`` (its moment about the frame's origin, with the
@@ -127,6 +195,14 @@ class Forces:
     steps: tuple
     applied: dict
     crank: str
+    #: "crank" (a driving torque), "block" (a driving force along the block's guide) or
+    #: "cylinder" (the force in the cylinder ``crank`` names, + pushing its ends apart)
+    driver: str = "crank"
+    #: a second driving crank's torque (N m, ccw positive) and its link, or None
+    second_torque: float | None = None
+    second_crank: str | None = None
+    #: the ground's contact force on each wheel rolling on a line (:class:`Contact`)
+    contacts: tuple = ()
 
     def pin(self, point: str, on: str, by: str | None = None):
         """The force on body ``on`` at ``point`` (by ``by``, when the pin joins more than two
@@ -149,9 +225,9 @@ def force_value(f: Forces, kind: str, name: str) -> float:
     """The size of what an answer key names: ``F`` the force at pin ``name`` (a pin joining
     two bodies), ``N`` the guide's normal force on the block at ``name``."""
     if kind == "N":
-        g = next((g for g in f.guides if g.point == name), None)
+        g = next((g for g in f.guides if g.key == name), None)
         if g is None:
-            raise SceneError(f"N_{name}: the block at {name} is on no fixed path")
+            raise SceneError(f"N_{name}: the block at {name} slides on no guide")
         return abs(g.normal)
     found = [p for p in f.pins if p.point == name]
     if len(found) != 1:
@@ -185,10 +261,20 @@ def forces_dict(f: Forces) -> dict:
                             "offset_point": None if i.offset is None else _vec(i.offset_point)}
                    for i in f.inertia},
         "pins": pins,
-        "guides": {g.point: {"normal_force": g.normal + 0.0, "normal": _vec(g.n),
-                             "force": _vec(g.force)} for g in f.guides},
-        "input_torque": f.input_torque + 0.0,
-        "crank": f.crank,
+        "guides": {g.key: {"normal_force": g.normal + 0.0, "normal": _vec(g.n),
+                           "force": _vec(g.force), "by": g.by,
+                           **({"couple": g.couple + 0.0} if g.couple is not None and
+                              isinstance(g.couple, float) and g.couple else {})}
+                   for g in f.guides},
+        ("input_torque" if f.driver == "crank" else "input_force"): f.input_torque + 0.0,
+        f.driver: f.crank,
+        **({} if f.second_crank is None else
+           {"second": {"crank": f.second_crank, "input_torque": f.second_torque + 0.0}}),
+        **({"contacts": {c.wheel: {"point": _vec(c.point), "normal_force": c.normal + 0.0,
+                                   "tangential_force": c.tangential + 0.0,
+                                   "normal": _vec(c.m), "force": _vec(c.force),
+                                   "required_friction": c.required_friction}
+                         for c in f.contacts}} if f.contacts else {}),
         "shaking_force": _vec(f.shaking_force),
         "shaking_moment": f.shaking_moment + 0.0,
         "steps": [{"step": s.index + 1, "kind": s.kind, "title": s.title,

@@ -1,5 +1,7 @@
 """The force step of a slider dyad (RRP): a link B-X whose end X is pinned to a block
-sliding on a fixed, frictionless path (unit ``u``; its normal ``n = perp(u)``).
+sliding on a frictionless guide (unit ``u``; its normal ``n = perp(u)``): a fixed path, or
+a moving link G1-G2 (``u`` along it, as the kinematics takes it), which then feels the
+block's push ``-N n`` at X (the guide's body is solved later, in the reverse order).
 
 Unknowns: ``P``, the force on the link at X by the block, and ``N``, the guide's normal
 force on the block along ``n``. The block's loads pass through X (its mass is at its pin),
@@ -18,6 +20,7 @@ Then ``P = N n + R`` and the link's force balance gives the force on it at B, ``
 
 from __future__ import annotations
 
+from ..steps.rounding import vhypot
 from .bodies import Singular, any_zero, cross
 from ..common.numbers import fmt
 from .records import FRAME, ForceStep, GuideForce, PinForce, block
@@ -45,14 +48,25 @@ def solve(bx, by, known_link, xx, xy, known_block, u):
     return n, (px, py), (-(fx + px), -(fy + py)), cond
 
 
-def covers(st) -> bool:
-    """Only a block on a fixed path (a block on a moving link is not written yet)."""
-    return st.path is not None
-
-
 def owns(st) -> dict:
     """The slider's point acts, for loads and later pins, on its block."""
     return {st.point: block(st.point)}
+
+
+def blocks(st) -> tuple:
+    """The blocks this step's group has (a mass may sit on each)."""
+    return (st.point,)
+
+
+def guide(st, P, own):
+    """(unit u along the guide, the body the guide is)."""
+    if st.path is not None:
+        return st.path.u, FRAME
+    (gx, gy), (hx, hy) = P[st.g1], P[st.g2]
+    ux, uy = hx - gx, hy - gy
+    m = (ux * ux + uy * uy) ** 0.5
+    body = FRAME if own.get(st.g1) == FRAME and own.get(st.g2) == FRAME else st.guide
+    return (ux / m, uy / m), body
 
 
 def step(st, P, led, own):
@@ -62,14 +76,15 @@ def step(st, P, led, own):
     bl = block(x)
     kl, kb = led.of(lk), led.of(bl)
     (bx, by), (xx, xy) = P[st.b], P[x]
-    n, p, fb, cond = solve(bx, by, kl, xx, xy, kb, st.path.u)
+    u, gb = guide(st, P, own)
+    n, p, fb, cond = solve(bx, by, kl, xx, xy, kb, u)
     if n is None:
-        raise Singular(f"{st.b}{x} stands square to the path")
+        raise Singular(f"{st.b}{x} stands square to the guide")
     ob = own[st.b]
-    ux, uy = st.path.u
-    g = GuideForce(x, n, (-uy, ux))
+    ux, uy = u
+    g = GuideForce(x, n, (-uy, ux), gb)
     led.add(ob, -fb[0], -fb[1], bx, by)
-    led.add(FRAME, -g.force[0], -g.force[1], xx, xy)
+    led.add(gb, -g.force[0], -g.force[1], xx, xy)
     eq = ()
     if isinstance(cond, float):  # one instant: the working in words
         B = st.b
@@ -86,5 +101,11 @@ def step(st, P, led, own):
     rec = ForceStep(st.index, "slider", st.title, (lk, bl), (kl, kb),
                     ((f"N_{x} on {bl} by the guide", n), (f"F_{x} on {lk} by {bl}", p),
                      (f"F_{st.b} on {lk} by {ob}", fb)), cond,
-                    f"cosine of the angle between {st.b}{x} and the path", eq)
+                    f"cosine of the angle between {st.b}{x} and the guide", eq)
     return (PinForce(x, lk, bl, p), PinForce(st.b, lk, ob, fb)), (g,), rec, None
+
+
+def divisor(st, rec, P, L):
+    """The length the step's equations divide by: ``(X - B) . u = |XB| c``."""
+    (bx, by), (xx, xy) = P[st.b], P[st.point]
+    return rec.condition * vhypot(xx - bx, xy - by)

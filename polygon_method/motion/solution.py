@@ -24,11 +24,12 @@ from ..solver.derived import input_torque as _torque
 from ..solver.derived import PinRubbing, pin_records, power_terms
 from ..solver.centres import JSON_BODIES, centres_dict, locate
 from ..solver.errorbound import NO_BOUND, USELESS, bounds_dict, error_bounds
-from ..common.errors import TOL, PolygonMethodError
+from ..common.errors import TOL, PolygonMethodError, SceneError
 from ..solver.kinematics import Motion, hypot
 from ..common.numbers import fmt_angular, quiet, sense  # noqa: F401  (re-exported)
 from ..solver.compiler import compile_plan
 from ..forces import analyse, force_value, forces_dict
+from ..forces.bounds import bounds_dict as force_bounds_dict, force_bounds
 from ..solver.plan import Context
 from ..scene import FixedPath, Scene
 
@@ -283,6 +284,8 @@ class Solution(Motion):
         d["warnings"] = warnings
         d["notes"] = list(self.notes)
         d["error_bounds"] = _useful(bounds_dict(self, self.error_bounds))
+        if sc.has_forces and not refused:  # each force's bound, null where none is useful
+            d["error_bounds"]["forces"] = force_bounds_dict(force_bounds(self))
         return _finite(d)
 
     def value(self, kind: str, names: tuple):
@@ -304,7 +307,13 @@ class Solution(Motion):
         if kind == "rub":
             return self.rubbing[names[0]].rubbing_velocity
         if kind == "torque":
-            return self.forces.input_torque if self.scene.has_forces else self.input_torque
+            if not self.scene.has_forces:
+                return self.input_torque
+            f = self.forces
+            if f.driver != "crank":  # a driving block's or cylinder's effort is a force
+                raise SceneError(f"torque: {f.crank} drives this mechanism with a force, not "
+                                 "a torque (solve gives it as the input force)")
+            return f.input_torque
         if kind in ("F", "N"):
             return force_value(self.forces, kind, names[0])
         if kind in ("vu", "au"):  # the guide's point under a block (v_A1, a_A1)

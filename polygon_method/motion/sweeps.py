@@ -27,6 +27,7 @@ import numpy as np
 
 from ..solver.derived import input_torque, largest, pin_rubbing
 from ..solver.errorbound import error_bounds
+from ..forces.bounds import force_bounds
 from ..common.errors import TOL, PolygonMethodError, SceneError
 from ..forces import analyse
 from ..solver.kinematics import Motion
@@ -124,24 +125,39 @@ class SweepResult(Motion):
         if error_bound:
             worst = self.error_bounds.worst
             cols.append(("err_max", "1", np.broadcast_to(worst, np.shape(self.theta))))
+            f = self._forces()
+            if f is not None:  # the largest bound of any force (relative to the largest)
+                cols.append(("err_forces", "1", np.broadcast_to(
+                    force_bounds(self, f).worst, np.shape(self.theta))))
         return cols
+
+    def _forces(self):
+        """The force analysis over the sweep, or None (no masses or gravity; a plan, or a
+        position, the analysis does not cover)."""
+        if not self.scene.has_forces or not len(self.theta):
+            return None
+        try:
+            return analyse(self)
+        except PolygonMethodError:
+            return None
 
     def force_columns(self) -> list:
         """The force analysis over the sweep, for a scene with masses or gravity (none for a
         plan the analysis does not cover): the driver's torque with inertia (the negative
         of an engine's turning moment), the shaking force and moment, each guide's normal
         force and the size of each pin force (named ``F_<pin>_<on>_<by>``)."""
-        if not self.scene.has_forces or not len(self.theta):
-            return []
-        try:
-            f = analyse(self)
-        except PolygonMethodError:
+        f = self._forces()
+        if f is None:
             return []
         n = np.shape(self.theta)
-        cols = [("torque_inertia", "N m", np.broadcast_to(f.input_torque, n)),
-                ("shake_x", "N", np.broadcast_to(f.shaking_force[0], n)),
-                ("shake_y", "N", np.broadcast_to(f.shaking_force[1], n)),
-                ("shake_moment", "N m", np.broadcast_to(f.shaking_moment, n))]
+        cols = [("torque_inertia", "N m", np.broadcast_to(f.input_torque, n))
+                if f.driver == "crank" else
+                ("force_inertia", "N", np.broadcast_to(f.input_torque, n))]
+        if f.second_crank is not None:
+            cols.append(("torque2_inertia", "N m", np.broadcast_to(f.second_torque, n)))
+        cols += [("shake_x", "N", np.broadcast_to(f.shaking_force[0], n)),
+                 ("shake_y", "N", np.broadcast_to(f.shaking_force[1], n)),
+                 ("shake_moment", "N m", np.broadcast_to(f.shaking_moment, n))]
         cols += [(f"N_{g.point}", "N", np.broadcast_to(g.normal, n)) for g in f.guides]
         cols += [(f"F_{p.point}_{p.on}_{p.by}".replace(" ", ""), "N",
                   np.broadcast_to(np.hypot(*p.force), n)) for p in f.pins]

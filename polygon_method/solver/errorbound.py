@@ -33,19 +33,13 @@ from __future__ import annotations
 
 from .compiler import compile_plan
 from .kinematics import hypot
-from ..steps.rounding import C_FLOOR, EPS, largest, vmax
+from ..steps.rounding import CAP, C_FLOOR, EPS, USELESS, largest, vmax
 
 __all__ = ["EPS", "C_FLOOR", "ErrorBounds", "error_bounds", "scales", "bounds_dict",
            "shown_bounds", "SHOWN", "USELESS", "NO_BOUND"]
 
 #: the text report shows a bound only above this (the promise of agreement everywhere else)
 SHOWN = 1e-9
-#: a relative bound at or above this says nothing (the error may be the size of the largest
-#: value of its kind): "no useful bound", null in the JSON
-USELESS = 1.0
-#: bounds saturate here, never overflow to inf (a long chain of steps that each multiply
-#: the bound): far above :data:`USELESS`, far below the largest float
-CAP = 1e100
 #: the reason given, in words and in the JSON, where a bound is no useful bound
 NO_BOUND = ("no useful bound: the rounding carried along the steps a quantity depends on "
             "may reach its size (a long chain of steps, or ill-conditioned ones)")

@@ -32,6 +32,12 @@ __all__ = ["EPS", "C_FLOOR", "vmax", "vmin", "vhypot", "largest", "two_lines", "
 EPS = 2.0 ** -53
 #: the conditions are at least the refusal band's edge; never divide by less than this
 C_FLOOR = 1e-12
+#: a relative bound at or above this says nothing (the error may be the size of the largest
+#: value of its kind): "no useful bound", null in the JSON
+USELESS = 1.0
+#: bounds saturate here, never overflow to inf (a long chain of steps that each multiply
+#: the bound): far above :data:`USELESS`, far below the largest float
+CAP = 1e100
 
 
 def vmax(a, b):

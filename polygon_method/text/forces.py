@@ -11,10 +11,12 @@ from __future__ import annotations
 
 import math
 
+from ..solver.errorbound import SHOWN, USELESS
 from ..forces import FRAME
+from ..forces.bounds import NO_BOUND, force_bounds
 from ..common.numbers import fmt, quiet, sense_word
 
-__all__ = ["forces_lines", "force_blocks"]
+__all__ = ["forces_lines", "force_blocks", "bound_lines"]
 
 
 def _scales(sol, f):
@@ -50,6 +52,27 @@ def _body(name):
     return "the frame" if name == FRAME else name
 
 
+def _driver_lines(f, F, M, said):
+    """The driver's effort: the crank's torque, or a driving block's force along its guide,
+    and a second crank's torque."""
+    if f.driver == "cylinder":
+        v = quiet(f.input_torque, F)
+        out = [f"input force in cylinder {f.crank}{said}: {fmt(abs(v))} N"
+               + ("" if not v else " pushing its ends apart" if v > 0 else
+                  " pulling its ends together")]
+    elif f.driver == "block":
+        v = quiet(f.input_torque, F)
+        out = [f"input force on {f.crank} along its guide{said}: {fmt(abs(v))} N"
+               + ("" if not v else " along the guide's direction" if v > 0 else
+                  " against the guide's direction")]
+    else:
+        out = [f"input torque on {f.crank}{said}: {_moment(f.input_torque, M)}"]
+    if f.second_crank is not None:
+        out.append(f"input torque on {f.second_crank} (the second crank){said}: "
+                   f"{_moment(f.second_torque, M)}")
+    return out
+
+
 def forces_lines(sol) -> list:
     """The force analysis' lines of the ``solve`` report (empty without masses or gravity;
     one line when the plan has a step the analysis does not cover)."""
@@ -78,14 +101,42 @@ def forces_lines(sol) -> list:
         out.append(f"{p.point:<5} {p.on:<10} {_body(p.by):<10} {_vec(p.force, F)}")
     for g in f.guides:
         out.append(f"guide at {g.point}: normal force on block {g.point} {_vec(g.force, F)}")
-    out.append(f"input torque on {f.crank} (inertia, weights and loads): "
-               f"{_moment(f.input_torque, M)}")
+    for c in f.contacts:
+        out.append(f"contact of wheel {c.wheel} with the ground: normal {fmt(quiet(c.normal, F))}"
+                   f" N, tangential {fmt(quiet(c.tangential, F))} N ({_vec(c.force, F)}); "
+                   + c.grip_words())
+    out += _driver_lines(f, F, M, " (inertia, weights and loads)")
     out.append(f"shaking force on the frame: {_vec(f.shaking_force, F)}; shaking moment "
                f"about the origin: {_moment(f.shaking_moment, M)}")
     for st in f.steps:
         if st.condition < 0.0871557:  # sin 5 deg, as the kinematic warnings
             out.append(f"warning: forces, step {st.index + 1} ({st.title}): condition "
                        f"{st.condition:.3g} ({st.why}): the pin forces grow as 1/condition")
+    out += bound_lines(sol, f)
+    return out
+
+
+def bound_lines(sol, f) -> list:
+    """The forces whose estimated error bound exceeds :data:`SHOWN` (largest first), in the
+    words of the kinematic bounds below the plan; empty where every force is closer."""
+    b = force_bounds(sol, f)
+    shown = [(f"F_{point} on {on} by {_body(by)}", e) for (point, on, by), e in b.pins.items()
+             if e > SHOWN]
+    shown += [(f"N_{k} (guide)", e) for k, e in b.guides.items() if e > SHOWN]
+    if b.effort > SHOWN:
+        shown.append(("the driver's " + ("torque" if f.driver == "crank" else "force"),
+                      b.effort))
+    if b.second is not None and b.second > SHOWN:
+        shown.append(("the second crank's torque", b.second))
+    if not shown:
+        return []
+    out = [f"estimated error of the forces above {SHOWN:g} (the kinematic bounds through "
+           "each group's equations, each dividing by its condition; relative to the largest "
+           "force, a torque to it times the longest link):"]
+    for what, e in sorted(shown, key=lambda t: -t[1]):
+        out.append(f"  {what}: {e:.2g}" if e < USELESS else f"  {what}: no useful bound")
+    if any(not e < USELESS for _, e in shown):
+        out.append(f"  ({NO_BOUND})")
     return out
 
 
@@ -120,6 +171,7 @@ def force_blocks(sol) -> list:
     blocks.append(("table", ("body", "m (kg)", "I_G (kg m^2)", "G", "a_G", "m a_G, opposite "
                              "to a_G", "-I alpha", f"h ({sc.units})"), rows))
     blocks.append(("h", "7. Forces, group by group (the construction's groups in reverse)"))
+    bounds = force_bounds(sol, f)
     blocks.append(("p", "Each group's bodies are statically determinate: the moments about "
                    "the pins whose forces are not yet known give the pin force between them, "
                    "then each body's force balance the rest. 'Known' is the resultant of the "
@@ -134,25 +186,57 @@ def force_blocks(sol) -> list:
         for name, val in st.found:
             if isinstance(val, tuple):
                 items.append(f"{name} = {_vec(val, F)}")
-            elif name.startswith("T "):
+            elif name.startswith(("T ", "C ")):  # a torque, a guide's couple
                 items.append(f"{name} = {_moment(val, M)}")
+            elif name.startswith("F in "):  # a cylinder's force
+                items.append(f"{name} = {fmt(quiet(val, F))} N")
+            elif name.startswith(("N at the contact", "T at the contact")):
+                items.append(f"{name} = {fmt(quiet(val, F))} N ("
+                             + ("normal to the line, + pushing the wheel off it)"
+                                if name[0] == "N" else "along the line, + along perp(m))"))
+            elif name.startswith("F "):
+                items.append(f"{name} = {fmt(quiet(val, F))} N (+ along the guide's "
+                             "direction)")
             else:
-                items.append(f"{name} = {fmt(quiet(val, F))} N (along the path's normal, "
+                items.append(f"{name} = {fmt(quiet(val, F))} N (along the guide's normal, "
                              "+ to its left)")
         if st.why:
             items.append(f"condition {st.condition:.3g} ({st.why})")
+        e = bounds.steps.get(st.index, 0.0)
+        if e > SHOWN:
+            items.append(f"estimated error of these forces: {e:.2g} of the largest force"
+                         if e < USELESS else f"estimated error of these forces: {NO_BOUND}")
         head = {"dyad": "moments of each link about its other end give the pin force "
                         "between them; each link's force balance its end's",
                 "slider": "moments of the link about its other end give the guide's normal "
                           "force; the block's force balance the pin force; the link's the "
                           "force at its other end",
+                "slotted": "moments of the lever about its pivot give the normal force "
+                           "between it and the block; the lever's force balance the force "
+                           "at its pivot; the block's the force at its pin",
                 "crank": "the frame holds the crank at its pivot; the moments about the "
-                         "pivot give the driving torque"}.get(st.kind, "")
+                         "pivot give the driving torque",
+                "second crank": "the frame holds the second crank at its pivot; the "
+                                "moments about the pivot give its own driving torque",
+                "cylinder": "a two-force member: its force along its line, pushing (or "
+                            "pulling) the bodies at its ends",
+                "yoke": "the yoke's balance along its path gives the slot's force on the "
+                        "block; across it the path's normal force, its moments the path's "
+                        "couple; the block's balance the crank's force on it",
+                "peg": "the peg's balance gives each slot's normal force",
+                "triad": "each link's moments about its known end give its force across "
+                         "it; the plate's three equations together (a 3x3 solve) the "
+                         "forces along the links; each link's balance the rest",
+                "wheel centre": "the wheel's moments about its centre give the ground's "
+                                "grip; the link's moments about its other end the ground's "
+                                "normal force; the balances the pin forces",
+                "block": "the block's force balance: along the guide the driver's force, "
+                         "across it the guide's normal force"}.get(st.kind, "")
         blocks.append(("p", f"Step {st.index + 1}, {st.title}: {head}."))
         blocks.append(("list", items))
     blocks.append(("h", "8. The driving torque and the frame"))
-    items = [f"input torque on {f.crank}: {_moment(f.input_torque, M)} (inertia, weights and "
-             "loads; its power balances theirs)",
+    items = [line + " (inertia, weights and loads; its power balances theirs)"
+             for line in _driver_lines(f, F, M, "")] + [
              f"shaking force (on the frame, through its pins and guides): "
              f"{_vec(f.shaking_force, F)}",
              f"shaking moment about the origin (with the driver's reaction): "

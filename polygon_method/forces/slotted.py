@@ -1,0 +1,110 @@
+"""The force step of a slotted link (RPR): a block pinned at A (to the body that found A,
+the crank of a crank and slotted lever) slides along the lever K-N, which turns about K
+(the lever's pivot: the frame, or a body already solved for its motion). The group is the
+block and the lever.
+
+The guide is frictionless: its force on the block is ``N n`` (``n = perp(u)``, ``u`` the
+lever's direction as the kinematics takes it). The block's loads pass through its pin A
+(its mass is there), so the lever adds no couple and ``N n`` acts through A; the lever
+feels ``-N n`` at A. The lever's moments about its pivot K, where its pin force has no
+arm::
+
+    cross(A - K, -N n) + M_K = 0   =>   N = M_K / ((A - K) . u)
+
+(``cross(d, perp(u)) = d . u``): zero when the block reaches the pivot (the kinematics'
+own singularity). Then the lever's force balance gives the force on it at K,
+``-(F - N n)``, and the block's the force on it at A by the crank, ``-(N n + R)`` (R: the
+known forces on the block).
+
+A lever K = (0, 0) up the y axis, the block at A = (0, 1); a couple of 2 N m ccw on the
+lever: the block must push it with 2 N to the right, and the lever pushes the block back,
+N = 2 along n = (-1, 0); the pivot holds the lever with 2 N to the left:
+
+>>> N, FK, FA, c = solve(0.0, 0.0, (0.0, 0.0, 2.0), 0.0, 1.0, (0.0, 0.0, 0.0), (0.0, 1.0), 2.0)
+>>> [round(v, 12) + 0.0 for v in (N,) + FK + FA], c
+([2.0, -2.0, 0.0, 2.0, 0.0], 0.5)
+"""
+
+from __future__ import annotations
+
+from ..steps.rounding import vhypot
+from .bodies import Singular, any_zero, cross
+from ..common.numbers import fmt
+from .records import ForceStep, GuideForce, PinForce, block
+
+
+def solve(kx, ky, known_lever, ax, ay, known_block, u, length):
+    """(N on the block along n, the force on the lever at K, the force on the block at A,
+    the condition ``|A - K| / length``, at most 1).
+
+    ``known_lever``: ``(Fx, Fy, M about the origin)`` on the lever; ``known_block``: the same
+    on the block (its M is not used: its forces pass through A)."""
+    fx, fy, m = known_lever
+    rx, ry = known_block[0], known_block[1]
+    ux, uy = u
+    nx, ny = -uy, ux
+    mk = m - cross(kx, ky, fx, fy)
+    dx, dy = ax - kx, ay - ky
+    den = dx * ux + dy * uy
+    cond = abs(den) / length
+    if any_zero(den):
+        return None, None, None, 0.0
+    if isinstance(cond, float):
+        cond = min(cond, 1.0)
+    else:
+        import numpy as np
+        cond = np.minimum(cond, 1.0)
+    n = mk / den
+    return (n, (-fx + n * nx, -fy + n * ny), (-(n * nx + rx), -(n * ny + ry)), cond)
+
+
+def owns(st) -> dict:
+    """The lever's far end acts, for loads and later pins, on the lever."""
+    return {st.new: st.guide}
+
+
+def blocks(st) -> tuple:
+    """The block of this group (a mass may sit on it, at its pin)."""
+    return (st.point,)
+
+
+def step(st, P, led, own):
+    """Solve the lever's and the block's forces; enter the reactions at K and A on the
+    bodies there. Returns as :func:`.dyad.step`."""
+    lv, a, k = st.guide, st.point, st.known
+    bl = block(a)
+    kl, kb = led.of(lv), led.of(bl)
+    (kx, ky), (ax, ay) = P[k], P[a]
+    (fx1, fy1), (fx2, fy2) = P[st.first], P[st.second]
+    ux, uy = fx2 - fx1, fy2 - fy1
+    m = (ux * ux + uy * uy) ** 0.5
+    ux, uy = ux / m, uy / m
+    n, fk, fa, cond = solve(kx, ky, kl, ax, ay, kb, (ux, uy), st.length)
+    if n is None:
+        raise Singular(f"block {a} is at {k}, the pivot of {lv}")
+    ok, oa = own[k], own[a]
+    g = GuideForce(a, n, (-uy, ux), lv)
+    led.add(ok, -fk[0], -fk[1], kx, ky)
+    led.add(oa, -fa[0], -fa[1], ax, ay)
+    eq = ()
+    if isinstance(cond, float):  # one instant: the working in words
+        mk = kl[2] - cross(kx, ky, kl[0], kl[1])
+        eq = (f"moments of {lv} about {k}: ({a} - {k}) x (-N n) + M_{k} = 0, M_{k} = "
+              f"{fmt(mk)} N m the known forces' on {lv}",
+              f"N = M_{k} / (({a} - {k}) . u) = {fmt(mk)} / {fmt((ax - kx) * ux + (ay - ky) * uy)}"
+              f" = {fmt(n)} N, the lever's push on {bl} (the block pushes the lever back)",
+              f"forces on {lv}: F_{k} = -(the known forces - N n) = ({fmt(fk[0])}, "
+              f"{fmt(fk[1])}) N",
+              f"the block: F_{a} = -(N n + R) = ({fmt(fa[0])}, {fmt(fa[1])}) N on {bl} by "
+              f"{oa}, R = ({fmt(kb[0])}, {fmt(kb[1])}) N the known forces on it")
+    rec = ForceStep(st.index, "slotted", st.title, (lv, bl), (kl, kb),
+                    ((f"N_{a} on {bl} by {lv}", n), (f"F_{k} on {lv} by {ok}", fk),
+                     (f"F_{a} on {bl} by {oa}", fa)), cond,
+                    f"|{k}{a}| / {lv}: the block's distance from the lever's pivot", eq)
+    return (PinForce(k, lv, ok, fk), PinForce(a, bl, oa, fa)), (g,), rec, None
+
+
+def divisor(st, rec, P, L):
+    """The length the step's equations divide by: the block's distance from the pivot."""
+    (kx, ky), (ax, ay) = P[st.known], P[st.point]
+    return vhypot(ax - kx, ay - ky)

@@ -1,0 +1,128 @@
+"""The force step of a triad (a class-III group): a plate with vertices V_1, V_2, V_3, each
+joined by a binary link l_i to a known point K_i. The group is the plate and the three
+links: statically determinate, but not link by link: the plate's three equations hold the
+three links' forces along themselves together (the textbook's 3x3 solve).
+
+Unknown: ``P_i``, the force on link i at V_i by the plate (the plate feels ``-P_i``),
+written along the link and across it: ``P_i = a_i e_i + b_i n_i``, ``e_i = (V_i - K_i) /
+L_i``, ``n_i = perp(e_i)``. Each link's moments about K_i, where its other pin force has
+no arm, give its part across (``cross(V_i - K_i, P_i) = L_i b_i``)::
+
+    b_i = -M_i / L_i
+
+and the plate's balance (forces, and moments about its first vertex V_1, scaled by the
+plate's size S) the parts along, one 3x3 system::
+
+    sum a_i e_i = R - sum b_i n_i
+    sum a_i (V_i - V_1) x e_i = M_1 - sum b_i (V_i - V_1) x n_i
+
+(R, M_1: the known forces on the plate and their moment about V_1). Its determinant
+vanishes when the three links' lines meet in one point (or are parallel): the triad's
+own singularity, where the kinematics fails too; the condition is its determinant over
+the product of its columns' sizes. Then each link's balance gives its force at K_i,
+``-(F_i + P_i)``.
+
+Three links along x, y and x again, the plate's vertices at (1, 0), (0, 1), (1, 1) from
+K_1 = (0, 0), K_2 = (0, 0), K_3 = (0, 1): 1 N pushing the plate to the right at V_1,
+along link 1's line, is held by link 1 alone:
+
+>>> a = solve3x3(((1.0, 0.0), (0.0, 1.0), (1.0, 0.0)), ((0.0, 0.0), (-1.0, 1.0), (0.0, 1.0)),
+...              (1.0, 0.0, 0.0))
+>>> [round(v, 12) + 0.0 for v in a[:3]]
+[1.0, 0.0, 0.0]
+"""
+
+from __future__ import annotations
+
+from ..steps.rounding import largest, vhypot
+from .bodies import Singular, any_zero, cross, least
+from ..common.numbers import fmt
+from .records import ForceStep, PinForce
+
+
+def solve3x3(e, r, rhs):
+    """(a_1, a_2, a_3, the condition) of ``sum a_i (e_i, r_i x e_i) = rhs`` (Cramer's rule;
+    ``r_i`` the vertices from the moments' point, already over the plate's size)."""
+    cols = [(ex, ey, cross(rx, ry, ex, ey)) for (ex, ey), (rx, ry) in zip(e, r)]
+
+    def det(c1, c2, c3):
+        return (c1[0] * (c2[1] * c3[2] - c2[2] * c3[1]) - c2[0] * (c1[1] * c3[2] - c1[2] * c3[1])
+                + c3[0] * (c1[1] * c2[2] - c1[2] * c2[1]))
+    d = det(*cols)
+    size = 1.0
+    for c in cols:
+        size = size * (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) ** 0.5
+    cond = abs(d) / size
+    if any_zero(d):
+        return None, None, None, 0.0
+    return (det(rhs, cols[1], cols[2]) / d, det(cols[0], rhs, cols[2]) / d,
+            det(cols[0], cols[1], rhs) / d, cond)
+
+
+def covers(st) -> bool:
+    """A plate that is one body (a plate made of three links is not written yet)."""
+    return not st.sides
+
+
+def owns(st) -> dict:
+    """The plate's vertices act, for loads and later pins, on the plate."""
+    return {p: st.plate for p in st.points}
+
+
+def _size(P, st):
+    (x1, y1) = P[st.points[0]]
+    return largest([vhypot(P[p][0] - x1, P[p][1] - y1) for p in st.points[1:]])
+
+
+def divisor(st, rec, P, L):
+    """The 3x3 solve divides by its condition, each link's part across by its length."""
+    short = _size(P, st)
+    for v, k in zip(st.points, st.knowns):
+        short = least(short, vhypot(P[v][0] - P[k][0], P[v][1] - P[k][1]))
+    return rec.condition * short
+
+
+def step(st, P, led, own):
+    """Solve the three links' and the plate's forces; enter the reactions at the known
+    points. Returns as :func:`.dyad.step`."""
+    plate = st.plate
+    kp = led.of(plate)
+    (x1, y1) = P[st.points[0]]
+    S = _size(P, st)
+    e, n, b, r, kls = [], [], [], [], []
+    for lk, K, V in zip(st.links_, st.knowns, st.points):
+        (kx, ky), (vx, vy) = P[K], P[V]
+        L = vhypot(vx - kx, vy - ky)
+        ex, ey = (vx - kx) / L, (vy - ky) / L
+        kl = led.of(lk)
+        kls.append(kl)
+        mk = kl[2] - cross(kx, ky, kl[0], kl[1])
+        e.append((ex, ey))
+        n.append((-ey, ex))
+        b.append(-mk / L)
+        r.append(((vx - x1) / S, (vy - y1) / S))
+    m1 = kp[2] - cross(x1, y1, kp[0], kp[1])
+    rhs = (kp[0] - sum(bi * ni[0] for bi, ni in zip(b, n)),
+           kp[1] - sum(bi * ni[1] for bi, ni in zip(b, n)),
+           m1 / S - sum(bi * cross(ri[0], ri[1], ni[0], ni[1]) for bi, ri, ni in zip(b, r, n)))
+    a1, a2, a3, cond = solve3x3(e, r, rhs)
+    if a1 is None:
+        raise Singular(f"the lines of {', '.join(st.links_)} meet in one point")
+    pins, found, eq = [], [], []
+    for ai, bi, ei, ni, kl, lk, K, V in zip((a1, a2, a3), b, e, n, kls, st.links_, st.knowns,
+                                           st.points):
+        p = (ai * ei[0] + bi * ni[0], ai * ei[1] + bi * ni[1])
+        fk = (-(kl[0] + p[0]), -(kl[1] + p[1]))
+        ok = own[K]
+        (kx, ky) = P[K]
+        led.add(ok, -fk[0], -fk[1], kx, ky)
+        pins += [PinForce(V, lk, plate, p), PinForce(K, lk, ok, fk)]
+        found += [(f"F_{V} on {lk} by {plate}", p), (f"F_{K} on {lk} by {ok}", fk)]
+        if isinstance(ai, float):
+            eq.append(f"{lk}: across it b = -M_{K} / {lk} = {fmt(bi)} N (its moments about "
+                      f"{K}); along it a = {fmt(ai)} N (the plate's 3x3 solve)")
+    rec = ForceStep(st.index, "triad", st.title, (plate,) + tuple(st.links_),
+                    (kp,) + tuple(kls), tuple(found), cond,
+                    "the plate's 3x3 determinant over its columns' sizes (zero where the "
+                    "three links' lines meet in one point)", tuple(eq))
+    return tuple(pins), (), rec, None
