@@ -21,8 +21,9 @@ from __future__ import annotations
 from ..errors import PolygonMethodError
 from . import carried, crank, dyad, slider
 from .bodies import Ledger, Singular, centre, cross, gather
-from .records import (FRAME, Forces, ForceStep, GuideForce, Inertia, PinForce, block,
-                      force_value, forces_dict)
+from .records import (FRAME, Couple, Forces, ForceStep, FreeBody, GuideForce, Inertia,
+                      PinForce, Side, block, couple_label, force_value, forces_dict,
+                      side_label)
 
 #: the force step of each kind of kinematic step: its room (``owns(st)``: the bodies its
 #: points act on; ``step(st, P, ledger, owners)``: its pin forces; ``covers(st)``, where
@@ -31,7 +32,7 @@ ROOMS = {"crank": crank, "dyad": dyad, "slider": slider, "carried": carried}
 
 __all__ = ["analyse", "Forces", "Inertia", "PinForce", "GuideForce", "ForceStep", "FRAME",
            "block", "centre", "cross", "Ledger", "forces_dict", "owners", "ROOMS",
-           "force_value"]
+           "force_value", "Side", "Couple", "FreeBody", "side_label", "couple_label"]
 
 _NOT_YET = {
     "slider": "a block sliding on a moving link",
@@ -112,6 +113,50 @@ def analyse(motion) -> Forces:
         if t is not None:
             torque = t
     fx, fy, m = led.of(FRAME)
+    numbers = _numbers(scene, plan)
+    free = ()
+    if isinstance(torque, float):
+        free = _free_bodies(scene, P, numbers, records, pins, guides, led, torque)
     return Forces(records, tuple(pins), tuple(guides), torque, (fx, fy), m - torque,
                   tuple(steps), {k: tuple(v) for k, v in led.applied.items()},
-                  scene.input.crank)
+                  scene.input.crank, numbers, free)
+
+
+def _numbers(scene, plan) -> dict:
+    """body -> its number as the books number links: the frame 1, then each body in the
+    order the plan finds it (the crank 2)."""
+    fixed = frame_links(scene)
+    out = {FRAME: 1}
+    for st in plan.steps:
+        for b in ROOMS[st.kind].bodies(st):
+            if b not in fixed and b not in out:
+                out[b] = len(out) + 1
+    return out
+
+
+def _free_bodies(scene, P, numbers, records, pins, guides, led, torque) -> tuple:
+    """Each moving body alone (:class:`FreeBody`): its inertia force (the book's single
+    force, through the offset point), weight and loads as the ledger holds them, every pin
+    force on it (the stored record, or its opposite where the body is the record's ``by``),
+    the guide's force on a block; its couples."""
+    out = []
+    for body, num in numbers.items():
+        if body == FRAME:
+            continue
+        sides = [s for s in led.known(body) if s.what != "pin"]
+        for p in pins:
+            if p.on == body:
+                sides.append(Side("pin", body, p.by, p.point, p.force, P[p.point]))
+            elif p.by == body:
+                sides.append(Side("pin", body, p.on, p.point, (-p.force[0], -p.force[1]),
+                                  P[p.point]))
+        sides += [Side("guide", body, FRAME, g.point, g.force, P[g.point]) for g in guides
+                  if block(g.point) == body]
+        couples = [Couple("inertia", body, i.couple) for i in records
+                   if i.body == body and i.offset is None and i.couple != 0]
+        couples += [Couple("load", body, e[1]) for e in led.applied.get(body, ())
+                    if len(e) == 2]
+        if body == scene.input.crank:
+            couples.append(Couple("torque", body, torque))
+        out.append(FreeBody(body, num, tuple(sides), tuple(couples)))
+    return tuple(out)

@@ -18,9 +18,9 @@ Then ``P = N n + R`` and the link's force balance gives the force on it at B, ``
 
 from __future__ import annotations
 
-from .bodies import Singular, any_zero, cross
+from .bodies import Singular, any_zero, cross, outer_pin, unit
 from ..numbers import fmt
-from .records import FRAME, ForceStep, GuideForce, PinForce, block
+from .records import FRAME, ForceStep, GuideForce, PinForce, Side, block
 
 
 def solve(bx, by, known_link, xx, xy, known_block, u):
@@ -50,6 +50,11 @@ def covers(st) -> bool:
     return st.path is not None
 
 
+def bodies(st) -> tuple:
+    """The bodies the step moves: the link and its block."""
+    return (st.link, block(st.point))
+
+
 def owns(st) -> dict:
     """The slider's point acts, for loads and later pins, on its block."""
     return {st.point: block(st.point)}
@@ -68,10 +73,22 @@ def step(st, P, led, own):
     ob = own[st.b]
     ux, uy = st.path.u
     g = GuideForce(x, n, (-uy, ux))
-    led.add(ob, -fb[0], -fb[1], bx, by)
+    known_l, known_b = led.known(lk), led.known(bl)
+    led.add(ob, -fb[0], -fb[1], bx, by, side=Side("pin", ob, lk, st.b, (-fb[0], -fb[1]),
+                                                 (bx, by)))
     led.add(FRAME, -g.force[0], -g.force[1], xx, xy)
     eq = ()
-    if isinstance(cond, float):  # one instant: the working in words
+    polygon = unknown = chords = ()
+    if isinstance(cond, float):  # one instant: the working in words, the force polygon
+        B, X = (bx, by), (xx, xy)
+        whole_b = Side("pin", lk, ob, st.b, fb, B)
+        bn, bt = outer_pin(whole_b, B, X)
+        # the pole, F_B along BX (found last), F_B square to BX, the link's known forces,
+        # the block's, the guide's normal force (found last): closed
+        polygon = (bn, bt) + known_l + known_b + (Side("guide", bl, FRAME, x, g.force, X),)
+        k = len(polygon)
+        unknown = ((0, unit(B, X)), (k - 1, g.n))
+        chords = ((whole_b, 0, 2), (Side("pin", lk, bl, x, p, X), 2 + len(known_l), 0))
         B = st.b
         mb = kl[2] - cross(bx, by, kl[0], kl[1])
         ex, ey = xx - bx, xy - by
@@ -86,5 +103,6 @@ def step(st, P, led, own):
     rec = ForceStep(st.index, "slider", st.title, (lk, bl), (kl, kb),
                     ((f"N_{x} on {bl} by the guide", n), (f"F_{x} on {lk} by {bl}", p),
                      (f"F_{st.b} on {lk} by {ob}", fb)), cond,
-                    f"cosine of the angle between {st.b}{x} and the path", eq)
+                    f"cosine of the angle between {st.b}{x} and the path", eq, polygon,
+                    unknown, chords)
     return (PinForce(x, lk, bl, p), PinForce(st.b, lk, ob, fb)), (g,), rec, None
