@@ -23,7 +23,7 @@ from . import carried, crank, dyad, slider
 from .bodies import Ledger, Singular, centre, cross, gather
 from .records import (FRAME, Couple, Forces, ForceStep, FreeBody, GuideForce, Inertia,
                       PinForce, Side, block, couple_label, force_value, forces_dict,
-                      side_label)
+                      number_sub, side_label)
 
 #: the force step of each kind of kinematic step: its room (``owns(st)``: the bodies its
 #: points act on; ``step(st, P, ledger, owners)``: its pin forces; ``covers(st)``, where
@@ -32,7 +32,7 @@ ROOMS = {"crank": crank, "dyad": dyad, "slider": slider, "carried": carried}
 
 __all__ = ["analyse", "Forces", "Inertia", "PinForce", "GuideForce", "ForceStep", "FRAME",
            "block", "centre", "cross", "Ledger", "forces_dict", "owners", "ROOMS",
-           "force_value", "Side", "Couple", "FreeBody", "side_label", "couple_label"]
+           "force_value", "Side", "Couple", "FreeBody", "side_label", "couple_label", "number_sub"]
 
 _NOT_YET = {
     "slider": "a block sliding on a moving link",

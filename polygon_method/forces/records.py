@@ -130,6 +130,11 @@ def _sub(numbers, *bodies, unicode=True):
     return text.translate(_SUB) if unicode else "_" + text
 
 
+def number_sub(numbers: dict, body: str, unicode: bool = True) -> str:
+    """A body's number as a subscript (``G\u2083`` is link 3's centre of mass)."""
+    return _sub(numbers, body, unicode=unicode)
+
+
 def side_label(side: Side, numbers: dict, unicode: bool = True) -> str:
     """The book's name of a force: ``F32`` the force on link 3 by link 2 (the frame is
     link 1), ``F34t``/``F34n`` its components square to and along link 3, ``Fi3`` link 3's
