@@ -87,7 +87,7 @@ def _unit(v):
 
 def _what(body, numbers, sc):
     if body.startswith("block "):
-        return f"{numbers[body]}, the block at {body[6:]}"
+        return f"block {numbers[body]}, at {body[6:]}"
     return f"link {numbers[body]}, {body}" + (" (the crank)" if body == sc.input.crank
                                                else "")
 
@@ -218,6 +218,12 @@ def _curved_arrow(sk, centre, r, ccw, gid):
 # --------------------------------------------------------------------------- a polygon
 
 
+def _along(a, b):
+    """Where a side's label is tried, nearest its middle first."""
+    return [(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
+            for t in (0.5, 0.35, 0.65, 0.2, 0.8)]
+
+
 def _polygon(sol, st, scale: Scale, tiny, tag) -> _Sketch:
     f = sol.forces
     numbers = f.numbers
@@ -273,8 +279,7 @@ def _polygon(sol, st, scale: Scale, tiny, tag) -> _Sketch:
         color, lw, dashes = FORCE_STYLE[sd.what]
         a, b = corners[k], corners[k + 1]
         sk.arrow(a, b, f"{tag}-side-{k}", color, lw, dashes, z=4)
-        sk.label(text, [((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)], LABEL_PT,
-                 gid=f"label-{tag}-side-{k}", color=color)
+        sk.label(text, _along(a, b), LABEL_PT, gid=f"label-{tag}-side-{k}", color=color)
         found = " (found)" if any(k == u for u, _ in st.unknown) else ""
         rows.append(f"{text}: {_magnitude(sd.vector)}, {scale.cm(math.hypot(*sd.vector)):.2f}"
                     f" cm{found}")
@@ -283,15 +288,15 @@ def _polygon(sol, st, scale: Scale, tiny, tag) -> _Sketch:
         a, b = corners[i], corners[j]
         sk.arrow(a, b, f"{tag}-chord-{n}", color, lw, dashes, z=3)
         text = side_label(c, numbers)
-        sk.label(text, [((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)], LABEL_PT,
-                 gid=f"label-{tag}-chord-{n}", color=color)
+        sk.label(text, _along(a, b), LABEL_PT, gid=f"label-{tag}-chord-{n}", color=color)
         rows.append(f"{text}: {_magnitude(c.vector)}, {scale.cm(math.hypot(*c.vector)):.2f} "
                     "cm (across)")
     sk.circle(corners[0], DOT_R * 1.3, gid=f"{tag}-pole", face="#000000", z=6)
     sk.place_labels()
     bodies = ", ".join(_what(b, numbers, sol.scene) for b in st.bodies)
     lines = [f"step {st.index + 1}, {st.title}: {bodies}; link 1 the frame",
-             "F32: the force on 3 by 2; t square to the link, n along it"] + rows
+             "F\u2083\u2082: the force on 3 by 2 (\u1d57 square to its link, \u207f along "
+             "it)"] + rows
     _header(sk, tag, "Force polygon", scale, lines=lines)
     return sk
 

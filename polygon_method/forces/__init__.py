@@ -113,13 +113,13 @@ def analyse(motion) -> Forces:
         if t is not None:
             torque = t
     fx, fy, m = led.of(FRAME)
-    numbers = _numbers(scene, plan)
-    free = ()
-    if isinstance(torque, float):
-        free = _free_bodies(scene, P, numbers, records, pins, guides, led, torque)
+    one = isinstance(torque, float)  # the drawings' records, made when asked for
+    drawing = (lambda: _numbers(scene, plan),
+               (lambda numbers: _free_bodies(scene, P, numbers, records, pins, guides, led,
+                                             torque)) if one else (lambda numbers: ()))
     return Forces(records, tuple(pins), tuple(guides), torque, (fx, fy), m - torque,
                   tuple(steps), {k: tuple(v) for k, v in led.applied.items()},
-                  scene.input.crank, numbers, free)
+                  scene.input.crank, drawing)
 
 
 def _numbers(scene, plan) -> dict:
@@ -143,7 +143,10 @@ def _free_bodies(scene, P, numbers, records, pins, guides, led, torque) -> tuple
     for body, num in numbers.items():
         if body == FRAME:
             continue
-        sides = [s for s in led.known(body) if s.what != "pin"]
+        sides = [s for s in led.known(body) if s.what not in ("pin", "inertia")]
+        sides[:0] = [Side("inertia", body, "", "", i.force,
+                          i.G if i.offset is None else i.offset_point)
+                     for i in records if i.body == body]  # the book's single force
         for p in pins:
             if p.on == body:
                 sides.append(Side("pin", body, p.by, p.point, p.force, P[p.point]))

@@ -102,8 +102,7 @@ def gather(scene, motion, owner):
         rec = inertia_record(body, m.mass, m.inertia, G, a_G, alpha, m.how)
         records.append(rec)
         led.add(body, rec.force[0], rec.force[1], G[0], G[1],
-                side=Side("inertia", body, "", "", rec.force,
-                          G if rec.offset is None else rec.offset_point))
+                side=Side("inertia", body, "", "", rec.force, G))  # (its line: free bodies)
         led.couple(body, rec.couple)
         if grav is not None:
             w = m.mass * grav.g
@@ -150,6 +149,7 @@ def unit(p, q):
 def outer_pin(side_whole, p, q):
     """The two sides (along the link p -> q, square to it) of an outer pin's force, as the
     polygon draws them (:class:`Side` s with ``part`` ``n`` and ``t``)."""
-    from dataclasses import replace
     n, t = along(side_whole.vector, p, q)
-    return replace(side_whole, vector=n, part="n"), replace(side_whole, vector=t, part="t")
+    w = side_whole
+    return (Side(w.what, w.on, w.by, w.point, n, w.at, "n"),
+            Side(w.what, w.on, w.by, w.point, t, w.at, "t"))

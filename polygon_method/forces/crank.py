@@ -38,15 +38,17 @@ def step(st, P, led, own):
     ox, oy = P[st.pivot]
     r, torque = solve(ox, oy, k)
     led.add(FRAME, -r[0], -r[1], ox, oy)
-    eq = polygon = ()
+    eq, drawing = (), None
     if isinstance(torque, float):
-        # the crank's known forces, then the frame's at the pivot, which closes them
-        polygon = led.known(st.link) + (Side("pin", st.link, FRAME, st.pivot, r, (ox, oy)),)
+        known = led.known(st.link)
+
+        def drawing():  # the crank's known forces, then the frame's at the pivot: closed
+            return known + (Side("pin", st.link, FRAME, st.pivot, r, (ox, oy)),), (), ()
         O = st.pivot
         eq = (f"moments about {O}: T + M_{O} = 0, M_{O} = {fmt(-torque)} N m the known "
               f"forces' moment: T = {fmt(torque)} N m",
               f"forces: F_{O} = -(the known forces) = ({fmt(r[0])}, {fmt(r[1])}) N")
     rec = ForceStep(st.index, "crank", st.title, (st.link,), (k,),
                     ((f"F_{st.pivot} on {st.link} by the frame", r),
-                     (f"T on {st.link}", torque)), 1.0, "", eq, polygon)
+                     (f"T on {st.link}", torque)), 1.0, "", eq, drawing)
     return (PinForce(st.pivot, st.link, FRAME, r),), (), rec, torque

@@ -79,20 +79,21 @@ def step(st, P, led, own):
     led.add(od, -fd[0], -fd[1], dx, dy, side=Side("pin", od, l2, st.d, (-fd[0], -fd[1]),
                                                  (dx, dy)))
     eq = ()
-    polygon = unknown = chords = ()
+    drawing = None
     if isinstance(cond, float):  # one instant: the working in words, the force polygon
-        B, C, D = (bx, by), (cx, cy), (dx, dy)
-        whole_b = Side("pin", l1, ob, st.b, fb, B)
-        whole_d = Side("pin", l2, od, st.d, fd, D)
-        bn, bt = outer_pin(whole_b, B, C)
-        dn, dt = outer_pin(whole_d, D, C)
-        # the pole, F_B along BC (found last), F_B square to BC, link 1's known forces,
-        # link 2's, F_D square to DC, F_D along DC (found last): closed
-        polygon = (bn, bt) + known1 + known2 + (dt, dn)
-        k = len(polygon)
-        unknown = ((0, unit(B, C)), (k - 1, unit(D, C)))
-        chords = ((whole_b, 0, 2), (Side("pin", l1, l2, st.point, p, C), 2 + len(known1), 0),
-                  (whole_d, k - 2, k))
+        def drawing():
+            B, C, D = (bx, by), (cx, cy), (dx, dy)
+            whole_b = Side("pin", l1, ob, st.b, fb, B)
+            whole_d = Side("pin", l2, od, st.d, fd, D)
+            bn, bt = outer_pin(whole_b, B, C)
+            dn, dt = outer_pin(whole_d, D, C)
+            # the pole, F_B along BC (found last), F_B square to BC, link 1's known forces,
+            # link 2's, F_D square to DC, F_D along DC (found last): closed
+            polygon = (bn, bt) + known1 + known2 + (dt, dn)
+            k = len(polygon)
+            return (polygon, ((0, unit(B, C)), (k - 1, unit(D, C))),
+                    ((whole_b, 0, 2), (Side("pin", l1, l2, st.point, p, C), 2 + len(known1), 0),
+                     (whole_d, k - 2, k)))
         X, B, D = st.point, st.b, st.d
         m1b = k1[2] - cross(bx, by, k1[0], k1[1])
         m2d = k2[2] - cross(dx, dy, k2[0], k2[1])
@@ -110,5 +111,5 @@ def step(st, P, led, own):
                     ((f"F_{st.point} on {l1} by {l2}", p), (f"F_{st.b} on {l1} by {ob}", fb),
                      (f"F_{st.d} on {l2} by {od}", fd)), cond,
                     f"sine of the angle at {st.point} between {st.point}{st.b} and "
-                    f"{st.point}{st.d}", eq, polygon, unknown, chords)
+                    f"{st.point}{st.d}", eq, drawing)
     return pins, (), rec, None

@@ -8,6 +8,7 @@ feels its opposite. A body is a link (its key), a slider block (``block B``) or 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 
 from ..errors import SceneError
 
@@ -83,8 +84,9 @@ class GuideForce:
 class Side:
     """One force as a force polygon and a free-body diagram draw it: ``vector`` (N) on body
     ``on`` (by body ``by`` for a pin or a guide), acting along a line through ``at`` (m):
-    the pin or the loaded point, G for a weight, the offset point of the book's single
-    inertia force (G where there is none). ``what``: ``inertia``, ``weight``, ``load``,
+    the pin or the loaded point, G for a weight; for an inertia force, G in a polygon's
+    side and, in a :class:`FreeBody`, the offset point of the book's single force (G where
+    there is none). ``what``: ``inertia``, ``weight``, ``load``,
     ``gas``, ``pin`` or ``guide``; ``point``: the point it acts at (a pin, a loaded
     point; "" for an inertia force or a weight); ``part``: "" the whole force, ``t`` its
     component square to the link from ``point``, ``n`` its component along the link."""
@@ -185,17 +187,33 @@ class ForceStep:
     why: str = ""
     #: the step's equations with their numbers, in the book's words (SI)
     equations: tuple = ()
-    #: its force polygon (one instant): the :class:`Side` s in the order drawn, head to
-    #: tail from the pole, closing on it (the groups' known forces, then the unknowns:
-    #: each outer pin's force as its components square to its link, from the link's
-    #: moments, and along it, found where the direction lines meet)
-    polygon: tuple = ()
-    #: the sides (index, unit direction) whose direction alone was known: their lines
-    #: are drawn through the polygon's known corners and meet where it closes
-    unknown: tuple = ()
-    #: whole forces read across the polygon: (:class:`Side`, i, j), the vector from
-    #: corner i to corner j (corner 0 the pole, corner k the end of side k - 1)
-    chords: tuple = ()
+    #: a function giving (polygon, unknown, chords), made when first asked for (one
+    #: instant; None over a sweep)
+    drawing: object = field(default=None, repr=False, compare=False)
+
+    @cached_property
+    def _drawn(self):
+        return self.drawing() if self.drawing is not None else ((), (), ())
+
+    @property
+    def polygon(self) -> tuple:
+        """Its force polygon: the :class:`Side` s in the order drawn, head to tail from the
+        pole, closing on it (the group's known forces, then the unknowns: each outer pin's
+        force as its components square to its link, from the link's moments, and along
+        it, found where the direction lines meet)."""
+        return self._drawn[0]
+
+    @property
+    def unknown(self) -> tuple:
+        """The sides (index, unit direction) whose direction alone was known: their lines
+        are drawn through the polygon's known corners and meet where it closes."""
+        return self._drawn[1]
+
+    @property
+    def chords(self) -> tuple:
+        """Whole forces read across the polygon: (:class:`Side`, i, j), the vector from
+        corner i to corner j (corner 0 the pole, corner k the end of side k - 1)."""
+        return self._drawn[2]
 
 
 @dataclass(frozen=True)
@@ -221,11 +239,21 @@ class Forces:
     steps: tuple
     applied: dict
     crank: str
-    #: body -> its number on the sheet, as the books number links: the frame 1, then the
-    #: bodies in the order the plan finds them (the crank 2)
-    numbers: dict = field(default_factory=dict)
-    #: :class:`FreeBody` of each moving body, in that order (one instant)
-    free: tuple = ()
+    #: what :attr:`numbers` and :attr:`free` are read from, when asked: (body -> number,
+    #: or a function making it; a function making the free bodies)
+    drawing: tuple = field(default=(), repr=False, compare=False)
+
+    @cached_property
+    def numbers(self) -> dict:
+        """body -> its number on the sheet, as the books number links: the frame 1, then
+        the bodies in the order the plan finds them (the crank 2)."""
+        return self.drawing[0]() if self.drawing else {}
+
+    @cached_property
+    def free(self) -> tuple:
+        """:class:`FreeBody` of each moving body, in the order of :attr:`numbers` (one
+        instant; empty over a sweep)."""
+        return self.drawing[1](self.numbers) if self.drawing else ()
 
     def pin(self, point: str, on: str, by: str | None = None):
         """The force on body ``on`` at ``point`` (by ``by``, when the pin joins more than two

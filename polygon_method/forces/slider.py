@@ -78,17 +78,18 @@ def step(st, P, led, own):
                                                  (bx, by)))
     led.add(FRAME, -g.force[0], -g.force[1], xx, xy)
     eq = ()
-    polygon = unknown = chords = ()
+    drawing = None
     if isinstance(cond, float):  # one instant: the working in words, the force polygon
-        B, X = (bx, by), (xx, xy)
-        whole_b = Side("pin", lk, ob, st.b, fb, B)
-        bn, bt = outer_pin(whole_b, B, X)
-        # the pole, F_B along BX (found last), F_B square to BX, the link's known forces,
-        # the block's, the guide's normal force (found last): closed
-        polygon = (bn, bt) + known_l + known_b + (Side("guide", bl, FRAME, x, g.force, X),)
-        k = len(polygon)
-        unknown = ((0, unit(B, X)), (k - 1, g.n))
-        chords = ((whole_b, 0, 2), (Side("pin", lk, bl, x, p, X), 2 + len(known_l), 0))
+        def drawing():
+            B, X = (bx, by), (xx, xy)
+            whole_b = Side("pin", lk, ob, st.b, fb, B)
+            bn, bt = outer_pin(whole_b, B, X)
+            # the pole, F_B along BX (found last), F_B square to BX, the link's known
+            # forces, the block's, the guide's normal force (found last): closed
+            polygon = (bn, bt) + known_l + known_b + (Side("guide", bl, FRAME, x, g.force, X),)
+            k = len(polygon)
+            return (polygon, ((0, unit(B, X)), (k - 1, g.n)),
+                    ((whole_b, 0, 2), (Side("pin", lk, bl, x, p, X), 2 + len(known_l), 0)))
         B = st.b
         mb = kl[2] - cross(bx, by, kl[0], kl[1])
         ex, ey = xx - bx, xy - by
@@ -103,6 +104,5 @@ def step(st, P, led, own):
     rec = ForceStep(st.index, "slider", st.title, (lk, bl), (kl, kb),
                     ((f"N_{x} on {bl} by the guide", n), (f"F_{x} on {lk} by {bl}", p),
                      (f"F_{st.b} on {lk} by {ob}", fb)), cond,
-                    f"cosine of the angle between {st.b}{x} and the path", eq, polygon,
-                    unknown, chords)
+                    f"cosine of the angle between {st.b}{x} and the path", eq, drawing)
     return (PinForce(x, lk, bl, p), PinForce(st.b, lk, ob, fb)), (g,), rec, None
