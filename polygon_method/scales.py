@@ -25,7 +25,7 @@ from .units import UNITS
 __all__ = ["Scale", "choose_scale", "parse_scale", "diagram_scales", "choose_scales",
            "parse_scales", "coarser", "finer", "MANTISSAS", "FIT_CM", "SPACE_FIT_CM",
            "DRAWING_PRECISION_CM", "extent", "DIAGRAMS", "KIND_OF_DIAGRAM", "force_scale",
-           "polygon_corners"]
+           "polygon_corners", "newton_scale"]
 
 #: the round numbers a textbook scale is made of (times a power of ten)
 MANTISSAS = ("1", "2", "2.5", "5")
@@ -222,6 +222,12 @@ def force_scale(forces, fit_cm: float = FIT_CM) -> Scale:
     polygon 4 800 N across: 1 cm = 500 N; 68 700 N across: 1 cm = 10 kN)."""
     size = max((extent(polygon_corners(st)) for st in forces.steps if st.polygon),
                default=0.0)
+    return newton_scale(size, fit_cm)
+
+
+def newton_scale(size: float, fit_cm: float) -> Scale:
+    """The smallest round force scale at which ``size`` (N) takes at most ``fit_cm``: in N,
+    or in kN from 1 cm = 1 kN."""
     s = choose_scale(size, fit_cm, unit="N")
     return choose_scale(size, fit_cm, unit="kN") if s.per_cm >= 1e3 else s
 

@@ -19,8 +19,9 @@ import pytest
 from polygon_method import load_scene, solve
 from polygon_method.draw import render_pages
 from polygon_method.draw.forces import NEGLIGIBLE
-from polygon_method.forces import FRAME, side_label
-from polygon_method.scales import choose_scale, extent, finer, force_scale, polygon_corners
+from polygon_method.forces import side_label
+from polygon_method.scales import (choose_scale, extent, finer, force_scale, parse_scale,
+                                   polygon_corners)
 from polygon_method.steptable import steps_text
 from test_draw import CM, Svg, vector_length_cm
 from test_forces import CASES, with_forces
@@ -263,3 +264,58 @@ def test_draw_forces_on_the_command_line(tmp_path):
     assert "[masses]" in r.stderr and not bad.exists()
     r = _run("draw", str(WORKED[0]), "--forces", "--diagram", "velocity", "-o", str(bad))
     assert r.returncode == 2 and "--forces" in r.stderr and not bad.exists()
+
+
+def test_the_page_draws_each_inertia_force_at_g_over_the_cycle():
+    """The page's inertia forces, frame by frame, against m a_G from the sweep's link ends
+    (G placed on the link by the test), at one round scale that holds the largest."""
+    from polygon_method.page.data import INERTIA_CM, page_data
+    from polygon_method.page.frames import frames
+    from polygon_method.page.html import page_html
+    for path in WORKED:
+        sc = load_scene(path)
+        fr = frames(sc, 24)
+        d = page_data(fr)["inertia"]
+        res = fr.res
+        n = len(res.theta)
+        largest = 0.0
+        for b in d["bodies"]:
+            m = next(m for m in sc.masses if (f"block {m.body}" if m.block else m.body)
+                     == b["body"])
+            for k in range(n):
+                if m.block:
+                    a = (res.A[m.body][0][k], res.A[m.body][1][k])
+                    G = (res.P[m.body][0][k], res.P[m.body][1][k])
+                else:
+                    lk = sc.link(m.body)
+
+                    def at(T):
+                        (px, py), (qx, qy) = T[lk.p], T[lk.q]
+                        px, py, qx, qy = (float(x[k]) if hasattr(x, "__len__") else float(x)
+                                          for x in (px, py, qx, qy))
+                        dx, dy = qx - px, qy - py
+                        return (px + m.lam * dx - m.mu * dy, py + m.lam * dy + m.mu * dx)
+                    a, G = at(res.A), at(res.P)
+                F = (b["F"][2 * k], b["F"][2 * k + 1])
+                assert F[0] == pytest.approx(-m.mass * a[0], rel=1e-5, abs=1e-6 * m.mass)
+                assert F[1] == pytest.approx(-m.mass * a[1], rel=1e-5, abs=1e-6 * m.mass)
+                assert b["G"][2 * k] == pytest.approx(G[0], rel=1e-5, abs=1e-9)
+                largest = max(largest, math.hypot(*F))
+        assert largest / d["perCm"] <= INERTIA_CM + 1e-9
+        stated = parse_scale(d["text"])
+        assert stated.per_cm == pytest.approx(d["perCm"])
+        assert largest / finer(stated).per_cm > INERTIA_CM  # the finest that holds it
+        assert f"inertia forces at G: <b id=\"scale-inertia\">{d['text']}</b>" in page_html(fr)
+    # no masses: no inertia forces on the page
+    plain = frames(load_scene(ROOT / "worked_problems" / "fourbar_image_points.toml"), 12)
+    assert page_data(plain)["inertia"] is None
+
+
+def test_a_plan_the_forces_do_not_cover_is_refused_by_the_sheet_in_one_line():
+    from polygon_method.errors import PolygonMethodError
+    from polygon_method.scene import scene_from_table, scene_table
+    raw = scene_table(load_scene(ROOT / "worked_problems" / "whitworth.toml"))
+    raw["gravity"] = {}
+    sol = solve(scene_from_table(raw))
+    with pytest.raises(PolygonMethodError, match=r"not solved for forces yet \(step 2"):
+        render_pages(sol, "svg", "forces")

@@ -68,6 +68,10 @@ def _cmd_draw(args) -> int:
         if args.diagram not in (None, "all", "forces"):
             raise PolygonMethodError(f"--forces draws the forces sheet: leave out --diagram "
                                      f"{args.diagram}", key="--forces")
+        if getattr(args, "animate", False):
+            raise PolygonMethodError("--forces draws a sheet on paper, not an animation (the "
+                                     "page shows the inertia forces moving): leave out "
+                                     "--animate", key="--forces")
         args.diagram = "forces"
     if getattr(args, "animate", False):
         if fmt not in ("gif", "html", "svg"):

@@ -19,20 +19,11 @@ from ..forces import couple_label, number_sub, side_label
 from ..numbers import fmt, sense_word
 from ..scales import Scale, diagram_scales, display_unit, force_scale, polygon_corners
 from .sketch import _header, _Sketch
-from .style import (BAR, BODY_EDGE, BODY_FACE, DOT_R, HEAD_HALF, HEAD_LEN, JOINT_R,
-                    LABEL_PT, LINE_STYLE, MARK_PT, OVERSHOOT)
+from .style import (BAR, BODY_EDGE, BODY_FACE, DOT_R, FORCE_STYLE, HEAD_HALF, HEAD_LEN,
+                    JOINT_R, LABEL_PT, LINE_STYLE, MARK_PT, OVERSHOOT)
 
 __all__ = ["force_layout", "FORCE_STYLE", "ARROW_CM"]
 
-#: line styles of the forces by kind (colour, width in pt, dashes or None)
-FORCE_STYLE = {
-    "pin": ("#000000", 1.4, None),
-    "guide": ("#7b3294", 1.4, None),
-    "inertia": ("#d95f02", 1.4, None),
-    "weight": ("#555555", 1.2, None),
-    "load": ("#1f5fbf", 1.4, None),
-    "gas": ("#1f5fbf", 1.4, None),
-}
 #: a whole pin force read across a polygon (the sum of its two components)
 CHORD_STYLE = ("#000000", 0.9, (5.0, 2.0))
 #: the length (cm) of a force's arrow on a free-body diagram: it shows the line of action
@@ -52,8 +43,8 @@ def force_layout(sol, scales=None):
     force_scale`, or ``--scale``'s force)."""
     sc = sol.scene
     if not sc.has_forces:
-        raise PolygonMethodError("--diagram forces draws the force analysis: the scene gives "
-                                 "no [masses] or [gravity] (nor loads to go with them)",
+        raise PolygonMethodError("the forces sheet draws the force analysis, and the scene "
+                                 "asks for none: give its [masses] (or [gravity])",
                                  file=sc.file, key="--diagram")
     refused = sol.forces_refused
     if refused:
@@ -67,14 +58,19 @@ def force_layout(sol, scales=None):
     free = {fb.body: fb for fb in f.free}
     panels, drawn = [], set()
     for st in f.steps:
+        sides = [s for s in st.polygon if math.hypot(*s.vector) > tiny]
+        note = ()
+        if len(sides) == 2:  # a crank with no mass: two forces, no polygon to draw
+            a, b = (side_label(s, f.numbers) for s in sides)
+            note = (f"{b} = \u2212{a}: two forces only, equal and opposite (no polygon)",)
         for body in st.bodies:
             if body in free and body not in drawn:
                 drawn.add(body)
                 num = f.numbers[body]
                 panels.append((f"free-body-{num}", space,
                                _free_body(sol, free[body], space, tiny,
-                                          f"free-body-{num}")))
-        if sum(1 for s in st.polygon if math.hypot(*s.vector) > tiny) >= 3:
+                                          f"free-body-{num}", note)))
+        if len(sides) >= 3:
             tag = f"force-polygon-{st.index + 1}"
             panels.append((tag, fs, _polygon(sol, st, fs, tiny, tag)))
     return panels, space, fs
@@ -110,7 +106,7 @@ def _wrap(items, width=70):
 # --------------------------------------------------------------------------- a free body
 
 
-def _free_body(sol, fb, scale: Scale, tiny, tag) -> _Sketch:
+def _free_body(sol, fb, scale: Scale, tiny, tag, note=()) -> _Sketch:
     from shapely.geometry import LineString, MultiPoint, Polygon
     sc, f = sol.scene, sol.forces
     s = scale.per_cm
@@ -171,6 +167,13 @@ def _free_body(sol, fb, scale: Scale, tiny, tag) -> _Sketch:
         into = ((at[0] - ARROW_CM * u[0], at[1] - ARROW_CM * u[1]), at)
         inside = [LineString(c).intersection(body).length for c in (out, into)]
         start, end = out if inside[0] <= inside[1] + 1e-9 else into
+        if fb.body.startswith("block ") and side.what == "pin":
+            # on a block (too small to keep off): the link's push drawn from the link's
+            # side onto the pin, its pull from the pin towards the link
+            lk = sc.link(side.by)
+            q = cm(sol.P[lk.q if lk.p == side.point else lk.p])
+            push = (at[0] - q[0]) * u[0] + (at[1] - q[1]) * u[1] > 0
+            start, end = into if push else out
         color, lw, dashes = FORCE_STYLE[side.what]
         sk.arrow(start, end, f"{tag}-force-{k}", color, lw, dashes, z=5)
         far = end if (start, end) == out else start
@@ -187,8 +190,8 @@ def _free_body(sol, fb, scale: Scale, tiny, tag) -> _Sketch:
         sk.label(text, [(centre[0], centre[1] + r), (centre[0], centre[1] - r)], LABEL_PT,
                  gid=f"label-{tag}-couple-{k}", color="#000000")
     sk.place_labels()
-    lines = _wrap(words) + ["the arrows give each force's line and sense; its size is "
-                            "the polygon's"]
+    lines = _wrap(words) + list(note) + ["the arrows give each force's line and sense; "
+                                         "its size is the polygon's"]
     if fb.body == sc.input.crank or any(c.what == "torque" for c in fb.couples):
         lines.append("T: the driver's torque on the crank (ccw +)")
     _header(sk, tag, f"Free body of {_what(fb.body, numbers, sc)}", scale, lines=lines)
