@@ -319,3 +319,20 @@ def test_a_plan_the_forces_do_not_cover_is_refused_by_the_sheet_in_one_line():
     sol = solve(scene_from_table(raw))
     with pytest.raises(PolygonMethodError, match=r"not solved for forces yet \(step 2"):
         render_pages(sol, "svg", "forces")
+
+
+def test_the_couples_are_drawn_with_their_values():
+    """The worked four-bar: the driver's torque on the crank, its answer (the matrix
+    method), and the rocker's resisting couple, the scene's 20 N m cw, each a curved arrow
+    on its body with its value."""
+    sol, svgs, used, pages = _sheet(load_scene(WORKED[1]))
+    f = sol.forces
+    said = {}
+    for fb in f.free:
+        for k, c in enumerate(fb.couples):
+            tag = f"free-body-{fb.number}"
+            svg = _find(svgs, f"{tag}-couple-{k}-arc")
+            assert svg is not None and f"{tag}-couple-{k}-head" in svg.groups
+            said[c.what] = _said(svg, f"label-{tag}-couple-{k}")
+    assert said["torque"] == "T2=49.84Nmccw"
+    assert said["load"] == "C4=20Nmcw"
