@@ -17,7 +17,7 @@ import math
 from ..errors import PolygonMethodError
 from ..forces import couple_label, number_sub, side_label
 from ..numbers import fmt, sense_word
-from ..scales import Scale, diagram_scales, display_unit, force_scale, polygon_corners
+from ..scales import Scale, diagram_scales, force_scale, polygon_corners
 from .sketch import _header, _Sketch
 from .style import (BAR, BODY_EDGE, BODY_FACE, DOT_R, FORCE_STYLE, HEAD_HALF, HEAD_LEN,
                     JOINT_R, LABEL_PT, LINE_STYLE, MARK_PT, OVERSHOOT)

@@ -42,8 +42,9 @@ def step(st, P, led, own):
     if isinstance(torque, float):
         known = led.known(st.link)
 
-        def drawing():  # the crank's known forces, then the frame's at the pivot: closed
+        def drawn():  # the crank's known forces, then the frame's at the pivot: closed
             return known + (Side("pin", st.link, FRAME, st.pivot, r, (ox, oy)),), (), ()
+        drawing = drawn
         O = st.pivot
         eq = (f"moments about {O}: T + M_{O} = 0, M_{O} = {fmt(-torque)} N m the known "
               f"forces' moment: T = {fmt(torque)} N m",

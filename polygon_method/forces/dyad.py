@@ -81,7 +81,7 @@ def step(st, P, led, own):
     eq = ()
     drawing = None
     if isinstance(cond, float):  # one instant: the working in words, the force polygon
-        def drawing():
+        def drawn():
             B, C, D = (bx, by), (cx, cy), (dx, dy)
             whole_b = Side("pin", l1, ob, st.b, fb, B)
             whole_d = Side("pin", l2, od, st.d, fd, D)
@@ -94,6 +94,7 @@ def step(st, P, led, own):
             return (polygon, ((0, unit(B, C)), (k - 1, unit(D, C))),
                     ((whole_b, 0, 2), (Side("pin", l1, l2, st.point, p, C), 2 + len(known1), 0),
                      (whole_d, k - 2, k)))
+        drawing = drawn
         X, B, D = st.point, st.b, st.d
         m1b = k1[2] - cross(bx, by, k1[0], k1[1])
         m2d = k2[2] - cross(dx, dy, k2[0], k2[1])

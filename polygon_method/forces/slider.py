@@ -80,7 +80,7 @@ def step(st, P, led, own):
     eq = ()
     drawing = None
     if isinstance(cond, float):  # one instant: the working in words, the force polygon
-        def drawing():
+        def drawn():
             B, X = (bx, by), (xx, xy)
             whole_b = Side("pin", lk, ob, st.b, fb, B)
             bn, bt = outer_pin(whole_b, B, X)
@@ -90,6 +90,7 @@ def step(st, P, led, own):
             k = len(polygon)
             return (polygon, ((0, unit(B, X)), (k - 1, g.n)),
                     ((whole_b, 0, 2), (Side("pin", lk, bl, x, p, X), 2 + len(known_l), 0)))
+        drawing = drawn
         B = st.b
         mb = kl[2] - cross(bx, by, kl[0], kl[1])
         ex, ey = xx - bx, xy - by
