@@ -86,10 +86,13 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("scene")
     s.add_argument("-o", "--output", required=True, help="FILE.svg, .png or .pdf")
     s.add_argument("--diagram", choices=("configuration", "velocity", "acceleration", "all",
-                                         "centres"), default="all")
+                                         "centres", "forces"), default="all")
+    s.add_argument("--forces", action="store_true",
+                   help="the free-body diagrams and force polygons (the same as --diagram "
+                        "forces; the scene gives [masses] or [gravity])")
     s.add_argument("--scale", action="append", default=[],
                    help='e.g. "1 cm = 0.1 m/s" (may be repeated: space, velocity, '
-                        'acceleration)')
+                        'acceleration, force: "1 cm = 500 N")')
     s.add_argument("--paper", default="A4",
                    help="A4 (default), A3 or letter: the sheet is drawn on it, portrait or "
                         "landscape, on more pages where the diagrams do not fit one at "

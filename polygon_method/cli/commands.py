@@ -64,6 +64,15 @@ def _cmd_draw(args) -> int:
 
     out = Path(args.output)
     fmt = out.suffix.lower().lstrip(".")
+    if getattr(args, "forces", False):  # the same as --diagram forces
+        if args.diagram not in (None, "all", "forces"):
+            raise PolygonMethodError(f"--forces draws the forces sheet: leave out --diagram "
+                                     f"{args.diagram}", key="--forces")
+        if getattr(args, "animate", False):
+            raise PolygonMethodError("--forces draws a sheet on paper, not an animation (the "
+                                     "page shows the inertia forces moving): leave out "
+                                     "--animate", key="--forces")
+        args.diagram = "forces"
     if getattr(args, "animate", False):
         if fmt not in ("gif", "html", "svg"):
             raise PolygonMethodError(f"cannot animate to {out}: the file name must end in "
@@ -87,7 +96,8 @@ def _cmd_draw(args) -> int:
                                  "or .pdf", key="-o")
     scales = parse_scales(getattr(args, "scale", None))
     drawn = {"all": ("length", "velocity", "acceleration"), "centres": ("length",),
-             "configuration": ("length",)}.get(args.diagram or "all", (args.diagram,))
+             "configuration": ("length",), "forces": ("length", "force")
+             }.get(args.diagram or "all", (args.diagram,))
     for kind, s in scales.items():  # never silently ignored
         if kind not in drawn:
             raise PolygonMethodError(f"{s.text} is {'an' if kind[0] == 'a' else 'a'} {kind} "
@@ -120,8 +130,16 @@ def _cmd_draw(args) -> int:
           f"{paper} (the diagrams do not fit one at their scales); {scales_text}")
     for f, p in zip(files * len(pages) if fmt == "pdf" else files, pages):
         print(f"  {f}: page {p.number}, {p.text}: "
-              + ", ".join(_PANEL_NAMES.get(name, name) for name in p.panels))
+              + ", ".join(_panel_name(name) for name in p.panels))
     return 0
+
+
+def _panel_name(name: str) -> str:
+    if name.startswith("free-body-"):
+        return f"free body {name[10:]}"
+    if name.startswith("force-polygon-"):
+        return f"force polygon of step {name[14:]}"
+    return _PANEL_NAMES.get(name, name)
 
 
 _PANEL_NAMES = {"configuration": "configuration diagram", "velocity": "velocity polygon",

@@ -143,10 +143,13 @@ def layout(sol, diagram: str = "all", scales=None, centre_prefix: str = "I", pap
                                  "shows any number)", file=sol.scene.file)
     if diagram == "centres":
         return _centres_layout(sol, scales, centre_prefix, paper)
+    if diagram == "forces":  # free bodies and force polygons (:mod:`.forces`)
+        from .forces import force_layout
+        return force_layout(sol, scales)[0]
     names = DIAGRAMS if diagram == "all" else (diagram,)
     if diagram not in DIAGRAMS + ("all",):
         raise PolygonMethodError(f"unknown diagram {diagram!r}; use configuration, velocity, "
-                                 "acceleration, all or centres", key="--diagram")
+                                 "acceleration, all, centres or forces", key="--diagram")
     given = dict(scales or {})
     stated = dict(zip(DIAGRAMS, diagram_scales(sol)))
     out = []
@@ -330,6 +333,15 @@ _WHAT = {"configuration": "configuration diagram", "velocity": "velocity polygon
          "circle": "circle diagram"}
 
 
+def _what(name: str) -> str:
+    """What a panel is, in words (``free-body-3``: the free body of link 3)."""
+    if name.startswith("free-body-"):
+        return f"free body of {name[10:]}"
+    if name.startswith("force-polygon-"):
+        return f"force polygon of step {name[14:]}"
+    return _WHAT[name]
+
+
 def sheet_pages(sol, diagram: str = "all", scales=None, centre_prefix: str = "I",
                 paper: str = "A4"):
     """The panels of a sheet (:func:`layout`) and the pages of ``paper`` they go on
@@ -344,7 +356,7 @@ def sheet_pages(sol, diagram: str = "all", scales=None, centre_prefix: str = "I"
         if fits(size, paper):
             continue
         rw, rh = room(paper, "portrait")
-        what = f"the {_WHAT[name]}" + (f" at {display_unit(s.text)}" if s is not None else "")
+        what = f"the {_what(name)}" + (f" at {display_unit(s.text)}" if s is not None else "")
         bigger = sorted((p for p in PAPER_NAMES if p != paper and fits(size, p)),
                         key=lambda p: PAPERS[p][0] * PAPERS[p][1])
         advice = f"draw it on {bigger[0]} (--paper {bigger[0]}) or at a coarser --scale" \
@@ -393,6 +405,12 @@ def render_pages(sol, fmt: str = "svg", diagram: str = "all", scales=None,
     with matplotlib.rc_context(_rc()):
         panels, sizes, pages = sheet_pages(sol, diagram, scales, centre_prefix, paper)
     datas, warnings = write_pages(panels, sizes, pages, fmt)
+    if diagram == "forces":  # one scale for the free bodies, one for the polygons
+        used = {}
+        for name, s, _ in panels:
+            used.setdefault("free bodies" if name.startswith("free-body") else
+                            "force polygons", s)
+        return datas, used, warnings, pages
     return datas, {name: s for name, s, _ in panels if s is not None}, warnings, pages
 
 

@@ -38,6 +38,16 @@ LINE_STYLE = ("#777777", 0.6, (4.0, 2.5))  # construction (direction) lines
 LEGEND_NAMES = {"absolute": "total (from the pole)", "relative": "relative (between images)",
                 "centripetal": "centripetal component", "tangential": "tangential component",
                 "coriolis": "Coriolis component", "sliding": "sliding component"}
+#: line styles of the forces by kind (colour, width in pt, dashes or None): free bodies,
+#: force polygons, the page's inertia forces
+FORCE_STYLE = {
+    "pin": ("#000000", 1.4, None),
+    "guide": ("#7b3294", 1.4, None),
+    "inertia": ("#d95f02", 1.4, None),
+    "weight": ("#555555", 1.2, None),
+    "load": ("#1f5fbf", 1.4, None),
+    "gas": ("#1f5fbf", 1.4, None),
+}
 BODY_FACE, BODY_EDGE = "#dde6f2", "#23395d"
 IMAGE_FACE = "#f4d35e"
 PITCH_STYLE = ("#333333", 0.7, (6.0, 2.0, 1.0, 2.0))  # pitch circles

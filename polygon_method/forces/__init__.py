@@ -36,8 +36,9 @@ from ..common.errors import PolygonMethodError
 from . import (carried, crank, cylinder, driver, dyad, peg, rolling, slider, slotted, triad,
                wheel, yoke)
 from .bodies import Ledger, Singular, centre, cross, gather
-from .records import (FRAME, Contact, Forces, ForceStep, GuideForce, Inertia, PinForce, block,
-                      force_value, forces_dict)
+from .records import (FRAME, Contact, Couple, Forces, ForceStep, FreeBody, GuideForce,
+                      Inertia, PinForce, Side, block, couple_label, force_value, forces_dict,
+                      number_sub, side_label)
 
 #: the force step of each kind of kinematic step: its room (``owns(st)``: the bodies its
 #: points act on; ``step(st, P, ledger, owners)``: its pin forces; ``covers(st)``, where
@@ -46,10 +47,12 @@ from .records import (FRAME, Contact, Forces, ForceStep, GuideForce, Inertia, Pi
 #: blocks of its group, each a body a mass may sit on; ``divisor(st, rec, P, L)``, where
 #: present: the length its equations divide by (:mod:`.bounds`); ``drives(scene, st)``,
 #: ``unit_ledger(st)``, ``effort(st, t0, t1, ledger)``, where present: whether it drives
-#: the mechanism, and its force from the crank's torque without it and with 1 N in it)
+#: the mechanism, and its force from the crank's torque without it and with 1 N in it;
+#: ``bodies(st)``, where present: the bodies it moves, in the order the sheet numbers them,
+#: else those of its force step)
 #: the members a room may give, said once above for every room
 ROOM_CONTRACT = ("owns", "step", "covers", "check", "blocks", "divisor", "drives",
-                 "unit_ledger", "effort")
+                 "unit_ledger", "effort", "bodies")
 ROOMS = {"crank": crank, "dyad": dyad, "slider": slider, "carried": carried,
          "slotted": slotted, "block": driver, "second crank": crank,
          "cylinder": cylinder, "yoke": yoke, "peg": peg, "rolling": rolling,
@@ -57,7 +60,7 @@ ROOMS = {"crank": crank, "dyad": dyad, "slider": slider, "carried": carried,
 
 __all__ = ["analyse", "Forces", "Inertia", "PinForce", "GuideForce", "ForceStep", "FRAME",
            "block", "centre", "cross", "Ledger", "forces_dict", "owners", "ROOMS",
-           "force_value"]
+           "force_value", "Side", "Couple", "FreeBody", "side_label", "couple_label", "number_sub"]
 
 _NOT_YET = {
     "rolling": "rolling on a circle or a gear (the contact's normal force is not "
@@ -145,7 +148,17 @@ def analyse(motion) -> Forces:
                   tuple(steps), {k: tuple(v) for k, v in led.applied.items()},
                   name, kind, second,
                   None if inp.second is None else scene.link(inp.second.crank).key,
-                  tuple(contacts))
+                  tuple(contacts), _drawing(scene, plan, motion.P, records, pins, guides, led,
+                                            torque, steps))
+
+
+def _drawing(scene, plan, P, records, pins, guides, led, torque, steps) -> tuple:
+    """What the drawings read, made when first asked for: the bodies' numbers and, for one
+    instant, each body's free body."""
+    one = isinstance(torque, float)
+    return (lambda: _numbers(scene, plan, steps),
+            (lambda numbers: _free_bodies(scene, P, numbers, records, pins, guides, led,
+                                          torque)) if one else (lambda numbers: ()))
 
 
 def _copy(led):
@@ -178,3 +191,50 @@ def _walk(scene, plan, P, led, own):
             else:
                 second = t
     return pins, guides, steps, torque, second, contacts
+
+
+def _numbers(scene, plan, steps) -> dict:
+    """body -> its number as the books number links: the frame 1, then each body in the
+    order the plan finds it (the crank 2); a room that does not name its bodies is read
+    from its force step's (``steps``)."""
+    solved = {rec.index: rec.bodies for rec in steps}
+    fixed = frame_links(scene)
+    out = {FRAME: 1}
+    for st in plan.steps:
+        room = ROOMS[st.kind]
+        bodies = room.bodies(st) if hasattr(room, "bodies") else solved.get(st.index, ())
+        for b in bodies:
+            if b not in fixed and b not in out:
+                out[b] = len(out) + 1
+    return out
+
+
+def _free_bodies(scene, P, numbers, records, pins, guides, led, torque) -> tuple:
+    """Each moving body alone (:class:`FreeBody`): its inertia force (the book's single
+    force, through the offset point), weight and loads as the ledger holds them, every pin
+    force on it (the stored record, or its opposite where the body is the record's ``by``),
+    the guide's force on a block; its couples."""
+    out = []
+    for body, num in numbers.items():
+        if body == FRAME:
+            continue
+        sides = [s for s in led.known(body) if s.what not in ("pin", "inertia")]
+        sides[:0] = [Side("inertia", body, "", "", i.force,
+                          i.G if i.offset is None else i.offset_point)
+                     for i in records if i.body == body]  # the book's single force
+        for p in pins:
+            if p.on == body:
+                sides.append(Side("pin", body, p.by, p.point, p.force, P[p.point]))
+            elif p.by == body:
+                sides.append(Side("pin", body, p.on, p.point, (-p.force[0], -p.force[1]),
+                                  P[p.point]))
+        sides += [Side("guide", body, FRAME, g.point, g.force, P[g.point]) for g in guides
+                  if block(g.point) == body]
+        couples = [Couple("inertia", body, i.couple) for i in records
+                   if i.body == body and i.offset is None and i.couple != 0]
+        couples += [Couple("load", body, e[1]) for e in led.applied.get(body, ())
+                    if len(e) == 2]
+        if body == scene.input.crank:
+            couples.append(Couple("torque", body, torque))
+        out.append(FreeBody(body, num, tuple(sides), tuple(couples)))
+    return tuple(out)

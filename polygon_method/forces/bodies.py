@@ -8,7 +8,7 @@ The moment about another point ``B`` is then ``M - cross(B, F)``.
 
 from __future__ import annotations
 
-from .records import FRAME, Inertia, block
+from .records import FRAME, Inertia, Side, block
 
 
 class Singular(Exception):
@@ -63,13 +63,21 @@ class Ledger:
         #: a driving cylinder's force (N), by its key, and the condition it was found with
         self.given = {}
         self.conditions = {}
+        self.items = {}  # body -> the known forces one by one (:class:`Side`), in order
 
-    def add(self, body, fx, fy, x, y, what=None):
-        """A force ``(fx, fy)`` acting at ``(x, y)`` on ``body``."""
+    def add(self, body, fx, fy, x, y, what=None, side=None):
+        """A force ``(fx, fy)`` acting at ``(x, y)`` on ``body`` (``side``: the same as a
+        force polygon draws it)."""
         t = self.total.get(body, (0.0, 0.0, 0.0))
         self.total[body] = (t[0] + fx, t[1] + fy, t[2] + cross(x, y, fx, fy))
         if what is not None:
             self.applied.setdefault(body, []).append((what, (fx, fy), (x, y)))
+        if side is not None:
+            self.items.setdefault(body, []).append(side)
+
+    def known(self, body) -> tuple:
+        """The known forces on ``body`` one by one (:class:`Side`), so far."""
+        return tuple(self.items.get(body, ()))
 
     def couple(self, body, c, what=None):
         """Add a known couple ``c`` (N m, ccw positive) on ``body``, with its words ``what`` for the
@@ -106,12 +114,14 @@ def gather(scene, motion, owner):
             alpha, body = Al[lk.key], lk.key
         rec = inertia_record(body, m.mass, m.inertia, G, a_G, alpha, m.how)
         records.append(rec)
-        led.add(body, rec.force[0], rec.force[1], G[0], G[1])
+        led.add(body, rec.force[0], rec.force[1], G[0], G[1],
+                side=Side("inertia", body, "", "", rec.force, G))  # (its line: free bodies)
         led.couple(body, rec.couple)
         if grav is not None:
             w = m.mass * grav.g
-            led.add(body, w * grav.direction[0], w * grav.direction[1], G[0], G[1],
-                    f"weight of {body}")
+            wx, wy = w * grav.direction[0], w * grav.direction[1]
+            led.add(body, wx, wy, G[0], G[1], f"weight of {body}",
+                    Side("weight", body, "", "", (wx, wy), G))
     for ld in scene.loads:
         if ld.force is not None:
             body = owner.get(ld.target, FRAME)
@@ -119,9 +129,40 @@ def gather(scene, motion, owner):
                 continue
             x, y = P[ld.target]
             led.add(body, ld.force[0], ld.force[1], x, y,
-                    f"gas force at {ld.target}" if ld.gas else f"load at {ld.target}")
+                    f"gas force at {ld.target}" if ld.gas else f"load at {ld.target}",
+                    Side("gas" if ld.gas else "load", body, "", ld.target, ld.force, (x, y)))
             if ld.gas:  # the gas pushes the cylinder's cover (the frame) as hard, back
                 led.add(FRAME, -ld.force[0], -ld.force[1], x, y)  # along the same line
         else:
             led.couple(ld.target, ld.torque, f"couple on {ld.target}")
     return tuple(records), led
+
+
+def along(f, p, q):
+    """(the component of ``f`` along the line p -> q, the rest: square to it), as a force
+    polygon splits an outer pin's force (the square part from the link's moments, the
+    part along the link found where the direction lines meet).
+
+    >>> along((3.0, 4.0), (0.0, 0.0), (2.0, 0.0))
+    ((3.0, 0.0), (0.0, 4.0))
+    """
+    ex, ey = q[0] - p[0], q[1] - p[1]
+    k = (f[0] * ex + f[1] * ey) / (ex * ex + ey * ey)
+    n = (k * ex, k * ey)
+    return n, (f[0] - n[0], f[1] - n[1])
+
+
+def unit(p, q):
+    """The unit vector from ``p`` to ``q``."""
+    ex, ey = q[0] - p[0], q[1] - p[1]
+    d = (ex * ex + ey * ey) ** 0.5
+    return (ex / d, ey / d)
+
+
+def outer_pin(side_whole, p, q):
+    """The two sides (along the link p -> q, square to it) of an outer pin's force, as the
+    polygon draws them (:class:`Side` s with ``part`` ``n`` and ``t``)."""
+    n, t = along(side_whole.vector, p, q)
+    w = side_whole
+    return (Side(w.what, w.on, w.by, w.point, n, w.at, "n"),
+            Side(w.what, w.on, w.by, w.point, t, w.at, "t"))

@@ -4,6 +4,11 @@ found from it act on the link that carries it."""
 from __future__ import annotations
 
 
+def bodies(st) -> tuple:
+    """A carried point moves no body of its own: its link's."""
+    return (st.link,)
+
+
 def owns(st) -> dict:
     """A carried point belongs to its link: the forces at it act on that link."""
     return {st.point: st.link}

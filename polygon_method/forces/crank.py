@@ -13,13 +13,18 @@ from __future__ import annotations
 
 from .bodies import cross
 from ..common.numbers import fmt
-from .records import FRAME, ForceStep, PinForce
+from .records import FRAME, ForceStep, PinForce, Side
 
 
 def solve(ox, oy, known):
     """(the frame's force on the crank at O, the driving torque T, ccw positive)."""
     fx, fy, m = known
     return (-fx, -fy), -(m - cross(ox, oy, fx, fy))
+
+
+def bodies(st) -> tuple:
+    """The bodies the step moves: the crank."""
+    return (st.link,)
 
 
 def owns(st) -> dict:
@@ -35,13 +40,18 @@ def step(st, P, led, own):
     r, torque = solve(ox, oy, k)
     led.add(FRAME, -r[0], -r[1], ox, oy)
     led.couple(FRAME, -torque)  # the driver, mounted on the frame, feels -T
-    eq = ()
+    eq, drawing = (), None
     if isinstance(torque, float):
+        known = led.known(st.link)
+
+        def drawn():  # the crank's known forces, then the frame's at the pivot: closed
+            return known + (Side("pin", st.link, FRAME, st.pivot, r, (ox, oy)),), (), ()
+        drawing = drawn
         O = st.pivot
         eq = (f"moments about {O}: T + M_{O} = 0, M_{O} = {fmt(-torque)} N m the known "
               f"forces' moment: T = {fmt(torque)} N m",
               f"forces: F_{O} = -(the known forces) = ({fmt(r[0])}, {fmt(r[1])}) N")
     rec = ForceStep(st.index, st.kind, st.title, (st.link,), (k,),
                     ((f"F_{st.pivot} on {st.link} by the frame", r),
-                     (f"T on {st.link}", torque)), 1.0, "", eq)
+                     (f"T on {st.link}", torque)), 1.0, "", eq, drawing)
     return (PinForce(st.pivot, st.link, FRAME, r),), (), rec, torque

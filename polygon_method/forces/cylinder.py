@@ -21,7 +21,7 @@ from __future__ import annotations
 
 from ..common.numbers import fmt
 from .bodies import Singular, any_zero
-from .records import ForceStep, PinForce
+from .records import ForceStep, PinForce, Side
 
 
 def push(kx, ky, rx, ry, f):
@@ -75,8 +75,8 @@ def step(st, P, led, own):
     (kx, ky), (rx, ry) = P[K], P[R]
     fx, fy = push(kx, ky, rx, ry, f)
     ok, orr = own[K], own[R]
-    led.add(orr, fx, fy, rx, ry)
-    led.add(ok, -fx, -fy, kx, ky)
+    led.add(orr, fx, fy, rx, ry, side=Side("pin", orr, st.key, R, (fx, fy), (rx, ry)))
+    led.add(ok, -fx, -fy, kx, ky, side=Side("pin", ok, st.key, K, (-fx, -fy), (kx, ky)))
     eq = ()
     if isinstance(fx, float):
         eq = ((f"the cylinder drives: F = -T0 / T1 = {fmt(f)} N, T0 the crank's torque "

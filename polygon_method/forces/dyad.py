@@ -23,9 +23,9 @@ D = (1, 0) and takes it all (the joint's triangle of forces: link 1 carries none
 from __future__ import annotations
 
 from ..steps.rounding import vhypot
-from .bodies import Singular, any_zero, cross, least
+from .bodies import Singular, any_zero, cross, least, outer_pin, unit
 from ..common.numbers import fmt
-from .records import ForceStep, PinForce
+from .records import ForceStep, PinForce, Side
 
 
 def solve(bx, by, known1, dx, dy, known2, cx, cy):
@@ -52,6 +52,11 @@ def solve(bx, by, known1, dx, dy, known2, cx, cy):
     return (px, py), (-(f1x + px), -(f1y + py)), (-(f2x - px), -(f2y - py)), cond
 
 
+def bodies(st) -> tuple:
+    """The bodies the step moves: its two links."""
+    return (st.link1, st.link2)
+
+
 def owns(st) -> dict:
     """The point the step finds acts, for loads and later pins, on its first link."""
     return {st.point: st.link1}
@@ -69,10 +74,28 @@ def step(st, P, led, own):
     ob, od = own[st.b], own[st.d]
     pins = (PinForce(st.point, l1, l2, p), PinForce(st.b, l1, ob, fb),
             PinForce(st.d, l2, od, fd))
-    led.add(ob, -fb[0], -fb[1], bx, by)
-    led.add(od, -fd[0], -fd[1], dx, dy)
+    known1, known2 = led.known(l1), led.known(l2)
+    led.add(ob, -fb[0], -fb[1], bx, by, side=Side("pin", ob, l1, st.b, (-fb[0], -fb[1]),
+                                                 (bx, by)))
+    led.add(od, -fd[0], -fd[1], dx, dy, side=Side("pin", od, l2, st.d, (-fd[0], -fd[1]),
+                                                 (dx, dy)))
     eq = ()
-    if isinstance(cond, float):  # one instant: the working in words
+    drawing = None
+    if isinstance(cond, float):  # one instant: the working in words, the force polygon
+        def drawn():
+            B, C, D = (bx, by), (cx, cy), (dx, dy)
+            whole_b = Side("pin", l1, ob, st.b, fb, B)
+            whole_d = Side("pin", l2, od, st.d, fd, D)
+            bn, bt = outer_pin(whole_b, B, C)
+            dn, dt = outer_pin(whole_d, D, C)
+            # the pole, F_B along BC (found last), F_B square to BC, link 1's known forces,
+            # link 2's, F_D square to DC, F_D along DC (found last): closed
+            polygon = (bn, bt) + known1 + known2 + (dt, dn)
+            k = len(polygon)
+            return (polygon, ((0, unit(B, C)), (k - 1, unit(D, C))),
+                    ((whole_b, 0, 2), (Side("pin", l1, l2, st.point, p, C), 2 + len(known1), 0),
+                     (whole_d, k - 2, k)))
+        drawing = drawn
         X, B, D = st.point, st.b, st.d
         m1b = k1[2] - cross(bx, by, k1[0], k1[1])
         m2d = k2[2] - cross(dx, dy, k2[0], k2[1])
@@ -90,7 +113,7 @@ def step(st, P, led, own):
                     ((f"F_{st.point} on {l1} by {l2}", p), (f"F_{st.b} on {l1} by {ob}", fb),
                      (f"F_{st.d} on {l2} by {od}", fd)), cond,
                     f"sine of the angle at {st.point} between {st.point}{st.b} and "
-                    f"{st.point}{st.d}", eq)
+                    f"{st.point}{st.d}", eq, drawing)
     return pins, (), rec, None
 
 

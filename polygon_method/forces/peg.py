@@ -21,7 +21,7 @@ from __future__ import annotations
 from .bodies import Singular, any_zero, cross
 from ..common.numbers import fmt
 from ..scene import FixedPath
-from .records import FRAME, ForceStep, GuideForce, block
+from .records import FRAME, ForceStep, GuideForce, block, Side
 
 
 def solve(known, u1, u2):
@@ -63,7 +63,8 @@ def step(st, P, led, own):
     out = []
     for s, n, (ux, uy) in ((st.first, n1, (u1x, u1y)), (st.second, n2, (u2x, u2y))):
         g = GuideForce(X, n, (-uy, ux), _body(s, own), 0.0, s.key)
-        led.add(g.by, -g.force[0], -g.force[1], x, y)
+        led.add(g.by, -g.force[0], -g.force[1], x, y,
+                side=Side("guide", g.by, pb, X, (-g.force[0], -g.force[1]), (x, y)))
         out.append(g)
     eq = ()
     if isinstance(n1, float):

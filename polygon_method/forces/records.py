@@ -7,7 +7,8 @@ feels its opposite. A body is a link (its key), a slider block (``block B``) or 
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from functools import cached_property
 
 from ..common.errors import SceneError
 
@@ -145,6 +146,92 @@ class Contact:
 
 
 @dataclass(frozen=True)
+class Side:
+    """One force as a force polygon and a free-body diagram draw it: ``vector`` (N) on body
+    ``on`` (by body ``by`` for a pin or a guide), acting along a line through ``at`` (m):
+    the pin or the loaded point, G for a weight; for an inertia force, G in a polygon's
+    side and, in a :class:`FreeBody`, the offset point of the book's single force (G where
+    there is none). ``what``: ``inertia``, ``weight``, ``load``,
+    ``gas``, ``pin`` or ``guide``; ``point``: the point it acts at (a pin, a loaded
+    point; "" for an inertia force or a weight); ``part``: "" the whole force, ``t`` its
+    component square to the link from ``point``, ``n`` its component along the link."""
+
+    what: str
+    on: str
+    by: str
+    point: str
+    vector: tuple
+    at: tuple
+    part: str = ""
+
+
+@dataclass(frozen=True)
+class Couple:
+    """A couple (N m, ccw positive) on body ``on``: ``what`` ``inertia`` (``-I alpha``,
+    drawn only where no single inertia force carries it: ``a_G = 0``), ``load`` (a
+    ``[loads]`` couple) or ``torque`` (the driver's, on the crank)."""
+
+    what: str
+    on: str
+    value: float
+
+
+@dataclass(frozen=True)
+class FreeBody:
+    """One body alone with every force on it (``sides``, whole forces at their points)
+    and every couple (``couples``): what its free-body diagram draws. ``number`` is the
+    body's number on the sheet (the frame 1)."""
+
+    body: str
+    number: int
+    sides: tuple
+    couples: tuple
+
+
+_SUB = str.maketrans("0123456789", "\u2080\u2081\u2082\u2083\u2084\u2085\u2086\u2087\u2088\u2089")
+
+
+def _sub(numbers, *bodies, unicode=True):
+    nums = [str(numbers.get(b, "?")) for b in bodies]
+    text = ("," if any(len(n) > 1 for n in nums) else "").join(nums)
+    return text.translate(_SUB) if unicode else "_" + text
+
+
+def number_sub(numbers: dict, body: str, unicode: bool = True) -> str:
+    """A body's number as a subscript (``G\u2083`` is link 3's centre of mass)."""
+    return _sub(numbers, body, unicode=unicode)
+
+
+def side_label(side: Side, numbers: dict, unicode: bool = True) -> str:
+    """The book's name of a force: ``F32`` the force on link 3 by link 2 (the frame is
+    link 1), ``F34t``/``F34n`` its components square to and along link 3, ``Fi3`` link 3's
+    inertia force, ``W3`` its weight, ``P at E`` a load, ``gas force``; with subscripts
+    (``F\u2083\u2082``) or, ``unicode=False``, written out (``F_32^t``).
+
+    >>> side_label(Side("pin", "AB", "BC", "B", (1.0, 0.0), (0.0, 0.0), "t"),
+    ...            {"frame": 1, "AB": 3, "BC": 4}, unicode=False)
+    'F_34^t'
+    """
+    sup = {"t": "\u1d57", "n": "\u207f"} if unicode else {"t": "^t", "n": "^n"}
+    if side.what in ("pin", "guide"):
+        return "F" + _sub(numbers, side.on, side.by, unicode=unicode) + sup.get(side.part, "")
+    if side.what == "inertia":
+        return ("F\u1d62" if unicode else "Fi") + _sub(numbers, side.on, unicode=unicode)
+    if side.what == "weight":
+        return "W" + _sub(numbers, side.on, unicode=unicode)
+    if side.what == "gas":
+        return "gas force"
+    return f"P at {side.point}"
+
+
+def couple_label(c: Couple, numbers: dict, unicode: bool = True) -> str:
+    """``T2`` the driver's torque on link 2, ``C4`` a couple on link 4, ``Ci3`` the inertia
+    couple of link 3."""
+    head = {"torque": "T", "load": "C", "inertia": "C\u1d62" if unicode else "Ci"}[c.what]
+    return head + _sub(numbers, c.on, unicode=unicode)
+
+
+@dataclass(frozen=True)
 class ForceStep:
     """One step of the force solution, in the order solved (the kinematic plan's, reversed):
     ``kind`` (crank, dyad, slider), ``title``, ``bodies`` and, for each body, the resultant
@@ -165,9 +252,36 @@ class ForceStep:
     why: str = ""
     #: the step's equations with their numbers, in the book's words (SI)
     equations: tuple = ()
+    #: a function giving (polygon, unknown, chords), made when first asked for (one
+    #: instant; None over a sweep)
+    drawing: object = field(default=None, repr=False, compare=False)
     #: the pin forces (:class:`PinForce`) and guide forces (:class:`GuideForce`) it found
     pins: tuple = ()
     guides: tuple = ()
+
+    @cached_property
+    def _drawn(self):
+        return self.drawing() if self.drawing is not None else ((), (), ())
+
+    @property
+    def polygon(self) -> tuple:
+        """Its force polygon: the :class:`Side` s in the order drawn, head to tail from the
+        pole, closing on it (the group's known forces, then the unknowns: each outer pin's
+        force as its components square to its link, from the link's moments, and along
+        it, found where the direction lines meet)."""
+        return self._drawn[0]
+
+    @property
+    def unknown(self) -> tuple:
+        """The sides (index, unit direction) whose direction alone was known: their lines
+        are drawn through the polygon's known corners and meet where it closes."""
+        return self._drawn[1]
+
+    @property
+    def chords(self) -> tuple:
+        """Whole forces read across the polygon: (:class:`Side`, i, j), the vector from
+        corner i to corner j (corner 0 the pole, corner k the end of side k - 1)."""
+        return self._drawn[2]
 
 
 @dataclass(frozen=True)
@@ -203,6 +317,21 @@ class Forces:
     second_crank: str | None = None
     #: the ground's contact force on each wheel rolling on a line (:class:`Contact`)
     contacts: tuple = ()
+    #: what :attr:`numbers` and :attr:`free` are read from, when asked: (body -> number,
+    #: or a function making it; a function making the free bodies)
+    drawing: tuple = field(default=(), repr=False, compare=False)
+
+    @cached_property
+    def numbers(self) -> dict:
+        """body -> its number on the sheet, as the books number links: the frame 1, then
+        the bodies in the order the plan finds them (the crank 2)."""
+        return self.drawing[0]() if self.drawing else {}
+
+    @cached_property
+    def free(self) -> tuple:
+        """:class:`FreeBody` of each moving body, in the order of :attr:`numbers` (one
+        instant; empty over a sweep)."""
+        return self.drawing[1](self.numbers) if self.drawing else ()
 
     def pin(self, point: str, on: str, by: str | None = None):
         """The force on body ``on`` at ``point`` (by ``by``, when the pin joins more than two

@@ -21,9 +21,9 @@ Then ``P = N n + R`` and the link's force balance gives the force on it at B, ``
 from __future__ import annotations
 
 from ..steps.rounding import vhypot
-from .bodies import Singular, any_zero, cross
+from .bodies import Singular, any_zero, cross, outer_pin, unit
 from ..common.numbers import fmt
-from .records import FRAME, ForceStep, GuideForce, PinForce, block
+from .records import FRAME, ForceStep, GuideForce, PinForce, Side, block
 
 
 def solve(bx, by, known_link, xx, xy, known_block, u):
@@ -46,6 +46,11 @@ def solve(bx, by, known_link, xx, xy, known_block, u):
     n = -(mb + cross(ex, ey, rx, ry)) / den
     px, py = n * nx + rx, n * ny + ry
     return n, (px, py), (-(fx + px), -(fy + py)), cond
+
+
+def bodies(st) -> tuple:
+    """The bodies the step moves: the link and its block."""
+    return (st.link, block(st.point))
 
 
 def owns(st) -> dict:
@@ -83,10 +88,26 @@ def step(st, P, led, own):
     ob = own[st.b]
     ux, uy = u
     g = GuideForce(x, n, (-uy, ux), gb)
-    led.add(ob, -fb[0], -fb[1], bx, by)
-    led.add(gb, -g.force[0], -g.force[1], xx, xy)
+    known_l, known_b = led.known(lk), led.known(bl)
+    led.add(ob, -fb[0], -fb[1], bx, by, side=Side("pin", ob, lk, st.b, (-fb[0], -fb[1]),
+                                                 (bx, by)))
+    led.add(gb, -g.force[0], -g.force[1], xx, xy,
+            side=None if gb == FRAME else Side("guide", gb, bl, x, (-g.force[0], -g.force[1]),
+                                               (xx, xy)))
     eq = ()
-    if isinstance(cond, float):  # one instant: the working in words
+    drawing = None
+    if isinstance(cond, float):  # one instant: the working in words, the force polygon
+        def drawn():
+            B, X = (bx, by), (xx, xy)
+            whole_b = Side("pin", lk, ob, st.b, fb, B)
+            bn, bt = outer_pin(whole_b, B, X)
+            # the pole, F_B along BX (found last), F_B square to BX, the link's known
+            # forces, the block's, the guide's normal force (found last): closed
+            polygon = (bn, bt) + known_l + known_b + (Side("guide", bl, gb, x, g.force, X),)
+            k = len(polygon)
+            return (polygon, ((0, unit(B, X)), (k - 1, g.n)),
+                    ((whole_b, 0, 2), (Side("pin", lk, bl, x, p, X), 2 + len(known_l), 0)))
+        drawing = drawn
         B = st.b
         mb = kl[2] - cross(bx, by, kl[0], kl[1])
         ex, ey = xx - bx, xy - by
@@ -101,7 +122,7 @@ def step(st, P, led, own):
     rec = ForceStep(st.index, "slider", st.title, (lk, bl), (kl, kb),
                     ((f"N_{x} on {bl} by the guide", n), (f"F_{x} on {lk} by {bl}", p),
                      (f"F_{st.b} on {lk} by {ob}", fb)), cond,
-                    f"cosine of the angle between {st.b}{x} and the guide", eq)
+                    f"cosine of the angle between {st.b}{x} and the guide", eq, drawing)
     return (PinForce(x, lk, bl, p), PinForce(st.b, lk, ob, fb)), (g,), rec, None
 
 

@@ -30,7 +30,7 @@ from __future__ import annotations
 from ..steps.rounding import vhypot
 from .bodies import Singular, any_zero, cross
 from ..common.numbers import fmt
-from .records import ForceStep, GuideForce, PinForce, block
+from .records import ForceStep, GuideForce, PinForce, block, Side
 
 
 def solve(kx, ky, known_lever, ax, ay, known_block, u, length):
@@ -84,8 +84,8 @@ def step(st, P, led, own):
         raise Singular(f"block {a} is at {k}, the pivot of {lv}")
     ok, oa = own[k], own[a]
     g = GuideForce(a, n, (-uy, ux), lv)
-    led.add(ok, -fk[0], -fk[1], kx, ky)
-    led.add(oa, -fa[0], -fa[1], ax, ay)
+    led.add(ok, -fk[0], -fk[1], kx, ky, side=Side("pin", ok, lv, k, (-fk[0], -fk[1]), (kx, ky)))
+    led.add(oa, -fa[0], -fa[1], ax, ay, side=Side("pin", oa, bl, a, (-fa[0], -fa[1]), (ax, ay)))
     eq = ()
     if isinstance(cond, float):  # one instant: the working in words
         mk = kl[2] - cross(kx, ky, kl[0], kl[1])

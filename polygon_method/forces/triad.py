@@ -37,7 +37,7 @@ from __future__ import annotations
 from ..steps.rounding import largest, vhypot
 from .bodies import Singular, any_zero, cross, least
 from ..common.numbers import fmt
-from .records import ForceStep, PinForce
+from .records import ForceStep, PinForce, Side
 
 
 def solve3x3(e, r, rhs):
@@ -115,7 +115,8 @@ def step(st, P, led, own):
         fk = (-(kl[0] + p[0]), -(kl[1] + p[1]))
         ok = own[K]
         (kx, ky) = P[K]
-        led.add(ok, -fk[0], -fk[1], kx, ky)
+        led.add(ok, -fk[0], -fk[1], kx, ky,
+                side=Side("pin", ok, lk, K, (-fk[0], -fk[1]), (kx, ky)))
         pins += [PinForce(V, lk, plate, p), PinForce(K, lk, ok, fk)]
         found += [(f"F_{V} on {lk} by {plate}", p), (f"F_{K} on {lk} by {ok}", fk)]
         if isinstance(ai, float):

@@ -35,7 +35,7 @@ from __future__ import annotations
 from ..steps.rounding import vhypot
 from .bodies import Singular, any_zero, cross
 from ..common.numbers import fmt
-from .records import FRAME, Contact, ForceStep, PinForce
+from .records import FRAME, Contact, ForceStep, PinForce, Side
 
 
 def solve(bx, by, known_link, cx, cy, known_wheel, r, m):
@@ -83,7 +83,7 @@ def step(st, P, led, own):
     ob = own[st.b]
     ix, iy = cx - st.radius * mx, cy - st.radius * my
     contact = Contact(wh, (ix, iy), n, t, (mx, my))
-    led.add(ob, -fb[0], -fb[1], bx, by)
+    led.add(ob, -fb[0], -fb[1], bx, by, side=Side("pin", ob, lk, st.b, (-fb[0], -fb[1]), (bx, by)))
     led.add(FRAME, -contact.force[0], -contact.force[1], ix, iy)
     eq = ()
     if isinstance(n, float):

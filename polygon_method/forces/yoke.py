@@ -28,7 +28,7 @@ from __future__ import annotations
 
 from .bodies import Singular, any_zero, cross
 from ..common.numbers import fmt
-from .records import FRAME, ForceStep, GuideForce, PinForce, block
+from .records import FRAME, ForceStep, GuideForce, PinForce, block, Side
 
 
 def solve(yx, yy, known_yoke, px, py, known_block, u, d):
@@ -76,7 +76,7 @@ def step(st, P, led, own):
     op = own[X]
     slot = GuideForce(X, nd, (-d[1], d[0]), yb)
     path = GuideForce(Y, nu, (-u[1], u[0]), FRAME, c)
-    led.add(op, -fp[0], -fp[1], px, py)
+    led.add(op, -fp[0], -fp[1], px, py, side=Side("pin", op, xb, X, (-fp[0], -fp[1]), (px, py)))
     led.add(FRAME, -path.force[0], -path.force[1], yx, yy)
     led.couple(FRAME, -c)
     eq = ()

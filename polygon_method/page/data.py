@@ -14,13 +14,14 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..draw.style import (BODY_EDGE, BODY_FACE, HEAD_HALF, HEAD_LEN, IMAGE_FACE, LINE_STYLE,
-                          PITCH_STYLE, STYLE)
+from ..draw.style import (BODY_EDGE, BODY_FACE, FORCE_STYLE, HEAD_HALF, HEAD_LEN, IMAGE_FACE,
+                          LINE_STYLE, PITCH_STYLE, STYLE)
 from ..solver.errorbound import USELESS
-from ..common.errors import TOL
+from ..common.errors import TOL, PolygonMethodError
+from ..forces import analyse, side_label, Side
 from ..common.numbers import quiet, sense
 from ..draw.plots import MARKS, SERIES_COLORS
-from ..polygons.scales import DIAGRAMS, display_unit
+from ..polygons.scales import DIAGRAMS, display_unit, newton_scale
 from ..scene import Link
 from ..steps import image_name, slot_labels, under_label
 from .frames import Frames, round_sig
@@ -29,6 +30,8 @@ __all__ = ["page_data", "diagram_box", "page_style"]
 
 #: the largest polygon a diagram's box holds, in times the median polygon of the cycle
 REACH = 1.5
+#: the longest inertia force's arrow over the cycle on the page's configuration (cm)
+INERTIA_CM = 3.0
 
 
 def _flat(xy) -> list:
@@ -144,12 +147,36 @@ def _unders(sol) -> dict:
     return out
 
 
+def inertia_arrows(res, n):
+    """The inertia forces ``-m a_G`` of a scene with masses, per frame, drawn at G on the
+    configuration diagram at one round force scale (the largest over the cycle at most
+    :data:`INERTIA_CM`): ``{"text", "perCm", "bodies": [{"body", "label", "G", "F"}]}``;
+    None without masses, or where the force analysis does not cover the plan."""
+    if not res.scene.has_forces:
+        return None
+    try:
+        f = analyse(res)
+    except PolygonMethodError:
+        return None
+    if not f.inertia:
+        return None
+    size = max(float(np.max(np.broadcast_to(np.hypot(*i.force), (n,)))) for i in f.inertia)
+    s = newton_scale(size, INERTIA_CM)
+    return {"text": display_unit(s.text), "perCm": s.per_cm,
+            "bodies": [{"body": i.body,
+                        "label": side_label(Side("inertia", i.body, "", "", (0.0, 0.0),
+                                                 (0.0, 0.0)), f.numbers),
+                        "G": _flat(i.G), "F": _flat(i.force)} for i in f.inertia]}
+
+
 def page_style() -> dict:
     """The drawings' colours, widths (pt) and dashes (in line widths), as ``draw`` and
     ``sweep --plot`` have them (:mod:`polygon_method.draw.style`), for the page's script."""
     lines = {k: [c, w, list(d) if d else None] for k, (c, w, d) in STYLE.items()}
     lines["line"] = [LINE_STYLE[0], LINE_STYLE[1], list(LINE_STYLE[2])]
     lines["pitch"] = [PITCH_STYLE[0], PITCH_STYLE[1], list(PITCH_STYLE[2])]
+    c, w, _ = FORCE_STYLE["inertia"]
+    lines["inertia"] = [c, w, None]
     return {"lines": lines, "head": [HEAD_LEN, HEAD_HALF], "body": [BODY_FACE, BODY_EDGE],
             "image": IMAGE_FACE, "series": list(SERIES_COLORS),
             "marks": {k: [c, w, list(d) if d else None] for k, (c, w, d) in MARKS.items()}}
@@ -217,6 +244,7 @@ def page_data(fr: Frames) -> dict:
         "sense": sense(sc.input.omega),
         "warnBelow": TOL.warn,
         "style": page_style(),
+        "inertia": inertia_arrows(res, n),
     }
     conds = [(st.label, np.broadcast_to(res.cond[st.index], (n,))) for st in res.plan.steps
              if st.index in res.cond]

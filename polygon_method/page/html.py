@@ -134,8 +134,10 @@ def page_html(fr: Frames, *, verdicts=None, answers_title: str = "") -> str:
     figs = []
     for s in d["scales"]:
         diagram = s["diagram"]
+        forces = "" if diagram != "configuration" or not d.get("inertia") else \
+            f'; inertia forces at G: <b id="scale-inertia">{escape(d["inertia"]["text"])}</b>'
         figs.append(f'<figure><figcaption>{escape(_CAPTION[diagram])}: <b class="scale" '
-                    f'id="scale-{diagram}">{escape(s["text"])}</b></figcaption>'
+                    f'id="scale-{diagram}">{escape(s["text"])}</b>{forces}</figcaption>'
                     f'<svg class="diagram" id="{diagram}" '
                     f'role="img" '
                     f'aria-label="{diagram} diagram"></svg></figure>')

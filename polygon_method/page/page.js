@@ -125,9 +125,41 @@ function frameView(phase, k) {
   const w = Math.max(b[2] - b[0], v.rest), h = Math.max(b[3] - b[1], v.rest);
   const need = 10 * Math.max(w / (FILL[phase] * v.W), h / (FILL[phase] * v.H)) / factor(phase);
   v.per = roundUp(need) * factor(phase);
+  if (phase === "configuration" && D.inertia) return withArrows(v, need);
   v.text = "1 cm = " + fmt(v.per / factor(phase)) + " " + unitText(phase);
   v.box = [5 * (b[0] + b[2]) / v.per - v.W / 2, -5 * (b[1] + b[3]) / v.per - v.H / 2];
   v.box.push(v.box[0] + v.W, v.box[1] + v.H);  // [x0, y0, x1, y1] in mm, y down
+  return v;
+}
+// the configuration with the inertia forces' arrows (their own scale, in mm of the panel):
+// the smallest round scale at which the mechanism and every arrow over the cycle fit
+function arrowsBox(per) {  // [x0, y0, x1, y1] in mm, y down
+  const b = [Infinity, Infinity, -Infinity, -Infinity], f = 10 / D.inertia.perCm;
+  const put = (x, y) => { b[0] = Math.min(b[0], x); b[1] = Math.min(b[1], y); b[2] = Math.max(b[2], x); b[3] = Math.max(b[3], y); };
+  for (let k = 0; k < N; k++) {
+    for (const [x, y] of vertices("configuration", k)) put(10 * x / per, -10 * y / per);
+    for (const a of D.inertia.bodies) {
+      const gx = 10 * a.G[2 * k] / per, gy = -10 * a.G[2 * k + 1] / per;
+      put(gx, gy);
+      put(gx + f * a.F[2 * k], gy - f * a.F[2 * k + 1]);
+    }
+  }
+  return b;
+}
+function withArrows(v, need) {
+  if (v.fitted === undefined || v.fitted[0] !== v.W || v.fitted[1] !== v.H) {
+    let per = roundUp(need) * factor("configuration"), b = arrowsBox(per);
+    for (let i = 0; i < 60 && (b[2] - b[0] > FILL.configuration * v.W || b[3] - b[1] > FILL.configuration * v.H); i++) {
+      per = roundUp(per / factor("configuration") * 1.000001) * factor("configuration");
+      b = arrowsBox(per);
+    }
+    v.fitted = [v.W, v.H, per, b];
+  }
+  const [, , per, b] = v.fitted;
+  v.per = per;
+  v.text = "1 cm = " + fmt(per / factor("configuration")) + " " + unitText("configuration");
+  v.box = [(b[0] + b[2]) / 2 - v.W / 2, (b[1] + b[3]) / 2 - v.H / 2];
+  v.box.push(v.box[0] + v.W, v.box[1] + v.H);
   return v;
 }
 // a point (SI) in mm of the panel, y down
@@ -199,6 +231,8 @@ function setup(phase) {
     for (const [p, q, key] of D.links) add(el(svg, "line", {class: "link", stroke: D.style.body[1], id: "c-link-" + key}, "link:" + key), "link", [p, q, key]);
     for (const s of D.sliders) add(el(svg, "polygon", {class: "block", fill: D.style.body[0], stroke: D.style.body[1]}, "slider:" + s.key), "block", s);
     for (const p in D.ground) add(el(svg, "polygon", {class: "ground"}, "ground:" + p), "ground", p);
+    if (D.inertia) for (const b of D.inertia.bodies)  // each inertia force -m a_G at G
+      add(el(svg, "line", styled("inertia", {"marker-end": head("inertia")}), "inertia:" + b.body), "inertia", b);
     for (const p of Object.keys(D.ground).concat(D.points)) {
       add(el(svg, "circle", {class: "joint point", r: r3(FS * 0.18), stroke: D.style.body[1]}, "point:" + p), "joint", p);
       add(text(svg, {class: "label", id: "c-lab-" + p}, p, "point:" + p), "label", p);
@@ -287,6 +321,12 @@ function update(phase, k) {
       place(e, pole);
       pole = [pole[0], pole[1] - 0.35 * fs];  // its middle, which the other labels keep clear of
     } else if (kind === "label") labels.push([e, P(x)]);
+    else if (kind === "inertia") {  // at the inertia forces' own scale (cm of the panel)
+      const g = C([x.G[2 * k], x.G[2 * k + 1]]), F = [x.F[2 * k], x.F[2 * k + 1]];
+      const d = [10 * F[0] / D.inertia.perCm, -10 * F[1] / D.inertia.perCm];
+      e.style.display = Math.hypot(d[0], d[1]) < 0.5 ? "none" : "";
+      line(e, g, [g[0] + d[0], g[1] + d[1]]);
+    }
   }
   placeLabels(labels, phase, v.box, pole);
 }
@@ -400,6 +440,11 @@ function tipText(tip, k) {
   }
   if (kind === "sliding") return "sliding velocity of " + name + " = " + fmt(D.S[name][0][k]) + " m/s; sliding acceleration " + fmt(D.S[name][1][k]) + " m/s²";
   if (kind === "coriolis") return "Coriolis component at " + name + " = 2ωv = " + fmt(Math.hypot(D.S[name][2][k], D.S[name][3][k])) + " m/s²";
+  if (kind === "inertia") {
+    const b = D.inertia.bodies.find((x) => x.body === name);
+    return "inertia force " + b.label + " of " + name + " = m·a_G = " + fmt(Math.hypot(b.F[2 * k], b.F[2 * k + 1])) +
+      " N, at G, opposite to a_G (drawn at " + D.inertia.text + ")";
+  }
   if (kind === "slider" || kind === "guide") return "slider " + name + ": sliding velocity " + fmt(D.S[name][0][k]) + " m/s";
   return name;
 }

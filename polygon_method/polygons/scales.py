@@ -24,7 +24,8 @@ from ..common.units import UNITS
 
 __all__ = ["Scale", "choose_scale", "parse_scale", "diagram_scales", "choose_scales",
            "parse_scales", "coarser", "finer", "MANTISSAS", "FIT_CM", "SPACE_FIT_CM",
-           "DRAWING_PRECISION_CM", "extent", "DIAGRAMS", "KIND_OF_DIAGRAM"]
+           "DRAWING_PRECISION_CM", "extent", "DIAGRAMS", "KIND_OF_DIAGRAM", "force_scale",
+           "polygon_corners", "newton_scale"]
 
 #: the round numbers a textbook scale is made of (times a power of ten)
 MANTISSAS = ("1", "2", "2.5", "5")
@@ -37,10 +38,12 @@ DRAWING_PRECISION_CM = 0.05
 
 #: the SI a centimetre of drawing may stand for, by kind: beyond, a scale is a slip (its
 #: diagram would be kilometres across, or a speck) and its text hundreds of digits long
-_SANE_PER_CM = {"length": (1e-9, 1e4), "velocity": (1e-12, 1e6), "acceleration": (1e-12, 1e12)}
-_SI = {"length": "m", "velocity": "m/s", "acceleration": "m/s^2"}
+_SANE_PER_CM = {"length": (1e-9, 1e4), "velocity": (1e-12, 1e6), "acceleration": (1e-12, 1e12),
+                "force": (1e-9, 1e12)}
+_SI = {"length": "m", "velocity": "m/s", "acceleration": "m/s^2", "force": "N"}
 
-_KIND_OF_UNIT = {u: k for k in ("length", "velocity", "acceleration") for u in UNITS[k]}
+_KIND_OF_UNIT = {u: k for k in ("length", "velocity", "acceleration", "force")
+                 for u in UNITS[k]}
 
 
 @dataclass(frozen=True)
@@ -86,7 +89,8 @@ def _unit_kind(unit: str) -> str:
     kind = _KIND_OF_UNIT.get(unit)
     if kind is None:
         raise SceneError(f"unknown unit {unit!r} for a scale; use a length (mm, cm, m), a "
-                         "velocity (m/s, mm/s) or an acceleration (m/s^2)", key="scale")
+                         "velocity (m/s, mm/s), an acceleration (m/s^2) or a force (N, kN)",
+                         key="scale")
     return kind
 
 
@@ -201,6 +205,34 @@ def diagram_scales(sol, fit_cm: float = FIT_CM, space_fit_cm: float = SPACE_FIT_
             choose_scale(extent(vel), fit_cm, unit="m/s"),
             choose_scale(extent(acc), fit_cm, unit="m/s^2"))
 
+
+def polygon_corners(step) -> list:
+    """The corners (N) of a force step's polygon: the pole, then the end of each side in
+    turn (the last is the pole again, to rounding)."""
+    out = [(0.0, 0.0)]
+    for side in step.polygon:
+        x, y = out[-1]
+        out.append((x + side.vector[0], y + side.vector[1]))
+    return out
+
+
+def force_scale(forces, fit_cm: float = FIT_CM) -> Scale:
+    """The one force scale of a sheet of force polygons: the smallest round scale (1, 2,
+    2.5, 5 x 10^k N or kN per cm) at which the largest polygon is at most ``fit_cm`` across
+    (the rule of the velocity and acceleration polygons); in kN from 1 cm = 1 kN (a
+    polygon 4 800 N across: 1 cm = 500 N; 68 700 N across: 1 cm = 10 kN)."""
+    size = max((extent(polygon_corners(st)) for st in forces.steps if st.polygon),
+               default=0.0)
+    return newton_scale(size, fit_cm)
+
+
+def newton_scale(size: float, fit_cm: float) -> Scale:
+    """The smallest round force scale at which ``size`` (N) takes at most ``fit_cm``: in N,
+    or in kN from 1 cm = 1 kN."""
+    s = choose_scale(size, fit_cm, unit="N")
+    return choose_scale(size, fit_cm, unit="kN") if s.per_cm >= 1e3 else s
+
+
 # --------------------------------------------------------------------------- the sheets
 
 
@@ -210,7 +242,7 @@ def display_unit(text: str) -> str:
 
 DIAGRAMS = ("configuration", "velocity", "acceleration")
 KIND_OF_DIAGRAM = {"configuration": "length", "velocity": "velocity",
-                   "acceleration": "acceleration"}
+                   "acceleration": "acceleration", "forces": "force"}
 #: A4 portrait for one diagram, A4 landscape for the three side by side (cm)
 SHEET_ONE = (21.0, 29.7)
 SHEET_ALL = (29.7, 21.0)

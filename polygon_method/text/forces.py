@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 
 from ..solver.errorbound import SHOWN, USELESS
-from ..forces import FRAME
+from ..forces import FRAME, side_label
 from ..forces.bounds import NO_BOUND, force_bounds
 from ..common.numbers import fmt, quiet, sense_word
 
@@ -140,9 +140,27 @@ def bound_lines(sol, f) -> list:
     return out
 
 
-def force_blocks(sol) -> list:
+def _polygon_items(st, f, scale, F) -> list:
+    """A step's force polygon in words: each side at ``scale`` (cm), in the order drawn."""
+    if not st.polygon:
+        return []
+    tiny = 1e-9 * max(F, 1e-300)
+    sides = [f"{side_label(sd, f.numbers, unicode=False)} {scale.cm(math.hypot(*sd.vector)):.2f}"
+             " cm" + (" (found)" if any(k == u for u, _ in st.unknown) else "")
+             for k, sd in enumerate(st.polygon) if math.hypot(*sd.vector) > tiny]
+    items = [f"force polygon at {scale.text}, from its pole, head to tail: "
+             + ", ".join(sides) + "; it closes on the pole"]
+    across = [f"{side_label(c, f.numbers, unicode=False)} {scale.cm(math.hypot(*c.vector)):.2f}"
+              " cm" for c, _, _ in st.chords if math.hypot(*c.vector) > tiny]
+    if across:
+        items.append("read across it (whole pin forces): " + ", ".join(across))
+    return items
+
+
+def force_blocks(sol, scale=None) -> list:
     """The ``steps`` document's blocks for the forces (``("h", text)``, ``("p", text)``,
-    ``("list", items)``, ``("table", header, rows)``), numbered after section 5."""
+    ``("list", items)``, ``("table", header, rows)``), numbered after section 5;
+    ``scale``: the force polygons' scale, when the sides are to be given in cm at it."""
     sc = sol.scene
     if not sc.has_forces:
         return []
@@ -177,6 +195,17 @@ def force_blocks(sol) -> list:
                    "then each body's force balance the rest. 'Known' is the resultant of the "
                    "inertia force and couple, the weight, the loads and the forces of the "
                    "groups solved before (the moment about the origin)."))
+    if scale is not None:
+        names = ", ".join(f"{n} {'the frame' if b == FRAME else b}"
+                          for b, n in f.numbers.items())
+        blocks.append(("p", f"Force scale: {scale.text}, one scale for every polygon (the "
+                       "largest at most 12 cm across). The bodies are numbered as the books "
+                       f"number links ({names}); F_32 is the force on 3 by 2, Fi_3 the "
+                       "inertia force of 3, W_3 its weight. Each polygon starts at its pole "
+                       "with the known forces head to tail and each outer pin's force square "
+                       "to its link (^t, from that link's moments about the group's middle "
+                       "pin); the lines of the forces along the links (^n) and of a guide's "
+                       "normal force, drawn through the corners, meet where it closes."))
     for st in f.steps:
         items = []
         for body, (fx, fy, m) in zip(st.bodies, st.known):
@@ -200,6 +229,8 @@ def force_blocks(sol) -> list:
             else:
                 items.append(f"{name} = {fmt(quiet(val, F))} N (along the guide's normal, "
                              "+ to its left)")
+        if scale is not None:
+            items += _polygon_items(st, f, scale, F)
         if st.why:
             items.append(f"condition {st.condition:.3g} ({st.why})")
         e = bounds.steps.get(st.index, 0.0)

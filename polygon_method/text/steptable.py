@@ -42,7 +42,7 @@ from ..solver.given import working
 from ..common.numbers import fixed as _fixed, fmt, sense_word
 from .forces import force_blocks
 from ..polygons.constructions import acceleration_constructions, velocity_constructions
-from ..polygons.scales import DRAWING_PRECISION_CM, diagram_scales, extent
+from ..polygons.scales import DRAWING_PRECISION_CM, diagram_scales, extent, force_scale
 from ..scene import FixedPath, GuideSlider, guide_words, split_name
 from ..solver.kinematics import evaluate
 from ..motion.solution import Solution, tidied
@@ -655,7 +655,8 @@ def steps_blocks(sol: Solution) -> _Doc:
     _velocity(doc, sol, vscale)
     _readoffs(doc, sol, vscale)
     _acceleration(doc, sol, ascale)
-    doc.blocks += force_blocks(sol)
+    fscale = force_scale(sol.forces) if sc.has_forces and not sol.forces_refused else None
+    doc.blocks += force_blocks(sol, fscale)
     tail = [f"warning: {w}" for w in sol.warnings] + [f"note: {n}" for n in sol.notes]
     if tail:
         doc.h("Notes")
