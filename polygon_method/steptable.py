@@ -331,6 +331,18 @@ def _superposition(doc, sol):
         rows.append((p, _polar(a), _polar(b), _polar((a[0] + b[0], a[1] + b[1]))))
     doc.table(("point", f"v' ({inp.crank} alone)", f"v'' ({two.crank} alone)",
                "v = v' + v''"), rows)
+    doc.p("The angular velocities add in the same way (for gears, the tabular method: each "
+          "input alone, then the sum):")
+    rows = [(lk.key, _turn(first.W[lk.key]), _turn(second.W[lk.key]),
+             _turn(first.W[lk.key] + second.W[lk.key])) for lk in sc.links]
+    doc.table(("link", f"omega' ({inp.crank} alone)", f"omega'' ({two.crank} alone)",
+               "omega = omega' + omega''"), rows)
+
+
+def _turn(w) -> str:
+    if abs(w) <= 1e-12:
+        return "0"
+    return f"{fmt(abs(w))} rad/s {sense_word(w)}"
 
 
 def _polar(v) -> str:
