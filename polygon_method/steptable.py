@@ -349,7 +349,8 @@ def _polar(v) -> str:
     m = math.hypot(*v)
     if m <= 1e-12 * (1 + abs(v[0]) + abs(v[1])):
         return "0"
-    return f"{fmt(m)} m/s at {fmt(math.degrees(math.atan2(v[1], v[0])) % 360, 4)} deg"
+    ang = round(math.degrees(math.atan2(v[1], v[0])), 9) % 360  # no 1e-15 deg off an axis
+    return f"{fmt(m)} m/s at {fmt(ang, 4)} deg"
 
 
 def _vector_name(v) -> str:

@@ -531,6 +531,10 @@ class RollingWheel(Step):
         return f"{self.label}: the wheel {self.wheel} is near leaving its contact ({c:.3g})"
 
     def limit_why(self):
+        if self.on != "line" and self.theta_rate is None:
+            return (f"the wheel {self.wheel} would leave {self.where}, or its arm or gear has "
+                    "turned half a turn from the stated instant: its angle is followed no "
+                    "further (solve the scene at a later instant to go on)")
         return f"the wheel {self.wheel} would leave {self.where}"
 
     def transmission(self):
