@@ -554,6 +554,13 @@ class _Compiler:
                     f"{sc.input.second.crank} is driven by its mesh ([rolling] {pr.wheel}) as "
                     "well: remove [input.second] (or the mesh)", file=sc.file,
                     key="[input.second] crank")
+            if by.kind == "crank" and pr.base is not None and pr.wheel in by.links:
+                base = sc.link(pr.base)
+                raise MobilityError(
+                    f"the gear {pr.wheel} is the crank, so it drives the mesh: write the "
+                    f"driven gear as the wheel, \"{base.key}\" = {{ on = \"{pr.wheel}\" }} "
+                    f"(centre first: {pr.base_centre})", file=sc.file,
+                    key=f"[rolling] {pr.wheel}")
             raise MobilityError(
                 f"{mob}: over-constrained: {pr.rim} is placed by step {by.title} and would "
                 f"also be set by the rolling of {pr.wheel}: one constraint too many (remove "

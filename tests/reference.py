@@ -15,10 +15,12 @@ the coordinates ``q`` (x, y of every non-ground point):
 * a wheel CX of radius r rolling without slip ([rolling]): ``X - C - l (cos phi, sin phi) = 0``
   with, on a fixed line (T a point of it, m its normal towards the wheel, t = perp(m)),
   ``phi = phi0 + ((C - T).t - s0) / r`` and the centre ``(C - T).m - r = 0``; on a circle
-  or a gear, ``phi = phi0 + K (th - th0)``, K the wheel's turns per turn of the crank from the
-  gear ratio: ``K = (1 + e R/r) K_arm - e (R/r) K_base`` (e = +1 outside, -1 inside; K_arm 1
-  when the crank carries the centre, K_base 1 for the crank, the K of a wheel for a wheel).
-  Evaluated at the scene's own angle, where phi = phi0 (s0 is C's place there).
+  or a gear (centred at O, fixed or moving), ``phi = phi0 + kd (psi - psi0) + kb (beta -
+  beta0)``: no slip at the pitch point relative to the line of centres, psi the direction
+  O -> C and beta the gear's (its centre to its link's other point), both read from the
+  points, ``kd = 1 + e R/r``, ``kb = -e R/r`` (e = +1 outside, -1 inside; R from the centre
+  distance). Evaluated at the scene's own angle, where phi = phi0 (s0 is C's place there);
+  it has no explicit time, and its gamma is its second derivative along q' (mpmath.diff).
 * a rack R on a fixed path (T, u) meshing with a pinion about O:  ``(R - T).u - k K (th - th0)
   = 0`` with k = -(T - O).perp(u) (the pinion's point at the pitch point moves as the rack)
   and K the pinion's turns per turn of the crank (with the path's equation above).

@@ -331,3 +331,74 @@ def test_every_view_works_or_refuses_in_one_located_line(name, command, tmp_path
     else:
         lines = out.stderr.strip().splitlines()
         assert out.returncode == 2 and len(lines) == 1 and "s.toml" in lines[0], out.stderr
+
+
+COUPLER_ARM = """
+units = "mm"
+[ground]
+A = [0, 0]
+D = [120, 0]
+[links]
+AB = 50
+BC = 130
+CD = 90
+"C-P" = 40
+[rolling]
+"C-P" = { on = "B-C", on_radius = 90, angle = 20 }
+[assembly]
+C = "above"
+[input]
+crank = "AB"
+angle = 60
+speed = "10 rad/s ccw"
+acceleration = "20 rad/s^2 cw"
+"""
+
+
+def test_a_planet_meshing_with_a_gear_fixed_to_its_own_arm_turns_with_the_arm():
+    """The coupler BC as the arm and as the gear (a gear fixed to it at B, the planet at
+    C): relative to the arm nothing turns, so the planet turns with the coupler (kd + kb =
+    1: the tabular method's row 'all locked')."""
+    sol = solve(parse_scene(COUPLER_ARM))
+    assert sol.W["C-P"] == pytest.approx(sol.W["BC"], rel=1e-13)
+    assert sol.Al["C-P"] == pytest.approx(sol.Al["BC"], rel=1e-13)
+
+
+@pytest.mark.parametrize("given,code", [
+    # the planet's turning relative to the arm: -(r_s/r_p)(omega_s - omega_arm) = 1.5 x
+    # (2 pi + 4 pi) = 28.27 rad/s ccw (the row 'all locked' left out)
+    ("28.27 rad/s ccw", "arm_row_left_out"),
+    # the ratio of fixed centres: -(r_s/r_p) omega_s = 1.5 x 2 pi = 9.425 rad/s ccw
+    ("9.425 rad/s ccw", "arm_taken_fixed"),
+])
+def test_check_names_the_tabular_methods_slips(given, code):
+    """A differential's planet answered with a classic slip of the tabular method is
+    diagnosed as that slip (the values by hand, above)."""
+    from polygon_method.check import check_answers
+    text = (WORKED / "differential_epicyclic.toml").read_text(encoding="utf-8")
+    text = text.replace('omega_AP = "40.84 rad/s ccw"', f'omega_AP = "{given}"')
+    assert given in text
+    verdicts = check_answers(solve(parse_scene(text)))
+    v = next(v for v in verdicts if v.key == "omega_AP")
+    assert not v.ok and v.mistake == code, (v.mistake, v.diagnosis)
+
+
+def test_a_gear_as_the_crank_drives_the_gears_written_on_it(tmp_path):
+    """"Gear 2 turns at 300 rpm ccw and drives gears 1 and 3": gear 2 is the crank and the
+    others are wheels on it (omega_1 = -(r2/r1) omega_2 = -1.5 omega_2, omega_3 = -(r2/r3)
+    omega_2 = -0.75 omega_2); the mesh written the other way round is refused, saying how
+    to write it."""
+    text = (TEXTBOOK / "rolling_gear_train.toml").read_text(encoding="utf-8")
+    turned = text.replace('crank = "O1-A"', 'crank = "O2-B"').replace("angle = 20\n",
+                                                                    "angle = 90\n")
+    out = _run(turned, tmp_path, "solve")
+    lines = out.stderr.strip().splitlines()
+    assert out.returncode == 2 and len(lines) == 1, out.stderr
+    assert '"O1-A" = { on = "O2-B" }' in lines[0] and "[rolling] O2-B" in lines[0]
+    good = turned.replace('"O2-B" = { on = "O1-A", angle = 90 }',
+                          '"O1-A" = { on = "O2-B", angle = 200 }')
+    sol = solve(parse_scene(good))
+    w2 = 300 * 2 * math.pi / 60
+    assert sol.W["O2-B"] == pytest.approx(w2, rel=1e-13)
+    assert sol.W["O1-A"] == pytest.approx(-1.5 * w2, rel=1e-13)
+    assert sol.W["O3-C"] == pytest.approx(-0.75 * w2, rel=1e-13)

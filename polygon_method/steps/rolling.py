@@ -266,7 +266,11 @@ class RollingWheel(Step):
             raise SceneError(f"wheel {self.wheel} rolls on a line: variants of such a scene are "
                              "not supported yet", key=f"[rolling] {self.wheel}",
                              file=scene.file)
-        return _params(scene, bodies, pr, kd_rate=self.kd_rate, kb_rate=self.kb_rate,
+        two = scene.input.second
+        kb_rate = self.kb_rate
+        if two is not None and self.base == scene.link(two.crank).key:
+            kb_rate = two.omega / scene.input.omega  # the ratio of this scene's speeds
+        return _params(scene, bodies, pr, kd_rate=self.kd_rate, kb_rate=kb_rate,
                        base_free=self.base_free)
 
     def drawn(self, prm, pencil, P):
@@ -482,6 +486,28 @@ class RollingWheel(Step):
         vx, vy, ax, ay = rim_motion(rx, ry, sol.W[self.wheel], sol.Al[self.wheel],
                                     *sol.V[self.centre], *sol.A[self.centre])
         return I, (vx, vy), (ax, ay)
+
+    def ratio_slips(self, sol):
+        """The tabular method's classic slips for a wheel on a circle or a gear whose arm
+        turns: (value of omega, code, words) for the turning relative to the arm given as
+        the wheel's own (the row 'all locked' left out) and, on a gear, the ratio of fixed
+        centres (the arm's motion left out)."""
+        if self.on == "line":
+            return ()
+        (cx, cy), (ox, oy) = sol.P[self.centre], sol.P[self.base_centre]
+        (vcx, vcy), (vox, voy) = sol.V[self.centre], sol.V[self.base_centre]
+        dx, dy = cx - ox, cy - oy
+        wd = (dx * (vcy - voy) - dy * (vcx - vox)) / (dx * dx + dy * dy)
+        if wd == 0.0:
+            return ()
+        w = sol.W[self.wheel]
+        out = [(w - wd, "arm_row_left_out", "the turning relative to the arm given as the "
+                "wheel's own: the tabular method's row 'all locked' (+ the arm's turn) left "
+                "out")]
+        if self.base:
+            out.append((self.dims[4] * sol.W[self.base], "arm_taken_fixed",
+                        "the gear ratio of fixed centres used: the arm's motion left out"))
+        return tuple(out)
 
     def shapes(self, P):
         """The wheel's pitch circle, what it rolls on (a circle, or the ground line hatched
