@@ -609,7 +609,7 @@ class RollingWheel(Step):
                     f"{math.hypot(*sol.V[C]):.4g} / {r:.4g} = {sense}")
         O = self.base_centre
         moving = math.hypot(*sol.V[O]) > 0.0
-        return (f"no slip: the wheel's point at the pitch point I moves as the gear's, v_I = "
+        return ("no slip: the wheel's point at the pitch point I moves as the gear's, v_I = "
                 + (f"v_{O} + " if moving else "")
                 + f"omega_{self.base} x {O}I = {math.hypot(*vI):.4g} m/s; "
                 f"omega_{W} = (v_I - v_{C}) / {C}I, perpendicular to {C}I, = {sense}")
