@@ -129,12 +129,17 @@ def worked(quick, drawings, peer_fns):
     cranked = []
     for f in files:  # the other methods of the chart (hand drawing, peers) take a crank
         try:
-            block = load_scene(f).input.block
+            sc = load_scene(f)
+            block = sc.input.block
+            geared = bool(sc.rolling) or sc.input.second is not None
         except PolygonMethodError:
-            block = None  # (said below, where it is skipped)
+            block, geared = None, False  # (said below, where it is skipped)
         if block is not None:
             print(f"skip {Path(f).name}: driven by block {block}, and the other methods "
                   "take a crank", file=sys.stderr)
+        elif geared:
+            print(f"skip {Path(f).name}: gears or a second crank, which the other methods "
+                  "do not draw", file=sys.stderr)
         else:
             cranked.append(f)
     files = cranked

@@ -112,7 +112,8 @@ def warm(text, n=4000, repeat=7):
 def step_costs(repeat=7, number=2000):
     """The warm one-instant cost of each rolling step against a dyad's, each step's bound
     closure timed alone (best of ``repeat``): the seed four-bar's dyad, the planet on a fixed
-    sun and the wheel on the ground of the textbook corpus."""
+    sun and the wheel on the ground of the textbook corpus, a planet on a rocker and Watt's
+    sun and planet (the wheel's angle followed from its arm and its gear)."""
     import timeit
     from pathlib import Path
     from polygon_method import load_scene
@@ -131,9 +132,13 @@ def step_costs(repeat=7, number=2000):
     d = cost(parse_scene(CASES["four-bar"]), "dyad")
     planet = load_scene(here / "rolling_planet_fixed_sun.toml")
     wheel = load_scene(here / "rolling_wheel_on_ground.toml")
+    rocker = load_scene(here / "rolling_planet_on_rocker.toml")
+    watt = load_scene(here / "rolling_sun_and_planet.toml")
     return {"dyad": d, "planet's rolling step": cost(planet, "rolling"),
             "wheel's rolling step": cost(wheel, "rolling"),
-            "wheel's centre on the ground": cost(wheel, "wheel centre")}
+            "wheel's centre on the ground": cost(wheel, "wheel centre"),
+            "planet on a rocker (its arm's angle followed)": cost(rocker, "rolling"),
+            "sun driven by a planet on the rod (Watt)": cost(watt, "rolling")}
 
 
 def main():

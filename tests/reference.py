@@ -15,10 +15,12 @@ the coordinates ``q`` (x, y of every non-ground point):
 * a wheel CX of radius r rolling without slip ([rolling]): ``X - C - l (cos phi, sin phi) = 0``
   with, on a fixed line (T a point of it, m its normal towards the wheel, t = perp(m)),
   ``phi = phi0 + ((C - T).t - s0) / r`` and the centre ``(C - T).m - r = 0``; on a circle
-  or a gear, ``phi = phi0 + K (th - th0)``, K the wheel's turns per turn of the crank from the
-  gear ratio: ``K = (1 + e R/r) K_arm - e (R/r) K_base`` (e = +1 outside, -1 inside; K_arm 1
-  when the crank carries the centre, K_base 1 for the crank, the K of a wheel for a wheel).
-  Evaluated at the scene's own angle, where phi = phi0 (s0 is C's place there).
+  or a gear (centred at O, fixed or moving), ``phi = phi0 + kd (psi - psi0) + kb (beta -
+  beta0)``: no slip at the pitch point relative to the line of centres, psi the direction
+  O -> C and beta the gear's (its centre to its link's other point), both read from the
+  points, ``kd = 1 + e R/r``, ``kb = -e R/r`` (e = +1 outside, -1 inside; R from the centre
+  distance). Evaluated at the scene's own angle, where phi = phi0 (s0 is C's place there);
+  it has no explicit time, and its gamma is its second derivative along q' (mpmath.diff).
 * a rack R on a fixed path (T, u) meshing with a pinion about O:  ``(R - T).u - k K (th - th0)
   = 0`` with k = -(T - O).perp(u) (the pinion's point at the pitch point moves as the rack)
   and K the pinion's turns per turn of the crank (with the path's equation above).
@@ -158,11 +160,14 @@ def _equations(scene):
             for c in (0, 1):
                 eqs.append(("rim", (pr.rim, pr.centre, ell, pr.angle, ("line", T, m, r), c)))
             continue
-        O = _v(scene.ground[pr.base_centre])
         e = -1 if pr.inside else 1
+        base = None
+        if pr.base is not None:  # the gear's centre, then its other point: its angle
+            bl = scene.link(pr.base)
+            base = (pr.base_centre, bl.q if bl.p == pr.base_centre else bl.p)
         for c in (0, 1):
             eqs.append(("rim", (pr.rim, pr.centre, ell, pr.angle,
-                                ("circle", O, e, r, pr, rates), c)))
+                                ("circle", pr.base_centre, e, r, pr, base), c)))
     return eqs
 
 
@@ -221,8 +226,10 @@ def _wheel_rate(scene, pr, rates, P):
     return K, R
 
 
-def _eval(kind, d, P, th):
-    """Value and gradient terms of one equation at positions P and crank angle th."""
+def _eval(kind, d, P, th, moving=False):
+    """Value and gradient terms of one equation at positions P and crank angle th
+    (``moving``: the gradient along a motion, a wheel's angle following its arm and gear;
+    else at the instant, where it is phi0)."""
     if kind == "link":
         p, q, L = d
         r = _sub(P[p], P[q])
@@ -274,8 +281,11 @@ def _eval(kind, d, P, th):
         val = P[x][c] - P[cen][c] - ell * e[c]
         pe = _perp(e)[c]  # d e_c / d phi
         g = (mpf(1), mpf(0)) if c == 0 else (mpf(0), mpf(1))
-        return val, [(x, g[0], g[1]), (cen, -g[0] - ell * pe * dphi[0],
-                                       -g[1] - ell * pe * dphi[1])]
+        out = [(x, g[0], g[1]), (cen, -g[0] - ell * pe * dphi[0], -g[1] - ell * pe * dphi[1])]
+        if moving and how[0] == "circle":  # phi = phi0 + kd (psi - psi0) + kb (beta - beta0)
+            for name, gx, gy in _rim_turning(P, cen, how):
+                out.append((name, -ell * pe * gx, -ell * pe * gy))
+        return val, out
     raise ValueError(kind)
 
 
@@ -286,19 +296,69 @@ def _rim_angle(P, cen, phi0, how):
         t = _perp(m)
         phi = phi0 if phi0 is not None else mpmath.atan2(-m[1], -m[0])
         return mpf(phi), (t[0] / r, t[1] / r)
-    _, O, e, r, pr, rates = how
+    _, O, e, r, pr, base = how
     if phi0 is None:
-        d = _sub(P[cen], O)
+        d = _sub(P[cen], P[O])
         phi0 = mpmath.atan2(-e * d[1], -e * d[0])
     return mpf(phi0), (mpf(0), mpf(0))
+
+
+def _rim_ratios(P, cen, how):
+    """(kd, kb) of a wheel on a circle or gear: its turning per turn of the line of centres
+    and per turn of the gear, from no slip at the pitch point relative to the line of
+    centres, ``(omega - omega_d) r = -e (omega_B - omega_d) R``; R from the centre
+    distance."""
+    _, O, e, r, pr, base = how
+    d = _sub(P[cen], P[O])
+    R = mpmath.sqrt(_dot(d, d)) - e * r
+    return 1 + e * R / r, -e * R / r
+
+
+def _angle_gradient(P, a, b):
+    """d atan2(b - a) / d b (and minus it for a): perp(b - a) / |b - a|^2."""
+    d = _sub(P[b], P[a])
+    n2 = _dot(d, d)
+    return (-d[1] / n2, d[0] / n2)
+
+
+def _rim_turning(P, cen, how):
+    """Gradient terms of the wheel's angle along a motion: kd d(psi) + kb d(beta), psi the
+    direction O -> C, beta the gear's (its centre to its other point)."""
+    _, O, e, r, pr, base = how
+    kd, kb = _rim_ratios(P, cen, how)
+    gx, gy = _angle_gradient(P, O, cen)
+    out = [(cen, kd * gx, kd * gy), (O, -kd * gx, -kd * gy)]
+    if base is not None:
+        hx, hy = _angle_gradient(P, base[0], base[1])
+        out += [(base[1], kb * hx, kb * hy), (base[0], -kb * hx, -kb * hy)]
+    return out
+
+
+def _rim_value_along(P, V, d, s):
+    """The rim equation's value at positions P + s V, the wheel's angle following the
+    line of centres and the gear from their directions in P (the motion's second
+    derivative of this at s = 0 is the equation's gamma)."""
+    x, cen, ell, phi0, how, c = d
+    _, O, e, r, pr, base = how
+    Q = {n: (P[n][0] + s * V[n][0], P[n][1] + s * V[n][1]) for n in P}
+    kd, kb = _rim_ratios(P, cen, how)
+
+    def turn(a, b):  # the turn of direction a -> b from its direction in P
+        d0, d1 = _sub(P[b], P[a]), _sub(Q[b], Q[a])
+        return mpmath.atan2(_cross(d0, d1), _dot(d0, d1))
+    phi, _ = _rim_angle(P, cen, phi0, how)
+    phi = phi + kd * turn(O, cen) + (kb * turn(*base) if base is not None else 0)
+    ec = mpmath.cos(phi) if c == 0 else mpmath.sin(phi)
+    return Q[x][c] - Q[cen][c] - ell * ec
 
 
 def _unknowns(scene):
     return [n for n in scene.point_names if n not in scene.ground]
 
 
-def _system(scene, P, th):
-    """Residual vector and Jacobian (mpmath) at positions P (dict name -> mpf pair)."""
+def _system(scene, P, th, moving=False):
+    """Residual vector and Jacobian (mpmath) at positions P (dict name -> mpf pair);
+    ``moving``: the Jacobian of the motion (see :func:`_eval`)."""
     names = _unknowns(scene)
     col = {n: i for i, n in enumerate(names)}
     eqs = _equations(scene)
@@ -307,7 +367,7 @@ def _system(scene, P, th):
     F = mpmath.matrix(len(eqs), 1)
     J = mpmath.matrix(len(eqs), 2 * len(names))
     for i, (kind, d) in enumerate(eqs):
-        val, grad = _eval(kind, d, P, th)
+        val, grad = _eval(kind, d, P, th, moving)
         F[i] = val
         for name, gx, gy in grad:
             if name in col:
@@ -361,13 +421,16 @@ def reference_solution(scene, guess_positions):
     inp = scene.input
     th, w, al = mpf(inp.angle), mpf(inp.omega), mpf(inp.alpha)
     P, res = reference_positions(scene, guess_positions, th)
-    _, J, eqs, names = _system(scene, P, th)
+    _, J, eqs, names = _system(scene, P, th, moving=True)
     n = len(eqs)
 
-    rates = {inp.crank: mpf(1)}
+    rates = {inp.crank: mpf(1)}  # a rack's pinion: a gear at a fixed ratio of the crank
     for pr in getattr(scene, "rolling", ()):  # in the scene's order: a gear before its mate
         if pr.on not in ("line", "rack"):
-            _wheel_rate(scene, pr, rates, P)
+            try:
+                _wheel_rate(scene, pr, rates, P)
+            except KeyError:  # its gear turns as a linkage makes it: no rack on it
+                pass
     ft = mpmath.matrix(n, 1)
     for i, (kind, d) in enumerate(eqs):
         if kind == "crank":
@@ -380,10 +443,6 @@ def reference_solution(scene, guess_positions):
             ft[i] = -w
         elif kind == "rack":
             ft[i] = -d[3] * rates[d[4]] * w
-        elif kind == "rim" and d[4][0] == "circle":
-            x, cen, ell, _, how, c = d
-            e = _unit(_sub(P[x], P[cen]))
-            ft[i] = -ell * _perp(e)[c] * rates[how[4].wheel] * w
     qd = mpmath.lu_solve(J, -ft)
     V = {g: ZERO2 for g in scene.ground}
     V.update({nm: (qd[2 * i], qd[2 * i + 1]) for i, nm in enumerate(names)})
@@ -414,10 +473,9 @@ def reference_solution(scene, guess_positions):
             if how[0] == "line":
                 t = _perp(how[2])
                 dphi, phitt = _dot(V[cen], t) / how[3], 0
-            else:
-                K = rates[how[4].wheel]
-                dphi, phitt = K * w, K * al
-            gamma[i] = ell * dphi * dphi * e[c] - ell * _perp(e)[c] * phitt
+                gamma[i] = ell * dphi * dphi * e[c] - ell * _perp(e)[c] * phitt
+            else:  # no explicit time: the second derivative along the motion
+                gamma[i] = mpmath.diff(lambda s, d=d: _rim_value_along(P, V, d, s), 0, 2)
     qdd = mpmath.lu_solve(J, -gamma)
     A = {g: ZERO2 for g in scene.ground}
     A.update({nm: (qdd[2 * i], qdd[2 * i + 1]) for i, nm in enumerate(names)})

@@ -188,7 +188,7 @@ speed = "20 rad/s cw"
     ('{ on = "horizontal", through = "X" }', "not a ground point"),
     ('{ on = "horizontal", through = "G", radus = 5 }', "unknown key 'radus'"),
     ('{ on = "horizontal", through = "G", side = "left" }', "horizontal line has an above"),
-    ('{ on = "AC" }', "must turn about a fixed centre"),
+    ('{ on = "CA" }', "have one centre"),  # a gear on a moving link: centred at C
     ('"horizontal"', "a rolling wheel is a table"),
 ])
 def test_bad_rolling_input_gets_one_clear_line(spec, words, tmp_path):

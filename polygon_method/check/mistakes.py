@@ -113,6 +113,8 @@ class _Diagnoser:
             out += self.relative(ans, signed)
         if kind in ("omega", "alpha"):
             out += self.per_length(ans)
+        if kind == "omega":
+            out += self.gear_ratio(ans, signed)
         if kind in ("a", "aI"):
             out += self.contact_at_rest(ans)
         if kind in ("a", "as"):
@@ -305,6 +307,17 @@ class _Diagnoser:
             again("the inertia force's offset h = I alpha / (m a_G) on the wrong side of G",
                   "offset_wrong_side",
                   masses=tuple(replace(m, inertia=-m.inertia) for m in sc.masses))
+        return out
+
+    def gear_ratio(self, ans, signed):
+        """A planet's omega by the tabular method, its classic slips (the step says them)."""
+        key = self.sc.link("-".join(ans.names)).key
+        out = []
+        for st in self.sol.plan.steps:
+            slips_of = getattr(st, "ratio_slips", None)
+            if slips_of is not None and key in st.links:
+                out += [_Candidate(self.cmp(v, signed), code, words)
+                        for v, code, words in slips_of(self.sol)]
         return out
 
     def contact_at_rest(self, ans):

@@ -126,6 +126,13 @@ class _Input:
                 raise self.error(f"[input] has no {k}: add e.g. {example}", "input")
         link, pts = self.find_link(spec["crank"], "input", "crank")
         on_ground = [p for p in pts if p in ground]
+        rolling = self.raw.get("rolling")
+        if not on_ground and isinstance(rolling, dict) and any(
+                set(split_name(k)) == set(pts) for k in rolling):
+            raise self.error(f"{link.key} is a rolling wheel, not a crank: a wheel as the only "
+                             "driver is not supported yet; with a crank in the chain, give "
+                             f"the wheel's motion as omega_{link.key} (the crank's speed is "
+                             "then found)", "input", "crank")
         if not on_ground:
             raise self.error(f"crank {link.key} is not pinned to the ground: neither "
                              f"{pts[0]} nor {pts[1]} is in [ground]", "input", "crank")

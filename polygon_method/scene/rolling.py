@@ -8,6 +8,9 @@ wheel); its value says what the wheel rolls on::
     "A-P" = { on = "O" }                            # outside a fixed circle about O (a sun)
     "A-P" = { on = "O", inside = true }             # inside a fixed ring about O
     "O2-Q" = { on = "O1-A" }                        # a gear meshing with gear O1-A
+    "O-S" = { on = "C-B", on_radius = 30 }          # a gear about O driven by a gear fixed
+                                                    # to link CB, centred at C (Watt's sun
+                                                    # and planet)
 
 ``radius`` is the wheel's rolling (pitch) radius (default: its link's length, the point
 on the pitch circle); ``on_radius`` the circle's, when the problem states it (it must then
@@ -174,12 +177,19 @@ def read_rolling(rd, ground, sliders, points) -> list:
                            "rolling", key)
         base, bpts = rd.find_link(on, "rolling", key)
         fixed = [p for p in bpts if p in ground]
-        if len(fixed) != 1:
-            raise rd.error(f"the gear {base.key} must turn about a fixed centre: one of its "
-                           "ends a ground point", "rolling", key)
+        if len(fixed) == 2:
+            raise rd.error(f"the gear {base.key} is fixed (both its ends are ground points): "
+                           f"write on = \"{fixed[0]}\" for a fixed circle about {fixed[0]}",
+                           "rolling", key)
         if base.key == link.key:
             raise rd.error("a wheel cannot roll on itself", "rolling", key)
+        # a gear about its ground end; else fixed to a moving link, centred at its first
+        # point as written (a planet fixed to a coupler: on = "C-B", centre C)
+        gc = fixed[0] if fixed else bpts[0]
+        if gc == centre:
+            raise rd.error(f"the gear {base.key} and the wheel {link.key} have one centre "
+                           f"{centre}: gears in mesh have two", "rolling", key)
         out.append(RollingPair(link.key, centre, rim, radius, "gear", f"the gear {base.key}",
-                               base=base.key, base_centre=fixed[0], inside=inside,
+                               base=base.key, base_centre=gc, inside=inside,
                                base_radius=base_radius, angle=angle))
     return out

@@ -536,8 +536,39 @@ class _Compiler:
         return f"[{in_units(x, self.unit)}, {in_units(y, self.unit)}]"
 
     # ----- what is left over
+    def _rolling_used(self):
+        """Every rolling pair must set its wheel moving: a pair whose point another step
+        has placed (a driven crank, a dyad) is one constraint too many, never ignored."""
+        sc = self.scene
+        for pr in sc.rolling:
+            if any(pr.rim in st.finds and st.kind in ("rolling", "rack") for st in self.steps):
+                continue
+            by = next((st for st in self.steps if pr.rim in st.finds), None)
+            if by is None:
+                continue  # not found at all: the mobility words below say why
+            m = gruebler(sc)
+            mob = f"mobility {m} (Gruebler: 3(n-1) - 2j - h)"
+            if sc.input.second is not None and by.kind == "second crank":
+                raise MobilityError(
+                    f"{mob}: two inputs over-determine the chain: the second crank "
+                    f"{sc.input.second.crank} is driven by its mesh ([rolling] {pr.wheel}) as "
+                    "well: remove [input.second] (or the mesh)", file=sc.file,
+                    key="[input.second] crank")
+            if by.kind == "crank" and pr.base is not None and pr.wheel in by.links:
+                base = sc.link(pr.base)
+                raise MobilityError(
+                    f"the gear {pr.wheel} is the crank, so it drives the mesh: write the "
+                    f"driven gear as the wheel, \"{base.key}\" = {{ on = \"{pr.wheel}\" }} "
+                    f"(centre first: {pr.base_centre})", file=sc.file,
+                    key=f"[rolling] {pr.wheel}")
+            raise MobilityError(
+                f"{mob}: over-constrained: {pr.rim} is placed by step {by.title} and would "
+                f"also be set by the rolling of {pr.wheel}: one constraint too many (remove "
+                "a link or the rolling pair)", file=sc.file, key=f"[rolling] {pr.wheel}")
+
     def finish(self):
         sc = self.scene
+        self._rolling_used()
         if len(self.P) == len(self.names) and len(self.used_links) == len(sc.links) and \
                 len(self.used_sliders) == len(sc.sliders):
             return  # every point found, every link and slider used

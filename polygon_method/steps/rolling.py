@@ -45,6 +45,9 @@ __all__ = ["RollingWheel", "line_rates", "circle_rates", "rim_motion", "recognis
 
 #: how far (relative to the radii) a wheel's centre may leave its line or pitch circle
 _GAP = 1e-9
+#: how far an arm or a gear turning as a linkage makes it may turn from the stated instant
+#: before its angle is refused (a turn of nearly pi could be one the other way)
+_HALF = 0.95 * math.pi
 
 
 def line_rates(tx, ty, r, vx, vy, ax, ay):
@@ -75,55 +78,77 @@ def _pair(scene, wheel):
     return next(r for r in scene.rolling if r.wheel == wheel)
 
 
+def _rate(g, key):
+    """The turning of link ``key`` per radian of the crank where it is a fixed ratio (the
+    crank 1, a second crank the ratio of the speeds, a gear at a fixed ratio), else None
+    (it turns as a linkage makes it: its angle is read from its points)."""
+    inp = g.scene.input
+    if inp.block is None and key == inp.crank:
+        return 1.0
+    return next((getattr(st, "theta_rate", None) for st in g.steps if key in st.links), None)
+
+
+def _arm_rate(g, C, O):
+    """The turning per radian of the crank of the line of centres O -> C: 0 where both are
+    fixed, a link's fixed ratio where one is fixed and the other the end of a link turning
+    about it (the arm), else None (read from the two points)."""
+    sc = g.scene
+    if C in sc.ground and O in sc.ground:
+        return 0.0
+    for fixed, moving in ((O, C), (C, O)):
+        if fixed in sc.ground:
+            for lk in sc.links:
+                if {lk.p, lk.q} == {fixed, moving} and lk.key in g.used_links:
+                    return _rate(g, lk.key)
+    return None
+
+
 def recognise(g, name):
-    """The point of a rolling wheel, once its centre (and the gear it meshes with) is
-    known."""
+    """The point of a rolling wheel, once its centre (and the gear it meshes with, and that
+    gear's centre) is known: its arm and the gear may turn as any linkage makes them."""
     sc = g.scene
     pr = sc.rolling_of(name)
     if pr is None or pr.on == "rack" or pr.centre not in g.P or pr.wheel in g.used_links:
         return None
-    inp = sc.input
-    where = f"[rolling] {pr.wheel}"
     if pr.on == "line":
         (cx, cy), (tx, ty), (mx, my) = g.P[pr.centre], pr.through, pr.m
         s0 = (cx - tx) * -my + (cy - ty) * mx
         return RollingWheel(g.next_index, pr.wheel, pr.centre, name, pr.on, pr.label,
                             _params(sc, g.bodies, pr, s0=s0), unit=g.unit, uname=g.uname)
+    O = pr.base_centre
+    if O not in g.P:
+        return None
+    base_free = None
     if pr.on == "gear":
         base = sc.link(pr.base)
         if not (g.known_link(base) and base.key in g.used_links):
             return None
-        if base.key == inp.crank:
-            kb_rate = 1.0
-        else:
-            kb_rate = next((getattr(st, "theta_rate", None) for st in g.steps
-                            if base.key in st.links), None)
-            if kb_rate is None:
-                raise SceneError(f"the gear {base.key} that {pr.wheel} meshes with turns "
-                                 "other than at a fixed ratio to the crank: not supported yet "
-                                 "(a gear on the crank, or on a gear that meshes with it)",
-                                 key=where, file=sc.file)
+        kb_rate = _rate(g, base.key)
+        if kb_rate is None:  # the gear turns as a linkage makes it: read from its points
+            base_free = (O, base.other(O))
     else:
         kb_rate = 0.0
-    O = pr.base_centre
-    if pr.centre in sc.ground:
-        kd_rate = 0.0
-    elif pr.centre == inp.tip and O == inp.pivot:
-        kd_rate = 1.0  # the crank is the arm carrying the wheel
-    else:
-        raise SceneError(f"the centre {pr.centre} of wheel {pr.wheel} must be a fixed point or "
-                         f"the tip of the crank turning about {O} (the arm): another carrier is "
-                         "not supported yet", key=where, file=sc.file)
+    kd_rate = _arm_rate(g, pr.centre, O)
     return RollingWheel(g.next_index, pr.wheel, pr.centre, name, pr.on, pr.label,
-                        _params(sc, g.bodies, pr, kd_rate=kd_rate, kb_rate=kb_rate),
-                        base=pr.base, base_centre=O, inside=pr.inside, kd_rate=kd_rate,
-                        kb_rate=kb_rate, unit=g.unit, uname=g.uname)
+                        _params(sc, g.bodies, pr, kd_rate=kd_rate, kb_rate=kb_rate, P=g.P,
+                                base_free=base_free),
+                        base=pr.base, base_centre=O, inside=pr.inside,
+                        kd_rate=kd_rate, kb_rate=kb_rate, base_free=base_free,
+                        unit=g.unit, uname=g.uname)
 
 
-def _params(scene, bodies, pr, *, s0=None, kd_rate=0.0, kb_rate=0.0):
+def _angle(x, y):
+    return math.atan2(y, x)
+
+
+def _params(scene, bodies, pr, *, s0=None, kd_rate=0.0, kb_rate=0.0, P=None, base_free=None):
     """The step's dimensions, read from ``scene``: for a line (l, r, tx, ty, mx, my, phi0,
-    s0); for a circle (l, r, R, kd, kb, phi0, theta0, K, ox, oy), K = kd kd_rate + kb kb_rate
-    the wheel's turning per radian of the crank."""
+    s0); for a circle (l, r, R, kd, kb, phi0, theta0, K, ox, oy, psi0, beta0), K the
+    wheel's turning per radian of the crank due to what turns at a fixed ratio of it
+    (``kd kd_rate + kb kb_rate``, a rate None counting 0: read from the points instead),
+    psi0 the line of centres' angle and beta0 the gear's (its centre to its other point)
+    at the stated instant. ``P``: the positions there (the compiler's); without them the
+    centre is a fixed point or the crank's tip."""
     ell = bodies.distance(pr.wheel, pr.centre, pr.rim)
     r = pr.radius
     if pr.on == "line":
@@ -131,16 +156,24 @@ def _params(scene, bodies, pr, *, s0=None, kd_rate=0.0, kb_rate=0.0):
         phi0 = pr.angle if pr.angle is not None else math.atan2(-my, -mx)
         return (ell, r, tx, ty, mx, my, phi0, s0)
     inp = scene.input
-    O = scene.ground[pr.base_centre]
-    if pr.centre in scene.ground:
-        C0 = scene.ground[pr.centre]
-    else:  # the crank's tip at the stated angle
-        L = scene.link(inp.crank).length
-        C0 = (O[0] + L * math.cos(inp.angle), O[1] + L * math.sin(inp.angle))
+    where = f"[rolling] {pr.wheel}"
+    if P is not None:
+        C0, O = P[pr.centre], P[pr.base_centre]
+    elif kd_rate is None or base_free is not None or pr.base_centre not in scene.ground or (
+            pr.centre not in scene.ground and pr.centre != inp.tip):
+        raise SceneError(f"the wheel {pr.wheel}'s arm or gear turns as a linkage makes it: "
+                         "variants of such a scene are not supported yet", key=where,
+                         file=scene.file)
+    else:
+        O = scene.ground[pr.base_centre]
+        if pr.centre in scene.ground:
+            C0 = scene.ground[pr.centre]
+        else:  # the crank's tip at the stated angle
+            L = scene.link(inp.crank).length
+            C0 = (O[0] + L * math.cos(inp.angle), O[1] + L * math.sin(inp.angle))
     dist = math.dist(C0, O)
     e = -1.0 if pr.inside else 1.0
     R = (dist - r) if e > 0 else (dist + r)
-    where = f"[rolling] {pr.wheel}"
     if R <= 0 or dist == 0:
         raise SceneError(f"the wheel {pr.wheel} (radius {in_units(r, scene.length_unit)} "
                          f"{scene.units}) cannot roll {'outside' if e > 0 else 'inside'} "
@@ -159,7 +192,13 @@ def _params(scene, bodies, pr, *, s0=None, kd_rate=0.0, kb_rate=0.0):
     kd, kb = 1.0 + e * R / r, -e * R / r
     dx, dy = C0[0] - O[0], C0[1] - O[1]
     phi0 = pr.angle if pr.angle is not None else math.atan2(-e * dy, -e * dx)
-    return (ell, r, R, kd, kb, phi0, inp.angle, kd * kd_rate + kb * kb_rate, O[0], O[1])
+    psi0 = _angle(dx, dy)
+    beta0 = 0.0
+    if base_free is not None:
+        (bx, by), (qx, qy) = P[base_free[0]], P[base_free[1]]
+        beta0 = _angle(qx - bx, qy - by)
+    K = kd * (kd_rate or 0.0) + kb * (kb_rate or 0.0)
+    return (ell, r, R, kd, kb, phi0, inp.angle, K, O[0], O[1], psi0, beta0)
 
 
 @dataclass(frozen=True)
@@ -176,8 +215,12 @@ class RollingWheel(Step):
     base: str | None = None
     base_centre: str | None = None
     inside: bool = False
-    kd_rate: float = 0.0  # the line of centres' turning per radian of the crank (0 or 1)
-    kb_rate: float = 0.0  # the base's turning per radian of the crank
+    kd_rate: float | None = 0.0  # the line of centres' turning per radian of the crank
+    kb_rate: float | None = 0.0  # the base's turning per radian of the crank
+    #: (the gear's centre, its other point) where the gear turns as a linkage makes it (its
+    #: angle read from them); the line of centres is read from the two centres where
+    #: ``kd_rate`` is None
+    base_free: tuple | None = None
     unit: float = 1e-3  # the scene's length unit (m), for messages
     uname: str = "mm"
 
@@ -186,7 +229,9 @@ class RollingWheel(Step):
     @property
     def theta_rate(self):
         """The wheel's turning per radian of the crank (a gear meshing with it reads it)."""
-        return None if self.on == "line" else self.dims[7]
+        if self.on == "line" or self.kd_rate is None or self.base_free is not None:
+            return None  # it turns as the linkage makes it
+        return self.dims[7]
 
     @property
     def finds(self):
@@ -198,7 +243,10 @@ class RollingWheel(Step):
 
     @property
     def needs(self):
-        return (self.centre,) + ((self.base_centre,) if self.on != "line" else ())
+        if self.on == "line":
+            return (self.centre,)
+        more = (self.base_free[1],) if self.base_free else ()
+        return (self.centre, self.base_centre) + more
 
     @property
     def needs_links(self):
@@ -218,7 +266,12 @@ class RollingWheel(Step):
             raise SceneError(f"wheel {self.wheel} rolls on a line: variants of such a scene are "
                              "not supported yet", key=f"[rolling] {self.wheel}",
                              file=scene.file)
-        return _params(scene, bodies, pr, kd_rate=self.kd_rate, kb_rate=self.kb_rate)
+        two = scene.input.second
+        kb_rate = self.kb_rate
+        if two is not None and self.base == scene.link(two.crank).key:
+            kb_rate = two.omega / scene.input.omega  # the ratio of this scene's speeds
+        return _params(scene, bodies, pr, kd_rate=self.kd_rate, kb_rate=kb_rate,
+                       base_free=self.base_free)
 
     def drawn(self, prm, pencil, P):
         return (prm[0] + pencil(),) + tuple(prm[1:])
@@ -230,31 +283,66 @@ class RollingWheel(Step):
         """The point at the compiler's instant (the scene's own): a centre off its line or
         pitch circle there is the scene's error, named by its [rolling] key."""
         cx, cy = P[self.centre]
-        phi = self._phi(cx, cy, prm, ctx)
-        g = self.gap(cx, cy, prm)
+        phi = self._phi(P, prm, ctx)
+        g = self.gap(P, prm)
         if not ctx.array and abs(g) > _GAP:
             raise SceneError(self._off_words(cx, cy, prm), key=f"[rolling] {self.wheel}")
         ell = prm[0]
         return cx + ell * ctx.cos(phi), cy + ell * ctx.sin(phi), 1.0
 
-    def _phi(self, cx, cy, prm, ctx):
+    def _phi(self, P, prm, ctx):
+        """The wheel's angle: on a line from its centre's place; on a circle or a gear
+        ``phi0 + K (theta - theta0)`` for what turns at a fixed ratio of the crank, plus
+        ``kd (psi - psi0)`` and ``kb (beta - beta0)`` for a line of centres and a gear that
+        turn as a linkage makes them (their angles read from their points: no more than
+        half a turn from the stated instant, else the position is refused, masked in a
+        sweep: the wheel's angle could not be followed)."""
+        cx, cy = P[self.centre]
         if self.on == "line":
             ell, r, tx, ty, mx, my, phi0, s0 = prm
             return phi0 + ((cx - tx) * -my + (cy - ty) * mx - s0) / r
-        return prm[5] + prm[7] * (ctx.theta - prm[6])
+        phi = prm[5] + prm[7] * (ctx.theta - prm[6])
+        if self.kd_rate is None:
+            ox, oy = P[self.base_centre]
+            phi = phi + prm[3] * self._turned(cx - ox, cy - oy, prm[10], ctx)
+        if self.base_free is not None:
+            (bx, by), (qx, qy) = P[self.base_free[0]], P[self.base_free[1]]
+            phi = phi + prm[4] * self._turned(qx - bx, qy - by, prm[11], ctx)
+        return phi
 
-    def gap(self, cx, cy, prm):
+    def _turned(self, dx, dy, a0, ctx):
+        """The turn of direction (dx, dy) from the angle a0, in (-pi, pi]; refused (masked)
+        beyond 0.95 pi, where it could not be told from a turn the other way."""
+        c, s_ = math.cos(a0), math.sin(a0)
+        x, y = c * dx + s_ * dy, c * dy - s_ * dx
+        if ctx.array:
+            t = ctx.np.arctan2(y, x)
+            far = abs(t) > _HALF
+            if far is True or (far is not False and far.any()):
+                ctx.fail(self, far)
+            return t
+        t = math.atan2(y, x)
+        if abs(t) > _HALF:
+            raise AssemblyError(f"the arm or the gear of wheel {self.wheel} has turned "
+                                f"{math.degrees(abs(t)):.4g} deg from the stated instant: "
+                                "its angle cannot be followed past half a turn (solve the "
+                                "scene at that instant)", step=self.label)
+        return t
+
+    def gap(self, P, prm):
         """How far the centre is off its line (or its pitch circle), over the radii."""
+        cx, cy = P[self.centre]
         if self.on == "line":
             ell, r, tx, ty, mx, my = prm[:6]
             return ((cx - tx) * mx + (cy - ty) * my - r) / r
         ell, r, R = prm[:3]
-        dx, dy = cx - prm[8], cy - prm[9]
+        ox, oy = P[self.base_centre]
+        dx, dy = cx - ox, cy - oy
         e = -1.0 if self.inside else 1.0
         return ((dx * dx + dy * dy) ** 0.5 - (R + e * r)) / (R + r)
 
-    def _check(self, cx, cy, prm, ctx):
-        g = self.gap(cx, cy, prm)
+    def _check(self, P, prm, ctx):
+        g = self.gap(P, prm)
         if ctx is None:
             return
         if ctx.array:
@@ -279,8 +367,8 @@ class RollingWheel(Step):
         def position(m):
             P, ctx = m.P, m.ctx
             cx, cy = P[C]
-            step._check(cx, cy, prm, ctx)
-            phi = step._phi(cx, cy, prm, ctx)
+            step._check(P, prm, ctx)
+            phi = step._phi(P, prm, ctx)
             P[X] = (cx + ell * ctx.cos(phi), cy + ell * ctx.sin(phi))
             m.cond[i] = 1.0
 
@@ -328,8 +416,8 @@ class RollingWheel(Step):
             def instant(m):
                 P, V, A = m.P, m.V, m.A
                 cx, cy = P[C]
-                step._check(cx, cy, prm, m.ctx)
-                phi = step._phi(cx, cy, prm, m.ctx)
+                step._check(P, prm, m.ctx)
+                phi = step._phi(P, prm, m.ctx)
                 x, y = cx + ell * cos(phi), cy + ell * sin(phi)
                 P[X] = (x, y)
                 rx, ry = x - cx, y - cy  # as the phases read it back (the same bits)
@@ -342,14 +430,15 @@ class RollingWheel(Step):
                 V[X], A[X] = (vx, vy), (ax, ay)
             return instant
         kd, kb, phi0, th0, K = prm[3], prm[4], prm[5], prm[6], prm[7]
+        fixed = self.kd_rate is not None and self.base_free is None
 
         def instant(m):
             P, V, A = m.P, m.V, m.A
             cx, cy = P[C]
             ox, oy = P[O]
             ctx = m.ctx
-            step._check(cx, cy, prm, ctx)
-            phi = phi0 + K * (ctx.theta - th0)
+            step._check(P, prm, ctx)
+            phi = phi0 + K * (ctx.theta - th0) if fixed else step._phi(P, prm, ctx)
             x, y = cx + ell * cos(phi), cy + ell * sin(phi)
             P[X] = (x, y)
             rx, ry = x - cx, y - cy  # as the phases read it back (the same bits)
@@ -397,6 +486,28 @@ class RollingWheel(Step):
         vx, vy, ax, ay = rim_motion(rx, ry, sol.W[self.wheel], sol.Al[self.wheel],
                                     *sol.V[self.centre], *sol.A[self.centre])
         return I, (vx, vy), (ax, ay)
+
+    def ratio_slips(self, sol):
+        """The tabular method's classic slips for a wheel on a circle or a gear whose arm
+        turns: (value of omega, code, words) for the turning relative to the arm given as
+        the wheel's own (the row 'all locked' left out) and, on a gear, the ratio of fixed
+        centres (the arm's motion left out)."""
+        if self.on == "line":
+            return ()
+        (cx, cy), (ox, oy) = sol.P[self.centre], sol.P[self.base_centre]
+        (vcx, vcy), (vox, voy) = sol.V[self.centre], sol.V[self.base_centre]
+        dx, dy = cx - ox, cy - oy
+        wd = (dx * (vcy - voy) - dy * (vcx - vox)) / (dx * dx + dy * dy)
+        if wd == 0.0:
+            return ()
+        w = sol.W[self.wheel]
+        out = [(w - wd, "arm_row_left_out", "the turning relative to the arm given as the "
+                "wheel's own: the tabular method's row 'all locked' (+ the arm's turn) left "
+                "out")]
+        if self.base:
+            out.append((self.dims[4] * sol.W[self.base], "arm_taken_fixed",
+                        "the gear ratio of fixed centres used: the arm's motion left out"))
+        return tuple(out)
 
     def shapes(self, P):
         """The wheel's pitch circle, what it rolls on (a circle, or the ground line hatched
@@ -448,6 +559,10 @@ class RollingWheel(Step):
         return f"{self.label}: the wheel {self.wheel} is near leaving its contact ({c:.3g})"
 
     def limit_why(self):
+        if self.on != "line" and self.theta_rate is None:
+            return (f"the wheel {self.wheel} would leave {self.where}, or its arm or gear has "
+                    "turned half a turn from the stated instant: its angle is followed no "
+                    "further (solve the scene at a later instant to go on)")
         return f"the wheel {self.wheel} would leave {self.where}"
 
     def transmission(self):
@@ -471,9 +586,17 @@ class RollingWheel(Step):
     def position_words(self, L, which, angle_deg):
         r, ell = self.dims[1], self.dims[0]
         phi = math.degrees(self.dims[6] if self.on == "line" else self.dims[5])
-        how = ("the wheel turns 1/r rad for each unit its centre moves along the line"
-               if self.on == "line" else
-               f"the wheel turns {self.dims[7]:.4g} times the crank's angle, by the gear ratio")
+        if self.on == "line":
+            how = "the wheel turns 1/r rad for each unit its centre moves along the line"
+        elif self.theta_rate is not None:
+            how = f"the wheel turns {self.dims[7]:.4g} times the crank's angle, by the gear ratio"
+        else:
+            kd, kb = self.dims[3], self.dims[4]
+            how = ("no slip relative to the arm: the wheel turns "
+                   + (f"{kd:.4g} times the line of centres {self.base_centre}{self.centre}"
+                      if kd else "")
+                   + (" and " if kd and kb and self.base else "")
+                   + (f"{kb:.4g} times the gear {self.base}" if kb and self.base else ""))
         return (f"{self.rim}: the wheel {self.wheel} (radius {L(r)}) rolls without slipping on "
                 f"{self.where}; from {self.centre} draw {self.centre}{self.rim} = {L(ell)} at "
                 f"{phi:.4g} deg ({how})")
@@ -486,8 +609,11 @@ class RollingWheel(Step):
             return (f"no slip: the wheel's point at the contact I with {self.where} is at rest, "
                     f"so I is the wheel's instantaneous centre and omega_{W} = v_{C} / {C}I = "
                     f"{math.hypot(*sol.V[C]):.4g} / {r:.4g} = {sense}")
-        return (f"no slip: the wheel's point at the pitch point I moves as the gear's, v_I = "
-                f"omega_{self.base} x {self.base_centre}I = {math.hypot(*vI):.4g} m/s; "
+        O = self.base_centre
+        moving = math.hypot(*sol.V[O]) > 0.0
+        return ("no slip: the wheel's point at the pitch point I moves as the gear's, v_I = "
+                + (f"v_{O} + " if moving else "")
+                + f"omega_{self.base} x {O}I = {math.hypot(*vI):.4g} m/s; "
                 f"omega_{W} = (v_I - v_{C}) / {C}I, perpendicular to {C}I, = {sense}")
 
     def construction(self, sol, ph):

@@ -46,6 +46,11 @@ class SecondCrank(Crank):
         return f"second crank {self.link}"
 
     @property
+    def theta_rate(self):
+        """Its turning per radian of the first crank (a gear meshing with it reads it)."""
+        return self.omega / self.omega1 if self.omega1 else None
+
+    @property
     def params(self):
         return (self.length, self.angle, self.omega, self.alpha, self.angle1, self.omega1)
 

@@ -331,13 +331,26 @@ def _superposition(doc, sol):
         rows.append((p, _polar(a), _polar(b), _polar((a[0] + b[0], a[1] + b[1]))))
     doc.table(("point", f"v' ({inp.crank} alone)", f"v'' ({two.crank} alone)",
                "v = v' + v''"), rows)
+    doc.p("The angular velocities add in the same way (for gears, the tabular method: each "
+          "input alone, then the sum):")
+    rows = [(lk.key, _turn(first.W[lk.key]), _turn(second.W[lk.key]),
+             _turn(first.W[lk.key] + second.W[lk.key])) for lk in sc.links]
+    doc.table(("link", f"omega' ({inp.crank} alone)", f"omega'' ({two.crank} alone)",
+               "omega = omega' + omega''"), rows)
+
+
+def _turn(w) -> str:
+    if abs(w) <= 1e-12:
+        return "0"
+    return f"{fmt(abs(w))} rad/s {sense_word(w)}"
 
 
 def _polar(v) -> str:
     m = math.hypot(*v)
     if m <= 1e-12 * (1 + abs(v[0]) + abs(v[1])):
         return "0"
-    return f"{fmt(m)} m/s at {fmt(math.degrees(math.atan2(v[1], v[0])) % 360, 4)} deg"
+    ang = round(math.degrees(math.atan2(v[1], v[0])), 9) % 360  # no 1e-15 deg off an axis
+    return f"{fmt(m)} m/s at {fmt(ang, 4)} deg"
 
 
 def _vector_name(v) -> str:
