@@ -38,13 +38,12 @@ from dataclasses import dataclass
 
 from ..common.errors import AssemblyError, SceneError
 from ..common.numbers import in_units
+from .rolling_dims import GAP, arm_rate, pair_of, rate, wheel_params
 from .base import (Construction, Step, Vector, absolute, centripetal, image_label, pole_text,
                    relative, sub)
 
 __all__ = ["RollingWheel", "line_rates", "circle_rates", "rim_motion", "recognise"]
 
-#: how far (relative to the radii) a wheel's centre may leave its line or pitch circle
-_GAP = 1e-9
 #: how far an arm or a gear turning as a linkage makes it may turn from the stated instant
 #: before its angle is refused (a turn of nearly pi could be one the other way)
 _HALF = 0.95 * math.pi
@@ -74,35 +73,6 @@ def rim_motion(rx, ry, w, al, vcx, vcy, acx, acy):
     return (vcx - w * ry, vcy + w * rx, acx - k * rx - al * ry, acy - k * ry + al * rx)
 
 
-def _pair(scene, wheel):
-    return next(r for r in scene.rolling if r.wheel == wheel)
-
-
-def _rate(g, key):
-    """The turning of link ``key`` per radian of the crank where it is a fixed ratio (the
-    crank 1, a second crank the ratio of the speeds, a gear at a fixed ratio), else None
-    (it turns as a linkage makes it: its angle is read from its points)."""
-    inp = g.scene.input
-    if inp.block is None and key == inp.crank:
-        return 1.0
-    return next((getattr(st, "theta_rate", None) for st in g.steps if key in st.links), None)
-
-
-def _arm_rate(g, C, O):
-    """The turning per radian of the crank of the line of centres O -> C: 0 where both are
-    fixed, a link's fixed ratio where one is fixed and the other the end of a link turning
-    about it (the arm), else None (read from the two points)."""
-    sc = g.scene
-    if C in sc.ground and O in sc.ground:
-        return 0.0
-    for fixed, moving in ((O, C), (C, O)):
-        if fixed in sc.ground:
-            for lk in sc.links:
-                if {lk.p, lk.q} == {fixed, moving} and lk.key in g.used_links:
-                    return _rate(g, lk.key)
-    return None
-
-
 def recognise(g, name):
     """The point of a rolling wheel, once its centre (and the gear it meshes with, and that
     gear's centre) is known: its arm and the gear may turn as any linkage makes them."""
@@ -114,7 +84,7 @@ def recognise(g, name):
         (cx, cy), (tx, ty), (mx, my) = g.P[pr.centre], pr.through, pr.m
         s0 = (cx - tx) * -my + (cy - ty) * mx
         return RollingWheel(g.next_index, pr.wheel, pr.centre, name, pr.on, pr.label,
-                            _params(sc, g.bodies, pr, s0=s0), unit=g.unit, uname=g.uname)
+                            wheel_params(sc, g.bodies, pr, s0=s0), unit=g.unit, uname=g.uname)
     O = pr.base_centre
     if O not in g.P:
         return None
@@ -123,82 +93,18 @@ def recognise(g, name):
         base = sc.link(pr.base)
         if not (g.known_link(base) and base.key in g.used_links):
             return None
-        kb_rate = _rate(g, base.key)
+        kb_rate = rate(g, base.key)
         if kb_rate is None:  # the gear turns as a linkage makes it: read from its points
             base_free = (O, base.other(O))
     else:
         kb_rate = 0.0
-    kd_rate = _arm_rate(g, pr.centre, O)
+    kd_rate = arm_rate(g, pr.centre, O)
     return RollingWheel(g.next_index, pr.wheel, pr.centre, name, pr.on, pr.label,
-                        _params(sc, g.bodies, pr, kd_rate=kd_rate, kb_rate=kb_rate, P=g.P,
+                        wheel_params(sc, g.bodies, pr, kd_rate=kd_rate, kb_rate=kb_rate, P=g.P,
                                 base_free=base_free),
                         base=pr.base, base_centre=O, inside=pr.inside,
                         kd_rate=kd_rate, kb_rate=kb_rate, base_free=base_free,
                         unit=g.unit, uname=g.uname)
-
-
-def _angle(x, y):
-    return math.atan2(y, x)
-
-
-def _params(scene, bodies, pr, *, s0=None, kd_rate=0.0, kb_rate=0.0, P=None, base_free=None):
-    """The step's dimensions, read from ``scene``: for a line (l, r, tx, ty, mx, my, phi0,
-    s0); for a circle (l, r, R, kd, kb, phi0, theta0, K, ox, oy, psi0, beta0), K the
-    wheel's turning per radian of the crank due to what turns at a fixed ratio of it
-    (``kd kd_rate + kb kb_rate``, a rate None counting 0: read from the points instead),
-    psi0 the line of centres' angle and beta0 the gear's (its centre to its other point)
-    at the stated instant. ``P``: the positions there (the compiler's); without them the
-    centre is a fixed point or the crank's tip."""
-    ell = bodies.distance(pr.wheel, pr.centre, pr.rim)
-    r = pr.radius
-    if pr.on == "line":
-        (tx, ty), (mx, my) = pr.through, pr.m
-        phi0 = pr.angle if pr.angle is not None else math.atan2(-my, -mx)
-        return (ell, r, tx, ty, mx, my, phi0, s0)
-    inp = scene.input
-    where = f"[rolling] {pr.wheel}"
-    if P is not None:
-        C0, O = P[pr.centre], P[pr.base_centre]
-    elif kd_rate is None or base_free is not None or pr.base_centre not in scene.ground or (
-            pr.centre not in scene.ground and pr.centre != inp.tip):
-        raise SceneError(f"the wheel {pr.wheel}'s arm or gear turns as a linkage makes it: "
-                         "variants of such a scene are not supported yet", key=where,
-                         file=scene.file)
-    else:
-        O = scene.ground[pr.base_centre]
-        if pr.centre in scene.ground:
-            C0 = scene.ground[pr.centre]
-        else:  # the crank's tip at the stated angle
-            L = scene.link(inp.crank).length
-            C0 = (O[0] + L * math.cos(inp.angle), O[1] + L * math.sin(inp.angle))
-    dist = math.dist(C0, O)
-    e = -1.0 if pr.inside else 1.0
-    R = (dist - r) if e > 0 else (dist + r)
-    if R <= 0 or dist == 0:
-        raise SceneError(f"the wheel {pr.wheel} (radius {in_units(r, scene.length_unit)} "
-                         f"{scene.units}) cannot roll {'outside' if e > 0 else 'inside'} "
-                         f"{pr.label}: its centre is {in_units(dist, scene.length_unit)} "
-                         f"{scene.units} from {pr.base_centre}"
-                         + ("" if e < 0 else " (not more than its radius: inside = true?)"),
-                         key=where, file=scene.file)
-    if pr.base_radius is not None and abs(pr.base_radius - R) > _GAP * (R + r):
-        u, n = scene.length_unit, scene.units
-        want = pr.base_radius + e * r
-        raise SceneError(f"the contact leaves the pitch point: the centre distance "
-                         f"{pr.base_centre}{pr.centre} = {in_units(dist, u)} {n} is not "
-                         f"{'R + r' if e > 0 else 'R - r'} = {in_units(want, u)} {n} "
-                         f"(R = {in_units(pr.base_radius, u)}, r = {in_units(r, u)}): "
-                         "the gears would not mesh", key=where, file=scene.file)
-    kd, kb = 1.0 + e * R / r, -e * R / r
-    dx, dy = C0[0] - O[0], C0[1] - O[1]
-    phi0 = pr.angle if pr.angle is not None else math.atan2(-e * dy, -e * dx)
-    psi0 = _angle(dx, dy)
-    beta0 = 0.0
-    if base_free is not None:
-        (bx, by), (qx, qy) = P[base_free[0]], P[base_free[1]]
-        beta0 = _angle(qx - bx, qy - by)
-    K = kd * (kd_rate or 0.0) + kb * (kb_rate or 0.0)
-    return (ell, r, R, kd, kb, phi0, inp.angle, K, O[0], O[1], psi0, beta0)
 
 
 @dataclass(frozen=True)
@@ -261,7 +167,7 @@ class RollingWheel(Step):
         return self.dims
 
     def dimensions(self, scene, bodies):
-        pr = _pair(scene, self.wheel)
+        pr = pair_of(scene, self.wheel)
         if self.on == "line":
             raise SceneError(f"wheel {self.wheel} rolls on a line: variants of such a scene are "
                              "not supported yet", key=f"[rolling] {self.wheel}",
@@ -270,7 +176,7 @@ class RollingWheel(Step):
         kb_rate = self.kb_rate
         if two is not None and self.base == scene.link(two.crank).key:
             kb_rate = two.omega / scene.input.omega  # the ratio of this scene's speeds
-        return _params(scene, bodies, pr, kd_rate=self.kd_rate, kb_rate=kb_rate,
+        return wheel_params(scene, bodies, pr, kd_rate=self.kd_rate, kb_rate=kb_rate,
                        base_free=self.base_free)
 
     def drawn(self, prm, pencil, P):
@@ -285,7 +191,7 @@ class RollingWheel(Step):
         cx, cy = P[self.centre]
         phi = self._phi(P, prm, ctx)
         g = self.gap(P, prm)
-        if not ctx.array and abs(g) > _GAP:
+        if not ctx.array and abs(g) > GAP:
             raise SceneError(self._off_words(cx, cy, prm), key=f"[rolling] {self.wheel}")
         ell = prm[0]
         return cx + ell * ctx.cos(phi), cy + ell * ctx.sin(phi), 1.0
@@ -346,10 +252,10 @@ class RollingWheel(Step):
         if ctx is None:
             return
         if ctx.array:
-            bad = abs(g) > _GAP
+            bad = abs(g) > GAP
             if bad is True or (bad is not False and bad.any()):
                 ctx.fail(self, bad)
-        elif abs(g) > _GAP:
+        elif abs(g) > GAP:
             raise AssemblyError(self.why(g), step=self.label)
 
     def bind(self, prm):

@@ -1,0 +1,111 @@
+"""A rolling wheel's dimensions, read from its scene: what it rolls on and how its arm and
+the gear it meshes with turn per radian of the crank (a fixed ratio, or None where a linkage
+turns them and their angles are read from their points). The formulas and the step are in
+:mod:`.rolling`."""
+
+from __future__ import annotations
+
+import math
+
+from ..common.errors import SceneError
+from ..common.numbers import in_units
+
+__all__ = ["GAP", "pair_of", "rate", "arm_rate", "angle_of", "wheel_params"]
+
+#: how far (relative to the radii) a wheel's centre may leave its line or pitch circle
+GAP = 1e-9
+
+
+def pair_of(scene, wheel):
+    """The ``[rolling]`` pair whose wheel is ``wheel``."""
+    return next(r for r in scene.rolling if r.wheel == wheel)
+
+
+def rate(g, key):
+    """The turning of link ``key`` per radian of the crank where it is a fixed ratio (the
+    crank 1, a second crank the ratio of the speeds, a gear at a fixed ratio), else None
+    (it turns as a linkage makes it: its angle is read from its points)."""
+    inp = g.scene.input
+    if inp.block is None and key == inp.crank:
+        return 1.0
+    return next((getattr(st, "theta_rate", None) for st in g.steps if key in st.links), None)
+
+
+def arm_rate(g, C, O):
+    """The turning per radian of the crank of the line of centres O -> C: 0 where both are
+    fixed, a link's fixed ratio where one is fixed and the other the end of a link turning
+    about it (the arm), else None (read from the two points)."""
+    sc = g.scene
+    if C in sc.ground and O in sc.ground:
+        return 0.0
+    for fixed, moving in ((O, C), (C, O)):
+        if fixed in sc.ground:
+            for lk in sc.links:
+                if {lk.p, lk.q} == {fixed, moving} and lk.key in g.used_links:
+                    return rate(g, lk.key)
+    return None
+
+
+def angle_of(x, y):
+    """The direction of (x, y), radians."""
+    return math.atan2(y, x)
+
+
+def wheel_params(scene, bodies, pr, *, s0=None, kd_rate=0.0, kb_rate=0.0, P=None, base_free=None):
+    """The step's dimensions, read from ``scene``: for a line (l, r, tx, ty, mx, my, phi0,
+    s0); for a circle (l, r, R, kd, kb, phi0, theta0, K, ox, oy, psi0, beta0), K the
+    wheel's turning per radian of the crank due to what turns at a fixed ratio of it
+    (``kd kd_rate + kb kb_rate``, a rate None counting 0: read from the points instead),
+    psi0 the line of centres' angle and beta0 the gear's (its centre to its other point)
+    at the stated instant. ``P``: the positions there (the compiler's); without them the
+    centre is a fixed point or the crank's tip."""
+    ell = bodies.distance(pr.wheel, pr.centre, pr.rim)
+    r = pr.radius
+    if pr.on == "line":
+        (tx, ty), (mx, my) = pr.through, pr.m
+        phi0 = pr.angle if pr.angle is not None else math.atan2(-my, -mx)
+        return (ell, r, tx, ty, mx, my, phi0, s0)
+    inp = scene.input
+    where = f"[rolling] {pr.wheel}"
+    if P is not None:
+        C0, O = P[pr.centre], P[pr.base_centre]
+    elif kd_rate is None or base_free is not None or pr.base_centre not in scene.ground or (
+            pr.centre not in scene.ground and pr.centre != inp.tip):
+        raise SceneError(f"the wheel {pr.wheel}'s arm or gear turns as a linkage makes it: "
+                         "variants of such a scene are not supported yet", key=where,
+                         file=scene.file)
+    else:
+        O = scene.ground[pr.base_centre]
+        if pr.centre in scene.ground:
+            C0 = scene.ground[pr.centre]
+        else:  # the crank's tip at the stated angle
+            L = scene.link(inp.crank).length
+            C0 = (O[0] + L * math.cos(inp.angle), O[1] + L * math.sin(inp.angle))
+    dist = math.dist(C0, O)
+    e = -1.0 if pr.inside else 1.0
+    R = (dist - r) if e > 0 else (dist + r)
+    if R <= 0 or dist == 0:
+        raise SceneError(f"the wheel {pr.wheel} (radius {in_units(r, scene.length_unit)} "
+                         f"{scene.units}) cannot roll {'outside' if e > 0 else 'inside'} "
+                         f"{pr.label}: its centre is {in_units(dist, scene.length_unit)} "
+                         f"{scene.units} from {pr.base_centre}"
+                         + ("" if e < 0 else " (not more than its radius: inside = true?)"),
+                         key=where, file=scene.file)
+    if pr.base_radius is not None and abs(pr.base_radius - R) > GAP * (R + r):
+        u, n = scene.length_unit, scene.units
+        want = pr.base_radius + e * r
+        raise SceneError(f"the contact leaves the pitch point: the centre distance "
+                         f"{pr.base_centre}{pr.centre} = {in_units(dist, u)} {n} is not "
+                         f"{'R + r' if e > 0 else 'R - r'} = {in_units(want, u)} {n} "
+                         f"(R = {in_units(pr.base_radius, u)}, r = {in_units(r, u)}): "
+                         "the gears would not mesh", key=where, file=scene.file)
+    kd, kb = 1.0 + e * R / r, -e * R / r
+    dx, dy = C0[0] - O[0], C0[1] - O[1]
+    phi0 = pr.angle if pr.angle is not None else math.atan2(-e * dy, -e * dx)
+    psi0 = angle_of(dx, dy)
+    beta0 = 0.0
+    if base_free is not None:
+        (bx, by), (qx, qy) = P[base_free[0]], P[base_free[1]]
+        beta0 = angle_of(qx - bx, qy - by)
+    K = kd * (kd_rate or 0.0) + kb * (kb_rate or 0.0)
+    return (ell, r, R, kd, kb, phi0, inp.angle, K, O[0], O[1], psi0, beta0)
