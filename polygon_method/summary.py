@@ -74,7 +74,7 @@ class Summary:
 
     def text(self) -> str:
         sc = self.scene
-        if sc.input.block is not None:
+        if not compile_plan(sc).steps[0].periodic:  # asked of the driver: a block's travel
             return self._block_text()
         inp = sc.input
         if inp.given is not None:
@@ -121,26 +121,27 @@ class Summary:
         sc = self.scene
         inp, uname = sc.input, sc.units
         driver = compile_plan(sc).steps[0]
+        block = driver.finds[0]
         deg = self.deg
         out = [f"sweep of {sc.title or sc.file or 'the mechanism'}",
-               f"block {inp.block} at {abs(inp.omega):.6g} m/s {driver.sense(inp.omega)}"
+               f"block {block} at {abs(inp.omega):.6g} m/s {driver.sense(inp.omega)}"
                + (f", {abs(inp.alpha):.6g} m/s^2 {driver.sense(inp.alpha)}" if inp.alpha
                   else "") + f" at every place; {self.evaluated} of {self.requested} places "
-               f"s_{inp.block} along its guide evaluated"]
+               f"s_{block} along its guide evaluated"]
         if self.range_deg is not None:
             lo, hi = self.range_deg
-            out.append(f"the block {inp.block} travels from s_{inp.block} = {lo:.6g} to "
+            out.append(f"the block {block} travels from s_{block} = {lo:.6g} to "
                        f"{hi:.6g} {uname} on the scene's branch"
                        + (" (its stated stroke)" if inp.stroke is not None and all(
                            lp.step == driver.label for lp in self.limits) else ""))
             for lp in self.limits:
-                out.append(f"  end at s_{inp.block} = {deg(lp.theta):.6g} {uname}: {lp.step}: "
+                out.append(f"  end at s_{block} = {deg(lp.theta):.6g} {uname}: {lp.step}: "
                            f"{lp.why}")
         if self.evaluated < self.requested:
             out.append(f"  {self.requested - self.evaluated} requested place(s) are left out "
                        "(beyond the ends of its travel, or singular)")
         for cp in self.change_points:
-            out.append(f"change point at s_{inp.block} = {deg(cp.theta):.6g} {uname}: "
+            out.append(f"change point at s_{block} = {deg(cp.theta):.6g} {uname}: "
                        f"{cp.why}")
         out.extend(self.notes)
         out.append("")
@@ -242,7 +243,7 @@ class _Reducer:
             for pin, r in rubbing_arrays(plan, fr.W, fr.n).items():
                 yield f"rub_{pin}", "m/s", r, "rubbing"
         t = torque_array(sc, fr.V, fr.W, self.sw.omega, fr.n)
-        if t is not None and sc.input.block is not None:  # the force driving the block
+        if t is not None and not plan.steps[0].periodic:  # the force driving the block
             yield "force", "N", t, "input force, along the guide"
         elif t is not None:
             yield "torque", "N m", t, "input torque, ccw +"
@@ -556,7 +557,7 @@ def summarize(scene: Scene, angles=None, *, chunk: int = CHUNK, refine: bool = T
     """Maxima and minima of every quantity over ``angles`` (rad; default every degree),
     reduced chunk by chunk: memory stays that of one chunk whatever the number of angles.
     Each extreme found between samples is then refined by zooming in on it."""
-    if angles is None and scene.input.block is not None:
+    if angles is None and not compile_plan(scene).steps[0].periodic:
         angles = stroke_places(scene)  # a driving block: its travel
     th_req = sweep_angles(angles)
     sw = Sweeper(scene)
