@@ -161,7 +161,10 @@ class Summary:
                     out.append(f"{e.name:<{w}}  {e.unit:<7} {e.maximum:>12.6g} "
                                f"{'(constant)':>10}")
                     continue
-                # rounding noise about a true zero (a speed at a dead centre) is 0
+                # rounding noise about a true zero (a speed at a dead centre) is 0 already
+                # (each value within its own error bound: _Reducer._noise); an extreme
+                # refined to a zero of the quantity is found to about 1e-10 of the
+                # quantity's range, the accuracy of its place: written 0 too
                 big = max(abs(e.maximum), abs(e.minimum))
                 mx = "+unbounded" if e.max_unbounded else f"{quiet(e.maximum, big):.6g}"
                 mn = "-unbounded" if e.min_unbounded else f"{quiet(e.minimum, big):.6g}"
@@ -343,9 +346,14 @@ class _Reducer:
         tasks, rows = [], []
         scales = self._scales()
         limits = [lp.theta for lp, _ in self._limits_in(theta, spacing)]
+        noise = self._noise(theta)
         for name, (mx, imx, mn, imn, unit, what, cmax, cmin) in self.best.items():
-            zero = 1e-9 * scales.get(unit, 0.0)  # rounding about a true zero
-            mx, mn = (0.0 if abs(mx) <= zero else mx), (0.0 if abs(mn) <= zero else mn)
+            own = noise.get(name)  # each quantity's own error bound where it is reached
+            if own is None:  # (a rubbing velocity, the input effort: the sizes the input sets)
+                zmx = zmn = 1e-9 * scales.get(unit, 0.0)
+            else:
+                zmx, zmn = own(imx), own(imn)
+            mx, mn = (0.0 if abs(mx) <= zmx else mx), (0.0 if abs(mn) <= zmn else mn)
             scale = max(abs(mx), abs(mn))
             if n > 1 and (mx - mn <= 1e-10 * scale or scale == 0.0):
                 rows.append([name, unit, mx, None, mn, None, what])
@@ -525,6 +533,49 @@ class _Reducer:
                             and v[2] > 2.0 * v[1]:  # (d^-0.5 grows 3.2 times a decade)
                         found.setdefault((nm, sense), lp.theta)
         return found
+
+    def _noise(self, theta) -> dict:
+        """name -> f(i): the absolute error bound of each quantity (its own relative bound,
+        :mod:`polygon_method.errorbound`, times the size of its kind) at sample ``i`` of
+        ``theta``, evaluated at the samples where an extreme is reached: below it a value is
+        rounding noise about a true zero, and only that is shown as 0 (a value above it is
+        real however small beside the input's sizes). 0 where the bound is no useful bound
+        (hide nothing). Rubbing velocities and the input effort are not here (the sizes the
+        input sets decide them, as before)."""
+        from .errorbound import USELESS, error_bounds
+        idx = sorted({int(i) for mx, imx, mn, imn, *_ in self.best.values()
+                      for i in (imx, imn) if i is not None and i >= 0})
+        if not idx or len(theta) == 0:
+            return {}
+        th = np.asarray(theta, dtype=float)[idx]
+        fr = self.sw.evaluate(th)
+        with np.errstate(all="ignore"):
+            eb = error_bounds(Motion(self.scene, self.plan, th, fr.P, fr.V, fr.A, fr.W,
+                                     fr.Al, fr.S, fr.cond, fr.bad))
+        size = {k: np.broadcast_to(np.asarray(v, dtype=float), th.shape)
+                for k, v in eb.scales.items()}
+        where = {k: j for j, k in enumerate(idx)}
+
+        def of(rel, kind):
+            rel = np.broadcast_to(np.asarray(rel, dtype=float), th.shape)
+            absolute = np.where(rel < USELESS, rel * size[kind], 0.0)
+            return lambda i: float(absolute[where[int(i)]])
+        out = {}
+        for p in eb.V:
+            out[f"v_{p}"] = of(eb.V[p], "velocity")
+            out[f"a_{p}"] = of(eb.A[p], "acceleration")
+        for lk in eb.W:
+            out[f"omega_{lk}"] = of(eb.W[lk], "omega")
+            out[f"alpha_{lk}"] = of(eb.Al[lk], "alpha")
+        for s in self.scene.sliders:
+            if s.key in eb.S:
+                ev, ea, ec = eb.S[s.key]
+                out[f"vs_{s.key}"] = of(ev, "velocity")
+                out[f"as_{s.key}"] = of(ea, "acceleration")
+                out[f"ac_{s.key}"] = of(ec, "acceleration")
+            if isinstance(s, FixedPath) and s.point in eb.P:
+                out[f"s_{s.key}"] = of(eb.P[s.point], "position")
+        return out
 
     def _scales(self) -> dict:
         """Typical sizes per unit, below a 1e-9 part of which a value is zero (rounding)."""
