@@ -53,6 +53,8 @@ _CHANGE = 1e-7
 MAX_CYCLE_POINTS = 1000
 #: a reachable range narrower than this (rad) is a locked linkage, not a motion
 _LOCKED = 1e-5
+#: the words a note opens with where a turn of the crank does not bring the mechanism back
+_NOT_AGAIN = "after a full turn of the crank the mechanism is not where it started"
 #: offset either side of a change point when comparing the branches' velocities (rad; for
 #: a driving block, times the length that plays a radian's part: ``Step.parameter_scale``,
 #: as for every offset below)
@@ -127,6 +129,10 @@ class Domain:
     periodic: bool = True
     #: a block driver's places are shown in the scene's length unit: metres per unit
     unit: float = 1.0
+    #: a full turn after which the mechanism is not where it started (a wheel that turns a
+    #: fraction of a turn more per turn of the crank): every angle is taken on this turn
+    #: (``map``), and the notes say after how many turns the motion repeats
+    turn_only: bool = False
 
     def map(self, theta):
         """Crank angles (rad, any turn) -> the same angles in ``[lo, lo + 2 pi)`` and a mask
@@ -304,6 +310,8 @@ class Sweeper:
                              "branch: the motion repeats only every two turns; the sweep "
                              "shows the turn centred on the scene's instant")
             limits = tuple(x for x in (llim,) if x is not None)
+            if not notes and full:
+                notes += self._repeats(rsegs[-1][2], t0)
         else:
             lsegs, lcps, llim = self._walk(-1, TWO_PI - (rlim.theta - t0))
             lo = llim.theta if llim is not None else rlim.theta - TWO_PI
@@ -318,7 +326,28 @@ class Sweeper:
                 merged.append((a, b, p))
         segs = [(a, b, p) for a, b, p in merged if b > a] or merged[:1]
         cps = tuple(sorted(lcps + rcps, key=lambda c: c.theta))
-        return Domain(lo, hi, full, tuple(segs), limits, cps, tuple(notes))
+        return Domain(lo, hi, full, tuple(segs), limits, cps, tuple(notes),
+                      turn_only=bool(notes) and full and notes[-1].startswith(_NOT_AGAIN))
+
+    def _repeats(self, plan, t0) -> list:
+        """[] where the mechanism is where it started after a turn of the crank; else the
+        note saying after how many turns it is (a wheel turning 2.5 times per turn of its
+        arm: 2), or that it is not within 12, and that the turn shown is the one centred
+        on the scene's instant."""
+        k = np.arange(13.0)
+        fr = run_arrays(plan, t0 + TWO_PI * k, self.omega, self.alpha, vel=False, acc=False)
+        size = max((lk.length for lk in self.scene.links), default=1.0)
+        xy = np.array([c for p in fr.P.values() for c in (np.broadcast_to(p[0], k.shape),
+                                                           np.broadcast_to(p[1], k.shape))])
+        same = np.all(np.abs(xy - xy[:, :1]) <= 1e-9 * size, axis=0)
+        if same[1]:
+            return []
+        n = next((int(i) for i in range(2, 13) if same[i]), None)
+        when = (f"only every {n} turns" if n is not None else "not within 12 turns")
+        lo, hi = math.degrees(t0 - math.pi), math.degrees(t0 + math.pi)
+        return [f"{_NOT_AGAIN}: the motion repeats {when} (a wheel turns a fraction of a "
+                "turn more per turn of the crank); ranges and extremes are over the turn "
+                f"centred on the scene's instant, the crank from {lo:.6g} to {hi:.6g} deg"]
 
     def _stroke(self) -> Domain:
         """The places a driving block reaches from the scene's on its branch: its stated
@@ -514,7 +543,7 @@ class Sweeper:
         """
         theta = np.asarray(theta, dtype=float)
         dom = self.domain
-        if len(dom.segments) == 1 and (dom.full_turn or (
+        if len(dom.segments) == 1 and ((dom.full_turn and not dom.turn_only) or (
                 len(theta) and dom.lo <= theta.min() and theta.max() <= dom.hi)):
             return run_arrays(dom.segments[0][2], theta, self.omega, self.alpha, vel, acc)
         t, _ = dom.map(theta)
