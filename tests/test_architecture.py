@@ -62,6 +62,34 @@ def test_views_never_branch_on_a_step_kind():
         assert not pattern.search(text), (path, pattern.search(text).group(0))
 
 
+def test_views_ask_the_driver_never_the_scene_what_drives():
+    """What drives the mechanism (a crank, or a block along its guide) is asked of the
+    plan's first step (the driver protocol): outside the scene's reading, the steps and the
+    compiler that makes the driver from ``[input] block`` and a force room asking whether
+    the scene's given motion drives its cylinder, nothing reads ``input.block``."""
+    pattern = re.compile(r"\b(input|inp)\.block\b")
+    allowed = ("solver/compiler.py", "forces/cylinder.py")
+    seen = []
+    for path, text in _sources():
+        rel = path.relative_to(PACKAGE)
+        if rel.parts[0] in ("steps", "scene") or rel.as_posix() in allowed:
+            seen.append(bool(pattern.search(text)))
+            continue
+        found = pattern.search(text)
+        assert not found, (path, text[:found.start()].count("\n") + 1, found.group(0))
+    assert any(seen)  # the pattern finds the reads where they belong (it can fail)
+
+
+def test_the_driver_protocol_is_in_the_contract():
+    """Every member of the driver protocol the views ask is an OPTIONAL member of the step
+    contract, with its default on the base class (a crank's)."""
+    from polygon_method.steps.base import OPTIONAL, Step
+    for name in ("periodic", "parameter_words", "input_scales", "input_words",
+                 "effort_words", "parameter", "parameter_scale", "effort_key",
+                 "input_record", "drive_caption"):
+        assert name in OPTIONAL and hasattr(Step, name), name
+
+
 def _fourbar(bc, cd, angle=60.0):
     """C of the four-bar A(0,0) D(100,0) AB 50 by hand: circle-circle, the upper one."""
     t = math.radians(angle)

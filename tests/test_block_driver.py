@@ -467,3 +467,128 @@ def test_unbounded_travel_asks_for_a_stroke(tmp_path, capsys):
     f.write_text(PARALLEL.replace("s_A = 0", "s_A = 0\nstroke = [-500, 500]"))
     res = sweep(load_scene(f))
     assert float(res.theta[0]) == pytest.approx(-0.5) and np.allclose(res.V["B"][0], 1.0)
+
+
+# ----- a block driver through a change point: the sweep's offsets are in the driver's scale
+
+#: block A on the horizontal guide through Q = (0, e), link AB = L, B on the circle OB = R
+#: about O = (0, 0), with L = R + e: at s_A = 0, A, O and B are in line and the two
+#: assemblies of B meet (d = |OA| = e = L - R touches the dyad's limit and leaves it).
+CHANGE = """
+units = "mm"
+[ground]
+O = [0, 0]
+Q = [0, {e}]
+[links]
+AB = {L}
+OB = {R}
+[sliders]
+A = {{ path = "horizontal", through = "Q" }}
+[assembly]
+B = [{bx:.4f}, {by:.4f}]
+[input]
+block = "A"
+s_A = {s}
+vs_A = "{vs} m/s"
+as_A = "{acc} m/s^2"
+"""
+
+
+def _change_point_b(R, e, s):
+    """B on the branch that passes through the change point smoothly (50 digits, SI, s in
+    m): with B = R (sin psi, -cos psi) the loop |B - A| = L = R + e is
+    s^2 - 2 R s sin psi - 2 R e (1 - cos psi) = 0, whose root through psi = 0 is
+    tan(psi / 2) = s / (2 R + sqrt(4 R (R + e) - s^2)) (analytic across s = 0)."""
+    R, e, s = mpf(R), mpf(e), mpf(s)
+    psi = 2 * mpmath.atan(s / (2 * R + mpmath.sqrt(4 * R * (R + e) - s * s)))
+    return R * mpmath.sin(psi), -R * mpmath.cos(psi), psi
+
+
+@pytest.mark.parametrize("R, e, vs, acc", [(40, 60, 2.0, -3.0), (25, 200, -0.5, 7.0)])
+def test_sweep_through_a_change_point_keeps_every_place_within_its_bound(R, e, vs, acc):
+    """Every place sampled near the change point is kept (the offsets the sweep takes
+    there are lengths in the driver's scale, not radians read as metres), and B's
+    position, velocity and acceleration, and omega of OB, are those of the closed form
+    (differentiated at 50 digits) within the sweep's own error bound of each."""
+    mpmath.mp.dps = 50
+    Rm, em = R / 1000, e / 1000
+    s0 = -0.75 * R / 1000  # the scene's instant, on the smooth branch
+    bx, by, _ = _change_point_b(Rm, em, s0)
+    sc = parse_scene(CHANGE.format(e=e, L=R + e, R=R, s=s0 * 1000, bx=float(bx) * 1000,
+                                   by=float(by) * 1000, vs=vs, acc=acc))
+    places = np.array([-0.3, -1e-2, -1e-3, -3e-4, -1e-5, -1e-8, 1e-8, 1e-5, 3e-4, 1e-3,
+                       1e-2, 0.3]) * Rm
+    res = sweep(sc, places)
+    cps = res.domain.change_points
+    assert len(cps) == 1 and cps[0].followed
+    assert abs(cps[0].theta) < 1e-7 * Rm  # at s_A = 0, as the closed form has it (found
+    # by zooming on the condition's minimum: to about 1e-8 of the scale)
+    assert len(res) == len(places)  # none left out as unclosed next to the change point
+    eb = res.error_bounds
+    size = {k: np.broadcast_to(v, (len(res),)) for k, v in eb.scales.items()}
+    for i, s in enumerate(np.asarray(res.theta)):
+        x = lambda t: _change_point_b(Rm, em, t)[0]  # noqa: E731
+        y = lambda t: _change_point_b(Rm, em, t)[1]  # noqa: E731
+        psi = lambda t: _change_point_b(Rm, em, t)[2]  # noqa: E731
+        want_p = (x(s), y(s))
+        d1 = (mpmath.diff(x, s, 1), mpmath.diff(y, s, 1))
+        d2 = (mpmath.diff(x, s, 2), mpmath.diff(y, s, 2))
+        want_v = tuple(d * vs for d in d1)
+        want_a = tuple(dd * vs * vs + d * acc for d, dd in zip(d1, d2))
+        want_w = mpmath.diff(psi, s, 1) * vs  # OB turns with psi
+        for got, want, bound, kind in (
+                (res.P["B"], want_p, eb.P["B"], "position"),
+                (res.V["B"], want_v, eb.V["B"], "velocity"),
+                (res.A["B"], want_a, eb.A["B"], "acceleration")):
+            err = math.hypot(float(got[0][i] - want[0]), float(got[1][i] - want[1]))
+            b = float(np.broadcast_to(bound, (len(res),))[i])
+            assert err <= b * float(size[kind][i]), (kind, s, err, b)
+        err = abs(float(res.W["OB"][i] - want_w))
+        b = float(np.broadcast_to(eb.W["OB"], (len(res),))[i])
+        assert err <= b * float(size["omega"][i]), ("omega", s, err, b)
+
+
+def test_the_block_states_the_scale_of_its_place():
+    """A crank's parameter is its angle (a radian is 1); a block's place is a length: the
+    shortest link pinned to it, and no more than a stated stroke over 2 pi."""
+    sc = parse_scene(trammel(500, 700, 300, 2.0, -5.0))
+    assert compile_plan(sc).steps[0].parameter_scale(sc) == 0.5
+    sc = parse_scene(trammel(500, 700, 300, 2.0, -5.0, 'stroke = [-100, 400]'))
+    assert math.isclose(compile_plan(sc).steps[0].parameter_scale(sc), 0.5 / (2 * math.pi),
+                        rel_tol=1e-15)
+
+
+# ----- a block on a moving guide as the driver: refused in one located line, saying why
+
+ROD = """
+units = "m"
+[ground]
+O = [0, 0]
+[links]
+OA = 1.0
+[sliders]
+B = {{ along = "OA" }}
+[input]
+{input}
+"""
+
+
+@pytest.mark.parametrize("given, key, words", [
+    ('block = "B"\ns_B = 0.5\nvs_B = "1.5 m/s"', "[input] block",
+     "slides along the moving link OA"),
+    ('crank = "OA"\nangle = 30\nspeed = "2 rad/s ccw"', "[sliders] B",
+     "mobility 2 (Gruebler: 3(n-1) - 2j): the mechanism is under-constrained; the block B "
+     "slides freely along its guide"),
+], ids=["as the block", "beside the crank"])
+def test_a_block_driven_along_a_turning_rod_is_refused_in_one_line(tmp_path, capsys, given,
+                                                                   key, words):
+    """"The collar slides along the rotating rod at 1.5 m/s relative to it": the collar's
+    sliding is a second input beside the rod's turning; not solved yet, said so where the
+    scene states it (a free block on a turning rod is no over-constrained chain: its
+    mobility is 2, n = 3 bodies, j = 2 joints)."""
+    f = tmp_path / "rod.toml"
+    f.write_text(ROD.format(input=given))
+    assert main(["solve", str(f)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and words in err and key in err, err
+    assert "not solved yet" in err and "over-constrained" not in err, err

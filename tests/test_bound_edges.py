@@ -144,3 +144,36 @@ acceleration = "30 rad/s^2 ccw"
     sol = solve(parse_scene(text))
     for kind, name, err, bound in compare_case(sol, REF, reference_scene(sol, text, REF)):
         assert err <= bound, (kind, name, err, bound)
+
+
+@pytest.mark.parametrize("far", [1e3, 3e4, 1e6])
+def test_a_racks_path_through_a_far_point(far):
+    """A rack's pitch line given through a point ``far`` mm along it (the rack is there at
+    the scene's instant): the pitch factor (T - O) x u cancels |T - O| down to the pinion's
+    pitch radius, and the rack's place is rounded to T's digits; both are in its bound, as
+    a slider counts its path's far point (a long rod elsewhere keeps the mechanism's size
+    from covering it)."""
+    u = (math.cos(math.radians(30)), math.sin(math.radians(30)))
+    T = (-40 * u[1] + far * u[0], 40 * u[0] + far * u[1])  # 40 mm from O: the pitch radius
+    text = f"""[ground]
+O = [0, 0]
+[links]
+OA = 40
+AB = 3000
+[sliders]
+B = {{ path = "horizontal", through = [0, -40] }}
+R = {{ path = "30 deg", through = [{T[0]!r}, {T[1]!r}] }}
+[rolling]
+R = {{ on = "OA" }}
+[input]
+crank = "OA"
+angle = 70
+speed = "15 rad/s ccw"
+acceleration = "30 rad/s^2 cw"
+"""
+    sol = solve(parse_scene(text))
+    checked = 0
+    for kind, name, err, bound in compare_case(sol, REF, reference_scene(sol, text, REF)):
+        assert err <= bound, (kind, name, err, bound)
+        checked += name == "R"
+    assert checked >= 4  # the rack's place, velocity, acceleration, sliding were compared

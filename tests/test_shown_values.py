@@ -118,3 +118,42 @@ def test_check_does_not_pass_a_wrong_answer_for_a_small_value(d, r, w, pivot):
     got = check_answers(solve(ans))
     assert [v.ok for v in got] == [False, False]
     assert got[0].correct == pytest.approx(small, rel=1e-9)
+
+
+# ----- sweep summaries: each extreme is zeroed only within its own bound
+
+TINY_CRANK = """
+units = "m"
+[ground]
+A = [0, 0]
+D = [10000, 0]
+[links]
+AB = {r!r}
+BC = 10000
+CD = 10000
+[assembly]
+C = "above"
+[input]
+crank = "AB"
+angle = {angle!r}
+speed = "10 rad/s ccw"
+"""
+
+
+@pytest.mark.parametrize("r", [1e-6, 4e-6])
+def test_a_summary_shows_what_is_small_beside_the_input_sizes(r):
+    """A crank of r (micrometres) driving links 10 km long: every speed is below 1e-9 of
+    omega times the longest link, the size the summary once called zero below. The
+    crank pin's speed and acceleration are omega r and omega^2 r (closed form), and the
+    rocker's largest omega is the 50-digit reference's at the angle the summary gives."""
+    from polygon_method.linkage.summary import summarize
+    s = summarize(parse_scene(TINY_CRANK.format(r=r, angle=30.0)))
+    vb, ab = s.extreme("v_B"), s.extreme("a_B")
+    assert vb.constant and math.isclose(vb.maximum, 10 * r, rel_tol=1e-9), vb
+    assert ab.constant and math.isclose(ab.maximum, 100 * r, rel_tol=1e-9), ab
+    w = s.extreme("omega_CD")
+    assert w.maximum > 0 > w.minimum, w
+    sc = parse_scene(TINY_CRANK.format(r=r, angle=float(w.at_max)))
+    ref = reference_solution(sc, solve(sc).P)
+    assert math.isclose(w.maximum, float(ref["omega"]["CD"]), rel_tol=1e-9), (w, ref["omega"])
+    assert "(constant)" in s.text() and f"{10 * r:.6g}" in s.text()

@@ -8,10 +8,11 @@ from the lever), Whitworth and shaper quick returns, Watt and Stephenson six-bar
 crusher and a toggle press, a block sliding on a moving coupler, a coupling rod, points on
 links produced, plates, pins, loads, crank angular acceleration, rpm / rps / deg/s,
 mm / cm / m / in / ft (with inches, "4 ft 6 in"), angles in a book's words (past the inner dead
-centre, from the line of stroke).
+centre, from the line of stroke), a block as the driver (an ellipse trammel with a point on
+its bar, a slider crank driven from its piston, a collar on a fixed rod driving a lever).
 
 Against the 50-digit reference (tests/reference.py) at 1e-9 of the size of each kind, also
-with the crank turned to 0, 90, 180 and 270 deg; the branch each [assembly] hint asks for
+with the crank turned to 0, 90, 180 and 270 deg (a driving block moved along its guide); the branch each [assembly] hint asks for
 (and the default one) against the mirror image of the chosen position; the rubbing
 velocities from the scene's pins and the reference's omegas; the input torque by virtual
 work with the reference's velocities; every instantaneous centre as the point where its two
@@ -143,6 +144,31 @@ def test_corpus_covers_the_format():
     assert any(cp.mu for sc in scenes for cp in sc.points)  # a plate
     assert any(ld.torque is not None for sc in scenes for ld in sc.loads)
     assert any(ld.force is not None for sc in scenes for ld in sc.loads)
+    driven = [sc for sc in scenes if sc.input.block is not None]  # a block as the driver,
+    guides = {sc.slider(sc.input.block).label for sc in driven}  # on guides of every kind
+    assert {"horizontal", "vertical"} < guides and any(sc.loads for sc in driven)
+
+
+def test_slider_crank_driven_from_its_piston_by_hand():
+    """The piston's place x = r cos t + sqrt(l^2 - r^2 sin^2 t) gives the crank's angle t
+    (A above the line of stroke); x' = vs and x'' = as give omega and alpha of the crank
+    (50 digits, differentiated by hand: x' = k(t) t', x'' = k'(t) t'^2 + k(t) t'')."""
+    scene, sol, _ = solved(HERE / "block_piston_slider_crank.toml")
+    mpmath.mp.dps = 50
+    r, l, x = mpf("0.1"), mpf("0.4"), mpf("0.38")
+    vs, acc = mpf(-4), mpf(30)
+    c = (x * x + r * r - l * l) / (2 * r * x)  # the triangle OAB: cos t
+    t = mpmath.acos(c)  # A above: 0 < t < pi
+
+    def k(t):
+        s, c = mpmath.sin(t), mpmath.cos(t)
+        return -r * s - r * r * s * c / mpmath.sqrt(l * l - r * r * s * s)
+    w = vs / k(t)
+    al = (acc - mpmath.diff(k, t) * w * w) / k(t)
+    assert sol.W["OA"] == pytest.approx(float(w), rel=1e-9)
+    assert sol.Al["OA"] == pytest.approx(float(al), rel=1e-9)
+    assert sol.P["A"] == pytest.approx((float(r * mpmath.cos(t)), float(r * mpmath.sin(t))),
+                                       rel=1e-12)
 
 
 def _body_field(sol, name):

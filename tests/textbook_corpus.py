@@ -13,11 +13,16 @@ from polygon_method.common.errors import PolygonMethodError
 from polygon_method.scene import FixedPath, GuideSlider
 from reference import reference_solution
 
-__all__ = ["HERE", "FILES", "REL", "NOISE", "solved", "worst_error", "at_angle", "turned",
-           "other_position", "guide_direction"]
+__all__ = ["HERE", "FILES", "CRANKED", "BLOCK_DRIVEN", "REL", "NOISE", "solved",
+           "worst_error", "at_angle", "turned", "parameters", "other_position",
+           "guide_direction"]
 
 HERE = Path(__file__).resolve().parent / "textbook"
 FILES = sorted(HERE.glob("*.toml"))
+#: the corpus's scenes driven by a block along its guide ([input] block: the motion's
+#: parameter is the block's place s, not a crank's angle), and those driven by a crank
+BLOCK_DRIVEN = [f for f in FILES if load_scene(f).input.block is not None]
+CRANKED = [f for f in FILES if f not in BLOCK_DRIVEN]
 REL = 1e-9
 NOISE = re.compile(r"\d(\.\d+)?e-(1[0-9]|[2-9][0-9])")  # a number below 1e-10: noise
 
@@ -99,8 +104,8 @@ def other_position(scene, P, X):
     """The other assembly of X: the mirror image in the line of the two centres of its
     dyad; for a slider, in the normal to its path through the link's other end; for the
     free end of a slotted link, through the link's pivot. None for the crank's tip."""
-    if X == scene.input.tip:
-        return None  # the crank's tip has one position
+    if X == scene.input.tip or X == scene.input.block:
+        return None  # the crank's tip, a driving block: one position (given)
     if len(scene.slots(X)) == 2:
         return None  # a peg in two slots: where they cross, one position
     if any(r.rim == X for r in scene.rolling):
@@ -159,12 +164,22 @@ def turned(path, angle):
     return _TURNED[path, angle]
 
 
+def parameters(path):
+    """The other values of a scene's parameter its tests take: a crank at 0, 90, 180 and
+    270 deg; a driving block at its guide's through point (0), half its place, a quarter
+    beyond it and its place mirrored (-s), in the scene's units."""
+    if load_scene(path).input.block is None:
+        return (0, 90, 180, 270)
+    s = float(_PLACE.search(Path(path).read_text(encoding="utf-8")).group(2))
+    return (0, s / 2, 1.25 * s, -s)
+
+
 def turned_cases():
-    """(path, angle) at 0, 90, 180, 270 deg: those that assemble (on the scene's hints),
-    and those refused there, each with its refusal."""
+    """(path, parameter) at each of :func:`parameters`: those that assemble (on the
+    scene's hints), and those refused there, each with its refusal."""
     good, refused = [], []
     for f in FILES:
-        for a in (0, 90, 180, 270):
+        for a in parameters(f):
             try:
                 solve(parse_scene(at_angle(f, a)))
                 good.append((f, a))
@@ -173,6 +188,15 @@ def turned_cases():
     return good, refused
 
 
+#: a driving block's place in a scene's [input]: s_B = 380
+_PLACE = re.compile(r"(?m)^(s_\w+) = (-?[0-9.]+)")
+
+
 def at_angle(path, angle):
+    """The scene's text with its crank at ``angle`` (deg); for a scene driven by a block,
+    with the block at the place ``angle`` along its guide (the scene's units): the
+    motion's parameter, whichever the driver."""
     text = Path(path).read_text(encoding="utf-8")
+    if load_scene(path).input.block is not None:
+        return _PLACE.sub(lambda m: f"{m.group(1)} = {angle!r}", text, count=1)
     return re.sub(r"(?m)^angle = .*$", f"angle = {angle}", text)

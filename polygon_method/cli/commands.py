@@ -187,7 +187,7 @@ def _cmd_page(args) -> int:
     write_outputs(targets, [(html, False)])
     from ..polygons.scales import display_unit
     cycle = "over a full turn" if fr.full_turn else \
-        f"over the block's travel ({fr.limits_text})" if fr.sol.scene.input.block else \
+        f"over the block's travel ({fr.limits_text})" if not fr.sol.plan.steps[0].periodic else \
         f"between the limit positions ({fr.limits_text})"
     print(f"{out}: {len(fr)} frames {cycle}; " + "; ".join(display_unit(s.text) for s in
                                                         fr.scales)
@@ -235,7 +235,7 @@ def _requested_angles(args, scene=None):
     ranged = any(v is not None for v in (args.start, args.stop, args.step))
     if args.steps is not None and ranged:
         raise SceneError("give either --steps N or --from A --to B --step S, not both")
-    if scene is not None and scene.input.block is not None:
+    if scene is not None and not _driver(scene).periodic:  # a block driven along its guide
         return _requested_places(args, scene, ranged)
     if ranged:
         if args.start is None or args.stop is None or args.step is None:
@@ -374,11 +374,18 @@ def _names(args, what):
     return names
 
 
+def _driver(scene):
+    """The plan's first step, which drives the mechanism (the driver protocol)."""
+    from ..solver.compiler import compile_plan
+    return compile_plan(scene).steps[0]
+
+
 def _what(scene) -> str:
     """What a sweep's parameter values are, in words."""
-    if scene.input.block is None:
+    driver = _driver(scene)
+    if driver.periodic:
         return "crank angles"
-    return f"places of block {scene.input.block} ({scene.units})"
+    return f"places of block {driver.finds[0]} ({scene.units})"
 
 
 def _limits_text(dom) -> str:

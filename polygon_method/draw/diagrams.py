@@ -9,7 +9,7 @@ import re
 from ..solver.given import stated
 from ..polygons.constructions import (acceleration_constructions, drawn_vectors, image_label,
                              velocity_constructions)
-from ..common.numbers import fmt_angular, in_units
+from ..common.numbers import fmt_angular
 from ..polygons.scales import Scale
 from ..scene import FixedPath
 from .sketch import _header, _Sketch
@@ -55,12 +55,9 @@ def _auxiliary(sk, sol, scale, P):
 
 def _drive(sol) -> str:
     inp = sol.scene.input
-    if inp.block is not None:  # a block driven along its guide
-        driver, u = sol.plan.steps[0], sol.scene.length_unit
-        return (f"block {inp.block} at s = {in_units(inp.angle, u)} {sol.scene.units}, "
-                f"{abs(inp.omega):.4g} m/s {driver.sense(inp.omega)}"
-                + (f", {abs(inp.alpha):.4g} m/s² {driver.sense(inp.alpha)}" if inp.alpha
-                   else ""))
+    own = sol.plan.steps[0].drive_caption(sol.scene)  # a block driver's; a crank's below
+    if own is not None:
+        return own
     said = f" ({inp.angle_words})" if inp.angle_words else ""
     drive = (f"crank {inp.crank} at {_deg(inp.angle)}{said}, "
              + (inp.speed_text if inp.given is None

@@ -145,7 +145,8 @@ def plot_figure(res: SweepResult, *, points=None, links=None):
         ax.grid(True, lw=0.3)
         if series:
             ax.legend(fontsize=8, ncol=2)
-    block = sc.input.block
+    driver = res.plan.steps[0]  # a block driver: its place is the axis
+    block = None if driver.periodic else driver.finds[0]
     for ax in axes[1]:
         ax.set_xlabel("crank angle θ (°)" if block is None else
                       f"place s_{block} of block {block} ({sc.units})")

@@ -140,8 +140,8 @@ def analyse(motion) -> Forces:
     fx, fy, m = led.of(FRAME)  # the drivers' reactions are the frame's too
     if driving is not None:
         name, kind, effort = driving.key, driving.kind, led.given[driving.key]
-    elif inp.block is not None:
-        name, kind, effort = block(inp.block), "block", torque
+    elif plan.steps[0].kind == "block":  # the driver the plan starts with: a block
+        name, kind, effort = block(plan.steps[0].point), "block", torque
     else:
         name, kind, effort = inp.crank, "crank", torque
     return Forces(records, tuple(pins), tuple(guides), effort, (fx, fy), m,

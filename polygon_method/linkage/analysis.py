@@ -128,7 +128,8 @@ class Linkage:
             out.append("")
             out.extend(self.formulas)
         if self.notes:
-            out.append("")
+            if out[-1]:  # (one blank line before them, never two)
+                out.append("")
             out.extend(self.notes)
         # a value that rounds to zero is written 0.00, never -0.00
         return re.sub(r"(?<![\d.])-(0\.0+)(?![\d])", r"\1", "\n".join(out))
@@ -344,6 +345,9 @@ def _output_motion(cyc: _Cycle, out: _Output, scene, fb, sk, slot):
         for lp in dom.limits:
             fr = cyc.at(lp.theta, vel=False)
             vals.append(float(out.value(fr)[0]))
+    elif dom.turn_only:  # a turn that does not close: its two ends bound the range
+        for t in (dom.lo, dom.hi):
+            vals.append(float(out.value(cyc.at(t, vel=False))[0]))
     lines = []
     omin = omax = None
     ratio, tlines = None, []

@@ -85,7 +85,8 @@ class _Cycle:
         g = f(self.fr) - level
         ok = ~(self.fr.bad if positions else self.bad)
         grid = self.grid
-        if self.dom.full_turn:  # close the turn
+        if self.dom.full_turn and not self.dom.turn_only:  # close the turn (a turn after
+            # which the mechanism is not where it started is not closed: its seam is no zero)
             grid = np.append(grid, grid[0] + TWO_PI)
             g = np.append(g, g[0])
             ok = np.append(ok, ok[0])

@@ -76,7 +76,7 @@ class Summary:
     def text(self) -> str:
         """The summary as ``sweep --summary`` prints it."""
         sc = self.scene
-        if sc.input.block is not None:
+        if not compile_plan(sc).steps[0].periodic:  # asked of the driver: a block's travel
             return self._block_text()
         inp = sc.input
         if inp.given is not None:
@@ -123,26 +123,27 @@ class Summary:
         sc = self.scene
         inp, uname = sc.input, sc.units
         driver = compile_plan(sc).steps[0]
+        block = driver.finds[0]
         deg = self.deg
         out = [f"sweep of {sc.title or sc.file or 'the mechanism'}",
-               f"block {inp.block} at {abs(inp.omega):.6g} m/s {driver.sense(inp.omega)}"
+               f"block {block} at {abs(inp.omega):.6g} m/s {driver.sense(inp.omega)}"
                + (f", {abs(inp.alpha):.6g} m/s^2 {driver.sense(inp.alpha)}" if inp.alpha
                   else "") + f" at every place; {self.evaluated} of {self.requested} places "
-               f"s_{inp.block} along its guide evaluated"]
+               f"s_{block} along its guide evaluated"]
         if self.range_deg is not None:
             lo, hi = self.range_deg
-            out.append(f"the block {inp.block} travels from s_{inp.block} = {lo:.6g} to "
+            out.append(f"the block {block} travels from s_{block} = {lo:.6g} to "
                        f"{hi:.6g} {uname} on the scene's branch"
                        + (" (its stated stroke)" if inp.stroke is not None and all(
                            lp.step == driver.label for lp in self.limits) else ""))
             for lp in self.limits:
-                out.append(f"  end at s_{inp.block} = {deg(lp.theta):.6g} {uname}: {lp.step}: "
+                out.append(f"  end at s_{block} = {deg(lp.theta):.6g} {uname}: {lp.step}: "
                            f"{lp.why}")
         if self.evaluated < self.requested:
             out.append(f"  {self.requested - self.evaluated} requested place(s) are left out "
                        "(beyond the ends of its travel, or singular)")
         for cp in self.change_points:
-            out.append(f"change point at s_{inp.block} = {deg(cp.theta):.6g} {uname}: "
+            out.append(f"change point at s_{block} = {deg(cp.theta):.6g} {uname}: "
                        f"{cp.why}")
         out.extend(self.notes)
         out.append("")
@@ -162,7 +163,10 @@ class Summary:
                     out.append(f"{e.name:<{w}}  {e.unit:<7} {e.maximum:>12.6g} "
                                f"{'(constant)':>10}")
                     continue
-                # rounding noise about a true zero (a speed at a dead centre) is 0
+                # rounding noise about a true zero (a speed at a dead centre) is 0 already
+                # (each value within its own error bound: _Reducer._noise); an extreme
+                # refined to a zero of the quantity is found to about 1e-10 of the
+                # quantity's range, the accuracy of its place: written 0 too
                 big = max(abs(e.maximum), abs(e.minimum))
                 mx = "+unbounded" if e.max_unbounded else f"{quiet(e.maximum, big):.6g}"
                 mn = "-unbounded" if e.min_unbounded else f"{quiet(e.minimum, big):.6g}"
@@ -244,7 +248,7 @@ class _Reducer:
             for pin, r in rubbing_arrays(plan, fr.W, fr.n).items():
                 yield f"rub_{pin}", "m/s", r, "rubbing"
         t = torque_array(sc, fr.V, fr.W, self.sw.omega, fr.n)
-        if t is not None and sc.input.block is not None:  # the force driving the block
+        if t is not None and not plan.steps[0].periodic:  # the force driving the block
             yield "force", "N", t, "input force, along the guide"
         elif t is not None:
             yield "torque", "N m", t, "input torque, ccw +"
@@ -344,9 +348,14 @@ class _Reducer:
         tasks, rows = [], []
         scales = self._scales()
         limits = [lp.theta for lp, _ in self._limits_in(theta, spacing)]
+        noise = self._noise(theta)
         for name, (mx, imx, mn, imn, unit, what, cmax, cmin) in self.best.items():
-            zero = 1e-9 * scales.get(unit, 0.0)  # rounding about a true zero
-            mx, mn = (0.0 if abs(mx) <= zero else mx), (0.0 if abs(mn) <= zero else mn)
+            own = noise.get(name)  # each quantity's own error bound where it is reached
+            if own is None:  # (a rubbing velocity, the input effort: the sizes the input sets)
+                zmx = zmn = 1e-9 * scales.get(unit, 0.0)
+            else:
+                zmx, zmn = own(imx), own(imn)
+            mx, mn = (0.0 if abs(mx) <= zmx else mx), (0.0 if abs(mn) <= zmn else mn)
             scale = max(abs(mx), abs(mn))
             if n > 1 and (mx - mn <= 1e-10 * scale or scale == 0.0):
                 rows.append([name, unit, mx, None, mn, None, what])
@@ -527,6 +536,49 @@ class _Reducer:
                         found.setdefault((nm, sense), lp.theta)
         return found
 
+    def _noise(self, theta) -> dict:
+        """name -> f(i): the absolute error bound of each quantity (its own relative bound,
+        :mod:`polygon_method.solver.errorbound`, times the size of its kind) at sample ``i`` of
+        ``theta``, evaluated at the samples where an extreme is reached: below it a value is
+        rounding noise about a true zero, and only that is shown as 0 (a value above it is
+        real however small beside the input's sizes). 0 where the bound is no useful bound
+        (hide nothing). Rubbing velocities and the input effort are not here (the sizes the
+        input sets decide them, as before)."""
+        from ..solver.errorbound import USELESS, error_bounds
+        idx = sorted({int(i) for mx, imx, mn, imn, *_ in self.best.values()
+                      for i in (imx, imn) if i is not None and i >= 0})
+        if not idx or len(theta) == 0:
+            return {}
+        th = np.asarray(theta, dtype=float)[idx]
+        fr = self.sw.evaluate(th)
+        with np.errstate(all="ignore"):
+            eb = error_bounds(Motion(self.scene, self.plan, th, fr.P, fr.V, fr.A, fr.W,
+                                     fr.Al, fr.S, fr.cond, fr.bad))
+        size = {k: np.broadcast_to(np.asarray(v, dtype=float), th.shape)
+                for k, v in eb.scales.items()}
+        where = {k: j for j, k in enumerate(idx)}
+
+        def of(rel, kind):
+            rel = np.broadcast_to(np.asarray(rel, dtype=float), th.shape)
+            absolute = np.where(rel < USELESS, rel * size[kind], 0.0)
+            return lambda i: float(absolute[where[int(i)]])
+        out = {}
+        for p in eb.V:
+            out[f"v_{p}"] = of(eb.V[p], "velocity")
+            out[f"a_{p}"] = of(eb.A[p], "acceleration")
+        for lk in eb.W:
+            out[f"omega_{lk}"] = of(eb.W[lk], "omega")
+            out[f"alpha_{lk}"] = of(eb.Al[lk], "alpha")
+        for s in self.scene.sliders:
+            if s.key in eb.S:
+                ev, ea, ec = eb.S[s.key]
+                out[f"vs_{s.key}"] = of(ev, "velocity")
+                out[f"as_{s.key}"] = of(ea, "acceleration")
+                out[f"ac_{s.key}"] = of(ec, "acceleration")
+            if isinstance(s, FixedPath) and s.point in eb.P:
+                out[f"s_{s.key}"] = of(eb.P[s.point], "position")
+        return out
+
     def _scales(self) -> dict:
         """Typical sizes per unit, below a 1e-9 part of which a value is zero (rounding)."""
         sc = self.scene
@@ -558,7 +610,7 @@ def summarize(scene: Scene, angles=None, *, chunk: int = CHUNK, refine: bool = T
     """Maxima and minima of every quantity over ``angles`` (rad; default every degree),
     reduced chunk by chunk: memory stays that of one chunk whatever the number of angles.
     Each extreme found between samples is then refined by zooming in on it."""
-    if angles is None and scene.input.block is not None:
+    if angles is None and not compile_plan(scene).steps[0].periodic:
         angles = stroke_places(scene)  # a driving block: its travel
     th_req = sweep_angles(angles)
     sw = Sweeper(scene)

@@ -234,15 +234,13 @@ class Solution(Motion):
                 if len(r.bodies) > 2:
                     entry["pairs"] = dict(r.pairs)
                 d["pins"][name] = entry
-        inp = sc.input
+        inp, driver = sc.input, self.plan.steps[0]
         if sc.loads and sc.input.second is None:  # two inputs: no one torque
             # a block driver: the force along its guide (N, signed along it)
-            d["input_torque" if inp.block is None else "input_force"] = self.input_torque
-        if inp.block is not None:  # a block driven along its guide: its place and rates
-            d["input"] = {"block": inp.block, "s": inp.angle, "vs": inp.omega,
-                          "as": inp.alpha, "direction": list(sc.slider(inp.block).u)}
-            if inp.stroke is not None:
-                d["input"]["stroke"] = list(inp.stroke)
+            d[driver.effort_key] = self.input_torque
+        own = driver.input_record(sc)  # a block driver's place and rates; a crank's below
+        if own is not None:
+            d["input"] = own
         else:
             d["input"] = {"crank": inp.crank, "angle": inp.angle, "omega": inp.omega,
                           "alpha": inp.alpha}

@@ -93,8 +93,9 @@ class SweepResult(Motion):
         ``error_bound``, last, ``err_max``: the largest estimated relative error of any
         quantity at that angle (:mod:`polygon_method.solver.errorbound`)."""
         sc = self.scene
-        cols = ([("theta", "deg", self.degrees)] if sc.input.block is None
-                else [(f"s_{sc.input.block}", "m", self.theta)])  # a block driver's place
+        driver = self.plan.steps[0]  # what the parameter is: asked of the driver
+        cols = ([("theta", "deg", self.degrees)] if driver.periodic
+                else [(driver.parameter(sc)[1], "m", self.theta)])  # a block driver's place
         for p in sc.point_names:
             (x, y), (vx, vy), (ax, ay) = self.P[p], self.V[p], self.A[p]
             cols += [(f"x_{p}", "m", x), (f"y_{p}", "m", y), (f"vx_{p}", "m/s", vx),
@@ -274,8 +275,8 @@ def sweep(scene: Scene, angles=None, *, chunk: int = CHUNK) -> SweepResult:
     Angles the crank cannot reach on the scene's branch (beyond a limit position) are left
     out and reported (``left_out``, ``limits``), never filled with NaN or another branch.
     """
-    if angles is None and scene.input.block is not None:
-        angles = stroke_places(scene)
+    if angles is None and not compile_plan(scene).steps[0].periodic:
+        angles = stroke_places(scene)  # a driving block: its travel
     th_req = sweep_angles(angles)
     if isinstance(chunk, bool) or not isinstance(chunk, (int, np.integer)) or chunk < 1:
         raise SceneError(f"chunk = {chunk!r}: a whole number of crank angles, 1 or more")

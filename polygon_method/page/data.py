@@ -218,7 +218,7 @@ def page_data(fr: Frames) -> dict:
         "theta": [round(float(t), 6) for t in fr.degrees],
         "start": fr.start, "fullTurn": fr.full_turn, "limits": fr.limits_text,
         "crank": sc.input.crank, "pivot": sc.input.pivot,
-        **({} if sc.input.block is None else {"param": list(fr.parameter)}),
+        **({} if sol.plan.steps[0].periodic else {"param": list(fr.parameter)}),
         "ground": {p: [float(c) for c in xy] for p, xy in sc.ground.items()},
         "points": moving,
         "images": {p: image_name(sc, p) for p in sc.point_names},  # b for B (o1: a moving O)

@@ -100,11 +100,7 @@ class Frames:
     def parameter(self) -> tuple:
         """(name, symbol, unit) of what the frames step through: the crank angle (deg), or
         a driving block's place (the scene's length unit)."""
-        sc = self.sol.scene
-        if sc.input.block is None:
-            return ("crank angle", "θ", "°")
-        b = sc.input.block
-        return (f"place of block {b}", f"s_{b}", f" {sc.units}")
+        return self.sol.plan.steps[0].parameter(self.sol.scene)  # asked of the driver
 
     @property
     def moving(self) -> tuple:

@@ -124,7 +124,7 @@ def page_html(fr: Frames, *, verdicts=None, answers_title: str = "") -> str:
     d = page_data(fr)
     title = d["title"]
     name, symbol, unit = fr.parameter
-    block = sc.input.block is not None
+    block = not fr.sol.plan.steps[0].periodic  # a block driven along its guide
     cycle = "a full turn of the crank" if fr.full_turn else \
         f"the block's travel ({fr.limits_text}): near an end where the mechanism stops " \
         "assembling the polygons grow without bound and run off their panels" if block else \

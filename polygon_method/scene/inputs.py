@@ -203,6 +203,13 @@ class _Input:
             raise self.error("block names the driving block's point, e.g. block = \"A\"",
                              "input", "block")
         sl = self.slider_points.get(name)
+        if sl is not None and hasattr(sl, "guide") and not sl.slot:  # along a moving link
+            raise self.error(f"block {name} slides along the moving link {sl.guide}: a driving "
+                             "block slides on a fixed straight guide; a block driven along a "
+                             "turning link (its speed relative to the link given, beside the "
+                             "link's own motion) is a second input, which is not solved yet: "
+                             f"pin {name} to a link, or drive a block on a fixed guide",
+                             "input", "block")
         if not isinstance(sl, FixedPath) or sl.slot:
             raise self.error(f"no block {name} on a fixed path in [sliders] (the driving block "
                              "slides on a fixed straight guide: A = { path = \"horizontal\" })",

@@ -605,6 +605,19 @@ class _Compiler:
                      if lk.key not in self.used_links and (lk.p in missing or lk.q in missing)]
             where = f"[links] {', '.join(loose)}" if loose else "[links]"
             raise MobilityError(why, file=sc.file, key=where)
+        free = [p for p in extra_sliders if m > 1 and p not in sc.ground
+                and not any(p in (lk.p, lk.q) for lk in sc.links)
+                and not any(cp.name == p for cp in sc.points)]
+        if free:  # a block on a guide and nothing else: it slides freely, a motion too many
+            one = len(free) == 1
+            raise MobilityError(
+                f"{mob}: the mechanism is under-constrained; the block"
+                f"{'' if one else 's'} {', '.join(free)} slide{'s' if one else ''} freely "
+                f"along {'its guide' if one else 'their guides'}: nothing places "
+                f"{'it' if one else 'them'} (pin {'it' if one else 'them'} to a link; a block "
+                "driven along a moving guide, its sliding given beside the guide's own motion, "
+                "is a second input, which is not solved yet)", file=sc.file,
+                key=f"[sliders] {', '.join(free)}")
         parts = []
         if extra_links:
             parts.append(f"link{'s' if len(extra_links) > 1 else ''} "

@@ -53,11 +53,19 @@ _CHANGE = 1e-7
 MAX_CYCLE_POINTS = 1000
 #: a reachable range narrower than this (rad) is a locked linkage, not a motion
 _LOCKED = 1e-5
-#: offset either side of a change point when comparing the branches' velocities (rad)
+#: the words a note opens with where a turn of the crank does not bring the mechanism back
+_NOT_AGAIN = "after a full turn of the crank the mechanism is not where it started"
+#: offset either side of a change point when comparing the branches' velocities (rad; for
+#: a driving block, times the length that plays a radian's part: ``Step.parameter_scale``,
+#: as for every offset below)
 _DELTA = 1e-6
 #: samples this close to a change point (rad) get their velocities and accelerations by
 #: extrapolation from both sides (the construction is indeterminate there)
 _NEAR = 2e-3
+#: where the condition is measured either side of a change point, for its slope (rad)
+_PROBE = 0.01
+#: the widest a change point's neighbourhood is made (rad)
+_WIDEST = 0.05
 
 
 # --------------------------------------------------------------------------- records
@@ -93,7 +101,8 @@ class ChangePoint:
     followed: bool
     flipped: bool
     why: str
-    radius: float = _NEAR  # rad: closer than this the construction is not trusted
+    #: closer than this the construction is not trusted (rad; a driving block's place: m)
+    radius: float = _NEAR
 
     @property
     def degrees(self) -> float:
@@ -122,6 +131,10 @@ class Domain:
     periodic: bool = True
     #: a block driver's places are shown in the scene's length unit: metres per unit
     unit: float = 1.0
+    #: a full turn after which the mechanism is not where it started (a wheel that turns a
+    #: fraction of a turn more per turn of the crank): every angle is taken on this turn
+    #: (``map``), and the notes say after how many turns the motion repeats
+    turn_only: bool = False
 
     def map(self, theta):
         """Crank angles (rad, any turn) -> the same angles in ``[lo, lo + 2 pi)`` and a mask
@@ -247,9 +260,12 @@ class Sweeper:
         inp = scene.input
         self.theta0, self.omega, self.alpha = inp.angle, inp.omega, inp.alpha
         self.driver = self.plan.steps[0]
+        #: how much of the parameter plays a radian's part (1 for a crank; for a driving
+        #: block, a length along its guide): the offsets near a change point scale with it
+        self.scale = self.driver.parameter_scale(scene)
         #: the parameter's scouting span: a turn of a crank; a block's guide as far as the
         #: links reach either side of its place (a length)
-        self.period = TWO_PI if self.driver.periodic else _block_span(scene)
+        self.period = TWO_PI if self.driver.periodic else _block_span(scene, self.driver)
         dom = _DOMAINS.get(self.plan)
         if dom is None:
             dom = _DOMAINS[self.plan] = (self._explore() if self.driver.periodic
@@ -259,7 +275,7 @@ class Sweeper:
             lp = dom.limits[0] if dom.limits else None
             u = scene.length_unit
             raise SingularStepError(
-                f"the block {inp.block} can move only {(dom.hi - dom.lo) / u:.2g} "
+                f"the block {self.driver.finds[0]} can move only {(dom.hi - dom.lo) / u:.2g} "
                 f"{scene.units} from its place in the scene: the linkage is locked there"
                 + (f" ({lp.why})" if lp else ""), step=lp.step if lp else None,
                 file=scene.file)
@@ -297,6 +313,8 @@ class Sweeper:
                              "branch: the motion repeats only every two turns; the sweep "
                              "shows the turn centred on the scene's instant")
             limits = tuple(x for x in (llim,) if x is not None)
+            if not notes and full:
+                notes += self._repeats(rsegs[-1][2], t0)
         else:
             lsegs, lcps, llim = self._walk(-1, TWO_PI - (rlim.theta - t0))
             lo = llim.theta if llim is not None else rlim.theta - TWO_PI
@@ -311,7 +329,28 @@ class Sweeper:
                 merged.append((a, b, p))
         segs = [(a, b, p) for a, b, p in merged if b > a] or merged[:1]
         cps = tuple(sorted(lcps + rcps, key=lambda c: c.theta))
-        return Domain(lo, hi, full, tuple(segs), limits, cps, tuple(notes))
+        return Domain(lo, hi, full, tuple(segs), limits, cps, tuple(notes),
+                      turn_only=bool(notes) and full and notes[-1].startswith(_NOT_AGAIN))
+
+    def _repeats(self, plan, t0) -> list:
+        """[] where the mechanism is where it started after a turn of the crank; else the
+        note saying after how many turns it is (a wheel turning 2.5 times per turn of its
+        arm: 2), or that it is not within 12, and that the turn shown is the one centred
+        on the scene's instant."""
+        k = np.arange(13.0)
+        fr = run_arrays(plan, t0 + TWO_PI * k, self.omega, self.alpha, vel=False, acc=False)
+        size = max((lk.length for lk in self.scene.links), default=1.0)
+        xy = np.array([c for p in fr.P.values() for c in (np.broadcast_to(p[0], k.shape),
+                                                           np.broadcast_to(p[1], k.shape))])
+        same = np.all(np.abs(xy - xy[:, :1]) <= 1e-9 * size, axis=0)
+        if same[1]:
+            return []
+        n = next((int(i) for i in range(2, 13) if same[i]), None)
+        when = (f"only every {n} turns" if n is not None else "not within 12 turns")
+        lo, hi = math.degrees(t0 - math.pi), math.degrees(t0 + math.pi)
+        return [f"{_NOT_AGAIN}: the motion repeats {when} (a wheel turns a fraction of a "
+                "turn more per turn of the crank); ranges and extremes are over the turn "
+                f"centred on the scene's instant, the crank from {lo:.6g} to {hi:.6g} deg"]
 
     def _stroke(self) -> Domain:
         """The places a driving block reaches from the scene's on its branch: its stated
@@ -326,7 +365,7 @@ class Sweeper:
             wsegs, wcps, lim = self._walk(direction, budget)
             if lim is None and end is None:
                 raise SceneError(
-                    f"the block {sc.input.block} can travel {('back', 'on')[(direction + 1) // 2]} from its place "
+                    f"the block {self.driver.finds[0]} can travel {('back', 'on')[(direction + 1) // 2]} from its place "
                     f"without limit (nothing in the mechanism stops it within "
                     f"{self.period / sc.length_unit:.6g} {sc.units}): state its stroke, "
                     "[input] stroke = [from, to]", file=sc.file, key="[input] stroke")
@@ -356,7 +395,7 @@ class Sweeper:
         points met and the limit position where it stopped (or None)."""
         plan, start, done = self.plan, self.theta0, 0.0
         segs, cps = [], []
-        while budget - done > 1e-12:
+        while budget - done > 1e-12 * self.scale:
             left = budget - done
             n = max(65, int(SCOUT * left / self.period) + 2)
             grid = start + direction * np.linspace(0.0, left, n)
@@ -413,7 +452,7 @@ class Sweeper:
             if j == 0:
                 break
             good, bad = pts[j - 1], pts[j]
-            if abs(bad - good) < 1e-14:
+            if abs(bad - good) < 1e-14 * self.scale:
                 break
         return float(good), step or "the plan"
 
@@ -462,10 +501,11 @@ class Sweeper:
     def _decide(self, plan, st, tc, direction):
         """At a change point: keep the branch or flip ``st``'s, whichever leaves with the
         velocity the linkage arrives with."""
-        before = self._velocity_vector(plan, tc - direction * _DELTA)
-        keep = self._velocity_vector(plan, tc + direction * _DELTA)
+        k = self.scale  # a radian, or the length along its guide a driving block takes for one
+        before = self._velocity_vector(plan, tc - direction * _DELTA * k)
+        keep = self._velocity_vector(plan, tc + direction * _DELTA * k)
         flipped_plan = _variant(plan, {st.index})
-        flip = self._velocity_vector(flipped_plan, tc + direction * _DELTA)
+        flip = self._velocity_vector(flipped_plan, tc + direction * _DELTA * k)
         scale = np.linalg.norm(before) + 1e-300
         dk, df = np.linalg.norm(keep - before), np.linalg.norm(flip - before)
         lo, hi = min(dk, df), max(dk, df)
@@ -478,17 +518,17 @@ class Sweeper:
                     (f" ({pt} passes to its other side)" if flipped else ""))
             # where the condition is below a few times the singular limit, the values are
             # taken from both sides instead (see richardson)
-            probe = 0.01
+            probe = _PROBE * k
             c1 = self._scout(plan, np.array([tc - direction * probe])).cond[st.index][0]
             c2 = self._scout(new, np.array([tc + direction * probe])).cond[st.index][0]
-            slope = max(min(c1, c2) / probe, 1e-12)
-            radius = min(max(_NEAR, 4 * TOL.singular / slope), 0.05)
+            slope = max(min(c1, c2) / probe, 1e-12 / k)
+            radius = min(max(_NEAR * k, 4 * TOL.singular / slope), _WIDEST * k)
             return new, ChangePoint(tc, st.label, pt, True, flipped, f"{where}; {what}",
                                     radius)
         why = (f"{where}, and both branches leave with the same velocity: which one the "
                "linkage takes cannot be told (a third, phase-shifted crank would decide it); "
                "the sweep stops here")
-        return plan, ChangePoint(tc, st.label, pt, False, False, why)
+        return plan, ChangePoint(tc, st.label, pt, False, False, why, _NEAR * k)
 
     # ----- evaluating
     def segment_plans(self, t):
@@ -506,7 +546,7 @@ class Sweeper:
         """
         theta = np.asarray(theta, dtype=float)
         dom = self.domain
-        if len(dom.segments) == 1 and (dom.full_turn or (
+        if len(dom.segments) == 1 and ((dom.full_turn and not dom.turn_only) or (
                 len(theta) and dom.lo <= theta.min() and theta.max() <= dom.hi)):
             return run_arrays(dom.segments[0][2], theta, self.omega, self.alpha, vel, acc)
         t, _ = dom.map(theta)
@@ -538,10 +578,13 @@ class Sweeper:
                 out.append((idx, 2.0 * c.radius))
         return out
 
-    def richardson(self, theta, h=2.5 * _NEAR):
+    def richardson(self, theta, h=None):
         """Positions, velocities and accelerations at angles next to a change point, where
         the construction is indeterminate, from both sides: f(t) = [15 m(h) - 6 m(2h) + m(3h)]
-        / 10, m(h) the mean of f(t - h) and f(t + h) (error O(h^6))."""
+        / 10, m(h) the mean of f(t - h) and f(t + h) (error O(h^6)); ``h`` by default
+        2.5 times the neighbourhood's least radius (in the driver's scale)."""
+        if h is None:
+            h = 2.5 * _NEAR * self.scale
         th = np.asarray(theta, dtype=float)
         fr = {s: self.evaluate(th + s * h) for s in (-3, -2, -1, 1, 2, 3)}
         base = self.evaluate(th)
@@ -560,10 +603,10 @@ class Sweeper:
         return _motion(th, P, V, A, W, Al, S, base.cond, base.bad)
 
 
-def _block_span(scene) -> float:
+def _block_span(scene, driver) -> float:
     """How far along its guide a driving block is searched for the ends of its travel,
     either side of its place: twice the links' lengths and the ground's extent (m)."""
-    path = scene.slider(scene.input.block)
+    path = scene.slider(driver.finds[0])
     return 2.0 * sum(lk.length for lk in scene.links) + max(
         (math.dist(xy, path.through) for xy in scene.ground.values()), default=0.0)
 

@@ -129,8 +129,15 @@ REQUIRED = ("kind", "finds", "links", "needs", "title", "params", "dimensions", 
 #: along its guide), ``parameter_words`` (that parameter in words), ``input_scales`` (the
 #: least sizes of velocity, acceleration, omega, alpha the input sets), ``input_words``
 #: and ``effort_words`` (a driver's own line of the printed solution and of its input
-#: effort; None: a crank's, which the views write)
-OPTIONAL = ("periodic", "parameter_words", "input_scales", "input_words", "effort_words", "assemble", "auxiliary", "branching", "image_by_similar_triangle", "draws_relative",
+#: effort; None: a crank's, which the views write), ``parameter`` (its name, symbol and
+#: unit as an axis or a column heads it), ``parameter_scale`` (how much of the parameter
+#: plays the part of a crank's radian: the sweep's offsets near a change point are
+#: multiples of it), ``effort_key`` (the JSON key of the input effort), ``input_record``
+#: (a driver's own JSON ``input``; None: a crank's, which the solution writes),
+#: ``drive_caption`` (a driver's own line under the drawings; None: a crank's)
+OPTIONAL = ("periodic", "parameter_words", "input_scales", "input_words", "effort_words",
+            "parameter", "parameter_scale", "effort_key", "input_record", "drive_caption",
+            "assemble", "auxiliary", "branching", "image_by_similar_triangle", "draws_relative",
             "other_assembly_mistake", "needs_links", "bind_instant", "group_key",
             "bind_group", "bind_group_instant", "rounding", "error_bound", "contacts",
             "contact_motion", "shapes", "produced", "drawn", "output", "default_hint")
@@ -189,6 +196,31 @@ class Step:
     def effort_words(self, effort):
         """The printed line of the driving effort the power balance gives (``effort``, SI),
         for a driver whose :meth:`input_words` is not None."""
+        return None
+
+    #: the JSON key of the driving effort the power balance gives (a crank's torque)
+    effort_key = "input_torque"
+
+    def parameter(self, scene) -> tuple:
+        """(name, symbol, unit) of the motion's parameter, as an axis or a column heads it,
+        asked of the plan's first step (the driver): a crank's angle in degrees."""
+        return ("crank angle", "θ", "°")
+
+    def parameter_scale(self, scene) -> float:
+        """How much of the motion's parameter (in SI) plays the part of a crank's radian,
+        asked of the driver: the offsets a sweep takes near a change point (to compare the
+        branches' velocities, to extrapolate from both sides) are multiples of it. 1 for a
+        crank, whose parameter is its angle in radians."""
+        return 1.0
+
+    def input_record(self, scene):
+        """The JSON ``input`` of a solve, asked of the driver: None for a crank (the
+        solution writes its angle and speed)."""
+        return None
+
+    def drive_caption(self, scene):
+        """The line under the drawings saying what drives the mechanism, asked of the
+        driver: None for a crank (the drawing writes its angle and speed)."""
         return None
 
     def input_scales(self, scene):

@@ -140,6 +140,44 @@ class BlockDriver(Step):
         return scene.input.omega, scene.input.alpha
 
     # ----- the driver protocol
+    effort_key = "input_force"  # the force along its guide (N, signed along it)
+
+    def parameter(self, scene) -> tuple:
+        """(name, symbol, unit): the block's place along its guide, in the scene's unit."""
+        return (f"place of block {self.point}", f"s_{self.point}", f" {scene.units}")
+
+    def parameter_scale(self, scene) -> float:
+        """The length along the guide that plays the part of a crank's radian: the
+        shortest link pinned to the block (moving the block by that much turns it through
+        about a radian; the shortest link of all where none is), and no more than the
+        stated stroke over 2 pi (a crank's turn is 2 pi radians)."""
+        X = self.point
+        own = [lk.length for lk in scene.links if X in (lk.p, lk.q) and lk.length > 0]
+        every = [lk.length for lk in scene.links if lk.length > 0]
+        scale = min(own or every or [self.reach()])
+        stroke = scene.input.stroke
+        if stroke is not None and stroke[1] != stroke[0]:
+            scale = min(scale, abs(stroke[1] - stroke[0]) / (2.0 * math.pi))
+        return scale
+
+    def input_record(self, scene):
+        """The JSON ``input``: the block, its place s, velocity vs and acceleration as along
+        its guide (SI), the guide's direction and its stated stroke."""
+        inp = scene.input
+        d = {"block": self.point, "s": inp.angle, "vs": inp.omega, "as": inp.alpha,
+             "direction": list(scene.slider(self.point).u)}
+        if inp.stroke is not None:
+            d["stroke"] = list(inp.stroke)
+        return d
+
+    def drive_caption(self, scene):
+        """The line under the drawings: the block's place, its velocity and acceleration."""
+        inp = scene.input
+        return (f"block {self.point} at s = {in_units(inp.angle, scene.length_unit)} "
+                f"{scene.units}, {abs(inp.omega):.4g} m/s {self.sense(inp.omega)}"
+                + (f", {abs(inp.alpha):.4g} m/s² {self.sense(inp.alpha)}" if inp.alpha
+                   else ""))
+
     def input_scales(self, scene):
         """(v, a, omega, alpha): the least sizes of each kind the input sets (the error
         bounds are relative to them): |vs|, |as| of the block, and for turning, the same

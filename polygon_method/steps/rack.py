@@ -24,6 +24,7 @@ from dataclasses import dataclass
 from ..common.errors import SceneError
 from ..common.numbers import in_units
 from .base import Construction, DirectionLine, Step, Vector, absolute, image_label
+from .rounding import EPS, line_rounding
 
 __all__ = ["RackStep", "rack_rates", "recognise"]
 
@@ -171,8 +172,26 @@ class RackStep(Step):
 
     def error_bound(self, walk, k, p_in, v_in, a_in):
         """The pinion's errors (its omega and alpha times the pitch radius), plus the
-        rounding of the rack's own formula."""
-        return p_in + k, v_in + k, a_in + k, v_in + k, a_in + k
+        rounding of the rack's own formula and of its path's numbers, as a slider counts
+        them (:func:`.rounding.line_rounding`): ``R = T + s u`` is rounded to the digits of
+        the path's point T (far from the mechanism, far along the path), and the pitch
+        factor ``k = -(T - O) x u`` cancels ``|T - O|`` down to the pitch radius, so
+        ``vs = k omega`` and ``as = k alpha`` err by ``(K eps + du) |T - O| / |k|`` of
+        themselves (``du`` the rounding of the path's direction, none along an axis)."""
+        tx, ty, ux, uy, kk = self.dims[:5]
+        ox, oy = self.dims[7], self.dims[8]
+        x, y = walk.P[self.point]
+        sz = walk.sizes
+        axis = ux == 0.0 or uy == 0.0  # a horizontal or vertical path: u is exact
+        angle = math.atan2(uy, ux)
+        du = 0.0 if axis else 4 * EPS * max(1.0, abs(angle))
+        own = line_rounding(self.rounding, tx, ty, x, y, sz["position"],
+                            None if axis else angle)
+        pitch = (self.rounding * EPS + du) * math.hypot(tx - ox, ty - oy) / abs(kk)
+        vs, a_s = walk.motion.S[self.point][0], walk.motion.S[self.point][1]
+        v = v_in + k + pitch * abs(vs) / sz["velocity"]
+        a = a_in + k + pitch * abs(a_s) / sz["acceleration"]
+        return p_in + k + own, v, a, v, a
 
     # ----- what the views ask
     def contact(self, P):

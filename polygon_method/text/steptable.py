@@ -195,7 +195,7 @@ def _config(doc, sol, space):
     if not driver.periodic:  # a block driven along its guide: its place is given
         facts.append(f"driving {driver.title}, at s_{inp.tip} = {_len_unit(sol, inp.angle)} "
                      f"from {driver.origin} along it (given)")
-        _slider_facts(facts, sc, u)
+        _slider_facts(facts, sc, u, driver.finds[0])
         _drawing(doc, sol, space, facts)
         return
     ang = math.degrees(inp.angle)
@@ -214,9 +214,9 @@ def _config(doc, sol, space):
     _drawing(doc, sol, space, facts)
 
 
-def _slider_facts(facts, sc, u):
+def _slider_facts(facts, sc, u, block=None):
     for s in sc.sliders:
-        if s.point == sc.input.block:  # the driving block: said above
+        if s.point == block:  # the driving block: said above
             continue
         if s.slot:  # a peg in two slots
             facts.append(f"peg {s.point} in the slot of {s.guide}" if isinstance(s, GuideSlider)

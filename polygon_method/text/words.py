@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import math
 
+from ..solver.compiler import compile_plan
 from ..common.numbers import fmt, sense
 from ..scene import guide_words
 
@@ -86,8 +87,9 @@ def given(sc) -> list:
                   if c.stroke else "")
         out.append(f"A hydraulic cylinder {c.key}: its barrel pivoted at {c.barrel}, its rod "
                    f"pinned at {c.rod}{stroke}.")
-    if sc.input.block is not None:  # a block driven along its guide: its place and motion
-        out.append(_block_words(sc))
+    driver = compile_plan(sc).steps[0]  # what drives: asked of the plan's first step
+    if not driver.periodic:  # a block driven along its guide: its place and motion
+        out.append(_block_words(sc, driver.finds[0]))
     else:
         _crank_words(sc, out)
     for pin in sc.pins:
@@ -141,10 +143,10 @@ def _crank_words(sc, out):
                       f"{sense(two.alpha)}" if two.alpha else "") + ".")
 
 
-def _block_words(sc) -> str:
+def _block_words(sc, block) -> str:
     """The driving block in words: its guide, its place and its motion."""
     inp = sc.input
-    path = sc.slider(inp.block)
+    path = sc.slider(block)
     named = [p for p, xy in sc.ground.items() if xy == path.through]
     origin = named[0] if named else _at(sc, path.through)
     guide = (f"the {path.label} guide" if path.label in ("horizontal", "vertical")
@@ -159,7 +161,7 @@ def _block_words(sc) -> str:
                 return word
         return f"at {fmt(math.degrees(math.atan2(uy, ux)) % 360)}°"
 
-    return (f"The block {inp.block} drives the mechanism, sliding on {guide} through "
+    return (f"The block {block} drives the mechanism, sliding on {guide} through "
             f"{origin}; at the instant shown it is {_len(sc, abs(inp.angle))} from {origin}"
             + (f" ({'+' if inp.angle >= 0 else '-'} along the guide)" if inp.angle else "")
             + f", moving at {fmt(abs(vs))} m/s {way(vs)}"
