@@ -28,7 +28,6 @@ from .errors import TOL, PolygonMethodError
 from .kinematics import Motion, hypot
 from .numbers import fmt_angular, quiet, sense  # noqa: F401  (re-exported)
 from .compiler import compile_plan
-from .forces import analyse, force_value, forces_dict
 from .plan import Context
 from .scene import FixedPath, Scene
 
@@ -107,7 +106,11 @@ class Solution(Motion):
         analysis does not cover (see :attr:`forces_refused`)."""
         if not self.scene.has_forces:
             return None
-        return self._get("forces", lambda: analyse(self))
+        return self._get("forces", self._analyse)
+
+    def _analyse(self):
+        from .forces import analyse  # lazy: a scene without masses never loads forces/
+        return analyse(self)
 
     @property
     def forces_refused(self):
@@ -246,6 +249,7 @@ class Solution(Motion):
                           "alpha": inp.alpha}
         refused = self.forces_refused
         if sc.has_forces:
+            from .forces import forces_dict  # lazy, as in `forces`
             d["forces"] = None if refused else forces_dict(self.forces)
         if inp.second is not None:
             two = inp.second
@@ -305,6 +309,7 @@ class Solution(Motion):
         if kind == "torque":
             return self.forces.input_torque if self.scene.has_forces else self.input_torque
         if kind in ("F", "N"):
+            from .forces import force_value  # lazy, as in `forces`
             return force_value(self.forces, kind, names[0])
         if kind in ("vu", "au"):  # the guide's point under a block (v_A1, a_A1)
             return hypot(*self.under_block(names[0], "velocity" if kind == "vu"

@@ -28,7 +28,6 @@ import numpy as np
 from .derived import input_torque, largest, pin_rubbing
 from .errorbound import error_bounds
 from .errors import TOL, PolygonMethodError, SceneError
-from .forces import analyse
 from .kinematics import Motion
 from .compiler import compile_plan
 from .scene import Scene
@@ -130,6 +129,7 @@ class SweepResult(Motion):
         force and the size of each pin force (named ``F_<pin>_<on>_<by>``)."""
         if not self.scene.has_forces or not len(self.theta):
             return []
+        from .forces import analyse  # lazy: a scene without masses never loads forces/
         try:
             f = analyse(self)
         except PolygonMethodError:
