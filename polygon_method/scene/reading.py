@@ -34,10 +34,12 @@ MAX_SCENE_BYTES = 1 << 20
 MAX_POINTS = 20000
 
 
-def load_scene(path, *, variants: bool = True) -> Scene:
+def load_scene(path, *, variants: bool = True, answers: bool = True) -> Scene:
     """Read and check a scene file. Raises :class:`SceneError` naming file, key and line.
     With ``variants=False`` the ``[variants]`` table is left unread (``scene.variation``
-    is None): for a command that makes no variants, which need not pay for reading it."""
+    is None): for a command that makes no variants, which need not pay for reading it.
+    With ``answers=False`` the ``[answers]`` table is left unread (``scene.answers`` is
+    empty, ``scene.tolerance`` None): for a command that checks no answers."""
     path = _path_of(path, "scene")
     try:
         data = _read_start(path)
@@ -59,7 +61,7 @@ def load_scene(path, *, variants: bool = True) -> Scene:
         raise SceneError(f"not UTF-8 text (byte {exc.start}); save the scene as UTF-8",
                          file=str(path)) from None
     try:
-        return parse_scene(text, file=str(path), variants=variants)
+        return parse_scene(text, file=str(path), variants=variants, answers=answers)
     except PolygonMethodError as exc:
         raise exc.located(str(path))
 
@@ -124,7 +126,8 @@ def toml_table(text: str) -> dict:
     return tomllib.loads(text)
 
 
-def parse_scene(text: str, file: str | None = None, *, variants: bool = True) -> Scene:
+def parse_scene(text: str, file: str | None = None, *, variants: bool = True,
+                answers: bool = True) -> Scene:
     """Parse scene text (TOML). See :func:`load_scene`."""
     if isinstance(text, (bytes, bytearray)):
         raise SceneError("the scene's text is needed as a str: decode the bytes (UTF-8), or "
@@ -148,6 +151,7 @@ def parse_scene(text: str, file: str | None = None, *, variants: bool = True) ->
                          "[ground], [links] and [input]", file=file)
     loader = _Loader(raw, text, file)
     loader.read_variants = variants
+    loader.read_answers = answers
     return loader.scene()
 
 
@@ -522,7 +526,8 @@ class _Loader(_Tables, _Input, _Variants, _Masses):
         loads = self.loads(known)
         masses = self.masses(points, sliders)
         gravity = self.gravity()
-        tolerance, answers = self.answers(known, sliders, pins, loads)
+        tolerance, answers = self.answers(known, sliders, pins, loads) \
+            if getattr(self, "read_answers", True) else (None, ())
         self.connected(links, points, sliders, ground, inp, cylinders, rolling)
         if len(known) > MAX_POINTS:
             raise SceneError(f"the scene has {len(known)} points: at most {MAX_POINTS} (a "
