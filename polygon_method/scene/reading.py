@@ -159,7 +159,10 @@ def toml_lines(text: str) -> list:
     """The lines of a TOML text as TOML counts them: split at line feeds only (not at the
     form feeds, U+2028 and other breaks that ``str.splitlines`` also splits at, which a
     string or a comment may hold)."""
-    return [line[:-1] if line.endswith("\r") else line for line in text.split("\n")]
+    lines = text.split("\n")
+    if "\r" not in text:  # (the usual file: nothing to take off)
+        return lines
+    return [line[:-1] if line.endswith("\r") else line for line in lines]
 
 
 def scene_table(scene: Scene) -> dict:
@@ -331,8 +334,22 @@ def _printable(text):
 _INT64 = 1 << 63
 #: what any integer beyond 64 bits is written with: 16 or more digits in a row (decimal
 #: 19, hex 16, octal 21, binary 64, underscores between them); a text without such a run
-#: has none, and its values need not be walked
-_LONG_RUN = re.compile(r"[0-9A-Fa-f_]{16,}")
+#: has none, and its values need not be walked. Looked for in the text's UTF-8 bytes, each
+#: digit byte made "x" and every other byte " " (one C pass, where a regular expression
+#: tries every position): a digit is one ASCII byte, and no other character's bytes are
+#: digits, so the runs are the same
+_LONG_RUN = b"x" * 16
+_DIGITS = bytes(ord("x") if chr(c) in "0123456789ABCDEFabcdef_" else ord(" ")
+                for c in range(256))
+
+
+def _has_long_run(text: str) -> bool:
+    """Whether ``text`` has 16 or more of ``[0-9A-Fa-f_]`` in a row.
+
+    >>> _has_long_run("BC = 1234567890123456"), _has_long_run("BC = 123456789012345 # é")
+    (True, False)
+    """
+    return _LONG_RUN in text.encode("utf-8", "replace").translate(_DIGITS)
 
 
 def _long_integer(raw):
@@ -354,7 +371,7 @@ class _Loader(_Tables, _Input, _Variants, _Masses):
     def __init__(self, raw: dict, text: str, file):
         self.raw = raw
         self.lines = toml_lines(text)
-        self.long_run = _LONG_RUN.search(text) is not None
+        self.long_run = _has_long_run(text)
         self.file = file
         self.unit = "mm"
         self.strokes, self.fixed = {}, []  # the fixed paths: directions (rad), records
