@@ -92,6 +92,8 @@ class Solution(Motion):
     @property
     def input_torque(self):
         """T on the crank, ccw positive: T w + sum(F . v) = 0. None without loads."""
+        if not self.scene.loads:  # (the usual scene: nothing to balance)
+            return None
         c = self._cache
         t = c.get("torque", _UNSET)  # None is a value (no loads): a sentinel, not a raise
         if t is _UNSET:
@@ -422,7 +424,7 @@ def solve(scene: Scene) -> Solution:
     plan = compile_plan(scene)
     inp = scene.input
     sol = _new(Solution)  # Solution(scene, plan, ...): filled in here, by the plan too
-    plan.instant(Context(inp.angle, inp.omega, inp.alpha), sol)  # = plan.run(ctx), one instant
+    plan.instant(Context.instant(inp.angle, inp.omega, inp.alpha), sol)  # = plan.run(ctx)
     sol.scene = scene
     sol.plan = plan
     sol.theta = inp.angle

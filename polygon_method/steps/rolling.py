@@ -79,6 +79,8 @@ def recognise(g, name):
     """The point of a rolling wheel, once its centre (and the gear it meshes with) is
     known."""
     sc = g.scene
+    if not sc.rolling:  # (the usual scene: nothing rolls)
+        return None
     pr = sc.rolling_of(name)
     if pr is None or pr.on == "rack" or pr.centre not in g.P or pr.wheel in g.used_links:
         return None
