@@ -21,14 +21,14 @@
 from __future__ import annotations
 
 from .derived import input_torque as _torque
-from .derived import PinRubbing, pin_records, power_terms
+from .derived import PinRubbing, power_terms, rubbing_records
 from .centres import JSON_BODIES, centres_dict, locate
 from .errorbound import NO_BOUND, USELESS, bounds_dict, error_bounds
 from .errors import TOL, PolygonMethodError
 from .kinematics import Motion, hypot
 from .numbers import fmt_angular, quiet, sense  # noqa: F401  (re-exported)
 from .compiler import compile_plan
-from .plan import Context
+from .steps.base import Instant
 from .scene import FixedPath, Scene
 
 __all__ = ["solve", "Solution", "PinRubbing", "sense", "fmt_angular"]
@@ -81,7 +81,7 @@ class Solution(Motion):
         c = self._cache
         r = c.get("rubbing")
         if r is None:
-            r = c["rubbing"] = pin_records(self.plan.pins, self.W, self.plan.dims.radii)
+            r = c["rubbing"] = rubbing_records(self.plan.pin_table, self.W)
         return r
 
     @property
@@ -424,7 +424,12 @@ def solve(scene: Scene) -> Solution:
     plan = compile_plan(scene)
     inp = scene.input
     sol = _new(Solution)  # Solution(scene, plan, ...): filled in here, by the plan too
-    plan.instant(Context.instant(inp.angle, inp.omega, inp.alpha), sol)  # = plan.run(ctx)
+    ctx = _new(Instant)  # Context.instant(inp.angle, inp.omega, inp.alpha), one call fewer
+    ctx.theta = inp.angle
+    ctx.omega = inp.omega
+    ctx.alpha = inp.alpha
+    ctx.cond = {}
+    plan.instant(ctx, sol)  # = plan.run(ctx), one instant
     sol.scene = scene
     sol.plan = plan
     sol.theta = inp.angle
