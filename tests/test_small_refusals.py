@@ -191,3 +191,23 @@ def test_a_negative_number_in_exponent_form_is_an_option_s_value(capsys):
     plain = capsys.readouterr().out
     assert main(["sweep", scene, "--from", "-1e1", "--to", "1e1", "--step", "1e1"]) == 0
     assert capsys.readouterr().out == plain and "3 of 3 crank angles" in plain
+
+
+def test_a_two_letter_name_is_split_as_the_regular_expressions_split_it():
+    """``split_name`` reads two capitals at once; every other name by the expressions of a
+    link's name and a point's name, which are the reference here for every name of two
+    characters drawn from letters, digits, dashes, spaces and non-ASCII letters."""
+    import string
+
+    from polygon_method.scene.records import _LINK_NAME, POINT_NAME, split_name
+
+    def reference(name):
+        if not _LINK_NAME.match(name) or name.endswith("-"):
+            return ()
+        return tuple(POINT_NAME.findall(name))
+
+    chars = string.ascii_letters + string.digits + "-_ \u00c4\u00c9\u00df\u01c5\n"
+    names = [a + b for a in chars for b in chars]
+    assert sum(bool(reference(n)) for n in names) > 700  # the fast road taken, and not
+    for name in names:
+        assert split_name(name) == reference(name), repr(name)
