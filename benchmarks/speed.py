@@ -24,7 +24,10 @@ beside the peer it is compared with and the ratio the architecture issue asks fo
   from the command line; and the warm solve's cost per link of a 1,001-link chain and of
   a 10,001-link one (flat: linear scaling);
 * a positions-only sweep against a full one;
-* ``solve --json`` from a cold start (and that it loads neither matplotlib nor shapely).
+* ``solve --json`` from a cold start (and that it loads neither matplotlib nor shapely),
+  and ``import polygon_method`` (and that a solve without masses loads no ``forces/``);
+* the four-bar figures again, interleaved in small batches (:func:`side_by_side`): the
+  ones to quote from a shared machine.
 
 A benchmark, not a test: nothing here fails on time.
 """
@@ -302,7 +305,7 @@ def bench_chain_warm(repeat):
         scene = parse_scene(chain_text(n))
         solve(scene)  # the plan compiled and bound once
         t, _ = timeit(lambda: solve(scene), repeat, max(1, 20000 // n))
-        out[f"chain_warm_{2 * n + 1}"] = t / (2 * n + 1)
+        out[f"warmchain_{2 * n + 1}"] = t / (2 * n + 1)
     return out
 
 
@@ -418,27 +421,9 @@ def bench_pylinkage(repeat):
         m.set_input_velocity(m._driver_links[0], 20.0, 150.0)
         return m
 
-    def build_and_step():  # the same four-bar, a Linkage built and stepped once
-        import warnings
-
-        from pylinkage.actuators import Crank
-        from pylinkage.components import Ground
-        from pylinkage.dyads import RRRDyad
-        from pylinkage.simulation import Linkage
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            g1, g2 = Ground(0.0, 0.0, name="A"), Ground(0.1, 0.0, name="D")
-            crank = Crank(anchor=g1, radius=0.04, angular_velocity=0.0,
-                          initial_angle=math.radians(120))
-            dyad = RRRDyad(anchor1=crank.output, anchor2=g2, distance1=0.12, distance2=0.08,
-                           x=0.05, y=0.08)
-            lk = Linkage([g1, g2, crank, dyad], name="four-bar")
-            lk.set_input_velocity(crank, omega=20.0, alpha=0.0)
-            return next(iter(lk.step_with_derivatives(iterations=1, dt=0)))
-
     m = make()
     list(m.step_with_derivatives(iterations=10))
-    build, _ = timeit(build_and_step, repeat, 100)
+    build, _ = timeit(_pylinkage_build_and_step, repeat, 100)
     per_cycle, _ = timeit(lambda: list(make().step_with_derivatives(iterations=3600)),
                           max(1, repeat // 3))
     out = {"pylinkage_cycle": per_cycle, "pylinkage_step": per_cycle / 3600,
@@ -452,6 +437,77 @@ def bench_pylinkage(repeat):
     except ImportError:
         pass
     return out
+
+
+def side_by_side(rounds):
+    """The four-bar figures measured interleaved, in small batches, each the least over
+    ``rounds`` rounds: on a shared machine the others' load comes and goes, and a figure
+    measured a minute after its peer is compared with another machine. Our warm full
+    solve, the floor (named and unnamed), pylinkage's step (a running
+    ``step_with_derivatives``), and a mechanism never seen against pylinkage building its
+    ``Linkage`` and stepping once. Empty where pylinkage is not installed."""
+    try:
+        from pylinkage.mechanism import fourbar
+    except ImportError:
+        return {}
+    from polygon_method import load_scene, parse_scene, solve
+    from polygon_method import compiler as plan_module
+
+    scene = load_scene(IMAGE_POINTS)
+    solve(scene)
+
+    def full():
+        sol = solve(scene)
+        for r in sol.rubbing.values():
+            r.rubbing_velocity
+        sol.input_torque
+
+    floor = floor_fourbar()
+    fresh_scene = parse_scene(FOURBAR_TEXT)
+
+    def fresh():
+        plan_module._BY_ID.clear()
+        plan_module._BY_CONTENT.clear()
+        return solve(fresh_scene)
+
+    m = fourbar(crank=0.04, coupler=0.12, rocker=0.08, ground=0.10,
+                omega=2 * math.pi / 3600, initial_angle=math.radians(120))
+    m.set_input_velocity(m._driver_links[0], 20.0, 150.0)
+    steps = m.step_with_derivatives(iterations=10 ** 9)
+    next(steps)
+    build = _pylinkage_build_and_step
+    batches = {"full": (full, 50), "floor": (floor, 50), "floor_tuple": (lambda: floor(True), 50),
+               "pylinkage_step": (lambda: next(steps), 20), "fresh": (fresh, 10),
+               "pylinkage_build_step": (build, 10)}
+    best = dict.fromkeys(batches, float("inf"))
+    clock = time.perf_counter
+    for _ in range(rounds):
+        for name, (fn, n) in batches.items():
+            t = clock()
+            for _ in range(n):
+                fn()
+            best[name] = min(best[name], (clock() - t) / n)
+    return {f"sbs_{k}": v for k, v in best.items()}
+
+
+def _pylinkage_build_and_step():
+    """The seed's four-bar as pylinkage builds it: a Linkage built and stepped once."""
+    import warnings
+
+    from pylinkage.actuators import Crank
+    from pylinkage.components import Ground
+    from pylinkage.dyads import RRRDyad
+    from pylinkage.simulation import Linkage
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        g1, g2 = Ground(0.0, 0.0, name="A"), Ground(0.1, 0.0, name="D")
+        crank = Crank(anchor=g1, radius=0.04, angular_velocity=0.0,
+                      initial_angle=math.radians(120))
+        dyad = RRRDyad(anchor1=crank.output, anchor2=g2, distance1=0.12, distance2=0.08,
+                       x=0.05, y=0.08)
+        lk = Linkage([g1, g2, crank, dyad], name="four-bar")
+        lk.set_input_velocity(crank, omega=20.0, alpha=0.0)
+        return next(iter(lk.step_with_derivatives(iterations=1, dt=0)))
 
 
 def bench_mechanism(repeat):
@@ -503,6 +559,7 @@ def main(argv=None):
     r.update(bench_cli(repeat))
     r.update(bench_chain(repeat))
     r.update(bench_chain_warm(repeat))
+    r.update(side_by_side(60 if args.quick else 300))
     peers = {}
     for fn in (bench_pylinkage, bench_mechanism):
         p = fn(repeat)
@@ -541,6 +598,18 @@ def main(argv=None):
                      fmt(r["floor_tuple"]).strip(),
                      f"{r['single_full'] / r['floor_tuple']:.2f}", ""))
     print(row.format("  solve() alone", fmt(r["single"]).strip(), "", "", ""))
+    if "sbs_full" in r:  # the same figures interleaved (the least of many small batches)
+        print("side by side, interleaved:")
+        for ours, peer, target, words in (
+                ("sbs_full", "sbs_pylinkage_step", 0.25, "warm full solve / pylinkage step"),
+                ("sbs_full", "sbs_floor", 2.0, "warm full solve / the floor"),
+                ("sbs_full", "sbs_floor_tuple", None, "warm full solve / the floor, unnamed"),
+                ("sbs_fresh", "sbs_pylinkage_build_step", 0.8,
+                 "never seen / pylinkage build + step")):
+            ratio = r[ours] / r[peer]
+            print(row.format("  " + words, fmt(r[ours]).strip(), fmt(r[peer]).strip(),
+                             f"{ratio:.2f}", "" if target is None else
+                             f"<= {target:g}: " + ("met" if ratio <= target else "MISSED")))
     vs("3600 positions, Grashof four-bar", r["cycle"], "pylinkage_numba_cycle", 0.25,
        "<= 1/4 of pylinkage's numba path")
     vs("  against pylinkage's pure-Python path", r["cycle"], "pylinkage_cycle", 1.0, "faster")
@@ -561,9 +630,9 @@ def main(argv=None):
     for k in sorted((k for k in r if k.startswith("chain_")), key=lambda k: int(k[6:])):
         print(row.format(f"solve --json, chain of dyads, {k[6:]} links", fmt(r[k]).strip(),
                          "", "", "under 10 s: " + ("met" if r[k] < 10 else "MISSED")))
-    grow = r["chain_warm_10001"] / r["chain_warm_1001"]
+    grow = r["warmchain_10001"] / r["warmchain_1001"]
     print(row.format("warm solve per link, chain of dyads, 10,001 vs 1,001 links",
-                     fmt(r["chain_warm_10001"]).strip(), fmt(r["chain_warm_1001"]).strip(),
+                     fmt(r["warmchain_10001"]).strip(), fmt(r["warmchain_1001"]).strip(),
                      f"{grow:.2f}", "flat (within 1.1x): " + ("met" if grow <= 1.1
                                                               else "MISSED")))
     print(row.format("import polygon_method, fresh process", fmt(r["import_time"]).strip(),
