@@ -46,11 +46,19 @@ def test_corpus_is_large_and_every_scene_says_what_it_expects():
     assert set(SIDECAR) <= {p.name for p in SCENES}
 
 
+def _in_answers(path) -> bool:
+    """A fault in ``[answers]``, which only the commands that check answers read."""
+    return _expectation(path)["where"].startswith("[answers]")
+
+
 def _command(path, tmp_path):
     """``solve``; for a fault in ``[variants]``, ``variants`` (the one command that reads
-    that table: the others leave it unread)."""
+    that table: the others leave it unread); for one in ``[answers]``, ``check`` (solve,
+    steps, draw and the others leave that table unread too)."""
     if path.stem.startswith("variants_"):
         return ["variants", str(path), "--count", "2", "-o", str(tmp_path / "out")]
+    if _in_answers(path):
+        return ["check", str(path)]
     return ["solve", str(path)]
 
 
@@ -72,8 +80,10 @@ def test_cli_solve_prints_one_line_and_exits_2(path, capsys, tmp_path):
     assert "Traceback" not in line and "internal error" not in line
 
 
-@pytest.mark.parametrize("path", [p for p in SCENES if not p.stem.startswith("variants_")],
-                         ids=[i for i in IDS if not i.startswith("variants_")])
+_DRAWN = [p for p in SCENES if not p.stem.startswith("variants_") and not _in_answers(p)]
+
+
+@pytest.mark.parametrize("path", _DRAWN, ids=[p.stem for p in _DRAWN])
 def test_cli_draw_writes_nothing(path, tmp_path, capsys):
     target = tmp_path / "out.svg"
     code = main(["draw", str(path), "-o", str(target)])
@@ -115,9 +125,10 @@ def test_every_command_refuses_cleanly(path, tmp_path, capsys):
     """A fault of the scene stops every command; one of the instant (cannot assemble, a
     toggle) may leave plan, linkage and sweep working. A fault in ``[variants]`` stops the
     commands that read that table (``check``, which finds a student's variant, and
-    ``variants``); the others do not read it and work. Never an internal error."""
+    ``variants``); the others do not read it and work; so does a fault in ``[answers]``,
+    which only ``check`` reads. Never an internal error."""
     scene_fault = _expectation(path)["error"] in ("SceneError", "MobilityError")
-    in_variants = path.stem.startswith("variants_")
+    in_variants = path.stem.startswith("variants_") or _in_answers(path)
     for i, cmd in enumerate(COMMANDS):
         where = tmp_path / str(i)
         where.mkdir()

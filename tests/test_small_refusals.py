@@ -142,16 +142,38 @@ def test_every_integer_beyond_64_bits_is_written_with_a_long_run():
     (decimal, with underscores, hex, octal, binary), has one."""
     import random
 
-    from polygon_method.scene.reading import _LONG_RUN
+    from polygon_method.scene.reading import _has_long_run
     rnd = random.Random(5)
     values = [1 << 63, (1 << 63) + 1, -(1 << 63) - 1, 10 ** 19, 10 ** 400]
     values += [rnd.randrange(1 << 63, 1 << 200) for _ in range(200)]
     for v in values:
         a = abs(v)
-        for text in (str(v), f"{v:_}", f"0x{a:x}", f"0x{a:_x}", f"0o{a:o}", f"0o{a:_o}",
+        for text in (str(v), f"{v:_}", f"0x{a:x}", f"0o{a:o}", f"0o{a:_o}", f"0x{a:_x}",
                      f"0b{a:b}", f"0b{a:_b}"):
-            assert _LONG_RUN.search(f"BC = {text}"), text
-    assert not _LONG_RUN.search("BC = 66\nspeed = \"10.5 rad/s cw\"")
+            assert _has_long_run(f"BC = {text}"), text
+    assert not _has_long_run("BC = 66\nspeed = \"10.5 rad/s cw\"")
+
+
+def test_the_long_run_is_found_as_the_regular_expression_finds_it():
+    """The run is looked for in the text's bytes (one translation, where a regular
+    expression tries every position); the regular expression ``[0-9A-Fa-f_]{16,}`` is the
+    reference, on random texts of digits, letters, non-ASCII characters (whose UTF-8 bytes
+    are no digits) and lone surrogates."""
+    import random
+    import re
+
+    from polygon_method.scene.reading import _has_long_run
+    reference = re.compile(r"[0-9A-Fa-f_]{16,}")
+    rnd = random.Random(7)
+    alphabet = "0123456789abcdefABCDEF_ gxyz=\n\"é中\u00e9\ud800\U0001f600"
+    found = 0
+    for _ in range(3000):
+        text = "".join(rnd.choice(alphabet) if rnd.random() < 0.3 else rnd.choice("0123abcF_")
+                       for _ in range(rnd.randrange(10, 60)))
+        want = reference.search(text) is not None
+        found += want
+        assert _has_long_run(text) == want, repr(text)
+    assert 300 < found < 2700  # both answers drawn often
 
 
 def test_an_integer_beyond_64_bits_in_hex_or_with_underscores_is_refused():
@@ -169,3 +191,23 @@ def test_a_negative_number_in_exponent_form_is_an_option_s_value(capsys):
     plain = capsys.readouterr().out
     assert main(["sweep", scene, "--from", "-1e1", "--to", "1e1", "--step", "1e1"]) == 0
     assert capsys.readouterr().out == plain and "3 of 3 crank angles" in plain
+
+
+def test_a_two_letter_name_is_split_as_the_regular_expressions_split_it():
+    """``split_name`` reads two capitals at once; every other name by the expressions of a
+    link's name and a point's name, which are the reference here for every name of two
+    characters drawn from letters, digits, dashes, spaces and non-ASCII letters."""
+    import string
+
+    from polygon_method.scene.records import _LINK_NAME, POINT_NAME, split_name
+
+    def reference(name):
+        if not _LINK_NAME.match(name) or name.endswith("-"):
+            return ()
+        return tuple(POINT_NAME.findall(name))
+
+    chars = string.ascii_letters + string.digits + "-_ \u00c4\u00c9\u00df\u01c5\n"
+    names = [a + b for a in chars for b in chars]
+    assert sum(bool(reference(n)) for n in names) > 700  # the fast road taken, and not
+    for name in names:
+        assert split_name(name) == reference(name), repr(name)

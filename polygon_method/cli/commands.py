@@ -16,7 +16,7 @@ def _cmd_solve(args) -> int:
     from ..scene import load_scene
     from ..motion.solution import solve
 
-    sol = solve(load_scene(args.scene, variants=False))
+    sol = solve(load_scene(args.scene, variants=False, answers=False))
     if args.json:
         print(json.dumps(sol.to_dict(), indent=2, allow_nan=False))
     else:
@@ -29,7 +29,7 @@ def _cmd_plan(args) -> int:
     from ..solver.compiler import compile_plan
     from ..scene import load_scene
 
-    print(compile_plan(load_scene(args.scene, variants=False)))
+    print(compile_plan(load_scene(args.scene, variants=False, answers=False)))
     return 0
 
 
@@ -41,7 +41,7 @@ def _cmd_centres(args) -> int:
     from ..motion.solution import solve
 
     prefix = "" if getattr(args, "centre_labels", "I13") == "13" else "I"
-    print(centres_text(locate(solve(load_scene(args.scene, variants=False)), prefix)))
+    print(centres_text(locate(solve(load_scene(args.scene, variants=False, answers=False)), prefix)))
     return 0
 
 
@@ -50,7 +50,7 @@ def _cmd_steps(args) -> int:
     from ..motion.solution import solve
     from ..text.steptable import steps_text
 
-    print(steps_text(solve(load_scene(args.scene, variants=False)), fmt=args.format))
+    print(steps_text(solve(load_scene(args.scene, variants=False, answers=False)), fmt=args.format))
     return 0
 
 
@@ -106,7 +106,7 @@ def _cmd_draw(args) -> int:
                                      key="--scale")
     paper = paper_name(getattr(args, "paper", None) or "A4")
     targets = check_outputs([(out, "-o")], protect=[args.scene])
-    sol = solve(load_scene(args.scene, variants=False))
+    sol = solve(load_scene(args.scene, variants=False, answers=False))
     diagram = getattr(args, "diagram", None) or "all"
     prefix = "" if getattr(args, "centre_labels", "I13") == "13" else "I"
     datas, used, warnings, pages = render_pages(sol, fmt, diagram, scales, prefix, paper)
@@ -218,7 +218,7 @@ def _cmd_animate(args, out, fmt) -> int:
     from ..page import check_frames
     check_frames(args.frames, fmt)  # before anything is computed
     targets = check_outputs([(out, "-o")], protect=[args.scene])
-    fr = _frames(args, load_scene(args.scene, variants=False), fmt)
+    fr = _frames(args, load_scene(args.scene, variants=False, answers=False), fmt)
     data = animation(fr, fmt)
     write_outputs(targets, [(data, isinstance(data, bytes))])
     scales = ("; ".join(s.text for s in fr.scales) if fmt == "svg" else
@@ -307,7 +307,7 @@ def _cmd_sweep(args) -> int:
     wanted = [(path, option) for path, option in ((args.csv, "--csv"), (plot, "--plot"))
               if path]
     targets = check_outputs(wanted, protect=[args.scene])
-    scene = load_scene(args.scene, variants=False)
+    scene = load_scene(args.scene, variants=False, answers=False)
     angles = _requested_angles(args, scene)
     if args.csv:
         need = _csv_bytes(scene, len(angles), getattr(args, "error_bound", False))
@@ -403,5 +403,5 @@ def _cmd_linkage(args) -> int:
     from ..linkage import analyse
     from ..scene import load_scene
 
-    print(analyse(load_scene(args.scene, variants=False)).text())
+    print(analyse(load_scene(args.scene, variants=False, answers=False)).text())
     return 0

@@ -199,12 +199,11 @@ def parse_quantity(raw, kind: str, *, where: str = "", default_unit: str | None 
         raise SceneError(f"expected a number or a string such as \"50 mm\", got {_kind_of(raw)}",
                          key=where)
     sense = None
-    shown = _clip(raw)
     if kind == "length" and isinstance(raw, str) and _FEET_INCHES.match(raw):
         sign, feet, inches = _FEET_INCHES.match(raw).groups()
         si = float(feet) * UNITS["length"]["ft"] + float(inches) * UNITS["length"]["in"]
         if float(inches) >= 12:
-            raise SceneError(f"'{shown}': {inches} in is a foot or more; write the feet and "
+            raise SceneError(f"'{_clip(raw)}': {inches} in is a foot or more; write the feet and "
                              "the inches below 12, or the whole in one unit (\"30 in\")",
                              key=where)
         return Quantity(-si if sign == "-" else si)
@@ -215,17 +214,17 @@ def parse_quantity(raw, kind: str, *, where: str = "", default_unit: str | None 
             sense = _SENSES[words[-1].lower()]
             text = " ".join(words[:-1])
             if len(words) > 2 and words[-2].lower() in _SENSES:  # "10 rad/s cw ccw"
-                raise SceneError(f"'{shown}' gives two senses: give one, cw or ccw",
+                raise SceneError(f"'{_clip(raw)}' gives two senses: give one, cw or ccw",
                                  key=where)
         m = _QUANTITY.match(text)
         if not m:
-            raise SceneError(f"cannot read '{shown}' as a quantity (a number, then a unit)",
+            raise SceneError(f"cannot read '{_clip(raw)}' as a quantity (a number, then a unit)",
                              key=where)
         value = float(m.group(1))
         unit = m.group(2).strip()
         if not unit:
             if default_unit is None:
-                raise SceneError(f"'{shown}' has no unit; write it as e.g. "
+                raise SceneError(f"'{_clip(raw)}' has no unit; write it as e.g. "
                                  f"\"{m.group(1)} {format_unit_list(kind).split(', ')[0]}\"",
                                  key=where)
             unit = default_unit
@@ -242,23 +241,23 @@ def parse_quantity(raw, kind: str, *, where: str = "", default_unit: str | None 
                              f"\"{raw} {format_unit_list(kind).split(', ')[0]}\"", key=where)
         factor = _unit_factor(default_unit, kind, where)
     if not math.isfinite(value):
-        raise SceneError(f"'{shown}' is not a finite number", key=where)
+        raise SceneError(f"'{_clip(raw)}' is not a finite number", key=where)
     if sense is not None and not (need_sense or allow_sense):
-        raise SceneError(f"'{shown}': a sense (cw/ccw) does not belong here", key=where)
+        raise SceneError(f"'{_clip(raw)}': a sense (cw/ccw) does not belong here", key=where)
     if sense is not None and value < 0:  # "-10 rad/s cw": cw, or ccw (minus cw)?
-        raise SceneError(f"'{shown}': a negative value with a sense reads two ways; give the "
+        raise SceneError(f"'{_clip(raw)}': a negative value with a sense reads two ways; give the "
                          f"size and its sense (\"{_clip(_magnitude(raw))} cw\" or \"... ccw\")",
                          key=where)
     if need_sense and sense is None and value != 0:
         raw_size = _clip(_magnitude(raw) if value < 0 else str(raw).strip())
-        raise SceneError(f"'{shown}' has no sense: add cw or ccw (e.g. \"{raw_size} ccw\")",
+        raise SceneError(f"'{_clip(raw)}' has no sense: add cw or ccw (e.g. \"{raw_size} ccw\")",
                          key=where)
     si = value * factor
     if refuse_absurd and kind in ABSURD and not abs(si) <= ABSURD[kind]:
-        raise SceneError(f"'{shown}' is absurd for a mechanism (more than {ABSURD[kind]:g} "
+        raise SceneError(f"'{_clip(raw)}' is absurd for a mechanism (more than {ABSURD[kind]:g} "
                          f"{_SI_NAME[kind]}); check the value and its unit", key=where)
     if kind in TINY and si != 0 and abs(si) < TINY[kind]:
-        raise SceneError(f"'{shown}' is absurdly small for a mechanism (less than "
+        raise SceneError(f"'{_clip(raw)}' is absurdly small for a mechanism (less than "
                          f"{TINY[kind]:g} {_SI_NAME[kind]}); check the value and its unit",
                          key=where)
     if sense == "cw":

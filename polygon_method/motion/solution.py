@@ -21,16 +21,14 @@
 from __future__ import annotations
 
 from ..solver.derived import input_torque as _torque
-from ..solver.derived import PinRubbing, pin_records, power_terms
+from ..solver.derived import PinRubbing, power_terms, rubbing_records
 from ..solver.centres import JSON_BODIES, centres_dict, locate
 from ..solver.errorbound import NO_BOUND, USELESS, bounds_dict, error_bounds
 from ..common.errors import TOL, PolygonMethodError, SceneError
 from ..solver.kinematics import Motion, hypot
 from ..common.numbers import fmt_angular, quiet, sense  # noqa: F401  (re-exported)
 from ..solver.compiler import compile_plan
-from ..forces import analyse, force_value, forces_dict
-from ..forces.bounds import bounds_dict as force_bounds_dict, force_bounds
-from ..solver.plan import Context
+from ..steps.base import Instant
 from ..scene import FixedPath, Scene
 
 __all__ = ["solve", "Solution", "PinRubbing", "sense", "fmt_angular"]
@@ -84,7 +82,7 @@ class Solution(Motion):
         c = self._cache
         r = c.get("rubbing")
         if r is None:
-            r = c["rubbing"] = pin_records(self.plan.pins, self.W, self.plan.dims.radii)
+            r = c["rubbing"] = rubbing_records(self.plan.pin_table, self.W)
         return r
 
     @property
@@ -95,6 +93,8 @@ class Solution(Motion):
     @property
     def input_torque(self):
         """T on the crank, ccw positive: T w + sum(F . v) = 0. None without loads."""
+        if not self.scene.loads:  # (the usual scene: nothing to balance)
+            return None
         c = self._cache
         t = c.get("torque", _UNSET)  # None is a value (no loads): a sentinel, not a raise
         if t is _UNSET:
@@ -109,7 +109,11 @@ class Solution(Motion):
         analysis does not cover (see :attr:`forces_refused`)."""
         if not self.scene.has_forces:
             return None
-        return self._get("forces", lambda: analyse(self))
+        return self._get("forces", self._analyse)
+
+    def _analyse(self):
+        from ..forces import analyse  # lazy: a scene without masses never loads forces/
+        return analyse(self)
 
     @property
     def forces_refused(self):
@@ -246,6 +250,7 @@ class Solution(Motion):
                           "alpha": inp.alpha}
         refused = self.forces_refused
         if sc.has_forces:
+            from ..forces import forces_dict  # lazy, as in `forces`
             d["forces"] = None if refused else forces_dict(self.forces)
         if inp.second is not None:
             two = inp.second
@@ -283,6 +288,7 @@ class Solution(Motion):
         d["notes"] = list(self.notes)
         d["error_bounds"] = _useful(bounds_dict(self, self.error_bounds))
         if sc.has_forces and not refused:  # each force's bound, null where none is useful
+            from ..forces.bounds import bounds_dict as force_bounds_dict, force_bounds
             d["error_bounds"]["forces"] = force_bounds_dict(force_bounds(self))
         return _finite(d)
 
@@ -313,6 +319,7 @@ class Solution(Motion):
                                  "a torque (solve gives it as the input force)")
             return f.input_torque
         if kind in ("F", "N"):
+            from ..forces import force_value  # lazy, as in `forces`
             return force_value(self.forces, kind, names[0])
         if kind in ("vu", "au"):  # the guide's point under a block (v_A1, a_A1)
             return hypot(*self.under_block(names[0], "velocity" if kind == "vu"
@@ -425,7 +432,12 @@ def solve(scene: Scene) -> Solution:
     plan = compile_plan(scene)
     inp = scene.input
     sol = _new(Solution)  # Solution(scene, plan, ...): filled in here, by the plan too
-    plan.instant(Context(inp.angle, inp.omega, inp.alpha), sol)  # = plan.run(ctx), one instant
+    ctx = _new(Instant)  # Context.instant(inp.angle, inp.omega, inp.alpha), one call fewer
+    ctx.theta = inp.angle
+    ctx.omega = inp.omega
+    ctx.alpha = inp.alpha
+    ctx.cond = {}
+    plan.instant(ctx, sol)  # = plan.run(ctx), one instant
     sol.scene = scene
     sol.plan = plan
     sol.theta = inp.angle

@@ -27,9 +27,7 @@ import numpy as np
 
 from ..solver.derived import input_torque, largest, pin_rubbing
 from ..solver.errorbound import error_bounds
-from ..forces.bounds import force_bounds
 from ..common.errors import TOL, PolygonMethodError, SceneError
-from ..forces import analyse
 from ..solver.kinematics import Motion
 from ..solver.compiler import compile_plan
 from ..scene import Scene
@@ -128,6 +126,7 @@ class SweepResult(Motion):
             cols.append(("err_max", "1", np.broadcast_to(worst, np.shape(self.theta))))
             f = self._forces()
             if f is not None:  # the largest bound of any force (relative to the largest)
+                from ..forces.bounds import force_bounds  # lazy, as in `_forces`
                 cols.append(("err_forces", "1", np.broadcast_to(
                     force_bounds(self, f).worst, np.shape(self.theta))))
         return cols
@@ -137,6 +136,7 @@ class SweepResult(Motion):
         position, the analysis does not cover)."""
         if not self.scene.has_forces or not len(self.theta):
             return None
+        from ..forces import analyse  # lazy: a scene without masses never loads forces/
         try:
             return analyse(self)
         except PolygonMethodError:

@@ -34,10 +34,12 @@ MAX_SCENE_BYTES = 1 << 20
 MAX_POINTS = 20000
 
 
-def load_scene(path, *, variants: bool = True) -> Scene:
+def load_scene(path, *, variants: bool = True, answers: bool = True) -> Scene:
     """Read and check a scene file. Raises :class:`SceneError` naming file, key and line.
     With ``variants=False`` the ``[variants]`` table is left unread (``scene.variation``
-    is None): for a command that makes no variants, which need not pay for reading it."""
+    is None): for a command that makes no variants, which need not pay for reading it.
+    With ``answers=False`` the ``[answers]`` table is left unread (``scene.answers`` is
+    empty, ``scene.tolerance`` None): for a command that checks no answers."""
     path = _path_of(path, "scene")
     try:
         data = _read_start(path)
@@ -59,7 +61,7 @@ def load_scene(path, *, variants: bool = True) -> Scene:
         raise SceneError(f"not UTF-8 text (byte {exc.start}); save the scene as UTF-8",
                          file=str(path)) from None
     try:
-        return parse_scene(text, file=str(path), variants=variants)
+        return parse_scene(text, file=str(path), variants=variants, answers=answers)
     except PolygonMethodError as exc:
         raise exc.located(str(path))
 
@@ -124,7 +126,8 @@ def toml_table(text: str) -> dict:
     return tomllib.loads(text)
 
 
-def parse_scene(text: str, file: str | None = None, *, variants: bool = True) -> Scene:
+def parse_scene(text: str, file: str | None = None, *, variants: bool = True,
+                answers: bool = True) -> Scene:
     """Parse scene text (TOML). See :func:`load_scene`."""
     if isinstance(text, (bytes, bytearray)):
         raise SceneError("the scene's text is needed as a str: decode the bytes (UTF-8), or "
@@ -148,6 +151,7 @@ def parse_scene(text: str, file: str | None = None, *, variants: bool = True) ->
                          "[ground], [links] and [input]", file=file)
     loader = _Loader(raw, text, file)
     loader.read_variants = variants
+    loader.read_answers = answers
     return loader.scene()
 
 
@@ -155,7 +159,10 @@ def toml_lines(text: str) -> list:
     """The lines of a TOML text as TOML counts them: split at line feeds only (not at the
     form feeds, U+2028 and other breaks that ``str.splitlines`` also splits at, which a
     string or a comment may hold)."""
-    return [line[:-1] if line.endswith("\r") else line for line in text.split("\n")]
+    lines = text.split("\n")
+    if "\r" not in text:  # (the usual file: nothing to take off)
+        return lines
+    return [line[:-1] if line.endswith("\r") else line for line in lines]
 
 
 def scene_table(scene: Scene) -> dict:
@@ -327,8 +334,22 @@ def _printable(text):
 _INT64 = 1 << 63
 #: what any integer beyond 64 bits is written with: 16 or more digits in a row (decimal
 #: 19, hex 16, octal 21, binary 64, underscores between them); a text without such a run
-#: has none, and its values need not be walked
-_LONG_RUN = re.compile(r"[0-9A-Fa-f_]{16,}")
+#: has none, and its values need not be walked. Looked for in the text's UTF-8 bytes, each
+#: digit byte made "x" and every other byte " " (one C pass, where a regular expression
+#: tries every position): a digit is one ASCII byte, and no other character's bytes are
+#: digits, so the runs are the same
+_LONG_RUN = b"x" * 16
+_DIGITS = bytes(ord("x") if chr(c) in "0123456789ABCDEFabcdef_" else ord(" ")
+                for c in range(256))
+
+
+def _has_long_run(text: str) -> bool:
+    """Whether ``text`` has 16 or more of ``[0-9A-Fa-f_]`` in a row.
+
+    >>> _has_long_run("BC = 1234567890123456"), _has_long_run("BC = 123456789012345 # é")
+    (True, False)
+    """
+    return _LONG_RUN in text.encode("utf-8", "replace").translate(_DIGITS)
 
 
 def _long_integer(raw):
@@ -350,7 +371,7 @@ class _Loader(_Tables, _Input, _Variants, _Masses):
     def __init__(self, raw: dict, text: str, file):
         self.raw = raw
         self.lines = toml_lines(text)
-        self.long_run = _LONG_RUN.search(text) is not None
+        self.long_run = _has_long_run(text)
         self.file = file
         self.unit = "mm"
         self.strokes, self.fixed = {}, []  # the fixed paths: directions (rad), records
@@ -522,7 +543,8 @@ class _Loader(_Tables, _Input, _Variants, _Masses):
         loads = self.loads(known)
         masses = self.masses(points, sliders)
         gravity = self.gravity()
-        tolerance, answers = self.answers(known, sliders, pins, loads)
+        tolerance, answers = self.answers(known, sliders, pins, loads) \
+            if getattr(self, "read_answers", True) else (None, ())
         self.connected(links, points, sliders, ground, inp, cylinders, rolling)
         if len(known) > MAX_POINTS:
             raise SceneError(f"the scene has {len(known)} points: at most {MAX_POINTS} (a "

@@ -99,7 +99,14 @@ def guide_words(label: str, noun: str = "path", of: str | None = None) -> str:
 
 
 def split_name(name: str) -> tuple[str, ...]:
-    """Point names in a link or relative name: ``"BC"`` -> (B, C), ``"O2-A"`` -> (O2, A)."""
+    """Point names in a link or relative name: ``"BC"`` -> (B, C), ``"O2-A"`` -> (O2, A).
+
+    >>> split_name("BC"), split_name("O2-A"), split_name("O2A"), split_name("Bc")
+    (('B', 'C'), ('O2', 'A'), ('O2', 'A'), ())
+    """
+    if isinstance(name, str) and len(name) == 2 and name.isascii() and name.isalpha() \
+            and name.isupper():  # the usual name, two capitals: read at once
+        return (name[0], name[1])
     if not isinstance(name, str) or not _LINK_NAME.match(name) or name.endswith("-"):
         return ()
     return tuple(POINT_NAME.findall(name))

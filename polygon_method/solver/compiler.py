@@ -215,8 +215,8 @@ class _Compiler:
         self.unit = scene.length_unit
         self.uname = scene.units
         inp = scene.input
-        self.ctx = Context(inp.angle, 1.0 if inp.omega is None else inp.omega,
-                           inp.alpha or 0.0)  # only positions are placed here
+        self.ctx = Context.instant(inp.angle, 1.0 if inp.omega is None else inp.omega,
+                                   inp.alpha or 0.0)  # only positions are placed here
         self.P = dict(scene.ground)
         self.steps = []
         self.used_links = {lk.key for lk in scene.links
@@ -478,13 +478,15 @@ class _Compiler:
         sc = self.scene
         name = step.finds[0]
         prm = step.params
-        plus = step.place(self.P, prm, self.ctx, 1.0)[:2]
-        minus = step.place(self.P, prm, self.ctx, -1.0)[:2]
+        P, ctx = self.P, self.ctx
+        plus = step.place(P, prm, ctx, 1.0)[:2]
+        minus = step.place(P, prm, ctx, -1.0)[:2]
         hint = sc.assembly.get(name)
         if hint is None:
-            default = step.default_hint(self.P)
-            sigma = self.pick(name, default, plus, minus, step, default=True)
-            if math.dist(plus, minus) > 1e-9 * step.reach():
+            default = step.default_hint(P)
+            reach = step.reach()
+            sigma = self.pick(name, default, plus, minus, step, default=True, scale=reach)
+            if math.dist(plus, minus) > 1e-9 * reach:
                 side = ("on the side of the block" if default == "block side"
                         else default if isinstance(default, str) else "farther along the guide")
                 self.notes.append(f"{name}: of its two positions the one {side} was taken "
@@ -494,9 +496,10 @@ class _Compiler:
         chosen = step if sigma == step.sigma else replace(step, sigma=sigma)
         return chosen, (plus if sigma > 0 else minus)
 
-    def pick(self, name, hint, plus, minus, step, default=False):
+    def pick(self, name, hint, plus, minus, step, default=False, scale=None):
         sep = math.dist(plus, minus)
-        scale = step.reach()
+        if scale is None:
+            scale = step.reach()
         if sep <= 1e-12 * scale:
             return 1.0
         if hint == "block side":

@@ -14,7 +14,7 @@ import math
 
 from ..steps.rounding import largest
 
-__all__ = ["PinRubbing", "rubbing_at", "pin_rubbing", "pin_records", "largest", "power_terms", "input_torque", "transmission_angle"]
+__all__ = ["PinRubbing", "rubbing_at", "pin_rubbing", "pin_records", "rubbing_records", "largest", "power_terms", "input_torque", "transmission_angle"]
 
 
 def rubbing_at(pin, W, radius) -> tuple:
@@ -37,18 +37,24 @@ def pin_rubbing(plan, W, radii) -> dict:
 
 def pin_records(pins, W, radii) -> dict:
     """pin -> :class:`PinRubbing` for every sized pin at one instant (floats): the values of
-    :func:`rubbing_at`, in one pass. The records are filled in here (a record has no
-    ``__init__``: one Python call fewer per pin)."""
+    :func:`rubbing_at`, in one pass (:func:`rubbing_records` with the radii ``radii``)."""
+    return rubbing_records(tuple((pin[0], radii[pin[0]], pin, pin[5],
+                                  pin[5][0] if len(pin[5]) == 1 else None) for pin in pins), W)
+
+
+def rubbing_records(table, W) -> dict:
+    """pin -> :class:`PinRubbing` for every pin of ``table`` (``plan.pin_table``: each
+    sized pin with its radius at the plan's own dimensions, its pairs' links and its one
+    pair's, None where it joins more bodies, made once per plan) at one instant: the values of :func:`rubbing_at`, in one pass. The records
+    are filled in here (a record has no ``__init__``: one Python call fewer per pin)."""
     w = W.get
     new = _new
     out = {}
-    for pin in pins:
-        p = pin[0]
-        r = radii[p]
-        pairs = pin[5]
+    for k in table:
+        p, r, _, pairs, one = k
         rec = new(PinRubbing)
-        if len(pairs) == 1:  # a pin of two bodies (the usual one)
-            a, b = pairs[0]
+        if one is not None:  # a pin of two bodies (the usual one)
+            a, b = one
             v = abs(w(a, 0.0) - w(b, 0.0)) * r
             rec.values = (v,)
             rec.rubbing_velocity = v
@@ -56,9 +62,7 @@ def pin_records(pins, W, radii) -> dict:
             vs = tuple([abs(w(a, 0.0) - w(b, 0.0)) * r for a, b in pairs])
             rec.values = vs
             rec.rubbing_velocity = max(vs) if vs else 0.0
-        rec.point = p
-        rec.radius = r
-        rec._pin = pin
+        rec._k = k  # the pin, its radius (constant: one field for the three)
         rec._W = W
         out[p] = rec
     return out
@@ -75,7 +79,21 @@ class PinRubbing:
     :func:`pin_records`.
     """
 
-    __slots__ = ("point", "radius", "values", "rubbing_velocity", "_pin", "_W")
+    __slots__ = ("values", "rubbing_velocity", "_k", "_W")  # _k: the pin's table entry
+
+    @property
+    def point(self) -> str:
+        """The pin's point."""
+        return self._k[0]
+
+    @property
+    def radius(self) -> float:
+        """The pin's radius (m)."""
+        return self._k[1]
+
+    @property
+    def _pin(self) -> tuple:  # the pin as ``plan.pins`` gives it
+        return self._k[2]
 
     @property
     def pairs(self) -> dict:

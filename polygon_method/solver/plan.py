@@ -307,7 +307,7 @@ class Plan:
 
     def __getstate__(self):  # the bound phases are made again, not pickled
         return {k: v for k, v in self.__dict__.items()
-                if k not in ("_zero", "_phases", "_instant", "_checked")}
+                if k not in ("_zero", "_phases", "_instant", "_checked", "pin_table")}
 
     def __setstate__(self, state):
         for k, v in state.items():
@@ -324,6 +324,13 @@ class Plan:
         object.__setattr__(self, "_instant", None)
         object.__setattr__(self, "_checked", tuple((st.index, st) for st in self.steps
                                                    if st.branching))
+        # each sized pin with its radius at the plan's own dimensions, its pairs' links and
+        # its one pair's (None where it joins more than two bodies), what
+        # derived.rubbing_records reads, one instant at a time
+        radii = self.dims.radii if self.dims is not None else {}
+        object.__setattr__(self, "pin_table", tuple(
+            (pin[0], radii.get(pin[0]), pin, pin[5], pin[5][0] if len(pin[5]) == 1 else None)
+            for pin in self.pins))
 
     def evaluate(self, ctx, *, velocities=True, accelerations=True):
         """Run the plan at the compiled scene's dimensions: dicts ``P, V, A`` (point ->

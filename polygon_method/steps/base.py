@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from types import MappingProxyType
 
 from ..common.errors import TOL, AssemblyError, SingularStepError
 from .rounding import two_lines
@@ -74,6 +75,35 @@ class Context:
     def minimum(self, a, b):
         """The smaller of ``a`` and ``b``, element by element for arrays."""
         return self.np.minimum(a, b) if self.array else min(a, b)
+
+
+class Instant(Context):
+    """The context of one instant (floats), made with one call and four fields set
+    (:meth:`Context.instant`): what every scalar context shares is the class's."""
+
+    __slots__ = ()
+    array = False
+    bad = None
+    failures = MappingProxyType({})  # scalar mode raises: nothing is ever masked
+    np = None
+    cos = math.cos
+    sin = math.sin
+
+    def __reduce__(self):  # its own four fields (the rest are the class's)
+        return _instant, (self.theta, self.omega, self.alpha, self.cond)
+
+
+def _instant(theta, omega, alpha, cond=None, new=object.__new__, cls=Instant) -> Context:
+    c = new(cls)
+    c.theta = theta
+    c.omega = omega
+    c.alpha = alpha
+    c.cond = {} if cond is None else cond
+    return c
+
+
+#: ``Context(theta, omega, alpha)`` for one instant, faster (a solve makes one per call)
+Context.instant = staticmethod(_instant)
 
 
 class State:

@@ -186,8 +186,31 @@ class Carried(Step):
 
     @staticmethod
     def bind_group_instant(steps, prms):
-        """The three phases of ``bind_group`` in a row, for one instant."""
+        """The three phases of ``bind_group`` in a row, for one instant: for floats the
+        image formula written out (``Q - P`` of each polygon taken once for all the points
+        carried by P and Q, zero terms skipped as :func:`_image` skips them), the same
+        operations in the same order, so every number is the phased road's to the last
+        bit (a test holds the two roads equal)."""
         p, q, items, img = Carried._group(steps, prms)
+        if img is not _image:  # dimensions not plain floats: the formula itself
+            def instant(m):
+                P = m.P
+                V = m.V
+                A = m.A
+                cond = m.cond
+                px, py = P[p]
+                qx, qy = P[q]
+                vpx, vpy = V[p]
+                vqx, vqy = V[q]
+                apx, apy = A[p]
+                aqx, aqy = A[q]
+                for X, i, lam, mu in items:
+                    P[X] = img(px, py, qx, qy, lam, mu)
+                    cond[i] = 1.0
+                    V[X] = img(vpx, vpy, vqx, vqy, lam, mu)
+                    A[X] = img(apx, apy, aqx, aqy, lam, mu)
+
+            return instant
 
         def instant(m):
             P = m.P
@@ -196,15 +219,38 @@ class Carried(Step):
             cond = m.cond
             px, py = P[p]
             qx, qy = P[q]
-            vpx, vpy = V[p]
-            vqx, vqy = V[q]
-            apx, apy = A[p]
-            aqx, aqy = A[q]
+            dx = qx - px
+            dy = qy - py
+            vx, vy = V[p]
+            qx, qy = V[q]
+            vdx = qx - vx
+            vdy = qy - vy
+            ax, ay = A[p]
+            qx, qy = A[q]
+            adx = qx - ax
+            ady = qy - ay
             for X, i, lam, mu in items:
-                P[X] = img(px, py, qx, qy, lam, mu)
-                cond[i] = 1.0
-                V[X] = img(vpx, vpy, vqx, vqy, lam, mu)
-                A[X] = img(apx, apy, aqx, aqy, lam, mu)
+                if lam:
+                    if mu:
+                        P[X] = (px + lam * dx - mu * dy, py + lam * dy + mu * dx)
+                        cond[i] = 1.0
+                        V[X] = (vx + lam * vdx - mu * vdy, vy + lam * vdy + mu * vdx)
+                        A[X] = (ax + lam * adx - mu * ady, ay + lam * ady + mu * adx)
+                    else:
+                        P[X] = (px + lam * dx, py + lam * dy)
+                        cond[i] = 1.0
+                        V[X] = (vx + lam * vdx, vy + lam * vdy)
+                        A[X] = (ax + lam * adx, ay + lam * ady)
+                elif mu:
+                    P[X] = (px - mu * dy, py + mu * dx)
+                    cond[i] = 1.0
+                    V[X] = (vx - mu * vdy, vy + mu * vdx)
+                    A[X] = (ax - mu * ady, ay + mu * adx)
+                else:
+                    P[X] = (px, py)
+                    cond[i] = 1.0
+                    V[X] = (vx, vy)
+                    A[X] = (ax, ay)
 
         return instant
 

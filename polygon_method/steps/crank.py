@@ -100,7 +100,10 @@ class Crank(Step):
         return position, velocity_, acceleration_
 
     def bind_instant(self, prm):
-        """The three phases in a row for one instant (the same formulas, see ``bind``)."""
+        """The three phases in a row for one instant, fused into one plain float function:
+        the position and :func:`velocity`, :func:`acceleration` (the rigid-body relations)
+        written out in the same operations, so every number is the phased road's to the
+        last bit (a test holds the two roads equal)."""
         O, T, link, i, r = self.pivot, self.tip, self.link, self.index, prm[0]
         cos, sin = math.cos, math.sin  # one instant: floats
 
@@ -118,15 +121,14 @@ class Crank(Step):
             ry = ty - oy
             V = m.V
             vox, voy = V[O]
-            vx, vy = velocity(rx, ry, omega)
             m.W[link] = omega
-            V[T] = (vox + vx, voy + vy)
+            V[T] = (vox + -omega * ry, voy + omega * rx)  # omega perp(r)
             A = m.A
             aox, aoy = A[O]
             alpha = ctx.alpha
-            ax, ay = acceleration(rx, ry, omega, alpha)
+            k = omega * omega  # -omega^2 r + alpha perp(r)
             m.Al[link] = alpha
-            A[T] = (aox + ax, aoy + ay)
+            A[T] = (aox + (-k * rx - alpha * ry), aoy + (-k * ry + alpha * rx))
 
         return instant
 

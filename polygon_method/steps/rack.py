@@ -59,6 +59,8 @@ def _rack_params(scene, pr, kb_rate):
 def recognise(g, name):
     """A rack's point, once the pinion it meshes with is known and turning."""
     sc = g.scene
+    if not sc.rolling:  # (the usual scene: nothing rolls)
+        return None
     pr = next((r for r in sc.rolling if r.on == "rack" and r.rim == name), None)
     if pr is None or name in g.P or name in g.used_sliders:
         return None

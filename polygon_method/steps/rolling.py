@@ -77,6 +77,8 @@ def recognise(g, name):
     """The point of a rolling wheel, once its centre (and the gear it meshes with, and that
     gear's centre) is known: its arm and the gear may turn as any linkage makes them."""
     sc = g.scene
+    if not sc.rolling:  # (the usual scene: nothing rolls)
+        return None
     pr = sc.rolling_of(name)
     if pr is None or pr.on == "rack" or pr.centre not in g.P or pr.wheel in g.used_links:
         return None

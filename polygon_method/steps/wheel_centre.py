@@ -31,6 +31,8 @@ __all__ = ["WheelCentre", "place", "recognise"]
 def recognise(g, name):
     """The centre of a wheel rolling on a line, with one free link to a known point."""
     sc = g.scene
+    if not sc.rolling:  # (the usual scene: nothing rolls)
+        return None
     pr = next((r for r in sc.rolling if r.centre == name and r.on == "line"), None)
     if pr is None:
         return None
