@@ -397,7 +397,7 @@ speed = "450 rpm ccw"
     ('[masses]\nAB = 2', "a mass is { mass"),
     ('[gravity]\ng = 0', "g must be positive"),
     ('[gravity]\ndirecton = 270', "unknown key 'directon' (did you mean 'direction'?)"),
-    ('[loads]\nB = { pressure = "1 MPa", bore = 100 }', "no direction"),
+    ('[loads]\nB = { pressure = "1 MPa", direction = 0 }', "no bore"),
     ('[loads]\nA = { pressure = "1 MPa", bore = 100, direction = 180 }', "A is no slider"),
     ('[loads]\nB = { pressure = "1 mpa", bore = 100, direction = 180 }', "unknown unit 'mpa'"),
     ('[loads]\nB = { pressure = "1 MPa", bore = 100, rod = 120, direction = 0 }', "thinner"),
