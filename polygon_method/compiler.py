@@ -84,7 +84,6 @@ def compile_plan(scene: Scene) -> Plan:
             raise exc.located(scene.file)
         if scene.input.given is not None:
             plan = _given(plan)
-        _gas_towards_crank(plan)
         if key is not None:
             while _BY_CONTENT and len(_BY_CONTENT) >= _KEEP:
                 _BY_CONTENT.pop(next(iter(_BY_CONTENT)))
@@ -92,9 +91,8 @@ def compile_plan(scene: Scene) -> Plan:
     if scene.input.omega is None or (scene.input.placed is not None
                                      and not scene.input.placed.found):
         object.__setattr__(scene, "input", plan.scene.input)  # completed when compiled
-    if scene.loads is not plan.scene.loads and any(
-            ld.toward is not None and ld.force is None for ld in scene.loads):
-        object.__setattr__(scene, "loads", plan.scene.loads)  # a gas force's direction
+    if any(ld.toward is not None and ld.force is None for ld in scene.loads):
+        _gas_towards_crank(plan, scene)  # a gas force's direction (loads are not in the key)
     try:
         ident = id(scene)
         _BY_ID[ident] = (weakref.ref(scene, functools.partial(_forget, ident=ident)), plan)
@@ -129,12 +127,11 @@ def _given(plan):
     return replace(plan, dims=dims, notes=(note,) + res.notes + plan.notes, given=res)
 
 
-def _gas_towards_crank(plan):
+def _gas_towards_crank(plan, sc):
     """A gas force given without its direction pushes the piston towards the crank: along
     the piston's path, from the piston towards the foot of the crank centre, at the scene's
     instant (a piston stays on its side of the crank centre over the whole turn). The
     scene's loads are completed with it (a scene is complete once compiled)."""
-    sc = plan.scene
     if not any(ld.toward is not None for ld in sc.loads):
         return
     first = plan.steps[0]

@@ -12,9 +12,10 @@ from __future__ import annotations
 import math
 
 from .forces import FRAME
+from .forces.engine import efforts
 from .numbers import fmt, quiet, sense_word
 
-__all__ = ["forces_lines", "force_blocks"]
+__all__ = ["forces_lines", "force_blocks", "engine_lines"]
 
 
 def _scales(sol, f):
@@ -82,11 +83,29 @@ def forces_lines(sol) -> list:
                f"{_moment(f.input_torque, M)}")
     out.append(f"shaking force on the frame: {_vec(f.shaking_force, F)}; shaking moment "
                f"about the origin: {_moment(f.shaking_moment, M)}")
+    out += engine_lines(sol)
     for st in f.steps:
         if st.condition < 0.0871557:  # sin 5 deg, as the kinematic warnings
             out.append(f"warning: forces, step {st.index + 1} ({st.title}): condition "
                        f"{st.condition:.3g} ({st.why}): the pin forces grow as 1/condition")
     return out
+
+
+def engine_lines(sol) -> list:
+    """An engine's efforts at the instant, in the book's words (none for another scene)."""
+    f = sol.forces
+    e = efforts(sol.scene, sol.plan, sol.P, f)
+    if e is None:
+        return []
+    F, M = _scales(sol, f)
+    q = lambda v: fmt(quiet(v, F))  # noqa: E731
+    return [f"engine: piston effort F_P = {q(e.F_P)} N (along the line of stroke, towards "
+            f"the crank: the gas force and the reciprocating parts' inertia and weight); "
+            f"thrust in the rod {e.rod} F_Q = {q(e.F_Q)} N; side thrust on the cylinder "
+            f"walls F_N = {q(e.F_N)} N",
+            f"engine: crank effort F_T = {q(e.F_T)} N (across the crank {e.crank} at its pin, "
+            f"in the sense of rotation); turning moment T = F_T r = {fmt(quiet(e.T, M))} N m "
+            "(positive: with the rotation, the engine driving)"]
 
 
 def force_blocks(sol) -> list:

@@ -210,3 +210,159 @@ def test_a_bad_indicator_is_one_located_line(extra, words):
     with pytest.raises(SceneError) as exc:
         engine(30, extra=extra)
     assert words in str(exc.value) and "[indicator]" in str(exc.value)
+
+
+# --------------------------------------------------------------------------- the cycle
+
+def _xdd(t, R, L):
+    """The piston's d^2x/dt^2 (per unit crank speed squared), x = R cos t + sqrt(L^2 -
+    R^2 sin^2 t), written out."""
+    S = L ** 2 - (R * mpmath.sin(t)) ** 2
+    return (-R * mpmath.cos(t) - R ** 2 * mpmath.cos(2 * t) / mpmath.sqrt(S)
+            - R ** 4 * mpmath.sin(2 * t) ** 2 / (4 * S ** mpmath.mpf(1.5)))
+
+
+class _Reference:
+    """The in-line engine's turning moment over its cycle at 30 digits, from the closed
+    forms and the indicator's pressure interpolated here; the mean, the crossings, the
+    energies and the flywheel by mpmath's quadrature and root finding."""
+
+    def __init__(self, r, l, rpm, m, area, cycle, pressure, breaks):
+        mpmath.mp.dps = 30
+        self.R, self.L = mpmath.mpf(r), mpmath.mpf(l)
+        self.w = 2 * mpmath.pi * rpm / 60
+        self.m, self.area, self.cycle, self.p = m, area, cycle, pressure
+        self.breaks = sorted(set([mpmath.mpf(0), cycle] + list(breaks)))
+
+    def T(self, t):
+        R, L = self.R, self.L
+        F_P = self.p(t) * self.area + self.m * self.w ** 2 * _xdd(t, R, L)  # towards O
+        n = L / R
+        return F_P * R * (mpmath.sin(t) + mpmath.sin(2 * t) /
+                          (2 * mpmath.sqrt(n ** 2 - mpmath.sin(t) ** 2)))
+
+    def integral(self, a, b):
+        pts = [a] + [x for x in self.breaks if a < x < b] + [b]
+        return mpmath.quad(self.T, pts)
+
+    def solve(self, known=()):
+        """(mean, crossings, dE_max); ``known``: crossings known exactly (where the mean
+        line passes through a zero of the turning moment, at a dead centre)."""
+        mean = self.integral(0, self.cycle) / self.cycle
+        g = lambda t: self.T(t) - mean  # noqa: E731
+        grid = [self.cycle * k / 2000 for k in range(2001)]
+        cross = list(known)
+        for a, b in zip(grid, grid[1:]):
+            if any(a <= c <= b for c in known):
+                continue
+            if (g(a) > 0) != (g(b) > 0):
+                cross.append(mpmath.findroot(g, (a, b), solver="anderson"))
+        # one cycle, [0, cycle): its end is its start
+        cross = sorted(c for c in cross if c < self.cycle * (1 - mpmath.mpf(10) ** -20))
+        E = [self.integral(0, c) - mean * c for c in cross]
+        return mean, cross, max(E) - min(E)
+
+
+def _check_cycle(sc, ref, rel=1e-9, known=()):
+    from polygon_method.linkage import turning_moment
+    tm = turning_moment(sc)
+    mean, cross, dE = ref.solve(known)
+    # the mean to 1e-9 of itself, or of the greatest turning moment where it is nought
+    assert abs(tm.mean - float(mean)) <= rel * max(abs(float(mean)), abs(tm.T_max)), tm.mean
+    assert len(tm.crossings) == len(cross)
+    for got, want in zip(tm.crossings, cross):
+        assert abs(math.radians(got) - float(want)) <= 1e-9, (got, float(mpmath.degrees(want)))
+    close(tm.dE_max, float(dE), rel)
+    assert abs(sum(lb.energy for lb in tm.lobes)) <= 1e-9 * float(dE)  # the cycle closes
+    return tm
+
+
+def test_the_written_out_acceleration_is_the_derivative():
+    mpmath.mp.dps = 30
+    R, L, t = mpmath.mpf("0.15"), mpmath.mpf("0.6"), mpmath.mpf("0.7")
+    x = lambda u: R * mpmath.cos(u) + mpmath.sqrt(L ** 2 - (R * mpmath.sin(u)) ** 2)  # noqa
+    assert abs(_xdd(t, R, L) - mpmath.diff(x, t, 2)) < mpmath.mpf(10) ** -25
+
+
+def test_the_four_stroke_cycle_against_the_crank_angle_table():
+    ind = (f'[indicator]\nbore = 80\ncycle = "4-stroke"\nunit = "bar"\nangle = {ANGLES}\n'
+           f'pressure = {PRESS}\n[flywheel]\ncoefficient = 0.02\nradius = 300\n')
+    sc = engine(60, extra=ind)
+    area = mpmath.pi / 4 * mpmath.mpf("0.08") ** 2
+    nodes = [mpmath.radians(a) for a in ANGLES]
+    vals = [mpmath.mpf(p) * 100000 for p in PRESS]
+
+    def p(t):
+        d = min(max(mpmath.degrees(t), 0), 720)  # the cycle's ends, to rounding
+        for k in range(len(ANGLES) - 1):
+            if ANGLES[k] <= d <= ANGLES[k + 1]:
+                return vals[k] + (vals[k + 1] - vals[k]) * (t - nodes[k]) / (nodes[k + 1] - nodes[k])
+        raise AssertionError(d)
+    ref = _Reference("0.15", "0.6", 1800, 2.5, area, 4 * mpmath.pi, p,
+                     nodes + [mpmath.pi * k for k in range(5)])
+    tm = _check_cycle(sc, ref)
+    w = 1800 * math.pi / 30
+    close(tm.flywheel[2], tm.dE_max / (w * w * 0.02), 1e-15)
+    close(tm.flywheel[3], tm.flywheel[2] / 0.09, 1e-15)
+
+
+def test_the_four_stroke_cycle_against_the_stroke_table():
+    ind = (f'[indicator]\nbore = 80\ncycle = "4-stroke"\nunit = "bar"\nstroke = {STROKE}\n'
+           f'pressure = {ROWS}\n')
+    sc = engine(60, extra=ind)
+    R, L = mpmath.mpf("0.15"), mpmath.mpf("0.6")
+
+    def frac(t):
+        return (L + R - (R * mpmath.cos(t) + mpmath.sqrt(L ** 2 - (R * mpmath.sin(t)) ** 2))) / (2 * R)
+
+    def p(t):
+        k = min(int(t / mpmath.pi), 3)
+        x = frac(t)
+        row = ROWS[k]
+        for j in range(len(STROKE) - 1):
+            if STROKE[j] <= x <= STROKE[j + 1] + mpmath.mpf(10) ** -25:
+                return 100000 * (row[j] + (mpmath.mpf(row[j + 1]) - row[j]) * (x - STROKE[j]) /
+                                 (mpmath.mpf(STROKE[j + 1]) - STROKE[j]))
+        return 100000 * mpmath.mpf(row[-1] if x > 1 else row[0])
+    breaks = [mpmath.pi * k for k in range(5)]
+    for k in range(4):
+        for xv in STROKE[1:-1]:
+            breaks.append(mpmath.findroot(lambda t: frac(t) - xv,
+                                          (mpmath.pi * k + 1e-12, mpmath.pi * (k + 1) - 1e-12),
+                                          solver="anderson"))
+    area = mpmath.pi / 4 * mpmath.mpf("0.08") ** 2
+    _check_cycle(sc, _Reference("0.15", "0.6", 1800, 2.5, area, 4 * mpmath.pi, p, breaks))
+
+
+def test_a_steady_gas_force_averages_nothing_over_a_turn():
+    """A constant pressure pushes the piston towards the crank on both strokes: what it
+    gives on the out stroke it takes back on the return; the inertia averages nothing."""
+    sc = engine(30, extra='[loads]\nB = { pressure = "2 N/mm^2", bore = 100 }\n')
+    area = mpmath.pi / 4 * mpmath.mpf("0.1") ** 2
+    ref = _Reference("0.15", "0.6", 1800, 2.5, area, 2 * mpmath.pi,
+                     lambda t: mpmath.mpf(2) * 10 ** 6, [mpmath.pi])
+    # the mean is nought and so is the turning moment at the dead centres: both cross there
+    tm = _check_cycle(sc, ref, known=(mpmath.mpf(0), mpmath.pi))
+    assert abs(tm.mean) <= 1e-9 * abs(tm.T_max)
+
+
+def test_the_sweep_writes_the_turning_moment_and_the_summary_the_flywheel():
+    import numpy as np
+    from polygon_method.summary import summary_of
+    from polygon_method.sweeps import sweep
+    ind = (f'[indicator]\nbore = 80\ncycle = "4-stroke"\nunit = "bar"\nangle = {ANGLES}\n'
+           f'pressure = {PRESS}\n[flywheel]\nplus_minus = "1%"\ngyration = 250\n')
+    sc = engine(60, extra=ind)
+    th = np.radians([10.0, 95.0, 400.0, 700.0])
+    res = sweep(sc, th)
+    cols = {n: (u, v) for n, u, v in res.columns()}
+    area = math.pi / 4 * 0.08 ** 2
+    for k, d in enumerate([10.0, 95.0, 400.0, 700.0]):
+        T, _, _ = closed(0, d, 150, 600, 1800, 2.5, _interp(ANGLES, PRESS, d) * 1e5 * area)
+        close(float(cols["turning_moment"][1][k]), T)
+        close(float(cols["crank_effort"][1][k]), T / 0.15)
+    assert cols["turning_moment"][0] == "N m" and "piston_effort" in cols
+    text = summary_of(sweep(sc)).text()
+    assert "mean torque T_mean" in text and "maximum fluctuation of energy dE_max" in text
+    assert "Cs = 2 x 0.01 = 0.02" in text and "I = dE_max / (w^2 Cs)" in text
+    assert "mass m = I / k^2" in text

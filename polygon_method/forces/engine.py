@@ -160,3 +160,68 @@ def indicator_force(scene, motion):
     p = pressure(ind, g, motion.theta, bx, by)
     f = -g.s * p * ind.area
     return f * g.u[0], f * g.u[1], p, g
+
+
+def engine_piston(scene, plan):
+    """The piston of an engine: the point the indicator or a gas force acts on, sliding on a
+    fixed path pinned by a rod to the driving crank's pin; None for a scene that is no
+    engine (no gas force, or not a slider crank there)."""
+    if scene.indicator is not None:
+        return scene.indicator.piston
+    gas = [ld.target for ld in scene.loads if ld.gas is not None]
+    if len(gas) != 1:
+        return None
+    first = plan.steps[0]
+    sd = next((st for st in plan.steps if st.kind == "slider" and st.point == gas[0]), None)
+    if first.kind != "crank" or sd is None or getattr(sd, "path", None) is None or \
+            sd.b != first.tip:
+        return None
+    return gas[0]
+
+
+@dataclass(frozen=True)
+class Efforts:
+    """The engine chapter's forces at the instant (floats, or arrays over a sweep): the
+    piston effort ``F_P`` (the net force on the piston along the line of stroke, towards
+    the crank: the gas force, the reciprocating parts' inertia force and weight), the
+    thrust in the rod ``F_Q`` (its size at the piston pin), the side thrust on the cylinder
+    walls ``F_N`` (the guide's normal force's size), the crank effort ``F_T`` (the rod's
+    force on the crank pin across the crank, in the sense of rotation) and the turning
+    moment ``T = F_T r`` (N m, in the sense of rotation; the driver's torque with inertia,
+    reversed, where the crank carries no mass)."""
+
+    piston: str
+    rod: str
+    crank: str
+    F_P: object
+    F_Q: object
+    F_N: object
+    F_T: object
+    T: object
+    r: float
+
+
+def efforts(scene, plan, P, f) -> Efforts | None:
+    """:class:`Efforts` of an engine from its force analysis ``f`` at positions ``P``."""
+    piston = engine_piston(scene, plan)
+    if piston is None:
+        return None
+    first = plan.steps[0]
+    sd = next(st for st in plan.steps if st.kind == "slider" and st.point == piston)
+    side = piston_side(scene, plan, P, piston)
+    ux, uy = sd.path.u
+    tx, ty = -side * ux, -side * uy  # towards the crank
+    rec = next(s for s in f.steps if s.kind == "slider" and s.bodies[1] == f"block {piston}")
+    kb = rec.known[1]
+    F_P = kb[0] * tx + kb[1] * ty
+    q = f.pin(piston, sd.link)
+    F_Q = (q[0] * q[0] + q[1] * q[1]) ** 0.5
+    gd = next(g for g in f.guides if g.point == piston)
+    F_N = abs(gd.normal)
+    sg = 1.0 if scene.input.omega >= 0 else -1.0
+    # the rod's force on the crank at its pin, across the crank (the sense of rotation)
+    fa = f.pin(first.tip, first.link, sd.link)
+    (ox, oy), (ax, ay) = P[first.pivot], P[first.tip]
+    r = first.length
+    F_T = sg * ((ax - ox) * fa[1] - (ay - oy) * fa[0]) / r
+    return Efforts(piston, sd.link, first.link, F_P, F_Q, F_N, F_T, F_T * r, r)
