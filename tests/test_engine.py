@@ -366,3 +366,25 @@ def test_the_sweep_writes_the_turning_moment_and_the_summary_the_flywheel():
     assert "mean torque T_mean" in text and "maximum fluctuation of energy dE_max" in text
     assert "Cs = 2 x 0.01 = 0.02" in text and "I = dE_max / (w^2 Cs)" in text
     assert "mass m = I / k^2" in text
+
+
+def test_the_plot_has_the_turning_moment_diagram_below():
+    import numpy as np
+    from polygon_method.linkage import turning_moment
+    from polygon_method.plots import plot_figure
+    from polygon_method.sweeps import sweep
+    sc = engine(60, extra=f'[indicator]\nbore = 80\ncycle = "4-stroke"\nunit = "bar"\n'
+                          f'angle = {ANGLES}\npressure = {PRESS}\n')
+    fig = plot_figure(sweep(sc, np.radians(np.arange(0.0, 360.0, 10.0))))
+    panel = fig.axes[-1]
+    assert len(fig.axes) == 5 and "turning moment" in panel.get_ylabel()
+    assert panel.get_xlim() == (0.0, 720.0)
+    ticks = panel.get_xticks()
+    assert all(t % 90 == 0 for t in ticks)  # round ticks
+    mean = turning_moment(sc).mean
+    assert any(abs(ln.get_ydata()[0] - mean) <= 1e-12 * abs(mean) for ln in panel.lines
+               if len(ln.get_ydata()) == 2)
+    # a mechanism that is no engine keeps its four panels
+    plain = parse_scene(ENGINE.format(r=150, l=600, theta=30, rpm=100, m=1, side="right",
+                                      sense="ccw"))
+    assert len(plot_figure(sweep(plain, np.radians([0.0, 90.0, 180.0]))).axes) == 4
