@@ -41,6 +41,7 @@ from .derived import transmission_angle
 from .given import working
 from .numbers import fixed as _fixed, fmt, sense_word
 from .forcereport import force_blocks
+from .linkage.klein import klein_blocks
 from .constructions import acceleration_constructions, velocity_constructions
 from .scales import DRAWING_PRECISION_CM, diagram_scales, extent
 from .scene import FixedPath, GuideSlider, guide_words, split_name
@@ -656,6 +657,7 @@ def steps_blocks(sol: Solution) -> _Doc:
     _readoffs(doc, sol, vscale)
     _acceleration(doc, sol, ascale)
     doc.blocks += force_blocks(sol)
+    doc.blocks += klein_blocks(sol)  # a slider crank at uniform crank speed
     tail = [f"warning: {w}" for w in sol.warnings] + [f"note: {n}" for n in sol.notes]
     if tail:
         doc.h("Notes")

@@ -388,3 +388,92 @@ def test_the_plot_has_the_turning_moment_diagram_below():
     plain = parse_scene(ENGINE.format(r=150, l=600, theta=30, rpm=100, m=1, side="right",
                                       sense="ccw"))
     assert len(plot_figure(sweep(plain, np.radians([0.0, 90.0, 180.0]))).axes) == 4
+
+
+# --------------------------------------------------------------------------- Klein
+
+OFFSET = """
+units = "mm"
+[ground]
+O = [0, 0]
+[links]
+OA = {r}
+AB = {l}
+[sliders]
+B = {{ path = "horizontal", through = [0, {e}] }}
+[assembly]
+B = "{side}"
+[input]
+crank = "OA"
+angle = {theta}
+speed = "{rpm} rpm {sense}"
+"""
+
+
+@pytest.mark.parametrize("theta, e, side, sense", [
+    (60, 0, "right", "ccw"), (200, 0, "right", "cw"), (130, 0, "left", "ccw"),
+    (35, -40, "right", "ccw"), (290, 50, "left", "cw"), (95, 30, "right", "ccw")])
+def test_klein_gives_the_piston_as_the_closed_form(theta, e, side, sense):
+    """The piston's place ``x(t) = r cos t + s sqrt(l^2 - (r sin t - e)^2)`` along the line
+    of stroke (y = e), differentiated by mpmath: v = x' w, a = x'' w^2 (uniform speed)."""
+    from polygon_method.linkage.klein import klein_of
+    r, l, rpm = 150, 600, 300
+    sc = parse_scene(OFFSET.format(r=r, l=l, e=e, theta=theta, rpm=rpm, side=side,
+                                   sense=sense))
+    sol = solve(sc)
+    k, names = klein_of(sol)
+    assert names == ("O", "A", "B")
+    mpmath.mp.dps = 40
+    R, L, E = mpmath.mpf(r) / 1000, mpmath.mpf(l) / 1000, mpmath.mpf(e) / 1000
+    s = 1 if side == "right" else -1
+    w = (1 if sense == "ccw" else -1) * 2 * mpmath.pi * rpm / 60
+
+    def x(t):
+        return R * mpmath.cos(t) + s * mpmath.sqrt(L ** 2 - (R * mpmath.sin(t) - E) ** 2)
+    t = mpmath.radians(theta)
+    v, a = mpmath.diff(x, t, 1) * w, mpmath.diff(x, t, 2) * w ** 2
+    scale_v, scale_a = float(R * abs(w)), float(R * w ** 2)
+    assert abs(k.v_P[0] - float(v)) <= 1e-9 * scale_v and abs(k.v_P[1]) <= 1e-9 * scale_v
+    assert abs(k.a_P[0] - float(a)) <= 1e-9 * scale_a and abs(k.a_P[1]) <= 1e-9 * scale_a
+    # and the polygon's
+    assert math.dist(k.v_P, sol.V["B"]) <= 1e-9 * scale_v
+    assert math.dist(k.a_P, sol.A["B"]) <= 1e-9 * scale_a
+    # the rod's: v_BA from triangle OAM, its angular velocity from the polygon
+    wr = sol.W["AB"]
+    (ax_, ay_), (bx, by) = sol.P["A"], sol.P["B"]
+    assert math.dist(k.v_PC, (-wr * (by - ay_), wr * (bx - ax_))) <= 1e-9 * scale_v
+    # the construction's circles: K and L on both, the chord square to the rod
+    if k.K is not None:
+        for pt in (k.K, k.L):
+            assert abs(math.dist(pt, k.C) - math.dist(k.M, k.C)) <= 1e-12
+            mid = ((k.C[0] + k.P[0]) / 2, (k.C[1] + k.P[1]) / 2)
+            assert abs(math.dist(pt, mid) - math.dist(k.C, k.P) / 2) <= 1e-12
+
+
+def test_klein_is_in_steps_and_not_for_an_accelerating_crank():
+    from polygon_method.steptable import steps_text
+    sc = parse_scene(OFFSET.format(r=150, l=600, e=0, theta=60, rpm=250, side="right",
+                                   sense="ccw"))
+    text = steps_text(solve(sc))
+    assert "Klein's construction" in text and "a_B = omega^2 x NO" in text
+    acc = parse_scene(OFFSET.format(r=150, l=600, e=0, theta=60, rpm=250, side="right",
+                                    sense="ccw") + 'acceleration = "5 rad/s^2 ccw"\n')
+    assert "Klein's construction" not in steps_text(solve(acc))
+
+
+def test_klein_is_drawn_on_the_configuration_diagram_to_scale():
+    from polygon_method.draw.diagrams import _configuration
+    from polygon_method.scales import diagram_scales
+    sc = parse_scene(OFFSET.format(r=150, l=600, e=-40, theta=35, rpm=250, side="right",
+                                   sense="ccw"))
+    sol = solve(sc)
+    space = diagram_scales(sol)[0]
+    sk = _configuration(sol, space)
+    drawn = {opts["gid"]: pts for kind, pts, opts in sk.items if kind == "line"}
+    (n, o) = drawn["klein-NO"]
+    w = abs(sol.W["OA"])
+    # N O, to the diagram's scale, is a_B / omega^2; O M is v_B / omega
+    assert abs(math.dist(n, o) * space.per_cm - math.hypot(*sol.A["B"]) / w ** 2) <= 1e-9
+    (o2, m) = drawn["klein-OM"]
+    assert abs(math.dist(o2, m) * space.per_cm - math.hypot(*sol.V["B"]) / w) <= 1e-9
+    assert any("Klein's construction" in lab.text for lab in sk.notes)
