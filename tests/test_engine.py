@@ -477,3 +477,48 @@ def test_klein_is_drawn_on_the_configuration_diagram_to_scale():
     (o2, m) = drawn["klein-OM"]
     assert abs(math.dist(o2, m) * space.per_cm - math.hypot(*sol.V["B"]) / w) <= 1e-9
     assert any("Klein's construction" in lab.text for lab in sk.notes)
+
+
+# --------------------------------------------------------------------------- check
+
+def _verdicts(sc, answers):
+    from polygon_method.check import check_answers
+    from polygon_method.scene import parse_answers
+    _, ans = parse_answers("[answers]\n" + answers, sc)
+    return {v.key: v for v in check_answers(solve(sc), ans)}
+
+
+def test_the_engine_answer_keys_and_their_slips():
+    from polygon_method.linkage import turning_moment
+    ind = (f'[indicator]\nbore = 80\ncycle = "4-stroke"\nunit = "bar"\nangle = {ANGLES}\n'
+           f'pressure = {PRESS}\n[flywheel]\nplus_minus = "1%"\nradius = 300\n')
+    sc = engine(60, extra=ind)
+    tm = turning_moment(sc)
+    I, m = tm.flywheel[2], tm.flywheel[3]
+    big = max(abs(lb.energy) for lb in tm.lobes)
+    got = _verdicts(sc, f'T_mean = "{tm.mean:.5g} N m"\ndE_max = "{tm.dE_max:.5g} J"\n'
+                        f'I_flywheel = "{2 * I:.5g} kg m^2"\nm_flywheel = "{m:.5g} kg"\n')
+    assert got["T_mean"].ok and got["dE_max"].ok and got["m_flywheel"].ok
+    assert not got["I_flywheel"].ok and got["I_flywheel"].mistake == "cs_half_range"
+    got = _verdicts(sc, f'dE_max = "{big:.5g} J"\nT_mean = "{2 * tm.mean:.5g} N m"\n')
+    assert got["dE_max"].mistake == "largest_area"
+    assert got["T_mean"].mistake == "one_turn_cycle"
+    # the piston's inertia left out: the gas force's efforts, from the closed forms
+    F = _interp(ANGLES, PRESS, 60) * 1e5 * math.pi / 4 * 0.08 ** 2
+    T_gas, _, _ = closed(0, 60, 150, 600, 1800, 0.0, F)
+    T_all, _, _ = closed(0, 60, 150, 600, 1800, 2.5, F)
+    got = _verdicts(sc, f'crank_effort = "{T_gas / 0.15:.5g} N"\n'
+                        f'piston_effort = "{F:.5g} N"\n')
+    for k in ("crank_effort", "piston_effort"):
+        assert not got[k].ok and got[k].mistake == "piston_inertia_left_out", k
+    close(got["crank_effort"].correct, abs(T_all) / 0.15)
+
+
+def test_engine_answer_keys_are_refused_where_the_scene_cannot_give_them():
+    sc = engine(60, extra='[loads]\nB = { pressure = "2 N/mm^2", bore = 100 }\n')
+    with pytest.raises(SceneError) as exc:
+        _verdicts(sc, 'I_flywheel = "2 kg m^2"\n')
+    assert "[flywheel]" in str(exc.value) and "I_flywheel" in str(exc.value)
+    with pytest.raises(SceneError) as exc:
+        _verdicts(sc, 'dE_max = "2 parsecs"\n')
+    assert "dE_max" in str(exc.value)

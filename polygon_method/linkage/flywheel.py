@@ -288,7 +288,7 @@ def turning_moment(scene: Scene) -> TurningMoment:
     if scene.flywheel is not None:
         fw = scene.flywheel
         w = fw.speed if fw.speed is not None else abs(scene.input.omega)
-        inertia = (E_max - E_min) / (w * w * fw.coefficient)
+        inertia = float(E_max - E_min) / (w * w * fw.coefficient)
         k = fw.radius if fw.radius is not None else fw.gyration
         fly = (fw.coefficient, w, inertia, inertia / (k * k) if k is not None else None)
     words = (ind.words if ind is not None else

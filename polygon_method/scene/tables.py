@@ -11,6 +11,10 @@ from ..errors import SceneError, printable
 from ..units import UNITS, did_you_mean
 from .angles import read_angle
 from .triangle import apex
+
+#: the engine chapter's answer keys -> their unit kind (checked in check/engine.py)
+ENGINE_ANSWERS = {"piston_effort": "force", "crank_effort": "force", "T_mean": "torque",
+                  "dE_max": "energy", "I_flywheel": "moment_of_inertia", "m_flywheel": "mass"}
 from .records import (ANSWER_KINDS, UNDER_BLOCK_KINDS, Answer, CarriedPoint, Cylinder, guide_words,
                       FixedPath, GuideSlider, Load, Pin, YokeSlot, split_name,
                       under_block_names)
@@ -589,7 +593,7 @@ class _Tables:
         keys += [f"{k}_{s}" for k in ("vs", "as", "ac") for s in slider_names]
         keys += [f"rub_{p}" for p in sorted(pin_names)]
         keys += [f"{k}_{n}" for k in ("v", "a") for n in self.under_names(known, slider_names)]
-        return keys + (["torque"] if loads else [])
+        return keys + (["torque"] if loads else []) + list(ENGINE_ANSWERS)
 
     def under_names(self, known, slider_names) -> dict:
         """``A1`` -> the block at A's slider key: the guide's point under the block."""
@@ -643,6 +647,11 @@ class _Tables:
             q = self.qty(value, "torque", "answers", key, default_unit="N m", allow_sense=True,
                          refuse_absurd=False)
             return Answer(key, "torque", (), q.value, q.sense, raw_text, line)
+        if key in ENGINE_ANSWERS:  # the engine chapter's: efforts, the cycle, the flywheel
+            kind = ENGINE_ANSWERS[key]
+            q = self.qty(value, kind, "answers", key, default_unit=next(iter(UNITS[kind])),
+                         allow_sense=False, refuse_absurd=False)
+            return Answer(key, key, (), q.value, None, raw_text, line)
         prefix, _, rest = key.partition("_")
         if prefix == "I" and rest:
             return self.centre_answer(key, rest, value, line)
