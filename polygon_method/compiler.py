@@ -135,7 +135,7 @@ def _gas_towards_crank(plan, sc):
     if not any(ld.toward is not None for ld in sc.loads):
         return
     first = plan.steps[0]
-    pivot = first.pivot if first.kind == "crank" else None
+    pivot = getattr(first, "pivot", None)  # a driving crank's (a block driver has none)
     state = None
     loads = []
     for ld in sc.loads:

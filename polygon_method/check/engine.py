@@ -13,7 +13,7 @@ import math
 from dataclasses import replace
 
 from ..errors import PolygonMethodError, SceneError
-from ..forces.engine import efforts
+from ..forces.engine import efforts, slider_crank
 from ..linkage.flywheel import turning_moment
 from ..solution import solve
 from .verdicts import ROUNDING, Verdict
@@ -100,7 +100,7 @@ def _gas_alone(sol, key):
     sc = sol.scene
     e = efforts(sc, sol.plan, sol.P, sol.forces)
     blk = next(i for i in sol.forces.inertia if i.body == f"block {e.piston}")
-    sd = next(st for st in sol.plan.steps if st.kind == "slider" and st.point == e.piston)
+    _, sd = slider_crank(sol.plan, e.piston)
     fx, fy = blk.force
     ux, uy = sd.path.u
     (bx, by), (ox, oy) = sol.P[e.piston], sol.P[sol.plan.steps[0].pivot]

@@ -69,17 +69,33 @@ class SliderCrankGeometry:
         return (far - self.s * ((bx - fx) * ux + (by - fy) * uy)) / self.stroke
 
 
+def slider_crank(plan, piston: str):
+    """(the driving crank's step, the step that slides the piston on its fixed path) where
+    the piston's rod is pinned at the crank's tip, else None (asked of the steps: the
+    driver's pivot and tip, a step finding the piston with a fixed ``path`` and its rod's
+    other end ``b``)."""
+    first = plan.steps[0]
+    tip = getattr(first, "tip", None)
+    if tip is None or getattr(first, "pivot", None) is None:
+        return None
+    for st in plan.steps[1:]:
+        finds = st.finds if isinstance(st.finds, tuple) else (st.finds,)
+        if piston in finds:
+            ok = getattr(st, "path", None) is not None and getattr(st, "b", None) == tip
+            return (first, st) if ok else None
+    return None
+
+
 def geometry(scene, plan, piston: str, side: float) -> SliderCrankGeometry:
     """The slider crank of ``plan`` whose piston is ``piston`` (``side``: +1 where the
     piston is along the path's ``u`` from the foot of the crank centre). Refuses, in one
     line, a mechanism that is no slider crank there, or a crank at rest."""
-    first = plan.steps[0]
-    sd = next((st for st in plan.steps if st.kind == "slider" and st.point == piston), None)
-    if first.kind != "crank" or sd is None or getattr(sd, "path", None) is None or \
-            sd.b != first.tip:
+    pair = slider_crank(plan, piston)
+    if pair is None:
         raise PolygonMethodError(f"[indicator]: the piston {piston} must slide on a fixed path, "
                                  "pinned by a rod to the driving crank's pin (a slider crank)",
                                  file=scene.file, key="[indicator] piston")
+    first, sd = pair
     w = scene.input.omega
     if not w:
         raise PolygonMethodError("[indicator]: the cycle runs in the crank's sense of "
@@ -139,10 +155,10 @@ def pressure(ind, g: SliderCrankGeometry, theta, bx, by):
 def piston_side(scene, plan, P, piston) -> float:
     """+1 where the piston lies along its path's ``u`` from the foot of the crank centre
     (at the first of the positions ``P``; a piston keeps its side over a turn)."""
-    first = plan.steps[0]
-    sd = next((st for st in plan.steps if st.kind == "slider" and st.point == piston), None)
-    if sd is None or getattr(sd, "path", None) is None or first.kind != "crank":
+    pair = slider_crank(plan, piston)
+    if pair is None:
         geometry(scene, plan, piston, 1.0)  # refuses in its words
+    first, sd = pair
     (ox, oy), (bx, by) = scene.ground[first.pivot], P[piston]
     ux, uy = sd.path.u
     d = np.ravel((bx - ox) * ux + (by - oy) * uy)
@@ -171,12 +187,7 @@ def engine_piston(scene, plan):
     gas = [ld.target for ld in scene.loads if ld.gas is not None]
     if len(gas) != 1:
         return None
-    first = plan.steps[0]
-    sd = next((st for st in plan.steps if st.kind == "slider" and st.point == gas[0]), None)
-    if first.kind != "crank" or sd is None or getattr(sd, "path", None) is None or \
-            sd.b != first.tip:
-        return None
-    return gas[0]
+    return gas[0] if slider_crank(plan, gas[0]) is not None else None
 
 
 @dataclass(frozen=True)
@@ -206,12 +217,11 @@ def efforts(scene, plan, P, f) -> Efforts | None:
     piston = engine_piston(scene, plan)
     if piston is None:
         return None
-    first = plan.steps[0]
-    sd = next(st for st in plan.steps if st.kind == "slider" and st.point == piston)
+    first, sd = slider_crank(plan, piston)
     side = piston_side(scene, plan, P, piston)
     ux, uy = sd.path.u
     tx, ty = -side * ux, -side * uy  # towards the crank
-    rec = next(s for s in f.steps if s.kind == "slider" and s.bodies[1] == f"block {piston}")
+    rec = next(s for s in f.steps if s.bodies[1:] == (f"block {piston}",))
     kb = rec.known[1]
     F_P = kb[0] * tx + kb[1] * ty
     q = f.pin(piston, sd.link)

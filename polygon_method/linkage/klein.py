@@ -31,6 +31,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from .shapes import slider_crank_of
+
 __all__ = ["Klein", "construct", "klein_of", "klein_blocks"]
 
 
@@ -100,22 +102,17 @@ def construct(O, C, P, u, omega) -> Klein | None:
 def klein_of(sol):
     """(the :class:`Klein` of ``sol``'s slider crank, its names (O, C, P)) or (None, why):
     a slider crank whose crank turns at uniform speed."""
-    plan = sol.plan
-    first = plan.steps[0]
-    if first.kind != "crank" or sol.scene.input.second is not None:
-        return None, "no crank"
-    sd = next((st for st in plan.steps if st.kind == "slider" and st.b == first.tip
-               and getattr(st, "path", None) is not None), None)
-    if sd is None:
+    sk = slider_crank_of(sol.scene)
+    if sk is None or sol.scene.input.second is not None:
         return None, "no slider crank"
     if sol.scene.input.alpha:
         return None, ("the crank accelerates: Klein's construction takes its speed as "
                       "uniform")
-    w = sol.W[first.link]
-    k = construct(sol.P[first.pivot], sol.P[first.tip], sol.P[sd.point], sd.path.u, w)
+    w = sol.W[sk.crank]
+    k = construct(sol.P[sk.o], sol.P[sk.a], sol.P[sk.b], sk.u, w)
     if k is None:
         return None, "the rod stands square to the line of stroke"
-    return k, (first.pivot, first.tip, sd.point)
+    return k, (sk.o, sk.a, sk.b)
 
 
 def klein_blocks(sol) -> list:
