@@ -88,6 +88,10 @@ def with_forces(scene, seed):
     lk = rnd.choice(moving)
     if lk.key not in loads:
         loads[lk.key] = {"torque": f"{rnd.uniform(1, 50):.3f} N m ccw"}
+    ind = raw.pop("indicator", None)
+    if ind is not None:  # a steady gas force instead, its power in the balance as a load's
+        loads[ind.get("piston", scene.indicator.piston)] = {"pressure": "3 bar",
+                                                            "bore": ind["bore"]}
     raw["loads"] = loads
     return scene_from_table(raw)
 

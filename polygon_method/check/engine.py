@@ -28,8 +28,7 @@ ENGINE_KEYS = {"piston_effort": ("force", "N", "the piston effort"),
 
 
 def _refuse(sol, ans, why):
-    raise SceneError(f"{ans.key}: {why}", file=sol.scene.file, key=f"[answers] {ans.key}",
-                     line=ans.line)
+    raise SceneError(f"{ans.key}: {why}", key=f"[answers] {ans.key}", line=ans.line)
 
 
 def _value(sol, key, scene=None):
