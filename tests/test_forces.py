@@ -90,6 +90,10 @@ def with_forces(scene, seed):
     lk = rnd.choice(moving)
     if lk.key not in loads:
         loads[lk.key] = {"torque": f"{rnd.uniform(1, 50):.3f} N m ccw"}
+    ind = raw.pop("indicator", None)
+    if ind is not None:  # a steady gas force instead, its power in the balance as a load's
+        loads[ind.get("piston", scene.indicator.piston)] = {"pressure": "3 bar",
+                                                            "bore": ind["bore"]}
     raw["loads"] = loads
     return scene_from_table(raw)
 
@@ -438,7 +442,7 @@ speed = "450 rpm ccw"
     ('[masses]\nAB = 2', "a mass is { mass"),
     ('[gravity]\ng = 0', "g must be positive"),
     ('[gravity]\ndirecton = 270', "unknown key 'directon' (did you mean 'direction'?)"),
-    ('[loads]\nB = { pressure = "1 MPa", bore = 100 }', "no direction"),
+    ('[loads]\nB = { pressure = "1 MPa", direction = 0 }', "no bore"),
     ('[loads]\nA = { pressure = "1 MPa", bore = 100, direction = 180 }', "A is no slider"),
     ('[loads]\nB = { pressure = "1 mpa", bore = 100, direction = 180 }', "unknown unit 'mpa'"),
     ('[loads]\nB = { pressure = "1 MPa", bore = 100, rod = 120, direction = 0 }', "thinner"),

@@ -47,6 +47,7 @@ import math
 from ..common.errors import SceneError
 from ..motion.solution import Solution, tidied
 from .centres import centre_verdict
+from .engine import ENGINE_KEYS, engine_verdict
 from .mistakes import _Diagnoser
 from .tolerance import SOURCES, Stated, _Tolerances, answer_tolerance, choose_tolerance
 from .verdicts import _NOISE_KIND, ROUNDING, UNIT_OF, Verdict, verdicts_dict, verdicts_text
@@ -114,6 +115,9 @@ def check_answers(sol: Solution, answers=None, tolerance: float | None = None,
         if kind == "centre":
             rel = tolerance.relative if isinstance(tolerance, Stated) else tolerance
             out.append(centre_verdict(sol, ans, rel, centres))
+            continue
+        if kind in ENGINE_KEYS:  # the engine chapter's: its efforts, the cycle, the flywheel
+            out.append(engine_verdict(sol, ans, tolerance))
             continue
         exact = sol.value(kind, ans.names)
         if exact is None or not math.isfinite(exact):

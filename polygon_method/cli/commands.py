@@ -17,12 +17,36 @@ def _cmd_solve(args) -> int:
     from ..motion.solution import solve
 
     sol = solve(load_scene(args.scene, variants=False, answers=False))
+    cycle = _engine_cycle(sol)  # an engine asked for its cycle: [indicator] or [flywheel]
     if args.json:
-        print(json.dumps(sol.to_dict(), indent=2, allow_nan=False))
+        d = sol.to_dict()
+        if cycle is not None:
+            d["turning_moment"] = cycle.as_dict()
+        print(json.dumps(d, indent=2, allow_nan=False))
     else:
         from ..text.report import solution_text
         print(solution_text(sol))
+        if cycle is not None:
+            print("\n" + "\n".join(cycle.lines(sol.scene)))
     return 0
+
+
+def _engine_cycle(sol):
+    """The turning moment over an engine's cycle, for ``solve``, where the scene asks for
+    the cycle (an indicator diagram, or a flywheel); else None (``sweep --summary`` gives
+    it for any engine)."""
+    sc = sol.scene
+    if sc.indicator is None and sc.flywheel is None:
+        return None
+    from ..common.errors import PolygonMethodError
+    from ..linkage.flywheel import engine_piston, turning_moment
+    if sol.forces_refused or engine_piston(sc) is None:
+        if sc.flywheel is not None:
+            raise PolygonMethodError("[flywheel]: the flywheel is an engine's: a slider crank "
+                                     "with a gas force on its piston ([loads] pressure, or "
+                                     "[indicator])", file=sc.file, key="[flywheel]")
+        return None
+    return turning_moment(sc)
 
 
 def _cmd_plan(args) -> int:

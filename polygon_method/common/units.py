@@ -57,6 +57,7 @@ UNITS: dict[str, dict[str, float]] = {
                           "kg cm²": 1e-4, "g mm^2": 1e-9, "g cm^2": 1e-7,
                           "lb ft^2": 0.45359237 * 0.3048 ** 2,
                           "lb in^2": 0.45359237 * 0.0254 ** 2},
+    "energy": {"J": 1.0, "kJ": 1e3, "N m": 1.0, "N·m": 1.0, "kN m": 1e3, "kN·m": 1e3},
     "pressure": {"Pa": 1.0, "N/m^2": 1.0, "N/m²": 1.0, "kPa": 1e3, "kN/m^2": 1e3,
                  "kN/m²": 1e3, "MPa": 1e6, "N/mm^2": 1e6, "N/mm²": 1e6, "bar": 1e5,
                  "psi": 4.4482216152605 / 0.0254 ** 2},
@@ -90,7 +91,7 @@ LENGTH_UNITS = {"mm", "cm", "m", "in", "ft"}
 
 _SI_NAME = {"angle": "rad", "angular_velocity": "rad/s", "angular_acceleration": "rad/s^2",
             "force": "N", "torque": "N m", "velocity": "m/s", "acceleration": "m/s^2", "mass": "kg",
-            "moment_of_inertia": "kg m^2", "pressure": "Pa"}
+            "moment_of_inertia": "kg m^2", "pressure": "Pa", "energy": "J"}
 #: sense words: the format's cw/ccw, and the spellings textbooks use
 _SENSES = {"cw": "cw", "clockwise": "cw", "ccw": "ccw", "acw": "ccw", "anticlockwise": "ccw",
            "anti-clockwise": "ccw", "counterclockwise": "ccw", "counter-clockwise": "ccw"}

@@ -26,9 +26,16 @@ ARC_GAP = 0.1
 
 
 def _configuration(sol, scale: Scale) -> _Sketch:
+    from .klein import draw_klein, klein_line
     sk = _Sketch()
-    _mechanism(sk, sol, scale, extra=lambda sk, P: _auxiliary(sk, sol, scale, P))
-    _header(sk, "configuration", "Configuration diagram", scale, lines=[_drive(sol)])
+
+    def extra(sk, P):
+        _auxiliary(sk, sol, scale, P)
+        draw_klein(sk, sol, scale, P)  # a slider crank at uniform crank speed
+    _mechanism(sk, sol, scale, extra=extra)
+    klein = klein_line(sol)
+    _header(sk, "configuration", "Configuration diagram", scale,
+            lines=[_drive(sol)] + ([klein] if klein else []))
     return sk
 
 

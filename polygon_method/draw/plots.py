@@ -89,8 +89,20 @@ def plot_figure(res: SweepResult, *, points=None, links=None):
     gaps = np.nonzero(np.diff(x) > 1.5 * np.median(np.diff(x)))[0] + 1 if len(x) > 2 else []
     x = np.insert(x, gaps, np.nan)  # no line across angles left out
     here = _scene_values(sc)
-    fig = Figure(figsize=(10, 7.5), layout="constrained")
-    axes = fig.subplots(2, 2, sharex=True)
+    cycle = _engine_cycle(sc)
+    if cycle is None:
+        fig = Figure(figsize=(10, 7.5), layout="constrained")
+        axes = fig.subplots(2, 2, sharex=True)
+    else:  # an engine: its turning-moment diagram over the cycle below, the width of both
+        fig = Figure(figsize=(10, 10.5), layout="constrained")
+        gs = fig.add_gridspec(3, 2, height_ratios=(1, 1, 1.1))
+        first = fig.add_subplot(gs[0, 0])
+        axes = [[first, fig.add_subplot(gs[0, 1], sharex=first)],
+                [fig.add_subplot(gs[1, 0], sharex=first),
+                 fig.add_subplot(gs[1, 1], sharex=first)]]
+        for ax in axes[0]:
+            ax.tick_params(labelbottom=False)
+        _turning_moment_panel(fig.add_subplot(gs[2, :]), sc, *cycle)
     panels = [
         (axes[0][0], "speed v (m/s)", [(typeset("v", p), res.speed(p), here.get(f"v_{p}"))
                                        for p in pts]
@@ -163,6 +175,52 @@ def plot_figure(res: SweepResult, *, points=None, links=None):
                      "positions)")
     fig.suptitle("\n".join(lines), fontsize=10)
     return fig
+
+
+def _engine_cycle(scene):
+    """(the :class:`~polygon_method.linkage.TurningMoment`, phases in deg, the turning
+    moment at each) of an engine, or None for another mechanism (or one whose cycle cannot
+    be taken)."""
+    from ..linkage.flywheel import (_geometry, engine_piston, turning_moment,
+                                   turning_moment_at)
+    try:
+        if engine_piston(scene) is None:
+            return None
+        tm = turning_moment(scene)
+        g = _geometry(scene)
+    except PolygonMethodError:
+        return None
+    phase = np.linspace(0.0, tm.cycle, int(round(math.degrees(tm.cycle) * 2)) + 1)
+    return tm, np.degrees(phase), np.asarray(turning_moment_at(scene, g, phase), dtype=float)
+
+
+def _turning_moment_panel(ax, scene, tm, x, T):
+    """The turning-moment diagram: T against the crank angle from the inner dead centre,
+    the mean line, the areas above it and below it shaded, the crossings marked."""
+    from matplotlib.ticker import MultipleLocator
+    ax.plot(x, T, lw=1.3, color=SERIES_COLORS[0], label="turning moment T")
+    ax.axhline(tm.mean, color=SERIES_COLORS[3], lw=1.0,
+               label=f"mean T_mean = {tm.mean:.4g} N m")
+    ax.fill_between(x, T, tm.mean, where=T >= tm.mean, color=SERIES_COLORS[2], alpha=0.25,
+                    interpolate=True, label="above the mean (+)")
+    ax.fill_between(x, T, tm.mean, where=T <= tm.mean, color=SERIES_COLORS[1], alpha=0.25,
+                    interpolate=True, label="below the mean (-)")
+    ax.axhline(0.0, color="#4d4d4d", lw=0.6)
+    for c in tm.crossings:
+        _mark(ax, c, "change")
+    ax.set_xlim(0.0, math.degrees(tm.cycle))
+    ax.xaxis.set_major_locator(MultipleLocator(90.0 if tm.cycle > 2 * math.pi + 1 else 30.0))
+    ax.set_xlabel("crank angle from the inner dead centre, in the sense of rotation (°)")
+    ax.set_ylabel("turning moment T (N m, + driving)")
+    words = f"dE_max = {tm.dE_max:.4g} J"
+    if tm.flywheel is not None:
+        words += f"; flywheel I = {tm.flywheel[2]:.4g} kg m²"
+        if tm.flywheel[3] is not None:
+            words += f", rim mass {tm.flywheel[3]:.4g} kg"
+    ax.set_title(f"turning-moment diagram over the cycle ({words}); dash-dot: the "
+                 "crossings of the mean", fontsize=9)
+    ax.grid(True, lw=0.3)
+    ax.legend(fontsize=8, ncol=4, loc="best", framealpha=0.85)
 
 
 def plot_bytes(res: SweepResult, path: str, *, points=None, links=None) -> bytes:

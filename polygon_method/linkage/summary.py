@@ -404,8 +404,11 @@ class _Reducer:
                                  bool(tasks), (nm, 1.0) in unbounded, (nm, -1.0) in unbounded)
                          for nm, u, mx, tmx, mn, tmn, what in rows)
         formulas = ()
-        from . import engine_formula_lines  # an in-line slider crank's, or none
+        from . import engine_cycle_lines, engine_formula_lines  # an in-line slider crank's, or none
         formulas = tuple(engine_formula_lines(self.scene, {e.name: e for e in extremes}))
+        cycle = engine_cycle_lines(self.scene)  # an engine's turning moment and flywheel
+        if cycle:
+            formulas += (("",) if formulas else ()) + tuple(cycle)
         rng = None
         if not dom.full_turn:
             rng = (deg(dom.lo), deg(dom.hi))

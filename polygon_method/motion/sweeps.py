@@ -146,7 +146,10 @@ class SweepResult(Motion):
         """The force analysis over the sweep, for a scene with masses or gravity (none for a
         plan the analysis does not cover): the driver's torque with inertia (the negative
         of an engine's turning moment), the shaking force and moment, each guide's normal
-        force and the size of each pin force (named ``F_<pin>_<on>_<by>``)."""
+        force and the size of each pin force (named ``F_<pin>_<on>_<by>``); for an engine
+        (a gas force or an indicator diagram on a slider crank's piston) the piston effort
+        (towards the crank), the crank effort and the turning moment (both in the crank's
+        sense of rotation)."""
         f = self._forces()
         if f is None:
             return []
@@ -162,6 +165,12 @@ class SweepResult(Motion):
         cols += [(f"N_{g.point}", "N", np.broadcast_to(g.normal, n)) for g in f.guides]
         cols += [(f"F_{p.point}_{p.on}_{p.by}".replace(" ", ""), "N",
                   np.broadcast_to(np.hypot(*p.force), n)) for p in f.pins]
+        from ..forces.engine import efforts  # lazy, as in `_forces`
+        e = efforts(self.scene, self.plan, self.P, f)
+        if e is not None:  # an engine: the turning-moment diagram and its efforts
+            cols += [("piston_effort", "N", np.broadcast_to(e.F_P, n)),
+                     ("crank_effort", "N", np.broadcast_to(e.F_T, n)),
+                     ("turning_moment", "N m", np.broadcast_to(e.T, n))]
         return cols
 
     def to_csv(self, error_bound=False) -> str:

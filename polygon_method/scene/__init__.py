@@ -29,8 +29,8 @@ from __future__ import annotations
 from .reading import (key_line, load_answers, load_scene, parse_answers, parse_scene,
                       scene_from_table, scene_table)
 from .records import (ANSWER_KINDS, GIVEN_KINDS, Answer, CarriedPoint, Cylinder, FixedPath,
-                      GivenRate, Gravity, GuideSlider, Input, Link, Load, Mass, Pin,
-                      PositionGiven, Scene, YokeSlot, guide_words, split_name)
+                      Flywheel, GivenRate, Gravity, GuideSlider, Indicator, Input, Link, Load,
+                      Mass, Pin, PositionGiven, Scene, YokeSlot, guide_words, split_name)
 from .variation import Variation, VariantOf, Varied
 
 __all__ = [
@@ -39,5 +39,5 @@ __all__ = [
     "Answer", "load_scene", "parse_scene", "split_name", "ANSWER_KINDS", "parse_answers",
     "load_answers", "key_line", "scene_table", "scene_from_table", "Variation", "Varied",
     "VariantOf", "GivenRate", "GIVEN_KINDS", "Cylinder", "PositionGiven", "Mass", "Gravity",
-    "guide_words",
+    "guide_words", "Indicator", "Flywheel",
 ]

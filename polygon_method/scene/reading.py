@@ -22,6 +22,7 @@ from .rolling import read_rolling
 from .records import (_ABSURD_LONG, _ABSURD_SHORT, _POINT_ONLY, _UNIT_ORDER, TOP_KEYS, FixedPath,
                       GuideSlider, Link, Scene, split_name)
 from .inputs import _Input
+from .engine import _Engine
 from .masses import _Masses
 from .tables import _suggest, _Tables
 from .variation import _Variants
@@ -367,7 +368,7 @@ def _long_integer(raw):
     return None
 
 
-class _Loader(_Tables, _Input, _Variants, _Masses):
+class _Loader(_Tables, _Input, _Variants, _Masses, _Engine):
     def __init__(self, raw: dict, text: str, file):
         self.raw = raw
         self.lines = toml_lines(text)
@@ -543,6 +544,8 @@ class _Loader(_Tables, _Input, _Variants, _Masses):
         loads = self.loads(known)
         masses = self.masses(points, sliders)
         gravity = self.gravity()
+        indicator = self.indicator(sliders)
+        flywheel = self.flywheel()
         tolerance, answers = self.answers(known, sliders, pins, loads) \
             if getattr(self, "read_answers", True) else (None, ())
         self.connected(links, points, sliders, ground, inp, cylinders, rolling)
@@ -559,7 +562,7 @@ class _Loader(_Tables, _Input, _Variants, _Masses):
                      source=source if isinstance(source, str) else None, variation=variation,
                      variant=variant, reading_notes=tuple(self.read_notes), _link_index=index,
                      rolling=tuple(rolling), masses=tuple(masses), gravity=gravity,
-                     _lines=tuple(self.lines))
+                     indicator=indicator, flywheel=flywheel, _lines=tuple(self.lines))
 
     def scale(self):
         return UNITS["length"][self.unit]

@@ -25,7 +25,7 @@ _ABSURD_SHORT = 1e-7
 
 TOP_KEYS = ("title", "source", "notes", "units", "ground", "links", "points", "sliders",
             "cylinders", "rolling", "assembly", "input", "pins", "loads", "answers", "variants",
-            "variant", "masses", "gravity")
+            "variant", "masses", "gravity", "indicator", "flywheel")
 INPUT_KEYS = ("crank", "angle", "speed", "acceleration")
 #: the kinds of quantity on which [input] may give the motion instead of the crank's speed
 #: (named as answer keys: ``omega_BC``, ``vs_B``, ``v_B``), with their rate's prefix
@@ -368,12 +368,18 @@ class Pin:
 class Load:
     """A force on a point (N), or a torque on a link (N m, ccw positive). A gas force on a
     piston is a force whose ``gas`` says how it was given: (pressure in Pa, area in m^2,
-    the words "0.5 N/mm^2 on a 100 mm bore"); the force is pressure times area."""
+    the words "0.5 N/mm^2 on a 100 mm bore"); the force is pressure times area.
+
+    A gas force given without its direction pushes the piston towards the crank, as books
+    mean it: ``toward`` is then its size (N; negative: away from the crank), and its
+    direction is worked out when the scene is compiled, from the piston's place beside the
+    crank centre (``force`` is None until then)."""
 
     target: str
     force: tuple[float, float] | None = None
     torque: float | None = None
     gas: tuple | None = None
+    toward: float | None = None
 
 
 @dataclass(frozen=True)
@@ -404,6 +410,40 @@ class Gravity:
     g: float
     direction: tuple
     text: str = ""
+
+
+@dataclass(frozen=True)
+class Indicator:
+    """An indicator diagram: the gas pressure on the piston ``piston`` over a whole cycle
+    (``cycle`` rad of the crank: 2 pi for a two-stroke engine or a steam engine, 4 pi for a
+    four-stroke one), pushing it towards the crank on ``area`` (m^2, the bore's circle less
+    the rod's where given). ``against`` is "angle" (``x``: crank angles from the inner dead
+    centre in the crank's sense, rad; ``p``: the pressure at each, Pa; linear between them,
+    round the cycle) or "stroke" (``x``: the piston's place as a fraction of the stroke from
+    the inner dead centre, 0 to 1; ``p``: one row of pressures per stroke, in the cycle's
+    order from the inner dead centre). ``words``: how the scene gave it."""
+
+    piston: str
+    area: float
+    cycle: float
+    against: str
+    x: tuple
+    p: tuple
+    words: str = ""
+
+
+@dataclass(frozen=True)
+class Flywheel:
+    """The flywheel asked for: the coefficient of fluctuation of speed ``coefficient``
+    (``Cs = (w_max - w_min) / w_mean``, the whole range), the mean speed ``speed`` (rad/s;
+    None: the crank's), the rim's mean radius ``radius`` (m) or the radius of gyration
+    ``gyration`` (m) for its mass, or None; ``words``: how the scene gave Cs."""
+
+    coefficient: float
+    speed: float | None = None
+    radius: float | None = None
+    gyration: float | None = None
+    words: str = ""
 
 
 @dataclass(frozen=True)
@@ -445,6 +485,10 @@ class Scene:
     #: force analysis; a scene without them is solved for its motion alone, as before
     masses: tuple = ()
     gravity: Gravity | None = None
+    #: the engine chapter: an indicator diagram (:class:`Indicator`) and the flywheel
+    #: asked for (:class:`Flywheel`), or None
+    indicator: Indicator | None = None
+    flywheel: Flywheel | None = None
     #: where the problem comes from (the scene's ``source``), for headings
     source: str | None = field(default=None, compare=False)
     #: the scene's [variants] (what may vary per student), and [variant] (which one it is)
@@ -563,7 +607,7 @@ class Scene:
     @property
     def has_forces(self) -> bool:
         """Whether the scene asks for the force analysis: it gives masses or gravity."""
-        return bool(self.masses) or self.gravity is not None
+        return bool(self.masses) or self.gravity is not None or self.indicator is not None
 
     def rolling_of(self, point: str):
         """The rolling pair whose wheel has ``point`` as its rim point, or None."""

@@ -11,9 +11,14 @@ from ..common.errors import SceneError, printable
 from ..common.units import UNITS, did_you_mean
 from .angles import read_angle
 from .triangle import apex
+
 from .records import (ANSWER_KINDS, UNDER_BLOCK_KINDS, Answer, CarriedPoint, Cylinder, guide_words,
                       FixedPath, GuideSlider, Load, Pin, YokeSlot, split_name,
                       under_block_names)
+
+#: the engine chapter's answer keys -> their unit kind (checked in check/engine.py)
+ENGINE_ANSWERS = {"piston_effort": "force", "crank_effort": "force", "T_mean": "torque",
+                  "dE_max": "energy", "I_flywheel": "moment_of_inertia", "m_flywheel": "mass"}
 
 
 def _unit_at(ang: float) -> tuple:
@@ -443,11 +448,11 @@ class _Tables:
                 raise self.error("a load is { force = \"2 kN\", direction = 0 }, { force = "
                                  "[Fx, Fy] } or, on a link, { torque = \"20 N m cw\" }",
                                  "loads", name)
-            allowed = ("force", "direction", "torque", "pressure", "bore", "rod")
+            allowed = ("force", "direction", "torque", "pressure", "bore", "rod", "back")
             for k in spec:
                 if k not in allowed:
                     raise self.error(f"unknown key '{k}'{_suggest(k, allowed)}", "loads", name)
-            if "pressure" in spec or "bore" in spec or "rod" in spec:
+            if "pressure" in spec or "bore" in spec or "rod" in spec or "back" in spec:
                 out.append(self.gas_load(name, spec))
                 continue
             if "torque" in spec:
@@ -490,35 +495,50 @@ class _Tables:
     def gas_load(self, name, spec):
         """A gas force on a piston: pressure times the piston's area (the bore's circle, less
         the piston rod's on the crank side of a double-acting cylinder), along
-        ``direction``."""
+        ``direction``; without a direction, towards the crank (worked out when the scene is
+        compiled). ``back``: a double-acting cylinder's crank-side pressure, on the bore's
+        circle less the rod's, pushing the other way (``pressure`` then acts on the whole
+        bore, the cover side)."""
         if name not in self.slider_points:
             raise self.error(f"a gas pressure acts on a piston: {name} is no slider",
                              "loads", name)
-        for k in ("pressure", "bore", "direction"):
+        for k in ("pressure", "bore"):
             if k not in spec:
-                raise self.error(f"a gas force needs pressure, bore and direction (the way "
-                                 f"the gas pushes the piston, deg ccw from +x): no {k}",
-                                 "loads", name)
+                raise self.error(f"a gas force needs pressure and bore (and direction, the "
+                                 f"way the gas pushes the piston, deg ccw from +x, when not "
+                                 f"towards the crank): no {k}", "loads", name)
         if "force" in spec or "torque" in spec:
             raise self.error("give the gas force by pressure and bore, or a force, not both",
                              "loads", name)
         p = self.qty(spec["pressure"], "pressure", "loads", name).value
         bore = self.length(spec["bore"], "loads", name)
         area = math.pi / 4 * bore * bore
+        rod_area = 0.0
         words = f"{spec['pressure']} on a {self._words(bore)} bore"
         if "rod" in spec:
             rod = self.length(spec["rod"], "loads", name)
             if rod >= bore:
                 raise self.error(f"the piston rod ({self._words(rod)}) must be thinner than "
                                  f"the bore ({self._words(bore)})", "loads", name)
-            area -= math.pi / 4 * rod * rod
-            words += f" less a {self._words(rod)} rod"
+            rod_area = math.pi / 4 * rod * rod
+            if "back" not in spec:
+                area -= rod_area
+                words += f" less a {self._words(rod)} rod"
+        f = p * area
+        if "back" in spec:  # double-acting: the cover side's pressure less the crank side's
+            back = self.qty(spec["back"], "pressure", "loads", name).value
+            f -= back * (area - rod_area)
+            words += (f" (the cover side) against {spec['back']} on the crank side"
+                      + (f" less a {self._words(math.sqrt(rod_area * 4 / math.pi))} rod"
+                         if rod_area else ""))
+            p, area = f / area, area  # the net pressure on the whole bore
+        if "direction" not in spec:
+            return Load(name, force=None, gas=(p, area, words), toward=f)
         book = self.book_angle(spec["direction"], "direction", "loads", name,
                                f"direction of the gas force at {name}")
         ang = book.value if book is not None else self.qty(
             spec["direction"], "angle", "loads", name, default_unit="deg").value
         ux, uy = _unit_at(ang)
-        f = p * area
         return Load(name, force=(f * ux, f * uy), gas=(p, area, words))
 
     def answers(self, known, sliders, pins, loads):
@@ -574,7 +594,7 @@ class _Tables:
         keys += [f"{k}_{s}" for k in ("vs", "as", "ac") for s in slider_names]
         keys += [f"rub_{p}" for p in sorted(pin_names)]
         keys += [f"{k}_{n}" for k in ("v", "a") for n in self.under_names(known, slider_names)]
-        return keys + (["torque"] if loads else [])
+        return keys + (["torque"] if loads else []) + list(ENGINE_ANSWERS)
 
     def under_names(self, known, slider_names) -> dict:
         """``A1`` -> the block at A's slider key: the guide's point under the block."""
@@ -605,7 +625,8 @@ class _Tables:
         line = self.line_of("answers", key)
         forces = getattr(self, "scene_forces", None)  # an answer file: its scene's
         if forces is None:
-            forces = bool(self.raw.get("masses")) or "gravity" in self.raw
+            forces = bool(self.raw.get("masses")) or "gravity" in self.raw or \
+                "indicator" in self.raw
         hint = lambda: self.key_hint(key, known, slider_names, pin_names, loads)  # noqa: E731
         read = decimal_comma(value)
         if read is None:
@@ -627,6 +648,11 @@ class _Tables:
             q = self.qty(value, "torque", "answers", key, default_unit="N m", allow_sense=True,
                          refuse_absurd=False)
             return Answer(key, "torque", (), q.value, q.sense, raw_text, line)
+        if key in ENGINE_ANSWERS:  # the engine chapter's: efforts, the cycle, the flywheel
+            kind = ENGINE_ANSWERS[key]
+            q = self.qty(value, kind, "answers", key, default_unit=next(iter(UNITS[kind])),
+                         allow_sense=False, refuse_absurd=False)
+            return Answer(key, key, (), q.value, None, raw_text, line)
         prefix, _, rest = key.partition("_")
         if prefix == "I" and rest:
             return self.centre_answer(key, rest, value, line)

@@ -91,6 +91,8 @@ def compile_plan(scene: Scene) -> Plan:
     if scene.input.omega is None or (scene.input.placed is not None
                                      and not scene.input.placed.found):
         object.__setattr__(scene, "input", plan.scene.input)  # completed when compiled
+    if any(ld.toward is not None and ld.force is None for ld in scene.loads):
+        _gas_towards_crank(plan, scene)  # a gas force's direction (loads are not in the key)
     try:
         ident = id(scene)
         _BY_ID[ident] = (weakref.ref(scene, functools.partial(_forget, ident=ident)), plan)
@@ -123,6 +125,46 @@ def _given(plan):
                  f"{sc.input.crank} = {abs(res.alpha):.6g} rad/s^2 {sense(res.alpha)}")
     dims = replace(plan.dims, omega=res.omega, alpha=res.alpha)
     return replace(plan, dims=dims, notes=(note,) + res.notes + plan.notes, given=res)
+
+
+def _gas_towards_crank(plan, sc):
+    """A gas force given without its direction pushes the piston towards the crank: along
+    the piston's path, from the piston towards the foot of the crank centre, at the scene's
+    instant (a piston stays on its side of the crank centre over the whole turn). The
+    scene's loads are completed with it (a scene is complete once compiled)."""
+    if not any(ld.toward is not None for ld in sc.loads):
+        return
+    first = plan.steps[0]
+    pivot = getattr(first, "pivot", None)  # a driving crank's (a block driver has none)
+    state = None
+    loads = []
+    for ld in sc.loads:
+        if ld.toward is None:
+            loads.append(ld)
+            continue
+        where = f"[loads] {ld.target}"
+        path = next((s for s in sc.sliders if s.point == ld.target), None)
+        if pivot is None or path is None or not hasattr(path, "through") or path.slot:
+            raise SceneError(f"the gas force at {ld.target} pushes the piston towards the "
+                             "crank only for a piston on a fixed path driven by a crank: give "
+                             "its direction", file=sc.file, key=where,
+                             line=key_line(sc, where))
+        if state is None:
+            inp = sc.input
+            state = plan.run(Context(inp.angle, 0.0, 0.0), upto=0)
+        (ox, oy), (x, y) = state.P[pivot], state.P[ld.target]
+        ux, uy = path.u
+        d = (ox - x) * ux + (oy - y) * uy
+        size = max(lk.length for lk in sc.links)
+        if abs(d) <= 1e-9 * size:
+            raise SceneError(f"the piston {ld.target} is level with the crank centre {pivot} "
+                             "along its path: towards the crank says no way: give the gas "
+                             "force's direction", file=sc.file, key=where,
+                             line=key_line(sc, where))
+        s = 1.0 if d > 0 else -1.0
+        f = ld.toward
+        loads.append(replace(ld, force=(f * s * ux + 0.0, f * s * uy + 0.0)))
+    object.__setattr__(sc, "loads", tuple(loads))
 
 
 def _place(scene) -> tuple:

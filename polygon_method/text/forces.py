@@ -14,9 +14,10 @@ import math
 from ..solver.errorbound import SHOWN, USELESS
 from ..forces import FRAME, side_label
 from ..forces.bounds import NO_BOUND, force_bounds
+from ..forces.engine import efforts
 from ..common.numbers import fmt, quiet, sense_word
 
-__all__ = ["forces_lines", "force_blocks", "bound_lines"]
+__all__ = ["forces_lines", "force_blocks", "bound_lines", "engine_lines"]
 
 
 def _scales(sol, f):
@@ -108,6 +109,7 @@ def forces_lines(sol) -> list:
     out += _driver_lines(f, F, M, " (inertia, weights and loads)")
     out.append(f"shaking force on the frame: {_vec(f.shaking_force, F)}; shaking moment "
                f"about the origin: {_moment(f.shaking_moment, M)}")
+    out += engine_lines(sol)
     for st in f.steps:
         if st.condition < 0.0871557:  # sin 5 deg, as the kinematic warnings
             out.append(f"warning: forces, step {st.index + 1} ({st.title}): condition "
@@ -155,6 +157,23 @@ def _polygon_items(st, f, scale, F) -> list:
     if across:
         items.append("read across it (whole pin forces): " + ", ".join(across))
     return items
+
+
+def engine_lines(sol) -> list:
+    """An engine's efforts at the instant, in the book's words (none for another scene)."""
+    f = sol.forces
+    e = efforts(sol.scene, sol.plan, sol.P, f)
+    if e is None:
+        return []
+    F, M = _scales(sol, f)
+    q = lambda v: fmt(quiet(v, F))  # noqa: E731
+    return [f"engine: piston effort F_P = {q(e.F_P)} N (along the line of stroke, towards "
+            f"the crank: the gas force and the reciprocating parts' inertia and weight); "
+            f"thrust in the rod {e.rod} F_Q = {q(e.F_Q)} N; side thrust on the cylinder "
+            f"walls F_N = {q(e.F_N)} N",
+            f"engine: crank effort F_T = {q(e.F_T)} N (across the crank {e.crank} at its pin, "
+            f"in the sense of rotation); turning moment T = F_T r = {fmt(quiet(e.T, M))} N m "
+            "(positive: with the rotation, the engine driving)"]
 
 
 def force_blocks(sol, scale=None) -> list:

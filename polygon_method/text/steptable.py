@@ -46,6 +46,7 @@ from ..polygons.scales import DRAWING_PRECISION_CM, diagram_scales, extent, forc
 from ..scene import FixedPath, GuideSlider, guide_words, split_name
 from ..solver.kinematics import evaluate
 from ..motion.solution import Solution, tidied
+from ..linkage.klein import klein_blocks
 
 __all__ = ["steps_text", "steps_blocks", "read_off", "fmt", "sense_word"]
 
@@ -670,6 +671,7 @@ def steps_blocks(sol: Solution) -> _Doc:
     _acceleration(doc, sol, ascale)
     fscale = force_scale(sol.forces) if sc.has_forces and not sol.forces_refused else None
     doc.blocks += force_blocks(sol, fscale)
+    doc.blocks += klein_blocks(sol)  # a slider crank at uniform crank speed
     tail = [f"warning: {w}" for w in sol.warnings] + [f"note: {n}" for n in sol.notes]
     if tail:
         doc.h("Notes")

@@ -96,7 +96,10 @@ def given(sc) -> list:
         size = pin.radius * (2 if pin.given == "diameter" else 1)
         out.append(f"Pin at {pin.point}: {pin.given} {_len(sc, size)}.")
     for ld in sc.loads:
-        if ld.gas is not None:
+        if ld.gas is not None and ld.force is None:  # towards the crank, not yet compiled
+            out.append(f"The gas pressure on the piston {ld.target} is {ld.gas[2]}, pushing "
+                       "it towards the crank.")
+        elif ld.gas is not None:
             fx, fy = ld.force
             out.append(f"The gas pressure on the piston {ld.target} is {ld.gas[2]}, pushing "
                        f"it at {fmt(math.degrees(math.atan2(fy, fx)) % 360)}°.")
@@ -113,6 +116,11 @@ def given(sc) -> list:
                    + ("." if m.block else f", its {m.how}."))
     if sc.gravity is not None:
         out.append(f"Gravity acts: {sc.gravity.text}.")
+    if sc.indicator is not None:
+        out.append(f"The gas pressure on the piston {sc.indicator.piston} over the cycle is "
+                   f"given by its {sc.indicator.words}.")
+    if sc.flywheel is not None:
+        out.append(f"A flywheel is to keep the speed steady: {sc.flywheel.words}.")
     return out
 
 

@@ -1,0 +1,154 @@
+"""The engine chapter's answer keys: the piston effort and the crank effort at the instant,
+and over the cycle the mean torque, the maximum fluctuation of energy and the flywheel
+(its moment of inertia, its rim's mass); with the classic slips each solved again as the
+slip would have it.
+
+They are computed answers (no drawing to read): the tolerance is the answers' own, or
+three significant figures.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+from ..common.errors import PolygonMethodError, SceneError
+from ..forces.engine import efforts, slider_crank
+from ..linkage.flywheel import turning_moment
+from ..motion.solution import solve
+from .verdicts import ROUNDING, Verdict
+
+#: answer key -> (unit kind, SI unit, what it is)
+ENGINE_KEYS = {"piston_effort": ("force", "N", "the piston effort"),
+               "crank_effort": ("force", "N", "the crank effort"),
+               "T_mean": ("torque", "N m", "the mean turning moment"),
+               "dE_max": ("energy", "J", "the maximum fluctuation of energy"),
+               "I_flywheel": ("moment_of_inertia", "kg m^2", "the flywheel's moment of inertia"),
+               "m_flywheel": ("mass", "kg", "the flywheel's mass")}
+
+
+def _refuse(sol, ans, why):
+    raise SceneError(f"{ans.key}: {why}", key=f"[answers] {ans.key}", line=ans.line)
+
+
+def _value(sol, key, scene=None):
+    """The exact value of ``key`` for ``scene`` (default the solution's), or None where the
+    scene cannot give it."""
+    sc = scene or sol.scene
+    if key in ("piston_effort", "crank_effort"):
+        s = sol if scene is None else solve(sc)
+        e = efforts(sc, s.plan, s.P, s.forces) if sc.has_forces else None
+        if e is None:
+            return None
+        return abs(e.F_P if key == "piston_effort" else e.F_T)
+    tm = turning_moment(sc)
+    if key == "T_mean":  # a mean within rounding of nought (1e-9 of the greatest) is nought
+        return tm.mean if abs(tm.mean) > 1e-9 * max(abs(tm.T_max), abs(tm.T_min)) else 0.0
+    if key == "dE_max":
+        return tm.dE_max
+    if tm.flywheel is None:
+        return None
+    return tm.flywheel[2] if key == "I_flywheel" else tm.flywheel[3]
+
+
+def _slips(sol, key, correct):
+    """(value, code, words) of each classic slip for ``key``."""
+    sc = sol.scene
+    out = []
+    blocks = [m for m in sc.masses if m.block]
+    if blocks and key != "T_mean":  # (the inertia averages nothing over a cycle)
+        try:
+            if key in ("piston_effort", "crank_effort"):
+                v = _gas_alone(sol, key)
+            else:
+                v = _value(sol, key, replace(sc, masses=tuple(m for m in sc.masses
+                                                              if not m.block)))
+        except PolygonMethodError:
+            v = None
+        if v is not None:
+            out.append((abs(v), "piston_inertia_left_out",
+                        "the inertia of the reciprocating parts at "
+                        f"{', '.join(m.body for m in blocks)} left out"))
+    if key in ("I_flywheel", "m_flywheel") and sc.flywheel is not None:
+        out.append((2 * correct, "cs_half_range",
+                    "the coefficient of fluctuation of speed taken as the range either side "
+                    "of the mean: Cs = (w_max - w_min) / w_mean is the whole range (+-1 % is "
+                    "Cs = 0.02)"))
+        out.append((correct / 2, "cs_doubled",
+                    "the coefficient of fluctuation of speed taken as twice the whole range"))
+    if key in ("dE_max", "I_flywheel", "m_flywheel"):
+        tm = turning_moment(sc)
+        if tm.lobes:
+            big = max(abs(lb.energy) for lb in tm.lobes)
+            if abs(big - tm.dE_max) > 1e-9 * tm.dE_max:
+                f = big / tm.dE_max
+                out.append((correct * f, "largest_area",
+                            "the largest single area between the turning moment and its mean "
+                            "taken for the fluctuation of energy: dE_max = E_max - E_min, the "
+                            "energies at the crossings summed in order"))
+    if key == "T_mean" and sc.indicator is not None and sc.indicator.cycle > 2 * math.pi + 1:
+        out.append((2 * correct, "one_turn_cycle",
+                    "the work of a four-stroke cycle divided by one turn (2 pi) instead of "
+                    "two (4 pi)"))
+    return out
+
+
+def _gas_alone(sol, key):
+    """The piston or crank effort from the gas force alone (the closed forms, without the
+    reciprocating parts' inertia)."""
+    sc = sol.scene
+    e = efforts(sc, sol.plan, sol.P, sol.forces)
+    blk = next(i for i in sol.forces.inertia if i.body == f"block {e.piston}")
+    _, sd = slider_crank(sol.plan, e.piston)
+    fx, fy = blk.force
+    ux, uy = sd.path.u
+    (bx, by), (ox, oy) = sol.P[e.piston], sol.P[sol.plan.steps[0].pivot]
+    side = 1.0 if (bx - ox) * ux + (by - oy) * uy >= 0 else -1.0
+    toward = -side * (fx * ux + fy * uy)  # the inertia force towards the crank
+    F_P = e.F_P - toward
+    if key == "piston_effort":
+        return F_P
+    return e.F_T * F_P / e.F_P if e.F_P else None
+
+
+def engine_verdict(sol, ans, tolerance) -> Verdict:
+    """The :class:`Verdict` on one of the engine chapter's answers."""
+    key = ans.key
+    if key in ("piston_effort", "crank_effort") and not sol.scene.has_forces:
+        _refuse(sol, ans, "the engine's efforts need the force analysis: give [masses] (the "
+                          "reciprocating parts) or [indicator]")
+    try:
+        correct = _value(sol, key)
+    except PolygonMethodError as exc:
+        _refuse(sol, ans, exc.message)
+    if correct is None:
+        _refuse(sol, ans, "no value to check against: " +
+                ("the scene has no [flywheel]" if key == "I_flywheel" else
+                 "give the flywheel's [flywheel] radius (or gyration) for its mass"
+                 if key == "m_flywheel" else "the scene is no engine (a gas force on a slider "
+                 "crank's piston)"))
+    unit = ENGINE_KEYS[key][1]
+    signed = key == "T_mean" and ans.value < 0
+    given = ans.value if key == "T_mean" else abs(ans.value)
+    rel = getattr(tolerance, "relative", tolerance)
+    rule = f"{100 * rel:g} % (the answers' tolerance)" if rel is not None else \
+        "three significant figures (a computed answer)"
+    rel = rel if rel is not None else ROUNDING
+    tol = rel * abs(correct)
+    if correct == 0.0:  # a mean of nought: to the tolerance of the greatest turning moment
+        tm = turning_moment(sol.scene)
+        tol = rel * max(abs(tm.T_max), abs(tm.T_min))
+    err = abs(given - correct)
+    ok = err <= tol * (1 + 1e-12)
+    mistake = diagnosis = None
+    if not ok:
+        for v, code, words in _slips(sol, key, correct):
+            if abs(given - v) <= max(rel * abs(v), 1e-300) * (1 + 1e-12):
+                mistake, diagnosis = code, (f"{ENGINE_KEYS[key][2]} matches {words} "
+                                            f"({v:.4g} {unit}); the correct value is "
+                                            f"{correct:.4g} {unit}")
+                break
+    return Verdict(key, ans.raw, given, correct, unit,
+                   err / abs(correct) if correct else None,
+                   tol / abs(correct) if correct else math.inf, tol, rule, ok, signed,
+                   mistake, diagnosis, ans.line)

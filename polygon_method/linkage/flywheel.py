@@ -1,0 +1,314 @@
+"""The engine's turning-moment diagram over a cycle, the fluctuation of energy and the
+flywheel (the engine chapter's last exercise).
+
+The turning moment ``T`` is the torque the gas force and the inertia of the parts put on the
+crank (the driver's torque with inertia, reversed), taken in the crank's sense of rotation:
+positive where the engine drives. Over a cycle of ``Theta`` rad of the crank (one turn; two
+for a four-stroke indicator diagram), from the inner dead centre:
+
+- the mean torque ``T_mean = (1 / Theta) int T dphi`` (the work per cycle over Theta);
+- the energy ``E(phi) = int_0^phi (T - T_mean) dphi``: the areas above and below the mean
+  line, taken in order between its crossings; the speed is greatest where E is, least where
+  E is least, and the maximum fluctuation of energy is ``dE_max = E_max - E_min``;
+- the flywheel that keeps the speed within the coefficient of fluctuation
+  ``Cs = (w_max - w_min) / w_mean``: ``I = dE_max / (w_mean^2 Cs)`` (from
+  ``dE = I w_mean (w_max - w_min)``), and a rim's mass ``I / R^2`` (or ``I / k^2``).
+
+Found exactly, not by counting samples: the crossings of the mean line are bracketed on a
+fine grid and refined by bisection on the solved turning moment to the last bit of the
+angle; every integral is a Gauss-Legendre rule on pieces no longer than 5 deg between the
+places where T has a corner or a jump (the dead centres, the indicator table's angles and
+the stroke places it gives) and the crossings, exact to rounding for T smooth on each piece.
+Two crossings closer together than the grid (a quarter of a degree) are missed: a lobe that
+thin holds no energy to speak of.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..common.errors import PolygonMethodError
+from ..forces import analyse
+from ..forces.engine import efforts, engine_piston as _piston, geometry, piston_side
+from ..scene import Scene
+from ..motion.sweeps import sweep
+from ..solver.compiler import compile_plan
+from ..motion.solution import solve
+
+__all__ = ["TurningMoment", "Lobe", "turning_moment", "engine_piston", "turning_moment_at"]
+
+_PIECE = math.radians(5.0)
+_NODES, _WEIGHTS = np.polynomial.legendre.leggauss(20)
+_GRID = math.radians(0.25)
+
+
+@dataclass(frozen=True)
+class Lobe:
+    """One area between the turning moment and its mean, from one crossing to the next
+    (phases in deg from the inner dead centre): ``energy`` (J) positive above the mean."""
+
+    start: float
+    end: float
+    energy: float
+
+
+@dataclass(frozen=True)
+class TurningMoment:
+    """The turning-moment diagram's numbers over one cycle (see the module's words).
+
+    Phases are crank angles in deg from the inner dead centre (``theta_idc``, deg from +x)
+    in the crank's sense of rotation; ``lobes`` in order from the first crossing;
+    ``E_max``/``E_min`` the energy's extremes (J, from its value at the inner dead centre)
+    at ``at_max``/``at_min``; ``flywheel``: (Cs, w_mean rad/s, I kg m^2, mass kg or None)
+    when the scene asks for one."""
+
+    cycle: float
+    theta_idc: float
+    sense: float
+    mean: float
+    work: float
+    T_max: float
+    at_T_max: float
+    T_min: float
+    at_T_min: float
+    crossings: tuple
+    lobes: tuple
+    E_max: float
+    at_max: float
+    E_min: float
+    at_min: float
+    flywheel: tuple | None
+    inertia_included: bool
+    words: str = ""
+
+    @property
+    def dE_max(self) -> float:
+        """The maximum fluctuation of energy, E_max - E_min over the cycle (J)."""
+        return self.E_max - self.E_min
+
+    def lines(self, scene) -> list:
+        """The summary's lines, in the book's words."""
+        deg = math.degrees(self.cycle)
+        out = [f"turning moment over the cycle ({deg:g} deg of the crank from the inner dead "
+               f"centre at {self.theta_idc:.4f} deg, in the crank's sense of rotation; "
+               + ("with the inertia of the moving parts" if self.inertia_included
+                  else "no masses given: the gas force alone") + "; " + self.words + ")",
+               f"  mean torque T_mean = {self.mean:.6g} N m (work per cycle {self.work:.6g} J;"
+               f" at {abs(scene.input.omega) * 30 / math.pi:.6g} rpm, power "
+               f"{self.mean * abs(scene.input.omega) / 1000:.6g} kW)",
+               f"  greatest turning moment (on a 0.25 deg grid) {self.T_max:.6g} N m at "
+               f"{self.at_T_max:.4f} deg, "
+               f"least {self.T_min:.6g} N m at {self.at_T_min:.4f} deg"]
+        if self.lobes:
+            out.append("  areas above (+) and below (-) the mean line, in order (J): "
+                       + ", ".join(f"{lb.energy:+.6g} ({lb.start:.3f} to {lb.end:.3f} deg)"
+                                   for lb in self.lobes))
+        out.append(f"  maximum fluctuation of energy dE_max = E_max - E_min = {self.E_max:.6g}"
+                   f" - ({self.E_min:.6g}) = {self.dE_max:.6g} J (the speed greatest at "
+                   f"{self.at_max:.4f} deg, least at {self.at_min:.4f} deg)")
+        if self.flywheel is not None:
+            cs, w, inertia, mass = self.flywheel
+            fw = scene.flywheel
+            out.append(f"  flywheel: {fw.words}, mean speed {w:.6g} rad/s ({w * 30 / math.pi:.6g}"
+                       f" rpm): I = dE_max / (w^2 Cs) = {inertia:.6g} kg m^2")
+            if mass is not None:
+                k = fw.radius if fw.radius is not None else fw.gyration
+                what = "a rim of mean radius" if fw.radius is not None else \
+                    "radius of gyration"
+                out.append(f"  {what} {k:.6g} m: mass m = I / {'R' if fw.radius else 'k'}^2 "
+                           f"= {mass:.6g} kg")
+        return out
+
+    def as_dict(self) -> dict:
+        """The JSON's ``turning_moment`` entry (SI; phases in deg)."""
+        out = {"cycle_deg": math.degrees(self.cycle), "inner_dead_centre_deg": self.theta_idc,
+               "T_mean": self.mean, "work_per_cycle": self.work, "T_max": self.T_max,
+               "at_T_max_deg": self.at_T_max, "T_min": self.T_min, "at_T_min_deg": self.at_T_min,
+               "crossings_deg": list(self.crossings),
+               "lobes": [{"from_deg": lb.start, "to_deg": lb.end, "energy": lb.energy}
+                         for lb in self.lobes],
+               "E_max": self.E_max, "at_E_max_deg": self.at_max, "E_min": self.E_min,
+               "at_E_min_deg": self.at_min, "dE_max": self.dE_max,
+               "inertia_included": self.inertia_included}
+        if self.flywheel is not None:
+            cs, w, inertia, mass = self.flywheel
+            out["flywheel"] = {"Cs": cs, "omega_mean": w, "I": inertia, "mass": mass}
+        return out
+
+
+def engine_piston(scene: Scene):
+    """The piston of an engine (see :func:`polygon_method.forces.engine.engine_piston`), or
+    None for a scene that is no engine."""
+    if not scene.has_forces and not any(ld.gas for ld in scene.loads):
+        return None
+    return _piston(scene, compile_plan(scene))
+
+
+def _geometry(scene):
+    piston = engine_piston(scene)
+    if piston is None:
+        raise PolygonMethodError("the turning moment over a cycle is an engine's: a slider "
+                                 "crank with a gas force on its piston ([loads] pressure, or "
+                                 "[indicator])", file=scene.file)
+    plan = compile_plan(scene)
+    sol = solve(scene)
+    return geometry(scene, plan, piston, piston_side(scene, plan, sol.P, piston))
+
+
+def turning_moment_at(scene: Scene, g, phase):
+    """The turning moment (N m, in the sense of rotation) at the phases ``phase`` (rad from
+    the inner dead centre, an array), solved with the forces at each."""
+    phase = np.asarray(phase, dtype=float)
+    theta = g.theta_i + g.sg * phase
+    res = sweep(scene, theta)
+    if len(res.theta) != len(theta):
+        raise PolygonMethodError("the engine's cycle passes a position where it cannot be "
+                                 "solved: no turning moment over the cycle", file=scene.file)
+    e = efforts(scene, res.plan, res.P, analyse(res))
+    return np.broadcast_to(e.T, theta.shape)
+
+
+def _breaks(scene, g, cycle) -> list:
+    """The phases (rad) where the turning moment may have a corner or a jump."""
+    out = {0.0, cycle}
+    k = 0.0
+    while k < cycle:
+        out |= {k, k + g.phase_o}
+        k += 2 * math.pi
+    ind = scene.indicator
+    if ind is not None and ind.against == "angle":
+        for x in ind.x:
+            out.add(x % cycle)
+    elif ind is not None:  # the stroke's places, on each stroke
+        starts = sorted(p for p in out if p < cycle)
+        for a, b in zip(starts, starts[1:] + [cycle]):
+            for x in ind.x:
+                out.add(_phase_at_fraction(g, a, b, x))
+    return sorted(p for p in out if 0.0 <= p <= cycle)
+
+
+def _fraction(g, phase):
+    """The piston's place as a fraction of the stroke at ``phase`` (closed form)."""
+    th = g.theta_i + g.sg * phase
+    (ox, oy), (fx, fy), (ux, uy) = g.O, g.F, g.u
+    ax, ay = ox + g.r * math.cos(th) - fx, oy + g.r * math.sin(th) - fy
+    au, an = ax * ux + ay * uy, -ax * uy + ay * ux
+    d = g.s * au + math.sqrt(g.l * g.l - an * an)  # the piston's distance from F
+    return (math.sqrt((g.l + g.r) ** 2 - g.e ** 2) - d) / g.stroke
+
+
+def _phase_at_fraction(g, a, b, x):
+    """The phase in [a, b] (one stroke) where the piston is at the fraction ``x``."""
+    fa = _fraction(g, a) - x
+    if fa == 0:
+        return a
+    for _ in range(200):
+        m = 0.5 * (a + b)
+        if m in (a, b):
+            break
+        fm = _fraction(g, m) - x
+        if (fm > 0) == (fa > 0):
+            a, fa = m, fm
+        else:
+            b = m
+    return 0.5 * (a + b)
+
+
+def _integrals(scene, g, edges):
+    """The integral of the turning moment over each piece between ``edges`` (rad)."""
+    xs, ws, owner = [], [], []
+    for i, (a, b) in enumerate(zip(edges, edges[1:])):
+        n = max(1, math.ceil((b - a) / _PIECE))
+        for j in range(n):
+            lo, hi = a + (b - a) * j / n, a + (b - a) * (j + 1) / n
+            half = 0.5 * (hi - lo)
+            xs.append(lo + half * (1.0 + _NODES))
+            ws.append(half * _WEIGHTS)
+            owner.append(np.full(len(_NODES), i))
+    T = turning_moment_at(scene, g, np.concatenate(xs))
+    return np.bincount(np.concatenate(owner), np.concatenate(ws) * T, len(edges) - 1)
+
+
+def _bisect(scene, g, lo, hi, mean):
+    """The crossings of the mean in each bracket [lo, hi] (arrays), to the last bit."""
+    flo = turning_moment_at(scene, g, lo) - mean
+    for _ in range(80):
+        mid = 0.5 * (lo + hi)
+        if np.all((mid == lo) | (mid == hi)):
+            break
+        fm = turning_moment_at(scene, g, mid) - mean
+        same = (fm > 0) == (flo > 0)
+        lo, flo = np.where(same, mid, lo), np.where(same, fm, flo)
+        hi = np.where(same, hi, mid)
+    return 0.5 * (lo + hi)
+
+
+def turning_moment(scene: Scene) -> TurningMoment:
+    """The turning-moment diagram's numbers over the engine's cycle (see the module)."""
+    g = _geometry(scene)
+    ind = scene.indicator
+    cycle = ind.cycle if ind is not None else 2 * math.pi
+    breaks = _breaks(scene, g, cycle)
+    work = float(_integrals(scene, g, breaks).sum())
+    mean = work / cycle
+    grid = np.unique(np.concatenate([np.linspace(0.0, cycle, int(round(cycle / _GRID)) + 1),
+                                     breaks]))
+    T = turning_moment_at(scene, g, grid)
+    d = T - mean
+    size = max(float(np.abs(T).max()), abs(mean), 1e-300)
+    exact = np.nonzero(d[:-1] == 0.0)[0]
+    flip = np.nonzero((d[:-1] != 0.0) & (d[1:] != 0.0) & ((d[:-1] > 0) != (d[1:] > 0)))[0]
+    cross = list(grid[exact])
+    if len(flip):
+        cross += list(_bisect(scene, g, grid[flip], grid[flip + 1], mean))
+    cross = sorted(c for c in cross if 0.0 <= c < cycle)
+    rd = math.degrees
+    i_max, i_min = int(np.argmax(T)), int(np.argmin(T))
+    if not cross or float(np.abs(d).max()) <= 1e-12 * size:  # a steady turning moment
+        lobes, E_max, at_max, E_min, at_min = (), 0.0, 0.0, 0.0, 0.0
+        cross = []
+    else:
+        edges = sorted(set(breaks) | set(cross))
+        parts = _integrals(scene, g, edges) - mean * np.diff(edges)
+        E = np.concatenate([[0.0], np.cumsum(parts)])  # E at each edge, from the i.d.c.
+        at = {e: E[k] for k, e in enumerate(edges)}
+        Ec = [at[c] for c in cross]
+        k_max, k_min = int(np.argmax(Ec)), int(np.argmin(Ec))
+        E_max, at_max, E_min, at_min = Ec[k_max], rd(cross[k_max]), Ec[k_min], rd(cross[k_min])
+        lobes = []
+        for k, c in enumerate(cross):
+            nxt = cross[k + 1] if k + 1 < len(cross) else cross[0] + cycle
+            e_next = Ec[k + 1] if k + 1 < len(cross) else Ec[0]  # the cycle closes on itself
+            lobes.append(Lobe(rd(c), rd(nxt) % math.degrees(cycle) if nxt > cycle else rd(nxt),
+                              e_next - Ec[k]))
+        lobes = tuple(lobes)
+    fly = None
+    if scene.flywheel is not None:
+        fw = scene.flywheel
+        w = fw.speed if fw.speed is not None else abs(scene.input.omega)
+        inertia = float(E_max - E_min) / (w * w * fw.coefficient)
+        k = fw.radius if fw.radius is not None else fw.gyration
+        fly = (fw.coefficient, w, inertia, inertia / (k * k) if k is not None else None)
+    words = (ind.words if ind is not None else
+             "; ".join(ld.gas[2] for ld in scene.loads if ld.gas is not None))
+    return TurningMoment(cycle, math.degrees(g.theta_i), g.sg, mean, work,
+                         float(T[i_max]), rd(grid[i_max]), float(T[i_min]), rd(grid[i_min]),
+                         tuple(rd(c) for c in cross), lobes, float(E_max), at_max,
+                         float(E_min), at_min, fly, bool(scene.masses), words)
+
+
+def engine_cycle_lines(scene: Scene) -> list:
+    """The turning-moment diagram's lines for ``sweep --summary`` (an engine's; nothing for
+    another mechanism, or one line saying why an engine's cycle cannot be taken)."""
+    try:
+        if engine_piston(scene) is None:
+            return []
+    except PolygonMethodError:
+        return []
+    try:
+        return turning_moment(scene).lines(scene)
+    except PolygonMethodError as exc:
+        return [f"turning moment over the cycle: not found ({exc.message})"]
