@@ -421,3 +421,27 @@ def test_every_public_definition_says_what_it_is():
         walk(tree)
     assert seen > 500
     assert missing == []
+
+
+def test_scenes_of_one_shape_but_other_loads_each_keep_their_own():
+    """The plan cache's key is what a plan is made of (points, links, input, pins), not the
+    loads or masses it leaves to the scene: a second scene of the same shape with another
+    load gets a plan that carries *it* (so ``evaluate`` and everything reading the plan's
+    scene read its load), and its sweep's torque is the power balance of its own load
+    (-F . v_E / omega, worked here from the velocities), not the first scene's."""
+    from polygon_method import sweep
+    root = Path(__file__).resolve().parent.parent
+    text = (root / "worked_problems" / "fourbar_forces.toml").read_text()
+    first = parse_scene(text)
+    second = parse_scene(text.replace('E = { force = "500 N"', 'E = { force = "900 N"'))
+    assert first.loads != second.loads
+    solve(first)
+    assert compile_plan(second).scene is second
+    assert evaluate(compile_plan(second)).scene.loads == second.loads
+    for sc, f in ((first, 500.0), (second, 900.0)):
+        res = sweep(sc, [sc.input.angle])
+        sol = solve(sc)
+        w = sc.input.omega
+        couple = next(ld for ld in sc.loads if ld.torque is not None)
+        power = -f * sol.V["E"][1] + couple.torque * sol.W[sc.link(couple.target).key]
+        assert math.isclose(res.input_torque[0], -power / w, rel_tol=1e-12)

@@ -91,6 +91,8 @@ def compile_plan(scene: Scene) -> Plan:
     if scene.input.omega is None or (scene.input.placed is not None
                                      and not scene.input.placed.found):
         object.__setattr__(scene, "input", plan.scene.input)  # completed when compiled
+    if plan.scene is not scene:  # a scene of the same content: its own loads, masses, ...
+        plan = _for_scene(plan, scene)
     if any(ld.toward is not None and ld.force is None for ld in scene.loads):
         _gas_towards_crank(plan, scene)  # a gas force's direction (loads are not in the key)
     try:
@@ -99,6 +101,18 @@ def compile_plan(scene: Scene) -> Plan:
     except TypeError:
         pass
     return plan
+
+
+def _for_scene(plan, scene):
+    """The cached plan of a scene of the same content, for ``scene``: the content key holds
+    what the plan is made of (its points, links, input, pins), not what it leaves to the
+    scene (its loads, masses, gravity, answers, title), so the plan carries the scene it is
+    asked for, never another's. Its steps and the phases already bound at its dimensions
+    (which the key fixes) are shared."""
+    out = replace(plan, scene=scene)
+    object.__setattr__(out, "_phases", plan._phases)
+    object.__setattr__(out, "_instant", plan._instant)
+    return out
 
 
 def _given(plan):
