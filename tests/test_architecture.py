@@ -445,3 +445,13 @@ def test_scenes_of_one_shape_but_other_loads_each_keep_their_own():
         couple = next(ld for ld in sc.loads if ld.torque is not None)
         power = -f * sol.V["E"][1] + couple.torque * sol.W[sc.link(couple.target).key]
         assert math.isclose(res.input_torque[0], -power / w, rel_tol=1e-12)
+
+
+def test_a_condition_is_read_as_an_angle_in_one_place():
+    """The transmission angle (the angle at which a step's two direction lines cross, from
+    its condition, their sine) is worked out once, ``common.tolerances.crossing_angle``;
+    an arcsine anywhere else is another thing (the slider crank's dead centres)."""
+    where = [path.relative_to(PACKAGE).as_posix() for path, text in _sources()
+             if re.search(r"\basin\(", text)]
+    assert "common/tolerances.py" in where
+    assert set(where) <= {"common/tolerances.py", "scene/angles.py"}, where

@@ -9,6 +9,7 @@ import sys
 from pathlib import Path
 
 from ..common.errors import PolygonMethodError, SceneError
+from ..common.tolerances import SAME
 from .files import check_outputs, write_outputs
 
 
@@ -272,7 +273,7 @@ def _requested_angles(args, scene=None):
                              f"+-{MAX_ANGLE_DEG:g} (got {a:g} and {b:g})")
         if s == 0 or (b - a) * s < 0:
             raise SceneError(f"--step {s:g} does not lead from {a:g} to {b:g} deg")
-        count = int(math.floor((b - a) / s + 1e-9)) + 1
+        count = int(math.floor((b - a) / s + SAME)) + 1
         if count > 100_000_000:
             raise SceneError(f"{count} crank angles are too many (at most 10^8)")
         return np.radians(a + s * np.arange(count))
@@ -298,7 +299,7 @@ def _requested_places(args, scene, ranged):
             raise SceneError("--from, --to and --step must be finite numbers")
         if s == 0 or (b - a) * s < 0:
             raise SceneError(f"--step {s:g} does not lead from {a:g} to {b:g} {uname}")
-        count = int(math.floor((b - a) / s + 1e-9)) + 1
+        count = int(math.floor((b - a) / s + SAME)) + 1
         if count > 100_000_000:
             raise SceneError(f"{count} places are too many (at most 10^8)")
         return (a + s * np.arange(count)) * u

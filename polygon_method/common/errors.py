@@ -1,4 +1,4 @@
-"""One error family and one tolerance policy.
+"""One error family (the tolerance policy, once here, is in :mod:`.tolerances`).
 
 Every failure the tool reports is a :class:`PolygonMethodError`. It carries where the
 problem is (file, table/key, line, plan step) so that the command line can print it as
@@ -17,6 +17,8 @@ Subclasses say what kind of failure it is:
 """
 
 from __future__ import annotations
+
+from .tolerances import TOL, Tolerances  # noqa: F401  (re-exported: their old home)
 
 __all__ = [
     "PolygonMethodError",
@@ -101,39 +103,3 @@ class AssemblyError(PolygonMethodError):
 
 class SingularStepError(PolygonMethodError):
     """A step's two direction lines are parallel: the step has no unique solution."""
-
-
-class Tolerances:
-    """The single tolerance policy of the tool.
-
-    Attributes
-    ----------
-    singular : float
-        A step whose condition measure (the sine of the angle between its two direction
-        lines) is below this is singular: an error, never a number. 1e-3 is about 0.06 deg
-        from a toggle, change point or dead centre: closer than that, rounding alone (which
-        moves a circle intersection by about eps L / c, and the acceleration polygon by
-        that over c^2 more) would put errors above 1e-6 of their size into the answers.
-    warn : float
-        Below this (sin 5 deg) the step is ill-conditioned: the answer is printed with a
-        warning naming the step. A drawing error of 0.25 deg then moves the intersection
-        by more than 3 %.
-    closure : float
-        Relative slack (of the lengths involved) within which a circle that just touches
-        another circle or line counts as touching rather than missing.
-    transmission_warn_deg : float
-        The lecture's advice: keep the transmission angle above 40 deg.
-    negligible : float
-        A value smaller than this fraction of the largest of its kind in the same solution
-        (a coupler that translates: omega 3e-13 beside 10 rad/s) is rounding noise: reports
-        and step tables show it as 0 with no sense; the JSON keeps the raw number.
-    """
-
-    singular = 1e-3
-    warn = 0.08715574274765817  # sin(5 deg)
-    closure = 1e-12
-    transmission_warn_deg = 40.0
-    negligible = 1e-10
-
-
-TOL = Tolerances()

@@ -29,6 +29,7 @@ ends. The same formulas take floats (one instant) or arrays (a sweep).
 
 from __future__ import annotations
 
+from ..common.tolerances import FLOOR
 from dataclasses import dataclass
 
 from ..steps.rounding import CAP, EPS, USELESS
@@ -85,7 +86,7 @@ def _scale(sol, f):
         vals += [m.mass * sc.gravity.g for m in sc.masses]
     if f.driver != "crank":
         vals.append(abs(f.input_torque))
-    return vmax(largest(vals), 1e-300)
+    return vmax(largest(vals), FLOOR)
 
 
 def _divisor(st, rec, P, L):
@@ -128,7 +129,7 @@ def _walk(sol, f, kb, F, L, start):
         ep = largest([kb.P[p] for p in pts]) if pts else EPS
         e_in = largest([known.get(b, 0.0) for b in rec.bodies])
         D = _divisor(st, rec, sol.P, L)
-        e = _cap((K * EPS + e_in + 2.0 * ep) * L / vmax(D, 1e-300))
+        e = _cap((K * EPS + e_in + 2.0 * ep) * L / vmax(D, FLOOR))
         out[rec.index] = e
         for p in rec.pins:
             for b in (p.on, p.by):
@@ -154,7 +155,7 @@ def force_bounds(sol, f=None) -> ForceBounds:
         if f.driver == "cylinder" else None
     if cyl is not None:  # the effort comes from the whole walk
         D = _divisor(by_index[cyl.index], cyl, sol.P, L)
-        e_f = _cap((K * EPS + steps[driver.index]) * L / vmax(D, 1e-300))
+        e_f = _cap((K * EPS + steps[driver.index]) * L / vmax(D, FLOOR))
         start = dict(start)
         for p in cyl.pins:
             if p.by != FRAME:

@@ -20,6 +20,7 @@ pressure pushes nothing.
 from __future__ import annotations
 
 from ..common.numbers import fmt
+from ..common.tolerances import FLOOR
 from .bodies import Singular, any_zero
 from .records import ForceStep, PinForce, Side
 
@@ -57,7 +58,7 @@ def effort(st, t0, t1, led):
     if any_zero(t1):
         raise Singular(f"the line of cylinder {st.key} passes through the crank's pivot: it "
                        "cannot turn the crank")
-    cond = abs(t1) / (st.rho if st.rho > 0 else 1e-300)
+    cond = abs(t1) / (st.rho if st.rho > 0 else FLOOR)
     if isinstance(cond, float):
         cond = min(cond, 1.0)
     else:  # a sweep

@@ -11,6 +11,7 @@ import numpy as np
 
 from ..solver.derived import transmission_angle
 from ..common.errors import TOL, SceneError, SingularStepError
+from ..common.tolerances import ROUNDING, SAME
 from ..solver.compiler import compile_plan
 from ..scene import Scene
 from ..motion.solution import solve
@@ -183,7 +184,7 @@ def analyse(scene: Scene) -> Linkage:
         members = (f"crank {sk.crank} = {_mm(sk.r, scene)}, connecting rod {sk.rod} = "
                    f"{_mm(sk.l, scene)}, slider {sk.b}"
                    + ("" if sk.inline else f", offset {_mm(abs(sk.e), scene)}"))
-        full = sk.l >= sk.r + abs(sk.e) * (1 - 1e-12)
+        full = sk.l >= sk.r + abs(sk.e) * (1 - ROUNDING)
         classification = [
             (f"r + e = {_mm(sk.r + abs(sk.e), scene)} {'<=' if full else '>'} l = "
              f"{_mm(sk.l, scene)}: " + ("the crank turns fully" if full else
@@ -402,7 +403,7 @@ def _output_motion(cyc: _Cycle, out: _Output, scene, fb, sk, slot):
                       f"{math.degrees(arc2):.4f} deg while it moves {d2}")
         alpha = abs(math.degrees(arc1) - 180.0)
         tlines.append(f"  time ratio {ratio:.6f} = (180 + {alpha:.4f}) / (180 - {alpha:.4f})"
-                      + ("  (equal strokes: no quick return)" if abs(ratio - 1) < 1e-9
+                      + ("  (equal strokes: no quick return)" if abs(ratio - 1) < SAME
                          else ""))
     elif not dom.full_turn:
         tlines.append("quick return: not applicable (the crank does not turn fully)")

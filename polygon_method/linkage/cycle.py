@@ -3,6 +3,7 @@ something stands still or turns over."""
 
 from __future__ import annotations
 
+from ..common.tolerances import SAME
 
 import numpy as np
 
@@ -12,7 +13,7 @@ from .shapes import _GRID
 
 #: a range of positions narrower than this fraction of the longest link is rounding about a
 #: standstill, not a stroke
-STANDSTILL = 1e-9
+STANDSTILL = SAME
 
 
 def stands_still(span, scene) -> bool:

@@ -3,6 +3,7 @@ slotted lever a plan makes (asked of its steps' kinds), with its output."""
 
 from __future__ import annotations
 
+from ..common.tolerances import FLOOR, SAME
 import math
 from dataclasses import dataclass
 
@@ -12,7 +13,7 @@ from ..solver.compiler import compile_plan
 from ..scene import FixedPath, Scene
 
 #: relative tolerance of the equality S + L = P + Q (and of equal lengths)
-_EQUAL = 1e-9
+_EQUAL = SAME
 _GRID = 3600
 
 
@@ -50,7 +51,7 @@ class Grashof:
 
 
 def _eq(a, b) -> bool:
-    return abs(a - b) <= _EQUAL * max(abs(a), abs(b), 1e-300)
+    return abs(a - b) <= _EQUAL * max(abs(a), abs(b), FLOOR)
 
 
 def grashof(crank, coupler, output, ground, *, crossed=None) -> Grashof:
@@ -137,7 +138,7 @@ class SliderCrank:
     @property
     def inline(self) -> bool:
         """The path passes through the crank's pivot (offset e = 0)."""
-        return abs(self.e) <= 1e-9 * self.l
+        return abs(self.e) <= SAME * self.l
 
     @property
     def n(self) -> float:

@@ -12,6 +12,7 @@ import numpy as np
 
 from ..solver.kinematics import Motion
 from ..common.numbers import quiet
+from ..common.tolerances import crossing_angle
 from ..scene import FixedPath, Scene
 from ..motion.sweeps import (SweepResult, rubbing_arrays, select, torque_array, angles_ok,
                      evaluate_all, stroke_places, sweep_angles)
@@ -260,7 +261,7 @@ class _Reducer:
     def shown(unit, value):
         """A reduced value as shown: the transmission angle from its sine."""
         if unit == "deg":
-            return math.degrees(math.asin(min(max(value, -1.0), 1.0)))
+            return crossing_angle(value)
         return value
 
     def add(self, fr: Motion, index):

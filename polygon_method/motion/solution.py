@@ -27,6 +27,7 @@ from ..solver.errorbound import NO_BOUND, USELESS, bounds_dict, error_bounds
 from ..common.errors import TOL, PolygonMethodError, SceneError
 from ..solver.kinematics import Motion, hypot
 from ..common.numbers import fmt_angular, quiet, sense  # noqa: F401  (re-exported)
+from ..common.tolerances import FLOOR, SAME
 from ..solver.compiler import compile_plan
 from ..steps.base import Instant
 from ..scene import FixedPath, Scene
@@ -384,7 +385,7 @@ def _structural_warnings(sol) -> tuple:
     sits, not because of the motion), and lengths in metres that look like millimetres."""
     sc = sol.scene
     out = []
-    size = max([lk.length for lk in sc.links] + [1e-300])
+    size = max([lk.length for lk in sc.links] + [FLOOR])
     u, unit = sc.length_unit, sc.units
     fixed = sol.plan.fixed_links
     for cp in sc.points:
@@ -397,7 +398,7 @@ def _structural_warnings(sol) -> tuple:
         if X in sc.ground:
             continue
         for G, g in sc.ground.items():
-            if hypot(sol.P[X][0] - g[0], sol.P[X][1] - g[1]) > 1e-9 * size:
+            if hypot(sol.P[X][0] - g[0], sol.P[X][1] - g[1]) > SAME * size:
                 continue
             cp = sc.carried(X)
             lk = sc.link(cp.link) if cp is not None else None

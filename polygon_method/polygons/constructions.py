@@ -27,6 +27,7 @@ velocity (or acceleration) vector from the pole ``o`` (``o'``); the image of poi
 
 from __future__ import annotations
 
+from ..common.tolerances import SAME
 import math
 
 from ..steps import Construction, DirectionLine, Vector, image_label
@@ -62,7 +63,7 @@ def drawn_vectors(sol, phase: str) -> tuple:
     vecs = [v for c in cons for v in c.given + c.found
             if not (v.kind == "relative" and not steps[c.step].draws_relative)]
     ref = max((v.magnitude for v in vecs), default=0.0)
-    tol = 1e-9 * ref
+    tol = SAME * ref
     keep = {}
     for v in vecs:
         if v.magnitude <= tol:

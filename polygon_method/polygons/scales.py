@@ -21,6 +21,7 @@ from decimal import Decimal
 from .constructions import acceleration_constructions, drawn_vectors, velocity_constructions
 from ..common.errors import PolygonMethodError, SceneError
 from ..common.units import UNITS
+from ..common.tolerances import ROUNDING
 
 __all__ = ["Scale", "choose_scale", "parse_scale", "diagram_scales", "choose_scales",
            "parse_scales", "coarser", "finer", "MANTISSAS", "FIT_CM", "SPACE_FIT_CM",
@@ -116,7 +117,7 @@ def choose_scale(max_magnitude: float, fit_cm: float = FIT_CM, unit: str = "m/s"
     while True:
         for m in MANTISSAS:
             d = Decimal(m).scaleb(k)
-            if float(d) >= need * (1 - 1e-12):
+            if float(d) >= need * (1 - ROUNDING):
                 return Scale(_text(d), unit, kind, float(d) * factor)
         k += 1
 

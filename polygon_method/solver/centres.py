@@ -50,6 +50,7 @@ import math
 from dataclasses import dataclass
 
 from ..common.errors import TOL, SceneError, SingularStepError
+from ..common.tolerances import SAME, crossing_angle
 from ..scene import FixedPath, GuideSlider, YokeSlot, guide_words
 
 __all__ = ["Centre", "Centres", "locate", "centres_dict", "MAX_BODIES", "JSON_BODIES"]
@@ -266,7 +267,7 @@ def _cross(l1, l2, scale):
     s = d1[0] * d2[1] - d1[1] * d2[0]
     wx, wy = p2[0] - p1[0], p2[1] - p1[1]
     if abs(s) <= PARALLEL:
-        if abs(wx * d1[1] - wy * d1[0]) <= 1e-9 * scale:
+        if abs(wx * d1[1] - wy * d1[0]) <= SAME * scale:
             return None  # the same line: no crossing
         return ("infinity", d1, 0.0)  # parallel lines meet at infinity along them
     t = (wx * d2[1] - wy * d2[0]) / s
@@ -308,12 +309,12 @@ def locate(sol, prefix: str = "I") -> "Centres":
             if c.point is not None and c.condition < TOL.singular:
                 raise SingularStepError(
                     f"{c.label} is where {_words(c.lines[0])} and {_words(c.lines[1])} cross, "
-                    f"at {math.degrees(math.asin(c.condition)):.2g} deg (condition "
+                    f"at {crossing_angle(c.condition):.2g} deg (condition "
                     f"{c.condition:.2g}): the lines are nearly parallel, the centre far and "
                     f"ill-determined{_POLYGONS_STAND}", step=f"centre {c.label}")
             if c.point is not None and c.condition < TOL.warn:
                 warnings.append(f"centre {c.label}: its lines cross at "
-                                f"{math.degrees(math.asin(c.condition)):.3g} deg (condition "
+                                f"{crossing_angle(c.condition):.3g} deg (condition "
                                 f"{c.condition:.3g}): far and ill-conditioned")
             key = (c.i, c.j)
             found[key] = c

@@ -5,12 +5,12 @@ sweep (arrays).
 * rubbing at a pin joining bodies 1 and 2: ``|w1 - w2| r`` (signed omegas: the sum of the
   magnitudes when they turn in opposite senses, the difference when alike);
 * input torque T on the crank (ccw positive): ``T w + sum(F . v) + sum(T_load w_link) = 0``;
-* transmission angle at a dyad or slider: ``asin(condition)`` (acute).
+* transmission angle at a dyad or slider: the acute angle whose sine is its condition.
 """
 
 from __future__ import annotations
 
-import math
+from ..common.tolerances import crossing_angle
 
 from ..steps.rounding import largest
 
@@ -136,7 +136,4 @@ def input_torque(scene, V, W, omega):
 
 def transmission_angle(condition):
     """The transmission angle (deg, acute) from a step's condition (its sine)."""
-    if isinstance(condition, float):
-        return math.degrees(math.asin(min(condition, 1.0)))
-    import numpy as np
-    return np.degrees(np.arcsin(np.minimum(condition, 1.0)))
+    return crossing_angle(condition)

@@ -41,6 +41,7 @@ from dataclasses import replace
 
 from ..common.errors import TOL, SingularStepError
 from ..common.numbers import sense
+from ..common.tolerances import ROUNDING
 from .plan import Context, Plan
 from ..scene import GIVEN_KINDS
 
@@ -326,6 +327,6 @@ def place_roots(plan, grid=720):
             roots.append(math.remainder(cand, 2.0 * math.pi))
     out = []
     for t in roots:  # a root at a grid point may be found twice
-        if all(abs(math.remainder(t - u, 2.0 * math.pi)) > 1e-12 for u in out):
+        if all(abs(math.remainder(t - u, 2.0 * math.pi)) > ROUNDING for u in out):
             out.append(t)
     return out, seen

@@ -29,6 +29,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..common.errors import TOL, SceneError, SingularStepError
+from ..common.tolerances import FLOOR, ROUNDING, SAME
 from .kinematics import Motion
 from .compiler import compile_plan
 from .given import held
@@ -142,12 +143,12 @@ class Domain:
         in its stroke)."""
         if not self.periodic:
             t = np.asarray(theta, dtype=float)
-            tol = 1e-12 * max(abs(self.lo), abs(self.hi), self.hi - self.lo)
+            tol = ROUNDING * max(abs(self.lo), abs(self.hi), self.hi - self.lo)
             return t, (t >= self.lo - tol) & (t <= self.hi + tol)
         t = self.lo + np.mod(np.asarray(theta, dtype=float) - self.lo, TWO_PI)
         if self.full_turn:
             return t, np.ones(t.shape, dtype=bool)
-        return t, t <= self.hi + 1e-12
+        return t, t <= self.hi + ROUNDING
 
 
 #: the domain of each plan (a plan is one scene's content), found once
@@ -342,7 +343,7 @@ class Sweeper:
         size = max((lk.length for lk in self.scene.links), default=1.0)
         xy = np.array([c for p in fr.P.values() for c in (np.broadcast_to(p[0], k.shape),
                                                            np.broadcast_to(p[1], k.shape))])
-        same = np.all(np.abs(xy - xy[:, :1]) <= 1e-9 * size, axis=0)
+        same = np.all(np.abs(xy - xy[:, :1]) <= SAME * size, axis=0)
         if same[1]:
             return []
         n = next((int(i) for i in range(2, 13) if same[i]), None)
@@ -395,7 +396,7 @@ class Sweeper:
         points met and the limit position where it stopped (or None)."""
         plan, start, done = self.plan, self.theta0, 0.0
         segs, cps = [], []
-        while budget - done > 1e-12 * self.scale:
+        while budget - done > ROUNDING * self.scale:
             left = budget - done
             n = max(65, int(SCOUT * left / self.period) + 2)
             grid = start + direction * np.linspace(0.0, left, n)
@@ -506,7 +507,7 @@ class Sweeper:
         keep = self._velocity_vector(plan, tc + direction * _DELTA * k)
         flipped_plan = _variant(plan, {st.index})
         flip = self._velocity_vector(flipped_plan, tc + direction * _DELTA * k)
-        scale = np.linalg.norm(before) + 1e-300
+        scale = np.linalg.norm(before) + FLOOR
         dk, df = np.linalg.norm(keep - before), np.linalg.norm(flip - before)
         lo, hi = min(dk, df), max(dk, df)
         pt = st.finds[0]

@@ -20,11 +20,11 @@ Condition: |r1 x r2| / (l1 l2), the sine of the transmission angle at X.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 from ..common.errors import TOL, AssemblyError, SingularStepError
 from ..common.numbers import in_units, quiet
+from ..common.tolerances import crossing_angle
 from ..scene import split_name
 from .rounding import C_FLOOR, turning, vhypot, vmax, vmin
 from .base import (Construction, DirectionLine, Step, Vector, absolute, centripetal,
@@ -342,13 +342,13 @@ class Dyad(Step):
 
     def singular_why(self, c) -> str:
         return (f"{self.link1} and {self.link2} are in line (transmission angle "
-                f"{math.degrees(math.asin(min(c, 1.0))):.3g} deg): a toggle position (or a "
+                f"{crossing_angle(c):.3g} deg): a toggle position (or a "
                 "change point, where the linkage may switch branch), where the direction "
                 f"lines perpendicular to {self.link1} and {self.link2} are parallel and the "
                 f"velocity of {self.point} is indeterminate")
 
     def warning(self, c) -> str:
-        deg = math.degrees(math.asin(min(c, 1.0)))
+        deg = crossing_angle(c)
         return (f"{self.label}: {self.link1} and {self.link2} are nearly in line (transmission "
                 f"angle {deg:.3g} deg, condition {c:.3g}): near a toggle position the "
                 "intersection of the direction lines is ill-conditioned")

@@ -30,6 +30,7 @@ import math
 
 from ..solver.centres import Centre, Centres
 from ..common.numbers import fmt, fmt_angular, quiet
+from ..common.tolerances import SAME, crossing_angle
 
 __all__ = ["centres_text"]
 
@@ -48,7 +49,7 @@ def _where(sol, c: Centre) -> str:
     u, name = sol.scene.length_unit, sol.scene.units
     if c.point is None:
         deg = math.degrees(math.atan2(c.direction[1], c.direction[0])) % 180.0
-        if min(deg, 180.0 - deg) <= 1e-9:  # rounding noise about the x axis
+        if min(deg, 180.0 - deg) <= SAME:  # rounding noise about the x axis
             deg = 0.0
         return f"at infinity, direction {fmt(deg, 4)} deg"
     # rounding noise (a coordinate below TOL.negligible of the mechanism's size) is 0
@@ -82,7 +83,7 @@ def centres_text(ic: Centres) -> str:
         for c in secondary:
             (a, b), (p, q) = c.lines
             cond = "" if c.condition >= 0.999 or c.point is None else \
-                f"; lines cross at {fmt(math.degrees(math.asin(min(c.condition, 1.0))), 3)} deg"
+                f"; lines cross at {fmt(crossing_angle(c.condition), 3)} deg"
             if "coincide" in c.how:  # located by the velocities on the common line
                 same = "" if (a, b) == (p, q) else f" = {p.label}-{q.label}: the same line"
                 out.append(f"  {c.label:<5}{_where(sol, c):<40} on {a.label}-{b.label}{same}; "

@@ -16,6 +16,7 @@ from ..forces import FRAME, side_label
 from ..forces.bounds import NO_BOUND, force_bounds
 from ..forces.engine import efforts
 from ..common.numbers import fmt, quiet, sense_word
+from ..common.tolerances import FLOOR
 
 __all__ = ["forces_lines", "force_blocks", "bound_lines", "engine_lines"]
 
@@ -94,7 +95,7 @@ def forces_lines(sol) -> list:
         out.append(f"{'body':<10} {'mass (kg)':<10} {'inertia force -m a_G':<24} "
                    f"{'couple -I alpha':<20} offset h ({sc.units})")
         for i in f.inertia:
-            h = "-" if i.offset is None else fmt(abs(quiet(i.offset, M / max(F, 1e-300))) / u)
+            h = "-" if i.offset is None else fmt(abs(quiet(i.offset, M / max(F, FLOOR))) / u)
             out.append(f"{i.body:<10} {fmt(i.mass):<10} {_vec(i.force, F):<24} "
                        f"{_moment(i.couple, M):<20} {h}")
     out.append(f"{'pin':<5} {'on':<10} {'by':<10} force")
@@ -146,7 +147,7 @@ def _polygon_items(st, f, scale, F) -> list:
     """A step's force polygon in words: each side at ``scale`` (cm), in the order drawn."""
     if not st.polygon:
         return []
-    tiny = 1e-9 * max(F, 1e-300)
+    tiny = 1e-9 * max(F, FLOOR)
     sides = [f"{side_label(sd, f.numbers, unicode=False)} {scale.cm(math.hypot(*sd.vector)):.2f}"
              " cm" + (" (found)" if any(k == u for u, _ in st.unknown) else "")
              for k, sd in enumerate(st.polygon) if math.hypot(*sd.vector) > tiny]
@@ -201,7 +202,7 @@ def force_blocks(sol, scale=None) -> list:
     rows = []
     for i in f.inertia:
         a = math.hypot(*i.a_G)
-        h = "-" if i.offset is None else fmt(abs(quiet(i.offset, M / max(F, 1e-300))) / u)
+        h = "-" if i.offset is None else fmt(abs(quiet(i.offset, M / max(F, FLOOR))) / u)
         rows.append((i.body, fmt(i.mass), fmt(i.inertia), i.how,
                      f"{fmt(a)} m/s^2",
                      _vec(i.force, F), _moment(i.couple, M), h))

@@ -40,6 +40,7 @@ from dataclasses import replace
 from ..solver.derived import transmission_angle
 from ..solver.given import working
 from ..common.numbers import fixed as _fixed, fmt, sense_word
+from ..common.tolerances import ROUNDING
 from .forces import force_blocks
 from ..polygons.constructions import acceleration_constructions, velocity_constructions
 from ..polygons.scales import DRAWING_PRECISION_CM, diagram_scales, extent, force_scale
@@ -341,14 +342,14 @@ def _superposition(doc, sol):
 
 
 def _turn(w) -> str:
-    if abs(w) <= 1e-12:
+    if abs(w) <= ROUNDING:
         return "0"
     return f"{fmt(abs(w))} rad/s {sense_word(w)}"
 
 
 def _polar(v) -> str:
     m = math.hypot(*v)
-    if m <= 1e-12 * (1 + abs(v[0]) + abs(v[1])):
+    if m <= ROUNDING * (1 + abs(v[0]) + abs(v[1])):
         return "0"
     ang = round(math.degrees(math.atan2(v[1], v[0])), 9) % 360  # no 1e-15 deg off an axis
     return f"{fmt(m)} m/s at {fmt(ang, 4)} deg"

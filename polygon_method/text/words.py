@@ -20,6 +20,7 @@ import math
 
 from ..solver.compiler import compile_plan
 from ..common.numbers import fmt, sense
+from ..common.tolerances import ROUNDING
 from ..scene import guide_words
 
 __all__ = ["given"]
@@ -165,7 +166,7 @@ def _block_words(sc, block) -> str:
         ux, uy = path.u if v >= 0 else (-path.u[0], -path.u[1])
         for (wx, wy), word in (((1, 0), "to the right"), ((-1, 0), "to the left"),
                                ((0, 1), "upwards"), ((0, -1), "downwards")):
-            if abs(ux - wx) < 1e-12 and abs(uy - wy) < 1e-12:
+            if abs(ux - wx) < ROUNDING and abs(uy - wy) < ROUNDING:
                 return word
         return f"at {fmt(math.degrees(math.atan2(uy, ux)) % 360)}°"
 

@@ -32,6 +32,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..common.errors import PolygonMethodError, SceneError, printable
+from ..common.tolerances import ROUNDING
 from ..solver.kinematics import evaluate
 from ..linkage import four_bar_of, grashof, slider_crank_of, slotted_of
 from ..solver.compiler import compile_plan
@@ -91,7 +92,7 @@ def linkage_class(scene: Scene, shape=None) -> str:
         (qx, qy), (ux, uy) = path.through, path.u
         e = abs((ox - qx) * uy - (oy - qy) * ux)
         r, ell = scene.link(crank).length, scene.link(rod).length
-        return "slider crank: " + ("the crank turns fully" if ell >= (r + e) * (1 - 1e-12)
+        return "slider crank: " + ("the crank turns fully" if ell >= (r + e) * (1 - ROUNDING)
                                    else "the crank rocks")
     if kind == "slotted":
         crank, pivot, known = names
@@ -355,7 +356,7 @@ def _problem(plan, sc):
 
 
 def _same(a, b) -> bool:
-    return len(a) == len(b) and all(abs(x - y) <= 1e-12 * max(1.0, abs(x), abs(y))
+    return len(a) == len(b) and all(abs(x - y) <= ROUNDING * max(1.0, abs(x), abs(y))
                                     for x, y in zip(a, b))
 
 

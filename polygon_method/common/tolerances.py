@@ -1,0 +1,86 @@
+"""The tolerance policy of the whole tool, in one place: each tolerance named, with what it
+protects. A literal tolerance elsewhere in the code is a bug waiting; name it here.
+
+:class:`Tolerances` (``TOL``) holds the policy a user meets: when a step is singular or
+ill-conditioned, when a circle touches, which transmission angle is poor, what is rounding
+noise in a report. The constants below are the slack of the tool's own arithmetic.
+
+>>> crossing_angle(0.5), crossing_angle(1.0000000000000002)
+(30.000000000000004, 90.0)
+>>> same(1.0, 1.0 + 1e-12), same(1.0, 1.0 + 1e-6)
+(True, False)
+"""
+
+from __future__ import annotations
+
+import math
+
+__all__ = ["Tolerances", "TOL", "SAME", "ROUNDING", "FLOOR", "LEAST_REACH", "same",
+           "crossing_angle"]
+
+#: the tool's promise: every answer agrees with an independent reference to this fraction of
+#: its size, so two lengths, places or directions that agree to it are the same (a point on
+#: a line, a centre distance that is the sum of the radii, a drawn label on its spot): a
+#: finer difference is not one the answers can resolve
+SAME = 1e-9
+#: a few units in the last place gathered by a handful of operations: the slack with which a
+#: computed value is held to a limit it may reach exactly (a stroke's ends, a crank that just
+#: turns fully, a full turn of 2 pi, a scale that is exactly round)
+ROUNDING = 1e-12
+#: a floor for a divisor or a norm that may be exactly zero, far below any real size: the
+#: quotient comes out large and finite, never a ZeroDivisionError, an inf or a NaN
+FLOOR = 1e-300
+#: a step's least reach (m): the size its tolerances scale with never drops to zero, even
+#: for a link of no length (refused elsewhere, but the scale must not divide by zero first)
+LEAST_REACH = 1e-9
+
+
+def same(a: float, b: float, rel: float = SAME) -> bool:
+    """Whether ``a`` and ``b`` agree to ``rel`` of the larger (:data:`SAME`: the promise)."""
+    return abs(a - b) <= rel * max(abs(a), abs(b), FLOOR)
+
+
+def crossing_angle(condition: float) -> float:
+    """The angle (deg, acute) at which two direction lines cross, from a step's condition
+    measure (the sine of that angle): at a dyad or a slider, its transmission angle. A
+    condition a hair above 1 by rounding is 90 deg. Floats or arrays (a sweep's)."""
+    if isinstance(condition, (float, int)):
+        return math.degrees(math.asin(min(max(condition, -1.0), 1.0)))
+    import numpy as np  # a sweep's conditions
+    return np.degrees(np.arcsin(np.clip(condition, -1.0, 1.0)))
+
+
+class Tolerances:
+    """The single tolerance policy of the tool.
+
+    Attributes
+    ----------
+    singular : float
+        A step whose condition measure (the sine of the angle between its two direction
+        lines) is below this is singular: an error, never a number. 1e-3 is about 0.06 deg
+        from a toggle, change point or dead centre: closer than that, rounding alone (which
+        moves a circle intersection by about eps L / c, and the acceleration polygon by
+        that over c^2 more) would put errors above 1e-6 of their size into the answers.
+    warn : float
+        Below this (sin 5 deg) the step is ill-conditioned: the answer is printed with a
+        warning naming the step. A drawing error of 0.25 deg then moves the intersection
+        by more than 3 %.
+    closure : float
+        Relative slack (of the lengths involved) within which a circle that just touches
+        another circle or line counts as touching rather than missing.
+    transmission_warn_deg : float
+        The lecture's advice: keep the transmission angle above 40 deg.
+    negligible : float
+        A value smaller than this fraction of the largest of its kind in the same solution
+        (a coupler that translates: omega 3e-13 beside 10 rad/s) is rounding noise: reports
+        and step tables show it as 0 with no sense; the JSON keeps the raw number.
+    """
+
+    singular = 1e-3
+    warn = 0.08715574274765817  # sin(5 deg)
+    closure = 1e-12
+    transmission_warn_deg = 40.0
+    negligible = 1e-10
+
+
+TOL = Tolerances()
