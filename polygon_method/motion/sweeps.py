@@ -31,7 +31,7 @@ from ..common.errors import TOL, PolygonMethodError, SceneError
 from ..solver.kinematics import Motion
 from ..solver.compiler import compile_plan
 from ..scene import Scene
-from ..solver.tracking import CHUNK, Domain, Sweeper, _motion, run_arrays, valid_mask
+from ..solver.tracking import CHUNK, Domain, Sweeper, array_motion, run_arrays, valid_mask
 from ..common.units import ABSURD
 
 __all__ = ["sweep", "SweepResult", "evaluate_all", "angles_ok", "sweep_angles", "stroke_places",
@@ -405,7 +405,7 @@ class _Store:
         Al = {k: rows[("Al", k, None)] for k in f.Al}
         S = {k: tuple(rows[("S", k, j)] for j in range(len(v))) for k, v in f.S.items()}
         cond = {i: rows[("cond", i, None)] for i in f.cond}
-        return _motion(self.theta, P, V, A, W, Al, S, cond, self.bad)
+        return array_motion(self.theta, P, V, A, W, Al, S, cond, self.bad)
 
 
 def select(fr: Motion, keep) -> Motion:
@@ -416,7 +416,7 @@ def select(fr: Motion, keep) -> Motion:
         return _const(v, m) if _constant(v) else v[keep]
 
     two = lambda d: {k: (take(v[0]), take(v[1])) for k, v in d.items()}  # noqa: E731
-    return _motion(fr.theta[keep], two(fr.P), two(fr.V), two(fr.A),
+    return array_motion(fr.theta[keep], two(fr.P), two(fr.V), two(fr.A),
                    {k: take(v) for k, v in fr.W.items()}, {k: take(v) for k, v in fr.Al.items()},
                    {k: tuple(take(a) for a in v) for k, v in fr.S.items()},
                    {i: take(c) for i, c in fr.cond.items()}, fr.bad[keep])

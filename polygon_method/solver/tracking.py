@@ -24,27 +24,27 @@ from __future__ import annotations
 
 import math
 import weakref
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 import numpy as np
 
 from ..common.errors import TOL, SceneError, SingularStepError
 from ..common.tolerances import FLOOR, ROUNDING, SAME
-from .kinematics import Motion
 from .compiler import compile_plan
-from .given import held
 from .plan import Context
+from .domain import NEAR, TWO_PI, ChangePoint, Domain, LimitPosition, degrees_fn, fmt_deg
+from .runs import (array_motion, branch_steps, merge, run_arrays, tune_malloc,
+                   valid_mask)
 from ..scene import Scene
 
 __all__ = ["Sweeper", "Domain", "LimitPosition", "ChangePoint", "run_arrays", "merge",
            "valid_mask", "degrees_fn", "fmt_deg", "tune_malloc", "TWO_PI", "CHUNK",
-           "NEAR", "MAX_CYCLE_POINTS"]
+           "NEAR", "MAX_CYCLE_POINTS", "array_motion", "branch_steps"]
 
 #: crank angles evaluated per pass (about 32k: the temporaries of one pass stay in cache)
 CHUNK = 32768
 #: scouting grid for limit positions and change points, per turn of the crank
 SCOUT = 4096
-TWO_PI = 2.0 * math.pi
 #: a step whose condition falls below this (and rises again) is checked for a change point
 _CANDIDATE = 0.2
 #: ... and is a change point where its refined minimum is below this
@@ -60,174 +60,14 @@ _NOT_AGAIN = "after a full turn of the crank the mechanism is not where it start
 #: a driving block, times the length that plays a radian's part: ``Step.parameter_scale``,
 #: as for every offset below)
 _DELTA = 1e-6
-#: samples this close to a change point (rad) get their velocities and accelerations by
-#: extrapolation from both sides (the construction is indeterminate there)
-_NEAR = 2e-3
 #: where the condition is measured either side of a change point, for its slope (rad)
 _PROBE = 0.01
 #: the widest a change point's neighbourhood is made (rad)
 _WIDEST = 0.05
 
 
-# --------------------------------------------------------------------------- records
-
-
-@dataclass(frozen=True)
-class LimitPosition:
-    """A crank angle beyond which the sweep cannot go on the scene's branch.
-
-    ``theta`` is in the sweep's domain (rad, continuous with the scene's angle); ``step``
-    names the construction step that stops assembling (its discriminant vanishes there).
-    """
-
-    theta: float
-    step: str
-    why: str
-
-    @property
-    def degrees(self) -> float:
-        """The crank angle of the limit position in degrees, within one turn."""
-        return math.degrees(self.theta) % 360.0
-
-
-@dataclass(frozen=True)
-class ChangePoint:
-    """A crank angle where a step's two assemblies meet (its condition reaches zero and
-    rises again): the branch is indeterminate there. ``followed`` says whether the sweep
-    went on (on the branch continuous in velocity) or stopped."""
-
-    theta: float
-    step: str
-    point: str
-    followed: bool
-    flipped: bool
-    why: str
-    #: closer than this the construction is not trusted (rad; a driving block's place: m)
-    radius: float = _NEAR
-
-    @property
-    def degrees(self) -> float:
-        """The crank angle of the change point in degrees, within one turn."""
-        return math.degrees(self.theta) % 360.0
-
-
-@dataclass(frozen=True)
-class Domain:
-    """The crank angles reachable from the scene's instant on its branch.
-
-    ``lo <= theta <= hi`` (rad, continuous with the scene's angle); ``full_turn`` when the
-    crank turns fully (then ``hi = lo + 2 pi``). ``segments`` are ``(start, end, plan)``
-    with the plan (its branches) valid between change points.
-    """
-
-    lo: float
-    hi: float
-    full_turn: bool
-    segments: tuple
-    limits: tuple = ()
-    change_points: tuple = ()
-    notes: tuple = ()
-    #: False where the parameter is a block driver's place along its guide (m): nothing
-    #: repeats, ``lo`` and ``hi`` are the ends of its stroke
-    periodic: bool = True
-    #: a block driver's places are shown in the scene's length unit: metres per unit
-    unit: float = 1.0
-    #: a full turn after which the mechanism is not where it started (a wheel that turns a
-    #: fraction of a turn more per turn of the crank): every angle is taken on this turn
-    #: (``map``), and the notes say after how many turns the motion repeats
-    turn_only: bool = False
-
-    def map(self, theta):
-        """Crank angles (rad, any turn) -> the same angles in ``[lo, lo + 2 pi)`` and a mask
-        of those the crank reaches (a block driver's places: themselves, and a mask of those
-        in its stroke)."""
-        if not self.periodic:
-            t = np.asarray(theta, dtype=float)
-            tol = ROUNDING * max(abs(self.lo), abs(self.hi), self.hi - self.lo)
-            return t, (t >= self.lo - tol) & (t <= self.hi + tol)
-        t = self.lo + np.mod(np.asarray(theta, dtype=float) - self.lo, TWO_PI)
-        if self.full_turn:
-            return t, np.ones(t.shape, dtype=bool)
-        return t, t <= self.hi + ROUNDING
-
-
 #: the domain of each plan (a plan is one scene's content), found once
 _DOMAINS = weakref.WeakKeyDictionary()
-
-# --------------------------------------------------------------------------- evaluation
-
-
-_MALLOC_TUNED = []
-
-
-def tune_malloc():
-    """Keep freed temporaries on the heap (glibc): otherwise every pass over an array of
-    crank angles maps and faults fresh pages, which costs as much as the arithmetic (twice,
-    for 3600 angles). Once per process."""
-    if _MALLOC_TUNED:
-        return
-    _MALLOC_TUNED.append(True)
-    try:
-        import ctypes
-        import sys
-        if not sys.platform.startswith("linux"):
-            return
-        libc = ctypes.CDLL("libc.so.6")
-        libc.mallopt(-1, 64 << 20)  # M_TRIM_THRESHOLD
-        libc.mallopt(-3, 4 << 20)  # M_MMAP_THRESHOLD
-    except (OSError, AttributeError):
-        pass
-
-
-def _motion(theta, P, V, A, W, Al, S, cond, bad) -> Motion:
-    return Motion(None, None, theta, P, V, A, W, Al, S, cond, bad)
-
-
-def _full(v, n, const):
-    """An array of length n from an evaluated value. A constant (a ground point, a fixed
-    link, the crank's speed) stays one number: a read-only zero-stride view of it, shared
-    by every column of that value (``const``), with no memory per angle."""
-    if isinstance(v, np.ndarray) and v.shape == (n,):
-        return v
-    x = float(v) if v is not None else 0.0
-    view = const.get(x)
-    if view is None:
-        view = const[x] = np.broadcast_to(np.float64(x), (n,))
-    return view
-
-
-def run_arrays(plan, theta, omega, alpha, vel=True, acc=True) -> Motion:
-    """Evaluate ``plan`` over one array of crank angles (one pass, no chunking)."""
-    n = len(theta)
-    tune_malloc()
-    unbounded = None
-    if getattr(plan, "given", None) is not None and vel:  # the given motion held
-        omega, alpha = held(plan, theta)
-        unbounded = ~(np.isfinite(omega) & np.isfinite(alpha))  # at a dead centre of it
-        if unbounded.any():
-            omega, alpha = np.where(unbounded, 1.0, omega), np.where(unbounded, 0.0, alpha)
-        else:
-            unbounded = None
-    ctx = Context(theta, omega, alpha, array=True)
-    upto = 2 if (vel and acc) else (1 if vel else 0)
-    with np.errstate(all="ignore"):
-        m = plan.run(ctx, upto=upto)
-    const = {}
-    fix = lambda d: {k: (_full(v[0], n, const), _full(v[1], n, const))  # noqa: E731
-                     for k, v in d.items()}
-    P = fix(m.P)
-    V = fix(m.V) if upto >= 1 else {}
-    A = fix(m.A) if upto >= 2 else {}
-    W = {k: _full(v, n, const) for k, v in m.W.items()} if upto >= 1 else {}
-    Al = {k: _full(v, n, const) for k, v in m.Al.items()} if upto >= 2 else {}
-    S = ({k: tuple(_full(x, n, const) for x in v) for k, v in m.S.items()} if upto >= 1
-         else {})
-    cond = {i: _full(c, n, const) for i, c in ctx.cond.items()}
-    bad = ctx.bad if ctx.bad is not None else np.zeros(n, dtype=bool)
-    if unbounded is not None:
-        bad = bad | unbounded
-    return _motion(theta, P, V, A, W, Al, S, cond, bad)
-
 
 def _variant(plan, flips):
     """The plan with the branch (sigma) of the steps in ``flips`` reversed."""
@@ -238,11 +78,6 @@ def _variant(plan, flips):
     if "_compiled" in getattr(plan, "__dataclass_fields__", {}):
         kw["_compiled"] = {}  # a new kernel for the new branches
     return replace(plan, **kw)
-
-
-def branch_steps(plan):
-    """The plan's steps that have two assemblies (a branch to follow)."""
-    return [s for s in plan.steps if s.branching]
 
 
 class Sweeper:
@@ -523,13 +358,13 @@ class Sweeper:
             c1 = self._scout(plan, np.array([tc - direction * probe])).cond[st.index][0]
             c2 = self._scout(new, np.array([tc + direction * probe])).cond[st.index][0]
             slope = max(min(c1, c2) / probe, 1e-12 / k)
-            radius = min(max(_NEAR * k, 4 * TOL.singular / slope), _WIDEST * k)
+            radius = min(max(NEAR * k, 4 * TOL.singular / slope), _WIDEST * k)
             return new, ChangePoint(tc, st.label, pt, True, flipped, f"{where}; {what}",
                                     radius)
         why = (f"{where}, and both branches leave with the same velocity: which one the "
                "linkage takes cannot be told (a third, phase-shifted crank would decide it); "
                "the sweep stops here")
-        return plan, ChangePoint(tc, st.label, pt, False, False, why, _NEAR * k)
+        return plan, ChangePoint(tc, st.label, pt, False, False, why, NEAR * k)
 
     # ----- evaluating
     def segment_plans(self, t):
@@ -585,7 +420,7 @@ class Sweeper:
         / 10, m(h) the mean of f(t - h) and f(t + h) (error O(h^6)); ``h`` by default
         2.5 times the neighbourhood's least radius (in the driver's scale)."""
         if h is None:
-            h = 2.5 * _NEAR * self.scale
+            h = 2.5 * NEAR * self.scale
         th = np.asarray(theta, dtype=float)
         fr = {s: self.evaluate(th + s * h) for s in (-3, -2, -1, 1, 2, 3)}
         base = self.evaluate(th)
@@ -601,7 +436,7 @@ class Sweeper:
         Al = {k: comb(lambda f: f.Al[k]) for k in base.Al}
         S = {k: tuple(comb(lambda f, j=j: f.S[k][j]) for j in range(len(v)))
              for k, v in base.S.items()}
-        return _motion(th, P, V, A, W, Al, S, base.cond, base.bad)
+        return array_motion(th, P, V, A, W, Al, S, base.cond, base.bad)
 
 
 def _block_span(scene, driver) -> float:
@@ -611,59 +446,3 @@ def _block_span(scene, driver) -> float:
     return 2.0 * sum(lk.length for lk in scene.links) + max(
         (math.dist(xy, path.through) for xy in scene.ground.values()), default=0.0)
 
-
-def merge(theta, frames) -> Motion:
-    """One motion from the motions of several index sets (``frames``: key -> (index, motion))."""
-    n = len(theta)
-    any_fr = next(iter(frames.values()))[1]
-
-    def put(get):
-        out = np.empty(n)
-        for idx, fr in frames.values():
-            out[idx] = get(fr)
-        return out
-
-    P = {k: (put(lambda f: f.P[k][0]), put(lambda f: f.P[k][1])) for k in any_fr.P}
-    V = {k: (put(lambda f: f.V[k][0]), put(lambda f: f.V[k][1])) for k in any_fr.V}
-    A = {k: (put(lambda f: f.A[k][0]), put(lambda f: f.A[k][1])) for k in any_fr.A}
-    W = {k: put(lambda f: f.W[k]) for k in any_fr.W}
-    Al = {k: put(lambda f: f.Al[k]) for k in any_fr.Al}
-    S = {k: tuple(put(lambda f, j=j: f.S[k][j]) for j in range(len(v)))
-         for k, v in any_fr.S.items()}
-    cond = {i: put(lambda f: f.cond[i]) for i in any_fr.cond}
-    bad = np.zeros(n, dtype=bool)
-    for idx, fr in frames.values():
-        bad[idx] = fr.bad
-    return _motion(theta, P, V, A, W, Al, S, cond, bad)
-
-
-def valid_mask(fr: Motion, plan):
-    """Angles where a step failed or is singular (True: not valid)."""
-    bad = fr.bad.copy()
-    for st in branch_steps(plan):
-        bad |= fr.cond[st.index] < TOL.singular
-    return bad
-
-
-def fmt_deg(d, digits=4) -> str:
-    """An angle in degrees to ``digits`` decimals, never "-0.0000"."""
-    s = f"{d:.{digits}f}"
-    return s if s.strip("-0.") else f"{0.0:.{digits}f}"
-
-
-def degrees_fn(dom: Domain):
-    """Radians -> the degrees shown, within one turn, [0, 360): for a full turn and for a
-    crank that reaches only a range alike (a range that passes 0 is written "300 to 40
-    (through 0)"). A block driver's places (m) are shown in the scene's length unit
-    instead."""
-    if not dom.periodic:
-        return lambda t: float(t) / dom.unit
-
-    def deg(t):
-        d = math.degrees(t) % 360.0
-        return 0.0 if d >= 360.0 - 5e-4 else d
-    return deg
-
-
-#: samples this close to a change point (rad) get their values from both sides
-NEAR = _NEAR
