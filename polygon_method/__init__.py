@@ -59,7 +59,7 @@ Solution.report = _solution_report
 
 
 # Where the modules that once stood at the top of the package live now (one folder per
-# layer, see docs/architecture.md). `import polygon_method.solver.kinematics` and the like keep
+# layer, see docs/architecture.md). `import polygon_method.kinematics` and the like keep
 # working: the old name is the same module object as the new one.
 MOVED = {
     "errors": "common.errors", "units": "common.units", "numbers": "common.numbers",

@@ -373,7 +373,7 @@ def test_the_folders_are_the_layers_of_the_contract():
 
 
 def test_the_old_module_names_still_import_as_the_same_modules():
-    """`import polygon_method.solver.kinematics` (a module that once stood at the top) gives the
+    """`import polygon_method.kinematics` (a module that once stood at the top) gives the
     module at its folder, the very same object, with its own spec."""
     import importlib
     import polygon_method
@@ -382,7 +382,7 @@ def test_the_old_module_names_still_import_as_the_same_modules():
         b = importlib.import_module(f"polygon_method.{new}")
         assert a is b, old
         assert b.__spec__.name == f"polygon_method.{new}"
-    from polygon_method.motion.solution import solve as old_solve
+    from polygon_method.solution import solve as old_solve
     assert old_solve is solve
 
 
