@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import re
 
-from ..scene.tables import decimal_comma
+from ..scene.answers import decimal_comma
 from .alternatives import _Candidate
 
 

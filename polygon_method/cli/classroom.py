@@ -40,7 +40,7 @@ def _command_line_tolerance(values):
     """``--tolerance 5%`` (and ``--tolerance 0.01 m/s``, one per unit) as a
     :class:`~polygon_method.check.Stated`, or None when not given."""
     from ..check import SOURCES, Stated
-    from ..scene.tables import decimal_comma
+    from ..scene.answers import decimal_comma
     from ..common.units import parse_quantity
     if not values:
         return None

@@ -24,6 +24,7 @@ from .records import (_ABSURD_LONG, _ABSURD_SHORT, _POINT_ONLY, _UNIT_ORDER, TOP
 from .inputs import _Input
 from .engine import _Engine
 from .masses import _Masses
+from .answers import _Answers
 from .tables import _suggest, _Tables
 from .variation import _Variants
 
@@ -368,7 +369,7 @@ def _long_integer(raw):
     return None
 
 
-class _Loader(_Tables, _Input, _Variants, _Masses, _Engine):
+class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
     def __init__(self, raw: dict, text: str, file):
         self.raw = raw
         self.lines = toml_lines(text)

@@ -7,19 +7,13 @@ from __future__ import annotations
 import math
 import re
 
-from ..common.errors import SceneError, printable
-from ..common.units import UNITS, did_you_mean
+from ..common.errors import SceneError
+from ..common.units import did_you_mean
 from .angles import read_angle
 from .triangle import apex
 
-from .records import (ANSWER_KINDS, UNDER_BLOCK_KINDS, Answer, CarriedPoint, Cylinder, guide_words,
-                      FixedPath, GuideSlider, Load, Pin, YokeSlot, split_name,
-                      under_block_names)
-
-#: the engine chapter's answer keys -> their unit kind (checked in check/engine.py)
-ENGINE_ANSWERS = {"piston_effort": "force", "crank_effort": "force", "T_mean": "torque",
-                  "dE_max": "energy", "I_flywheel": "moment_of_inertia", "m_flywheel": "mass"}
-
+from .records import (CarriedPoint, Cylinder, guide_words,
+                      FixedPath, GuideSlider, Load, Pin, YokeSlot, split_name)
 
 def _unit_at(ang: float) -> tuple:
     """(cos, sin) of a direction (rad), exact where it is a whole number of right angles
@@ -38,28 +32,6 @@ def _suggest(word, choices) -> str:
 
 
 #: a number written with a decimal comma: "0,39 m/s", "12,5"
-_COMMA_NUMBER = re.compile(r"^(\s*[-+]?)(\d*),(\d+)(?![\d.,])(.*)$", re.S)
-
-
-def decimal_comma(value):
-    """``value`` with its decimal comma read as a point (``"0,39 m/s"`` -> ``"0.39 m/s"``),
-    or ``value`` as it is; None where the comma reads two ways (``"1,250 m/s"``: 1.25 or
-    1250?).
-
-    >>> decimal_comma("0,39 m/s"), decimal_comma("12,5 rad/s cw"), decimal_comma("1,250")
-    ('0.39 m/s', '12.5 rad/s cw', None)
-    """
-    if not isinstance(value, str):
-        return value
-    m = _COMMA_NUMBER.match(value)
-    if not m:
-        return value
-    sign, whole, frac, rest = m.groups()
-    if whole.lstrip("0") and len(frac) == 3:  # a thousands separator, or a decimal comma?
-        return None
-    return f"{sign}{whole or '0'}.{frac}{rest}"
-
-
 def _which_point(name, known) -> str:
     """A did-you-mean, or else the scene's points, for a message about an unknown point."""
     names = sorted(known, key=lambda p: (p[0], len(p), p))
@@ -540,186 +512,3 @@ class _Tables:
             spec["direction"], "angle", "loads", name, default_unit="deg").value
         ux, uy = _unit_at(ang)
         return Load(name, force=(f * ux, f * uy), gas=(p, area, words))
-
-    def answers(self, known, sliders, pins, loads):
-        spec = self.table("answers")
-        tolerance = None
-        out = []
-        slider_names = {s.key: s for s in sliders}
-        pin_names = {p.point for p in pins}
-        for key, value in spec.items():
-            if key == "tolerance":
-                q = self.qty(value, "percent", "answers", key, default_unit="%").value
-                if not 0 < q < 1:
-                    raise self.error(f"tolerance {value!r} must be between 0 and 100 %",
-                                     "answers", key)
-                tolerance = q
-                continue
-            out.append(self.answer(key, value, known, slider_names, pin_names, loads))
-        return tolerance, out
-
-    def centre_answer(self, key, rest, value, line):
-        """``I_13 = [x, y]``: the instantaneous centre of links 1 and 3 (textbook numbers:
-        ground 1, crank 2), in the scene's units; ``I_1_12`` past link 9."""
-        parts = rest.split("_") if "_" in rest else list(rest)
-        named = len(parts) == 2 and not any(p.isdigit() for p in parts)
-        if named:  # the scene's names: I_ground_BC, I_AB_CD
-            for part in parts:
-                if part.lower() != "ground":
-                    self.find_link(part, "answers", key)
-        elif len(parts) != 2 or not all(p.isdigit() and int(p) > 0 for p in parts) or \
-                int(parts[0]) == int(parts[1]):
-            raise self.error("an instantaneous centre is I_ij with two different link "
-                             "numbers (ground 1, crank 2), e.g. I_13, or I_1_12 past 9, or "
-                             "two link names, e.g. I_ground_BC", "answers", key)
-        if not (isinstance(value, list) and len(value) == 2 and
-                all(isinstance(v, (int, float)) and not isinstance(v, bool) and
-                    math.isfinite(v) for v in value)):
-            raise self.error(f"a centre's answer is its position [x, y] in {self.unit}, "
-                             f"got {value!r}", "answers", key)
-        for v in value:  # [1e300, 0]: a units slip, never an error of 1e299 per cent
-            self.length(v, "answers", key, positive=False)
-        pair = tuple(parts) if named else tuple(sorted(int(p) for p in parts))
-        u = self.scale()
-        return Answer(key, "centre", pair, (value[0] * u, value[1] * u), None,
-                      f"[{value[0]:g}, {value[1]:g}] {self.unit}", line)
-
-    def answer_keys(self, known, slider_names, pin_names, loads) -> list:
-        """Every answer key this scene can check (for a did-you-mean)."""
-        moving = [p for p in sorted(known) if p not in getattr(self, "ground", {})]
-        keys = [f"{k}_{p}" for k in ("v", "a") for p in moving]
-        for lk in self.index.values():
-            keys += [f"omega_{lk.key}", f"alpha_{lk.key}", f"v_{lk.p}{lk.q}", f"v_{lk.q}{lk.p}",
-                     f"a_{lk.p}{lk.q}", f"a_{lk.q}{lk.p}"]
-        keys += [f"{k}_{s}" for k in ("vs", "as", "ac") for s in slider_names]
-        keys += [f"rub_{p}" for p in sorted(pin_names)]
-        keys += [f"{k}_{n}" for k in ("v", "a") for n in self.under_names(known, slider_names)]
-        return keys + (["torque"] if loads else []) + list(ENGINE_ANSWERS)
-
-    def under_names(self, known, slider_names) -> dict:
-        """``A1`` -> the block at A's slider key: the guide's point under the block."""
-        return under_block_names(sorted(known), getattr(self, "ground", {}),
-                                 slider_names.values())
-
-    def key_hint(self, key, known, slider_names, pin_names, loads) -> str:
-        """`` (did you mean 'v_C'?)``: the key in another case (names are case-sensitive:
-        ``v_c``, ``omega_bc``), or a key one or two typos away; else empty."""
-        keys = self.answer_keys(known, slider_names, pin_names, loads)
-        written = key
-        head, _, rest = key.partition("_")
-        if head.lower() in ("w", "\u03c9"):  # w_BC, \u03c9_BC: omega_BC
-            key = f"omega_{rest}"
-        folded = {k.lower(): k for k in keys}
-        best = folded.get(key.lower())
-        if best is None:
-            for k in keys:  # omega_o2a for omega_O2-A
-                if k.lower().replace("-", "") == key.lower().replace("-", ""):
-                    best = k
-                    break
-        if best is None:
-            from ..common.units import suggest
-            best = suggest(key, keys)
-        return f" (did you mean '{best}'?)" if best is not None and best != written else ""
-
-    def answer(self, key, value, known, slider_names, pin_names, loads):
-        line = self.line_of("answers", key)
-        forces = getattr(self, "scene_forces", None)  # an answer file: its scene's
-        if forces is None:
-            forces = bool(self.raw.get("masses")) or "gravity" in self.raw or \
-                "indicator" in self.raw
-        hint = lambda: self.key_hint(key, known, slider_names, pin_names, loads)  # noqa: E731
-        read = decimal_comma(value)
-        if read is None:
-            raise self.error(f"'{printable(str(value))}': the comma reads two ways (a decimal "
-                             "comma, or thousands?): write the number with a decimal point, "
-                             "e.g. \"1.25 m/s\" or \"1250 mm/s\"", "answers", key)
-        raw_text, value = printable(str(value)), read
-        if key == "torque":
-            if not loads and not forces:
-                raise self.error("a torque answer needs [loads] to balance, or [masses]",
-                                 "answers", key)
-            if getattr(self, "two_inputs", False):
-                raise self.error("with two inputs one power balance does not give the two "
-                                 "driving torques: no torque answer", "answers", key)
-            if getattr(self, "driving_block", None):
-                raise self.error(f"the block {self.driving_block} drives the mechanism: its "
-                                 "driving effort is a force along its guide, not a torque "
-                                 "(solve prints it; no torque answer)", "answers", key)
-            q = self.qty(value, "torque", "answers", key, default_unit="N m", allow_sense=True,
-                         refuse_absurd=False)
-            return Answer(key, "torque", (), q.value, q.sense, raw_text, line)
-        if key in ENGINE_ANSWERS:  # the engine chapter's: efforts, the cycle, the flywheel
-            kind = ENGINE_ANSWERS[key]
-            q = self.qty(value, kind, "answers", key, default_unit=next(iter(UNITS[kind])),
-                         allow_sense=False, refuse_absurd=False)
-            return Answer(key, key, (), q.value, None, raw_text, line)
-        prefix, _, rest = key.partition("_")
-        if prefix == "I" and rest:
-            return self.centre_answer(key, rest, value, line)
-        if prefix not in ANSWER_KINDS or not rest:
-            examples = ["v_C", "a_C", "v_CB", "omega_BC", "alpha_BC", "vs_D", "as_D", "ac_A",
-                        "rub_B", "torque"]
-            raise self.error(f"unknown answer key{hint() or _suggest(key, examples)}; keys are v_X, "
-                             "a_X, v_XY, a_XY, omega_L, alpha_L, vs_X, as_X, ac_X, rub_X, "
-                             "torque, I_ij (a centre), vI_L, aI_L (a wheel's contact point), "
-                             "F_X, N_X (forces)", "answers", key)
-        kind, what, sense_ok = ANSWER_KINDS[prefix]
-        if what in ("pin_force", "guide") and not forces:
-            raise self.error(f"{key}: a force answer needs the force analysis: give "
-                             "[masses] or [gravity]", "answers", key)
-        if prefix in UNDER_BLOCK_KINDS and rest not in known:
-            under = self.under_names(known, slider_names).get(rest)
-            if under is not None:  # v_A1: the guide's point under the block at A
-                q = self.qty(value, kind, "answers", key, default_unit=next(iter(UNITS[kind])))
-                return Answer(key, UNDER_BLOCK_KINDS[prefix], (under,), q.value, None,
-                              raw_text, line)
-        names = (rest,) if what == "slider" and rest in slider_names else split_name(rest)
-        if not names:
-            raise self.error(f"'{rest}' is not a point or link name{hint()}", "answers", key)
-        if what == "point":
-            if len(names) > 2:
-                raise self.error(f"v_X or v_XY: one or two points{hint()}", "answers", key)
-            for n in names:
-                if n not in known:
-                    raise self.error(f"no point {n} in the scene"
-                                     f"{hint() or _which_point(n, known)}", "answers", key)
-        elif what == "link" and len(names) == 2 and self.find_cylinder(names):
-            names = tuple(split_name(self.find_cylinder(names).key))
-        elif what == "slider" and len(names) == 2 and self.find_cylinder(names) and \
-                prefix in ("vs", "as"):
-            names = (self.find_cylinder(names).key,)
-        elif what == "link":
-            if len(names) != 2 or frozenset(names) not in self.index:
-                raise self.error(f"no link {rest} in [links]"
-                                 f"{hint() or _suggest(rest, [lk.key for lk in self.index.values()])}",
-                                 "answers", key)
-        elif what == "slider":
-            if len(names) != 1 or names[0] not in slider_names:
-                slots = [k for k, s in slider_names.items() if s.point == rest]
-                if slots:  # a peg in two slots: which one?
-                    raise self.error(f"{rest} sits in two slots: name the slot, "
-                                     + " or ".join(f"{prefix}_{k}" for k in slots),
-                                     "answers", key)
-                raise self.error(f"no slider {rest} in [sliders]{hint()}", "answers", key)
-        elif what == "wheel":  # the wheel's point at its rolling contact
-            wheels = {r.wheel for r in getattr(self, "rolling_pairs", ())}
-            lk = self.index.get(frozenset(names)) if len(names) == 2 else None
-            if lk is None or lk.key not in wheels:
-                raise self.error(f"{prefix}_{rest}: {rest} is no wheel of [rolling] (the key "
-                                 "names a rolling wheel's link, e.g. aI_CP)", "answers", key)
-        elif what == "pin_force":
-            if len(names) != 1 or names[0] not in known:
-                raise self.error(f"F_X names a pin: no point {rest} in the scene"
-                                 f"{_which_point(rest, known)}", "answers", key)
-        elif what == "guide":
-            if len(names) != 1 or names[0] not in slider_names:
-                raise self.error(f"N_X names a slider's block: no slider {rest} in "
-                                 "[sliders]", "answers", key)
-        elif what == "pin":
-            if len(names) != 1 or names[0] not in pin_names:
-                raise self.error(f"rubbing at {rest} needs its size in [pins]{hint()}",
-                                 "answers", key)
-        q = self.qty(value, kind, "answers", key, default_unit=next(iter(UNITS[kind])),
-                     allow_sense=sense_ok, refuse_absurd=False)  # warned of when checked
-        return Answer(key, prefix, names, q.value, q.sense, raw_text, line)
-
