@@ -33,7 +33,7 @@ from __future__ import annotations
 
 from .compiler import compile_plan
 from .kinematics import hypot
-from ..steps.rounding import CAP, C_FLOOR, EPS, USELESS, largest, vmax
+from ..steps.rounding import CAP, C_FLOOR, EPS, USELESS, largest, vmax, vmin
 
 __all__ = ["EPS", "C_FLOOR", "ErrorBounds", "error_bounds", "scales", "bounds_dict",
            "shown_bounds", "SHOWN", "USELESS", "NO_BOUND"]
@@ -149,12 +149,60 @@ class _Walk:
         self.P, self.V, self.A = motion.P, motion.V, motion.A
         self.ratio = sizes["omega"] ** 2 / sizes["alpha"]
         self.slide = {}
+        self._local = {}
         #: carried point -> how far its place on its body may be off (m), where not 0
         self.spread = {cp.name: cp.spread for cp in motion.scene.points
                        if getattr(cp, "spread", 0.0)}
 
     def condition(self, step):
         return self.motion.cond.get(step.index, 1.0)
+
+    def local(self, step):
+        """The step's own magnitudes, each over the size of its kind (at most 1): ``fv``
+        its largest point speed plus its links' |omega| times its span; ``fa`` its largest
+        point acceleration plus its links' (omega^2 + |alpha|) times its span; ``wv`` its
+        links' largest |omega| times the size of positions over the size of velocities
+        (how a position error turns into a velocity error through a direction line),
+        ``wa`` likewise (omega^2 + |alpha|) into accelerations, ``wr`` twice that |omega|
+        times the size of velocities over the size of accelerations (how a velocity error
+        turns into an acceleration error: ``2 omega dv``). A step's own rounding is
+        ``eps`` times the numbers it combines, not times the largest in the mechanism."""
+        got = self._local.get(step.index)
+        if got is not None:
+            return got
+        m, sz = self.motion, self.sizes
+        pts = [x for x in (*step.needs, *step.finds) if x in self.P and x in self.V]
+        links = [lk for lk in (*step.links, *step.needs_links) if lk in m.W]
+        span = 0.0
+        for i, x in enumerate(pts):
+            for y in pts[i + 1:]:
+                span = vmax(span, hypot(self.P[x][0] - self.P[y][0],
+                                        self.P[x][1] - self.P[y][1]))
+        w = largest([abs(m.W[lk]) for lk in links])
+        w2 = largest([m.W[lk] * m.W[lk] + abs(m.Al[lk]) for lk in links if lk in m.Al])
+        tiny = 1e-300
+        vs, as_ = vmax(sz["velocity"], tiny), vmax(sz["acceleration"], tiny)
+        fv = (largest([hypot(*self.V[x]) for x in pts]) + w * span) / vs
+        fa = (largest([hypot(*self.A[x]) for x in pts if x in self.A]) + w2 * span) / as_
+        ls = sz["position"]
+        got = (vmin(fv, 1.0), vmin(fa, 1.0), w * ls / vs, w2 * ls / as_, 2 * w * vs / as_)
+        self._local[step.index] = got
+        return got
+
+    def own(self, step, k):
+        """(kp, kv, ka): the step's own rounding ``k`` (relative to the size of positions)
+        for its positions, and for its velocities and accelerations scaled by the step's
+        own speeds and accelerations (:meth:`local`)."""
+        fv, fa = self.local(step)[:2]
+        return k, k * fv, k * fa
+
+    def couple(self, step):
+        """(cv, ca, cr) for :func:`..steps.rounding.two_lines`: how a position error turns
+        into a velocity and an acceleration error, and a velocity error into an
+        acceleration error, through the step's own links (:meth:`local`), at most what
+        the sizes of the mechanism give (1, 1 and ``ratio``)."""
+        wv, wa, wr = self.local(step)[2:]
+        return vmin(wv, 1.0), vmin(wa, 1.0), vmin(wr, self.ratio)
 
 
 def error_bounds(motion) -> ErrorBounds:

@@ -172,7 +172,8 @@ class RackStep(Step):
     def error_bound(self, walk, k, p_in, v_in, a_in):
         """The pinion's errors (its omega and alpha times the pitch radius), plus the
         rounding of the rack's own formula."""
-        return p_in + k, v_in + k, a_in + k, v_in + k, a_in + k
+        kp, kv, ka = walk.own(self, k)
+        return p_in + kp, v_in + kv, a_in + ka, v_in + kv, a_in + ka
 
     # ----- what the views ask
     def contact(self, P):
