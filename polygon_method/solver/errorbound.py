@@ -160,7 +160,8 @@ class _Walk:
     def local(self, step):
         """The step's own magnitudes, each over the size of its kind (at most 1): ``fv``
         its largest point speed plus its links' |omega| times its span; ``fa`` its largest
-        point acceleration plus its links' (omega^2 + |alpha|) times its span; ``wv`` its
+        point acceleration plus its links' (omega^2 + |alpha|) times its span plus a
+        Coriolis component (2 |omega| times its speeds); ``wv`` its
         links' largest |omega| times the size of positions over the size of velocities
         (how a position error turns into a velocity error through a direction line),
         ``wa`` likewise (omega^2 + |alpha|) into accelerations, ``wr`` twice that |omega|
@@ -182,8 +183,10 @@ class _Walk:
         w2 = largest([m.W[lk] * m.W[lk] + abs(m.Al[lk]) for lk in links if lk in m.Al])
         tiny = 1e-300
         vs, as_ = vmax(sz["velocity"], tiny), vmax(sz["acceleration"], tiny)
-        fv = (largest([hypot(*self.V[x]) for x in pts]) + w * span) / vs
-        fa = (largest([hypot(*self.A[x]) for x in pts if x in self.A]) + w2 * span) / as_
+        speed = largest([hypot(*self.V[x]) for x in pts])
+        fv = (speed + w * span) / vs
+        fa = (largest([hypot(*self.A[x]) for x in pts if x in self.A]) + w2 * span
+              + 2 * w * (speed + w * span)) / as_
         ls = sz["position"]
         got = (vmin(fv, 1.0), vmin(fa, 1.0), w * ls / vs, w2 * ls / as_, 2 * w * vs / as_)
         self._local[step.index] = got
@@ -275,7 +278,7 @@ def error_bounds(motion) -> ErrorBounds:
 def _given_spread(motion, res, sizes, eV, eA, eW, eAl, eS):
     """The crank's speed found from a given motion (``omega = Y / Y1``) errs as ``Y1``
     does, relative to ``Y``: every velocity and omega (proportional to omega) by that
-    much; every acceleration and alpha twice that, plus the error of the given quantity's
+    much relative to itself; every acceleration and alpha twice that, plus the error of the given quantity's
     rate carried through ``alpha = (Y' - omega^2 H) / Y1``."""
     g = motion.scene.input.given
     if g.kind == "omega":
@@ -293,14 +296,21 @@ def _given_spread(motion, res, sizes, eV, eA, eW, eAl, eS):
     rw = ev * sizes[kv] / y + 2 * EPS
     time = vmax(sizes["velocity"] / sizes["acceleration"], sizes["omega"] / sizes["alpha"])
     ra = ea * sizes[ka] / y * time + 2 * rw
-    for t in (eV, eW):
-        for k in t:
-            t[k] = t[k] + rw
+    # every velocity and omega is omega times what it is per unit omega: each errs by rw
+    # relative to itself, that is rw times its own size over the size of its kind
+    vs, ws = vmax(sizes["velocity"], 1e-300), vmax(sizes["omega"], 1e-300)
+    for k in eV:
+        eV[k] = eV[k] + rw * vmin(hypot(*motion.V[k]) / vs, 1.0) if k in motion.V \
+            else eV[k] + rw
+    for k in eW:
+        eW[k] = eW[k] + rw * vmin(abs(motion.W[k]) / ws, 1.0) if k in motion.W \
+            else eW[k] + rw
     for t in (eA, eAl):
         for k in t:
             t[k] = t[k] + ra
     for k, (v, a, c) in eS.items():
-        eS[k] = (v + rw, a + ra, c + ra)
+        own = vmin(abs(motion.S[k][0]) / vs, 1.0) if k in motion.S else 1.0
+        eS[k] = (v + rw * own, a + ra, c + ra)
 
 
 def bounds_dict(sol, b=None) -> dict:
