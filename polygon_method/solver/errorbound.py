@@ -19,7 +19,10 @@ own motion; a carried point from the two points it is carried by. ``K`` is the k
 ``rounding`` constant.
 
 Every ``K eps`` is multiplied by ``max(1, largest |coordinate| / longest link)``: a
-mechanism far from the origin is rounded to the digits of its coordinates.
+mechanism far from the origin is rounded to the digits of its coordinates. A step's own
+rounding of velocities and accelerations is of its own numbers (``_Walk.own``): ``K eps``
+times its own speeds and accelerations over the sizes of their kinds, and its positions'
+error turns into its velocities' as its own links turn (``_Walk.couple``).
 ``eX_in`` is the largest error of that kind among the points (and link omegas) the step
 reads. A link's omega and alpha get its step's ``eV`` and ``eA`` (a dyad's links and a
 slider's rod at least those of the side that turns them, divided by its length); a slider's sliding

@@ -15,6 +15,9 @@ makes itself, by ``g = 1/c``::
 
 with ``R = omega_scale^2 / alpha_scale`` (where velocities themselves grow like 1/c the
 accelerations grow faster still, and the error relative to them is one power of c smaller).
+A step given its own rounding for each kind (``k_P, k_V, k_A``: ``k`` times its own speeds
+and accelerations over the sizes of their kinds) and its own links' coupling (``c_V eP``,
+``c_A eP``, ``c_R eV`` in place of ``eP``, ``eP``, ``R eV``) has them in their places.
 
 >>> p, v, a, w, al = two_lines(0.5, 1.0, 1.0, 0.0, 0.0, 0.0)   # c = 1/2, own rounding 1
 >>> p, v, a
