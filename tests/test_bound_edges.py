@@ -19,7 +19,7 @@ import mpmath
 import pytest
 
 from edge_families import EDGE_FAMILIES, KIND_FILES, make, reference_scene
-from error_bounds import compare_case, load_reference
+from error_bounds import NOISE, compare_case, load_reference
 from polygon_method.common.errors import PolygonMethodError
 from polygon_method.scene import parse_scene
 from polygon_method.scene.triangle import ROUNDING, apex
@@ -54,9 +54,8 @@ def cases(fam, n, seed):
 def test_bound_holds_at_every_kinds_edges(fam):
     """Every quantity (positions, velocities, accelerations, omegas, alphas, sliding
     velocities and accelerations, Coriolis components, rubbing, torque) within its bound
-    of the reference; the bound not absurd (the median case's largest bound within 1e5
-    of its largest error: the loosest family is the short side, whose dyad's rounding is
-    counted relative to the plate's far larger motion)."""
+    of the reference; the bound not absurd (the median case's largest bound within 1e4
+    of its largest error)."""
     ratios = []
     for text, sol in cases(fam, CASES[fam], seed=11):
         qs = compare_case(sol, REF, reference_scene(sol, text, REF))
@@ -67,7 +66,33 @@ def test_bound_holds_at_every_kinds_edges(fam):
         emax = max(q[2] for q in qs)
         if emax > 0:
             ratios.append(max(q[3] for q in qs) / emax)
-    assert ratios and statistics.median(ratios) < 1e5, (fam, ratios)
+    assert ratios and statistics.median(ratios) < 1e4, (fam, ratios)
+
+
+#: the families where a step's rounding counted against the mechanism's largest motion,
+#: not its own, made the bounds cry wolf (a plate turned on a short side, a block near its
+#: lever's pivot then a toggle, pegs in moving slots): the median and the 90th percentile
+#: of bound/error they must stay below (counted so, they were 3e3 and 2e6 on the short
+#: side, 96 and 3e4 after the block, 570 and 4e7 on the pegs)
+TIGHT = {"short side": (2000, 2e5), "block then toggle": (500, 1.5e4), "peg": (1000, 5e5)}
+
+
+@pytest.mark.parametrize("fam", list(TIGHT))
+def test_bounds_are_not_absurdly_loose(fam):
+    """Over every quantity of the family's cases whose error is above the reference's
+    own digits, bound/error below the family's :data:`TIGHT` factors at the median and
+    the 90th percentile (the thousands of ``python benchmarks/error_bounds.py --edge``
+    give the distribution per quantity)."""
+    ratios = []
+    for text, sol in cases(fam, max(CASES[fam], 4), seed=11):
+        for kind, name, err, bound in compare_case(sol, REF, reference_scene(sol, text, REF)):
+            assert err <= bound, (fam, kind, name, err, bound)
+            if err > NOISE:
+                ratios.append(bound / err)
+    ratios.sort()
+    assert len(ratios) >= 50, (fam, len(ratios))
+    median, p90 = statistics.median(ratios), ratios[int(0.9 * (len(ratios) - 1))]
+    assert median < TIGHT[fam][0] and p90 < TIGHT[fam][1], (fam, median, p90)
 
 
 def test_flat_triangle_height_is_not_cancelled():

@@ -204,6 +204,25 @@ def test_worked_problems_within_their_bounds(path):
         assert bound < 1e-11
 
 
+def test_worked_problems_bounds_are_not_absurdly_loose():
+    """Over every quantity of every worked problem whose error is above the reference's
+    own digits: the bound within 1000 times the error on the median and 1e4 at the 90th
+    percentile (a bound that holds for every rounding is some hundred times a typical
+    one; one that says 1e5 tells the user nothing)."""
+    from error_bounds import NOISE
+    from polygon_method.scene import load_scene
+    ratios = []
+    for path in WORKED:
+        for kind, name, err, bound in compare_case(solve(load_scene(str(path))), REF):
+            assert err <= bound, (path.stem, kind, name, err, bound)
+            if err > NOISE:
+                ratios.append(bound / err)
+    ratios.sort()
+    assert len(ratios) > 300
+    median, p90 = statistics.median(ratios), ratios[int(0.9 * (len(ratios) - 1))]
+    assert median < 1000 and p90 < 1e4, (median, p90)
+
+
 @pytest.mark.parametrize("name", ["whitworth", "six_link_second_slider",
                                   "two_slider_mechanism", "crank_slotted_lever"])
 def test_sweep_bounds_are_the_solves_bounds(name):

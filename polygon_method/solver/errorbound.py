@@ -19,7 +19,10 @@ own motion; a carried point from the two points it is carried by. ``K`` is the k
 ``rounding`` constant.
 
 Every ``K eps`` is multiplied by ``max(1, largest |coordinate| / longest link)``: a
-mechanism far from the origin is rounded to the digits of its coordinates.
+mechanism far from the origin is rounded to the digits of its coordinates. A step's own
+rounding of velocities and accelerations is of its own numbers (``_Walk.own``): ``K eps``
+times its own speeds and accelerations over the sizes of their kinds, and its positions'
+error turns into its velocities' as its own links turn (``_Walk.couple``).
 ``eX_in`` is the largest error of that kind among the points (and link omegas) the step
 reads. A link's omega and alpha get its step's ``eV`` and ``eA`` (a dyad's links and a
 slider's rod at least those of the side that turns them, divided by its length); a slider's sliding
@@ -33,7 +36,7 @@ from __future__ import annotations
 
 from .compiler import compile_plan
 from .kinematics import hypot
-from ..steps.rounding import CAP, C_FLOOR, EPS, USELESS, largest, vmax
+from ..steps.rounding import CAP, C_FLOOR, EPS, USELESS, largest, vmax, vmin
 
 __all__ = ["EPS", "C_FLOOR", "ErrorBounds", "error_bounds", "scales", "bounds_dict",
            "shown_bounds", "SHOWN", "USELESS", "NO_BOUND"]
@@ -149,12 +152,63 @@ class _Walk:
         self.P, self.V, self.A = motion.P, motion.V, motion.A
         self.ratio = sizes["omega"] ** 2 / sizes["alpha"]
         self.slide = {}
+        self._local = {}
         #: carried point -> how far its place on its body may be off (m), where not 0
         self.spread = {cp.name: cp.spread for cp in motion.scene.points
                        if getattr(cp, "spread", 0.0)}
 
     def condition(self, step):
         return self.motion.cond.get(step.index, 1.0)
+
+    def local(self, step):
+        """The step's own magnitudes, each over the size of its kind (at most 1): ``fv``
+        its largest point speed plus its links' |omega| times its span; ``fa`` its largest
+        point acceleration plus its links' (omega^2 + |alpha|) times its span plus a
+        Coriolis component (2 |omega| times its speeds); ``wv`` its
+        links' largest |omega| times the size of positions over the size of velocities
+        (how a position error turns into a velocity error through a direction line),
+        ``wa`` likewise (omega^2 + |alpha|) into accelerations, ``wr`` twice that |omega|
+        times the size of velocities over the size of accelerations (how a velocity error
+        turns into an acceleration error: ``2 omega dv``). A step's own rounding is
+        ``eps`` times the numbers it combines, not times the largest in the mechanism."""
+        got = self._local.get(step.index)
+        if got is not None:
+            return got
+        m, sz = self.motion, self.sizes
+        pts = [x for x in (*step.needs, *step.finds) if x in self.P and x in self.V]
+        links = [lk for lk in (*step.links, *step.needs_links) if lk in m.W]
+        span = 0.0
+        for i, x in enumerate(pts):
+            for y in pts[i + 1:]:
+                span = vmax(span, hypot(self.P[x][0] - self.P[y][0],
+                                        self.P[x][1] - self.P[y][1]))
+        w = largest([abs(m.W[lk]) for lk in links])
+        w2 = largest([m.W[lk] * m.W[lk] + abs(m.Al[lk]) for lk in links if lk in m.Al])
+        tiny = 1e-300
+        vs, as_ = vmax(sz["velocity"], tiny), vmax(sz["acceleration"], tiny)
+        speed = largest([hypot(*self.V[x]) for x in pts])
+        fv = (speed + w * span) / vs
+        fa = (largest([hypot(*self.A[x]) for x in pts if x in self.A]) + w2 * span
+              + 2 * w * (speed + w * span)) / as_
+        ls = sz["position"]
+        got = (vmin(fv, 1.0), vmin(fa, 1.0), w * ls / vs, w2 * ls / as_, 2 * w * vs / as_)
+        self._local[step.index] = got
+        return got
+
+    def own(self, step, k):
+        """(kp, kv, ka): the step's own rounding ``k`` (relative to the size of positions)
+        for its positions, and for its velocities and accelerations scaled by the step's
+        own speeds and accelerations (:meth:`local`)."""
+        fv, fa = self.local(step)[:2]
+        return k, k * fv, k * fa
+
+    def couple(self, step):
+        """(cv, ca, cr) for :func:`..steps.rounding.two_lines`: how a position error turns
+        into a velocity and an acceleration error, and a velocity error into an
+        acceleration error, through the step's own links (:meth:`local`), at most what
+        the sizes of the mechanism give (1, 1 and ``ratio``)."""
+        wv, wa, wr = self.local(step)[2:]
+        return vmin(wv, 1.0), vmin(wa, 1.0), vmin(wr, self.ratio)
 
 
 def error_bounds(motion) -> ErrorBounds:
@@ -227,7 +281,7 @@ def error_bounds(motion) -> ErrorBounds:
 def _given_spread(motion, res, sizes, eV, eA, eW, eAl, eS):
     """The crank's speed found from a given motion (``omega = Y / Y1``) errs as ``Y1``
     does, relative to ``Y``: every velocity and omega (proportional to omega) by that
-    much; every acceleration and alpha twice that, plus the error of the given quantity's
+    much relative to itself; every acceleration and alpha twice that, plus the error of the given quantity's
     rate carried through ``alpha = (Y' - omega^2 H) / Y1``."""
     g = motion.scene.input.given
     if g.kind == "omega":
@@ -245,14 +299,21 @@ def _given_spread(motion, res, sizes, eV, eA, eW, eAl, eS):
     rw = ev * sizes[kv] / y + 2 * EPS
     time = vmax(sizes["velocity"] / sizes["acceleration"], sizes["omega"] / sizes["alpha"])
     ra = ea * sizes[ka] / y * time + 2 * rw
-    for t in (eV, eW):
-        for k in t:
-            t[k] = t[k] + rw
+    # every velocity and omega is omega times what it is per unit omega: each errs by rw
+    # relative to itself, that is rw times its own size over the size of its kind
+    vs, ws = vmax(sizes["velocity"], 1e-300), vmax(sizes["omega"], 1e-300)
+    for k in eV:
+        eV[k] = eV[k] + rw * vmin(hypot(*motion.V[k]) / vs, 1.0) if k in motion.V \
+            else eV[k] + rw
+    for k in eW:
+        eW[k] = eW[k] + rw * vmin(abs(motion.W[k]) / ws, 1.0) if k in motion.W \
+            else eW[k] + rw
     for t in (eA, eAl):
         for k in t:
             t[k] = t[k] + ra
     for k, (v, a, c) in eS.items():
-        eS[k] = (v + rw, a + ra, c + ra)
+        own = vmin(abs(motion.S[k][0]) / vs, 1.0) if k in motion.S else 1.0
+        eS[k] = (v + rw * own, a + ra, c + ra)
 
 
 def bounds_dict(sol, b=None) -> dict:

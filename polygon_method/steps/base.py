@@ -338,7 +338,8 @@ class Step:
         ``k``. ``walk`` (:mod:`polygon_method.solver.errorbound`) holds the motion, the sizes the
         bounds are relative to (``walk.sizes``, ``walk.ratio``) and the step's condition
         (``walk.condition(step)``). By default: two direction lines (:mod:`.rounding`)."""
-        return two_lines(walk.condition(self), walk.ratio, k, p_in, v_in, a_in)
+        return two_lines(walk.condition(self), walk.ratio, walk.own(self, k), p_in, v_in,
+                         a_in, walk.couple(self))
 
     #: steps of one kind next to each other with the same key may be bound together
     #: (``bind_group``): the same formulas, fewer calls

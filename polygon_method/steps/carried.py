@@ -269,7 +269,8 @@ class Carried(Step):
                 / vhypot(bx - ax, by - ay)
         else:
             gain = 1.0
-        p, v, a = gain * p_in + k, gain * v_in + k, gain * a_in + k
+        kp, kv, ka = walk.own(self, k)
+        p, v, a = gain * p_in + kp, gain * v_in + kv, gain * a_in + ka
         spread = walk.spread.get(x, 0.0)
         if spread and self.p in P and self.q in P:
             # its place on the body is off by `spread` (m): it turns and accelerates with

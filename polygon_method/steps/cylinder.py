@@ -160,12 +160,13 @@ class CylinderStep(Step):
         e = vhypot(V[R][0] - V[K][0], V[R][1] - V[K][1])
         w, vs = abs(m_.W.get(self.key, 0.0)), abs(m_.S[self.key][0])
         ea = vhypot(A[R][0] - A[K][0], A[R][1] - A[K][1]) + w * w * n + 2 * w * vs
+        _, kv, ka = walk.own(self, k)  # its own rounding, of its own speeds and accelerations
         turn = p_in * Ls / n + k
         d_w = (v_in * Vs + e * turn) / n + k * w
-        d_vs = v_in * Vs + e * turn + k * Vs
+        d_vs = v_in * Vs + e * turn + kv * Vs
         d_al = (a_in * As + ea * turn + 2 * d_w * vs + 2 * w * d_vs) / n
-        d_as = a_in * As + ea * turn + 2 * w * d_w * n + k * As
-        walk.slide[self.key] = (d_vs / Vs, d_as / As, 2 * (d_w * vs + w * d_vs) / As + k)
+        d_as = a_in * As + ea * turn + 2 * w * d_w * n + ka * As
+        walk.slide[self.key] = (d_vs / Vs, d_as / As, 2 * (d_w * vs + w * d_vs) / As + ka)
         return p_in, v_in, a_in, d_w / sizes["omega"] + k, d_al / sizes["alpha"] + k
 
     # ----- words

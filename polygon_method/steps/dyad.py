@@ -286,19 +286,19 @@ class Dyad(Step):
             box[(phase, X)] = (g * (s1 * u2y + s2 * u1y + own), g * (s1 * u2x + s2 * u1x + own))
             return g * (s1 + s2 + own)
 
-        p = carry(0, k)
+        kp, kv, ka = walk.own(self, k)
+        _, _, wv, wa, wr = walk.local(self)
+        p = carry(0, kp)
         # each row r . (vX - vB) = 0 (and its acceleration) errs by |dr| |vX - vB| / |r|
         # = |dr| |omega| (|dr| |(alpha, omega^2)|) from the positions' error: where a short
         # link turns fast in a mechanism whose sizes a long one sets, that outgrows the
         # positions' error itself, so it is counted with the dyad's own links' omega and
         # alpha
-        sz, W, Al, V, A = walk.sizes, walk.motion.W, walk.motion.Al, walk.V, walk.A
-        tab, Ls = box.tables, sz["position"]
-        wm = vmax(abs(W.get(self.link1, 0.0)), abs(W.get(self.link2, 0.0)))
-        am = vmax(abs(Al.get(self.link1, 0.0)), abs(Al.get(self.link2, 0.0)))
-        v = carry(1, k + p * vmax(1.0, wm * Ls / sz["velocity"]))
-        a = carry(2, k + p * vmax(1.0, (wm * wm + am) * Ls / sz["acceleration"])
-                  + walk.ratio * v)
+        V, A, tab = walk.V, walk.A, box.tables
+        # (``wv``, ``wa``: walk.local); and a velocity's error turns into an
+        # acceleration's as 2 omega dv (``wr``)
+        v = carry(1, kv + p * wv)
+        a = carry(2, ka + p * wa + vmin(wr, walk.ratio) * v)
         # each link's omega from its own side: r x (vX - vB) / |r|^2 (a short side of a
         # large plate divides its ends' errors by its own length)
         turns = []

@@ -35,7 +35,7 @@ from ..common.errors import TOL, SingularStepError
 from ..scene import FixedPath, GuideSlider
 from .base import (Construction, DirectionLine, Step, Vector, absolute, add, image_label,
                    image_name, numbered, pole_text, sub, unit)
-from .rounding import line_rounding, two_lines, vhypot, vmax
+from .rounding import line_rounding, plus, two_lines, vhypot, vmax
 
 __all__ = ["Peg", "place", "velocity", "acceleration", "under_velocity", "under_acceleration",
            "under_point", "recognise",
@@ -322,6 +322,7 @@ class Peg(Step):
         P = walk.P
         Ls = walk.sizes["position"]
         x, y = P[self.point]
+        k0 = k
         for s in self.slots:  # a fixed slot's own numbers
             if hasattr(s, "through"):
                 k = k + line_rounding(self.rounding, s.through[0], s.through[1], x, y, Ls,
@@ -333,8 +334,9 @@ class Peg(Step):
                 x, y = P[self.point]
                 far = vhypot(x - gx, y - gy) / vmax(vhypot(hx - gx, hy - gy), 1e-12 * Ls)
                 lever = vmax(lever, 1.0 + far)
-        p, v, a, w, al = two_lines(walk.condition(self), walk.ratio, k, p_in * lever,
-                                   v_in * lever, a_in * lever)
+        p, v, a, w, al = two_lines(walk.condition(self), walk.ratio,
+                                   plus(walk.own(self, k0), k - k0), p_in * lever,
+                                   v_in * lever, a_in * lever, walk.couple(self))
         for s in self.slots:
             walk.slide[s.key] = (v, a, a)
         return p, v, a, w, al

@@ -174,12 +174,14 @@ class RackStep(Step):
 
     def error_bound(self, walk, k, p_in, v_in, a_in):
         """The pinion's errors (its omega and alpha times the pitch radius), plus the
-        rounding of the rack's own formula and of its path's numbers, as a slider counts
+        rounding of the rack's own formula (counted against its own numbers,
+        ``walk.own``) and of its path's numbers, as a slider counts
         them (:func:`.rounding.line_rounding`): ``R = T + s u`` is rounded to the digits of
         the path's point T (far from the mechanism, far along the path), and the pitch
         factor ``k = -(T - O) x u`` cancels ``|T - O|`` down to the pitch radius, so
         ``vs = k omega`` and ``as = k alpha`` err by ``(K eps + du) |T - O| / |k|`` of
         themselves (``du`` the rounding of the path's direction, none along an axis)."""
+        kp, kv, ka = walk.own(self, k)
         tx, ty, ux, uy, kk = self.dims[:5]
         ox, oy = self.dims[7], self.dims[8]
         x, y = walk.P[self.point]
@@ -191,9 +193,9 @@ class RackStep(Step):
                             None if axis else angle)
         pitch = (self.rounding * EPS + du) * math.hypot(tx - ox, ty - oy) / abs(kk)
         vs, a_s = walk.motion.S[self.point][0], walk.motion.S[self.point][1]
-        v = v_in + k + pitch * abs(vs) / sz["velocity"]
-        a = a_in + k + pitch * abs(a_s) / sz["acceleration"]
-        return p_in + k + own, v, a, v, a
+        v = v_in + kv + pitch * abs(vs) / sz["velocity"]
+        a = a_in + ka + pitch * abs(a_s) / sz["acceleration"]
+        return p_in + kp + own, v, a, v, a
 
     # ----- what the views ask
     def contact(self, P):

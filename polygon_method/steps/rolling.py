@@ -368,7 +368,8 @@ class RollingWheel(Step):
         from the centre at l, the angle from the no-slip relation over r), plus its own
         rounding."""
         gain = 1.0 + self.dims[0] / self.dims[1]
-        p, v, a = gain * p_in + k, gain * v_in + k, gain * a_in + k
+        kp, kv, ka = walk.own(self, k)
+        p, v, a = gain * p_in + kp, gain * v_in + kv, gain * a_in + ka
         return p, v, a, v, a
 
     # ----- what the views ask

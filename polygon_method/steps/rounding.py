@@ -15,6 +15,9 @@ makes itself, by ``g = 1/c``::
 
 with ``R = omega_scale^2 / alpha_scale`` (where velocities themselves grow like 1/c the
 accelerations grow faster still, and the error relative to them is one power of c smaller).
+A step given its own rounding for each kind (``k_P, k_V, k_A``: ``k`` times its own speeds
+and accelerations over the sizes of their kinds) and its own links' coupling (``c_V eP``,
+``c_A eP``, ``c_R eV`` in place of ``eP``, ``eP``, ``R eV``) has them in their places.
 
 >>> p, v, a, w, al = two_lines(0.5, 1.0, 1.0, 0.0, 0.0, 0.0)   # c = 1/2, own rounding 1
 >>> p, v, a
@@ -25,8 +28,8 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["EPS", "C_FLOOR", "vmax", "vmin", "vhypot", "largest", "two_lines", "turning",
-           "line_rounding"]
+__all__ = ["EPS", "C_FLOOR", "vmax", "vmin", "vhypot", "largest", "two_lines", "plus",
+           "turning", "line_rounding"]
 
 #: unit roundoff of IEEE double precision
 EPS = 2.0 ** -53
@@ -77,14 +80,28 @@ def largest(values):
     return best
 
 
-def two_lines(c, ratio, k, p_in, v_in, a_in):
+def two_lines(c, ratio, k, p_in, v_in, a_in, couple=None):
     """(eP, eV, eA, eW, eAl) of a step that intersects two direction lines at condition
-    ``c`` (see the module): its omegas and alphas err as its velocities and accelerations."""
+    ``c`` (see the module): its omegas and alphas err as its velocities and accelerations.
+    ``k``: its own rounding, or (for positions, velocities, accelerations) each relative
+    to the step's own magnitudes (``walk.own``); ``couple``: how much a position error
+    turns into a velocity and an acceleration error, and a velocity error into an
+    acceleration error, from the step's own links (``walk.couple``), at most ``1, 1, R``."""
+    kp, kv, ka = k if isinstance(k, tuple) else (k, k, k)
+    cv, ca, cr = (1.0, 1.0, ratio) if couple is None else couple
     g = 1.0 / vmax(c, C_FLOOR)
-    p = g * (k + p_in)
-    v = g * (k + v_in + p)
-    a = g * (k + a_in + p + ratio * v)
+    p = g * (kp + p_in)
+    v = g * (kv + v_in + cv * p)
+    a = g * (ka + a_in + ca * p + cr * v)
     return p, v, a, v, a
+
+
+def plus(k, extra):
+    """An own rounding ``k`` (one value, or one for each of positions, velocities and
+    accelerations) with ``extra`` added to each."""
+    if isinstance(k, tuple):
+        return tuple(x + extra for x in k)
+    return k + extra
 
 
 def turning(walk, rx, ry, dv, da, p, v, a, k):

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 from .relations import coriolis
 from ..common.numbers import in_units
 from ..scene import FixedPath, GuideSlider, guide_words
-from .rounding import line_rounding, turning, two_lines, vhypot, vmax
+from .rounding import line_rounding, plus, turning, two_lines, vhypot, vmax
 from .slotted import under_label
 from .base import (Construction, DirectionLine, Step, Vector, absolute, add, centripetal,
                    image_label, perp, pole_text, relative, sub, unit)
@@ -325,7 +325,9 @@ class SliderDyad(Step):
             (qx, qy) = self.path.through
             own = k + line_rounding(self.rounding, qx, qy, x, y, sz["position"],
                                     getattr(self.path, "angle", None))
-        p, v, a, _, _ = two_lines(walk.condition(self), walk.ratio, own, p_in, v_in, a_in)
+        p, v, a, _, _ = two_lines(walk.condition(self), walk.ratio,
+                                  plus(walk.own(self, k), own - k), p_in, v_in, a_in,
+                                  walk.couple(self))
         tab = walk.box.tables
         dv = vhypot(V[X][0] - V[B][0], V[X][1] - V[B][1])
         da = vhypot(A[X][0] - A[B][0], A[X][1] - A[B][1])

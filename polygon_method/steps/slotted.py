@@ -238,16 +238,17 @@ class SlottedLink(Step):
         al = abs(m_.Al.get(self.guide, 0.0))
         e = vhypot(V[A_][0] - V[K_][0], V[A_][1] - V[K_][1])
         ea = vhypot(A[A_][0] - A[K_][0], A[A_][1] - A[K_][1]) + w * w * m + 2 * w * vs
+        _, kv, ka = walk.own(self, k)  # its own rounding, of its own speeds and accelerations
         turn = p_in * Ls / m + k                            # the lever's direction, rad
         d_w = (v_in * Vs + e * turn) / m + k * w           # omega, rad/s
-        d_vs = v_in * Vs + e * turn + k * Vs               # sliding velocity, m/s
+        d_vs = v_in * Vs + e * turn + kv * Vs              # sliding velocity, m/s
         d_al = (a_in * As + ea * turn + 2 * d_w * vs + 2 * w * d_vs) / m + k * al
-        d_as = a_in * As + ea * turn + 2 * w * d_w * m + k * As
-        d_cor = 2 * (d_w * vs + w * d_vs) + k * As
+        d_as = a_in * As + ea * turn + 2 * w * d_w * m + ka * As
+        d_cor = 2 * (d_w * vs + w * d_vs) + ka * As
         walk.slide[A_] = (d_vs / Vs, d_as / As, d_cor / As)
         p = k + p_in + turn * L / Ls
-        v = k + (v_in * Vs + L * d_w + w * L * turn) / Vs
-        a = k + (a_in * As + L * d_al + 2 * w * d_w * L + (w * w + al) * L * turn) / As
+        v = kv + (v_in * Vs + L * d_w + w * L * turn) / Vs
+        a = ka + (a_in * As + L * d_al + 2 * w * d_w * L + (w * w + al) * L * turn) / As
         return p, v, a, d_w / Om + k, d_al / Als + k
 
     # ----- failures and words

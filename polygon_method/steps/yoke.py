@@ -28,7 +28,7 @@ from ..common.errors import TOL, SingularStepError
 from ..common.numbers import in_units
 from ..scene import YokeSlot, guide_words
 from .base import Construction, DirectionLine, Step, Vector, absolute, image_label
-from .rounding import EPS, line_rounding, two_lines
+from .rounding import EPS, line_rounding, plus, two_lines
 
 __all__ = ["Yoke", "place", "velocity", "acceleration", "recognise"]
 
@@ -172,9 +172,11 @@ class Yoke(Step):
         angle's); the yoke's and the pin's sliding quantities err as the yoke's velocity
         and acceleration."""
         (qx, qy), (x, y) = self.path.through, walk.P[self.point]
-        k = k + line_rounding(self.rounding, qx, qy, x, y, walk.sizes["position"],
+        extra = line_rounding(self.rounding, qx, qy, x, y, walk.sizes["position"],
                               getattr(self.path, "angle", None)) + 4 * EPS
-        p, v, a, w, al = two_lines(walk.condition(self), walk.ratio, k, p_in, v_in, a_in)
+        p, v, a, w, al = two_lines(walk.condition(self), walk.ratio,
+                                   plus(walk.own(self, k), extra), p_in, v_in, a_in,
+                                   walk.couple(self))
         walk.slide[self.point] = walk.slide[self.pin] = (v, a, a)
         return p, v, a, w, al
 
