@@ -243,6 +243,10 @@ class Solution(Motion):
                           "as": inp.alpha, "direction": list(sc.slider(inp.block).u)}
             if inp.stroke is not None:
                 d["input"]["stroke"] = list(inp.stroke)
+            if inp.wheel is not None:  # a driving wheel: its centre is the "block"
+                w, al = self.plan.steps[0].omega_alpha(inp.omega, inp.alpha)
+                d["input"].update(wheel=inp.wheel, omega=w, alpha=al,
+                                  radius=self.plan.steps[0].radius)
         else:
             d["input"] = {"crank": inp.crank, "angle": inp.angle, "omega": inp.omega,
                           "alpha": inp.alpha}

@@ -129,8 +129,10 @@ REQUIRED = ("kind", "finds", "links", "needs", "title", "params", "dimensions", 
 #: along its guide), ``parameter_words`` (that parameter in words), ``input_scales`` (the
 #: least sizes of velocity, acceleration, omega, alpha the input sets), ``input_words``
 #: and ``effort_words`` (a driver's own line of the printed solution and of its input
-#: effort; None: a crank's, which the views write)
-OPTIONAL = ("periodic", "parameter_words", "input_scales", "input_words", "effort_words", "assemble", "auxiliary", "branching", "image_by_similar_triangle", "draws_relative",
+#: effort; None: a crank's, which the views write), ``body_omega`` (a driver that does
+#: not turn about the frame but turns about an instantaneous centre: its omega; None),
+#: ``input_items`` (the step table's heading and lines for the input; None: the views')
+OPTIONAL = ("periodic", "body_omega", "input_items", "parameter_words", "input_scales", "input_words", "effort_words", "assemble", "auxiliary", "branching", "image_by_similar_triangle", "draws_relative",
             "other_assembly_mistake", "needs_links", "bind_instant", "group_key",
             "bind_group", "bind_group_instant", "rounding", "error_bound", "contacts",
             "contact_motion", "shapes", "produced", "drawn", "output", "default_hint")
@@ -180,6 +182,17 @@ class Step:
     def parameter_words(self) -> str:
         """The motion's parameter in words, asked of the plan's first step (the driver)."""
         return "the crank angle"
+
+    def body_omega(self, sol):
+        """The angular velocity of the driver's own body where it turns about no fixed
+        pivot (a wheel rolling on the ground: about its contact point), asked of the plan's
+        first step; None for a crank (the input's omega) or a block (it translates)."""
+        return None
+
+    def input_items(self, scene, fmt):
+        """(heading, lines) of the step table's input section, asked of the plan's first
+        step (``fmt`` writes a number); None where the views write a crank's or a block's."""
+        return None
 
     def input_words(self, scene):
         """The printed solution's line for the input, asked of the plan's first step: None
