@@ -187,6 +187,7 @@ def _cmd_page(args) -> int:
     write_outputs(targets, [(html, False)])
     from ..polygons.scales import display_unit
     cycle = "over a full turn" if fr.full_turn else \
+        f"over the wheel's travel ({fr.limits_text})" if fr.sol.scene.input.wheel else \
         f"over the block's travel ({fr.limits_text})" if fr.sol.scene.input.block else \
         f"between the limit positions ({fr.limits_text})"
     print(f"{out}: {len(fr)} frames {cycle}; " + "; ".join(display_unit(s.text) for s in

@@ -9,7 +9,7 @@ import re
 from ..solver.given import stated
 from ..polygons.constructions import (acceleration_constructions, drawn_vectors, image_label,
                              velocity_constructions)
-from ..common.numbers import fmt_angular, in_units
+from ..common.numbers import fmt_angular, in_units, sense
 from ..polygons.scales import Scale
 from ..scene import FixedPath
 from .sketch import _header, _Sketch
@@ -55,6 +55,12 @@ def _auxiliary(sk, sol, scale, P):
 
 def _drive(sol) -> str:
     inp = sol.scene.input
+    if inp.wheel is not None:  # a wheel rolling on the ground: its omega, its centre's place
+        driver, u = sol.plan.steps[0], sol.scene.length_unit
+        w, al = driver.omega_alpha(inp.omega, inp.alpha)
+        return (f"wheel {inp.wheel} rolling at {abs(w):.4g} rad/s {sense(w)}"
+                + (f", {abs(al):.4g} rad/s² {sense(al)}" if al else "")
+                + f", centre {inp.block} at s = {in_units(inp.angle, u)} {sol.scene.units}")
     if inp.block is not None:  # a block driven along its guide
         driver, u = sol.plan.steps[0], sol.scene.length_unit
         return (f"block {inp.block} at s = {in_units(inp.angle, u)} {sol.scene.units}, "
@@ -95,8 +101,8 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
     clear = {sh[1]: (sh[2][0] / s, sh[2][1] / s) for st in sol.plan.steps
              for sh in st.shapes(sol.P) if sh[0] == "guide clear of"}
     for sl in sc.sliders:
-        if isinstance(sl, FixedPath):
-            _fixed_guide(sk, sc, sl, P, s, clear.get(sl.point))
+        if isinstance(sl, FixedPath) and not sl.wheel:  # (a driving wheel's centre path:
+            _fixed_guide(sk, sc, sl, P, s, clear.get(sl.point))  # its ground line is drawn)
     # links as bars, a link with carried points as a plate
     for lk in sc.links:
         if lk.p in sc.ground and lk.q in sc.ground:
@@ -156,6 +162,8 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
                        edge=BODY_EDGE, lw=0.8, z=2, obstacle="edge")
     # blocks
     for sl in sc.sliders:
+        if getattr(sl, "wheel", ""):  # a driving wheel's centre: no block there
+            continue
         X = P[sl.point]
         if isinstance(sl, FixedPath):
             u = sl.u

@@ -124,8 +124,10 @@ class Summary:
         inp, uname = sc.input, sc.units
         driver = compile_plan(sc).steps[0]
         deg = self.deg
+        what = (f"wheel {inp.wheel} rolling at {inp.speed_text}, its centre {inp.block}"
+                if inp.wheel else f"block {inp.block}")
         out = [f"sweep of {sc.title or sc.file or 'the mechanism'}",
-               f"block {inp.block} at {abs(inp.omega):.6g} m/s {driver.sense(inp.omega)}"
+               f"{what} at {abs(inp.omega):.6g} m/s {driver.sense(inp.omega)}"
                + (f", {abs(inp.alpha):.6g} m/s^2 {driver.sense(inp.alpha)}" if inp.alpha
                   else "") + f" at every place; {self.evaluated} of {self.requested} places "
                f"s_{inp.block} along its guide evaluated"]

@@ -86,7 +86,9 @@ def given(sc) -> list:
                   if c.stroke else "")
         out.append(f"A hydraulic cylinder {c.key}: its barrel pivoted at {c.barrel}, its rod "
                    f"pinned at {c.rod}{stroke}.")
-    if sc.input.block is not None:  # a block driven along its guide: its place and motion
+    if sc.input.wheel is not None:  # a wheel rolling on the ground drives it
+        out.append(_wheel_words(sc))
+    elif sc.input.block is not None:  # a block driven along its guide: its place and motion
         out.append(_block_words(sc))
     else:
         _crank_words(sc, out)
@@ -139,6 +141,16 @@ def _crank_words(sc, out):
                    f"axis, turning at {two.speed_text}"
                    + (f", with an angular acceleration of {fmt(abs(two.alpha))} rad/s² "
                       f"{sense(two.alpha)}" if two.alpha else "") + ".")
+
+
+def _wheel_words(sc) -> str:
+    """The driving wheel in words: what it rolls on, its radius, its centre's place."""
+    inp = sc.input
+    pr = next(p for p in sc.rolling if p.wheel == inp.wheel)
+    return (f"The wheel {inp.wheel} (radius {_len(sc, pr.radius)}) drives the mechanism, "
+            f"rolling without slip on {pr.label} at {inp.speed_text}; at the instant shown "
+            f"its centre {inp.block} is {_len(sc, abs(inp.angle))} along the line from the "
+            "foot of its given point. Its contact point is its instantaneous centre.")
 
 
 def _block_words(sc) -> str:
