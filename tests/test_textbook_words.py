@@ -192,7 +192,12 @@ def test_centres_distance_of_a_point_at_its_centre_is_zero():
     assert "x 0 m = 0 m/s" in text and not NOISE.search(text)
 
 
-@pytest.mark.parametrize("path", FILES, ids=[f.stem for f in FILES])
+#: the corpus scenes driven by a crank (linkage analyses a crank's turn; a block or a
+#: wheel rolling on the ground drives the others, which it refuses in one line)
+CRANKED = [f for f in FILES if not re.search(r"^\s*(block|wheel)\s*=", f.read_text(), re.M)]
+
+
+@pytest.mark.parametrize("path", CRANKED, ids=[f.stem for f in CRANKED])
 def test_linkage_text_has_no_double_blank_line(path):
     """The oscillating cylinder has no transmission angle: its output's range followed two
     blank lines."""
