@@ -286,6 +286,11 @@ def test_every_view_takes_a_wheel_driver(tmp_path, capsys):
                  ["sweep", "--csv", str(tmp_path / "s.csv")],
                  ["page", "-o", str(tmp_path / "p.html")]):
         assert main([argv[0], str(f), *argv[1:]]) == 0, argv
+    out = " ".join(capsys.readouterr().out.split())
+    # the power balance by hand: F v_C + F_B . v_B = 0, v_C = omega r = 1.2 m/s, v_B = 2 v_C
+    # (the rod translates at this instant): F = 100 x 2.4 / 1.2 = 200 N, F r = 60 N m
+    assert "input force at the centre C of wheel CA: 200 N to the right along the ground, " \
+        "i.e. a torque of 60 N m about the contact point" in out
     svg = (tmp_path / "d.svg").read_text()
     assert 'id="rolling-line' in svg and 'id="contact-' in svg  # the hatched ground, I
     assert 'id="block-C"' not in svg and 'id="guide-C"' not in svg  # no block at the centre
@@ -320,6 +325,16 @@ def test_linkage_refuses_in_one_line(tmp_path, capsys):
     assert main(["linkage", str(f)]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and "wheel CA" in err
+
+
+def test_the_force_analysis_refuses_in_one_line(tmp_path, capsys):
+    f = tmp_path / "t.toml"
+    f.write_text(scene_text(*CASES[0]) + '[masses]\nAB = { mass = "5 kg" }\n[answers]\n'
+                 'F_B = "10 N"\n')
+    assert main(["check", str(f)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "a wheel rolling on the ground as the only driver" \
+        in err, err
 
 
 def test_the_worked_problem_checks():
