@@ -14,7 +14,7 @@ Along u (t . u = +-1): ``vs = omega r (t . u)``, ``as = alpha r (t . u)`` (the p
 ``omega`` and ``alpha``). The wheel's point P (and every point pinned to the rim) is then
 placed by the rolling step from the centre's motion.
 
->>> centre_rates(-4.0, 2.0, 0.3, 0.0, 1.0)   # 4 rad/s cw on the ground: to the right
+>>> centre_rates(-4.0, 2.0, 0.3, -1.0)   # 4 rad/s cw on the ground (t = -u): to the right
 (1.2, -0.6)
 >>> contact_acceleration(-4.0, 0.3)          # omega^2 r, towards the centre
 4.8
@@ -31,10 +31,11 @@ from .base import Construction, absolute, image_label
 __all__ = ["WheelDriver", "centre_rates", "contact_acceleration"]
 
 
-def centre_rates(omega, alpha, r, mx, my):
-    """(v_C, a_C) along t = perp(m): ``omega r``, ``alpha r`` (a wheel rolling on a fixed
-    line, m the unit normal from the line to the centre)."""
-    return omega * r, alpha * r
+def centre_rates(omega, alpha, r, along):
+    """(vs, as) of the centre along its path's u: ``omega r (t . u)``, ``alpha r (t . u)``
+    (a wheel rolling on a fixed line, t = perp(m), m the unit normal from the line to the
+    centre; ``along`` = t . u, +1 or -1)."""
+    return omega * r * along, alpha * r * along
 
 
 def contact_acceleration(omega, r):
