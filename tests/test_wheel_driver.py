@@ -172,6 +172,24 @@ s_C = 200
 omega_CP = "6 rad/s ccw"
 alpha_CP = "4 rad/s^2 cw"
 """,
+    # the wheel rolls; a link pinned at its centre drives a crank (now a follower)
+    """
+[ground]
+O = [900, 300]
+[links]
+CP = 300
+CB = 700
+OB = 250
+[rolling]
+CP = { on = "horizontal", through = [0, 0] }
+[assembly]
+B = "above"
+[input]
+wheel = "CP"
+C = [0, 300]
+omega_CP = "4 rad/s cw"
+alpha_CP = "1.5 rad/s^2 cw"
+""",
     # a spoke point driving a rod and a rocker
     """
 [ground]
