@@ -43,6 +43,8 @@ def given(sc) -> list:
     for cp in sc.points:
         out.append(f"Point {cp.name}: {cp.how}.")  # "on BC, 40 mm from B"
     for s in sc.sliders:
+        if getattr(s, "wheel", ""):  # a driving wheel's centre: said with the wheel
+            continue
         if s.slot:  # a peg in two slots: one sentence, at its first slot
             if s is sc.slots(s.point)[0]:
                 out.append(f"A peg {s.point} runs in two slots: "
