@@ -123,10 +123,12 @@ def _check_scales(svg, sol, used):
         assert said == s.text.replace(" ", "").replace("^2", "2"), (said, s.text)
     measured = 0
     # the crank, or for a mechanism driven by a block, its first link between two joints
+    # (none on a sheet without the configuration diagram: the polygons' page of two)
     first = (next(lk for lk in sc.links if lk.key == inp.crank) if inp.crank is not None
-             else next(lk for lk in sc.links if f"joint-{lk.p}" in svg.groups
-                       and f"joint-{lk.q}" in svg.groups))
-    if f"joint-{first.p}" in svg.groups and "note-configuration-scale" in svg.groups:
+             else next((lk for lk in sc.links if f"joint-{lk.p}" in svg.groups
+                        and f"joint-{lk.q}" in svg.groups), None))
+    if first is not None and f"joint-{first.p}" in svg.groups and \
+            "note-configuration-scale" in svg.groups:
         got = math.dist(_centre(svg, f"joint-{first.p}"), _centre(svg, f"joint-{first.q}"))
         assert got / CM * used["configuration"].per_cm == pytest.approx(first.length,
                                                                        rel=1e-5)
