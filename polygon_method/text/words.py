@@ -149,8 +149,12 @@ def _wheel_words(sc) -> str:
     """The driving wheel in words: what it rolls on, its radius, its centre's place."""
     inp = sc.input
     pr = next(p for p in sc.rolling if p.wheel == inp.wheel)
+    (ux, uy), (mx, my) = sc.slider(inp.block).u, pr.m
+    alpha = inp.alpha * (-my * ux + mx * uy) / pr.radius  # a_C = alpha r along t = perp(m)
+    acc = (f" and {fmt(abs(alpha))} rad/s² {'ccw' if alpha > 0 else 'cw'}" if alpha else
+           ", steadily")
     return (f"The wheel {inp.wheel} (radius {_len(sc, pr.radius)}) drives the mechanism, "
-            f"rolling without slip on {pr.label} at {inp.speed_text}; at the instant shown "
+            f"rolling without slip on {pr.label} at {inp.speed_text}{acc}; at the instant shown "
             f"its centre {inp.block} is {_len(sc, abs(inp.angle))} along the line from the "
             "foot of its given point. Its contact point is its instantaneous centre.")
 
