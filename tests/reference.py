@@ -27,6 +27,9 @@ the coordinates ``q`` (x, y of every non-ground point):
 * a driving block X on its fixed path (T, u) ([input] block): ``(X - T).u - s = 0`` (with the
   path's equation above), ``s(t) = s0 + vs t + as t^2 / 2``: the "crank angle" th is s,
   ``f_t = -vs``, ``gamma = -as``
+* a driving wheel CX rolling on a fixed line ([input] wheel): its centre C is the driving
+  block above, its place s along the [rolling] line (T its through point, u its direction:
+  ``(C - T).u - s = 0``), on the line at the radius by the wheel's own equation
 * a pin X in the slot of a translating yoke Y (a block on a fixed path), the slot along
   the fixed unit d:  ``cross(X - Y, d) = 0`` (linear: ``gamma = 0``)
 * a peg in two slots: one of the two above for each slot (two equations for its point);
@@ -117,7 +120,11 @@ def _equations(scene):
         if two is not None and lk.key == scene.link(two.crank).key:
             continue
         eqs.append(("link", (lk.p, lk.q, mpf(lk.length))))
-    if getattr(inp, "block", None) is not None:  # a block driven along its fixed path
+    wheel = getattr(inp, "wheel", None)
+    if wheel is not None:  # a driving wheel: its centre's place along its ground line (T,
+        pr = next(p for p in scene.rolling if p.wheel == wheel)  # u: the [rolling] line's)
+        eqs.append(("block", (inp.block, _v(pr.through), _unit(_v(pr.u)))))
+    elif getattr(inp, "block", None) is not None:  # a block driven along its fixed path
         sl = scene.slider(inp.block)
         eqs.append(("block", (inp.block, _v(sl.through), _unit(_v(sl.u)))))
     else:
@@ -137,6 +144,8 @@ def _equations(scene):
         for comp in (0, 1):
             eqs.append(("carried", (cp.name, lk.p, lk.q, lam, mu, comp)))
     for sl in scene.sliders:
+        if getattr(sl, "wheel", ""):  # a driving wheel's centre: on its line by "wheelline"
+            continue
         if hasattr(sl, "guide"):
             eqs.append(("guide", (sl.point, sl.first, sl.second)))
         elif hasattr(sl, "yoke"):  # the slot of a translating yoke: a line of fixed direction

@@ -123,7 +123,8 @@ def _check_scales(svg, sol, used):
         assert said == s.text.replace(" ", "").replace("^2", "2"), (said, s.text)
     measured = 0
     # the crank, or for a mechanism driven by a block, its first link between two joints
-    # (none in a trammel, whose one link joins two blocks: its given velocity is measured)
+    # (none in a trammel, whose one link joins two blocks, nor on a sheet without the
+    # configuration diagram: the polygons' page of two)
     first = (next(lk for lk in sc.links if lk.key == inp.crank) if inp.crank is not None
              else next((lk for lk in sc.links if f"joint-{lk.p}" in svg.groups
                         and f"joint-{lk.q}" in svg.groups), None))

@@ -31,6 +31,11 @@ def test_every_datum_is_stated(path):
     for p, (x, y) in sc.ground.items():
         assert f"{p} at ({g(x / u)}, {g(y / u)}) {sc.units}" in text
     for s in sc.sliders:
+        if getattr(s, "wheel", ""):  # a driving wheel's centre: said with the wheel
+            pr = next(p for p in sc.rolling if p.wheel == s.wheel)
+            assert f"The wheel {s.wheel} (radius {g(pr.radius / u)} {sc.units})" in text
+            assert f"rolling without slip on {pr.label} at {sc.input.speed_text}" in text
+            continue
         if s.slot:  # a peg in two slots: each slot named in its sentence
             assert f"A peg {s.point} runs in two slots: " in text
             if hasattr(s, "through"):
@@ -56,6 +61,12 @@ def test_every_datum_is_stated(path):
     if inp.block is None:
         assert f"makes {fmt(math.degrees(inp.angle) % 360)}°" in text
         assert inp.speed_text in text
+    elif inp.wheel is not None:  # a driving wheel: its omega, alpha and its centre's place
+        r = next(p for p in sc.rolling if p.wheel == inp.wheel).radius
+        assert f"The wheel {inp.wheel} (radius" in text and inp.speed_text in text
+        alpha = abs(inp.alpha) / r  # |a_C| = |alpha| r
+        assert (f"and {fmt(alpha)} rad/s²" in text) == bool(inp.alpha)
+        assert f"its centre {inp.block} is {g(abs(inp.angle) / u)} {sc.units} along" in text
     else:  # a driving block: its place along its guide, its speed and acceleration
         assert f"The block {inp.block} drives the mechanism" in text
         assert f"it is {g(abs(inp.angle) / u)} {sc.units} from" in text

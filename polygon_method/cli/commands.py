@@ -212,7 +212,8 @@ def _cmd_page(args) -> int:
     write_outputs(targets, [(html, False)])
     from ..polygons.scales import display_unit
     cycle = "over a full turn" if fr.full_turn else \
-        f"over the block's travel ({fr.limits_text})" if not fr.sol.plan.steps[0].periodic else \
+        f"over {fr.sol.plan.steps[0].travel} ({fr.limits_text})" \
+        if not fr.sol.plan.steps[0].periodic else \
         f"between the limit positions ({fr.limits_text})"
     print(f"{out}: {len(fr)} frames {cycle}; " + "; ".join(display_unit(s.text) for s in
                                                         fr.scales)

@@ -99,8 +99,8 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
     clear = {sh[1]: (sh[2][0] / s, sh[2][1] / s) for st in sol.plan.steps
              for sh in st.shapes(sol.P) if sh[0] == "guide clear of"}
     for sl in sc.sliders:
-        if isinstance(sl, FixedPath):
-            _fixed_guide(sk, sc, sl, P, s, clear.get(sl.point))
+        if isinstance(sl, FixedPath) and not sl.wheel:  # (a driving wheel's centre path:
+            _fixed_guide(sk, sc, sl, P, s, clear.get(sl.point))  # its ground line is drawn)
     # links as bars, a link with carried points as a plate
     for lk in sc.links:
         if lk.p in sc.ground and lk.q in sc.ground:
@@ -160,6 +160,8 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
                        edge=BODY_EDGE, lw=0.8, z=2, obstacle="edge")
     # blocks
     for sl in sc.sliders:
+        if getattr(sl, "wheel", ""):  # a driving wheel's centre: no block there
+            continue
         X = P[sl.point]
         if isinstance(sl, FixedPath):
             u = sl.u

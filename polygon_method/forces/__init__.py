@@ -67,6 +67,7 @@ _NOT_YET = {
                "determined by statics where a link holds the centres' distance: a preload or "
                "the teeth's pressure angle sets it)",
     "rack": "a rack on a pinion",
+    "rolling driver": "a wheel rolling on the ground as the only driver",
     "triad": "a triad whose plate is made of three links",
 }
 

@@ -160,7 +160,8 @@ def analyse(scene: Scene) -> Linkage:
         raise SceneError(f"linkage analyses a crank's turn (Grashof, toggles, quick return): "
                          f"this mechanism is driven by {plan.steps[0].title}, whose travel "
                          "`sweep` follows (its ends, every quantity's extremes)",
-                         file=scene.file, key="[input] block")
+                         file=scene.file,
+                         key="[input] wheel" if scene.input.wheel else "[input] block")
     cyc = _Cycle(scene)
     dom = cyc.dom
     fb = four_bar_of(scene)

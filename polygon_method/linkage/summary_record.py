@@ -117,7 +117,7 @@ class Summary:
         block = driver.finds[0]
         deg = self.deg
         out = [f"sweep of {sc.title or sc.file or 'the mechanism'}",
-               f"block {block} at {abs(inp.omega):.6g} m/s {driver.sense(inp.omega)}"
+               f"{driver.title} at {abs(inp.omega):.6g} m/s {driver.sense(inp.omega)}"
                + (f", {abs(inp.alpha):.6g} m/s^2 {driver.sense(inp.alpha)}" if inp.alpha
                   else "") + f" at every place; {self.evaluated} of {self.requested} places "
                f"s_{block} along its guide evaluated"]

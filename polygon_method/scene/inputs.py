@@ -15,6 +15,7 @@ from .angles import candidates, is_book_form
 from .records import (GIVEN_KINDS, INPUT_KEYS, FixedPath, GivenRate, Input, PositionGiven,
                       split_name)
 from .tables import _suggest, _unit_at
+from .wheel_input import wheel_input
 
 #: a speed followed by a direction: up, down, left, right (upwards, to the left, ...), or
 #: "at 30 deg"
@@ -85,6 +86,8 @@ class _Input:
         spec = self.table("input")
         if "block" in spec:  # a block on a fixed guide drives the mechanism: no crank
             return self.block_input(spec, ground)
+        if "wheel" in spec:  # a wheel rolling on a ground line drives it: no crank
+            return wheel_input(self, spec, ground)
         second = None
         if "second" in spec:  # a second driving crank: two degrees of freedom
             second = self.second_input(spec["second"], ground)
@@ -129,10 +132,10 @@ class _Input:
         rolling = self.raw.get("rolling")
         if not on_ground and isinstance(rolling, dict) and any(
                 set(split_name(k)) == set(pts) for k in rolling):
-            raise self.error(f"{link.key} is a rolling wheel, not a crank: a wheel as the only "
-                             "driver is not supported yet; with a crank in the chain, give "
-                             f"the wheel's motion as omega_{link.key} (the crank's speed is "
-                             "then found)", "input", "crank")
+            raise self.error(f"{link.key} is a rolling wheel, not a crank: on a line it drives "
+                             f"alone as wheel = \"{link.key}\" with omega_{link.key} (no "
+                             "crank); with a crank in the chain, give the wheel's motion as "
+                             f"omega_{link.key} (the crank's speed is then found)", "input", "crank")
         if not on_ground:
             raise self.error(f"crank {link.key} is not pinned to the ground: neither "
                              f"{pts[0]} nor {pts[1]} is in [ground]", "input", "crank")

@@ -536,6 +536,8 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
         self.slider_points = {s.point: s for s in sliders}
         self.cylinder_list = cylinders = self.cylinders(known)
         inp = self.input(index, ground)
+        if inp.wheel is not None:  # the driving wheel's centre moves on its own path
+            sliders = list(sliders) + [self.slider_points[inp.block]]
         origin = ground[inp.pivot] if inp.pivot is not None else next(iter(ground.values()))
         sliders = [replace(s, through=origin)
                    if isinstance(s, FixedPath) and s.through[1] is None else s

@@ -167,6 +167,9 @@ class FixedPath:
     #: the path's angle as read (rad, ccw from +x; ``u`` is exact only at whole right
     #: angles), None where the path was not given by an angle
     angle: float | None = None
+    #: the path of the centre of a driving wheel rolling on a line (``[input] wheel``): the
+    #: wheel's link (no block is there: the wheel's centre moves along it); "" otherwise
+    wheel: str = ""
 
     @property
     def key(self) -> str:
@@ -334,6 +337,12 @@ class Input:
     #: a block driver's stated stroke (s from, s to; m), or None: the sweep then runs from
     #: the first to the last position where the mechanism assembles
     stroke: tuple | None = None
+    #: a wheel rolling on a fixed line driving the mechanism (``[input] wheel = "CP"``): its
+    #: link, or None. Then ``block`` is its centre, moving on the line parallel to the ground
+    #: at the wheel's radius (its path in the scene's sliders), ``angle``, ``omega``,
+    #: ``alpha`` the centre's place, velocity and acceleration along it (as for a block),
+    #: ``speed_text`` the wheel's angular velocity as the scene gave it
+    wheel: str | None = None
     #: an angle the scene gave in a book's words: (words, the angle they gave (rad), the
     #: slips a reader of them might make (:class:`~.angles.Slip`), the note saying how
     #: they were read); empty for a plain angle

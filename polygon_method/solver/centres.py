@@ -206,6 +206,8 @@ def _primary(sol, names):
                 if key not in found:
                     found[key] = Centre(*key, tuple(sol.P[p]), None, f"the pin at {p}")
     for s in sc.sliders:
+        if getattr(s, "wheel", ""):  # a driving wheel's centre path: no block (its
+            continue                 # contact with the ground is the rolling step's)
         blk = num(f"block {s.key}")  # a peg in two slots: a block in each
         if isinstance(s, FixedPath):
             d = _unit(-s.u[1], s.u[0])
@@ -478,7 +480,10 @@ def _omegas(sol, names, found):
     """omega of every body, from the crank's by the angular-velocity-ratio theorem."""
     n = len(names)
     driver = sol.plan.steps[0]
-    if driver.periodic:  # a crank: body 2 turns at the input's omega
+    turning = driver.body_omega(sol)
+    if turning is not None:  # a driving wheel: body 2 turns about its contact point
+        w, frm = {1: 0.0, 2: turning}, {}
+    elif driver.periodic:  # a crank: body 2 turns at the input's omega
         w, frm = {1: 0.0, 2: sol.scene.input.omega}, {}
     else:  # a block driven along its guide: body 2 translates at its given velocity
         w, frm = {1: 0.0, 2: 0.0}, {2: tuple(sol.V[driver.finds[0]])}

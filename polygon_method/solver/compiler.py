@@ -40,6 +40,7 @@ from .plan import Bodies, Dims, Plan, _bodies_at
 from ..scene import GuideSlider, Scene, key_line
 from ..steps import TIERS, Context, Crank, cylinder
 from ..steps.block import BlockDriver
+from ..steps.rolling_driver import WheelDriver
 from ..steps.second_crank import SecondCrank
 
 __all__ = ["compile_plan", "gruebler"]
@@ -459,7 +460,15 @@ class _Compiler:
     def run(self) -> Plan:
         sc = self.scene
         inp = sc.input
-        if inp.block is not None:  # a block on a fixed guide drives: its place is the input
+        if inp.wheel is not None:  # a wheel rolling on a ground line drives: its centre
+            path = sc.slider(inp.block)  # the centre's place on its path is the input
+            pr = next(p for p in sc.rolling if p.wheel == inp.wheel)
+            along = -pr.m[1] * path.u[0] + pr.m[0] * path.u[1]
+            self.used_sliders.add(path.key)
+            self.add(WheelDriver(0, inp.block, path, self.fmt(pr.through), self.unit,
+                                 self.uname, wheel=inp.wheel, radius=pr.radius,
+                                 ground_words=pr.label, along=along))
+        elif inp.block is not None:  # a block on a fixed guide drives: its place is the input
             path = sc.slider(inp.block)
             named = [p for p, xy in sc.ground.items() if xy == path.through]
             self.used_sliders.add(path.key)

@@ -363,7 +363,8 @@ def _bodies_at(sc, point) -> tuple:
             out.append((f"rod {cyl.key}", cyl.key))
     for sl in sc.slots(point):  # a block; a peg in two slots has a block in each
         if isinstance(sl, FixedPath):
-            out.append((f"block {sl.key}", None))
+            if not sl.wheel:  # (a driving wheel's centre path: no block there)
+                out.append((f"block {sl.key}", None))
         elif isinstance(sl, GuideSlider):
             out.append((f"block {sl.key}", sc.link(sl.guide).key))
         else:  # in the slot of a translating yoke: the block does not turn

@@ -164,9 +164,14 @@ REQUIRED = ("kind", "finds", "links", "needs", "title", "params", "dimensions", 
 #: plays the part of a crank's radian: the sweep's offsets near a change point are
 #: multiples of it), ``effort_key`` (the JSON key of the input effort), ``input_record``
 #: (a driver's own JSON ``input``; None: a crank's, which the solution writes),
-#: ``drive_caption`` (a driver's own line under the drawings; None: a crank's)
+#: ``drive_caption`` (a driver's own line under the drawings; None: a crank's), ``travel``
+#: (what a driver's sweep runs over, in words: "the block's travel"), ``body_omega`` (a
+#: driver that does not turn about the frame but about an instantaneous centre: its omega;
+#: None), ``input_items`` (the step table's heading and lines for the input; None: the
+#: views')
 OPTIONAL = ("periodic", "parameter_words", "input_scales", "input_words", "effort_words",
             "parameter", "parameter_scale", "effort_key", "input_record", "drive_caption",
+            "travel", "body_omega", "input_items",
             "assemble", "auxiliary", "branching", "image_by_similar_triangle", "draws_relative",
             "other_assembly_mistake", "needs_links", "bind_instant", "group_key",
             "bind_group", "bind_group_instant", "rounding", "error_bound", "contacts",
@@ -218,6 +223,17 @@ class Step:
         """The motion's parameter in words, asked of the plan's first step (the driver)."""
         return "the crank angle"
 
+    def body_omega(self, sol):
+        """The angular velocity of the driver's own body where it turns about no fixed
+        pivot (a wheel rolling on the ground: about its contact point), asked of the plan's
+        first step; None for a crank (the input's omega) or a block (it translates)."""
+        return None
+
+    def input_items(self, scene, fmt):
+        """(heading, lines) of the step table's input section, asked of the plan's first
+        step (``fmt`` writes a number); None where the views write a crank's or a block's."""
+        return None
+
     def input_words(self, scene):
         """The printed solution's line for the input, asked of the plan's first step: None
         for a crank (the views write its angle and speed)."""
@@ -252,6 +268,9 @@ class Step:
         """The line under the drawings saying what drives the mechanism, asked of the
         driver: None for a crank (the drawing writes its angle and speed)."""
         return None
+
+    #: what a driver's sweep runs over, in words (None: a crank's turn, between its limits)
+    travel = None
 
     def input_scales(self, scene):
         """(v, a, omega, alpha): the least sizes of each kind that the input sets, asked of

@@ -170,6 +170,8 @@ class BlockDriver(Step):
             d["stroke"] = list(inp.stroke)
         return d
 
+    travel = "the block's travel"
+
     def drive_caption(self, scene):
         """The line under the drawings: the block's place, its velocity and acceleration."""
         inp = scene.input

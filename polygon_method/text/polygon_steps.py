@@ -182,6 +182,8 @@ def _angular_velocity_items(sol):
 def _sliding_items(sol):
     out = []
     for s in sol.scene.sliders:
+        if getattr(s, "wheel", ""):  # a driving wheel's centre: its velocity said above
+            continue
         vs = sol.S[s.key][0]
         if vs == 0:  # (noise is 0 here: the solution is tidied)
             guide = (f"the {guide_words(s.label)}" if isinstance(s, FixedPath) else
@@ -273,9 +275,10 @@ def readoff_section(doc, sol, vscale):
     doc.p("Angular velocities (omega = relative velocity / length; the sense is the way the "
           "relative velocity turns the link):")
     doc.items(_angular_velocity_items(sol))
-    if sol.scene.sliders:
+    sliding = _sliding_items(sol)
+    if sliding:
         doc.p("Sliding velocities (relative to the guide):")
-        doc.items(_sliding_items(sol))
+        doc.items(sliding)
     if sol.scene.pins:
         doc.p("Rubbing velocities (|omega_1 - omega_2| r, with signed omegas: the sum of the "
               "magnitudes when the two turn in opposite senses, the difference when alike):")
@@ -371,6 +374,8 @@ def acceleration_section(doc, sol, ascale):
     doc.items(items)
     sl = []
     for s in sc.sliders:
+        if getattr(s, "wheel", ""):  # a driving wheel's centre: its acceleration said above
+            continue
         a_s = sol.S[s.key][1]
         cor = math.hypot(*sol.coriolis(s.key))
         t = f"as_{s.key} = {fmt(a_s)} m/s^2 (signed along the guide)"

@@ -85,11 +85,12 @@ def solution_text(sol: Solution) -> str:
                  sol.shown(sol.Al[lk.key], "alpha", lk.key))
         lines.append(f"{lk.key:<8} {lk.length / u:<14.6g} {fmt_angular(w, 'rad/s'):<22} "
                      f"{fmt_angular(al, 'rad/s^2'):<22}")
-    if sc.sliders:
+    blocks = [s for s in sc.sliders if not getattr(s, "wheel", "")]  # (not a driving wheel's
+    if blocks:                                                         # centre: a point above)
         lines.append("")
         lines.append(f"{'slider':<8} {'guide':<16} {'sliding v (m/s)':<18} "
                      f"{'sliding a (m/s^2)':<20} {'Coriolis (m/s^2)':<24}")
-        for s in sc.sliders:
+        for s in blocks:
             vs, a_s, cor = sol.S[s.key][0], sol.S[s.key][1], sol.coriolis(s.key)
             vs, a_s = sol.shown(vs, "vs", s.key), sol.shown(a_s, "as", s.key)
             guide = getattr(s, "label", None) or getattr(s, "guide", "")

@@ -236,6 +236,11 @@ def _input(doc, sol):
     sc = sol.scene
     inp = sc.input
     driver = sol.plan.steps[0]
+    own = driver.input_items(sc, fmt)
+    if own is not None:  # a driver of its own words (a wheel rolling on the ground)
+        doc.h(f"2. {own[0]}")
+        doc.items(list(own[1]))
+        return
     if not driver.periodic:  # a block driven along its guide: its velocity and rate given
         doc.h(f"2. Input block {inp.tip}")
         vs, a_s = inp.omega, inp.alpha

@@ -45,6 +45,8 @@ def given(sc) -> list:
     for cp in sc.points:
         out.append(f"Point {cp.name}: {cp.how}.")  # "on BC, 40 mm from B"
     for s in sc.sliders:
+        if getattr(s, "wheel", ""):  # a driving wheel's centre: said with the wheel
+            continue
         if s.slot:  # a peg in two slots: one sentence, at its first slot
             if s is sc.slots(s.point)[0]:
                 out.append(f"A peg {s.point} runs in two slots: "
@@ -89,8 +91,9 @@ def given(sc) -> list:
         out.append(f"A hydraulic cylinder {c.key}: its barrel pivoted at {c.barrel}, its rod "
                    f"pinned at {c.rod}{stroke}.")
     driver = compile_plan(sc).steps[0]  # what drives: asked of the plan's first step
-    if not driver.periodic:  # a block driven along its guide: its place and motion
-        out.append(_block_words(sc, driver.finds[0]))
+    if not driver.periodic:  # a block driven along its guide, or a wheel rolling: its place
+        out.append(_wheel_words(sc, driver.finds[0]) if sc.input.wheel is not None
+                   else _block_words(sc, driver.finds[0]))
     else:
         _crank_words(sc, out)
     for pin in sc.pins:
@@ -150,6 +153,20 @@ def _crank_words(sc, out):
                    f"axis, turning at {two.speed_text}"
                    + (f", with an angular acceleration of {fmt(abs(two.alpha))} rad/s² "
                       f"{sense(two.alpha)}" if two.alpha else "") + ".")
+
+
+def _wheel_words(sc, centre) -> str:
+    """The driving wheel in words: what it rolls on, its radius, its centre's place."""
+    inp = sc.input
+    pr = next(p for p in sc.rolling if p.wheel == inp.wheel)
+    (ux, uy), (mx, my) = sc.slider(centre).u, pr.m
+    alpha = inp.alpha * (-my * ux + mx * uy) / pr.radius  # a_C = alpha r along t = perp(m)
+    acc = (f" and {fmt(abs(alpha))} rad/s² {'ccw' if alpha > 0 else 'cw'}" if alpha else
+           ", steadily")
+    return (f"The wheel {inp.wheel} (radius {_len(sc, pr.radius)}) drives the mechanism, "
+            f"rolling without slip on {pr.label} at {inp.speed_text}{acc}; at the instant shown "
+            f"its centre {centre} is {_len(sc, abs(inp.angle))} along the line from the "
+            "foot of its given point. Its contact point is its instantaneous centre.")
 
 
 def _block_words(sc, block) -> str:
