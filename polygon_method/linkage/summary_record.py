@@ -123,7 +123,8 @@ class Summary:
                f"s_{block} along its guide evaluated"]
         if self.range_deg is not None:
             lo, hi = self.range_deg
-            out.append(f"the block {block} travels from s_{block} = {lo:.6g} to "
+            mover = driver.parameter(sc)[0].removeprefix("place of ")  # block A, ...
+            out.append(f"the {mover} travels from s_{block} = {lo:.6g} to "
                        f"{hi:.6g} {uname} on the scene's branch"
                        + (" (its stated stroke)" if inp.stroke is not None and all(
                            lp.step == driver.label for lp in self.limits) else ""))

@@ -74,7 +74,7 @@ class WheelDriver(BlockDriver):
 
     def parameter(self, scene) -> tuple:
         """(name, symbol, unit): the wheel's centre's place along its line."""
-        return (f"place of the centre {self.point} of wheel {self.wheel}", f"s_{self.point}",
+        return (f"place of centre {self.point} of wheel {self.wheel}", f"s_{self.point}",
                 f" {scene.units}")
 
     def input_record(self, scene):
