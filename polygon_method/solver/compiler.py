@@ -34,8 +34,8 @@ import weakref
 from dataclasses import replace
 
 from ..common.errors import AssemblyError, MobilityError, PolygonMethodError, SceneError
-from .given import completed, place_roots, resolve
-from ..common.numbers import in_units, quiet, sense
+from ..common.numbers import in_units, quiet
+from .completion import gas_towards_crank, given_completed, place
 from .plan import Bodies, Dims, Plan, _bodies_at
 from ..scene import GuideSlider, Scene, key_line
 from ..steps import TIERS, Context, Crank, cylinder
@@ -75,7 +75,7 @@ def compile_plan(scene: Scene) -> Plan:
         try:
             notes = ()
             if scene.input.placed is not None and not scene.input.placed.found:
-                notes = _place(scene)  # the crank's angle that gives the stated position
+                notes = place(scene, lambda trial: _Compiler(trial).run())  # the crank's angle that gives the stated position
             plan = _Compiler(scene).run()
             if notes:
                 plan = replace(plan, notes=notes + plan.notes)
@@ -84,7 +84,7 @@ def compile_plan(scene: Scene) -> Plan:
                 exc.line = key_line(scene, exc.key)
             raise exc.located(scene.file)
         if scene.input.given is not None:
-            plan = _given(plan)
+            plan = given_completed(plan)
         if key is not None:
             while _BY_CONTENT and len(_BY_CONTENT) >= _KEEP:
                 _BY_CONTENT.pop(next(iter(_BY_CONTENT)))
@@ -95,7 +95,7 @@ def compile_plan(scene: Scene) -> Plan:
     if plan.scene is not scene:  # a scene of the same content: its own loads, masses, ...
         plan = _for_scene(plan, scene)
     if any(ld.toward is not None and ld.force is None for ld in scene.loads):
-        _gas_towards_crank(plan, scene)  # a gas force's direction (loads are not in the key)
+        gas_towards_crank(plan, scene)  # a gas force's direction (loads are not in the key)
     try:
         ident = id(scene)
         _BY_ID[ident] = (weakref.ref(scene, functools.partial(_forget, ident=ident)), plan)
@@ -114,120 +114,6 @@ def _for_scene(plan, scene):
     object.__setattr__(out, "_phases", plan._phases)
     object.__setattr__(out, "_instant", plan._instant)
     return out
-
-
-def _given(plan):
-    """The plan with the crank's omega and alpha found from the scene's given motion
-    (:mod:`polygon_method.solver.given`); the scene's input completed with them (a scene is
-    complete once compiled: every view reads its crank's speed)."""
-    sc = plan.scene
-    try:
-        res = resolve(plan)
-    except PolygonMethodError as exc:
-        if exc.line is None and (exc.step or "").startswith("[input]"):
-            exc.line = key_line(sc, f"[input] {sc.input.given.key}")
-            exc.key, exc.step = exc.step, None
-        raise exc.located(sc.file)
-    object.__setattr__(sc, "input", completed(sc, res))
-    g = sc.input.given
-    per = "m/s" if g.kind != "omega" else "rad/s"
-    note = (f"the crank {sc.input.crank}'s speed is found from {g.key} = {g.text}: "
-            f"{g.key} is {res.per_omega:.6g} {per} per rad/s of the crank, so omega_"
-            f"{sc.input.crank} = {abs(res.omega):.6g} rad/s {sense(res.omega)}")
-    if res.rate is not None:
-        note += (f", and from {g.rate_key or 'its rate'} = "
-                 f"{g.rate_text if g.rate is not None else '0 (steady)'}: alpha_"
-                 f"{sc.input.crank} = {abs(res.alpha):.6g} rad/s^2 {sense(res.alpha)}")
-    dims = replace(plan.dims, omega=res.omega, alpha=res.alpha)
-    return replace(plan, dims=dims, notes=(note,) + res.notes + plan.notes, given=res)
-
-
-def _gas_towards_crank(plan, sc):
-    """A gas force given without its direction pushes the piston towards the crank: along
-    the piston's path, from the piston towards the foot of the crank centre, at the scene's
-    instant (a piston stays on its side of the crank centre over the whole turn). The
-    scene's loads are completed with it (a scene is complete once compiled)."""
-    if not any(ld.toward is not None for ld in sc.loads):
-        return
-    first = plan.steps[0]
-    pivot = getattr(first, "pivot", None)  # a driving crank's (a block driver has none)
-    state = None
-    loads = []
-    for ld in sc.loads:
-        if ld.toward is None:
-            loads.append(ld)
-            continue
-        where = f"[loads] {ld.target}"
-        path = next((s for s in sc.sliders if s.point == ld.target), None)
-        if pivot is None or path is None or not hasattr(path, "through") or path.slot:
-            raise SceneError(f"the gas force at {ld.target} pushes the piston towards the "
-                             "crank only for a piston on a fixed path driven by a crank: give "
-                             "its direction", file=sc.file, key=where,
-                             line=key_line(sc, where))
-        if state is None:
-            inp = sc.input
-            state = plan.run(Context(inp.angle, 0.0, 0.0), upto=0)
-        (ox, oy), (x, y) = state.P[pivot], state.P[ld.target]
-        ux, uy = path.u
-        d = (ox - x) * ux + (oy - y) * uy
-        size = max(lk.length for lk in sc.links)
-        if abs(d) <= 1e-9 * size:
-            raise SceneError(f"the piston {ld.target} is level with the crank centre {pivot} "
-                             "along its path: towards the crank says no way: give the gas "
-                             "force's direction", file=sc.file, key=where,
-                             line=key_line(sc, where))
-        s = 1.0 if d > 0 else -1.0
-        f = ld.toward
-        loads.append(replace(ld, force=(f * s * ux + 0.0, f * s * uy + 0.0)))
-    object.__setattr__(sc, "loads", tuple(loads))
-
-
-def _place(scene) -> tuple:
-    """Set the scene's crank angle to the one that gives the position it states otherwise
-    (``[input] length_OR``, ``s_B``, ``angle_CD``): the mechanism is compiled at a trial
-    angle (``near``, else the first of a turn's grid that assembles), the turn searched for
-    the angles that give it, and the one nearest ``near`` (else the first from 0 deg) taken.
-    The scene is then compiled at it, its branches chosen there. Returns the notes."""
-    inp = scene.input
-    pl = inp.placed
-    trials = ([pl.near] if pl.near is not None else []) + \
-        [math.radians(d) for d in range(0, 360, 10)]
-    plan = None
-    for t in trials:
-        trial = replace(scene, input=replace(inp, angle=t,
-                                             placed=replace(pl, found=True)))
-        try:
-            plan = _Compiler(trial).run()
-            break
-        except PolygonMethodError:
-            continue
-    key = f"[input] {pl.key}"
-    if plan is None:
-        raise AssemblyError(f"{pl.key} = {pl.text}: the mechanism assembles at no crank angle "
-                            f"of {inp.crank}", key=key)
-    roots, seen = place_roots(plan)
-    if not roots:
-        unit = 1.0 if pl.kind == "angle" else scene.length_unit
-        what = (f"; over the turn it runs from {in_units(seen[0] + pl.value, unit)} to "
-                f"{in_units(seen[1] + pl.value, unit)} {scene.units}"
-                if seen is not None and pl.kind != "angle" else "")
-        raise AssemblyError(f"{pl.key} = {pl.text}: no angle of the crank {inp.crank} gives it"
-                            f"{what}", key=key)
-    if pl.near is not None:
-        theta = min(roots, key=lambda t: abs(math.remainder(t - pl.near, 2 * math.pi)))
-    else:
-        theta = min(roots, key=lambda t: t % (2 * math.pi))
-    shown = ", ".join(f"{math.degrees(t) % 360:.6g}" for t in sorted(
-        roots, key=lambda t: t % (2 * math.pi)))
-    note = (f"the crank {inp.crank}'s angle is found from {pl.key} = {pl.text}: "
-            f"{math.degrees(theta) % 360:.10g} deg")
-    if len(roots) > 1:
-        note += (f" (of the crank angles that give it, {shown} deg, the "
-                 + ("one nearest near" if pl.near is not None else "first from 0 deg")
-                 + "; set near = a rough angle to choose)")
-    object.__setattr__(scene, "input", replace(inp, angle=theta,
-                                               placed=replace(pl, found=True)))
-    return (note,)
 
 
 def _forget(ref, ident, by_id=_BY_ID):
