@@ -19,7 +19,7 @@ import pytest
 from polygon_method.cli import main
 from polygon_method.common.errors import SceneError
 from polygon_method.scene import parse_scene
-from polygon_method.scene import reading
+from polygon_method.scene import source
 from polygon_method.scene.reading import LineIndex, toml_lines, toml_table
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -58,7 +58,7 @@ def test_the_fast_reader_reads_what_tomllib_reads(name, text, monkeypatch):
             with pytest.raises(SceneError) as fast:
                 parse_scene(t, file="x.toml")
             with monkeypatch.context() as m:
-                m.setattr(reading, "_fast_toml", None)
+                m.setattr(source, "_fast_toml", None)
                 with pytest.raises(SceneError) as slow:
                     parse_scene(t, file="x.toml")
             assert str(fast.value) == str(slow.value)
