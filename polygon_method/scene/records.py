@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 
 from ..common.errors import SceneError
 from ..common.units import ABSURD, TINY, UNITS
+from .force_records import Flywheel, Gravity, Indicator, Mass  # noqa: F401  (re-exported)
 
 POINT_NAME = re.compile(r"[A-Z][0-9]*")
 _POINT_ONLY = re.compile(r"^[A-Z][0-9]*\Z")  # \Z: "A\n" is no point name
@@ -389,70 +390,6 @@ class Load:
     torque: float | None = None
     gas: tuple | None = None
     toward: float | None = None
-
-
-@dataclass(frozen=True)
-class Mass:
-    """A body's mass (kg) for the force analysis: a link's (``body`` its key) or a slider
-    block's, a piston's (``body`` its point, ``block`` True). The centre of mass
-    ``G = P + lam (Q - P) + mu perp(Q - P)`` on the link (``P``, ``Q`` its joint points, as a
-    carried point's); a block's is its point. ``inertia``: the moment of inertia about G
-    (kg m^2; ``m k^2`` when the radius of gyration ``k`` was given). ``how``: the words of
-    the centre and of the inertia, for the step table."""
-
-    body: str
-    mass: float
-    lam: float = 0.0
-    mu: float = 0.0
-    inertia: float = 0.0
-    block: bool = False
-    centre: str | None = None  # the point the scene named as the centre, or None
-    how: str = ""
-
-
-@dataclass(frozen=True)
-class Gravity:
-    """Gravity, when the scene states it (off otherwise): ``g`` (m/s^2) along unit
-    ``direction`` (straight down, (0, -1), unless the scene turns it: a vertical engine
-    drawn lying down)."""
-
-    g: float
-    direction: tuple
-    text: str = ""
-
-
-@dataclass(frozen=True)
-class Indicator:
-    """An indicator diagram: the gas pressure on the piston ``piston`` over a whole cycle
-    (``cycle`` rad of the crank: 2 pi for a two-stroke engine or a steam engine, 4 pi for a
-    four-stroke one), pushing it towards the crank on ``area`` (m^2, the bore's circle less
-    the rod's where given). ``against`` is "angle" (``x``: crank angles from the inner dead
-    centre in the crank's sense, rad; ``p``: the pressure at each, Pa; linear between them,
-    round the cycle) or "stroke" (``x``: the piston's place as a fraction of the stroke from
-    the inner dead centre, 0 to 1; ``p``: one row of pressures per stroke, in the cycle's
-    order from the inner dead centre). ``words``: how the scene gave it."""
-
-    piston: str
-    area: float
-    cycle: float
-    against: str
-    x: tuple
-    p: tuple
-    words: str = ""
-
-
-@dataclass(frozen=True)
-class Flywheel:
-    """The flywheel asked for: the coefficient of fluctuation of speed ``coefficient``
-    (``Cs = (w_max - w_min) / w_mean``, the whole range), the mean speed ``speed`` (rad/s;
-    None: the crank's), the rim's mean radius ``radius`` (m) or the radius of gyration
-    ``gyration`` (m) for its mass, or None; ``words``: how the scene gave Cs."""
-
-    coefficient: float
-    speed: float | None = None
-    radius: float | None = None
-    gyration: float | None = None
-    words: str = ""
 
 
 @dataclass(frozen=True)
