@@ -455,3 +455,47 @@ def test_a_condition_is_read_as_an_angle_in_one_place():
              if re.search(r"\basin\(", text)]
     assert "common/tolerances.py" in where
     assert set(where) <= {"common/tolerances.py", "scene/angles.py"}, where
+
+
+#: the functions longer than ``LONGEST`` lines still waiting to be split into functions of one
+#: job ("folder/module.py:name"); the list may only shrink
+LONG_FUNCTIONS = {
+    "cli/__init__.py:build_parser",
+    "common/units.py:parse_quantity",
+    "draw/diagrams.py:_mechanism",
+    "draw/diagrams.py:_polygon",
+    "draw/forces.py:_free_body",
+    "draw/plots.py:plot_figure",
+    "linkage/analysis.py:analyse",
+    "motion/solution.py:to_dict",
+    "page/html.py:page_html",
+    "scene/angles.py:read_angle",
+    "scene/engine.py:indicator",
+    "scene/inputs.py:input",
+    "scene/reading.py:scene",
+    "scene/rolling.py:read_rolling",
+    "scene/tables.py:answer",
+    "steps/triad/__init__.py:construction",
+    "steps/triad/loop.py:solve_array",
+    "text/centres.py:centres_text",
+    "text/forces.py:force_blocks",
+    "text/words.py:given",
+    "variants/__init__.py:generate",
+}
+LONGEST = 80
+
+
+def test_no_function_is_longer_than_80_lines_but_the_listed():
+    """Every function (def line to its last line) is at most ``LONGEST`` lines, but those in
+    ``LONG_FUNCTIONS``: a new long function, or a listed one grown back after a split, fails."""
+    import ast
+
+    long, seen = set(), 0
+    for path, text in _sources():
+        for node in ast.walk(ast.parse(text)):
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                seen += 1
+                if node.end_lineno - node.lineno + 1 > LONGEST:
+                    long.add(f"{path.relative_to(PACKAGE).as_posix()}:{node.name}")
+    assert seen > 100, "the walk found almost no function: it reads nothing"
+    assert long <= LONG_FUNCTIONS, sorted(long - LONG_FUNCTIONS)
