@@ -478,7 +478,6 @@ LONG_FUNCTIONS = {
     "steps/triad/__init__.py:construction",
     "steps/triad/loop.py:solve_array",
     "text/centres.py:centres_text",
-    "text/forces.py:force_blocks",
     "text/words.py:given",
     "variants/__init__.py:generate",
 }

@@ -177,18 +177,39 @@ def engine_lines(sol) -> list:
             "(positive: with the rotation, the engine driving)"]
 
 
-def force_blocks(sol, scale=None) -> list:
-    """The ``steps`` document's blocks for the forces (``("h", text)``, ``("p", text)``,
-    ``("list", items)``, ``("table", header, rows)``), numbered after section 5;
-    ``scale``: the force polygons' scale, when the sides are to be given in cm at it."""
+#: what each kind of force step does, as its paragraph says it
+_STEP_HEADS = {
+    "dyad": "moments of each link about its other end give the pin force between them; each "
+            "link's force balance its end's",
+    "slider": "moments of the link about its other end give the guide's normal force; the block's"
+              " force balance the pin force; the link's the force at its other end",
+    "slotted": "moments of the lever about its pivot give the normal force between it and the "
+               "block; the lever's force balance the force at its pivot; the block's the force at"
+               " its pin",
+    "crank": "the frame holds the crank at its pivot; the moments about the pivot give the "
+             "driving torque",
+    "second crank": "the frame holds the second crank at its pivot; the moments about the pivot "
+                    "give its own driving torque",
+    "cylinder": "a two-force member: its force along its line, pushing (or pulling) the bodies at"
+                " its ends",
+    "yoke": "the yoke's balance along its path gives the slot's force on the block; across it the"
+            " path's normal force, its moments the path's couple; the block's balance the crank's"
+            " force on it",
+    "peg": "the peg's balance gives each slot's normal force",
+    "triad": "each link's moments about its known end give its force across it; the plate's three"
+             " equations together (a 3x3 solve) the forces along the links; each link's balance "
+             "the rest",
+    "wheel centre": "the wheel's moments about its centre give the ground's grip; the link's "
+                    "moments about its other end the ground's normal force; the balances the pin "
+                    "forces",
+    "block": "the block's force balance: along the guide the driver's force, across it the "
+             "guide's normal force",
+}
+
+
+def _inertia_blocks(sol, f, F, M) -> list:
+    """Section 6: the inertia forces (D'Alembert), the paragraph and each body's table row."""
     sc = sol.scene
-    if not sc.has_forces:
-        return []
-    refused = sol.forces_refused
-    if refused:
-        return [("h", "6. Forces"), ("p", refused)]
-    f = sol.forces
-    F, M = _scales(sol, f)
     u = sc.length_unit
     blocks = [("h", "6. Inertia forces (D'Alembert)")]
     blocks.append(("p", "Each body's centre of mass G is a point of the body: its image g on "
@@ -208,8 +229,13 @@ def force_blocks(sol, scale=None) -> list:
                      _vec(i.force, F), _moment(i.couple, M), h))
     blocks.append(("table", ("body", "m (kg)", "I_G (kg m^2)", "G", "a_G", "m a_G, opposite "
                              "to a_G", "-I alpha", f"h ({sc.units})"), rows))
-    blocks.append(("h", "7. Forces, group by group (the construction's groups in reverse)"))
-    bounds = force_bounds(sol, f)
+    return blocks
+
+
+def _groups_intro(f, scale) -> list:
+    """Section 7's heading and paragraphs: how a group is solved, and the force scale and the
+    bodies' numbers when the polygons are drawn at ``scale``."""
+    blocks = [("h", "7. Forces, group by group (the construction's groups in reverse)")]
     blocks.append(("p", "Each group's bodies are statically determinate: the moments about "
                    "the pins whose forces are not yet known give the pin force between them, "
                    "then each body's force balance the rest. 'Known' is the resultant of the "
@@ -226,66 +252,49 @@ def force_blocks(sol, scale=None) -> list:
                        "to its link (^t, from that link's moments about the group's middle "
                        "pin); the lines of the forces along the links (^n) and of a guide's "
                        "normal force, drawn through the corners, meet where it closes."))
-    for st in f.steps:
-        items = []
-        for body, (fx, fy, m) in zip(st.bodies, st.known):
-            items.append(f"known on {body}: {_vec((fx, fy), F)}, moment about the origin "
-                         f"{_moment(m, M)}")
-        items += list(st.equations)
-        for name, val in st.found:
-            if isinstance(val, tuple):
-                items.append(f"{name} = {_vec(val, F)}")
-            elif name.startswith(("T ", "C ")):  # a torque, a guide's couple
-                items.append(f"{name} = {_moment(val, M)}")
-            elif name.startswith("F in "):  # a cylinder's force
-                items.append(f"{name} = {fmt(quiet(val, F))} N")
-            elif name.startswith(("N at the contact", "T at the contact")):
-                items.append(f"{name} = {fmt(quiet(val, F))} N ("
-                             + ("normal to the line, + pushing the wheel off it)"
-                                if name[0] == "N" else "along the line, + along perp(m))"))
-            elif name.startswith("F "):
-                items.append(f"{name} = {fmt(quiet(val, F))} N (+ along the guide's "
-                             "direction)")
-            else:
-                items.append(f"{name} = {fmt(quiet(val, F))} N (along the guide's normal, "
-                             "+ to its left)")
-        if scale is not None:
-            items += _polygon_items(st, f, scale, F)
-        if st.why:
-            items.append(f"condition {st.condition:.3g} ({st.why})")
-        e = bounds.steps.get(st.index, 0.0)
-        if e > SHOWN:
-            items.append(f"estimated error of these forces: {e:.2g} of the largest force"
-                         if e < USELESS else f"estimated error of these forces: {NO_BOUND}")
-        head = {"dyad": "moments of each link about its other end give the pin force "
-                        "between them; each link's force balance its end's",
-                "slider": "moments of the link about its other end give the guide's normal "
-                          "force; the block's force balance the pin force; the link's the "
-                          "force at its other end",
-                "slotted": "moments of the lever about its pivot give the normal force "
-                           "between it and the block; the lever's force balance the force "
-                           "at its pivot; the block's the force at its pin",
-                "crank": "the frame holds the crank at its pivot; the moments about the "
-                         "pivot give the driving torque",
-                "second crank": "the frame holds the second crank at its pivot; the "
-                                "moments about the pivot give its own driving torque",
-                "cylinder": "a two-force member: its force along its line, pushing (or "
-                            "pulling) the bodies at its ends",
-                "yoke": "the yoke's balance along its path gives the slot's force on the "
-                        "block; across it the path's normal force, its moments the path's "
-                        "couple; the block's balance the crank's force on it",
-                "peg": "the peg's balance gives each slot's normal force",
-                "triad": "each link's moments about its known end give its force across "
-                         "it; the plate's three equations together (a 3x3 solve) the "
-                         "forces along the links; each link's balance the rest",
-                "wheel centre": "the wheel's moments about its centre give the ground's "
-                                "grip; the link's moments about its other end the ground's "
-                                "normal force; the balances the pin forces",
-                "block": "the block's force balance: along the guide the driver's force, "
-                         "across it the guide's normal force"}.get(st.kind, "")
-        blocks.append(("p", f"Step {st.index + 1}, {st.title}: {head}."))
-        blocks.append(("list", items))
-    blocks.append(("h", "8. The driving torque and the frame"))
+    return blocks
+
+
+def _found_item(name, val, F, M) -> str:
+    """One force or torque a step finds, in words with its unit and sign convention."""
+    if isinstance(val, tuple):
+        return f"{name} = {_vec(val, F)}"
+    if name.startswith(("T ", "C ")):  # a torque, a guide's couple
+        return f"{name} = {_moment(val, M)}"
+    if name.startswith("F in "):  # a cylinder's force
+        return f"{name} = {fmt(quiet(val, F))} N"
+    if name.startswith(("N at the contact", "T at the contact")):
+        return (f"{name} = {fmt(quiet(val, F))} N ("
+                + ("normal to the line, + pushing the wheel off it)"
+                   if name[0] == "N" else "along the line, + along perp(m))"))
+    if name.startswith("F "):
+        return f"{name} = {fmt(quiet(val, F))} N (+ along the guide's direction)"
+    return f"{name} = {fmt(quiet(val, F))} N (along the guide's normal, + to its left)"
+
+
+def _step_blocks(st, f, scale, F, M, bounds) -> list:
+    """One group's paragraph and list: the known forces, the equations, what it finds, its
+    polygon's sides at ``scale``, its condition and its error bound."""
+    items = []
+    for body, (fx, fy, m) in zip(st.bodies, st.known):
+        items.append(f"known on {body}: {_vec((fx, fy), F)}, moment about the origin "
+                     f"{_moment(m, M)}")
+    items += list(st.equations)
+    items += [_found_item(name, val, F, M) for name, val in st.found]
+    if scale is not None:
+        items += _polygon_items(st, f, scale, F)
+    if st.why:
+        items.append(f"condition {st.condition:.3g} ({st.why})")
+    e = bounds.steps.get(st.index, 0.0)
+    if e > SHOWN:
+        items.append(f"estimated error of these forces: {e:.2g} of the largest force"
+                     if e < USELESS else f"estimated error of these forces: {NO_BOUND}")
+    head = _STEP_HEADS.get(st.kind, "")
+    return [("p", f"Step {st.index + 1}, {st.title}: {head}."), ("list", items)]
+
+
+def _driver_blocks(f, F, M) -> list:
+    """Section 8: the driving torque, the shaking force and moment, the guides' forces."""
     items = [line + " (inertia, weights and loads; its power balances theirs)"
              for line in _driver_lines(f, F, M, "")] + [
              f"shaking force (on the frame, through its pins and guides): "
@@ -293,5 +302,25 @@ def force_blocks(sol, scale=None) -> list:
              f"shaking moment about the origin (with the driver's reaction): "
              f"{_moment(f.shaking_moment, M)}"]
     items += [f"guide at {g.point}: {_vec(g.force, F)} on block {g.point}" for g in f.guides]
-    blocks.append(("list", items))
+    return [("h", "8. The driving torque and the frame"), ("list", items)]
+
+
+def force_blocks(sol, scale=None) -> list:
+    """The ``steps`` document's blocks for the forces (``("h", text)``, ``("p", text)``,
+    ``("list", items)``, ``("table", header, rows)``), numbered after section 5;
+    ``scale``: the force polygons' scale, when the sides are to be given in cm at it."""
+    sc = sol.scene
+    if not sc.has_forces:
+        return []
+    refused = sol.forces_refused
+    if refused:
+        return [("h", "6. Forces"), ("p", refused)]
+    f = sol.forces
+    F, M = _scales(sol, f)
+    blocks = _inertia_blocks(sol, f, F, M)
+    blocks += _groups_intro(f, scale)
+    bounds = force_bounds(sol, f)
+    for st in f.steps:
+        blocks += _step_blocks(st, f, scale, F, M, bounds)
+    blocks += _driver_blocks(f, F, M)
     return blocks
