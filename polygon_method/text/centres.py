@@ -58,19 +58,22 @@ def _where(sol, c: Centre) -> str:
     return f"({fmt(x / u, 6)}, {fmt(y / u, 6)}) {name}"
 
 
-def centres_text(ic: Centres) -> str:
-    """The instantaneous centres as ``centres`` prints them: the links numbered, each centre with
-    how it was found, the omegas from the centres."""
-    sol = ic.sol
-    sc = sol.scene
+def _numbering_lines(ic: Centres) -> list[str]:
+    """The title, the links numbered (the ground 1, the crank 2) and the number of centres."""
     n = ic.n
-    out = [f"{sc.title or 'Instantaneous centres'}: instantaneous centre method", ""]
+    out = [f"{ic.sol.scene.title or 'Instantaneous centres'}: instantaneous centre method", ""]
     out.append("Links (the ground is 1, the crank 2):")
     for k, name in enumerate(ic.bodies, 1):
         out.append(f"  {k}  {name}")
     out.append(f"Number of centres: N = n (n - 1) / 2 = {n} x {n - 1} / 2 = {n * (n - 1) // 2}")
-    out.append("")
-    out.append("Primary centres (from the joints):")
+    return out
+
+
+def _centre_lines(ic: Centres) -> list[str]:
+    """The primary centres from the joints, then each secondary centre by Kennedy's theorem
+    with the two lines that locate it (or the common line and the velocities on it)."""
+    sol = ic.sol
+    out = ["", "Primary centres (from the joints):"]
     for key in ic.order:
         c = ic.centres[key]
         if c.primary:
@@ -91,36 +94,42 @@ def centres_text(ic: Centres) -> str:
                 continue
             out.append(f"  {c.label:<5}{_where(sol, c):<40} on {a.label}-{b.label} and "
                        f"{p.label}-{q.label}{cond}")
-    out.append("")
-    out.append("Angular velocities (angular-velocity-ratio theorem: omega_j / omega_i = "
-               "I1i-Iij / I1j-Iij):")
-    for k in range(2, n + 1):
-        w = ic.omegas[k]
-        name = ic.bodies[k - 1]
-        c1j = ic.centre(1, k)
-        if k == 2 and c1j.point is None:  # a block driven along its guide
-            v = sol.V[sol.plan.steps[0].finds[0]]
-            out.append(f"  omega_{k} ({name}) = 0: {name} translates at "
-                       f"{math.hypot(*v):.4g} m/s along its guide (the input)")
-            continue
-        if k == 2:
-            out.append(f"  omega_{k} ({name}) = {fmt_angular(w, 'rad/s')} (the input)")
-            continue
-        i = ic.ratio_from.get(k, 2)
-        if i == 2 and ic.centre(1, 2).point is None:  # from the driving block's velocity
-            out.append(f"  omega_{k} ({name}) = {fmt_angular(sol.shown(w, 'omega'), 'rad/s')} "
-                       f"(from the velocity of {ic.bodies[i - 1]} at "
-                       f"{ic.centre(i, k).label}, over its distance from {c1j.label})")
-            continue
-        if c1j.point is None:
-            out.append(f"  omega_{k} ({name}) = 0: I1{k} is at infinity, {name} translates")
-            continue
-        out.append(f"  omega_{k} ({name}) = {fmt_angular(sol.shown(w, 'omega', _own(sol, name)), 'rad/s')} "
-                   f"(from omega_{i} with {ic.centre(1, i).label}, {ic.centre(1, k).label}, "
-                   f"{ic.centre(i, k).label})")
-    out.append("")
-    out.append("Velocities of the points (v = omega x distance from the centre with the "
-               "ground):")
+    return out
+
+
+def _omega_line(ic: Centres, k: int) -> str:
+    """Link ``k``'s angular velocity and where it comes from: the input, a translation, or the
+    angular-velocity-ratio theorem from another link's."""
+    sol = ic.sol
+    w = ic.omegas[k]
+    name = ic.bodies[k - 1]
+    c1j = ic.centre(1, k)
+    if k == 2 and c1j.point is None:  # a block driven along its guide
+        v = sol.V[sol.plan.steps[0].finds[0]]
+        return (f"  omega_{k} ({name}) = 0: {name} translates at "
+                f"{math.hypot(*v):.4g} m/s along its guide (the input)")
+    if k == 2:
+        return f"  omega_{k} ({name}) = {fmt_angular(w, 'rad/s')} (the input)"
+    i = ic.ratio_from.get(k, 2)
+    if i == 2 and ic.centre(1, 2).point is None:  # from the driving block's velocity
+        return (f"  omega_{k} ({name}) = {fmt_angular(sol.shown(w, 'omega'), 'rad/s')} "
+                f"(from the velocity of {ic.bodies[i - 1]} at "
+                f"{ic.centre(i, k).label}, over its distance from {c1j.label})")
+    if c1j.point is None:
+        return f"  omega_{k} ({name}) = 0: I1{k} is at infinity, {name} translates"
+    return (f"  omega_{k} ({name}) = "
+            f"{fmt_angular(sol.shown(w, 'omega', _own(sol, name)), 'rad/s')} "
+            f"(from omega_{i} with {ic.centre(1, i).label}, {ic.centre(1, k).label}, "
+            f"{ic.centre(i, k).label})")
+
+
+def _velocity_lines(ic: Centres) -> list[str]:
+    """Each moving point's velocity: omega times its distance from its link's centre with the
+    ground (or the link's translation)."""
+    sol = ic.sol
+    sc = sol.scene
+    out = ["", "Velocities of the points (v = omega x distance from the centre with the "
+               "ground):"]
     size = _size(sol)
     for p in sc.point_names:
         if p in sc.ground:
@@ -137,6 +146,16 @@ def centres_text(ic: Centres) -> str:
         out.append(f"  v_{p} = omega_{k} x {p}-{c.label} = "
                    f"{fmt(abs(sol.shown(ic.omegas[k], 'omega', _own(sol, ic.bodies[k - 1]))))} x "
                    f"{fmt(r / sc.length_unit, 5)} {sc.units} = {fmt(v)} m/s")
-    for w in ic.warnings:
-        out.append(f"warning: {w}")
+    return out
+
+
+def centres_text(ic: Centres) -> str:
+    """The instantaneous centres as ``centres`` prints them: the links numbered, each centre with
+    how it was found, the omegas from the centres."""
+    out = _numbering_lines(ic) + _centre_lines(ic)
+    out += ["", "Angular velocities (angular-velocity-ratio theorem: omega_j / omega_i = "
+                "I1i-Iij / I1j-Iij):"]
+    out += [_omega_line(ic, k) for k in range(2, ic.n + 1)]
+    out += _velocity_lines(ic)
+    out += [f"warning: {w}" for w in ic.warnings]
     return "\n".join(out)
