@@ -477,7 +477,6 @@ LONG_FUNCTIONS = {
     "scene/tables.py:answer",
     "steps/triad/__init__.py:construction",
     "steps/triad/loop.py:solve_array",
-    "text/words.py:given",
     "variants/__init__.py:generate",
 }
 LONGEST = 80

@@ -34,8 +34,48 @@ def _slot(sc, s) -> str:
         return f"the slot of link {s.guide}"
     return f"a fixed {guide_words(s.label, 'slot')} through {_at(sc, s.through)}"
 
-def given(sc) -> list:
-    """The scene's data as a textbook states it, one sentence a line."""
+def _slider_sentence(sc, s) -> str | None:
+    """A slider's sentence: a peg in two slots (said once, at its first slot), a yoke's slot, a
+    block on a moving link or a slider on a fixed path; None for a peg's second slot."""
+    if s.slot:  # a peg in two slots: one sentence, at its first slot
+        if s is sc.slots(s.point)[0]:
+            return (f"A peg {s.point} runs in two slots: "
+                    + " and ".join(_slot(sc, t) for t in sc.slots(s.point)) + ".")
+        return None
+    if hasattr(s, "yoke"):  # the slot of a translating yoke
+        return (f"A block at {s.point} slides in the "
+                f"{guide_words(s.label, 'slot', f'the yoke {s.yoke}')}.")
+    if hasattr(s, "guide"):  # a block on a moving link (a scene record, not a step)
+        return f"A block at {s.point} slides along link {s.guide}."
+    path = guide_words(s.label)  # "horizontal path", "path at 30 deg"
+    return f"Slider {s.point} moves on a fixed {path} through {_at(sc, s.through)}."
+
+
+def _rolling_sentence(sc, r) -> str:
+    """A wheel or gear rolling without slip (or a rack meshing with one): what rolls on what,
+    and where it is at the instant shown."""
+    if r.on == "rack":
+        return (f"The block {r.rim} is a rack meshing with {r.label}; its point is at "
+                f"{_at(sc, sc.slider(r.rim).through)} at the instant shown.")
+    if r.on == "gear":
+        what = (f"The gear {r.wheel} (centre {r.centre}, pitch radius "
+                f"{_len(sc, r.radius)}) meshes {'internally ' if r.inside else ''}with "
+                f"{r.label}")
+    else:
+        on = (f"on {r.label} through {_at(sc, r.through)}" if r.on == "line" else
+              f"{'inside' if r.inside else 'outside'} {r.label}")
+        what = (f"The wheel {r.wheel} (centre {r.centre}, radius {_len(sc, r.radius)}) "
+                f"rolls without slipping {on}")
+    if r.base_radius:
+        what += f" (radius {_len(sc, r.base_radius)})"
+    return what + (f"; {r.wheel} is at {fmt(math.degrees(r.angle) % 360)}° at the "
+                   "instant shown" if r.angle is not None else
+                   f"; {r.rim} is its point in contact at the instant shown") + "."
+
+
+def _shape_sentences(sc) -> list:
+    """The mechanism's shape: fixed points, links, points on links, sliders, rolling contacts,
+    which of two assembly positions, cylinders."""
     out = []
     if sc.ground:
         out.append("Fixed points: " + ", ".join(f"{p} at {_at(sc, xy)}"
@@ -44,41 +84,8 @@ def given(sc) -> list:
                + ".")
     for cp in sc.points:
         out.append(f"Point {cp.name}: {cp.how}.")  # "on BC, 40 mm from B"
-    for s in sc.sliders:
-        if s.slot:  # a peg in two slots: one sentence, at its first slot
-            if s is sc.slots(s.point)[0]:
-                out.append(f"A peg {s.point} runs in two slots: "
-                           + " and ".join(_slot(sc, t) for t in sc.slots(s.point)) + ".")
-            continue
-        if hasattr(s, "yoke"):  # the slot of a translating yoke
-            out.append(f"A block at {s.point} slides in the "
-                       f"{guide_words(s.label, 'slot', f'the yoke {s.yoke}')}.")
-            continue
-        if hasattr(s, "guide"):  # a block on a moving link (a scene record, not a step)
-            out.append(f"A block at {s.point} slides along link {s.guide}.")
-        else:
-            path = guide_words(s.label)  # "horizontal path", "path at 30 deg"
-            out.append(f"Slider {s.point} moves on a fixed {path} through "
-                       f"{_at(sc, s.through)}.")
-    for r in getattr(sc, "rolling", ()):  # a wheel or gear rolling without slip
-        if r.on == "rack":
-            out.append(f"The block {r.rim} is a rack meshing with {r.label}; its point is at "
-                       f"{_at(sc, sc.slider(r.rim).through)} at the instant shown.")
-            continue
-        if r.on == "gear":
-            what = (f"The gear {r.wheel} (centre {r.centre}, pitch radius "
-                    f"{_len(sc, r.radius)}) meshes {'internally ' if r.inside else ''}with "
-                    f"{r.label}")
-        else:
-            on = (f"on {r.label} through {_at(sc, r.through)}" if r.on == "line" else
-                  f"{'inside' if r.inside else 'outside'} {r.label}")
-            what = (f"The wheel {r.wheel} (centre {r.centre}, radius {_len(sc, r.radius)}) "
-                    f"rolls without slipping {on}")
-        if r.base_radius:
-            what += f" (radius {_len(sc, r.base_radius)})"
-        out.append(what + (f"; {r.wheel} is at {fmt(math.degrees(r.angle) % 360)}° at the "
-                           "instant shown" if r.angle is not None else
-                           f"; {r.rim} is its point in contact at the instant shown") + ".")
+    out += [t for t in (_slider_sentence(sc, s) for s in sc.sliders) if t is not None]
+    out += [_rolling_sentence(sc, r) for r in getattr(sc, "rolling", ())]
     for p, hint in sc.assembly.items():
         where = (_SIDE.get(hint, hint) if isinstance(hint, str)
                  else f"near {_at(sc, hint)}")
@@ -88,29 +95,37 @@ def given(sc) -> list:
                   if c.stroke else "")
         out.append(f"A hydraulic cylinder {c.key}: its barrel pivoted at {c.barrel}, its rod "
                    f"pinned at {c.rod}{stroke}.")
-    driver = compile_plan(sc).steps[0]  # what drives: asked of the plan's first step
-    if not driver.periodic:  # a block driven along its guide: its place and motion
-        out.append(_block_words(sc, driver.finds[0]))
-    else:
-        _crank_words(sc, out)
+    return out
+
+
+def _load_sentence(ld) -> str | None:
+    """A load's sentence: gas pressure on a piston, a force at a point or a torque on a link
+    (None for a load of none of these)."""
+    if ld.gas is not None and ld.force is None:  # towards the crank, not yet compiled
+        return (f"The gas pressure on the piston {ld.target} is {ld.gas[2]}, pushing "
+                "it towards the crank.")
+    if ld.gas is not None:
+        fx, fy = ld.force
+        return (f"The gas pressure on the piston {ld.target} is {ld.gas[2]}, pushing "
+                f"it at {fmt(math.degrees(math.atan2(fy, fx)) % 360)}°.")
+    if ld.force is not None:
+        fx, fy = ld.force
+        return (f"A force of {fmt(math.hypot(fx, fy))} N acts at {ld.target} at "
+                f"{fmt(math.degrees(math.atan2(fy, fx)) % 360)}°.")
+    if ld.torque is not None:
+        return (f"A torque of {fmt(abs(ld.torque))} N m {sense(ld.torque)} acts on "
+                f"link {ld.target}.")
+    return None
+
+
+def _force_sentences(sc) -> list:
+    """The forces' data: pins' sizes, loads, masses, gravity, the indicator diagram and the
+    flywheel."""
+    out = []
     for pin in sc.pins:
         size = pin.radius * (2 if pin.given == "diameter" else 1)
         out.append(f"Pin at {pin.point}: {pin.given} {_len(sc, size)}.")
-    for ld in sc.loads:
-        if ld.gas is not None and ld.force is None:  # towards the crank, not yet compiled
-            out.append(f"The gas pressure on the piston {ld.target} is {ld.gas[2]}, pushing "
-                       "it towards the crank.")
-        elif ld.gas is not None:
-            fx, fy = ld.force
-            out.append(f"The gas pressure on the piston {ld.target} is {ld.gas[2]}, pushing "
-                       f"it at {fmt(math.degrees(math.atan2(fy, fx)) % 360)}°.")
-        elif ld.force is not None:
-            fx, fy = ld.force
-            out.append(f"A force of {fmt(math.hypot(fx, fy))} N acts at {ld.target} at "
-                       f"{fmt(math.degrees(math.atan2(fy, fx)) % 360)}°.")
-        elif ld.torque is not None:
-            out.append(f"A torque of {fmt(abs(ld.torque))} N m {sense(ld.torque)} acts on "
-                       f"link {ld.target}.")
+    out += [t for t in (_load_sentence(ld) for ld in sc.loads) if t is not None]
     for m in sc.masses:
         what = f"The block {m.body}" if m.block else f"Link {m.body}"
         out.append(f"{what} has a mass of {_given(m.mass)} kg"
@@ -123,6 +138,17 @@ def given(sc) -> list:
     if sc.flywheel is not None:
         out.append(f"A flywheel is to keep the speed steady: {sc.flywheel.words}.")
     return out
+
+
+def given(sc) -> list:
+    """The scene's data as a textbook states it, one sentence a line."""
+    out = _shape_sentences(sc)
+    driver = compile_plan(sc).steps[0]  # what drives: asked of the plan's first step
+    if not driver.periodic:  # a block driven along its guide: its place and motion
+        out.append(_block_words(sc, driver.finds[0]))
+    else:
+        _crank_words(sc, out)
+    return out + _force_sentences(sc)
 
 
 def _crank_words(sc, out):
