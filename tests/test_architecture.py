@@ -467,7 +467,6 @@ LONG_FUNCTIONS = {
     "draw/forces.py:_free_body",
     "draw/plots.py:plot_figure",
     "linkage/analysis.py:analyse",
-    "motion/solution.py:to_dict",
     "page/html.py:page_html",
     "scene/angles.py:read_angle",
     "scene/engine.py:indicator",

@@ -208,14 +208,10 @@ class Solution(Motion):
         return 0.0 if abs(value) <= lim else value
 
     # ----- output
-    def to_dict(self) -> dict:
-        """The JSON contract of ``solve --json`` (SI, ccw positive)."""
+    def _pairs_dict(self) -> dict:
+        """The JSON's sliders, cylinders and pins (each key only where the scene has them)."""
         sc = self.scene
-        d = {"title": sc.title,
-             "points": {p: {"position": list(self.P[p]), "velocity": list(self.V[p]),
-                            "acceleration": list(self.A[p])} for p in sc.point_names},
-             "links": {lk.key: {"omega": self.W[lk.key], "alpha": self.Al[lk.key]}
-                       for lk in sc.links}}
+        d = {}
         if sc.sliders:
             d["sliders"] = {s.key: {"sliding_velocity": self.S[s.key][0],
                                     "sliding_acceleration": self.S[s.key][1],
@@ -239,39 +235,59 @@ class Solution(Motion):
                 if len(r.bodies) > 2:
                     entry["pairs"] = dict(r.pairs)
                 d["pins"][name] = entry
-        inp, driver = sc.input, self.plan.steps[0]
-        if sc.loads and sc.input.second is None:  # two inputs: no one torque
-            # a block driver: the force along its guide (N, signed along it)
-            d[driver.effort_key] = self.input_torque
-        own = driver.input_record(sc)  # a block driver's place and rates; a crank's below
-        if own is not None:
-            d["input"] = own
-        else:
-            d["input"] = {"crank": inp.crank, "angle": inp.angle, "omega": inp.omega,
-                          "alpha": inp.alpha}
-        refused = self.forces_refused
-        if sc.has_forces:
-            from ..forces import forces_dict  # lazy, as in `forces`
-            d["forces"] = None if refused else forces_dict(self.forces)
+        return d
+
+    def _input_dict(self) -> dict:
+        """The JSON's input: the block driver's record or the crank's angle and rates, a second
+        input's, and the stated velocity it was found from (with its condition)."""
+        sc = self.scene
+        inp = sc.input
+        own = self.plan.steps[0].input_record(sc)  # a block driver's place and rates
+        d = own if own is not None else {"crank": inp.crank, "angle": inp.angle,
+                                         "omega": inp.omega, "alpha": inp.alpha}
         if inp.second is not None:
             two = inp.second
-            d["input"]["second"] = {"crank": two.crank, "angle": two.angle,
-                                    "omega": two.omega, "alpha": two.alpha}
+            d["second"] = {"crank": two.crank, "angle": two.angle,
+                           "omega": two.omega, "alpha": two.alpha}
         res = self.plan.given
         if res is not None:
             g = inp.given
-            d["input"]["given"] = {"key": g.key, "value": g.value, "rate_key": g.rate_key,
-                                   "rate": g.rate, "per_omega": res.per_omega,
-                                   "per_omega2": res.per_omega2,
-                                   "condition": res.condition}
+            d["given"] = {"key": g.key, "value": g.value, "rate_key": g.rate_key,
+                          "rate": g.rate, "per_omega": res.per_omega,
+                          "per_omega2": res.per_omega2,
+                          "condition": res.condition}
+        return d
+
+    def _rolling_dict(self) -> dict:
+        """The JSON's rolling contacts: the wheel's point at each (empty without rolling)."""
         contacts = {}
         for st in self.plan.steps:
             c = st.contact_motion(self)
             if c is not None:
                 contacts[st.bodies()[0]] = c
-        if contacts:  # the wheel's point at each rolling contact
-            d["rolling"] = {k: {"contact": list(c[0]), "velocity": list(c[1]),
-                                "acceleration": list(c[2])} for k, c in contacts.items()}
+        if not contacts:
+            return {}
+        return {"rolling": {k: {"contact": list(c[0]), "velocity": list(c[1]),
+                                "acceleration": list(c[2])} for k, c in contacts.items()}}
+
+    def to_dict(self) -> dict:
+        """The JSON contract of ``solve --json`` (SI, ccw positive)."""
+        sc = self.scene
+        d = {"title": sc.title,
+             "points": {p: {"position": list(self.P[p]), "velocity": list(self.V[p]),
+                            "acceleration": list(self.A[p])} for p in sc.point_names},
+             "links": {lk.key: {"omega": self.W[lk.key], "alpha": self.Al[lk.key]}
+                       for lk in sc.links}}
+        d.update(self._pairs_dict())
+        if sc.loads and sc.input.second is None:  # two inputs: no one torque
+            # a block driver: the force along its guide (N, signed along it)
+            d[self.plan.steps[0].effort_key] = self.input_torque
+        d["input"] = self._input_dict()
+        refused = self.forces_refused
+        if sc.has_forces:
+            from ..forces import forces_dict  # lazy, as in `forces`
+            d["forces"] = None if refused else forces_dict(self.forces)
+        d.update(self._rolling_dict())
         warnings = list(self.warnings)
         if refused:
             warnings.append(refused)
