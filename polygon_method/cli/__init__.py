@@ -31,29 +31,32 @@ class _Parser(argparse.ArgumentParser):
         self.exit(2, f"{self.prog}: error: {message}\n")
 
 
-def build_parser() -> argparse.ArgumentParser:
-    """The command line's parser: one sub-command per job (solve, steps, draw, page, ...)."""
-    p = _Parser(prog="polygon-method",
-                description="Planar mechanisms by the relative-velocity (polygon) method.")
-    from .. import __version__
-    p.add_argument("--version", action="version", version=f"polygon-method {__version__}")
-    sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
-    sub.required = True
-
+def _add_solve(sub) -> None:
+    """The sub-command solve's arguments: the scene, --json."""
     s = sub.add_parser("solve", help="solve a scene at its stated instant")
     s.add_argument("scene")
     s.add_argument("--json", action="store_true", help="machine-readable output (SI)")
     s.set_defaults(func=_cmd_solve)
 
+
+def _add_plan(sub) -> None:
+    """The sub-command plan's argument: the scene."""
     s = sub.add_parser("plan", help="print the construction plan")
     s.add_argument("scene")
     s.set_defaults(func=_cmd_plan)
 
+
+def _add_steps(sub) -> None:
+    """The sub-command steps' arguments: the scene, --format."""
     s = sub.add_parser("steps", help="the hand solution, step by step")
     s.add_argument("scene")
     s.add_argument("--format", choices=("text", "markdown"), default="text")
     s.set_defaults(func=_cmd_steps)
 
+
+def _add_check(sub) -> None:
+    """The sub-command check's arguments: the scene, the answer files, the gradebook, the
+    variants and the tolerances."""
     s = sub.add_parser("check", help="check answers against the solution")
     s.add_argument("scene")
     s.add_argument("answers", nargs="*",
@@ -71,6 +74,10 @@ def build_parser() -> argparse.ArgumentParser:
                         "for the scene's answers)")
     s.set_defaults(func=_cmd_check)
 
+
+def _add_variants(sub) -> None:
+    """The sub-command variants' arguments: the scene, how many, the seed, the output folder,
+    --pdf."""
     s = sub.add_parser("variants", help="a variant of the scene per student, the answer key "
                        "and the problem sheet")
     s.add_argument("scene")
@@ -82,6 +89,10 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--pdf", action="store_true", help="the problem sheet as PDF too")
     s.set_defaults(func=_cmd_variants)
 
+
+def _add_draw(sub) -> None:
+    """The sub-command draw's arguments: the scene, the output file, which diagram, the scales,
+    the paper, the centres' labels, --animate and its frames."""
     s = sub.add_parser("draw", help="true-to-scale SVG/PNG/PDF diagrams")
     s.add_argument("scene")
     s.add_argument("-o", "--output", required=True, help="FILE.svg, .png or .pdf")
@@ -106,6 +117,10 @@ def build_parser() -> argparse.ArgumentParser:
                    help=f"frames of --animate over the cycle (default {DEFAULT_FRAMES})")
     s.set_defaults(func=_cmd_draw)
 
+
+def _add_page(sub) -> None:
+    """The sub-command page's arguments: the scene, the output file, the answers to check, the
+    frames."""
     s = sub.add_parser("page", help="one self-contained HTML page: the diagrams moving with "
                        "the crank, values, plots, the steps and the check")
     s.add_argument("scene")
@@ -115,6 +130,10 @@ def build_parser() -> argparse.ArgumentParser:
                    help=f"frames over the cycle (default {DEFAULT_FRAMES})")
     s.set_defaults(func=_cmd_page)
 
+
+def _add_sweep(sub) -> None:
+    """The sub-command sweep's arguments: the scene, the crank angles, the CSV, the plot and
+    its points and links, --summary."""
     s = sub.add_parser("sweep", help="the whole crank cycle")
     s.add_argument("scene")
     s.add_argument("--steps", type=int, help="N crank angles over a turn (default 360)")
@@ -132,16 +151,35 @@ def build_parser() -> argparse.ArgumentParser:
                    help="maxima and minima with their crank angles")
     s.set_defaults(func=_cmd_sweep)
 
+
+def _add_linkage(sub) -> None:
+    """The sub-command linkage's argument: the scene."""
     s = sub.add_parser("linkage", help="Grashof, toggle positions, transmission angle")
     s.add_argument("scene")
     s.set_defaults(func=_cmd_linkage)
 
+
+def _add_centres(sub) -> None:
+    """The sub-command centres' arguments: the scene, the centres' labels."""
     s = sub.add_parser("centres", help="instantaneous centres (Kennedy's theorem) and the "
                        "velocities they give")
     s.add_argument("scene")
     s.add_argument("--centre-labels", choices=("I13", "13"), default="I13",
                    help="label the centres I13 (default) or 13, as the course writes them")
     s.set_defaults(func=_cmd_centres)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The command line's parser: one sub-command per job (solve, steps, draw, page, ...)."""
+    p = _Parser(prog="polygon-method",
+                description="Planar mechanisms by the relative-velocity (polygon) method.")
+    from .. import __version__
+    p.add_argument("--version", action="version", version=f"polygon-method {__version__}")
+    sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+    sub.required = True
+    for add in (_add_solve, _add_plan, _add_steps, _add_check, _add_variants,
+                _add_draw, _add_page, _add_sweep, _add_linkage, _add_centres):
+        add(sub)
     return p
 
 
