@@ -460,7 +460,6 @@ def test_a_condition_is_read_as_an_angle_in_one_place():
 #: the functions longer than ``LONGEST`` lines still waiting to be split into functions of one
 #: job ("folder/module.py:name"); the list may only shrink
 LONG_FUNCTIONS = {
-    "common/units.py:parse_quantity",
     "draw/diagrams.py:_mechanism",
     "draw/diagrams.py:_polygon",
     "draw/forces.py:_free_body",

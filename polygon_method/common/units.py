@@ -199,50 +199,80 @@ def parse_quantity(raw, kind: str, *, where: str = "", default_unit: str | None 
     if isinstance(raw, bool) or not isinstance(raw, (int, float, str)):
         raise SceneError(f"expected a number or a string such as \"50 mm\", got {_kind_of(raw)}",
                          key=where)
-    sense = None
     if kind == "length" and isinstance(raw, str) and _FEET_INCHES.match(raw):
-        sign, feet, inches = _FEET_INCHES.match(raw).groups()
-        si = float(feet) * UNITS["length"]["ft"] + float(inches) * UNITS["length"]["in"]
-        if float(inches) >= 12:
-            raise SceneError(f"'{_clip(raw)}': {inches} in is a foot or more; write the feet and "
-                             "the inches below 12, or the whole in one unit (\"30 in\")",
-                             key=where)
-        return Quantity(-si if sign == "-" else si)
+        return _feet_and_inches(raw, where)
     if isinstance(raw, str):
-        text = raw.strip()
-        words = text.split()
-        if words and words[-1].lower() in _SENSES:
-            sense = _SENSES[words[-1].lower()]
-            text = " ".join(words[:-1])
-            if len(words) > 2 and words[-2].lower() in _SENSES:  # "10 rad/s cw ccw"
-                raise SceneError(f"'{_clip(raw)}' gives two senses: give one, cw or ccw",
-                                 key=where)
-        m = _QUANTITY.match(text)
-        if not m:
-            raise SceneError(f"cannot read '{_clip(raw)}' as a quantity (a number, then a unit)",
-                             key=where)
-        value = float(m.group(1))
-        unit = m.group(2).strip()
-        if not unit:
-            if default_unit is None:
-                raise SceneError(f"'{_clip(raw)}' has no unit; write it as e.g. "
-                                 f"\"{m.group(1)} {format_unit_list(kind).split(', ')[0]}\"",
-                                 key=where)
-            unit = default_unit
-        factor = _unit_factor(unit, kind, where)
+        value, factor, sense = _read_text(raw, kind, where, default_unit)
     else:
-        try:
-            value = float(raw)
-        except OverflowError:  # an integer of hundreds of digits
-            raise SceneError(f"the integer {str(raw)[:8]}... ({len(str(abs(raw)))} digits) is "
-                             "absurd for a mechanism; check the value and its unit",
-                             key=where) from None
-        if default_unit is None:
-            raise SceneError(f"{raw} has no unit; write it as a string such as "
-                             f"\"{raw} {format_unit_list(kind).split(', ')[0]}\"", key=where)
-        factor = _unit_factor(default_unit, kind, where)
+        (value, factor), sense = _read_number(raw, kind, where, default_unit), None
     if not math.isfinite(value):
         raise SceneError(f"'{_clip(raw)}' is not a finite number", key=where)
+    _check_sense(raw, value, sense, where, need_sense, allow_sense)
+    si = value * factor
+    _check_size(raw, si, kind, where, refuse_absurd)
+    if sense == "cw":
+        si = -si
+    return Quantity(si, sense)
+
+
+def _feet_and_inches(raw: str, where: str) -> Quantity:
+    """A length in feet and inches (``5 ft 3 in``, ``-1' 6"``) in metres; inches of a foot or
+    more are an error."""
+    sign, feet, inches = _FEET_INCHES.match(raw).groups()
+    si = float(feet) * UNITS["length"]["ft"] + float(inches) * UNITS["length"]["in"]
+    if float(inches) >= 12:
+        raise SceneError(f"'{_clip(raw)}': {inches} in is a foot or more; write the feet and "
+                         "the inches below 12, or the whole in one unit (\"30 in\")",
+                         key=where)
+    return Quantity(-si if sign == "-" else si)
+
+
+def _read_text(raw: str, kind: str, where: str, default_unit: str | None) -> tuple:
+    """A ``"value unit [cw|ccw]"`` string's value, its unit's factor to SI and its sense (None
+    without one); two senses, no number or no unit (without ``default_unit``) are errors."""
+    sense = None
+    text = raw.strip()
+    words = text.split()
+    if words and words[-1].lower() in _SENSES:
+        sense = _SENSES[words[-1].lower()]
+        text = " ".join(words[:-1])
+        if len(words) > 2 and words[-2].lower() in _SENSES:  # "10 rad/s cw ccw"
+            raise SceneError(f"'{_clip(raw)}' gives two senses: give one, cw or ccw",
+                             key=where)
+    m = _QUANTITY.match(text)
+    if not m:
+        raise SceneError(f"cannot read '{_clip(raw)}' as a quantity (a number, then a unit)",
+                         key=where)
+    value = float(m.group(1))
+    unit = m.group(2).strip()
+    if not unit:
+        if default_unit is None:
+            raise SceneError(f"'{_clip(raw)}' has no unit; write it as e.g. "
+                             f"\"{m.group(1)} {format_unit_list(kind).split(', ')[0]}\"",
+                             key=where)
+        unit = default_unit
+    return value, _unit_factor(unit, kind, where), sense
+
+
+def _read_number(raw, kind: str, where: str, default_unit: str | None) -> tuple:
+    """A bare number's value and ``default_unit``'s factor to SI; without a default unit, or an
+    integer too large for a float, an error."""
+    try:
+        value = float(raw)
+    except OverflowError:  # an integer of hundreds of digits
+        raise SceneError(f"the integer {str(raw)[:8]}... ({len(str(abs(raw)))} digits) is "
+                         "absurd for a mechanism; check the value and its unit",
+                         key=where) from None
+    if default_unit is None:
+        raise SceneError(f"{raw} has no unit; write it as a string such as "
+                         f"\"{raw} {format_unit_list(kind).split(', ')[0]}\"", key=where)
+    return value, _unit_factor(default_unit, kind, where)
+
+
+def _check_sense(raw, value: float, sense, where: str, need_sense: bool,
+                 allow_sense: bool) -> None:
+    """Refuse a sense where none belongs, a negative value with a sense (it reads two ways) and
+    a missing sense where one is needed (a zero needs none)."""
     if sense is not None and not (need_sense or allow_sense):
         raise SceneError(f"'{_clip(raw)}': a sense (cw/ccw) does not belong here", key=where)
     if sense is not None and value < 0:  # "-10 rad/s cw": cw, or ccw (minus cw)?
@@ -253,7 +283,11 @@ def parse_quantity(raw, kind: str, *, where: str = "", default_unit: str | None 
         raw_size = _clip(_magnitude(raw) if value < 0 else str(raw).strip())
         raise SceneError(f"'{_clip(raw)}' has no sense: add cw or ccw (e.g. \"{raw_size} ccw\")",
                          key=where)
-    si = value * factor
+
+
+def _check_size(raw, si: float, kind: str, where: str, refuse_absurd: bool) -> None:
+    """Refuse a value absurdly large (when ``refuse_absurd``) or absurdly small for a
+    mechanism, in SI, for the kinds :data:`ABSURD` and :data:`TINY` bound."""
     if refuse_absurd and kind in ABSURD and not abs(si) <= ABSURD[kind]:
         raise SceneError(f"'{_clip(raw)}' is absurd for a mechanism (more than {ABSURD[kind]:g} "
                          f"{_SI_NAME[kind]}); check the value and its unit", key=where)
@@ -261,9 +295,6 @@ def parse_quantity(raw, kind: str, *, where: str = "", default_unit: str | None 
         raise SceneError(f"'{_clip(raw)}' is absurdly small for a mechanism (less than "
                          f"{TINY[kind]:g} {_SI_NAME[kind]}); check the value and its unit",
                          key=where)
-    if sense == "cw":
-        si = -si
-    return Quantity(si, sense)
 
 
 def implausible(value: float, kind: str) -> str | None:
