@@ -153,6 +153,115 @@ def _dir_deg(x, y) -> float:
 _MAX_STATIONARY = 12  # more than this: the output dwells (a degenerate linkage)
 
 
+def _four_bar_character(scene: Scene, cyc, fb) -> tuple:
+    """A four-bar's kind, members, Grashof record and classification lines."""
+    kind = "four-bar"
+    members = (f"ground {fb.o2}{fb.o4 if len(fb.o2) == 1 and len(fb.o4) == 1 else '-' + fb.o4}"
+               f" = {_mm(fb.r1, scene)}, crank {fb.crank} = {_mm(fb.r2, scene)} (input), "
+               f"coupler {fb.coupler} = {_mm(fb.r3, scene)}, output {fb.output} = "
+               f"{_mm(fb.r4, scene)}")
+    fr0 = cyc.at(scene.input.angle, vel=False)
+    crossed = _crossed(fr0, fb)
+    g = grashof(fb.r2, fb.r3, fb.r4, fb.r1, crossed=crossed)
+    classification = _grashof_lines(g, fb, scene)
+    return kind, members, g, classification
+
+
+def _slider_crank_character(scene: Scene, sk) -> tuple:
+    """A slider crank's kind, members and whether its crank turns fully (r + e <= l)."""
+    kind = "slider crank" + (" (in-line)" if sk.inline else " (offset)")
+    members = (f"crank {sk.crank} = {_mm(sk.r, scene)}, connecting rod {sk.rod} = "
+               f"{_mm(sk.l, scene)}, slider {sk.b}"
+               + ("" if sk.inline else f", offset {_mm(abs(sk.e), scene)}"))
+    full = sk.l >= sk.r + abs(sk.e) * (1 - ROUNDING)
+    classification = [
+        (f"r + e = {_mm(sk.r + abs(sk.e), scene)} {'<=' if full else '>'} l = "
+         f"{_mm(sk.l, scene)}: " + ("the crank turns fully" if full else
+                                    "the crank cannot turn fully (it rocks)"))]
+    return kind, members, None, classification
+
+
+def _slotted_character(scene: Scene, slot) -> tuple:
+    """A slotted lever's kind (Whitworth where the crank is longer than the distance between
+    the pivots, else crank and slotted lever), members and whether the lever turns fully."""
+    cr, sl = slot
+    (ox, oy), (kx, ky) = scene.ground[cr.pivot], scene.ground[sl.known]
+    d = math.hypot(kx - ox, ky - oy)
+    whit = cr.length > d
+    kind = "Whitworth quick return" if whit else "crank and slotted lever"
+    members = (f"crank {cr.link} = {_mm(cr.length, scene)}, lever {sl.guide} pivoted at "
+               f"{sl.known}, {cr.pivot}{sl.known if len(sl.known) == 1 else '-' + sl.known}"
+               f" = {_mm(d, scene)}")
+    classification = [
+        f"crank {_mm(cr.length, scene)} {'>' if whit else '<'} distance between the "
+        f"pivots {_mm(d, scene)}: the lever "
+        + ("turns fully (Whitworth)" if whit else "oscillates (quick return)")]
+    return kind, members, None, classification
+
+
+def _character(scene: Scene, plan, cyc, fb, sk, slot) -> tuple:
+    """The mechanism's kind, its members in words, its Grashof record (a four-bar's, else
+    None) and the lines that classify it."""
+    if fb is not None:
+        return _four_bar_character(scene, cyc, fb)
+    if sk is not None:
+        return _slider_crank_character(scene, sk)
+    if slot is not None:
+        return _slotted_character(scene, slot)
+    members = (f"{len(plan.steps)} construction steps; Grashof's classes apply to "
+               "four-bars only")
+    classification = ["not a four-bar, slider crank or slotted lever: the crank's range, "
+                      "the transmission angle of every dyad and the output's motion "
+                      "follow from the cycle on the scene's branch"]
+    return "mechanism", members, None, classification
+
+
+def _input_toggles(scene: Scene, plan, cyc, turns: bool) -> list:
+    """The toggles driving from the input: none where the crank turns fully, else its limit
+    positions (with the output's place at each)."""
+    dom = cyc.dom
+    crank = scene.input.crank
+    if turns:
+        return [f"driving from the input ({crank}): none, the crank turns fully "
+                "(no dyad comes into line)"]
+    input_toggles = [f"driving from the input ({crank}): its limit positions"]
+    out = _output_of(scene, plan)
+    for lp in dom.limits:
+        fr = cyc.at(lp.theta, vel=False)
+        extra = ""
+        if out is not None:
+            extra = f"; {out.label} at {_fmt_out(out, out.value(fr)[0], scene)}"
+        input_toggles.append(f"  crank at {cyc.deg(lp.theta):9.4f} deg: {lp.why}{extra}")
+    return input_toggles
+
+
+def _change_points(cyc, g) -> list:
+    """The change points on the scene's branch, or that a special Grashof linkage meets none."""
+    dom = cyc.dom
+    cps = [f"change point at crank angle {cyc.deg(cp.theta):.4f} deg: {cp.why}"
+           for cp in dom.change_points]
+    if g is not None and g.special and not dom.change_points:
+        cps.append("S + L = P + Q, but the scene's branch meets no change point in its range")
+    return cps
+
+
+def _formulas(scene: Scene, cyc, sk, notes: list) -> tuple:
+    """An in-line slider crank's approximate formulas compared with the exact values (a note
+    instead where they do not apply or the scene's instant is singular)."""
+    if sk is not None and sk.inline:
+        try:
+            solve(scene)  # the exact values exist at the scene's instant
+        except SingularStepError as exc:
+            notes.append("the approximate formulas are not compared at the scene's instant: "
+                         f"{exc.step}: {exc.message}")
+        else:
+            return tuple(_engine_lines(cyc, sk, scene))
+    elif sk is not None:
+        notes.append("the approximate formulas v = r w (sin t + sin 2t / 2n) etc. hold for an "
+                     "in-line slider crank only")
+    return ()
+
+
 def analyse(scene: Scene) -> Linkage:
     """The linkage's character: see the module docstring for what is covered."""
     plan = compile_plan(scene)
@@ -167,48 +276,7 @@ def analyse(scene: Scene) -> Linkage:
     sk = slider_crank_of(scene)
     slot = slotted_of(scene)
     notes = []
-    g = None
-    classification = []
-    if fb is not None:
-        kind = "four-bar"
-        members = (f"ground {fb.o2}{fb.o4 if len(fb.o2) == 1 and len(fb.o4) == 1 else '-' + fb.o4}"
-                   f" = {_mm(fb.r1, scene)}, crank {fb.crank} = {_mm(fb.r2, scene)} (input), "
-                   f"coupler {fb.coupler} = {_mm(fb.r3, scene)}, output {fb.output} = "
-                   f"{_mm(fb.r4, scene)}")
-        fr0 = cyc.at(scene.input.angle, vel=False)
-        crossed = _crossed(fr0, fb)
-        g = grashof(fb.r2, fb.r3, fb.r4, fb.r1, crossed=crossed)
-        classification = _grashof_lines(g, fb, scene)
-    elif sk is not None:
-        kind = "slider crank" + (" (in-line)" if sk.inline else " (offset)")
-        members = (f"crank {sk.crank} = {_mm(sk.r, scene)}, connecting rod {sk.rod} = "
-                   f"{_mm(sk.l, scene)}, slider {sk.b}"
-                   + ("" if sk.inline else f", offset {_mm(abs(sk.e), scene)}"))
-        full = sk.l >= sk.r + abs(sk.e) * (1 - ROUNDING)
-        classification = [
-            (f"r + e = {_mm(sk.r + abs(sk.e), scene)} {'<=' if full else '>'} l = "
-             f"{_mm(sk.l, scene)}: " + ("the crank turns fully" if full else
-                                        "the crank cannot turn fully (it rocks)"))]
-    elif slot is not None:
-        cr, sl = slot
-        (ox, oy), (kx, ky) = scene.ground[cr.pivot], scene.ground[sl.known]
-        d = math.hypot(kx - ox, ky - oy)
-        whit = cr.length > d
-        kind = "Whitworth quick return" if whit else "crank and slotted lever"
-        members = (f"crank {cr.link} = {_mm(cr.length, scene)}, lever {sl.guide} pivoted at "
-                   f"{sl.known}, {cr.pivot}{sl.known if len(sl.known) == 1 else '-' + sl.known}"
-                   f" = {_mm(d, scene)}")
-        classification = [
-            f"crank {_mm(cr.length, scene)} {'>' if whit else '<'} distance between the "
-            f"pivots {_mm(d, scene)}: the lever "
-            + ("turns fully (Whitworth)" if whit else "oscillates (quick return)")]
-    else:
-        kind = "mechanism"
-        members = (f"{len(plan.steps)} construction steps; Grashof's classes apply to "
-                   "four-bars only")
-        classification = ["not a four-bar, slider crank or slotted lever: the crank's range, "
-                          "the transmission angle of every dyad and the output's motion "
-                          "follow from the cycle on the scene's branch"]
+    kind, members, g, classification = _character(scene, plan, cyc, fb, sk, slot)
     turns = dom.full_turn
     rng = None
     if not turns:
@@ -216,26 +284,8 @@ def analyse(scene: Scene) -> Linkage:
         classification.append(f"on the scene's branch the crank {scene.input.crank} reaches "
                               f"{rng[0]:.4f} to {rng[1]:.4f} deg"
                               + (" (through 0)" if rng[1] < rng[0] else ""))
-    # toggles driving from the input: the limits of the crank
-    input_toggles = []
-    crank = scene.input.crank
-    if turns:
-        input_toggles.append(f"driving from the input ({crank}): none, the crank turns fully "
-                             "(no dyad comes into line)")
-    else:
-        input_toggles.append(f"driving from the input ({crank}): its limit positions")
-        out = _output_of(scene, plan)
-        for lp in dom.limits:
-            fr = cyc.at(lp.theta, vel=False)
-            extra = ""
-            if out is not None:
-                extra = f"; {out.label} at {_fmt_out(out, out.value(fr)[0], scene)}"
-            input_toggles.append(f"  crank at {cyc.deg(lp.theta):9.4f} deg: {lp.why}{extra}")
-    cps = []
-    for cp in dom.change_points:
-        cps.append(f"change point at crank angle {cyc.deg(cp.theta):.4f} deg: {cp.why}")
-    if g is not None and g.special and not dom.change_points:
-        cps.append("S + L = P + Q, but the scene's branch meets no change point in its range")
+    input_toggles = _input_toggles(scene, plan, cyc, turns)  # the limits of the crank
+    cps = _change_points(cyc, g)
     # the output
     out = _output_of(scene, plan)
     stationary, out_lines, omin, omax, ratio, tlines = (), (), None, None, None, ()
@@ -250,18 +300,7 @@ def analyse(scene: Scene) -> Linkage:
     still = standing_steps(scene, plan)
     trans = tuple(_transmission(cyc, st, scene) for st in plan.steps
                   if st.transmission() is not None and st.index not in still)
-    formulas = ()
-    if sk is not None and sk.inline:
-        try:
-            solve(scene)  # the exact values exist at the scene's instant
-        except SingularStepError as exc:
-            notes.append("the approximate formulas are not compared at the scene's instant: "
-                         f"{exc.step}: {exc.message}")
-        else:
-            formulas = tuple(_engine_lines(cyc, sk, scene))
-    elif sk is not None:
-        notes.append("the approximate formulas v = r w (sin t + sin 2t / 2n) etc. hold for an "
-                     "in-line slider crank only")
+    formulas = _formulas(scene, cyc, sk, notes)
     notes.extend(dom.notes)
     return Linkage(scene, kind, members, g, tuple(classification), turns, rng,
                    tuple(input_toggles), tuple(cps), out.label if out else None,
