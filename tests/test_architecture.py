@@ -473,7 +473,6 @@ LONG_FUNCTIONS = {
     "scene/tables.py:answer",
     "steps/triad/__init__.py:construction",
     "steps/triad/loop.py:solve_array",
-    "variants/__init__.py:generate",
 }
 LONGEST = 80
 

@@ -364,9 +364,9 @@ def _id_width(count):
     return max(2, len(str(count)))
 
 
-def generate(scene: Scene, count: int, seed: int, *, batch: int | None = None) -> VariantSet:
-    """Choose ``count`` variants of ``scene`` (see the module docstring), reproducibly
-    from ``seed``. Fewer are returned where fewer exist (:meth:`VariantSet.shortfall`)."""
+def _asked_for(scene: Scene, count: int, seed: int):
+    """The scene's ``[variants]`` table, once the scene, the count and the seed are checked (a
+    Scene with such a table; whole numbers in range)."""
     if not isinstance(scene, Scene):
         raise SceneError("a Scene is needed (load_scene(path) or parse_scene(text)), not "
                          f"{type(scene).__name__}")
@@ -383,6 +383,54 @@ def generate(scene: Scene, count: int, seed: int, *, batch: int | None = None) -
                              + (f" to {high}" if high else "")
                              + (" (each variant file records it, and TOML's integers are "
                                 "64-bit)" if name == "--seed" else ""), key=name)
+    return var
+
+
+def _built(picks, raw, var, scene: Scene, plan, base_problem, rejected: Counter) -> list:
+    """The picked candidates as scenes ``(pick, table, scene)``: those that do not read as a
+    scene, or ask the base problem itself, are counted in ``rejected`` and left out."""
+    built = []
+    for t in picks:
+        r = copy.deepcopy(raw)
+        for v in var.varied:  # every setting first, so that none undoes a value
+            for path, value in v.setup:
+                _put(r, path, copy.deepcopy(value))
+        for v, i in zip(var.varied, t):
+            _put(r, v.path, v.values[i])
+        try:
+            cand = scene_from_table(r, scene.file)
+        except PolygonMethodError:
+            rejected["does not read as a scene (a triangle that cannot close, ...)"] += 1
+            continue
+        try:
+            same = _same(_problem(plan, cand), base_problem)
+        except PolygonMethodError:
+            same = False
+        if same:  # every value as the base problem's: no variant
+            rejected["the base problem itself"] += 1
+            continue
+        built.append((t, r, cand))
+    return built
+
+
+def _of_the_class(built: list, shape, cls, rejected: Counter) -> list:
+    """The built candidates of the base problem's linkage class (all of them for a mechanism
+    without one); the others are counted in ``rejected``."""
+    if shape[0] == "mechanism":
+        return built
+    kept = []
+    for b in built:
+        if linkage_class(b[2], shape) == cls:
+            kept.append(b)
+        else:
+            rejected["another linkage class"] += 1
+    return kept
+
+
+def generate(scene: Scene, count: int, seed: int, *, batch: int | None = None) -> VariantSet:
+    """Choose ``count`` variants of ``scene`` (see the module docstring), reproducibly
+    from ``seed``. Fewer are returned where fewer exist (:meth:`VariantSet.shortfall`)."""
+    var = _asked_for(scene, count, seed)
     solve(scene)  # the base problem itself must solve (else its error, as solve gives it)
     plan = compile_plan(scene)
     branches = _branches(plan)
@@ -410,38 +458,8 @@ def generate(scene: Scene, count: int, seed: int, *, batch: int | None = None) -
         if not picks:
             break
         tried += len(picks)
-        built = []
-        for t in picks:
-            r = copy.deepcopy(raw)
-            for v in var.varied:  # every setting first, so that none undoes a value
-                for path, value in v.setup:
-                    _put(r, path, copy.deepcopy(value))
-            for v, i in zip(var.varied, t):
-                _put(r, v.path, v.values[i])
-            try:
-                cand = scene_from_table(r, scene.file)
-            except PolygonMethodError:
-                rejected["does not read as a scene (a triangle that cannot close, ...)"] += 1
-                continue
-            try:
-                same = _same(_problem(plan, cand), base_problem)
-            except PolygonMethodError:
-                same = False
-            if same:  # every value as the base problem's: no variant
-                rejected["the base problem itself"] += 1
-                continue
-            built.append((t, r, cand))
-        if not built:
-            continue
-        kept = []
-        if shape[0] != "mechanism":
-            for b in built:
-                if linkage_class(b[2], shape) == cls:
-                    kept.append(b)
-                else:
-                    rejected["another linkage class"] += 1
-        else:
-            kept = built
+        built = _built(picks, raw, var, scene, plan, base_problem, rejected)
+        kept = _of_the_class(built, shape, cls, rejected) if built else []
         if not kept:
             continue
         ok, least = screen(plan, [b[2] for b in kept], var.min_condition)
