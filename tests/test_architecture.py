@@ -464,7 +464,6 @@ LONG_FUNCTIONS = {
     "draw/diagrams.py:_polygon",
     "draw/forces.py:_free_body",
     "draw/plots.py:plot_figure",
-    "page/html.py:page_html",
     "scene/angles.py:read_angle",
     "scene/engine.py:indicator",
     "scene/inputs.py:input",

@@ -117,20 +117,21 @@ def legend_html(kinds=_KINDS) -> str:
             + "".join(f"<li>{i}</li>" for i in marks) + "</ul></div>")
 
 
-def page_html(fr: Frames, *, verdicts=None, answers_title: str = "") -> str:
-    """The page for the frames ``fr``: an HTML document as text."""
-    sc = need_frames(fr).sol.scene
-    source = sc.source
-    d = page_data(fr)
-    title = d["title"]
-    name, symbol, unit = fr.parameter
+def _cycle_words(fr: Frames) -> str:
+    """What the frames go over: a full turn, a block's travel or the range between the crank's
+    limit positions (and what the polygons do near its ends)."""
     block = not fr.sol.plan.steps[0].periodic  # a block driven along its guide
-    cycle = "a full turn of the crank" if fr.full_turn else \
+    return "a full turn of the crank" if fr.full_turn else \
         f"the block's travel ({fr.limits_text}): near an end where the mechanism stops " \
         "assembling the polygons grow without bound and run off their panels" if block else \
         f"the range between the limit positions ({fr.limits_text}): the crank cannot " \
         "turn fully, and near its limit positions the polygons grow without bound (their " \
         "scales grow with them)"
+
+
+def _figures_html(d: dict) -> str:
+    """Each diagram's figure: its caption with its scale (the configuration's with the inertia
+    forces' scale too) and the empty SVG the script draws into."""
     figs = []
     for s in d["scales"]:
         diagram = s["diagram"]
@@ -141,6 +142,18 @@ def page_html(fr: Frames, *, verdicts=None, answers_title: str = "") -> str:
                     f'<svg class="diagram" id="{diagram}" '
                     f'role="img" '
                     f'aria-label="{diagram} diagram"></svg></figure>')
+    return "".join(figs)
+
+
+def page_html(fr: Frames, *, verdicts=None, answers_title: str = "") -> str:
+    """The page for the frames ``fr``: an HTML document as text."""
+    sc = need_frames(fr).sol.scene
+    source = sc.source
+    d = page_data(fr)
+    title = d["title"]
+    name, symbol, unit = fr.parameter
+    block = not fr.sol.plan.steps[0].periodic  # a block driven along its guide
+    cycle = _cycle_words(fr)
     notes = "".join(f"<li>{escape(n)}</li>" for n in fr.res.notes)
     check = ""
     if verdicts:
@@ -176,7 +189,7 @@ the scales of a drawing on paper). The stated instant is {symbol} =
 value, or tap it.</p>
 {f'<ul>{notes}</ul>' if notes else ''}
 <div class="diagrams">
-{''.join(figs)}
+{_figures_html(d)}
 </div>
 {legend_html(_KINDS if d["under"] else _KINDS[:4])}
 <div class="columns">
