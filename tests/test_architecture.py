@@ -463,7 +463,6 @@ LONG_FUNCTIONS = {
     "draw/diagrams.py:_mechanism",
     "draw/diagrams.py:_polygon",
     "draw/forces.py:_free_body",
-    "draw/plots.py:plot_figure",
     "scene/angles.py:read_angle",
     "scene/engine.py:indicator",
     "scene/inputs.py:input",

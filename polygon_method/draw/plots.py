@@ -50,13 +50,9 @@ def _mark(ax, x, kind):
 
 
 
-def plot_figure(res: SweepResult, *, points=None, links=None):
-    """Velocities and accelerations of ``points`` and omega, alpha of ``links`` against the
-    crank angle, with the scene's own instant marked (matplotlib, imported here only)."""
-    import matplotlib
-    matplotlib.use("Agg")
-    from matplotlib.figure import Figure
-
+def _plotted(res: SweepResult, points, links) -> tuple:
+    """The points and the links' keys to plot: those asked (each once; an unknown name is an
+    error), else every moving point and every link not joining two ground points."""
     sc = res.scene
     ground = set(sc.ground)
     pts = tuple(dict.fromkeys(points or (p for p in sc.point_names if p not in ground)))
@@ -70,7 +66,16 @@ def plot_figure(res: SweepResult, *, points=None, links=None):
             raise SceneError(f"--links: no link {name} in [links]", file=sc.file)
         if sc.link(name).key not in keys:  # BC and CB are one link
             keys.append(sc.link(name).key)
+    return pts, keys
+
+
+def _axis(res: SweepResult) -> tuple:
+    """The horizontal axis: the sorted abscissae ``x`` (a gap where angles are left out), the
+    ``order`` and ``gaps`` that put any series on it, the scene's instant ``t0`` on it, and
+    ``show``, an angle (rad) as its abscissa."""
+    sc = res.scene
     dom = res.domain
+    shift = 0.0
     if not dom.periodic:  # a driving block's places, in the scene's units
         deg = np.asarray(res.theta, dtype=float) / dom.unit
         t0 = sc.input.angle / dom.unit
@@ -88,22 +93,36 @@ def plot_figure(res: SweepResult, *, points=None, links=None):
         t0 = t0 + 360.0 * k if t0 + 360.0 * k <= x.max() + 1e-9 else t0 + 360.0 * (k - 1)
     gaps = np.nonzero(np.diff(x) > 1.5 * np.median(np.diff(x)))[0] + 1 if len(x) > 2 else []
     x = np.insert(x, gaps, np.nan)  # no line across angles left out
-    here = _scene_values(sc)
+    show = degrees_fn(dom) if dom.full_turn or not dom.periodic else (
+        lambda t: math.degrees(float(dom.map(np.array([t]))[0][0])) + shift)
+    return x, order, gaps, t0, show
+
+
+def _figure(sc, Figure) -> tuple:
+    """The figure and its 2 x 2 panels; an engine's with its turning-moment diagram over the
+    cycle below them, the width of both."""
     cycle = _engine_cycle(sc)
     if cycle is None:
         fig = Figure(figsize=(10, 7.5), layout="constrained")
-        axes = fig.subplots(2, 2, sharex=True)
-    else:  # an engine: its turning-moment diagram over the cycle below, the width of both
-        fig = Figure(figsize=(10, 10.5), layout="constrained")
-        gs = fig.add_gridspec(3, 2, height_ratios=(1, 1, 1.1))
-        first = fig.add_subplot(gs[0, 0])
-        axes = [[first, fig.add_subplot(gs[0, 1], sharex=first)],
-                [fig.add_subplot(gs[1, 0], sharex=first),
-                 fig.add_subplot(gs[1, 1], sharex=first)]]
-        for ax in axes[0]:
-            ax.tick_params(labelbottom=False)
-        _turning_moment_panel(fig.add_subplot(gs[2, :]), sc, *cycle)
-    panels = [
+        return fig, fig.subplots(2, 2, sharex=True)
+    fig = Figure(figsize=(10, 10.5), layout="constrained")
+    gs = fig.add_gridspec(3, 2, height_ratios=(1, 1, 1.1))
+    first = fig.add_subplot(gs[0, 0])
+    axes = [[first, fig.add_subplot(gs[0, 1], sharex=first)],
+            [fig.add_subplot(gs[1, 0], sharex=first),
+             fig.add_subplot(gs[1, 1], sharex=first)]]
+    for ax in axes[0]:
+        ax.tick_params(labelbottom=False)
+    _turning_moment_panel(fig.add_subplot(gs[2, :]), sc, *cycle)
+    return fig, axes
+
+
+def _panels(res: SweepResult, axes, pts, keys) -> list:
+    """The four panels ``(axes, label, series)``: speeds (and sliding velocities),
+    accelerations, omegas and alphas, each series ``(name, values, value at the instant)``."""
+    sc = res.scene
+    here = _scene_values(sc)
+    return [
         (axes[0][0], "speed v (m/s)", [(typeset("v", p), res.speed(p), here.get(f"v_{p}"))
                                        for p in pts]
          + [(typeset("v", "s," + s.key), res.S[s.key][0], here.get(f"vs_{s.key}"))
@@ -115,48 +134,64 @@ def plot_figure(res: SweepResult, *, points=None, links=None):
         (axes[1][1], "angular acceleration α (rad/s², ccw +)",
          [(typeset("alpha", k), res.Al[k], here.get(f"alpha_{k}")) for k in keys]),
     ]
-    clipped = False
+
+
+def _unit_scales(res: SweepResult) -> list:
+    """The size of each panel's quantities the input sets (a speed, an acceleration, an omega,
+    an alpha): below a tiny part of it a curve is a zero."""
+    sc = res.scene
+    if not res.domain.periodic:  # a driving block: the sizes its input sets
+        return list(res.plan.steps[0].input_scales(sc))
     w, k = abs(sc.input.omega), sc.input.omega ** 2 + abs(sc.input.alpha)
     size = max([lk.length for lk in sc.links] + [1e-3])
-    scales = [w * size, k * size, w, k]
-    if not dom.periodic:  # a driving block: the sizes its input sets
-        v0, a0, w0, al0 = res.plan.steps[0].input_scales(sc)
-        scales = [v0, a0, w0, al0]
-    for (ax, label, series), unit_scale in zip(panels, scales):
-        big = []
-        for i, (name, y, y0) in enumerate(series):
-            yy = np.insert(np.asarray(y, dtype=float)[order], gaps, np.nan)
-            line, = ax.plot(x, yy, lw=1.2, label=name,
-                            color=SERIES_COLORS[i % len(SERIES_COLORS)])
-            if y0 is not None:
-                ax.plot([t0], [y0], "o", color=line.get_color(), ms=5)
-            if len(y):
-                big.append((np.nanpercentile(np.abs(yy), 90), np.nanmax(np.abs(yy))))
-        ax.ticklabel_format(axis="y", useOffset=False)
-        if big and res.limits:  # values grow without bound near a limit position
-            typical, top = max(b[0] for b in big), max(b[1] for b in big)
-            if typical > 0 and top > 8 * typical:
-                lo = min(0.0, *(np.nanmin(np.asarray(y, dtype=float)) for _, y, _ in series))
-                ax.set_ylim(max(lo, -3 * typical), 3 * typical)
-                clipped = True
-        elif big:  # a constant (up to rounding) is drawn as one, not as magnified noise
-            ys = np.concatenate([np.asarray(y, dtype=float) for _, y, _ in series])
-            lo, hi = float(np.nanmin(ys)), float(np.nanmax(ys))
-            size = max(abs(lo), abs(hi))
-            if hi - lo <= 1e-6 * size or size < 1e-8 * unit_scale:
-                pad = 0.1 * size if size >= 1e-8 * unit_scale else 1.0
-                ax.set_ylim(0.5 * (lo + hi) - pad, 0.5 * (lo + hi) + pad)
-        _mark(ax, t0, "instant")
-        show = degrees_fn(dom) if dom.full_turn or not dom.periodic else (
-            lambda t: math.degrees(float(dom.map(np.array([t]))[0][0])) + shift)
-        for lp in res.limits:
-            _mark(ax, show(lp.theta), "limit")
-        for cp in res.change_points:
-            _mark(ax, show(cp.theta), "change")
-        ax.set_ylabel(label)
-        ax.grid(True, lw=0.3)
-        if series:
-            ax.legend(fontsize=8, ncol=2)
+    return [w * size, k * size, w, k]
+
+
+def _draw_panel(res: SweepResult, ax, label, series, unit_scale, axis) -> bool:
+    """One panel's curves, the instant's values marked, its vertical range (cut near a limit
+    position, a constant drawn as one), the instant, limits and change points marked; True
+    where the range was cut."""
+    x, order, gaps, t0, show = axis
+    clipped = False
+    big = []
+    for i, (name, y, y0) in enumerate(series):
+        yy = np.insert(np.asarray(y, dtype=float)[order], gaps, np.nan)
+        line, = ax.plot(x, yy, lw=1.2, label=name,
+                        color=SERIES_COLORS[i % len(SERIES_COLORS)])
+        if y0 is not None:
+            ax.plot([t0], [y0], "o", color=line.get_color(), ms=5)
+        if len(y):
+            big.append((np.nanpercentile(np.abs(yy), 90), np.nanmax(np.abs(yy))))
+    ax.ticklabel_format(axis="y", useOffset=False)
+    if big and res.limits:  # values grow without bound near a limit position
+        typical, top = max(b[0] for b in big), max(b[1] for b in big)
+        if typical > 0 and top > 8 * typical:
+            lo = min(0.0, *(np.nanmin(np.asarray(y, dtype=float)) for _, y, _ in series))
+            ax.set_ylim(max(lo, -3 * typical), 3 * typical)
+            clipped = True
+    elif big:  # a constant (up to rounding) is drawn as one, not as magnified noise
+        ys = np.concatenate([np.asarray(y, dtype=float) for _, y, _ in series])
+        lo, hi = float(np.nanmin(ys)), float(np.nanmax(ys))
+        size = max(abs(lo), abs(hi))
+        if hi - lo <= 1e-6 * size or size < 1e-8 * unit_scale:
+            pad = 0.1 * size if size >= 1e-8 * unit_scale else 1.0
+            ax.set_ylim(0.5 * (lo + hi) - pad, 0.5 * (lo + hi) + pad)
+    _mark(ax, t0, "instant")
+    for lp in res.limits:
+        _mark(ax, show(lp.theta), "limit")
+    for cp in res.change_points:
+        _mark(ax, show(cp.theta), "change")
+    ax.set_ylabel(label)
+    ax.grid(True, lw=0.3)
+    if series:
+        ax.legend(fontsize=8, ncol=2)
+    return clipped
+
+
+def _titles(res: SweepResult, fig, axes, clipped: bool) -> None:
+    """The lower panels' axis label (the crank angle, or a driving block's place) and the
+    figure's title: the scene's, what the dashes mark, and whether a range was cut."""
+    sc = res.scene
     driver = res.plan.steps[0]  # a block driver: its place is the axis
     block = None if driver.periodic else driver.finds[0]
     for ax in axes[1]:
@@ -174,6 +209,23 @@ def plot_figure(res: SweepResult, *, points=None, links=None):
         lines.append("(the vertical scale is cut: values grow without bound near the limit "
                      "positions)")
     fig.suptitle("\n".join(lines), fontsize=10)
+
+
+def plot_figure(res: SweepResult, *, points=None, links=None):
+    """Velocities and accelerations of ``points`` and omega, alpha of ``links`` against the
+    crank angle, with the scene's own instant marked (matplotlib, imported here only)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+
+    pts, keys = _plotted(res, points, links)
+    axis = _axis(res)
+    fig, axes = _figure(res.scene, Figure)
+    clipped = False
+    for (ax, label, series), unit_scale in zip(_panels(res, axes, pts, keys),
+                                               _unit_scales(res)):
+        clipped = _draw_panel(res, ax, label, series, unit_scale, axis) or clipped
+    _titles(res, fig, axes, clipped)
     return fig
 
 
