@@ -97,9 +97,9 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
     # from its rod, or from what a step keeps clear: a rack's pinion)
     clear = {sh[1]: (sh[2][0] / s, sh[2][1] / s) for st in sol.plan.steps
              for sh in st.shapes(sol.P) if sh[0] == "guide clear of"}
-    for sl in sc.sliders:
-        if isinstance(sl, FixedPath) and not sl.wheel:  # (a driving wheel's centre path:
-            fixed_guide(sk, sc, sl, P, s, clear.get(sl.point))  # its ground line is drawn)
+    for sl in sc.blocks:  # (a driving wheel's centre path: its ground line is drawn)
+        if isinstance(sl, FixedPath):
+            fixed_guide(sk, sc, sl, P, s, clear.get(sl.point))
     # links as bars, a link with carried points as a plate
     for lk in sc.links:
         if lk.p in sc.ground and lk.q in sc.ground:

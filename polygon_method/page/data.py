@@ -192,9 +192,7 @@ def page_data(fr: Frames) -> dict:
     # (it turns as one, at its omega; its length changes)
     links += [Link(c.key, c.barrel, c.rod, res_length(res, c)) for c in sc.cylinders]
     sliders = []
-    for s in sc.sliders:
-        if getattr(s, "wheel", ""):  # a driving wheel's centre path: no block, no guide
-            continue
+    for s in sc.blocks:  # (a driving wheel's centre path: no block, no guide)
         if hasattr(s, "guide"):
             sliders.append({"point": s.point, "key": s.key, "guide": [s.first, s.second],
                             "link": s.guide})

@@ -542,6 +542,12 @@ class Scene:
         slots (``P_OA``; the point alone gives its first slot)."""
         return next((s for s in self.sliders if s.point == name or s.key == name), None)
 
+    @property
+    def blocks(self) -> tuple:
+        """The sliders that are blocks: every slider record but a driving wheel's centre
+        path (``[input] wheel``: no block is there, the wheel's centre moves along it)."""
+        return tuple(s for s in self.sliders if not getattr(s, "wheel", ""))
+
     def slots(self, point: str) -> tuple:
         """Every slider record at ``point``: one for a block, two for a peg in two slots."""
         return tuple(s for s in self.sliders if s.point == point)

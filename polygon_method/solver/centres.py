@@ -205,9 +205,7 @@ def _primary(sol, names):
                 key = (joined[a], joined[b])
                 if key not in found:
                     found[key] = Centre(*key, tuple(sol.P[p]), None, f"the pin at {p}")
-    for s in sc.sliders:
-        if getattr(s, "wheel", ""):  # a driving wheel's centre path: no block (its
-            continue                 # contact with the ground is the rolling step's)
+    for s in sc.blocks:  # (not a driving wheel's centre path: the rolling step's contact)
         blk = num(f"block {s.key}")  # a peg in two slots: a block in each
         if isinstance(s, FixedPath):
             d = _unit(-s.u[1], s.u[0])

@@ -181,9 +181,7 @@ def _angular_velocity_items(sol):
 
 def _sliding_items(sol):
     out = []
-    for s in sol.scene.sliders:
-        if getattr(s, "wheel", ""):  # a driving wheel's centre: its velocity said above
-            continue
+    for s in sol.scene.blocks:  # (a driving wheel's centre: its velocity said above)
         vs = sol.S[s.key][0]
         if vs == 0:  # (noise is 0 here: the solution is tidied)
             guide = (f"the {guide_words(s.label)}" if isinstance(s, FixedPath) else
@@ -373,9 +371,7 @@ def acceleration_section(doc, sol, ascale):
     doc.p("Angular accelerations (alpha = tangential component / length):")
     doc.items(items)
     sl = []
-    for s in sc.sliders:
-        if getattr(s, "wheel", ""):  # a driving wheel's centre: its acceleration said above
-            continue
+    for s in sc.blocks:  # (a driving wheel's centre: its acceleration said above)
         a_s = sol.S[s.key][1]
         cor = math.hypot(*sol.coriolis(s.key))
         t = f"as_{s.key} = {fmt(a_s)} m/s^2 (signed along the guide)"

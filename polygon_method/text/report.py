@@ -100,8 +100,8 @@ def _slider_lines(sol: Solution) -> list[str]:
     """The table of sliders: sliding velocity and acceleration and the Coriolis component
     (nothing without sliders)."""
     sc = sol.scene
-    blocks = [s for s in sc.sliders if not getattr(s, "wheel", "")]  # (not a driving wheel's
-    if not blocks:                                                     # centre: a point above)
+    blocks = sc.blocks  # (not a driving wheel's centre: a point above)
+    if not blocks:
         return []
     lines = ["", f"{'slider':<8} {'guide':<16} {'sliding v (m/s)':<18} "
                  f"{'sliding a (m/s^2)':<20} {'Coriolis (m/s^2)':<24}"]

@@ -36,10 +36,8 @@ def _slot(sc, s) -> str:
 
 def _slider_sentence(sc, s) -> str | None:
     """A slider's sentence: a peg in two slots (said once, at its first slot), a yoke's slot, a
-    block on a moving link or a slider on a fixed path; None for a peg's second slot and
-    for a driving wheel's centre (said with the wheel)."""
-    if getattr(s, "wheel", ""):  # a driving wheel's centre: said with the wheel
-        return None
+    block on a moving link or a slider on a fixed path; None for a peg's second slot (a
+    driving wheel's centre is no block: said with the wheel)."""
     if s.slot:  # a peg in two slots: one sentence, at its first slot
         if s is sc.slots(s.point)[0]:
             return (f"A peg {s.point} runs in two slots: "
@@ -87,7 +85,7 @@ def _shape_sentences(sc) -> list:
                + ".")
     for cp in sc.points:
         out.append(f"Point {cp.name}: {cp.how}.")  # "on BC, 40 mm from B"
-    out += [t for t in (_slider_sentence(sc, s) for s in sc.sliders) if t is not None]
+    out += [t for t in (_slider_sentence(sc, s) for s in sc.blocks) if t is not None]
     out += [_rolling_sentence(sc, r) for r in getattr(sc, "rolling", ())]
     for p, hint in sc.assembly.items():
         where = (_SIDE.get(hint, hint) if isinstance(hint, str)
