@@ -548,6 +548,12 @@ class Scene:
         path (``[input] wheel``: no block is there, the wheel's centre moves along it)."""
         return tuple(s for s in self.sliders if not getattr(s, "wheel", ""))
 
+    @property
+    def cycle(self) -> float:
+        """The crank's angle (rad) over which the motion and its forces repeat: two turns
+        for a four-stroke engine's indicator diagram (4 pi), else one turn (2 pi)."""
+        return self.indicator.cycle if self.indicator is not None else 2 * math.pi
+
     def slots(self, point: str) -> tuple:
         """Every slider record at ``point``: one for a block, two for a peg in two slots."""
         return tuple(s for s in self.sliders if s.point == point)
