@@ -86,7 +86,7 @@ def test_the_driver_protocol_is_in_the_contract():
     from polygon_method.steps.base import OPTIONAL, Step
     for name in ("periodic", "parameter_words", "input_scales", "input_words",
                  "effort_words", "parameter", "parameter_scale", "effort_key",
-                 "input_record", "drive_caption"):
+                 "input_record", "drive_caption", "driver_name"):
         assert name in OPTIONAL and hasattr(Step, name), name
 
 
