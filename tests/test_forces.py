@@ -1319,3 +1319,30 @@ def test_the_steps_write_each_new_group_in_its_units():
     six = with_forces(load_scene(ROOT / "worked_problems" / "class3_six_bar.toml"), 1)
     assert "the plate's three equations together (a 3x3 solve)" in \
         " ".join(steps_text(solve(six)).split())
+
+
+def test_the_guides_moment_relation_is_written_once():
+    """The slider's link, the slotted lever and the link to a rolling wheel each balance a
+    body pinned at one end and pushed across a guide at the other: one relation
+    (``forces.bodies.guided``), checked here by the body's own balance, its forces and its
+    moments about the origin, for random loads."""
+    import inspect
+    from polygon_method.forces import bodies, slider, slotted, wheel
+    for mod in (slider, slotted, wheel):
+        src = inspect.getsource(mod.solve)
+        assert "guided(" in src and "/ den" not in src, mod.__name__
+    rng = random.Random(7)
+    for _ in range(200):
+        q, x = (rng.uniform(-2, 2), rng.uniform(-2, 2)), (rng.uniform(-2, 2), rng.uniform(-2, 2))
+        a = rng.uniform(0, 2 * math.pi)
+        n = (math.cos(a), math.sin(a))
+        known = (rng.uniform(-9, 9), rng.uniform(-9, 9), rng.uniform(-9, 9))
+        r = (rng.uniform(-9, 9), rng.uniform(-9, 9))
+        N, push, fq, den = bodies.guided(*q, known, *x, n, r)
+        assert push == pytest.approx((N * n[0] + r[0], N * n[1] + r[1]), abs=1e-12)
+        fx = known[0] + push[0] + fq[0]
+        fy = known[1] + push[1] + fq[1]
+        m = known[2] + (x[0] * push[1] - x[1] * push[0]) + (q[0] * fq[1] - q[1] * fq[0])
+        size = (abs(N) + 20) * (1 + math.hypot(*x) + math.hypot(*q))
+        assert abs(fx) + abs(fy) + abs(m) <= 1e-12 * size
+    assert bodies.guided(0.0, 0.0, (0.0, 0.0, 1.0), 1.0, 0.0, (1.0, 0.0), (0.0, 0.0))[0] is None

@@ -6,7 +6,8 @@ block's push ``-N n`` at X (the guide's body is solved later, in the reverse ord
 Unknowns: ``P``, the force on the link at X by the block, and ``N``, the guide's normal
 force on the block along ``n``. The block's loads pass through X (its mass is at its pin),
 so its force balance is ``-P + N n + R = 0`` (R: the known forces on the block) and the
-guide adds no couple. The link's moments about B, where its other pin force has no arm::
+guide adds no couple. The link's moments about B, where its other pin force has no arm
+(:func:`.bodies.guided`, the relation the slotted link and the wheel share)::
 
     cross(X - B, N n + R) + M_B = 0   =>   N = -(M_B + cross(X - B, R)) / cross(X - B, n)
 
@@ -21,7 +22,7 @@ Then ``P = N n + R`` and the link's force balance gives the force on it at B, ``
 from __future__ import annotations
 
 from ..steps.rounding import vhypot
-from .bodies import Singular, any_zero, cross, outer_pin, unit
+from .bodies import Singular, cross, guided, outer_pin, unit
 from ..common.numbers import fmt
 from .records import FRAME, ForceStep, GuideForce, PinForce, Side, block
 
@@ -32,20 +33,12 @@ def solve(bx, by, known_link, xx, xy, known_block, u):
 
     ``known_link``: ``(Fx, Fy, M about the origin)`` on the link; ``known_block``: the same
     on the block (its M is not used: its forces pass through X)."""
-    fx, fy, m = known_link
-    rx, ry = known_block[0], known_block[1]
-    ux, uy = u
-    nx, ny = -uy, ux
-    mb = m - cross(bx, by, fx, fy)
-    ex, ey = xx - bx, xy - by
-    den = ex * ux + ey * uy
-    size = (ex * ex + ey * ey) ** 0.5  # the link's length: never 0
-    cond = abs(den) / size
-    if any_zero(den):
+    ux, uy = u  # the link feels the block's push N n + R at X (n = perp(u))
+    n, p, fb, den = guided(bx, by, known_link, xx, xy, (-uy, ux), known_block[:2])
+    if n is None:
         return None, None, None, 0.0
-    n = -(mb + cross(ex, ey, rx, ry)) / den
-    px, py = n * nx + rx, n * ny + ry
-    return n, (px, py), (-(fx + px), -(fy + py)), cond
+    ex, ey = xx - bx, xy - by
+    return n, p, fb, abs(den) / (ex * ex + ey * ey) ** 0.5  # the link's length: never 0
 
 
 def bodies(st) -> tuple:
