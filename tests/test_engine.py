@@ -15,53 +15,16 @@ import math
 import mpmath
 import pytest
 
+from engines import ENGINE, _precision, closed_forms, engine  # noqa: F401  (a fixture)
 from polygon_method.common.errors import PolygonMethodError, SceneError
 from polygon_method.scene import parse_scene
 from polygon_method.motion.solution import solve
 
-ENGINE = """
-title = "engine"
-units = "mm"
-[ground]
-O = [0, 0]
-[links]
-OA = {r}
-AB = {l}
-[sliders]
-B = {{ path = "horizontal", through = "O" }}
-[assembly]
-B = "{side}"
-[input]
-crank = "OA"
-angle = {theta}
-speed = "{rpm} rpm {sense}"
-[masses]
-B = {{ mass = "{m} kg" }}
-"""
-
-
-def engine(theta, *, r=150, l=600, rpm=1800, m=2.5, side="right", sense="ccw", extra=""):
-    return parse_scene(ENGINE.format(r=r, l=l, theta=theta, rpm=rpm, m=m, side=side,
-                                     sense=sense) + extra)
-
-
 def closed(theta_idc, theta, r, l, rpm, m, F_gas, sg=1):
-    """(turning moment in the sense of rotation, thrust in the rod, side thrust) of an
-    in-line engine at ``theta`` (deg from +x), its inner dead centre at ``theta_idc``,
-    turning in the sense ``sg``; ``F_gas`` (N, towards the crank)."""
-    mpmath.mp.dps = 50
-    R, L = mpmath.mpf(r) / 1000, mpmath.mpf(l) / 1000
-    w = 2 * mpmath.pi * rpm / 60
-    t = sg * mpmath.radians(mpmath.mpf(theta) - theta_idc)  # from i.d.c., with the rotation
-
-    def x(tt):  # the piston's distance from O
-        return R * mpmath.cos(tt) + mpmath.sqrt(L ** 2 - (R * mpmath.sin(tt)) ** 2)
-    a_toward = -w ** 2 * mpmath.diff(x, t, 2)
-    F_P = mpmath.mpf(F_gas) - m * a_toward
-    n = L / R
-    phi = mpmath.asin(mpmath.sin(t) / n)
-    T = F_P * R * (mpmath.sin(t) + mpmath.sin(2 * t) / (2 * mpmath.sqrt(n ** 2 - mpmath.sin(t) ** 2)))
-    return float(T), float(abs(F_P / mpmath.cos(phi))), float(abs(F_P * mpmath.tan(phi)))
+    """(turning moment in the sense of rotation, thrust in the rod, side thrust) of
+    :func:`engines.closed_forms`, as floats."""
+    cf = closed_forms(theta_idc, theta, r, l, rpm, m, F_gas, sg)
+    return float(cf["T"]), float(abs(cf["F_Q"])), float(abs(cf["F_N"]))
 
 
 def close(got, want, rel=1e-9):

@@ -30,6 +30,7 @@ import mpmath
 import numpy as np
 import pytest
 
+from engines import _precision, closed_forms, engine  # noqa: F401  (a fixture)
 from polygon_method.solver.compiler import compile_plan
 from polygon_method.common.errors import PolygonMethodError, SceneError
 from polygon_method.forces import FRAME, owners
@@ -39,14 +40,6 @@ from polygon_method.motion.solution import solve
 ROOT = Path(__file__).resolve().parent.parent
 FILES = sorted(glob.glob(str(ROOT / "worked_problems" / "*.toml"))) + \
     sorted(glob.glob(str(ROOT / "tests" / "textbook" / "*.toml")))
-
-
-@pytest.fixture(autouse=True)
-def _precision():
-    """mpmath's working precision as it was before each test (others rely on theirs)."""
-    dps = mpmath.mp.dps
-    yield
-    mpmath.mp.dps = dps
 
 
 def _covered(scene):
@@ -301,50 +294,15 @@ def test_shaking_force_and_moment_from_the_whole(path):
     assert abs(f.shaking_moment - m) <= 1e-9 * (mscale + abs(f.input_torque))
 
 
-ENGINE = """
-title = "horizontal engine"
-units = "mm"
-[ground]
-O = [0, 0]
-[links]
-OA = {r}
-AB = {l}
-[sliders]
-B = {{ path = "horizontal", through = "O" }}
-[assembly]
-B = "right"
-[input]
-crank = "OA"
-angle = {theta}
-speed = "{rpm} rpm ccw"
-[masses]
-B = {{ mass = "{m} kg" }}
-[loads]
-B = {{ pressure = "{p} N/mm^2", bore = {bore}, direction = 180 }}
-"""
-
-
 @pytest.mark.parametrize("theta", [30, 60, 100, 135, 200, 300])
 def test_engine_closed_forms(theta):
     r, l, rpm, m, p, bore = 150, 600, 1800, 2.5, 2.0, 100
-    sc = parse_scene(ENGINE.format(r=r, l=l, theta=theta, rpm=rpm, m=m, p=p, bore=bore))
+    sc = engine(theta, r=r, l=l, rpm=rpm, m=m, extra=f'[loads]\nB = {{ pressure = "{p} N/mm^2", '
+                f'bore = {bore}, direction = 180 }}\n')
     f = solve(sc).forces
-    mpmath.mp.dps = 50
-    R, L = mpmath.mpf(r) / 1000, mpmath.mpf(l) / 1000
-    w = 2 * mpmath.pi * rpm / 60
-    th = mpmath.radians(theta)
-
-    def x(t):  # the piston's distance from O (right of O)
-        return R * mpmath.cos(t) + mpmath.sqrt(L ** 2 - (R * mpmath.sin(t)) ** 2)
-    a_toward = -w ** 2 * mpmath.diff(x, th, 2)  # the piston's acceleration towards O
     F_gas = p * 1e6 * mpmath.pi / 4 * (mpmath.mpf(bore) / 1000) ** 2  # towards O
-    F_P = F_gas - m * a_toward  # piston effort, towards O
-    n = L / R
-    phi = mpmath.asin(mpmath.sin(th) / n)
-    F_Q = F_P / mpmath.cos(phi)  # thrust on the rod
-    F_N = F_P * mpmath.tan(phi)  # side thrust on the cylinder walls
-    F_T = F_Q * mpmath.sin(th + phi)  # crank effort
-    T_turn = F_P * R * (mpmath.sin(th) + mpmath.sin(2 * th) / (2 * mpmath.sqrt(n ** 2 - mpmath.sin(th) ** 2)))
+    cf = closed_forms(0, theta, r, l, rpm, m, F_gas)
+    T_turn, F_Q, F_N, F_T = cf["T"], cf["F_Q"], cf["F_N"], cf["F_T"]
 
     def close(got, want):
         assert abs(got - float(want)) <= 1e-9 * abs(float(want)), (got, float(want))
@@ -357,7 +315,7 @@ def test_engine_closed_forms(theta):
     ax, ay = sol.P["A"]
     fa = f.pin("A", "OA")
     close(abs(ax * fa[1] - ay * fa[0]) / math.hypot(ax, ay), abs(F_T))
-    close(abs(F_T) * float(R), abs(T_turn))
+    close(abs(F_T) * r / 1000, abs(T_turn))
 
 
 def _fourbar_U(m_list, th):
