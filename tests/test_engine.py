@@ -485,3 +485,25 @@ def test_engine_answer_keys_are_refused_where_the_scene_cannot_give_them():
     with pytest.raises(SceneError) as exc:
         _verdicts(sc, 'dE_max = "2 parsecs"\n')
     assert "dE_max" in str(exc.value)
+
+
+def test_large_values_are_written_as_the_step_table_writes_them():
+    """The rod's alpha of the worked four-stroke engine (about 1.2e4 rad/s^2) in the printed
+    solution: a plain number, no exponent, as `steps` writes it, and the closed form's
+    alpha to its last digit shown (phi = asin(sin t / n), differentiated twice at 50 digits)."""
+    import re
+    from pathlib import Path
+    from polygon_method.scene import load_scene
+    from polygon_method.text.report import solution_text
+    sc = load_scene(Path(__file__).resolve().parent.parent / "worked_problems" /
+                    "engine_flywheel.toml")
+    row = next(line for line in solution_text(solve(sc)).splitlines()
+               if line.startswith("AB "))
+    mpmath.mp.dps = 50
+    R, L, w = mpmath.mpf("0.06"), mpmath.mpf("0.24"), 2 * mpmath.pi * 50
+
+    def phi(t):
+        return mpmath.asin(R * mpmath.sin(t) / L)
+    alpha = float(abs(mpmath.diff(phi, mpmath.radians(390), 2) * w * w))
+    shown = re.search(r"([0-9.e+]+) rad/s\^2", row).group(1)
+    assert "e" not in row and abs(float(shown) - alpha) <= 0.5, (row, alpha)
