@@ -255,9 +255,10 @@ def _cmd_animate(args, out, fmt) -> int:
 
 
 def _requested_angles(args, scene=None):
-    """Crank angles (rad) from ``--steps N`` or ``--from A --to B --step S`` (deg); for a
-    block driver, its places (m) from ``--steps N`` (over its travel, both ends) or
-    ``--from A --to B --step S`` (the scene's length unit)."""
+    """Crank angles (rad) from ``--steps N`` (over the scene's cycle: a turn, two for a
+    four-stroke engine) or ``--from A --to B --step S`` (deg); for a block driver, its
+    places (m) from ``--steps N`` (over its travel, both ends) or ``--from A --to B --step
+    S`` (the scene's length unit)."""
     import numpy as np
     ranged = any(v is not None for v in (args.start, args.stop, args.step))
     if args.steps is not None and ranged:
@@ -284,7 +285,8 @@ def _requested_angles(args, scene=None):
         raise SceneError(f"--steps must be at least 1, got {n}")
     if n > 100_000_000:
         raise SceneError(f"--steps {n} is too many (at most 10^8)")
-    return np.linspace(0.0, 2.0 * math.pi, n, endpoint=False)
+    cycle = 2.0 * math.pi if scene is None else scene.cycle  # a four-stroke's gas force
+    return np.linspace(0.0, cycle, n, endpoint=False)        # repeats after two turns
 
 
 def _requested_places(args, scene, ranged):

@@ -87,9 +87,14 @@ def _axis(res: SweepResult) -> tuple:
         t0 = math.degrees(float(dom.map(np.array([sc.input.angle]))[0][0])) + shift
     order = np.argsort(deg, kind="stable") if np.any(np.diff(deg) < 0) else slice(None)
     x = deg[order]
-    if dom.full_turn and len(x):  # the scene's angle, shown in the plotted range
-        k = math.floor((x.min() - t0) / 360.0 + 1.0)
-        t0 = t0 + 360.0 * k if t0 + 360.0 * k <= x.max() + 1e-9 else t0 + 360.0 * (k - 1)
+    if dom.full_turn and len(x):  # the scene's angle, shown in the plotted range: within
+        # its cycle where the range holds it (a four-stroke's 390 deg is not 30), else a turn
+        for period in dict.fromkeys((math.degrees(sc.cycle), 360.0)):
+            k = math.floor((x.min() - t0) / period + 1.0)
+            at = t0 + period * k if t0 + period * k <= x.max() + 1e-9 else t0 + period * (k - 1)
+            if x.min() - 1e-9 <= at <= x.max() + 1e-9:
+                break
+        t0 = at
     gaps = np.nonzero(np.diff(x) > 1.5 * np.median(np.diff(x)))[0] + 1 if len(x) > 2 else []
     x = np.insert(x, gaps, np.nan)  # no line across angles left out
     show = degrees_fn(dom) if dom.full_turn or not dom.periodic else (
