@@ -352,7 +352,23 @@ class Forces:
 
 def force_value(f: Forces, kind: str, name: str) -> float:
     """The size of what an answer key names: ``F`` the force at pin ``name`` (a pin joining
-    two bodies), ``N`` the guide's normal force on the block at ``name``."""
+    two bodies), ``N`` the guide's normal force on the block at ``name``; of body ``name``
+    (a link's key, or ``block X``): ``Fi`` its inertia force's size ``m |a_G|``, ``Ci`` its
+    inertia couple ``-I alpha`` (signed, ccw positive), ``h`` the offset ``|I alpha| / (m
+    |a_G|)`` of the book's single force from G (0 where the body has no couple)."""
+    if kind in ("Fi", "Ci", "h"):
+        i = f.inertia_of(name)
+        if i is None:
+            raise SceneError(f"{kind}_{name.removeprefix('block ')}: {name} has no mass in "
+                             "[masses]: no inertia force")
+        if kind == "Fi":
+            return (i.force[0] ** 2 + i.force[1] ** 2) ** 0.5
+        if kind == "Ci":
+            return i.couple
+        if i.offset is None and i.couple != 0:
+            raise SceneError(f"h_{name.removeprefix('block ')}: a_G = 0: the inertia is a "
+                             "couple alone, with no single force to offset")
+        return abs(i.offset or 0.0)
     if kind == "N":
         g = next((g for g in f.guides if g.key == name), None)
         if g is None:

@@ -48,6 +48,11 @@ ANSWER_KINDS = {
     # pin joining two bodies, of a guide's normal force on its block
     "F": ("force", "pin_force", False),
     "N": ("force", "guide", False),
+    # a body's inertia (link L, or the block at X): the size of its force -m a_G, its
+    # couple -I alpha (ccw positive, or a sense), the offset h of the book's single force
+    "Fi": ("force", "body", False),
+    "Ci": ("torque", "body", True),
+    "h": ("length", "body", False),
 }
 #: the answer kinds of the guide's point under a block (``v_A1``, ``a_A1``: its image a1)
 UNDER_BLOCK_KINDS = {"v": "vu", "a": "au"}
