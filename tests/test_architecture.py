@@ -487,7 +487,6 @@ LONG_FUNCTIONS = {
     "scene/answers.py:answer",
     "scene/wheel_input.py:wheel_input",
     "steps/triad/__init__.py:construction",
-    "steps/triad/loop.py:solve_array",
 }
 LONGEST = 80
 
