@@ -245,6 +245,7 @@ def page_data(fr: Frames) -> dict:
                    for name, s in zip(DIAGRAMS, fr.scales)],
         "theta": [round(float(t), 6) for t in fr.degrees],
         "start": fr.start, "fullTurn": fr.full_turn, "limits": fr.limits_text,
+        "cycle": fr.cycle_degrees,  # the angles shown modulo it (720: a four-stroke)
         "crank": sc.input.crank, "pivot": sc.input.pivot,
         **({} if sol.plan.steps[0].periodic else {"param": list(fr.parameter)}),
         "ground": {p: [float(c) for c in xy] for p, xy in sc.ground.items()},

@@ -32,9 +32,11 @@ function angular(x, unit) {
   return fmt(Math.abs(x)) + " " + unit + s;
 }
 const deg = (t) => (((t % 360) + 360) % 360).toFixed(1);
+// a crank angle as shown: modulo the cycle (720 for a four-stroke engine: 390 is not 30)
+const CYCLE = D.cycle || 360, inCycle = (t) => ((t % CYCLE) + CYCLE) % CYCLE;
 // what the frames step through: the crank angle, or a driving block's place (D.param)
 const PARAM = D.param || ["crank angle", "θ", "°"];
-const at = (t) => D.param ? t.toFixed(1) + PARAM[2] : deg(t) + "°";
+const at = (t) => D.param ? t.toFixed(1) + PARAM[2] : inCycle(t).toFixed(1) + "°";
 const dir = (x, y) => deg(Math.atan2(y, x) * 180 / Math.PI);
 const esc = (s) => String(s).replace(/&/g, "&amp;").replace(/</g, "&lt;").replace(/>/g, "&gt;");
 const sub = (base, s) => base + "<sub>" + esc(s) + "</sub>";  // v_B typeset: v with B below
@@ -532,9 +534,9 @@ function buildPlots() {
     }
     const turned = Math.abs(t1 - t0), dstep = [5, 10, 15, 30, 45, 60, 90, 180].find((s) => turned / s <= 6) || 360;
     for (let j = Math.ceil(Math.min(t0, t1) / dstep - 1e-9); j * dstep <= Math.max(t0, t1) + 1e-9; j++) {
-      const t = j * dstep;  // a round angle, written between 0 and 360
+      const t = j * dstep;  // a round angle, written between 0 and the cycle (360 or 720)
       el(svg, "line", {x1: r3(X(t)), y1: T, x2: r3(X(t)), y2: H - B, class: "grid"});
-      text(svg, {x: r3(X(t)), y: H - B + 11, class: "tick", "text-anchor": "middle"}, D.param ? at(t) : String(((t % 360) + 360) % 360) + "°");
+      text(svg, {x: r3(X(t)), y: H - B + 11, class: "tick", "text-anchor": "middle"}, D.param ? at(t) : String(inCycle(t)) + "°");
     }
     el(svg, "line", {x1: L, y1: T, x2: L, y2: H - B, class: "axis"});
     text(svg, {x: (L + W - R) / 2, y: H - 6, class: "axis-title", "text-anchor": "middle"},
