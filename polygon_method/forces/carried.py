@@ -14,6 +14,14 @@ def owns(st) -> dict:
     return {st.point: st.link}
 
 
+def bind(st, own, ix):
+    return _nothing
+
+
+def _nothing(P, S, pins, guides):
+    """A carried point's short road: nothing to solve."""
+
+
 def step(st, P, led, own):
     """A carried point adds no unknown force: nothing to solve, nothing to record."""
     return (), (), None, None

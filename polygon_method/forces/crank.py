@@ -32,6 +32,19 @@ def owns(st) -> dict:
     return {st.tip: st.link}
 
 
+def bind(st, own, ix):
+    pivot, link, i = st.pivot, st.link, ix(st.link)
+
+    def run(P, S, pins, guides):
+        ox, oy = P[pivot]
+        r, torque = solve(ox, oy, S.of(i))
+        S.add(0, -r[0], -r[1], ox, oy)
+        S.couple(0, -torque)  # the driver, mounted on the frame, feels -T
+        pins.append((pivot, link, FRAME, r))
+        return torque
+    return run
+
+
 def step(st, P, led, own):
     """The frame's force at the pivot and the driving torque. Returns as
     :func:`.dyad.step`."""

@@ -62,6 +62,23 @@ def owns(st) -> dict:
     return {st.point: st.link1}
 
 
+def bind(st, own, ix):
+    l1, l2, b, d, c = st.link1, st.link2, st.b, st.d, st.point
+    ob, od = own[b], own[d]
+    i1, i2, ib, id_ = ix(l1), ix(l2), ix(ob), ix(od)
+    why = f"{b}, {c} and {d} are in a line"
+
+    def run(P, S, pins, guides):
+        (bx, by), (dx, dy), (cx, cy) = P[b], P[d], P[c]
+        p, fb, fd, _ = solve(bx, by, S.of(i1), dx, dy, S.of(i2), cx, cy)
+        if p is None:
+            raise Singular(why)
+        pins += ((c, l1, l2, p), (b, l1, ob, fb), (d, l2, od, fd))
+        S.add(ib, -fb[0], -fb[1], bx, by)
+        S.add(id_, -fd[0], -fd[1], dx, dy)
+    return run
+
+
 def step(st, P, led, own):
     """Solve the step's pin forces from the ledger; enter the reactions on the bodies at B
     and D. Returns (pin forces, guide forces, :class:`ForceStep`, driving torque or None)."""

@@ -74,6 +74,33 @@ def guide(st, P, own):
     return (ux / m, uy / m), body
 
 
+def bind(st, own, ix):
+    lk, x, b = st.link, st.point, st.b
+    bl, ob = block(x), own[st.b]
+    il, ibl, ib = ix(lk), ix(bl), ix(ob)
+    fixed = st.path is not None
+    if fixed:
+        u, gb = st.path.u, FRAME
+        ig = 0
+    else:  # a moving guide: its direction at each instant, its body known now
+        gb = FRAME if own.get(st.g1) == FRAME and own.get(st.g2) == FRAME else st.guide
+        ig = ix(gb)
+    why = f"{b}{x} stands square to the guide"
+
+    def run(P, S, pins, guides):
+        (bx, by), (xx, xy) = P[b], P[x]
+        v = u if fixed else guide(st, P, own)[0]
+        n, p, fb, _ = solve(bx, by, S.of(il), xx, xy, S.of(ibl), v)
+        if n is None:
+            raise Singular(why)
+        nv = (-v[1], v[0])
+        guides.append((x, n, nv, gb))
+        pins += ((x, lk, bl, p), (b, lk, ob, fb))
+        S.add(ib, -fb[0], -fb[1], bx, by)
+        S.add(ig, -(n * nv[0]), -(n * nv[1]), xx, xy)
+    return run
+
+
 def step(st, P, led, own):
     """Solve the link's and the block's forces; enter the reaction at B and the block's
     push on the guide (the frame). Returns as :func:`.dyad.step`."""

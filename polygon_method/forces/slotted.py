@@ -68,6 +68,30 @@ def blocks(st) -> tuple:
     return (st.point,)
 
 
+def bind(st, own, ix):
+    lv, a, k = st.guide, st.point, st.known
+    bl = block(a)
+    ok, oa = own[k], own[a]
+    ilv, ibl, iok, ioa = ix(lv), ix(bl), ix(ok), ix(oa)
+    first, second, length = st.first, st.second, st.length
+    why = f"block {a} is at {k}, the pivot of {lv}"
+
+    def run(P, S, pins, guides):
+        (kx, ky), (ax, ay) = P[k], P[a]
+        (fx1, fy1), (fx2, fy2) = P[first], P[second]
+        ux, uy = fx2 - fx1, fy2 - fy1
+        m = (ux * ux + uy * uy) ** 0.5
+        ux, uy = ux / m, uy / m
+        n, fk, fa, _ = solve(kx, ky, S.of(ilv), ax, ay, S.of(ibl), (ux, uy), length)
+        if n is None:
+            raise Singular(why)
+        guides.append((a, n, (-uy, ux), lv))
+        pins += ((k, lv, ok, fk), (a, bl, oa, fa))
+        S.add(iok, -fk[0], -fk[1], kx, ky)
+        S.add(ioa, -fa[0], -fa[1], ax, ay)
+    return run
+
+
 def step(st, P, led, own):
     """Solve the lever's and the block's forces; enter the reactions at K and A on the
     bodies there. Returns as :func:`.dyad.step`."""
