@@ -36,10 +36,10 @@ from ..common.errors import PolygonMethodError
 from . import (carried, crank, cylinder, driver, dyad, peg, rolling, slider, slotted, triad,
                wheel, yoke)
 from .bodies import Ledger, Singular, centre, cross, gather
-from .core import force_plan, records
+from .core import force_plan
 from .records import (FRAME, Contact, Couple, Forces, ForceStep, FreeBody, GuideForce,
                       Inertia, PinForce, Side, block, couple_label, force_value, forces_dict,
-                      number_sub, side_label)
+                      number_sub, quick_forces, side_label)
 
 #: the force step of each kind of kinematic step: its room (``owns(st)``: the bodies its
 #: points act on; ``step(st, P, ledger, owners)``: its pin forces; ``covers(st)``, where
@@ -54,7 +54,7 @@ from .records import (FRAME, Contact, Couple, Forces, ForceStep, FreeBody, Guide
 #: (:mod:`.core`), a function ``f(P, S, pins, guides)`` doing what ``step`` does to the
 #: numbered sums ``S`` (body ``ix(name)``), appending its pin forces ``(point, on, by,
 #: force)`` and guides' ``(point, normal, n, by)`` and returning the driver's effort or
-#: None, with no record made)
+#: None, with no record made; None for a step with nothing to solve)
 #: the members a room may give, said once above for every room
 ROOM_CONTRACT = ("owns", "step", "covers", "check", "blocks", "divisor", "drives",
                  "unit_ledger", "effort", "bodies", "bind")
@@ -132,11 +132,11 @@ def analyse(motion) -> Forces:
     if not fp.quick:
         whole = _long(motion, fp)
         return Forces(*whole[:7], lambda: whole[7:10], lambda: whole[10:])
-    inertia, pins, guides, effort, second, (fx, fy, m) = fp.run(motion)
+    pins, guides, effort, second, (fx, fy, m) = fp.run(motion)
     name, kind = fp.driver
-    return Forces(effort, (fx, fy), m, name, kind, second, fp.second,
-                  lambda: records(inertia, pins, guides),
-                  lambda: _long(motion, fp)[10:])
+    return quick_forces(effort, (fx, fy), m, name, kind, second, fp.second,
+                        lambda: fp.records(motion, pins, guides),
+                        lambda: _long(motion, fp)[10:])
 
 
 def _long(motion, fp) -> tuple:

@@ -15,11 +15,7 @@ def owns(st) -> dict:
 
 
 def bind(st, own, ix):
-    return _nothing
-
-
-def _nothing(P, S, pins, guides):
-    """A carried point's short road: nothing to solve."""
+    return None  # nothing to solve: no call on the short road
 
 
 def step(st, P, led, own):

@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import weakref
 
-from .bodies import Singular, centre
+from .bodies import Singular, centre, inertia_record
 from .engine import indicator_force
 from .records import FRAME, GuideForce, PinForce, block
 
@@ -40,10 +40,10 @@ class Sums:
 
     __slots__ = ("fx", "fy", "m")
 
-    def __init__(self, n):
-        self.fx = [0.0] * n
-        self.fy = [0.0] * n
-        self.m = [0.0] * n
+    def __init__(self, zeros):
+        self.fx = zeros[:]
+        self.fy = zeros[:]
+        self.m = zeros[:]
 
     def add(self, i, fx, fy, x, y):
         """A force ``(fx, fy)`` at ``(x, y)`` on body ``i``."""
@@ -95,9 +95,10 @@ class ForcePlan:
         self._masses(scene, ix)
         self._loads(scene, own, ix)
         first = plan.steps[0]
-        self.steps = tuple((st, ROOMS[st.kind].bind(st, own, ix), st is first)
-                           for st in reversed(plan.steps))
-        self.size = len(ix.index)
+        bound = ((st, ROOMS[st.kind].bind(st, own, ix), st is first)
+                 for st in reversed(plan.steps))
+        self.steps = tuple(b for b in bound if b[1] is not None)  # skip what solves nothing
+        self.zeros = [0.0] * len(ix.index)
         inp = scene.input
         if first.kind == "block":  # the driver the plan starts with: a block
             self.driver = (block(first.point), "block")
@@ -106,12 +107,13 @@ class ForcePlan:
         self.second = None if inp.second is None else scene.link(inp.second.crank).key
 
     def _masses(self, scene, ix):
-        """Each mass as (body number, block's point or None, link's ends, lam, mu, its
-        link's key, its record's fields, its weight): in the scene's order, as
-        :func:`~.bodies.gather` takes them."""
+        """Each mass, in the scene's order as :func:`~.bodies.gather` takes them, as what
+        the hot loop reads (body number, a block's point or None, its link's ends and key,
+        lam, mu, ``-m``, ``-I``, its weight or None) and, beside it, what only its record
+        reads (body, m, I, how)."""
         grav = scene.gravity
         fixed = {lk.key for lk in scene.links if lk.p in scene.ground and lk.q in scene.ground}
-        out = []
+        hot, cold = [], []
         for m in scene.masses:
             if m.body in fixed:  # a part of the frame: it neither moves nor loads
                 continue
@@ -124,9 +126,10 @@ class ForcePlan:
             if grav is not None:
                 w = m.mass * grav.g
                 weight = (w * grav.direction[0], w * grav.direction[1])
-            out.append((ix(body), body, *where, m.lam, m.mu, m.mass, m.inertia, m.how,
-                        weight))
-        self.masses = tuple(out)
+            # -m a_G and -I alpha with -m and -I taken once: the same products
+            hot.append((ix(body), *where, body, m.lam, m.mu, -m.mass, -m.inertia, weight))
+            cold.append((body, m.mass, m.inertia, m.how))
+        self.masses, self.mass_records = tuple(hot), tuple(cold)
 
     def _loads(self, scene, own, ix):
         """Each load as (body number or None for a couple's, point, force or couple, gas);
@@ -147,37 +150,49 @@ class ForcePlan:
 
     def run(self, motion):
         """The numbers of the force analysis at ``motion``'s instant (or over its angles):
-        (the inertia's raw fields, pin forces, guide forces as tuples, the first driver's
+        (pin forces, guide forces as tuples, the first driver's
         effort, a second crank's torque, the frame's resultant)."""
         P, A, Al = motion.P, motion.A, motion.Al
-        S = Sums(self.size)
-        add, couple = S.add, S.couple
-        inertia = []
-        for i, body, pt, p, q, lam, mu, mass, moment, how, weight in self.masses:
-            if pt is not None:
-                G, a_G, alpha = P[pt], A[pt], 0.0
+        S = Sums(self.zeros)
+        sx, sy, sm = S.fx, S.fy, S.m
+        for i, pt, p, q, body, lam, mu, nm, ni, weight in self.masses:
+            if pt is None:  # G and a_G: the link's image of (lam, mu), as bodies.centre
+                (px, py), (qx, qy) = P[p], P[q]
+                dx, dy = qx - px, qy - py
+                gx, gy = px + lam * dx - mu * dy, py + lam * dy + mu * dx
+                (px, py), (qx, qy) = A[p], A[q]
+                dx, dy = qx - px, qy - py
+                ax, ay = px + lam * dx - mu * dy, py + lam * dy + mu * dx
+                alpha = Al[body]
             else:
-                G, a_G, alpha = centre(P, lam, mu, p, q), centre(A, lam, mu, p, q), Al[body]
-            fx, fy = -mass * a_G[0], -mass * a_G[1]
-            inertia.append((body, mass, moment, G, a_G, alpha, how))
-            add(i, fx, fy, G[0], G[1])
-            couple(i, -moment * alpha)
+                (gx, gy), (ax, ay), alpha = P[pt], A[pt], 0.0
+            fx, fy = nm * ax, nm * ay  # -m a_G
+            # S.add(i, fx, fy, gx, gy); S.couple(i, -I alpha); the weight likewise
+            sx[i] = sx[i] + fx
+            sy[i] = sy[i] + fy
+            sm[i] = sm[i] + (gx * fy - gy * fx) + ni * alpha
             if weight is not None:
-                add(i, weight[0], weight[1], G[0], G[1])
+                fx, fy = weight
+                sx[i] = sx[i] + fx
+                sy[i] = sy[i] + fy
+                sm[i] = sm[i] + (gx * fy - gy * fx)
         for i, target, f, gas in self.loads:
-            if i is None:  # a couple on a link
-                couple(target, f)
+            if i is None:  # a couple on a link: S.couple(target, f)
+                sm[target] = sm[target] + f
                 continue
             x, y = P[target]
-            add(i, f[0], f[1], x, y)
+            fx, fy = f
+            sx[i] = sx[i] + fx  # S.add(i, fx, fy, x, y)
+            sy[i] = sy[i] + fy
+            sm[i] = sm[i] + (x * fy - y * fx)
             if gas:  # the gas pushes the cylinder's cover (the frame) as hard, back
-                add(0, -f[0], -f[1], x, y)
+                S.add(0, -fx, -fy, x, y)
         if self.indicator is not None:
             piston, i = self.indicator
             fx, fy, _, _ = indicator_force(self.scene, motion)
             x, y = P[piston]
-            add(i, fx, fy, x, y)
-            add(0, -fx, -fy, x, y)
+            S.add(i, fx, fy, x, y)
+            S.add(0, -fx, -fy, x, y)
         pins, guides = [], []
         effort = second = None
         for st, fn, first in self.steps:
@@ -193,16 +208,23 @@ class ForcePlan:
                     effort = t
                 else:
                     second = t
-        return inertia, pins, guides, effort, second, S.of(0)
+        return pins, guides, effort, second, S.of(0)
 
-
-def records(inertia, pins, guides) -> tuple:
-    """(:class:`~.records.Inertia` s, :class:`~.records.PinForce` s,
-    :class:`~.records.GuideForce` s) from :meth:`ForcePlan.run`'s raw tuples."""
-    from .bodies import inertia_record
-    return (tuple(inertia_record(*r) for r in inertia),
-            tuple(PinForce(*p) for p in pins),
-            tuple(GuideForce(*g) for g in guides))
+    def records(self, motion, pins, guides) -> tuple:
+        """(:class:`~.records.Inertia` s, :class:`~.records.PinForce` s,
+        :class:`~.records.GuideForce` s) from :meth:`run`'s raw tuples; each mass's G and
+        a_G found again from ``motion`` as :meth:`run` found them (the same arithmetic)."""
+        P, A, Al = motion.P, motion.A, motion.Al
+        inertia = []
+        for (_, pt, p, q, key, lam, mu, _, _, _), (body, mass, moment, how) in zip(
+                self.masses, self.mass_records):
+            if pt is None:
+                G, a_G, alpha = centre(P, lam, mu, p, q), centre(A, lam, mu, p, q), Al[key]
+            else:
+                G, a_G, alpha = P[pt], A[pt], 0.0
+            inertia.append(inertia_record(body, mass, moment, G, a_G, alpha, how))
+        return (tuple(inertia), tuple(PinForce(*p) for p in pins),
+                tuple(GuideForce(*g) for g in guides))
 
 
 _PLANS: dict = {}  # id(scene) -> (weak reference to the scene, plan, ForcePlan)

@@ -11,7 +11,6 @@ and its driver turns it with the torque T; every other force on it is known by n
 
 from __future__ import annotations
 
-from .bodies import cross
 from ..common.numbers import fmt
 from .records import FRAME, ForceStep, PinForce, Side
 
@@ -19,7 +18,7 @@ from .records import FRAME, ForceStep, PinForce, Side
 def solve(ox, oy, known):
     """(the frame's force on the crank at O, the driving torque T, ccw positive)."""
     fx, fy, m = known
-    return (-fx, -fy), -(m - cross(ox, oy, fx, fy))
+    return (-fx, -fy), -(m - (ox * fy - oy * fx))  # cross(O, F) written out
 
 
 def bodies(st) -> tuple:

@@ -28,22 +28,24 @@ from ..common.numbers import fmt
 from .records import ForceStep, PinForce, Side
 
 
-def solve(bx, by, known1, dx, dy, known2, cx, cy):
+def solve(bx, by, known1, dx, dy, known2, cx, cy, condition=True):
     """(P on link 1 at C by link 2, the force on link 1 at B, the force on link 2 at D,
-    the condition ``|cross(C - B, C - D)| / (|C - B| |C - D|)``); floats, or arrays over a
-    sweep.
+    the condition ``|cross(C - B, C - D)| / (|C - B| |C - D|)``, None unless
+    ``condition``); floats, or arrays over a sweep.
 
     ``known1``, ``known2``: ``(Fx, Fy, M)`` of the known forces on each link, M about the
-    origin."""
+    origin. (Each ``cross`` written out: this is the short road's hot path too.)"""
     f1x, f1y, m1 = known1
     f2x, f2y, m2 = known2
-    m1b = m1 - cross(bx, by, f1x, f1y)  # about B
-    m2d = m2 - cross(dx, dy, f2x, f2y)  # about D
+    m1b = m1 - (bx * f1y - by * f1x)  # about B: M - cross(B, F)
+    m2d = m2 - (dx * f2y - dy * f2x)  # about D
     r1x, r1y = cx - bx, cy - by
     r2x, r2y = cx - dx, cy - dy
-    det = cross(r1x, r1y, r2x, r2y)
-    size = ((r1x * r1x + r1y * r1y) * (r2x * r2x + r2y * r2y)) ** 0.5  # links: never 0
-    cond = abs(det) / size
+    det = r1x * r2y - r1y * r2x  # cross(C - B, C - D)
+    cond = None
+    if condition:
+        size = ((r1x * r1x + r1y * r1y) * (r2x * r2x + r2y * r2y)) ** 0.5  # never 0
+        cond = abs(det) / size
     if any_zero(det):
         return None, None, None, 0.0
     # -r1y Px + r1x Py = -M1_B ;  -r2y Px + r2x Py = M2_D
@@ -70,7 +72,9 @@ def bind(st, own, ix):
 
     def run(P, S, pins, guides):
         (bx, by), (dx, dy), (cx, cy) = P[b], P[d], P[c]
-        p, fb, fd, _ = solve(bx, by, S.of(i1), dx, dy, S.of(i2), cx, cy)
+        sx, sy, sm = S.fx, S.fy, S.m
+        p, fb, fd, _ = solve(bx, by, (sx[i1], sy[i1], sm[i1]), dx, dy,
+                             (sx[i2], sy[i2], sm[i2]), cx, cy, False)
         if p is None:
             raise Singular(why)
         pins += ((c, l1, l2, p), (b, l1, ob, fb), (d, l2, od, fd))

@@ -26,9 +26,9 @@ from ..common.numbers import fmt
 from .records import FRAME, ForceStep, GuideForce, PinForce, Side, block
 
 
-def solve(bx, by, known_link, xx, xy, known_block, u):
+def solve(bx, by, known_link, xx, xy, known_block, u, condition=True):
     """(N, P on the link at X by the block, the force on the link at B, the condition
-    ``|(X - B) . u| / |X - B|``).
+    ``|(X - B) . u| / |X - B|``, None unless ``condition``).
 
     ``known_link``: ``(Fx, Fy, M about the origin)`` on the link; ``known_block``: the same
     on the block (its M is not used: its forces pass through X)."""
@@ -36,14 +36,16 @@ def solve(bx, by, known_link, xx, xy, known_block, u):
     rx, ry = known_block[0], known_block[1]
     ux, uy = u
     nx, ny = -uy, ux
-    mb = m - cross(bx, by, fx, fy)
+    mb = m - (bx * fy - by * fx)  # M - cross(B, F), written out (the short road's too)
     ex, ey = xx - bx, xy - by
     den = ex * ux + ey * uy
-    size = (ex * ex + ey * ey) ** 0.5  # the link's length: never 0
-    cond = abs(den) / size
+    cond = None
+    if condition:
+        size = (ex * ex + ey * ey) ** 0.5  # the link's length: never 0
+        cond = abs(den) / size
     if any_zero(den):
         return None, None, None, 0.0
-    n = -(mb + cross(ex, ey, rx, ry)) / den
+    n = -(mb + (ex * ry - ey * rx)) / den  # cross(X - B, R)
     px, py = n * nx + rx, n * ny + ry
     return n, (px, py), (-(fx + px), -(fy + py)), cond
 
@@ -90,7 +92,7 @@ def bind(st, own, ix):
     def run(P, S, pins, guides):
         (bx, by), (xx, xy) = P[b], P[x]
         v = u if fixed else guide(st, P, own)[0]
-        n, p, fb, _ = solve(bx, by, S.of(il), xx, xy, S.of(ibl), v)
+        n, p, fb, _ = solve(bx, by, S.of(il), xx, xy, S.of(ibl), v, False)
         if n is None:
             raise Singular(why)
         nv = (-v[1], v[0])
