@@ -3,6 +3,7 @@
     python benchmarks/forces_speed.py            # a few seconds
     python benchmarks/forces_speed.py --quick    # fewer rounds
     python benchmarks/forces_speed.py --json     # the numbers as JSON too
+    python benchmarks/forces_speed.py --smoke    # one round, 360 angles (the test's run)
 
 Measured interleaved, in small batches, each figure the least over the rounds (on a shared
 machine the others' load comes and goes; a figure measured a minute after its peer is
@@ -221,10 +222,13 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="fewer rounds")
     ap.add_argument("--json", action="store_true", help="print the numbers as JSON too")
+    ap.add_argument("--smoke", action="store_true",
+                    help="one round and 360 angles: that it runs and its checks hold")
     args = ap.parse_args(argv)
-    rounds = 3 if args.quick else 15
+    rounds = 1 if args.smoke else 3 if args.quick else 15
+    n = 360 if args.smoke else 3600
     one = side_by_side(rounds)
-    many = sweeps(max(1, rounds // 3))
+    many = sweeps(max(1, rounds // 3), n)
     print("one instant, warm (least of interleaved batches):")
     for name, r in one.items():
         k = r["kinematic"]
@@ -234,7 +238,7 @@ def main(argv=None):
             if key == "forces" and "floor" in r:
                 tail += f", {t / r['floor']:4.2f} of the floor"
             print(f"    {key:<18}{fmt(t)}{tail}")
-    print("3600 crank angles:")
+    print(f"{n} crank angles:")
     for name, r in many.items():
         print(f"  {name}")
         for key, t in r.items():
@@ -243,7 +247,7 @@ def main(argv=None):
               f"times as fast as the loop; the sweep with forces "
               f"{r['sweep + forces'] / r['sweep']:.2f} of the sweep alone")
     if args.json:
-        print(json.dumps({"one": one, "sweep": many}, indent=1))
+        print(json.dumps({"one": one, "sweep": many, "angles": n}, indent=1))
     return 0
 
 
