@@ -274,6 +274,8 @@ class RollingPair:
       with the gear ``base`` (``wheel`` is the block's point, ``centre`` None).
 
     ``inside``: the wheel rolls inside the circle (a ring, an internal gear).
+    ``ring``: the wheel is itself a ring (an internal gear) about its centre, the gear it
+    meshes with inside it (``inside`` is then true as well: the pair meshes internally).
     ``base_radius``: the circle's radius as the problem states it (None: from the centre
     distance). ``angle``: the direction centre -> rim (rad) at the scene's crank angle
     (None: towards the contact point). ``label``: the line or circle in words.
@@ -293,6 +295,7 @@ class RollingPair:
     inside: bool = False
     base_radius: float | None = None
     angle: float | None = None
+    ring: bool = False
 
 
 @dataclass(frozen=True)
