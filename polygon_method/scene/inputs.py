@@ -38,6 +38,32 @@ def _extending(raw):
     return raw
 
 
+#: a rate in words relative to the motion it is the rate of: "12 rad/s^2, slowing down"
+_BY_WORDS = re.compile(r"^\s*(.*?\S)[\s,;]+(slowing(?: down)?|decelerating|retarding|"
+                       r"speeding up|accelerating)\s*$", re.IGNORECASE)
+#: a sense or a direction beside those words: one of the two is enough
+_SENSE_OR_WAY = re.compile(r"\b(c?cw|a?cw|(?:anti|counter)-?clockwise|clockwise|up|down|left|"
+                           r"right|at|extending|retracting|inwards?|outwards?)(?:wards?)?\b",
+                           re.IGNORECASE)
+
+
+def rate_words(raw):
+    """``("12 rad/s^2", -1)`` for a rate given as books give it, relative to the motion:
+    ``"12 rad/s^2, slowing down"`` (also ``slowing``, ``decelerating``, ``retarding``: -1),
+    ``"5 m/s^2 speeding up"`` (``accelerating``: +1); ``(raw, None)`` otherwise.
+
+    >>> rate_words("12 rad/s^2, slowing down"), rate_words("2 m/s^2 accelerating")
+    (('12 rad/s^2', -1), ('2 m/s^2', 1))
+    >>> rate_words("12 rad/s^2 cw")
+    ('12 rad/s^2 cw', None)
+    """
+    m = _BY_WORDS.match(raw) if isinstance(raw, str) else None
+    if m is None:
+        return raw, None
+    word = m.group(2).lower()
+    return m.group(1), (1 if word in ("speeding up", "accelerating") else -1)
+
+
 def _given_key(key):
     """(prefix, names) of an [input] key naming a given motion or its rate (``vs_B`` ->
     ("vs", ("B",))), or None."""
@@ -53,6 +79,26 @@ def _given_key(key):
 
 class _Input:
     """The [input] table's methods of the scene reader."""
+
+    def rate_by_words(self, raw, motion, kind, section, key, whose):
+        """The rate (SI, signed as ``motion`` is) of a rate given as ``"12 rad/s^2, slowing
+        down"`` or ``"speeding up"``: its size, against or with the sign of ``motion`` (the
+        signed speed it is the rate of); None where ``raw`` has no such words. ``motion``
+        None: the speed is not known when the scene is read (refused, naming ``whose``)."""
+        text, sign = rate_words(raw)
+        if sign is None:
+            return None
+        if _SENSE_OR_WAY.search(text):
+            raise self.error(f"{raw!r}: give either a sense or direction, or 'slowing down' / "
+                             "'speeding up' (relative to the motion), not both", section, key)
+        if motion is None:
+            raise self.error(f"{raw!r}: slowing down or speeding up is relative to {whose}, "
+                             "which the scene does not give (it is found): give the sense "
+                             "(cw or ccw)", section, key)
+        size = abs(self.qty(text, kind, section, key,
+                            default_unit=None if kind.startswith("angular") else
+                            next(iter(UNITS[kind]))).value)
+        return sign * size * (1.0 if motion > 0 else -1.0)
 
     def dead_centres(self, link, pivot, tip, ground):
         """The candidate dead centres of the slider crank that ``link`` drives, for
@@ -168,6 +214,10 @@ class _Input:
             alpha = None
         elif isinstance(acc, (int, float)) and not isinstance(acc, bool) and acc == 0:
             alpha = 0.0
+        elif rate_words(acc)[1] is not None:
+            alpha = self.rate_by_words(acc, None if speed is None else speed.value,
+                                       "angular_acceleration", "input", "acceleration",
+                                       "the crank's speed")
         else:
             alpha = self.qty(acc, "angular_acceleration", "input", "acceleration",
                              need_sense=True).value
@@ -238,6 +288,8 @@ class _Input:
         raw_as = spec.get(as_key, 0)
         if isinstance(raw_as, (int, float)) and not isinstance(raw_as, bool) and raw_as == 0:
             acc = 0.0
+        elif rate_words(raw_as)[1] is not None:
+            acc = self.rate_by_words(raw_as, vs, "acceleration", "input", as_key, vs_key)
         else:
             acc, _ = self.directed(raw_as, "acceleration", as_key, u, need=False)
         if (s_key in spec) == (name in spec):
@@ -330,9 +382,12 @@ class _Input:
                              "the frame", "input.second", "speed")
         acc = spec.get("acceleration", 0)
         alpha = 0.0 if (isinstance(acc, (int, float)) and not isinstance(acc, bool)
-                        and acc == 0) else self.qty(acc, "angular_acceleration",
-                                                    "input.second", "acceleration",
-                                                    need_sense=True).value
+                        and acc == 0) else self.rate_by_words(
+            acc, speed.value, "angular_acceleration", "input.second", "acceleration",
+            "the crank's speed")
+        if alpha is None:
+            alpha = self.qty(acc, "angular_acceleration", "input.second", "acceleration",
+                             need_sense=True).value
         return Input(link.key, pivot, link.other(pivot), angle, speed.value, alpha,
                      str(spec["speed"]))
 
@@ -352,13 +407,17 @@ class _Input:
         text = printable(str(raw))
         rate_text = None if raw_rate is None else printable(str(raw_rate))
         direction = None
+        worded = rate_words(raw_rate)[1] is not None  # "... slowing down": with the motion
         if kind == "omega":
             if len(names) != 2 or frozenset(names) not in index:
                 raise self.error(f"no link {''.join(names)} in [links]", "input", key)
             value = self.qty(raw, "angular_velocity", "input", key, need_sense=True).value
             rate = None if raw_rate is None else (
-                0.0 if raw_rate == 0 else self.qty(raw_rate, "angular_acceleration", "input",
-                                                   rate_key, need_sense=True).value)
+                0.0 if raw_rate == 0 else self.rate_by_words(
+                    raw_rate, value, "angular_acceleration", "input", rate_key, key))
+            if rate is None and raw_rate is not None:
+                rate = self.qty(raw_rate, "angular_acceleration", "input", rate_key,
+                                need_sense=True).value
             names = index[frozenset(names)].points
         else:
             point = names[0] if len(names) == 1 else None
@@ -369,7 +428,7 @@ class _Input:
                                      key)
                 names, u = (cyl.key,), (1.0, 0.0)  # signed: + extending
                 raw = _extending(raw)
-                raw_rate = None if raw_rate is None else _extending(raw_rate)
+                raw_rate = raw_rate if raw_rate is None or worded else _extending(raw_rate)
             elif kind == "vs":
                 sl = self.slider_points.get(point)
                 if sl is None:
@@ -381,7 +440,10 @@ class _Input:
                 u = None
             value, direction = self.directed(raw, "velocity", key, u, need=kind == "v")
             rate = None
-            if raw_rate is not None:
+            if worded:  # a point's speed (v_C): its rate is that of the speed, + speeding up
+                rate = self.rate_by_words(raw_rate, 1.0 if kind == "v" else value,
+                                          "acceleration", "input", rate_key, key)
+            elif raw_rate is not None:
                 rate, _ = self.directed(raw_rate, "acceleration", rate_key,
                                         u if kind == "vs" else None, need=False)
         if value == 0:
