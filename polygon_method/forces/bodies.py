@@ -54,14 +54,14 @@ def guided(qx, qy, known, xx, xy, n, r):
     (-2.0, (0.0, -2.0), (-0.0, 2.0), 1.0)
     """
     fx, fy, m = known
-    rx, ry = r
+    rx, ry = r[0], r[1]  # (a known resultant's moment, if given, is not used)
     nx, ny = n
-    mq = m - cross(qx, qy, fx, fy)
+    mq = m - (qx * fy - qy * fx)  # cross(Q, F), written out (the short road's too)
     ex, ey = xx - qx, xy - qy
-    den = cross(ex, ey, nx, ny)
+    den = ex * ny - ey * nx  # cross(X - Q, n)
     if any_zero(den):
         return None, None, None, den
-    N = -(mq + cross(ex, ey, rx, ry)) / den
+    N = -(mq + (ex * ry - ey * rx)) / den  # cross(X - Q, r)
     px, py = N * nx + rx, N * ny + ry
     return N, (px, py), (-(fx + px), -(fy + py)), den
 

@@ -27,16 +27,18 @@ from ..common.numbers import fmt
 from .records import FRAME, ForceStep, GuideForce, PinForce, Side, block
 
 
-def solve(bx, by, known_link, xx, xy, known_block, u):
+def solve(bx, by, known_link, xx, xy, known_block, u, condition=True):
     """(N, P on the link at X by the block, the force on the link at B, the condition
-    ``|(X - B) . u| / |X - B|``).
+    ``|(X - B) . u| / |X - B|``, None unless ``condition``).
 
     ``known_link``: ``(Fx, Fy, M about the origin)`` on the link; ``known_block``: the same
     on the block (its M is not used: its forces pass through X)."""
     ux, uy = u  # the link feels the block's push N n + R at X (n = perp(u))
-    n, p, fb, den = guided(bx, by, known_link, xx, xy, (-uy, ux), known_block[:2])
+    n, p, fb, den = guided(bx, by, known_link, xx, xy, (-uy, ux), known_block)
     if n is None:
         return None, None, None, 0.0
+    if not condition:
+        return n, p, fb, None
     ex, ey = xx - bx, xy - by
     return n, p, fb, abs(den) / (ex * ex + ey * ey) ** 0.5  # the link's length: never 0
 
@@ -65,6 +67,33 @@ def guide(st, P, own):
     m = (ux * ux + uy * uy) ** 0.5
     body = FRAME if own.get(st.g1) == FRAME and own.get(st.g2) == FRAME else st.guide
     return (ux / m, uy / m), body
+
+
+def bind(st, own, ix):
+    lk, x, b = st.link, st.point, st.b
+    bl, ob = block(x), own[st.b]
+    il, ibl, ib = ix(lk), ix(bl), ix(ob)
+    fixed = st.path is not None
+    if fixed:
+        u, gb = st.path.u, FRAME
+        ig = 0
+    else:  # a moving guide: its direction at each instant, its body known now
+        gb = FRAME if own.get(st.g1) == FRAME and own.get(st.g2) == FRAME else st.guide
+        ig = ix(gb)
+    why = f"{b}{x} stands square to the guide"
+
+    def run(P, S, pins, guides):
+        (bx, by), (xx, xy) = P[b], P[x]
+        v = u if fixed else guide(st, P, own)[0]
+        n, p, fb, _ = solve(bx, by, S.of(il), xx, xy, S.of(ibl), v, False)
+        if n is None:
+            raise Singular(why)
+        nv = (-v[1], v[0])
+        guides.append((x, n, nv, gb))
+        pins += ((x, lk, bl, p), (b, lk, ob, fb))
+        S.add(ib, -fb[0], -fb[1], bx, by)
+        S.add(ig, -(n * nv[0]), -(n * nv[1]), xx, xy)
+    return run
 
 
 def step(st, P, led, own):

@@ -34,9 +34,9 @@ from ..common.numbers import fmt
 from .records import ForceStep, GuideForce, PinForce, block, Side
 
 
-def solve(kx, ky, known_lever, ax, ay, known_block, u, length):
+def solve(kx, ky, known_lever, ax, ay, known_block, u, length, condition=True):
     """(N on the block along n, the force on the lever at K, the force on the block at A,
-    the condition ``|A - K| / length``, at most 1).
+    the condition ``|A - K| / length``, at most 1; None unless ``condition``).
 
     ``known_lever``: ``(Fx, Fy, M about the origin)`` on the lever; ``known_block``: the same
     on the block (its M is not used: its forces pass through A)."""
@@ -47,8 +47,8 @@ def solve(kx, ky, known_lever, ax, ay, known_block, u, length):
     pushed, _, fk, den = guided(kx, ky, known_lever, ax, ay, (nx, ny), (0.0, 0.0))
     if pushed is None:
         return None, None, None, 0.0
-    cond = least(abs(den) / length, 1.0)
     n = -pushed
+    cond = least(abs(den) / length, 1.0) if condition else None
     return (n, fk, (-(n * nx + rx), -(n * ny + ry)), cond)
 
 
@@ -60,6 +60,30 @@ def owns(st) -> dict:
 def blocks(st) -> tuple:
     """The block of this group (a mass may sit on it, at its pin)."""
     return (st.point,)
+
+
+def bind(st, own, ix):
+    lv, a, k = st.guide, st.point, st.known
+    bl = block(a)
+    ok, oa = own[k], own[a]
+    ilv, ibl, iok, ioa = ix(lv), ix(bl), ix(ok), ix(oa)
+    first, second, length = st.first, st.second, st.length
+    why = f"block {a} is at {k}, the pivot of {lv}"
+
+    def run(P, S, pins, guides):
+        (kx, ky), (ax, ay) = P[k], P[a]
+        (fx1, fy1), (fx2, fy2) = P[first], P[second]
+        ux, uy = fx2 - fx1, fy2 - fy1
+        m = (ux * ux + uy * uy) ** 0.5
+        ux, uy = ux / m, uy / m
+        n, fk, fa, _ = solve(kx, ky, S.of(ilv), ax, ay, S.of(ibl), (ux, uy), length, False)
+        if n is None:
+            raise Singular(why)
+        guides.append((a, n, (-uy, ux), lv))
+        pins += ((k, lv, ok, fk), (a, bl, oa, fa))
+        S.add(iok, -fk[0], -fk[1], kx, ky)
+        S.add(ioa, -fa[0], -fa[1], ax, ay)
+    return run
 
 
 def step(st, P, led, own):

@@ -342,7 +342,7 @@ class Solution(Motion):
                 raise SceneError(f"torque: {f.crank} drives this mechanism with a force, not "
                                  "a torque (solve gives it as the input force)")
             return f.input_torque
-        if kind in ("F", "N"):
+        if kind in ("F", "N", "Fi", "Ci", "h"):
             from ..forces import force_value  # lazy, as in `forces`
             return force_value(self.forces, kind, names[0])
         if kind in ("vu", "au"):  # the guide's point under a block (v_A1, a_A1)

@@ -139,7 +139,7 @@ def _figures_html(d: dict) -> str:
     for s in d["scales"]:
         diagram = s["diagram"]
         forces = "" if diagram != "configuration" or not d.get("inertia") else \
-            f'; inertia forces at G: <b id="scale-inertia">{escape(d["inertia"]["text"])}</b>'
+            f'; inertia forces (each on its line h from G): <b id="scale-inertia">{escape(d["inertia"]["text"])}</b>'
         figs.append(f'<figure><figcaption>{escape(_CAPTION[diagram])}: <b class="scale" '
                     f'id="scale-{diagram}">{escape(s["text"])}</b>{forces}</figcaption>'
                     f'<svg class="diagram" id="{diagram}" '
