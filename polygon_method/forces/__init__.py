@@ -131,18 +131,19 @@ def analyse(motion) -> Forces:
     fp = force_plan(scene, plan)
     if not fp.quick:
         whole = _long(motion, fp)
-        return Forces(*whole[:7], lambda: whole[7:10], lambda: whole[10:])
-    pins, guides, effort, second, (fx, fy, m) = fp.run(motion)
+        return Forces(*whole[:7], lambda: whole[7:10], lambda: whole[10:14], whole[14])
+    pins, guides, effort, second, S = fp.run(motion)
     name, kind = fp.driver
+    fx, fy, m = S.of(0)
     return quick_forces(effort, (fx, fy), m, name, kind, second, fp.second,
                         lambda: fp.records(motion, pins, guides),
-                        lambda: _long(motion, fp)[10:])
+                        lambda: _long(motion, fp)[10:14], fp.resultants(S))
 
 
 def _long(motion, fp) -> tuple:
     """The long road, every record made: (the effort, shaking force, shaking moment, the
     driver's name and kind, a second crank's torque and link; inertia, pins, guides;
-    steps, applied, contacts, the drawings' functions)."""
+    steps, applied, contacts, the drawings' functions; body -> its known resultant)."""
     scene, plan, own = motion.scene, motion.plan, fp.own
     records_, led = gather(scene, motion, own)
     inp = scene.input
@@ -169,7 +170,8 @@ def _long(motion, fp) -> tuple:
             None if inp.second is None else scene.link(inp.second.crank).key,
             records_, tuple(pins), tuple(guides),
             tuple(steps), {k: tuple(v) for k, v in led.applied.items()}, tuple(contacts),
-            _drawing(scene, plan, motion.P, records_, pins, guides, led, torque, steps))
+            _drawing(scene, plan, motion.P, records_, pins, guides, led, torque, steps),
+            led.of)
 
 
 def _drawing(scene, plan, P, records, pins, guides, led, torque, steps) -> tuple:

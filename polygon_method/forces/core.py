@@ -99,6 +99,7 @@ class ForcePlan:
                  for st in reversed(plan.steps))
         self.steps = tuple(b for b in bound if b[1] is not None)  # skip what solves nothing
         self.zeros = [0.0] * len(ix.index)
+        self.index = ix.index
         inp = scene.input
         if first.kind == "block":  # the driver the plan starts with: a block
             self.driver = (block(first.point), "block")
@@ -150,8 +151,9 @@ class ForcePlan:
 
     def run(self, motion):
         """The numbers of the force analysis at ``motion``'s instant (or over its angles):
-        (pin forces, guide forces as tuples, the first driver's
-        effort, a second crank's torque, the frame's resultant)."""
+        (pin forces and guide forces as tuples, the first driver's effort, a second
+        crank's torque, the :class:`Sums`: the frame's resultant the shaking force and
+        moment)."""
         P, A, Al = motion.P, motion.A, motion.Al
         S = Sums(self.zeros)
         sx, sy, sm = S.fx, S.fy, S.m
@@ -208,7 +210,12 @@ class ForcePlan:
                     effort = t
                 else:
                     second = t
-        return pins, guides, effort, second, S.of(0)
+        return pins, guides, effort, second, S
+
+    def resultants(self, S):
+        """body -> its resultant in the sums ``S`` (zero for a body with none)."""
+        index = self.index
+        return lambda body: S.of(index[body]) if body in index else (0.0, 0.0, 0.0)
 
     def records(self, motion, pins, guides) -> tuple:
         """(:class:`~.records.Inertia` s, :class:`~.records.PinForce` s,

@@ -317,6 +317,17 @@ class Forces:
     #: functions making the records when first read (see above)
     parts: object = field(default=None, repr=False, compare=False)
     story: object = field(default=None, repr=False, compare=False)
+    #: body -> the resultant ``(Fx, Fy, M about the origin)`` of the forces known on it
+    #: (see :meth:`resultant`)
+    resultants: object = field(default=None, repr=False, compare=False)
+
+    def resultant(self, body: str) -> tuple:
+        """``(Fx, Fy, M about the origin)`` of every force on ``body`` but those of its own
+        group's unknowns: its inertia, weight and loads, and the reactions of the groups
+        solved before its own (what its force polygon starts from; for a slider's block,
+        the piston's known forces). No group solved after a body's own acts on it: it
+        finds no point of it."""
+        return self.resultants(body)
 
     @cached_property
     def _parts(self) -> tuple:
@@ -392,7 +403,7 @@ class Forces:
 
 
 def quick_forces(effort, shaking_force, shaking_moment, crank, driver, second_torque,
-                 second_crank, parts, story) -> Forces:
+                 second_crank, parts, story, resultants) -> Forces:
     """``Forces(effort, shaking_force, ...)``, its fields set at once in the instance's
     dictionary (the frozen dataclass's ``__init__`` sets them one by one through
     ``object.__setattr__``, a third of the short road's cost on a four-bar): the same
@@ -408,6 +419,7 @@ def quick_forces(effort, shaking_force, shaking_moment, crank, driver, second_to
     d["second_crank"] = second_crank
     d["parts"] = parts
     d["story"] = story
+    d["resultants"] = resultants
     return f
 
 
