@@ -155,8 +155,11 @@ class ForcePlan:
         crank's torque, the :class:`Sums`: the frame's resultant the shaking force and
         moment)."""
         P, A, Al = motion.P, motion.A, motion.Al
-        S = Sums(self.zeros)
-        sx, sy, sm = S.fx, S.fy, S.m
+        S = _new(Sums)  # Sums(self.zeros), one call fewer
+        z = self.zeros
+        S.fx = sx = z[:]
+        S.fy = sy = z[:]
+        S.m = sm = z[:]
         for i, pt, p, q, body, lam, mu, nm, ni, weight in self.masses:
             if pt is None:  # G and a_G: the link's image of (lam, mu), as bodies.centre
                 (px, py), (qx, qy) = P[p], P[q]
@@ -234,6 +237,7 @@ class ForcePlan:
                 tuple(GuideForce(*g) for g in guides))
 
 
+_new = object.__new__
 _PLANS: dict = {}  # id(scene) -> (weak reference to the scene, plan, ForcePlan)
 
 

@@ -404,10 +404,10 @@ class Forces:
 
 def quick_forces(effort, shaking_force, shaking_moment, crank, driver, second_torque,
                  second_crank, parts, story, resultants) -> Forces:
-    """``Forces(effort, shaking_force, ...)``, its fields set at once in the instance's
+    """``Forces(effort, shaking_force, ...)``, its fields put straight into the instance's
     dictionary (the frozen dataclass's ``__init__`` sets them one by one through
-    ``object.__setattr__``, a third of the short road's cost on a four-bar): the same
-    record."""
+    ``object.__setattr__``: three times as long, a sixth of the short road's cost on a
+    four-bar): the same record."""
     f = _new(Forces)
     d = f.__dict__
     d["input_torque"] = effort
