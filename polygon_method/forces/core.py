@@ -28,7 +28,7 @@ import weakref
 
 from .bodies import Singular, centre, inertia_record
 from .engine import indicator_force
-from .records import FRAME, GuideForce, PinForce, block
+from .records import FRAME, GuideForce, PinForce, block, quick_forces
 
 __all__ = ["ForcePlan", "Sums", "force_plan"]
 
@@ -150,10 +150,9 @@ class ForcePlan:
                                                    ix(own.get(ind.piston, FRAME)))
 
     def run(self, motion):
-        """The numbers of the force analysis at ``motion``'s instant (or over its angles):
-        (pin forces and guide forces as tuples, the first driver's effort, a second
-        crank's torque, the :class:`Sums`: the frame's resultant the shaking force and
-        moment)."""
+        """The :class:`~.records.Forces` at ``motion``'s instant (or over its angles): its
+        numbers (the effort, the shaking force and moment: the frame's sums); its records
+        made when first read, from the raw pin and guide forces kept."""
         P, A, Al = motion.P, motion.A, motion.Al
         S = _new(Sums)  # Sums(self.zeros), one call fewer
         z = self.zeros
@@ -213,12 +212,26 @@ class ForcePlan:
                     effort = t
                 else:
                     second = t
-        return pins, guides, effort, second, S
+        name, kind = self.driver
+        return quick_forces(effort, (sx[0], sy[0]), sm[0], name, kind, second, self.second,
+                            (self, motion, pins, guides, S))
 
-    def resultants(self, S):
-        """body -> its resultant in the sums ``S`` (zero for a body with none)."""
-        index = self.index
-        return lambda body: S.of(index[body]) if body in index else (0.0, 0.0, 0.0)
+    # what its :class:`~.records.Forces` asks of its ``source``, (this plan, the motion, the
+    # raw pin and guide forces, the sums), when first read
+
+    def parts(self, source) -> tuple:
+        """(inertia, pins, guides) records (:meth:`records`)."""
+        return self.records(*source[1:4])
+
+    def story(self, source) -> tuple:
+        """(steps, applied, contacts, the drawings' functions): the long road's."""
+        from . import _long  # the walk with its words (this module is one of its helpers)
+        return _long(source[1], self)[10:14]
+
+    def resultant(self, source, body) -> tuple:
+        """``body``'s resultant in the sums (zero for a body with none)."""
+        i = self.index.get(body)
+        return (0.0, 0.0, 0.0) if i is None else source[4].of(i)
 
     def records(self, motion, pins, guides) -> tuple:
         """(:class:`~.records.Inertia` s, :class:`~.records.PinForce` s,
