@@ -218,3 +218,17 @@ def test_the_worked_problems_take_the_short_road(path):
     sc = load_scene(path)
     _check_roads(*_roads(solve(sc)))
     _check_roads(*_roads(sweep(sc, np.radians(np.arange(0.0, 360.0, 1.0)))))
+
+
+@pytest.mark.parametrize("path", CASES)
+def test_a_bodys_resultant_is_what_its_group_knew_on_it(path):
+    # the engine's piston effort reads it (Forces.resultant) where the long road's step
+    # records kept it; by either road, at one instant
+    sol = solve(with_forces(load_scene(path), 7))
+    f = analyse(sol)
+    checked = 0
+    for rec in f.steps:
+        for body, known in zip(rec.bodies, rec.known):
+            assert _same(tuple(f.resultant(body)), tuple(known)), (rec.title, body)
+            checked += 1
+    assert checked >= 1

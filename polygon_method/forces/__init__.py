@@ -39,7 +39,7 @@ from .bodies import Ledger, Singular, centre, cross, gather
 from .core import force_plan
 from .records import (FRAME, Contact, Couple, Forces, ForceStep, FreeBody, GuideForce,
                       Inertia, PinForce, Side, block, couple_label, force_value, forces_dict,
-                      number_sub, quick_forces, side_label)
+                      number_sub, side_label)
 
 #: the force step of each kind of kinematic step: its room (``owns(st)``: the bodies its
 #: points act on; ``step(st, P, ledger, owners)``: its pin forces; ``covers(st)``, where
@@ -131,18 +131,31 @@ def analyse(motion) -> Forces:
     fp = force_plan(scene, plan)
     if not fp.quick:
         whole = _long(motion, fp)
-        return Forces(*whole[:7], lambda: whole[7:10], lambda: whole[10:])
-    pins, guides, effort, second, (fx, fy, m) = fp.run(motion)
-    name, kind = fp.driver
-    return quick_forces(effort, (fx, fy), m, name, kind, second, fp.second,
-                        lambda: fp.records(motion, pins, guides),
-                        lambda: _long(motion, fp)[10:])
+        return Forces(*whole[:7], (_Long, whole))
+    return fp.run(motion)
+
+
+class _Long:
+    """The records of the long road, made at once (the ``source`` of its :class:`Forces`:
+    ``(_Long, the long road's tuple)``)."""
+
+    @staticmethod
+    def parts(source) -> tuple:
+        return source[1][7:10]
+
+    @staticmethod
+    def story(source) -> tuple:
+        return source[1][10:14]
+
+    @staticmethod
+    def resultant(source, body) -> tuple:
+        return source[1][14](body)
 
 
 def _long(motion, fp) -> tuple:
     """The long road, every record made: (the effort, shaking force, shaking moment, the
     driver's name and kind, a second crank's torque and link; inertia, pins, guides;
-    steps, applied, contacts, the drawings' functions)."""
+    steps, applied, contacts, the drawings' functions; body -> its known resultant)."""
     scene, plan, own = motion.scene, motion.plan, fp.own
     records_, led = gather(scene, motion, own)
     inp = scene.input
@@ -169,7 +182,8 @@ def _long(motion, fp) -> tuple:
             None if inp.second is None else scene.link(inp.second.crank).key,
             records_, tuple(pins), tuple(guides),
             tuple(steps), {k: tuple(v) for k, v in led.applied.items()}, tuple(contacts),
-            _drawing(scene, plan, motion.P, records_, pins, guides, led, torque, steps))
+            _drawing(scene, plan, motion.P, records_, pins, guides, led, torque, steps),
+            led.of)
 
 
 def _drawing(scene, plan, P, records, pins, guides, led, torque, steps) -> tuple:

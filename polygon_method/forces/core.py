@@ -28,7 +28,7 @@ import weakref
 
 from .bodies import Singular, centre, inertia_record
 from .engine import indicator_force
-from .records import FRAME, GuideForce, PinForce, block
+from .records import FRAME, GuideForce, PinForce, block, quick_forces
 
 __all__ = ["ForcePlan", "Sums", "force_plan"]
 
@@ -99,6 +99,7 @@ class ForcePlan:
                  for st in reversed(plan.steps))
         self.steps = tuple(b for b in bound if b[1] is not None)  # skip what solves nothing
         self.zeros = [0.0] * len(ix.index)
+        self.index = ix.index
         inp = scene.input
         if first.kind == "block":  # the driver the plan starts with: a block
             self.driver = (block(first.point), "block")
@@ -149,12 +150,15 @@ class ForcePlan:
                                                    ix(own.get(ind.piston, FRAME)))
 
     def run(self, motion):
-        """The numbers of the force analysis at ``motion``'s instant (or over its angles):
-        (pin forces, guide forces as tuples, the first driver's
-        effort, a second crank's torque, the frame's resultant)."""
+        """The :class:`~.records.Forces` at ``motion``'s instant (or over its angles): its
+        numbers (the effort, the shaking force and moment: the frame's sums); its records
+        made when first read, from the raw pin and guide forces kept."""
         P, A, Al = motion.P, motion.A, motion.Al
-        S = Sums(self.zeros)
-        sx, sy, sm = S.fx, S.fy, S.m
+        S = _new(Sums)  # Sums(self.zeros), one call fewer
+        z = self.zeros
+        S.fx = sx = z[:]
+        S.fy = sy = z[:]
+        S.m = sm = z[:]
         for i, pt, p, q, body, lam, mu, nm, ni, weight in self.masses:
             if pt is None:  # G and a_G: the link's image of (lam, mu), as bodies.centre
                 (px, py), (qx, qy) = P[p], P[q]
@@ -208,7 +212,26 @@ class ForcePlan:
                     effort = t
                 else:
                     second = t
-        return pins, guides, effort, second, S.of(0)
+        name, kind = self.driver
+        return quick_forces(effort, (sx[0], sy[0]), sm[0], name, kind, second, self.second,
+                            (self, motion, pins, guides, S))
+
+    # what its :class:`~.records.Forces` asks of its ``source``, (this plan, the motion, the
+    # raw pin and guide forces, the sums), when first read
+
+    def parts(self, source) -> tuple:
+        """(inertia, pins, guides) records (:meth:`records`)."""
+        return self.records(*source[1:4])
+
+    def story(self, source) -> tuple:
+        """(steps, applied, contacts, the drawings' functions): the long road's."""
+        from . import _long  # the walk with its words (this module is one of its helpers)
+        return _long(source[1], self)[10:14]
+
+    def resultant(self, source, body) -> tuple:
+        """``body``'s resultant in the sums (zero for a body with none)."""
+        i = self.index.get(body)
+        return (0.0, 0.0, 0.0) if i is None else source[4].of(i)
 
     def records(self, motion, pins, guides) -> tuple:
         """(:class:`~.records.Inertia` s, :class:`~.records.PinForce` s,
@@ -227,6 +250,7 @@ class ForcePlan:
                 tuple(GuideForce(*g) for g in guides))
 
 
+_new = object.__new__
 _PLANS: dict = {}  # id(scene) -> (weak reference to the scene, plan, ForcePlan)
 
 

@@ -36,9 +36,12 @@ def bind(st, own, ix):
 
     def run(P, S, pins, guides):
         ox, oy = P[pivot]
-        r, torque = solve(ox, oy, S.of(i))
-        S.add(0, -r[0], -r[1], ox, oy)
-        S.couple(0, -torque)  # the driver, mounted on the frame, feels -T
+        sx, sy, sm = S.fx, S.fy, S.m
+        r, torque = solve(ox, oy, (sx[i], sy[i], sm[i]))
+        fx, fy = -r[0], -r[1]  # S.add(0, fx, fy, ox, oy); S.couple(0, -torque)
+        sx[0] = sx[0] + fx
+        sy[0] = sy[0] + fy
+        sm[0] = sm[0] + (ox * fy - oy * fx) + -torque  # the driver, on the frame, feels -T
         pins.append((pivot, link, FRAME, r))
         return torque
     return run

@@ -46,7 +46,7 @@ def solve(bx, by, known1, dx, dy, known2, cx, cy, condition=True):
     if condition:
         size = ((r1x * r1x + r1y * r1y) * (r2x * r2x + r2y * r2y)) ** 0.5  # never 0
         cond = abs(det) / size
-    if any_zero(det):
+    if det == 0 if det.__class__ is float else any_zero(det):  # (no call for a float)
         return None, None, None, 0.0
     # -r1y Px + r1x Py = -M1_B ;  -r2y Px + r2x Py = M2_D
     px = (-m1b * r2x - r1x * m2d) / det
@@ -78,8 +78,14 @@ def bind(st, own, ix):
         if p is None:
             raise Singular(why)
         pins += ((c, l1, l2, p), (b, l1, ob, fb), (d, l2, od, fd))
-        S.add(ib, -fb[0], -fb[1], bx, by)
-        S.add(id_, -fd[0], -fd[1], dx, dy)
+        fx, fy = -fb[0], -fb[1]  # S.add(ib, fx, fy, bx, by), written out
+        sx[ib] = sx[ib] + fx
+        sy[ib] = sy[ib] + fy
+        sm[ib] = sm[ib] + (bx * fy - by * fx)
+        fx, fy = -fd[0], -fd[1]  # S.add(id_, fx, fy, dx, dy)
+        sx[id_] = sx[id_] + fx
+        sy[id_] = sy[id_] + fy
+        sm[id_] = sm[id_] + (dx * fy - dy * fx)
     return run
 
 

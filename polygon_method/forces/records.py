@@ -301,8 +301,10 @@ class Forces:
     couple) entries.
 
     The numbers are held; the records are made when first read (``compute only what is
-    asked for``): ``parts()`` gives (``inertia``, ``pins``, ``guides``), ``story()``
-    (``steps``, ``applied``, ``contacts``, what the drawings read)."""
+    asked for``), from ``source``: a tuple whose first item ``R`` makes them,
+    ``R.parts(source)`` (``inertia``, ``pins``, ``guides``), ``R.story(source)``
+    (``steps``, ``applied``, ``contacts``, what the drawings read) and
+    ``R.resultant(source, body)`` (:meth:`resultant`)."""
 
     input_torque: float
     shaking_force: tuple
@@ -314,17 +316,24 @@ class Forces:
     #: a second driving crank's torque (N m, ccw positive) and its link, or None
     second_torque: float | None = None
     second_crank: str | None = None
-    #: functions making the records when first read (see above)
-    parts: object = field(default=None, repr=False, compare=False)
-    story: object = field(default=None, repr=False, compare=False)
+    #: what makes the records when first read (see above)
+    source: tuple = field(default=(), repr=False, compare=False)
+
+    def resultant(self, body: str) -> tuple:
+        """``(Fx, Fy, M about the origin)`` of every force on ``body`` but those of its own
+        group's unknowns: its inertia, weight and loads, and the reactions of the groups
+        solved before its own (what its force polygon starts from; for a slider's block,
+        the piston's known forces). No group solved after a body's own acts on it: it
+        finds no point of it."""
+        return self.source[0].resultant(self.source, body)
 
     @cached_property
     def _parts(self) -> tuple:
-        return self.parts()
+        return self.source[0].parts(self.source)
 
     @cached_property
     def _story(self) -> tuple:
-        return self.story()
+        return self.source[0].story(self.source)
 
     @property
     def inertia(self) -> tuple:
@@ -392,11 +401,11 @@ class Forces:
 
 
 def quick_forces(effort, shaking_force, shaking_moment, crank, driver, second_torque,
-                 second_crank, parts, story) -> Forces:
-    """``Forces(effort, shaking_force, ...)``, its fields set at once in the instance's
+                 second_crank, source) -> Forces:
+    """``Forces(effort, shaking_force, ...)``, its fields put straight into the instance's
     dictionary (the frozen dataclass's ``__init__`` sets them one by one through
-    ``object.__setattr__``, a third of the short road's cost on a four-bar): the same
-    record."""
+    ``object.__setattr__``: three times as long, a sixth of the short road's cost on a
+    four-bar): the same record."""
     f = _new(Forces)
     d = f.__dict__
     d["input_torque"] = effort
@@ -406,8 +415,7 @@ def quick_forces(effort, shaking_force, shaking_moment, crank, driver, second_to
     d["driver"] = driver
     d["second_torque"] = second_torque
     d["second_crank"] = second_crank
-    d["parts"] = parts
-    d["story"] = story
+    d["source"] = source
     return f
 
 
