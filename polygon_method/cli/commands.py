@@ -211,7 +211,9 @@ def _cmd_page(args) -> int:
         print(f"warning: {w}", file=sys.stderr)
     write_outputs(targets, [(html, False)])
     from ..polygons.scales import display_unit
-    cycle = "over a full turn" if fr.full_turn else \
+    turns = fr.res.domain.turns
+    cycle = ("over a full turn" if turns == 1 else f"over {turns} turns (the motion's "
+             "period)") if fr.full_turn else \
         f"over {fr.sol.plan.steps[0].travel} ({fr.limits_text})" \
         if not fr.sol.plan.steps[0].periodic else \
         f"between the limit positions ({fr.limits_text})"
@@ -283,7 +285,17 @@ def _requested_angles(args, scene=None):
         raise SceneError(f"--steps must be at least 1, got {n}")
     if n > 100_000_000:
         raise SceneError(f"--steps {n} is too many (at most 10^8)")
-    return np.linspace(0.0, 2.0 * math.pi, n, endpoint=False)
+    turns = _period_turns(scene) if scene is not None else 1  # N a turn, over the period
+    return np.linspace(0.0, 2.0 * math.pi * turns, n * turns, endpoint=False)
+
+
+def _period_turns(scene) -> int:
+    """How many turns of the crank the motion takes to repeat (a wheel turning a fraction
+    of a turn more per turn of the crank: several), 1 where nothing rolls."""
+    if not getattr(scene, "rolling", ()):
+        return 1
+    from ..solver.tracking import Sweeper
+    return Sweeper(scene).domain.turns
 
 
 def _requested_places(args, scene, ranged):

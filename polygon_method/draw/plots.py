@@ -89,8 +89,9 @@ def _axis(res: SweepResult) -> tuple:
     order = np.argsort(deg, kind="stable") if np.any(np.diff(deg) < 0) else slice(None)
     x = deg[order]
     if dom.full_turn and len(x):  # the scene's angle, shown in the plotted range
-        k = math.floor((x.min() - t0) / 360.0 + 1.0)
-        t0 = t0 + 360.0 * k if t0 + 360.0 * k <= x.max() + 1e-9 else t0 + 360.0 * (k - 1)
+        per = 360.0 * dom.turns  # the motion's period (a turn, or several)
+        k = math.floor((x.min() - t0) / per + 1.0)
+        t0 = t0 + per * k if t0 + per * k <= x.max() + 1e-9 else t0 + per * (k - 1)
     gaps = np.nonzero(np.diff(x) > 1.5 * np.median(np.diff(x)))[0] + 1 if len(x) > 2 else []
     x = np.insert(x, gaps, np.nan)  # no line across angles left out
     show = degrees_fn(dom) if dom.full_turn or not dom.periodic else (

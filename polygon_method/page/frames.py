@@ -124,7 +124,7 @@ def frame_angles(scene, n: int, domain) -> tuple[np.ndarray, int]:
     t0 = scene.input.angle
     if domain.full_turn:
         sense = -1.0 if scene.input.omega < 0 else 1.0
-        return t0 + sense * (2 * math.pi / n) * np.arange(n), 0
+        return t0 + sense * (domain.period / n) * np.arange(n), 0
     lo, hi = domain.lo, domain.hi
     pad = INSIDE * (hi - lo)
     th = np.linspace(lo + pad, hi - pad, max(n - 1, 1))

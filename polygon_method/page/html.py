@@ -121,7 +121,9 @@ def _cycle_words(fr: Frames) -> str:
     """What the frames go over: a full turn, a block's travel or the range between the crank's
     limit positions (and what the polygons do near its ends)."""
     block = not fr.sol.plan.steps[0].periodic  # a block driven along its guide
-    return "a full turn of the crank" if fr.full_turn else \
+    turns = fr.res.domain.turns
+    return ("a full turn of the crank" if turns == 1 else f"{turns} turns of the crank (the "
+            "motion repeats only after them)") if fr.full_turn else \
         f"the block's travel ({fr.limits_text}): near an end where the mechanism stops " \
         "assembling the polygons grow without bound and run off their panels" if block else \
         f"the range between the limit positions ({fr.limits_text}): the crank cannot " \

@@ -170,18 +170,26 @@ class RollingWheel(Step):
     def params(self):
         return self.dims
 
-    def dimensions(self, scene, bodies):
+    #: its dimensions read the positions at the stated instant: on a line its centre's
+    #: place, on a circle or a gear the centre distance and the arm's and the gear's angles
+    instant_dimensions = True
+
+    def dimensions(self, scene, bodies, P=None):
         pr = pair_of(scene, self.wheel)
         if self.on == "line":
-            raise SceneError(f"wheel {self.wheel} rolls on a line: variants of such a scene are "
-                             "not supported yet", key=f"[rolling] {self.wheel}",
-                             file=scene.file)
+            if P is None:
+                raise SceneError(f"wheel {self.wheel} rolls on a line: its dimensions need "
+                                 "its centre's place at the stated instant",
+                                 key=f"[rolling] {self.wheel}", file=scene.file)
+            (cx, cy), (tx, ty), (mx, my) = P[pr.centre], pr.through, pr.m
+            s0 = (cx - tx) * -my + (cy - ty) * mx
+            return wheel_params(scene, bodies, pr, s0=s0)
         two = scene.input.second
         kb_rate = self.kb_rate
         if two is not None and self.base == scene.link(two.crank).key:
             kb_rate = two.omega / scene.input.omega  # the ratio of this scene's speeds
         return wheel_params(scene, bodies, pr, kd_rate=self.kd_rate, kb_rate=kb_rate,
-                       base_free=self.base_free)
+                            base_free=self.base_free, P=P)
 
     def drawn(self, prm, pencil, P):
         return (prm[0] + pencil(),) + tuple(prm[1:])
@@ -511,7 +519,8 @@ class RollingWheel(Step):
                     f"{math.hypot(*sol.V[C]):.4g} / {r:.4g} = {sense}")
         O = self.base_centre
         moving = math.hypot(*sol.V[O]) > 0.0
-        return ("no slip: the wheel's point at the pitch point I moves as the gear's, v_I = "
+        return ("equal velocities at the pitch point (no slip): the wheel's point at I moves as "
+                "the gear's, v_I = "
                 + (f"v_{O} + " if moving else "")
                 + f"omega_{self.base} x {O}I = {math.hypot(*vI):.4g} m/s; "
                 f"omega_{W} = (v_I - v_{C}) / {C}I, perpendicular to {C}I, = {sense}")

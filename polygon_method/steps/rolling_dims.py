@@ -63,7 +63,7 @@ def turned(dx, dy, a0, ctx, step, what):
     >>> round(turned(0.0, 1.0, 0.0, type("C", (), {"array": False})(), None, "x"), 12)
     1.570796326795
     """
-    c, s_ = math.cos(a0), math.sin(a0)
+    c, s_ = (ctx.cos(a0), ctx.sin(a0)) if ctx.array else (math.cos(a0), math.sin(a0))
     x, y = c * dx + s_ * dy, c * dy - s_ * dx
     if ctx.array:
         t = ctx.np.arctan2(y, x)
@@ -100,7 +100,7 @@ def wheel_params(scene, bodies, pr, *, s0=None, kd_rate=0.0, kb_rate=0.0, P=None
     elif kd_rate is None or base_free is not None or pr.base_centre not in scene.ground or (
             pr.centre not in scene.ground and pr.centre != inp.tip):
         raise SceneError(f"the wheel {pr.wheel}'s arm or gear turns as a linkage makes it: "
-                         "variants of such a scene are not supported yet", key=where,
+                         "its dimensions need the positions at the stated instant", key=where,
                          file=scene.file)
     else:
         O = scene.ground[pr.base_centre]
