@@ -86,7 +86,8 @@ def _fd(plan, th0, name, h=1e-3):
     return d1, d2
 
 
-@pytest.mark.parametrize("name", ["rolling_rack_on_rocker", "rolling_ring_output"])
+@pytest.mark.parametrize("name", ["rolling_rack_on_rocker", "rolling_ring_output",
+                                  "rolling_ring_on_rocker"])
 @pytest.mark.parametrize("turn", [0.0, 0.4, -0.7, 1.5])
 def test_positions_differentiated_give_the_velocity_and_acceleration(name, turn):
     """The rack's place followed from the rocker's turn, and the ring's angle from the
@@ -329,6 +330,9 @@ VARIED = [("rolling_wheel_rod_slider", WORKED,
           ("rolling_planet_on_rocker", TEXTBOOK,
            '\n[variants]\nAB = { from = 45, to = 55, step = 5 }\n'
            'angle = { from = 40, to = 80, step = 10 }\n'),
+          ("rolling_ring_on_rocker", TEXTBOOK,
+           '\n[variants]\nAB = { from = 45, to = 55, step = 5 }\n'
+           'angle = { from = 40, to = 80, step = 10 }\n'),
           ("ring_gear_output", WORKED,
            '\n[variants]\nangle = { from = 0, to = 350, step = 10 }\n'
            'speed = ["60 rpm ccw", "90 rpm ccw", "120 rpm ccw"]\n')]
@@ -365,3 +369,36 @@ def test_variants_of_rolling_scenes_each_match_the_reference(name, folder, table
         for p in v.scene.point_names:
             got = [float(np.ravel(c)[k] if np.ndim(c) else c) for c in m.P[p]]
             assert math.dist(got, sol.P[p]) <= 1e-12, (v.id, p)
+
+
+def test_a_ring_whose_contact_acceleration_is_taken_as_zero_is_diagnosed():
+    """The ring's point at the pitch point has omega_ring^2 r_ring towards O (the arm
+    steady); a student's 0 is named: the two gears' velocities are equal there, not their
+    accelerations."""
+    from polygon_method.check import check_answers
+    text = (WORKED / "ring_gear_output.toml").read_text(encoding="utf-8").split("[answers]")[0]
+    sc = parse_scene(text + '[answers]\n"aI_O-Q" = "0 m/s^2"\n')
+    (v,) = check_answers(solve(sc))
+    w = 120 * 2 * math.pi / 60 * (1 + 40 / 80)
+    assert v.correct == pytest.approx(w * w * 0.08, rel=1e-12)
+    assert not v.ok and v.mistake == "contact_acceleration_zero"
+    assert "velocities equal at the pitch point" in v.diagnosis
+
+
+def test_a_ring_on_a_rockers_planet_is_followed_over_the_whole_turn():
+    """The planet on the rocker turns three times as far as the rocker: read from its own
+    points its angle could not be followed past half a turn. The ring takes the planet's
+    turn from its formula instead, so the sweep covers the crank's whole turn, and at each
+    angle the ring turns (1 + R_s/r_ring) times the rocker (Willis, the sun fixed), from
+    the stated instant."""
+    from polygon_method.motion.sweeps import sweep
+    sc = load_scene(TEXTBOOK / "rolling_ring_on_rocker.toml")
+    res = sweep(sc)
+    assert len(res.theta) == 360 and res.domain.full_turn
+    (cx, cy), (qx, qy) = res.P["C"], res.P["Q"]
+    rocker = np.unwrap(np.arctan2(np.asarray(cy), np.asarray(cx) - 0.12))
+    ring = np.unwrap(np.arctan2(np.asarray(qy), np.asarray(qx) - 0.12))
+    th = np.asarray(res.theta)
+    k0 = int(np.argmin(np.abs(th - sc.input.angle)))
+    # (1e-9 rad: next to the rod's change point the sweep takes its values from both sides)
+    assert np.allclose(ring - ring[k0], 1.5 * (rocker - rocker[k0]), rtol=0, atol=1e-9)

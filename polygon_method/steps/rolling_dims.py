@@ -10,7 +10,8 @@ import math
 from ..common.errors import AssemblyError, SceneError
 from ..common.numbers import in_units
 
-__all__ = ["GAP", "HALF", "pair_of", "rate", "arm_rate", "angle_of", "turned", "wheel_params"]
+__all__ = ["GAP", "HALF", "pair_of", "rate", "arm_rate", "angle_of", "turned", "wheel_params",
+           "follow_params"]
 
 #: how far (relative to the radii) a wheel's centre may leave its line or pitch circle
 GAP = 1e-9
@@ -77,6 +78,15 @@ def turned(dx, dy, a0, ctx, step, what):
                             "instant: its angle cannot be followed past half a turn (solve the "
                             "scene at that instant)", step=step.label)
     return t
+
+
+def follow_params(scene, bodies, pr, kb_rate, P):
+    """(kd, K, psi0) of the wheel of pair ``pr`` whose angle follows its arm (a planet on a
+    rocker), for a gear meshing with it: its turn from the stated instant is ``K (theta -
+    theta0) + kd (psi - psi0)``, psi its line of centres' direction (not read from its own
+    points, which could not tell a turn past half of one)."""
+    prm = wheel_params(scene, bodies, pr, kd_rate=None, kb_rate=kb_rate, P=P)
+    return (prm[3], prm[7], prm[10])
 
 
 def wheel_params(scene, bodies, pr, *, s0=None, kd_rate=0.0, kb_rate=0.0, P=None, base_free=None):
