@@ -205,7 +205,7 @@ class Plan:
         """The dimensions of ``scene``, a mechanism of this plan's shape."""
         bodies = Bodies(scene)
         inp = scene.input
-        if any(st.instant_dimensions for st in self.steps):
+        if any(getattr(st, "instant_dimensions", False) for st in self.steps):
             steps = self._instant_dimensions(scene, bodies)
         else:
             steps = tuple(st.dimensions(scene, bodies) for st in self.steps)
@@ -214,7 +214,8 @@ class Plan:
 
     def _instant_dimensions(self, scene: Scene, bodies) -> tuple:
         """Each step's dimensions, a step that needs the positions at the scene's instant
-        (``instant_dimensions``: a wheel's place along its line, its arm's angle) given
+        (a kind with ``instant_dimensions`` true, its ``dimensions(scene, bodies, P=...)``
+        reading them: a wheel's place along its line, its arm's angle) given
         them from the steps before it, placed at ``scene``'s own dimensions and crank
         angle. Where those cannot be placed (a candidate variant that does not assemble
         there), the plan's own dimensions stand in for the step's: the evaluation of the
@@ -225,7 +226,7 @@ class Plan:
                   {}, ctx)
         out, placed, broken = [], 0, False
         for k, st in enumerate(self.steps):
-            if not st.instant_dimensions:
+            if not getattr(st, "instant_dimensions", False):
                 out.append(st.dimensions(scene, bodies))
                 continue
             try:
@@ -391,10 +392,12 @@ def _bodies_at(sc, point) -> tuple:
             out.append((f"barrel {cyl.key}", cyl.key))
         elif point == cyl.rod:
             out.append((f"rod {cyl.key}", cyl.key))
+    blocks = sc.blocks  # (a driving wheel's centre path: no block there)
     for sl in sc.slots(point):  # a block; a peg in two slots has a block in each
+        if sl not in blocks:
+            continue
         if isinstance(sl, FixedPath):
-            if not sl.wheel:  # (a driving wheel's centre path: no block there)
-                out.append((f"block {sl.key}", None))
+            out.append((f"block {sl.key}", None))
         elif isinstance(sl, GuideSlider):
             out.append((f"block {sl.key}", sc.link(sl.guide).key))
         else:  # in the slot of a translating yoke: the block does not turn
