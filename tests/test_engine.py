@@ -333,7 +333,7 @@ def test_the_sweep_writes_the_turning_moment_and_the_summary_the_flywheel():
 
 
 def test_the_sweep_of_a_four_stroke_runs_over_its_720_degree_cycle(tmp_path, capsys):
-    """`sweep --steps N --csv` of a four-stroke engine: N angles over its two turns (the
+    """`sweep --steps N --csv` of a four-stroke engine: N angles a turn over its two turns (the
     indicator table's 0 to 720 deg), the turning moment at each the closed form's under
     the pressure interpolated here: at 90 deg (suction) and 450 deg (expansion) they
     differ."""
@@ -344,7 +344,7 @@ def test_the_sweep_of_a_four_stroke_runs_over_its_720_degree_cycle(tmp_path, cap
     f.write_text(ENGINE.format(r=150, l=600, theta=60, rpm=1800, m=2.5, side="right",
                                sense="ccw") + ind)
     out = tmp_path / "e.csv"
-    assert main(["sweep", str(f), "--steps", "8", "--csv", str(out)]) == 0
+    assert main(["sweep", str(f), "--steps", "4", "--csv", str(out)]) == 0
     capsys.readouterr()
     rows = [r.split(",") for r in out.read_text().splitlines()]
     i = rows[0].index("turning_moment [N m]")

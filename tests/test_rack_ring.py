@@ -86,7 +86,8 @@ def _fd(plan, th0, name, h=1e-3):
     return d1, d2
 
 
-@pytest.mark.parametrize("name", ["rolling_rack_on_rocker", "rolling_ring_output"])
+@pytest.mark.parametrize("name", ["rolling_rack_on_rocker", "rolling_ring_output",
+                                  "rolling_ring_on_rocker"])
 @pytest.mark.parametrize("turn", [0.0, 0.4, -0.7, 1.5])
 def test_positions_differentiated_give_the_velocity_and_acceleration(name, turn):
     """The rack's place followed from the rocker's turn, and the ring's angle from the
@@ -252,3 +253,152 @@ def test_worked_problems_check_against_their_answers(name):
     sc = load_scene(WORKED / f"{name}.toml")
     got = check_answers(solve(sc))
     assert len(got) >= 5 and all(v.ok for v in got), [v for v in got if not v.ok]
+
+
+def _ring_slider_x(th, th0, psi0, w_ratio, r, ell, e):
+    """The block S of the ring's rod by hand: the ring's point Q at psi = psi0 + K (theta -
+    theta0) on its pitch circle r about O (the tabular method's K = 1 + T_s/T_r), S on the
+    line y = e, ell from Q, to the right."""
+    psi = psi0 + w_ratio * (th - th0)
+    qx, qy = r * np.cos(psi), r * np.sin(psi)
+    return qx + np.sqrt(ell * ell - (qy - e) ** 2)
+
+
+def test_sweep_of_an_epicyclic_train_covers_its_whole_period():
+    """The ring turns 4/3 times per turn of the arm: the mechanism is back after 3 turns.
+    The default sweep takes every degree of the 3 turns, the summary says so, and the
+    block's place at each of the 1080 angles is the one by hand (not a turn's values
+    taken again: the places a turn apart differ)."""
+    from polygon_method.linkage.summary import summarize
+    from polygon_method.motion.sweeps import sweep
+    sc = load_scene(TEXTBOOK / "rolling_ring_output.toml")
+    res = sweep(sc)
+    assert res.domain.turns == 3 and len(res.theta) == 1080
+    x = np.asarray(res.P["S"][0], dtype=float)
+    want = _ring_slider_x(np.asarray(res.theta), sc.input.angle, math.radians(120), 4 / 3,
+                          0.09, 0.2, -0.04)
+    assert np.max(np.abs(x - want)) <= 1e-12
+    assert np.max(np.abs(x[:360] - x[360:720])) > 1e-3  # a turn apart: not the same
+    summary = summarize(sc)
+    assert "the motion repeats every 3 turns" in summary.text()
+    assert summary.requested == 1080
+    s = summary.extreme("s_S")
+    dense = _ring_slider_x(np.linspace(0, 6 * math.pi, 200001), 0.0, 0.0, 4 / 3, 0.09, 0.2,
+                           -0.04)
+    assert s.maximum == pytest.approx(dense.max(), rel=1e-9)
+    assert s.minimum == pytest.approx(dense.min(), rel=1e-9)
+
+
+def test_a_stated_range_over_several_turns_is_taken_as_stated():
+    """Angles asked over three turns are taken on their own turns (the period is three),
+    so the sweep's places are the ones by hand at each angle asked."""
+    from polygon_method.motion.sweeps import sweep
+    sc = load_scene(TEXTBOOK / "rolling_ring_output.toml")
+    th = np.radians(np.arange(-400.0, 700.0, 7.0))
+    res = sweep(sc, th)
+    x = np.asarray(res.P["S"][0], dtype=float)
+    want = _ring_slider_x(th, sc.input.angle, math.radians(120), 4 / 3, 0.09, 0.2, -0.04)
+    assert len(res.theta) == len(th) and np.max(np.abs(x - want)) <= 1e-12
+
+
+def test_a_driving_wheel_swept_over_three_turns_of_its_travel():
+    """A wheel rolling on the ground as the driver, its travel three turns (2 pi r each):
+    the sweep runs over all of it, and the block's place at every place of the centre is
+    the one by hand (no slip: phi = phi0 - s / r; B on the ground, the rod's length from A)."""
+    from polygon_method.motion.sweeps import sweep
+    text = (WORKED / "rolling_wheel_driver.toml").read_text(encoding="utf-8")
+    text = text.split("[answers]")[0].replace('alpha_CA = "2 rad/s^2 ccw"',
+                                              'alpha_CA = "2 rad/s^2 ccw"\ntravel = [0, 5655]')
+    sc = parse_scene(text)
+    res = sweep(sc)
+    s = np.asarray(res.theta, dtype=float)
+    assert s.min() == pytest.approx(0.0, abs=1e-12) and s.max() == pytest.approx(5.655)
+    r, ell = 0.3, 1.2
+    phi = math.radians(135) - s / r
+    ax, ay = s + r * np.cos(phi), r + r * np.sin(phi)
+    want = ax + np.sqrt(ell * ell - ay * ay)
+    assert np.max(np.abs(np.asarray(res.P["B"][0], dtype=float) - want)) <= 1e-12
+    assert any("end of its travel" in lp.why for lp in res.domain.limits)
+
+
+VARIED = [("rolling_wheel_rod_slider", WORKED,
+           '\n[variants]\nOA = { from = 50, to = 70, step = 5 }\n'
+           'angle = { from = 30, to = 60, step = 5 }\n'),
+          ("rack_rocker_pinion", WORKED,
+           '\n[variants]\nAB = { from = 35, to = 45, step = 5 }\n'
+           'angle = { from = 30, to = 90, step = 10 }\n'),
+          ("rolling_planet_on_rocker", TEXTBOOK,
+           '\n[variants]\nAB = { from = 45, to = 55, step = 5 }\n'
+           'angle = { from = 40, to = 80, step = 10 }\n'),
+          ("rolling_ring_on_rocker", TEXTBOOK,
+           '\n[variants]\nAB = { from = 45, to = 55, step = 5 }\n'
+           'angle = { from = 40, to = 80, step = 10 }\n'),
+          ("ring_gear_output", WORKED,
+           '\n[variants]\nangle = { from = 0, to = 350, step = 10 }\n'
+           'speed = ["60 rpm ccw", "90 rpm ccw", "120 rpm ccw"]\n')]
+
+
+@pytest.mark.parametrize("name,folder,table", VARIED, ids=[v[0] for v in VARIED])
+def test_variants_of_rolling_scenes_each_match_the_reference(name, folder, table):
+    """Variants of a wheel rolling on a line, a rack on a rocker's pinion, a planet on a
+    rocker and an epicyclic train's ring: each variant's solution is its own scene's by
+    the 50-digit constraint solve, and the screen's evaluation over all candidates at
+    once (the wheel's place and the arm's angles read at each one's instant) gives the
+    positions a plain solve gives."""
+    from mpmath import mpf
+    from polygon_method.variants import generate, screen
+    from reference import reference_solution
+    from textbook_corpus import REL, worst_error
+    text = (folder / f"{name}.toml").read_text(encoding="utf-8").split("[answers]")[0] + table
+    sc = parse_scene(text, file=f"{name}.toml")
+    made = generate(sc, 4, seed=2)
+    assert len(made.variants) == 4
+    plan = compile_plan(sc)
+    scenes = [v.scene for v in made.variants]
+    ok, _ = screen(plan, scenes, 0.0)
+    assert ok.all()
+    from polygon_method.solver.kinematics import evaluate as ev
+    from polygon_method.variants import _stack_dims
+    m = ev(plan, dims=_stack_dims([plan.dimensions(s) for s in scenes]), array=True)
+    for k, v in enumerate(made.variants):
+        sol = solve(v.scene)
+        ref = reference_solution(v.scene, sol.P)
+        assert ref["residual"] < mpf("1e-40")
+        err, what = worst_error(v.scene, sol, ref)
+        assert err < REL, f"variant {v.id}: {what}: relative error {err:.2e}"
+        for p in v.scene.point_names:
+            got = [float(np.ravel(c)[k] if np.ndim(c) else c) for c in m.P[p]]
+            assert math.dist(got, sol.P[p]) <= 1e-12, (v.id, p)
+
+
+def test_a_ring_whose_contact_acceleration_is_taken_as_zero_is_diagnosed():
+    """The ring's point at the pitch point has omega_ring^2 r_ring towards O (the arm
+    steady); a student's 0 is named: the two gears' velocities are equal there, not their
+    accelerations."""
+    from polygon_method.check import check_answers
+    text = (WORKED / "ring_gear_output.toml").read_text(encoding="utf-8").split("[answers]")[0]
+    sc = parse_scene(text + '[answers]\n"aI_O-Q" = "0 m/s^2"\n')
+    (v,) = check_answers(solve(sc))
+    w = 120 * 2 * math.pi / 60 * (1 + 40 / 80)
+    assert v.correct == pytest.approx(w * w * 0.08, rel=1e-12)
+    assert not v.ok and v.mistake == "contact_acceleration_zero"
+    assert "velocities equal at the pitch point" in v.diagnosis
+
+
+def test_a_ring_on_a_rockers_planet_is_followed_over_the_whole_turn():
+    """The planet on the rocker turns three times as far as the rocker: read from its own
+    points its angle could not be followed past half a turn. The ring takes the planet's
+    turn from its formula instead, so the sweep covers the crank's whole turn, and at each
+    angle the ring turns (1 + R_s/r_ring) times the rocker (Willis, the sun fixed), from
+    the stated instant."""
+    from polygon_method.motion.sweeps import sweep
+    sc = load_scene(TEXTBOOK / "rolling_ring_on_rocker.toml")
+    res = sweep(sc)
+    assert len(res.theta) == 360 and res.domain.full_turn
+    (cx, cy), (qx, qy) = res.P["C"], res.P["Q"]
+    rocker = np.unwrap(np.arctan2(np.asarray(cy), np.asarray(cx) - 0.12))
+    ring = np.unwrap(np.arctan2(np.asarray(qy), np.asarray(qx) - 0.12))
+    th = np.asarray(res.theta)
+    k0 = int(np.argmin(np.abs(th - sc.input.angle)))
+    # (1e-9 rad: next to the rod's change point the sweep takes its values from both sides)
+    assert np.allclose(ring - ring[k0], 1.5 * (rocker - rocker[k0]), rtol=0, atol=1e-9)

@@ -328,6 +328,13 @@ class _Diagnoser:
              "no slip makes its velocity zero, not its acceleration (omega^2 r towards the "
              "centre)")
         if ans.kind == "aI":
+            wheel = sol.scene.link("-".join(ans.names)).key
+            st = next((s for s in sol.plan.steps if wheel in s.links), None)
+            got = st.contact_motion(sol) if st is not None else None
+            if got is not None and math.hypot(*got[1]) > 0.0:  # a moving gear: v_I not zero
+                c = (c[0], "the contact point's acceleration taken as zero: no slip makes "
+                     "the two gears' velocities equal at the pitch point, not their "
+                     "accelerations (each has its own centripetal component)")
             return [_Candidate(0.0, *c)]
         out = []
         for st in sol.plan.steps if len(ans.names) == 1 else ():

@@ -88,10 +88,12 @@ def _axis(res: SweepResult) -> tuple:
     order = np.argsort(deg, kind="stable") if np.any(np.diff(deg) < 0) else slice(None)
     x = deg[order]
     if dom.full_turn and len(x):  # the scene's angle, shown in the plotted range: within
-        # its cycle where the range holds it (a four-stroke's 390 deg is not 30), else a turn
-        for period in dict.fromkeys((math.degrees(sc.cycle), 360.0)):
-            k = math.floor((x.min() - t0) / period + 1.0)
-            at = t0 + period * k if t0 + period * k <= x.max() + 1e-9 else t0 + period * (k - 1)
+        # the motion's period where the range holds it (a four-stroke's 390 deg is not 30;
+        # a planet back after several turns), else within a turn
+        period = max(math.degrees(sc.cycle), 360.0 * dom.turns)
+        for per in dict.fromkeys((period, 360.0)):
+            k = math.floor((x.min() - t0) / per + 1.0)
+            at = t0 + per * k if t0 + per * k <= x.max() + 1e-9 else t0 + per * (k - 1)
             if x.min() - 1e-9 <= at <= x.max() + 1e-9:
                 break
         t0 = at

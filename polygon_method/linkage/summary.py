@@ -301,7 +301,7 @@ class _Reducer:
                 (tm,), _ = dom.map(np.array([row[5]]))
                 d = cp.theta - float(tm)
                 if dom.full_turn:
-                    d = (d + math.pi) % TWO_PI - math.pi
+                    d = (d + 0.5 * dom.period) % dom.period - 0.5 * dom.period
                 if abs(d) < near and lo <= row[5] + d <= hi:
                     row[4], row[5] = 0.0, row[5] + d
 
@@ -454,8 +454,8 @@ def summarize(scene: Scene, angles=None, *, chunk: int = CHUNK, refine: bool = T
     Each extreme found between samples is then refined by zooming in on it."""
     if angles is None and not compile_plan(scene).steps[0].periodic:
         angles = stroke_places(scene)  # a driving block: its travel
-    th_req = sweep_angles(angles)
     sw = Sweeper(scene)
+    th_req = sweep_angles(angles, sw.domain.turns)
     sw.stated_branch()
     ok = angles_ok(sw, th_req)
     th = th_req if ok is None else th_req[ok]

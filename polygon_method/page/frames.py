@@ -134,7 +134,7 @@ def frame_angles(scene, n: int, domain) -> tuple[np.ndarray, int]:
     t0 = scene.input.angle
     if domain.full_turn:
         sense = -1.0 if scene.input.omega < 0 else 1.0
-        return t0 + sense * (scene.cycle / n) * np.arange(n), 0
+        return t0 + sense * (cycle_of(scene, domain) / n) * np.arange(n), 0
     lo, hi = domain.lo, domain.hi
     pad = INSIDE * (hi - lo)
     th = np.linspace(lo + pad, hi - pad, max(n - 1, 1))
@@ -166,7 +166,14 @@ def frames(scene, n: int = DEFAULT_FRAMES) -> Frames:
     kept = res.theta
     if len(kept) != len(th):  # angles at a singular position were left out
         start = int(np.argmin(np.abs(kept - scene.input.angle)))
-    return Frames(res, sol, scales, start, bool(domain.full_turn), scene.cycle)
+    return Frames(res, sol, scales, start, bool(domain.full_turn), cycle_of(scene, domain))
+
+
+def cycle_of(scene, domain) -> float:
+    """The crank's angle (rad) the frames of a full turn go over: the motion's period where
+    it repeats only after several turns (a gear train: ``domain.period``), else the scene's
+    cycle (two turns for a four-stroke engine)."""
+    return domain.period if domain.turns > 1 else scene.cycle
 
 
 def need_frames(fr) -> Frames:

@@ -122,7 +122,9 @@ def _cycle_words(fr: Frames) -> str:
     limit positions (and what the polygons do near its ends)."""
     block = not fr.sol.plan.steps[0].periodic  # a block driven along its guide
     turns = round(fr.cycle_degrees / 360)
+    gears = fr.res.domain.turns > 1  # a gear train back only after several turns
     return ("a full turn of the crank" if turns == 1 else
+            f"{turns} turns of the crank (the motion repeats only after them)" if gears else
             f"the engine's whole cycle, {turns} turns of the crank "
             f"({fr.cycle_degrees:g}°)") if fr.full_turn else \
         f"the block's travel ({fr.limits_text}): near an end where the mechanism stops " \

@@ -130,13 +130,21 @@ class RackStep(Step):
     def params(self):
         return self.dims
 
-    def dimensions(self, scene, bodies):
+    @property
+    def instant_dimensions(self):
+        """A pinion turned by a linkage: its angle at the stated instant is read there."""
+        return self.free is not None
+
+    def dimensions(self, scene, bodies, P=None):
         pr = next(r for r in scene.rolling if r.on == "rack" and r.rim == self.point)
-        if self.free is not None:
+        if self.free is None:
+            return _rack_params(scene, pr, self.dims[5])
+        if P is None:
             raise SceneError(f"the pinion {self.base} of rack {self.point} turns as a linkage "
-                             "makes it: variants of such a scene are not supported yet",
+                             "makes it: its dimensions need its angle at the stated instant",
                              key=f"[rolling] {self.point}", file=scene.file)
-        return _rack_params(scene, pr, self.dims[5])
+        (ox, oy), (qx, qy) = P[self.free[0]], P[self.free[1]]
+        return _rack_params(scene, pr, 0.0, angle_of(qx - ox, qy - oy))
 
     def drawn(self, prm, pencil, P):
         return (prm[0] + pencil(), prm[1] + pencil()) + tuple(prm[2:])
@@ -291,7 +299,8 @@ class RackStep(Step):
         o = "o" if ph == "velocity" else "o'"
         if ph == "velocity":
             D, w, sym = sol.V, sol.W[self.base], "v"
-            text = (f"no slip: the rack moves as the pinion's point at the pitch point I, "
+            text = (f"equal velocities at the pitch point (no slip): the rack moves as the "
+                    f"pinion's point at I, "
                     f"v_{X} = omega_{self.base} x {self.base_centre}I = {abs(w):.4g} x "
                     f"{abs(self.dims[4]):.4g} = {math.hypot(*D[X]):.4g} m/s; from {o} draw "
                     f"{o}{lab} parallel to the path")
@@ -300,7 +309,9 @@ class RackStep(Step):
             text = (f"the rack translates: a_{X} = alpha_{self.base} x {self.base_centre}I = "
                     f"{abs(al):.4g} x {abs(self.dims[4]):.4g} = {math.hypot(*D[X]):.4g} m/s^2 "
                     f"along the path (the pinion's point at I has besides the centripetal "
-                    f"omega^2 R_p towards {self.base_centre}); from {o} draw {o}{lab} "
+                    f"omega^2 R_p = {sol.W[self.base] ** 2 * abs(self.dims[4]):.4g} m/s^2 "
+                    f"towards {self.base_centre}: the contact point's acceleration is not "
+                    f"zero); from {o} draw {o}{lab} "
                     "parallel to the path")
         found = (absolute(sol, X, D, ph),
                  Vector((0.0, 0.0), D[X], f"{o}{lab}", "sliding", f"{sym}s_{X}",

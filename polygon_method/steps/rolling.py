@@ -40,7 +40,7 @@ from dataclasses import dataclass
 
 from ..common.errors import AssemblyError, SceneError
 from ..common.numbers import in_units
-from .rolling_dims import GAP, arm_rate, pair_of, rate, turned, wheel_params
+from .rolling_dims import GAP, arm_rate, follow_params, pair_of, rate, turned, wheel_params
 from .base import (Construction, Step, Vector, absolute, centripetal, image_label, pole_text,
                    relative, sub)
 
@@ -98,11 +98,18 @@ def recognise(g, name):
     else:
         kb_rate = 0.0
     kd_rate = arm_rate(g, pr.centre, O)
-    return RollingWheel(g.next_index, pr.wheel, pr.centre, name, pr.on, pr.label,
-                        wheel_params(sc, g.bodies, pr, kd_rate=kd_rate, kb_rate=kb_rate, P=g.P,
-                                base_free=base_free),
+    prm = wheel_params(sc, g.bodies, pr, kd_rate=kd_rate, kb_rate=kb_rate, P=g.P,
+                       base_free=base_free)
+    follow = None
+    if base_free is not None:  # a gear that is a wheel whose angle follows its arm: its turn
+        bst = next((s for s in g.steps if pr.base in s.links), None)  # from its formula
+        if (isinstance(bst, RollingWheel) and bst.on != "line" and bst.kd_rate is None
+                and bst.base_free is None):
+            follow = (bst.centre, bst.base_centre, bst.kb_rate)
+            prm += follow_params(sc, g.bodies, pair_of(sc, pr.base), bst.kb_rate, g.P)
+    return RollingWheel(g.next_index, pr.wheel, pr.centre, name, pr.on, pr.label, prm,
                         base=pr.base, base_centre=O, inside=pr.inside, ring=pr.ring,
-                        kd_rate=kd_rate, kb_rate=kb_rate, base_free=base_free,
+                        kd_rate=kd_rate, kb_rate=kb_rate, base_free=base_free, follow=follow,
                         unit=g.unit, uname=g.uname)
 
 
@@ -129,6 +136,10 @@ class RollingWheel(Step):
     #: angle read from them); the line of centres is read from the two centres where
     #: ``kd_rate`` is None
     base_free: tuple | None = None
+    #: where the gear is itself a wheel whose angle follows its arm (a planet on a rocker):
+    #: (its centre, its arm's fixed centre, its kb_rate); its turn is then taken from its
+    #: formula, ``K_b (theta - theta0) + kd_b (psi_b - psi0_b)`` (``dims[12:15]``)
+    follow: tuple | None = None
     unit: float = 1e-3  # the scene's length unit (m), for messages
     uname: str = "mm"
 
@@ -154,6 +165,7 @@ class RollingWheel(Step):
         if self.on == "line":
             return (self.centre,)
         more = (self.base_free[1],) if self.base_free else ()
+        more += (self.follow[1],) if self.follow else ()
         return (self.centre, self.base_centre) + more
 
     @property
@@ -170,18 +182,29 @@ class RollingWheel(Step):
     def params(self):
         return self.dims
 
-    def dimensions(self, scene, bodies):
+    #: its dimensions read the positions at the stated instant: on a line its centre's
+    #: place, on a circle or a gear the centre distance and the arm's and the gear's angles
+    instant_dimensions = True
+
+    def dimensions(self, scene, bodies, P=None):
         pr = pair_of(scene, self.wheel)
         if self.on == "line":
-            raise SceneError(f"wheel {self.wheel} rolls on a line: variants of such a scene are "
-                             "not supported yet", key=f"[rolling] {self.wheel}",
-                             file=scene.file)
+            if P is None:
+                raise SceneError(f"wheel {self.wheel} rolls on a line: its dimensions need "
+                                 "its centre's place at the stated instant",
+                                 key=f"[rolling] {self.wheel}", file=scene.file)
+            (cx, cy), (tx, ty), (mx, my) = P[pr.centre], pr.through, pr.m
+            s0 = (cx - tx) * -my + (cy - ty) * mx
+            return wheel_params(scene, bodies, pr, s0=s0)
         two = scene.input.second
         kb_rate = self.kb_rate
         if two is not None and self.base == scene.link(two.crank).key:
             kb_rate = two.omega / scene.input.omega  # the ratio of this scene's speeds
-        return wheel_params(scene, bodies, pr, kd_rate=self.kd_rate, kb_rate=kb_rate,
-                       base_free=self.base_free)
+        prm = wheel_params(scene, bodies, pr, kd_rate=self.kd_rate, kb_rate=kb_rate,
+                           base_free=self.base_free, P=P)
+        if self.follow is not None:
+            prm += follow_params(scene, bodies, pair_of(scene, self.base), self.follow[2], P)
+        return prm
 
     def drawn(self, prm, pencil, P):
         return (prm[0] + pencil(),) + tuple(prm[1:])
@@ -215,7 +238,12 @@ class RollingWheel(Step):
         if self.kd_rate is None:
             ox, oy = P[self.base_centre]
             phi = phi + prm[3] * self._turned(cx - ox, cy - oy, prm[10], ctx)
-        if self.base_free is not None:
+        if self.follow is not None:  # the gear's turn from its own formula
+            (bx, by), (qx, qy) = P[self.follow[0]], P[self.follow[1]]
+            turn = prm[13] * (ctx.theta - prm[6]) + prm[12] * self._turned(
+                bx - qx, by - qy, prm[14], ctx)
+            phi = phi + prm[4] * turn
+        elif self.base_free is not None:
             (bx, by), (qx, qy) = P[self.base_free[0]], P[self.base_free[1]]
             phi = phi + prm[4] * self._turned(qx - bx, qy - by, prm[11], ctx)
         return phi
@@ -511,7 +539,8 @@ class RollingWheel(Step):
                     f"{math.hypot(*sol.V[C]):.4g} / {r:.4g} = {sense}")
         O = self.base_centre
         moving = math.hypot(*sol.V[O]) > 0.0
-        return ("no slip: the wheel's point at the pitch point I moves as the gear's, v_I = "
+        return ("equal velocities at the pitch point (no slip): the wheel's point at I moves as "
+                "the gear's, v_I = "
                 + (f"v_{O} + " if moving else "")
                 + f"omega_{self.base} x {O}I = {math.hypot(*vI):.4g} m/s; "
                 f"omega_{W} = (v_I - v_{C}) / {C}I, perpendicular to {C}I, = {sense}")

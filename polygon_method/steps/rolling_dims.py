@@ -10,7 +10,8 @@ import math
 from ..common.errors import AssemblyError, SceneError
 from ..common.numbers import in_units
 
-__all__ = ["GAP", "HALF", "pair_of", "rate", "arm_rate", "angle_of", "turned", "wheel_params"]
+__all__ = ["GAP", "HALF", "pair_of", "rate", "arm_rate", "angle_of", "turned", "wheel_params",
+           "follow_params"]
 
 #: how far (relative to the radii) a wheel's centre may leave its line or pitch circle
 GAP = 1e-9
@@ -63,7 +64,7 @@ def turned(dx, dy, a0, ctx, step, what):
     >>> round(turned(0.0, 1.0, 0.0, type("C", (), {"array": False})(), None, "x"), 12)
     1.570796326795
     """
-    c, s_ = math.cos(a0), math.sin(a0)
+    c, s_ = (ctx.cos(a0), ctx.sin(a0)) if ctx.array else (math.cos(a0), math.sin(a0))
     x, y = c * dx + s_ * dy, c * dy - s_ * dx
     if ctx.array:
         t = ctx.np.arctan2(y, x)
@@ -77,6 +78,15 @@ def turned(dx, dy, a0, ctx, step, what):
                             "instant: its angle cannot be followed past half a turn (solve the "
                             "scene at that instant)", step=step.label)
     return t
+
+
+def follow_params(scene, bodies, pr, kb_rate, P):
+    """(kd, K, psi0) of the wheel of pair ``pr`` whose angle follows its arm (a planet on a
+    rocker), for a gear meshing with it: its turn from the stated instant is ``K (theta -
+    theta0) + kd (psi - psi0)``, psi its line of centres' direction (not read from its own
+    points, which could not tell a turn past half of one)."""
+    prm = wheel_params(scene, bodies, pr, kd_rate=None, kb_rate=kb_rate, P=P)
+    return (prm[3], prm[7], prm[10])
 
 
 def wheel_params(scene, bodies, pr, *, s0=None, kd_rate=0.0, kb_rate=0.0, P=None, base_free=None):
@@ -100,7 +110,7 @@ def wheel_params(scene, bodies, pr, *, s0=None, kd_rate=0.0, kb_rate=0.0, P=None
     elif kd_rate is None or base_free is not None or pr.base_centre not in scene.ground or (
             pr.centre not in scene.ground and pr.centre != inp.tip):
         raise SceneError(f"the wheel {pr.wheel}'s arm or gear turns as a linkage makes it: "
-                         "variants of such a scene are not supported yet", key=where,
+                         "its dimensions need the positions at the stated instant", key=where,
                          file=scene.file)
     else:
         O = scene.ground[pr.base_centre]

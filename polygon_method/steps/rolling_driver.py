@@ -157,7 +157,9 @@ class WheelDriver(BlockDriver):
         return f"the rolling wheel {self.wheel} is never singular (condition {c:.2g})"
 
     def limit_why(self) -> str:
-        return f"the wheel {self.wheel} can roll no further: the mechanism does not assemble"
+        return (f"the wheel {self.wheel} has rolled to the end of its travel (one turn of the "
+                "wheel from the stated place, unless [input] travel states the stretch: "
+                "several turns, if the problem asks)")
 
     def bodies(self):
         return (self.wheel,)
