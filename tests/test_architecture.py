@@ -459,6 +459,8 @@ def test_a_condition_is_read_as_an_angle_in_one_place():
 
 #: modules allowed past 600 lines, each with why (none may be added without a reason)
 LONG_MODULES = {
+    "steps/base.py": "the step contract: every member a kind must or may give, each default "
+                     "said once for every kind, and the polygon records (609 lines)",
     "steps/triad/__init__.py": "the class-III group's room: its words and construction "
                                "records for three points at once (601 lines)",
 }
