@@ -457,3 +457,19 @@ def test_the_one_instant_road_is_the_phased_road_to_the_last_bit(case):
     for mine, theirs in ((sol.P, m.P), (sol.V, m.V), (sol.A, m.A), (sol.W, m.W),
                          (sol.Al, m.Al), (sol.S, m.S), (sol.cond, m.cond)):
         assert sorted(mine.items()) == sorted(theirs.items())
+
+
+def test_the_checker_finds_the_second_inputs_coriolis_left_out(tmp_path, capsys):
+    """a_C without 2 omega vs: |a_C - cor|, by hand from the closed form's a_C."""
+    case = TWO_CASES[0]
+    want = two_closed_form(*case)
+    w, vs = case[3], case[6]
+    th = math.radians(case[2])
+    cor = (-2 * w * vs * math.sin(th), 2 * w * vs * math.cos(th))  # 2 omega vs perp(w)
+    wrong = math.hypot(float(want["a_C"][0]) - cor[0], float(want["a_C"][1]) - cor[1])
+    f, a = tmp_path / "two.toml", tmp_path / "a.toml"
+    f.write_text(two_text(*case))
+    a.write_text(f'[answers]\na_C = "{wrong:.4f} m/s^2"\n')
+    assert main(["check", str(f), str(a)]) == 1
+    out = " ".join(capsys.readouterr().out.split())
+    assert "the Coriolis component 2 omega v of collar C sliding along OA" in out

@@ -391,7 +391,8 @@ class CollarDriver(BlockDriver):
     def at_pivot(self):
         """The error for a collar at the rod's pivot: the rod's direction is undefined."""
         return SingularStepError(f"the collar {self.point} is at {self.pivot}, the pivot of "
-                                 f"the rod {self.rod}: the rod's direction is undefined",
+                                 f"the rod {self.rod} (condition 0: {self.pivot}{self.point} "
+                                 f"/ {self.link} = 0): the rod's direction is undefined",
                                  step=self.label)
 
     def why(self, e):

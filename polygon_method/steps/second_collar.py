@@ -166,6 +166,12 @@ class SecondCollar(Step):
                 "rod" + (f", accelerating at {abs(two.alpha):.6g} m/s^2 "
                          f"{self.sense(two.alpha)}" if two.alpha else ", steadily"))
 
+    def coriolis_left_out(self, sol):
+        """The collar's acceleration drawn without its Coriolis component: a_C - 2 omega_r
+        vs perp(w) (what the points after it then get is not followed)."""
+        (ax, ay), (cx, cy) = sol.A[self.point], sol.coriolis(self.point)
+        return {("a", self.point): math.hypot(ax - cx, ay - cy)} if cx or cy else {}
+
     # ----- words
     def singular_why(self, c) -> str:
         return f"the collar {self.point} is never singular (condition {c:.2g})"
