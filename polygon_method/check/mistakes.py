@@ -102,7 +102,7 @@ class _Diagnoser:
                     out.append(_Candidate(val(alt), code, words))
         elif not sc.has_forces:
             out += self.torque(signed)
-        if kind in ("F", "N") or (kind == "torque" and sc.has_forces):
+        if kind in ("F", "N", "Fi", "Ci", "h") or (kind == "torque" and sc.has_forces):
             out += self.force_slips(kind, names, signed)
         for factor, code, words in _FACTOR_MISTAKES.get(_AS_KIND.get(kind, kind), ()) + \
                 self.unit_slips(kind):
@@ -271,7 +271,7 @@ class _Diagnoser:
         key = (kind, next((lk.key for lk in self.sc.links if set(lk.points) == set(names)),
                           None) if kind == "alpha" else names[0])
         for st in sol.plan.steps:
-            wrong = st.coriolis_left_out(sol).get(key)
+            wrong = getattr(st, "coriolis_left_out", lambda sol: {})(sol).get(key)
             right = sol.value(kind, names)
             if wrong is not None and abs(abs(wrong) - abs(right)) > 1e-9 * abs(right):
                 out.append(_Candidate(self.cmp(wrong, signed) if kind == "alpha" else wrong,

@@ -167,13 +167,11 @@ REQUIRED = ("kind", "finds", "links", "needs", "title", "params", "dimensions", 
 #: ``drive_caption`` (a driver's own line under the drawings; None: a crank's), ``travel``
 #: (what a driver's sweep runs over, in words: "the block's travel"), ``body_omega`` (a
 #: driver that does not turn about the frame but about an instantaneous centre: its omega;
-#: None) and ``body_omega_source`` (whence, in words), ``input_items`` and ``problem_words``
-#: (the step table's input section, the problem's sentence; None: the views'); any step:
-#: ``coriolis_left_out`` (what a polygon without its Coriolis component gives)
+#: None), ``input_items`` (the step table's heading and lines for the input; None: the
+#: views'), ``driver_name`` (body 2 of the centres' numbering: "the driving block A")
 OPTIONAL = ("periodic", "parameter_words", "input_scales", "input_words", "effort_words",
             "parameter", "parameter_scale", "effort_key", "input_record", "drive_caption",
-            "travel", "body_omega", "body_omega_source", "input_items", "problem_words",
-            "coriolis_left_out",
+            "travel", "body_omega", "input_items", "driver_name",
             "assemble", "auxiliary", "branching", "image_by_similar_triangle", "draws_relative",
             "other_assembly_mistake", "needs_links", "bind_instant", "group_key",
             "bind_group", "bind_group_instant", "rounding", "error_bound", "contacts",
@@ -225,21 +223,14 @@ class Step:
         """The motion's parameter in words, asked of the plan's first step (the driver)."""
         return "the crank angle"
 
+    #: the driver as body 2 of the centres' numbering (ground 1, the crank 2)
+    driver_name = "the crank"
+
     def body_omega(self, sol):
         """The angular velocity of the driver's own body where it turns about no fixed
         pivot (a wheel rolling on the ground: about its contact point), asked of the plan's
         first step; None for a crank (the input's omega) or a block (it translates)."""
         return None
-
-    def coriolis_left_out(self, sol):
-        """{(answer kind, name): value}: what a polygon without its Coriolis gives."""
-        return {}
-
-    def problem_words(self, scene):
-        """The driver's sentence of the problem's words (None: the views write it)."""
-        return None
-
-    body_omega_source = "the input"  # where body_omega comes from, in the centres' words
 
     def input_items(self, scene, fmt):
         """(heading, lines) of the step table's input section, asked of the plan's first

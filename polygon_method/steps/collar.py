@@ -20,6 +20,10 @@ Condition: the dyad's, |sin| of the angle KCD, times min(1, |s| / |DC|): zero wh
 rod's line passes through D (a dead centre: the sliding cannot change s there) and where
 the collar is at the rod's pivot (the rod's direction is undefined).
 
+Beyond the step contract it answers what the views ask where a step has it:
+``problem_words`` (the problem's sentence), ``body_omega_source`` (the rod's omega is found,
+not given) and ``coriolis_left_out`` (the checker's diagnosis).
+
 >>> x, y, c = place(0.0, 0.0, 2.0, 0.0, 2 ** 0.5, 2 ** 0.5, 1.0, 2 ** 0.5)
 >>> round(x, 12), round(y, 12), round(c, 12)
 (1.0, 1.0, 1.0)
@@ -347,6 +351,11 @@ class CollarDriver(BlockDriver):
         return (f"input force on collar {self.point}: {abs(effort):.4g} N "
                 f"{self.sense(effort)} along {self.rod} (power balance, no friction or "
                 "inertia)")
+
+    @property
+    def driver_name(self):
+        """Body 2 of the centres' numbering: the rod the collar is driven along."""
+        return f"the rod {self.rod}, along which the collar {self.point} is driven,"
 
     def body_omega(self, sol):
         """The rod's omega (body 2 of the centres: it turns about its fixed pivot)."""
