@@ -35,6 +35,12 @@ the coordinates ``q`` (x, y of every non-ground point):
 * a driving wheel CX rolling on a fixed line ([input] wheel): its centre C is the driving
   block above, its place s along the [rolling] line (T its through point, u its direction:
   ``(C - T).u - s = 0``), on the line at the radius by the wheel's own equation
+* a collar X driven along its rod K-N of length L, K on the ground ([input] block, X sliding
+  along a moving link): ``(X - K).(N - K) - L s = 0`` (with the guide's equation and the
+  rod's length), ``s(t) = s0 + vs t + as t^2 / 2``: ``f_t = -L vs``, ``gamma = 2 (vX -
+  vK).(vN - vK) - L as``
+* a collar X sliding along the crank K-N as the second input ([input.second] block): the
+  same, with its own s(t), vs, as
 * a pin X in the slot of a translating yoke Y (a block on a fixed path), the slot along
   the fixed unit d:  ``cross(X - Y, d) = 0`` (linear: ``gamma = 0``)
 * a peg in two slots: one of the two above for each slot (two equations for its point);
@@ -122,13 +128,18 @@ def _equations(scene):
         if lk.key == inp.crank or (lk.p in ground and lk.q in ground) or lk.key in wheels:
             continue
         two = getattr(inp, "second", None)
-        if two is not None and lk.key == scene.link(two.crank).key:
+        if two is not None and two.crank is not None and lk.key == scene.link(two.crank).key:
             continue
         eqs.append(("link", (lk.p, lk.q, mpf(lk.length))))
     wheel = getattr(inp, "wheel", None)
     if wheel is not None:  # a driving wheel: its centre's place along its ground line (T,
         pr = next(p for p in scene.rolling if p.wheel == wheel)  # u: the [rolling] line's)
         eqs.append(("block", (inp.block, _v(pr.through), _unit(_v(pr.u)))))
+    elif getattr(inp, "block", None) is not None and hasattr(scene.slider(inp.block), "guide"):
+        sl = scene.slider(inp.block)  # a collar driven along its rod K-N (K on the ground)
+        rod = scene.link(sl.guide)
+        k = rod.p if rod.p in ground else rod.q
+        eqs.append(("collar", (inp.block, k, rod.other(k), mpf(rod.length))))
     elif getattr(inp, "block", None) is not None:  # a block driven along its fixed path
         sl = scene.slider(inp.block)
         eqs.append(("block", (inp.block, _v(sl.through), _unit(_v(sl.u)))))
@@ -137,7 +148,12 @@ def _equations(scene):
         eqs.append(("crank", (inp.pivot, inp.tip, mpf(crank.length), 0)))
         eqs.append(("crank", (inp.pivot, inp.tip, mpf(crank.length), 1)))
     two = getattr(inp, "second", None)
-    if two is not None:  # a second driven crank, at its own angle, speed and acceleration
+    if two is not None and two.block is not None:  # a collar sliding along the crank K-N
+        rod = scene.link(scene.slider(two.block).guide)
+        k = rod.p if rod.p in ground else rod.q
+        eqs.append(("collar2", (two.block, k, rod.other(k), mpf(rod.length), mpf(two.angle),
+                                mpf(two.omega), mpf(two.alpha))))
+    elif two is not None:  # a second driven crank, at its own angle, speed and acceleration
         r2 = mpf(scene.link(two.crank).length)
         for c in (0, 1):
             eqs.append(("crank2", (two.pivot, two.tip, r2, c, mpf(two.angle), mpf(two.omega),
@@ -277,6 +293,13 @@ def _eval(kind, d, P, th, moving=False):
     if kind == "block":  # the driving block's place along its path: th is s
         x, through, u = d
         return _dot(_sub(P[x], through), u) - th, [(x, u[0], u[1])]
+    if kind in ("collar", "collar2"):  # the collar's place on its rod: (X - K).(N - K) / L = s
+        x, k, n, L = d[:4]
+        if kind == "collar2":  # a second input: its own place at the instant
+            th = d[4]
+        a, b = _sub(P[x], P[k]), _sub(P[n], P[k])
+        return _dot(a, b) - L * th, [(x, b[0], b[1]), (n, a[0], a[1]),
+                                     (k, -a[0] - b[0], -a[1] - b[1])]
     if kind == "yoke":
         x, y, u = d
         a = _sub(P[x], P[y])
@@ -475,6 +498,10 @@ def reference_solution(scene, guess_positions):
             ft[i] = -w2 * _perp(_sub(P[tip], P[o]))[c]
         elif kind == "block":
             ft[i] = -w
+        elif kind == "collar":
+            ft[i] = -d[3] * w
+        elif kind == "collar2":
+            ft[i] = -d[3] * d[5]
         elif kind == "rack":
             ft[i] = -d[3] * rates[d[4]] * w
     qd = mpmath.lu_solve(J, -ft)
@@ -499,6 +526,10 @@ def reference_solution(scene, guess_positions):
             gamma[i] = 2 * _cross(_sub(V[x], V[g1]), _sub(V[g2], V[g1]))
         elif kind == "block":
             gamma[i] = -al
+        elif kind in ("collar", "collar2"):  # (X - K).(N - K) - L s: f'' minus J q''
+            x, k, n, L = d[:4]
+            gamma[i] = 2 * _dot(_sub(V[x], V[k]), _sub(V[n], V[k])) - L * (
+                al if kind == "collar" else d[6])
         elif kind == "rack":
             gamma[i] = -d[3] * rates[d[4]] * al
         elif kind == "rackfree":  # -k beta along the motion: its second derivative

@@ -145,7 +145,9 @@ def test_corpus_covers_the_format():
     assert any(ld.torque is not None for sc in scenes for ld in sc.loads)
     assert any(ld.force is not None for sc in scenes for ld in sc.loads)
     driven = [sc for sc in scenes if sc.input.block is not None]  # a block as the driver,
-    guides = {sc.slider(sc.input.block).label for sc in driven}  # on guides of every kind
+    guides = {getattr(sc.slider(sc.input.block), "label", "a turning rod")  # on guides of
+              for sc in driven}  # every kind, and a collar on a turning rod
+    assert "a turning rod" in guides
     assert {"horizontal", "vertical"} < guides and any(sc.loads for sc in driven)
 
 

@@ -119,6 +119,8 @@ class _Diagnoser:
             out += self.contact_at_rest(ans)
         if kind in ("a", "as"):
             out += self.coriolis_left_out(kind, names[0])
+        if kind in ("a", "alpha"):
+            out += self.step_coriolis_left_out(kind, names, signed)
         if kind == "vs":
             X = sc.slider(names[0]).point  # a peg's slot: vs_P_OA is of the peg P
             out.append(_Candidate(sol.speed(X), "absolute_for_relative",
@@ -261,6 +263,21 @@ class _Diagnoser:
         """A peg in two slots drawn without the Coriolis component of a moving slot."""
         return [_Candidate(v, code, text) for v, code, text in
                 coriolis_left_out(self.sol, kind, name)]
+
+    def step_coriolis_left_out(self, kind, names, signed):
+        """A step's Coriolis component left out of the acceleration polygon (a collar driven
+        along its turning rod): what each step says the polygon then gives."""
+        sol, out = self.sol, []
+        key = (kind, next((lk.key for lk in self.sc.links if set(lk.points) == set(names)),
+                          None) if kind == "alpha" else names[0])
+        for st in sol.plan.steps:
+            wrong = getattr(st, "coriolis_left_out", lambda sol: {})(sol).get(key)
+            right = sol.value(kind, names)
+            if wrong is not None and abs(abs(wrong) - abs(right)) > 1e-9 * abs(right):
+                out.append(_Candidate(self.cmp(wrong, signed) if kind == "alpha" else wrong,
+                                      "coriolis_omitted", "the Coriolis component 2 omega v "
+                                      f"of {st.title} left out of the acceleration polygon"))
+        return out
 
     def rubbing(self, X):
         return power.rubbing(self, X)

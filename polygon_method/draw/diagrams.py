@@ -70,7 +70,9 @@ def _drive(sol) -> str:
                 else f"{fmt_angular(inp.omega, 'rad/s')} (from {stated(inp)})"))
     if inp.alpha:
         drive += f", {fmt_angular(inp.alpha, 'rad/s²')}"
-    if inp.second is not None:
+    if inp.second is not None and inp.second.block is not None:  # a collar on the crank
+        drive += f"; {sol.plan.steps[1].second_words(sol.scene)}"
+    elif inp.second is not None:
         two = inp.second
         drive += f"; {two.crank} at {deg(two.angle)}, {two.speed_text}"
     return drive

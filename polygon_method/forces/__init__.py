@@ -73,6 +73,9 @@ _NOT_YET = {
                "the teeth's pressure angle sets it)",
     "rack": "a rack on a pinion",
     "rolling driver": "a wheel rolling on the ground as the only driver",
+    "collar": "a collar driven along its turning rod (its force along the rod without "
+              "inertia is the power balance's input force)",
+    "second collar": "a collar sliding along the crank as the second input",
     "triad": "a triad whose plate is made of three links",
 }
 

@@ -247,8 +247,9 @@ class Solution(Motion):
                                          "omega": inp.omega, "alpha": inp.alpha}
         if inp.second is not None:
             two = inp.second
-            d["second"] = {"crank": two.crank, "angle": two.angle,
-                           "omega": two.omega, "alpha": two.alpha}
+            d["second"] = ({"crank": two.crank, "angle": two.angle,
+                            "omega": two.omega, "alpha": two.alpha} if two.block is None
+                           else self.plan.steps[1].second_record(sc))  # a collar's
         res = self.plan.given
         if res is not None:
             g = inp.given

@@ -318,6 +318,9 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
                    if isinstance(s, FixedPath) and s.through[1] is None else s
                    for s in sliders]
         assembly = self.assembly(known)
+        hint = getattr(self, "collar_hint", None)  # a driving collar placed by [x, y]
+        if hint is not None:
+            assembly.setdefault(*hint)
         pins = self.pins(known)
         loads = self.loads(known)
         masses = self.masses(points, sliders)

@@ -472,6 +472,8 @@ def _block_span(scene, driver) -> float:
     """How far along its guide a driving block is searched for the ends of its travel,
     either side of its place: twice the links' lengths and the ground's extent (m)."""
     path = scene.slider(driver.finds[0])
+    through = getattr(path, "through", None)  # a collar on its rod: from the rod's pivot
     return 2.0 * sum(lk.length for lk in scene.links) + max(
-        (math.dist(xy, path.through) for xy in scene.ground.values()), default=0.0)
+        (math.dist(xy, through) for xy in scene.ground.values()), default=0.0) \
+        if through is not None else 2.0 * sum(lk.length for lk in scene.links)
 

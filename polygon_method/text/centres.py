@@ -110,7 +110,8 @@ def _omega_line(ic: Centres, k: int) -> str:
         return (f"  omega_{k} ({name}) = 0: {name} translates at "
                 f"{math.hypot(*v):.4g} m/s along its guide (the input)")
     if k == 2:
-        return f"  omega_{k} ({name}) = {fmt_angular(w, 'rad/s')} (the input)"
+        return (f"  omega_{k} ({name}) = {fmt_angular(w, 'rad/s')} "
+                f"({getattr(sol.plan.steps[0], 'body_omega_source', 'the input')})")
     i = ic.ratio_from.get(k, 2)
     if i == 2 and ic.centre(1, 2).point is None:  # from the driving block's velocity
         return (f"  omega_{k} ({name}) = {fmt_angular(sol.shown(w, 'omega'), 'rad/s')} "
