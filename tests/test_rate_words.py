@@ -152,3 +152,21 @@ def test_refused_in_one_line(scene, words, says, tmp_path):
                          capture_output=True, text=True)
     assert run.returncode == 2 and "Traceback" not in run.stderr
     assert len(run.stderr.strip().splitlines()) == 1 and says in run.stderr
+
+
+@pytest.mark.parametrize("text, kind, si", [
+    ("15 rad/sec", "angular_velocity", 15.0),
+    ("2 rev/sec", "angular_velocity", 4 * math.pi),
+    ("40 rad/sec^2", "angular_acceleration", 40.0),
+    ("3 m/sec", "velocity", 3.0),
+    ("12 ft/sec", "velocity", 12 * 0.3048),
+    ("72 km/hr", "velocity", 20.0),
+    ("5 m/sec^2", "acceleration", 5.0),
+    ("40 ft/s2", "acceleration", 40 * 0.3048),
+    ("100 kgf", "force", 980.665),
+    ("5 kgf/cm^2", "pressure", 5 * 9.80665 / 1e-4),
+])
+def test_older_books_unit_spellings(text, kind, si):
+    """sec for s, km/hr, and the gravitational units (1 kgf = 9.80665 N, by definition)."""
+    from polygon_method.common.units import parse_quantity
+    assert parse_quantity(text, kind).value == pytest.approx(si, rel=1e-15)
