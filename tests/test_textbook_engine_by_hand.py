@@ -108,3 +108,24 @@ def test_flywheel_from_the_indicator_diagram_by_quadrature():
     close(cs, mpf("0.03"), 1e-15)
     close(inertia, dE / (w ** 2 * mpf("0.03")))
     close(mass, dE / (w ** 2 * mpf("0.03")) / mpf("0.2") ** 2)
+
+
+def test_vertical_engine_weight_adds_to_the_piston_effort():
+    """vertical_engine_weight_gas.toml: r = 100, l = 450 mm, the piston above the crank,
+    20 kg reciprocating, 1.2 MPa on a 120 mm bore, 1000 rpm ccw, 40 deg past the t.d.c.:
+    F_P = F_L + m a + m g towards the crank (a the piston's acceleration away from the
+    crank: its inertia force -m a points towards the crank by m a; its weight pushes it
+    towards the crank), the crank effort F_P sin(t + phi) / cos phi."""
+    mpmath.mp.dps = 30
+    r, l, m, g = mpf("0.1"), mpf("0.45"), mpf(20), mpf("9.81")
+    w, t = 1000 * 2 * mpmath.pi / 60, mpmath.radians(40)
+    a_away = mpmath.diff(lambda u: _x(r, l, u), t, 2) * w ** 2
+    F_P = mpf("1.2e6") * mpmath.pi / 4 * mpf("0.12") ** 2 + m * a_away + m * g
+    phi = mpmath.asin(r * mpmath.sin(t) / l)
+    sc = load_scene(HERE / "vertical_engine_weight_gas.toml")
+    sol = solve(sc)
+    e = efforts(sc, sol.plan, sol.P, sol.forces)
+    close(e.F_P, F_P)
+    close(e.F_N, abs(F_P * mpmath.tan(phi)))
+    close(e.F_T, F_P / mpmath.cos(phi) * mpmath.sin(t + phi))
+    close(e.T, F_P / mpmath.cos(phi) * mpmath.sin(t + phi) * r)
