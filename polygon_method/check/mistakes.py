@@ -102,7 +102,7 @@ class _Diagnoser:
                     out.append(_Candidate(val(alt), code, words))
         elif not sc.has_forces:
             out += self.torque(signed)
-        if kind in ("F", "N") or (kind == "torque" and sc.has_forces):
+        if kind in ("F", "N", "Fi", "Ci", "h") or (kind == "torque" and sc.has_forces):
             out += self.force_slips(kind, names, signed)
         for factor, code, words in _FACTOR_MISTAKES.get(_AS_KIND.get(kind, kind), ()) + \
                 self.unit_slips(kind):

@@ -36,9 +36,10 @@ from ..common.errors import PolygonMethodError
 from . import (carried, crank, cylinder, driver, dyad, peg, rolling, slider, slotted, triad,
                wheel, yoke)
 from .bodies import Ledger, Singular, centre, cross, gather
+from .core import force_plan
 from .records import (FRAME, Contact, Couple, Forces, ForceStep, FreeBody, GuideForce,
                       Inertia, PinForce, Side, block, couple_label, force_value, forces_dict,
-                      number_sub, side_label)
+                      number_sub, quick_forces, side_label)
 
 #: the force step of each kind of kinematic step: its room (``owns(st)``: the bodies its
 #: points act on; ``step(st, P, ledger, owners)``: its pin forces; ``covers(st)``, where
@@ -49,10 +50,14 @@ from .records import (FRAME, Contact, Couple, Forces, ForceStep, FreeBody, Guide
 #: ``unit_ledger(st)``, ``effort(st, t0, t1, ledger)``, where present: whether it drives
 #: the mechanism, and its force from the crank's torque without it and with 1 N in it;
 #: ``bodies(st)``, where present: the bodies it moves, in the order the sheet numbers them,
-#: else those of its force step)
+#: else those of its force step; ``bind(st, own, ix)``, where present: its short road
+#: (:mod:`.core`), a function ``f(P, S, pins, guides)`` doing what ``step`` does to the
+#: numbered sums ``S`` (body ``ix(name)``), appending its pin forces ``(point, on, by,
+#: force)`` and guides' ``(point, normal, n, by)`` and returning the driver's effort or
+#: None, with no record made; None for a step with nothing to solve)
 #: the members a room may give, said once above for every room
 ROOM_CONTRACT = ("owns", "step", "covers", "check", "blocks", "divisor", "drives",
-                 "unit_ledger", "effort", "bodies")
+                 "unit_ledger", "effort", "bodies", "bind")
 ROOMS = {"crank": crank, "dyad": dyad, "slider": slider, "carried": carried,
          "slotted": slotted, "block": driver, "second crank": crank,
          "cylinder": cylinder, "yoke": yoke, "peg": peg, "rolling": rolling,
@@ -119,14 +124,29 @@ def owners(scene, plan) -> dict:
 
 def analyse(motion) -> Forces:
     """The :class:`Forces` at the instant of ``motion`` (a solved, one-instant
-    :class:`~polygon_method.solver.kinematics.Motion` of a scene with masses or gravity)."""
+    :class:`~polygon_method.solver.kinematics.Motion` of a scene with masses or gravity), or
+    over its crank angles (a sweep: arrays). The numbers by the short road where every
+    group has one (:mod:`.core`), the records when first read."""
     scene, plan = motion.scene, motion.plan
-    own = owners(scene, plan)
-    records, led = gather(scene, motion, own)
+    fp = force_plan(scene, plan)
+    if not fp.quick:
+        whole = _long(motion, fp)
+        return Forces(*whole[:7], lambda: whole[7:10], lambda: whole[10:])
+    pins, guides, effort, second, (fx, fy, m) = fp.run(motion)
+    name, kind = fp.driver
+    return quick_forces(effort, (fx, fy), m, name, kind, second, fp.second,
+                        lambda: fp.records(motion, pins, guides),
+                        lambda: _long(motion, fp)[10:])
+
+
+def _long(motion, fp) -> tuple:
+    """The long road, every record made: (the effort, shaking force, shaking moment, the
+    driver's name and kind, a second crank's torque and link; inertia, pins, guides;
+    steps, applied, contacts, the drawings' functions)."""
+    scene, plan, own = motion.scene, motion.plan, fp.own
+    records_, led = gather(scene, motion, own)
     inp = scene.input
-    driving = next((st for st in plan.steps
-                    if getattr(ROOMS[st.kind], "drives", lambda sc, s: False)(scene, st)),
-                   None)
+    driving = fp.driving
     if driving is not None:  # the walk is linear in the driver's force: walk it twice
         room = ROOMS[driving.kind]
         t0 = _walk(scene, plan, motion.P, _copy(led), own)[3]
@@ -145,12 +165,11 @@ def analyse(motion) -> Forces:
         name, kind, effort = block(plan.steps[0].point), "block", torque
     else:
         name, kind, effort = inp.crank, "crank", torque
-    return Forces(records, tuple(pins), tuple(guides), effort, (fx, fy), m,
-                  tuple(steps), {k: tuple(v) for k, v in led.applied.items()},
-                  name, kind, second,
-                  None if inp.second is None else scene.link(inp.second.crank).key,
-                  tuple(contacts), _drawing(scene, plan, motion.P, records, pins, guides, led,
-                                            torque, steps))
+    return (effort, (fx, fy), m, name, kind, second,
+            None if inp.second is None else scene.link(inp.second.crank).key,
+            records_, tuple(pins), tuple(guides),
+            tuple(steps), {k: tuple(v) for k, v in led.applied.items()}, tuple(contacts),
+            _drawing(scene, plan, motion.P, records_, pins, guides, led, torque, steps))
 
 
 def _drawing(scene, plan, P, records, pins, guides, led, torque, steps) -> tuple:

@@ -22,6 +22,15 @@ from .wheel_input import wheel_input
 _DIRECTED = re.compile(r"^(.*?\S)\s+(?:(up(?:wards?)?|down(?:wards?)?|(?:to the )?left(?:wards?)?|"
                        r"(?:to the )?right(?:wards?)?)|at\s+(.+))$", re.IGNORECASE)
 _WORDS = {"up": (0.0, 1.0), "down": (0.0, -1.0), "left": (-1.0, 0.0), "right": (1.0, 0.0)}
+#: a rate in a book's words, after or before its size: "2 rad/s^2 slowing down",
+#: "decelerating at 3 m/s^2", "speeding up at 1 ft/s^2"
+_RATE_WORD = r"(slowing(?: down)?|decelerating|retarding|speeding up|accelerating)"
+_RATED = (re.compile(rf"^(.*?\S)\s*,?\s+{_RATE_WORD}$", re.IGNORECASE),
+          re.compile(rf"^{_RATE_WORD}\s+(?:at\s+)?(.+)$", re.IGNORECASE))
+#: a sense or a way in a rate's text (refused beside "slowing down": one or the other)
+_SENSE_OR_WAY = re.compile(r"(^\s*[-+])|\b(cw|ccw|acw|clockwise|anticlockwise|"
+                           r"counterclockwise|counter-clockwise|anti-clockwise|up|down|left|"
+                           r"right|upwards?|downwards?|at|extending|retracting)\b", re.IGNORECASE)
 
 
 def _extending(raw):
@@ -36,32 +45,6 @@ def _extending(raw):
                 text = text[1:] if text.startswith("-") else "-" + text.lstrip("+")
             return text
     return raw
-
-
-#: a rate in words relative to the motion it is the rate of: "12 rad/s^2, slowing down"
-_BY_WORDS = re.compile(r"^\s*(.*?\S)[\s,;]+(slowing(?: down)?|decelerating|retarding|"
-                       r"speeding up|accelerating)\s*$", re.IGNORECASE)
-#: a sense or a direction beside those words: one of the two is enough
-_SENSE_OR_WAY = re.compile(r"\b(c?cw|a?cw|(?:anti|counter)-?clockwise|clockwise|up|down|left|"
-                           r"right|at|extending|retracting|inwards?|outwards?)(?:wards?)?\b",
-                           re.IGNORECASE)
-
-
-def rate_words(raw):
-    """``("12 rad/s^2", -1)`` for a rate given as books give it, relative to the motion:
-    ``"12 rad/s^2, slowing down"`` (also ``slowing``, ``decelerating``, ``retarding``: -1),
-    ``"5 m/s^2 speeding up"`` (``accelerating``: +1); ``(raw, None)`` otherwise.
-
-    >>> rate_words("12 rad/s^2, slowing down"), rate_words("2 m/s^2 accelerating")
-    (('12 rad/s^2', -1), ('2 m/s^2', 1))
-    >>> rate_words("12 rad/s^2 cw")
-    ('12 rad/s^2 cw', None)
-    """
-    m = _BY_WORDS.match(raw) if isinstance(raw, str) else None
-    if m is None:
-        return raw, None
-    word = m.group(2).lower()
-    return m.group(1), (1 if word in ("speeding up", "accelerating") else -1)
 
 
 def _given_key(key):
@@ -80,25 +63,41 @@ def _given_key(key):
 class _Input:
     """The [input] table's methods of the scene reader."""
 
-    def rate_by_words(self, raw, motion, kind, section, key, whose):
-        """The rate (SI, signed as ``motion`` is) of a rate given as ``"12 rad/s^2, slowing
-        down"`` or ``"speeding up"``: its size, against or with the sign of ``motion`` (the
-        signed speed it is the rate of); None where ``raw`` has no such words. ``motion``
-        None: the speed is not known when the scene is read (refused, naming ``whose``)."""
-        text, sign = rate_words(raw)
-        if sign is None:
+    def rated(self, raw, kind, table, key, motion):
+        """A rate in a book's words, ``"2 rad/s^2 slowing down"`` (``decelerating``,
+        ``retarding``) or ``"... speeding up"`` (``accelerating``): its size against (with)
+        the sense of ``motion``, the signed value it is the rate of (an omega, a sliding
+        velocity, a rate of extension; +1 for a point's speed). None where ``raw`` has no
+        such words (the caller reads it as before).
+
+        >>> class R(_Input):
+        ...     def qty(self, raw, kind, *a, **k): return parse_quantity(raw, kind)
+        >>> from ..common.units import parse_quantity
+        >>> R().rated("2 rad/s^2 slowing down", "angular_acceleration", "input", "a", -4.0)
+        2.0
+        >>> R().rated("speeding up at 3 m/s^2", "acceleration", "input", "as_B", -1.5)
+        -3.0
+        """
+        if not isinstance(raw, str):
             return None
-        if _SENSE_OR_WAY.search(text):
-            raise self.error(f"{raw!r}: give either a sense or direction, or 'slowing down' / "
-                             "'speeding up' (relative to the motion), not both", section, key)
+        text = raw.strip()
+        m = _RATED[0].match(text)
+        size_text, word = (m.group(1), m.group(2)) if m else (None, None)
+        if m is None:
+            m = _RATED[1].match(text)
+            if m is None:
+                return None
+            word, size_text = m.group(1), m.group(2)
+        if _SENSE_OR_WAY.search(size_text):
+            raise self.error(f"{raw!r}: give the rate's sense (or way), or say slowing down / "
+                             "speeding up, not both", table, key)
         if motion is None:
-            raise self.error(f"{raw!r}: slowing down or speeding up is relative to {whose}, "
-                             "which the scene does not give (it is found): give the sense "
-                             "(cw or ccw)", section, key)
-        size = abs(self.qty(text, kind, section, key,
-                            default_unit=None if kind.startswith("angular") else
-                            next(iter(UNITS[kind]))).value)
-        return sign * size * (1.0 if motion > 0 else -1.0)
+            raise self.error(f"{raw!r}: slowing down or speeding up says the rate's sense "
+                             "from the motion's, which is found here, not given: give the "
+                             "rate with its sense", table, key)
+        size = abs(self.qty(size_text, kind, table, key).value)
+        slowing = word.lower().startswith(("slow", "decel", "retard"))
+        return (-size if slowing else size) * (1.0 if motion >= 0 else -1.0)
 
     def dead_centres(self, link, pivot, tip, ground):
         """The candidate dead centres of the slider crank that ``link`` drives, for
@@ -214,13 +213,12 @@ class _Input:
             alpha = None
         elif isinstance(acc, (int, float)) and not isinstance(acc, bool) and acc == 0:
             alpha = 0.0
-        elif rate_words(acc)[1] is not None:
-            alpha = self.rate_by_words(acc, None if speed is None else speed.value,
-                                       "angular_acceleration", "input", "acceleration",
-                                       "the crank's speed")
         else:
-            alpha = self.qty(acc, "angular_acceleration", "input", "acceleration",
-                             need_sense=True).value
+            alpha = self.rated(acc, "angular_acceleration", "input", "acceleration",
+                               None if speed is None else speed.value)
+            if alpha is None:
+                alpha = self.qty(acc, "angular_acceleration", "input", "acceleration",
+                                 need_sense=True).value
         if given_keys and second is not None:
             raise self.error(f"{given_keys[0]} with two inputs: give each crank's speed (a "
                              "motion given elsewhere sets one input only)", "input",
@@ -237,7 +235,10 @@ class _Input:
                              "the crank's speed: give the crank's acceleration instead",
                              "input", rate_keys[0])
         if speed.value == 0:
-            raise self.error("the crank speed is zero: nothing moves", "input", "speed")
+            raise self.error("the crank speed is zero: nothing moves (for the torque that "
+                             "holds the loads at rest, a statics problem, give any speed, e.g. "
+                             "\"1 rad/s ccw\": without [masses] the torque by power balance "
+                             "does not depend on it)", "input", "speed")
         self.two_inputs = second is not None
         if second is not None and second.crank == link.key:
             raise self.error(f"the second input is the crank {link.key} again: name another "
@@ -288,10 +289,10 @@ class _Input:
         raw_as = spec.get(as_key, 0)
         if isinstance(raw_as, (int, float)) and not isinstance(raw_as, bool) and raw_as == 0:
             acc = 0.0
-        elif rate_words(raw_as)[1] is not None:
-            acc = self.rate_by_words(raw_as, vs, "acceleration", "input", as_key, vs_key)
         else:
-            acc, _ = self.directed(raw_as, "acceleration", as_key, u, need=False)
+            acc = self.rated(raw_as, "acceleration", "input", as_key, vs)
+            if acc is None:
+                acc, _ = self.directed(raw_as, "acceleration", as_key, u, need=False)
         if (s_key in spec) == (name in spec):
             raise self.error(f"[input] gives the block's place {'twice' if name in spec else 'not at all'}:"
                              f" {s_key} = 300 (along its guide from its through point) or {name} = "
@@ -362,8 +363,12 @@ class _Input:
                              "angle, speed", "input", "second")
         for k in spec:
             if k not in INPUT_KEYS:
+                why = (" (a block driven along a turning link, the collar on a rotating rod, "
+                       "is not solved yet; a block on a fixed guide drives alone as [input] "
+                       "block)" if k == "block" or k.startswith(("vs_", "as_", "s_")) else "")
                 raise self.error(f"unknown key{_suggest(k, INPUT_KEYS)}; the second input "
-                                 "takes crank, angle, speed, acceleration", "input.second", k)
+                                 f"takes crank, angle, speed, acceleration{why}",
+                                 "input.second", k)
         for k in ("crank", "angle", "speed"):
             if k not in spec:
                 raise self.error(f"[input.second] has no {k}", "input.second")
@@ -382,9 +387,9 @@ class _Input:
                              "the frame", "input.second", "speed")
         acc = spec.get("acceleration", 0)
         alpha = 0.0 if (isinstance(acc, (int, float)) and not isinstance(acc, bool)
-                        and acc == 0) else self.rate_by_words(
-            acc, speed.value, "angular_acceleration", "input.second", "acceleration",
-            "the crank's speed")
+                        and acc == 0) else self.rated(acc, "angular_acceleration",
+                                                      "input.second", "acceleration",
+                                                      speed.value)
         if alpha is None:
             alpha = self.qty(acc, "angular_acceleration", "input.second", "acceleration",
                              need_sense=True).value
@@ -407,14 +412,13 @@ class _Input:
         text = printable(str(raw))
         rate_text = None if raw_rate is None else printable(str(raw_rate))
         direction = None
-        worded = rate_words(raw_rate)[1] is not None  # "... slowing down": with the motion
         if kind == "omega":
             if len(names) != 2 or frozenset(names) not in index:
                 raise self.error(f"no link {''.join(names)} in [links]", "input", key)
             value = self.qty(raw, "angular_velocity", "input", key, need_sense=True).value
             rate = None if raw_rate is None else (
-                0.0 if raw_rate == 0 else self.rate_by_words(
-                    raw_rate, value, "angular_acceleration", "input", rate_key, key))
+                0.0 if raw_rate == 0 else self.rated(raw_rate, "angular_acceleration",
+                                                     "input", rate_key, value))
             if rate is None and raw_rate is not None:
                 rate = self.qty(raw_rate, "angular_acceleration", "input", rate_key,
                                 need_sense=True).value
@@ -428,7 +432,9 @@ class _Input:
                                      key)
                 names, u = (cyl.key,), (1.0, 0.0)  # signed: + extending
                 raw = _extending(raw)
-                raw_rate = raw_rate if raw_rate is None or worded else _extending(raw_rate)
+                if raw_rate is not None and not (isinstance(raw_rate, str) and any(
+                        r.match(raw_rate.strip()) for r in _RATED)):  # slowing: kept
+                    raw_rate = _extending(raw_rate)
             elif kind == "vs":
                 sl = self.slider_points.get(point)
                 if sl is None:
@@ -440,10 +446,10 @@ class _Input:
                 u = None
             value, direction = self.directed(raw, "velocity", key, u, need=kind == "v")
             rate = None
-            if worded:  # a point's speed (v_C): its rate is that of the speed, + speeding up
-                rate = self.rate_by_words(raw_rate, 1.0 if kind == "v" else value,
-                                          "acceleration", "input", rate_key, key)
-            elif raw_rate is not None:
+            if raw_rate is not None:  # a point's speed: its rate is of the speed (+1)
+                rate = self.rated(raw_rate, "acceleration", "input", rate_key,
+                                  value if kind == "vs" else 1.0)
+            if raw_rate is not None and rate is None:
                 rate, _ = self.directed(raw_rate, "acceleration", rate_key,
                                         u if kind == "vs" else None, need=False)
         if value == 0:
