@@ -144,7 +144,8 @@ def _check(cond, label, given, inp):
         raise SingularStepError(
             f"{label} cannot set the crank's speed here: at this position {what} whatever "
             f"the crank {inp.crank}'s speed (a dead centre for this input; condition "
-            f"{cond:.2g}): the crank's speed would be unbounded", step=f"[input] {given.key}")
+            f"{f'{cond:.2g}' if cond >= 1e-12 else '0, to rounding'}): the crank's speed "
+            "would be unbounded", step=f"[input] {given.key}")
 
 
 def completed(scene, res: Resolution):

@@ -353,7 +353,8 @@ class Peg(Step):
 
     def singular_why(self, c) -> str:
         return (f"a pin in two parallel slots: {_slot_words(self.first)} and "
-                f"{_slot_words(self.second)} are parallel (sine {c:.2g}): they do not cross "
+                f"{_slot_words(self.second)} are parallel (sine "
+                f"{f'{c:.2g}' if c >= 1e-12 else '0, to rounding'}): they do not cross "
                 f"at one point, and {self.point} is undetermined")
 
     def warning(self, c) -> str:

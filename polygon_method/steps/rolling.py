@@ -512,6 +512,7 @@ class RollingWheel(Step):
     def position_words(self, L, which, angle_deg):
         r, ell = self.dims[1], self.dims[0]
         phi = math.degrees(self.dims[6] if self.on == "line" else self.dims[5])
+        phi = round(phi, 9) + 0.0  # -7e-15 deg is 0 (rounding), as the table prints it
         if self.on == "line":
             how = "the wheel turns 1/r rad for each unit its centre moves along the line"
         elif self.theta_rate is not None:
