@@ -16,13 +16,16 @@ A hydraulic cylinder is a two-force member (:mod:`.cylinder`); where the motion 
 on it, it is the driver and its force the driver's effort.
 
 A wheel rolling on a fixed line is solved with the link that finds its centre
-(:mod:`.wheel`): the ground's normal and tangential forces, and the friction no slip needs.
+(:mod:`.wheel`): the ground's normal and tangential forces, and the friction no slip needs;
+a wheel that drives the mechanism by its driver's torque (:mod:`.wheel_driver`). A gear,
+or a planet on a circle, carries the tooth load along the line of action at the pressure
+angle (:mod:`.rolling`); a rack likewise, held by its guide (:mod:`.rack`).
 
 A triad's plate and three links are solved together (:mod:`.triad`: the textbook's 3x3
 solve).
 
-What is not written yet is refused in one line naming the step (rolling on a circle or a
-gear, a rack, a triad whose plate is three links): no guess.
+What is not written yet is refused in one line naming the step (a triad whose plate is
+three links): no guess.
 
 Sign rule: see :mod:`.records` (the force on one body by the other; ccw positive; moments
 about the frame's origin).
@@ -33,8 +36,8 @@ from __future__ import annotations
 from dataclasses import replace
 
 from ..common.errors import PolygonMethodError
-from . import (carried, crank, cylinder, driver, dyad, peg, rolling, slider, slotted, triad,
-               wheel, yoke)
+from . import (carried, crank, cylinder, driver, dyad, peg, rack, rolling, slider, slotted,
+               triad, wheel, wheel_driver, yoke)
 from .bodies import Ledger, Singular, centre, cross, gather
 from .records import (FRAME, Contact, Couple, Forces, ForceStep, FreeBody, GuideForce,
                       Inertia, PinForce, Side, block, couple_label, force_value, forces_dict,
@@ -56,18 +59,13 @@ ROOM_CONTRACT = ("owns", "step", "covers", "check", "blocks", "divisor", "drives
 ROOMS = {"crank": crank, "dyad": dyad, "slider": slider, "carried": carried,
          "slotted": slotted, "block": driver, "second crank": crank,
          "cylinder": cylinder, "yoke": yoke, "peg": peg, "rolling": rolling,
-         "wheel centre": wheel, "triad": triad}
+         "wheel centre": wheel, "triad": triad, "rack": rack, "rolling driver": wheel_driver}
 
 __all__ = ["analyse", "Forces", "Inertia", "PinForce", "GuideForce", "ForceStep", "FRAME",
            "block", "centre", "cross", "Ledger", "forces_dict", "owners", "ROOMS",
            "force_value", "Side", "Couple", "FreeBody", "side_label", "couple_label", "number_sub"]
 
 _NOT_YET = {
-    "rolling": "rolling on a circle or a gear (the contact's normal force is not "
-               "determined by statics where a link holds the centres' distance: a preload or "
-               "the teeth's pressure angle sets it)",
-    "rack": "a rack on a pinion",
-    "rolling driver": "a wheel rolling on the ground as the only driver",
     "triad": "a triad whose plate is made of three links",
 }
 
@@ -77,7 +75,8 @@ def _refuse(scene, st, what):
         f"forces: {what} is not solved for forces yet (step {st.index + 1}, {st.title}); "
         "the force analysis covers cranks (one or two), driving blocks, dyads, carried "
         "points, blocks on fixed paths and on moving links, slotted levers, yokes, pegs, "
-        "cylinders, wheels rolling on a line and triads",
+        "cylinders, wheels rolling on a line (driven or driving), gears, planets, racks "
+        "and triads",
         file=scene.file, key=_key(scene))
 
 
@@ -143,23 +142,31 @@ def analyse(motion) -> Forces:
         name, kind, effort = driving.key, driving.kind, led.given[driving.key]
     elif plan.steps[0].kind == "block":  # the driver the plan starts with: a block
         name, kind, effort = block(plan.steps[0].point), "block", torque
+    elif plan.steps[0].kind == "rolling driver":  # a wheel: the torque on it
+        name, kind, effort = plan.steps[0].wheel, "wheel", torque
     else:
         name, kind, effort = inp.crank, "crank", torque
     return Forces(records, tuple(pins), tuple(guides), effort, (fx, fy), m,
                   tuple(steps), {k: tuple(v) for k, v in led.applied.items()},
                   name, kind, second,
                   None if inp.second is None else scene.link(inp.second.crank).key,
-                  tuple(contacts), _drawing(scene, plan, motion.P, records, pins, guides, led,
-                                            torque, steps))
+                  tuple(contacts),
+                  drawing=_drawing(scene, plan, motion.P, records, pins, guides, led, torque,
+                                   steps, contacts),
+                  centre_force=(wheel_driver.centre_force(plan.steps[0], effort)
+                                if kind == "wheel" else None))
 
 
-def _drawing(scene, plan, P, records, pins, guides, led, torque, steps) -> tuple:
+def _drawing(scene, plan, P, records, pins, guides, led, torque, steps, contacts) -> tuple:
     """What the drawings read, made when first asked for: the bodies' numbers and, for one
     instant, each body's free body."""
     one = isinstance(torque, float)
+    driven = (scene.input.crank if plan.steps[0].kind != "rolling driver"
+              else plan.steps[0].wheel)
     return (lambda: _numbers(scene, plan, steps),
             (lambda numbers: _free_bodies(scene, P, numbers, records, pins, guides, led,
-                                          torque)) if one else (lambda numbers: ()))
+                                          torque, contacts, driven))
+            if one else (lambda numbers: ()))
 
 
 def _copy(led):
@@ -210,16 +217,19 @@ def _numbers(scene, plan, steps) -> dict:
     return out
 
 
-def _free_bodies(scene, P, numbers, records, pins, guides, led, torque) -> tuple:
+def _free_bodies(scene, P, numbers, records, pins, guides, led, torque, contacts,
+                 driven) -> tuple:
     """Each moving body alone (:class:`FreeBody`): its inertia force (the book's single
     force, through the offset point), weight and loads as the ledger holds them, every pin
     force on it (the stored record, or its opposite where the body is the record's ``by``),
-    the guide's force on a block; its couples."""
+    the guide's force on a block, a contact force (the ground's on a wheel, the teeth's on a
+    gear or a rack, and back on the gear that pushes); its couples (``driven``: the body
+    the driver's torque turns)."""
     out = []
     for body, num in numbers.items():
         if body == FRAME:
             continue
-        sides = [s for s in led.known(body) if s.what not in ("pin", "inertia")]
+        sides = [s for s in led.known(body) if s.what not in ("pin", "inertia", "contact")]
         sides[:0] = [Side("inertia", body, "", "", i.force,
                           i.G if i.offset is None else i.offset_point)
                      for i in records if i.body == body]  # the book's single force
@@ -231,11 +241,20 @@ def _free_bodies(scene, P, numbers, records, pins, guides, led, torque) -> tuple
                                   P[p.point]))
         sides += [Side("guide", body, FRAME, g.point, g.force, P[g.point]) for g in guides
                   if block(g.point) == body]
+        for k, c in enumerate(reversed(contacts)):  # (in the plan's order, as drawn)
+            name = "I" if len(contacts) == 1 else f"I{k + 1}"
+            if c.wheel == body:
+                sides.append(Side("contact", body, c.by, name, c.force, c.point))
+            elif c.by == body:
+                sides.append(Side("contact", body, c.wheel, name,
+                                  (-c.force[0], -c.force[1]), c.point))
         couples = [Couple("inertia", body, i.couple) for i in records
                    if i.body == body and i.offset is None and i.couple != 0]
         couples += [Couple("load", body, e[1]) for e in led.applied.get(body, ())
                     if len(e) == 2]
-        if body == scene.input.crank:
+        couples += [Couple("guide", body, g.couple) for g in guides
+                    if block(g.point) == body and isinstance(g.couple, float) and g.couple]
+        if body == driven:
             couples.append(Couple("torque", body, torque))
         out.append(FreeBody(body, num, tuple(sides), tuple(couples)))
     return tuple(out)

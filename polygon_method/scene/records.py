@@ -272,6 +272,8 @@ class RollingPair:
     ``base_radius``: the circle's radius as the problem states it (None: from the centre
     distance). ``angle``: the direction centre -> rim (rad) at the scene's crank angle
     (None: towards the contact point). ``label``: the line or circle in words.
+    ``pressure_angle``: the teeth's pressure angle (rad) of a gear, a circle or a rack, as
+    the scene states it (None: the default, 20 deg): the tooth load's line of action.
     """
 
     wheel: str
@@ -288,6 +290,7 @@ class RollingPair:
     inside: bool = False
     base_radius: float | None = None
     angle: float | None = None
+    pressure_angle: float | None = None
 
 
 @dataclass(frozen=True)

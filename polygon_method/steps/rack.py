@@ -78,7 +78,8 @@ def recognise(g, name):
                              file=sc.file)
     g.used_sliders.add(name)
     return RackStep(g.next_index, name, base.key, pr.base_centre,
-                    _rack_params(sc, pr, rate), unit=g.unit, uname=g.uname)
+                    _rack_params(sc, pr, rate), unit=g.unit, uname=g.uname,
+                    pressure_angle=pr.pressure_angle)
 
 
 @dataclass(frozen=True)
@@ -91,6 +92,9 @@ class RackStep(Step):
     dims: tuple = ()
     unit: float = 1e-3
     uname: str = "mm"
+    #: the teeth's pressure angle (rad) the scene states, or None (the force analysis'
+    #: default, 20 deg)
+    pressure_angle: float | None = None
 
     kind = "rack"
 

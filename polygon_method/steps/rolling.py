@@ -106,7 +106,8 @@ def recognise(g, name):
                                 base_free=base_free),
                         base=pr.base, base_centre=O, inside=pr.inside,
                         kd_rate=kd_rate, kb_rate=kb_rate, base_free=base_free,
-                        unit=g.unit, uname=g.uname)
+                        unit=g.unit, uname=g.uname,
+                        pressure_angle=pr.pressure_angle)
 
 
 @dataclass(frozen=True)
@@ -131,6 +132,9 @@ class RollingWheel(Step):
     base_free: tuple | None = None
     unit: float = 1e-3  # the scene's length unit (m), for messages
     uname: str = "mm"
+    #: the teeth's pressure angle (rad) the scene states, or None (the default: the force
+    #: analysis takes 20 deg and says so)
+    pressure_angle: float | None = None
 
     kind = "rolling"
 
