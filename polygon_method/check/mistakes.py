@@ -102,7 +102,7 @@ class _Diagnoser:
                     out.append(_Candidate(val(alt), code, words))
         elif not sc.has_forces:
             out += self.torque(signed)
-        if kind in ("F", "N") or (kind == "torque" and sc.has_forces):
+        if kind in ("F", "N", "FI") or (kind == "torque" and sc.has_forces):
             out += self.force_slips(kind, names, signed)
         for factor, code, words in _FACTOR_MISTAKES.get(_AS_KIND.get(kind, kind), ()) + \
                 self.unit_slips(kind):
@@ -277,7 +277,8 @@ class _Diagnoser:
         out = []
 
         def pick(f):
-            return f.input_torque if kind == "torque" else force_value(f, kind, names[0])
+            return f.input_torque if kind == "torque" else \
+                force_value(f, kind, sc.rolling_body(names) if kind == "FI" else names[0])
 
         def again(words, code, **changes):
             try:

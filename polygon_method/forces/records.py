@@ -393,7 +393,14 @@ class Forces:
 
 def force_value(f: Forces, kind: str, name: str) -> float:
     """The size of what an answer key names: ``F`` the force at pin ``name`` (a pin joining
-    two bodies), ``N`` the guide's normal force on the block at ``name``."""
+    two bodies), ``N`` the guide's normal force on the block at ``name``, ``FI`` the size of
+    the contact force on the rolling body ``name`` (a wheel's link, a rack's ``block R``):
+    a gear's tooth load."""
+    if kind == "FI":
+        c = next((c for c in f.contacts if c.wheel == name), None)
+        if c is None:
+            raise SceneError(f"FI: {name} has no rolling contact")
+        return c.load
     if kind == "N":
         g = next((g for g in f.guides if g.key == name), None)
         if g is None:

@@ -331,13 +331,14 @@ class Solution(Motion):
             if not self.scene.has_forces:
                 return self.input_torque
             f = self.forces
-            if f.driver != "crank":  # a driving block's or cylinder's effort is a force
+            if f.driver not in ("crank", "wheel"):  # a block's or cylinder's effort: a force
                 raise SceneError(f"torque: {f.crank} drives this mechanism with a force, not "
                                  "a torque (solve gives it as the input force)")
             return f.input_torque
-        if kind in ("F", "N"):
+        if kind in ("F", "N", "FI"):
             from ..forces import force_value  # lazy, as in `forces`
-            return force_value(self.forces, kind, names[0])
+            return force_value(self.forces, kind, self.scene.rolling_body(names) if kind == "FI"
+                               else names[0])
         if kind in ("vu", "au"):  # the guide's point under a block (v_A1, a_A1)
             return hypot(*self.under_block(names[0], "velocity" if kind == "vu"
                                            else "acceleration"))

@@ -438,6 +438,7 @@ def parse_answers(text: str, scene: Scene, file: str | None = None, *,
     loader.two_inputs = scene.input.second is not None
     loader.scene_forces = scene.has_forces
     loader.driving_block = scene.input.block
+    loader.driving_wheel = scene.input.wheel
     loader.rolling_pairs = scene.rolling
     loader.ground = scene.ground
     tolerance, answers = loader.answers(set(scene.point_names), scene.sliders, scene.pins,

@@ -48,6 +48,9 @@ ANSWER_KINDS = {
     # pin joining two bodies, of a guide's normal force on its block
     "F": ("force", "pin_force", False),
     "N": ("force", "guide", False),
+    # the size of the contact force at a rolling wheel's contact (a gear's tooth load), by
+    # the wheel's link or a rack's point
+    "FI": ("force", "contact", False),
 }
 #: the answer kinds of the guide's point under a block (``v_A1``, ``a_A1``: its image a1)
 UNDER_BLOCK_KINDS = {"v": "vu", "a": "au"}
@@ -544,6 +547,13 @@ class Scene:
         """The slider named ``name``: a block's point (``D``), or one slot of a peg in two
         slots (``P_OA``; the point alone gives its first slot)."""
         return next((s for s in self.sliders if s.point == name or s.key == name), None)
+
+    def rolling_body(self, names) -> str:
+        """The rolling body an answer's names give (``FI_AP``): the wheel's link key, or a
+        rack's ``block R``."""
+        if len(names) == 1:
+            return f"block {names[0]}"
+        return self.link("-".join(names)).key
 
     @property
     def blocks(self) -> tuple:
