@@ -549,8 +549,9 @@ def test_the_driving_wheel_in_solve_and_json():
     f = sol.forces
     text = solution_text(sol)
     assert re.search(r"input torque on the wheel CA \(inertia, weights and loads\): [\d.]+ N m "
-                     r"c?cw \(its driver's torque on it; the same effort as a force at its "
-                     r"centre along the ground: [\d.]+ N at [\d.]+ deg\)", text)
+                     r"c?cw \(its driver's torque on it, the effort taken as a torque; as a "
+                     r"force at its centre along the ground instead: [\d.]+ N at [\d.]+ "
+                     r"deg\)", text)
     d = json.loads(json.dumps(sol.to_dict(), allow_nan=False))["forces"]
     assert d["wheel"] == "CA" and d["input_torque"] == f.input_torque
     assert d["centre_force"] == pytest.approx([-f.input_torque / 0.3 * u for u in (1.0, 0.0)],
@@ -568,7 +569,7 @@ def test_check_keys_for_the_tooth_load_and_the_wheels_torque(tmp_path, capsys):
     base = WORKED.read_text().split("[answers]")[0]
     wrong = parse_scene(base + f'[answers]\n"FI_O2-B" = "{abs(c.tangential):.4g} N"\n')
     (v,) = check_answers(solve(wrong))
-    assert not v.ok and v.key == "FI_O2-B"
+    assert not v.ok and v.key == "FI_O2-B" and v.mistake == "pressure_angle_left_out"
     tau = solve(_driving_wheel()).forces.input_torque
     wheel = _driving_wheel(f'[answers]\ntorque = "{abs(tau):.4g} N m {"ccw" if tau > 0 else "cw"}"\n')
     (v,) = check_answers(solve(wheel))
@@ -598,3 +599,150 @@ def test_bad_pressure_angles_are_one_located_line(extra, words):
     with pytest.raises(SceneError, match=words) as e:
         parse_scene(text)
     assert "\n" not in str(e.value) and "[rolling] O2-B" in str(e.value)
+
+
+# ----- friction at the guides and the pins
+
+def _friction_scene(path, guides, pins):
+    """A worked problem given masses on every moving link (G off the link's line) and
+    block, gravity, a load at a moving point, every pin a size, and [friction]."""
+    sc = load_scene(path)
+    raw = scene_table(sc)
+    raw.pop("answers", None)
+    raw.pop("variants", None)
+    unit = sc.length_unit
+    masses = dict(raw.get("masses", {}))
+    moving = [lk for lk in sc.links if not (lk.p in sc.ground and lk.q in sc.ground)]
+    for k, lk in enumerate(moving):
+        if lk.key not in masses:
+            L = lk.length / unit
+            masses[lk.key] = {"mass": 1.0 + k, "distances": {lk.p: 0.6 * L, lk.q: 0.6 * L},
+                              "turn": "ccw", "gyration": 0.3 * L}
+    for sl in sc.blocks:
+        if sl.point not in masses:
+            masses[sl.point] = {"mass": 2.0}
+    raw["masses"] = masses
+    raw.setdefault("gravity", {"direction": 250})
+    loads = dict(raw.get("loads", {}))
+    if not loads:
+        pt = next(p for lk in moving for p in lk.points if p not in sc.ground)
+        loads[pt] = {"force": [-300, 120]}
+    raw["loads"] = loads
+    names = sorted({p for lk in sc.links for p in lk.points})
+    raw["pins"] = {p: {"diameter": 20 + 3 * k} for k, p in enumerate(names)}
+    raw["friction"] = {"guides": guides, "pins": pins}
+    return scene_from_table(raw)
+
+
+def _omega_of(sol, body):
+    sc = sol.scene
+    if body == FRAME:
+        return 0.0
+    if body.startswith("block "):
+        g = getattr(sc.slider(body[6:]), "guide", None)
+        return sol.W[sc.link(g).key] if g else 0.0
+    return sol.W[body]
+
+
+def _friction_power(sol, f):
+    """The friction's power, from the forces found and the motion, written here: at each
+    pin -mu r |F| |omega_on - omega_by|, at each guide -mu |N| |v_rel| (v_rel the block's
+    velocity less the guide's point's under it)."""
+    sc = sol.scene
+    fr = sc.friction
+    radius = {p.point: p.radius for p in sc.pins}
+    total = 0.0
+    for p in f.pins:
+        if p.point in radius:
+            total -= fr.pins * radius[p.point] * p.magnitude * \
+                abs(_omega_of(sol, p.on) - _omega_of(sol, p.by))
+    for g in f.guides:
+        X = g.point
+        v = sol.V[X]
+        if g.by == FRAME:
+            w = (0.0, 0.0)
+        else:
+            lk = sc.link(g.by)
+            (px, py), (vx, vy), om = sol.P[lk.p], sol.V[lk.p], sol.W[lk.key]
+            w = (vx - om * (sol.P[X][1] - py), vy + om * (sol.P[X][0] - px))
+        total -= fr.guides * abs(g.normal) * math.hypot(v[0] - w[0], v[1] - w[1])
+    return total
+
+
+FRICTION_CASES = ["offset_slider_crank", "fourbar_forces", "crank_slotted_lever",
+                  "whitworth", "gear_pair_forces"]
+
+
+@pytest.mark.parametrize("name", FRICTION_CASES)
+def test_friction_the_power_balance_includes_its_loss(name):
+    """The driver's power balances the loads', the inertia's and the friction's, the last
+    written here from the forces found (every pin a size, mu 0.15 at the guides and 0.1 at
+    the pins); every body in equilibrium with its friction; the torque differs from the
+    frictionless one."""
+    import sys
+    sys.path.insert(0, str(ROOT / "tests"))
+    from test_forces import _driver_power, _kin, _newton_euler
+    path = ROOT / "worked_problems" / f"{name}.toml"
+    sc = _friction_scene(path, 0.15, 0.1)
+    sol = solve(sc)
+    f = sol.forces
+    loss = _friction_power(sol, f)
+    assert loss < 0 and abs(f.friction_power - loss) <= 1e-12 * abs(loss)
+    terms = _driver_power(sc, sol, f) + [loss]
+    for ld in sc.loads:
+        if ld.force is not None:
+            v = sol.V[ld.target]
+            terms.append(ld.force[0] * v[0] + ld.force[1] * v[1])
+        else:
+            terms.append(ld.torque * sol.W[ld.target])
+    g = sc.gravity
+    for m in sc.masses:
+        G, v, a, al, w = _kin(sol, m)
+        if g is not None:
+            terms.append(m.mass * g.g * (g.direction[0] * v[0] + g.direction[1] * v[1]))
+        terms.append(-m.mass * (a[0] * v[0] + a[1] * v[1]))
+        terms.append(-m.inertia * al * w)
+    assert abs(sum(terms)) <= 1e-9 * sum(abs(t) for t in terms)
+    for body, (rf, rm, fs, ms) in _newton_euler(sol, f).items():
+        assert rf <= 1e-9 * fs and rm <= 1e-9 * ms, body
+    plain = solve(replace_friction(sc, None)).forces
+    assert abs(plain.input_torque - f.input_torque) > 1e-3 * abs(plain.input_torque)
+
+
+def replace_friction(sc, fr):
+    import dataclasses
+    return dataclasses.replace(sc, friction=fr)
+
+
+def test_no_friction_is_as_before_and_the_words_say_it():
+    from polygon_method.scene.records import Friction
+    from polygon_method.text.report import solution_text
+    sc = load_scene(WORKED)
+    f0 = solve(sc).forces
+    f1 = solve(replace_friction(sc, Friction(0.0, 0.0))).forces
+    assert f1.input_torque == f0.input_torque and f1.friction_power == 0.0
+    raw = scene_table(sc)
+    raw["pins"] = {"O1": {"diameter": 20}, "O2": {"diameter": 20}, "B": {"diameter": 16},
+                   "C": {"diameter": 16}}
+    raw["friction"] = {"guides": 0.1, "pins": 0.05}
+    raw.pop("answers")
+    sol = solve(scene_from_table(raw))
+    text = solution_text(sol)
+    assert "friction at the guide of C:" in text and "friction at pin O2: couple" in text
+    assert re.search(r"friction power: -[\d.]+ W", text)
+    assert "input torque on O1-A (inertia, weights, loads and friction):" in text
+    d = json.loads(json.dumps(sol.to_dict(), allow_nan=False))["forces"]["friction"]
+    assert d["power"] == sol.forces.friction_power < 0
+    assert {p["what"] for p in d["pins"]} >= {"friction at pin O2", "friction at pin B"}
+
+
+@pytest.mark.parametrize("table, words", [
+    ("[friction]\nguides = 1.5", "a coefficient of friction, a number from 0 up to"),
+    ("[friction]\npins = 0.1", "friction at the pins needs their sizes"),
+    ("[friction]\nguide = 0.1", "unknown key 'guide'"),
+])
+def test_bad_friction_is_one_located_line(table, words):
+    text = WORKED.read_text().split("[answers]")[0] + table + "\n"
+    with pytest.raises(SceneError, match=words) as e:
+        parse_scene(text)
+    assert "\n" not in str(e.value) and "[friction]" in str(e.value)

@@ -272,7 +272,8 @@ class _Diagnoser:
         """The force chapter's classic slips, each solved again as the slip would have it:
         the power balance without inertia, the piston's inertia left out, the weights added
         where the problem leaves them out, the inertia couple left out, the offset h on the
-        wrong side of G (the couple's sense reversed)."""
+        wrong side of G (the couple's sense reversed); a tooth load given as its part along
+        the tangent (the pressure angle left out)."""
         sol, sc = self.sol, self.sc
         out = []
 
@@ -291,6 +292,15 @@ class _Diagnoser:
             out.append(_Candidate(self.cmp(sol.input_torque, signed), "no_inertia",
                                   "the power balance without the inertia forces (T = -sum F . v "
                                   "/ omega leaves out -m a_G . v_G and -I alpha omega)"))
+        if kind == "FI":  # the tooth load's part along the tangent given for the whole
+            body = sc.rolling_body(names)
+            c = next((c for c in sol.forces.contacts if c.wheel == body), None)
+            if c is not None and c.teeth is not None and c.teeth > 0:
+                out.append(_Candidate(self.cmp(abs(c.tangential), signed),
+                                      "pressure_angle_left_out",
+                                      "the tooth load's part along the common tangent given "
+                                      "for the whole load: the pressure angle left out (the "
+                                      "load acts along the line of action, |T| / cos phi)"))
         blocks = [m.body for m in sc.masses if m.block]
         if blocks:
             again(f"the inertia of the reciprocating parts at {', '.join(blocks)} left out",

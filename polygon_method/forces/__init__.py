@@ -36,8 +36,8 @@ from __future__ import annotations
 from dataclasses import replace
 
 from ..common.errors import PolygonMethodError
-from . import (carried, crank, cylinder, driver, dyad, peg, rack, rolling, slider, slotted,
-               triad, wheel, wheel_driver, yoke)
+from . import (carried, crank, cylinder, driver, dyad, friction, peg, rack, rolling, slider,
+               slotted, triad, wheel, wheel_driver, yoke)
 from .bodies import Ledger, Singular, centre, cross, gather
 from .records import (FRAME, Contact, Couple, Forces, ForceStep, FreeBody, GuideForce,
                       Inertia, PinForce, Side, block, couple_label, force_value, forces_dict,
@@ -118,10 +118,30 @@ def owners(scene, plan) -> dict:
 
 def analyse(motion) -> Forces:
     """The :class:`Forces` at the instant of ``motion`` (a solved, one-instant
-    :class:`~polygon_method.solver.kinematics.Motion` of a scene with masses or gravity)."""
+    :class:`~polygon_method.solver.kinematics.Motion` of a scene with masses or gravity;
+    or arrays over a sweep). With ``[friction]`` the walk is repeated with the friction of
+    the forces found before until they settle (:mod:`.friction`)."""
     scene, plan = motion.scene, motion.plan
     own = owners(scene, plan)
+    if scene.friction is None:
+        return _analysed(scene, plan, motion, own, ())
+    before = None
+    for _ in range(friction.ROUNDS):
+        f = _analysed(scene, plan, motion, own, before or ())
+        now = friction.loads(scene, motion, f.pins, f.guides)
+        if friction.change(before, now) <= friction.SETTLED * friction.scale(f):
+            return f
+        before = now
+    raise PolygonMethodError(f"forces: with friction the forces do not settle after "
+                             f"{friction.ROUNDS} passes: the mechanism may lock itself here "
+                             "(the friction too large for the driver to move it)",
+                             file=scene.file, key="[friction]")
+
+
+def _analysed(scene, plan, motion, own, fric) -> Forces:
+    """One walk, with the friction loads ``fric`` (:func:`.friction.loads`) known."""
     records, led = gather(scene, motion, own)
+    friction.apply(led, fric)
     inp = scene.input
     driving = next((st for st in plan.steps
                     if getattr(ROOMS[st.kind], "drives", lambda sc, s: False)(scene, st)),
@@ -154,7 +174,9 @@ def analyse(motion) -> Forces:
                   drawing=_drawing(scene, plan, motion.P, records, pins, guides, led, torque,
                                    steps, contacts),
                   centre_force=(wheel_driver.centre_force(plan.steps[0], effort)
-                                if kind == "wheel" else None))
+                                if kind == "wheel" else None),
+                  friction=tuple(fric),
+                  friction_power=friction.power(motion, scene, fric) if fric else 0.0)
 
 
 def _drawing(scene, plan, P, records, pins, guides, led, torque, steps, contacts) -> tuple:

@@ -255,6 +255,8 @@ def side_label(side: Side, numbers: dict, unicode: bool = True) -> str:
         return "W" + _sub(numbers, side.on, unicode=unicode)
     if side.what == "gas":
         return "gas force"
+    if side.what == "friction":
+        return ("\u03bcN" if unicode else "muN") + f" at {side.point}"
     return f"P at {side.point}"
 
 
@@ -358,6 +360,11 @@ class Forces:
     #: a driving wheel's effort as a force at its centre along the ground instead of the
     #: torque (N, a vector): ``(input_torque / r) t``, t = perp(m) along the ground; else None
     centre_force: tuple | None = None
+    #: the friction (``[friction]``) the forces were found with: (body, what, force, point)
+    #: at the guides and (body, what, couple) at the pins, reactions included
+    #: (:func:`.friction.loads`), and its power (W, never positive)
+    friction: tuple = ()
+    friction_power: float = 0.0
     #: what :attr:`numbers` and :attr:`free` are read from, when asked: (body -> number,
     #: or a function making it; a function making the free bodies)
     drawing: tuple = field(default=(), repr=False, compare=False)
@@ -465,6 +472,12 @@ def forces_dict(f: Forces) -> dict:
            {"second": {"crank": f.second_crank, "input_torque": f.second_torque + 0.0}}),
         **({"contacts": {c.wheel: _contact_dict(c) for c in f.contacts}}
            if f.contacts else {}),
+        **({"friction": {"power": f.friction_power + 0.0,
+                         "guides": [{"on": it[0], "what": it[1], "force": _vec(it[2]),
+                                     "at": _vec(it[3])} for it in f.friction if len(it) == 4],
+                         "pins": [{"on": it[0], "what": it[1], "couple": it[2] + 0.0}
+                                  for it in f.friction if len(it) == 3]}}
+           if f.friction else {}),
         "shaking_force": _vec(f.shaking_force),
         "shaking_moment": f.shaking_moment + 0.0,
         "steps": [{"step": s.index + 1, "kind": s.kind, "title": s.title,

@@ -322,6 +322,7 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
         loads = self.loads(known)
         masses = self.masses(points, sliders)
         gravity = self.gravity()
+        friction = self.friction(pins)
         indicator = self.indicator(sliders)
         flywheel = self.flywheel()
         tolerance, answers = self.answers(known, sliders, pins, loads) \
@@ -340,7 +341,8 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
                      source=source if isinstance(source, str) else None, variation=variation,
                      variant=variant, reading_notes=tuple(self.read_notes), _link_index=index,
                      rolling=tuple(rolling), masses=tuple(masses), gravity=gravity,
-                     indicator=indicator, flywheel=flywheel, _lines=tuple(self.lines))
+                     indicator=indicator, flywheel=flywheel, friction=friction,
+                     _lines=tuple(self.lines))
 
     def scale(self):
         return UNITS["length"][self.unit]

@@ -26,7 +26,7 @@ _ABSURD_SHORT = 1e-7
 
 TOP_KEYS = ("title", "source", "notes", "units", "ground", "links", "points", "sliders",
             "cylinders", "rolling", "assembly", "input", "pins", "loads", "answers", "variants",
-            "variant", "masses", "gravity", "indicator", "flywheel")
+            "variant", "masses", "gravity", "indicator", "flywheel", "friction")
 INPUT_KEYS = ("crank", "angle", "speed", "acceleration")
 #: the kinds of quantity on which [input] may give the motion instead of the crank's speed
 #: (named as answer keys: ``omega_BC``, ``vs_B``, ``v_B``), with their rate's prefix
@@ -381,6 +381,16 @@ class Pin:
 
 
 @dataclass(frozen=True)
+class Friction:
+    """Coulomb friction for the force analysis (``[friction]``): ``guides``, the
+    coefficient at every sliding guide (the friction ``mu |N|`` opposing the block's
+    sliding), ``pins``, the coefficient at every pin with a size in ``[pins]`` (the friction
+    circle of radius ``mu r``: a couple ``mu r |F|`` opposing the relative turning)."""
+    guides: float = 0.0
+    pins: float = 0.0
+
+
+@dataclass(frozen=True)
 class Load:
     """A force on a point (N), or a torque on a link (N m, ccw positive). A gas force on a
     piston is a force whose ``gas`` says how it was given: (pressure in Pa, area in m^2,
@@ -441,6 +451,8 @@ class Scene:
     #: asked for (:class:`Flywheel`), or None
     indicator: Indicator | None = None
     flywheel: Flywheel | None = None
+    #: Coulomb friction at the guides and the pins (:class:`Friction`), or None
+    friction: Friction | None = None
     #: where the problem comes from (the scene's ``source``), for headings
     source: str | None = field(default=None, compare=False)
     #: the scene's [variants] (what may vary per student), and [variant] (which one it is)
@@ -571,8 +583,10 @@ class Scene:
 
     @property
     def has_forces(self) -> bool:
-        """Whether the scene asks for the force analysis: it gives masses or gravity."""
-        return bool(self.masses) or self.gravity is not None or self.indicator is not None
+        """Whether the scene asks for the force analysis: it gives masses, gravity or
+        friction."""
+        return bool(self.masses) or self.gravity is not None or self.indicator is not None \
+            or self.friction is not None
 
     def rolling_of(self, point: str):
         """The rolling pair whose wheel has ``point`` as its rim point, or None."""

@@ -66,6 +66,29 @@ def _base(c):
     return "the fixed circle" if c.teeth is not None else "the ground"
 
 
+def _friction_lines(sol, f, F, M) -> list:
+    """The friction the forces were found with: each force at a guide, each couple at a
+    pin (on the first body; the other feels it back), and its power."""
+    fr = sol.scene.friction
+    if fr is None:
+        return []
+    out = [f"friction (Coulomb: mu = {fr.guides:g} at the guides, {fr.pins:g} at the pins "
+           "with a size in [pins], the friction circle mu r; against the sliding and the "
+           "relative turning; where nothing slides it is not determined and taken as 0):"]
+    seen = set()
+    for it in f.friction:
+        if it[1] in seen:  # (the reaction of one already said)
+            continue
+        seen.add(it[1])
+        if len(it) == 3:
+            out.append(f"  {it[1]}: couple {_moment(it[2], M)} on {it[0]}")
+        else:
+            out.append(f"  {it[1]}: {_vec(it[2], F)} on {_body(it[0])}")
+    out.append(f"  friction power: {fmt(quiet(f.friction_power, M))} W (lost; the driver "
+               "supplies it)")
+    return out
+
+
 def _rack_couple(f, g) -> bool:
     """Whether a guide's couple is a rack's (said with its normal force: the tooth load
     acts off the rack's point)."""
@@ -88,8 +111,8 @@ def _driver_lines(f, F, M, said):
                   " against the guide's direction")]
     elif f.driver == "wheel":
         out = [f"input torque on the wheel {f.crank}{said}: {_moment(f.input_torque, M)} (its "
-               "driver's torque on it; the same effort as a force at its centre along the "
-               f"ground: {_vec(f.centre_force, F)})"]
+               "driver's torque on it, the effort taken as a torque; as a force at its "
+               f"centre along the ground instead: {_vec(f.centre_force, F)})"]
     else:
         out = [f"input torque on {f.crank}{said}: {_moment(f.input_torque, M)}"]
     if f.second_crank is not None:
@@ -131,7 +154,9 @@ def forces_lines(sol) -> list:
         out.append(f"contact of {_wheel(c.wheel)} with {_base(c)}: normal "
                    f"{fmt(quiet(c.normal, F))} N, tangential {fmt(quiet(c.tangential, F))} N "
                    f"({_vec(c.force, F)}); " + c.grip_words())
-    out += _driver_lines(f, F, M, " (inertia, weights and loads)")
+    out += _friction_lines(sol, f, F, M)
+    out += _driver_lines(f, F, M, " (inertia, weights, loads and friction)"
+                         if sc.friction is not None else " (inertia, weights and loads)")
     out.append(f"shaking force on the frame: {_vec(f.shaking_force, F)}; shaking moment "
                f"about the origin: {_moment(f.shaking_moment, M)}")
     out += engine_lines(sol)
@@ -328,10 +353,14 @@ def _step_blocks(st, f, scale, F, M, bounds) -> list:
     return [("p", f"Step {st.index + 1}, {st.title}: {head}."), ("list", items)]
 
 
-def _driver_blocks(f, F, M) -> list:
-    """Section 8: the driving torque, the shaking force and moment, the guides' forces."""
-    items = [line + " (inertia, weights and loads; its power balances theirs)"
-             for line in _driver_lines(f, F, M, "")] + [
+def _driver_blocks(f, F, M, sol=None) -> list:
+    """Section 8: the driving torque, the shaking force and moment, the guides' forces (and
+    the friction, where the scene gives it)."""
+    fric = [] if sol is None else [line.strip() for line in _friction_lines(sol, f, F, M)]
+    said = (" (inertia, weights, loads and friction; its power balances theirs and the "
+            "friction's loss)" if fric else " (inertia, weights and loads; its power balances "
+            "theirs)")
+    items = fric + [line + said for line in _driver_lines(f, F, M, "")] + [
              f"shaking force (on the frame, through its pins and guides): "
              f"{_vec(f.shaking_force, F)}",
              f"shaking moment about the origin (with the driver's reaction): "
@@ -361,5 +390,5 @@ def force_blocks(sol, scale=None) -> list:
     bounds = force_bounds(sol, f)
     for st in f.steps:
         blocks += _step_blocks(st, f, scale, F, M, bounds)
-    blocks += _driver_blocks(f, F, M)
+    blocks += _driver_blocks(f, F, M, sol)
     return blocks
