@@ -24,6 +24,9 @@ angle (:mod:`.rolling`); a rack likewise, held by its guide (:mod:`.rack`).
 A triad's plate and three links are solved together (:mod:`.triad`: the textbook's 3x3
 solve).
 
+With ``[friction]`` the walk is repeated with the friction of the forces found before (at
+the guides ``mu |N|``, at the pins the friction circle) until they settle (:mod:`.friction`).
+
 What is not written yet is refused in one line naming the step (a triad whose plate is
 three links): no guess.
 
@@ -272,8 +275,8 @@ def _free_bodies(scene, P, numbers, records, pins, guides, led, torque, contacts
                                   (-c.force[0], -c.force[1]), c.point))
         couples = [Couple("inertia", body, i.couple) for i in records
                    if i.body == body and i.offset is None and i.couple != 0]
-        couples += [Couple("load", body, e[1]) for e in led.applied.get(body, ())
-                    if len(e) == 2]
+        couples += [Couple("friction" if e[0].startswith("friction") else "load", body, e[1])
+                    for e in led.applied.get(body, ()) if len(e) == 2]
         couples += [Couple("guide", body, g.couple) for g in guides
                     if block(g.point) == body and isinstance(g.couple, float) and g.couple]
         if body == driven:

@@ -71,7 +71,7 @@ def _guide_velocity(scene, motion, by, X):
 def loads(scene, motion, pins, guides) -> tuple:
     """The friction of the forces found: ((body, what, (fx, fy), (x, y)) forces at guides,
     (body, what, couple) couples at pins), with their reactions, and the friction power
-    (each term's)."""
+    (each term's); the frame's share too (the shaking force and moment count it)."""
     fr = scene.friction
     out = []
     if fr.guides:
@@ -85,8 +85,7 @@ def loads(scene, motion, pins, guides) -> tuple:
             x, y = motion.P[X]
             what = f"friction at the guide of {X}"
             out.append((block(X), what, (f * ux, f * uy), (x, y)))
-            if g.by != FRAME:
-                out.append((g.by, what, (-f * ux, -f * uy), (x, y)))
+            out.append((g.by, what, (-f * ux, -f * uy), (x, y)))  # (the frame: shaking)
     if fr.pins:
         radius = {p.point: p.radius for p in scene.pins}
         for p in pins:
@@ -97,9 +96,7 @@ def loads(scene, motion, pins, guides) -> tuple:
             c = -fr.pins * r * (p.force[0] ** 2 + p.force[1] ** 2) ** 0.5 * sgn(rel)
             what = f"friction at pin {p.point}"
             for body, cc in ((p.on, c), (p.by, -c)):
-                body = _turner(scene, body)
-                if body != FRAME:
-                    out.append((body, what, cc))
+                out.append((_turner(scene, body), what, cc))
     return tuple(out)
 
 

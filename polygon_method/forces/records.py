@@ -202,7 +202,8 @@ class Side:
 class Couple:
     """A couple (N m, ccw positive) on body ``on``: ``what`` ``inertia`` (``-I alpha``,
     drawn only where no single inertia force carries it: ``a_G = 0``), ``load`` (a
-    ``[loads]`` couple), ``guide`` (a guide's, holding a rack or a yoke from turning) or
+    ``[loads]`` couple), ``friction`` (a pin's friction circle's), ``guide`` (a guide's,
+    holding a rack or a yoke from turning) or
     ``torque`` (the driver's, on the crank or a driving wheel)."""
 
     what: str
@@ -263,8 +264,8 @@ def side_label(side: Side, numbers: dict, unicode: bool = True) -> str:
 def couple_label(c: Couple, numbers: dict, unicode: bool = True) -> str:
     """``T2`` the driver's torque on link 2, ``C4`` a couple on link 4, ``Ci3`` the inertia
     couple of link 3."""
-    head = {"torque": "T", "load": "C", "guide": "C", "inertia": "C\u1d62" if unicode
-            else "Ci"}[c.what]
+    head = {"torque": "T", "load": "C", "guide": "C", "friction": "C\u03bc" if unicode
+            else "Cmu", "inertia": "C\u1d62" if unicode else "Ci"}[c.what]
     return head + _sub(numbers, c.on, unicode=unicode)
 
 

@@ -77,7 +77,7 @@ def _friction_lines(sol, f, F, M) -> list:
            "relative turning; where nothing slides it is not determined and taken as 0):"]
     seen = set()
     for it in f.friction:
-        if it[1] in seen:  # (the reaction of one already said)
+        if it[1] in seen or it[0] == FRAME:  # (the reaction of one already said)
             continue
         seen.add(it[1])
         if len(it) == 3:
