@@ -19,11 +19,16 @@ the coordinates ``q`` (x, y of every non-ground point):
   beta0)``: no slip at the pitch point relative to the line of centres, psi the direction
   O -> C and beta the gear's (its centre to its link's other point), both read from the
   points, ``kd = 1 + e R/r``, ``kb = -e R/r`` (e = +1 outside, -1 inside; R from the centre
-  distance). Evaluated at the scene's own angle, where phi = phi0 (s0 is C's place there);
+  distance: |d| + e r, or r - |d| where the wheel is a ring about the gear, e = -1: no slip
+  at I = O - R d/|d| relative to the line of centres gives the same kd, kb). Evaluated at the scene's own angle, where phi = phi0 (s0 is C's place there);
   it has no explicit time, and its gamma is its second derivative along q' (mpmath.diff).
 * a rack R on a fixed path (T, u) meshing with a pinion about O:  ``(R - T).u - k K (th - th0)
   = 0`` with k = -(T - O).perp(u) (the pinion's point at the pitch point moves as the rack)
-  and K the pinion's turns per turn of the crank (with the path's equation above).
+  and K the pinion's turns per turn of the crank (with the path's equation above); a
+  pinion that is no wheel of [rolling] and not the crank (keyed to a rocker: it turns as
+  a linkage makes it) ``(R - T).u - k (beta - beta0) = 0``, beta its direction O -> Q
+  (Q its link's other point) read from the points, beta0 at the scene's own angle (no
+  explicit time; its gamma the second derivative along q', mpmath.diff).
 * a driving block X on its fixed path (T, u) ([input] block): ``(X - T).u - s = 0`` (with the
   path's equation above), ``s(t) = s0 + vs t + as t^2 / 2``: the "crank angle" th is s,
   ``f_t = -vs``, ``gamma = -as``
@@ -159,6 +164,11 @@ def _equations(scene):
             T, u = _v(sl.through), _unit(_v(sl.u))
             O = _v(scene.ground[pr.base_centre])
             k = -_dot(_sub(T, O), _perp(u))
+            if pr.base != scene.link(inp.crank).key and pr.base not in wheels:
+                bl = scene.link(pr.base)
+                eqs.append(("rackfree", (pr.rim, T, u, k, pr.base_centre,
+                                         bl.other(pr.base_centre))))
+                continue
             eqs.append(("rack", (pr.rim, T, u, k, pr.base, rates, mpf(inp.angle))))
             continue
         ell = mpf(scene.link(pr.wheel).length)
@@ -280,6 +290,13 @@ def _eval(kind, d, P, th, moving=False):
         x, T, u, k, base, rates, th0 = d
         K = rates.get(base, 0)  # (at the scene's own angle th = th0 the term is zero)
         return _dot(_sub(P[x], T), u) - k * K * (th - th0), [(x, u[0], u[1])]
+    if kind == "rackfree":  # at the scene's own angle the pinion's turn is zero
+        x, T, u, k, O, Q = d
+        out = [(x, u[0], u[1])]
+        if moving:  # - k d(beta), beta the direction O -> Q
+            hx, hy = _angle_gradient(P, O, Q)
+            out += [(Q, -k * hx, -k * hy), (O, k * hx, k * hy)]
+        return _dot(_sub(P[x], T), u), out
     if kind == "wheelline":
         x, T, m, r = d
         return _dot(_sub(P[x], T), m) - r, [(x, m[0], m[1])]
@@ -306,9 +323,10 @@ def _rim_angle(P, cen, phi0, how):
         phi = phi0 if phi0 is not None else mpmath.atan2(-m[1], -m[0])
         return mpf(phi), (t[0] / r, t[1] / r)
     _, O, e, r, pr, base = how
-    if phi0 is None:
+    if phi0 is None:  # towards the contact (a ring's is beyond the gear inside it)
         d = _sub(P[cen], P[O])
-        phi0 = mpmath.atan2(-e * d[1], -e * d[0])
+        g = 1 if getattr(pr, "ring", False) else e
+        phi0 = mpmath.atan2(-g * d[1], -g * d[0])
     return mpf(phi0), (mpf(0), mpf(0))
 
 
@@ -320,6 +338,8 @@ def _rim_ratios(P, cen, how):
     _, O, e, r, pr, base = how
     d = _sub(P[cen], P[O])
     R = mpmath.sqrt(_dot(d, d)) - e * r
+    if getattr(pr, "ring", False):  # the wheel a ring about the gear: |d| = r - R
+        R = r - mpmath.sqrt(_dot(d, d))
     return 1 + e * R / r, -e * R / r
 
 
@@ -359,6 +379,11 @@ def _rim_value_along(P, V, d, s):
     phi = phi + kd * turn(O, cen) + (kb * turn(*base) if base is not None else 0)
     ec = mpmath.cos(phi) if c == 0 else mpmath.sin(phi)
     return Q[x][c] - Q[cen][c] - ell * ec
+
+
+def _add_s(p, v, s):
+    """p + s v."""
+    return (p[0] + s * v[0], p[1] + s * v[1])
 
 
 def _unknowns(scene):
@@ -476,6 +501,12 @@ def reference_solution(scene, guess_positions):
             gamma[i] = -al
         elif kind == "rack":
             gamma[i] = -d[3] * rates[d[4]] * al
+        elif kind == "rackfree":  # -k beta along the motion: its second derivative
+            x, T, u, k, O, Q = d
+            d0 = _sub(P[Q], P[O])
+            gamma[i] = -k * mpmath.diff(lambda s: mpmath.atan2(
+                _cross(d0, _sub(_add_s(P[Q], V[Q], s), _add_s(P[O], V[O], s))),
+                _dot(d0, _sub(_add_s(P[Q], V[Q], s), _add_s(P[O], V[O], s)))), 0, 2)
         elif kind == "rim":  # X - C - l e(phi): gamma = l phi'^2 e - l perp(e) phi_tt
             x, cen, ell, _, how, c = d
             e = _unit(_sub(P[x], P[cen]))

@@ -14,6 +14,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from polygon_method import load_scene, solve
@@ -268,12 +269,15 @@ def test_draw_forces_on_the_command_line(tmp_path):
     assert r.returncode == 2 and "--forces" in r.stderr and not bad.exists()
 
 
-def test_the_page_draws_each_inertia_force_at_g_over_the_cycle():
+def test_the_page_draws_each_inertia_force_on_its_offset_line_over_the_cycle():
     """The page's inertia forces, frame by frame, against m a_G from the sweep's link ends
-    (G placed on the link by the test), at one round scale that holds the largest."""
+    (G placed on the link by the test), at one round scale that holds the largest; each
+    drawn through H, the point of its line nearest G, where the force's moment about G is
+    the inertia couple -I alpha (alpha from the sweep)."""
     from polygon_method.page.data import INERTIA_CM, page_data
     from polygon_method.page.frames import frames
     from polygon_method.page.html import page_html
+    offsets = 0
     for path in WORKED:
         sc = load_scene(path)
         fr = frames(sc, 24)
@@ -303,11 +307,25 @@ def test_the_page_draws_each_inertia_force_at_g_over_the_cycle():
                 assert F[1] == pytest.approx(-m.mass * a[1], rel=1e-5, abs=1e-6 * m.mass)
                 assert b["G"][2 * k] == pytest.approx(G[0], rel=1e-5, abs=1e-9)
                 largest = max(largest, math.hypot(*F))
+                h = (b["H"][2 * k] - G[0], b["H"][2 * k + 1] - G[1])
+                couple = 0.0 if m.block else -m.inertia * float(np.broadcast_to(
+                    res.Al[m.body], (n,))[k])
+                lk_len = max(lk.length for lk in sc.links)
+                if abs(couple) > 1e-9 * math.hypot(*F) * lk_len and \
+                        abs(couple) < 0.999 * math.hypot(*F) * lk_len:  # the line within reach
+                    offsets += 1
+                    assert h[0] * F[1] - h[1] * F[0] == pytest.approx(couple, rel=1e-4)
+                    assert h[0] * F[0] + h[1] * F[1] == pytest.approx(
+                        0.0, abs=1e-4 * math.hypot(*h) * math.hypot(*F))  # nearest G
+                elif abs(couple) < 1e-12:  # through G (to the page's rounding)
+                    assert math.hypot(*h) < 1e-5 * lk_len
         assert largest / d["perCm"] <= INERTIA_CM + 1e-9
         stated = parse_scale(d["text"])
         assert stated.per_cm == pytest.approx(d["perCm"])
         assert largest / finer(stated).per_cm > INERTIA_CM  # the finest that holds it
-        assert f"inertia forces at G: <b id=\"scale-inertia\">{d['text']}</b>" in page_html(fr)
+        assert ("inertia forces (each on its line h from G): "
+                f"<b id=\"scale-inertia\">{d['text']}</b>") in page_html(fr)
+    assert offsets > 0  # some body's force is off G in some frame
     # no masses: no inertia forces on the page
     plain = frames(load_scene(ROOT / "worked_problems" / "fourbar_image_points.toml"), 12)
     assert page_data(plain)["inertia"] is None

@@ -222,7 +222,7 @@ def test_the_worked_gear_pair_and_its_written_answers():
     text = WORKED.read_text()
     want = {"F_O2": math.hypot(x["O2.x"], x["O2.y"]), "F_B": math.hypot(x["B.x"], x["B.y"]),
             "F_C": math.hypot(x["C.x"], x["C.y"]), "N_C": abs(x["N_C"]),
-            "FI": math.hypot(*x["tooth O2-B.F"]), "T": abs(x["T"])}
+            "Fc": math.hypot(*x["tooth O2-B.F"]), "T": abs(x["T"])}
     for key, v in want.items():
         written = re.search(rf"#.*\b{key} = ([\d.]+)", text)
         assert float(written.group(1)) == pytest.approx(v, rel=6e-4), key
@@ -230,7 +230,7 @@ def test_the_worked_gear_pair_and_its_written_answers():
         ("ccw" if x["T"] > 0 else "cw")
     verdicts = check_answers(sol)
     assert verdicts and all(v.ok for v in verdicts), [(v.key, v.ok) for v in verdicts]
-    assert {v.key for v in verdicts} >= {"FI_O2-B", "F_B", "N_C", "torque"}
+    assert {v.key for v in verdicts} >= {"Fc_O2-B", "F_B", "N_C", "torque"}
 
 
 # ----- a planet on a fixed sun (the teeth's angle stated), Watt's sun and planet (a gear
@@ -560,16 +560,16 @@ def test_the_driving_wheel_in_solve_and_json():
 
 
 def test_check_keys_for_the_tooth_load_and_the_wheels_torque(tmp_path, capsys):
-    """FI_L: the contact force's size at wheel L (a rack's point); the driving wheel's
+    """Fc_L: the contact force's size at wheel L (a rack's point); the driving wheel's
     torque is a torque answer where masses are given; a key naming no wheel is one line."""
     from polygon_method.check import check_answers
     from polygon_method.cli import main
     sol = solve(load_scene(WORKED))
     c = sol.forces.contacts[0]
     base = WORKED.read_text().split("[answers]")[0]
-    wrong = parse_scene(base + f'[answers]\n"FI_O2-B" = "{abs(c.tangential):.4g} N"\n')
+    wrong = parse_scene(base + f'[answers]\n"Fc_O2-B" = "{abs(c.tangential):.4g} N"\n')
     (v,) = check_answers(solve(wrong))
-    assert not v.ok and v.key == "FI_O2-B" and v.mistake == "pressure_angle_left_out"
+    assert not v.ok and v.key == "Fc_O2-B" and v.mistake == "pressure_angle_left_out"
     tau = solve(_driving_wheel()).forces.input_torque
     wheel = _driving_wheel(f'[answers]\ntorque = "{abs(tau):.4g} N m {"ccw" if tau > 0 else "cw"}"\n')
     (v,) = check_answers(solve(wheel))
@@ -578,14 +578,14 @@ def test_check_keys_for_the_tooth_load_and_the_wheels_torque(tmp_path, capsys):
                   {"R1": {"mass": 2}}, gravity=True)
     want = next(c.load for c in solve(racks).forces.contacts if c.wheel == "block R1")
     racks = _with(ROOT / "tests" / "textbook" / "rolling_pinion_two_racks.toml",
-                  {"R1": {"mass": 2}}, gravity=True, answers={"FI_R1": f"{want:.4g} N"})
+                  {"R1": {"mass": 2}}, gravity=True, answers={"Fc_R1": f"{want:.4g} N"})
     (v,) = check_answers(solve(racks))
     assert v.ok
     bad = tmp_path / "bad.toml"
-    bad.write_text(base + '[answers]\nFI_BC = "100 N"\n')
+    bad.write_text(base + '[answers]\nFc_BC = "100 N"\n')
     assert main(["check", str(bad)]) == 2
     err = capsys.readouterr().err.strip()
-    assert "\n" not in err and "FI_BC: BC is no wheel of [rolling] and no rack" in err
+    assert "\n" not in err and "Fc_BC: BC is no wheel of [rolling] and no rack" in err
 
 
 @pytest.mark.parametrize("extra, words", [

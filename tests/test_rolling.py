@@ -409,3 +409,18 @@ def test_sweep_and_linkage_agree_on_a_planets_slider_range():
         assert math.isclose(got_hi, hi, rel_tol=1e-9), (got_hi, hi)
     words = "the motion repeats only every 2 turns"
     assert words in lk.text() and words in summarize(scene).text()
+
+
+def test_default_space_scale_fits_the_pitch_circles():
+    """A planet (radius 50) on an arm of 150 about a fixed sun (radius 100): the sun's and
+    the planet's pitch circles span x from -100 to 200 (300 mm), wider than the joints
+    (O to C, 150 mm). The configuration's default scale fits that span in 15 cm, so the
+    drawing fits A4 without --scale (it was chosen for the joints alone: 1 cm = 10 mm,
+    30 cm of sun)."""
+    from polygon_method.polygons.scales import SPACE_FIT_CM, diagram_scales
+    sol = solve(parse_scene(PLANET.format(arm=150, rp=50, inside="", w=10, al=0)
+                            .replace("angle = 35", "angle = 0")))
+    space = diagram_scales(sol)[0]
+    span_mm = 300.0  # by hand: the sun's left edge (-100) to the planet's right (150 + 50)
+    assert span_mm / (space.per_cm * 1000.0) <= SPACE_FIT_CM
+    assert span_mm / 10.0 > SPACE_FIT_CM  # the joints' scale (1 cm = 10 mm) would not fit

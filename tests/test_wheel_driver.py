@@ -127,6 +127,12 @@ def test_json_gives_the_wheel_and_its_contact(case, tmp_path, capsys):
     assert close(tuple(rolling["contact"]), (case[5] / 1000, 0.0), r)
     assert close(tuple(rolling["acceleration"]), cf["aI"], w * w * r)
     assert close(tuple(rolling["velocity"]), (0.0, 0.0), abs(w) * r)
+    # the centre is the wheel's, not a slider's: with the wheel, along its ground line
+    assert set(d["sliders"]) == {"B"} and set(d["error_bounds"]["sliders"]) == {"B"}
+    assert rolling["centre"] == "C" and rolling["line"] == "horizontal"
+    assert close(rolling["centre_velocity"], -w * r, 0.0)  # no slip: v_C = omega r
+    assert close(rolling["centre_acceleration"], -al * r, abs(w) * r)
+    assert 0 <= d["error_bounds"]["rolling"]["CA"]["centre_velocity"] < 1e-12
 
 
 def test_steps_say_the_wheel_rolls(tmp_path, capsys):

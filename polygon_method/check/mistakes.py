@@ -102,7 +102,7 @@ class _Diagnoser:
                     out.append(_Candidate(val(alt), code, words))
         elif not sc.has_forces:
             out += self.torque(signed)
-        if kind in ("F", "N", "FI") or (kind == "torque" and sc.has_forces):
+        if kind in ("F", "N", "Fc", "Fi", "Ci", "h") or (kind == "torque" and sc.has_forces):
             out += self.force_slips(kind, names, signed)
         for factor, code, words in _FACTOR_MISTAKES.get(_AS_KIND.get(kind, kind), ()) + \
                 self.unit_slips(kind):
@@ -279,7 +279,7 @@ class _Diagnoser:
 
         def pick(f):
             return f.input_torque if kind == "torque" else \
-                force_value(f, kind, sc.rolling_body(names) if kind == "FI" else names[0])
+                force_value(f, kind, sc.rolling_body(names) if kind == "Fc" else names[0])
 
         def again(words, code, **changes):
             try:
@@ -292,7 +292,7 @@ class _Diagnoser:
             out.append(_Candidate(self.cmp(sol.input_torque, signed), "no_inertia",
                                   "the power balance without the inertia forces (T = -sum F . v "
                                   "/ omega leaves out -m a_G . v_G and -I alpha omega)"))
-        if kind == "FI":  # the tooth load's part along the tangent given for the whole
+        if kind == "Fc":  # the tooth load's part along the tangent given for the whole
             body = sc.rolling_body(names)
             c = next((c for c in sol.forces.contacts if c.wheel == body), None)
             if c is not None and c.teeth is not None and c.teeth > 0:

@@ -211,7 +211,8 @@ def _cmd_page(args) -> int:
         print(f"warning: {w}", file=sys.stderr)
     write_outputs(targets, [(html, False)])
     from ..polygons.scales import display_unit
-    cycle = "over a full turn" if fr.full_turn else \
+    cycle = ("over a full turn" if fr.cycle_degrees == 360 else
+             f"over the whole cycle ({fr.cycle_degrees:g} deg)") if fr.full_turn else \
         f"over {fr.sol.plan.steps[0].travel} ({fr.limits_text})" \
         if not fr.sol.plan.steps[0].periodic else \
         f"between the limit positions ({fr.limits_text})"

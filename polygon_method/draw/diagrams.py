@@ -158,9 +158,7 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
             sk.polygon(list(body.exterior.coords), gid=f"yoke-{sl.yoke}", face=BODY_FACE,
                        edge=BODY_EDGE, lw=0.8, z=2, obstacle="edge")
     # blocks
-    for sl in sc.sliders:
-        if getattr(sl, "wheel", ""):  # a driving wheel's centre: no block there
-            continue
+    for sl in sc.blocks:  # (a driving wheel's centre: no block there)
         X = P[sl.point]
         if isinstance(sl, FixedPath):
             u = sl.u

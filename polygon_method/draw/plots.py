@@ -3,7 +3,6 @@ against the crank angle, the scene's own instant marked (matplotlib, imported la
 
 from __future__ import annotations
 
-import io
 import math
 import textwrap
 
@@ -277,11 +276,11 @@ def _turning_moment_panel(ax, scene, tm, x, T):
 
 def plot_bytes(res: SweepResult, path: str, *, points=None, links=None) -> bytes:
     """:func:`plot_figure` as the bytes of the file ``path`` names (SVG, PNG or PDF)."""
+    from .sheet import figure_data
+
     fig = plot_figure(res, points=points, links=links)
-    buf = io.BytesIO()
-    fmt = path.rsplit(".", 1)[-1].lower()
-    fig.savefig(buf, format=fmt, **({"metadata": {"Date": None}} if fmt == "svg" else {}))
-    return buf.getvalue()
+    data = figure_data(fig, path.rsplit(".", 1)[-1].lower())
+    return data.encode() if isinstance(data, str) else data
 
 
 def _scene_values(scene) -> dict:

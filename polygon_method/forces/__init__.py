@@ -42,9 +42,10 @@ from ..common.errors import PolygonMethodError
 from . import (carried, crank, cylinder, driver, dyad, friction, peg, rack, rolling, slider,
                slotted, triad, wheel, wheel_driver, yoke)
 from .bodies import Ledger, Singular, centre, cross, gather
+from .core import force_plan
 from .records import (FRAME, Contact, Couple, Forces, ForceStep, FreeBody, GuideForce,
                       Inertia, PinForce, Side, block, couple_label, force_value, forces_dict,
-                      number_sub, side_label)
+                      number_sub, quick_forces, side_label)
 
 #: the force step of each kind of kinematic step: its room (``owns(st)``: the bodies its
 #: points act on; ``step(st, P, ledger, owners)``: its pin forces; ``covers(st)``, where
@@ -55,10 +56,14 @@ from .records import (FRAME, Contact, Couple, Forces, ForceStep, FreeBody, Guide
 #: ``unit_ledger(st)``, ``effort(st, t0, t1, ledger)``, where present: whether it drives
 #: the mechanism, and its force from the crank's torque without it and with 1 N in it;
 #: ``bodies(st)``, where present: the bodies it moves, in the order the sheet numbers them,
-#: else those of its force step)
+#: else those of its force step; ``bind(st, own, ix)``, where present: its short road
+#: (:mod:`.core`), a function ``f(P, S, pins, guides)`` doing what ``step`` does to the
+#: numbered sums ``S`` (body ``ix(name)``), appending its pin forces ``(point, on, by,
+#: force)`` and guides' ``(point, normal, n, by)`` and returning the driver's effort or
+#: None, with no record made; None for a step with nothing to solve)
 #: the members a room may give, said once above for every room
 ROOM_CONTRACT = ("owns", "step", "covers", "check", "blocks", "divisor", "drives",
-                 "unit_ledger", "effort", "bodies")
+                 "unit_ledger", "effort", "bodies", "bind")
 ROOMS = {"crank": crank, "dyad": dyad, "slider": slider, "carried": carried,
          "slotted": slotted, "block": driver, "second crank": crank,
          "cylinder": cylinder, "yoke": yoke, "peg": peg, "rolling": rolling,
@@ -121,16 +126,30 @@ def owners(scene, plan) -> dict:
 
 def analyse(motion) -> Forces:
     """The :class:`Forces` at the instant of ``motion`` (a solved, one-instant
-    :class:`~polygon_method.solver.kinematics.Motion` of a scene with masses or gravity;
-    or arrays over a sweep). With ``[friction]`` the walk is repeated with the friction of
-    the forces found before until they settle (:mod:`.friction`)."""
+    :class:`~polygon_method.solver.kinematics.Motion` of a scene with masses or gravity), or
+    over its crank angles (a sweep: arrays). The numbers by the short road where every
+    group has one (:mod:`.core`), the records when first read. With ``[friction]`` the
+    walk is repeated with the friction of the forces found before until they settle
+    (:mod:`.friction`)."""
     scene, plan = motion.scene, motion.plan
-    own = owners(scene, plan)
-    if scene.friction is None:
-        return _analysed(scene, plan, motion, own, ())
+    fp = force_plan(scene, plan)
+    if scene.friction is not None:
+        return _with_friction(motion, fp)
+    if not fp.quick:
+        return _forces(motion, fp, ())
+    pins, guides, effort, second, (fx, fy, m) = fp.run(motion)
+    name, kind = fp.driver
+    return quick_forces(effort, (fx, fy), m, name, kind, second, fp.second,
+                        lambda: fp.records(motion, pins, guides),
+                        lambda: _long(motion, fp)[10:])
+
+
+def _with_friction(motion, fp) -> Forces:
+    """The forces with the friction of the forces found before, until they settle."""
+    scene = motion.scene
     before = None
     for _ in range(friction.ROUNDS):
-        f = _analysed(scene, plan, motion, own, before or ())
+        f = _forces(motion, fp, before or ())
         now = friction.loads(scene, motion, f.pins, f.guides)
         if friction.change(before, now) <= friction.SETTLED * friction.scale(f):
             return f
@@ -141,14 +160,27 @@ def analyse(motion) -> Forces:
                              file=scene.file, key="[friction]")
 
 
-def _analysed(scene, plan, motion, own, fric) -> Forces:
-    """One walk, with the friction loads ``fric`` (:func:`.friction.loads`) known."""
-    records, led = gather(scene, motion, own)
+def _forces(motion, fp, fric) -> Forces:
+    """The long road's :class:`Forces`, with the friction loads ``fric`` known
+    (:func:`.friction.loads`)."""
+    whole = _long(motion, fp, fric)
+    wheel = whole[4] == "wheel"
+    return Forces(*whole[:7], lambda: whole[7:10], lambda: whole[10:],
+                  centre_force=(wheel_driver.centre_force(motion.plan.steps[0], whole[0])
+                                if wheel else None),
+                  friction=tuple(fric),
+                  friction_power=friction.power(motion, motion.scene, fric) if fric else 0.0)
+
+
+def _long(motion, fp, fric=()) -> tuple:
+    """The long road, every record made: (the effort, shaking force, shaking moment, the
+    driver's name and kind, a second crank's torque and link; inertia, pins, guides;
+    steps, applied, contacts, the drawings' functions). ``fric``: the friction loads."""
+    scene, plan, own = motion.scene, motion.plan, fp.own
+    records_, led = gather(scene, motion, own)
     friction.apply(led, fric)
     inp = scene.input
-    driving = next((st for st in plan.steps
-                    if getattr(ROOMS[st.kind], "drives", lambda sc, s: False)(scene, st)),
-                   None)
+    driving = fp.driving
     if driving is not None:  # the walk is linear in the driver's force: walk it twice
         room = ROOMS[driving.kind]
         t0 = _walk(scene, plan, motion.P, _copy(led), own)[3]
@@ -169,17 +201,12 @@ def _analysed(scene, plan, motion, own, fric) -> Forces:
         name, kind, effort = plan.steps[0].wheel, "wheel", torque
     else:
         name, kind, effort = inp.crank, "crank", torque
-    return Forces(records, tuple(pins), tuple(guides), effort, (fx, fy), m,
-                  tuple(steps), {k: tuple(v) for k, v in led.applied.items()},
-                  name, kind, second,
-                  None if inp.second is None else scene.link(inp.second.crank).key,
-                  tuple(contacts),
-                  drawing=_drawing(scene, plan, motion.P, records, pins, guides, led, torque,
-                                   steps, contacts),
-                  centre_force=(wheel_driver.centre_force(plan.steps[0], effort)
-                                if kind == "wheel" else None),
-                  friction=tuple(fric),
-                  friction_power=friction.power(motion, scene, fric) if fric else 0.0)
+    return (effort, (fx, fy), m, name, kind, second,
+            None if inp.second is None else scene.link(inp.second.crank).key,
+            records_, tuple(pins), tuple(guides),
+            tuple(steps), {k: tuple(v) for k, v in led.applied.items()}, tuple(contacts),
+            _drawing(scene, plan, motion.P, records_, pins, guides, led, torque, steps,
+                     contacts))
 
 
 def _drawing(scene, plan, P, records, pins, guides, led, torque, steps, contacts) -> tuple:

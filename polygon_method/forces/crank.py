@@ -11,7 +11,6 @@ and its driver turns it with the torque T; every other force on it is known by n
 
 from __future__ import annotations
 
-from .bodies import cross
 from ..common.numbers import fmt
 from .records import FRAME, ForceStep, PinForce, Side
 
@@ -19,7 +18,7 @@ from .records import FRAME, ForceStep, PinForce, Side
 def solve(ox, oy, known):
     """(the frame's force on the crank at O, the driving torque T, ccw positive)."""
     fx, fy, m = known
-    return (-fx, -fy), -(m - cross(ox, oy, fx, fy))
+    return (-fx, -fy), -(m - (ox * fy - oy * fx))  # cross(O, F) written out
 
 
 def bodies(st) -> tuple:
@@ -30,6 +29,19 @@ def bodies(st) -> tuple:
 def owns(st) -> dict:
     """The crank's tip acts, for loads and later pins, on the crank."""
     return {st.tip: st.link}
+
+
+def bind(st, own, ix):
+    pivot, link, i = st.pivot, st.link, ix(st.link)
+
+    def run(P, S, pins, guides):
+        ox, oy = P[pivot]
+        r, torque = solve(ox, oy, S.of(i))
+        S.add(0, -r[0], -r[1], ox, oy)
+        S.couple(0, -torque)  # the driver, mounted on the frame, feels -T
+        pins.append((pivot, link, FRAME, r))
+        return torque
+    return run
 
 
 def step(st, P, led, own):

@@ -337,16 +337,15 @@ class Forces:
     the piston and the frame) and ``shaking_moment`` (its moment about the frame's origin, with the
     driver's reaction ``-input_torque`` on the frame), ``steps`` (:class:`ForceStep`).
     ``applied``: body -> the loads and weights on it, (what, (Fx, Fy), point) and (what,
-    couple) entries."""
+    couple) entries.
 
-    inertia: tuple
-    pins: tuple
-    guides: tuple
+    The numbers are held; the records are made when first read (``compute only what is
+    asked for``): ``parts()`` gives (``inertia``, ``pins``, ``guides``), ``story()``
+    (``steps``, ``applied``, ``contacts``, what the drawings read)."""
+
     input_torque: float
     shaking_force: tuple
     shaking_moment: float
-    steps: tuple
-    applied: dict
     crank: str
     #: "crank" (a driving torque), "block" (a driving force along the block's guide),
     #: "cylinder" (the force in the cylinder ``crank`` names, + pushing its ends apart) or
@@ -355,9 +354,9 @@ class Forces:
     #: a second driving crank's torque (N m, ccw positive) and its link, or None
     second_torque: float | None = None
     second_crank: str | None = None
-    #: the contact force on each rolling body (:class:`Contact`): a wheel on a line, a
-    #: gear, a planet, a rack
-    contacts: tuple = ()
+    #: functions making the records when first read (see above)
+    parts: object = field(default=None, repr=False, compare=False)
+    story: object = field(default=None, repr=False, compare=False)
     #: a driving wheel's effort as a force at its centre along the ground instead of the
     #: torque (N, a vector): ``(input_torque / r) t``, t = perp(m) along the ground; else None
     centre_force: tuple | None = None
@@ -366,9 +365,51 @@ class Forces:
     #: (:func:`.friction.loads`), and its power (W, never positive)
     friction: tuple = ()
     friction_power: float = 0.0
-    #: what :attr:`numbers` and :attr:`free` are read from, when asked: (body -> number,
-    #: or a function making it; a function making the free bodies)
-    drawing: tuple = field(default=(), repr=False, compare=False)
+
+    @cached_property
+    def _parts(self) -> tuple:
+        return self.parts()
+
+    @cached_property
+    def _story(self) -> tuple:
+        return self.story()
+
+    @property
+    def inertia(self) -> tuple:
+        """:class:`Inertia` per massive body, in the scene's order."""
+        return self._parts[0]
+
+    @property
+    def pins(self) -> tuple:
+        """:class:`PinForce` s, one per pair of bodies at a pin, in the order solved."""
+        return self._parts[1]
+
+    @property
+    def guides(self) -> tuple:
+        """:class:`GuideForce` s, in the order solved."""
+        return self._parts[2]
+
+    @property
+    def steps(self) -> tuple:
+        """:class:`ForceStep` s, in the order solved (their words and drawings)."""
+        return self._story[0]
+
+    @property
+    def applied(self) -> dict:
+        """body -> the loads and weights on it (see the class)."""
+        return self._story[1]
+
+    @property
+    def contacts(self) -> tuple:
+        """The contact force on each rolling body (:class:`Contact`): a wheel on a line, a
+        gear, a planet, a rack."""
+        return self._story[2]
+
+    @property
+    def drawing(self) -> tuple:
+        """What :attr:`numbers` and :attr:`free` are read from: (a function making body ->
+        number, a function making the free bodies from it)."""
+        return self._story[3]
 
     @cached_property
     def numbers(self) -> dict:
@@ -399,16 +440,55 @@ class Forces:
         return next((i for i in self.inertia if i.body == body), None)
 
 
+def quick_forces(effort, shaking_force, shaking_moment, crank, driver, second_torque,
+                 second_crank, parts, story) -> Forces:
+    """``Forces(effort, shaking_force, ...)``, its fields set at once in the instance's
+    dictionary (the frozen dataclass's ``__init__`` sets them one by one through
+    ``object.__setattr__``, a third of the short road's cost on a four-bar): the same
+    record."""
+    f = _new(Forces)
+    d = f.__dict__
+    d["input_torque"] = effort
+    d["shaking_force"] = shaking_force
+    d["shaking_moment"] = shaking_moment
+    d["crank"] = crank
+    d["driver"] = driver
+    d["second_torque"] = second_torque
+    d["second_crank"] = second_crank
+    d["parts"] = parts
+    d["story"] = story
+    return f
+
+
+_new = object.__new__
+
+
 def force_value(f: Forces, kind: str, name: str) -> float:
     """The size of what an answer key names: ``F`` the force at pin ``name`` (a pin joining
-    two bodies), ``N`` the guide's normal force on the block at ``name``, ``FI`` the size of
-    the contact force on the rolling body ``name`` (a wheel's link, a rack's ``block R``):
-    a gear's tooth load."""
-    if kind == "FI":
+    two bodies), ``N`` the guide's normal force on the block at ``name``; ``Fc`` the size of
+    the contact force on the rolling body ``name`` (a wheel's link, a rack's ``block R``): a
+    gear's tooth load; of body ``name``
+    (a link's key, or ``block X``): ``Fi`` its inertia force's size ``m |a_G|``, ``Ci`` its
+    inertia couple ``-I alpha`` (signed, ccw positive), ``h`` the offset ``|I alpha| / (m
+    |a_G|)`` of the book's single force from G (0 where the body has no couple)."""
+    if kind == "Fc":
         c = next((c for c in f.contacts if c.wheel == name), None)
         if c is None:
-            raise SceneError(f"FI: {name} has no rolling contact")
+            raise SceneError(f"Fc: {name} has no rolling contact")
         return c.load
+    if kind in ("Fi", "Ci", "h"):
+        i = f.inertia_of(name)
+        if i is None:
+            raise SceneError(f"{kind}_{name.removeprefix('block ')}: {name} has no mass in "
+                             "[masses]: no inertia force")
+        if kind == "Fi":
+            return (i.force[0] ** 2 + i.force[1] ** 2) ** 0.5
+        if kind == "Ci":
+            return i.couple
+        if i.offset is None and i.couple != 0:
+            raise SceneError(f"h_{name.removeprefix('block ')}: a_G = 0: the inertia is a "
+                             "couple alone, with no single force to offset")
+        return abs(i.offset or 0.0)
     if kind == "N":
         g = next((g for g in f.guides if g.key == name), None)
         if g is None:

@@ -70,13 +70,15 @@ def pressure_angle(st) -> tuple:
     return (DEFAULT_PRESSURE_ANGLE, False) if a is None else (a, True)
 
 
-def solve(cx, cy, known, r, m, phi):
+def solve(cx, cy, known, r, m, phi, apart=1.0):
     """(N along m, T along t = perp(m), the contact force F on the wheel at I = C - r m, the
-    force F_C on the wheel at its centre); floats, or arrays over a sweep."""
+    force F_C on the wheel at its centre); floats, or arrays over a sweep. ``apart``: +1
+    where the teeth's push points towards the wheel's centre (m), -1 for a ring (an
+    internal gear: the gear inside pushes it outwards)."""
     fx, fy, mo = known
     mx, my = m
     t = (mo - cross(cx, cy, fx, fy)) / r
-    n = abs(t) * math.tan(phi)
+    n = apart * abs(t) * math.tan(phi)
     ffx, ffy = n * mx - t * my, n * my + t * mx
     return n, t, (ffx, ffy), (-(fx + ffx), -(fy + ffy))
 
@@ -89,6 +91,8 @@ def contact_frame(st, P):
     d = vhypot(dx, dy)
     ux, uy = dx / d, dy / d
     R = st.dims[2]
+    if getattr(st, "ring", False):  # the gear inside the ring: I on its far side
+        return (ox - R * ux, oy - R * uy), (ux, uy)
     e = -1.0 if st.inside else 1.0
     return (ox + R * ux, oy + R * uy), (e * ux, e * uy)
 
@@ -110,7 +114,7 @@ def step(st, P, led, own):
     r = st.dims[1]
     (ix, iy), m = contact_frame(st, P)
     phi, stated = pressure_angle(st)
-    n, t, F, FC = solve(cx, cy, kw, r, m, phi)
+    n, t, F, FC = solve(cx, cy, kw, r, m, phi, -1.0 if getattr(st, "ring", False) else 1.0)
     base = FRAME if st.on == "circle" else st.base
     oc = own[C]
     contact = Contact(W, (ix, iy), n, t, m, base, phi, stated)
@@ -127,7 +131,9 @@ def step(st, P, led, own):
               f"moments of {W} about its centre {C} (the pin force there has no arm): "
               f"M_{C} - r T = 0, M_{C} = {fmt(mc)} N m the known forces', r = {fmt(r)} m: "
               f"T = M_{C} / r = {fmt(t)} N (along the common tangent)",
-              f"N = |T| tan phi = {fmt(n)} N (pushing {W} away from {by}); the tooth load "
+              f"N = |T| tan phi = {fmt(n)} N (pushing {W} away from {by}: "
+              + ("outwards, a ring" if getattr(st, "ring", False) else "towards its centre")
+              + "); the tooth load "
               f"|T| / cos phi = {fmt(contact.load)} N",
               f"forces on {W}: F_{C} = -(the known forces + the tooth load) = "
               f"({fmt(FC[0])}, {fmt(FC[1])}) N")

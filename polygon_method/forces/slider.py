@@ -26,9 +26,9 @@ from ..common.numbers import fmt
 from .records import FRAME, ForceStep, GuideForce, PinForce, Side, block
 
 
-def solve(bx, by, known_link, xx, xy, known_block, u):
+def solve(bx, by, known_link, xx, xy, known_block, u, condition=True):
     """(N, P on the link at X by the block, the force on the link at B, the condition
-    ``|(X - B) . u| / |X - B|``).
+    ``|(X - B) . u| / |X - B|``, None unless ``condition``).
 
     ``known_link``: ``(Fx, Fy, M about the origin)`` on the link; ``known_block``: the same
     on the block (its M is not used: its forces pass through X)."""
@@ -36,14 +36,16 @@ def solve(bx, by, known_link, xx, xy, known_block, u):
     rx, ry = known_block[0], known_block[1]
     ux, uy = u
     nx, ny = -uy, ux
-    mb = m - cross(bx, by, fx, fy)
+    mb = m - (bx * fy - by * fx)  # M - cross(B, F), written out (the short road's too)
     ex, ey = xx - bx, xy - by
     den = ex * ux + ey * uy
-    size = (ex * ex + ey * ey) ** 0.5  # the link's length: never 0
-    cond = abs(den) / size
+    cond = None
+    if condition:
+        size = (ex * ex + ey * ey) ** 0.5  # the link's length: never 0
+        cond = abs(den) / size
     if any_zero(den):
         return None, None, None, 0.0
-    n = -(mb + cross(ex, ey, rx, ry)) / den
+    n = -(mb + (ex * ry - ey * rx)) / den  # cross(X - B, R)
     px, py = n * nx + rx, n * ny + ry
     return n, (px, py), (-(fx + px), -(fy + py)), cond
 
@@ -72,6 +74,33 @@ def guide(st, P, own):
     m = (ux * ux + uy * uy) ** 0.5
     body = FRAME if own.get(st.g1) == FRAME and own.get(st.g2) == FRAME else st.guide
     return (ux / m, uy / m), body
+
+
+def bind(st, own, ix):
+    lk, x, b = st.link, st.point, st.b
+    bl, ob = block(x), own[st.b]
+    il, ibl, ib = ix(lk), ix(bl), ix(ob)
+    fixed = st.path is not None
+    if fixed:
+        u, gb = st.path.u, FRAME
+        ig = 0
+    else:  # a moving guide: its direction at each instant, its body known now
+        gb = FRAME if own.get(st.g1) == FRAME and own.get(st.g2) == FRAME else st.guide
+        ig = ix(gb)
+    why = f"{b}{x} stands square to the guide"
+
+    def run(P, S, pins, guides):
+        (bx, by), (xx, xy) = P[b], P[x]
+        v = u if fixed else guide(st, P, own)[0]
+        n, p, fb, _ = solve(bx, by, S.of(il), xx, xy, S.of(ibl), v, False)
+        if n is None:
+            raise Singular(why)
+        nv = (-v[1], v[0])
+        guides.append((x, n, nv, gb))
+        pins += ((x, lk, bl, p), (b, lk, ob, fb))
+        S.add(ib, -fb[0], -fb[1], bx, by)
+        S.add(ig, -(n * nv[0]), -(n * nv[1]), xx, xy)
+    return run
 
 
 def step(st, P, led, own):

@@ -33,9 +33,9 @@ from ..common.numbers import fmt
 from .records import ForceStep, GuideForce, PinForce, block, Side
 
 
-def solve(kx, ky, known_lever, ax, ay, known_block, u, length):
+def solve(kx, ky, known_lever, ax, ay, known_block, u, length, condition=True):
     """(N on the block along n, the force on the lever at K, the force on the block at A,
-    the condition ``|A - K| / length``, at most 1).
+    the condition ``|A - K| / length``, at most 1; None unless ``condition``).
 
     ``known_lever``: ``(Fx, Fy, M about the origin)`` on the lever; ``known_block``: the same
     on the block (its M is not used: its forces pass through A)."""
@@ -43,17 +43,19 @@ def solve(kx, ky, known_lever, ax, ay, known_block, u, length):
     rx, ry = known_block[0], known_block[1]
     ux, uy = u
     nx, ny = -uy, ux
-    mk = m - cross(kx, ky, fx, fy)
+    mk = m - (kx * fy - ky * fx)  # M - cross(K, F), written out (the short road's too)
     dx, dy = ax - kx, ay - ky
     den = dx * ux + dy * uy
-    cond = abs(den) / length
     if any_zero(den):
         return None, None, None, 0.0
-    if isinstance(cond, float):
-        cond = min(cond, 1.0)
+    cond = None
+    if not condition:
+        pass
+    elif isinstance(den, float):
+        cond = min(abs(den) / length, 1.0)
     else:
         import numpy as np
-        cond = np.minimum(cond, 1.0)
+        cond = np.minimum(abs(den) / length, 1.0)
     n = mk / den
     return (n, (-fx + n * nx, -fy + n * ny), (-(n * nx + rx), -(n * ny + ry)), cond)
 
@@ -66,6 +68,30 @@ def owns(st) -> dict:
 def blocks(st) -> tuple:
     """The block of this group (a mass may sit on it, at its pin)."""
     return (st.point,)
+
+
+def bind(st, own, ix):
+    lv, a, k = st.guide, st.point, st.known
+    bl = block(a)
+    ok, oa = own[k], own[a]
+    ilv, ibl, iok, ioa = ix(lv), ix(bl), ix(ok), ix(oa)
+    first, second, length = st.first, st.second, st.length
+    why = f"block {a} is at {k}, the pivot of {lv}"
+
+    def run(P, S, pins, guides):
+        (kx, ky), (ax, ay) = P[k], P[a]
+        (fx1, fy1), (fx2, fy2) = P[first], P[second]
+        ux, uy = fx2 - fx1, fy2 - fy1
+        m = (ux * ux + uy * uy) ** 0.5
+        ux, uy = ux / m, uy / m
+        n, fk, fa, _ = solve(kx, ky, S.of(ilv), ax, ay, S.of(ibl), (ux, uy), length, False)
+        if n is None:
+            raise Singular(why)
+        guides.append((a, n, (-uy, ux), lv))
+        pins += ((k, lv, ok, fk), (a, bl, oa, fa))
+        S.add(iok, -fk[0], -fk[1], kx, ky)
+        S.add(ioa, -fa[0], -fa[1], ax, ay)
+    return run
 
 
 def step(st, P, led, own):

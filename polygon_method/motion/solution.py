@@ -212,14 +212,14 @@ class Solution(Motion):
         """The JSON's sliders, cylinders and pins (each key only where the scene has them)."""
         sc = self.scene
         d = {}
-        if sc.sliders:
+        if sc.blocks:  # a driving wheel's centre is no slider: see the rolling entry
             d["sliders"] = {s.key: {"sliding_velocity": self.S[s.key][0],
                                     "sliding_acceleration": self.S[s.key][1],
                                     "coriolis": list(self.coriolis(s.key)),
                                       "guide": (s.label if isinstance(s, FixedPath) else
                                                 f"block {s.yoke}" if hasattr(s, "yoke")
                                                 else s.guide)}
-                            for s in sc.sliders}
+                            for s in sc.blocks}
         if sc.cylinders:
             d["cylinders"] = {c.key: {"length": self.cylinder_length(c.key),
                                       "extension_rate": self.S[c.key][0],
@@ -259,7 +259,9 @@ class Solution(Motion):
         return d
 
     def _rolling_dict(self) -> dict:
-        """The JSON's rolling contacts: the wheel's point at each (empty without rolling)."""
+        """The JSON's rolling contacts: the wheel's point at each (empty without rolling);
+        a driving wheel's also its centre, the centre's velocity and acceleration along its
+        ground line (signed along the line's direction) and the line."""
         contacts = {}
         for st in self.plan.steps:
             c = st.contact_motion(self)
@@ -267,8 +269,13 @@ class Solution(Motion):
                 contacts[st.bodies()[0]] = c
         if not contacts:
             return {}
-        return {"rolling": {k: {"contact": list(c[0]), "velocity": list(c[1]),
-                                "acceleration": list(c[2])} for k, c in contacts.items()}}
+        d = {k: {"contact": list(c[0]), "velocity": list(c[1]), "acceleration": list(c[2])}
+             for k, c in contacts.items()}
+        for s in self.scene.wheel_paths:
+            d.setdefault(s.wheel, {}).update(
+                {"centre": s.point, "centre_velocity": self.S[s.key][0],
+                 "centre_acceleration": self.S[s.key][1], "line": s.label})
+        return {"rolling": d}
 
     def to_dict(self) -> dict:
         """The JSON contract of ``solve --json`` (SI, ccw positive)."""
@@ -335,9 +342,9 @@ class Solution(Motion):
                 raise SceneError(f"torque: {f.crank} drives this mechanism with a force, not "
                                  "a torque (solve gives it as the input force)")
             return f.input_torque
-        if kind in ("F", "N", "FI"):
+        if kind in ("F", "N", "Fc", "Fi", "Ci", "h"):
             from ..forces import force_value  # lazy, as in `forces`
-            return force_value(self.forces, kind, self.scene.rolling_body(names) if kind == "FI"
+            return force_value(self.forces, kind, self.scene.rolling_body(names) if kind == "Fc"
                                else names[0])
         if kind in ("vu", "au"):  # the guide's point under a block (v_A1, a_A1)
             return hypot(*self.under_block(names[0], "velocity" if kind == "vu"

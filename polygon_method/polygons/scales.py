@@ -202,9 +202,22 @@ def diagram_scales(sol, fit_cm: float = FIT_CM, space_fit_cm: float = SPACE_FIT_
     pole = [(0.0, 0.0)]
     vel = pole + list(sol.V.values()) + drawn(velocity_constructions(sol))
     acc = pole + list(sol.A.values()) + drawn(acceleration_constructions(sol))
-    return (choose_scale(extent(sol.P.values()), space_fit_cm, unit=sc.units),
+    return (choose_scale(extent(list(sol.P.values()) + _circles(sol)), space_fit_cm,
+                         unit=sc.units),
             choose_scale(extent(vel), fit_cm, unit="m/s"),
             choose_scale(extent(acc), fit_cm, unit="m/s^2"))
+
+
+def _circles(sol) -> list:
+    """The four extreme points of every pitch circle the configuration diagram draws (a
+    fixed sun or ring is wider than the joints on it): the diagram fits with them."""
+    out = []
+    for st in sol.plan.steps:
+        for shape in st.shapes(sol.P):
+            if shape[0] == "circle":
+                (x, y), r = sol.P[shape[1]], abs(shape[2])
+                out += [(x + r, y), (x - r, y), (x, y + r), (x, y - r)]
+    return out
 
 
 def polygon_corners(step) -> list:

@@ -43,6 +43,8 @@ piston on the right, ``theta_IDC = -asin(e / (l + r))`` and
 True
 >>> read_angle("30 deg", "path") is None   # a plain angle: read as before
 True
+>>> read_angle("vertically downwards", "direction").value == -math.pi / 2
+True
 """
 
 from __future__ import annotations
@@ -66,7 +68,11 @@ _SENSE_RE = "|".join(sorted(_SENSE, key=len, reverse=True))
 #: words that make an angle a book's form (without them the plain reader reads it)
 _BOOK_WORDS = re.compile(r"horizontal|vertical|dead|\b[iotb]dc\b|[iotb]\.d\.c|stroke|"
                          r"\bfrom\b|\babove\b|\bbelow\b|\bleft\b|\bright\b|\bpast\b|\bbefore\b|"
-                         r"\bafter\b|\bbeyond\b|x\s*axis|\+x", re.IGNORECASE)
+                         r"\bafter\b|\bbeyond\b|x\s*axis|\+x|\bup(wards?)?\b|\bdown(wards?)?\b",
+                         re.IGNORECASE)
+#: a way in words, without a size: "down" (vertically downwards, straight down, to the left)
+_WAY = re.compile(r"(?:vertically |straight |horizontally )?(up|down|left|right)(?:wards?)?")
+_WAY_DEG = {"right": 0.0, "up": 90.0, "left": 180.0, "down": -90.0}
 
 #: good forms, for messages (by where the angle is)
 EXAMPLES = {
@@ -136,6 +142,10 @@ def read_angle(raw, where: str, *, dead=None, sense: float | None = None,
     shown = raw.strip()
     good = f"write it as e.g. {EXAMPLES[where]}"
     text = _tidy(raw)
+    way = _WAY.fullmatch(text)
+    if way:  # "down", "to the left": a way, the plain angle of its axis
+        theta = math.radians(_WAY_DEG[way.group(1)])
+        return BookAngle(theta, shown, f"'{shown}' = {_deg(theta)} deg from +x")
     m = _HEAD.match(text)
     if not m or not m.group(3):
         raise SceneError(f"cannot read '{shown}' as an angle: {good}")

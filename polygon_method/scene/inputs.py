@@ -22,6 +22,15 @@ from .wheel_input import wheel_input
 _DIRECTED = re.compile(r"^(.*?\S)\s+(?:(up(?:wards?)?|down(?:wards?)?|(?:to the )?left(?:wards?)?|"
                        r"(?:to the )?right(?:wards?)?)|at\s+(.+))$", re.IGNORECASE)
 _WORDS = {"up": (0.0, 1.0), "down": (0.0, -1.0), "left": (-1.0, 0.0), "right": (1.0, 0.0)}
+#: a rate in a book's words, after or before its size: "2 rad/s^2 slowing down",
+#: "decelerating at 3 m/s^2", "speeding up at 1 ft/s^2"
+_RATE_WORD = r"(slowing(?: down)?|decelerating|retarding|speeding up|accelerating)"
+_RATED = (re.compile(rf"^(.*?\S)\s*,?\s+{_RATE_WORD}$", re.IGNORECASE),
+          re.compile(rf"^{_RATE_WORD}\s+(?:at\s+)?(.+)$", re.IGNORECASE))
+#: a sense or a way in a rate's text (refused beside "slowing down": one or the other)
+_SENSE_OR_WAY = re.compile(r"(^\s*[-+])|\b(cw|ccw|acw|clockwise|anticlockwise|"
+                           r"counterclockwise|counter-clockwise|anti-clockwise|up|down|left|"
+                           r"right|upwards?|downwards?|at|extending|retracting)\b", re.IGNORECASE)
 
 
 def _extending(raw):
@@ -53,6 +62,42 @@ def _given_key(key):
 
 class _Input:
     """The [input] table's methods of the scene reader."""
+
+    def rated(self, raw, kind, table, key, motion):
+        """A rate in a book's words, ``"2 rad/s^2 slowing down"`` (``decelerating``,
+        ``retarding``) or ``"... speeding up"`` (``accelerating``): its size against (with)
+        the sense of ``motion``, the signed value it is the rate of (an omega, a sliding
+        velocity, a rate of extension; +1 for a point's speed). None where ``raw`` has no
+        such words (the caller reads it as before).
+
+        >>> class R(_Input):
+        ...     def qty(self, raw, kind, *a, **k): return parse_quantity(raw, kind)
+        >>> from ..common.units import parse_quantity
+        >>> R().rated("2 rad/s^2 slowing down", "angular_acceleration", "input", "a", -4.0)
+        2.0
+        >>> R().rated("speeding up at 3 m/s^2", "acceleration", "input", "as_B", -1.5)
+        -3.0
+        """
+        if not isinstance(raw, str):
+            return None
+        text = raw.strip()
+        m = _RATED[0].match(text)
+        size_text, word = (m.group(1), m.group(2)) if m else (None, None)
+        if m is None:
+            m = _RATED[1].match(text)
+            if m is None:
+                return None
+            word, size_text = m.group(1), m.group(2)
+        if _SENSE_OR_WAY.search(size_text):
+            raise self.error(f"{raw!r}: give the rate's sense (or way), or say slowing down / "
+                             "speeding up, not both", table, key)
+        if motion is None:
+            raise self.error(f"{raw!r}: slowing down or speeding up says the rate's sense "
+                             "from the motion's, which is found here, not given: give the "
+                             "rate with its sense", table, key)
+        size = abs(self.qty(size_text, kind, table, key).value)
+        slowing = word.lower().startswith(("slow", "decel", "retard"))
+        return (-size if slowing else size) * (1.0 if motion >= 0 else -1.0)
 
     def dead_centres(self, link, pivot, tip, ground):
         """The candidate dead centres of the slider crank that ``link`` drives, for
@@ -169,8 +214,11 @@ class _Input:
         elif isinstance(acc, (int, float)) and not isinstance(acc, bool) and acc == 0:
             alpha = 0.0
         else:
-            alpha = self.qty(acc, "angular_acceleration", "input", "acceleration",
-                             need_sense=True).value
+            alpha = self.rated(acc, "angular_acceleration", "input", "acceleration",
+                               None if speed is None else speed.value)
+            if alpha is None:
+                alpha = self.qty(acc, "angular_acceleration", "input", "acceleration",
+                                 need_sense=True).value
         if given_keys and second is not None:
             raise self.error(f"{given_keys[0]} with two inputs: give each crank's speed (a "
                              "motion given elsewhere sets one input only)", "input",
@@ -187,7 +235,10 @@ class _Input:
                              "the crank's speed: give the crank's acceleration instead",
                              "input", rate_keys[0])
         if speed.value == 0:
-            raise self.error("the crank speed is zero: nothing moves", "input", "speed")
+            raise self.error("the crank speed is zero: nothing moves (for the torque that "
+                             "holds the loads at rest, a statics problem, give any speed, e.g. "
+                             "\"1 rad/s ccw\": without [masses] the torque by power balance "
+                             "does not depend on it)", "input", "speed")
         self.two_inputs = second is not None
         if second is not None and second.crank == link.key:
             raise self.error(f"the second input is the crank {link.key} again: name another "
@@ -239,7 +290,9 @@ class _Input:
         if isinstance(raw_as, (int, float)) and not isinstance(raw_as, bool) and raw_as == 0:
             acc = 0.0
         else:
-            acc, _ = self.directed(raw_as, "acceleration", as_key, u, need=False)
+            acc = self.rated(raw_as, "acceleration", "input", as_key, vs)
+            if acc is None:
+                acc, _ = self.directed(raw_as, "acceleration", as_key, u, need=False)
         if (s_key in spec) == (name in spec):
             raise self.error(f"[input] gives the block's place {'twice' if name in spec else 'not at all'}:"
                              f" {s_key} = 300 (along its guide from its through point) or {name} = "
@@ -310,8 +363,12 @@ class _Input:
                              "angle, speed", "input", "second")
         for k in spec:
             if k not in INPUT_KEYS:
+                why = (" (a block driven along a turning link, the collar on a rotating rod, "
+                       "is not solved yet; a block on a fixed guide drives alone as [input] "
+                       "block)" if k == "block" or k.startswith(("vs_", "as_", "s_")) else "")
                 raise self.error(f"unknown key{_suggest(k, INPUT_KEYS)}; the second input "
-                                 "takes crank, angle, speed, acceleration", "input.second", k)
+                                 f"takes crank, angle, speed, acceleration{why}",
+                                 "input.second", k)
         for k in ("crank", "angle", "speed"):
             if k not in spec:
                 raise self.error(f"[input.second] has no {k}", "input.second")
@@ -330,9 +387,12 @@ class _Input:
                              "the frame", "input.second", "speed")
         acc = spec.get("acceleration", 0)
         alpha = 0.0 if (isinstance(acc, (int, float)) and not isinstance(acc, bool)
-                        and acc == 0) else self.qty(acc, "angular_acceleration",
-                                                    "input.second", "acceleration",
-                                                    need_sense=True).value
+                        and acc == 0) else self.rated(acc, "angular_acceleration",
+                                                      "input.second", "acceleration",
+                                                      speed.value)
+        if alpha is None:
+            alpha = self.qty(acc, "angular_acceleration", "input.second", "acceleration",
+                             need_sense=True).value
         return Input(link.key, pivot, link.other(pivot), angle, speed.value, alpha,
                      str(spec["speed"]))
 
@@ -357,8 +417,11 @@ class _Input:
                 raise self.error(f"no link {''.join(names)} in [links]", "input", key)
             value = self.qty(raw, "angular_velocity", "input", key, need_sense=True).value
             rate = None if raw_rate is None else (
-                0.0 if raw_rate == 0 else self.qty(raw_rate, "angular_acceleration", "input",
-                                                   rate_key, need_sense=True).value)
+                0.0 if raw_rate == 0 else self.rated(raw_rate, "angular_acceleration",
+                                                     "input", rate_key, value))
+            if rate is None and raw_rate is not None:
+                rate = self.qty(raw_rate, "angular_acceleration", "input", rate_key,
+                                need_sense=True).value
             names = index[frozenset(names)].points
         else:
             point = names[0] if len(names) == 1 else None
@@ -369,7 +432,9 @@ class _Input:
                                      key)
                 names, u = (cyl.key,), (1.0, 0.0)  # signed: + extending
                 raw = _extending(raw)
-                raw_rate = None if raw_rate is None else _extending(raw_rate)
+                if raw_rate is not None and not (isinstance(raw_rate, str) and any(
+                        r.match(raw_rate.strip()) for r in _RATED)):  # slowing: kept
+                    raw_rate = _extending(raw_rate)
             elif kind == "vs":
                 sl = self.slider_points.get(point)
                 if sl is None:
@@ -381,7 +446,10 @@ class _Input:
                 u = None
             value, direction = self.directed(raw, "velocity", key, u, need=kind == "v")
             rate = None
-            if raw_rate is not None:
+            if raw_rate is not None:  # a point's speed: its rate is of the speed (+1)
+                rate = self.rated(raw_rate, "acceleration", "input", rate_key,
+                                  value if kind == "vs" else 1.0)
+            if raw_rate is not None and rate is None:
                 rate, _ = self.directed(raw_rate, "acceleration", rate_key,
                                         u if kind == "vs" else None, need=False)
         if value == 0:

@@ -32,8 +32,11 @@ class _Masses:
                                  "masses", name)
             m = self.qty(spec["mass"], "mass", "masses", name, default_unit="kg").value
             if not m > 0:
-                raise self.error(f"a mass must be positive, got {spec['mass']!r}", "masses",
-                                 name)
+                hint = ("; a balanced crank (its G at its pivot) has its real mass with "
+                        "centre = its pivot: it then takes no power (only its weight acts, at the pivot)"
+                        if m == 0 and "inertia" in spec else "")
+                raise self.error(f"a mass must be positive, got {spec['mass']!r}{hint}",
+                                 "masses", name)
             pts = split_name(name)
             if len(pts) == 1 and name in self.slider_points:
                 extra = [k for k in spec if k != "mass"]

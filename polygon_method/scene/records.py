@@ -48,9 +48,14 @@ ANSWER_KINDS = {
     # pin joining two bodies, of a guide's normal force on its block
     "F": ("force", "pin_force", False),
     "N": ("force", "guide", False),
+    # a body's inertia (link L, or the block at X): the size of its force -m a_G, its
+    # couple -I alpha (ccw positive, or a sense), the offset h of the book's single force
+    "Fi": ("force", "body", False),
+    "Ci": ("torque", "body", True),
+    "h": ("length", "body", False),
     # the size of the contact force at a rolling wheel's contact (a gear's tooth load), by
     # the wheel's link or a rack's point
-    "FI": ("force", "contact", False),
+    "Fc": ("force", "contact", False),
 }
 #: the answer kinds of the guide's point under a block (``v_A1``, ``a_A1``: its image a1)
 UNDER_BLOCK_KINDS = {"v": "vu", "a": "au"}
@@ -272,6 +277,8 @@ class RollingPair:
       with the gear ``base`` (``wheel`` is the block's point, ``centre`` None).
 
     ``inside``: the wheel rolls inside the circle (a ring, an internal gear).
+    ``ring``: the wheel is itself a ring (an internal gear) about its centre, the gear it
+    meshes with inside it (``inside`` is then true as well: the pair meshes internally).
     ``base_radius``: the circle's radius as the problem states it (None: from the centre
     distance). ``angle``: the direction centre -> rim (rad) at the scene's crank angle
     (None: towards the contact point). ``label``: the line or circle in words.
@@ -293,6 +300,7 @@ class RollingPair:
     inside: bool = False
     base_radius: float | None = None
     angle: float | None = None
+    ring: bool = False
     pressure_angle: float | None = None
 
 
@@ -561,7 +569,7 @@ class Scene:
         return next((s for s in self.sliders if s.point == name or s.key == name), None)
 
     def rolling_body(self, names) -> str:
-        """The rolling body an answer's names give (``FI_AP``): the wheel's link key, or a
+        """The rolling body an answer's names give (``Fc_AP``): the wheel's link key, or a
         rack's ``block R``."""
         if len(names) == 1:
             return f"block {names[0]}"
@@ -571,7 +579,20 @@ class Scene:
     def blocks(self) -> tuple:
         """The sliders that are blocks: every slider record but a driving wheel's centre
         path (``[input] wheel``: no block is there, the wheel's centre moves along it)."""
-        return tuple(s for s in self.sliders if not getattr(s, "wheel", ""))
+        paths = self.wheel_paths
+        return tuple(s for s in self.sliders if s not in paths)
+
+    @property
+    def wheel_paths(self) -> tuple:
+        """The slider records that are no block: a driving wheel's centre path (keyed by
+        the centre; its ``wheel`` names the wheel's link)."""
+        return tuple(s for s in self.sliders if getattr(s, "wheel", ""))
+
+    @property
+    def cycle(self) -> float:
+        """The crank's angle (rad) over which the motion and its forces repeat: two turns
+        for a four-stroke engine's indicator diagram (4 pi), else one turn (2 pi)."""
+        return self.indicator.cycle if self.indicator is not None else 2 * math.pi
 
     def slots(self, point: str) -> tuple:
         """Every slider record at ``point``: one for a block, two for a peg in two slots."""

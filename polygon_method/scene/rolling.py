@@ -11,6 +11,8 @@ wheel); its value says what the wheel rolls on::
     "O-S" = { on = "C-B", on_radius = 30 }          # a gear about O driven by a gear fixed
                                                     # to link CB, centred at C (Watt's sun
                                                     # and planet)
+    "O-Q" = { on = "A-P", ring = true }             # a ring (internal gear) about O driven
+                                                    # by the planet A-P inside it
 
 ``radius`` is the wheel's rolling (pitch) radius (default: its link's length, the point
 on the pitch circle); ``on_radius`` the circle's, when the problem states it (it must then
@@ -28,7 +30,8 @@ import re
 
 from .records import RollingPair, split_name
 
-_KEYS = ("on", "through", "radius", "on_radius", "inside", "angle", "side", "pressure_angle")
+_KEYS = ("on", "through", "radius", "on_radius", "inside", "angle", "side", "ring",
+         "pressure_angle")
 _SIDES = ("above", "below", "left", "right")
 
 
@@ -124,12 +127,23 @@ def read_rolling(rd, ground, sliders, points) -> list:
         inside = spec.get("inside", False)
         if not isinstance(inside, bool):
             raise rd.error("inside = true or false", "rolling", key)
+        ring = spec.get("ring", False)
+        if not isinstance(ring, bool):
+            raise rd.error("ring = true or false", "rolling", key)
+        if ring and inside:
+            raise rd.error("ring = true: the wheel is the ring and the gear it meshes with is "
+                           "inside it; inside = true says the opposite (keep one)",
+                           "rolling", key)
         angle = (rd.qty(spec["angle"], "angle", "rolling", key, default_unit="deg").value
                  if "angle" in spec else None)
         on = spec["on"]
         if not isinstance(on, str):
             raise rd.error(f"on = {on!r}: " + example[example.index("{"):], "rolling", key)
         line = on in ("horizontal", "vertical") or re.match(r"^\s*[-+.\d]", on)
+        if ring and (line or on in ground):
+            raise rd.error(f"ring = true: a ring meshes with a gear inside it (on = a gear's "
+                           f"link such as \"A-P\"), not with {'a line' if line else 'a fixed circle'}",
+                           "rolling", key)
         if line:
             if "inside" in spec or "on_radius" in spec:
                 raise rd.error("a line has no inside and no radius", "rolling", key)
@@ -209,8 +223,10 @@ def read_rolling(rd, ground, sliders, points) -> list:
         if gc == centre:
             raise rd.error(f"the gear {base.key} and the wheel {link.key} have one centre "
                            f"{centre}: gears in mesh have two", "rolling", key)
+        if ring and base_radius is None:  # the gear inside it a wheel: its pitch radius
+            base_radius = next((r.radius for r in out if r.wheel == base.key), None)
         out.append(RollingPair(link.key, centre, rim, radius, "gear", f"the gear {base.key}",
-                               base=base.key, base_centre=gc, inside=inside,
-                               base_radius=base_radius, angle=angle,
+                               base=base.key, base_centre=gc, inside=inside or ring,
+                               base_radius=base_radius, angle=angle, ring=ring,
                                pressure_angle=_pressure_angle(rd, spec, key)))
     return out

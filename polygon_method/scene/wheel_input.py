@@ -73,7 +73,9 @@ def wheel_input(rd, spec, ground):
     if isinstance(raw_a, (int, float)) and not isinstance(raw_a, bool) and raw_a == 0:
         alpha = 0.0
     else:
-        alpha = rd.qty(raw_a, "angular_acceleration", "input", a_key, need_sense=True).value
+        alpha = rd.rated(raw_a, "angular_acceleration", "input", a_key, omega)
+        if alpha is None:
+            alpha = rd.qty(raw_a, "angular_acceleration", "input", a_key, need_sense=True).value
     path = centre_path(pr, C)
     (qx, qy), (ux, uy), (mx, my), r = path.through, path.u, pr.m, pr.radius
     along = -my * ux + mx * uy  # t . u, t = perp(m): +1 or -1

@@ -361,10 +361,12 @@ def _bodies_at(sc, point) -> tuple:
             out.append((f"barrel {cyl.key}", cyl.key))
         elif point == cyl.rod:
             out.append((f"rod {cyl.key}", cyl.key))
+    blocks = sc.blocks  # (a driving wheel's centre path: no block there)
     for sl in sc.slots(point):  # a block; a peg in two slots has a block in each
+        if sl not in blocks:
+            continue
         if isinstance(sl, FixedPath):
-            if not sl.wheel:  # (a driving wheel's centre path: no block there)
-                out.append((f"block {sl.key}", None))
+            out.append((f"block {sl.key}", None))
         elif isinstance(sl, GuideSlider):
             out.append((f"block {sl.key}", sc.link(sl.guide).key))
         else:  # in the slot of a translating yoke: the block does not turn

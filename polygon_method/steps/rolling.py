@@ -16,7 +16,9 @@ with d = C - O turning at omega_d, ``e = +1`` outside and ``-1`` inside the circ
     (omega - omega_d) r = -e (omega_B - omega_d) R
     omega = (1 + e R/r) omega_d - e (R/r) omega_B      (the same for alpha, with alpha_d)
 
-where ``omega_d = d x v_d / |d|^2`` and ``alpha_d = d x a_d / |d|^2 - 2 (d x v_d)(d . v_d) /
+(A ring about C meshing with a gear inside it, ``|d| = r - R``, the pitch point beyond
+the gear, ``I = O - R d/|d|``: its no-slip relation is the internal pair's, e = -1.)
+Here ``omega_d = d x v_d / |d|^2`` and ``alpha_d = d x a_d / |d|^2 - 2 (d x v_d)(d . v_d) /
 |d|^4``. The wheel's angle follows the crank's (its centre is fixed or is the crank's tip, and
 the base turns at a fixed ratio of the crank): ``phi = phi0 + K (theta - theta0)``. A gear
 pair with both centres fixed: ``omega_2 = -e (r1 / r2) omega_1``; a planet on a fixed sun,
@@ -38,16 +40,11 @@ from dataclasses import dataclass
 
 from ..common.errors import AssemblyError, SceneError
 from ..common.numbers import in_units
-from .rolling_dims import GAP, arm_rate, pair_of, rate, wheel_params
+from .rolling_dims import GAP, arm_rate, pair_of, rate, turned, wheel_params
 from .base import (Construction, Step, Vector, absolute, centripetal, image_label, pole_text,
                    relative, sub)
 
 __all__ = ["RollingWheel", "line_rates", "circle_rates", "rim_motion", "recognise"]
-
-#: how far an arm or a gear turning as a linkage makes it may turn from the stated instant
-#: before its angle is refused (a turn of nearly pi could be one the other way)
-_HALF = 0.95 * math.pi
-
 
 def line_rates(tx, ty, r, vx, vy, ax, ay):
     """(omega, alpha) of a wheel of radius r rolling on a fixed line along t = perp(m),
@@ -104,7 +101,7 @@ def recognise(g, name):
     return RollingWheel(g.next_index, pr.wheel, pr.centre, name, pr.on, pr.label,
                         wheel_params(sc, g.bodies, pr, kd_rate=kd_rate, kb_rate=kb_rate, P=g.P,
                                 base_free=base_free),
-                        base=pr.base, base_centre=O, inside=pr.inside,
+                        base=pr.base, base_centre=O, inside=pr.inside, ring=pr.ring,
                         kd_rate=kd_rate, kb_rate=kb_rate, base_free=base_free,
                         unit=g.unit, uname=g.uname,
                         pressure_angle=pr.pressure_angle)
@@ -124,6 +121,9 @@ class RollingWheel(Step):
     base: str | None = None
     base_centre: str | None = None
     inside: bool = False
+    #: the wheel is a ring (an internal gear) about its centre, the gear inside it
+    #: (``inside`` true as well: the ratio of an internal pair)
+    ring: bool = False
     kd_rate: float | None = 0.0  # the line of centres' turning per radian of the crank
     kb_rate: float | None = 0.0  # the base's turning per radian of the crank
     #: (the gear's centre, its other point) where the gear turns as a linkage makes it (its
@@ -166,6 +166,8 @@ class RollingWheel(Step):
 
     @property
     def title(self):
+        if self.ring:
+            return f"ring {self.wheel} meshing with {self.where} inside it"
         return f"wheel {self.wheel} rolling on {self.where}"
 
     @property
@@ -223,23 +225,8 @@ class RollingWheel(Step):
         return phi
 
     def _turned(self, dx, dy, a0, ctx):
-        """The turn of direction (dx, dy) from the angle a0, in (-pi, pi]; refused (masked)
-        beyond 0.95 pi, where it could not be told from a turn the other way."""
-        c, s_ = math.cos(a0), math.sin(a0)
-        x, y = c * dx + s_ * dy, c * dy - s_ * dx
-        if ctx.array:
-            t = ctx.np.arctan2(y, x)
-            far = abs(t) > _HALF
-            if far is True or (far is not False and far.any()):
-                ctx.fail(self, far)
-            return t
-        t = math.atan2(y, x)
-        if abs(t) > _HALF:
-            raise AssemblyError(f"the arm or the gear of wheel {self.wheel} has turned "
-                                f"{math.degrees(abs(t)):.4g} deg from the stated instant: "
-                                "its angle cannot be followed past half a turn (solve the "
-                                "scene at that instant)", step=self.label)
-        return t
+        """The turn of direction (dx, dy) from the angle a0 (:func:`.rolling_dims.turned`)."""
+        return turned(dx, dy, a0, ctx, self, f"the arm or the gear of wheel {self.wheel}")
 
     def gap(self, P, prm):
         """How far the centre is off its line (or its pitch circle), over the radii."""
@@ -250,8 +237,8 @@ class RollingWheel(Step):
         ell, r, R = prm[:3]
         ox, oy = P[self.base_centre]
         dx, dy = cx - ox, cy - oy
-        e = -1.0 if self.inside else 1.0
-        return ((dx * dx + dy * dy) ** 0.5 - (R + e * r)) / (R + r)
+        want = r - R if self.ring else R - r if self.inside else R + r
+        return ((dx * dx + dy * dy) ** 0.5 - want) / (R + r)
 
     def _check(self, P, prm, ctx):
         g = self.gap(P, prm)
@@ -388,6 +375,8 @@ class RollingWheel(Step):
         ox, oy = P[self.base_centre]
         n = math.hypot(cx - ox, cy - oy)
         ux, uy = (cx - ox) / n, (cy - oy) / n
+        if self.ring:  # the gear inside the ring: I on its far side from the ring's centre
+            return (ox - R * ux, oy - R * uy), (ux, uy)
         e = -1.0 if self.inside else 1.0
         return (ox + R * ux, oy + R * uy), (e * ux, e * uy)
 
@@ -510,8 +499,10 @@ class RollingWheel(Step):
                       if kd else "")
                    + (" and " if kd and kb and self.base else "")
                    + (f"{kb:.4g} times the gear {self.base}" if kb and self.base else ""))
-        return (f"{self.rim}: the wheel {self.wheel} (radius {L(r)}) rolls without slipping on "
-                f"{self.where}; from {self.centre} draw {self.centre}{self.rim} = {L(ell)} at "
+        what = (f"the ring {self.wheel} (pitch radius {L(r)}) meshes with {self.where} inside "
+                "it" if self.ring else
+                f"the wheel {self.wheel} (radius {L(r)}) rolls without slipping on {self.where}")
+        return (f"{self.rim}: {what}; from {self.centre} draw {self.centre}{self.rim} = {L(ell)} at "
                 f"{phi:.4g} deg ({how})")
 
     def _omega_words(self, sol, w, vI):

@@ -59,9 +59,9 @@ def _rolling_sentence(sc, r) -> str:
         return (f"The block {r.rim} is a rack meshing with {r.label}; its point is at "
                 f"{_at(sc, sc.slider(r.rim).through)} at the instant shown.")
     if r.on == "gear":
-        what = (f"The gear {r.wheel} (centre {r.centre}, pitch radius "
-                f"{_len(sc, r.radius)}) meshes {'internally ' if r.inside else ''}with "
-                f"{r.label}")
+        what = (f"The {'ring gear' if r.ring else 'gear'} {r.wheel} (centre {r.centre}, pitch "
+                f"radius {_len(sc, r.radius)}) meshes {'internally ' if r.inside else ''}with "
+                f"{r.label}" + (" inside it" if r.ring else ""))
     else:
         on = (f"on {r.label} through {_at(sc, r.through)}" if r.on == "line" else
               f"{'inside' if r.inside else 'outside'} {r.label}")
