@@ -765,3 +765,46 @@ def test_bad_friction_is_one_located_line(table, words):
     with pytest.raises(SceneError, match=words) as e:
         parse_scene(text)
     assert "\n" not in str(e.value) and "[friction]" in str(e.value)
+
+
+def test_a_ring_driven_by_a_planet_against_the_matrix_method():
+    """The ring (an internal gear) about O driven by the planet inside it: on the planet,
+    the pinion of the internal pair, the teeth's push points to its own centre (the pair
+    pushed apart), so the ring feels it outwards; the planet rolls on the fixed sun too."""
+    sc = _with(ROOT / "worked_problems" / "ring_gear_output.toml",
+               {"OA": {"mass": 1, "along": 30}, "AP": {"mass": 0.5, "along": 0, "gyration": 14},
+                "O-Q": {"mass": 3, "along": 0, "gyration": 70},
+                "Q-B": {"mass": 1, "along": 75, "gyration": 45}, "B": {"mass": 2}},
+               {"B": {"force": [-150, 20]}})
+    sol = solve(sc)
+    f = sol.forces
+    P = sol.P
+    O, A = P["O"], P["A"]
+    u = _unit((A[0] - O[0], A[1] - O[1]))
+    sun = ("tooth sun", (O[0] + 0.040 * u[0], O[1] + 0.040 * u[1]), (-u[1], u[0]), u, "AP",
+           FRAME, DEG20)
+    m = (-u[0], -u[1])  # from the ring's pitch point towards the planet's centre
+    ring = ("tooth ring", (A[0] + 0.020 * u[0], A[1] + 0.020 * u[1]), (-m[1], m[0]), m,
+            "AP", "O-Q", DEG20)
+
+    def build():
+        mat = Matrix(sol, ["OA", "AP", "O-Q", "Q-B", "block B"], {"B": "block B"})
+        mat.pin("O", O, "OA", FRAME)
+        mat.pin("OQ", O, "O-Q", FRAME)
+        mat.pin("A", A, "AP", "OA")
+        mat.pin("Q", P["Q"], "Q-B", "O-Q")
+        mat.pin("B", P["B"], "Q-B", "block B")
+        mat.along("N_B", P["B"], (0.0, 1.0), "block B", FRAME)
+        mat.couple("T", "OA")
+        return mat
+    x = _teeth(build, [sun, ring])
+    scale = max(math.hypot(x[k + ".x"], x[k + ".y"]) for k in ("O", "OQ", "A", "Q", "B"))
+    _close(f.pin("A", "AP", "OA"), (x["A.x"], x["A.y"]), scale)
+    _close(f.pin("O", "O-Q", FRAME), (x["OQ.x"], x["OQ.y"]), scale)
+    _close(f.pin("Q", "Q-B", "O-Q"), (x["Q.x"], x["Q.y"]), scale)
+    contacts = {c.wheel: c for c in f.contacts}
+    _close(contacts["AP"].force, x["tooth sun.F"], scale)
+    on_ring = contacts["O-Q"]
+    assert on_ring.by == "AP" and on_ring.normal < 0  # pushed outwards, away from O
+    _close(on_ring.force, tuple(-v for v in x["tooth ring.F"]), scale)
+    assert abs(f.input_torque - x["T"]) <= 1e-9 * scale * 0.1
