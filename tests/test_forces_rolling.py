@@ -557,6 +557,11 @@ def test_the_driving_wheel_in_solve_and_json():
     assert d["centre_force"] == pytest.approx([-f.input_torque / 0.3 * u for u in (1.0, 0.0)],
                                               abs=1e-12)
     assert d["contacts"]["CA"]["by"] == "frame" and "required_friction" in d["contacts"]["CA"]
+    # steps: the ground's grip is a force along the line, the driver's a torque
+    from polygon_method.text.steptable import steps_text
+    words = " ".join(steps_text(sol).split())
+    assert re.search(r"T at the contact of CA = -?[\d.]+ N \(along the line", words)
+    assert re.search(r"T on CA by its driver = [\d.]+ N m c?cw", words)
 
 
 def test_check_keys_for_the_tooth_load_and_the_wheels_torque(tmp_path, capsys):

@@ -319,14 +319,14 @@ def _found_item(name, val, F, M) -> str:
     """One force or torque a step finds, in words with its unit and sign convention."""
     if isinstance(val, tuple):
         return f"{name} = {_vec(val, F)}"
+    if name.startswith(("N at the contact", "T at the contact")):  # (not a torque T)
+        return (f"{name} = {fmt(quiet(val, F))} N ("
+                + ("normal to the line, + pushing the wheel off it)"
+                   if name[0] == "N" else "along the line, + along perp(m))"))
     if name.startswith(("T ", "C ")):  # a torque, a guide's couple
         return f"{name} = {_moment(val, M)}"
     if name.startswith("F in "):  # a cylinder's force
         return f"{name} = {fmt(quiet(val, F))} N"
-    if name.startswith(("N at the contact", "T at the contact")):
-        return (f"{name} = {fmt(quiet(val, F))} N ("
-                + ("normal to the line, + pushing the wheel off it)"
-                   if name[0] == "N" else "along the line, + along perp(m))"))
     if name.startswith("F "):
         return f"{name} = {fmt(quiet(val, F))} N (+ along the guide's direction)"
     return f"{name} = {fmt(quiet(val, F))} N (along the guide's normal, + to its left)"
