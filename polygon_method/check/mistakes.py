@@ -10,6 +10,7 @@ from dataclasses import replace
 from ..common.errors import PolygonMethodError
 from ..forces import analyse, force_value
 from ..scene import GuideSlider, Gravity
+from ..scene.force_records import rolling_body
 from ..motion.solution import Solution, solve
 from ..steps import under_label
 from ..common.numbers import textbook as _g
@@ -279,7 +280,7 @@ class _Diagnoser:
 
         def pick(f):
             return f.input_torque if kind == "torque" else \
-                force_value(f, kind, sc.rolling_body(names) if kind == "Fc" else names[0])
+                force_value(f, kind, rolling_body(sc, names) if kind == "Fc" else names[0])
 
         def again(words, code, **changes):
             try:
@@ -293,7 +294,7 @@ class _Diagnoser:
                                   "the power balance without the inertia forces (T = -sum F . v "
                                   "/ omega leaves out -m a_G . v_G and -I alpha omega)"))
         if kind == "Fc":  # the tooth load's part along the tangent given for the whole
-            body = sc.rolling_body(names)
+            body = rolling_body(sc, names)
             c = next((c for c in sol.forces.contacts if c.wheel == body), None)
             if c is not None and c.teeth is not None and c.teeth > 0:
                 out.append(_Candidate(self.cmp(abs(c.tangential), signed),

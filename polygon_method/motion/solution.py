@@ -31,6 +31,7 @@ from ..common.tolerances import FLOOR, SAME
 from ..solver.compiler import compile_plan
 from ..steps.base import Instant
 from ..scene import FixedPath, Scene
+from ..scene.force_records import rolling_body
 
 __all__ = ["solve", "Solution", "PinRubbing", "sense", "fmt_angular"]
 
@@ -344,7 +345,7 @@ class Solution(Motion):
             return f.input_torque
         if kind in ("F", "N", "Fc", "Fi", "Ci", "h"):
             from ..forces import force_value  # lazy, as in `forces`
-            return force_value(self.forces, kind, self.scene.rolling_body(names) if kind == "Fc"
+            return force_value(self.forces, kind, rolling_body(self.scene, names) if kind == "Fc"
                                else names[0])
         if kind in ("vu", "au"):  # the guide's point under a block (v_A1, a_A1)
             return hypot(*self.under_block(names[0], "velocity" if kind == "vu"

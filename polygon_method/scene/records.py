@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 
 from ..common.errors import SceneError
 from ..common.units import ABSURD, TINY, UNITS
-from .force_records import Flywheel, Gravity, Indicator, Mass  # noqa: F401  (re-exported)
+from .force_records import Flywheel, Friction, Gravity, Indicator, Mass  # noqa: F401  (re-exported)
 
 POINT_NAME = re.compile(r"[A-Z][0-9]*")
 _POINT_ONLY = re.compile(r"^[A-Z][0-9]*\Z")  # \Z: "A\n" is no point name
@@ -53,8 +53,7 @@ ANSWER_KINDS = {
     "Fi": ("force", "body", False),
     "Ci": ("torque", "body", True),
     "h": ("length", "body", False),
-    # the size of the contact force at a rolling wheel's contact (a gear's tooth load), by
-    # the wheel's link or a rack's point
+    # the contact force's size at rolling wheel L (a tooth load; a rack by its point)
     "Fc": ("force", "contact", False),
 }
 #: the answer kinds of the guide's point under a block (``v_A1``, ``a_A1``: its image a1)
@@ -282,8 +281,8 @@ class RollingPair:
     ``base_radius``: the circle's radius as the problem states it (None: from the centre
     distance). ``angle``: the direction centre -> rim (rad) at the scene's crank angle
     (None: towards the contact point). ``label``: the line or circle in words.
-    ``pressure_angle``: the teeth's pressure angle (rad) of a gear, a circle or a rack, as
-    the scene states it (None: the default, 20 deg): the tooth load's line of action.
+    ``pressure_angle``: the teeth's pressure angle (rad) a gear, circle or rack states (None:
+    the default, 20 deg): the tooth load's line of action.
     """
 
     wheel: str
@@ -386,16 +385,6 @@ class Pin:
     point: str
     radius: float
     given: str  # "diameter" or "radius", as the scene gave it
-
-
-@dataclass(frozen=True)
-class Friction:
-    """Coulomb friction for the force analysis (``[friction]``): ``guides``, the
-    coefficient at every sliding guide (the friction ``mu |N|`` opposing the block's
-    sliding), ``pins``, the coefficient at every pin with a size in ``[pins]`` (the friction
-    circle of radius ``mu r``: a couple ``mu r |F|`` opposing the relative turning)."""
-    guides: float = 0.0
-    pins: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -568,13 +557,6 @@ class Scene:
         slots (``P_OA``; the point alone gives its first slot)."""
         return next((s for s in self.sliders if s.point == name or s.key == name), None)
 
-    def rolling_body(self, names) -> str:
-        """The rolling body an answer's names give (``Fc_AP``): the wheel's link key, or a
-        rack's ``block R``."""
-        if len(names) == 1:
-            return f"block {names[0]}"
-        return self.link("-".join(names)).key
-
     @property
     def blocks(self) -> tuple:
         """The sliders that are blocks: every slider record but a driving wheel's centre
@@ -604,8 +586,7 @@ class Scene:
 
     @property
     def has_forces(self) -> bool:
-        """Whether the scene asks for the force analysis: it gives masses, gravity or
-        friction."""
+        """Whether the scene asks for the force analysis: masses, gravity or friction."""
         return bool(self.masses) or self.gravity is not None or self.indicator is not None \
             or self.friction is not None
 
