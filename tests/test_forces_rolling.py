@@ -813,3 +813,36 @@ def test_a_ring_driven_by_a_planet_against_the_matrix_method():
     assert on_ring.by == "AP" and on_ring.normal < 0  # pushed outwards, away from O
     _close(on_ring.force, tuple(-v for v in x["tooth ring.F"]), scale)
     assert abs(f.input_torque - x["T"]) <= 1e-9 * scale * 0.1
+
+
+def test_friction_over_a_sweep_balances_power_at_every_angle():
+    """The same passes on arrays (a sweep of the crank and slotted lever with friction,
+    every 5 deg): the power balance with the friction's loss at every angle, to 1e-9."""
+    import sys
+
+    import numpy as np
+
+    from polygon_method.forces import analyse
+    from polygon_method.motion.sweeps import sweep
+    sys.path.insert(0, str(ROOT / "tests"))
+    from test_forces import _driver_power, _kin
+    sc = _friction_scene(ROOT / "worked_problems" / "crank_slotted_lever.toml", 0.15, 0.1)
+    res = sweep(sc, np.radians(np.arange(3.0, 360.0, 5.0)))
+    f = analyse(res)
+    terms = _driver_power(sc, res, f) + [f.friction_power]
+    for ld in sc.loads:
+        if ld.force is not None:
+            v = res.V[ld.target]
+            terms.append(ld.force[0] * v[0] + ld.force[1] * v[1])
+        else:
+            terms.append(ld.torque * res.W[ld.target])
+    g = sc.gravity
+    for m in sc.masses:
+        G, v, a, al, w = _kin(res, m)
+        terms.append(m.mass * g.g * (g.direction[0] * v[0] + g.direction[1] * v[1]))
+        terms.append(-m.mass * (a[0] * v[0] + a[1] * v[1]))
+        terms.append(-m.inertia * al * w)
+    total = sum(terms)
+    scale = sum(np.abs(t) for t in terms)
+    assert len(res) >= 60 and np.all(np.asarray(f.friction_power) <= 0)
+    assert np.all(np.abs(total) <= 1e-9 * scale)
