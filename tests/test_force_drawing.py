@@ -81,6 +81,8 @@ def _magnitude(sol, side):
         return m.mass * math.hypot(*a)
     if side.what == "guide":
         return abs(next(g.normal for g in f.guides if g.point == side.point))
+    if side.what == "contact":  # a rolling contact's force (the teeth's load), either body
+        return next(c.load for c in f.contacts if {c.wheel, c.by} == {side.on, side.by})
     F = f.pin(side.point, side.on, side.by)  # the solved pin force, by the sign rule
     if not side.part:
         return math.hypot(*F)
@@ -332,7 +334,7 @@ def test_the_page_draws_each_inertia_force_on_its_offset_line_over_the_cycle():
 def test_a_plan_the_forces_do_not_cover_is_refused_by_the_sheet_in_one_line():
     from polygon_method.common.errors import PolygonMethodError
     from polygon_method.scene import scene_from_table, scene_table
-    raw = scene_table(load_scene(ROOT / "worked_problems" / "rolling_epicyclic.toml"))
+    raw = scene_table(load_scene(ROOT / "tests" / "textbook" / "class3_triangle_plate.toml"))
     raw["gravity"] = {}
     sol = solve(scene_from_table(raw))
     with pytest.raises(PolygonMethodError, match=r"not solved for forces yet \(step 2"):

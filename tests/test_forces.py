@@ -70,7 +70,7 @@ def with_forces(scene, seed):
                           "distances": {lk.p: d1, lk.q: d2},
                           "turn": "ccw" if mu > 0 else "cw",
                           "gyration": lk.length * rnd.uniform(0.1, 0.6) / unit}
-    for s in scene.sliders:
+    for s in scene.blocks:  # (not a driving wheel's centre: the wheel is its body)
         if isinstance(s, (FixedPath, GuideSlider, YokeSlot)) and s.point not in masses:
             masses[s.point] = {"mass": f"{rnd.uniform(0.5, 8):.4f} kg"}
     raw["masses"] = masses
@@ -126,6 +126,8 @@ def _driver_power(sc, sol, f):
         (vkx, vky), (vrx, vry) = sol.V[cyl.barrel], sol.V[cyl.rod]
         n = np.hypot(rx - kx, ry - ky)
         terms = [f.input_torque * ((vrx - vkx) * (rx - kx) + (vry - vky) * (ry - ky)) / n]
+    elif inp.wheel is not None:  # the torque on the driving wheel
+        terms = [f.input_torque * sol.W[sc.link(inp.wheel).key]]
     elif inp.block is not None:
         u = sc.slider(inp.block).u
         v = sol.V[inp.block]
@@ -147,7 +149,8 @@ def test_the_cases_are_there():
     for c in CASES:
         kinds |= {st.kind for st in compile_plan(load_scene(c.values[0])).steps}
     assert {"crank", "dyad", "slider", "carried", "slotted", "block", "second crank",
-            "cylinder", "yoke", "peg", "wheel centre", "rolling", "triad"} <= kinds \
+            "cylinder", "yoke", "peg", "wheel centre", "rolling", "triad", "rack",
+            "rolling driver"} <= kinds \
         and len(CASES) >= 15
 
 
@@ -200,8 +203,9 @@ def _newton_euler(sol, f):
             couple(f"block {gd.point}", gd.couple)
             if gd.by != FRAME:
                 couple(gd.by, -gd.couple)
-    for c in f.contacts:  # the ground's grip and push on a rolling wheel
+    for c in f.contacts:  # the ground's grip and push on a rolling wheel, the teeth's load
         add(c.wheel, c.force, c.point)
+        add(c.by, (-c.force[0], -c.force[1]), c.point)  # (the gear that pushes, back)
     for body, items in f.applied.items():
         for it in items:
             if len(it) == 3:
@@ -211,6 +215,8 @@ def _newton_euler(sol, f):
     inp = sc.input
     if f.driver == "cylinder":  # the cylinder drives: its force is among the pins
         pass
+    elif inp.wheel is not None:  # the driver's torque on the wheel
+        couple(sc.link(inp.wheel).key, f.input_torque)
     elif inp.block is not None:  # the driver pushes the block along its guide
         u = sc.slider(inp.block).u
         add(f"block {inp.block}", (f.input_torque * u[0], f.input_torque * u[1]),
@@ -1236,15 +1242,6 @@ def test_a_wheel_rolling_on_the_ground_against_virtual_work():
     assert "it lifts off the line" in solution_text(up)
     d = json.loads(json.dumps(up.to_dict(), allow_nan=False))["forces"]["contacts"]["CP"]
     assert d["required_friction"] is None and d["normal_force"] == c.normal
-
-
-def test_rolling_on_a_circle_is_refused_saying_why():
-    sc = load_scene(ROOT / "worked_problems" / "rolling_epicyclic.toml")
-    raw = scene_table(sc)
-    raw["gravity"] = {}
-    with pytest.raises(PolygonMethodError, match="the contact's normal force is not "
-                       "determined by statics"):
-        solve(scene_from_table(raw)).forces
 
 
 def test_a_torque_answer_where_a_force_drives_is_one_clear_line(tmp_path, capsys):

@@ -10,6 +10,7 @@ from dataclasses import replace
 from ..common.errors import PolygonMethodError
 from ..forces import analyse, force_value
 from ..scene import GuideSlider, Gravity
+from ..scene.force_records import rolling_body
 from ..motion.solution import Solution, solve
 from ..steps import under_label
 from ..common.numbers import textbook as _g
@@ -102,7 +103,7 @@ class _Diagnoser:
                     out.append(_Candidate(val(alt), code, words))
         elif not sc.has_forces:
             out += self.torque(signed)
-        if kind in ("F", "N", "Fi", "Ci", "h") or (kind == "torque" and sc.has_forces):
+        if kind in ("F", "N", "Fc", "Fi", "Ci", "h") or (kind == "torque" and sc.has_forces):
             out += self.force_slips(kind, names, signed)
         for factor, code, words in _FACTOR_MISTAKES.get(_AS_KIND.get(kind, kind), ()) + \
                 self.unit_slips(kind):
@@ -289,12 +290,14 @@ class _Diagnoser:
         """The force chapter's classic slips, each solved again as the slip would have it:
         the power balance without inertia, the piston's inertia left out, the weights added
         where the problem leaves them out, the inertia couple left out, the offset h on the
-        wrong side of G (the couple's sense reversed)."""
+        wrong side of G (the couple's sense reversed); a tooth load given as its part along
+        the tangent (the pressure angle left out)."""
         sol, sc = self.sol, self.sc
         out = []
 
         def pick(f):
-            return f.input_torque if kind == "torque" else force_value(f, kind, names[0])
+            return f.input_torque if kind == "torque" else \
+                force_value(f, kind, rolling_body(sc, names) if kind == "Fc" else names[0])
 
         def again(words, code, **changes):
             try:
@@ -307,6 +310,15 @@ class _Diagnoser:
             out.append(_Candidate(self.cmp(sol.input_torque, signed), "no_inertia",
                                   "the power balance without the inertia forces (T = -sum F . v "
                                   "/ omega leaves out -m a_G . v_G and -I alpha omega)"))
+        if kind == "Fc":  # the tooth load's part along the tangent given for the whole
+            body = rolling_body(sc, names)
+            c = next((c for c in sol.forces.contacts if c.wheel == body), None)
+            if c is not None and c.teeth is not None and c.teeth > 0:
+                out.append(_Candidate(self.cmp(abs(c.tangential), signed),
+                                      "pressure_angle_left_out",
+                                      "the tooth load's part along the common tangent given "
+                                      "for the whole load: the pressure angle left out (the "
+                                      "load acts along the line of action, |T| / cos phi)"))
         blocks = [m.body for m in sc.masses if m.block]
         if blocks:
             again(f"the inertia of the reciprocating parts at {', '.join(blocks)} left out",

@@ -16,7 +16,7 @@ _SIN30 = 0.5
 
 UNIT_OF = {"v": "m/s", "a": "m/s^2", "omega": "rad/s", "alpha": "rad/s^2", "vs": "m/s",
            "as": "m/s^2", "ac": "m/s^2", "rub": "m/s", "torque": "N m",
-           "vI": "m/s", "aI": "m/s^2", "F": "N", "N": "N", "vu": "m/s", "au": "m/s^2",
+           "vI": "m/s", "aI": "m/s^2", "F": "N", "N": "N", "Fc": "N", "vu": "m/s", "au": "m/s^2",
            "Fi": "N", "Ci": "N m", "h": "m"}
 
 

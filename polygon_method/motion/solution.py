@@ -31,6 +31,7 @@ from ..common.tolerances import FLOOR, SAME
 from ..solver.compiler import compile_plan
 from ..steps.base import Instant
 from ..scene import FixedPath, Scene
+from ..scene.force_records import rolling_body
 
 __all__ = ["solve", "Solution", "PinRubbing", "sense", "fmt_angular"]
 
@@ -339,13 +340,14 @@ class Solution(Motion):
             if not self.scene.has_forces:
                 return self.input_torque
             f = self.forces
-            if f.driver != "crank":  # a driving block's or cylinder's effort is a force
+            if f.driver not in ("crank", "wheel"):  # a block's or cylinder's effort: a force
                 raise SceneError(f"torque: {f.crank} drives this mechanism with a force, not "
                                  "a torque (solve gives it as the input force)")
             return f.input_torque
-        if kind in ("F", "N", "Fi", "Ci", "h"):
+        if kind in ("F", "N", "Fc", "Fi", "Ci", "h"):
             from ..forces import force_value  # lazy, as in `forces`
-            return force_value(self.forces, kind, names[0])
+            return force_value(self.forces, kind, rolling_body(self.scene, names) if kind == "Fc"
+                               else names[0])
         if kind in ("vu", "au"):  # the guide's point under a block (v_A1, a_A1)
             return hypot(*self.under_block(names[0], "velocity" if kind == "vu"
                                            else "acceleration"))

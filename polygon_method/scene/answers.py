@@ -160,7 +160,8 @@ class _Answers:
             if getattr(self, "two_inputs", False):
                 raise self.error("with two inputs one power balance does not give the two "
                                  "driving torques: no torque answer", "answers", key)
-            if getattr(self, "driving_block", None):
+            if getattr(self, "driving_block", None) and not (
+                    forces and getattr(self, "driving_wheel", None)):
                 raise self.error(f"the block {self.driving_block} drives the mechanism: its "
                                  "driving effort is a force along its guide, not a torque "
                                  "(solve prints it; no torque answer)", "answers", key)
@@ -181,9 +182,9 @@ class _Answers:
             raise self.error(f"unknown answer key{hint() or _suggest(key, examples)}; keys are v_X, "
                              "a_X, v_XY, a_XY, omega_L, alpha_L, vs_X, as_X, ac_X, rub_X, "
                              "torque, I_ij (a centre), vI_L, aI_L (a wheel's contact point), "
-                             "F_X, N_X, Fi_L, Ci_L, h_L (forces)", "answers", key)
+                             "F_X, N_X, Fi_L, Ci_L, h_L, Fc_L (forces)", "answers", key)
         kind, what, sense_ok = ANSWER_KINDS[prefix]
-        if what in ("pin_force", "guide", "body") and not forces:
+        if what in ("pin_force", "guide", "body", "contact") and not forces:
             raise self.error(f"{key}: a force answer needs the force analysis: give "
                              "[masses] or [gravity]", "answers", key)
         if prefix in UNDER_BLOCK_KINDS and rest not in known:
@@ -230,6 +231,14 @@ class _Answers:
             if len(names) != 1 or names[0] not in known:
                 raise self.error(f"F_X names a pin: no point {rest} in the scene"
                                  f"{_which_point(rest, known)}", "answers", key)
+        elif what == "contact":  # a rolling contact's force: the wheel's link, a rack's point
+            pairs = getattr(self, "rolling_pairs", ()) or ()
+            lk = self.index.get(frozenset(names)) if len(names) == 2 else None
+            if not ((lk is not None and lk.key in {r.wheel for r in pairs}) or
+                    (len(names) == 1 and names[0] in {r.rim for r in pairs if r.on == "rack"})):
+                raise self.error(f"Fc_{rest}: {rest} is no wheel of [rolling] and no rack (the "
+                                 "key names a rolling wheel's link, e.g. Fc_AP, or a rack's "
+                                 "point)", "answers", key)
         elif what == "body":  # a link, or the block at a slider's point
             if rest in slider_names or (len(names) == 1 and names[0] in slider_names):
                 names = (f"block {slider_names[rest].point if rest in slider_names else rest}",)

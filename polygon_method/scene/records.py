@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 
 from ..common.errors import SceneError
 from ..common.units import ABSURD, TINY, UNITS
-from .force_records import Flywheel, Gravity, Indicator, Mass  # noqa: F401  (re-exported)
+from .force_records import Flywheel, Friction, Gravity, Indicator, Mass  # noqa: F401  (re-exported)
 
 POINT_NAME = re.compile(r"[A-Z][0-9]*")
 _POINT_ONLY = re.compile(r"^[A-Z][0-9]*\Z")  # \Z: "A\n" is no point name
@@ -26,7 +26,7 @@ _ABSURD_SHORT = 1e-7
 
 TOP_KEYS = ("title", "source", "notes", "units", "ground", "links", "points", "sliders",
             "cylinders", "rolling", "assembly", "input", "pins", "loads", "answers", "variants",
-            "variant", "masses", "gravity", "indicator", "flywheel")
+            "variant", "masses", "gravity", "indicator", "flywheel", "friction")
 INPUT_KEYS = ("crank", "angle", "speed", "acceleration")
 #: the kinds of quantity on which [input] may give the motion instead of the crank's speed
 #: (named as answer keys: ``omega_BC``, ``vs_B``, ``v_B``), with their rate's prefix
@@ -53,6 +53,8 @@ ANSWER_KINDS = {
     "Fi": ("force", "body", False),
     "Ci": ("torque", "body", True),
     "h": ("length", "body", False),
+    # the contact force's size at rolling wheel L (a tooth load; a rack by its point)
+    "Fc": ("force", "contact", False),
 }
 #: the answer kinds of the guide's point under a block (``v_A1``, ``a_A1``: its image a1)
 UNDER_BLOCK_KINDS = {"v": "vu", "a": "au"}
@@ -279,6 +281,8 @@ class RollingPair:
     ``base_radius``: the circle's radius as the problem states it (None: from the centre
     distance). ``angle``: the direction centre -> rim (rad) at the scene's crank angle
     (None: towards the contact point). ``label``: the line or circle in words.
+    ``pressure_angle``: the teeth's pressure angle (rad) a gear, circle or rack states (None:
+    the default, 20 deg): the tooth load's line of action.
     """
 
     wheel: str
@@ -296,6 +300,7 @@ class RollingPair:
     base_radius: float | None = None
     angle: float | None = None
     ring: bool = False
+    pressure_angle: float | None = None
 
 
 @dataclass(frozen=True)
@@ -443,6 +448,8 @@ class Scene:
     #: asked for (:class:`Flywheel`), or None
     indicator: Indicator | None = None
     flywheel: Flywheel | None = None
+    #: Coulomb friction at the guides and the pins (:class:`Friction`), or None
+    friction: Friction | None = None
     #: where the problem comes from (the scene's ``source``), for headings
     source: str | None = field(default=None, compare=False)
     #: the scene's [variants] (what may vary per student), and [variant] (which one it is)
@@ -579,8 +586,9 @@ class Scene:
 
     @property
     def has_forces(self) -> bool:
-        """Whether the scene asks for the force analysis: it gives masses or gravity."""
-        return bool(self.masses) or self.gravity is not None or self.indicator is not None
+        """Whether the scene asks for the force analysis: masses, gravity or friction."""
+        return bool(self.masses) or self.gravity is not None or self.indicator is not None \
+            or self.friction is not None
 
     def rolling_of(self, point: str):
         """The rolling pair whose wheel has ``point`` as its rim point, or None."""

@@ -87,7 +87,8 @@ def recognise(g, name):
             beta0 = angle_of(qx - ox, qy - oy)
     g.used_sliders.add(name)
     return RackStep(g.next_index, name, base.key, pr.base_centre,
-                    _rack_params(sc, pr, rate, beta0), free=free, unit=g.unit, uname=g.uname)
+                    _rack_params(sc, pr, rate, beta0), free=free, unit=g.unit, uname=g.uname,
+                    pressure_angle=pr.pressure_angle)
 
 
 @dataclass(frozen=True)
@@ -103,6 +104,9 @@ class RackStep(Step):
     free: tuple | None = None
     unit: float = 1e-3
     uname: str = "mm"
+    #: the teeth's pressure angle (rad) the scene states, or None (the force analysis'
+    #: default, 20 deg)
+    pressure_angle: float | None = None
 
     kind = "rack"
 

@@ -110,7 +110,7 @@ def recognise(g, name):
     return RollingWheel(g.next_index, pr.wheel, pr.centre, name, pr.on, pr.label, prm,
                         base=pr.base, base_centre=O, inside=pr.inside, ring=pr.ring,
                         kd_rate=kd_rate, kb_rate=kb_rate, base_free=base_free, follow=follow,
-                        unit=g.unit, uname=g.uname)
+                        unit=g.unit, uname=g.uname, pressure_angle=pr.pressure_angle)
 
 
 @dataclass(frozen=True)
@@ -142,6 +142,9 @@ class RollingWheel(Step):
     follow: tuple | None = None
     unit: float = 1e-3  # the scene's length unit (m), for messages
     uname: str = "mm"
+    #: the teeth's pressure angle (rad) the scene states, or None (the default: the force
+    #: analysis takes 20 deg and says so)
+    pressure_angle: float | None = None
 
     kind = "rolling"
 
