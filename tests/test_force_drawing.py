@@ -175,10 +175,12 @@ def test_each_free_body_draws_its_forces_along_their_lines(scene):
         assert svg is not None, tag
         assert _said(svg, f"note-{tag}-scale") == space.text.replace(" ", "")
         if not fb.body.startswith("block "):  # the link to the configuration's scale
-            lk = sc.link(fb.body)
-            got = math.dist(_centre(svg, f"{tag}-joint-{lk.p}"),
-                            _centre(svg, f"{tag}-joint-{lk.q}")) / CM
-            assert got * space.per_cm == pytest.approx(lk.length, rel=1e-5)
+            cyl = sc.cylinder(fb.body)  # a cylinder: its length at this instant
+            p, q = (cyl.barrel, cyl.rod) if cyl else (sc.link(fb.body).p, sc.link(fb.body).q)
+            length = math.dist(sol.P[p], sol.P[q]) if cyl else sc.link(fb.body).length
+            got = math.dist(_centre(svg, f"{tag}-joint-{p}"),
+                            _centre(svg, f"{tag}-joint-{q}")) / CM
+            assert got * space.per_cm == pytest.approx(length, rel=1e-5)
         for k, side in enumerate(fb.sides):
             gid = f"{tag}-force-{k}"
             if f"{gid}-shaft" not in svg.groups:
@@ -212,7 +214,9 @@ def test_each_free_body_draws_its_forces_along_their_lines(scene):
 def svg_origin(svg, tag, space, sol):
     """Where the point (0, 0) of the scene is on the page (pt), from a drawn joint."""
     fb = next(fb for fb in sol.forces.free if f"free-body-{fb.number}" == tag)
-    name = fb.body[6:] if fb.body.startswith("block ") else sol.scene.link(fb.body).p
+    cyl = sol.scene.cylinder(fb.body)
+    name = fb.body[6:] if fb.body.startswith("block ") else \
+        cyl.barrel if cyl is not None else sol.scene.link(fb.body).p
     x, y = _centre(svg, f"{tag}-joint-{name}")
     px, py = sol.P[name]
     return (x - px / space.per_cm * CM, y + py / space.per_cm * CM)

@@ -182,3 +182,44 @@ def test_block_in_the_second_input_says_it_is_not_solved_yet():
 def test_zero_mass_beside_an_inertia_says_how_to_state_a_balanced_crank():
     with pytest.raises(SceneError, match="balanced crank"):
         parse_scene(seed(after='[masses]\nAB = { mass = 0, centre = "A", inertia = 0.01 }\n'))
+
+
+RACK = """
+units = "m"
+[ground]
+O = [0, 0]
+[links]
+CA = 0.15
+[rolling]
+CA = {{ on = "{on}", through = "O", angle = 90 }}
+[input]
+wheel = "CA"
+s_C = 0
+{drive}
+"""
+
+
+@pytest.mark.parametrize("on,drive,omega,alpha", [
+    # on a horizontal line, above it: the centre moves right when the wheel turns cw
+    ("horizontal", 'vs_C = "2 m/s right"\nas_C = "3 m/s^2 slowing down"', -2 / 0.15, 3 / 0.15),
+    ("horizontal", 'vs_C = "2 m/s left"\nas_C = "3 m/s^2 left"', 2 / 0.15, 3 / 0.15),
+    ("horizontal", 'vs_C = "-2 m/s"\nalpha_CA = "1 rad/s^2 cw"', 2 / 0.15, -1.0),
+    ("horizontal", 'omega_CA = "4 rad/s cw"\nas_C = "0.3 m/s^2 speeding up"', -4.0, -2.0),
+])
+def test_a_driving_wheel_given_by_its_centre(on, drive, omega, alpha):
+    """"The gear's centre moves right at 2 m/s, slowing down at 3 m/s^2": rolling without
+    slip, omega = -v_C / r (cw to move right on a line below the wheel), alpha = -a_C / r;
+    the wheel's own omega and alpha worked out by hand here."""
+    from polygon_method import solve
+    sol = solve(parse_scene(RACK.format(on=on, drive=drive)))
+    assert sol.W["CA"] == pytest.approx(omega, rel=1e-14)
+    assert sol.Al["CA"] == pytest.approx(alpha, rel=1e-14)
+    # the top point moves at twice the centre's speed
+    assert sol.V["A"][0] == pytest.approx(-2 * 0.15 * omega, rel=1e-14)
+
+
+def test_a_driving_wheel_given_twice_is_refused_in_one_line():
+    with pytest.raises(SceneError, match="one only") as e:
+        parse_scene(RACK.format(on="horizontal", drive='omega_CA = "4 rad/s cw"\n'
+                                                       'vs_C = "0.6 m/s right"'))
+    assert "\n" not in str(e.value)

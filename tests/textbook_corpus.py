@@ -43,9 +43,15 @@ _CACHE = {}
 
 
 def solved(path):
+    """(scene, solution, reference). Where the motion is given on another quantity (``vs_B``,
+    ``omega_BC``, a cylinder's ``vs_OR``), the scene is the solution's, with the crank's
+    speed found: the reference is solved at that speed, and test_textbook checks that the
+    reference then moves the given quantity as stated (which makes the found speed right)."""
     if path not in _CACHE:
         scene = load_scene(path)
         sol = solve(scene)
+        if scene.input.given is not None:
+            scene = sol.scene
         _CACHE[path] = scene, sol, reference_solution(scene, sol.P)
     return _CACHE[path]
 

@@ -14,7 +14,7 @@ import math
 from .errors import TOL
 
 __all__ = ["fmt", "fixed", "textbook", "working", "sense", "sense_word", "fmt_angular",
-           "in_units", "quiet"]
+           "in_units", "quiet", "condition_text"]
 
 
 def quiet(x, scale):
@@ -30,6 +30,17 @@ def quiet(x, scale):
         return 0.0 if abs(x) <= lim else x
     import numpy as np
     return np.where(np.abs(x) <= lim, 0.0, x)
+
+
+def condition_text(c: float) -> str:
+    """A condition (a sine, a ratio: at most 1) as a refusal writes it: two figures, and a
+    rounding-noise size about a true zero written 0 (a peg's two slots exactly parallel,
+    a piston exactly at its dead centre), not 1.2e-16.
+
+    >>> condition_text(1.2e-16), condition_text(0.0042), condition_text(0.5)
+    ('0', '0.0042', '0.5')
+    """
+    return "0" if abs(c) <= TOL.negligible else f"{c:.2g}"
 
 
 def fmt(x: float, digits: int = 4) -> str:

@@ -129,8 +129,12 @@ def _free_body(sol, fb, scale: Scale, tiny, tag, note=()) -> _Sketch:
         body = Polygon(outline)
         pts = {point: X}
     else:
-        lk = sc.link(fb.body)
-        names = [lk.p, lk.q] + [cp.name for cp in sc.points if cp.link == lk.key]
+        cyl = sc.cylinder(fb.body)  # a cylinder (barrel and rod): one two-force member
+        if cyl is not None:
+            names = [cyl.barrel, cyl.rod]
+        else:
+            lk = sc.link(fb.body)
+            names = [lk.p, lk.q] + [cp.name for cp in sc.points if cp.link == lk.key]
         pts = {n: cm(sol.P[n]) for n in names}
         pts.update({sd.point: cm(sd.at) for sd in fb.sides if sd.what == "contact"})
         body = MultiPoint(list(pts.values())).convex_hull.buffer(BAR / 2, quad_segs=8)

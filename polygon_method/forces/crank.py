@@ -11,7 +11,9 @@ and its driver turns it with the torque T; every other force on it is known by n
 
 from __future__ import annotations
 
-from ..common.numbers import fmt
+import math
+
+from ..common.numbers import fmt, quiet
 from .records import FRAME, ForceStep, PinForce, Side
 
 
@@ -63,8 +65,12 @@ def step(st, P, led, own):
             return known + (Side("pin", st.link, FRAME, st.pivot, r, (ox, oy)),), (), ()
         drawing = drawn
         O = st.pivot
-        eq = (f"moments about {O}: T + M_{O} = 0, M_{O} = {fmt(-torque)} N m the known "
-              f"forces' moment: T = {fmt(torque)} N m",
+        # a driver elsewhere (a cylinder, a given block) leaves the crank no torque: its
+        # rounding noise is written 0, on the size of the pivot's force times the mechanism's
+        size = math.hypot(*r) * max(math.dist(q, (ox, oy)) for q in P.values())
+        t = quiet(torque, size)
+        eq = (f"moments about {O}: T + M_{O} = 0, M_{O} = {fmt(-t if t else 0.0)} N m the "
+              f"known forces' moment: T = {fmt(t)} N m",
               f"forces: F_{O} = -(the known forces) = ({fmt(r[0])}, {fmt(r[1])}) N")
     rec = ForceStep(st.index, st.kind, st.title, (st.link,), (k,),
                     ((f"F_{st.pivot} on {st.link} by the frame", r),

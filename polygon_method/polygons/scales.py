@@ -191,7 +191,8 @@ def diagram_scales(sol, fit_cm: float = FIT_CM, space_fit_cm: float = SPACE_FIT_
     """(space, velocity, acceleration) scales for a solution's three diagrams.
 
     Each is the smallest round scale at which the diagram's size (the largest distance
-    between two of its points: joints for the configuration, the pole and every image
+    between two of its points: joints for the configuration, with its pitch circles and a
+    yoke's slot, the pole and every image
     point for a polygon, and the ends of the components its construction draws) is at most ``space_fit_cm`` (configuration, in the scene's length
     unit) or ``fit_cm`` (each polygon).
     """
@@ -202,21 +203,28 @@ def diagram_scales(sol, fit_cm: float = FIT_CM, space_fit_cm: float = SPACE_FIT_
     pole = [(0.0, 0.0)]
     vel = pole + list(sol.V.values()) + drawn(velocity_constructions(sol))
     acc = pole + list(sol.A.values()) + drawn(acceleration_constructions(sol))
-    return (choose_scale(extent(list(sol.P.values()) + _circles(sol)), space_fit_cm,
+    return (choose_scale(extent(list(sol.P.values()) + _drawn_beside(sol)), space_fit_cm,
                          unit=sc.units),
             choose_scale(extent(vel), fit_cm, unit="m/s"),
             choose_scale(extent(acc), fit_cm, unit="m/s^2"))
 
 
-def _circles(sol) -> list:
-    """The four extreme points of every pitch circle the configuration diagram draws (a
-    fixed sun or ring is wider than the joints on it): the diagram fits with them."""
+def _drawn_beside(sol) -> list:
+    """Points (m) of what a configuration diagram draws beyond the joints, so that its scale
+    holds them too: eight points on each pitch circle (a ring, a sun, a gear) and, for a
+    translating yoke, its slot's far end (the bar reaches as far past the yoke's point as
+    the pin is on the near side)."""
     out = []
     for st in sol.plan.steps:
         for shape in st.shapes(sol.P):
             if shape[0] == "circle":
-                (x, y), r = sol.P[shape[1]], abs(shape[2])
-                out += [(x + r, y), (x - r, y), (x, y + r), (x, y - r)]
+                c = sol.P[shape[1]] if isinstance(shape[1], str) else shape[1]
+                out += [(c[0] + shape[2] * math.cos(k * math.pi / 4),
+                         c[1] + shape[2] * math.sin(k * math.pi / 4)) for k in range(8)]
+    for sl in sol.scene.sliders:
+        if hasattr(sl, "yoke"):
+            (yx, yy), (px, py) = sol.P[sl.yoke], sol.P[sl.point]
+            out.append((2 * yx - px, 2 * yy - py))
     return out
 
 

@@ -357,6 +357,9 @@ class Input:
     #: ``alpha`` the centre's place, velocity and acceleration along it (as for a block),
     #: ``speed_text`` the wheel's angular velocity as the scene gave it
     wheel: str | None = None
+    #: a driving wheel's motion given on its centre (``vs_C``, ``as_C``) instead of its own
+    #: omega and alpha: the keys so given (the step table says which were given)
+    wheel_given: tuple = ()
     #: an angle the scene gave in a book's words: (words, the angle they gave (rad), the
     #: slips a reader of them might make (:class:`~.angles.Slip`), the note saying how
     #: they were read); empty for a plain angle

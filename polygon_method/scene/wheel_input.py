@@ -2,7 +2,9 @@
 driver (a part of the scene reader).
 
 The wheel CP (its entry in ``[rolling]``, on a line) rolls at ``omega_CP`` (with a sense),
-``alpha_CP`` (optional, default 0: steady). Its centre C moves on the line parallel to the
+``alpha_CP`` (optional, default 0: steady), or its centre's velocity ``vs_C`` and
+acceleration ``as_C`` along the ground are given instead (signed along the line, or up,
+down, left, right; ``omega = vs / (r t.u)``). Its centre C moves on the line parallel to the
 ground at the wheel's radius r: the centre's path. The motion's parameter is C's place s
 along that path (from the foot of the line's ``through`` point, along the line's direction
 u), given by ``C = [x, y]`` or ``s_C``. No slip (t = perp(m), m the unit normal from the
@@ -54,31 +56,48 @@ def wheel_input(rd, spec, ground):
                        "set by the wheel rolling on its line (remove it from [sliders])",
                        "input", "wheel")
     w_key, a_key, s_key = f"omega_{W}", f"alpha_{W}", f"s_{C}"
-    allowed = ("wheel", w_key, a_key, s_key, C, "travel")
+    v_key, as_key = f"vs_{C}", f"as_{C}"
+    allowed = ("wheel", w_key, a_key, s_key, C, "travel", v_key, as_key)
     for k in spec:
         if k not in allowed:
             why = ("the wheel drives the mechanism: there is no crank, so no crank, angle, speed "
                    "or acceleration (a wheel that a crank also drives is over-determined)"
                    if k in INPUT_KEYS or k == "second" else "unknown key")
             raise rd.error(f"{why}; with wheel = \"{W}\", [input] takes {w_key} (its angular "
-                           f"velocity), {a_key} (its angular acceleration), {C} = [x, y] or "
-                           f"{s_key} (its centre's place) and travel = [from, to]", "input", k)
-    if w_key not in spec:
+                           f"velocity) or {v_key} (its centre's velocity along the ground), "
+                           f"{a_key} or {as_key} (their rates), {C} = [x, y] or {s_key} (its "
+                           "centre's place) and travel = [from, to]", "input", k)
+    for one, other in ((w_key, v_key), (a_key, as_key)):
+        if one in spec and other in spec:
+            raise rd.error(f"[input] gives both {one} and {other}: one only (rolling without "
+                           f"slip, the centre moves at omega r)", "input", other)
+    if w_key not in spec and v_key not in spec:
         raise rd.error(f"[input] has no {w_key}: add the wheel's angular velocity, e.g. "
-                       f"{w_key} = \"4 rad/s cw\"", "input")
-    omega = rd.qty(spec[w_key], "angular_velocity", "input", w_key, need_sense=True).value
+                       f"{w_key} = \"4 rad/s cw\" (or its centre's, {v_key} = \"2 m/s "
+                       "right\")", "input")
+    path = centre_path(pr, C)
+    (qx, qy), (ux, uy), (mx, my), r = path.through, path.u, pr.m, pr.radius
+    along = -my * ux + mx * uy  # t . u, t = perp(m): +1 or -1
+    if v_key in spec:  # the centre's velocity along the ground: omega = vs / (r t.u)
+        vs, _ = rd.directed(spec[v_key], "velocity", v_key, (ux, uy), need=False)
+        omega = vs / (r * along)
+    else:
+        omega = rd.qty(spec[w_key], "angular_velocity", "input", w_key, need_sense=True).value
     if omega == 0:
-        raise rd.error(f"{w_key} is zero: nothing moves", "input", w_key)
-    raw_a = spec.get(a_key, 0)
+        raise rd.error(f"{v_key if v_key in spec else w_key} is zero: nothing moves", "input",
+                       v_key if v_key in spec else w_key)
+    raw_a = spec.get(a_key, spec.get(as_key, 0))
     if isinstance(raw_a, (int, float)) and not isinstance(raw_a, bool) and raw_a == 0:
         alpha = 0.0
+    elif as_key in spec:
+        acc = rd.rated(raw_a, "acceleration", "input", as_key, omega * r * along)
+        if acc is None:
+            acc, _ = rd.directed(raw_a, "acceleration", as_key, (ux, uy), need=False)
+        alpha = acc / (r * along)
     else:
         alpha = rd.rated(raw_a, "angular_acceleration", "input", a_key, omega)
         if alpha is None:
             alpha = rd.qty(raw_a, "angular_acceleration", "input", a_key, need_sense=True).value
-    path = centre_path(pr, C)
-    (qx, qy), (ux, uy), (mx, my), r = path.through, path.u, pr.m, pr.radius
-    along = -my * ux + mx * uy  # t . u, t = perp(m): +1 or -1
     if (s_key in spec) == (C in spec):
         raise rd.error(f"[input] gives the wheel's place {'twice' if C in spec else 'not at all'}:"
                        f" {C} = [x, y] (its centre) or {s_key} = 300 (the centre's place along "
@@ -114,4 +133,5 @@ def wheel_input(rd, spec, ground):
     rd.driving_wheel = W  # (but with masses or gravity: the driver's torque on the wheel)
     rd.slider_points[C] = path
     return Input(None, None, C, s, omega * r * along, alpha * r * along,
-                 str(spec[w_key]).strip(), block=C, stroke=stroke, wheel=W)
+                 str(spec.get(w_key, spec.get(v_key))).strip(), block=C, stroke=stroke, wheel=W,
+                 wheel_given=tuple(k for k in (v_key, as_key) if k in spec))

@@ -40,7 +40,7 @@ import math
 from dataclasses import replace
 
 from ..common.errors import TOL, SingularStepError
-from ..common.numbers import sense
+from ..common.numbers import condition_text, quiet, sense
 from ..common.tolerances import ROUNDING
 from .plan import Context, Plan
 from ..scene import GIVEN_KINDS
@@ -144,8 +144,8 @@ def _check(cond, label, given, inp):
         raise SingularStepError(
             f"{label} cannot set the crank's speed here: at this position {what} whatever "
             f"the crank {inp.crank}'s speed (a dead centre for this input; condition "
-            f"{f'{cond:.2g}' if cond >= 1e-12 else '0, to rounding'}): the crank's speed "
-            "would be unbounded", step=f"[input] {given.key}")
+            f"{condition_text(cond)}): the crank's speed would be unbounded",
+            step=f"[input] {given.key}")
 
 
 def completed(scene, res: Resolution):
@@ -183,11 +183,15 @@ def working(plan, fmt) -> list:
            f"{sense(res.omega)}"]
     if res.rate is not None:
         rate_key = g.rate_key or _rate_key(g)
+        # a true zero (the cylinder's line through the crank's pivot, square to it) is
+        # written 0, on the size of the quantity per rad/s or, in m, of the crank
+        h = quiet(res.per_omega2, max(abs(res.per_omega), 1.0 if g.kind == "omega" else
+                                      plan.scene.link(c).length))
         out.append(f"the acceleration polygon for the crank turning uniformly at 1 rad/s "
-                   f"gives {rate_key} = {fmt(res.per_omega2)} {rate_unit}; every "
+                   f"gives {rate_key} = {fmt(h)} {rate_unit}; every "
                    f"acceleration is alpha_{c} x (the velocity polygon at 1 rad/s) + "
                    f"omega_{c}^2 x (that acceleration polygon), so alpha_{c} = "
-                   f"({fmt(res.rate)} - {fmt(abs(res.omega))}^2 x {fmt(res.per_omega2)}) / "
+                   f"({fmt(res.rate)} - {fmt(abs(res.omega))}^2 x {fmt(h)}) / "
                    f"{fmt(res.per_omega)} = {fmt(abs(res.alpha))} rad/s^2 "
                    f"{sense(res.alpha)}")
     if res.condition < TOL.warn:

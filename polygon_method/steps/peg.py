@@ -27,6 +27,8 @@ perp(P - G_i)``: the same 2x2 solve with ``e = (aC_2 + cor_2) - (aC_1 + cor_1)``
 
 from __future__ import annotations
 
+from ..common.numbers import condition_text
+
 import math
 from dataclasses import dataclass
 
@@ -353,9 +355,8 @@ class Peg(Step):
 
     def singular_why(self, c) -> str:
         return (f"a pin in two parallel slots: {_slot_words(self.first)} and "
-                f"{_slot_words(self.second)} are parallel (sine "
-                f"{f'{c:.2g}' if c >= 1e-12 else '0, to rounding'}): they do not cross "
-                f"at one point, and {self.point} is undetermined")
+                f"{_slot_words(self.second)} are parallel (sine {condition_text(c)}): they do "
+                f"not cross at one point, and {self.point} is undetermined")
 
     def warning(self, c) -> str:
         return (f"{self.label}: {_slot_words(self.first)} and {_slot_words(self.second)} "

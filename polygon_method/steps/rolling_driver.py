@@ -124,8 +124,16 @@ class WheelDriver(BlockDriver):
         inp, C, r = scene.input, self.point, self.radius
         w, al = self.omega_alpha(inp.omega, inp.alpha)
         W = self.wheel
-        items = [f"omega_{W} = {fmt(abs(w))} rad/s {turn_sense(w)} (given); the wheel rolls "
+        on_centre = inp.wheel_given  # the centre's velocity (acceleration) given instead
+        items = [(f"v_{C} = {fmt(abs(inp.omega))} m/s {self.sense(inp.omega)} (given); the "
+                  f"wheel rolls without slip on {self.ground_words}, radius r = {fmt(r)} m, so "
+                  f"omega_{W} = v_{C} / r = {fmt(abs(w))} rad/s {turn_sense(w)}")
+                 if f"vs_{C}" in on_centre else
+                 f"omega_{W} = {fmt(abs(w))} rad/s {turn_sense(w)} (given); the wheel rolls "
                  f"without slip on {self.ground_words}, radius r = {fmt(r)} m",
+                 (f"a_{C} = {fmt(abs(inp.alpha))} m/s^2 {self.sense(inp.alpha)} (given), so "
+                  f"alpha_{W} = a_{C} / r = {fmt(abs(al))} rad/s^2 {turn_sense(al)}")
+                 if f"as_{C}" in on_centre and al else
                  f"alpha_{W} = {fmt(abs(al))} rad/s^2 {turn_sense(al)} (given)" if al else
                  f"alpha_{W} = 0 (the wheel rolls at a steady speed)",
                  f"the wheel rolls: its centre moves at omega r = {fmt(abs(w))} x {fmt(r)} = "

@@ -22,7 +22,7 @@ import math
 from dataclasses import dataclass
 
 from .relations import coriolis
-from ..common.numbers import in_units
+from ..common.numbers import in_units, condition_text
 from ..scene import FixedPath, GuideSlider, guide_words
 from .rounding import line_rounding, plus, turning, two_lines, vhypot, vmax
 from .slotted import under_label
@@ -272,7 +272,8 @@ class SliderDyad(Step):
                 f"< distance of {self.b} from the {where} = {in_units(abs(dist), u)} {n}")
 
     def singular_why(self, c) -> str:
-        return (f"{self.link} is perpendicular to the guide of {self.point} (sine {c:.2g}): a "
+        return (f"{self.link} is perpendicular to the guide of {self.point} "
+                f"(sine {condition_text(c)}): a "
                 f"dead centre for this step, where the line perpendicular to {self.link} is "
                 "parallel to the guide")
 

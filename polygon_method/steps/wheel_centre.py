@@ -19,7 +19,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..common.errors import TOL
-from ..common.numbers import in_units
+from ..common.numbers import in_units, condition_text
 from .base import (Construction, DirectionLine, Step, Vector, absolute, centripetal,
                    image_label, perp, pole_text, relative, sub, unit)
 from .rounding import line_rounding
@@ -189,7 +189,7 @@ class WheelCentre(Step):
 
     def singular_why(self, c):
         return (f"{self.link} is perpendicular to the line of the wheel's centre {self.point} "
-                f"(sine {c:.2g}): a dead centre for this step")
+                f"(sine {condition_text(c)}): a dead centre for this step")
 
     def warning(self, c):
         return (f"{self.label}: the line perpendicular to {self.link} is nearly parallel to "

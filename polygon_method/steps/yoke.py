@@ -25,7 +25,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..common.errors import TOL, SingularStepError
-from ..common.numbers import in_units
+from ..common.numbers import in_units, condition_text
 from ..scene import YokeSlot, guide_words
 from .base import Construction, DirectionLine, Step, Vector, absolute, image_label
 from .rounding import EPS, line_rounding, plus, two_lines
@@ -192,7 +192,8 @@ class Yoke(Step):
 
     def singular_why(self, c) -> str:
         return (f"a pin in two parallel slots: the slot of yoke {self.point} is parallel to "
-                f"its {guide_words(self.path.label)} (sine {c:.2g}): nothing moves the yoke")
+                f"its {guide_words(self.path.label)} (sine {condition_text(c)}): nothing moves "
+                "the yoke")
 
     def warning(self, c) -> str:
         return (f"{self.label}: the slot of yoke {self.point} is nearly parallel to its path "
