@@ -34,6 +34,9 @@ MANTISSAS = ("1", "2", "2.5", "5")
 FIT_CM = 12.0
 #: the largest extent of the configuration diagram (across an A4 page, cm)
 SPACE_FIT_CM = 15.0
+#: the largest extent of the configuration diagram with its pitch circles (cm): what a
+#: panel of an A4 sheet holds with its header and labels
+CIRCLES_FIT_CM = 18.0
 #: how closely a careful drawing is drawn and read: half a millimetre
 DRAWING_PRECISION_CM = 0.05
 
@@ -191,7 +194,8 @@ def diagram_scales(sol, fit_cm: float = FIT_CM, space_fit_cm: float = SPACE_FIT_
     """(space, velocity, acceleration) scales for a solution's three diagrams.
 
     Each is the smallest round scale at which the diagram's size (the largest distance
-    between two of its points: joints for the configuration, the pole and every image
+    between two of its points: joints for the configuration, and with its pitch circles
+    at most ``CIRCLES_FIT_CM``, the pole and every image
     point for a polygon, and the ends of the components its construction draws) is at most ``space_fit_cm`` (configuration, in the scene's length
     unit) or ``fit_cm`` (each polygon).
     """
@@ -202,9 +206,27 @@ def diagram_scales(sol, fit_cm: float = FIT_CM, space_fit_cm: float = SPACE_FIT_
     pole = [(0.0, 0.0)]
     vel = pole + list(sol.V.values()) + drawn(velocity_constructions(sol))
     acc = pole + list(sol.A.values()) + drawn(acceleration_constructions(sol))
-    return (choose_scale(extent(sol.P.values()), space_fit_cm, unit=sc.units),
+    space = choose_scale(extent(sol.P.values()), space_fit_cm, unit=sc.units)
+    circles = _circles(sol)
+    if circles:  # the pitch circles too, within what a sheet's panel holds
+        wide = choose_scale(extent(list(sol.P.values()) + circles), CIRCLES_FIT_CM,
+                            unit=sc.units)
+        space = max(space, wide, key=lambda x: x.per_cm)
+    return (space,
             choose_scale(extent(vel), fit_cm, unit="m/s"),
             choose_scale(extent(acc), fit_cm, unit="m/s^2"))
+
+
+def _circles(sol) -> list:
+    """The four extreme points of every pitch circle the configuration draws (a gear may
+    reach far beyond the joints: a scale from the joints alone drew it off the paper)."""
+    out = []
+    for st in sol.plan.steps:
+        for shape in st.shapes(sol.P):
+            if shape[0] == "circle":
+                (cx, cy), r = sol.P[shape[1]], abs(shape[2])
+                out += [(cx - r, cy), (cx + r, cy), (cx, cy - r), (cx, cy + r)]
+    return out
 
 
 def polygon_corners(step) -> list:
