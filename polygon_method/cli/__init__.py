@@ -251,20 +251,26 @@ _GLYPH = re.compile(r"Glyph \d+ \((.*)\) missing from font\(s\) (.*)\.$")
 def _glyphs(command):
     """Characters the plot font lacks (a title in another script, an emoji): said once, in
     one line, instead of a warning per character and per figure (they are drawn as the
-    font's empty box). Other warnings pass as they come."""
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
+    font's empty box). Other warnings pass as they come, under the filters in force: none
+    is recorded (a warning raised at each of millions of points, recorded, once held
+    gigabytes)."""
+    missing, fonts = {}, set()
+    with warnings.catch_warnings():
+        warnings.filterwarnings("always", message=r"Glyph \d+ \(")
+        shown = warnings.showwarning
+
+        def show(message, category, filename, lineno, file=None, line=None):
+            m = _GLYPH.match(str(message))
+            if m:
+                missing.setdefault(_glyph_char(m.group(1)), None)
+                fonts.add(m.group(2))
+            else:
+                shown(message, category, filename, lineno, file, line)
+
+        warnings.showwarning = show
         try:
             yield
         finally:
-            missing, fonts = {}, set()
-            for w in caught:
-                m = _GLYPH.match(str(w.message))
-                if m:
-                    missing.setdefault(_glyph_char(m.group(1)), None)
-                    fonts.add(m.group(2))
-                else:
-                    warnings.showwarning(w.message, w.category, w.filename, w.lineno)
             if missing:
                 print(f"polygon-method {command}: note: the plot font "
                       f"({', '.join(sorted(fonts))}) has no glyph for "

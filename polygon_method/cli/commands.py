@@ -43,7 +43,7 @@ def _engine_cycle(sol):
     from ..linkage.flywheel import engine_piston, turning_moment
     if sol.forces_refused or engine_piston(sc) is None:
         if sc.flywheel is not None:
-            raise PolygonMethodError("[flywheel]: the flywheel is an engine's: a slider crank "
+            raise PolygonMethodError("the flywheel is an engine's: a slider crank "
                                      "with a gas force on its piston ([loads] pressure, or "
                                      "[indicator])", file=sc.file, key="[flywheel]")
         return None
@@ -134,7 +134,10 @@ def _cmd_draw(args) -> int:
     sol = solve(load_scene(args.scene, variants=False, answers=False))
     diagram = getattr(args, "diagram", None) or "all"
     prefix = "" if getattr(args, "centre_labels", "I13") == "13" else "I"
-    datas, used, warnings, pages = render_pages(sol, fmt, diagram, scales, prefix, paper)
+    try:  # a diagram too large for the paper is this scene's: the line names it
+        datas, used, warnings, pages = render_pages(sol, fmt, diagram, scales, prefix, paper)
+    except PolygonMethodError as exc:
+        raise exc.located(args.scene)
     for w in list(sol.warnings) + warnings:
         print(f"warning: {w}", file=sys.stderr)
     files = [out] if fmt == "pdf" else page_files(out, len(pages))
@@ -276,11 +279,7 @@ def _requested_angles(args, scene=None):
         if max(abs(a), abs(b)) > MAX_ANGLE_DEG:
             raise SceneError(f"--from and --to are crank angles in degrees, within "
                              f"+-{MAX_ANGLE_DEG:g} (got {a:g} and {b:g})")
-        if s == 0 or (b - a) * s < 0:
-            raise SceneError(f"--step {s:g} does not lead from {a:g} to {b:g} deg")
-        count = int(math.floor((b - a) / s + SAME)) + 1
-        if count > 100_000_000:
-            raise SceneError(f"{count} crank angles are too many (at most 10^8)")
+        count = _range_count(a, b, s, "deg", "crank angles")
         return np.radians(a + s * np.arange(count))
     n = 360 if args.steps is None else args.steps
     if n < 1:
@@ -302,6 +301,24 @@ def _period_turns(scene) -> int:
     return turns
 
 
+def _range_count(a, b, s, unit, what) -> int:
+    """How many values ``--from a --to b --step s`` asks for (both ends, where the step
+    lands on the last), refused in one short line where the step leads nowhere or the
+    count is past 10^8 (a count past any float, ``(b - a) / s`` infinite, too).
+
+    >>> _range_count(0.0, 10.0, 2.5, "deg", "crank angles")
+    5
+    """
+    if s == 0 or (b - a) * s < 0:
+        raise SceneError(f"--step {s:g} does not lead from {a:g} to {b:g} {unit}")
+    ratio = (b - a) / s  # float arithmetic: inf past the largest float, never an error
+    if not ratio < 100_000_000:
+        many = f"{ratio + 1:.3g}" if math.isfinite(ratio) else "more than 1e308"
+        raise SceneError(f"--from {a:g} --to {b:g} --step {s:g} asks for {many} {what}: "
+                         "too many (at most 10^8)")
+    return int(math.floor(ratio + SAME)) + 1
+
+
 def _requested_places(args, scene, ranged):
     """A driving block's places along its guide (m) for a sweep."""
     import numpy as np
@@ -314,11 +331,11 @@ def _requested_places(args, scene, ranged):
         a, b, s = args.start, args.stop, args.step
         if not all(math.isfinite(v) for v in (a, b, s)):
             raise SceneError("--from, --to and --step must be finite numbers")
-        if s == 0 or (b - a) * s < 0:
-            raise SceneError(f"--step {s:g} does not lead from {a:g} to {b:g} {uname}")
-        count = int(math.floor((b - a) / s + SAME)) + 1
-        if count > 100_000_000:
-            raise SceneError(f"{count} places are too many (at most 10^8)")
+        far = MAX_PLACE_M / u  # the farthest place a scene may state, in its units
+        if max(abs(a), abs(b)) > far:
+            raise SceneError(f"--from and --to are places of the driving block along its "
+                             f"guide, in {uname}, within +-{far:g} (got {a:g} and {b:g})")
+        count = _range_count(a, b, s, uname, "places")
         return (a + s * np.arange(count)) * u
     n = 361 if args.steps is None else args.steps
     if n < 1:
@@ -388,6 +405,8 @@ def _cmd_sweep(args) -> int:
 DEFAULT_FRAMES = 180
 #: the largest crank angle (deg) a sweep's --from/--to may name
 MAX_ANGLE_DEG = 1e6
+#: the farthest place (m) a driving block's sweep may name (as the farthest a scene states)
+MAX_PLACE_M = 1e4
 #: the most memory a CSV may need (the arrays, their table and its text)
 MAX_CSV_BYTES = 2 * 2 ** 30
 

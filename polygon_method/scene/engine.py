@@ -12,11 +12,13 @@ from __future__ import annotations
 
 import math
 
-from ..common.units import UNITS, did_you_mean
+from ..common.units import ABSURD, UNITS, did_you_mean
 from .records import FixedPath, Flywheel, Indicator
 
 _INDICATOR_KEYS = ("piston", "bore", "rod", "cycle", "unit", "angle", "stroke", "pressure")
 _FLYWHEEL_KEYS = ("coefficient", "plus_minus", "speed", "radius", "gyration")
+#: the least coefficient of fluctuation of speed (or +- range) a scene may ask for
+_LEAST_FLUCTUATION = 1e-6
 _CYCLES = {"2-stroke": 2 * math.pi, "two-stroke": 2 * math.pi, "steam": 2 * math.pi,
            "4-stroke": 4 * math.pi, "four-stroke": 4 * math.pi}
 
@@ -84,6 +86,7 @@ class _Engine:
             ps = self._numbers(spec["pressure"], t, "pressure", increasing=False)
             if len(ps) != len(xs):
                 raise self.error(f"{len(ps)} pressures for {len(xs)} angles", t, "pressure")
+            self._pressures(ps, k, unit, t)
             return Indicator(piston, area, cycle, "angle",
                              tuple(math.radians(x) for x in xs), tuple(p * k for p in ps),
                              f"{cyc} indicator diagram, {len(xs)} crank angles, {words}")
@@ -103,9 +106,19 @@ class _Engine:
             if len(row) != len(xs):
                 raise self.error(f"a row of {len(row)} pressures for {len(xs)} places of "
                                  "stroke", t, "pressure")
+            self._pressures(row, k, unit, t)
             ps.append(tuple(p * k for p in row))
         return Indicator(piston, area, cycle, "stroke", tuple(xs), tuple(ps),
                          f"{cyc} indicator diagram, {n} strokes of {len(xs)} places, {words}")
+
+    def _pressures(self, ps, k, unit, table):
+        """Refuse a pressure beyond what a mechanism meets (a units slip; the cycle's
+        torque and energy of such a pressure overflow)."""
+        worst = max(abs(p) for p in ps)
+        if not worst * k <= ABSURD["pressure"]:
+            raise self.error(f"a pressure of {worst:g} {unit.strip()} is absurd for an engine "
+                             f"(more than {ABSURD['pressure']:g} Pa); check the values and "
+                             "their unit", table, "pressure")
 
     def _numbers(self, raw, table, key, increasing=True):
         """A list of plain numbers (at least two; strictly increasing where asked)."""
@@ -144,6 +157,10 @@ class _Engine:
         if not 0 < c < 1:
             raise self.error(f"{key} = {raw!r}: between 0 and 1 (a fraction of the mean speed)",
                              t, key)
+        if c < _LEAST_FLUCTUATION:  # I = dE / (w^2 Cs): a units slip, and it overflows
+            raise self.error(f"{key} = {raw!r}: no flywheel keeps the speed that steady (at "
+                             f"least {_LEAST_FLUCTUATION:g} of the mean speed; books give "
+                             "0.002 to 0.2 for the whole range)", t, key)
         if key == "plus_minus":
             words = f"the speed within +-{raw} of the mean: Cs = 2 x {c:g} = {2 * c:g}"
             c *= 2

@@ -282,7 +282,8 @@ def locate(sol, prefix: str = "I") -> "Centres":
     n = len(names)
     if n > MAX_BODIES:
         raise SceneError(f"{n} bodies have {n * (n - 1) // 2} instantaneous centres: more "
-                         f"than this tool lists (at most {MAX_BODIES} bodies)")
+                         f"than this tool lists (at most {MAX_BODIES} bodies)",
+                         file=sol.scene.file)
     scale = max((math.hypot(*p) for p in sol.P.values()), default=1.0) or 1.0
     found = _primary(sol, names)
     order = sorted(found)
