@@ -134,7 +134,11 @@ def step_costs(repeat=7, number=2000):
     wheel = load_scene(here / "rolling_wheel_on_ground.toml")
     rocker = load_scene(here / "rolling_planet_on_rocker.toml")
     watt = load_scene(here / "rolling_sun_and_planet.toml")
+    collar = load_scene(here / "collar_on_turning_rod.toml")
+    second = load_scene(here / "collar_second_input.toml")
     return {"dyad": d, "planet's rolling step": cost(planet, "rolling"),
+            "collar driven along its rod (the driver, two points)": cost(collar, "collar"),
+            "collar sliding along the crank (second input)": cost(second, "second collar"),
             "wheel's rolling step": cost(wheel, "rolling"),
             "wheel's centre on the ground": cost(wheel, "wheel centre"),
             "planet on a rocker (its arm's angle followed)": cost(rocker, "rolling"),

@@ -19,17 +19,28 @@ the coordinates ``q`` (x, y of every non-ground point):
   beta0)``: no slip at the pitch point relative to the line of centres, psi the direction
   O -> C and beta the gear's (its centre to its link's other point), both read from the
   points, ``kd = 1 + e R/r``, ``kb = -e R/r`` (e = +1 outside, -1 inside; R from the centre
-  distance). Evaluated at the scene's own angle, where phi = phi0 (s0 is C's place there);
+  distance: |d| + e r, or r - |d| where the wheel is a ring about the gear, e = -1: no slip
+  at I = O - R d/|d| relative to the line of centres gives the same kd, kb). Evaluated at the scene's own angle, where phi = phi0 (s0 is C's place there);
   it has no explicit time, and its gamma is its second derivative along q' (mpmath.diff).
 * a rack R on a fixed path (T, u) meshing with a pinion about O:  ``(R - T).u - k K (th - th0)
   = 0`` with k = -(T - O).perp(u) (the pinion's point at the pitch point moves as the rack)
-  and K the pinion's turns per turn of the crank (with the path's equation above).
+  and K the pinion's turns per turn of the crank (with the path's equation above); a
+  pinion that is no wheel of [rolling] and not the crank (keyed to a rocker: it turns as
+  a linkage makes it) ``(R - T).u - k (beta - beta0) = 0``, beta its direction O -> Q
+  (Q its link's other point) read from the points, beta0 at the scene's own angle (no
+  explicit time; its gamma the second derivative along q', mpmath.diff).
 * a driving block X on its fixed path (T, u) ([input] block): ``(X - T).u - s = 0`` (with the
   path's equation above), ``s(t) = s0 + vs t + as t^2 / 2``: the "crank angle" th is s,
   ``f_t = -vs``, ``gamma = -as``
 * a driving wheel CX rolling on a fixed line ([input] wheel): its centre C is the driving
   block above, its place s along the [rolling] line (T its through point, u its direction:
   ``(C - T).u - s = 0``), on the line at the radius by the wheel's own equation
+* a collar X driven along its rod K-N of length L, K on the ground ([input] block, X sliding
+  along a moving link): ``(X - K).(N - K) - L s = 0`` (with the guide's equation and the
+  rod's length), ``s(t) = s0 + vs t + as t^2 / 2``: ``f_t = -L vs``, ``gamma = 2 (vX -
+  vK).(vN - vK) - L as``
+* a collar X sliding along the crank K-N as the second input ([input.second] block): the
+  same, with its own s(t), vs, as
 * a pin X in the slot of a translating yoke Y (a block on a fixed path), the slot along
   the fixed unit d:  ``cross(X - Y, d) = 0`` (linear: ``gamma = 0``)
 * a peg in two slots: one of the two above for each slot (two equations for its point);
@@ -117,13 +128,18 @@ def _equations(scene):
         if lk.key == inp.crank or (lk.p in ground and lk.q in ground) or lk.key in wheels:
             continue
         two = getattr(inp, "second", None)
-        if two is not None and lk.key == scene.link(two.crank).key:
+        if two is not None and two.crank is not None and lk.key == scene.link(two.crank).key:
             continue
         eqs.append(("link", (lk.p, lk.q, mpf(lk.length))))
     wheel = getattr(inp, "wheel", None)
     if wheel is not None:  # a driving wheel: its centre's place along its ground line (T,
         pr = next(p for p in scene.rolling if p.wheel == wheel)  # u: the [rolling] line's)
         eqs.append(("block", (inp.block, _v(pr.through), _unit(_v(pr.u)))))
+    elif getattr(inp, "block", None) is not None and hasattr(scene.slider(inp.block), "guide"):
+        sl = scene.slider(inp.block)  # a collar driven along its rod K-N (K on the ground)
+        rod = scene.link(sl.guide)
+        k = rod.p if rod.p in ground else rod.q
+        eqs.append(("collar", (inp.block, k, rod.other(k), mpf(rod.length))))
     elif getattr(inp, "block", None) is not None:  # a block driven along its fixed path
         sl = scene.slider(inp.block)
         eqs.append(("block", (inp.block, _v(sl.through), _unit(_v(sl.u)))))
@@ -132,7 +148,12 @@ def _equations(scene):
         eqs.append(("crank", (inp.pivot, inp.tip, mpf(crank.length), 0)))
         eqs.append(("crank", (inp.pivot, inp.tip, mpf(crank.length), 1)))
     two = getattr(inp, "second", None)
-    if two is not None:  # a second driven crank, at its own angle, speed and acceleration
+    if two is not None and two.block is not None:  # a collar sliding along the crank K-N
+        rod = scene.link(scene.slider(two.block).guide)
+        k = rod.p if rod.p in ground else rod.q
+        eqs.append(("collar2", (two.block, k, rod.other(k), mpf(rod.length), mpf(two.angle),
+                                mpf(two.omega), mpf(two.alpha))))
+    elif two is not None:  # a second driven crank, at its own angle, speed and acceleration
         r2 = mpf(scene.link(two.crank).length)
         for c in (0, 1):
             eqs.append(("crank2", (two.pivot, two.tip, r2, c, mpf(two.angle), mpf(two.omega),
@@ -159,6 +180,11 @@ def _equations(scene):
             T, u = _v(sl.through), _unit(_v(sl.u))
             O = _v(scene.ground[pr.base_centre])
             k = -_dot(_sub(T, O), _perp(u))
+            if pr.base != scene.link(inp.crank).key and pr.base not in wheels:
+                bl = scene.link(pr.base)
+                eqs.append(("rackfree", (pr.rim, T, u, k, pr.base_centre,
+                                         bl.other(pr.base_centre))))
+                continue
             eqs.append(("rack", (pr.rim, T, u, k, pr.base, rates, mpf(inp.angle))))
             continue
         ell = mpf(scene.link(pr.wheel).length)
@@ -267,6 +293,13 @@ def _eval(kind, d, P, th, moving=False):
     if kind == "block":  # the driving block's place along its path: th is s
         x, through, u = d
         return _dot(_sub(P[x], through), u) - th, [(x, u[0], u[1])]
+    if kind in ("collar", "collar2"):  # the collar's place on its rod: (X - K).(N - K) / L = s
+        x, k, n, L = d[:4]
+        if kind == "collar2":  # a second input: its own place at the instant
+            th = d[4]
+        a, b = _sub(P[x], P[k]), _sub(P[n], P[k])
+        return _dot(a, b) - L * th, [(x, b[0], b[1]), (n, a[0], a[1]),
+                                     (k, -a[0] - b[0], -a[1] - b[1])]
     if kind == "yoke":
         x, y, u = d
         a = _sub(P[x], P[y])
@@ -280,6 +313,13 @@ def _eval(kind, d, P, th, moving=False):
         x, T, u, k, base, rates, th0 = d
         K = rates.get(base, 0)  # (at the scene's own angle th = th0 the term is zero)
         return _dot(_sub(P[x], T), u) - k * K * (th - th0), [(x, u[0], u[1])]
+    if kind == "rackfree":  # at the scene's own angle the pinion's turn is zero
+        x, T, u, k, O, Q = d
+        out = [(x, u[0], u[1])]
+        if moving:  # - k d(beta), beta the direction O -> Q
+            hx, hy = _angle_gradient(P, O, Q)
+            out += [(Q, -k * hx, -k * hy), (O, k * hx, k * hy)]
+        return _dot(_sub(P[x], T), u), out
     if kind == "wheelline":
         x, T, m, r = d
         return _dot(_sub(P[x], T), m) - r, [(x, m[0], m[1])]
@@ -306,9 +346,10 @@ def _rim_angle(P, cen, phi0, how):
         phi = phi0 if phi0 is not None else mpmath.atan2(-m[1], -m[0])
         return mpf(phi), (t[0] / r, t[1] / r)
     _, O, e, r, pr, base = how
-    if phi0 is None:
+    if phi0 is None:  # towards the contact (a ring's is beyond the gear inside it)
         d = _sub(P[cen], P[O])
-        phi0 = mpmath.atan2(-e * d[1], -e * d[0])
+        g = 1 if getattr(pr, "ring", False) else e
+        phi0 = mpmath.atan2(-g * d[1], -g * d[0])
     return mpf(phi0), (mpf(0), mpf(0))
 
 
@@ -320,6 +361,8 @@ def _rim_ratios(P, cen, how):
     _, O, e, r, pr, base = how
     d = _sub(P[cen], P[O])
     R = mpmath.sqrt(_dot(d, d)) - e * r
+    if getattr(pr, "ring", False):  # the wheel a ring about the gear: |d| = r - R
+        R = r - mpmath.sqrt(_dot(d, d))
     return 1 + e * R / r, -e * R / r
 
 
@@ -359,6 +402,11 @@ def _rim_value_along(P, V, d, s):
     phi = phi + kd * turn(O, cen) + (kb * turn(*base) if base is not None else 0)
     ec = mpmath.cos(phi) if c == 0 else mpmath.sin(phi)
     return Q[x][c] - Q[cen][c] - ell * ec
+
+
+def _add_s(p, v, s):
+    """p + s v."""
+    return (p[0] + s * v[0], p[1] + s * v[1])
 
 
 def _unknowns(scene):
@@ -450,6 +498,10 @@ def reference_solution(scene, guess_positions):
             ft[i] = -w2 * _perp(_sub(P[tip], P[o]))[c]
         elif kind == "block":
             ft[i] = -w
+        elif kind == "collar":
+            ft[i] = -d[3] * w
+        elif kind == "collar2":
+            ft[i] = -d[3] * d[5]
         elif kind == "rack":
             ft[i] = -d[3] * rates[d[4]] * w
     qd = mpmath.lu_solve(J, -ft)
@@ -474,8 +526,18 @@ def reference_solution(scene, guess_positions):
             gamma[i] = 2 * _cross(_sub(V[x], V[g1]), _sub(V[g2], V[g1]))
         elif kind == "block":
             gamma[i] = -al
+        elif kind in ("collar", "collar2"):  # (X - K).(N - K) - L s: f'' minus J q''
+            x, k, n, L = d[:4]
+            gamma[i] = 2 * _dot(_sub(V[x], V[k]), _sub(V[n], V[k])) - L * (
+                al if kind == "collar" else d[6])
         elif kind == "rack":
             gamma[i] = -d[3] * rates[d[4]] * al
+        elif kind == "rackfree":  # -k beta along the motion: its second derivative
+            x, T, u, k, O, Q = d
+            d0 = _sub(P[Q], P[O])
+            gamma[i] = -k * mpmath.diff(lambda s: mpmath.atan2(
+                _cross(d0, _sub(_add_s(P[Q], V[Q], s), _add_s(P[O], V[O], s))),
+                _dot(d0, _sub(_add_s(P[Q], V[Q], s), _add_s(P[O], V[O], s)))), 0, 2)
         elif kind == "rim":  # X - C - l e(phi): gamma = l phi'^2 e - l perp(e) phi_tt
             x, cen, ell, _, how, c = d
             e = _unit(_sub(P[x], P[cen]))

@@ -45,3 +45,20 @@ def test_quick_run_writes_charts_and_tables(tmp_path):
         for x, err, refused in d["series"]["production"]:
             if not refused:
                 assert err <= bound[x], (case, x, err, bound[x])
+
+
+def test_the_force_benchmark_runs_and_its_checks_hold(capsys):
+    """``benchmarks/forces_speed.py --smoke``: the floor gives the force solve's numbers, the
+    vectorised sweep's forces are the one-instant ones (its own checks, which raise); every
+    figure it prints is a positive time. Nothing about how long anything took."""
+    spec = importlib.util.spec_from_file_location(
+        "forces_speed", ROOT / "benchmarks" / "forces_speed.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    assert mod.main(["--smoke", "--json"]) == 0
+    out = capsys.readouterr().out
+    res = json.loads(out[out.index("{"):])
+    assert set(res["one"]) == set(mod.NAMES) == set(res["sweep"]) and res["angles"] == 360
+    assert "floor" in res["one"]["fourbar_forces"]
+    assert all(t > 0 for r in (*res["one"].values(), *res["sweep"].values())
+               for t in r.values())

@@ -16,14 +16,11 @@ import numpy as np
 import pytest
 from mpmath import mpf
 
+from drivers import check_derivatives, close, every_view, one_line, reference_errors
 from polygon_method import load_scene, parse_scene, solve
 from polygon_method.cli import main
 from polygon_method.solver.compiler import compile_plan
-from polygon_method.solver.plan import Context
 from polygon_method.motion.sweeps import sweep
-from reference import reference_solution
-
-REL = 1e-9
 
 TRAMMEL = """
 title = "trammel"
@@ -86,15 +83,6 @@ def closed_form(L, d, s, vs, acc):
         "omega": -td, "alpha": -tdd,
         "vs_B": L * ct * td, "as_B": -L * st * td * td + L * ct * tdd,
     }
-
-
-def close(got, want, scale):
-    if isinstance(want, tuple):
-        err = math.hypot(got[0] - want[0], got[1] - want[1])
-        size = max(math.hypot(*want), scale)
-    else:
-        err, size = abs(got - want), max(abs(want), scale)
-    return err <= REL * size
 
 
 @pytest.mark.parametrize("case", CASES)
@@ -283,58 +271,14 @@ vs_A = "3 m/s down"
 
 @pytest.mark.parametrize("text", REFERENCE_SCENES)
 def test_solver_matches_the_50_digit_reference(text):
-    scene = parse_scene(text)
-    plan = compile_plan(scene)
-    inp = scene.input
-    P, V, A, W, Al, S = plan.evaluate(Context(inp.angle, inp.omega, inp.alpha))
-    ref = reference_solution(scene, P)
-    assert ref["residual"] < mpf("1e-40")
-    errs = []
-    for key, got, table in (("P", P, "positions"), ("V", V, "velocities"),
-                            ("A", A, "accelerations")):
-        want = ref[table]
-        scale = max(float(mpmath.sqrt(x ** 2 + y ** 2)) for x, y in want.values())
-        for p in scene.point_names:
-            w = (float(want[p][0]), float(want[p][1]))
-            if not close(tuple(got[p]), w, scale):
-                errs.append((key, p, got[p], w))
-    wscale = max(abs(float(x)) for x in ref["omega"].values())
-    ascale = max(abs(float(x)) for x in ref["alpha"].values())
-    for lk in scene.links:
-        if not close(W[lk.key], float(ref["omega"][lk.key]), wscale):
-            errs.append(("omega", lk.key))
-        if not close(Al[lk.key], float(ref["alpha"][lk.key]), ascale):
-            errs.append(("alpha", lk.key))
-    for sl in scene.sliders:
-        want = ref["sliders"][sl.point]
-        if not close(S[sl.point][0], float(want["vs"]), 1e-12):
-            errs.append(("vs", sl.point))
-        if not close(S[sl.point][1], float(want["as"]), 1e-12):
-            errs.append(("as", sl.point))
-    assert not errs
+    assert not reference_errors(text, sliders=True)
 
 
 @pytest.mark.parametrize("text", REFERENCE_SCENES)
 def test_velocities_are_the_derivatives_of_the_positions(text):
     """dP/dt = dP/ds vs and d2P/dt2 = d2P/ds2 vs^2 + dP/ds as, the derivatives in the
     block's place s by central differences of the solver's own positions."""
-    scene = parse_scene(text)
-    plan = compile_plan(scene)
-    inp = scene.input
-    s0, vs, a_s = inp.angle, inp.omega, inp.alpha
-    h = 1e-4
-
-    def at(s):
-        return plan.evaluate(Context(s, vs, a_s))[0]
-
-    P0, (Pm, Pp) = at(s0), (at(s0 - h), at(s0 + h))
-    _, V, A, *_ = plan.evaluate(Context(s0, vs, a_s))
-    for p in scene.point_names:
-        for c in (0, 1):
-            d1 = (Pp[p][c] - Pm[p][c]) / (2 * h)
-            d2 = (Pp[p][c] - 2 * P0[p][c] + Pm[p][c]) / (h * h)
-            assert V[p][c] == pytest.approx(d1 * vs, rel=1e-6, abs=1e-6)
-            assert A[p][c] == pytest.approx(d2 * vs * vs + d1 * a_s, rel=1e-4, abs=1e-4)
+    check_derivatives(text)
 
 
 def test_centres_give_the_rod_its_omega(tmp_path, capsys):
@@ -363,16 +307,7 @@ def test_every_view_takes_a_block_driver(tmp_path, capsys):
     f.write_text(trammel(500, 700, 300, 2.0, -5.0)
                  + '[loads]\nB = { force = [0, -100] }\n[answers]\nomega_AB = "5 rad/s ccw"\n'
                  + '[variants]\nAB = { from = 480, to = 520, step = 10 }\n')
-    for argv in (["solve"], ["solve", "--json"], ["steps"], ["check"], ["centres"],
-                 ["draw", "-o", str(tmp_path / "d.svg")],
-                 ["draw", "--animate", "-o", str(tmp_path / "a.svg")],
-                 ["draw", "--diagram", "centres", "-o", str(tmp_path / "c.svg")],
-                 ["sweep", "--plot", str(tmp_path / "p.svg")],
-                 ["sweep", "--steps", "36", "--summary"],
-                 ["sweep", "--csv", str(tmp_path / "s.csv")],
-                 ["page", "-o", str(tmp_path / "p.html")],
-                 ["variants", "--count", "2", "-o", str(tmp_path / "v")]):
-        assert main([argv[0], str(f), *argv[1:]]) == 0, argv
+    every_view(f, tmp_path, more=[["variants", "--count", "2", "-o", str(tmp_path / "v")]])
     out = capsys.readouterr().out
     # the input force along the guide: F vs_A + F_B . v_B = 0
     assert "input force on block A: 75 N to the left along the guide" in out
@@ -400,8 +335,8 @@ def test_bad_block_input_one_line(tmp_path, capsys, given, words):
     f = tmp_path / "s.toml"
     f.write_text(text)
     assert main(["solve", str(f)]) == 2
-    err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1 and words in err, err
+    err = one_line(capsys)
+    assert words in err, err
     assert "[input]" in err or "step 2" in err, err  # the key, or the step that fails
 
 
@@ -410,8 +345,8 @@ def test_a_torque_answer_is_refused(tmp_path, capsys):
     f.write_text(trammel(500, 700, 300, 2.0, -5.0)
                  + '[loads]\nB = { force = [0, -100] }\n[answers]\ntorque = "3 N m"\n')
     assert main(["check", str(f)]) == 2
-    err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1 and "a force along its guide" in err
+    err = one_line(capsys)
+    assert "a force along its guide" in err
 
 
 def test_a_centre_answer_is_checked(tmp_path, capsys):
@@ -425,8 +360,8 @@ def test_linkage_refuses_in_one_line(tmp_path, capsys):
     f = tmp_path / "t.toml"
     f.write_text(trammel(500, 700, 300, 2.0, -5.0))
     assert main(["linkage", str(f)]) == 2
-    err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1 and "block A" in err and "sweep" in err
+    err = one_line(capsys)
+    assert "block A" in err and "sweep" in err
 
 
 def test_variants_refuse_a_crank_angle(tmp_path, capsys):
@@ -434,8 +369,8 @@ def test_variants_refuse_a_crank_angle(tmp_path, capsys):
     f.write_text(trammel(500, 700, 300, 2.0, -5.0)
                  + "[variants]\nangle = { from = 10, to = 30, step = 10 }\n")
     assert main(["variants", str(f), "-o", str(tmp_path / "v")]) == 2
-    err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1 and "no crank angle to vary" in err
+    err = one_line(capsys)
+    assert "no crank angle to vary" in err
 
 
 PARALLEL = """
@@ -462,8 +397,8 @@ def test_unbounded_travel_asks_for_a_stroke(tmp_path, capsys):
     assert main(["solve", str(f)]) == 0
     capsys.readouterr()
     assert main(["sweep", str(f)]) == 2
-    err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1 and "stroke = [from, to]" in err
+    err = one_line(capsys)
+    assert "stroke = [from, to]" in err
     f.write_text(PARALLEL.replace("s_A = 0", "s_A = 0\nstroke = [-500, 500]"))
     res = sweep(load_scene(f))
     assert float(res.theta[0]) == pytest.approx(-0.5) and np.allclose(res.V["B"][0], 1.0)
@@ -574,21 +509,23 @@ B = {{ along = "OA" }}
 
 
 @pytest.mark.parametrize("given, key, words", [
-    ('block = "B"\ns_B = 0.5\nvs_B = "1.5 m/s"', "[input] block",
-     "slides along the moving link OA"),
+    ('block = "B"\ns_B = 0.5\nvs_B = "1.5 m/s"', "[sliders] B",
+     "mobility 2 (Gruebler: 3(n-1) - 2j): the collar B's sliding along OA sets one motion; "
+     "the rod's turning needs one more relation"),
     ('crank = "OA"\nangle = 30\nspeed = "2 rad/s ccw"', "[sliders] B",
      "mobility 2 (Gruebler: 3(n-1) - 2j): the mechanism is under-constrained; the block B "
      "slides freely along its guide"),
 ], ids=["as the block", "beside the crank"])
 def test_a_block_driven_along_a_turning_rod_is_refused_in_one_line(tmp_path, capsys, given,
                                                                    key, words):
-    """"The collar slides along the rotating rod at 1.5 m/s relative to it": the collar's
-    sliding is a second input beside the rod's turning; not solved yet, said so where the
-    scene states it (a free block on a turning rod is no over-constrained chain: its
-    mobility is 2, n = 3 bodies, j = 2 joints)."""
+    """"The collar slides along the rotating rod at 1.5 m/s relative to it", with nothing
+    else pinned to the collar: the collar's sliding alone, or the rod's turning alone, is
+    one input of a mechanism of two (a free block on a turning rod is no over-constrained
+    chain: its mobility is 2, n = 3 bodies, j = 2 joints); said so where the scene states
+    it, with what would complete it."""
     f = tmp_path / "rod.toml"
     f.write_text(ROD.format(input=given))
     assert main(["solve", str(f)]) == 2
-    err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1 and words in err and key in err, err
-    assert "not solved yet" in err and "over-constrained" not in err, err
+    err = one_line(capsys)
+    assert words in err and key in err, err
+    assert "[input.second] block" in err and "over-constrained" not in err, err

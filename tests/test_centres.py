@@ -160,6 +160,28 @@ def test_the_command_and_the_json(capsys):
         assert ("position" in c) != ("direction" in c)
 
 
+@pytest.mark.parametrize("name", ["fourbar_image_points", "ellipse_trammel",
+                                  "rolling_wheel_driver"])
+def test_the_table_names_body_2_as_the_scene_drives_it(name, capsys, tmp_path):
+    """Body 2 is what the scene's [input] drives (read here from the file itself): the crank,
+    a driving block, a driving wheel; never "the crank" for a block or a wheel."""
+    import tomllib
+    path = ROOT / "worked_problems" / f"{name}.toml"
+    inp = tomllib.loads(path.read_text())["input"]
+    want = ("the crank" if "crank" in inp else f"the driving block {inp['block']}"
+            if "block" in inp else f"the driving wheel {inp['wheel']}")
+    assert main(["centres", str(path)]) == 0
+    out = capsys.readouterr().out.splitlines()
+    assert f"Links (the ground is 1, {want} 2):" in out
+    body2 = out[out.index(f"Links (the ground is 1, {want} 2):") + 2].split(maxsplit=1)
+    assert body2 == ["2", inp["crank"] if "crank" in inp else f"block {inp['block']}"
+                     if "block" in inp else inp["wheel"]]
+    answers = tmp_path / "a.toml"  # a centre past the bodies: the same numbering named
+    answers.write_text("[answers]\nI_19 = [0, 0]\n")
+    assert main(["check", str(path), str(answers)]) == 2
+    assert f"(ground 1, {want} 2)" in capsys.readouterr().err
+
+
 @pytest.mark.parametrize("name", ["fourbar_image_points", "crank_slotted_lever",
                                   "six_link_second_slider"])
 def test_the_centres_drawing_marks_every_centre(name):

@@ -11,57 +11,21 @@ interpolated here, to 1e-9.
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import mpmath
 import pytest
 
+from engines import ENGINE, _precision, closed_forms, engine  # noqa: F401  (a fixture)
 from polygon_method.common.errors import PolygonMethodError, SceneError
-from polygon_method.scene import parse_scene
+from polygon_method.scene import load_scene, parse_scene
 from polygon_method.motion.solution import solve
 
-ENGINE = """
-title = "engine"
-units = "mm"
-[ground]
-O = [0, 0]
-[links]
-OA = {r}
-AB = {l}
-[sliders]
-B = {{ path = "horizontal", through = "O" }}
-[assembly]
-B = "{side}"
-[input]
-crank = "OA"
-angle = {theta}
-speed = "{rpm} rpm {sense}"
-[masses]
-B = {{ mass = "{m} kg" }}
-"""
-
-
-def engine(theta, *, r=150, l=600, rpm=1800, m=2.5, side="right", sense="ccw", extra=""):
-    return parse_scene(ENGINE.format(r=r, l=l, theta=theta, rpm=rpm, m=m, side=side,
-                                     sense=sense) + extra)
-
-
 def closed(theta_idc, theta, r, l, rpm, m, F_gas, sg=1):
-    """(turning moment in the sense of rotation, thrust in the rod, side thrust) of an
-    in-line engine at ``theta`` (deg from +x), its inner dead centre at ``theta_idc``,
-    turning in the sense ``sg``; ``F_gas`` (N, towards the crank)."""
-    mpmath.mp.dps = 50
-    R, L = mpmath.mpf(r) / 1000, mpmath.mpf(l) / 1000
-    w = 2 * mpmath.pi * rpm / 60
-    t = sg * mpmath.radians(mpmath.mpf(theta) - theta_idc)  # from i.d.c., with the rotation
-
-    def x(tt):  # the piston's distance from O
-        return R * mpmath.cos(tt) + mpmath.sqrt(L ** 2 - (R * mpmath.sin(tt)) ** 2)
-    a_toward = -w ** 2 * mpmath.diff(x, t, 2)
-    F_P = mpmath.mpf(F_gas) - m * a_toward
-    n = L / R
-    phi = mpmath.asin(mpmath.sin(t) / n)
-    T = F_P * R * (mpmath.sin(t) + mpmath.sin(2 * t) / (2 * mpmath.sqrt(n ** 2 - mpmath.sin(t) ** 2)))
-    return float(T), float(abs(F_P / mpmath.cos(phi))), float(abs(F_P * mpmath.tan(phi)))
+    """(turning moment in the sense of rotation, thrust in the rod, side thrust) of
+    :func:`engines.closed_forms`, as floats."""
+    cf = closed_forms(theta_idc, theta, r, l, rpm, m, F_gas, sg)
+    return float(cf["T"]), float(abs(cf["F_Q"])), float(abs(cf["F_N"]))
 
 
 def close(got, want, rel=1e-9):
@@ -368,6 +332,31 @@ def test_the_sweep_writes_the_turning_moment_and_the_summary_the_flywheel():
     assert "mass m = I / k^2" in text
 
 
+def test_the_sweep_of_a_four_stroke_runs_over_its_720_degree_cycle(tmp_path, capsys):
+    """`sweep --steps N --csv` of a four-stroke engine: N angles a turn over its two turns (the
+    indicator table's 0 to 720 deg), the turning moment at each the closed form's under
+    the pressure interpolated here: at 90 deg (suction) and 450 deg (expansion) they
+    differ."""
+    from polygon_method.cli import main
+    ind = (f'[indicator]\nbore = 80\ncycle = "4-stroke"\nunit = "bar"\nangle = {ANGLES}\n'
+           f'pressure = {PRESS}\n')
+    f = tmp_path / "e.toml"
+    f.write_text(ENGINE.format(r=150, l=600, theta=60, rpm=1800, m=2.5, side="right",
+                               sense="ccw") + ind)
+    out = tmp_path / "e.csv"
+    assert main(["sweep", str(f), "--steps", "4", "--csv", str(out)]) == 0
+    capsys.readouterr()
+    rows = [r.split(",") for r in out.read_text().splitlines()]
+    i = rows[0].index("turning_moment [N m]")
+    degs = [float(r[0]) for r in rows[1:]]
+    assert degs == pytest.approx([90.0 * k for k in range(8)], abs=1e-9)
+    area = math.pi / 4 * 0.08 ** 2
+    for d, r in zip(degs, rows[1:]):
+        T, _, _ = closed(0, d, 150, 600, 1800, 2.5, _interp(ANGLES, PRESS, d) * 1e5 * area)
+        assert abs(float(r[i]) - T) <= 1e-9 * max(abs(T), 1.0), (d, float(r[i]), T)
+    assert abs(float(rows[2][i]) - float(rows[6][i])) > 1.0  # 90 and 450 deg
+
+
 def test_the_plot_has_the_turning_moment_diagram_below():
     import numpy as np
     from polygon_method.linkage import turning_moment
@@ -388,6 +377,14 @@ def test_the_plot_has_the_turning_moment_diagram_below():
     plain = parse_scene(ENGINE.format(r=150, l=600, theta=30, rpm=100, m=1, side="right",
                                       sense="ccw"))
     assert len(plot_figure(sweep(plain, np.radians([0.0, 90.0, 180.0]))).axes) == 4
+    # the worked four-stroke at 390 deg (30 deg into its second turn), swept over its cycle:
+    # its instant is marked at 390 deg, where its gas force is, not at 30 deg
+    sc = load_scene(Path(__file__).resolve().parent.parent / "worked_problems" /
+                    "engine_flywheel.toml")
+    fig = plot_figure(sweep(sc, np.radians(np.arange(0.0, 720.0, 10.0))))
+    marks = {float(ln.get_xdata()[0]) for ax in fig.axes[:4] for ln in ax.lines
+             if ln.get_linestyle() != "-" and len(set(ln.get_xdata())) == 1}
+    assert marks == {390.0}, marks
 
 
 # --------------------------------------------------------------------------- Klein
@@ -522,3 +519,25 @@ def test_engine_answer_keys_are_refused_where_the_scene_cannot_give_them():
     with pytest.raises(SceneError) as exc:
         _verdicts(sc, 'dE_max = "2 parsecs"\n')
     assert "dE_max" in str(exc.value)
+
+
+def test_large_values_are_written_as_the_step_table_writes_them():
+    """The rod's alpha of the worked four-stroke engine (about 1.2e4 rad/s^2) in the printed
+    solution: a plain number, no exponent, as `steps` writes it, and the closed form's
+    alpha to its last digit shown (phi = asin(sin t / n), differentiated twice at 50 digits)."""
+    import re
+    from pathlib import Path
+    from polygon_method.scene import load_scene
+    from polygon_method.text.report import solution_text
+    sc = load_scene(Path(__file__).resolve().parent.parent / "worked_problems" /
+                    "engine_flywheel.toml")
+    row = next(line for line in solution_text(solve(sc)).splitlines()
+               if line.startswith("AB "))
+    mpmath.mp.dps = 50
+    R, L, w = mpmath.mpf("0.06"), mpmath.mpf("0.24"), 2 * mpmath.pi * 50
+
+    def phi(t):
+        return mpmath.asin(R * mpmath.sin(t) / L)
+    alpha = float(abs(mpmath.diff(phi, mpmath.radians(390), 2) * w * w))
+    shown = re.search(r"([0-9.e+]+) rad/s\^2", row).group(1)
+    assert "e" not in row and abs(float(shown) - alpha) <= 0.5, (row, alpha)

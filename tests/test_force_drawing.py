@@ -14,6 +14,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from polygon_method import load_scene, solve
@@ -80,6 +81,8 @@ def _magnitude(sol, side):
         return m.mass * math.hypot(*a)
     if side.what == "guide":
         return abs(next(g.normal for g in f.guides if g.point == side.point))
+    if side.what == "contact":  # a rolling contact's force (the teeth's load), either body
+        return next(c.load for c in f.contacts if {c.wheel, c.by} == {side.on, side.by})
     F = f.pin(side.point, side.on, side.by)  # the solved pin force, by the sign rule
     if not side.part:
         return math.hypot(*F)
@@ -270,12 +273,15 @@ def test_draw_forces_on_the_command_line(tmp_path):
     assert r.returncode == 2 and "--forces" in r.stderr and not bad.exists()
 
 
-def test_the_page_draws_each_inertia_force_at_g_over_the_cycle():
+def test_the_page_draws_each_inertia_force_on_its_offset_line_over_the_cycle():
     """The page's inertia forces, frame by frame, against m a_G from the sweep's link ends
-    (G placed on the link by the test), at one round scale that holds the largest."""
+    (G placed on the link by the test), at one round scale that holds the largest; each
+    drawn through H, the point of its line nearest G, where the force's moment about G is
+    the inertia couple -I alpha (alpha from the sweep)."""
     from polygon_method.page.data import INERTIA_CM, page_data
     from polygon_method.page.frames import frames
     from polygon_method.page.html import page_html
+    offsets = 0
     for path in WORKED:
         sc = load_scene(path)
         fr = frames(sc, 24)
@@ -305,11 +311,25 @@ def test_the_page_draws_each_inertia_force_at_g_over_the_cycle():
                 assert F[1] == pytest.approx(-m.mass * a[1], rel=1e-5, abs=1e-6 * m.mass)
                 assert b["G"][2 * k] == pytest.approx(G[0], rel=1e-5, abs=1e-9)
                 largest = max(largest, math.hypot(*F))
+                h = (b["H"][2 * k] - G[0], b["H"][2 * k + 1] - G[1])
+                couple = 0.0 if m.block else -m.inertia * float(np.broadcast_to(
+                    res.Al[m.body], (n,))[k])
+                lk_len = max(lk.length for lk in sc.links)
+                if abs(couple) > 1e-9 * math.hypot(*F) * lk_len and \
+                        abs(couple) < 0.999 * math.hypot(*F) * lk_len:  # the line within reach
+                    offsets += 1
+                    assert h[0] * F[1] - h[1] * F[0] == pytest.approx(couple, rel=1e-4)
+                    assert h[0] * F[0] + h[1] * F[1] == pytest.approx(
+                        0.0, abs=1e-4 * math.hypot(*h) * math.hypot(*F))  # nearest G
+                elif abs(couple) < 1e-12:  # through G (to the page's rounding)
+                    assert math.hypot(*h) < 1e-5 * lk_len
         assert largest / d["perCm"] <= INERTIA_CM + 1e-9
         stated = parse_scale(d["text"])
         assert stated.per_cm == pytest.approx(d["perCm"])
         assert largest / finer(stated).per_cm > INERTIA_CM  # the finest that holds it
-        assert f"inertia forces at G: <b id=\"scale-inertia\">{d['text']}</b>" in page_html(fr)
+        assert ("inertia forces (each on its line h from G): "
+                f"<b id=\"scale-inertia\">{d['text']}</b>") in page_html(fr)
+    assert offsets > 0  # some body's force is off G in some frame
     # no masses: no inertia forces on the page
     plain = frames(load_scene(ROOT / "worked_problems" / "fourbar_image_points.toml"), 12)
     assert page_data(plain)["inertia"] is None
@@ -318,7 +338,7 @@ def test_the_page_draws_each_inertia_force_at_g_over_the_cycle():
 def test_a_plan_the_forces_do_not_cover_is_refused_by_the_sheet_in_one_line():
     from polygon_method.common.errors import PolygonMethodError
     from polygon_method.scene import scene_from_table, scene_table
-    raw = scene_table(load_scene(ROOT / "worked_problems" / "rolling_epicyclic.toml"))
+    raw = scene_table(load_scene(ROOT / "tests" / "textbook" / "class3_triangle_plate.toml"))
     raw["gravity"] = {}
     sol = solve(scene_from_table(raw))
     with pytest.raises(PolygonMethodError, match=r"not solved for forces yet \(step 2"):

@@ -30,6 +30,7 @@ import mpmath
 import numpy as np
 import pytest
 
+from engines import _precision, closed_forms, engine  # noqa: F401  (a fixture)
 from polygon_method.solver.compiler import compile_plan
 from polygon_method.common.errors import PolygonMethodError, SceneError
 from polygon_method.forces import FRAME, owners
@@ -39,14 +40,6 @@ from polygon_method.motion.solution import solve
 ROOT = Path(__file__).resolve().parent.parent
 FILES = sorted(glob.glob(str(ROOT / "worked_problems" / "*.toml"))) + \
     sorted(glob.glob(str(ROOT / "tests" / "textbook" / "*.toml")))
-
-
-@pytest.fixture(autouse=True)
-def _precision():
-    """mpmath's working precision as it was before each test (others rely on theirs)."""
-    dps = mpmath.mp.dps
-    yield
-    mpmath.mp.dps = dps
 
 
 def _covered(scene):
@@ -77,7 +70,7 @@ def with_forces(scene, seed):
                           "distances": {lk.p: d1, lk.q: d2},
                           "turn": "ccw" if mu > 0 else "cw",
                           "gyration": lk.length * rnd.uniform(0.1, 0.6) / unit}
-    for s in scene.sliders:
+    for s in scene.blocks:  # (not a driving wheel's centre: the wheel is its body)
         if isinstance(s, (FixedPath, GuideSlider, YokeSlot)) and s.point not in masses:
             masses[s.point] = {"mass": f"{rnd.uniform(0.5, 8):.4f} kg"}
     raw["masses"] = masses
@@ -133,6 +126,8 @@ def _driver_power(sc, sol, f):
         (vkx, vky), (vrx, vry) = sol.V[cyl.barrel], sol.V[cyl.rod]
         n = np.hypot(rx - kx, ry - ky)
         terms = [f.input_torque * ((vrx - vkx) * (rx - kx) + (vry - vky) * (ry - ky)) / n]
+    elif inp.wheel is not None:  # the torque on the driving wheel
+        terms = [f.input_torque * sol.W[sc.link(inp.wheel).key]]
     elif inp.block is not None:
         u = sc.slider(inp.block).u
         v = sol.V[inp.block]
@@ -154,7 +149,8 @@ def test_the_cases_are_there():
     for c in CASES:
         kinds |= {st.kind for st in compile_plan(load_scene(c.values[0])).steps}
     assert {"crank", "dyad", "slider", "carried", "slotted", "block", "second crank",
-            "cylinder", "yoke", "peg", "wheel centre", "rolling", "triad"} <= kinds \
+            "cylinder", "yoke", "peg", "wheel centre", "rolling", "triad", "rack",
+            "rolling driver"} <= kinds \
         and len(CASES) >= 15
 
 
@@ -207,8 +203,9 @@ def _newton_euler(sol, f):
             couple(f"block {gd.point}", gd.couple)
             if gd.by != FRAME:
                 couple(gd.by, -gd.couple)
-    for c in f.contacts:  # the ground's grip and push on a rolling wheel
+    for c in f.contacts:  # the ground's grip and push on a rolling wheel, the teeth's load
         add(c.wheel, c.force, c.point)
+        add(c.by, (-c.force[0], -c.force[1]), c.point)  # (the gear that pushes, back)
     for body, items in f.applied.items():
         for it in items:
             if len(it) == 3:
@@ -218,6 +215,8 @@ def _newton_euler(sol, f):
     inp = sc.input
     if f.driver == "cylinder":  # the cylinder drives: its force is among the pins
         pass
+    elif inp.wheel is not None:  # the driver's torque on the wheel
+        couple(sc.link(inp.wheel).key, f.input_torque)
     elif inp.block is not None:  # the driver pushes the block along its guide
         u = sc.slider(inp.block).u
         add(f"block {inp.block}", (f.input_torque * u[0], f.input_torque * u[1]),
@@ -301,50 +300,15 @@ def test_shaking_force_and_moment_from_the_whole(path):
     assert abs(f.shaking_moment - m) <= 1e-9 * (mscale + abs(f.input_torque))
 
 
-ENGINE = """
-title = "horizontal engine"
-units = "mm"
-[ground]
-O = [0, 0]
-[links]
-OA = {r}
-AB = {l}
-[sliders]
-B = {{ path = "horizontal", through = "O" }}
-[assembly]
-B = "right"
-[input]
-crank = "OA"
-angle = {theta}
-speed = "{rpm} rpm ccw"
-[masses]
-B = {{ mass = "{m} kg" }}
-[loads]
-B = {{ pressure = "{p} N/mm^2", bore = {bore}, direction = 180 }}
-"""
-
-
 @pytest.mark.parametrize("theta", [30, 60, 100, 135, 200, 300])
 def test_engine_closed_forms(theta):
     r, l, rpm, m, p, bore = 150, 600, 1800, 2.5, 2.0, 100
-    sc = parse_scene(ENGINE.format(r=r, l=l, theta=theta, rpm=rpm, m=m, p=p, bore=bore))
+    sc = engine(theta, r=r, l=l, rpm=rpm, m=m, extra=f'[loads]\nB = {{ pressure = "{p} N/mm^2", '
+                f'bore = {bore}, direction = 180 }}\n')
     f = solve(sc).forces
-    mpmath.mp.dps = 50
-    R, L = mpmath.mpf(r) / 1000, mpmath.mpf(l) / 1000
-    w = 2 * mpmath.pi * rpm / 60
-    th = mpmath.radians(theta)
-
-    def x(t):  # the piston's distance from O (right of O)
-        return R * mpmath.cos(t) + mpmath.sqrt(L ** 2 - (R * mpmath.sin(t)) ** 2)
-    a_toward = -w ** 2 * mpmath.diff(x, th, 2)  # the piston's acceleration towards O
     F_gas = p * 1e6 * mpmath.pi / 4 * (mpmath.mpf(bore) / 1000) ** 2  # towards O
-    F_P = F_gas - m * a_toward  # piston effort, towards O
-    n = L / R
-    phi = mpmath.asin(mpmath.sin(th) / n)
-    F_Q = F_P / mpmath.cos(phi)  # thrust on the rod
-    F_N = F_P * mpmath.tan(phi)  # side thrust on the cylinder walls
-    F_T = F_Q * mpmath.sin(th + phi)  # crank effort
-    T_turn = F_P * R * (mpmath.sin(th) + mpmath.sin(2 * th) / (2 * mpmath.sqrt(n ** 2 - mpmath.sin(th) ** 2)))
+    cf = closed_forms(0, theta, r, l, rpm, m, F_gas)
+    T_turn, F_Q, F_N, F_T = cf["T"], cf["F_Q"], cf["F_N"], cf["F_T"]
 
     def close(got, want):
         assert abs(got - float(want)) <= 1e-9 * abs(float(want)), (got, float(want))
@@ -357,7 +321,7 @@ def test_engine_closed_forms(theta):
     ax, ay = sol.P["A"]
     fa = f.pin("A", "OA")
     close(abs(ax * fa[1] - ay * fa[0]) / math.hypot(ax, ay), abs(F_T))
-    close(abs(F_T) * float(R), abs(T_turn))
+    close(abs(F_T) * r / 1000, abs(T_turn))
 
 
 def _fourbar_U(m_list, th):
@@ -1280,15 +1244,6 @@ def test_a_wheel_rolling_on_the_ground_against_virtual_work():
     assert d["required_friction"] is None and d["normal_force"] == c.normal
 
 
-def test_rolling_on_a_circle_is_refused_saying_why():
-    sc = load_scene(ROOT / "worked_problems" / "rolling_epicyclic.toml")
-    raw = scene_table(sc)
-    raw["gravity"] = {}
-    with pytest.raises(PolygonMethodError, match="the contact's normal force is not "
-                       "determined by statics"):
-        solve(scene_from_table(raw)).forces
-
-
 def test_a_torque_answer_where_a_force_drives_is_one_clear_line(tmp_path, capsys):
     """The tipper driven by its cylinder: its effort is a force, so a 'torque' answer is
     refused in one line (exit 2), not compared with the force read as N m."""
@@ -1319,3 +1274,30 @@ def test_the_steps_write_each_new_group_in_its_units():
     six = with_forces(load_scene(ROOT / "worked_problems" / "class3_six_bar.toml"), 1)
     assert "the plate's three equations together (a 3x3 solve)" in \
         " ".join(steps_text(solve(six)).split())
+
+
+def test_the_guides_moment_relation_is_written_once():
+    """The slider's link, the slotted lever and the link to a rolling wheel each balance a
+    body pinned at one end and pushed across a guide at the other: one relation
+    (``forces.bodies.guided``), checked here by the body's own balance, its forces and its
+    moments about the origin, for random loads."""
+    import inspect
+    from polygon_method.forces import bodies, slider, slotted, wheel
+    for mod in (slider, slotted, wheel):
+        src = inspect.getsource(mod.solve)
+        assert "guided(" in src and "/ den" not in src, mod.__name__
+    rng = random.Random(7)
+    for _ in range(200):
+        q, x = (rng.uniform(-2, 2), rng.uniform(-2, 2)), (rng.uniform(-2, 2), rng.uniform(-2, 2))
+        a = rng.uniform(0, 2 * math.pi)
+        n = (math.cos(a), math.sin(a))
+        known = (rng.uniform(-9, 9), rng.uniform(-9, 9), rng.uniform(-9, 9))
+        r = (rng.uniform(-9, 9), rng.uniform(-9, 9))
+        N, push, fq, den = bodies.guided(*q, known, *x, n, r)
+        assert push == pytest.approx((N * n[0] + r[0], N * n[1] + r[1]), abs=1e-12)
+        fx = known[0] + push[0] + fq[0]
+        fy = known[1] + push[1] + fq[1]
+        m = known[2] + (x[0] * push[1] - x[1] * push[0]) + (q[0] * fq[1] - q[1] * fq[0])
+        size = (abs(N) + 20) * (1 + math.hypot(*x) + math.hypot(*q))
+        assert abs(fx) + abs(fy) + abs(m) <= 1e-12 * size
+    assert bodies.guided(0.0, 0.0, (0.0, 0.0, 1.0), 1.0, 0.0, (1.0, 0.0), (0.0, 0.0))[0] is None

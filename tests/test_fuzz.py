@@ -52,8 +52,7 @@ EXAMPLES = int(os.environ.get("FUZZ_EXAMPLES", "40"))
 FUZZ = settings(max_examples=EXAMPLES, deadline=None, derandomize=not _LONG,
                 phases=[Phase.explicit, Phase.reuse, Phase.generate, Phase.shrink],
                 database=None if not _LONG else settings.default.database,
-                suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large,
-                                       HealthCheck.filter_too_much])
+                suppress_health_check=[HealthCheck.too_slow])
 
 ROOT = Path(__file__).resolve().parent.parent
 _WORK = Path(tempfile.mkdtemp(prefix="pm-fuzz-"))

@@ -96,6 +96,27 @@ def test_frames_stay_between_the_limit_positions():
     assert step[0] < 0  # the crank turns clockwise: the frames follow it
 
 
+
+def test_a_four_stroke_engine_is_animated_over_its_720_degree_cycle(tmp_path, capsys):
+    # the indicator table of the worked engine runs 0 to 720 deg (cycle = "4-stroke"): its
+    # gas force at 30 deg (the suction stroke, -0.1 bar) and at 390 deg (the expansion
+    # stroke, 32 bar) differ, so one turn of frames would show half the cycle
+    path = ROOT / "worked_problems" / "engine_flywheel.toml"
+    scene = pm.load_scene(str(path))
+    assert math.isclose(math.degrees(scene.indicator.x[-1]), 720)
+    fr = frames(scene, 8)
+    step = np.diff(fr.res.theta)
+    assert fr.full_turn and np.allclose(step, math.radians(90)) and fr.start == 0
+    assert sorted(np.round(fr.degrees % 720, 9)) == [30 + 90 * k for k in range(8)]
+    assert page_data(fr)["cycle"] == 720
+    assert main(["page", str(path), "--frames", "8", "-o", str(tmp_path / "e.html")]) == 0
+    html = (tmp_path / "e.html").read_text()
+    assert "2 turns of the crank (720°)" in html
+    assert re.search(r"stated instant is θ =\s*390°", html)  # 390 deg, not 30
+    assert "(720 deg)" in capsys.readouterr().out
+    svg = animation(fr, "svg")  # the angles shown run round the cycle, not a turn
+    assert "crank angles (deg): 390.0;480.0;570.0;660.0;30.0;120.0;210.0;300.0" in svg
+
 def test_page_data_is_the_frames_rounded_to_six_figures():
     scene = pm.load_scene(SEED)
     fr = frames(scene, 60)

@@ -362,12 +362,12 @@ speed = "10 rad/s ccw"
 
 
 def _planet_slider_range():
-    """The slider Q of the planet on a fixed sun (tests/textbook), by hand over the turn of
-    the arm centred on the scene's instant: A = 100 (cos t, sin t) mm, the spoke AP = 30
-    at phi = 90 deg + (1 + 60/40)(t - 30 deg) (no slip on the sun), Q on the x axis
+    """The slider Q of the planet on a fixed sun (tests/textbook), by hand over the two
+    turns of the arm centred on the scene's instant: A = 100 (cos t, sin t) mm, the spoke
+    AP = 30 at phi = 90 deg + (1 + 60/40)(t - 30 deg) (no slip on the sun), Q on the x axis
     150 from P (to the right). Its least and largest place: the interior stationary points
-    (mpmath, 30 digits) and the turn's two ends. The planet turns 2.5 times a turn: the
-    motion repeats only every 2 turns."""
+    (mpmath, 30 digits) and the two ends. The planet turns 2.5 times a turn: the motion
+    repeats only every 2 turns, its whole period."""
     with mpmath.workdps(30):  # (the 50-digit reference's precision left as it is)
         return _planet_range_at_working_precision()
 
@@ -380,9 +380,9 @@ def _planet_range_at_working_precision():
         phi = mpmath.pi / 2 + mpmath.mpf(5) / 2 * (t - t0)
         px, py = ax + 30 * mpmath.cos(phi), ay + 30 * mpmath.sin(phi)
         return (px + mpmath.sqrt(150 ** 2 - py ** 2)) / 1000
-    lo, hi = t0 - mpmath.pi, t0 + mpmath.pi
-    vals = [q(lo), q(hi)]  # the turn's two ends (not the same place: the seam)
-    n = 720
+    lo, hi = t0 - 2 * mpmath.pi, t0 + 2 * mpmath.pi
+    vals = [q(lo), q(hi)]  # the period's two ends (the same place)
+    n = 1440
     grid = [lo + (hi - lo) * k / n for k in range(n + 1)]
     for a, b, c in zip(grid, grid[1:], grid[2:]):
         qa, qb, qc = q(a), q(b), q(c)
@@ -394,10 +394,11 @@ def _planet_range_at_working_precision():
 
 def test_sweep_and_linkage_agree_on_a_planets_slider_range():
     """A planet on a fixed sun turns 2.5 times per turn of its arm: after a turn of the
-    crank the mechanism is not where it started. The sweep took its angles on one turn
-    (0 to 360 deg) and linkage on another (centred on the scene's instant), and their
-    slider strokes disagreed; both now take the turn centred on the scene's instant, say
-    so, and agree with the range by hand over it."""
+    crank the mechanism is not where it started, after two it is. The sweep took its
+    angles on one turn (0 to 360 deg) and linkage on another (centred on the scene's
+    instant), and their slider strokes disagreed; both now take the whole period, the two
+    turns centred on the scene's instant, say so, and agree with the range by hand over
+    it."""
     from polygon_method.linkage import analyse
     from polygon_method.linkage.summary import summarize
     scene = load_scene(HERE / "textbook" / "rolling_planet_fixed_sun.toml")
@@ -407,5 +408,21 @@ def test_sweep_and_linkage_agree_on_a_planets_slider_range():
     for got_lo, got_hi in ((lk.output_min, lk.output_max), (s.minimum, s.maximum)):
         assert math.isclose(got_lo, lo, rel_tol=1e-9), (got_lo, lo)
         assert math.isclose(got_hi, hi, rel_tol=1e-9), (got_hi, hi)
-    words = "the motion repeats only every 2 turns"
+    words = "the motion repeats every 2 turns"
     assert words in lk.text() and words in summarize(scene).text()
+    assert summarize(scene).requested == 720  # every degree of the two turns
+
+
+def test_default_space_scale_fits_the_pitch_circles():
+    """A planet (radius 50) on an arm of 150 about a fixed sun (radius 100): the sun's and
+    the planet's pitch circles span x from -100 to 200 (300 mm), wider than the joints
+    (O to C, 150 mm). The configuration's default scale fits that span in 15 cm, so the
+    drawing fits A4 without --scale (it was chosen for the joints alone: 1 cm = 10 mm,
+    30 cm of sun)."""
+    from polygon_method.polygons.scales import SPACE_FIT_CM, diagram_scales
+    sol = solve(parse_scene(PLANET.format(arm=150, rp=50, inside="", w=10, al=0)
+                            .replace("angle = 35", "angle = 0")))
+    space = diagram_scales(sol)[0]
+    span_mm = 300.0  # by hand: the sun's left edge (-100) to the planet's right (150 + 50)
+    assert span_mm / (space.per_cm * 1000.0) <= SPACE_FIT_CM
+    assert span_mm / 10.0 > SPACE_FIT_CM  # the joints' scale (1 cm = 10 mm) would not fit

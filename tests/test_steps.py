@@ -267,7 +267,30 @@ def test_each_construction_states_where_its_lines_cross():
 TEXTBOOK = sorted((ROOT / "tests" / "textbook").glob("*.toml"))
 
 
-@pytest.mark.parametrize("path", WORKED + TEXTBOOK, ids=lambda p: p.stem)
+def _gears_only(path):
+    """A train of gears (or a planet on an arm) driven by cranks only: each gear's velocity
+    follows from no slip at its pitch point (omega by the ratio, v = omega x radius), so no
+    direction line is drawn. A wheel on a line is found from a link pinned to it: lines."""
+    from polygon_method.solver.compiler import compile_plan
+    return all(st.kind in ("crank", "second crank")
+               or (st.kind == "rolling" and st.on in ("gear", "circle"))
+               for st in compile_plan(load_scene(path)).steps)
+
+
+GEARS_ONLY = [p for p in WORKED + TEXTBOOK if _gears_only(p)]
+
+
+@pytest.mark.parametrize("path", GEARS_ONLY, ids=lambda p: p.stem)
+def test_a_train_of_gears_draws_no_direction_line(path):
+    from polygon_method.polygons.constructions import (acceleration_constructions,
+                                                       velocity_constructions)
+    sol = solve(load_scene(path))
+    assert not [ln for cons in (velocity_constructions(sol), acceleration_constructions(sol))
+                for c in cons for ln in c.lines]
+
+
+@pytest.mark.parametrize("path", [p for p in WORKED + TEXTBOOK if p not in GEARS_ONLY],
+                         ids=lambda p: p.stem)
 def test_every_construction_line_carries_its_mark_and_runs_as_it_says(path):
     """Each direction line of every construction states the mark the drawing writes beside
     it (a structured field: the drawing reads no sentence). Where the mark names a link of

@@ -145,7 +145,9 @@ def test_corpus_covers_the_format():
     assert any(ld.torque is not None for sc in scenes for ld in sc.loads)
     assert any(ld.force is not None for sc in scenes for ld in sc.loads)
     driven = [sc for sc in scenes if sc.input.block is not None]  # a block as the driver,
-    guides = {sc.slider(sc.input.block).label for sc in driven}  # on guides of every kind
+    guides = {getattr(sc.slider(sc.input.block), "label", "a turning rod")  # on guides of
+              for sc in driven}  # every kind, and a collar on a turning rod
+    assert "a turning rod" in guides
     assert {"horizontal", "vertical"} < guides and any(sc.loads for sc in driven)
 
 
@@ -274,14 +276,14 @@ TURNED = [pytest.param(f, a, id=f"{f.stem}-{a}") for f, a in _GOOD]
 def test_turned_where_refused_the_refusal_is_one_line_naming_the_step_and_it_is_true(
         path, angle, exc):
     """Where a scene turned to 0/90/180/270 deg is refused, the refusal is one line naming
-    the step or the [assembly] key, says why in numbers written without rounding noise,
+    the step, the [assembly] key or the given motion's [input] key, says why in numbers written without rounding noise,
     and is an assembly or singularity refusal (never another fault)."""
     import re
 
     from polygon_method.common.errors import AssemblyError, SingularStepError
     msg = str(exc)
     assert isinstance(exc, (AssemblyError, SingularStepError)), msg
-    assert "\n" not in msg and re.search(r"step \d+ \(|\[assembly\] |\[input\] \w+ ", msg), msg
+    assert "\n" not in msg and re.search(r"step \d+ \(|\[assembly\] |\[input\] ", msg), msg
     assert not re.search(r"\de-1\d", msg), msg  # no 1.2e-14 for a zero
 
 

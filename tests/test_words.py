@@ -67,6 +67,11 @@ def test_every_datum_is_stated(path):
         alpha = abs(inp.alpha) / r  # |a_C| = |alpha| r
         assert (f"and {fmt(alpha)} rad/s²" in text) == bool(inp.alpha)
         assert f"its centre {inp.block} is {g(abs(inp.angle) / u)} {sc.units} along" in text
+    elif not hasattr(sc.slider(inp.block), "through"):  # a collar driven along its rod
+        assert f"The collar {inp.block} slides along the rod" in text
+        assert f"collar is {g(abs(inp.angle) / u)} {sc.units} from" in text
+        assert f"sliding at {abs(inp.omega):.10g} m/s" in text
+        assert (f"an acceleration of {abs(inp.alpha):.10g} m/s²" in text) == bool(inp.alpha)
     else:  # a driving block: its place along its guide, its speed and acceleration
         assert f"The block {inp.block} drives the mechanism" in text
         assert f"it is {g(abs(inp.angle) / u)} {sc.units} from" in text

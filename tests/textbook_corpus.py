@@ -110,8 +110,9 @@ def other_position(scene, P, X):
     """The other assembly of X: the mirror image in the line of the two centres of its
     dyad; for a slider, in the normal to its path through the link's other end; for the
     free end of a slotted link, through the link's pivot. None for the crank's tip."""
-    if X == scene.input.tip or X == scene.input.block:
-        return None  # the crank's tip, a driving block: one position (given)
+    two = scene.input.second
+    if X == scene.input.tip or X == scene.input.block or (two is not None and X == two.tip):
+        return None  # the crank's tip, a driving block, a second input: one position
     if len(scene.slots(X)) == 2:
         return None  # a peg in two slots: where they cross, one position
     if any(r.rim == X for r in scene.rolling):

@@ -55,8 +55,10 @@ from .verdicts import _NOISE_KIND, ROUNDING, UNIT_OF, Verdict, verdicts_dict, ve
 #: answers that are magnitudes (a negative one is a mistake of its own)
 _MAGNITUDES = {"v": "a speed", "a": "an acceleration's size", "ac": "a Coriolis component's "
                "size", "rub": "a rubbing velocity", "F": "a pin force's size",
-               "N": "a guide's normal force's size", "vu": "a speed",
-               "au": "an acceleration's size"}
+               "N": "a guide's normal force's size", "Fc": "a contact force's size",
+               "vu": "a speed",
+               "au": "an acceleration's size", "Fi": "an inertia force's size",
+               "h": "an offset"}
 
 def _noise_of(sol: Solution, kind, names) -> tuple:
     """(kind, name) of :meth:`Solution.noise` for an answer: its own error bound."""
@@ -129,7 +131,7 @@ def check_answers(sol: Solution, answers=None, tolerance: float | None = None,
         elif kind in _NOISE_KIND:  # noise within its bound is a zero (a translating
             exact = sol.shown(exact, *_noise_of(sol, kind, ans.names))  # coupler's omega)
         signed = ans.sense is not None or ans.value < 0
-        if kind in ("v", "a", "ac", "rub", "F", "N", "vu", "au"):
+        if kind in ("v", "a", "ac", "rub", "F", "N", "Fc", "vu", "au", "Fi", "h"):
             signed = False
         given = ans.value if signed else abs(ans.value)
         correct = exact if signed else abs(exact)

@@ -39,7 +39,8 @@ def centre_verdict(sol, ans, tolerance, cache: list) -> Verdict:
             raise SceneError(f"{ans.key}: both name the same body", key=f"[answers] {ans.key}",
                              line=ans.line)
     if j > ic.n:
-        raise SceneError(f"there are {ic.n} links (ground 1, crank 2): no centre I{i}{j}",
+        raise SceneError(f"there are {ic.n} links (ground 1, {sol.plan.steps[0].driver_name} "
+                         f"2): no centre I{i}{j}",
                          key=f"[answers] {ans.key}", line=ans.line)
     c = ic.centre(i, j)
     u, un = sc.length_unit, sc.units
@@ -73,7 +74,8 @@ def centre_verdict(sol, ans, tolerance, cache: list) -> Verdict:
                     math.hypot(gx - other.point[0], gy - other.point[1]) <= tol:
                 mistake = "another_centre"
                 diagnosis = (f"that is {other.label}, the centre of links {other.i} and "
-                             f"{other.j} (the links numbered otherwise: ground 1, crank 2, "
+                             f"{other.j} (the links numbered otherwise: ground 1, "
+                             f"{sol.plan.steps[0].driver_name} 2, "
                              f"then {', '.join(ic.bodies[2:])})")
                 break
     return Verdict(ans.key, ans.raw, math.hypot(gx - pivot[0], gy - pivot[1]),

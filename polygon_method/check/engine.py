@@ -24,7 +24,14 @@ ENGINE_KEYS = {"piston_effort": ("force", "N", "the piston effort"),
                "T_mean": ("torque", "N m", "the mean turning moment"),
                "dE_max": ("energy", "J", "the maximum fluctuation of energy"),
                "I_flywheel": ("moment_of_inertia", "kg m^2", "the flywheel's moment of inertia"),
-               "m_flywheel": ("mass", "kg", "the flywheel's mass")}
+               "m_flywheel": ("mass", "kg", "the flywheel's mass"),
+               "rod_thrust": ("force", "N", "the thrust in the connecting rod"),
+               "side_thrust": ("force", "N", "the side thrust on the cylinder walls"),
+               "shaking_force": ("force", "N", "the shaking force on the frame"),
+               "shaking_moment": ("torque", "N m", "the shaking moment about the frame's origin")}
+#: the keys read from the force analysis at the instant (the rest from the cycle)
+_INSTANT = ("piston_effort", "crank_effort", "rod_thrust", "side_thrust", "shaking_force",
+            "shaking_moment")
 
 
 def _refuse(sol, ans, why):
@@ -35,12 +42,19 @@ def _value(sol, key, scene=None):
     """The exact value of ``key`` for ``scene`` (default the solution's), or None where the
     scene cannot give it."""
     sc = scene or sol.scene
-    if key in ("piston_effort", "crank_effort"):
+    if key in _INSTANT:
         s = sol if scene is None else solve(sc)
-        e = efforts(sc, s.plan, s.P, s.forces) if sc.has_forces else None
+        if not sc.has_forces:
+            return None
+        if key == "shaking_force":
+            return math.hypot(*s.forces.shaking_force)
+        if key == "shaking_moment":
+            return s.forces.shaking_moment
+        e = efforts(sc, s.plan, s.P, s.forces)
         if e is None:
             return None
-        return abs(e.F_P if key == "piston_effort" else e.F_T)
+        return abs({"piston_effort": e.F_P, "crank_effort": e.F_T, "rod_thrust": e.F_Q,
+                    "side_thrust": e.F_N}[key])
     tm = turning_moment(sc)
     if key == "T_mean":  # a mean within rounding of nought (1e-9 of the greatest) is nought
         return tm.mean if abs(tm.mean) > 1e-9 * max(abs(tm.T_max), abs(tm.T_min)) else 0.0
@@ -60,6 +74,8 @@ def _slips(sol, key, correct):
         try:
             if key in ("piston_effort", "crank_effort"):
                 v = _gas_alone(sol, key)
+            elif key in ("rod_thrust", "side_thrust"):
+                v = None  # (the closed forms give these from the piston effort alone)
             else:
                 v = _value(sol, key, replace(sc, masses=tuple(m for m in sc.masses
                                                               if not m.block)))
@@ -114,9 +130,10 @@ def _gas_alone(sol, key):
 def engine_verdict(sol, ans, tolerance) -> Verdict:
     """The :class:`Verdict` on one of the engine chapter's answers."""
     key = ans.key
-    if key in ("piston_effort", "crank_effort") and not sol.scene.has_forces:
-        _refuse(sol, ans, "the engine's efforts need the force analysis: give [masses] (the "
-                          "reciprocating parts) or [indicator]")
+    if key in _INSTANT and not sol.scene.has_forces:
+        _refuse(sol, ans, ("the engine's efforts" if "thrust" in key or "effort" in key else
+                           "the shaking force and moment") + " need the force analysis: give "
+                "[masses] (the reciprocating parts), [gravity] or [indicator]")
     try:
         correct = _value(sol, key)
     except PolygonMethodError as exc:
@@ -128,6 +145,8 @@ def engine_verdict(sol, ans, tolerance) -> Verdict:
                  if key == "m_flywheel" else "the scene is no engine (a gas force on a slider "
                  "crank's piston)"))
     unit = ENGINE_KEYS[key][1]
+    if key != "T_mean":  # sizes (a shaking moment's sense is not asked)
+        correct = abs(correct)
     signed = key == "T_mean" and ans.value < 0
     given = ans.value if key == "T_mean" else abs(ans.value)
     rel = getattr(tolerance, "relative", tolerance)
@@ -135,7 +154,7 @@ def engine_verdict(sol, ans, tolerance) -> Verdict:
         "three significant figures (a computed answer)"
     rel = rel if rel is not None else ROUNDING
     tol = rel * abs(correct)
-    if correct == 0.0:  # a mean of nought: to the tolerance of the greatest turning moment
+    if correct == 0.0 and key == "T_mean":  # a mean of nought: to the tolerance of the greatest turning moment
         tm = turning_moment(sol.scene)
         tol = rel * max(abs(tm.T_max), abs(tm.T_min))
     err = abs(given - correct)

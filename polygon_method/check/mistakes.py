@@ -10,6 +10,7 @@ from dataclasses import replace
 from ..common.errors import PolygonMethodError
 from ..forces import analyse, force_value
 from ..scene import GuideSlider, Gravity
+from ..scene.force_records import rolling_body
 from ..motion.solution import Solution, solve
 from ..steps import under_label
 from ..common.numbers import textbook as _g
@@ -102,7 +103,7 @@ class _Diagnoser:
                     out.append(_Candidate(val(alt), code, words))
         elif not sc.has_forces:
             out += self.torque(signed)
-        if kind in ("F", "N") or (kind == "torque" and sc.has_forces):
+        if kind in ("F", "N", "Fc", "Fi", "Ci", "h") or (kind == "torque" and sc.has_forces):
             out += self.force_slips(kind, names, signed)
         for factor, code, words in _FACTOR_MISTAKES.get(_AS_KIND.get(kind, kind), ()) + \
                 self.unit_slips(kind):
@@ -119,6 +120,8 @@ class _Diagnoser:
             out += self.contact_at_rest(ans)
         if kind in ("a", "as"):
             out += self.coriolis_left_out(kind, names[0])
+        if kind in ("a", "alpha"):
+            out += self.step_coriolis_left_out(kind, names, signed)
         if kind == "vs":
             X = sc.slider(names[0]).point  # a peg's slot: vs_P_OA is of the peg P
             out.append(_Candidate(sol.speed(X), "absolute_for_relative",
@@ -262,6 +265,21 @@ class _Diagnoser:
         return [_Candidate(v, code, text) for v, code, text in
                 coriolis_left_out(self.sol, kind, name)]
 
+    def step_coriolis_left_out(self, kind, names, signed):
+        """A step's Coriolis component left out of the acceleration polygon (a collar driven
+        along its turning rod): what each step says the polygon then gives."""
+        sol, out = self.sol, []
+        key = (kind, next((lk.key for lk in self.sc.links if set(lk.points) == set(names)),
+                          None) if kind == "alpha" else names[0])
+        for st in sol.plan.steps:
+            wrong = getattr(st, "coriolis_left_out", lambda sol: {})(sol).get(key)
+            right = sol.value(kind, names)
+            if wrong is not None and abs(abs(wrong) - abs(right)) > 1e-9 * abs(right):
+                out.append(_Candidate(self.cmp(wrong, signed) if kind == "alpha" else wrong,
+                                      "coriolis_omitted", "the Coriolis component 2 omega v "
+                                      f"of {st.title} left out of the acceleration polygon"))
+        return out
+
     def rubbing(self, X):
         return power.rubbing(self, X)
 
@@ -272,12 +290,14 @@ class _Diagnoser:
         """The force chapter's classic slips, each solved again as the slip would have it:
         the power balance without inertia, the piston's inertia left out, the weights added
         where the problem leaves them out, the inertia couple left out, the offset h on the
-        wrong side of G (the couple's sense reversed)."""
+        wrong side of G (the couple's sense reversed); a tooth load given as its part along
+        the tangent (the pressure angle left out)."""
         sol, sc = self.sol, self.sc
         out = []
 
         def pick(f):
-            return f.input_torque if kind == "torque" else force_value(f, kind, names[0])
+            return f.input_torque if kind == "torque" else \
+                force_value(f, kind, rolling_body(sc, names) if kind == "Fc" else names[0])
 
         def again(words, code, **changes):
             try:
@@ -290,6 +310,15 @@ class _Diagnoser:
             out.append(_Candidate(self.cmp(sol.input_torque, signed), "no_inertia",
                                   "the power balance without the inertia forces (T = -sum F . v "
                                   "/ omega leaves out -m a_G . v_G and -I alpha omega)"))
+        if kind == "Fc":  # the tooth load's part along the tangent given for the whole
+            body = rolling_body(sc, names)
+            c = next((c for c in sol.forces.contacts if c.wheel == body), None)
+            if c is not None and c.teeth is not None and c.teeth > 0:
+                out.append(_Candidate(self.cmp(abs(c.tangential), signed),
+                                      "pressure_angle_left_out",
+                                      "the tooth load's part along the common tangent given "
+                                      "for the whole load: the pressure angle left out (the "
+                                      "load acts along the line of action, |T| / cos phi)"))
         blocks = [m.body for m in sc.masses if m.block]
         if blocks:
             again(f"the inertia of the reciprocating parts at {', '.join(blocks)} left out",
@@ -328,6 +357,13 @@ class _Diagnoser:
              "no slip makes its velocity zero, not its acceleration (omega^2 r towards the "
              "centre)")
         if ans.kind == "aI":
+            wheel = sol.scene.link("-".join(ans.names)).key
+            st = next((s for s in sol.plan.steps if wheel in s.links), None)
+            got = st.contact_motion(sol) if st is not None else None
+            if got is not None and math.hypot(*got[1]) > 0.0:  # a moving gear: v_I not zero
+                c = (c[0], "the contact point's acceleration taken as zero: no slip makes "
+                     "the two gears' velocities equal at the pitch point, not their "
+                     "accelerations (each has its own centripetal component)")
             return [_Candidate(0.0, *c)]
         out = []
         for st in sol.plan.steps if len(ans.names) == 1 else ():

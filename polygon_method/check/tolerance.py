@@ -145,7 +145,8 @@ class _Tolerances:
         sol, d = self.sol, self.d
         sv, sa = self.sv.per_cm, self.sa.per_cm
         vt, at = f"velocity diagram at {self.sv.text}", f"acceleration diagram at {self.sa.text}"
-        if kind in ("F", "N") or (kind == "torque" and sol.scene.has_forces):
+        if kind in ("F", "N", "Fc", "Fi", "Ci", "h") or (kind == "torque" and
+                                                          sol.scene.has_forces):
             return 0.0, "computed (the force analysis)"
         if kind in ("v", "a"):
             if len(names) == 1 and names[0] == self.input_point and \

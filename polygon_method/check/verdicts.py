@@ -16,8 +16,8 @@ _SIN30 = 0.5
 
 UNIT_OF = {"v": "m/s", "a": "m/s^2", "omega": "rad/s", "alpha": "rad/s^2", "vs": "m/s",
            "as": "m/s^2", "ac": "m/s^2", "rub": "m/s", "torque": "N m",
-           "vI": "m/s", "aI": "m/s^2", "F": "N", "N": "N", "vu": "m/s", "au": "m/s^2"}
-_ANGULAR = ("omega", "alpha", "torque")
+           "vI": "m/s", "aI": "m/s^2", "F": "N", "N": "N", "Fc": "N", "vu": "m/s", "au": "m/s^2",
+           "Fi": "N", "Ci": "N m", "h": "m"}
 
 
 #: answer kind -> the kind of quantity whose largest value sets what is rounding noise
@@ -79,7 +79,8 @@ class Verdict:
 
 #: the SI unit of an answer -> the kind of quantity (units.UNITS) it is given in
 _KIND_OF_UNIT = {"m/s": "velocity", "m/s^2": "acceleration", "rad/s": "angular_velocity",
-                 "rad/s^2": "angular_acceleration", "N m": "torque", "N": "force"}
+                 "rad/s^2": "angular_acceleration", "N m": "torque", "N": "force",
+                 "m": "length"}
 
 
 def _given_unit(v: Verdict):

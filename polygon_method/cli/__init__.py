@@ -136,7 +136,9 @@ def _add_sweep(sub) -> None:
     its points and links, --summary."""
     s = sub.add_parser("sweep", help="the whole crank cycle")
     s.add_argument("scene")
-    s.add_argument("--steps", type=int, help="N crank angles over a turn (default 360)")
+    s.add_argument("--steps", type=int, help="N crank angles a turn, over the motion's "
+                   "period: a turn, two for a four-stroke engine, several where a wheel comes "
+                   "back only after several (default 360)")
     s.add_argument("--from", dest="start", type=float, help="first crank angle (deg)")
     s.add_argument("--to", dest="stop", type=float, help="last crank angle (deg)")
     s.add_argument("--step", type=float, help="crank angle step (deg)")

@@ -211,7 +211,10 @@ def _cmd_page(args) -> int:
         print(f"warning: {w}", file=sys.stderr)
     write_outputs(targets, [(html, False)])
     from ..polygons.scales import display_unit
-    cycle = "over a full turn" if fr.full_turn else \
+    turns = fr.res.domain.turns  # a gear train's period, or an engine's cycle
+    cycle = ("over a full turn" if fr.cycle_degrees == 360 else
+             f"over {turns} turns (the motion's period)" if turns > 1 else
+             f"over the whole cycle ({fr.cycle_degrees:g} deg)") if fr.full_turn else \
         f"over {fr.sol.plan.steps[0].travel} ({fr.limits_text})" \
         if not fr.sol.plan.steps[0].periodic else \
         f"between the limit positions ({fr.limits_text})"
@@ -254,9 +257,10 @@ def _cmd_animate(args, out, fmt) -> int:
 
 
 def _requested_angles(args, scene=None):
-    """Crank angles (rad) from ``--steps N`` or ``--from A --to B --step S`` (deg); for a
-    block driver, its places (m) from ``--steps N`` (over its travel, both ends) or
-    ``--from A --to B --step S`` (the scene's length unit)."""
+    """Crank angles (rad) from ``--steps N`` (over the scene's cycle: a turn, two for a
+    four-stroke engine) or ``--from A --to B --step S`` (deg); for a block driver, its
+    places (m) from ``--steps N`` (over its travel, both ends) or ``--from A --to B --step
+    S`` (the scene's length unit)."""
     import numpy as np
     ranged = any(v is not None for v in (args.start, args.stop, args.step))
     if args.steps is not None and ranged:
@@ -283,7 +287,19 @@ def _requested_angles(args, scene=None):
         raise SceneError(f"--steps must be at least 1, got {n}")
     if n > 100_000_000:
         raise SceneError(f"--steps {n} is too many (at most 10^8)")
-    return np.linspace(0.0, 2.0 * math.pi, n, endpoint=False)
+    turns = _period_turns(scene) if scene is not None else 1  # N a turn, over the period
+    return np.linspace(0.0, 2.0 * math.pi * turns, n * turns, endpoint=False)
+
+
+def _period_turns(scene) -> int:
+    """How many turns of the crank the motion takes to repeat: a four-stroke engine's gas
+    force two, a wheel turning a fraction of a turn more per turn of the crank several;
+    else 1."""
+    turns = max(1, round(scene.cycle / (2.0 * math.pi)))
+    if getattr(scene, "rolling", ()):
+        from ..solver.tracking import Sweeper
+        turns = max(turns, Sweeper(scene).domain.turns)
+    return turns
 
 
 def _requested_places(args, scene, ranged):

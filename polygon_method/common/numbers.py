@@ -100,9 +100,14 @@ sense_word = sense
 
 
 def fmt_angular(value: float, unit: str, digits: int = 4) -> str:
-    """``5.150 rad/s ccw``: magnitude, unit and sense."""
+    """``5.15 rad/s ccw``: magnitude (written as :func:`fmt` writes it, as the step table
+    does: no exponent for usual sizes), unit and sense.
+
+    >>> fmt_angular(11842.41, "rad/s^2"), fmt_angular(2.5e-5, "rad/s")
+    ('11842 rad/s^2 ccw', '0.000025 rad/s ccw')
+    """
     s = sense(value)
-    return f"{abs(value):.{digits}g} {unit}" + (f" {s}" if s else "")
+    return f"{fmt(abs(value), digits)} {unit}" + (f" {s}" if s else "")
 
 
 def in_units(x: float, unit_len: float) -> str:

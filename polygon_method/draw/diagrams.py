@@ -70,7 +70,9 @@ def _drive(sol) -> str:
                 else f"{fmt_angular(inp.omega, 'rad/s')} (from {stated(inp)})"))
     if inp.alpha:
         drive += f", {fmt_angular(inp.alpha, 'rad/s²')}"
-    if inp.second is not None:
+    if inp.second is not None and inp.second.block is not None:  # a collar on the crank
+        drive += f"; {sol.plan.steps[1].second_words(sol.scene)}"
+    elif inp.second is not None:
         two = inp.second
         drive += f"; {two.crank} at {deg(two.angle)}, {two.speed_text}"
     return drive
@@ -158,9 +160,7 @@ def _mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
             sk.polygon(list(body.exterior.coords), gid=f"yoke-{sl.yoke}", face=BODY_FACE,
                        edge=BODY_EDGE, lw=0.8, z=2, obstacle="edge")
     # blocks
-    for sl in sc.sliders:
-        if getattr(sl, "wheel", ""):  # a driving wheel's centre: no block there
-            continue
+    for sl in sc.blocks:  # (a driving wheel's centre: no block there)
         X = P[sl.point]
         if isinstance(sl, FixedPath):
             u = sl.u

@@ -136,6 +136,7 @@ def _free_body(sol, fb, scale: Scale, tiny, tag, note=()) -> _Sketch:
             lk = sc.link(fb.body)
             names = [lk.p, lk.q] + [cp.name for cp in sc.points if cp.link == lk.key]
         pts = {n: cm(sol.P[n]) for n in names}
+        pts.update({sd.point: cm(sd.at) for sd in fb.sides if sd.what == "contact"})
         body = MultiPoint(list(pts.values())).convex_hull.buffer(BAR / 2, quad_segs=8)
         sk.polygon(list(body.exterior.coords), gid=f"{tag}-body", face=BODY_FACE,
                    edge=BODY_EDGE, lw=0.8, z=2, obstacle="edge")
@@ -197,7 +198,8 @@ def _free_body(sol, fb, scale: Scale, tiny, tag, note=()) -> _Sketch:
     lines = _wrap(words) + list(note) + ["the arrows give each force's line and sense; "
                                          "its size is the polygon's"]
     if fb.body == sc.input.crank or any(c.what == "torque" for c in fb.couples):
-        lines.append("T: the driver's torque on the crank (ccw +)")
+        lines.append("T: the driver's torque on the "
+                     + ("wheel" if f.driver == "wheel" else "crank") + " (ccw +)")
     _header(sk, tag, f"Free body of {_what(fb.body, numbers, sc)}", scale, lines=lines)
     return sk
 

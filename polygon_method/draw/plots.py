@@ -3,7 +3,6 @@ against the crank angle, the scene's own instant marked (matplotlib, imported la
 
 from __future__ import annotations
 
-import io
 import math
 import textwrap
 
@@ -88,9 +87,16 @@ def _axis(res: SweepResult) -> tuple:
         t0 = math.degrees(float(dom.map(np.array([sc.input.angle]))[0][0])) + shift
     order = np.argsort(deg, kind="stable") if np.any(np.diff(deg) < 0) else slice(None)
     x = deg[order]
-    if dom.full_turn and len(x):  # the scene's angle, shown in the plotted range
-        k = math.floor((x.min() - t0) / 360.0 + 1.0)
-        t0 = t0 + 360.0 * k if t0 + 360.0 * k <= x.max() + 1e-9 else t0 + 360.0 * (k - 1)
+    if dom.full_turn and len(x):  # the scene's angle, shown in the plotted range: within
+        # the motion's period where the range holds it (a four-stroke's 390 deg is not 30;
+        # a planet back after several turns), else within a turn
+        period = max(math.degrees(sc.cycle), 360.0 * dom.turns)
+        for per in dict.fromkeys((period, 360.0)):
+            k = math.floor((x.min() - t0) / per + 1.0)
+            at = t0 + per * k if t0 + per * k <= x.max() + 1e-9 else t0 + per * (k - 1)
+            if x.min() - 1e-9 <= at <= x.max() + 1e-9:
+                break
+        t0 = at
     gaps = np.nonzero(np.diff(x) > 1.5 * np.median(np.diff(x)))[0] + 1 if len(x) > 2 else []
     x = np.insert(x, gaps, np.nan)  # no line across angles left out
     show = degrees_fn(dom) if dom.full_turn or not dom.periodic else (
@@ -277,11 +283,11 @@ def _turning_moment_panel(ax, scene, tm, x, T):
 
 def plot_bytes(res: SweepResult, path: str, *, points=None, links=None) -> bytes:
     """:func:`plot_figure` as the bytes of the file ``path`` names (SVG, PNG or PDF)."""
+    from .sheet import figure_data
+
     fig = plot_figure(res, points=points, links=links)
-    buf = io.BytesIO()
-    fmt = path.rsplit(".", 1)[-1].lower()
-    fig.savefig(buf, format=fmt, **({"metadata": {"Date": None}} if fmt == "svg" else {}))
-    return buf.getvalue()
+    data = figure_data(fig, path.rsplit(".", 1)[-1].lower())
+    return data.encode() if isinstance(data, str) else data
 
 
 def _scene_values(scene) -> dict:

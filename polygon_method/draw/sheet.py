@@ -297,8 +297,27 @@ def make_figure(sol, diagram: str = "all", scales=None, centre_prefix: str = "I"
     return fig, {name: scale for name, scale, _ in panels if scale is not None}, warnings
 
 
+#: what makes a file the same byte for byte run to run: SVG ids from a fixed salt (else
+#: matplotlib draws them at random), and no date or software stamp in any format
+STABLE_RC = {"svg.hashsalt": "polygon-method"}
+STABLE_METADATA = {"svg": {"Date": None}, "png": {"Software": None},
+                   "pdf": {"CreationDate": None, "ModDate": None, "Producer": None}}
+
+
+def figure_data(fig, fmt: str, **kw):
+    """A matplotlib figure as the file of ``fmt`` (SVG text, PNG or PDF bytes), the same
+    byte for byte every run (:data:`STABLE_RC`, :data:`STABLE_METADATA`): every drawing and
+    plot the tool writes goes through here."""
+    import matplotlib
+
+    with matplotlib.rc_context(STABLE_RC):
+        buf = io.StringIO() if fmt == "svg" else io.BytesIO()
+        fig.savefig(buf, format=fmt, metadata=STABLE_METADATA[fmt], **kw)
+    return buf.getvalue()
+
+
 def _rc():
-    return {"svg.hashsalt": "polygon-method", "svg.fonttype": "path", "font.family": FONT,
+    return {**STABLE_RC, "svg.fonttype": "path", "font.family": FONT,
             "path.simplify": False, "svg.image_inline": True}
 
 
@@ -313,17 +332,8 @@ def render(sol, fmt: str = "svg", diagram: str = "all", scales=None,
         raise PolygonMethodError(f"cannot draw {fmt!r}: use svg, png or pdf")
     with matplotlib.rc_context(_rc()):
         fig, used, warnings = make_figure(sol, diagram, scales, centre_prefix)
-        if fmt == "svg":
-            buf = io.StringIO()
-            fig.savefig(buf, format="svg", metadata={"Date": None})
-            return buf.getvalue(), used, warnings
-        buf = io.BytesIO()
-        if fmt == "png":
-            fig.savefig(buf, format="png", dpi=PNG_DPI, metadata={"Software": None})
-        else:
-            fig.savefig(buf, format="pdf", metadata={"CreationDate": None, "ModDate": None,
-                                                     "Producer": None})
-        return buf.getvalue(), used, warnings
+        data = figure_data(fig, fmt, **({"dpi": PNG_DPI} if fmt == "png" else {}))
+        return data, used, warnings
 
 
 # --------------------------------------------------------------------------- on paper
@@ -428,20 +438,12 @@ def write_pages(panels, sizes, pages, fmt: str = "svg"):
         if fmt == "pdf":
             from matplotlib.backends.backend_pdf import PdfPages
             buf = io.BytesIO()
-            with PdfPages(buf, metadata={"CreationDate": None, "ModDate": None,
-                                         "Producer": None}) as pdf:
+            with PdfPages(buf, metadata=STABLE_METADATA["pdf"]) as pdf:
                 for fig in figures:
                     pdf.savefig(fig)
             return [buf.getvalue()], warnings
-        datas = []
-        for fig in figures:
-            if fmt == "svg":
-                out = io.StringIO()
-                fig.savefig(out, format="svg", metadata={"Date": None})
-            else:
-                out = io.BytesIO()
-                fig.savefig(out, format="png", dpi=PNG_DPI, metadata={"Software": None})
-            datas.append(out.getvalue())
+        datas = [figure_data(fig, fmt, **({"dpi": PNG_DPI} if fmt == "png" else {}))
+                 for fig in figures]
         return datas, warnings
 
 

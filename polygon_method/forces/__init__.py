@@ -16,13 +16,19 @@ A hydraulic cylinder is a two-force member (:mod:`.cylinder`); where the motion 
 on it, it is the driver and its force the driver's effort.
 
 A wheel rolling on a fixed line is solved with the link that finds its centre
-(:mod:`.wheel`): the ground's normal and tangential forces, and the friction no slip needs.
+(:mod:`.wheel`): the ground's normal and tangential forces, and the friction no slip needs;
+a wheel that drives the mechanism by its driver's torque (:mod:`.wheel_driver`). A gear,
+or a planet on a circle, carries the tooth load along the line of action at the pressure
+angle (:mod:`.rolling`); a rack likewise, held by its guide (:mod:`.rack`).
 
 A triad's plate and three links are solved together (:mod:`.triad`: the textbook's 3x3
 solve).
 
-What is not written yet is refused in one line naming the step (rolling on a circle or a
-gear, a rack, a triad whose plate is three links): no guess.
+With ``[friction]`` the walk is repeated with the friction of the forces found before (at
+the guides ``mu |N|``, at the pins the friction circle) until they settle (:mod:`.friction`).
+
+What is not written yet is refused in one line naming the step (a triad whose plate is
+three links): no guess.
 
 Sign rule: see :mod:`.records` (the force on one body by the other; ccw positive; moments
 about the frame's origin).
@@ -33,9 +39,10 @@ from __future__ import annotations
 from dataclasses import replace
 
 from ..common.errors import PolygonMethodError
-from . import (carried, crank, cylinder, driver, dyad, peg, rolling, slider, slotted, triad,
-               wheel, yoke)
+from . import (carried, crank, cylinder, driver, dyad, friction, peg, rack, rolling, slider,
+               slotted, triad, wheel, wheel_driver, yoke)
 from .bodies import Ledger, Singular, centre, cross, gather
+from .core import force_plan
 from .records import (FRAME, Contact, Couple, Forces, ForceStep, FreeBody, GuideForce,
                       Inertia, PinForce, Side, block, couple_label, force_value, forces_dict,
                       number_sub, side_label)
@@ -49,25 +56,27 @@ from .records import (FRAME, Contact, Couple, Forces, ForceStep, FreeBody, Guide
 #: ``unit_ledger(st)``, ``effort(st, t0, t1, ledger)``, where present: whether it drives
 #: the mechanism, and its force from the crank's torque without it and with 1 N in it;
 #: ``bodies(st)``, where present: the bodies it moves, in the order the sheet numbers them,
-#: else those of its force step)
+#: else those of its force step; ``bind(st, own, ix)``, where present: its short road
+#: (:mod:`.core`), a function ``f(P, S, pins, guides)`` doing what ``step`` does to the
+#: numbered sums ``S`` (body ``ix(name)``), appending its pin forces ``(point, on, by,
+#: force)`` and guides' ``(point, normal, n, by)`` and returning the driver's effort or
+#: None, with no record made; None for a step with nothing to solve)
 #: the members a room may give, said once above for every room
 ROOM_CONTRACT = ("owns", "step", "covers", "check", "blocks", "divisor", "drives",
-                 "unit_ledger", "effort", "bodies")
+                 "unit_ledger", "effort", "bodies", "bind")
 ROOMS = {"crank": crank, "dyad": dyad, "slider": slider, "carried": carried,
          "slotted": slotted, "block": driver, "second crank": crank,
          "cylinder": cylinder, "yoke": yoke, "peg": peg, "rolling": rolling,
-         "wheel centre": wheel, "triad": triad}
+         "wheel centre": wheel, "triad": triad, "rack": rack, "rolling driver": wheel_driver}
 
 __all__ = ["analyse", "Forces", "Inertia", "PinForce", "GuideForce", "ForceStep", "FRAME",
            "block", "centre", "cross", "Ledger", "forces_dict", "owners", "ROOMS",
            "force_value", "Side", "Couple", "FreeBody", "side_label", "couple_label", "number_sub"]
 
 _NOT_YET = {
-    "rolling": "rolling on a circle or a gear (the contact's normal force is not "
-               "determined by statics where a link holds the centres' distance: a preload or "
-               "the teeth's pressure angle sets it)",
-    "rack": "a rack on a pinion",
-    "rolling driver": "a wheel rolling on the ground as the only driver",
+    "collar": "a collar driven along its turning rod (its force along the rod without "
+              "inertia is the power balance's input force)",
+    "second collar": "a collar sliding along the crank as the second input",
     "triad": "a triad whose plate is made of three links",
 }
 
@@ -77,7 +86,8 @@ def _refuse(scene, st, what):
         f"forces: {what} is not solved for forces yet (step {st.index + 1}, {st.title}); "
         "the force analysis covers cranks (one or two), driving blocks, dyads, carried "
         "points, blocks on fixed paths and on moving links, slotted levers, yokes, pegs, "
-        "cylinders, wheels rolling on a line and triads",
+        "cylinders, wheels rolling on a line (driven or driving), gears, planets, racks "
+        "and triads",
         file=scene.file, key=_key(scene))
 
 
@@ -119,14 +129,75 @@ def owners(scene, plan) -> dict:
 
 def analyse(motion) -> Forces:
     """The :class:`Forces` at the instant of ``motion`` (a solved, one-instant
-    :class:`~polygon_method.solver.kinematics.Motion` of a scene with masses or gravity)."""
+    :class:`~polygon_method.solver.kinematics.Motion` of a scene with masses or gravity), or
+    over its crank angles (a sweep: arrays). The numbers by the short road where every
+    group has one (:mod:`.core`), the records when first read. With ``[friction]`` the
+    walk is repeated with the friction of the forces found before until they settle
+    (:mod:`.friction`)."""
     scene, plan = motion.scene, motion.plan
-    own = owners(scene, plan)
-    records, led = gather(scene, motion, own)
+    fp = force_plan(scene, plan)
+    if scene.friction is not None:
+        return _with_friction(motion, fp)
+    if not fp.quick:
+        return _forces(motion, fp, ())
+    return fp.run(motion)
+
+
+class _Long:
+    """The records of the long road, made at once (the ``source`` of its :class:`Forces`:
+    ``(_Long, the long road's tuple)``)."""
+
+    @staticmethod
+    def parts(source) -> tuple:
+        return source[1][7:10]
+
+    @staticmethod
+    def story(source) -> tuple:
+        return source[1][10:14]
+
+    @staticmethod
+    def resultant(source, body) -> tuple:
+        return source[1][14](body)
+
+
+def _with_friction(motion, fp) -> Forces:
+    """The forces with the friction of the forces found before, until they settle."""
+    scene = motion.scene
+    before = None
+    for _ in range(friction.ROUNDS):
+        f = _forces(motion, fp, before or ())
+        now = friction.loads(scene, motion, f.pins, f.guides)
+        if friction.change(before, now) <= friction.SETTLED * friction.scale(f):
+            return f
+        before = now
+    raise PolygonMethodError(f"forces: with friction the forces do not settle after "
+                             f"{friction.ROUNDS} passes: the mechanism may lock itself here "
+                             "(the friction too large for the driver to move it)",
+                             file=scene.file, key="[friction]")
+
+
+def _forces(motion, fp, fric) -> Forces:
+    """The long road's :class:`Forces`, with the friction loads ``fric`` known
+    (:func:`.friction.loads`)."""
+    whole = _long(motion, fp, fric)
+    wheel = whole[4] == "wheel"
+    return Forces(*whole[:7], (_Long, whole),
+                  centre_force=(wheel_driver.centre_force(motion.plan.steps[0], whole[0])
+                                if wheel else None),
+                  friction=tuple(fric),
+                  friction_power=friction.power(motion, motion.scene, fric) if fric else 0.0)
+
+
+def _long(motion, fp, fric=()) -> tuple:
+    """The long road, every record made: (the effort, shaking force, shaking moment, the
+    driver's name and kind, a second crank's torque and link; inertia, pins, guides;
+    steps, applied, contacts, the drawings' functions; body -> its known resultant).
+    ``fric``: the friction loads."""
+    scene, plan, own = motion.scene, motion.plan, fp.own
+    records_, led = gather(scene, motion, own)
+    friction.apply(led, fric)
     inp = scene.input
-    driving = next((st for st in plan.steps
-                    if getattr(ROOMS[st.kind], "drives", lambda sc, s: False)(scene, st)),
-                   None)
+    driving = fp.driving
     if driving is not None:  # the walk is linear in the driver's force: walk it twice
         room = ROOMS[driving.kind]
         t0 = _walk(scene, plan, motion.P, _copy(led), own)[3]
@@ -143,23 +214,29 @@ def analyse(motion) -> Forces:
         name, kind, effort = driving.key, driving.kind, led.given[driving.key]
     elif plan.steps[0].kind == "block":  # the driver the plan starts with: a block
         name, kind, effort = block(plan.steps[0].point), "block", torque
+    elif plan.steps[0].kind == "rolling driver":  # a wheel: the torque on it
+        name, kind, effort = plan.steps[0].wheel, "wheel", torque
     else:
         name, kind, effort = inp.crank, "crank", torque
-    return Forces(records, tuple(pins), tuple(guides), effort, (fx, fy), m,
-                  tuple(steps), {k: tuple(v) for k, v in led.applied.items()},
-                  name, kind, second,
-                  None if inp.second is None else scene.link(inp.second.crank).key,
-                  tuple(contacts), _drawing(scene, plan, motion.P, records, pins, guides, led,
-                                            torque, steps))
+    return (effort, (fx, fy), m, name, kind, second,
+            None if inp.second is None else scene.link(inp.second.crank).key,
+            records_, tuple(pins), tuple(guides),
+            tuple(steps), {k: tuple(v) for k, v in led.applied.items()}, tuple(contacts),
+            _drawing(scene, plan, motion.P, records_, pins, guides, led, torque, steps,
+                     contacts),
+            led.of)
 
 
-def _drawing(scene, plan, P, records, pins, guides, led, torque, steps) -> tuple:
+def _drawing(scene, plan, P, records, pins, guides, led, torque, steps, contacts) -> tuple:
     """What the drawings read, made when first asked for: the bodies' numbers and, for one
     instant, each body's free body."""
     one = isinstance(torque, float)
+    driven = (scene.input.crank if plan.steps[0].kind != "rolling driver"
+              else plan.steps[0].wheel)
     return (lambda: _numbers(scene, plan, steps),
             (lambda numbers: _free_bodies(scene, P, numbers, records, pins, guides, led,
-                                          torque)) if one else (lambda numbers: ()))
+                                          torque, contacts, driven))
+            if one else (lambda numbers: ()))
 
 
 def _copy(led):
@@ -210,16 +287,19 @@ def _numbers(scene, plan, steps) -> dict:
     return out
 
 
-def _free_bodies(scene, P, numbers, records, pins, guides, led, torque) -> tuple:
+def _free_bodies(scene, P, numbers, records, pins, guides, led, torque, contacts,
+                 driven) -> tuple:
     """Each moving body alone (:class:`FreeBody`): its inertia force (the book's single
     force, through the offset point), weight and loads as the ledger holds them, every pin
     force on it (the stored record, or its opposite where the body is the record's ``by``),
-    the guide's force on a block; its couples."""
+    the guide's force on a block, a contact force (the ground's on a wheel, the teeth's on a
+    gear or a rack, and back on the gear that pushes); its couples (``driven``: the body
+    the driver's torque turns)."""
     out = []
     for body, num in numbers.items():
         if body == FRAME:
             continue
-        sides = [s for s in led.known(body) if s.what not in ("pin", "inertia")]
+        sides = [s for s in led.known(body) if s.what not in ("pin", "inertia", "contact")]
         sides[:0] = [Side("inertia", body, "", "", i.force,
                           i.G if i.offset is None else i.offset_point)
                      for i in records if i.body == body]  # the book's single force
@@ -231,11 +311,20 @@ def _free_bodies(scene, P, numbers, records, pins, guides, led, torque) -> tuple
                                   P[p.point]))
         sides += [Side("guide", body, FRAME, g.point, g.force, P[g.point]) for g in guides
                   if block(g.point) == body]
+        for k, c in enumerate(reversed(contacts)):  # (in the plan's order, as drawn)
+            name = "I" if len(contacts) == 1 else f"I{k + 1}"
+            if c.wheel == body:
+                sides.append(Side("contact", body, c.by, name, c.force, c.point))
+            elif c.by == body:
+                sides.append(Side("contact", body, c.wheel, name,
+                                  (-c.force[0], -c.force[1]), c.point))
         couples = [Couple("inertia", body, i.couple) for i in records
                    if i.body == body and i.offset is None and i.couple != 0]
-        couples += [Couple("load", body, e[1]) for e in led.applied.get(body, ())
-                    if len(e) == 2]
-        if body == scene.input.crank:
+        couples += [Couple("friction" if e[0].startswith("friction") else "load", body, e[1])
+                    for e in led.applied.get(body, ()) if len(e) == 2]
+        couples += [Couple("guide", body, g.couple) for g in guides
+                    if block(g.point) == body and isinstance(g.couple, float) and g.couple]
+        if body == driven:
             couples.append(Couple("torque", body, torque))
         out.append(FreeBody(body, num, tuple(sides), tuple(couples)))
     return tuple(out)

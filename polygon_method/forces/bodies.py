@@ -35,6 +35,37 @@ def cross(ax, ay, bx, by):
     return ax * by - ay * bx
 
 
+def guided(qx, qy, known, xx, xy, n, r):
+    """The one relation of a body pinned at Q (the pin force there unknown) that carries the
+    known forces ``known = (Fx, Fy, M about the origin)`` and, at X, a push ``N n + r`` whose
+    only unknown is N (a frictionless guide's normal force along the unit ``n``, with the
+    known forces ``r`` passed on with it: a block's loads, a wheel's friction). Its moments
+    about Q, where the pin force has no arm, then its force balance::
+
+        cross(X - Q, N n + r) + M_Q = 0   =>   N = -(M_Q + cross(X - Q, r)) / cross(X - Q, n)
+        F_Q = -(F + N n + r)
+
+    Returns ``(N, the push N n + r, F_Q, cross(X - Q, n))``; N and the forces are None
+    where ``cross(X - Q, n)`` is zero (X - Q along n: the moments cannot hold N). Floats or
+    arrays over a sweep. A body pinned at the origin pushed at (1, 0) across by N (0, 1),
+    with a couple of 2 N m ccw on it: N = -2, and the pin holds it with 2 N up:
+
+    >>> guided(0.0, 0.0, (0.0, 0.0, 2.0), 1.0, 0.0, (0.0, 1.0), (0.0, 0.0))
+    (-2.0, (0.0, -2.0), (-0.0, 2.0), 1.0)
+    """
+    fx, fy, m = known
+    rx, ry = r[0], r[1]  # (a known resultant's moment, if given, is not used)
+    nx, ny = n
+    mq = m - (qx * fy - qy * fx)  # cross(Q, F), written out (the short road's too)
+    ex, ey = xx - qx, xy - qy
+    den = ex * ny - ey * nx  # cross(X - Q, n)
+    if any_zero(den):
+        return None, None, None, den
+    N = -(mq + (ex * ry - ey * rx)) / den  # cross(X - Q, r)
+    px, py = N * nx + rx, N * ny + ry
+    return N, (px, py), (-(fx + px), -(fy + py)), den
+
+
 def centre(P, lam, mu, p, q):
     """``p + lam (q - p) + mu perp(q - p)`` (a point carried on a link, its image on the
     velocity and the acceleration polygons alike)."""

@@ -84,7 +84,7 @@ def _scale(sol, f):
         [vhypot(*ld.force) for ld in sc.loads if ld.force is not None]
     if sc.gravity is not None:
         vals += [m.mass * sc.gravity.g for m in sc.masses]
-    if f.driver != "crank":
+    if f.driver not in ("crank", "wheel"):  # (a wheel's effort is a torque)
         vals.append(abs(f.input_torque))
     return vmax(largest(vals), FLOOR)
 

@@ -14,6 +14,10 @@ def owns(st) -> dict:
     return {st.point: st.link}
 
 
+def bind(st, own, ix):
+    return None  # nothing to solve: no call on the short road
+
+
 def step(st, P, led, own):
     """A carried point adds no unknown force: nothing to solve, nothing to record."""
     return (), (), None, None

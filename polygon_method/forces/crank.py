@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import math
 
-from .bodies import cross
 from ..common.numbers import fmt, quiet
 from .records import FRAME, ForceStep, PinForce, Side
 
@@ -21,7 +20,7 @@ from .records import FRAME, ForceStep, PinForce, Side
 def solve(ox, oy, known):
     """(the frame's force on the crank at O, the driving torque T, ccw positive)."""
     fx, fy, m = known
-    return (-fx, -fy), -(m - cross(ox, oy, fx, fy))
+    return (-fx, -fy), -(m - (ox * fy - oy * fx))  # cross(O, F) written out
 
 
 def bodies(st) -> tuple:
@@ -32,6 +31,22 @@ def bodies(st) -> tuple:
 def owns(st) -> dict:
     """The crank's tip acts, for loads and later pins, on the crank."""
     return {st.tip: st.link}
+
+
+def bind(st, own, ix):
+    pivot, link, i = st.pivot, st.link, ix(st.link)
+
+    def run(P, S, pins, guides):
+        ox, oy = P[pivot]
+        sx, sy, sm = S.fx, S.fy, S.m
+        r, torque = solve(ox, oy, (sx[i], sy[i], sm[i]))
+        fx, fy = -r[0], -r[1]  # S.add(0, fx, fy, ox, oy); S.couple(0, -torque)
+        sx[0] = sx[0] + fx
+        sy[0] = sy[0] + fy
+        sm[0] = sm[0] + (ox * fy - oy * fx) + -torque  # the driver, on the frame, feels -T
+        pins.append((pivot, link, FRAME, r))
+        return torque
+    return run
 
 
 def step(st, P, led, own):

@@ -34,6 +34,20 @@ def blocks(st) -> tuple:
     return (st.point,)
 
 
+def bind(st, own, ix):
+    x, bl = st.point, block(st.point)
+    i = ix(bl)
+    ux, uy = st.path.u
+
+    def run(P, S, pins, guides):
+        f, n = solve(S.of(i), (ux, uy))
+        guides.append((x, n, (-uy, ux), FRAME))
+        xx, xy = P[x]
+        S.add(0, -(f * ux + n * -uy), -(f * uy + n * ux), xx, xy)
+        return f
+    return run
+
+
 def step(st, P, led, own):
     """The guide's normal force and the driver's force along the guide. Returns as
     :func:`.dyad.step`, the driver's force (N, signed along ``u``) in the torque's place."""

@@ -28,23 +28,25 @@ from ..common.numbers import fmt
 from .records import ForceStep, PinForce, Side
 
 
-def solve(bx, by, known1, dx, dy, known2, cx, cy):
+def solve(bx, by, known1, dx, dy, known2, cx, cy, condition=True):
     """(P on link 1 at C by link 2, the force on link 1 at B, the force on link 2 at D,
-    the condition ``|cross(C - B, C - D)| / (|C - B| |C - D|)``); floats, or arrays over a
-    sweep.
+    the condition ``|cross(C - B, C - D)| / (|C - B| |C - D|)``, None unless
+    ``condition``); floats, or arrays over a sweep.
 
     ``known1``, ``known2``: ``(Fx, Fy, M)`` of the known forces on each link, M about the
-    origin."""
+    origin. (Each ``cross`` written out: this is the short road's hot path too.)"""
     f1x, f1y, m1 = known1
     f2x, f2y, m2 = known2
-    m1b = m1 - cross(bx, by, f1x, f1y)  # about B
-    m2d = m2 - cross(dx, dy, f2x, f2y)  # about D
+    m1b = m1 - (bx * f1y - by * f1x)  # about B: M - cross(B, F)
+    m2d = m2 - (dx * f2y - dy * f2x)  # about D
     r1x, r1y = cx - bx, cy - by
     r2x, r2y = cx - dx, cy - dy
-    det = cross(r1x, r1y, r2x, r2y)
-    size = ((r1x * r1x + r1y * r1y) * (r2x * r2x + r2y * r2y)) ** 0.5  # links: never 0
-    cond = abs(det) / size
-    if any_zero(det):
+    det = r1x * r2y - r1y * r2x  # cross(C - B, C - D)
+    cond = None
+    if condition:
+        size = ((r1x * r1x + r1y * r1y) * (r2x * r2x + r2y * r2y)) ** 0.5  # never 0
+        cond = abs(det) / size
+    if det == 0 if det.__class__ is float else any_zero(det):  # (no call for a float)
         return None, None, None, 0.0
     # -r1y Px + r1x Py = -M1_B ;  -r2y Px + r2x Py = M2_D
     px = (-m1b * r2x - r1x * m2d) / det
@@ -60,6 +62,31 @@ def bodies(st) -> tuple:
 def owns(st) -> dict:
     """The point the step finds acts, for loads and later pins, on its first link."""
     return {st.point: st.link1}
+
+
+def bind(st, own, ix):
+    l1, l2, b, d, c = st.link1, st.link2, st.b, st.d, st.point
+    ob, od = own[b], own[d]
+    i1, i2, ib, id_ = ix(l1), ix(l2), ix(ob), ix(od)
+    why = f"{b}, {c} and {d} are in a line"
+
+    def run(P, S, pins, guides):
+        (bx, by), (dx, dy), (cx, cy) = P[b], P[d], P[c]
+        sx, sy, sm = S.fx, S.fy, S.m
+        p, fb, fd, _ = solve(bx, by, (sx[i1], sy[i1], sm[i1]), dx, dy,
+                             (sx[i2], sy[i2], sm[i2]), cx, cy, False)
+        if p is None:
+            raise Singular(why)
+        pins += ((c, l1, l2, p), (b, l1, ob, fb), (d, l2, od, fd))
+        fx, fy = -fb[0], -fb[1]  # S.add(ib, fx, fy, bx, by), written out
+        sx[ib] = sx[ib] + fx
+        sy[ib] = sy[ib] + fy
+        sm[ib] = sm[ib] + (bx * fy - by * fx)
+        fx, fy = -fd[0], -fd[1]  # S.add(id_, fx, fy, dx, dy)
+        sx[id_] = sx[id_] + fx
+        sy[id_] = sy[id_] + fy
+        sm[id_] = sm[id_] + (dx * fy - dy * fx)
+    return run
 
 
 def step(st, P, led, own):

@@ -221,8 +221,7 @@ def efforts(scene, plan, P, f) -> Efforts | None:
     side = piston_side(scene, plan, P, piston)
     ux, uy = sd.path.u
     tx, ty = -side * ux, -side * uy  # towards the crank
-    rec = next(s for s in f.steps if s.bodies[1:] == (f"block {piston}",))
-    kb = rec.known[1]
+    kb = f.resultant(f"block {piston}")  # what its step knew on it
     F_P = kb[0] * tx + kb[1] * ty
     q = f.pin(piston, sd.link)
     F_Q = (q[0] * q[0] + q[1] * q[1]) ** 0.5

@@ -7,6 +7,7 @@ feels its opposite. A body is a link (its key), a slider block (``block B``) or 
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from functools import cached_property
 
@@ -96,20 +97,31 @@ class GuideForce:
 
 @dataclass(frozen=True)
 class Contact:
-    """The ground's force on a wheel rolling without slip on a fixed line, at its contact
-    point ``point`` (x, y): ``normal`` (N) along ``m`` (the line's unit normal towards the
-    wheel), ``tangential`` (N) along ``t = perp(m)`` (the grip friction must supply; no
-    slip: the contact point does not move, so neither works). ``required_friction``: the
-    least friction coefficient that holds it, ``|T| / N``, None where ``N <= 0`` (the
-    wheel would lift off)."""
+    """The contact force on a rolling body at its contact point ``point`` (x, y), by ``by``:
+    ``normal`` (N) along ``m`` (the unit normal at the contact towards the body: from the
+    ground line, the circle or the other gear towards the wheel's centre; for a rack, away
+    from its pinion), ``tangential`` (N) along ``t = perp(m)``. ``wheel``: the body (a
+    wheel's link, a rack's ``block R``).
+
+    A wheel on a fixed line grips by friction (``teeth`` None): both parts follow from the
+    statics; no slip needs ``|T| / N`` of friction (``required_friction``, None where ``N
+    <= 0``: the wheel would lift off). Gear teeth (a gear, a planet on a circle, a rack:
+    ``teeth`` the pressure angle phi, rad) push along the line of action through the pitch
+    point, at phi to the common tangent, the teeth pushing apart: ``N = |T| tan phi``, the
+    tooth load ``|T| / cos phi`` (``load``). No slip at the pitch point: neither works."""
 
     wheel: str
     point: tuple
     normal: float
     tangential: float
     m: tuple
+    #: the body that pushes: the frame (a ground line, a fixed circle), a gear, a pinion
+    by: str = FRAME
+    #: the teeth's pressure angle (rad), or None (a friction grip on a ground line)
+    teeth: float | None = None
+    #: whether the scene states the pressure angle (False: the default, 20 deg)
+    stated: bool = True
 
-    by = FRAME
     couple = 0.0
 
     @property
@@ -125,17 +137,37 @@ class Contact:
         return (self.normal * mx - self.tangential * my, self.normal * my + self.tangential * mx)
 
     @property
+    def load(self):
+        """The contact force's size (N): the tooth load along the line of action."""
+        n, t = self.normal, self.tangential
+        return (n * n + t * t) ** 0.5
+
+    @property
     def required_friction(self):
         """The least friction coefficient that keeps the wheel from slipping, |T| / N; None (inf
-        over a sweep) where the wheel would lift off."""
+        over a sweep) where the wheel would lift off, and for gear teeth."""
+        if self.teeth is not None:
+            return None
         n, t = self.normal, self.tangential
         if not isinstance(n, float):  # a sweep: where it lifts off, no number
             import numpy as np
             return np.where(n > 0, np.abs(t) / np.where(n > 0, n, 1.0), np.inf)
         return abs(t) / n if n > 0 else None
 
+    def angle_words(self) -> str:
+        """The pressure angle in words, saying where it is the default."""
+        deg = math.degrees(self.teeth)
+        return f"{deg:.4g} deg" + ("" if self.stated else " (the default; pressure_angle in "
+                                   "[rolling] gives it)")
+
     def grip_words(self) -> str:
-        """The friction rolling needs here, in words (or why the wheel lifts off)."""
+        """The friction rolling needs here, in words (or why the wheel lifts off); for
+        teeth, the tooth load along the line of action."""
+        if self.teeth is not None:
+            return (f"the tooth load along the line of action, at the pressure angle "
+                    f"{self.angle_words()} to the common tangent: {self.load:.4g} N (its "
+                    f"part along the tangent {abs(self.tangential):.4g} N, pushing the teeth "
+                    f"apart {self.normal:.4g} N)")
         mu = self.required_friction
         if mu is None:
             return (f"the ground would have to pull wheel {self.wheel} down (N = "
@@ -152,7 +184,8 @@ class Side:
     the pin or the loaded point, G for a weight; for an inertia force, G in a polygon's
     side and, in a :class:`FreeBody`, the offset point of the book's single force (G where
     there is none). ``what``: ``inertia``, ``weight``, ``load``,
-    ``gas``, ``pin`` or ``guide``; ``point``: the point it acts at (a pin, a loaded
+    ``gas``, ``pin``, ``guide`` or ``contact`` (a rolling contact's force: the ground's,
+    the teeth's); ``point``: the point it acts at (a pin, a loaded
     point; "" for an inertia force or a weight); ``part``: "" the whole force, ``t`` its
     component square to the link from ``point``, ``n`` its component along the link."""
 
@@ -169,7 +202,9 @@ class Side:
 class Couple:
     """A couple (N m, ccw positive) on body ``on``: ``what`` ``inertia`` (``-I alpha``,
     drawn only where no single inertia force carries it: ``a_G = 0``), ``load`` (a
-    ``[loads]`` couple) or ``torque`` (the driver's, on the crank)."""
+    ``[loads]`` couple), ``friction`` (a pin's friction circle's), ``guide`` (a guide's,
+    holding a rack or a yoke from turning) or
+    ``torque`` (the driver's, on the crank or a driving wheel)."""
 
     what: str
     on: str
@@ -213,7 +248,7 @@ def side_label(side: Side, numbers: dict, unicode: bool = True) -> str:
     'F_34^t'
     """
     sup = {"t": "\u1d57", "n": "\u207f"} if unicode else {"t": "^t", "n": "^n"}
-    if side.what in ("pin", "guide"):
+    if side.what in ("pin", "guide", "contact"):
         return "F" + _sub(numbers, side.on, side.by, unicode=unicode) + sup.get(side.part, "")
     if side.what == "inertia":
         return ("F\u1d62" if unicode else "Fi") + _sub(numbers, side.on, unicode=unicode)
@@ -221,13 +256,16 @@ def side_label(side: Side, numbers: dict, unicode: bool = True) -> str:
         return "W" + _sub(numbers, side.on, unicode=unicode)
     if side.what == "gas":
         return "gas force"
+    if side.what == "friction":
+        return ("\u03bcN" if unicode else "muN") + f" at {side.point}"
     return f"P at {side.point}"
 
 
 def couple_label(c: Couple, numbers: dict, unicode: bool = True) -> str:
     """``T2`` the driver's torque on link 2, ``C4`` a couple on link 4, ``Ci3`` the inertia
     couple of link 3."""
-    head = {"torque": "T", "load": "C", "inertia": "C\u1d62" if unicode else "Ci"}[c.what]
+    head = {"torque": "T", "load": "C", "guide": "C", "friction": "C\u03bc" if unicode
+            else "Cmu", "inertia": "C\u1d62" if unicode else "Ci"}[c.what]
     return head + _sub(numbers, c.on, unicode=unicode)
 
 
@@ -292,34 +330,95 @@ class Forces:
     pair of bodies at a pin, in the order solved), ``guides`` (:class:`GuideForce`),
     ``input_torque`` (N m, on the crank by its driver, ccw positive, inertia included; for a
     driving block, ``driver == "block"``, the force on it by its driver, N, signed along
-    its guide's direction),
+    its guide's direction; for a driving wheel, ``driver == "wheel"``, the torque on the
+    wheel by its driver),
     ``shaking_force`` (the resultant force the mechanism exerts on the frame, through its
     pins and guides, and a gas force's push on the cylinder's cover: the gas acts between
     the piston and the frame) and ``shaking_moment`` (its moment about the frame's origin, with the
     driver's reaction ``-input_torque`` on the frame), ``steps`` (:class:`ForceStep`).
     ``applied``: body -> the loads and weights on it, (what, (Fx, Fy), point) and (what,
-    couple) entries."""
+    couple) entries.
 
-    inertia: tuple
-    pins: tuple
-    guides: tuple
+    The numbers are held; the records are made when first read (``compute only what is
+    asked for``), from ``source``: a tuple whose first item ``R`` makes them,
+    ``R.parts(source)`` (``inertia``, ``pins``, ``guides``), ``R.story(source)``
+    (``steps``, ``applied``, ``contacts``, what the drawings read) and
+    ``R.resultant(source, body)`` (:meth:`resultant`)."""
+
     input_torque: float
     shaking_force: tuple
     shaking_moment: float
-    steps: tuple
-    applied: dict
     crank: str
-    #: "crank" (a driving torque), "block" (a driving force along the block's guide) or
-    #: "cylinder" (the force in the cylinder ``crank`` names, + pushing its ends apart)
+    #: "crank" (a driving torque), "block" (a driving force along the block's guide),
+    #: "cylinder" (the force in the cylinder ``crank`` names, + pushing its ends apart) or
+    #: "wheel" (a torque on the driving wheel ``crank`` names)
     driver: str = "crank"
     #: a second driving crank's torque (N m, ccw positive) and its link, or None
     second_torque: float | None = None
     second_crank: str | None = None
-    #: the ground's contact force on each wheel rolling on a line (:class:`Contact`)
-    contacts: tuple = ()
-    #: what :attr:`numbers` and :attr:`free` are read from, when asked: (body -> number,
-    #: or a function making it; a function making the free bodies)
-    drawing: tuple = field(default=(), repr=False, compare=False)
+    #: what makes the records when first read (see above)
+    source: tuple = field(default=(), repr=False, compare=False)
+    #: a driving wheel's effort as a force at its centre along the ground instead of the
+    #: torque (N, a vector): ``(input_torque / r) t``, t = perp(m) along the ground; else None
+    centre_force: tuple | None = None
+    #: the friction (``[friction]``) the forces were found with: (body, what, force, point)
+    #: at the guides and (body, what, couple) at the pins, reactions included
+    #: (:func:`.friction.loads`), and its power (W, never positive)
+    friction: tuple = ()
+    friction_power: float = 0.0
+
+    def resultant(self, body: str) -> tuple:
+        """``(Fx, Fy, M about the origin)`` of every force on ``body`` but those of its own
+        group's unknowns: its inertia, weight and loads, and the reactions of the groups
+        solved before its own (what its force polygon starts from; for a slider's block,
+        the piston's known forces). No group solved after a body's own acts on it: it
+        finds no point of it."""
+        return self.source[0].resultant(self.source, body)
+
+    @cached_property
+    def _parts(self) -> tuple:
+        return self.source[0].parts(self.source)
+
+    @cached_property
+    def _story(self) -> tuple:
+        return self.source[0].story(self.source)
+
+    @property
+    def inertia(self) -> tuple:
+        """:class:`Inertia` per massive body, in the scene's order."""
+        return self._parts[0]
+
+    @property
+    def pins(self) -> tuple:
+        """:class:`PinForce` s, one per pair of bodies at a pin, in the order solved."""
+        return self._parts[1]
+
+    @property
+    def guides(self) -> tuple:
+        """:class:`GuideForce` s, in the order solved."""
+        return self._parts[2]
+
+    @property
+    def steps(self) -> tuple:
+        """:class:`ForceStep` s, in the order solved (their words and drawings)."""
+        return self._story[0]
+
+    @property
+    def applied(self) -> dict:
+        """body -> the loads and weights on it (see the class)."""
+        return self._story[1]
+
+    @property
+    def contacts(self) -> tuple:
+        """The contact force on each rolling body (:class:`Contact`): a wheel on a line, a
+        gear, a planet, a rack."""
+        return self._story[2]
+
+    @property
+    def drawing(self) -> tuple:
+        """What :attr:`numbers` and :attr:`free` are read from: (a function making body ->
+        number, a function making the free bodies from it)."""
+        return self._story[3]
 
     @cached_property
     def numbers(self) -> dict:
@@ -350,9 +449,54 @@ class Forces:
         return next((i for i in self.inertia if i.body == body), None)
 
 
+def quick_forces(effort, shaking_force, shaking_moment, crank, driver, second_torque,
+                 second_crank, source) -> Forces:
+    """``Forces(effort, shaking_force, ...)``, its fields put straight into the instance's
+    dictionary (the frozen dataclass's ``__init__`` sets them one by one through
+    ``object.__setattr__``: three times as long, a sixth of the short road's cost on a
+    four-bar): the same record."""
+    f = _new(Forces)
+    d = f.__dict__
+    d["input_torque"] = effort
+    d["shaking_force"] = shaking_force
+    d["shaking_moment"] = shaking_moment
+    d["crank"] = crank
+    d["driver"] = driver
+    d["second_torque"] = second_torque
+    d["second_crank"] = second_crank
+    d["source"] = source
+    return f
+
+
+_new = object.__new__
+
+
 def force_value(f: Forces, kind: str, name: str) -> float:
     """The size of what an answer key names: ``F`` the force at pin ``name`` (a pin joining
-    two bodies), ``N`` the guide's normal force on the block at ``name``."""
+    two bodies), ``N`` the guide's normal force on the block at ``name``; ``Fc`` the size of
+    the contact force on the rolling body ``name`` (a wheel's link, a rack's ``block R``): a
+    gear's tooth load; of body ``name``
+    (a link's key, or ``block X``): ``Fi`` its inertia force's size ``m |a_G|``, ``Ci`` its
+    inertia couple ``-I alpha`` (signed, ccw positive), ``h`` the offset ``|I alpha| / (m
+    |a_G|)`` of the book's single force from G (0 where the body has no couple)."""
+    if kind == "Fc":
+        c = next((c for c in f.contacts if c.wheel == name), None)
+        if c is None:
+            raise SceneError(f"Fc: {name} has no rolling contact")
+        return c.load
+    if kind in ("Fi", "Ci", "h"):
+        i = f.inertia_of(name)
+        if i is None:
+            raise SceneError(f"{kind}_{name.removeprefix('block ')}: {name} has no mass in "
+                             "[masses]: no inertia force")
+        if kind == "Fi":
+            return (i.force[0] ** 2 + i.force[1] ** 2) ** 0.5
+        if kind == "Ci":
+            return i.couple
+        if i.offset is None and i.couple != 0:
+            raise SceneError(f"h_{name.removeprefix('block ')}: a_G = 0: the inertia is a "
+                             "couple alone, with no single force to offset")
+        return abs(i.offset or 0.0)
     if kind == "N":
         g = next((g for g in f.guides if g.key == name), None)
         if g is None:
@@ -369,6 +513,20 @@ def force_value(f: Forces, kind: str, name: str) -> float:
 
 def _vec(v):
     return [v[0] + 0.0, v[1] + 0.0]  # + 0.0: no -0.0 in the JSON
+
+
+def _contact_dict(c: Contact) -> dict:
+    """One contact's JSON entry: the force on the wheel by ``by`` at the contact point; for
+    teeth the pressure angle (deg, and whether the scene states it) and the tooth load, for
+    a friction grip the least friction coefficient."""
+    d = {"point": _vec(c.point), "by": c.by, "normal_force": c.normal + 0.0,
+         "tangential_force": c.tangential + 0.0, "normal": _vec(c.m), "force": _vec(c.force)}
+    if c.teeth is None:
+        d["required_friction"] = c.required_friction
+    else:
+        d.update(pressure_angle=math.degrees(c.teeth), pressure_angle_stated=c.stated,
+                 tooth_load=c.load + 0.0)
+    return d
 
 
 def forces_dict(f: Forces) -> dict:
@@ -395,15 +553,20 @@ def forces_dict(f: Forces) -> dict:
                            **({"couple": g.couple + 0.0} if g.couple is not None and
                               isinstance(g.couple, float) and g.couple else {})}
                    for g in f.guides},
-        ("input_torque" if f.driver == "crank" else "input_force"): f.input_torque + 0.0,
+        ("input_torque" if f.driver in ("crank", "wheel") else "input_force"):
+            f.input_torque + 0.0,
+        **({} if f.centre_force is None else {"centre_force": _vec(f.centre_force)}),
         f.driver: f.crank,
         **({} if f.second_crank is None else
            {"second": {"crank": f.second_crank, "input_torque": f.second_torque + 0.0}}),
-        **({"contacts": {c.wheel: {"point": _vec(c.point), "normal_force": c.normal + 0.0,
-                                   "tangential_force": c.tangential + 0.0,
-                                   "normal": _vec(c.m), "force": _vec(c.force),
-                                   "required_friction": c.required_friction}
-                         for c in f.contacts}} if f.contacts else {}),
+        **({"contacts": {c.wheel: _contact_dict(c) for c in f.contacts}}
+           if f.contacts else {}),
+        **({"friction": {"power": f.friction_power + 0.0,
+                         "guides": [{"on": it[0], "what": it[1], "force": _vec(it[2]),
+                                     "at": _vec(it[3])} for it in f.friction if len(it) == 4],
+                         "pins": [{"on": it[0], "what": it[1], "couple": it[2] + 0.0}
+                                  for it in f.friction if len(it) == 3]}}
+           if f.friction else {}),
         "shaking_force": _vec(f.shaking_force),
         "shaking_moment": f.shaking_moment + 0.0,
         "steps": [{"step": s.index + 1, "kind": s.kind, "title": s.title,

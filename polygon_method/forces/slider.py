@@ -6,7 +6,8 @@ block's push ``-N n`` at X (the guide's body is solved later, in the reverse ord
 Unknowns: ``P``, the force on the link at X by the block, and ``N``, the guide's normal
 force on the block along ``n``. The block's loads pass through X (its mass is at its pin),
 so its force balance is ``-P + N n + R = 0`` (R: the known forces on the block) and the
-guide adds no couple. The link's moments about B, where its other pin force has no arm::
+guide adds no couple. The link's moments about B, where its other pin force has no arm
+(:func:`.bodies.guided`, the relation the slotted link and the wheel share)::
 
     cross(X - B, N n + R) + M_B = 0   =>   N = -(M_B + cross(X - B, R)) / cross(X - B, n)
 
@@ -21,31 +22,25 @@ Then ``P = N n + R`` and the link's force balance gives the force on it at B, ``
 from __future__ import annotations
 
 from ..steps.rounding import vhypot
-from .bodies import Singular, any_zero, cross, outer_pin, unit
+from .bodies import Singular, cross, guided, outer_pin, unit
 from ..common.numbers import fmt
 from .records import FRAME, ForceStep, GuideForce, PinForce, Side, block
 
 
-def solve(bx, by, known_link, xx, xy, known_block, u):
+def solve(bx, by, known_link, xx, xy, known_block, u, condition=True):
     """(N, P on the link at X by the block, the force on the link at B, the condition
-    ``|(X - B) . u| / |X - B|``).
+    ``|(X - B) . u| / |X - B|``, None unless ``condition``).
 
     ``known_link``: ``(Fx, Fy, M about the origin)`` on the link; ``known_block``: the same
     on the block (its M is not used: its forces pass through X)."""
-    fx, fy, m = known_link
-    rx, ry = known_block[0], known_block[1]
-    ux, uy = u
-    nx, ny = -uy, ux
-    mb = m - cross(bx, by, fx, fy)
-    ex, ey = xx - bx, xy - by
-    den = ex * ux + ey * uy
-    size = (ex * ex + ey * ey) ** 0.5  # the link's length: never 0
-    cond = abs(den) / size
-    if any_zero(den):
+    ux, uy = u  # the link feels the block's push N n + R at X (n = perp(u))
+    n, p, fb, den = guided(bx, by, known_link, xx, xy, (-uy, ux), known_block)
+    if n is None:
         return None, None, None, 0.0
-    n = -(mb + cross(ex, ey, rx, ry)) / den
-    px, py = n * nx + rx, n * ny + ry
-    return n, (px, py), (-(fx + px), -(fy + py)), cond
+    if not condition:
+        return n, p, fb, None
+    ex, ey = xx - bx, xy - by
+    return n, p, fb, abs(den) / (ex * ex + ey * ey) ** 0.5  # the link's length: never 0
 
 
 def bodies(st) -> tuple:
@@ -72,6 +67,33 @@ def guide(st, P, own):
     m = (ux * ux + uy * uy) ** 0.5
     body = FRAME if own.get(st.g1) == FRAME and own.get(st.g2) == FRAME else st.guide
     return (ux / m, uy / m), body
+
+
+def bind(st, own, ix):
+    lk, x, b = st.link, st.point, st.b
+    bl, ob = block(x), own[st.b]
+    il, ibl, ib = ix(lk), ix(bl), ix(ob)
+    fixed = st.path is not None
+    if fixed:
+        u, gb = st.path.u, FRAME
+        ig = 0
+    else:  # a moving guide: its direction at each instant, its body known now
+        gb = FRAME if own.get(st.g1) == FRAME and own.get(st.g2) == FRAME else st.guide
+        ig = ix(gb)
+    why = f"{b}{x} stands square to the guide"
+
+    def run(P, S, pins, guides):
+        (bx, by), (xx, xy) = P[b], P[x]
+        v = u if fixed else guide(st, P, own)[0]
+        n, p, fb, _ = solve(bx, by, S.of(il), xx, xy, S.of(ibl), v, False)
+        if n is None:
+            raise Singular(why)
+        nv = (-v[1], v[0])
+        guides.append((x, n, nv, gb))
+        pins += ((x, lk, bl, p), (b, lk, ob, fb))
+        S.add(ib, -fb[0], -fb[1], bx, by)
+        S.add(ig, -(n * nv[0]), -(n * nv[1]), xx, xy)
+    return run
 
 
 def step(st, P, led, own):

@@ -7,7 +7,8 @@ The guide is frictionless: its force on the block is ``N n`` (``n = perp(u)``, `
 lever's direction as the kinematics takes it). The block's loads pass through its pin A
 (its mass is there), so the lever adds no couple and ``N n`` acts through A; the lever
 feels ``-N n`` at A. The lever's moments about its pivot K, where its pin force has no
-arm::
+arm (:func:`.bodies.guided`, the relation the slider and the wheel share, with a push
+``-N n`` and nothing else at A)::
 
     cross(A - K, -N n) + M_K = 0   =>   N = M_K / ((A - K) . u)
 
@@ -28,34 +29,27 @@ N = 2 along n = (-1, 0); the pivot holds the lever with 2 N to the left:
 from __future__ import annotations
 
 from ..steps.rounding import vhypot
-from .bodies import Singular, any_zero, cross
+from .bodies import Singular, cross, guided, least
 from ..common.numbers import fmt
 from .records import ForceStep, GuideForce, PinForce, block, Side
 
 
-def solve(kx, ky, known_lever, ax, ay, known_block, u, length):
+def solve(kx, ky, known_lever, ax, ay, known_block, u, length, condition=True):
     """(N on the block along n, the force on the lever at K, the force on the block at A,
-    the condition ``|A - K| / length``, at most 1).
+    the condition ``|A - K| / length``, at most 1; None unless ``condition``).
 
     ``known_lever``: ``(Fx, Fy, M about the origin)`` on the lever; ``known_block``: the same
     on the block (its M is not used: its forces pass through A)."""
-    fx, fy, m = known_lever
     rx, ry = known_block[0], known_block[1]
     ux, uy = u
     nx, ny = -uy, ux
-    mk = m - cross(kx, ky, fx, fy)
-    dx, dy = ax - kx, ay - ky
-    den = dx * ux + dy * uy
-    cond = abs(den) / length
-    if any_zero(den):
+    # the lever feels -N n at A, nothing else there: N is minus the push guided() finds
+    pushed, _, fk, den = guided(kx, ky, known_lever, ax, ay, (nx, ny), (0.0, 0.0))
+    if pushed is None:
         return None, None, None, 0.0
-    if isinstance(cond, float):
-        cond = min(cond, 1.0)
-    else:
-        import numpy as np
-        cond = np.minimum(cond, 1.0)
-    n = mk / den
-    return (n, (-fx + n * nx, -fy + n * ny), (-(n * nx + rx), -(n * ny + ry)), cond)
+    n = -pushed
+    cond = least(abs(den) / length, 1.0) if condition else None
+    return (n, fk, (-(n * nx + rx), -(n * ny + ry)), cond)
 
 
 def owns(st) -> dict:
@@ -66,6 +60,30 @@ def owns(st) -> dict:
 def blocks(st) -> tuple:
     """The block of this group (a mass may sit on it, at its pin)."""
     return (st.point,)
+
+
+def bind(st, own, ix):
+    lv, a, k = st.guide, st.point, st.known
+    bl = block(a)
+    ok, oa = own[k], own[a]
+    ilv, ibl, iok, ioa = ix(lv), ix(bl), ix(ok), ix(oa)
+    first, second, length = st.first, st.second, st.length
+    why = f"block {a} is at {k}, the pivot of {lv}"
+
+    def run(P, S, pins, guides):
+        (kx, ky), (ax, ay) = P[k], P[a]
+        (fx1, fy1), (fx2, fy2) = P[first], P[second]
+        ux, uy = fx2 - fx1, fy2 - fy1
+        m = (ux * ux + uy * uy) ** 0.5
+        ux, uy = ux / m, uy / m
+        n, fk, fa, _ = solve(kx, ky, S.of(ilv), ax, ay, S.of(ibl), (ux, uy), length, False)
+        if n is None:
+            raise Singular(why)
+        guides.append((a, n, (-uy, ux), lv))
+        pins += ((k, lv, ok, fk), (a, bl, oa, fa))
+        S.add(iok, -fk[0], -fk[1], kx, ky)
+        S.add(ioa, -fa[0], -fa[1], ax, ay)
+    return run
 
 
 def step(st, P, led, own):

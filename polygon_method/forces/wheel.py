@@ -12,7 +12,7 @@ C, T t) = -r T``)::
 with ``M_C`` the moment about C of the known forces on the wheel (its inertia couple, the
 loads and the pins of the links hung on it, solved before). The link's moments about B,
 with ``Q = N m + T t + R`` the wheel's push on it at C (R the known forces on the
-wheel)::
+wheel; :func:`.bodies.guided`, the relation the slider and the slotted link share)::
 
     N = -(M_B + (C - B) x (T t + R)) / ((C - B) x m)
 
@@ -33,7 +33,7 @@ wheel's push of 2 N to the right and 0 across:
 from __future__ import annotations
 
 from ..steps.rounding import vhypot
-from .bodies import Singular, any_zero, cross
+from .bodies import Singular, cross, guided
 from ..common.numbers import fmt
 from .records import FRAME, Contact, ForceStep, PinForce, Side
 
@@ -41,20 +41,15 @@ from .records import FRAME, Contact, ForceStep, PinForce, Side
 def solve(bx, by, known_link, cx, cy, known_wheel, r, m):
     """(N, T, the wheel's push Q on the link at C, the force on the link at B, the
     condition ``|(C - B) . t| / |C - B|``)."""
-    f1x, f1y, m1 = known_link
     rx, ry, mw = known_wheel
     mx, my = m
     tx, ty = -my, mx
     t = (mw - cross(cx, cy, rx, ry)) / r
-    ex, ey = cx - bx, cy - by
-    den = cross(ex, ey, mx, my)
-    cond = abs(den) / vhypot(ex, ey)
-    if any_zero(den):
+    # the link feels the wheel's push N m + (T t + R) at C
+    n, q, fb, den = guided(bx, by, known_link, cx, cy, m, (t * tx + rx, t * ty + ry))
+    if n is None:
         return None, None, None, None, 0.0
-    mb = m1 - cross(bx, by, f1x, f1y)
-    n = -(mb + cross(ex, ey, t * tx + rx, t * ty + ry)) / den
-    qx, qy = n * mx + t * tx + rx, n * my + t * ty + ry
-    return n, t, (qx, qy), (-(f1x + qx), -(f1y + qy)), cond
+    return n, t, q, fb, abs(den) / vhypot(cx - bx, cy - by)
 
 
 def owns(st) -> dict:

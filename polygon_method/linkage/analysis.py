@@ -525,8 +525,9 @@ def _intervals_below(cyc: _Cycle, f, lim):
     def end(idx, side):
         if not full and (idx < 0 or idx >= n):
             return cyc.dom.lo if idx < 0 else cyc.dom.hi
-        t = grid[idx % n] + TWO_PI * (idx // n) + side * cyc.h / 2
-        near = [c for c in crossings if abs(((c - t + math.pi) % TWO_PI) - math.pi) <= cyc.h]
+        per = cyc.dom.period
+        t = grid[idx % n] + per * (idx // n) + side * cyc.h / 2
+        near = [c for c in crossings if abs(((c - t + per / 2) % per) - per / 2) <= cyc.h]
         return near[0] if near else t
 
     out = []

@@ -7,7 +7,7 @@ from ..common.tolerances import SAME
 
 import numpy as np
 
-from ..solver.tracking import TWO_PI, Sweeper, degrees_fn, merge, run_arrays, valid_mask
+from ..solver.tracking import Sweeper, degrees_fn, merge, run_arrays, valid_mask
 from .shapes import _GRID
 
 
@@ -31,7 +31,7 @@ class _Cycle:
         self.sw = sw = Sweeper(scene)
         self.dom = dom = sw.domain
         self.plan = sw.plan
-        span = TWO_PI if dom.full_turn else dom.hi - dom.lo
+        span = dom.period if dom.full_turn else dom.hi - dom.lo
         self.grid = dom.lo + span * (np.arange(n) + 0.5) / n
         self.h = span / n
         self.fr = sw.evaluate(self.grid)
@@ -88,7 +88,7 @@ class _Cycle:
         grid = self.grid
         if self.dom.full_turn and not self.dom.turn_only:  # close the turn (a turn after
             # which the mechanism is not where it started is not closed: its seam is no zero)
-            grid = np.append(grid, grid[0] + TWO_PI)
+            grid = np.append(grid, grid[0] + self.dom.period)
             g = np.append(g, g[0])
             ok = np.append(ok, ok[0])
         s = np.sign(g)

@@ -250,7 +250,7 @@ def turning_moment(scene: Scene) -> TurningMoment:
     """The turning-moment diagram's numbers over the engine's cycle (see the module)."""
     g = _geometry(scene)
     ind = scene.indicator
-    cycle = ind.cycle if ind is not None else 2 * math.pi
+    cycle = scene.cycle
     breaks = _breaks(scene, g, cycle)
     work = float(_integrals(scene, g, breaks).sum())
     mean = work / cycle

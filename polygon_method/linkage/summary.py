@@ -49,6 +49,8 @@ class _Reducer:
         self.scene, self.sw = scene, sw
         self.plan = sw.plan
         self.best = {}  # name -> [max, imax, min, imin, unit, what]
+        self.forces_left_out = None  # why the force analysis is not summarised, or None
+        self.force_names = set()  # the names of the force analysis's quantities
         dom = sw.domain  # the parameter's size of a radian: a driving block's travel / 2 pi
         self.rad = 1.0 if dom.periodic else (dom.hi - dom.lo) / TWO_PI
 
@@ -91,9 +93,58 @@ class _Reducer:
             yield "force", "N", t, "input force, along the guide"
         elif t is not None:
             yield "torque", "N m", t, "input torque, ccw +"
+        if sc.has_forces:
+            yield from self.force_quantities(fr)
         for st in branch_steps(plan):
             name, unit, words = st.condition_column()  # "deg": the sine, shown as the angle
             yield name, unit, fr.cond[st.index], words
+
+    def force_quantities(self, fr: Motion):
+        """The force analysis's quantities over the angles of ``fr`` (named as the sweep's
+        CSV columns): the driver's torque (or force) with inertia, a second crank's, the
+        shaking force (its size) and moment, each guide's normal force (signed), each pin
+        force's size, an engine's piston effort, crank effort and turning moment. None where
+        the analysis does not cover the plan or fails at one of the angles: then
+        :attr:`forces_left_out` says why, and the summary says so."""
+        from ..common.errors import PolygonMethodError
+        from ..forces import analyse  # lazy: a scene without masses never loads forces/
+        from ..forces.engine import efforts
+        m = Motion(self.scene, fr.plan or self.plan, fr.theta, fr.P, fr.V, fr.A, fr.W, fr.Al,
+                   fr.S, fr.cond, fr.bad)  # (a chunk's motion knows no scene)
+        try:
+            f = analyse(m)
+            e = efforts(self.scene, m.plan, fr.P, f)
+        except PolygonMethodError as exc:
+            self.forces_left_out = exc.message
+            return
+        for item in self._force_items(f, e, fr.n):
+            self.force_names.add(item[0])
+            yield item
+
+    @staticmethod
+    def _force_items(f, e, n):
+        """(name, unit, array, what) of :meth:`force_quantities` from the forces ``f`` and
+        an engine's efforts ``e`` (or None) at ``n`` angles."""
+        def b(v):
+            return np.broadcast_to(np.asarray(v, dtype=float), (n,))
+
+        if f.driver == "crank":
+            yield "torque_inertia", "N m", b(f.input_torque), "driving torque with inertia, ccw +"
+        else:
+            yield "force_inertia", "N", b(f.input_torque), "driving force with inertia"
+        if f.second_crank is not None:
+            yield "torque2_inertia", "N m", b(f.second_torque), "second crank's torque, ccw +"
+        yield "shake", "N", (b(f.shaking_force[0]), b(f.shaking_force[1])), "shaking force"
+        yield "shake_moment", "N m", b(f.shaking_moment), "shaking moment about O, ccw +"
+        for g in f.guides:
+            yield f"N_{g.point}", "N", b(g.normal), "guide's normal force, signed"
+        for p in f.pins:
+            yield (f"F_{p.point}_{p.on}_{p.by}".replace(" ", ""), "N",
+                   (b(p.force[0]), b(p.force[1])), "pin force")
+        if e is not None:
+            yield "piston_effort", "N", b(e.F_P), "towards the crank"
+            yield "crank_effort", "N", b(e.F_T), "in the sense of rotation"
+            yield "turning_moment", "N m", b(e.T), "in the sense of rotation"
 
     @staticmethod
     def shown(unit, value):
@@ -165,6 +216,9 @@ class _Reducer:
         for k, t in enumerate(live):
             name, sense = t[0], t[1]
             sl = slice(17 * k, 17 * k + 17)
+            if name not in q:  # (the force analysis failed at these angles)
+                t[3] = t[2]
+                continue
             vals = np.where(invalid[sl], -np.inf, q[name][sl] * sense)
             j = int(np.argmax(vals))
             if not np.isfinite(vals[j]):
@@ -184,8 +238,19 @@ class _Reducer:
             step = np.abs(np.diff(theta[:10001]))
             spacing = float(np.median(step))
         cps = [c.theta for c in dom.change_points]
+        notes = tuple(dom.notes)
+        if self.forces_left_out is not None:  # at some angles: none of them summarised
+            for nm in self.force_names:
+                self.best.pop(nm, None)
+            notes += (f"the forces are not summarised: {self.forces_left_out}",)
         tasks, rows = [], []
         scales = self._scales()
+        if self.force_names:  # forces and moments: a 1e-9 part of the largest is rounding
+            size = lambda b: max(abs(b[0]), abs(b[2]))  # noqa: E731
+            F = max([size(b) for b in self.best.values() if b[4] == "N"] + [0.0])
+            scales["N"] = F
+            scales["N m"] = max([F * scales["m"]] + [size(b) for b in self.best.values()
+                                                     if b[4] == "N m"])
         limits = [lp.theta for lp, _ in self._limits_in(theta, spacing)]
         noise = self._noise(theta)
         for name, (mx, imx, mn, imn, unit, what, cmax, cmin) in self.best.items():
@@ -252,7 +317,7 @@ class _Reducer:
         if not dom.full_turn:
             rng = (deg(dom.lo), deg(dom.hi))
         return Summary(self.scene, requested, evaluated, extremes, dom.limits,
-                       dom.change_points, tuple(dom.notes), formulas, rng, deg)
+                       dom.change_points, notes, formulas, rng, deg)
 
     def _limit_positions(self, rows, theta, spacing):
         """Where the crank rocks, a slider's extreme place may be at a limit position of
@@ -301,7 +366,7 @@ class _Reducer:
                 (tm,), _ = dom.map(np.array([row[5]]))
                 d = cp.theta - float(tm)
                 if dom.full_turn:
-                    d = (d + math.pi) % TWO_PI - math.pi
+                    d = (d + 0.5 * dom.period) % dom.period - 0.5 * dom.period
                 if abs(d) < near and lo <= row[5] + d <= hi:
                     row[4], row[5] = 0.0, row[5] + d
 
@@ -454,8 +519,8 @@ def summarize(scene: Scene, angles=None, *, chunk: int = CHUNK, refine: bool = T
     Each extreme found between samples is then refined by zooming in on it."""
     if angles is None and not compile_plan(scene).steps[0].periodic:
         angles = stroke_places(scene)  # a driving block: its travel
-    th_req = sweep_angles(angles)
     sw = Sweeper(scene)
+    th_req = sweep_angles(angles, sw.domain.turns)
     sw.stated_branch()
     ok = angles_ok(sw, th_req)
     th = th_req if ok is None else th_req[ok]

@@ -31,6 +31,7 @@ from ..common.tolerances import FLOOR, SAME
 from ..solver.compiler import compile_plan
 from ..steps.base import Instant
 from ..scene import FixedPath, Scene
+from ..scene.force_records import rolling_body
 
 __all__ = ["solve", "Solution", "PinRubbing", "sense", "fmt_angular"]
 
@@ -212,14 +213,14 @@ class Solution(Motion):
         """The JSON's sliders, cylinders and pins (each key only where the scene has them)."""
         sc = self.scene
         d = {}
-        if sc.sliders:
+        if sc.blocks:  # a driving wheel's centre is no slider: see the rolling entry
             d["sliders"] = {s.key: {"sliding_velocity": self.S[s.key][0],
                                     "sliding_acceleration": self.S[s.key][1],
                                     "coriolis": list(self.coriolis(s.key)),
                                       "guide": (s.label if isinstance(s, FixedPath) else
                                                 f"block {s.yoke}" if hasattr(s, "yoke")
                                                 else s.guide)}
-                            for s in sc.sliders}
+                            for s in sc.blocks}
         if sc.cylinders:
             d["cylinders"] = {c.key: {"length": self.cylinder_length(c.key),
                                       "extension_rate": self.S[c.key][0],
@@ -247,8 +248,9 @@ class Solution(Motion):
                                          "omega": inp.omega, "alpha": inp.alpha}
         if inp.second is not None:
             two = inp.second
-            d["second"] = {"crank": two.crank, "angle": two.angle,
-                           "omega": two.omega, "alpha": two.alpha}
+            d["second"] = ({"crank": two.crank, "angle": two.angle,
+                            "omega": two.omega, "alpha": two.alpha} if two.block is None
+                           else self.plan.steps[1].second_record(sc))  # a collar's
         res = self.plan.given
         if res is not None:
             g = inp.given
@@ -259,7 +261,9 @@ class Solution(Motion):
         return d
 
     def _rolling_dict(self) -> dict:
-        """The JSON's rolling contacts: the wheel's point at each (empty without rolling)."""
+        """The JSON's rolling contacts: the wheel's point at each (empty without rolling);
+        a driving wheel's also its centre, the centre's velocity and acceleration along its
+        ground line (signed along the line's direction) and the line."""
         contacts = {}
         for st in self.plan.steps:
             c = st.contact_motion(self)
@@ -267,8 +271,13 @@ class Solution(Motion):
                 contacts[st.bodies()[0]] = c
         if not contacts:
             return {}
-        return {"rolling": {k: {"contact": list(c[0]), "velocity": list(c[1]),
-                                "acceleration": list(c[2])} for k, c in contacts.items()}}
+        d = {k: {"contact": list(c[0]), "velocity": list(c[1]), "acceleration": list(c[2])}
+             for k, c in contacts.items()}
+        for s in self.scene.wheel_paths:
+            d.setdefault(s.wheel, {}).update(
+                {"centre": s.point, "centre_velocity": self.S[s.key][0],
+                 "centre_acceleration": self.S[s.key][1], "line": s.label})
+        return {"rolling": d}
 
     def to_dict(self) -> dict:
         """The JSON contract of ``solve --json`` (SI, ccw positive)."""
@@ -331,13 +340,14 @@ class Solution(Motion):
             if not self.scene.has_forces:
                 return self.input_torque
             f = self.forces
-            if f.driver != "crank":  # a driving block's or cylinder's effort is a force
+            if f.driver not in ("crank", "wheel"):  # a block's or cylinder's effort: a force
                 raise SceneError(f"torque: {f.crank} drives this mechanism with a force, not "
                                  "a torque (solve gives it as the input force)")
             return f.input_torque
-        if kind in ("F", "N"):
+        if kind in ("F", "N", "Fc", "Fi", "Ci", "h"):
             from ..forces import force_value  # lazy, as in `forces`
-            return force_value(self.forces, kind, names[0])
+            return force_value(self.forces, kind, rolling_body(self.scene, names) if kind == "Fc"
+                               else names[0])
         if kind in ("vu", "au"):  # the guide's point under a block (v_A1, a_A1)
             return hypot(*self.under_block(names[0], "velocity" if kind == "vu"
                                            else "acceleration"))

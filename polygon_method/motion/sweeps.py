@@ -257,11 +257,11 @@ def stroke_places(scene: Scene, n: int = 361):
     return dom.lo + (dom.hi - dom.lo) * (np.arange(n) + 0.5) / n
 
 
-def sweep_angles(angles):
-    """The crank angles of a sweep (radians) as an array: every degree when None; anything that is
-    not numbers is refused in one line."""
+def sweep_angles(angles, turns=1):
+    """The crank angles of a sweep (radians) as an array: every degree of ``turns`` turns (the
+    motion's period) when None; anything that is not numbers is refused in one line."""
     if angles is None:
-        return np.radians(np.arange(360.0))
+        return np.radians(np.arange(360.0 * turns))
     try:
         th = np.atleast_1d(np.asarray(angles, dtype=float))
     except (TypeError, ValueError):
@@ -279,17 +279,18 @@ def sweep_angles(angles):
 
 def sweep(scene: Scene, angles=None, *, chunk: int = CHUNK) -> SweepResult:
     """Every quantity of ``solve`` at each crank angle in ``angles`` (rad; default every
-    degree of a turn), in one pass per chunk of angles.
+    degree of a turn, or of the turns after which the motion repeats), in one pass per
+    chunk of angles.
 
     Angles the crank cannot reach on the scene's branch (beyond a limit position) are left
     out and reported (``left_out``, ``limits``), never filled with NaN or another branch.
     """
     if angles is None and not compile_plan(scene).steps[0].periodic:
         angles = stroke_places(scene)  # a driving block: its travel
-    th_req = sweep_angles(angles)
     if isinstance(chunk, bool) or not isinstance(chunk, (int, np.integer)) or chunk < 1:
         raise SceneError(f"chunk = {chunk!r}: a whole number of crank angles, 1 or more")
     sw = Sweeper(scene)
+    th_req = sweep_angles(angles, sw.domain.turns)
     sw.stated_branch()
     plan = sw.plan
     ok = angles_ok(sw, th_req)

@@ -149,7 +149,7 @@ def _html(fr: Frames) -> str:
         pics.picture(k).save(buf, format="PNG", compress_level=1)
         frames_.append("data:image/png;base64," + base64.b64encode(buf.getvalue()).decode())
     data = json.dumps({"pictures": frames_, "fps": FPS,
-                       "angles": [f"{a % 360:.1f}" for a in fr.degrees]}, separators=(",", ":"))
+                       "angles": [f"{a % fr.cycle_degrees:.1f}" for a in fr.degrees]}, separators=(",", ":"))
     title = escape(fr.sol.scene.title or "mechanism")
     w, h = pics.size
     return f"""<!DOCTYPE html>
@@ -216,7 +216,7 @@ def _svg(fr: Frames) -> str:
         x_at += w + 0.5
         height = max(height, h + 1.5)
     title = escape(fr.sol.scene.title or "mechanism")
-    deg = ";".join(f"{d % 360:.1f}" for d in fr.degrees)
+    deg = ";".join(f"{d % fr.cycle_degrees:.1f}" for d in fr.degrees)
     return (f'<svg xmlns="http://www.w3.org/2000/svg" width="{x_at:.2f}cm" '
             f'height="{height:.2f}cm" viewBox="0 0 {x_at:.3f} {height:.3f}" '
             f'font-family="sans-serif">\n<title>{title}: the diagrams over the crank\'s cycle '

@@ -150,7 +150,9 @@ def _unders(sol) -> dict:
 def inertia_arrows(res, n):
     """The inertia forces ``-m a_G`` of a scene with masses, per frame, drawn at G on the
     configuration diagram at one round force scale (the largest over the cycle at most
-    :data:`INERTIA_CM`): ``{"text", "perCm", "bodies": [{"body", "label", "G", "F"}]}``;
+    :data:`INERTIA_CM`), each along the line offset from G that carries the couple
+    (:func:`offset_points`, ``H``): ``{"text", "perCm", "bodies": [{"body", "label", "G",
+    "F", "H"}]}``;
     None without masses, or where the force analysis does not cover the plan."""
     if not res.scene.has_forces:
         return None
@@ -162,11 +164,37 @@ def inertia_arrows(res, n):
         return None
     size = max(float(np.max(np.broadcast_to(np.hypot(*i.force), (n,)))) for i in f.inertia)
     s = newton_scale(size, INERTIA_CM)
+    reach = max(lk.length for lk in res.scene.links)
     return {"text": display_unit(s.text), "perCm": s.per_cm,
             "bodies": [{"body": i.body,
                         "label": side_label(Side("inertia", i.body, "", "", (0.0, 0.0),
                                                  (0.0, 0.0)), f.numbers),
-                        "G": _flat(i.G), "F": _flat(i.force)} for i in f.inertia]}
+                        "G": _flat(i.G), "F": _flat(i.force),
+                        "H": _flat(offset_points(i, n, reach))} for i in f.inertia]}
+
+
+def offset_points(inertia, n, reach):
+    """Per frame, the point of the single resultant's line nearest G, as a book draws the
+    inertia force: ``G + (M / |F|^2) (Fy, -Fx)`` with M the couple ``-I alpha`` (its moment
+    about G is then M); G itself where the body has no couple, no force, or where the line
+    would lie farther than ``reach`` (the longest link) from G (the force nearly zero: the
+    couple alone).
+
+    >>> from types import SimpleNamespace as NS
+    >>> i = NS(G=(0.0, 0.0), force=(10.0, 0.0), couple=-2.0)   # moment of F at H: -2
+    >>> [round(float(c), 12) for c in np.ravel(offset_points(i, 1, 1.0))]
+    [0.0, 0.2]
+    """
+    gx, gy = (np.broadcast_to(np.asarray(c, dtype=float), (n,)) for c in inertia.G)
+    fx, fy = (np.broadcast_to(np.asarray(c, dtype=float), (n,)) for c in inertia.force)
+    m = np.broadcast_to(np.asarray(inertia.couple, dtype=float), (n,))
+    f2 = fx * fx + fy * fy
+    with np.errstate(divide="ignore", invalid="ignore"):
+        k = np.where(f2 > 0, m / np.where(f2 > 0, f2, 1.0), 0.0)
+    dx, dy = k * fy, -k * fx
+    far = np.hypot(dx, dy) > reach
+    dx, dy = np.where(far, 0.0, dx), np.where(far, 0.0, dy)
+    return gx + dx, gy + dy
 
 
 def page_style() -> dict:
@@ -217,6 +245,7 @@ def page_data(fr: Frames) -> dict:
                    for name, s in zip(DIAGRAMS, fr.scales)],
         "theta": [round(float(t), 6) for t in fr.degrees],
         "start": fr.start, "fullTurn": fr.full_turn, "limits": fr.limits_text,
+        "cycle": fr.cycle_degrees,  # the angles shown modulo it (720: a four-stroke)
         "crank": sc.input.crank, "pivot": sc.input.pivot,
         **({} if sol.plan.steps[0].periodic else {"param": list(fr.parameter)}),
         "ground": {p: [float(c) for c in xy] for p, xy in sc.ground.items()},

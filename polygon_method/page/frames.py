@@ -75,7 +75,8 @@ class Frames:
     ``res`` is the :class:`~polygon_method.motion.sweeps.SweepResult` (its ``theta`` in frame
     order), ``sol`` the solution at the scene's instant (frame ``start``), ``scales`` the
     (space, velocity, acceleration) scales of the step table, ``full_turn`` whether the crank
-    turns fully.
+    turns fully, ``cycle`` the crank's angle (rad) the frames go over when it does: the
+    scene's cycle (``Scene.cycle``: two turns for a four-stroke engine).
     """
 
     res: object
@@ -83,6 +84,13 @@ class Frames:
     scales: tuple
     start: int
     full_turn: bool
+    cycle: float = 2 * math.pi
+
+    @property
+    def cycle_degrees(self) -> float:
+        """The cycle in degrees (360, or 720 for a four-stroke engine): the angles shown
+        are taken modulo it, so that 390 deg stays 30 deg into a four-stroke's second turn."""
+        return math.degrees(self.cycle)
 
     def __len__(self):
         return len(self.res)
@@ -120,11 +128,13 @@ class Frames:
 
 
 def frame_angles(scene, n: int, domain) -> tuple[np.ndarray, int]:
-    """``n`` crank angles (rad) over the cycle and the index of the scene's own angle."""
+    """``n`` crank angles (rad) over the cycle and the index of the scene's own angle: over
+    a full turn, the scene's whole cycle (two turns for a four-stroke engine, whose gas
+    force repeats only after them) from its own angle in the crank's sense."""
     t0 = scene.input.angle
     if domain.full_turn:
         sense = -1.0 if scene.input.omega < 0 else 1.0
-        return t0 + sense * (2 * math.pi / n) * np.arange(n), 0
+        return t0 + sense * (cycle_of(scene, domain) / n) * np.arange(n), 0
     lo, hi = domain.lo, domain.hi
     pad = INSIDE * (hi - lo)
     th = np.linspace(lo + pad, hi - pad, max(n - 1, 1))
@@ -156,7 +166,14 @@ def frames(scene, n: int = DEFAULT_FRAMES) -> Frames:
     kept = res.theta
     if len(kept) != len(th):  # angles at a singular position were left out
         start = int(np.argmin(np.abs(kept - scene.input.angle)))
-    return Frames(res, sol, scales, start, bool(domain.full_turn))
+    return Frames(res, sol, scales, start, bool(domain.full_turn), cycle_of(scene, domain))
+
+
+def cycle_of(scene, domain) -> float:
+    """The crank's angle (rad) the frames of a full turn go over: the motion's period where
+    it repeats only after several turns (a gear train: ``domain.period``), else the scene's
+    cycle (two turns for a four-stroke engine)."""
+    return domain.period if domain.turns > 1 else scene.cycle
 
 
 def need_frames(fr) -> Frames:

@@ -121,7 +121,12 @@ def _cycle_words(fr: Frames) -> str:
     """What the frames go over: a full turn, a block's travel or the range between the crank's
     limit positions (and what the polygons do near its ends)."""
     block = not fr.sol.plan.steps[0].periodic  # a block driven along its guide
-    return "a full turn of the crank" if fr.full_turn else \
+    turns = round(fr.cycle_degrees / 360)
+    gears = fr.res.domain.turns > 1  # a gear train back only after several turns
+    return ("a full turn of the crank" if turns == 1 else
+            f"{turns} turns of the crank (the motion repeats only after them)" if gears else
+            f"the engine's whole cycle, {turns} turns of the crank "
+            f"({fr.cycle_degrees:g}°)") if fr.full_turn else \
         f"the block's travel ({fr.limits_text}): near an end where the mechanism stops " \
         "assembling the polygons grow without bound and run off their panels" if block else \
         f"the range between the limit positions ({fr.limits_text}): the crank cannot " \
@@ -136,7 +141,7 @@ def _figures_html(d: dict) -> str:
     for s in d["scales"]:
         diagram = s["diagram"]
         forces = "" if diagram != "configuration" or not d.get("inertia") else \
-            f'; inertia forces at G: <b id="scale-inertia">{escape(d["inertia"]["text"])}</b>'
+            f'; inertia forces (each on its line h from G): <b id="scale-inertia">{escape(d["inertia"]["text"])}</b>'
         figs.append(f'<figure><figcaption>{escape(_CAPTION[diagram])}: <b class="scale" '
                     f'id="scale-{diagram}">{escape(s["text"])}</b>{forces}</figcaption>'
                     f'<svg class="diagram" id="{diagram}" '
@@ -185,7 +190,7 @@ one scale over the cycle; each polygon is drawn, at each angle, at the round sca
 (1, 2 or 5 x 10<sup>k</sup> per cm) at which it fills its panel, stated above it (a centimetre
 of the screen as the browser measures it, 96 px = 2.54 cm; the step-by-step solution states
 the scales of a drawing on paper). The stated instant is {symbol} =
-{fmt(sc.input.angle / sc.length_unit) + unit if block else fmt(math.degrees(sc.input.angle) % 360) + unit}{escape(f" ({sc.input.angle_words})" if sc.input.angle_words else "")}. Hover over a vector or a point for its
+{fmt(sc.input.angle / sc.length_unit) + unit if block else fmt(math.degrees(sc.input.angle) % fr.cycle_degrees) + unit}{escape(f" ({sc.input.angle_words})" if sc.input.angle_words else "")}. Hover over a vector or a point for its
 value, or tap it.</p>
 {f'<ul>{notes}</ul>' if notes else ''}
 <div class="diagrams">

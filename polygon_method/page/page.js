@@ -32,9 +32,11 @@ function angular(x, unit) {
   return fmt(Math.abs(x)) + " " + unit + s;
 }
 const deg = (t) => (((t % 360) + 360) % 360).toFixed(1);
+// a crank angle as shown: modulo the cycle (720 for a four-stroke engine: 390 is not 30)
+const CYCLE = D.cycle || 360, inCycle = (t) => ((t % CYCLE) + CYCLE) % CYCLE;
 // what the frames step through: the crank angle, or a driving block's place (D.param)
 const PARAM = D.param || ["crank angle", "θ", "°"];
-const at = (t) => D.param ? t.toFixed(1) + PARAM[2] : deg(t) + "°";
+const at = (t) => D.param ? t.toFixed(1) + PARAM[2] : inCycle(t).toFixed(1) + "°";
 const dir = (x, y) => deg(Math.atan2(y, x) * 180 / Math.PI);
 const esc = (s) => String(s).replace(/&/g, "&amp;").replace(/</g, "&lt;").replace(/>/g, "&gt;");
 const sub = (base, s) => base + "<sub>" + esc(s) + "</sub>";  // v_B typeset: v with B below
@@ -140,8 +142,9 @@ function arrowsBox(per) {  // [x0, y0, x1, y1] in mm, y down
     for (const [x, y] of vertices("configuration", k)) put(10 * x / per, -10 * y / per);
     for (const a of D.inertia.bodies) {
       const gx = 10 * a.G[2 * k] / per, gy = -10 * a.G[2 * k + 1] / per;
-      put(gx, gy);
-      put(gx + f * a.F[2 * k], gy - f * a.F[2 * k + 1]);
+      const hx = 10 * a.H[2 * k] / per, hy = -10 * a.H[2 * k + 1] / per;
+      put(gx, gy); put(hx, hy);
+      put(hx + f * a.F[2 * k], hy - f * a.F[2 * k + 1]);
     }
   }
   return b;
@@ -231,8 +234,11 @@ function setup(phase) {
     for (const [p, q, key] of D.links) add(el(svg, "line", {class: "link", stroke: D.style.body[1], id: "c-link-" + key}, "link:" + key), "link", [p, q, key]);
     for (const s of D.sliders) add(el(svg, "polygon", {class: "block", fill: D.style.body[0], stroke: D.style.body[1]}, "slider:" + s.key), "block", s);
     for (const p in D.ground) add(el(svg, "polygon", {class: "ground"}, "ground:" + p), "ground", p);
-    if (D.inertia) for (const b of D.inertia.bodies)  // each inertia force -m a_G at G
+    if (D.inertia) for (const b of D.inertia.bodies) {  // each inertia force -m a_G, along
+      // its line offset from G by h = I alpha / (m a_G) (the couple taken into the force)
+      add(el(svg, "line", styled("inertia", {"stroke-width": r3(0.6 * PT), "stroke-dasharray": r3(2 * PT) + " " + r3(1.5 * PT)}), "offset:" + b.body), "offset", b);
       add(el(svg, "line", styled("inertia", {"marker-end": head("inertia")}), "inertia:" + b.body), "inertia", b);
+    }
     for (const p of Object.keys(D.ground).concat(D.points)) {
       add(el(svg, "circle", {class: "joint point", r: r3(FS * 0.18), stroke: D.style.body[1]}, "point:" + p), "joint", p);
       add(text(svg, {class: "label", id: "c-lab-" + p}, p, "point:" + p), "label", p);
@@ -322,10 +328,14 @@ function update(phase, k) {
       pole = [pole[0], pole[1] - 0.35 * fs];  // its middle, which the other labels keep clear of
     } else if (kind === "label") labels.push([e, P(x)]);
     else if (kind === "inertia") {  // at the inertia forces' own scale (cm of the panel)
-      const g = C([x.G[2 * k], x.G[2 * k + 1]]), F = [x.F[2 * k], x.F[2 * k + 1]];
+      const h = C([x.H[2 * k], x.H[2 * k + 1]]), F = [x.F[2 * k], x.F[2 * k + 1]];
       const d = [10 * F[0] / D.inertia.perCm, -10 * F[1] / D.inertia.perCm];
       e.style.display = Math.hypot(d[0], d[1]) < 0.5 ? "none" : "";
-      line(e, g, [g[0] + d[0], g[1] + d[1]]);
+      line(e, h, [h[0] + d[0], h[1] + d[1]]);
+    } else if (kind === "offset") {  // G to the force's line, where it is off G
+      const g = C([x.G[2 * k], x.G[2 * k + 1]]), h = C([x.H[2 * k], x.H[2 * k + 1]]);
+      e.style.display = Math.hypot(h[0] - g[0], h[1] - g[1]) < 0.5 ? "none" : "";
+      line(e, g, h);
     }
   }
   placeLabels(labels, phase, v.box, pole);
@@ -442,8 +452,15 @@ function tipText(tip, k) {
   if (kind === "coriolis") return "Coriolis component at " + name + " = 2ωv = " + fmt(Math.hypot(D.S[name][2][k], D.S[name][3][k])) + " m/s²";
   if (kind === "inertia") {
     const b = D.inertia.bodies.find((x) => x.body === name);
+    const h = Math.hypot(b.H[2 * k] - b.G[2 * k], b.H[2 * k + 1] - b.G[2 * k + 1]);
     return "inertia force " + b.label + " of " + name + " = m·a_G = " + fmt(Math.hypot(b.F[2 * k], b.F[2 * k + 1])) +
-      " N, at G, opposite to a_G (drawn at " + D.inertia.text + ")";
+      " N, opposite to a_G, " + (h > 0 ? "along the line h = " + fmt(h / f) + " " + u + " from G that carries the couple I·α" : "through G") +
+      " (drawn at " + D.inertia.text + ")";
+  }
+  if (kind === "offset") {
+    const b = D.inertia.bodies.find((x) => x.body === name);
+    return "the inertia force of " + name + " is offset from G by h = I·α / (m·a_G) = " +
+      fmt(Math.hypot(b.H[2 * k] - b.G[2 * k], b.H[2 * k + 1] - b.G[2 * k + 1]) / f) + " " + u;
   }
   if (kind === "slider" || kind === "guide") return "slider " + name + ": sliding velocity " + fmt(D.S[name][0][k]) + " m/s";
   return name;
@@ -517,9 +534,9 @@ function buildPlots() {
     }
     const turned = Math.abs(t1 - t0), dstep = [5, 10, 15, 30, 45, 60, 90, 180].find((s) => turned / s <= 6) || 360;
     for (let j = Math.ceil(Math.min(t0, t1) / dstep - 1e-9); j * dstep <= Math.max(t0, t1) + 1e-9; j++) {
-      const t = j * dstep;  // a round angle, written between 0 and 360
+      const t = j * dstep;  // a round angle, written between 0 and the cycle (360 or 720)
       el(svg, "line", {x1: r3(X(t)), y1: T, x2: r3(X(t)), y2: H - B, class: "grid"});
-      text(svg, {x: r3(X(t)), y: H - B + 11, class: "tick", "text-anchor": "middle"}, D.param ? at(t) : String(((t % 360) + 360) % 360) + "°");
+      text(svg, {x: r3(X(t)), y: H - B + 11, class: "tick", "text-anchor": "middle"}, D.param ? at(t) : String(inCycle(t)) + "°");
     }
     el(svg, "line", {x1: L, y1: T, x2: L, y2: H - B, class: "axis"});
     text(svg, {x: (L + W - R) / 2, y: H - 6, class: "axis-title", "text-anchor": "middle"},

@@ -217,7 +217,7 @@ class Pictures:
         name, symbol, unit = self.fr.parameter
         at = self.fr.degrees[k]
         self.text(im, (GAP * SS + w + 24 * SS, 8 * SS),
-                  f"{name} {symbol} = {at % 360 if unit == '°' else at:.1f}{unit}", self._big)
+                  f"{name} {symbol} = {at % self.fr.cycle_degrees if unit == '°' else at:.1f}{unit}", self._big)
         for i, phase in enumerate(DIAGRAMS):
             x0 = (GAP + i * (PANEL + GAP)) * SS
             self.text(im, (x0, (TOP + 2) * SS), f"{_TITLE[phase]}: {self.scale_text(phase, k)}",

@@ -199,7 +199,8 @@ def read_angle(raw, where: str, *, dead=None, sense: float | None = None,
         raise SceneError(f"'{shown}' gives two senses: give one, cw or ccw")
     given = _SENSE.get(s1 or s2 or "")
     target = target.strip()
-    dc = re.fullmatch(r"(inner|outer|top|bottom) dead centre|(idc|odc|tdc|bdc)", target)
+    dc = re.fullmatch(r"(inner|outer|top|bottom|head[- ]?end|crank[- ]?end) dead centre|"
+                      r"(idc|odc|tdc|bdc)", target)
     if word != "from" and not dc:
         raise SceneError(f"'{shown}': past/before go with a dead centre (\"30 deg past the "
                          f"inner dead centre\"); {good}")
@@ -208,6 +209,8 @@ def read_angle(raw, where: str, *, dead=None, sense: float | None = None,
             raise SceneError(f"'{shown}': a dead centre is a position of the crank; only "
                              f"[input] angle may be measured from it; {good}")
         said = dc.group(1) or dc.group(2)[0]
+        if said[0] in "hc" and said.endswith("end"):  # US books: the cylinder head's end
+            said = "inner" if said[0] == "h" else "outer"  # is the inner, the crank's the outer
         inner = said in ("inner", "i", "top", "t")
         name = {"i": "inner", "o": "outer", "t": "top", "b": "bottom"}.get(said, said)
         turning = 1 if sense is None or sense > 0 else -1

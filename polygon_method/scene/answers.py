@@ -17,7 +17,22 @@ __all__ = ["decimal_comma", "ENGINE_ANSWERS"]
 
 #: the engine chapter's answer keys -> their unit kind (checked in check/engine.py)
 ENGINE_ANSWERS = {"piston_effort": "force", "crank_effort": "force", "T_mean": "torque",
-                  "dE_max": "energy", "I_flywheel": "moment_of_inertia", "m_flywheel": "mass"}
+                  "dE_max": "energy", "I_flywheel": "moment_of_inertia", "m_flywheel": "mass",
+                  "rod_thrust": "force", "side_thrust": "force", "shaking_force": "force",
+                  "shaking_moment": "torque"}
+
+
+def _bare(value) -> bool:
+    """A number without a unit (``20``, ``"20"``).
+
+    >>> _bare(20), _bare("20.5"), _bare("20 mm")
+    (True, True, False)
+    """
+    try:
+        float(str(value))
+    except ValueError:
+        return False
+    return True
 
 
 _COMMA_NUMBER = re.compile(r"^(\s*[-+]?)(\d*),(\d+)(?![\d.,])(.*)$", re.S)
@@ -145,7 +160,8 @@ class _Answers:
             if getattr(self, "two_inputs", False):
                 raise self.error("with two inputs one power balance does not give the two "
                                  "driving torques: no torque answer", "answers", key)
-            if getattr(self, "driving_block", None):
+            if getattr(self, "driving_block", None) and not (
+                    forces and getattr(self, "driving_wheel", None)):
                 raise self.error(f"the block {self.driving_block} drives the mechanism: its "
                                  "driving effort is a force along its guide, not a torque "
                                  "(solve prints it; no torque answer)", "answers", key)
@@ -166,9 +182,9 @@ class _Answers:
             raise self.error(f"unknown answer key{hint() or _suggest(key, examples)}; keys are v_X, "
                              "a_X, v_XY, a_XY, omega_L, alpha_L, vs_X, as_X, ac_X, rub_X, "
                              "torque, I_ij (a centre), vI_L, aI_L (a wheel's contact point), "
-                             "F_X, N_X (forces)", "answers", key)
+                             "F_X, N_X, Fi_L, Ci_L, h_L, Fc_L (forces)", "answers", key)
         kind, what, sense_ok = ANSWER_KINDS[prefix]
-        if what in ("pin_force", "guide") and not forces:
+        if what in ("pin_force", "guide", "body", "contact") and not forces:
             raise self.error(f"{key}: a force answer needs the force analysis: give "
                              "[masses] or [gravity]", "answers", key)
         if prefix in UNDER_BLOCK_KINDS and rest not in known:
@@ -215,6 +231,28 @@ class _Answers:
             if len(names) != 1 or names[0] not in known:
                 raise self.error(f"F_X names a pin: no point {rest} in the scene"
                                  f"{_which_point(rest, known)}", "answers", key)
+        elif what == "contact":  # a rolling contact's force: the wheel's link, a rack's point
+            pairs = getattr(self, "rolling_pairs", ()) or ()
+            lk = self.index.get(frozenset(names)) if len(names) == 2 else None
+            if not ((lk is not None and lk.key in {r.wheel for r in pairs}) or
+                    (len(names) == 1 and names[0] in {r.rim for r in pairs if r.on == "rack"})):
+                raise self.error(f"Fc_{rest}: {rest} is no wheel of [rolling] and no rack (the "
+                                 "key names a rolling wheel's link, e.g. Fc_AP, or a rack's "
+                                 "point)", "answers", key)
+        elif what == "body":  # a link, or the block at a slider's point
+            if rest in slider_names or (len(names) == 1 and names[0] in slider_names):
+                names = (f"block {slider_names[rest].point if rest in slider_names else rest}",)
+            elif len(names) != 2 or frozenset(names) not in self.index:
+                raise self.error(f"{prefix}_X names a link (Fi_AB) or a slider's block (Fi_B): "
+                                 f"no link or block {rest}", "answers", key)
+            else:
+                names = (self.index[frozenset(names)].key,)
+            if prefix == "h":
+                q = self.qty(value, "length", "answers", key, default_unit=self.unit,
+                             refuse_absurd=False)
+                if _bare(value):  # a bare length is in the scene's unit: say so
+                    raw_text = f"{raw_text} {self.unit}"
+                return Answer(key, prefix, names, q.value, None, raw_text, line)
         elif what == "guide":
             if len(names) != 1 or names[0] not in slider_names:
                 raise self.error(f"N_X names a slider's block: no slider {rest} in "

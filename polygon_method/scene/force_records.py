@@ -1,12 +1,13 @@
 """The force chapter's records of a scene: a body's mass (:class:`Mass`), gravity
-(:class:`Gravity`), an engine's indicator diagram (:class:`Indicator`) and the flywheel asked
-for (:class:`Flywheel`). The scene's other records are in :mod:`.records`."""
+(:class:`Gravity`), an engine's indicator diagram (:class:`Indicator`), the flywheel asked
+for (:class:`Flywheel`) and friction (:class:`Friction`); the rolling body an answer names
+(:func:`rolling_body`). The scene's other records are in :mod:`.records`."""
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
-__all__ = ["Mass", "Gravity", "Indicator", "Flywheel"]
+__all__ = ["Mass", "Gravity", "Indicator", "Flywheel", "Friction", "rolling_body"]
 
 
 @dataclass(frozen=True)
@@ -71,3 +72,21 @@ class Flywheel:
     radius: float | None = None
     gyration: float | None = None
     words: str = ""
+
+
+@dataclass(frozen=True)
+class Friction:
+    """Coulomb friction for the force analysis (``[friction]``): ``guides``, the
+    coefficient at every sliding guide (the friction ``mu |N|`` opposing the block's
+    sliding), ``pins``, the coefficient at every pin with a size in ``[pins]`` (the friction
+    circle of radius ``mu r``: a couple ``mu r |F|`` opposing the relative turning)."""
+    guides: float = 0.0
+    pins: float = 0.0
+
+
+def rolling_body(scene, names) -> str:
+    """The rolling body an answer's names give (``Fc_AP``): the wheel's link key, or a
+    rack's ``block R``."""
+    if len(names) == 1:
+        return f"block {names[0]}"
+    return scene.link("-".join(names)).key

@@ -47,6 +47,30 @@ def _extending(raw):
     return raw
 
 
+#: "1.5 m/s outward", "2 m/s towards O", "inwards", "away from O": the sliding's sense
+_SENSE = re.compile(r"^\s*(.*?\S)\s+(outwards?|inwards?|(?:towards?|away from)\s+"
+                    r"([A-Z][0-9]*))\s*$", re.IGNORECASE)
+
+
+def outward(raw, pivot, other):
+    """A collar's rate as a scene gives it, signed outward (from the pivot towards the rod's
+    other end): ``"1.5 m/s outward"``, ``"2 m/s towards O"`` (its pivot: inward), ``"away
+    from O"``; a plain signed quantity unchanged. Returns (text, sign) or None for a word
+    naming neither end of the rod."""
+    if not isinstance(raw, str):
+        return raw, 1.0
+    m = _SENSE.match(raw)
+    if not m:
+        return raw, 1.0
+    word, name = m.group(2).lower(), m.group(3)
+    if name is None:
+        return m.group(1), (-1.0 if word.startswith("in") else 1.0)
+    if name not in (pivot, other):
+        return None
+    toward = word.startswith("toward")
+    return m.group(1), (1.0 if toward == (name == other) else -1.0)
+
+
 def _given_key(key):
     """(prefix, names) of an [input] key naming a given motion or its rate (``vs_B`` ->
     ("vs", ("B",))), or None."""
@@ -257,13 +281,8 @@ class _Input:
             raise self.error("block names the driving block's point, e.g. block = \"A\"",
                              "input", "block")
         sl = self.slider_points.get(name)
-        if sl is not None and hasattr(sl, "guide") and not sl.slot:  # along a moving link
-            raise self.error(f"block {name} slides along the moving link {sl.guide}: a driving "
-                             "block slides on a fixed straight guide; a block driven along a "
-                             "turning link (its speed relative to the link given, beside the "
-                             "link's own motion) is a second input, which is not solved yet: "
-                             f"pin {name} to a link, or drive a block on a fixed guide",
-                             "input", "block")
+        if sl is not None and hasattr(sl, "guide") and not sl.slot:  # along a moving rod
+            return self.collar_input(spec, sl, ground)
         if not isinstance(sl, FixedPath) or sl.slot:
             raise self.error(f"no block {name} on a fixed path in [sliders] (the driving block "
                              "slides on a fixed straight guide: A = { path = \"horizontal\" })",
@@ -307,23 +326,101 @@ class _Input:
                 raise self.error(f"{name} = {spec[name]} is {abs(off) / self.scale():.6g} "
                                  f"{self.unit} off the guide of {name}: give a point of it",
                                  "input", name)
-        stroke = None
-        if "stroke" in spec:
-            raw = spec["stroke"]
-            if not isinstance(raw, list) or len(raw) != 2:
-                raise self.error("stroke is [from, to]: the block's places along its guide "
-                                 "(as s), e.g. stroke = [-400, 400]", "input", "stroke")
-            a, b = (self.length(v, "input", "stroke", positive=False) for v in raw)
-            if not a < b:
-                raise self.error(f"stroke = {raw}: from must be less than to", "input",
-                                 "stroke")
-            if not a <= s <= b:
-                raise self.error(f"the block's place s = {s / self.scale():.6g} {self.unit} is "
-                                 f"outside its stroke {raw}", "input", "stroke")
-            stroke = (a, b)
+        stroke = self.stroke(spec, s, "input", "the block's places along its guide (as s), "
+                             "e.g. stroke = [-400, 400]", "block")
         self.driving_block = name  # (a torque answer is refused: a block is driven by a force)
         return Input(None, None, name, s, vs, acc, printable(str(spec[vs_key])), block=name,
                      stroke=stroke)
+
+    def stroke(self, spec, s, table, example, what):
+        """``stroke = [a, b]`` of a driving block or collar at place ``s``: (a, b) in m, or
+        None where the table gives none."""
+        if "stroke" not in spec:
+            return None
+        raw = spec["stroke"]
+        if not isinstance(raw, list) or len(raw) != 2:
+            raise self.error(f"stroke is [from, to]: {example}", table, "stroke")
+        a, b = (self.length(v, table, "stroke", positive=False) for v in raw)
+        if not a < b:
+            raise self.error(f"stroke = {raw}: from must be less than to", table, "stroke")
+        if not a <= s <= b:
+            raise self.error(f"the {what}'s place s = {s / self.scale():.6g} {self.unit} is "
+                             f"outside its stroke {raw}", table, "stroke")
+        return (a, b)
+
+    def collar_input(self, spec, sl, ground, table="input"):
+        """``block = "C"`` for a collar C of [sliders] sliding along a rod (``C = { along =
+        "O-A" }``): ``vs_C`` its sliding relative to the rod (signed outward, from the rod's
+        fixed pivot towards its other end, or "outward", "towards O"), ``as_C`` the rate of
+        it (default 0), ``s_C`` its place along the rod from the pivot (or ``C = [x, y]``),
+        ``stroke = [a, b]`` the places a sweep runs over (optional)."""
+        name = sl.point
+        rod, pts = self.find_link(sl.guide, table, "block")
+        pivots = [p for p in pts if p in ground]
+        if len(pivots) != 1:
+            raise self.error(f"the collar {name} slides along the rod {rod.key}, which is "
+                             "pivoted on the frame at "
+                             + ("both ends: it cannot turn" if pivots else "neither end")
+                             + ": the rod of a driving collar turns about one point of "
+                             "[ground]" + ("" if table != "input" or pivots else
+                                          " (a rod that a crank moves: drive the crank, with "
+                                          f"the collar as [input.second] block = \"{name}\")"),
+                             table, "block")
+        K = pivots[0]
+        N = rod.other(K)
+        allowed = ("block", f"s_{name}", f"vs_{name}", f"as_{name}", name, "stroke")
+        for k in spec:
+            if k not in allowed:
+                why = ("unknown key" if k not in INPUT_KEYS and k != "second" else
+                       "a collar drives the mechanism: there is no crank, so no crank, "
+                       "angle, speed or acceleration" if table == "input" else
+                       "the second input is the collar's sliding (the crank is [input]'s)")
+                raise self.error(f"{why}; with block = \"{name}\" (a collar on the rod "
+                                 f"{rod.key}), [{table}] takes vs_{name} (its sliding along the "
+                                 f"rod), as_{name}, s_{name} (its place from {K}) or {name} = "
+                                 "[x, y], and stroke = [from, to]", table, k)
+        vs_key, as_key, s_key = f"vs_{name}", f"as_{name}", f"s_{name}"
+        if vs_key not in spec:
+            raise self.error(f"[{table}] has no {vs_key}: add the collar's sliding along its "
+                             f"rod, e.g. {vs_key} = \"1.5 m/s outward\" (or \"towards {K}\")",
+                             table)
+
+        vs = self.collar_rate(spec, vs_key, "velocity", rod.key, K, N, table)
+        if vs == 0:
+            raise self.error(f"{vs_key} is zero: nothing moves", table, vs_key)
+        acc = self.collar_rate(spec, as_key, "acceleration", rod.key, K, N, table) \
+            if as_key in spec else 0.0
+        if (s_key in spec) == (name in spec):
+            raise self.error(f"[{table}] gives the collar's place "
+                             f"{'twice' if name in spec else 'not at all'}: {s_key} = 300 (from "
+                             f"the rod's pivot {K} towards {N}) or {name} = [x, y], one only",
+                             table, s_key if s_key in spec else None)
+        hint = None
+        if s_key in spec:
+            s = self.length(spec[s_key], table, s_key, positive=False)
+        else:
+            x, y = self.coords(spec[name], table, name)
+            s = math.hypot(x - ground[K][0], y - ground[K][1])
+            hint = (x, y)
+        stroke = self.stroke(spec, s, table, "the collar's places along its rod from "
+                             f"{K} (as s), e.g. stroke = [100, 400]", "collar")
+        if table == "input":
+            self.driving_block = name
+        self.collar_hint = (name, hint) if hint is not None else None
+        return Input(None, None, name, s, vs, acc, printable(str(spec[vs_key])), block=name,
+                     stroke=stroke)
+
+    def collar_rate(self, spec, key, kind, rod, K, N, table):
+        """A collar's sliding (or its rate) along its rod K-N, signed outward."""
+        said = outward(spec[key], K, N)
+        if said is None:
+            raise self.error(f"{spec[key]!r}: towards which end of the rod {rod}? say "
+                             f"\"outward\", \"towards {K}\" or \"towards {N}\"", table, key)
+        text, sign = said
+        if isinstance(text, (int, float)) and not isinstance(text, bool) and text == 0:
+            return 0.0
+        return sign * self.qty(text, kind, table, key,
+                               default_unit=next(iter(UNITS[kind]))).value
 
     def placed_at(self, key, raw, near):
         """``length_OR = 850`` (two points' distance, a cylinder's length), ``s_B = 300`` (a
@@ -361,6 +458,15 @@ class _Input:
         if not isinstance(spec, dict):
             raise self.error("the second input is a table: [input.second] with crank, "
                              "angle, speed", "input", "second")
+        if "block" in spec:  # a collar sliding along the turning crank
+            sl = self.slider_points.get(spec["block"]) if isinstance(spec["block"], str) \
+                else None
+            if sl is None or not hasattr(sl, "guide") or sl.slot:
+                raise self.error(f"{spec['block']!r}: the second input's block is a collar "
+                                 "sliding along a turning rod, C = { along = \"O-A\" } in "
+                                 "[sliders] (a block on a fixed guide as a second input is "
+                                 "not solved)", "input.second", "block")
+            return self.collar_input(spec, sl, ground, table="input.second")
         for k in spec:
             if k not in INPUT_KEYS:
                 why = (" (a block driven along a turning link, the collar on a rotating rod, "

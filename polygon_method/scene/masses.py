@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 
 from ..common.units import did_you_mean
-from .records import Gravity, Mass, split_name
+from .records import Friction, Gravity, Mass, split_name
 from .tables import _unit_at
 
 #: the g of a book (m/s^2), when [gravity] does not give its own
@@ -131,6 +131,28 @@ class _Masses:
         text = f"g = {g:g} m/s^2 " + ("downwards" if u == (0.0, -1.0) else
                                        f"at {math.degrees(ang):g} deg")
         return Gravity(g, u, text)
+
+
+    def friction(self, pins):
+        """[friction]: None without the table (frictionless, as the books start)."""
+        if "friction" not in self.raw:
+            return None
+        spec = self.table("friction")
+        out = {}
+        for k, v in spec.items():
+            if k not in ("guides", "pins"):
+                raise self.error(f"unknown key '{k}'{_did_you_mean(k, ('guides', 'pins'))}: "
+                                 "[friction] takes guides and pins (coefficients)",
+                                 "friction", k)
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not 0 <= v < 1:
+                raise self.error(f"{k} = {v!r}: a coefficient of friction, a number from 0 "
+                                 "up to (not) 1", "friction", k)
+            out[k] = float(v)
+        if out.get("pins") and not pins:
+            raise self.error("friction at the pins needs their sizes: give [pins] (each pin's "
+                             "diameter or radius: the friction circle's radius is mu r)",
+                             "friction", "pins")
+        return Friction(**out)
 
 
 def _did_you_mean(word, choices=_LINK_KEYS) -> str:

@@ -318,10 +318,14 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
                    if isinstance(s, FixedPath) and s.through[1] is None else s
                    for s in sliders]
         assembly = self.assembly(known)
+        hint = getattr(self, "collar_hint", None)  # a driving collar placed by [x, y]
+        if hint is not None:
+            assembly.setdefault(*hint)
         pins = self.pins(known)
         loads = self.loads(known)
         masses = self.masses(points, sliders)
         gravity = self.gravity()
+        friction = self.friction(pins)
         indicator = self.indicator(sliders)
         flywheel = self.flywheel()
         tolerance, answers = self.answers(known, sliders, pins, loads) \
@@ -340,7 +344,8 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
                      source=source if isinstance(source, str) else None, variation=variation,
                      variant=variant, reading_notes=tuple(self.read_notes), _link_index=index,
                      rolling=tuple(rolling), masses=tuple(masses), gravity=gravity,
-                     indicator=indicator, flywheel=flywheel, _lines=tuple(self.lines))
+                     indicator=indicator, flywheel=flywheel, friction=friction,
+                     _lines=tuple(self.lines))
 
     def scale(self):
         return UNITS["length"][self.unit]
@@ -438,6 +443,7 @@ def parse_answers(text: str, scene: Scene, file: str | None = None, *,
     loader.two_inputs = scene.input.second is not None
     loader.scene_forces = scene.has_forces
     loader.driving_block = scene.input.block
+    loader.driving_wheel = scene.input.wheel
     loader.rolling_pairs = scene.rolling
     loader.ground = scene.ground
     tolerance, answers = loader.answers(set(scene.point_names), scene.sliders, scene.pins,

@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 
 from ..common.errors import SceneError
 from ..common.units import ABSURD, TINY, UNITS
-from .force_records import Flywheel, Gravity, Indicator, Mass  # noqa: F401  (re-exported)
+from .force_records import Flywheel, Friction, Gravity, Indicator, Mass  # noqa: F401  (re-exported)
 
 POINT_NAME = re.compile(r"[A-Z][0-9]*")
 _POINT_ONLY = re.compile(r"^[A-Z][0-9]*\Z")  # \Z: "A\n" is no point name
@@ -26,7 +26,7 @@ _ABSURD_SHORT = 1e-7
 
 TOP_KEYS = ("title", "source", "notes", "units", "ground", "links", "points", "sliders",
             "cylinders", "rolling", "assembly", "input", "pins", "loads", "answers", "variants",
-            "variant", "masses", "gravity", "indicator", "flywheel")
+            "variant", "masses", "gravity", "indicator", "flywheel", "friction")
 INPUT_KEYS = ("crank", "angle", "speed", "acceleration")
 #: the kinds of quantity on which [input] may give the motion instead of the crank's speed
 #: (named as answer keys: ``omega_BC``, ``vs_B``, ``v_B``), with their rate's prefix
@@ -48,6 +48,13 @@ ANSWER_KINDS = {
     # pin joining two bodies, of a guide's normal force on its block
     "F": ("force", "pin_force", False),
     "N": ("force", "guide", False),
+    # a body's inertia (link L, or the block at X): the size of its force -m a_G, its
+    # couple -I alpha (ccw positive, or a sense), the offset h of the book's single force
+    "Fi": ("force", "body", False),
+    "Ci": ("torque", "body", True),
+    "h": ("length", "body", False),
+    # the contact force's size at rolling wheel L (a tooth load; a rack by its point)
+    "Fc": ("force", "contact", False),
 }
 #: the answer kinds of the guide's point under a block (``v_A1``, ``a_A1``: its image a1)
 UNDER_BLOCK_KINDS = {"v": "vu", "a": "au"}
@@ -269,9 +276,13 @@ class RollingPair:
       with the gear ``base`` (``wheel`` is the block's point, ``centre`` None).
 
     ``inside``: the wheel rolls inside the circle (a ring, an internal gear).
+    ``ring``: the wheel is itself a ring (an internal gear) about its centre, the gear it
+    meshes with inside it (``inside`` is then true as well: the pair meshes internally).
     ``base_radius``: the circle's radius as the problem states it (None: from the centre
     distance). ``angle``: the direction centre -> rim (rad) at the scene's crank angle
     (None: towards the contact point). ``label``: the line or circle in words.
+    ``pressure_angle``: the teeth's pressure angle (rad) a gear, circle or rack states (None:
+    the default, 20 deg): the tooth load's line of action.
     """
 
     wheel: str
@@ -288,6 +299,8 @@ class RollingPair:
     inside: bool = False
     base_radius: float | None = None
     angle: float | None = None
+    ring: bool = False
+    pressure_angle: float | None = None
 
 
 @dataclass(frozen=True)
@@ -339,13 +352,10 @@ class Input:
     #: the first to the last position where the mechanism assembles
     stroke: tuple | None = None
     #: a wheel rolling on a fixed line driving the mechanism (``[input] wheel = "CP"``): its
-    #: link, or None. Then ``block`` is its centre, moving on the line parallel to the ground
-    #: at the wheel's radius (its path in the scene's sliders), ``angle``, ``omega``,
-    #: ``alpha`` the centre's place, velocity and acceleration along it (as for a block),
-    #: ``speed_text`` the wheel's angular velocity as the scene gave it
-    wheel: str | None = None
-    #: a driving wheel's motion given on its centre (``vs_C``, ``as_C``) instead of its own
-    #: omega and alpha: the keys so given (the step table says which were given)
+    #: link, or None. Then ``block`` is its centre, on the line parallel to the ground at the
+    #: wheel's radius (its path in the sliders), ``angle``, ``omega``, ``alpha`` the centre's
+    #: place, velocity and acceleration along it (as for a block), ``speed_text`` the wheel's
+    wheel: str | None = None  # omega as given; ``wheel_given`` the keys vs_C, as_C if given
     wheel_given: tuple = ()
     #: an angle the scene gave in a book's words: (words, the angle they gave (rad), the
     #: slips a reader of them might make (:class:`~.angles.Slip`), the note saying how
@@ -438,6 +448,8 @@ class Scene:
     #: asked for (:class:`Flywheel`), or None
     indicator: Indicator | None = None
     flywheel: Flywheel | None = None
+    #: Coulomb friction at the guides and the pins (:class:`Friction`), or None
+    friction: Friction | None = None
     #: where the problem comes from (the scene's ``source``), for headings
     source: str | None = field(default=None, compare=False)
     #: the scene's [variants] (what may vary per student), and [variant] (which one it is)
@@ -549,7 +561,20 @@ class Scene:
     def blocks(self) -> tuple:
         """The sliders that are blocks: every slider record but a driving wheel's centre
         path (``[input] wheel``: no block is there, the wheel's centre moves along it)."""
-        return tuple(s for s in self.sliders if not getattr(s, "wheel", ""))
+        paths = self.wheel_paths
+        return tuple(s for s in self.sliders if s not in paths)
+
+    @property
+    def wheel_paths(self) -> tuple:
+        """The slider records that are no block: a driving wheel's centre path (keyed by
+        the centre; its ``wheel`` names the wheel's link)."""
+        return tuple(s for s in self.sliders if getattr(s, "wheel", ""))
+
+    @property
+    def cycle(self) -> float:
+        """The crank's angle (rad) over which the motion and its forces repeat: two turns
+        for a four-stroke engine's indicator diagram (4 pi), else one turn (2 pi)."""
+        return self.indicator.cycle if self.indicator is not None else 2 * math.pi
 
     def slots(self, point: str) -> tuple:
         """Every slider record at ``point``: one for a block, two for a peg in two slots."""
@@ -561,8 +586,9 @@ class Scene:
 
     @property
     def has_forces(self) -> bool:
-        """Whether the scene asks for the force analysis: it gives masses or gravity."""
-        return bool(self.masses) or self.gravity is not None or self.indicator is not None
+        """Whether the scene asks for the force analysis: masses, gravity or friction."""
+        return bool(self.masses) or self.gravity is not None or self.indicator is not None \
+            or self.friction is not None
 
     def rolling_of(self, point: str):
         """The rolling pair whose wheel has ``point`` as its rim point, or None."""

@@ -11,12 +11,16 @@ wheel); its value says what the wheel rolls on::
     "O-S" = { on = "C-B", on_radius = 30 }          # a gear about O driven by a gear fixed
                                                     # to link CB, centred at C (Watt's sun
                                                     # and planet)
+    "O-Q" = { on = "A-P", ring = true }             # a ring (internal gear) about O driven
+                                                    # by the planet A-P inside it
 
 ``radius`` is the wheel's rolling (pitch) radius (default: its link's length, the point
 on the pitch circle); ``on_radius`` the circle's, when the problem states it (it must then
 agree with the centre distance); ``angle`` the direction centre -> point at the stated
 crank angle (default: towards the contact point); ``side`` which side of a line the wheel
-is on (``above`` by default, ``right`` of a vertical line).
+is on (``above`` by default, ``right`` of a vertical line). ``pressure_angle`` (a gear, a
+planet on a circle, a rack): the teeth's pressure angle, which sets the tooth load's line
+of action in the force analysis (default 20 deg; 0 for a tangential force alone).
 """
 
 from __future__ import annotations
@@ -26,7 +30,8 @@ import re
 
 from .records import RollingPair, split_name
 
-_KEYS = ("on", "through", "radius", "on_radius", "inside", "angle", "side")
+_KEYS = ("on", "through", "radius", "on_radius", "inside", "angle", "side", "ring",
+         "pressure_angle")
 _SIDES = ("above", "below", "left", "right")
 
 
@@ -36,6 +41,18 @@ def _unit_at(ang):
     if abs(q - k) <= 1e-12:
         return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[k % 4]
     return (math.cos(ang), math.sin(ang))
+
+
+def _pressure_angle(rd, spec, key):
+    """The teeth's pressure angle (rad) the pair states, or None (the default, 20 deg); from
+    0 up to 45 deg."""
+    if "pressure_angle" not in spec:
+        return None
+    a = rd.qty(spec["pressure_angle"], "angle", "rolling", key, default_unit="deg").value
+    if not 0.0 <= a <= math.pi / 4 + 1e-12:
+        raise rd.error(f"pressure_angle = {spec['pressure_angle']!r}: from 0 to 45 deg (the "
+                       "teeth's angle, 20 deg by default)", "rolling", key)
+    return a
 
 
 def _rack(rd, key, spec, ground, sliders, _suggest):
@@ -51,9 +68,10 @@ def _rack(rd, key, spec, ground, sliders, _suggest):
         raise rd.error(f"the rack {key} needs its place: through = [x, y] in [sliders] (where "
                        "its point is at the instant shown)", "rolling", key)
     for k in spec:
-        if k not in ("on", "on_radius"):
-            raise rd.error(f"unknown key '{k}' for a rack{_suggest(k, ('on', 'on_radius'))}; "
-                           "a rack has on (its pinion) and on_radius", "rolling", key)
+        if k not in ("on", "on_radius", "pressure_angle"):
+            raise rd.error(f"unknown key '{k}' for a rack"
+                           f"{_suggest(k, ('on', 'on_radius', 'pressure_angle'))}; a rack has "
+                           "on (its pinion), on_radius and pressure_angle", "rolling", key)
     if "on" not in spec:
         raise rd.error(f"the rack {key} has no pinion: add on = \"O-A\" (a gear turning "
                        "about a ground point)", "rolling", key)
@@ -65,7 +83,8 @@ def _rack(rd, key, spec, ground, sliders, _suggest):
     return RollingPair(key, None, key, 0.0, "rack", f"the pinion {base.key}", base=base.key,
                        base_centre=fixed[0],
                        base_radius=(rd.length(spec["on_radius"], "rolling", key)
-                                    if "on_radius" in spec else None))
+                                    if "on_radius" in spec else None),
+                       pressure_angle=_pressure_angle(rd, spec, key))
 
 
 def read_rolling(rd, ground, sliders, points) -> list:
@@ -108,15 +127,29 @@ def read_rolling(rd, ground, sliders, points) -> list:
         inside = spec.get("inside", False)
         if not isinstance(inside, bool):
             raise rd.error("inside = true or false", "rolling", key)
+        ring = spec.get("ring", False)
+        if not isinstance(ring, bool):
+            raise rd.error("ring = true or false", "rolling", key)
+        if ring and inside:
+            raise rd.error("ring = true: the wheel is the ring and the gear it meshes with is "
+                           "inside it; inside = true says the opposite (keep one)",
+                           "rolling", key)
         angle = (rd.qty(spec["angle"], "angle", "rolling", key, default_unit="deg").value
                  if "angle" in spec else None)
         on = spec["on"]
         if not isinstance(on, str):
             raise rd.error(f"on = {on!r}: " + example[example.index("{"):], "rolling", key)
         line = on in ("horizontal", "vertical") or re.match(r"^\s*[-+.\d]", on)
+        if ring and (line or on in ground):
+            raise rd.error(f"ring = true: a ring meshes with a gear inside it (on = a gear's "
+                           f"link such as \"A-P\"), not with {'a line' if line else 'a fixed circle'}",
+                           "rolling", key)
         if line:
             if "inside" in spec or "on_radius" in spec:
                 raise rd.error("a line has no inside and no radius", "rolling", key)
+            if "pressure_angle" in spec:
+                raise rd.error("a wheel on a line grips by friction: it has no teeth and no "
+                               "pressure angle (remove pressure_angle)", "rolling", key)
             if "through" not in spec:
                 raise rd.error(f"the ground line of wheel {key} needs a point: through = "
                                "[x, y] or a ground point's name", "rolling", key)
@@ -168,7 +201,8 @@ def read_rolling(rd, ground, sliders, points) -> list:
         if on in ground:
             out.append(RollingPair(link.key, centre, rim, radius, "circle",
                                    f"the fixed circle about {on}", base_centre=on,
-                                   inside=inside, base_radius=base_radius, angle=angle))
+                                   inside=inside, base_radius=base_radius, angle=angle,
+                                   pressure_angle=_pressure_angle(rd, spec, key)))
             continue
         if len(split_name(on)) != 2:
             raise rd.error(f"on = {on!r} is no line, ground point or gear (a link such as "
@@ -189,7 +223,10 @@ def read_rolling(rd, ground, sliders, points) -> list:
         if gc == centre:
             raise rd.error(f"the gear {base.key} and the wheel {link.key} have one centre "
                            f"{centre}: gears in mesh have two", "rolling", key)
+        if ring and base_radius is None:  # the gear inside it a wheel: its pitch radius
+            base_radius = next((r.radius for r in out if r.wheel == base.key), None)
         out.append(RollingPair(link.key, centre, rim, radius, "gear", f"the gear {base.key}",
-                               base=base.key, base_centre=gc, inside=inside,
-                               base_radius=base_radius, angle=angle))
+                               base=base.key, base_centre=gc, inside=inside or ring,
+                               base_radius=base_radius, angle=angle, ring=ring,
+                               pressure_angle=_pressure_angle(rd, spec, key)))
     return out

@@ -130,6 +130,7 @@ def wheel_input(rd, spec, ground):
         vs = omega * r * along
         stroke = (s, s + turn) if vs > 0 else (s - turn, s)
     rd.driving_block = C  # (a torque answer is refused: the driver is given no crank)
+    rd.driving_wheel = W  # (but with masses or gravity: the driver's torque on the wheel)
     rd.slider_points[C] = path
     return Input(None, None, C, s, omega * r * along, alpha * r * along,
                  str(spec.get(w_key, spec.get(v_key))).strip(), block=C, stroke=stroke, wheel=W,

@@ -39,8 +39,10 @@ from .completion import gas_towards_crank, given_completed, place
 from .plan import Bodies, Dims, Plan, _bodies_at
 from ..scene import GuideSlider, Scene, key_line
 from ..steps import TIERS, Context, Crank, cylinder
+from ..steps import collar
 from ..steps.block import BlockDriver
 from ..steps.rolling_driver import WheelDriver
+from ..steps.second_collar import second_collar
 from ..steps.second_crank import SecondCrank
 
 __all__ = ["compile_plan", "gruebler"]
@@ -300,9 +302,10 @@ class _Compiler:
         guide searched from its through point either way, as far as the links reach, past
         the stated place too (each end to about 1e-6 of that reach)."""
         sc, inp = self.scene, self.scene.input
+        through = getattr(sc.slider(inp.block), "through", None)  # a collar: from its pivot
         span = 2.0 * sum(lk.length for lk in sc.links) + max(
-            (math.dist(xy, sc.slider(inp.block).through) for xy in sc.ground.values()),
-            default=0.0)
+            (math.dist(xy, through) for xy in sc.ground.values()),
+            default=0.0) if through is not None else sum(lk.length for lk in sc.links)
         lo, hi = min(inp.angle, 0.0) - span, max(inp.angle, 0.0) + span
         grid = [lo + (hi - lo) * k / (n - 1) for k in range(n)]
         bad = fails(grid)
@@ -354,6 +357,9 @@ class _Compiler:
             self.add(WheelDriver(0, inp.block, path, self.fmt(pr.through), self.unit,
                                  self.uname, wheel=inp.wheel, radius=pr.radius,
                                  ground_words=pr.label, along=along))
+        elif inp.block is not None and collar.is_collar(sc):  # a collar driven along its rod
+            self.used_sliders.add(inp.block)
+            self.add(collar.driver(self, sc, gruebler))
         elif inp.block is not None:  # a block on a fixed guide drives: its place is the input
             path = sc.slider(inp.block)
             named = [p for p, xy in sc.ground.items() if xy == path.through]
@@ -364,7 +370,9 @@ class _Compiler:
             crank = self.bodies._links.get(inp.crank) or sc.link(inp.crank)
             self.add(Crank(0, crank.key, inp.pivot, inp.tip, crank.length))
         two = inp.second
-        if two is not None:  # two degrees of freedom: the second crank is the next step
+        if two is not None and two.block is not None:  # a collar sliding along the crank
+            self.add(second_collar(self, two))
+        elif two is not None:  # two degrees of freedom: the second crank is the next step
             link = sc.link(two.crank)
             self.add(SecondCrank(1, link.key, two.pivot, two.tip, link.length, two.angle,
                                  two.omega, two.alpha, inp.angle, inp.omega))
@@ -568,9 +576,9 @@ class _Compiler:
                 f"{mob}: the mechanism is under-constrained; the block"
                 f"{'' if one else 's'} {', '.join(free)} slide{'s' if one else ''} freely "
                 f"along {'its guide' if one else 'their guides'}: nothing places "
-                f"{'it' if one else 'them'} (pin {'it' if one else 'them'} to a link; a block "
-                "driven along a moving guide, its sliding given beside the guide's own motion, "
-                "is a second input, which is not solved yet)", file=sc.file,
+                f"{'it' if one else 'them'} (pin {'it' if one else 'them'} to a link; or drive "
+                f"{'it' if one else 'one'} along its guide as a second input: [input.second] "
+                f"block = \"{free[0]}\" with vs_{free[0]}, s_{free[0]})", file=sc.file,
                 key=f"[sliders] {', '.join(free)}")
         parts = []
         if extra_links:

@@ -63,7 +63,9 @@ class Domain:
     """The crank angles reachable from the scene's instant on its branch.
 
     ``lo <= theta <= hi`` (rad, continuous with the scene's angle); ``full_turn`` when the
-    crank turns fully (then ``hi = lo + 2 pi``). ``segments`` are ``(start, end, plan)``
+    crank turns fully (then ``hi = lo + 2 pi turns``: the whole period of the motion,
+    ``turns`` turns of the crank where a wheel turns a fraction of a turn more per turn of
+    the crank and the mechanism is back only after several). ``segments`` are ``(start, end, plan)``
     with the plan (its branches) valid between change points.
     """
 
@@ -83,16 +85,23 @@ class Domain:
     #: fraction of a turn more per turn of the crank): every angle is taken on this turn
     #: (``map``), and the notes say after how many turns the motion repeats
     turn_only: bool = False
+    #: the motion's period in turns of the crank (a full turn's domain spans all of them)
+    turns: int = 1
+
+    @property
+    def period(self) -> float:
+        """The crank's turn over which the motion repeats (rad): 2 pi times ``turns``."""
+        return TWO_PI * self.turns
 
     def map(self, theta):
-        """Crank angles (rad, any turn) -> the same angles in ``[lo, lo + 2 pi)`` and a mask
+        """Crank angles (rad, any turn) -> the same angles in ``[lo, lo + period)`` and a mask
         of those the crank reaches (a block driver's places: themselves, and a mask of those
         in its stroke)."""
         if not self.periodic:
             t = np.asarray(theta, dtype=float)
             tol = ROUNDING * max(abs(self.lo), abs(self.hi), self.hi - self.lo)
             return t, (t >= self.lo - tol) & (t <= self.hi + tol)
-        t = self.lo + np.mod(np.asarray(theta, dtype=float) - self.lo, TWO_PI)
+        t = self.lo + np.mod(np.asarray(theta, dtype=float) - self.lo, self.period)
         if self.full_turn:
             return t, np.ones(t.shape, dtype=bool)
         return t, t <= self.hi + ROUNDING
@@ -109,11 +118,13 @@ def degrees_fn(dom: Domain):
     """Radians -> the degrees shown, within one turn, [0, 360): for a full turn and for a
     crank that reaches only a range alike (a range that passes 0 is written "300 to 40
     (through 0)"). A block driver's places (m) are shown in the scene's length unit
-    instead."""
+    instead; a motion that repeats only after several turns, within them ([0, 1080) for
+    three)."""
     if not dom.periodic:
         return lambda t: float(t) / dom.unit
+    whole = 360.0 * dom.turns
 
     def deg(t):
-        d = math.degrees(t) % 360.0
-        return 0.0 if d >= 360.0 - 5e-4 else d
+        d = math.degrees(t) % whole
+        return 0.0 if d >= whole - 5e-4 else d
     return deg

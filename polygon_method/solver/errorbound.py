@@ -327,10 +327,14 @@ def bounds_dict(sol, b=None) -> dict:
                     for p in sc.point_names},
          "links": {lk.key: {"omega": b.W.get(lk.key, EPS), "alpha": b.Al.get(lk.key, EPS)}
                    for lk in sc.links}}
-    if sc.sliders:
+    if sc.blocks:
         d["sliders"] = {s.key: dict(zip(("sliding_velocity", "sliding_acceleration",
                                          "coriolis"), b.S.get(s.key, (EPS,) * 3)))
-                        for s in sc.sliders}
+                        for s in sc.blocks}
+    if sc.wheel_paths:  # a driving wheel's centre along its line, keyed as in `rolling`
+        d["rolling"] = {s.wheel: dict(zip(("centre_velocity", "centre_acceleration"),
+                                          b.S.get(s.key, (EPS,) * 2)))
+                        for s in sc.wheel_paths}
     if sc.pins:
         d["pins"] = {pin[0]: {"rubbing_velocity": b.rubbing(pin)} for pin in sol.plan.pins}
     if sc.loads and sc.input.second is None:

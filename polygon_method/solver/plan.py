@@ -205,8 +205,39 @@ class Plan:
         """The dimensions of ``scene``, a mechanism of this plan's shape."""
         bodies = Bodies(scene)
         inp = scene.input
-        return Dims(dict(scene.ground), tuple(st.dimensions(scene, bodies) for st in self.steps),
-                    inp.angle, inp.omega, inp.alpha, {p.point: p.radius for p in scene.pins})
+        if any(getattr(st, "instant_dimensions", False) for st in self.steps):
+            steps = self._instant_dimensions(scene, bodies)
+        else:
+            steps = tuple(st.dimensions(scene, bodies) for st in self.steps)
+        return Dims(dict(scene.ground), steps, inp.angle, inp.omega, inp.alpha,
+                    {p.point: p.radius for p in scene.pins})
+
+    def _instant_dimensions(self, scene: Scene, bodies) -> tuple:
+        """Each step's dimensions, a step that needs the positions at the scene's instant
+        (a kind with ``instant_dimensions`` true, its ``dimensions(scene, bodies, P=...)``
+        reading them: a wheel's place along its line, its arm's angle) given
+        them from the steps before it, placed at ``scene``'s own dimensions and crank
+        angle. Where those cannot be placed (a candidate variant that does not assemble
+        there), the plan's own dimensions stand in for the step's: the evaluation of the
+        candidate fails at the step before it all the same."""
+        inp = scene.input
+        ctx = Context(inp.angle, inp.omega, inp.alpha)
+        m = State(dict(scene.ground), {}, {}, dict(self.fixed_links), dict(self.fixed_links),
+                  {}, ctx)
+        out, placed, broken = [], 0, False
+        for k, st in enumerate(self.steps):
+            if not getattr(st, "instant_dimensions", False):
+                out.append(st.dimensions(scene, bodies))
+                continue
+            try:
+                while not broken and placed < k:
+                    self.steps[placed].bind(out[placed])[0](m)
+                    placed += 1
+                out.append(st.params if broken else st.dimensions(scene, bodies, P=m.P))
+            except (PolygonMethodError, ArithmeticError, ValueError):
+                broken = True
+                out.append(st.params)
+        return tuple(out)
 
     # ----- evaluation
     def run(self, ctx: Context, dims: Dims | None = None, upto: int = 2) -> State:
@@ -361,10 +392,12 @@ def _bodies_at(sc, point) -> tuple:
             out.append((f"barrel {cyl.key}", cyl.key))
         elif point == cyl.rod:
             out.append((f"rod {cyl.key}", cyl.key))
+    blocks = sc.blocks  # (a driving wheel's centre path: no block there)
     for sl in sc.slots(point):  # a block; a peg in two slots has a block in each
+        if sl not in blocks:
+            continue
         if isinstance(sl, FixedPath):
-            if not sl.wheel:  # (a driving wheel's centre path: no block there)
-                out.append((f"block {sl.key}", None))
+            out.append((f"block {sl.key}", None))
         elif isinstance(sl, GuideSlider):
             out.append((f"block {sl.key}", sc.link(sl.guide).key))
         else:  # in the slot of a translating yoke: the block does not turn

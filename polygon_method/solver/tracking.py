@@ -150,38 +150,67 @@ class Sweeper:
                              "shows the turn centred on the scene's instant")
             limits = tuple(x for x in (llim,) if x is not None)
             if not notes and full:
-                notes += self._repeats(rsegs[-1][2], t0)
+                turns = self._turns(rsegs[-1][2], t0)
+                wide = self._several_turns(turns) if turns is not None and turns > 1 else None
+                if wide is not None:  # the whole period: every turn until it repeats
+                    return wide
+                notes += self._repeats(turns, t0)
         else:
             lsegs, lcps, llim = self._walk(-1, TWO_PI - (rlim.theta - t0))
             lo = llim.theta if llim is not None else rlim.theta - TWO_PI
             hi, full, notes = rlim.theta, False, []
             limits = tuple(x for x in (llim, rlim) if x is not None)
-        segs = [(b, a, p) for a, b, p in reversed(lsegs)] + list(rsegs)
-        merged = []
-        for a, b, p in segs:  # neighbours on the same branches are one segment
-            if merged and self._flips(merged[-1][2]) == self._flips(p):
-                merged[-1] = (merged[-1][0], b, merged[-1][2])
-            elif b > a or not merged:
-                merged.append((a, b, p))
-        segs = [(a, b, p) for a, b, p in merged if b > a] or merged[:1]
+        segs = self._joined([(b, a, p) for a, b, p in reversed(lsegs)] + list(rsegs))
         cps = tuple(sorted(lcps + rcps, key=lambda c: c.theta))
         return Domain(lo, hi, full, tuple(segs), limits, cps, tuple(notes),
                       turn_only=bool(notes) and full and notes[-1].startswith(_NOT_AGAIN))
 
-    def _repeats(self, plan, t0) -> list:
-        """[] where the mechanism is where it started after a turn of the crank; else the
-        note saying after how many turns it is (a wheel turning 2.5 times per turn of its
-        arm: 2), or that it is not within 12, and that the turn shown is the one centred
-        on the scene's instant."""
+    def _joined(self, segs):
+        """Neighbouring segments on the same branches joined into one."""
+        merged = []
+        for a, b, p in segs:
+            if merged and self._flips(merged[-1][2]) == self._flips(p):
+                merged[-1] = (merged[-1][0], b, merged[-1][2])
+            elif b > a or not merged:
+                merged.append((a, b, p))
+        return [(a, b, p) for a, b, p in merged if b > a] or merged[:1]
+
+    def _turns(self, plan, t0):
+        """After how many turns of the crank the mechanism is where it started: 1, up to
+        12 (a wheel turning 2.5 times per turn of its arm: 2), or None (not within 12)."""
         k = np.arange(13.0)
         fr = run_arrays(plan, t0 + TWO_PI * k, self.omega, self.alpha, vel=False, acc=False)
         size = max((lk.length for lk in self.scene.links), default=1.0)
         xy = np.array([c for p in fr.P.values() for c in (np.broadcast_to(p[0], k.shape),
                                                            np.broadcast_to(p[1], k.shape))])
         same = np.all(np.abs(xy - xy[:, :1]) <= SAME * size, axis=0)
-        if same[1]:
+        return next((int(i) for i in range(1, 13) if same[i]), None)
+
+    def _several_turns(self, n):
+        """The domain of a motion that repeats every ``n`` turns of the crank: the ``n``
+        turns centred on the scene's instant, followed on its branch (None where it stops
+        assembling within them: then the one turn is shown, as before)."""
+        t0, half = self.theta0, n * math.pi
+        rsegs, rcps, rlim = self._walk(+1, half)
+        lsegs, lcps, llim = self._walk(-1, half)
+        if rlim is not None or llim is not None:
+            return None
+        segs = self._joined([(b, a, p) for a, b, p in reversed(lsegs)] + list(rsegs))
+        cps = tuple(sorted(lcps + rcps, key=lambda c: c.theta))
+        lo, hi = math.degrees(t0 - half), math.degrees(t0 + half)
+        note = (f"{_NOT_AGAIN}: the motion repeats every {n} turns (a wheel turns a fraction "
+                f"of a turn more per turn of the crank); the sweep, its ranges and extremes "
+                f"and the page take the whole period, {n} turns of the crank from {lo:.6g} to "
+                f"{hi:.6g} deg (centred on the scene's instant), angles written within it "
+                f"(0 to {360 * n} deg)")
+        return Domain(t0 - half, t0 + half, True, tuple(segs), (), cps, (note,), turns=n)
+
+    def _repeats(self, n, t0) -> list:
+        """[] where the mechanism is where it started after a turn of the crank; else the
+        note saying after how many turns it is, or that it is not within 12, and that the
+        turn shown is the one centred on the scene's instant."""
+        if n == 1:
             return []
-        n = next((int(i) for i in range(2, 13) if same[i]), None)
         when = (f"only every {n} turns" if n is not None else "not within 12 turns")
         lo, hi = math.degrees(t0 - math.pi), math.degrees(t0 + math.pi)
         return [f"{_NOT_AGAIN}: the motion repeats {when} (a wheel turns a fraction of a "
@@ -408,7 +437,7 @@ class Sweeper:
         for c in cps:
             d = np.abs(t - c.theta)
             if self.domain.full_turn:
-                d = np.minimum(d, TWO_PI - d)
+                d = np.minimum(d, self.domain.period - d)
             idx = np.nonzero(d < c.radius)[0]
             if len(idx):
                 out.append((idx, 2.0 * c.radius))
@@ -443,6 +472,8 @@ def _block_span(scene, driver) -> float:
     """How far along its guide a driving block is searched for the ends of its travel,
     either side of its place: twice the links' lengths and the ground's extent (m)."""
     path = scene.slider(driver.finds[0])
+    through = getattr(path, "through", None)  # a collar on its rod: from the rod's pivot
     return 2.0 * sum(lk.length for lk in scene.links) + max(
-        (math.dist(xy, path.through) for xy in scene.ground.values()), default=0.0)
+        (math.dist(xy, through) for xy in scene.ground.values()), default=0.0) \
+        if through is not None else 2.0 * sum(lk.length for lk in scene.links)
 

@@ -9,7 +9,10 @@ line of the step table (``position_words``).
 ============ ===========================================================================
 crank        the driving crank's tip
 block        a driving block on a fixed guide, its place along it the motion's parameter
+collar       a driving collar on a rod pivoted on the frame, pinned to a crank: its place on
+             the rod the parameter, its sliding relative to the rod given (Coriolis)
 second crank a second driven crank (two degrees of freedom): its own angle and speed
+second collar a collar sliding along the crank as the second input: its sliding given
 carried      a point on a known link or plate (the image point, similar triangles)
 slider       RRP: a link and a slider on a fixed path or on a moving link
 dyad         RRR: the joint of two links (or plate sides) to two known points

@@ -168,10 +168,10 @@ REQUIRED = ("kind", "finds", "links", "needs", "title", "params", "dimensions", 
 #: (what a driver's sweep runs over, in words: "the block's travel"), ``body_omega`` (a
 #: driver that does not turn about the frame but about an instantaneous centre: its omega;
 #: None), ``input_items`` (the step table's heading and lines for the input; None: the
-#: views')
+#: views'), ``driver_name`` (body 2 of the centres' numbering: "the driving block A")
 OPTIONAL = ("periodic", "parameter_words", "input_scales", "input_words", "effort_words",
             "parameter", "parameter_scale", "effort_key", "input_record", "drive_caption",
-            "travel", "body_omega", "input_items",
+            "travel", "body_omega", "input_items", "driver_name",
             "assemble", "auxiliary", "branching", "image_by_similar_triangle", "draws_relative",
             "other_assembly_mistake", "needs_links", "bind_instant", "group_key",
             "bind_group", "bind_group_instant", "rounding", "error_bound", "contacts",
@@ -222,6 +222,9 @@ class Step:
     def parameter_words(self) -> str:
         """The motion's parameter in words, asked of the plan's first step (the driver)."""
         return "the crank angle"
+
+    #: the driver as body 2 of the centres' numbering (ground 1, the crank 2)
+    driver_name = "the crank"
 
     def body_omega(self, sol):
         """The angular velocity of the driver's own body where it turns about no fixed

@@ -209,6 +209,11 @@ class BlockDriver(Step):
         """What the motion's parameter is, in words (a sweep's domain, a table's column)."""
         return f"the place s_{self.point} of the block {self.point} along its guide"
 
+    @property
+    def driver_name(self):
+        """Body 2 of the centres' numbering: the block itself."""
+        return f"the driving block {self.point}"
+
     # ----- words
     def singular_why(self, c) -> str:
         return f"the block {self.point} is never singular (condition {c:.2g})"

@@ -10,7 +10,12 @@ radius R_p = |OI|, n = (I - O) / R_p). No slip: the rack moves as the pinion's p
 
 (T where the rack's point is at the stated crank angle, K the pinion's turning per radian
 of the crank: 1 for the crank itself, the gear ratio for a gear meshing with it). A pinion
-between two racks drives them in opposite senses.
+that turns as a linkage makes it (keyed to the rocker of a four-bar) has no such ratio: its
+angle beta is read from its points (its centre O and its link's other point Q), and the
+rack follows it, ``R = T + k (beta - beta0) u`` (beta0 at the stated instant; the turn
+followed no further than half a turn either way). The velocity and acceleration are the
+same, ``vs = k omega_B``, ``as = k alpha_B``. A pinion between two racks drives them in
+opposite senses.
 
 >>> rack_rates(-0.04, 10.0, 5.0)
 (-0.4, -0.2)
@@ -24,6 +29,7 @@ from dataclasses import dataclass
 from ..common.errors import SceneError
 from ..common.numbers import in_units
 from .base import Construction, DirectionLine, Step, Vector, absolute, image_label
+from .rolling_dims import angle_of, turned
 from .rounding import EPS, line_rounding
 
 __all__ = ["RackStep", "rack_rates", "recognise"]
@@ -34,9 +40,10 @@ def rack_rates(k, wb, ab):
     return k * wb, k * ab
 
 
-def _rack_params(scene, pr, kb_rate):
-    """(tx, ty, ux, uy, k, K, theta0, ox, oy): the rack's point at the stated angle, its
-    path's direction, the pitch factor k and the pinion's rate K."""
+def _rack_params(scene, pr, kb_rate, beta0=0.0):
+    """(tx, ty, ux, uy, k, K, theta0, ox, oy, beta0): the rack's point at the stated angle,
+    its path's direction, the pitch factor k, the pinion's rate K (0 where it turns as a
+    linkage makes it) and then its angle at the stated instant beta0."""
     sl = scene.slider(pr.rim)
     (tx, ty), (ux, uy) = sl.through, sl.u
     ox, oy = scene.ground[pr.base_centre]
@@ -53,7 +60,7 @@ def _rack_params(scene, pr, kb_rate):
                          f"pinion's pitch radius {in_units(pr.base_radius, u)} {scene.units}",
                          key=where, file=scene.file)
     # I - O = d perp(u); v_I = omega perp(I - O) = -omega d u: k = -d
-    return (tx, ty, ux, uy, -d, kb_rate, scene.input.angle, ox, oy)
+    return (tx, ty, ux, uy, -d, kb_rate, scene.input.angle, ox, oy, beta0)
 
 
 def recognise(g, name):
@@ -67,18 +74,21 @@ def recognise(g, name):
     base = sc.link(pr.base)
     if not (g.known_link(base) and base.key in g.used_links):
         return None
+    free, beta0 = None, 0.0
     if base.key == sc.input.crank:
         rate = 1.0
     else:
         rate = next((getattr(st, "theta_rate", None) for st in g.steps
                      if base.key in st.links), None)
-        if rate is None:
-            raise SceneError(f"the pinion {base.key} of rack {name} turns other than at a fixed "
-                             "ratio to the crank: not supported yet", key=f"[rolling] {name}",
-                             file=sc.file)
+        if rate is None:  # the pinion turns as a linkage makes it: its angle from its points
+            O = pr.base_centre
+            free, rate = (O, base.other(O)), 0.0
+            (ox, oy), (qx, qy) = g.P[O], g.P[free[1]]
+            beta0 = angle_of(qx - ox, qy - oy)
     g.used_sliders.add(name)
     return RackStep(g.next_index, name, base.key, pr.base_centre,
-                    _rack_params(sc, pr, rate), unit=g.unit, uname=g.uname)
+                    _rack_params(sc, pr, rate, beta0), free=free, unit=g.unit, uname=g.uname,
+                    pressure_angle=pr.pressure_angle)
 
 
 @dataclass(frozen=True)
@@ -89,8 +99,14 @@ class RackStep(Step):
     base: str
     base_centre: str
     dims: tuple = ()
+    #: (the pinion's centre, its link's other point) where the pinion turns as a linkage
+    #: makes it (its angle read from them), else None (a fixed ratio of the crank)
+    free: tuple | None = None
     unit: float = 1e-3
     uname: str = "mm"
+    #: the teeth's pressure angle (rad) the scene states, or None (the force analysis'
+    #: default, 20 deg)
+    pressure_angle: float | None = None
 
     kind = "rack"
 
@@ -104,7 +120,7 @@ class RackStep(Step):
 
     @property
     def needs(self):
-        return (self.base_centre,)
+        return (self.base_centre,) + ((self.free[1],) if self.free else ())
 
     @property
     def needs_links(self):
@@ -118,9 +134,21 @@ class RackStep(Step):
     def params(self):
         return self.dims
 
-    def dimensions(self, scene, bodies):
+    @property
+    def instant_dimensions(self):
+        """A pinion turned by a linkage: its angle at the stated instant is read there."""
+        return self.free is not None
+
+    def dimensions(self, scene, bodies, P=None):
         pr = next(r for r in scene.rolling if r.on == "rack" and r.rim == self.point)
-        return _rack_params(scene, pr, self.dims[5])
+        if self.free is None:
+            return _rack_params(scene, pr, self.dims[5])
+        if P is None:
+            raise SceneError(f"the pinion {self.base} of rack {self.point} turns as a linkage "
+                             "makes it: its dimensions need its angle at the stated instant",
+                             key=f"[rolling] {self.point}", file=scene.file)
+        (ox, oy), (qx, qy) = P[self.free[0]], P[self.free[1]]
+        return _rack_params(scene, pr, 0.0, angle_of(qx - ox, qy - oy))
 
     def drawn(self, prm, pencil, P):
         return (prm[0] + pencil(), prm[1] + pencil()) + tuple(prm[2:])
@@ -130,8 +158,17 @@ class RackStep(Step):
 
     def place(self, P, prm, ctx, sigma=None):
         tx, ty, ux, uy, k, K, th0 = prm[:7]
-        s = k * K * (ctx.theta - th0)
-        return tx + s * ux, ty + s * uy, 1.0
+        return tx + (s := self._travel(P, prm, ctx)) * ux, ty + s * uy, 1.0
+
+    def _travel(self, P, prm, ctx):
+        """How far the rack has moved along its path from T: ``k K (theta - theta0)``, or
+        ``k (beta - beta0)`` for a pinion turned by a linkage (its turn read from its
+        points, no more than half a turn: beyond, refused, masked in a sweep)."""
+        k, K, th0 = prm[4], prm[5], prm[6]
+        if self.free is None:
+            return k * K * (ctx.theta - th0)
+        (ox, oy), (qx, qy) = P[self.free[0]], P[self.free[1]]
+        return k * turned(qx - ox, qy - oy, prm[9], ctx, self, f"the pinion {self.base}")
 
     def bind(self, prm):
         """The step's three phases for dimensions ``prm``: functions of a State."""
@@ -157,11 +194,11 @@ class RackStep(Step):
 
     def bind_instant(self, prm):
         """The three phases in a row for one instant (the same formulas)."""
-        X, base, i = self.point, self.base, self.index
+        X, base, i, step = self.point, self.base, self.index, self
         tx, ty, ux, uy, k, K, th0 = prm[:7]
 
         def instant(m):
-            s = k * K * (m.ctx.theta - th0)
+            s = step._travel(m.P, prm, m.ctx)
             m.P[X] = (tx + s * ux, ty + s * uy)
             m.cond[i] = 1.0
             vs, a_s = rack_rates(k, m.W[base], m.Al[base])
@@ -230,6 +267,10 @@ class RackStep(Step):
         return f"{self.label}: the rack {self.point} is near leaving its pinion ({c:.3g})"
 
     def limit_why(self):
+        if self.free is not None:
+            return (f"the pinion {self.base} of rack {self.point} has turned half a turn from "
+                    "the stated instant: its angle is followed no further (solve the scene at "
+                    "a later instant to go on)")
         return f"the rack {self.point} would leave its pinion {self.base}"
 
     def transmission(self):
@@ -262,7 +303,8 @@ class RackStep(Step):
         o = "o" if ph == "velocity" else "o'"
         if ph == "velocity":
             D, w, sym = sol.V, sol.W[self.base], "v"
-            text = (f"no slip: the rack moves as the pinion's point at the pitch point I, "
+            text = (f"equal velocities at the pitch point (no slip): the rack moves as the "
+                    f"pinion's point at I, "
                     f"v_{X} = omega_{self.base} x {self.base_centre}I = {abs(w):.4g} x "
                     f"{abs(self.dims[4]):.4g} = {math.hypot(*D[X]):.4g} m/s; from {o} draw "
                     f"{o}{lab} parallel to the path")
@@ -271,7 +313,9 @@ class RackStep(Step):
             text = (f"the rack translates: a_{X} = alpha_{self.base} x {self.base_centre}I = "
                     f"{abs(al):.4g} x {abs(self.dims[4]):.4g} = {math.hypot(*D[X]):.4g} m/s^2 "
                     f"along the path (the pinion's point at I has besides the centripetal "
-                    f"omega^2 R_p towards {self.base_centre}); from {o} draw {o}{lab} "
+                    f"omega^2 R_p = {sol.W[self.base] ** 2 * abs(self.dims[4]):.4g} m/s^2 "
+                    f"towards {self.base_centre}: the contact point's acceleration is not "
+                    f"zero); from {o} draw {o}{lab} "
                     "parallel to the path")
         found = (absolute(sol, X, D, ph),
                  Vector((0.0, 0.0), D[X], f"{o}{lab}", "sliding", f"{sym}s_{X}",

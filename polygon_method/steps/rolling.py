@@ -16,7 +16,9 @@ with d = C - O turning at omega_d, ``e = +1`` outside and ``-1`` inside the circ
     (omega - omega_d) r = -e (omega_B - omega_d) R
     omega = (1 + e R/r) omega_d - e (R/r) omega_B      (the same for alpha, with alpha_d)
 
-where ``omega_d = d x v_d / |d|^2`` and ``alpha_d = d x a_d / |d|^2 - 2 (d x v_d)(d . v_d) /
+(A ring about C meshing with a gear inside it, ``|d| = r - R``, the pitch point beyond
+the gear, ``I = O - R d/|d|``: its no-slip relation is the internal pair's, e = -1.)
+Here ``omega_d = d x v_d / |d|^2`` and ``alpha_d = d x a_d / |d|^2 - 2 (d x v_d)(d . v_d) /
 |d|^4``. The wheel's angle follows the crank's (its centre is fixed or is the crank's tip, and
 the base turns at a fixed ratio of the crank): ``phi = phi0 + K (theta - theta0)``. A gear
 pair with both centres fixed: ``omega_2 = -e (r1 / r2) omega_1``; a planet on a fixed sun,
@@ -38,16 +40,11 @@ from dataclasses import dataclass
 
 from ..common.errors import AssemblyError, SceneError
 from ..common.numbers import in_units
-from .rolling_dims import GAP, arm_rate, pair_of, rate, wheel_params
+from .rolling_dims import GAP, arm_rate, follow_params, pair_of, rate, turned, wheel_params
 from .base import (Construction, Step, Vector, absolute, centripetal, image_label, pole_text,
                    relative, sub)
 
 __all__ = ["RollingWheel", "line_rates", "circle_rates", "rim_motion", "recognise"]
-
-#: how far an arm or a gear turning as a linkage makes it may turn from the stated instant
-#: before its angle is refused (a turn of nearly pi could be one the other way)
-_HALF = 0.95 * math.pi
-
 
 def line_rates(tx, ty, r, vx, vy, ax, ay):
     """(omega, alpha) of a wheel of radius r rolling on a fixed line along t = perp(m),
@@ -101,12 +98,19 @@ def recognise(g, name):
     else:
         kb_rate = 0.0
     kd_rate = arm_rate(g, pr.centre, O)
-    return RollingWheel(g.next_index, pr.wheel, pr.centre, name, pr.on, pr.label,
-                        wheel_params(sc, g.bodies, pr, kd_rate=kd_rate, kb_rate=kb_rate, P=g.P,
-                                base_free=base_free),
-                        base=pr.base, base_centre=O, inside=pr.inside,
-                        kd_rate=kd_rate, kb_rate=kb_rate, base_free=base_free,
-                        unit=g.unit, uname=g.uname)
+    prm = wheel_params(sc, g.bodies, pr, kd_rate=kd_rate, kb_rate=kb_rate, P=g.P,
+                       base_free=base_free)
+    follow = None
+    if base_free is not None:  # a gear that is a wheel whose angle follows its arm: its turn
+        bst = next((s for s in g.steps if pr.base in s.links), None)  # from its formula
+        if (isinstance(bst, RollingWheel) and bst.on != "line" and bst.kd_rate is None
+                and bst.base_free is None):
+            follow = (bst.centre, bst.base_centre, bst.kb_rate)
+            prm += follow_params(sc, g.bodies, pair_of(sc, pr.base), bst.kb_rate, g.P)
+    return RollingWheel(g.next_index, pr.wheel, pr.centre, name, pr.on, pr.label, prm,
+                        base=pr.base, base_centre=O, inside=pr.inside, ring=pr.ring,
+                        kd_rate=kd_rate, kb_rate=kb_rate, base_free=base_free, follow=follow,
+                        unit=g.unit, uname=g.uname, pressure_angle=pr.pressure_angle)
 
 
 @dataclass(frozen=True)
@@ -123,14 +127,24 @@ class RollingWheel(Step):
     base: str | None = None
     base_centre: str | None = None
     inside: bool = False
+    #: the wheel is a ring (an internal gear) about its centre, the gear inside it
+    #: (``inside`` true as well: the ratio of an internal pair)
+    ring: bool = False
     kd_rate: float | None = 0.0  # the line of centres' turning per radian of the crank
     kb_rate: float | None = 0.0  # the base's turning per radian of the crank
     #: (the gear's centre, its other point) where the gear turns as a linkage makes it (its
     #: angle read from them); the line of centres is read from the two centres where
     #: ``kd_rate`` is None
     base_free: tuple | None = None
+    #: where the gear is itself a wheel whose angle follows its arm (a planet on a rocker):
+    #: (its centre, its arm's fixed centre, its kb_rate); its turn is then taken from its
+    #: formula, ``K_b (theta - theta0) + kd_b (psi_b - psi0_b)`` (``dims[12:15]``)
+    follow: tuple | None = None
     unit: float = 1e-3  # the scene's length unit (m), for messages
     uname: str = "mm"
+    #: the teeth's pressure angle (rad) the scene states, or None (the default: the force
+    #: analysis takes 20 deg and says so)
+    pressure_angle: float | None = None
 
     kind = "rolling"
 
@@ -154,6 +168,7 @@ class RollingWheel(Step):
         if self.on == "line":
             return (self.centre,)
         more = (self.base_free[1],) if self.base_free else ()
+        more += (self.follow[1],) if self.follow else ()
         return (self.centre, self.base_centre) + more
 
     @property
@@ -162,24 +177,37 @@ class RollingWheel(Step):
 
     @property
     def title(self):
+        if self.ring:
+            return f"ring {self.wheel} meshing with {self.where} inside it"
         return f"wheel {self.wheel} rolling on {self.where}"
 
     @property
     def params(self):
         return self.dims
 
-    def dimensions(self, scene, bodies):
+    #: its dimensions read the positions at the stated instant: on a line its centre's
+    #: place, on a circle or a gear the centre distance and the arm's and the gear's angles
+    instant_dimensions = True
+
+    def dimensions(self, scene, bodies, P=None):
         pr = pair_of(scene, self.wheel)
         if self.on == "line":
-            raise SceneError(f"wheel {self.wheel} rolls on a line: variants of such a scene are "
-                             "not supported yet", key=f"[rolling] {self.wheel}",
-                             file=scene.file)
+            if P is None:
+                raise SceneError(f"wheel {self.wheel} rolls on a line: its dimensions need "
+                                 "its centre's place at the stated instant",
+                                 key=f"[rolling] {self.wheel}", file=scene.file)
+            (cx, cy), (tx, ty), (mx, my) = P[pr.centre], pr.through, pr.m
+            s0 = (cx - tx) * -my + (cy - ty) * mx
+            return wheel_params(scene, bodies, pr, s0=s0)
         two = scene.input.second
         kb_rate = self.kb_rate
         if two is not None and self.base == scene.link(two.crank).key:
             kb_rate = two.omega / scene.input.omega  # the ratio of this scene's speeds
-        return wheel_params(scene, bodies, pr, kd_rate=self.kd_rate, kb_rate=kb_rate,
-                       base_free=self.base_free)
+        prm = wheel_params(scene, bodies, pr, kd_rate=self.kd_rate, kb_rate=kb_rate,
+                           base_free=self.base_free, P=P)
+        if self.follow is not None:
+            prm += follow_params(scene, bodies, pair_of(scene, self.base), self.follow[2], P)
+        return prm
 
     def drawn(self, prm, pencil, P):
         return (prm[0] + pencil(),) + tuple(prm[1:])
@@ -213,29 +241,19 @@ class RollingWheel(Step):
         if self.kd_rate is None:
             ox, oy = P[self.base_centre]
             phi = phi + prm[3] * self._turned(cx - ox, cy - oy, prm[10], ctx)
-        if self.base_free is not None:
+        if self.follow is not None:  # the gear's turn from its own formula
+            (bx, by), (qx, qy) = P[self.follow[0]], P[self.follow[1]]
+            turn = prm[13] * (ctx.theta - prm[6]) + prm[12] * self._turned(
+                bx - qx, by - qy, prm[14], ctx)
+            phi = phi + prm[4] * turn
+        elif self.base_free is not None:
             (bx, by), (qx, qy) = P[self.base_free[0]], P[self.base_free[1]]
             phi = phi + prm[4] * self._turned(qx - bx, qy - by, prm[11], ctx)
         return phi
 
     def _turned(self, dx, dy, a0, ctx):
-        """The turn of direction (dx, dy) from the angle a0, in (-pi, pi]; refused (masked)
-        beyond 0.95 pi, where it could not be told from a turn the other way."""
-        c, s_ = math.cos(a0), math.sin(a0)
-        x, y = c * dx + s_ * dy, c * dy - s_ * dx
-        if ctx.array:
-            t = ctx.np.arctan2(y, x)
-            far = abs(t) > _HALF
-            if far is True or (far is not False and far.any()):
-                ctx.fail(self, far)
-            return t
-        t = math.atan2(y, x)
-        if abs(t) > _HALF:
-            raise AssemblyError(f"the arm or the gear of wheel {self.wheel} has turned "
-                                f"{math.degrees(abs(t)):.4g} deg from the stated instant: "
-                                "its angle cannot be followed past half a turn (solve the "
-                                "scene at that instant)", step=self.label)
-        return t
+        """The turn of direction (dx, dy) from the angle a0 (:func:`.rolling_dims.turned`)."""
+        return turned(dx, dy, a0, ctx, self, f"the arm or the gear of wheel {self.wheel}")
 
     def gap(self, P, prm):
         """How far the centre is off its line (or its pitch circle), over the radii."""
@@ -246,8 +264,8 @@ class RollingWheel(Step):
         ell, r, R = prm[:3]
         ox, oy = P[self.base_centre]
         dx, dy = cx - ox, cy - oy
-        e = -1.0 if self.inside else 1.0
-        return ((dx * dx + dy * dy) ** 0.5 - (R + e * r)) / (R + r)
+        want = r - R if self.ring else R - r if self.inside else R + r
+        return ((dx * dx + dy * dy) ** 0.5 - want) / (R + r)
 
     def _check(self, P, prm, ctx):
         g = self.gap(P, prm)
@@ -384,6 +402,8 @@ class RollingWheel(Step):
         ox, oy = P[self.base_centre]
         n = math.hypot(cx - ox, cy - oy)
         ux, uy = (cx - ox) / n, (cy - oy) / n
+        if self.ring:  # the gear inside the ring: I on its far side from the ring's centre
+            return (ox - R * ux, oy - R * uy), (ux, uy)
         e = -1.0 if self.inside else 1.0
         return (ox + R * ux, oy + R * uy), (e * ux, e * uy)
 
@@ -495,6 +515,7 @@ class RollingWheel(Step):
     def position_words(self, L, which, angle_deg):
         r, ell = self.dims[1], self.dims[0]
         phi = math.degrees(self.dims[6] if self.on == "line" else self.dims[5])
+        phi = round(phi, 9) + 0.0  # -7e-15 deg is 0 (rounding), as the table prints it
         if self.on == "line":
             how = "the wheel turns 1/r rad for each unit its centre moves along the line"
         elif self.theta_rate is not None:
@@ -506,8 +527,10 @@ class RollingWheel(Step):
                       if kd else "")
                    + (" and " if kd and kb and self.base else "")
                    + (f"{kb:.4g} times the gear {self.base}" if kb and self.base else ""))
-        return (f"{self.rim}: the wheel {self.wheel} (radius {L(r)}) rolls without slipping on "
-                f"{self.where}; from {self.centre} draw {self.centre}{self.rim} = {L(ell)} at "
+        what = (f"the ring {self.wheel} (pitch radius {L(r)}) meshes with {self.where} inside "
+                "it" if self.ring else
+                f"the wheel {self.wheel} (radius {L(r)}) rolls without slipping on {self.where}")
+        return (f"{self.rim}: {what}; from {self.centre} draw {self.centre}{self.rim} = {L(ell)} at "
                 f"{phi:.4g} deg ({how})")
 
     def _omega_words(self, sol, w, vI):
@@ -520,7 +543,8 @@ class RollingWheel(Step):
                     f"{math.hypot(*sol.V[C]):.4g} / {r:.4g} = {sense}")
         O = self.base_centre
         moving = math.hypot(*sol.V[O]) > 0.0
-        return ("no slip: the wheel's point at the pitch point I moves as the gear's, v_I = "
+        return ("equal velocities at the pitch point (no slip): the wheel's point at I moves as "
+                "the gear's, v_I = "
                 + (f"v_{O} + " if moving else "")
                 + f"omega_{self.base} x {O}I = {math.hypot(*vI):.4g} m/s; "
                 f"omega_{W} = (v_I - v_{C}) / {C}I, perpendicular to {C}I, = {sense}")

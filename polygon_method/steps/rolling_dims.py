@@ -7,13 +7,18 @@ from __future__ import annotations
 
 import math
 
-from ..common.errors import SceneError
+from ..common.errors import AssemblyError, SceneError
 from ..common.numbers import in_units
 
-__all__ = ["GAP", "pair_of", "rate", "arm_rate", "angle_of", "wheel_params"]
+__all__ = ["GAP", "HALF", "pair_of", "rate", "arm_rate", "angle_of", "turned", "wheel_params",
+           "follow_params"]
 
 #: how far (relative to the radii) a wheel's centre may leave its line or pitch circle
 GAP = 1e-9
+#: how far a link turning as a linkage makes it (a wheel's arm or gear, a rack's pinion)
+#: may turn from the stated instant before its angle is refused (a turn of nearly pi
+#: could be one the other way)
+HALF = 0.95 * math.pi
 
 
 def pair_of(scene, wheel):
@@ -51,6 +56,39 @@ def angle_of(x, y):
     return math.atan2(y, x)
 
 
+def turned(dx, dy, a0, ctx, step, what):
+    """The turn of direction (dx, dy) from the angle a0, in (-pi, pi]: refused beyond
+    :data:`HALF` (masked in a sweep, an :class:`AssemblyError` at one instant naming
+    ``what`` turned), where it could not be told from a turn the other way.
+
+    >>> round(turned(0.0, 1.0, 0.0, type("C", (), {"array": False})(), None, "x"), 12)
+    1.570796326795
+    """
+    c, s_ = (ctx.cos(a0), ctx.sin(a0)) if ctx.array else (math.cos(a0), math.sin(a0))
+    x, y = c * dx + s_ * dy, c * dy - s_ * dx
+    if ctx.array:
+        t = ctx.np.arctan2(y, x)
+        far = abs(t) > HALF
+        if far is True or (far is not False and far.any()):
+            ctx.fail(step, far)
+        return t
+    t = math.atan2(y, x)
+    if abs(t) > HALF:
+        raise AssemblyError(f"{what} has turned {math.degrees(abs(t)):.4g} deg from the stated "
+                            "instant: its angle cannot be followed past half a turn (solve the "
+                            "scene at that instant)", step=step.label)
+    return t
+
+
+def follow_params(scene, bodies, pr, kb_rate, P):
+    """(kd, K, psi0) of the wheel of pair ``pr`` whose angle follows its arm (a planet on a
+    rocker), for a gear meshing with it: its turn from the stated instant is ``K (theta -
+    theta0) + kd (psi - psi0)``, psi its line of centres' direction (not read from its own
+    points, which could not tell a turn past half of one)."""
+    prm = wheel_params(scene, bodies, pr, kd_rate=None, kb_rate=kb_rate, P=P)
+    return (prm[3], prm[7], prm[10])
+
+
 def wheel_params(scene, bodies, pr, *, s0=None, kd_rate=0.0, kb_rate=0.0, P=None, base_free=None):
     """The step's dimensions, read from ``scene``: for a line (l, r, tx, ty, mx, my, phi0,
     s0); for a circle (l, r, R, kd, kb, phi0, theta0, K, ox, oy, psi0, beta0), K the
@@ -72,7 +110,7 @@ def wheel_params(scene, bodies, pr, *, s0=None, kd_rate=0.0, kb_rate=0.0, P=None
     elif kd_rate is None or base_free is not None or pr.base_centre not in scene.ground or (
             pr.centre not in scene.ground and pr.centre != inp.tip):
         raise SceneError(f"the wheel {pr.wheel}'s arm or gear turns as a linkage makes it: "
-                         "variants of such a scene are not supported yet", key=where,
+                         "its dimensions need the positions at the stated instant", key=where,
                          file=scene.file)
     else:
         O = scene.ground[pr.base_centre]
@@ -83,25 +121,31 @@ def wheel_params(scene, bodies, pr, *, s0=None, kd_rate=0.0, kb_rate=0.0, P=None
             C0 = (O[0] + L * math.cos(inp.angle), O[1] + L * math.sin(inp.angle))
     dist = math.dist(C0, O)
     e = -1.0 if pr.inside else 1.0
-    R = (dist - r) if e > 0 else (dist + r)
+    ring = getattr(pr, "ring", False)  # the wheel a ring about the gear (e = -1 too)
+    R = (dist - r) if e > 0 else (r - dist) if ring else (dist + r)
     if R <= 0 or dist == 0:
         raise SceneError(f"the wheel {pr.wheel} (radius {in_units(r, scene.length_unit)} "
-                         f"{scene.units}) cannot roll {'outside' if e > 0 else 'inside'} "
-                         f"{pr.label}: its centre is {in_units(dist, scene.length_unit)} "
+                         f"{scene.units}) cannot "
+                         + (f"be a ring about {pr.label}" if ring else
+                            f"roll {'outside' if e > 0 else 'inside'} {pr.label}")
+                         + f": its centre is {in_units(dist, scene.length_unit)} "
                          f"{scene.units} from {pr.base_centre}"
-                         + ("" if e < 0 else " (not more than its radius: inside = true?)"),
+                         + ("" if e < 0 else " (not more than its radius: inside = true?)")
+                         + (" (not less than its radius)" if ring else ""),
                          key=where, file=scene.file)
     if pr.base_radius is not None and abs(pr.base_radius - R) > GAP * (R + r):
         u, n = scene.length_unit, scene.units
-        want = pr.base_radius + e * r
+        want = r - pr.base_radius if ring else pr.base_radius + e * r
         raise SceneError(f"the contact leaves the pitch point: the centre distance "
                          f"{pr.base_centre}{pr.centre} = {in_units(dist, u)} {n} is not "
-                         f"{'R + r' if e > 0 else 'R - r'} = {in_units(want, u)} {n} "
+                         f"{'r - R' if ring else 'R + r' if e > 0 else 'R - r'} = "
+                         f"{in_units(want, u)} {n} "
                          f"(R = {in_units(pr.base_radius, u)}, r = {in_units(r, u)}): "
                          "the gears would not mesh", key=where, file=scene.file)
     kd, kb = 1.0 + e * R / r, -e * R / r
     dx, dy = C0[0] - O[0], C0[1] - O[1]
-    phi0 = pr.angle if pr.angle is not None else math.atan2(-e * dy, -e * dx)
+    g = 1.0 if ring else e  # towards the contact: I - C = -g r (C - O) / |C - O|
+    phi0 = pr.angle if pr.angle is not None else math.atan2(-g * dy, -g * dx)
     psi0 = angle_of(dx, dy)
     beta0 = 0.0
     if base_free is not None:

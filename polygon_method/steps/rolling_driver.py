@@ -156,11 +156,18 @@ class WheelDriver(BlockDriver):
         return (f"the place s_{self.point} of the centre {self.point} of the rolling wheel "
                 f"{self.wheel} along its line")
 
+    @property
+    def driver_name(self):
+        """Body 2 of the centres' numbering: the wheel (its centre's path is no block)."""
+        return f"the driving wheel {self.wheel}"
+
     def singular_why(self, c) -> str:
         return f"the rolling wheel {self.wheel} is never singular (condition {c:.2g})"
 
     def limit_why(self) -> str:
-        return f"the wheel {self.wheel} can roll no further: the mechanism does not assemble"
+        return (f"the wheel {self.wheel} has rolled to the end of its travel (one turn of the "
+                "wheel from the stated place, unless [input] travel states the stretch: "
+                "several turns, if the problem asks)")
 
     def bodies(self):
         return (self.wheel,)

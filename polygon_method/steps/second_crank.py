@@ -96,6 +96,10 @@ class SecondCrank(Crank):
         """(omega, alpha) it is driven at: its own (the first crank's error rule)."""
         return self.omega, self.alpha
 
+    def held(self, prm):
+        """Its dimensions with its own speed held (the first input alone)."""
+        return tuple(prm[:2]) + (0.0, 0.0) + tuple(prm[4:])
+
     # ----- words (the rest, and the error bound, are the first crank's)
     lead = "the second input: "
     uniform = ""

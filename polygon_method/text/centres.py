@@ -59,10 +59,11 @@ def _where(sol, c: Centre) -> str:
 
 
 def _numbering_lines(ic: Centres) -> list[str]:
-    """The title, the links numbered (the ground 1, the crank 2) and the number of centres."""
+    """The title, the links numbered (the ground 1, the driver 2: the crank, a driving block
+    or wheel, as the driver names itself) and the number of centres."""
     n = ic.n
     out = [f"{ic.sol.scene.title or 'Instantaneous centres'}: instantaneous centre method", ""]
-    out.append("Links (the ground is 1, the crank 2):")
+    out.append(f"Links (the ground is 1, {ic.sol.plan.steps[0].driver_name} 2):")
     for k, name in enumerate(ic.bodies, 1):
         out.append(f"  {k}  {name}")
     out.append(f"Number of centres: N = n (n - 1) / 2 = {n} x {n - 1} / 2 = {n * (n - 1) // 2}")
@@ -109,7 +110,8 @@ def _omega_line(ic: Centres, k: int) -> str:
         return (f"  omega_{k} ({name}) = 0: {name} translates at "
                 f"{math.hypot(*v):.4g} m/s along its guide (the input)")
     if k == 2:
-        return f"  omega_{k} ({name}) = {fmt_angular(w, 'rad/s')} (the input)"
+        return (f"  omega_{k} ({name}) = {fmt_angular(w, 'rad/s')} "
+                f"({getattr(sol.plan.steps[0], 'body_omega_source', 'the input')})")
     i = ic.ratio_from.get(k, 2)
     if i == 2 and ic.centre(1, 2).point is None:  # from the driving block's velocity
         return (f"  omega_{k} ({name}) = {fmt_angular(sol.shown(w, 'omega'), 'rad/s')} "

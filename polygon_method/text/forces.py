@@ -54,6 +54,48 @@ def _body(name):
     return "the frame" if name == FRAME else name
 
 
+def _wheel(body):
+    """A rolling body in words: "wheel CP", "rack R" (a rack's block)."""
+    return f"rack {body[6:]}" if body.startswith("block ") else f"wheel {body}"
+
+
+def _base(c):
+    """What a contact's body rolls on, in words."""
+    if c.by != FRAME:
+        return f"{'the pinion' if c.wheel.startswith('block ') else 'the gear'} {c.by}"
+    return "the fixed circle" if c.teeth is not None else "the ground"
+
+
+def _friction_lines(sol, f, F, M) -> list:
+    """The friction the forces were found with: each force at a guide, each couple at a
+    pin (on the first body; the other feels it back), and its power."""
+    fr = sol.scene.friction
+    if fr is None:
+        return []
+    out = [f"friction (Coulomb: mu = {fr.guides:g} at the guides, {fr.pins:g} at the pins "
+           "with a size in [pins], the friction circle mu r; against the sliding and the "
+           "relative turning; where nothing slides it is not determined and taken as 0):"]
+    seen = set()
+    for it in f.friction:
+        if it[1] in seen or it[0] == FRAME:  # (the reaction of one already said)
+            continue
+        seen.add(it[1])
+        if len(it) == 3:
+            out.append(f"  {it[1]}: couple {_moment(it[2], M)} on {it[0]}")
+        else:
+            out.append(f"  {it[1]}: {_vec(it[2], F)} on {_body(it[0])}")
+    out.append(f"  friction power: {fmt(quiet(f.friction_power, M))} W (lost; the driver "
+               "supplies it)")
+    return out
+
+
+def _rack_couple(f, g) -> bool:
+    """Whether a guide's couple is a rack's (said with its normal force: the tooth load
+    acts off the rack's point)."""
+    return any(c.wheel == f"block {g.point}" for c in f.contacts) and \
+        isinstance(g.couple, float) and g.couple != 0.0
+
+
 def _driver_lines(f, F, M, said):
     """The driver's effort: the crank's torque, or a driving block's force along its guide,
     and a second crank's torque."""
@@ -67,6 +109,10 @@ def _driver_lines(f, F, M, said):
         out = [f"input force on {f.crank} along its guide{said}: {fmt(abs(v))} N"
                + ("" if not v else " along the guide's direction" if v > 0 else
                   " against the guide's direction")]
+    elif f.driver == "wheel":
+        out = [f"input torque on the wheel {f.crank}{said}: {_moment(f.input_torque, M)} (its "
+               "driver's torque on it, the effort taken as a torque; as a force at its "
+               f"centre along the ground instead: {_vec(f.centre_force, F)})"]
     else:
         out = [f"input torque on {f.crank}{said}: {_moment(f.input_torque, M)}"]
     if f.second_crank is not None:
@@ -102,12 +148,15 @@ def forces_lines(sol) -> list:
     for p in f.pins:
         out.append(f"{p.point:<5} {p.on:<10} {_body(p.by):<10} {_vec(p.force, F)}")
     for g in f.guides:
-        out.append(f"guide at {g.point}: normal force on block {g.point} {_vec(g.force, F)}")
+        out.append(f"guide at {g.point}: normal force on block {g.point} {_vec(g.force, F)}"
+                   + (f"; its couple {_moment(g.couple, M)}" if _rack_couple(f, g) else ""))
     for c in f.contacts:
-        out.append(f"contact of wheel {c.wheel} with the ground: normal {fmt(quiet(c.normal, F))}"
-                   f" N, tangential {fmt(quiet(c.tangential, F))} N ({_vec(c.force, F)}); "
-                   + c.grip_words())
-    out += _driver_lines(f, F, M, " (inertia, weights and loads)")
+        out.append(f"contact of {_wheel(c.wheel)} with {_base(c)}: normal "
+                   f"{fmt(quiet(c.normal, F))} N, tangential {fmt(quiet(c.tangential, F))} N "
+                   f"({_vec(c.force, F)}); " + c.grip_words())
+    out += _friction_lines(sol, f, F, M)
+    out += _driver_lines(f, F, M, " (inertia, weights, loads and friction)"
+                         if sc.friction is not None else " (inertia, weights and loads)")
     out.append(f"shaking force on the frame: {_vec(f.shaking_force, F)}; shaking moment "
                f"about the origin: {_moment(f.shaking_moment, M)}")
     out += engine_lines(sol)
@@ -127,7 +176,8 @@ def bound_lines(sol, f) -> list:
              if e > SHOWN]
     shown += [(f"N_{k} (guide)", e) for k, e in b.guides.items() if e > SHOWN]
     if b.effort > SHOWN:
-        shown.append(("the driver's " + ("torque" if f.driver == "crank" else "force"),
+        shown.append(("the driver's " + ("torque" if f.driver in ("crank", "wheel") else
+                                         "force"),
                       b.effort))
     if b.second is not None and b.second > SHOWN:
         shown.append(("the second crank's torque", b.second))
@@ -204,6 +254,16 @@ _STEP_HEADS = {
                     "forces",
     "block": "the block's force balance: along the guide the driver's force, across it the "
              "guide's normal force",
+    "rolling": "the tooth load along the line of action, at the pressure angle to the common "
+               "tangent through the pitch point; the wheel's moments about its centre give its "
+               "part along the tangent, the teeth push apart with that times tan phi; the "
+               "wheel's force balance the pin force at its centre",
+    "rack": "the tooth load along the line of action, at the pressure angle to the pitch line; "
+            "the rack's balance along its guide gives its part along the guide, across it the "
+            "guide's normal force, its moments the guide's couple",
+    "rolling driver": "the driving wheel alone, last: the balance along and across the ground "
+                      "gives the ground's grip and push at the contact, the moments about its "
+                      "centre the driver's torque",
 }
 
 
@@ -259,14 +319,14 @@ def _found_item(name, val, F, M) -> str:
     """One force or torque a step finds, in words with its unit and sign convention."""
     if isinstance(val, tuple):
         return f"{name} = {_vec(val, F)}"
+    if name.startswith(("N at the contact", "T at the contact")):  # (not a torque T)
+        return (f"{name} = {fmt(quiet(val, F))} N ("
+                + ("normal to the line, + pushing the wheel off it)"
+                   if name[0] == "N" else "along the line, + along perp(m))"))
     if name.startswith(("T ", "C ")):  # a torque, a guide's couple
         return f"{name} = {_moment(val, M)}"
     if name.startswith("F in "):  # a cylinder's force
         return f"{name} = {fmt(quiet(val, F))} N"
-    if name.startswith(("N at the contact", "T at the contact")):
-        return (f"{name} = {fmt(quiet(val, F))} N ("
-                + ("normal to the line, + pushing the wheel off it)"
-                   if name[0] == "N" else "along the line, + along perp(m))"))
     if name.startswith("F "):
         return f"{name} = {fmt(quiet(val, F))} N (+ along the guide's direction)"
     return f"{name} = {fmt(quiet(val, F))} N (along the guide's normal, + to its left)"
@@ -293,15 +353,23 @@ def _step_blocks(st, f, scale, F, M, bounds) -> list:
     return [("p", f"Step {st.index + 1}, {st.title}: {head}."), ("list", items)]
 
 
-def _driver_blocks(f, F, M) -> list:
-    """Section 8: the driving torque, the shaking force and moment, the guides' forces."""
-    items = [line + " (inertia, weights and loads; its power balances theirs)"
-             for line in _driver_lines(f, F, M, "")] + [
+def _driver_blocks(f, F, M, sol=None) -> list:
+    """Section 8: the driving torque, the shaking force and moment, the guides' forces (and
+    the friction, where the scene gives it)."""
+    fric = [] if sol is None else [line.strip() for line in _friction_lines(sol, f, F, M)]
+    said = (" (inertia, weights, loads and friction; its power balances theirs and the "
+            "friction's loss)" if fric else " (inertia, weights and loads; its power balances "
+            "theirs)")
+    items = fric + [line + said for line in _driver_lines(f, F, M, "")] + [
              f"shaking force (on the frame, through its pins and guides): "
              f"{_vec(f.shaking_force, F)}",
              f"shaking moment about the origin (with the driver's reaction): "
              f"{_moment(f.shaking_moment, M)}"]
-    items += [f"guide at {g.point}: {_vec(g.force, F)} on block {g.point}" for g in f.guides]
+    items += [f"guide at {g.point}: {_vec(g.force, F)} on block {g.point}"
+              + (f", its couple {_moment(g.couple, M)}" if _rack_couple(f, g) else "")
+              for g in f.guides]
+    items += [f"contact of {_wheel(c.wheel)} with {_base(c)}: {_vec(c.force, F)} on it; "
+              + c.grip_words() for c in f.contacts]
     return [("h", "8. The driving torque and the frame"), ("list", items)]
 
 
@@ -322,5 +390,5 @@ def force_blocks(sol, scale=None) -> list:
     bounds = force_bounds(sol, f)
     for st in f.steps:
         blocks += _step_blocks(st, f, scale, F, M, bounds)
-    blocks += _driver_blocks(f, F, M)
+    blocks += _driver_blocks(f, F, M, sol)
     return blocks

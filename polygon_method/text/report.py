@@ -58,7 +58,10 @@ def _given_lines(sol: Solution) -> list[str]:
                         else f" ({'from ' if inp.given else ''}{stated(inp)})")
                      + (f", {fmt_angular(inp.alpha, 'rad/s^2')}" if inp.alpha else ""))
     two = inp.second
-    if two is not None:
+    if two is not None and two.block is not None:  # a collar sliding along the crank
+        lines.append(f"second input: {sol.plan.steps[1].second_words(sc)} (two degrees of "
+                     "freedom)")
+    elif two is not None:
         lines.append(f"second input: crank {two.crank} at {math.degrees(two.angle):g} deg, "
                      f"{fmt_angular(two.omega, 'rad/s')}"
                      + (f", {fmt_angular(two.alpha, 'rad/s^2')}" if two.alpha else "")

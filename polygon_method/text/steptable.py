@@ -250,7 +250,8 @@ def _input(doc, sol):
                    "(given)" if a_s else
                    f"as_{inp.tip} = 0 (the block moves at a steady speed)"])
         return
-    doc.h(f"2. Input link {inp.crank}" + (f" and {inp.second.crank}" if inp.second else ""))
+    second = inp.second and (inp.second.crank or f"collar {inp.second.block}")
+    doc.h(f"2. Input link {inp.crank}" + (f" and {second}" if inp.second else ""))
     working, _ = _speed_working(sol)
     r = sc.link(inp.crank).length
     v = sol.speed(inp.tip)
@@ -266,7 +267,9 @@ def _input(doc, sol):
     else:
         items.append(f"alpha_{inp.crank} = 0 (the crank turns at a uniform speed)")
     two = inp.second
-    if two is not None:
+    if two is not None and two.block is not None:  # a collar sliding along the crank
+        items.append(f"the second input: {sol.plan.steps[1].second_words(sc)} (given)")
+    elif two is not None:
         r2 = sc.link(two.crank).length
         items.append(f"the second input, {two.crank}: omega_{two.crank} = "
                      f"{fmt(abs(two.omega))} rad/s {sense_word(two.omega)} (given); v_{two.tip} "
@@ -284,15 +287,17 @@ def _superposition(doc, sol):
     sc = sol.scene
     inp, two = sc.input, sc.input.second
     plan = sol.plan
-    k = next(i for i, st in enumerate(plan.steps) if st.kind == "second crank")
-    held = tuple(prm if i != k else prm[:2] + (0.0, 0.0) + prm[4:]
+    k = next(i for i, st in enumerate(plan.steps) if st.kind in ("second crank",
+                                                                  "second collar"))
+    held = tuple(prm if i != k else plan.steps[k].held(prm)
                  for i, prm in enumerate(plan.dims.steps))
+    name2 = two.crank or f"the collar {two.block}"  # its speed, or its sliding, held
     first = evaluate(plan, omega=inp.omega, alpha=0.0, upto=1,
                      dims=replace(plan.dims, steps=held))
     second = evaluate(plan, omega=0.0, alpha=0.0, upto=1)
     doc.p(f"Two inputs (two degrees of freedom): the velocities are linear in the two speeds, "
-          f"so the velocity polygon is drawn for {inp.crank} alone ({two.crank} held), then "
-          f"for {two.crank} alone ({inp.crank} held), and the two are added, image by image: "
+          f"so the velocity polygon is drawn for {inp.crank} alone ({name2} held), then "
+          f"for {name2} alone ({inp.crank} held), and the two are added, image by image: "
           f"v = v' + v''.")
     rows = []
     for p in sc.point_names:
@@ -300,13 +305,13 @@ def _superposition(doc, sol):
             continue
         a, b = first.V[p], second.V[p]
         rows.append((p, polar_words(a), polar_words(b), polar_words((a[0] + b[0], a[1] + b[1]))))
-    doc.table(("point", f"v' ({inp.crank} alone)", f"v'' ({two.crank} alone)",
+    doc.table(("point", f"v' ({inp.crank} alone)", f"v'' ({name2} alone)",
                "v = v' + v''"), rows)
     doc.p("The angular velocities add in the same way (for gears, the tabular method: each "
           "input alone, then the sum):")
     rows = [(lk.key, turn_words(first.W[lk.key]), turn_words(second.W[lk.key]),
              turn_words(first.W[lk.key] + second.W[lk.key])) for lk in sc.links]
-    doc.table(("link", f"omega' ({inp.crank} alone)", f"omega'' ({two.crank} alone)",
+    doc.table(("link", f"omega' ({inp.crank} alone)", f"omega'' ({name2} alone)",
                "omega = omega' + omega''"), rows)
 
 

@@ -59,9 +59,9 @@ def _rolling_sentence(sc, r) -> str:
         return (f"The block {r.rim} is a rack meshing with {r.label}; its point is at "
                 f"{_at(sc, sc.slider(r.rim).through)} at the instant shown.")
     if r.on == "gear":
-        what = (f"The gear {r.wheel} (centre {r.centre}, pitch radius "
-                f"{_len(sc, r.radius)}) meshes {'internally ' if r.inside else ''}with "
-                f"{r.label}")
+        what = (f"The {'ring gear' if r.ring else 'gear'} {r.wheel} (centre {r.centre}, pitch "
+                f"radius {_len(sc, r.radius)}) meshes {'internally ' if r.inside else ''}with "
+                f"{r.label}" + (" inside it" if r.ring else ""))
     else:
         on = (f"on {r.label} through {_at(sc, r.through)}" if r.on == "line" else
               f"{'inside' if r.inside else 'outside'} {r.label}")
@@ -145,7 +145,10 @@ def given(sc) -> list:
     """The scene's data as a textbook states it, one sentence a line."""
     out = _shape_sentences(sc)
     driver = compile_plan(sc).steps[0]  # what drives: asked of the plan's first step
-    if not driver.periodic:  # a block driven along its guide, or a wheel rolling: its place
+    own = getattr(driver, "problem_words", lambda sc: None)(sc)  # a driving collar's
+    if own is not None:  # a driver of its own words (a collar driven along its rod)
+        out.append(own)
+    elif not driver.periodic:  # a block driven along its guide, or a wheel rolling: its place
         out.append(_wheel_words(sc, driver.finds[0]) if sc.input.wheel is not None
                    else _block_words(sc, driver.finds[0]))
     else:
@@ -172,7 +175,10 @@ def _crank_words(sc, out):
                   f"{sense(inp.alpha)}")
     out.append(words + ".")
     two = inp.second
-    if two is not None:
+    if two is not None and two.block is not None:  # a collar sliding along the crank
+        step = compile_plan(sc).steps[1]
+        out.append(f"At the same time the {step.second_words(sc)}.")
+    elif two is not None:
         out.append(f"A second crank {two.crank} is driven too, about {two.pivot}: at the "
                    f"instant shown it makes {fmt(math.degrees(two.angle) % 360)}° with the x "
                    f"axis, turning at {two.speed_text}"

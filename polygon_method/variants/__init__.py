@@ -223,7 +223,7 @@ def _put(raw, path, value):
 
 _UNITS = {"v": "m/s", "a": "m/s^2", "omega": "rad/s", "alpha": "rad/s^2", "vs": "m/s",
           "as": "m/s^2", "ac": "m/s^2", "rub": "m/s", "torque": "N m",
-          "vI": "m/s", "aI": "m/s^2", "F": "N", "N": "N", "vu": "m/s", "au": "m/s^2"}
+          "vI": "m/s", "aI": "m/s^2", "F": "N", "N": "N", "Fc": "N", "vu": "m/s", "au": "m/s^2"}
 
 
 def questions(scene: Scene) -> tuple:

@@ -353,51 +353,92 @@ def solve_array(memo, K, prm, np):
     ``_SUBSAMPLE`` points); the rest by Newton from the straight line between their two
     solved neighbours, in one vectorised pass; an element where that fails (near a limit)
     by continuation from its neighbour. Returns (x, y, th, bad mask)."""
+    data, size = _stacked(K, prm, np)
+    n = len(data)
+    sub_idx = _subsample(data, size, np)
+    inp_of = lambda i: tuple(float(v) for v in data[i])  # noqa: E731
+    a, qs, signs = _walk(memo, data, sub_idx, size, inp_of, np)
+    if not qs:
+        return np.zeros(n), np.zeros(n), np.zeros(n), np.ones(n, dtype=bool)
+    x, y, th, good, inside = _between(data, size, qs, signs, np)
+    # what Newton missed between two solved neighbours: continuation from the neighbour
+    idx = np.arange(n)
+    for side in (idx[(idx > a) & inside & ~good], idx[(idx < a) & inside & ~good][::-1]):
+        for i in side:
+            prev = i - 1 if i > a else i + 1
+            if not good[prev]:
+                continue
+            p = (float(x[prev]), float(y[prev]), float(th[prev]))
+            got = follow(p, inp_of(prev), inp_of(i), size, det_sign(p, inp_of(prev)))
+            if got is not None:
+                x[i], y[i], th[i] = got
+                good[i] = True
+    return x, y, th, ~good
+
+
+def _stacked(K, prm, np):
+    """The inputs as an n x 13 array (the known points' x, y, then the dimensions) and the
+    size of the largest dimension."""
     cols = [np.asarray(c, dtype=float) for xy in K for c in xy] + \
         [np.asarray(p, dtype=float) for p in prm]
     n = max([c.size for c in cols] + [1])
     cols = [np.broadcast_to(c, (n,)) if c.ndim else np.full(n, float(c)) for c in cols]
     data = np.stack(cols, axis=1)  # n x 13
-    size = float(max(scale(tuple(np.max(np.abs(data[:, 6:]), axis=0))), 1e-300))
-    # the subsample: every 2 % of the largest length the inputs move (at most _SUBSAMPLE)
+    return data, float(max(scale(tuple(np.max(np.abs(data[:, 6:]), axis=0))), 1e-300))
+
+
+def _subsample(data, size, np):
+    """The elements continuation walks through: every 2 % of the largest length the
+    inputs move (at most ``_SUBSAMPLE``), the first and the last."""
+    n = len(data)
     moved = np.concatenate([[0.0], np.cumsum(np.abs(np.diff(data, axis=0)).max(axis=1))])
     marks = np.searchsorted(moved, np.arange(0.0, moved[-1], 0.02 * size))
     if len(marks) > _SUBSAMPLE:
         marks = range(0, n, max(1, -(-n // _SUBSAMPLE)))
-    sub_idx = sorted(set(int(i) for i in marks) | {0, n - 1})
+    return sorted(set(int(i) for i in marks) | {0, n - 1})
+
+
+def _walk(memo, data, sub_idx, size, inp_of, np):
+    """Continuation over the subsample, both ways from the element nearest a pose already
+    solved (``memo``), stopping each way at a limit: (that element, poses, signs) by
+    element index."""
     ref = memo.array()
     probe = sub_idx[::max(1, len(sub_idx) // 16)]  # where the walk starts: near a solved one
     dist = np.abs(data[probe][:, None, :] - ref[None, :, :]).max(axis=2).min(axis=1)
     a = probe[int(np.argmin(dist))]
-    inp_of = lambda i: tuple(float(v) for v in data[i])  # noqa: E731
     qs, signs = {}, {}
     qa = solve_scalar(memo, *kp(inp_of(a)))
-    if qa is not None:
-        qs[a] = qa
-        signs[a] = det_sign(qa, inp_of(a))
-        pos = sub_idx.index(a)
-        for order in (sub_idx[pos + 1:], sub_idx[:pos][::-1]):
-            prev = a
-            for i in order:
-                q = follow(qs[prev], inp_of(prev), inp_of(i), size, signs[prev])
-                if q is None:  # a limit before i: each element up to it in turn
-                    d = 1 if i > prev else -1
-                    for e in range(prev + d, i, d):
-                        q = follow(qs[prev], inp_of(prev), inp_of(e), size, signs[prev])
-                        if q is None:
-                            break
-                        qs[e] = q
-                        signs[e] = det_sign(q, inp_of(e))
-                        prev = e
-                    break
-                qs[i] = q
-                signs[i] = det_sign(q, inp_of(i))
-                memo.add(inp_of(i), q, signs[i])
-                prev = i
-    x, y, th = np.zeros(n), np.zeros(n), np.zeros(n)
-    bad = np.ones(n, dtype=bool)
-    if not qs:
-        return x, y, th, bad
+    if qa is None:
+        return a, qs, signs
+    qs[a] = qa
+    signs[a] = det_sign(qa, inp_of(a))
+    pos = sub_idx.index(a)
+    for order in (sub_idx[pos + 1:], sub_idx[:pos][::-1]):
+        prev = a
+        for i in order:
+            q = follow(qs[prev], inp_of(prev), inp_of(i), size, signs[prev])
+            if q is None:  # a limit before i: each element up to it in turn
+                d = 1 if i > prev else -1
+                for e in range(prev + d, i, d):
+                    q = follow(qs[prev], inp_of(prev), inp_of(e), size, signs[prev])
+                    if q is None:
+                        break
+                    qs[e] = q
+                    signs[e] = det_sign(q, inp_of(e))
+                    prev = e
+                break
+            qs[i] = q
+            signs[i] = det_sign(q, inp_of(i))
+            memo.add(inp_of(i), q, signs[i])
+            prev = i
+    return a, qs, signs
+
+
+def _between(data, size, qs, signs, np):
+    """Every element between the solved ones by Newton from the straight line between its
+    two solved neighbours, in one vectorised pass, kept where it converged on the same
+    assembly: (x, y, th, good mask, inside the solved range mask)."""
+    n = len(data)
     known = np.array(sorted(qs), dtype=np.intp)
     kq = np.array([qs[int(i)] for i in known])
     ks = np.array([signs[int(i)] for i in known])
@@ -424,18 +465,7 @@ def solve_array(memo, K, prm, np):
     for k in known:
         x[k], y[k], th[k] = qs[int(k)]
         good[k] = True
-    # what Newton missed between two solved neighbours: continuation from the neighbour
-    for side in (idx[(idx > a) & inside & ~good], idx[(idx < a) & inside & ~good][::-1]):
-        for i in side:
-            prev = i - 1 if i > a else i + 1
-            if not good[prev]:
-                continue
-            p = (float(x[prev]), float(y[prev]), float(th[prev]))
-            got = follow(p, inp_of(prev), inp_of(i), size, det_sign(p, inp_of(prev)))
-            if got is not None:
-                x[i], y[i], th[i] = got
-                good[i] = True
-    return x, y, th, ~good
+    return x, y, th, good, inside
 
 
 def sign(d):

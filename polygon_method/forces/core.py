@@ -1,0 +1,276 @@
+"""The force solve's short road: planned once per scene, then only numbers.
+
+What the force analysis needs from a scene and its kinematic plan is the same at every
+instant: which body each point's forces act on (:func:`~polygon_method.forces.owners`),
+each mass's body, centre (``lam``, ``mu`` on its link) and weight, each load's body, and
+each group's bodies and points. :class:`ForcePlan` works all of that out once; its
+:meth:`~ForcePlan.run` then adds the known forces on each body into numbered sums
+(:class:`Sums`: the same additions, in the same order, as the
+:class:`~polygon_method.forces.bodies.Ledger` makes them) and calls each group's equations
+(its room's ``solve``, the one place they are written) in the plan's reverse order: the
+function each room's ``bind`` gives, on floats for one instant or on arrays of crank
+angles for a sweep alike.
+
+It keeps the pin forces, the guides' forces, the driver's effort and the shaking force and
+moment as plain numbers; the records a reader may ask for (:class:`~.records.Inertia`,
+:class:`~.records.PinForce`, :class:`~.records.GuideForce`) are made from them when first
+read, and the step records with their words and drawings (:class:`~.records.ForceStep`,
+the free bodies) by the long road, the rooms' ``step``, only when a view reads them.
+
+A plan with a group whose room has no ``bind`` (a yoke, a peg, a cylinder, a wheel, a
+triad), or driven by a cylinder (whose force needs the walk twice), takes the long road
+for everything: :attr:`ForcePlan.quick` is False.
+"""
+
+from __future__ import annotations
+
+import weakref
+
+from .bodies import Singular, centre, inertia_record
+from .engine import indicator_force
+from .records import FRAME, GuideForce, PinForce, block, quick_forces
+
+__all__ = ["ForcePlan", "Sums", "force_plan"]
+
+
+class Sums:
+    """The resultant ``(Fx, Fy, M about the origin)`` of the known forces on each body,
+    by the body's number (the frame 0): three lists, added to as the
+    :class:`~polygon_method.forces.bodies.Ledger` adds (``t + f``, ``t + cross(r, f)``)."""
+
+    __slots__ = ("fx", "fy", "m")
+
+    def __init__(self, zeros):
+        self.fx = zeros[:]
+        self.fy = zeros[:]
+        self.m = zeros[:]
+
+    def add(self, i, fx, fy, x, y):
+        """A force ``(fx, fy)`` at ``(x, y)`` on body ``i``."""
+        self.fx[i] = self.fx[i] + fx
+        self.fy[i] = self.fy[i] + fy
+        self.m[i] = self.m[i] + (x * fy - y * fx)
+
+    def couple(self, i, c):
+        """A couple ``c`` (N m, ccw positive) on body ``i``."""
+        self.m[i] = self.m[i] + c
+
+    def of(self, i):
+        """``(Fx, Fy, M about the origin)`` known on body ``i``."""
+        return (self.fx[i], self.fy[i], self.m[i])
+
+
+class Numbering:
+    """body name -> its number in the :class:`Sums` (the frame 0), given as first asked."""
+
+    def __init__(self):
+        self.index = {FRAME: 0}
+
+    def __call__(self, body) -> int:
+        """The number of ``body`` (a new one the first time it is named)."""
+        i = self.index.get(body)
+        if i is None:
+            i = self.index[body] = len(self.index)
+        return i
+
+
+class ForcePlan:
+    """What the force analysis of ``scene`` on ``plan`` needs, worked out once (see the
+    module). ``own``: point -> the body its forces act on; ``quick``: whether every group
+    has its short road; ``driving``: a step that drives the mechanism by a force found
+    from the walk (a cylinder), or None."""
+
+    def __init__(self, scene, plan):
+        from . import ROOMS, owners  # the rooms (this module is one of their helpers)
+        self.scene, self.plan = scene, plan
+        self.own = own = owners(scene, plan)  # refuses what the analysis does not cover
+        self.driving = next((st for st in plan.steps
+                             if getattr(ROOMS[st.kind], "drives", lambda sc, s: False)(scene, st)),
+                            None)
+        self.quick = self.driving is None and all(hasattr(ROOMS[st.kind], "bind")
+                                                  for st in plan.steps)
+        if not self.quick:
+            return
+        ix = Numbering()
+        self._masses(scene, ix)
+        self._loads(scene, own, ix)
+        first = plan.steps[0]
+        bound = ((st, ROOMS[st.kind].bind(st, own, ix), st is first)
+                 for st in reversed(plan.steps))
+        self.steps = tuple(b for b in bound if b[1] is not None)  # skip what solves nothing
+        self.zeros = [0.0] * len(ix.index)
+        self.index = ix.index
+        inp = scene.input
+        if first.kind == "block":  # the driver the plan starts with: a block
+            self.driver = (block(first.point), "block")
+        else:
+            self.driver = (inp.crank, "crank")
+        self.second = None if inp.second is None else scene.link(inp.second.crank).key
+
+    def _masses(self, scene, ix):
+        """Each mass, in the scene's order as :func:`~.bodies.gather` takes them, as what
+        the hot loop reads (body number, a block's point or None, its link's ends and key,
+        lam, mu, ``-m``, ``-I``, its weight or None) and, beside it, what only its record
+        reads (body, m, I, how)."""
+        grav = scene.gravity
+        fixed = {lk.key for lk in scene.links if lk.p in scene.ground and lk.q in scene.ground}
+        hot, cold = [], []
+        for m in scene.masses:
+            if m.body in fixed:  # a part of the frame: it neither moves nor loads
+                continue
+            if m.block:
+                body, where = block(m.body), (m.body, None, None)
+            else:
+                lk = scene.link(m.body)
+                body, where = lk.key, (None, lk.p, lk.q)
+            weight = None
+            if grav is not None:
+                w = m.mass * grav.g
+                weight = (w * grav.direction[0], w * grav.direction[1])
+            # -m a_G and -I alpha with -m and -I taken once: the same products
+            hot.append((ix(body), *where, body, m.lam, m.mu, -m.mass, -m.inertia, weight))
+            cold.append((body, m.mass, m.inertia, m.how))
+        self.masses, self.mass_records = tuple(hot), tuple(cold)
+
+    def _loads(self, scene, own, ix):
+        """Each load as (body number or None for a couple's, point, force or couple, gas);
+        the indicator's piston and its body's number."""
+        out = []
+        for ld in scene.loads:
+            if ld.force is not None:
+                body = own.get(ld.target, FRAME)
+                if body == FRAME:
+                    continue
+                out.append((ix(body), ld.target, ld.force, ld.gas))
+            else:
+                out.append((None, ix(ld.target), ld.torque, None))
+        self.loads = tuple(out)
+        ind = scene.indicator
+        self.indicator = None if ind is None else (ind.piston,
+                                                   ix(own.get(ind.piston, FRAME)))
+
+    def run(self, motion):
+        """The :class:`~.records.Forces` at ``motion``'s instant (or over its angles): its
+        numbers (the effort, the shaking force and moment: the frame's sums); its records
+        made when first read, from the raw pin and guide forces kept."""
+        P, A, Al = motion.P, motion.A, motion.Al
+        S = _new(Sums)  # Sums(self.zeros), one call fewer
+        z = self.zeros
+        S.fx = sx = z[:]
+        S.fy = sy = z[:]
+        S.m = sm = z[:]
+        for i, pt, p, q, body, lam, mu, nm, ni, weight in self.masses:
+            if pt is None:  # G and a_G: the link's image of (lam, mu), as bodies.centre
+                (px, py), (qx, qy) = P[p], P[q]
+                dx, dy = qx - px, qy - py
+                gx, gy = px + lam * dx - mu * dy, py + lam * dy + mu * dx
+                (px, py), (qx, qy) = A[p], A[q]
+                dx, dy = qx - px, qy - py
+                ax, ay = px + lam * dx - mu * dy, py + lam * dy + mu * dx
+                alpha = Al[body]
+            else:
+                (gx, gy), (ax, ay), alpha = P[pt], A[pt], 0.0
+            fx, fy = nm * ax, nm * ay  # -m a_G
+            # S.add(i, fx, fy, gx, gy); S.couple(i, -I alpha); the weight likewise
+            sx[i] = sx[i] + fx
+            sy[i] = sy[i] + fy
+            sm[i] = sm[i] + (gx * fy - gy * fx) + ni * alpha
+            if weight is not None:
+                fx, fy = weight
+                sx[i] = sx[i] + fx
+                sy[i] = sy[i] + fy
+                sm[i] = sm[i] + (gx * fy - gy * fx)
+        for i, target, f, gas in self.loads:
+            if i is None:  # a couple on a link: S.couple(target, f)
+                sm[target] = sm[target] + f
+                continue
+            x, y = P[target]
+            fx, fy = f
+            sx[i] = sx[i] + fx  # S.add(i, fx, fy, x, y)
+            sy[i] = sy[i] + fy
+            sm[i] = sm[i] + (x * fy - y * fx)
+            if gas:  # the gas pushes the cylinder's cover (the frame) as hard, back
+                S.add(0, -fx, -fy, x, y)
+        if self.indicator is not None:
+            piston, i = self.indicator
+            fx, fy, _, _ = indicator_force(self.scene, motion)
+            x, y = P[piston]
+            S.add(i, fx, fy, x, y)
+            S.add(0, -fx, -fy, x, y)
+        pins, guides = [], []
+        effort = second = None
+        for st, fn, first in self.steps:
+            try:
+                t = fn(P, S, pins, guides)
+            except Singular as exc:
+                from ..common.errors import PolygonMethodError
+                raise PolygonMethodError(f"forces: {exc}: the pin forces are not determined "
+                                         f"here (step {st.index + 1}, {st.title})",
+                                         file=self.scene.file) from None
+            if t is not None:
+                if first:
+                    effort = t
+                else:
+                    second = t
+        name, kind = self.driver
+        return quick_forces(effort, (sx[0], sy[0]), sm[0], name, kind, second, self.second,
+                            (self, motion, pins, guides, S))
+
+    # what its :class:`~.records.Forces` asks of its ``source``, (this plan, the motion, the
+    # raw pin and guide forces, the sums), when first read
+
+    def parts(self, source) -> tuple:
+        """(inertia, pins, guides) records (:meth:`records`)."""
+        return self.records(*source[1:4])
+
+    def story(self, source) -> tuple:
+        """(steps, applied, contacts, the drawings' functions): the long road's."""
+        from . import _long  # the walk with its words (this module is one of its helpers)
+        return _long(source[1], self)[10:14]
+
+    def resultant(self, source, body) -> tuple:
+        """``body``'s resultant in the sums (zero for a body with none)."""
+        i = self.index.get(body)
+        return (0.0, 0.0, 0.0) if i is None else source[4].of(i)
+
+    def records(self, motion, pins, guides) -> tuple:
+        """(:class:`~.records.Inertia` s, :class:`~.records.PinForce` s,
+        :class:`~.records.GuideForce` s) from :meth:`run`'s raw tuples; each mass's G and
+        a_G found again from ``motion`` as :meth:`run` found them (the same arithmetic)."""
+        P, A, Al = motion.P, motion.A, motion.Al
+        inertia = []
+        for (_, pt, p, q, key, lam, mu, _, _, _), (body, mass, moment, how) in zip(
+                self.masses, self.mass_records):
+            if pt is None:
+                G, a_G, alpha = centre(P, lam, mu, p, q), centre(A, lam, mu, p, q), Al[key]
+            else:
+                G, a_G, alpha = P[pt], A[pt], 0.0
+            inertia.append(inertia_record(body, mass, moment, G, a_G, alpha, how))
+        return (tuple(inertia), tuple(PinForce(*p) for p in pins),
+                tuple(GuideForce(*g) for g in guides))
+
+
+_new = object.__new__
+_PLANS: dict = {}  # id(scene) -> (weak reference to the scene, plan, ForcePlan)
+
+
+def force_plan(scene, plan) -> ForcePlan:
+    """The :class:`ForcePlan` of ``scene`` on ``plan``, made once while the scene lives
+    (its refusal, for a plan the analysis does not cover, raised on every call)."""
+    ident = id(scene)
+    hit = _PLANS.get(ident)
+    if hit is not None and hit[0]() is scene and hit[1] is plan:
+        return hit[2]
+    fp = ForcePlan(scene, plan)
+    try:
+        ref = weakref.ref(scene, lambda r, ident=ident: _forget(r, ident))
+    except TypeError:  # a scene that takes no weak reference: not kept
+        return fp
+    _PLANS[ident] = (ref, plan, fp)
+    return fp
+
+
+def _forget(ref, ident):
+    hit = _PLANS.get(ident)
+    if hit is not None and hit[0] is ref:
+        del _PLANS[ident]

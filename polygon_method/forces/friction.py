@@ -1,0 +1,152 @@
+"""Coulomb friction at the sliding guides and the pins (``[friction]``), on the same walk.
+
+At a guide the block feels ``mu |N|`` along the guide, against its sliding relative to
+the guide (``v_rel``: the block's point's velocity less that of the guide's point under
+it); the guide's body feels it back. At a pin of radius r (``[pins]``) the force between
+the two bodies is tangent to the friction circle of radius ``mu r``: the same force
+through the pin's centre and a couple ``mu r |F|`` against the relative turning
+``omega_on - omega_by`` (on ``on``; ``by`` feels it back; a block, which cannot turn on its
+guide, passes its couple to the guide: the frame, or the link it slides on). Each friction force is known
+once the normal forces are, which are known once the friction is: the walk is repeated
+with the friction of the forces found before, until the forces settle (each pass changes
+them by about mu r over the mechanism's arms, a small fraction; :data:`ROUNDS` passes at
+most, else the mechanism is said to lock itself). Where nothing slides (relative velocity
+zero) the friction is static and not determined by the statics: it is taken as zero there.
+
+Every friction force works against the motion: its power ``-mu |N| |v_rel|`` at a guide,
+``-mu r |F| |omega_rel|`` at a pin (:func:`power`), which the power balance then holds.
+
+>>> sgn(-2.0), sgn(0.0), sgn(3.0)
+(-1.0, 0.0, 1.0)
+"""
+
+from __future__ import annotations
+
+from .records import FRAME, Side, block
+
+#: the passes of the walk at most before friction is said not to settle
+ROUNDS = 200
+#: how little the friction loads may change between two passes, relative to the largest
+#: force (of the instant): then they have settled
+SETTLED = 1e-14
+
+
+def sgn(x):
+    """+1, -1 or 0 (floats or arrays)."""
+    return (x > 0) * 1.0 - (x < 0) * 1.0
+
+
+def _omega(scene, motion, body):
+    """A body's angular velocity: a link's; a block turns with its moving guide."""
+    if body == FRAME:
+        return 0.0
+    if body.startswith("block "):
+        sl = scene.slider(body[6:])
+        guide = getattr(sl, "guide", None)
+        return motion.W[scene.link(guide).key] if guide else 0.0
+    return motion.W.get(body, 0.0)
+
+
+def _turner(scene, body):
+    """The body a couple on ``body`` turns: a block cannot turn on its guide, which takes
+    the couple (a fixed path: the frame; a moving link: the link)."""
+    if not body.startswith("block "):
+        return body
+    guide = getattr(scene.slider(body[6:]), "guide", None)
+    return scene.link(guide).key if guide else FRAME
+
+
+def _guide_velocity(scene, motion, by, X):
+    """The velocity of the guide's point under the block at X (the guide ``by``)."""
+    if by == FRAME:
+        return 0.0, 0.0
+    x, y = motion.P[X]
+    if by.startswith("block "):  # a translating yoke
+        return tuple(motion.V[by[6:]])
+    lk = scene.link(by)
+    (px, py), (vx, vy), w = motion.P[lk.p], motion.V[lk.p], motion.W[lk.key]
+    return vx - w * (y - py), vy + w * (x - px)
+
+
+def loads(scene, motion, pins, guides) -> tuple:
+    """The friction of the forces found: ((body, what, (fx, fy), (x, y)) forces at guides,
+    (body, what, couple) couples at pins), with their reactions, and the friction power
+    (each term's); the frame's share too (the shaking force and moment count it)."""
+    fr = scene.friction
+    out = []
+    if fr.guides:
+        for g in guides:
+            X = g.point
+            vx, vy = motion.V[X]
+            gx, gy = _guide_velocity(scene, motion, g.by, X)
+            ux, uy = g.n[1], -g.n[0]  # along the guide
+            vs = (vx - gx) * ux + (vy - gy) * uy
+            f = -fr.guides * abs(g.normal) * sgn(vs)
+            x, y = motion.P[X]
+            what = f"friction at the guide of {X}"
+            out.append((block(X), what, (f * ux, f * uy), (x, y)))
+            out.append((g.by, what, (-f * ux, -f * uy), (x, y)))  # (the frame: shaking)
+    if fr.pins:
+        radius = {p.point: p.radius for p in scene.pins}
+        for p in pins:
+            r = radius.get(p.point)
+            if r is None:
+                continue
+            rel = _omega(scene, motion, p.on) - _omega(scene, motion, p.by)
+            c = -fr.pins * r * (p.force[0] ** 2 + p.force[1] ** 2) ** 0.5 * sgn(rel)
+            what = f"friction at pin {p.point}"
+            for body, cc in ((p.on, c), (p.by, -c)):
+                out.append((_turner(scene, body), what, cc))
+    return tuple(out)
+
+
+def apply(led, items):
+    """Enter the friction ``items`` (:func:`loads`) in the ledger as known loads."""
+    for it in items:
+        if len(it) == 3:
+            led.couple(it[0], it[2], it[1])
+        else:
+            body, what, (fx, fy), (x, y) = it
+            led.add(body, fx, fy, x, y, what, Side("friction", body, "", what.split()[-1],
+                                                   (fx, fy), (x, y)))
+
+
+def scale(f) -> float:
+    """The largest pin or guide force of the analysis ``f`` (N; at least 1e-300)."""
+    vals = [float(getattr(v, "max", lambda v=v: v)()) for v in
+            [(p.force[0] ** 2 + p.force[1] ** 2) ** 0.5 for p in f.pins]
+            + [abs(g.normal) for g in f.guides]]
+    return max(vals + [1e-300])
+
+
+def change(a, b) -> float:
+    """The largest change between two passes' friction loads (N, or N m over a length)."""
+    if a is None or len(a) != len(b):
+        return float("inf")
+    worst = 0.0
+    for x, y in zip(a, b):
+        if len(x) == 3:
+            d = abs(x[2] - y[2])
+        else:
+            d = abs(x[2][0] - y[2][0]) + abs(x[2][1] - y[2][1])
+        worst = max(worst, float(getattr(d, "max", lambda: d)()))
+    return worst
+
+
+def power(motion, scene, items) -> float:
+    """The friction's power (W, never positive): each force times its point's velocity
+    relative to the body it acts on's partner, each couple times its body's omega (the
+    reactions included: the relative motion)."""
+    total = 0.0
+    for it in items:
+        if len(it) == 3:
+            total = total + it[2] * _omega(scene, motion, it[0])
+        else:
+            body, what, (fx, fy), (x, y) = it
+            X = what.split()[-1]
+            if body.startswith("block ") and body[6:] == X:
+                vx, vy = motion.V[X]
+            else:  # the guide's body: its own point under the block
+                vx, vy = _guide_velocity(scene, motion, body, X)
+            total = total + fx * vx + fy * vy
+    return total
