@@ -283,7 +283,7 @@ def test_turned_where_refused_the_refusal_is_one_line_naming_the_step_and_it_is_
     from polygon_method.common.errors import AssemblyError, SingularStepError
     msg = str(exc)
     assert isinstance(exc, (AssemblyError, SingularStepError)), msg
-    assert "\n" not in msg and re.search(r"step \d+ \(|\[assembly\] |\[input\] ", msg), msg
+    assert "\n" not in msg and re.search(r"step \d+ \(|\[assembly\] |\[input\] \w+ ", msg), msg
     assert not re.search(r"\de-1\d", msg), msg  # no 1.2e-14 for a zero
 
 

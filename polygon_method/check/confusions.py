@@ -51,7 +51,7 @@ def _quantities(d, family):
 def under_names(sc) -> dict:
     """``A1`` -> slider key of the guide's point under each block (see the scene's
     ``under_block_names``)."""
-    from ..scene.records import under_block_names
+    from ..scene.answers import under_block_names
     return under_block_names(sc.point_names, sc.ground, sc.sliders)
 
 

@@ -238,19 +238,9 @@ class _Reducer:
             step = np.abs(np.diff(theta[:10001]))
             spacing = float(np.median(step))
         cps = [c.theta for c in dom.change_points]
-        notes = tuple(dom.notes)
-        if self.forces_left_out is not None:  # at some angles: none of them summarised
-            for nm in self.force_names:
-                self.best.pop(nm, None)
-            notes += (f"the forces are not summarised: {self.forces_left_out}",)
+        notes = tuple(dom.notes) + self._forces_note()
         tasks, rows = [], []
         scales = self._scales()
-        if self.force_names:  # forces and moments: a 1e-9 part of the largest is rounding
-            size = lambda b: max(abs(b[0]), abs(b[2]))  # noqa: E731
-            F = max([size(b) for b in self.best.values() if b[4] == "N"] + [0.0])
-            scales["N"] = F
-            scales["N m"] = max([F * scales["m"]] + [size(b) for b in self.best.values()
-                                                     if b[4] == "N m"])
         limits = [lp.theta for lp, _ in self._limits_in(theta, spacing)]
         noise = self._noise(theta)
         for name, (mx, imx, mn, imn, unit, what, cmax, cmin) in self.best.items():
@@ -486,8 +476,29 @@ class _Reducer:
                 out[f"s_{s.key}"] = of(eb.P[s.point], "position")
         return out
 
+    def _forces_note(self) -> tuple:
+        """Where the force analysis failed at some angle, none of its quantities is kept:
+        the note saying so (else none)."""
+        if self.forces_left_out is None:
+            return ()
+        for nm in self.force_names:
+            self.best.pop(nm, None)
+        return (f"the forces are not summarised: {self.forces_left_out}",)
+
     def _scales(self) -> dict:
-        """Typical sizes per unit, below a 1e-9 part of which a value is zero (rounding)."""
+        """Typical sizes per unit, below a 1e-9 part of which a value is zero (rounding);
+        forces and moments: the largest force, it times the longest length."""
+        out = self._motion_scales()
+        if self.force_names:
+            size = lambda b: max(abs(b[0]), abs(b[2]))  # noqa: E731
+            F = max([size(b) for b in self.best.values() if b[4] == "N"] + [0.0])
+            out["N"] = F
+            out["N m"] = max([F * out["m"]] + [size(b) for b in self.best.values()
+                                               if b[4] == "N m"])
+        return out
+
+    def _motion_scales(self) -> dict:
+        """The kinematic quantities' typical sizes per unit (see :meth:`_scales`)."""
         sc = self.scene
         if not self.sw.driver.periodic:  # a block driver: the sizes its input sets
             v, a, w, k = self.sw.driver.input_scales(sc)

@@ -10,16 +10,47 @@ import re
 
 from ..common.errors import printable
 from ..common.units import UNITS
-from .records import ANSWER_KINDS, UNDER_BLOCK_KINDS, Answer, split_name, under_block_names
+from .records import ANSWER_KINDS, UNDER_BLOCK_KINDS, Answer, split_name
 from .tables import _suggest, _which_point
 
-__all__ = ["decimal_comma", "ENGINE_ANSWERS"]
+__all__ = ["decimal_comma", "ENGINE_ANSWERS", "under_block_names"]
 
 #: the engine chapter's answer keys -> their unit kind (checked in check/engine.py)
 ENGINE_ANSWERS = {"piston_effort": "force", "crank_effort": "force", "T_mean": "torque",
                   "dE_max": "energy", "I_flywheel": "moment_of_inertia", "m_flywheel": "mass",
                   "rod_thrust": "force", "side_thrust": "force", "shaking_force": "force",
                   "shaking_moment": "torque"}
+
+
+def under_block_names(point_names, ground, sliders) -> dict:
+    """Answer name -> slider key, for the point of a moving guide that lies under a block:
+    ``A1`` for the block at A (its image is a1 on the velocity polygon, a1' on the
+    acceleration polygon), ``A2`` where the scene has a point A1 of its own; for a peg in
+    two moving slots, ``P1`` and ``P2`` in the order of its slots (a fixed slot has none:
+    its point is the pole). The names follow the polygons' letters.
+
+    >>> from types import SimpleNamespace as S
+    >>> under_block_names(["O2", "A", "O4", "P"], {"O2": 0, "O4": 0},
+    ...                   [S(point="A", key="A", guide="O4-P")])
+    {'A1': 'A'}
+    """
+    lower = {p.lower() for p in point_names}
+    taken = set(lower)
+    if "O" in point_names and "O" not in ground:  # a moving O's image is o1 (or o2 ...)
+        k = 1
+        while f"o{k}" in lower:
+            k += 1
+        taken.add(f"o{k}")
+    out, used = {}, set()
+    for s in sliders:
+        if not getattr(s, "guide", None):
+            continue
+        k = 1
+        while f"{s.point.lower()}{k}" in taken | used:
+            k += 1
+        used.add(f"{s.point.lower()}{k}")
+        out[f"{s.point}{k}"] = s.key
+    return out
 
 
 def _bare(value) -> bool:

@@ -60,37 +60,6 @@ ANSWER_KINDS = {
 UNDER_BLOCK_KINDS = {"v": "vu", "a": "au"}
 
 
-def under_block_names(point_names, ground, sliders) -> dict:
-    """Answer name -> slider key, for the point of a moving guide that lies under a block:
-    ``A1`` for the block at A (its image is a1 on the velocity polygon, a1' on the
-    acceleration polygon), ``A2`` where the scene has a point A1 of its own; for a peg in
-    two moving slots, ``P1`` and ``P2`` in the order of its slots (a fixed slot has none:
-    its point is the pole). The names follow the polygons' letters.
-
-    >>> from types import SimpleNamespace as S
-    >>> under_block_names(["O2", "A", "O4", "P"], {"O2": 0, "O4": 0},
-    ...                   [S(point="A", key="A", guide="O4-P")])
-    {'A1': 'A'}
-    """
-    lower = {p.lower() for p in point_names}
-    taken = set(lower)
-    if "O" in point_names and "O" not in ground:  # a moving O's image is o1 (or o2 ...)
-        k = 1
-        while f"o{k}" in lower:
-            k += 1
-        taken.add(f"o{k}")
-    out, used = {}, set()
-    for s in sliders:
-        if not getattr(s, "guide", None):
-            continue
-        k = 1
-        while f"{s.point.lower()}{k}" in taken | used:
-            k += 1
-        used.add(f"{s.point.lower()}{k}")
-        out[f"{s.point}{k}"] = s.key
-    return out
-
-
 def guide_words(label: str, noun: str = "path", of: str | None = None) -> str:
     """A fixed path's (or slot's) words from its label, as a teacher writes them:
     "horizontal path", "vertical slot", "path at 30 deg" (never "the at 30 deg path");
@@ -352,10 +321,13 @@ class Input:
     #: the first to the last position where the mechanism assembles
     stroke: tuple | None = None
     #: a wheel rolling on a fixed line driving the mechanism (``[input] wheel = "CP"``): its
-    #: link, or None. Then ``block`` is its centre, on the line parallel to the ground at the
-    #: wheel's radius (its path in the sliders), ``angle``, ``omega``, ``alpha`` the centre's
-    #: place, velocity and acceleration along it (as for a block), ``speed_text`` the wheel's
-    wheel: str | None = None  # omega as given; ``wheel_given`` the keys vs_C, as_C if given
+    #: link, or None. Then ``block`` is its centre, moving on the line parallel to the ground
+    #: at the wheel's radius (its path in the scene's sliders), ``angle``, ``omega``,
+    #: ``alpha`` the centre's place, velocity and acceleration along it (as for a block),
+    #: ``speed_text`` the wheel's angular velocity as the scene gave it
+    wheel: str | None = None
+    #: a driving wheel's motion given on its centre (``vs_C``, ``as_C``) instead of its own
+    #: omega and alpha: the keys so given (the step table says which were given)
     wheel_given: tuple = ()
     #: an angle the scene gave in a book's words: (words, the angle they gave (rad), the
     #: slips a reader of them might make (:class:`~.angles.Slip`), the note saying how
