@@ -8,6 +8,7 @@ its crossings and the fluctuation of energy by quadrature and root finding. To 1
 from pathlib import Path
 
 import mpmath
+import pytest
 from mpmath import mpf
 
 from polygon_method import load_scene, solve
@@ -16,6 +17,14 @@ from polygon_method.linkage import turning_moment
 
 HERE = Path(__file__).resolve().parent / "textbook"
 REL = 1e-9
+
+
+@pytest.fixture(autouse=True)
+def _precision():
+    """Each test sets mpmath's precision; the others' is restored after it."""
+    old = mpmath.mp.dps
+    yield
+    mpmath.mp.dps = old
 
 
 def close(got, want, rel=REL):
