@@ -135,8 +135,11 @@ def _check_scales(svg, sol, used):
                                                                        rel=1e-5)
         measured += 1
     if "note-velocity-scale" in svg.groups and inp.block is not None:
+        collar = not hasattr(sc.slider(inp.block), "through")  # its sliding is given
+        kind, name = ("sliding", f"vs_{inp.block}") if collar else ("absolute",
+                                                                       f"v_{inp.block}")
         n = next(k for k, v in enumerate(drawn_vectors(sol, "velocity"))
-                 if v.kind == "absolute" and v.name == f"v_{inp.block}")
+                 if v.kind == kind and v.name == name)
         tail = svg.path(f"velocity-vector-{n}-shaft")[0]
         tip = svg.path(f"velocity-vector-{n}-head")[0]
         got = math.dist(tail, tip) / CM * used["velocity"].per_cm
