@@ -232,3 +232,14 @@ def test_a_bodys_resultant_is_what_its_group_knew_on_it(path):
             assert _same(tuple(f.resultant(body)), tuple(known)), (rec.title, body)
             checked += 1
     assert checked >= 1
+
+
+def test_a_wheels_force_bounds_over_a_sweep():
+    # sweep --csv --error-bound of a wheel rolling on the ground with masses: the wheel's
+    # divisor (the link's arm, at most the wheel's radius) taken entry by entry
+    path = ROOT / "tests" / "textbook" / "rolling_wheel_on_ground.toml"
+    sc = with_forces(load_scene(path), 1)
+    res = sweep(sc, np.radians(np.arange(0.5, 360.0, 7.0)))
+    cols = {name: a for name, _, a in res.columns(error_bound=True)}
+    err = np.broadcast_to(cols["err_forces"], (len(res),))
+    assert np.all(np.isfinite(err)) and np.all(err >= 0) and np.all(err < 1e-6)

@@ -33,7 +33,7 @@ wheel's push of 2 N to the right and 0 across:
 from __future__ import annotations
 
 from ..steps.rounding import vhypot
-from .bodies import Singular, cross, guided
+from .bodies import Singular, cross, guided, least
 from ..common.numbers import fmt
 from .records import FRAME, Contact, ForceStep, PinForce, Side
 
@@ -61,7 +61,7 @@ def divisor(st, rec, P, L):
     """The link's moments divide by ``(C - B) x m = |BC| c``; the wheel's by r."""
     (bx, by), (cx, cy) = P[st.b], P[st.point]
     d = rec.condition * vhypot(cx - bx, cy - by)
-    return d if d < st.radius else st.radius
+    return least(d, st.radius)  # entry by entry over a sweep
 
 
 def step(st, P, led, own):
