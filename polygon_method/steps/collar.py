@@ -29,7 +29,9 @@ not given) and ``coriolis_left_out`` (the checker's diagnosis).
 (1.0, 1.0, 1.0)
 >>> w_r, w_d, vx, vy = velocity(1.0, 1.0, -1.0, 1.0, 2 ** -0.5, 2 ** -0.5, 2 ** 0.5)
 >>> round(w_r, 12), round(w_d, 12)       # sliding out at 1.414 m/s along (1, 1)/1.414
-(1.0, -1.0)
+(0.0, -1.0)
+>>> round(vx, 12), round(vy, 12)   # along the rod, square to DC: the rod need not turn
+(1.0, 1.0)
 """
 
 from __future__ import annotations
