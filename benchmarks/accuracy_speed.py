@@ -65,9 +65,15 @@ REF = None
 def reference(scene, guess):
     """The 50-digit reference as a Kinematics, on the branch nearest ``guess``."""
     r = REF.reference_solution(scene, guess)
-    return M.Kinematics("reference", r["positions"], r["velocities"], r["accelerations"],
-                        r["omega"], r["alpha"],
-                        {k: (v["vs"], v["as"]) for k, v in r["sliders"].items()})
+    return M.Kinematics(
+        "reference",
+        r["positions"],
+        r["velocities"],
+        r["accelerations"],
+        r["omega"],
+        r["alpha"],
+        {k: (v["vs"], v["as"]) for k, v in r["sliders"].items()},
+    )
 
 
 def peers():
@@ -77,8 +83,10 @@ def peers():
         import peers as pe
     except ImportError:
         return out
-    for name, fn, mod in (("mechanism (PyPI)", pe.mechanism_fourbar, "mechanism"),
-                          ("pylinkage (PyPI)", pe.pylinkage_fourbar, "pylinkage")):
+    for name, fn, mod in (
+        ("mechanism (PyPI)", pe.mechanism_fourbar, "mechanism"),
+        ("pylinkage (PyPI)", pe.pylinkage_fourbar, "pylinkage"),
+    ):
         if importlib.util.find_spec(mod) is not None:
             out[name] = fn
     return out
@@ -95,8 +103,7 @@ def per_solve(fn, quick):
 
 def methods_for(scene, quick, peer_fns):
     """(name, callable returning Kinematics) of each method that applies to ``scene``."""
-    out = [(name, (lambda f=f: f(scene))) for name, f in M.METHODS.items()
-           if name != "algebraic"]
+    out = [(name, (lambda f=f: f(scene))) for name, f in M.METHODS.items() if name != "algebraic"]
     if M.is_fourbar(scene) is not None:
         out.insert(2, ("algebraic", lambda: M.algebraic_fourbar(scene)))
         guess = M.production(scene)
@@ -118,6 +125,7 @@ def sweep_per_position(scene, n):
     def run():
         ctx = Context(th, inp.omega, inp.alpha, array=True)
         return plan.evaluate(ctx)
+
     return run
 
 
@@ -135,11 +143,16 @@ def worked(quick, drawings, peer_fns):
         except PolygonMethodError:
             block, geared = None, False  # (said below, where it is skipped)
         if block is not None:
-            print(f"skip {Path(f).name}: driven by block {block}, and the other methods "
-                  "take a crank", file=sys.stderr)
+            print(
+                f"skip {Path(f).name}: driven by block {block}, and the other methods take a crank",
+                file=sys.stderr,
+            )
         elif geared:
-            print(f"skip {Path(f).name}: gears or a second crank, which the other methods "
-                  "do not draw", file=sys.stderr)
+            print(
+                f"skip {Path(f).name}: gears or a second crank, which the other methods "
+                "do not draw",
+                file=sys.stderr,
+            )
         else:
             cranked.append(f)
     files = cranked
@@ -161,13 +174,22 @@ def worked(quick, drawings, peer_fns):
                 err = M.compare(kin, ref, scene)
                 secs = per_solve(call, quick)
             except Exception as exc:  # noqa: BLE001 (any failure of a method: refused)
-                rows.append(dict(problem=name, method=mname, error=None, seconds=None,
-                                 refused=str(exc)))
+                rows.append(
+                    dict(problem=name, method=mname, error=None, seconds=None, refused=str(exc))
+                )
                 continue
-            rows.append(dict(problem=name, method=mname, error=float(err["all"]),
-                             seconds=secs, kinds={k: float(v) for k, v in err.items()}))
+            rows.append(
+                dict(
+                    problem=name,
+                    method=mname,
+                    error=float(err["all"]),
+                    seconds=secs,
+                    kinds={k: float(v) for k, v in err.items()},
+                )
+            )
         # the production kernels on a numpy sweep: per position
         import numpy as np
+
         n = 64 if quick else 4096
         run = sweep_per_position(scene, n)
         secs = per_solve(run, quick) / n
@@ -176,28 +198,50 @@ def worked(quick, drawings, peer_fns):
         th_mid = float(np.linspace(-1e-3, 1e-3, n)[mid])
         sc2 = _at_angle(scene, scene.input.angle + th_mid)
         ref2 = reference(sc2, M.production(sc2).P)
-        kin = M.Kinematics("sweep", {k: (float(np.broadcast_to(x, n)[mid]),
-                                         float(np.broadcast_to(y, n)[mid]))
-                                     for k, (x, y) in P.items()},
-                           {k: (float(np.broadcast_to(x, n)[mid]),
-                                float(np.broadcast_to(y, n)[mid])) for k, (x, y) in V.items()},
-                           {k: (float(np.broadcast_to(x, n)[mid]),
-                                float(np.broadcast_to(y, n)[mid])) for k, (x, y) in A.items()},
-                           {k: float(np.broadcast_to(v, n)[mid]) for k, v in W.items()},
-                           {k: float(np.broadcast_to(v, n)[mid]) for k, v in Al.items()})
-        rows.append(dict(problem=name, method="production, numpy sweep (per position)",
-                         error=float(M.compare(kin, ref2, sc2)["all"]), seconds=secs))
+        kin = M.Kinematics(
+            "sweep",
+            {
+                k: (float(np.broadcast_to(x, n)[mid]), float(np.broadcast_to(y, n)[mid]))
+                for k, (x, y) in P.items()
+            },
+            {
+                k: (float(np.broadcast_to(x, n)[mid]), float(np.broadcast_to(y, n)[mid]))
+                for k, (x, y) in V.items()
+            },
+            {
+                k: (float(np.broadcast_to(x, n)[mid]), float(np.broadcast_to(y, n)[mid]))
+                for k, (x, y) in A.items()
+            },
+            {k: float(np.broadcast_to(v, n)[mid]) for k, v in W.items()},
+            {k: float(np.broadcast_to(v, n)[mid]) for k, v in Al.items()},
+        )
+        rows.append(
+            dict(
+                problem=name,
+                method="production, numpy sweep (per position)",
+                error=float(M.compare(kin, ref2, sc2)["all"]),
+                seconds=secs,
+            )
+        )
         hd = M.hand_drawing(scene, drawings, length_mm=PENCIL[0], angle_deg=PENCIL[1])
         e = M.compare(hd, ref, scene)["all"]
-        rows.append(dict(problem=name, method="hand drawing (median of %d)" % drawings,
-                         error=float(np.median(e)), seconds=HAND_SECONDS,
-                         p95=float(np.percentile(e, 95)), p05=float(np.percentile(e, 5))))
+        rows.append(
+            dict(
+                problem=name,
+                method="hand drawing (median of %d)" % drawings,
+                error=float(np.median(e)),
+                seconds=HAND_SECONDS,
+                p95=float(np.percentile(e, 95)),
+                p05=float(np.percentile(e, 5)),
+            )
+        )
     return rows
 
 
 def _at_angle(scene, angle):
     """The same scene at another crank angle (rad)."""
     from dataclasses import replace
+
     return replace(scene, input=replace(scene.input, angle=angle))
 
 
@@ -282,8 +326,7 @@ def singular_cases(quick):
         g = {"A": (0.0, 0.0), "D": (0.1, 0.0), "B": (bx, by), "C": (bx + 0.1, by)}
         sc = _fourbar(40, 100, 40, 100, ang, asm=f"[{(bx + 0.1) * 1e3!r}, {by * 1e3!r}]")
         pts.append((math.degrees(ang), sc, g))
-    cases["parallelogram at its change point"] = ("crank angle from the change point (deg)",
-                                                  pts)
+    cases["parallelogram at its change point"] = ("crank angle from the change point (deg)", pts)
     return cases
 
 
@@ -293,8 +336,8 @@ def _toggle_guess(ang):
     bx, by = 0.02 * math.cos(ang), 0.02 * math.sin(ang)
     ex, ey = 0.1 - bx, -by
     e = math.hypot(ex, ey)
-    along = (0.07 ** 2 - 0.05 ** 2 + e * e) / (2 * e)
-    h = max(math.sqrt(max(0.07 ** 2 - along * along, 0.0)), 1e-9)
+    along = (0.07**2 - 0.05**2 + e * e) / (2 * e)
+    h = max(math.sqrt(max(0.07**2 - along * along, 0.0)), 1e-9)
     ux, uy = ex / e, ey / e
     cx, cy = bx + along * ux - h * uy, by + along * uy + h * ux
     if cy < by + (cx - bx) * ey / ex:
@@ -315,8 +358,9 @@ def singular(quick, drawings, peer_fns):
                 x = transmission_deg(ref.P, "B", "C", "D")
             calls = [(n, (lambda f=f: f(scene))) for n, f in M.METHODS.items()]
             if M.is_fourbar(scene) is not None:
-                g = M.Kinematics("guess", {k: tuple(map(float, v)) for k, v in ref.P.items()},
-                                 {}, {}, {}, {})
+                g = M.Kinematics(
+                    "guess", {k: tuple(map(float, v)) for k, v in ref.P.items()}, {}, {}, {}, {}
+                )
                 calls += [(n, (lambda fn=fn: fn(scene, g))) for n, fn in peer_fns.items()]
             for name, call in calls:
                 if name == "algebraic" and M.is_fourbar(scene) is None:
@@ -332,12 +376,14 @@ def singular(quick, drawings, peer_fns):
             try:  # the bound the tool states for its own answer, next to its error
                 from polygon_method.solver.errorbound import error_bounds
                 from polygon_method.motion.solution import solve
+
                 b = float(error_bounds(solve(scene)).worst)
                 series.setdefault(BOUND, []).append((x, b, False))
             except PolygonMethodError:
                 pass
             try:
                 import numpy as np
+
                 hd = M.hand_drawing(scene, drawings, length_mm=PENCIL[0], angle_deg=PENCIL[1])
                 e = M.compare(hd, ref, scene)["all"]
                 e = float(np.median(e)) if np.all(np.isfinite(e)) else REFUSED
@@ -362,9 +408,14 @@ def fd_steps(quick):
             e = M.compare(M.finite_differences(scene, h), ref, scene)
         except PolygonMethodError:
             continue
-        rows.append(dict(h=h, crank_step_deg=math.degrees(h * w),
-                         velocity=float(max(e["velocity"], e["omega"])),
-                         acceleration=float(max(e["acceleration"], e["alpha"]))))
+        rows.append(
+            dict(
+                h=h,
+                crank_step_deg=math.degrees(h * w),
+                velocity=float(max(e["velocity"], e["omega"])),
+                acceleration=float(max(e["acceleration"], e["alpha"])),
+            )
+        )
     return rows
 
 
@@ -381,6 +432,7 @@ def _seed_fourbar():
 def hand_table(drawings):
     """Per quantity: median and 95th percentile of |error| / |value| over the drawings."""
     import numpy as np
+
     out = {}
     for f in ("fourbar_image_points", "engine_analytical", "crank_slotted_lever"):
         path = ROOT / "worked_problems" / f"{f}.toml"
@@ -404,25 +456,35 @@ def hand_table(drawings):
             tv = math.hypot(*map(float, ref.V[p]))
             add(f"v_{p}", np.hypot(*hd.V[p]), tv)
         for lk in scene.links:
-            if lk.key in hd.W and not (lk.p in scene.ground and lk.q in scene.ground) \
-                    and lk.key != scene.link(scene.input.crank).key:
+            if (
+                lk.key in hd.W
+                and not (lk.p in scene.ground and lk.q in scene.ground)
+                and lk.key != scene.link(scene.input.crank).key
+            ):
                 add(f"omega_{lk.key}", hd.W[lk.key], ref.W[lk.key])
         for p in scene.point_names:
             if p in scene.ground:
                 continue
             add(f"a_{p}", np.hypot(*hd.A[p]), math.hypot(*map(float, ref.A[p])))
         for lk in scene.links:
-            if lk.key in hd.Al and not (lk.p in scene.ground and lk.q in scene.ground) \
-                    and lk.key != scene.link(scene.input.crank).key:
+            if (
+                lk.key in hd.Al
+                and not (lk.p in scene.ground and lk.q in scene.ground)
+                and lk.key != scene.link(scene.input.crank).key
+            ):
                 add(f"alpha_{lk.key}", hd.Al[lk.key], ref.Al[lk.key])
         for k, (vs, a_s) in ref.S.items():
             if k in hd.S:
                 add(f"vs_{k}", hd.S[k][0], vs)
         sp, sv, sa = (hd.info["scales"][k] for k in hd.info["scales"])
-        out[f] = dict(scales=dict(space=f"1 cm = {sp * 10:g} m",
-                                  velocity=f"1 cm = {sv * 10:g} m/s",
-                                  acceleration=f"1 cm = {sa * 10:g} m/s^2"),
-                      rows=rows)
+        out[f] = dict(
+            scales=dict(
+                space=f"1 cm = {sp * 10:g} m",
+                velocity=f"1 cm = {sv * 10:g} m/s",
+                acceleration=f"1 cm = {sa * 10:g} m/s^2",
+            ),
+            rows=rows,
+        )
     return out
 
 
@@ -464,9 +526,16 @@ def chart_time(rows, out, plt):
         seen.add(r["method"])
         y = max(r["error"], FLOOR)
         if "p95" in r:
-            ax.errorbar([r["seconds"]], [y], yerr=[[y - max(r["p05"], FLOOR)],
-                                                    [r["p95"] - y]],
-                        fmt=m, color=c, label=label, alpha=0.7, capsize=3)
+            ax.errorbar(
+                [r["seconds"]],
+                [y],
+                yerr=[[y - max(r["p05"], FLOOR)], [r["p95"] - y]],
+                fmt=m,
+                color=c,
+                label=label,
+                alpha=0.7,
+                capsize=3,
+            )
         else:
             ax.plot([r["seconds"]], [y], m, color=c, label=label, alpha=0.8, ms=8)
     ax.set_xscale("log")
@@ -489,8 +558,14 @@ def chart_singular(data, out, plt):
             m, c = _style(name)
             pts = sorted(pts)
             if name == BOUND:  # a dashed line in the production's colour, no markers
-                ax.plot([p[0] for p in pts], [max(p[1], FLOOR) for p in pts], "--",
-                        color=_style("production")[1], lw=1.6, label=name)
+                ax.plot(
+                    [p[0] for p in pts],
+                    [max(p[1], FLOOR) for p in pts],
+                    "--",
+                    color=_style("production")[1],
+                    lw=1.6,
+                    label=name,
+                )
                 continue
             xs = [p[0] for p in pts]
             ys = [max(p[1], FLOOR) for p in pts]
@@ -500,8 +575,7 @@ def chart_singular(data, out, plt):
             if ok:
                 ax.plot(*zip(*ok), m, color=c, label=name, ms=6, alpha=0.85)
             if bad:
-                ax.plot(*zip(*bad), m, mfc="none", color=c, ms=9,
-                        label=None if ok else name)
+                ax.plot(*zip(*bad), m, mfc="none", color=c, ms=9, label=None if ok else name)
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_ylim(FLOOR / 2, REFUSED * 5)
@@ -518,8 +592,10 @@ def chart_singular(data, out, plt):
                 handles.append(h)
                 labels.append(lab)
     fig.legend(handles, labels, loc="lower center", ncol=4, fontsize=8)
-    fig.suptitle("Error near singular positions (open marker at the top: the method refused "
-                 "with an error)", fontsize=11)
+    fig.suptitle(
+        "Error near singular positions (open marker at the top: the method refused with an error)",
+        fontsize=11,
+    )
     fig.tight_layout(rect=(0, 0.06, 1, 0.97))
     _save(fig, out, "error_vs_singularity")
     plt.close(fig)
@@ -529,8 +605,7 @@ def chart_fd(rows, out, plt):
     fig, ax = plt.subplots(figsize=(6.5, 4.5))
     xs = [r["crank_step_deg"] for r in rows]
     ax.plot(xs, [max(r["velocity"], FLOOR) for r in rows], "o-", label="velocities, omega")
-    ax.plot(xs, [max(r["acceleration"], FLOOR) for r in rows], "s-",
-            label="accelerations, alpha")
+    ax.plot(xs, [max(r["acceleration"], FLOOR) for r in rows], "s-", label="accelerations, alpha")
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("step (deg of crank turn, omega h)")
@@ -547,8 +622,10 @@ def chart_fd(rows, out, plt):
 
 def markdown(rows, sing, fd, hand, drawings, peer_fns):
     lines = ["# Accuracy and speed: measured numbers", ""]
-    lines.append("Largest error of any quantity, relative to the size of that kind of quantity "
-                 "over the mechanism; time per solve (best of repeats).")
+    lines.append(
+        "Largest error of any quantity, relative to the size of that kind of quantity "
+        "over the mechanism; time per solve (best of repeats)."
+    )
     lines.append("")
     methods = []
     for r in rows:
@@ -590,16 +667,21 @@ def markdown(rows, sing, fd, hand, drawings, peer_fns):
     lines.append("| crank step (deg) | velocity error | acceleration error |")
     lines.append("| --- | --- | --- |")
     for r in fd:
-        lines.append(f"| {r['crank_step_deg']:.3g} | {r['velocity']:.1e} | "
-                     f"{r['acceleration']:.1e} |")
+        lines.append(
+            f"| {r['crank_step_deg']:.3g} | {r['velocity']:.1e} | {r['acceleration']:.1e} |"
+        )
     lines.append("")
-    lines.append(f"## Hand drawing: {drawings} simulated drawings, pencil error "
-                 f"{PENCIL[0]} mm and {PENCIL[1]} deg (one standard deviation)")
+    lines.append(
+        f"## Hand drawing: {drawings} simulated drawings, pencil error "
+        f"{PENCIL[0]} mm and {PENCIL[1]} deg (one standard deviation)"
+    )
     for name, h in hand.items():
         lines.append("")
         sc = h["scales"]
-        lines.append(f"### {name} (space {sc['space']}, velocity {sc['velocity']}, "
-                     f"acceleration {sc['acceleration']})")
+        lines.append(
+            f"### {name} (space {sc['space']}, velocity {sc['velocity']}, "
+            f"acceleration {sc['acceleration']})"
+        )
         lines.append("")
         lines.append("| quantity | true value | median error | 95 % of drawings within |")
         lines.append("| --- | --- | --- | --- |")
@@ -621,15 +703,19 @@ def main(argv=None) -> int:
     ap.add_argument("--quick", action="store_true", help="few samples (CI)")
     ap.add_argument("--out", default=str(HERE / "charts"), help="output folder")
     ap.add_argument("--drawings", type=int, help="simulated hand drawings per case")
-    ap.add_argument("--stability-only", action="store_true",
-                    help="redraw only the chart near singular positions (and its data in "
-                         "results.json)")
+    ap.add_argument(
+        "--stability-only",
+        action="store_true",
+        help="redraw only the chart near singular positions (and its data in results.json)",
+    )
     args = ap.parse_args(argv)
     global REF
     REF = load_reference()
     import matplotlib
+
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+
     plt.rcParams["svg.hashsalt"] = "polygon-method"  # reproducible SVG ids
     plt.rcParams["svg.fonttype"] = "none"
 
@@ -657,11 +743,22 @@ def main(argv=None) -> int:
     chart_fd(fd, out, plt)
     md = markdown(rows, sing, fd, hand, drawings, peer_fns)
     (out / "results.md").write_text(md, encoding="utf-8")
-    (out / "results.json").write_text(json.dumps(
-        {"worked": rows, "singular": sing, "finite_differences": fd, "hand_drawing": hand,
-         "pencil": {"length_mm": PENCIL[0], "angle_deg": PENCIL[1]},
-         "drawings": drawings, "quick": args.quick}, indent=1, default=str),
-        encoding="utf-8")
+    (out / "results.json").write_text(
+        json.dumps(
+            {
+                "worked": rows,
+                "singular": sing,
+                "finite_differences": fd,
+                "hand_drawing": hand,
+                "pencil": {"length_mm": PENCIL[0], "angle_deg": PENCIL[1]},
+                "drawings": drawings,
+                "quick": args.quick,
+            },
+            indent=1,
+            default=str,
+        ),
+        encoding="utf-8",
+    )
     print(f"charts and tables in {out} ({time.perf_counter() - t0:.1f} s)")
     return 0
 

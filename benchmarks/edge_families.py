@@ -88,8 +88,10 @@ def short_side(rng, c):
     if rng.random() < 0.5:
         point = f'E = {{ on = "BC", along = {_r(ratio * s)} }}'
     else:
-        point = (f'E = {{ on = "BC", distances = {{ B = {_r(ratio * s)}, C = '
-                 f'{_r(ratio * s + s * rng.uniform(-0.9, 0.9))} }}, turn = "ccw" }}')
+        point = (
+            f'E = {{ on = "BC", distances = {{ B = {_r(ratio * s)}, C = '
+            f'{_r(ratio * s + s * rng.uniform(-0.9, 0.9))} }}, turn = "ccw" }}'
+        )
     return f"""[ground]
 A = [0, 0]
 D = [{_r(d)}, 0]
@@ -124,8 +126,7 @@ def hair_off_round(rng, c):
     k = rng.choice([0, 90, 180, 270, -90, 360])
     hair = Decimal(f"{10.0 ** rng.uniform(-14, -8) * rng.choice([1.0, -1.0]):.3e}")
     text_angle = str(Decimal(k) + hair)  # exact decimals: "89.999999999999679"
-    r, ell, th, (bx, by), (tx, ty) = _slider_crank(rng, c, float(text_angle),
-                                                   rng.uniform(-50, 50))
+    r, ell, th, (bx, by), (tx, ty) = _slider_crank(rng, c, float(text_angle), rng.uniform(-50, 50))
     return f"""[ground]
 O = [0, 0]
 [links]
@@ -212,7 +213,8 @@ def given_motion(rng, c):
         given += f'as_B = "{_r(rng.uniform(-50, 50))} m/s^2"\n'
     elif how == "crank":
         given += f'acceleration = "{_r(rng.uniform(0, 100))} rad/s^2 ccw"\n'
-    return f"""[ground]
+    return (
+        f"""[ground]
 O = [0, 0]
 [links]
 OA = {_r(r)}
@@ -224,20 +226,27 @@ B = "right"
 [input]
 crank = "OA"
 angle = "{_r(th)} rad"
-""" + given
+"""
+        + given
+    )
 
 
 # ------------------------------------------------------------------ kinds from the corpus
 
 #: scene files of each newer kind (varied and turned towards a refusal)
 KIND_FILES = {
-    "peg": ["tests/textbook/peg_two_slotted_links.toml", "tests/textbook/peg_drives_a_rod.toml",
-            "tests/textbook/peg_shaper_lever_slot.toml"],
+    "peg": [
+        "tests/textbook/peg_two_slotted_links.toml",
+        "tests/textbook/peg_drives_a_rod.toml",
+        "tests/textbook/peg_shaper_lever_slot.toml",
+    ],
     "cylinder": ["worked_problems/tipper_cylinder.toml"],
-    "rolling": ["tests/textbook/rolling_planet_fixed_sun.toml",
-                "tests/textbook/rolling_wheel_on_ground.toml",
-                "tests/textbook/rolling_gear_train.toml",
-                "worked_problems/rolling_wheel_rod_slider.toml"],
+    "rolling": [
+        "tests/textbook/rolling_planet_fixed_sun.toml",
+        "tests/textbook/rolling_wheel_on_ground.toml",
+        "tests/textbook/rolling_gear_train.toml",
+        "worked_problems/rolling_wheel_rod_slider.toml",
+    ],
     "triad": ["tests/textbook/class3_six_bar.toml", "tests/textbook/class3_triangle_plate.toml"],
     "yoke": ["tests/textbook/scotch_yoke_inclined.toml", "worked_problems/scotch_yoke.toml"],
 }
@@ -291,6 +300,7 @@ def _worst(text, kind):
     from polygon_method.common.errors import PolygonMethodError
     from polygon_method.scene import parse_scene
     from polygon_method.motion.solution import solve
+
     try:
         sol = solve(parse_scene(text))
     except PolygonMethodError:
@@ -305,6 +315,7 @@ def kind_near(files, kind, steps=72):
     bisected towards the refusal until their condition is between ``c`` and ``2 c`` (or
     the lowest the turn reaches, where that is above ``c``); ``steps`` angles a turn."""
     pitch = 360.0 / steps
+
     def maker(rng, c):
         path = ROOT / rng.choice(files)
         base = _strip(path.read_text())
@@ -322,8 +333,10 @@ def kind_near(files, kind, steps=72):
         up = next((i for i in ok if conds[i] >= c), None)
         if up is None:
             return _set_angle(text, grid[best])
-        near = min((i for i in ok if conds[i] >= c),
-                   key=lambda i: min(abs(i - best), steps - abs(i - best)))
+        near = min(
+            (i for i in ok if conds[i] >= c),
+            key=lambda i: min(abs(i - best), steps - abs(i - best)),
+        )
         lo, hi = grid[near], grid[best]
         if abs(lo - hi) > 180:
             hi += 360 if hi < lo else -360
@@ -337,16 +350,22 @@ def kind_near(files, kind, steps=72):
                 if w < 2 * c:
                     break
         return _set_angle(text, lo)
+
     return maker
 
 
-EDGE_FAMILIES = {"flat triangle": flat_triangle, "short side": short_side,
-                 "given motion": given_motion,
-                 "hair off round": hair_off_round, "far path": far_path,
-                 "block then toggle": block_then_toggle}
+EDGE_FAMILIES = {
+    "flat triangle": flat_triangle,
+    "short side": short_side,
+    "given motion": given_motion,
+    "hair off round": hair_off_round,
+    "far path": far_path,
+    "block then toggle": block_then_toggle,
+}
 # (a triad's solve is slower, and its condition is nearly flat over the turn: 24 angles)
-EDGE_FAMILIES.update({k: kind_near(v, k, 24 if k == "triad" else 72)
-                      for k, v in KIND_FILES.items()})
+EDGE_FAMILIES.update(
+    {k: kind_near(v, k, 24 if k == "triad" else 72) for k, v in KIND_FILES.items()}
+)
 
 FAMILIES = dict(NEAR)
 FAMILIES.update(EDGE_FAMILIES)
@@ -364,25 +383,39 @@ def exact_scene(scene, text):
     import re
 
     import mpmath
+
     t = tomllib.loads(text, parse_float=Decimal)
-    exact = {"mm": "0.001", "cm": "0.01", "m": "1", "in": "0.0254", "inch": "0.0254",
-             "inches": "0.0254", "ft": "0.3048", "feet": "0.3048", "foot": "0.3048"}
+    exact = {
+        "mm": "0.001",
+        "cm": "0.01",
+        "m": "1",
+        "in": "0.0254",
+        "inch": "0.0254",
+        "inches": "0.0254",
+        "ft": "0.3048",
+        "feet": "0.3048",
+        "foot": "0.3048",
+    }
     scale = mpmath.mpf(exact[t.get("units", "mm")])
 
     def metres(v):
         return mpmath.mpf(str(v)) * scale
 
-    links = tuple(dataclasses.replace(lk, length=metres(t["links"][lk.key]))
-                  if isinstance(t["links"].get(lk.key), (int, Decimal)) else lk
-                  for lk in scene.links)
+    links = tuple(
+        dataclasses.replace(lk, length=metres(t["links"][lk.key]))
+        if isinstance(t["links"].get(lk.key), (int, Decimal))
+        else lk
+        for lk in scene.links
+    )
     points = []
     for cp in scene.points:
         spec = t.get("points", {}).get(cp.name, {})
         if cp.source and cp.source[0] == "distances":
             _, r1, _, r2, _, turn = cp.source
             d = spec["distances"]
-            cp = dataclasses.replace(cp, source=("distances", r1, metres(d[r1]), r2,
-                                                 metres(d[r2]), turn))
+            cp = dataclasses.replace(
+                cp, source=("distances", r1, metres(d[r1]), r2, metres(d[r2]), turn)
+            )
         points.append(cp)
     sliders = []
     for sl in scene.sliders:
@@ -401,6 +434,7 @@ def reference_scene(sol, text, ref_mod):
     at a uniform unit speed, ``H``: ``omega = value / Y1``, ``alpha = (rate - omega^2 H) /
     Y1``, or the crank's own alpha where the scene gives it), never the solver's."""
     from polygon_method.scene import parse_scene
+
     exact = exact_scene(sol.scene, text)
     g = sol.scene.input.given
     if g is None:
@@ -408,8 +442,9 @@ def reference_scene(sol, text, ref_mod):
     own_alpha = parse_scene(text).input.alpha
     mpf = ref_mod.mpf
     with ref_mod.mpmath.workdps(ref_mod.DIGITS):
-        unit = _Exact(exact, exact.links, exact.points, exact.sliders,
-                      _Input(sol.scene.input, mpf(1), mpf(0)))
+        unit = _Exact(
+            exact, exact.links, exact.points, exact.sliders, _Input(sol.scene.input, mpf(1), mpf(0))
+        )
         r1 = ref_mod.reference_solution(unit, sol.P)
         if g.kind == "omega":
             key = sol.scene.link("-".join(g.names)).key
@@ -418,17 +453,20 @@ def reference_scene(sol, text, ref_mod):
             y1, h = r1["sliders"][g.names[0]]["vs"], r1["sliders"][g.names[0]]["as"]
         elif g.kind == "vs":  # a cylinder's rate of extension
             from error_bounds import cylinder_rates
+
             cyl = sol.scene.cylinder(g.names[0])
             q = cylinder_rates(r1, cyl.barrel, cyl.rod)
             y1, h = q["vs"], q["as"]
         else:
-            (vx, vy), (ax, ay), (dx, dy) = (r1["velocities"][g.names[0]],
-                                            r1["accelerations"][g.names[0]], g.direction)
+            (vx, vy), (ax, ay), (dx, dy) = (
+                r1["velocities"][g.names[0]],
+                r1["accelerations"][g.names[0]],
+                g.direction,
+            )
             y1, h = vx * dx + vy * dy, ax * dx + ay * dy
         w = mpf(g.value) / y1
         al = mpf(own_alpha) if own_alpha is not None else (mpf(g.rate or 0) - w * w * h) / y1
-    return _Exact(exact, exact.links, exact.points, exact.sliders,
-                  _Input(sol.scene.input, w, al))
+    return _Exact(exact, exact.links, exact.points, exact.sliders, _Input(sol.scene.input, w, al))
 
 
 class _Input:
@@ -463,5 +501,3 @@ def make(family, rng, c, loads=True):
     if loads and family not in _NO_LOADS:
         return loaded(text, rng)
     return text
-
-

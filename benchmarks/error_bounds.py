@@ -60,8 +60,9 @@ NOISE = 10.0 ** -(DIGITS - 8)
 
 def load_reference(digits=DIGITS):
     """tests/reference.py at ``digits`` significant digits."""
-    spec = importlib.util.spec_from_file_location("pm_reference_eb",
-                                                  ROOT / "tests" / "reference.py")
+    spec = importlib.util.spec_from_file_location(
+        "pm_reference_eb", ROOT / "tests" / "reference.py"
+    )
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)
     mod.DIGITS = digits  # used in a context (compare_case): the global precision stays
@@ -81,13 +82,15 @@ def compare_case(sol, ref_mod, ref_scene=None):
     bounds = error_bounds(sol)
 
     def fl(d):
-        return {k: (tuple(float(x) for x in v) if isinstance(v, tuple) else float(v))
-                for k, v in d.items()}
+        return {
+            k: (tuple(float(x) for x in v) if isinstance(v, tuple) else float(v))
+            for k, v in d.items()
+        }
 
     class _Ref:  # the reference's values, to size the errors the same way as the bounds
         scene = sc
-        V, A, W, Al = (fl(r["velocities"]), fl(r["accelerations"]), fl(r["omega"]),
-                       fl(r["alpha"]))
+        V, A, W, Al = (fl(r["velocities"]), fl(r["accelerations"]), fl(r["omega"]), fl(r["alpha"]))
+
     ref_scales = {k: float(v) for k, v in scales(_Ref).items()}
 
     def f(a, b):
@@ -97,47 +100,59 @@ def compare_case(sol, ref_mod, ref_scene=None):
     for p in sc.point_names:
         if p in sc.ground:
             continue
-        for kind, d, dr, b in (("position", sol.P, r["positions"], bounds.P),
-                               ("velocity", sol.V, r["velocities"], bounds.V),
-                               ("acceleration", sol.A, r["accelerations"], bounds.A)):
+        for kind, d, dr, b in (
+            ("position", sol.P, r["positions"], bounds.P),
+            ("velocity", sol.V, r["velocities"], bounds.V),
+            ("acceleration", sol.A, r["accelerations"], bounds.A),
+        ):
             e = math.hypot(f(d[p][0], dr[p][0]), f(d[p][1], dr[p][1])) / ref_scales[kind]
             out.append((kind, p, e, b[p]))
     for lk in sc.links:
         k = lk.key
         out.append(("omega", k, f(sol.W[k], r["omega"][k]) / ref_scales["omega"], bounds.W[k]))
-        out.append(("alpha", k, f(sol.Al[k], r["alpha"][k]) / ref_scales["alpha"],
-                    bounds.Al[k]))
+        out.append(("alpha", k, f(sol.Al[k], r["alpha"][k]) / ref_scales["alpha"], bounds.Al[k]))
     for x, v in r["sliders"].items():
         bv, ba, bc = bounds.S[x]
         s = sol.S[x]
         out.append(("sliding velocity", x, f(s[0], v["vs"]) / ref_scales["velocity"], bv))
-        out.append(("sliding acceleration", x, f(s[1], v["as"]) / ref_scales["acceleration"],
-                    ba))
-        out.append(("coriolis", x, math.hypot(f(s[2], v["coriolis"][0]),
-                                              f(s[3], v["coriolis"][1]))
-                    / ref_scales["acceleration"], bc))
+        out.append(("sliding acceleration", x, f(s[1], v["as"]) / ref_scales["acceleration"], ba))
+        out.append(
+            (
+                "coriolis",
+                x,
+                math.hypot(f(s[2], v["coriolis"][0]), f(s[3], v["coriolis"][1]))
+                / ref_scales["acceleration"],
+                bc,
+            )
+        )
     for cyl in getattr(sc, "cylinders", ()):  # its rates from its two pins' motion
         key = cyl.key
         q = cylinder_rates(r, cyl.barrel, cyl.rod)
-        out.append(("omega", key, f(sol.W[key], q["omega"]) / ref_scales["omega"],
-                    bounds.W[key]))
-        out.append(("alpha", key, f(sol.Al[key], q["alpha"]) / ref_scales["alpha"],
-                    bounds.Al[key]))
+        out.append(("omega", key, f(sol.W[key], q["omega"]) / ref_scales["omega"], bounds.W[key]))
+        out.append(("alpha", key, f(sol.Al[key], q["alpha"]) / ref_scales["alpha"], bounds.Al[key]))
         bv, ba, bc = bounds.S[key]
         s = sol.S[key]
         out.append(("sliding velocity", key, f(s[0], q["vs"]) / ref_scales["velocity"], bv))
-        out.append(("sliding acceleration", key, f(s[1], q["as"])
-                    / ref_scales["acceleration"], ba))
-        out.append(("coriolis", key, math.hypot(f(s[2], q["coriolis"][0]),
-                                                f(s[3], q["coriolis"][1]))
-                    / ref_scales["acceleration"], bc))
+        out.append(("sliding acceleration", key, f(s[1], q["as"]) / ref_scales["acceleration"], ba))
+        out.append(
+            (
+                "coriolis",
+                key,
+                math.hypot(f(s[2], q["coriolis"][0]), f(s[3], q["coriolis"][1]))
+                / ref_scales["acceleration"],
+                bc,
+            )
+        )
     for pin in sol.plan.pins:
         radius = sol.rubbing[pin[0]].radius
-        want = max((abs(r["omega"].get(a, 0) - r["omega"].get(b, 0)) * radius
-                    for a, b in pin[5]), default=0)
+        want = max(
+            (abs(r["omega"].get(a, 0) - r["omega"].get(b, 0)) * radius for a, b in pin[5]),
+            default=0,
+        )
         got = sol.rubbing[pin[0]].rubbing_velocity
-        out.append(("rubbing", pin[0], f(got, want) / (ref_scales["omega"] * radius),
-                    bounds.rubbing(pin)))
+        out.append(
+            ("rubbing", pin[0], f(got, want) / (ref_scales["omega"] * radius), bounds.rubbing(pin))
+        )
     if sc.loads:
         total, size = 0, 0.0
         for load in sc.loads:
@@ -150,8 +165,14 @@ def compare_case(sol, ref_mod, ref_scene=None):
                 total += load.torque * r["omega"][key]
                 size += abs(load.torque) * ref_scales["omega"]
         want = -total / sc.input.omega
-        out.append(("input torque", "T", f(sol.input_torque, want)
-                    / (size / abs(sc.input.omega)), bounds.torque(sc)))
+        out.append(
+            (
+                "input torque",
+                "T",
+                f(sol.input_torque, want) / (size / abs(sc.input.omega)),
+                bounds.torque(sc),
+            )
+        )
     return out
 
 
@@ -166,7 +187,7 @@ def cylinder_rates(r, barrel, rod):
     v = (V[rod][0] - V[barrel][0], V[rod][1] - V[barrel][1])
     a = (A[rod][0] - A[barrel][0], A[rod][1] - A[barrel][1])
     n2 = d[0] * d[0] + d[1] * d[1]
-    n = n2 ** 0.5
+    n = n2**0.5
     dv = d[0] * v[0] + d[1] * v[1]
     vs = dv / n
     acc = (v[0] * v[0] + v[1] * v[1] + d[0] * a[0] + d[1] * a[1]) / n - dv * dv / (n2 * n)
@@ -229,24 +250,30 @@ def summary(results) -> dict:
         per = {}
         for kind, eb in kinds.items():
             nz = sorted(b / e for e, b in eb if e > NOISE)
-            per[kind] = {"n": len(eb), "max_error_over_bound": max(e / b for e, b in eb),
-                         "median_bound_over_error": statistics.median(nz) if nz else None,
-                         "p90_bound_over_error": nz[int(0.9 * (len(nz) - 1))] if nz else None,
-                         "max_bound_over_error": nz[-1] if nz else None,
-                         "exact": len(eb) - len(nz)}
-        table[fam] = {"cases": len(rows) - refused, "refused": refused,
-                      "max_error_over_bound": worst_ratio,
-                      "median_case_bound_over_error": (statistics.median(case_ratios)
-                                                       if case_ratios else None),
-                      "max_case_bound_over_error": max(case_ratios, default=None),
-                      "edge": {"cases": len(edge),
-                               "median_largest_error": (statistics.median(e for e, _ in edge)
-                                                        if edge else None),
-                               "median_largest_bound": (statistics.median(b for _, b in edge)
-                                                        if edge else None),
-                               "max_error_over_bound": max((e / b for e, b in edge),
-                                                           default=None)},
-                      "kinds": per}
+            per[kind] = {
+                "n": len(eb),
+                "max_error_over_bound": max(e / b for e, b in eb),
+                "median_bound_over_error": statistics.median(nz) if nz else None,
+                "p90_bound_over_error": nz[int(0.9 * (len(nz) - 1))] if nz else None,
+                "max_bound_over_error": nz[-1] if nz else None,
+                "exact": len(eb) - len(nz),
+            }
+        table[fam] = {
+            "cases": len(rows) - refused,
+            "refused": refused,
+            "max_error_over_bound": worst_ratio,
+            "median_case_bound_over_error": (
+                statistics.median(case_ratios) if case_ratios else None
+            ),
+            "max_case_bound_over_error": max(case_ratios, default=None),
+            "edge": {
+                "cases": len(edge),
+                "median_largest_error": (statistics.median(e for e, _ in edge) if edge else None),
+                "median_largest_bound": (statistics.median(b for _, b in edge) if edge else None),
+                "max_error_over_bound": max((e / b for e, b in edge), default=None),
+            },
+            "kinds": per,
+        }
     return table
 
 
@@ -275,35 +302,51 @@ def growth(results, kinds=("position", "velocity", "acceleration", "omega", "alp
 
             def gmean(v):
                 return math.exp(statistics.mean(math.log(x[0]) for x in v))
+
             out[fam][kind] = math.log(q90(lo) / q90(hi)) / math.log(gmean(hi) / gmean(lo))
     return out
 
 
 def markdown(table) -> str:
-    lines = ["| family | mechanisms | largest error / bound | median (largest bound / largest "
-             "error) | largest (largest bound / largest error) | condition "
-             f"{EDGE:g} down to the band: mechanisms, median largest error, median largest "
-             "bound |", "| --- | --- | --- | --- | --- | --- |"]
+    lines = [
+        "| family | mechanisms | largest error / bound | median (largest bound / largest "
+        "error) | largest (largest bound / largest error) | condition "
+        f"{EDGE:g} down to the band: mechanisms, median largest error, median largest "
+        "bound |",
+        "| --- | --- | --- | --- | --- | --- |",
+    ]
     for fam, t in table.items():
         e = t["edge"]
-        edge = (f"{e['cases']}, {e['median_largest_error']:.2g}, "
-                f"{e['median_largest_bound']:.2g}" if e["cases"] else "-")
-        lines.append(f"| {fam} | {t['cases']} | {t['max_error_over_bound']:.2g} | "
-                     f"{t['median_case_bound_over_error']:.3g} | "
-                     f"{t['max_case_bound_over_error']:.3g} | {edge} |")
-    lines += ["", "| family | quantity | compared | largest error / bound | bound / error: "
-              "median, 90th percentile, largest | error 0 (to the reference's digits) |",
-              "| --- | --- | --- | --- | --- | --- |"]
+        edge = (
+            f"{e['cases']}, {e['median_largest_error']:.2g}, {e['median_largest_bound']:.2g}"
+            if e["cases"]
+            else "-"
+        )
+        lines.append(
+            f"| {fam} | {t['cases']} | {t['max_error_over_bound']:.2g} | "
+            f"{t['median_case_bound_over_error']:.3g} | "
+            f"{t['max_case_bound_over_error']:.3g} | {edge} |"
+        )
+    lines += [
+        "",
+        "| family | quantity | compared | largest error / bound | bound / error: "
+        "median, 90th percentile, largest | error 0 (to the reference's digits) |",
+        "| --- | --- | --- | --- | --- | --- |",
+    ]
 
     def g(x):
         return "-" if x is None else f"{x:.3g}"
+
     for fam, t in table.items():
         for kind, k in t["kinds"].items():
-            ratios = ", ".join(g(k[q]) for q in ("median_bound_over_error",
-                                                 "p90_bound_over_error",
-                                                 "max_bound_over_error"))
-            lines.append(f"| {fam} | {kind} | {k['n']} | {k['max_error_over_bound']:.2g} | "
-                         f"{ratios} | {k['exact']} |")
+            ratios = ", ".join(
+                g(k[q])
+                for q in ("median_bound_over_error", "p90_bound_over_error", "max_bound_over_error")
+            )
+            lines.append(
+                f"| {fam} | {kind} | {k['n']} | {k['max_error_over_bound']:.2g} | "
+                f"{ratios} | {k['exact']} |"
+            )
     return "\n".join(lines)
 
 
@@ -311,16 +354,21 @@ def main(argv=None) -> int:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--cases", type=int, default=2000, help="mechanisms per family")
     p.add_argument("--seed", type=int, default=1)
-    p.add_argument("--family", action="append",
-                   help="only this family (may be repeated)")
-    p.add_argument("--edge", action="store_true",
-                   help="also every step kind at its edges (edge_families.py): flat "
-                        "triangles, short sides, paths a hair off a right angle or through "
-                        "a far point, two ill-conditioned steps in a row, given motion, "
-                        "pegs, cylinders, rolling, triads, yokes")
+    p.add_argument("--family", action="append", help="only this family (may be repeated)")
+    p.add_argument(
+        "--edge",
+        action="store_true",
+        help="also every step kind at its edges (edge_families.py): flat "
+        "triangles, short sides, paths a hair off a right angle or through "
+        "a far point, two ill-conditioned steps in a row, given motion, "
+        "pegs, cylinders, rolling, triads, yokes",
+    )
     p.add_argument("--json", help="write every number here")
-    p.add_argument("--exponents", action="store_true",
-                   help="also print how the errors grow: p of eps/c^p, per family and kind")
+    p.add_argument(
+        "--exponents",
+        action="store_true",
+        help="also print how the errors grow: p of eps/c^p, per family and kind",
+    )
     args = p.parse_args(argv)
     t0 = time.perf_counter()
     results = run(args.cases, args.seed, families=args.family, edge=args.edge)
@@ -330,14 +378,24 @@ def main(argv=None) -> int:
         kinds = ("position", "velocity", "acceleration", "omega", "alpha")
         print("\n| family | " + " | ".join(kinds) + " |\n| --- |" + " --- |" * len(kinds))
         for fam, ps in growth(results, kinds).items():
-            print(f"| {fam} | " + " | ".join(f"{ps[k]:.1f}" if k in ps else "-"
-                                             for k in kinds) + " |")
-    print(f"\n{sum(t['cases'] for t in table.values())} mechanisms, "
-          f"{time.perf_counter() - t0:.0f} s")
+            print(
+                f"| {fam} | " + " | ".join(f"{ps[k]:.1f}" if k in ps else "-" for k in kinds) + " |"
+            )
+    print(
+        f"\n{sum(t['cases'] for t in table.values())} mechanisms, {time.perf_counter() - t0:.0f} s"
+    )
     if args.json:
-        Path(args.json).write_text(json.dumps({"summary": table, "cases": {
-            fam: [(c, None if qs is None else [list(q) for q in qs]) for c, qs in rows]
-            for fam, rows in results.items()}}))
+        Path(args.json).write_text(
+            json.dumps(
+                {
+                    "summary": table,
+                    "cases": {
+                        fam: [(c, None if qs is None else [list(q) for q in qs]) for c, qs in rows]
+                        for fam, rows in results.items()
+                    },
+                }
+            )
+        )
     held = all(t["max_error_over_bound"] <= 1 for t in table.values())
     return 0 if held else 1
 

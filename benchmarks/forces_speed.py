@@ -50,6 +50,7 @@ def solve_at(scene, theta):
     from polygon_method.motion.solution import Solution
     from polygon_method.solver.compiler import compile_plan
     from polygon_method.steps.base import Instant
+
     plan = compile_plan(scene)
     inp = scene.input
     sol = object.__new__(Solution)
@@ -142,15 +143,18 @@ def side_by_side(rounds):
     """name -> {figure: least seconds per call over ``rounds`` interleaved rounds}."""
     from polygon_method import load_scene, solve
     from polygon_method.forces import analyse
+
     out = {}
     for name in NAMES:
         scene = load_scene(PROBLEMS / f"{name}.toml")
         sol = solve(scene)
         f = analyse(sol)
-        batches = {"kinematic": (lambda: solve(scene), 200),
-                   "forces": (lambda: analyse(sol), 200),
-                   "forces, records": (lambda: analyse(sol).pins, 200),
-                   "forces, words": (lambda: analyse(sol).steps, 20)}
+        batches = {
+            "kinematic": (lambda: solve(scene), 200),
+            "forces": (lambda: analyse(sol), 200),
+            "forces, records": (lambda: analyse(sol).pins, 200),
+            "forces, words": (lambda: analyse(sol).steps, 20),
+        }
         if name == "fourbar_forces":
             floor, k = floor_fourbar_forces(scene), floor_input(sol)
             _floor_agrees(sol, f, floor(k))
@@ -174,8 +178,12 @@ def _interleaved(batches, rounds):
 def _columns(f):
     """The forces a sweep's CSV gives, by name: the effort, the shaking force and moment,
     each guide's normal force, each pin force's components."""
-    out = {"effort": f.input_torque, "shake_x": f.shaking_force[0],
-           "shake_y": f.shaking_force[1], "shake_m": f.shaking_moment}
+    out = {
+        "effort": f.input_torque,
+        "shake_x": f.shaking_force[0],
+        "shake_y": f.shaking_force[1],
+        "shake_m": f.shaking_moment,
+    }
     out.update({f"N_{g.key}": g.normal for g in f.guides})
     for p in f.pins:
         out[f"F_{p.point}_{p.on}_{p.by}_x"] = p.force[0]
@@ -191,6 +199,7 @@ def sweeps(rounds, n=3600):
     from polygon_method import load_scene
     from polygon_method.forces import analyse
     from polygon_method.motion.sweeps import sweep
+
     out = {}
     th = np.radians(np.arange(n) * (360.0 / n))
     for name in NAMES:
@@ -204,12 +213,13 @@ def sweeps(rounds, n=3600):
             size = max(abs(v) for v in one.values())
             for key, v in one.items():
                 assert abs(np.broadcast_to(cols[key], (n,))[i] - v) <= 1e-12 * size, (name, key)
-        batches = {"sweep + forces": (lambda: analyse(sweep(scene, th)).pins, 1),
-                   "sweep": (lambda: sweep(scene, th), 1),
-                   "forces of a sweep": (lambda: analyse(res).pins, 1),
-                   "loop: solve + forces": (
-                       lambda: [analyse(solve_at(scene, t)).pins for t in th], 1),
-                   "loop: forces": (lambda: [analyse(s).pins for s in sols], 1)}
+        batches = {
+            "sweep + forces": (lambda: analyse(sweep(scene, th)).pins, 1),
+            "sweep": (lambda: sweep(scene, th), 1),
+            "forces of a sweep": (lambda: analyse(res).pins, 1),
+            "loop: solve + forces": (lambda: [analyse(solve_at(scene, t)).pins for t in th], 1),
+            "loop: forces": (lambda: [analyse(s).pins for s in sols], 1),
+        }
         out[name] = _interleaved(batches, rounds)
     return out
 
@@ -222,8 +232,11 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="fewer rounds")
     ap.add_argument("--json", action="store_true", help="print the numbers as JSON too")
-    ap.add_argument("--smoke", action="store_true",
-                    help="one round and 360 angles: that it runs and its checks hold")
+    ap.add_argument(
+        "--smoke",
+        action="store_true",
+        help="one round and 360 angles: that it runs and its checks hold",
+    )
     args = ap.parse_args(argv)
     rounds = 1 if args.smoke else 3 if args.quick else 15
     n = 360 if args.smoke else 3600
@@ -243,9 +256,11 @@ def main(argv=None):
         print(f"  {name}")
         for key, t in r.items():
             print(f"    {key:<22}{fmt(t)}")
-        print(f"    the forces vectorised are {r['loop: forces'] / r['forces of a sweep']:.0f} "
-              f"times as fast as the loop; the sweep with forces "
-              f"{r['sweep + forces'] / r['sweep']:.2f} of the sweep alone")
+        print(
+            f"    the forces vectorised are {r['loop: forces'] / r['forces of a sweep']:.0f} "
+            f"times as fast as the loop; the sweep with forces "
+            f"{r['sweep + forces'] / r['sweep']:.2f} of the sweep alone"
+        )
     if args.json:
         print(json.dumps({"one": one, "sweep": many, "angles": n}, indent=1))
     return 0

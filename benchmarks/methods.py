@@ -56,9 +56,20 @@ from polygon_method.solver.compiler import compile_plan
 from polygon_method.solver.plan import Carried, Context, Crank, Dyad, SliderDyad, SlottedLink
 from polygon_method.scene import FixedPath, Scene
 
-__all__ = ["Kinematics", "METHODS", "production", "shapely_polygons", "algebraic_fourbar",
-           "newton_raphson", "finite_differences", "hand_drawing", "Pencil", "Jet",
-           "textbook_scale", "is_fourbar"]
+__all__ = [
+    "Kinematics",
+    "METHODS",
+    "production",
+    "shapely_polygons",
+    "algebraic_fourbar",
+    "newton_raphson",
+    "finite_differences",
+    "hand_drawing",
+    "Pencil",
+    "Jet",
+    "textbook_scale",
+    "is_fourbar",
+]
 
 
 @dataclass(frozen=True)
@@ -114,8 +125,9 @@ def production(scene: Scene) -> Kinematics:
 
     sol = solve(scene)
     S = {k: (v[0], v[1]) for k, v in sol.S.items()}
-    return Kinematics("production", sol.P, sol.V, sol.A, sol.W, sol.Al, S,
-                      {"conditions": dict(sol.conditions)})
+    return Kinematics(
+        "production", sol.P, sol.V, sol.A, sol.W, sol.Al, S, {"conditions": dict(sol.conditions)}
+    )
 
 
 # --------------------------------------------------------------------------- 2 & 6. walker
@@ -140,17 +152,26 @@ def _meet_shapely(p1, u1, p2, u2):
     gap = math.dist(p1, p2)
     reach = 2.0 * (gap + 1e-300) / s if s > 0 else math.inf
     if not math.isfinite(reach) or reach > 1e300:
-        raise SingularStepError("the direction lines are parallel: shapely finds no "
-                                "intersection")
+        raise SingularStepError("the direction lines are parallel: shapely finds no intersection")
     reach = max(reach, 1e-300)
-    l1 = LineString([(p1[0] - reach * u1[0], p1[1] - reach * u1[1]),
-                     (p1[0] + reach * u1[0], p1[1] + reach * u1[1])])
-    l2 = LineString([(p2[0] - reach * u2[0], p2[1] - reach * u2[1]),
-                     (p2[0] + reach * u2[0], p2[1] + reach * u2[1])])
+    l1 = LineString(
+        [
+            (p1[0] - reach * u1[0], p1[1] - reach * u1[1]),
+            (p1[0] + reach * u1[0], p1[1] + reach * u1[1]),
+        ]
+    )
+    l2 = LineString(
+        [
+            (p2[0] - reach * u2[0], p2[1] - reach * u2[1]),
+            (p2[0] + reach * u2[0], p2[1] + reach * u2[1]),
+        ]
+    )
     x = l1.intersection(l2)
     if x.is_empty or x.geom_type != "Point":
-        raise SingularStepError(f"shapely finds {x.geom_type if not x.is_empty else 'no'} "
-                                "intersection of the direction lines")
+        raise SingularStepError(
+            f"shapely finds {x.geom_type if not x.is_empty else 'no'} "
+            "intersection of the direction lines"
+        )
     return (x.x, x.y)
 
 
@@ -179,6 +200,7 @@ class Pencil:
         self.exact = self.length_mm == 0 and self.angle == 0
         if not self.exact:
             import numpy as np
+
             self.np = np
             self.rng = np.random.default_rng(seed)
 
@@ -223,8 +245,8 @@ def _nice(x):
         return 1.0
     k = math.floor(math.log10(x))
     for m in (1.0, 2.0, 2.5, 5.0, 10.0):
-        if m * 10.0 ** k >= x * (1 - 1e-12):
-            return m * 10.0 ** k
+        if m * 10.0**k >= x * (1 - 1e-12):
+            return m * 10.0**k
     return 10.0 ** (k + 1)
 
 
@@ -256,8 +278,7 @@ class _Walker:
         """omega (or alpha) = sense x |measured segment| / link length."""
         m = (rel[0] * rel[0] + rel[1] * rel[1]) ** 0.5
         sense = _cross(ref_dir, rel)
-        sgn = (sense > 0) * 2.0 - 1.0 if not isinstance(sense, float) else math.copysign(1.0,
-                                                                                         sense)
+        sgn = (sense > 0) * 2.0 - 1.0 if not isinstance(sense, float) else math.copysign(1.0, sense)
         return sgn * self.pen.read(m, length_scale) / link_len
 
     def _along(self, rel, u, scale):
@@ -273,20 +294,23 @@ class _Walker:
         for st in self.plan.steps:
             if isinstance(st, Crank):
                 th = sc.input.angle
-                P[st.tip] = _add(P[st.pivot], pen.lay((st.length * math.cos(th),
-                                                       st.length * math.sin(th)), sp))
+                P[st.tip] = _add(
+                    P[st.pivot], pen.lay((st.length * math.cos(th), st.length * math.sin(th)), sp)
+                )
             elif isinstance(st, Dyad):
                 b, d = P[st.b], P[st.d]
                 l1, l2 = pen.radius(st.l1, sp), pen.radius(st.l2, sp)
                 e_ = _sub(d, b)
                 e2 = _dot(e_, e_)
-                e = e2 ** 0.5
+                e = e2**0.5
                 along = (l1 * l1 - l2 * l2 + e2) / (2 * e)
                 h2 = l1 * l1 - along * along
                 h = self._sqrt(h2, st)
                 u = (e_[0] / e, e_[1] / e)
-                P[st.point] = (b[0] + along * u[0] - st.sigma * h * u[1],
-                               b[1] + along * u[1] + st.sigma * h * u[0])
+                P[st.point] = (
+                    b[0] + along * u[0] - st.sigma * h * u[1],
+                    b[1] + along * u[1] + st.sigma * h * u[0],
+                )
             elif isinstance(st, SliderDyad):
                 q, u = self._guide(P, st)
                 b = P[st.b]
@@ -295,8 +319,10 @@ class _Walker:
                 dist = _cross(w, u)
                 ell = pen.radius(st.length, sp)
                 half = self._sqrt(ell * ell - dist * dist, st)
-                P[st.point] = (q[0] - bb * u[0] + st.sigma * half * u[0],
-                               q[1] - bb * u[1] + st.sigma * half * u[1])
+                P[st.point] = (
+                    q[0] - bb * u[0] + st.sigma * half * u[0],
+                    q[1] - bb * u[1] + st.sigma * half * u[1],
+                )
             elif isinstance(st, SlottedLink):
                 k, a = P[st.known], P[st.point]
                 d = _sub(a, k)
@@ -312,7 +338,7 @@ class _Walker:
                 if h2 < -1e-12 * step_len(st) ** 2:
                     raise AssemblyError("the arcs do not meet", step=st.label)
                 return 0.0
-            return h2 ** 0.5
+            return h2**0.5
         np = self.pen.np
         return np.sqrt(np.maximum(h2, 0.0))
 
@@ -346,8 +372,9 @@ class _Walker:
             elif isinstance(st, Dyad):
                 x = P[st.point]
                 r1, r2 = _sub(x, P[st.b]), _sub(x, P[st.d])
-                vx = self.meet(V[st.b], self._drawn_dir(_perp(r1)),
-                               V[st.d], self._drawn_dir(_perp(r2)))
+                vx = self.meet(
+                    V[st.b], self._drawn_dir(_perp(r1)), V[st.d], self._drawn_dir(_perp(r2))
+                )
                 V[st.point] = vx
                 W[st.link1] = self._signed(_sub(vx, V[st.b]), r1, sv, st.l1)
                 W[st.link2] = self._signed(_sub(vx, V[st.d]), r2, sv, st.l2)
@@ -437,8 +464,10 @@ class _Walker:
                 Al[st.guide] = ag
                 S[st.point][1] = self._along(_sub(t, aa_), u, sa)
                 rn = _sub(P[st.new], k)
-                A[st.new] = _add(_add(A[st.known], pen.lay(_mul(-wg * wg, rn), sa)),
-                                 pen.lay(_mul(ag, _perp(rn)), sa))
+                A[st.new] = _add(
+                    _add(A[st.known], pen.lay(_mul(-wg * wg, rn), sa)),
+                    pen.lay(_mul(ag, _perp(rn)), sa),
+                )
             elif isinstance(st, Carried):
                 A[st.point] = self._image(A, st, sa)
         return A, Al
@@ -459,9 +488,23 @@ class _Walker:
         V, W, S = self.velocities(P)
         A, Al = self.accelerations(P, V, W, S)
         Sx = {k: (v[0], v[1]) for k, v in S.items()}
-        return Kinematics(method, P, V, A, W, Al, Sx,
-                          {"scales": dict(zip(("space m/mm", "velocity m/s per mm",
-                                               "acceleration m/s^2 per mm"), self.scales))})
+        return Kinematics(
+            method,
+            P,
+            V,
+            A,
+            W,
+            Al,
+            Sx,
+            {
+                "scales": dict(
+                    zip(
+                        ("space m/mm", "velocity m/s per mm", "acceleration m/s^2 per mm"),
+                        self.scales,
+                    )
+                )
+            },
+        )
 
 
 def step_len(st):
@@ -474,8 +517,9 @@ def shapely_polygons(scene: Scene) -> Kinematics:
     return _Walker(scene, _meet_shapely, Pencil(0, 0)).run("shapely")
 
 
-def hand_drawing(scene: Scene, n=1000, *, length_mm=0.25, angle_deg=0.25, seed=0,
-                 scales=None) -> Kinematics:
+def hand_drawing(
+    scene: Scene, n=1000, *, length_mm=0.25, angle_deg=0.25, seed=0, scales=None
+) -> Kinematics:
     """``n`` simulated hand drawings of the construction (every number an array of n).
 
     Every line of the configuration diagram and of both polygons is drawn at a textbook
@@ -490,12 +534,18 @@ def hand_drawing(scene: Scene, n=1000, *, length_mm=0.25, angle_deg=0.25, seed=0
         ref = production(scene)
         ext = [abs(c) for xy in ref.P.values() for c in xy]
         pts = list(ref.P.values())
-        span = max(max(p[0] for p in pts) - min(p[0] for p in pts),
-                   max(p[1] for p in pts) - min(p[1] for p in pts), max(ext) * 1e-3)
+        span = max(
+            max(p[0] for p in pts) - min(p[0] for p in pts),
+            max(p[1] for p in pts) - min(p[1] for p in pts),
+            max(ext) * 1e-3,
+        )
         vmax = max(math.hypot(*v) for v in ref.V.values())
         amax = max(math.hypot(*a) for a in ref.A.values())
-        scales = (textbook_scale(span, 150.0), textbook_scale(vmax, 100.0),
-                  textbook_scale(amax, 100.0))
+        scales = (
+            textbook_scale(span, 150.0),
+            textbook_scale(vmax, 100.0),
+            textbook_scale(amax, 100.0),
+        )
     pen = Pencil(length_mm, angle_deg, n=n, seed=seed)
     k = _Walker(scene, _meet_2x2, pen, scales).run("hand drawing")
     k.info.update({"drawings": n, "pencil": f"{length_mm} mm, {angle_deg} deg (1 sd)"})
@@ -545,8 +595,11 @@ class Jet:
 
     def __mul__(self, o):
         o = Jet._j(o)
-        return Jet(self.v * o.v, self.d1 * o.v + self.v * o.d1,
-                   self.d2 * o.v + 2 * self.d1 * o.d1 + self.v * o.d2)
+        return Jet(
+            self.v * o.v,
+            self.d1 * o.v + self.v * o.d1,
+            self.d2 * o.v + 2 * self.d1 * o.d1 + self.v * o.d2,
+        )
 
     __rmul__ = __mul__
 
@@ -562,9 +615,11 @@ class Jet:
 
     def sqrt(self):
         if self.v < 0:
-            raise AssemblyError(f"negative discriminant {self.v:.3g}: the links cannot be "
-                                "assembled (the lecture's 'imaginary' solution)")
-        s = self.v ** 0.5
+            raise AssemblyError(
+                f"negative discriminant {self.v:.3g}: the links cannot be "
+                "assembled (the lecture's 'imaginary' solution)"
+            )
+        s = self.v**0.5
         s1 = self.d1 / (2 * s)
         return Jet(s, s1, (self.d2 - 2 * s1 * s1) / (2 * s))
 
@@ -624,8 +679,7 @@ def algebraic_fourbar(scene: Scene, branch=None) -> Kinematics:
     """
     fb = is_fourbar(scene)
     if fb is None:
-        raise PolygonMethodError("the algebraic method needs a four-bar (crank, coupler, "
-                                 "rocker)")
+        raise PolygonMethodError("the algebraic method needs a four-bar (crank, coupler, rocker)")
     cr, dy = fb
     inp = scene.input
     o2, tip = scene.ground[cr.pivot], cr.tip
@@ -645,8 +699,9 @@ def algebraic_fourbar(scene: Scene, branch=None) -> Kinematics:
     ax, ay = a * jcos(t2), a * jsin(t2)
     den = ax - d
     if den.v == 0:
-        raise SingularStepError("A_x = d: the lecture's formula divides by A_x - d = 0",
-                                step="algebraic four-bar")
+        raise SingularStepError(
+            "A_x = d: the lecture's formula divides by A_x - d = 0", step="algebraic four-bar"
+        )
     S = (a * a - b * b + c * c - d * d) / (2 * den)
     Pq = ay * ay / (den * den) + 1
     Qq = 2 * ay * (d - S) / den
@@ -671,8 +726,9 @@ def algebraic_fourbar(scene: Scene, branch=None) -> Kinematics:
             bx, by = solve_b(sgn)
             g = to_global(bx.v, by.v)
             if isinstance(want, str):
-                axis, k = {"above": (1, -1), "below": (1, 1), "right": (0, -1),
-                           "left": (0, 1)}[want]
+                axis, k = {"above": (1, -1), "below": (1, 1), "right": (0, -1), "left": (0, 1)}[
+                    want
+                ]
                 cands.append((k * g[axis], sgn))
             else:
                 cands.append((math.dist(g, want), sgn))
@@ -680,11 +736,17 @@ def algebraic_fourbar(scene: Scene, branch=None) -> Kinematics:
     bx, by = solve_b(branch)
 
     def glob(x: Jet, y: Jet):
-        return (Jet(o2[0] + cg * x.v - sg * y.v, cg * x.d1 - sg * y.d1, cg * x.d2 - sg * y.d2),
-                Jet(o2[1] + sg * x.v + cg * y.v, sg * x.d1 + cg * y.d1, sg * x.d2 + cg * y.d2))
+        return (
+            Jet(o2[0] + cg * x.v - sg * y.v, cg * x.d1 - sg * y.d1, cg * x.d2 - sg * y.d2),
+            Jet(o2[1] + sg * x.v + cg * y.v, sg * x.d1 + cg * y.d1, sg * x.d2 + cg * y.d2),
+        )
 
-    J = {cr.pivot: (Jet(o2[0]), Jet(o2[1])), rocker_pivot: (Jet(o4[0]), Jet(o4[1])),
-         tip: glob(ax, ay), dy.point: glob(bx, by)}
+    J = {
+        cr.pivot: (Jet(o2[0]), Jet(o2[1])),
+        rocker_pivot: (Jet(o4[0]), Jet(o4[1])),
+        tip: glob(ax, ay),
+        dy.point: glob(bx, by),
+    }
     for name, xy in scene.ground.items():
         J.setdefault(name, (Jet(xy[0]), Jet(xy[1])))
     th3 = jatan2(by - ay, bx - ax)
@@ -703,8 +765,7 @@ def algebraic_fourbar(scene: Scene, branch=None) -> Kinematics:
     P = {k: (x.v, y.v) for k, (x, y) in J.items()}
     V = {k: (x.d1, y.d1) for k, (x, y) in J.items()}
     A = {k: (x.d2, y.d2) for k, (x, y) in J.items()}
-    return Kinematics("algebraic", P, V, A, W, Al, {},
-                      {"A_x - d": den.v, "branch": branch})
+    return Kinematics("algebraic", P, V, A, W, Al, {}, {"A_x - d": den.v, "branch": branch})
 
 
 # --------------------------------------------------------------------------- 4. Newton
@@ -752,8 +813,7 @@ def newton_raphson(scene: Scene, guess=None, *, tol=1e-15, max_iter=50) -> Kinem
     eqs = _constraints(scene)
     rows = sum(2 if e[0] in ("crank", "carried") else 1 for e in eqs)
     if rows != 2 * len(names):
-        raise PolygonMethodError(f"{rows} loop-closure equations for {2 * len(names)} "
-                                 "unknowns")
+        raise PolygonMethodError(f"{rows} loop-closure equations for {2 * len(names)} unknowns")
     if guess is None:
         plan = compile_plan(scene)
         ctx = Context(inp.angle - math.radians(5.0), inp.omega, inp.alpha)
@@ -828,16 +888,18 @@ def newton_raphson(scene: Scene, guess=None, *, tol=1e-15, max_iter=50) -> Kinem
         try:
             dq = np.linalg.solve(J, -F)
         except np.linalg.LinAlgError as exc:
-            raise SingularStepError(f"the loop-closure Jacobian is singular ({exc})",
-                                    step="Newton-Raphson") from None
+            raise SingularStepError(
+                f"the loop-closure Jacobian is singular ({exc})", step="Newton-Raphson"
+            ) from None
         q = q + dq
         if not np.all(np.isfinite(q)):
             raise SingularStepError("Newton-Raphson diverged", step="Newton-Raphson")
         if np.max(np.abs(dq)) <= tol * size:
             break
     else:
-        raise SingularStepError(f"Newton-Raphson did not converge in {max_iter} iterations",
-                                step="Newton-Raphson")
+        raise SingularStepError(
+            f"Newton-Raphson did not converge in {max_iter} iterations", step="Newton-Raphson"
+        )
     F, J = system(q)
     P = pos(q)
     w, al = inp.omega, inp.alpha
@@ -872,8 +934,16 @@ def newton_raphson(scene: Scene, guess=None, *, tol=1e-15, max_iter=50) -> Kinem
     A.update({n: (qdd[2 * i], qdd[2 * i + 1]) for n, i in col.items()})
     W, Al = _link_rates(scene, P, V, A)
     S = _slider_rates(scene, P, V, A, W, Al)
-    return Kinematics("Newton-Raphson", P, V, A, W, Al, S,
-                      {"iterations": it, "residual": float(np.max(np.abs(F)))})
+    return Kinematics(
+        "Newton-Raphson",
+        P,
+        V,
+        A,
+        W,
+        Al,
+        S,
+        {"iterations": it, "residual": float(np.max(np.abs(F)))},
+    )
 
 
 def _link_rates(scene, P, V, A):
@@ -934,10 +1004,13 @@ def finite_differences(scene: Scene, h=None) -> Kinematics:
     for st in plan.steps:
         st.positions(P3, ctx)
     if ctx.bad is not None and ctx.bad.any():
-        raise AssemblyError("the mechanism cannot be assembled within +-h of the instant",
-                            step="finite differences")
-    P3 = {k: (np.broadcast_to(np.asarray(x, float), 3), np.broadcast_to(np.asarray(y, float), 3))
-          for k, (x, y) in P3.items()}
+        raise AssemblyError(
+            "the mechanism cannot be assembled within +-h of the instant", step="finite differences"
+        )
+    P3 = {
+        k: (np.broadcast_to(np.asarray(x, float), 3), np.broadcast_to(np.asarray(y, float), 3))
+        for k, (x, y) in P3.items()
+    }
 
     def d1(f):
         return (f[2] - f[0]) / (2 * h)
@@ -993,7 +1066,7 @@ def reference_scales(ref: Kinematics, scene: Scene) -> dict:
     """
     inp = scene.input
     r = scene.link(inp.crank).length
-    w2 = inp.omega ** 2 + abs(inp.alpha)
+    w2 = inp.omega**2 + abs(inp.alpha)
 
     def mag(v):
         return float(abs(v[0]) ** 2 + abs(v[1]) ** 2) ** 0.5
@@ -1030,12 +1103,14 @@ def compare(kin: Kinematics, ref: Kinematics, scene: Scene) -> dict:
     def vec(a, b, scale):
         return _hyp(_diff(a[0], b[0]), _diff(a[1], b[1])) / scale
 
-    for kind, d, dr in (("position", kin.P, ref.P), ("velocity", kin.V, ref.V),
-                        ("acceleration", kin.A, ref.A)):
+    for kind, d, dr in (
+        ("position", kin.P, ref.P),
+        ("velocity", kin.V, ref.V),
+        ("acceleration", kin.A, ref.A),
+    ):
         put(kind, [vec(d[k], dr[k], sc[kind]) for k in dr if k in d])
     for kind, d, dr in (("omega", kin.W, ref.W), ("alpha", kin.Al, ref.Al)):
-        put(kind, [abs(_diff(d[k], dr[k])) / sc[kind] for k in dr
-                   if k in d and d[k] is not None])
+        put(kind, [abs(_diff(d[k], dr[k])) / sc[kind] for k in dr if k in d and d[k] is not None])
     sl = []
     for k, (vs, a_s) in ref.S.items():
         if k in kin.S:
@@ -1065,4 +1140,5 @@ def _emax(a, b):
     if isinstance(a, float) and isinstance(b, float):
         return a if a >= b else b
     import numpy as np
+
     return np.maximum(a, b)

@@ -46,9 +46,14 @@ acceleration = "{acc} rad/s^2 {asense}"
 
 
 def _input(rng, crank, angle):
-    return INPUT.format(crank=crank, angle=_r(angle), speed=_r(rng.uniform(1, 50)),
-                        sense=rng.choice(["cw", "ccw"]), acc=_r(rng.uniform(0, 100)),
-                        asense=rng.choice(["cw", "ccw"]))
+    return INPUT.format(
+        crank=crank,
+        angle=_r(angle),
+        speed=_r(rng.uniform(1, 50)),
+        sense=rng.choice(["cw", "ccw"]),
+        acc=_r(rng.uniform(0, 100)),
+        asense=rng.choice(["cw", "ccw"]),
+    )
 
 
 def _coupler_lengths(rng, e, c):
@@ -91,9 +96,13 @@ CD = {_r(cl)}
         text += f"""[points]
 E = {{ on = "BC", along = {_r(rng.uniform(-0.5, 1.5) * b)} }}
 """
-    return text + f"""[assembly]
+    return (
+        text
+        + f"""[assembly]
 C = [{_r(cx)}, {_r(cy)}]
-""" + _input(rng, "AB", th)
+"""
+        + _input(rng, "AB", th)
+    )
 
 
 def change_point(rng, c):
@@ -218,6 +227,7 @@ def loaded(text, rng):
     """The scene with a pin size at every moving joint of two links and a force on the last
     point and a torque on the last link (for the rubbing and torque bounds)."""
     import tomllib
+
     t = tomllib.loads(text)
     links = list(t["links"])
     ground = set(t["ground"])
@@ -227,20 +237,26 @@ def loaded(text, rng):
         for p in ends:
             joints[p] = joints.get(p, 0) + 1
     sliders = list(t.get("sliders", {}))
-    points = [p for p, n in joints.items()
-              if (n >= 2 or p in sliders) and p not in ground]
+    points = [p for p, n in joints.items() if (n >= 2 or p in sliders) and p not in ground]
     pins = "".join(f'"{p}" = {{ radius = {_r(rng.uniform(5, 20))} }}\n' for p in points)
     target = sliders or points
     fx, fy = rng.uniform(-500, 500), rng.uniform(-500, 500)
-    loads = (f'"{target[-1]}" = {{ force = [{_r(fx)}, {_r(fy)}] }}\n'
-             f'"{links[-1]}" = {{ torque = "{_r(rng.uniform(1, 50))} N m ccw" }}\n')
+    loads = (
+        f'"{target[-1]}" = {{ force = [{_r(fx)}, {_r(fy)}] }}\n'
+        f'"{links[-1]}" = {{ torque = "{_r(rng.uniform(1, 50))} N m ccw" }}\n'
+    )
     head, inp = text.split("[input]")
     return head + "[pins]\n" + pins + "[loads]\n" + loads + "[input]" + inp
 
 
-FAMILIES = {"toggle": toggle, "change point": change_point, "dead centre": dead_centre,
-            "block at pivot": block_at_pivot, "chain": chain,
-            "toggle and slider": toggle_slider}
+FAMILIES = {
+    "toggle": toggle,
+    "change point": change_point,
+    "dead centre": dead_centre,
+    "block at pivot": block_at_pivot,
+    "chain": chain,
+    "toggle and slider": toggle_slider,
+}
 
 
 def make(family, rng, c, loads=True):

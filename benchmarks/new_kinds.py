@@ -52,14 +52,18 @@ speed = "10 rad/s cw"
 """
 
 CASES = {
-    "slider crank, crank's speed given": SLIDER.format(extra_links="", extra="", extra_ground="",
-                                                        speed='speed = "10 rad/s ccw"'),
+    "slider crank, crank's speed given": SLIDER.format(
+        extra_links="", extra="", extra_ground="", speed='speed = "10 rad/s ccw"'
+    ),
     "slider crank, piston's speed given (vs_B)": SLIDER.format(
-        extra_links="", extra="", extra_ground="",
-        speed='vs_B = "5 m/s left"\nas_B = "-20 m/s^2"'),
+        extra_links="", extra="", extra_ground="", speed='vs_B = "5 m/s left"\nas_B = "-20 m/s^2"'
+    ),
     "slider crank + a cylinder Q-A": SLIDER.format(
-        extra_links="", extra='[cylinders]\n"Q-A" = {}', extra_ground="Q = [-700, -300]",
-        speed='speed = "10 rad/s ccw"'),
+        extra_links="",
+        extra='[cylinders]\n"Q-A" = {}',
+        extra_ground="Q = [-700, -300]",
+        speed='speed = "10 rad/s ccw"',
+    ),
     "ellipse trammel driven by block A (a block, a slider)": """
 [ground]
 O = [0, 0]
@@ -119,6 +123,7 @@ def step_costs(repeat=7, number=2000):
     from polygon_method import load_scene
     from polygon_method.solver.compiler import compile_plan
     from polygon_method.solver.plan import Context
+
     here = Path(__file__).resolve().parents[1] / "tests" / "textbook"
 
     def cost(scene, kind):
@@ -136,13 +141,16 @@ def step_costs(repeat=7, number=2000):
     watt = load_scene(here / "rolling_sun_and_planet.toml")
     collar = load_scene(here / "collar_on_turning_rod.toml")
     second = load_scene(here / "collar_second_input.toml")
-    return {"dyad": d, "planet's rolling step": cost(planet, "rolling"),
-            "collar driven along its rod (the driver, two points)": cost(collar, "collar"),
-            "collar sliding along the crank (second input)": cost(second, "second collar"),
-            "wheel's rolling step": cost(wheel, "rolling"),
-            "wheel's centre on the ground": cost(wheel, "wheel centre"),
-            "planet on a rocker (its arm's angle followed)": cost(rocker, "rolling"),
-            "sun driven by a planet on the rod (Watt)": cost(watt, "rolling")}
+    return {
+        "dyad": d,
+        "planet's rolling step": cost(planet, "rolling"),
+        "collar driven along its rod (the driver, two points)": cost(collar, "collar"),
+        "collar sliding along the crank (second input)": cost(second, "second collar"),
+        "wheel's rolling step": cost(wheel, "rolling"),
+        "wheel's centre on the ground": cost(wheel, "wheel centre"),
+        "planet on a rocker (its arm's angle followed)": cost(rocker, "rolling"),
+        "sun driven by a planet on the rod (Watt)": cost(watt, "rolling"),
+    }
 
 
 def main():
@@ -158,11 +166,12 @@ def main():
     print(f"a dyad's warm cost:              {dyad * 1e6:6.2f} us")
     print(f"a cylinder step's warm cost:     {cyl * 1e6:6.2f} us ({cyl / dyad:.2f} of a dyad)")
     print(f"a second crank's warm cost:      {five * 1e6:6.2f} us ({five / dyad:.2f} of a dyad)")
-    block = t["ellipse trammel driven by block A (a block, a slider)"] / \
-        t["slider crank, crank's speed given"]
+    block = (
+        t["ellipse trammel driven by block A (a block, a slider)"]
+        / t["slider crank, crank's speed given"]
+    )
     print(f"a solve driven by a block / the same chain driven by a crank: {block:.2f}")
-    given = t["slider crank, piston's speed given (vs_B)"] / \
-        t["slider crank, crank's speed given"]
+    given = t["slider crank, piston's speed given (vs_B)"] / t["slider crank, crank's speed given"]
     print(f"a solve with the piston's speed given / with the crank's: {given:.2f}")
 
 

@@ -32,8 +32,20 @@ def _frame(scene):
     coupler = dy.link1 if dy.b == tip else dy.link2
     rocker = dy.link2 if dy.b == tip else dy.link1
     gx, gy = o4[0] - o2[0], o4[1] - o2[1]
-    return dict(cr=cr, dy=dy, o2=o2, o4=o4, a=cr.length, b=b, c=c, d=math.hypot(gx, gy),
-                phi0=math.atan2(gy, gx), coupler=coupler, rocker=rocker, pivot2=pivot2)
+    return dict(
+        cr=cr,
+        dy=dy,
+        o2=o2,
+        o4=o4,
+        a=cr.length,
+        b=b,
+        c=c,
+        d=math.hypot(gx, gy),
+        phi0=math.atan2(gy, gx),
+        coupler=coupler,
+        rocker=rocker,
+        pivot2=pivot2,
+    )
 
 
 def _assemble(scene, f, th3, th4, w3, w4, al3, al4, method, info):
@@ -87,9 +99,15 @@ def mechanism_fourbar(scene, guess):
         temp[0] = a(i) + b(x[0]) - c(x[1]) - d()
         return temp.flatten()
 
-    m = Mechanism(vectors=(a, b, c, d), origin=O2, loops=loops, pos=inp.angle - p0,
-                  vel=inp.omega, acc=inp.alpha,
-                  guess=(np.array([th3g, th4g]), np.zeros(2), np.zeros(2)))
+    m = Mechanism(
+        vectors=(a, b, c, d),
+        origin=O2,
+        loops=loops,
+        pos=inp.angle - p0,
+        vel=inp.omega,
+        acc=inp.alpha,
+        guess=(np.array([th3g, th4g]), np.zeros(2), np.zeros(2)),
+    )
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         m.calculate()
@@ -97,11 +115,22 @@ def mechanism_fourbar(scene, guess):
     w3, w4 = float(b.vel.omega), float(c.vel.omega)
     al3, al4 = float(b.acc.alpha), float(c.acc.alpha)
     t2 = inp.angle - p0  # does the loop close? (the library does not say)
-    res = math.hypot(f["a"] * math.cos(t2) + f["b"] * math.cos(th3) - f["c"] * math.cos(th4)
-                     - f["d"], f["a"] * math.sin(t2) + f["b"] * math.sin(th3)
-                     - f["c"] * math.sin(th4))
-    return _assemble(scene, f, th3, th4, w3, w4, al3, al4, "mechanism (PyPI)",
-                     {"loop residual": res, "warnings": [str(w.message) for w in caught]})
+    res = math.hypot(
+        f["a"] * math.cos(t2) + f["b"] * math.cos(th3) - f["c"] * math.cos(th4) - f["d"],
+        f["a"] * math.sin(t2) + f["b"] * math.sin(th3) - f["c"] * math.sin(th4),
+    )
+    return _assemble(
+        scene,
+        f,
+        th3,
+        th4,
+        w3,
+        w4,
+        al3,
+        al4,
+        "mechanism (PyPI)",
+        {"loop residual": res, "warnings": [str(w.message) for w in caught]},
+    )
 
 
 def pylinkage_fourbar(scene, guess):
@@ -121,10 +150,15 @@ def pylinkage_fourbar(scene, guess):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         g1, g2 = Ground(0.0, 0.0, name="O2"), Ground(f["d"], 0.0, name="O4")
-        crank = Crank(anchor=g1, radius=f["a"], angular_velocity=0.0,
-                      initial_angle=inp.angle - p0)
-        dyad = RRRDyad(anchor1=crank.output, anchor2=g2, distance1=f["b"],
-                       distance2=f["c"], x=hint[0], y=hint[1])
+        crank = Crank(anchor=g1, radius=f["a"], angular_velocity=0.0, initial_angle=inp.angle - p0)
+        dyad = RRRDyad(
+            anchor1=crank.output,
+            anchor2=g2,
+            distance1=f["b"],
+            distance2=f["c"],
+            x=hint[0],
+            y=hint[1],
+        )
         lk = Linkage([g1, g2, crank, dyad], name="four-bar")
         lk.set_input_velocity(crank, omega=inp.omega, alpha=inp.alpha)
         pos, vel, acc = next(iter(lk.step_with_derivatives(iterations=1, dt=0)))
@@ -143,8 +177,18 @@ def pylinkage_fourbar(scene, guess):
         return (r[0] * v[1] - r[1] * v[0]) / (r[0] ** 2 + r[1] ** 2)
 
     th3, th4 = math.atan2(r3[1], r3[0]), math.atan2(r4[1], r4[0])
-    return _assemble(scene, f, th3, th4, rate(r3, v3), rate(r4, (vbx, vby)),
-                     rate(r3, a3), rate(r4, (abx, aby)), "pylinkage (PyPI)", {})
+    return _assemble(
+        scene,
+        f,
+        th3,
+        th4,
+        rate(r3, v3),
+        rate(r4, (vbx, vby)),
+        rate(r3, a3),
+        rate(r4, (abx, aby)),
+        "pylinkage (PyPI)",
+        {},
+    )
 
 
 PEERS = {"mechanism (PyPI)": mechanism_fourbar, "pylinkage (PyPI)": pylinkage_fourbar}

@@ -50,7 +50,6 @@ IMAGE_POINTS = PROBLEMS / "fourbar_image_points.toml"
 GRASHOF = PROBLEMS / "fourbar_crank_acceleration.toml"  # AB 40, BC 120, CD 80, AD 100
 
 
-
 def timeit(fn, repeat, number=1):
     """Median and minimum time of one call of ``fn`` over ``repeat`` runs of ``number``."""
     runs = []
@@ -77,8 +76,14 @@ CHILD_ENV = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECOD
 
 def run_child(code):
     """Run ``code`` in a fresh interpreter; it prints one JSON line, returned as a dict."""
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         cwd=ROOT, check=True, env=CHILD_ENV)
+    out = subprocess.run(
+        [sys.executable, "-c", code],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+        check=True,
+        env=CHILD_ENV,
+    )
     return json.loads(out.stdout.strip().splitlines()[-1])
 
 
@@ -173,14 +178,57 @@ def floor_fourbar():
         RC = abs(w1 - w2) * rC
         RD = abs(w2) * rD
         if tuple:
-            return (bx, by, cx, cy, E, F, G, vbx, vby, vcx, vcy, vE, vF, vG, abx, aby, acx,
-                    acy, aE, aF, aG, w1, w2, a1, a2, RA, RB, RC, RD, cond)
-        P = {"A": (ax_, ay_), "D": (dx_, dy_), "B": (bx, by), "C": (cx, cy), "E": E, "F": F,
-             "G": G}
-        V = {"A": (0.0, 0.0), "D": (0.0, 0.0), "B": (vbx, vby), "C": (vcx, vcy), "E": vE,
-             "F": vF, "G": vG}
-        A = {"A": (0.0, 0.0), "D": (0.0, 0.0), "B": (abx, aby), "C": (acx, acy), "E": aE,
-             "F": aF, "G": aG}
+            return (
+                bx,
+                by,
+                cx,
+                cy,
+                E,
+                F,
+                G,
+                vbx,
+                vby,
+                vcx,
+                vcy,
+                vE,
+                vF,
+                vG,
+                abx,
+                aby,
+                acx,
+                acy,
+                aE,
+                aF,
+                aG,
+                w1,
+                w2,
+                a1,
+                a2,
+                RA,
+                RB,
+                RC,
+                RD,
+                cond,
+            )
+        P = {"A": (ax_, ay_), "D": (dx_, dy_), "B": (bx, by), "C": (cx, cy), "E": E, "F": F, "G": G}
+        V = {
+            "A": (0.0, 0.0),
+            "D": (0.0, 0.0),
+            "B": (vbx, vby),
+            "C": (vcx, vcy),
+            "E": vE,
+            "F": vF,
+            "G": vG,
+        }
+        A = {
+            "A": (0.0, 0.0),
+            "D": (0.0, 0.0),
+            "B": (abx, aby),
+            "C": (acx, acy),
+            "E": aE,
+            "F": aF,
+            "G": aG,
+        }
         W = {"AB": w, "BC": w1, "CD": w2}
         Al = {"AB": al, "BC": a1, "CD": a2}
         R = {"A": RA, "B": RB, "C": RC, "D": RD}
@@ -197,8 +245,11 @@ def _floor_agrees(sol, floor):
         size = max(math.hypot(*v) for v in theirs.values())
         for k, v in mine.items():
             assert math.dist(v, theirs[k]) <= 1e-12 * size, k
-    for mine, theirs in ((W, sol.W), (Al, sol.Al),
-                         (R, {k: r.rubbing_velocity for k, r in sol.rubbing.items()})):
+    for mine, theirs in (
+        (W, sol.W),
+        (Al, sol.Al),
+        (R, {k: r.rubbing_velocity for k, r in sol.rubbing.items()}),
+    ):
         size = max(abs(v) for v in theirs.values())
         for k, v in mine.items():
             assert abs(v - theirs[k]) <= 1e-12 * size, k
@@ -241,6 +292,7 @@ def bench_single(repeat):
 
     seed_text = IMAGE_POINTS.read_text()
     import inspect
+
     # as `solve` reads it: [variants] and [answers] unread (an older tree, measured before
     # a change, reads [answers] in every command)
     unread = {"variants": False}
@@ -275,9 +327,13 @@ def bench_chain(repeat):
             runs = []
             for _ in range(max(1, repeat // 5)):
                 t = time.perf_counter()
-                subprocess.run([sys.executable, "-m", "polygon_method", "solve", str(path),
-                                "--json"], cwd=ROOT, check=True, capture_output=True,
-                               env=CHILD_ENV)
+                subprocess.run(
+                    [sys.executable, "-m", "polygon_method", "solve", str(path), "--json"],
+                    cwd=ROOT,
+                    check=True,
+                    capture_output=True,
+                    env=CHILD_ENV,
+                )
                 runs.append(time.perf_counter() - t)
             out[f"chain_{2 * n + 1}"] = statistics.median(runs)
     return out
@@ -369,8 +425,16 @@ def bench_million(repeat):
 def bench_cli(repeat):
     out = {}
     runs = []
-    cmd = [sys.executable, "-m", "polygon_method", "sweep", str(IMAGE_POINTS), "--steps",
-           "1000000", "--summary"]
+    cmd = [
+        sys.executable,
+        "-m",
+        "polygon_method",
+        "sweep",
+        str(IMAGE_POINTS),
+        "--steps",
+        "1000000",
+        "--summary",
+    ]
     subprocess.run(cmd, cwd=ROOT, check=True, capture_output=True, env=CHILD_ENV)  # warm
     for _ in range(max(3, repeat // 2)):
         t = time.perf_counter()
@@ -380,24 +444,33 @@ def bench_cli(repeat):
     runs = []
     for _ in range(max(5, repeat)):
         t = time.perf_counter()
-        subprocess.run([sys.executable, "-m", "polygon_method", "solve", str(IMAGE_POINTS),
-                        "--json"], cwd=ROOT, check=True, capture_output=True, env=CHILD_ENV)
+        subprocess.run(
+            [sys.executable, "-m", "polygon_method", "solve", str(IMAGE_POINTS), "--json"],
+            cwd=ROOT,
+            check=True,
+            capture_output=True,
+            env=CHILD_ENV,
+        )
         runs.append(time.perf_counter() - t)
     out["cli_solve"] = statistics.median(runs)
-    code = ("import sys, io, contextlib, json\n"
-            "from polygon_method.cli import main\n"
-            "with contextlib.redirect_stdout(io.StringIO()):\n"
-            f"    main(['solve', {str(IMAGE_POINTS)!r}, '--json'])\n"
-            "print(json.dumps({m: m in sys.modules for m in ('matplotlib', 'shapely')}))")
+    code = (
+        "import sys, io, contextlib, json\n"
+        "from polygon_method.cli import main\n"
+        "with contextlib.redirect_stdout(io.StringIO()):\n"
+        f"    main(['solve', {str(IMAGE_POINTS)!r}, '--json'])\n"
+        "print(json.dumps({m: m in sys.modules for m in ('matplotlib', 'shapely')}))"
+    )
     out["solve_imports"] = run_child(code)
-    code = ("import sys, json, time\n"
-            "t = time.perf_counter()\n"
-            "import polygon_method\n"
-            "t = time.perf_counter() - t\n"
-            "polygon_method.solve(polygon_method.load_scene("
-            f"{str(IMAGE_POINTS)!r})).to_dict()\n"
-            "print(json.dumps({'time': t, 'forces': any(m.startswith("
-            "'polygon_method.forces') for m in sys.modules)}))")
+    code = (
+        "import sys, json, time\n"
+        "t = time.perf_counter()\n"
+        "import polygon_method\n"
+        "t = time.perf_counter() - t\n"
+        "polygon_method.solve(polygon_method.load_scene("
+        f"{str(IMAGE_POINTS)!r})).to_dict()\n"
+        "print(json.dumps({'time': t, 'forces': any(m.startswith("
+        "'polygon_method.forces') for m in sys.modules)}))"
+    )
     runs = [run_child(code) for _ in range(max(5, repeat))]
     out["import_time"] = statistics.median(r["time"] for r in runs)
     out["import_forces"] = any(r["forces"] for r in runs)
@@ -416,24 +489,36 @@ def bench_pylinkage(repeat):
         return None
 
     def make():
-        m = fourbar(crank=0.04, coupler=0.12, rocker=0.08, ground=0.10,
-                    omega=2 * math.pi / 3600, initial_angle=math.radians(120))
+        m = fourbar(
+            crank=0.04,
+            coupler=0.12,
+            rocker=0.08,
+            ground=0.10,
+            omega=2 * math.pi / 3600,
+            initial_angle=math.radians(120),
+        )
         m.set_input_velocity(m._driver_links[0], 20.0, 150.0)
         return m
 
     m = make()
     list(m.step_with_derivatives(iterations=10))
     build, _ = timeit(_pylinkage_build_and_step, repeat, 100)
-    per_cycle, _ = timeit(lambda: list(make().step_with_derivatives(iterations=3600)),
-                          max(1, repeat // 3))
-    out = {"pylinkage_cycle": per_cycle, "pylinkage_step": per_cycle / 3600,
-           "pylinkage_build_step": build}
+    per_cycle, _ = timeit(
+        lambda: list(make().step_with_derivatives(iterations=3600)), max(1, repeat // 3)
+    )
+    out = {
+        "pylinkage_cycle": per_cycle,
+        "pylinkage_step": per_cycle / 3600,
+        "pylinkage_build_step": build,
+    }
     try:  # the numba path, where numba is installed
         import numba  # noqa: F401
+
         m = make()
         m.step_fast_with_kinematics(iterations=3600)
         out["pylinkage_numba_cycle"], _ = timeit(
-            lambda: m.step_fast_with_kinematics(iterations=3600), repeat)
+            lambda: m.step_fast_with_kinematics(iterations=3600), repeat
+        )
     except ImportError:
         pass
     return out
@@ -470,15 +555,26 @@ def side_by_side(rounds):
         plan_module._BY_CONTENT.clear()
         return solve(fresh_scene)
 
-    m = fourbar(crank=0.04, coupler=0.12, rocker=0.08, ground=0.10,
-                omega=2 * math.pi / 3600, initial_angle=math.radians(120))
+    m = fourbar(
+        crank=0.04,
+        coupler=0.12,
+        rocker=0.08,
+        ground=0.10,
+        omega=2 * math.pi / 3600,
+        initial_angle=math.radians(120),
+    )
     m.set_input_velocity(m._driver_links[0], 20.0, 150.0)
-    steps = m.step_with_derivatives(iterations=10 ** 9)
+    steps = m.step_with_derivatives(iterations=10**9)
     next(steps)
     build = _pylinkage_build_and_step
-    batches = {"full": (full, 50), "floor": (floor, 50), "floor_tuple": (lambda: floor(True), 50),
-               "pylinkage_step": (lambda: next(steps), 20), "fresh": (fresh, 10),
-               "pylinkage_build_step": (build, 10)}
+    batches = {
+        "full": (full, 50),
+        "floor": (floor, 50),
+        "floor_tuple": (lambda: floor(True), 50),
+        "pylinkage_step": (lambda: next(steps), 20),
+        "fresh": (fresh, 10),
+        "pylinkage_build_step": (build, 10),
+    }
     best = dict.fromkeys(batches, float("inf"))
     clock = time.perf_counter
     for _ in range(rounds):
@@ -498,13 +594,14 @@ def _pylinkage_build_and_step():
     from pylinkage.components import Ground
     from pylinkage.dyads import RRRDyad
     from pylinkage.simulation import Linkage
+
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         g1, g2 = Ground(0.0, 0.0, name="A"), Ground(0.1, 0.0, name="D")
-        crank = Crank(anchor=g1, radius=0.04, angular_velocity=0.0,
-                      initial_angle=math.radians(120))
-        dyad = RRRDyad(anchor1=crank.output, anchor2=g2, distance1=0.12, distance2=0.08,
-                       x=0.05, y=0.08)
+        crank = Crank(anchor=g1, radius=0.04, angular_velocity=0.0, initial_angle=math.radians(120))
+        dyad = RRRDyad(
+            anchor1=crank.output, anchor2=g2, distance1=0.12, distance2=0.08, x=0.05, y=0.08
+        )
         lk = Linkage([g1, g2, crank, dyad], name="four-bar")
         lk.set_input_velocity(crank, omega=20.0, alpha=0.0)
         return next(iter(lk.step_with_derivatives(iterations=1, dt=0)))
@@ -532,10 +629,15 @@ def bench_mechanism(repeat):
             return a(inp) + b(x[0]) - c() - d(x[1])
 
         th = math.radians(120) + np.linspace(0, 2 * math.pi, n, endpoint=False)
-        m = Mechanism(vectors=(a, b, c, d), origin=O, loops=loops, pos=th,
-                      vel=np.full(n, 20.0), acc=np.full(n, 150.0),
-                      guess=(np.radians([20.0, 80.0]), np.array([3.0, 10.0]),
-                             np.array([70.0, 30.0])))
+        m = Mechanism(
+            vectors=(a, b, c, d),
+            origin=O,
+            loops=loops,
+            pos=th,
+            vel=np.full(n, 20.0),
+            acc=np.full(n, 150.0),
+            guess=(np.radians([20.0, 80.0]), np.array([3.0, 10.0]), np.array([70.0, 30.0])),
+        )
         m.iterate()
         return m
 
@@ -577,73 +679,179 @@ def main(argv=None):
             print(row.format(name, fmt(ours).strip(), "-", "-", words + " (peer not installed)"))
             return
         ratio = ours / peer
-        print(row.format(name, fmt(ours).strip(), fmt(peer).strip(), f"{ratio:.2f}",
-                         f"{words}: {'met' if ratio <= target_ratio else 'MISSED'}"))
+        print(
+            row.format(
+                name,
+                fmt(ours).strip(),
+                fmt(peer).strip(),
+                f"{ratio:.2f}",
+                f"{words}: {'met' if ratio <= target_ratio else 'MISSED'}",
+            )
+        )
 
-    vs("new mechanism, loaded scene -> one solved position", r["fresh"],
-       "pylinkage_build_step", 0.8, "<= 0.8 of pylinkage build + step")
-    vs("  the same from scene text (TOML parsed)", r["fresh_text"], "pylinkage_build_step",
-       1.0, "faster than pylinkage build + step")
-    print(row.format("the seed's worked file, text -> solved (as `solve` reads it)",
-                     fmt(r["worked_text"]).strip(), "", "", "under 0.3 ms: "
-                     + ("met" if r["worked_text"] < 3e-4 else "MISSED")))
+    vs(
+        "new mechanism, loaded scene -> one solved position",
+        r["fresh"],
+        "pylinkage_build_step",
+        0.8,
+        "<= 0.8 of pylinkage build + step",
+    )
+    vs(
+        "  the same from scene text (TOML parsed)",
+        r["fresh_text"],
+        "pylinkage_build_step",
+        1.0,
+        "faster than pylinkage build + step",
+    )
+    print(
+        row.format(
+            "the seed's worked file, text -> solved (as `solve` reads it)",
+            fmt(r["worked_text"]).strip(),
+            "",
+            "",
+            "under 0.3 ms: " + ("met" if r["worked_text"] < 3e-4 else "MISSED"),
+        )
+    )
     print(row.format("  of which the TOML reading", fmt(r["worked_toml"]).strip(), "", "", ""))
-    vs("warm full solve: E, F, G, rubbing at 4 pins, torque", r["single_full"],
-       "pylinkage_step", 0.25, "<= 1/4 of a pylinkage step")
-    print(row.format("  against the floor: plain float code, the same numbers by name",
-                     fmt(r["single_full"]).strip(), fmt(r["floor"]).strip(),
-                     f"{r['single_full'] / r['floor']:.2f}", "within 2x of the floor: "
-                     + ("met" if r["single_full"] <= 2 * r["floor"] else "MISSED")))
-    print(row.format("  the floor giving its numbers unnamed (a tuple)", "",
-                     fmt(r["floor_tuple"]).strip(),
-                     f"{r['single_full'] / r['floor_tuple']:.2f}", ""))
+    vs(
+        "warm full solve: E, F, G, rubbing at 4 pins, torque",
+        r["single_full"],
+        "pylinkage_step",
+        0.25,
+        "<= 1/4 of a pylinkage step",
+    )
+    print(
+        row.format(
+            "  against the floor: plain float code, the same numbers by name",
+            fmt(r["single_full"]).strip(),
+            fmt(r["floor"]).strip(),
+            f"{r['single_full'] / r['floor']:.2f}",
+            "within 2x of the floor: "
+            + ("met" if r["single_full"] <= 2 * r["floor"] else "MISSED"),
+        )
+    )
+    print(
+        row.format(
+            "  the floor giving its numbers unnamed (a tuple)",
+            "",
+            fmt(r["floor_tuple"]).strip(),
+            f"{r['single_full'] / r['floor_tuple']:.2f}",
+            "",
+        )
+    )
     print(row.format("  solve() alone", fmt(r["single"]).strip(), "", "", ""))
     if "sbs_full" in r:  # the same figures interleaved (the least of many small batches)
         print("side by side, interleaved:")
         for ours, peer, target, words in (
-                ("sbs_full", "sbs_pylinkage_step", 0.25, "warm full solve / pylinkage step"),
-                ("sbs_full", "sbs_floor", 2.0, "warm full solve / the floor"),
-                ("sbs_full", "sbs_floor_tuple", None, "warm full solve / the floor, unnamed"),
-                ("sbs_fresh", "sbs_pylinkage_build_step", 0.8,
-                 "never seen / pylinkage build + step")):
+            ("sbs_full", "sbs_pylinkage_step", 0.25, "warm full solve / pylinkage step"),
+            ("sbs_full", "sbs_floor", 2.0, "warm full solve / the floor"),
+            ("sbs_full", "sbs_floor_tuple", None, "warm full solve / the floor, unnamed"),
+            ("sbs_fresh", "sbs_pylinkage_build_step", 0.8, "never seen / pylinkage build + step"),
+        ):
             ratio = r[ours] / r[peer]
-            print(row.format("  " + words, fmt(r[ours]).strip(), fmt(r[peer]).strip(),
-                             f"{ratio:.2f}", "" if target is None else
-                             f"<= {target:g}: " + ("met" if ratio <= target else "MISSED")))
-    vs("3600 positions, Grashof four-bar", r["cycle"], "pylinkage_numba_cycle", 0.25,
-       "<= 1/4 of pylinkage's numba path")
+            print(
+                row.format(
+                    "  " + words,
+                    fmt(r[ours]).strip(),
+                    fmt(r[peer]).strip(),
+                    f"{ratio:.2f}",
+                    ""
+                    if target is None
+                    else f"<= {target:g}: " + ("met" if ratio <= target else "MISSED"),
+                )
+            )
+    vs(
+        "3600 positions, Grashof four-bar",
+        r["cycle"],
+        "pylinkage_numba_cycle",
+        0.25,
+        "<= 1/4 of pylinkage's numba path",
+    )
     vs("  against pylinkage's pure-Python path", r["cycle"], "pylinkage_cycle", 1.0, "faster")
-    print(row.format("sweep --steps 1000000 --summary, seed four-bar, fresh",
-                     fmt(r["cli_million"]).strip(), "", "", "under 0.35 s: "
-                     + ("met" if r["cli_million"] < 0.35 else "MISSED")))
-    print(row.format("1,000,000 angles, sweep (all arrays kept)", fmt(r["million_sweep"]).strip(),
-                     "", "", f"peak {r['million_sweep_rss']:.0f} MB"))
-    print(row.format("1,000,000 angles, summarize (per chunk)",
-                     fmt(r["million_summarize"]).strip(), "", "",
-                     f"peak {r['million_summarize_rss']:.0f} MB (under 300 MB: "
-                     + ("met)" if r["million_summarize_rss"] < 300 else "MISSED)")))
-    print(row.format("positions only, 100,000 angles of the seed four-bar", fmt(r["positions_only"]).strip(),
-                     fmt(r["positions_full"]).strip(),
-                     f"{r['positions_only'] / r['positions_full']:.2f}",
-                     "<= 1/2 of a full one: " + ("met" if r["positions_only"] <= 0.5 *
-                                                 r["positions_full"] else "MISSED")))
+    print(
+        row.format(
+            "sweep --steps 1000000 --summary, seed four-bar, fresh",
+            fmt(r["cli_million"]).strip(),
+            "",
+            "",
+            "under 0.35 s: " + ("met" if r["cli_million"] < 0.35 else "MISSED"),
+        )
+    )
+    print(
+        row.format(
+            "1,000,000 angles, sweep (all arrays kept)",
+            fmt(r["million_sweep"]).strip(),
+            "",
+            "",
+            f"peak {r['million_sweep_rss']:.0f} MB",
+        )
+    )
+    print(
+        row.format(
+            "1,000,000 angles, summarize (per chunk)",
+            fmt(r["million_summarize"]).strip(),
+            "",
+            "",
+            f"peak {r['million_summarize_rss']:.0f} MB (under 300 MB: "
+            + ("met)" if r["million_summarize_rss"] < 300 else "MISSED)"),
+        )
+    )
+    print(
+        row.format(
+            "positions only, 100,000 angles of the seed four-bar",
+            fmt(r["positions_only"]).strip(),
+            fmt(r["positions_full"]).strip(),
+            f"{r['positions_only'] / r['positions_full']:.2f}",
+            "<= 1/2 of a full one: "
+            + ("met" if r["positions_only"] <= 0.5 * r["positions_full"] else "MISSED"),
+        )
+    )
     for k in sorted((k for k in r if k.startswith("chain_")), key=lambda k: int(k[6:])):
-        print(row.format(f"solve --json, chain of dyads, {k[6:]} links", fmt(r[k]).strip(),
-                         "", "", "under 10 s: " + ("met" if r[k] < 10 else "MISSED")))
+        print(
+            row.format(
+                f"solve --json, chain of dyads, {k[6:]} links",
+                fmt(r[k]).strip(),
+                "",
+                "",
+                "under 10 s: " + ("met" if r[k] < 10 else "MISSED"),
+            )
+        )
     grow = r["warmchain_10001"] / r["warmchain_1001"]
-    print(row.format("warm solve per link, chain of dyads, 10,001 vs 1,001 links",
-                     fmt(r["warmchain_10001"]).strip(), fmt(r["warmchain_1001"]).strip(),
-                     f"{grow:.2f}", "flat (within 1.1x): " + ("met" if grow <= 1.1
-                                                              else "MISSED")))
-    print(row.format("import polygon_method, fresh process", fmt(r["import_time"]).strip(),
-                     "", "", "forces/ " + ("loaded" if r["import_forces"]
-                                           else "not loaded") + " by a solve without masses"))
-    print(row.format("solve --json, cold start", fmt(r["cli_solve"]).strip(), "", "",
-                     "imports: " + ", ".join(f"{k} {'YES' if v else 'no'}"
-                                              for k, v in r["solve_imports"].items())))
+    print(
+        row.format(
+            "warm solve per link, chain of dyads, 10,001 vs 1,001 links",
+            fmt(r["warmchain_10001"]).strip(),
+            fmt(r["warmchain_1001"]).strip(),
+            f"{grow:.2f}",
+            "flat (within 1.1x): " + ("met" if grow <= 1.1 else "MISSED"),
+        )
+    )
+    print(
+        row.format(
+            "import polygon_method, fresh process",
+            fmt(r["import_time"]).strip(),
+            "",
+            "",
+            "forces/ "
+            + ("loaded" if r["import_forces"] else "not loaded")
+            + " by a solve without masses",
+        )
+    )
+    print(
+        row.format(
+            "solve --json, cold start",
+            fmt(r["cli_solve"]).strip(),
+            "",
+            "",
+            "imports: "
+            + ", ".join(f"{k} {'YES' if v else 'no'}" for k, v in r["solve_imports"].items()),
+        )
+    )
     if "mechanism_step" in r:
-        print(f"mechanism (fsolve): {fmt(r['mechanism_step'])} per position, "
-              f"{r['mechanism_step'] / r['single']:.0f}x our single position")
+        print(
+            f"mechanism (fsolve): {fmt(r['mechanism_step'])} per position, "
+            f"{r['mechanism_step'] / r['single']:.0f}x our single position"
+        )
     if args.json:
         print(json.dumps(r, default=str))
     return 0

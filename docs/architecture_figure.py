@@ -37,6 +37,7 @@ def _lines(module: str) -> int:
 
 def main():
     import matplotlib
+
     matplotlib.use("Agg")
     from matplotlib.figure import Figure
     from matplotlib.patches import FancyBboxPatch
@@ -50,25 +51,54 @@ def main():
     ax.set_xlim(0, width)
     ax.set_ylim(0, len(rows) * row_h + 1.2)
     ax.axis("off")
-    ax.text(0.2, len(rows) * row_h + 0.75, "polygon_method: imports go down only "
-            "(checked by lint-imports)", fontsize=8, weight="bold", va="center")
+    ax.text(
+        0.2,
+        len(rows) * row_h + 0.75,
+        "polygon_method: imports go down only (checked by lint-imports)",
+        fontsize=8,
+        weight="bold",
+        va="center",
+    )
     for i, mods in enumerate(rows):
         y = (len(rows) - 1 - i) * row_h + 0.35
         box_w = (9.6 - 0.15 * (len(mods) - 1)) / len(mods)
         for k, m in enumerate(mods):
             x = 0.2 + k * (box_w + 0.15)
             pkg = (ROOT / Path(*m.split("."))).is_dir()
-            ax.add_patch(FancyBboxPatch((x, y), box_w, row_h - 0.2,
-                                        boxstyle="round,pad=0.02,rounding_size=0.08",
-                                        fc="#dde6f2" if not pkg else "#f4e3b5",
-                                        ec="#23395d", lw=0.6))
+            ax.add_patch(
+                FancyBboxPatch(
+                    (x, y),
+                    box_w,
+                    row_h - 0.2,
+                    boxstyle="round,pad=0.02,rounding_size=0.08",
+                    fc="#dde6f2" if not pkg else "#f4e3b5",
+                    ec="#23395d",
+                    lw=0.6,
+                )
+            )
             name = m.split(".", 1)[1] + ("/" if pkg else "")
-            ax.text(x + box_w / 2, y + (row_h - 0.2) / 2, f"{name}  {_lines(m)}",
-                    ha="center", va="center", fontsize=5.6)
-        ax.text(10.0, y + (row_h - 0.2) / 2, WORDS.get(i, ""), va="center", fontsize=5.6,
-                color="#444444")
-    ax.annotate("", xy=(14.7, 0.35), xytext=(14.7, len(rows) * row_h + 0.1),
-                arrowprops={"arrowstyle": "->", "lw": 0.8, "color": "#23395d"})
+            ax.text(
+                x + box_w / 2,
+                y + (row_h - 0.2) / 2,
+                f"{name}  {_lines(m)}",
+                ha="center",
+                va="center",
+                fontsize=5.6,
+            )
+        ax.text(
+            10.0,
+            y + (row_h - 0.2) / 2,
+            WORDS.get(i, ""),
+            va="center",
+            fontsize=5.6,
+            color="#444444",
+        )
+    ax.annotate(
+        "",
+        xy=(14.7, 0.35),
+        xytext=(14.7, len(rows) * row_h + 0.1),
+        arrowprops={"arrowstyle": "->", "lw": 0.8, "color": "#23395d"},
+    )
     OUT.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(OUT, format="svg", metadata={"Date": None})
     fig.savefig(OUT.with_suffix(".png"), format="png", dpi=150)

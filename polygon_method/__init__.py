@@ -24,8 +24,13 @@ import importlib.abc
 import importlib.util
 import sys
 
-from .common.errors import (AssemblyError, MobilityError, PolygonMethodError, SceneError,
-                            SingularStepError)
+from .common.errors import (
+    AssemblyError,
+    MobilityError,
+    PolygonMethodError,
+    SceneError,
+    SingularStepError,
+)
 from .solver.compiler import compile_plan
 from .solver.plan import Plan
 from .scene import Scene, load_scene, parse_scene
@@ -33,9 +38,22 @@ from .motion.solution import Solution, solve
 
 __version__ = "0.1.0"
 
-__all__ = ["load_scene", "parse_scene", "solve", "compile_plan", "sweep", "Scene", "Plan",
-           "Solution", "PolygonMethodError", "SceneError", "MobilityError", "AssemblyError",
-           "SingularStepError", "__version__"]
+__all__ = [
+    "load_scene",
+    "parse_scene",
+    "solve",
+    "compile_plan",
+    "sweep",
+    "Scene",
+    "Plan",
+    "Solution",
+    "PolygonMethodError",
+    "SceneError",
+    "MobilityError",
+    "AssemblyError",
+    "SingularStepError",
+    "__version__",
+]
 
 
 def _solution_svg(sol):
@@ -50,6 +68,7 @@ def _solution_svg(sol):
 def _solution_report(sol) -> str:
     """The solution as text, the way ``polygon-method solve`` prints it."""
     from .text.report import solution_text
+
     return solution_text(sol)
 
 
@@ -62,14 +81,27 @@ Solution.report = _solution_report
 # layer, see docs/architecture.md). `import polygon_method.kinematics` and the like keep
 # working: the old name is the same module object as the new one.
 MOVED = {
-    "errors": "common.errors", "units": "common.units", "numbers": "common.numbers",
-    "plan": "solver.plan", "given": "solver.given", "compiler": "solver.compiler",
-    "kinematics": "solver.kinematics", "tracking": "solver.tracking",
-    "errorbound": "solver.errorbound", "derived": "solver.derived", "centres": "solver.centres",
-    "solution": "motion.solution", "sweeps": "motion.sweeps",
-    "constructions": "polygons.constructions", "scales": "polygons.scales",
-    "summary": "linkage.summary", "report": "text.report", "words": "text.words",
-    "steptable": "text.steptable", "forcereport": "text.forces", "centretable": "text.centres",
+    "errors": "common.errors",
+    "units": "common.units",
+    "numbers": "common.numbers",
+    "plan": "solver.plan",
+    "given": "solver.given",
+    "compiler": "solver.compiler",
+    "kinematics": "solver.kinematics",
+    "tracking": "solver.tracking",
+    "errorbound": "solver.errorbound",
+    "derived": "solver.derived",
+    "centres": "solver.centres",
+    "solution": "motion.solution",
+    "sweeps": "motion.sweeps",
+    "constructions": "polygons.constructions",
+    "scales": "polygons.scales",
+    "summary": "linkage.summary",
+    "report": "text.report",
+    "words": "text.words",
+    "steptable": "text.steptable",
+    "forcereport": "text.forces",
+    "centretable": "text.centres",
     "plots": "draw.plots",
 }
 
@@ -100,5 +132,6 @@ if not any(isinstance(f, _OldNames) for f in sys.meta_path):
 def __getattr__(name):  # lazy: sweeps need numpy, which `solve` does not
     if name == "sweep":
         from .motion.sweeps import sweep
+
         return sweep
     raise AttributeError(name)

@@ -49,10 +49,13 @@ def reference_errors(text, sliders=False) -> list:
     ref = reference_solution(scene, P)
     assert ref["residual"] < mpf("1e-40")
     errs = []
-    for key, got, table in (("P", P, "positions"), ("V", V, "velocities"),
-                            ("A", A, "accelerations")):
+    for key, got, table in (
+        ("P", P, "positions"),
+        ("V", V, "velocities"),
+        ("A", A, "accelerations"),
+    ):
         want = ref[table]
-        scale = max(float(mpmath.sqrt(x ** 2 + y ** 2)) for x, y in want.values())
+        scale = max(float(mpmath.sqrt(x**2 + y**2)) for x, y in want.values())
         for p in scene.point_names:
             w = (float(want[p][0]), float(want[p][1]))
             if not close(tuple(got[p]), w, scale):
@@ -97,14 +100,21 @@ def check_derivatives(text, h=1e-4):
 def every_view(f, tmp_path, more=()):
     """Run every command a driver must take on the scene file ``f`` (and the commands
     ``more``, each an argument list after the scene), each to exit 0."""
-    for argv in [["solve"], ["solve", "--json"], ["steps"], ["check"], ["centres"],
-                 ["draw", "-o", str(tmp_path / "d.svg")],
-                 ["draw", "--animate", "-o", str(tmp_path / "a.svg")],
-                 ["draw", "--diagram", "centres", "-o", str(tmp_path / "c.svg")],
-                 ["sweep", "--plot", str(tmp_path / "p.svg")],
-                 ["sweep", "--steps", "36", "--summary"],
-                 ["sweep", "--csv", str(tmp_path / "s.csv")],
-                 ["page", "-o", str(tmp_path / "p.html")], *more]:
+    for argv in [
+        ["solve"],
+        ["solve", "--json"],
+        ["steps"],
+        ["check"],
+        ["centres"],
+        ["draw", "-o", str(tmp_path / "d.svg")],
+        ["draw", "--animate", "-o", str(tmp_path / "a.svg")],
+        ["draw", "--diagram", "centres", "-o", str(tmp_path / "c.svg")],
+        ["sweep", "--plot", str(tmp_path / "p.svg")],
+        ["sweep", "--steps", "36", "--summary"],
+        ["sweep", "--csv", str(tmp_path / "s.csv")],
+        ["page", "-o", str(tmp_path / "p.html")],
+        *more,
+    ]:
         assert main([argv[0], str(f), *argv[1:]]) == 0, argv
 
 

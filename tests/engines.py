@@ -32,8 +32,9 @@ B = {{ mass = "{m} kg" }}
 
 def engine(theta, *, r=150, l=600, rpm=1800, m=2.5, side="right", sense="ccw", extra=""):
     """The engine's scene at crank angle ``theta`` (deg), with the tables ``extra``."""
-    return parse_scene(ENGINE.format(r=r, l=l, theta=theta, rpm=rpm, m=m, side=side,
-                                     sense=sense) + extra)
+    return parse_scene(
+        ENGINE.format(r=r, l=l, theta=theta, rpm=rpm, m=m, side=side, sense=sense) + extra
+    )
 
 
 def closed_forms(theta_idc, theta, r, l, rpm, m, F_gas, sg=1) -> dict:
@@ -48,15 +49,21 @@ def closed_forms(theta_idc, theta, r, l, rpm, m, F_gas, sg=1) -> dict:
     t = sg * mpmath.radians(mpmath.mpf(theta) - theta_idc)  # from i.d.c., with the rotation
 
     def x(tt):  # the piston's distance from O
-        return R * mpmath.cos(tt) + mpmath.sqrt(L ** 2 - (R * mpmath.sin(tt)) ** 2)
-    a_toward = -w ** 2 * mpmath.diff(x, t, 2)  # the piston's acceleration towards O
+        return R * mpmath.cos(tt) + mpmath.sqrt(L**2 - (R * mpmath.sin(tt)) ** 2)
+
+    a_toward = -(w**2) * mpmath.diff(x, t, 2)  # the piston's acceleration towards O
     F_P = mpmath.mpf(F_gas) - m * a_toward
     n = L / R
     phi = mpmath.asin(mpmath.sin(t) / n)
     F_Q = F_P / mpmath.cos(phi)
-    T = F_P * R * (mpmath.sin(t) + mpmath.sin(2 * t) / (2 * mpmath.sqrt(n ** 2 - mpmath.sin(t) ** 2)))
-    return {"F_P": F_P, "F_Q": F_Q, "F_N": F_P * mpmath.tan(phi),
-            "F_T": F_Q * mpmath.sin(t + phi), "T": T}
+    T = F_P * R * (mpmath.sin(t) + mpmath.sin(2 * t) / (2 * mpmath.sqrt(n**2 - mpmath.sin(t) ** 2)))
+    return {
+        "F_P": F_P,
+        "F_Q": F_Q,
+        "F_N": F_P * mpmath.tan(phi),
+        "F_T": F_Q * mpmath.sin(t + phi),
+        "T": T,
+    }
 
 
 @pytest.fixture(autouse=True)

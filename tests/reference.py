@@ -73,8 +73,13 @@ from mpmath import mp, mpf
 mp.dps = 50
 
 __all__ = [
-    "reference_solution", "reference_positions", "constraint_residuals", "constraint_jacobian",
-    "reference_slider_crank", "reference_fourbar_algebraic", "theta_at",
+    "reference_solution",
+    "reference_positions",
+    "constraint_residuals",
+    "constraint_jacobian",
+    "reference_slider_crank",
+    "reference_fourbar_algebraic",
+    "theta_at",
 ]
 
 NEWTON_TOL = mpf("1e-40")
@@ -151,13 +156,29 @@ def _equations(scene):
     if two is not None and two.block is not None:  # a collar sliding along the crank K-N
         rod = scene.link(scene.slider(two.block).guide)
         k = rod.p if rod.p in ground else rod.q
-        eqs.append(("collar2", (two.block, k, rod.other(k), mpf(rod.length), mpf(two.angle),
-                                mpf(two.omega), mpf(two.alpha))))
+        eqs.append(
+            (
+                "collar2",
+                (
+                    two.block,
+                    k,
+                    rod.other(k),
+                    mpf(rod.length),
+                    mpf(two.angle),
+                    mpf(two.omega),
+                    mpf(two.alpha),
+                ),
+            )
+        )
     elif two is not None:  # a second driven crank, at its own angle, speed and acceleration
         r2 = mpf(scene.link(two.crank).length)
         for c in (0, 1):
-            eqs.append(("crank2", (two.pivot, two.tip, r2, c, mpf(two.angle), mpf(two.omega),
-                                   mpf(two.alpha))))
+            eqs.append(
+                (
+                    "crank2",
+                    (two.pivot, two.tip, r2, c, mpf(two.angle), mpf(two.omega), mpf(two.alpha)),
+                )
+            )
     exact = _carried_coefficients(scene)
     for cp in scene.points:
         lk = scene.link(cp.link)
@@ -182,8 +203,9 @@ def _equations(scene):
             k = -_dot(_sub(T, O), _perp(u))
             if pr.base != scene.link(inp.crank).key and pr.base not in wheels:
                 bl = scene.link(pr.base)
-                eqs.append(("rackfree", (pr.rim, T, u, k, pr.base_centre,
-                                         bl.other(pr.base_centre))))
+                eqs.append(
+                    ("rackfree", (pr.rim, T, u, k, pr.base_centre, bl.other(pr.base_centre)))
+                )
                 continue
             eqs.append(("rack", (pr.rim, T, u, k, pr.base, rates, mpf(inp.angle))))
             continue
@@ -201,8 +223,19 @@ def _equations(scene):
             bl = scene.link(pr.base)
             base = (pr.base_centre, bl.q if bl.p == pr.base_centre else bl.p)
         for c in (0, 1):
-            eqs.append(("rim", (pr.rim, pr.centre, ell, pr.angle,
-                                ("circle", pr.base_centre, e, r, pr, base), c)))
+            eqs.append(
+                (
+                    "rim",
+                    (
+                        pr.rim,
+                        pr.centre,
+                        ell,
+                        pr.angle,
+                        ("circle", pr.base_centre, e, r, pr, base),
+                        c,
+                    ),
+                )
+            )
     return eqs
 
 
@@ -298,8 +331,11 @@ def _eval(kind, d, P, th, moving=False):
         if kind == "collar2":  # a second input: its own place at the instant
             th = d[4]
         a, b = _sub(P[x], P[k]), _sub(P[n], P[k])
-        return _dot(a, b) - L * th, [(x, b[0], b[1]), (n, a[0], a[1]),
-                                     (k, -a[0] - b[0], -a[1] - b[1])]
+        return _dot(a, b) - L * th, [
+            (x, b[0], b[1]),
+            (n, a[0], a[1]),
+            (k, -a[0] - b[0], -a[1] - b[1]),
+        ]
     if kind == "yoke":
         x, y, u = d
         a = _sub(P[x], P[y])
@@ -307,8 +343,7 @@ def _eval(kind, d, P, th, moving=False):
     if kind == "guide":
         x, g1, g2 = d
         a, b = _sub(P[x], P[g1]), _sub(P[g2], P[g1])
-        return _cross(a, b), [(x, b[1], -b[0]), (g2, -a[1], a[0]),
-                              (g1, a[1] - b[1], b[0] - a[0])]
+        return _cross(a, b), [(x, b[1], -b[0]), (g2, -a[1], a[0]), (g1, a[1] - b[1], b[0] - a[0])]
     if kind == "rack":
         x, T, u, k, base, rates, th0 = d
         K = rates.get(base, 0)  # (at the scene's own angle th = th0 the term is zero)
@@ -398,6 +433,7 @@ def _rim_value_along(P, V, d, s):
     def turn(a, b):  # the turn of direction a -> b from its direction in P
         d0, d1 = _sub(P[b], P[a]), _sub(Q[b], Q[a])
         return mpmath.atan2(_cross(d0, d1), _dot(d0, d1))
+
     phi, _ = _rim_angle(P, cen, phi0, how)
     phi = phi + kd * turn(O, cen) + (kb * turn(*base) if base is not None else 0)
     ec = mpmath.cos(phi) if c == 0 else mpmath.sin(phi)
@@ -529,15 +565,21 @@ def reference_solution(scene, guess_positions):
         elif kind in ("collar", "collar2"):  # (X - K).(N - K) - L s: f'' minus J q''
             x, k, n, L = d[:4]
             gamma[i] = 2 * _dot(_sub(V[x], V[k]), _sub(V[n], V[k])) - L * (
-                al if kind == "collar" else d[6])
+                al if kind == "collar" else d[6]
+            )
         elif kind == "rack":
             gamma[i] = -d[3] * rates[d[4]] * al
         elif kind == "rackfree":  # -k beta along the motion: its second derivative
             x, T, u, k, O, Q = d
             d0 = _sub(P[Q], P[O])
-            gamma[i] = -k * mpmath.diff(lambda s: mpmath.atan2(
-                _cross(d0, _sub(_add_s(P[Q], V[Q], s), _add_s(P[O], V[O], s))),
-                _dot(d0, _sub(_add_s(P[Q], V[Q], s), _add_s(P[O], V[O], s)))), 0, 2)
+            gamma[i] = -k * mpmath.diff(
+                lambda s: mpmath.atan2(
+                    _cross(d0, _sub(_add_s(P[Q], V[Q], s), _add_s(P[O], V[O], s))),
+                    _dot(d0, _sub(_add_s(P[Q], V[Q], s), _add_s(P[O], V[O], s))),
+                ),
+                0,
+                2,
+            )
         elif kind == "rim":  # X - C - l e(phi): gamma = l phi'^2 e - l perp(e) phi_tt
             x, cen, ell, _, how, c = d
             e = _unit(_sub(P[x], P[cen]))
@@ -569,8 +611,10 @@ def reference_solution(scene, guess_positions):
             vx_ = (V[g1][0] + wg * _perp(rel)[0], V[g1][1] + wg * _perp(rel)[1])
             vs = _dot(_sub(V[x], vx_), u)
             cor = (2 * wg * vs * _perp(u)[0], 2 * wg * vs * _perp(u)[1])
-            ax_ = (A[g1][0] - wg * wg * rel[0] + ag * _perp(rel)[0],
-                   A[g1][1] - wg * wg * rel[1] + ag * _perp(rel)[1])
+            ax_ = (
+                A[g1][0] - wg * wg * rel[0] + ag * _perp(rel)[0],
+                A[g1][1] - wg * wg * rel[1] + ag * _perp(rel)[1],
+            )
             acc = _dot(_sub(_sub(A[x], ax_), cor), u)
         elif hasattr(sl, "yoke"):  # relative to the yoke, which translates: no Coriolis
             u = _unit(_v(sl.direction))
@@ -581,8 +625,15 @@ def reference_solution(scene, guess_positions):
             vs, acc, cor = _dot(V[x], u), _dot(A[x], u), ZERO2
         sliders[getattr(sl, "key", x)] = {"vs": vs, "as": acc, "coriolis": cor}
 
-    return {"positions": P, "velocities": V, "accelerations": A, "omega": omega,
-            "alpha": alpha, "sliders": sliders, "residual": res}
+    return {
+        "positions": P,
+        "velocities": V,
+        "accelerations": A,
+        "omega": omega,
+        "alpha": alpha,
+        "sliders": sliders,
+        "residual": res,
+    }
 
 
 # --------------------------------------------------------------------------- closed forms
@@ -603,11 +654,13 @@ def reference_slider_crank(r, l, e, theta, omega, alpha):
     D = mpmath.sqrt(l * l - s * s)
     x = c + D
     x1 = -yb - s * c / D
-    x2 = -c - (c * c - s * yb) / D - s * s * c * c / D ** 3
+    x2 = -c - (c * c - s * yb) / D - s * s * c * c / D**3
     return {
-        "x": x, "v": w * x1, "a": al * x1 + w * w * x2,
+        "x": x,
+        "v": w * x1,
+        "a": al * x1 + w * w * x2,
         "omega_rod": -c * w / D,
-        "alpha_rod": (yb * w * w - c * al) / D - s * c * c * w * w / D ** 3,
+        "alpha_rod": (yb * w * w - c * al) / D - s * c * c * w * w / D**3,
     }
 
 
@@ -652,8 +705,16 @@ def reference_fourbar_algebraic(a, b, c, d, theta2, omega2, alpha2, branch):
     aA = (deriv(comp[0], 2), deriv(comp[1], 2))
     aB = (deriv(comp[2], 2), deriv(comp[3], 2))
     return {
-        "A": (ax, ay), "B": (bx, by), "theta3": th3, "theta4": th4,
-        "vA": vA, "vB": vB, "aA": aA, "aB": aB,
-        "omega3": deriv(lambda t: angle(t, 3), 1), "omega4": deriv(lambda t: angle(t, 4), 1),
-        "alpha3": deriv(lambda t: angle(t, 3), 2), "alpha4": deriv(lambda t: angle(t, 4), 2),
+        "A": (ax, ay),
+        "B": (bx, by),
+        "theta3": th3,
+        "theta4": th4,
+        "vA": vA,
+        "vB": vB,
+        "aA": aA,
+        "aB": aB,
+        "omega3": deriv(lambda t: angle(t, 3), 1),
+        "omega4": deriv(lambda t: angle(t, 4), 1),
+        "alpha3": deriv(lambda t: angle(t, 3), 2),
+        "alpha4": deriv(lambda t: angle(t, 4), 2),
     }

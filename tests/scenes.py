@@ -1,7 +1,9 @@
 """Scenes shared by several test modules (each used as it stands in more than one)."""
 
-def seed(*, top="", ground="", links="", middle="",
-         drive='angle = 60\nspeed = "10.5 rad/s cw"', after="") -> str:
+
+def seed(
+    *, top="", ground="", links="", middle="", drive='angle = 60\nspeed = "10.5 rad/s cw"', after=""
+) -> str:
     """The seed four-bar as scene text (pivots A and D 100 apart, AB 50, BC 66, CD 56, the
     crank AB), with what a test adds: ``top`` lines before ``[ground]`` (title, units),
     more ``ground`` pivots, more ``links``, ``middle`` tables between ``[links]`` and ``[input]``
@@ -22,8 +24,10 @@ def seed(*, top="", ground="", links="", middle="",
     crank = "AB"
     angle = 30
     """
-    return (f"\n{top}[ground]\nA = [0, 0]\nD = [100, 0]\n{ground}[links]\nAB = 50\nBC = 66\n"
-            f"CD = 56\n{links}{middle}[input]\ncrank = \"AB\"\n{drive}\n{after}")
+    return (
+        f"\n{top}[ground]\nA = [0, 0]\nD = [100, 0]\n{ground}[links]\nAB = 50\nBC = 66\n"
+        f'CD = 56\n{links}{middle}[input]\ncrank = "AB"\n{drive}\n{after}'
+    )
 
 
 #: the seed four-bar, no more than its links, pivots and crank

@@ -57,9 +57,11 @@ def _err_line(capsys):
 def _answers_for(variant_file, named):
     """A student's right answers to the variant in ``variant_file`` (solved on its own)."""
     sol = solve(load_scene(variant_file))
-    return (f"variant = {named}\n[answers]\n"
-            f'v_C = "{sol.speed("C"):.6f} m/s"\n'
-            f'omega_BC = "{abs(sol.omega("BC")):.6f} rad/s"\n')
+    return (
+        f"variant = {named}\n[answers]\n"
+        f'v_C = "{sol.speed("C"):.6f} m/s"\n'
+        f'omega_BC = "{abs(sol.omega("BC")):.6f} rad/s"\n'
+    )
 
 
 @pytest.fixture
@@ -75,14 +77,15 @@ def klass(tmp_path):
 
 def _book(tmp_path, base, answers, out, capsys):
     book = tmp_path / "book.csv"
-    assert main(["check", str(base), str(answers), "--variants", str(out), "--gradebook",
-                 str(book)]) == 0
+    assert (
+        main(["check", str(base), str(answers), "--variants", str(out), "--gradebook", str(book)])
+        == 0
+    )
     capsys.readouterr()
     return {r["student"]: r for r in csv.DictReader(book.open())}
 
 
-def test_a_student_is_graded_against_the_variant_whose_id_they_name(tmp_path, klass,
-                                                                     capsys):
+def test_a_student_is_graded_against_the_variant_whose_id_they_name(tmp_path, klass, capsys):
     """A renamed variant file is still found by its id; a copy of another variant under
     the name "03.toml" never pairs a student with the wrong variant."""
     base, out, answers = klass
@@ -100,10 +103,20 @@ def test_a_student_is_graded_against_the_variant_whose_id_they_name(tmp_path, kl
     assert graded["eve"]["right"] == "2"
 
 
-@pytest.mark.parametrize("named", ['"²"', '"٣"', '"0\\u001b3"', '"../x"', "-3", '"variant"',
-                                   '"answer-key"', "99999999999999999999"])
-def test_an_odd_variant_name_is_that_students_row_never_a_crash(tmp_path, klass, capsys,
-                                                                 named):
+@pytest.mark.parametrize(
+    "named",
+    [
+        '"²"',
+        '"٣"',
+        '"0\\u001b3"',
+        '"../x"',
+        "-3",
+        '"variant"',
+        '"answer-key"',
+        "99999999999999999999",
+    ],
+)
+def test_an_odd_variant_name_is_that_students_row_never_a_crash(tmp_path, klass, capsys, named):
     base, out, answers = klass
     (answers / "ann.toml").write_text(_answers_for(out / "variant-03.toml", named))
     (answers / "zed.toml").write_text(_answers_for(out / "variant-01.toml", '"01"'))
@@ -125,22 +138,47 @@ def test_junk_in_the_variants_directory_is_named_not_fatal(tmp_path, klass, caps
     assert graded["bob"]["right"] == "2"
 
 
-def test_the_gradebook_is_never_written_over_a_file_the_command_reads(tmp_path, klass,
-                                                                       capsys):
+def test_the_gradebook_is_never_written_over_a_file_the_command_reads(tmp_path, klass, capsys):
     base, out, answers = klass
     ann = answers / "ann.csv"  # an answer file may have any name
     ann.write_text(_answers_for(out / "variant-01.toml", '"01"'))
     bob = answers / "bob.toml"
     bob.write_text(_answers_for(out / "variant-02.toml", '"02"'))
     before = ann.read_bytes()
-    assert main(["check", str(base), str(ann), str(bob), "--variants", str(out),
-                 "--gradebook", str(ann)]) == 2
+    assert (
+        main(
+            [
+                "check",
+                str(base),
+                str(ann),
+                str(bob),
+                "--variants",
+                str(out),
+                "--gradebook",
+                str(ann),
+            ]
+        )
+        == 2
+    )
     assert "which this command reads" in _err_line(capsys)
     assert ann.read_bytes() == before
     link = tmp_path / "key.md"
     link.symlink_to(bob)
-    assert main(["check", str(base), str(ann), str(bob), "--variants", str(out),
-                 "--gradebook", str(link)]) == 2
+    assert (
+        main(
+            [
+                "check",
+                str(base),
+                str(ann),
+                str(bob),
+                "--variants",
+                str(out),
+                "--gradebook",
+                str(link),
+            ]
+        )
+        == 2
+    )
     _err_line(capsys)
     assert bob.read_text().startswith("variant = ")
 
@@ -150,8 +188,10 @@ def test_a_student_file_name_with_a_line_break_stays_one_row(tmp_path, klass, ca
     (answers / "new\nline.toml").write_text(_answers_for(out / "variant-01.toml", '"01"'))
     (answers / "bob.toml").write_text(_answers_for(out / "variant-02.toml", '"02"'))
     book = tmp_path / "book.md"
-    assert main(["check", str(base), str(answers), "--variants", str(out), "--gradebook",
-                 str(book)]) == 0
+    assert (
+        main(["check", str(base), str(answers), "--variants", str(out), "--gradebook", str(book)])
+        == 0
+    )
     printed = capsys.readouterr().out
     rows = [x for x in book.read_text().splitlines() if x.startswith("|")]
     assert len(rows) == 2 + 2  # the head, its rule and one row per student
@@ -205,10 +245,13 @@ def test_every_varied_value_is_in_the_file_written(tmp_path, capsys):
     assert pairs == {(0, -10), (0, 10), (5, -10), (5, 10)}
 
 
-@pytest.mark.parametrize("table, words", [
-    ("BC = [80, 85]\nCB = [90]", "BC and CB both vary link BC"),
-    ("A = { radius = [5, 6], diameter = [14] }", "both vary pin A"),
-])
+@pytest.mark.parametrize(
+    "table, words",
+    [
+        ("BC = [80, 85]\nCB = [90]", "BC and CB both vary link BC"),
+        ("A = { radius = [5, 6], diameter = [14] }", "both vary pin A"),
+    ],
+)
 def test_two_keys_for_one_quantity_are_refused(table, words):
     text = FOURBAR.split("[variants]")[0] + "[pins]\nA = { radius = 5 }\n[variants]\n" + table
     with pytest.raises(PolygonMethodError, match=words):
@@ -223,8 +266,9 @@ def test_moving_a_path_along_itself_is_refused():
         parse_scene(text + "\n[variants]\nB = { x = [0, 5] }\n")
     parse_scene(text + "\n[variants]\nB = { y = [0, 5] }\n")  # across the path: a variant
     with pytest.raises(PolygonMethodError, match="changes nothing"):
-        parse_scene(text.replace('"horizontal"', '"vertical"')
-                    + "\n[variants]\nB = { y = [0, 5] }\n")
+        parse_scene(
+            text.replace('"horizontal"', '"vertical"') + "\n[variants]\nB = { y = [0, 5] }\n"
+        )
 
 
 SEED = "worked_problems/fourbar_image_points.toml"
@@ -233,12 +277,14 @@ SEED = "worked_problems/fourbar_image_points.toml"
 @pytest.mark.parametrize("n", [0, 1, -1, 2.5, "10", True, None, float("nan"), 3601, 10**9])
 def test_frames_through_the_api_are_a_whole_number_in_range(n):
     from polygon_method.page import frames
+
     with pytest.raises(PolygonMethodError, match="--frames"):
         frames(load_scene(SEED), n)
 
 
 def test_an_animation_is_of_a_format_it_knows_and_a_size_it_can_hold():
     from polygon_method.page import MAX_PICTURE_FRAMES, animation, frames
+
     fr = frames(load_scene(SEED), 4)
     for fmt in ("png", "SVG", None, "gif "):
         with pytest.raises(PolygonMethodError, match="cannot animate"):
@@ -259,30 +305,46 @@ def test_an_animation_never_holds_fewer_frames_than_it_says():
 
     fr = frames(load_scene(SEED), 6)
     html = animation(fr, "html")
-    data = json.loads(re.search(r'<script type="application/json" id="frames">(.*?)</script>',
-                                html, re.S).group(1))
+    data = json.loads(
+        re.search(r'<script type="application/json" id="frames">(.*?)</script>', html, re.S).group(
+            1
+        )
+    )
     assert len(data["pictures"]) == len(data["angles"]) == 6
     assert all(p.startswith("data:image/png;base64,") for p in data["pictures"])
 
 
 @pytest.mark.parametrize("ext", ["gif", "html"])
-def test_too_many_picture_frames_is_one_line_before_anything_is_computed(tmp_path, capsys,
-                                                                          ext):
+def test_too_many_picture_frames_is_one_line_before_anything_is_computed(tmp_path, capsys, ext):
     from polygon_method.page import MAX_PICTURE_FRAMES
+
     out = tmp_path / f"cycle.{ext}"
     out.write_text("keep me")
-    assert main(["draw", SEED, "--animate", "-o", str(out), "--frames",
-                 str(MAX_PICTURE_FRAMES + 1)]) == 2
+    assert (
+        main(["draw", SEED, "--animate", "-o", str(out), "--frames", str(MAX_PICTURE_FRAMES + 1)])
+        == 2
+    )
     assert f"from 2 to {MAX_PICTURE_FRAMES}" in _err_line(capsys)
     assert out.read_text() == "keep me"
 
 
-@pytest.mark.parametrize("count, seed, words", [
-    (0, 0, "--count 0"), (-1, 0, "--count -1"), (2.5, 0, "--count 2.5"), ("3", 0, "--count"),
-    (10**6, 0, "to 9999"), (3, -1, "--seed -1"), (3, 1.5, "--seed 1.5"),
-    (3, None, "--seed None"), (True, 0, "--count True")])
+@pytest.mark.parametrize(
+    "count, seed, words",
+    [
+        (0, 0, "--count 0"),
+        (-1, 0, "--count -1"),
+        (2.5, 0, "--count 2.5"),
+        ("3", 0, "--count"),
+        (10**6, 0, "to 9999"),
+        (3, -1, "--seed -1"),
+        (3, 1.5, "--seed 1.5"),
+        (3, None, "--seed None"),
+        (True, 0, "--count True"),
+    ],
+)
 def test_generate_through_the_api_refuses_odd_counts_and_seeds(count, seed, words):
     from polygon_method.variants import generate
+
     with pytest.raises(PolygonMethodError, match=words.replace("+", r"\+")):
         generate(parse_scene(FOURBAR), count, seed)
 
@@ -301,6 +363,7 @@ def test_a_long_problem_goes_on_over_the_page_of_the_pdf_sheet():
     asked): every line of it is on a page, none below the page's foot."""
     from polygon_method.variants import generate
     from polygon_method.variants.papers import sheet_pages, sheet_sections
+
     names = "EFGHIJKLMNOPQRSTUVW"
     pts = "".join(f'{p} = {{ on = "BC", along = {5 + 4 * k} }}\n' for k, p in enumerate(names))
     text = FOURBAR.split("[answers]")[0].replace("[assembly]", f"[points]\n{pts}\n[assembly]")
@@ -324,6 +387,7 @@ def test_a_class_as_json_with_an_error_against_a_right_value_of_zero(tmp_path, c
     """v_A of a ground point and alpha of a crank at constant speed are 0: a wrong answer
     is an infinite per cent off, written as null (it was an internal error)."""
     import json
+
     base = tmp_path / "base.toml"
     base.write_text(FOURBAR)
     answers = tmp_path / "answers"
@@ -338,8 +402,7 @@ def test_a_class_as_json_with_an_error_against_a_right_value_of_zero(tmp_path, c
     assert json.loads(capsys.readouterr().out)["right"] == 0
 
 
-def test_the_page_checks_a_variants_answers_against_that_variant_only(tmp_path, klass,
-                                                                      capsys):
+def test_the_page_checks_a_variants_answers_against_that_variant_only(tmp_path, klass, capsys):
     base, out, answers = klass
     ann = answers / "ann.toml"
     ann.write_text(_answers_for(out / "variant-03.toml", '"03"'))
@@ -348,8 +411,7 @@ def test_the_page_checks_a_variants_answers_against_that_variant_only(tmp_path, 
         assert main(["page", str(scene), "-o", str(page), "--answers", str(ann)]) == 2
         assert "names variant '03'" in _err_line(capsys)
         assert not page.exists()
-    assert main(["page", str(out / "variant-03.toml"), "-o", str(page), "--answers",
-                 str(ann)]) == 0
+    assert main(["page", str(out / "variant-03.toml"), "-o", str(page), "--answers", str(ann)]) == 0
     assert page.exists()
 
 
@@ -357,19 +419,24 @@ def test_crank_angles_a_turn_apart_are_one_problem():
     """0, 360 and -360 deg (and 30 and 390) put the mechanism in one position: two
     students given them would have the same problem under other numbers."""
     text = FOURBAR.split("[variants]")[0]
-    sc = parse_scene(text + "[variants]\nangle = [0, 360, -360, 30, 390, \"6.283185307179586 rad\"]\n")
+    sc = parse_scene(
+        text + '[variants]\nangle = [0, 360, -360, 30, 390, "6.283185307179586 rad"]\n'
+    )
     (angle,) = sc.variation.varied
     assert len(angle) == 2
     sc = parse_scene(text + "[variants]\nangle = { from = -720, to = 720, step = 90 }\n")
     assert len(sc.variation.varied[0]) == 4
 
 
-@pytest.mark.parametrize("argv, option", [
-    (["--frames", "10"], "--frames"),
-    (["--centre-labels", "13"], "--centre-labels"),
-    (["--diagram", "velocity", "--centre-labels", "I13"], "--centre-labels"),
-    (["--animate", "--centre-labels", "13"], "--animate"),
-])
+@pytest.mark.parametrize(
+    "argv, option",
+    [
+        (["--frames", "10"], "--frames"),
+        (["--centre-labels", "13"], "--centre-labels"),
+        (["--diagram", "velocity", "--centre-labels", "I13"], "--centre-labels"),
+        (["--animate", "--centre-labels", "13"], "--animate"),
+    ],
+)
 def test_a_draw_option_that_would_do_nothing_is_refused(tmp_path, capsys, argv, option):
     out = tmp_path / "d.svg"
     assert main(["draw", SEED, "-o", str(out), *argv]) == 2
@@ -382,8 +449,10 @@ def test_a_gradebook_cell_never_starts_a_spreadsheet_formula(tmp_path, klass, ca
     for name in ("=HYPERLINK(1)", "+1", "@SUM(A1)", "-2", "ann"):
         (answers / f"{name}.toml").write_text(_answers_for(out / "variant-01.toml", '"01"'))
     book = tmp_path / "book.csv"
-    assert main(["check", str(base), str(answers), "--variants", str(out), "--gradebook",
-                 str(book)]) == 0
+    assert (
+        main(["check", str(base), str(answers), "--variants", str(out), "--gradebook", str(book)])
+        == 0
+    )
     capsys.readouterr()
     for row in list(csv.reader(book.open()))[1:]:
         assert all(not c or c[0] not in "=+-@" for c in row), row
@@ -402,6 +471,7 @@ def test_the_page_is_never_written_over_its_answer_file(tmp_path, capsys):
 def test_the_views_api_refuses_what_is_not_theirs_with_an_error_of_the_family():
     from polygon_method.page import animation, page_html
     from polygon_method.variants import generate
+
     sc = load_scene(SEED)
     for bad in (sc, solve(sc), None, "page.html"):
         with pytest.raises(PolygonMethodError, match="frames of a scene are needed"):
@@ -421,14 +491,18 @@ def test_a_variants_file_reads_back_whatever_its_strings_hold(title, header, key
     """Any title, header or key (control characters, DEL, line separators, quotes,
     backslashes): the TOML written reads back to the same table."""
     from polygon_method.variants import dump_toml
+
     raw = {"title": title, "units": "mm", "points": {key: {"on": title, "along": 1.5}}}
     assert tomllib.loads(dump_toml(raw, header)) == raw
 
 
 def test_a_title_with_control_characters_still_gives_variants(tmp_path, capsys):
     base = tmp_path / "base.toml"
-    base.write_text(FOURBAR.replace('title = "Four-bar for a class"',
-                                    'title = "Four-bar\\u001b\\u007f\\u2028 for a class"'))
+    base.write_text(
+        FOURBAR.replace(
+            'title = "Four-bar for a class"', 'title = "Four-bar\\u001b\\u007f\\u2028 for a class"'
+        )
+    )
     out = tmp_path / "class"
     assert main(["variants", str(base), "--count", "3", "-o", str(out)]) == 0
     for k in (1, 2, 3):
@@ -453,6 +527,7 @@ def test_no_frame_is_shown_twice_when_the_instant_is_on_the_grid():
     them holds 0 already; the frames still run one way, n of them, the instant among them."""
     import numpy as np
     from polygon_method.page import frames
+
     text = open(SEED).read().replace("angle = 60", "angle = 0", 1)
     sc = parse_scene(text)
     for n in (2, 3, 4, 5, 24, 25, 50, 51):
@@ -465,6 +540,7 @@ def test_no_frame_is_shown_twice_when_the_instant_is_on_the_grid():
 
 def test_a_list_of_values_is_bounded_as_a_range_is():
     from polygon_method.scene.variation import MAX_VALUES
+
     values = ", ".join(str(80 + k * 1e-4) for k in range(MAX_VALUES + 1))
     with pytest.raises(PolygonMethodError, match=f"more than {MAX_VALUES}"):
         parse_scene(FOURBAR.split("[variants]")[0] + f"[variants]\nBC = [{values}]\n")
@@ -475,6 +551,7 @@ def test_the_page_grades_an_answer_file_as_check_does(tmp_path, capsys):
     `check` at the default (a hand drawing's tolerance, saying so), and so on the page."""
     import json
     import re
+
     v_c = solve(load_scene(SEED)).speed("C")
     ans = tmp_path / "ann.toml"
     ans.write_text(f'[answers]\nv_C = "{v_c * 0.971:.6f} m/s"\n')  # 2.9 % low
@@ -497,14 +574,29 @@ def test_a_pipe_in_a_listed_directory_is_a_row_never_a_wait(tmp_path, klass):
     import os
     import subprocess
     import sys
+
     base, out, answers = klass
     (answers / "ann.toml").write_text(_answers_for(out / "variant-01.toml", '"01"'))
     os.mkfifo(answers / "pipe.toml")
     os.mkfifo(out / "zz.toml")
     book = tmp_path / "book.csv"
-    run = subprocess.run([sys.executable, "-m", "polygon_method", "check", str(base),
-                          str(answers), "--variants", str(out), "--gradebook", str(book)],
-                         capture_output=True, text=True, timeout=120)
+    run = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "polygon_method",
+            "check",
+            str(base),
+            str(answers),
+            "--variants",
+            str(out),
+            "--gradebook",
+            str(book),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert run.returncode == 0, run.stderr
     graded = {r["student"]: r for r in csv.DictReader(book.open())}
     assert graded["ann"]["right"] == "2"

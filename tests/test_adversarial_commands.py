@@ -46,16 +46,17 @@ def _refuse(x):
 
 
 @pytest.mark.parametrize("scene", [SEED, TRAMMEL], ids=["crank", "block"])
-@pytest.mark.parametrize("start, stop, step", [
-    (-1e6, 1e6, 1e-310),    # (b - a) / s past the largest float: was an OverflowError
-    (0, 10, 1e-300),        # 1e301 angles: its count was printed in 302 digits
-    (-1e308, 1e308, 1e300),  # b - a past the largest float
-    (1e308, -1e308, -1e-300),
-])
-def test_a_sweep_range_of_countless_values_is_one_short_line(capsys, scene, start, stop,
-                                                             step):
-    assert main(["sweep", scene, "--from", str(start), "--to", str(stop), "--step",
-                 str(step)]) == 2
+@pytest.mark.parametrize(
+    "start, stop, step",
+    [
+        (-1e6, 1e6, 1e-310),  # (b - a) / s past the largest float: was an OverflowError
+        (0, 10, 1e-300),  # 1e301 angles: its count was printed in 302 digits
+        (-1e308, 1e308, 1e300),  # b - a past the largest float
+        (1e308, -1e308, -1e-300),
+    ],
+)
+def test_a_sweep_range_of_countless_values_is_one_short_line(capsys, scene, start, stop, step):
+    assert main(["sweep", scene, "--from", str(start), "--to", str(stop), "--step", str(step)]) == 2
     line = _one_line(capsys)
     assert len(line) < 250 and not re.search(r"\d{20}", line), line
     assert not re.search(r"(?<![A-Za-z])(inf|nan)(?![A-Za-z])", line, re.I), line
@@ -63,8 +64,9 @@ def test_a_sweep_range_of_countless_values_is_one_short_line(capsys, scene, star
 
 def test_a_range_of_a_few_values_is_counted_with_both_ends(tmp_path, capsys):
     out = tmp_path / "s.csv"
-    assert main(["sweep", SEED, "--from", "0", "--to", "10", "--step", "2.5",
-                 "--csv", str(out)]) == 0
+    assert (
+        main(["sweep", SEED, "--from", "0", "--to", "10", "--step", "2.5", "--csv", str(out)]) == 0
+    )
     assert len(out.read_text().splitlines()) == 1 + 5  # 0, 2.5, 5, 7.5, 10
 
 
@@ -79,10 +81,17 @@ def test_a_driving_blocks_places_far_beyond_any_scene_are_named_as_places(capsys
 
 
 def _chain(n):
-    links = "".join(f'"{a}-P{i}" = 66\n"{b}-P{i}" = 56\n' for i, (a, b) in enumerate(
-        zip(["B", "C"] + [f"P{k}" for k in range(n)], ["C"] + [f"P{k}" for k in range(n)])))
-    return ("[ground]\nA = [0, 0]\nD = [100, 0]\n[links]\nAB = 50\nBC = 66\nCD = 56\n"
-            + links + '[input]\ncrank = "AB"\nangle = 60\nspeed = "10 rad/s cw"\n')
+    links = "".join(
+        f'"{a}-P{i}" = 66\n"{b}-P{i}" = 56\n'
+        for i, (a, b) in enumerate(
+            zip(["B", "C"] + [f"P{k}" for k in range(n)], ["C"] + [f"P{k}" for k in range(n)])
+        )
+    )
+    return (
+        "[ground]\nA = [0, 0]\nD = [100, 0]\n[links]\nAB = 50\nBC = 66\nCD = 56\n"
+        + links
+        + '[input]\ncrank = "AB"\nangle = 60\nspeed = "10 rad/s cw"\n'
+    )
 
 
 def test_too_many_centres_to_list_names_the_scene(tmp_path, capsys):
@@ -114,8 +123,7 @@ speed = "100 rpm ccw"
 """
 
 
-def test_a_large_gear_is_drawn_on_a4_at_a_scale_that_holds_its_pitch_circle(tmp_path,
-                                                                              capsys):
+def test_a_large_gear_is_drawn_on_a4_at_a_scale_that_holds_its_pitch_circle(tmp_path, capsys):
     """O2-B (pitch radius 60) meshes with the gear about O1 300 away: its pitch radius is
     240, and the circles span x = -240 to 360 mm, 600 mm. The joints alone set 1 cm =
     25 mm: 28.8 cm, refused on A4. 600 mm in 18 cm: the round scale 1 cm = 50 mm."""
@@ -128,14 +136,18 @@ def test_a_large_gear_is_drawn_on_a4_at_a_scale_that_holds_its_pitch_circle(tmp_
 # ----------------------------------------------------------------- the engine's cycle
 
 
-@pytest.mark.parametrize("old, new, key, words", [
-    ("40.0, 32.0", "1e303, 32.0", "[indicator] pressure", "absurd"),  # 7 GB, then nan
-    ("40.0, 32.0", "1e6, 32.0", "[indicator] pressure", "absurd"),    # 1e11 Pa
-    ('plus_minus = "1%"', "coefficient = 1e-300", "[flywheel] coefficient", "steady"),
-])
+@pytest.mark.parametrize(
+    "old, new, key, words",
+    [
+        ("40.0, 32.0", "1e303, 32.0", "[indicator] pressure", "absurd"),  # 7 GB, then nan
+        ("40.0, 32.0", "1e6, 32.0", "[indicator] pressure", "absurd"),  # 1e11 Pa
+        ('plus_minus = "1%"', "coefficient = 1e-300", "[flywheel] coefficient", "steady"),
+    ],
+)
 @pytest.mark.parametrize("command", [["solve"], ["sweep", "--steps", "8", "--summary"]])
-def test_an_engine_cycle_of_absurd_numbers_is_refused(tmp_path, capsys, old, new, key,
-                                                      words, command):
+def test_an_engine_cycle_of_absurd_numbers_is_refused(
+    tmp_path, capsys, old, new, key, words, command
+):
     path = tmp_path / "engine.toml"
     path.write_text(FLYWHEEL.replace(old, new))
     assert main([command[0], str(path), *command[1:]]) == 2
@@ -144,8 +156,11 @@ def test_an_engine_cycle_of_absurd_numbers_is_refused(tmp_path, capsys, old, new
 
 def test_a_flywheel_on_no_engine_names_its_table_once(tmp_path, capsys):
     path = tmp_path / "s.toml"
-    path.write_text(Path(SEED).read_text().replace(
-        "[answers]", '[flywheel]\nplus_minus = "1%"\nradius = 150\n[answers]', 1))
+    path.write_text(
+        Path(SEED)
+        .read_text()
+        .replace("[answers]", '[flywheel]\nplus_minus = "1%"\nradius = 150\n[answers]', 1)
+    )
     assert main(["solve", str(path)]) == 2
     line = _one_line(capsys, path)
     assert line.count("[flywheel]") == 1 and "engine" in line
@@ -155,6 +170,7 @@ def test_warnings_pass_as_they_come_and_are_never_held(monkeypatch):
     """The command line once recorded every warning until the command ended (a numpy
     warning at each of millions of points held gigabytes)."""
     from polygon_method.cli import _glyphs
+
     seen = []
     monkeypatch.setattr(warnings, "showwarning", lambda *a, **k: seen.append(str(a[0])))
     with _glyphs("solve"):
@@ -162,17 +178,34 @@ def test_warnings_pass_as_they_come_and_are_never_held(monkeypatch):
             warnings.simplefilter("always")
             warnings.warn("first", RuntimeWarning)
             assert seen == ["first"]  # shown at once, not at the end
-            warnings.warn("Glyph 26725 (\\N{CJK UNIFIED IDEOGRAPH-6A5F}) missing from "
-                          "font(s) DejaVu Sans.", UserWarning)
+            warnings.warn(
+                "Glyph 26725 (\\N{CJK UNIFIED IDEOGRAPH-6A5F}) missing from font(s) DejaVu Sans.",
+                UserWarning,
+            )
             assert seen == ["first"]
 
 
 # ----------------------------------------------------------------- generated mutations
 
-_FILES = sorted((ROOT / "worked_problems").glob("*.toml")) + \
-    sorted((ROOT / "tests/textbook").glob("*.toml"))
-_NUMBER = [0, -1, 1e-300, 1e300, float("nan"), float("inf"), True, "5 furlong", [], {}, "",
-           "1e400", "0 rpm", "\uff15\uff10"]
+_FILES = sorted((ROOT / "worked_problems").glob("*.toml")) + sorted(
+    (ROOT / "tests/textbook").glob("*.toml")
+)
+_NUMBER = [
+    0,
+    -1,
+    1e-300,
+    1e300,
+    float("nan"),
+    float("inf"),
+    True,
+    "5 furlong",
+    [],
+    {},
+    "",
+    "1e400",
+    "0 rpm",
+    "\uff15\uff10",
+]
 _TEXT = ["", "nan", "inf", "1e400 mm", "5 furlong", 0, True, [], "0 rpm cw", "\u03a9"]
 _LIST = [[], [1], ["a", "b"], [float("nan"), 0], [1e300, 0], 5]
 
@@ -195,8 +228,9 @@ def _toml(doc) -> str:
     lines = [f"{json.dumps(k)} = {_value(v)}" for k, v in doc.items() if not isinstance(v, dict)]
     for k, v in doc.items():
         if isinstance(v, dict):
-            lines += [f"[{json.dumps(k)}]"] + [f"{json.dumps(a)} = {_value(b)}"
-                                               for a, b in v.items()]
+            lines += [f"[{json.dumps(k)}]"] + [
+                f"{json.dumps(a)} = {_value(b)}" for a, b in v.items()
+            ]
     return "\n".join(lines) + "\n"
 
 
@@ -219,14 +253,21 @@ def _mutations(per_file=4):
         for path, v in rnd.sample(leaves, min(per_file, len(leaves))):
             pool = _LIST if isinstance(v, list) else _TEXT if isinstance(v, str) else _NUMBER
             bad = rnd.choice(pool)
-            out.append(pytest.param(str(f.relative_to(ROOT)), path, bad,
-                                    id=f"{f.parent.name}-{f.stem}-{'.'.join(path)}"))
+            out.append(
+                pytest.param(
+                    str(f.relative_to(ROOT)),
+                    path,
+                    bad,
+                    id=f"{f.parent.name}-{f.stem}-{'.'.join(path)}",
+                )
+            )
     return out
 
 
 @pytest.mark.parametrize("name, path, bad", _mutations())
-def test_a_mutated_scene_is_solved_finitely_or_refused_in_one_line(tmp_path, capsys, name,
-                                                                   path, bad):
+def test_a_mutated_scene_is_solved_finitely_or_refused_in_one_line(
+    tmp_path, capsys, name, path, bad
+):
     doc = tomllib.loads((ROOT / name).read_text(encoding="utf-8"))
     target = doc
     for k in path[:-1]:

@@ -39,8 +39,7 @@ speed = "10 rad/s {sense}"
 
 
 def engine(angle, sense="ccw", through="", assembly="", r=100, l=400):
-    text = ENGINE.format(angle=angle, sense=sense, through=through, assembly=assembly, r=r,
-                         l=l)
+    text = ENGINE.format(angle=angle, sense=sense, through=through, assembly=assembly, r=r, l=l)
     return parse_scene(text.replace("'", '"'))
 
 
@@ -92,12 +91,11 @@ def test_book_words_give_the_angle_worked_out_by_hand(words, want):
 
 
 def test_words_that_name_a_plain_angle_give_exactly_the_plain_angle():
-    """"60 deg right of the vertical" is the plain 30 deg to the last bit (so the two
+    """ "60 deg right of the vertical" is the plain 30 deg to the last bit (so the two
     scenes' answers are identical, not merely close)."""
     assert fourbar("60 deg right of the vertical").input.angle == fourbar("30 deg").input.angle
     assert fourbar("30 deg below the horizontal").input.angle == fourbar("-30").input.angle
-    assert fourbar("30 deg above the horizontal, left").input.angle == \
-        fourbar("150").input.angle
+    assert fourbar("30 deg above the horizontal, left").input.angle == fourbar("150").input.angle
 
 
 def test_plain_angles_are_read_as_before():
@@ -167,8 +165,9 @@ def test_dead_centres_of_an_in_line_engine():
     assert deg(engine("30 deg past the top dead centre")) == pytest.approx(30)
     assert deg(engine("30 deg past the BDC")) == pytest.approx(210)
     # piston on the left: everything turns half a turn
-    assert deg(engine("30 deg past the IDC", assembly='[assembly]\nB = "left"')) == \
-        pytest.approx(210)
+    assert deg(engine("30 deg past the IDC", assembly='[assembly]\nB = "left"')) == pytest.approx(
+        210
+    )
 
 
 def test_the_project_convention_for_the_inner_dead_centre():
@@ -200,17 +199,25 @@ def test_offset_dead_centres_against_the_closed_form(r, l, e, side, sense):
     odc = math.pi - math.asin(e / (l - r))
     if side == "left":
         idc, odc = math.pi - idc, math.pi - odc
-    base = dict(through=f", through = [0, {-e}]", assembly=f'[assembly]\nB = "{side}"',
-                sense=sense, r=r, l=l)
+    base = dict(
+        through=f", through = [0, {-e}]",
+        assembly=f'[assembly]\nB = "{side}"',
+        sense=sense,
+        r=r,
+        l=l,
+    )
     turn = 1 if sense == "ccw" else -1
-    for words, want in (("0 deg past the inner dead centre", idc),
-                        ("0 deg past the outer dead centre", odc),
-                        ("25 deg past the inner dead centre", idc + turn * math.radians(25)),
-                        ("40 deg before the ODC", odc - turn * math.radians(40))):
+    for words, want in (
+        ("0 deg past the inner dead centre", idc),
+        ("0 deg past the outer dead centre", odc),
+        ("25 deg past the inner dead centre", idc + turn * math.radians(25)),
+        ("40 deg before the ODC", odc - turn * math.radians(40)),
+    ):
         sc = engine(words, **base)
         got = sc.input.angle
-        assert math.cos(got - want) == pytest.approx(1, abs=1e-24) and \
-            math.sin(got - want) == pytest.approx(0, abs=1e-12), (words, got, want)
+        assert math.cos(got - want) == pytest.approx(1, abs=1e-24) and math.sin(
+            got - want
+        ) == pytest.approx(0, abs=1e-12), (words, got, want)
         sol = solve(sc)
         if words.startswith("0 deg"):
             vb = math.hypot(*sol.V["B"])
@@ -223,8 +230,10 @@ def test_offset_dead_centres_against_the_closed_form(r, l, e, side, sense):
 
 def test_a_dead_centre_note_says_where_it_is():
     sol = solve(engine("30 deg past the inner dead centre", "cw"))
-    assert sol.notes[0] == ("crank angle: '30 deg past the inner dead centre' = -30 deg from "
-                            "+x (the inner dead centre is at 0 deg, the crank turning cw)")
+    assert sol.notes[0] == (
+        "crank angle: '30 deg past the inner dead centre' = -30 deg from "
+        "+x (the inner dead centre is at 0 deg, the crank turning cw)"
+    )
 
 
 def test_a_rough_position_of_the_piston_settles_its_side():
@@ -266,18 +275,23 @@ B = { force = "1 kN", direction = "180 deg from the line of stroke, ccw" }
     assert deg(sc) == pytest.approx(15)
     assert sc.loads[0].force == pytest.approx((-1000 * u[0], -1000 * u[1]))
     sol = solve(sc)
-    assert any(n.startswith("slider B's path: '30 deg below the horizontal' = -30 deg")
-               for n in sol.notes), sol.notes
+    assert any(
+        n.startswith("slider B's path: '30 deg below the horizontal' = -30 deg") for n in sol.notes
+    ), sol.notes
     assert any("line of stroke is at -30 deg" in n for n in sol.notes), sol.notes
     # the line of stroke is not a path's reference, nor a dead centre
     with pytest.raises(SceneError, match="a slider's path is a line of stroke"):
-        parse_scene(text.replace('"30 deg below the horizontal"', '"10 deg from the line of '
-                                 'stroke, cw"'))
+        parse_scene(
+            text.replace('"30 deg below the horizontal"', '"10 deg from the line of stroke, cw"')
+        )
     with pytest.raises(SceneError, match=r"only \[input\] angle"):
         parse_scene(text.replace('"30 deg below the horizontal"', '"10 deg past the IDC"'))
     with pytest.raises(SceneError, match="does not say to which side"):
-        parse_scene(text.replace('"45 deg from the line of stroke, ccw"',
-                                 '"45 deg from the line of stroke"'))
+        parse_scene(
+            text.replace(
+                '"45 deg from the line of stroke, ccw"', '"45 deg from the line of stroke"'
+            )
+        )
 
 
 # ------------------------------------------------------------------- feet
@@ -316,10 +330,12 @@ def test_a_scene_in_feet_matches_the_same_mechanism_in_si():
     out here: path 3 in below O, piston on the right, so theta = -asin(e / (l + r)) - 45
     deg."""
     from polygon_method import load_scene
+
     ft = solve(load_scene(FEET))
     r, l, e = 0.5 * 0.3048, (4 * 0.3048 + 6 * 0.0254), 3 * 0.0254
     theta = -math.asin(e / (l + r)) - math.radians(45)
-    si = solve(parse_scene(f"""
+    si = solve(
+        parse_scene(f"""
 units = "m"
 [ground]
 O = [0, 0]
@@ -334,7 +350,8 @@ angle = "{theta!r} rad"
 speed = "{300 * 2 * math.pi / 60!r} rad/s cw"
 [loads]
 B = {{ force = [{-2000 * 4.4482216152605!r}, 0] }}
-"""))
+""")
+    )
     for p in "OAB":
         for got, want, scale in ((ft.P, si.P, l), (ft.V, si.V, 1.0), (ft.A, si.A, 10.0)):
             assert got[p] == pytest.approx(want[p], rel=1e-9, abs=1e-12 * scale)
@@ -349,13 +366,17 @@ def test_check_names_the_misread_dead_centre():
     piston speed at that angle (closed form of the offset slider crank, path y = -e:
     x_B = r cos t + sqrt(l^2 - (r sin t + e)^2)) is diagnosed as that slip."""
     from polygon_method.check import check_answers
+
     r, l, e, w = 0.1, 0.4, 0.03, 10.0
     t = math.pi - math.asin(e / (l - r)) + math.radians(30)  # the outer dead centre + 30
     h = r * math.sin(t) + e
     v = abs(w * (-r * math.sin(t) - h * r * math.cos(t) / math.sqrt(l * l - h * h)))
-    sc = engine("30 deg past the inner dead centre", through=", through = [0, -30]",
-                assembly=f'[assembly]\nB = "right"\n[answers]\nv_B = "{v:.6g} m/s"')
-    verdict, = check_answers(solve(sc))
+    sc = engine(
+        "30 deg past the inner dead centre",
+        through=", through = [0, -30]",
+        assembly=f'[assembly]\nB = "right"\n[answers]\nv_B = "{v:.6g} m/s"',
+    )
+    (verdict,) = check_answers(solve(sc))
     assert not verdict.ok
     assert "other dead centre" in str(verdict), verdict
 
@@ -367,19 +388,30 @@ def _offset_speed(t, r=0.1, l=0.4, e=0.03, w=10.0):
     return abs(w * (-r * math.sin(t) - h * r * math.cos(t) / math.sqrt(l * l - h * h)))
 
 
-@pytest.mark.parametrize("words,e,slip_deg,code_words", [
-    ("30 deg below the horizontal", 0.03, 30, "above the horizontal instead of below"),
-    ("60 deg right of the vertical", 0.03, 60, "from the horizontal instead of the vertical"),
-    ("150 deg before the IDC", 0.08, -math.degrees(math.asin(0.08 / 0.5)) + 150,
-     "against the crank's rotation"),
-])
+@pytest.mark.parametrize(
+    "words,e,slip_deg,code_words",
+    [
+        ("30 deg below the horizontal", 0.03, 30, "above the horizontal instead of below"),
+        ("60 deg right of the vertical", 0.03, 60, "from the horizontal instead of the vertical"),
+        (
+            "150 deg before the IDC",
+            0.08,
+            -math.degrees(math.asin(0.08 / 0.5)) + 150,
+            "against the crank's rotation",
+        ),
+    ],
+)
 def test_check_names_the_other_misreadings(words, e, slip_deg, code_words):
     from polygon_method.check import check_answers
+
     v = _offset_speed(math.radians(slip_deg), e=e)
     through = f", through = [0, {-e * 1000:g}]"
-    assert abs(v - _offset_speed(solve(engine(words, through=through)).scene.input.angle,
-                                 e=e)) > 0.05 * v  # a slip worth telling
-    sc = engine(words, through=through,
-                assembly=f'[assembly]\nB = "right"\n[answers]\nv_B = "{v:.6g} m/s"')
-    verdict, = check_answers(solve(sc))
+    assert (
+        abs(v - _offset_speed(solve(engine(words, through=through)).scene.input.angle, e=e))
+        > 0.05 * v
+    )  # a slip worth telling
+    sc = engine(
+        words, through=through, assembly=f'[assembly]\nB = "right"\n[answers]\nv_B = "{v:.6g} m/s"'
+    )
+    (verdict,) = check_answers(solve(sc))
     assert not verdict.ok and code_words in str(verdict), verdict

@@ -15,8 +15,13 @@ import pytest
 
 from polygon_method.common import errors
 from polygon_method.cli import main
-from polygon_method.common.errors import (AssemblyError, MobilityError, PolygonMethodError,
-                                   SceneError, SingularStepError)
+from polygon_method.common.errors import (
+    AssemblyError,
+    MobilityError,
+    PolygonMethodError,
+    SceneError,
+    SingularStepError,
+)
 from polygon_method.scene import load_scene, parse_scene
 from polygon_method.motion.solution import solve
 
@@ -41,8 +46,12 @@ def test_corpus_is_large_and_every_scene_says_what_it_expects():
     for path in SCENES:
         exp = _expectation(path)
         assert set(exp) == {"expect", "where", "error"}, path.name
-        assert exp["error"] in {"SceneError", "MobilityError", "AssemblyError",
-                                "SingularStepError"}, path.name
+        assert exp["error"] in {
+            "SceneError",
+            "MobilityError",
+            "AssemblyError",
+            "SingularStepError",
+        }, path.name
     assert set(SIDECAR) <= {p.name for p in SCENES}
 
 
@@ -116,8 +125,14 @@ def test_api_raises_one_family_with_the_location(path):
     assert str(path) in exc.one_line() and "\n" not in exc.one_line()
 
 
-COMMANDS = [["plan"], ["steps"], ["check"], ["linkage"], ["sweep", "--csv", "OUT.csv"],
-            ["solve", "--json"]]
+COMMANDS = [
+    ["plan"],
+    ["steps"],
+    ["check"],
+    ["linkage"],
+    ["sweep", "--csv", "OUT.csv"],
+    ["solve", "--json"],
+]
 
 
 @pytest.mark.parametrize("path", SCENES, ids=IDS)
@@ -132,8 +147,7 @@ def test_every_command_refuses_cleanly(path, tmp_path, capsys):
     for i, cmd in enumerate(COMMANDS):
         where = tmp_path / str(i)
         where.mkdir()
-        argv = [cmd[0], str(path)] + [str(where / a) if a == "OUT.csv" else a
-                                      for a in cmd[1:]]
+        argv = [cmd[0], str(path)] + [str(where / a) if a == "OUT.csv" else a for a in cmd[1:]]
         code = main(argv)
         out, err = capsys.readouterr()
         if in_variants:
@@ -170,12 +184,15 @@ def test_step_errors_carry_the_step_and_no_key():
     assert info.value.step.startswith("step 2 ")
 
 
-@pytest.mark.parametrize("argv, fragment", [
-    (["solve", "no/such/scene.toml"], "no such file"),
-    (["solve", "."], "is a directory"),
-    (["plan", str(HERE / "mobility_under_fivebar.toml")], "under-constrained"),
-    (["plan", str(HERE / "unit_typo_rmp.toml")], "did you mean 'rpm'"),
-])
+@pytest.mark.parametrize(
+    "argv, fragment",
+    [
+        (["solve", "no/such/scene.toml"], "no such file"),
+        (["solve", "."], "is a directory"),
+        (["plan", str(HERE / "mobility_under_fivebar.toml")], "under-constrained"),
+        (["plan", str(HERE / "unit_typo_rmp.toml")], "did you mean 'rpm'"),
+    ],
+)
 def test_other_commands_and_missing_files(argv, fragment, capsys):
     assert main(argv) == 2
     out, err = capsys.readouterr()

@@ -15,7 +15,8 @@ ROOT = Path(__file__).resolve().parent.parent
 
 def load_script():
     spec = importlib.util.spec_from_file_location(
-        "accuracy_speed", ROOT / "benchmarks" / "accuracy_speed.py")
+        "accuracy_speed", ROOT / "benchmarks" / "accuracy_speed.py"
+    )
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)
     return mod
@@ -52,13 +53,13 @@ def test_the_force_benchmark_runs_and_its_checks_hold(capsys):
     vectorised sweep's forces are the one-instant ones (its own checks, which raise); every
     figure it prints is a positive time. Nothing about how long anything took."""
     spec = importlib.util.spec_from_file_location(
-        "forces_speed", ROOT / "benchmarks" / "forces_speed.py")
+        "forces_speed", ROOT / "benchmarks" / "forces_speed.py"
+    )
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)
     assert mod.main(["--smoke", "--json"]) == 0
     out = capsys.readouterr().out
-    res = json.loads(out[out.index("{"):])
+    res = json.loads(out[out.index("{") :])
     assert set(res["one"]) == set(mod.NAMES) == set(res["sweep"]) and res["angles"] == 360
     assert "floor" in res["one"]["fourbar_forces"]
-    assert all(t > 0 for r in (*res["one"].values(), *res["sweep"].values())
-               for t in r.values())
+    assert all(t > 0 for r in (*res["one"].values(), *res["sweep"].values()) for t in r.values())

@@ -80,8 +80,10 @@ def closed_form(L, d, s, vs, acc):
         "V": {"A": vel(L, 0), "B": vel(0, L), "C": vel(a, b)},
         "A": {"A": accel(L, 0), "B": accel(0, L), "C": accel(a, b)},
         # the rod A -> B points at pi - t: omega = -t', alpha = -t''
-        "omega": -td, "alpha": -tdd,
-        "vs_B": L * ct * td, "as_B": -L * st * td * td + L * ct * tdd,
+        "omega": -td,
+        "alpha": -tdd,
+        "vs_B": L * ct * td,
+        "as_B": -L * st * td * td + L * ct * tdd,
     }
 
 
@@ -118,8 +120,7 @@ def test_solve_json_matches_the_closed_form(tmp_path, capsys):
     assert main(["solve", "--json", str(f)]) == 0
     d = json.loads(capsys.readouterr().out)
     cf = closed_form(*case)
-    assert d["input"] == {"block": "A", "s": 0.3, "vs": 2.0, "as": -5.0,
-                          "direction": [1.0, 0.0]}
+    assert d["input"] == {"block": "A", "s": 0.3, "vs": 2.0, "as": -5.0, "direction": [1.0, 0.0]}
     assert d["steps"][0]["kind"] == "block"
     for p in "BC":
         pt = d["points"][p]
@@ -178,8 +179,10 @@ def test_sweep_csv_and_summary(tmp_path, capsys):
     f = tmp_path / "t.toml"
     f.write_text(trammel(500, 700, 300, 2.0, -5.0))
     out = tmp_path / "s.csv"
-    assert main(["sweep", str(f), "--from", "-400", "--to", "400", "--step", "100",
-                 "--csv", str(out)]) == 0
+    assert (
+        main(["sweep", str(f), "--from", "-400", "--to", "400", "--step", "100", "--csv", str(out)])
+        == 0
+    )
     rows = out.read_text().splitlines()
     assert rows[0].startswith("s_A [m],")
     s = [float(r.split(",")[0]) for r in rows[1:]]
@@ -188,8 +191,9 @@ def test_sweep_csv_and_summary(tmp_path, capsys):
     i = head.index("vy_B [m/s]")
     for r in rows[1:]:  # y_B' = -x_A x_A' / y_B
         x = float(r.split(",")[0])
-        assert float(r.split(",")[i]) == pytest.approx(-x * 2.0 / math.sqrt(0.25 - x * x),
-                                                       rel=1e-9, abs=1e-12)
+        assert float(r.split(",")[i]) == pytest.approx(
+            -x * 2.0 / math.sqrt(0.25 - x * x), rel=1e-9, abs=1e-12
+        )
     capsys.readouterr()
     assert main(["sweep", str(f), "--steps", "100"]) == 0
     text = capsys.readouterr().out
@@ -200,8 +204,7 @@ def test_sweep_csv_and_summary(tmp_path, capsys):
 def test_stated_stroke_bounds_the_sweep():
     sc = parse_scene(trammel(500, 700, 300, 2.0, -5.0, "stroke = [-200, 400]"))
     res = sweep(sc)
-    assert float(res.theta[0]) == pytest.approx(-0.2) and float(res.theta[-1]) == \
-        pytest.approx(0.4)
+    assert float(res.theta[0]) == pytest.approx(-0.2) and float(res.theta[-1]) == pytest.approx(0.4)
     assert res.left_out == 0
 
 
@@ -283,6 +286,7 @@ def test_velocities_are_the_derivatives_of_the_positions(text):
 
 def test_centres_give_the_rod_its_omega(tmp_path, capsys):
     from polygon_method.solver.centres import locate
+
     case = CASES[0]
     sol = solve(parse_scene(trammel(*case)))
     ic = locate(sol)
@@ -294,6 +298,7 @@ def test_centres_give_the_rod_its_omega(tmp_path, capsys):
 
 def test_the_worked_problem_checks():
     from polygon_method.check import check_answers
+
     sc = load_scene("worked_problems/ellipse_trammel.toml")
     verdicts = check_answers(solve(sc), sc.answers, sc.tolerance)
     assert len(verdicts) == 7 and all(v.ok for v in verdicts), verdicts
@@ -304,9 +309,11 @@ def test_the_worked_problem_checks():
 
 def test_every_view_takes_a_block_driver(tmp_path, capsys):
     f = tmp_path / "t.toml"
-    f.write_text(trammel(500, 700, 300, 2.0, -5.0)
-                 + '[loads]\nB = { force = [0, -100] }\n[answers]\nomega_AB = "5 rad/s ccw"\n'
-                 + '[variants]\nAB = { from = 480, to = 520, step = 10 }\n')
+    f.write_text(
+        trammel(500, 700, 300, 2.0, -5.0)
+        + '[loads]\nB = { force = [0, -100] }\n[answers]\nomega_AB = "5 rad/s ccw"\n'
+        + "[variants]\nAB = { from = 480, to = 520, step = 10 }\n"
+    )
     every_view(f, tmp_path, more=[["variants", "--count", "2", "-o", str(tmp_path / "v")]])
     out = capsys.readouterr().out
     # the input force along the guide: F vs_A + F_B . v_B = 0
@@ -325,7 +332,10 @@ BAD = [
     ('block = "A"\nvs_A = "2 m/s up"\ns_A = 300', "perpendicular"),
     ('block = "A"\nvs_A = "2 m/s"\ns_A = 300\nstroke = [-100, 200]', "outside its stroke"),
     ('block = "A"\nvs_A = "2 m/s"\ns_A = 300\nstroke = [400, 200]', "less than"),
-    ('block = "A"\nvs_A = "2 m/s"\ns_A = 600', "can be placed only from s_A = about -500 to 500 mm"),
+    (
+        'block = "A"\nvs_A = "2 m/s"\ns_A = 600',
+        "can be placed only from s_A = about -500 to 500 mm",
+    ),
 ]
 
 
@@ -342,8 +352,10 @@ def test_bad_block_input_one_line(tmp_path, capsys, given, words):
 
 def test_a_torque_answer_is_refused(tmp_path, capsys):
     f = tmp_path / "t.toml"
-    f.write_text(trammel(500, 700, 300, 2.0, -5.0)
-                 + '[loads]\nB = { force = [0, -100] }\n[answers]\ntorque = "3 N m"\n')
+    f.write_text(
+        trammel(500, 700, 300, 2.0, -5.0)
+        + '[loads]\nB = { force = [0, -100] }\n[answers]\ntorque = "3 N m"\n'
+    )
     assert main(["check", str(f)]) == 2
     err = one_line(capsys)
     assert "a force along its guide" in err
@@ -366,8 +378,10 @@ def test_linkage_refuses_in_one_line(tmp_path, capsys):
 
 def test_variants_refuse_a_crank_angle(tmp_path, capsys):
     f = tmp_path / "t.toml"
-    f.write_text(trammel(500, 700, 300, 2.0, -5.0)
-                 + "[variants]\nangle = { from = 10, to = 30, step = 10 }\n")
+    f.write_text(
+        trammel(500, 700, 300, 2.0, -5.0)
+        + "[variants]\nangle = { from = 10, to = 30, step = 10 }\n"
+    )
     assert main(["variants", str(f), "-o", str(tmp_path / "v")]) == 2
     err = one_line(capsys)
     assert "no crank angle to vary" in err
@@ -449,10 +463,14 @@ def test_sweep_through_a_change_point_keeps_every_place_within_its_bound(R, e, v
     Rm, em = R / 1000, e / 1000
     s0 = -0.75 * R / 1000  # the scene's instant, on the smooth branch
     bx, by, _ = _change_point_b(Rm, em, s0)
-    sc = parse_scene(CHANGE.format(e=e, L=R + e, R=R, s=s0 * 1000, bx=float(bx) * 1000,
-                                   by=float(by) * 1000, vs=vs, acc=acc))
-    places = np.array([-0.3, -1e-2, -1e-3, -3e-4, -1e-5, -1e-8, 1e-8, 1e-5, 3e-4, 1e-3,
-                       1e-2, 0.3]) * Rm
+    sc = parse_scene(
+        CHANGE.format(
+            e=e, L=R + e, R=R, s=s0 * 1000, bx=float(bx) * 1000, by=float(by) * 1000, vs=vs, acc=acc
+        )
+    )
+    places = (
+        np.array([-0.3, -1e-2, -1e-3, -3e-4, -1e-5, -1e-8, 1e-8, 1e-5, 3e-4, 1e-3, 1e-2, 0.3]) * Rm
+    )
     res = sweep(sc, places)
     cps = res.domain.change_points
     assert len(cps) == 1 and cps[0].followed
@@ -472,9 +490,10 @@ def test_sweep_through_a_change_point_keeps_every_place_within_its_bound(R, e, v
         want_a = tuple(dd * vs * vs + d * acc for d, dd in zip(d1, d2))
         want_w = mpmath.diff(psi, s, 1) * vs  # OB turns with psi
         for got, want, bound, kind in (
-                (res.P["B"], want_p, eb.P["B"], "position"),
-                (res.V["B"], want_v, eb.V["B"], "velocity"),
-                (res.A["B"], want_a, eb.A["B"], "acceleration")):
+            (res.P["B"], want_p, eb.P["B"], "position"),
+            (res.V["B"], want_v, eb.V["B"], "velocity"),
+            (res.A["B"], want_a, eb.A["B"], "acceleration"),
+        ):
             err = math.hypot(float(got[0][i] - want[0]), float(got[1][i] - want[1]))
             b = float(np.broadcast_to(bound, (len(res),))[i])
             assert err <= b * float(size[kind][i]), (kind, s, err, b)
@@ -488,9 +507,10 @@ def test_the_block_states_the_scale_of_its_place():
     shortest link pinned to it, and no more than a stated stroke over 2 pi."""
     sc = parse_scene(trammel(500, 700, 300, 2.0, -5.0))
     assert compile_plan(sc).steps[0].parameter_scale(sc) == 0.5
-    sc = parse_scene(trammel(500, 700, 300, 2.0, -5.0, 'stroke = [-100, 400]'))
-    assert math.isclose(compile_plan(sc).steps[0].parameter_scale(sc), 0.5 / (2 * math.pi),
-                        rel_tol=1e-15)
+    sc = parse_scene(trammel(500, 700, 300, 2.0, -5.0, "stroke = [-100, 400]"))
+    assert math.isclose(
+        compile_plan(sc).steps[0].parameter_scale(sc), 0.5 / (2 * math.pi), rel_tol=1e-15
+    )
 
 
 # ----- a block on a moving guide as the driver: refused in one located line, saying why
@@ -508,17 +528,28 @@ B = {{ along = "OA" }}
 """
 
 
-@pytest.mark.parametrize("given, key, words", [
-    ('block = "B"\ns_B = 0.5\nvs_B = "1.5 m/s"', "[sliders] B",
-     "mobility 2 (Gruebler: 3(n-1) - 2j): the collar B's sliding along OA sets one motion; "
-     "the rod's turning needs one more relation"),
-    ('crank = "OA"\nangle = 30\nspeed = "2 rad/s ccw"', "[sliders] B",
-     "mobility 2 (Gruebler: 3(n-1) - 2j): the mechanism is under-constrained; the block B "
-     "slides freely along its guide"),
-], ids=["as the block", "beside the crank"])
-def test_a_block_driven_along_a_turning_rod_is_refused_in_one_line(tmp_path, capsys, given,
-                                                                   key, words):
-    """"The collar slides along the rotating rod at 1.5 m/s relative to it", with nothing
+@pytest.mark.parametrize(
+    "given, key, words",
+    [
+        (
+            'block = "B"\ns_B = 0.5\nvs_B = "1.5 m/s"',
+            "[sliders] B",
+            "mobility 2 (Gruebler: 3(n-1) - 2j): the collar B's sliding along OA sets one motion; "
+            "the rod's turning needs one more relation",
+        ),
+        (
+            'crank = "OA"\nangle = 30\nspeed = "2 rad/s ccw"',
+            "[sliders] B",
+            "mobility 2 (Gruebler: 3(n-1) - 2j): the mechanism is under-constrained; the block B "
+            "slides freely along its guide",
+        ),
+    ],
+    ids=["as the block", "beside the crank"],
+)
+def test_a_block_driven_along_a_turning_rod_is_refused_in_one_line(
+    tmp_path, capsys, given, key, words
+):
+    """ "The collar slides along the rotating rod at 1.5 m/s relative to it", with nothing
     else pinned to the collar: the collar's sliding alone, or the rod's turning alone, is
     one input of a mechanism of two (a free block on a turning rod is no over-constrained
     chain: its mobility is 2, n = 3 bodies, j = 2 joints); said so where the scene states

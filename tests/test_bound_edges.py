@@ -123,7 +123,7 @@ def test_flat_triangle_height_is_not_cancelled():
 
 
 def test_a_path_a_hair_off_a_right_angle_is_not_read_as_it():
-    """"90.0000000001 deg" is that angle, not 90: the slider's path leans by it, and the
+    """ "90.0000000001 deg" is that angle, not 90: the slider's path leans by it, and the
     velocity near the step's dead centre follows (the reference reads the decimals)."""
     text = """[ground]
 O = [0, 0]

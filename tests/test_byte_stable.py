@@ -26,10 +26,8 @@ WRITERS = [
     ("sweep.png", ["sweep", "{scene}", "--steps", "24", "--plot", "{out}.png"], FOURBAR),
     ("sweep.pdf", ["sweep", "{scene}", "--steps", "24", "--plot", "{out}.pdf"], FOURBAR),
     ("engine-sweep.svg", ["sweep", "{scene}", "--steps", "24", "--plot", "{out}.svg"], ENGINE),
-    ("animate.svg", ["draw", "{scene}", "--animate", "--frames", "4", "-o", "{out}.svg"],
-     FOURBAR),
-    ("animate.gif", ["draw", "{scene}", "--animate", "--frames", "4", "-o", "{out}.gif"],
-     FOURBAR),
+    ("animate.svg", ["draw", "{scene}", "--animate", "--frames", "4", "-o", "{out}.svg"], FOURBAR),
+    ("animate.gif", ["draw", "{scene}", "--animate", "--frames", "4", "-o", "{out}.gif"], FOURBAR),
     ("page.html", ["page", "{scene}", "--frames", "4", "-o", "{out}.html"], FOURBAR),
     ("variants", ["variants", "{scene}", "--count", "2", "--pdf", "-o", "{out}"], FOURBAR),
 ]
@@ -44,8 +42,9 @@ def _run(tmp_path, run, args, scene):
 
 
 @pytest.mark.parametrize("name,args,scene", WRITERS, ids=[w[0] for w in WRITERS])
-def test_every_file_written_is_the_same_byte_for_byte_run_to_run(tmp_path, monkeypatch,
-                                                                  capsys, name, args, scene):
+def test_every_file_written_is_the_same_byte_for_byte_run_to_run(
+    tmp_path, monkeypatch, capsys, name, args, scene
+):
     monkeypatch.delenv("SOURCE_DATE_EPOCH", raising=False)  # matplotlib's fixed clock
     first, second = (_run(tmp_path, k, args, scene) for k in (1, 2))
     capsys.readouterr()

@@ -60,7 +60,8 @@ def agree(sol, tol=1e-9):
         if c.point is not None:
             a, b = _v(fi, c.point), _v(fj, c.point)
             assert math.hypot(a[0] - b[0], a[1] - b[1]) <= tol * vmax * max(
-                1.0, math.hypot(*c.point) / L), (c.label, a, b)
+                1.0, math.hypot(*c.point) / L
+            ), (c.label, a, b)
         else:
             assert abs(fi[2] - fj[2]) <= tol * wmax, c.label
             a, b = _v(fi, (0.0, 0.0)), _v(fj, (0.0, 0.0))
@@ -76,8 +77,10 @@ def agree(sol, tol=1e-9):
                 if len(fin) == 3:
                     (x1, y1), (x2, y2), (x3, y3) = fin
                     area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
-                    assert abs(area) <= 1e-7 * L * L * max(
-                        1.0, max(math.hypot(*p) for p in fin) / L) ** 2
+                    assert (
+                        abs(area)
+                        <= 1e-7 * L * L * max(1.0, max(math.hypot(*p) for p in fin) / L) ** 2
+                    )
     # the velocities the centres give
     for k, name in enumerate(ic.bodies, 1):
         assert abs(ic.omega(k) - _field(sol, name)[2]) <= tol * wmax, name
@@ -98,15 +101,22 @@ def test_worked_problems_agree_with_the_polygon(path):
 
 
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(which=st.sampled_from(WORKED), angle=st.floats(0.0, 360.0),
-       scale=st.lists(st.floats(0.85, 1.15), min_size=12, max_size=12))
+@given(
+    which=st.sampled_from(WORKED),
+    angle=st.floats(0.0, 360.0),
+    scale=st.lists(st.floats(0.85, 1.15), min_size=12, max_size=12),
+)
 def test_random_mechanisms_of_every_kind_agree(which, angle, scale):
     sc = load_scene(which)
-    links = tuple(dataclasses.replace(lk, length=lk.length * scale[k % 12])
-                  if not (lk.p in sc.ground and lk.q in sc.ground) else lk
-                  for k, lk in enumerate(sc.links))
-    sc = dataclasses.replace(sc, links=links, assembly={},
-                             input=dataclasses.replace(sc.input, angle=math.radians(angle)))
+    links = tuple(
+        dataclasses.replace(lk, length=lk.length * scale[k % 12])
+        if not (lk.p in sc.ground and lk.q in sc.ground)
+        else lk
+        for k, lk in enumerate(sc.links)
+    )
+    sc = dataclasses.replace(
+        sc, links=links, assembly={}, input=dataclasses.replace(sc.input, angle=math.radians(angle))
+    )
     try:
         sol = solve(sc)
         agree(sol)
@@ -127,7 +137,9 @@ def test_a_translating_coupler_has_its_centre_at_infinity():
     """A parallelogram's coupler translates: I13 is at infinity (parallel lines), given as a
     direction, and omega_3 is exactly 0."""
     from polygon_method import parse_scene
-    sol = solve(parse_scene("""
+
+    sol = solve(
+        parse_scene("""
     [ground]
     A = [0, 0]
     D = [100, 0]
@@ -141,7 +153,8 @@ def test_a_translating_coupler_has_its_centre_at_infinity():
     crank = "AB"
     angle = 70
     speed = "10 rad/s ccw"
-    """))
+    """)
+    )
     ic = agree(sol)
     c = ic.centre(1, 3)
     assert c.at_infinity and not c.primary
@@ -160,30 +173,44 @@ def test_the_command_and_the_json(capsys):
         assert ("position" in c) != ("direction" in c)
 
 
-@pytest.mark.parametrize("name", ["fourbar_image_points", "ellipse_trammel",
-                                  "rolling_wheel_driver"])
+@pytest.mark.parametrize(
+    "name", ["fourbar_image_points", "ellipse_trammel", "rolling_wheel_driver"]
+)
 def test_the_table_names_body_2_as_the_scene_drives_it(name, capsys, tmp_path):
     """Body 2 is what the scene's [input] drives (read here from the file itself): the crank,
     a driving block, a driving wheel; never "the crank" for a block or a wheel."""
     import tomllib
+
     path = ROOT / "worked_problems" / f"{name}.toml"
     inp = tomllib.loads(path.read_text())["input"]
-    want = ("the crank" if "crank" in inp else f"the driving block {inp['block']}"
-            if "block" in inp else f"the driving wheel {inp['wheel']}")
+    want = (
+        "the crank"
+        if "crank" in inp
+        else f"the driving block {inp['block']}"
+        if "block" in inp
+        else f"the driving wheel {inp['wheel']}"
+    )
     assert main(["centres", str(path)]) == 0
     out = capsys.readouterr().out.splitlines()
     assert f"Links (the ground is 1, {want} 2):" in out
     body2 = out[out.index(f"Links (the ground is 1, {want} 2):") + 2].split(maxsplit=1)
-    assert body2 == ["2", inp["crank"] if "crank" in inp else f"block {inp['block']}"
-                     if "block" in inp else inp["wheel"]]
+    assert body2 == [
+        "2",
+        inp["crank"]
+        if "crank" in inp
+        else f"block {inp['block']}"
+        if "block" in inp
+        else inp["wheel"],
+    ]
     answers = tmp_path / "a.toml"  # a centre past the bodies: the same numbering named
     answers.write_text("[answers]\nI_19 = [0, 0]\n")
     assert main(["check", str(path), str(answers)]) == 2
     assert f"(ground 1, {want} 2)" in capsys.readouterr().err
 
 
-@pytest.mark.parametrize("name", ["fourbar_image_points", "crank_slotted_lever",
-                                  "six_link_second_slider"])
+@pytest.mark.parametrize(
+    "name", ["fourbar_image_points", "crank_slotted_lever", "six_link_second_slider"]
+)
 def test_the_centres_drawing_marks_every_centre(name):
     from polygon_method.draw import render
 
@@ -200,6 +227,7 @@ def test_the_centres_drawing_marks_every_centre(name):
 def _check(text_answers):
     from polygon_method.check import check_answers
     from polygon_method.scene import parse_answers
+
     sc = load_scene(ROOT / "worked_problems" / "fourbar_image_points.toml")
     sol = solve(sc)
     tol, answers = parse_answers(text_answers, sc)
@@ -215,16 +243,22 @@ def test_centre_answers_are_checked_against_the_centres():
     assert not vs[0].ok and vs[0].mistake == "another_centre" and "I24" in vs[0].diagnosis
     sol, vs = _check("[answers]\nI_ground_BC = [76.0, 131.5]\nI_AB_CD = [-213.6, 0]\n")
     assert [v.ok for v in vs] == [True, True]
-    sol, vs = _check("[answers]\ntolerance = \"40 %\"\nI_13 = [100, 150]\n")
+    sol, vs = _check('[answers]\ntolerance = "40 %"\nI_13 = [100, 150]\n')
     assert vs[0].ok and "stated" in vs[0].rule
 
 
-@pytest.mark.parametrize("line, words", [("I_11 = [0, 0]", "two different link numbers"),
-                                         ("I_1x = [0, 0]", "two different link numbers"),
-                                         ("I_13 = 5", "position [x, y]"),
-                                         ("I_13 = [1, \"a\"]", "position [x, y]")])
+@pytest.mark.parametrize(
+    "line, words",
+    [
+        ("I_11 = [0, 0]", "two different link numbers"),
+        ("I_1x = [0, 0]", "two different link numbers"),
+        ("I_13 = 5", "position [x, y]"),
+        ('I_13 = [1, "a"]', "position [x, y]"),
+    ],
+)
 def test_bad_centre_answers_are_one_clear_error(line, words):
     from polygon_method import SceneError
+
     with pytest.raises(SceneError, match=re.escape(words)):
         _check(f"[answers]\n{line}\n")
 
@@ -232,8 +266,9 @@ def test_bad_centre_answers_are_one_clear_error(line, words):
 def test_a_centre_of_a_link_that_is_not_there(capsys, tmp_path):
     answers = tmp_path / "a.toml"
     answers.write_text("[answers]\nI_15 = [0, 0]\n")
-    code = main(["check", str(ROOT / "worked_problems" / "fourbar_image_points.toml"),
-                 str(answers)])
+    code = main(
+        ["check", str(ROOT / "worked_problems" / "fourbar_image_points.toml"), str(answers)]
+    )
     err = capsys.readouterr().err
     assert code == 2 and "there are 4 links" in err and len(err.strip().splitlines()) == 1
 
@@ -248,8 +283,10 @@ def test_centres_labelled_as_the_course_writes_them(capsys, tmp_path):
     out = capsys.readouterr().out
     assert "  13   (" in out and "I13" not in out
     svg = tmp_path / "c.svg"
-    assert main(["draw", str(path), "--diagram", "centres", "--centre-labels", "13", "-o",
-                 str(svg)]) == 0
+    assert (
+        main(["draw", str(path), "--diagram", "centres", "--centre-labels", "13", "-o", str(svg)])
+        == 0
+    )
     text = svg.read_text()
     assert 'id="centre-13"' in text and 'id="centre-I13"' not in text
 
@@ -258,6 +295,7 @@ def test_a_centre_too_far_to_locate_is_one_line_that_says_what_still_works(tmp_p
     """The Watt six-bar at 95 deg: I46's lines cross at 0.018 deg. The refusal names the
     centre and its lines, and says the polygons still solve the position, which they do."""
     from polygon_method.cli import main
+
     text = (Path(__file__).parent / "textbook" / "watt_six_bar.toml").read_text()
     scene = tmp_path / "w.toml"
     scene.write_text(re.sub(r"(?m)^angle = .*$", "angle = 95", text))

@@ -18,10 +18,12 @@ from test_draw import CM, SVGNS, Svg
 from test_paper import _check_page, _said
 
 ROOT = Path(__file__).resolve().parents[1]
-COMPACT = [ROOT / "worked_problems" / "whitworth.toml",
-           ROOT / "worked_problems" / "class3_six_bar.toml",
-           ROOT / "tests" / "textbook" / "stephenson_six_bar.toml",
-           ROOT / "tests" / "textbook" / "watt_six_bar.toml"]
+COMPACT = [
+    ROOT / "worked_problems" / "whitworth.toml",
+    ROOT / "worked_problems" / "class3_six_bar.toml",
+    ROOT / "tests" / "textbook" / "stephenson_six_bar.toml",
+    ROOT / "tests" / "textbook" / "watt_six_bar.toml",
+]
 
 _SHEETS = {}
 
@@ -37,17 +39,20 @@ def _solids(svg):
     """The links, blocks, cylinders, brackets (as areas) and hatches (as lines) drawn."""
     out = []
     for gid, g in svg.groups.items():
-        if gid.startswith(("link-", "block-", "cylinder-", "yoke-", "slot-")) or \
-                re.fullmatch(r"ground-[^-]+", gid):
+        if gid.startswith(("link-", "block-", "cylinder-", "yoke-", "slot-")) or re.fullmatch(
+            r"ground-[^-]+", gid
+        ):
             for p in g.iter(SVGNS + "path"):
-                pts = [(float(x), float(y)) for x, y in
-                       re.findall(r"([-\d.]+) ([-\d.]+)", p.get("d"))]
+                pts = [
+                    (float(x), float(y)) for x, y in re.findall(r"([-\d.]+) ([-\d.]+)", p.get("d"))
+                ]
                 if len(pts) >= 3:
                     out.append((gid, Polygon(pts).buffer(0)))
         elif gid.endswith("-hatch"):
             for p in g.iter(SVGNS + "path"):
-                pts = [(float(x), float(y)) for x, y in
-                       re.findall(r"([-\d.]+) ([-\d.]+)", p.get("d"))]
+                pts = [
+                    (float(x), float(y)) for x, y in re.findall(r"([-\d.]+) ([-\d.]+)", p.get("d"))
+                ]
                 for a, b in zip(pts[0::2], pts[1::2]):
                     out.append((gid, LineString([a, b]).buffer(0.3)))
     return out
@@ -60,13 +65,16 @@ def test_centre_labels_overlap_neither_each_other_nor_a_link_nor_a_hatch(path):
     svg = Svg(datas[0])
     assert "panel-centres" in "".join(svg.groups)
     _check_page(svg, pages[0], "A4")
-    labels = {gid: svg.text_box(gid) for gid in svg.groups
-              if gid.startswith("label-") and svg.text_box(gid) is not None}
+    labels = {
+        gid: svg.text_box(gid)
+        for gid in svg.groups
+        if gid.startswith("label-") and svg.text_box(gid) is not None
+    }
     names = sorted(labels)
     centres = [n for n in names if re.fullmatch(r"label-I\d+", n)]
     assert len(centres) == locate(sol, "I").n * (locate(sol, "I").n - 1) // 2
     for i, a in enumerate(names):
-        for b in names[i + 1:]:
+        for b in names[i + 1 :]:
             assert not labels[a].intersects(labels[b]), f"{a} and {b} overlap"
     solids = _solids(svg)
     assert sum(1 for gid, _ in solids if gid.startswith("link-")) == len(sol.scene.links)
@@ -106,18 +114,19 @@ def test_a_centre_off_the_sheet_says_how_far_and_which_way():
                 assert min((drawn - along) % 180, 180 - (drawn - along) % 180) < 0.2
                 infinite += 1
                 continue
-            m = re.fullmatch(rf"{c.label}:([\d.]+){sc.units}from{sc.input.pivot}"
-                             rf"at([\d.]+)\u00b0", said)
+            m = re.fullmatch(
+                rf"{c.label}:([\d.]+){sc.units}from{sc.input.pivot}"
+                rf"at([\d.]+)\u00b0",
+                said,
+            )
             assert m, said
             dist = math.dist(c.point, pivot) / sc.length_unit
-            angle = math.degrees(math.atan2(c.point[1] - pivot[1],
-                                            c.point[0] - pivot[0])) % 360
+            angle = math.degrees(math.atan2(c.point[1] - pivot[1], c.point[0] - pivot[0])) % 360
             assert float(m.group(1)) == pytest.approx(dist, rel=6e-4)
             assert float(m.group(2)) == pytest.approx(angle, abs=0.051)
             assert min((drawn - angle) % 360, 360 - (drawn - angle) % 360) < 0.2
             # the centre is truly off the sheet: beyond the arrow's tip
-            assert math.dist(c.point, pivot) / used_per_cm(svg, sol) > \
-                math.dist(tail, tip) / CM
+            assert math.dist(c.point, pivot) / used_per_cm(svg, sol) > math.dist(tail, tip) / CM
             far += 1
     assert far >= 1 and infinite >= 2
 
@@ -125,6 +134,7 @@ def test_a_centre_off_the_sheet_says_how_far_and_which_way():
 def used_per_cm(svg, sol):
     """The centres diagram's scale, read from its own words on the sheet (SI per cm)."""
     from polygon_method.polygons.scales import parse_scale
+
     said = _said(svg, "note-centres-scale")
     value = re.fullmatch(r"1cm=([\d.]+)(\w+)", said)
     return parse_scale(f"1 cm = {value.group(1)} {value.group(2)}").per_cm

@@ -57,8 +57,14 @@ def slider_closed_form(theta_deg, w, s=1.0):
     xdot = -R * w * math.sin(th) - s * h * R * w * math.cos(th) / root
     cos_phi = s * root / L
     w_ab = -R * w * math.cos(th) / (L * cos_phi)
-    return {"v_A": abs(w) * R, "v_B": abs(xdot), "xdot": xdot, "v_BA": abs(w_ab) * L,
-            "omega_AB": w_ab, "x": x}
+    return {
+        "v_A": abs(w) * R,
+        "v_B": abs(xdot),
+        "xdot": xdot,
+        "v_BA": abs(w_ab) * L,
+        "omega_AB": w_ab,
+        "x": x,
+    }
 
 
 RPM = 2 * math.pi / 60
@@ -84,12 +90,12 @@ def test_right_answers_pass_under_the_drawing_rule():
     torque = 1000 * cf["xdot"] / (300 * RPM)  # T w + F.v = 0, F = -1000 x
     rub = abs(300 * RPM - cf["omega_AB"]) * 0.010
     text = f"""[answers]
-v_A = "{cf['v_A']:.3g} m/s"
-v_B = "{cf['v_B']:.3g} m/s"
-v_BA = "{cf['v_BA']:.3g} m/s"
-omega_AB = "{abs(cf['omega_AB']):.3g} rad/s {'ccw' if cf['omega_AB'] > 0 else 'cw'}"
+v_A = "{cf["v_A"]:.3g} m/s"
+v_B = "{cf["v_B"]:.3g} m/s"
+v_BA = "{cf["v_BA"]:.3g} m/s"
+omega_AB = "{abs(cf["omega_AB"]):.3g} rad/s {"ccw" if cf["omega_AB"] > 0 else "cw"}"
 rub_A = "{rub:.3g} m/s"
-torque = "{abs(torque):.3g} N m {'ccw' if torque > 0 else 'cw'}"
+torque = "{abs(torque):.3g} N m {"ccw" if torque > 0 else "cw"}"
 """
     got = verdict(sc, text)
     assert all(v.ok for v in got.values()), [(k, v.error, v.tolerance) for k, v in got.items()]
@@ -109,10 +115,13 @@ def test_the_default_is_never_tighter_than_half_a_millimetre_at_the_velocity_sca
     sc = slider_scene()
     sol = solve(sc)
     v_b = slider_closed_form(30, 300 * RPM)["v_B"]
-    vmax = max(math.dist(p, q) for p in list(sol.V.values()) + [(0, 0)]
-               for q in list(sol.V.values()) + [(0, 0)])
+    vmax = max(
+        math.dist(p, q)
+        for p in list(sol.V.values()) + [(0, 0)]
+        for q in list(sol.V.values()) + [(0, 0)]
+    )
     # independent scale choice: smallest 1, 2, 2.5, 5 x 10^k with vmax / s <= 12 cm
-    cands = sorted(m * 10.0 ** k for m in (1, 2, 2.5, 5) for k in range(-4, 4))
+    cands = sorted(m * 10.0**k for m in (1, 2, 2.5, 5) for k in range(-4, 4))
     s = next(c for c in cands if vmax / c <= 12 * (1 + 1e-12))
     band = 0.05 * s
     assert band > 0.005 * v_b  # the drawing, not the rounding floor, decides here
@@ -225,9 +234,10 @@ def fourbar_closed_form(theta2_deg=60.0, w2=-10.5, a=0.05, b=0.066, c=0.056, d=0
     return w3, w4
 
 
-FOURBAR = seed(middle='[assembly]\nC = "above"\n',
-               after='[pins]\nA = { radius = 30 }\nB = { radius = 40 }\n[loads]\n'
-                     'C = { force = [0, -500] }\n')
+FOURBAR = seed(
+    middle='[assembly]\nC = "above"\n',
+    after="[pins]\nA = { radius = 30 }\nB = { radius = 40 }\n[loads]\nC = { force = [0, -500] }\n",
+)
 
 
 def test_closed_form_fourbar_agrees():
@@ -330,23 +340,30 @@ def test_cli_exit_codes_and_json(tmp_path, capsys):
     assert main(["check", str(scene), "--json"]) == 1
     d = json.loads(capsys.readouterr().out)
     assert d["wrong"] == 3 and not d["all_right"]
-    assert {a["key"] for a in d["answers"] if a["verdict"] == "wrong"} == {"v_BD", "rub_A",
-                                                                           "torque"}
+    assert {a["key"] for a in d["answers"] if a["verdict"] == "wrong"} == {
+        "v_BD",
+        "rub_A",
+        "torque",
+    }
     good = tmp_path / "good.toml"
-    good.write_text('student = "A. Student"\n[answers]\nv_D = "2.04 m/s"\n'
-                    'omega_AB = "2.58 rad/s ccw"\n')
+    good.write_text(
+        'student = "A. Student"\n[answers]\nv_D = "2.04 m/s"\nomega_AB = "2.58 rad/s ccw"\n'
+    )
     assert main(["check", str(scene), str(good)]) == 0
     out = capsys.readouterr().out
     assert "2 of 2 right" in out
 
 
-@pytest.mark.parametrize("text, words", [
-    ('[answers]\nv_Q = "1 m/s"\n', "no point Q"),
-    ('[answer]\nv_D = "1 m/s"\n', "answers"),
-    ('[answers]\nv_D = "fast"\n', "v_D"),
-    ('[answers\n', "TOML"),
-    ('[answers]\nomega_AB = "2 m/s"\n', "omega_AB"),
-])
+@pytest.mark.parametrize(
+    "text, words",
+    [
+        ('[answers]\nv_Q = "1 m/s"\n', "no point Q"),
+        ('[answer]\nv_D = "1 m/s"\n', "answers"),
+        ('[answers]\nv_D = "fast"\n', "v_D"),
+        ("[answers\n", "TOML"),
+        ('[answers]\nomega_AB = "2 m/s"\n', "omega_AB"),
+    ],
+)
 def test_cli_bad_answer_file(tmp_path, capsys, text, words):
     scene = ROOT / "worked_problems" / "toggle_mechanism.toml"
     bad = tmp_path / "bad.toml"
@@ -398,15 +415,20 @@ def test_the_point_under_the_block_given_for_the_block_is_named(kind):
 
     from polygon_method import load_scene, solve
     from polygon_method.scene import parse_answers
-    sc = load_scene(Path(__file__).resolve().parent.parent / "worked_problems" /
-                    "crank_slotted_lever.toml")
+
+    sc = load_scene(
+        Path(__file__).resolve().parent.parent / "worked_problems" / "crank_slotted_lever.toml"
+    )
     sol = solve(sc)
     lever = sc.link("O4-P")
     (kx, ky), (x, y) = sol.P["O4"], sol.P["A"]
     rx, ry = x - kx, y - ky
     w, al = sol.W[lever.key], sol.Al[lever.key]
-    value = (math.hypot(-w * ry, w * rx) if kind == "v" else
-             math.hypot(-w * w * rx - al * ry, -w * w * ry + al * rx))
+    value = (
+        math.hypot(-w * ry, w * rx)
+        if kind == "v"
+        else math.hypot(-w * w * rx - al * ry, -w * w * ry + al * rx)
+    )
     unit = "m/s" if kind == "v" else "m/s^2"
     tol, answers = parse_answers(f'[answers]\n{kind}_A = "{value:.4f} {unit}"\n', sc)
     v = check_answers(sol, answers, tol)[0]
@@ -420,6 +442,7 @@ def test_textbook_drawn_answers_pass_without_a_stated_tolerance():
     while the known mistakes are still caught (the other tests of this module)."""
     from pathlib import Path
     from polygon_method.scene import parse_answers
+
     root = Path(__file__).resolve().parent.parent / "worked_problems"
     book = load_scene(root / "fourbar_velocity_khurmi.toml")
     sol = solve(book)
@@ -428,13 +451,16 @@ def test_textbook_drawn_answers_pass_without_a_stated_tolerance():
     assert sum(v.ok for v in vs) >= 0.9 * len(vs), [(v.key, v.error) for v in vs]
     seed = load_scene(root / "fourbar_image_points.toml")
     sol = solve(seed)
-    _, hand = parse_answers("""[answers]
+    _, hand = parse_answers(
+        """[answers]
 v_C = "0.395 m/s"
 omega_BC = "5.1 rad/s"
 omega_CD = "7.0 rad/s"
 a_C = "5.9 m/s^2"
 alpha_CD = "92 rad/s^2"
-""", seed)
+""",
+        seed,
+    )
     vs = check_answers(sol, hand, None)
     assert all(v.ok for v in vs), [(v.key, v.error, v.tolerance) for v in vs]
     assert all("hand drawing" in v.rule for v in vs)
@@ -449,18 +475,20 @@ def test_a_whole_class_at_once(tmp_path, capsys):
     from pathlib import Path
 
     from polygon_method.cli import main
-    scene = Path(__file__).resolve().parent.parent / "worked_problems" / \
-        "fourbar_image_points.toml"
+
+    scene = Path(__file__).resolve().parent.parent / "worked_problems" / "fourbar_image_points.toml"
     sol = solve(load_scene(scene))
     v, w = sol.speed("C"), abs(sol.W["BC"])
     d = tmp_path / "class"
     d.mkdir()
     for i in range(40):
-        (d / f"s{i:02d}.toml").write_text(f'[answers]\nv_C = "{v:.4f} m/s"\n'
-                                         f'omega_BC = "{w:.3f} rad/s"\n')
+        (d / f"s{i:02d}.toml").write_text(
+            f'[answers]\nv_C = "{v:.4f} m/s"\nomega_BC = "{w:.3f} rad/s"\n'
+        )
     for i in range(3):  # rpm read as rad/s: omega = N
-        (d / f"t{i}.toml").write_text(f'[answers]\nv_C = "{v:.4f} m/s"\n'
-                                      f'omega_BC = "{w * 60 / (2 * math.pi):.3f} rad/s"\n')
+        (d / f"t{i}.toml").write_text(
+            f'[answers]\nv_C = "{v:.4f} m/s"\nomega_BC = "{w * 60 / (2 * math.pi):.3f} rad/s"\n'
+        )
     (d / "zz.toml").write_text("answers = [\n")
     book = tmp_path / "book.csv"
     assert main(["check", str(scene), str(d), "--gradebook", str(book)]) == 0

@@ -62,10 +62,12 @@ def test_an_absolute_tolerance_applies_to_its_unit(tmp_path, capsys):
     unit) takes the per cent given beside it."""
     scene = fourbar_file(tmp_path)
     ans = tmp_path / "a.toml"
-    ans.write_text(f'[answers]\nv_C = "{V_C + 0.008:.5f} m/s"\n'
-                   f'omega_BC = "{abs(W3) * 1.04:.4f} rad/s"\n')
-    code, out, _ = run(capsys, "check", scene, ans, "--tolerance", "0.01 m/s",
-                       "--tolerance", "5%", "--json")
+    ans.write_text(
+        f'[answers]\nv_C = "{V_C + 0.008:.5f} m/s"\nomega_BC = "{abs(W3) * 1.04:.4f} rad/s"\n'
+    )
+    code, out, _ = run(
+        capsys, "check", scene, ans, "--tolerance", "0.01 m/s", "--tolerance", "5%", "--json"
+    )
     got = {a["key"]: a for a in json.loads(out)["answers"]}
     assert got["v_C"]["verdict"] == "right" and "0.01 m/s" in got["v_C"]["rule"]
     assert got["omega_BC"]["verdict"] == "right" and "5 %" in got["omega_BC"]["rule"]
@@ -147,12 +149,13 @@ def test_the_point_under_the_block_has_answer_keys():
         return d0 * math.cos(p), d0 * math.sin(p)
 
     (x0, y0), (x1, y1), (x2, y2) = point(-dt), point(0.0), point(dt)
-    a_a1 = math.hypot(x2 - 2 * x1 + x0, y2 - 2 * y1 + y0) / dt ** 2
+    a_a1 = math.hypot(x2 - 2 * x1 + x0, y2 - 2 * y1 + y0) / dt**2
     fd_v = math.hypot(x2 - x0, y2 - y0) / (2 * dt)
     assert fd_v == pytest.approx(v_a1, rel=1e-6)  # the closed form and the differences agree
     sol = solve(sc)
-    _, answers = parse_answers(f'[answers]\nv_A1 = "{v_a1:.6g} m/s"\n'
-                               f'a_A1 = "{a_a1:.6g} m/s^2"\n', sc)
+    _, answers = parse_answers(
+        f'[answers]\nv_A1 = "{v_a1:.6g} m/s"\na_A1 = "{a_a1:.6g} m/s^2"\n', sc
+    )
     vs = check_answers(sol, answers, None)
     assert all(v.ok for v in vs), vs
     assert vs[0].correct == pytest.approx(v_a1, rel=1e-9)
@@ -184,8 +187,9 @@ def test_another_quantity_of_the_problem_is_named():
     """omega_BC given for omega_CD, v_CB for v_C: named, with the key given."""
     sc = parse_scene(FOURBAR)
     sol = solve(sc)
-    _, answers = parse_answers(f'[answers]\nomega_CD = "{abs(W3):.4f} rad/s"\n'
-                               f'v_C = "{V_CB:.4f} m/s"\n', sc)
+    _, answers = parse_answers(
+        f'[answers]\nomega_CD = "{abs(W3):.4f} rad/s"\nv_C = "{V_CB:.4f} m/s"\n', sc
+    )
     om, vc = check_answers(sol, answers, None)
     assert not om.ok and om.mistake == "another_quantity"
     assert "you gave omega_BC" in om.diagnosis and "for omega_CD" in om.diagnosis
@@ -224,9 +228,16 @@ def test_an_ambiguous_comma_is_one_line(tmp_path, capsys):
     assert len(err.strip().splitlines()) == 1
 
 
-@pytest.mark.parametrize("key, meant", [("v_c", "v_C"), ("omega_bc", "omega_BC"),
-                                        ("w_BC", "omega_BC"), ("V_CB", "v_CB"),
-                                        ("omega_BX", "omega_BC")])
+@pytest.mark.parametrize(
+    "key, meant",
+    [
+        ("v_c", "v_C"),
+        ("omega_bc", "omega_BC"),
+        ("w_BC", "omega_BC"),
+        ("V_CB", "v_CB"),
+        ("omega_BX", "omega_BC"),
+    ],
+)
 def test_an_unknown_key_says_what_was_meant(tmp_path, capsys, key, meant):
     scene = fourbar_file(tmp_path)
     ans = tmp_path / "a.toml"

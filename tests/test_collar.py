@@ -54,15 +54,23 @@ as_C = "{acc}"
 CASES = [  # e (OD), r (DC), s (OC), vs (outward), as (outward), OA, AB, along
     (0.3, 0.15, 0.35, 1.5, -4.0, 0.5, 0.4, "O-A"),
     (0.3, 0.15, 0.2, -0.8, 2.5, 0.5, 0.6, "A-O"),
-    (0.25, 0.4, 0.5, 2.0, 0.0, 0.9, 1.0, "O-A"),   # a crank longer than OD: it turns fully
+    (0.25, 0.4, 0.5, 2.0, 0.0, 0.9, 1.0, "O-A"),  # a crank longer than OD: it turns fully
     (0.5, 0.2, 0.64, -3.0, 7.0, 1.2, 1.5, "O-A"),
 ]
 
 
 def scene_text(e, r, s, vs, acc, L, l, along, extra="", place=None):
-    return SCENE.format(e=e, r=r, L=L, l=l, along=along, vs=f"{vs} m/s",
-                        acc=f"{acc} m/s^2", extra=extra,
-                        place=f"s_C = {s}" if place is None else place)
+    return SCENE.format(
+        e=e,
+        r=r,
+        L=L,
+        l=l,
+        along=along,
+        vs=f"{vs} m/s",
+        acc=f"{acc} m/s^2",
+        extra=extra,
+        place=f"s_C = {s}" if place is None else place,
+    )
 
 
 def closed_form(e, r, s0, vs, acc, L, l):
@@ -92,15 +100,20 @@ def closed_form(e, r, s0, vs, acc, L, l):
 
     d = mpmath.diff
     return {
-        "phi": phi(0), "omega_OA": d(phi, 0, 1), "alpha_OA": d(phi, 0, 2),
+        "phi": phi(0),
+        "omega_OA": d(phi, 0, 1),
+        "alpha_OA": d(phi, 0, 2),
         "C": (C(0, 0), C(0, 1)),
         "v_C": tuple(d(lambda t, k=k: C(t, k), 0, 1) for k in (0, 1)),
         "a_C": tuple(d(lambda t, k=k: C(t, k), 0, 2) for k in (0, 1)),
         "A": (A(0, 0), A(0, 1)),
         "v_A": tuple(d(lambda t, k=k: A(t, k), 0, 1) for k in (0, 1)),
         "a_A": tuple(d(lambda t, k=k: A(t, k), 0, 2) for k in (0, 1)),
-        "x_B": xB(0), "v_B": d(xB, 0, 1), "a_B": d(xB, 0, 2),
-        "omega_DC": d(dc_angle, 0, 1), "alpha_DC": d(dc_angle, 0, 2),
+        "x_B": xB(0),
+        "v_B": d(xB, 0, 1),
+        "a_B": d(xB, 0, 2),
+        "omega_DC": d(dc_angle, 0, 1),
+        "alpha_DC": d(dc_angle, 0, 2),
     }
 
 
@@ -154,8 +167,10 @@ def test_finite_differences_of_positions_along_the_stroke(case):
     stencil on the solver's own positions at neighbouring places of the collar."""
     e, r, s, vs, acc, L, l, along = case
     h = 2e-4
-    P = {k: solve(parse_scene(scene_text(e, r, s + k * h, vs, acc, L, l, along))).P
-         for k in (-2, -1, 0, 1, 2)}
+    P = {
+        k: solve(parse_scene(scene_text(e, r, s + k * h, vs, acc, L, l, along))).P
+        for k in (-2, -1, 0, 1, 2)
+    }
     sol = solve(parse_scene(scene_text(*case)))
     for X in ("A", "B", "C"):
         for c in (0, 1):
@@ -163,8 +178,10 @@ def test_finite_differences_of_positions_along_the_stroke(case):
             d1 = (f[-2] - 8 * f[-1] + 8 * f[1] - f[2]) / (12 * h)
             d2 = (-f[-2] + 16 * f[-1] - 30 * f[0] + 16 * f[1] - f[2]) / (12 * h * h)
             assert abs(sol.V[X][c] - d1 * vs) <= REL * (abs(vs) + math.hypot(*sol.V[X]))
-            assert abs(sol.A[X][c] - (d2 * vs * vs + d1 * acc)) <= 1e-8 * math.hypot(
-                *sol.A[X]), (X, c)
+            assert abs(sol.A[X][c] - (d2 * vs * vs + d1 * acc)) <= 1e-8 * math.hypot(*sol.A[X]), (
+                X,
+                c,
+            )
 
 
 def test_the_sweep_runs_between_the_dead_centres_and_agrees_with_one_solve():
@@ -181,14 +198,18 @@ def test_the_sweep_runs_between_the_dead_centres_and_agrees_with_one_solve():
         one = solve(parse_scene(scene_text(e, r, float(s[i]), *case[3:])))
         for X in ("A", "C"):
             for c in (0, 1):
-                assert math.isclose(res.A[X][c][i], one.A[X][c], rel_tol=1e-12,
-                                    abs_tol=1e-12 * math.hypot(*one.A[X]))
+                assert math.isclose(
+                    res.A[X][c][i],
+                    one.A[X][c],
+                    rel_tol=1e-12,
+                    abs_tol=1e-12 * math.hypot(*one.A[X]),
+                )
 
 
 def test_the_json_states_the_collar_and_the_force_along_the_rod(capsys, tmp_path):
     """The input force by power balance: F vs (relative to the rod) + F_B . v_B = 0."""
     f = tmp_path / "c.toml"
-    f.write_text(scene_text(*CASES[0]) + '\n[loads]\nB = { force = [-300, 0] }\n')
+    f.write_text(scene_text(*CASES[0]) + "\n[loads]\nB = { force = [-300, 0] }\n")
     assert main(["solve", "--json", str(f)]) == 0
     d = json.loads(capsys.readouterr().out)
     inp = d["input"]
@@ -222,17 +243,21 @@ def test_the_checker_finds_the_coriolis_component_left_out(tmp_path, capsys):
     assert abs(wrong - sol.Al["OA"]) > 0.1 * abs(sol.Al["OA"])
     f, a = tmp_path / "c.toml", tmp_path / "a.toml"
     f.write_text(scene_text(*case))
-    a.write_text(f'[answers]\nalpha_OA = "{abs(wrong):.4f} rad/s^2 '
-                 f'{"ccw" if wrong > 0 else "cw"}"\n')
+    a.write_text(
+        f'[answers]\nalpha_OA = "{abs(wrong):.4f} rad/s^2 {"ccw" if wrong > 0 else "cw"}"\n'
+    )
     assert main(["check", str(f), str(a)]) == 1
     out = " ".join(capsys.readouterr().out.split())
     assert "the Coriolis component 2 omega v of collar C on the rod OA left out" in out
 
 
-@pytest.mark.parametrize("place, words", [
-    ("s_C = 0.45", "the rod OA's line passes through D"),   # OC = OD + DC: a dead centre
-    ("s_C = 0.15", "the rod OA's line passes through D"),   # OC = OD - DC
-])
+@pytest.mark.parametrize(
+    "place, words",
+    [
+        ("s_C = 0.45", "the rod OA's line passes through D"),  # OC = OD + DC: a dead centre
+        ("s_C = 0.15", "the rod OA's line passes through D"),  # OC = OD - DC
+    ],
+)
 def test_a_dead_centre_is_refused_with_its_condition(tmp_path, capsys, place, words):
     f = tmp_path / "c.toml"
     f.write_text(scene_text(*CASES[0], place=place))
@@ -257,27 +282,47 @@ def test_the_collar_placed_by_its_coordinates():
     e, r, s = CASES[0][:3]
     one = solve(parse_scene(scene_text(*CASES[0])))
     x, y = one.P["C"]
-    two = solve(parse_scene(scene_text(*CASES[0], place=f"C = [{x!r}, {-y!r}]").replace(
-        'C = "above"', 'B = "right"').replace('[assembly]\nB = "right"\nB = "right"',
-                                              '[assembly]\nB = "right"')))
+    two = solve(
+        parse_scene(
+            scene_text(*CASES[0], place=f"C = [{x!r}, {-y!r}]")
+            .replace('C = "above"', 'B = "right"')
+            .replace('[assembly]\nB = "right"\nB = "right"', '[assembly]\nB = "right"')
+        )
+    )
     assert math.isclose(two.P["C"][0], x, rel_tol=1e-12)
     assert math.isclose(two.P["C"][1], -y, rel_tol=1e-12)
 
 
-@pytest.mark.parametrize("text, key, words", [
-    ('[ground]\nO = [0, 0]\nD = [0.3, 0]\n[links]\nOQ = 0.1\nQR = 0.5\nDC = 0.15\n'
-     '[sliders]\nC = { along = "QR" }\n[input]\nblock = "C"\ns_C = 0.1\nvs_C = "1 m/s"\n',
-     "[input] block", "pivoted on the frame at neither end"),
-    ('[ground]\nO = [0, 0]\nD = [0.3, 0]\n[links]\nOA = 0.5\nDC = 0.15\n[sliders]\n'
-     'C = { along = "OA" }\n[input]\nblock = "C"\ns_C = 0.35\nvs_C = "1 m/s towards D"\n',
-     "[input] vs_C", "towards which end of the rod OA"),
-    ('[ground]\nO = [0, 0]\nD = [0.3, 0]\n[links]\nOA = 0.5\nDC = 0.15\n[sliders]\n'
-     'C = { along = "OA" }\n[input]\nblock = "C"\ns_C = 0.35\nvs_C = "1 m/s"\n'
-     'speed = "3 rad/s"\n', "[input] speed", "there is no crank"),
-    ('[ground]\nO = [0, 0]\nD = [0.3, 0]\n[links]\nOA = 0.5\nDC = 0.15\n[sliders]\n'
-     'C = { along = "OA" }\n[input]\nblock = "C"\ns_C = 0.7\nvs_C = "1 m/s"\n',
-     "collar C on the rod OA", "its dead centres"),
-])
+@pytest.mark.parametrize(
+    "text, key, words",
+    [
+        (
+            "[ground]\nO = [0, 0]\nD = [0.3, 0]\n[links]\nOQ = 0.1\nQR = 0.5\nDC = 0.15\n"
+            '[sliders]\nC = { along = "QR" }\n[input]\nblock = "C"\ns_C = 0.1\nvs_C = "1 m/s"\n',
+            "[input] block",
+            "pivoted on the frame at neither end",
+        ),
+        (
+            "[ground]\nO = [0, 0]\nD = [0.3, 0]\n[links]\nOA = 0.5\nDC = 0.15\n[sliders]\n"
+            'C = { along = "OA" }\n[input]\nblock = "C"\ns_C = 0.35\nvs_C = "1 m/s towards D"\n',
+            "[input] vs_C",
+            "towards which end of the rod OA",
+        ),
+        (
+            "[ground]\nO = [0, 0]\nD = [0.3, 0]\n[links]\nOA = 0.5\nDC = 0.15\n[sliders]\n"
+            'C = { along = "OA" }\n[input]\nblock = "C"\ns_C = 0.35\nvs_C = "1 m/s"\n'
+            'speed = "3 rad/s"\n',
+            "[input] speed",
+            "there is no crank",
+        ),
+        (
+            "[ground]\nO = [0, 0]\nD = [0.3, 0]\n[links]\nOA = 0.5\nDC = 0.15\n[sliders]\n"
+            'C = { along = "OA" }\n[input]\nblock = "C"\ns_C = 0.7\nvs_C = "1 m/s"\n',
+            "collar C on the rod OA",
+            "its dead centres",
+        ),
+    ],
+)
 def test_bad_collar_input_is_one_line(tmp_path, capsys, text, key, words):
     f = tmp_path / "bad.toml"
     f.write_text(text)
@@ -290,8 +335,9 @@ def test_the_other_views_run(tmp_path, capsys):
     """centres (the rod's omega from the sliding, the ratio theorem for DC), draw, page,
     the summary over the travel, variants."""
     f = tmp_path / "c.toml"
-    f.write_text(scene_text(*CASES[0]) + "\n[variants]\nDC = { from = 0.14, to = 0.16, "
-                 "step = 0.005 }\n")
+    f.write_text(
+        scene_text(*CASES[0]) + "\n[variants]\nDC = { from = 0.14, to = 0.16, step = 0.005 }\n"
+    )
     sol = solve(parse_scene(scene_text(*CASES[0])))
     assert main(["centres", str(f)]) == 0
     out = capsys.readouterr().out
@@ -308,7 +354,7 @@ def test_the_other_views_run(tmp_path, capsys):
 def test_the_force_analysis_with_masses_is_refused_in_one_line(tmp_path, capsys):
     """The kinematics are solved; the force analysis says in one line what it leaves."""
     f = tmp_path / "m.toml"
-    f.write_text(scene_text(*CASES[0]) + '\n[masses]\nOA = { mass = 2 }\n')
+    f.write_text(scene_text(*CASES[0]) + "\n[masses]\nOA = { mass = 2 }\n")
     assert main(["solve", str(f)]) == 0
     out = capsys.readouterr().out
     lines = [ln for ln in out.splitlines() if "a collar driven along its turning rod" in ln]
@@ -342,18 +388,20 @@ vs_C = "{vs} m/s"
 as_C = "{acc} m/s^2"
 """
 
+
 def two_text(L, l, th, w, al, s, vs, acc):
     def turn(x, unit):
         return f"{abs(x)} {unit} {'ccw' if x >= 0 else 'cw'}"
-    return TWO.format(L=L, l=l, th=th, w=abs(w), al=f'"{turn(al, "rad/s^2")}"' if al else 0,
-                      s=s, vs=vs, acc=acc).replace(f'speed = "{abs(w)} rad/s"',
-                                                   f'speed = "{turn(w, "rad/s")}"')
+
+    return TWO.format(
+        L=L, l=l, th=th, w=abs(w), al=f'"{turn(al, "rad/s^2")}"' if al else 0, s=s, vs=vs, acc=acc
+    ).replace(f'speed = "{abs(w)} rad/s"', f'speed = "{turn(w, "rad/s")}"')
 
 
 TWO_CASES = [  # OA, CB, theta (deg), omega, alpha, s, vs, as
     (1.0, 0.6, 40, 3.0, 0.0, 0.5, 2.0, 1.0),
     (0.8, 0.9, 120, -2.0, 5.0, 0.3, -1.5, 0.5),
-    (1.2, 0.7, -30, 4.0, -1.0, -0.4, 0.6, -3.0),   # the collar beyond the pivot
+    (1.2, 0.7, -30, 4.0, -1.0, -0.4, 0.6, -3.0),  # the collar beyond the pivot
 ]
 
 
@@ -372,10 +420,14 @@ def two_closed_form(L, l, th, w, al, s0, vs, acc):
         return mpmath.atan2(-C(t, 1), xB(t) - C(t, 0))
 
     d = mpmath.diff
-    return {"v_C": tuple(d(lambda t, k=k: C(t, k), 0, 1) for k in (0, 1)),
-            "a_C": tuple(d(lambda t, k=k: C(t, k), 0, 2) for k in (0, 1)),
-            "v_B": d(xB, 0, 1), "a_B": d(xB, 0, 2),
-            "omega_CB": d(cb, 0, 1), "alpha_CB": d(cb, 0, 2)}
+    return {
+        "v_C": tuple(d(lambda t, k=k: C(t, k), 0, 1) for k in (0, 1)),
+        "a_C": tuple(d(lambda t, k=k: C(t, k), 0, 2) for k in (0, 1)),
+        "v_B": d(xB, 0, 1),
+        "a_B": d(xB, 0, 2),
+        "omega_CB": d(cb, 0, 1),
+        "alpha_CB": d(cb, 0, 2),
+    }
 
 
 @pytest.mark.parametrize("case", TWO_CASES)
@@ -416,27 +468,43 @@ def test_two_inputs_superpose_in_the_steps(tmp_path, capsys):
     assert d["input"]["second"]["collar"] and d["input"]["second"]["vs"] == 2.0
 
 
-@pytest.mark.parametrize("text, key, words", [
-    # a collar on a rod the first crank does not turn
-    (two_text(1, 0.6, 40, 3, 0, 0.5, 2, 0).replace(
-        '[ground]\nO = [0, 0]\n', '[ground]\nO = [0, 0]\nQ = [0.5, 0]\n').replace(
-        '[links]\nOA = 1\n', '[links]\nOA = 1\nQR = 0.3\nRA = 0.8\n').replace(
-        'crank = "OA"', 'crank = "QR"'),
-     "[input.second] block", "which is not the crank QR"),
-    # the collar pinned to a crank as well: one input too many (mobility 1)
-    (two_text(1, 0.6, 40, 3, 0, 0.5, 2, 0).replace(
-        '[ground]\nO = [0, 0]\n', '[ground]\nO = [0, 0]\nD = [0.3, 0]\n').replace(
-        '[links]\n', '[links]\nDC = 0.3\n'),
-     "[input.second]", "two inputs over-determine the chain"),
-    # a block on a fixed guide given a velocity beside the crank's speed
-    ('[ground]\nO = [0, 0]\n[links]\nOA = 0.1\nAB = 0.4\n[sliders]\nB = { path = '
-     '"horizontal" }\n[input]\ncrank = "OA"\nangle = 30\nspeed = "10 rad/s"\n'
-     'vs_B = "1 m/s"\n', "[input] vs_B", "one input only"),
-    ('[ground]\nO = [0, 0]\n[links]\nOA = 0.1\nAB = 0.4\n[sliders]\nB = { path = '
-     '"horizontal" }\n[input]\ncrank = "OA"\nangle = 30\nspeed = "10 rad/s"\n'
-     '[input.second]\nblock = "B"\ns_B = 0.45\nvs_B = "1 m/s"\n', "[input.second] block",
-     "a block on a fixed guide as a second input is not solved"),
-])
+@pytest.mark.parametrize(
+    "text, key, words",
+    [
+        # a collar on a rod the first crank does not turn
+        (
+            two_text(1, 0.6, 40, 3, 0, 0.5, 2, 0)
+            .replace("[ground]\nO = [0, 0]\n", "[ground]\nO = [0, 0]\nQ = [0.5, 0]\n")
+            .replace("[links]\nOA = 1\n", "[links]\nOA = 1\nQR = 0.3\nRA = 0.8\n")
+            .replace('crank = "OA"', 'crank = "QR"'),
+            "[input.second] block",
+            "which is not the crank QR",
+        ),
+        # the collar pinned to a crank as well: one input too many (mobility 1)
+        (
+            two_text(1, 0.6, 40, 3, 0, 0.5, 2, 0)
+            .replace("[ground]\nO = [0, 0]\n", "[ground]\nO = [0, 0]\nD = [0.3, 0]\n")
+            .replace("[links]\n", "[links]\nDC = 0.3\n"),
+            "[input.second]",
+            "two inputs over-determine the chain",
+        ),
+        # a block on a fixed guide given a velocity beside the crank's speed
+        (
+            "[ground]\nO = [0, 0]\n[links]\nOA = 0.1\nAB = 0.4\n[sliders]\nB = { path = "
+            '"horizontal" }\n[input]\ncrank = "OA"\nangle = 30\nspeed = "10 rad/s"\n'
+            'vs_B = "1 m/s"\n',
+            "[input] vs_B",
+            "one input only",
+        ),
+        (
+            "[ground]\nO = [0, 0]\n[links]\nOA = 0.1\nAB = 0.4\n[sliders]\nB = { path = "
+            '"horizontal" }\n[input]\ncrank = "OA"\nangle = 30\nspeed = "10 rad/s"\n'
+            '[input.second]\nblock = "B"\ns_B = 0.45\nvs_B = "1 m/s"\n',
+            "[input.second] block",
+            "a block on a fixed guide as a second input is not solved",
+        ),
+    ],
+)
 def test_bad_two_input_collars_are_one_line(tmp_path, capsys, text, key, words):
     f = tmp_path / "bad.toml"
     f.write_text(text)
@@ -449,13 +517,21 @@ def test_bad_two_input_collars_are_one_line(tmp_path, capsys, text, key, words):
 def test_the_one_instant_road_is_the_phased_road_to_the_last_bit(case):
     """The collar's bind_instant (its frame made once) against its three phases."""
     from polygon_method.solver.plan import Context
+
     sc = parse_scene(scene_text(*case))
     sol = solve(sc)
     plan = compile_plan(sc)
     inp = sc.input
     m = plan.run(Context(inp.angle, inp.omega, inp.alpha), plan.dims)
-    for mine, theirs in ((sol.P, m.P), (sol.V, m.V), (sol.A, m.A), (sol.W, m.W),
-                         (sol.Al, m.Al), (sol.S, m.S), (sol.cond, m.cond)):
+    for mine, theirs in (
+        (sol.P, m.P),
+        (sol.V, m.V),
+        (sol.A, m.A),
+        (sol.W, m.W),
+        (sol.Al, m.Al),
+        (sol.S, m.S),
+        (sol.cond, m.cond),
+    ):
         assert sorted(mine.items()) == sorted(theirs.items())
 
 

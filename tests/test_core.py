@@ -19,13 +19,15 @@ from polygon_method.solver.compiler import compile_plan
 from polygon_method.solver.plan import Context
 from scenes import TRANSLATING_COUPLER, seed
 
-FOURBAR = seed(middle='[points]\nE = { on = "BC", along = 40 }\n'
-                      'F = { on = "BC", distances = { B = 45, C = 30 }, turn = "cw" }\n'
-                      'G = { on = "CD", distances = { C = 24, D = 44 }, turn = "cw" }\n'
-                      '[assembly]\nC = "above"\n',
-               drive='angle = 60\nspeed = "10.5 rad/s cw"\nacceleration = "40 rad/s^2 ccw"',
-               after='[pins]\nA = { radius = 30 }\nB = { radius = 40 }\n'
-                     'C = { radius = 25 }\nD = { diameter = 70 }\n')
+FOURBAR = seed(
+    middle='[points]\nE = { on = "BC", along = 40 }\n'
+    'F = { on = "BC", distances = { B = 45, C = 30 }, turn = "cw" }\n'
+    'G = { on = "CD", distances = { C = 24, D = 44 }, turn = "cw" }\n'
+    '[assembly]\nC = "above"\n',
+    drive='angle = 60\nspeed = "10.5 rad/s cw"\nacceleration = "40 rad/s^2 ccw"',
+    after="[pins]\nA = { radius = 30 }\nB = { radius = 40 }\n"
+    "C = { radius = 25 }\nD = { diameter = 70 }\n",
+)
 
 OFFSET_SLIDER = """
 [ground]
@@ -108,12 +110,12 @@ speed = "200 rpm ccw"
 acceleration = "30 rad/s^2 cw"
 """
 
-MOVING_GUIDE = seed(ground='H = [60, 130]\n',
-                    links='HX = 80\n',
-                    middle='[sliders]\nX = { along = "BC" }\n[assembly]\nC = "above"\n'
-                           'X = [70, 55]\n',
-                    drive='angle = 60\nspeed = "10.5 rad/s cw"\n'
-                          'acceleration = "12 rad/s^2 cw"')
+MOVING_GUIDE = seed(
+    ground="H = [60, 130]\n",
+    links="HX = 80\n",
+    middle='[sliders]\nX = { along = "BC" }\n[assembly]\nC = "above"\nX = [70, 55]\n',
+    drive='angle = 60\nspeed = "10.5 rad/s cw"\nacceleration = "12 rad/s^2 cw"',
+)
 
 SIX_LINK = """
 [ground]
@@ -157,9 +159,16 @@ speed = "10 rad/s ccw"
 acceleration = "3 rad/s^2 ccw"
 """
 
-ALL = {"plate": PLATE, "fourbar": FOURBAR, "offset_slider": OFFSET_SLIDER, "slotted_lever": SLOTTED_LEVER,
-       "whitworth": WHITWORTH, "swivel": SWIVEL, "moving_guide": MOVING_GUIDE,
-       "six_link": SIX_LINK}
+ALL = {
+    "plate": PLATE,
+    "fourbar": FOURBAR,
+    "offset_slider": OFFSET_SLIDER,
+    "slotted_lever": SLOTTED_LEVER,
+    "whitworth": WHITWORTH,
+    "swivel": SWIVEL,
+    "moving_guide": MOVING_GUIDE,
+    "six_link": SIX_LINK,
+}
 
 
 def positions_at(scene, theta):
@@ -179,7 +188,7 @@ def derivatives(scene, point, h=2e-3):
     def d2(step):
         p, m = positions_at(scene, th + step)[point], positions_at(scene, th - step)[point]
         c = positions_at(scene, th)[point]
-        return [(a - 2 * z + b) / step ** 2 for a, z, b in zip(p, c, m)]
+        return [(a - 2 * z + b) / step**2 for a, z, b in zip(p, c, m)]
 
     r1 = [(4 * a - b) / 3 for a, b in zip(d1(h / 2), d1(h))]
     r2 = [(4 * a - b) / 3 for a, b in zip(d2(h / 2), d2(h))]
@@ -226,12 +235,15 @@ def test_link_omega_alpha_match_finite_differences(name):
         return (d + math.pi) % (2 * math.pi) - math.pi
 
     for lk in scene.links:
+
         def d1(h):
             return unwrap(angle(lk, th + h) - angle(lk, th - h)) / (2 * h)
 
         def d2(h):
-            return (unwrap(angle(lk, th + h) - angle(lk, th))
-                    - unwrap(angle(lk, th) - angle(lk, th - h))) / h ** 2
+            return (
+                unwrap(angle(lk, th + h) - angle(lk, th))
+                - unwrap(angle(lk, th) - angle(lk, th - h))
+            ) / h**2
 
         h = 2e-3
         d1 = (4 * d1(h / 2) - d1(h)) / 3
@@ -240,7 +252,7 @@ def test_link_omega_alpha_match_finite_differences(name):
         al_l = d2 * w * w + d1 * al
         wscale = max(abs(x) for x in sol.W.values())
         assert abs(sol.W[lk.key] - wl) <= 1e-8 * wscale, (lk.key, sol.W[lk.key], wl)
-        ascale = max(abs(x) for x in sol.Al.values()) + wscale ** 2
+        ascale = max(abs(x) for x in sol.Al.values()) + wscale**2
         assert abs(sol.Al[lk.key] - al_l) <= 1e-6 * ascale, (lk.key, sol.Al[lk.key], al_l)
 
 
@@ -274,7 +286,7 @@ def test_offset_slider_crank_closed_form():
     ds = r * math.cos(t)
     dds = -r * math.sin(t)
     dq = -s * ds / q
-    ddq = -(ds * ds + s * dds) / q + s * ds * dq / q ** 2
+    ddq = -(ds * ds + s * dds) / q + s * ds * dq / q**2
     ddx = -r * math.cos(t) + ddq
     assert sol.P["B"] == pytest.approx((x, e), abs=1e-15)
     assert sol.V["B"][0] == pytest.approx(dx * w, rel=1e-12)
@@ -287,8 +299,11 @@ def test_offset_slider_crank_closed_form():
 
 
 def test_engine_piston_at_90_degrees_equals_crank_pin_speed():
-    scene = parse_scene(OFFSET_SLIDER.replace("through = [0, 20]", "through = [0, 0]")
-                        .replace("angle = 30", "angle = 90"))
+    scene = parse_scene(
+        OFFSET_SLIDER.replace("through = [0, 20]", "through = [0, 0]").replace(
+            "angle = 30", "angle = 90"
+        )
+    )
     sol = solve(scene)
     assert sol.speed("B") == pytest.approx(0.05 * 10 * math.pi, rel=1e-14)
 
@@ -321,7 +336,7 @@ def test_moving_guide_sliding_and_coriolis_from_finite_differences():
 
     h = 1e-3
     d1 = [(s_at(th + k) - s_at(th - k)) / (2 * k) for k in (h, h / 2)]
-    d2 = [(s_at(th + k) - 2 * s_at(th) + s_at(th - k)) / k ** 2 for k in (h, h / 2)]
+    d2 = [(s_at(th + k) - 2 * s_at(th) + s_at(th - k)) / k**2 for k in (h, h / 2)]
     ds = (4 * d1[1] - d1[0]) / 3
     dds = (4 * d2[1] - d2[0]) / 3
     assert sol.sliding_velocity("X") == pytest.approx(ds * w, rel=1e-8)
@@ -438,7 +453,10 @@ def test_assembly_hints_choose_the_branch():
     assert near.P["C"] == down.P["C"]
     # the mirror image of C in the line BD is the other branch
     (bx, by), (dx, dy) = up.P["B"], up.P["D"]
-    ux, uy = (dx - bx) / math.dist(up.P["B"], up.P["D"]), (dy - by) / math.dist(up.P["B"], up.P["D"])
+    ux, uy = (
+        (dx - bx) / math.dist(up.P["B"], up.P["D"]),
+        (dy - by) / math.dist(up.P["B"], up.P["D"]),
+    )
     cx, cy = up.P["C"][0] - bx, up.P["C"][1] - by
     along = cx * ux + cy * uy
     mirror = (bx + 2 * along * ux - cx, by + 2 * along * uy - cy)
@@ -448,6 +466,7 @@ def test_assembly_hints_choose_the_branch():
 def test_json_contract(capsys):
     import tempfile
     from pathlib import Path
+
     with tempfile.TemporaryDirectory() as d:
         path = Path(d) / "s.toml"
         path.write_text(SLOTTED_LEVER)
@@ -468,13 +487,24 @@ def test_json_contract(capsys):
 
 def test_crank_with_ground_point_second_in_its_name():
     a = solve(parse_scene(FOURBAR))
-    b = solve(parse_scene(FOURBAR.replace("AB = 50", "BA = 50").replace('crank = "AB"', 'crank = "BA"')))
+    b = solve(
+        parse_scene(FOURBAR.replace("AB = 50", "BA = 50").replace('crank = "AB"', 'crank = "BA"'))
+    )
     assert a.P["C"] == b.P["C"]
     assert b.omega("BA") == a.omega("AB")
 
 
-@pytest.mark.parametrize("word, sign", [("clockwise", -1), ("anticlockwise", 1), ("acw", 1),
-                                        ("counter-clockwise", 1), ("cw", -1), ("CCW", 1)])
+@pytest.mark.parametrize(
+    "word, sign",
+    [
+        ("clockwise", -1),
+        ("anticlockwise", 1),
+        ("acw", 1),
+        ("counter-clockwise", 1),
+        ("cw", -1),
+        ("CCW", 1),
+    ],
+)
 def test_sense_words_as_textbooks_write_them(word, sign):
     scene = parse_scene(FOURBAR.replace('"10.5 rad/s cw"', f'"100 rpm {word}"'))
     assert scene.input.omega == pytest.approx(sign * 100 * 2 * math.pi / 60)

@@ -25,13 +25,16 @@ speed = "150 rpm cw"
 """
 
 
-@pytest.mark.parametrize("words, e, deg", [
-    ("45 deg from the head-end dead centre", 0, -45.0),
-    ("45 deg past the head end dead center", 0, -45.0),
-    ("45 deg past the crank-end dead centre", 0, 135.0),
-    ("30 deg before the crank end dead centre", 0, -150.0),
-    ("0 deg from the head-end dead centre", 150, math.degrees(math.asin(150 / 1500))),
-])
+@pytest.mark.parametrize(
+    "words, e, deg",
+    [
+        ("45 deg from the head-end dead centre", 0, -45.0),
+        ("45 deg past the head end dead center", 0, -45.0),
+        ("45 deg past the crank-end dead centre", 0, 135.0),
+        ("30 deg before the crank end dead centre", 0, -150.0),
+        ("0 deg from the head-end dead centre", 150, math.degrees(math.asin(150 / 1500))),
+    ],
+)
 def test_head_end_is_the_inner_dead_centre_crank_end_the_outer(words, e, deg):
     sc = parse_scene(ENGINE.format(words=words, e=e))
     assert math.degrees(sc.input.angle) == pytest.approx(deg, abs=1e-12)

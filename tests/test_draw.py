@@ -22,8 +22,7 @@ from shapely.geometry import LineString, Polygon, box
 from polygon_method import parse_scene, solve
 from polygon_method.cli import main
 from polygon_method.polygons.constructions import acceleration_constructions, velocity_constructions
-from polygon_method.draw import (choose_scales, drawn_vectors, make_figure, render,
-                                 svg_string)
+from polygon_method.draw import choose_scales, drawn_vectors, make_figure, render, svg_string
 from polygon_method.polygons.scales import parse_scale
 from reference import reference_solution
 from scenes import seed
@@ -34,12 +33,14 @@ SVGNS = "{http://www.w3.org/2000/svg}"
 XLINK = "{http://www.w3.org/1999/xlink}href"
 CM = 72 / 2.54  # pt per cm
 
-FOURBAR = seed(middle='[points]\nE = { on = "BC", along = 40 }\n'
-                      'F = { on = "BC", distances = { B = 45, C = 30 }, turn = "cw" }\n'
-                      'G = { on = "CD", distances = { C = 24, D = 44 }, turn = "cw" }\n'
-                      '[assembly]\nC = "above"\n',
-               drive='angle = 60\nspeed = "10.5 rad/s cw"\nacceleration = "40 rad/s^2 ccw"',
-               after='[pins]\nB = { radius = 10 }\n')
+FOURBAR = seed(
+    middle='[points]\nE = { on = "BC", along = 40 }\n'
+    'F = { on = "BC", distances = { B = 45, C = 30 }, turn = "cw" }\n'
+    'G = { on = "CD", distances = { C = 24, D = 44 }, turn = "cw" }\n'
+    '[assembly]\nC = "above"\n',
+    drive='angle = 60\nspeed = "10.5 rad/s cw"\nacceleration = "40 rad/s^2 ccw"',
+    after="[pins]\nB = { radius = 10 }\n",
+)
 
 SLOTTED = """
 [ground]
@@ -86,8 +87,14 @@ def _transform(text):
         else:
             raise AssertionError(f"unexpected transform {op}")
         a, b, c, d, e, f = m
-        m = [a * t[0] + c * t[1], b * t[0] + d * t[1], a * t[2] + c * t[3],
-             b * t[2] + d * t[3], a * t[4] + c * t[5] + e, b * t[4] + d * t[5] + f]
+        m = [
+            a * t[0] + c * t[1],
+            b * t[0] + d * t[1],
+            a * t[2] + c * t[3],
+            b * t[2] + d * t[3],
+            a * t[4] + c * t[5] + e,
+            b * t[4] + d * t[5] + f,
+        ]
     return m
 
 
@@ -148,8 +155,11 @@ class Svg:
                 width = re.search(r"stroke-width: ([\d.]+)", style)
                 half = float(width.group(1)) / 2 if width else 0.5
                 geom = LineString(pts).buffer(half)
-                filled = "fill: none" not in style and gid.endswith(("-head",)) or \
-                    gid.startswith(("velocity-point", "acceleration-point"))
+                filled = (
+                    "fill: none" not in style
+                    and gid.endswith(("-head",))
+                    or gid.startswith(("velocity-point", "acceleration-point"))
+                )
                 if filled and len(pts) >= 3:
                     geom = geom.union(Polygon(pts).buffer(0))
                 out.append((gid, geom))
@@ -176,15 +186,24 @@ def test_svg_parses_and_is_printed_true_to_scale(fourbar):
     n = round(math.dist(bar[0], bar[-1]) / CM)
     assert n >= 1 and math.dist(bar[0], bar[-1]) / CM == pytest.approx(n, abs=1e-5)
     # the crank's vector: omega x AB = 10.5 x 0.05 = 0.525 m/s -> 5.25 cm at 1 cm = 0.1 m/s
-    ob = next(i for i, v in enumerate(drawn_vectors(fourbar, "velocity"))
-              if v.kind == "absolute" and v.label == "ob")
+    ob = next(
+        i
+        for i, v in enumerate(drawn_vectors(fourbar, "velocity"))
+        if v.kind == "absolute" and v.label == "ob"
+    )
     length, _ = vector_length_cm(svg, f"velocity-vector-{ob}")
     assert length == pytest.approx(5.25, abs=1e-5)
 
 
-@pytest.mark.parametrize("phase,scale", [("velocity", "1 cm = 0.05 m/s"),
-                                         ("acceleration", "1 cm = 0.5 m/s^2"),
-                                         ("velocity", None), ("acceleration", None)])
+@pytest.mark.parametrize(
+    "phase,scale",
+    [
+        ("velocity", "1 cm = 0.05 m/s"),
+        ("acceleration", "1 cm = 0.5 m/s^2"),
+        ("velocity", None),
+        ("acceleration", None),
+    ],
+)
 def test_every_vector_is_drawn_at_its_magnitude(fourbar, phase, scale):
     given = {phase: parse_scale(scale)} if scale else None
     text, used, _ = render(fourbar, "svg", phase, given)
@@ -203,8 +222,10 @@ def test_every_vector_is_drawn_at_its_magnitude(fourbar, phase, scale):
 def test_totals_match_an_independent_reference(fourbar):
     """o->c, o'->c' etc. against the 50-digit loop-closure reference (not the solver)."""
     ref = reference_solution(fourbar.scene, fourbar.P)
-    for phase, key, unit in (("velocity", "velocities", "1 cm = 0.05 m/s"),
-                             ("acceleration", "accelerations", "1 cm = 0.5 m/s^2")):
+    for phase, key, unit in (
+        ("velocity", "velocities", "1 cm = 0.05 m/s"),
+        ("acceleration", "accelerations", "1 cm = 0.5 m/s^2"),
+    ):
         scale = parse_scale(unit)
         svg = Svg(svg_string(fourbar, phase, {phase: scale}))
         checked = 0
@@ -231,16 +252,20 @@ def test_physical_size_is_the_content_not_a_tight_bbox(fourbar):
 
 
 def test_scales_are_textbook_round_and_fit_a4(fourbar):
-    for diagram, sheet in (("all", (29.7, math.inf)), ("velocity", (21.0, 29.7)),
-                           ("configuration", (21.0, 29.7))):
+    for diagram, sheet in (
+        ("all", (29.7, math.inf)),
+        ("velocity", (21.0, 29.7)),
+        ("configuration", (21.0, 29.7)),
+    ):
         text, used, _ = render(fourbar, "svg", diagram)
         for s in used.values():
             mant = float(s.value) / 10 ** math.floor(math.log10(float(s.value)))
             assert any(math.isclose(mant, m) for m in (1, 2, 2.5, 5)), s
         w, h = Svg(text).size_cm()
         assert w <= sheet[0] and h <= sheet[1]
-    assert {k: str(v) for k, v in choose_scales(fourbar, "velocity").items()} == \
-        {"velocity": "1 cm = 0.05 m/s"}  # 0.63 m/s across: the largest that fits
+    assert {k: str(v) for k, v in choose_scales(fourbar, "velocity").items()} == {
+        "velocity": "1 cm = 0.05 m/s"
+    }  # 0.63 m/s across: the largest that fits
 
 
 # --------------------------------------------------------------------------- labels
@@ -256,7 +281,7 @@ def _check_labels(text):
     assert any(k.startswith("label-") for k in boxes)
     names = sorted(boxes)
     for i, a in enumerate(names):
-        for b in names[i + 1:]:
+        for b in names[i + 1 :]:
             assert not boxes[a].intersects(boxes[b]), f"labels {a} and {b} overlap"
     geometry = svg.geometry()
     assert len(geometry) > 10
@@ -268,8 +293,17 @@ def _check_labels(text):
 
 def test_labels_clear_of_each_other_and_of_lines(fourbar):
     svg = _check_labels(svg_string(fourbar, "all"))
-    for gid in ("label-o", "label-b", "label-c", "label-op", "label-bp", "label-cp",
-                "label-B", "label-C", "label-crank-angle"):
+    for gid in (
+        "label-o",
+        "label-b",
+        "label-c",
+        "label-op",
+        "label-bp",
+        "label-cp",
+        "label-B",
+        "label-C",
+        "label-crank-angle",
+    ):
         assert gid in svg.groups, gid
 
 
@@ -278,6 +312,7 @@ def test_worked_problem_sheets(path):
     scene = parse_scene(SLOTTED) if path == "slotted" else None
     if scene is None:
         from polygon_method import load_scene
+
         scene = load_scene(path)
     sol = solve(scene)
     text, used, warnings = render(sol, "svg", "all")
@@ -288,6 +323,7 @@ def test_worked_problem_sheets(path):
     # one diagram, one scale: the sheet states the scales the step table states
     from polygon_method.polygons.scales import diagram_scales
     from polygon_method.text.steptable import steps_text
+
     stated = [s.text for s in diagram_scales(sol)]
     assert [used[n].text for n in ("configuration", "velocity", "acceleration")] == stated
     table = steps_text(sol)
@@ -328,7 +364,8 @@ def test_acceleration_components_have_their_own_styles():
     assert {"centripetal", "tangential", "coriolis", "absolute"} <= set(styles)
     colours = [next(iter(s)) for s in styles.values()]
     assert all(len(s) == 1 for s in styles.values()) and len(set(colours)) == len(colours) - (
-        "relative" in styles and "absolute" in styles)
+        "relative" in styles and "absolute" in styles
+    )
     # the Coriolis vector is 2 omega vs, as the records say
     cor = next(v for c in acceleration_constructions(sol) for v in c.given if v.kind == "coriolis")
     vs, w = sol.sliding_velocity("A"), sol.omega("CP")
@@ -351,23 +388,51 @@ def test_cli_formats_and_clean_failures(tmp_path, capsys):
     scene.write_text(FOURBAR)
     for ext, magic in ((".svg", b"<?xml"), (".png", b"\x89PNG"), (".pdf", b"%PDF")):
         out = tmp_path / f"fb{ext}"
-        assert main(["draw", str(scene), "-o", str(out), "--diagram", "velocity",
-                     "--scale", "1 cm = 0.1 m/s"]) == 0
+        assert (
+            main(
+                [
+                    "draw",
+                    str(scene),
+                    "-o",
+                    str(out),
+                    "--diagram",
+                    "velocity",
+                    "--scale",
+                    "1 cm = 0.1 m/s",
+                ]
+            )
+            == 0
+        )
         assert out.read_bytes().startswith(magic)
     assert "velocity 1 cm = 0.1 m/s" in capsys.readouterr().out
     # a scene that cannot be assembled: one line, exit 2, nothing written
     bad = tmp_path / "bad.toml"
     bad.write_text(FOURBAR.replace("CD = 56", "CD = 10"))
-    for args in (["draw", str(bad), "-o", str(tmp_path / "bad.svg")],
-                 ["draw", str(scene), "-o", str(tmp_path / "x.jpg")],
-                 ["draw", str(scene), "-o", str(tmp_path / "y.svg"), "--scale", "1 cm = fast"],
-                 ["draw", str(scene), "-o", str(tmp_path / "z.svg"), "--scale",
-                  "1 cm = 0.1 m/s", "--scale", "1 cm = 0.2 m/s"]):
+    for args in (
+        ["draw", str(bad), "-o", str(tmp_path / "bad.svg")],
+        ["draw", str(scene), "-o", str(tmp_path / "x.jpg")],
+        ["draw", str(scene), "-o", str(tmp_path / "y.svg"), "--scale", "1 cm = fast"],
+        [
+            "draw",
+            str(scene),
+            "-o",
+            str(tmp_path / "z.svg"),
+            "--scale",
+            "1 cm = 0.1 m/s",
+            "--scale",
+            "1 cm = 0.2 m/s",
+        ],
+    ):
         assert main(args) == 2
         err = capsys.readouterr().err
         assert err.count("\n") == 1 and "Traceback" not in err, err
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.toml", "fb.pdf", "fb.png",
-                                                          "fb.svg", "fb.toml"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == [
+        "bad.toml",
+        "fb.pdf",
+        "fb.png",
+        "fb.svg",
+        "fb.toml",
+    ]
 
 
 def test_png_carries_its_physical_size(tmp_path):
@@ -376,16 +441,18 @@ def test_png_carries_its_physical_size(tmp_path):
     svg = Svg(svg_string(sol, "velocity"))
     # pHYs chunk: pixels per metre
     i = data.index(b"pHYs")
-    ppm = int.from_bytes(data[i + 4:i + 8], "big")
+    ppm = int.from_bytes(data[i + 4 : i + 8], "big")
     width_px = int.from_bytes(data[16:20], "big")
     assert width_px / ppm * 100 == pytest.approx(svg.size_cm()[0], rel=2e-3)
 
 
 def test_importing_and_solving_do_not_load_matplotlib_or_shapely():
-    code = ("import sys, polygon_method as pm, polygon_method.draw\n"
-            f"pm.solve(pm.parse_scene({FOURBAR!r}))\n"
-            "bad = [m for m in ('matplotlib', 'shapely') if m in sys.modules]\n"
-            "assert not bad, bad\n")
+    code = (
+        "import sys, polygon_method as pm, polygon_method.draw\n"
+        f"pm.solve(pm.parse_scene({FOURBAR!r}))\n"
+        "bad = [m for m in ('matplotlib', 'shapely') if m in sys.modules]\n"
+        "assert not bad, bad\n"
+    )
     subprocess.run([sys.executable, "-c", code], check=True, env=dict(os.environ))
 
 
@@ -393,8 +460,12 @@ def test_drawing_functions_take_an_axes_and_return_their_artists(fourbar):
     from matplotlib.figure import Figure
 
     from polygon_method.draw import draw_acceleration, draw_configuration, draw_velocity
-    for draw, scale in ((draw_configuration, "1 cm = 20 mm"), (draw_velocity, None),
-                        (draw_acceleration, "1 cm = 1 m/s^2")):
+
+    for draw, scale in (
+        (draw_configuration, "1 cm = 20 mm"),
+        (draw_velocity, None),
+        (draw_acceleration, "1 cm = 1 m/s^2"),
+    ):
         ax = Figure().add_subplot()
         artists = draw(ax, fourbar, scale)
         assert artists and all(a.axes is ax for a in artists)
@@ -408,8 +479,11 @@ def test_drawing_functions_take_an_axes_and_return_their_artists(fourbar):
     assert math.dist(shaft, tip) == pytest.approx(5.25, rel=1e-12)
 
 
-@pytest.mark.parametrize("path", sorted(Path(__file__).parent.parent.glob("worked_problems/*.toml")),
-                         ids=lambda p: p.stem)
+@pytest.mark.parametrize(
+    "path",
+    sorted(Path(__file__).parent.parent.glob("worked_problems/*.toml")),
+    ids=lambda p: p.stem,
+)
 def test_single_diagram_uses_the_scale_the_steps_state(path):
     """A student drawing from `steps` and comparing with `draw --diagram X` sees one scale."""
     from polygon_method.draw import DIAGRAMS, layout
@@ -420,7 +494,7 @@ def test_single_diagram_uses_the_scale_the_steps_state(path):
     sol = solve(load_scene(path))
     text = steps_text(sol)
     for name, stated in zip(DIAGRAMS, diagram_scales(sol)):
-        (drawn_name, scale, _), = layout(sol, name)
+        ((drawn_name, scale, _),) = layout(sol, name)
         assert drawn_name == name
         assert scale.text == stated.text
         assert stated.text in text
@@ -431,17 +505,19 @@ def test_the_point_under_the_block_is_marked_on_both_polygons(name):
     """a1 and a1', which the step table names, are drawn and labelled where the lever's
     point under the block moves: v = w perp(KA), a = -w^2 KA + al perp(KA)."""
     from polygon_method import load_scene
+
     sol = solve(load_scene(Path(__file__).parent.parent / "worked_problems" / f"{name}.toml"))
     st = next(s for s in sol.plan.steps if s.kind == "slotted")
     (kx, ky), (ax, ay) = sol.P[st.known], sol.P[st.point]
     rx, ry = ax - kx, ay - ky
     w, al = sol.W[st.guide], sol.Al[st.guide]
-    want = {"velocity": (-w * ry, w * rx),
-            "acceleration": (-w * w * rx - al * ry, -w * w * ry + al * rx)}
+    want = {
+        "velocity": (-w * ry, w * rx),
+        "acceleration": (-w * w * rx - al * ry, -w * w * ry + al * rx),
+    }
     for phase, prime in (("velocity", ""), ("acceleration", "'")):
-        cons = (velocity_constructions if phase == "velocity" else
-                acceleration_constructions)(sol)
-        (label, xy), = cons[st.index].named
+        cons = (velocity_constructions if phase == "velocity" else acceleration_constructions)(sol)
+        ((label, xy),) = cons[st.index].named
         assert label == st.point.lower() + "1" + prime
         assert xy == pytest.approx(want[phase], rel=1e-12, abs=1e-12)
         text, _, _ = render(sol, "svg", phase)
@@ -450,7 +526,8 @@ def test_the_point_under_the_block_is_marked_on_both_polygons(name):
 
 def test_a_point_on_a_link_produced_has_its_image_line_produced():
     """T on BC produced: bc (b'c') is drawn produced to t (t'), on the line of b and c."""
-    sol = solve(parse_scene("""
+    sol = solve(
+        parse_scene("""
     [ground]
     A = [0, 0]
     D = [100, 0]
@@ -464,14 +541,19 @@ def test_a_point_on_a_link_produced_has_its_image_line_produced():
     crank = "AB"
     angle = 60
     speed = "10.5 rad/s cw"
-    """))
+    """)
+    )
     from polygon_method.draw.diagrams import _polygon
     from polygon_method.polygons.scales import diagram_scales
+
     _, vs, as_ = diagram_scales(sol)
     for phase, scale, D in (("velocity", vs, sol.V), ("acceleration", as_, sol.A)):
         sk = _polygon(sol, scale, phase)
-        (a, b), = [pts for kind, pts, kw in sk.items
-                   if kind == "line" and kw["gid"] == f"{phase}-produced-T"]
+        ((a, b),) = [
+            pts
+            for kind, pts, kw in sk.items
+            if kind == "line" and kw["gid"] == f"{phase}-produced-T"
+        ]
         s = scale.per_cm
         bx, by = D["B"][0] / s, D["B"][1] / s
         tx, ty = D["T"][0] / s, D["T"][1] / s
@@ -500,6 +582,7 @@ def test_a_swivel_block_is_drawn_as_textbooks_draw_it():
     """A block at a fixed swivel: its pivot symbol, the lever's point under it named c1
     (c1'), and the lever's image line a c1 produced to b drawn on both polygons."""
     from polygon_method.text.steptable import steps_text
+
     sol = solve(parse_scene(SWIVEL))
     text, _, _ = render(sol, "svg", "all")
     assert 'id="ground-C"' in text
@@ -508,13 +591,11 @@ def test_a_swivel_block_is_drawn_as_textbooks_draw_it():
     assert "c1" in table and "o1" not in table
     assert "under C, relative to A" in table
     for phase, D in (("velocity", sol.V), ("acceleration", sol.A)):
-        cons = (velocity_constructions if phase == "velocity" else
-                acceleration_constructions)(sol)
+        cons = (velocity_constructions if phase == "velocity" else acceleration_constructions)(sol)
         st = next(s for s in sol.plan.steps if s.kind == "slotted")
-        line = [v for v in cons[st.index].found if v.kind == "relative" and
-                v.name.endswith("BA")]
+        line = [v for v in cons[st.index].found if v.kind == "relative" and v.name.endswith("BA")]
         assert line and line[0].start == D["A"] and line[0].end == D["B"]
-        (_, c1), = cons[st.index].named  # a, c1 and b are in line
+        ((_, c1),) = cons[st.index].named  # a, c1 and b are in line
         (ax, ay), (bx, by) = D["A"], D["B"]
         cross = (bx - ax) * (c1[1] - ay) - (by - ay) * (c1[0] - ax)
         assert abs(cross) <= 1e-9 * ((bx - ax) ** 2 + (by - ay) ** 2)

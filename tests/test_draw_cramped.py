@@ -28,18 +28,19 @@ def _pivoted(path):
     which the sheet draws with a bracket (an ellipse trammel's guides cross at a point that
     is no pivot)."""
     sc = load_scene(path)
-    ends = {p for lk in sc.links for p in lk.points} | \
-        {p for c in sc.cylinders for p in (c.barrel, c.rod)}
+    ends = {p for lk in sc.links for p in lk.points} | {
+        p for c in sc.cylinders for p in (c.barrel, c.rod)
+    }
     return any(g in ends for g in sc.ground)
 
 
-@pytest.mark.parametrize("path", [p for p in WORKED if _pivoted(p)],
-                         ids=lambda p: Path(p).stem)
+@pytest.mark.parametrize("path", [p for p in WORKED if _pivoted(p)], ids=lambda p: Path(p).stem)
 def test_fixed_pivot_brackets_keep_off_the_links(path):
     svg = _sheet(path)
     links = [g for g in svg.groups if g.startswith("link-")]
-    brackets = [g for g in svg.groups if g.startswith("ground-") and
-                not g.endswith(("-base", "-hatch"))]
+    brackets = [
+        g for g in svg.groups if g.startswith("ground-") and not g.endswith(("-base", "-hatch"))
+    ]
     assert brackets
     for g in brackets:
         tri = _polygon(svg, g)
@@ -59,7 +60,7 @@ def test_a_block_does_not_swallow_another_pin(path):
     for b in blocks:
         rect = _polygon(svg, b)
         for j in joints:
-            if j == "joint-" + b[len("block-"):]:
+            if j == "joint-" + b[len("block-") :]:
                 continue
             circle = Polygon(svg.path(j)).buffer(0)
             assert not rect.intersects(circle), f"{j} lies on {b}"
@@ -89,25 +90,36 @@ def _draws_lines(path):
     """Whether the scene's polygons draw direction lines: not a train of gears driven by
     cranks only (each gear by its ratio, test_steps.py)."""
     from polygon_method.solver.compiler import compile_plan
-    return not all(st.kind in ("crank", "second crank")
-                   or (st.kind == "rolling" and st.on in ("gear", "circle"))
-                   for st in compile_plan(load_scene(path)).steps)
+
+    return not all(
+        st.kind in ("crank", "second crank")
+        or (st.kind == "rolling" and st.on in ("gear", "circle"))
+        for st in compile_plan(load_scene(path)).steps
+    )
 
 
-@pytest.mark.parametrize("scene", [p for p in WORKED if _draws_lines(p)] + list(CORE),
-                         ids=lambda p: Path(p).stem)
+@pytest.mark.parametrize(
+    "scene", [p for p in WORKED if _draws_lines(p)] + list(CORE), ids=lambda p: Path(p).stem
+)
 def test_a_line_mark_is_not_read_with_a_point_label(scene):
     """A construction line's mark ("perp EF") keeps 1.5 mm from every image point's label,
     so that it is never read as one text with e' beside it (the worked problems and the
     core tests' scenes)."""
     import test_core
     from polygon_method import parse_scene
+
     sc = parse_scene(getattr(test_core, scene)) if scene in CORE else load_scene(scene)
     svg = Svg(svg_string(solve(sc), "all"))
     labels = [g for g in svg.groups if g.startswith("label-")]
     marks = [g for g in labels if "-mark-" in g]
-    points = [g for g in labels if "-mark-" not in g and g != "label-crank-angle"
-              and not g.startswith("label-pin-") and not g[len("label-"):][:1].isupper()]
+    points = [
+        g
+        for g in labels
+        if "-mark-" not in g
+        and g != "label-crank-angle"
+        and not g.startswith("label-pin-")
+        and not g[len("label-") :][:1].isupper()
+    ]
     assert marks and points
     for m in marks:
         for p in points:

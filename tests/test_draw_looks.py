@@ -26,11 +26,13 @@ def _turned(path, degrees):
     return solve(parse_scene(text))
 
 
-TURNED = [(ROOT / "worked_problems" / "whitworth.toml", 270),
-          (ROOT / "worked_problems" / "whitworth.toml", 0),
-          (ROOT / "worked_problems" / "whitworth.toml", 225),
-          (ROOT / "worked_problems" / "crank_slotted_lever.toml", 270),
-          (ROOT / "tests" / "textbook" / "toggle_press.toml", 90)]
+TURNED = [
+    (ROOT / "worked_problems" / "whitworth.toml", 270),
+    (ROOT / "worked_problems" / "whitworth.toml", 0),
+    (ROOT / "worked_problems" / "whitworth.toml", 225),
+    (ROOT / "worked_problems" / "crank_slotted_lever.toml", 270),
+    (ROOT / "tests" / "textbook" / "toggle_press.toml", 90),
+]
 
 
 def _solutions():
@@ -57,26 +59,37 @@ def test_the_crank_angle_keeps_off_other_pins_and_brackets(case):
         return
     arc = LineString(svg.path("crank-angle"))
     pivot = sol.scene.input.pivot
-    brackets = [g for g in svg.groups if g.startswith("ground-")
-                and not g.endswith(("-base", "-hatch"))]
+    brackets = [
+        g for g in svg.groups if g.startswith("ground-") and not g.endswith(("-base", "-hatch"))
+    ]
     for g in brackets:
         tri = Polygon(svg.path(g)).buffer(0)
         base = LineString(svg.path(f"{g}-base"))
         if g == f"ground-{pivot}":  # its own bracket may meet the arc only at the pin
             tri = tri.difference(Point(svg.path(g)[0]).buffer(0.45 * CM))
         assert not arc.intersects(tri.union(base.buffer(0.5))), f"the arc crosses {g}"
-    joints = [g for g in svg.groups if g.startswith("joint-")
-              and g not in (f"joint-{pivot}", f"joint-{sol.scene.input.tip}")]
+    joints = [
+        g
+        for g in svg.groups
+        if g.startswith("joint-") and g not in (f"joint-{pivot}", f"joint-{sol.scene.input.tip}")
+    ]
     for j in joints:
         centre = Polygon(svg.path(j)).centroid
         gap = arc.distance(centre) / CM
         assert gap >= 0.2, f"the arc passes {gap:.2f} cm from {j}"
 
 
-CIRCLES = [ROOT / "tests" / "textbook" / f"{name}.toml" for name in (
-    "watt_six_bar", "stephenson_six_bar", "peaucellier", "stone_crusher",
-    "shaper_offset_ram", "coupler_plate_four_points")] + [
-    ROOT / "worked_problems" / "engine_analytical.toml"]
+CIRCLES = [
+    ROOT / "tests" / "textbook" / f"{name}.toml"
+    for name in (
+        "watt_six_bar",
+        "stephenson_six_bar",
+        "peaucellier",
+        "stone_crusher",
+        "shaper_offset_ram",
+        "coupler_plate_four_points",
+    )
+] + [ROOT / "worked_problems" / "engine_analytical.toml"]
 
 
 @pytest.mark.parametrize("path", CIRCLES, ids=lambda p: Path(p).stem)
@@ -85,14 +98,20 @@ def test_the_circle_diagram_numbers_sit_on_their_chords_clear_of_the_rest(path):
     and touches no other chord, no other number and no link's point; on a four-link's
     circle (two chords crossing at its middle) it keeps 2 mm clear of the other chord."""
     from polygon_method.draw import render
+
     sol = solve(load_scene(path))
     svg = Svg(render(sol, "svg", "centres")[0])
-    chords = {g[len("chord-"):]: LineString(svg.path(g)) for g in svg.groups
-              if g.startswith("chord-") and not g.startswith("chord-order-")}
-    numbers = {g[len("chord-order-"):]: svg.text_box(g) for g in svg.groups
-               if g.startswith("chord-order-") and not g.endswith("-patch")}
-    points = [Polygon(svg.path(g)).buffer(0) for g in svg.groups
-              if g.startswith("circle-point-")]
+    chords = {
+        g[len("chord-") :]: LineString(svg.path(g))
+        for g in svg.groups
+        if g.startswith("chord-") and not g.startswith("chord-order-")
+    }
+    numbers = {
+        g[len("chord-order-") :]: svg.text_box(g)
+        for g in svg.groups
+        if g.startswith("chord-order-") and not g.endswith("-patch")
+    }
+    points = [Polygon(svg.path(g)).buffer(0) for g in svg.groups if g.startswith("circle-point-")]
     assert numbers
     for label, ink in numbers.items():
         assert ink.centroid.distance(chords[label]) < 0.1 * CM, f"{label}'s number is off it"
@@ -114,8 +133,11 @@ def test_a_point_s_label_sits_by_it_even_beside_a_nearer_point(name):
     of the toggle press, with d 0.6 mm from it)."""
     sol = solve(load_scene(ROOT / "tests" / "textbook" / f"{name}.toml"))
     svg = Svg(svg_string(sol, "all"))
-    dots = {g[len("velocity-point-"):]: Polygon(svg.path(g)).centroid for g in svg.groups
-            if g.startswith("velocity-point-")}
+    dots = {
+        g[len("velocity-point-") :]: Polygon(svg.path(g)).centroid
+        for g in svg.groups
+        if g.startswith("velocity-point-")
+    }
     for name, dot in dots.items():
         ink = svg.text_box(f"label-{name}")
         own = ink.distance(dot)
@@ -125,19 +147,28 @@ def test_a_point_s_label_sits_by_it_even_beside_a_nearer_point(name):
                 assert ink.distance(q) > own, f"{name}'s label is nearer {other}"
 
 
-@pytest.mark.parametrize("path", [ROOT / "worked_problems" / "crank_slotted_lever.toml",
-                                  ROOT / "tests" / "textbook" / "watt_six_bar.toml",
-                                  ROOT / "tests" / "textbook" / "toggle_press.toml"],
-                         ids=lambda p: Path(p).stem)
+@pytest.mark.parametrize(
+    "path",
+    [
+        ROOT / "worked_problems" / "crank_slotted_lever.toml",
+        ROOT / "tests" / "textbook" / "watt_six_bar.toml",
+        ROOT / "tests" / "textbook" / "toggle_press.toml",
+    ],
+    ids=lambda p: Path(p).stem,
+)
 def test_the_centres_diagram_shows_no_more_plane_than_its_centres_need(path):
     """Kennedy's lines reach no further than 0.3 of the mechanism's size beyond the
     mechanism and the centres drawn where they are, so the mechanism is drawn as large as
     the sheet allows (it was drawn in a square three times its size)."""
     from polygon_method.draw import render
+
     svg = Svg(render(solve(load_scene(path)), "svg", "centres")[0])
     joints = [Polygon(svg.path(g)).centroid for g in svg.groups if g.startswith("joint-")]
-    rings = [Polygon(svg.path(g)).centroid for g in svg.groups if g.startswith("centre-")
-             and not g.endswith(("-shaft", "-head"))]
+    rings = [
+        Polygon(svg.path(g)).centroid
+        for g in svg.groups
+        if g.startswith("centre-") and not g.endswith(("-shaft", "-head"))
+    ]
     xs, ys = [p.x for p in joints], [p.y for p in joints]
     size = max(max(xs) - min(xs), max(ys) - min(ys))
     xs += [p.x for p in rings]
@@ -149,17 +180,22 @@ def test_the_centres_diagram_shows_no_more_plane_than_its_centres_need(path):
     assert min(q[1] for q in ends) >= min(ys) - pad and max(q[1] for q in ends) <= max(ys) + pad
 
 
-@pytest.mark.parametrize("path, degrees", [
-    (ROOT / "tests" / "textbook" / "slotted_lever_270.toml", 270),
-    (ROOT / "tests" / "textbook" / "engine_inline_270.toml", 270),
-    (ROOT / "worked_problems" / "whitworth.toml", 30),
-    (ROOT / "worked_problems" / "whitworth.toml", 225),
-    (ROOT / "worked_problems" / "fourbar_acceleration.toml", -60)],
-    ids=lambda x: Path(x).stem if isinstance(x, Path) else str(x))
+@pytest.mark.parametrize(
+    "path, degrees",
+    [
+        (ROOT / "tests" / "textbook" / "slotted_lever_270.toml", 270),
+        (ROOT / "tests" / "textbook" / "engine_inline_270.toml", 270),
+        (ROOT / "worked_problems" / "whitworth.toml", 30),
+        (ROOT / "worked_problems" / "whitworth.toml", 225),
+        (ROOT / "worked_problems" / "fourbar_acceleration.toml", -60),
+    ],
+    ids=lambda x: Path(x).stem if isinstance(x, Path) else str(x),
+)
 def test_the_crank_angle_is_drawn_as_the_scene_states_it(path, degrees):
     """The arc sweeps the stated angle from +x, the stated way round (270 deg ccw is not
     drawn as 90 deg cw), and its label reads it."""
     import math
+
     sol = _turned(path, degrees)
     text = svg_string(sol, "configuration")
     svg = Svg(text)
@@ -171,14 +207,14 @@ def test_the_crank_angle_is_drawn_as_the_scene_states_it(path, degrees):
         sweep += math.remainder(a2 - a1, 2 * math.pi)
     assert math.degrees(sweep) == pytest.approx(degrees, abs=0.5)
     assert math.degrees(math.atan2(o.y - arc[0][1], arc[0][0] - o.x)) == pytest.approx(0, abs=0.5)
-    label = text[text.index('id="label-crank-angle"'):]
+    label = text[text.index('id="label-crank-angle"') :]
     assert label.split("<!--")[1].split("-->")[0].strip() == f"{abs(degrees)}\u00b0"
 
 
 def _with_blocks_on_moving_links():
     from polygon_method.scene import FixedPath
-    return [p for p in SCENES
-            if any(not isinstance(sl, FixedPath) for sl in load_scene(p).sliders)]
+
+    return [p for p in SCENES if any(not isinstance(sl, FixedPath) for sl in load_scene(p).sliders)]
 
 
 @pytest.mark.parametrize("path", _with_blocks_on_moving_links(), ids=lambda p: Path(p).stem)
@@ -187,6 +223,7 @@ def test_a_block_on_a_moving_link_sits_on_that_link_drawn(path):
     beyond the link's ends (block_on_coupler: G on BC produced) the link is drawn produced
     through it."""
     from polygon_method.scene import FixedPath
+
     sol = solve(load_scene(path))
     blocks = [sl for sl in sol.scene.sliders if not isinstance(sl, FixedPath)]
     svg = Svg(svg_string(sol, "configuration"))
@@ -204,6 +241,7 @@ def test_textbook_sheets_labels_clear_and_on_the_sheet(path):
     from shapely.geometry import box
     from polygon_method.draw import render
     from test_draw import _check_labels
+
     text, _, warnings = render(solve(load_scene(path)), "svg", "all")
     assert warnings == []
     svg = _check_labels(text)
@@ -214,8 +252,17 @@ def test_textbook_sheets_labels_clear_and_on_the_sheet(path):
         assert ink is None or sheet.contains(ink), f"{gid} is off the sheet"
 
 
-@pytest.mark.parametrize("name", ["block_on_coupler", "double_rocker", "stone_crusher",
-                                  "whitworth_180", "shaper_offset_ram", "watt_six_bar"])
+@pytest.mark.parametrize(
+    "name",
+    [
+        "block_on_coupler",
+        "double_rocker",
+        "stone_crusher",
+        "whitworth_180",
+        "shaper_offset_ram",
+        "watt_six_bar",
+    ],
+)
 def test_a_label_far_from_its_point_has_a_leader_and_a_near_one_none(name):
     """A point's label more than 6 mm from its point has a leader line to it; one within
     3 mm has none."""
@@ -223,9 +270,9 @@ def test_a_label_far_from_its_point_has_a_leader_and_a_near_one_none(name):
     svg = Svg(svg_string(sol, "all"))
     for g in svg.groups:
         for pre in ("joint-", "velocity-point-", "acceleration-point-"):
-            if not g.startswith(pre) or f"label-{g[len(pre):]}" not in svg.groups:
+            if not g.startswith(pre) or f"label-{g[len(pre) :]}" not in svg.groups:
                 continue
-            label = f"label-{g[len(pre):]}"
+            label = f"label-{g[len(pre) :]}"
             gap = svg.text_box(label).distance(Polygon(svg.path(g)).centroid) / CM
             if gap > 0.6:
                 assert f"leader-{label}" in svg.groups, f"{label}: {gap:.2f} cm, no leader"

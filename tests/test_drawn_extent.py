@@ -50,5 +50,5 @@ def test_yoke_slot_is_inside_the_configuration_scale():
     sol = solve(parse_scene(YOKE))
     space = diagram_scales(sol)[0]
     # the slot reaches the pin's height, 3 sin 60 in, on both sides of the path
-    assert 2 * 3 * 0.0254 * 3 ** 0.5 / 2 <= space.per_cm * SPACE_FIT_CM
+    assert 2 * 3 * 0.0254 * 3**0.5 / 2 <= space.per_cm * SPACE_FIT_CM
     render_pages(sol, "svg")

@@ -60,9 +60,11 @@ def test_the_horizontal_engine_against_the_book():
     for got, book in ((e.F_N, 10.96e3), (e.F_Q, 50.63e3), (e.F_T, 48.28e3), (e.T, 14.5e3)):
         assert abs(got - book) <= 0.01 * book, (got, book)
     # and the book's words as answers, checked
-    text = KHURMI + ('[answers]\ntolerance = "1%"\nN_B = "10.96 kN"\nF_B = "50.63 kN"\n'
-                     'crank_effort = "48.28 kN"\ntorque = "14.5 kN m cw"\n'
-                     'piston_effort = "49.44 kN"\n')
+    text = KHURMI + (
+        '[answers]\ntolerance = "1%"\nN_B = "10.96 kN"\nF_B = "50.63 kN"\n'
+        'crank_effort = "48.28 kN"\ntorque = "14.5 kN m cw"\n'
+        'piston_effort = "49.44 kN"\n'
+    )
     assert all(v.ok for v in check_answers(solve(parse_scene(text))))
 
 
@@ -105,7 +107,7 @@ def test_the_vertical_double_acting_engine_against_the_closed_forms():
     A, a = mpmath.pi / 4 * mpmath.mpf("0.3") ** 2, mpmath.pi / 4 * mpmath.mpf("0.05") ** 2
     F_gas = 30000 * A - 1500 * (A - a)  # down, towards the crank
     W = 225 * mpmath.mpf("9.81")  # down, towards the crank (the piston above it)
-    F_P = F_gas + W + 225 * w ** 2 * _xdd(t, R, L)
+    F_P = F_gas + W + 225 * w**2 * _xdd(t, R, L)
     n = L / R
     phi = mpmath.asin(mpmath.sin(t) / n)
     close(e.F_P, float(F_P))
@@ -131,15 +133,19 @@ def test_the_worked_flywheel_problem_against_the_independent_cycle():
         d = min(max(mpmath.degrees(t), 0), 720)
         for k in range(len(nodes) - 1):
             if FLYWHEEL_ANGLES[k] <= d <= FLYWHEEL_ANGLES[k + 1]:
-                return vals[k] + (vals[k + 1] - vals[k]) * (t - nodes[k]) / (nodes[k + 1] - nodes[k])
+                return vals[k] + (vals[k + 1] - vals[k]) * (t - nodes[k]) / (
+                    nodes[k + 1] - nodes[k]
+                )
         raise AssertionError(d)
+
     area = mpmath.pi / 4 * mpmath.mpf("0.1") ** 2
-    ref = _Reference("0.06", "0.24", 3000, 1.2, area, 4 * mpmath.pi, p,
-                     nodes + [mpmath.pi * k for k in range(5)])
+    ref = _Reference(
+        "0.06", "0.24", 3000, 1.2, area, 4 * mpmath.pi, p, nodes + [mpmath.pi * k for k in range(5)]
+    )
     tm = _check_cycle(sc, ref)
     mean, _, dE = ref.solve()
     w = 3000 * mpmath.pi / 30
-    I = dE / (w ** 2 * mpmath.mpf("0.02"))
+    I = dE / (w**2 * mpmath.mpf("0.02"))
     close(tm.flywheel[2], float(I))
     close(tm.flywheel[3], float(I / mpmath.mpf("0.15") ** 2))
     # the instant (390 deg: 30 deg into the expansion stroke)
@@ -147,9 +153,13 @@ def test_the_worked_flywheel_problem_against_the_independent_cycle():
     e = efforts(sc, sol.plan, sol.P, sol.forces)
     close(e.T, float(ref.T(mpmath.radians(390))))
     # the file's answers (4 figures) are the independent ones, and check passes them
-    values = {"T_mean": mean, "dE_max": dE, "I_flywheel": I,
-              "m_flywheel": I / mpmath.mpf("0.15") ** 2, "crank_effort":
-              ref.T(mpmath.radians(390)) / mpmath.mpf("0.06")}
+    values = {
+        "T_mean": mean,
+        "dE_max": dE,
+        "I_flywheel": I,
+        "m_flywheel": I / mpmath.mpf("0.15") ** 2,
+        "crank_effort": ref.T(mpmath.radians(390)) / mpmath.mpf("0.06"),
+    }
     for ans in sc.answers:
         if ans.key in values:
             assert abs(ans.value - float(values[ans.key])) <= 5e-4 * abs(float(values[ans.key]))

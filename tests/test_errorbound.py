@@ -23,8 +23,16 @@ from polygon_method.common.errors import SingularStepError
 from polygon_method.scene import parse_scene
 from polygon_method.motion.solution import solve
 from polygon_method.motion.sweeps import sweep
-from test_stability import (NEAR, parallelogram, parallelogram_guess, reference, slider,
-                            slider_guess, toggle, toggle_guess)
+from test_stability import (
+    NEAR,
+    parallelogram,
+    parallelogram_guess,
+    reference,
+    slider,
+    slider_guess,
+    toggle,
+    toggle_guess,
+)
 
 REF = load_reference(40)
 
@@ -60,23 +68,28 @@ def closed_form_condition(name, angle):
     slider's rod against its path (OA 50, AB 80, the path 30 below O)."""
     if name.startswith("toggle"):
         e2 = (0.1 - 0.02 * math.cos(angle)) ** 2 + (0.02 * math.sin(angle)) ** 2
-        cos_mu = (0.07 ** 2 + 0.05 ** 2 - e2) / (2 * 0.07 * 0.05)
+        cos_mu = (0.07**2 + 0.05**2 - e2) / (2 * 0.07 * 0.05)
         return math.sqrt(max(0.0, 1 - cos_mu * cos_mu))
     if name.startswith("change-point"):
         return abs(math.sin(angle))
     h = 0.05 * math.sin(angle) + 0.03
-    return math.sqrt(max(0.0, 0.08 ** 2 - h * h)) / 0.08
+    return math.sqrt(max(0.0, 0.08**2 - h * h)) / 0.08
 
 
 #: test_stability's cases outside the refusal band (with a margin for rounding), by their
 #: geometry (the refused ones are test_stability's), and more between a condition of 0.03
 #: and the band's edge, each at 10^-k from its singular angle
 EDGE_K = (1.5, 2.5, 2.7)
-MORE = [(f"{n}-{k}", mk, g, at(10.0 ** -k)) for n, mk, g, at in (
-    ("toggle", toggle, toggle_guess, lambda x: math.pi - x),
-    ("change-point+", parallelogram, parallelogram_guess, lambda x: x),
-    ("change-point-", parallelogram, parallelogram_guess, lambda x: -x),
-    ("slider", slider, slider_guess, lambda x: math.pi / 2 - x)) for k in EDGE_K]
+MORE = [
+    (f"{n}-{k}", mk, g, at(10.0**-k))
+    for n, mk, g, at in (
+        ("toggle", toggle, toggle_guess, lambda x: math.pi - x),
+        ("change-point+", parallelogram, parallelogram_guess, lambda x: x),
+        ("change-point-", parallelogram, parallelogram_guess, lambda x: -x),
+        ("slider", slider, slider_guess, lambda x: math.pi / 2 - x),
+    )
+    for k in EDGE_K
+]
 APPLY = [n for n in NEAR + MORE if closed_form_condition(n[0], n[3]) > 1.2e-3]
 
 
@@ -99,11 +112,21 @@ def test_the_issues_cases_are_within_their_bound(name, make, guess, angle):
     scene = parse_scene(make(angle))
     sol = solve(scene)
     ref = reference(scene, guess(angle))
-    err = compare(Kinematics("solve", sol.P, sol.V, sol.A, sol.W, sol.Al,
-                             {k: (v[0], v[1]) for k, v in sol.S.items()}), ref, scene)
+    err = compare(
+        Kinematics(
+            "solve", sol.P, sol.V, sol.A, sol.W, sol.Al, {k: (v[0], v[1]) for k, v in sol.S.items()}
+        ),
+        ref,
+        scene,
+    )
     b = error_bounds(sol)
-    for kind, table in (("position", b.P), ("velocity", b.V), ("acceleration", b.A),
-                        ("omega", b.W), ("alpha", b.Al)):
+    for kind, table in (
+        ("position", b.P),
+        ("velocity", b.V),
+        ("acceleration", b.A),
+        ("omega", b.W),
+        ("alpha", b.Al),
+    ):
         assert err[kind] <= max(table.values()), (kind, err[kind], max(table.values()))
 
 
@@ -122,15 +145,14 @@ def test_bound_grows_with_one_over_the_condition_as_derived():
 def test_json_has_a_bound_for_every_quantity(tmp_path, capsys):
     text = toggle(math.pi - 0.0015)
     path = tmp_path / "toggle.toml"
-    path.write_text(text + '[pins]\nC = { radius = 5 }\n[loads]\nC = { force = [10, 0] }\n')
+    path.write_text(text + "[pins]\nC = { radius = 5 }\n[loads]\nC = { force = [10, 0] }\n")
     assert main(["solve", "--json", str(path)]) == 0
     d = json.loads(capsys.readouterr().out)
     eb = d["error_bounds"]
     assert set(eb["points"]) == set(d["points"])
     assert set(eb["links"]) == set(d["links"])
     assert set(eb["pins"]) == set(d["pins"])
-    assert set(eb["relative_to"]) == {"position", "velocity", "acceleration", "omega",
-                                      "alpha"}
+    assert set(eb["relative_to"]) == {"position", "velocity", "acceleration", "omega", "alpha"}
     for p, q in eb["points"].items():
         assert set(q) == {"position", "velocity", "acceleration"}
     assert eb["worst"] == max(v for q in eb["points"].values() for v in q.values())
@@ -165,8 +187,24 @@ def test_sweep_error_column_bounds_every_sample(tmp_path, capsys):
     path = tmp_path / "pg.toml"
     path.write_text(text)
     out = tmp_path / "pg.csv"
-    assert main(["sweep", str(path), "--from", "0.1", "--to", "1", "--step", "0.3",
-                 "--csv", str(out), "--error-bound"]) == 0
+    assert (
+        main(
+            [
+                "sweep",
+                str(path),
+                "--from",
+                "0.1",
+                "--to",
+                "1",
+                "--step",
+                "0.3",
+                "--csv",
+                str(out),
+                "--error-bound",
+            ]
+        )
+        == 0
+    )
     rows = list(csv.DictReader(io.StringIO(out.read_text())))
     assert rows and "err_max [1]" in rows[0]
     res = sweep(parse_scene(text), [math.radians(float(r["theta [deg]"])) for r in rows])
@@ -188,8 +226,11 @@ def test_error_bound_without_csv_is_one_line(tmp_path, capsys):
     assert out == "" and err.count("\n") == 1 and "--csv" in err
 
 
-WORKED = sorted((__import__("pathlib").Path(__file__).resolve().parent.parent
-                 / "worked_problems").glob("*.toml"))
+WORKED = sorted(
+    (__import__("pathlib").Path(__file__).resolve().parent.parent / "worked_problems").glob(
+        "*.toml"
+    )
+)
 
 
 @pytest.mark.parametrize("path", WORKED, ids=[p.stem for p in WORKED])
@@ -198,6 +239,7 @@ def test_worked_problems_within_their_bounds(path):
     second sliders): each quantity within its bound of the reference; the bounds far
     below the promise of 1e-9."""
     from polygon_method.scene import load_scene
+
     sol = solve(load_scene(str(path)))
     for kind, name, err, bound in compare_case(sol, REF):
         assert err <= bound, (kind, name, err, bound)
@@ -211,6 +253,7 @@ def test_worked_problems_bounds_are_not_absurdly_loose():
     one; one that says 1e5 tells the user nothing)."""
     from error_bounds import NOISE
     from polygon_method.scene import load_scene
+
     ratios = []
     for path in WORKED:
         for kind, name, err, bound in compare_case(solve(load_scene(str(path))), REF):
@@ -223,21 +266,28 @@ def test_worked_problems_bounds_are_not_absurdly_loose():
     assert median < 1000 and p90 < 1e4, (median, p90)
 
 
-@pytest.mark.parametrize("name", ["whitworth", "six_link_second_slider",
-                                  "two_slider_mechanism", "crank_slotted_lever"])
+@pytest.mark.parametrize(
+    "name", ["whitworth", "six_link_second_slider", "two_slider_mechanism", "crank_slotted_lever"]
+)
 def test_sweep_bounds_are_the_solves_bounds(name):
     """The same formulas on arrays: each sample of a sweep has the bounds of a solve at
     that angle."""
     from polygon_method.solver.kinematics import evaluate
     from polygon_method.scene import load_scene
+
     scene = load_scene(str(WORKED[0].parent / f"{name}.toml"))
     angles = [0.3, 1.7, 2.9, 4.4]
     res = sweep(scene, angles)
     b = error_bounds(res)
     for i, th in enumerate(res.theta):
         one = error_bounds(evaluate(res.plan, theta=float(th)))
-        for table, single in ((b.P, one.P), (b.V, one.V), (b.A, one.A), (b.W, one.W),
-                              (b.Al, one.Al)):
+        for table, single in (
+            (b.P, one.P),
+            (b.V, one.V),
+            (b.A, one.A),
+            (b.W, one.W),
+            (b.Al, one.Al),
+        ):
             for k, v in single.items():
                 got = v if isinstance(table[k], float) else table[k][i]
                 assert got == pytest.approx(v, rel=1e-6, abs=1e-30), (k, th)
@@ -275,7 +325,10 @@ def test_text_report_lists_at_most_twelve_bounds(tmp_path, capsys):
     assert main(["solve", str(path)]) == 0
     out = capsys.readouterr().out
     block = out.split("estimated error above 1e-09")[1].split("\nnote:")[0]
-    listed = [ln for ln in block.splitlines()[1:] if ln.startswith("  ") and ": " in ln
-              and not ln.startswith("  ...")]
+    listed = [
+        ln
+        for ln in block.splitlines()[1:]
+        if ln.startswith("  ") and ": " in ln and not ln.startswith("  ...")
+    ]
     assert len(listed) == 12
     assert "more (every bound: solve --json, error_bounds)" in block

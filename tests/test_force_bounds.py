@@ -49,7 +49,7 @@ acceleration = "30 rad/s^2 cw"
 B = { force = [40, -25] }
 """
 #: the crank's limit: |O4 A| = AB + BO4 (0.29 m), A at 0.1 m from O2, O4 0.2 m away
-LIMIT = math.degrees(math.acos(-(0.29 ** 2 - 0.05) / 0.04))
+LIMIT = math.degrees(math.acos(-(0.29**2 - 0.05) / 0.04))
 
 
 @pytest.fixture(autouse=True)
@@ -75,6 +75,7 @@ def _matrix_mp(sc, ref):
         (px, py), (qx, qy) = T(lk.p), T(lk.q)
         dx, dy = qx - px, qy - py
         return (px + lam * dx - mu * dy, py + lam * dy + mu * dx)
+
     M, rhs = mpmath.zeros(9, 9), mpmath.zeros(9, 1)
     body = {"O2-A": 0, "A-B": 1, "B-O4": 2}
 
@@ -90,6 +91,7 @@ def _matrix_mp(sc, ref):
         rhs[i] -= F[0]
         rhs[i + 1] -= F[1]
         rhs[i + 2] -= where[0] * F[1] - where[1] * F[0] + c
+
     force("O2-A", 0, pos("O2"))
     force("A-B", 2, pos("A"))
     force("O2-A", 2, pos("A"), -1)
@@ -101,13 +103,21 @@ def _matrix_mp(sc, ref):
         lk = sc.link(m.body)
         lam, mu = mpf(m.lam), mpf(m.mu)
         G, a = at(pos, lk, lam, mu), at(acc, lk, lam, mu)
-        known(lk.key, (m.mass * (g.g * g.direction[0] - a[0]),
-                       m.mass * (g.g * g.direction[1] - a[1])), G, -mpf(m.inertia) * Al[lk.key])
+        known(
+            lk.key,
+            (m.mass * (g.g * g.direction[0] - a[0]), m.mass * (g.g * g.direction[1] - a[1])),
+            G,
+            -mpf(m.inertia) * Al[lk.key],
+        )
     for ld in sc.loads:
         known("A-B", tuple(mpf(c) for c in ld.force), pos(ld.target))
     x = mpmath.lu_solve(M, rhs)
-    return {("O2", "O2-A", FRAME): (x[0], x[1]), ("A", "A-B", "O2-A"): (x[2], x[3]),
-            ("B", "B-O4", "A-B"): (x[4], x[5]), ("O4", "B-O4", FRAME): (x[6], x[7])}, x[8]
+    return {
+        ("O2", "O2-A", FRAME): (x[0], x[1]),
+        ("A", "A-B", "O2-A"): (x[2], x[3]),
+        ("B", "B-O4", "A-B"): (x[4], x[5]),
+        ("O4", "B-O4", FRAME): (x[6], x[7]),
+    }, x[8]
 
 
 def test_the_force_bounds_hold_and_grow_towards_the_toggle():
@@ -137,13 +147,13 @@ def _reference(sc, sol):
 def test_the_bounds_are_shown_in_the_text_the_steps_and_the_json():
     from polygon_method.text.report import solution_text
     from polygon_method.text.steptable import steps_text
+
     sol = solve(parse_scene(TEXT % (LIMIT - 1e-4)))
     b = force_bounds(sol)
     text = solution_text(sol)
     assert "estimated error of the forces above 1e-09" in text
     assert f"the driver's torque: {b.effort:.2g}" in text
-    assert f"estimated error of these forces: {b.worst:.2g} of the largest force" in \
-        steps_text(sol)
+    assert f"estimated error of these forces: {b.worst:.2g} of the largest force" in steps_text(sol)
     d = json.loads(json.dumps(sol.to_dict(), allow_nan=False))["error_bounds"]["forces"]
     assert d["input"] == b.effort and d["pins"]["B"][0]["bound"] == b.pins[("B", "A-B", "B-O4")]
     assert d["relative_to"]["force"] == b.force
@@ -153,8 +163,15 @@ def test_the_bounds_are_shown_in_the_text_the_steps_and_the_json():
 
 
 def test_no_useful_bound_is_null_with_its_reason():
-    b = ForceBounds({("B", "A-B", "B-O4"): 3.0, ("A", "A-B", "O2-A"): 1e-12}, {"X": 1e100},
-                    1e100, None, {}, 10.0, 0.5)
+    b = ForceBounds(
+        {("B", "A-B", "B-O4"): 3.0, ("A", "A-B", "O2-A"): 1e-12},
+        {"X": 1e100},
+        1e100,
+        None,
+        {},
+        10.0,
+        0.5,
+    )
     d = json.loads(json.dumps(bounds_dict(b), allow_nan=False))
     assert d["pins"]["B"][0]["bound"] is None and d["pins"]["A"][0]["bound"] == 1e-12
     assert d["guides"]["X"] is None and d["input"] is None
@@ -163,6 +180,7 @@ def test_no_useful_bound_is_null_with_its_reason():
 
 def test_the_sweep_gives_the_forces_worst_bound():
     from polygon_method.motion.sweeps import sweep
+
     sc = parse_scene(TEXT % 60.0)
     res = sweep(sc, np.radians(np.linspace(0.0, LIMIT - 1e-3, 40)))
     cols = {name: a for name, _, a in res.columns(error_bound=True)}

@@ -21,16 +21,24 @@ from polygon_method import load_scene, solve
 from polygon_method.draw import render_pages
 from polygon_method.draw.forces import NEGLIGIBLE
 from polygon_method.forces import side_label
-from polygon_method.polygons.scales import (choose_scale, extent, finer, force_scale, parse_scale,
-                                   polygon_corners)
+from polygon_method.polygons.scales import (
+    choose_scale,
+    extent,
+    finer,
+    force_scale,
+    parse_scale,
+    polygon_corners,
+)
 from polygon_method.text.steptable import steps_text
 from test_draw import CM, Svg, vector_length_cm
 from test_forces import CASES, with_forces
 from test_paper import _centre, _check_page, _said
 
 ROOT = Path(__file__).resolve().parents[1]
-WORKED = [ROOT / "worked_problems" / "engine_forces.toml",
-          ROOT / "worked_problems" / "fourbar_forces.toml"]
+WORKED = [
+    ROOT / "worked_problems" / "engine_forces.toml",
+    ROOT / "worked_problems" / "fourbar_forces.toml",
+]
 
 
 def _scenes():
@@ -38,8 +46,11 @@ def _scenes():
     gravity in a slanting direction, a load and a couple."""
     out = [pytest.param(load_scene(p), id=p.stem) for p in WORKED]
     for c in CASES[:: max(1, len(CASES) // 4)][:4]:
-        out.append(pytest.param(with_forces(load_scene(c.values[0]), 3),
-                                id=f"{Path(c.values[0]).stem}+masses"))
+        out.append(
+            pytest.param(
+                with_forces(load_scene(c.values[0]), 3), id=f"{Path(c.values[0]).stem}+masses"
+            )
+        )
     return out
 
 
@@ -126,8 +137,9 @@ def test_each_polygon_side_measures_its_force_and_each_polygon_closes(scene):
                 assert f"{tag}-side-{k}-shaft" not in svg.groups
                 continue
             length, (dx, dy) = vector_length_cm(svg, f"{tag}-side-{k}")
-            assert length == pytest.approx(_magnitude(sol, side) / fs.per_cm, abs=tol), \
-                side_label(side, f.numbers)
+            assert length == pytest.approx(_magnitude(sol, side) / fs.per_cm, abs=tol), side_label(
+                side, f.numbers
+            )
             # the drawn side points the force's way
             assert dx * fs.per_cm == pytest.approx(side.vector[0], abs=tol * fs.per_cm)
             assert dy * fs.per_cm == pytest.approx(side.vector[1], abs=tol * fs.per_cm)
@@ -139,14 +151,17 @@ def test_each_polygon_side_measures_its_force_and_each_polygon_closes(scene):
             gid = f"{tag}-chord-{n}"
             if f"{gid}-shaft" in svg.groups:
                 length, _ = vector_length_cm(svg, gid)
-                assert any(length == pytest.approx(_magnitude(sol, c) / fs.per_cm, abs=tol)
-                           for c, _, _ in st.chords)
+                assert any(
+                    length == pytest.approx(_magnitude(sol, c) / fs.per_cm, abs=tol)
+                    for c, _, _ in st.chords
+                )
         # the unknowns' direction lines pass through the pole, where the polygon closes
         pole = _centre(svg, f"{tag}-pole")
         for k, _ in st.unknown:
             (x1, y1), (x2, y2) = svg.path(f"{tag}-line-{k}")[:2]
-            d = abs((x2 - x1) * (pole[1] - y1) - (y2 - y1) * (pole[0] - x1)) / \
-                math.hypot(x2 - x1, y2 - y1)
+            d = abs((x2 - x1) * (pole[1] - y1) - (y2 - y1) * (pole[0] - x1)) / math.hypot(
+                x2 - x1, y2 - y1
+            )
             assert d / CM < tol * 10
     assert drawn_polygons >= 1
 
@@ -178,8 +193,7 @@ def test_each_free_body_draws_its_forces_along_their_lines(scene):
             cyl = sc.cylinder(fb.body)  # a cylinder: its length at this instant
             p, q = (cyl.barrel, cyl.rod) if cyl else (sc.link(fb.body).p, sc.link(fb.body).q)
             length = math.dist(sol.P[p], sol.P[q]) if cyl else sc.link(fb.body).length
-            got = math.dist(_centre(svg, f"{tag}-joint-{p}"),
-                            _centre(svg, f"{tag}-joint-{q}")) / CM
+            got = math.dist(_centre(svg, f"{tag}-joint-{p}"), _centre(svg, f"{tag}-joint-{q}")) / CM
             assert got * space.per_cm == pytest.approx(length, rel=1e-5)
         for k, side in enumerate(fb.sides):
             gid = f"{tag}-force-{k}"
@@ -195,18 +209,26 @@ def test_each_free_body_draws_its_forces_along_their_lines(scene):
             tail = svg.path(f"{gid}-shaft")[0]
             tip = svg.path(f"{gid}-head")[0]
             at = (side.at[0] / space.per_cm, side.at[1] / space.per_cm)
-            ends = [((x - svg_origin(svg, tag, space, sol)[0]) / CM,
-                     -(y - svg_origin(svg, tag, space, sol)[1]) / CM) for x, y in (tail, tip)]
+            ends = [
+                (
+                    (x - svg_origin(svg, tag, space, sol)[0]) / CM,
+                    -(y - svg_origin(svg, tag, space, sol)[1]) / CM,
+                )
+                for x, y in (tail, tip)
+            ]
             assert min(math.dist(e, at) for e in ends) < tol * 10
             if side.what == "inertia":  # its line at h = I alpha / (m a_G) from G
-                m = next(m for m in sc.masses
-                         if (f"block {m.body}" if m.block else m.body) == side.on)
+                m = next(
+                    m for m in sc.masses if (f"block {m.body}" if m.block else m.body) == side.on
+                )
                 if m.block:
                     continue
                 lk = sc.link(m.body)
                 h = m.inertia * abs(sol.Al[lk.key]) / _magnitude(sol, side)
-                G = (f.inertia_of(side.on).G[0] / space.per_cm,
-                     f.inertia_of(side.on).G[1] / space.per_cm)
+                G = (
+                    f.inertia_of(side.on).G[0] / space.per_cm,
+                    f.inertia_of(side.on).G[1] / space.per_cm,
+                )
                 d = abs(dx * (G[1] - ends[0][1]) - dy * (G[0] - ends[0][0])) / n
                 assert d * space.per_cm == pytest.approx(h, abs=tol * space.per_cm * 10)
 
@@ -215,8 +237,13 @@ def svg_origin(svg, tag, space, sol):
     """Where the point (0, 0) of the scene is on the page (pt), from a drawn joint."""
     fb = next(fb for fb in sol.forces.free if f"free-body-{fb.number}" == tag)
     cyl = sol.scene.cylinder(fb.body)
-    name = fb.body[6:] if fb.body.startswith("block ") else \
-        cyl.barrel if cyl is not None else sol.scene.link(fb.body).p
+    name = (
+        fb.body[6:]
+        if fb.body.startswith("block ")
+        else cyl.barrel
+        if cyl is not None
+        else sol.scene.link(fb.body).p
+    )
     x, y = _centre(svg, f"{tag}-joint-{name}")
     px, py = sol.P[name]
     return (x - px / space.per_cm * CM, y + py / space.per_cm * CM)
@@ -244,14 +271,22 @@ def test_steps_gives_the_force_scale_and_each_side_in_cm():
     said = dict(re.findall(r"(F_\d\d) (\d+\.\d\d) cm", " ".join(across)))
     for name, answer in (("F_32", 558.7), ("F_34", 471.6), ("F_41", 451.9)):
         assert float(said[name]) == pytest.approx(answer / 100, abs=0.006)
-    sides = re.search(r"force polygon at 1 cm = 100 N, from its pole, head to tail: (.*?); "
-                      r"it closes", flat).group(1)
+    sides = re.search(
+        r"force polygon at 1 cm = 100 N, from its pole, head to tail: (.*?); "
+        r"it closes",
+        flat,
+    ).group(1)
     assert "F_32^n" in sides and "P at E 5.00 cm" in sides  # the 500 N load: 5 cm
 
 
 def _run(*args):
-    return subprocess.run([sys.executable, "-m", "polygon_method", *args], cwd=ROOT,
-                          capture_output=True, text=True, timeout=300)
+    return subprocess.run(
+        [sys.executable, "-m", "polygon_method", *args],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
 
 
 def test_draw_forces_on_the_command_line(tmp_path):
@@ -261,8 +296,16 @@ def test_draw_forces_on_the_command_line(tmp_path):
     assert "force polygons 1 cm = 10 kN" in r.stdout and "A4" in r.stdout
     assert out.read_text().startswith("<?xml")
     # the same sheet by its --diagram name, at a force scale given
-    r = _run("draw", str(WORKED[0]), "--diagram", "forces", "--scale", "1 cm = 5 kN", "-o",
-             str(tmp_path / "b.svg"))
+    r = _run(
+        "draw",
+        str(WORKED[0]),
+        "--diagram",
+        "forces",
+        "--scale",
+        "1 cm = 5 kN",
+        "-o",
+        str(tmp_path / "b.svg"),
+    )
     assert r.returncode == 0 and "force polygons 1 cm = 5 kN" in r.stdout, r.stderr
     # a scene without masses: one line, exit 2, nothing written
     bad = tmp_path / "none.svg"
@@ -281,6 +324,7 @@ def test_the_page_draws_each_inertia_force_on_its_offset_line_over_the_cycle():
     from polygon_method.page.data import INERTIA_CM, page_data
     from polygon_method.page.frames import frames
     from polygon_method.page.html import page_html
+
     offsets = 0
     for path in WORKED:
         sc = load_scene(path)
@@ -290,8 +334,9 @@ def test_the_page_draws_each_inertia_force_on_its_offset_line_over_the_cycle():
         n = len(res.theta)
         largest = 0.0
         for b in d["bodies"]:
-            m = next(m for m in sc.masses if (f"block {m.body}" if m.block else m.body)
-                     == b["body"])
+            m = next(
+                m for m in sc.masses if (f"block {m.body}" if m.block else m.body) == b["body"]
+            )
             for k in range(n):
                 if m.block:
                     a = (res.A[m.body][0][k], res.A[m.body][1][k])
@@ -301,10 +346,13 @@ def test_the_page_draws_each_inertia_force_on_its_offset_line_over_the_cycle():
 
                     def at(T):
                         (px, py), (qx, qy) = T[lk.p], T[lk.q]
-                        px, py, qx, qy = (float(x[k]) if hasattr(x, "__len__") else float(x)
-                                          for x in (px, py, qx, qy))
+                        px, py, qx, qy = (
+                            float(x[k]) if hasattr(x, "__len__") else float(x)
+                            for x in (px, py, qx, qy)
+                        )
                         dx, dy = qx - px, qy - py
                         return (px + m.lam * dx - m.mu * dy, py + m.lam * dy + m.mu * dx)
+
                     a, G = at(res.A), at(res.P)
                 F = (b["F"][2 * k], b["F"][2 * k + 1])
                 assert F[0] == pytest.approx(-m.mass * a[0], rel=1e-5, abs=1e-6 * m.mass)
@@ -312,23 +360,28 @@ def test_the_page_draws_each_inertia_force_on_its_offset_line_over_the_cycle():
                 assert b["G"][2 * k] == pytest.approx(G[0], rel=1e-5, abs=1e-9)
                 largest = max(largest, math.hypot(*F))
                 h = (b["H"][2 * k] - G[0], b["H"][2 * k + 1] - G[1])
-                couple = 0.0 if m.block else -m.inertia * float(np.broadcast_to(
-                    res.Al[m.body], (n,))[k])
+                couple = (
+                    0.0 if m.block else -m.inertia * float(np.broadcast_to(res.Al[m.body], (n,))[k])
+                )
                 lk_len = max(lk.length for lk in sc.links)
-                if abs(couple) > 1e-9 * math.hypot(*F) * lk_len and \
-                        abs(couple) < 0.999 * math.hypot(*F) * lk_len:  # the line within reach
+                if (
+                    abs(couple) > 1e-9 * math.hypot(*F) * lk_len
+                    and abs(couple) < 0.999 * math.hypot(*F) * lk_len
+                ):  # the line within reach
                     offsets += 1
                     assert h[0] * F[1] - h[1] * F[0] == pytest.approx(couple, rel=1e-4)
                     assert h[0] * F[0] + h[1] * F[1] == pytest.approx(
-                        0.0, abs=1e-4 * math.hypot(*h) * math.hypot(*F))  # nearest G
+                        0.0, abs=1e-4 * math.hypot(*h) * math.hypot(*F)
+                    )  # nearest G
                 elif abs(couple) < 1e-12:  # through G (to the page's rounding)
                     assert math.hypot(*h) < 1e-5 * lk_len
         assert largest / d["perCm"] <= INERTIA_CM + 1e-9
         stated = parse_scale(d["text"])
         assert stated.per_cm == pytest.approx(d["perCm"])
         assert largest / finer(stated).per_cm > INERTIA_CM  # the finest that holds it
-        assert ("inertia forces (each on its line h from G): "
-                f"<b id=\"scale-inertia\">{d['text']}</b>") in page_html(fr)
+        assert (
+            f'inertia forces (each on its line h from G): <b id="scale-inertia">{d["text"]}</b>'
+        ) in page_html(fr)
     assert offsets > 0  # some body's force is off G in some frame
     # no masses: no inertia forces on the page
     plain = frames(load_scene(ROOT / "worked_problems" / "fourbar_image_points.toml"), 12)
@@ -338,6 +391,7 @@ def test_the_page_draws_each_inertia_force_on_its_offset_line_over_the_cycle():
 def test_a_plan_the_forces_do_not_cover_is_refused_by_the_sheet_in_one_line():
     from polygon_method.common.errors import PolygonMethodError
     from polygon_method.scene import scene_from_table, scene_table
+
     raw = scene_table(load_scene(ROOT / "tests" / "textbook" / "class3_triangle_plate.toml"))
     raw["gravity"] = {}
     sol = solve(scene_from_table(raw))

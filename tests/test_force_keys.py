@@ -95,12 +95,16 @@ def test_engine_thrusts_from_the_rods_obliquity():
     assert F_P > 0
     assert _value(sol, "rod_thrust") == pytest.approx(F_P / cos_phi, rel=1e-9)
     assert _value(sol, "side_thrust") == pytest.approx(
-        F_P * math.sqrt(1 - cos_phi ** 2) / cos_phi, rel=1e-9)
+        F_P * math.sqrt(1 - cos_phi**2) / cos_phi, rel=1e-9
+    )
 
 
 def _checked(path, answers):
-    text = path.read_text().split("[answers]")[0] + "[answers]\n" + "".join(
-        f'{k} = "{v}"\n' for k, v in answers.items())
+    text = (
+        path.read_text().split("[answers]")[0]
+        + "[answers]\n"
+        + "".join(f'{k} = "{v}"\n' for k, v in answers.items())
+    )
     sol = solve(parse_scene(text, str(path)))
     return {v.key: v for v in check_answers(sol)}
 
@@ -109,10 +113,13 @@ def test_check_marks_the_true_values_right_and_a_slip_wrong():
     sol = solve(load_scene(FOURBAR))
     F, M = _newton(sol)
     u = sol.scene.length_unit
-    right = {"Fi_A-B": f"{sol.value('Fi', ('A-B',)):.6g} N",
-             "Ci_A-B": f"{sol.value('Ci', ('A-B',)):.6g} N m",
-             "h_A-B": f"{sol.value('h', ('A-B',)) / u:.6g}",  # in the scene's mm
-             "shaking_force": f"{F:.6g} N", "shaking_moment": f"{abs(M):.6g} N m"}
+    right = {
+        "Fi_A-B": f"{sol.value('Fi', ('A-B',)):.6g} N",
+        "Ci_A-B": f"{sol.value('Ci', ('A-B',)):.6g} N m",
+        "h_A-B": f"{sol.value('h', ('A-B',)) / u:.6g}",  # in the scene's mm
+        "shaking_force": f"{F:.6g} N",
+        "shaking_moment": f"{abs(M):.6g} N m",
+    }
     got = _checked(FOURBAR, right)
     assert all(v.ok for v in got.values()), [v for v in got.values() if not v.ok]
     wrong = dict(right, **{"Fi_A-B": f"{1.2 * sol.value('Fi', ('A-B',)):.6g} N"})
@@ -122,9 +129,14 @@ def test_check_marks_the_true_values_right_and_a_slip_wrong():
     piston = next(m.body for m in es.scene.masses if m.block)
     m = next(m for m in es.scene.masses if m.block)
     fi = m.mass * math.hypot(*es.A[piston])
-    got = _checked(ENGINE, {f"Fi_{piston}": f"{fi:.6g} N",
-                            "rod_thrust": f"{_value(es, 'rod_thrust'):.6g} N",
-                            "side_thrust": f"{_value(es, 'side_thrust'):.6g} N"})
+    got = _checked(
+        ENGINE,
+        {
+            f"Fi_{piston}": f"{fi:.6g} N",
+            "rod_thrust": f"{_value(es, 'rod_thrust'):.6g} N",
+            "side_thrust": f"{_value(es, 'side_thrust'):.6g} N",
+        },
+    )
     assert all(v.ok for v in got.values()), got
 
 

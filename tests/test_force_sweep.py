@@ -32,8 +32,10 @@ from polygon_method.steps.base import Instant
 from test_forces import CASES, _driver_power, _kin, with_forces
 
 ROOT = Path(__file__).resolve().parent.parent
-WORKED = [ROOT / "worked_problems" / f"{n}.toml"
-          for n in ("fourbar_forces", "engine_forces", "shaper_forces", "engine_flywheel")]
+WORKED = [
+    ROOT / "worked_problems" / f"{n}.toml"
+    for n in ("fourbar_forces", "engine_forces", "shaper_forces", "engine_flywheel")
+]
 N = 3600
 
 
@@ -61,8 +63,12 @@ def _numbers(f, n=None):
     """name -> value (arrays broadcast to ``n`` positions): the effort, a second crank's
     torque, the shaking force and moment, every pin force's and guide force's components,
     every inertia force and couple."""
-    out = {"effort": f.input_torque, "shake_x": f.shaking_force[0],
-           "shake_y": f.shaking_force[1], "shake_m": f.shaking_moment}
+    out = {
+        "effort": f.input_torque,
+        "shake_x": f.shaking_force[0],
+        "shake_y": f.shaking_force[1],
+        "shake_m": f.shaking_moment,
+    }
     if f.second_torque is not None:
         out["second"] = f.second_torque
     for k, p in enumerate(f.pins):
@@ -94,8 +100,9 @@ def test_the_vectorised_sweep_is_the_one_instant_solve_at_every_angle(path):
         assert one.keys() == many.keys()
         big = max(abs(v) for v in one.values())
         for key, v in one.items():
-            arm = size if key in ("effort", "second", "shake_m") or key.startswith("couple") \
-                else 1.0
+            arm = (
+                size if key in ("effort", "second", "shake_m") or key.startswith("couple") else 1.0
+            )
             err = abs(many[key][k] - v) / (big * arm)
             worst = max(worst, err)
             assert err <= 1e-12, (path.stem, math.degrees(th), key, many[key][k], v)
@@ -167,8 +174,10 @@ def _same(a, b) -> bool:
     if isinstance(a, tuple):
         return len(a) == len(b) and all(_same(x, y) for x, y in zip(a, b))
     if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
-        return np.array_equal(np.broadcast_to(a, np.shape(b) or np.shape(a)),
-                              np.broadcast_to(b, np.shape(a) or np.shape(b)))
+        return np.array_equal(
+            np.broadcast_to(a, np.shape(b) or np.shape(a)),
+            np.broadcast_to(b, np.shape(a) or np.shape(b)),
+        )
     return a == b and type(a) is type(b) or (a is None and b is None)
 
 
@@ -194,8 +203,11 @@ def _check_roads(f, whole):
         assert _same(a.couple, b.couple) and _same(a.offset, b.offset)
 
 
-QUICK = [c for c in CASES
-         if all(hasattr(ROOMS[st.kind], "bind") for st in compile_plan(load_scene(c.values[0])).steps)]
+QUICK = [
+    c
+    for c in CASES
+    if all(hasattr(ROOMS[st.kind], "bind") for st in compile_plan(load_scene(c.values[0])).steps)
+]
 
 
 def test_the_short_road_covers_the_common_kinds():

@@ -34,12 +34,21 @@ from engines import _precision, closed_forms, engine  # noqa: F401  (a fixture)
 from polygon_method.solver.compiler import compile_plan
 from polygon_method.common.errors import PolygonMethodError, SceneError
 from polygon_method.forces import FRAME, owners
-from polygon_method.scene import FixedPath, GuideSlider, YokeSlot, load_scene, parse_scene, scene_from_table, scene_table
+from polygon_method.scene import (
+    FixedPath,
+    GuideSlider,
+    YokeSlot,
+    load_scene,
+    parse_scene,
+    scene_from_table,
+    scene_table,
+)
 from polygon_method.motion.solution import solve
 
 ROOT = Path(__file__).resolve().parent.parent
-FILES = sorted(glob.glob(str(ROOT / "worked_problems" / "*.toml"))) + \
-    sorted(glob.glob(str(ROOT / "tests" / "textbook" / "*.toml")))
+FILES = sorted(glob.glob(str(ROOT / "worked_problems" / "*.toml"))) + sorted(
+    glob.glob(str(ROOT / "tests" / "textbook" / "*.toml"))
+)
 
 
 def _covered(scene):
@@ -61,15 +70,16 @@ def with_forces(scene, seed):
     raw = scene_table(scene)
     unit = scene.length_unit
     masses = {}
-    moving = [lk for lk in scene.links
-              if not (lk.p in scene.ground and lk.q in scene.ground)]
+    moving = [lk for lk in scene.links if not (lk.p in scene.ground and lk.q in scene.ground)]
     for lk in moving:
         lam, mu = rnd.uniform(-0.2, 1.2), rnd.choice([-1, 1]) * rnd.uniform(0.05, 0.4)
         d1, d2 = _on_link(lk.length, lam, mu, unit)
-        masses[lk.key] = {"mass": f"{rnd.uniform(0.5, 8):.4f} kg",
-                          "distances": {lk.p: d1, lk.q: d2},
-                          "turn": "ccw" if mu > 0 else "cw",
-                          "gyration": lk.length * rnd.uniform(0.1, 0.6) / unit}
+        masses[lk.key] = {
+            "mass": f"{rnd.uniform(0.5, 8):.4f} kg",
+            "distances": {lk.p: d1, lk.q: d2},
+            "turn": "ccw" if mu > 0 else "cw",
+            "gyration": lk.length * rnd.uniform(0.1, 0.6) / unit,
+        }
     for s in scene.blocks:  # (not a driving wheel's centre: the wheel is its body)
         if isinstance(s, (FixedPath, GuideSlider, YokeSlot)) and s.point not in masses:
             masses[s.point] = {"mass": f"{rnd.uniform(0.5, 8):.4f} kg"}
@@ -85,8 +95,10 @@ def with_forces(scene, seed):
         loads[lk.key] = {"torque": f"{rnd.uniform(1, 50):.3f} N m ccw"}
     ind = raw.pop("indicator", None)
     if ind is not None:  # a steady gas force instead, its power in the balance as a load's
-        loads[ind.get("piston", scene.indicator.piston)] = {"pressure": "3 bar",
-                                                            "bore": ind["bore"]}
+        loads[ind.get("piston", scene.indicator.piston)] = {
+            "pressure": "3 bar",
+            "bore": ind["bore"],
+        }
     raw["loads"] = loads
     return scene_from_table(raw)
 
@@ -113,6 +125,7 @@ def _kin(sol, m):
         (px, py), (qx, qy) = T[lk.p], T[lk.q]
         dx, dy = qx - px, qy - py
         return (px + m.lam * dx - m.mu * dy, py + m.lam * dy + m.mu * dx)
+
     return at(sol.P), at(sol.V), at(sol.A), sol.Al[lk.key], sol.W[lk.key]
 
 
@@ -148,10 +161,23 @@ def test_the_cases_are_there():
     kinds = set()
     for c in CASES:
         kinds |= {st.kind for st in compile_plan(load_scene(c.values[0])).steps}
-    assert {"crank", "dyad", "slider", "carried", "slotted", "block", "second crank",
-            "cylinder", "yoke", "peg", "wheel centre", "rolling", "triad", "rack",
-            "rolling driver"} <= kinds \
-        and len(CASES) >= 15
+    assert {
+        "crank",
+        "dyad",
+        "slider",
+        "carried",
+        "slotted",
+        "block",
+        "second crank",
+        "cylinder",
+        "yoke",
+        "peg",
+        "wheel centre",
+        "rolling",
+        "triad",
+        "rack",
+        "rolling driver",
+    } <= kinds and len(CASES) >= 15
 
 
 @pytest.mark.parametrize("path", CASES)
@@ -219,8 +245,7 @@ def _newton_euler(sol, f):
         couple(sc.link(inp.wheel).key, f.input_torque)
     elif inp.block is not None:  # the driver pushes the block along its guide
         u = sc.slider(inp.block).u
-        add(f"block {inp.block}", (f.input_torque * u[0], f.input_torque * u[1]),
-            sol.P[inp.block])
+        add(f"block {inp.block}", (f.input_torque * u[0], f.input_torque * u[1]), sol.P[inp.block])
     else:
         couple(sc.link(inp.crank).key, f.input_torque)
     if inp.second is not None:
@@ -238,8 +263,9 @@ def _newton_euler(sol, f):
         G = e[5] if len(e) > 5 else (e[3][0][1] if e[3] else (0.0, 0.0))  # massless: any
         mom = sum((r[0] - G[0]) * F[1] - (r[1] - G[1]) * F[0] for F, r in e[3]) + sum(e[4])
         fscale = sum(math.hypot(*F) for F, _ in e[3]) + (e[6] if len(e) > 6 else 0.0)
-        mscale = sum(math.hypot(r[0] - G[0], r[1] - G[1]) * math.hypot(*F) for F, r in e[3]) \
-            + sum(abs(c) for c in e[4])
+        mscale = sum(math.hypot(r[0] - G[0], r[1] - G[1]) * math.hypot(*F) for F, r in e[3]) + sum(
+            abs(c) for c in e[4]
+        )
         out[body] = (math.hypot(e[0], e[1]), abs(mom), fscale, mscale)
     return out
 
@@ -257,10 +283,15 @@ def test_newton_euler_on_every_body(path, seed):
         assert rf <= 1e-9 * fs, (body, rf, fs)
         assert rm <= 1e-9 * ms, (body, rm, ms)
     # every load of the scene acts on one body, once, as given
-    given = sorted((ld.target, ld.force or ld.torque) for ld in sc.loads
-                   if ld.target not in sc.ground)
-    seen = sorted((it[0].split(" ")[-1], it[1]) for items in f.applied.values()
-                  for it in items if not it[0].startswith("weight"))
+    given = sorted(
+        (ld.target, ld.force or ld.torque) for ld in sc.loads if ld.target not in sc.ground
+    )
+    seen = sorted(
+        (it[0].split(" ")[-1], it[1])
+        for items in f.applied.values()
+        for it in items
+        if not it[0].startswith("weight")
+    )
     assert given == seen
 
 
@@ -287,8 +318,10 @@ def test_shaking_force_and_moment_from_the_whole(path):
             mscale += abs(ld.torque)
     for ms in sc.masses:
         G, v, a, al, w = _kin(sol, ms)
-        for F in ((ms.mass * g.g * g.direction[0], ms.mass * g.g * g.direction[1]),
-                  (-ms.mass * a[0], -ms.mass * a[1])):
+        for F in (
+            (ms.mass * g.g * g.direction[0], ms.mass * g.g * g.direction[1]),
+            (-ms.mass * a[0], -ms.mass * a[1]),
+        ):
             fx += F[0]
             fy += F[1]
             m += G[0] * F[1] - G[1] * F[0]
@@ -303,8 +336,14 @@ def test_shaking_force_and_moment_from_the_whole(path):
 @pytest.mark.parametrize("theta", [30, 60, 100, 135, 200, 300])
 def test_engine_closed_forms(theta):
     r, l, rpm, m, p, bore = 150, 600, 1800, 2.5, 2.0, 100
-    sc = engine(theta, r=r, l=l, rpm=rpm, m=m, extra=f'[loads]\nB = {{ pressure = "{p} N/mm^2", '
-                f'bore = {bore}, direction = 180 }}\n')
+    sc = engine(
+        theta,
+        r=r,
+        l=l,
+        rpm=rpm,
+        m=m,
+        extra=f'[loads]\nB = {{ pressure = "{p} N/mm^2", bore = {bore}, direction = 180 }}\n',
+    )
     f = solve(sc).forces
     F_gas = p * 1e6 * mpmath.pi / 4 * (mpmath.mpf(bore) / 1000) ** 2  # towards O
     cf = closed_forms(0, theta, r, l, rpm, m, F_gas)
@@ -312,6 +351,7 @@ def test_engine_closed_forms(theta):
 
     def close(got, want):
         assert abs(got - float(want)) <= 1e-9 * abs(float(want)), (got, float(want))
+
     close(f.input_torque, -T_turn)  # the driver holds the turning moment back
     close(math.hypot(*f.pin("B", "AB")), abs(F_Q))
     close(math.hypot(*f.pin("A", "AB")), abs(F_Q))  # a massless rod: one force along it
@@ -331,9 +371,9 @@ def _fourbar_U(m_list, th):
     O4 = (mpmath.mpf("0.2"), mpmath.mpf(0))
     A = (a * mpmath.cos(th), a * mpmath.sin(th))
     dx, dy = O4[0] - A[0], O4[1] - A[1]
-    d = mpmath.sqrt(dx ** 2 + dy ** 2)
-    k = (b ** 2 - c ** 2 + d ** 2) / (2 * d)
-    h = mpmath.sqrt(b ** 2 - k ** 2)
+    d = mpmath.sqrt(dx**2 + dy**2)
+    k = (b**2 - c**2 + d**2) / (2 * d)
+    h = mpmath.sqrt(b**2 - k**2)
     B = (A[0] + k * dx / d - h * dy / d, A[1] + k * dy / d + h * dx / d)  # B above
     ends = {"O2-A": ((0, 0), A), "A-B": (A, B), "B-O4": (B, O4)}
     U = 0
@@ -393,24 +433,30 @@ speed = "450 rpm ccw"
 """
 
 
-@pytest.mark.parametrize("extra, words", [
-    ('[masses]\nAB = { mass = "-2 kg" }', "[masses] AB (line 15): a mass must be positive"),
-    ('[masses]\nAB = { mass = "2 kN" }', "'kN' is a unit of force, not of mass"),
-    ('[masses]\nAB = { mass = 2, centre = "B", along = 20 }', "not both"),
-    ('[masses]\nAB = { mass = 2, centre = "O" }', "'O' is not a point of link AB"),
-    ('[masses]\nAB = { mass = 2, intertia = 1 }', "unknown key 'intertia' (did you mean 'inertia'?)"),
-    ('[masses]\nAB = { mass = 2, inertia = 1, gyration = 30 }', "not both"),
-    ('[masses]\nA = { mass = 2 }', "A is no slider"),
-    ('[masses]\nB = { mass = 2, along = 3 }', "give only mass"),
-    ('[masses]\nBC = { mass = 2 }', "no link BC in [links]"),
-    ('[masses]\nAB = 2', "a mass is { mass"),
-    ('[gravity]\ng = 0', "g must be positive"),
-    ('[gravity]\ndirecton = 270', "unknown key 'directon' (did you mean 'direction'?)"),
-    ('[loads]\nB = { pressure = "1 MPa", direction = 0 }', "no bore"),
-    ('[loads]\nA = { pressure = "1 MPa", bore = 100, direction = 180 }', "A is no slider"),
-    ('[loads]\nB = { pressure = "1 mpa", bore = 100, direction = 180 }', "unknown unit 'mpa'"),
-    ('[loads]\nB = { pressure = "1 MPa", bore = 100, rod = 120, direction = 0 }', "thinner"),
-])
+@pytest.mark.parametrize(
+    "extra, words",
+    [
+        ('[masses]\nAB = { mass = "-2 kg" }', "[masses] AB (line 15): a mass must be positive"),
+        ('[masses]\nAB = { mass = "2 kN" }', "'kN' is a unit of force, not of mass"),
+        ('[masses]\nAB = { mass = 2, centre = "B", along = 20 }', "not both"),
+        ('[masses]\nAB = { mass = 2, centre = "O" }', "'O' is not a point of link AB"),
+        (
+            "[masses]\nAB = { mass = 2, intertia = 1 }",
+            "unknown key 'intertia' (did you mean 'inertia'?)",
+        ),
+        ("[masses]\nAB = { mass = 2, inertia = 1, gyration = 30 }", "not both"),
+        ("[masses]\nA = { mass = 2 }", "A is no slider"),
+        ("[masses]\nB = { mass = 2, along = 3 }", "give only mass"),
+        ("[masses]\nBC = { mass = 2 }", "no link BC in [links]"),
+        ("[masses]\nAB = 2", "a mass is { mass"),
+        ("[gravity]\ng = 0", "g must be positive"),
+        ("[gravity]\ndirecton = 270", "unknown key 'directon' (did you mean 'direction'?)"),
+        ('[loads]\nB = { pressure = "1 MPa", direction = 0 }', "no bore"),
+        ('[loads]\nA = { pressure = "1 MPa", bore = 100, direction = 180 }', "A is no slider"),
+        ('[loads]\nB = { pressure = "1 mpa", bore = 100, direction = 180 }', "unknown unit 'mpa'"),
+        ('[loads]\nB = { pressure = "1 MPa", bore = 100, rod = 120, direction = 0 }', "thinner"),
+    ],
+)
 def test_bad_force_input_is_one_located_line(extra, words):
     with pytest.raises(SceneError) as e:
         parse_scene(BASE + extra, file="engine.toml")
@@ -423,8 +469,11 @@ def test_a_step_not_covered_is_refused_in_one_line_naming_it():
     raw = scene_table(sc)
     raw["gravity"] = {}
     sol = solve(scene_from_table(raw))
-    with pytest.raises(PolygonMethodError, match=r"a triad whose plate is made of three links "
-                       r"is not solved for forces yet \(step 2, triad"):
+    with pytest.raises(
+        PolygonMethodError,
+        match=r"a triad whose plate is made of three links "
+        r"is not solved for forces yet \(step 2, triad",
+    ):
         sol.forces
     d = sol.to_dict()
     assert d["forces"] is None and any("not solved for forces yet" in w for w in d["warnings"])
@@ -437,15 +486,17 @@ def test_a_scene_without_masses_is_as_before():
 
 
 def test_units_of_the_force_chapter():
-    sc = parse_scene(BASE + '[masses]\nAB = { mass = "4 lb", gyration = "2 in", along = '
-                     '"0.1 m" }\nB = { mass = "500 g" }\nOA = { mass = 1, inertia = '
-                     '"2000 kg cm^2" }\n[loads]\nB = { pressure = "3 bar", bore = "4 in", '
-                     'rod = "1 in", direction = 180 }')
+    sc = parse_scene(
+        BASE + '[masses]\nAB = { mass = "4 lb", gyration = "2 in", along = '
+        '"0.1 m" }\nB = { mass = "500 g" }\nOA = { mass = 1, inertia = '
+        '"2000 kg cm^2" }\n[loads]\nB = { pressure = "3 bar", bore = "4 in", '
+        'rod = "1 in", direction = 180 }'
+    )
     ab, b, oa = sc.masses
-    assert ab.mass == 4 * 0.45359237 and ab.inertia == pytest.approx(4 * 0.45359237 * 0.0508 ** 2)
+    assert ab.mass == 4 * 0.45359237 and ab.inertia == pytest.approx(4 * 0.45359237 * 0.0508**2)
     assert ab.lam == pytest.approx(0.1 / 0.6) and b.mass == 0.5 and oa.inertia == 0.2
     fx, fy = sc.loads[0].force
-    assert fx == pytest.approx(-3e5 * math.pi / 4 * (0.1016 ** 2 - 0.0254 ** 2)) and fy == 0
+    assert fx == pytest.approx(-3e5 * math.pi / 4 * (0.1016**2 - 0.0254**2)) and fy == 0
 
 
 def test_the_worked_engine_and_its_written_answers():
@@ -459,17 +510,26 @@ def test_the_worked_engine_and_its_written_answers():
     r, L = mpmath.mpf("0.3"), mpmath.mpf("1.2")
     w = 2 * mpmath.pi * 250 / 60
     th = mpmath.radians(60)
-    a = -w ** 2 * mpmath.diff(lambda t: r * mpmath.cos(t)
-                              + mpmath.sqrt(L ** 2 - (r * mpmath.sin(t)) ** 2), th, 2)
+    a = -(w**2) * mpmath.diff(
+        lambda t: r * mpmath.cos(t) + mpmath.sqrt(L**2 - (r * mpmath.sin(t)) ** 2), th, 2
+    )
     F_L = mpmath.mpf("0.35e6") * mpmath.pi / 4 * mpmath.mpf("0.5") ** 2
     F_P = F_L - 250 * a
     phi = mpmath.asin(mpmath.sin(th) / 4)
     F_Q, F_N = F_P / mpmath.cos(phi), F_P * mpmath.tan(phi)
     F_T = F_Q * mpmath.sin(th + phi)
     T = F_T * r
-    want = {"a_B": a, "F_L": F_L / 1000, "F_I": 250 * a / 1000, "F_P": F_P / 1000,
-            "phi": mpmath.degrees(phi), "F_Q": F_Q / 1000, "F_N": F_N / 1000,
-            "F_T": F_T / 1000, "T": T / 1000}
+    want = {
+        "a_B": a,
+        "F_L": F_L / 1000,
+        "F_I": 250 * a / 1000,
+        "F_P": F_P / 1000,
+        "phi": mpmath.degrees(phi),
+        "F_Q": F_Q / 1000,
+        "F_N": F_N / 1000,
+        "F_T": F_T / 1000,
+        "T": T / 1000,
+    }
     text = path.read_text()
     for key, value in want.items():
         written = re.search(rf"#.*\b{key} = (?:[^=\n]*= )?([\d.]+)", text)
@@ -478,6 +538,7 @@ def test_the_worked_engine_and_its_written_answers():
 
     def close(got, w):
         assert abs(got - float(w)) <= 1e-9 * abs(float(w))
+
     close(-f.input_torque, T)
     close(f.pin("B", "AB")[0], -F_Q * mpmath.cos(phi))  # the rod pushes... on the piston
     close(math.hypot(*f.pin("B", "AB")), F_Q)
@@ -488,10 +549,12 @@ def test_the_worked_engine_and_its_written_answers():
 
 # ----- the views
 
+
 def test_solve_json_and_steps_show_the_forces(capsys):
     import json
 
     from polygon_method.cli import main
+
     path = ROOT / "worked_problems" / "engine_forces.toml"
     assert main(["solve", "--json", str(path)]) == 0
     d = json.loads(capsys.readouterr().out)
@@ -507,9 +570,13 @@ def test_solve_json_and_steps_show_the_forces(capsys):
     for fmt in ("text", "markdown"):
         assert main(["steps", "--format", fmt, str(path)]) == 0
         out = capsys.readouterr().out
-        for head in ("6. Inertia forces (D'Alembert)", "7. Forces, group by group",
-                     "Step 2, link AB, slider B on the horizontal path", "Step 1, crank OA",
-                     "8. The driving torque and the frame"):
+        for head in (
+            "6. Inertia forces (D'Alembert)",
+            "7. Forces, group by group",
+            "Step 2, link AB, slider B on the horizontal path",
+            "Step 1, crank OA",
+            "8. The driving torque and the frame",
+        ):
             assert head in out, (fmt, head)
         assert "T on OA = 14490 N m cw" in out
 
@@ -520,6 +587,7 @@ def test_every_force_problem_writes_finite_json_and_words(path):
 
     from polygon_method.text.report import solution_text
     from polygon_method.text.steptable import steps_text
+
     sol = solve(with_forces(load_scene(path), 7))
     text = json.dumps(sol.to_dict(), allow_nan=False)
     assert '"forces": {' in text
@@ -530,6 +598,7 @@ def test_every_force_problem_writes_finite_json_and_words(path):
 def test_a_refused_scene_still_shows_its_motion_and_says_why():
     from polygon_method.text.report import solution_text
     from polygon_method.text.steptable import steps_text
+
     raw = scene_table(load_scene(ROOT / "tests" / "textbook" / "class3_triangle_plate.toml"))
     raw["masses"] = {"AB": {"mass": 2}}
     sol = solve(scene_from_table(raw))
@@ -545,6 +614,7 @@ def test_the_turning_moment_over_a_cycle_in_the_sweep():
     import numpy as np
 
     from polygon_method.motion.sweeps import sweep
+
     sc = load_scene(ROOT / "worked_problems" / "engine_forces.toml")
     angles = np.radians(np.arange(0.0, 360.0, 7.5))
     res = sweep(sc, angles)
@@ -554,17 +624,19 @@ def test_the_turning_moment_over_a_cycle_in_the_sweep():
     F_L = mpmath.mpf("0.35e6") * mpmath.pi / 4 * mpmath.mpf("0.5") ** 2
 
     def x(t):
-        return r * mpmath.cos(t) + mpmath.sqrt(L ** 2 - (r * mpmath.sin(t)) ** 2)
+        return r * mpmath.cos(t) + mpmath.sqrt(L**2 - (r * mpmath.sin(t)) ** 2)
+
     want = []
     for t in np.radians(res.degrees):
         t = mpmath.mpf(float(t))
-        F_P = F_L + 250 * w ** 2 * mpmath.diff(x, t, 2)  # effort towards O
+        F_P = F_L + 250 * w**2 * mpmath.diff(x, t, 2)  # effort towards O
         want.append(-float(F_P * -mpmath.diff(x, t)))  # the driver's: -(turning moment)
     want = np.array(want)
     assert len(res) == len(angles)
     assert np.max(np.abs(cols["torque_inertia"] - want)) <= 1e-9 * np.max(np.abs(want))
-    assert np.max(np.abs(cols["shake_x"] - 250 * cols["ax_B"] * -1)) <= \
-        1e-9 * np.max(np.abs(250 * cols["ax_B"]))
+    assert np.max(np.abs(cols["shake_x"] - 250 * cols["ax_B"] * -1)) <= 1e-9 * np.max(
+        np.abs(250 * cols["ax_B"])
+    )
 
 
 @pytest.mark.parametrize("path", CASES[1::4])
@@ -573,6 +645,7 @@ def test_the_sweep_balances_power_at_every_angle(path):
 
     from polygon_method.forces import analyse
     from polygon_method.motion.sweeps import sweep
+
     sc = with_forces(load_scene(path), 8)
     # a crank: every 5 deg of a turn (from 3 deg: a parallel crank's dead points, where a
     # sweep's force analysis is refused, are at whole fives); a driving block: its stroke
@@ -605,9 +678,11 @@ def test_the_sweep_balances_power_at_every_angle(path):
 
 # ----- checking force answers
 
+
 def _check(scene, text):
     from polygon_method.check import check_answers
     from polygon_method.scene import parse_answers
+
     _, answers = parse_answers(text, scene)
     return {v.key: v for v in check_answers(solve(scene), answers)}
 
@@ -615,20 +690,31 @@ def _check(scene, text):
 def test_engine_force_answers_and_the_piston_inertia_left_out():
     """The slip's numbers from the closed forms with the gas force alone."""
     sc = load_scene(ROOT / "worked_problems" / "engine_forces.toml")
-    F_L = 0.35e6 * math.pi / 4 * 0.5 ** 2
+    F_L = 0.35e6 * math.pi / 4 * 0.5**2
     phi = math.asin(math.sin(math.radians(60)) / 4)
-    T = F_L * 0.3 * (math.sin(math.radians(60)) + math.sin(math.radians(120))
-                     / (2 * math.sqrt(16 - math.sin(math.radians(60)) ** 2)))
-    got = _check(sc, f'[answers]\nF_B = "{F_L / math.cos(phi):.5g} N"\n'
-                     f'N_B = "{F_L * math.tan(phi):.5g} N"\ntorque = "{T:.5g} N m cw"\n'
-                     'F_O = "50.64 kN"\n')
+    T = (
+        F_L
+        * 0.3
+        * (
+            math.sin(math.radians(60))
+            + math.sin(math.radians(120)) / (2 * math.sqrt(16 - math.sin(math.radians(60)) ** 2))
+        )
+    )
+    got = _check(
+        sc,
+        f'[answers]\nF_B = "{F_L / math.cos(phi):.5g} N"\n'
+        f'N_B = "{F_L * math.tan(phi):.5g} N"\ntorque = "{T:.5g} N m cw"\n'
+        'F_O = "50.64 kN"\n',
+    )
     for key in ("F_B", "N_B"):
         assert not got[key].ok and got[key].mistake == "piston_inertia_left_out", key
     # the torque: the same number is the power balance without inertia (both are said)
     t = got["torque"]
     assert not t.ok and t.mistake in ("piston_inertia_left_out", "no_inertia")
-    assert "power balance without the inertia" in t.diagnosis and \
-        "reciprocating parts at B left out" in t.diagnosis
+    assert (
+        "power balance without the inertia" in t.diagnosis
+        and "reciprocating parts at B left out" in t.diagnosis
+    )
     assert got["F_O"].ok  # a massless crank and rod pass the thrust to the main bearing
 
 
@@ -664,11 +750,14 @@ acceleration = "200 rad/s^2 ccw"
 """
 
 
-@pytest.mark.parametrize("extra, words", [
-    ('[answers]\nF_A = "2 kN"', "a force answer needs the force analysis"),
-    ('[masses]\n"A-B" = { mass = 2 }\n[answers]\nN_A = "2 kN"', "N_X names a slider's block"),
-    ('[masses]\n"A-B" = { mass = 2 }\n[answers]\nF_Q = "2 kN"', "no point Q"),
-])
+@pytest.mark.parametrize(
+    "extra, words",
+    [
+        ('[answers]\nF_A = "2 kN"', "a force answer needs the force analysis"),
+        ('[masses]\n"A-B" = { mass = 2 }\n[answers]\nN_A = "2 kN"', "N_X names a slider's block"),
+        ('[masses]\n"A-B" = { mass = 2 }\n[answers]\nF_Q = "2 kN"', "no point Q"),
+    ],
+)
 def test_bad_force_answer_keys(extra, words):
     with pytest.raises(SceneError, match=re.escape(words)):
         parse_scene(BASE_FOURBAR + extra)
@@ -678,11 +767,15 @@ def test_a_link_on_a_point_of_the_frame():
     """A dyad hung on a point carried on a link fixed to the ground (a frame member): its
     reaction is the frame's (in the shaking force), and the fixed link's own mass loads
     nothing."""
-    sc = parse_scene(BASE_FOURBAR.replace('"B-O4" = 0.18', '"B-E" = 0.18\n"O2-O4" = 0.2')
-                     .replace("[assembly]", '[points]\nE = { on = "O2-O4", distances = '
-                              '{ O2 = 0.15, O4 = 0.08 }, turn = "ccw" }\n[assembly]')
-                     + '[masses]\n"A-B" = { mass = 3, gyration = 0.05 }\n"B-E" = '
-                     '{ mass = 2 }\n"O2-O4" = { mass = 50 }\n[gravity]\n')
+    sc = parse_scene(
+        BASE_FOURBAR.replace('"B-O4" = 0.18', '"B-E" = 0.18\n"O2-O4" = 0.2').replace(
+            "[assembly]",
+            '[points]\nE = { on = "O2-O4", distances = '
+            '{ O2 = 0.15, O4 = 0.08 }, turn = "ccw" }\n[assembly]',
+        )
+        + '[masses]\n"A-B" = { mass = 3, gyration = 0.05 }\n"B-E" = '
+        '{ mass = 2 }\n"O2-O4" = { mass = 50 }\n[gravity]\n'
+    )
     sol = solve(sc)
     f = sol.forces
     assert ("E", "B-E", FRAME) in [(p.point, p.on, p.by) for p in f.pins]
@@ -691,8 +784,7 @@ def test_a_link_on_a_point_of_the_frame():
         G, v, a, al, w = _kin(sol, m)
         fx += -m.mass * a[0]
         fy += -m.mass * (a[1] + 9.81)
-    assert math.hypot(f.shaking_force[0] - fx, f.shaking_force[1] - fy) <= \
-        1e-9 * math.hypot(fx, fy)
+    assert math.hypot(f.shaking_force[0] - fx, f.shaking_force[1] - fy) <= 1e-9 * math.hypot(fx, fy)
 
 
 def _fourbar_matrix(sol):
@@ -702,6 +794,7 @@ def _fourbar_matrix(sol):
     the driving torque; the loads at points of a link and couples on links, the weights
     and the inertia as the known side. Returns {name: value}."""
     import numpy as np
+
     sc = sol.scene
     (o2, a, b, o4) = ("O2", "A", "B", "O4")
     crank, coupler, rocker = "O2-A", "A-B", "B-O4"
@@ -712,19 +805,28 @@ def _fourbar_matrix(sol):
     known = {}
     for m in sc.masses:
         G, v, acc, al, w = _kin(sol, m)
-        F = (m.mass * g.g * g.direction[0] - m.mass * acc[0],
-             m.mass * g.g * g.direction[1] - m.mass * acc[1])
+        F = (
+            m.mass * g.g * g.direction[0] - m.mass * acc[0],
+            m.mass * g.g * g.direction[1] - m.mass * acc[1],
+        )
         known[m.body] = [F[0], F[1], (G[0], G[1]), -m.inertia * al, []]
     for ld in sc.loads:
         if ld.force is not None:
-            body = next(lk.key for lk in sc.links if ld.target in lk.points
-                        or (sc.carried(ld.target) and sc.carried(ld.target).link == lk.key))
+            body = next(
+                lk.key
+                for lk in sc.links
+                if ld.target in lk.points
+                or (sc.carried(ld.target) and sc.carried(ld.target).link == lk.key)
+            )
             known[body][4].append((ld.force, P[ld.target]))
         else:
             known[ld.target][3] += ld.torque
     # each body: the unknown forces on it, (column of x, sign, point); moments about G
-    on = {crank: [(0, 1, o2), (2, -1, a)], coupler: [(2, 1, a), (4, -1, b)],
-          rocker: [(4, 1, b), (6, 1, o4)]}
+    on = {
+        crank: [(0, 1, o2), (2, -1, a)],
+        coupler: [(2, 1, a), (4, -1, b)],
+        rocker: [(4, 1, b), (6, 1, o4)],
+    }
     for body, forces in on.items():
         fx, fy, G, c, loads = known[body]
         for f, at in loads:
@@ -745,16 +847,20 @@ def _fourbar_matrix(sol):
     return {"F_O2": x[0:2], "F_A": x[2:4], "F_B": x[4:6], "F_O4": x[6:8], "T": x[8]}
 
 
-@pytest.mark.parametrize("path", [ROOT / "worked_problems" / "fourbar_forces.toml"]
-                         + [c.values[0] for c in CASES if Path(c.values[0]).stem in
-                            ("fourbar_acceleration",)])
+@pytest.mark.parametrize(
+    "path",
+    [ROOT / "worked_problems" / "fourbar_forces.toml"]
+    + [c.values[0] for c in CASES if Path(c.values[0]).stem in ("fourbar_acceleration",)],
+)
 def test_four_bar_against_the_matrix_method(path):
     sc = load_scene(path)
     if not sc.has_forces:  # the worked four-bars of the kinematics, given masses here
         raw = scene_table(sc)
-        raw["masses"] = {"O2-A": {"mass": 2, "along": 40}, "A-B": {"mass": 5, "gyration": 90},
-                         "B-O4": {"mass": 3, "distances": {"B": 200, "O4": 150},
-                                  "turn": "cw", "inertia": 0.04}}
+        raw["masses"] = {
+            "O2-A": {"mass": 2, "along": 40},
+            "A-B": {"mass": 5, "gyration": 90},
+            "B-O4": {"mass": 3, "distances": {"B": 200, "O4": 150}, "turn": "cw", "inertia": 0.04},
+        }
         raw["gravity"] = {"direction": 250}
         raw["loads"] = {"B": {"force": [300, -200]}, "B-O4": {"torque": "15 N m ccw"}}
         sc = scene_from_table(raw)
@@ -765,6 +871,7 @@ def test_four_bar_against_the_matrix_method(path):
 
     def close(got, want):
         assert math.hypot(got[0] - want[0], got[1] - want[1]) <= 1e-9 * scale
+
     close(f.pin("O2", "O2-A", FRAME), ref["F_O2"])
     close(f.pin("A", "A-B", "O2-A"), ref["F_A"])
     close(f.pin("B", "B-O4", "A-B"), ref["F_B"])
@@ -778,14 +885,14 @@ def test_the_worked_four_bar_and_its_written_answers():
     text = path.read_text()
     for key in ("F_O2", "F_A", "F_B", "F_O4"):
         written = re.search(rf"#.*\b{key} = ([\d.]+)", text)
-        assert float(written.group(1)) == pytest.approx(float(math.hypot(*ref[key])),
-                                                        rel=6e-4), key
+        assert float(written.group(1)) == pytest.approx(float(math.hypot(*ref[key])), rel=6e-4), key
     written = re.search(r"#.*\bT = ([\d.]+) \((c?cw)[:)]", text)
     assert float(written.group(1)) == pytest.approx(abs(float(ref["T"])), rel=6e-4)
     assert written.group(2) == ("ccw" if ref["T"] > 0 else "cw")
 
 
 # ----- a block on a moving link: the crank and slotted lever
+
 
 def _slotted_lever_matrix(sol):
     """The matrix method on a crank and slotted lever with a ram (crank O2-A, block A in
@@ -796,6 +903,7 @@ def _slotted_lever_matrix(sol):
     {name: value}; the guides' couples must come out zero (the blocks' loads pass
     through their pins)."""
     import numpy as np
+
     sc = sol.scene
     P = sol.P
     g = sc.gravity
@@ -829,26 +937,25 @@ def _slotted_lever_matrix(sol):
         rhs[i + 1] -= F[1]
         rhs[i + 2] -= at[0] * F[1] - at[1] * F[0] + c
 
-    force("O2-A", 0, 1, P["O2"])                      # F_O2 on the crank by the frame
-    force("block A", 2, 3, P["A"])                    # F_A on block A by the crank
+    force("O2-A", 0, 1, P["O2"])  # F_O2 on the crank by the frame
+    force("block A", 2, 3, P["A"])  # F_A on block A by the crank
     force("O2-A", 2, 3, P["A"], -1.0)
-    force("block A", 4, None, P["A"], 1.0, nA)        # N_A on block A by the lever
+    force("block A", 4, None, P["A"], 1.0, nA)  # N_A on block A by the lever
     force("O4-P", 4, None, P["A"], -1.0, nA)
-    M[3 * row["block A"] + 2, 5] += 1.0               # C_A on block A by the lever
+    M[3 * row["block A"] + 2, 5] += 1.0  # C_A on block A by the lever
     M[3 * row["O4-P"] + 2, 5] -= 1.0
-    force("O4-P", 6, 7, P["O4"])                      # F_O4 on the lever by the frame
-    force("P-Q", 8, 9, P["P"])                        # F_P on the rod by the lever
+    force("O4-P", 6, 7, P["O4"])  # F_O4 on the lever by the frame
+    force("P-Q", 8, 9, P["P"])  # F_P on the rod by the lever
     force("O4-P", 8, 9, P["P"], -1.0)
-    force("P-Q", 10, 11, P["Q"])                      # F_Q on the rod by block Q
+    force("P-Q", 10, 11, P["Q"])  # F_Q on the rod by block Q
     force("block Q", 10, 11, P["Q"], -1.0)
-    force("block Q", 12, None, P["Q"], 1.0, nQ)       # N_Q on block Q by the path
-    M[3 * row["block Q"] + 2, 13] += 1.0              # C_Q on block Q by the path
-    M[3 * row["O2-A"] + 2, 14] += 1.0                 # T on the crank
+    force("block Q", 12, None, P["Q"], 1.0, nQ)  # N_Q on block Q by the path
+    M[3 * row["block Q"] + 2, 13] += 1.0  # C_Q on block Q by the path
+    M[3 * row["O2-A"] + 2, 14] += 1.0  # T on the crank
     for ms in sc.masses:
         G, v, a, al, w = _kin(sol, ms)
         W = (ms.mass * g.g * g.direction[0], ms.mass * g.g * g.direction[1])
-        known(_body(ms), (W[0] - ms.mass * a[0], W[1] - ms.mass * a[1]), G,
-              -ms.inertia * al)
+        known(_body(ms), (W[0] - ms.mass * a[0], W[1] - ms.mass * a[1]), G, -ms.inertia * al)
     for ld in sc.loads:
         body = {"P": "O4-P", "Q": "block Q"}.get(ld.target, ld.target)
         if ld.force is not None:
@@ -856,29 +963,49 @@ def _slotted_lever_matrix(sol):
         else:
             known(body, (0.0, 0.0), c=ld.torque)
     x = np.linalg.solve(M, rhs)
-    return {"F_O2": x[0:2], "F_A": x[2:4], "N_A": x[4] * np.array(nA), "C_A": x[5],
-            "F_O4": x[6:8], "F_P": x[8:10], "F_Q": x[10:12], "N_Q": x[12] * np.array(nQ),
-            "C_Q": x[13], "T": x[14]}
+    return {
+        "F_O2": x[0:2],
+        "F_A": x[2:4],
+        "N_A": x[4] * np.array(nA),
+        "C_A": x[5],
+        "F_O4": x[6:8],
+        "F_P": x[8:10],
+        "F_Q": x[10:12],
+        "N_Q": x[12] * np.array(nQ),
+        "C_Q": x[13],
+        "T": x[14],
+    }
 
 
-@pytest.mark.parametrize("name, angle", [("crank_slotted_lever", 45), ("crank_slotted_lever", 200),
-                                         ("whitworth", 30), ("whitworth", 250)])
+@pytest.mark.parametrize(
+    "name, angle",
+    [
+        ("crank_slotted_lever", 45),
+        ("crank_slotted_lever", 200),
+        ("whitworth", 30),
+        ("whitworth", 250),
+    ],
+)
 def test_slotted_lever_against_the_matrix_method(name, angle):
     sc0 = load_scene(ROOT / "worked_problems" / f"{name}.toml")
     d1, d2 = _on_link(sc0.link("O4-P").length, 0.6, 0.08, sc0.length_unit)
     raw = scene_table(sc0)
     raw["input"]["angle"] = angle
     raw["input"]["acceleration"] = "4 rad/s^2 ccw"
-    raw["masses"] = {"O2-A": {"mass": 3, "along": 40, "gyration": 35},
-                     "A": {"mass": "1.5 kg"},
-                     "O4-P": {"mass": 12, "distances": {"O4": d1, "P": d2}, "turn": "ccw",
-                              "gyration": 45},
-                     "P-Q": {"mass": 4, "gyration": 60},
-                     "Q": {"mass": "25 kg"}}
+    raw["masses"] = {
+        "O2-A": {"mass": 3, "along": 40, "gyration": 35},
+        "A": {"mass": "1.5 kg"},
+        "O4-P": {"mass": 12, "distances": {"O4": d1, "P": d2}, "turn": "ccw", "gyration": 45},
+        "P-Q": {"mass": 4, "gyration": 60},
+        "Q": {"mass": "25 kg"},
+    }
     raw["gravity"] = {"direction": 260}
-    raw["loads"] = {"Q": {"force": "2 kN", "direction": 180},
-                    "P": {"force": [150, -80]},
-                    "P-Q": {"torque": "12 N m cw"}, "O4-P": {"torque": "30 N m ccw"}}
+    raw["loads"] = {
+        "Q": {"force": "2 kN", "direction": 180},
+        "P": {"force": [150, -80]},
+        "P-Q": {"torque": "12 N m cw"},
+        "O4-P": {"torque": "30 N m ccw"},
+    }
     raw.pop("answers", None)
     sol = solve(scene_from_table(raw))
     f = sol.forces
@@ -889,6 +1016,7 @@ def test_slotted_lever_against_the_matrix_method(name, angle):
 
     def close(got, want):
         assert math.hypot(got[0] - want[0], got[1] - want[1]) <= 1e-9 * scale, (got, want)
+
     close(f.pin("O2", "O2-A", FRAME), ref["F_O2"])
     close(f.pin("A", "block A", "O2-A"), ref["F_A"])
     close(f.pin("O4", "O4-P", FRAME), ref["F_O4"])
@@ -903,16 +1031,21 @@ def test_slotted_lever_against_the_matrix_method(name, angle):
 
 # ----- a driving block, and two driving cranks
 
+
 def test_a_driving_block_held_against_gravity_is_the_derivative_of_the_potential_energy():
     """The ellipse trammel driven by block A, crawling (1e-6 m/s): the driver's force along
     the guide is dU/ds (virtual work), U from the closed-form positions (B = (0,
     sqrt(L^2 - s^2)), G on AB produced) differentiated at 50 digits; and the words."""
     from polygon_method.text.report import solution_text
+
     raw = scene_table(load_scene(ROOT / "worked_problems" / "ellipse_trammel.toml"))
     raw["input"]["vs_A"] = "1e-6 m/s right"
     raw["input"]["as_A"] = "0 m/s^2"
-    raw["masses"] = {"AB": {"mass": 6, "distances": {"A": 420, "B": 120}, "turn": "cw",
-                            "gyration": 150}, "B": {"mass": "2.5 kg"}, "A": {"mass": 4}}
+    raw["masses"] = {
+        "AB": {"mass": 6, "distances": {"A": 420, "B": 120}, "turn": "cw", "gyration": 150},
+        "B": {"mass": "2.5 kg"},
+        "A": {"mass": 4},
+    }
     raw["gravity"] = {}
     raw.pop("answers", None)
     sc = scene_from_table(raw)
@@ -924,9 +1057,10 @@ def test_a_driving_block_held_against_gravity_is_the_derivative_of_the_potential
     L, g = mpmath.mpf("0.5"), mpmath.mpf("9.81")
 
     def U(s):
-        A, B = (s, 0), (0, mpmath.sqrt(L ** 2 - s ** 2))
+        A, B = (s, 0), (0, mpmath.sqrt(L**2 - s**2))
         yG = A[1] + lam * (B[1] - A[1]) + mu * (B[0] - A[0])
         return 6 * g * yG + mpmath.mpf("2.5") * g * B[1]
+
     want = mpmath.diff(U, mpmath.mpf("0.3"))
     assert f.driver == "block" and f.crank == "block A"
     assert abs(f.input_torque - float(want)) <= 1e-9 * abs(float(want))
@@ -934,8 +1068,10 @@ def test_a_driving_block_held_against_gravity_is_the_derivative_of_the_potential
     na = next(g.normal for g in f.guides if g.point == "A")
     assert abs(na - 12.5 * 9.81) <= 1e-9 * 12.5 * 9.81
     side = "along" if want > 0 else "against"
-    assert (f"input force on block A along its guide (inertia, weights and loads): "
-            f"{abs(float(want)):.4g} N {side} the guide's direction") in solution_text(sol)
+    assert (
+        f"input force on block A along its guide (inertia, weights and loads): "
+        f"{abs(float(want)):.4g} N {side} the guide's direction"
+    ) in solution_text(sol)
     d = sol.to_dict()["forces"]
     assert d["block"] == "block A" and d["input_force"] == f.input_torque
 
@@ -945,6 +1081,7 @@ def _five_bar_matrix(sol):
     four links' Newton-Euler equations (moments about the origin) as one 12 x 12 system in
     the pin forces at A, B, C, D, E and the two torques; loads at P act on BC."""
     import numpy as np
+
     sc, P, g = sol.scene, sol.P, sol.scene.gravity
     body = {"AB": 0, "ED": 1, "BC": 2, "CD": 3}
     M, rhs = np.zeros((12, 12)), np.zeros(12)
@@ -961,26 +1098,37 @@ def _five_bar_matrix(sol):
         rhs[i] -= F[0]
         rhs[i + 1] -= F[1]
         rhs[i + 2] -= at[0] * F[1] - at[1] * F[0] + c
-    force("AB", 0, P["A"])                          # on AB by the frame
-    force("BC", 2, P["B"]), force("AB", 2, P["B"], -1.0)   # on BC by AB
-    force("CD", 4, P["C"]), force("BC", 4, P["C"], -1.0)   # on CD by BC
-    force("CD", 6, P["D"]), force("ED", 6, P["D"], -1.0)   # on CD by ED
-    force("ED", 8, P["E"])                          # on ED by the frame
-    M[2, 10] = 1.0                                  # T1 on AB
-    M[5, 11] = 1.0                                  # T2 on ED
+
+    force("AB", 0, P["A"])  # on AB by the frame
+    force("BC", 2, P["B"]), force("AB", 2, P["B"], -1.0)  # on BC by AB
+    force("CD", 4, P["C"]), force("BC", 4, P["C"], -1.0)  # on CD by BC
+    force("CD", 6, P["D"]), force("ED", 6, P["D"], -1.0)  # on CD by ED
+    force("ED", 8, P["E"])  # on ED by the frame
+    M[2, 10] = 1.0  # T1 on AB
+    M[5, 11] = 1.0  # T2 on ED
     for ms in sc.masses:
         G, v, a, al, w = _kin(sol, ms)
-        known({"DE": "ED"}.get(ms.body, ms.body),
-              (ms.mass * (g.g * g.direction[0] - a[0]), ms.mass * (g.g * g.direction[1] - a[1])),
-              G, -ms.inertia * al)
+        known(
+            {"DE": "ED"}.get(ms.body, ms.body),
+            (ms.mass * (g.g * g.direction[0] - a[0]), ms.mass * (g.g * g.direction[1] - a[1])),
+            G,
+            -ms.inertia * al,
+        )
     for ld in sc.loads:
         if ld.force is not None:
             known("BC", ld.force, P[ld.target])
         else:
             known({"DE": "ED"}.get(ld.target, ld.target), (0.0, 0.0), c=ld.torque)
     x = np.linalg.solve(M, rhs)
-    return {"A": x[0:2], "B": x[2:4], "C": x[4:6], "D": x[6:8], "E": x[8:10], "T1": x[10],
-            "T2": x[11]}
+    return {
+        "A": x[0:2],
+        "B": x[2:4],
+        "C": x[4:6],
+        "D": x[6:8],
+        "E": x[8:10],
+        "T1": x[10],
+        "T2": x[11],
+    }
 
 
 @pytest.mark.parametrize("angle", [60, 100, 250])
@@ -991,10 +1139,12 @@ def test_two_driving_cranks_against_the_matrix_method(angle):
     raw["input"]["angle"] = angle
     raw["input"]["acceleration"] = "30 rad/s^2 cw"
     raw["input"]["second"]["acceleration"] = "12 rad/s^2 ccw"
-    raw["masses"] = {"AB": {"mass": 1.5, "along": 25, "gyration": 20},
-                     "BC": {"mass": 3, "distances": {"B": 80, "C": 75}, "turn": "ccw",
-                            "gyration": 50},
-                     "CD": {"mass": 2.5, "gyration": 45}, "DE": {"mass": 1, "inertia": 4e-4}}
+    raw["masses"] = {
+        "AB": {"mass": 1.5, "along": 25, "gyration": 20},
+        "BC": {"mass": 3, "distances": {"B": 80, "C": 75}, "turn": "ccw", "gyration": 50},
+        "CD": {"mass": 2.5, "gyration": 45},
+        "DE": {"mass": 1, "inertia": 4e-4},
+    }
     raw["gravity"] = {"direction": 280}
     raw["loads"] = {"P": {"force": [40, -25]}, "CD": {"torque": "3 N m ccw"}}
     raw.pop("answers", None)
@@ -1006,6 +1156,7 @@ def test_two_driving_cranks_against_the_matrix_method(angle):
 
     def close(got, want):
         assert math.hypot(got[0] - want[0], got[1] - want[1]) <= 1e-9 * scale, (got, want)
+
     close(f.pin("A", "AB", FRAME), ref["A"])
     close(f.pin("B", "BC", "AB"), ref["B"])
     close(f.pin("C", "CD", "BC"), ref["C"])
@@ -1019,10 +1170,12 @@ def test_two_driving_cranks_against_the_matrix_method(angle):
 
 # ----- a hydraulic cylinder
 
+
 def _tipper(speed):
     raw = scene_table(load_scene(ROOT / "worked_problems" / "tipper_cylinder.toml"))
-    raw["masses"] = {"QR": {"mass": 800, "distances": {"Q": 1300, "R": 700}, "turn": "ccw",
-                            "gyration": 600}}
+    raw["masses"] = {
+        "QR": {"mass": 800, "distances": {"Q": 1300, "R": 700}, "turn": "ccw", "gyration": 600}
+    }
     raw["gravity"] = {}
     raw.pop("answers", None)
     if speed is None:  # the crank driven instead (the cylinder then free)
@@ -1051,6 +1204,7 @@ def _tipper_virtual_work(sc, theta_deg):
     def L(t):
         (rx, ry) = R(t)
         return mpmath.sqrt((rx - O[0]) ** 2 + (ry - O[1]) ** 2)
+
     th = mpmath.radians(theta_deg)
     return mpmath.diff(U, th), mpmath.diff(L, th)
 
@@ -1060,6 +1214,7 @@ def test_a_driving_cylinder_against_virtual_work():
     dU/dL = (dU/dtheta) / (dL/dtheta) (virtual work, 50 digits); the crank is not driven;
     the pins at R and O carry the cylinder's force along its line; and the words."""
     from polygon_method.text.report import solution_text
+
     sc = _tipper("1e-6 m/s extending")
     sol = solve(sc)
     f = sol.forces
@@ -1072,10 +1227,14 @@ def test_a_driving_cylinder_against_virtual_work():
     (rx, ry), (ox, oy) = sol.P["R"], sol.P["O"]
     n = math.hypot(rx - ox, ry - oy)
     fr = f.pin("R", "QR", "O-R")  # the cylinder pushes the body out along O -> R
-    assert math.hypot(fr[0] - want * (rx - ox) / n, fr[1] - want * (ry - oy) / n) <= \
-        1e-9 * abs(want)
-    line = next(ln for ln in solution_text(sol).splitlines()
-                if ln.startswith("input force in cylinder O-R (inertia, weights and loads): "))
+    assert math.hypot(fr[0] - want * (rx - ox) / n, fr[1] - want * (ry - oy) / n) <= 1e-9 * abs(
+        want
+    )
+    line = next(
+        ln
+        for ln in solution_text(sol).splitlines()
+        if ln.startswith("input force in cylinder O-R (inertia, weights and loads): ")
+    )
     assert line.endswith(" N pushing its ends apart")
     assert float(line.split(": ")[1].split(" ")[0]) == pytest.approx(abs(want), rel=5e-4)
     assert sol.to_dict()["forces"]["cylinder"] == "O-R"
@@ -1094,6 +1253,7 @@ def test_a_free_cylinder_carries_nothing():
 
 # ----- the Scotch yoke
 
+
 @pytest.mark.parametrize("theta", [40, 130, 250])
 def test_scotch_yoke_closed_forms(theta):
     """The yoke of mass M on a horizontal path, a load F along it, the pin's block of mass
@@ -1101,7 +1261,8 @@ def test_scotch_yoke_closed_forms(theta):
     pushes the yoke against the load and inertia along the path, the crank's torque is
     that push's power and the block's over omega, the path carries the yoke's weight, and
     holds it with the couple of the slot's push about Y."""
-    text = """
+    text = (
+        """
 units = "mm"
 [ground]
 O = [0, 0]
@@ -1121,19 +1282,23 @@ P = { mass = "0.5 kg" }
 [gravity]
 [loads]
 Y = { force = "300 N", direction = 180 }
-""" % theta
+"""
+        % theta
+    )
     sc = parse_scene(text)
     sol = solve(sc)
     f = sol.forces
     mpmath.mp.dps = 50
     r, th = mpmath.mpf("0.08"), mpmath.radians(theta)
     w, al = 2 * mpmath.pi * 300 / 60, mpmath.mpf(-40)
-    a = -r * (w ** 2 * mpmath.cos(th) + al * mpmath.sin(th))  # the yoke's acceleration
+    a = -r * (w**2 * mpmath.cos(th) + al * mpmath.sin(th))  # the yoke's acceleration
     net = -300 - 6 * a  # the load and the inertia on the yoke, along +x
     # the pin's block: weight and inertia at P = r (cos, sin)
     vP = (-w * r * mpmath.sin(th), w * r * mpmath.cos(th))
-    aP = (-w ** 2 * r * mpmath.cos(th) - al * r * mpmath.sin(th),
-          -w ** 2 * r * mpmath.sin(th) + al * r * mpmath.cos(th))
+    aP = (
+        -(w**2) * r * mpmath.cos(th) - al * r * mpmath.sin(th),
+        -(w**2) * r * mpmath.sin(th) + al * r * mpmath.cos(th),
+    )
     on_block = (-mpmath.mpf("0.5") * aP[0], -mpmath.mpf("0.5") * (aP[1] + mpmath.mpf("9.81")))
     # T w + net v_Y + (the block's forces) . v_P = 0, v_Y = -r w sin(theta)
     T = float(-(net * -r * w * mpmath.sin(th) + on_block[0] * vP[0] + on_block[1] * vP[1]) / w)
@@ -1158,8 +1323,7 @@ def test_the_worked_shaper_and_its_written_answers():
     for key in ("F_O2", "F_A", "N_A", "F_O4", "F_P", "F_Q", "N_Q"):
         written = re.search(rf"#.*\b{key} = ([\d.]+)", text)
         assert written, key
-        assert float(written.group(1)) == pytest.approx(float(math.hypot(*ref[key])),
-                                                        rel=6e-4), key
+        assert float(written.group(1)) == pytest.approx(float(math.hypot(*ref[key])), rel=6e-4), key
     written = re.search(r"#.*\bT = ([\d.]+) \((c?cw)[:)]", text)
     assert float(written.group(1)) == pytest.approx(abs(float(ref["T"])), rel=6e-4)
     assert written.group(2) == ("ccw" if ref["T"] > 0 else "cw")
@@ -1167,8 +1331,10 @@ def test_the_worked_shaper_and_its_written_answers():
     assert abs(f.input_torque - ref["T"]) <= 1e-9 * scale
     assert math.hypot(*(np.subtract(f.pin("P", "P-Q", "O4-P"), ref["F_P"]))) <= 1e-9 * scale
     # without the inertia: the power balance of the loads alone, as the comment says
-    assert re.search(r"would be\s*#?\s*([\d.]+) N m", text.replace("\n#", "")).group(1) == \
-        f"{abs(sol.input_torque):.4g}"
+    assert (
+        re.search(r"would be\s*#?\s*([\d.]+) N m", text.replace("\n#", "")).group(1)
+        == f"{abs(sol.input_torque):.4g}"
+    )
 
 
 # ----- a wheel rolling on the ground
@@ -1205,7 +1371,8 @@ def _wheel_U(sc, th, th0):
 
     def C(t):
         ax, ay = O[0] + a * mpmath.cos(t), O[1] + a * mpmath.sin(t)
-        return (ax, ay), (ax + mpmath.sqrt(l ** 2 - (r - ay) ** 2), r)
+        return (ax, ay), (ax + mpmath.sqrt(l**2 - (r - ay) ** 2), r)
+
     (ax, ay), (cx, cy) = C(th)
     phi = mpmath.pi / 2 - (cx - C(th0)[1][0]) / r
     px, py = cx + r * mpmath.cos(phi), cy + r * mpmath.sin(phi)
@@ -1225,6 +1392,7 @@ def test_a_wheel_rolling_on_the_ground_against_virtual_work():
     contact's friction coefficient is |T| / N, and with gravity reversed the wheel would
     lift off, which is said."""
     from polygon_method.text.report import solution_text
+
     sc = parse_scene(WHEEL)
     sol = solve(sc)
     f = sol.forces
@@ -1236,7 +1404,7 @@ def test_a_wheel_rolling_on_the_ground_against_virtual_work():
     assert c.wheel == "CP" and c.point == pytest.approx((sol.P["C"][0], 0.0), abs=1e-15)
     assert c.required_friction == abs(c.tangential) / c.normal and c.normal > 0
     assert "no slip needs a friction coefficient of at least" in solution_text(sol)
-    up = solve(parse_scene(WHEEL.replace("[gravity]", '[gravity]\ndirection = 90')))
+    up = solve(parse_scene(WHEEL.replace("[gravity]", "[gravity]\ndirection = 90")))
     (c,) = up.forces.contacts
     assert c.normal < 0 and c.required_friction is None
     assert "it lifts off the line" in solution_text(up)
@@ -1248,9 +1416,12 @@ def test_a_torque_answer_where_a_force_drives_is_one_clear_line(tmp_path, capsys
     """The tipper driven by its cylinder: its effort is a force, so a 'torque' answer is
     refused in one line (exit 2), not compared with the force read as N m."""
     from polygon_method.cli import main
+
     text = (ROOT / "worked_problems" / "tipper_cylinder.toml").read_text()
-    text = text.split("[answers]")[0] + ('[masses]\nQR = { mass = 800, along = 1200 }\n'
-                                         '[gravity]\n[answers]\ntorque = "10 kN m ccw"\n')
+    text = text.split("[answers]")[0] + (
+        "[masses]\nQR = { mass = 800, along = 1200 }\n"
+        '[gravity]\n[answers]\ntorque = "10 kN m ccw"\n'
+    )
     path = tmp_path / "tipper.toml"
     path.write_text(text)
     assert main(["check", str(path)]) == 2
@@ -1265,6 +1436,7 @@ def test_the_steps_write_each_new_group_in_its_units():
     import re as _re
 
     from polygon_method.text.steptable import steps_text
+
     yoke = with_forces(load_scene(ROOT / "worked_problems" / "scotch_yoke.toml"), 1)
     text = " ".join(steps_text(solve(yoke)).split())
     assert _re.search(r"C on block Y by the path = [\d.]+ N m c?cw", text)
@@ -1272,8 +1444,9 @@ def test_the_steps_write_each_new_group_in_its_units():
     text = " ".join(steps_text(solve(_tipper("0.1 m/s extending"))).split())
     assert _re.search(r"F in O-R, \+ pushing O and R apart = [\d.]+ N -", text)
     six = with_forces(load_scene(ROOT / "worked_problems" / "class3_six_bar.toml"), 1)
-    assert "the plate's three equations together (a 3x3 solve)" in \
-        " ".join(steps_text(solve(six)).split())
+    assert "the plate's three equations together (a 3x3 solve)" in " ".join(
+        steps_text(solve(six)).split()
+    )
 
 
 def test_the_guides_moment_relation_is_written_once():
@@ -1283,6 +1456,7 @@ def test_the_guides_moment_relation_is_written_once():
     moments about the origin, for random loads."""
     import inspect
     from polygon_method.forces import bodies, slider, slotted, wheel
+
     for mod in (slider, slotted, wheel):
         src = inspect.getsource(mod.solve)
         assert "guided(" in src and "/ den" not in src, mod.__name__

@@ -53,6 +53,7 @@ def _kin(sol, m):
         (px, py), (qx, qy) = T[lk.p], T[lk.q]
         dx, dy = qx - px, qy - py
         return (px + m.lam * dx - m.mu * dy, py + m.lam * dy + m.mu * dx)
+
     return at(sol.P), at(sol.A), sol.Al[lk.key]
 
 
@@ -97,6 +98,7 @@ class Matrix:
             e[0] += F[0]
             e[1] += F[1]
             e[2] += at[0] * F[1] - at[1] * F[0]
+
         g = sc.gravity
         for m in sc.masses:
             G, a, al = _kin(sol, m)
@@ -118,8 +120,9 @@ class Matrix:
         n = len(self.cols)
         rows = {b: [[mpmath.mpf(0)] * n for _ in range(3)] for b in self.bodies}
         # a block's moments about its own point (all its pins' forces pass through it)
-        ref = {b: (self.sol.P[b[6:]] if b.startswith("block ") else (0.0, 0.0))
-               for b in self.bodies}
+        ref = {
+            b: (self.sol.P[b[6:]] if b.startswith("block ") else (0.0, 0.0)) for b in self.bodies
+        }
         for j, (_, acts) in enumerate(self.cols):
             for body, fx, fy, m in acts:
                 if body in rows:
@@ -147,6 +150,7 @@ def _teeth(build, contacts):
     body), keeping the choice whose loads agree with their lean; name -> value, with each
     contact's force vector under ``name + ".F"``."""
     import itertools
+
     for signs in itertools.product((1, -1), repeat=len(contacts)):
         mat = build()
         dirs = {}
@@ -178,6 +182,7 @@ def _close(got, want, scale):
 
 # ----- a gear pair driving a slider (the worked problem)
 
+
 def _gear_pair_matrix(sol):
     sc = sol.scene
     P = sol.P
@@ -193,6 +198,7 @@ def _gear_pair_matrix(sol):
         mat.along("N_C", P["C"], (0.0, 1.0), "block C", FRAME)
         mat.couple("T", "O1-A")
         return mat
+
     return _teeth(build, [_gear_contact(sol, "O2", "O1", 0.050, phi, "O2-B", "O1-A")])
 
 
@@ -201,8 +207,12 @@ def test_the_gear_pair_against_the_matrix_method():
     f = sol.forces
     x = _gear_pair_matrix(sol)
     scale = max(math.hypot(x[k + ".x"], x[k + ".y"]) for k in ("O1", "O2", "B", "C"))
-    for k, on, by in (("O1", "O1-A", FRAME), ("O2", "O2-B", FRAME), ("B", "BC", "O2-B"),
-                      ("C", "BC", "block C")):
+    for k, on, by in (
+        ("O1", "O1-A", FRAME),
+        ("O2", "O2-B", FRAME),
+        ("B", "BC", "O2-B"),
+        ("C", "BC", "block C"),
+    ):
         _close(f.pin(k, on, by), (x[k + ".x"], x[k + ".y"]), scale)
     (c,) = f.contacts
     assert c.wheel == "O2-B" and c.by == "O1-A" and c.stated
@@ -217,17 +227,24 @@ def test_the_worked_gear_pair_and_its_written_answers():
     """The numbers the worked problem writes (comments and [answers]) against the matrix
     method, to their four figures; and `check` holds its answers."""
     from polygon_method.check import check_answers
+
     sol = solve(load_scene(WORKED))
     x = _gear_pair_matrix(sol)
     text = WORKED.read_text()
-    want = {"F_O2": math.hypot(x["O2.x"], x["O2.y"]), "F_B": math.hypot(x["B.x"], x["B.y"]),
-            "F_C": math.hypot(x["C.x"], x["C.y"]), "N_C": abs(x["N_C"]),
-            "Fc": math.hypot(*x["tooth O2-B.F"]), "T": abs(x["T"])}
+    want = {
+        "F_O2": math.hypot(x["O2.x"], x["O2.y"]),
+        "F_B": math.hypot(x["B.x"], x["B.y"]),
+        "F_C": math.hypot(x["C.x"], x["C.y"]),
+        "N_C": abs(x["N_C"]),
+        "Fc": math.hypot(*x["tooth O2-B.F"]),
+        "T": abs(x["T"]),
+    }
     for key, v in want.items():
         written = re.search(rf"#.*\b{key} = ([\d.]+)", text)
         assert float(written.group(1)) == pytest.approx(v, rel=6e-4), key
-    assert re.search(r"#.*\bT = [\d.]+ \((c?cw)\)", text).group(1) == \
-        ("ccw" if x["T"] > 0 else "cw")
+    assert re.search(r"#.*\bT = [\d.]+ \((c?cw)\)", text).group(1) == (
+        "ccw" if x["T"] > 0 else "cw"
+    )
     verdicts = check_answers(sol)
     assert verdicts and all(v.ok for v in verdicts), [(v.key, v.ok) for v in verdicts]
     assert {v.key for v in verdicts} >= {"Fc_O2-B", "F_B", "N_C", "torque"}
@@ -235,6 +252,7 @@ def test_the_worked_gear_pair_and_its_written_answers():
 
 # ----- a planet on a fixed sun (the teeth's angle stated), Watt's sun and planet (a gear
 # fixed to a moving link), a pinion between two racks
+
 
 def _with(path, masses, loads=None, gravity=True, rolling=None, answers=None):
     raw = scene_table(load_scene(path))
@@ -253,11 +271,17 @@ def _with(path, masses, loads=None, gravity=True, rolling=None, answers=None):
 
 @pytest.mark.parametrize("phi", [None, 14.5])
 def test_a_planet_on_a_fixed_sun_against_the_matrix_method(phi):
-    sc = _with(ROOT / "worked_problems" / "rolling_epicyclic.toml",
-               {"OA": {"mass": 1, "along": 50}, "AP": {"mass": 2, "along": 10, "gyration": 30},
-                "PQ": {"mass": 1.5, "along": 75, "gyration": 40}, "Q": {"mass": 3}},
-               {"Q": {"force": [-200, 50]}, "AP": {"torque": "3 N m cw"}},
-               rolling=None if phi is None else {"AP": {"pressure_angle": phi}})
+    sc = _with(
+        ROOT / "worked_problems" / "rolling_epicyclic.toml",
+        {
+            "OA": {"mass": 1, "along": 50},
+            "AP": {"mass": 2, "along": 10, "gyration": 30},
+            "PQ": {"mass": 1.5, "along": 75, "gyration": 40},
+            "Q": {"mass": 3},
+        },
+        {"Q": {"force": [-200, 50]}, "AP": {"torque": "3 N m cw"}},
+        rolling=None if phi is None else {"AP": {"pressure_angle": phi}},
+    )
     sol = solve(sc)
     f = sol.forces
     P = sol.P
@@ -272,10 +296,15 @@ def test_a_planet_on_a_fixed_sun_against_the_matrix_method(phi):
         mat.along("N_Q", P["Q"], (0.0, 1.0), "block Q", FRAME)
         mat.couple("T", "OA")
         return mat
+
     x = _teeth(build, [_gear_contact(sol, "A", "O", 0.060, angle, "AP", FRAME)])
     scale = max(math.hypot(x[k + ".x"], x[k + ".y"]) for k in ("O", "A", "P", "Q"))
-    for k, on, by in (("O", "OA", FRAME), ("A", "AP", "OA"), ("P", "PQ", "AP"),
-                      ("Q", "PQ", "block Q")):
+    for k, on, by in (
+        ("O", "OA", FRAME),
+        ("A", "AP", "OA"),
+        ("P", "PQ", "AP"),
+        ("Q", "PQ", "block Q"),
+    ):
         _close(f.pin(k, on, by), (x[k + ".x"], x[k + ".y"]), scale)
     (c,) = f.contacts
     assert c.by == FRAME and c.stated == (phi is not None)
@@ -288,12 +317,16 @@ def test_a_planet_on_a_fixed_sun_against_the_matrix_method(phi):
 def test_watts_sun_and_planet_against_the_matrix_method():
     """The planet fixed to the rod CB drives the sun OS about O: the sun's tooth load acts
     on the rod, which a dyad (the rod and the beam) carries on to the crank OC."""
-    sc = _with(ROOT / "worked_problems" / "sun_and_planet_watt.toml",
-               {"OC": {"mass": 5, "along": 300}, "CB": {"mass": 40, "along": 1200,
-                                                       "gyration": 700},
-                "BD": {"mass": 30, "along": 1000, "gyration": 600},
-                "OS": {"mass": 20, "along": 0, "gyration": 250}},
-               {"OS": {"torque": "400 N m cw"}})
+    sc = _with(
+        ROOT / "worked_problems" / "sun_and_planet_watt.toml",
+        {
+            "OC": {"mass": 5, "along": 300},
+            "CB": {"mass": 40, "along": 1200, "gyration": 700},
+            "BD": {"mass": 30, "along": 1000, "gyration": 600},
+            "OS": {"mass": 20, "along": 0, "gyration": 250},
+        },
+        {"OS": {"torque": "400 N m cw"}},
+    )
     sol = solve(sc)
     f = sol.forces
     P = sol.P
@@ -307,6 +340,7 @@ def test_watts_sun_and_planet_against_the_matrix_method():
         mat.pin("OS", P["O"], "OS", FRAME)
         mat.couple("T", "OC")
         return mat
+
     x = _teeth(build, [_gear_contact(sol, "O", "C", 0.300, DEG20, "OS", "CB")])
     scale = max(math.hypot(x[k + ".x"], x[k + ".y"]) for k in ("O", "C", "B", "D", "OS"))
     _close(f.pin("O", "OC", FRAME), (x["O.x"], x["O.y"]), scale)
@@ -323,12 +357,18 @@ def test_watts_sun_and_planet_against_the_matrix_method():
 def test_a_pinion_between_two_racks_against_the_matrix_method():
     """Each rack is held by its guide (a normal force and a couple: the tooth load acts off
     the rack's point) and pushed by the pinion's teeth at its pitch point."""
-    sc = _with(ROOT / "tests" / "textbook" / "rolling_pinion_two_racks.toml",
-               {"OA": {"mass": 1, "along": 0, "gyration": 30}, "R1": {"mass": 2},
-                "R2": {"mass": 3}, "R1-Q": {"mass": 1, "along": 60, "gyration": 40},
-                "DQ": {"mass": 0.5, "along": 40}},
-               {"R1": {"force": [100, -30]}, "DQ": {"torque": "2 N m ccw"}},
-               rolling={"R2": {"pressure_angle": 25}})
+    sc = _with(
+        ROOT / "tests" / "textbook" / "rolling_pinion_two_racks.toml",
+        {
+            "OA": {"mass": 1, "along": 0, "gyration": 30},
+            "R1": {"mass": 2},
+            "R2": {"mass": 3},
+            "R1-Q": {"mass": 1, "along": 60, "gyration": 40},
+            "DQ": {"mass": 0.5, "along": 40},
+        },
+        {"R1": {"force": [100, -30]}, "DQ": {"torque": "2 N m ccw"}},
+        rolling={"R2": {"pressure_angle": 25}},
+    )
     sol = solve(sc)
     f = sol.forces
     P = sol.P
@@ -350,6 +390,7 @@ def test_a_pinion_between_two_racks_against_the_matrix_method():
             mat.couple("C_" + r, "block " + r)
         mat.couple("T", "OA")
         return mat
+
     x = _teeth(build, [rack("R1", P["R1"], DEG20), rack("R2", P["R2"], math.radians(25))])
     scale = max(math.hypot(x[k + ".x"], x[k + ".y"]) for k in ("O", "R1", "Q", "D"))
     _close(f.pin("O", "OA", FRAME), (x["O.x"], x["O.y"]), scale)
@@ -368,9 +409,12 @@ def test_a_pinion_between_two_racks_against_the_matrix_method():
 
 # ----- the driving wheel
 
+
 def _driving_wheel(extra=""):
     text = (ROOT / "worked_problems" / "rolling_wheel_driver.toml").read_text()
-    text = text.split("[answers]")[0] + """
+    text = (
+        text.split("[answers]")[0]
+        + """
 [masses]
 CA = { mass = "20 kg", distances = { C = 60, A = 280 }, turn = "ccw", gyration = 212 }
 AB = { mass = "5 kg", along = 600, gyration = 350 }
@@ -380,7 +424,9 @@ direction = 260
 [loads]
 B = { force = [-300, 40] }
 A = { force = [0, -50] }
-""" + extra
+"""
+        + extra
+    )
     return parse_scene(text)
 
 
@@ -432,8 +478,11 @@ def test_the_driving_wheel_against_the_matrix_method():
             if lk is None:
                 return T[m.body]
             (px, py), (qx, qy) = T[lk.p], T[lk.q]
-            return (px + m.lam * (qx - px) - m.mu * (qy - py),
-                    py + m.lam * (qy - py) + m.mu * (qx - px))
+            return (
+                px + m.lam * (qx - px) - m.mu * (qy - py),
+                py + m.lam * (qy - py) + m.mu * (qx - px),
+            )
+
         v, a = at(sol.V), at(sol.A)
         g = sc.gravity
         terms.append(m.mass * g.g * (g.direction[0] * v[0] + g.direction[1] * v[1]))
@@ -479,6 +528,7 @@ def test_near_a_toggle_the_forces_grow_as_one_over_the_condition():
     stays the 100 N load's size over the geometry's), `solve` warns with the condition, and
     at the toggle itself the kinematics refuses in one line."""
     from polygon_method.text.report import solution_text
+
     seen = []
     for d in (10.0, 1.0, 0.1):
         sol = solve(parse_scene(TOGGLE.format(angle=180 - d)))
@@ -490,9 +540,12 @@ def test_near_a_toggle_the_forces_grow_as_one_over_the_condition():
         assert 9.0 < c0 / c1 < 11.0 and 9.0 < F1 / F0 < 11.0
         assert F1 * c1 == pytest.approx(F0 * c0, rel=0.01)
     text = solution_text(sol)
-    assert re.search(r"warning: forces, step 3 \(dyad BC, CD at C\): condition 0\.00143 "
-                     r"\(sine of the angle at C between CB and CD\): the pin forces grow as "
-                     r"1/condition", text)
+    assert re.search(
+        r"warning: forces, step 3 \(dyad BC, CD at C\): condition 0\.00143 "
+        r"\(sine of the angle at C between CB and CD\): the pin forces grow as "
+        r"1/condition",
+        text,
+    )
     assert "estimated error of the forces above" in text
     with pytest.raises(PolygonMethodError, match="BC and CD are in line"):
         solve(parse_scene(TOGGLE.format(angle=180 - 1e-3)))
@@ -500,16 +553,20 @@ def test_near_a_toggle_the_forces_grow_as_one_over_the_condition():
 
 # ----- every view
 
+
 def test_solve_json_steps_and_the_sheet_show_the_tooth_load():
     from polygon_method.draw import render_pages
     from polygon_method.text.report import solution_text
     from polygon_method.text.steptable import steps_text
+
     sol = solve(load_scene(WORKED))
     f = sol.forces
     text = solution_text(sol)
-    assert ("contact of wheel O2-B with the gear O1-A: normal 99.45 N, tangential 273.2 N "
-            "(290.8 N at 70.0 deg); the tooth load along the line of action, at the pressure "
-            "angle 20 deg to the common tangent: 290.8 N") in text
+    assert (
+        "contact of wheel O2-B with the gear O1-A: normal 99.45 N, tangential 273.2 N "
+        "(290.8 N at 70.0 deg); the tooth load along the line of action, at the pressure "
+        "angle 20 deg to the common tangent: 290.8 N"
+    ) in text
     d = json.loads(json.dumps(sol.to_dict(), allow_nan=False))["forces"]
     c = d["contacts"]["O2-B"]
     assert c["by"] == "O1-A" and c["pressure_angle"] == pytest.approx(20.0)
@@ -518,8 +575,11 @@ def test_solve_json_steps_and_the_sheet_show_the_tooth_load():
     assert c["force"] == pytest.approx(list(f.contacts[0].force), rel=1e-15)
     steps = " ".join(steps_text(sol).split())
     assert "the tooth load along the line of action" in steps
-    assert re.search(r"Step 2, wheel O2-B rolling on the gear O1-A: the tooth load along the "
-                     r"line of action", steps)
+    assert re.search(
+        r"Step 2, wheel O2-B rolling on the gear O1-A: the tooth load along the "
+        r"line of action",
+        steps,
+    )
     # the free bodies: the gear feels the pinion's teeth, the pinion the gear's, opposite
     sides = {fb.body: [s for s in fb.sides if s.what == "contact"] for fb in f.free}
     (on_gear,), (on_pinion,) = sides["O2-B"], sides["O1-A"]
@@ -527,38 +587,53 @@ def test_solve_json_steps_and_the_sheet_show_the_tooth_load():
     assert on_gear.at == f.contacts[0].point and on_gear.by == "O1-A"
     datas = render_pages(sol, "svg", "forces")[0]
     num = f.numbers["O2-B"]
-    k = next(i for i, s in enumerate(next(fb for fb in f.free if fb.body == "O2-B").sides)
-             if s.what == "contact")
+    k = next(
+        i
+        for i, s in enumerate(next(fb for fb in f.free if fb.body == "O2-B").sides)
+        if s.what == "contact"
+    )
     assert any(f'id="free-body-{num}-force-{k}-shaft"' in svg for svg in datas)
 
 
 def test_the_default_pressure_angle_is_said_to_be_the_default():
     from polygon_method.text.report import solution_text
-    sc = _with(ROOT / "worked_problems" / "rolling_epicyclic.toml",
-               {"AP": {"mass": 2, "gyration": 30}}, gravity=True)
+
+    sc = _with(
+        ROOT / "worked_problems" / "rolling_epicyclic.toml",
+        {"AP": {"mass": 2, "gyration": 30}},
+        gravity=True,
+    )
     text = solution_text(solve(sc))
-    assert ("at the pressure angle 20 deg (the default; pressure_angle in [rolling] gives "
-            "it) to the common tangent") in text
+    assert (
+        "at the pressure angle 20 deg (the default; pressure_angle in [rolling] gives "
+        "it) to the common tangent"
+    ) in text
     d = solve(sc).to_dict()["forces"]["contacts"]["AP"]
     assert d["pressure_angle_stated"] is False and d["by"] == "frame"
 
 
 def test_the_driving_wheel_in_solve_and_json():
     from polygon_method.text.report import solution_text
+
     sol = solve(_driving_wheel())
     f = sol.forces
     text = solution_text(sol)
-    assert re.search(r"input torque on the wheel CA \(inertia, weights and loads\): [\d.]+ N m "
-                     r"c?cw \(its driver's torque on it, the effort taken as a torque; as a "
-                     r"force at its centre along the ground instead: [\d.]+ N at [\d.]+ "
-                     r"deg\)", text)
+    assert re.search(
+        r"input torque on the wheel CA \(inertia, weights and loads\): [\d.]+ N m "
+        r"c?cw \(its driver's torque on it, the effort taken as a torque; as a "
+        r"force at its centre along the ground instead: [\d.]+ N at [\d.]+ "
+        r"deg\)",
+        text,
+    )
     d = json.loads(json.dumps(sol.to_dict(), allow_nan=False))["forces"]
     assert d["wheel"] == "CA" and d["input_torque"] == f.input_torque
-    assert d["centre_force"] == pytest.approx([-f.input_torque / 0.3 * u for u in (1.0, 0.0)],
-                                              abs=1e-12)
+    assert d["centre_force"] == pytest.approx(
+        [-f.input_torque / 0.3 * u for u in (1.0, 0.0)], abs=1e-12
+    )
     assert d["contacts"]["CA"]["by"] == "frame" and "required_friction" in d["contacts"]["CA"]
     # steps: the ground's grip is a force along the line, the driver's a torque
     from polygon_method.text.steptable import steps_text
+
     words = " ".join(steps_text(sol).split())
     assert re.search(r"T at the contact of CA = -?[\d.]+ N \(along the line", words)
     assert re.search(r"T on CA by its driver = [\d.]+ N m c?cw", words)
@@ -569,6 +644,7 @@ def test_check_keys_for_the_tooth_load_and_the_wheels_torque(tmp_path, capsys):
     torque is a torque answer where masses are given; a key naming no wheel is one line."""
     from polygon_method.check import check_answers
     from polygon_method.cli import main
+
     sol = solve(load_scene(WORKED))
     c = sol.forces.contacts[0]
     base = WORKED.read_text().split("[answers]")[0]
@@ -576,14 +652,23 @@ def test_check_keys_for_the_tooth_load_and_the_wheels_torque(tmp_path, capsys):
     (v,) = check_answers(solve(wrong))
     assert not v.ok and v.key == "Fc_O2-B" and v.mistake == "pressure_angle_left_out"
     tau = solve(_driving_wheel()).forces.input_torque
-    wheel = _driving_wheel(f'[answers]\ntorque = "{abs(tau):.4g} N m {"ccw" if tau > 0 else "cw"}"\n')
+    wheel = _driving_wheel(
+        f'[answers]\ntorque = "{abs(tau):.4g} N m {"ccw" if tau > 0 else "cw"}"\n'
+    )
     (v,) = check_answers(solve(wheel))
     assert v.ok
-    racks = _with(ROOT / "tests" / "textbook" / "rolling_pinion_two_racks.toml",
-                  {"R1": {"mass": 2}}, gravity=True)
+    racks = _with(
+        ROOT / "tests" / "textbook" / "rolling_pinion_two_racks.toml",
+        {"R1": {"mass": 2}},
+        gravity=True,
+    )
     want = next(c.load for c in solve(racks).forces.contacts if c.wheel == "block R1")
-    racks = _with(ROOT / "tests" / "textbook" / "rolling_pinion_two_racks.toml",
-                  {"R1": {"mass": 2}}, gravity=True, answers={"Fc_R1": f"{want:.4g} N"})
+    racks = _with(
+        ROOT / "tests" / "textbook" / "rolling_pinion_two_racks.toml",
+        {"R1": {"mass": 2}},
+        gravity=True,
+        answers={"Fc_R1": f"{want:.4g} N"},
+    )
     (v,) = check_answers(solve(racks))
     assert v.ok
     bad = tmp_path / "bad.toml"
@@ -593,11 +678,16 @@ def test_check_keys_for_the_tooth_load_and_the_wheels_torque(tmp_path, capsys):
     assert "\n" not in err and "Fc_BC: BC is no wheel of [rolling] and no rack" in err
 
 
-@pytest.mark.parametrize("extra, words", [
-    ('{ on = "horizontal", through = [0, 0], pressure_angle = 20 }',
-     "a wheel on a line grips by friction"),
-    ('{ on = "O1-A", radius = 75, pressure_angle = 60 }', "from 0 to 45 deg"),
-])
+@pytest.mark.parametrize(
+    "extra, words",
+    [
+        (
+            '{ on = "horizontal", through = [0, 0], pressure_angle = 20 }',
+            "a wheel on a line grips by friction",
+        ),
+        ('{ on = "O1-A", radius = 75, pressure_angle = 60 }', "from 0 to 45 deg"),
+    ],
+)
 def test_bad_pressure_angles_are_one_located_line(extra, words):
     text = WORKED.read_text()
     text = re.sub(r'"O2-B" = \{ on = "O1-A".*\}', lambda _: f'"O2-B" = {extra}', text)
@@ -607,6 +697,7 @@ def test_bad_pressure_angles_are_one_located_line(extra, words):
 
 
 # ----- friction at the guides and the pins
+
 
 def _friction_scene(path, guides, pins):
     """A worked problem given masses on every moving link (G off the link's line) and
@@ -621,8 +712,12 @@ def _friction_scene(path, guides, pins):
     for k, lk in enumerate(moving):
         if lk.key not in masses:
             L = lk.length / unit
-            masses[lk.key] = {"mass": 1.0 + k, "distances": {lk.p: 0.6 * L, lk.q: 0.6 * L},
-                              "turn": "ccw", "gyration": 0.3 * L}
+            masses[lk.key] = {
+                "mass": 1.0 + k,
+                "distances": {lk.p: 0.6 * L, lk.q: 0.6 * L},
+                "turn": "ccw",
+                "gyration": 0.3 * L,
+            }
     for sl in sc.blocks:
         if sl.point not in masses:
             masses[sl.point] = {"mass": 2.0}
@@ -659,8 +754,12 @@ def _friction_power(sol, f):
     total = 0.0
     for p in f.pins:
         if p.point in radius:
-            total -= fr.pins * radius[p.point] * p.magnitude * \
-                abs(_omega_of(sol, p.on) - _omega_of(sol, p.by))
+            total -= (
+                fr.pins
+                * radius[p.point]
+                * p.magnitude
+                * abs(_omega_of(sol, p.on) - _omega_of(sol, p.by))
+            )
     for g in f.guides:
         X = g.point
         v = sol.V[X]
@@ -674,8 +773,13 @@ def _friction_power(sol, f):
     return total
 
 
-FRICTION_CASES = ["offset_slider_crank", "fourbar_forces", "crank_slotted_lever",
-                  "whitworth", "gear_pair_forces"]
+FRICTION_CASES = [
+    "offset_slider_crank",
+    "fourbar_forces",
+    "crank_slotted_lever",
+    "whitworth",
+    "gear_pair_forces",
+]
 
 
 @pytest.mark.parametrize("name", FRICTION_CASES)
@@ -685,8 +789,10 @@ def test_friction_the_power_balance_includes_its_loss(name):
     the pins); every body in equilibrium with its friction; the torque differs from the
     frictionless one."""
     import sys
+
     sys.path.insert(0, str(ROOT / "tests"))
     from test_forces import _driver_power, _kin, _newton_euler
+
     path = ROOT / "worked_problems" / f"{name}.toml"
     sc = _friction_scene(path, 0.15, 0.1)
     sol = solve(sc)
@@ -735,19 +841,25 @@ def test_friction_the_power_balance_includes_its_loss(name):
 
 def replace_friction(sc, fr):
     import dataclasses
+
     return dataclasses.replace(sc, friction=fr)
 
 
 def test_no_friction_is_as_before_and_the_words_say_it():
     from polygon_method.scene.records import Friction
     from polygon_method.text.report import solution_text
+
     sc = load_scene(WORKED)
     f0 = solve(sc).forces
     f1 = solve(replace_friction(sc, Friction(0.0, 0.0))).forces
     assert f1.input_torque == f0.input_torque and f1.friction_power == 0.0
     raw = scene_table(sc)
-    raw["pins"] = {"O1": {"diameter": 20}, "O2": {"diameter": 20}, "B": {"diameter": 16},
-                   "C": {"diameter": 16}}
+    raw["pins"] = {
+        "O1": {"diameter": 20},
+        "O2": {"diameter": 20},
+        "B": {"diameter": 16},
+        "C": {"diameter": 16},
+    }
     raw["friction"] = {"guides": 0.1, "pins": 0.05}
     raw.pop("answers")
     sol = solve(scene_from_table(raw))
@@ -760,11 +872,14 @@ def test_no_friction_is_as_before_and_the_words_say_it():
     assert {p["what"] for p in d["pins"]} >= {"friction at pin O2", "friction at pin B"}
 
 
-@pytest.mark.parametrize("table, words", [
-    ("[friction]\nguides = 1.5", "a coefficient of friction, a number from 0 up to"),
-    ("[friction]\npins = 0.1", "friction at the pins needs their sizes"),
-    ("[friction]\nguide = 0.1", "unknown key 'guide'"),
-])
+@pytest.mark.parametrize(
+    "table, words",
+    [
+        ("[friction]\nguides = 1.5", "a coefficient of friction, a number from 0 up to"),
+        ("[friction]\npins = 0.1", "friction at the pins needs their sizes"),
+        ("[friction]\nguide = 0.1", "unknown key 'guide'"),
+    ],
+)
 def test_bad_friction_is_one_located_line(table, words):
     text = WORKED.read_text().split("[answers]")[0] + table + "\n"
     with pytest.raises(SceneError, match=words) as e:
@@ -776,21 +891,41 @@ def test_a_ring_driven_by_a_planet_against_the_matrix_method():
     """The ring (an internal gear) about O driven by the planet inside it: on the planet,
     the pinion of the internal pair, the teeth's push points to its own centre (the pair
     pushed apart), so the ring feels it outwards; the planet rolls on the fixed sun too."""
-    sc = _with(ROOT / "worked_problems" / "ring_gear_output.toml",
-               {"OA": {"mass": 1, "along": 30}, "AP": {"mass": 0.5, "along": 0, "gyration": 14},
-                "O-Q": {"mass": 3, "along": 0, "gyration": 70},
-                "Q-B": {"mass": 1, "along": 75, "gyration": 45}, "B": {"mass": 2}},
-               {"B": {"force": [-150, 20]}})
+    sc = _with(
+        ROOT / "worked_problems" / "ring_gear_output.toml",
+        {
+            "OA": {"mass": 1, "along": 30},
+            "AP": {"mass": 0.5, "along": 0, "gyration": 14},
+            "O-Q": {"mass": 3, "along": 0, "gyration": 70},
+            "Q-B": {"mass": 1, "along": 75, "gyration": 45},
+            "B": {"mass": 2},
+        },
+        {"B": {"force": [-150, 20]}},
+    )
     sol = solve(sc)
     f = sol.forces
     P = sol.P
     O, A = P["O"], P["A"]
     u = _unit((A[0] - O[0], A[1] - O[1]))
-    sun = ("tooth sun", (O[0] + 0.040 * u[0], O[1] + 0.040 * u[1]), (-u[1], u[0]), u, "AP",
-           FRAME, DEG20)
+    sun = (
+        "tooth sun",
+        (O[0] + 0.040 * u[0], O[1] + 0.040 * u[1]),
+        (-u[1], u[0]),
+        u,
+        "AP",
+        FRAME,
+        DEG20,
+    )
     m = (-u[0], -u[1])  # from the ring's pitch point towards the planet's centre
-    ring = ("tooth ring", (A[0] + 0.020 * u[0], A[1] + 0.020 * u[1]), (-m[1], m[0]), m,
-            "AP", "O-Q", DEG20)
+    ring = (
+        "tooth ring",
+        (A[0] + 0.020 * u[0], A[1] + 0.020 * u[1]),
+        (-m[1], m[0]),
+        m,
+        "AP",
+        "O-Q",
+        DEG20,
+    )
 
     def build():
         mat = Matrix(sol, ["OA", "AP", "O-Q", "Q-B", "block B"], {"B": "block B"})
@@ -802,6 +937,7 @@ def test_a_ring_driven_by_a_planet_against_the_matrix_method():
         mat.along("N_B", P["B"], (0.0, 1.0), "block B", FRAME)
         mat.couple("T", "OA")
         return mat
+
     x = _teeth(build, [sun, ring])
     scale = max(math.hypot(x[k + ".x"], x[k + ".y"]) for k in ("O", "OQ", "A", "Q", "B"))
     _close(f.pin("A", "AP", "OA"), (x["A.x"], x["A.y"]), scale)
@@ -824,8 +960,10 @@ def test_friction_over_a_sweep_balances_power_at_every_angle():
 
     from polygon_method.forces import analyse
     from polygon_method.motion.sweeps import sweep
+
     sys.path.insert(0, str(ROOT / "tests"))
     from test_forces import _driver_power, _kin
+
     sc = _friction_scene(ROOT / "worked_problems" / "crank_slotted_lever.toml", 0.15, 0.1)
     res = sweep(sc, np.radians(np.arange(3.0, 360.0, 5.0)))
     f = analyse(res)

@@ -51,10 +51,14 @@ from polygon_method.motion.solution import solve
 
 _LONG = "FUZZ_EXAMPLES" in os.environ
 EXAMPLES = int(os.environ.get("FUZZ_EXAMPLES", "40"))
-FUZZ = settings(max_examples=EXAMPLES, deadline=None, derandomize=not _LONG,
-                phases=[Phase.explicit, Phase.reuse, Phase.generate, Phase.shrink],
-                database=None if not _LONG else settings.default.database,
-                suppress_health_check=[HealthCheck.too_slow])
+FUZZ = settings(
+    max_examples=EXAMPLES,
+    deadline=None,
+    derandomize=not _LONG,
+    phases=[Phase.explicit, Phase.reuse, Phase.generate, Phase.shrink],
+    database=None if not _LONG else settings.default.database,
+    suppress_health_check=[HealthCheck.too_slow],
+)
 
 ROOT = Path(__file__).resolve().parent.parent
 _WORK = Path(tempfile.mkdtemp(prefix="pm-fuzz-"))
@@ -109,8 +113,10 @@ def _check_solution(sol) -> None:
         assert value is not None and math.isfinite(value), ans.key
     # loop closure, independent of how the steps found the points
     P, V = sol.P, sol.V
-    scale = max([lk.length for lk in sol.scene.links]
-                + [abs(c) for xy in sol.scene.ground.values() for c in xy])
+    scale = max(
+        [lk.length for lk in sol.scene.links]
+        + [abs(c) for xy in sol.scene.ground.values() for c in xy]
+    )
     vmax = max(math.hypot(*v) for v in V.values())
     cond = min([c for c in sol.conditions.values()] + [1.0])
     for lk in sol.scene.links:
@@ -144,10 +150,10 @@ def _check_sweep(scene) -> None:
         ok &= np.broadcast_to(np.asarray(c, dtype=float), theta.shape) >= TOL.singular
     for table in out:
         for name, value in table.items():
-            for part in (value if isinstance(value, (tuple, list)) else (value,)):
+            for part in value if isinstance(value, (tuple, list)) else (value,):
                 if part is None:
                     continue
-                for comp in (part if isinstance(part, tuple) else (part,)):
+                for comp in part if isinstance(part, tuple) else (part,):
                     arr = np.broadcast_to(np.asarray(comp, dtype=float), theta.shape)
                     assert np.isfinite(arr[ok]).all(), (name, arr[ok])
 
@@ -215,14 +221,14 @@ def _toml_value(v) -> str:
     if isinstance(v, list):
         return "[" + ", ".join(_toml_value(x) for x in v) + "]"
     if isinstance(v, dict):
-        return "{ " + ", ".join(f"{json.dumps(k)} = {_toml_value(x)}"
-                                for k, x in v.items()) + " }"
+        return "{ " + ", ".join(f"{json.dumps(k)} = {_toml_value(x)}" for k, x in v.items()) + " }"
     raise TypeError(v)
 
 
 def _toml(doc: dict) -> str:
-    lines = [f"{json.dumps(k)} = {_toml_value(v)}" for k, v in doc.items()
-             if not isinstance(v, dict)]
+    lines = [
+        f"{json.dumps(k)} = {_toml_value(v)}" for k, v in doc.items() if not isinstance(v, dict)
+    ]
     for k, v in doc.items():
         if isinstance(v, dict):
             lines.append(f"[{json.dumps(k) if not re.match(r'^[a-z]+$', k) else k}]")
@@ -233,8 +239,9 @@ def _toml(doc: dict) -> str:
 # --------------------------------------------------------------------------- strategies
 
 POINTS = ["A", "B", "C", "D", "E", "F", "O", "O2", "O4", "P", "Q"]
-point = st.sampled_from(POINTS) | st.sampled_from(["a", "AB", "1", "", "A-", "Z9", "é",
-                                                  "A\nB", "B\x1b[2J", "C\u2028"])
+point = st.sampled_from(POINTS) | st.sampled_from(
+    ["a", "AB", "1", "", "A-", "Z9", "é", "A\nB", "B\x1b[2J", "C\u2028"]
+)
 
 
 def _join(a, b):
@@ -242,57 +249,136 @@ def _join(a, b):
 
 
 link_key = st.builds(_join, st.sampled_from(POINTS), st.sampled_from(POINTS)) | point
-number = st.one_of(st.integers(-10, 400), st.integers(-2**70, 2**70),
-                   st.floats(allow_nan=True, allow_infinity=True),
-                   st.floats(0.01, 500.0))
-length = number | st.sampled_from(["50 mm", "5 cm", "0.05 m", "2 in", "50 mn", "-3 mm",
-                                   "nan mm", "1e999 mm", "50", "", "mm", "50 mm cw",
-                                   "1e-30 m", "3 rad/s"]) | st.booleans()
+number = st.one_of(
+    st.integers(-10, 400),
+    st.integers(-(2**70), 2**70),
+    st.floats(allow_nan=True, allow_infinity=True),
+    st.floats(0.01, 500.0),
+)
+length = (
+    number
+    | st.sampled_from(
+        [
+            "50 mm",
+            "5 cm",
+            "0.05 m",
+            "2 in",
+            "50 mn",
+            "-3 mm",
+            "nan mm",
+            "1e999 mm",
+            "50",
+            "",
+            "mm",
+            "50 mm cw",
+            "1e-30 m",
+            "3 rad/s",
+        ]
+    )
+    | st.booleans()
+)
 text = st.text(st.characters(exclude_categories=("Cs",)), max_size=8)  # TOML-encodable
 scalar = number | text | st.booleans()
-anything = st.recursive(scalar, lambda c: st.lists(c, max_size=3)
-                        | st.dictionaries(text, c, max_size=3), max_leaves=6)
+anything = st.recursive(
+    scalar, lambda c: st.lists(c, max_size=3) | st.dictionaries(text, c, max_size=3), max_leaves=6
+)
 coords = st.lists(length, min_size=2, max_size=2) | anything
-angle = number | st.sampled_from(["60 deg", "1 rad", "60 dge", "400 deg", "1e308 deg",
-                                  "-90", "90 deg cw"])
-speed = st.builds(lambda v, u, s: f"{v} {u} {s}".strip(), number,
-                  st.sampled_from(["rad/s", "rpm", "rps", "rmp", "", "m/s"]),
-                  st.sampled_from(["cw", "ccw", "", "acw"])) | number
-acceleration = st.builds(lambda v, u, s: f"{v} {u} {s}".strip(), number,
-                         st.sampled_from(["rad/s^2", "rad/s", ""]),
-                         st.sampled_from(["cw", "ccw", ""])) | number
-force = number | st.sampled_from(["2 kN", "1e308 MN", "-5 N", "5 kn"]) \
+angle = number | st.sampled_from(
+    ["60 deg", "1 rad", "60 dge", "400 deg", "1e308 deg", "-90", "90 deg cw"]
+)
+speed = (
+    st.builds(
+        lambda v, u, s: f"{v} {u} {s}".strip(),
+        number,
+        st.sampled_from(["rad/s", "rpm", "rps", "rmp", "", "m/s"]),
+        st.sampled_from(["cw", "ccw", "", "acw"]),
+    )
+    | number
+)
+acceleration = (
+    st.builds(
+        lambda v, u, s: f"{v} {u} {s}".strip(),
+        number,
+        st.sampled_from(["rad/s^2", "rad/s", ""]),
+        st.sampled_from(["cw", "ccw", ""]),
+    )
+    | number
+)
+force = (
+    number
+    | st.sampled_from(["2 kN", "1e308 MN", "-5 N", "5 kn"])
     | st.lists(number, min_size=1, max_size=3)
-answer_key = st.builds(lambda p, n: f"{p}_{n}", st.sampled_from(
-    ["v", "a", "omega", "alpha", "vs", "as", "ac", "rub", "vel", "w"]), link_key) \
-    | st.sampled_from(["torque", "tolerance"])
-answer_value = number | st.sampled_from(["0.39 m/s", "5 rad/s ccw", "3 %", "1 m/s^2",
-                                         "2 N m cw", "0 m/s", "1e308 m/s"])
+)
+answer_key = st.builds(
+    lambda p, n: f"{p}_{n}",
+    st.sampled_from(["v", "a", "omega", "alpha", "vs", "as", "ac", "rub", "vel", "w"]),
+    link_key,
+) | st.sampled_from(["torque", "tolerance"])
+answer_value = number | st.sampled_from(
+    ["0.39 m/s", "5 rad/s ccw", "3 %", "1 m/s^2", "2 N m cw", "0 m/s", "1e308 m/s"]
+)
 
-scene_doc = st.fixed_dictionaries({}, optional={
-    "title": scalar,
-    "units": st.sampled_from(["mm", "cm", "m", "in", "mmm", "ft"]) | scalar,
-    "ground": st.dictionaries(point, coords, max_size=4) | anything,
-    "links": st.dictionaries(link_key, length, max_size=6),
-    "points": st.dictionaries(point, st.fixed_dictionaries(
-        {"on": link_key}, optional={"along": length, "from": point,
-                                    "distances": st.dictionaries(point, length, max_size=3),
-                                    "turn": st.sampled_from(["cw", "ccw", "up"])}),
-        max_size=2),
-    "sliders": st.dictionaries(point, st.fixed_dictionaries({}, optional={
-        "path": st.sampled_from(["horizontal", "vertical", "30 deg", "diagonal"]) | angle,
-        "through": coords | point, "along": link_key}), max_size=2),
-    "assembly": st.dictionaries(point, st.sampled_from(["above", "below", "left", "right",
-                                                        "up"]) | coords, max_size=2),
-    "input": st.fixed_dictionaries({}, optional={
-        "crank": link_key, "angle": angle, "speed": speed, "acceleration": acceleration}),
-    "pins": st.dictionaries(point, st.dictionaries(
-        st.sampled_from(["diameter", "radius", "dia"]), length, max_size=2), max_size=2),
-    "loads": st.dictionaries(link_key, st.fixed_dictionaries({}, optional={
-        "force": force, "direction": angle, "torque": force}), max_size=2),
-    "answers": st.dictionaries(answer_key, answer_value, max_size=3),
-    "extra": anything,
-})
+scene_doc = st.fixed_dictionaries(
+    {},
+    optional={
+        "title": scalar,
+        "units": st.sampled_from(["mm", "cm", "m", "in", "mmm", "ft"]) | scalar,
+        "ground": st.dictionaries(point, coords, max_size=4) | anything,
+        "links": st.dictionaries(link_key, length, max_size=6),
+        "points": st.dictionaries(
+            point,
+            st.fixed_dictionaries(
+                {"on": link_key},
+                optional={
+                    "along": length,
+                    "from": point,
+                    "distances": st.dictionaries(point, length, max_size=3),
+                    "turn": st.sampled_from(["cw", "ccw", "up"]),
+                },
+            ),
+            max_size=2,
+        ),
+        "sliders": st.dictionaries(
+            point,
+            st.fixed_dictionaries(
+                {},
+                optional={
+                    "path": st.sampled_from(["horizontal", "vertical", "30 deg", "diagonal"])
+                    | angle,
+                    "through": coords | point,
+                    "along": link_key,
+                },
+            ),
+            max_size=2,
+        ),
+        "assembly": st.dictionaries(
+            point, st.sampled_from(["above", "below", "left", "right", "up"]) | coords, max_size=2
+        ),
+        "input": st.fixed_dictionaries(
+            {},
+            optional={
+                "crank": link_key,
+                "angle": angle,
+                "speed": speed,
+                "acceleration": acceleration,
+            },
+        ),
+        "pins": st.dictionaries(
+            point,
+            st.dictionaries(st.sampled_from(["diameter", "radius", "dia"]), length, max_size=2),
+            max_size=2,
+        ),
+        "loads": st.dictionaries(
+            link_key,
+            st.fixed_dictionaries(
+                {}, optional={"force": force, "direction": angle, "torque": force}
+            ),
+            max_size=2,
+        ),
+        "answers": st.dictionaries(answer_key, answer_value, max_size=3),
+        "extra": anything,
+    },
+)
 
 # seeds for the text mutations: the worked problems and three small scenes
 _SEEDS = [
@@ -311,9 +397,38 @@ speed = "180 rpm ccw"\n[answers]\nvs_B = "1 m/s"\n""",
 [loads]\nQ = { force = [-800, 0] }\n""",
 ] + [p.read_text(encoding="utf-8") for p in sorted((ROOT / "worked_problems").glob("*.toml"))]
 
-_PIECES = ["[", "]", "{", "}", "=", "\"", "'", ",", "\n", "#", " ", "-", ".", "e", "0",
-           "nan", "inf", "1e400", "[links]", "[[x]]", "A", "\\", "\x00", "\ufeff", "é",
-           "\"\"\"", "[" * 40, "AB = 5\n", "\r\n", "\t"]
+_PIECES = [
+    "[",
+    "]",
+    "{",
+    "}",
+    "=",
+    '"',
+    "'",
+    ",",
+    "\n",
+    "#",
+    " ",
+    "-",
+    ".",
+    "e",
+    "0",
+    "nan",
+    "inf",
+    "1e400",
+    "[links]",
+    "[[x]]",
+    "A",
+    "\\",
+    "\x00",
+    "\ufeff",
+    "é",
+    '"""',
+    "[" * 40,
+    "AB = 5\n",
+    "\r\n",
+    "\t",
+]
 
 
 @st.composite
@@ -326,14 +441,29 @@ def mutated(draw):
             piece = draw(st.sampled_from(_PIECES) | st.text(max_size=4))  # surrogates too
             text = text[:i] + piece + text[i:]
         elif op == "delete":
-            text = text[:i] + text[i + draw(st.integers(1, 8)):]
+            text = text[:i] + text[i + draw(st.integers(1, 8)) :]
         elif op == "number":
             nums = list(re.finditer(r"\d+(\.\d+)?", text))
             if nums:
                 m = nums[draw(st.integers(0, len(nums) - 1))]
-                new = draw(st.sampled_from(["0", "-1", "1e-9", "1e9", "0.0001", "99999",
-                                            "nan", "inf", "1e400", "150", "600"]))
-                text = text[:m.start()] + new + text[m.end():]
+                new = draw(
+                    st.sampled_from(
+                        [
+                            "0",
+                            "-1",
+                            "1e-9",
+                            "1e9",
+                            "0.0001",
+                            "99999",
+                            "nan",
+                            "inf",
+                            "1e400",
+                            "150",
+                            "600",
+                        ]
+                    )
+                )
+                text = text[: m.start()] + new + text[m.end() :]
         elif op == "cut":
             text = text[:i]
         else:
@@ -360,39 +490,51 @@ def _ext(draw, lo, hi):
     return draw(sometimes_extreme(st.floats(lo, hi, **fin)))
 
 
-
 @st.composite
 def fourbar(draw):
     d = draw(st.floats(1, 500, **fin) | st.integers(1, 200).map(float))
-    ab, bc, cd = (draw(st.floats(0.5, 500, **fin) | st.integers(1, 200).map(float))
-                  for _ in range(3))
-    doc = {"ground": {"A": [0, 0], "D": [d, draw(st.sampled_from([0, 0, 30, -40]))]},
-           "links": {"AB": ab, "BC": bc, "CD": cd},
-           "points": {}, "input": {
-               "crank": "AB", "angle": draw(st.floats(-720, 720, **fin)
-                                            | st.sampled_from([0, 90, 180, 270])),
-               "speed": f"{_ext(draw, 0.01, 3000)} rpm {draw(sense)}"}}
+    ab, bc, cd = (
+        draw(st.floats(0.5, 500, **fin) | st.integers(1, 200).map(float)) for _ in range(3)
+    )
+    doc = {
+        "ground": {"A": [0, 0], "D": [d, draw(st.sampled_from([0, 0, 30, -40]))]},
+        "links": {"AB": ab, "BC": bc, "CD": cd},
+        "points": {},
+        "input": {
+            "crank": "AB",
+            "angle": draw(st.floats(-720, 720, **fin) | st.sampled_from([0, 90, 180, 270])),
+            "speed": f"{_ext(draw, 0.01, 3000)} rpm {draw(sense)}",
+        },
+    }
     alpha = _ext(draw, -1e4, 1e4)
     if alpha:
         doc["input"]["acceleration"] = f"{abs(alpha)} rad/s^2 {'ccw' if alpha > 0 else 'cw'}"
     hint = draw(st.sampled_from([None, "above", "below", "left", "right", "near"]))
     if hint == "near":
-        doc["assembly"] = {"C": [draw(st.floats(-600, 600, **fin)),
-                                 draw(st.floats(-600, 600, **fin))]}
+        doc["assembly"] = {
+            "C": [draw(st.floats(-600, 600, **fin)), draw(st.floats(-600, 600, **fin))]
+        }
     elif hint:
         doc["assembly"] = {"C": hint}
     if draw(st.booleans()):
         doc["points"]["E"] = {"on": "BC", "along": draw(st.floats(-300, 300, **fin))}
     if draw(st.booleans()):
-        doc["points"]["F"] = {"on": "CD", "distances": {
-            "C": draw(st.floats(1, 300, **fin)), "D": draw(st.floats(1, 300, **fin))},
-            "turn": draw(sense)}
+        doc["points"]["F"] = {
+            "on": "CD",
+            "distances": {"C": draw(st.floats(1, 300, **fin)), "D": draw(st.floats(1, 300, **fin))},
+            "turn": draw(sense),
+        }
     if draw(st.booleans()):
         doc["pins"] = {"B": {"diameter": draw(st.floats(1, 60, **fin))}}
-        doc["loads"] = {"C": {"force": f"{_ext(draw, 0, 1e5)} kN",
-                              "direction": draw(st.floats(0, 360, **fin))}}
-        doc["answers"] = {"v_C": "0.4 m/s", "omega_BC": "5 rad/s", "rub_B": "0.1 m/s",
-                          "torque": "20 N m"}
+        doc["loads"] = {
+            "C": {"force": f"{_ext(draw, 0, 1e5)} kN", "direction": draw(st.floats(0, 360, **fin))}
+        }
+        doc["answers"] = {
+            "v_C": "0.4 m/s",
+            "omega_BC": "5 rad/s",
+            "rub_B": "0.1 m/s",
+            "torque": "20 N m",
+        }
     if not doc["points"]:
         del doc["points"]
     return doc
@@ -402,20 +544,34 @@ def fourbar(draw):
 def slider_crank(draw):
     r = draw(st.floats(1, 300, **fin) | st.integers(1, 200).map(float))
     rod = draw(st.floats(1, 900, **fin) | st.integers(1, 200).map(float))
-    doc = {"ground": {"O": [0, 0]}, "links": {"OA": r, "AB": rod},
-           "sliders": {"B": {"path": draw(st.sampled_from(["horizontal", "vertical"])
-                                          | st.floats(-180, 180, **fin).map(
-                                              lambda a: f"{a} deg")),
-                             "through": [0, draw(st.floats(-400, 400, **fin)
-                                                 | st.integers(-100, 100).map(float))]}},
-           "input": {"crank": "OA", "angle": draw(st.floats(-360, 360, **fin)
-                                                  | st.sampled_from([0, 90, 180, 270])),
-                     "speed": f"{draw(st.floats(0.1, 500, **fin))} rad/s {draw(sense)}"}}
+    doc = {
+        "ground": {"O": [0, 0]},
+        "links": {"OA": r, "AB": rod},
+        "sliders": {
+            "B": {
+                "path": draw(
+                    st.sampled_from(["horizontal", "vertical"])
+                    | st.floats(-180, 180, **fin).map(lambda a: f"{a} deg")
+                ),
+                "through": [
+                    0,
+                    draw(st.floats(-400, 400, **fin) | st.integers(-100, 100).map(float)),
+                ],
+            }
+        },
+        "input": {
+            "crank": "OA",
+            "angle": draw(st.floats(-360, 360, **fin) | st.sampled_from([0, 90, 180, 270])),
+            "speed": f"{draw(st.floats(0.1, 500, **fin))} rad/s {draw(sense)}",
+        },
+    }
     if draw(st.booleans()):
         doc["assembly"] = {"B": draw(st.sampled_from(["left", "right", "above", "below"]))}
     if draw(st.booleans()):
-        doc["loads"] = {"B": {"force": [_ext(draw, -1e4, 1e4), 0.0]},
-                        "AB": {"torque": f"{_ext(draw, 0, 1e3)} N m {draw(sense)}"}}
+        doc["loads"] = {
+            "B": {"force": [_ext(draw, -1e4, 1e4), 0.0]},
+            "AB": {"torque": f"{_ext(draw, 0, 1e3)} N m {draw(sense)}"},
+        }
         doc["answers"] = {"vs_B": "1 m/s", "as_B": "2 m/s^2"}
     return doc
 
@@ -426,15 +582,20 @@ def slotted_lever(draw):
     r = draw(st.floats(1, 400, **fin) | st.integers(1, 300).map(float))
     lever = draw(st.floats(1, 900, **fin))
     rod = draw(st.floats(1, 400, **fin))
-    doc = {"ground": {"O4": [0, 0], "O2": [0, h]},
-           "links": {"O2-A": r, "O4-P": lever, "P-Q": rod},
-           "sliders": {"A": {"along": "O4-P"},
-                       "Q": {"path": "horizontal",
-                             "through": [0, draw(st.floats(-900, 900, **fin))]}},
-           "input": {"crank": "O2-A", "angle": draw(st.floats(-360, 360, **fin)
-                                                    | st.sampled_from([90, 270, -90])),
-                     "speed": f"{draw(st.floats(1, 300, **fin))} rpm {draw(sense)}",
-                     "acceleration": f"{_ext(draw, 0, 100)} rad/s^2 {draw(sense)}"}}
+    doc = {
+        "ground": {"O4": [0, 0], "O2": [0, h]},
+        "links": {"O2-A": r, "O4-P": lever, "P-Q": rod},
+        "sliders": {
+            "A": {"along": "O4-P"},
+            "Q": {"path": "horizontal", "through": [0, draw(st.floats(-900, 900, **fin))]},
+        },
+        "input": {
+            "crank": "O2-A",
+            "angle": draw(st.floats(-360, 360, **fin) | st.sampled_from([90, 270, -90])),
+            "speed": f"{draw(st.floats(1, 300, **fin))} rpm {draw(sense)}",
+            "acceleration": f"{_ext(draw, 0, 100)} rad/s^2 {draw(sense)}",
+        },
+    }
     if draw(st.booleans()):
         doc["assembly"] = {"Q": draw(st.sampled_from(["left", "right"]))}
     if draw(st.booleans()):
@@ -443,29 +604,80 @@ def slotted_lever(draw):
 
 
 MECHANISM = st.one_of(fourbar(), slider_crank(), slotted_lever())
-TABLES = ["answers", "loads", "pins", "input", "assembly", "sliders", "points", "links",
-          "ground"]
-wild = st.one_of(length, angle, speed, acceleration, force, answer_value, point, link_key,
-                 coords, anything, st.sampled_from(["above", "left", "horizontal", "cw",
-                                                    "AB", "BC", "O4-P", "O2-A"]))
-some_key = st.one_of(point, link_key, answer_key, st.sampled_from(
-    ["crank", "angle", "speed", "acceleration", "on", "along", "from", "distances", "turn",
-     "path", "through", "force", "direction", "torque", "diameter", "radius", "units",
-     "title", "tolerance"]))
+TABLES = ["answers", "loads", "pins", "input", "assembly", "sliders", "points", "links", "ground"]
+wild = st.one_of(
+    length,
+    angle,
+    speed,
+    acceleration,
+    force,
+    answer_value,
+    point,
+    link_key,
+    coords,
+    anything,
+    st.sampled_from(["above", "left", "horizontal", "cw", "AB", "BC", "O4-P", "O2-A"]),
+)
+some_key = st.one_of(
+    point,
+    link_key,
+    answer_key,
+    st.sampled_from(
+        [
+            "crank",
+            "angle",
+            "speed",
+            "acceleration",
+            "on",
+            "along",
+            "from",
+            "distances",
+            "turn",
+            "path",
+            "through",
+            "force",
+            "direction",
+            "torque",
+            "diameter",
+            "radius",
+            "units",
+            "title",
+            "tolerance",
+        ]
+    ),
+)
 
 
 def _plausible(draw, doc) -> None:
     """Add or change one entry with a value of the right kind, using the scene's names."""
-    if any(not isinstance(doc.get(t, {}), dict) for t in
-           ("links", "ground", "points", "sliders", "assembly", "input", "pins", "loads")):
+    if any(
+        not isinstance(doc.get(t, {}), dict)
+        for t in ("links", "ground", "points", "sliders", "assembly", "input", "pins", "loads")
+    ):
         return  # an earlier fault made a table something else: broken enough already
-    pts = sorted({p for key in doc.get("links", {}) for p in re.findall(r"[A-Z][0-9]*", key)}
-                 | set(doc.get("ground", {})))
+    pts = sorted(
+        {p for key in doc.get("links", {}) for p in re.findall(r"[A-Z][0-9]*", key)}
+        | set(doc.get("ground", {}))
+    )
     links = list(doc.get("links", {})) or ["AB"]
     pts = pts or ["A", "B"]
     size = st.floats(0.5, 600, allow_nan=False) | st.integers(1, 300)
-    what = draw(st.sampled_from(["link", "ground", "crank", "carried", "slider", "guide",
-                                 "assembly", "length", "pin", "load"]))
+    what = draw(
+        st.sampled_from(
+            [
+                "link",
+                "ground",
+                "crank",
+                "carried",
+                "slider",
+                "guide",
+                "assembly",
+                "length",
+                "pin",
+                "load",
+            ]
+        )
+    )
     new_point = st.sampled_from(pts + ["G", "H"])
     if what == "link":
         a, b = draw(new_point), draw(new_point)
@@ -476,16 +688,20 @@ def _plausible(draw, doc) -> None:
         doc.setdefault("input", {})["crank"] = draw(st.sampled_from(links))
     elif what == "carried":
         doc.setdefault("points", {})[draw(new_point)] = {
-            "on": draw(st.sampled_from(links)), "along": draw(size)}
+            "on": draw(st.sampled_from(links)),
+            "along": draw(size),
+        }
     elif what == "slider":
         doc.setdefault("sliders", {})[draw(new_point)] = {
-            "path": draw(st.sampled_from(["horizontal", "vertical", "60 deg"]))}
+            "path": draw(st.sampled_from(["horizontal", "vertical", "60 deg"]))
+        }
     elif what == "guide":
         doc.setdefault("sliders", {})[draw(new_point)] = {"along": draw(st.sampled_from(links))}
     elif what == "assembly":
         doc.setdefault("assembly", {})[draw(new_point)] = draw(
             st.sampled_from(["above", "below", "left", "right"])
-            | st.lists(size, min_size=2, max_size=2))
+            | st.lists(size, min_size=2, max_size=2)
+        )
     elif what == "length":
         doc.setdefault("links", {})[draw(st.sampled_from(links))] = draw(size)
     elif what == "pin":
@@ -546,8 +762,10 @@ def test_mutated_scene_text(text):
 
 
 @FUZZ
-@given(st.binary(max_size=200) | st.text(max_size=200).map(
-    lambda t: t.encode("utf-8", errors="surrogatepass")))
+@given(
+    st.binary(max_size=200)
+    | st.text(max_size=200).map(lambda t: t.encode("utf-8", errors="surrogatepass"))
+)
 def test_arbitrary_bytes_through_the_cli(data):
     assert _cli(data) == 2 or data.strip()
 
@@ -585,8 +803,9 @@ def test_the_generators_reach_solutions():
     """The mechanism generators are not all impossible: some solve, some fail."""
     results = []
 
-    @settings(max_examples=100, deadline=None, derandomize=True, database=None,
-              phases=[Phase.generate])
+    @settings(
+        max_examples=100, deadline=None, derandomize=True, database=None, phases=[Phase.generate]
+    )
     @given(MECHANISM)
     def run(doc):
         results.append(_cli(_toml(doc).encode()))

@@ -51,8 +51,12 @@ acceleration = "{a2}"
 
 # (arm, the driven gear's radius, the planet's, inside): a sun (outside) or a ring (inside)
 TRAINS = [(100, 60, 40, False), (80, 120, 40, True), (75, 25, 50, False), (60, 100, 40, True)]
-SPEEDS = [(7.5, -4.0, 3.0, 2.0), (-12.0, 12.0, 0.0, -30.0), (5.0, 0.5, 1.5, 0.0),
-          (0.5, 9.0, 0.0, 4.0)]
+SPEEDS = [
+    (7.5, -4.0, 3.0, 2.0),
+    (-12.0, 12.0, 0.0, -30.0),
+    (5.0, 0.5, 1.5, 0.0),
+    (0.5, 9.0, 0.0, 4.0),
+]
 
 
 def _tabular(arm, rg, rp, inside, w_arm, w_gear):
@@ -71,8 +75,18 @@ def _sensed(v, unit):
 def _differential(arm, rg, rp, inside, w1, w2, a1, a2):
     w1, w2 = _sensed(w1, "rad/s"), _sensed(w2, "rad/s")
     a1, a2 = _sensed(a1, "rad/s^2"), _sensed(a2, "rad/s^2")
-    return parse_scene(DIFFERENTIAL.format(arm=arm, rg=rg, rp=rp, w1=w1, w2=w2, a1=a1, a2=a2,
-                                           inside=", inside = true" if inside else ""))
+    return parse_scene(
+        DIFFERENTIAL.format(
+            arm=arm,
+            rg=rg,
+            rp=rp,
+            w1=w1,
+            w2=w2,
+            a1=a1,
+            a2=a2,
+            inside=", inside = true" if inside else "",
+        )
+    )
 
 
 @pytest.mark.parametrize("arm,rg,rp,inside", TRAINS)
@@ -82,10 +96,12 @@ def test_differential_planet_by_the_tabular_method(arm, rg, rp, inside, w1, w2, 
     tabular method's; its points move as a rigid body about its centre on the arm."""
     sol = solve(_differential(arm, rg, rp, inside, w1, w2, a1, a2))
     size = abs(w1) + abs(w2) + 1.0
-    assert sol.W["AP"] == pytest.approx(_tabular(arm, rg, rp, inside, w1, w2), rel=1e-12,
-                                        abs=1e-12 * size)
-    assert sol.Al["AP"] == pytest.approx(_tabular(arm, rg, rp, inside, a1, a2), rel=1e-12,
-                                         abs=1e-12 * (abs(a1) + abs(a2) + 1.0))
+    assert sol.W["AP"] == pytest.approx(
+        _tabular(arm, rg, rp, inside, w1, w2), rel=1e-12, abs=1e-12 * size
+    )
+    assert sol.Al["AP"] == pytest.approx(
+        _tabular(arm, rg, rp, inside, a1, a2), rel=1e-12, abs=1e-12 * (abs(a1) + abs(a2) + 1.0)
+    )
     # the planet's pitch point moves as the driven gear's (no slip)
     I, vI, _ = next(st for st in sol.plan.steps if st.kind == "rolling").contact_motion(sol)
     wg = w2
@@ -101,8 +117,9 @@ def test_differential_superposition_table_adds_to_the_solution(arm, rg, rp, insi
     w1, w2 = 7.5, -4.0
     sol = solve(_differential(arm, rg, rp, inside, w1, w2, 0.0, 0.0))
     text = steps_text(sol)
-    row = next(line for line in text.splitlines() if line.strip().startswith("AP ")
-               and "rad/s" in line)
+    row = next(
+        line for line in text.splitlines() if line.strip().startswith("AP ") and "rad/s" in line
+    )
     e = -1 if inside else 1
     alone_arm, alone_gear = (1 + e * rg / rp) * w1, -e * (rg / rp) * w2
     for value in (alone_arm, alone_gear, sol.W["AP"]):
@@ -146,6 +163,7 @@ def test_positions_differentiated_give_the_velocity_and_acceleration(name, turn)
     plan = compile_plan(sc)
     th = sc.input.angle + turn
     from polygon_method.steps import Context
+
     ctx = Context(np.array([th]), 1.0, 0.0, array=True)
     m = plan.run(ctx)
     assert ctx.bad is None or not ctx.bad.any()  # assembled there
@@ -153,11 +171,15 @@ def test_positions_differentiated_give_the_velocity_and_acceleration(name, turn)
         (vx, vy), (ax, ay) = m.V[p], m.A[p]
         d1, d2 = _fd(plan, th, p)
         scale = max(math.hypot(*[float(np.ravel(c)[0]) for c in m.V[q]]) for q in m.V) + 1e-3
-        assert math.hypot(d1[0] - float(np.ravel(vx)[0]), d1[1] - float(np.ravel(vy)[0])) \
-            <= 1e-8 * scale, p
+        assert (
+            math.hypot(d1[0] - float(np.ravel(vx)[0]), d1[1] - float(np.ravel(vy)[0]))
+            <= 1e-8 * scale
+        ), p
         scale_a = max(math.hypot(*[float(np.ravel(c)[0]) for c in m.A[q]]) for q in m.A)
-        assert math.hypot(d2[0] - float(np.ravel(ax)[0]), d2[1] - float(np.ravel(ay)[0])) \
-            <= 1e-6 * scale_a, p
+        assert (
+            math.hypot(d2[0] - float(np.ravel(ax)[0]), d2[1] - float(np.ravel(ay)[0]))
+            <= 1e-6 * scale_a
+        ), p
 
 
 def test_planet_on_a_rocker_turns_by_willis_relation():
@@ -218,6 +240,7 @@ def test_an_arm_turning_fully_through_a_linkage_is_followed_half_a_turn_then_ref
     plan = compile_plan(sc)
     th = sc.input.angle + np.linspace(0.0, 2 * math.pi, 361)
     from polygon_method.steps import Context
+
     ctx = Context(th, 1.0, 0.0, array=True)
     m = plan.run(ctx, upto=0)
     k = next(st.index for st in plan.steps if st.kind == "rolling")
@@ -240,7 +263,7 @@ def test_sweep_of_a_drag_link_planet_stops_where_the_arm_cannot_be_followed(tmp_
 
 
 def test_a_gear_as_the_driver_through_the_given_motion():
-    """"Gear 2 turns at 200 rpm cw": the train's first gear (the crank) is found, omega_1 =
+    """ "Gear 2 turns at 200 rpm cw": the train's first gear (the crank) is found, omega_1 =
     -omega_2 r2 / r1 (gears on fixed centres, external)."""
     text = (TEXTBOOK / "rolling_gear_train.toml").read_text(encoding="utf-8")
     text = text.replace('speed = "300 rpm ccw"', '"omega_O2-B" = "200 rpm cw"')
@@ -253,7 +276,7 @@ def test_a_gear_as_the_driver_through_the_given_motion():
 
 
 def test_a_wheel_as_the_driver_through_the_given_motion():
-    """"The wheel rolls at 4 rad/s cw": its centre moves at omega r along the ground (r =
+    """ "The wheel rolls at 4 rad/s cw": its centre moves at omega r along the ground (r =
     50 mm), and the crank's speed that gives it is found."""
     text = (WORKED / "rolling_wheel_rod_slider.toml").read_text(encoding="utf-8")
     text = text.replace('speed = "20 rad/s cw"', 'omega_CP = "4 rad/s cw"')
@@ -267,8 +290,9 @@ def _run(text, tmp_path, *args):
     f = tmp_path / "s.toml"
     f.write_text(text)
     cmd = [sys.executable, "-m", "polygon_method", *args, str(f)]
-    return subprocess.run(cmd, capture_output=True, text=True,
-                          env={"PYTHONPATH": str(HERE.parent), "PATH": ""})
+    return subprocess.run(
+        cmd, capture_output=True, text=True, env={"PYTHONPATH": str(HERE.parent), "PATH": ""}
+    )
 
 
 OVER = """
@@ -300,29 +324,44 @@ def test_a_second_driver_on_a_meshed_gear_over_determines_the_chain(tmp_path):
     assert len(lines) == 1 and "over-determine" in lines[0] and "[input.second]" in lines[0]
 
 
-@pytest.mark.parametrize("name,old,new", [
-    ("rolling_sun_and_planet", 'on_radius = 100', 'on_radius = 90'),
-    ("rolling_planet_on_rocker", 'on_radius = 60', 'on_radius = 70'),
-    ("rolling_differential", 'OS = 6', 'OS = 7'),
-])
-def test_a_pair_whose_contact_leaves_the_pitch_point_is_refused_in_one_line(name, old, new,
-                                                                            tmp_path):
+@pytest.mark.parametrize(
+    "name,old,new",
+    [
+        ("rolling_sun_and_planet", "on_radius = 100", "on_radius = 90"),
+        ("rolling_planet_on_rocker", "on_radius = 60", "on_radius = 70"),
+        ("rolling_differential", "OS = 6", "OS = 7"),
+    ],
+)
+def test_a_pair_whose_contact_leaves_the_pitch_point_is_refused_in_one_line(
+    name, old, new, tmp_path
+):
     text = (TEXTBOOK / f"{name}.toml").read_text(encoding="utf-8")
     assert old in text
     bad = text.replace(old, new)
     if name == "rolling_differential":  # the sun larger than the centre distance allows
-        bad = bad.replace('AP = { on = "OS", angle = 45 }',
-                          'AP = { on = "OS", on_radius = 7, angle = 45 }')
+        bad = bad.replace(
+            'AP = { on = "OS", angle = 45 }', 'AP = { on = "OS", on_radius = 7, angle = 45 }'
+        )
     out = _run(bad, tmp_path, "solve")
     assert out.returncode == 2, out.stdout
     lines = out.stderr.strip().splitlines()
     assert len(lines) == 1 and "pitch point" in lines[0] and "[rolling]" in lines[0], lines
 
 
-@pytest.mark.parametrize("name", ["rolling_planet_on_rocker", "rolling_sun_and_planet",
-                                  "rolling_differential"])
-@pytest.mark.parametrize("command", [("solve", "--json"), ("steps",), ("centres",),
-                                     ("sweep", "--summary"), ("linkage",), ("plan",)])
+@pytest.mark.parametrize(
+    "name", ["rolling_planet_on_rocker", "rolling_sun_and_planet", "rolling_differential"]
+)
+@pytest.mark.parametrize(
+    "command",
+    [
+        ("solve", "--json"),
+        ("steps",),
+        ("centres",),
+        ("sweep", "--summary"),
+        ("linkage",),
+        ("plan",),
+    ],
+)
 def test_every_view_works_or_refuses_in_one_located_line(name, command, tmp_path):
     text = (TEXTBOOK / f"{name}.toml").read_text(encoding="utf-8")
     out = _run(text, tmp_path, *command)
@@ -364,17 +403,21 @@ def test_a_planet_meshing_with_a_gear_fixed_to_its_own_arm_turns_with_the_arm():
     assert sol.Al["C-P"] == pytest.approx(sol.Al["BC"], rel=1e-13)
 
 
-@pytest.mark.parametrize("given,code", [
-    # the planet's turning relative to the arm: -(r_s/r_p)(omega_s - omega_arm) = 1.5 x
-    # (2 pi + 4 pi) = 28.27 rad/s ccw (the row 'all locked' left out)
-    ("28.27 rad/s ccw", "arm_row_left_out"),
-    # the ratio of fixed centres: -(r_s/r_p) omega_s = 1.5 x 2 pi = 9.425 rad/s ccw
-    ("9.425 rad/s ccw", "arm_taken_fixed"),
-])
+@pytest.mark.parametrize(
+    "given,code",
+    [
+        # the planet's turning relative to the arm: -(r_s/r_p)(omega_s - omega_arm) = 1.5 x
+        # (2 pi + 4 pi) = 28.27 rad/s ccw (the row 'all locked' left out)
+        ("28.27 rad/s ccw", "arm_row_left_out"),
+        # the ratio of fixed centres: -(r_s/r_p) omega_s = 1.5 x 2 pi = 9.425 rad/s ccw
+        ("9.425 rad/s ccw", "arm_taken_fixed"),
+    ],
+)
 def test_check_names_the_tabular_methods_slips(given, code):
     """A differential's planet answered with a classic slip of the tabular method is
     diagnosed as that slip (the values by hand, above)."""
     from polygon_method.check import check_answers
+
     text = (WORKED / "differential_epicyclic.toml").read_text(encoding="utf-8")
     text = text.replace('omega_AP = "40.84 rad/s ccw"', f'omega_AP = "{given}"')
     assert given in text
@@ -384,19 +427,21 @@ def test_check_names_the_tabular_methods_slips(given, code):
 
 
 def test_a_gear_as_the_crank_drives_the_gears_written_on_it(tmp_path):
-    """"Gear 2 turns at 300 rpm ccw and drives gears 1 and 3": gear 2 is the crank and the
+    """ "Gear 2 turns at 300 rpm ccw and drives gears 1 and 3": gear 2 is the crank and the
     others are wheels on it (omega_1 = -(r2/r1) omega_2 = -1.5 omega_2, omega_3 = -(r2/r3)
     omega_2 = -0.75 omega_2); the mesh written the other way round is refused, saying how
     to write it."""
     text = (TEXTBOOK / "rolling_gear_train.toml").read_text(encoding="utf-8")
-    turned = text.replace('crank = "O1-A"', 'crank = "O2-B"').replace("angle = 20\n",
-                                                                    "angle = 90\n")
+    turned = text.replace('crank = "O1-A"', 'crank = "O2-B"').replace(
+        "angle = 20\n", "angle = 90\n"
+    )
     out = _run(turned, tmp_path, "solve")
     lines = out.stderr.strip().splitlines()
     assert out.returncode == 2 and len(lines) == 1, out.stderr
     assert '"O1-A" = { on = "O2-B" }' in lines[0] and "[rolling] O2-B" in lines[0]
-    good = turned.replace('"O2-B" = { on = "O1-A", angle = 90 }',
-                          '"O1-A" = { on = "O2-B", angle = 200 }')
+    good = turned.replace(
+        '"O2-B" = { on = "O1-A", angle = 90 }', '"O1-A" = { on = "O2-B", angle = 200 }'
+    )
     sol = solve(parse_scene(good))
     w2 = 300 * 2 * math.pi / 60
     assert sol.W["O2-B"] == pytest.approx(w2, rel=1e-13)

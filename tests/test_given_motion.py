@@ -37,9 +37,10 @@ angle = {angle}
 {given}
 """
 
-FOURBAR = seed(middle='[points]\n'
-                      'F = {{ on = "BC", distances = {{ B = 45, C = 30 }}, turn = "cw" }}\n',
-               drive='angle = {angle}\n{given}')
+FOURBAR = seed(
+    middle='[points]\nF = {{ on = "BC", distances = {{ B = 45, C = 30 }}, turn = "cw" }}\n',
+    drive="angle = {angle}\n{given}",
+)
 
 SLOTTED = """
 [ground]
@@ -75,8 +76,9 @@ def reference_given(scene, sol, kind, names, value, rate, direction=None, crank_
     """The 50-digit solution for the crank's speed that gives ``value`` and ``rate`` (0:
     the given motion steady), or with the crank's own ``crank_alpha``."""
     guess = dict(sol.P)
-    unit = dataclasses.replace(scene, input=dataclasses.replace(scene.input, omega=1.0,
-                                                               alpha=0.0, given=None))
+    unit = dataclasses.replace(
+        scene, input=dataclasses.replace(scene.input, omega=1.0, alpha=0.0, given=None)
+    )
     r1 = reference_solution(unit, guess)
     y1, h = _ref_quantity(scene, r1, kind, names, direction)
     w = mpf(value) / y1
@@ -84,8 +86,9 @@ def reference_given(scene, sol, kind, names, value, rate, direction=None, crank_
         al = mpf(crank_alpha)
     else:
         al = (mpf(rate or 0) - w * w * h) / y1
-    full = dataclasses.replace(unit, input=dataclasses.replace(unit.input, omega=float(w),
-                                                               alpha=float(al)))
+    full = dataclasses.replace(
+        unit, input=dataclasses.replace(unit.input, omega=float(w), alpha=float(al))
+    )
     # the float omega and alpha above only carry the reference's to the solver's scene: the
     # reference is solved at its own mpf values below by scaling (velocities linear in w)
     ref = reference_solution(full, guess)
@@ -100,10 +103,10 @@ def _compare(scene, sol, ref, w, al):
     acc = max(math.hypot(*a) for a in sol.A.values())
     bounds = sol.error_bounds
     for p in scene.point_names:
-        for got, want, size, b, sz in ((sol.V[p], ref["velocities"][p], vs, bounds.V[p],
-                                        bounds.scales["velocity"]),
-                                       (sol.A[p], ref["accelerations"][p], acc, bounds.A[p],
-                                        bounds.scales["acceleration"])):
+        for got, want, size, b, sz in (
+            (sol.V[p], ref["velocities"][p], vs, bounds.V[p], bounds.scales["velocity"]),
+            (sol.A[p], ref["accelerations"][p], acc, bounds.A[p], bounds.scales["acceleration"]),
+        ):
             err = float(math.hypot(got[0] - want[0], got[1] - want[1]))
             assert err <= REL * size, (p, got, want)
             assert err <= b * sz + 1e-300, (p, "the error bound does not hold", err, b * sz)
@@ -112,9 +115,16 @@ def _compare(scene, sol, ref, w, al):
         assert abs(sol.Al[lk.key] - ref["alpha"][lk.key]) <= REL * (abs(al) + w * w)
 
 
-SLIDER_CASES = [(e, a, g) for e in (0, 40) for a in (30, 100, 200, 315)
-                for g in ('vs_B = "5 m/s left"\nas_B = "-20 m/s^2"',
-                          'vs_B = "-2.5 m/s"', 'vs_B = "3 m/s right"\nacceleration = 0')]
+SLIDER_CASES = [
+    (e, a, g)
+    for e in (0, 40)
+    for a in (30, 100, 200, 315)
+    for g in (
+        'vs_B = "5 m/s left"\nas_B = "-20 m/s^2"',
+        'vs_B = "-2.5 m/s"',
+        'vs_B = "3 m/s right"\nacceleration = 0',
+    )
+]
 
 
 @pytest.mark.parametrize("e, angle, given", SLIDER_CASES)
@@ -122,20 +132,28 @@ def test_piston_given(e, angle, given):
     scene = parse_scene(SLIDER.format(e=e, angle=angle, given=given))
     sol = solve(scene)
     g = scene.input.given
-    w, al, ref, _ = reference_given(scene, sol, "vs", ("B",), g.value, g.rate,
-                                    crank_alpha=scene.input.alpha if "acceleration" in given
-                                    else None)
+    w, al, ref, _ = reference_given(
+        scene,
+        sol,
+        "vs",
+        ("B",),
+        g.value,
+        g.rate,
+        crank_alpha=scene.input.alpha if "acceleration" in given else None,
+    )
     _compare(scene, sol, ref, w, al)
     assert abs(sol.sliding_velocity("B") - g.value) <= REL * abs(g.value)
     if "acceleration" not in given:  # the given motion's rate, or 0: steady
         assert abs(sol.sliding_acceleration("B") - (g.rate or 0.0)) <= REL * (
-            max(math.hypot(*a) for a in sol.A.values()))
+            max(math.hypot(*a) for a in sol.A.values())
+        )
 
 
 @pytest.mark.parametrize("angle", (60, 100, 290))
 def test_coupler_given(angle):
-    scene = parse_scene(FOURBAR.format(angle=angle, given='omega_BC = "3 rad/s cw"\n'
-                                                         'alpha_BC = "12 rad/s^2 ccw"'))
+    scene = parse_scene(
+        FOURBAR.format(angle=angle, given='omega_BC = "3 rad/s cw"\nalpha_BC = "12 rad/s^2 ccw"')
+    )
     sol = solve(scene)
     w, al, ref, _ = reference_given(scene, sol, "omega", ("B", "C"), -3.0, 12.0)
     _compare(scene, sol, ref, w, al)
@@ -150,8 +168,9 @@ def test_point_velocity_given(angle):
     ref1 = reference_solution(probe, dict(solve(probe).P))
     vx, vy = (float(c) for c in ref1["velocities"]["F"])
     heading = math.degrees(math.atan2(-vy, -vx))  # the opposite of its motion at ccw
-    scene = parse_scene(FOURBAR.format(
-        angle=angle, given=f'v_F = "0.8 m/s at {heading!r} deg"\na_F = "3 m/s^2"'))
+    scene = parse_scene(
+        FOURBAR.format(angle=angle, given=f'v_F = "0.8 m/s at {heading!r} deg"\na_F = "3 m/s^2"')
+    )
     sol = solve(scene)
     d = (math.cos(math.radians(heading)), math.sin(math.radians(heading)))
     w, al, ref, _ = reference_given(scene, sol, "v", ("F",), 0.8, 3.0, d)
@@ -208,12 +227,20 @@ def test_bad_given_one_line(tmp_path, capsys, given, words):
 
 def test_every_view_takes_a_given_motion(tmp_path):
     f = tmp_path / "s.toml"
-    f.write_text(SLIDER.format(e=20, angle=60, given='vs_B = "5 m/s left"\nas_B = -20')
-                 + '[answers]\nomega_OA = "40 rad/s ccw"\n')
-    for argv in (["solve", "--json"], ["steps"], ["check"], ["centres"], ["linkage"],
-                 ["draw", "-o", str(tmp_path / "d.svg")],
-                 ["sweep", "--steps", "36", "--summary"],
-                 ["page", "-o", str(tmp_path / "p.html")]):
+    f.write_text(
+        SLIDER.format(e=20, angle=60, given='vs_B = "5 m/s left"\nas_B = -20')
+        + '[answers]\nomega_OA = "40 rad/s ccw"\n'
+    )
+    for argv in (
+        ["solve", "--json"],
+        ["steps"],
+        ["check"],
+        ["centres"],
+        ["linkage"],
+        ["draw", "-o", str(tmp_path / "d.svg")],
+        ["sweep", "--steps", "36", "--summary"],
+        ["page", "-o", str(tmp_path / "p.html")],
+    ):
         code = main([argv[0], str(f), *argv[1:]])
         assert code in (0, 1), argv  # check: 1 when an answer is wrong
 
@@ -221,7 +248,11 @@ def test_every_view_takes_a_given_motion(tmp_path):
 def test_entry_point_prints_the_found_speed(tmp_path):
     f = tmp_path / "s.toml"
     f.write_text(SLIDER.format(e=0, angle=90, given='vs_B = "1.5 m/s left"'))
-    out = subprocess.run([sys.executable, "-m", "polygon_method", "solve", str(f)],
-                         capture_output=True, text=True, check=True).stdout
+    out = subprocess.run(
+        [sys.executable, "-m", "polygon_method", "solve", str(f)],
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout
     # at 90 deg the piston moves as fast as the crank pin: omega = 1.5 / 0.15
     assert "crank OA at 90 deg, 10 rad/s ccw (from vs_B = 1.5 m/s left)" in out

@@ -37,9 +37,11 @@ def drawn(path, angle_off):
     return parse_scene(text.replace(old, f"angle = {value + angle_off}"))
 
 
-KEYS = {TOGGLE: ("rub_A", "rub_D", "torque", "vs_D"),
-        LEVER: ("vs_A", "as_A", "ac_A"),
-        WHITWORTH: ("vs_A", "as_A", "ac_A")}
+KEYS = {
+    TOGGLE: ("rub_A", "rub_D", "torque", "vs_D"),
+    LEVER: ("vs_A", "as_A", "ac_A"),
+    WHITWORTH: ("vs_A", "as_A", "ac_A"),
+}
 UNITS = {"rub": "m/s", "vs": "m/s", "as": "m/s^2", "ac": "m/s^2", "torque": "N m"}
 
 
@@ -148,13 +150,20 @@ def test_a_stated_tolerance_overrides_the_hand_drawing():
 # The answers in the worked problems that their books or notes read off a drawn diagram,
 # and, apart, those the files document as slips or method errors (each must still be
 # caught, and named where the mistake is a known one).
-DRAWN = ("fourbar_velocity_khurmi", "slider_crank_midpoint", "fourbar_image_points",
-         "toggle_mechanism", "two_slider_mechanism")
-DOCUMENTED_MISTAKES = {("fourbar_image_points", "v_CB"): "transcription_slip",
-                       ("toggle_mechanism", "v_BD"): "transcription_slip",
-                       ("toggle_mechanism", "rub_A"): "links_not_at_pin",
-                       ("toggle_mechanism", "torque"): "wrong_omega_in_power_balance",
-                       ("two_slider_mechanism", "v_D"): None}  # (the lost figure's BC)
+DRAWN = (
+    "fourbar_velocity_khurmi",
+    "slider_crank_midpoint",
+    "fourbar_image_points",
+    "toggle_mechanism",
+    "two_slider_mechanism",
+)
+DOCUMENTED_MISTAKES = {
+    ("fourbar_image_points", "v_CB"): "transcription_slip",
+    ("toggle_mechanism", "v_BD"): "transcription_slip",
+    ("toggle_mechanism", "rub_A"): "links_not_at_pin",
+    ("toggle_mechanism", "torque"): "wrong_omega_in_power_balance",
+    ("two_slider_mechanism", "v_D"): None,
+}  # (the lost figure's BC)
 
 
 def test_nine_in_ten_published_drawn_answers_pass_by_default():

@@ -66,10 +66,24 @@ def _fourbars(n, seed):
         gd = float(rng.uniform(0.2, 1.0)) * c + abs(c - gc)
         if not abs(gc - gd) < c < gc + gd:
             continue
-        out.append(dict(d=d, a=a, b=b, c=c, angle=th, along=float(rng.uniform(-0.5, 1.5)) * b,
-                        fb=fb, fc=fc, gc=gc, gd=gd, turn=("cw", "ccw")[int(rng.integers(2))],
-                        omega=float(rng.uniform(0.5, 50)), sense=("cw", "ccw")[int(rng.integers(2))],
-                        alpha=float(rng.uniform(0, 500))))
+        out.append(
+            dict(
+                d=d,
+                a=a,
+                b=b,
+                c=c,
+                angle=th,
+                along=float(rng.uniform(-0.5, 1.5)) * b,
+                fb=fb,
+                fc=fc,
+                gc=gc,
+                gd=gd,
+                turn=("cw", "ccw")[int(rng.integers(2))],
+                omega=float(rng.uniform(0.5, 50)),
+                sense=("cw", "ccw")[int(rng.integers(2))],
+                alpha=float(rng.uniform(0, 500)),
+            )
+        )
     return out
 
 
@@ -81,8 +95,15 @@ def test_a_random_four_bar_solves_to_the_last_bit_of_the_phased_road(case):
     assert [st.kind for st in plan.steps] == ["crank", "dyad"] + ["carried"] * 4
     inp = scene.input
     m = plan.run(Context(inp.angle, inp.omega, inp.alpha), plan.dims)
-    for mine, theirs in ((sol.P, m.P), (sol.V, m.V), (sol.A, m.A), (sol.W, m.W),
-                         (sol.Al, m.Al), (sol.S, m.S), (sol.cond, m.cond)):
+    for mine, theirs in (
+        (sol.P, m.P),
+        (sol.V, m.V),
+        (sol.A, m.A),
+        (sol.W, m.W),
+        (sol.Al, m.Al),
+        (sol.S, m.S),
+        (sol.cond, m.cond),
+    ):
         assert list(mine.items()) == list(theirs.items())  # the same order too
 
 
@@ -96,8 +117,15 @@ def test_points_carried_together_take_the_image_formula_term_by_term(lam, mu):
 
     def state():
         ctx = Context(0.0, 1.0, 0.0)
-        return State({"B": (-0.0, 1e300), "C": (3.0, -2.0)}, {"B": (0.5, -0.0), "C": (-1.5, 2.5)},
-                     {"B": (-0.0, 7.0), "C": (2.0, -0.0)}, {}, {}, {}, ctx)
+        return State(
+            {"B": (-0.0, 1e300), "C": (3.0, -2.0)},
+            {"B": (0.5, -0.0), "C": (-1.5, 2.5)},
+            {"B": (-0.0, 7.0), "C": (2.0, -0.0)},
+            {},
+            {},
+            {},
+            ctx,
+        )
 
     one, phased = state(), state()
     Carried.bind_group_instant(steps, prms)(one)
@@ -107,5 +135,6 @@ def test_points_carried_together_take_the_image_formula_term_by_term(lam, mu):
     for mine, theirs in ((one.P, phased.P), (one.V, phased.V), (one.A, phased.A)):
         assert list(mine.items()) == list(theirs.items())
         for k in mine:  # the sign of a zero too (== holds -0.0 equal to 0.0)
-            assert [math.copysign(1.0, v) for v in mine[k]] == \
-                [math.copysign(1.0, v) for v in theirs[k]]
+            assert [math.copysign(1.0, v) for v in mine[k]] == [
+                math.copysign(1.0, v) for v in theirs[k]
+            ]

@@ -37,19 +37,22 @@ speed = "10 rad/s ccw"
 """)
 
 
-@pytest.mark.parametrize("lengths, kind, turns_in, turns_out", [
-    ((30, 90, 70, 100), "crank-rocker", True, False),  # s = crank: 130 < 160
-    ((60, 80, 70, 30), "double crank", True, True),  # s = ground: 110 < 130
-    ((70, 80, 30, 60), "rocker-crank", False, True),  # s = output
-    ((70, 30, 60, 80), "double rocker", False, False),  # s = coupler
-    ((50, 66, 56, 100), "non-Grashof triple rocker", False, False),  # 150 > 122
-    ((150, 450, 300, 200), "non-Grashof triple rocker", False, False),
-    ((40, 100, 40, 100), "parallelogram", True, True),  # 140 = 140, opposite equal
-    ((100, 40, 40, 100), "deltoid", False, True),  # adjacent equal; BC, CD shortest
-    ((40, 40, 100, 100), "deltoid", True, False),  # AB, BC shortest
-    ((50, 50, 50, 50), "rhombus", True, True),
-    ((20, 60, 50, 30), "special Grashof crank-rocker", True, False),  # 20 + 60 = 50 + 30
-])
+@pytest.mark.parametrize(
+    "lengths, kind, turns_in, turns_out",
+    [
+        ((30, 90, 70, 100), "crank-rocker", True, False),  # s = crank: 130 < 160
+        ((60, 80, 70, 30), "double crank", True, True),  # s = ground: 110 < 130
+        ((70, 80, 30, 60), "rocker-crank", False, True),  # s = output
+        ((70, 30, 60, 80), "double rocker", False, False),  # s = coupler
+        ((50, 66, 56, 100), "non-Grashof triple rocker", False, False),  # 150 > 122
+        ((150, 450, 300, 200), "non-Grashof triple rocker", False, False),
+        ((40, 100, 40, 100), "parallelogram", True, True),  # 140 = 140, opposite equal
+        ((100, 40, 40, 100), "deltoid", False, True),  # adjacent equal; BC, CD shortest
+        ((40, 40, 100, 100), "deltoid", True, False),  # AB, BC shortest
+        ((50, 50, 50, 50), "rhombus", True, True),
+        ((20, 60, 50, 30), "special Grashof crank-rocker", True, False),  # 20 + 60 = 50 + 30
+    ],
+)
 def test_grashof_classes(lengths, kind, turns_in, turns_out):
     g = grashof(*(x / 1000 for x in lengths))
     assert g.kind == kind
@@ -74,8 +77,9 @@ def test_crank_rocker_toggles_swing_and_time_ratio():
     got = sorted(s.deg for s in lk.stationary)
     assert got == pytest.approx(sorted([ext, fold]), abs=1e-7)
     # the rocker's extreme angles, at D, between DA (180 deg) and DC
-    psi = [180 - math.degrees(math.acos((d * d + c * c - L * L) / (2 * d * c)))
-           for L in (a + b, b - a)]
+    psi = [
+        180 - math.degrees(math.acos((d * d + c * c - L * L) / (2 * d * c))) for L in (a + b, b - a)
+    ]
     assert math.degrees(lk.output_min) == pytest.approx(min(psi), abs=1e-7)
     assert math.degrees(lk.output_max) == pytest.approx(max(psi), abs=1e-7)
     arc = fold - ext  # the crank turns ccw from extended to folded
@@ -96,8 +100,9 @@ def test_transmission_angle_extremes_by_the_law_of_cosines():
     assert t.at_min == pytest.approx(0.0, abs=1e-5)
     assert t.maximum == pytest.approx(90.0, abs=1e-7)
     t90 = math.degrees(math.acos((a * a + d * d - b * b - c * c) / (2 * a * d)))
-    assert t.at_max == pytest.approx(t90, abs=1e-5) or t.at_max == pytest.approx(360 - t90,
-                                                                                 abs=1e-5)
+    assert t.at_max == pytest.approx(t90, abs=1e-5) or t.at_max == pytest.approx(
+        360 - t90, abs=1e-5
+    )
     # now, at 60 deg: |BD|^2 = a^2 + d^2 - 2ad cos 60
     bd2 = a * a + d * d - 2 * a * d * 0.5
     mu = math.degrees(math.acos((b * b + c * c - bd2) / (2 * b * c)))
@@ -112,8 +117,9 @@ def test_transmission_warning_below_40_deg():
     a, b, c, d = 40.0, 120.0, 80.0, 100.0
     lk = analyse(fourbar(a, b, c, d, angle=120))
     (t,) = lk.transmission
-    assert t.minimum == pytest.approx(math.degrees(math.acos(
-        (b * b + c * c - (d - a) ** 2) / (2 * b * c))), abs=1e-7)
+    assert t.minimum == pytest.approx(
+        math.degrees(math.acos((b * b + c * c - (d - a) ** 2) / (2 * b * c))), abs=1e-7
+    )
     assert t.warn and "WARNING" in lk.text()
     e2 = b * b + c * c - 2 * b * c * math.cos(math.radians(40))
     edge = math.degrees(math.acos((a * a + d * d - e2) / (2 * a * d)))
@@ -162,12 +168,10 @@ def test_offset_slider_crank_dead_centres_stroke_and_time_ratio():
     x1, x2 = math.sqrt((l + r) ** 2 - e * e), math.sqrt((l - r) ** 2 - e * e)
     t_ext = math.degrees(math.atan2(-e, x1)) % 360
     t_fold = math.degrees(math.atan2(e, -x2)) % 360
-    assert sorted(s.deg for s in lk.stationary) == pytest.approx(sorted([t_ext, t_fold]),
-                                                                  abs=1e-7)
+    assert sorted(s.deg for s in lk.stationary) == pytest.approx(sorted([t_ext, t_fold]), abs=1e-7)
     assert (lk.output_max - lk.output_min) * 1000 == pytest.approx(x1 - x2, rel=1e-10)
     arc = (t_ext - t_fold) % 360
-    assert lk.time_ratio == pytest.approx(max(arc, 360 - arc) / min(arc, 360 - arc),
-                                          rel=1e-9)
+    assert lk.time_ratio == pytest.approx(max(arc, 360 - arc) / min(arc, 360 - arc), rel=1e-9)
     assert "in-line slider crank only" in lk.text()
 
 
@@ -276,9 +280,12 @@ def test_degenerate_slider_crank_at_a_singular_instant_prints_no_nan(capsys):
     assert out.count("crank at") < 20
 
 
-@pytest.mark.parametrize("text", [
-    # a four-bar micrometres from locked: BC + CD just reach across
-    *[f"""
+@pytest.mark.parametrize(
+    "text",
+    [
+        # a four-bar micrometres from locked: BC + CD just reach across
+        *[
+            f"""
 [ground]
 A = [0, 0]
 D = [100, 0]
@@ -290,9 +297,12 @@ CD = {cd}
 crank = "AB"
 angle = 0
 speed = "10 rad/s ccw"
-""" for cd in ("25.001", "25.00001", "25.000001", "25.0000001")],
-    # a slider's path nearly tangent to the circle the rod's end can reach
-    *[f"""
+"""
+            for cd in ("25.001", "25.00001", "25.000001", "25.0000001")
+        ],
+        # a slider's path nearly tangent to the circle the rod's end can reach
+        *[
+            f"""
 [ground]
 O = [0, 0]
 [links]
@@ -304,7 +314,11 @@ B = {{ path = "horizontal", through = [0, {y}] }}
 crank = "OA"
 angle = 90
 speed = "10 rad/s ccw"
-""" for y in ("149.999", "149.99999", "149.9999999")]])
+"""
+            for y in ("149.999", "149.99999", "149.9999999")
+        ],
+    ],
+)
 def test_nearly_locked_linkages_give_a_result_or_one_line(text, tmp_path, capsys):
     from polygon_method.cli import main
 
@@ -325,6 +339,7 @@ def test_an_oscillating_cylinder_has_its_swing_and_quick_return():
     +-asin(r/c) and returns quickly: the crank turns 360 - 2 acos(r/c) deg one way."""
     from polygon_method import parse_scene
     from polygon_method.linkage import analyse
+
     r, c = 50.0, 150.0
     sc = parse_scene(f"""
     [ground]
@@ -352,6 +367,7 @@ def test_no_negative_zero_in_the_text():
     from pathlib import Path
     from polygon_method import load_scene
     from polygon_method.linkage import analyse
+
     for path in sorted((Path(__file__).parent.parent / "worked_problems").glob("*.toml")):
         scene = load_scene(path)
         if scene.input.block is not None:  # no crank's turn to analyse (refused)

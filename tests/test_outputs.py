@@ -62,8 +62,21 @@ def test_a_directory_is_refused(tmp_path, capsys):
 def test_several_outputs_are_written_all_or_none(tmp_path, capsys):
     csv = tmp_path / "a.csv"
     csv.write_text("keep\n")
-    line = one_line_refusal(*run(["sweep", SCENE, "--steps", "8", "--csv", csv, "--plot",
-                                  tmp_path / "missing" / "p.svg"], capsys)[::2])
+    line = one_line_refusal(
+        *run(
+            [
+                "sweep",
+                SCENE,
+                "--steps",
+                "8",
+                "--csv",
+                csv,
+                "--plot",
+                tmp_path / "missing" / "p.svg",
+            ],
+            capsys,
+        )[::2]
+    )
     assert "--plot" in line and "no directory" in line
     assert csv.read_text() == "keep\n"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["a.csv"]  # no temporary left
@@ -73,8 +86,7 @@ def test_the_scene_is_never_written_over(tmp_path, capsys):
     scene = tmp_path / "s.toml"
     shutil.copy(SCENE, scene)
     before = scene.read_bytes()
-    for argv in (["sweep", scene, "--csv", scene], ["draw", scene, "-o",
-                                                      tmp_path / "s.toml"]):
+    for argv in (["sweep", scene, "--csv", scene], ["draw", scene, "-o", tmp_path / "s.toml"]):
         line = one_line_refusal(*run(argv, capsys)[::2])
         assert "scene file itself" in line or "must end in" in line
     link = tmp_path / "s.svg"
@@ -98,15 +110,17 @@ def test_control_characters_in_a_path_are_shown_escaped(tmp_path, capsys):
 def test_points_without_a_plot_and_absurd_ranges_are_refused(capsys):
     line = one_line_refusal(*run(["sweep", SCENE, "--points", "C"], capsys)[::2])
     assert "--plot" in line
-    line = one_line_refusal(*run(["sweep", SCENE, "--from", "1e300", "--to", "1e301",
-                                  "--step", "1"], capsys)[::2])
+    line = one_line_refusal(
+        *run(["sweep", SCENE, "--from", "1e300", "--to", "1e301", "--step", "1"], capsys)[::2]
+    )
     assert "within" in line
 
 
 def test_a_csv_too_large_is_refused_up_front_with_its_memory(tmp_path, capsys):
     out = tmp_path / "big.csv"
-    line = one_line_refusal(*run(["sweep", SCENE, "--steps", "10000000", "--csv", out],
-                                 capsys)[::2])
+    line = one_line_refusal(
+        *run(["sweep", SCENE, "--steps", "10000000", "--csv", out], capsys)[::2]
+    )
     assert "GiB" in line and "--summary" in line
     assert not out.exists()
 
@@ -114,8 +128,13 @@ def test_a_csv_too_large_is_refused_up_front_with_its_memory(tmp_path, capsys):
 @pytest.mark.skipif(not Path("/dev/full").exists(), reason="no /dev/full here")
 def test_a_full_standard_output_is_one_line():
     with open("/dev/full", "w") as full:
-        p = subprocess.run([sys.executable, "-m", "polygon_method", "solve", str(SCENE)],
-                           stdout=full, stderr=subprocess.PIPE, text=True, cwd=ROOT)
+        p = subprocess.run(
+            [sys.executable, "-m", "polygon_method", "solve", str(SCENE)],
+            stdout=full,
+            stderr=subprocess.PIPE,
+            text=True,
+            cwd=ROOT,
+        )
     line = one_line_refusal(p.returncode, p.stderr)
     assert "No space left" in line
 
@@ -125,13 +144,15 @@ from hypothesis import strategies as st  # noqa: E402
 
 #: the kinds of output path tried (/dev/full only where the system has it)
 KINDS = ["new", "existing", "link", "directory", "missing_dir", "scene"] + (
-    ["dev_full"] if Path("/dev/full").exists() else [])
+    ["dev_full"] if Path("/dev/full").exists() else []
+)
 
 
 def _in_process(argv):
     """``main(argv)`` with its standard output and error caught: (exit code, stderr)."""
     import contextlib
     import io
+
     out, err = io.StringIO(), io.StringIO()
     with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
         code = main([str(a) for a in argv])
@@ -162,8 +183,11 @@ def _make(kind, tmp, name, scene):
     return Path("/dev/full")
 
 
-@settings(max_examples=60, deadline=None,
-          suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
+@settings(
+    max_examples=60,
+    deadline=None,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture],
+)
 @given(csv_kind=st.sampled_from(KINDS), plot_kind=st.sampled_from(KINDS + [None]))
 def test_fuzz_output_paths(tmp_path_factory, csv_kind, plot_kind):
     """Any mix of output paths: exit 0 with every output written, or exit 2 with one line
@@ -182,8 +206,10 @@ def test_fuzz_output_paths(tmp_path_factory, csv_kind, plot_kind):
         if plot_kind == "scene":
             plot_path = scene
         argv += ["--plot", str(plot_path)]
-    snapshot = {p: (p.is_symlink(), p.is_dir(), p.read_text() if p.is_file() else None)
-                for p in tmp.rglob("*")}
+    snapshot = {
+        p: (p.is_symlink(), p.is_dir(), p.read_text() if p.is_file() else None)
+        for p in tmp.rglob("*")
+    }
     code, err = _in_process(argv)
     assert code in (0, 2), err
     assert scene.read_bytes() == before
@@ -208,9 +234,12 @@ def test_fuzz_output_paths(tmp_path_factory, csv_kind, plot_kind):
 def test_a_reader_that_goes_away_is_no_error():
     """``polygon-method sweep ... | head``: the reader closes the pipe after a line; the
     command stops quietly, exit 0, nothing on stderr."""
-    p = subprocess.Popen([sys.executable, "-m", "polygon_method", "sweep", str(SCENE),
-                          "--steps", "300000"], stdout=subprocess.PIPE,
-                         stderr=subprocess.PIPE, cwd=ROOT)
+    p = subprocess.Popen(
+        [sys.executable, "-m", "polygon_method", "sweep", str(SCENE), "--steps", "300000"],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        cwd=ROOT,
+    )
     p.stdout.readline()
     p.stdout.close()
     err = p.stderr.read()
@@ -218,13 +247,18 @@ def test_a_reader_that_goes_away_is_no_error():
     assert err == b""
 
 
-@pytest.mark.parametrize("args", [
-    ["sweep", str(SCENE), "--csv", ""], ["sweep", str(SCENE), "--plot", " "],
-    ["draw", str(SCENE), "-o", ""], ["check", str(SCENE), "--gradebook", ""],
-    ["variants", str(ROOT / "worked_problems" / "fourbar_image_points.toml"), "-o", ""],
-    ["solve", ""]])
-def test_an_empty_name_is_refused_never_taken_as_not_given(args, capsys, tmp_path,
-                                                           monkeypatch):
+@pytest.mark.parametrize(
+    "args",
+    [
+        ["sweep", str(SCENE), "--csv", ""],
+        ["sweep", str(SCENE), "--plot", " "],
+        ["draw", str(SCENE), "-o", ""],
+        ["check", str(SCENE), "--gradebook", ""],
+        ["variants", str(ROOT / "worked_problems" / "fourbar_image_points.toml"), "-o", ""],
+        ["solve", ""],
+    ],
+)
+def test_an_empty_name_is_refused_never_taken_as_not_given(args, capsys, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     assert main(args) == 2
     err = capsys.readouterr().err
@@ -235,8 +269,16 @@ def test_an_empty_name_is_refused_never_taken_as_not_given(args, capsys, tmp_pat
 def test_variants_into_a_dangling_link_is_one_clear_line(tmp_path, capsys):
     link = tmp_path / "out"
     link.symlink_to(tmp_path / "nowhere" / "dir")
-    code = main(["variants", str(ROOT / "worked_problems" / "fourbar_image_points.toml"),
-                 "--count", "2", "-o", str(link)])
+    code = main(
+        [
+            "variants",
+            str(ROOT / "worked_problems" / "fourbar_image_points.toml"),
+            "--count",
+            "2",
+            "-o",
+            str(link),
+        ]
+    )
     err = capsys.readouterr().err
     assert code == 2 and "does not exist" in err and err.count("\n") == 1
     assert not (tmp_path / "nowhere").exists()

@@ -29,14 +29,21 @@ WORKED = sorted(glob.glob(str(ROOT / "worked_problems" / "*.toml")))
 SEED = str(ROOT / "worked_problems" / "fourbar_image_points.toml")
 # scenes whose assembly words pick the sweep's branch at every angle (the Whitworth's
 # "left" does not: solved afresh at another angle it may take the other assembly)
-SAME_BRANCH = ["fourbar_image_points", "crank_slotted_lever", "toggle_mechanism",
-               "six_link_second_slider", "two_slider_mechanism", "offset_slider_crank"]
+SAME_BRANCH = [
+    "fourbar_image_points",
+    "crank_slotted_lever",
+    "toggle_mechanism",
+    "six_link_second_slider",
+    "two_slider_mechanism",
+    "offset_slider_crank",
+]
 
 
 def at_angle(scene, theta):
     """The scene with its crank at ``theta`` (rad), solved afresh: an independent solve."""
-    return pm.solve(dataclasses.replace(scene, input=dataclasses.replace(scene.input,
-                                                                         angle=float(theta))))
+    return pm.solve(
+        dataclasses.replace(scene, input=dataclasses.replace(scene.input, angle=float(theta)))
+    )
 
 
 def _json_of(html: str) -> dict:
@@ -52,9 +59,11 @@ def test_frames_match_solve_at_their_angles(name):
     assert len(fr) == 24
     for k in sorted({0, fr.start, 5, 11, len(fr) - 1}):
         sol = at_angle(scene, res.theta[k])
-        size = {"P": max(math.hypot(*xy) for xy in sol.P.values()),
-                "V": max(math.hypot(*xy) for xy in sol.V.values()),
-                "A": max(math.hypot(*xy) for xy in sol.A.values())}
+        size = {
+            "P": max(math.hypot(*xy) for xy in sol.P.values()),
+            "V": max(math.hypot(*xy) for xy in sol.V.values()),
+            "A": max(math.hypot(*xy) for xy in sol.A.values()),
+        }
         for table in ("P", "V", "A"):
             for p in scene.point_names:
                 got = [float(np.broadcast_to(c, (len(fr),))[k]) for c in getattr(res, table)[p]]
@@ -63,10 +72,14 @@ def test_frames_match_solve_at_their_angles(name):
         wmax = max(abs(w) for w in sol.W.values()) + 1e-300
         amax = max(abs(a) for a in sol.Al.values()) + wmax * wmax
         for lk in scene.links:
-            assert abs(float(np.broadcast_to(res.W[lk.key], (len(fr),))[k]) - sol.W[lk.key]) \
+            assert (
+                abs(float(np.broadcast_to(res.W[lk.key], (len(fr),))[k]) - sol.W[lk.key])
                 <= 1e-9 * wmax
-            assert abs(float(np.broadcast_to(res.Al[lk.key], (len(fr),))[k])
-                       - sol.Al[lk.key]) <= 1e-9 * amax
+            )
+            assert (
+                abs(float(np.broadcast_to(res.Al[lk.key], (len(fr),))[k]) - sol.Al[lk.key])
+                <= 1e-9 * amax
+            )
 
 
 def test_frames_start_at_the_stated_instant_and_keep_the_step_tables_scales():
@@ -76,6 +89,7 @@ def test_frames_start_at_the_stated_instant_and_keep_the_step_tables_scales():
     assert [s.text for s in fr.scales] == [s.text for s in diagram_scales(pm.solve(scene))]
     steps = pm.solve(scene)
     from polygon_method.text.steptable import steps_text
+
     text = steps_text(steps)
     for s in fr.scales:  # the scales the page states are the ones the step table states
         assert s.text in text
@@ -91,10 +105,12 @@ def test_frames_stay_between_the_limit_positions():
     assert dom.lo < th[0] and th[-1] < dom.hi
     full = frames(pm.load_scene(str(ROOT / "worked_problems" / "crank_slotted_lever.toml")), 90)
     step = np.diff(full.res.theta)
-    assert full.full_turn and np.allclose(step, step[0]) and \
-        math.isclose(abs(step[0]) * 90, 2 * math.pi)
+    assert (
+        full.full_turn
+        and np.allclose(step, step[0])
+        and math.isclose(abs(step[0]) * 90, 2 * math.pi)
+    )
     assert step[0] < 0  # the crank turns clockwise: the frames follow it
-
 
 
 def test_a_four_stroke_engine_is_animated_over_its_720_degree_cycle(tmp_path, capsys):
@@ -117,6 +133,7 @@ def test_a_four_stroke_engine_is_animated_over_its_720_degree_cycle(tmp_path, ca
     svg = animation(fr, "svg")  # the angles shown run round the cycle, not a turn
     assert "crank angles (deg): 390.0;480.0;570.0;660.0;30.0;120.0;210.0;300.0" in svg
 
+
 def test_page_data_is_the_frames_rounded_to_six_figures():
     scene = pm.load_scene(SEED)
     fr = frames(scene, 60)
@@ -125,8 +142,10 @@ def test_page_data_is_the_frames_rounded_to_six_figures():
     n = len(fr)
     for key, table in (("P", fr.res.P), ("V", fr.res.V), ("A", fr.res.A)):
         # rounding noise (1e-10 of the largest of its kind) is written as 0
-        noise = 1e-10 * max(float(np.max(np.hypot(*(np.broadcast_to(c, (n,)) for c in xy))))
-                            for xy in table.values())
+        noise = 1e-10 * max(
+            float(np.max(np.hypot(*(np.broadcast_to(c, (n,)) for c in xy))))
+            for xy in table.values()
+        )
         for p in fr.moving:
             exact = np.column_stack([np.broadcast_to(c, (n,)) for c in table[p]]).ravel()
             got = np.array(d[key][p])
@@ -158,22 +177,25 @@ def test_page_checks_an_answer_file(tmp_path):
     out = tmp_path / "page.html"
     assert main(["page", SEED, "-o", str(out), "--answers", str(ans), "--frames", "12"]) == 0
     html = out.read_text(encoding="utf-8")
-    table = html[html.index('id="check"'):]
-    table = table[:table.index("</table>")]
+    table = html[html.index('id="check"') :]
+    table = table[: table.index("</table>")]
     assert table.count("<tr>") == 3 and table.count("WRONG") == 1
 
 
-@pytest.mark.parametrize("argv, words", [
-    (["page", "missing.toml", "-o", "{d}/p.html"], "missing.toml"),
-    (["page", SEED, "-o", "{d}/p.htm"], None),
-    (["page", SEED, "-o", "{d}/p.pdf"], ".html"),
-    (["page", SEED, "-o", "{d}/p.html", "--frames", "1"], "--frames"),
-    (["page", SEED, "-o", "{d}/nodir/p.html"], "no directory"),
-    (["page", SEED, "-o", "{d}/p.html", "--answers", "{d}/none.toml"], "none.toml"),
-    (["draw", SEED, "--animate", "-o", "{d}/c.png"], ".gif"),
-    (["draw", SEED, "--animate", "-o", "{d}/c.gif", "--frames", "0"], "--frames"),
-    (["draw", SEED, "--animate", "--diagram", "velocity", "-o", "{d}/c.gif"], "--animate"),
-])
+@pytest.mark.parametrize(
+    "argv, words",
+    [
+        (["page", "missing.toml", "-o", "{d}/p.html"], "missing.toml"),
+        (["page", SEED, "-o", "{d}/p.htm"], None),
+        (["page", SEED, "-o", "{d}/p.pdf"], ".html"),
+        (["page", SEED, "-o", "{d}/p.html", "--frames", "1"], "--frames"),
+        (["page", SEED, "-o", "{d}/nodir/p.html"], "no directory"),
+        (["page", SEED, "-o", "{d}/p.html", "--answers", "{d}/none.toml"], "none.toml"),
+        (["draw", SEED, "--animate", "-o", "{d}/c.png"], ".gif"),
+        (["draw", SEED, "--animate", "-o", "{d}/c.gif", "--frames", "0"], "--frames"),
+        (["draw", SEED, "--animate", "--diagram", "velocity", "-o", "{d}/c.gif"], "--animate"),
+    ],
+)
 def test_bad_input_is_one_line_and_exit_2(tmp_path, capsys, argv, words):
     argv = [a.replace("{d}", str(tmp_path)) for a in argv]
     code = main(argv)
@@ -211,6 +233,7 @@ def test_svg_and_html_animations(tmp_path):
     fr = frames(pm.load_scene(SEED), 6)
     svg = animation(fr, "svg")
     import xml.etree.ElementTree as ET
+
     root = ET.fromstring(svg)
     anims = [e for e in root.iter() if e.tag.endswith("animate")]
     assert anims and all(len(a.get("values").split(";")) == 6 for a in anims)
@@ -238,11 +261,10 @@ def test_page_and_animation_of_every_worked_problem(tmp_path, path):
     assert 0 <= d["start"] < n
     for values in list(d["P"].values()) + list(d["V"].values()) + list(d["A"].values()):
         assert len(values) == 2 * n and all(math.isfinite(v) for v in values)
-    assert main(["draw", path, "--animate", "-o", str(tmp_path / "c.svg"), "--frames",
-                 "8"]) == 0
-    assert main(["draw", path, "--animate", "-o", str(tmp_path / "c.gif"), "--frames",
-                 "2"]) == 0
+    assert main(["draw", path, "--animate", "-o", str(tmp_path / "c.svg"), "--frames", "8"]) == 0
+    assert main(["draw", path, "--animate", "-o", str(tmp_path / "c.gif"), "--frames", "2"]) == 0
     from PIL import Image
+
     with Image.open(tmp_path / "c.gif") as im:
         assert im.n_frames == 2
 
@@ -252,8 +274,10 @@ def test_the_scene_is_never_written_over_by_a_page(tmp_path, capsys):
     scene.write_bytes(Path(SEED).read_bytes())
     link = tmp_path / "s.html"
     link.symlink_to(scene.name)
-    for argv in (["page", str(scene), "-o", str(link)],
-                 ["draw", str(scene), "--animate", "-o", str(tmp_path / "s.svg")]):
+    for argv in (
+        ["page", str(scene), "-o", str(link)],
+        ["draw", str(scene), "--animate", "-o", str(tmp_path / "s.svg")],
+    ):
         if argv[0] == "draw":
             (tmp_path / "s.svg").symlink_to(scene.name)
         code = main(argv)
@@ -280,25 +304,28 @@ def test_animation_html_is_self_contained(tmp_path):
     assert re.findall(r'src="(?!data:)', html) == []
     assert html.count("data:image/png;base64,") == 5
     for button in ('id="play"', 'id="back"', 'id="next"'):  # labelled in text, not icons
-        assert re.search(button + r'[^>]*>[^<]+</button>', html), button
+        assert re.search(button + r"[^>]*>[^<]+</button>", html), button
 
 
 def _polygon_extents(table, names, n):
     """Per frame, the extent (SI) of a polygon's images and its pole, from the sweep."""
-    xy = [np.zeros((n, 2))] + [np.column_stack([np.broadcast_to(table[p][0], (n,)),
-                                                np.broadcast_to(table[p][1], (n,))])
-                               for p in names]
+    xy = [np.zeros((n, 2))] + [
+        np.column_stack([np.broadcast_to(table[p][0], (n,)), np.broadcast_to(table[p][1], (n,))])
+        for p in names
+    ]
     xy = np.stack(xy)
     return np.max(xy.max(axis=0) - xy.min(axis=0), axis=1)
 
 
-@pytest.mark.parametrize("name", ["fourbar_image_points", "crank_slotted_lever",
-                                  "whitworth", "rolling_epicyclic"])
+@pytest.mark.parametrize(
+    "name", ["fourbar_image_points", "crank_slotted_lever", "whitworth", "rolling_epicyclic"]
+)
 def test_animation_pictures_state_round_scales_that_fit_their_panels(name):
     """Each picture is at least 800 px wide; each polygon's stated scale is round (1, 2 or
     5 x 10^k per cm) and at it the polygon (its images and pole, from the sweep) fits its
     panel and spans at least a quarter of it, wherever it is not near rest."""
     from polygon_method.page.raster import PANEL, PX_PER_CM, Pictures
+
     fr = frames(pm.load_scene(f"worked_problems/{name}.toml"), 48)
     pics = Pictures(fr)
     assert pics.size[0] >= 800
@@ -349,8 +376,9 @@ def test_gif_frames_are_written_as_they_are_drawn(monkeypatch):
         assert im.n_frames == 12 and im.size[0] >= 800
 
 
-@pytest.mark.parametrize("name,words", [("tipper_cylinder", "crank angle"),
-                                        ("ellipse_trammel", "place of block A")])
+@pytest.mark.parametrize(
+    "name,words", [("tipper_cylinder", "crank angle"), ("ellipse_trammel", "place of block A")]
+)
 def test_the_slider_is_labelled_with_what_the_frames_step_through(name, words):
     """The page's slider says what it moves: the crank angle, or a driving block's place."""
     fr = frames(load_scene(ROOT / "worked_problems" / f"{name}.toml"), 12)

@@ -26,13 +26,25 @@ STEEP = ROOT / "worked_problems" / "fourbar_acceleration.toml"  # ill-conditione
 # a cylinder whose rate of extension is given: each frame holds it (the crank's speed follows)
 TIPPER = ROOT / "worked_problems" / "tipper_cylinder.toml"
 PISTON = ROOT / "worked_problems" / "piston_driven_slider_crank.toml"
-ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-        "--disable-background-networking", "--disable-component-update", "--disable-sync"]
+ARGS = [
+    "--headless",
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-quic",
+    "--no-first-run",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+]
 
 
 def _chromium():
-    for path in (os.environ.get("CHROMIUM"), "/usr/bin/chromium", shutil.which("chromium"),
-                 shutil.which("chromium-browser")):
+    for path in (
+        os.environ.get("CHROMIUM"),
+        "/usr/bin/chromium",
+        shutil.which("chromium"),
+        shutil.which("chromium-browser"),
+    ):
         if path and os.path.exists(path):
             return path
     return None
@@ -43,12 +55,16 @@ def browser():
     try:
         from playwright.sync_api import sync_playwright
     except ImportError:
-        pytest.skip("playwright is not installed (pip install playwright): the page's "
-                    "browser tests cannot run")
+        pytest.skip(
+            "playwright is not installed (pip install playwright): the page's "
+            "browser tests cannot run"
+        )
     exe = _chromium()
     if exe is None:
-        pytest.skip("no Chromium found (/usr/bin/chromium; apt-get install chromium): the "
-                    "page's browser tests cannot run")
+        pytest.skip(
+            "no Chromium found (/usr/bin/chromium; apt-get install chromium): the "
+            "page's browser tests cannot run"
+        )
     with sync_playwright() as p:
         try:
             b = p.chromium.launch(executable_path=exe, args=ARGS)
@@ -62,8 +78,13 @@ def browser():
 def pages(tmp_path_factory):
     d = tmp_path_factory.mktemp("pages")
     out = {}
-    for name, scene in (("seed", SEED), ("slotted", SLOTTED), ("steep", STEEP),
-                        ("tipper", TIPPER), ("piston", PISTON)):
+    for name, scene in (
+        ("seed", SEED),
+        ("slotted", SLOTTED),
+        ("steep", STEEP),
+        ("tipper", TIPPER),
+        ("piston", PISTON),
+    ):
         path = d / f"{name}.html"
         assert main(["page", str(scene), "-o", str(path)]) == 0
         out[name] = path
@@ -81,8 +102,7 @@ class Opened:
         self.page.on("pageerror", lambda e: self.errors.append(str(e)))
         self.url = path.as_uri()
         self.page.goto(self.url)
-        self.data = json.loads(self.page.evaluate(
-            "document.getElementById('frames').textContent"))
+        self.data = json.loads(self.page.evaluate("document.getElementById('frames').textContent"))
 
     def _route(self, route):
         self.requests.append(route.request.url)
@@ -92,8 +112,11 @@ class Opened:
             route.abort()
 
     def slide(self, k):
-        self.page.evaluate("(k) => { const s = document.getElementById('angle'); s.value = k; "
-                           "s.dispatchEvent(new Event('input')); }", k)
+        self.page.evaluate(
+            "(k) => { const s = document.getElementById('angle'); s.value = k; "
+            "s.dispatchEvent(new Event('input')); }",
+            k,
+        )
 
     def shown_scale(self, phase) -> float:
         """The scale stated beside a diagram ("1 cm = 0.5 m/s"), in SI per cm, after checking
@@ -104,8 +127,12 @@ class Opened:
         mantissa = value / 10 ** math.floor(math.log10(value) + 1e-12)
         assert min(abs(mantissa - m) for m in (1, 2, 5)) < 1e-9, words
         si = value * (self.data["unit"] if phase == "configuration" else 1.0)
-        assert unit == {"configuration": self.data["units"], "velocity": "m/s",
-                        "acceleration": "m/s²"}[phase]
+        assert (
+            unit
+            == {"configuration": self.data["units"], "velocity": "m/s", "acceleration": "m/s²"}[
+                phase
+            ]
+        )
         drawn = float(self.page.get_attribute(f"#{phase}", "data-per-cm"))
         assert abs(drawn - si) <= 1e-9 * si, (drawn, si)
         return si
@@ -133,8 +160,11 @@ def opened(browser, pages):
 
 def solve_at(scene_path, degrees):
     scene = pm.load_scene(str(scene_path))
-    return pm.solve(dataclasses.replace(scene, input=dataclasses.replace(
-        scene.input, angle=math.radians(degrees))))
+    return pm.solve(
+        dataclasses.replace(
+            scene, input=dataclasses.replace(scene.input, angle=math.radians(degrees))
+        )
+    )
 
 
 def near_cm(drawn: float, cm: float) -> bool:
@@ -164,12 +194,17 @@ def test_page_loads_with_no_error_and_no_request(opened):
         assert n == 180 and o.page.get_attribute("#angle", "max") == str(n - 1)
 
 
-@pytest.mark.parametrize("name, scene, frames", [
-    ("seed", SEED, (141, 20, 170, 0)), ("slotted", SLOTTED, (0, 47, 123)),
-    ("steep", STEEP, (0, 90, 179)), ("tipper", TIPPER, (0, 60, 179)),
-    ("piston", PISTON, (3, 50, 100, 170))])
-def test_slider_moves_drawings_and_values_to_the_solve_at_that_angle(opened, name, scene,
-                                                                     frames):
+@pytest.mark.parametrize(
+    "name, scene, frames",
+    [
+        ("seed", SEED, (141, 20, 170, 0)),
+        ("slotted", SLOTTED, (0, 47, 123)),
+        ("steep", STEEP, (0, 90, 179)),
+        ("tipper", TIPPER, (0, 60, 179)),
+        ("piston", PISTON, (3, 50, 100, 170)),
+    ],
+)
+def test_slider_moves_drawings_and_values_to_the_solve_at_that_angle(opened, name, scene, frames):
     o = opened(name)
     d = o.data
     seen = set()
@@ -177,8 +212,9 @@ def test_slider_moves_drawings_and_values_to_the_solve_at_that_angle(opened, nam
         o.slide(k)
         # each diagram's scale at this frame, as the page states it (mm of the panel: 10 a
         # centimetre)
-        space, vscale, ascale = (o.shown_scale(ph) / 10 for ph in
-                                 ("configuration", "velocity", "acceleration"))
+        space, vscale, ascale = (
+            o.shown_scale(ph) / 10 for ph in ("configuration", "velocity", "acceleration")
+        )
         theta = d["theta"][k]
         sol = solve_at(scene, theta)
         assert o.text("#angle-now") == f"θ = {theta % 360:.1f}°"

@@ -64,8 +64,10 @@ def browser():
     try:
         from playwright.sync_api import sync_playwright
     except ImportError:
-        pytest.skip("playwright is not installed (pip install playwright): the page's "
-                    "browser tests cannot run")
+        pytest.skip(
+            "playwright is not installed (pip install playwright): the page's "
+            "browser tests cannot run"
+        )
     exe = _chromium()
     if exe is None:
         pytest.skip("no Chromium found (/usr/bin/chromium; apt-get install chromium)")
@@ -89,6 +91,7 @@ def pages(tmp_path_factory):
             assert main(["page", scene, "-o", str(path)]) == 0
             out[scene] = path
         return out[scene]
+
     return page
 
 
@@ -139,8 +142,14 @@ def test_every_angle_fills_its_panels_and_stays_inside(browser, pages, scene, wi
             x0, y0, x1, y1 = p["panel"]
             assert x1 <= w + PX  # the panel itself is on the screen's width
             for tag, cls, (a, b, c, d) in p["items"]:
-                assert a >= x0 - PX and b >= y0 - PX and c <= x1 + PX and d <= y1 + PX, \
-                    (phase, k, tag, cls, (a, b, c, d), p["panel"])
+                assert a >= x0 - PX and b >= y0 - PX and c <= x1 + PX and d <= y1 + PX, (
+                    phase,
+                    k,
+                    tag,
+                    cls,
+                    (a, b, c, d),
+                    p["panel"],
+                )
             assert p["untitled"] == [], (phase, k, p["untitled"])
             assert _round(p["scale"], units[phase]), (phase, k, p["scale"])
             if phase == "configuration" or size[phase][k] <= rest[phase]:
@@ -157,8 +166,20 @@ def test_the_animation_player_works_offline(browser, tmp_path):
     """draw --animate to HTML opened with every request but its own file refused: nothing
     else is asked for, play moves the frames, and its buttons have text (no icon font)."""
     out = tmp_path / "cycle.html"
-    assert main(["draw", str(ROOT / "worked_problems" / "crank_slotted_lever.toml"),
-                 "--animate", "-o", str(out), "--frames", "12"]) == 0
+    assert (
+        main(
+            [
+                "draw",
+                str(ROOT / "worked_problems" / "crank_slotted_lever.toml"),
+                "--animate",
+                "-o",
+                str(out),
+                "--frames",
+                "12",
+            ]
+        )
+        == 0
+    )
     page = browser.new_page(viewport={"width": 390, "height": 844})
     asked, errors = [], []
     url = out.as_uri()
@@ -169,6 +190,7 @@ def test_the_animation_player_works_offline(browser, tmp_path):
             r.continue_()
         else:
             r.abort()
+
     page.route("**/*", route)
     page.on("pageerror", lambda e: errors.append(str(e)))
     try:

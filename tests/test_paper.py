@@ -43,9 +43,11 @@ def _said(svg, gid):
         from matplotlib import font_manager
         from matplotlib.ft2font import FT2Font
         from polygon_method.draw.style import FONT
+
         font = FT2Font(font_manager.findfont(FONT))
-        _CHARS.update({glyph: chr(code) for code, glyph in
-                       sorted(font.get_charmap().items(), reverse=True)})
+        _CHARS.update(
+            {glyph: chr(code) for code, glyph in sorted(font.get_charmap().items(), reverse=True)}
+        )
     out = []
     for use in svg.groups[gid].iter(SVGNS + "use"):
         code = re.search(r"-([0-9a-f]+)$", use.get(XLINK))
@@ -82,11 +84,19 @@ def _drawn_boxes(svg):
         for p in g.iter(SVGNS + "path"):
             if id(p) in glyphs:
                 continue
-            pts = [(float(x), float(y)) for x, y in
-                   re.findall(r"(-?[\d.]+) (-?[\d.]+)", p.get("d") or "")]
+            pts = [
+                (float(x), float(y))
+                for x, y in re.findall(r"(-?[\d.]+) (-?[\d.]+)", p.get("d") or "")
+            ]
             if pts:
-                out.append((min(x for x, _ in pts), min(y for _, y in pts),
-                            max(x for x, _ in pts), max(y for _, y in pts)))
+                out.append(
+                    (
+                        min(x for x, _ in pts),
+                        min(y for _, y in pts),
+                        max(x for x, _ in pts),
+                        max(y for _, y in pts),
+                    )
+                )
     return out
 
 
@@ -125,21 +135,34 @@ def _check_scales(svg, sol, used):
     # the crank, or for a mechanism driven by a block, its first link between two joints
     # (none in a trammel, whose one link joins two blocks, nor on a sheet without the
     # configuration diagram: the polygons' page of two)
-    first = (next(lk for lk in sc.links if lk.key == inp.crank) if inp.crank is not None
-             else next((lk for lk in sc.links if f"joint-{lk.p}" in svg.groups
-                        and f"joint-{lk.q}" in svg.groups), None))
-    if first is not None and f"joint-{first.p}" in svg.groups and \
-            "note-configuration-scale" in svg.groups:
+    first = (
+        next(lk for lk in sc.links if lk.key == inp.crank)
+        if inp.crank is not None
+        else next(
+            (
+                lk
+                for lk in sc.links
+                if f"joint-{lk.p}" in svg.groups and f"joint-{lk.q}" in svg.groups
+            ),
+            None,
+        )
+    )
+    if (
+        first is not None
+        and f"joint-{first.p}" in svg.groups
+        and "note-configuration-scale" in svg.groups
+    ):
         got = math.dist(_centre(svg, f"joint-{first.p}"), _centre(svg, f"joint-{first.q}"))
-        assert got / CM * used["configuration"].per_cm == pytest.approx(first.length,
-                                                                       rel=1e-5)
+        assert got / CM * used["configuration"].per_cm == pytest.approx(first.length, rel=1e-5)
         measured += 1
     if "note-velocity-scale" in svg.groups and inp.block is not None:
         collar = not hasattr(sc.slider(inp.block), "through")  # its sliding is given
-        kind, name = ("sliding", f"vs_{inp.block}") if collar else ("absolute",
-                                                                       f"v_{inp.block}")
-        n = next(k for k, v in enumerate(drawn_vectors(sol, "velocity"))
-                 if v.kind == kind and v.name == name)
+        kind, name = ("sliding", f"vs_{inp.block}") if collar else ("absolute", f"v_{inp.block}")
+        n = next(
+            k
+            for k, v in enumerate(drawn_vectors(sol, "velocity"))
+            if v.kind == kind and v.name == name
+        )
         tail = svg.path(f"velocity-vector-{n}-shaft")[0]
         tip = svg.path(f"velocity-vector-{n}-head")[0]
         got = math.dist(tail, tip) / CM * used["velocity"].per_cm
@@ -147,8 +170,11 @@ def _check_scales(svg, sol, used):
         measured += 1
     elif "note-velocity-scale" in svg.groups and inp.pivot in sc.ground:
         crank = next(lk for lk in sc.links if lk.key == inp.crank)
-        n = next(k for k, v in enumerate(drawn_vectors(sol, "velocity"))
-                 if v.kind == "absolute" and v.name == f"v_{inp.tip}")
+        n = next(
+            k
+            for k, v in enumerate(drawn_vectors(sol, "velocity"))
+            if v.kind == "absolute" and v.name == f"v_{inp.tip}"
+        )
         tail = svg.path(f"velocity-vector-{n}-shaft")[0]
         tip = svg.path(f"velocity-vector-{n}-head")[0]
         got = math.dist(tail, tip) / CM * used["velocity"].per_cm
@@ -170,8 +196,14 @@ def _panels(path):
 
 #: the worked problems written on every paper (the others written on A4 and laid out on
 #: A3 and letter): a four-bar, a slider crank, a six-bar, a quick return, gears, an engine
-ALL_PAPERS = ("fourbar_image_points", "offset_slider_crank", "six_link_second_slider",
-              "whitworth", "gear_train_given_gear", "engine_forces")
+ALL_PAPERS = (
+    "fourbar_image_points",
+    "offset_slider_crank",
+    "six_link_second_slider",
+    "whitworth",
+    "gear_train_given_gear",
+    "engine_forces",
+)
 
 
 def _cases():
@@ -181,8 +213,13 @@ def _cases():
     problems, and writing each three times over, and as PDF, is minutes of the suite)."""
     for path in WORKED:
         every = Path(path).stem in ALL_PAPERS
-        yield pytest.param(path, ("A4", "A3", "letter") if every else ("A4",),
-                           () if every else ("A3", "letter"), True, id=_stem(path))
+        yield pytest.param(
+            path,
+            ("A4", "A3", "letter") if every else ("A4",),
+            () if every else ("A3", "letter"),
+            True,
+            id=_stem(path),
+        )
     for path in TEXTBOOK:
         yield pytest.param(path, ("A4",), ("A3", "letter"), False, id=_stem(path))
 
@@ -192,13 +229,15 @@ def test_the_worked_problems_written_on_every_paper_exist():
 
 
 @pytest.mark.parametrize("path,written,laid_out,pdf", list(_cases()))
-def test_every_sheet_is_on_its_paper_inside_the_margins_and_true_to_scale(path, written,
-                                                                          laid_out, pdf):
+def test_every_sheet_is_on_its_paper_inside_the_margins_and_true_to_scale(
+    path, written, laid_out, pdf
+):
     sol, panels, sizes = _panels(path)
     used = {name: s for name, s, _ in panels}
     # the scales the step table states, on every paper
-    assert [used[n].text for n in ("configuration", "velocity", "acceleration")] == \
-        [s.text for s in diagram_scales(sol)]
+    assert [used[n].text for n in ("configuration", "velocity", "acceleration")] == [
+        s.text for s in diagram_scales(sol)
+    ]
     for paper in written + laid_out:
         pages = paginate(sizes, paper, panels=[name for name, _, _ in panels])
         assert sorted(k for p in pages for k, _, _ in p.placed) == [0, 1, 2]  # each once
@@ -212,9 +251,13 @@ def test_every_sheet_is_on_its_paper_inside_the_margins_and_true_to_scale(path, 
             # panels on one page do not overlap one another
             rects = [(x, y, x + sizes[k][0], y + sizes[k][1]) for k, x, y in page.placed]
             for i, a in enumerate(rects):
-                for b in rects[i + 1:]:
-                    assert a[2] <= b[0] + 1e-9 or b[2] <= a[0] + 1e-9 or \
-                        a[3] <= b[1] + 1e-9 or b[3] <= a[1] + 1e-9
+                for b in rects[i + 1 :]:
+                    assert (
+                        a[2] <= b[0] + 1e-9
+                        or b[2] <= a[0] + 1e-9
+                        or a[3] <= b[1] + 1e-9
+                        or b[3] <= a[1] + 1e-9
+                    )
         if paper not in written:
             continue
         svgs, warnings = write_pages(panels, sizes, pages, "svg")
@@ -232,7 +275,8 @@ def test_every_sheet_is_on_its_paper_inside_the_margins_and_true_to_scale(path, 
         assert len(boxes) == len(pages)
         for box, page in zip(boxes, pages):
             assert (box[2] - box[0], box[3] - box[1]) == pytest.approx(
-                (page.size[0] * PT, page.size[1] * PT), abs=1e-3)
+                (page.size[0] * PT, page.size[1] * PT), abs=1e-3
+            )
 
 
 def test_a4_holds_every_sheet_on_at_most_two_pages_and_a3_on_one():
@@ -258,15 +302,18 @@ def test_the_layout_keeps_order_and_never_shrinks():
     # too tall for A4 either way: two pages, in order
     pages = paginate([(15.0, 20.0), (15.0, 20.0)], "A4")
     assert [p.placed[0][0] for p in pages] == [0, 1] and [p.count for p in pages] == [2, 2]
-    assert room("A4", "portrait") == pytest.approx((21.0 - 2 * MARGIN, 29.7 - 2 * MARGIN
-                                                     - FOOTER))
+    assert room("A4", "portrait") == pytest.approx((21.0 - 2 * MARGIN, 29.7 - 2 * MARGIN - FOOTER))
     assert paginate([(15.0, 20.0), (15.0, 20.0)], "A3")[0].orientation == "landscape"
 
 
 def test_a_diagram_larger_than_the_paper_is_one_line():
     with pytest.raises(PolygonMethodError) as e:
-        paginate([(25.0, 30.0)], "A4", names=["the velocity polygon at 1 cm = 0.01 m/s"],
-                 advice="; draw it on A3 (--paper A3) or at a coarser --scale")
+        paginate(
+            [(25.0, 30.0)],
+            "A4",
+            names=["the velocity polygon at 1 cm = 0.01 m/s"],
+            advice="; draw it on A3 (--paper A3) or at a coarser --scale",
+        )
     text = str(e.value)
     assert "\n" not in text and "velocity polygon at 1 cm = 0.01 m/s" in text
     assert "25 x 30 cm" in text and "--paper A3" in text
@@ -283,8 +330,9 @@ def test_the_command_writes_a_file_a_page_and_says_which(tmp_path):
     scene = ROOT / "worked_problems" / "fourbar_image_points.toml"
     run = [sys.executable, "-m", "polygon_method", "draw", str(scene)]
     env = {"PYTHONPATH": str(ROOT), "PATH": "/usr/bin:/bin"}
-    out = subprocess.run(run + ["-o", str(tmp_path / "s.svg")], capture_output=True,
-                         text=True, env=env)
+    out = subprocess.run(
+        run + ["-o", str(tmp_path / "s.svg")], capture_output=True, text=True, env=env
+    )
     assert out.returncode == 0, out.stderr
     files = sorted(p.name for p in tmp_path.iterdir())
     sol = solve(load_scene(scene))
@@ -295,26 +343,36 @@ def test_the_command_writes_a_file_a_page_and_says_which(tmp_path):
     for name in want:
         assert str(tmp_path / name) in out.stdout
     # the same bytes twice
-    again = subprocess.run(run + ["-o", str(tmp_path / "t.svg")], capture_output=True,
-                           text=True, env=env)
+    again = subprocess.run(
+        run + ["-o", str(tmp_path / "t.svg")], capture_output=True, text=True, env=env
+    )
     assert again.returncode == 0
-    for a, b in zip(page_files(tmp_path / "s.svg", len(pages)),
-                    page_files(tmp_path / "t.svg", len(pages))):
+    for a, b in zip(
+        page_files(tmp_path / "s.svg", len(pages)), page_files(tmp_path / "t.svg", len(pages))
+    ):
         assert a.read_bytes() == b.read_bytes()
     # A3 holds it on one page, under the name given; a PDF is one file of as many pages
-    out = subprocess.run(run + ["-o", str(tmp_path / "a3.pdf"), "--paper", "a3"],
-                         capture_output=True, text=True, env=env)
+    out = subprocess.run(
+        run + ["-o", str(tmp_path / "a3.pdf"), "--paper", "a3"],
+        capture_output=True,
+        text=True,
+        env=env,
+    )
     assert out.returncode == 0 and "A3" in out.stdout
     assert len(_pdf_pages((tmp_path / "a3.pdf").read_bytes())) == 1
-    out = subprocess.run(run + ["-o", str(tmp_path / "a4.pdf")], capture_output=True,
-                         text=True, env=env)
+    out = subprocess.run(
+        run + ["-o", str(tmp_path / "a4.pdf")], capture_output=True, text=True, env=env
+    )
     assert len(_pdf_pages((tmp_path / "a4.pdf").read_bytes())) == len(pages)
     # a paper it does not know, and a scale that makes a diagram larger than the paper:
     # one line each, exit 2, nothing written
-    for extra, words in ((["--paper", "B5"], "unknown paper 'B5'"),
-                         (["--scale", "1 cm = 0.01 m/s"], "more than A4 holds")):
-        bad = subprocess.run(run + ["-o", str(tmp_path / "bad.svg")] + extra,
-                             capture_output=True, text=True, env=env)
+    for extra, words in (
+        (["--paper", "B5"], "unknown paper 'B5'"),
+        (["--scale", "1 cm = 0.01 m/s"], "more than A4 holds"),
+    ):
+        bad = subprocess.run(
+            run + ["-o", str(tmp_path / "bad.svg")] + extra, capture_output=True, text=True, env=env
+        )
         assert bad.returncode == 2 and words in bad.stderr, bad.stderr
         assert len(bad.stderr.strip().splitlines()) == 1
         assert not list(tmp_path.glob("bad*"))

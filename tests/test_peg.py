@@ -64,8 +64,15 @@ def _closed_form(angle_deg, w, al, h=0.45, r=0.1, c=0.2):
     def rho(t):
         return h / sin(phi(t))
 
-    return {"x": x(0), "v": diff(x, 0, 1), "a": diff(x, 0, 2), "omega": diff(phi, 0, 1),
-            "alpha": diff(phi, 0, 2), "vs": diff(rho, 0, 1), "as": diff(rho, 0, 2)}
+    return {
+        "x": x(0),
+        "v": diff(x, 0, 1),
+        "a": diff(x, 0, 2),
+        "omega": diff(phi, 0, 1),
+        "alpha": diff(phi, 0, 2),
+        "vs": diff(rho, 0, 1),
+        "as": diff(rho, 0, 2),
+    }
 
 
 def _closed_form_40(*args, **kw):
@@ -89,8 +96,9 @@ def test_shaper_ram_pin_matches_the_closed_form(angle):
     vs, a_s, cx, cy = sol.S["P_O4-B"][0], sol.S["P_O4-B"][1], *sol.coriolis("P_O4-B")
     assert vs == pytest.approx(float(ref["vs"]), abs=1e-9 * vmax)
     assert a_s == pytest.approx(float(ref["as"]), abs=1e-9 * amax)
-    assert math.hypot(cx, cy) == pytest.approx(2 * abs(float(ref["omega"] * ref["vs"])),
-                                               abs=1e-9 * amax)
+    assert math.hypot(cx, cy) == pytest.approx(
+        2 * abs(float(ref["omega"] * ref["vs"])), abs=1e-9 * amax
+    )
     # the fixed slot: the ram's own velocity and acceleration along +x, no Coriolis
     assert sol.S["P_ground"][0] == pytest.approx(float(ref["v"]), abs=1e-9 * vmax)
     assert sol.S["P_ground"][1] == pytest.approx(float(ref["a"]), abs=1e-9 * amax)
@@ -141,7 +149,7 @@ def test_velocity_and_acceleration_are_the_time_derivatives_of_the_position():
     """Central differences of the peg's position (solved at crank angles th +- w h) against
     its velocity and acceleration, for two moving slots."""
     text = TWO.read_text(encoding="utf-8")
-    text = re.sub(r'(?m)^acceleration = .*$', 'acceleration = "0 rad/s^2"', text)
+    text = re.sub(r"(?m)^acceleration = .*$", 'acceleration = "0 rad/s^2"', text)
     w = -10.5
     h = 2e-5
 
@@ -170,11 +178,12 @@ def test_gruebler_counts_a_peg_in_two_slots_as_two_blocks_pinned_together():
 
 def test_each_slot_has_its_answer_keys_and_a_bare_point_is_refused():
     sc = parse_scene(SHAPER.read_text(encoding="utf-8"))
-    _, answers = parse_answers('[answers]\nvs_P_O4-B = "0.9427 m/s"\nac_P_O4-B = 10.77\n'
-                               'as_P_ground = -9.977\n', sc)
+    _, answers = parse_answers(
+        '[answers]\nvs_P_O4-B = "0.9427 m/s"\nac_P_O4-B = 10.77\nas_P_ground = -9.977\n', sc
+    )
     assert [a.names for a in answers] == [("P_O4-B",), ("P_O4-B",), ("P_ground",)]
     with pytest.raises(Exception, match="name the slot, ac_P_O4-B or ac_P_ground"):
-        parse_answers('[answers]\nac_P = 10.77\n', sc)
+        parse_answers("[answers]\nac_P = 10.77\n", sc)
 
 
 def test_forgetting_the_coriolis_component_of_the_moving_slot_is_diagnosed():
@@ -189,8 +198,9 @@ def test_forgetting_the_coriolis_component_of_the_moving_slot_is_diagnosed():
     n = math.hypot(px, py)
     s = -acy / (py / n)
     wrong_a = abs(acx + s * px / n)
-    _, answers = parse_answers(f'[answers]\na_P = "{wrong_a:.4g} m/s^2"\n'
-                               f'as_P_O4-B = "{s:.4g} m/s^2"\n', sc)
+    _, answers = parse_answers(
+        f'[answers]\na_P = "{wrong_a:.4g} m/s^2"\nas_P_O4-B = "{s:.4g} m/s^2"\n', sc
+    )
     verdicts = check_answers(sol, answers)
     assert len(verdicts) == 2
     for v in verdicts:
@@ -199,11 +209,16 @@ def test_forgetting_the_coriolis_component_of_the_moving_slot_is_diagnosed():
 
 
 def test_cli_views_of_a_peg(tmp_path, capsys):
-    for args in (["solve", "--json", str(TWO)], ["steps", str(TWO)], ["centres", str(TWO)],
-                 ["check", str(SHAPER)], ["sweep", "--summary", str(SHAPER)],
-                 ["linkage", str(SHAPER)],
-                 ["draw", str(TWO), "-o", str(tmp_path / "x.svg"), "--paper", "A3"],
-                 ["page", str(SHAPER), "-o", str(tmp_path / "x.html")]):
+    for args in (
+        ["solve", "--json", str(TWO)],
+        ["steps", str(TWO)],
+        ["centres", str(TWO)],
+        ["check", str(SHAPER)],
+        ["sweep", "--summary", str(SHAPER)],
+        ["linkage", str(SHAPER)],
+        ["draw", str(TWO), "-o", str(tmp_path / "x.svg"), "--paper", "A3"],
+        ["page", str(SHAPER), "-o", str(tmp_path / "x.html")],
+    ):
         assert main(args) == 0, args
     out = " ".join(capsys.readouterr().out.split())  # the steps' lines are wrapped
     assert "vs_P_AB" in out and "P_CD" in out

@@ -26,9 +26,9 @@ crank = "OA"
 speed = "10 rad/s ccw"
 """
 
-FOURBAR = seed(top='units = "mm"\n',
-               middle='[assembly]\nC = "above"\n',
-               drive='{pos}\nspeed = "10.5 rad/s cw"')
+FOURBAR = seed(
+    top='units = "mm"\n', middle='[assembly]\nC = "above"\n', drive='{pos}\nspeed = "10.5 rad/s cw"'
+)
 
 TIPPER = """
 units = "mm"
@@ -69,8 +69,8 @@ def test_rocker_angle(phi):
     cx = 0.1 + 0.056 * math.cos(math.radians(phi))
     cy = 0.056 * math.sin(math.radians(phi))
     d = math.hypot(cx, cy)
-    a = (0.05 ** 2 - 0.066 ** 2 + d * d) / (2 * d)
-    h = math.sqrt(0.05 ** 2 - a * a)
+    a = (0.05**2 - 0.066**2 + d * d) / (2 * d)
+    h = math.sqrt(0.05**2 - a * a)
     ex, ey = cx / d, cy / d
     cands = [math.atan2(a * ey + s * h * ex, a * ex - s * h * ey) for s in (1, -1)]
     want = min(cands, key=lambda t: abs(math.remainder(t - math.radians(60), 2 * math.pi)))
@@ -92,11 +92,13 @@ def test_cylinder_length(L):
     assert abs(sol.sliding_velocity("O-R") - 0.1) < 1e-12
 
 
-BAD = [(TIPPER, "length_OR = 3000", "no angle of the crank"),
-       (TIPPER, "length_OR = 1000\nangle = 30", "position twice"),
-       (SLIDER, "angle = 30\nnear = 40", "near is a rough crank angle"),
-       (SLIDER, "s_A = 300", "no slider A"),
-       (FOURBAR, "angle_DX = 30", "two points of the scene")]
+BAD = [
+    (TIPPER, "length_OR = 3000", "no angle of the crank"),
+    (TIPPER, "length_OR = 1000\nangle = 30", "position twice"),
+    (SLIDER, "angle = 30\nnear = 40", "near is a rough crank angle"),
+    (SLIDER, "s_A = 300", "no slider A"),
+    (FOURBAR, "angle_DX = 30", "two points of the scene"),
+]
 
 
 @pytest.mark.parametrize("scene, pos, words", BAD)
@@ -111,7 +113,13 @@ def test_refusals_one_line(tmp_path, capsys, scene, pos, words):
 def test_views(tmp_path):
     f = tmp_path / "s.toml"
     f.write_text(TIPPER.format(pos="length_OR = 1200\nnear = 150"))
-    for argv in (["steps"], ["centres"], ["linkage"], ["draw", "-o", str(tmp_path / "d.svg")],
-                 ["sweep", "--steps", "36", "--summary"], ["page", "-o", str(tmp_path / "p.html")],
-                 ["solve", "--json"]):
+    for argv in (
+        ["steps"],
+        ["centres"],
+        ["linkage"],
+        ["draw", "-o", str(tmp_path / "d.svg")],
+        ["sweep", "--steps", "36", "--summary"],
+        ["page", "-o", str(tmp_path / "p.html")],
+        ["solve", "--json"],
+    ):
         assert main([argv[0], str(f), *argv[1:]]) == 0, argv

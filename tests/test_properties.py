@@ -22,8 +22,13 @@ from polygon_method.motion.solution import solve
 from reference import reference_solution
 
 REL = 1e-9
-SETTINGS = settings(max_examples=60, deadline=None, derandomize=True, database=None,
-                    suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(
+    max_examples=60,
+    deadline=None,
+    derandomize=True,
+    database=None,
+    suppress_health_check=[HealthCheck.too_slow],
+)
 
 length = st.floats(min_value=20.0, max_value=200.0, allow_nan=False)
 angle = st.floats(min_value=0.0, max_value=360.0, allow_nan=False, exclude_max=True)
@@ -34,15 +39,22 @@ accel = st.floats(min_value=-200.0, max_value=200.0)
 def motion(w, al):
     sense = "ccw" if w > 0 else "cw"
     asense = "ccw" if al >= 0 else "cw"
-    return (f'speed = "{abs(w)!r} rad/s {sense}"\n'
-            + (f'acceleration = "{abs(al)!r} rad/s^2 {asense}"\n' if al else ""))
+    return f'speed = "{abs(w)!r} rad/s {sense}"\n' + (
+        f'acceleration = "{abs(al)!r} rad/s^2 {asense}"\n' if al else ""
+    )
 
 
 def reference(scene, guess):
     r = reference_solution(scene, guess)
-    return Kinematics("reference", r["positions"], r["velocities"], r["accelerations"],
-                      r["omega"], r["alpha"],
-                      {k: (v["vs"], v["as"]) for k, v in r["sliders"].items()})
+    return Kinematics(
+        "reference",
+        r["positions"],
+        r["velocities"],
+        r["accelerations"],
+        r["omega"],
+        r["alpha"],
+        {k: (v["vs"], v["as"]) for k, v in r["sliders"].items()},
+    )
 
 
 def sine_between(u, v):
@@ -72,8 +84,9 @@ def check(scene, expected_conditions):
     worst = min(conds.values())
     assert (len(sol.warnings) > 0) == (worst < TOL.warn)
     if worst >= TOL.warn:
-        kin = Kinematics("solve", sol.P, sol.V, sol.A, sol.W, sol.Al,
-                         {k: (v[0], v[1]) for k, v in sol.S.items()})
+        kin = Kinematics(
+            "solve", sol.P, sol.V, sol.A, sol.W, sol.Al, {k: (v[0], v[1]) for k, v in sol.S.items()}
+        )
         err = compare(kin, ref, scene)
         assert err["all"] < REL, err
     return "warned" if worst < TOL.warn else "ok"
@@ -83,8 +96,16 @@ def check(scene, expected_conditions):
 
 
 @SETTINGS
-@given(a=length, b=length, c=length, d=length, th=angle, w=speed, al=accel,
-       branch=st.sampled_from(["above", "below"]))
+@given(
+    a=length,
+    b=length,
+    c=length,
+    d=length,
+    th=angle,
+    w=speed,
+    al=accel,
+    branch=st.sampled_from(["above", "below"]),
+)
 def test_random_fourbar(a, b, c, d, th, w, al, branch):
     text = f"""
 [ground]
@@ -120,9 +141,16 @@ angle = {th!r}
 
 
 @SETTINGS
-@given(r=length, ratio=st.floats(min_value=1.05, max_value=6.0), e=st.floats(-0.9, 0.9),
-       inline=st.booleans(), th=angle, w=speed, al=accel,
-       path=st.sampled_from(["horizontal", "vertical", "30 deg"]))
+@given(
+    r=length,
+    ratio=st.floats(min_value=1.05, max_value=6.0),
+    e=st.floats(-0.9, 0.9),
+    inline=st.booleans(),
+    th=angle,
+    w=speed,
+    al=accel,
+    path=st.sampled_from(["horizontal", "vertical", "30 deg"]),
+)
 def test_random_slider_crank(r, ratio, e, inline, th, w, al, path):
     ell = r * ratio
     off = 0.0 if inline else e * (ell - r)  # |offset| < l - r: the crank turns fully
@@ -154,10 +182,15 @@ angle = {th!r}
 
 
 @SETTINGS
-@given(crank=st.floats(min_value=30.0, max_value=120.0),
-       centres=st.floats(min_value=1.2, max_value=4.0),
-       lever=st.floats(min_value=1.1, max_value=2.0), th=angle, w=speed, al=accel,
-       with_ram=st.booleans())
+@given(
+    crank=st.floats(min_value=30.0, max_value=120.0),
+    centres=st.floats(min_value=1.2, max_value=4.0),
+    lever=st.floats(min_value=1.1, max_value=2.0),
+    th=angle,
+    w=speed,
+    al=accel,
+    with_ram=st.booleans(),
+)
 def test_random_quick_return(crank, centres, lever, th, w, al, with_ram):
     """Crank O2-A turning fully; block A slides along the slotted lever O4-P."""
     c = crank * centres  # O2 above O4 by c > crank: the lever swings (quick return)
@@ -181,7 +214,7 @@ A = {{ along = "O4-P" }}
 {ram_slider}
 [assembly]
 P = "above"
-{'Q = "right"' if with_ram else ''}
+{'Q = "right"' if with_ram else ""}
 [input]
 crank = "O2-A"
 angle = {th!r}
@@ -190,8 +223,7 @@ angle = {th!r}
 
     def conditions(P):
         # the block's distance from the pivot over the crank, the link that places it
-        out = {0: 1.0, 1: min(math.hypot(*map(float, sub(P["A"], P["O4"]))) / (crank * 1e-3),
-                              1.0)}
+        out = {0: 1.0, 1: min(math.hypot(*map(float, sub(P["A"], P["O4"]))) / (crank * 1e-3), 1.0)}
         if with_ram:
             out[2] = sine_between(sub(P["Q"], P["P"]), (0.0, 1.0))
         return out

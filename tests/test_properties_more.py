@@ -23,8 +23,13 @@ from polygon_method.scene import parse_scene
 from polygon_method.motion.solution import solve
 from reference import reference_solution
 
-SETTINGS = settings(max_examples=40, deadline=None, derandomize=True, database=None,
-                    suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(
+    max_examples=40,
+    deadline=None,
+    derandomize=True,
+    database=None,
+    suppress_health_check=[HealthCheck.too_slow],
+)
 
 # Every mechanism is built from its positions at the instant, every step's condition at
 # least sin 6 deg (above the warning's sin 5 deg) by construction, its lengths and
@@ -38,7 +43,8 @@ accel = st.floats(min_value=0.0, max_value=100.0)
 direction = st.floats(min_value=-math.pi, max_value=math.pi)
 #: an angle between two direction lines whose sine is at least sin 6 deg, either side
 apart = st.floats(min_value=math.radians(6.5), max_value=math.radians(173.5)).flatmap(
-    lambda x: st.sampled_from([x, -x]))
+    lambda x: st.sampled_from([x, -x])
+)
 
 
 def _at(p, r, ang):
@@ -82,8 +88,9 @@ def expected_condition(step, P, scene):
         # over the longest other link at the block or the pivot (the guide's own length
         # where none): the size of what places them
         pts = (step.point, step.known)
-        others = [lk.length for lk in scene.links
-                  if lk.key != step.guide and (lk.p in pts or lk.q in pts)]
+        others = [
+            lk.length for lk in scene.links if lk.key != step.guide and (lk.p in pts or lk.q in pts)
+        ]
         rho = max(others) if others else step.length
         return min(1.0, math.hypot(*_sub(P[step.point], P[step.known])) / rho)
     return 1.0
@@ -94,23 +101,30 @@ def verdict(text):
     scene = parse_scene(text)
     sol = solve(scene)  # built to assemble, every condition above the warning's
     r = reference_solution(scene, sol.P)
-    ref = Kinematics("reference", r["positions"], r["velocities"], r["accelerations"],
-                     r["omega"], r["alpha"],
-                     {k: (v["vs"], v["as"]) for k, v in r["sliders"].items()})
+    ref = Kinematics(
+        "reference",
+        r["positions"],
+        r["velocities"],
+        r["accelerations"],
+        r["omega"],
+        r["alpha"],
+        {k: (v["vs"], v["as"]) for k, v in r["sliders"].items()},
+    )
     for st_ in sol.plan.steps:
         assert sol.conditions[st_.index] == pytest.approx(
-            expected_condition(st_, ref.P, scene), rel=1e-7, abs=1e-12)
+            expected_condition(st_, ref.P, scene), rel=1e-7, abs=1e-12
+        )
     worst = min(sol.conditions.values())
     assert worst >= TOL.warn and not sol.warnings
-    kin = Kinematics("solve", sol.P, sol.V, sol.A, sol.W, sol.Al,
-                     {k: (v[0], v[1]) for k, v in sol.S.items()})
+    kin = Kinematics(
+        "solve", sol.P, sol.V, sol.A, sol.W, sol.Al, {k: (v[0], v[1]) for k, v in sol.S.items()}
+    )
     err = compare(kin, ref, scene)
     assert err["all"] < 1e-9, err
 
 
 def _motion(w, s, al):
-    return (f'speed = "{w!r} rad/s {s}"\n'
-            + (f'acceleration = "{al!r} rad/s^2 {s}"\n' if al else ""))
+    return f'speed = "{w!r} rad/s {s}"\n' + (f'acceleration = "{al!r} rad/s^2 {s}"\n' if al else "")
 
 
 def _four_bar(a, th, e, delta, mu, frac):
@@ -130,10 +144,24 @@ triangle = st.floats(min_value=0.05, max_value=0.95)
 
 
 @SETTINGS
-@given(a=length, e=length, delta=direction, th=angle, mu=apart, frac=triangle, psi=apart,
-       e1=length, f=length, chi=direction, nu=apart, g=length, w=speed, s=sense, al=accel)
-def test_six_link_through_a_plate(a, e, delta, th, mu, frac, psi, e1, f, chi, nu, g, w, s,
-                                  al):
+@given(
+    a=length,
+    e=length,
+    delta=direction,
+    th=angle,
+    mu=apart,
+    frac=triangle,
+    psi=apart,
+    e1=length,
+    f=length,
+    chi=direction,
+    nu=apart,
+    g=length,
+    w=speed,
+    s=sense,
+    al=accel,
+)
+def test_six_link_through_a_plate(a, e, delta, th, mu, frac, psi, e1, f, chi, nu, g, w, s, al):
     B, C, D, b, c = _four_bar(a, th, e, delta, mu, frac)
     E = _at(C, e1, _dir(C, D) + psi)  # the plate CDE: E off the line CD
     F = _at(E, f, chi)
@@ -161,10 +189,17 @@ angle = {th!r}
 
 
 @SETTINGS
-@given(a=length, L=st.floats(min_value=200.0, max_value=500.0),
-       ro=st.floats(min_value=1.1, max_value=2.5), beta=direction,
-       along=st.floats(min_value=-100.0, max_value=300.0), th=angle, w=speed, s=sense,
-       al=accel)
+@given(
+    a=length,
+    L=st.floats(min_value=200.0, max_value=500.0),
+    ro=st.floats(min_value=1.1, max_value=2.5),
+    beta=direction,
+    along=st.floats(min_value=-100.0, max_value=300.0),
+    th=angle,
+    w=speed,
+    s=sense,
+    al=accel,
+)
 def test_swivel_block_at_a_fixed_point(a, L, ro, beta, along, th, w, s, al):
     """O at least 1.1 times the crank's length from A: the block at O at least 0.1 of the
     crank from B (the slotted step's condition above sin 6 deg)."""
@@ -187,12 +222,25 @@ angle = {th!r}
 
 
 @SETTINGS
-@given(a=length, e=length, delta=direction, th=angle, mu=apart, frac=triangle,
-       t=st.floats(min_value=-0.5, max_value=1.5), h=length,
-       psi=st.floats(min_value=0.0, max_value=math.radians(83.5)),
-       other=st.booleans(), w=speed, s=sense, al=accel, first=st.booleans())
-def test_block_sliding_along_a_moving_coupler(a, e, delta, th, mu, frac, t, h, psi, other, w,
-                                              s, al, first):
+@given(
+    a=length,
+    e=length,
+    delta=direction,
+    th=angle,
+    mu=apart,
+    frac=triangle,
+    t=st.floats(min_value=-0.5, max_value=1.5),
+    h=length,
+    psi=st.floats(min_value=0.0, max_value=math.radians(83.5)),
+    other=st.booleans(),
+    w=speed,
+    s=sense,
+    al=accel,
+    first=st.booleans(),
+)
+def test_block_sliding_along_a_moving_coupler(
+    a, e, delta, th, mu, frac, t, h, psi, other, w, s, al, first
+):
     """X on the line BC, the rod HX at ``psi`` (at most 83.5 deg) from it: the slider
     step's condition |cos psi| above sin 6 deg."""
     B, C, D, b, c = _four_bar(a, th, e, delta, mu, frac)
@@ -209,7 +257,7 @@ BC = {b!r}
 CD = {c!r}
 HX = {h!r}
 [sliders]
-X = {{ along = "{'BC' if first else 'CB'}" }}
+X = {{ along = "{"BC" if first else "CB"}" }}
 [assembly]
 C = {_xy(C)}
 X = {_xy(X)}
@@ -220,9 +268,19 @@ angle = {th!r}
 
 
 @SETTINGS
-@given(a=length, th=angle, bg=st.floats(min_value=40.0, max_value=200.0), beta=direction,
-       eps_=apart, frac=st.floats(min_value=0.1, max_value=0.9), r=length, gamma=apart,
-       w=speed, s=sense, al=accel)
+@given(
+    a=length,
+    th=angle,
+    bg=st.floats(min_value=40.0, max_value=200.0),
+    beta=direction,
+    eps_=apart,
+    frac=st.floats(min_value=0.1, max_value=0.9),
+    r=length,
+    gamma=apart,
+    w=speed,
+    s=sense,
+    al=accel,
+)
 def test_dyad_on_the_side_of_a_plate(a, th, bg, beta, eps_, frac, r, gamma, w, s, al):
     """E found by the dyad on the plate's side BE and the link EG, at an angle ``eps_``
     at E (sine at least sin 6 deg); C on the plate at ``gamma`` from BE at B."""

@@ -50,8 +50,12 @@ acceleration = "{al}"
 """
 
 # (a, b, c, d, crank angle deg, omega, alpha, the rack's height below D): crank-rockers
-RACKS = [(40, 120, 80, 140, 50, 20.0, -40.0, -50.0), (30, 100, 70, 110, 200, -7.0, 3.0, -25.0),
-         (25, 90, 60, 95, 300, 12.0, 0.0, 35.0), (50, 150, 100, 160, 120, 4.0, 9.0, -80.0)]
+RACKS = [
+    (40, 120, 80, 140, 50, 20.0, -40.0, -50.0),
+    (30, 100, 70, 110, 200, -7.0, 3.0, -25.0),
+    (25, 90, 60, 95, 300, 12.0, 0.0, 35.0),
+    (50, 150, 100, 160, 120, 4.0, 9.0, -80.0),
+]
 
 
 @pytest.mark.parametrize("a,b,c,d,th,w,al,h", RACKS)
@@ -59,11 +63,23 @@ def test_rack_on_a_rocker_moves_as_the_pinions_pitch_point(a, b, c, d, th, w, al
     """The rack's sliding velocity and acceleration are the rocker's omega and alpha (the
     four-bar by the algebraic method, 50 digits) times the pitch radius, signed: the pitch
     point at (d, h) moves at omega_4 perp(I - D), along the path."""
-    sc = parse_scene(RACK.format(a=a, b=b, c=c, d=d, th=th, w=_sensed(w, "rad/s"),
-                                 al=_sensed(al, "rad/s^2"), tx=d + 7, ty=h))
+    sc = parse_scene(
+        RACK.format(
+            a=a,
+            b=b,
+            c=c,
+            d=d,
+            th=th,
+            w=_sensed(w, "rad/s"),
+            al=_sensed(al, "rad/s^2"),
+            tx=d + 7,
+            ty=h,
+        )
+    )
     sol = solve(sc)
-    ref = reference_fourbar_algebraic(a * 1e-3, b * 1e-3, c * 1e-3, d * 1e-3, math.radians(th),
-                                      w, al, +1)
+    ref = reference_fourbar_algebraic(
+        a * 1e-3, b * 1e-3, c * 1e-3, d * 1e-3, math.radians(th), w, al, +1
+    )
     w4, a4 = float(ref["omega4"]), float(ref["alpha4"])
     Rp = -h * 1e-3  # I - D = (0, h): v_I = w4 (-h, 0)
     assert sol.W["CD"] == pytest.approx(w4, rel=1e-9)
@@ -86,8 +102,9 @@ def _fd(plan, th0, name, h=1e-3):
     return d1, d2
 
 
-@pytest.mark.parametrize("name", ["rolling_rack_on_rocker", "rolling_ring_output",
-                                  "rolling_ring_on_rocker"])
+@pytest.mark.parametrize(
+    "name", ["rolling_rack_on_rocker", "rolling_ring_output", "rolling_ring_on_rocker"]
+)
 @pytest.mark.parametrize("turn", [0.0, 0.4, -0.7, 1.5])
 def test_positions_differentiated_give_the_velocity_and_acceleration(name, turn):
     """The rack's place followed from the rocker's turn, and the ring's angle from the
@@ -140,14 +157,32 @@ def _ring_tabular(rs, rr, w_arm):
     return w_arm - (rs / rr) * x
 
 
-@pytest.mark.parametrize("rs,rp,th,w,al", [(30, 30, 35, 8.0, -15.0), (60, 20, 170, -3.0, 2.0),
-                                            (20, 45, 290, 11.0, 0.0), (45, 15, 0, 1.5, 7.0)])
+@pytest.mark.parametrize(
+    "rs,rp,th,w,al",
+    [
+        (30, 30, 35, 8.0, -15.0),
+        (60, 20, 170, -3.0, 2.0),
+        (20, 45, 290, 11.0, 0.0),
+        (45, 15, 0, 1.5, 7.0),
+    ],
+)
 def test_ring_driven_by_a_planet_turns_by_the_tabular_method(rs, rp, th, w, al):
     """Arm input, sun fixed, the ring's speed found: omega_ring = (1 + T_s/T_r) omega_arm
     (and the same for alpha); the ring's point at the pitch point moves as the planet's."""
     rr = rs + 2 * rp
-    sol = solve(parse_scene(RING.format(arm=rs + rp, rp=rp, rr=rr, rs=rs, th=th,
-                                        w=_sensed(w, "rad/s"), al=_sensed(al, "rad/s^2"))))
+    sol = solve(
+        parse_scene(
+            RING.format(
+                arm=rs + rp,
+                rp=rp,
+                rr=rr,
+                rs=rs,
+                th=th,
+                w=_sensed(w, "rad/s"),
+                al=_sensed(al, "rad/s^2"),
+            )
+        )
+    )
     assert sol.W["O-Q"] == pytest.approx(_ring_tabular(rs, rr, w), rel=1e-12)
     assert sol.Al["O-Q"] == pytest.approx(_ring_tabular(rs, rr, al), rel=1e-12, abs=1e-12)
     st = next(s for s in sol.plan.steps if s.kind == "rolling" and s.wheel == "O-Q")
@@ -162,8 +197,9 @@ def test_ring_driven_by_a_planet_turns_by_the_tabular_method(rs, rp, th, w, al):
 def test_ring_gear_over_a_sweep_turns_by_the_tabular_method():
     """Over two turns of the arm the ring's angle from the stated instant is (1 + rs/rr)
     times the arm's (its points unwrapped)."""
-    sc = parse_scene(RING.format(arm=60, rp=30, rr=90, rs=30, th=35, w="8 rad/s ccw",
-                                 al="0 rad/s^2"))
+    sc = parse_scene(
+        RING.format(arm=60, rp=30, rr=90, rs=30, th=35, w="8 rad/s ccw", al="0 rad/s^2")
+    )
     plan = compile_plan(sc)
     dth = np.linspace(0.0, 4 * math.pi, 401)
     m = evaluate(plan, theta=sc.input.angle + dth, array=True, upto=0)
@@ -197,12 +233,15 @@ acceleration = "4 rad/s^2 cw"
     assert sol.P["Q"] == pytest.approx((0.0, 0.07), abs=1e-15)
 
 
-@pytest.mark.parametrize("rolling,words", [
-    ('"O-Q" = { on = "AP", ring = true, inside = true }', "says the opposite"),
-    ('"O-Q" = { on = "O", ring = true }', "not with a fixed circle"),
-    ('"O-Q" = { on = "AP", ring = "yes" }', "ring = true or false"),
-    ('"O-Q" = { on = "AP", ring = true, on_radius = 35 }', "r - R"),
-])
+@pytest.mark.parametrize(
+    "rolling,words",
+    [
+        ('"O-Q" = { on = "AP", ring = true, inside = true }', "says the opposite"),
+        ('"O-Q" = { on = "O", ring = true }', "not with a fixed circle"),
+        ('"O-Q" = { on = "AP", ring = "yes" }', "ring = true or false"),
+        ('"O-Q" = { on = "AP", ring = true, on_radius = 35 }', "r - R"),
+    ],
+)
 def test_bad_rings_get_one_clear_line(rolling, words):
     text = f"""
 units = "mm"
@@ -250,6 +289,7 @@ def test_worked_problems_check_against_their_answers(name):
     """The worked problems' answers (computed independently: the 50-digit constraint solve
     and the closed forms) pass ``check`` at their tolerance."""
     from polygon_method.check import check_answers
+
     sc = load_scene(WORKED / f"{name}.toml")
     got = check_answers(solve(sc))
     assert len(got) >= 5 and all(v.ok for v in got), [v for v in got if not v.ok]
@@ -271,20 +311,21 @@ def test_sweep_of_an_epicyclic_train_covers_its_whole_period():
     taken again: the places a turn apart differ)."""
     from polygon_method.linkage.summary import summarize
     from polygon_method.motion.sweeps import sweep
+
     sc = load_scene(TEXTBOOK / "rolling_ring_output.toml")
     res = sweep(sc)
     assert res.domain.turns == 3 and len(res.theta) == 1080
     x = np.asarray(res.P["S"][0], dtype=float)
-    want = _ring_slider_x(np.asarray(res.theta), sc.input.angle, math.radians(120), 4 / 3,
-                          0.09, 0.2, -0.04)
+    want = _ring_slider_x(
+        np.asarray(res.theta), sc.input.angle, math.radians(120), 4 / 3, 0.09, 0.2, -0.04
+    )
     assert np.max(np.abs(x - want)) <= 1e-12
     assert np.max(np.abs(x[:360] - x[360:720])) > 1e-3  # a turn apart: not the same
     summary = summarize(sc)
     assert "the motion repeats every 3 turns" in summary.text()
     assert summary.requested == 1080
     s = summary.extreme("s_S")
-    dense = _ring_slider_x(np.linspace(0, 6 * math.pi, 200001), 0.0, 0.0, 4 / 3, 0.09, 0.2,
-                           -0.04)
+    dense = _ring_slider_x(np.linspace(0, 6 * math.pi, 200001), 0.0, 0.0, 4 / 3, 0.09, 0.2, -0.04)
     assert s.maximum == pytest.approx(dense.max(), rel=1e-9)
     assert s.minimum == pytest.approx(dense.min(), rel=1e-9)
 
@@ -293,6 +334,7 @@ def test_a_stated_range_over_several_turns_is_taken_as_stated():
     """Angles asked over three turns are taken on their own turns (the period is three),
     so the sweep's places are the ones by hand at each angle asked."""
     from polygon_method.motion.sweeps import sweep
+
     sc = load_scene(TEXTBOOK / "rolling_ring_output.toml")
     th = np.radians(np.arange(-400.0, 700.0, 7.0))
     res = sweep(sc, th)
@@ -306,9 +348,11 @@ def test_a_driving_wheel_swept_over_three_turns_of_its_travel():
     the sweep runs over all of it, and the block's place at every place of the centre is
     the one by hand (no slip: phi = phi0 - s / r; B on the ground, the rod's length from A)."""
     from polygon_method.motion.sweeps import sweep
+
     text = (WORKED / "rolling_wheel_driver.toml").read_text(encoding="utf-8")
-    text = text.split("[answers]")[0].replace('alpha_CA = "2 rad/s^2 ccw"',
-                                              'alpha_CA = "2 rad/s^2 ccw"\ntravel = [0, 5655]')
+    text = text.split("[answers]")[0].replace(
+        'alpha_CA = "2 rad/s^2 ccw"', 'alpha_CA = "2 rad/s^2 ccw"\ntravel = [0, 5655]'
+    )
     sc = parse_scene(text)
     res = sweep(sc)
     s = np.asarray(res.theta, dtype=float)
@@ -321,21 +365,38 @@ def test_a_driving_wheel_swept_over_three_turns_of_its_travel():
     assert any("end of its travel" in lp.why for lp in res.domain.limits)
 
 
-VARIED = [("rolling_wheel_rod_slider", WORKED,
-           '\n[variants]\nOA = { from = 50, to = 70, step = 5 }\n'
-           'angle = { from = 30, to = 60, step = 5 }\n'),
-          ("rack_rocker_pinion", WORKED,
-           '\n[variants]\nAB = { from = 35, to = 45, step = 5 }\n'
-           'angle = { from = 30, to = 90, step = 10 }\n'),
-          ("rolling_planet_on_rocker", TEXTBOOK,
-           '\n[variants]\nAB = { from = 45, to = 55, step = 5 }\n'
-           'angle = { from = 40, to = 80, step = 10 }\n'),
-          ("rolling_ring_on_rocker", TEXTBOOK,
-           '\n[variants]\nAB = { from = 45, to = 55, step = 5 }\n'
-           'angle = { from = 40, to = 80, step = 10 }\n'),
-          ("ring_gear_output", WORKED,
-           '\n[variants]\nangle = { from = 0, to = 350, step = 10 }\n'
-           'speed = ["60 rpm ccw", "90 rpm ccw", "120 rpm ccw"]\n')]
+VARIED = [
+    (
+        "rolling_wheel_rod_slider",
+        WORKED,
+        "\n[variants]\nOA = { from = 50, to = 70, step = 5 }\n"
+        "angle = { from = 30, to = 60, step = 5 }\n",
+    ),
+    (
+        "rack_rocker_pinion",
+        WORKED,
+        "\n[variants]\nAB = { from = 35, to = 45, step = 5 }\n"
+        "angle = { from = 30, to = 90, step = 10 }\n",
+    ),
+    (
+        "rolling_planet_on_rocker",
+        TEXTBOOK,
+        "\n[variants]\nAB = { from = 45, to = 55, step = 5 }\n"
+        "angle = { from = 40, to = 80, step = 10 }\n",
+    ),
+    (
+        "rolling_ring_on_rocker",
+        TEXTBOOK,
+        "\n[variants]\nAB = { from = 45, to = 55, step = 5 }\n"
+        "angle = { from = 40, to = 80, step = 10 }\n",
+    ),
+    (
+        "ring_gear_output",
+        WORKED,
+        "\n[variants]\nangle = { from = 0, to = 350, step = 10 }\n"
+        'speed = ["60 rpm ccw", "90 rpm ccw", "120 rpm ccw"]\n',
+    ),
+]
 
 
 @pytest.mark.parametrize("name,folder,table", VARIED, ids=[v[0] for v in VARIED])
@@ -349,6 +410,7 @@ def test_variants_of_rolling_scenes_each_match_the_reference(name, folder, table
     from polygon_method.variants import generate, screen
     from reference import reference_solution
     from textbook_corpus import REL, worst_error
+
     text = (folder / f"{name}.toml").read_text(encoding="utf-8").split("[answers]")[0] + table
     sc = parse_scene(text, file=f"{name}.toml")
     made = generate(sc, 4, seed=2)
@@ -359,6 +421,7 @@ def test_variants_of_rolling_scenes_each_match_the_reference(name, folder, table
     assert ok.all()
     from polygon_method.solver.kinematics import evaluate as ev
     from polygon_method.variants import _stack_dims
+
     m = ev(plan, dims=_stack_dims([plan.dimensions(s) for s in scenes]), array=True)
     for k, v in enumerate(made.variants):
         sol = solve(v.scene)
@@ -376,6 +439,7 @@ def test_a_ring_whose_contact_acceleration_is_taken_as_zero_is_diagnosed():
     steady); a student's 0 is named: the two gears' velocities are equal there, not their
     accelerations."""
     from polygon_method.check import check_answers
+
     text = (WORKED / "ring_gear_output.toml").read_text(encoding="utf-8").split("[answers]")[0]
     sc = parse_scene(text + '[answers]\n"aI_O-Q" = "0 m/s^2"\n')
     (v,) = check_answers(solve(sc))
@@ -392,6 +456,7 @@ def test_a_ring_on_a_rockers_planet_is_followed_over_the_whole_turn():
     angle the ring turns (1 + R_s/r_ring) times the rocker (Willis, the sun fixed), from
     the stated instant."""
     from polygon_method.motion.sweeps import sweep
+
     sc = load_scene(TEXTBOOK / "rolling_ring_on_rocker.toml")
     res = sweep(sc)
     assert len(res.theta) == 360 and res.domain.full_turn

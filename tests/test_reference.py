@@ -14,16 +14,24 @@ from mpmath import mpf
 from polygon_method.solver.compiler import compile_plan
 from polygon_method.solver.plan import Context
 from polygon_method.scene import parse_scene
-from reference import (constraint_jacobian, constraint_residuals, reference_fourbar_algebraic,
-                       reference_positions, reference_slider_crank, reference_solution,
-                       theta_at)
+from reference import (
+    constraint_jacobian,
+    constraint_residuals,
+    reference_fourbar_algebraic,
+    reference_positions,
+    reference_slider_crank,
+    reference_solution,
+    theta_at,
+)
 from scenes import seed
 
 REL = 1e-9  # solver (floats) against the reference
 
-FOURBAR = seed(middle='[points]\nE = {{ on = "BC", along = 40 }}\n'
-                      'F = {{ on = "BC", distances = {{ B = 45, C = 30 }}, turn = "cw" }}\n',
-               drive='angle = {angle}\nspeed = "10.5 rad/s cw"\n{acc}')
+FOURBAR = seed(
+    middle='[points]\nE = {{ on = "BC", along = 40 }}\n'
+    'F = {{ on = "BC", distances = {{ B = 45, C = 30 }}, turn = "cw" }}\n',
+    drive='angle = {angle}\nspeed = "10.5 rad/s cw"\n{acc}',
+)
 
 SLIDER_CRANK = """
 [ground]
@@ -79,18 +87,22 @@ speed = "20 rad/s ccw"
 """
 
 # four-bar plus a slider G driven from the coupler point F (on a 30 deg path)
-SIX_LINK = seed(ground='T = [150, 0]\n',
-                links='FG = 100\n',
-                middle='[points]\n'
-                       'F = {{ on = "BC", distances = {{ B = 45, C = 30 }}, turn = "cw" }}\n'
-                       '[sliders]\nG = {{ path = "30 deg", through = "T" }}\n',
-                drive='angle = {angle}\nspeed = "10.5 rad/s cw"\n{acc}')
+SIX_LINK = seed(
+    ground="T = [150, 0]\n",
+    links="FG = 100\n",
+    middle="[points]\n"
+    'F = {{ on = "BC", distances = {{ B = 45, C = 30 }}, turn = "cw" }}\n'
+    '[sliders]\nG = {{ path = "30 deg", through = "T" }}\n',
+    drive='angle = {angle}\nspeed = "10.5 rad/s cw"\n{acc}',
+)
 
 # four-bar plus a block G, pinned to the rocker HG, sliding along the moving rocker CD
-GUIDE_DYAD = seed(ground='H = [60, -40]\n',
-                  links='HG = 60\n',
-                  middle='[sliders]\nG = {{ along = "{guide}" }}\n',
-                  drive='angle = {angle}\nspeed = "10.5 rad/s cw"\n{acc}')
+GUIDE_DYAD = seed(
+    ground="H = [60, -40]\n",
+    links="HG = 60\n",
+    middle='[sliders]\nG = {{ along = "{guide}" }}\n',
+    drive='angle = {angle}\nspeed = "10.5 rad/s cw"\n{acc}',
+)
 
 ACC = 'acceleration = "80 rad/s^2 ccw"'
 SWIVEL_GROUND_LINK = '"A-O" = 123.69316876852982'  # = |AO|: only to get O past the loader
@@ -103,18 +115,25 @@ CASES = {
     "slider_crank_alpha": [SLIDER_CRANK.format(e=20, angle=a, acc=ACC) for a in (45, 250)],
     "slotted_lever": [SLOTTED_LEVER.format(angle=a, acc="") for a in (30, 120, 250)],
     "slotted_lever_alpha": [SLOTTED_LEVER.format(angle=a, acc=ACC) for a in (30,)],
-    "slotted_lever_reversed": [SLOTTED_LEVER.replace('"O4-P" }}', '"P-O4" }}').format(
-        angle=a, acc=ACC) for a in (30, 250)],
-    "guide_dyad": [GUIDE_DYAD.format(guide=g, angle=a, acc=acc)
-                   for g, a, acc in (("CD", 60, ""), ("DC", 60, ACC), ("CD", 290, ACC))],
+    "slotted_lever_reversed": [
+        SLOTTED_LEVER.replace('"O4-P" }}', '"P-O4" }}').format(angle=a, acc=ACC) for a in (30, 250)
+    ],
+    "guide_dyad": [
+        GUIDE_DYAD.format(guide=g, angle=a, acc=acc)
+        for g, a, acc in (("CD", 60, ""), ("DC", 60, ACC), ("CD", 290, ACC))
+    ],
     "swivel": [SWIVEL.format(extra="", angle=a, acc="") for a in (50, 200)],
-    "swivel_ground_link": [SWIVEL.format(extra=SWIVEL_GROUND_LINK, angle=a, acc=ACC)
-                           for a in (50, 200)],
+    "swivel_ground_link": [
+        SWIVEL.format(extra=SWIVEL_GROUND_LINK, angle=a, acc=ACC) for a in (50, 200)
+    ],
     "six_link": [SIX_LINK.format(angle=a, acc="") for a in (60, 280)],
     "six_link_alpha": [SIX_LINK.format(angle=a, acc=ACC) for a in (60,)],
 }
-PARAMS = [pytest.param(text, id=f"{name}-{i}") for name, texts in CASES.items()
-          for i, text in enumerate(texts)]
+PARAMS = [
+    pytest.param(text, id=f"{name}-{i}")
+    for name, texts in CASES.items()
+    for i, text in enumerate(texts)
+]
 # scenes the loader accepts, for the tests of the reference itself
 REF_PARAMS = [p for p in PARAMS if not p.id.startswith("swivel-")]
 
@@ -150,9 +169,14 @@ def _diff(got, want):
 def _check(errors, what, got, want, scale, rel):
     err = _diff(got, want) / max(_norm(want), scale)
     if not err < rel:
+
         def fmt(v):
-            return (f"({float(v[0]):.12g}, {float(v[1]):.12g})" if isinstance(v, tuple)
-                    else f"{float(v):.12g}")
+            return (
+                f"({float(v[0]):.12g}, {float(v[1]):.12g})"
+                if isinstance(v, tuple)
+                else f"{float(v):.12g}"
+            )
+
         errors.append(f"{what}: expected {fmt(want)}, got {fmt(got)} (rel. error {err:.2e})")
 
 
@@ -167,8 +191,11 @@ def _scale(values, floor=1e-300):
 def test_solver_matches_reference(text):
     scene, (P, V, A, W, Al, S), ref = reference(text)
     errors = []
-    for key, got, table in (("position", P, "positions"), ("velocity", V, "velocities"),
-                            ("acceleration", A, "accelerations")):
+    for key, got, table in (
+        ("position", P, "positions"),
+        ("velocity", V, "velocities"),
+        ("acceleration", A, "accelerations"),
+    ):
         want = ref[table]
         scale = _scale(want.values())
         for name in scene.point_names:
@@ -219,18 +246,21 @@ def test_reference_closes_loops(text):
 def test_reference_jacobian_is_the_derivative(text):
     """The hand-written Jacobian against mpmath.diff of the residuals, entry by entry."""
     from reference import _system  # noqa: PLC0415 -- a private helper, for this check only
+
     scene, _, ref = reference(text)
     P = dict(ref["positions"])
     th = mpf(scene.input.angle)
     J, names = constraint_jacobian(scene, P, th)
     for j, name in enumerate(names):
         for c in (0, 1):
+
             def f(h, i=None):
                 Q = dict(P)
                 xy = list(Q[name])
                 xy[c] += h
                 Q[name] = tuple(xy)
                 return _system(scene, Q, th)[0]
+
             h = mpf("1e-20")
             Fp, Fm = f(h), f(-h)
             for i in range(J.rows):
@@ -251,7 +281,7 @@ def test_reference_velocity_is_time_derivative(text):
     errors = []
     for n in scene.point_names:
         v = tuple((p1[1][n][k] - p1[-1][n][k]) / (2 * h1) for k in (0, 1))
-        a = tuple((p2[1][n][k] - 2 * P[n][k] + p2[-1][n][k]) / h2 ** 2 for k in (0, 1))
+        a = tuple((p2[1][n][k] - 2 * P[n][k] + p2[-1][n][k]) / h2**2 for k in (0, 1))
         _check(errors, f"d/dt position of {n}", v, ref["velocities"][n], vscale, 1e-20)
         _check(errors, f"d2/dt2 position of {n}", a, ref["accelerations"][n], ascale, 1e-15)
     assert not errors, "\n".join(errors)
@@ -287,8 +317,15 @@ def test_reference_fourbar_algebraic(text):
     scene, _, ref = reference(text)
     inp = scene.input
     assert scene.ground["A"] == (0.0, 0.0) and scene.ground["D"][1] == 0.0
-    args = (scene.link("AB").length, scene.link("BC").length, scene.link("CD").length,
-            scene.ground["D"][0], inp.angle, inp.omega, inp.alpha)
+    args = (
+        scene.link("AB").length,
+        scene.link("BC").length,
+        scene.link("CD").length,
+        scene.ground["D"][0],
+        inp.angle,
+        inp.omega,
+        inp.alpha,
+    )
     P = ref["positions"]
     sols = [reference_fourbar_algebraic(*args, branch=b) for b in (1, -1)]
     alg = min(sols, key=lambda s: abs(s["B"][1] - P["C"][1]) + abs(s["B"][0] - P["C"][0]))

@@ -19,8 +19,10 @@ from polygon_method.cli import main
 
 def _strict(text):
     """JSON as the standard reads it: NaN and Infinity refused."""
+
     def refuse(name):
         raise ValueError(f"{name} in the JSON")
+
     return json.loads(text, parse_constant=refuse)
 
 
@@ -30,12 +32,17 @@ def _chain(n, angle=45.0):
     L = 100 / math.tan(math.radians(angle))
     rod = math.hypot(100, L)
     links = ['"O-X0" = 50'] + [f'"X{k - 1}-X{k}" = {rod!r}' for k in range(1, n + 1)]
-    sl = [f'X{k} = {{ path = "horizontal", through = [0, {100 * k}] }}'
-          for k in range(1, n + 1)]
+    sl = [f'X{k} = {{ path = "horizontal", through = [0, {100 * k}] }}' for k in range(1, n + 1)]
     asm = [f"X{k} = [{50 + L * k!r}, {100 * k}]" for k in range(1, n + 1)]
-    return ('title = "long chain"\nunits = "mm"\n[ground]\nO = [0, 0]\n[links]\n'
-            + "\n".join(links) + "\n[sliders]\n" + "\n".join(sl) + "\n[assembly]\n"
-            + "\n".join(asm) + '\n[input]\ncrank = "O-X0"\nangle = 0\nspeed = "10 rad/s ccw"\n'), L
+    return (
+        'title = "long chain"\nunits = "mm"\n[ground]\nO = [0, 0]\n[links]\n'
+        + "\n".join(links)
+        + "\n[sliders]\n"
+        + "\n".join(sl)
+        + "\n[assembly]\n"
+        + "\n".join(asm)
+        + '\n[input]\ncrank = "O-X0"\nangle = 0\nspeed = "10 rad/s ccw"\n'
+    ), L
 
 
 @pytest.mark.parametrize("n, angle", [(2300, 45.0), (1200, 30.0)])
@@ -100,8 +107,7 @@ def test_deeply_nested_answer_file_is_one_row(tmp_path, capsys, depth):
     assert main(["check", str(scene), str(deep.parent)]) == 0
     out = capsys.readouterr().out
     assert "nested too deeply" in out and "1 of 1 answers right" in out
-    assert main(["page", str(scene), "--answers", str(deep), "-o",
-                 str(tmp_path / "p.html")]) == 2
+    assert main(["page", str(scene), "--answers", str(deep), "-o", str(tmp_path / "p.html")]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "nested too deeply" in err[0]
     assert not (tmp_path / "p.html").exists()
@@ -118,8 +124,10 @@ def test_huge_correct_answer_is_checked_and_warned_of(tmp_path, capsys, d, w):
     f = tmp_path / "s.toml"
     f.write_text(SCENE.format(angle=angle, w=w))
     ans = tmp_path / "a.toml"
-    ans.write_text(f'[answers]\ntolerance = "0.1%"\nalpha_B-O4 = "{abs(al):.6e} rad/s^2 '
-                   f'{"ccw" if al > 0 else "cw"}"\n')
+    ans.write_text(
+        f'[answers]\ntolerance = "0.1%"\nalpha_B-O4 = "{abs(al):.6e} rad/s^2 '
+        f'{"ccw" if al > 0 else "cw"}"\n'
+    )
     assert main(["check", "--json", str(f), str(ans)]) == 0
     got = _strict(capsys.readouterr().out)
     (v,) = got["answers"]
@@ -160,9 +168,21 @@ def test_variants_do_not_depend_on_the_unit(tmp_path, capsys, size):
     counts = []
     for u, k in (("mm", 1.0), ("m", 1e-3), ("cm", 0.1)):
         f = tmp_path / f"s-{u}.toml"
-        f.write_text(VARIED.format(u=u, d=d * k, ab=ab * k, bc=bc * k, cd=cd * k, cx=cx * k,
-                                   cy=cy * k, bc1=(bc - 1) * k, bc2=(bc + 1) * k,
-                                   cd1=(cd - 1) * k, cd2=(cd + 1) * k))
+        f.write_text(
+            VARIED.format(
+                u=u,
+                d=d * k,
+                ab=ab * k,
+                bc=bc * k,
+                cd=cd * k,
+                cx=cx * k,
+                cy=cy * k,
+                bc1=(bc - 1) * k,
+                bc2=(bc + 1) * k,
+                cd1=(cd - 1) * k,
+                cd2=(cd + 1) * k,
+            )
+        )
         # 27 combinations, less the base problem's own (a variant is never the base)
         code = main(["variants", str(f), "--count", "26", "-o", str(tmp_path / u)])
         out = capsys.readouterr()
@@ -182,25 +202,29 @@ def test_title_the_font_lacks_is_said_once(tmp_path, capsys, recwarn, title):
     assert main(["sweep", str(f), "--steps", "36", "--plot", str(tmp_path / "p.png")]) == 0
     err = capsys.readouterr().err
     assert err.count("no glyph") == 1 and "Glyph" not in err
-    assert main(["draw", str(f), "--animate", "--frames", "4", "-o",
-                 str(tmp_path / "a.gif")]) == 0
+    assert main(["draw", str(f), "--animate", "--frames", "4", "-o", str(tmp_path / "a.gif")]) == 0
     err = capsys.readouterr().err
     assert err.count("no glyph") == 1
     v = tmp_path / "v.toml"
-    v.write_text(VARIED.format(u="mm", d=40, ab=20, bc=30, cd=25, cx=30, cy=20, bc1=29,
-                               bc2=31, cd1=24, cd2=26).replace("small four-bar", title))
-    assert main(["variants", str(v), "--count", "2", "--pdf", "-o",
-                 str(tmp_path / "class")]) == 0
+    v.write_text(
+        VARIED.format(
+            u="mm", d=40, ab=20, bc=30, cd=25, cx=30, cy=20, bc1=29, bc2=31, cd1=24, cd2=26
+        ).replace("small four-bar", title)
+    )
+    assert main(["variants", str(v), "--count", "2", "--pdf", "-o", str(tmp_path / "class")]) == 0
     err = capsys.readouterr().err
     assert err.count("no glyph") == 1 and "Glyph" not in err
     assert not [w for w in recwarn if "Glyph" in str(w.message)]
 
 
-@pytest.mark.parametrize("text", [
-    _chain(2200)[0],
-    SCENE.format(angle=math.degrees(math.acos(2 / 3)) + 2.2e-4, w=1e5),
-    SCENE.format(angle=150.0, w=1e-6),
-])
+@pytest.mark.parametrize(
+    "text",
+    [
+        _chain(2200)[0],
+        SCENE.format(angle=math.degrees(math.acos(2 / 3)) + 2.2e-4, w=1e5),
+        SCENE.format(angle=150.0, w=1e-6),
+    ],
+)
 def test_json_never_holds_nan_or_inf(tmp_path, capsys, text):
     f = tmp_path / "s.toml"
     f.write_text(text)

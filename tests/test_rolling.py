@@ -20,7 +20,8 @@ from polygon_method.steps import Context
 
 HERE = Path(__file__).resolve().parent
 ROLLING = sorted((HERE / "textbook").glob("rolling_*.toml")) + sorted(
-    (HERE.parent / "worked_problems").glob("*rolling*.toml"))
+    (HERE.parent / "worked_problems").glob("*rolling*.toml")
+)
 
 PLANET = """
 [ground]
@@ -38,14 +39,18 @@ acceleration = "{al} rad/s^2 ccw"
 """
 
 
-@pytest.mark.parametrize("arm,rp,inside", [(100, 40, False), (80, 40, True), (70, 20, False),
-                                           (50, 75, True)])
+@pytest.mark.parametrize(
+    "arm,rp,inside", [(100, 40, False), (80, 40, True), (70, 20, False), (50, 75, True)]
+)
 def test_planet_on_a_fixed_sun_or_ring_turns_at_the_gear_ratio(arm, rp, inside):
     """Outside a fixed sun of radius rs = arm - rp: omega_p = (1 + rs / rp) omega_arm; inside a
     fixed ring of radius R = arm + rp: omega_p = (1 - R / rp) omega_arm (the other way)."""
     w, al = 7.5, 3.0
-    sol = solve(parse_scene(PLANET.format(arm=arm, rp=rp, w=w, al=al,
-                                          inside=", inside = true" if inside else "")))
+    sol = solve(
+        parse_scene(
+            PLANET.format(arm=arm, rp=rp, w=w, al=al, inside=", inside = true" if inside else "")
+        )
+    )
     ratio = 1 - (arm + rp) / rp if inside else 1 + (arm - rp) / rp
     assert sol.W["AP"] == pytest.approx(ratio * w, rel=1e-12)
     assert sol.Al["AP"] == pytest.approx(ratio * al, rel=1e-12)
@@ -82,8 +87,11 @@ def test_wheel_on_the_ground_top_point_and_contact():
     """A wheel rolling on level ground: omega = -v_C / r, the top point moves at 2 v_C, and
     the contact point's acceleration is omega^2 r straight up (not zero)."""
     sc = load_scene(HERE / "textbook" / "rolling_wheel_on_ground.toml")
-    sc2 = parse_scene((HERE / "textbook" / "rolling_wheel_on_ground.toml").read_text()
-                      .replace("angle = 60 }", "angle = 90 }"))
+    sc2 = parse_scene(
+        (HERE / "textbook" / "rolling_wheel_on_ground.toml")
+        .read_text()
+        .replace("angle = 60 }", "angle = 90 }")
+    )
     for s in (sc, sc2):
         sol = solve(s)
         r = 0.05
@@ -143,8 +151,9 @@ def test_array_road_is_the_one_instant_road(path):
                 got = np.broadcast_to(np.asarray(Dm[X][0], dtype=float), th.shape)[j]
                 assert got == pytest.approx(D[X][0], rel=1e-12, abs=1e-12)
         for lk in one.W:
-            assert np.broadcast_to(m.W[lk], th.shape)[j] == pytest.approx(one.W[lk], rel=1e-12,
-                                                                          abs=1e-12)
+            assert np.broadcast_to(m.W[lk], th.shape)[j] == pytest.approx(
+                one.W[lk], rel=1e-12, abs=1e-12
+            )
 
 
 def test_gear_train_turns_through_the_ratio_over_a_turn():
@@ -162,9 +171,12 @@ def test_gear_train_turns_through_the_ratio_over_a_turn():
 def _run(text, tmp_path):
     f = tmp_path / "s.toml"
     f.write_text(text)
-    return subprocess.run([sys.executable, "-m", "polygon_method", "solve", str(f)],
-                          capture_output=True, text=True,
-                          env={"PYTHONPATH": str(HERE.parent), "PATH": ""})
+    return subprocess.run(
+        [sys.executable, "-m", "polygon_method", "solve", str(f)],
+        capture_output=True,
+        text=True,
+        env={"PYTHONPATH": str(HERE.parent), "PATH": ""},
+    )
 
 
 BASE = """[ground]
@@ -183,15 +195,18 @@ speed = "20 rad/s cw"
 """
 
 
-@pytest.mark.parametrize("spec,words", [
-    ('{ through = "G" }', "no ground line or circle"),
-    ('{ on = "horizontal" }', "needs a point: through"),
-    ('{ on = "horizontal", through = "X" }', "not a ground point"),
-    ('{ on = "horizontal", through = "G", radus = 5 }', "unknown key 'radus'"),
-    ('{ on = "horizontal", through = "G", side = "left" }', "horizontal line has an above"),
-    ('{ on = "CA" }', "have one centre"),  # a gear on a moving link: centred at C
-    ('"horizontal"', "a rolling wheel is a table"),
-])
+@pytest.mark.parametrize(
+    "spec,words",
+    [
+        ('{ through = "G" }', "no ground line or circle"),
+        ('{ on = "horizontal" }', "needs a point: through"),
+        ('{ on = "horizontal", through = "X" }', "not a ground point"),
+        ('{ on = "horizontal", through = "G", radus = 5 }', "unknown key 'radus'"),
+        ('{ on = "horizontal", through = "G", side = "left" }', "horizontal line has an above"),
+        ('{ on = "CA" }', "have one centre"),  # a gear on a moving link: centred at C
+        ('"horizontal"', "a rolling wheel is a table"),
+    ],
+)
 def test_bad_rolling_input_gets_one_clear_line(spec, words, tmp_path):
     out = _run(BASE.format(spec=spec), tmp_path)
     assert out.returncode == 2, out.stderr
@@ -201,8 +216,9 @@ def test_bad_rolling_input_gets_one_clear_line(spec, words, tmp_path):
 
 
 def test_gears_whose_centre_distance_is_not_the_sum_of_the_radii_are_refused(tmp_path):
-    text = (PLANET.format(arm=100, rp=40, w=1, al=0, inside="")
-            .replace('on = "O"', 'on = "O", on_radius = 55'))
+    text = PLANET.format(arm=100, rp=40, w=1, al=0, inside="").replace(
+        'on = "O"', 'on = "O", on_radius = 55'
+    )
     out = _run(text, tmp_path)
     assert out.returncode == 2
     assert "contact leaves the pitch point" in out.stderr and "R + r = 95 mm" in out.stderr
@@ -242,14 +258,19 @@ def test_check_keys_and_the_contact_at_rest_slip():
     found as if the contact point were at rest (|a_P - a_I|), are diagnosed as that slip."""
     from polygon_method.check import check_answers
     from polygon_method.scene import parse_answers
+
     path = HERE.parent / "worked_problems" / "rolling_wheel_rod_slider.toml"
     sc = load_scene(path)
     sol = solve(sc)
-    I, vI, aI = next(st.contact_motion(sol) for st in sol.plan.steps
-                     if st.contact_motion(sol) is not None)
+    I, vI, aI = next(
+        st.contact_motion(sol) for st in sol.plan.steps if st.contact_motion(sol) is not None
+    )
     at_rest = math.hypot(sol.A["P"][0] - aI[0], sol.A["P"][1] - aI[1])
-    _, answers = parse_answers(f'[answers]\naI_CP = 0\nvI_CP = 0\na_P = "{at_rest:.4f} m/s^2"\n'
-                               f'omega_CP = "{abs(sol.W["CP"]):.4f} rad/s cw"\n', sc)
+    _, answers = parse_answers(
+        f'[answers]\naI_CP = 0\nvI_CP = 0\na_P = "{at_rest:.4f} m/s^2"\n'
+        f'omega_CP = "{abs(sol.W["CP"]):.4f} rad/s cw"\n',
+        sc,
+    )
     v = {x.key: x for x in check_answers(sol, answers)}
     assert v["aI_CP"].correct == pytest.approx(sol.W["CP"] ** 2 * 0.05, rel=1e-12)
     assert not v["aI_CP"].ok and v["aI_CP"].mistake == "contact_acceleration_zero"
@@ -257,7 +278,7 @@ def test_check_keys_and_the_contact_at_rest_slip():
     assert not v["a_P"].ok and v["a_P"].mistake == "contact_acceleration_zero"
     assert v["omega_CP"].ok
     with pytest.raises(PolygonMethodError, match="no wheel of \\[rolling\\]"):
-        parse_answers('[answers]\naI_AC = 1\n', sc)
+        parse_answers("[answers]\naI_AC = 1\n", sc)
 
 
 def test_random_planets_and_gear_pairs_against_the_gear_ratio_and_time_derivatives():
@@ -281,7 +302,7 @@ AP = {{ on = "O", radius = {rp}{", inside = true" if inside else ""}, angle = {f
 [input]
 crank = "OA"
 angle = {float(rng.uniform(0, 360))}
-speed = "{abs(w)} rad/s {'ccw' if w > 0 else 'cw'}"
+speed = "{abs(w)} rad/s {"ccw" if w > 0 else "cw"}"
 acceleration = "{al} rad/s^2 ccw"
 """)
         sol = solve(sc)
@@ -302,7 +323,8 @@ acceleration = "{al} rad/s^2 ccw"
 
 
 def test_a_centre_off_its_line_at_the_stated_angle_is_the_scenes_error(tmp_path):
-    out = _run("""[ground]
+    out = _run(
+        """[ground]
 O = [0, 0]
 [links]
 OC = 50
@@ -313,7 +335,9 @@ CP = { on = "horizontal", through = "O" }
 crank = "OC"
 angle = 90
 speed = "10 rad/s ccw"
-""", tmp_path)
+""",
+        tmp_path,
+    )
     assert out.returncode == 2
     line = out.stderr.strip()
     assert "\n" not in line and "[rolling] CP (line 7)" in line
@@ -332,16 +356,26 @@ def test_a_pinion_between_two_racks_drives_them_opposite_ways():
     assert sol.V["R1"][1] == 0.0 and sol.A["R2"][1] == 0.0
 
 
-@pytest.mark.parametrize("sliders,rolling,words", [
-    ('R = { path = "horizontal" }', 'R = { on = "OA" }', "needs its place: through"),
-    ('', 'R = { on = "OA" }', "a rack is a block on a fixed path"),
-    ('R = { path = "horizontal", through = [0, -40] }', 'R = { on = "OA", radius = 4 }',
-     "unknown key 'radius' for a rack"),
-    ('R = { path = "horizontal", through = [0, -40] }', 'R = { on = "OA", on_radius = 30 }',
-     "the contact leaves the pitch point"),
-])
+@pytest.mark.parametrize(
+    "sliders,rolling,words",
+    [
+        ('R = { path = "horizontal" }', 'R = { on = "OA" }', "needs its place: through"),
+        ("", 'R = { on = "OA" }', "a rack is a block on a fixed path"),
+        (
+            'R = { path = "horizontal", through = [0, -40] }',
+            'R = { on = "OA", radius = 4 }',
+            "unknown key 'radius' for a rack",
+        ),
+        (
+            'R = { path = "horizontal", through = [0, -40] }',
+            'R = { on = "OA", on_radius = 30 }',
+            "the contact leaves the pitch point",
+        ),
+    ],
+)
 def test_bad_racks_get_one_clear_line(sliders, rolling, words, tmp_path):
-    out = _run(f"""[ground]
+    out = _run(
+        f"""[ground]
 O = [0, 0]
 [links]
 OA = 40
@@ -355,7 +389,9 @@ S = {{ path = "vertical", through = [90, 0] }}
 crank = "OA"
 angle = 30
 speed = "10 rad/s ccw"
-""", tmp_path)
+""",
+        tmp_path,
+    )
     assert out.returncode == 2, out.stderr
     assert len(out.stderr.strip().splitlines()) == 1 and words in out.stderr, out.stderr
     assert "[rolling] R" in out.stderr
@@ -379,7 +415,8 @@ def _planet_range_at_working_precision():
         ax, ay = 100 * mpmath.cos(t), 100 * mpmath.sin(t)
         phi = mpmath.pi / 2 + mpmath.mpf(5) / 2 * (t - t0)
         px, py = ax + 30 * mpmath.cos(phi), ay + 30 * mpmath.sin(phi)
-        return (px + mpmath.sqrt(150 ** 2 - py ** 2)) / 1000
+        return (px + mpmath.sqrt(150**2 - py**2)) / 1000
+
     lo, hi = t0 - 2 * mpmath.pi, t0 + 2 * mpmath.pi
     vals = [q(lo), q(hi)]  # the period's two ends (the same place)
     n = 1440
@@ -401,6 +438,7 @@ def test_sweep_and_linkage_agree_on_a_planets_slider_range():
     it."""
     from polygon_method.linkage import analyse
     from polygon_method.linkage.summary import summarize
+
     scene = load_scene(HERE / "textbook" / "rolling_planet_fixed_sun.toml")
     lo, hi = _planet_slider_range()
     lk = analyse(scene)
@@ -420,8 +458,12 @@ def test_default_space_scale_fits_the_pitch_circles():
     drawing fits A4 without --scale (it was chosen for the joints alone: 1 cm = 10 mm,
     30 cm of sun)."""
     from polygon_method.polygons.scales import SPACE_FIT_CM, diagram_scales
-    sol = solve(parse_scene(PLANET.format(arm=150, rp=50, inside="", w=10, al=0)
-                            .replace("angle = 35", "angle = 0")))
+
+    sol = solve(
+        parse_scene(
+            PLANET.format(arm=150, rp=50, inside="", w=10, al=0).replace("angle = 35", "angle = 0")
+        )
+    )
     space = diagram_scales(sol)[0]
     span_mm = 300.0  # by hand: the sun's left edge (-100) to the planet's right (150 + 50)
     assert span_mm / (space.per_cm * 1000.0) <= SPACE_FIT_CM

@@ -45,8 +45,14 @@ LIMIT = math.degrees(math.acos(2 / 3))
 
 #: (degrees past the limit, the carried point's radius in mm, crank speed, the lever's
 #: pivot): each with the carried point's acceleration below 1e-10 of the largest
-CASES = [(2.2e-4, 1.0, 200.0, -5.0), (2.2e-4, 0.3, 50.0, 4.0), (2.2e-4, 0.05, 1000.0, -12.0),
-         (4e-4, 0.3, 3.0, -5.0), (4e-4, 0.05, 200.0, 7.0), (1e-3, 0.05, 20.0, -3.0)]
+CASES = [
+    (2.2e-4, 1.0, 200.0, -5.0),
+    (2.2e-4, 0.3, 50.0, 4.0),
+    (2.2e-4, 0.05, 1000.0, -12.0),
+    (4e-4, 0.3, 3.0, -5.0),
+    (4e-4, 0.05, 200.0, 7.0),
+    (1e-3, 0.05, 20.0, -3.0),
+]
 
 
 def _case(d, r, w, pivot):
@@ -64,8 +70,10 @@ def test_nothing_above_its_bound_is_zeroed(d, r, w, pivot):
     clean = tidied(sol)
     checked = 0
     for p in sc.point_names:
-        for mine, table, kind in ((clean.V[p], ref["velocities"], "v"),
-                                  (clean.A[p], ref["accelerations"], "a")):
+        for mine, table, kind in (
+            (clean.V[p], ref["velocities"], "v"),
+            (clean.A[p], ref["accelerations"], "a"),
+        ):
             true = float(math.hypot(*table[p]))
             if mine == (0.0, 0.0):
                 assert true <= sol.noise(kind, p) * (1 + 1e-9) or true == 0
@@ -74,8 +82,10 @@ def test_nothing_above_its_bound_is_zeroed(d, r, w, pivot):
                 assert abs(math.hypot(*mine) - true) <= sol.noise(kind, p) + 1e-9 * true
                 checked += 1
     for lk in sc.links:
-        for mine, table, kind in ((clean.W[lk.key], ref["omega"], "omega"),
-                                  (clean.Al[lk.key], ref["alpha"], "alpha")):
+        for mine, table, kind in (
+            (clean.W[lk.key], ref["omega"], "omega"),
+            (clean.Al[lk.key], ref["alpha"], "alpha"),
+        ):
             true = float(table[lk.key])
             if mine == 0.0:
                 assert abs(true) <= sol.noise(kind, lk.key) * (1 + 1e-9)
@@ -99,22 +109,25 @@ def test_reports_show_the_small_values(d, r, w, pivot):
     text = solution_text(sol)
     row = next(line for line in text.splitlines() if line.startswith("C "))
     assert shown in row
-    slider = next(line for line in text.splitlines() if line.startswith("C ") and
-                  "O5-Q" in line)
+    slider = next(line for line in text.splitlines() if line.startswith("C ") and "O5-Q" in line)
     a_s = float(ref["sliders"]["C"]["as"])
     assert f"{a_s:<20.5g}".strip() in slider.split()
     steps = steps_text(sol)
-    assert any(line.strip().startswith("a_C ") and line.rstrip().endswith(
-        f"{small:.4g} m/s^2") for line in steps.splitlines())
+    assert any(
+        line.strip().startswith("a_C ") and line.rstrip().endswith(f"{small:.4g} m/s^2")
+        for line in steps.splitlines()
+    )
 
 
 @pytest.mark.parametrize("d, r, w, pivot", CASES[1::3])
 def test_check_does_not_pass_a_wrong_answer_for_a_small_value(d, r, w, pivot):
     sc, sol, _ = _case(d, r, w, pivot)
     small = w * w * r / 1000
-    ans = parse_scene(SCENE.format(angle=LIMIT + d, r=r, w=w, pivot=pivot)
-                      + f'[answers]\ntolerance = "1%"\na_C = "{12345 + small} m/s^2"\n'
-                      f'as_C = "{12345} m/s^2"\n')
+    ans = parse_scene(
+        SCENE.format(angle=LIMIT + d, r=r, w=w, pivot=pivot)
+        + f'[answers]\ntolerance = "1%"\na_C = "{12345 + small} m/s^2"\n'
+        f'as_C = "{12345} m/s^2"\n'
+    )
     got = check_answers(solve(ans))
     assert [v.ok for v in got] == [False, False]
     assert got[0].correct == pytest.approx(small, rel=1e-9)
@@ -147,6 +160,7 @@ def test_a_summary_shows_what_is_small_beside_the_input_sizes(r):
     crank pin's speed and acceleration are omega r and omega^2 r (closed form), and the
     rocker's largest omega is the 50-digit reference's at the angle the summary gives."""
     from polygon_method.linkage.summary import summarize
+
     s = summarize(parse_scene(TINY_CRANK.format(r=r, angle=30.0)))
     vb, ab = s.extreme("v_B"), s.extreme("a_B")
     assert vb.constant and math.isclose(vb.maximum, 10 * r, rel_tol=1e-9), vb

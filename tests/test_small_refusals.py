@@ -17,8 +17,9 @@ from scenes import FOURBAR
 
 def test_a_link_with_a_torque_and_a_force_is_refused():
     with pytest.raises(SceneError, match="force under the name of the point"):
-        parse_scene(FOURBAR + '[loads]\nCD = { torque = "20 N m cw", force = "2 kN", '
-                    'direction = 0 }\n')
+        parse_scene(
+            FOURBAR + '[loads]\nCD = { torque = "20 N m cw", force = "2 kN", direction = 0 }\n'
+        )
 
 
 def test_an_assembly_hint_about_as_near_to_both_positions_is_refused():
@@ -55,6 +56,7 @@ def test_a_duplicate_key_in_an_answer_file_is_named():
 
 def test_errors_the_plan_finds_name_the_line(tmp_path):
     from polygon_method import load_scene
+
     path = tmp_path / "s.toml"
     path.write_text(FOURBAR.replace("[input]", "[assembly]\nC = [1000, 1000]\n[input]"))
     with pytest.raises(AssemblyError) as err:
@@ -68,10 +70,13 @@ def test_errors_the_plan_finds_name_the_line(tmp_path):
 
 def test_dotted_keys_are_located_too(tmp_path):
     from polygon_method import load_scene
+
     path = tmp_path / "dotted.toml"
-    path.write_text('ground.A = [0, 0]\nground.D = [100, 0]\nlinks.AB = 50\nlinks.BC = -66\n'
-                    'links.CD = 56\ninput.crank = "AB"\ninput.angle = 60\n'
-                    'input.speed = "10.5 rad/s cw"\n')
+    path.write_text(
+        "ground.A = [0, 0]\nground.D = [100, 0]\nlinks.AB = 50\nlinks.BC = -66\n"
+        'links.CD = 56\ninput.crank = "AB"\ninput.angle = 60\n'
+        'input.speed = "10.5 rad/s cw"\n'
+    )
     with pytest.raises(SceneError) as err:
         load_scene(path)
     assert "[links] BC (line 4)" in err.value.one_line()
@@ -128,6 +133,7 @@ def test_free_text_that_is_not_text_is_refused_on_its_line(tmp_path, line):
     """``source`` and ``notes`` are free text: a number, a list or a table is a slip that
     was silently ignored."""
     from polygon_method import load_scene
+
     path = tmp_path / "s.toml"
     path.write_text(line + "\n" + FOURBAR)
     with pytest.raises(SceneError) as err:
@@ -143,15 +149,24 @@ def test_every_integer_beyond_64_bits_is_written_with_a_long_run():
     import random
 
     from polygon_method.scene.reading import _has_long_run
+
     rnd = random.Random(5)
-    values = [1 << 63, (1 << 63) + 1, -(1 << 63) - 1, 10 ** 19, 10 ** 400]
+    values = [1 << 63, (1 << 63) + 1, -(1 << 63) - 1, 10**19, 10**400]
     values += [rnd.randrange(1 << 63, 1 << 200) for _ in range(200)]
     for v in values:
         a = abs(v)
-        for text in (str(v), f"{v:_}", f"0x{a:x}", f"0o{a:o}", f"0o{a:_o}", f"0x{a:_x}",
-                     f"0b{a:b}", f"0b{a:_b}"):
+        for text in (
+            str(v),
+            f"{v:_}",
+            f"0x{a:x}",
+            f"0o{a:o}",
+            f"0o{a:_o}",
+            f"0x{a:_x}",
+            f"0b{a:b}",
+            f"0b{a:_b}",
+        ):
             assert _has_long_run(f"BC = {text}"), text
-    assert not _has_long_run("BC = 66\nspeed = \"10.5 rad/s cw\"")
+    assert not _has_long_run('BC = 66\nspeed = "10.5 rad/s cw"')
 
 
 def test_the_long_run_is_found_as_the_regular_expression_finds_it():
@@ -163,13 +178,16 @@ def test_the_long_run_is_found_as_the_regular_expression_finds_it():
     import re
 
     from polygon_method.scene.reading import _has_long_run
+
     reference = re.compile(r"[0-9A-Fa-f_]{16,}")
     rnd = random.Random(7)
-    alphabet = "0123456789abcdefABCDEF_ gxyz=\n\"é中\u00e9\ud800\U0001f600"
+    alphabet = '0123456789abcdefABCDEF_ gxyz=\n"é中\u00e9\ud800\U0001f600'
     found = 0
     for _ in range(3000):
-        text = "".join(rnd.choice(alphabet) if rnd.random() < 0.3 else rnd.choice("0123abcF_")
-                       for _ in range(rnd.randrange(10, 60)))
+        text = "".join(
+            rnd.choice(alphabet) if rnd.random() < 0.3 else rnd.choice("0123abcF_")
+            for _ in range(rnd.randrange(10, 60))
+        )
         want = reference.search(text) is not None
         found += want
         assert _has_long_run(text) == want, repr(text)
@@ -186,6 +204,7 @@ def test_a_negative_number_in_exponent_form_is_an_option_s_value(capsys):
     """``--from -1e1`` was read as an unknown option (argparse knows -10, not -1e1); it is
     the same sweep as ``--from -10``."""
     from polygon_method.cli import main
+
     scene = "worked_problems/fourbar_crank_acceleration.toml"
     assert main(["sweep", scene, "--from", "-10", "--to", "10", "--step", "10"]) == 0
     plain = capsys.readouterr().out

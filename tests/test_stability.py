@@ -79,8 +79,8 @@ def toggle_guess(angle):
     bx, by = 0.02 * math.cos(angle), 0.02 * math.sin(angle)
     ex, ey = 0.1 - bx, -by
     e = math.hypot(ex, ey)
-    along = (0.07 ** 2 - 0.05 ** 2 + e * e) / (2 * e)
-    h = max(math.sqrt(max(0.07 ** 2 - along * along, 0.0)), 1e-9)
+    along = (0.07**2 - 0.05**2 + e * e) / (2 * e)
+    h = max(math.sqrt(max(0.07**2 - along * along, 0.0)), 1e-9)
     ux, uy = ex / e, ey / e
     cx, cy = bx + along * ux - h * uy, by + along * uy + h * ux
     if cy < by + (cx - bx) * ey / ex:  # keep it above BD
@@ -109,14 +109,20 @@ def slider(angle):
 
 def slider_guess(angle):
     ax, ay = 0.05 * math.cos(angle), 0.05 * math.sin(angle)
-    return {"A": (ax, ay), "B": (ax + math.sqrt(max(0.08 ** 2 - (ay + 0.03) ** 2, 0.0)), -0.03)}
+    return {"A": (ax, ay), "B": (ax + math.sqrt(max(0.08**2 - (ay + 0.03) ** 2, 0.0)), -0.03)}
 
 
 def reference(scene, guess):
     r = reference_solution(scene, guess)
-    return Kinematics("reference", r["positions"], r["velocities"], r["accelerations"],
-                      r["omega"], r["alpha"],
-                      {k: (v["vs"], v["as"]) for k, v in r["sliders"].items()})
+    return Kinematics(
+        "reference",
+        r["positions"],
+        r["velocities"],
+        r["accelerations"],
+        r["omega"],
+        r["alpha"],
+        {k: (v["vs"], v["as"]) for k, v in r["sliders"].items()},
+    )
 
 
 def sin_transmission(P, b, c, d):
@@ -142,6 +148,7 @@ def write(tmp_path):
         p = tmp_path / name
         p.write_text(text)
         return str(p)
+
     return _write
 
 
@@ -179,7 +186,8 @@ def test_well_conditioned_has_no_warning(write, capsys):
     d = json.loads(capsys.readouterr().out)
     assert d["warnings"] == []
     assert d["steps"][1]["condition"] == pytest.approx(
-        sin_transmission(ref.P, "B", "C", "D"), rel=1e-12)
+        sin_transmission(ref.P, "B", "C", "D"), rel=1e-12
+    )
     assert d["steps"][1]["condition"] > TOL.warn
 
 
@@ -197,14 +205,17 @@ def test_steps_shows_the_condition(write, capsys):
 # --------------------------------------------------------------------------- refused
 
 
-@pytest.mark.parametrize("text, step, words", [
-    (toggle(math.pi), "step 2", ("BC", "CD", "toggle")),
-    (parallelogram(0.0), "step 2", ("BC", "CD", "in line")),
-    (parallelogram(math.pi), "step 2", ("BC", "CD", "in line")),
-    (slider(math.pi / 2), "step 2", ("AB", "guide", "dead centre")),
-    (BLOCK_AT_PIVOT, "step 2", ("block A", "O4", "pivot")),
-], ids=["toggle", "change-point-0", "change-point-180", "slider-dead-centre",
-        "block-at-pivot"])
+@pytest.mark.parametrize(
+    "text, step, words",
+    [
+        (toggle(math.pi), "step 2", ("BC", "CD", "toggle")),
+        (parallelogram(0.0), "step 2", ("BC", "CD", "in line")),
+        (parallelogram(math.pi), "step 2", ("BC", "CD", "in line")),
+        (slider(math.pi / 2), "step 2", ("AB", "guide", "dead centre")),
+        (BLOCK_AT_PIVOT, "step 2", ("block A", "O4", "pivot")),
+    ],
+    ids=["toggle", "change-point-0", "change-point-180", "slider-dead-centre", "block-at-pivot"],
+)
 @pytest.mark.parametrize("json_flag", [[], ["--json"]], ids=["text", "json"])
 def test_true_singularity_is_a_clear_error(write, capsys, text, step, words, json_flag):
     with pytest.raises(SingularStepError):
@@ -221,13 +232,12 @@ def test_true_singularity_is_a_clear_error(write, capsys, text, step, words, jso
 # --------------------------------------------------------------------------- near
 
 
-NEAR = [(f"toggle-{k}", toggle, toggle_guess, math.pi - 10.0 ** -k) for k in range(1, 13)]
-NEAR += [(f"change-point+{k}", parallelogram, parallelogram_guess, 10.0 ** -k)
-         for k in range(1, 13)]
-NEAR += [(f"change-point-{k}", parallelogram, parallelogram_guess, -(10.0 ** -k))
-         for k in (2, 4, 6, 8)]
-NEAR += [(f"slider-{k}", slider, slider_guess, math.pi / 2 - 10.0 ** -k)
-         for k in range(1, 13)]
+NEAR = [(f"toggle-{k}", toggle, toggle_guess, math.pi - 10.0**-k) for k in range(1, 13)]
+NEAR += [(f"change-point+{k}", parallelogram, parallelogram_guess, 10.0**-k) for k in range(1, 13)]
+NEAR += [
+    (f"change-point-{k}", parallelogram, parallelogram_guess, -(10.0**-k)) for k in (2, 4, 6, 8)
+]
+NEAR += [(f"slider-{k}", slider, slider_guess, math.pi / 2 - 10.0**-k) for k in range(1, 13)]
 
 
 @pytest.mark.parametrize("name, make, guess, angle", NEAR, ids=[n[0] for n in NEAR])
@@ -245,8 +255,13 @@ def test_near_a_singularity_right_or_refused(name, make, guess, angle):
         return
     assert finite(sol.to_dict())
     ref = reference(scene, guess(angle))
-    err = compare(Kinematics("solve", sol.P, sol.V, sol.A, sol.W, sol.Al,
-                             {k: (v[0], v[1]) for k, v in sol.S.items()}), ref, scene)
+    err = compare(
+        Kinematics(
+            "solve", sol.P, sol.V, sol.A, sol.W, sol.Al, {k: (v[0], v[1]) for k, v in sol.S.items()}
+        ),
+        ref,
+        scene,
+    )
     cond = min(sol.conditions.values())
     if cond >= TOL.warn:
         assert not sol.warnings

@@ -23,10 +23,12 @@ ROOT = Path(__file__).resolve().parent.parent
 WORKED = sorted((ROOT / "worked_problems").glob("*.toml"))
 TOGGLE = ROOT / "worked_problems" / "toggle_mechanism.toml"
 
-FOURBAR = seed(top='title = "four-bar"\n',
-               middle='[points]\nE = { on = "BC", along = 40 }\n[assembly]\nC = "above"\n',
-               drive='angle = 60\nspeed = "10.5 rad/s cw"\nacceleration = "40 rad/s^2 ccw"',
-               after='[pins]\nB = { diameter = 80 }\nC = { radius = 25 }\n')
+FOURBAR = seed(
+    top='title = "four-bar"\n',
+    middle='[points]\nE = { on = "BC", along = 40 }\n[assembly]\nC = "above"\n',
+    drive='angle = 60\nspeed = "10.5 rad/s cw"\nacceleration = "40 rad/s^2 ccw"',
+    after="[pins]\nB = { diameter = 80 }\nC = { radius = 25 }\n",
+)
 
 SLOTTED = """
 [ground]
@@ -49,8 +51,11 @@ speed = "60 rpm cw"
 def close(printed: str, exact: float, digits: int = 4) -> bool:
     """``printed`` is ``exact`` to the printed number of significant figures."""
     x = float(printed)
-    return abs(x - exact) <= 0.51 * 10 ** (math.floor(math.log10(abs(exact))) - digits + 1) \
-        if exact else x == 0
+    return (
+        abs(x - exact) <= 0.51 * 10 ** (math.floor(math.log10(abs(exact))) - digits + 1)
+        if exact
+        else x == 0
+    )
 
 
 def tables(md: str):
@@ -82,8 +87,11 @@ def exact_of(sol, name):
 
 @pytest.mark.parametrize("source", ["toggle", "fourbar", "slotted"])
 def test_read_offs_are_the_solution(source):
-    sc = load_scene(TOGGLE) if source == "toggle" else parse_scene(
-        FOURBAR if source == "fourbar" else SLOTTED)
+    sc = (
+        load_scene(TOGGLE)
+        if source == "toggle"
+        else parse_scene(FOURBAR if source == "fourbar" else SLOTTED)
+    )
     sol = solve(sc)
     md = steps_text(sol, fmt="markdown")
     _, vs, acc = diagram_scales(sol)
@@ -98,8 +106,9 @@ def test_read_offs_are_the_solution(source):
                 checked += 1
             # the length is the drawn one, to 0.05 cm; 'read' is that length at the scale
             assert abs(float(cm) - value / scale.per_cm) <= 0.025 + 0.006
-            assert float(read.split()[0]) == pytest.approx(float(cm) * scale.per_cm,
-                                                           rel=6e-3, abs=1e-12)
+            assert float(read.split()[0]) == pytest.approx(
+                float(cm) * scale.per_cm, rel=6e-3, abs=1e-12
+            )
     assert checked >= 4
 
 
@@ -108,16 +117,22 @@ def test_angular_velocities_and_accelerations_lines():
     text = steps_text(sol)
     flat = " ".join(text.split())
     for key in ("BC", "CD"):
-        m = re.search(rf"omega_{key} = v_\w+ / {key} = ([\d.]+) / ([\d.]+) = ([\d.]+) rad/s "
-                      r"(cw|ccw)", flat)
+        m = re.search(
+            rf"omega_{key} = v_\w+ / {key} = ([\d.]+) / ([\d.]+) = ([\d.]+) rad/s "
+            r"(cw|ccw)",
+            flat,
+        )
         assert m, key
         a, b, w, sense = float(m[1]), float(m[2]), m[3], m[4]
         assert close(w, abs(sol.omega(key)))
         assert sense == ("ccw" if sol.omega(key) > 0 else "cw")
         assert a / b == pytest.approx(float(w), rel=1e-3)
         assert b == pytest.approx(sol.scene.link(key).length)
-        m = re.search(rf"alpha_{key} = tangential of a_\w+ / {key} = ([\d.]+) / ([\d.]+) = "
-                      r"([\d.]+) rad/s\^2 (cw|ccw)", flat)
+        m = re.search(
+            rf"alpha_{key} = tangential of a_\w+ / {key} = ([\d.]+) / ([\d.]+) = "
+            r"([\d.]+) rad/s\^2 (cw|ccw)",
+            flat,
+        )
         assert m, key
         assert close(m[3], abs(sol.alpha(key)))
         assert m[4] == ("ccw" if sol.alpha(key) > 0 else "cw")
@@ -128,25 +143,34 @@ def test_input_link_arithmetic_is_the_hand_arithmetic():
     sol = solve(load_scene(TOGGLE))
     flat = " ".join(steps_text(sol).split())
     w = 2 * math.pi * 180 / 60
-    m = re.search(r"N = 180 rpm; omega_OA = 2 pi N / 60 = 2 pi x 180 / 60 = ([\d.]+) rad/s ccw",
-                  flat)
+    m = re.search(
+        r"N = 180 rpm; omega_OA = 2 pi N / 60 = 2 pi x 180 / 60 = ([\d.]+) rad/s ccw", flat
+    )
     assert m and close(m[1], w)
-    m = re.search(r"v_A = omega_OA x OA = ([\d.]+) x ([\d.]+) = ([\d.]+) m/s, perpendicular "
-                  "to OA", flat)
+    m = re.search(
+        r"v_A = omega_OA x OA = ([\d.]+) x ([\d.]+) = ([\d.]+) m/s, perpendicular "
+        "to OA",
+        flat,
+    )
     assert m and float(m[2]) == 0.18 and close(m[3], w * 0.18)
 
 
 def test_rubbing_and_torque_lines():
     sol = solve(load_scene(TOGGLE))
     flat = " ".join(steps_text(sol).split())
-    m = re.search(r"pin A \(r = 15 mm\), OA and AB: OA and AB both turn ccw: rub = "
-                  r"\|omega_OA - omega_AB\| r = \|([\d.]+) - ([\d.]+)\| x 0.015 = ([\d.]+) m/s",
-                  flat)
+    m = re.search(
+        r"pin A \(r = 15 mm\), OA and AB: OA and AB both turn ccw: rub = "
+        r"\|omega_OA - omega_AB\| r = \|([\d.]+) - ([\d.]+)\| x 0.015 = ([\d.]+) m/s",
+        flat,
+    )
     assert m
     assert close(m[3], sol.rubbing["A"].rubbing_velocity)
     assert (float(m[1]) - float(m[2])) * 0.015 == pytest.approx(float(m[3]), rel=2e-3)
-    m = re.search(r"T = -\(sum F \. v\) / omega_OA = ([-\d.]+) / ([-\d.]+) = ([\d.]+) N m "
-                  r"(cw|ccw)", flat)
+    m = re.search(
+        r"T = -\(sum F \. v\) / omega_OA = ([-\d.]+) / ([-\d.]+) = ([\d.]+) N m "
+        r"(cw|ccw)",
+        flat,
+    )
     assert m and close(m[3], abs(sol.input_torque))
     assert m[4] == ("ccw" if sol.input_torque > 0 else "cw")
     # pin B of the four-bar: AB cw, BC ccw: the sum of the magnitudes
@@ -158,7 +182,7 @@ def test_rubbing_and_torque_lines():
 def test_acceleration_table_centripetal_and_coriolis():
     sol = solve(parse_scene(SLOTTED))
     md = steps_text(sol, fmt="markdown")
-    (header, rows), = [t for t in table(md, "link") if t[0][1] == "length (m)"]
+    ((header, rows),) = [t for t in table(md, "link") if t[0][1] == "length (m)"]
     assert header[-1] == "Coriolis (m/s^2)"
     by = {r[0]: r for r in rows}
     for key, row in by.items():
@@ -204,7 +228,7 @@ def test_cli_steps_bad_scene(tmp_path, capsys):
 
 
 def brute_scale(magnitude, fit):
-    cands = sorted(m * 10.0 ** k for m in (1, 2, 2.5, 5) for k in range(-12, 12))
+    cands = sorted(m * 10.0**k for m in (1, 2, 2.5, 5) for k in range(-12, 12))
     return next(c for c in cands if magnitude / c <= fit * (1 + 1e-12))
 
 
@@ -256,11 +280,16 @@ def test_each_construction_states_where_its_lines_cross():
     sol = solve(load_scene(path))
     text = steps_text(sol)
     (ax, ay), (bx, by), (cx, cy) = sol.P["A"], sol.P["B"], sol.P["C"]
-    ang = math.degrees(abs(math.atan2((ax - bx) * (cy - by) - (ay - by) * (cx - bx),
-                                      (ax - bx) * (cx - bx) + (ay - by) * (cy - by))))
+    ang = math.degrees(
+        abs(
+            math.atan2(
+                (ax - bx) * (cy - by) - (ay - by) * (cx - bx),
+                (ax - bx) * (cx - bx) + (ay - by) * (cy - by),
+            )
+        )
+    )
     acute = min(ang, 180 - ang)
-    m = re.search(r"Step 2 \(dyad AB, CB at B\).*?the lines cross at ([0-9.]+) deg",
-                  text, re.S)
+    m = re.search(r"Step 2 \(dyad AB, CB at B\).*?the lines cross at ([0-9.]+) deg", text, re.S)
     assert m and float(m.group(1)) == pytest.approx(acute, abs=0.05)
 
 
@@ -272,9 +301,12 @@ def _gears_only(path):
     follows from no slip at its pitch point (omega by the ratio, v = omega x radius), so no
     direction line is drawn. A wheel on a line is found from a link pinned to it: lines."""
     from polygon_method.solver.compiler import compile_plan
-    return all(st.kind in ("crank", "second crank")
-               or (st.kind == "rolling" and st.on in ("gear", "circle"))
-               for st in compile_plan(load_scene(path)).steps)
+
+    return all(
+        st.kind in ("crank", "second crank")
+        or (st.kind == "rolling" and st.on in ("gear", "circle"))
+        for st in compile_plan(load_scene(path)).steps
+    )
 
 
 GEARS_ONLY = [p for p in WORKED + TEXTBOOK if _gears_only(p)]
@@ -282,22 +314,33 @@ GEARS_ONLY = [p for p in WORKED + TEXTBOOK if _gears_only(p)]
 
 @pytest.mark.parametrize("path", GEARS_ONLY, ids=lambda p: p.stem)
 def test_a_train_of_gears_draws_no_direction_line(path):
-    from polygon_method.polygons.constructions import (acceleration_constructions,
-                                                       velocity_constructions)
+    from polygon_method.polygons.constructions import (
+        acceleration_constructions,
+        velocity_constructions,
+    )
+
     sol = solve(load_scene(path))
-    assert not [ln for cons in (velocity_constructions(sol), acceleration_constructions(sol))
-                for c in cons for ln in c.lines]
+    assert not [
+        ln
+        for cons in (velocity_constructions(sol), acceleration_constructions(sol))
+        for c in cons
+        for ln in c.lines
+    ]
 
 
-@pytest.mark.parametrize("path", [p for p in WORKED + TEXTBOOK if p not in GEARS_ONLY],
-                         ids=lambda p: p.stem)
+@pytest.mark.parametrize(
+    "path", [p for p in WORKED + TEXTBOOK if p not in GEARS_ONLY], ids=lambda p: p.stem
+)
 def test_every_construction_line_carries_its_mark_and_runs_as_it_says(path):
     """Each direction line of every construction states the mark the drawing writes beside
     it (a structured field: the drawing reads no sentence). Where the mark names a link of
     two points ("\u22a5 BC", "\u2225 BC"), the line's direction is checked against the
     configuration: perpendicular or parallel to B->C, to 1e-12."""
-    from polygon_method.polygons.constructions import (acceleration_constructions,
-                                                       velocity_constructions)
+    from polygon_method.polygons.constructions import (
+        acceleration_constructions,
+        velocity_constructions,
+    )
+
     sol = solve(load_scene(path))
     n = checked = 0
     for cons in (velocity_constructions(sol), acceleration_constructions(sol)):

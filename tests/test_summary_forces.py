@@ -15,8 +15,10 @@ from polygon_method.linkage.summary import summarize
 from polygon_method.motion.sweeps import sweep
 
 ROOT = Path(__file__).resolve().parent.parent
-SCENES = [ROOT / "worked_problems" / "fourbar_forces.toml",
-          ROOT / "worked_problems" / "engine_forces.toml"]
+SCENES = [
+    ROOT / "worked_problems" / "fourbar_forces.toml",
+    ROOT / "worked_problems" / "engine_forces.toml",
+]
 
 
 def _columns(res):
@@ -36,8 +38,7 @@ def test_force_extremes_are_the_sweeps_own(path):
     forces = [n for n in dense if n in rows]
     assert "shake" in forces and any(n.startswith("F_") for n in forces)
     assert "torque_inertia" in forces
-    F = max(max(abs(rows[n].maximum), abs(rows[n].minimum)) for n in forces
-            if rows[n].unit == "N")
+    F = max(max(abs(rows[n].maximum), abs(rows[n].minimum)) for n in forces if rows[n].unit == "N")
     L = max(lk.length for lk in scene.links)
     for name in forces:  # (to a 1e-9 part of the largest force, of it times the longest link)
         e = rows[name]
@@ -62,6 +63,7 @@ def test_no_forces_summarised_where_the_analysis_fails(monkeypatch):
 
     def refuse(motion):
         raise PolygonMethodError("forces: refused here")
+
     monkeypatch.setattr(forces, "analyse", refuse)
     summary = summarize(load_scene(SCENES[0]))
     names = {e.name for e in summary.extremes}

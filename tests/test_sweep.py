@@ -84,8 +84,7 @@ def at_angle(scene, theta):
     return dataclasses.replace(scene, input=dataclasses.replace(scene.input, angle=theta))
 
 
-@pytest.mark.parametrize("text", [FOURBAR, ENGINE, SLOTTED], ids=["fourbar", "engine",
-                                                                 "slotted"])
+@pytest.mark.parametrize("text", [FOURBAR, ENGINE, SLOTTED], ids=["fourbar", "engine", "slotted"])
 def test_sweep_equals_single_solves(text):
     sc = parse_scene(text)
     degs = np.array([0.0, 37.0, 90.0, 151.5, 222.0, 300.0, 359.0])
@@ -97,18 +96,16 @@ def test_sweep_equals_single_solves(text):
         for p in sc.point_names:
             for i in (0, 1):
                 assert res.P[p][i][k] == pytest.approx(sol.P[p][i], abs=1e-12)
-                assert res.V[p][i][k] == pytest.approx(sol.V[p][i], rel=1e-11,
-                                                       abs=1e-12 * scale_v)
-                assert res.A[p][i][k] == pytest.approx(sol.A[p][i], rel=1e-10,
-                                                       abs=1e-11 * scale_v ** 2)
+                assert res.V[p][i][k] == pytest.approx(sol.V[p][i], rel=1e-11, abs=1e-12 * scale_v)
+                assert res.A[p][i][k] == pytest.approx(
+                    sol.A[p][i], rel=1e-10, abs=1e-11 * scale_v**2
+                )
         for key in res.W:
             assert res.W[key][k] == pytest.approx(sol.W[key], rel=1e-11, abs=1e-12)
             assert res.Al[key][k] == pytest.approx(sol.Al[key], rel=1e-10, abs=1e-10)
         for s in sc.sliders:
-            assert res.S[s.point][0][k] == pytest.approx(sol.S[s.point][0], rel=1e-11,
-                                                         abs=1e-12)
-            assert res.S[s.point][1][k] == pytest.approx(sol.S[s.point][1], rel=1e-10,
-                                                         abs=1e-10)
+            assert res.S[s.point][0][k] == pytest.approx(sol.S[s.point][0], rel=1e-11, abs=1e-12)
+            assert res.S[s.point][1][k] == pytest.approx(sol.S[s.point][1], rel=1e-10, abs=1e-10)
         for pin, r in res.rubbing.items():
             assert r[k] == pytest.approx(sol.rubbing[pin].rubbing_velocity, rel=1e-11)
         if res.input_torque is not None:
@@ -122,8 +119,7 @@ def five_point(f, h):
     return d1, d2
 
 
-@pytest.mark.parametrize("text", [FOURBAR, ENGINE, SLOTTED], ids=["fourbar", "engine",
-                                                                 "slotted"])
+@pytest.mark.parametrize("text", [FOURBAR, ENGINE, SLOTTED], ids=["fourbar", "engine", "slotted"])
 def test_sweep_matches_finite_differences_of_positions(text):
     """v = w dP/dt, a = w^2 d2P/dt2 + alpha dP/dt (t the crank angle); the same for the
     links' angles, from the swept positions alone."""
@@ -149,10 +145,10 @@ def test_sweep_matches_finite_differences_of_positions(text):
         (x1, y1), (x2, y2) = res.P[lk.p], res.P[lk.q]
         ang = np.unwrap(np.arctan2(y2 - y1, x2 - x1).reshape(-1, 5), axis=1)
         d1, d2 = five_point(ang.T, h)
-        np.testing.assert_allclose(res.W[lk.key].reshape(-1, 5)[:, 2], w * d1,
-                                   atol=1e-8 * abs(w))
-        np.testing.assert_allclose(res.Al[lk.key].reshape(-1, 5)[:, 2], w * w * d2 + al * d1,
-                                   atol=1e-5 * w * w)
+        np.testing.assert_allclose(res.W[lk.key].reshape(-1, 5)[:, 2], w * d1, atol=1e-8 * abs(w))
+        np.testing.assert_allclose(
+            res.Al[lk.key].reshape(-1, 5)[:, 2], w * w * d2 + al * d1, atol=1e-5 * w * w
+        )
 
 
 def test_slider_crank_closed_form():
@@ -165,7 +161,7 @@ def test_slider_crank_closed_form():
     q = np.sqrt(l * l - r * r * s * s)
     x = r * c + q
     dx = -r * s - r * r * s * c / q
-    d2x = -r * c - r * r * (c * c - s * s) / q - r ** 4 * s * s * c * c / q ** 3
+    d2x = -r * c - r * r * (c * c - s * s) / q - r**4 * s * s * c * c / q**3
     np.testing.assert_allclose(res.P["B"][0], x, rtol=0, atol=1e-13)
     np.testing.assert_allclose(res.S["B"][0], w * dx, rtol=0, atol=1e-11)
     np.testing.assert_allclose(res.A["B"][0], w * w * d2x, rtol=0, atol=1e-9)
@@ -173,8 +169,7 @@ def test_slider_crank_closed_form():
     phi_dot = -r * c / (l * np.cos(np.arcsin(r * s / l)))
     np.testing.assert_allclose(res.W["AB"], w * phi_dot, rtol=0, atol=1e-11)
     # the power balance: T w = -F . v with F = 1 kN towards -x
-    np.testing.assert_allclose(res.input_torque, -(-1000.0 * w * dx) / w, rtol=1e-12,
-                               atol=1e-9)
+    np.testing.assert_allclose(res.input_torque, -(-1000.0 * w * dx) / w, rtol=1e-12, atol=1e-9)
 
 
 def test_non_grashof_stops_at_limit_positions():
@@ -284,8 +279,27 @@ def test_csv_and_plot_from_the_command_line(tmp_path, capsys):
     scene = tmp_path / "fb.toml"
     scene.write_text(FOURBAR)
     csv, svg = tmp_path / "out.csv", tmp_path / "out.svg"
-    assert main(["sweep", str(scene), "--from", "0", "--to", "90", "--step", "10",
-                 "--csv", str(csv), "--plot", str(svg), "--points", "C,E"]) == 0
+    assert (
+        main(
+            [
+                "sweep",
+                str(scene),
+                "--from",
+                "0",
+                "--to",
+                "90",
+                "--step",
+                "10",
+                "--csv",
+                str(csv),
+                "--plot",
+                str(svg),
+                "--points",
+                "C,E",
+            ]
+        )
+        == 0
+    )
     rows = csv.read_text().splitlines()
     assert len(rows) == 1 + 10
     header = rows[0].split(",")
@@ -298,14 +312,17 @@ def test_csv_and_plot_from_the_command_line(tmp_path, capsys):
     assert svg.read_text().lstrip().startswith("<?xml")
 
 
-@pytest.mark.parametrize("argv, says", [
-    (["--steps", "0"], "--steps"),
-    (["--from", "0", "--to", "90"], "--step"),
-    (["--from", "0", "--to", "90", "--step", "-5"], "--step"),
-    (["--steps", "10", "--from", "0", "--to", "90", "--step", "5"], "either"),
-    (["--plot", "out.txt"], "--plot"),
-    (["--plot", "out.svg", "--points", "Z"], "no point Z"),
-])
+@pytest.mark.parametrize(
+    "argv, says",
+    [
+        (["--steps", "0"], "--steps"),
+        (["--from", "0", "--to", "90"], "--step"),
+        (["--from", "0", "--to", "90", "--step", "-5"], "--step"),
+        (["--steps", "10", "--from", "0", "--to", "90", "--step", "5"], "either"),
+        (["--plot", "out.txt"], "--plot"),
+        (["--plot", "out.svg", "--points", "Z"], "no point Z"),
+    ],
+)
 def test_bad_sweep_arguments_one_line_exit_2(tmp_path, capsys, argv, says):
     scene = tmp_path / "fb.toml"
     scene.write_text(FOURBAR)
@@ -319,8 +336,23 @@ def test_bad_sweep_arguments_one_line_exit_2(tmp_path, capsys, argv, says):
 def test_unreachable_request_is_an_error(tmp_path, capsys):
     scene = tmp_path / "ng.toml"
     scene.write_text(NON_GRASHOF)
-    assert main(["sweep", str(scene), "--from", "0", "--to", "40", "--step", "1",
-                 "--csv", str(tmp_path / "out.csv")]) == 2
+    assert (
+        main(
+            [
+                "sweep",
+                str(scene),
+                "--from",
+                "0",
+                "--to",
+                "40",
+                "--step",
+                "1",
+                "--csv",
+                str(tmp_path / "out.csv"),
+            ]
+        )
+        == 2
+    )
     assert "none of the requested crank angles" in capsys.readouterr().err
     assert not (tmp_path / "out.csv").exists()
 
@@ -331,8 +363,7 @@ def test_package_level_sweep_is_the_function():
     sc = parse_scene(ENGINE)
     res = pm.sweep(sc, [math.radians(90.0)])
     # at 90 deg the rod's angle is stationary: the piston moves with the crank pin
-    assert res.sliding_velocity("B")[0] == pytest.approx(-0.15 * 450 * math.pi / 30,
-                                                         rel=1e-12)
+    assert res.sliding_velocity("B")[0] == pytest.approx(-0.15 * 450 * math.pi / 30, rel=1e-12)
 
 
 def test_the_plot_title_stays_inside_the_figure():
@@ -341,10 +372,13 @@ def test_the_plot_title_stays_inside_the_figure():
 
     from polygon_method import load_scene
     from polygon_method.draw.plots import plot_figure
-    sc = load_scene(Path(__file__).resolve().parent.parent / "worked_problems" /
-                    "fourbar_image_points.toml")
+
+    sc = load_scene(
+        Path(__file__).resolve().parent.parent / "worked_problems" / "fourbar_image_points.toml"
+    )
     fig = plot_figure(sweep(sc))
     from matplotlib.backends.backend_agg import FigureCanvasAgg
+
     canvas = FigureCanvasAgg(fig)
     canvas.draw()
     box = fig._suptitle.get_window_extent(canvas.get_renderer())

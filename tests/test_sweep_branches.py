@@ -50,8 +50,9 @@ def _message(fn):
     return err.value.one_line()
 
 
-@pytest.mark.parametrize("text, angle", [(PARALLELOGRAM, 180.02), (PARALLELOGRAM, -0.03),
-                                         (ISOSCELES_ENGINE, 90.01)])
+@pytest.mark.parametrize(
+    "text, angle", [(PARALLELOGRAM, 180.02), (PARALLELOGRAM, -0.03), (ISOSCELES_ENGINE, 90.01)]
+)
 def test_a_scene_at_a_change_point_is_refused_as_solve_refuses_it(text, angle):
     sc = parse_scene(text.format(angle=angle))
     said = _message(lambda: solve(sc))
@@ -59,8 +60,9 @@ def test_a_scene_at_a_change_point_is_refused_as_solve_refuses_it(text, angle):
     assert _message(lambda: summarize(sc, np.radians([angle - 1.0, angle + 1.0]))) == said
 
 
-@pytest.mark.parametrize("lengths, angle", [((100, 100, 100), 90), ((100, 60, 60), 30)],
-                         ids=["rhombus", "deltoid"])
+@pytest.mark.parametrize(
+    "lengths, angle", [((100, 100, 100), 90), ((100, 60, 60), 30)], ids=["rhombus", "deltoid"]
+)
 def test_samples_at_a_change_point_keep_every_link_length(lengths, angle):
     ab, bc, cd = lengths
     text = f"""
@@ -100,8 +102,10 @@ def test_an_extreme_at_a_limit_position_is_said_to_grow_without_bound():
     1 / d^1.5: the summary says so, at the limit position, whatever the sampling."""
     from pathlib import Path
     from polygon_method import load_scene
-    sc = load_scene(Path(__file__).resolve().parent.parent / "worked_problems" /
-                    "fourbar_image_points.toml")
+
+    sc = load_scene(
+        Path(__file__).resolve().parent.parent / "worked_problems" / "fourbar_image_points.toml"
+    )
     for n in (360, 36000):
         s = summarize(sc, np.radians(np.linspace(0.0, 360.0, n, endpoint=False)))
         lims = sorted(s.deg(lp.theta) for lp in s.limits)
@@ -116,8 +120,12 @@ def test_an_extreme_at_a_limit_position_is_said_to_grow_without_bound():
 def test_a_crank_that_turns_fully_has_no_unbounded_extreme():
     from pathlib import Path
     from polygon_method import load_scene
-    sc = load_scene(Path(__file__).resolve().parent.parent / "worked_problems" /
-                    "fourbar_crank_acceleration.toml")
+
+    sc = load_scene(
+        Path(__file__).resolve().parent.parent
+        / "worked_problems"
+        / "fourbar_crank_acceleration.toml"
+    )
     s = summarize(sc)
     assert not any(e.max_unbounded or e.min_unbounded for e in s.extremes)
 
@@ -129,11 +137,15 @@ from polygon_method import PolygonMethodError  # noqa: E402
 
 
 @settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(shape=st.sampled_from(["parallelogram", "rhombus", "deltoid", "isosceles"]),
-       angle=st.one_of(st.sampled_from([0.0, 180.0, 90.0, -0.001, 179.999, 90.01]),
-                       st.floats(-360.0, 360.0)),
-       lo=st.floats(-400.0, 400.0), span=st.floats(0.0, 400.0),
-       n=st.integers(1, 400))
+@given(
+    shape=st.sampled_from(["parallelogram", "rhombus", "deltoid", "isosceles"]),
+    angle=st.one_of(
+        st.sampled_from([0.0, 180.0, 90.0, -0.001, 179.999, 90.01]), st.floats(-360.0, 360.0)
+    ),
+    lo=st.floats(-400.0, 400.0),
+    span=st.floats(0.0, 400.0),
+    n=st.integers(1, 400),
+)
 def test_fuzz_sweeps_near_change_points(shape, angle, lo, span, n):
     """Linkages with change points, swept from any stated angle over any range: a sweep
     either refuses in one error of the family, or every row it keeps is a possible
@@ -141,8 +153,11 @@ def test_fuzz_sweeps_near_change_points(shape, angle, lo, span, n):
     if shape == "isosceles":
         text = ISOSCELES_ENGINE.format(angle=angle)
     else:
-        ab, bc, cd = {"parallelogram": (40, 100, 40), "rhombus": (100, 100, 100),
-                      "deltoid": (100, 60, 60)}[shape]
+        ab, bc, cd = {
+            "parallelogram": (40, 100, 40),
+            "rhombus": (100, 100, 100),
+            "deltoid": (100, 60, 60),
+        }[shape]
         text = f"""
         [ground]
         A = [0, 0]

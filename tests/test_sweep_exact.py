@@ -62,8 +62,9 @@ def _angles(n):
     return np.radians(np.arange(n) * 360.0 / n)
 
 
-@pytest.mark.parametrize("r, l, e, w", [(50, 200, 0, 10.0), (60, 170, 25, 3.0),
-                                        (45, 310, -40, 120.0)])
+@pytest.mark.parametrize(
+    "r, l, e, w", [(50, 200, 0, 10.0), (60, 170, 25, 3.0), (45, 310, -40, 120.0)]
+)
 def test_piston_speed_maximum_is_exact_and_does_not_depend_on_the_samples(r, l, e, w):
     sc = parse_scene(ENGINE.format(r=r, l=l, e=e, angle=30, w=w))
 
@@ -85,8 +86,10 @@ def test_piston_speed_maximum_is_exact_and_does_not_depend_on_the_samples(r, l, 
         assert g == pytest.approx(float(best), rel=1e-9)
 
 
-@pytest.mark.parametrize("a, b, c, d", [(150, 450, 300, 200), (120, 300, 150, 250),
-                                        (90, 240, 200, 120), (100, 330, 250, 150)])
+@pytest.mark.parametrize(
+    "a, b, c, d",
+    [(150, 450, 300, 200), (120, 300, 150, 250), (90, 240, 200, 120), (100, 330, 250, 150)],
+)
 def test_transmission_minimum_is_zero_at_the_toggle(a, b, c, d):
     # a non-Grashof crank: it stops where A-B and B-O4 fold into line, at the crank angles
     # where O4A = b - c (law of cosines), and reaches the range between them through 180
@@ -141,16 +144,20 @@ def test_engine_that_cannot_turn_its_stroke_ends_at_the_limits(r, l, e):
                 break
             run.append(g)
         ok = run[::-1] + ok if side is down else ok + run
+
     def nearest_limit(g):  # the limit just beyond an end of the run
-        return min((math.radians(t) for t in lims),
-                   key=lambda t: abs((t - float(g) + math.pi) % (2 * math.pi) - math.pi))
+        return min(
+            (math.radians(t) for t in lims),
+            key=lambda t: abs((t - float(g) + math.pi) % (2 * math.pi) - math.pi),
+        )
 
     vals = [R * math.cos(nearest_limit(g)) for g in (ok[0], ok[-1])] + [x(g) for g in ok]
     for g0, g1 in zip(ok, ok[1:]):
         d0, d1 = mpmath.diff(x, g0), mpmath.diff(x, g1)
         if g1 - g0 < 0.01 and d0 * d1 < 0:
-            vals.append(x(mpmath.findroot(lambda t: mpmath.diff(x, t), (g0, g1),
-                                          solver="anderson")))
+            vals.append(
+                x(mpmath.findroot(lambda t: mpmath.diff(x, t), (g0, g1), solver="anderson"))
+            )
     top, bottom = float(max(vals)), float(min(vals))
     for n in STEPS[1:]:
         s = summarize(sc, _angles(n))
@@ -159,8 +166,9 @@ def test_engine_that_cannot_turn_its_stroke_ends_at_the_limits(r, l, e):
         assert pos.minimum == pytest.approx(bottom, rel=1e-9)
         mu = s.extreme("mu at B")
         assert mu.minimum == 0.0 and min(abs(mu.at_min - t) for t in lims) < 1e-6
-        assert all(0 <= e.at_max < 360 and 0 <= e.at_min < 360 for e in s.extremes
-                   if not e.constant)
+        assert all(
+            0 <= e.at_max < 360 and 0 <= e.at_min < 360 for e in s.extremes if not e.constant
+        )
         rod = s.extreme("alpha_AB")  # alpha_rod ~ 1 / D^3 as D -> 0
         assert rod.max_unbounded or rod.min_unbounded
 
@@ -187,7 +195,7 @@ speed = "10 rad/s ccw"
 """
     f = tmp_path / "wide.toml"
     f.write_text(text)
-    cos = (50 ** 2 + 100 ** 2 - (66 + 56) ** 2) / (2 * 50 * 100)  # BD = BC + CD
+    cos = (50**2 + 100**2 - (66 + 56) ** 2) / (2 * 50 * 100)  # BD = BC + CD
     lim = math.degrees(math.acos(cos))
     assert main(["linkage", str(f)]) == 0
     out = capsys.readouterr().out

@@ -30,8 +30,18 @@ from polygon_method import load_scene, solve
 from polygon_method.solver.centres import locate
 from polygon_method.scene import FixedPath, GuideSlider
 from reference import reference_positions, reference_solution
-from textbook_corpus import (FILES, HERE, REL, at_angle, turned_cases, guide_direction, other_position,
-                             solved, turned, worst_error)
+from textbook_corpus import (
+    FILES,
+    HERE,
+    REL,
+    at_angle,
+    turned_cases,
+    guide_direction,
+    other_position,
+    solved,
+    turned,
+    worst_error,
+)
 
 
 @pytest.mark.parametrize("path", FILES, ids=[f.stem for f in FILES])
@@ -43,8 +53,12 @@ def test_matches_reference(path):
     assert not sol.warnings  # every scene is well away from a toggle
 
 
-HINTED = [(f, X) for f in FILES for X in load_scene(f).assembly
-          if other_position(load_scene(f), solve(load_scene(f)).P, X) is not None]
+HINTED = [
+    (f, X)
+    for f in FILES
+    for X in load_scene(f).assembly
+    if other_position(load_scene(f), solve(load_scene(f)).P, X) is not None
+]
 
 
 @pytest.mark.parametrize("path,X", HINTED, ids=[f"{f.stem}-{X}" for f, X in HINTED])
@@ -74,8 +88,9 @@ def _bodies_at_pin(scene, name, omega):
     for s in scene.sliders:
         if s.point == name:
             # (a peg in two slots: a block in each, the one in a moving slot turning with it)
-            out[f"block {s.key}"] = (omega[scene.link(s.guide).key] if isinstance(s, GuideSlider)
-                                     else 0)
+            out[f"block {s.key}"] = (
+                omega[scene.link(s.guide).key] if isinstance(s, GuideSlider) else 0
+            )
     return out
 
 
@@ -87,7 +102,7 @@ def test_rubbing_velocities_by_hand(path):
     scene, sol, ref = solved(path)
     for pin in scene.pins:
         w = list(_bodies_at_pin(scene, pin.point, ref["omega"]).values())
-        want = max(abs(a - b) for i, a in enumerate(w) for b in w[i + 1:]) * mpf(pin.radius)
+        want = max(abs(a - b) for i, a in enumerate(w) for b in w[i + 1 :]) * mpf(pin.radius)
         got = sol.rubbing[pin.point].rubbing_velocity
         assert abs(got - float(want)) <= 1e-9 * max(float(want), 1e-12), pin.point
 
@@ -120,8 +135,10 @@ def test_input_torque_by_virtual_work(path):
             work += mpf(load.force[0]) * d[0] + mpf(load.force[1]) * d[1]
         else:
             lk = scene.link(load.target)
-            phi = {s: mpmath.atan2(P[s][lk.q][1] - P[s][lk.p][1], P[s][lk.q][0] - P[s][lk.p][0])
-                   for s in (-1, 1)}
+            phi = {
+                s: mpmath.atan2(P[s][lk.q][1] - P[s][lk.p][1], P[s][lk.q][0] - P[s][lk.p][0])
+                for s in (-1, 1)
+            }
             work += mpf(load.torque) * (phi[1] - phi[-1]) / (2 * h)
     assert sol.input_torque == pytest.approx(float(-work), rel=1e-9, abs=1e-12)
 
@@ -131,8 +148,9 @@ def test_corpus_covers_the_format():
     scenes = [load_scene(f) for f in FILES]
     assert len(scenes) >= 15
     sliders = [s for sc in scenes for s in sc.sliders]
-    assert any(isinstance(s, GuideSlider) and s.point in sc.ground
-               for sc in scenes for s in sc.sliders)  # a swivel
+    assert any(
+        isinstance(s, GuideSlider) and s.point in sc.ground for sc in scenes for s in sc.sliders
+    )  # a swivel
     assert any(isinstance(s, GuideSlider) for s in sliders)
     labels = {s.label for s in sliders if isinstance(s, FixedPath)}
     assert {"horizontal", "vertical"} <= labels and len(labels) >= 4
@@ -145,8 +163,10 @@ def test_corpus_covers_the_format():
     assert any(ld.torque is not None for sc in scenes for ld in sc.loads)
     assert any(ld.force is not None for sc in scenes for ld in sc.loads)
     driven = [sc for sc in scenes if sc.input.block is not None]  # a block as the driver,
-    guides = {getattr(sc.slider(sc.input.block), "label", "a turning rod")  # on guides of
-              for sc in driven}  # every kind, and a collar on a turning rod
+    guides = {
+        getattr(sc.slider(sc.input.block), "label", "a turning rod")  # on guides of
+        for sc in driven
+    }  # every kind, and a collar on a turning rod
     assert "a turning rod" in guides
     assert {"horizontal", "vertical"} < guides and any(sc.loads for sc in driven)
 
@@ -165,12 +185,14 @@ def test_slider_crank_driven_from_its_piston_by_hand():
     def k(t):
         s, c = mpmath.sin(t), mpmath.cos(t)
         return -r * s - r * r * s * c / mpmath.sqrt(l * l - r * r * s * s)
+
     w = vs / k(t)
     al = (acc - mpmath.diff(k, t) * w * w) / k(t)
     assert sol.W["OA"] == pytest.approx(float(w), rel=1e-9)
     assert sol.Al["OA"] == pytest.approx(float(al), rel=1e-9)
-    assert sol.P["A"] == pytest.approx((float(r * mpmath.cos(t)), float(r * mpmath.sin(t))),
-                                       rel=1e-12)
+    assert sol.P["A"] == pytest.approx(
+        (float(r * mpmath.cos(t)), float(r * mpmath.sin(t))), rel=1e-12
+    )
 
 
 def _body_field(sol, name):
@@ -199,10 +221,13 @@ def _v_at(field, X):
 
 
 TWO_INPUTS = [f for f in FILES if load_scene(f).input.second is not None]
-CENTRE_CASES = [pytest.param(f.read_text(encoding="utf-8"), id=f.stem) for f in FILES
-                if f not in TWO_INPUTS] + [
+CENTRE_CASES = [
+    pytest.param(f.read_text(encoding="utf-8"), id=f.stem) for f in FILES if f not in TWO_INPUTS
+] + [
     pytest.param(at_angle(HERE / name, a), id=f"{Path(name).stem}-{a}")
-    for name in ("slotted_lever_270.toml", "shaper_offset_ram.toml") for a in (90, 270)]
+    for name in ("slotted_lever_270.toml", "shaper_offset_ram.toml")
+    for a in (90, 270)
+]
 
 
 @pytest.mark.parametrize("text", CENTRE_CASES)
@@ -213,6 +238,7 @@ def test_every_centre_is_where_the_two_bodies_move_alike(text):
     270 deg: every Kennedy line through the known centres is the one line O1-O2) used to be
     refused: "Kennedy's theorem cannot locate I25, I26"."""
     from polygon_method import parse_scene
+
     sol = solve(parse_scene(text))
     ic = locate(sol)
     vmax = max(math.hypot(*v) for v in sol.V.values())
@@ -228,8 +254,9 @@ def test_every_centre_is_where_the_two_bodies_move_alike(text):
         vi, vj = _v_at(fi, c.point), _v_at(fj, c.point)
         assert math.dist(vi, vj) <= 1e-9 * vmax, (c.label, vi, vj)
     for k in range(2, ic.n + 1):  # and the omegas by the ratio theorem are the polygon's
-        assert ic.omegas[k] == pytest.approx(_body_field(sol, ic.bodies[k - 1])[0],
-                                             rel=1e-9, abs=1e-9 * wmax)
+        assert ic.omegas[k] == pytest.approx(
+            _body_field(sol, ic.bodies[k - 1])[0], rel=1e-9, abs=1e-9 * wmax
+        )
 
 
 @pytest.mark.parametrize("path", TWO_INPUTS, ids=[f.stem for f in TWO_INPUTS])
@@ -237,6 +264,7 @@ def test_two_inputs_centres_refused_in_one_line_saying_why(path):
     """With two inputs a centre of two bodies depends on the ratio of the input speeds:
     Kennedy's theorem does not reach every centre, and says so (docs/scene-format.md)."""
     from polygon_method.common.errors import SingularStepError
+
     with pytest.raises(SingularStepError, match="two inputs") as exc:
         locate(solved(path)[1])
     assert "\n" not in str(exc.value)
@@ -247,23 +275,28 @@ def test_answers_in_inch_units():
     refused: "unknown unit 'in/s'")."""
     from polygon_method import parse_scene
     from polygon_method.check import check_answers
+
     scene, sol, ref = solved(HERE / "fourbar_inches.toml")
     v = float(mpmath_norm(ref["velocities"]["A"])) / 0.0254
     a = float(mpmath_norm(ref["accelerations"]["B"])) / 0.3048
     t = abs(sol.input_torque) / (4.4482216152605 * 0.0254)
-    text = (HERE / "fourbar_inches.toml").read_text(encoding="utf-8") + f"""
+    text = (
+        (HERE / "fourbar_inches.toml").read_text(encoding="utf-8")
+        + f"""
 [answers]
 tolerance = "0.01%"
 v_A = "{v:.7g} in/s"
 a_B = "{a:.7g} ft/s^2"
 torque = "{t:.7g} lbf in"
 """
+    )
     verdicts = check_answers(solve(parse_scene(text)))
     assert [vd.ok for vd in verdicts] == [True, True, True], verdicts
 
 
 def mpmath_norm(v):
     import mpmath
+
     return mpmath.sqrt(v[0] ** 2 + v[1] ** 2)
 
 
@@ -271,16 +304,19 @@ _GOOD, _REFUSED = turned_cases()
 TURNED = [pytest.param(f, a, id=f"{f.stem}-{a}") for f, a in _GOOD]
 
 
-@pytest.mark.parametrize("path,angle,exc", [pytest.param(f, a, e, id=f"{f.stem}-{a}")
-                                            for f, a, e in _REFUSED])
+@pytest.mark.parametrize(
+    "path,angle,exc", [pytest.param(f, a, e, id=f"{f.stem}-{a}") for f, a, e in _REFUSED]
+)
 def test_turned_where_refused_the_refusal_is_one_line_naming_the_step_and_it_is_true(
-        path, angle, exc):
+    path, angle, exc
+):
     """Where a scene turned to 0/90/180/270 deg is refused, the refusal is one line naming
     the step, the [assembly] key or the given motion's [input] key, says why in numbers written without rounding noise,
     and is an assembly or singularity refusal (never another fault)."""
     import re
 
     from polygon_method.common.errors import AssemblyError, SingularStepError
+
     msg = str(exc)
     assert isinstance(exc, (AssemblyError, SingularStepError)), msg
     assert "\n" not in msg and re.search(r"step \d+ \(|\[assembly\] |\[input\] \w+ ", msg), msg
@@ -297,9 +333,14 @@ def test_turned_to_the_special_angles_matches_reference(path, angle):
     assert err < REL, f"{what}: relative error {err:.2e}"
 
 
-DEFAULTED = [(f, s.point) for f in FILES for s in load_scene(f).sliders
-             if s.point not in load_scene(f).assembly and s.point not in load_scene(f).ground
-             and other_position(load_scene(f), solved(f)[1].P, s.point) is not None]
+DEFAULTED = [
+    (f, s.point)
+    for f in FILES
+    for s in load_scene(f).sliders
+    if s.point not in load_scene(f).assembly
+    and s.point not in load_scene(f).ground
+    and other_position(load_scene(f), solved(f)[1].P, s.point) is not None
+]
 
 
 @pytest.mark.parametrize("path,X", DEFAULTED, ids=[f"{f.stem}-{X}" for f, X in DEFAULTED])
@@ -318,10 +359,13 @@ def test_rocker_driven_through_a_block_is_the_output():
     swing (2 acos(O2-A / O2O4) = 132.84 deg, between the limit positions where it stands
     perpendicular to the lever) was not reported."""
     from polygon_method.linkage import analyse
+
     text = analyse(load_scene(HERE / "slotted_lever_driven.toml")).text()
     swing = math.degrees(2 * math.acos(120 / 300))
-    assert f"output link O2-A: swings between -156.4218 and -23.5782 deg: swing {swing:.4f} deg" \
-        in text, text
+    assert (
+        f"output link O2-A: swings between -156.4218 and -23.5782 deg: swing {swing:.4f} deg"
+        in text
+    ), text
 
 
 def _free_ends(scene):
@@ -329,12 +373,12 @@ def _free_ends(scene):
     fixed swivel) whose free end the scene leaves to the default."""
     out = []
     for s in scene.sliders:
-        if not isinstance(s, GuideSlider) or not (s.point in scene.ground
-                                                   or s.point == scene.input.tip):
+        if not isinstance(s, GuideSlider) or not (
+            s.point in scene.ground or s.point == scene.input.tip
+        ):
             continue
         for end, pivot in ((s.first, s.second), (s.second, s.first)):
-            if end not in scene.ground and end != scene.input.tip and \
-                    end not in scene.assembly:
+            if end not in scene.ground and end != scene.input.tip and end not in scene.assembly:
                 out.append((s.point, pivot, end))
     return out
 
@@ -362,7 +406,7 @@ def test_peaucellier_point_moves_on_its_straight_line():
         assert sol.P["D"][0] == pytest.approx(0.1, abs=1e-15)
         assert abs(sol.V["D"][0]) <= 1e-12 * vs and abs(sol.A["D"][0]) <= 1e-12 * as_
         oc, od = math.hypot(*sol.P["C"]), math.hypot(*sol.P["D"])
-        assert oc * od == pytest.approx(0.15 ** 2 - 0.05 ** 2, rel=1e-13)
+        assert oc * od == pytest.approx(0.15**2 - 0.05**2, rel=1e-13)
 
 
 GIVEN = [f for f in FILES if load_scene(f).input.given is not None]
@@ -383,11 +427,10 @@ def test_the_reference_moves_the_given_quantity_as_stated(path):
         cyl = scene.cylinder(g.names[0])
         d = [ref["positions"][cyl.rod][k] - ref["positions"][cyl.barrel][k] for k in (0, 1)]
         v = [ref["velocities"][cyl.rod][k] - ref["velocities"][cyl.barrel][k] for k in (0, 1)]
-        a = [ref["accelerations"][cyl.rod][k] - ref["accelerations"][cyl.barrel][k]
-             for k in (0, 1)]
+        a = [ref["accelerations"][cyl.rod][k] - ref["accelerations"][cyl.barrel][k] for k in (0, 1)]
         L = mpmath.sqrt(d[0] ** 2 + d[1] ** 2)
         got = (d[0] * v[0] + d[1] * v[1]) / L  # L' and L'' of L^2 = d . d
-        rate = (v[0] ** 2 + v[1] ** 2 + d[0] * a[0] + d[1] * a[1] - got ** 2) / L
+        rate = (v[0] ** 2 + v[1] ** 2 + d[0] * a[0] + d[1] * a[1] - got**2) / L
     elif g.kind == "vs":
         s = ref["sliders"][g.names[0]]
         got, rate = s["vs"], s["as"]

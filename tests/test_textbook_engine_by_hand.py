@@ -32,7 +32,7 @@ def close(got, want, rel=REL):
 
 
 def _x(r, l, t):  # the piston's distance from the crank shaft, crank t from the i.d.c.
-    return r * mpmath.cos(t) + mpmath.sqrt(l ** 2 - (r * mpmath.sin(t)) ** 2)
+    return r * mpmath.cos(t) + mpmath.sqrt(l**2 - (r * mpmath.sin(t)) ** 2)
 
 
 def test_piston_effort_thrusts_crank_effort_by_the_books_formulas():
@@ -41,7 +41,7 @@ def test_piston_effort_thrusts_crank_effort_by_the_books_formulas():
     mpmath.mp.dps = 30
     r, l, m = mpf("0.3"), mpf("1.5"), mpf(250)
     w, t = 180 * 2 * mpmath.pi / 60, mpmath.radians(30)
-    a_piston = mpmath.diff(lambda u: _x(r, l, u), t, 2) * w ** 2  # +: away from the crank
+    a_piston = mpmath.diff(lambda u: _x(r, l, u), t, 2) * w**2  # +: away from the crank
     F_L = mpf("0.5e6") * mpmath.pi / 4 * mpf("0.4") ** 2  # towards the crank
     F_P = F_L + m * a_piston  # the inertia force -m a, towards the crank
     phi = mpmath.asin(r * mpmath.sin(t) / l)
@@ -70,10 +70,15 @@ def test_inertia_torque_with_the_rods_mass_by_virtual_power():
         G = tuple(A[i] + ag / l * (B[i] - A[i]) for i in range(2))
         return (A + B + G + (mpmath.atan2(B[1] - A[1], B[0] - A[0]),))[k]
 
-    d = [(mpmath.diff(lambda s: place(k, s), 0, 1), mpmath.diff(lambda s: place(k, s), 0, 2))
-         for k in range(7)]
-    power = (60 * sum(d[k][0] * d[k][1] for k in (4, 5)) + 100 * d[2][0] * d[2][1]
-             + 60 * mpf("0.28") ** 2 * d[6][0] * d[6][1])
+    d = [
+        (mpmath.diff(lambda s: place(k, s), 0, 1), mpmath.diff(lambda s: place(k, s), 0, 2))
+        for k in range(7)
+    ]
+    power = (
+        60 * sum(d[k][0] * d[k][1] for k in (4, 5))
+        + 100 * d[2][0] * d[2][1]
+        + 60 * mpf("0.28") ** 2 * d[6][0] * d[6][1]
+    )
     sol = solve(load_scene(HERE / "engine_rod_inertia.toml"))
     close(sol.forces.input_torque, power / w)
 
@@ -89,8 +94,9 @@ def test_flywheel_from_the_indicator_diagram_by_quadrature():
     def p(t):
         d = mpmath.degrees(t)
         k = max(i for i in range(len(angles) - 1) if angles[i] <= d or i == 0)
-        return (bar[k] + (bar[k + 1] - bar[k]) * (d - angles[k]) / (angles[k + 1] - angles[k])
-                ) * mpf(100000)
+        return (
+            bar[k] + (bar[k + 1] - bar[k]) * (d - angles[k]) / (angles[k + 1] - angles[k])
+        ) * mpf(100000)
 
     def T(t):  # the gas force towards the crank times the piston's lever: -F dx/dt
         return -p(t) * area * mpmath.diff(lambda u: _x(r, l, u), t)
@@ -107,16 +113,17 @@ def test_flywheel_from_the_indicator_diagram_by_quadrature():
 
     def E(t):  # the energy above the mean from 0 to t
         cuts = [n for n in nodes if n < t] + [t]
-        return sum(mpmath.quad(lambda u: T(u) - mean, [cuts[i], cuts[i + 1]])
-                   for i in range(len(cuts) - 1))
+        return sum(
+            mpmath.quad(lambda u: T(u) - mean, [cuts[i], cuts[i + 1]]) for i in range(len(cuts) - 1)
+        )
 
     dE = abs(E(roots[1]) - E(roots[0]))
     close(tm.dE_max, dE)
     w = 600 * 2 * mpmath.pi / 60
     cs, _, inertia, mass = tm.flywheel
     close(cs, mpf("0.03"), 1e-15)
-    close(inertia, dE / (w ** 2 * mpf("0.03")))
-    close(mass, dE / (w ** 2 * mpf("0.03")) / mpf("0.2") ** 2)
+    close(inertia, dE / (w**2 * mpf("0.03")))
+    close(mass, dE / (w**2 * mpf("0.03")) / mpf("0.2") ** 2)
 
 
 def test_vertical_engine_weight_adds_to_the_piston_effort():
@@ -128,7 +135,7 @@ def test_vertical_engine_weight_adds_to_the_piston_effort():
     mpmath.mp.dps = 30
     r, l, m, g = mpf("0.1"), mpf("0.45"), mpf(20), mpf("9.81")
     w, t = 1000 * 2 * mpmath.pi / 60, mpmath.radians(40)
-    a_away = mpmath.diff(lambda u: _x(r, l, u), t, 2) * w ** 2
+    a_away = mpmath.diff(lambda u: _x(r, l, u), t, 2) * w**2
     F_P = mpf("1.2e6") * mpmath.pi / 4 * mpf("0.12") ** 2 + m * a_away + m * g
     phi = mpmath.asin(r * mpmath.sin(t) / l)
     sc = load_scene(HERE / "vertical_engine_weight_gas.toml")

@@ -35,7 +35,8 @@ def test_steps_write_no_rounding_noise_at_mid_stroke():
 
 
 NOISE_CASES = [pytest.param(f, None, id=f.stem) for f in FILES] + [
-    pytest.param(f, a, id=f"{f.stem}-{a}") for f, a in turned_cases()[0]]
+    pytest.param(f, a, id=f"{f.stem}-{a}") for f, a in turned_cases()[0]
+]
 
 
 @pytest.mark.parametrize("path,angle", NOISE_CASES)
@@ -56,14 +57,16 @@ def test_reports_write_no_noise(path, angle):
 
 def test_default_slotted_end_note_reads_as_english():
     _, sol, _ = solved(HERE / "oscillating_cylinder.toml")
-    assert ("C: of its two positions the one on the side of the block was taken"
-            in " ".join(sol.notes))
+    assert "C: of its two positions the one on the side of the block was taken" in " ".join(
+        sol.notes
+    )
 
 
 def test_sweep_summary_writes_a_true_zero_as_zero():
     """The rocker's end C stands still at the ends of its swing: the summary's minimum of
     v_C is 0 (it printed 1.18743e-13)."""
     from polygon_method.linkage.summary import summarize
+
     scene = load_scene(HERE / "block_on_coupler.toml")
     text = summarize(scene, [math.radians(5.0 * k) for k in range(72)]).text()
     row = next(ln for ln in text.splitlines() if ln.startswith("v_C "))
@@ -75,6 +78,7 @@ def test_engine_formulas_write_a_true_zero_as_zero():
     """At 90 deg from i.d.c. the rod does not turn: exact and formula are 0 (the exact
     printed 6.57668e-15, the formula 2.13741e-15)."""
     from polygon_method.linkage import analyse
+
     text = analyse(load_scene(HERE / "engine_inline_270.toml")).text()
     row = next(ln for ln in text.splitlines() if "rod CP: |omega|" in ln)
     assert row.split()[3:6] == ["0", "0", "0"], row
@@ -86,6 +90,7 @@ def test_page_data_writes_rounding_noise_as_zero():
     page as 0.0000000000000016."""
     from polygon_method.page.data import page_data
     from polygon_method.page.frames import frames
+
     d = page_data(frames(load_scene(HERE / "slotted_lever_270.toml"), 12))
     k = d["start"]
     assert d["theta"][k] == 270.0
@@ -100,6 +105,7 @@ def test_centres_drawing_with_two_centres_at_one_pin():
     centres at one place (I23 = I24 at A) has no direction of its own; the drawing failed
     with "OverflowError: cannot convert float infinity to integer"."""
     from polygon_method.draw import render
+
     sol = solve(load_scene(HERE / "slotted_lever_270.toml"))
     data, _, _ = render(sol, "svg", "centres", None, "I")
     svg = data.decode() if isinstance(data, bytes) else data
@@ -118,12 +124,14 @@ def test_a_load_that_takes_no_power_gives_no_torque():
     assert not NOISE.search(text)
     from polygon_method.page.data import page_data
     from polygon_method.page.frames import frames
+
     d = page_data(frames(scene, 12))
     assert d["torque"][d["start"]] == 0.0 and d["torque"][d["start"] + 1] != 0.0
 
 
 def test_path_and_force_directions_are_exact_at_right_angles():
     from polygon_method import parse_scene
+
     sc = parse_scene("""
 [ground]
 O = [0, 0]
@@ -149,6 +157,7 @@ def test_assembly_refusal_names_positions_without_noise():
     lever is vertical): the refusal printed P's positions as [5.08699e-15, 120]."""
     from polygon_method import parse_scene
     from polygon_method.common.errors import AssemblyError
+
     with pytest.raises(AssemblyError) as exc:
         solve(parse_scene(at_angle(HERE / "whitworth_180.toml", 90)))
     assert "[0, 120]" in str(exc.value) and "[0, -120]" in str(exc.value)
@@ -161,11 +170,15 @@ def test_variants_answer_key_writes_a_true_zero_as_zero():
     from polygon_method import parse_scene
     from polygon_method.variants import generate
     from polygon_method.variants.papers import answer_key_csv, answer_key_markdown
-    text = (HERE / "slotted_lever_270.toml").read_text(encoding="utf-8") + """
+
+    text = (
+        (HERE / "slotted_lever_270.toml").read_text(encoding="utf-8")
+        + """
 [variants]
 angle = [270]
 "O2-A" = { from = 90, to = 120, step = 10 }
 """
+    )
     vs = generate(parse_scene(text), 3, 1)
     md, csv = answer_key_markdown(vs), answer_key_csv(vs)
     assert not NOISE.search(md) and not NOISE.search(csv), (md, csv)
@@ -177,6 +190,7 @@ def test_pin_between_links_turning_alike_rubs_at_zero():
     angle is too and the coupler and the rocker turn alike: pin B does not rub. solve
     printed 1.421e-17 m/s, the steps "|6.818 - 6.818| x 0.008 = 1.421e-17 m/s"."""
     from polygon_method import parse_scene
+
     sol = solve(parse_scene(at_angle(HERE / "fourbar_crank_rocker_crossed.toml", 180)))
     assert sol.omega("A-B") == pytest.approx(sol.omega("O4-B"), rel=1e-12)
     assert re.search(r"(?m)^B +8 +0$", solution_text(sol))
@@ -188,6 +202,7 @@ def test_centres_distance_of_a_point_at_its_centre_is_zero():
     """The piston at the outer dead centre is its rod's centre with the ground: the table
     gave its distance as 4.2863e-17 m."""
     from polygon_method import parse_scene
+
     sol = solve(parse_scene(at_angle(HERE / "engine_inline_270.toml", 180)))
     text = centres_text(locate(sol))
     assert "x 0 m = 0 m/s" in text and not NOISE.search(text)
@@ -198,6 +213,7 @@ def test_linkage_text_has_no_double_blank_line(path):  # travel is no crank's tu
     """The oscillating cylinder has no transmission angle: its output's range followed two
     blank lines."""
     from polygon_method.linkage import analyse
+
     text = analyse(load_scene(path)).text()
     assert "\n\n\n" not in text
 
@@ -217,11 +233,15 @@ def test_check_takes_a_zero_torque_as_zero():
     shows 0 (it showed "1.2021e-13 N m, error 100.00 %, tolerance 8e+15 %")."""
     from polygon_method.check import check_answers, verdicts_text
     from polygon_method.scene import parse_scene
-    text = (HERE / "coupling_rod_90.toml").read_text(encoding="utf-8") + """
+
+    text = (
+        (HERE / "coupling_rod_90.toml").read_text(encoding="utf-8")
+        + """
 [answers]
 torque = "0 N m"
 rub_B = "0.6283 m/s"
 """
+    )
     verdicts = check_answers(solve(parse_scene(text)))
     assert [v.ok for v in verdicts] == [True, True]
     assert verdicts[0].correct == 0.0
@@ -232,12 +252,18 @@ def test_point_under_the_block_is_not_labelled_as_a_point_of_the_scene():
     """A slotted lever carrying a point named A1: the lever's point under the block A was
     labelled a1 too (two a1 on the velocity polygon, two a1' on the acceleration one)."""
     from polygon_method import parse_scene
-    from polygon_method.polygons.constructions import acceleration_constructions, velocity_constructions
-    text = (HERE / "slotted_lever_270.toml").read_text(encoding="utf-8").replace(
-        "[sliders]", '[points]\nA1 = { on = "O1-P", along = 450 }\n\n[sliders]')
+    from polygon_method.polygons.constructions import (
+        acceleration_constructions,
+        velocity_constructions,
+    )
+
+    text = (
+        (HERE / "slotted_lever_270.toml")
+        .read_text(encoding="utf-8")
+        .replace("[sliders]", '[points]\nA1 = { on = "O1-P", along = 450 }\n\n[sliders]')
+    )
     sol = solve(parse_scene(text))
-    for cons, a1 in ((velocity_constructions(sol), "a1"),
-                     (acceleration_constructions(sol), "a1'")):
+    for cons, a1 in ((velocity_constructions(sol), "a1"), (acceleration_constructions(sol), "a1'")):
         labels = [c.finds for c in cons] + [lab for c in cons for lab, _ in c.named]
         assert labels.count(a1) == 1, labels
         assert ("a2'" if a1.endswith("'") else "a2") in labels
@@ -249,10 +275,14 @@ def test_check_of_a_centre_on_an_axis_shows_no_noise():
     correct position as [4.4904e-14, -116.67] mm."""
     from polygon_method.check import check_answers, verdicts_text
     from polygon_method.scene import parse_scene
-    text = (HERE / "slotted_lever_270.toml").read_text(encoding="utf-8") + """
+
+    text = (
+        (HERE / "slotted_lever_270.toml").read_text(encoding="utf-8")
+        + """
 [answers]
 I_25 = [0, -116.7]
 """
+    )
     verdicts = check_answers(solve(parse_scene(text)))
     assert verdicts[0].ok
     text = verdicts_text(verdicts)
@@ -266,6 +296,7 @@ def test_elliptic_trammel_with_both_sliders_is_refused_as_redundant():
     with B's slider alone solves, and C stays on the y axis by itself."""
     from polygon_method import parse_scene
     from polygon_method.common.errors import MobilityError
+
     text = """
 [ground]
 O = [0, 0]
@@ -284,8 +315,13 @@ angle = 30
 speed = "10 rad/s ccw"
 """
     with pytest.raises(MobilityError) as exc:
-        solve(parse_scene(text.replace("{C}", "").replace(
-            "{slider}", 'C = { path = "vertical", through = "O" }')))
+        solve(
+            parse_scene(
+                text.replace("{C}", "").replace(
+                    "{slider}", 'C = { path = "vertical", through = "O" }'
+                )
+            )
+        )
     assert "slider C is redundant (C is already placed" in str(exc.value)
     assert "cannot slide" not in str(exc.value)
     sol = solve(parse_scene(text.replace("{C}", "").replace("{slider}", "")))
@@ -297,13 +333,17 @@ def test_check_shows_the_correct_value_in_the_answers_own_unit():
     values in SI only ("3.192 m/s" beside "125.7 in/s")."""
     from polygon_method.check import check_answers, verdicts_text
     from polygon_method.scene import parse_scene
+
     scene, sol, _ = solved(HERE / "fourbar_inches.toml")
-    text = (HERE / "fourbar_inches.toml").read_text(encoding="utf-8") + """
+    text = (
+        (HERE / "fourbar_inches.toml").read_text(encoding="utf-8")
+        + """
 [answers]
 v_A = "125.7 in/s"
 omega_A-B = "100 rpm"
 v_B = "3 m/s"
 """
+    )
     table = verdicts_text(check_answers(solve(parse_scene(text))))
     v_a = math.hypot(*sol.V["A"])
     assert f"{v_a:.4g} m/s ({v_a / 0.0254:.4g} in/s)" in table, table
@@ -312,6 +352,7 @@ v_B = "3 m/s"
     row = next(ln for ln in table.splitlines() if ln.startswith("v_B "))
     assert "(" not in row  # given in SI: SI only
     from polygon_method.page.html import check_html  # the page's table says the same
+
     html = check_html(check_answers(solve(parse_scene(text))), "")
     assert f"{v_a:.4g} m/s ({v_a / 0.0254:.4g} in/s)" in html
 
@@ -322,6 +363,7 @@ def test_sweep_summary_transmission_angle_at_a_change_point_is_zero():
     0.0572958 deg, the refusal threshold's value carried by the samples next to it (and
     the linkage command says 0.00)."""
     from polygon_method.linkage.summary import summarize
+
     scene = load_scene(HERE / "coupling_rod_90.toml")
 
     def mu_row(degrees):

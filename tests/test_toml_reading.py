@@ -40,8 +40,8 @@ def _variants(text):
     lines = text.split("\n")
     yield text
     for i in range(len(lines)):
-        yield "\n".join(lines[:i] + lines[i + 1:])
-        yield "\n".join(lines[:i + 1] + lines[i:])
+        yield "\n".join(lines[:i] + lines[i + 1 :])
+        yield "\n".join(lines[: i + 1] + lines[i:])
 
 
 def test_the_corpus_is_there():
@@ -86,8 +86,10 @@ def line_by_regex(lines, table, key=None):
             if re.match(rf"^\s*\"?{re.escape(key)}\"?\s*=", line):
                 return i
     if key is not None and table:  # a dotted key: links.BC = 66, or input.angle = 30
-        dotted = re.compile(rf"^\s*\"?{re.escape(table)}\"?\s*\.\s*\"?{re.escape(key)}"
-                            rf"\"?\s*=")
+        dotted = re.compile(
+            rf"^\s*\"?{re.escape(table)}\"?\s*\.\s*\"?{re.escape(key)}"
+            rf"\"?\s*="
+        )
         for i, line in enumerate(lines, 1):
             if dotted.match(line):
                 return i

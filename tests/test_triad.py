@@ -90,8 +90,12 @@ def test_a_full_turn_closes_every_loop_and_comes_back_to_the_same_assembly():
     fr = sw.evaluate(th)
     assert not fr.bad.any()
     P = fr.P
-    lengths = {"AB": ("A", "B", 0.110), "EC": ("E", "C", 0.122), "FD": ("F", "D", 0.101),
-               "BC": ("B", "C", 0.078)}
+    lengths = {
+        "AB": ("A", "B", 0.110),
+        "EC": ("E", "C", 0.122),
+        "FD": ("F", "D", 0.101),
+        "BC": ("B", "C", 0.078),
+    }
     for a, b, L in lengths.values():
         r = np.hypot(np.asarray(P[a][0]) - P[b][0], np.asarray(P[a][1]) - P[b][1])
         assert np.max(np.abs(r - L)) < 1e-14
@@ -119,10 +123,13 @@ def _brute_force(K, prm, n=36):
     each by plain Newton on the three closing equations with numpy's linear solve, all
     starts at once (an independent search)."""
     l1, l2, l3, u2x, u2y, u3x, u3y = prm
-    phi, th = np.meshgrid(np.linspace(0, 2 * math.pi, n, endpoint=False),
-                          np.linspace(-math.pi, math.pi, n, endpoint=False))
-    q = np.stack([K[0][0] + l1 * np.cos(phi.ravel()), K[0][1] + l1 * np.sin(phi.ravel()),
-                  th.ravel()], axis=1)
+    phi, th = np.meshgrid(
+        np.linspace(0, 2 * math.pi, n, endpoint=False),
+        np.linspace(-math.pi, math.pi, n, endpoint=False),
+    )
+    q = np.stack(
+        [K[0][0] + l1 * np.cos(phi.ravel()), K[0][1] + l1 * np.sin(phi.ravel()), th.ravel()], axis=1
+    )
     u = np.array([[0.0, 0.0], [u2x, u2y], [u3x, u3y]])
     Ks = np.array(K)
     for _ in range(80):
@@ -132,8 +139,10 @@ def _brute_force(K, prm, n=36):
         r = V - Ks[None]
         F = np.sum(r * r, axis=2) - np.array(prm[:3]) ** 2
         d = V - V[:, :1]
-        J = np.stack([2 * r[..., 0], 2 * r[..., 1],
-                      2 * (d[..., 0] * r[..., 1] - d[..., 1] * r[..., 0])], axis=2)
+        J = np.stack(
+            [2 * r[..., 0], 2 * r[..., 1], 2 * (d[..., 0] * r[..., 1] - d[..., 1] * r[..., 0])],
+            axis=2,
+        )
         ok = np.abs(np.linalg.det(J)) > 1e-30
         J[~ok] = np.eye(3)
         dq = np.linalg.solve(J, F[..., None])[..., 0]
@@ -199,8 +208,12 @@ def test_condition_is_the_hadamard_ratio_of_the_normalised_jacobian():
 def test_a_triad_that_cannot_close_is_one_line_and_exit_code_2(tmp_path):
     bad = tmp_path / "bad.toml"
     bad.write_text(SIX.read_text().replace("FD = 101", "FD = 30"))
-    r = subprocess.run([sys.executable, "-m", "polygon_method", "solve", str(bad)],
-                       capture_output=True, text=True, cwd=ROOT)
+    r = subprocess.run(
+        [sys.executable, "-m", "polygon_method", "solve", str(bad)],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+    )
     assert r.returncode == 2
     assert r.stderr.count("\n") == 1 and "cannot assemble the triad B, C, D" in r.stderr
     assert "Traceback" not in r.stderr
@@ -251,13 +264,19 @@ def _designed(seed):
     r, ang = rng.uniform(10, 30), rng.uniform(0, 360)
     A = (r * math.cos(math.radians(ang)), r * math.sin(math.radians(ang)))
     G = np.array([120.0, 90.0]) + rng.normal(size=2) * 10
-    V = [tuple(G + 45 * np.array([math.cos(t), math.sin(t)]) * rng.uniform(0.8, 1.2))
-         for t in np.radians([200, 320, 80]) + rng.normal(size=3) * 0.2]
+    V = [
+        tuple(G + 45 * np.array([math.cos(t), math.sin(t)]) * rng.uniform(0.8, 1.2))
+        for t in np.radians([200, 320, 80]) + rng.normal(size=3) * 0.2
+    ]
     B, C, D = V
-    E = tuple(np.array(C) + rng.uniform(90, 130) * np.array([math.cos(a), math.sin(a)])
-              for a in [rng.uniform(1.5, 2.5)])[0]
-    F = tuple(np.array(D) + rng.uniform(90, 130) * np.array([math.cos(a), math.sin(a)])
-              for a in [rng.uniform(-1.5, -0.5)])[0]
+    E = tuple(
+        np.array(C) + rng.uniform(90, 130) * np.array([math.cos(a), math.sin(a)])
+        for a in [rng.uniform(1.5, 2.5)]
+    )[0]
+    F = tuple(
+        np.array(D) + rng.uniform(90, 130) * np.array([math.cos(a), math.sin(a)])
+        for a in [rng.uniform(-1.5, -0.5)]
+    )[0]
     d = math.dist
     turn = "cw" if (C[0] - B[0]) * (D[1] - B[1]) - (C[1] - B[1]) * (D[0] - B[0]) < 0 else "ccw"
     text = f"""
@@ -297,8 +316,12 @@ def test_random_triads_solve_their_drawing_and_match_the_reference(seed):
 
 def test_a_plate_of_three_links_is_the_same_triad_as_a_plate_with_a_carried_point():
     TRI = ROOT / "tests" / "textbook" / "class3_triangle_plate.toml"
-    tri = solve(parse_scene(at(TRI.read_text(), 60).replace("90 rpm cw", "120 rpm ccw")
-                            + "acceleration = \"30 rad/s^2 cw\"\n"))
+    tri = solve(
+        parse_scene(
+            at(TRI.read_text(), 60).replace("90 rpm cw", "120 rpm ccw")
+            + 'acceleration = "30 rad/s^2 cw"\n'
+        )
+    )
     plate = solve(load_scene(SIX))
     assert [st.kind for st in tri.plan.steps] == ["crank", "triad"]
     for p in "BCD":
@@ -321,13 +344,17 @@ def test_check_names_the_other_assembly_of_the_triad():
     50-digit reference) are diagnosed as the other branch."""
     from polygon_method.check import check_answers
     from polygon_method.scene import parse_answers
+
     sc = load_scene(WORKED)
     sol = solve(sc)
     st = sol.plan.steps[1]
     K = tuple(sol.P[k] for k in st.knowns)
     prm = st.params
-    others = [q for q in _brute_force([np.array(k) for k in K], prm)
-              if math.dist(q[:2], sol.P["B"]) > 1e-6]
+    others = [
+        q
+        for q in _brute_force([np.array(k) for k in K], prm)
+        if math.dist(q[:2], sol.P["B"]) > 1e-6
+    ]
     assert others
     q = others[0]
     guess = dict(sol.P)
@@ -343,6 +370,7 @@ def test_check_names_the_other_assembly_of_the_triad():
 
 def mpmath_hypot(v):
     import mpmath
+
     return mpmath.sqrt(v[0] ** 2 + v[1] ** 2)
 
 
@@ -364,31 +392,40 @@ def test_the_error_bound_holds_near_the_triads_limit(delta):
     """Approaching the limit (the condition falls like the root of the distance) every
     error against the 50-digit reference stays within its bound."""
     from polygon_method.solver.errorbound import error_bounds
+
     hi = max(math.degrees(lim.theta) for lim in Sweeper(parse_scene(LIMITED)).domain.limits)
     text = LIMITED.replace("angle = 60", f"angle = {hi - delta!r}").replace(
-        "B = [100, 80]", "B = [99, 70]")
+        "B = [100, 80]", "B = [99, 70]"
+    )
     sol = solve(parse_scene(text))
     ref = reference_solution(sol.scene, sol.P)
     b = error_bounds(sol)
     sz = b.scales
     worst = 0.0
     for p in "BCD":
-        for tab, got, bound, size in (("positions", sol.P, b.P, sz["position"]),
-                                      ("velocities", sol.V, b.V, sz["velocity"]),
-                                      ("accelerations", sol.A, b.A, sz["acceleration"])):
+        for tab, got, bound, size in (
+            ("positions", sol.P, b.P, sz["position"]),
+            ("velocities", sol.V, b.V, sz["velocity"]),
+            ("accelerations", sol.A, b.A, sz["acceleration"]),
+        ):
             err = math.dist(got[p], tuple(float(c) for c in ref[tab][p]))
             worst = max(worst, err / (bound[p] * size))
     for lk in ("AB", "BC", "EC", "FD"):
-        worst = max(worst, abs(sol.W[lk] - float(ref["omega"][lk])) / (b.W[lk] * sz["omega"]),
-                    abs(sol.Al[lk] - float(ref["alpha"][lk])) / (b.Al[lk] * sz["alpha"]))
+        worst = max(
+            worst,
+            abs(sol.W[lk] - float(ref["omega"][lk])) / (b.W[lk] * sz["omega"]),
+            abs(sol.Al[lk] - float(ref["alpha"][lk])) / (b.Al[lk] * sz["alpha"]),
+        )
     assert worst <= 1.0, worst
     assert sol.conditions[1] < 0.6
 
 
 def test_at_the_limit_the_triad_is_refused_as_singular_with_its_words():
     from polygon_method.common.errors import SingularStepError
+
     hi = max(math.degrees(lim.theta) for lim in Sweeper(parse_scene(LIMITED)).domain.limits)
     text = LIMITED.replace("angle = 60", f"angle = {hi - 1e-9!r}").replace(
-        "B = [100, 80]", "B = [99, 70]")
+        "B = [100, 80]", "B = [99, 70]"
+    )
     with pytest.raises(SingularStepError, match="the lines of AB, EC, FD meet in one point"):
         solve(parse_scene(text))

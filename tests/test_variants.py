@@ -79,9 +79,15 @@ def _dims(text):
     raw = tomllib.loads(text)
     om = raw["input"]["speed"].split()
     w = float(om[0]) * 2 * math.pi / 60 * (1 if om[2] == "ccw" else -1)
-    return (raw["links"]["AB"], raw["links"]["BC"], raw["links"]["CD"],
-            tuple(raw["ground"]["D"]), math.radians(raw["input"]["angle"]), w,
-            raw["points"]["E"]["along"])
+    return (
+        raw["links"]["AB"],
+        raw["links"]["BC"],
+        raw["links"]["CD"],
+        tuple(raw["ground"]["D"]),
+        math.radians(raw["input"]["angle"]),
+        w,
+        raw["points"]["E"]["along"],
+    )
 
 
 def _fourbar_by_hand(ab, bc, cd, d, theta, w):
@@ -230,11 +236,13 @@ angle = { from = 10, to = 170, step = 10 }
 def test_cli_writes_scenes_key_and_sheet_and_check_pairs_each_student(tmp_path):
     base = _write(tmp_path, FOURBAR)
     out = tmp_path / "class"
-    assert main(["variants", str(base), "--count", "8", "--seed", "7", "-o", str(out),
-                 "--pdf"]) == 0
+    assert (
+        main(["variants", str(base), "--count", "8", "--seed", "7", "-o", str(out), "--pdf"]) == 0
+    )
     names = sorted(p.name for p in out.iterdir())
-    assert names == ["answer-key.csv", "answer-key.md", "problem-sheet.md",
-                     "problem-sheet.pdf"] + [f"variant-{k:02d}.toml" for k in range(1, 9)]
+    assert names == ["answer-key.csv", "answer-key.md", "problem-sheet.md", "problem-sheet.pdf"] + [
+        f"variant-{k:02d}.toml" for k in range(1, 9)
+    ]
     pdf = (out / "problem-sheet.pdf").read_bytes()
     assert pdf.startswith(b"%PDF") and len(re.findall(rb"/Type /Page\b", pdf)) == 8
     rows = list(csv.DictReader((out / "answer-key.csv").open()))
@@ -250,16 +258,20 @@ def test_cli_writes_scenes_key_and_sheet_and_check_pairs_each_student(tmp_path):
     key = {r["variant"]: r for r in rows}
     answers = tmp_path / "answers"
     answers.mkdir()
-    right7 = (f'[answers]\nv_C = "{float(key["07"]["v_C (m/s)"]):.4f} m/s"\n'
-              f'omega_BC = "{abs(float(key["07"]["omega_BC (rad/s)"])):.4f} rad/s"\n')
+    right7 = (
+        f'[answers]\nv_C = "{float(key["07"]["v_C (m/s)"]):.4f} m/s"\n'
+        f'omega_BC = "{abs(float(key["07"]["omega_BC (rad/s)"])):.4f} rad/s"\n'
+    )
     (answers / "ann.toml").write_text('variant = "07"\n' + right7)
     (answers / "bob.toml").write_text('variant = "variant-03.toml"\n' + right7)
-    (answers / "eve.toml").write_text("variant = \"Variant 7\"\n" + right7)
+    (answers / "eve.toml").write_text('variant = "Variant 7"\n' + right7)
     (answers / "cy.toml").write_text(right7)  # names no variant
     (answers / "dee.toml").write_text('variant = "77"\n' + right7)
     book = tmp_path / "book.csv"
-    assert main(["check", str(base), str(answers), "--variants", str(out),
-                 "--gradebook", str(book)]) == 0
+    assert (
+        main(["check", str(base), str(answers), "--variants", str(out), "--gradebook", str(book)])
+        == 0
+    )
     graded = {r["student"]: r for r in csv.DictReader(book.open())}
     assert graded["ann"]["variant"] == "07" and graded["ann"]["right"] == "2"
     assert graded["bob"]["variant"] == "03" and graded["bob"]["v_C"].startswith("WRONG")
@@ -275,10 +287,12 @@ def test_cli_writes_scenes_key_and_sheet_and_check_pairs_each_student(tmp_path):
 
 
 def test_too_few_variants_is_one_line_and_writes_nothing(tmp_path, capsys):
-    text = FOURBAR.replace("BC = { from = 40, to = 110, step = 1 }", "BC = [88, 90]") \
-        .replace("angle = { from = 0, to = 355, step = 5 }", "angle = [60]") \
-        .replace('D = { x = [96, 100, 104] }\n', "").replace("E = { along = [30, 40, 50] }\n",
-                                                            "")
+    text = (
+        FOURBAR.replace("BC = { from = 40, to = 110, step = 1 }", "BC = [88, 90]")
+        .replace("angle = { from = 0, to = 355, step = 5 }", "angle = [60]")
+        .replace("D = { x = [96, 100, 104] }\n", "")
+        .replace("E = { along = [30, 40, 50] }\n", "")
+    )
     base = _write(tmp_path, text)
     out = tmp_path / "out"
     # 6 combinations, one of them the base problem itself (no variant): 5
@@ -291,19 +305,22 @@ def test_too_few_variants_is_one_line_and_writes_nothing(tmp_path, capsys):
     assert len(list(out.glob("variant-*.toml"))) == 5
 
 
-@pytest.mark.parametrize("line, words", [
-    ("BX = [60, 62]", "no link BX in [links] to vary (did you mean 'BC'?)"),
-    ("BC = { from = 75, to = 60, step = 1 }", "the range is empty"),
-    ("BC = { from = 60, to = 75, step = 0 }", "step = 0 must be positive"),
-    ("BC = []", "the list of values is empty"),
-    ('speed = ["100 rmp"]', "unknown unit 'rmp'"),
-    ('BC = ["60 rpm"]', "'rpm' is a unit of angular velocity, not of length"),
-    ("E = { alng = [1] }", "unknown key 'alng' (did you mean 'along'?)"),
-    ("min_condition = 1.5", "a sine between 0 and 1"),
-    ("A = { z = [1] }", "unknown key 'z'"),
-    ("BC = { from = 60, to = 75 }", "the range has no step"),
-    ("BC = { from = 60, to = 75, step = 5e-324 }", "holds more than 10000 values"),
-])
+@pytest.mark.parametrize(
+    "line, words",
+    [
+        ("BX = [60, 62]", "no link BX in [links] to vary (did you mean 'BC'?)"),
+        ("BC = { from = 75, to = 60, step = 1 }", "the range is empty"),
+        ("BC = { from = 60, to = 75, step = 0 }", "step = 0 must be positive"),
+        ("BC = []", "the list of values is empty"),
+        ('speed = ["100 rmp"]', "unknown unit 'rmp'"),
+        ('BC = ["60 rpm"]', "'rpm' is a unit of angular velocity, not of length"),
+        ("E = { alng = [1] }", "unknown key 'alng' (did you mean 'along'?)"),
+        ("min_condition = 1.5", "a sine between 0 and 1"),
+        ("A = { z = [1] }", "unknown key 'z'"),
+        ("BC = { from = 60, to = 75 }", "the range has no step"),
+        ("BC = { from = 60, to = 75, step = 5e-324 }", "holds more than 10000 values"),
+    ],
+)
 def test_a_bad_variants_table_is_one_located_line(tmp_path, capsys, line, words):
     text = FOURBAR.split("[variants]")[0] + "[variants]\n" + line + "\n"
     n = text.splitlines().index(line) + 1
@@ -328,6 +345,7 @@ def test_the_worked_problems_variants_table_changes_no_solution(capsys):
     """The seed four-bar states [variants]: its solve --json is that of the scene without
     the table, and 40 variants of it exist (it stays a triple rocker)."""
     from pathlib import Path
+
     path = Path(__file__).parent.parent / "worked_problems" / "fourbar_image_points.toml"
     text = path.read_text()
     assert "[variants]" in text
@@ -346,6 +364,7 @@ def test_a_rough_position_hint_follows_each_variants_own_figure():
     """Whitworth's lever end P is placed by a rough position read off the base figure; in
     each variant it is that variant's own P, on the base scene's branch."""
     from pathlib import Path
+
     text = (Path(__file__).parent.parent / "worked_problems" / "whitworth.toml").read_text()
     text += "\n[variants]\nangle = { from = 0, to = 355, step = 5 }\n"
     base = parse_scene(text)
@@ -365,22 +384,69 @@ def test_a_rough_position_hint_follows_each_variants_own_figure():
 from hypothesis import given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 
-_leaf = st.one_of(st.integers(-10**6, 10**6), st.floats(allow_nan=True, allow_infinity=True),
-                  st.booleans(), st.sampled_from(["60 mm", "100 rpm", "15 deg", "x", "",
-                                                  "3 rad/s ccw", "-5 cm", "1e9 m"]))
-_value = st.recursive(_leaf, lambda inner: st.one_of(
-    st.lists(inner, max_size=4),
-    st.dictionaries(st.sampled_from(["from", "to", "step", "unit", "x", "y", "along",
-                                     "distances", "B", "C", "diameter", "force", "z"]),
-                    inner, max_size=4)), max_leaves=8)
-_keys = st.sampled_from(["BC", "CD", "AB", "angle", "speed", "acceleration", "min_condition",
-                         "A", "D", "E", "B", "C", "Q", "BX", "O2-A", "id"])
+_leaf = st.one_of(
+    st.integers(-(10**6), 10**6),
+    st.floats(allow_nan=True, allow_infinity=True),
+    st.booleans(),
+    st.sampled_from(["60 mm", "100 rpm", "15 deg", "x", "", "3 rad/s ccw", "-5 cm", "1e9 m"]),
+)
+_value = st.recursive(
+    _leaf,
+    lambda inner: st.one_of(
+        st.lists(inner, max_size=4),
+        st.dictionaries(
+            st.sampled_from(
+                [
+                    "from",
+                    "to",
+                    "step",
+                    "unit",
+                    "x",
+                    "y",
+                    "along",
+                    "distances",
+                    "B",
+                    "C",
+                    "diameter",
+                    "force",
+                    "z",
+                ]
+            ),
+            inner,
+            max_size=4,
+        ),
+    ),
+    max_leaves=8,
+)
+_keys = st.sampled_from(
+    [
+        "BC",
+        "CD",
+        "AB",
+        "angle",
+        "speed",
+        "acceleration",
+        "min_condition",
+        "A",
+        "D",
+        "E",
+        "B",
+        "C",
+        "Q",
+        "BX",
+        "O2-A",
+        "id",
+    ]
+)
 
 
 @settings(max_examples=150, deadline=None)
-@given(table=st.dictionaries(_keys, _value, max_size=4),
-       variant=st.one_of(st.none(), st.dictionaries(st.sampled_from(["id", "of", "seed", "q"]),
-                                                    _leaf, max_size=3)))
+@given(
+    table=st.dictionaries(_keys, _value, max_size=4),
+    variant=st.one_of(
+        st.none(), st.dictionaries(st.sampled_from(["id", "of", "seed", "q"]), _leaf, max_size=3)
+    ),
+)
 def test_any_variants_table_reads_or_is_one_scene_error(table, variant):
     """Whatever [variants] and [variant] hold: a scene, or a SceneError naming the table;
     never another exception."""
@@ -407,8 +473,7 @@ def test_variants_output_directory_rules(tmp_path, capsys):
     afile.write_text("keep")
     assert main(["variants", str(base), "--count", "3", "-o", str(afile)]) == 2
     assert "not a directory" in capsys.readouterr().err and afile.read_text() == "keep"
-    assert main(["variants", str(base), "--count", "3", "-o",
-                 str(tmp_path / "no" / "such")]) == 2
+    assert main(["variants", str(base), "--count", "3", "-o", str(tmp_path / "no" / "such")]) == 2
     assert "no directory" in capsys.readouterr().err
     out = tmp_path / "class"
     assert main(["variants", str(base), "--count", "4", "--seed", "1", "-o", str(out)]) == 0

@@ -70,8 +70,9 @@ def test_the_problem_sheet_shows_the_students_figure_true_to_scale(variants):
         words = [t.get_text() for t in fig.texts]
         said = next(t for t in words if t.startswith("Figure: the configuration"))
         scale = parse_scale(said.split("drawn at ")[1], "length")
-        joints = {a.get_gid(): a.center for a in ax.patches
-                  if (a.get_gid() or "").startswith("joint-")}
+        joints = {
+            a.get_gid(): a.center for a in ax.patches if (a.get_gid() or "").startswith("joint-")
+        }
         cm = math.dist(joints["joint-B"], joints["joint-C"])
         assert cm * scale.per_cm == pytest.approx(v.values["BC"] * 1e-3, rel=1e-9)
         box = ax.get_position()
@@ -89,8 +90,11 @@ def test_variants_pdf_writes_the_sheet_with_figures(tmp_path, capsys):
     scene = tmp_path / "base.toml"
     scene.write_text(BASE + "BC = [60, 63, 70]\n")
     out = tmp_path / "class"
-    assert main(["variants", str(scene), "--count", "2", "--seed", "1", "-o", str(out),
-                 "--pdf"]) == 0
+    assert (
+        main(["variants", str(scene), "--count", "2", "--seed", "1", "-o", str(out), "--pdf"]) == 0
+    )
     pdf = (out / "problem-sheet.pdf").read_bytes()
-    assert pdf.startswith(b"%PDF") and pdf.count(b"/Type /Page\n") + \
-        pdf.count(b"/Type /Page ") + pdf.count(b"/Type/Page") >= 2
+    assert (
+        pdf.startswith(b"%PDF")
+        and pdf.count(b"/Type /Page\n") + pdf.count(b"/Type /Page ") + pdf.count(b"/Type/Page") >= 2
+    )

@@ -41,7 +41,7 @@ alpha_CA = "{al}"
 """
 
 CASES = [  # r, l (CA), phi0 (deg), L, h, s (mm), omega, alpha (rad/s, rad/s^2, ccw +)
-    (300, 300, 90, 1000, 0, 0, -4.0, 2.0),     # the book's: pinned to the rim at the top
+    (300, 300, 90, 1000, 0, 0, -4.0, 2.0),  # the book's: pinned to the rim at the top
     (300, 300, 30, 1200, 150, 250, 5.0, -3.0),
     (250, 150, 200, 900, 100, -400, -2.5, 0.0),  # a pin on a spoke
     (400, 400, -60, 1500, -50, 1000, 1.2, 7.5),
@@ -50,9 +50,11 @@ CASES = [  # r, l (CA), phi0 (deg), L, h, s (mm), omega, alpha (rad/s, rad/s^2, 
 
 def scene_text(r, l, phi, L, h, s, w, al, extra=""):
     def ang(x, unit):
-        return (f"{abs(x)} {unit} {'ccw' if x > 0 else 'cw'}" if x else f"0 {unit}")
-    return WHEEL.format(r=r, l=l, phi=phi, L=L, h=h, s=s, w=ang(w, "rad/s"),
-                        al=ang(al, "rad/s^2"), extra=extra)
+        return f"{abs(x)} {unit} {'ccw' if x > 0 else 'cw'}" if x else f"0 {unit}"
+
+    return WHEEL.format(
+        r=r, l=l, phi=phi, L=L, h=h, s=s, w=ang(w, "rad/s"), al=ang(al, "rad/s^2"), extra=extra
+    )
 
 
 def closed_form(r, l, phi, L, h, s, w, al):
@@ -78,9 +80,14 @@ def closed_form(r, l, phi, L, h, s, w, al):
 
     wAB = cross(rel, (vB[0] - vA[0], vB[1] - vA[1])) / (L * L)
     aAB = cross(rel, (aB[0] - aA[0], aB[1] - aA[1])) / (L * L)
-    return {"P": {"C": C, "A": A, "B": B}, "V": {"C": vC, "A": vA, "B": vB},
-            "A": {"C": aC, "A": aA, "B": aB}, "omega_AB": wAB, "alpha_AB": aAB,
-            "aI": (0.0, w * w * r)}  # the contact point: omega^2 r, up towards the centre
+    return {
+        "P": {"C": C, "A": A, "B": B},
+        "V": {"C": vC, "A": vA, "B": vB},
+        "A": {"C": aC, "A": aA, "B": aB},
+        "omega_AB": wAB,
+        "alpha_AB": aAB,
+        "aI": (0.0, w * w * r),
+    }  # the contact point: omega^2 r, up towards the centre
 
 
 @pytest.mark.parametrize("case", CASES)
@@ -133,6 +140,7 @@ def test_steps_say_the_wheel_rolls(tmp_path, capsys):
 
 def test_centres_put_the_wheel_about_its_contact(tmp_path, capsys):
     from polygon_method.solver.centres import locate
+
     case = CASES[1]
     sol = solve(parse_scene(scene_text(*case)))
     ic = locate(sol)
@@ -237,8 +245,7 @@ def test_sweep_runs_over_one_turn_and_matches_the_closed_form():
 def test_a_stated_travel_bounds_the_sweep():
     sc = parse_scene(scene_text(*CASES[0], extra="travel = [-100, 400]"))
     res = sweep(sc, stroke_places(sc, 6))
-    assert float(res.theta[0]) == pytest.approx(-0.1) and float(res.theta[-1]) == \
-        pytest.approx(0.4)
+    assert float(res.theta[0]) == pytest.approx(-0.1) and float(res.theta[-1]) == pytest.approx(0.4)
 
 
 # --------------------------------------------------------------------------- every view, answers
@@ -246,14 +253,17 @@ def test_a_stated_travel_bounds_the_sweep():
 
 def test_every_view_takes_a_wheel_driver(tmp_path, capsys):
     f = tmp_path / "t.toml"
-    f.write_text(scene_text(*CASES[0])
-                 + '[loads]\nB = { force = [-100, 0] }\n[answers]\nv_C = "1.2 m/s"\n')
+    f.write_text(
+        scene_text(*CASES[0]) + '[loads]\nB = { force = [-100, 0] }\n[answers]\nv_C = "1.2 m/s"\n'
+    )
     every_view(f, tmp_path)
     out = " ".join(capsys.readouterr().out.split())
     # the power balance by hand: F v_C + F_B . v_B = 0, v_C = omega r = 1.2 m/s, v_B = 2 v_C
     # (the rod translates at this instant): F = 100 x 2.4 / 1.2 = 200 N, F r = 60 N m
-    assert "input force at the centre C of wheel CA: 200 N to the right along the ground, " \
+    assert (
+        "input force at the centre C of wheel CA: 200 N to the right along the ground, "
         "i.e. a torque of 60 N m about the contact point" in out
+    )
     svg = (tmp_path / "d.svg").read_text()
     assert 'id="rolling-line' in svg and 'id="contact-' in svg  # the hatched ground, I
     assert 'id="block-C"' not in svg and 'id="guide-C"' not in svg  # no block at the centre
@@ -264,8 +274,10 @@ def test_check_keys_and_the_contact_slip(tmp_path, capsys):
     the rod instantaneously translating); the contact's acceleration taken as zero is
     named."""
     f = tmp_path / "t.toml"
-    f.write_text(scene_text(*CASES[0]) + '[answers]\nv_C = "1.2 m/s"\naI_CA = "4.8 m/s^2"\n'
-                 'omega_AB = "0 rad/s"\nv_B = "2.4 m/s"\nv_A = "2.4 m/s"\n')
+    f.write_text(
+        scene_text(*CASES[0]) + '[answers]\nv_C = "1.2 m/s"\naI_CA = "4.8 m/s^2"\n'
+        'omega_AB = "0 rad/s"\nv_B = "2.4 m/s"\nv_A = "2.4 m/s"\n'
+    )
     assert main(["check", str(f)]) == 0
     assert "5 of 5 right" in capsys.readouterr().out
     f.write_text(scene_text(*CASES[0]) + '[answers]\naI_CA = "0 m/s^2"\n')
@@ -280,6 +292,7 @@ def test_variants_are_made_and_each_matches_the_reference(tmp_path, capsys):
     from mpmath import mpf
     from reference import reference_solution
     from textbook_corpus import REL, worst_error
+
     f = tmp_path / "t.toml"
     f.write_text(scene_text(*CASES[0]) + "[variants]\nAB = { from = 900, to = 1100, step = 50 }\n")
     assert main(["variants", str(f), "--count", "3", "-o", str(tmp_path / "v")]) == 0
@@ -308,8 +321,9 @@ def test_the_force_analysis_takes_a_wheel_driver(tmp_path, capsys):
     holds them to the matrix method): a force answer is judged, not refused, and the
     driver's torque on the wheel is said."""
     f = tmp_path / "t.toml"
-    f.write_text(scene_text(*CASES[0]) + '[masses]\nAB = { mass = "5 kg" }\n[answers]\n'
-                 'F_B = "10 N"\n')
+    f.write_text(
+        scene_text(*CASES[0]) + '[masses]\nAB = { mass = "5 kg" }\n[answers]\nF_B = "10 N"\n'
+    )
     assert main(["check", str(f)]) != 2
     out = " ".join(capsys.readouterr().out.split())
     assert "F_B" in out
@@ -319,6 +333,7 @@ def test_the_force_analysis_takes_a_wheel_driver(tmp_path, capsys):
 
 def test_the_worked_problem_checks():
     from polygon_method.check import check_answers
+
     sc = load_scene("worked_problems/rolling_wheel_driver.toml")
     verdicts = check_answers(solve(sc), sc.answers, sc.tolerance)
     assert verdicts and all(v.ok for v in verdicts), verdicts
@@ -351,10 +366,12 @@ def test_bad_wheel_input_one_line(tmp_path, capsys, given, words):
 
 def test_a_wheel_on_a_circle_cannot_drive_alone(tmp_path, capsys):
     f = tmp_path / "s.toml"
-    f.write_text(BASE.replace('on = "horizontal", through = [0, 0], radius = 300',
-                              'on = "O"').replace("[ground]\nO = [0, 0]",
-                                                  "[ground]\nO = [0, -600]")
-                 + '[input]\nwheel = "CA"\nomega_CA = "4 rad/s cw"\ns_C = 0\n')
+    f.write_text(
+        BASE.replace('on = "horizontal", through = [0, 0], radius = 300', 'on = "O"').replace(
+            "[ground]\nO = [0, 0]", "[ground]\nO = [0, -600]"
+        )
+        + '[input]\nwheel = "CA"\nomega_CA = "4 rad/s cw"\ns_C = 0\n'
+    )
     assert main(["solve", str(f)]) == 2
     err = one_line(capsys)
     assert "ground line" in err, err

@@ -14,8 +14,9 @@ from polygon_method import load_scene, parse_scene, solve
 from polygon_method.cli import main
 
 ROOT = Path(__file__).resolve().parent.parent
-SCENES = sorted((ROOT / "worked_problems").glob("*.toml")) + \
-    sorted((ROOT / "tests" / "textbook").glob("*.toml"))
+SCENES = sorted((ROOT / "worked_problems").glob("*.toml")) + sorted(
+    (ROOT / "tests" / "textbook").glob("*.toml")
+)
 
 
 def out_of(capsys, *argv):
@@ -23,8 +24,11 @@ def out_of(capsys, *argv):
     return capsys.readouterr().out
 
 
-@pytest.mark.parametrize("path", [p for p in SCENES if "deg" in p.read_text()
-                                  or "slot" in p.read_text()], ids=lambda p: p.stem)
+@pytest.mark.parametrize(
+    "path",
+    [p for p in SCENES if "deg" in p.read_text() or "slot" in p.read_text()],
+    ids=lambda p: p.stem,
+)
 def test_no_path_is_the_at_30_deg_path(path, capsys):
     text = out_of(capsys, "steps", path) + out_of(capsys, "solve", path)
     assert not re.search(r"\b(the|a|its) at -?\d", text), re.findall(r".{30}\bat -?\d.{20}", text)
@@ -37,8 +41,9 @@ def test_a_path_at_an_angle_is_named_as_a_teacher_names_it(capsys):
 
 def test_a_triangle_with_a_fixed_corner_keeps_its_letters(capsys):
     """G on CD with D fixed: triangle cdg, d at the pole o (not "triangle cog")."""
-    text = " ".join(out_of(capsys, "steps", ROOT / "worked_problems" /
-                           "fourbar_image_points.toml").split())
+    text = " ".join(
+        out_of(capsys, "steps", ROOT / "worked_problems" / "fourbar_image_points.toml").split()
+    )
     assert "triangle cdg (d at the pole o) similar to CDG" in text
     assert "triangle cog" not in text and "triangle c'o'g'" not in text
 
@@ -64,16 +69,25 @@ speed = "10.5 rad/s cw"
 
 
 def test_a_point_on_a_fixed_pivot_is_warned_about():
-    sol = solve(parse_scene(FOURBAR.format(extra_link="",
-                                           points='E = { on = "AB", from = "A", along = 0 }')))
+    sol = solve(
+        parse_scene(
+            FOURBAR.format(extra_link="", points='E = { on = "AB", from = "A", along = 0 }')
+        )
+    )
     assert sol.speed("E") == 0.0
-    assert any("E is placed on the fixed pivot A" in w and "does not move" in w
-               for w in sol.warnings), sol.warnings
+    assert any(
+        "E is placed on the fixed pivot A" in w and "does not move" in w for w in sol.warnings
+    ), sol.warnings
 
 
 def test_a_point_on_the_frame_is_warned_about():
-    sol = solve(parse_scene(FOURBAR.format(extra_link="AD = 100",
-                                           points='F = { on = "AD", from = "A", along = 30 }')))
+    sol = solve(
+        parse_scene(
+            FOURBAR.format(
+                extra_link="AD = 100", points='F = { on = "AD", from = "A", along = 30 }'
+            )
+        )
+    )
     assert sol.speed("F") == 0.0
     assert any("F is on link AD, whose ends are both fixed" in w for w in sol.warnings)
 
@@ -81,8 +95,9 @@ def test_a_point_on_the_frame_is_warned_about():
 def test_no_structural_warning_for_the_worked_problems():
     for path in SCENES:
         sol = solve(load_scene(path))
-        assert not any("fixed pivot" in w or "sits on the frame" in w or "units =" in w
-                       for w in sol.warnings), (path.stem, sol.warnings)
+        assert not any(
+            "fixed pivot" in w or "sits on the frame" in w or "units =" in w for w in sol.warnings
+        ), (path.stem, sol.warnings)
 
 
 def test_lengths_in_metres_that_look_like_millimetres_are_warned_about(capsys):
@@ -110,10 +125,12 @@ def _two_slider_limit_place():
     from B, CD 450 with D on the vertical line x = 1040): at the crank's limit position CD
     is horizontal, so C is at x = 590 and D at C's height. Bisection on the crank angle
     between -90 and -150 deg for C_x = 590; returns D's height (mm)."""
+
     def cx(t):
         ax, ay = 300 * math.cos(t), 300 * math.sin(t)
-        bx = ax + math.sqrt(1200 ** 2 - ay ** 2)
+        bx = ax + math.sqrt(1200**2 - ay**2)
         return bx + 450 / 1200 * (ax - bx), 450 / 1200 * ay
+
     lo, hi = math.radians(-150), math.radians(-90)
     for _ in range(200):
         mid = 0.5 * (lo + hi)

@@ -40,8 +40,9 @@ def test_the_yoke_moves_as_r_cos_theta(angle):
     assert sol.P["Y"] == pytest.approx((r * c, 0.0), abs=1e-12)
     assert sol.V["Y"][0] == pytest.approx(-r * w * s, abs=1e-12 * vscale)
     assert sol.A["Y"][0] == pytest.approx(-r * (al * s + w * w * c), abs=1e-12 * ascale)
-    assert sol.S["Y"][:2] == pytest.approx([-r * w * s, -r * (al * s + w * w * c)],
-                                           abs=1e-12 * ascale)
+    assert sol.S["Y"][:2] == pytest.approx(
+        [-r * w * s, -r * (al * s + w * w * c)], abs=1e-12 * ascale
+    )
     assert sol.S["P"][0] == pytest.approx(r * w * c, abs=1e-12 * vscale)
     assert sol.S["P"][1] == pytest.approx(r * (al * c - w * w * s), abs=1e-12 * ascale)
     assert sol.coriolis("P") == (0.0, 0.0) and sol.coriolis("Y") == (0.0, 0.0)
@@ -55,11 +56,15 @@ def test_gruebler_counts_the_yoke_and_the_pins_block():
 def test_every_view_takes_the_yoke(tmp_path, capsys):
     scene = tmp_path / "yoke.toml"
     scene.write_text(YOKE.format(angle=40, w=10, al="0 rad/s^2"), encoding="utf-8")
-    for args in (["solve", "--json", str(scene)], ["steps", str(scene)],
-                 ["centres", str(scene)], ["sweep", "--summary", str(scene)],
-                 ["linkage", str(scene)],
-                 ["draw", str(scene), "-o", str(tmp_path / "y.svg"), "--paper", "A3"],
-                 ["page", str(scene), "-o", str(tmp_path / "y.html")]):
+    for args in (
+        ["solve", "--json", str(scene)],
+        ["steps", str(scene)],
+        ["centres", str(scene)],
+        ["sweep", "--summary", str(scene)],
+        ["linkage", str(scene)],
+        ["draw", str(scene), "-o", str(tmp_path / "y.svg"), "--paper", "A3"],
+        ["page", str(scene), "-o", str(tmp_path / "y.html")],
+    ):
         assert main(args) == 0, args
     out = " ".join(capsys.readouterr().out.split())
     assert "through p, one parallel to its slot (vertical)" in out

@@ -13,9 +13,21 @@ from polygon_method.common.errors import PolygonMethodError
 from polygon_method.scene import FixedPath, GuideSlider
 from reference import reference_solution
 
-__all__ = ["HERE", "FILES", "CRANKED", "BLOCK_DRIVEN", "REL", "NOISE", "solved",
-           "worst_error", "at_angle", "turned", "parameters", "other_position",
-           "guide_direction"]
+__all__ = [
+    "HERE",
+    "FILES",
+    "CRANKED",
+    "BLOCK_DRIVEN",
+    "REL",
+    "NOISE",
+    "solved",
+    "worst_error",
+    "at_angle",
+    "turned",
+    "parameters",
+    "other_position",
+    "guide_direction",
+]
 
 HERE = Path(__file__).resolve().parent / "textbook"
 FILES = sorted(HERE.glob("*.toml"))
@@ -61,22 +73,28 @@ def worst_error(scene, sol, ref):
     errs = []
     for tab, got in (("positions", sol.P), ("velocities", sol.V), ("accelerations", sol.A)):
         scale = max(_norm(v) for v in ref[tab].values())
-        errs += [(_err(tuple(got[n]), ref[tab][n], scale), f"{tab} {n}")
-                 for n in scene.point_names]
+        errs += [(_err(tuple(got[n]), ref[tab][n], scale), f"{tab} {n}") for n in scene.point_names]
     w = max(_norm(v) for v in ref["omega"].values())
-    for tab, got, scale in (("omega", sol.W, w),  # alpha's size: omega^2 as well (a
-                            ("alpha", sol.Al,     # parallelogram has every alpha 0)
-                             max(_norm(v) for v in ref["alpha"].values()) + w * w)):
-        errs += [(_err(got[lk.key], ref[tab][lk.key], scale), f"{tab} {lk.key}")
-                 for lk in scene.links]
+    for tab, got, scale in (
+        ("omega", sol.W, w),  # alpha's size: omega^2 as well (a
+        (
+            "alpha",
+            sol.Al,  # parallelogram has every alpha 0)
+            max(_norm(v) for v in ref["alpha"].values()) + w * w,
+        ),
+    ):
+        errs += [
+            (_err(got[lk.key], ref[tab][lk.key], scale), f"{tab} {lk.key}") for lk in scene.links
+        ]
     vs = max(_norm(v) for v in ref["velocities"].values())
     as_ = max(_norm(v) for v in ref["accelerations"].values())
     for sl in scene.sliders:  # by the slider's key: a peg in two slots has one per slot
         want, got = ref["sliders"][sl.key], sol.S[sl.key]
-        errs += [(_err(got[0], want["vs"], vs), f"sliding velocity {sl.key}"),
-                 (_err(got[1], want["as"], as_), f"sliding acceleration {sl.key}"),
-                 (_err(tuple(sol.coriolis(sl.key)), want["coriolis"], as_),
-                  f"Coriolis {sl.key}")]
+        errs += [
+            (_err(got[0], want["vs"], vs), f"sliding velocity {sl.key}"),
+            (_err(got[1], want["as"], as_), f"sliding acceleration {sl.key}"),
+            (_err(tuple(sol.coriolis(sl.key)), want["coriolis"], as_), f"Coriolis {sl.key}"),
+        ]
     return max(errs)
 
 
@@ -140,14 +158,14 @@ def _triad_other(scene, P, X):
     None if there is none; False for a point no triad finds."""
     from polygon_method.solver.compiler import compile_plan
     from polygon_method.steps import triad
-    st = next((s for s in compile_plan(scene).steps if s.kind == "triad" and X in s.finds),
-              None)
+
+    st = next((s for s in compile_plan(scene).steps if s.kind == "triad" and X in s.finds), None)
     if st is None:
         return False
     K = tuple(P[k] for k in st.knowns)
     here = {p: P[p] for p in st.finds}
     best = None
-    for h in ((1.0, -1.0) if st.sides else (1.0,)):
+    for h in (1.0, -1.0) if st.sides else (1.0,):
         prm = st.params[:6] + (h * st.params[6],)
         for q in triad.assemblies(K, prm):
             V = dict(zip(st.finds, triad.vertices(*q, prm, math.cos, math.sin)))

@@ -53,12 +53,20 @@ from .tolerance import SOURCES, Stated, _Tolerances, answer_tolerance, choose_to
 from .verdicts import _NOISE_KIND, ROUNDING, UNIT_OF, Verdict, verdicts_dict, verdicts_text
 
 #: answers that are magnitudes (a negative one is a mistake of its own)
-_MAGNITUDES = {"v": "a speed", "a": "an acceleration's size", "ac": "a Coriolis component's "
-               "size", "rub": "a rubbing velocity", "F": "a pin force's size",
-               "N": "a guide's normal force's size", "Fc": "a contact force's size",
-               "vu": "a speed",
-               "au": "an acceleration's size", "Fi": "an inertia force's size",
-               "h": "an offset"}
+_MAGNITUDES = {
+    "v": "a speed",
+    "a": "an acceleration's size",
+    "ac": "a Coriolis component's size",
+    "rub": "a rubbing velocity",
+    "F": "a pin force's size",
+    "N": "a guide's normal force's size",
+    "Fc": "a contact force's size",
+    "vu": "a speed",
+    "au": "an acceleration's size",
+    "Fi": "an inertia force's size",
+    "h": "an offset",
+}
+
 
 def _noise_of(sol: Solution, kind, names) -> tuple:
     """(kind, name) of :meth:`Solution.noise` for an answer: its own error bound."""
@@ -71,8 +79,7 @@ def _noise_of(sol: Solution, kind, names) -> tuple:
         return kind[0], (sol.scene.link(sl.guide).p, sl.point)
     if kind in ("vI", "aI"):  # the rolling step's points
         key = sol.scene.link("-".join(names)).key
-        pts = [p for st in sol.plan.steps if key in st.links
-               for p in (*st.needs, *st.finds)]
+        pts = [p for st in sol.plan.steps if key in st.links for p in (*st.needs, *st.finds)]
         return kind[0], tuple(dict.fromkeys(pts)) or None
     return kind, tuple(names)
 
@@ -82,12 +89,21 @@ def tolerances(sol: Solution):
     return _Tolerances(sol)
 
 
-__all__ = ["tolerances", "Verdict", "check_answers", "answer_tolerance", "verdicts_text",
-           "verdicts_dict", "ROUNDING", "Stated", "choose_tolerance", "SOURCES"]
+__all__ = [
+    "tolerances",
+    "Verdict",
+    "check_answers",
+    "answer_tolerance",
+    "verdicts_text",
+    "verdicts_dict",
+    "ROUNDING",
+    "Stated",
+    "choose_tolerance",
+    "SOURCES",
+]
 
 
-def check_answers(sol: Solution, answers=None, tolerance: float | None = None,
-                  _tols=None) -> tuple:
+def check_answers(sol: Solution, answers=None, tolerance: float | None = None, _tols=None) -> tuple:
     """Check ``answers`` (default: the scene's ``[answers]``) against ``sol``.
 
     Parameters
@@ -123,8 +139,9 @@ def check_answers(sol: Solution, answers=None, tolerance: float | None = None,
             continue
         exact = sol.value(kind, ans.names)
         if exact is None or not math.isfinite(exact):
-            raise SceneError(f"{ans.key}: no value to check against", key=f"[answers] {ans.key}",
-                             line=ans.line)
+            raise SceneError(
+                f"{ans.key}: no value to check against", key=f"[answers] {ans.key}", line=ans.line
+            )
         if kind in ("torque", "rub"):  # (a load that takes no power, two omegas alike)
             clean = clean or tidied(sol)
             exact = clean.value(kind, ans.names)
@@ -142,11 +159,28 @@ def check_answers(sol: Solution, answers=None, tolerance: float | None = None,
         mistake = diagnosis = None
         if kind in _MAGNITUDES and ans.value < 0 and correct != 0:
             ok, mistake = False, "negative_magnitude"
-            diagnosis = (f"{_MAGNITUDES[kind]} is a magnitude, never negative: give its size "
-                         f"({abs(ans.value):g}), and its direction in words where asked")
+            diagnosis = (
+                f"{_MAGNITUDES[kind]} is a magnitude, never negative: give its size "
+                f"({abs(ans.value):g}), and its direction in words where asked"
+            )
         elif not ok:
             mistake, diagnosis = diag.diagnose(ans, given, correct, tol, signed)
-        out.append(Verdict(ans.key, ans.raw, given, correct, UNIT_OF[kind], rel,
-                           tol / abs(correct) if correct else math.inf, tol, rule, ok, signed,
-                           mistake, diagnosis, ans.line))
+        out.append(
+            Verdict(
+                ans.key,
+                ans.raw,
+                given,
+                correct,
+                UNIT_OF[kind],
+                rel,
+                tol / abs(correct) if correct else math.inf,
+                tol,
+                rule,
+                ok,
+                signed,
+                mistake,
+                diagnosis,
+                ans.line,
+            )
+        )
     return tuple(out)

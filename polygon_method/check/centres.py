@@ -27,8 +27,11 @@ def centre_verdict(sol, ans, tolerance, cache: list) -> Verdict:
         try:
             cache.append(locate(sol))
         except PolygonMethodError as exc:
-            raise SceneError(f"{ans.key}: the centres cannot be located here: {exc.message}",
-                             key=f"[answers] {ans.key}", line=ans.line) from None
+            raise SceneError(
+                f"{ans.key}: the centres cannot be located here: {exc.message}",
+                key=f"[answers] {ans.key}",
+                line=ans.line,
+            ) from None
     ic = cache[0]
     sc = sol.scene
     if all(isinstance(x, int) for x in ans.names):
@@ -36,12 +39,16 @@ def centre_verdict(sol, ans, tolerance, cache: list) -> Verdict:
     else:  # by the scene's names
         i, j = sorted(1 if str(x).lower() == "ground" else ic._number(x) for x in ans.names)
         if i == j:
-            raise SceneError(f"{ans.key}: both name the same body", key=f"[answers] {ans.key}",
-                             line=ans.line)
+            raise SceneError(
+                f"{ans.key}: both name the same body", key=f"[answers] {ans.key}", line=ans.line
+            )
     if j > ic.n:
-        raise SceneError(f"there are {ic.n} links (ground 1, {sol.plan.steps[0].driver_name} "
-                         f"2): no centre I{i}{j}",
-                         key=f"[answers] {ans.key}", line=ans.line)
+        raise SceneError(
+            f"there are {ic.n} links (ground 1, {sol.plan.steps[0].driver_name} "
+            f"2): no centre I{i}{j}",
+            key=f"[answers] {ans.key}",
+            line=ans.line,
+        )
     c = ic.centre(i, j)
     u, un = sc.length_unit, sc.units
     pivot = sol.P[sc.input.pivot or next(iter(sc.ground))]  # a block driver: no pivot
@@ -49,12 +56,24 @@ def centre_verdict(sol, ans, tolerance, cache: list) -> Verdict:
     gx, gy = ans.value
     if c.point is None:
         deg = math.degrees(math.atan2(c.direction[1], c.direction[0])) % 180.0
-        return Verdict(ans.key, ans.raw, math.hypot(gx - pivot[0], gy - pivot[1]), math.inf,
-                       "m", None, math.inf, math.inf, "a centre at infinity", False, False,
-                       "centre_at_infinity",
-                       f"{c.label} is at infinity (direction {fmt(deg, 4)} deg): {c.how}",
-                       ans.line, f"at infinity, {fmt(deg, 4)} deg",
-                       {"given_position": [gx, gy], "correct_direction": list(c.direction)})
+        return Verdict(
+            ans.key,
+            ans.raw,
+            math.hypot(gx - pivot[0], gy - pivot[1]),
+            math.inf,
+            "m",
+            None,
+            math.inf,
+            math.inf,
+            "a centre at infinity",
+            False,
+            False,
+            "centre_at_infinity",
+            f"{c.label} is at infinity (direction {fmt(deg, 4)} deg): {c.how}",
+            ans.line,
+            f"at infinity, {fmt(deg, 4)} deg",
+            {"given_position": [gx, gy], "correct_direction": list(c.direction)},
+        )
     cx, cy = c.point
     base = max(math.hypot(cx - pivot[0], cy - pivot[1]), longest)
     err = math.hypot(gx - cx, gy - cy)
@@ -64,23 +83,44 @@ def centre_verdict(sol, ans, tolerance, cache: list) -> Verdict:
         space = diagram_scales(sol)[0]
         grow = 1.0 if c.condition >= 0.5 else 1.0 / (2.0 * c.condition)
         tol = max(DRAWING_PRECISION_CM * space.per_cm * grow, ROUNDING * base)
-        rule = (f"a centre: {10 * DRAWING_PRECISION_CM:g} mm on the configuration diagram at "
-                f"{space.text}, / (2 sin gamma) where its lines cross under 30 deg")
+        rule = (
+            f"a centre: {10 * DRAWING_PRECISION_CM:g} mm on the configuration diagram at "
+            f"{space.text}, / (2 sin gamma) where its lines cross under 30 deg"
+        )
     ok = err <= tol * (1 + 1e-12)
     mistake = diagnosis = None
     if not ok:
         for other in ic.centres.values():
-            if other is not c and other.point is not None and \
-                    math.hypot(gx - other.point[0], gy - other.point[1]) <= tol:
+            if (
+                other is not c
+                and other.point is not None
+                and math.hypot(gx - other.point[0], gy - other.point[1]) <= tol
+            ):
                 mistake = "another_centre"
-                diagnosis = (f"that is {other.label}, the centre of links {other.i} and "
-                             f"{other.j} (the links numbered otherwise: ground 1, "
-                             f"{sol.plan.steps[0].driver_name} 2, "
-                             f"then {', '.join(ic.bodies[2:])})")
+                diagnosis = (
+                    f"that is {other.label}, the centre of links {other.i} and "
+                    f"{other.j} (the links numbered otherwise: ground 1, "
+                    f"{sol.plan.steps[0].driver_name} 2, "
+                    f"then {', '.join(ic.bodies[2:])})"
+                )
                 break
-    return Verdict(ans.key, ans.raw, math.hypot(gx - pivot[0], gy - pivot[1]),
-                   math.hypot(cx - pivot[0], cy - pivot[1]), "m", err / base, tol / base, tol,
-                   rule, ok, False, mistake, diagnosis, ans.line,
-                   "[" + ", ".join(fmt(quiet(v, base) / u, 5)
-                                   for v in (cx, cy)) + f"] {un}",  # (noise about an axis: 0)
-                   {"given_position": [gx, gy], "correct_position": [cx, cy]})
+    return Verdict(
+        ans.key,
+        ans.raw,
+        math.hypot(gx - pivot[0], gy - pivot[1]),
+        math.hypot(cx - pivot[0], cy - pivot[1]),
+        "m",
+        err / base,
+        tol / base,
+        tol,
+        rule,
+        ok,
+        False,
+        mistake,
+        diagnosis,
+        ans.line,
+        "["
+        + ", ".join(fmt(quiet(v, base) / u, 5) for v in (cx, cy))
+        + f"] {un}",  # (noise about an axis: 0)
+        {"given_position": [gx, gy], "correct_position": [cx, cy]},
+    )

@@ -16,8 +16,15 @@ import io
 from collections import Counter
 from dataclasses import dataclass
 
-__all__ = ["Row", "class_text", "summary_text", "gradebook_csv", "gradebook_markdown",
-           "class_dict", "MISTAKE_WORDS"]
+__all__ = [
+    "Row",
+    "class_text",
+    "summary_text",
+    "gradebook_csv",
+    "gradebook_markdown",
+    "class_dict",
+    "MISTAKE_WORDS",
+]
 
 #: the mistakes in a teacher's words (the codes ``check`` names)
 MISTAKE_WORDS = {
@@ -85,6 +92,7 @@ class Row:
 
 def _v(key, ok, mistake=None):  # a verdict for the doctest
     from .verdicts import Verdict
+
     return Verdict(key, "", 0.0, 0.0, "m/s", 0.0, 0.0, 0.0, "", ok, False, mistake)
 
 
@@ -115,16 +123,24 @@ def class_text(rows) -> str:
     def var(r):
         return f"{r.variant or '-':<{vw}}  " if vw else ""
 
-    out.append(f"{'student':<{w}}  " + (f"{'variant':<{vw}}  " if vw else "")
-               + f"{'right':>9}  wrong answers (mistake)")
+    out.append(
+        f"{'student':<{w}}  "
+        + (f"{'variant':<{vw}}  " if vw else "")
+        + f"{'right':>9}  wrong answers (mistake)"
+    )
     for r in rows:
         if r.error:
             out.append(f"{r.student:<{w}}  {var(r)}{'-':>9}  could not be read: {r.error}")
             continue
-        wrong = [f"{v.key} ({_words(v.mistake) if v.mistake else 'unexplained'})"
-                 for v in r.verdicts if not v.ok]
-        out.append(f"{r.student:<{w}}  {var(r)}{f'{r.right} of {len(r.verdicts)}':>9}  "
-                   + ("; ".join(wrong) if wrong else "-"))
+        wrong = [
+            f"{v.key} ({_words(v.mistake) if v.mistake else 'unexplained'})"
+            for v in r.verdicts
+            if not v.ok
+        ]
+        out.append(
+            f"{r.student:<{w}}  {var(r)}{f'{r.right} of {len(r.verdicts)}':>9}  "
+            + ("; ".join(wrong) if wrong else "-")
+        )
     return "\n".join(out)
 
 
@@ -139,15 +155,23 @@ def tolerance_text(rows, book=None) -> str | None:
         return None
     parts = []
     for tol, who in sorted(by.items(), key=lambda kv: (kv[0] != "default", kv[0])):
-        what = ("the default, what a careful hand drawing at the step table's scales allows"
-                if tol == "default" else tol)
-        whom = f"{len(who)} file{'s' if len(who) != 1 else ''}" if len(by) == 1 or \
-            len(who) > 5 else ", ".join(who)
+        what = (
+            "the default, what a careful hand drawing at the step table's scales allows"
+            if tol == "default"
+            else tol
+        )
+        whom = (
+            f"{len(who)} file{'s' if len(who) != 1 else ''}"
+            if len(by) == 1 or len(who) > 5
+            else ", ".join(who)
+        )
         parts.append(f"{what} for {whom}")
     text = "tolerance: " + "; ".join(parts)
     if book is not None and "default" in by:
-        text += (f" (not the scene's {100 * book:g} %: that is the book's, for the scene's own "
-                 "answers; give --tolerance to set one)")
+        text += (
+            f" (not the scene's {100 * book:g} %: that is the book's, for the scene's own "
+            "answers; give --tolerance to set one)"
+        )
     return text
 
 
@@ -158,9 +182,11 @@ def summary_text(rows, book=None) -> str:
     read = [r for r in rows if r.error is None]
     total = sum(len(r.verdicts) for r in read)
     right = sum(r.right for r in read)
-    out = [f"{len(read)} of {len(rows)} answer files read"
-           + (f" ({len(rows) - len(read)} could not be: see its row)" if len(read) < len(rows)
-              else "") + f"; {right} of {total} answers right"]
+    out = [
+        f"{len(read)} of {len(rows)} answer files read"
+        + (f" ({len(rows) - len(read)} could not be: see its row)" if len(read) < len(rows) else "")
+        + f"; {right} of {total} answers right"
+    ]
     tol = tolerance_text(rows, book)
     if tol:
         out.append(tol)
@@ -185,19 +211,29 @@ def _table(rows):
     keys = _keys(rows)
     variants = _with_variants(rows)
     tols = any(r.tolerance is not None for r in rows)
-    head = ["student", "file"] + (["variant"] if variants else []) + keys + \
-        ["right", "of", "error"] + (["tolerance"] if tols else [])
+    head = (
+        ["student", "file"]
+        + (["variant"] if variants else [])
+        + keys
+        + ["right", "of", "error"]
+        + (["tolerance"] if tols else [])
+    )
     body = []
     for r in rows:
         by_key = {v.key: v for v in r.verdicts}
         cells = [r.student, r.file] + ([r.variant or ""] if variants else [])
         for k in keys:
             v = by_key.get(k)
-            cells.append("" if v is None else ("right" if v.ok else
-                                               f"WRONG ({_words(v.mistake)})" if v.mistake
-                                               else "WRONG"))
-        cells += [str(r.right) if r.error is None else "", str(len(r.verdicts))
-                  if r.error is None else "", r.error or ""]
+            cells.append(
+                ""
+                if v is None
+                else ("right" if v.ok else f"WRONG ({_words(v.mistake)})" if v.mistake else "WRONG")
+            )
+        cells += [
+            str(r.right) if r.error is None else "",
+            str(len(r.verdicts)) if r.error is None else "",
+            r.error or "",
+        ]
         if tols:
             cells.append(r.tolerance or "")
         body.append(cells)
@@ -236,9 +272,18 @@ def gradebook_markdown(rows, book=None) -> str:
 
 def class_dict(rows, book=None) -> dict:
     """The class for ``check --json``."""
-    return {"students": [{"student": r.student, "file": r.file, "error": r.error,
-                          **({"variant": r.variant} if _with_variants(rows) else {}),
-                          **({"tolerance": r.tolerance} if r.tolerance is not None else {}),
-                          "right": r.right, "answers": [v.to_dict() for v in r.verdicts]}
-                         for r in rows],
-            "summary": summary_text(rows, book).splitlines()}
+    return {
+        "students": [
+            {
+                "student": r.student,
+                "file": r.file,
+                "error": r.error,
+                **({"variant": r.variant} if _with_variants(rows) else {}),
+                **({"tolerance": r.tolerance} if r.tolerance is not None else {}),
+                "right": r.right,
+                "answers": [v.to_dict() for v in r.verdicts],
+            }
+            for r in rows
+        ],
+        "summary": summary_text(rows, book).splitlines(),
+    }

@@ -13,10 +13,19 @@ from .alternatives import _Candidate
 __all__ = ["other_quantities", "under_block"]
 
 #: an answer's kind -> the family of kinds it may be confused with (one unit)
-_FAMILY = {"v": "velocity", "vs": "velocity", "vu": "velocity", "vI": "velocity",
-           "a": "acceleration", "as": "acceleration", "ac": "acceleration",
-           "au": "acceleration", "aI": "acceleration",
-           "omega": "omega", "alpha": "alpha"}
+_FAMILY = {
+    "v": "velocity",
+    "vs": "velocity",
+    "vu": "velocity",
+    "vI": "velocity",
+    "a": "acceleration",
+    "as": "acceleration",
+    "ac": "acceleration",
+    "au": "acceleration",
+    "aI": "acceleration",
+    "omega": "omega",
+    "alpha": "alpha",
+}
 _UNIT = {"velocity": "m/s", "acceleration": "m/s^2", "omega": "rad/s", "alpha": "rad/s^2"}
 
 
@@ -37,7 +46,7 @@ def _quantities(d, family):
     for lk in sc.links:
         pts = [q for q in (lk.p, lk.q) + tuple(c.name for c in sc.points if c.link == lk.key)]
         for i, X in enumerate(pts):
-            for Y in pts[i + 1:]:
+            for Y in pts[i + 1 :]:
                 out.append((f"{'v' if v else 'a'}_{X}{Y}", "v" if v else "a", (X, Y)))
     for s in sc.sliders:
         out.append((f"{'vs' if v else 'as'}_{s.key}", "vs" if v else "as", (s.key,)))
@@ -52,6 +61,7 @@ def under_names(sc) -> dict:
     """``A1`` -> slider key of the guide's point under each block (see the scene's
     ``under_block_names``)."""
     from ..scene.answers import under_block_names
+
     return under_block_names(sc.point_names, sc.ground, sc.sliders)
 
 
@@ -92,12 +102,22 @@ def other_quantities(d, ans, signed) -> list:
         if x is None or not math.isfinite(x) or x == 0:
             continue
         x = d.cmp(x, signed)
-        out.append(_Candidate(x, "another_quantity",
-                              f"you gave {key} ({_g(abs(x))} {_UNIT[family]}) for {ans.key}"))
+        out.append(
+            _Candidate(
+                x,
+                "another_quantity",
+                f"you gave {key} ({_g(abs(x))} {_UNIT[family]}) for {ans.key}",
+            )
+        )
         if signed:  # its size, with the other sense
-            out.append(_Candidate(-x, "another_quantity",
-                                  f"you gave {key}'s size ({_g(abs(x))} {_UNIT[family]}, "
-                                  f"{_sense(kind, x)}) for {ans.key}"))
+            out.append(
+                _Candidate(
+                    -x,
+                    "another_quantity",
+                    f"you gave {key}'s size ({_g(abs(x))} {_UNIT[family]}, "
+                    f"{_sense(kind, x)}) for {ans.key}",
+                )
+            )
     return out
 
 
@@ -112,14 +132,24 @@ def under_block(d, ans) -> list:
     img = under_label(sol, X, phase)
     own = sol.speed(X) if v else sol.acceleration_magnitude(X)
     block = f"o{X.lower()}" if v else f"o'{X.lower()}'"
-    out = [_Candidate(own, "block_for_coincident",
-                      f"the block {X}'s own {phase} ({block}) given for that of the point of "
-                      f"{sl.guide} under it ({img}): they differ by the "
-                      + ("sliding velocity" if v else "sliding and Coriolis components"))]
+    out = [
+        _Candidate(
+            own,
+            "block_for_coincident",
+            f"the block {X}'s own {phase} ({block}) given for that of the point of "
+            f"{sl.guide} under it ({img}): they differ by the "
+            + ("sliding velocity" if v else "sliding and Coriolis components"),
+        )
+    ]
     if v:
-        out.append(_Candidate(abs(sol.sliding_velocity(sl.key)), "relative_for_absolute",
-                              f"the sliding velocity of {X} on {sl.guide} given for the "
-                              f"velocity of the point under the block ({img})"))
+        out.append(
+            _Candidate(
+                abs(sol.sliding_velocity(sl.key)),
+                "relative_for_absolute",
+                f"the sliding velocity of {X} on {sl.guide} given for the "
+                f"velocity of the point under the block ({img})",
+            )
+        )
         return out
     g = sc.link(sl.guide)
     K = next((p for p in (g.p, g.q) if p in sc.ground), None)
@@ -127,10 +157,20 @@ def under_block(d, ans) -> list:
         return out
     r = math.dist(sol.P[K], sol.P[X])
     w, al = sol.W[g.key], sol.Al[g.key]
-    out.append(_Candidate(w * w * r, "component_only",
-                          f"only the centripetal component (omega^2 {K}{X} = {_g(w * w * r)} "
-                          f"m/s^2) of {img}; add the tangential one"))
-    out.append(_Candidate(abs(al) * r, "component_only",
-                          f"only the tangential component (alpha {K}{X} = {_g(abs(al) * r)} "
-                          f"m/s^2) of {img}; add the centripetal one"))
+    out.append(
+        _Candidate(
+            w * w * r,
+            "component_only",
+            f"only the centripetal component (omega^2 {K}{X} = {_g(w * w * r)} "
+            f"m/s^2) of {img}; add the tangential one",
+        )
+    )
+    out.append(
+        _Candidate(
+            abs(al) * r,
+            "component_only",
+            f"only the tangential component (alpha {K}{X} = {_g(abs(al) * r)} "
+            f"m/s^2) of {img}; add the centripetal one",
+        )
+    )
     return out

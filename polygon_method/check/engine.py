@@ -19,19 +19,27 @@ from ..motion.solution import solve
 from .verdicts import ROUNDING, Verdict
 
 #: answer key -> (unit kind, SI unit, what it is)
-ENGINE_KEYS = {"piston_effort": ("force", "N", "the piston effort"),
-               "crank_effort": ("force", "N", "the crank effort"),
-               "T_mean": ("torque", "N m", "the mean turning moment"),
-               "dE_max": ("energy", "J", "the maximum fluctuation of energy"),
-               "I_flywheel": ("moment_of_inertia", "kg m^2", "the flywheel's moment of inertia"),
-               "m_flywheel": ("mass", "kg", "the flywheel's mass"),
-               "rod_thrust": ("force", "N", "the thrust in the connecting rod"),
-               "side_thrust": ("force", "N", "the side thrust on the cylinder walls"),
-               "shaking_force": ("force", "N", "the shaking force on the frame"),
-               "shaking_moment": ("torque", "N m", "the shaking moment about the frame's origin")}
+ENGINE_KEYS = {
+    "piston_effort": ("force", "N", "the piston effort"),
+    "crank_effort": ("force", "N", "the crank effort"),
+    "T_mean": ("torque", "N m", "the mean turning moment"),
+    "dE_max": ("energy", "J", "the maximum fluctuation of energy"),
+    "I_flywheel": ("moment_of_inertia", "kg m^2", "the flywheel's moment of inertia"),
+    "m_flywheel": ("mass", "kg", "the flywheel's mass"),
+    "rod_thrust": ("force", "N", "the thrust in the connecting rod"),
+    "side_thrust": ("force", "N", "the side thrust on the cylinder walls"),
+    "shaking_force": ("force", "N", "the shaking force on the frame"),
+    "shaking_moment": ("torque", "N m", "the shaking moment about the frame's origin"),
+}
 #: the keys read from the force analysis at the instant (the rest from the cycle)
-_INSTANT = ("piston_effort", "crank_effort", "rod_thrust", "side_thrust", "shaking_force",
-            "shaking_moment")
+_INSTANT = (
+    "piston_effort",
+    "crank_effort",
+    "rod_thrust",
+    "side_thrust",
+    "shaking_force",
+    "shaking_moment",
+)
 
 
 def _refuse(sol, ans, why):
@@ -53,8 +61,14 @@ def _value(sol, key, scene=None):
         e = efforts(sc, s.plan, s.P, s.forces)
         if e is None:
             return None
-        return abs({"piston_effort": e.F_P, "crank_effort": e.F_T, "rod_thrust": e.F_Q,
-                    "side_thrust": e.F_N}[key])
+        return abs(
+            {
+                "piston_effort": e.F_P,
+                "crank_effort": e.F_T,
+                "rod_thrust": e.F_Q,
+                "side_thrust": e.F_N,
+            }[key]
+        )
     tm = turning_moment(sc)
     if key == "T_mean":  # a mean within rounding of nought (1e-9 of the greatest) is nought
         return tm.mean if abs(tm.mean) > 1e-9 * max(abs(tm.T_max), abs(tm.T_min)) else 0.0
@@ -77,35 +91,58 @@ def _slips(sol, key, correct):
             elif key in ("rod_thrust", "side_thrust"):
                 v = None  # (the closed forms give these from the piston effort alone)
             else:
-                v = _value(sol, key, replace(sc, masses=tuple(m for m in sc.masses
-                                                              if not m.block)))
+                v = _value(sol, key, replace(sc, masses=tuple(m for m in sc.masses if not m.block)))
         except PolygonMethodError:
             v = None
         if v is not None:
-            out.append((abs(v), "piston_inertia_left_out",
-                        "the inertia of the reciprocating parts at "
-                        f"{', '.join(m.body for m in blocks)} left out"))
+            out.append(
+                (
+                    abs(v),
+                    "piston_inertia_left_out",
+                    "the inertia of the reciprocating parts at "
+                    f"{', '.join(m.body for m in blocks)} left out",
+                )
+            )
     if key in ("I_flywheel", "m_flywheel") and sc.flywheel is not None:
-        out.append((2 * correct, "cs_half_range",
-                    "the coefficient of fluctuation of speed taken as the range either side "
-                    "of the mean: Cs = (w_max - w_min) / w_mean is the whole range (+-1 % is "
-                    "Cs = 0.02)"))
-        out.append((correct / 2, "cs_doubled",
-                    "the coefficient of fluctuation of speed taken as twice the whole range"))
+        out.append(
+            (
+                2 * correct,
+                "cs_half_range",
+                "the coefficient of fluctuation of speed taken as the range either side "
+                "of the mean: Cs = (w_max - w_min) / w_mean is the whole range (+-1 % is "
+                "Cs = 0.02)",
+            )
+        )
+        out.append(
+            (
+                correct / 2,
+                "cs_doubled",
+                "the coefficient of fluctuation of speed taken as twice the whole range",
+            )
+        )
     if key in ("dE_max", "I_flywheel", "m_flywheel"):
         tm = turning_moment(sc)
         if tm.lobes:
             big = max(abs(lb.energy) for lb in tm.lobes)
             if abs(big - tm.dE_max) > 1e-9 * tm.dE_max:
                 f = big / tm.dE_max
-                out.append((correct * f, "largest_area",
-                            "the largest single area between the turning moment and its mean "
-                            "taken for the fluctuation of energy: dE_max = E_max - E_min, the "
-                            "energies at the crossings summed in order"))
+                out.append(
+                    (
+                        correct * f,
+                        "largest_area",
+                        "the largest single area between the turning moment and its mean "
+                        "taken for the fluctuation of energy: dE_max = E_max - E_min, the "
+                        "energies at the crossings summed in order",
+                    )
+                )
     if key == "T_mean" and sc.indicator is not None and sc.indicator.cycle > 2 * math.pi + 1:
-        out.append((2 * correct, "one_turn_cycle",
-                    "the work of a four-stroke cycle divided by one turn (2 pi) instead of "
-                    "two (4 pi)"))
+        out.append(
+            (
+                2 * correct,
+                "one_turn_cycle",
+                "the work of a four-stroke cycle divided by one turn (2 pi) instead of two (4 pi)",
+            )
+        )
     return out
 
 
@@ -131,30 +168,50 @@ def engine_verdict(sol, ans, tolerance) -> Verdict:
     """The :class:`Verdict` on one of the engine chapter's answers."""
     key = ans.key
     if key in _INSTANT and not sol.scene.has_forces:
-        _refuse(sol, ans, ("the engine's efforts" if "thrust" in key or "effort" in key else
-                           "the shaking force and moment") + " need the force analysis: give "
-                "[masses] (the reciprocating parts), [gravity] or [indicator]")
+        _refuse(
+            sol,
+            ans,
+            (
+                "the engine's efforts"
+                if "thrust" in key or "effort" in key
+                else "the shaking force and moment"
+            )
+            + " need the force analysis: give "
+            "[masses] (the reciprocating parts), [gravity] or [indicator]",
+        )
     try:
         correct = _value(sol, key)
     except PolygonMethodError as exc:
         _refuse(sol, ans, exc.message)
     if correct is None:
-        _refuse(sol, ans, "no value to check against: " +
-                ("the scene has no [flywheel]" if key == "I_flywheel" else
-                 "give the flywheel's [flywheel] radius (or gyration) for its mass"
-                 if key == "m_flywheel" else "the scene is no engine (a gas force on a slider "
-                 "crank's piston)"))
+        _refuse(
+            sol,
+            ans,
+            "no value to check against: "
+            + (
+                "the scene has no [flywheel]"
+                if key == "I_flywheel"
+                else "give the flywheel's [flywheel] radius (or gyration) for its mass"
+                if key == "m_flywheel"
+                else "the scene is no engine (a gas force on a slider crank's piston)"
+            ),
+        )
     unit = ENGINE_KEYS[key][1]
     if key != "T_mean":  # sizes (a shaking moment's sense is not asked)
         correct = abs(correct)
     signed = key == "T_mean" and ans.value < 0
     given = ans.value if key == "T_mean" else abs(ans.value)
     rel = getattr(tolerance, "relative", tolerance)
-    rule = f"{100 * rel:g} % (the answers' tolerance)" if rel is not None else \
-        "three significant figures (a computed answer)"
+    rule = (
+        f"{100 * rel:g} % (the answers' tolerance)"
+        if rel is not None
+        else "three significant figures (a computed answer)"
+    )
     rel = rel if rel is not None else ROUNDING
     tol = rel * abs(correct)
-    if correct == 0.0 and key == "T_mean":  # a mean of nought: to the tolerance of the greatest turning moment
+    if (
+        correct == 0.0 and key == "T_mean"
+    ):  # a mean of nought: to the tolerance of the greatest turning moment
         tm = turning_moment(sol.scene)
         tol = rel * max(abs(tm.T_max), abs(tm.T_min))
     err = abs(given - correct)
@@ -163,11 +220,28 @@ def engine_verdict(sol, ans, tolerance) -> Verdict:
     if not ok:
         for v, code, words in _slips(sol, key, correct):
             if abs(given - v) <= max(rel * abs(v), 1e-300) * (1 + 1e-12):
-                mistake, diagnosis = code, (f"{ENGINE_KEYS[key][2]} matches {words} "
-                                            f"({v:.4g} {unit}); the correct value is "
-                                            f"{correct:.4g} {unit}")
+                mistake, diagnosis = (
+                    code,
+                    (
+                        f"{ENGINE_KEYS[key][2]} matches {words} "
+                        f"({v:.4g} {unit}); the correct value is "
+                        f"{correct:.4g} {unit}"
+                    ),
+                )
                 break
-    return Verdict(key, ans.raw, given, correct, unit,
-                   err / abs(correct) if correct else None,
-                   tol / abs(correct) if correct else math.inf, tol, rule, ok, signed,
-                   mistake, diagnosis, ans.line)
+    return Verdict(
+        key,
+        ans.raw,
+        given,
+        correct,
+        unit,
+        err / abs(correct) if correct else None,
+        tol / abs(correct) if correct else math.inf,
+        tol,
+        rule,
+        ok,
+        signed,
+        mistake,
+        diagnosis,
+        ans.line,
+    )

@@ -41,8 +41,16 @@ from ..solver.derived import input_torque, largest, rubbing_at
 from ..solver.kinematics import evaluate
 from ..polygons.scales import diagram_scales
 
-__all__ = ["BUILT", "DIVISION_CM", "HandDrawing", "HOW", "LENGTH_CM", "PENCIL_CM",
-           "PENCIL_DEG", "SAMPLES"]
+__all__ = [
+    "BUILT",
+    "DIVISION_CM",
+    "HandDrawing",
+    "HOW",
+    "LENGTH_CM",
+    "PENCIL_CM",
+    "PENCIL_DEG",
+    "SAMPLES",
+]
 
 #: a pencil's error on paper, lengths (cm) and directions (deg): standard deviations
 PENCIL_CM = 0.025
@@ -57,11 +65,13 @@ SAMPLES = 300
 Z95 = 1.96
 #: how a quantity built from read-offs is drawn, as the check's rule says it (after BUILT)
 BUILT = "; built as: "
-HOW = {"rub": "rub = |w1 -/+ w2| r with the drawn omegas",
-       "torque": "T = -sum(F . v) / omega with the drawn velocities",
-       "vs": "read off between the two images the sliding joins",
-       "as": "read off between the two images the sliding joins",
-       "ac": "2 omega vs with the drawn omega and vs"}
+HOW = {
+    "rub": "rub = |w1 -/+ w2| r with the drawn omegas",
+    "torque": "T = -sum(F . v) / omega with the drawn velocities",
+    "vs": "read off between the two images the sliding joins",
+    "as": "read off between the two images the sliding joins",
+    "ac": "2 omega vs with the drawn omega and vs",
+}
 
 
 class HandDrawing:
@@ -69,6 +79,7 @@ class HandDrawing:
 
     def __init__(self, sol, samples: int = SAMPLES, seed: int = 7):
         import numpy as np
+
         self.np, self.sol = np, sol
         space, self.sv, self.sa = diagram_scales(sol)
         self.space = space
@@ -92,10 +103,12 @@ class HandDrawing:
         self.ok, self.n = ok, n
         self.sliding = {}  # "vs_A" / "as_A" -> sigma of the sliding vector as drawn
         self.image_sigma = {}  # phase -> the sigma of an image point at (x, y), or None
-        self.sigma = {"velocity": self._polygon(velocity_constructions(sol), sol.V, self.sv,
-                                                "velocity"),
-                      "acceleration": self._polygon(acceleration_constructions(sol), sol.A,
-                                                    self.sa, "acceleration")}
+        self.sigma = {
+            "velocity": self._polygon(velocity_constructions(sol), sol.V, self.sv, "velocity"),
+            "acceleration": self._polygon(
+                acceleration_constructions(sol), sol.A, self.sa, "acceleration"
+            ),
+        }
 
     # ----- the polygons, as drawn
     def _polygon(self, cons, D, scale, phase):
@@ -106,13 +119,12 @@ class HandDrawing:
 
         def sigma_at(xy):
             best = min(known, key=lambda k: math.dist(k[0], xy))
-            return best[1] if math.dist(best[0], xy) <= 1e-9 * (1 + math.hypot(*xy)) \
-                else None
+            return best[1] if math.dist(best[0], xy) <= 1e-9 * (1 + math.hypot(*xy)) else None
 
         def set_out(vec):  # a vector drawn from a known image: its end's sigma
             s0 = sigma_at(vec.start)
             s0 = 0.0 if s0 is None else s0
-            return math.sqrt(s0 ** 2 + p ** 2 + (th * vec.magnitude) ** 2)
+            return math.sqrt(s0**2 + p**2 + (th * vec.magnitude) ** 2)
 
         out = {}
         for c in cons:
@@ -127,8 +139,11 @@ class HandDrawing:
                     offs.append(math.hypot(s0, th * math.dist(ln.point, x)))
                 s = math.hypot(*offs) / max(c.condition, 1e-3)
             else:  # set out directly (a crank, an image by similar triangles)
-                ends = [set_out(v) for v in c.found if math.dist(v.end, x) <= 1e-9 *
-                        (1 + math.hypot(*x))]
+                ends = [
+                    set_out(v)
+                    for v in c.found
+                    if math.dist(v.end, x) <= 1e-9 * (1 + math.hypot(*x))
+                ]
                 s = min(ends) if ends else p
             known.append((x, s))
             for v in c.found:
@@ -157,7 +172,7 @@ class HandDrawing:
         if kind in ("v", "a"):
             s = sv if kind == "v" else sa
             r = rv if kind == "v" else ra
-            poly = math.sqrt(sum(s.get(x, 0.0) ** 2 for x in names) + r ** 2)
+            poly = math.sqrt(sum(s.get(x, 0.0) ** 2 for x in names) + r**2)
             vals = m.speed(*names) if kind == "v" else m.acceleration_magnitude(*names)
             return vals, poly
         if kind in ("vu", "au"):  # the guide's point under a block: its image a1 (a1')
@@ -177,7 +192,7 @@ class HandDrawing:
             else:
                 lk = sol.scene.link("-".join(names))
                 key, p, q, length = lk.key, lk.p, lk.q, lk.length
-            poly = math.sqrt(s.get(p, 0.0) ** 2 + s.get(q, 0.0) ** 2 + r ** 2) / length
+            poly = math.sqrt(s.get(p, 0.0) ** 2 + s.get(q, 0.0) ** 2 + r**2) / length
             vals = np.abs(m.omega(key) if kind == "omega" else m.alpha(key))
             return vals, poly
         if kind in ("vs", "as"):  # read off between the images the sliding joins
@@ -213,7 +228,7 @@ class HandDrawing:
             var = 0.0
             for load in sc.loads:
                 if load.force is not None:
-                    var += math.hypot(*load.force) ** 2 * (sv.get(load.target, 0.0) ** 2 + rv ** 2)
+                    var += math.hypot(*load.force) ** 2 * (sv.get(load.target, 0.0) ** 2 + rv**2)
                 else:
                     var += (load.torque * self.omega_sigma(load.target)) ** 2
             return np.abs(vals), math.sqrt(var) / abs(w)
@@ -230,7 +245,7 @@ class HandDrawing:
             return 0.0
         s = self.sigma["velocity"]
         r = LENGTH_CM * self.sv.per_cm
-        return math.sqrt(s.get(lk.p, 0.0) ** 2 + s.get(lk.q, 0.0) ** 2 + r ** 2) / lk.length
+        return math.sqrt(s.get(lk.p, 0.0) ** 2 + s.get(lk.q, 0.0) ** 2 + r**2) / lk.length
 
     def tolerance(self, kind, names, correct):
         """The 95th percentile of the relative error, or None where this model does not
@@ -243,6 +258,6 @@ class HandDrawing:
             return None
         x = np.broadcast_to(np.asarray(vals, dtype=float), (self.n,))[self.ok]
         config = np.abs(np.abs(x) - abs(correct))
-        total = np.sqrt(config ** 2 + (Z95 * poly) ** 2) / abs(correct)
+        total = np.sqrt(config**2 + (Z95 * poly) ** 2) / abs(correct)
         total = total[np.isfinite(total)]
         return float(np.percentile(total, 95.0)) if len(total) else None

@@ -22,8 +22,20 @@ from .slots import coriolis_left_out
 
 _OPPOSITE = {"above": "below", "below": "above", "left": "right", "right": "left"}
 _PHASE = {"v": "velocity", "a": "acceleration"}
-_UNIT_FAMILY = {"v": "v", "vs": "v", "rub": "v", "vu": "v", "vI": "v", "a": "a", "as": "a",
-                "ac": "a", "au": "a", "aI": "a", "omega": "omega", "alpha": "alpha"}
+_UNIT_FAMILY = {
+    "v": "v",
+    "vs": "v",
+    "rub": "v",
+    "vu": "v",
+    "vI": "v",
+    "a": "a",
+    "as": "a",
+    "ac": "a",
+    "au": "a",
+    "aI": "a",
+    "omega": "omega",
+    "alpha": "alpha",
+}
 #: the kind whose unit slips an answer shares (the guide's point under a block: a point's)
 _AS_KIND = {"vu": "v", "au": "a"}
 
@@ -52,9 +64,15 @@ class _Diagnoser:
             per = "/s" if family == "v" else "/s^2"
             return ((1 / f, "length_unit", f"{u}{per} given as m{per}"),)
         if family in ("omega", "alpha"):
-            return ((f, "length_unit", f"a length in {u} used in "
-                     f"{'omega = v' if family == 'omega' else 'alpha = a_t'} / l (l must be "
-                     "in m)"),)
+            return (
+                (
+                    f,
+                    "length_unit",
+                    f"a length in {u} used in "
+                    f"{'omega = v' if family == 'omega' else 'alpha = a_t'} / l (l must be "
+                    "in m)",
+                ),
+            )
         return ()
 
     def cmp(self, x, signed):
@@ -91,11 +109,18 @@ class _Diagnoser:
         if signed:
             word = "cw" if correct > 0 else "ccw"
             if kind in ("vs", "as"):
-                out.append(_Candidate(-correct, "sense", "the direction along the guide is "
-                                      "reversed"))
+                out.append(
+                    _Candidate(-correct, "sense", "the direction along the guide is reversed")
+                )
             else:
-                out.append(_Candidate(-correct, "sense", f"the sense is wrong ({word} given; "
-                                      f"it turns {'ccw' if correct > 0 else 'cw'})"))
+                out.append(
+                    _Candidate(
+                        -correct,
+                        "sense",
+                        f"the sense is wrong ({word} given; "
+                        f"it turns {'ccw' if correct > 0 else 'cw'})",
+                    )
+                )
         if kind != "torque":
             for factor, code, words in _speed_mistakes(sc):
                 alt = self.alts.speed(factor)
@@ -105,8 +130,9 @@ class _Diagnoser:
             out += self.torque(signed)
         if kind in ("F", "N", "Fc", "Fi", "Ci", "h") or (kind == "torque" and sc.has_forces):
             out += self.force_slips(kind, names, signed)
-        for factor, code, words in _FACTOR_MISTAKES.get(_AS_KIND.get(kind, kind), ()) + \
-                self.unit_slips(kind):
+        for factor, code, words in _FACTOR_MISTAKES.get(
+            _AS_KIND.get(kind, kind), ()
+        ) + self.unit_slips(kind):
             out.append(_Candidate(self.cmp(correct, signed) * factor, code, words))
         if kind in ("vu", "au"):
             out += confusions.under_block(self, ans)
@@ -124,27 +150,46 @@ class _Diagnoser:
             out += self.step_coriolis_left_out(kind, names, signed)
         if kind == "vs":
             X = sc.slider(names[0]).point  # a peg's slot: vs_P_OA is of the peg P
-            out.append(_Candidate(sol.speed(X), "absolute_for_relative",
-                                  f"the absolute velocity of {X} given for its "
-                                  "sliding velocity"))
+            out.append(
+                _Candidate(
+                    sol.speed(X),
+                    "absolute_for_relative",
+                    f"the absolute velocity of {X} given for its sliding velocity",
+                )
+            )
         if kind == "rub":
             out += self.rubbing(names[0])
         for X, side, alt in self.alts.branches():
             try:
-                out.append(_Candidate(val(alt), "other_branch",
-                                      f"the other assembly branch ({X} {side} instead of "
-                                      f"{_OPPOSITE[side]})"))
+                out.append(
+                    _Candidate(
+                        val(alt),
+                        "other_branch",
+                        f"the other assembly branch ({X} {side} instead of {_OPPOSITE[side]})",
+                    )
+                )
             except (KeyError, TypeError):
                 pass
         for slip, alt in self.alts.angle_slips():
             if alt is not None and kind != "torque":
-                out.append(_Candidate(val(alt), slip.code, f"{slip.text} (crank at "
-                                      f"{_g(math.degrees(slip.value))} deg from +x instead of "
-                                      f"{_g(math.degrees(sc.input.angle) % 360)})"))
+                out.append(
+                    _Candidate(
+                        val(alt),
+                        slip.code,
+                        f"{slip.text} (crank at "
+                        f"{_g(math.degrees(slip.value))} deg from +x instead of "
+                        f"{_g(math.degrees(sc.input.angle) % 360)})",
+                    )
+                )
         alt = self.alts.angle_as_radians()
         if alt is not None and kind != "torque":
-            out.append(_Candidate(val(alt), "angle_in_radians", "the crank angle in degrees used as "
-                                  "radians (calculator in RAD mode)"))
+            out.append(
+                _Candidate(
+                    val(alt),
+                    "angle_in_radians",
+                    "the crank angle in degrees used as radians (calculator in RAD mode)",
+                )
+            )
         for factor, code, words in _DECIMAL:
             out.append(_Candidate(self.cmp(correct, signed) * factor, code, words))
         # last: another quantity of the problem (a named mistake of the same value first)
@@ -161,31 +206,52 @@ class _Diagnoser:
         if len(names) == 1:
             X = names[0]
             for Y in self.body_points(X):
-                out.append(_Candidate(mag(X, Y), "relative_for_absolute",
-                                      f"you gave {sym}_{X}{Y} ({_g(mag(X, Y))} {unit}), the "
-                                      f"relative {_PHASE[kind]} of {X} to {Y}, for the "
-                                      f"absolute {sym}_{X}"))
+                out.append(
+                    _Candidate(
+                        mag(X, Y),
+                        "relative_for_absolute",
+                        f"you gave {sym}_{X}{Y} ({_g(mag(X, Y))} {unit}), the "
+                        f"relative {_PHASE[kind]} of {X} to {Y}, for the "
+                        f"absolute {sym}_{X}",
+                    )
+                )
             sl = self.sc.slider(X)
             if kind in ("v", "a") and isinstance(sl, GuideSlider):
                 if kind == "v":
-                    out.append(_Candidate(abs(sol.sliding_velocity(X)), "relative_for_absolute",
-                                          f"the sliding velocity of {X} on its guide given for "
-                                          f"its absolute velocity"))
+                    out.append(
+                        _Candidate(
+                            abs(sol.sliding_velocity(X)),
+                            "relative_for_absolute",
+                            f"the sliding velocity of {X} on its guide given for "
+                            f"its absolute velocity",
+                        )
+                    )
                 # the classic slotted-lever slip: the guide's point under the block for the
                 # block itself (a1 for a: they differ by the sliding velocity)
                 phase = "acceleration" if kind == "a" else "velocity"
                 under = sol.under_block(sl.key, phase)
                 if under is not None:
-                    key = next((f"{sym}_{n}" for n, k in
-                                confusions.under_names(self.sc).items() if k == sl.key),
-                               None)
-                    out.append(_Candidate(math.hypot(*under), "coincident_for_block",
-                                          "you gave " + (f"{key}, " if key else "")
-                                          + f"the {_PHASE[kind]} of the point of {sl.guide} "
-                                          f"under the block ({under_label(self.sol, X, phase)}"
-                                          f"), for the block {X}'s own {sym}_{X}: they differ "
-                                          "by the sliding" + (" and Coriolis components" if
-                                                              kind == "a" else " velocity")))
+                    key = next(
+                        (
+                            f"{sym}_{n}"
+                            for n, k in confusions.under_names(self.sc).items()
+                            if k == sl.key
+                        ),
+                        None,
+                    )
+                    out.append(
+                        _Candidate(
+                            math.hypot(*under),
+                            "coincident_for_block",
+                            "you gave "
+                            + (f"{key}, " if key else "")
+                            + f"the {_PHASE[kind]} of the point of {sl.guide} "
+                            f"under the block ({under_label(self.sol, X, phase)}"
+                            f"), for the block {X}'s own {sym}_{X}: they differ "
+                            "by the sliding"
+                            + (" and Coriolis components" if kind == "a" else " velocity"),
+                        )
+                    )
             if kind == "a":
                 for lk in self.sc.links:
                     if X in lk.points and lk.other(X) in self.sc.ground:
@@ -194,10 +260,15 @@ class _Diagnoser:
             X, Y = names
             for Z in (X, Y):
                 if Z not in self.sc.ground:
-                    out.append(_Candidate(mag(Z), "absolute_for_relative",
-                                          f"you gave {sym}_{Z} ({_g(mag(Z))} {unit}), the "
-                                          f"absolute {_PHASE[kind]} of {Z}, for the relative "
-                                          f"{sym}_{X}{Y}"))
+                    out.append(
+                        _Candidate(
+                            mag(Z),
+                            "absolute_for_relative",
+                            f"you gave {sym}_{Z} ({_g(mag(Z))} {unit}), the "
+                            f"absolute {_PHASE[kind]} of {Z}, for the relative "
+                            f"{sym}_{X}{Y}",
+                        )
+                    )
             lk = self.link_at(X, Y)
             if kind == "a" and lk is not None:
                 out += self.components(X, Y, lk, f"a_{X}{Y}")
@@ -207,12 +278,20 @@ class _Diagnoser:
         sol = self.sol
         r = math.dist(sol.P[X], sol.P[Y])
         w, al = sol.W[lk.key], sol.Al[lk.key]
-        return [_Candidate(w * w * r, "component_only",
-                           f"only the centripetal component (omega^2 r = {_g(w * w * r)} "
-                           f"m/s^2) of {name}; add the tangential one"),
-                _Candidate(abs(al) * r, "component_only",
-                           f"only the tangential component (alpha r = {_g(abs(al) * r)} "
-                           f"m/s^2) of {name}; add the centripetal one")]
+        return [
+            _Candidate(
+                w * w * r,
+                "component_only",
+                f"only the centripetal component (omega^2 r = {_g(w * w * r)} "
+                f"m/s^2) of {name}; add the tangential one",
+            ),
+            _Candidate(
+                abs(al) * r,
+                "component_only",
+                f"only the tangential component (alpha r = {_g(abs(al) * r)} "
+                f"m/s^2) of {name}; add the centripetal one",
+            ),
+        ]
 
     def per_length(self, ans):
         sol = self.sol
@@ -222,31 +301,60 @@ class _Diagnoser:
         if ans.kind == "omega":
             for Z in (P, Q):
                 if Z not in self.sc.ground:
-                    out.append(_Candidate(sol.speed(Z) / L, "absolute_over_length",
-                                          f"the absolute v_{Z} divided by {lk.key}; "
-                                          f"omega_{lk.key} = v_{Q}{P} / {lk.key}"))
-            out.append(_Candidate(sol.speed(Q, P), "not_divided_by_length",
-                                  f"v_{Q}{P} not divided by the length {lk.key}"))
+                    out.append(
+                        _Candidate(
+                            sol.speed(Z) / L,
+                            "absolute_over_length",
+                            f"the absolute v_{Z} divided by {lk.key}; "
+                            f"omega_{lk.key} = v_{Q}{P} / {lk.key}",
+                        )
+                    )
+            out.append(
+                _Candidate(
+                    sol.speed(Q, P),
+                    "not_divided_by_length",
+                    f"v_{Q}{P} not divided by the length {lk.key}",
+                )
+            )
             for key in (f"v_{P}{Q}", f"v_{Q}{P}"):
                 a = self.given.get(key)
                 if a is not None:
-                    out.append(_Candidate(abs(a.value) / L, "carried_error",
-                                          f"carried from your {key} = {a.raw}: "
-                                          f"{_g(abs(a.value))} / {_g(L)} (the method is "
-                                          "right)"))
+                    out.append(
+                        _Candidate(
+                            abs(a.value) / L,
+                            "carried_error",
+                            f"carried from your {key} = {a.raw}: "
+                            f"{_g(abs(a.value))} / {_g(L)} (the method is "
+                            "right)",
+                        )
+                    )
         else:
             w = sol.W[lk.key]
-            out.append(_Candidate(sol.acceleration_magnitude(Q, P) / L, "total_for_tangential",
-                                  f"the whole a_{Q}{P} divided by {lk.key}; alpha uses its "
-                                  "tangential component only"))
-            out.append(_Candidate(w * w, "total_for_tangential",
-                                  "the centripetal component divided by the length (that "
-                                  "is omega^2); alpha uses the tangential component"))
+            out.append(
+                _Candidate(
+                    sol.acceleration_magnitude(Q, P) / L,
+                    "total_for_tangential",
+                    f"the whole a_{Q}{P} divided by {lk.key}; alpha uses its "
+                    "tangential component only",
+                )
+            )
+            out.append(
+                _Candidate(
+                    w * w,
+                    "total_for_tangential",
+                    "the centripetal component divided by the length (that "
+                    "is omega^2); alpha uses the tangential component",
+                )
+            )
             for Z in (P, Q):
                 if Z not in self.sc.ground:
-                    out.append(_Candidate(sol.acceleration_magnitude(Z) / L,
-                                          "absolute_over_length",
-                                          f"the absolute a_{Z} divided by {lk.key}"))
+                    out.append(
+                        _Candidate(
+                            sol.acceleration_magnitude(Z) / L,
+                            "absolute_over_length",
+                            f"the absolute a_{Z} divided by {lk.key}",
+                        )
+                    )
         return out
 
     def omega_sets(self):
@@ -262,22 +370,32 @@ class _Diagnoser:
 
     def coriolis_left_out(self, kind, name):
         """A peg in two slots drawn without the Coriolis component of a moving slot."""
-        return [_Candidate(v, code, text) for v, code, text in
-                coriolis_left_out(self.sol, kind, name)]
+        return [
+            _Candidate(v, code, text) for v, code, text in coriolis_left_out(self.sol, kind, name)
+        ]
 
     def step_coriolis_left_out(self, kind, names, signed):
         """A step's Coriolis component left out of the acceleration polygon (a collar driven
         along its turning rod): what each step says the polygon then gives."""
         sol, out = self.sol, []
-        key = (kind, next((lk.key for lk in self.sc.links if set(lk.points) == set(names)),
-                          None) if kind == "alpha" else names[0])
+        key = (
+            kind,
+            next((lk.key for lk in self.sc.links if set(lk.points) == set(names)), None)
+            if kind == "alpha"
+            else names[0],
+        )
         for st in sol.plan.steps:
             wrong = getattr(st, "coriolis_left_out", lambda sol: {})(sol).get(key)
             right = sol.value(kind, names)
             if wrong is not None and abs(abs(wrong) - abs(right)) > 1e-9 * abs(right):
-                out.append(_Candidate(self.cmp(wrong, signed) if kind == "alpha" else wrong,
-                                      "coriolis_omitted", "the Coriolis component 2 omega v "
-                                      f"of {st.title} left out of the acceleration polygon"))
+                out.append(
+                    _Candidate(
+                        self.cmp(wrong, signed) if kind == "alpha" else wrong,
+                        "coriolis_omitted",
+                        "the Coriolis component 2 omega v "
+                        f"of {st.title} left out of the acceleration polygon",
+                    )
+                )
         return out
 
     def rubbing(self, X):
@@ -296,8 +414,11 @@ class _Diagnoser:
         out = []
 
         def pick(f):
-            return f.input_torque if kind == "torque" else \
-                force_value(f, kind, rolling_body(sc, names) if kind == "Fc" else names[0])
+            return (
+                f.input_torque
+                if kind == "torque"
+                else force_value(f, kind, rolling_body(sc, names) if kind == "Fc" else names[0])
+            )
 
         def again(words, code, **changes):
             try:
@@ -307,35 +428,53 @@ class _Diagnoser:
             out.append(_Candidate(self.cmp(value, signed), code, words))
 
         if kind == "torque" and sol.input_torque is not None:
-            out.append(_Candidate(self.cmp(sol.input_torque, signed), "no_inertia",
-                                  "the power balance without the inertia forces (T = -sum F . v "
-                                  "/ omega leaves out -m a_G . v_G and -I alpha omega)"))
+            out.append(
+                _Candidate(
+                    self.cmp(sol.input_torque, signed),
+                    "no_inertia",
+                    "the power balance without the inertia forces (T = -sum F . v "
+                    "/ omega leaves out -m a_G . v_G and -I alpha omega)",
+                )
+            )
         if kind == "Fc":  # the tooth load's part along the tangent given for the whole
             body = rolling_body(sc, names)
             c = next((c for c in sol.forces.contacts if c.wheel == body), None)
             if c is not None and c.teeth is not None and c.teeth > 0:
-                out.append(_Candidate(self.cmp(abs(c.tangential), signed),
-                                      "pressure_angle_left_out",
-                                      "the tooth load's part along the common tangent given "
-                                      "for the whole load: the pressure angle left out (the "
-                                      "load acts along the line of action, |T| / cos phi)"))
+                out.append(
+                    _Candidate(
+                        self.cmp(abs(c.tangential), signed),
+                        "pressure_angle_left_out",
+                        "the tooth load's part along the common tangent given "
+                        "for the whole load: the pressure angle left out (the "
+                        "load acts along the line of action, |T| / cos phi)",
+                    )
+                )
         blocks = [m.body for m in sc.masses if m.block]
         if blocks:
-            again(f"the inertia of the reciprocating parts at {', '.join(blocks)} left out",
-                  "piston_inertia_left_out",
-                  masses=tuple(m for m in sc.masses if not m.block))
+            again(
+                f"the inertia of the reciprocating parts at {', '.join(blocks)} left out",
+                "piston_inertia_left_out",
+                masses=tuple(m for m in sc.masses if not m.block),
+            )
         if sc.gravity is None and sc.masses:
-            again("the weights added: the problem leaves gravity out (a horizontal engine's "
-                  "weights are neglected)", "weight_added",
-                  gravity=Gravity(9.81, (0.0, -1.0), "g = 9.81 m/s^2 downwards"))
+            again(
+                "the weights added: the problem leaves gravity out (a horizontal engine's "
+                "weights are neglected)",
+                "weight_added",
+                gravity=Gravity(9.81, (0.0, -1.0), "g = 9.81 m/s^2 downwards"),
+            )
         turning = [m for m in sc.masses if m.inertia and sol.Al.get(m.body, 0.0)]
         if turning:
-            again("the inertia couple -I alpha left out (the inertia force taken through G)",
-                  "inertia_couple_left_out",
-                  masses=tuple(replace(m, inertia=0.0) for m in sc.masses))
-            again("the inertia force's offset h = I alpha / (m a_G) on the wrong side of G",
-                  "offset_wrong_side",
-                  masses=tuple(replace(m, inertia=-m.inertia) for m in sc.masses))
+            again(
+                "the inertia couple -I alpha left out (the inertia force taken through G)",
+                "inertia_couple_left_out",
+                masses=tuple(replace(m, inertia=0.0) for m in sc.masses),
+            )
+            again(
+                "the inertia force's offset h = I alpha / (m a_G) on the wrong side of G",
+                "offset_wrong_side",
+                masses=tuple(replace(m, inertia=-m.inertia) for m in sc.masses),
+            )
         return out
 
     def gear_ratio(self, ans, signed):
@@ -345,32 +484,41 @@ class _Diagnoser:
         for st in self.sol.plan.steps:
             slips_of = getattr(st, "ratio_slips", None)
             if slips_of is not None and key in st.links:
-                out += [_Candidate(self.cmp(v, signed), code, words)
-                        for v, code, words in slips_of(self.sol)]
+                out += [
+                    _Candidate(self.cmp(v, signed), code, words)
+                    for v, code, words in slips_of(self.sol)
+                ]
         return out
 
     def contact_at_rest(self, ans):
         """Rolling's classic slip: the contact point's acceleration taken as zero (for the
         contact, and for a point of the wheel found from it)."""
         sol, X = self.sol, ans.names[0]
-        c = ("contact_acceleration_zero", "the contact point's acceleration taken as zero: "
-             "no slip makes its velocity zero, not its acceleration (omega^2 r towards the "
-             "centre)")
+        c = (
+            "contact_acceleration_zero",
+            "the contact point's acceleration taken as zero: "
+            "no slip makes its velocity zero, not its acceleration (omega^2 r towards the "
+            "centre)",
+        )
         if ans.kind == "aI":
             wheel = sol.scene.link("-".join(ans.names)).key
             st = next((s for s in sol.plan.steps if wheel in s.links), None)
             got = st.contact_motion(sol) if st is not None else None
             if got is not None and math.hypot(*got[1]) > 0.0:  # a moving gear: v_I not zero
-                c = (c[0], "the contact point's acceleration taken as zero: no slip makes "
-                     "the two gears' velocities equal at the pitch point, not their "
-                     "accelerations (each has its own centripetal component)")
+                c = (
+                    c[0],
+                    "the contact point's acceleration taken as zero: no slip makes "
+                    "the two gears' velocities equal at the pitch point, not their "
+                    "accelerations (each has its own centripetal component)",
+                )
             return [_Candidate(0.0, *c)]
         out = []
         for st in sol.plan.steps if len(ans.names) == 1 else ():
             got = st.contact_motion(sol)
             on = {p for w in st.links for p in sol.scene.link(w).points}
-            if got is not None and X in on | {q.name for q in sol.scene.points
-                                              if q.link in st.links}:
+            if got is not None and X in on | {
+                q.name for q in sol.scene.points if q.link in st.links
+            }:
                 (ax, ay), (bx, by) = sol.A[X], got[2]
                 out.append(_Candidate(math.hypot(ax - bx, ay - by), *c))
         return out
@@ -402,10 +550,16 @@ class _Diagnoser:
         matches = [(d, c) for d, _, c in matches]
         best = matches[0][1]
         text = best.text
-        others = [c for d, c in matches[1:] if c.code != best.code and d <= 0.005
-                  and matches[0][0] <= 0.005 and not (  # the same value, named twice
-                      c.code == "another_quantity" and
-                      abs(c.value - best.value) <= 1e-9 * abs(best.value))]
+        others = [
+            c
+            for d, c in matches[1:]
+            if c.code != best.code
+            and d <= 0.005
+            and matches[0][0] <= 0.005
+            and not (  # the same value, named twice
+                c.code == "another_quantity" and abs(c.value - best.value) <= 1e-9 * abs(best.value)
+            )
+        ]
         if others:
             text += "; or " + others[0].text
         return best.code, text

@@ -31,20 +31,39 @@ def rubbing(d, X):
     out = []
     correct = rub.rubbing_velocity
     if pin.given == "diameter":
-        out.append(_Candidate(2 * correct, "diameter_as_radius",
-                              f"the diameter {_length(sc, 2 * r)} used as the radius "
-                              f"(r = {_length(sc, r)})"))
+        out.append(
+            _Candidate(
+                2 * correct,
+                "diameter_as_radius",
+                f"the diameter {_length(sc, 2 * r)} used as the radius (r = {_length(sc, r)})",
+            )
+        )
     else:
-        out.append(_Candidate(2 * correct, "diameter_as_radius",
-                              f"twice the radius (a diameter, {_length(sc, 2 * r)}) used "
-                              f"as the radius {_length(sc, r)}"))
-    out.append(_Candidate(correct / 2, "radius_as_diameter",
-                          f"the radius {_length(sc, r)} halved (taken as a diameter)"))
+        out.append(
+            _Candidate(
+                2 * correct,
+                "diameter_as_radius",
+                f"twice the radius (a diameter, {_length(sc, 2 * r)}) used "
+                f"as the radius {_length(sc, r)}",
+            )
+        )
+    out.append(
+        _Candidate(
+            correct / 2,
+            "radius_as_diameter",
+            f"the radius {_length(sc, r)} halved (taken as a diameter)",
+        )
+    )
     if len(rub.pairs) > 1:
         for pair, v in rub.pairs.items():
-            out.append(_Candidate(v, "one_pair",
-                                  f"the rubbing between {pair.replace('|', ' and ')} "
-                                  f"only; the largest at {X} is {_g(correct)} m/s"))
+            out.append(
+                _Candidate(
+                    v,
+                    "one_pair",
+                    f"the rubbing between {pair.replace('|', ' and ')} "
+                    f"only; the largest at {X} is {_g(correct)} m/s",
+                )
+            )
     if not rub.pairs:
         return out
     pair = max(rub.pairs, key=rub.pairs.get)
@@ -57,23 +76,35 @@ def rubbing(d, X):
         how, why = f"| |w_{a}| - |w_{b}| | r", " (the difference: they turn alike)"
     else:
         how = f"|w_{a} - w_{b}| r"
-    rule = (f"pin {X} joins {' and '.join(rub.bodies)}: rub_{X} = {how} = "
-            f"{_g(correct)} m/s{why}")
+    rule = f"pin {X} joins {' and '.join(rub.bodies)}: rub_{X} = {how} = {_g(correct)} m/s{why}"
     if wa != 0 and wb != 0:
         if (wa > 0) == (wb > 0):
-            out.append(_Candidate((abs(wa) + abs(wb)) * r, "sum_for_difference",
-                                  f"the sum of the angular velocities of {a} and {b} "
-                                  f"where the difference applies (both turn "
-                                  f"{'ccw' if wa > 0 else 'cw'}); {rule}"))
+            out.append(
+                _Candidate(
+                    (abs(wa) + abs(wb)) * r,
+                    "sum_for_difference",
+                    f"the sum of the angular velocities of {a} and {b} "
+                    f"where the difference applies (both turn "
+                    f"{'ccw' if wa > 0 else 'cw'}); {rule}",
+                )
+            )
         else:
-            out.append(_Candidate(abs(abs(wa) - abs(wb)) * r, "difference_for_sum",
-                                  f"the difference of the angular velocities of {a} and "
-                                  f"{b} where the sum applies ({a} turns "
-                                  f"{'ccw' if wa > 0 else 'cw'}, {b} "
-                                  f"{'ccw' if wb > 0 else 'cw'}); {rule}"))
+            out.append(
+                _Candidate(
+                    abs(abs(wa) - abs(wb)) * r,
+                    "difference_for_sum",
+                    f"the difference of the angular velocities of {a} and "
+                    f"{b} where the sum applies ({a} turns "
+                    f"{'ccw' if wa > 0 else 'cw'}, {b} "
+                    f"{'ccw' if wb > 0 else 'cw'}); {rule}",
+                )
+            )
         for body, w in ((a, wa), (b, wb)):
-            out.append(_Candidate(abs(w) * r, "one_link_only",
-                                  f"the angular velocity of {body} alone; {rule}"))
+            out.append(
+                _Candidate(
+                    abs(w) * r, "one_link_only", f"the angular velocity of {body} alone; {rule}"
+                )
+            )
     at_pin = set(rub.bodies)
     moving = [lk.key for lk in sc.links if lk.key not in sol.plan.fixed_links]
     for omegas, yours in d.omega_sets():
@@ -91,12 +122,17 @@ def rubbing(d, X):
                     nums = _terms([(sg, _num(omegas[c])) for sg, c in terms])
                     away = [c for c in combo if c not in at_pin]
                     mine = [c for c in combo if c in yours]
-                    out.append(_Candidate(
-                        abs(s) * r, "links_not_at_pin",
-                        f"angular velocities of links that do not meet at {X} "
-                        f"({', '.join(away)}): ({expr}) r = ({nums}) x {_num(r)}"
-                        + (f" (your {', '.join('omega_' + c for c in mine)})"
-                           if mine else "") + f"; {rule}", window=0.02))
+                    out.append(
+                        _Candidate(
+                            abs(s) * r,
+                            "links_not_at_pin",
+                            f"angular velocities of links that do not meet at {X} "
+                            f"({', '.join(away)}): ({expr}) r = ({nums}) x {_num(r)}"
+                            + (f" (your {', '.join('omega_' + c for c in mine)})" if mine else "")
+                            + f"; {rule}",
+                            window=0.02,
+                        )
+                    )
     return out
 
 
@@ -126,28 +162,41 @@ def torque(d, signed):
     for power, label in powers:
         # with the student's own velocities the right method gives another torque than
         # the correct one: say so, so that the two numbers do not read as a contradiction
-        then = "" if not label else (
-            f" (with the exact velocities: {_g(abs(exact_power))} / {_g(abs(w))} = "
-            f"{_g(abs(exact_power / w))} N m)")
+        then = (
+            ""
+            if not label
+            else (
+                f" (with the exact velocities: {_g(abs(exact_power))} / {_g(abs(w))} = "
+                f"{_g(abs(exact_power / w))} N m)"
+            )
+        )
         if label:
-            out.append(_Candidate(sign(-power / w), "carried_error",
-                                  f"carried from your velocities: T = {_g(abs(power))} / "
-                                  f"{_g(abs(w))}{label} (the method is right)"))
+            out.append(
+                _Candidate(
+                    sign(-power / w),
+                    "carried_error",
+                    f"carried from your velocities: T = {_g(abs(power))} / "
+                    f"{_g(abs(w))}{label} (the method is right)",
+                )
+            )
         for omegas, yours in d.omega_sets():
             for lk in sc.links:
                 if lk.key == crank or lk.key in sol.plan.fixed_links or omegas[lk.key] == 0:
                     continue
                 wl = omegas[lk.key]
-                out.append(_Candidate(
-                    sign(-power / (w / abs(w) * wl)), "wrong_omega_in_power_balance",
-                    f"the power {_num(abs(power))} W{label} divided by omega_{lk.key} = "
-                    f"{_num(wl)} rad/s{' (yours)' if lk.key in yours else ''} instead of "
-                    f"the crank's omega_{crank} = {_g(abs(w))} rad/s: T = P / omega_{crank}"
-                    f" = {_g(abs(power))} / {_g(abs(w))} = {_g(abs(power / w))} N m"
-                    f"{then}"))
+                out.append(
+                    _Candidate(
+                        sign(-power / (w / abs(w) * wl)),
+                        "wrong_omega_in_power_balance",
+                        f"the power {_num(abs(power))} W{label} divided by omega_{lk.key} = "
+                        f"{_num(wl)} rad/s{' (yours)' if lk.key in yours else ''} instead of "
+                        f"the crank's omega_{crank} = {_g(abs(w))} rad/s: T = P / omega_{crank}"
+                        f" = {_g(abs(power))} / {_g(abs(w))} = {_g(abs(power / w))} N m"
+                        f"{then}",
+                    )
+                )
         for factor, code, words in _speed_mistakes(sc):
-            out.append(_Candidate(sign(-power / (w * factor)), code,
-                                  f"{words}, in T = P / omega"))
+            out.append(_Candidate(sign(-power / (w * factor)), code, f"{words}, in T = P / omega"))
     # |F| |v| without the angle between them
     full = 0.0
     for load in sc.loads:
@@ -157,7 +206,12 @@ def torque(d, signed):
             full += abs(load.torque * sol.W[load.target])
     power = sum(p for _, p in exact_terms)
     if abs(full - abs(power)) > 1e-9 * full:
-        out.append(_Candidate(sign(math.copysign(full, -power / w)), "force_times_speed",
-                              "F x v without the angle between force and velocity "
-                              "(the power is F . v = F v cos theta)"))
+        out.append(
+            _Candidate(
+                sign(math.copysign(full, -power / w)),
+                "force_times_speed",
+                "F x v without the angle between force and velocity "
+                "(the power is F . v = F v cos theta)",
+            )
+        )
     return out

@@ -50,29 +50,41 @@ def _slip(raw: str, given: float, correct: float, signed: bool):
     digits, last = d
     if len(digits) < 2 or target <= 0:
         return None
-    q = round(target / 10.0 ** last)
+    q = round(target / 10.0**last)
     right = str(q)
     if len(right) == len(digits):
         diff = [i for i in range(len(digits)) if digits[i] != right[i]]
         if len(diff) == 1 and diff[0] < len(digits) - 1:  # a last digit off is no slip
-            return _Candidate(given, "transcription_slip",
-                              f"a slip of the pen: one digit differs ({written} written for "
-                              f"{_written(q, last)})")
-        if len(diff) == 2 and diff[1] == diff[0] + 1 and \
-                digits[diff[0]] == right[diff[1]] and digits[diff[1]] == right[diff[0]]:
-            return _Candidate(given, "transcription_slip",
-                              f"a slip of the pen: two digits swapped ({written} written for "
-                              f"{_written(q, last)})")
+            return _Candidate(
+                given,
+                "transcription_slip",
+                f"a slip of the pen: one digit differs ({written} written for {_written(q, last)})",
+            )
+        if (
+            len(diff) == 2
+            and diff[1] == diff[0] + 1
+            and digits[diff[0]] == right[diff[1]]
+            and digits[diff[1]] == right[diff[0]]
+        ):
+            return _Candidate(
+                given,
+                "transcription_slip",
+                f"a slip of the pen: two digits swapped ({written} written for "
+                f"{_written(q, last)})",
+            )
     if len(right) > len(digits) and right.endswith(digits) and len(digits) >= 2:
-        return _Candidate(given, "transcription_slip",
-                          f"a slip of the pen: leading digits dropped ({written} written for "
-                          f"{_written(q, last)})")
+        return _Candidate(
+            given,
+            "transcription_slip",
+            f"a slip of the pen: leading digits dropped ({written} written for "
+            f"{_written(q, last)})",
+        )
     return None
 
 
 def _written(q: int, last: int) -> str:
     if last >= 0:
-        return str(q * 10 ** last)
+        return str(q * 10**last)
     s = str(q).rjust(-last + 1, "0")
     return f"{s[:last]}.{s[last:]}"
 
@@ -85,13 +97,15 @@ def own_slip(d, ans):
     if mine is None or len(mine[0]) < 2:
         return None
     for other in d.given.values():
-        if other.key == ans.key or other.kind != ans.kind or \
-                set(other.names) != set(ans.names):
+        if other.key == ans.key or other.kind != ans.kind or set(other.names) != set(ans.names):
             continue
         mo = _NUM.search(_pointed(other.raw))
         theirs = _digits(mo.group()) if mo else None
         if theirs and len(theirs[0]) > len(mine[0]) and theirs[0].endswith(mine[0]):
-            return _Candidate(ans.value, "transcription_slip",
-                              f"a slip of the pen: {m.group()} is your own {other.key} = "
-                              f"{mo.group()} with its leading digits lost")
+            return _Candidate(
+                ans.value,
+                "transcription_slip",
+                f"a slip of the pen: {m.group()} is your own {other.key} = "
+                f"{mo.group()} with its leading digits lost",
+            )
     return None

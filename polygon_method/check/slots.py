@@ -55,7 +55,12 @@ def coriolis_left_out(sol, kind, name) -> list:
             value = sol.S[si.key][1] + x
         else:
             value = sol.S[sj.key][1] + y
-        out.append((value, "coriolis_omitted",
-                    f"the Coriolis component in the slot of {si.guide} (2 omega_{si.guide} "
-                    f"vs_{si.key}) left out of the acceleration polygon of the peg {X}"))
+        out.append(
+            (
+                value,
+                "coriolis_omitted",
+                f"the Coriolis component in the slot of {si.guide} (2 omega_{si.guide} "
+                f"vs_{si.key}) left out of the acceleration polygon of the peg {X}",
+            )
+        )
     return out

@@ -29,8 +29,9 @@ class Stated:
 
     def text(self) -> str:
         """The stated tolerance in words: "5 %, 0.01 m/s"."""
-        parts = ([f"{100 * self.relative:g} %"] if self.relative is not None else []) + \
-            [t for _, _, t in self.absolute]
+        parts = ([f"{100 * self.relative:g} %"] if self.relative is not None else []) + [
+            t for _, _, t in self.absolute
+        ]
         return ", ".join(parts)
 
     def absolute_for(self, unit):
@@ -39,15 +40,17 @@ class Stated:
 
 
 #: where the tolerance of an answer file came from
-SOURCES = {"command line": "--tolerance on the command line",
-           "answer file": "the answer file's own tolerance",
-           "scene": "the scene's [answers] tolerance, the book's, for its own answers",
-           "default": "the default: what a careful hand drawing at the step table's scales "
-                      "allows"}
+SOURCES = {
+    "command line": "--tolerance on the command line",
+    "answer file": "the answer file's own tolerance",
+    "scene": "the scene's [answers] tolerance, the book's, for its own answers",
+    "default": "the default: what a careful hand drawing at the step table's scales allows",
+}
 
 
-def choose_tolerance(command_line: Stated | None, own: float | None, book: float | None,
-                     scenes_own: bool) -> tuple:
+def choose_tolerance(
+    command_line: Stated | None, own: float | None, book: float | None, scenes_own: bool
+) -> tuple:
     """(the tolerance to check with: a :class:`Stated` or None for the default, where it
     comes from: a key of ``SOURCES``, and why, in words) for one set of answers.
 
@@ -71,10 +74,10 @@ def choose_tolerance(command_line: Stated | None, own: float | None, book: float
         return Stated(book), "scene", f"{100 * book:g} %, {SOURCES['scene']}"
     why = SOURCES["default"]
     if book is not None:
-        why += f" (not the scene's {100 * book:g} %: that is the book's, for the scene's " \
-            "own answers)"
+        why += (
+            f" (not the scene's {100 * book:g} %: that is the book's, for the scene's own answers)"
+        )
     return None, "default", why
-
 
 
 def _terms(terms) -> str:
@@ -145,12 +148,10 @@ class _Tolerances:
         sol, d = self.sol, self.d
         sv, sa = self.sv.per_cm, self.sa.per_cm
         vt, at = f"velocity diagram at {self.sv.text}", f"acceleration diagram at {self.sa.text}"
-        if kind in ("F", "N", "Fc", "Fi", "Ci", "h") or (kind == "torque" and
-                                                          sol.scene.has_forces):
+        if kind in ("F", "N", "Fc", "Fi", "Ci", "h") or (kind == "torque" and sol.scene.has_forces):
             return 0.0, "computed (the force analysis)"
         if kind in ("v", "a"):
-            if len(names) == 1 and names[0] == self.input_point and \
-                    sol.scene.input.given is None:
+            if len(names) == 1 and names[0] == self.input_point and sol.scene.input.given is None:
                 return 0.0, "computed (crank)"
             f = max(self.f(n) for n in names)
             return (d * sv * f, vt) if kind == "v" else (d * sa * f, at)
@@ -202,8 +203,14 @@ class _Tolerances:
         raise KeyError(kind)
 
 
-def answer_tolerance(sol: Solution, kind: str, names: tuple, correct: float,
-                     relative: float | None = None, _tols=None) -> tuple[float, str]:
+def answer_tolerance(
+    sol: Solution,
+    kind: str,
+    names: tuple,
+    correct: float,
+    relative: float | None = None,
+    _tols=None,
+) -> tuple[float, str]:
     """(absolute tolerance, rule) for one answer.
 
     ``relative`` (the answers' ``tolerance``) gives ``relative |correct|``; without it the
@@ -229,11 +236,13 @@ def answer_tolerance(sol: Solution, kind: str, names: tuple, correct: float,
         return hand * abs(correct), (
             "a careful hand drawing at the step table's scales (pencil 0.25 mm and 0.25 deg, "
             "lengths read to the ruler's 1 mm division), "
-            f"simulated: 95 % of drawings are this close{how}")
+            f"simulated: 95 % of drawings are this close{how}"
+        )
     tol = max(ROUNDING * abs(correct), draw)
     if tol == 0:
         tol = tols.d * (tols.sv.per_cm if UNIT_OF[kind] in ("m/s", "rad/s") else tols.sa.per_cm)
     if draw <= ROUNDING * abs(correct):
-        return tol, "0.5 % (three significant figures)" if where.startswith("computed") else \
-            f"0.5 % (three significant figures; 0.05 cm on the {where} is finer)"
+        return tol, "0.5 % (three significant figures)" if where.startswith(
+            "computed"
+        ) else f"0.5 % (three significant figures; 0.05 cm on the {where} is finer)"
     return tol, f"0.05 cm on the {where}"

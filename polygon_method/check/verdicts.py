@@ -14,16 +14,44 @@ from ..common.units import UNITS, implausible
 ROUNDING = 0.005
 _SIN30 = 0.5
 
-UNIT_OF = {"v": "m/s", "a": "m/s^2", "omega": "rad/s", "alpha": "rad/s^2", "vs": "m/s",
-           "as": "m/s^2", "ac": "m/s^2", "rub": "m/s", "torque": "N m",
-           "vI": "m/s", "aI": "m/s^2", "F": "N", "N": "N", "Fc": "N", "vu": "m/s", "au": "m/s^2",
-           "Fi": "N", "Ci": "N m", "h": "m"}
+UNIT_OF = {
+    "v": "m/s",
+    "a": "m/s^2",
+    "omega": "rad/s",
+    "alpha": "rad/s^2",
+    "vs": "m/s",
+    "as": "m/s^2",
+    "ac": "m/s^2",
+    "rub": "m/s",
+    "torque": "N m",
+    "vI": "m/s",
+    "aI": "m/s^2",
+    "F": "N",
+    "N": "N",
+    "Fc": "N",
+    "vu": "m/s",
+    "au": "m/s^2",
+    "Fi": "N",
+    "Ci": "N m",
+    "h": "m",
+}
 
 
 #: answer kind -> the kind of quantity whose largest value sets what is rounding noise
-_NOISE_KIND = {"v": "v", "vs": "v", "rub": "v", "a": "a", "as": "a", "ac": "a",
-               "vI": "v", "aI": "a", "vu": "v", "au": "a", "omega": "omega",
-               "alpha": "alpha"}
+_NOISE_KIND = {
+    "v": "v",
+    "vs": "v",
+    "rub": "v",
+    "a": "a",
+    "as": "a",
+    "ac": "a",
+    "vI": "v",
+    "aI": "a",
+    "vu": "v",
+    "au": "a",
+    "omega": "omega",
+    "alpha": "alpha",
+}
 
 
 @dataclass(frozen=True)
@@ -68,19 +96,34 @@ class Verdict:
 
     def to_dict(self) -> dict:
         """The verdict as the JSON of ``check --json`` records it."""
-        return {"key": self.key, "given": self.given, "given_text": self.raw,
-                "correct": self.correct, "unit": self.unit,
-                "error_percent": self.error_percent,
-                "tolerance_percent": 100.0 * self.tolerance, "rule": self.rule,
-                "verdict": "right" if self.ok else "wrong", "mistake": self.mistake,
-                "diagnosis": self.diagnosis, "line": self.line,
-                **({"warning": self.warning} if self.warning else {}), **(self.extra or {})}
+        return {
+            "key": self.key,
+            "given": self.given,
+            "given_text": self.raw,
+            "correct": self.correct,
+            "unit": self.unit,
+            "error_percent": self.error_percent,
+            "tolerance_percent": 100.0 * self.tolerance,
+            "rule": self.rule,
+            "verdict": "right" if self.ok else "wrong",
+            "mistake": self.mistake,
+            "diagnosis": self.diagnosis,
+            "line": self.line,
+            **({"warning": self.warning} if self.warning else {}),
+            **(self.extra or {}),
+        }
 
 
 #: the SI unit of an answer -> the kind of quantity (units.UNITS) it is given in
-_KIND_OF_UNIT = {"m/s": "velocity", "m/s^2": "acceleration", "rad/s": "angular_velocity",
-                 "rad/s^2": "angular_acceleration", "N m": "torque", "N": "force",
-                 "m": "length"}
+_KIND_OF_UNIT = {
+    "m/s": "velocity",
+    "m/s^2": "acceleration",
+    "rad/s": "angular_velocity",
+    "rad/s^2": "angular_acceleration",
+    "N m": "torque",
+    "N": "force",
+    "m": "length",
+}
 
 
 def _given_unit(v: Verdict):
@@ -89,8 +132,14 @@ def _given_unit(v: Verdict):
     if not isinstance(v.raw, str):
         return None
     words = v.raw.split()[1:]
-    if words and words[-1] in ("cw", "ccw", "clockwise", "anticlockwise", "acw",
-                               "counterclockwise"):
+    if words and words[-1] in (
+        "cw",
+        "ccw",
+        "clockwise",
+        "anticlockwise",
+        "acw",
+        "counterclockwise",
+    ):
         words = words[:-1]
     unit = " ".join(words)
     table = UNITS.get(_KIND_OF_UNIT.get(v.unit, ""), {})
@@ -122,8 +171,7 @@ def verdicts_text(verdicts, title: str = "") -> str:
     for v in verdicts:
         err = "-" if v.error is None else f"{100 * v.error:.2f} %"
         tol = "-" if not math.isfinite(v.tolerance) else f"{100 * v.tolerance:.2g} %"
-        rows.append((v.key, v.raw, correct_text(v), err, tol,
-                     "right" if v.ok else "WRONG"))
+        rows.append((v.key, v.raw, correct_text(v), err, tol, "right" if v.ok else "WRONG"))
     widths = [max(len(r[i]) for r in rows) for i in range(6)]
     lines = [title] if title else []
     for i, r in enumerate(rows):
@@ -133,17 +181,22 @@ def verdicts_text(verdicts, title: str = "") -> str:
             continue
         v = verdicts[i - 1]
         if not v.ok:
-            lines.append(textwrap.fill(f"mistake: {v.diagnosis}", 92, initial_indent="    ",
-                                       subsequent_indent="      ") if v.diagnosis else
-                         "    mistake: none of the known ones explains it")
+            lines.append(
+                textwrap.fill(
+                    f"mistake: {v.diagnosis}", 92, initial_indent="    ", subsequent_indent="      "
+                )
+                if v.diagnosis
+                else "    mistake: none of the known ones explains it"
+            )
     wrong = sum(not v.ok for v in verdicts)
     for v in verdicts:
         if v.warning:
             lines.append(f"warning: {v.key} = {v.raw}: {v.warning}")
     lines.append("")
     lines.append("tolerance: " + "; ".join(_rules(v.rule for v in verdicts)))
-    lines.append(f"{len(verdicts) - wrong} of {len(verdicts)} right" +
-                 (f", {wrong} wrong" if wrong else ""))
+    lines.append(
+        f"{len(verdicts) - wrong} of {len(verdicts)} right" + (f", {wrong} wrong" if wrong else "")
+    )
     return "\n".join(lines)
 
 
@@ -157,14 +210,20 @@ def _rules(rules) -> list:
         heads.setdefault(head, set())
         if how:
             heads[head].add(how)
-    return [h + (f" (built as: {'; '.join(sorted(hows))})" if hows else "")
-            for h, hows in sorted(heads.items())]
+    return [
+        h + (f" (built as: {'; '.join(sorted(hows))})" if hows else "")
+        for h, hows in sorted(heads.items())
+    ]
 
 
 def verdicts_dict(verdicts, scene: str | None = None, answers: str | None = None) -> dict:
     """The verdicts for ``check --json`` (SI values)."""
     wrong = sum(not v.ok for v in verdicts)
-    return {"scene": scene, "answers_file": answers, "all_right": wrong == 0,
-            "right": len(verdicts) - wrong, "wrong": wrong,
-            "answers": [v.to_dict() for v in verdicts]}
-
+    return {
+        "scene": scene,
+        "answers_file": answers,
+        "all_right": wrong == 0,
+        "right": len(verdicts) - wrong,
+        "wrong": wrong,
+        "answers": [v.to_dict() for v in verdicts],
+    }

@@ -19,8 +19,17 @@ import warnings
 
 from ..common.errors import PolygonMethodError, printable
 from .classroom import _cmd_check, _cmd_variants
-from .commands import (DEFAULT_FRAMES, _cmd_centres, _cmd_draw, _cmd_linkage, _cmd_page,
-                       _cmd_plan, _cmd_solve, _cmd_steps, _cmd_sweep)
+from .commands import (
+    DEFAULT_FRAMES,
+    _cmd_centres,
+    _cmd_draw,
+    _cmd_linkage,
+    _cmd_page,
+    _cmd_plan,
+    _cmd_solve,
+    _cmd_steps,
+    _cmd_sweep,
+)
 from .files import check_outputs, write_output, write_outputs
 
 __all__ = ["main", "build_parser", "write_output", "write_outputs", "check_outputs"]
@@ -59,33 +68,51 @@ def _add_check(sub) -> None:
     variants and the tolerances."""
     s = sub.add_parser("check", help="check answers against the solution")
     s.add_argument("scene")
-    s.add_argument("answers", nargs="*",
-                   help="TOML files with an [answers] table (several, or a directory of "
-                        "them: a whole class)")
+    s.add_argument(
+        "answers",
+        nargs="*",
+        help="TOML files with an [answers] table (several, or a directory of them: a whole class)",
+    )
     s.add_argument("--json", action="store_true")
     s.add_argument("--gradebook", help="FILE.csv or FILE.md: the class's gradebook")
-    s.add_argument("--variants", help="DIR: the variant scenes `variants -o DIR` wrote; each "
-                   "answer file is graded against the variant it names (variant = \"07\")")
-    s.add_argument("--tolerance", action="append", metavar="TOL",
-                   help="the tolerance for every answer file: a per cent (5%%) or a value with "
-                        "its unit for the answers in that unit (0.01 m/s); may be given again "
-                        "for another unit. Without it: the answer file's own, else what a "
-                        "careful hand drawing allows (a scene's own tolerance is the book's, "
-                        "for the scene's answers)")
+    s.add_argument(
+        "--variants",
+        help="DIR: the variant scenes `variants -o DIR` wrote; each "
+        'answer file is graded against the variant it names (variant = "07")',
+    )
+    s.add_argument(
+        "--tolerance",
+        action="append",
+        metavar="TOL",
+        help="the tolerance for every answer file: a per cent (5%%) or a value with "
+        "its unit for the answers in that unit (0.01 m/s); may be given again "
+        "for another unit. Without it: the answer file's own, else what a "
+        "careful hand drawing allows (a scene's own tolerance is the book's, "
+        "for the scene's answers)",
+    )
     s.set_defaults(func=_cmd_check)
 
 
 def _add_variants(sub) -> None:
     """The sub-command variants' arguments: the scene, how many, the seed, the output folder,
     --pdf."""
-    s = sub.add_parser("variants", help="a variant of the scene per student, the answer key "
-                       "and the problem sheet")
+    s = sub.add_parser(
+        "variants", help="a variant of the scene per student, the answer key and the problem sheet"
+    )
     s.add_argument("scene")
     s.add_argument("--count", type=int, default=40, help="how many variants (default 40)")
-    s.add_argument("--seed", type=int, default=0, help="the random seed (the same seed "
-                   "gives the same variants)")
-    s.add_argument("-o", "--output", required=True, help="DIR: the variants, answer key and "
-                   "problem sheet are written into it")
+    s.add_argument(
+        "--seed",
+        type=int,
+        default=0,
+        help="the random seed (the same seed gives the same variants)",
+    )
+    s.add_argument(
+        "-o",
+        "--output",
+        required=True,
+        help="DIR: the variants, answer key and problem sheet are written into it",
+    )
     s.add_argument("--pdf", action="store_true", help="the problem sheet as PDF too")
     s.set_defaults(func=_cmd_variants)
 
@@ -96,38 +123,64 @@ def _add_draw(sub) -> None:
     s = sub.add_parser("draw", help="true-to-scale SVG/PNG/PDF diagrams")
     s.add_argument("scene")
     s.add_argument("-o", "--output", required=True, help="FILE.svg, .png or .pdf")
-    s.add_argument("--diagram", choices=("configuration", "velocity", "acceleration", "all",
-                                         "centres", "forces"), default="all")
-    s.add_argument("--forces", action="store_true",
-                   help="the free-body diagrams and force polygons (the same as --diagram "
-                        "forces; the scene gives [masses] or [gravity])")
-    s.add_argument("--scale", action="append", default=[],
-                   help='e.g. "1 cm = 0.1 m/s" (may be repeated: space, velocity, '
-                        'acceleration, force: "1 cm = 500 N")')
-    s.add_argument("--paper", default="A4",
-                   help="A4 (default), A3 or letter: the sheet is drawn on it, portrait or "
-                        "landscape, on more pages where the diagrams do not fit one at "
-                        "their scales")
-    s.add_argument("--centre-labels", choices=("I13", "13"),
-                   help="how the centres of --diagram centres are labelled (default I13)")
-    s.add_argument("--animate", action="store_true",
-                   help="the three diagrams over the crank's cycle (-o FILE.gif, .html or "
-                        ".svg)")
-    s.add_argument("--frames", type=int,
-                   help=f"frames of --animate over the cycle (default {DEFAULT_FRAMES})")
+    s.add_argument(
+        "--diagram",
+        choices=("configuration", "velocity", "acceleration", "all", "centres", "forces"),
+        default="all",
+    )
+    s.add_argument(
+        "--forces",
+        action="store_true",
+        help="the free-body diagrams and force polygons (the same as --diagram "
+        "forces; the scene gives [masses] or [gravity])",
+    )
+    s.add_argument(
+        "--scale",
+        action="append",
+        default=[],
+        help='e.g. "1 cm = 0.1 m/s" (may be repeated: space, velocity, '
+        'acceleration, force: "1 cm = 500 N")',
+    )
+    s.add_argument(
+        "--paper",
+        default="A4",
+        help="A4 (default), A3 or letter: the sheet is drawn on it, portrait or "
+        "landscape, on more pages where the diagrams do not fit one at "
+        "their scales",
+    )
+    s.add_argument(
+        "--centre-labels",
+        choices=("I13", "13"),
+        help="how the centres of --diagram centres are labelled (default I13)",
+    )
+    s.add_argument(
+        "--animate",
+        action="store_true",
+        help="the three diagrams over the crank's cycle (-o FILE.gif, .html or .svg)",
+    )
+    s.add_argument(
+        "--frames", type=int, help=f"frames of --animate over the cycle (default {DEFAULT_FRAMES})"
+    )
     s.set_defaults(func=_cmd_draw)
 
 
 def _add_page(sub) -> None:
     """The sub-command page's arguments: the scene, the output file, the answers to check, the
     frames."""
-    s = sub.add_parser("page", help="one self-contained HTML page: the diagrams moving with "
-                       "the crank, values, plots, the steps and the check")
+    s = sub.add_parser(
+        "page",
+        help="one self-contained HTML page: the diagrams moving with "
+        "the crank, values, plots, the steps and the check",
+    )
     s.add_argument("scene")
     s.add_argument("-o", "--output", required=True, help="FILE.html")
     s.add_argument("--answers", help="a TOML file with an [answers] table to check")
-    s.add_argument("--frames", type=int, default=DEFAULT_FRAMES,
-                   help=f"frames over the cycle (default {DEFAULT_FRAMES})")
+    s.add_argument(
+        "--frames",
+        type=int,
+        default=DEFAULT_FRAMES,
+        help=f"frames over the cycle (default {DEFAULT_FRAMES})",
+    )
     s.set_defaults(func=_cmd_page)
 
 
@@ -136,21 +189,29 @@ def _add_sweep(sub) -> None:
     its points and links, --summary."""
     s = sub.add_parser("sweep", help="the whole crank cycle")
     s.add_argument("scene")
-    s.add_argument("--steps", type=int, help="N crank angles a turn, over the motion's "
-                   "period: a turn, two for a four-stroke engine, several where a wheel comes "
-                   "back only after several (default 360)")
+    s.add_argument(
+        "--steps",
+        type=int,
+        help="N crank angles a turn, over the motion's "
+        "period: a turn, two for a four-stroke engine, several where a wheel comes "
+        "back only after several (default 360)",
+    )
     s.add_argument("--from", dest="start", type=float, help="first crank angle (deg)")
     s.add_argument("--to", dest="stop", type=float, help="last crank angle (deg)")
     s.add_argument("--step", type=float, help="crank angle step (deg)")
     s.add_argument("--csv", help="FILE.csv: one row per crank angle")
-    s.add_argument("--error-bound", action="store_true",
-                   help="add to the CSV a column err_max: the largest estimated relative "
-                        "error of any quantity at that angle")
+    s.add_argument(
+        "--error-bound",
+        action="store_true",
+        help="add to the CSV a column err_max: the largest estimated relative "
+        "error of any quantity at that angle",
+    )
     s.add_argument("--plot", help="FILE.svg, .png or .pdf")
     s.add_argument("--points", help="points to plot, e.g. C,E (default: all moving points)")
     s.add_argument("--links", help="links to plot, e.g. BC,CD (default: all moving links)")
-    s.add_argument("--summary", action="store_true",
-                   help="maxima and minima with their crank angles")
+    s.add_argument(
+        "--summary", action="store_true", help="maxima and minima with their crank angles"
+    )
     s.set_defaults(func=_cmd_sweep)
 
 
@@ -163,24 +224,42 @@ def _add_linkage(sub) -> None:
 
 def _add_centres(sub) -> None:
     """The sub-command centres' arguments: the scene, the centres' labels."""
-    s = sub.add_parser("centres", help="instantaneous centres (Kennedy's theorem) and the "
-                       "velocities they give")
+    s = sub.add_parser(
+        "centres", help="instantaneous centres (Kennedy's theorem) and the velocities they give"
+    )
     s.add_argument("scene")
-    s.add_argument("--centre-labels", choices=("I13", "13"), default="I13",
-                   help="label the centres I13 (default) or 13, as the course writes them")
+    s.add_argument(
+        "--centre-labels",
+        choices=("I13", "13"),
+        default="I13",
+        help="label the centres I13 (default) or 13, as the course writes them",
+    )
     s.set_defaults(func=_cmd_centres)
 
 
 def build_parser() -> argparse.ArgumentParser:
     """The command line's parser: one sub-command per job (solve, steps, draw, page, ...)."""
-    p = _Parser(prog="polygon-method",
-                description="Planar mechanisms by the relative-velocity (polygon) method.")
+    p = _Parser(
+        prog="polygon-method",
+        description="Planar mechanisms by the relative-velocity (polygon) method.",
+    )
     from .. import __version__
+
     p.add_argument("--version", action="version", version=f"polygon-method {__version__}")
     sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     sub.required = True
-    for add in (_add_solve, _add_plan, _add_steps, _add_check, _add_variants,
-                _add_draw, _add_page, _add_sweep, _add_linkage, _add_centres):
+    for add in (
+        _add_solve,
+        _add_plan,
+        _add_steps,
+        _add_check,
+        _add_variants,
+        _add_draw,
+        _add_page,
+        _add_sweep,
+        _add_linkage,
+        _add_centres,
+    ):
         add(sub)
     return p
 
@@ -195,8 +274,12 @@ def _negative_values(argv: list) -> list:
     option is that option's value, as "-30" is."""
     out = []
     for tok in argv:
-        if out and _NEGATIVE_EXPONENT.match(tok) and out[-1].startswith("--") \
-                and "=" not in out[-1]:
+        if (
+            out
+            and _NEGATIVE_EXPONENT.match(tok)
+            and out[-1].startswith("--")
+            and "=" not in out[-1]
+        ):
             out[-1] = f"{out[-1]}={tok}"
         else:
             out.append(tok)
@@ -232,14 +315,20 @@ def main(argv=None) -> int:
         print(f"polygon-method {args.command}: {where}{exc.strerror or exc}", file=sys.stderr)
         return 2
     except MemoryError:
-        print(f"polygon-method {args.command}: not enough memory for this request (ask for "
-              "fewer crank angles)", file=sys.stderr)
+        print(
+            f"polygon-method {args.command}: not enough memory for this request (ask for "
+            "fewer crank angles)",
+            file=sys.stderr,
+        )
         return 2
     except KeyboardInterrupt:
         return 130
     except Exception as exc:  # a bug: still one line, never a traceback
-        print(f"polygon-method {args.command}: internal error ({type(exc).__name__}: {exc}); "
-              "please report it with the scene file", file=sys.stderr)
+        print(
+            f"polygon-method {args.command}: internal error ({type(exc).__name__}: {exc}); "
+            "please report it with the scene file",
+            file=sys.stderr,
+        )
         return 3
 
 
@@ -272,10 +361,13 @@ def _glyphs(command):
             yield
         finally:
             if missing:
-                print(f"polygon-method {command}: note: the plot font "
-                      f"({', '.join(sorted(fonts))}) has no glyph for "
-                      f"{' '.join(missing)}: drawn as an empty box (the text files keep "
-                      "them)", file=sys.stderr)
+                print(
+                    f"polygon-method {command}: note: the plot font "
+                    f"({', '.join(sorted(fonts))}) has no glyph for "
+                    f"{' '.join(missing)}: drawn as an empty box (the text files keep "
+                    "them)",
+                    file=sys.stderr,
+                )
 
 
 def _glyph_char(name: str) -> str:

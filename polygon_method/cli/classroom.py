@@ -21,6 +21,7 @@ def _finite(x):
 def _json(d) -> str:
     """``d`` as JSON, every infinite or undefined number in it (an error of a per cent
     against a right value of 0) written as null."""
+
     def clean(x):
         if isinstance(x, float):
             return _finite(x)
@@ -29,11 +30,17 @@ def _json(d) -> str:
         if isinstance(x, (list, tuple)):
             return [clean(v) for v in x]
         return x
+
     return json.dumps(clean(d), indent=2, allow_nan=False)
 
 
-_ABSOLUTE = (("velocity", "m/s"), ("acceleration", "m/s^2"), ("angular_velocity", "rad/s"),
-             ("angular_acceleration", "rad/s^2"), ("torque", "N m"))
+_ABSOLUTE = (
+    ("velocity", "m/s"),
+    ("acceleration", "m/s^2"),
+    ("angular_velocity", "rad/s"),
+    ("angular_acceleration", "rad/s^2"),
+    ("torque", "N m"),
+)
 
 
 def _command_line_tolerance(values):
@@ -42,6 +49,7 @@ def _command_line_tolerance(values):
     from ..check import SOURCES, Stated
     from ..scene.answers import decimal_comma
     from ..common.units import parse_quantity
+
     if not values:
         return None
     relative, absolute = None, []
@@ -49,20 +57,26 @@ def _command_line_tolerance(values):
         text = decimal_comma(raw.strip())
         shown = printable(raw)
         if text is None or not text:
-            raise SceneError(f"'{shown}': write a per cent (5%) or a value with "
-                             "its unit (0.01 m/s), with a decimal point", key="--tolerance")
+            raise SceneError(
+                f"'{shown}': write a per cent (5%) or a value with "
+                "its unit (0.01 m/s), with a decimal point",
+                key="--tolerance",
+            )
         if text.endswith("%"):
             try:
                 q = parse_quantity(text, "percent", default_unit="%").value
             except PolygonMethodError:
                 q = math.nan
             if not 0 < q < 1:
-                raise SceneError(f"'{shown}': a per cent between 0 and 100 (e.g. "
-                                 "5%)", key="--tolerance")
+                raise SceneError(
+                    f"'{shown}': a per cent between 0 and 100 (e.g. 5%)", key="--tolerance"
+                )
             if relative is not None:
-                raise SceneError(f"'{shown}': a second per cent; give one (and "
-                                 "values with a unit for one kind of answer each)",
-                                 key="--tolerance")
+                raise SceneError(
+                    f"'{shown}': a second per cent; give one (and "
+                    "values with a unit for one kind of answer each)",
+                    key="--tolerance",
+                )
             relative = q
             continue
         for kind, si in _ABSOLUTE:
@@ -71,17 +85,18 @@ def _command_line_tolerance(values):
             except PolygonMethodError:
                 continue
             if not q.value > 0 or q.sense is not None:
-                raise SceneError(f"'{shown}': a tolerance is a positive size",
-                                 key="--tolerance")
+                raise SceneError(f"'{shown}': a tolerance is a positive size", key="--tolerance")
             if any(u == si for u, _, _ in absolute):
-                raise SceneError(f"'{shown}': a second tolerance in {si}",
-                                 key="--tolerance")
+                raise SceneError(f"'{shown}': a second tolerance in {si}", key="--tolerance")
             absolute.append((si, q.value, " ".join(text.split())))
             break
         else:
-            raise SceneError(f"'{shown}' is neither a per cent (5%) nor a value with a unit of "
-                             "velocity, acceleration, angular velocity or acceleration, or "
-                             "torque (0.01 m/s)", key="--tolerance")
+            raise SceneError(
+                f"'{shown}' is neither a per cent (5%) nor a value with a unit of "
+                "velocity, acceleration, angular velocity or acceleration, or "
+                "torque (0.01 m/s)",
+                key="--tolerance",
+            )
     return Stated(relative, tuple(absolute), source=SOURCES["command line"])
 
 
@@ -109,8 +124,9 @@ def _listed(path: Path):
     """A file found by listing a directory is opened only if it is a regular file (or a
     directory, which the reader names): a pipe or a device would be waited on for ever."""
     if path.exists() and not path.is_file() and not path.is_dir():
-        raise SceneError("not a regular file (a pipe or a device): not read",
-                         file=printable(str(path)))
+        raise SceneError(
+            "not a regular file (a pipe or a device): not read", file=printable(str(path))
+        )
 
 
 class _VariantBook:
@@ -121,12 +137,14 @@ class _VariantBook:
     def __init__(self, folder, base):
         self.folder, self.base = Path(folder), base
         if not self.folder.is_dir():
-            raise SceneError(f"--variants {folder}: not a directory of variant scenes",
-                             key="--variants")
+            raise SceneError(
+                f"--variants {folder}: not a directory of variant scenes", key="--variants"
+            )
         self.files = sorted(self.folder.glob("*.toml"))
         if not self.files:
-            raise SceneError(f"--variants {folder}: no variant scenes (*.toml) in it",
-                             key="--variants")
+            raise SceneError(
+                f"--variants {folder}: no variant scenes (*.toml) in it", key="--variants"
+            )
         self.done = {}
         self._index = None
 
@@ -143,6 +161,7 @@ class _VariantBook:
     def index(self):
         """[(file, its scene or the error that kept it from being read)], read once."""
         from ..scene import load_scene
+
         if self._index is None:
             self._index, seen = [], set()
             for f in self.files:
@@ -165,34 +184,53 @@ class _VariantBook:
         from ..motion.solution import solve
 
         want = self._names(named)
-        hits = [(f, sc) for f, sc in self.index() if not isinstance(sc, Exception)
-                and sc.variant is not None and self._names(sc.variant.id) & want]
+        hits = [
+            (f, sc)
+            for f, sc in self.index()
+            if not isinstance(sc, Exception)
+            and sc.variant is not None
+            and self._names(sc.variant.id) & want
+        ]
         if not hits:
             named_so = [(f, sc) for f, sc in self.index() if self._names(f.name) & want]
             if named_so:  # a file of that name that is no variant of its own
                 f, sc = named_so[0]
                 if isinstance(sc, Exception):
-                    raise SceneError(f"{f.name} in {self.folder} cannot be read: "
-                                     f"{sc.one_line()}", key="variant")
-                raise SceneError(f"{f.name} in {self.folder} is not a generated variant "
-                                 + ("(it has no [variant] table)" if sc.variant is None
-                                    else f"'{printable(named)}' (it holds variant "
-                                    f"'{printable(sc.variant.id)}')"), key="variant")
-            shown = ", ".join(f.name for f in self.files[:3]) + \
-                (", ..." if len(self.files) > 3 else "")
-            raise SceneError(f"variant '{printable(named)}' is not in {self.folder} (its "
-                             f"variants: {shown})", key="variant")
+                    raise SceneError(
+                        f"{f.name} in {self.folder} cannot be read: {sc.one_line()}", key="variant"
+                    )
+                raise SceneError(
+                    f"{f.name} in {self.folder} is not a generated variant "
+                    + (
+                        "(it has no [variant] table)"
+                        if sc.variant is None
+                        else f"'{printable(named)}' (it holds variant '{printable(sc.variant.id)}')"
+                    ),
+                    key="variant",
+                )
+            shown = ", ".join(f.name for f in self.files[:3]) + (
+                ", ..." if len(self.files) > 3 else ""
+            )
+            raise SceneError(
+                f"variant '{printable(named)}' is not in {self.folder} (its variants: {shown})",
+                key="variant",
+            )
         if len(hits) > 1:
-            raise SceneError(f"variant '{printable(named)}' is in {len(hits)} files of "
-                             f"{self.folder} ({', '.join(f.name for f, _ in hits[:3])}): "
-                             "remove the copies", key="variant")
+            raise SceneError(
+                f"variant '{printable(named)}' is in {len(hits)} files of "
+                f"{self.folder} ({', '.join(f.name for f, _ in hits[:3])}): "
+                "remove the copies",
+                key="variant",
+            )
         f, sc = hits[0]
         if f not in self.done:
             try:
                 base_title = self.base.title or ""
                 if base_title and sc.variant.of != base_title:
-                    raise SceneError(f"{f.name} is a variant of {sc.variant.of!r}, not of "
-                                     f"{base_title!r}", key="variant")
+                    raise SceneError(
+                        f"{f.name} is a variant of {sc.variant.of!r}, not of {base_title!r}",
+                        key="variant",
+                    )
                 sol = solve(sc)
                 self.done[f] = (sc.variant.id, sol, tolerances(sol), None)
             except PolygonMethodError as exc:
@@ -208,15 +246,20 @@ def _graded_against(named, scene, sol, tols, book):
     ``--variants``), or the scene's own."""
     if book is not None:
         if named is None:
-            raise SceneError("names no variant: add variant = \"07\" (the number on the "
-                             "student's problem sheet)", key="variant")
+            raise SceneError(
+                'names no variant: add variant = "07" (the number on the student\'s problem sheet)',
+                key="variant",
+            )
         return book.find(named)
     if named is not None:
         own = scene.variant
         if own is None or not (_VariantBook._names(own.id) & _VariantBook._names(named)):
-            raise SceneError(f"names variant '{printable(named)}': grade it against its own "
-                             "variant with --variants DIR (the directory `variants -o` "
-                             "wrote)", key="variant")
+            raise SceneError(
+                f"names variant '{printable(named)}': grade it against its own "
+                "variant with --variants DIR (the directory `variants -o` "
+                "wrote)",
+                key="variant",
+            )
         return own.id, sol, tols
     return None, sol, tols
 
@@ -224,14 +267,19 @@ def _graded_against(named, scene, sol, tols, book):
 def _cmd_class(args, scene, sol, files) -> int:
     """A whole class: a row per answer file, the summary, the gradebook."""
     from ..check import check_answers, choose_tolerance, tolerances
-    from ..check.classroom import (Row, class_dict, class_text, gradebook_csv,
-                                  gradebook_markdown, summary_text)
+    from ..check.classroom import (
+        Row,
+        class_dict,
+        class_text,
+        gradebook_csv,
+        gradebook_markdown,
+        summary_text,
+    )
     from ..scene import load_answers
 
     book = getattr(args, "gradebook", None)
     if book and not book.lower().endswith((".csv", ".md")):
-        raise SceneError(f"--gradebook {book}: the file must end in .csv or .md",
-                         key="--gradebook")
+        raise SceneError(f"--gradebook {book}: the file must end in .csv or .md", key="--gradebook")
     variants = getattr(args, "variants", None)
     vbook = _VariantBook(variants, scene) if variants else None
     # every file read is an input the gradebook must not be written over
@@ -247,33 +295,48 @@ def _cmd_class(args, scene, sol, files) -> int:
         try:
             if f not in given:
                 _listed(Path(f))
-            own, answers, named, name = load_answers(f, scene, with_variant=True,
-                                                     with_student=True)
+            own, answers, named, name = load_answers(f, scene, with_variant=True, with_student=True)
             if name:
                 student = printable(name)
             tolerance, source, _ = choose_tolerance(stated, own, scene.tolerance, False)
             vid, vsol, vtols = _graded_against(named, scene, sol, tols, vbook)
-            rows.append(Row(student, printable(str(f)),
-                            check_answers(vsol, answers, tolerance, _tols=vtols),
-                            variant=vid if vbook is None else (vid or ""),
-                            tolerance=_row_tolerance(tolerance, source)))
+            rows.append(
+                Row(
+                    student,
+                    printable(str(f)),
+                    check_answers(vsol, answers, tolerance, _tols=vtols),
+                    variant=vid if vbook is None else (vid or ""),
+                    tolerance=_row_tolerance(tolerance, source),
+                )
+            )
         except PolygonMethodError as exc:  # a row with its error, never the whole run
             line = exc.one_line()
             where = f"{printable(str(f))}: "
-            rows.append(Row(student, printable(str(f)), (), error=line[len(where):] if line.startswith(where)
-                            else line,
-                            variant=(printable(named) if named else "") if vbook else None))
+            rows.append(
+                Row(
+                    student,
+                    printable(str(f)),
+                    (),
+                    error=line[len(where) :] if line.startswith(where) else line,
+                    variant=(printable(named) if named else "") if vbook else None,
+                )
+            )
     if getattr(args, "json", False):
         print(_json(class_dict(rows, book=scene.tolerance)))
     else:
-        print(f"{scene.title or args.scene}: {len(files)} answer files"
-              + (f", each graded against its own variant in {variants}" if vbook else ""))
+        print(
+            f"{scene.title or args.scene}: {len(files)} answer files"
+            + (f", each graded against its own variant in {variants}" if vbook else "")
+        )
         print(class_text(rows))
         print()
         print(summary_text(rows, book=scene.tolerance))
     if targets:
-        data = gradebook_csv(rows) if book.lower().endswith(".csv") else \
-            gradebook_markdown(rows, book=scene.tolerance)
+        data = (
+            gradebook_csv(rows)
+            if book.lower().endswith(".csv")
+            else gradebook_markdown(rows, book=scene.tolerance)
+        )
         write_outputs(targets, [(data, False)])
     return 0
 
@@ -291,38 +354,50 @@ def _cmd_check(args) -> int:
     scene = load_scene(args.scene)
     sol = solve(scene)
     files = _answer_files(args.answers or [])
-    if len(files) > 1 or (args.answers and Path(args.answers[0]).is_dir()) or \
-            getattr(args, "gradebook", None):
+    if (
+        len(files) > 1
+        or (args.answers and Path(args.answers[0]).is_dir())
+        or getattr(args, "gradebook", None)
+    ):
         if not files:
-            raise SceneError(f"no answer files in {', '.join(args.answers or ['(none)'])}",
-                             key="answers")
+            raise SceneError(
+                f"no answer files in {', '.join(args.answers or ['(none)'])}", key="answers"
+            )
         return _cmd_class(args, scene, sol, files)
     args.answers = files[0] if files else None
     variants = getattr(args, "variants", None)
-    title = f"{scene.title or args.scene}: answers from " + \
-        (args.answers if args.answers else "the scene")
+    title = f"{scene.title or args.scene}: answers from " + (
+        args.answers if args.answers else "the scene"
+    )
     if args.answers:
-        own, answers, named, student = load_answers(args.answers, scene, with_variant=True,
-                                                    with_student=True)
+        own, answers, named, student = load_answers(
+            args.answers, scene, with_variant=True, with_student=True
+        )
         if student:
             title += f" ({printable(student)})"
         tolerance, source, why = choose_tolerance(stated, own, scene.tolerance, False)
         try:
-            vid, sol, _ = _graded_against(named, scene, sol, None,
-                                          _VariantBook(variants, scene) if variants else None)
+            vid, sol, _ = _graded_against(
+                named, scene, sol, None, _VariantBook(variants, scene) if variants else None
+            )
         except PolygonMethodError as exc:
             raise exc.located(args.answers)
         if vid and variants:
             title += f", graded against variant {vid}"
     else:
         if variants:
-            raise SceneError("--variants grades answer files: give the students' files (or "
-                             "their directory)", key="--variants")
+            raise SceneError(
+                "--variants grades answer files: give the students' files (or their directory)",
+                key="--variants",
+            )
         answers = scene.answers
         tolerance, source, why = choose_tolerance(stated, None, scene.tolerance, True)
     if not answers:
-        raise SceneError("nothing to check: the scene has no [answers] and no answer file "
-                         "was given", file=args.scene, key="[answers]")
+        raise SceneError(
+            "nothing to check: the scene has no [answers] and no answer file was given",
+            file=args.scene,
+            key="[answers]",
+        )
     try:
         verdicts = check_answers(sol, answers, tolerance)
     except PolygonMethodError as exc:  # a centre the mechanism has not (I_19 of four links)
@@ -341,56 +416,68 @@ def _cmd_variants(args) -> int:
     student, the answer key (Markdown and CSV) and the problem sheet, written all or none;
     fewer good variants than asked: one line, exit 2, nothing written."""
     from ..scene import load_scene
-    from ..variants import (answer_key_csv, answer_key_markdown, generate, sheet_markdown,
-                           sheet_pdf, summary_text)
+    from ..variants import (
+        answer_key_csv,
+        answer_key_markdown,
+        generate,
+        sheet_markdown,
+        sheet_pdf,
+        summary_text,
+    )
 
     from ..variants import MAX_SEED, MAX_VARIANTS
+
     if args.count < 1 or args.count > MAX_VARIANTS:
-        raise SceneError(f"--count {args.count}: between 1 and {MAX_VARIANTS}",
-                         key="--count")
+        raise SceneError(f"--count {args.count}: between 1 and {MAX_VARIANTS}", key="--count")
     if not 0 <= args.seed <= MAX_SEED:
-        raise SceneError(f"--seed {args.seed}: a whole number from 0 to {MAX_SEED} (each "
-                         "variant file records it, and TOML's integers are 64-bit)",
-                         key="--seed")
+        raise SceneError(
+            f"--seed {args.seed}: a whole number from 0 to {MAX_SEED} (each "
+            "variant file records it, and TOML's integers are 64-bit)",
+            key="--seed",
+        )
     if not args.output.strip():
         raise PolygonMethodError("an empty path: name the directory to write into", key="-o")
     out = Path(args.output)
     if out.is_symlink() and not out.exists():
-        raise PolygonMethodError(f"cannot write into {out}: it is a link to "
-                                 f"{os.readlink(out)}, which does not exist", key="-o")
+        raise PolygonMethodError(
+            f"cannot write into {out}: it is a link to {os.readlink(out)}, which does not exist",
+            key="-o",
+        )
     made = not out.exists()
     if out.exists() and not out.is_dir():
         raise PolygonMethodError(f"cannot write into {out}: it is not a directory", key="-o")
     if made and not out.parent.is_dir():
-        raise PolygonMethodError(f"cannot write into {out}: no directory {out.parent}",
-                                 key="-o")
+        raise PolygonMethodError(f"cannot write into {out}: no directory {out.parent}", key="-o")
     scene = load_scene(args.scene)
     vs = generate(scene, args.count, args.seed)
     short = vs.shortfall()
     if short:
         raise PolygonMethodError(short, file=args.scene, key="[variants]")
     files = [(v.name, v.text, False) for v in vs.variants]
-    files += [("answer-key.md", answer_key_markdown(vs), False),
-              ("answer-key.csv", answer_key_csv(vs), False),
-              ("problem-sheet.md", sheet_markdown(vs), False)]
+    files += [
+        ("answer-key.md", answer_key_markdown(vs), False),
+        ("answer-key.csv", answer_key_csv(vs), False),
+        ("problem-sheet.md", sheet_markdown(vs), False),
+    ]
     if args.pdf:  # each student's figure, drawn by the views
         from ..draw import draw_configuration
+
         files.append(("problem-sheet.pdf", sheet_pdf(vs, figure=draw_configuration), True))
     names = {f[0] for f in files}
     if not made:  # variants of an earlier run would be paired with the wrong students
         stale = sorted(p.name for p in out.glob("variant-*.toml") if p.name not in names)
         if stale:
-            raise PolygonMethodError(f"{out} holds {stale[0]}"
-                                     + (f" and {len(stale) - 1} more" if len(stale) > 1
-                                        else "")
-                                     + " from an earlier run that this one would not "
-                                     "replace: remove them or write to a new directory",
-                                     key="-o")
+            raise PolygonMethodError(
+                f"{out} holds {stale[0]}"
+                + (f" and {len(stale) - 1} more" if len(stale) > 1 else "")
+                + " from an earlier run that this one would not "
+                "replace: remove them or write to a new directory",
+                key="-o",
+            )
     if made:
         out.mkdir()
     try:
-        targets = check_outputs([(out / name, "-o") for name, _, _ in files],
-                                protect=[args.scene])
+        targets = check_outputs([(out / name, "-o") for name, _, _ in files], protect=[args.scene])
         write_outputs(targets, [(data, binary) for _, data, binary in files])
     except BaseException:
         if made:
@@ -400,8 +487,9 @@ def _cmd_variants(args) -> int:
                 pass
         raise
     print(summary_text(vs))
-    print(f"written to {out}: {len(vs.variants)} scenes ({vs.variants[0].name} ... "
-          f"{vs.variants[-1].name}), answer-key.md, answer-key.csv, problem-sheet.md"
-          + (", problem-sheet.pdf" if args.pdf else ""))
+    print(
+        f"written to {out}: {len(vs.variants)} scenes ({vs.variants[0].name} ... "
+        f"{vs.variants[-1].name}), answer-key.md, answer-key.csv, problem-sheet.md"
+        + (", problem-sheet.pdf" if args.pdf else "")
+    )
     return 0
-

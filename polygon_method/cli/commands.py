@@ -26,6 +26,7 @@ def _cmd_solve(args) -> int:
         print(json.dumps(d, indent=2, allow_nan=False))
     else:
         from ..text.report import solution_text
+
         print(solution_text(sol))
         if cycle is not None:
             print("\n" + "\n".join(cycle.lines(sol.scene)))
@@ -41,11 +42,16 @@ def _engine_cycle(sol):
         return None
     from ..common.errors import PolygonMethodError
     from ..linkage.flywheel import engine_piston, turning_moment
+
     if sol.forces_refused or engine_piston(sc) is None:
         if sc.flywheel is not None:
-            raise PolygonMethodError("the flywheel is an engine's: a slider crank "
-                                     "with a gas force on its piston ([loads] pressure, or "
-                                     "[indicator])", file=sc.file, key="[flywheel]")
+            raise PolygonMethodError(
+                "the flywheel is an engine's: a slider crank "
+                "with a gas force on its piston ([loads] pressure, or "
+                "[indicator])",
+                file=sc.file,
+                key="[flywheel]",
+            )
         return None
     return turning_moment(sc)
 
@@ -66,7 +72,9 @@ def _cmd_centres(args) -> int:
     from ..motion.solution import solve
 
     prefix = "" if getattr(args, "centre_labels", "I13") == "13" else "I"
-    print(centres_text(locate(solve(load_scene(args.scene, variants=False, answers=False)), prefix)))
+    print(
+        centres_text(locate(solve(load_scene(args.scene, variants=False, answers=False)), prefix))
+    )
     return 0
 
 
@@ -77,7 +85,6 @@ def _cmd_steps(args) -> int:
 
     print(steps_text(solve(load_scene(args.scene, variants=False, answers=False)), fmt=args.format))
     return 0
-
 
 
 def _cmd_draw(args) -> int:
@@ -91,44 +98,61 @@ def _cmd_draw(args) -> int:
     fmt = out.suffix.lower().lstrip(".")
     if getattr(args, "forces", False):  # the same as --diagram forces
         if args.diagram not in (None, "all", "forces"):
-            raise PolygonMethodError(f"--forces draws the forces sheet: leave out --diagram "
-                                     f"{args.diagram}", key="--forces")
+            raise PolygonMethodError(
+                f"--forces draws the forces sheet: leave out --diagram {args.diagram}",
+                key="--forces",
+            )
         if getattr(args, "animate", False):
-            raise PolygonMethodError("--forces draws a sheet on paper, not an animation (the "
-                                     "page shows the inertia forces moving): leave out "
-                                     "--animate", key="--forces")
+            raise PolygonMethodError(
+                "--forces draws a sheet on paper, not an animation (the "
+                "page shows the inertia forces moving): leave out "
+                "--animate",
+                key="--forces",
+            )
         args.diagram = "forces"
     if getattr(args, "animate", False):
         if fmt not in ("gif", "html", "svg"):
-            raise PolygonMethodError(f"cannot animate to {out}: the file name must end in "
-                                     ".gif, .html or .svg", key="-o")
-        if args.diagram not in (None, "all") or args.scale or \
-                getattr(args, "centre_labels", None):
-            raise PolygonMethodError("--animate draws the three diagrams at the scales of "
-                                     "the step table: leave out --diagram, --scale and "
-                                     "--centre-labels", key="--animate")
+            raise PolygonMethodError(
+                f"cannot animate to {out}: the file name must end in .gif, .html or .svg", key="-o"
+            )
+        if args.diagram not in (None, "all") or args.scale or getattr(args, "centre_labels", None):
+            raise PolygonMethodError(
+                "--animate draws the three diagrams at the scales of "
+                "the step table: leave out --diagram, --scale and "
+                "--centre-labels",
+                key="--animate",
+            )
         if args.frames is None:
             args.frames = DEFAULT_FRAMES
         return _cmd_animate(args, out, fmt)
     if getattr(args, "frames", None) is not None:  # never silently ignored
-        raise PolygonMethodError("--frames counts the frames of --animate: give --animate "
-                                 "as well", key="--frames")
+        raise PolygonMethodError(
+            "--frames counts the frames of --animate: give --animate as well", key="--frames"
+        )
     if getattr(args, "centre_labels", None) and getattr(args, "diagram", None) != "centres":
-        raise PolygonMethodError("--centre-labels labels the centres of --diagram centres: "
-                                 "give that as well", key="--centre-labels")
+        raise PolygonMethodError(
+            "--centre-labels labels the centres of --diagram centres: give that as well",
+            key="--centre-labels",
+        )
     if fmt not in FORMATS:
-        raise PolygonMethodError(f"cannot draw to {out}: the file name must end in .svg, .png "
-                                 "or .pdf", key="-o")
+        raise PolygonMethodError(
+            f"cannot draw to {out}: the file name must end in .svg, .png or .pdf", key="-o"
+        )
     scales = parse_scales(getattr(args, "scale", None))
-    drawn = {"all": ("length", "velocity", "acceleration"), "centres": ("length",),
-             "configuration": ("length",), "forces": ("length", "force")
-             }.get(args.diagram or "all", (args.diagram,))
+    drawn = {
+        "all": ("length", "velocity", "acceleration"),
+        "centres": ("length",),
+        "configuration": ("length",),
+        "forces": ("length", "force"),
+    }.get(args.diagram or "all", (args.diagram,))
     for kind, s in scales.items():  # never silently ignored
         if kind not in drawn:
-            raise PolygonMethodError(f"{s.text} is {'an' if kind[0] == 'a' else 'a'} {kind} "
-                                     f"scale, and --diagram {args.diagram} draws no {kind} "
-                                     "diagram: leave it out",
-                                     key="--scale")
+            raise PolygonMethodError(
+                f"{s.text} is {'an' if kind[0] == 'a' else 'a'} {kind} "
+                f"scale, and --diagram {args.diagram} draws no {kind} "
+                "diagram: leave it out",
+                key="--scale",
+            )
     paper = paper_name(getattr(args, "paper", None) or "A4")
     targets = check_outputs([(out, "-o")], protect=[args.scene])
     sol = solve(load_scene(args.scene, variants=False, answers=False))
@@ -144,21 +168,28 @@ def _cmd_draw(args) -> int:
     if len(files) > 1:  # a page a file: out-1.svg, out-2.svg, ...
         if targets[0].special:
             targets[0].probe()
-            raise PolygonMethodError(f"the sheet has {len(pages)} pages on {paper} and {out} "
-                                     f"is not a regular file: give a file name (one .{fmt} "
-                                     f"file a page: NAME-1.{fmt}, NAME-2.{fmt}, ...) or write "
-                                     "a .pdf", key="-o")
+            raise PolygonMethodError(
+                f"the sheet has {len(pages)} pages on {paper} and {out} "
+                f"is not a regular file: give a file name (one .{fmt} "
+                f"file a page: NAME-1.{fmt}, NAME-2.{fmt}, ...) or write "
+                "a .pdf",
+                key="-o",
+            )
         targets = check_outputs([(f, "-o") for f in files], protect=[args.scene])
     write_outputs(targets, [(d, fmt != "svg") for d in datas])
     scales_text = "; ".join(f"{name} {display_unit(s.text)}" for name, s in used.items())
     if len(pages) == 1:
         print(f"{out}: {pages[0].text}; {scales_text}")
         return 0
-    print(f"{out if fmt == 'pdf' else ', '.join(map(str, files))}: {len(pages)} pages on "
-          f"{paper} (the diagrams do not fit one at their scales); {scales_text}")
+    print(
+        f"{out if fmt == 'pdf' else ', '.join(map(str, files))}: {len(pages)} pages on "
+        f"{paper} (the diagrams do not fit one at their scales); {scales_text}"
+    )
     for f, p in zip(files * len(pages) if fmt == "pdf" else files, pages):
-        print(f"  {f}: page {p.number}, {p.text}: "
-              + ", ".join(_panel_name(name) for name in p.panels))
+        print(
+            f"  {f}: page {p.number}, {p.text}: "
+            + ", ".join(_panel_name(name) for name in p.panels)
+        )
     return 0
 
 
@@ -170,14 +201,19 @@ def _panel_name(name: str) -> str:
     return _PANEL_NAMES.get(name, name)
 
 
-_PANEL_NAMES = {"configuration": "configuration diagram", "velocity": "velocity polygon",
-                "acceleration": "acceleration polygon", "centres": "centres diagram",
-                "circle": "circle diagram"}
+_PANEL_NAMES = {
+    "configuration": "configuration diagram",
+    "velocity": "velocity polygon",
+    "acceleration": "acceleration polygon",
+    "centres": "centres diagram",
+    "circle": "circle diagram",
+}
 
 
 def _frames(args, scene, fmt=None):
     """The scene's frames over its cycle (``--frames``: 2 to the most ``fmt`` allows)."""
     from ..page import check_frames, frames
+
     check_frames(args.frames, fmt)
     return frames(scene, args.frames)
 
@@ -191,8 +227,9 @@ def _cmd_page(args) -> int:
 
     out = Path(args.output)
     if out.suffix.lower() not in (".html", ".htm"):
-        raise PolygonMethodError(f"cannot write the page to {out}: the file name must end in "
-                                 ".html", key="-o")
+        raise PolygonMethodError(
+            f"cannot write the page to {out}: the file name must end in .html", key="-o"
+        )
     targets = check_outputs([(out, "-o")], protect=[args.scene, args.answers])
     scene = load_scene(args.scene)
     fr = _frames(args, scene)
@@ -214,16 +251,26 @@ def _cmd_page(args) -> int:
         print(f"warning: {w}", file=sys.stderr)
     write_outputs(targets, [(html, False)])
     from ..polygons.scales import display_unit
+
     turns = fr.res.domain.turns  # a gear train's period, or an engine's cycle
-    cycle = ("over a full turn" if fr.cycle_degrees == 360 else
-             f"over {turns} turns (the motion's period)" if turns > 1 else
-             f"over the whole cycle ({fr.cycle_degrees:g} deg)") if fr.full_turn else \
-        f"over {fr.sol.plan.steps[0].travel} ({fr.limits_text})" \
-        if not fr.sol.plan.steps[0].periodic else \
-        f"between the limit positions ({fr.limits_text})"
-    print(f"{out}: {len(fr)} frames {cycle}; " + "; ".join(display_unit(s.text) for s in
-                                                        fr.scales)
-          + f"; {len(html.encode()) / 1024:.0f} KiB")
+    cycle = (
+        (
+            "over a full turn"
+            if fr.cycle_degrees == 360
+            else f"over {turns} turns (the motion's period)"
+            if turns > 1
+            else f"over the whole cycle ({fr.cycle_degrees:g} deg)"
+        )
+        if fr.full_turn
+        else f"over {fr.sol.plan.steps[0].travel} ({fr.limits_text})"
+        if not fr.sol.plan.steps[0].periodic
+        else f"between the limit positions ({fr.limits_text})"
+    )
+    print(
+        f"{out}: {len(fr)} frames {cycle}; "
+        + "; ".join(display_unit(s.text) for s in fr.scales)
+        + f"; {len(html.encode()) / 1024:.0f} KiB"
+    )
     return 0
 
 
@@ -231,15 +278,21 @@ def _own_variant(named, scene, file):
     """An answer file that names a variant is checked against that variant only (as
     ``check`` does): never silently against the base problem or another variant."""
     from .classroom import _VariantBook
+
     if named is None:
         return
     own = scene.variant
     if own is None or not (_VariantBook._names(own.id) & _VariantBook._names(named)):
         from ..common.errors import printable
-        raise SceneError(f"names variant '{printable(named)}', and this scene is "
-                         + (f"variant '{printable(own.id)}'" if own else "not a variant")
-                         + ": make the page of that variant's own scene (the file "
-                         "`variants -o DIR` wrote)", file=file, key="variant")
+
+        raise SceneError(
+            f"names variant '{printable(named)}', and this scene is "
+            + (f"variant '{printable(own.id)}'" if own else "not a variant")
+            + ": make the page of that variant's own scene (the file "
+            "`variants -o DIR` wrote)",
+            file=file,
+            key="variant",
+        )
 
 
 def _cmd_animate(args, out, fmt) -> int:
@@ -248,13 +301,17 @@ def _cmd_animate(args, out, fmt) -> int:
     from ..scene import load_scene
 
     from ..page import check_frames
+
     check_frames(args.frames, fmt)  # before anything is computed
     targets = check_outputs([(out, "-o")], protect=[args.scene])
     fr = _frames(args, load_scene(args.scene, variants=False, answers=False), fmt)
     data = animation(fr, fmt)
     write_outputs(targets, [(data, isinstance(data, bytes))])
-    scales = ("; ".join(s.text for s in fr.scales) if fmt == "svg" else
-              "each polygon at its own round scale per frame, written on each picture")
+    scales = (
+        "; ".join(s.text for s in fr.scales)
+        if fmt == "svg"
+        else "each polygon at its own round scale per frame, written on each picture"
+    )
     print(f"{out}: {len(fr)} frames; {scales}")
     return 0
 
@@ -265,6 +322,7 @@ def _requested_angles(args, scene=None):
     places (m) from ``--steps N`` (over its travel, both ends) or ``--from A --to B --step
     S`` (the scene's length unit)."""
     import numpy as np
+
     ranged = any(v is not None for v in (args.start, args.stop, args.step))
     if args.steps is not None and ranged:
         raise SceneError("give either --steps N or --from A --to B --step S, not both")
@@ -277,8 +335,10 @@ def _requested_angles(args, scene=None):
         if not all(math.isfinite(v) for v in (a, b, s)):
             raise SceneError("--from, --to and --step must be finite numbers")
         if max(abs(a), abs(b)) > MAX_ANGLE_DEG:
-            raise SceneError(f"--from and --to are crank angles in degrees, within "
-                             f"+-{MAX_ANGLE_DEG:g} (got {a:g} and {b:g})")
+            raise SceneError(
+                f"--from and --to are crank angles in degrees, within "
+                f"+-{MAX_ANGLE_DEG:g} (got {a:g} and {b:g})"
+            )
         count = _range_count(a, b, s, "deg", "crank angles")
         return np.radians(a + s * np.arange(count))
     n = 360 if args.steps is None else args.steps
@@ -297,6 +357,7 @@ def _period_turns(scene) -> int:
     turns = max(1, round(scene.cycle / (2.0 * math.pi)))
     if getattr(scene, "rolling", ()):
         from ..solver.tracking import Sweeper
+
         turns = max(turns, Sweeper(scene).domain.turns)
     return turns
 
@@ -314,8 +375,9 @@ def _range_count(a, b, s, unit, what) -> int:
     ratio = (b - a) / s  # float arithmetic: inf past the largest float, never an error
     if not ratio < 100_000_000:
         many = f"{ratio + 1:.3g}" if math.isfinite(ratio) else "more than 1e308"
-        raise SceneError(f"--from {a:g} --to {b:g} --step {s:g} asks for {many} {what}: "
-                         "too many (at most 10^8)")
+        raise SceneError(
+            f"--from {a:g} --to {b:g} --step {s:g} asks for {many} {what}: too many (at most 10^8)"
+        )
     return int(math.floor(ratio + SAME)) + 1
 
 
@@ -323,18 +385,23 @@ def _requested_places(args, scene, ranged):
     """A driving block's places along its guide (m) for a sweep."""
     import numpy as np
     from ..motion.sweeps import stroke_places
+
     uname, u = scene.units, scene.length_unit
     if ranged:
         if args.start is None or args.stop is None or args.step is None:
-            raise SceneError(f"--from, --to and --step go together (the block's places along "
-                             f"its guide, in {uname})")
+            raise SceneError(
+                f"--from, --to and --step go together (the block's places along "
+                f"its guide, in {uname})"
+            )
         a, b, s = args.start, args.stop, args.step
         if not all(math.isfinite(v) for v in (a, b, s)):
             raise SceneError("--from, --to and --step must be finite numbers")
         far = MAX_PLACE_M / u  # the farthest place a scene may state, in its units
         if max(abs(a), abs(b)) > far:
-            raise SceneError(f"--from and --to are places of the driving block along its "
-                             f"guide, in {uname}, within +-{far:g} (got {a:g} and {b:g})")
+            raise SceneError(
+                f"--from and --to are places of the driving block along its "
+                f"guide, in {uname}, within +-{far:g} (got {a:g} and {b:g})"
+            )
         count = _range_count(a, b, s, uname, "places")
         return (a + s * np.arange(count)) * u
     n = 361 if args.steps is None else args.steps
@@ -357,47 +424,59 @@ def _cmd_sweep(args) -> int:
     if plot and not plot.lower().endswith((".svg", ".png", ".pdf")):
         raise SceneError(f"--plot {plot}: the file must end in .svg, .png or .pdf")
     if not plot and (getattr(args, "points", None) or getattr(args, "links", None)):
-        raise SceneError("--points and --links choose what --plot draws: give --plot FILE "
-                         "as well", key="--points" if getattr(args, "points", None)
-                         else "--links")
+        raise SceneError(
+            "--points and --links choose what --plot draws: give --plot FILE as well",
+            key="--points" if getattr(args, "points", None) else "--links",
+        )
     if getattr(args, "error_bound", False) and not args.csv:
-        raise SceneError("--error-bound adds a column to the CSV: give --csv FILE as well",
-                         key="--error-bound")
-    wanted = [(path, option) for path, option in ((args.csv, "--csv"), (plot, "--plot"))
-              if path]
+        raise SceneError(
+            "--error-bound adds a column to the CSV: give --csv FILE as well", key="--error-bound"
+        )
+    wanted = [(path, option) for path, option in ((args.csv, "--csv"), (plot, "--plot")) if path]
     targets = check_outputs(wanted, protect=[args.scene])
     scene = load_scene(args.scene, variants=False, answers=False)
     angles = _requested_angles(args, scene)
     if args.csv:
         need = _csv_bytes(scene, len(angles), getattr(args, "error_bound", False))
         if need > MAX_CSV_BYTES:
-            raise SceneError(f"a CSV of {len(angles)} crank angles would need about "
-                             f"{need / 2 ** 30:.1f} GiB of memory (at most "
-                             f"{MAX_CSV_BYTES / 2 ** 30:g} GiB): ask for fewer --steps, or "
-                             "--summary alone, which needs little memory at any count",
-                             key="--csv")
+            raise SceneError(
+                f"a CSV of {len(angles)} crank angles would need about "
+                f"{need / 2**30:.1f} GiB of memory (at most "
+                f"{MAX_CSV_BYTES / 2**30:g} GiB): ask for fewer --steps, or "
+                "--summary alone, which needs little memory at any count",
+                key="--csv",
+            )
     want_summary = args.summary or not (args.csv or plot)
     if not (args.csv or plot):
         print(summarize(scene, angles).text())
         return 0
     res = sweep(scene, angles)
     if not len(res):
-        raise PolygonMethodError(f"none of the requested {_what(scene)} can be reached "
-                                 "on the scene's branch " + _limits_text(res.domain),
-                                 file=scene.file)
+        raise PolygonMethodError(
+            f"none of the requested {_what(scene)} can be reached "
+            "on the scene's branch " + _limits_text(res.domain),
+            file=scene.file,
+        )
     outputs = []
     if args.csv:
         outputs.append((res.to_csv(getattr(args, "error_bound", False)), False))
     if plot:
         from ..draw.plots import plot_bytes
-        outputs.append((plot_bytes(res, plot, points=_names(args, "points"),
-                                   links=_names(args, "links")), True))
+
+        outputs.append(
+            (
+                plot_bytes(res, plot, points=_names(args, "points"), links=_names(args, "links")),
+                True,
+            )
+        )
     write_outputs(targets, outputs)
     if want_summary:
         print(summary_of(res).text())
     else:
-        print(f"{len(res)} of {res.requested} {_what(scene)} evaluated"
-              + (f" {_limits_text(res.domain)}" if res.domain.limits else ""))
+        print(
+            f"{len(res)} of {res.requested} {_what(scene)} evaluated"
+            + (f" {_limits_text(res.domain)}" if res.domain.limits else "")
+        )
     return 0
 
 
@@ -408,15 +487,22 @@ MAX_ANGLE_DEG = 1e6
 #: the farthest place (m) a driving block's sweep may name (as the farthest a scene states)
 MAX_PLACE_M = 1e4
 #: the most memory a CSV may need (the arrays, their table and its text)
-MAX_CSV_BYTES = 2 * 2 ** 30
+MAX_CSV_BYTES = 2 * 2**30
 
 
 def _csv_bytes(scene, n, error_bound=False) -> int:
     """About what a CSV of ``n`` rows needs: each of its columns as an array, in the table
     that is written and as text (8 + 8 + 18 bytes a number); with ``--error-bound``, the
     bounds of every quantity as arrays too."""
-    cols = (1 + 6 * len(scene.point_names) + 2 * len(scene.links) + 4 * len(scene.sliders)
-            + len(scene.pins) + 1 + len(scene.links))
+    cols = (
+        1
+        + 6 * len(scene.point_names)
+        + 2 * len(scene.links)
+        + 4 * len(scene.sliders)
+        + len(scene.pins)
+        + 1
+        + len(scene.links)
+    )
     if scene.has_forces:  # the torque with inertia, the shaking force, guides, pin forces
         cols += 4 + len(scene.sliders) + 3 * len(scene.links)
     if error_bound:
@@ -430,14 +516,18 @@ def _names(args, what):
         return None
     names = tuple(x.strip() for x in raw.split(",") if x.strip())
     if not names:  # ",," is not "all of them"
-        raise SceneError(f"--{what} {raw!r} names no {what[:-1]}: give names such as "
-                         + ("C,E" if what == "points" else "BC,CD"), key=f"--{what}")
+        raise SceneError(
+            f"--{what} {raw!r} names no {what[:-1]}: give names such as "
+            + ("C,E" if what == "points" else "BC,CD"),
+            key=f"--{what}",
+        )
     return names
 
 
 def _driver(scene):
     """The plan's first step, which drives the mechanism (the driver protocol)."""
     from ..solver.compiler import compile_plan
+
     return compile_plan(scene).steps[0]
 
 
@@ -453,10 +543,12 @@ def _limits_text(dom) -> str:
     if not dom.limits:
         return ""
     if not dom.periodic:  # a block driver: the ends of its travel, in the scene's units
-        return ("(its travel ends at s = " + " and ".join(f"{lp.theta / dom.unit:.6g}"
-                                                          for lp in dom.limits) + ")")
-    return ("(limit positions at " + " and ".join(f"{lp.degrees:.4f} deg" for lp in dom.limits)
-            + ")")
+        return (
+            "(its travel ends at s = "
+            + " and ".join(f"{lp.theta / dom.unit:.6g}" for lp in dom.limits)
+            + ")"
+        )
+    return "(limit positions at " + " and ".join(f"{lp.degrees:.4f} deg" for lp in dom.limits) + ")"
 
 
 def _cmd_linkage(args) -> int:

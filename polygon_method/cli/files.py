@@ -28,43 +28,51 @@ class _Target:
         if real.is_dir():
             raise PolygonMethodError(f"cannot write {path}: it is a directory", key=option)
         for k, other in enumerate(protect):
-            if other and real.exists() and os.path.exists(other) and \
-                    os.path.samefile(real, other):
-                what = "the scene file itself" if k == 0 else \
-                    f"{printable(str(other))}, which this command reads"
+            if other and real.exists() and os.path.exists(other) and os.path.samefile(real, other):
+                what = (
+                    "the scene file itself"
+                    if k == 0
+                    else f"{printable(str(other))}, which this command reads"
+                )
                 raise PolygonMethodError(f"cannot write {path}: it is {what}", key=option)
         self.path = real
         self.special = real.exists() and not stat.S_ISREG(real.stat().st_mode)
         directory = real.parent
         if not self.special:
             if not directory.is_dir():
-                raise PolygonMethodError(f"cannot write {path}: no directory {directory}",
-                                         key=option)
+                raise PolygonMethodError(
+                    f"cannot write {path}: no directory {directory}", key=option
+                )
             if not os.access(directory, os.W_OK | os.X_OK):
-                raise PolygonMethodError(f"cannot write {path}: the directory {directory} is "
-                                         "not writable", key=option)
+                raise PolygonMethodError(
+                    f"cannot write {path}: the directory {directory} is not writable", key=option
+                )
             if real.exists() and not os.access(real, os.W_OK):
-                raise PolygonMethodError(f"cannot write {path}: the file is read-only",
-                                         key=option)
+                raise PolygonMethodError(f"cannot write {path}: the file is read-only", key=option)
         self.tmp = None
 
     def fail(self, exc: OSError):
         if exc.errno == errno.ENXIO and self.special and stat.S_ISFIFO(self.path.stat().st_mode):
-            return PolygonMethodError(f"cannot write {self.shown}: a named pipe that nothing "
-                                      "is reading from (start its reader first)",
-                                      key=self.option)
-        return PolygonMethodError(f"cannot write {self.shown}: "
-                                  f"{exc.strerror or type(exc).__name__}", key=self.option)
+            return PolygonMethodError(
+                f"cannot write {self.shown}: a named pipe that nothing "
+                "is reading from (start its reader first)",
+                key=self.option,
+            )
+        return PolygonMethodError(
+            f"cannot write {self.shown}: {exc.strerror or type(exc).__name__}", key=self.option
+        )
 
     def stage(self, data, binary):
         self.data, self.binary = data, binary
         if self.special:
             return
-        fd, self.tmp = tempfile.mkstemp(dir=self.path.parent, prefix=f".{self.path.name}.",
-                                        suffix=".tmp")
+        fd, self.tmp = tempfile.mkstemp(
+            dir=self.path.parent, prefix=f".{self.path.name}.", suffix=".tmp"
+        )
         try:
-            with os.fdopen(fd, "wb" if binary else "w",
-                           **({} if binary else {"encoding": "utf-8"})) as fh:
+            with os.fdopen(
+                fd, "wb" if binary else "w", **({} if binary else {"encoding": "utf-8"})
+            ) as fh:
                 fh.write(data)
             umask = os.umask(0)
             os.umask(umask)
@@ -75,13 +83,18 @@ class _Target:
     def commit(self):
         try:
             if self.special:  # a pipe is opened without waiting for a reader that may
-                fd = os.open(self.path,  # never come (ENXIO where none is there)
-                             os.O_WRONLY | getattr(os, "O_NONBLOCK", 0))
+                fd = os.open(
+                    self.path,  # never come (ENXIO where none is there)
+                    os.O_WRONLY | getattr(os, "O_NONBLOCK", 0),
+                )
                 try:
                     if hasattr(os, "set_blocking"):
                         os.set_blocking(fd, True)
-                    fh = os.fdopen(fd, "wb" if self.binary else "w",
-                                   **({} if self.binary else {"encoding": "utf-8"}))
+                    fh = os.fdopen(
+                        fd,
+                        "wb" if self.binary else "w",
+                        **({} if self.binary else {"encoding": "utf-8"}),
+                    )
                 except BaseException:
                     os.close(fd)
                     raise
@@ -121,9 +134,11 @@ def check_outputs(paths, protect=()) -> list:
     for t in targets:  # two outputs into one file: the one written last would be all of it
         if t.path in seen and not t.special:
             first = seen[t.path]
-            raise PolygonMethodError(f"{first.option} {first.shown} and {t.option} {t.shown} "
-                                     "are one file: give each output its own",
-                                     key=t.option)
+            raise PolygonMethodError(
+                f"{first.option} {first.shown} and {t.option} {t.shown} "
+                "are one file: give each output its own",
+                key=t.option,
+            )
         seen[t.path] = t
     return targets
 

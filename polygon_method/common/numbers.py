@@ -13,8 +13,18 @@ import math
 
 from .errors import TOL
 
-__all__ = ["fmt", "fixed", "textbook", "working", "sense", "sense_word", "fmt_angular",
-           "in_units", "quiet", "condition_text"]
+__all__ = [
+    "fmt",
+    "fixed",
+    "textbook",
+    "working",
+    "sense",
+    "sense_word",
+    "fmt_angular",
+    "in_units",
+    "quiet",
+    "condition_text",
+]
 
 
 def quiet(x, scale):
@@ -29,6 +39,7 @@ def quiet(x, scale):
     if isinstance(x, (int, float)) and isinstance(lim, (int, float)):
         return 0.0 if abs(x) <= lim else x
     import numpy as np
+
     return np.where(np.abs(x) <= lim, 0.0, x)
 
 
@@ -65,7 +76,7 @@ def fixed(x: float, digits: int = 3) -> str:
     """
     if x == 0:
         return "0"
-    if abs(x) >= 10 ** digits:
+    if abs(x) >= 10**digits:
         return f"{x:.0f}"
     s = f"{x:#.{digits}g}"
     return s.rstrip(".") if "e" not in s else fmt(x, digits)

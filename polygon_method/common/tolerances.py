@@ -15,8 +15,16 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["Tolerances", "TOL", "SAME", "ROUNDING", "FLOOR", "LEAST_REACH", "same",
-           "crossing_angle"]
+__all__ = [
+    "Tolerances",
+    "TOL",
+    "SAME",
+    "ROUNDING",
+    "FLOOR",
+    "LEAST_REACH",
+    "same",
+    "crossing_angle",
+]
 
 #: the tool's promise: every answer agrees with an independent reference to this fraction of
 #: its size, so two lengths, places or directions that agree to it are the same (a point on
@@ -47,6 +55,7 @@ def crossing_angle(condition: float) -> float:
     if isinstance(condition, (float, int)):
         return math.degrees(math.asin(min(max(condition, -1.0), 1.0)))
     import numpy as np  # a sweep's conditions
+
     return np.degrees(np.arcsin(np.clip(condition, -1.0, 1.0)))
 
 

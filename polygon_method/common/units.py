@@ -22,52 +22,155 @@ from dataclasses import dataclass
 
 from .errors import SceneError
 
-__all__ = ["Quantity", "parse_quantity", "UNITS", "LENGTH_UNITS", "ABSURD", "TINY",
-           "format_unit_list", "suggest", "did_you_mean", "implausible"]
+__all__ = [
+    "Quantity",
+    "parse_quantity",
+    "UNITS",
+    "LENGTH_UNITS",
+    "ABSURD",
+    "TINY",
+    "format_unit_list",
+    "suggest",
+    "did_you_mean",
+    "implausible",
+]
 
 _PI = math.pi
 
 #: unit spellings by kind: factor to SI
 UNITS: dict[str, dict[str, float]] = {
-    "length": {"mm": 1e-3, "cm": 1e-2, "m": 1.0, "in": 0.0254, "inch": 0.0254,
-               "inches": 0.0254, "ft": 0.3048, "feet": 0.3048, "foot": 0.3048},
-    "angle": {"deg": _PI / 180, "°": _PI / 180, "degree": _PI / 180, "degrees": _PI / 180,
-              "rad": 1.0},
-    "angular_velocity": {"rad/s": 1.0, "rpm": 2 * _PI / 60, "r.p.m.": 2 * _PI / 60,
-                         "r.p.m": 2 * _PI / 60, "rev/min": 2 * _PI / 60,
-                         "rps": 2 * _PI, "r.p.s.": 2 * _PI, "r.p.s": 2 * _PI,
-                         "rev/s": 2 * _PI, "deg/s": _PI / 180,
-                         "rad/sec": 1.0, "rev/sec": 2 * _PI, "deg/sec": _PI / 180},
-    "angular_acceleration": {"rad/s^2": 1.0, "rad/s²": 1.0, "rad/s2": 1.0,
-                             "rad/s/s": 1.0, "rad/sec^2": 1.0, "rad/sec²": 1.0,
-                             "rad/sec2": 1.0},
+    "length": {
+        "mm": 1e-3,
+        "cm": 1e-2,
+        "m": 1.0,
+        "in": 0.0254,
+        "inch": 0.0254,
+        "inches": 0.0254,
+        "ft": 0.3048,
+        "feet": 0.3048,
+        "foot": 0.3048,
+    },
+    "angle": {
+        "deg": _PI / 180,
+        "°": _PI / 180,
+        "degree": _PI / 180,
+        "degrees": _PI / 180,
+        "rad": 1.0,
+    },
+    "angular_velocity": {
+        "rad/s": 1.0,
+        "rpm": 2 * _PI / 60,
+        "r.p.m.": 2 * _PI / 60,
+        "r.p.m": 2 * _PI / 60,
+        "rev/min": 2 * _PI / 60,
+        "rps": 2 * _PI,
+        "r.p.s.": 2 * _PI,
+        "r.p.s": 2 * _PI,
+        "rev/s": 2 * _PI,
+        "deg/s": _PI / 180,
+        "rad/sec": 1.0,
+        "rev/sec": 2 * _PI,
+        "deg/sec": _PI / 180,
+    },
+    "angular_acceleration": {
+        "rad/s^2": 1.0,
+        "rad/s²": 1.0,
+        "rad/s2": 1.0,
+        "rad/s/s": 1.0,
+        "rad/sec^2": 1.0,
+        "rad/sec²": 1.0,
+        "rad/sec2": 1.0,
+    },
     "force": {"N": 1.0, "kN": 1e3, "MN": 1e6, "lbf": 4.4482216152605, "kgf": 9.80665},
-    "velocity": {"m/s": 1.0, "mm/s": 1e-3, "cm/s": 1e-2, "km/h": 1 / 3.6,
-                 "in/s": 0.0254, "ft/s": 0.3048, "m/sec": 1.0, "mm/sec": 1e-3,
-                 "cm/sec": 1e-2, "in/sec": 0.0254, "ft/sec": 0.3048, "km/hr": 1 / 3.6},
-    "acceleration": {"m/s^2": 1.0, "m/s²": 1.0, "m/s2": 1.0, "mm/s^2": 1e-3, "mm/s²": 1e-3,
-                     "mm/s2": 1e-3, "cm/s^2": 1e-2, "cm/s²": 1e-2, "cm/s2": 1e-2,
-                     "in/s^2": 0.0254, "in/s²": 0.0254, "ft/s^2": 0.3048, "ft/s²": 0.3048,
-                     "in/s2": 0.0254, "ft/s2": 0.3048, "m/sec^2": 1.0, "m/sec²": 1.0,
-                     "m/sec2": 1.0, "mm/sec^2": 1e-3, "cm/sec^2": 1e-2, "in/sec^2": 0.0254,
-                     "ft/sec^2": 0.3048, "ft/sec²": 0.3048},
-    "torque": {"N m": 1.0, "N·m": 1.0, "Nm": 1.0, "N.m": 1.0, "N-m": 1.0,
-               "kN m": 1e3, "kN·m": 1e3, "kNm": 1e3, "kN.m": 1e3, "N mm": 1e-3, "Nmm": 1e-3,
-               "N·mm": 1e-3, "lbf in": 4.4482216152605 * 0.0254,
-               "lbf ft": 4.4482216152605 * 0.3048},
+    "velocity": {
+        "m/s": 1.0,
+        "mm/s": 1e-3,
+        "cm/s": 1e-2,
+        "km/h": 1 / 3.6,
+        "in/s": 0.0254,
+        "ft/s": 0.3048,
+        "m/sec": 1.0,
+        "mm/sec": 1e-3,
+        "cm/sec": 1e-2,
+        "in/sec": 0.0254,
+        "ft/sec": 0.3048,
+        "km/hr": 1 / 3.6,
+    },
+    "acceleration": {
+        "m/s^2": 1.0,
+        "m/s²": 1.0,
+        "m/s2": 1.0,
+        "mm/s^2": 1e-3,
+        "mm/s²": 1e-3,
+        "mm/s2": 1e-3,
+        "cm/s^2": 1e-2,
+        "cm/s²": 1e-2,
+        "cm/s2": 1e-2,
+        "in/s^2": 0.0254,
+        "in/s²": 0.0254,
+        "ft/s^2": 0.3048,
+        "ft/s²": 0.3048,
+        "in/s2": 0.0254,
+        "ft/s2": 0.3048,
+        "m/sec^2": 1.0,
+        "m/sec²": 1.0,
+        "m/sec2": 1.0,
+        "mm/sec^2": 1e-3,
+        "cm/sec^2": 1e-2,
+        "in/sec^2": 0.0254,
+        "ft/sec^2": 0.3048,
+        "ft/sec²": 0.3048,
+    },
+    "torque": {
+        "N m": 1.0,
+        "N·m": 1.0,
+        "Nm": 1.0,
+        "N.m": 1.0,
+        "N-m": 1.0,
+        "kN m": 1e3,
+        "kN·m": 1e3,
+        "kNm": 1e3,
+        "kN.m": 1e3,
+        "N mm": 1e-3,
+        "Nmm": 1e-3,
+        "N·mm": 1e-3,
+        "lbf in": 4.4482216152605 * 0.0254,
+        "lbf ft": 4.4482216152605 * 0.3048,
+    },
     "percent": {"%": 0.01},
     # the force chapter: a link's mass, its moment of inertia, a gas pressure
     "mass": {"kg": 1.0, "g": 1e-3, "t": 1e3, "lb": 0.45359237},
-    "moment_of_inertia": {"kg m^2": 1.0, "kg m²": 1.0, "kg·m^2": 1.0, "kg·m²": 1.0,
-                          "kg m2": 1.0, "kg mm^2": 1e-6, "kg mm²": 1e-6, "kg cm^2": 1e-4,
-                          "kg cm²": 1e-4, "g mm^2": 1e-9, "g cm^2": 1e-7,
-                          "lb ft^2": 0.45359237 * 0.3048 ** 2,
-                          "lb in^2": 0.45359237 * 0.0254 ** 2},
+    "moment_of_inertia": {
+        "kg m^2": 1.0,
+        "kg m²": 1.0,
+        "kg·m^2": 1.0,
+        "kg·m²": 1.0,
+        "kg m2": 1.0,
+        "kg mm^2": 1e-6,
+        "kg mm²": 1e-6,
+        "kg cm^2": 1e-4,
+        "kg cm²": 1e-4,
+        "g mm^2": 1e-9,
+        "g cm^2": 1e-7,
+        "lb ft^2": 0.45359237 * 0.3048**2,
+        "lb in^2": 0.45359237 * 0.0254**2,
+    },
     "energy": {"J": 1.0, "kJ": 1e3, "N m": 1.0, "N·m": 1.0, "kN m": 1e3, "kN·m": 1e3},
-    "pressure": {"Pa": 1.0, "N/m^2": 1.0, "N/m²": 1.0, "kPa": 1e3, "kN/m^2": 1e3,
-                 "kN/m²": 1e3, "MPa": 1e6, "N/mm^2": 1e6, "N/mm²": 1e6, "bar": 1e5,
-                 "psi": 4.4482216152605 / 0.0254 ** 2, "kgf/cm^2": 9.80665e4,
-                 "kgf/cm²": 9.80665e4},
+    "pressure": {
+        "Pa": 1.0,
+        "N/m^2": 1.0,
+        "N/m²": 1.0,
+        "kPa": 1e3,
+        "kN/m^2": 1e3,
+        "kN/m²": 1e3,
+        "MPa": 1e6,
+        "N/mm^2": 1e6,
+        "N/mm²": 1e6,
+        "bar": 1e5,
+        "psi": 4.4482216152605 / 0.0254**2,
+        "kgf/cm^2": 9.80665e4,
+        "kgf/cm²": 9.80665e4,
+    },
 }
 
 #: the largest magnitude (SI) that makes sense for a mechanism, by kind: beyond it a value
@@ -96,18 +199,38 @@ TINY: dict[str, float] = {
 #: the lengths a scene may be written in (``units = ...``)
 LENGTH_UNITS = {"mm", "cm", "m", "in", "ft"}
 
-_SI_NAME = {"angle": "rad", "angular_velocity": "rad/s", "angular_acceleration": "rad/s^2",
-            "force": "N", "torque": "N m", "velocity": "m/s", "acceleration": "m/s^2", "mass": "kg",
-            "moment_of_inertia": "kg m^2", "pressure": "Pa", "energy": "J"}
+_SI_NAME = {
+    "angle": "rad",
+    "angular_velocity": "rad/s",
+    "angular_acceleration": "rad/s^2",
+    "force": "N",
+    "torque": "N m",
+    "velocity": "m/s",
+    "acceleration": "m/s^2",
+    "mass": "kg",
+    "moment_of_inertia": "kg m^2",
+    "pressure": "Pa",
+    "energy": "J",
+}
 #: sense words: the format's cw/ccw, and the spellings textbooks use
-_SENSES = {"cw": "cw", "clockwise": "cw", "ccw": "ccw", "acw": "ccw", "anticlockwise": "ccw",
-           "anti-clockwise": "ccw", "counterclockwise": "ccw", "counter-clockwise": "ccw"}
+_SENSES = {
+    "cw": "cw",
+    "clockwise": "cw",
+    "ccw": "ccw",
+    "acw": "ccw",
+    "anticlockwise": "ccw",
+    "anti-clockwise": "ccw",
+    "counterclockwise": "ccw",
+    "counter-clockwise": "ccw",
+}
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _QUANTITY = re.compile(rf"^\s*({_NUMBER})\s*(.*?)\s*$")
 #: a length in feet and inches, as US books write it: "2 ft 6 in" (a minus sign before it
 #: applies to the whole: "-2 ft 6 in" is -2.5 ft)
-_FEET_INCHES = re.compile(r"^\s*([-+]?)\s*(\d+\.?\d*|\.\d+)\s*(?:ft|feet|foot)\s+"
-                          r"(\d+\.?\d*|\.\d+)\s*(?:in|inch|inches)\s*$")
+_FEET_INCHES = re.compile(
+    r"^\s*([-+]?)\s*(\d+\.?\d*|\.\d+)\s*(?:ft|feet|foot)\s+"
+    r"(\d+\.?\d*|\.\d+)\s*(?:in|inch|inches)\s*$"
+)
 
 
 @dataclass(frozen=True)
@@ -151,8 +274,9 @@ def suggest(word, choices) -> str | None:
     if not word or not choices or len(word) > 60:
         return None
     limit = min(max(1, (len(word) + 1) // 3), len(word) - 1)  # "Z" does not suggest "A"
-    ranked = sorted((_edits(word.lower(), c.lower()), len(c) != len(word), i, c)
-                    for i, c in enumerate(choices))
+    ranked = sorted(
+        (_edits(word.lower(), c.lower()), len(c) != len(word), i, c) for i, c in enumerate(choices)
+    )
     if ranked[0][0] <= limit:
         return ranked[0][3]
     close = difflib.get_close_matches(word, choices, n=1, cutoff=0.6)
@@ -174,16 +298,27 @@ def _unit_factor(unit: str, kind: str, where: str) -> float:
         return folded[unit.lower()]
     other = next((k for k, t in UNITS.items() if unit in t), None)
     if other is not None:
-        raise SceneError(f"'{_clip(unit)}' is a unit of {other.replace('_', ' ')}, "
-                         f"not of {kind.replace('_', ' ')} (use {format_unit_list(kind)})",
-                         key=where)
-    raise SceneError(f"unknown unit '{_clip(unit)}'{did_you_mean(unit, table)}; "
-                     f"use {format_unit_list(kind)}", key=where)
+        raise SceneError(
+            f"'{_clip(unit)}' is a unit of {other.replace('_', ' ')}, "
+            f"not of {kind.replace('_', ' ')} (use {format_unit_list(kind)})",
+            key=where,
+        )
+    raise SceneError(
+        f"unknown unit '{_clip(unit)}'{did_you_mean(unit, table)}; use {format_unit_list(kind)}",
+        key=where,
+    )
 
 
-def parse_quantity(raw, kind: str, *, where: str = "", default_unit: str | None = None,
-                   need_sense: bool = False, allow_sense: bool = False,
-                   refuse_absurd: bool = True) -> Quantity:
+def parse_quantity(
+    raw,
+    kind: str,
+    *,
+    where: str = "",
+    default_unit: str | None = None,
+    need_sense: bool = False,
+    allow_sense: bool = False,
+    refuse_absurd: bool = True,
+) -> Quantity:
     """Parse a bare number or a ``"value unit [cw|ccw]"`` string into SI.
 
     Parameters
@@ -204,8 +339,9 @@ def parse_quantity(raw, kind: str, *, where: str = "", default_unit: str | None 
         (:func:`implausible`).
     """
     if isinstance(raw, bool) or not isinstance(raw, (int, float, str)):
-        raise SceneError(f"expected a number or a string such as \"50 mm\", got {_kind_of(raw)}",
-                         key=where)
+        raise SceneError(
+            f'expected a number or a string such as "50 mm", got {_kind_of(raw)}', key=where
+        )
     if kind == "length" and isinstance(raw, str) and _FEET_INCHES.match(raw):
         return _feet_and_inches(raw, where)
     if isinstance(raw, str):
@@ -228,9 +364,11 @@ def _feet_and_inches(raw: str, where: str) -> Quantity:
     sign, feet, inches = _FEET_INCHES.match(raw).groups()
     si = float(feet) * UNITS["length"]["ft"] + float(inches) * UNITS["length"]["in"]
     if float(inches) >= 12:
-        raise SceneError(f"'{_clip(raw)}': {inches} in is a foot or more; write the feet and "
-                         "the inches below 12, or the whole in one unit (\"30 in\")",
-                         key=where)
+        raise SceneError(
+            f"'{_clip(raw)}': {inches} in is a foot or more; write the feet and "
+            'the inches below 12, or the whole in one unit ("30 in")',
+            key=where,
+        )
     return Quantity(-si if sign == "-" else si)
 
 
@@ -244,19 +382,21 @@ def _read_text(raw: str, kind: str, where: str, default_unit: str | None) -> tup
         sense = _SENSES[words[-1].lower()]
         text = " ".join(words[:-1])
         if len(words) > 2 and words[-2].lower() in _SENSES:  # "10 rad/s cw ccw"
-            raise SceneError(f"'{_clip(raw)}' gives two senses: give one, cw or ccw",
-                             key=where)
+            raise SceneError(f"'{_clip(raw)}' gives two senses: give one, cw or ccw", key=where)
     m = _QUANTITY.match(text)
     if not m:
-        raise SceneError(f"cannot read '{_clip(raw)}' as a quantity (a number, then a unit)",
-                         key=where)
+        raise SceneError(
+            f"cannot read '{_clip(raw)}' as a quantity (a number, then a unit)", key=where
+        )
     value = float(m.group(1))
     unit = m.group(2).strip()
     if not unit:
         if default_unit is None:
-            raise SceneError(f"'{_clip(raw)}' has no unit; write it as e.g. "
-                             f"\"{m.group(1)} {format_unit_list(kind).split(', ')[0]}\"",
-                             key=where)
+            raise SceneError(
+                f"'{_clip(raw)}' has no unit; write it as e.g. "
+                f'"{m.group(1)} {format_unit_list(kind).split(", ")[0]}"',
+                key=where,
+            )
         unit = default_unit
     return value, _unit_factor(unit, kind, where), sense
 
@@ -267,41 +407,53 @@ def _read_number(raw, kind: str, where: str, default_unit: str | None) -> tuple:
     try:
         value = float(raw)
     except OverflowError:  # an integer of hundreds of digits
-        raise SceneError(f"the integer {str(raw)[:8]}... ({len(str(abs(raw)))} digits) is "
-                         "absurd for a mechanism; check the value and its unit",
-                         key=where) from None
+        raise SceneError(
+            f"the integer {str(raw)[:8]}... ({len(str(abs(raw)))} digits) is "
+            "absurd for a mechanism; check the value and its unit",
+            key=where,
+        ) from None
     if default_unit is None:
-        raise SceneError(f"{raw} has no unit; write it as a string such as "
-                         f"\"{raw} {format_unit_list(kind).split(', ')[0]}\"", key=where)
+        raise SceneError(
+            f"{raw} has no unit; write it as a string such as "
+            f'"{raw} {format_unit_list(kind).split(", ")[0]}"',
+            key=where,
+        )
     return value, _unit_factor(default_unit, kind, where)
 
 
-def _check_sense(raw, value: float, sense, where: str, need_sense: bool,
-                 allow_sense: bool) -> None:
+def _check_sense(raw, value: float, sense, where: str, need_sense: bool, allow_sense: bool) -> None:
     """Refuse a sense where none belongs, a negative value with a sense (it reads two ways) and
     a missing sense where one is needed (a zero needs none)."""
     if sense is not None and not (need_sense or allow_sense):
         raise SceneError(f"'{_clip(raw)}': a sense (cw/ccw) does not belong here", key=where)
     if sense is not None and value < 0:  # "-10 rad/s cw": cw, or ccw (minus cw)?
-        raise SceneError(f"'{_clip(raw)}': a negative value with a sense reads two ways; give the "
-                         f"size and its sense (\"{_clip(_magnitude(raw))} cw\" or \"... ccw\")",
-                         key=where)
+        raise SceneError(
+            f"'{_clip(raw)}': a negative value with a sense reads two ways; give the "
+            f'size and its sense ("{_clip(_magnitude(raw))} cw" or "... ccw")',
+            key=where,
+        )
     if need_sense and sense is None and value != 0:
         raw_size = _clip(_magnitude(raw) if value < 0 else str(raw).strip())
-        raise SceneError(f"'{_clip(raw)}' has no sense: add cw or ccw (e.g. \"{raw_size} ccw\")",
-                         key=where)
+        raise SceneError(
+            f"'{_clip(raw)}' has no sense: add cw or ccw (e.g. \"{raw_size} ccw\")", key=where
+        )
 
 
 def _check_size(raw, si: float, kind: str, where: str, refuse_absurd: bool) -> None:
     """Refuse a value absurdly large (when ``refuse_absurd``) or absurdly small for a
     mechanism, in SI, for the kinds :data:`ABSURD` and :data:`TINY` bound."""
     if refuse_absurd and kind in ABSURD and not abs(si) <= ABSURD[kind]:
-        raise SceneError(f"'{_clip(raw)}' is absurd for a mechanism (more than {ABSURD[kind]:g} "
-                         f"{_SI_NAME[kind]}); check the value and its unit", key=where)
+        raise SceneError(
+            f"'{_clip(raw)}' is absurd for a mechanism (more than {ABSURD[kind]:g} "
+            f"{_SI_NAME[kind]}); check the value and its unit",
+            key=where,
+        )
     if kind in TINY and si != 0 and abs(si) < TINY[kind]:
-        raise SceneError(f"'{_clip(raw)}' is absurdly small for a mechanism (less than "
-                         f"{TINY[kind]:g} {_SI_NAME[kind]}); check the value and its unit",
-                         key=where)
+        raise SceneError(
+            f"'{_clip(raw)}' is absurdly small for a mechanism (less than "
+            f"{TINY[kind]:g} {_SI_NAME[kind]}); check the value and its unit",
+            key=where,
+        )
 
 
 def implausible(value: float, kind: str) -> str | None:
@@ -312,8 +464,10 @@ def implausible(value: float, kind: str) -> str | None:
     'more than 1e+09 rad/s^2: far beyond what'
     """
     if kind in ABSURD and not abs(value) <= ABSURD[kind]:
-        return (f"more than {ABSURD[kind]:g} {_SI_NAME[kind]}: far beyond what a mechanism "
-                "usually reaches; check the value and its unit (it is checked as given)")
+        return (
+            f"more than {ABSURD[kind]:g} {_SI_NAME[kind]}: far beyond what a mechanism "
+            "usually reaches; check the value and its unit (it is checked as given)"
+        )
     return None
 
 

@@ -48,13 +48,39 @@ True
 from __future__ import annotations
 
 from ..polygons.constructions import drawn_vectors
-from ..polygons.scales import (DIAGRAMS, choose_scales, display_unit, parse_scales)
+from ..polygons.scales import DIAGRAMS, choose_scales, display_unit, parse_scales
 from .paper import PAPER_NAMES, page_files, paginate, paper_name
-from .sheet import (draw_acceleration, draw_configuration, draw_velocity, layout, make_figure,
-                    render, render_pages, svg_string)
+from .sheet import (
+    draw_acceleration,
+    draw_configuration,
+    draw_velocity,
+    layout,
+    make_figure,
+    render,
+    render_pages,
+    svg_string,
+)
 from .style import CM_PER_INCH, FORMATS, PT_PER_CM
 
-__all__ = ["draw_configuration", "draw_velocity", "draw_acceleration", "make_figure",
-           "render", "render_pages", "paginate", "page_files", "paper_name",
-           "PAPER_NAMES", "svg_string",
-           "choose_scales", "parse_scales", "drawn_vectors", "layout", "display_unit", "DIAGRAMS", "FORMATS", "CM_PER_INCH", "PT_PER_CM"]
+__all__ = [
+    "draw_configuration",
+    "draw_velocity",
+    "draw_acceleration",
+    "make_figure",
+    "render",
+    "render_pages",
+    "paginate",
+    "page_files",
+    "paper_name",
+    "PAPER_NAMES",
+    "svg_string",
+    "choose_scales",
+    "parse_scales",
+    "drawn_vectors",
+    "layout",
+    "display_unit",
+    "DIAGRAMS",
+    "FORMATS",
+    "CM_PER_INCH",
+    "PT_PER_CM",
+]

@@ -39,14 +39,17 @@ def _window(P, centres=(), window=WINDOW):
     xs = [p[0] for p in P.values()]
     ys = [p[1] for p in P.values()]
     w = max(max(xs) - min(xs), max(ys) - min(ys), 1.0)
-    reach = (min(xs) - window * w, min(ys) - window * w, max(xs) + window * w,
-             max(ys) + window * w)
+    reach = (min(xs) - window * w, min(ys) - window * w, max(xs) + window * w, max(ys) + window * w)
     inside = [c for c in centres if _inside(reach, c)]
     xs += [c[0] for c in inside]
     ys += [c[1] for c in inside]
     pad = PAD * w
-    return (max(min(xs) - pad, reach[0]), max(min(ys) - pad, reach[1]),
-            min(max(xs) + pad, reach[2]), min(max(ys) + pad, reach[3]))
+    return (
+        max(min(xs) - pad, reach[0]),
+        max(min(ys) - pad, reach[1]),
+        min(max(xs) + pad, reach[2]),
+        min(max(ys) + pad, reach[3]),
+    )
 
 
 def _inside(box, p):
@@ -82,8 +85,7 @@ def far_words(c, pivot_xy, pivot: str, unit: float, uname: str):
         d = (c.point[0] - pivot_xy[0], c.point[1] - pivot_xy[1])
         far = math.hypot(*d) / unit
         angle = math.degrees(math.atan2(d[1], d[0])) % 360.0
-        return (f"{c.label}: {far:.4g} {uname} from {pivot} at {_degrees(angle, 360)}",
-                pivot_xy, d)
+        return (f"{c.label}: {far:.4g} {uname} from {pivot} at {_degrees(angle, 360)}", pivot_xy, d)
     d = c.direction
     angle = math.degrees(math.atan2(d[1], d[0])) % 180.0
     return f"{c.label} at \u221e, along {_degrees(angle, 180)}", None, d
@@ -100,10 +102,12 @@ def _solid_obstacles(sk):
     outlines: a centre's name inside a plate reads as a point of it), the cylinders and
     blocks, and every hatch; and a leader line keeps off them away from its own point."""
     from shapely.geometry import LineString, Polygon
+
     for kind, geo, st in sk.items:
         gid = st.get("gid") or ""
-        if kind == "polygon" and gid.startswith(("link-", "yoke-", "cylinder-", "block-",
-                                                 "slot-", "ground-")):
+        if kind == "polygon" and gid.startswith(
+            ("link-", "yoke-", "cylinder-", "block-", "slot-", "ground-")
+        ):
             sk.solid.append(Polygon(geo).buffer(0.02))
         elif kind == "segments":
             sk.solid.extend(LineString(seg).buffer(0.03) for seg in geo)
@@ -123,8 +127,11 @@ def centres_sketch(sol, scale: Scale, ic, window: float = WINDOW) -> _Sketch:
 
     def extra(sk, P):
         _solid_obstacles(sk)
-        box = _window(P, [cm(ic.centres[k].point) for k in ic.order
-                          if ic.centres[k].point is not None], window)
+        box = _window(
+            P,
+            [cm(ic.centres[k].point) for k in ic.order if ic.centres[k].point is not None],
+            window,
+        )
         mid = ((box[0] + box[2]) / 2, (box[1] + box[3]) / 2)
         # the far centres' distances from the crank's pivot (a driving block has none:
         # from the first fixed point)
@@ -148,18 +155,38 @@ def centres_sketch(sol, scale: Scale, ic, window: float = WINDOW) -> _Sketch:
                     d = inf.direction
                 seg = _clip(box, p0, d)
                 if seg is not None:
-                    sk.line(list(seg), gid=f"kennedy-{c.label}-{a.label}-{b.label}",
-                            color=color, lw=lw, dashes=dashes, z=1, obstacle=False,
-                            hint=False)
+                    sk.line(
+                        list(seg),
+                        gid=f"kennedy-{c.label}-{a.label}-{b.label}",
+                        color=color,
+                        lw=lw,
+                        dashes=dashes,
+                        z=1,
+                        obstacle=False,
+                        hint=False,
+                    )
         # the centres: a ring where it is, an arrow at the edge where it is off the sheet
         for key in ic.order:
             c = ic.centres[key]
             if c.point is not None and _inside(box, cm(c.point)):
                 where = cm(c.point)
-                sk.circle(where, 0.07, gid=f"centre-{c.label}", face="#ffffff",
-                          edge=CENTRE_COLOR, lw=1.0, z=7)
-                sk.label(c.label, [where], SMALL_PT + 1, gid=f"label-{c.label}",
-                         color=CENTRE_COLOR, point=True)
+                sk.circle(
+                    where,
+                    0.07,
+                    gid=f"centre-{c.label}",
+                    face="#ffffff",
+                    edge=CENTRE_COLOR,
+                    lw=1.0,
+                    z=7,
+                )
+                sk.label(
+                    c.label,
+                    [where],
+                    SMALL_PT + 1,
+                    gid=f"label-{c.label}",
+                    color=CENTRE_COLOR,
+                    point=True,
+                )
                 continue
             text, start, d = far_words(c, sol.P[pivot], pivot, unit, uname)
             start = cm(start) if start is not None else mid
@@ -169,16 +196,22 @@ def centres_sketch(sol, scale: Scale, ic, window: float = WINDOW) -> _Sketch:
             tip = seg[1] if seg is not None else start
             tail = (tip[0] - 0.9 * d[0], tip[1] - 0.9 * d[1])
             sk.arrow(tail, tip, f"centre-{c.label}", CENTRE_COLOR, 1.0)
-            sk.label(text, [tip], SMALL_PT, gid=f"label-{c.label}", color=CENTRE_COLOR,
-                     point=True)
+            sk.label(text, [tip], SMALL_PT, gid=f"label-{c.label}", color=CENTRE_COLOR, point=True)
 
     sk.rings = RINGS
     sk.leader_clear = LEADER_CLEAR
     _mechanism(sk, sol, scale, extra)
     n = ic.n
-    _header(sk, "centres", "Instantaneous centres", scale,
-            lines=[_drive(sol), f"{n} links, N = {n * (n - 1) // 2} centres; dashed: the "
-                   "lines of Kennedy's theorem"])
+    _header(
+        sk,
+        "centres",
+        "Instantaneous centres",
+        scale,
+        lines=[
+            _drive(sol),
+            f"{n} links, N = {n * (n - 1) // 2} centres; dashed: the lines of Kennedy's theorem",
+        ],
+    )
     return sk
 
 
@@ -191,13 +224,20 @@ def circle_sketch(ic, radius: float = CIRCLE_RADIUS) -> _Sketch:
     (solid: primary, from a joint; dashed: by Kennedy's theorem, numbered in the order
     found)."""
     from shapely.geometry import LineString, Point, box
+
     sk = _Sketch()
     n = ic.n
-    pos = {k: (radius * math.cos(math.pi / 2 - 2 * math.pi * (k - 1) / n),
-               radius * math.sin(math.pi / 2 - 2 * math.pi * (k - 1) / n))
-           for k in range(1, n + 1)}
-    ring = [(radius * math.cos(2 * math.pi * t / 96), radius * math.sin(2 * math.pi * t / 96))
-            for t in range(97)]
+    pos = {
+        k: (
+            radius * math.cos(math.pi / 2 - 2 * math.pi * (k - 1) / n),
+            radius * math.sin(math.pi / 2 - 2 * math.pi * (k - 1) / n),
+        )
+        for k in range(1, n + 1)
+    }
+    ring = [
+        (radius * math.cos(2 * math.pi * t / 96), radius * math.sin(2 * math.pi * t / 96))
+        for t in range(97)
+    ]
     sk.line(ring, gid="circle", color="#999999", lw=0.5, obstacle=False, hint=False, z=1)
     chords = []  # (centre, its chord as a line)
     for key in ic.order:
@@ -205,11 +245,26 @@ def circle_sketch(ic, radius: float = CIRCLE_RADIUS) -> _Sketch:
         a, b = pos[c.i], pos[c.j]
         chords.append((c, LineString([a, b])))
         if c.primary:
-            sk.line([a, b], gid=f"chord-{c.label}", color="#000000", lw=0.9, z=2,
-                    obstacle=False, hint=False)
+            sk.line(
+                [a, b],
+                gid=f"chord-{c.label}",
+                color="#000000",
+                lw=0.9,
+                z=2,
+                obstacle=False,
+                hint=False,
+            )
         else:
-            sk.line([a, b], gid=f"chord-{c.label}", color="#1f5fbf", lw=0.9, dashes=(4, 2),
-                    z=2, obstacle=False, hint=False)
+            sk.line(
+                [a, b],
+                gid=f"chord-{c.label}",
+                color="#1f5fbf",
+                lw=0.9,
+                dashes=(4, 2),
+                z=2,
+                obstacle=False,
+                hint=False,
+            )
     # each number on its own chord, on a white patch, where it keeps clearest of the other
     # chords, the other numbers and the links' points
     taken = [Point(p).buffer(0.3) for p in pos.values()]
@@ -231,10 +286,16 @@ def circle_sketch(ic, radius: float = CIRCLE_RADIUS) -> _Sketch:
                 best = (gap, m.x, m.y, patch)
         _, x, y, patch = best
         taken.append(patch)
-        sk.polygon(list(patch.exterior.coords), gid=f"chord-order-{c.label}-patch",
-                   face="#ffffff", edge="#ffffff", lw=0.0, z=3, obstacle=None)
-        sk.note(x, y, text, SMALL_PT, ha="center", gid=f"chord-order-{c.label}",
-                color="#1f5fbf")
+        sk.polygon(
+            list(patch.exterior.coords),
+            gid=f"chord-order-{c.label}-patch",
+            face="#ffffff",
+            edge="#ffffff",
+            lw=0.0,
+            z=3,
+            obstacle=None,
+        )
+        sk.note(x, y, text, SMALL_PT, ha="center", gid=f"chord-order-{c.label}", color="#1f5fbf")
     for k, p in pos.items():
         sk.circle(p, 0.09, gid=f"circle-point-{k}", face="#000000", z=6)
         out = (p[0] * (1 + 0.5 / radius), p[1] * (1 + 0.5 / radius))
@@ -242,9 +303,19 @@ def circle_sketch(ic, radius: float = CIRCLE_RADIUS) -> _Sketch:
     sk.place_labels()
     x0, y0, x1, y1 = sk.content_box()
     top = y1 + 0.4
-    rows = ["Circle diagram", "solid: primary centres (joints)",
-            "dashed: by Kennedy's theorem,", "numbered as found"]
+    rows = [
+        "Circle diagram",
+        "solid: primary centres (joints)",
+        "dashed: by Kennedy's theorem,",
+        "numbered as found",
+    ]
     for i, text in enumerate(reversed(rows)):
-        sk.note(x0, top + 0.45 * i, text, SMALL_PT + (3.5 if i == len(rows) - 1 else 0),
-                gid=f"note-circle-{i}", weight="bold" if i == len(rows) - 1 else "normal")
+        sk.note(
+            x0,
+            top + 0.45 * i,
+            text,
+            SMALL_PT + (3.5 if i == len(rows) - 1 else 0),
+            gid=f"note-circle-{i}",
+            weight="bold" if i == len(rows) - 1 else "normal",
+        )
     return sk

@@ -19,8 +19,20 @@ from ..forces import couple_label, number_sub, side_label
 from ..common.numbers import fmt, sense_word
 from ..polygons.scales import Scale, diagram_scales, force_scale, polygon_corners
 from .sketch import _header, _Sketch
-from .style import (BAR, BODY_EDGE, BODY_FACE, DOT_R, FORCE_STYLE, HEAD_HALF, HEAD_LEN,
-                    JOINT_R, LABEL_PT, LINE_STYLE, MARK_PT, OVERSHOOT)
+from .style import (
+    BAR,
+    BODY_EDGE,
+    BODY_FACE,
+    DOT_R,
+    FORCE_STYLE,
+    HEAD_HALF,
+    HEAD_LEN,
+    JOINT_R,
+    LABEL_PT,
+    LINE_STYLE,
+    MARK_PT,
+    OVERSHOOT,
+)
 
 __all__ = ["force_layout", "FORCE_STYLE", "ARROW_CM"]
 
@@ -43,9 +55,12 @@ def force_layout(sol, scales=None):
     force_scale`, or ``--scale``'s force)."""
     sc = sol.scene
     if not sc.has_forces:
-        raise PolygonMethodError("the forces sheet draws the force analysis, and the scene "
-                                 "asks for none: give its [masses] (or [gravity])",
-                                 file=sc.file, key="--diagram")
+        raise PolygonMethodError(
+            "the forces sheet draws the force analysis, and the scene "
+            "asks for none: give its [masses] (or [gravity])",
+            file=sc.file,
+            key="--diagram",
+        )
     refused = sol.forces_refused
     if refused:
         raise PolygonMethodError(refused, file=sc.file, key="--diagram")
@@ -67,9 +82,13 @@ def force_layout(sol, scales=None):
             if body in free and body not in drawn:
                 drawn.add(body)
                 num = f.numbers[body]
-                panels.append((f"free-body-{num}", space,
-                               _free_body(sol, free[body], space, tiny,
-                                          f"free-body-{num}", note)))
+                panels.append(
+                    (
+                        f"free-body-{num}",
+                        space,
+                        _free_body(sol, free[body], space, tiny, f"free-body-{num}", note),
+                    )
+                )
         if len(sides) >= 3:
             tag = f"force-polygon-{st.index + 1}"
             panels.append((tag, fs, _polygon(sol, st, fs, tiny, tag)))
@@ -84,8 +103,7 @@ def _unit(v):
 def _what(body, numbers, sc):
     if body.startswith("block "):
         return f"block {numbers[body]}, at {body[6:]}"
-    return f"link {numbers[body]}, {body}" + (" (the crank)" if body == sc.input.crank
-                                               else "")
+    return f"link {numbers[body]}, {body}" + (" (the crank)" if body == sc.input.crank else "")
 
 
 def _magnitude(v) -> str:
@@ -108,6 +126,7 @@ def _wrap(items, width=70):
 
 def _free_body(sol, fb, scale: Scale, tiny, tag, note=()) -> _Sketch:
     from shapely.geometry import LineString, MultiPoint, Polygon
+
     sc, f = sol.scene, sol.forces
     s = scale.per_cm
 
@@ -122,10 +141,13 @@ def _free_body(sol, fb, scale: Scale, tiny, tag, note=()) -> _Sketch:
         g = next((g for g in f.guides if g.point == point), None)
         ux, uy = (g.n[1], -g.n[0]) if g is not None else (1.0, 0.0)
         a, b = 0.55, 0.32  # half length along the path, half height
-        outline = [(X[0] + i * a * ux - j * b * uy, X[1] + i * a * uy + j * b * ux)
-                   for i, j in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
-        sk.polygon(outline, gid=f"{tag}-body", face=BODY_FACE, edge=BODY_EDGE, lw=0.8, z=2,
-                   obstacle="edge")
+        outline = [
+            (X[0] + i * a * ux - j * b * uy, X[1] + i * a * uy + j * b * ux)
+            for i, j in ((-1, -1), (1, -1), (1, 1), (-1, 1))
+        ]
+        sk.polygon(
+            outline, gid=f"{tag}-body", face=BODY_FACE, edge=BODY_EDGE, lw=0.8, z=2, obstacle="edge"
+        )
         body = Polygon(outline)
         pts = {point: X}
     else:
@@ -138,27 +160,43 @@ def _free_body(sol, fb, scale: Scale, tiny, tag, note=()) -> _Sketch:
         pts = {n: cm(sol.P[n]) for n in names}
         pts.update({sd.point: cm(sd.at) for sd in fb.sides if sd.what == "contact"})
         body = MultiPoint(list(pts.values())).convex_hull.buffer(BAR / 2, quad_segs=8)
-        sk.polygon(list(body.exterior.coords), gid=f"{tag}-body", face=BODY_FACE,
-                   edge=BODY_EDGE, lw=0.8, z=2, obstacle="edge")
+        sk.polygon(
+            list(body.exterior.coords),
+            gid=f"{tag}-body",
+            face=BODY_FACE,
+            edge=BODY_EDGE,
+            lw=0.8,
+            z=2,
+            obstacle="edge",
+        )
     for n, xy in pts.items():
         pin = any(sd.point == n and sd.what in ("pin", "guide") for sd in fb.sides)
-        sk.circle(xy, JOINT_R if pin else DOT_R, gid=f"{tag}-joint-{n}",
-                  face="#ffffff" if pin else "#000000", z=6)
+        sk.circle(
+            xy,
+            JOINT_R if pin else DOT_R,
+            gid=f"{tag}-joint-{n}",
+            face="#ffffff" if pin else "#000000",
+            z=6,
+        )
         sk.label(n, [xy], LABEL_PT, gid=f"label-{tag}-point-{n}", point=True)
     inertia = f.inertia_of(fb.body)
     if inertia is not None:
         G = cm(inertia.G)
         if all(math.dist(G, xy) > 0.05 for xy in pts.values()):
             sk.circle(G, DOT_R, gid=f"{tag}-G", face="#000000", z=6)
-            sk.label("G" + number_sub(numbers, fb.body), [G], LABEL_PT,
-                     gid=f"label-{tag}-G", point=True)
+            sk.label(
+                "G" + number_sub(numbers, fb.body), [G], LABEL_PT, gid=f"label-{tag}-G", point=True
+            )
         if inertia.offset is not None and abs(inertia.offset) / s > 0.05:
             H = cm(inertia.offset_point)
-            sk.line([G, H], gid=f"{tag}-offset", color="#d95f02", lw=0.6, dashes=(2.0, 1.5),
-                    z=3)
-            sk.label(f"h = {fmt(abs(inertia.offset) / sc.length_unit)} {sc.units}",
-                     [((G[0] + H[0]) / 2, (G[1] + H[1]) / 2)], MARK_PT,
-                     gid=f"label-{tag}-offset", color="#d95f02")
+            sk.line([G, H], gid=f"{tag}-offset", color="#d95f02", lw=0.6, dashes=(2.0, 1.5), z=3)
+            sk.label(
+                f"h = {fmt(abs(inertia.offset) / sc.length_unit)} {sc.units}",
+                [((G[0] + H[0]) / 2, (G[1] + H[1]) / 2)],
+                MARK_PT,
+                gid=f"label-{tag}-offset",
+                color="#d95f02",
+            )
     words = []
     for k, side in enumerate(fb.sides):
         if math.hypot(*side.vector) <= tiny:
@@ -182,24 +220,43 @@ def _free_body(sol, fb, scale: Scale, tiny, tag, note=()) -> _Sketch:
         color, lw, dashes = FORCE_STYLE[side.what]
         sk.arrow(start, end, f"{tag}-force-{k}", color, lw, dashes, z=5)
         far = end if (start, end) == out else start
-        sk.label(name, [far, ((start[0] + end[0]) / 2, (start[1] + end[1]) / 2)], LABEL_PT,
-                 gid=f"label-{tag}-force-{k}", color=color)
-    centre = cm(inertia.G) if inertia is not None else \
-        tuple(sum(c) / len(pts) for c in zip(*pts.values()))
+        sk.label(
+            name,
+            [far, ((start[0] + end[0]) / 2, (start[1] + end[1]) / 2)],
+            LABEL_PT,
+            gid=f"label-{tag}-force-{k}",
+            color=color,
+        )
+    centre = (
+        cm(inertia.G)
+        if inertia is not None
+        else tuple(sum(c) / len(pts) for c in zip(*pts.values()))
+    )
     for k, c in enumerate(fb.couples):
         if c.value == 0:
             continue
         r = COUPLE_R * (1 + 0.45 * k)
         _curved_arrow(sk, centre, r, c.value > 0, f"{tag}-couple-{k}")
         text = f"{couple_label(c, numbers)} = {fmt(abs(c.value))} N m {sense_word(c.value)}"
-        sk.label(text, [(centre[0], centre[1] + r), (centre[0], centre[1] - r)], LABEL_PT,
-                 gid=f"label-{tag}-couple-{k}", color="#000000")
+        sk.label(
+            text,
+            [(centre[0], centre[1] + r), (centre[0], centre[1] - r)],
+            LABEL_PT,
+            gid=f"label-{tag}-couple-{k}",
+            color="#000000",
+        )
     sk.place_labels()
-    lines = _wrap(words) + list(note) + ["the arrows give each force's line and sense; "
-                                         "its size is the polygon's"]
+    lines = (
+        _wrap(words)
+        + list(note)
+        + ["the arrows give each force's line and sense; its size is the polygon's"]
+    )
     if fb.body == sc.input.crank or any(c.what == "torque" for c in fb.couples):
-        lines.append("T: the driver's torque on the "
-                     + ("wheel" if f.driver == "wheel" else "crank") + " (ccw +)")
+        lines.append(
+            "T: the driver's torque on the "
+            + ("wheel" if f.driver == "wheel" else "crank")
+            + " (ccw +)"
+        )
     _header(sk, tag, f"Free body of {_what(fb.body, numbers, sc)}", scale, lines=lines)
     return sk
 
@@ -211,17 +268,28 @@ def _curved_arrow(sk, centre, r, ccw, gid):
     if not ccw:
         a0 = math.radians(-45)
     n = 40
-    pts = [(centre[0] + r * math.cos(a0 + sweep * i / n),
-            centre[1] + r * math.sin(a0 + sweep * i / n)) for i in range(n + 1)]
+    pts = [
+        (centre[0] + r * math.cos(a0 + sweep * i / n), centre[1] + r * math.sin(a0 + sweep * i / n))
+        for i in range(n + 1)
+    ]
     end = pts[-1]
     a = a0 + sweep
     tx, ty = (-math.sin(a), math.cos(a)) if ccw else (math.sin(a), -math.cos(a))
     hl = HEAD_LEN
     base = (end[0] - hl * tx, end[1] - hl * ty)
     sk.line(pts[:-3], gid=f"{gid}-arc", color="#000000", lw=1.1, z=5)
-    sk.polygon([end, (base[0] - HEAD_HALF * ty, base[1] + HEAD_HALF * tx),
-                (base[0] + HEAD_HALF * ty, base[1] - HEAD_HALF * tx)], gid=f"{gid}-head",
-               face="#000000", edge="#000000", lw=0.4, z=5)
+    sk.polygon(
+        [
+            end,
+            (base[0] - HEAD_HALF * ty, base[1] + HEAD_HALF * tx),
+            (base[0] + HEAD_HALF * ty, base[1] - HEAD_HALF * tx),
+        ],
+        gid=f"{gid}-head",
+        face="#000000",
+        edge="#000000",
+        lw=0.4,
+        z=5,
+    )
 
 
 # --------------------------------------------------------------------------- a polygon
@@ -229,8 +297,9 @@ def _curved_arrow(sk, centre, r, ccw, gid):
 
 def _along(a, b):
     """Where a side's label is tried, nearest its middle first."""
-    return [(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
-            for t in (0.5, 0.35, 0.65, 0.2, 0.8)]
+    return [
+        (a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])) for t in (0.5, 0.35, 0.65, 0.2, 0.8)
+    ]
 
 
 def _polygon(sol, st, scale: Scale, tiny, tag) -> _Sketch:
@@ -245,10 +314,21 @@ def _polygon(sol, st, scale: Scale, tiny, tag) -> _Sketch:
     def name(k):  # a component whose partner is nil is the whole force
         sd = sides[k]
         if sd.part:
-            partner = next((j for j, o in enumerate(sides) if j != k and o.what == sd.what
-                            and o.on == sd.on and o.by == sd.by and o.point == sd.point), None)
+            partner = next(
+                (
+                    j
+                    for j, o in enumerate(sides)
+                    if j != k
+                    and o.what == sd.what
+                    and o.on == sd.on
+                    and o.by == sd.by
+                    and o.point == sd.point
+                ),
+                None,
+            )
             if partner is not None and not nonzero[partner]:
                 from dataclasses import replace
+
                 return side_label(replace(sd, part=""), numbers)
         return side_label(sd, numbers)
 
@@ -261,9 +341,18 @@ def _polygon(sol, st, scale: Scale, tiny, tag) -> _Sketch:
         if hi - lo < 2.0:
             lo, hi = lo - 0.5, hi + 0.5
         color, lw, dashes = LINE_STYLE
-        sk.line([(known[0] + lo * u[0], known[1] + lo * u[1]),
-                 (known[0] + hi * u[0], known[1] + hi * u[1])], gid=f"{tag}-line-{k}",
-                color=color, lw=lw, dashes=dashes, z=1, obstacle=False)
+        sk.line(
+            [
+                (known[0] + lo * u[0], known[1] + lo * u[1]),
+                (known[0] + hi * u[0], known[1] + hi * u[1]),
+            ],
+            gid=f"{tag}-line-{k}",
+            color=color,
+            lw=lw,
+            dashes=dashes,
+            z=1,
+            obstacle=False,
+        )
     also = {}
     chords = []
     for c, i, j in st.chords:
@@ -290,22 +379,24 @@ def _polygon(sol, st, scale: Scale, tiny, tag) -> _Sketch:
         sk.arrow(a, b, f"{tag}-side-{k}", color, lw, dashes, z=4)
         sk.label(text, _along(a, b), LABEL_PT, gid=f"label-{tag}-side-{k}", color=color)
         found = " (found)" if any(k == u for u, _ in st.unknown) else ""
-        rows.append(f"{text}: {_magnitude(sd.vector)}, {scale.cm(math.hypot(*sd.vector)):.2f}"
-                    f" cm{found}")
+        rows.append(
+            f"{text}: {_magnitude(sd.vector)}, {scale.cm(math.hypot(*sd.vector)):.2f} cm{found}"
+        )
     for n, (c, i, j) in enumerate(chords):
         color, lw, dashes = CHORD_STYLE
         a, b = corners[i], corners[j]
         sk.arrow(a, b, f"{tag}-chord-{n}", color, lw, dashes, z=3)
         text = side_label(c, numbers)
         sk.label(text, _along(a, b), LABEL_PT, gid=f"label-{tag}-chord-{n}", color=color)
-        rows.append(f"{text}: {_magnitude(c.vector)}, {scale.cm(math.hypot(*c.vector)):.2f} "
-                    "cm (across)")
+        rows.append(
+            f"{text}: {_magnitude(c.vector)}, {scale.cm(math.hypot(*c.vector)):.2f} cm (across)"
+        )
     sk.circle(corners[0], DOT_R * 1.3, gid=f"{tag}-pole", face="#000000", z=6)
     sk.place_labels()
     bodies = ", ".join(_what(b, numbers, sol.scene) for b in st.bodies)
-    lines = [f"step {st.index + 1}, {st.title}: {bodies}; link 1 the frame",
-             "F\u2083\u2082: the force on 3 by 2 (\u1d57 square to its link, \u207f along "
-             "it)"] + rows
+    lines = [
+        f"step {st.index + 1}, {st.title}: {bodies}; link 1 the frame",
+        "F\u2083\u2082: the force on 3 by 2 (\u1d57 square to its link, \u207f along it)",
+    ] + rows
     _header(sk, tag, "Force polygon", scale, lines=lines)
     return sk
-

@@ -21,8 +21,10 @@ def klein_line(sol) -> str | None:
     if k is None:
         return None
     O, C, P = names
-    return (f"Klein's construction (dashed, purple): {O}M = v_{P}/ω, {C}M = v_{P}{C}/ω; "
-            f"N{O} = a_{P}/ω² (bold)")
+    return (
+        f"Klein's construction (dashed, purple): {O}M = v_{P}/ω, {C}M = v_{P}{C}/ω; "
+        f"N{O} = a_{P}/ω² (bold)"
+    )
 
 
 def draw_klein(sk, sol, scale, P):
@@ -42,11 +44,17 @@ def draw_klein(sk, sol, scale, P):
     sk.line([C, M], gid="klein-rod-produced", **line)
     sk.line([O, M], gid="klein-OM", **line)
     rc = math.dist(C, M)
-    for gid, centre, r in (("klein-circle-M", C, rc),
-                           ("klein-circle-rod", ((C[0] + Pn[0]) / 2, (C[1] + Pn[1]) / 2),
-                            math.dist(C, Pn) / 2)):
-        pts = [(centre[0] + r * math.cos(2 * math.pi * i / 144),
-                centre[1] + r * math.sin(2 * math.pi * i / 144)) for i in range(145)]
+    for gid, centre, r in (
+        ("klein-circle-M", C, rc),
+        ("klein-circle-rod", ((C[0] + Pn[0]) / 2, (C[1] + Pn[1]) / 2), math.dist(C, Pn) / 2),
+    ):
+        pts = [
+            (
+                centre[0] + r * math.cos(2 * math.pi * i / 144),
+                centre[1] + r * math.sin(2 * math.pi * i / 144),
+            )
+            for i in range(145)
+        ]
         sk.line(pts, gid=gid, **line)
     on = [Q, N] + ([cm(k.K), cm(k.L)] if k.K is not None else [])  # the chord's line
     dx, dy = N[0] - Q[0], N[1] - Q[1]
@@ -54,13 +62,21 @@ def draw_klein(sk, sol, scale, P):
         dx, dy = on[2][0] - on[3][0], on[2][1] - on[3][1]
     ordered = sorted(on, key=lambda p: (p[0] - Q[0]) * dx + (p[1] - Q[1]) * dy)
     sk.line([ordered[0], ordered[-1]], gid="klein-chord", **line)
-    sk.line([N, O], gid="klein-NO", color=KLEIN_COLOR, lw=1.6, z=2,
-            hint=False)
+    sk.line([N, O], gid="klein-NO", color=KLEIN_COLOR, lw=1.6, z=2, hint=False)
     marks = [("M", M), ("Q", Q), ("N", N)]
     if k.K is not None:
         marks += [("K", cm(k.K)), ("L", cm(k.L))]
     for label, xy in marks:
-        sk.circle(xy, DOT_R * 0.8, gid=f"klein-{label}", face=KLEIN_COLOR, edge=KLEIN_COLOR,
-                  lw=0.3, z=6, obstacle=None)
-        sk.label(name(label), [xy], LABEL_PT, gid=f"label-klein-{label}", color=KLEIN_COLOR,
-                 point=True)
+        sk.circle(
+            xy,
+            DOT_R * 0.8,
+            gid=f"klein-{label}",
+            face=KLEIN_COLOR,
+            edge=KLEIN_COLOR,
+            lw=0.3,
+            z=6,
+            obstacle=None,
+        )
+        sk.label(
+            name(label), [xy], LABEL_PT, gid=f"label-klein-{label}", color=KLEIN_COLOR, point=True
+        )

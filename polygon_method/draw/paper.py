@@ -25,8 +25,18 @@ from itertools import combinations
 
 from ..common.errors import PolygonMethodError
 
-__all__ = ["PAPERS", "PAPER_NAMES", "FOOTER", "Page", "paper_size", "paper_name", "paginate",
-           "room", "fits", "page_files"]
+__all__ = [
+    "PAPERS",
+    "PAPER_NAMES",
+    "FOOTER",
+    "Page",
+    "paper_size",
+    "paper_name",
+    "paginate",
+    "room",
+    "fits",
+    "page_files",
+]
 
 #: paper sizes (cm, portrait): ISO A4 and A3, US letter (8.5 x 11 in)
 PAPERS = {"A4": (21.0, 29.7), "A3": (29.7, 42.0), "letter": (21.59, 27.94)}
@@ -100,8 +110,9 @@ class Page:
         """The line each page carries: the paper it was drawn for and how to print it."""
         w, h = self.size
         page = f"; page {self.number} of {self.count}" if self.count > 1 else ""
-        return (f"{self.text} ({w:g} x {h:g} cm): print at 100 % (actual size, not fit to "
-                f"page){page}")
+        return (
+            f"{self.text} ({w:g} x {h:g} cm): print at 100 % (actual size, not fit to page){page}"
+        )
 
 
 def _arrangements(items):
@@ -135,8 +146,9 @@ def _one_page(items, paper):
                 pw, ph = paper_size(paper)
                 size = (pw, ph) if orientation == "portrait" else (ph, pw)
                 left = MARGIN + (rw - w) / 2
-                return Page(paper, orientation, size,
-                            tuple((k, left + x, MARGIN + y) for k, x, y in pos))
+                return Page(
+                    paper, orientation, size, tuple((k, left + x, MARGIN + y) for k, x, y in pos)
+                )
     return None
 
 
@@ -167,14 +179,25 @@ def paginate(sizes, paper: str = "A4", names=None, advice: str = "", panels=None
             raise PolygonMethodError(
                 f"{names[k] if names else f'panel {k + 1}'} is {w:.3g} x {h:.3g} cm: more "
                 f"than {paper} holds inside its margins ({rw:.3g} x {rh:.3g} cm, either way "
-                f"round){advice}", key="--paper")
+                f"round){advice}",
+                key="--paper",
+            )
     for groups in _groups(len(sizes)):
         pages = [_one_page([(k, sizes[k]) for k in g], paper) for g in groups]
         if all(p is not None for p in pages):
             n = len(pages)
-            return [Page(p.paper, p.orientation, p.size, p.placed, i + 1, n,
-                         tuple(panels[k] for k, _, _ in p.placed) if panels else ())
-                    for i, p in enumerate(pages)]
+            return [
+                Page(
+                    p.paper,
+                    p.orientation,
+                    p.size,
+                    p.placed,
+                    i + 1,
+                    n,
+                    tuple(panels[k] for k, _, _ in p.placed) if panels else (),
+                )
+                for i, p in enumerate(pages)
+            ]
     raise AssertionError("unreachable: one panel a page always fits")  # pragma: no cover
 
 
@@ -186,6 +209,7 @@ def page_files(path, count: int) -> list:
     ['out/sheet-1.svg', 'out/sheet-2.svg', 'out/sheet-3.svg']
     """
     from pathlib import Path
+
     path = Path(path)
     if count == 1:
         return [path]

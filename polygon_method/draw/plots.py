@@ -18,12 +18,30 @@ __all__ = ["plot_bytes", "plot_figure", "typeset", "SERIES_COLORS", "MARKS", "MA
 #: the plots' curves, in turn (matplotlib's own cycle, so the page's plots and
 #: ``sweep --plot`` colour a quantity alike), and the marks across them: the angle shown,
 #: the scene's stated instant, the limit positions, the change points (colour, pt, dashes)
-SERIES_COLORS = ("#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b",
-                 "#e377c2", "#7f7f7f", "#bcbd22", "#17becf")
-MARKS = {"now": ("#cc0000", 1.2, None), "instant": ("#4d4d4d", 0.8, (4.0, 2.0)),
-         "limit": ("#d62728", 0.8, (1.0, 2.0)), "change": ("#9467bd", 0.8, (4.0, 1.5, 1.0, 1.5))}
-MARK_NAMES = {"now": "the angle shown", "instant": "the scene's stated instant",
-              "limit": "a limit position", "change": "a change point"}
+SERIES_COLORS = (
+    "#1f77b4",
+    "#ff7f0e",
+    "#2ca02c",
+    "#d62728",
+    "#9467bd",
+    "#8c564b",
+    "#e377c2",
+    "#7f7f7f",
+    "#bcbd22",
+    "#17becf",
+)
+MARKS = {
+    "now": ("#cc0000", 1.2, None),
+    "instant": ("#4d4d4d", 0.8, (4.0, 2.0)),
+    "limit": ("#d62728", 0.8, (1.0, 2.0)),
+    "change": ("#9467bd", 0.8, (4.0, 1.5, 1.0, 1.5)),
+}
+MARK_NAMES = {
+    "now": "the angle shown",
+    "instant": "the scene's stated instant",
+    "limit": "a limit position",
+    "change": "a change point",
+}
 
 _MATH_SPECIAL = {c: "\\" + c for c in "_$%#&{}"}
 _MATH_SPECIAL.update({"-": r"\text{-}", "^": r"\^{}", "~": r"\~{}", "\\": r"\backslash{}"})
@@ -48,7 +66,6 @@ def _mark(ax, x, kind):
         line.set_dashes(dashes)
 
 
-
 def _plotted(res: SweepResult, points, links) -> tuple:
     """The points and the links' keys to plot: those asked (each once; an unknown name is an
     error), else every moving point and every link not joining two ground points."""
@@ -59,8 +76,7 @@ def _plotted(res: SweepResult, points, links) -> tuple:
         if p not in res.P:
             raise SceneError(f"--points: no point {p} in the scene", file=sc.file)
     keys = []
-    for name in links or [lk.key for lk in sc.links
-                          if not (lk.p in ground and lk.q in ground)]:
+    for name in links or [lk.key for lk in sc.links if not (lk.p in ground and lk.q in ground)]:
         if not sc.has_link(name):
             raise SceneError(f"--links: no link {name} in [links]", file=sc.file)
         if sc.link(name).key not in keys:  # BC and CB are one link
@@ -99,8 +115,11 @@ def _axis(res: SweepResult) -> tuple:
         t0 = at
     gaps = np.nonzero(np.diff(x) > 1.5 * np.median(np.diff(x)))[0] + 1 if len(x) > 2 else []
     x = np.insert(x, gaps, np.nan)  # no line across angles left out
-    show = degrees_fn(dom) if dom.full_turn or not dom.periodic else (
-        lambda t: math.degrees(float(dom.map(np.array([t]))[0][0])) + shift)
+    show = (
+        degrees_fn(dom)
+        if dom.full_turn or not dom.periodic
+        else (lambda t: math.degrees(float(dom.map(np.array([t]))[0][0])) + shift)
+    )
     return x, order, gaps, t0, show
 
 
@@ -114,9 +133,10 @@ def _figure(sc, Figure) -> tuple:
     fig = Figure(figsize=(10, 10.5), layout="constrained")
     gs = fig.add_gridspec(3, 2, height_ratios=(1, 1, 1.1))
     first = fig.add_subplot(gs[0, 0])
-    axes = [[first, fig.add_subplot(gs[0, 1], sharex=first)],
-            [fig.add_subplot(gs[1, 0], sharex=first),
-             fig.add_subplot(gs[1, 1], sharex=first)]]
+    axes = [
+        [first, fig.add_subplot(gs[0, 1], sharex=first)],
+        [fig.add_subplot(gs[1, 0], sharex=first), fig.add_subplot(gs[1, 1], sharex=first)],
+    ]
     for ax in axes[0]:
         ax.tick_params(labelbottom=False)
     _turning_moment_panel(fig.add_subplot(gs[2, :]), sc, *cycle)
@@ -129,16 +149,30 @@ def _panels(res: SweepResult, axes, pts, keys) -> list:
     sc = res.scene
     here = _scene_values(sc)
     return [
-        (axes[0][0], "speed v (m/s)", [(typeset("v", p), res.speed(p), here.get(f"v_{p}"))
-                                       for p in pts]
-         + [(typeset("v", "s," + s.key), res.S[s.key][0], here.get(f"vs_{s.key}"))
-            for s in sc.sliders]),
-        (axes[1][0], "acceleration a (m/s²)",
-         [(typeset("a", p), res.acceleration_magnitude(p), here.get(f"a_{p}")) for p in pts]),
-        (axes[0][1], "angular velocity ω (rad/s, ccw +)",
-         [(typeset("omega", k), res.W[k], here.get(f"omega_{k}")) for k in keys]),
-        (axes[1][1], "angular acceleration α (rad/s², ccw +)",
-         [(typeset("alpha", k), res.Al[k], here.get(f"alpha_{k}")) for k in keys]),
+        (
+            axes[0][0],
+            "speed v (m/s)",
+            [(typeset("v", p), res.speed(p), here.get(f"v_{p}")) for p in pts]
+            + [
+                (typeset("v", "s," + s.key), res.S[s.key][0], here.get(f"vs_{s.key}"))
+                for s in sc.sliders
+            ],
+        ),
+        (
+            axes[1][0],
+            "acceleration a (m/s²)",
+            [(typeset("a", p), res.acceleration_magnitude(p), here.get(f"a_{p}")) for p in pts],
+        ),
+        (
+            axes[0][1],
+            "angular velocity ω (rad/s, ccw +)",
+            [(typeset("omega", k), res.W[k], here.get(f"omega_{k}")) for k in keys],
+        ),
+        (
+            axes[1][1],
+            "angular acceleration α (rad/s², ccw +)",
+            [(typeset("alpha", k), res.Al[k], here.get(f"alpha_{k}")) for k in keys],
+        ),
     ]
 
 
@@ -148,7 +182,7 @@ def _unit_scales(res: SweepResult) -> list:
     sc = res.scene
     if not res.domain.periodic:  # a driving block: the sizes its input sets
         return list(res.plan.steps[0].input_scales(sc))
-    w, k = abs(sc.input.omega), sc.input.omega ** 2 + abs(sc.input.alpha)
+    w, k = abs(sc.input.omega), sc.input.omega**2 + abs(sc.input.alpha)
     size = max([lk.length for lk in sc.links] + [1e-3])
     return [w * size, k * size, w, k]
 
@@ -162,8 +196,7 @@ def _draw_panel(res: SweepResult, ax, label, series, unit_scale, axis) -> bool:
     big = []
     for i, (name, y, y0) in enumerate(series):
         yy = np.insert(np.asarray(y, dtype=float)[order], gaps, np.nan)
-        line, = ax.plot(x, yy, lw=1.2, label=name,
-                        color=SERIES_COLORS[i % len(SERIES_COLORS)])
+        (line,) = ax.plot(x, yy, lw=1.2, label=name, color=SERIES_COLORS[i % len(SERIES_COLORS)])
         if y0 is not None:
             ax.plot([t0], [y0], "o", color=line.get_color(), ms=5)
         if len(y):
@@ -201,19 +234,26 @@ def _titles(res: SweepResult, fig, axes, clipped: bool) -> None:
     driver = res.plan.steps[0]  # a block driver: its place is the axis
     block = None if driver.periodic else driver.finds[0]
     for ax in axes[1]:
-        ax.set_xlabel("crank angle θ (°)" if block is None else
-                      f"place s_{block} of block {block} ({sc.units})")
+        ax.set_xlabel(
+            "crank angle θ (°)"
+            if block is None
+            else f"place s_{block} of block {block} ({sc.units})"
+        )
     title = sc.title or sc.file or "mechanism"
-    key = (f"crank {sc.input.crank}; dashed: the scene's instant "
-           f"({math.degrees(sc.input.angle):g} deg)" if block is None else
-           f"block {block}; dashed: the scene's instant (s_{block} = "
-           f"{sc.input.angle / sc.length_unit:g} {sc.units})"
-           + ("; dotted red: limit positions" if res.limits else "")
-           + ("; dash-dot: change points" if res.change_points else ""))
+    key = (
+        f"crank {sc.input.crank}; dashed: the scene's instant "
+        f"({math.degrees(sc.input.angle):g} deg)"
+        if block is None
+        else f"block {block}; dashed: the scene's instant (s_{block} = "
+        f"{sc.input.angle / sc.length_unit:g} {sc.units})"
+        + ("; dotted red: limit positions" if res.limits else "")
+        + ("; dash-dot: change points" if res.change_points else "")
+    )
     lines = textwrap.wrap(title, 90) + textwrap.wrap(key, 110)  # within the figure's width
     if clipped:
-        lines.append("(the vertical scale is cut: values grow without bound near the limit "
-                     "positions)")
+        lines.append(
+            "(the vertical scale is cut: values grow without bound near the limit positions)"
+        )
     fig.suptitle("\n".join(lines), fontsize=10)
 
 
@@ -221,6 +261,7 @@ def plot_figure(res: SweepResult, *, points=None, links=None):
     """Velocities and accelerations of ``points`` and omega, alpha of ``links`` against the
     crank angle, with the scene's own instant marked (matplotlib, imported here only)."""
     import matplotlib
+
     matplotlib.use("Agg")
     from matplotlib.figure import Figure
 
@@ -228,8 +269,7 @@ def plot_figure(res: SweepResult, *, points=None, links=None):
     axis = _axis(res)
     fig, axes = _figure(res.scene, Figure)
     clipped = False
-    for (ax, label, series), unit_scale in zip(_panels(res, axes, pts, keys),
-                                               _unit_scales(res)):
+    for (ax, label, series), unit_scale in zip(_panels(res, axes, pts, keys), _unit_scales(res)):
         clipped = _draw_panel(res, ax, label, series, unit_scale, axis) or clipped
     _titles(res, fig, axes, clipped)
     return fig
@@ -239,8 +279,8 @@ def _engine_cycle(scene):
     """(the :class:`~polygon_method.linkage.TurningMoment`, phases in deg, the turning
     moment at each) of an engine, or None for another mechanism (or one whose cycle cannot
     be taken)."""
-    from ..linkage.flywheel import (_geometry, engine_piston, turning_moment,
-                                   turning_moment_at)
+    from ..linkage.flywheel import _geometry, engine_piston, turning_moment, turning_moment_at
+
     try:
         if engine_piston(scene) is None:
             return None
@@ -256,13 +296,29 @@ def _turning_moment_panel(ax, scene, tm, x, T):
     """The turning-moment diagram: T against the crank angle from the inner dead centre,
     the mean line, the areas above it and below it shaded, the crossings marked."""
     from matplotlib.ticker import MultipleLocator
+
     ax.plot(x, T, lw=1.3, color=SERIES_COLORS[0], label="turning moment T")
-    ax.axhline(tm.mean, color=SERIES_COLORS[3], lw=1.0,
-               label=f"mean T_mean = {tm.mean:.4g} N m")
-    ax.fill_between(x, T, tm.mean, where=T >= tm.mean, color=SERIES_COLORS[2], alpha=0.25,
-                    interpolate=True, label="above the mean (+)")
-    ax.fill_between(x, T, tm.mean, where=T <= tm.mean, color=SERIES_COLORS[1], alpha=0.25,
-                    interpolate=True, label="below the mean (-)")
+    ax.axhline(tm.mean, color=SERIES_COLORS[3], lw=1.0, label=f"mean T_mean = {tm.mean:.4g} N m")
+    ax.fill_between(
+        x,
+        T,
+        tm.mean,
+        where=T >= tm.mean,
+        color=SERIES_COLORS[2],
+        alpha=0.25,
+        interpolate=True,
+        label="above the mean (+)",
+    )
+    ax.fill_between(
+        x,
+        T,
+        tm.mean,
+        where=T <= tm.mean,
+        color=SERIES_COLORS[1],
+        alpha=0.25,
+        interpolate=True,
+        label="below the mean (-)",
+    )
     ax.axhline(0.0, color="#4d4d4d", lw=0.6)
     for c in tm.crossings:
         _mark(ax, c, "change")
@@ -275,8 +331,10 @@ def _turning_moment_panel(ax, scene, tm, x, T):
         words += f"; flywheel I = {tm.flywheel[2]:.4g} kg m²"
         if tm.flywheel[3] is not None:
             words += f", rim mass {tm.flywheel[3]:.4g} kg"
-    ax.set_title(f"turning-moment diagram over the cycle ({words}); dash-dot: the "
-                 "crossings of the mean", fontsize=9)
+    ax.set_title(
+        f"turning-moment diagram over the cycle ({words}); dash-dot: the crossings of the mean",
+        fontsize=9,
+    )
     ax.grid(True, lw=0.3)
     ax.legend(fontsize=8, ncol=4, loc="best", framealpha=0.85)
 
@@ -306,4 +364,3 @@ def _scene_values(scene) -> dict:
     for s in scene.sliders:
         out[f"vs_{s.key}"] = sol.S[s.key][0]
     return out
-

@@ -6,10 +6,29 @@ from __future__ import annotations
 import io
 
 from ..common.errors import PolygonMethodError
-from ..polygons.scales import (DIAGRAMS, GAP, KIND_OF_DIAGRAM, MARGIN, SHEET_ALL, choose_scales,
-                      coarser, diagram_scales, display_unit, parse_scale)
+from ..polygons.scales import (
+    DIAGRAMS,
+    GAP,
+    KIND_OF_DIAGRAM,
+    MARGIN,
+    SHEET_ALL,
+    choose_scales,
+    coarser,
+    diagram_scales,
+    display_unit,
+    parse_scale,
+)
 from .diagrams import _configuration, _polygon, _sketch
-from .paper import FOOTER, MARGIN as PAGE_MARGIN, PAPER_NAMES, PAPERS, fits, paginate, paper_name, room
+from .paper import (
+    FOOTER,
+    MARGIN as PAGE_MARGIN,
+    PAPER_NAMES,
+    PAPERS,
+    fits,
+    paginate,
+    paper_name,
+    room,
+)
 from .sketch import _Sketch
 from .style import CM_PER_INCH, FONT, FORMATS, MAX_FIGURE_CM, PNG_DPI, SMALL_PT
 
@@ -37,23 +56,43 @@ def _paint(ax, sk: _Sketch, pad: float = 0.3) -> list:
     for kind, geo, st in sk.items:
         gid, z = st["gid"], st["z"]
         if kind == "line":
-            a = Line2D([p[0] for p in geo], [p[1] for p in geo], color=st["color"],
-                       linewidth=st["lw"], zorder=z, solid_capstyle="butt",
-                       dash_capstyle="butt", solid_joinstyle="round")
+            a = Line2D(
+                [p[0] for p in geo],
+                [p[1] for p in geo],
+                color=st["color"],
+                linewidth=st["lw"],
+                zorder=z,
+                solid_capstyle="butt",
+                dash_capstyle="butt",
+                solid_joinstyle="round",
+            )
             if st["dashes"]:
                 a.set_dashes(st["dashes"])
             ax.add_line(a)
         elif kind == "polygon":
-            a = Polygon(geo, closed=True, facecolor=st["face"], edgecolor=st["edge"],
-                        linewidth=st["lw"], zorder=z, alpha=st["alpha"] if st["alpha"] < 1
-                        else None, joinstyle="miter" if gid and "head" in gid else "round")
+            a = Polygon(
+                geo,
+                closed=True,
+                facecolor=st["face"],
+                edgecolor=st["edge"],
+                linewidth=st["lw"],
+                zorder=z,
+                alpha=st["alpha"] if st["alpha"] < 1 else None,
+                joinstyle="miter" if gid and "head" in gid else "round",
+            )
             ax.add_patch(a)
         elif kind == "segments":
             a = LineCollection(geo, colors=st["color"], linewidths=st["lw"], zorder=z)
             ax.add_collection(a, autolim=False)
         elif kind == "circle":
-            a = Circle(geo[0], geo[1], facecolor=st["face"], edgecolor=st["edge"],
-                       linewidth=st["lw"], zorder=z)
+            a = Circle(
+                geo[0],
+                geo[1],
+                facecolor=st["face"],
+                edgecolor=st["edge"],
+                linewidth=st["lw"],
+                zorder=z,
+            )
             ax.add_patch(a)
         else:  # pragma: no cover
             raise ValueError(kind)
@@ -62,9 +101,19 @@ def _paint(ax, sk: _Sketch, pad: float = 0.3) -> list:
         artists.append(a)
     for lab in sk.labels + sk.notes:
         cx, cy, w, h = lab.box
-        t = ax.text(cx, cy, lab.text, fontsize=lab.size, fontfamily=FONT,
-                    fontweight=lab.weight, color=lab.color, ha="center", va="center",
-                    parse_math=False, zorder=8)
+        t = ax.text(
+            cx,
+            cy,
+            lab.text,
+            fontsize=lab.size,
+            fontfamily=FONT,
+            fontweight=lab.weight,
+            color=lab.color,
+            ha="center",
+            va="center",
+            parse_math=False,
+            zorder=8,
+        )
         t.set_gid(unique(lab.gid))
         t.set_clip_on(False)
         artists.append(t)
@@ -138,18 +187,25 @@ def layout(sol, diagram: str = "all", scales=None, centre_prefix: str = "I", pap
     beside its circle diagram across an A4 landscape sheet)."""
     n = len(sol.scene.point_names)
     if n > MAX_DRAWN_POINTS:  # each label is placed clear of every line and label: minutes
-        raise PolygonMethodError(f"the scene has {n} points: a drawing labels at most "
-                                 f"{MAX_DRAWN_POINTS} (the page, `polygon-method page`, "
-                                 "shows any number)", file=sol.scene.file)
+        raise PolygonMethodError(
+            f"the scene has {n} points: a drawing labels at most "
+            f"{MAX_DRAWN_POINTS} (the page, `polygon-method page`, "
+            "shows any number)",
+            file=sol.scene.file,
+        )
     if diagram == "centres":
         return _centres_layout(sol, scales, centre_prefix, paper)
     if diagram == "forces":  # free bodies and force polygons (:mod:`.forces`)
         from .forces import force_layout
+
         return force_layout(sol, scales)[0]
     names = DIAGRAMS if diagram == "all" else (diagram,)
     if diagram not in DIAGRAMS + ("all",):
-        raise PolygonMethodError(f"unknown diagram {diagram!r}; use configuration, velocity, "
-                                 "acceleration, all, centres or forces", key="--diagram")
+        raise PolygonMethodError(
+            f"unknown diagram {diagram!r}; use configuration, velocity, "
+            "acceleration, all, centres or forces",
+            key="--diagram",
+        )
     given = dict(scales or {})
     stated = dict(zip(DIAGRAMS, diagram_scales(sol)))
     out = []
@@ -161,13 +217,17 @@ def layout(sol, diagram: str = "all", scales=None, centre_prefix: str = "I", pap
             raise PolygonMethodError(
                 f"the {name} diagram at {display_unit(s.text)} would be "
                 f"{max(w, h):.3g} cm across; use a coarser scale such as "
-                f"{display_unit(stated[name].text)}", key="--scale")
+                f"{display_unit(stated[name].text)}",
+                key="--scale",
+            )
         if s.per_cm > _SPECK * stated[name].per_cm:
             raise PolygonMethodError(
                 f"the {name} diagram at {display_unit(s.text)} would be a speck, "
                 f"{s.per_cm / stated[name].per_cm:.3g} times smaller than at "
                 f"{display_unit(stated[name].text)}, the scale of the step table; use a "
-                "finer scale", key="--scale")
+                "finer scale",
+                key="--scale",
+            )
         out.append((name, s, sk))
     return out
 
@@ -226,8 +286,11 @@ def _centres_layout(sol, scales=None, prefix="I", paper=None):
 
         def largest(scale, both=True):  # (centres in place, sketch, circle) or None
             for window in WINDOWS:
-                here = sk if (scale, window) == (s, WINDOWS[0]) else \
-                    centres_sketch(sol, scale, ic, window)
+                here = (
+                    sk
+                    if (scale, window) == (s, WINDOWS[0])
+                    else centres_sketch(sol, scale, ic, window)
+                )
                 size = _panel_size(here)
                 for c in (circle, small) if both else (circle,):
                     if pages(size, _panel_size(c)) == (1 if both else 2):
@@ -240,8 +303,9 @@ def _centres_layout(sol, scales=None, prefix="I", paper=None):
                 sk, circle = fine[1:] if fine else (sk, circle)
                 break
             rough = largest(coarser(s)) if fine is None or fine[0] < len(ic.order) else None
-            if rough is not None and (fine is None or (rough[0] > fine[0] and
-                                                       not rough[1].warnings)):
+            if rough is not None and (
+                fine is None or (rough[0] > fine[0] and not rough[1].warnings)
+            ):
                 s, sk, circle = coarser(s), rough[1], rough[2]
                 break
             if fine is None:
@@ -253,17 +317,22 @@ def _centres_layout(sol, scales=None, prefix="I", paper=None):
             sk = centres_sketch(sol, s, ic)
     w, h = _panel_size(sk)
     if max(w, h) > MAX_FIGURE_CM:
-        raise PolygonMethodError(f"the centres diagram at {display_unit(s.text)} would be "
-                                 f"{max(w, h):.3g} cm across; use a coarser scale",
-                                 key="--scale")
+        raise PolygonMethodError(
+            f"the centres diagram at {display_unit(s.text)} would be "
+            f"{max(w, h):.3g} cm across; use a coarser scale",
+            key="--scale",
+        )
     sk.warnings.extend(ic.warnings)
     return [("centres", s, sk), ("circle", None, circle)]
 
 
 def _in_place(sk) -> int:
     """How many centres a centres' sketch draws where they are (not as arrows)."""
-    return sum(1 for kind, _, st in sk.items
-               if kind == "circle" and (st["gid"] or "").startswith("centre-"))
+    return sum(
+        1
+        for kind, _, st in sk.items
+        if kind == "circle" and (st["gid"] or "").startswith("centre-")
+    )
 
 
 def make_figure(sol, diagram: str = "all", scales=None, centre_prefix: str = "I"):
@@ -300,8 +369,11 @@ def make_figure(sol, diagram: str = "all", scales=None, centre_prefix: str = "I"
 #: what makes a file the same byte for byte run to run: SVG ids from a fixed salt (else
 #: matplotlib draws them at random), and no date or software stamp in any format
 STABLE_RC = {"svg.hashsalt": "polygon-method"}
-STABLE_METADATA = {"svg": {"Date": None}, "png": {"Software": None},
-                   "pdf": {"CreationDate": None, "ModDate": None, "Producer": None}}
+STABLE_METADATA = {
+    "svg": {"Date": None},
+    "png": {"Software": None},
+    "pdf": {"CreationDate": None, "ModDate": None, "Producer": None},
+}
 
 
 def figure_data(fig, fmt: str, **kw):
@@ -317,12 +389,16 @@ def figure_data(fig, fmt: str, **kw):
 
 
 def _rc():
-    return {**STABLE_RC, "svg.fonttype": "path", "font.family": FONT,
-            "path.simplify": False, "svg.image_inline": True}
+    return {
+        **STABLE_RC,
+        "svg.fonttype": "path",
+        "font.family": FONT,
+        "path.simplify": False,
+        "svg.image_inline": True,
+    }
 
 
-def render(sol, fmt: str = "svg", diagram: str = "all", scales=None,
-           centre_prefix: str = "I"):
+def render(sol, fmt: str = "svg", diagram: str = "all", scales=None, centre_prefix: str = "I"):
     """The sheet as SVG text (deterministic: fixed hash salt, no date) or PNG/PDF bytes.
 
     Returns ``(data, {diagram: Scale}, warnings)``."""
@@ -338,9 +414,13 @@ def render(sol, fmt: str = "svg", diagram: str = "all", scales=None,
 
 # --------------------------------------------------------------------------- on paper
 
-_WHAT = {"configuration": "configuration diagram", "velocity": "velocity polygon",
-         "acceleration": "acceleration polygon", "centres": "centres diagram",
-         "circle": "circle diagram"}
+_WHAT = {
+    "configuration": "configuration diagram",
+    "velocity": "velocity polygon",
+    "acceleration": "acceleration polygon",
+    "centres": "centres diagram",
+    "circle": "circle diagram",
+}
 
 
 def _what(name: str) -> str:
@@ -352,8 +432,9 @@ def _what(name: str) -> str:
     return _WHAT[name]
 
 
-def sheet_pages(sol, diagram: str = "all", scales=None, centre_prefix: str = "I",
-                paper: str = "A4"):
+def sheet_pages(
+    sol, diagram: str = "all", scales=None, centre_prefix: str = "I", paper: str = "A4"
+):
     """The panels of a sheet (:func:`layout`) and the pages of ``paper`` they go on
     (:func:`.paper.paginate`): ``(panels, sizes, pages)``. A panel larger than the paper
     at its scale is one line naming the diagram, its scale and what to do (a larger paper,
@@ -367,15 +448,21 @@ def sheet_pages(sol, diagram: str = "all", scales=None, centre_prefix: str = "I"
             continue
         rw, rh = room(paper, "portrait")
         what = f"the {_what(name)}" + (f" at {display_unit(s.text)}" if s is not None else "")
-        bigger = sorted((p for p in PAPER_NAMES if p != paper and fits(size, p)),
-                        key=lambda p: PAPERS[p][0] * PAPERS[p][1])
-        advice = f"draw it on {bigger[0]} (--paper {bigger[0]}) or at a coarser --scale" \
-            if bigger else "draw it at a coarser --scale"
+        bigger = sorted(
+            (p for p in PAPER_NAMES if p != paper and fits(size, p)),
+            key=lambda p: PAPERS[p][0] * PAPERS[p][1],
+        )
+        advice = (
+            f"draw it on {bigger[0]} (--paper {bigger[0]}) or at a coarser --scale"
+            if bigger
+            else "draw it at a coarser --scale"
+        )
         asked = name in given or KIND_OF_DIAGRAM.get(name) in given or name == "centres"
         raise PolygonMethodError(
             f"{what} is {size[0]:.3g} x {size[1]:.3g} cm: more than {paper} holds inside its "
             f"margins ({rw:.3g} x {rh:.3g} cm, either way round); {advice}",
-            key="--scale" if asked and given else "--paper")
+            key="--scale" if asked and given else "--paper",
+        )
     pages = paginate(sizes, paper, panels=[name for name, _, _ in panels])
     return panels, sizes, pages
 
@@ -396,14 +483,28 @@ def page_figure(panels, sizes, page):
         ax.set_gid(f"panel-{name}")
         _paint(ax, sk)
         warnings += [f"{name}: {m}" for m in sk.warnings]
-    t = fig.text(PAGE_MARGIN / W, (PAGE_MARGIN + FOOTER / 2) / H, page.footer(),
-                 fontsize=SMALL_PT, fontfamily=FONT, ha="left", va="center", parse_math=False)
+    t = fig.text(
+        PAGE_MARGIN / W,
+        (PAGE_MARGIN + FOOTER / 2) / H,
+        page.footer(),
+        fontsize=SMALL_PT,
+        fontfamily=FONT,
+        ha="left",
+        va="center",
+        parse_math=False,
+    )
     t.set_gid("note-sheet-paper")
     return fig, warnings
 
 
-def render_pages(sol, fmt: str = "svg", diagram: str = "all", scales=None,
-                 centre_prefix: str = "I", paper: str = "A4"):
+def render_pages(
+    sol,
+    fmt: str = "svg",
+    diagram: str = "all",
+    scales=None,
+    centre_prefix: str = "I",
+    paper: str = "A4",
+):
     """The sheet on ``paper`` (A4, A3, letter; portrait or landscape, whichever holds the
     panels): a PDF of as many pages as it needs, or one SVG text (byte-stable) or PNG per
     page. Returns ``(datas, {diagram: Scale}, warnings, pages)``: ``datas`` has one item
@@ -418,8 +519,7 @@ def render_pages(sol, fmt: str = "svg", diagram: str = "all", scales=None,
     if diagram == "forces":  # one scale for the free bodies, one for the polygons
         used = {}
         for name, s, _ in panels:
-            used.setdefault("free bodies" if name.startswith("free-body") else
-                            "force polygons", s)
+            used.setdefault("free bodies" if name.startswith("free-body") else "force polygons", s)
         return datas, used, warnings, pages
     return datas, {name: s for name, s, _ in panels if s is not None}, warnings, pages
 
@@ -437,17 +537,18 @@ def write_pages(panels, sizes, pages, fmt: str = "svg"):
             warnings += w
         if fmt == "pdf":
             from matplotlib.backends.backend_pdf import PdfPages
+
             buf = io.BytesIO()
             with PdfPages(buf, metadata=STABLE_METADATA["pdf"]) as pdf:
                 for fig in figures:
                     pdf.savefig(fig)
             return [buf.getvalue()], warnings
-        datas = [figure_data(fig, fmt, **({"dpi": PNG_DPI} if fmt == "png" else {}))
-                 for fig in figures]
+        datas = [
+            figure_data(fig, fmt, **({"dpi": PNG_DPI} if fmt == "png" else {})) for fig in figures
+        ]
         return datas, warnings
 
 
 def svg_string(sol, diagram: str = "all", scales=None) -> str:
     """The three diagrams side by side as SVG text (``Solution._repr_svg_``)."""
     return render(sol, "svg", diagram, scales)[0]
-

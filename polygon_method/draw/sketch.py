@@ -9,8 +9,20 @@ import math
 from dataclasses import dataclass, field
 
 from ..polygons.scales import Scale, display_unit
-from .style import (CLEAR, FONT, HEAD_HALF, HEAD_LEN, IMAGE_FACE, LABEL_PT, LINE_STYLE,
-                     NOTE_PT, PT_PER_CM, SMALL_PT, STYLE, TITLE_PT)
+from .style import (
+    CLEAR,
+    FONT,
+    HEAD_HALF,
+    HEAD_LEN,
+    IMAGE_FACE,
+    LABEL_PT,
+    LINE_STYLE,
+    NOTE_PT,
+    PT_PER_CM,
+    SMALL_PT,
+    STYLE,
+    TITLE_PT,
+)
 
 # --------------------------------------------------------------------------- text sizes
 
@@ -25,13 +37,25 @@ def _text_size(text: str, size: float, weight: str = "normal"):
     if got is None:
         from matplotlib.backends.backend_svg import RendererSVG
         from matplotlib.text import Text
+
         if "renderer" not in _MEASURE:
             from matplotlib.figure import Figure
+
             fig = Figure(dpi=72)
             _MEASURE["renderer"] = (RendererSVG(100, 100, io.StringIO(), image_dpi=72), fig)
         renderer, fig = _MEASURE["renderer"]
-        t = Text(0, 0, text, fontsize=size, fontfamily=FONT, fontweight=weight,
-                 ha="center", va="center", parse_math=False, figure=fig)
+        t = Text(
+            0,
+            0,
+            text,
+            fontsize=size,
+            fontfamily=FONT,
+            fontweight=weight,
+            ha="center",
+            va="center",
+            parse_math=False,
+            figure=fig,
+        )
         bb = t.get_window_extent(renderer)
         got = (bb.width / PT_PER_CM, bb.height / PT_PER_CM)
         _MEASURE[key] = got
@@ -80,25 +104,30 @@ class _Sketch:
     solid: list = field(default_factory=list)
 
     # -- primitives (coordinates in cm)
-    def line(self, pts, gid=None, color="#000000", lw=0.8, dashes=None, z=3, obstacle=True,
-             hint=True):
+    def line(
+        self, pts, gid=None, color="#000000", lw=0.8, dashes=None, z=3, obstacle=True, hint=True
+    ):
         pts = [tuple(map(float, p)) for p in pts]
         self.items.append(("line", pts, dict(color=color, lw=lw, dashes=dashes, z=z, gid=gid)))
         self._bound(pts)
         if obstacle and len(pts) > 1:
             from shapely.geometry import LineString
+
             self.obstacles.append(LineString(pts).buffer(lw / PT_PER_CM / 2))
         if hint:
             self.hints.extend(zip(pts[:-1], pts[1:]))
 
-    def polygon(self, pts, gid=None, face="none", edge="#000000", lw=0.8, z=2, alpha=1.0,
-                obstacle="area"):
+    def polygon(
+        self, pts, gid=None, face="none", edge="#000000", lw=0.8, z=2, alpha=1.0, obstacle="area"
+    ):
         pts = [tuple(map(float, p)) for p in pts]
-        self.items.append(("polygon", pts, dict(face=face, edge=edge, lw=lw, z=z, gid=gid,
-                                                 alpha=alpha)))
+        self.items.append(
+            ("polygon", pts, dict(face=face, edge=edge, lw=lw, z=z, gid=gid, alpha=alpha))
+        )
         self._bound(pts)
         if obstacle:
             from shapely.geometry import LinearRing, Polygon
+
             g = Polygon(pts) if obstacle == "area" else LinearRing(pts)
             self.obstacles.append(g.buffer(lw / PT_PER_CM / 2) if obstacle == "edge" else g)
 
@@ -108,14 +137,21 @@ class _Sketch:
         for s in segs:
             self._bound(s)
 
-    def circle(self, center, r, gid=None, face="#ffffff", edge="#000000", lw=0.8, z=5,
-               obstacle="area"):
-        self.items.append(("circle", (tuple(map(float, center)), float(r)),
-                           dict(face=face, edge=edge, lw=lw, z=z, gid=gid)))
+    def circle(
+        self, center, r, gid=None, face="#ffffff", edge="#000000", lw=0.8, z=5, obstacle="area"
+    ):
+        self.items.append(
+            (
+                "circle",
+                (tuple(map(float, center)), float(r)),
+                dict(face=face, edge=edge, lw=lw, z=z, gid=gid),
+            )
+        )
         x, y = center
         self._bound([(x - r, y - r), (x + r, y + r)])
         if obstacle:
             from shapely.geometry import Point
+
             g = Point(center).buffer(r + lw / PT_PER_CM / 2, quad_segs=8)
             if obstacle == "edge":
                 g = g.exterior.buffer(lw / PT_PER_CM / 2)
@@ -132,26 +168,60 @@ class _Sketch:
         hw = HEAD_HALF * hl / HEAD_LEN
         base = (end[0] - hl * ux, end[1] - hl * uy)
         neck = (end[0] - 0.7 * hl * ux, end[1] - 0.7 * hl * uy)
-        self.line([start, neck], gid=f"{gid}-shaft", color=color, lw=lw, dashes=dashes, z=z,
-                  hint=False)
+        self.line(
+            [start, neck], gid=f"{gid}-shaft", color=color, lw=lw, dashes=dashes, z=z, hint=False
+        )
         self.hints.append((tuple(start), tuple(end)))
-        self.polygon([end, (base[0] - hw * uy, base[1] + hw * ux),
-                      (base[0] + hw * uy, base[1] - hw * ux)], gid=f"{gid}-head", face=color,
-                     edge=color, lw=0.4, z=z)
+        self.polygon(
+            [end, (base[0] - hw * uy, base[1] + hw * ux), (base[0] + hw * uy, base[1] - hw * ux)],
+            gid=f"{gid}-head",
+            face=color,
+            edge=color,
+            lw=0.4,
+            z=z,
+        )
 
-    def label(self, text, anchors, size=LABEL_PT, gid=None, color="#000000", weight="normal",
-              point=False, leader=False, apart=0.0):
-        self.labels.append(_Label(text, [tuple(map(float, a)) for a in anchors], size,
-                                  gid or f"label-{len(self.labels)}", color, weight,
-                                  point=point, leader=leader or point, apart=apart))
+    def label(
+        self,
+        text,
+        anchors,
+        size=LABEL_PT,
+        gid=None,
+        color="#000000",
+        weight="normal",
+        point=False,
+        leader=False,
+        apart=0.0,
+    ):
+        self.labels.append(
+            _Label(
+                text,
+                [tuple(map(float, a)) for a in anchors],
+                size,
+                gid or f"label-{len(self.labels)}",
+                color,
+                weight,
+                point=point,
+                leader=leader or point,
+                apart=apart,
+            )
+        )
 
-    def note(self, x, y, text, size=NOTE_PT, ha="left", gid=None, weight="normal",
-             color="#000000"):
+    def note(self, x, y, text, size=NOTE_PT, ha="left", gid=None, weight="normal", color="#000000"):
         """Fixed text, ``(x, y)`` its left (or centre) and vertical middle."""
         w, h = _text_size(text, size, weight)
         cx = x + w / 2 if ha == "left" else x
-        self.notes.append(_Label(text, [(cx, y)], size, gid or f"note-{len(self.notes)}",
-                                 color, weight, (cx, y, w, h)))
+        self.notes.append(
+            _Label(
+                text,
+                [(cx, y)],
+                size,
+                gid or f"note-{len(self.notes)}",
+                color,
+                weight,
+                (cx, y, w, h),
+            )
+        )
         return w, h
 
     def _bound(self, pts):
@@ -166,6 +236,7 @@ class _Sketch:
         directions, the ones facing away from the lines at the anchor first)."""
         from shapely import STRtree, box
         from shapely.geometry import Point
+
         tree = STRtree(self.obstacles) if self.obstacles else None
         placed, named = [], []  # every box placed; the boxes of the points' labels
         unplaced = []  # labels that overlap a line: one warning for them all
@@ -174,39 +245,54 @@ class _Sketch:
             w, h = _text_size(lab.text, lab.size, lab.weight)
             # a label kept apart from the points' labels (a line's mark, so that "perp EF"
             # is not read with e' beside it) first tries to be, then settles for less
-            for apart in ((lab.apart, 0.0) if lab.apart else (0.0,)):
-                best, clear_only, clashes = self._place(lab, w, h, tree, placed, named,
-                                                        spots, apart)
+            for apart in (lab.apart, 0.0) if lab.apart else (0.0,):
+                best, clear_only, clashes = self._place(
+                    lab, w, h, tree, placed, named, spots, apart
+                )
                 if best is not None:
                     break
             if best is None and clear_only is not None:
                 best = (*clear_only[1], clear_only[2])
             if best is None:  # the least overlap
-                best = (*min(clashes, key=lambda c: (
-                    sum(self.obstacles[i].intersection(c[0]).area for i in c[1])
-                    + sum(p.intersection(c[0]).area for p in c[2]) * 10))[3], None)
+                best = (
+                    *min(
+                        clashes,
+                        key=lambda c: (
+                            sum(self.obstacles[i].intersection(c[0]).area for i in c[1])
+                            + sum(p.intersection(c[0]).area for p in c[2]) * 10
+                        ),
+                    )[3],
+                    None,
+                )
                 unplaced.append(repr(lab.text))
             lab.box = (best[0], best[1], w, h)
-            placed.append(box(best[0] - w / 2, best[1] - h / 2, best[0] + w / 2,
-                              best[1] + h / 2))
+            placed.append(box(best[0] - w / 2, best[1] - h / 2, best[0] + w / 2, best[1] + h / 2))
             if lab.point:
                 named.append(placed[-1])
             if best[2] is not None:  # a leader from a label set off to its point
                 placed.append(best[2].buffer(self.leader_clear))
-                self.items.append(("line", list(best[2].coords),
-                                   dict(color="#555555", lw=0.4, dashes=None, z=7,
-                                        gid=f"leader-{lab.gid}")))
+                self.items.append(
+                    (
+                        "line",
+                        list(best[2].coords),
+                        dict(color="#555555", lw=0.4, dashes=None, z=7, gid=f"leader-{lab.gid}"),
+                    )
+                )
         if unplaced:
-            shown = ", ".join(unplaced[:6]) + (f" and {len(unplaced) - 6} more"
-                                               if len(unplaced) > 6 else "")
-            self.warnings.append(f"label{'s' if len(unplaced) > 1 else ''} {shown} could not "
-                                 "be placed clear of the lines")
+            shown = ", ".join(unplaced[:6]) + (
+                f" and {len(unplaced) - 6} more" if len(unplaced) > 6 else ""
+            )
+            self.warnings.append(
+                f"label{'s' if len(unplaced) > 1 else ''} {shown} could not "
+                "be placed clear of the lines"
+            )
 
     def _place(self, lab, w, h, tree, placed, named, spots, apart):
         """(best (cx, cy, leader) or None, the best position only clear of lines, the
         clashing positions) of one label: rings of growing distance around its anchors."""
         from shapely import box
         from shapely.geometry import Point
+
         best, clear_only, clashes = None, None, []
         for ring, gap in enumerate(self.rings):
             options = []
@@ -215,15 +301,18 @@ class _Sketch:
                 for k in range(16):
                     th = math.pi / 4 + k * math.pi / 8
                     c, s = math.cos(th), math.sin(th)
-                    edge = min(w / 2 / abs(c) if abs(c) > 1e-12 else math.inf,
-                               h / 2 / abs(s) if abs(s) > 1e-12 else math.inf)
+                    edge = min(
+                        w / 2 / abs(c) if abs(c) > 1e-12 else math.inf,
+                        h / 2 / abs(s) if abs(s) > 1e-12 else math.inf,
+                    )
                     cx, cy = ax + (gap + edge) * c, ay + (gap + edge) * s
                     clearance = min((_angle_between(th, a) for a in away), default=math.pi)
                     options.append((-round(clearance, 6), ai, k, cx, cy))
             options.sort()
             for _, ai, _, cx, cy in options:
-                b = box(cx - w / 2 - CLEAR, cy - h / 2 - CLEAR, cx + w / 2 + CLEAR,
-                        cy + h / 2 + CLEAR)
+                b = box(
+                    cx - w / 2 - CLEAR, cy - h / 2 - CLEAR, cx + w / 2 + CLEAR, cy + h / 2 + CLEAR
+                )
                 hits = list(tree.query(b, predicate="intersects")) if tree else []
                 crowd = [p for p in placed if p.intersects(b)]
                 if hits or crowd:
@@ -234,8 +323,9 @@ class _Sketch:
                 leader = None
                 if lab.leader and gap > 0.5:  # far from its point: a leader line to it
                     leader = _leader(lab.anchors[ai], (cx, cy, w, h))
-                    if any(p.intersects(leader) for p in placed) or \
-                            _crosses(leader, self.solid, lab.anchors[ai]):
+                    if any(p.intersects(leader) for p in placed) or _crosses(
+                        leader, self.solid, lab.anchors[ai]
+                    ):
                         clashes.append((b, [], [], (cx, cy)))
                         continue
                 if lab.point:  # nearer to its own point than to any other?
@@ -245,8 +335,10 @@ class _Sketch:
                     margin = min(others, default=math.inf) - own
                     # by 0.8 mm, or (a point closer than that to another, where no place
                     # can) by nine tenths of what the other point's distance allows
-                    nearest = min((q.distance(here) for q in spots
-                                   if q.distance(here) > 1e-9), default=math.inf)
+                    nearest = min(
+                        (q.distance(here) for q in spots if q.distance(here) > 1e-9),
+                        default=math.inf,
+                    )
                     if margin < min(POINT_MARGIN, 0.9 * nearest):
                         if clear_only is None or margin > clear_only[0] + 1e-9:
                             clear_only = (margin, (cx, cy), leader)
@@ -285,8 +377,12 @@ class _Sketch:
                 boxes.append((cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2))
         if not boxes:
             return (0.0, 0.0, 0.0, 0.0)
-        return (min(b[0] for b in boxes), min(b[1] for b in boxes),
-                max(b[2] for b in boxes), max(b[3] for b in boxes))
+        return (
+            min(b[0] for b in boxes),
+            min(b[1] for b in boxes),
+            max(b[2] for b in boxes),
+            max(b[3] for b in boxes),
+        )
 
     def note_box(self):
         xs, ys = [], []
@@ -301,15 +397,16 @@ def _leader(anchor, placed_box):
     """A thin line from a point towards its label's box, stopping short of both."""
     from shapely.geometry import LineString, Point, box
     from shapely.ops import nearest_points
+
     cx, cy, w, h = placed_box
-    near = nearest_points(box(cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2),
-                          Point(anchor))[0]
+    near = nearest_points(box(cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2), Point(anchor))[0]
     dx, dy = near.x - anchor[0], near.y - anchor[1]
     n = math.hypot(dx, dy)
     ux, uy = dx / n, dy / n
     a, b = 0.1, n - 0.06
-    return LineString([(anchor[0] + a * ux, anchor[1] + a * uy),
-                       (anchor[0] + b * ux, anchor[1] + b * uy)])
+    return LineString(
+        [(anchor[0] + a * ux, anchor[1] + a * uy), (anchor[0] + b * ux, anchor[1] + b * uy)]
+    )
 
 
 def _crosses(leader, solid, anchor):
@@ -318,6 +415,7 @@ def _crosses(leader, solid, anchor):
     if not solid:
         return False
     from shapely.geometry import Point
+
     here = Point(anchor).buffer(0.15)
     return any(g.intersects(leader) and not g.intersects(here) for g in solid)
 
@@ -352,24 +450,48 @@ def _header(sk: _Sketch, tag: str, title: str, scale: Scale, lines=(), legend=()
     def bar(y):
         pts = [(x0 + 0.1, y), (x0 + 0.1 + n, y)]
         sk.line(pts, gid=f"{tag}-scale-bar", lw=1.2, obstacle=False, hint=False)
-        sk.segments([((x0 + 0.1 + i, y - 0.08), (x0 + 0.1 + i, y + 0.08))
-                     for i in range(n + 1)], gid=f"{tag}-scale-bar-ticks", lw=0.6)
+        sk.segments(
+            [((x0 + 0.1 + i, y - 0.08), (x0 + 0.1 + i, y + 0.08)) for i in range(n + 1)],
+            gid=f"{tag}-scale-bar-ticks",
+            lw=0.6,
+        )
         sk.note(x0 + 0.1, y - 0.3, "0", SMALL_PT, ha="center", gid=f"note-{tag}-bar-0")
         sk.note(x0 + 0.1 + n, y - 0.3, end_text, SMALL_PT, ha="center", gid=f"note-{tag}-bar-end")
-        sk.note(x0 + 0.1 + n + 0.2 + _text_size(end_text, SMALL_PT)[0] / 2, y, f"({n} cm)",
-                SMALL_PT, gid=f"note-{tag}-bar-cm")
+        sk.note(
+            x0 + 0.1 + n + 0.2 + _text_size(end_text, SMALL_PT)[0] / 2,
+            y,
+            f"({n} cm)",
+            SMALL_PT,
+            gid=f"note-{tag}-bar-cm",
+        )
+
     rows.append((0.65, lambda y: bar(y + 0.12)))
     for i, (kind, label) in enumerate(legend):
+
         def entry(y, kind=kind, label=label, i=i):
             color, lw, dashes = STYLE.get(kind, LINE_STYLE) if kind != "line" else LINE_STYLE
             if kind == "image":
-                sk.polygon([(x0 + 0.1, y - 0.1), (x0 + 1.1, y - 0.1), (x0 + 0.6, y + 0.12)],
-                           gid=f"{tag}-legend-{i}", face=IMAGE_FACE, edge=IMAGE_FACE, lw=0.4,
-                           alpha=0.5, obstacle=None)
+                sk.polygon(
+                    [(x0 + 0.1, y - 0.1), (x0 + 1.1, y - 0.1), (x0 + 0.6, y + 0.12)],
+                    gid=f"{tag}-legend-{i}",
+                    face=IMAGE_FACE,
+                    edge=IMAGE_FACE,
+                    lw=0.4,
+                    alpha=0.5,
+                    obstacle=None,
+                )
             else:
-                sk.line([(x0 + 0.1, y), (x0 + 1.1, y)], gid=f"{tag}-legend-{i}", color=color, lw=lw,
-                        dashes=dashes, obstacle=False, hint=False)
+                sk.line(
+                    [(x0 + 0.1, y), (x0 + 1.1, y)],
+                    gid=f"{tag}-legend-{i}",
+                    color=color,
+                    lw=lw,
+                    dashes=dashes,
+                    obstacle=False,
+                    hint=False,
+                )
             sk.note(x0 + 1.3, y, label, SMALL_PT, gid=f"note-{tag}-legend-{i}")
+
         rows.append((0.36, entry))
     total = sum(h + 0.12 for h, _ in rows)
     y = y1 + 0.35 + total
@@ -381,6 +503,5 @@ def _header(sk: _Sketch, tag: str, title: str, scale: Scale, lines=(), legend=()
 
 def _fmt_number(scale: Scale, n: int) -> str:
     from decimal import Decimal
+
     return format((Decimal(scale.value) * n).normalize(), "f")
-
-

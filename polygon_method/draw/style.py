@@ -35,9 +35,14 @@ STYLE = {
     "coriolis": ("#1a9641", 2.2, None),
 }
 LINE_STYLE = ("#777777", 0.6, (4.0, 2.5))  # construction (direction) lines
-LEGEND_NAMES = {"absolute": "total (from the pole)", "relative": "relative (between images)",
-                "centripetal": "centripetal component", "tangential": "tangential component",
-                "coriolis": "Coriolis component", "sliding": "sliding component"}
+LEGEND_NAMES = {
+    "absolute": "total (from the pole)",
+    "relative": "relative (between images)",
+    "centripetal": "centripetal component",
+    "tangential": "tangential component",
+    "coriolis": "Coriolis component",
+    "sliding": "sliding component",
+}
 #: line styles of the forces by kind (colour, width in pt, dashes or None): free bodies,
 #: force polygons, the page's inertia forces
 FORCE_STYLE = {

@@ -8,14 +8,29 @@ import math
 
 from .style import BAR, BLOCK_CLEAR, BLOCK_MIN, JOINT_R, MARK_PT, PIN_ZONE
 
-__all__ = ["SLOT_W", "ARC_CLEAR", "ARC_GAP", "step_shape", "deg", "yoke_bar", "slot_half",
-           "block_size", "rect", "fixed_guide", "ground_symbol", "crank_arc",
-           "crank_angle_shapes", "crank_angle", "crank_angle_label"]
+__all__ = [
+    "SLOT_W",
+    "ARC_CLEAR",
+    "ARC_GAP",
+    "step_shape",
+    "deg",
+    "yoke_bar",
+    "slot_half",
+    "block_size",
+    "rect",
+    "fixed_guide",
+    "ground_symbol",
+    "crank_arc",
+    "crank_angle_shapes",
+    "crank_angle",
+    "crank_angle_label",
+]
 
 #: the least distance (cm) of the crank-angle arc from another point
 ARC_CLEAR = 0.25
 #: the least gap (cm) between the crank-angle arc and a fixed pivot's bracket
 ARC_GAP = 0.1
+
 
 def step_shape(sk, shape, s, tag):
     """One of a step's shapes (``Step.shapes``, metres) drawn at ``s`` metres per cm;
@@ -23,10 +38,13 @@ def step_shape(sk, shape, s, tag):
     kind = shape[0]
     if kind == "circle":
         (cx, cy), r = (shape[1][0] / s, shape[1][1] / s), shape[2] / s
-        pts = [(cx + r * math.cos(2 * math.pi * k / 96), cy + r * math.sin(2 * math.pi * k / 96))
-               for k in range(97)]
-        sk.line(pts, gid=f"pitch-{tag}", color="#333333", lw=0.7, dashes=(6, 2, 1, 2), z=1,
-                hint=False)
+        pts = [
+            (cx + r * math.cos(2 * math.pi * k / 96), cy + r * math.sin(2 * math.pi * k / 96))
+            for k in range(97)
+        ]
+        sk.line(
+            pts, gid=f"pitch-{tag}", color="#333333", lw=0.7, dashes=(6, 2, 1, 2), z=1, hint=False
+        )
         return None
     if kind == "ground line":
         (x, y), (ux, uy), (nx, ny) = (shape[1][0] / s, shape[1][1] / s), shape[2], shape[3]
@@ -54,6 +72,7 @@ def yoke_bar(sc, sl, P):
     """The yoke of a Scotch yoke: a bar through its block Y along its slot, reaching past
     the pin's block at P on both sides (the slot's length over the pin's travel)."""
     from shapely.geometry import MultiPoint
+
     (yx, yy), (px, py), (dx, dy) = P[sl.yoke], P[sl.point], sl.direction
     t = (px - yx) * dx + (py - yy) * dy
     reach = max(abs(t), 1.0) + block_size(sc, sl.point, P)
@@ -93,8 +112,10 @@ def rect(c, u, length, width):
     ux, uy = u
     nx, ny = -uy, ux
     a, b = length / 2, width / 2
-    return [(c[0] + sx * a * ux + sy * b * nx, c[1] + sx * a * uy + sy * b * ny)
-            for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+    return [
+        (c[0] + sx * a * ux + sy * b * nx, c[1] + sx * a * uy + sy * b * ny)
+        for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))
+    ]
 
 
 def fixed_guide(sk, sc, sl, P, s, away=None):
@@ -106,10 +127,15 @@ def fixed_guide(sk, sc, sl, P, s, away=None):
     tx, ty = sl.through[0] / s, sl.through[1] / s
     t_through = (tx - X[0]) * ux + (ty - X[1]) * uy
     lo, hi = min(-1.8, t_through - 0.5), max(1.8, t_through + 0.5)
-    sk.line([(X[0] + lo * ux, X[1] + lo * uy), (X[0] + hi * ux, X[1] + hi * uy)],
-            gid=f"stroke-{sl.point}", color="#555555", lw=0.5, dashes=(6, 2, 1, 2), z=1)
-    rod = away or next((P[lk.other(sl.point)] for lk in sc.links if sl.point in lk.points),
-                       None)
+    sk.line(
+        [(X[0] + lo * ux, X[1] + lo * uy), (X[0] + hi * ux, X[1] + hi * uy)],
+        gid=f"stroke-{sl.point}",
+        color="#555555",
+        lw=0.5,
+        dashes=(6, 2, 1, 2),
+        z=1,
+    )
+    rod = away or next((P[lk.other(sl.point)] for lk in sc.links if sl.point in lk.points), None)
     side = 1.0
     if rod is not None and ((rod[0] - X[0]) * nx + (rod[1] - X[1]) * ny) > 0:
         side = -1.0
@@ -127,9 +153,16 @@ def fixed_guide(sk, sc, sl, P, s, away=None):
     far = (a[0] + side * 0.2 * nx, a[1] + side * 0.2 * ny)
     far2 = (b[0] + side * 0.2 * nx, b[1] + side * 0.2 * ny)
     from shapely.geometry import Polygon
+
     sk.obstacles.append(Polygon([a, b, far2, far]).buffer(0.02))
-    sk.bounds.append((min(a[0], far[0], b[0], far2[0]), min(a[1], far[1], b[1], far2[1]),
-                      max(a[0], far[0], b[0], far2[0]), max(a[1], far[1], b[1], far2[1])))
+    sk.bounds.append(
+        (
+            min(a[0], far[0], b[0], far2[0]),
+            min(a[1], far[1], b[1], far2[1]),
+            max(a[0], far[0], b[0], far2[0]),
+            max(a[1], far[1], b[1], far2[1]),
+        )
+    )
 
 
 def ground_symbol(sk, name, g, near, solid, soft=()):
@@ -142,27 +175,67 @@ def ground_symbol(sk, name, g, near, solid, soft=()):
     pin's zone (a shape)."""
     from shapely.geometry import LineString, MultiLineString, Point, Polygon
     from shapely.ops import unary_union
+
     bodies = unary_union(solid) if solid else None
     zone = Point(g).buffer(PIN_ZONE, quad_segs=8)
     spots = [Point(p).buffer(0.12, quad_segs=4) for p in near]
     d, half, wide = 0.5, 0.3, 0.42
     best, best_cost = -math.pi / 2, (math.inf, math.inf)
-    for k in (0, -1, 1, -2, 2, -3, 3, -4, 4, -5, 5, -6, 6, -7, 7, -8, 8, -9, 9, -10, 10, -11,
-              11, 12):
+    for k in (
+        0,
+        -1,
+        1,
+        -2,
+        2,
+        -3,
+        3,
+        -4,
+        4,
+        -5,
+        5,
+        -6,
+        6,
+        -7,
+        7,
+        -8,
+        8,
+        -9,
+        9,
+        -10,
+        10,
+        -11,
+        11,
+        12,
+    ):
         th = -math.pi / 2 + k * math.pi / 12
         dx, dy = math.cos(th), math.sin(th)
         nx, ny = -dy, dx
         base = (g[0] + d * dx, g[1] + d * dy)
         far = (base[0] + 0.2 * dx, base[1] + 0.2 * dy)
-        foot = Polygon([g, (base[0] + half * nx, base[1] + half * ny),
-                        (base[0] - half * nx, base[1] - half * ny)]).union(
-            Polygon([(base[0] + wide * nx, base[1] + wide * ny),
-                     (base[0] - wide * nx, base[1] - wide * ny),
-                     (far[0] - wide * nx, far[1] - wide * ny),
-                     (far[0] + wide * nx, far[1] + wide * ny)])).union(
-            LineString([base, far]).buffer(0.01)).difference(zone)
-        hard = (foot.intersection(bodies).area if bodies is not None else 0.0) + \
-            sum(foot.intersection(q).area for q in spots)
+        foot = (
+            Polygon(
+                [
+                    g,
+                    (base[0] + half * nx, base[1] + half * ny),
+                    (base[0] - half * nx, base[1] - half * ny),
+                ]
+            )
+            .union(
+                Polygon(
+                    [
+                        (base[0] + wide * nx, base[1] + wide * ny),
+                        (base[0] - wide * nx, base[1] - wide * ny),
+                        (far[0] - wide * nx, far[1] - wide * ny),
+                        (far[0] + wide * nx, far[1] + wide * ny),
+                    ]
+                )
+            )
+            .union(LineString([base, far]).buffer(0.01))
+            .difference(zone)
+        )
+        hard = (foot.intersection(bodies).area if bodies is not None else 0.0) + sum(
+            foot.intersection(q).area for q in spots
+        )
         cost = (round(hard, 9), round(sum(foot.intersection(q).area for q in soft), 9))
         if cost == (0.0, 0.0):
             best = th
@@ -173,12 +246,18 @@ def ground_symbol(sk, name, g, near, solid, soft=()):
     nx, ny = -dy, dx
     d, half, wide = 0.5, 0.3, 0.42
     base = (g[0] + d * dx, g[1] + d * dy)
-    tri = [g, (base[0] + half * nx, base[1] + half * ny),
-           (base[0] - half * nx, base[1] - half * ny)]
+    tri = [
+        g,
+        (base[0] + half * nx, base[1] + half * ny),
+        (base[0] - half * nx, base[1] - half * ny),
+    ]
     sk.polygon(tri, gid=f"ground-{name}", face="#ffffff", edge="#000000", lw=0.8, z=4)
-    sk.line([(base[0] + wide * nx, base[1] + wide * ny),
-             (base[0] - wide * nx, base[1] - wide * ny)], gid=f"ground-{name}-base", lw=1.0,
-            z=4)
+    sk.line(
+        [(base[0] + wide * nx, base[1] + wide * ny), (base[0] - wide * nx, base[1] - wide * ny)],
+        gid=f"ground-{name}-base",
+        lw=1.0,
+        z=4,
+    )
     hatch = []
     for i in range(6):
         t = -wide + 0.17 + i * (2 * wide - 0.17) / 5
@@ -186,17 +265,32 @@ def ground_symbol(sk, name, g, near, solid, soft=()):
         hatch.append((p, (p[0] + 0.17 * dx - 0.17 * nx, p[1] + 0.17 * dy - 0.17 * ny)))
     sk.segments(hatch, gid=f"ground-{name}-hatch", lw=0.5, z=4)
     far = (base[0] + 0.2 * dx, base[1] + 0.2 * dy)
-    sk.obstacles.append(Polygon([(base[0] + (wide + 0.2) * nx, base[1] + (wide + 0.2) * ny),
-                                 (base[0] - (wide + 0.2) * nx, base[1] - (wide + 0.2) * ny),
-                                 (far[0] - (wide + 0.2) * nx, far[1] - (wide + 0.2) * ny),
-                                 (far[0] + (wide + 0.2) * nx, far[1] + (wide + 0.2) * ny)]))
+    sk.obstacles.append(
+        Polygon(
+            [
+                (base[0] + (wide + 0.2) * nx, base[1] + (wide + 0.2) * ny),
+                (base[0] - (wide + 0.2) * nx, base[1] - (wide + 0.2) * ny),
+                (far[0] - (wide + 0.2) * nx, far[1] - (wide + 0.2) * ny),
+                (far[0] + (wide + 0.2) * nx, far[1] + (wide + 0.2) * ny),
+            ]
+        )
+    )
     for p, q in hatch:
         sk._bound([p, q])
     # what was drawn, beyond the pin's own zone
-    return Polygon(tri).union(LineString([(base[0] + wide * nx, base[1] + wide * ny),
-                                          (base[0] - wide * nx, base[1] - wide * ny)])
-                              .buffer(0.02)).union(
-        MultiLineString(hatch).buffer(0.02)).difference(zone)
+    return (
+        Polygon(tri)
+        .union(
+            LineString(
+                [
+                    (base[0] + wide * nx, base[1] + wide * ny),
+                    (base[0] - wide * nx, base[1] - wide * ny),
+                ]
+            ).buffer(0.02)
+        )
+        .union(MultiLineString(hatch).buffer(0.02))
+        .difference(zone)
+    )
 
 
 def crank_arc(sc, P, feet=()):
@@ -241,34 +335,47 @@ def arc_distance(O, th, r, q):
     to ``th``."""
     phi = math.atan2(q[1] - O[1], q[0] - O[0])
     lo, hi = min(0.0, th), max(0.0, th)
-    phi = phi if lo <= phi <= hi else phi - 2 * math.pi if lo <= phi - 2 * math.pi <= hi \
-        else phi + 2 * math.pi if lo <= phi + 2 * math.pi <= hi else None
+    phi = (
+        phi
+        if lo <= phi <= hi
+        else phi - 2 * math.pi
+        if lo <= phi - 2 * math.pi <= hi
+        else phi + 2 * math.pi
+        if lo <= phi + 2 * math.pi <= hi
+        else None
+    )
     if phi is not None:
         return abs(math.dist(O, q) - r)
-    return min(math.dist(q, (O[0] + r * math.cos(a), O[1] + r * math.sin(a)))
-               for a in (0.0, th))
+    return min(math.dist(q, (O[0] + r * math.cos(a), O[1] + r * math.sin(a))) for a in (0.0, th))
 
 
 def arc_line(O, th, r):
     """The arc of radius ``r`` about ``O`` from 0 to ``th`` (rad) as a polyline (shapely)."""
     from shapely.geometry import LineString
+
     n = max(8, int(abs(math.degrees(th)) / 3))
-    return LineString([(O[0] + r * math.cos(th * i / n), O[1] + r * math.sin(th * i / n))
-                       for i in range(n + 1)])
+    return LineString(
+        [(O[0] + r * math.cos(th * i / n), O[1] + r * math.sin(th * i / n)) for i in range(n + 1)]
+    )
 
 
 def crank_angle_shapes(arc):
     """The crank angle's sector (out to a little beyond its arc) and reference line as
     shapes: where the angle is read, which a bracket keeps off."""
     from shapely.geometry import LineString, Polygon
+
     O, th, r = arc
     if abs(th) < 1e-9:
         return []
     n = max(8, int(abs(math.degrees(th)) / 3))
-    arc = [(O[0] + (r + 0.1) * math.cos(th * i / n), O[1] + (r + 0.1) * math.sin(th * i / n))
-           for i in range(n + 1)]
-    return [Polygon([O] + arc), LineString([(O[0] + PIN_ZONE, O[1]),
-                                            (O[0] + r + 0.5, O[1])]).buffer(0.05)]
+    arc = [
+        (O[0] + (r + 0.1) * math.cos(th * i / n), O[1] + (r + 0.1) * math.sin(th * i / n))
+        for i in range(n + 1)
+    ]
+    return [
+        Polygon([O] + arc),
+        LineString([(O[0] + PIN_ZONE, O[1]), (O[0] + r + 0.5, O[1])]).buffer(0.05),
+    ]
 
 
 def crank_angle(sk, arc):
@@ -277,11 +384,16 @@ def crank_angle(sk, arc):
     O, th, r = arc
     if abs(th) < 1e-9:
         return
-    sk.line([O, (O[0] + r + 0.5, O[1])], gid="crank-reference", color="#555555", lw=0.5,
-            dashes=(6, 2, 1, 2), z=1)
+    sk.line(
+        [O, (O[0] + r + 0.5, O[1])],
+        gid="crank-reference",
+        color="#555555",
+        lw=0.5,
+        dashes=(6, 2, 1, 2),
+        z=1,
+    )
     n = max(8, int(abs(math.degrees(th)) / 3))
-    pts = [(O[0] + r * math.cos(th * i / n), O[1] + r * math.sin(th * i / n))
-           for i in range(n + 1)]
+    pts = [(O[0] + r * math.cos(th * i / n), O[1] + r * math.sin(th * i / n)) for i in range(n + 1)]
     sk.line(pts, gid="crank-angle", lw=0.6, z=3, hint=False)
 
 

@@ -39,13 +39,43 @@ from __future__ import annotations
 from dataclasses import replace
 
 from ..common.errors import PolygonMethodError
-from . import (carried, crank, cylinder, driver, dyad, friction, peg, rack, rolling, slider,
-               slotted, triad, wheel, wheel_driver, yoke)
+from . import (
+    carried,
+    crank,
+    cylinder,
+    driver,
+    dyad,
+    friction,
+    peg,
+    rack,
+    rolling,
+    slider,
+    slotted,
+    triad,
+    wheel,
+    wheel_driver,
+    yoke,
+)
 from .bodies import Ledger, Singular, centre, cross, gather
 from .core import force_plan
-from .records import (FRAME, Contact, Couple, Forces, ForceStep, FreeBody, GuideForce,
-                      Inertia, PinForce, Side, block, couple_label, force_value, forces_dict,
-                      number_sub, side_label)
+from .records import (
+    FRAME,
+    Contact,
+    Couple,
+    Forces,
+    ForceStep,
+    FreeBody,
+    GuideForce,
+    Inertia,
+    PinForce,
+    Side,
+    block,
+    couple_label,
+    force_value,
+    forces_dict,
+    number_sub,
+    side_label,
+)
 
 #: the force step of each kind of kinematic step: its room (``owns(st)``: the bodies its
 #: points act on; ``step(st, P, ledger, owners)``: its pin forces; ``covers(st)``, where
@@ -62,20 +92,64 @@ from .records import (FRAME, Contact, Couple, Forces, ForceStep, FreeBody, Guide
 #: force)`` and guides' ``(point, normal, n, by)`` and returning the driver's effort or
 #: None, with no record made; None for a step with nothing to solve)
 #: the members a room may give, said once above for every room
-ROOM_CONTRACT = ("owns", "step", "covers", "check", "blocks", "divisor", "drives",
-                 "unit_ledger", "effort", "bodies", "bind")
-ROOMS = {"crank": crank, "dyad": dyad, "slider": slider, "carried": carried,
-         "slotted": slotted, "block": driver, "second crank": crank,
-         "cylinder": cylinder, "yoke": yoke, "peg": peg, "rolling": rolling,
-         "wheel centre": wheel, "triad": triad, "rack": rack, "rolling driver": wheel_driver}
+ROOM_CONTRACT = (
+    "owns",
+    "step",
+    "covers",
+    "check",
+    "blocks",
+    "divisor",
+    "drives",
+    "unit_ledger",
+    "effort",
+    "bodies",
+    "bind",
+)
+ROOMS = {
+    "crank": crank,
+    "dyad": dyad,
+    "slider": slider,
+    "carried": carried,
+    "slotted": slotted,
+    "block": driver,
+    "second crank": crank,
+    "cylinder": cylinder,
+    "yoke": yoke,
+    "peg": peg,
+    "rolling": rolling,
+    "wheel centre": wheel,
+    "triad": triad,
+    "rack": rack,
+    "rolling driver": wheel_driver,
+}
 
-__all__ = ["analyse", "Forces", "Inertia", "PinForce", "GuideForce", "ForceStep", "FRAME",
-           "block", "centre", "cross", "Ledger", "forces_dict", "owners", "ROOMS",
-           "force_value", "Side", "Couple", "FreeBody", "side_label", "couple_label", "number_sub"]
+__all__ = [
+    "analyse",
+    "Forces",
+    "Inertia",
+    "PinForce",
+    "GuideForce",
+    "ForceStep",
+    "FRAME",
+    "block",
+    "centre",
+    "cross",
+    "Ledger",
+    "forces_dict",
+    "owners",
+    "ROOMS",
+    "force_value",
+    "Side",
+    "Couple",
+    "FreeBody",
+    "side_label",
+    "couple_label",
+    "number_sub",
+]
 
 _NOT_YET = {
     "collar": "a collar driven along its turning rod (its force along the rod without "
-              "inertia is the power balance's input force)",
+    "inertia is the power balance's input force)",
     "second collar": "a collar sliding along the crank as the second input",
     "triad": "a triad whose plate is made of three links",
 }
@@ -88,7 +162,9 @@ def _refuse(scene, st, what):
         "points, blocks on fixed paths and on moving links, slotted levers, yokes, pegs, "
         "cylinders, wheels rolling on a line (driven or driving), gears, planets, racks "
         "and triads",
-        file=scene.file, key=_key(scene))
+        file=scene.file,
+        key=_key(scene),
+    )
 
 
 def _key(scene):
@@ -121,9 +197,11 @@ def owners(scene, plan) -> dict:
         blocks.update(getattr(room, "blocks", lambda s: ())(st))
     for m in scene.masses:  # a mass on a block no group of the plan has
         if m.block and m.body not in blocks:
-            raise PolygonMethodError(f"forces: {m.body} is a block no force step carries: "
-                                     "its mass cannot be placed", file=scene.file,
-                                     key=f"[masses] {m.body}")
+            raise PolygonMethodError(
+                f"forces: {m.body} is a block no force step carries: its mass cannot be placed",
+                file=scene.file,
+                key=f"[masses] {m.body}",
+            )
     return own
 
 
@@ -170,10 +248,13 @@ def _with_friction(motion, fp) -> Forces:
         if friction.change(before, now) <= friction.SETTLED * friction.scale(f):
             return f
         before = now
-    raise PolygonMethodError(f"forces: with friction the forces do not settle after "
-                             f"{friction.ROUNDS} passes: the mechanism may lock itself here "
-                             "(the friction too large for the driver to move it)",
-                             file=scene.file, key="[friction]")
+    raise PolygonMethodError(
+        f"forces: with friction the forces do not settle after "
+        f"{friction.ROUNDS} passes: the mechanism may lock itself here "
+        "(the friction too large for the driver to move it)",
+        file=scene.file,
+        key="[friction]",
+    )
 
 
 def _forces(motion, fp, fric) -> Forces:
@@ -181,11 +262,13 @@ def _forces(motion, fp, fric) -> Forces:
     (:func:`.friction.loads`)."""
     whole = _long(motion, fp, fric)
     wheel = whole[4] == "wheel"
-    return Forces(*whole[:7], (_Long, whole),
-                  centre_force=(wheel_driver.centre_force(motion.plan.steps[0], whole[0])
-                                if wheel else None),
-                  friction=tuple(fric),
-                  friction_power=friction.power(motion, motion.scene, fric) if fric else 0.0)
+    return Forces(
+        *whole[:7],
+        (_Long, whole),
+        centre_force=(wheel_driver.centre_force(motion.plan.steps[0], whole[0]) if wheel else None),
+        friction=tuple(fric),
+        friction_power=friction.power(motion, motion.scene, fric) if fric else 0.0,
+    )
 
 
 def _long(motion, fp, fric=()) -> tuple:
@@ -205,9 +288,11 @@ def _long(motion, fp, fric=()) -> tuple:
         try:
             room.effort(driving, t0, t1, led)
         except Singular as exc:
-            raise PolygonMethodError(f"forces: {exc}: its force is not determined here (step "
-                                     f"{driving.index + 1}, {driving.title})",
-                                     file=scene.file) from None
+            raise PolygonMethodError(
+                f"forces: {exc}: its force is not determined here (step "
+                f"{driving.index + 1}, {driving.title})",
+                file=scene.file,
+            ) from None
     pins, guides, steps, torque, second, contacts = _walk(scene, plan, motion.P, led, own)
     fx, fy, m = led.of(FRAME)  # the drivers' reactions are the frame's too
     if driving is not None:
@@ -218,25 +303,40 @@ def _long(motion, fp, fric=()) -> tuple:
         name, kind, effort = plan.steps[0].wheel, "wheel", torque
     else:
         name, kind, effort = inp.crank, "crank", torque
-    return (effort, (fx, fy), m, name, kind, second,
-            None if inp.second is None else scene.link(inp.second.crank).key,
-            records_, tuple(pins), tuple(guides),
-            tuple(steps), {k: tuple(v) for k, v in led.applied.items()}, tuple(contacts),
-            _drawing(scene, plan, motion.P, records_, pins, guides, led, torque, steps,
-                     contacts),
-            led.of)
+    return (
+        effort,
+        (fx, fy),
+        m,
+        name,
+        kind,
+        second,
+        None if inp.second is None else scene.link(inp.second.crank).key,
+        records_,
+        tuple(pins),
+        tuple(guides),
+        tuple(steps),
+        {k: tuple(v) for k, v in led.applied.items()},
+        tuple(contacts),
+        _drawing(scene, plan, motion.P, records_, pins, guides, led, torque, steps, contacts),
+        led.of,
+    )
 
 
 def _drawing(scene, plan, P, records, pins, guides, led, torque, steps, contacts) -> tuple:
     """What the drawings read, made when first asked for: the bodies' numbers and, for one
     instant, each body's free body."""
     one = isinstance(torque, float)
-    driven = (scene.input.crank if plan.steps[0].kind != "rolling driver"
-              else plan.steps[0].wheel)
-    return (lambda: _numbers(scene, plan, steps),
-            (lambda numbers: _free_bodies(scene, P, numbers, records, pins, guides, led,
-                                          torque, contacts, driven))
-            if one else (lambda numbers: ()))
+    driven = scene.input.crank if plan.steps[0].kind != "rolling driver" else plan.steps[0].wheel
+    return (
+        lambda: _numbers(scene, plan, steps),
+        (
+            lambda numbers: _free_bodies(
+                scene, P, numbers, records, pins, guides, led, torque, contacts, driven
+            )
+        )
+        if one
+        else (lambda numbers: ()),
+    )
 
 
 def _copy(led):
@@ -255,9 +355,11 @@ def _walk(scene, plan, P, led, own):
         try:
             p, g, rec, t = ROOMS[st.kind].step(st, P, led, own)
         except Singular as exc:
-            raise PolygonMethodError(f"forces: {exc}: the pin forces are not determined here "
-                                     f"(step {st.index + 1}, {st.title})",
-                                     file=scene.file) from None
+            raise PolygonMethodError(
+                f"forces: {exc}: the pin forces are not determined here "
+                f"(step {st.index + 1}, {st.title})",
+                file=scene.file,
+            ) from None
         pins += p
         for x in g:
             (contacts if isinstance(x, Contact) else guides).append(x)
@@ -287,8 +389,7 @@ def _numbers(scene, plan, steps) -> dict:
     return out
 
 
-def _free_bodies(scene, P, numbers, records, pins, guides, led, torque, contacts,
-                 driven) -> tuple:
+def _free_bodies(scene, P, numbers, records, pins, guides, led, torque, contacts, driven) -> tuple:
     """Each moving body alone (:class:`FreeBody`): its inertia force (the book's single
     force, through the offset point), weight and loads as the ledger holds them, every pin
     force on it (the stored record, or its opposite where the body is the record's ``by``),
@@ -300,30 +401,46 @@ def _free_bodies(scene, P, numbers, records, pins, guides, led, torque, contacts
         if body == FRAME:
             continue
         sides = [s for s in led.known(body) if s.what not in ("pin", "inertia", "contact")]
-        sides[:0] = [Side("inertia", body, "", "", i.force,
-                          i.G if i.offset is None else i.offset_point)
-                     for i in records if i.body == body]  # the book's single force
+        sides[:0] = [
+            Side("inertia", body, "", "", i.force, i.G if i.offset is None else i.offset_point)
+            for i in records
+            if i.body == body
+        ]  # the book's single force
         for p in pins:
             if p.on == body:
                 sides.append(Side("pin", body, p.by, p.point, p.force, P[p.point]))
             elif p.by == body:
-                sides.append(Side("pin", body, p.on, p.point, (-p.force[0], -p.force[1]),
-                                  P[p.point]))
-        sides += [Side("guide", body, FRAME, g.point, g.force, P[g.point]) for g in guides
-                  if block(g.point) == body]
+                sides.append(
+                    Side("pin", body, p.on, p.point, (-p.force[0], -p.force[1]), P[p.point])
+                )
+        sides += [
+            Side("guide", body, FRAME, g.point, g.force, P[g.point])
+            for g in guides
+            if block(g.point) == body
+        ]
         for k, c in enumerate(reversed(contacts)):  # (in the plan's order, as drawn)
             name = "I" if len(contacts) == 1 else f"I{k + 1}"
             if c.wheel == body:
                 sides.append(Side("contact", body, c.by, name, c.force, c.point))
             elif c.by == body:
-                sides.append(Side("contact", body, c.wheel, name,
-                                  (-c.force[0], -c.force[1]), c.point))
-        couples = [Couple("inertia", body, i.couple) for i in records
-                   if i.body == body and i.offset is None and i.couple != 0]
-        couples += [Couple("friction" if e[0].startswith("friction") else "load", body, e[1])
-                    for e in led.applied.get(body, ()) if len(e) == 2]
-        couples += [Couple("guide", body, g.couple) for g in guides
-                    if block(g.point) == body and isinstance(g.couple, float) and g.couple]
+                sides.append(
+                    Side("contact", body, c.wheel, name, (-c.force[0], -c.force[1]), c.point)
+                )
+        couples = [
+            Couple("inertia", body, i.couple)
+            for i in records
+            if i.body == body and i.offset is None and i.couple != 0
+        ]
+        couples += [
+            Couple("friction" if e[0].startswith("friction") else "load", body, e[1])
+            for e in led.applied.get(body, ())
+            if len(e) == 2
+        ]
+        couples += [
+            Couple("guide", body, g.couple)
+            for g in guides
+            if block(g.point) == body and isinstance(g.couple, float) and g.couple
+        ]
         if body == driven:
             couples.append(Couple("torque", body, torque))
         out.append(FreeBody(body, num, tuple(sides), tuple(couples)))

@@ -27,6 +27,7 @@ def least(a, b):
     if isinstance(a, float) and isinstance(b, float):
         return a if a <= b else b
     import numpy as np
+
     return np.minimum(a, b)
 
 
@@ -146,23 +147,42 @@ def gather(scene, motion, owner):
             alpha, body = Al[lk.key], lk.key
         rec = inertia_record(body, m.mass, m.inertia, G, a_G, alpha, m.how)
         records.append(rec)
-        led.add(body, rec.force[0], rec.force[1], G[0], G[1],
-                side=Side("inertia", body, "", "", rec.force, G))  # (its line: free bodies)
+        led.add(
+            body,
+            rec.force[0],
+            rec.force[1],
+            G[0],
+            G[1],
+            side=Side("inertia", body, "", "", rec.force, G),
+        )  # (its line: free bodies)
         led.couple(body, rec.couple)
         if grav is not None:
             w = m.mass * grav.g
             wx, wy = w * grav.direction[0], w * grav.direction[1]
-            led.add(body, wx, wy, G[0], G[1], f"weight of {body}",
-                    Side("weight", body, "", "", (wx, wy), G))
+            led.add(
+                body,
+                wx,
+                wy,
+                G[0],
+                G[1],
+                f"weight of {body}",
+                Side("weight", body, "", "", (wx, wy), G),
+            )
     for ld in scene.loads:
         if ld.force is not None:
             body = owner.get(ld.target, FRAME)
             if body == FRAME:
                 continue
             x, y = P[ld.target]
-            led.add(body, ld.force[0], ld.force[1], x, y,
-                    f"gas force at {ld.target}" if ld.gas else f"load at {ld.target}",
-                    Side("gas" if ld.gas else "load", body, "", ld.target, ld.force, (x, y)))
+            led.add(
+                body,
+                ld.force[0],
+                ld.force[1],
+                x,
+                y,
+                f"gas force at {ld.target}" if ld.gas else f"load at {ld.target}",
+                Side("gas" if ld.gas else "load", body, "", ld.target, ld.force, (x, y)),
+            )
             if ld.gas:  # the gas pushes the cylinder's cover (the frame) as hard, back
                 led.add(FRAME, -ld.force[0], -ld.force[1], x, y)  # along the same line
         else:
@@ -172,8 +192,11 @@ def gather(scene, motion, owner):
         fx, fy, p, _ = indicator_force(scene, motion)
         x, y = P[ind.piston]
         body = owner.get(ind.piston, FRAME)
-        what = (f"gas force at {ind.piston} (indicator: {p / 1e5:.6g} bar)"
-                if isinstance(p, float) else None)
+        what = (
+            f"gas force at {ind.piston} (indicator: {p / 1e5:.6g} bar)"
+            if isinstance(p, float)
+            else None
+        )
         led.add(body, fx, fy, x, y, what)
         led.add(FRAME, -fx, -fy, x, y)
     return tuple(records), led
@@ -205,5 +228,7 @@ def outer_pin(side_whole, p, q):
     polygon draws them (:class:`Side` s with ``part`` ``n`` and ``t``)."""
     n, t = along(side_whole.vector, p, q)
     w = side_whole
-    return (Side(w.what, w.on, w.by, w.point, n, w.at, "n"),
-            Side(w.what, w.on, w.by, w.point, t, w.at, "t"))
+    return (
+        Side(w.what, w.on, w.by, w.point, n, w.at, "n"),
+        Side(w.what, w.on, w.by, w.point, t, w.at, "t"),
+    )

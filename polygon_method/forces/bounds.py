@@ -41,8 +41,10 @@ __all__ = ["ForceBounds", "force_bounds", "K"]
 #: the rounding constant of one group's solve (a handful of operations, with a margin)
 K = 16.0
 #: the reason given where a force's bound is no useful bound
-NO_BOUND = ("no useful bound: near a toggle a group's equations divide by a vanishing "
-            "length, and its forces grow without bound")
+NO_BOUND = (
+    "no useful bound: near a toggle a group's equations divide by a vanishing "
+    "length, and its forces grow without bound"
+)
 
 
 @dataclass(frozen=True)
@@ -64,14 +66,19 @@ class ForceBounds:
     @property
     def worst(self):
         """The largest relative bound of any force."""
-        return largest(list(self.pins.values()) + list(self.guides.values())
-                       + [self.effort] + ([self.second] if self.second is not None else []))
+        return largest(
+            list(self.pins.values())
+            + list(self.guides.values())
+            + [self.effort]
+            + ([self.second] if self.second is not None else [])
+        )
 
 
 def _cap(x):
     if isinstance(x, float):
         return x if x < CAP else CAP
     import numpy as np
+
     return np.fmin(np.nan_to_num(x, nan=CAP, posinf=CAP), CAP)
 
 
@@ -79,9 +86,12 @@ def _scale(sol, f):
     """The force scale: the largest force of the instant (never below the tiniest
     positive float: a mechanism with no force at all has nothing to err)."""
     sc = sol.scene
-    vals = [vhypot(*p.force) for p in f.pins] + [abs(g.normal) for g in f.guides] + \
-        [vhypot(*i.force) for i in f.inertia] + \
-        [vhypot(*ld.force) for ld in sc.loads if ld.force is not None]
+    vals = (
+        [vhypot(*p.force) for p in f.pins]
+        + [abs(g.normal) for g in f.guides]
+        + [vhypot(*i.force) for i in f.inertia]
+        + [vhypot(*ld.force) for ld in sc.loads if ld.force is not None]
+    )
     if sc.gravity is not None:
         vals += [m.mass * sc.gravity.g for m in sc.masses]
     if f.driver not in ("crank", "wheel"):  # (a wheel's effort is a torque)
@@ -93,6 +103,7 @@ def _divisor(st, rec, P, L):
     """The length the group's equations divide by: its room's ``divisor`` (see the
     module); ``L`` (nothing divided) for a room without one."""
     from . import ROOMS
+
     room = ROOMS[st.kind]
     return room.divisor(st, rec, P, L) if hasattr(room, "divisor") else L
 
@@ -110,10 +121,12 @@ def _inertia_errors(sol, kb, F, L):
             body = lk.key
             if body not in sol.W:
                 continue
-            ea = vmax(kb.A.get(lk.p, EPS), kb.A.get(lk.q, EPS)) * \
-                (1.0 + abs(m.lam) + 2.0 * abs(m.mu))
-            e = m.mass * ea * kb.scales["acceleration"] / F + \
-                m.inertia * kb.Al.get(body, EPS) * kb.scales["alpha"] / (F * L)
+            ea = vmax(kb.A.get(lk.p, EPS), kb.A.get(lk.q, EPS)) * (
+                1.0 + abs(m.lam) + 2.0 * abs(m.mu)
+            )
+            e = m.mass * ea * kb.scales["acceleration"] / F + m.inertia * kb.Al.get(
+                body, EPS
+            ) * kb.scales["alpha"] / (F * L)
         out[body] = vmax(out.get(body, 0.0), e)
     return out
 
@@ -151,8 +164,11 @@ def force_bounds(sol, f=None) -> ForceBounds:
     steps = _walk(sol, f, kb, F, L, start)
     driver = sol.plan.steps[0]  # the first input's step: a crank or a driving block
     by_index = {st.index: st for st in sol.plan.steps}
-    cyl = next((r for r in f.steps if r.bodies == (f.crank,)), None) \
-        if f.driver == "cylinder" else None
+    cyl = (
+        next((r for r in f.steps if r.bodies == (f.crank,)), None)
+        if f.driver == "cylinder"
+        else None
+    )
     if cyl is not None:  # the effort comes from the whole walk
         D = _divisor(by_index[cyl.index], cyl, sol.P, L)
         e_f = _cap((K * EPS + steps[driver.index]) * L / vmax(D, FLOOR))
@@ -169,8 +185,14 @@ def force_bounds(sol, f=None) -> ForceBounds:
         for g in rec.guides:
             guides[g.key] = steps[rec.index]
     first = cyl.index if cyl is not None else driver.index
-    second = next((steps[r.index] for r in f.steps if f.second_crank is not None
-                   and r.bodies == (f.second_crank,)), None)
+    second = next(
+        (
+            steps[r.index]
+            for r in f.steps
+            if f.second_crank is not None and r.bodies == (f.second_crank,)
+        ),
+        None,
+    )
     return ForceBounds(pins, guides, steps[first], second, steps, F, L)
 
 
@@ -184,12 +206,16 @@ def bounds_dict(b: ForceBounds) -> dict:
             return float(x)
         count[0] += 1
         return None
+
     pins = {}
     for (point, on, by), e in b.pins.items():
         pins.setdefault(point, []).append({"on": on, "by": by, "bound": clean(e)})
-    d = {"relative_to": {"force": float(b.force), "moment": float(b.force * b.length)},
-         "pins": pins, "guides": {k: clean(e) for k, e in b.guides.items()},
-         "input": clean(b.effort)}
+    d = {
+        "relative_to": {"force": float(b.force), "moment": float(b.force * b.length)},
+        "pins": pins,
+        "guides": {k: clean(e) for k, e in b.guides.items()},
+        "input": clean(b.effort),
+    }
     if b.second is not None:
         d["second_input"] = clean(b.second)
     if count[0]:

@@ -82,21 +82,27 @@ class ForcePlan:
 
     def __init__(self, scene, plan):
         from . import ROOMS, owners  # the rooms (this module is one of their helpers)
+
         self.scene, self.plan = scene, plan
         self.own = own = owners(scene, plan)  # refuses what the analysis does not cover
-        self.driving = next((st for st in plan.steps
-                             if getattr(ROOMS[st.kind], "drives", lambda sc, s: False)(scene, st)),
-                            None)
-        self.quick = self.driving is None and all(hasattr(ROOMS[st.kind], "bind")
-                                                  for st in plan.steps)
+        self.driving = next(
+            (
+                st
+                for st in plan.steps
+                if getattr(ROOMS[st.kind], "drives", lambda sc, s: False)(scene, st)
+            ),
+            None,
+        )
+        self.quick = self.driving is None and all(
+            hasattr(ROOMS[st.kind], "bind") for st in plan.steps
+        )
         if not self.quick:
             return
         ix = Numbering()
         self._masses(scene, ix)
         self._loads(scene, own, ix)
         first = plan.steps[0]
-        bound = ((st, ROOMS[st.kind].bind(st, own, ix), st is first)
-                 for st in reversed(plan.steps))
+        bound = ((st, ROOMS[st.kind].bind(st, own, ix), st is first) for st in reversed(plan.steps))
         self.steps = tuple(b for b in bound if b[1] is not None)  # skip what solves nothing
         self.zeros = [0.0] * len(ix.index)
         self.index = ix.index
@@ -146,8 +152,7 @@ class ForcePlan:
                 out.append((None, ix(ld.target), ld.torque, None))
         self.loads = tuple(out)
         ind = scene.indicator
-        self.indicator = None if ind is None else (ind.piston,
-                                                   ix(own.get(ind.piston, FRAME)))
+        self.indicator = None if ind is None else (ind.piston, ix(own.get(ind.piston, FRAME)))
 
     def run(self, motion):
         """The :class:`~.records.Forces` at ``motion``'s instant (or over its angles): its
@@ -204,17 +209,28 @@ class ForcePlan:
                 t = fn(P, S, pins, guides)
             except Singular as exc:
                 from ..common.errors import PolygonMethodError
-                raise PolygonMethodError(f"forces: {exc}: the pin forces are not determined "
-                                         f"here (step {st.index + 1}, {st.title})",
-                                         file=self.scene.file) from None
+
+                raise PolygonMethodError(
+                    f"forces: {exc}: the pin forces are not determined "
+                    f"here (step {st.index + 1}, {st.title})",
+                    file=self.scene.file,
+                ) from None
             if t is not None:
                 if first:
                     effort = t
                 else:
                     second = t
         name, kind = self.driver
-        return quick_forces(effort, (sx[0], sy[0]), sm[0], name, kind, second, self.second,
-                            (self, motion, pins, guides, S))
+        return quick_forces(
+            effort,
+            (sx[0], sy[0]),
+            sm[0],
+            name,
+            kind,
+            second,
+            self.second,
+            (self, motion, pins, guides, S),
+        )
 
     # what its :class:`~.records.Forces` asks of its ``source``, (this plan, the motion, the
     # raw pin and guide forces, the sums), when first read
@@ -226,6 +242,7 @@ class ForcePlan:
     def story(self, source) -> tuple:
         """(steps, applied, contacts, the drawings' functions): the long road's."""
         from . import _long  # the walk with its words (this module is one of its helpers)
+
         return _long(source[1], self)[10:14]
 
     def resultant(self, source, body) -> tuple:
@@ -240,14 +257,18 @@ class ForcePlan:
         P, A, Al = motion.P, motion.A, motion.Al
         inertia = []
         for (_, pt, p, q, key, lam, mu, _, _, _), (body, mass, moment, how) in zip(
-                self.masses, self.mass_records):
+            self.masses, self.mass_records
+        ):
             if pt is None:
                 G, a_G, alpha = centre(P, lam, mu, p, q), centre(A, lam, mu, p, q), Al[key]
             else:
                 G, a_G, alpha = P[pt], A[pt], 0.0
             inertia.append(inertia_record(body, mass, moment, G, a_G, alpha, how))
-        return (tuple(inertia), tuple(PinForce(*p) for p in pins),
-                tuple(GuideForce(*g) for g in guides))
+        return (
+            tuple(inertia),
+            tuple(PinForce(*p) for p in pins),
+            tuple(GuideForce(*g) for g in guides),
+        )
 
 
 _new = object.__new__

@@ -46,6 +46,7 @@ def bind(st, own, ix):
         sm[0] = sm[0] + (ox * fy - oy * fx) + -torque  # the driver, on the frame, feels -T
         pins.append((pivot, link, FRAME, r))
         return torque
+
     return run
 
 
@@ -63,16 +64,28 @@ def step(st, P, led, own):
 
         def drawn():  # the crank's known forces, then the frame's at the pivot: closed
             return known + (Side("pin", st.link, FRAME, st.pivot, r, (ox, oy)),), (), ()
+
         drawing = drawn
         O = st.pivot
         # a driver elsewhere (a cylinder, a given block) leaves the crank no torque: its
         # rounding noise is written 0, on the size of the pivot's force times the mechanism's
         size = math.hypot(*r) * max(math.dist(q, (ox, oy)) for q in P.values())
         t = quiet(torque, size)
-        eq = (f"moments about {O}: T + M_{O} = 0, M_{O} = {fmt(-t if t else 0.0)} N m the "
-              f"known forces' moment: T = {fmt(t)} N m",
-              f"forces: F_{O} = -(the known forces) = ({fmt(r[0])}, {fmt(r[1])}) N")
-    rec = ForceStep(st.index, st.kind, st.title, (st.link,), (k,),
-                    ((f"F_{st.pivot} on {st.link} by the frame", r),
-                     (f"T on {st.link}", torque)), 1.0, "", eq, drawing)
+        eq = (
+            f"moments about {O}: T + M_{O} = 0, M_{O} = {fmt(-t if t else 0.0)} N m the "
+            f"known forces' moment: T = {fmt(t)} N m",
+            f"forces: F_{O} = -(the known forces) = ({fmt(r[0])}, {fmt(r[1])}) N",
+        )
+    rec = ForceStep(
+        st.index,
+        st.kind,
+        st.title,
+        (st.link,),
+        (k,),
+        ((f"F_{st.pivot} on {st.link} by the frame", r), (f"T on {st.link}", torque)),
+        1.0,
+        "",
+        eq,
+        drawing,
+    )
     return (PinForce(st.pivot, st.link, FRAME, r),), (), rec, torque

@@ -39,13 +39,19 @@ def owns(st) -> dict:
 def drives(scene, st) -> bool:
     """Whether the motion is given on this cylinder (it is then the driver)."""
     g = scene.input.given
-    return (g is not None and g.kind == "vs" and g.names == (st.key,)
-            and scene.input.block is None and scene.input.second is None)
+    return (
+        g is not None
+        and g.kind == "vs"
+        and g.names == (st.key,)
+        and scene.input.block is None
+        and scene.input.second is None
+    )
 
 
 def unit_ledger(st):
     """A ledger with 1 N in the cylinder and nothing else."""
     from .bodies import Ledger
+
     led = Ledger()
     led.given[st.key] = 1.0
     return led
@@ -56,13 +62,16 @@ def effort(st, t0, t1, led):
     it, T1 with 1 N in it alone: its arm about the crank's pivot) and its condition ``|T1|
     / rho`` (at most 1) in ``led``."""
     if any_zero(t1):
-        raise Singular(f"the line of cylinder {st.key} passes through the crank's pivot: it "
-                       "cannot turn the crank")
+        raise Singular(
+            f"the line of cylinder {st.key} passes through the crank's pivot: it "
+            "cannot turn the crank"
+        )
     cond = abs(t1) / (st.rho if st.rho > 0 else FLOOR)
     if isinstance(cond, float):
         cond = min(cond, 1.0)
     else:  # a sweep
         import numpy as np
+
         cond = np.minimum(cond, 1.0)
     led.given[st.key] = -t0 / t1
     led.conditions[st.key] = cond
@@ -80,18 +89,30 @@ def step(st, P, led, own):
     led.add(ok, -fx, -fy, kx, ky, side=Side("pin", ok, st.key, K, (-fx, -fy), (kx, ky)))
     eq = ()
     if isinstance(fx, float):
-        eq = ((f"the cylinder drives: F = -T0 / T1 = {fmt(f)} N, T0 the crank's torque "
-               "without it, T1 with 1 N in it alone" if st.key in led.given else
-               "the cylinder does not drive (the motion is not given on it): a free, "
-               "frictionless cylinder carries no force"),)
-    rec = ForceStep(st.index, "cylinder", st.title, (st.key,), ((0.0, 0.0, 0.0),),
-                    ((f"F in {st.key}, + pushing {K} and {R} apart", f),),
-                    led.conditions.get(st.key, 1.0),
-                    "the arm of the cylinder about the crank's pivot over the mechanism's "
-                    "size" if st.key in led.given else "", eq)
+        eq = (
+            (
+                f"the cylinder drives: F = -T0 / T1 = {fmt(f)} N, T0 the crank's torque "
+                "without it, T1 with 1 N in it alone"
+                if st.key in led.given
+                else "the cylinder does not drive (the motion is not given on it): a free, "
+                "frictionless cylinder carries no force"
+            ),
+        )
+    rec = ForceStep(
+        st.index,
+        "cylinder",
+        st.title,
+        (st.key,),
+        ((0.0, 0.0, 0.0),),
+        ((f"F in {st.key}, + pushing {K} and {R} apart", f),),
+        led.conditions.get(st.key, 1.0),
+        "the arm of the cylinder about the crank's pivot over the mechanism's size"
+        if st.key in led.given
+        else "",
+        eq,
+    )
     # the pins' forces on the cylinder by the bodies at its ends
-    return (PinForce(R, st.key, orr, (-fx, -fy)), PinForce(K, st.key, ok, (fx, fy))), (), \
-        rec, None
+    return (PinForce(R, st.key, orr, (-fx, -fy)), PinForce(K, st.key, ok, (fx, fy))), (), rec, None
 
 
 def divisor(st, rec, P, L):

@@ -45,6 +45,7 @@ def bind(st, own, ix):
         xx, xy = P[x]
         S.add(0, -(f * ux + n * -uy), -(f * uy + n * ux), xx, xy)
         return f
+
     return run
 
 
@@ -60,11 +61,21 @@ def step(st, P, led, own):
     led.add(FRAME, -(f * ux + n * -uy), -(f * uy + n * ux), xx, xy)
     eq = ()
     if isinstance(f, float):
-        eq = (f"the block: F u + N n + R = 0, R = ({fmt(kb[0])}, {fmt(kb[1])}) N the known "
-              f"forces on {bl}",
-              f"F = -R . u = {fmt(f)} N (the driver's force along the guide), N = -R . n = "
-              f"{fmt(n)} N (the guide's)")
-    rec = ForceStep(st.index, "block", st.title, (bl,), (kb,),
-                    ((f"N_{x} on {bl} by the guide", n),
-                     (f"F on {bl} by its driver, along the guide", f)), 1.0, "", eq)
+        eq = (
+            f"the block: F u + N n + R = 0, R = ({fmt(kb[0])}, {fmt(kb[1])}) N the known "
+            f"forces on {bl}",
+            f"F = -R . u = {fmt(f)} N (the driver's force along the guide), N = -R . n = "
+            f"{fmt(n)} N (the guide's)",
+        )
+    rec = ForceStep(
+        st.index,
+        "block",
+        st.title,
+        (bl,),
+        (kb,),
+        ((f"N_{x} on {bl} by the guide", n), (f"F on {bl} by its driver, along the guide", f)),
+        1.0,
+        "",
+        eq,
+    )
     return (), (g,), rec, f

@@ -73,8 +73,9 @@ def bind(st, own, ix):
     def run(P, S, pins, guides):
         (bx, by), (dx, dy), (cx, cy) = P[b], P[d], P[c]
         sx, sy, sm = S.fx, S.fy, S.m
-        p, fb, fd, _ = solve(bx, by, (sx[i1], sy[i1], sm[i1]), dx, dy,
-                             (sx[i2], sy[i2], sm[i2]), cx, cy, False)
+        p, fb, fd, _ = solve(
+            bx, by, (sx[i1], sy[i1], sm[i1]), dx, dy, (sx[i2], sy[i2], sm[i2]), cx, cy, False
+        )
         if p is None:
             raise Singular(why)
         pins += ((c, l1, l2, p), (b, l1, ob, fb), (d, l2, od, fd))
@@ -86,6 +87,7 @@ def bind(st, own, ix):
         sx[id_] = sx[id_] + fx
         sy[id_] = sy[id_] + fy
         sm[id_] = sm[id_] + (dx * fy - dy * fx)
+
     return run
 
 
@@ -99,16 +101,14 @@ def step(st, P, led, own):
     if p is None:
         raise Singular(f"{st.b}, {st.point} and {st.d} are in a line")
     ob, od = own[st.b], own[st.d]
-    pins = (PinForce(st.point, l1, l2, p), PinForce(st.b, l1, ob, fb),
-            PinForce(st.d, l2, od, fd))
+    pins = (PinForce(st.point, l1, l2, p), PinForce(st.b, l1, ob, fb), PinForce(st.d, l2, od, fd))
     known1, known2 = led.known(l1), led.known(l2)
-    led.add(ob, -fb[0], -fb[1], bx, by, side=Side("pin", ob, l1, st.b, (-fb[0], -fb[1]),
-                                                 (bx, by)))
-    led.add(od, -fd[0], -fd[1], dx, dy, side=Side("pin", od, l2, st.d, (-fd[0], -fd[1]),
-                                                 (dx, dy)))
+    led.add(ob, -fb[0], -fb[1], bx, by, side=Side("pin", ob, l1, st.b, (-fb[0], -fb[1]), (bx, by)))
+    led.add(od, -fd[0], -fd[1], dx, dy, side=Side("pin", od, l2, st.d, (-fd[0], -fd[1]), (dx, dy)))
     eq = ()
     drawing = None
     if isinstance(cond, float):  # one instant: the working in words, the force polygon
+
         def drawn():
             B, C, D = (bx, by), (cx, cy), (dx, dy)
             whole_b = Side("pin", l1, ob, st.b, fb, B)
@@ -119,28 +119,45 @@ def step(st, P, led, own):
             # link 2's, F_D square to DC, F_D along DC (found last): closed
             polygon = (bn, bt) + known1 + known2 + (dt, dn)
             k = len(polygon)
-            return (polygon, ((0, unit(B, C)), (k - 1, unit(D, C))),
-                    ((whole_b, 0, 2), (Side("pin", l1, l2, st.point, p, C), 2 + len(known1), 0),
-                     (whole_d, k - 2, k)))
+            return (
+                polygon,
+                ((0, unit(B, C)), (k - 1, unit(D, C))),
+                (
+                    (whole_b, 0, 2),
+                    (Side("pin", l1, l2, st.point, p, C), 2 + len(known1), 0),
+                    (whole_d, k - 2, k),
+                ),
+            )
+
         drawing = drawn
         X, B, D = st.point, st.b, st.d
         m1b = k1[2] - cross(bx, by, k1[0], k1[1])
         m2d = k2[2] - cross(dx, dy, k2[0], k2[1])
-        eq = (f"moments of {l1} about {B}: ({X} - {B}) x F_{X} + M_{B} = 0, with M_{B} = "
-              f"{fmt(m1b)} N m the known forces' moment",
-              f"moments of {l2} about {D}: ({X} - {D}) x (-F_{X}) + M_{D} = 0, with M_{D} = "
-              f"{fmt(m2d)} N m",
-              f"the two together: F_{X} = ({fmt(p[0])}, {fmt(p[1])}) N, the force on {l1} "
-              f"by {l2}",
-              f"forces on {l1}: F_{B} = -(the known forces + F_{X}) = ({fmt(fb[0])}, "
-              f"{fmt(fb[1])}) N",
-              f"forces on {l2}: F_{D} = -(the known forces - F_{X}) = ({fmt(fd[0])}, "
-              f"{fmt(fd[1])}) N")
-    rec = ForceStep(st.index, "dyad", st.title, (l1, l2), (k1, k2),
-                    ((f"F_{st.point} on {l1} by {l2}", p), (f"F_{st.b} on {l1} by {ob}", fb),
-                     (f"F_{st.d} on {l2} by {od}", fd)), cond,
-                    f"sine of the angle at {st.point} between {st.point}{st.b} and "
-                    f"{st.point}{st.d}", eq, drawing)
+        eq = (
+            f"moments of {l1} about {B}: ({X} - {B}) x F_{X} + M_{B} = 0, with M_{B} = "
+            f"{fmt(m1b)} N m the known forces' moment",
+            f"moments of {l2} about {D}: ({X} - {D}) x (-F_{X}) + M_{D} = 0, with M_{D} = "
+            f"{fmt(m2d)} N m",
+            f"the two together: F_{X} = ({fmt(p[0])}, {fmt(p[1])}) N, the force on {l1} by {l2}",
+            f"forces on {l1}: F_{B} = -(the known forces + F_{X}) = ({fmt(fb[0])}, {fmt(fb[1])}) N",
+            f"forces on {l2}: F_{D} = -(the known forces - F_{X}) = ({fmt(fd[0])}, {fmt(fd[1])}) N",
+        )
+    rec = ForceStep(
+        st.index,
+        "dyad",
+        st.title,
+        (l1, l2),
+        (k1, k2),
+        (
+            (f"F_{st.point} on {l1} by {l2}", p),
+            (f"F_{st.b} on {l1} by {ob}", fb),
+            (f"F_{st.d} on {l2} by {od}", fd),
+        ),
+        cond,
+        f"sine of the angle at {st.point} between {st.point}{st.b} and {st.point}{st.d}",
+        eq,
+        drawing,
+    )
     return pins, (), rec, None
 
 

@@ -65,7 +65,7 @@ class SliderCrankGeometry:
     def fraction(self, bx, by):
         """The piston's place as a fraction of the stroke from the inner dead centre."""
         (fx, fy), (ux, uy) = self.F, self.u
-        far = math.sqrt((self.l + self.r) ** 2 - self.e ** 2)
+        far = math.sqrt((self.l + self.r) ** 2 - self.e**2)
         return (far - self.s * ((bx - fx) * ux + (by - fy) * uy)) / self.stroke
 
 
@@ -92,15 +92,20 @@ def geometry(scene, plan, piston: str, side: float) -> SliderCrankGeometry:
     line, a mechanism that is no slider crank there, or a crank at rest."""
     pair = slider_crank(plan, piston)
     if pair is None:
-        raise PolygonMethodError(f"[indicator]: the piston {piston} must slide on a fixed path, "
-                                 "pinned by a rod to the driving crank's pin (a slider crank)",
-                                 file=scene.file, key="[indicator] piston")
+        raise PolygonMethodError(
+            f"[indicator]: the piston {piston} must slide on a fixed path, "
+            "pinned by a rod to the driving crank's pin (a slider crank)",
+            file=scene.file,
+            key="[indicator] piston",
+        )
     first, sd = pair
     w = scene.input.omega
     if not w:
-        raise PolygonMethodError("[indicator]: the cycle runs in the crank's sense of "
-                                 "rotation: give the crank a speed", file=scene.file,
-                                 key="[input] speed")
+        raise PolygonMethodError(
+            "[indicator]: the cycle runs in the crank's sense of rotation: give the crank a speed",
+            file=scene.file,
+            key="[input] speed",
+        )
     ox, oy = scene.ground[first.pivot]
     r, l = first.length, sd.length
     (qx, qy), (ux, uy) = sd.path.through, sd.path.u
@@ -108,16 +113,31 @@ def geometry(scene, plan, piston: str, side: float) -> SliderCrankGeometry:
     fx, fy = qx + t * ux, qy + t * uy
     e = math.hypot(ox - fx, oy - fy)
     if l <= r + e:
-        raise PolygonMethodError(f"[indicator]: the crank {first.link} cannot turn fully "
-                                 "(l <= r + e): no engine cycle", file=scene.file,
-                                 key="[indicator]")
+        raise PolygonMethodError(
+            f"[indicator]: the crank {first.link} cannot turn fully (l <= r + e): no engine cycle",
+            file=scene.file,
+            key="[indicator]",
+        )
     far, near = math.sqrt((l + r) ** 2 - e * e), math.sqrt((l - r) ** 2 - e * e)
     bi = (fx + side * far * ux, fy + side * far * uy)
     bo = (fx + side * near * ux, fy + side * near * uy)
     th_i = math.atan2(bi[1] - oy, bi[0] - ox)
     th_o = math.atan2(oy - bo[1], ox - bo[0])
-    return SliderCrankGeometry(first.link, piston, (ox, oy), r, l, (ux, uy), (fx, fy), e,
-                               side, 1.0 if w > 0 else -1.0, th_i, th_o, far - near)
+    return SliderCrankGeometry(
+        first.link,
+        piston,
+        (ox, oy),
+        r,
+        l,
+        (ux, uy),
+        (fx, fy),
+        e,
+        side,
+        1.0 if w > 0 else -1.0,
+        th_i,
+        th_o,
+        far - near,
+    )
 
 
 def table_pressure(xs, ps, cycle, phase):

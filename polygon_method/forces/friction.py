@@ -107,15 +107,24 @@ def apply(led, items):
             led.couple(it[0], it[2], it[1])
         else:
             body, what, (fx, fy), (x, y) = it
-            led.add(body, fx, fy, x, y, what, Side("friction", body, "", what.split()[-1],
-                                                   (fx, fy), (x, y)))
+            led.add(
+                body,
+                fx,
+                fy,
+                x,
+                y,
+                what,
+                Side("friction", body, "", what.split()[-1], (fx, fy), (x, y)),
+            )
 
 
 def scale(f) -> float:
     """The largest pin or guide force of the analysis ``f`` (N; at least 1e-300)."""
-    vals = [float(getattr(v, "max", lambda v=v: v)()) for v in
-            [(p.force[0] ** 2 + p.force[1] ** 2) ** 0.5 for p in f.pins]
-            + [abs(g.normal) for g in f.guides]]
+    vals = [
+        float(getattr(v, "max", lambda v=v: v)())
+        for v in [(p.force[0] ** 2 + p.force[1] ** 2) ** 0.5 for p in f.pins]
+        + [abs(g.normal) for g in f.guides]
+    ]
     return max(vals + [1e-300])
 
 

@@ -63,17 +63,33 @@ def step(st, P, led, own):
     out = []
     for s, n, (ux, uy) in ((st.first, n1, (u1x, u1y)), (st.second, n2, (u2x, u2y))):
         g = GuideForce(X, n, (-uy, ux), _body(s, own), 0.0, s.key)
-        led.add(g.by, -g.force[0], -g.force[1], x, y,
-                side=Side("guide", g.by, pb, X, (-g.force[0], -g.force[1]), (x, y)))
+        led.add(
+            g.by,
+            -g.force[0],
+            -g.force[1],
+            x,
+            y,
+            side=Side("guide", g.by, pb, X, (-g.force[0], -g.force[1]), (x, y)),
+        )
         out.append(g)
     eq = ()
     if isinstance(n1, float):
-        eq = (f"the peg: N_1 n_1 + N_2 n_2 + R = 0, R = ({fmt(k[0])}, {fmt(k[1])}) N the "
-              f"known forces on it: N_1 = {fmt(n1)} N ({out[0].by}), N_2 = {fmt(n2)} N "
-              f"({out[1].by})",)
-    rec = ForceStep(st.index, "peg", st.title, (pb,), (k,),
-                    tuple((f"N_{g.key} on {pb} by {g.by}", g.normal) for g in out), cond,
-                    "the sine of the angle between the slots", eq)
+        eq = (
+            f"the peg: N_1 n_1 + N_2 n_2 + R = 0, R = ({fmt(k[0])}, {fmt(k[1])}) N the "
+            f"known forces on it: N_1 = {fmt(n1)} N ({out[0].by}), N_2 = {fmt(n2)} N "
+            f"({out[1].by})",
+        )
+    rec = ForceStep(
+        st.index,
+        "peg",
+        st.title,
+        (pb,),
+        (k,),
+        tuple((f"N_{g.key} on {pb} by {g.by}", g.normal) for g in out),
+        cond,
+        "the sine of the angle between the slots",
+        eq,
+    )
     return (), tuple(out), rec, None
 
 

@@ -34,6 +34,7 @@ def solve(known, u, m, phi):
     """(T along u, N along m, the guide's G along n = perp(u)) holding the rack against the
     known resultant ``known`` (Fx, Fy)."""
     import math
+
     rx, ry = known[0], known[1]
     ux, uy = u
     mx, my = m
@@ -75,25 +76,34 @@ def step(st, P, led, own):
     c = -(mr + cross(ix - xx, iy - xy, fx, fy))
     contact = Contact(bl, (ix, iy), n, -t * s, (mx, my), st.base, phi, stated)
     guide = GuideForce(X, g, (-uy, ux), FRAME, c)
-    led.add(st.base, -fx, -fy, ix, iy, side=Side("contact", st.base, bl, "I", (-fx, -fy),
-                                                 (ix, iy)))
+    led.add(st.base, -fx, -fy, ix, iy, side=Side("contact", st.base, bl, "I", (-fx, -fy), (ix, iy)))
     led.add(FRAME, g * uy, -g * ux, xx, xy)
     led.couple(FRAME, -c)
     eq = ()
     if isinstance(t, float):
-        eq = (f"the tooth load on rack {X} by the pinion {st.base} acts at the pitch point I "
-              f"along the line of action, at the pressure angle {contact.angle_words()} to "
-              "the pitch line, pushing the rack away from the pinion",
-              f"the rack along its guide: T + R . u = 0, R = ({fmt(kb[0])}, {fmt(kb[1])}) N "
-              f"the known forces on {bl}: T = {fmt(t)} N (along the guide's direction)",
-              f"N = |T| tan phi = {fmt(n)} N; the tooth load |T| / cos phi = "
-              f"{fmt(contact.load)} N",
-              f"across the guide: G = -(R . n + N m . n) = {fmt(g)} N; the guide's couple "
-              f"C = -(M_{X} + (I - {X}) x F) = {fmt(c)} N m (it keeps the rack from turning)")
-    rec = ForceStep(st.index, "rack", st.title, (bl,), (kb,),
-                    ((f"F_I on {bl} by {st.base} (the tooth load along the line of action)",
-                      (fx, fy)),
-                     (f"N_{X} on {bl} by the guide", g),
-                     (f"C on {bl} by the guide", c)), 1.0, "", eq)
+        eq = (
+            f"the tooth load on rack {X} by the pinion {st.base} acts at the pitch point I "
+            f"along the line of action, at the pressure angle {contact.angle_words()} to "
+            "the pitch line, pushing the rack away from the pinion",
+            f"the rack along its guide: T + R . u = 0, R = ({fmt(kb[0])}, {fmt(kb[1])}) N "
+            f"the known forces on {bl}: T = {fmt(t)} N (along the guide's direction)",
+            f"N = |T| tan phi = {fmt(n)} N; the tooth load |T| / cos phi = {fmt(contact.load)} N",
+            f"across the guide: G = -(R . n + N m . n) = {fmt(g)} N; the guide's couple "
+            f"C = -(M_{X} + (I - {X}) x F) = {fmt(c)} N m (it keeps the rack from turning)",
+        )
+    rec = ForceStep(
+        st.index,
+        "rack",
+        st.title,
+        (bl,),
+        (kb,),
+        (
+            (f"F_I on {bl} by {st.base} (the tooth load along the line of action)", (fx, fy)),
+            (f"N_{X} on {bl} by the guide", g),
+            (f"C on {bl} by the guide", c),
+        ),
+        1.0,
+        "",
+        eq,
+    )
     return (), (contact, guide), rec, None
-

@@ -151,30 +151,38 @@ class Contact:
         n, t = self.normal, self.tangential
         if not isinstance(n, float):  # a sweep: where it lifts off, no number
             import numpy as np
+
             return np.where(n > 0, np.abs(t) / np.where(n > 0, n, 1.0), np.inf)
         return abs(t) / n if n > 0 else None
 
     def angle_words(self) -> str:
         """The pressure angle in words, saying where it is the default."""
         deg = math.degrees(self.teeth)
-        return f"{deg:.4g} deg" + ("" if self.stated else " (the default; pressure_angle in "
-                                   "[rolling] gives it)")
+        return f"{deg:.4g} deg" + (
+            "" if self.stated else " (the default; pressure_angle in [rolling] gives it)"
+        )
 
     def grip_words(self) -> str:
         """The friction rolling needs here, in words (or why the wheel lifts off); for
         teeth, the tooth load along the line of action."""
         if self.teeth is not None:
-            return (f"the tooth load along the line of action, at the pressure angle "
-                    f"{self.angle_words()} to the common tangent: {self.load:.4g} N (its "
-                    f"part along the tangent {abs(self.tangential):.4g} N, pushing the teeth "
-                    f"apart {self.normal:.4g} N)")
+            return (
+                f"the tooth load along the line of action, at the pressure angle "
+                f"{self.angle_words()} to the common tangent: {self.load:.4g} N (its "
+                f"part along the tangent {abs(self.tangential):.4g} N, pushing the teeth "
+                f"apart {self.normal:.4g} N)"
+            )
         mu = self.required_friction
         if mu is None:
-            return (f"the ground would have to pull wheel {self.wheel} down (N = "
-                    f"{self.normal:.4g} N): it lifts off the line, and rolling without "
-                    "slip does not hold")
-        return (f"no slip needs a friction coefficient of at least |T| / N = {mu:.3g} at the "
-                f"contact of {self.wheel}")
+            return (
+                f"the ground would have to pull wheel {self.wheel} down (N = "
+                f"{self.normal:.4g} N): it lifts off the line, and rolling without "
+                "slip does not hold"
+            )
+        return (
+            f"no slip needs a friction coefficient of at least |T| / N = {mu:.3g} at the "
+            f"contact of {self.wheel}"
+        )
 
 
 @dataclass(frozen=True)
@@ -264,8 +272,13 @@ def side_label(side: Side, numbers: dict, unicode: bool = True) -> str:
 def couple_label(c: Couple, numbers: dict, unicode: bool = True) -> str:
     """``T2`` the driver's torque on link 2, ``C4`` a couple on link 4, ``Ci3`` the inertia
     couple of link 3."""
-    head = {"torque": "T", "load": "C", "guide": "C", "friction": "C\u03bc" if unicode
-            else "Cmu", "inertia": "C\u1d62" if unicode else "Ci"}[c.what]
+    head = {
+        "torque": "T",
+        "load": "C",
+        "guide": "C",
+        "friction": "C\u03bc" if unicode else "Cmu",
+        "inertia": "C\u1d62" if unicode else "Ci",
+    }[c.what]
     return head + _sub(numbers, c.on, unicode=unicode)
 
 
@@ -449,8 +462,9 @@ class Forces:
         return next((i for i in self.inertia if i.body == body), None)
 
 
-def quick_forces(effort, shaking_force, shaking_moment, crank, driver, second_torque,
-                 second_crank, source) -> Forces:
+def quick_forces(
+    effort, shaking_force, shaking_moment, crank, driver, second_torque, second_crank, source
+) -> Forces:
     """``Forces(effort, shaking_force, ...)``, its fields put straight into the instance's
     dictionary (the frozen dataclass's ``__init__`` sets them one by one through
     ``object.__setattr__``: three times as long, a sixth of the short road's cost on a
@@ -487,15 +501,19 @@ def force_value(f: Forces, kind: str, name: str) -> float:
     if kind in ("Fi", "Ci", "h"):
         i = f.inertia_of(name)
         if i is None:
-            raise SceneError(f"{kind}_{name.removeprefix('block ')}: {name} has no mass in "
-                             "[masses]: no inertia force")
+            raise SceneError(
+                f"{kind}_{name.removeprefix('block ')}: {name} has no mass in "
+                "[masses]: no inertia force"
+            )
         if kind == "Fi":
             return (i.force[0] ** 2 + i.force[1] ** 2) ** 0.5
         if kind == "Ci":
             return i.couple
         if i.offset is None and i.couple != 0:
-            raise SceneError(f"h_{name.removeprefix('block ')}: a_G = 0: the inertia is a "
-                             "couple alone, with no single force to offset")
+            raise SceneError(
+                f"h_{name.removeprefix('block ')}: a_G = 0: the inertia is a "
+                "couple alone, with no single force to offset"
+            )
         return abs(i.offset or 0.0)
     if kind == "N":
         g = next((g for g in f.guides if g.key == name), None)
@@ -504,10 +522,16 @@ def force_value(f: Forces, kind: str, name: str) -> float:
         return abs(g.normal)
     found = [p for p in f.pins if p.point == name]
     if len(found) != 1:
-        raise SceneError(f"F_{name}: " + (f"no pin joins two bodies at {name}" if not found
-                         else f"the pin at {name} joins more than two bodies ("
-                         + ", ".join(sorted({b for p in found for b in (p.on, p.by)}))
-                         + "): its forces are in solve's table"))
+        raise SceneError(
+            f"F_{name}: "
+            + (
+                f"no pin joins two bodies at {name}"
+                if not found
+                else f"the pin at {name} joins more than two bodies ("
+                + ", ".join(sorted({b for p in found for b in (p.on, p.by)}))
+                + "): its forces are in solve's table"
+            )
+        )
     return found[0].magnitude
 
 
@@ -519,13 +543,22 @@ def _contact_dict(c: Contact) -> dict:
     """One contact's JSON entry: the force on the wheel by ``by`` at the contact point; for
     teeth the pressure angle (deg, and whether the scene states it) and the tooth load, for
     a friction grip the least friction coefficient."""
-    d = {"point": _vec(c.point), "by": c.by, "normal_force": c.normal + 0.0,
-         "tangential_force": c.tangential + 0.0, "normal": _vec(c.m), "force": _vec(c.force)}
+    d = {
+        "point": _vec(c.point),
+        "by": c.by,
+        "normal_force": c.normal + 0.0,
+        "tangential_force": c.tangential + 0.0,
+        "normal": _vec(c.m),
+        "force": _vec(c.force),
+    }
     if c.teeth is None:
         d["required_friction"] = c.required_friction
     else:
-        d.update(pressure_angle=math.degrees(c.teeth), pressure_angle_stated=c.stated,
-                 tooth_load=c.load + 0.0)
+        d.update(
+            pressure_angle=math.degrees(c.teeth),
+            pressure_angle_stated=c.stated,
+            tooth_load=c.load + 0.0,
+        )
     return d
 
 
@@ -534,41 +567,73 @@ def forces_dict(f: Forces) -> dict:
     ``convention``)."""
     pins = {}
     for p in f.pins:
-        pins.setdefault(p.point, []).append({"on": p.on, "by": p.by, "force": _vec(p.force),
-                                             "magnitude": p.magnitude})
+        pins.setdefault(p.point, []).append(
+            {"on": p.on, "by": p.by, "force": _vec(p.force), "magnitude": p.magnitude}
+        )
     return {
         "convention": "SI, counter-clockwise positive; a pin's force is the force on body "
-                      "'on' by body 'by' (body 'by' feels its opposite); moments about the "
-                      "frame's origin",
-        "bodies": {i.body: {"mass": i.mass, "moment_of_inertia": i.inertia,
-                            "centre_of_mass": _vec(i.G),
-                            "acceleration_of_centre": _vec(i.a_G),
-                            "inertia_force": _vec(i.force), "inertia_couple": i.couple + 0.0,
-                            "offset": i.offset,
-                            "offset_point": None if i.offset is None else _vec(i.offset_point)}
-                   for i in f.inertia},
+        "'on' by body 'by' (body 'by' feels its opposite); moments about the "
+        "frame's origin",
+        "bodies": {
+            i.body: {
+                "mass": i.mass,
+                "moment_of_inertia": i.inertia,
+                "centre_of_mass": _vec(i.G),
+                "acceleration_of_centre": _vec(i.a_G),
+                "inertia_force": _vec(i.force),
+                "inertia_couple": i.couple + 0.0,
+                "offset": i.offset,
+                "offset_point": None if i.offset is None else _vec(i.offset_point),
+            }
+            for i in f.inertia
+        },
         "pins": pins,
-        "guides": {g.key: {"normal_force": g.normal + 0.0, "normal": _vec(g.n),
-                           "force": _vec(g.force), "by": g.by,
-                           **({"couple": g.couple + 0.0} if g.couple is not None and
-                              isinstance(g.couple, float) and g.couple else {})}
-                   for g in f.guides},
-        ("input_torque" if f.driver in ("crank", "wheel") else "input_force"):
-            f.input_torque + 0.0,
+        "guides": {
+            g.key: {
+                "normal_force": g.normal + 0.0,
+                "normal": _vec(g.n),
+                "force": _vec(g.force),
+                "by": g.by,
+                **(
+                    {"couple": g.couple + 0.0}
+                    if g.couple is not None and isinstance(g.couple, float) and g.couple
+                    else {}
+                ),
+            }
+            for g in f.guides
+        },
+        ("input_torque" if f.driver in ("crank", "wheel") else "input_force"): f.input_torque + 0.0,
         **({} if f.centre_force is None else {"centre_force": _vec(f.centre_force)}),
         f.driver: f.crank,
-        **({} if f.second_crank is None else
-           {"second": {"crank": f.second_crank, "input_torque": f.second_torque + 0.0}}),
-        **({"contacts": {c.wheel: _contact_dict(c) for c in f.contacts}}
-           if f.contacts else {}),
-        **({"friction": {"power": f.friction_power + 0.0,
-                         "guides": [{"on": it[0], "what": it[1], "force": _vec(it[2]),
-                                     "at": _vec(it[3])} for it in f.friction if len(it) == 4],
-                         "pins": [{"on": it[0], "what": it[1], "couple": it[2] + 0.0}
-                                  for it in f.friction if len(it) == 3]}}
-           if f.friction else {}),
+        **(
+            {}
+            if f.second_crank is None
+            else {"second": {"crank": f.second_crank, "input_torque": f.second_torque + 0.0}}
+        ),
+        **({"contacts": {c.wheel: _contact_dict(c) for c in f.contacts}} if f.contacts else {}),
+        **(
+            {
+                "friction": {
+                    "power": f.friction_power + 0.0,
+                    "guides": [
+                        {"on": it[0], "what": it[1], "force": _vec(it[2]), "at": _vec(it[3])}
+                        for it in f.friction
+                        if len(it) == 4
+                    ],
+                    "pins": [
+                        {"on": it[0], "what": it[1], "couple": it[2] + 0.0}
+                        for it in f.friction
+                        if len(it) == 3
+                    ],
+                }
+            }
+            if f.friction
+            else {}
+        ),
         "shaking_force": _vec(f.shaking_force),
         "shaking_moment": f.shaking_moment + 0.0,
-        "steps": [{"step": s.index + 1, "kind": s.kind, "title": s.title,
-                   "condition": s.condition} for s in f.steps],
+        "steps": [
+            {"step": s.index + 1, "kind": s.kind, "title": s.title, "condition": s.condition}
+            for s in f.steps
+        ],
     }

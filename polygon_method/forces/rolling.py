@@ -55,8 +55,10 @@ def check(st, plan):
     whose centre neither a link finds nor the driver moves (no group holds its contact)."""
     if st.on != "line":
         return None
-    held = any(s is not st and st.centre in s.finds and getattr(s, "wheel", None) == st.wheel
-               for s in plan.steps)
+    held = any(
+        s is not st and st.centre in s.finds and getattr(s, "wheel", None) == st.wheel
+        for s in plan.steps
+    )
     return None if held else f"wheel {st.wheel} rolls on a line with its centre found by no link"
 
 
@@ -118,28 +120,44 @@ def step(st, P, led, own):
     base = FRAME if st.on == "circle" else st.base
     oc = own[C]
     contact = Contact(W, (ix, iy), n, t, m, base, phi, stated)
-    led.add(base, -F[0], -F[1], ix, iy,
-            side=Side("contact", base, W, "I", (-F[0], -F[1]), (ix, iy)))
+    led.add(
+        base, -F[0], -F[1], ix, iy, side=Side("contact", base, W, "I", (-F[0], -F[1]), (ix, iy))
+    )
     led.add(oc, -FC[0], -FC[1], cx, cy, side=Side("pin", oc, W, C, (-FC[0], -FC[1]), (cx, cy)))
     eq = ()
     if isinstance(t, float):
         mc = kw[2] - cross(cx, cy, kw[0], kw[1])
         by = "the fixed circle" if base == FRAME else base
-        eq = (f"the tooth load on {W} by {by} acts at the pitch point I along the line of "
-              f"action, at the pressure angle {contact.angle_words()} to the common tangent, "
-              "the teeth pushing apart",
-              f"moments of {W} about its centre {C} (the pin force there has no arm): "
-              f"M_{C} - r T = 0, M_{C} = {fmt(mc)} N m the known forces', r = {fmt(r)} m: "
-              f"T = M_{C} / r = {fmt(t)} N (along the common tangent)",
-              f"N = |T| tan phi = {fmt(n)} N (pushing {W} away from {by}: "
-              + ("outwards, a ring" if getattr(st, "ring", False) else "towards its centre")
-              + "); the tooth load "
-              f"|T| / cos phi = {fmt(contact.load)} N",
-              f"forces on {W}: F_{C} = -(the known forces + the tooth load) = "
-              f"({fmt(FC[0])}, {fmt(FC[1])}) N")
-    rec = ForceStep(st.index, "rolling", st.title, (W,), (kw,),
-                    ((f"F_I on {W} by {'the frame' if base == FRAME else base} (the tooth load "
-                      "along the line of action)", F),
-                     (f"F_{C} on {W} by {'the frame' if oc == FRAME else oc}", FC)),
-                    1.0, "", eq)
+        eq = (
+            f"the tooth load on {W} by {by} acts at the pitch point I along the line of "
+            f"action, at the pressure angle {contact.angle_words()} to the common tangent, "
+            "the teeth pushing apart",
+            f"moments of {W} about its centre {C} (the pin force there has no arm): "
+            f"M_{C} - r T = 0, M_{C} = {fmt(mc)} N m the known forces', r = {fmt(r)} m: "
+            f"T = M_{C} / r = {fmt(t)} N (along the common tangent)",
+            f"N = |T| tan phi = {fmt(n)} N (pushing {W} away from {by}: "
+            + ("outwards, a ring" if getattr(st, "ring", False) else "towards its centre")
+            + "); the tooth load "
+            f"|T| / cos phi = {fmt(contact.load)} N",
+            f"forces on {W}: F_{C} = -(the known forces + the tooth load) = "
+            f"({fmt(FC[0])}, {fmt(FC[1])}) N",
+        )
+    rec = ForceStep(
+        st.index,
+        "rolling",
+        st.title,
+        (W,),
+        (kw,),
+        (
+            (
+                f"F_I on {W} by {'the frame' if base == FRAME else base} (the tooth load "
+                "along the line of action)",
+                F,
+            ),
+            (f"F_{C} on {W} by {'the frame' if oc == FRAME else oc}", FC),
+        ),
+        1.0,
+        "",
+        eq,
+    )
     return (PinForce(C, W, oc, FC),), (contact,), rec, None

@@ -93,6 +93,7 @@ def bind(st, own, ix):
         pins += ((x, lk, bl, p), (b, lk, ob, fb))
         S.add(ib, -fb[0], -fb[1], bx, by)
         S.add(ig, -(n * nv[0]), -(n * nv[1]), xx, xy)
+
     return run
 
 
@@ -111,14 +112,21 @@ def step(st, P, led, own):
     ux, uy = u
     g = GuideForce(x, n, (-uy, ux), gb)
     known_l, known_b = led.known(lk), led.known(bl)
-    led.add(ob, -fb[0], -fb[1], bx, by, side=Side("pin", ob, lk, st.b, (-fb[0], -fb[1]),
-                                                 (bx, by)))
-    led.add(gb, -g.force[0], -g.force[1], xx, xy,
-            side=None if gb == FRAME else Side("guide", gb, bl, x, (-g.force[0], -g.force[1]),
-                                               (xx, xy)))
+    led.add(ob, -fb[0], -fb[1], bx, by, side=Side("pin", ob, lk, st.b, (-fb[0], -fb[1]), (bx, by)))
+    led.add(
+        gb,
+        -g.force[0],
+        -g.force[1],
+        xx,
+        xy,
+        side=None
+        if gb == FRAME
+        else Side("guide", gb, bl, x, (-g.force[0], -g.force[1]), (xx, xy)),
+    )
     eq = ()
     drawing = None
     if isinstance(cond, float):  # one instant: the working in words, the force polygon
+
         def drawn():
             B, X = (bx, by), (xx, xy)
             whole_b = Side("pin", lk, ob, st.b, fb, B)
@@ -127,24 +135,41 @@ def step(st, P, led, own):
             # forces, the block's, the guide's normal force (found last): closed
             polygon = (bn, bt) + known_l + known_b + (Side("guide", bl, gb, x, g.force, X),)
             k = len(polygon)
-            return (polygon, ((0, unit(B, X)), (k - 1, g.n)),
-                    ((whole_b, 0, 2), (Side("pin", lk, bl, x, p, X), 2 + len(known_l), 0)))
+            return (
+                polygon,
+                ((0, unit(B, X)), (k - 1, g.n)),
+                ((whole_b, 0, 2), (Side("pin", lk, bl, x, p, X), 2 + len(known_l), 0)),
+            )
+
         drawing = drawn
         B = st.b
         mb = kl[2] - cross(bx, by, kl[0], kl[1])
         ex, ey = xx - bx, xy - by
-        eq = (f"moments of {lk} about {B}: ({x} - {B}) x (N n + R) + M_{B} = 0, R = "
-              f"({fmt(kb[0])}, {fmt(kb[1])}) N the known forces on the block, M_{B} = "
-              f"{fmt(mb)} N m those on {lk}",
-              f"N = -(M_{B} + ({x} - {B}) x R) / (({x} - {B}) . u) = -({fmt(mb)} + "
-              f"{fmt(cross(ex, ey, kb[0], kb[1]))}) / {fmt(ex * ux + ey * uy)} = {fmt(n)} N",
-              f"the block: F_{x} = N n + R = ({fmt(p[0])}, {fmt(p[1])}) N on {lk}",
-              f"forces on {lk}: F_{B} = -(the known forces + F_{x}) = ({fmt(fb[0])}, "
-              f"{fmt(fb[1])}) N")
-    rec = ForceStep(st.index, "slider", st.title, (lk, bl), (kl, kb),
-                    ((f"N_{x} on {bl} by the guide", n), (f"F_{x} on {lk} by {bl}", p),
-                     (f"F_{st.b} on {lk} by {ob}", fb)), cond,
-                    f"cosine of the angle between {st.b}{x} and the guide", eq, drawing)
+        eq = (
+            f"moments of {lk} about {B}: ({x} - {B}) x (N n + R) + M_{B} = 0, R = "
+            f"({fmt(kb[0])}, {fmt(kb[1])}) N the known forces on the block, M_{B} = "
+            f"{fmt(mb)} N m those on {lk}",
+            f"N = -(M_{B} + ({x} - {B}) x R) / (({x} - {B}) . u) = -({fmt(mb)} + "
+            f"{fmt(cross(ex, ey, kb[0], kb[1]))}) / {fmt(ex * ux + ey * uy)} = {fmt(n)} N",
+            f"the block: F_{x} = N n + R = ({fmt(p[0])}, {fmt(p[1])}) N on {lk}",
+            f"forces on {lk}: F_{B} = -(the known forces + F_{x}) = ({fmt(fb[0])}, {fmt(fb[1])}) N",
+        )
+    rec = ForceStep(
+        st.index,
+        "slider",
+        st.title,
+        (lk, bl),
+        (kl, kb),
+        (
+            (f"N_{x} on {bl} by the guide", n),
+            (f"F_{x} on {lk} by {bl}", p),
+            (f"F_{st.b} on {lk} by {ob}", fb),
+        ),
+        cond,
+        f"cosine of the angle between {st.b}{x} and the guide",
+        eq,
+        drawing,
+    )
     return (PinForce(x, lk, bl, p), PinForce(st.b, lk, ob, fb)), (g,), rec, None
 
 

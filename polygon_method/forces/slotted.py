@@ -83,6 +83,7 @@ def bind(st, own, ix):
         pins += ((k, lv, ok, fk), (a, bl, oa, fa))
         S.add(iok, -fk[0], -fk[1], kx, ky)
         S.add(ioa, -fa[0], -fa[1], ax, ay)
+
     return run
 
 
@@ -107,18 +108,30 @@ def step(st, P, led, own):
     eq = ()
     if isinstance(cond, float):  # one instant: the working in words
         mk = kl[2] - cross(kx, ky, kl[0], kl[1])
-        eq = (f"moments of {lv} about {k}: ({a} - {k}) x (-N n) + M_{k} = 0, M_{k} = "
-              f"{fmt(mk)} N m the known forces' on {lv}",
-              f"N = M_{k} / (({a} - {k}) . u) = {fmt(mk)} / {fmt((ax - kx) * ux + (ay - ky) * uy)}"
-              f" = {fmt(n)} N, the lever's push on {bl} (the block pushes the lever back)",
-              f"forces on {lv}: F_{k} = -(the known forces - N n) = ({fmt(fk[0])}, "
-              f"{fmt(fk[1])}) N",
-              f"the block: F_{a} = -(N n + R) = ({fmt(fa[0])}, {fmt(fa[1])}) N on {bl} by "
-              f"{oa}, R = ({fmt(kb[0])}, {fmt(kb[1])}) N the known forces on it")
-    rec = ForceStep(st.index, "slotted", st.title, (lv, bl), (kl, kb),
-                    ((f"N_{a} on {bl} by {lv}", n), (f"F_{k} on {lv} by {ok}", fk),
-                     (f"F_{a} on {bl} by {oa}", fa)), cond,
-                    f"|{k}{a}| / {lv}: the block's distance from the lever's pivot", eq)
+        eq = (
+            f"moments of {lv} about {k}: ({a} - {k}) x (-N n) + M_{k} = 0, M_{k} = "
+            f"{fmt(mk)} N m the known forces' on {lv}",
+            f"N = M_{k} / (({a} - {k}) . u) = {fmt(mk)} / {fmt((ax - kx) * ux + (ay - ky) * uy)}"
+            f" = {fmt(n)} N, the lever's push on {bl} (the block pushes the lever back)",
+            f"forces on {lv}: F_{k} = -(the known forces - N n) = ({fmt(fk[0])}, {fmt(fk[1])}) N",
+            f"the block: F_{a} = -(N n + R) = ({fmt(fa[0])}, {fmt(fa[1])}) N on {bl} by "
+            f"{oa}, R = ({fmt(kb[0])}, {fmt(kb[1])}) N the known forces on it",
+        )
+    rec = ForceStep(
+        st.index,
+        "slotted",
+        st.title,
+        (lv, bl),
+        (kl, kb),
+        (
+            (f"N_{a} on {bl} by {lv}", n),
+            (f"F_{k} on {lv} by {ok}", fk),
+            (f"F_{a} on {bl} by {oa}", fa),
+        ),
+        cond,
+        f"|{k}{a}| / {lv}: the block's distance from the lever's pivot",
+        eq,
+    )
     return (PinForce(k, lv, ok, fk), PinForce(a, bl, oa, fa)), (g,), rec, None
 
 

@@ -46,8 +46,12 @@ def solve3x3(e, r, rhs):
     cols = [(ex, ey, cross(rx, ry, ex, ey)) for (ex, ey), (rx, ry) in zip(e, r)]
 
     def det(c1, c2, c3):
-        return (c1[0] * (c2[1] * c3[2] - c2[2] * c3[1]) - c2[0] * (c1[1] * c3[2] - c1[2] * c3[1])
-                + c3[0] * (c1[1] * c2[2] - c1[2] * c2[1]))
+        return (
+            c1[0] * (c2[1] * c3[2] - c2[2] * c3[1])
+            - c2[0] * (c1[1] * c3[2] - c1[2] * c3[1])
+            + c3[0] * (c1[1] * c2[2] - c1[2] * c2[1])
+        )
+
     d = det(*cols)
     size = 1.0
     for c in cols:
@@ -55,8 +59,12 @@ def solve3x3(e, r, rhs):
     cond = abs(d) / size
     if any_zero(d):
         return None, None, None, 0.0
-    return (det(rhs, cols[1], cols[2]) / d, det(cols[0], rhs, cols[2]) / d,
-            det(cols[0], cols[1], rhs) / d, cond)
+    return (
+        det(rhs, cols[1], cols[2]) / d,
+        det(cols[0], rhs, cols[2]) / d,
+        det(cols[0], cols[1], rhs) / d,
+        cond,
+    )
 
 
 def covers(st) -> bool:
@@ -102,28 +110,40 @@ def step(st, P, led, own):
         b.append(-mk / L)
         r.append(((vx - x1) / S, (vy - y1) / S))
     m1 = kp[2] - cross(x1, y1, kp[0], kp[1])
-    rhs = (kp[0] - sum(bi * ni[0] for bi, ni in zip(b, n)),
-           kp[1] - sum(bi * ni[1] for bi, ni in zip(b, n)),
-           m1 / S - sum(bi * cross(ri[0], ri[1], ni[0], ni[1]) for bi, ri, ni in zip(b, r, n)))
+    rhs = (
+        kp[0] - sum(bi * ni[0] for bi, ni in zip(b, n)),
+        kp[1] - sum(bi * ni[1] for bi, ni in zip(b, n)),
+        m1 / S - sum(bi * cross(ri[0], ri[1], ni[0], ni[1]) for bi, ri, ni in zip(b, r, n)),
+    )
     a1, a2, a3, cond = solve3x3(e, r, rhs)
     if a1 is None:
         raise Singular(f"the lines of {', '.join(st.links_)} meet in one point")
     pins, found, eq = [], [], []
-    for ai, bi, ei, ni, kl, lk, K, V in zip((a1, a2, a3), b, e, n, kls, st.links_, st.knowns,
-                                           st.points):
+    for ai, bi, ei, ni, kl, lk, K, V in zip(
+        (a1, a2, a3), b, e, n, kls, st.links_, st.knowns, st.points
+    ):
         p = (ai * ei[0] + bi * ni[0], ai * ei[1] + bi * ni[1])
         fk = (-(kl[0] + p[0]), -(kl[1] + p[1]))
         ok = own[K]
         (kx, ky) = P[K]
-        led.add(ok, -fk[0], -fk[1], kx, ky,
-                side=Side("pin", ok, lk, K, (-fk[0], -fk[1]), (kx, ky)))
+        led.add(ok, -fk[0], -fk[1], kx, ky, side=Side("pin", ok, lk, K, (-fk[0], -fk[1]), (kx, ky)))
         pins += [PinForce(V, lk, plate, p), PinForce(K, lk, ok, fk)]
         found += [(f"F_{V} on {lk} by {plate}", p), (f"F_{K} on {lk} by {ok}", fk)]
         if isinstance(ai, float):
-            eq.append(f"{lk}: across it b = -M_{K} / {lk} = {fmt(bi)} N (its moments about "
-                      f"{K}); along it a = {fmt(ai)} N (the plate's 3x3 solve)")
-    rec = ForceStep(st.index, "triad", st.title, (plate,) + tuple(st.links_),
-                    (kp,) + tuple(kls), tuple(found), cond,
-                    "the plate's 3x3 determinant over its columns' sizes (zero where the "
-                    "three links' lines meet in one point)", tuple(eq))
+            eq.append(
+                f"{lk}: across it b = -M_{K} / {lk} = {fmt(bi)} N (its moments about "
+                f"{K}); along it a = {fmt(ai)} N (the plate's 3x3 solve)"
+            )
+    rec = ForceStep(
+        st.index,
+        "triad",
+        st.title,
+        (plate,) + tuple(st.links_),
+        (kp,) + tuple(kls),
+        tuple(found),
+        cond,
+        "the plate's 3x3 determinant over its columns' sizes (zero where the "
+        "three links' lines meet in one point)",
+        tuple(eq),
+    )
     return tuple(pins), (), rec, None

@@ -83,15 +83,28 @@ def step(st, P, led, own):
     eq = ()
     if isinstance(n, float):
         mc = kw[2] - cross(cx, cy, kw[0], kw[1])
-        eq = (f"moments of wheel {wh} about {C}: M_{C} - r T = 0, M_{C} = {fmt(mc)} N m the "
-              f"known forces': T = M_{C} / r = {fmt(t)} N (the ground's grip along the line)",
-              f"moments of {lk} about {st.b}: N = {fmt(n)} N (the ground's push, normal to "
-              "the line)",
-              f"the wheel's push on {lk} at {C}: Q = N m + T t + R = ({fmt(q[0])}, "
-              f"{fmt(q[1])}) N; forces on {lk}: F_{st.b} = ({fmt(fb[0])}, {fmt(fb[1])}) N",
-              contact.grip_words())
-    rec = ForceStep(st.index, "wheel centre", st.title, (lk, wh), (kl, kw),
-                    ((f"N at the contact of {wh}", n), (f"T at the contact of {wh}", t),
-                     (f"F_{C} on {lk} by {wh}", q), (f"F_{st.b} on {lk} by {ob}", fb)),
-                    cond, f"cosine of the angle between {st.b}{C} and the line", eq)
+        eq = (
+            f"moments of wheel {wh} about {C}: M_{C} - r T = 0, M_{C} = {fmt(mc)} N m the "
+            f"known forces': T = M_{C} / r = {fmt(t)} N (the ground's grip along the line)",
+            f"moments of {lk} about {st.b}: N = {fmt(n)} N (the ground's push, normal to the line)",
+            f"the wheel's push on {lk} at {C}: Q = N m + T t + R = ({fmt(q[0])}, "
+            f"{fmt(q[1])}) N; forces on {lk}: F_{st.b} = ({fmt(fb[0])}, {fmt(fb[1])}) N",
+            contact.grip_words(),
+        )
+    rec = ForceStep(
+        st.index,
+        "wheel centre",
+        st.title,
+        (lk, wh),
+        (kl, kw),
+        (
+            (f"N at the contact of {wh}", n),
+            (f"T at the contact of {wh}", t),
+            (f"F_{C} on {lk} by {wh}", q),
+            (f"F_{st.b} on {lk} by {ob}", fb),
+        ),
+        cond,
+        f"cosine of the angle between {st.b}{C} and the line",
+        eq,
+    )
     return (PinForce(C, lk, wh, q), PinForce(st.b, lk, ob, fb)), (contact,), rec, None

@@ -78,15 +78,29 @@ def step(st, P, led, own):
     eq = ()
     if isinstance(tau, float):
         mc = kw[2] - cross(cx, cy, kw[0], kw[1])
-        eq = (f"the wheel {W} alone: its driver's torque tau, the ground's N m + T t at the "
-              f"contact I, the known forces R = ({fmt(kw[0])}, {fmt(kw[1])}) N, M_{C} = "
-              f"{fmt(mc)} N m about its centre",
-              f"along the ground: T = -R . t = {fmt(t)} N; across it: N = -R . m = {fmt(n)} N",
-              f"moments about {C}: M_{C} + tau - r T = 0: tau = r T - M_{C} = {fmt(tau)} N m",
-              f"or as a force at the centre along the ground: F = tau / r = {fmt(tau / r)} N "
-              "(the same power)",
-              contact.grip_words())
-    rec = ForceStep(st.index, "rolling driver", st.title, (W,), (kw,),
-                    ((f"N at the contact of {W}", n), (f"T at the contact of {W}", t),
-                     (f"T on {W} by its driver", tau)), 1.0, "", eq)
+        eq = (
+            f"the wheel {W} alone: its driver's torque tau, the ground's N m + T t at the "
+            f"contact I, the known forces R = ({fmt(kw[0])}, {fmt(kw[1])}) N, M_{C} = "
+            f"{fmt(mc)} N m about its centre",
+            f"along the ground: T = -R . t = {fmt(t)} N; across it: N = -R . m = {fmt(n)} N",
+            f"moments about {C}: M_{C} + tau - r T = 0: tau = r T - M_{C} = {fmt(tau)} N m",
+            f"or as a force at the centre along the ground: F = tau / r = {fmt(tau / r)} N "
+            "(the same power)",
+            contact.grip_words(),
+        )
+    rec = ForceStep(
+        st.index,
+        "rolling driver",
+        st.title,
+        (W,),
+        (kw,),
+        (
+            (f"N at the contact of {W}", n),
+            (f"T at the contact of {W}", t),
+            (f"T on {W} by its driver", tau),
+        ),
+        1.0,
+        "",
+        eq,
+    )
     return (), (contact,), rec, tau

@@ -81,17 +81,30 @@ def step(st, P, led, own):
     led.couple(FRAME, -c)
     eq = ()
     if isinstance(nd, float):  # one instant (its condition is a number even over a sweep)
-        eq = (f"the yoke along its path: -N_d (n_d . u) + R_Y . u = 0, R_Y = ({fmt(ky[0])}, "
-              f"{fmt(ky[1])}) N the known forces on {yb}: N_d = {fmt(nd)} N (the slot's "
-              f"force on {xb})",
-              f"across the path: N_u = {fmt(nu)} N; moments about {Y}: the path's couple "
-              f"C = {fmt(c)} N m",
-              f"the block: F_{X} = -(N_d n_d + R) = ({fmt(fp[0])}, {fmt(fp[1])}) N on {xb} "
-              f"by {op}")
-    rec = ForceStep(st.index, "yoke", st.title, (yb, xb), (ky, kx),
-                    ((f"N_{X} on {xb} by {yb}", nd), (f"N_{Y} on {yb} by the path", nu),
-                     (f"C on {yb} by the path", c), (f"F_{X} on {xb} by {op}", fp)), cond,
-                    "the sine of the angle between the slot and the path", eq)
+        eq = (
+            f"the yoke along its path: -N_d (n_d . u) + R_Y . u = 0, R_Y = ({fmt(ky[0])}, "
+            f"{fmt(ky[1])}) N the known forces on {yb}: N_d = {fmt(nd)} N (the slot's "
+            f"force on {xb})",
+            f"across the path: N_u = {fmt(nu)} N; moments about {Y}: the path's couple "
+            f"C = {fmt(c)} N m",
+            f"the block: F_{X} = -(N_d n_d + R) = ({fmt(fp[0])}, {fmt(fp[1])}) N on {xb} by {op}",
+        )
+    rec = ForceStep(
+        st.index,
+        "yoke",
+        st.title,
+        (yb, xb),
+        (ky, kx),
+        (
+            (f"N_{X} on {xb} by {yb}", nd),
+            (f"N_{Y} on {yb} by the path", nu),
+            (f"C on {yb} by the path", c),
+            (f"F_{X} on {xb} by {op}", fp),
+        ),
+        cond,
+        "the sine of the angle between the slot and the path",
+        eq,
+    )
     return (PinForce(X, xb, op, fp),), (slot, path), rec, None
 
 

@@ -32,9 +32,22 @@ from __future__ import annotations
 from .analysis import Linkage, Stationary, Transmission, analyse
 from .engine import engine_formula_lines
 from .flywheel import TurningMoment, engine_cycle_lines, turning_moment
-from .shapes import (FourBar, Grashof, SliderCrank, four_bar_of, grashof, slider_crank_of,
-                     slotted_of)
+from .shapes import FourBar, Grashof, SliderCrank, four_bar_of, grashof, slider_crank_of, slotted_of
 
-__all__ = ["grashof", "Grashof", "analyse", "Linkage", "Stationary", "Transmission",
-           "engine_formula_lines", "slider_crank_of", "four_bar_of", "slotted_of", "FourBar", "SliderCrank",
-           "TurningMoment", "turning_moment", "engine_cycle_lines"]
+__all__ = [
+    "grashof",
+    "Grashof",
+    "analyse",
+    "Linkage",
+    "Stationary",
+    "Transmission",
+    "engine_formula_lines",
+    "slider_crank_of",
+    "four_bar_of",
+    "slotted_of",
+    "FourBar",
+    "SliderCrank",
+    "TurningMoment",
+    "turning_moment",
+    "engine_cycle_lines",
+]

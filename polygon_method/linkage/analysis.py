@@ -18,8 +18,17 @@ from ..motion.solution import solve
 from ..solver.tracking import TWO_PI
 from .cycle import _Cycle, stands_still
 from .engine import _engine_lines
-from .shapes import (FourBar, Grashof, _Output, _output_of, four_bar_of, grashof,
-                     slider_crank_of, slotted_of, standing_steps)
+from .shapes import (
+    FourBar,
+    Grashof,
+    _Output,
+    _output_of,
+    four_bar_of,
+    grashof,
+    slider_crank_of,
+    slotted_of,
+    standing_steps,
+)
 
 
 # --------------------------------------------------------------------------- results
@@ -93,32 +102,45 @@ class Linkage:
         out.extend("  " + x for x in self.input_toggles)
         if self.output_label:
             if self.stationary:
-                out.append(f"  driving from the output ({self.output_label}): it cannot "
-                           "drive the crank through")
+                out.append(
+                    f"  driving from the output ({self.output_label}): it cannot "
+                    "drive the crank through"
+                )
                 for s in self.stationary:
                     out.append(f"    crank at {s.deg:9.4f} deg: {s.what}")
             elif any("dwells" in n for n in self.notes):
-                out.append(f"  driving from the output ({self.output_label}): it dwells over "
-                           "whole ranges of the crank (see below)")
+                out.append(
+                    f"  driving from the output ({self.output_label}): it dwells over "
+                    "whole ranges of the crank (see below)"
+                )
             else:
-                out.append(f"  driving from the output ({self.output_label}): none (it never "
-                           "stands still while the crank turns)")
+                out.append(
+                    f"  driving from the output ({self.output_label}): none (it never "
+                    "stands still while the crank turns)"
+                )
         out.append("")
         for t in self.transmission:
             out.append(f"transmission angle at {t.point} ({t.between}, acute angle)")
             if t.now is not None:
                 said = f", {sc.input.angle_words}" if sc.input.angle_words else ""
-                out.append(f"  now (crank at {_turn(math.degrees(sc.input.angle)):g} deg"
-                           f"{said}): "
-                           f"{t.now:.2f} deg")
-            out.append(f"  over the motion: minimum {t.minimum:.2f} deg at crank "
-                       f"{t.at_min:.2f} deg, maximum {t.maximum:.2f} deg at crank "
-                       f"{t.at_max:.2f} deg")
+                out.append(
+                    f"  now (crank at {_turn(math.degrees(sc.input.angle)):g} deg"
+                    f"{said}): "
+                    f"{t.now:.2f} deg"
+                )
+            out.append(
+                f"  over the motion: minimum {t.minimum:.2f} deg at crank "
+                f"{t.at_min:.2f} deg, maximum {t.maximum:.2f} deg at crank "
+                f"{t.at_max:.2f} deg"
+            )
             if t.warn:
-                rng = ", ".join(f"{a:.2f} to {b:.2f}" + (" (through 0)" if b < a else "")
-                                for a, b in t.below)
-                out.append(f"  WARNING: below {TOL.transmission_warn_deg:g} deg (the "
-                           f"lecture's advice) for crank angles {rng} deg")
+                rng = ", ".join(
+                    f"{a:.2f} to {b:.2f}" + (" (through 0)" if b < a else "") for a, b in t.below
+                )
+                out.append(
+                    f"  WARNING: below {TOL.transmission_warn_deg:g} deg (the "
+                    f"lecture's advice) for crank angles {rng} deg"
+                )
         if self.output_range:
             if out[-1]:  # (no transmission angle above: one blank line is enough)
                 out.append("")
@@ -156,10 +178,12 @@ _MAX_STATIONARY = 12  # more than this: the output dwells (a degenerate linkage)
 def _four_bar_character(scene: Scene, cyc, fb) -> tuple:
     """A four-bar's kind, members, Grashof record and classification lines."""
     kind = "four-bar"
-    members = (f"ground {fb.o2}{fb.o4 if len(fb.o2) == 1 and len(fb.o4) == 1 else '-' + fb.o4}"
-               f" = {_mm(fb.r1, scene)}, crank {fb.crank} = {_mm(fb.r2, scene)} (input), "
-               f"coupler {fb.coupler} = {_mm(fb.r3, scene)}, output {fb.output} = "
-               f"{_mm(fb.r4, scene)}")
+    members = (
+        f"ground {fb.o2}{fb.o4 if len(fb.o2) == 1 and len(fb.o4) == 1 else '-' + fb.o4}"
+        f" = {_mm(fb.r1, scene)}, crank {fb.crank} = {_mm(fb.r2, scene)} (input), "
+        f"coupler {fb.coupler} = {_mm(fb.r3, scene)}, output {fb.output} = "
+        f"{_mm(fb.r4, scene)}"
+    )
     fr0 = cyc.at(scene.input.angle, vel=False)
     crossed = _crossed(fr0, fb)
     g = grashof(fb.r2, fb.r3, fb.r4, fb.r1, crossed=crossed)
@@ -170,14 +194,19 @@ def _four_bar_character(scene: Scene, cyc, fb) -> tuple:
 def _slider_crank_character(scene: Scene, sk) -> tuple:
     """A slider crank's kind, members and whether its crank turns fully (r + e <= l)."""
     kind = "slider crank" + (" (in-line)" if sk.inline else " (offset)")
-    members = (f"crank {sk.crank} = {_mm(sk.r, scene)}, connecting rod {sk.rod} = "
-               f"{_mm(sk.l, scene)}, slider {sk.b}"
-               + ("" if sk.inline else f", offset {_mm(abs(sk.e), scene)}"))
+    members = (
+        f"crank {sk.crank} = {_mm(sk.r, scene)}, connecting rod {sk.rod} = "
+        f"{_mm(sk.l, scene)}, slider {sk.b}"
+        + ("" if sk.inline else f", offset {_mm(abs(sk.e), scene)}")
+    )
     full = sk.l >= sk.r + abs(sk.e) * (1 - ROUNDING)
     classification = [
-        (f"r + e = {_mm(sk.r + abs(sk.e), scene)} {'<=' if full else '>'} l = "
-         f"{_mm(sk.l, scene)}: " + ("the crank turns fully" if full else
-                                    "the crank cannot turn fully (it rocks)"))]
+        (
+            f"r + e = {_mm(sk.r + abs(sk.e), scene)} {'<=' if full else '>'} l = "
+            f"{_mm(sk.l, scene)}: "
+            + ("the crank turns fully" if full else "the crank cannot turn fully (it rocks)")
+        )
+    ]
     return kind, members, None, classification
 
 
@@ -189,13 +218,16 @@ def _slotted_character(scene: Scene, slot) -> tuple:
     d = math.hypot(kx - ox, ky - oy)
     whit = cr.length > d
     kind = "Whitworth quick return" if whit else "crank and slotted lever"
-    members = (f"crank {cr.link} = {_mm(cr.length, scene)}, lever {sl.guide} pivoted at "
-               f"{sl.known}, {cr.pivot}{sl.known if len(sl.known) == 1 else '-' + sl.known}"
-               f" = {_mm(d, scene)}")
+    members = (
+        f"crank {cr.link} = {_mm(cr.length, scene)}, lever {sl.guide} pivoted at "
+        f"{sl.known}, {cr.pivot}{sl.known if len(sl.known) == 1 else '-' + sl.known}"
+        f" = {_mm(d, scene)}"
+    )
     classification = [
         f"crank {_mm(cr.length, scene)} {'>' if whit else '<'} distance between the "
         f"pivots {_mm(d, scene)}: the lever "
-        + ("turns fully (Whitworth)" if whit else "oscillates (quick return)")]
+        + ("turns fully (Whitworth)" if whit else "oscillates (quick return)")
+    ]
     return kind, members, None, classification
 
 
@@ -208,11 +240,12 @@ def _character(scene: Scene, plan, cyc, fb, sk, slot) -> tuple:
         return _slider_crank_character(scene, sk)
     if slot is not None:
         return _slotted_character(scene, slot)
-    members = (f"{len(plan.steps)} construction steps; Grashof's classes apply to "
-               "four-bars only")
-    classification = ["not a four-bar, slider crank or slotted lever: the crank's range, "
-                      "the transmission angle of every dyad and the output's motion "
-                      "follow from the cycle on the scene's branch"]
+    members = f"{len(plan.steps)} construction steps; Grashof's classes apply to four-bars only"
+    classification = [
+        "not a four-bar, slider crank or slotted lever: the crank's range, "
+        "the transmission angle of every dyad and the output's motion "
+        "follow from the cycle on the scene's branch"
+    ]
     return "mechanism", members, None, classification
 
 
@@ -222,8 +255,10 @@ def _input_toggles(scene: Scene, plan, cyc, turns: bool) -> list:
     dom = cyc.dom
     crank = scene.input.crank
     if turns:
-        return [f"driving from the input ({crank}): none, the crank turns fully "
-                "(no dyad comes into line)"]
+        return [
+            f"driving from the input ({crank}): none, the crank turns fully "
+            "(no dyad comes into line)"
+        ]
     input_toggles = [f"driving from the input ({crank}): its limit positions"]
     out = _output_of(scene, plan)
     for lp in dom.limits:
@@ -238,8 +273,10 @@ def _input_toggles(scene: Scene, plan, cyc, turns: bool) -> list:
 def _change_points(cyc, g) -> list:
     """The change points on the scene's branch, or that a special Grashof linkage meets none."""
     dom = cyc.dom
-    cps = [f"change point at crank angle {cyc.deg(cp.theta):.4f} deg: {cp.why}"
-           for cp in dom.change_points]
+    cps = [
+        f"change point at crank angle {cyc.deg(cp.theta):.4f} deg: {cp.why}"
+        for cp in dom.change_points
+    ]
     if g is not None and g.special and not dom.change_points:
         cps.append("S + L = P + Q, but the scene's branch meets no change point in its range")
     return cps
@@ -252,13 +289,17 @@ def _formulas(scene: Scene, cyc, sk, notes: list) -> tuple:
         try:
             solve(scene)  # the exact values exist at the scene's instant
         except SingularStepError as exc:
-            notes.append("the approximate formulas are not compared at the scene's instant: "
-                         f"{exc.step}: {exc.message}")
+            notes.append(
+                "the approximate formulas are not compared at the scene's instant: "
+                f"{exc.step}: {exc.message}"
+            )
         else:
             return tuple(_engine_lines(cyc, sk, scene))
     elif sk is not None:
-        notes.append("the approximate formulas v = r w (sin t + sin 2t / 2n) etc. hold for an "
-                     "in-line slider crank only")
+        notes.append(
+            "the approximate formulas v = r w (sin t + sin 2t / 2n) etc. hold for an "
+            "in-line slider crank only"
+        )
     return ()
 
 
@@ -266,11 +307,13 @@ def analyse(scene: Scene) -> Linkage:
     """The linkage's character: see the module docstring for what is covered."""
     plan = compile_plan(scene)
     if not plan.steps[0].periodic:  # no crank turns: Grashof, quick return, toggles of a turn
-        raise SceneError(f"linkage analyses a crank's turn (Grashof, toggles, quick return): "
-                         f"this mechanism is driven by {plan.steps[0].title}, whose travel "
-                         "`sweep` follows (its ends, every quantity's extremes)",
-                         file=scene.file,
-                         key="[input] wheel" if scene.input.wheel else "[input] block")
+        raise SceneError(
+            f"linkage analyses a crank's turn (Grashof, toggles, quick return): "
+            f"this mechanism is driven by {plan.steps[0].title}, whose travel "
+            "`sweep` follows (its ends, every quantity's extremes)",
+            file=scene.file,
+            key="[input] wheel" if scene.input.wheel else "[input] block",
+        )
     cyc = _Cycle(scene)
     dom = cyc.dom
     fb = four_bar_of(scene)
@@ -282,31 +325,55 @@ def analyse(scene: Scene) -> Linkage:
     rng = None
     if not turns:
         rng = (cyc.deg(dom.lo), cyc.deg(dom.hi))
-        classification.append(f"on the scene's branch the crank {scene.input.crank} reaches "
-                              f"{rng[0]:.4f} to {rng[1]:.4f} deg"
-                              + (" (through 0)" if rng[1] < rng[0] else ""))
+        classification.append(
+            f"on the scene's branch the crank {scene.input.crank} reaches "
+            f"{rng[0]:.4f} to {rng[1]:.4f} deg" + (" (through 0)" if rng[1] < rng[0] else "")
+        )
     input_toggles = _input_toggles(scene, plan, cyc, turns)  # the limits of the crank
     cps = _change_points(cyc, g)
     # the output
     out = _output_of(scene, plan)
     stationary, out_lines, omin, omax, ratio, tlines = (), (), None, None, None, ()
     if out is not None:
-        stationary, out_lines, omin, omax, ratio, tlines = _output_motion(cyc, out, scene,
-                                                                          fb, sk, slot)
+        stationary, out_lines, omin, omax, ratio, tlines = _output_motion(
+            cyc, out, scene, fb, sk, slot
+        )
         if len(stationary) > _MAX_STATIONARY:  # a degenerate linkage: the output dwells
-            notes.append(f"{out.label} stands still at {len(stationary)} of the sampled "
-                         "crank angles: it dwells over whole ranges of the crank (a degenerate "
-                         "linkage), so no single toggle positions are listed")
+            notes.append(
+                f"{out.label} stands still at {len(stationary)} of the sampled "
+                "crank angles: it dwells over whole ranges of the crank (a degenerate "
+                "linkage), so no single toggle positions are listed"
+            )
             stationary, ratio, tlines = (), None, ()
     still = standing_steps(scene, plan)
-    trans = tuple(_transmission(cyc, st, scene) for st in plan.steps
-                  if st.transmission() is not None and st.index not in still)
+    trans = tuple(
+        _transmission(cyc, st, scene)
+        for st in plan.steps
+        if st.transmission() is not None and st.index not in still
+    )
     formulas = _formulas(scene, cyc, sk, notes)
     notes.extend(dom.notes)
-    return Linkage(scene, kind, members, g, tuple(classification), turns, rng,
-                   tuple(input_toggles), tuple(cps), out.label if out else None,
-                   tuple(stationary), tuple(out_lines), omin, omax, ratio, tuple(tlines),
-                   trans, formulas, tuple(notes))
+    return Linkage(
+        scene,
+        kind,
+        members,
+        g,
+        tuple(classification),
+        turns,
+        rng,
+        tuple(input_toggles),
+        tuple(cps),
+        out.label if out else None,
+        tuple(stationary),
+        tuple(out_lines),
+        omin,
+        omax,
+        ratio,
+        tuple(tlines),
+        trans,
+        formulas,
+        tuple(notes),
+    )
 
 
 def _crossed(fr, fb: FourBar) -> bool:
@@ -318,39 +385,46 @@ def _crossed(fr, fb: FourBar) -> bool:
 
 
 def _grashof_lines(g: Grashof, fb: FourBar, scene) -> list:
-    names = {"crank": fb.crank, "coupler": fb.coupler, "output": fb.output,
-             "ground": f"{fb.o2}{fb.o4}" if len(fb.o2) == len(fb.o4) == 1
-             else f"{fb.o2}-{fb.o4}"}
+    names = {
+        "crank": fb.crank,
+        "coupler": fb.coupler,
+        "output": fb.output,
+        "ground": f"{fb.o2}{fb.o4}" if len(fb.o2) == len(fb.o4) == 1 else f"{fb.o2}-{fb.o4}",
+    }
     u = scene.length_unit
     rel = {"<": "<", ">": ">", "=": "="}[g.relation]
-    head = (f"Grashof: S + L = {g.s / u:.6g} + {g.l / u:.6g} = {(g.s + g.l) / u:.6g} "
-            f"{rel} P + Q = {g.p / u:.6g} + {g.q / u:.6g} = {(g.p + g.q) / u:.6g} "
-            f"{scene.units} (shortest: {names[g.shortest]})")
+    head = (
+        f"Grashof: S + L = {g.s / u:.6g} + {g.l / u:.6g} = {(g.s + g.l) / u:.6g} "
+        f"{rel} P + Q = {g.p / u:.6g} + {g.q / u:.6g} = {(g.p + g.q) / u:.6g} "
+        f"{scene.units} (shortest: {names[g.shortest]})"
+    )
     what = {
         "crank-rocker": f"Grashof crank-rocker: the crank {fb.crank} turns fully, the output "
-                        f"{fb.output} rocks",
+        f"{fb.output} rocks",
         "rocker-crank": f"Grashof rocker-crank: the output {fb.output} could turn fully, the "
-                        f"input {fb.crank} only rocks",
+        f"input {fb.crank} only rocks",
         "double crank": f"Grashof double crank (drag link): {fb.crank} and {fb.output} both "
-                        "turn fully",
+        "turn fully",
         "double rocker": f"Grashof double rocker: the coupler {fb.coupler} turns fully "
-                         f"relative to the others; {fb.crank} and {fb.output} only rock",
+        f"relative to the others; {fb.crank} and {fb.output} only rock",
         "non-Grashof triple rocker": "non-Grashof triple rocker: no link turns fully; the "
-                                     f"input {fb.crank} rocks between limit positions",
+        f"input {fb.crank} rocks between limit positions",
         "parallelogram": "special case S + L = P + Q: a parallelogram (opposite links "
-                         "equal); at its change points all four pivots come into line and it "
-                         "may turn into an anti-parallelogram",
+        "equal); at its change points all four pivots come into line and it "
+        "may turn into an anti-parallelogram",
         "anti-parallelogram": "special case S + L = P + Q: an anti-parallelogram (crossed, "
-                              "opposite links equal); at its change points it may turn into "
-                              "a parallelogram",
+        "opposite links equal); at its change points it may turn into "
+        "a parallelogram",
         "rhombus": "special case S + L = P + Q: a rhombus (all links equal; parallelogram and "
-                   "deltoid), with change points",
+        "deltoid), with change points",
         "deltoid": "special case S + L = P + Q: a deltoid (kite: adjacent links equal), with "
-                   "change points",
+        "change points",
     }.get(g.kind)
     if what is None:
-        what = (f"special case S + L = P + Q ({g.kind[len('special Grashof '):]} as for "
-                "Grashof), with change points where all four pivots come into line")
+        what = (
+            f"special case S + L = P + Q ({g.kind[len('special Grashof ') :]} as for "
+            "Grashof), with change points where all four pivots come into line"
+        )
     return [head, what]
 
 
@@ -360,8 +434,13 @@ def path_origin(path, scene) -> str:
     (qx, qy), (ux, uy) = path.through, path.u
     u = scene.length_unit
     ang = math.degrees(math.atan2(uy, ux))
-    way = {0: "to the right", 90: "upwards", 180: "to the left", -180: "to the left",
-           -90: "downwards"}.get(round(ang, 9), f"at {ang:.4g} deg")
+    way = {
+        0: "to the right",
+        90: "upwards",
+        180: "to the left",
+        -180: "to the left",
+        -90: "downwards",
+    }.get(round(ang, 9), f"at {ang:.4g} deg")
     return f"from ({qx / u:.6g}, {qy / u:.6g}) {scene.units}, + {way}"
 
 
@@ -378,8 +457,9 @@ def _output_motion(cyc: _Cycle, out: _Output, scene, fb, sk, slot):
     for t in zs:
         fr = cyc.at(t, vel=False)
         v = float(out.value(fr)[0])
-        stats.append(Stationary(t, cyc.deg(t), v, _what_stationary(fr, out, scene, fb, sk,
-                                                                   slot, v)))
+        stats.append(
+            Stationary(t, cyc.deg(t), v, _what_stationary(fr, out, scene, fb, sk, slot, v))
+        )
     stats.sort(key=lambda s: s.deg)
     vals = [s.output for s in stats]
     if not dom.full_turn:
@@ -397,19 +477,23 @@ def _output_motion(cyc: _Cycle, out: _Output, scene, fb, sk, slot):
     placed = ~cyc.fr.bad
     if out.kind == "slider":
         all_v = out.value(cyc.fr)[placed]
-        lines.append(f"{out.label}: its place along the path is measured "
-                     f"{path_origin(out.path, scene)}")
+        lines.append(
+            f"{out.label}: its place along the path is measured {path_origin(out.path, scene)}"
+        )
         if vals and len(all_v):
             omin, omax = min(vals + [float(all_v.min())]), max(vals + [float(all_v.max())])
             if stands_still(omax - omin, scene):  # rounding about a standstill, no stroke
                 mid = 0.5 * (omin + omax)
                 omin = omax = 0.0 if stands_still(abs(mid), scene) else mid
-                lines.append(f"{out.label}: stands still at {_fmt_out(out, omin, scene)}: "
-                             "no stroke")
+                lines.append(
+                    f"{out.label}: stands still at {_fmt_out(out, omin, scene)}: no stroke"
+                )
             else:
-                lines.append(f"{out.label}: moves between {_fmt_out(out, omin, scene)} and "
-                             f"{_fmt_out(out, omax, scene)}: stroke "
-                             f"{(omax - omin) / scene.length_unit:.6g} {scene.units}")
+                lines.append(
+                    f"{out.label}: moves between {_fmt_out(out, omin, scene)} and "
+                    f"{_fmt_out(out, omax, scene)}: stroke "
+                    f"{(omax - omin) / scene.length_unit:.6g} {scene.units}"
+                )
     else:
         ang = np.unwrap(out.value(cyc.fr)[placed])
         span = float(ang.max() - ang.min()) if len(ang) else 0.0
@@ -421,9 +505,11 @@ def _output_motion(cyc: _Cycle, out: _Output, scene, fb, sk, slot):
             omin, omax = min(unwrapped), max(unwrapped)
             shift = -TWO_PI * math.floor((omin + math.pi) / TWO_PI)  # omin in [-180, 180)
             omin, omax = omin + shift, omax + shift
-            lines.append(f"{out.label}: swings between {math.degrees(omin):.4f} and "
-                         f"{math.degrees(omax):.4f} deg: swing "
-                         f"{math.degrees(omax - omin):.4f} deg")
+            lines.append(
+                f"{out.label}: swings between {math.degrees(omin):.4f} and "
+                f"{math.degrees(omax):.4f} deg: swing "
+                f"{math.degrees(omax - omin):.4f} deg"
+            )
         elif span:
             lines.append(f"{out.label}: moves through {math.degrees(span):.4f} deg")
     if dom.full_turn and len(stats) == 2:
@@ -438,13 +524,16 @@ def _output_motion(cyc: _Cycle, out: _Output, scene, fb, sk, slot):
         d2 = _direction(out, -sgn)
         slow, fast = max(arc1, arc2), min(arc1, arc2)
         ratio = slow / fast
-        tlines.append(f"quick return: from crank {stats[0].deg:.4f} deg the crank turns "
-                      f"{math.degrees(arc1):.4f} deg while {out.label} moves {d1}, then "
-                      f"{math.degrees(arc2):.4f} deg while it moves {d2}")
+        tlines.append(
+            f"quick return: from crank {stats[0].deg:.4f} deg the crank turns "
+            f"{math.degrees(arc1):.4f} deg while {out.label} moves {d1}, then "
+            f"{math.degrees(arc2):.4f} deg while it moves {d2}"
+        )
         alpha = abs(math.degrees(arc1) - 180.0)
-        tlines.append(f"  time ratio {ratio:.6f} = (180 + {alpha:.4f}) / (180 - {alpha:.4f})"
-                      + ("  (equal strokes: no quick return)" if abs(ratio - 1) < SAME
-                         else ""))
+        tlines.append(
+            f"  time ratio {ratio:.6f} = (180 + {alpha:.4f}) / (180 - {alpha:.4f})"
+            + ("  (equal strokes: no quick return)" if abs(ratio - 1) < SAME else "")
+        )
     elif not dom.full_turn:
         tlines.append("quick return: not applicable (the crank does not turn fully)")
     return tuple(stats), tuple(lines), omin, omax, ratio, tuple(tlines)
@@ -467,10 +556,14 @@ def _what_stationary(fr, out, scene, fb, sk, slot, v) -> str:
         (xo, yo), (xa, ya), (xb, yb) = fr.P[sk.o], fr.P[sk.a], fr.P[sk.b]
         dot = float(((xa - xo) * (xb - xa) + (ya - yo) * (yb - ya))[0])
         if dot > 0:
-            return (f"dead centre, {sk.crank} and {sk.rod} in line (extended: inner dead "
-                    f"centre, slider farthest from {sk.o}); slider at {val}")
-        return (f"dead centre, {sk.crank} and {sk.rod} in line (folded: outer dead centre, "
-                f"slider nearest {sk.o}); slider at {val}")
+            return (
+                f"dead centre, {sk.crank} and {sk.rod} in line (extended: inner dead "
+                f"centre, slider farthest from {sk.o}); slider at {val}"
+            )
+        return (
+            f"dead centre, {sk.crank} and {sk.rod} in line (folded: outer dead centre, "
+            f"slider nearest {sk.o}); slider at {val}"
+        )
     if slot is not None and out.kind == "lever":
         cr, _ = slot
         return f"the crank {cr.link} is perpendicular to the lever; {out.label} at {val}"
@@ -498,8 +591,9 @@ def _transmission(cyc: _Cycle, st, scene) -> Transmission:
     lim = TOL.transmission_warn_deg
     if vmin < lim:
         below = _intervals_below(cyc, mu, lim)
-    return Transmission(st.finds[0], between, now, vmin, cyc.deg(tmin), vmax, cyc.deg(tmax),
-                        tuple(below))
+    return Transmission(
+        st.finds[0], between, now, vmin, cyc.deg(tmin), vmax, cyc.deg(tmax), tuple(below)
+    )
 
 
 def _intervals_below(cyc: _Cycle, f, lim):

@@ -53,8 +53,17 @@ class _Cycle:
             out = {}
             for k in np.unique(seg):
                 idx = np.nonzero(seg == k)[0]
-                out[int(k)] = (idx, run_arrays(self.dom.segments[int(k)][2], t[idx], self.sw.omega,
-                                         self.sw.alpha, vel=False, acc=False))
+                out[int(k)] = (
+                    idx,
+                    run_arrays(
+                        self.dom.segments[int(k)][2],
+                        t[idx],
+                        self.sw.omega,
+                        self.sw.alpha,
+                        vel=False,
+                        acc=False,
+                    ),
+                )
             fr = merge(t, out)
             return fr, fr.bad | bad
         fr = self.sw.evaluate(pts)
@@ -118,5 +127,6 @@ class _Cycle:
             return fr
         seg = self.sw.segment_plans(np.array([theta]))
         plan = self.dom.segments[int(seg[0])][2]
-        return run_arrays(plan, np.array([float(theta)]), self.sw.omega, self.sw.alpha,
-                    vel=False, acc=False)
+        return run_arrays(
+            plan, np.array([float(theta)]), self.sw.omega, self.sw.alpha, vel=False, acc=False
+        )

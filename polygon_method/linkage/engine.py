@@ -31,9 +31,11 @@ def _engine_lines(cyc: _Cycle, sk: SliderCrank, scene) -> list:
     px, py = cyc.fr.P[sk.b]  # the stroke over the sampled cycle
     along = np.broadcast_to((px - ox) * d[0] + (py - oy) * d[1], cyc.grid.shape)[~cyc.bad]
     if not len(along) or stands_still(float(along.max() - along.min()), scene):
-        return [f"in-line slider crank: slider {sk.b} stands still on this branch (it stays "
-                f"at the crank centre {sk.o}, the rod being as long as the crank): the "
-                "approximate formulas do not apply"]
+        return [
+            f"in-line slider crank: slider {sk.b} stands still on this branch (it stays "
+            f"at the crank centre {sk.o}, the rod being as long as the crank): the "
+            "approximate formulas do not apply"
+        ]
     vx, vy = fr0.V[sk.b]
     ax, ay = fr0.A[sk.b]
     xe = l + r - float(((x - ox) * d[0] + (y - oy) * d[1])[0])
@@ -43,27 +45,39 @@ def _engine_lines(cyc: _Cycle, sk: SliderCrank, scene) -> list:
     xa = r * ((1 - math.cos(t)) + math.sin(t) ** 2 / (2 * n))
     va = r * W * (math.sin(t) + math.sin(2 * t) / (2 * n))
     aa = r * W * W * (math.cos(t) + math.cos(2 * t) / n) + r * ale * (
-        math.sin(t) + math.sin(2 * t) / (2 * n))
+        math.sin(t) + math.sin(2 * t) / (2 * n)
+    )
     wr = abs(float(fr0.W[sk.rod][0]))
     alr = abs(float(fr0.Al[sk.rod][0]))
     wra = W * abs(math.cos(t)) / n
     alra = W * W * abs(math.sin(t)) / n
-    rows = [("piston displacement from i.d.c. x", "m", xe,
-             xa, "r [(1 - cos t) + sin^2 t / 2n]"),
-            ("piston velocity v (toward the crank)", "m/s", ve, va,
-             "r w (sin t + sin 2t / 2n)"),
-            ("piston acceleration a (toward the crank)", "m/s^2", ae, aa,
-             "r w^2 (cos t + cos 2t / n)" + (" + r alpha (sin t + sin 2t / 2n)" if al
-                                            else "")),
-            (f"rod {sk.rod}: |omega|", "rad/s", wr, wra, "w cos t / n"),
-            (f"rod {sk.rod}: |alpha|", "rad/s^2", alr, alra, "w^2 sin t / n")]
-    out = [f"in-line slider crank: n = l / r = {n:.6g}; crank {math.degrees(t):.4f} deg from "
-           "inner dead centre (t, in the sense of rotation)"
-           + ("; the formulas take the crank speed as uniform" if al else "")]
+    rows = [
+        ("piston displacement from i.d.c. x", "m", xe, xa, "r [(1 - cos t) + sin^2 t / 2n]"),
+        ("piston velocity v (toward the crank)", "m/s", ve, va, "r w (sin t + sin 2t / 2n)"),
+        (
+            "piston acceleration a (toward the crank)",
+            "m/s^2",
+            ae,
+            aa,
+            "r w^2 (cos t + cos 2t / n)" + (" + r alpha (sin t + sin 2t / 2n)" if al else ""),
+        ),
+        (f"rod {sk.rod}: |omega|", "rad/s", wr, wra, "w cos t / n"),
+        (f"rod {sk.rod}: |alpha|", "rad/s^2", alr, alra, "w^2 sin t / n"),
+    ]
+    out = [
+        f"in-line slider crank: n = l / r = {n:.6g}; crank {math.degrees(t):.4f} deg from "
+        "inner dead centre (t, in the sense of rotation)"
+        + ("; the formulas take the crank speed as uniform" if al else "")
+    ]
     wlab = max(len(rw[0]) for rw in rows)
     out.append(f"  {'quantity':<{wlab}} {'exact':>12} {'formula':>12} {'error':>9}  formula")
-    sizes = {"m": r, "m/s": r * W, "m/s^2": r * (W * W + abs(al)), "rad/s": W,
-             "rad/s^2": W * W + abs(al)}
+    sizes = {
+        "m": r,
+        "m/s": r * W,
+        "m/s^2": r * (W * W + abs(al)),
+        "rad/s": W,
+        "rad/s^2": W * W + abs(al),
+    }
     for name, unit, ex, ap, form in rows:
         err = _err(ap, ex, sizes[unit])
         zero = 1e-12 * sizes[unit]  # rounding noise about a true zero is written 0
@@ -77,9 +91,11 @@ def _engine_lines(cyc: _Cycle, sk: SliderCrank, scene) -> list:
     c = (-n + math.sqrt(n * n + 8)) / 4
     ts = math.acos(c)
     vs = r * W * (math.sin(ts) + math.sin(2 * ts) / (2 * n))
-    out.append(f"  maximum piston velocity: exact {vm:.6g} m/s at {math.degrees(tmx):.4f} deg "
-               f"from i.d.c.; formula {vs:.6g} m/s at {math.degrees(ts):.4f} deg "
-               f"(cos t = (-n + sqrt(n^2 + 8)) / 4 = {c:.6g}), error {_err(vs, vm, r * W).strip()}")
+    out.append(
+        f"  maximum piston velocity: exact {vm:.6g} m/s at {math.degrees(tmx):.4f} deg "
+        f"from i.d.c.; formula {vs:.6g} m/s at {math.degrees(ts):.4f} deg "
+        f"(cos t = (-n + sqrt(n^2 + 8)) / 4 = {c:.6g}), error {_err(vs, vm, r * W).strip()}"
+    )
     return out
 
 

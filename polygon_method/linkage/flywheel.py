@@ -92,47 +92,74 @@ class TurningMoment:
     def lines(self, scene) -> list:
         """The summary's lines, in the book's words."""
         deg = math.degrees(self.cycle)
-        out = [f"turning moment over the cycle ({deg:g} deg of the crank from the inner dead "
-               f"centre at {self.theta_idc:.4f} deg, in the crank's sense of rotation; "
-               + ("with the inertia of the moving parts" if self.inertia_included
-                  else "no masses given: the gas force alone") + "; " + self.words + ")",
-               f"  mean torque T_mean = {self.mean:.6g} N m (work per cycle {self.work:.6g} J;"
-               f" at {abs(scene.input.omega) * 30 / math.pi:.6g} rpm, power "
-               f"{self.mean * abs(scene.input.omega) / 1000:.6g} kW)",
-               f"  greatest turning moment (on a 0.25 deg grid) {self.T_max:.6g} N m at "
-               f"{self.at_T_max:.4f} deg, "
-               f"least {self.T_min:.6g} N m at {self.at_T_min:.4f} deg"]
+        out = [
+            f"turning moment over the cycle ({deg:g} deg of the crank from the inner dead "
+            f"centre at {self.theta_idc:.4f} deg, in the crank's sense of rotation; "
+            + (
+                "with the inertia of the moving parts"
+                if self.inertia_included
+                else "no masses given: the gas force alone"
+            )
+            + "; "
+            + self.words
+            + ")",
+            f"  mean torque T_mean = {self.mean:.6g} N m (work per cycle {self.work:.6g} J;"
+            f" at {abs(scene.input.omega) * 30 / math.pi:.6g} rpm, power "
+            f"{self.mean * abs(scene.input.omega) / 1000:.6g} kW)",
+            f"  greatest turning moment (on a 0.25 deg grid) {self.T_max:.6g} N m at "
+            f"{self.at_T_max:.4f} deg, "
+            f"least {self.T_min:.6g} N m at {self.at_T_min:.4f} deg",
+        ]
         if self.lobes:
-            out.append("  areas above (+) and below (-) the mean line, in order (J): "
-                       + ", ".join(f"{lb.energy:+.6g} ({lb.start:.3f} to {lb.end:.3f} deg)"
-                                   for lb in self.lobes))
-        out.append(f"  maximum fluctuation of energy dE_max = E_max - E_min = {self.E_max:.6g}"
-                   f" - ({self.E_min:.6g}) = {self.dE_max:.6g} J (the speed greatest at "
-                   f"{self.at_max:.4f} deg, least at {self.at_min:.4f} deg)")
+            out.append(
+                "  areas above (+) and below (-) the mean line, in order (J): "
+                + ", ".join(
+                    f"{lb.energy:+.6g} ({lb.start:.3f} to {lb.end:.3f} deg)" for lb in self.lobes
+                )
+            )
+        out.append(
+            f"  maximum fluctuation of energy dE_max = E_max - E_min = {self.E_max:.6g}"
+            f" - ({self.E_min:.6g}) = {self.dE_max:.6g} J (the speed greatest at "
+            f"{self.at_max:.4f} deg, least at {self.at_min:.4f} deg)"
+        )
         if self.flywheel is not None:
             cs, w, inertia, mass = self.flywheel
             fw = scene.flywheel
-            out.append(f"  flywheel: {fw.words}, mean speed {w:.6g} rad/s ({w * 30 / math.pi:.6g}"
-                       f" rpm): I = dE_max / (w^2 Cs) = {inertia:.6g} kg m^2")
+            out.append(
+                f"  flywheel: {fw.words}, mean speed {w:.6g} rad/s ({w * 30 / math.pi:.6g}"
+                f" rpm): I = dE_max / (w^2 Cs) = {inertia:.6g} kg m^2"
+            )
             if mass is not None:
                 k = fw.radius if fw.radius is not None else fw.gyration
-                what = "a rim of mean radius" if fw.radius is not None else \
-                    "radius of gyration"
-                out.append(f"  {what} {k:.6g} m: mass m = I / {'R' if fw.radius else 'k'}^2 "
-                           f"= {mass:.6g} kg")
+                what = "a rim of mean radius" if fw.radius is not None else "radius of gyration"
+                out.append(
+                    f"  {what} {k:.6g} m: mass m = I / {'R' if fw.radius else 'k'}^2 "
+                    f"= {mass:.6g} kg"
+                )
         return out
 
     def as_dict(self) -> dict:
         """The JSON's ``turning_moment`` entry (SI; phases in deg)."""
-        out = {"cycle_deg": math.degrees(self.cycle), "inner_dead_centre_deg": self.theta_idc,
-               "T_mean": self.mean, "work_per_cycle": self.work, "T_max": self.T_max,
-               "at_T_max_deg": self.at_T_max, "T_min": self.T_min, "at_T_min_deg": self.at_T_min,
-               "crossings_deg": list(self.crossings),
-               "lobes": [{"from_deg": lb.start, "to_deg": lb.end, "energy": lb.energy}
-                         for lb in self.lobes],
-               "E_max": self.E_max, "at_E_max_deg": self.at_max, "E_min": self.E_min,
-               "at_E_min_deg": self.at_min, "dE_max": self.dE_max,
-               "inertia_included": self.inertia_included}
+        out = {
+            "cycle_deg": math.degrees(self.cycle),
+            "inner_dead_centre_deg": self.theta_idc,
+            "T_mean": self.mean,
+            "work_per_cycle": self.work,
+            "T_max": self.T_max,
+            "at_T_max_deg": self.at_T_max,
+            "T_min": self.T_min,
+            "at_T_min_deg": self.at_T_min,
+            "crossings_deg": list(self.crossings),
+            "lobes": [
+                {"from_deg": lb.start, "to_deg": lb.end, "energy": lb.energy} for lb in self.lobes
+            ],
+            "E_max": self.E_max,
+            "at_E_max_deg": self.at_max,
+            "E_min": self.E_min,
+            "at_E_min_deg": self.at_min,
+            "dE_max": self.dE_max,
+            "inertia_included": self.inertia_included,
+        }
         if self.flywheel is not None:
             cs, w, inertia, mass = self.flywheel
             out["flywheel"] = {"Cs": cs, "omega_mean": w, "I": inertia, "mass": mass}
@@ -150,9 +177,12 @@ def engine_piston(scene: Scene):
 def _geometry(scene):
     piston = engine_piston(scene)
     if piston is None:
-        raise PolygonMethodError("the turning moment over a cycle is an engine's: a slider "
-                                 "crank with a gas force on its piston ([loads] pressure, or "
-                                 "[indicator])", file=scene.file)
+        raise PolygonMethodError(
+            "the turning moment over a cycle is an engine's: a slider "
+            "crank with a gas force on its piston ([loads] pressure, or "
+            "[indicator])",
+            file=scene.file,
+        )
     plan = compile_plan(scene)
     sol = solve(scene)
     return geometry(scene, plan, piston, piston_side(scene, plan, sol.P, piston))
@@ -165,8 +195,11 @@ def turning_moment_at(scene: Scene, g, phase):
     theta = g.theta_i + g.sg * phase
     res = sweep(scene, theta)
     if len(res.theta) != len(theta):
-        raise PolygonMethodError("the engine's cycle passes a position where it cannot be "
-                                 "solved: no turning moment over the cycle", file=scene.file)
+        raise PolygonMethodError(
+            "the engine's cycle passes a position where it cannot be "
+            "solved: no turning moment over the cycle",
+            file=scene.file,
+        )
     e = efforts(scene, res.plan, res.P, analyse(res))
     return np.broadcast_to(e.T, theta.shape)
 
@@ -197,7 +230,7 @@ def _fraction(g, phase):
     ax, ay = ox + g.r * math.cos(th) - fx, oy + g.r * math.sin(th) - fy
     au, an = ax * ux + ay * uy, -ax * uy + ay * ux
     d = g.s * au + math.sqrt(g.l * g.l - an * an)  # the piston's distance from F
-    return (math.sqrt((g.l + g.r) ** 2 - g.e ** 2) - d) / g.stroke
+    return (math.sqrt((g.l + g.r) ** 2 - g.e**2) - d) / g.stroke
 
 
 def _phase_at_fraction(g, a, b, x):
@@ -254,8 +287,9 @@ def turning_moment(scene: Scene) -> TurningMoment:
     breaks = _breaks(scene, g, cycle)
     work = float(_integrals(scene, g, breaks).sum())
     mean = work / cycle
-    grid = np.unique(np.concatenate([np.linspace(0.0, cycle, int(round(cycle / _GRID)) + 1),
-                                     breaks]))
+    grid = np.unique(
+        np.concatenate([np.linspace(0.0, cycle, int(round(cycle / _GRID)) + 1), breaks])
+    )
     T = turning_moment_at(scene, g, grid)
     d = T - mean
     size = max(float(np.abs(T).max()), abs(mean), 1e-300)
@@ -282,8 +316,11 @@ def turning_moment(scene: Scene) -> TurningMoment:
         for k, c in enumerate(cross):
             nxt = cross[k + 1] if k + 1 < len(cross) else cross[0] + cycle
             e_next = Ec[k + 1] if k + 1 < len(cross) else Ec[0]  # the cycle closes on itself
-            lobes.append(Lobe(rd(c), rd(nxt) % math.degrees(cycle) if nxt > cycle else rd(nxt),
-                              e_next - Ec[k]))
+            lobes.append(
+                Lobe(
+                    rd(c), rd(nxt) % math.degrees(cycle) if nxt > cycle else rd(nxt), e_next - Ec[k]
+                )
+            )
         lobes = tuple(lobes)
     fly = None
     if scene.flywheel is not None:
@@ -292,12 +329,31 @@ def turning_moment(scene: Scene) -> TurningMoment:
         inertia = float(E_max - E_min) / (w * w * fw.coefficient)
         k = fw.radius if fw.radius is not None else fw.gyration
         fly = (fw.coefficient, w, inertia, inertia / (k * k) if k is not None else None)
-    words = (ind.words if ind is not None else
-             "; ".join(ld.gas[2] for ld in scene.loads if ld.gas is not None))
-    return TurningMoment(cycle, math.degrees(g.theta_i), g.sg, mean, work,
-                         float(T[i_max]), rd(grid[i_max]), float(T[i_min]), rd(grid[i_min]),
-                         tuple(rd(c) for c in cross), lobes, float(E_max), at_max,
-                         float(E_min), at_min, fly, bool(scene.masses), words)
+    words = (
+        ind.words
+        if ind is not None
+        else "; ".join(ld.gas[2] for ld in scene.loads if ld.gas is not None)
+    )
+    return TurningMoment(
+        cycle,
+        math.degrees(g.theta_i),
+        g.sg,
+        mean,
+        work,
+        float(T[i_max]),
+        rd(grid[i_max]),
+        float(T[i_min]),
+        rd(grid[i_min]),
+        tuple(rd(c) for c in cross),
+        lobes,
+        float(E_max),
+        at_max,
+        float(E_min),
+        at_min,
+        fly,
+        bool(scene.masses),
+        words,
+    )
 
 
 def engine_cycle_lines(scene: Scene) -> list:

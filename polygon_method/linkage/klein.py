@@ -85,7 +85,7 @@ def construct(O, C, P, u, omega) -> Klein | None:
     perp = (-rod[1], rod[0])
     N = _meet(Q, perp, O, u)
     cm2 = s * s * cp2
-    cq2 = s ** 4 * cp2
+    cq2 = s**4 * cp2
     K = L = None
     if cm2 >= cq2:
         h = math.sqrt((cm2 - cq2) / cp2)  # along the unit perp, |perp| = |rod|
@@ -107,8 +107,7 @@ def klein_of(sol):
     if sk is None or sol.scene.input.second is not None:
         return None, "no slider crank"
     if sol.scene.input.alpha:
-        return None, ("the crank accelerates: Klein's construction takes its speed as "
-                      "uniform")
+        return None, ("the crank accelerates: Klein's construction takes its speed as uniform")
     w = sol.W[sk.crank]
     k = construct(sol.P[sk.o], sol.P[sk.a], sol.P[sk.b], sk.u, w)
     if k is None:
@@ -132,8 +131,11 @@ def klein_blocks(sol) -> list:
 
     vp = math.hypot(*k.v_P)
     ap = math.hypot(*k.a_P)
-    toward = "towards" if (k.a_P[0] * (k.O[0] - k.P[0]) + k.a_P[1] * (k.O[1] - k.P[1])) > 0 \
+    toward = (
+        "towards"
+        if (k.a_P[0] * (k.O[0] - k.P[0]) + k.a_P[1] * (k.O[1] - k.P[1])) > 0
         else "away from"
+    )
     items = [
         f"Produce {P}{C} to meet at M the line through {O} square to the line of stroke. "
         f"Triangle {O}{C}M is the velocity diagram turned through 90 deg, to the scale "
@@ -141,9 +143,13 @@ def klein_blocks(sol) -> list:
         f"v_{P}{C} / omega. {O}M = {ln('O', 'M')}, so v_{P} = omega x {O}M = {vp:.6g} m/s; "
         f"{C}M = {ln('C', 'M')}, so v_{P}{C} = {math.hypot(*k.v_PC):.6g} m/s.",
         f"With {C} as centre and {C}M as radius draw a circle; on {C}{P} as diameter draw "
-        "another" + ("; they meet at K and L. Their common chord KL" if k.K is not None
-                     else f"; they do not meet here ({C}M > {C}{P}): their common chord's "
-                     "line, square to " + f"{C}{P} at Q,")
+        "another"
+        + (
+            "; they meet at K and L. Their common chord KL"
+            if k.K is not None
+            else f"; they do not meet here ({C}M > {C}{P}): their common chord's "
+            "line, square to " + f"{C}{P} at Q,"
+        )
         + f" meets {C}{P} at Q ({C}Q = {C}M^2 / {C}{P} = {ln('C', 'Q')}) and the line "
         f"through {O} along the stroke at N.",
         f"{O}{C}QN is the acceleration diagram to the scale omega^2 = {w * w:.6g} 1/s^2: "
@@ -152,7 +158,12 @@ def klein_blocks(sol) -> list:
         f"{ln('N', 'O')}, so a_{P} = omega^2 x N{O} = {ap:.6g} m/s^2, from N towards {O}: "
         f"{toward} the crank centre.",
     ]
-    return [("h", "Klein's construction (the slider crank at uniform crank speed)"),
-            ("p", "A check on the piston drawn on the configuration diagram itself: the "
-                  "velocity and acceleration diagrams to the scales omega and omega^2."),
-            ("list", items)]
+    return [
+        ("h", "Klein's construction (the slider crank at uniform crank speed)"),
+        (
+            "p",
+            "A check on the piston drawn on the configuration diagram itself: the "
+            "velocity and acceleration diagrams to the scales omega and omega^2.",
+        ),
+        ("list", items),
+    ]

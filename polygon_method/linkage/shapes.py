@@ -70,32 +70,70 @@ def grashof(crank, coupler, output, ground, *, crossed=None) -> Grashof:
         rel = "<" if s + l < p + q else ">"
     shortest = order[0]
     if rel == "<":
-        kind = {"crank": "crank-rocker", "output": "rocker-crank", "ground": "double crank",
-                "coupler": "double rocker"}[shortest]
-        return Grashof(crank, coupler, output, ground, s, l, p, q, shortest, rel, kind,
-                       shortest in ("crank", "ground"), shortest in ("output", "ground"))
+        kind = {
+            "crank": "crank-rocker",
+            "output": "rocker-crank",
+            "ground": "double crank",
+            "coupler": "double rocker",
+        }[shortest]
+        return Grashof(
+            crank,
+            coupler,
+            output,
+            ground,
+            s,
+            l,
+            p,
+            q,
+            shortest,
+            rel,
+            kind,
+            shortest in ("crank", "ground"),
+            shortest in ("output", "ground"),
+        )
     if rel == ">":
-        return Grashof(crank, coupler, output, ground, s, l, p, q, shortest, rel,
-                       "non-Grashof triple rocker", False, False)
+        return Grashof(
+            crank,
+            coupler,
+            output,
+            ground,
+            s,
+            l,
+            p,
+            q,
+            shortest,
+            rel,
+            "non-Grashof triple rocker",
+            False,
+            False,
+        )
     if _eq(crank, output) and _eq(coupler, ground):
         if _eq(crank, coupler):
             kind = "rhombus"
         else:
             kind = "anti-parallelogram" if crossed else "parallelogram"
-    elif (_eq(crank, ground) and _eq(coupler, output)) or \
-            (_eq(crank, coupler) and _eq(output, ground)):
+    elif (_eq(crank, ground) and _eq(coupler, output)) or (
+        _eq(crank, coupler) and _eq(output, ground)
+    ):
         kind = "deltoid"
     else:
-        kind = "special Grashof " + {"crank": "crank-rocker", "output": "rocker-crank",
-                                     "ground": "double crank",
-                                     "coupler": "double rocker"}[shortest]
+        kind = (
+            "special Grashof "
+            + {
+                "crank": "crank-rocker",
+                "output": "rocker-crank",
+                "ground": "double crank",
+                "coupler": "double rocker",
+            }[shortest]
+        )
     # with S + L = P + Q a shortest link turns fully relative to its neighbours (through
     # the change points); there may be two shortest links
     short = {k for k, v in lengths.items() if _eq(v, s)}
     turns_in = bool(short & {"crank", "ground"})
     turns_out = bool(short & {"output", "ground"})
-    return Grashof(crank, coupler, output, ground, s, l, p, q, shortest, rel, kind,
-                   turns_in, turns_out)
+    return Grashof(
+        crank, coupler, output, ground, s, l, p, q, shortest, rel, kind, turns_in, turns_out
+    )
 
 
 # --------------------------------------------------------------------------- what it is
@@ -166,8 +204,20 @@ def four_bar_of(scene: Scene):
     (cx, cy), (gx, gy) = scene.ground[cr.pivot], scene.ground[g]
     coupler, r3 = ends[cr.tip]
     output, r4 = ends[g]
-    return FourBar(cr.pivot, cr.tip, dy.point, g, cr.link, coupler, output, cr.length, r3,
-                   r4, math.hypot(gx - cx, gy - cy), dy)
+    return FourBar(
+        cr.pivot,
+        cr.tip,
+        dy.point,
+        g,
+        cr.link,
+        coupler,
+        output,
+        cr.length,
+        r3,
+        r4,
+        math.hypot(gx - cx, gy - cy),
+        dy,
+    )
 
 
 def slider_crank_of(scene: Scene):
@@ -182,8 +232,9 @@ def slider_crank_of(scene: Scene):
     (ox, oy) = scene.ground[cr.pivot]
     (qx, qy), (ux, uy) = sd.path.through, sd.path.u
     e = (ox - qx) * uy - (oy - qy) * ux  # signed distance of O from the path (ccw side +)
-    return SliderCrank(cr.pivot, cr.tip, sd.point, cr.link, sd.link, cr.length, sd.length,
-                       e, (ux, uy), sd)
+    return SliderCrank(
+        cr.pivot, cr.tip, sd.point, cr.link, sd.link, cr.length, sd.length, e, (ux, uy), sd
+    )
 
 
 def slotted_of(scene: Scene):
@@ -252,8 +303,7 @@ def _output_of(scene, plan):
         if o[0] == "rocker":
             out = _Output("rocker", o[1], f"output link {o[1]}", o[2], o[3])
         elif o[0] == "slider":
-            out = _Output("slider", o[1], f"slider {o[1]}", point=o[1],
-                          path=scene.slider(o[1]))
+            out = _Output("slider", o[1], f"slider {o[1]}", point=o[1], path=scene.slider(o[1]))
         else:
             out = _Output("lever", o[1], f"lever {o[1]}", o[2], o[3])
     return out

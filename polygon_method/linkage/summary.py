@@ -12,11 +12,26 @@ import numpy as np
 from ..solver.kinematics import Motion
 from ..common.tolerances import crossing_angle
 from ..scene import FixedPath, Scene
-from ..motion.sweeps import (SweepResult, rubbing_arrays, select, torque_array, angles_ok,
-                     evaluate_all, stroke_places, sweep_angles)
+from ..motion.sweeps import (
+    SweepResult,
+    rubbing_arrays,
+    select,
+    torque_array,
+    angles_ok,
+    evaluate_all,
+    stroke_places,
+    sweep_angles,
+)
 from ..solver.compiler import compile_plan
-from ..solver.tracking import (CHUNK, TWO_PI, Sweeper, branch_steps, degrees_fn, tune_malloc,
-                       valid_mask)
+from ..solver.tracking import (
+    CHUNK,
+    TWO_PI,
+    Sweeper,
+    branch_steps,
+    degrees_fn,
+    tune_malloc,
+    valid_mask,
+)
 
 from .summary_record import Extreme, Summary
 
@@ -109,8 +124,20 @@ class _Reducer:
         from ..common.errors import PolygonMethodError
         from ..forces import analyse  # lazy: a scene without masses never loads forces/
         from ..forces.engine import efforts
-        m = Motion(self.scene, fr.plan or self.plan, fr.theta, fr.P, fr.V, fr.A, fr.W, fr.Al,
-                   fr.S, fr.cond, fr.bad)  # (a chunk's motion knows no scene)
+
+        m = Motion(
+            self.scene,
+            fr.plan or self.plan,
+            fr.theta,
+            fr.P,
+            fr.V,
+            fr.A,
+            fr.W,
+            fr.Al,
+            fr.S,
+            fr.cond,
+            fr.bad,
+        )  # (a chunk's motion knows no scene)
         try:
             f = analyse(m)
             e = efforts(self.scene, m.plan, fr.P, f)
@@ -125,6 +152,7 @@ class _Reducer:
     def _force_items(f, e, n):
         """(name, unit, array, what) of :meth:`force_quantities` from the forces ``f`` and
         an engine's efforts ``e`` (or None) at ``n`` angles."""
+
         def b(v):
             return np.broadcast_to(np.asarray(v, dtype=float), (n,))
 
@@ -139,8 +167,12 @@ class _Reducer:
         for g in f.guides:
             yield f"N_{g.point}", "N", b(g.normal), "guide's normal force, signed"
         for p in f.pins:
-            yield (f"F_{p.point}_{p.on}_{p.by}".replace(" ", ""), "N",
-                   (b(p.force[0]), b(p.force[1])), "pin force")
+            yield (
+                f"F_{p.point}_{p.on}_{p.by}".replace(" ", ""),
+                "N",
+                (b(p.force[0]), b(p.force[1])),
+                "pin force",
+            )
         if e is not None:
             yield "piston_effort", "N", b(e.F_P), "towards the crank"
             yield "crank_effort", "N", b(e.F_T), "in the sense of rotation"
@@ -172,8 +204,7 @@ class _Reducer:
                 cand = arr
             b = self.best.get(name)
             if b is None:
-                b = self.best[name] = [hi, int(index[i]), lo, int(index[j]), unit, what,
-                                       {}, {}]
+                b = self.best[name] = [hi, int(index[i]), lo, int(index[j]), unit, what, {}, {}]
             else:
                 if hi > b[0]:
                     b[0], b[1] = hi, int(index[i])
@@ -201,7 +232,7 @@ class _Reducer:
             if not live:
                 return
             for k in range(0, len(live), batch):
-                self._refine_pass(live[k:k + batch])
+                self._refine_pass(live[k : k + batch])
 
     def _refine_pass(self, live):
         """One pass of :meth:`_refine` over the brackets ``live``."""
@@ -261,9 +292,13 @@ class _Reducer:
             for sense, i, cand in ((1.0, imx, cmax), (-1.0, imn, cmin)):
                 for k in dict.fromkeys([i, *cand]):
                     t = float(theta[k])
-                    if not (_interior(theta, k, spacing) or any(
+                    if not (
+                        _interior(theta, k, spacing)
+                        or any(
                             abs(lim - dom.map(np.array([t]))[0][0]) <= 1.5 * spacing
-                            for lim in limits)):
+                            for lim in limits
+                        )
+                    ):
                         continue  # the end of the requested range: its own value
                     a, b = t - spacing, t + spacing  # (beyond a limit: left out)
                     (tm,), _ = dom.map(np.array([t]))
@@ -282,8 +317,7 @@ class _Reducer:
         if n and refine:
             self._at_limits(rows, theta, spacing)
         if n:
-            self._change_point_minima(rows, spacing, float(np.min(theta)),
-                                      float(np.max(theta)))
+            self._change_point_minima(rows, spacing, float(np.min(theta)), float(np.max(theta)))
             self._limit_positions(rows, theta, spacing)
         deg = degrees_fn(dom)
         unbounded = self._unbounded(rows, theta, spacing) if n else {}
@@ -293,12 +327,24 @@ class _Reducer:
                 row[3] = unbounded[(nm, 1.0)]
             if (nm, -1.0) in unbounded:
                 row[5] = unbounded[(nm, -1.0)]
-        extremes = tuple(Extreme(nm, u, self.shown(u, mx), None if tmx is None else deg(tmx),
-                                 self.shown(u, mn), None if tmn is None else deg(tmn), what,
-                                 bool(tasks), (nm, 1.0) in unbounded, (nm, -1.0) in unbounded)
-                         for nm, u, mx, tmx, mn, tmn, what in rows)
+        extremes = tuple(
+            Extreme(
+                nm,
+                u,
+                self.shown(u, mx),
+                None if tmx is None else deg(tmx),
+                self.shown(u, mn),
+                None if tmn is None else deg(tmn),
+                what,
+                bool(tasks),
+                (nm, 1.0) in unbounded,
+                (nm, -1.0) in unbounded,
+            )
+            for nm, u, mx, tmx, mn, tmn, what in rows
+        )
         formulas = ()
         from . import engine_cycle_lines, engine_formula_lines  # an in-line slider crank's, or none
+
         formulas = tuple(engine_formula_lines(self.scene, {e.name: e for e in extremes}))
         cycle = engine_cycle_lines(self.scene)  # an engine's turning moment and flywheel
         if cycle:
@@ -306,8 +352,18 @@ class _Reducer:
         rng = None
         if not dom.full_turn:
             rng = (deg(dom.lo), deg(dom.hi))
-        return Summary(self.scene, requested, evaluated, extremes, dom.limits,
-                       dom.change_points, notes, formulas, rng, deg)
+        return Summary(
+            self.scene,
+            requested,
+            evaluated,
+            extremes,
+            dom.limits,
+            dom.change_points,
+            notes,
+            formulas,
+            rng,
+            deg,
+        )
 
     def _limit_positions(self, rows, theta, spacing):
         """Where the crank rocks, a slider's extreme place may be at a limit position of
@@ -318,8 +374,7 @@ class _Reducer:
         if dom.full_turn or not dom.limits or spacing is None:
             return
         mapped, _ = dom.map(np.asarray(theta, dtype=float))
-        lims = [lp.theta for lp in dom.limits
-                if np.min(np.abs(mapped - lp.theta)) <= 1.5 * spacing]
+        lims = [lp.theta for lp in dom.limits if np.min(np.abs(mapped - lp.theta)) <= 1.5 * spacing]
         if not lims:
             return
         fr = self.sw.evaluate(np.array(lims), vel=False, acc=False)
@@ -428,8 +483,12 @@ class _Reducer:
                 vals = q[nm]
                 for sense in (1.0, -1.0):
                     v = sense * vals
-                    if np.all(np.isfinite(v)) and v[0] > 0 and v[1] > 2.0 * v[0] \
-                            and v[2] > 2.0 * v[1]:  # (d^-0.5 grows 3.2 times a decade)
+                    if (
+                        np.all(np.isfinite(v))
+                        and v[0] > 0
+                        and v[1] > 2.0 * v[0]
+                        and v[2] > 2.0 * v[1]
+                    ):  # (d^-0.5 grows 3.2 times a decade)
                         found.setdefault((nm, sense), lp.theta)
         return found
 
@@ -442,23 +501,35 @@ class _Reducer:
         (hide nothing). Rubbing velocities and the input effort are not here (the sizes the
         input sets decide them, as before)."""
         from ..solver.errorbound import USELESS, error_bounds
-        idx = sorted({int(i) for mx, imx, mn, imn, *_ in self.best.values()
-                      for i in (imx, imn) if i is not None and i >= 0})
+
+        idx = sorted(
+            {
+                int(i)
+                for mx, imx, mn, imn, *_ in self.best.values()
+                for i in (imx, imn)
+                if i is not None and i >= 0
+            }
+        )
         if not idx or len(theta) == 0:
             return {}
         th = np.asarray(theta, dtype=float)[idx]
         fr = self.sw.evaluate(th)
         with np.errstate(all="ignore"):
-            eb = error_bounds(Motion(self.scene, self.plan, th, fr.P, fr.V, fr.A, fr.W,
-                                     fr.Al, fr.S, fr.cond, fr.bad))
-        size = {k: np.broadcast_to(np.asarray(v, dtype=float), th.shape)
-                for k, v in eb.scales.items()}
+            eb = error_bounds(
+                Motion(
+                    self.scene, self.plan, th, fr.P, fr.V, fr.A, fr.W, fr.Al, fr.S, fr.cond, fr.bad
+                )
+            )
+        size = {
+            k: np.broadcast_to(np.asarray(v, dtype=float), th.shape) for k, v in eb.scales.items()
+        }
         where = {k: j for j, k in enumerate(idx)}
 
         def of(rel, kind):
             rel = np.broadcast_to(np.asarray(rel, dtype=float), th.shape)
             absolute = np.where(rel < USELESS, rel * size[kind], 0.0)
             return lambda i: float(absolute[where[int(i)]])
+
         out = {}
         for p in eb.V:
             out[f"v_{p}"] = of(eb.V[p], "velocity")
@@ -493,8 +564,9 @@ class _Reducer:
             size = lambda b: max(abs(b[0]), abs(b[2]))  # noqa: E731
             F = max([size(b) for b in self.best.values() if b[4] == "N"] + [0.0])
             out["N"] = F
-            out["N m"] = max([F * out["m"]] + [size(b) for b in self.best.values()
-                                               if b[4] == "N m"])
+            out["N m"] = max(
+                [F * out["m"]] + [size(b) for b in self.best.values() if b[4] == "N m"]
+            )
         return out
 
     def _motion_scales(self) -> dict:
@@ -502,12 +574,16 @@ class _Reducer:
         sc = self.scene
         if not self.sw.driver.periodic:  # a block driver: the sizes its input sets
             v, a, w, k = self.sw.driver.input_scales(sc)
-            return {"rad/s": w, "rad/s^2": k, "m/s": v, "m/s^2": a,
-                    "m": max([lk.length for lk in sc.links])}
+            return {
+                "rad/s": w,
+                "rad/s^2": k,
+                "m/s": v,
+                "m/s^2": a,
+                "m": max([lk.length for lk in sc.links]),
+            }
         w = abs(self.sw.omega)
         k = w * w + abs(self.sw.alpha)
-        lengths = [lk.length for lk in sc.links] + [math.hypot(*xy) for xy in
-                                                    sc.ground.values()]
+        lengths = [lk.length for lk in sc.links] + [math.hypot(*xy) for xy in sc.ground.values()]
         L = max(lengths) if lengths else 1.0
         return {"rad/s": w, "rad/s^2": k, "m/s": w * L, "m/s^2": k * L, "m": L}
 
@@ -521,7 +597,7 @@ def _interior(theta, i, spacing) -> bool:
         return False
     t = theta[i]
     d = [(theta[(i + k) % n] - t + math.pi) % TWO_PI - math.pi for k in (-1, 1)]
-    return (abs(d[0]) <= 1.5 * spacing and abs(d[1]) <= 1.5 * spacing and d[0] * d[1] < 0)
+    return abs(d[0]) <= 1.5 * spacing and abs(d[1]) <= 1.5 * spacing and d[0] * d[1] < 0
 
 
 def summarize(scene: Scene, angles=None, *, chunk: int = CHUNK, refine: bool = True) -> Summary:
@@ -551,7 +627,6 @@ def summarize(scene: Scene, angles=None, *, chunk: int = CHUNK, refine: bool = T
 
 
 # --------------------------------------------------------------------------- command line
-
 
 
 def summary_of(res: SweepResult, **kw) -> Summary:

@@ -72,36 +72,50 @@ class Summary:
         inp = sc.input
         if inp.given is not None:
             g = inp.given
-            held = (f"{g.key} held at {g.text}" + (f", {g.rate_key} at {g.rate_text}"
-                                                    if g.rate is not None else
-                                                    " (steady)"
-                                                    if compile_plan(sc).given.rate is not None
-                                                    else ", the crank's alpha constant")
-                    + " at every angle (the crank's speed follows); ")
+            held = (
+                f"{g.key} held at {g.text}"
+                + (
+                    f", {g.rate_key} at {g.rate_text}"
+                    if g.rate is not None
+                    else " (steady)"
+                    if compile_plan(sc).given.rate is not None
+                    else ", the crank's alpha constant"
+                )
+                + " at every angle (the crank's speed follows); "
+            )
         else:
-            held = (f"crank {inp.crank} at {abs(inp.omega):.6g} rad/s "
-                    f"{'ccw' if inp.omega > 0 else 'cw'}"
-                    + (f", {inp.alpha:+.6g} rad/s^2" if inp.alpha else "")
-                    + " at every angle; ")
+            held = (
+                f"crank {inp.crank} at {abs(inp.omega):.6g} rad/s "
+                f"{'ccw' if inp.omega > 0 else 'cw'}"
+                + (f", {inp.alpha:+.6g} rad/s^2" if inp.alpha else "")
+                + " at every angle; "
+            )
         if inp.given is not None and self.evaluated < self.requested:
-            held = (f"{held.rstrip('; ')}; where {inp.given.key} hardly moves whatever the "
-                    "crank's speed (its condition below 1e-3, a dead centre for this input) "
-                    "the crank's speed is unbounded: those angles are left out and the "
-                    "extremes beside them grow without bound; ")
-        out = [f"sweep of {sc.title or sc.file or 'the mechanism'}",
-               held + f"{self.evaluated} of {self.requested} crank angles "
-               "evaluated"]
+            held = (
+                f"{held.rstrip('; ')}; where {inp.given.key} hardly moves whatever the "
+                "crank's speed (its condition below 1e-3, a dead centre for this input) "
+                "the crank's speed is unbounded: those angles are left out and the "
+                "extremes beside them grow without bound; "
+            )
+        out = [
+            f"sweep of {sc.title or sc.file or 'the mechanism'}",
+            held + f"{self.evaluated} of {self.requested} crank angles evaluated",
+        ]
         deg = self.deg
         if self.limits and self.range_deg is not None:
             lo, hi = self.range_deg
-            out.append(f"the crank cannot turn fully: it reaches {lo:.4f} to {hi:.4f} deg "
-                       + ("(through 0) " if hi < lo else "") + "on the scene's branch")
+            out.append(
+                f"the crank cannot turn fully: it reaches {lo:.4f} to {hi:.4f} deg "
+                + ("(through 0) " if hi < lo else "")
+                + "on the scene's branch"
+            )
             for lp in self.limits:
-                out.append(f"  limit position at {fmt_deg(deg(lp.theta))} deg: {lp.step}: "
-                           f"{lp.why}")
+                out.append(f"  limit position at {fmt_deg(deg(lp.theta))} deg: {lp.step}: {lp.why}")
         if self.evaluated < self.requested:
-            out.append(f"  {self.requested - self.evaluated} requested angle(s) are left out "
-                       "(beyond the limit positions, or singular)")
+            out.append(
+                f"  {self.requested - self.evaluated} requested angle(s) are left out "
+                "(beyond the limit positions, or singular)"
+            )
         for cp in self.change_points:
             out.append(f"change point at crank angle {fmt_deg(deg(cp.theta))} deg: {cp.why}")
         out.extend(self.notes)
@@ -116,27 +130,34 @@ class Summary:
         driver = compile_plan(sc).steps[0]
         block = driver.finds[0]
         deg = self.deg
-        out = [f"sweep of {sc.title or sc.file or 'the mechanism'}",
-               f"{driver.title} at {abs(inp.omega):.6g} m/s {driver.sense(inp.omega)}"
-               + (f", {abs(inp.alpha):.6g} m/s^2 {driver.sense(inp.alpha)}" if inp.alpha
-                  else "") + f" at every place; {self.evaluated} of {self.requested} places "
-               f"s_{block} along its guide evaluated"]
+        out = [
+            f"sweep of {sc.title or sc.file or 'the mechanism'}",
+            f"{driver.title} at {abs(inp.omega):.6g} m/s {driver.sense(inp.omega)}"
+            + (f", {abs(inp.alpha):.6g} m/s^2 {driver.sense(inp.alpha)}" if inp.alpha else "")
+            + f" at every place; {self.evaluated} of {self.requested} places "
+            f"s_{block} along its guide evaluated",
+        ]
         if self.range_deg is not None:
             lo, hi = self.range_deg
             mover = driver.parameter(sc)[0].removeprefix("place of ")  # block A, ...
-            out.append(f"the {mover} travels from s_{block} = {lo:.6g} to "
-                       f"{hi:.6g} {uname} on the scene's branch"
-                       + (" (its stated stroke)" if inp.stroke is not None and all(
-                           lp.step == driver.label for lp in self.limits) else ""))
+            out.append(
+                f"the {mover} travels from s_{block} = {lo:.6g} to "
+                f"{hi:.6g} {uname} on the scene's branch"
+                + (
+                    " (its stated stroke)"
+                    if inp.stroke is not None and all(lp.step == driver.label for lp in self.limits)
+                    else ""
+                )
+            )
             for lp in self.limits:
-                out.append(f"  end at s_{block} = {deg(lp.theta):.6g} {uname}: {lp.step}: "
-                           f"{lp.why}")
+                out.append(f"  end at s_{block} = {deg(lp.theta):.6g} {uname}: {lp.step}: {lp.why}")
         if self.evaluated < self.requested:
-            out.append(f"  {self.requested - self.evaluated} requested place(s) are left out "
-                       "(beyond the ends of its travel, or singular)")
+            out.append(
+                f"  {self.requested - self.evaluated} requested place(s) are left out "
+                "(beyond the ends of its travel, or singular)"
+            )
         for cp in self.change_points:
-            out.append(f"change point at s_{block} = {deg(cp.theta):.6g} {uname}: "
-                       f"{cp.why}")
+            out.append(f"change point at s_{block} = {deg(cp.theta):.6g} {uname}: {cp.why}")
         out.extend(self.notes)
         out.append("")
         self._table(out, uname)
@@ -148,12 +169,12 @@ class Summary:
         at = f"at ({unit})"
         if self.extremes:
             w = max(len(e.name) for e in self.extremes)
-            out.append(f"{'quantity':<{w}}  {'unit':<7} {'maximum':>12} {at:>10}"
-                       f" {'minimum':>12} {at:>10}")
+            out.append(
+                f"{'quantity':<{w}}  {'unit':<7} {'maximum':>12} {at:>10} {'minimum':>12} {at:>10}"
+            )
             for e in self.extremes:
                 if e.constant:
-                    out.append(f"{e.name:<{w}}  {e.unit:<7} {e.maximum:>12.6g} "
-                               f"{'(constant)':>10}")
+                    out.append(f"{e.name:<{w}}  {e.unit:<7} {e.maximum:>12.6g} {'(constant)':>10}")
                     continue
                 # rounding noise about a true zero (a speed at a dead centre) is 0 already
                 # (each value within its own error bound: _Reducer._noise); an extreme
@@ -162,17 +183,20 @@ class Summary:
                 big = max(abs(e.maximum), abs(e.minimum))
                 mx = "+unbounded" if e.max_unbounded else f"{quiet(e.maximum, big):.6g}"
                 mn = "-unbounded" if e.min_unbounded else f"{quiet(e.minimum, big):.6g}"
-                out.append(f"{e.name:<{w}}  {e.unit:<7} {mx:>12} "
-                           f"{fmt_deg(e.at_max, 3):>10} {mn:>12} "
-                           f"{fmt_deg(e.at_min, 3):>10}"
-                           + (f"  {e.what}" if e.what else ""))
-                for flag, at, word in ((e.max_unbounded, e.at_max, "grows"),
-                                       (e.min_unbounded, e.at_min, "falls")):
+                out.append(
+                    f"{e.name:<{w}}  {e.unit:<7} {mx:>12} "
+                    f"{fmt_deg(e.at_max, 3):>10} {mn:>12} "
+                    f"{fmt_deg(e.at_min, 3):>10}" + (f"  {e.what}" if e.what else "")
+                )
+                for flag, at, word in (
+                    (e.max_unbounded, e.at_max, "grows"),
+                    (e.min_unbounded, e.at_min, "falls"),
+                ):
                     if flag:
-                        out.append(f"{'':<{w}}  ({word} without bound towards the limit "
-                                   f"position at {fmt_deg(at, 3)} {unit})")
+                        out.append(
+                            f"{'':<{w}}  ({word} without bound towards the limit "
+                            f"position at {fmt_deg(at, 3)} {unit})"
+                        )
         if self.formulas:
             out.append("")
             out.extend(self.formulas)
-
-

@@ -39,9 +39,15 @@ _UNSET = object()  # a quantity not yet derived (its value may be None)
 
 #: answer kind -> (its table of :class:`~polygon_method.solver.errorbound.ErrorBounds`, the size
 #: that bound is relative to)
-_BOUND_OF = {"v": ("V", "velocity"), "a": ("A", "acceleration"), "omega": ("W", "omega"),
-             "alpha": ("Al", "alpha"), "vs": ("S", "velocity"), "as": ("S", "acceleration"),
-             "ac": ("S", "acceleration")}
+_BOUND_OF = {
+    "v": ("V", "velocity"),
+    "a": ("A", "acceleration"),
+    "omega": ("W", "omega"),
+    "alpha": ("Al", "alpha"),
+    "vs": ("S", "velocity"),
+    "as": ("S", "acceleration"),
+    "ac": ("S", "acceleration"),
+}
 
 
 class Solution(Motion):
@@ -115,6 +121,7 @@ class Solution(Motion):
 
     def _analyse(self):
         from ..forces import analyse  # lazy: a scene without masses never loads forces/
+
         return analyse(self)
 
     @property
@@ -141,36 +148,46 @@ class Solution(Motion):
         """One line per ill-conditioned step (condition below sin 5 deg), then what the
         scene says that is likely not meant (a point on a fixed pivot or on the frame,
         lengths in metres that look like millimetres)."""
+
         def make():
-            out = tuple(st.warning(c) for st in self.plan.steps
-                        if (c := self.cond.get(st.index, 1.0)) < TOL.warn)
+            out = tuple(
+                st.warning(c)
+                for st in self.plan.steps
+                if (c := self.cond.get(st.index, 1.0)) < TOL.warn
+            )
             out += _structural_warnings(self)
             res = self.plan.given
             if res is not None and res.condition < TOL.warn:
                 g = self.scene.input.given
-                out += (f"[input] {g.key}: near a dead centre for this input (condition "
-                        f"{res.condition:.3g}): the crank's speed found from it is very "
-                        "sensitive to it",)
+                out += (
+                    f"[input] {g.key}: near a dead centre for this input (condition "
+                    f"{res.condition:.3g}): the crank's speed found from it is very "
+                    "sensitive to it",
+                )
             return out
+
         return self._get("warnings", make)
 
     @property
     def notes(self) -> tuple:
         """How the scene's words were read, then the defaults the plan took."""
         said = self.scene.input.angle_note
-        return ((said,) if said else ()) + tuple(self.scene.reading_notes) + \
-            tuple(self.plan.notes)
+        return ((said,) if said else ()) + tuple(self.scene.reading_notes) + tuple(self.plan.notes)
 
     # ----- presentation
     @property
     def scales(self) -> dict:
         """The largest value of each kind in this solution (for :meth:`shown`)."""
+
         def make():
             w = max((abs(x) for x in self.W.values()), default=0.0)
-            return {"v": max((hypot(*v) for v in self.V.values()), default=0.0),
-                    "a": max((hypot(*a) for a in self.A.values()), default=0.0),
-                    "omega": w,
-                    "alpha": max((abs(x) for x in self.Al.values()), default=0.0) + w * w}
+            return {
+                "v": max((hypot(*v) for v in self.V.values()), default=0.0),
+                "a": max((hypot(*a) for a in self.A.values()), default=0.0),
+                "omega": w,
+                "alpha": max((abs(x) for x in self.Al.values()), default=0.0) + w * w,
+            }
+
         return self._get("scales", make)
 
     def noise(self, kind, name=None) -> float:
@@ -186,8 +203,9 @@ class Solution(Motion):
         size = b.scales[size]
         if table == "S":
             j = ("vs", "as", "ac").index(kind)
-            vals = ([b.S.get(name, (0.0,) * 3)[j]] if name is not None
-                    else [t[j] for t in b.S.values()])
+            vals = (
+                [b.S.get(name, (0.0,) * 3)[j]] if name is not None else [t[j] for t in b.S.values()]
+            )
         else:
             t = getattr(b, table)
             names = (name,) if isinstance(name, str) else name
@@ -214,21 +232,35 @@ class Solution(Motion):
         sc = self.scene
         d = {}
         if sc.blocks:  # a driving wheel's centre is no slider: see the rolling entry
-            d["sliders"] = {s.key: {"sliding_velocity": self.S[s.key][0],
-                                    "sliding_acceleration": self.S[s.key][1],
-                                    "coriolis": list(self.coriolis(s.key)),
-                                      "guide": (s.label if isinstance(s, FixedPath) else
-                                                f"block {s.yoke}" if hasattr(s, "yoke")
-                                                else s.guide)}
-                            for s in sc.blocks}
+            d["sliders"] = {
+                s.key: {
+                    "sliding_velocity": self.S[s.key][0],
+                    "sliding_acceleration": self.S[s.key][1],
+                    "coriolis": list(self.coriolis(s.key)),
+                    "guide": (
+                        s.label
+                        if isinstance(s, FixedPath)
+                        else f"block {s.yoke}"
+                        if hasattr(s, "yoke")
+                        else s.guide
+                    ),
+                }
+                for s in sc.blocks
+            }
         if sc.cylinders:
-            d["cylinders"] = {c.key: {"length": self.cylinder_length(c.key),
-                                      "extension_rate": self.S[c.key][0],
-                                      "extension_acceleration": self.S[c.key][1],
-                                      "coriolis": [self.S[c.key][2], self.S[c.key][3]],
-                                      "omega": self.W[c.key], "alpha": self.Al[c.key],
-                                      "barrel": c.barrel, "rod": c.rod}
-                              for c in sc.cylinders}
+            d["cylinders"] = {
+                c.key: {
+                    "length": self.cylinder_length(c.key),
+                    "extension_rate": self.S[c.key][0],
+                    "extension_acceleration": self.S[c.key][1],
+                    "coriolis": [self.S[c.key][2], self.S[c.key][3]],
+                    "omega": self.W[c.key],
+                    "alpha": self.Al[c.key],
+                    "barrel": c.barrel,
+                    "rod": c.rod,
+                }
+                for c in sc.cylinders
+            }
         if sc.pins:
             d["pins"] = {}
             for name, r in self.rubbing.items():
@@ -244,20 +276,30 @@ class Solution(Motion):
         sc = self.scene
         inp = sc.input
         own = self.plan.steps[0].input_record(sc)  # a block driver's place and rates
-        d = own if own is not None else {"crank": inp.crank, "angle": inp.angle,
-                                         "omega": inp.omega, "alpha": inp.alpha}
+        d = (
+            own
+            if own is not None
+            else {"crank": inp.crank, "angle": inp.angle, "omega": inp.omega, "alpha": inp.alpha}
+        )
         if inp.second is not None:
             two = inp.second
-            d["second"] = ({"crank": two.crank, "angle": two.angle,
-                            "omega": two.omega, "alpha": two.alpha} if two.block is None
-                           else self.plan.steps[1].second_record(sc))  # a collar's
+            d["second"] = (
+                {"crank": two.crank, "angle": two.angle, "omega": two.omega, "alpha": two.alpha}
+                if two.block is None
+                else self.plan.steps[1].second_record(sc)
+            )  # a collar's
         res = self.plan.given
         if res is not None:
             g = inp.given
-            d["given"] = {"key": g.key, "value": g.value, "rate_key": g.rate_key,
-                          "rate": g.rate, "per_omega": res.per_omega,
-                          "per_omega2": res.per_omega2,
-                          "condition": res.condition}
+            d["given"] = {
+                "key": g.key,
+                "value": g.value,
+                "rate_key": g.rate_key,
+                "rate": g.rate,
+                "per_omega": res.per_omega,
+                "per_omega2": res.per_omega2,
+                "condition": res.condition,
+            }
         return d
 
     def _rolling_dict(self) -> dict:
@@ -271,22 +313,38 @@ class Solution(Motion):
                 contacts[st.bodies()[0]] = c
         if not contacts:
             return {}
-        d = {k: {"contact": list(c[0]), "velocity": list(c[1]), "acceleration": list(c[2])}
-             for k, c in contacts.items()}
+        d = {
+            k: {"contact": list(c[0]), "velocity": list(c[1]), "acceleration": list(c[2])}
+            for k, c in contacts.items()
+        }
         for s in self.scene.wheel_paths:
             d.setdefault(s.wheel, {}).update(
-                {"centre": s.point, "centre_velocity": self.S[s.key][0],
-                 "centre_acceleration": self.S[s.key][1], "line": s.label})
+                {
+                    "centre": s.point,
+                    "centre_velocity": self.S[s.key][0],
+                    "centre_acceleration": self.S[s.key][1],
+                    "line": s.label,
+                }
+            )
         return {"rolling": d}
 
     def to_dict(self) -> dict:
         """The JSON contract of ``solve --json`` (SI, ccw positive)."""
         sc = self.scene
-        d = {"title": sc.title,
-             "points": {p: {"position": list(self.P[p]), "velocity": list(self.V[p]),
-                            "acceleration": list(self.A[p])} for p in sc.point_names},
-             "links": {lk.key: {"omega": self.W[lk.key], "alpha": self.Al[lk.key]}
-                       for lk in sc.links}}
+        d = {
+            "title": sc.title,
+            "points": {
+                p: {
+                    "position": list(self.P[p]),
+                    "velocity": list(self.V[p]),
+                    "acceleration": list(self.A[p]),
+                }
+                for p in sc.point_names
+            },
+            "links": {
+                lk.key: {"omega": self.W[lk.key], "alpha": self.Al[lk.key]} for lk in sc.links
+            },
+        }
         d.update(self._pairs_dict())
         if sc.loads and sc.input.second is None:  # two inputs: no one torque
             # a block driver: the force along its guide (N, signed along it)
@@ -295,6 +353,7 @@ class Solution(Motion):
         refused = self.forces_refused
         if sc.has_forces:
             from ..forces import forces_dict  # lazy, as in `forces`
+
             d["forces"] = None if refused else forces_dict(self.forces)
         d.update(self._rolling_dict())
         warnings = list(self.warnings)
@@ -306,15 +365,22 @@ class Solution(Motion):
                 d["centres"] = centres_dict(locate(self))
             except PolygonMethodError as exc:
                 warnings.append(f"instantaneous centres: {exc.message}")
-        d["steps"] = [{"step": st.index + 1, "kind": st.kind, "title": st.title,
-                       "finds": list(st.finds),
-                       "condition": self.cond.get(st.index, 1.0)}
-                      for st in self.plan.steps]
+        d["steps"] = [
+            {
+                "step": st.index + 1,
+                "kind": st.kind,
+                "title": st.title,
+                "finds": list(st.finds),
+                "condition": self.cond.get(st.index, 1.0),
+            }
+            for st in self.plan.steps
+        ]
         d["warnings"] = warnings
         d["notes"] = list(self.notes)
         d["error_bounds"] = _useful(bounds_dict(self, self.error_bounds))
         if sc.has_forces and not refused:  # each force's bound, null where none is useful
             from ..forces.bounds import bounds_dict as force_bounds_dict, force_bounds
+
             d["error_bounds"]["forces"] = force_bounds_dict(force_bounds(self))
         return _finite(d)
 
@@ -341,16 +407,21 @@ class Solution(Motion):
                 return self.input_torque
             f = self.forces
             if f.driver not in ("crank", "wheel"):  # a block's or cylinder's effort: a force
-                raise SceneError(f"torque: {f.crank} drives this mechanism with a force, not "
-                                 "a torque (solve gives it as the input force)")
+                raise SceneError(
+                    f"torque: {f.crank} drives this mechanism with a force, not "
+                    "a torque (solve gives it as the input force)"
+                )
             return f.input_torque
         if kind in ("F", "N", "Fc", "Fi", "Ci", "h"):
             from ..forces import force_value  # lazy, as in `forces`
-            return force_value(self.forces, kind, rolling_body(self.scene, names) if kind == "Fc"
-                               else names[0])
+
+            return force_value(
+                self.forces, kind, rolling_body(self.scene, names) if kind == "Fc" else names[0]
+            )
         if kind in ("vu", "au"):  # the guide's point under a block (v_A1, a_A1)
-            return hypot(*self.under_block(names[0], "velocity" if kind == "vu"
-                                           else "acceleration"))
+            return hypot(
+                *self.under_block(names[0], "velocity" if kind == "vu" else "acceleration")
+            )
         if kind in ("vI", "aI"):  # the wheel's point at its rolling contact
             wheel = self.scene.link("-".join(names)).key
             for st in self.plan.steps:
@@ -373,11 +444,11 @@ def _useful(d: dict) -> dict:
             return float(x)
         count[0] += 1
         return None
+
     out = {"relative_to": d["relative_to"]}
     out.update(clean({k: v for k, v in d.items() if k != "relative_to"}))
     if count[0]:
-        out["no_useful_bound"] = {"count": count[0] - (out["worst"] is None),
-                                  "reason": NO_BOUND}
+        out["no_useful_bound"] = {"count": count[0] - (out["worst"] is None), "reason": NO_BOUND}
     return out
 
 
@@ -397,11 +468,13 @@ def _finite(d: dict) -> dict:
         if isinstance(x, (list, tuple)):
             return [clean(v, where) for v in x]
         return x
+
     out = clean(d, "")
     if bad:
-        out["warnings"].append(f"{len(bad)} number(s) overflowed or are undefined, written "
-                               f"as null: {', '.join(dict.fromkeys(bad[:5]))}"
-                               + (" ..." if len(bad) > 5 else ""))
+        out["warnings"].append(
+            f"{len(bad)} number(s) overflowed or are undefined, written "
+            f"as null: {', '.join(dict.fromkeys(bad[:5]))}" + (" ..." if len(bad) > 5 else "")
+        )
     return out
 
 
@@ -417,9 +490,11 @@ def _structural_warnings(sol) -> tuple:
     for cp in sc.points:
         lk = sc.link(cp.link)
         if lk.key in fixed:
-            out.append(f"point {cp.name} is on link {lk.key}, whose ends are both fixed: it "
-                       "sits on the frame, so its velocity and acceleration are zero (was it "
-                       "meant to be on a moving link?)")
+            out.append(
+                f"point {cp.name} is on link {lk.key}, whose ends are both fixed: it "
+                "sits on the frame, so its velocity and acceleration are zero (was it "
+                "meant to be on a moving link?)"
+            )
     for X in sc.point_names:
         if X in sc.ground:
             continue
@@ -431,22 +506,28 @@ def _structural_warnings(sol) -> tuple:
             if lk is not None and lk.key in fixed:
                 break  # said above
             if lk is not None and G in lk.points:
-                out.append(f"point {X} is placed on the fixed pivot {G} (on link {lk.key}, "
-                           f"0 {unit} from {G}): it does not move, so its velocity and "
-                           "acceleration are zero")
+                out.append(
+                    f"point {X} is placed on the fixed pivot {G} (on link {lk.key}, "
+                    f"0 {unit} from {G}): it does not move, so its velocity and "
+                    "acceleration are zero"
+                )
             else:
-                out.append(f"point {X} is at the fixed pivot {G} at this instant (the "
-                           f"mechanism passes through {G}'s place, at ({g[0] / u:g}, "
-                           f"{g[1] / u:g}) {unit}): check the figure")
+                out.append(
+                    f"point {X} is at the fixed pivot {G} at this instant (the "
+                    f"mechanism passes through {G}'s place, at ({g[0] / u:g}, "
+                    f"{g[1] / u:g}) {unit}): check the figure"
+                )
             break
     if unit == "m" and sc.links:
         lengths = [lk.length for lk in sc.links]
         crank = sc.link(sc.input.crank) if sc.input.crank is not None else None
         pin = abs(sc.input.omega or 0.0) * crank.length if crank is not None else 0.0
         if min(lengths) >= 5.0 and pin > 60.0:
-            out.append(f"units = \"m\", yet the links are {min(lengths):g} to "
-                       f"{max(lengths):g} m long (the crank pin would move at {pin:.4g} m/s): "
-                       "if the lengths are millimetres, write units = \"mm\"")
+            out.append(
+                f'units = "m", yet the links are {min(lengths):g} to '
+                f"{max(lengths):g} m long (the crank pin would move at {pin:.4g} m/s): "
+                'if the lengths are millimetres, write units = "mm"'
+            )
     return tuple(out)
 
 
@@ -476,7 +557,6 @@ def solve(scene: Scene) -> Solution:
 _new = object.__new__
 
 
-
 def tidied(sol: Solution) -> Solution:
     """``sol`` with its rounding noise set to exact zeros, for reports that write every
     number out (the step table, the centres): a velocity, acceleration, omega, alpha,
@@ -485,8 +565,7 @@ def tidied(sol: Solution) -> Solution:
     Coriolis component; a position below ``TOL.negligible`` of the mechanism's size is 0.
     A value above its bound stays, however small beside the largest of its kind."""
     sc = sol.scene
-    size = max([lk.length for lk in sc.links]
-               + [hypot(*p) for p in sol.P.values()] + [0.0])
+    size = max([lk.length for lk in sc.links] + [hypot(*p) for p in sol.P.values()] + [0.0])
 
     def vec(d, kind):
         if kind is None:
@@ -506,8 +585,18 @@ def tidied(sol: Solution) -> Solution:
         return (vs, a_s) + tuple(0.0 if abs(c) <= lim else c for c in s[2:])
 
     S = {n: slide(n, s) for n, s in sol.S.items()}
-    out = Solution(sc, sol.plan, vec(sol.P, None), vec(sol.V, "v"), vec(sol.A, "a"),
-                   num(sol.W, "omega"), num(sol.Al, "alpha"), S, sol.cond, sol.theta)
+    out = Solution(
+        sc,
+        sol.plan,
+        vec(sol.P, None),
+        vec(sol.V, "v"),
+        vec(sol.A, "a"),
+        num(sol.W, "omega"),
+        num(sol.Al, "alpha"),
+        S,
+        sol.cond,
+        sol.theta,
+    )
     b = sol.error_bounds
     k = b.scales
     for pin, rec in zip(sol.plan.pins, out.rubbing.values()):  # |w1 - w2| r of equal omegas
@@ -519,14 +608,23 @@ def tidied(sol: Solution) -> Solution:
     if t is not None:
         # each load's power within its bound (the bound of the velocity or omega it takes,
         # times |F| or |T_L|), the torque within theirs over the crank's omega
-        sizes = [hypot(*ld.force) * k["velocity"] if ld.force is not None
-                 else abs(ld.torque) * k["omega"] for ld in sc.loads]
+        sizes = [
+            hypot(*ld.force) * k["velocity"]
+            if ld.force is not None
+            else abs(ld.torque) * k["omega"]
+            for ld in sc.loads
+        ]
         e = b.torque(sc)
         e = e if e < 1.0 else 0.0
-        loads = [b.V.get(ld.target, 0.0) if ld.force is not None
-                 else b.W.get(sc.link(ld.target).key, 0.0) for ld in sc.loads]
-        out._cache["power"] = [(what, 0.0 if abs(p) <= (el if el < 1.0 else 0.0) * sz
-                                else p)
-                               for (what, p), el, sz in zip(out.power_terms, loads, sizes)]
+        loads = [
+            b.V.get(ld.target, 0.0)
+            if ld.force is not None
+            else b.W.get(sc.link(ld.target).key, 0.0)
+            for ld in sc.loads
+        ]
+        out._cache["power"] = [
+            (what, 0.0 if abs(p) <= (el if el < 1.0 else 0.0) * sz else p)
+            for (what, p), el, sz in zip(out.power_terms, loads, sizes)
+        ]
         out._cache["torque"] = 0.0 if abs(t) <= e * sum(sizes) / abs(sc.input.omega) else t
     return out

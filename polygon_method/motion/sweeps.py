@@ -34,8 +34,15 @@ from ..scene import Scene
 from ..solver.tracking import CHUNK, Domain, Sweeper, array_motion, run_arrays, valid_mask
 from ..common.units import ABSURD
 
-__all__ = ["sweep", "SweepResult", "evaluate_all", "angles_ok", "sweep_angles", "stroke_places",
-           "CHUNK"]
+__all__ = [
+    "sweep",
+    "SweepResult",
+    "evaluate_all",
+    "angles_ok",
+    "sweep_angles",
+    "stroke_places",
+    "CHUNK",
+]
 
 
 # --------------------------------------------------------------------------- the result
@@ -55,12 +62,33 @@ class SweepResult(Motion):
 
     __slots__ = ("rubbing", "input_torque", "requested", "left_out", "domain", "notes")
 
-    def __init__(self, scene, plan, theta, P, V, A, W, Al, S, conditions, rubbing,
-                 input_torque, requested, left_out, domain: Domain, notes=()):
+    def __init__(
+        self,
+        scene,
+        plan,
+        theta,
+        P,
+        V,
+        A,
+        W,
+        Al,
+        S,
+        conditions,
+        rubbing,
+        input_torque,
+        requested,
+        left_out,
+        domain: Domain,
+        notes=(),
+    ):
         Motion.__init__(self, scene, plan, theta, P, V, A, W, Al, S, conditions, None)
         self.rubbing, self.input_torque = rubbing, input_torque
-        self.requested, self.left_out, self.domain, self.notes = (requested, left_out, domain,
-                                                                  tuple(notes))
+        self.requested, self.left_out, self.domain, self.notes = (
+            requested,
+            left_out,
+            domain,
+            tuple(notes),
+        )
 
     @property
     def limits(self) -> tuple:
@@ -92,27 +120,44 @@ class SweepResult(Motion):
         quantity at that angle (:mod:`polygon_method.solver.errorbound`)."""
         sc = self.scene
         driver = self.plan.steps[0]  # what the parameter is: asked of the driver
-        cols = ([("theta", "deg", self.degrees)] if driver.periodic
-                else [(driver.parameter(sc)[1], "m", self.theta)])  # a block driver's place
+        cols = (
+            [("theta", "deg", self.degrees)]
+            if driver.periodic
+            else [(driver.parameter(sc)[1], "m", self.theta)]
+        )  # a block driver's place
         for p in sc.point_names:
             (x, y), (vx, vy), (ax, ay) = self.P[p], self.V[p], self.A[p]
-            cols += [(f"x_{p}", "m", x), (f"y_{p}", "m", y), (f"vx_{p}", "m/s", vx),
-                     (f"vy_{p}", "m/s", vy), (f"ax_{p}", "m/s^2", ax),
-                     (f"ay_{p}", "m/s^2", ay)]
+            cols += [
+                (f"x_{p}", "m", x),
+                (f"y_{p}", "m", y),
+                (f"vx_{p}", "m/s", vx),
+                (f"vy_{p}", "m/s", vy),
+                (f"ax_{p}", "m/s^2", ax),
+                (f"ay_{p}", "m/s^2", ay),
+            ]
         for lk in sc.links:
-            cols += [(f"omega_{lk.key}", "rad/s", self.W[lk.key]),
-                     (f"alpha_{lk.key}", "rad/s^2", self.Al[lk.key])]
+            cols += [
+                (f"omega_{lk.key}", "rad/s", self.W[lk.key]),
+                (f"alpha_{lk.key}", "rad/s^2", self.Al[lk.key]),
+            ]
         for s in sc.sliders:
             vs, a_s, cx, cy = self.S[s.key]
-            cols += [(f"vs_{s.key}", "m/s", vs), (f"as_{s.key}", "m/s^2", a_s),
-                     (f"acx_{s.key}", "m/s^2", cx), (f"acy_{s.key}", "m/s^2", cy)]
+            cols += [
+                (f"vs_{s.key}", "m/s", vs),
+                (f"as_{s.key}", "m/s^2", a_s),
+                (f"acx_{s.key}", "m/s^2", cx),
+                (f"acy_{s.key}", "m/s^2", cy),
+            ]
         for c in sc.cylinders:  # its length, rate of extension and its acceleration
             (bx, by), (rx, ry) = self.P[c.barrel], self.P[c.rod]
             vs, a_s, _, _ = self.S[c.key]
-            cols += [(f"length_{c.key}", "m", np.hypot(rx - bx, ry - by)),
-                     (f"vs_{c.key}", "m/s", vs), (f"as_{c.key}", "m/s^2", a_s),
-                     (f"omega_{c.key}", "rad/s", self.W[c.key]),
-                     (f"alpha_{c.key}", "rad/s^2", self.Al[c.key])]
+            cols += [
+                (f"length_{c.key}", "m", np.hypot(rx - bx, ry - by)),
+                (f"vs_{c.key}", "m/s", vs),
+                (f"as_{c.key}", "m/s^2", a_s),
+                (f"omega_{c.key}", "rad/s", self.W[c.key]),
+                (f"alpha_{c.key}", "rad/s^2", self.Al[c.key]),
+            ]
         for pin, r in self.rubbing.items():
             cols.append((f"rub_{pin}", "m/s", r))
         if self.input_torque is not None:
@@ -127,8 +172,14 @@ class SweepResult(Motion):
             f = self._forces()
             if f is not None:  # the largest bound of any force (relative to the largest)
                 from ..forces.bounds import force_bounds  # lazy, as in `_forces`
-                cols.append(("err_forces", "1", np.broadcast_to(
-                    force_bounds(self, f).worst, np.shape(self.theta))))
+
+                cols.append(
+                    (
+                        "err_forces",
+                        "1",
+                        np.broadcast_to(force_bounds(self, f).worst, np.shape(self.theta)),
+                    )
+                )
         return cols
 
     def _forces(self):
@@ -137,6 +188,7 @@ class SweepResult(Motion):
         if not self.scene.has_forces or not len(self.theta):
             return None
         from ..forces import analyse  # lazy: a scene without masses never loads forces/
+
         try:
             return analyse(self)
         except PolygonMethodError:
@@ -154,23 +206,36 @@ class SweepResult(Motion):
         if f is None:
             return []
         n = np.shape(self.theta)
-        cols = [("torque_inertia", "N m", np.broadcast_to(f.input_torque, n))
-                if f.driver == "crank" else
-                ("force_inertia", "N", np.broadcast_to(f.input_torque, n))]
+        cols = [
+            ("torque_inertia", "N m", np.broadcast_to(f.input_torque, n))
+            if f.driver == "crank"
+            else ("force_inertia", "N", np.broadcast_to(f.input_torque, n))
+        ]
         if f.second_crank is not None:
             cols.append(("torque2_inertia", "N m", np.broadcast_to(f.second_torque, n)))
-        cols += [("shake_x", "N", np.broadcast_to(f.shaking_force[0], n)),
-                 ("shake_y", "N", np.broadcast_to(f.shaking_force[1], n)),
-                 ("shake_moment", "N m", np.broadcast_to(f.shaking_moment, n))]
+        cols += [
+            ("shake_x", "N", np.broadcast_to(f.shaking_force[0], n)),
+            ("shake_y", "N", np.broadcast_to(f.shaking_force[1], n)),
+            ("shake_moment", "N m", np.broadcast_to(f.shaking_moment, n)),
+        ]
         cols += [(f"N_{g.point}", "N", np.broadcast_to(g.normal, n)) for g in f.guides]
-        cols += [(f"F_{p.point}_{p.on}_{p.by}".replace(" ", ""), "N",
-                  np.broadcast_to(np.hypot(*p.force), n)) for p in f.pins]
+        cols += [
+            (
+                f"F_{p.point}_{p.on}_{p.by}".replace(" ", ""),
+                "N",
+                np.broadcast_to(np.hypot(*p.force), n),
+            )
+            for p in f.pins
+        ]
         from ..forces.engine import efforts  # lazy, as in `_forces`
+
         e = efforts(self.scene, self.plan, self.P, f)
         if e is not None:  # an engine: the turning-moment diagram and its efforts
-            cols += [("piston_effort", "N", np.broadcast_to(e.F_P, n)),
-                     ("crank_effort", "N", np.broadcast_to(e.F_T, n)),
-                     ("turning_moment", "N m", np.broadcast_to(e.T, n))]
+            cols += [
+                ("piston_effort", "N", np.broadcast_to(e.F_P, n)),
+                ("crank_effort", "N", np.broadcast_to(e.F_T, n)),
+                ("turning_moment", "N m", np.broadcast_to(e.T, n)),
+            ]
         return cols
 
     def to_csv(self, error_bound=False) -> str:
@@ -188,8 +253,10 @@ def rubbing_arrays(plan, W, n):
     """The rubbing velocity at every pin over a sweep of ``n`` positions (the largest over the pairs
     of bodies each pin joins), from the omegas ``W``."""
     radii = plan.dims.radii
-    return {point: np.broadcast_to(largest(values), (n,)) if values else np.zeros(n)
-            for point, values in pin_rubbing(plan, W, radii).items()}
+    return {
+        point: np.broadcast_to(largest(values), (n,)) if values else np.zeros(n)
+        for point, values in pin_rubbing(plan, W, radii).items()
+    }
 
 
 def torque_array(scene, V, W, omega, n):
@@ -213,7 +280,7 @@ def evaluate_all(sw: Sweeper, theta, chunk):
     """Evaluate ``theta`` (all reachable) in chunks; yields (slice, Frame)."""
     n = len(theta)
     for s in range(0, n, chunk):
-        th = theta[s:s + chunk]
+        th = theta[s : s + chunk]
         fr = sw.evaluate(th)
         for idx, h in sw.near_change_points(th):
             _patch(fr, sw.richardson(th[idx], h), idx)
@@ -265,15 +332,17 @@ def sweep_angles(angles, turns=1):
     try:
         th = np.atleast_1d(np.asarray(angles, dtype=float))
     except (TypeError, ValueError):
-        raise SceneError("the crank angles must be numbers (radians), got "
-                         f"{str(angles)[:60]!r}") from None
+        raise SceneError(
+            f"the crank angles must be numbers (radians), got {str(angles)[:60]!r}"
+        ) from None
     if th.ndim != 1:
         raise SceneError("the crank angles must be a 1-D sequence")
     if not np.isfinite(th).all():
         raise SceneError("the crank angles must be finite numbers")
     if len(th) and np.abs(th).max() > ABSURD["angle"]:  # cos(1e300) is rounding, not a turn
-        raise SceneError(f"the crank angles must be within +-{ABSURD['angle']:g} rad, got "
-                         f"{np.abs(th).max():g}")
+        raise SceneError(
+            f"the crank angles must be within +-{ABSURD['angle']:g} rad, got {np.abs(th).max():g}"
+        )
     return th
 
 
@@ -312,14 +381,18 @@ def sweep(scene: Scene, angles=None, *, chunk: int = CHUNK) -> SweepResult:
     bad = valid_mask(fr, plan)
     notes = list(sw.domain.notes)
     if bad.any():
-        notes.append(f"{int(bad.sum())} crank angle(s) at a singular position (a toggle "
-                     "where the velocity is indeterminate) were left out")
+        notes.append(
+            f"{int(bad.sum())} crank angle(s) at a singular position (a toggle "
+            "where the velocity is indeterminate) were left out"
+        )
     # each step places its point at its links' lengths; only where values were taken from
     # both sides of a change point (or a step was masked) could a row fail to close
     open_ = unclosed(scene, fr) & ~bad if sw.domain.change_points else bad & False
     if open_.any():
-        notes.append(f"{int(open_.sum())} crank angle(s) where the links would not keep their "
-                     "lengths (an indeterminate position) were left out")
+        notes.append(
+            f"{int(open_.sum())} crank angle(s) where the links would not keep their "
+            "lengths (an indeterminate position) were left out"
+        )
         bad |= open_
     if bad.any():
         fr = select(fr, ~bad)
@@ -327,8 +400,24 @@ def sweep(scene: Scene, angles=None, *, chunk: int = CHUNK) -> SweepResult:
     n = len(th)
     rub = rubbing_arrays(plan, fr.W, n)
     torque = torque_array(scene, fr.V, fr.W, sw.omega, n)
-    return SweepResult(scene, plan, th, fr.P, fr.V, fr.A, fr.W, fr.Al, fr.S, fr.cond, rub,
-                       torque, len(th_req), len(th_req) - n, sw.domain, tuple(notes))
+    return SweepResult(
+        scene,
+        plan,
+        th,
+        fr.P,
+        fr.V,
+        fr.A,
+        fr.W,
+        fr.Al,
+        fr.S,
+        fr.cond,
+        rub,
+        torque,
+        len(th_req),
+        len(th_req) - n,
+        sw.domain,
+        tuple(notes),
+    )
 
 
 def unclosed(scene, fr: Motion):
@@ -417,9 +506,14 @@ def select(fr: Motion, keep) -> Motion:
         return _const(v, m) if _constant(v) else v[keep]
 
     two = lambda d: {k: (take(v[0]), take(v[1])) for k, v in d.items()}  # noqa: E731
-    return array_motion(fr.theta[keep], two(fr.P), two(fr.V), two(fr.A),
-                   {k: take(v) for k, v in fr.W.items()}, {k: take(v) for k, v in fr.Al.items()},
-                   {k: tuple(take(a) for a in v) for k, v in fr.S.items()},
-                   {i: take(c) for i, c in fr.cond.items()}, fr.bad[keep])
-
-
+    return array_motion(
+        fr.theta[keep],
+        two(fr.P),
+        two(fr.V),
+        two(fr.A),
+        {k: take(v) for k, v in fr.W.items()},
+        {k: take(v) for k, v in fr.Al.items()},
+        {k: tuple(take(a) for a in v) for k, v in fr.S.items()},
+        {i: take(c) for i, c in fr.cond.items()},
+        fr.bad[keep],
+    )

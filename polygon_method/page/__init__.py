@@ -6,16 +6,33 @@
 ``page.css``), :mod:`.animate` makes GIF, HTML or SVG animations with matplotlib.
 """
 
-from .frames import (DEFAULT_FRAMES, MAX_FRAMES, MAX_PICTURE_FRAMES, Frames, check_frames,
-                     frames, max_frames)
+from .frames import (
+    DEFAULT_FRAMES,
+    MAX_FRAMES,
+    MAX_PICTURE_FRAMES,
+    Frames,
+    check_frames,
+    frames,
+    max_frames,
+)
 
-__all__ = ["frames", "Frames", "DEFAULT_FRAMES", "MAX_FRAMES", "MAX_PICTURE_FRAMES",
-           "max_frames", "check_frames", "page_html", "animation"]
+__all__ = [
+    "frames",
+    "Frames",
+    "DEFAULT_FRAMES",
+    "MAX_FRAMES",
+    "MAX_PICTURE_FRAMES",
+    "max_frames",
+    "check_frames",
+    "page_html",
+    "animation",
+]
 
 
 def page_html(*args, **kw):
     """The animated page as HTML (see :func:`polygon_method.page.html.page_html`)."""
     from .html import page_html as make
+
     return make(*args, **kw)
 
 
@@ -23,4 +40,5 @@ def animation(*args, **kw):
     """An animation of the cycle: GIF, HTML or SVG (see
     :func:`polygon_method.page.animate.animation`)."""
     from .animate import animation as make
+
     return make(*args, **kw)

@@ -40,8 +40,11 @@ FPS = 15
 FONT_CM = 0.35
 #: colour and width (cm) of each kind of line, as the drawings have them
 _COLOR = {"link": BODY_EDGE, "absolute": STYLE["absolute"][0], "relative": STYLE["relative"][0]}
-_WIDTH = {"link": 0.06, "absolute": STYLE["absolute"][1] * 2.54 / 72,
-          "relative": STYLE["relative"][1] * 2.54 / 72}
+_WIDTH = {
+    "link": 0.06,
+    "absolute": STYLE["absolute"][1] * 2.54 / 72,
+    "relative": STYLE["relative"][1] * 2.54 / 72,
+}
 
 
 def _cm(fr: Frames, phase: str, scale, p):
@@ -148,8 +151,14 @@ def _html(fr: Frames) -> str:
         buf = io.BytesIO()
         pics.picture(k).save(buf, format="PNG", compress_level=1)
         frames_.append("data:image/png;base64," + base64.b64encode(buf.getvalue()).decode())
-    data = json.dumps({"pictures": frames_, "fps": FPS,
-                       "angles": [f"{a % fr.cycle_degrees:.1f}" for a in fr.degrees]}, separators=(",", ":"))
+    data = json.dumps(
+        {
+            "pictures": frames_,
+            "fps": FPS,
+            "angles": [f"{a % fr.cycle_degrees:.1f}" for a in fr.degrees],
+        },
+        separators=(",", ":"),
+    )
     title = escape(fr.sol.scene.title or "mechanism")
     w, h = pics.size
     return f"""<!DOCTYPE html>
@@ -196,29 +205,40 @@ def _svg(fr: Frames) -> str:
         pad = 0.08 * max(x1 - x0, y1 - y0, 4)
         w, h = x1 - x0 + 2 * pad, y1 - y0 + 2 * pad
         fs = FONT_CM
-        g = [f'<svg x="{x_at:.3f}" y="1.2" width="{w:.3f}" height="{h:.3f}" '
-             f'viewBox="{x0 - pad:.3f} {-y1 - pad:.3f} {w:.3f} {h:.3f}">',
-             f'<text x="{x0 - pad + 0.2:.3f}" y="{-y1 - pad + fs:.3f}" font-size="{fs:.3f}">'
-             f'{escape(phase)}, {escape(display_unit(scale.text))}</text>']
+        g = [
+            f'<svg x="{x_at:.3f}" y="1.2" width="{w:.3f}" height="{h:.3f}" '
+            f'viewBox="{x0 - pad:.3f} {-y1 - pad:.3f} {w:.3f} {h:.3f}">',
+            f'<text x="{x0 - pad + 0.2:.3f}" y="{-y1 - pad + fs:.3f}" font-size="{fs:.3f}">'
+            f"{escape(phase)}, {escape(display_unit(scale.text))}</text>",
+        ]
         for kind, (a, b, c, d) in lines:
-            g.append(f'<line stroke="{_COLOR[kind]}" stroke-width="{_WIDTH[kind]:.3f}" '
-                     f'stroke-linecap="round">' + "".join(
-                         f'<animate attributeName="{n}" values="{_values(v)}" {anim}/>'
-                         for n, v in (("x1", a), ("y1", -b), ("x2", c), ("y2", -d)))
-                     + "</line>")
+            g.append(
+                f'<line stroke="{_COLOR[kind]}" stroke-width="{_WIDTH[kind]:.3f}" '
+                f'stroke-linecap="round">'
+                + "".join(
+                    f'<animate attributeName="{n}" values="{_values(v)}" {anim}/>'
+                    for n, v in (("x1", a), ("y1", -b), ("x2", c), ("y2", -d))
+                )
+                + "</line>"
+            )
         for text, (x, y) in labels:
-            g.append(f'<text font-size="{fs:.3f}" font-style="italic">{escape(text)}'
-                     f'<animate attributeName="x" values="{_values(x + 0.2 * fs)}" {anim}/>'
-                     f'<animate attributeName="y" values="{_values(-y - 0.2 * fs)}" {anim}/>'
-                     "</text>")
+            g.append(
+                f'<text font-size="{fs:.3f}" font-style="italic">{escape(text)}'
+                f'<animate attributeName="x" values="{_values(x + 0.2 * fs)}" {anim}/>'
+                f'<animate attributeName="y" values="{_values(-y - 0.2 * fs)}" {anim}/>'
+                "</text>"
+            )
         g.append("</svg>")
         parts.append("\n".join(g))
         x_at += w + 0.5
         height = max(height, h + 1.5)
     title = escape(fr.sol.scene.title or "mechanism")
     deg = ";".join(f"{d % fr.cycle_degrees:.1f}" for d in fr.degrees)
-    return (f'<svg xmlns="http://www.w3.org/2000/svg" width="{x_at:.2f}cm" '
-            f'height="{height:.2f}cm" viewBox="0 0 {x_at:.3f} {height:.3f}" '
-            f'font-family="sans-serif">\n<title>{title}: the diagrams over the crank\'s cycle '
-            f'({len(fr)} frames)</title>\n<desc>crank angles (deg): {deg}</desc>\n' + "\n".join(parts)
-            + "\n</svg>\n")
+    return (
+        f'<svg xmlns="http://www.w3.org/2000/svg" width="{x_at:.2f}cm" '
+        f'height="{height:.2f}cm" viewBox="0 0 {x_at:.3f} {height:.3f}" '
+        f'font-family="sans-serif">\n<title>{title}: the diagrams over the crank\'s cycle '
+        f"({len(fr)} frames)</title>\n<desc>crank angles (deg): {deg}</desc>\n"
+        + "\n".join(parts)
+        + "\n</svg>\n"
+    )

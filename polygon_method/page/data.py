@@ -14,8 +14,17 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..draw.style import (BODY_EDGE, BODY_FACE, FORCE_STYLE, HEAD_HALF, HEAD_LEN, IMAGE_FACE,
-                          LINE_STYLE, PITCH_STYLE, STYLE)
+from ..draw.style import (
+    BODY_EDGE,
+    BODY_FACE,
+    FORCE_STYLE,
+    HEAD_HALF,
+    HEAD_LEN,
+    IMAGE_FACE,
+    LINE_STYLE,
+    PITCH_STYLE,
+    STYLE,
+)
 from ..solver.errorbound import USELESS
 from ..common.errors import TOL, PolygonMethodError
 from ..forces import analyse, side_label, Side
@@ -49,6 +58,7 @@ def res_length(res, cyl) -> float:
 def _noise_scales(res, moving, links, n) -> dict:
     """Per frame, the largest of each kind (as :attr:`Solution.scales`, and the mechanism's
     size for positions): what rounding noise is measured against."""
+
     def b(x):
         return np.broadcast_to(np.asarray(x, dtype=float), (n,))
 
@@ -56,11 +66,17 @@ def _noise_scales(res, moving, links, n) -> dict:
         return np.max(np.array(arrays), axis=0) if arrays else np.zeros(n)
 
     w = most([np.abs(b(res.W[lk.key])) for lk in links])
-    size = np.maximum(most([np.hypot(b(res.P[p][0]), b(res.P[p][1])) for p in moving]),
-                      max([lk.length for lk in links] + [0.0]))
-    return {"P": size, "V": most([np.hypot(b(res.V[p][0]), b(res.V[p][1])) for p in moving]),
-            "A": most([np.hypot(b(res.A[p][0]), b(res.A[p][1])) for p in moving]),
-            "W": w, "Al": most([np.abs(b(res.Al[lk.key])) for lk in links]) + w * w}
+    size = np.maximum(
+        most([np.hypot(b(res.P[p][0]), b(res.P[p][1])) for p in moving]),
+        max([lk.length for lk in links] + [0.0]),
+    )
+    return {
+        "P": size,
+        "V": most([np.hypot(b(res.V[p][0]), b(res.V[p][1])) for p in moving]),
+        "A": most([np.hypot(b(res.A[p][0]), b(res.A[p][1])) for p in moving]),
+        "W": w,
+        "Al": most([np.abs(b(res.Al[lk.key])) for lk in links]) + w * w,
+    }
 
 
 def _torque_scale(sc, k):
@@ -105,8 +121,15 @@ def _sliding(s, e, sizes, n):
     bound 0."""
     ev, ea, ec = e if e is not None else (0.0, 0.0, 0.0)
     cx, cy = _own_vec(s[2:4], ec, sizes["acceleration"], n)
-    return [round_sig(v) for v in (_own(s[0], ev, sizes["velocity"], n),
-                                   _own(s[1], ea, sizes["acceleration"], n), cx, cy)]
+    return [
+        round_sig(v)
+        for v in (
+            _own(s[0], ev, sizes["velocity"], n),
+            _own(s[1], ea, sizes["acceleration"], n),
+            cx,
+            cy,
+        )
+    ]
 
 
 def _xy(fr: Frames, phase):
@@ -132,8 +155,12 @@ def diagram_box(fr: Frames, phase: str, scale) -> list:
         keep = size <= REACH * np.median(size)
         keep[fr.start] = True
         x, y = x[:, keep], y[:, keep]
-    return [round(float(x.min()), 3), round(float(y.min()), 3), round(float(x.max()), 3),
-            round(float(y.max()), 3)]
+    return [
+        round(float(x.min()), 3),
+        round(float(y.min()), 3),
+        round(float(x.max()), 3),
+        round(float(y.max()), 3),
+    ]
 
 
 def _unders(sol) -> dict:
@@ -142,8 +169,7 @@ def _unders(sol) -> dict:
     out = {}
     for s in sol.scene.sliders:
         if hasattr(s, "guide"):
-            out[s.key] = (slot_labels(sol, s.point)[s.key] if s.slot
-                          else under_label(sol, s.point))
+            out[s.key] = slot_labels(sol, s.point)[s.key] if s.slot else under_label(sol, s.point)
     return out
 
 
@@ -165,12 +191,22 @@ def inertia_arrows(res, n):
     size = max(float(np.max(np.broadcast_to(np.hypot(*i.force), (n,)))) for i in f.inertia)
     s = newton_scale(size, INERTIA_CM)
     reach = max(lk.length for lk in res.scene.links)
-    return {"text": display_unit(s.text), "perCm": s.per_cm,
-            "bodies": [{"body": i.body,
-                        "label": side_label(Side("inertia", i.body, "", "", (0.0, 0.0),
-                                                 (0.0, 0.0)), f.numbers),
-                        "G": _flat(i.G), "F": _flat(i.force),
-                        "H": _flat(offset_points(i, n, reach))} for i in f.inertia]}
+    return {
+        "text": display_unit(s.text),
+        "perCm": s.per_cm,
+        "bodies": [
+            {
+                "body": i.body,
+                "label": side_label(
+                    Side("inertia", i.body, "", "", (0.0, 0.0), (0.0, 0.0)), f.numbers
+                ),
+                "G": _flat(i.G),
+                "F": _flat(i.force),
+                "H": _flat(offset_points(i, n, reach)),
+            }
+            for i in f.inertia
+        ],
+    }
 
 
 def offset_points(inertia, n, reach):
@@ -205,9 +241,14 @@ def page_style() -> dict:
     lines["pitch"] = [PITCH_STYLE[0], PITCH_STYLE[1], list(PITCH_STYLE[2])]
     c, w, _ = FORCE_STYLE["inertia"]
     lines["inertia"] = [c, w, None]
-    return {"lines": lines, "head": [HEAD_LEN, HEAD_HALF], "body": [BODY_FACE, BODY_EDGE],
-            "image": IMAGE_FACE, "series": list(SERIES_COLORS),
-            "marks": {k: [c, w, list(d) if d else None] for k, (c, w, d) in MARKS.items()}}
+    return {
+        "lines": lines,
+        "head": [HEAD_LEN, HEAD_HALF],
+        "body": [BODY_FACE, BODY_EDGE],
+        "image": IMAGE_FACE,
+        "series": list(SERIES_COLORS),
+        "marks": {k: [c, w, list(d) if d else None] for k, (c, w, d) in MARKS.items()},
+    }
 
 
 def page_data(fr: Frames) -> dict:
@@ -222,31 +263,46 @@ def page_data(fr: Frames) -> dict:
     sliders = []
     for s in sc.blocks:  # (a driving wheel's centre path: no block, no guide)
         if hasattr(s, "guide"):
-            sliders.append({"point": s.point, "key": s.key, "guide": [s.first, s.second],
-                            "link": s.guide})
+            sliders.append(
+                {"point": s.point, "key": s.key, "guide": [s.first, s.second], "link": s.guide}
+            )
         elif hasattr(s, "yoke"):  # a yoke's slot: a line through the pin, moving with it
-            sliders.append({"point": s.point, "key": s.key,
-                            "u": [float(c) for c in s.direction]})
+            sliders.append({"point": s.point, "key": s.key, "u": [float(c) for c in s.direction]})
         else:
-            sliders.append({"point": s.point, "key": s.key, "u": [float(c) for c in s.u],
-                            "through": [float(c) for c in s.through]})
+            sliders.append(
+                {
+                    "point": s.point,
+                    "key": s.key,
+                    "u": [float(c) for c in s.u],
+                    "through": [float(c) for c in s.through],
+                }
+            )
     shapes = [sh for st in sol.plan.steps for sh in st.shapes(sol.P)]
     wheels = [[sh[1], float(sh[2])] for sh in shapes if sh[0] == "circle"]  # pitch circles
-    lines = [[[float(c) for c in sh[1]], [float(c) for c in sh[2]]] for sh in shapes
-             if sh[0] == "ground line"]  # the fixed lines wheels roll on
+    lines = [
+        [[float(c) for c in sh[1]], [float(c) for c in sh[2]]]
+        for sh in shapes
+        if sh[0] == "ground line"
+    ]  # the fixed lines wheels roll on
     n = len(fr)
     k = _noise_scales(res, moving, links, n)
     eb = res.error_bounds  # each quantity's own bound, per frame: below it, noise
     d = {
         "title": sc.title or sc.file or "mechanism",
-        "units": sc.units, "unit": sc.length_unit,
+        "units": sc.units,
+        "unit": sc.length_unit,
         # the step table's scales (the page draws each polygon at its own per frame)
-        "scales": [{"diagram": name, "text": display_unit(s.text), "perCm": s.per_cm}
-                   for name, s in zip(DIAGRAMS, fr.scales)],
+        "scales": [
+            {"diagram": name, "text": display_unit(s.text), "perCm": s.per_cm}
+            for name, s in zip(DIAGRAMS, fr.scales)
+        ],
         "theta": [round(float(t), 6) for t in fr.degrees],
-        "start": fr.start, "fullTurn": fr.full_turn, "limits": fr.limits_text,
+        "start": fr.start,
+        "fullTurn": fr.full_turn,
+        "limits": fr.limits_text,
         "cycle": fr.cycle_degrees,  # the angles shown modulo it (720: a four-stroke)
-        "crank": sc.input.crank, "pivot": sc.input.pivot,
+        "crank": sc.input.crank,
+        "pivot": sc.input.pivot,
         **({} if sol.plan.steps[0].periodic else {"param": list(fr.parameter)}),
         "ground": {p: [float(c) for c in xy] for p, xy in sc.ground.items()},
         "points": moving,
@@ -258,25 +314,35 @@ def page_data(fr: Frames) -> dict:
         "wheels": wheels,
         "rollLines": lines,
         "P": {p: _flat([_quiet(c, k["P"], n) for c in res.P[p]]) for p in moving},
-        "V": {p: _flat(_own_vec(res.V[p], eb.V.get(p, 0.0), eb.scales["velocity"], n))
-              for p in moving},
-        "A": {p: _flat(_own_vec(res.A[p], eb.A.get(p, 0.0), eb.scales["acceleration"], n))
-              for p in moving},
-        "W": {lk.key: round_sig(_own(res.W[lk.key], eb.W.get(lk.key, 0.0),
-                                     eb.scales["omega"], n)) for lk in links},
-        "Al": {lk.key: round_sig(_own(res.Al[lk.key], eb.Al.get(lk.key, 0.0),
-                                      eb.scales["alpha"], n)) for lk in links},
-        "S": {s.key: _sliding(res.S[s.key], eb.S.get(s.key), eb.scales, n)
-              for s in sc.sliders},
-        "torque": None if res.input_torque is None else
-        round_sig(_quiet(res.input_torque, _torque_scale(sc, k), n)),
+        "V": {
+            p: _flat(_own_vec(res.V[p], eb.V.get(p, 0.0), eb.scales["velocity"], n)) for p in moving
+        },
+        "A": {
+            p: _flat(_own_vec(res.A[p], eb.A.get(p, 0.0), eb.scales["acceleration"], n))
+            for p in moving
+        },
+        "W": {
+            lk.key: round_sig(_own(res.W[lk.key], eb.W.get(lk.key, 0.0), eb.scales["omega"], n))
+            for lk in links
+        },
+        "Al": {
+            lk.key: round_sig(_own(res.Al[lk.key], eb.Al.get(lk.key, 0.0), eb.scales["alpha"], n))
+            for lk in links
+        },
+        "S": {s.key: _sliding(res.S[s.key], eb.S.get(s.key), eb.scales, n) for s in sc.sliders},
+        "torque": None
+        if res.input_torque is None
+        else round_sig(_quiet(res.input_torque, _torque_scale(sc, k), n)),
         "sense": sense(sc.input.omega),
         "warnBelow": TOL.warn,
         "style": page_style(),
         "inertia": inertia_arrows(res, n),
     }
-    conds = [(st.label, np.broadcast_to(res.cond[st.index], (n,))) for st in res.plan.steps
-             if st.index in res.cond]
+    conds = [
+        (st.label, np.broadcast_to(res.cond[st.index], (n,)))
+        for st in res.plan.steps
+        if st.index in res.cond
+    ]
     if conds:  # each frame's worst-conditioned step: its condition and which step it is
         table = np.array([c for _, c in conds])
         worst = table.argmin(axis=0)

@@ -30,9 +30,19 @@ from ..motion.solution import solve
 from ..motion.sweeps import sweep
 from ..solver.tracking import Sweeper
 
-__all__ = ["Frames", "frames", "frame_angles", "DEFAULT_FRAMES", "MAX_FRAMES",
-           "MAX_PICTURE_FRAMES", "max_frames", "check_frames", "need_frames", "round_sig",
-           "MAX_FRAME_POINTS"]
+__all__ = [
+    "Frames",
+    "frames",
+    "frame_angles",
+    "DEFAULT_FRAMES",
+    "MAX_FRAMES",
+    "MAX_PICTURE_FRAMES",
+    "max_frames",
+    "check_frames",
+    "need_frames",
+    "round_sig",
+    "MAX_FRAME_POINTS",
+]
 
 #: frames of a cycle when none are asked for (2 deg apart over a full turn)
 DEFAULT_FRAMES = 180
@@ -55,8 +65,10 @@ def check_frames(n, fmt: str | None = None) -> int:
     top = max_frames(fmt)
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 2 <= n <= top:
         what = f"a {fmt.upper()} animation" if fmt in ("gif", "html") else "a page or an SVG"
-        raise SceneError(f"--frames {n!r}: give a whole number of frames from 2 to {top} "
-                         f"(for {what})", key="--frames")
+        raise SceneError(
+            f"--frames {n!r}: give a whole number of frames from 2 to {top} (for {what})",
+            key="--frames",
+        )
     return int(n)
 
 
@@ -122,8 +134,9 @@ class Frames:
         dom = self.res.domain
         lim = dom.limits
         if not dom.periodic:  # a block driver: the ends of its travel
-            return " and ".join(f"s = {lp.theta / dom.unit:.6g} {self.sol.scene.units}"
-                                for lp in lim)
+            return " and ".join(
+                f"s = {lp.theta / dom.unit:.6g} {self.sol.scene.units}" for lp in lim
+            )
         return " and ".join(f"{lp.degrees:.2f} deg" for lp in lim)
 
 
@@ -142,7 +155,7 @@ def frame_angles(scene, n: int, domain) -> tuple[np.ndarray, int]:
     near = [j for j in (k - 1, k) if 0 <= j < len(th) and abs(th[j] - t0) <= 1e-12 * (hi - lo)]
     if near:  # the instant is a frame already (0 in a range symmetric about it): n frames
         th = np.linspace(lo + pad, hi - pad, n)  # of which the nearest is the instant,
-        k = int(np.argmin(np.abs(th - t0)))      # none twice
+        k = int(np.argmin(np.abs(th - t0)))  # none twice
         th[k] = t0
         return th, k
     return np.insert(th, k, t0), k
@@ -154,10 +167,12 @@ def frames(scene, n: int = DEFAULT_FRAMES) -> Frames:
     n = check_frames(n)
     points = len(getattr(scene, "point_names", ()))
     if n * points > MAX_FRAME_POINTS:  # the page holds every point at every frame
-        raise SceneError(f"--frames {n} of {points} points would make a page of about "
-                         f"{n * points * 60 / 1e6:.0f} MB: give at most "
-                         f"{max(2, MAX_FRAME_POINTS // max(points, 1))} frames for this scene",
-                         key="--frames")
+        raise SceneError(
+            f"--frames {n} of {points} points would make a page of about "
+            f"{n * points * 60 / 1e6:.0f} MB: give at most "
+            f"{max(2, MAX_FRAME_POINTS // max(points, 1))} frames for this scene",
+            key="--frames",
+        )
     sol = solve(scene)  # the stated instant: the scales, and its errors first
     scales = diagram_scales(sol)
     domain = Sweeper(scene).domain  # the cycle on the scene's branch (found once a scene)
@@ -180,8 +195,10 @@ def need_frames(fr) -> Frames:
     """``fr`` if it is the frames of a scene, else a :class:`SceneError` saying how to make
     them (an API misuse is an error of the family, never an AttributeError)."""
     if not isinstance(fr, Frames):
-        raise SceneError("the frames of a scene are needed (polygon_method.page.frames(scene, "
-                         f"n)), not {type(fr).__name__}")
+        raise SceneError(
+            "the frames of a scene are needed (polygon_method.page.frames(scene, "
+            f"n)), not {type(fr).__name__}"
+        )
     return fr
 
 

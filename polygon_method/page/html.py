@@ -50,10 +50,13 @@ def blocks_html(blocks) -> str:
             out.append("<ul>" + "".join(f"<li>{escape(i)}</li>" for i in b[1]) + "</ul>")
         else:
             head = "".join(f"<th>{escape(c)}</th>" for c in b[1])
-            rows = "".join("<tr>" + "".join(f"<td>{escape(c)}</td>" for c in r) + "</tr>"
-                           for r in b[2])
-            out.append(f'<div class="scroll"><table><thead><tr>{head}</tr></thead><tbody>{rows}'
-                       "</tbody></table></div>")
+            rows = "".join(
+                "<tr>" + "".join(f"<td>{escape(c)}</td>" for c in r) + "</tr>" for r in b[2]
+            )
+            out.append(
+                f'<div class="scroll"><table><thead><tr>{head}</tr></thead><tbody>{rows}'
+                "</tbody></table></div>"
+            )
     return "\n".join(out)
 
 
@@ -65,16 +68,21 @@ def check_html(verdicts, title: str) -> str:
         tol = "-" if not math.isfinite(v.tolerance) else f"{100 * v.tolerance:.2g} %"
         verdict = '<span class="right">right</span>' if v.ok else '<span class="wrong">WRONG</span>'
         why = "" if v.ok else escape(v.diagnosis or "none of the known mistakes explains it")
-        rows.append("<tr>" + "".join(f"<td>{escape(c)}</td>" for c in (
-            v.key, v.raw, correct_text(v), err, tol))
-            + f"<td>{verdict}</td><td>{why}</td></tr>")
+        rows.append(
+            "<tr>"
+            + "".join(f"<td>{escape(c)}</td>" for c in (v.key, v.raw, correct_text(v), err, tol))
+            + f"<td>{verdict}</td><td>{why}</td></tr>"
+        )
     wrong = sum(not v.ok for v in verdicts)
     rules = "; ".join(sorted({v.rule for v in verdicts}))
-    return (f"<p>{escape(title)}</p><div class=\"scroll\"><table id=\"check\"><thead><tr><th>"
-            "answer</th><th>given</th><th>correct</th><th>error</th><th>tolerance</th><th>"
-            f"verdict</th><th>mistake</th></tr></thead><tbody>{''.join(rows)}</tbody></table></div>"
-            f"<p>tolerance: {escape(rules)}. {len(verdicts) - wrong} of {len(verdicts)} right"
-            + (f", {wrong} wrong" if wrong else "") + ".</p>")
+    return (
+        f'<p>{escape(title)}</p><div class="scroll"><table id="check"><thead><tr><th>'
+        "answer</th><th>given</th><th>correct</th><th>error</th><th>tolerance</th><th>"
+        f"verdict</th><th>mistake</th></tr></thead><tbody>{''.join(rows)}</tbody></table></div>"
+        f"<p>tolerance: {escape(rules)}. {len(verdicts) - wrong} of {len(verdicts)} right"
+        + (f", {wrong} wrong" if wrong else "")
+        + ".</p>"
+    )
 
 
 def _json(d) -> str:
@@ -84,9 +92,11 @@ def _json(d) -> str:
     return json.dumps(d, separators=(",", ":"), allow_nan=False).replace("<", "\\u003c")
 
 
-_CAPTION = {"configuration": "Configuration diagram", "velocity":
-            "Velocity polygon (pole o; image points in lower case)", "acceleration":
-            "Acceleration polygon (pole o'; image points b', c', ...)"}
+_CAPTION = {
+    "configuration": "Configuration diagram",
+    "velocity": "Velocity polygon (pole o; image points in lower case)",
+    "acceleration": "Acceleration polygon (pole o'; image points b', c', ...)",
+}
 
 #: the legend's entries, in its order: the vectors' kinds, then the plots' marks
 _KINDS = ("absolute", "relative", "centripetal", "tangential", "sliding", "coriolis")
@@ -95,26 +105,33 @@ _KINDS = ("absolute", "relative", "centripetal", "tangential", "sliding", "corio
 def _swatch(color: str, width_pt: float, dashes, *, head: bool = False) -> str:
     """A short line drawn as the page draws that kind (px: 1 pt is 4/3 px)."""
     w = 4 * width_pt / 3
-    dash = (f' stroke-dasharray="{" ".join(f"{d * w:.2f}" for d in dashes)}"'
-            if dashes else "")
-    tip = (f'<path d="M30,2 L38,6 L30,10 z" fill="{color}"/>' if head else "")
-    return (f'<svg class="sw" width="40" height="12" viewBox="0 0 40 12" aria-hidden="true">'
-            f'<line x1="1" y1="6" x2="{31 if head else 39}" y2="6" stroke="{color}" '
-            f'stroke-width="{w:.2f}"{dash}/>{tip}</svg>')
+    dash = f' stroke-dasharray="{" ".join(f"{d * w:.2f}" for d in dashes)}"' if dashes else ""
+    tip = f'<path d="M30,2 L38,6 L30,10 z" fill="{color}"/>' if head else ""
+    return (
+        f'<svg class="sw" width="40" height="12" viewBox="0 0 40 12" aria-hidden="true">'
+        f'<line x1="1" y1="6" x2="{31 if head else 39}" y2="6" stroke="{color}" '
+        f'stroke-width="{w:.2f}"{dash}/>{tip}</svg>'
+    )
 
 
 def legend_html(kinds=_KINDS) -> str:
     """The legend of the colours and dashes, the same as ``draw``'s and the plots'."""
     items = [_swatch(*STYLE[k], head=k != "relative") + escape(LEGEND_NAMES[k]) for k in kinds]
     items.append(_swatch(*LINE_STYLE) + "a path or a guide")
-    items.append(f'<span class="sw box" style="background:{BODY_FACE};border-color:'
-                 f'{BODY_EDGE}"></span>a link carrying a third point')
+    items.append(
+        f'<span class="sw box" style="background:{BODY_FACE};border-color:'
+        f'{BODY_EDGE}"></span>a link carrying a third point'
+    )
     items.append(f'<span class="sw box" style="background:{IMAGE_FACE}"></span>its image')
     marks = [_swatch(*MARKS[k]) + escape(MARK_NAMES[k]) for k in ("now", "instant")]
-    return ('<div class="legend"><p><b>Legend</b> (as on the drawings of <code>draw</code> '
-            'and the plots of <code>sweep --plot</code>):</p><ul>'
-            + "".join(f"<li>{i}</li>" for i in items) + "</ul><p>On the plots:</p><ul>"
-            + "".join(f"<li>{i}</li>" for i in marks) + "</ul></div>")
+    return (
+        '<div class="legend"><p><b>Legend</b> (as on the drawings of <code>draw</code> '
+        "and the plots of <code>sweep --plot</code>):</p><ul>"
+        + "".join(f"<li>{i}</li>" for i in items)
+        + "</ul><p>On the plots:</p><ul>"
+        + "".join(f"<li>{i}</li>" for i in marks)
+        + "</ul></div>"
+    )
 
 
 def _cycle_words(fr: Frames) -> str:
@@ -123,15 +140,22 @@ def _cycle_words(fr: Frames) -> str:
     block = not fr.sol.plan.steps[0].periodic  # a block driven along its guide
     turns = round(fr.cycle_degrees / 360)
     gears = fr.res.domain.turns > 1  # a gear train back only after several turns
-    return ("a full turn of the crank" if turns == 1 else
-            f"{turns} turns of the crank (the motion repeats only after them)" if gears else
-            f"the engine's whole cycle, {turns} turns of the crank "
-            f"({fr.cycle_degrees:g}°)") if fr.full_turn else \
-        f"the block's travel ({fr.limits_text}): near an end where the mechanism stops " \
-        "assembling the polygons grow without bound and run off their panels" if block else \
-        f"the range between the limit positions ({fr.limits_text}): the crank cannot " \
-        "turn fully, and near its limit positions the polygons grow without bound (their " \
+    return (
+        (
+            "a full turn of the crank"
+            if turns == 1
+            else f"{turns} turns of the crank (the motion repeats only after them)"
+            if gears
+            else f"the engine's whole cycle, {turns} turns of the crank ({fr.cycle_degrees:g}°)"
+        )
+        if fr.full_turn
+        else f"the block's travel ({fr.limits_text}): near an end where the mechanism stops "
+        "assembling the polygons grow without bound and run off their panels"
+        if block
+        else f"the range between the limit positions ({fr.limits_text}): the crank cannot "
+        "turn fully, and near its limit positions the polygons grow without bound (their "
         "scales grow with them)"
+    )
 
 
 def _figures_html(d: dict) -> str:
@@ -140,13 +164,18 @@ def _figures_html(d: dict) -> str:
     figs = []
     for s in d["scales"]:
         diagram = s["diagram"]
-        forces = "" if diagram != "configuration" or not d.get("inertia") else \
-            f'; inertia forces (each on its line h from G): <b id="scale-inertia">{escape(d["inertia"]["text"])}</b>'
-        figs.append(f'<figure><figcaption>{escape(_CAPTION[diagram])}: <b class="scale" '
-                    f'id="scale-{diagram}">{escape(s["text"])}</b>{forces}</figcaption>'
-                    f'<svg class="diagram" id="{diagram}" '
-                    f'role="img" '
-                    f'aria-label="{diagram} diagram"></svg></figure>')
+        forces = (
+            ""
+            if diagram != "configuration" or not d.get("inertia")
+            else f'; inertia forces (each on its line h from G): <b id="scale-inertia">{escape(d["inertia"]["text"])}</b>'
+        )
+        figs.append(
+            f'<figure><figcaption>{escape(_CAPTION[diagram])}: <b class="scale" '
+            f'id="scale-{diagram}">{escape(s["text"])}</b>{forces}</figcaption>'
+            f'<svg class="diagram" id="{diagram}" '
+            f'role="img" '
+            f'aria-label="{diagram} diagram"></svg></figure>'
+        )
     return "".join(figs)
 
 
@@ -175,9 +204,9 @@ def page_html(fr: Frames, *, verdicts=None, answers_title: str = "") -> str:
 </head>
 <body>
 <h1>{escape(title)}</h1>
-{f'<p class="source">{escape(source)}</p>' if source else ''}
+{f'<p class="source">{escape(source)}</p>' if source else ""}
 <details open><summary><b>The problem</b></summary>
-<ul>{''.join(f'<li>{escape(w)}</li>' for w in given(sc))}</ul>
+<ul>{"".join(f"<li>{escape(w)}</li>" for w in given(sc))}</ul>
 </details>
 <div class="controls">
 <button id="play" type="button">▶ play</button>
@@ -192,7 +221,7 @@ of the screen as the browser measures it, 96 px = 2.54 cm; the step-by-step solu
 the scales of a drawing on paper). The stated instant is {symbol} =
 {fmt(sc.input.angle / sc.length_unit) + unit if block else fmt(math.degrees(sc.input.angle) % fr.cycle_degrees) + unit}{escape(f" ({sc.input.angle_words})" if sc.input.angle_words else "")}. Hover over a vector or a point for its
 value, or tap it.</p>
-{f'<ul>{notes}</ul>' if notes else ''}
+{f"<ul>{notes}</ul>" if notes else ""}
 <div class="diagrams">
 {_figures_html(d)}
 </div>

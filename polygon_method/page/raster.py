@@ -25,8 +25,16 @@ from decimal import Decimal
 
 import numpy as np
 
-from ..draw.style import (BODY_EDGE, BODY_FACE, HEAD_HALF, HEAD_LEN, IMAGE_FACE, LINE_STYLE,
-                          PITCH_STYLE, STYLE)
+from ..draw.style import (
+    BODY_EDGE,
+    BODY_FACE,
+    HEAD_HALF,
+    HEAD_LEN,
+    IMAGE_FACE,
+    LINE_STYLE,
+    PITCH_STYLE,
+    STYLE,
+)
 from ..polygons.scales import DIAGRAMS
 from .data import page_data
 from .frames import Frames
@@ -39,8 +47,11 @@ FILL = {"configuration": 0.86, "velocity": 0.8, "acceleration": 0.8}
 REST = 0.01  # a polygon under this share of its median size is at rest (as on the page)
 SS = 1  # px of the drawing per px of the picture
 PX_PER_PT = 96 / 72
-_TITLE = {"configuration": "Configuration diagram", "velocity": "Velocity polygon",
-          "acceleration": "Acceleration polygon"}
+_TITLE = {
+    "configuration": "Configuration diagram",
+    "velocity": "Velocity polygon",
+    "acceleration": "Acceleration polygon",
+}
 
 
 def round_up(x) -> np.ndarray:
@@ -51,13 +62,13 @@ def round_up(x) -> np.ndarray:
     """
     x = np.asarray(x, dtype=float)
     e = np.floor(np.log10(x))
-    m = x / 10.0 ** e
+    m = x / 10.0**e
     step = np.select([m <= 1 + 1e-9, m <= 2 + 1e-9, m <= 5 + 1e-9], [1.0, 2.0, 5.0], 10.0)
-    return np.array([float(f"{s * 10.0 ** k:.1g}") for s, k in zip(step.ravel(), e.ravel())])
+    return np.array([float(f"{s * 10.0**k:.1g}") for s, k in zip(step.ravel(), e.ravel())])
 
 
 def _hex(c: str) -> tuple:
-    return tuple(int(c[i:i + 2], 16) for i in (1, 3, 5))
+    return tuple(int(c[i : i + 2], 16) for i in (1, 3, 5))
 
 
 def _palette() -> list:
@@ -78,6 +89,7 @@ def _missing_glyphs(text: str) -> None:
     import unicodedata
     import warnings
     from matplotlib import font_manager, ft2font
+
     font = ft2font.FT2Font(font_manager.findfont("DejaVu Sans"))
     for c in dict.fromkeys(text):
         if not c.isspace() and font.get_char_index(ord(c)) == 0:
@@ -87,6 +99,7 @@ def _missing_glyphs(text: str) -> None:
 
 def _font(size: int):
     from PIL import ImageFont
+
     for name in ("DejaVuSans.ttf", "dejavu/DejaVuSans.ttf"):
         try:
             return ImageFont.truetype(name, size)
@@ -100,6 +113,7 @@ class Pictures:
 
     def __init__(self, fr: Frames):
         from PIL import Image
+
         self.fr, self.d = fr, page_data(fr)
         d, n = self.d, len(fr)
         self.n = n
@@ -107,14 +121,19 @@ class Pictures:
 
         def arr(flat):
             return np.asarray(flat, dtype=float).reshape(n, 2)
-        ground = {p: np.broadcast_to(np.asarray(xy, dtype=float), (n, 2)) for p, xy in
-                  d["ground"].items()}
+
+        ground = {
+            p: np.broadcast_to(np.asarray(xy, dtype=float), (n, 2)) for p, xy in d["ground"].items()
+        }
         zero = np.zeros((n, 2))
-        self.xy = {"configuration": {**ground, **{p: arr(d["P"][p]) for p in d["points"]}},
-                   "velocity": {**{p: zero for p in ground},
-                                **{p: arr(d["V"][p]) for p in d["points"]}},
-                   "acceleration": {**{p: zero for p in ground},
-                                    **{p: arr(d["A"][p]) for p in d["points"]}}}
+        self.xy = {
+            "configuration": {**ground, **{p: arr(d["P"][p]) for p in d["points"]}},
+            "velocity": {**{p: zero for p in ground}, **{p: arr(d["V"][p]) for p in d["points"]}},
+            "acceleration": {
+                **{p: zero for p in ground},
+                **{p: arr(d["A"][p]) for p in d["points"]},
+            },
+        }
         self.W = {key: np.asarray(w, dtype=float) for key, w in d["W"].items()}
         self.S = {key: [np.asarray(c, dtype=float) for c in s] for key, s in d["S"].items()}
         self.view = {ph: self._views(ph) for ph in DIAGRAMS}
@@ -130,6 +149,7 @@ class Pictures:
         """``words`` on ``im`` at ``xy`` (left-top, or the middle with ``anchor="mm"``),
         black, each different text rendered once."""
         from PIL import Image, ImageDraw
+
         key = (words, id(font))
         if key not in self._masks:
             x0, y0, x1, y1 = font.getbbox(words)
@@ -196,8 +216,11 @@ class Pictures:
     def scale_text(self, phase, k) -> str:
         """The round scale of ``phase``'s panel in frame ``k``: "1 cm = 0.5 m/s"."""
         per = self.view[phase][0][k]
-        f, unit = ((self.d["unit"], self.d["units"]) if phase == "configuration" else
-                   (1.0, {"velocity": "m/s", "acceleration": "m/s²"}[phase]))
+        f, unit = (
+            (self.d["unit"], self.d["units"])
+            if phase == "configuration"
+            else (1.0, {"velocity": "m/s", "acceleration": "m/s²"}[phase])
+        )
         v = Decimal(f"{per / f:.1g}")
         return f"1 cm = {format(v.normalize(), 'f')} {unit}"
 
@@ -205,6 +228,7 @@ class Pictures:
     def picture(self, k: int):
         """Frame ``k``: the three panels, the crank angle and the scales (a palette image)."""
         from PIL import Image, ImageDraw
+
         W, H = self.size
         im = Image.new("RGB", (W * SS, H * SS), "white")
         dr = ImageDraw.Draw(im)
@@ -216,17 +240,28 @@ class Pictures:
         w, _ = self.text(im, (GAP * SS, 8 * SS), title, self._big)
         name, symbol, unit = self.fr.parameter
         at = self.fr.degrees[k]
-        self.text(im, (GAP * SS + w + 24 * SS, 8 * SS),
-                  f"{name} {symbol} = {at % self.fr.cycle_degrees if unit == '°' else at:.1f}{unit}", self._big)
+        self.text(
+            im,
+            (GAP * SS + w + 24 * SS, 8 * SS),
+            f"{name} {symbol} = {at % self.fr.cycle_degrees if unit == '°' else at:.1f}{unit}",
+            self._big,
+        )
         for i, phase in enumerate(DIAGRAMS):
             x0 = (GAP + i * (PANEL + GAP)) * SS
-            self.text(im, (x0, (TOP + 2) * SS), f"{_TITLE[phase]}: {self.scale_text(phase, k)}",
-                      self._font)
+            self.text(
+                im,
+                (x0, (TOP + 2) * SS),
+                f"{_TITLE[phase]}: {self.scale_text(phase, k)}",
+                self._font,
+            )
             panel = Image.new("RGB", (PANEL * SS, PANEL * SS), "white")
             _Panel(self, phase, k, panel).draw()
             im.paste(panel, (x0, (TOP + CAPTION) * SS))
-            dr.rectangle([x0, (TOP + CAPTION) * SS, x0 + PANEL * SS - 1,
-                          (TOP + CAPTION + PANEL) * SS - 1], outline="#bbbbbb", width=SS)
+            dr.rectangle(
+                [x0, (TOP + CAPTION) * SS, x0 + PANEL * SS - 1, (TOP + CAPTION + PANEL) * SS - 1],
+                outline="#bbbbbb",
+                width=SS,
+            )
         if SS > 1:
             im = im.reduce(SS)
         return im.quantize(palette=self._pal, dither=Image.Dither.NONE)
@@ -237,6 +272,7 @@ class _Panel:
 
     def __init__(self, pics: Pictures, phase: str, k: int, im):
         from PIL import ImageDraw
+
         self.p, self.phase, self.k = pics, phase, k
         self.per, centre = pics.view[phase][0][k], pics.view[phase][1][k]
         self.c = centre
@@ -251,7 +287,7 @@ class _Panel:
         return self.at(self.p.xy[self.phase][name][self.k])
 
     def line(self, a, b, kind, head=False):
-        color, width, dash = (STYLE.get(kind) or {"line": LINE_STYLE, "pitch": PITCH_STYLE}[kind])
+        color, width, dash = STYLE.get(kind) or {"line": LINE_STYLE, "pitch": PITCH_STYLE}[kind]
         w = max(1, round(width * PX_PER_PT * SS))
         L, half = HEAD_LEN * PX_PER_CM * SS, HEAD_HALF * PX_PER_CM * SS
         dx, dy = b[0] - a[0], b[1] - a[1]
@@ -265,8 +301,14 @@ class _Panel:
         else:
             self.dr.line([a, end], fill=color, width=w)
         if head and n > L:
-            self.dr.polygon([b, (b[0] - ux * L - uy * half, b[1] - uy * L + ux * half),
-                             (b[0] - ux * L + uy * half, b[1] - uy * L - ux * half)], fill=color)
+            self.dr.polygon(
+                [
+                    b,
+                    (b[0] - ux * L - uy * half, b[1] - uy * L + ux * half),
+                    (b[0] - ux * L + uy * half, b[1] - uy * L - ux * half),
+                ],
+                fill=color,
+            )
 
     def _dashed(self, a, b, color, w, pattern):
         n = math.hypot(b[0] - a[0], b[1] - a[1])
@@ -276,8 +318,11 @@ class _Panel:
             step = max(pattern[j % len(pattern)], 1.0)
             if j % 2 == 0:
                 s = min(t + step, n)
-                self.dr.line([(a[0] + ux * t, a[1] + uy * t), (a[0] + ux * s, a[1] + uy * s)],
-                             fill=color, width=w)
+                self.dr.line(
+                    [(a[0] + ux * t, a[1] + uy * t), (a[0] + ux * s, a[1] + uy * s)],
+                    fill=color,
+                    width=w,
+                )
             t += step
             j += 1
 
@@ -291,8 +336,9 @@ class _Panel:
 
     def dot(self, at, r, fill="black", outline=None):
         r *= SS
-        self.dr.ellipse([at[0] - r, at[1] - r, at[0] + r, at[1] + r], fill=fill,
-                        outline=outline, width=SS)
+        self.dr.ellipse(
+            [at[0] - r, at[1] - r, at[0] + r, at[1] + r], fill=fill, outline=outline, width=SS
+        )
 
     def draw(self):
         d, k, ph = self.p.d, self.k, self.phase
@@ -304,8 +350,11 @@ class _Panel:
                 if "u" in s:
                     c, u = self.pt(s["point"]), (s["u"][0], -s["u"][1])
                     big = 2 * PANEL * SS
-                    self.line((c[0] - big * u[0], c[1] - big * u[1]),
-                              (c[0] + big * u[0], c[1] + big * u[1]), "line")
+                    self.line(
+                        (c[0] - big * u[0], c[1] - big * u[1]),
+                        (c[0] + big * u[0], c[1] + big * u[1]),
+                        "line",
+                    )
             for c, r in d["wheels"]:
                 x, y = self.pt(c)
                 rr = r * self.px
@@ -315,13 +364,17 @@ class _Panel:
             for s in d["sliders"]:
                 x, y = self.pt(s["point"])
                 h = 6 * SS
-                self.dr.rectangle([x - h, y - h, x + h, y + h], fill=BODY_FACE, outline=edge,
-                                  width=SS)
+                self.dr.rectangle(
+                    [x - h, y - h, x + h, y + h], fill=BODY_FACE, outline=edge, width=SS
+                )
             for p in d["ground"]:
                 x, y = self.pt(p)
                 h = 8 * SS
-                self.dr.polygon([(x, y), (x - 0.6 * h, y + h), (x + 0.6 * h, y + h)],
-                                fill="#999999", outline="#222222")
+                self.dr.polygon(
+                    [(x, y), (x - 0.6 * h, y + h), (x + 0.6 * h, y + h)],
+                    fill="#999999",
+                    outline="#222222",
+                )
             for p in list(d["ground"]) + d["points"]:
                 self.dot(self.pt(p), 3, fill="white", outline=edge)
                 self.label(p, self.pt(p))

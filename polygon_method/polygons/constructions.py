@@ -32,8 +32,16 @@ import math
 
 from ..steps import Construction, DirectionLine, Vector, image_label
 
-__all__ = ["Vector", "DirectionLine", "Construction", "velocity_constructions",
-           "acceleration_constructions", "image_label", "drawn_vectors", "PRIORITY"]
+__all__ = [
+    "Vector",
+    "DirectionLine",
+    "Construction",
+    "velocity_constructions",
+    "acceleration_constructions",
+    "image_label",
+    "drawn_vectors",
+    "PRIORITY",
+]
 
 #: which of two coinciding vectors is drawn (the first in this order)
 PRIORITY = ("absolute", "coriolis", "centripetal", "tangential", "sliding", "relative")
@@ -41,14 +49,16 @@ PRIORITY = ("absolute", "coriolis", "centripetal", "tangential", "sliding", "rel
 
 def velocity_constructions(sol) -> tuple:
     """The velocity polygon, step by step (one :class:`Construction` per plan step)."""
-    return sol._get("vcons", lambda: tuple(st.construction(sol, "velocity")
-                                           for st in sol.plan.steps))
+    return sol._get(
+        "vcons", lambda: tuple(st.construction(sol, "velocity") for st in sol.plan.steps)
+    )
 
 
 def acceleration_constructions(sol) -> tuple:
     """The acceleration polygon, step by step."""
-    return sol._get("acons", lambda: tuple(st.construction(sol, "acceleration")
-                                           for st in sol.plan.steps))
+    return sol._get(
+        "acons", lambda: tuple(st.construction(sol, "acceleration") for st in sol.plan.steps)
+    )
 
 
 def drawn_vectors(sol, phase: str) -> tuple:
@@ -57,11 +67,14 @@ def drawn_vectors(sol, phase: str) -> tuple:
     before a component, a component before a relative vector). The n-th is drawn with
     gid ``{phase}-vector-{n}-shaft`` / ``-head``. A carried point's relative vector is
     left out: its image triangle (or the line it lies on) shows it."""
-    cons = velocity_constructions(sol) if phase == "velocity" else \
-        acceleration_constructions(sol)
+    cons = velocity_constructions(sol) if phase == "velocity" else acceleration_constructions(sol)
     steps = sol.plan.steps
-    vecs = [v for c in cons for v in c.given + c.found
-            if not (v.kind == "relative" and not steps[c.step].draws_relative)]
+    vecs = [
+        v
+        for c in cons
+        for v in c.given + c.found
+        if not (v.kind == "relative" and not steps[c.step].draws_relative)
+    ]
     ref = max((v.magnitude for v in vecs), default=0.0)
     tol = SAME * ref
     keep = {}
@@ -70,7 +83,7 @@ def drawn_vectors(sol, phase: str) -> tuple:
             continue
         key = None
         for k, w in keep.items():
-            if (math.dist(v.start, w.start) <= tol and math.dist(v.end, w.end) <= tol):
+            if math.dist(v.start, w.start) <= tol and math.dist(v.end, w.end) <= tol:
                 key = k
                 break
         if key is None:
@@ -78,4 +91,3 @@ def drawn_vectors(sol, phase: str) -> tuple:
         elif PRIORITY.index(v.kind) < PRIORITY.index(keep[key].kind):
             keep[key] = v
     return tuple(keep.values())
-

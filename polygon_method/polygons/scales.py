@@ -23,10 +23,26 @@ from ..common.errors import PolygonMethodError, SceneError
 from ..common.units import UNITS
 from ..common.tolerances import ROUNDING
 
-__all__ = ["Scale", "choose_scale", "parse_scale", "diagram_scales", "choose_scales",
-           "parse_scales", "coarser", "finer", "MANTISSAS", "FIT_CM", "SPACE_FIT_CM",
-           "DRAWING_PRECISION_CM", "extent", "DIAGRAMS", "KIND_OF_DIAGRAM", "force_scale",
-           "polygon_corners", "newton_scale"]
+__all__ = [
+    "Scale",
+    "choose_scale",
+    "parse_scale",
+    "diagram_scales",
+    "choose_scales",
+    "parse_scales",
+    "coarser",
+    "finer",
+    "MANTISSAS",
+    "FIT_CM",
+    "SPACE_FIT_CM",
+    "DRAWING_PRECISION_CM",
+    "extent",
+    "DIAGRAMS",
+    "KIND_OF_DIAGRAM",
+    "force_scale",
+    "polygon_corners",
+    "newton_scale",
+]
 
 #: the round numbers a textbook scale is made of (times a power of ten)
 MANTISSAS = ("1", "2", "2.5", "5")
@@ -39,12 +55,15 @@ DRAWING_PRECISION_CM = 0.05
 
 #: the SI a centimetre of drawing may stand for, by kind: beyond, a scale is a slip (its
 #: diagram would be kilometres across, or a speck) and its text hundreds of digits long
-_SANE_PER_CM = {"length": (1e-9, 1e4), "velocity": (1e-12, 1e6), "acceleration": (1e-12, 1e12),
-                "force": (1e-9, 1e12)}
+_SANE_PER_CM = {
+    "length": (1e-9, 1e4),
+    "velocity": (1e-12, 1e6),
+    "acceleration": (1e-12, 1e12),
+    "force": (1e-9, 1e12),
+}
 _SI = {"length": "m", "velocity": "m/s", "acceleration": "m/s^2", "force": "N"}
 
-_KIND_OF_UNIT = {u: k for k in ("length", "velocity", "acceleration", "force")
-                 for u in UNITS[k]}
+_KIND_OF_UNIT = {u: k for k in ("length", "velocity", "acceleration", "force") for u in UNITS[k]}
 
 
 @dataclass(frozen=True)
@@ -89,9 +108,11 @@ class Scale:
 def _unit_kind(unit: str) -> str:
     kind = _KIND_OF_UNIT.get(unit)
     if kind is None:
-        raise SceneError(f"unknown unit {unit!r} for a scale; use a length (mm, cm, m), a "
-                         "velocity (m/s, mm/s), an acceleration (m/s^2) or a force (N, kN)",
-                         key="scale")
+        raise SceneError(
+            f"unknown unit {unit!r} for a scale; use a length (mm, cm, m), a "
+            "velocity (m/s, mm/s), an acceleration (m/s^2) or a force (N, kN)",
+            key="scale",
+        )
     return kind
 
 
@@ -133,14 +154,14 @@ def parse_scale(text: str, kind: str | None = None) -> Scale:
     """
     m = _SCALE.match(str(text))
     if not m:
-        raise SceneError(f"cannot read scale {text!r}; write it as \"1 cm = 0.1 m/s\"",
-                         key="scale")
+        raise SceneError(f'cannot read scale {text!r}; write it as "1 cm = 0.1 m/s"', key="scale")
     try:
         paper = Decimal(m.group(1))
         value = Decimal(m.group(3))
     except ArithmeticError:
-        raise SceneError(f"cannot read scale {text!r}; write it as \"1 cm = 0.1 m/s\"",
-                         key="scale") from None
+        raise SceneError(
+            f'cannot read scale {text!r}; write it as "1 cm = 0.1 m/s"', key="scale"
+        ) from None
     if m.group(2) == "mm":
         paper = paper / 10
     unit = m.group(4)
@@ -153,9 +174,12 @@ def parse_scale(text: str, kind: str | None = None) -> Scale:
     si = float(per) * UNITS[got][unit]
     low, high = _SANE_PER_CM[got]
     if not low <= si <= high:
-        raise SceneError(f"scale {text!r} is absurd for a mechanism's diagram (1 cm for "
-                         f"{si:g} {_SI[got]}; between {low:g} and {high:g}); leave --scale "
-                         "out and the tool chooses one", key="scale")
+        raise SceneError(
+            f"scale {text!r} is absurd for a mechanism's diagram (1 cm for "
+            f"{si:g} {_SI[got]}; between {low:g} and {high:g}); leave --scale "
+            "out and the tool chooses one",
+            key="scale",
+        )
     return Scale(_text(per), unit, got, si)
 
 
@@ -163,8 +187,7 @@ def extent(points) -> float:
     """The size of a diagram: the largest distance between two of its points (two corners
     of their convex hull: a thousand points are not a million pairs)."""
     pts = _hull(points)
-    return max((math.dist(p, q) for i, p in enumerate(pts) for q in pts[i + 1:]),
-               default=0.0)
+    return max((math.dist(p, q) for i, p in enumerate(pts) for q in pts[i + 1 :]), default=0.0)
 
 
 def _hull(points) -> list:
@@ -177,8 +200,14 @@ def _hull(points) -> list:
     def half(seq):
         out = []
         for p in seq:
-            while len(out) >= 2 and ((out[-1][0] - out[-2][0]) * (p[1] - out[-2][1]) -
-                                     (out[-1][1] - out[-2][1]) * (p[0] - out[-2][0])) <= 0:
+            while (
+                len(out) >= 2
+                and (
+                    (out[-1][0] - out[-2][0]) * (p[1] - out[-2][1])
+                    - (out[-1][1] - out[-2][1]) * (p[0] - out[-2][0])
+                )
+                <= 0
+            ):
                 out.pop()
             out.append(p)
         return out
@@ -196,6 +225,7 @@ def diagram_scales(sol, fit_cm: float = FIT_CM, space_fit_cm: float = SPACE_FIT_
     point for a polygon, and the ends of the components its construction draws) is at most ``space_fit_cm`` (configuration, in the scene's length
     unit) or ``fit_cm`` (each polygon).
     """
+
     def drawn(records):  # every end of every vector the construction draws
         return [p for c in records for v in c.given + c.found for p in (v.start, v.end)]
 
@@ -203,10 +233,13 @@ def diagram_scales(sol, fit_cm: float = FIT_CM, space_fit_cm: float = SPACE_FIT_
     pole = [(0.0, 0.0)]
     vel = pole + list(sol.V.values()) + drawn(velocity_constructions(sol))
     acc = pole + list(sol.A.values()) + drawn(acceleration_constructions(sol))
-    return (choose_scale(extent(list(sol.P.values()) + _drawn_beside(sol)), space_fit_cm,
-                         unit=sc.units),
-            choose_scale(extent(vel), fit_cm, unit="m/s"),
-            choose_scale(extent(acc), fit_cm, unit="m/s^2"))
+    return (
+        choose_scale(
+            extent(list(sol.P.values()) + _drawn_beside(sol)), space_fit_cm, unit=sc.units
+        ),
+        choose_scale(extent(vel), fit_cm, unit="m/s"),
+        choose_scale(extent(acc), fit_cm, unit="m/s^2"),
+    )
 
 
 def _drawn_beside(sol) -> list:
@@ -219,8 +252,13 @@ def _drawn_beside(sol) -> list:
         for shape in st.shapes(sol.P):
             if shape[0] == "circle":
                 c = sol.P[shape[1]] if isinstance(shape[1], str) else shape[1]
-                out += [(c[0] + shape[2] * math.cos(k * math.pi / 4),
-                         c[1] + shape[2] * math.sin(k * math.pi / 4)) for k in range(8)]
+                out += [
+                    (
+                        c[0] + shape[2] * math.cos(k * math.pi / 4),
+                        c[1] + shape[2] * math.sin(k * math.pi / 4),
+                    )
+                    for k in range(8)
+                ]
     for sl in sol.scene.sliders:
         if hasattr(sl, "yoke"):
             (yx, yy), (px, py) = sol.P[sl.yoke], sol.P[sl.point]
@@ -243,8 +281,7 @@ def force_scale(forces, fit_cm: float = FIT_CM) -> Scale:
     2.5, 5 x 10^k N or kN per cm) at which the largest polygon is at most ``fit_cm`` across
     (the rule of the velocity and acceleration polygons); in kN from 1 cm = 1 kN (a
     polygon 4 800 N across: 1 cm = 500 N; 68 700 N across: 1 cm = 10 kN)."""
-    size = max((extent(polygon_corners(st)) for st in forces.steps if st.polygon),
-               default=0.0)
+    size = max((extent(polygon_corners(st)) for st in forces.steps if st.polygon), default=0.0)
     return newton_scale(size, fit_cm)
 
 
@@ -262,9 +299,14 @@ def display_unit(text: str) -> str:
     """``m/s^2`` as printed on a drawing: ``m/s\u00b2``."""
     return text.replace("^2", "\u00b2")
 
+
 DIAGRAMS = ("configuration", "velocity", "acceleration")
-KIND_OF_DIAGRAM = {"configuration": "length", "velocity": "velocity",
-                   "acceleration": "acceleration", "forces": "force"}
+KIND_OF_DIAGRAM = {
+    "configuration": "length",
+    "velocity": "velocity",
+    "acceleration": "acceleration",
+    "forces": "force",
+}
 #: A4 portrait for one diagram, A4 landscape for the three side by side (cm)
 SHEET_ONE = (21.0, 29.7)
 SHEET_ALL = (29.7, 21.0)
@@ -349,9 +391,8 @@ def parse_scales(texts) -> dict:
         except PolygonMethodError as exc:
             raise PolygonMethodError(exc.message, key="--scale") from None
         if s.kind in out:
-            raise PolygonMethodError(f"two {s.kind} scales given ({out[s.kind]} and {s})",
-                                     key="--scale")
+            raise PolygonMethodError(
+                f"two {s.kind} scales given ({out[s.kind]} and {s})", key="--scale"
+            )
         out[s.kind] = s
     return out
-
-

@@ -56,33 +56,42 @@ from dataclasses import dataclass
 from ..common.errors import SceneError
 from ..common.units import UNITS
 
-__all__ = ["BookAngle", "Slip", "read_angle", "is_book_form", "dead_centres", "side_along",
-           "candidates", "EXAMPLES"]
+__all__ = [
+    "BookAngle",
+    "Slip",
+    "read_angle",
+    "is_book_form",
+    "dead_centres",
+    "side_along",
+    "candidates",
+    "EXAMPLES",
+]
 
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _UNIT = r"deg|degrees|degree|°|rad"
 _HEAD = re.compile(rf"^\s*({_NUMBER})\s*({_UNIT})?(?:\s+|(?<=°)|$)(.*)$")
-_SENSE = {"cw": -1, "clockwise": -1, "ccw": 1, "acw": 1, "anticlockwise": 1,
-          "counterclockwise": 1}
+_SENSE = {"cw": -1, "clockwise": -1, "ccw": 1, "acw": 1, "anticlockwise": 1, "counterclockwise": 1}
 _SENSE_RE = "|".join(sorted(_SENSE, key=len, reverse=True))
 #: words that make an angle a book's form (without them the plain reader reads it)
-_BOOK_WORDS = re.compile(r"horizontal|vertical|dead|\b[iotb]dc\b|[iotb]\.d\.c|stroke|"
-                         r"\bfrom\b|\babove\b|\bbelow\b|\bleft\b|\bright\b|\bpast\b|\bbefore\b|"
-                         r"\bafter\b|\bbeyond\b|x\s*axis|\+x|\bup(wards?)?\b|\bdown(wards?)?\b",
-                         re.IGNORECASE)
+_BOOK_WORDS = re.compile(
+    r"horizontal|vertical|dead|\b[iotb]dc\b|[iotb]\.d\.c|stroke|"
+    r"\bfrom\b|\babove\b|\bbelow\b|\bleft\b|\bright\b|\bpast\b|\bbefore\b|"
+    r"\bafter\b|\bbeyond\b|x\s*axis|\+x|\bup(wards?)?\b|\bdown(wards?)?\b",
+    re.IGNORECASE,
+)
 #: a way in words, without a size: "down" (vertically downwards, straight down, to the left)
 _WAY = re.compile(r"(?:vertically |straight |horizontally )?(up|down|left|right)(?:wards?)?")
 _WAY_DEG = {"right": 0.0, "up": 90.0, "left": 180.0, "down": -90.0}
 
 #: good forms, for messages (by where the angle is)
 EXAMPLES = {
-    "angle": "\"30 deg\" (ccw from +x), \"30 deg below the horizontal\", \"60 deg right of "
-             "the vertical\", \"60 deg from the vertical, cw\" or \"30 deg past the inner "
-             "dead centre\"",
-    "path": "\"30 deg\" (ccw from +x), \"30 deg above the horizontal\", \"60 deg left of the "
-            "vertical\" or \"60 deg from the vertical, ccw\"",
-    "direction": "\"30 deg\" (ccw from +x), \"30 deg below the horizontal\", \"60 deg right of "
-                 "the vertical\" or \"0 deg from the line of stroke\"",
+    "angle": '"30 deg" (ccw from +x), "30 deg below the horizontal", "60 deg right of '
+    'the vertical", "60 deg from the vertical, cw" or "30 deg past the inner '
+    'dead centre"',
+    "path": '"30 deg" (ccw from +x), "30 deg above the horizontal", "60 deg left of the '
+    'vertical" or "60 deg from the vertical, ccw"',
+    "direction": '"30 deg" (ccw from +x), "30 deg below the horizontal", "60 deg right of '
+    'the vertical" or "0 deg from the line of stroke"',
 }
 
 
@@ -116,16 +125,20 @@ def _tidy(raw: str) -> str:
     text = raw.strip().lower()
     text = re.sub(r"cent(er|re)s?\b", "centre", text)
     text = re.sub(r"\b([iotb])\.\s*d\.\s*c\.?", r"\1dc", text)
-    text = re.sub(r"\banti-\s*clockwise|\bcounter-\s*clockwise", lambda m: m.group(0)
-                  .replace("-", "").replace(" ", ""), text)
+    text = re.sub(
+        r"\banti-\s*clockwise|\bcounter-\s*clockwise",
+        lambda m: m.group(0).replace("-", "").replace(" ", ""),
+        text,
+    )
     text = re.sub(r"[,;()]", " ", text)
     text = re.sub(r"\b(the|measured|to|on|is|at)\b", "", text)
     text = text.replace("x-axis", "x axis")
     return re.sub(r"\s+", " ", text).strip()
 
 
-def read_angle(raw, where: str, *, dead=None, sense: float | None = None,
-               strokes: dict | None = None):
+def read_angle(
+    raw, where: str, *, dead=None, sense: float | None = None, strokes: dict | None = None
+):
     """Read a book's angle; None where ``raw`` is a plain angle (``"30 deg"``, ``30``).
 
     ``where`` is "angle" (the crank's), "path" (a slider's) or "direction" (a load's).
@@ -151,8 +164,10 @@ def read_angle(raw, where: str, *, dead=None, sense: float | None = None,
         raise SceneError(f"cannot read '{shown}' as an angle: {good}")
     size, unit, rest = float(m.group(1)), m.group(2) or "deg", m.group(3).strip()
     if not math.isfinite(size) or size < 0:
-        raise SceneError(f"'{shown}': give the size of the angle (not negative) and the side "
-                         f"it is measured to; {good}")
+        raise SceneError(
+            f"'{shown}': give the size of the angle (not negative) and the side "
+            f"it is measured to; {good}"
+        )
     in_deg = unit != "rad"
     phi = size * UNITS["angle"]["deg" if in_deg else "rad"]
     if phi > 2 * math.pi * (1 + 1e-12):
@@ -170,17 +185,33 @@ def read_angle(raw, where: str, *, dead=None, sense: float | None = None,
     def done(ref, s, ref_words, slips=()):
         theta = turned(ref, s)
         note = f"'{shown}' = {_deg(theta)} deg from +x" + (f" ({ref_words})" if ref_words else "")
-        return BookAngle(theta, shown, note, tuple(Slip(turned(r2, s2), code, words)
-                                                   for r2, s2, code, words in slips))
+        return BookAngle(
+            theta,
+            shown,
+            note,
+            tuple(Slip(turned(r2, s2), code, words) for r2, s2, code, words in slips),
+        )
 
     hv = re.fullmatch(r"(above|below) horizontal(?: (left|right))?", rest)
     if hv:
         up = hv.group(1) == "above"
         left = hv.group(2) == "left"
         ref, s = (180.0, -1 if up else 1) if left else (0.0, 1 if up else -1)
-        return done(ref, s, "", [(ref, -s, "above_below", "the angle taken "
-                                 f"{'below' if up else 'above'} the horizontal instead of "
-                                 f"{'above' if up else 'below'}")])
+        return done(
+            ref,
+            s,
+            "",
+            [
+                (
+                    ref,
+                    -s,
+                    "above_below",
+                    "the angle taken "
+                    f"{'below' if up else 'above'} the horizontal instead of "
+                    f"{'above' if up else 'below'}",
+                )
+            ],
+        )
     vv = re.fullmatch(r"(left|right) of (upward |downward )?vertical", rest)
     if vv:
         down = (vv.group(2) or "").strip() == "downward"
@@ -188,10 +219,24 @@ def read_angle(raw, where: str, *, dead=None, sense: float | None = None,
         ref = 270.0 if down else 90.0
         s = (1 if right else -1) if down else (-1 if right else 1)
         h_ref, h_s = (0.0, 1 if not down else -1) if right else (180.0, -1 if not down else 1)
-        return done(ref, s, "", [(h_ref, h_s, "from_horizontal", "the angle measured from "
-                                  "the horizontal instead of the vertical")])
-    fm = re.fullmatch(rf"(?:({_SENSE_RE}) )?(from|past|after|beyond|before) (.+?)"
-                      rf"(?: ({_SENSE_RE}))?", rest)
+        return done(
+            ref,
+            s,
+            "",
+            [
+                (
+                    h_ref,
+                    h_s,
+                    "from_horizontal",
+                    "the angle measured from the horizontal instead of the vertical",
+                )
+            ],
+        )
+    fm = re.fullmatch(
+        rf"(?:({_SENSE_RE}) )?(from|past|after|beyond|before) (.+?)"
+        rf"(?: ({_SENSE_RE}))?",
+        rest,
+    )
     if not fm:
         raise SceneError(f"cannot read '{shown}' as an angle: {good}")
     s1, word, target, s2 = fm.groups()
@@ -199,15 +244,22 @@ def read_angle(raw, where: str, *, dead=None, sense: float | None = None,
         raise SceneError(f"'{shown}' gives two senses: give one, cw or ccw")
     given = _SENSE.get(s1 or s2 or "")
     target = target.strip()
-    dc = re.fullmatch(r"(inner|outer|top|bottom|head[- ]?end|crank[- ]?end) dead centre|"
-                      r"(idc|odc|tdc|bdc)", target)
+    dc = re.fullmatch(
+        r"(inner|outer|top|bottom|head[- ]?end|crank[- ]?end) dead centre|"
+        r"(idc|odc|tdc|bdc)",
+        target,
+    )
     if word != "from" and not dc:
-        raise SceneError(f"'{shown}': past/before go with a dead centre (\"30 deg past the "
-                         f"inner dead centre\"); {good}")
+        raise SceneError(
+            f"'{shown}': past/before go with a dead centre (\"30 deg past the "
+            f'inner dead centre"); {good}'
+        )
     if dc:
         if where != "angle":
-            raise SceneError(f"'{shown}': a dead centre is a position of the crank; only "
-                             f"[input] angle may be measured from it; {good}")
+            raise SceneError(
+                f"'{shown}': a dead centre is a position of the crank; only "
+                f"[input] angle may be measured from it; {good}"
+            )
         said = dc.group(1) or dc.group(2)[0]
         if said[0] in "hc" and said.endswith("end"):  # US books: the cylinder head's end
             said = "inner" if said[0] == "h" else "outer"  # is the inner, the crank's the outer
@@ -223,30 +275,58 @@ def read_angle(raw, where: str, *, dead=None, sense: float | None = None,
             if keeps is None or keeps(turned(_Rad(ref), s)):
                 found.append((ref, other))
         if len(found) != 1:
-            raise SceneError(f"'{shown}': the slider's [assembly] position does not settle "
-                             "on which side of the crank pin the slider is at the dead centre; "
-                             "give it as left/right (above/below) instead of a point")
-        (ref, other), = found
-        ref_words = (f"the {name} dead centre is at {_deg(ref)} deg, the crank turning "
-                     f"{'ccw' if turning > 0 else 'cw'}")
-        slips = [(_Rad(other), s, "other_dead_centre", "the angle measured from the other "
-                  f"dead centre instead of the {name}")]
+            raise SceneError(
+                f"'{shown}': the slider's [assembly] position does not settle "
+                "on which side of the crank pin the slider is at the dead centre; "
+                "give it as left/right (above/below) instead of a point"
+            )
+        ((ref, other),) = found
+        ref_words = (
+            f"the {name} dead centre is at {_deg(ref)} deg, the crank turning "
+            f"{'ccw' if turning > 0 else 'cw'}"
+        )
+        slips = [
+            (
+                _Rad(other),
+                s,
+                "other_dead_centre",
+                f"the angle measured from the other dead centre instead of the {name}",
+            )
+        ]
         if size != 0:
-            slips.append((_Rad(ref), -s, "against_rotation", "the angle measured from the "
-                          "dead centre against the crank's rotation instead of with it"))
+            slips.append(
+                (
+                    _Rad(ref),
+                    -s,
+                    "against_rotation",
+                    "the angle measured from the "
+                    "dead centre against the crank's rotation instead of with it",
+                )
+            )
         return done(_Rad(ref), s, ref_words, slips)
     stroke = re.fullmatch(r"line of stroke(?: of ([a-z][0-9]*))?", target)
     if stroke:
         if where == "path":
-            raise SceneError(f"'{shown}': a slider's path is a line of stroke; give its "
-                             f"direction as {EXAMPLES['path']}")
+            raise SceneError(
+                f"'{shown}': a slider's path is a line of stroke; give its "
+                f"direction as {EXAMPLES['path']}"
+            )
         ref, named = _stroke(strokes or {}, (stroke.group(1) or "").upper(), shown)
         if given is None and size != 0:
-            raise SceneError(f"'{shown}' does not say to which side: add the sense, e.g. "
-                             f"\"{_size(m)} from the line of stroke, ccw\" (or cw)")
+            raise SceneError(
+                f"'{shown}' does not say to which side: add the sense, e.g. "
+                f'"{_size(m)} from the line of stroke, ccw" (or cw)'
+            )
         return done(_Rad(ref), given or 1, f"the line of stroke{named} is at {_deg(ref)} deg")
-    refs = {"horizontal": 0.0, "+x": 0.0, "x axis": 0.0, "positive x axis": 0.0,
-            "vertical": 90.0, "upward vertical": 90.0, "downward vertical": 270.0}
+    refs = {
+        "horizontal": 0.0,
+        "+x": 0.0,
+        "x axis": 0.0,
+        "positive x axis": 0.0,
+        "vertical": 90.0,
+        "upward vertical": 90.0,
+        "downward vertical": 270.0,
+    }
     if target not in refs:
         raise SceneError(f"cannot read '{shown}' as an angle (measured from what?): {good}")
     ref = refs[target]
@@ -255,12 +335,15 @@ def read_angle(raw, where: str, *, dead=None, sense: float | None = None,
             which = "" if target == "vertical" else target.split()[0] + " "
             raise SceneError(
                 f"'{shown}' does not say to which side of the vertical: write \"{_size(m)} "
-                f"right of the {which}vertical\" or \"{_size(m)} left of the {which}vertical\" "
-                f"(or \"{_size(m)} from the {which}vertical, cw\")")
+                f'right of the {which}vertical" or "{_size(m)} left of the {which}vertical" '
+                f'(or "{_size(m)} from the {which}vertical, cw")'
+            )
         if target == "horizontal":
-            raise SceneError(f"'{shown}' does not say to which side of the horizontal: write "
-                             f"\"{_size(m)} above the horizontal\" or \"{_size(m)} below the "
-                             "horizontal\" (add \", left\" for the left-hand side)")
+            raise SceneError(
+                f"'{shown}' does not say to which side of the horizontal: write "
+                f'"{_size(m)} above the horizontal" or "{_size(m)} below the '
+                'horizontal" (add ", left" for the left-hand side)'
+            )
     return done(ref, given or 1, "")
 
 
@@ -301,13 +384,14 @@ def _stroke(strokes: dict, name: str, shown: str):
             raise SceneError(f"'{shown}': no slider {name} on a fixed path in [sliders]")
         return strokes[name], f" of {name}"
     if not strokes:
-        raise SceneError(f"'{shown}': no line of stroke: the scene has no slider on a fixed "
-                         "path")
+        raise SceneError(f"'{shown}': no line of stroke: the scene has no slider on a fixed path")
     if len(strokes) > 1:
         first = next(iter(strokes))
-        raise SceneError(f"'{shown}': the scene has {len(strokes)} sliders on fixed paths; "
-                         f"name one: \"... from the line of stroke of {first}, ccw\"")
-    (name, ang), = strokes.items()
+        raise SceneError(
+            f"'{shown}': the scene has {len(strokes)} sliders on fixed paths; "
+            f'name one: "... from the line of stroke of {first}, ccw"'
+        )
+    ((name, ang),) = strokes.items()
     return ang, ""
 
 
@@ -318,8 +402,9 @@ def side_along(hint, u) -> int:
     component: the compiler refuses the hint in its own words)."""
     if not isinstance(hint, str):
         return 1
-    axis, want = {"above": (1, 1), "below": (1, -1), "right": (0, 1),
-                  "left": (0, -1)}.get(hint, (0, 0))
+    axis, want = {"above": (1, 1), "below": (1, -1), "right": (0, 1), "left": (0, -1)}.get(
+        hint, (0, 0)
+    )
     return -1 if u[axis] * want < -1e-9 else 1
 
 
@@ -343,13 +428,17 @@ def dead_centres(pivot, r, l, through, u, side, unit=("m", 1.0)) -> tuple:
     out = []
     for reach, words in ((l + r, "inner"), (l - r, "outer")):
         if reach <= 0:
-            raise SceneError(f"no {words} dead centre: the rod ({l / k:g} {name}) is not "
-                             f"longer than the crank ({r / k:g} {name})")
+            raise SceneError(
+                f"no {words} dead centre: the rod ({l / k:g} {name}) is not "
+                f"longer than the crank ({r / k:g} {name})"
+            )
         if reach < e * (1 + 1e-12):
-            raise SceneError(f"no {words} dead centre: the rod and crank in line reach "
-                             f"{reach / k:g} {name}, less than the line of stroke's offset "
-                             f"{e / k:g} {name} from the crank's pivot (the crank cannot turn "
-                             "a full turn)")
+            raise SceneError(
+                f"no {words} dead centre: the rod and crank in line reach "
+                f"{reach / k:g} {name}, less than the line of stroke's offset "
+                f"{e / k:g} {name} from the crank's pivot (the crank cannot turn "
+                "a full turn)"
+            )
         t = side * math.sqrt(reach * reach - e * e)
         bx, by = fx + t * ux - ox, fy + t * uy - oy
         ang = math.atan2(by, bx)
@@ -379,6 +468,7 @@ def candidates(pivot, r, l, through, u, hint, unit=("m", 1.0)) -> list:
             ahead = math.dist((fx + h * ux, fy + h * uy), hint)
             behind = math.dist((fx - h * ux, fy - h * uy), hint)
             return (ahead < behind) == (side > 0)
+
         return test
-    return [(*dead_centres(pivot, r, l, through, u, side, unit), keeps(side))
-            for side in (1, -1)]
+
+    return [(*dead_centres(pivot, r, l, through, u, side, unit), keeps(side)) for side in (1, -1)]

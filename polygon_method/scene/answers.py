@@ -16,10 +16,18 @@ from .tables import _suggest, _which_point
 __all__ = ["decimal_comma", "ENGINE_ANSWERS", "under_block_names"]
 
 #: the engine chapter's answer keys -> their unit kind (checked in check/engine.py)
-ENGINE_ANSWERS = {"piston_effort": "force", "crank_effort": "force", "T_mean": "torque",
-                  "dE_max": "energy", "I_flywheel": "moment_of_inertia", "m_flywheel": "mass",
-                  "rod_thrust": "force", "side_thrust": "force", "shaking_force": "force",
-                  "shaking_moment": "torque"}
+ENGINE_ANSWERS = {
+    "piston_effort": "force",
+    "crank_effort": "force",
+    "T_mean": "torque",
+    "dE_max": "energy",
+    "I_flywheel": "moment_of_inertia",
+    "m_flywheel": "mass",
+    "rod_thrust": "force",
+    "side_thrust": "force",
+    "shaking_force": "force",
+    "shaking_moment": "torque",
+}
 
 
 def under_block_names(point_names, ground, sliders) -> dict:
@@ -101,8 +109,9 @@ class _Answers:
             if key == "tolerance":
                 q = self.qty(value, "percent", "answers", key, default_unit="%").value
                 if not 0 < q < 1:
-                    raise self.error(f"tolerance {value!r} must be between 0 and 100 %",
-                                     "answers", key)
+                    raise self.error(
+                        f"tolerance {value!r} must be between 0 and 100 %", "answers", key
+                    )
                 tolerance = q
                 continue
             out.append(self.answer(key, value, known, slider_names, pin_names, loads))
@@ -117,30 +126,58 @@ class _Answers:
             for part in parts:
                 if part.lower() != "ground":
                     self.find_link(part, "answers", key)
-        elif len(parts) != 2 or not all(p.isdigit() and int(p) > 0 for p in parts) or \
-                int(parts[0]) == int(parts[1]):
-            raise self.error("an instantaneous centre is I_ij with two different link "
-                             "numbers (ground 1, crank 2), e.g. I_13, or I_1_12 past 9, or "
-                             "two link names, e.g. I_ground_BC", "answers", key)
-        if not (isinstance(value, list) and len(value) == 2 and
-                all(isinstance(v, (int, float)) and not isinstance(v, bool) and
-                    math.isfinite(v) for v in value)):
-            raise self.error(f"a centre's answer is its position [x, y] in {self.unit}, "
-                             f"got {value!r}", "answers", key)
+        elif (
+            len(parts) != 2
+            or not all(p.isdigit() and int(p) > 0 for p in parts)
+            or int(parts[0]) == int(parts[1])
+        ):
+            raise self.error(
+                "an instantaneous centre is I_ij with two different link "
+                "numbers (ground 1, crank 2), e.g. I_13, or I_1_12 past 9, or "
+                "two link names, e.g. I_ground_BC",
+                "answers",
+                key,
+            )
+        if not (
+            isinstance(value, list)
+            and len(value) == 2
+            and all(
+                isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
+                for v in value
+            )
+        ):
+            raise self.error(
+                f"a centre's answer is its position [x, y] in {self.unit}, got {value!r}",
+                "answers",
+                key,
+            )
         for v in value:  # [1e300, 0]: a units slip, never an error of 1e299 per cent
             self.length(v, "answers", key, positive=False)
         pair = tuple(parts) if named else tuple(sorted(int(p) for p in parts))
         u = self.scale()
-        return Answer(key, "centre", pair, (value[0] * u, value[1] * u), None,
-                      f"[{value[0]:g}, {value[1]:g}] {self.unit}", line)
+        return Answer(
+            key,
+            "centre",
+            pair,
+            (value[0] * u, value[1] * u),
+            None,
+            f"[{value[0]:g}, {value[1]:g}] {self.unit}",
+            line,
+        )
 
     def answer_keys(self, known, slider_names, pin_names, loads) -> list:
         """Every answer key this scene can check (for a did-you-mean)."""
         moving = [p for p in sorted(known) if p not in getattr(self, "ground", {})]
         keys = [f"{k}_{p}" for k in ("v", "a") for p in moving]
         for lk in self.index.values():
-            keys += [f"omega_{lk.key}", f"alpha_{lk.key}", f"v_{lk.p}{lk.q}", f"v_{lk.q}{lk.p}",
-                     f"a_{lk.p}{lk.q}", f"a_{lk.q}{lk.p}"]
+            keys += [
+                f"omega_{lk.key}",
+                f"alpha_{lk.key}",
+                f"v_{lk.p}{lk.q}",
+                f"v_{lk.q}{lk.p}",
+                f"a_{lk.p}{lk.q}",
+                f"a_{lk.q}{lk.p}",
+            ]
         keys += [f"{k}_{s}" for k in ("vs", "as", "ac") for s in slider_names]
         keys += [f"rub_{p}" for p in sorted(pin_names)]
         keys += [f"{k}_{n}" for k in ("v", "a") for n in self.under_names(known, slider_names)]
@@ -148,8 +185,7 @@ class _Answers:
 
     def under_names(self, known, slider_names) -> dict:
         """``A1`` -> the block at A's slider key: the guide's point under the block."""
-        return under_block_names(sorted(known), getattr(self, "ground", {}),
-                                 slider_names.values())
+        return under_block_names(sorted(known), getattr(self, "ground", {}), slider_names.values())
 
     def key_hint(self, key, known, slider_names, pin_names, loads) -> str:
         """`` (did you mean 'v_C'?)``: the key in another case (names are case-sensitive:
@@ -168,6 +204,7 @@ class _Answers:
                     break
         if best is None:
             from ..common.units import suggest
+
             best = suggest(key, keys)
         return f" (did you mean '{best}'?)" if best is not None and best != written else ""
 
@@ -175,55 +212,102 @@ class _Answers:
         line = self.line_of("answers", key)
         forces = getattr(self, "scene_forces", None)  # an answer file: its scene's
         if forces is None:
-            forces = bool(self.raw.get("masses")) or "gravity" in self.raw or \
-                "indicator" in self.raw
+            forces = (
+                bool(self.raw.get("masses")) or "gravity" in self.raw or "indicator" in self.raw
+            )
         hint = lambda: self.key_hint(key, known, slider_names, pin_names, loads)  # noqa: E731
         read = decimal_comma(value)
         if read is None:
-            raise self.error(f"'{printable(str(value))}': the comma reads two ways (a decimal "
-                             "comma, or thousands?): write the number with a decimal point, "
-                             "e.g. \"1.25 m/s\" or \"1250 mm/s\"", "answers", key)
+            raise self.error(
+                f"'{printable(str(value))}': the comma reads two ways (a decimal "
+                "comma, or thousands?): write the number with a decimal point, "
+                'e.g. "1.25 m/s" or "1250 mm/s"',
+                "answers",
+                key,
+            )
         raw_text, value = printable(str(value)), read
         if key == "torque":
             if not loads and not forces:
-                raise self.error("a torque answer needs [loads] to balance, or [masses]",
-                                 "answers", key)
+                raise self.error(
+                    "a torque answer needs [loads] to balance, or [masses]", "answers", key
+                )
             if getattr(self, "two_inputs", False):
-                raise self.error("with two inputs one power balance does not give the two "
-                                 "driving torques: no torque answer", "answers", key)
+                raise self.error(
+                    "with two inputs one power balance does not give the two "
+                    "driving torques: no torque answer",
+                    "answers",
+                    key,
+                )
             if getattr(self, "driving_block", None) and not (
-                    forces and getattr(self, "driving_wheel", None)):
-                raise self.error(f"the block {self.driving_block} drives the mechanism: its "
-                                 "driving effort is a force along its guide, not a torque "
-                                 "(solve prints it; no torque answer)", "answers", key)
-            q = self.qty(value, "torque", "answers", key, default_unit="N m", allow_sense=True,
-                         refuse_absurd=False)
+                forces and getattr(self, "driving_wheel", None)
+            ):
+                raise self.error(
+                    f"the block {self.driving_block} drives the mechanism: its "
+                    "driving effort is a force along its guide, not a torque "
+                    "(solve prints it; no torque answer)",
+                    "answers",
+                    key,
+                )
+            q = self.qty(
+                value,
+                "torque",
+                "answers",
+                key,
+                default_unit="N m",
+                allow_sense=True,
+                refuse_absurd=False,
+            )
             return Answer(key, "torque", (), q.value, q.sense, raw_text, line)
         if key in ENGINE_ANSWERS:  # the engine chapter's: efforts, the cycle, the flywheel
             kind = ENGINE_ANSWERS[key]
-            q = self.qty(value, kind, "answers", key, default_unit=next(iter(UNITS[kind])),
-                         allow_sense=False, refuse_absurd=False)
+            q = self.qty(
+                value,
+                kind,
+                "answers",
+                key,
+                default_unit=next(iter(UNITS[kind])),
+                allow_sense=False,
+                refuse_absurd=False,
+            )
             return Answer(key, key, (), q.value, None, raw_text, line)
         prefix, _, rest = key.partition("_")
         if prefix == "I" and rest:
             return self.centre_answer(key, rest, value, line)
         if prefix not in ANSWER_KINDS or not rest:
-            examples = ["v_C", "a_C", "v_CB", "omega_BC", "alpha_BC", "vs_D", "as_D", "ac_A",
-                        "rub_B", "torque"]
-            raise self.error(f"unknown answer key{hint() or _suggest(key, examples)}; keys are v_X, "
-                             "a_X, v_XY, a_XY, omega_L, alpha_L, vs_X, as_X, ac_X, rub_X, "
-                             "torque, I_ij (a centre), vI_L, aI_L (a wheel's contact point), "
-                             "F_X, N_X, Fi_L, Ci_L, h_L, Fc_L (forces)", "answers", key)
+            examples = [
+                "v_C",
+                "a_C",
+                "v_CB",
+                "omega_BC",
+                "alpha_BC",
+                "vs_D",
+                "as_D",
+                "ac_A",
+                "rub_B",
+                "torque",
+            ]
+            raise self.error(
+                f"unknown answer key{hint() or _suggest(key, examples)}; keys are v_X, "
+                "a_X, v_XY, a_XY, omega_L, alpha_L, vs_X, as_X, ac_X, rub_X, "
+                "torque, I_ij (a centre), vI_L, aI_L (a wheel's contact point), "
+                "F_X, N_X, Fi_L, Ci_L, h_L, Fc_L (forces)",
+                "answers",
+                key,
+            )
         kind, what, sense_ok = ANSWER_KINDS[prefix]
         if what in ("pin_force", "guide", "body", "contact") and not forces:
-            raise self.error(f"{key}: a force answer needs the force analysis: give "
-                             "[masses] or [gravity]", "answers", key)
+            raise self.error(
+                f"{key}: a force answer needs the force analysis: give [masses] or [gravity]",
+                "answers",
+                key,
+            )
         if prefix in UNDER_BLOCK_KINDS and rest not in known:
             under = self.under_names(known, slider_names).get(rest)
             if under is not None:  # v_A1: the guide's point under the block at A
                 q = self.qty(value, kind, "answers", key, default_unit=next(iter(UNITS[kind])))
-                return Answer(key, UNDER_BLOCK_KINDS[prefix], (under,), q.value, None,
-                              raw_text, line)
+                return Answer(
+                    key, UNDER_BLOCK_KINDS[prefix], (under,), q.value, None, raw_text, line
+                )
         names = (rest,) if what == "slider" and rest in slider_names else split_name(rest)
         if not names:
             raise self.error(f"'{rest}' is not a point or link name{hint()}", "answers", key)
@@ -232,67 +316,106 @@ class _Answers:
                 raise self.error(f"v_X or v_XY: one or two points{hint()}", "answers", key)
             for n in names:
                 if n not in known:
-                    raise self.error(f"no point {n} in the scene"
-                                     f"{hint() or _which_point(n, known)}", "answers", key)
+                    raise self.error(
+                        f"no point {n} in the scene{hint() or _which_point(n, known)}",
+                        "answers",
+                        key,
+                    )
         elif what == "link" and len(names) == 2 and self.find_cylinder(names):
             names = tuple(split_name(self.find_cylinder(names).key))
-        elif what == "slider" and len(names) == 2 and self.find_cylinder(names) and \
-                prefix in ("vs", "as"):
+        elif (
+            what == "slider"
+            and len(names) == 2
+            and self.find_cylinder(names)
+            and prefix in ("vs", "as")
+        ):
             names = (self.find_cylinder(names).key,)
         elif what == "link":
             if len(names) != 2 or frozenset(names) not in self.index:
-                raise self.error(f"no link {rest} in [links]"
-                                 f"{hint() or _suggest(rest, [lk.key for lk in self.index.values()])}",
-                                 "answers", key)
+                raise self.error(
+                    f"no link {rest} in [links]"
+                    f"{hint() or _suggest(rest, [lk.key for lk in self.index.values()])}",
+                    "answers",
+                    key,
+                )
         elif what == "slider":
             if len(names) != 1 or names[0] not in slider_names:
                 slots = [k for k, s in slider_names.items() if s.point == rest]
                 if slots:  # a peg in two slots: which one?
-                    raise self.error(f"{rest} sits in two slots: name the slot, "
-                                     + " or ".join(f"{prefix}_{k}" for k in slots),
-                                     "answers", key)
+                    raise self.error(
+                        f"{rest} sits in two slots: name the slot, "
+                        + " or ".join(f"{prefix}_{k}" for k in slots),
+                        "answers",
+                        key,
+                    )
                 raise self.error(f"no slider {rest} in [sliders]{hint()}", "answers", key)
         elif what == "wheel":  # the wheel's point at its rolling contact
             wheels = {r.wheel for r in getattr(self, "rolling_pairs", ())}
             lk = self.index.get(frozenset(names)) if len(names) == 2 else None
             if lk is None or lk.key not in wheels:
-                raise self.error(f"{prefix}_{rest}: {rest} is no wheel of [rolling] (the key "
-                                 "names a rolling wheel's link, e.g. aI_CP)", "answers", key)
+                raise self.error(
+                    f"{prefix}_{rest}: {rest} is no wheel of [rolling] (the key "
+                    "names a rolling wheel's link, e.g. aI_CP)",
+                    "answers",
+                    key,
+                )
         elif what == "pin_force":
             if len(names) != 1 or names[0] not in known:
-                raise self.error(f"F_X names a pin: no point {rest} in the scene"
-                                 f"{_which_point(rest, known)}", "answers", key)
+                raise self.error(
+                    f"F_X names a pin: no point {rest} in the scene{_which_point(rest, known)}",
+                    "answers",
+                    key,
+                )
         elif what == "contact":  # a rolling contact's force: the wheel's link, a rack's point
             pairs = getattr(self, "rolling_pairs", ()) or ()
             lk = self.index.get(frozenset(names)) if len(names) == 2 else None
-            if not ((lk is not None and lk.key in {r.wheel for r in pairs}) or
-                    (len(names) == 1 and names[0] in {r.rim for r in pairs if r.on == "rack"})):
-                raise self.error(f"Fc_{rest}: {rest} is no wheel of [rolling] and no rack (the "
-                                 "key names a rolling wheel's link, e.g. Fc_AP, or a rack's "
-                                 "point)", "answers", key)
+            if not (
+                (lk is not None and lk.key in {r.wheel for r in pairs})
+                or (len(names) == 1 and names[0] in {r.rim for r in pairs if r.on == "rack"})
+            ):
+                raise self.error(
+                    f"Fc_{rest}: {rest} is no wheel of [rolling] and no rack (the "
+                    "key names a rolling wheel's link, e.g. Fc_AP, or a rack's "
+                    "point)",
+                    "answers",
+                    key,
+                )
         elif what == "body":  # a link, or the block at a slider's point
             if rest in slider_names or (len(names) == 1 and names[0] in slider_names):
                 names = (f"block {slider_names[rest].point if rest in slider_names else rest}",)
             elif len(names) != 2 or frozenset(names) not in self.index:
-                raise self.error(f"{prefix}_X names a link (Fi_AB) or a slider's block (Fi_B): "
-                                 f"no link or block {rest}", "answers", key)
+                raise self.error(
+                    f"{prefix}_X names a link (Fi_AB) or a slider's block (Fi_B): "
+                    f"no link or block {rest}",
+                    "answers",
+                    key,
+                )
             else:
                 names = (self.index[frozenset(names)].key,)
             if prefix == "h":
-                q = self.qty(value, "length", "answers", key, default_unit=self.unit,
-                             refuse_absurd=False)
+                q = self.qty(
+                    value, "length", "answers", key, default_unit=self.unit, refuse_absurd=False
+                )
                 if _bare(value):  # a bare length is in the scene's unit: say so
                     raw_text = f"{raw_text} {self.unit}"
                 return Answer(key, prefix, names, q.value, None, raw_text, line)
         elif what == "guide":
             if len(names) != 1 or names[0] not in slider_names:
-                raise self.error(f"N_X names a slider's block: no slider {rest} in "
-                                 "[sliders]", "answers", key)
+                raise self.error(
+                    f"N_X names a slider's block: no slider {rest} in [sliders]", "answers", key
+                )
         elif what == "pin":
             if len(names) != 1 or names[0] not in pin_names:
-                raise self.error(f"rubbing at {rest} needs its size in [pins]{hint()}",
-                                 "answers", key)
-        q = self.qty(value, kind, "answers", key, default_unit=next(iter(UNITS[kind])),
-                     allow_sense=sense_ok, refuse_absurd=False)  # warned of when checked
+                raise self.error(
+                    f"rubbing at {rest} needs its size in [pins]{hint()}", "answers", key
+                )
+        q = self.qty(
+            value,
+            kind,
+            "answers",
+            key,
+            default_unit=next(iter(UNITS[kind])),
+            allow_sense=sense_ok,
+            refuse_absurd=False,
+        )  # warned of when checked
         return Answer(key, prefix, names, q.value, q.sense, raw_text, line)
-

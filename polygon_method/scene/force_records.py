@@ -80,6 +80,7 @@ class Friction:
     coefficient at every sliding guide (the friction ``mu |N|`` opposing the block's
     sliding), ``pins``, the coefficient at every pin with a size in ``[pins]`` (the friction
     circle of radius ``mu r``: a couple ``mu r |F|`` opposing the relative turning)."""
+
     guides: float = 0.0
     pins: float = 0.0
 

@@ -26,28 +26,43 @@ class _Masses:
         out = []
         for name, spec in self.table("masses").items():
             if not isinstance(spec, dict) or "mass" not in spec:
-                raise self.error("a mass is { mass = \"2 kg\" } for a slider block, or for a "
-                                 "link { mass = \"2 kg\", centre = \"G\" (or along = 40, "
-                                 "from = \"B\"), inertia = \"0.02 kg m^2\" (or gyration = 50) }",
-                                 "masses", name)
+                raise self.error(
+                    'a mass is { mass = "2 kg" } for a slider block, or for a '
+                    'link { mass = "2 kg", centre = "G" (or along = 40, '
+                    'from = "B"), inertia = "0.02 kg m^2" (or gyration = 50) }',
+                    "masses",
+                    name,
+                )
             m = self.qty(spec["mass"], "mass", "masses", name, default_unit="kg").value
             if not m > 0:
-                hint = ("; a balanced crank (its G at its pivot) has its real mass with "
-                        "centre = its pivot: it then takes no power (only its weight acts, at the pivot)"
-                        if m == 0 and "inertia" in spec else "")
-                raise self.error(f"a mass must be positive, got {spec['mass']!r}{hint}",
-                                 "masses", name)
+                hint = (
+                    "; a balanced crank (its G at its pivot) has its real mass with "
+                    "centre = its pivot: it then takes no power (only its weight acts, at the pivot)"
+                    if m == 0 and "inertia" in spec
+                    else ""
+                )
+                raise self.error(
+                    f"a mass must be positive, got {spec['mass']!r}{hint}", "masses", name
+                )
             pts = split_name(name)
             if len(pts) == 1 and name in self.slider_points:
                 extra = [k for k in spec if k != "mass"]
                 if extra:
-                    raise self.error(f"a block's mass is at its point {name} and it does not "
-                                     f"turn: give only mass (not '{extra[0]}')", "masses", name)
+                    raise self.error(
+                        f"a block's mass is at its point {name} and it does not "
+                        f"turn: give only mass (not '{extra[0]}')",
+                        "masses",
+                        name,
+                    )
                 out.append(Mass(name, m, block=True, centre=name, how=f"at {name}"))
                 continue
             if len(pts) == 1:
-                raise self.error(f"{name} is no slider: a link's mass goes under the link's "
-                                 "name (e.g. AB), a block's under its point", "masses", name)
+                raise self.error(
+                    f"{name} is no slider: a link's mass goes under the link's "
+                    "name (e.g. AB), a block's under its point",
+                    "masses",
+                    name,
+                )
             for k in spec:
                 if k not in _LINK_KEYS:
                     raise self.error(f"unknown key '{k}'{_did_you_mean(k)}", "masses", name)
@@ -56,8 +71,17 @@ class _Masses:
                 raise self.error(f"link {link.key} has a mass already", "masses", name)
             lam, mu, where, centre = self._centre(spec, link, pts, carried, name)
             inertia, said = self._inertia(spec, m, name)
-            out.append(Mass(link.key, m, lam, mu, inertia, centre=centre,
-                            how=f"centre of mass {where}; {said}"))
+            out.append(
+                Mass(
+                    link.key,
+                    m,
+                    lam,
+                    mu,
+                    inertia,
+                    centre=centre,
+                    how=f"centre of mass {where}; {said}",
+                )
+            )
         return out
 
     def _centre(self, spec, link, pts, carried, name):
@@ -67,22 +91,29 @@ class _Masses:
         placed = "along" in spec or "distances" in spec
         if named is not None:
             if placed:
-                raise self.error("give the centre as a point (centre = \"G\") or as a place "
-                                 "(along, distances), not both", "masses", name)
+                raise self.error(
+                    'give the centre as a point (centre = "G") or as a place '
+                    "(along, distances), not both",
+                    "masses",
+                    name,
+                )
             if named in link.points:
                 lam = 0.0 if named == link.p else 1.0
                 return lam, 0.0, f"at {named}", named
             cp = next((c for c in carried if c.name == named), None)
             if cp is None or cp.link != link.key:
                 on = f" (it is on {cp.link})" if cp is not None else ""
-                raise self.error(f"centre = {named!r} is not a point of link {link.key}{on}: "
-                                 "name one of its joints or of its carried points in [points], "
-                                 "or give along/distances", "masses", name)
+                raise self.error(
+                    f"centre = {named!r} is not a point of link {link.key}{on}: "
+                    "name one of its joints or of its carried points in [points], "
+                    "or give along/distances",
+                    "masses",
+                    name,
+                )
             return cp.lam, cp.mu, f"at {named}", named
         if not placed:
             if "from" in spec or "turn" in spec:
-                raise self.error("'from' and 'turn' go with along and distances", "masses",
-                                 name)
+                raise self.error("'from' and 'turn' go with along and distances", "masses", name)
             return 0.5, 0.0, f"at the middle of {link.key} (no centre given)", None
         frame = {link.p: (0.0, 0.0), link.q: (L, 0.0)}
         for c in carried:
@@ -94,14 +125,19 @@ class _Masses:
     def _inertia(self, spec, m, name):
         """(I about G, words): given, from the radius of gyration (I = m k^2), or 0."""
         if "inertia" in spec and "gyration" in spec:
-            raise self.error("give the moment of inertia or the radius of gyration, not both",
-                             "masses", name)
+            raise self.error(
+                "give the moment of inertia or the radius of gyration, not both", "masses", name
+            )
         if "inertia" in spec:
-            inertia = self.qty(spec["inertia"], "moment_of_inertia", "masses", name,
-                               default_unit="kg m^2").value
+            inertia = self.qty(
+                spec["inertia"], "moment_of_inertia", "masses", name, default_unit="kg m^2"
+            ).value
             if inertia < 0:
-                raise self.error(f"a moment of inertia cannot be negative, got "
-                                 f"{spec['inertia']!r}", "masses", name)
+                raise self.error(
+                    f"a moment of inertia cannot be negative, got {spec['inertia']!r}",
+                    "masses",
+                    name,
+                )
             return inertia, f"I_G = {inertia:.6g} kg m^2"
         if "gyration" in spec:
             k = self.length(spec["gyration"], "masses", name)
@@ -115,23 +151,24 @@ class _Masses:
         spec = self.table("gravity")
         for k in spec:
             if k not in ("g", "direction"):
-                raise self.error(f"unknown key '{k}'{_did_you_mean(k, ('g', 'direction'))}",
-                                 "gravity", k)
+                raise self.error(
+                    f"unknown key '{k}'{_did_you_mean(k, ('g', 'direction'))}", "gravity", k
+                )
         g = STANDARD_G
         if "g" in spec:
-            g = self.qty(spec["g"], "acceleration", "gravity", "g",
-                         default_unit="m/s^2").value
+            g = self.qty(spec["g"], "acceleration", "gravity", "g", default_unit="m/s^2").value
             if not g > 0:
                 raise self.error(f"g must be positive, got {spec['g']!r}", "gravity", "g")
         ang = -math.pi / 2
         if "direction" in spec:
-            ang = self.qty(spec["direction"], "angle", "gravity", "direction",
-                           default_unit="deg").value
+            ang = self.qty(
+                spec["direction"], "angle", "gravity", "direction", default_unit="deg"
+            ).value
         u = _unit_at(ang)
-        text = f"g = {g:g} m/s^2 " + ("downwards" if u == (0.0, -1.0) else
-                                       f"at {math.degrees(ang):g} deg")
+        text = f"g = {g:g} m/s^2 " + (
+            "downwards" if u == (0.0, -1.0) else f"at {math.degrees(ang):g} deg"
+        )
         return Gravity(g, u, text)
-
 
     def friction(self, pins):
         """[friction]: None without the table (frictionless, as the books start)."""
@@ -141,17 +178,26 @@ class _Masses:
         out = {}
         for k, v in spec.items():
             if k not in ("guides", "pins"):
-                raise self.error(f"unknown key '{k}'{_did_you_mean(k, ('guides', 'pins'))}: "
-                                 "[friction] takes guides and pins (coefficients)",
-                                 "friction", k)
+                raise self.error(
+                    f"unknown key '{k}'{_did_you_mean(k, ('guides', 'pins'))}: "
+                    "[friction] takes guides and pins (coefficients)",
+                    "friction",
+                    k,
+                )
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not 0 <= v < 1:
-                raise self.error(f"{k} = {v!r}: a coefficient of friction, a number from 0 "
-                                 "up to (not) 1", "friction", k)
+                raise self.error(
+                    f"{k} = {v!r}: a coefficient of friction, a number from 0 up to (not) 1",
+                    "friction",
+                    k,
+                )
             out[k] = float(v)
         if out.get("pins") and not pins:
-            raise self.error("friction at the pins needs their sizes: give [pins] (each pin's "
-                             "diameter or radius: the friction circle's radius is mu r)",
-                             "friction", "pins")
+            raise self.error(
+                "friction at the pins needs their sizes: give [pins] (each pin's "
+                "diameter or radius: the friction circle's radius is mu r)",
+                "friction",
+                "pins",
+            )
         return Friction(**out)
 
 

@@ -14,11 +14,31 @@ from pathlib import Path
 from ..common.errors import PolygonMethodError, SceneError, printable
 from ..common.units import LENGTH_UNITS, UNITS, parse_quantity
 from .rolling import read_rolling
-from .source import (LineIndex, deepest_key, has_long_run, key_line, line_of,  # noqa: F401
-                     long_integer, printable_text, syntax_error, toml_lines, toml_table)
+from .source import (
+    LineIndex,
+    deepest_key,
+    has_long_run,
+    key_line,  # noqa: F401
+    line_of,  # noqa: F401
+    long_integer,
+    printable_text,
+    syntax_error,
+    toml_lines,
+    toml_table,
+)
 from .source import has_long_run as _has_long_run  # noqa: F401  (its old name)
-from .records import (_ABSURD_LONG, _ABSURD_SHORT, _POINT_ONLY, _UNIT_ORDER, TOP_KEYS, FixedPath,
-                      GuideSlider, Link, Scene, split_name)
+from .records import (
+    _ABSURD_LONG,
+    _ABSURD_SHORT,
+    _POINT_ONLY,
+    _UNIT_ORDER,
+    TOP_KEYS,
+    FixedPath,
+    GuideSlider,
+    Link,
+    Scene,
+    split_name,
+)
 from .inputs import _Input
 from .engine import _Engine
 from .masses import _Masses
@@ -50,16 +70,21 @@ def load_scene(path, *, variants: bool = True, answers: bool = True) -> Scene:
     except OSError as exc:
         raise SceneError(f"cannot read: {exc.strerror}", file=str(path)) from None
     if len(data) > MAX_SCENE_BYTES:
-        raise SceneError(f"larger than {MAX_SCENE_BYTES >> 20} MiB: not a scene file (a "
-                         "scene is a page of TOML text)", file=str(path))
+        raise SceneError(
+            f"larger than {MAX_SCENE_BYTES >> 20} MiB: not a scene file (a "
+            "scene is a page of TOML text)",
+            file=str(path),
+        )
     if b"\x00" in data:
-        raise SceneError("not a text file (it holds binary data); a scene is TOML text",
-                         file=str(path))
+        raise SceneError(
+            "not a text file (it holds binary data); a scene is TOML text", file=str(path)
+        )
     try:
         text = data.decode("utf-8-sig")  # a byte-order mark (some Windows editors) is fine
     except UnicodeDecodeError as exc:
-        raise SceneError(f"not UTF-8 text (byte {exc.start}); save the scene as UTF-8",
-                         file=str(path)) from None
+        raise SceneError(
+            f"not UTF-8 text (byte {exc.start}); save the scene as UTF-8", file=str(path)
+        ) from None
     try:
         return parse_scene(text, file=str(path), variants=variants, answers=answers)
     except PolygonMethodError as exc:
@@ -82,9 +107,11 @@ def _read_start(path) -> bytes:
     with fh:
         data = fh.read(MAX_SCENE_BYTES + 1)
         if not data and stat.S_ISFIFO(os.fstat(fh.fileno()).st_mode):
-            raise SceneError("a named pipe that nothing is writing into: nothing to read "
-                             "(start its writer first, or give the file itself)",
-                             file=str(path))
+            raise SceneError(
+                "a named pipe that nothing is writing into: nothing to read "
+                "(start its writer first, or give the file itself)",
+                file=str(path),
+            )
         return data
 
 
@@ -94,8 +121,9 @@ def _path_of(path, what) -> Path:
     if isinstance(path, bytes):
         path = os.fsdecode(path)
     if not isinstance(path, (str, os.PathLike)):
-        raise SceneError(f"a {what} file's path is needed (a str or a Path), not "
-                         f"{type(path).__name__}")
+        raise SceneError(
+            f"a {what} file's path is needed (a str or a Path), not {type(path).__name__}"
+        )
     if not str(path).strip():
         raise SceneError(f"an empty file name: name the {what} file")
     if "\x00" in str(path):
@@ -103,29 +131,44 @@ def _path_of(path, what) -> Path:
     return Path(path)
 
 
-def parse_scene(text: str, file: str | None = None, *, variants: bool = True,
-                answers: bool = True) -> Scene:
+def parse_scene(
+    text: str, file: str | None = None, *, variants: bool = True, answers: bool = True
+) -> Scene:
     """Parse scene text (TOML). See :func:`load_scene`."""
     if isinstance(text, (bytes, bytearray)):
-        raise SceneError("the scene's text is needed as a str: decode the bytes (UTF-8), or "
-                         "give the file to load_scene", file=file)
+        raise SceneError(
+            "the scene's text is needed as a str: decode the bytes (UTF-8), or "
+            "give the file to load_scene",
+            file=file,
+        )
     if not isinstance(text, str):
-        raise SceneError(f"the scene's text (TOML) is needed as a str, not "
-                         f"{type(text).__name__}; load_scene reads a file", file=file)
+        raise SceneError(
+            f"the scene's text (TOML) is needed as a str, not "
+            f"{type(text).__name__}; load_scene reads a file",
+            file=file,
+        )
     if not text.strip():
-        raise SceneError("the file is empty; a scene needs [ground], [links] and [input]",
-                         file=file)
+        raise SceneError(
+            "the file is empty; a scene needs [ground], [links] and [input]", file=file
+        )
     try:
         raw = toml_table(text)
     except tomllib.TOMLDecodeError as exc:
         raise syntax_error(str(exc), text, file) from None
     except RecursionError:
-        raise SceneError("TOML nested too deeply (brackets or braces inside each other "
-                         "hundreds of times); a scene needs at most [x, y] pairs and small "
-                         "tables", file=file, key=deepest_key(text)) from None
+        raise SceneError(
+            "TOML nested too deeply (brackets or braces inside each other "
+            "hundreds of times); a scene needs at most [x, y] pairs and small "
+            "tables",
+            file=file,
+            key=deepest_key(text),
+        ) from None
     if not raw:
-        raise SceneError("the file has no tables or keys (only comments); a scene needs "
-                         "[ground], [links] and [input]", file=file)
+        raise SceneError(
+            "the file has no tables or keys (only comments); a scene needs "
+            "[ground], [links] and [input]",
+            file=file,
+        )
     loader = _Loader(raw, text, file)
     loader.read_variants = variants
     loader.read_answers = answers
@@ -165,8 +208,12 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
 
     def error(self, message, table=None, key=None, cls=SceneError):
         label = f"[{table}] {key}" if table and key else (f"[{table}]" if table else key)
-        return cls(printable_text(message), file=self.file, key=printable_text(label),
-                   line=self.line_of(table, key))
+        return cls(
+            printable_text(message),
+            file=self.file,
+            key=printable_text(label),
+            line=self.line_of(table, key),
+        )
 
     def top_line(self, key):
         for i, line in enumerate(self.lines, 1):
@@ -187,8 +234,12 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
         if positive and q <= 0:
             raise self.error(f"length must be positive, got {raw!r}", table, key)
         if abs(q) > _ABSURD_LONG or (positive and q < _ABSURD_SHORT):
-            raise self.error(f"length {raw!r} ({q:g} m) is absurd for a mechanism; "
-                             f"check the units (units = \"{self.unit}\")", table, key)
+            raise self.error(
+                f"length {raw!r} ({q:g} m) is absurd for a mechanism; "
+                f'check the units (units = "{self.unit}")',
+                table,
+                key,
+            )
         return q
 
     def coords(self, raw, table, key):
@@ -203,14 +254,22 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
                 raise SceneError(f"missing [{name}] table", file=self.file, key=f"[{name}]")
             return {}
         if not isinstance(value, dict):
-            raise SceneError(f"'{name}' must be a table [{name}]", file=self.file, key=name,
-                             line=self.top_line(name))
+            raise SceneError(
+                f"'{name}' must be a table [{name}]",
+                file=self.file,
+                key=name,
+                line=self.top_line(name),
+            )
         return value
 
     def point_name(self, name, table, key=None):
         if not _POINT_ONLY.match(str(name)):
-            raise self.error(f"'{name}' is not a point name (a capital letter, optionally "
-                             "followed by digits: A, O2, B1)", table, key or name)
+            raise self.error(
+                f"'{name}' is not a point name (a capital letter, optionally "
+                "followed by digits: A, O2, B1)",
+                table,
+                key or name,
+            )
         return name
 
     def check_integers(self):
@@ -222,12 +281,18 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
         path, value = hit
         digits = str(abs(value))
         shown = f"{'-' if value < 0 else ''}{digits[:6]}...({len(digits)} digits)"
-        message = (f"the integer {shown} is beyond TOML's 64-bit integers, and absurd for a "
-                   "mechanism; check the value and its unit")
+        message = (
+            f"the integer {shown} is beyond TOML's 64-bit integers, and absurd for a "
+            "mechanism; check the value and its unit"
+        )
         if len(path) >= 2:
             raise self.error(message, path[0], path[1])
-        raise SceneError(message, file=self.file, key=path[0] if path else None,
-                         line=self.top_line(path[0]) if path else None)
+        raise SceneError(
+            message,
+            file=self.file,
+            key=path[0] if path else None,
+            line=self.top_line(path[0]) if path else None,
+        )
 
     # -- the scene
     def scene(self) -> Scene:
@@ -237,46 +302,69 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
             if key not in TOP_KEYS:
                 kind = "table" if isinstance(raw[key], dict) else "key"
                 where = f"[{key}]" if kind == "table" else key
-                raise SceneError(f"unknown {kind}{_suggest(key, TOP_KEYS)}; a scene has "
-                                 + ", ".join(TOP_KEYS), file=self.file, key=printable_text(where),
-                                 line=self.line_of(key) if kind == "table" else self.top_line(key))
+                raise SceneError(
+                    f"unknown {kind}{_suggest(key, TOP_KEYS)}; a scene has " + ", ".join(TOP_KEYS),
+                    file=self.file,
+                    key=printable_text(where),
+                    line=self.line_of(key) if kind == "table" else self.top_line(key),
+                )
         units = raw.get("units", "mm")
         if not isinstance(units, str):
-            raise SceneError("units is a string: units = \"mm\" (or \"cm\", \"m\", \"in\", "
-                             "\"ft\")",
-                             file=self.file, key="units",
-                             line=self.top_line("units") or self.line_of("units"))
+            raise SceneError(
+                'units is a string: units = "mm" (or "cm", "m", "in", "ft")',
+                file=self.file,
+                key="units",
+                line=self.top_line("units") or self.line_of("units"),
+            )
         if units not in LENGTH_UNITS:
-            raise SceneError(f"unknown length unit {units!r}{_suggest(units, _UNIT_ORDER)}; "
-                             "use mm, cm, m, in or ft", file=self.file, key="units",
-                             line=self.top_line("units"))
+            raise SceneError(
+                f"unknown length unit {units!r}{_suggest(units, _UNIT_ORDER)}; "
+                "use mm, cm, m, in or ft",
+                file=self.file,
+                key="units",
+                line=self.top_line("units"),
+            )
         self.unit = units
         title = raw.get("title", "")
         if not isinstance(title, str):
-            raise SceneError("title must be a string: title = \"Four-bar chain ABCD\"",
-                             file=self.file, key="title",
-                             line=self.top_line("title") or self.line_of("title"))
+            raise SceneError(
+                'title must be a string: title = "Four-bar chain ABCD"',
+                file=self.file,
+                key="title",
+                line=self.top_line("title") or self.line_of("title"),
+            )
         source = raw.get("source")
         for key in ("source", "notes"):  # free text: a number or a table is a slip
             if key in raw and not isinstance(raw[key], str):
-                raise SceneError(f"{key} is free text, a string: {key} = \"...\"",
-                                 file=self.file, key=key,
-                                 line=self.top_line(key) or self.line_of(key))
+                raise SceneError(
+                    f'{key} is free text, a string: {key} = "..."',
+                    file=self.file,
+                    key=key,
+                    line=self.top_line(key) or self.line_of(key),
+                )
 
         ground = {}
         for name, value in self.table("ground", required=True).items():
             self.point_name(name, "ground")
             ground[name] = self.coords(value, "ground", name)
         if not ground:
-            raise SceneError("[ground] is empty; give at least the crank's fixed pivot",
-                             file=self.file, key="[ground]", line=self.line_of("ground"))
+            raise SceneError(
+                "[ground] is empty; give at least the crank's fixed pivot",
+                file=self.file,
+                key="[ground]",
+                line=self.line_of("ground"),
+            )
 
         links, index = [], {}
         for key, value in self.table("links", required=True).items():
             pts = split_name(key)
             if len(pts) != 2:
-                raise self.error(f"{key!r} is not a link name: a link is named by its two "
-                                 "joint points, e.g. BC or \"O2-A\"", "links", key)
+                raise self.error(
+                    f"{key!r} is not a link name: a link is named by its two "
+                    'joint points, e.g. BC or "O2-A"',
+                    "links",
+                    key,
+                )
             if pts[0] == pts[1]:
                 raise self.error("a link joins two different points", "links", key)
             if isinstance(value, dict):
@@ -284,19 +372,27 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
             length = self.length(value, "links", key)
             pair = frozenset(pts)
             if pair in index:
-                raise self.error(f"duplicate link: {index[pair].key} and {key} join the same "
-                                 "points", "links", key)
+                raise self.error(
+                    f"duplicate link: {index[pair].key} and {key} join the same points",
+                    "links",
+                    key,
+                )
             link = Link(key, pts[0], pts[1], length)
             index[pair] = link
             links.append(link)
             if pts[0] in ground and pts[1] in ground:
                 gx = math.dist(ground[pts[0]], ground[pts[1]])
                 if abs(gx - length) > 1e-9 * max(gx, length):
-                    raise self.error(f"both ends are ground points {gx / self.scale():g} "
-                                     f"{self.unit} apart, but the link is {value}", "links", key)
+                    raise self.error(
+                        f"both ends are ground points {gx / self.scale():g} "
+                        f"{self.unit} apart, but the link is {value}",
+                        "links",
+                        key,
+                    )
         if not links:
-            raise SceneError("[links] is empty", file=self.file, key="[links]",
-                             line=self.line_of("links"))
+            raise SceneError(
+                "[links] is empty", file=self.file, key="[links]", line=self.line_of("links")
+            )
         self.index = index
         self.ground = ground
 
@@ -314,9 +410,10 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
         if inp.wheel is not None:  # the driving wheel's centre moves on its own path
             sliders = list(sliders) + [self.slider_points[inp.block]]
         origin = ground[inp.pivot] if inp.pivot is not None else next(iter(ground.values()))
-        sliders = [replace(s, through=origin)
-                   if isinstance(s, FixedPath) and s.through[1] is None else s
-                   for s in sliders]
+        sliders = [
+            replace(s, through=origin) if isinstance(s, FixedPath) and s.through[1] is None else s
+            for s in sliders
+        ]
         assembly = self.assembly(known)
         hint = getattr(self, "collar_hint", None)  # a driving collar placed by [x, y]
         if hint is not None:
@@ -328,24 +425,52 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
         friction = self.friction(pins)
         indicator = self.indicator(sliders)
         flywheel = self.flywheel()
-        tolerance, answers = self.answers(known, sliders, pins, loads) \
-            if getattr(self, "read_answers", True) else (None, ())
+        tolerance, answers = (
+            self.answers(known, sliders, pins, loads)
+            if getattr(self, "read_answers", True)
+            else (None, ())
+        )
         self.connected(links, points, sliders, ground, inp, cylinders, rolling)
         if len(known) > MAX_POINTS:
-            raise SceneError(f"the scene has {len(known)} points: at most {MAX_POINTS} (a "
-                             "mechanism of a textbook has a few dozen)", file=self.file)
-        variation = self.variation(inp, ground, sliders, loads) \
-            if getattr(self, "read_variants", True) else None
+            raise SceneError(
+                f"the scene has {len(known)} points: at most {MAX_POINTS} (a "
+                "mechanism of a textbook has a few dozen)",
+                file=self.file,
+            )
+        variation = (
+            self.variation(inp, ground, sliders, loads)
+            if getattr(self, "read_variants", True)
+            else None
+        )
         variant = self.variant_of()
-        return Scene(title=title, units=units, ground=ground, links=tuple(links),
-                     points=tuple(points), sliders=tuple(sliders), assembly=assembly,
-                     input=inp, pins=tuple(pins), loads=tuple(loads), answers=tuple(answers),
-                     tolerance=tolerance, file=self.file, cylinders=tuple(cylinders),
-                     source=source if isinstance(source, str) else None, variation=variation,
-                     variant=variant, reading_notes=tuple(self.read_notes), _link_index=index,
-                     rolling=tuple(rolling), masses=tuple(masses), gravity=gravity,
-                     indicator=indicator, flywheel=flywheel, friction=friction,
-                     _lines=tuple(self.lines))
+        return Scene(
+            title=title,
+            units=units,
+            ground=ground,
+            links=tuple(links),
+            points=tuple(points),
+            sliders=tuple(sliders),
+            assembly=assembly,
+            input=inp,
+            pins=tuple(pins),
+            loads=tuple(loads),
+            answers=tuple(answers),
+            tolerance=tolerance,
+            file=self.file,
+            cylinders=tuple(cylinders),
+            source=source if isinstance(source, str) else None,
+            variation=variation,
+            variant=variant,
+            reading_notes=tuple(self.read_notes),
+            _link_index=index,
+            rolling=tuple(rolling),
+            masses=tuple(masses),
+            gravity=gravity,
+            indicator=indicator,
+            flywheel=flywheel,
+            friction=friction,
+            _lines=tuple(self.lines),
+        )
 
     def scale(self):
         return UNITS["length"][self.unit]
@@ -356,9 +481,12 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
             raise self.error(f"'{name}' is not a link name (two points, e.g. BC)", table, key)
         link = self.index.get(frozenset(pts))
         if link is None:
-            raise self.error(f"no link {name} in [links]"
-                             f"{_suggest(name, [lk.key for lk in self.index.values()])}",
-                             table, key)
+            raise self.error(
+                f"no link {name} in [links]"
+                f"{_suggest(name, [lk.key for lk in self.index.values()])}",
+                table,
+                key,
+            )
         return link, pts
 
     def connected(self, links, points, sliders, ground, inp, cylinders=(), rolling=()):
@@ -373,30 +501,51 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
         roles = set(ground) | {p.name for p in points} | {s.point for s in sliders}
         roles |= {p for s in sliders if isinstance(s, GuideSlider) for p in (s.first, s.second)}
         roles |= {p for r in rolling for p in (r.centre, r.rim)}  # a wheel's points roll
-        roles |= {p for r in rolling if r.base for p in self.index[frozenset(
-            split_name(r.base))].points}  # and so does the gear a wheel meshes with
+        roles |= {
+            p for r in rolling if r.base for p in self.index[frozenset(split_name(r.base))].points
+        }  # and so does the gear a wheel meshes with
         plates = {p.link for p in points}  # a link carrying points is a plate: its ends belong
         roles |= {q for lk in links if lk.key in plates for q in lk.points}
         through = {s.through for s in sliders if isinstance(s, FixedPath)}
         through |= {r.through for r in rolling if r.through is not None}  # a ground line's
-        lonely = [name for name, xy in ground.items()
-                  if name not in uses and xy not in through and name != inp.pivot
-                  and name not in {s.point for s in sliders}]
+        lonely = [
+            name
+            for name, xy in ground.items()
+            if name not in uses
+            and xy not in through
+            and name != inp.pivot
+            and name not in {s.point for s in sliders}
+        ]
         for lk in links:
             for p in lk.points:
                 if uses[p] == 1 and p not in roles:  # (a cylinder's end is used twice)
                     other = lk.other(p)
-                    guess = [f"{other}{g}" if len(other) == len(g) == 1 else f"{other}-{g}"
-                             for g in lonely]
-                    hint = (f" (did you mean {guess[0]}? ground point {lonely[0]} is joined to "
-                            "nothing)") if guess else ""
-                    raise self.error(f"point {p} appears only in link {lk.key} and nowhere "
-                                     f"else: nothing holds it (a typo?){hint}", "links", lk.key)
+                    guess = [
+                        f"{other}{g}" if len(other) == len(g) == 1 else f"{other}-{g}"
+                        for g in lonely
+                    ]
+                    hint = (
+                        (
+                            f" (did you mean {guess[0]}? ground point {lonely[0]} is joined to "
+                            "nothing)"
+                        )
+                        if guess
+                        else ""
+                    )
+                    raise self.error(
+                        f"point {p} appears only in link {lk.key} and nowhere "
+                        f"else: nothing holds it (a typo?){hint}",
+                        "links",
+                        lk.key,
+                    )
         if lonely:
             name = lonely[0]
-            raise SceneError(f"ground point {name} is not joined to any link: add its link "
-                             "or remove it", file=self.file, key=f"[ground] {name}",
-                             line=self.line_of("ground", name))
+            raise SceneError(
+                f"ground point {name} is not joined to any link: add its link or remove it",
+                file=self.file,
+                key=f"[ground] {name}",
+                line=self.line_of("ground", name),
+            )
 
 
 # --------------------------------------------------------------------------- answer files
@@ -404,8 +553,14 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
 _ANSWER_FILE_KEYS = ("answers", "title", "student", "name", "notes", "source", "variant")
 
 
-def parse_answers(text: str, scene: Scene, file: str | None = None, *,
-                  with_variant: bool = False, with_student: bool = False):
+def parse_answers(
+    text: str,
+    scene: Scene,
+    file: str | None = None,
+    *,
+    with_variant: bool = False,
+    with_student: bool = False,
+):
     """Read an answer file (an ``[answers]`` table, e.g. a student's) against ``scene``.
 
     Keys and values follow the scene's ``[answers]`` rules. Returns
@@ -416,23 +571,34 @@ def parse_answers(text: str, scene: Scene, file: str | None = None, *,
     :class:`SceneError` naming the key.
     """
     if not isinstance(text, str):
-        raise SceneError(f"the answer file's text (TOML) is needed as a str, not "
-                         f"{type(text).__name__}", file=file)
+        raise SceneError(
+            f"the answer file's text (TOML) is needed as a str, not {type(text).__name__}",
+            file=file,
+        )
     if not isinstance(scene, Scene):
-        raise SceneError(f"a Scene is needed to read answers against, not "
-                         f"{type(scene).__name__}", file=file)
+        raise SceneError(
+            f"a Scene is needed to read answers against, not {type(scene).__name__}", file=file
+        )
     try:
         raw = toml_table(text)
     except tomllib.TOMLDecodeError as exc:
         raise syntax_error(str(exc), text, file) from None
     except RecursionError:
-        raise SceneError("TOML nested too deeply (brackets or braces inside each other "
-                         "hundreds of times); an answer file needs only key = \"value\" "
-                         "lines", file=file, key=deepest_key(text)) from None
+        raise SceneError(
+            "TOML nested too deeply (brackets or braces inside each other "
+            'hundreds of times); an answer file needs only key = "value" '
+            "lines",
+            file=file,
+            key=deepest_key(text),
+        ) from None
     for key in raw:
         if key not in _ANSWER_FILE_KEYS:
-            raise SceneError("an answer file holds an [answers] table (and optionally title, "
-                             f"student){_suggest(key, _ANSWER_FILE_KEYS)}", file=file, key=key)
+            raise SceneError(
+                "an answer file holds an [answers] table (and optionally title, "
+                f"student){_suggest(key, _ANSWER_FILE_KEYS)}",
+                file=file,
+                key=key,
+            )
     if not isinstance(raw.get("answers"), dict) or not raw["answers"]:
         raise SceneError("no [answers] table (or it is empty)", file=file, key="[answers]")
     loader = _Loader(raw, text, file)
@@ -446,15 +612,19 @@ def parse_answers(text: str, scene: Scene, file: str | None = None, *,
     loader.driving_wheel = scene.input.wheel
     loader.rolling_pairs = scene.rolling
     loader.ground = scene.ground
-    tolerance, answers = loader.answers(set(scene.point_names), scene.sliders, scene.pins,
-                                        scene.loads)
+    tolerance, answers = loader.answers(
+        set(scene.point_names), scene.sliders, scene.pins, scene.loads
+    )
     student = None
     for key in ("student", "name"):
         if key in raw and student is None:
             if not isinstance(raw[key], str) or not raw[key].strip():
-                raise SceneError(f"{key} is the student's name, a string: {key} = "
-                                 "\"A. Student\"", file=file, key=key,
-                                 line=loader.top_line(key))
+                raise SceneError(
+                    f'{key} is the student\'s name, a string: {key} = "A. Student"',
+                    file=file,
+                    key=key,
+                    line=loader.top_line(key),
+                )
             student = " ".join(raw[key].split())
     if not with_variant:
         return (tolerance, tuple(answers)) + ((student,) if with_student else ())
@@ -462,11 +632,16 @@ def parse_answers(text: str, scene: Scene, file: str | None = None, *,
     if isinstance(variant, int) and not isinstance(variant, bool):
         variant = f"{variant:02d}"
     if variant is not None and (not isinstance(variant, str) or not variant.strip()):
-        raise SceneError("variant names the student's variant: variant = \"07\" (or its "
-                         "file name, \"variant-07.toml\")", file=file, key="variant",
-                         line=loader.top_line("variant"))
-    return (tolerance, tuple(answers), (variant.strip() if variant else None)) + \
-        ((student,) if with_student else ())
+        raise SceneError(
+            'variant names the student\'s variant: variant = "07" (or its '
+            'file name, "variant-07.toml")',
+            file=file,
+            key="variant",
+            line=loader.top_line("variant"),
+        )
+    return (tolerance, tuple(answers), (variant.strip() if variant else None)) + (
+        (student,) if with_student else ()
+    )
 
 
 def load_answers(path, scene: Scene, *, with_variant: bool = False, with_student: bool = False):
@@ -475,8 +650,9 @@ def load_answers(path, scene: Scene, *, with_variant: bool = False, with_student
     try:
         data = _read_start(path)
         if len(data) > MAX_SCENE_BYTES:
-            raise SceneError(f"larger than {MAX_SCENE_BYTES >> 20} MiB: not an answer file",
-                             file=str(path))
+            raise SceneError(
+                f"larger than {MAX_SCENE_BYTES >> 20} MiB: not an answer file", file=str(path)
+            )
         text = data.decode("utf-8-sig")  # a byte-order mark is fine, as in a scene
     except FileNotFoundError:
         raise SceneError("no such file", file=str(path)) from None
@@ -489,8 +665,8 @@ def load_answers(path, scene: Scene, *, with_variant: bool = False, with_student
     if "\x00" in text:
         raise SceneError("not a text file (it holds binary data)", file=str(path))
     try:
-        return parse_answers(text, scene, file=str(path), with_variant=with_variant,
-                             with_student=with_student)
+        return parse_answers(
+            text, scene, file=str(path), with_variant=with_variant, with_student=with_student
+        )
     except PolygonMethodError as exc:
         raise exc.located(str(path))
-

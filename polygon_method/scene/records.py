@@ -24,9 +24,30 @@ _UNIT_ORDER = ("mm", "cm", "m", "in", "ft")
 _ABSURD_LONG = 1e4
 _ABSURD_SHORT = 1e-7
 
-TOP_KEYS = ("title", "source", "notes", "units", "ground", "links", "points", "sliders",
-            "cylinders", "rolling", "assembly", "input", "pins", "loads", "answers", "variants",
-            "variant", "masses", "gravity", "indicator", "flywheel", "friction")
+TOP_KEYS = (
+    "title",
+    "source",
+    "notes",
+    "units",
+    "ground",
+    "links",
+    "points",
+    "sliders",
+    "cylinders",
+    "rolling",
+    "assembly",
+    "input",
+    "pins",
+    "loads",
+    "answers",
+    "variants",
+    "variant",
+    "masses",
+    "gravity",
+    "indicator",
+    "flywheel",
+    "friction",
+)
 INPUT_KEYS = ("crank", "angle", "speed", "acceleration")
 #: the kinds of quantity on which [input] may give the motion instead of the crank's speed
 #: (named as answer keys: ``omega_BC``, ``vs_B``, ``v_B``), with their rate's prefix
@@ -81,8 +102,13 @@ def split_name(name: str) -> tuple[str, ...]:
     >>> split_name("BC"), split_name("O2-A"), split_name("O2A"), split_name("Bc")
     (('B', 'C'), ('O2', 'A'), ('O2', 'A'), ())
     """
-    if isinstance(name, str) and len(name) == 2 and name.isascii() and name.isalpha() \
-            and name.isupper():  # the usual name, two capitals: read at once
+    if (
+        isinstance(name, str)
+        and len(name) == 2
+        and name.isascii()
+        and name.isalpha()
+        and name.isupper()
+    ):  # the usual name, two capitals: read at once
         return (name[0], name[1])
     if not isinstance(name, str) or not _LINK_NAME.match(name) or name.endswith("-"):
         return ()
@@ -354,6 +380,7 @@ class Input:
 @dataclass(frozen=True)
 class Pin:
     """A pin of a stated size at ``point`` (radius in m), for its rubbing velocity."""
+
     point: str
     radius: float
     given: str  # "diameter" or "radius", as the scene gave it
@@ -381,6 +408,7 @@ class Load:
 class Answer:
     """One answer of ``[answers]`` (or of a student's file): its key, what it names, its value in SI
     and its sense as given."""
+
     key: str
     kind: str  # prefix of ANSWER_KINDS, "torque", "centre", or "vu"/"au" (the guide's point
     # under a block: names is the slider's key)
@@ -452,9 +480,19 @@ class Scene:
                 seen[sl.yoke] = None
         object.__setattr__(self, "_names", tuple(seen))
         try:
-            key = (self.units, tuple(self.ground.items()), self.links, self.points,
-                   self.sliders, tuple(self.assembly.items()), self.input, self.pins,
-                   self.file, self.cylinders, self.rolling)
+            key = (
+                self.units,
+                tuple(self.ground.items()),
+                self.links,
+                self.points,
+                self.sliders,
+                tuple(self.assembly.items()),
+                self.input,
+                self.pins,
+                self.file,
+                self.cylinders,
+                self.rolling,
+            )
             hash(key)
         except (TypeError, AttributeError):  # something unhashable: not cached by content
             key = None
@@ -463,37 +501,65 @@ class Scene:
     def _check_numbers(self) -> None:
         """Finite numbers, positive lengths (a scene made through the API, too)."""
         inp = self.input
-        rows = ((("angle", inp.angle, "angle"), ("speed", inp.omega, "angular_velocity"),
-                 ("acceleration", inp.alpha, "angular_acceleration")) if inp.block is None
-                else (("place", inp.angle, "velocity"), ("speed", inp.omega, "velocity"),
-                      ("acceleration", inp.alpha, "acceleration")))  # a block's s, vs, as
+        rows = (
+            (
+                ("angle", inp.angle, "angle"),
+                ("speed", inp.omega, "angular_velocity"),
+                ("acceleration", inp.alpha, "angular_acceleration"),
+            )
+            if inp.block is None
+            else (
+                ("place", inp.angle, "velocity"),
+                ("speed", inp.omega, "velocity"),
+                ("acceleration", inp.alpha, "acceleration"),
+            )
+        )  # a block's s, vs, as
         for name, v, kind in rows:
             if v is None and inp.given is not None and name != "angle":
                 continue  # found from the given motion when the scene is compiled
             if not isinstance(v, (int, float)) or not math.isfinite(v):
-                raise SceneError(f"the {'crank' if inp.block is None else 'block'}'s {name} "
-                                 f"must be a finite number, got {v!r}",
-                                 key=f"[input] {name}", file=self.file)
+                raise SceneError(
+                    f"the {'crank' if inp.block is None else 'block'}'s {name} "
+                    f"must be a finite number, got {v!r}",
+                    key=f"[input] {name}",
+                    file=self.file,
+                )
             # the bounds a file's values meet, for a scene made through the API too: beyond
             # them the squares of the solution overflow, or the input torque divides by 0
-            if not abs(v) <= ABSURD[kind] or (name == "speed"
-                                              and not abs(v) >= TINY.get(kind, 1e-12)):
-                raise SceneError(f"the {'crank' if inp.block is None else 'block'}'s {name} "
-                                 f"{v!r} (SI) is "
-                                 + ("zero: nothing moves" if name == "speed" and v == 0 else
-                                    "absurd for a mechanism"),
-                                 key=f"[input] {name}", file=self.file)
+            if not abs(v) <= ABSURD[kind] or (
+                name == "speed" and not abs(v) >= TINY.get(kind, 1e-12)
+            ):
+                raise SceneError(
+                    f"the {'crank' if inp.block is None else 'block'}'s {name} "
+                    f"{v!r} (SI) is "
+                    + (
+                        "zero: nothing moves"
+                        if name == "speed" and v == 0
+                        else "absurd for a mechanism"
+                    ),
+                    key=f"[input] {name}",
+                    file=self.file,
+                )
         for p, xy in self.ground.items():
             if not all(isinstance(c, (int, float)) and abs(c) <= _ABSURD_LONG for c in xy):
-                raise SceneError(f"ground point {p} must have finite coordinates within "
-                                 f"{_ABSURD_LONG:g} m, got {xy!r}", key=f"[ground] {p}",
-                                 file=self.file)
+                raise SceneError(
+                    f"ground point {p} must have finite coordinates within "
+                    f"{_ABSURD_LONG:g} m, got {xy!r}",
+                    key=f"[ground] {p}",
+                    file=self.file,
+                )
         for lk in self.links:
-            if not isinstance(lk.length, (int, float)) or \
-                    not _ABSURD_SHORT <= lk.length <= _ABSURD_LONG:
-                raise SceneError(f"link {lk.key} must have a length between "
-                                 f"{_ABSURD_SHORT:g} and {_ABSURD_LONG:g} m, got "
-                                 f"{lk.length!r}", key=f"[links] {lk.key}", file=self.file)
+            if (
+                not isinstance(lk.length, (int, float))
+                or not _ABSURD_SHORT <= lk.length <= _ABSURD_LONG
+            ):
+                raise SceneError(
+                    f"link {lk.key} must have a length between "
+                    f"{_ABSURD_SHORT:g} and {_ABSURD_LONG:g} m, got "
+                    f"{lk.length!r}",
+                    key=f"[links] {lk.key}",
+                    file=self.file,
+                )
 
     # ----- lookups
     def link(self, name: str) -> Link:
@@ -521,8 +587,9 @@ class Scene:
     def cylinder(self, name: str):
         """The cylinder of [cylinders] named ``name`` (either order of its points), or None."""
         pts = split_name(name)
-        return next((c for c in self.cylinders if len(pts) == 2
-                     and {c.barrel, c.rod} == set(pts)), None)
+        return next(
+            (c for c in self.cylinders if len(pts) == 2 and {c.barrel, c.rod} == set(pts)), None
+        )
 
     def slider(self, name: str):
         """The slider named ``name``: a block's point (``D``), or one slot of a peg in two
@@ -559,8 +626,12 @@ class Scene:
     @property
     def has_forces(self) -> bool:
         """Whether the scene asks for the force analysis: masses, gravity or friction."""
-        return bool(self.masses) or self.gravity is not None or self.indicator is not None \
+        return (
+            bool(self.masses)
+            or self.gravity is not None
+            or self.indicator is not None
             or self.friction is not None
+        )
 
     def rolling_of(self, point: str):
         """The rolling pair whose wheel has ``point`` as its rim point, or None."""

@@ -30,8 +30,17 @@ import re
 
 from .records import RollingPair, split_name
 
-_KEYS = ("on", "through", "radius", "on_radius", "inside", "angle", "side", "ring",
-         "pressure_angle")
+_KEYS = (
+    "on",
+    "through",
+    "radius",
+    "on_radius",
+    "inside",
+    "angle",
+    "side",
+    "ring",
+    "pressure_angle",
+)
 _SIDES = ("above", "below", "left", "right")
 
 
@@ -50,8 +59,12 @@ def _pressure_angle(rd, spec, key):
         return None
     a = rd.qty(spec["pressure_angle"], "angle", "rolling", key, default_unit="deg").value
     if not 0.0 <= a <= math.pi / 4 + 1e-12:
-        raise rd.error(f"pressure_angle = {spec['pressure_angle']!r}: from 0 to 45 deg (the "
-                       "teeth's angle, 20 deg by default)", "rolling", key)
+        raise rd.error(
+            f"pressure_angle = {spec['pressure_angle']!r}: from 0 to 45 deg (the "
+            "teeth's angle, 20 deg by default)",
+            "rolling",
+            key,
+        )
     return a
 
 
@@ -61,41 +74,68 @@ def _rack(rd, key, spec, ground, sliders, _suggest):
     crank angle."""
     sl = next((s for s in sliders if s.point == key), None)
     if sl is None or getattr(sl, "u", None) is None:
-        raise rd.error(f"a rack is a block on a fixed path: add {key} to [sliders] with path "
-                       "and through (where the rack's point is at the instant shown)",
-                       "rolling", key)
+        raise rd.error(
+            f"a rack is a block on a fixed path: add {key} to [sliders] with path "
+            "and through (where the rack's point is at the instant shown)",
+            "rolling",
+            key,
+        )
     if sl.through[1] is None:
-        raise rd.error(f"the rack {key} needs its place: through = [x, y] in [sliders] (where "
-                       "its point is at the instant shown)", "rolling", key)
+        raise rd.error(
+            f"the rack {key} needs its place: through = [x, y] in [sliders] (where "
+            "its point is at the instant shown)",
+            "rolling",
+            key,
+        )
     for k in spec:
         if k not in ("on", "on_radius", "pressure_angle"):
-            raise rd.error(f"unknown key '{k}' for a rack"
-                           f"{_suggest(k, ('on', 'on_radius', 'pressure_angle'))}; a rack has "
-                           "on (its pinion), on_radius and pressure_angle", "rolling", key)
+            raise rd.error(
+                f"unknown key '{k}' for a rack"
+                f"{_suggest(k, ('on', 'on_radius', 'pressure_angle'))}; a rack has "
+                "on (its pinion), on_radius and pressure_angle",
+                "rolling",
+                key,
+            )
     if "on" not in spec:
-        raise rd.error(f"the rack {key} has no pinion: add on = \"O-A\" (a gear turning "
-                       "about a ground point)", "rolling", key)
+        raise rd.error(
+            f'the rack {key} has no pinion: add on = "O-A" (a gear turning about a ground point)',
+            "rolling",
+            key,
+        )
     base, bpts = rd.find_link(spec["on"], "rolling", key)
     fixed = [p for p in bpts if p in ground]
     if len(fixed) != 1:
-        raise rd.error(f"the pinion {base.key} must turn about a fixed centre: one of its "
-                       "ends a ground point", "rolling", key)
-    return RollingPair(key, None, key, 0.0, "rack", f"the pinion {base.key}", base=base.key,
-                       base_centre=fixed[0],
-                       base_radius=(rd.length(spec["on_radius"], "rolling", key)
-                                    if "on_radius" in spec else None),
-                       pressure_angle=_pressure_angle(rd, spec, key))
+        raise rd.error(
+            f"the pinion {base.key} must turn about a fixed centre: one of its ends a ground point",
+            "rolling",
+            key,
+        )
+    return RollingPair(
+        key,
+        None,
+        key,
+        0.0,
+        "rack",
+        f"the pinion {base.key}",
+        base=base.key,
+        base_centre=fixed[0],
+        base_radius=(rd.length(spec["on_radius"], "rolling", key) if "on_radius" in spec else None),
+        pressure_angle=_pressure_angle(rd, spec, key),
+    )
 
 
 def read_rolling(rd, ground, sliders, points) -> list:
     """The [rolling] table's pairs, checked (``rd`` is the scene reader)."""
     from .tables import _suggest  # the reader's own did-you-mean
+
     out = []
     wheels = set()
     for key, spec in rd.table("rolling").items():
-        example = ("a rolling wheel is a table: { on = \"horizontal\", through = [0, 0] } "
-                   "(a ground line), { on = \"O\" } (a fixed circle about O) or { on = "
-                   "\"O1-A\" } (a gear)")
+        example = (
+            'a rolling wheel is a table: { on = "horizontal", through = [0, 0] } '
+            '(a ground line), { on = "O" } (a fixed circle about O) or { on = '
+            '"O1-A" } (a gear)'
+        )
         if not isinstance(spec, dict):
             raise rd.error(example, "rolling", key)
         for k in spec:
@@ -110,20 +150,31 @@ def read_rolling(rd, ground, sliders, points) -> list:
             raise rd.error(f"wheel {link.key} is named twice", "rolling", key)
         wheels.add(link.key)
         if "on" not in spec:
-            raise rd.error(f"the rolling wheel {key} has no ground line or circle: add on = "
-                           "\"horizontal\" with through = [x, y] (a line), on = \"O\" (a "
-                           "fixed circle about O) or on = \"O1-A\" (a gear)", "rolling", key)
+            raise rd.error(
+                f"the rolling wheel {key} has no ground line or circle: add on = "
+                '"horizontal" with through = [x, y] (a line), on = "O" (a '
+                'fixed circle about O) or on = "O1-A" (a gear)',
+                "rolling",
+                key,
+            )
         if rim in ground:
-            raise rd.error(f"{rim} is a ground point: write the wheel's link centre first, "
-                           f"then a point on the wheel ({rim}{centre}?)", "rolling", key)
+            raise rd.error(
+                f"{rim} is a ground point: write the wheel's link centre first, "
+                f"then a point on the wheel ({rim}{centre}?)",
+                "rolling",
+                key,
+            )
         if rim in points:
-            raise rd.error(f"{rim} is a carried point: the wheel's link ends at a joint",
-                           "rolling", key)
+            raise rd.error(
+                f"{rim} is a carried point: the wheel's link ends at a joint", "rolling", key
+            )
         if rim in {s.point for s in sliders}:
-            raise rd.error(f"{rim} slides on a guide and rolls with a wheel: one constraint "
-                           "too many", "rolling", key)
-        radius = (rd.length(spec["radius"], "rolling", key) if "radius" in spec
-                  else link.length)
+            raise rd.error(
+                f"{rim} slides on a guide and rolls with a wheel: one constraint too many",
+                "rolling",
+                key,
+            )
+        radius = rd.length(spec["radius"], "rolling", key) if "radius" in spec else link.length
         inside = spec.get("inside", False)
         if not isinstance(inside, bool):
             raise rd.error("inside = true or false", "rolling", key)
@@ -131,28 +182,45 @@ def read_rolling(rd, ground, sliders, points) -> list:
         if not isinstance(ring, bool):
             raise rd.error("ring = true or false", "rolling", key)
         if ring and inside:
-            raise rd.error("ring = true: the wheel is the ring and the gear it meshes with is "
-                           "inside it; inside = true says the opposite (keep one)",
-                           "rolling", key)
-        angle = (rd.qty(spec["angle"], "angle", "rolling", key, default_unit="deg").value
-                 if "angle" in spec else None)
+            raise rd.error(
+                "ring = true: the wheel is the ring and the gear it meshes with is "
+                "inside it; inside = true says the opposite (keep one)",
+                "rolling",
+                key,
+            )
+        angle = (
+            rd.qty(spec["angle"], "angle", "rolling", key, default_unit="deg").value
+            if "angle" in spec
+            else None
+        )
         on = spec["on"]
         if not isinstance(on, str):
-            raise rd.error(f"on = {on!r}: " + example[example.index("{"):], "rolling", key)
+            raise rd.error(f"on = {on!r}: " + example[example.index("{") :], "rolling", key)
         line = on in ("horizontal", "vertical") or re.match(r"^\s*[-+.\d]", on)
         if ring and (line or on in ground):
-            raise rd.error(f"ring = true: a ring meshes with a gear inside it (on = a gear's "
-                           f"link such as \"A-P\"), not with {'a line' if line else 'a fixed circle'}",
-                           "rolling", key)
+            raise rd.error(
+                f"ring = true: a ring meshes with a gear inside it (on = a gear's "
+                f'link such as "A-P"), not with {"a line" if line else "a fixed circle"}',
+                "rolling",
+                key,
+            )
         if line:
             if "inside" in spec or "on_radius" in spec:
                 raise rd.error("a line has no inside and no radius", "rolling", key)
             if "pressure_angle" in spec:
-                raise rd.error("a wheel on a line grips by friction: it has no teeth and no "
-                               "pressure angle (remove pressure_angle)", "rolling", key)
+                raise rd.error(
+                    "a wheel on a line grips by friction: it has no teeth and no "
+                    "pressure angle (remove pressure_angle)",
+                    "rolling",
+                    key,
+                )
             if "through" not in spec:
-                raise rd.error(f"the ground line of wheel {key} needs a point: through = "
-                               "[x, y] or a ground point's name", "rolling", key)
+                raise rd.error(
+                    f"the ground line of wheel {key} needs a point: through = "
+                    "[x, y] or a ground point's name",
+                    "rolling",
+                    key,
+                )
             if on == "horizontal":
                 ang, label = 0.0, "the horizontal line"
             elif on == "vertical":
@@ -163,70 +231,131 @@ def read_rolling(rd, ground, sliders, points) -> list:
             through = spec["through"]
             if isinstance(through, str):
                 if through not in ground:
-                    raise rd.error(f"through = {through!r} is not a ground point"
-                                   f"{_suggest(through, ground)}", "rolling", key)
+                    raise rd.error(
+                        f"through = {through!r} is not a ground point{_suggest(through, ground)}",
+                        "rolling",
+                        key,
+                    )
                 through = ground[through]
             else:
                 through = rd.coords(through, "rolling", key)
             u = _unit_at(ang)
             side = spec.get("side")
             if side is not None and side not in _SIDES:
-                raise rd.error(f"side = {side!r}: above, below, left or right"
-                               f"{_suggest(str(side), _SIDES)}", "rolling", key)
+                raise rd.error(
+                    f"side = {side!r}: above, below, left or right{_suggest(str(side), _SIDES)}",
+                    "rolling",
+                    key,
+                )
             m = (-u[1], u[0])
             vertical = abs(m[1]) <= 1e-12
             want = side or ("right" if vertical else "above")
-            axis, sign = {"above": (1, 1), "below": (1, -1), "right": (0, 1),
-                          "left": (0, -1)}[want]
+            axis, sign = {"above": (1, 1), "below": (1, -1), "right": (0, 1), "left": (0, -1)}[want]
             if abs(m[axis]) <= 1e-12:
-                raise rd.error(f"side = {want!r}: a {'vertical' if vertical else 'horizontal'}"
-                               f" line has {'a left and a right' if vertical else 'an above and a below'}",
-                               "rolling", key)
+                raise rd.error(
+                    f"side = {want!r}: a {'vertical' if vertical else 'horizontal'}"
+                    f" line has {'a left and a right' if vertical else 'an above and a below'}",
+                    "rolling",
+                    key,
+                )
             if m[axis] * sign < 0:
                 m = (-m[0], -m[1])
             if centre in ground:
-                raise rd.error(f"the wheel's centre {centre} is a ground point: a wheel on a "
-                               "line rolls along it", "rolling", key)
+                raise rd.error(
+                    f"the wheel's centre {centre} is a ground point: a wheel on a "
+                    "line rolls along it",
+                    "rolling",
+                    key,
+                )
             if centre in {s.point for s in sliders}:
-                raise rd.error(f"the wheel's centre {centre} moves along the line at the "
-                               "wheel's radius: remove its [sliders] entry", "rolling", key)
-            out.append(RollingPair(link.key, centre, rim, radius, "line", label, u=u,
-                                   through=through, m=m, angle=angle))
+                raise rd.error(
+                    f"the wheel's centre {centre} moves along the line at the "
+                    "wheel's radius: remove its [sliders] entry",
+                    "rolling",
+                    key,
+                )
+            out.append(
+                RollingPair(
+                    link.key,
+                    centre,
+                    rim,
+                    radius,
+                    "line",
+                    label,
+                    u=u,
+                    through=through,
+                    m=m,
+                    angle=angle,
+                )
+            )
             continue
         if "through" in spec or "side" in spec:
-            raise rd.error(f"through/side belong to a line; on = {on!r} is a circle",
-                           "rolling", key)
-        base_radius = (rd.length(spec["on_radius"], "rolling", key) if "on_radius" in spec
-                       else None)
+            raise rd.error(
+                f"through/side belong to a line; on = {on!r} is a circle", "rolling", key
+            )
+        base_radius = rd.length(spec["on_radius"], "rolling", key) if "on_radius" in spec else None
         if on in ground:
-            out.append(RollingPair(link.key, centre, rim, radius, "circle",
-                                   f"the fixed circle about {on}", base_centre=on,
-                                   inside=inside, base_radius=base_radius, angle=angle,
-                                   pressure_angle=_pressure_angle(rd, spec, key)))
+            out.append(
+                RollingPair(
+                    link.key,
+                    centre,
+                    rim,
+                    radius,
+                    "circle",
+                    f"the fixed circle about {on}",
+                    base_centre=on,
+                    inside=inside,
+                    base_radius=base_radius,
+                    angle=angle,
+                    pressure_angle=_pressure_angle(rd, spec, key),
+                )
+            )
             continue
         if len(split_name(on)) != 2:
-            raise rd.error(f"on = {on!r} is no line, ground point or gear (a link such as "
-                           "\"O1-A\")" + _suggest(on, list(ground) + ["horizontal",
-                                                                     "vertical"]),
-                           "rolling", key)
+            raise rd.error(
+                f"on = {on!r} is no line, ground point or gear (a link such as "
+                '"O1-A")' + _suggest(on, list(ground) + ["horizontal", "vertical"]),
+                "rolling",
+                key,
+            )
         base, bpts = rd.find_link(on, "rolling", key)
         fixed = [p for p in bpts if p in ground]
         if len(fixed) == 2:
-            raise rd.error(f"the gear {base.key} is fixed (both its ends are ground points): "
-                           f"write on = \"{fixed[0]}\" for a fixed circle about {fixed[0]}",
-                           "rolling", key)
+            raise rd.error(
+                f"the gear {base.key} is fixed (both its ends are ground points): "
+                f'write on = "{fixed[0]}" for a fixed circle about {fixed[0]}',
+                "rolling",
+                key,
+            )
         if base.key == link.key:
             raise rd.error("a wheel cannot roll on itself", "rolling", key)
         # a gear about its ground end; else fixed to a moving link, centred at its first
         # point as written (a planet fixed to a coupler: on = "C-B", centre C)
         gc = fixed[0] if fixed else bpts[0]
         if gc == centre:
-            raise rd.error(f"the gear {base.key} and the wheel {link.key} have one centre "
-                           f"{centre}: gears in mesh have two", "rolling", key)
+            raise rd.error(
+                f"the gear {base.key} and the wheel {link.key} have one centre "
+                f"{centre}: gears in mesh have two",
+                "rolling",
+                key,
+            )
         if ring and base_radius is None:  # the gear inside it a wheel: its pitch radius
             base_radius = next((r.radius for r in out if r.wheel == base.key), None)
-        out.append(RollingPair(link.key, centre, rim, radius, "gear", f"the gear {base.key}",
-                               base=base.key, base_centre=gc, inside=inside or ring,
-                               base_radius=base_radius, angle=angle, ring=ring,
-                               pressure_angle=_pressure_angle(rd, spec, key)))
+        out.append(
+            RollingPair(
+                link.key,
+                centre,
+                rim,
+                radius,
+                "gear",
+                f"the gear {base.key}",
+                base=base.key,
+                base_centre=gc,
+                inside=inside or ring,
+                base_radius=base_radius,
+                angle=angle,
+                ring=ring,
+                pressure_angle=_pressure_angle(rd, spec, key),
+            )
+        )
     return out

@@ -15,8 +15,19 @@ except ImportError:  # pragma: no cover - the pure-Python reader does it all, sl
     _fast_toml = None
 
 
-__all__ = ["toml_table", "toml_lines", "LineIndex", "line_of", "key_line", "syntax_error",
-           "duplicate_key", "deepest_key", "printable_text", "has_long_run", "long_integer"]
+__all__ = [
+    "toml_table",
+    "toml_lines",
+    "LineIndex",
+    "line_of",
+    "key_line",
+    "syntax_error",
+    "duplicate_key",
+    "deepest_key",
+    "printable_text",
+    "has_long_run",
+    "long_integer",
+]
 
 
 def toml_table(text: str) -> dict:
@@ -56,15 +67,21 @@ def toml_lines(text: str) -> list:
 _TOML_WORDS = [
     (r"^Unclosed array$", "unclosed array: a ']' is missing"),
     (r"^Unclosed inline table$", "unclosed inline table: a '}' is missing"),
-    (r"^Illegal character '\\n'$", "a string is not closed before the end of the line "
-     "(a '\"' is missing)"),
-    (r"^Expected '\]' at the end of a table declaration$",
-     "expected ']' at the end of a table header such as [links]"),
+    (
+        r"^Illegal character '\\n'$",
+        "a string is not closed before the end of the line (a '\"' is missing)",
+    ),
+    (
+        r"^Expected '\]' at the end of a table declaration$",
+        "expected ']' at the end of a table header such as [links]",
+    ),
     (r"^Cannot declare \((.*?),?\) twice$", None),
-    (r"^Expected newline or end of document after a statement$",
-     "expected the end of the line after a value (a missing quote, comma or '=', or two "
-     "values on one line?)"),
-    (r"^Invalid value$", "invalid value (strings need quotes: \"50 mm\", \"AB\")"),
+    (
+        r"^Expected newline or end of document after a statement$",
+        "expected the end of the line after a value (a missing quote, comma or '=', or two "
+        "values on one line?)",
+    ),
+    (r"^Invalid value$", 'invalid value (strings need quotes: "50 mm", "AB")'),
 ]
 
 
@@ -146,8 +163,12 @@ def syntax_error(msg, text, file) -> SceneError:
         if dup is not None:
             table, key, first, again = dup
             label = f"[{table}] {key}" if table else key
-            return SceneError(f"duplicate key {key} (first given on line {first}); give each "
-                              "key once", file=file, key=label, line=again)
+            return SceneError(
+                f"duplicate key {key} (first given on line {first}); give each key once",
+                file=file,
+                key=label,
+                line=again,
+            )
     for pattern, words in _TOML_WORDS:
         hit = re.match(pattern, core)
         if hit:
@@ -159,8 +180,10 @@ def syntax_error(msg, text, file) -> SceneError:
     else:
         core = core[:1].lower() + core[1:]
     if re.search(r"\r(?!\n)", text):  # an old Mac's line ends: TOML sees one long line
-        core += ("; the file ends its lines with a lone carriage return (CR): save it with "
-                 "LF or CRLF line endings")
+        core += (
+            "; the file ends its lines with a lone carriage return (CR): save it with "
+            "LF or CRLF line endings"
+        )
     return SceneError(f"TOML syntax error: {core}", file=file, key=where)
 
 
@@ -214,8 +237,7 @@ _INT64 = 1 << 63
 #: tries every position): a digit is one ASCII byte, and no other character's bytes are
 #: digits, so the runs are the same
 _LONG_RUN = b"x" * 16
-_DIGITS = bytes(ord("x") if chr(c) in "0123456789ABCDEFabcdef_" else ord(" ")
-                for c in range(256))
+_DIGITS = bytes(ord("x") if chr(c) in "0123456789ABCDEFabcdef_" else ord(" ") for c in range(256))
 
 
 def has_long_run(text: str) -> bool:

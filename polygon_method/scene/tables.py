@@ -12,8 +12,18 @@ from ..common.units import did_you_mean
 from .angles import read_angle
 from .triangle import apex
 
-from .records import (CarriedPoint, Cylinder, guide_words,
-                      FixedPath, GuideSlider, Load, Pin, YokeSlot, split_name)
+from .records import (
+    CarriedPoint,
+    Cylinder,
+    guide_words,
+    FixedPath,
+    GuideSlider,
+    Load,
+    Pin,
+    YokeSlot,
+    split_name,
+)
+
 
 def _unit_at(ang: float) -> tuple:
     """(cos, sin) of a direction (rad), exact where it is a whole number of right angles
@@ -22,7 +32,7 @@ def _unit_at(ang: float) -> tuple:
     near a dead centre that hair matters)."""
     q = ang / (math.pi / 2)
     k = round(q)
-    if abs(q - k) <= 4 * 2.0 ** -53 * max(1.0, abs(q)):
+    if abs(q - k) <= 4 * 2.0**-53 * max(1.0, abs(q)):
         return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[k % 4]
     return (math.cos(ang), math.sin(ang))
 
@@ -57,23 +67,32 @@ class _Tables:
         for name, spec in table.items():
             self.point_name(name, "points")
             if name in ground:
-                raise self.error(f"{name} is a ground point and a carried point; a point has "
-                                 "one role", "points", name)
+                raise self.error(
+                    f"{name} is a ground point and a carried point; a point has one role",
+                    "points",
+                    name,
+                )
             if not isinstance(spec, dict) or "on" not in spec:
-                raise self.error("a carried point is a table such as { on = \"BC\", along = "
-                                 "40 } or { on = \"BC\", distances = { B = 45, C = 30 }, turn "
-                                 "= \"cw\" }", "points", name)
+                raise self.error(
+                    'a carried point is a table such as { on = "BC", along = '
+                    '40 } or { on = "BC", distances = { B = 45, C = 30 }, turn '
+                    '= "cw" }',
+                    "points",
+                    name,
+                )
             allowed = ("on", "along", "from", "distances", "turn")
             for k in spec:
                 if k not in allowed:
                     raise self.error(f"unknown key '{k}'{_suggest(k, allowed)}", "points", name)
             link, pts = self.find_link(spec["on"], "points", name)
             if name in link.points:
-                raise self.error(f"{name} is a joint of link {link.key}; it cannot also be "
-                                 "carried on it", "points", name)
+                raise self.error(
+                    f"{name} is a joint of link {link.key}; it cannot also be carried on it",
+                    "points",
+                    name,
+                )
             frame = local.setdefault(link.key, {link.p: (0.0, 0.0), link.q: (link.length, 0.0)})
-            xy, how, spread, source = self.on_link(spec, link, pts, frame, "points", name,
-                                                   spreads)
+            xy, how, spread, source = self.on_link(spec, link, pts, frame, "points", name, spreads)
             frame[name] = xy
             L = link.length
             spreads[name] = spread
@@ -89,13 +108,13 @@ class _Tables:
         on = spec.get("on", link.key)
         has_along, has_dist = "along" in spec, "distances" in spec
         if has_along == has_dist:
-            raise self.error("give either along (with an optional from) or distances "
-                             "with turn", table, name)
+            raise self.error(
+                "give either along (with an optional from) or distances with turn", table, name
+            )
         if has_along:
             start = spec.get("from", pts[0])
             if start not in link.points:
-                raise self.error(f"from = {start!r} is not an end of {link.key}",
-                                 table, name)
+                raise self.error(f"from = {start!r} is not an end of {link.key}", table, name)
             if "turn" in spec:
                 raise self.error("turn goes with distances, not with along", table, name)
             d = self.length(spec["along"], table, name, positive=False)
@@ -105,19 +124,28 @@ class _Tables:
             xy = (sx + t * (ox - sx), sy + t * (oy - sy))
             spread, source = 0.0, ("along", start, d)
             far = link.other(start)
-            where = (f"{on} produced beyond {start}" if d < 0 else
-                     f"{on} produced beyond {far}" if d > link.length else
-                     on)
+            where = (
+                f"{on} produced beyond {start}"
+                if d < 0
+                else f"{on} produced beyond {far}"
+                if d > link.length
+                else on
+            )
             how = f"on {where}, {self._words(abs(d))} from {start}"
         else:
             dist = spec["distances"]
             if not isinstance(dist, dict) or len(dist) != 2:
-                raise self.error("distances names two points of the link, e.g. "
-                                 "{ B = 45, C = 30 }", table, name)
+                raise self.error(
+                    "distances names two points of the link, e.g. { B = 45, C = 30 }", table, name
+                )
             turn = spec.get("turn")
             if turn not in ("cw", "ccw"):
-                raise self.error("turn = \"cw\" or \"ccw\": how the triangle (the two "
-                                 "points of distances, then this point) reads", table, name)
+                raise self.error(
+                    'turn = "cw" or "ccw": how the triangle (the two '
+                    "points of distances, then this point) reads",
+                    table,
+                    name,
+                )
             (r1, d1), (r2, d2) = dist.items()
             for r in (r1, r2):
                 if r not in frame:
@@ -129,13 +157,16 @@ class _Tables:
             u = self.scale()
             if d1 + d2 < e * (1 - 1e-12) or abs(d1 - d2) > e * (1 + 1e-12):
                 if d1 + d2 < e:
-                    why = (f"{r1}{name} + {r2}{name} = {(d1 + d2) / u:g} < {r1}{r2} = "
-                           f"{e / u:g} {self.unit}")
+                    why = (
+                        f"{r1}{name} + {r2}{name} = {(d1 + d2) / u:g} < {r1}{r2} = "
+                        f"{e / u:g} {self.unit}"
+                    )
                 else:
-                    why = (f"|{r1}{name} - {r2}{name}| = {abs(d1 - d2) / u:g} > {r1}{r2} = "
-                           f"{e / u:g} {self.unit}")
-                raise self.error(f"the triangle {r1}{r2}{name} cannot close: {why}",
-                                 table, name)
+                    why = (
+                        f"|{r1}{name} - {r2}{name}| = {abs(d1 - d2) / u:g} > {r1}{r2} = "
+                        f"{e / u:g} {self.unit}"
+                    )
+                raise self.error(f"the triangle {r1}{r2}{name} cannot close: {why}", table, name)
             # the height by Heron's formula in a stable form (never cancelled to 0 on a
             # nearly flat triangle), and how far the rounding of the distances and of the
             # points it is set out from may move the point
@@ -146,8 +177,10 @@ class _Tables:
             ex, ey = (x2 - x1) / e, (y2 - y1) / e
             sign = 1.0 if turn == "ccw" else -1.0
             xy = (x1 + along * ex - sign * h * ey, y1 + along * ey + sign * h * ex)
-            how = (f"on {on}, {r1}{name} = {self._words(d1)}, {r2}{name} = "
-                   f"{self._words(d2)}, {r1}{r2}{name} read {turn}")
+            how = (
+                f"on {on}, {r1}{name} = {self._words(d1)}, {r2}{name} = "
+                f"{self._words(d2)}, {r1}{r2}{name} read {turn}"
+            )
         return xy, how, spread, source
 
     def sliders(self, index, ground, carried):
@@ -155,8 +188,12 @@ class _Tables:
         for name, spec in self.table("sliders").items():
             self.point_name(name, "sliders")
             if not isinstance(spec, dict):
-                raise self.error("a slider is a table: { path = \"horizontal\", through = "
-                                 "[x, y] } or { along = \"CP\" }", "sliders", name)
+                raise self.error(
+                    'a slider is a table: { path = "horizontal", through = '
+                    '[x, y] } or { along = "CP" }',
+                    "sliders",
+                    name,
+                )
             allowed = ("path", "through", "along", "direction")
             for k in spec:
                 if k not in allowed:
@@ -165,39 +202,64 @@ class _Tables:
                 out.append(self.yoke_slot(name, spec, ground))
                 continue
             if "direction" in spec:
-                raise self.error("direction goes with along = \"block Y\" (the slot of a "
-                                 "translating yoke Y)", "sliders", name)
+                raise self.error(
+                    'direction goes with along = "block Y" (the slot of a translating yoke Y)',
+                    "sliders",
+                    name,
+                )
             if "along" in spec and (isinstance(spec["along"], list) or "path" in spec):
                 out.extend(self.peg(name, spec, ground, carried))
                 continue
             if "along" in spec:
                 if "through" in spec:
-                    raise self.error("a block slides either on a fixed path or along a link, "
-                                     "not both (a peg in a fixed slot and in the slot of a "
-                                     "link: along = \"OA\" with path = ...)", "sliders", name)
+                    raise self.error(
+                        "a block slides either on a fixed path or along a link, "
+                        "not both (a peg in a fixed slot and in the slot of a "
+                        'link: along = "OA" with path = ...)',
+                        "sliders",
+                        name,
+                    )
                 guide = spec["along"]
-                if len(split_name(guide)) == 2 and not self.index.get(frozenset(
-                        split_name(guide))) and any(p in self.ground
-                                                    for p in split_name(guide)):
+                if (
+                    len(split_name(guide)) == 2
+                    and not self.index.get(frozenset(split_name(guide)))
+                    and any(p in self.ground for p in split_name(guide))
+                ):
                     raise self.error(
                         f"the guide {guide} is not in [links]: add it with its length, e.g. "
-                        f"\"{guide}\" = 500 (if the problem does not give the lever's length, "
-                        "any length will do: it only places the end of the lever)", "sliders", name)
+                        f'"{guide}" = 500 (if the problem does not give the lever\'s length, '
+                        "any length will do: it only places the end of the lever)",
+                        "sliders",
+                        name,
+                    )
                 link, pts = self.find_link(guide, "sliders", name)
                 if name in link.points:
-                    raise self.error(f"{name} is an end of {link.key}; a block slides along a "
-                                     "link between its ends", "sliders", name)
+                    raise self.error(
+                        f"{name} is an end of {link.key}; a block slides along a "
+                        "link between its ends",
+                        "sliders",
+                        name,
+                    )
                 if all(p in ground for p in pts):
-                    raise self.error(f"{link.key} is fixed (both ends are ground points): "
-                                     "use path/through for a fixed guide", "sliders", name)
+                    raise self.error(
+                        f"{link.key} is fixed (both ends are ground points): "
+                        "use path/through for a fixed guide",
+                        "sliders",
+                        name,
+                    )
                 out.append(GuideSlider(name, link.key, pts[0], pts[1]))
                 continue
             if name in ground:
-                raise self.error(f"{name} is a ground point; it cannot slide on a fixed path",
-                                 "sliders", name)
+                raise self.error(
+                    f"{name} is a ground point; it cannot slide on a fixed path", "sliders", name
+                )
             if name in carried:
-                raise self.error(f"{name} is carried on a link and also slides on a fixed "
-                                 "path: one constraint too many", "sliders", name)
+                raise self.error(
+                    f"{name} is carried on a link and also slides on a fixed "
+                    "path: one constraint too many",
+                    "sliders",
+                    name,
+                )
             out.append(self.fixed_path(name, spec, ground))
         for sl in out:  # a yoke's slot: its yoke is a block on a fixed path, not along it
             if isinstance(sl, YokeSlot):
@@ -207,20 +269,31 @@ class _Tables:
     def yoke_slot(self, name, spec, ground):
         """``P = { along = "block Y", direction = "vertical" }``: a block at P in the slot of
         the yoke Y (a block on a fixed path), the slot through Y along ``direction``."""
-        yoke = spec["along"][len("block "):].strip()
+        yoke = spec["along"][len("block ") :].strip()
         if "path" in spec or "through" in spec:
-            raise self.error("a block slides either on a fixed path or in a yoke's slot, not "
-                             "both", "sliders", name)
+            raise self.error(
+                "a block slides either on a fixed path or in a yoke's slot, not both",
+                "sliders",
+                name,
+            )
         if name in ground:
-            raise self.error(f"{name} is a ground point; it cannot slide in a moving yoke",
-                             "sliders", name)
+            raise self.error(
+                f"{name} is a ground point; it cannot slide in a moving yoke", "sliders", name
+            )
         if yoke == name:
-            raise self.error(f"{name} cannot slide in its own slot: the yoke is another "
-                             "block, e.g. along = \"block Y\"", "sliders", name)
+            raise self.error(
+                f"{name} cannot slide in its own slot: the yoke is another "
+                'block, e.g. along = "block Y"',
+                "sliders",
+                name,
+            )
         if "direction" not in spec:
-            raise self.error("the yoke's slot has no direction: add direction = "
-                             "\"vertical\", \"horizontal\" or an angle such as \"60 deg\"",
-                             "sliders", name)
+            raise self.error(
+                "the yoke's slot has no direction: add direction = "
+                '"vertical", "horizontal" or an angle such as "60 deg"',
+                "sliders",
+                name,
+            )
         ang, label = self.direction(spec["direction"], name)
         return YokeSlot(name, yoke, _unit_at(ang), label)
 
@@ -229,23 +302,36 @@ class _Tables:
         name, yoke = sl.point, sl.yoke
         path = next((s for s in sliders if s.point == yoke and not s.slot), None)
         if not isinstance(path, FixedPath):
-            raise self.error(f"along = \"block {yoke}\": {yoke} must be a block on a fixed "
-                             f"path in [sliders] (the yoke), e.g. {yoke} = {{ path = "
-                             "\"horizontal\" }", "sliders", name)
+            raise self.error(
+                f'along = "block {yoke}": {yoke} must be a block on a fixed '
+                f"path in [sliders] (the yoke), e.g. {yoke} = {{ path = "
+                '"horizontal" }',
+                "sliders",
+                name,
+            )
         (ux, uy), (dx, dy) = path.u, sl.direction
         if abs(ux * dy - uy * dx) < 1e-9:
-            raise self.error(f"a pin in two parallel slots: the slot of block {yoke} runs "
-                             f"{sl.label}, along the yoke's own {guide_words(path.label)}, so "
-                             "nothing moves the yoke", "sliders", name)
+            raise self.error(
+                f"a pin in two parallel slots: the slot of block {yoke} runs "
+                f"{sl.label}, along the yoke's own {guide_words(path.label)}, so "
+                "nothing moves the yoke",
+                "sliders",
+                name,
+            )
 
     def direction(self, value, name):
         """(angle in rad, label) of a direction: "horizontal", "vertical" or an angle."""
-        if isinstance(value, str) and not re.match(r"^\s*[-+.\d]", value) \
-                and value not in ("horizontal", "vertical"):
-            raise self.error(f"{value!r}: use \"horizontal\", \"vertical\" or an "
-                             "angle such as \"30 deg\"" + _suggest(value, ("horizontal",
-                                                                          "vertical")),
-                             "sliders", name)
+        if (
+            isinstance(value, str)
+            and not re.match(r"^\s*[-+.\d]", value)
+            and value not in ("horizontal", "vertical")
+        ):
+            raise self.error(
+                f'{value!r}: use "horizontal", "vertical" or an '
+                'angle such as "30 deg"' + _suggest(value, ("horizontal", "vertical")),
+                "sliders",
+                name,
+            )
         if value == "horizontal":
             return 0.0, "horizontal"
         if value == "vertical":
@@ -256,16 +342,25 @@ class _Tables:
     def fixed_path(self, name, spec, ground, slot=""):
         """The fixed path of ``spec`` (its path and through) for the slider at ``name``."""
         if "path" not in spec:
-            raise self.error("the slider's path has no direction: add path = "
-                             "\"horizontal\", \"vertical\" or an angle such as \"30 deg\"",
-                             "sliders", name)
+            raise self.error(
+                "the slider's path has no direction: add path = "
+                '"horizontal", "vertical" or an angle such as "30 deg"',
+                "sliders",
+                name,
+            )
         path = spec["path"]
-        if isinstance(path, str) and not re.match(r"^\s*[-+.\d]", path) \
-                and path not in ("horizontal", "vertical"):
-            raise self.error(f"path = {path!r}: use \"horizontal\", \"vertical\" or an "
-                             "angle such as \"30 deg\" or \"30 deg below the horizontal\""
-                             + _suggest(path, ("horizontal", "vertical")),
-                             "sliders", name)
+        if (
+            isinstance(path, str)
+            and not re.match(r"^\s*[-+.\d]", path)
+            and path not in ("horizontal", "vertical")
+        ):
+            raise self.error(
+                f'path = {path!r}: use "horizontal", "vertical" or an '
+                'angle such as "30 deg" or "30 deg below the horizontal"'
+                + _suggest(path, ("horizontal", "vertical")),
+                "sliders",
+                name,
+            )
         if path == "horizontal":
             ang, label = 0.0, "horizontal"
         elif path == "vertical":
@@ -273,16 +368,22 @@ class _Tables:
         else:
             # a book's words are in the notes; the label keeps the tables' width
             book = self.book_angle(path, "path", "sliders", name, f"slider {name}'s path")
-            ang = book.value if book is not None else self.qty(
-                path, "angle", "sliders", name, default_unit="deg").value
+            ang = (
+                book.value
+                if book is not None
+                else self.qty(path, "angle", "sliders", name, default_unit="deg").value
+            )
             label = f"at {math.degrees(ang):g} deg"
         through = spec.get("through")
         if through is None:
             through = ("input pivot", None)
         elif isinstance(through, str):
             if through not in ground:
-                raise self.error(f"through = {through!r} is not a ground point"
-                                 f"{_suggest(through, ground)}", "sliders", name)
+                raise self.error(
+                    f"through = {through!r} is not a ground point{_suggest(through, ground)}",
+                    "sliders",
+                    name,
+                )
             through = ground[through]
         else:
             through = self.coords(through, "sliders", name)
@@ -301,39 +402,61 @@ class _Tables:
         guides = along if isinstance(along, list) else [along]
         fixed = "path" in spec
         if len(guides) + fixed != 2 or not guides:
-            raise self.error("a peg sits in two slots: along = [\"OA\", \"QB\"] (two "
-                             "slotted links), or along = \"OA\" with path = ... (a link's "
-                             f"slot and a fixed one); got {len(guides) + fixed}", "sliders",
-                             name)
+            raise self.error(
+                'a peg sits in two slots: along = ["OA", "QB"] (two '
+                'slotted links), or along = "OA" with path = ... (a link\'s '
+                f"slot and a fixed one); got {len(guides) + fixed}",
+                "sliders",
+                name,
+            )
         if name in ground:
-            raise self.error(f"{name} is a ground point; a peg in two slots moves along "
-                             "them", "sliders", name)
+            raise self.error(
+                f"{name} is a ground point; a peg in two slots moves along them", "sliders", name
+            )
         if name in carried:
-            raise self.error(f"{name} is carried on a link and also sits in two slots: two "
-                             "constraints too many", "sliders", name)
+            raise self.error(
+                f"{name} is carried on a link and also sits in two slots: two constraints too many",
+                "sliders",
+                name,
+            )
         out, seen = [], []
         for guide in guides:
             if not isinstance(guide, str):
-                raise self.error(f"along = {guide!r}: a slot is named by its link, e.g. "
-                                 "\"OA\"", "sliders", name)
+                raise self.error(
+                    f'along = {guide!r}: a slot is named by its link, e.g. "OA"', "sliders", name
+                )
             link, pts = self.find_link(guide, "sliders", name)
             if name in link.points:
-                raise self.error(f"{name} is an end of {link.key}; a peg slides in the slot "
-                                 "of a link between its ends", "sliders", name)
+                raise self.error(
+                    f"{name} is an end of {link.key}; a peg slides in the slot "
+                    "of a link between its ends",
+                    "sliders",
+                    name,
+                )
             if all(p in ground for p in pts):
-                raise self.error(f"{link.key} is fixed (both ends are ground points): use "
-                                 "path/through for a fixed slot", "sliders", name)
+                raise self.error(
+                    f"{link.key} is fixed (both ends are ground points): use "
+                    "path/through for a fixed slot",
+                    "sliders",
+                    name,
+                )
             if link.key in seen:
-                raise self.error(f"a pin in two parallel slots: both are the slot of "
-                                 f"{link.key}, so the peg can be anywhere along it",
-                                 "sliders", name)
+                raise self.error(
+                    f"a pin in two parallel slots: both are the slot of "
+                    f"{link.key}, so the peg can be anywhere along it",
+                    "sliders",
+                    name,
+                )
             seen.append(link.key)
             out.append(GuideSlider(name, link.key, pts[0], pts[1], link.key))
         if fixed:
             out.append(self.fixed_path(name, spec, ground, "ground"))
         elif "through" in spec:
-            raise self.error("through goes with path (a fixed slot); a peg in two slotted "
-                             "links has none", "sliders", name)
+            raise self.error(
+                "through goes with path (a fixed slot); a peg in two slotted links has none",
+                "sliders",
+                name,
+            )
         return out
 
     def cylinders(self, known):
@@ -343,32 +466,50 @@ class _Tables:
         for key, spec in self.table("cylinders").items():
             pts = split_name(key)
             if len(pts) != 2 or pts[0] == pts[1]:
-                raise self.error(f"{key!r} is not a cylinder's name: its barrel's pivot, then "
-                                 "its rod's end, e.g. \"O-R\" or OR", "cylinders", key)
+                raise self.error(
+                    f"{key!r} is not a cylinder's name: its barrel's pivot, then "
+                    'its rod\'s end, e.g. "O-R" or OR',
+                    "cylinders",
+                    key,
+                )
             for p in pts:
                 if p not in known:
-                    raise self.error(f"no point {p} in the scene{_which_point(p, known)}: a "
-                                     "cylinder joins two points of the mechanism (a ground "
-                                     "point or a link's joint)", "cylinders", key)
+                    raise self.error(
+                        f"no point {p} in the scene{_which_point(p, known)}: a "
+                        "cylinder joins two points of the mechanism (a ground "
+                        "point or a link's joint)",
+                        "cylinders",
+                        key,
+                    )
             if frozenset(pts) in self.index:
-                raise self.error(f"{key} is also a rigid link in [links]: a cylinder changes "
-                                 "its length; remove one of them", "cylinders", key)
+                raise self.error(
+                    f"{key} is also a rigid link in [links]: a cylinder changes "
+                    "its length; remove one of them",
+                    "cylinders",
+                    key,
+                )
             if not isinstance(spec, dict) or set(spec) - {"stroke"}:
-                raise self.error("a cylinder is {} or { stroke = [closed, extended] }",
-                                 "cylinders", key)
+                raise self.error(
+                    "a cylinder is {} or { stroke = [closed, extended] }", "cylinders", key
+                )
             stroke = spec.get("stroke")
             if stroke is not None:
                 if not (isinstance(stroke, list) and len(stroke) == 2):
-                    raise self.error("stroke = [closed, extended]: its shortest and longest "
-                                     "pin-to-pin lengths", "cylinders", key)
+                    raise self.error(
+                        "stroke = [closed, extended]: its shortest and longest pin-to-pin lengths",
+                        "cylinders",
+                        key,
+                    )
                 lo, hi = (self.length(v, "cylinders", key) for v in stroke)
                 if not lo < hi:
-                    raise self.error(f"stroke {stroke}: the closed length must be shorter "
-                                     "than the extended one", "cylinders", key)
+                    raise self.error(
+                        f"stroke {stroke}: the closed length must be shorter than the extended one",
+                        "cylinders",
+                        key,
+                    )
                 stroke = (lo, hi)
             if any({c.barrel, c.rod} == set(pts) for c in out):
-                raise self.error("the same two points have a cylinder already", "cylinders",
-                                 key)
+                raise self.error("the same two points have a cylinder already", "cylinders", key)
             out.append(Cylinder(key, pts[0], pts[1], stroke))
         return out
 
@@ -388,12 +529,16 @@ class _Tables:
         out = {}
         for name, hint in self.table("assembly").items():
             if name not in known:
-                raise self.error(f"no point {name} in the scene{_which_point(name, known)}",
-                                 "assembly", name)
+                raise self.error(
+                    f"no point {name} in the scene{_which_point(name, known)}", "assembly", name
+                )
             if isinstance(hint, str):
                 if hint not in ("above", "below", "left", "right"):
-                    raise self.error(f"{hint!r}: use above, below, left, right or a rough "
-                                     "position [x, y]", "assembly", name)
+                    raise self.error(
+                        f"{hint!r}: use above, below, left, right or a rough position [x, y]",
+                        "assembly",
+                        name,
+                    )
                 out[name] = hint
             else:
                 out[name] = self.coords(hint, "assembly", name)
@@ -403,12 +548,16 @@ class _Tables:
         out = []
         for name, spec in self.table("pins").items():
             if name not in known:
-                raise self.error(f"no point {name} in the scene{_which_point(name, known)}",
-                                 "pins", name)
-            if not isinstance(spec, dict) or len(spec) != 1 or \
-                    next(iter(spec)) not in ("diameter", "radius"):
+                raise self.error(
+                    f"no point {name} in the scene{_which_point(name, known)}", "pins", name
+                )
+            if (
+                not isinstance(spec, dict)
+                or len(spec) != 1
+                or next(iter(spec)) not in ("diameter", "radius")
+            ):
                 raise self.error("a pin is { diameter = 30 } or { radius = 15 }", "pins", name)
-            (k, v), = spec.items()
+            ((k, v),) = spec.items()
             size = self.length(v, "pins", name)
             out.append(Pin(name, size / 2 if k == "diameter" else size, k))
         return out
@@ -417,9 +566,12 @@ class _Tables:
         out = []
         for name, spec in self.table("loads").items():
             if not isinstance(spec, dict):
-                raise self.error("a load is { force = \"2 kN\", direction = 0 }, { force = "
-                                 "[Fx, Fy] } or, on a link, { torque = \"20 N m cw\" }",
-                                 "loads", name)
+                raise self.error(
+                    'a load is { force = "2 kN", direction = 0 }, { force = '
+                    '[Fx, Fy] } or, on a link, { torque = "20 N m cw" }',
+                    "loads",
+                    name,
+                )
             allowed = ("force", "direction", "torque", "pressure", "bore", "rod", "back")
             for k in spec:
                 if k not in allowed:
@@ -429,36 +581,50 @@ class _Tables:
                 continue
             if "torque" in spec:
                 if "force" in spec or "direction" in spec:
-                    raise self.error("a torque acts on a link, a force at a point: give the "
-                                     "force under the name of the point it acts at",
-                                     "loads", name)
+                    raise self.error(
+                        "a torque acts on a link, a force at a point: give the "
+                        "force under the name of the point it acts at",
+                        "loads",
+                        name,
+                    )
                 if not self.index.get(frozenset(split_name(name))):
-                    raise self.error(f"a torque acts on a link; no link {name} in [links]",
-                                     "loads", name)
+                    raise self.error(
+                        f"a torque acts on a link; no link {name} in [links]", "loads", name
+                    )
                 t = self.qty(spec["torque"], "torque", "loads", name, need_sense=True).value
                 out.append(Load(self.index[frozenset(split_name(name))].key, torque=t))
                 continue
             if name not in known:
-                raise self.error(f"load on unknown point {name}{_which_point(name, known)}",
-                                 "loads", name)
+                raise self.error(
+                    f"load on unknown point {name}{_which_point(name, known)}", "loads", name
+                )
             f = spec.get("force")
             if f is None:
                 raise self.error("a load needs force", "loads", name)
             if isinstance(f, list):
                 if len(f) != 2 or "direction" in spec:
-                    raise self.error("force = [Fx, Fy] in N (no direction with a vector)",
-                                     "loads", name)
-                fx, fy = (self.qty(c, "force", "loads", name, default_unit="N").value
-                          for c in f)
+                    raise self.error(
+                        "force = [Fx, Fy] in N (no direction with a vector)", "loads", name
+                    )
+                fx, fy = (self.qty(c, "force", "loads", name, default_unit="N").value for c in f)
             else:
                 mag = self.qty(f, "force", "loads", name, default_unit="N").value
                 if "direction" not in spec:
-                    raise self.error("a force needs a direction (deg, ccw from +x)",
-                                     "loads", name)
-                book = self.book_angle(spec["direction"], "direction", "loads", name,
-                                       f"direction of the force at {name}")
-                ang = book.value if book is not None else self.qty(
-                    spec["direction"], "angle", "loads", name, default_unit="deg").value
+                    raise self.error("a force needs a direction (deg, ccw from +x)", "loads", name)
+                book = self.book_angle(
+                    spec["direction"],
+                    "direction",
+                    "loads",
+                    name,
+                    f"direction of the force at {name}",
+                )
+                ang = (
+                    book.value
+                    if book is not None
+                    else self.qty(
+                        spec["direction"], "angle", "loads", name, default_unit="deg"
+                    ).value
+                )
                 ux, uy = _unit_at(ang)
                 fx, fy = mag * ux, mag * uy
             out.append(Load(name, force=(fx, fy)))
@@ -472,16 +638,20 @@ class _Tables:
         circle less the rod's, pushing the other way (``pressure`` then acts on the whole
         bore, the cover side)."""
         if name not in self.slider_points:
-            raise self.error(f"a gas pressure acts on a piston: {name} is no slider",
-                             "loads", name)
+            raise self.error(f"a gas pressure acts on a piston: {name} is no slider", "loads", name)
         for k in ("pressure", "bore"):
             if k not in spec:
-                raise self.error(f"a gas force needs pressure and bore (and direction, the "
-                                 f"way the gas pushes the piston, deg ccw from +x, when not "
-                                 f"towards the crank): no {k}", "loads", name)
+                raise self.error(
+                    f"a gas force needs pressure and bore (and direction, the "
+                    f"way the gas pushes the piston, deg ccw from +x, when not "
+                    f"towards the crank): no {k}",
+                    "loads",
+                    name,
+                )
         if "force" in spec or "torque" in spec:
-            raise self.error("give the gas force by pressure and bore, or a force, not both",
-                             "loads", name)
+            raise self.error(
+                "give the gas force by pressure and bore, or a force, not both", "loads", name
+            )
         p = self.qty(spec["pressure"], "pressure", "loads", name).value
         bore = self.length(spec["bore"], "loads", name)
         area = math.pi / 4 * bore * bore
@@ -490,8 +660,12 @@ class _Tables:
         if "rod" in spec:
             rod = self.length(spec["rod"], "loads", name)
             if rod >= bore:
-                raise self.error(f"the piston rod ({self._words(rod)}) must be thinner than "
-                                 f"the bore ({self._words(bore)})", "loads", name)
+                raise self.error(
+                    f"the piston rod ({self._words(rod)}) must be thinner than "
+                    f"the bore ({self._words(bore)})",
+                    "loads",
+                    name,
+                )
             rod_area = math.pi / 4 * rod * rod
             if "back" not in spec:
                 area -= rod_area
@@ -500,15 +674,19 @@ class _Tables:
         if "back" in spec:  # double-acting: the cover side's pressure less the crank side's
             back = self.qty(spec["back"], "pressure", "loads", name).value
             f -= back * (area - rod_area)
-            words += (f" (the cover side) against {spec['back']} on the crank side"
-                      + (f" less a {self._words(math.sqrt(rod_area * 4 / math.pi))} rod"
-                         if rod_area else ""))
+            words += f" (the cover side) against {spec['back']} on the crank side" + (
+                f" less a {self._words(math.sqrt(rod_area * 4 / math.pi))} rod" if rod_area else ""
+            )
             p, area = f / area, area  # the net pressure on the whole bore
         if "direction" not in spec:
             return Load(name, force=None, gas=(p, area, words), toward=f)
-        book = self.book_angle(spec["direction"], "direction", "loads", name,
-                               f"direction of the gas force at {name}")
-        ang = book.value if book is not None else self.qty(
-            spec["direction"], "angle", "loads", name, default_unit="deg").value
+        book = self.book_angle(
+            spec["direction"], "direction", "loads", name, f"direction of the gas force at {name}"
+        )
+        ang = (
+            book.value
+            if book is not None
+            else self.qty(spec["direction"], "angle", "loads", name, default_unit="deg").value
+        )
         ux, uy = _unit_at(ang)
         return Load(name, force=(f * ux, f * uy), gas=(p, area, words))

@@ -28,7 +28,7 @@ from __future__ import annotations
 __all__ = ["apex", "ROUNDING"]
 
 #: the rounding of a length given in the scene's unit and held in metres, relative
-ROUNDING = 2.0 ** -52
+ROUNDING = 2.0**-52
 
 
 def apex(d1: float, d2: float, e: float, rounding: float = ROUNDING):
@@ -42,7 +42,7 @@ def apex(d1: float, d2: float, e: float, rounding: float = ROUNDING):
     prod = (a + (b + c)) * (c - (a - b)) * (c + (a - b)) * (a + (b - c))
     short = 0.0
     if prod > 0:
-        h = prod ** 0.5 / (2 * e)
+        h = prod**0.5 / (2 * e)
     else:
         h = 0.0
         short = -prod / (4 * e * e)
@@ -51,6 +51,6 @@ def apex(d1: float, d2: float, e: float, rounding: float = ROUNDING):
     dF = 2 * rounding * (d1 * d1 * far + abs(along) * d2 * d2 + abs(along) * far * e) / e
     dF += 8 * ROUNDING * h * h  # the formula's own roundings
     dF += short
-    dh = dF ** 0.5 if h == 0.0 else min(dF ** 0.5, dF / h)
+    dh = dF**0.5 if h == 0.0 else min(dF**0.5, dF / h)
     d_along = rounding * (d1 * d1 + d2 * d2 + far * e) / e + 4 * ROUNDING * abs(along)
     return along, h, dh + d_along

@@ -91,8 +91,11 @@ class _Variants:
                 continue
             varied.extend(self._varied(key, value, inp, ground, sliders, loads))
         if not varied:
-            raise self.error("[variants] varies nothing: give a range or a list, e.g. "
-                             "BC = { from = 60, to = 75, step = 1 }", "variants")
+            raise self.error(
+                "[variants] varies nothing: give a range or a list, e.g. "
+                "BC = { from = 60, to = 75, step = 1 }",
+                "variants",
+            )
         self._one_key_each(varied)
         return Variation(tuple(varied), min_condition, min_text)
 
@@ -103,21 +106,31 @@ class _Variants:
         for v in varied:
             what = v.path[:2] if v.path[0] == "pins" else v.path
             if what in seen:
-                raise self.error(f"{seen[what]} and {v.key} both vary {v.label.split(' of ')[-1]}"
-                                 ": vary it by one key", "variants", v.key.split(".")[0])
+                raise self.error(
+                    f"{seen[what]} and {v.key} both vary {v.label.split(' of ')[-1]}"
+                    ": vary it by one key",
+                    "variants",
+                    v.key.split(".")[0],
+                )
             seen[what] = v.key
 
     def _min_condition(self, value):
         if isinstance(value, (int, float)) and not isinstance(value, bool):
             if not 0 < value < 1:
-                raise self.error(f"min_condition = {value!r}: a sine between 0 and 1 (0.2588 "
-                                 "for 15 deg), or an angle such as \"15 deg\"", "variants",
-                                 "min_condition")
+                raise self.error(
+                    f"min_condition = {value!r}: a sine between 0 and 1 (0.2588 "
+                    'for 15 deg), or an angle such as "15 deg"',
+                    "variants",
+                    "min_condition",
+                )
             return float(value), f"{value:g}"
         ang = self.qty(value, "angle", "variants", "min_condition", default_unit="deg").value
         if not 0 < ang < math.pi / 2:
-            raise self.error(f"min_condition = {value!r}: an angle between 0 and 90 deg",
-                             "variants", "min_condition")
+            raise self.error(
+                f"min_condition = {value!r}: an angle between 0 and 90 deg",
+                "variants",
+                "min_condition",
+            )
         return math.sin(ang), f"sin {math.degrees(ang):g} deg"
 
     # ----- one key
@@ -129,19 +142,37 @@ class _Variants:
         if len(pts) == 2:
             link = self.index.get(frozenset(pts))
             if link is None:
-                raise self.error(f"no link {key} in [links] to vary"
-                                 f"{self._choices(key)}", "variants", key)
+                raise self.error(
+                    f"no link {key} in [links] to vary{self._choices(key)}", "variants", key
+                )
             unit = self.unit
-            return [self._values(key, value, "length", unit, ("links", link.key),
-                                 f"link {link.key}", positive=True)]
+            return [
+                self._values(
+                    key,
+                    value,
+                    "length",
+                    unit,
+                    ("links", link.key),
+                    f"link {link.key}",
+                    positive=True,
+                )
+            ]
         if len(pts) != 1:
-            raise self.error(f"unknown key{self._choices(key)}: [variants] names a link "
-                             "(BC), angle, speed, acceleration, a point with what varies "
-                             "(D = { x = ... }), or min_condition", "variants", key)
+            raise self.error(
+                f"unknown key{self._choices(key)}: [variants] names a link "
+                "(BC), angle, speed, acceleration, a point with what varies "
+                "(D = { x = ... }), or min_condition",
+                "variants",
+                key,
+            )
         if not isinstance(value, dict) or not value:
-            raise self.error(f"a point's variation says what varies: {key} = {{ x = {{ from "
-                             "= 95, to = 105, step = 1 }} }} (x, y, along, distances, "
-                             "diameter, radius, force)", "variants", key)
+            raise self.error(
+                f"a point's variation says what varies: {key} = {{ x = {{ from "
+                "= 95, to = 105, step = 1 }} }} (x, y, along, distances, "
+                "diameter, radius, force)",
+                "variants",
+                key,
+            )
         out = []
         for sub, v in value.items():
             out.extend(self._point(key, sub, v, ground, sliders, inp, raw))
@@ -149,28 +180,47 @@ class _Variants:
 
     def _choices(self, key) -> str:
         from .tables import _suggest
-        names = [lk.key for lk in self.index.values()] + list(_INPUT_VARIED) + \
-            list(_SETTINGS) + sorted(self.known)
+
+        names = (
+            [lk.key for lk in self.index.values()]
+            + list(_INPUT_VARIED)
+            + list(_SETTINGS)
+            + sorted(self.known)
+        )
         return _suggest(key, names)
 
     def _input(self, key, value, inp):
         if inp.block is not None:  # no crank: its place and rates are s_A, vs_A, as_A
-            raise self.error(f"{key}: the scene is driven by block {inp.block}, which has no "
-                             f"crank {'angle' if key == 'angle' else key} to vary (vary the "
-                             "links, points and paths)", "variants", key)
+            raise self.error(
+                f"{key}: the scene is driven by block {inp.block}, which has no "
+                f"crank {'angle' if key == 'angle' else key} to vary (vary the "
+                "links, points and paths)",
+                "variants",
+                key,
+            )
         if key == "angle":
             return self._values(key, value, "angle", "deg", ("input", "angle"), "crank angle")
         kind = "angular_velocity" if key == "speed" else "angular_acceleration"
         base = inp.omega if key == "speed" else inp.alpha
         if base is None:  # the motion is given on another quantity: the crank's is found
-            raise self.error(f"{key}: the scene gives the motion on {inp.given.key}, and the "
-                             f"crank's {'speed' if key == 'speed' else 'acceleration'} is "
-                             "found from it: there is no crank speed to vary",
-                             "variants", key)
+            raise self.error(
+                f"{key}: the scene gives the motion on {inp.given.key}, and the "
+                f"crank's {'speed' if key == 'speed' else 'acceleration'} is "
+                "found from it: there is no crank speed to vary",
+                "variants",
+                key,
+            )
         sense = "ccw" if base > 0 else ("cw" if base < 0 else None)
-        return self._values(key, value, kind, None, ("input", key),
-                            f"crank {'speed' if key == 'speed' else 'acceleration'}",
-                            sense=sense, nonzero=key == "speed")
+        return self._values(
+            key,
+            value,
+            kind,
+            None,
+            ("input", key),
+            f"crank {'speed' if key == 'speed' else 'acceleration'}",
+            sense=sense,
+            nonzero=key == "speed",
+        )
 
     def _point(self, name, sub, value, ground, sliders, inp, raw):
         key = f"{name}.{sub}"
@@ -179,77 +229,170 @@ class _Variants:
         if sub in ("x", "y"):
             i = 0 if sub == "x" else 1
             if name in ground:
-                return [self._values(key, value, "length", self.unit, ("ground", name, i),
-                                     f"{sub} of ground point {name}", positive=False,
-                                     table_key=name)]
+                return [
+                    self._values(
+                        key,
+                        value,
+                        "length",
+                        self.unit,
+                        ("ground", name, i),
+                        f"{sub} of ground point {name}",
+                        positive=False,
+                        table_key=name,
+                    )
+                ]
             if slider is not None and hasattr(slider, "u"):
                 if abs(slider.u[1 - i]) < 1e-12:  # along the path itself: nothing moves
-                    raise self.error(f"the path of {name} runs along {sub}: moving it along "
-                                     f"{sub} changes nothing (vary its "
-                                     f"{'y' if sub == 'x' else 'x'})", "variants", name)
+                    raise self.error(
+                        f"the path of {name} runs along {sub}: moving it along "
+                        f"{sub} changes nothing (vary its "
+                        f"{'y' if sub == 'x' else 'x'})",
+                        "variants",
+                        name,
+                    )
                 through = raw["sliders"][name].get("through")
                 if isinstance(through, str):
-                    raise self.error(f"the path of {name} passes through ground point "
-                                     f"{through}: vary {through} = {{ {sub} = ... }}",
-                                     "variants", name)
+                    raise self.error(
+                        f"the path of {name} passes through ground point "
+                        f"{through}: vary {through} = {{ {sub} = ... }}",
+                        "variants",
+                        name,
+                    )
                 setup = ()
                 if through is None:  # through the crank's pivot (a block driver: the first
                     # ground point), as written in [ground]
                     origin = inp.pivot if inp.pivot is not None else next(iter(raw["ground"]))
-                    setup = ((("sliders", name, "through"),
-                              list(raw["ground"][origin])),)
-                return [self._values(key, value, "length", self.unit,
-                                     ("sliders", name, "through", i),
-                                     f"{sub} of the path of slider {name}", setup=setup,
-                                     positive=False, table_key=name)]
-            raise self.error(f"{name} is not a ground point or a slider on a fixed path: "
-                             f"its {sub} is not stated", "variants", name)
+                    setup = ((("sliders", name, "through"), list(raw["ground"][origin])),)
+                return [
+                    self._values(
+                        key,
+                        value,
+                        "length",
+                        self.unit,
+                        ("sliders", name, "through", i),
+                        f"{sub} of the path of slider {name}",
+                        setup=setup,
+                        positive=False,
+                        table_key=name,
+                    )
+                ]
+            raise self.error(
+                f"{name} is not a ground point or a slider on a fixed path: "
+                f"its {sub} is not stated",
+                "variants",
+                name,
+            )
         spec = raw.get("points", {}).get(name)
         if sub == "along":
             if not isinstance(spec, dict) or "along" not in spec:
                 raise self.error(f"{name} is not a point carried with along", "variants", name)
-            return [self._values(key, value, "length", self.unit, ("points", name, "along"),
-                                 f"{name} along {spec['on']}", positive=False,
-                                 table_key=name)]
+            return [
+                self._values(
+                    key,
+                    value,
+                    "length",
+                    self.unit,
+                    ("points", name, "along"),
+                    f"{name} along {spec['on']}",
+                    positive=False,
+                    table_key=name,
+                )
+            ]
         if sub == "distances":
             if not isinstance(spec, dict) or not isinstance(spec.get("distances"), dict):
-                raise self.error(f"{name} is not a point carried with distances", "variants",
-                                 name)
+                raise self.error(f"{name} is not a point carried with distances", "variants", name)
             if not isinstance(value, dict) or not value:
-                raise self.error(f"{name}.distances names the distances that vary, e.g. "
-                                 "distances = { B = [40, 45] }", "variants", name)
+                raise self.error(
+                    f"{name}.distances names the distances that vary, e.g. "
+                    "distances = { B = [40, 45] }",
+                    "variants",
+                    name,
+                )
             out = []
             for r, v in value.items():
                 if r not in spec["distances"]:
-                    raise self.error(f"{name} is not given a distance from {r} (its distances "
-                                     f"are from {', '.join(spec['distances'])})", "variants",
-                                     name)
-                out.append(self._values(f"{key}.{r}", v, "length", self.unit,
-                                        ("points", name, "distances", r),
-                                        f"{r}{name}", table_key=name))
+                    raise self.error(
+                        f"{name} is not given a distance from {r} (its distances "
+                        f"are from {', '.join(spec['distances'])})",
+                        "variants",
+                        name,
+                    )
+                out.append(
+                    self._values(
+                        f"{key}.{r}",
+                        v,
+                        "length",
+                        self.unit,
+                        ("points", name, "distances", r),
+                        f"{r}{name}",
+                        table_key=name,
+                    )
+                )
             return out
         if sub in ("diameter", "radius"):
             if name not in raw.get("pins", {}):
                 raise self.error(f"no pin {name} in [pins] to vary", "variants", name)
-            return [self._values(key, value, "length", self.unit, ("pins", name, sub),
-                                 f"{sub} of pin {name}", setup=((("pins", name), {}),),
-                                 table_key=name)]
+            return [
+                self._values(
+                    key,
+                    value,
+                    "length",
+                    self.unit,
+                    ("pins", name, sub),
+                    f"{sub} of pin {name}",
+                    setup=((("pins", name), {}),),
+                    table_key=name,
+                )
+            ]
         if sub == "force":
             spec = raw.get("loads", {}).get(name)
-            if not isinstance(spec, dict) or isinstance(spec.get("force"), list) or \
-                    "force" not in spec:
-                raise self.error(f"no force of a given size at {name} in [loads] to vary "
-                                 "(a force [Fx, Fy] cannot vary by its size)", "variants", name)
-            return [self._values(key, value, "force", "N", ("loads", name, "force"),
-                                 f"force at {name}", table_key=name)]
+            if (
+                not isinstance(spec, dict)
+                or isinstance(spec.get("force"), list)
+                or "force" not in spec
+            ):
+                raise self.error(
+                    f"no force of a given size at {name} in [loads] to vary "
+                    "(a force [Fx, Fy] cannot vary by its size)",
+                    "variants",
+                    name,
+                )
+            return [
+                self._values(
+                    key,
+                    value,
+                    "force",
+                    "N",
+                    ("loads", name, "force"),
+                    f"force at {name}",
+                    table_key=name,
+                )
+            ]
         from .tables import _suggest
+
         subs = ("x", "y", "along", "distances", "diameter", "radius", "force")
-        raise self.error(f"unknown key '{sub}'{_suggest(sub, subs)}: a point varies by "
-                         + ", ".join(subs), "variants", name)
+        raise self.error(
+            f"unknown key '{sub}'{_suggest(sub, subs)}: a point varies by " + ", ".join(subs),
+            "variants",
+            name,
+        )
 
     # ----- the values of one key
-    def _values(self, key, value, kind, unit, path, label, *, positive=True, sense=None,
-                nonzero=False, setup=(), table_key=None):
+    def _values(
+        self,
+        key,
+        value,
+        kind,
+        unit,
+        path,
+        label,
+        *,
+        positive=True,
+        sense=None,
+        nonzero=False,
+        setup=(),
+        table_key=None,
+    ):
         where = table_key or key
         if isinstance(value, dict):
             items = self._range(key, value, unit, where)
@@ -257,28 +400,49 @@ class _Variants:
             if not value:
                 raise self.error(f"{key}: the list of values is empty", "variants", where)
             if len(value) > MAX_VALUES:
-                raise self.error(f"{key}: the list holds {len(value)} values, more than "
-                                 f"{MAX_VALUES}", "variants", where)
+                raise self.error(
+                    f"{key}: the list holds {len(value)} values, more than {MAX_VALUES}",
+                    "variants",
+                    where,
+                )
             items = list(value)
         else:
-            raise self.error(f"{key} = {value!r}: give a range {{ from = 60, to = 75, step = "
-                             "1 }} or a list [60, 65, 70]", "variants", where)
+            raise self.error(
+                f"{key} = {value!r}: give a range {{ from = 60, to = 75, step = "
+                "1 }} or a list [60, 65, 70]",
+                "variants",
+                where,
+            )
         values, shown, si, seen = [], [], [], set()
         for item in items:
             if isinstance(item, bool) or not isinstance(item, (int, float, str)):
-                raise self.error(f"{key}: {item!r} is not a value (a number or a string such "
-                                 "as \"60 mm\")", "variants", where)
-            if sense is not None and isinstance(item, str) and \
-                    item.split()[-1:] and item.split()[-1].lower() not in \
-                    ("cw", "ccw", "clockwise", "anticlockwise", "acw", "counterclockwise"):
+                raise self.error(
+                    f'{key}: {item!r} is not a value (a number or a string such as "60 mm")',
+                    "variants",
+                    where,
+                )
+            if (
+                sense is not None
+                and isinstance(item, str)
+                and item.split()[-1:]
+                and item.split()[-1].lower()
+                not in ("cw", "ccw", "clockwise", "anticlockwise", "acw", "counterclockwise")
+            ):
                 item = f"{item} {sense}"  # the base scene's sense
-            q = self.qty(item, kind, "variants", where, default_unit=unit,
-                         need_sense=kind.startswith("angular"))
+            q = self.qty(
+                item,
+                kind,
+                "variants",
+                where,
+                default_unit=unit,
+                need_sense=kind.startswith("angular"),
+            )
             if positive and kind == "length" and q.value <= 0:
                 raise self.error(f"{key}: {item!r} must be positive", "variants", where)
             if nonzero and q.value == 0:
-                raise self.error(f"{key}: a crank speed of {item!r} moves nothing",
-                                 "variants", where)
+                raise self.error(
+                    f"{key}: a crank speed of {item!r} moves nothing", "variants", where
+                )
             if kind == "length":
                 self.length(item, "variants", where, positive=positive)
             same = q.value
@@ -299,35 +463,52 @@ class _Variants:
         for k in spec:
             if k not in _RANGE_KEYS:
                 from .tables import _suggest
-                raise self.error(f"{key}: unknown key '{k}'{_suggest(k, _RANGE_KEYS)}; a range "
-                                 "is { from = 60, to = 75, step = 1 } (optional unit)",
-                                 "variants", where)
+
+                raise self.error(
+                    f"{key}: unknown key '{k}'{_suggest(k, _RANGE_KEYS)}; a range "
+                    "is { from = 60, to = 75, step = 1 } (optional unit)",
+                    "variants",
+                    where,
+                )
         for k in ("from", "to", "step"):
             v = spec.get(k)
             if v is None:
-                raise self.error(f"{key}: the range has no {k} (a range is {{ from = 60, to = "
-                                 "75, step = 1 }})", "variants", where)
+                raise self.error(
+                    f"{key}: the range has no {k} (a range is {{ from = 60, to = "
+                    "75, step = 1 }})",
+                    "variants",
+                    where,
+                )
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
-                raise self.error(f"{key}: {k} = {v!r} must be a number (give the unit as "
-                                 "unit = \"...\")", "variants", where)
+                raise self.error(
+                    f'{key}: {k} = {v!r} must be a number (give the unit as unit = "...")',
+                    "variants",
+                    where,
+                )
         a, b, s = spec["from"], spec["to"], spec["step"]
         u = spec.get("unit", unit)
         if "unit" in spec and not isinstance(u, str):
-            raise self.error(f"{key}: unit = {u!r} must be a string such as \"mm\" or "
-                             "\"rpm\"", "variants", where)
+            raise self.error(
+                f'{key}: unit = {u!r} must be a string such as "mm" or "rpm"', "variants", where
+            )
         if u is None:
-            raise self.error(f"{key}: the range needs its unit, e.g. unit = \"rpm\"",
-                             "variants", where)
+            raise self.error(
+                f'{key}: the range needs its unit, e.g. unit = "rpm"', "variants", where
+            )
         if s <= 0:
             raise self.error(f"{key}: step = {s!r} must be positive", "variants", where)
         if b < a:
-            raise self.error(f"{key}: the range is empty (from {a!r} is above to {b!r})",
-                             "variants", where)
+            raise self.error(
+                f"{key}: the range is empty (from {a!r} is above to {b!r})", "variants", where
+            )
         span = (b - a) / s
         n = int(math.floor(span + 1e-9)) + 1 if span < 10 * MAX_VALUES else MAX_VALUES + 1
         if n > MAX_VALUES:
-            raise self.error(f"{key}: the range holds more than {MAX_VALUES} values; take a "
-                             "larger step", "variants", where)
+            raise self.error(
+                f"{key}: the range holds more than {MAX_VALUES} values; take a larger step",
+                "variants",
+                where,
+            )
         vals = [_g(a + i * s) for i in range(n)]
         if u == unit:
             return vals
@@ -339,17 +520,20 @@ class _Variants:
         if spec is None:
             return None
         if not isinstance(spec, dict):
-            raise SceneError("a scene's variant is a table: [variant] id = \"07\"",
-                             file=self.file, key="variant", line=self.top_line("variant"))
+            raise SceneError(
+                'a scene\'s variant is a table: [variant] id = "07"',
+                file=self.file,
+                key="variant",
+                line=self.top_line("variant"),
+            )
         for k in spec:
             if k not in ("id", "of", "seed"):
-                raise self.error(f"unknown key '{k}': [variant] has id, of and seed",
-                                 "variant", k)
+                raise self.error(f"unknown key '{k}': [variant] has id, of and seed", "variant", k)
         vid = spec.get("id")
         if isinstance(vid, int) and not isinstance(vid, bool):
             vid = f"{vid:02d}"
         if not isinstance(vid, str) or not vid.strip():
-            raise self.error("[variant] needs its id, e.g. id = \"07\"", "variant", "id")
+            raise self.error('[variant] needs its id, e.g. id = "07"', "variant", "id")
         of = spec.get("of", "")
         if not isinstance(of, str):
             raise self.error("of is the base scene's title (a string)", "variant", "of")

@@ -40,41 +40,70 @@ def wheel_input(rd, spec, ground):
     rolling = getattr(rd, "rolling_pairs", ()) or ()
     pr = next((p for p in rolling if len(pts) == 2 and {p.centre, p.rim} == set(pts)), None)
     if pr is None:
-        raise rd.error(f"wheel = {name!r} names no wheel of [rolling] (the driving wheel is "
-                       "written as its link, centre first, e.g. wheel = \"CP\" with CP = { on "
-                       "= \"horizontal\", through = [0, 0] } in [rolling])", "input", "wheel")
+        raise rd.error(
+            f"wheel = {name!r} names no wheel of [rolling] (the driving wheel is "
+            'written as its link, centre first, e.g. wheel = "CP" with CP = { on '
+            '= "horizontal", through = [0, 0] } in [rolling])',
+            "input",
+            "wheel",
+        )
     if pr.on != "line":
-        raise rd.error(f"the wheel {pr.wheel} rolls on {pr.label}, not on a fixed line: a wheel "
-                       "drives alone only rolling on a ground line (on a circle or a gear, "
-                       "make its arm or the gear the crank)", "input", "wheel")
+        raise rd.error(
+            f"the wheel {pr.wheel} rolls on {pr.label}, not on a fixed line: a wheel "
+            "drives alone only rolling on a ground line (on a circle or a gear, "
+            "make its arm or the gear the crank)",
+            "input",
+            "wheel",
+        )
     C, W = pr.centre, pr.wheel
     if C in ground:
-        raise rd.error(f"the wheel {W}'s centre {C} is a ground point: a wheel on a line rolls, "
-                       "its centre moves", "input", "wheel")
+        raise rd.error(
+            f"the wheel {W}'s centre {C} is a ground point: a wheel on a line rolls, "
+            "its centre moves",
+            "input",
+            "wheel",
+        )
     if C in rd.slider_points:
-        raise rd.error(f"the wheel {W}'s centre {C} is also a block of [sliders]: its path is "
-                       "set by the wheel rolling on its line (remove it from [sliders])",
-                       "input", "wheel")
+        raise rd.error(
+            f"the wheel {W}'s centre {C} is also a block of [sliders]: its path is "
+            "set by the wheel rolling on its line (remove it from [sliders])",
+            "input",
+            "wheel",
+        )
     w_key, a_key, s_key = f"omega_{W}", f"alpha_{W}", f"s_{C}"
     v_key, as_key = f"vs_{C}", f"as_{C}"
     allowed = ("wheel", w_key, a_key, s_key, C, "travel", v_key, as_key)
     for k in spec:
         if k not in allowed:
-            why = ("the wheel drives the mechanism: there is no crank, so no crank, angle, speed "
-                   "or acceleration (a wheel that a crank also drives is over-determined)"
-                   if k in INPUT_KEYS or k == "second" else "unknown key")
-            raise rd.error(f"{why}; with wheel = \"{W}\", [input] takes {w_key} (its angular "
-                           f"velocity) or {v_key} (its centre's velocity along the ground), "
-                           f"{a_key} or {as_key} (their rates), {C} = [x, y] or {s_key} (its "
-                           "centre's place) and travel = [from, to]", "input", k)
+            why = (
+                "the wheel drives the mechanism: there is no crank, so no crank, angle, speed "
+                "or acceleration (a wheel that a crank also drives is over-determined)"
+                if k in INPUT_KEYS or k == "second"
+                else "unknown key"
+            )
+            raise rd.error(
+                f'{why}; with wheel = "{W}", [input] takes {w_key} (its angular '
+                f"velocity) or {v_key} (its centre's velocity along the ground), "
+                f"{a_key} or {as_key} (their rates), {C} = [x, y] or {s_key} (its "
+                "centre's place) and travel = [from, to]",
+                "input",
+                k,
+            )
     for one, other in ((w_key, v_key), (a_key, as_key)):
         if one in spec and other in spec:
-            raise rd.error(f"[input] gives both {one} and {other}: one only (rolling without "
-                           f"slip, the centre moves at omega r)", "input", other)
+            raise rd.error(
+                f"[input] gives both {one} and {other}: one only (rolling without "
+                f"slip, the centre moves at omega r)",
+                "input",
+                other,
+            )
     if w_key not in spec and v_key not in spec:
-        raise rd.error(f"[input] has no {w_key}: add the wheel's angular velocity, e.g. "
-                       f"{w_key} = \"4 rad/s cw\" (or its centre's, {v_key} = \"2 m/s "
-                       "right\")", "input")
+        raise rd.error(
+            f"[input] has no {w_key}: add the wheel's angular velocity, e.g. "
+            f'{w_key} = "4 rad/s cw" (or its centre\'s, {v_key} = "2 m/s '
+            'right")',
+            "input",
+        )
     path = centre_path(pr, C)
     (qx, qy), (ux, uy), (mx, my), r = path.through, path.u, pr.m, pr.radius
     along = -my * ux + mx * uy  # t . u, t = perp(m): +1 or -1
@@ -84,8 +113,11 @@ def wheel_input(rd, spec, ground):
     else:
         omega = rd.qty(spec[w_key], "angular_velocity", "input", w_key, need_sense=True).value
     if omega == 0:
-        raise rd.error(f"{v_key if v_key in spec else w_key} is zero: nothing moves", "input",
-                       v_key if v_key in spec else w_key)
+        raise rd.error(
+            f"{v_key if v_key in spec else w_key} is zero: nothing moves",
+            "input",
+            v_key if v_key in spec else w_key,
+        )
     raw_a = spec.get(a_key, spec.get(as_key, 0))
     if isinstance(raw_a, (int, float)) and not isinstance(raw_a, bool) and raw_a == 0:
         alpha = 0.0
@@ -99,10 +131,13 @@ def wheel_input(rd, spec, ground):
         if alpha is None:
             alpha = rd.qty(raw_a, "angular_acceleration", "input", a_key, need_sense=True).value
     if (s_key in spec) == (C in spec):
-        raise rd.error(f"[input] gives the wheel's place {'twice' if C in spec else 'not at all'}:"
-                       f" {C} = [x, y] (its centre) or {s_key} = 300 (the centre's place along "
-                       "the line from the foot of its through point), one only", "input",
-                       s_key if s_key in spec else None)
+        raise rd.error(
+            f"[input] gives the wheel's place {'twice' if C in spec else 'not at all'}:"
+            f" {C} = [x, y] (its centre) or {s_key} = 300 (the centre's place along "
+            "the line from the foot of its through point), one only",
+            "input",
+            s_key if s_key in spec else None,
+        )
     if s_key in spec:
         s = rd.length(spec[s_key], "input", s_key, positive=False)
     else:
@@ -110,20 +145,32 @@ def wheel_input(rd, spec, ground):
         s = (x - qx) * ux + (y - qy) * uy
         off = -(x - qx) * uy + (y - qy) * ux
         if abs(off) > 1e-9 * max(abs(x), abs(y), abs(s), rd.scale(), r):
-            raise rd.error(f"{C} = {spec[C]} is {abs(off) / rd.scale():.6g} {rd.unit} off the "
-                           f"path of the wheel's centre ({r / rd.scale():.6g} {rd.unit} from "
-                           f"its ground line, on its side): give a point of it", "input", C)
+            raise rd.error(
+                f"{C} = {spec[C]} is {abs(off) / rd.scale():.6g} {rd.unit} off the "
+                f"path of the wheel's centre ({r / rd.scale():.6g} {rd.unit} from "
+                f"its ground line, on its side): give a point of it",
+                "input",
+                C,
+            )
     if "travel" in spec:
         raw = spec["travel"]
         if not isinstance(raw, list) or len(raw) != 2:
-            raise rd.error("travel is [from, to]: the places of the wheel's centre along its "
-                           "line (as s), e.g. travel = [0, 1885]", "input", "travel")
+            raise rd.error(
+                "travel is [from, to]: the places of the wheel's centre along its "
+                "line (as s), e.g. travel = [0, 1885]",
+                "input",
+                "travel",
+            )
         a, b = (rd.length(v, "input", "travel", positive=False) for v in raw)
         if not a < b:
             raise rd.error(f"travel = {raw}: from must be less than to", "input", "travel")
         if not a <= s <= b:
-            raise rd.error(f"the wheel's centre at s = {s / rd.scale():.6g} {rd.unit} is "
-                           f"outside its travel {raw}", "input", "travel")
+            raise rd.error(
+                f"the wheel's centre at s = {s / rd.scale():.6g} {rd.unit} is "
+                f"outside its travel {raw}",
+                "input",
+                "travel",
+            )
         stroke = (a, b)
     else:  # one turn of the wheel, the way it rolls
         turn = 2.0 * math.pi * r
@@ -132,6 +179,16 @@ def wheel_input(rd, spec, ground):
     rd.driving_block = C  # (a torque answer is refused: the driver is given no crank)
     rd.driving_wheel = W  # (but with masses or gravity: the driver's torque on the wheel)
     rd.slider_points[C] = path
-    return Input(None, None, C, s, omega * r * along, alpha * r * along,
-                 str(spec.get(w_key, spec.get(v_key))).strip(), block=C, stroke=stroke, wheel=W,
-                 wheel_given=tuple(k for k in (v_key, as_key) if k in spec))
+    return Input(
+        None,
+        None,
+        C,
+        s,
+        omega * r * along,
+        alpha * r * along,
+        str(spec.get(w_key, spec.get(v_key))).strip(),
+        block=C,
+        stroke=stroke,
+        wheel=W,
+        wheel_given=tuple(k for k in (v_key, as_key) if k in spec),
+    )

@@ -62,8 +62,10 @@ JSON_BODIES = 12
 #: two lines closer to parallel than this (sine of their angle) meet at infinity
 PARALLEL = 1e-12
 #: what a student can do where a centre is too far to locate
-_POLYGONS_STAND = ("; the velocity and acceleration polygons are not affected "
-                   "(polygon-method steps), or set the crank a few degrees away")
+_POLYGONS_STAND = (
+    "; the velocity and acceleration polygons are not affected "
+    "(polygon-method steps), or set the crank a few degrees away"
+)
 
 
 @dataclass(frozen=True)
@@ -139,8 +141,11 @@ class Centres:
         if isinstance(body, int):
             return body
         names = [b.lower() for b in self.bodies]
-        key = self.sol.scene.link(body).key.lower() if self.sol.scene.has_link(body) else \
-            str(body).lower()
+        key = (
+            self.sol.scene.link(body).key.lower()
+            if self.sol.scene.has_link(body)
+            else str(body).lower()
+        )
         return names.index(key) + 1
 
     def velocity(self, point, body=None):
@@ -210,22 +215,25 @@ def _primary(sol, names):
         if isinstance(s, FixedPath):
             d = _unit(-s.u[1], s.u[0])
             key = (1, blk)
-            how = (f"block {s.key} slides on the {guide_words(s.label)}: at infinity, "
-                   "perpendicular to the path")
+            how = (
+                f"block {s.key} slides on the {guide_words(s.label)}: at infinity, "
+                "perpendicular to the path"
+            )
         elif isinstance(s, GuideSlider):
             (x1, y1), (x2, y2) = sol.P[s.first], sol.P[s.second]
             ux, uy = _unit(x2 - x1, y2 - y1)
             d = (-uy, ux)
             g = num(sc.link(s.guide).key)
             key = (min(g, blk), max(g, blk))
-            how = (f"block {s.key} slides along {s.guide}: at infinity, perpendicular "
-                   f"to {s.guide}")
+            how = f"block {s.key} slides along {s.guide}: at infinity, perpendicular to {s.guide}"
         elif isinstance(s, YokeSlot):  # a block in the slot of a translating yoke
             d = _unit(-s.direction[1], s.direction[0])
             g = num(f"block {s.yoke}")
             key = (min(g, blk), max(g, blk))
-            how = (f"block {s.point} slides in the {guide_words(s.label, 'slot', f'yoke {s.yoke}')}: at "
-                   "infinity, perpendicular to the slot")
+            how = (
+                f"block {s.point} slides in the {guide_words(s.label, 'slot', f'yoke {s.yoke}')}: at "
+                "infinity, perpendicular to the slot"
+            )
         else:  # pragma: no cover
             continue
         found[key] = Centre(*key, None, d, how)
@@ -236,8 +244,12 @@ def _primary(sol, names):
         if a is None or b is None:
             continue
         key = (min(a, b), max(a, b))
-        found[key] = Centre(*key, None, (-uy, ux), f"the rod of {c.key} slides in its barrel: "
-                            "at infinity, perpendicular to the cylinder")
+        found[key] = Centre(
+            *key,
+            None,
+            (-uy, ux),
+            f"the rod of {c.key} slides in its barrel: at infinity, perpendicular to the cylinder",
+        )
     for st in sol.plan.steps:  # rolling without slip: the contact point
         for a, b, xy, how in st.contacts(sol.P):
             key = tuple(sorted((num(a), num(b))))
@@ -281,15 +293,16 @@ def locate(sol, prefix: str = "I") -> "Centres":
     names = _body_names(sol)
     n = len(names)
     if n > MAX_BODIES:
-        raise SceneError(f"{n} bodies have {n * (n - 1) // 2} instantaneous centres: more "
-                         f"than this tool lists (at most {MAX_BODIES} bodies)",
-                         file=sol.scene.file)
+        raise SceneError(
+            f"{n} bodies have {n * (n - 1) // 2} instantaneous centres: more "
+            f"than this tool lists (at most {MAX_BODIES} bodies)",
+            file=sol.scene.file,
+        )
     scale = max((math.hypot(*p) for p in sol.P.values()), default=1.0) or 1.0
     found = _primary(sol, names)
     order = sorted(found)
     warnings = []
-    missing = [(i, j) for i in range(1, n + 1) for j in range(i + 1, n + 1)
-               if (i, j) not in found]
+    missing = [(i, j) for i in range(1, n + 1) for j in range(i + 1, n + 1) if (i, j) not in found]
     while True:
         while missing:
             # as a textbook goes: the next centre is the first that two lines locate well;
@@ -312,11 +325,15 @@ def locate(sol, prefix: str = "I") -> "Centres":
                     f"{c.label} is where {_words(c.lines[0])} and {_words(c.lines[1])} cross, "
                     f"at {crossing_angle(c.condition):.2g} deg (condition "
                     f"{c.condition:.2g}): the lines are nearly parallel, the centre far and "
-                    f"ill-determined{_POLYGONS_STAND}", step=f"centre {c.label}")
+                    f"ill-determined{_POLYGONS_STAND}",
+                    step=f"centre {c.label}",
+                )
             if c.point is not None and c.condition < TOL.warn:
-                warnings.append(f"centre {c.label}: its lines cross at "
-                                f"{crossing_angle(c.condition):.3g} deg (condition "
-                                f"{c.condition:.3g}): far and ill-conditioned")
+                warnings.append(
+                    f"centre {c.label}: its lines cross at "
+                    f"{crossing_angle(c.condition):.3g} deg (condition "
+                    f"{c.condition:.3g}): far and ill-conditioned"
+                )
             key = (c.i, c.j)
             found[key] = c
             order.append(key)
@@ -327,13 +344,18 @@ def locate(sol, prefix: str = "I") -> "Centres":
             break
     if missing:
         raise SingularStepError(
-            "Kennedy's theorem cannot locate " + ", ".join(f"I{i}{j}" for i, j in missing)
-            + (" (two inputs: with two degrees of freedom a centre of two bodies depends on "
-               "the ratio of the input speeds, and Kennedy's theorem does not reach it from "
-               "the pins alone; the polygons give every velocity)"
-               if sol.scene.input.second is not None else
-               " (every pair of lines through known centres is the same line or lies at "
-               "infinity)"), step="centres")
+            "Kennedy's theorem cannot locate "
+            + ", ".join(f"I{i}{j}" for i, j in missing)
+            + (
+                " (two inputs: with two degrees of freedom a centre of two bodies depends on "
+                "the ratio of the input speeds, and Kennedy's theorem does not reach it from "
+                "the pins alone; the polygons give every velocity)"
+                if sol.scene.input.second is not None
+                else " (every pair of lines through known centres is the same line or lies at "
+                "infinity)"
+            ),
+            step="centres",
+        )
     omegas, ratio_from = _omegas(sol, names, found)
     if prefix != "I":
         found = _relabelled(found, order, prefix)
@@ -377,8 +399,10 @@ def _by_velocities(sol, names, found, order, missing, warnings):
         p0 = next(x.point for x in lines[0] if x.point is not None)  # a point of the line
         vi, vj = field(i, p0), field(j, p0)
         dx, dy = vj[0] - vi[0], vj[1] - vi[1]
-        how = ("Kennedy's lines coincide: on that line where the two bodies' velocities "
-               "are equal (angular-velocity ratio)")
+        how = (
+            "Kennedy's lines coincide: on that line where the two bodies' velocities "
+            "are equal (angular-velocity ratio)"
+        )
         cond = min(1.0, abs(dw) / big)
         if cond <= PARALLEL:
             continue  # the same omega (a relative translation): left to the refusal
@@ -387,14 +411,16 @@ def _by_velocities(sol, names, found, order, missing, warnings):
                 f"I{i}{j}: Kennedy's lines coincide and the two bodies' omegas differ by "
                 f"{cond:.2g} of the largest: the centre is far and ill-determined"
                 f"{_POLYGONS_STAND}",
-                step=f"centre I{i}{j}")
+                step=f"centre I{i}{j}",
+            )
         if cond < TOL.warn:
-            warnings.append(f"centre I{i}{j}: the two bodies' omegas differ by {cond:.3g} "
-                            "of the largest: far and ill-conditioned")
+            warnings.append(
+                f"centre I{i}{j}: the two bodies' omegas differ by {cond:.3g} "
+                "of the largest: far and ill-conditioned"
+            )
         # v_i(p0) + omega_i k x (X - p0) = v_j(p0) + omega_j k x (X - p0):
         # k x (X - p0) = (dx, dy) / dw
-        c = Centre(i, j, (p0[0] + dy / dw, p0[1] - dx / dw), None, how,
-                   (lines[0], lines[-1]), cond)
+        c = Centre(i, j, (p0[0] + dy / dw, p0[1] - dx / dw), None, how, (lines[0], lines[-1]), cond)
         found[key] = c
         order.append(key)
         missing.remove(key)
@@ -423,9 +449,10 @@ def _relabelled(found, order, prefix):
         lines = tuple((out[(a.i, a.j)], out[(b.i, b.j)]) for a, b in c.lines)
         how = c.how
         if lines:
-            how = (f"Kennedy: on the line {lines[0][0].label}-{lines[0][1].label} and the "
-                   f"line {lines[1][0].label}-{lines[1][1].label}") + \
-                (" (parallel: at infinity)" if c.point is None else "")
+            how = (
+                f"Kennedy: on the line {lines[0][0].label}-{lines[0][1].label} and the "
+                f"line {lines[1][0].label}-{lines[1][1].label}"
+            ) + (" (parallel: at infinity)" if c.point is None else "")
         out[key] = dataclasses.replace(c, lines=lines, how=how, prefix=prefix)
     return out
 
@@ -448,8 +475,11 @@ def _kennedy(key, found, n, scale):
         ln = _line(a, b)
         if ln is not None:
             lines.append((ln, (a, b)))
-        elif a.point is None and b.point is None and \
-                abs(a.direction[0] * b.direction[1] - a.direction[1] * b.direction[0]) > PARALLEL:
+        elif (
+            a.point is None
+            and b.point is None
+            and abs(a.direction[0] * b.direction[1] - a.direction[1] * b.direction[0]) > PARALLEL
+        ):
             far = (a, b)
     best = None
     for p in range(len(lines)):
@@ -459,18 +489,22 @@ def _kennedy(key, found, n, scale):
                 continue
             kind, where, cond = hit
             pairs = (lines[p][1], lines[q][1])
-            how = (f"Kennedy: on the line {pairs[0][0].label}-{pairs[0][1].label} and the "
-                   f"line {pairs[1][0].label}-{pairs[1][1].label}")
+            how = (
+                f"Kennedy: on the line {pairs[0][0].label}-{pairs[0][1].label} and the "
+                f"line {pairs[1][0].label}-{pairs[1][1].label}"
+            )
             if kind == "infinity":
                 return Centre(i, j, None, where, how + " (parallel: at infinity)", pairs, 0.0)
             c = Centre(i, j, where, None, how, pairs, cond)
             if best is None or cond > best.condition:
                 best = c
     if best is None and far is not None and lines:  # a line and the line at infinity (a
-        (_, d), pair = lines[0]                       # body that translates: the Scotch yoke)
-        how = (f"Kennedy: on the line {pair[0].label}-{pair[1].label} and the line at "
-               f"infinity through {far[0].label} and {far[1].label}: at infinity along the "
-               "first")
+        (_, d), pair = lines[0]  # body that translates: the Scotch yoke)
+        how = (
+            f"Kennedy: on the line {pair[0].label}-{pair[1].label} and the line at "
+            f"infinity through {far[0].label} and {far[1].label}: at infinity along the "
+            "first"
+        )
         return Centre(i, j, None, d, how, (pair, far), 0.0)
     return best
 
@@ -515,7 +549,7 @@ def _omegas(sol, names, found):
                 if r2 == 0.0:
                     continue
                 vx, vy = field(i, cij.point)
-                cand = ((r2, i, (rx * vy - ry * vx) / r2))
+                cand = (r2, i, (rx * vy - ry * vx) / r2)
                 if best is None or cand[0] > best[0]:
                     best = cand
             if best is not None:
@@ -524,9 +558,11 @@ def _omegas(sol, names, found):
                 pending.remove(j)
                 done = True
         if not done:
-            raise SingularStepError("the angular velocities cannot be had from the centres "
-                                    "(every body's centres with the known ones coincide)",
-                                    step="centres")
+            raise SingularStepError(
+                "the angular velocities cannot be had from the centres "
+                "(every body's centres with the known ones coincide)",
+                step="centres",
+            )
     return w, frm
 
 

@@ -72,12 +72,16 @@ def compile_plan(scene: Scene) -> Plan:
     plan = _BY_CONTENT.get(key) if key is not None else None
     if plan is None:
         if not isinstance(scene, Scene):
-            raise SceneError(f"a Scene is needed (load_scene(path) or parse_scene(text)), "
-                             f"not {type(scene).__name__} {str(scene)[:60]!r}")
+            raise SceneError(
+                f"a Scene is needed (load_scene(path) or parse_scene(text)), "
+                f"not {type(scene).__name__} {str(scene)[:60]!r}"
+            )
         try:
             notes = ()
             if scene.input.placed is not None and not scene.input.placed.found:
-                notes = place(scene, lambda trial: _Compiler(trial).run())  # the crank's angle that gives the stated position
+                notes = place(
+                    scene, lambda trial: _Compiler(trial).run()
+                )  # the crank's angle that gives the stated position
             plan = _Compiler(scene).run()
             if notes:
                 plan = replace(plan, notes=notes + plan.notes)
@@ -91,8 +95,9 @@ def compile_plan(scene: Scene) -> Plan:
             while _BY_CONTENT and len(_BY_CONTENT) >= _KEEP:
                 _BY_CONTENT.pop(next(iter(_BY_CONTENT)))
             _BY_CONTENT[key] = plan
-    if scene.input.omega is None or (scene.input.placed is not None
-                                     and not scene.input.placed.found):
+    if scene.input.omega is None or (
+        scene.input.placed is not None and not scene.input.placed.found
+    ):
         object.__setattr__(scene, "input", plan.scene.input)  # completed when compiled
     if plan.scene is not scene:  # a scene of the same content: its own loads, masses, ...
         plan = _for_scene(plan, scene)
@@ -145,8 +150,7 @@ def gruebler(scene: Scene) -> int:
         n += 2
         bodies_at.setdefault(c.barrel, set()).add(f"barrel {c.key}")
         bodies_at.setdefault(c.rod, set()).add(f"rod {c.key}")
-    j = sum(len(b) - 1 for b in bodies_at.values()) + len(scene.sliders) + \
-        len(scene.cylinders)
+    j = sum(len(b) - 1 for b in bodies_at.values()) + len(scene.sliders) + len(scene.cylinders)
     return 3 * (n - 1) - 2 * j - len(scene.rolling)
 
 
@@ -160,12 +164,14 @@ class _Compiler:
         self.unit = scene.length_unit
         self.uname = scene.units
         inp = scene.input
-        self.ctx = Context.instant(inp.angle, 1.0 if inp.omega is None else inp.omega,
-                                   inp.alpha or 0.0)  # only positions are placed here
+        self.ctx = Context.instant(
+            inp.angle, 1.0 if inp.omega is None else inp.omega, inp.alpha or 0.0
+        )  # only positions are placed here
         self.P = dict(scene.ground)
         self.steps = []
-        self.used_links = {lk.key for lk in scene.links
-                           if lk.p in scene.ground and lk.q in scene.ground}
+        self.used_links = {
+            lk.key for lk in scene.links if lk.p in scene.ground and lk.q in scene.ground
+        }
         self.used_sliders = set()
         self.notes = []
         self.bodies = Bodies(scene)
@@ -249,12 +255,26 @@ class _Compiler:
         (each end to about 1e-4 deg): what to do when the stated angle cannot."""
         sc, inp = self.scene, self.scene.input
         steps = tuple(self.steps) + (failing,)
-        plan = Plan(steps, dict(sc.ground), sc, (), {}, (),
-                    Dims(dict(sc.ground), tuple(st.params for st in steps), inp.angle,
-                         inp.omega, inp.alpha, {}))
+        plan = Plan(
+            steps,
+            dict(sc.ground),
+            sc,
+            (),
+            {},
+            (),
+            Dims(
+                dict(sc.ground),
+                tuple(st.params for st in steps),
+                inp.angle,
+                inp.omega,
+                inp.alpha,
+                {},
+            ),
+        )
 
         def fails(theta):
             import numpy as np
+
             ctx = Context(np.asarray(theta, dtype=float), inp.omega, inp.alpha, array=True)
             with np.errstate(all="ignore"):
                 plan.run(ctx, upto=0)
@@ -269,8 +289,10 @@ class _Compiler:
         bad = fails(grid)
         crank = inp.crank
         if bad.all():
-            return (f"no angle of the crank {crank} assembles it: the links are too short "
-                    "or too long (check the lengths)")
+            return (
+                f"no angle of the crank {crank} assembles it: the links are too short "
+                "or too long (check the lengths)"
+            )
         if not bad.any():
             return f"(it assembles at the angles either side: a limit of the crank {crank})"
 
@@ -294,8 +316,11 @@ class _Compiler:
                 hi = edge(grid[j % n] + two_pi * (j // n), grid[j % n] + two_pi * (j // n) + h)
                 shown = (lo + 180.0) % 360.0 - 180.0  # from -180 to 180, the end follows
                 ranges.append(f"{shown:.2f} to {shown + hi - lo:.2f} deg")
-        return (f"the crank {crank} can be set only from " + ", or from ".join(ranges)
-                + ": give an angle there")
+        return (
+            f"the crank {crank} can be set only from "
+            + ", or from ".join(ranges)
+            + ": give an angle there"
+        )
 
     def reach_block(self, fails, n) -> str:
         """Where the driving block can be placed so that the steps so far assemble: its
@@ -303,16 +328,21 @@ class _Compiler:
         the stated place too (each end to about 1e-6 of that reach)."""
         sc, inp = self.scene, self.scene.input
         through = getattr(sc.slider(inp.block), "through", None)  # a collar: from its pivot
-        span = 2.0 * sum(lk.length for lk in sc.links) + max(
-            (math.dist(xy, through) for xy in sc.ground.values()),
-            default=0.0) if through is not None else sum(lk.length for lk in sc.links)
+        span = (
+            2.0 * sum(lk.length for lk in sc.links)
+            + max((math.dist(xy, through) for xy in sc.ground.values()), default=0.0)
+            if through is not None
+            else sum(lk.length for lk in sc.links)
+        )
         lo, hi = min(inp.angle, 0.0) - span, max(inp.angle, 0.0) + span
         grid = [lo + (hi - lo) * k / (n - 1) for k in range(n)]
         bad = fails(grid)
         name, u, uname = inp.block, self.unit, self.uname
         if bad.all():
-            return (f"no place of the block {name} along its guide assembles it: the links "
-                    "are too short or too long (check the lengths)")
+            return (
+                f"no place of the block {name} along its guide assembles it: the links "
+                "are too short or too long (check the lengths)"
+            )
 
         def edge(good, wrong):  # bisection between a place that assembles and one that not
             for _ in range(30):
@@ -335,8 +365,11 @@ class _Compiler:
             b = "beyond" if j == n - 1 else in_units(edge(grid[j], grid[j + 1]), u)
             ranges.append(f"{a} to {b} {uname}")
             i = j + 1
-        return (f"the block {name} can be placed only from s_{name} = about "
-                + ", or from ".join(ranges) + ": give a place there")
+        return (
+            f"the block {name} can be placed only from s_{name} = about "
+            + ", or from ".join(ranges)
+            + ": give a place there"
+        )
 
     def neighbours(self, name):
         out = set()
@@ -354,9 +387,20 @@ class _Compiler:
             pr = next(p for p in sc.rolling if p.wheel == inp.wheel)
             along = -pr.m[1] * path.u[0] + pr.m[0] * path.u[1]
             self.used_sliders.add(path.key)
-            self.add(WheelDriver(0, inp.block, path, self.fmt(pr.through), self.unit,
-                                 self.uname, wheel=inp.wheel, radius=pr.radius,
-                                 ground_words=pr.label, along=along))
+            self.add(
+                WheelDriver(
+                    0,
+                    inp.block,
+                    path,
+                    self.fmt(pr.through),
+                    self.unit,
+                    self.uname,
+                    wheel=inp.wheel,
+                    radius=pr.radius,
+                    ground_words=pr.label,
+                    along=along,
+                )
+            )
         elif inp.block is not None and collar.is_collar(sc):  # a collar driven along its rod
             self.used_sliders.add(inp.block)
             self.add(collar.driver(self, sc, gruebler))
@@ -364,8 +408,16 @@ class _Compiler:
             path = sc.slider(inp.block)
             named = [p for p, xy in sc.ground.items() if xy == path.through]
             self.used_sliders.add(path.key)
-            self.add(BlockDriver(0, inp.block, path, named[0] if named else self.fmt(
-                path.through), self.unit, self.uname))
+            self.add(
+                BlockDriver(
+                    0,
+                    inp.block,
+                    path,
+                    named[0] if named else self.fmt(path.through),
+                    self.unit,
+                    self.uname,
+                )
+            )
         else:
             crank = self.bodies._links.get(inp.crank) or sc.link(inp.crank)
             self.add(Crank(0, crank.key, inp.pivot, inp.tip, crank.length))
@@ -374,13 +426,25 @@ class _Compiler:
             self.add(second_collar(self, two))
         elif two is not None:  # two degrees of freedom: the second crank is the next step
             link = sc.link(two.crank)
-            self.add(SecondCrank(1, link.key, two.pivot, two.tip, link.length, two.angle,
-                                 two.omega, two.alpha, inp.angle, inp.omega))
+            self.add(
+                SecondCrank(
+                    1,
+                    link.key,
+                    two.pivot,
+                    two.tip,
+                    link.length,
+                    two.angle,
+                    two.omega,
+                    two.alpha,
+                    inp.angle,
+                    inp.omega,
+                )
+            )
         names = self.names
         order = {p: i for i, p in enumerate(names)}
         heap = list(range(len(names)))  # sorted: a heap
         waiting = set(heap)  # each point in the heap once (a plate of many carried points
-        while True:          # would push its every point again for each found: quadratic)
+        while True:  # would push its every point again for each found: quadratic)
             found = None
             while heap and found is None:
                 i = heapq.heappop(heap)
@@ -413,16 +477,33 @@ class _Compiler:
         pins = []
         for pin in sc.pins:
             joined = _bodies_at(sc, pin.point)
-            pairs = tuple((f"{a[0]}|{b[0]}", i, j) for i, a in enumerate(joined)
-                          for j, b in enumerate(joined) if j > i)
+            pairs = tuple(
+                (f"{a[0]}|{b[0]}", i, j)
+                for i, a in enumerate(joined)
+                for j, b in enumerate(joined)
+                if j > i
+            )
             links = tuple(lk for _, lk in joined)
-            pins.append((pin.point, tuple(b for b, _ in joined), links,
-                         tuple(k for k, _, _ in pairs), tuple((i, j) for _, i, j in pairs),
-                         tuple((links[i], links[j]) for _, i, j in pairs)))
+            pins.append(
+                (
+                    pin.point,
+                    tuple(b for b, _ in joined),
+                    links,
+                    tuple(k for k, _, _ in pairs),
+                    tuple((i, j) for _, i, j in pairs),
+                    tuple((links[i], links[j]) for _, i, j in pairs),
+                )
+            )
         steps = tuple(self.steps)
         ground = dict(sc.ground)
-        dims = Dims(ground, tuple(st.params for st in steps), inp.angle, inp.omega,
-                    inp.alpha, {p.point: p.radius for p in sc.pins})
+        dims = Dims(
+            ground,
+            tuple(st.params for st in steps),
+            inp.angle,
+            inp.omega,
+            inp.alpha,
+            {p.point: p.radius for p in sc.pins},
+        )
         return Plan(steps, ground, sc, tuple(self.notes), fixed, tuple(pins), dims)
 
     def _first(self, kinds, name):
@@ -446,10 +527,17 @@ class _Compiler:
             reach = step.reach()
             sigma = self.pick(name, default, plus, minus, step, default=True, scale=reach)
             if math.dist(plus, minus) > 1e-9 * reach:
-                side = ("on the side of the block" if default == "block side"
-                        else default if isinstance(default, str) else "farther along the guide")
-                self.notes.append(f"{name}: of its two positions the one {side} was taken "
-                                  f"(default; set [assembly] {name} to choose)")
+                side = (
+                    "on the side of the block"
+                    if default == "block side"
+                    else default
+                    if isinstance(default, str)
+                    else "farther along the guide"
+                )
+                self.notes.append(
+                    f"{name}: of its two positions the one {side} was taken "
+                    f"(default; set [assembly] {name} to choose)"
+                )
         else:
             sigma = self.pick(name, hint, plus, minus, step)
         chosen = step if sigma == step.sigma else replace(step, sigma=sigma)
@@ -468,18 +556,19 @@ class _Compiler:
             d = (plus[0] - minus[0]) * ux + (plus[1] - minus[1]) * uy
             return 1.0 if d >= 0 else -1.0
         if isinstance(hint, str):
-            axis, want = {"above": (1, 1), "below": (1, -1), "right": (0, 1),
-                          "left": (0, -1)}[hint]
+            axis, want = {"above": (1, 1), "below": (1, -1), "right": (0, 1), "left": (0, -1)}[hint]
             d = (plus[axis] - minus[axis]) * want
             if abs(d) <= 1e-9 * scale:
                 if default:  # level: take the right-hand one
                     return 1.0 if plus[0] >= minus[0] else -1.0
                 other = "left/right" if axis == 1 else "above/below"
                 raise AssemblyError(
-                    f"assembly {name} = \"{hint}\" matches neither position: both are at the "
+                    f'assembly {name} = "{hint}" matches neither position: both are at the '
                     f"same {'height' if axis == 1 else 'x'} ({self.fmt(plus)} and "
                     f"{self.fmt(minus)}); use {other} or a rough position [x, y]",
-                    key=f"[assembly] {name}", file=self.scene.file)
+                    key=f"[assembly] {name}",
+                    file=self.scene.file,
+                )
             return 1.0 if d > 0 else -1.0
         d1, d2 = math.dist(hint, plus), math.dist(hint, minus)
         # a rough position must be decisively nearer one of them (not in the middle tenth)
@@ -487,8 +576,10 @@ class _Compiler:
             raise AssemblyError(
                 f"assembly {name} = {self.fmt(hint)} matches neither position of {name} "
                 f"({self.fmt(plus)} or {self.fmt(minus)}); give a rough position near the "
-                "one the figure shows", key=f"[assembly] {name}",
-                file=self.scene.file)
+                "one the figure shows",
+                key=f"[assembly] {name}",
+                file=self.scene.file,
+            )
         return 1.0 if d1 < d2 else -1.0
 
     def fmt(self, xy):
@@ -514,30 +605,41 @@ class _Compiler:
                 raise MobilityError(
                     f"{mob}: two inputs over-determine the chain: the second crank "
                     f"{sc.input.second.crank} is driven by its mesh ([rolling] {pr.wheel}) as "
-                    "well: remove [input.second] (or the mesh)", file=sc.file,
-                    key="[input.second] crank")
+                    "well: remove [input.second] (or the mesh)",
+                    file=sc.file,
+                    key="[input.second] crank",
+                )
             if by.kind == "crank" and pr.base is not None and pr.wheel in by.links:
                 base = sc.link(pr.base)
                 raise MobilityError(
                     f"the gear {pr.wheel} is the crank, so it drives the mesh: write the "
-                    f"driven gear as the wheel, \"{base.key}\" = {{ on = \"{pr.wheel}\" }} "
-                    f"(centre first: {pr.base_centre})", file=sc.file,
-                    key=f"[rolling] {pr.wheel}")
+                    f'driven gear as the wheel, "{base.key}" = {{ on = "{pr.wheel}" }} '
+                    f"(centre first: {pr.base_centre})",
+                    file=sc.file,
+                    key=f"[rolling] {pr.wheel}",
+                )
             raise MobilityError(
                 f"{mob}: over-constrained: {pr.rim} is placed by step {by.title} and would "
                 f"also be set by the rolling of {pr.wheel}: one constraint too many (remove "
-                "a link or the rolling pair)", file=sc.file, key=f"[rolling] {pr.wheel}")
+                "a link or the rolling pair)",
+                file=sc.file,
+                key=f"[rolling] {pr.wheel}",
+            )
 
     def finish(self):
         sc = self.scene
         self._rolling_used()
-        if len(self.P) == len(self.names) and len(self.used_links) == len(sc.links) and \
-                len(self.used_sliders) == len(sc.sliders):
+        if (
+            len(self.P) == len(self.names)
+            and len(self.used_links) == len(sc.links)
+            and len(self.used_sliders) == len(sc.sliders)
+        ):
             return  # every point found, every link and slider used
         missing = [p for p in self.names if p not in self.P]
         extra_links = [lk.key for lk in sc.links if lk.key not in self.used_links]
-        extra_sliders = list(dict.fromkeys(s.point for s in sc.sliders
-                                           if s.key not in self.used_sliders))
+        extra_sliders = list(
+            dict.fromkeys(s.point for s in sc.sliders if s.key not in self.used_sliders)
+        )
         if not missing and not extra_links and not extra_sliders:
             return
         m = gruebler(sc)
@@ -546,30 +648,50 @@ class _Compiler:
             raise MobilityError(
                 f"{mob}: two inputs over-determine the chain (a mechanism of {m} degree"
                 f"{'' if m == 1 else 's'} of freedom takes {max(m, 0)} input"
-                f"{'' if m == 1 else 's'}): remove [input.second]", file=sc.file,
-                key="[input.second] crank")
+                f"{'' if m == 1 else 's'}): remove [input.second]",
+                file=sc.file,
+                key="[input.second] crank",
+            )
         if missing:
             if m > 1:
-                why = (f"{mob}: the mechanism is under-constrained; "
-                       f"{', '.join(missing)} {'is' if len(missing) == 1 else 'are'} not "
-                       "determined by the crank (add the missing link or slider"
-                       + (", or a second driven crank: [input.second]"
-                          if m == 2 and sc.input.second is None else "") + ")")
+                why = (
+                    f"{mob}: the mechanism is under-constrained; "
+                    f"{', '.join(missing)} {'is' if len(missing) == 1 else 'are'} not "
+                    "determined by the crank (add the missing link or slider"
+                    + (
+                        ", or a second driven crank: [input.second]"
+                        if m == 2 and sc.input.second is None
+                        else ""
+                    )
+                    + ")"
+                )
             elif m < 1:
-                why = (f"{mob}: the mechanism is over-constrained (a structure); "
-                       f"{', '.join(missing)} cannot move")
+                why = (
+                    f"{mob}: the mechanism is over-constrained (a structure); "
+                    f"{', '.join(missing)} cannot move"
+                )
             else:
-                why = (f"{', '.join(missing)} cannot be found by the construction steps "
-                       "(crank, dyad, slider, slotted link, carried point, rolling wheel, triad, "
-                       "peg in two slots, yoke): the chain needs "
-                       "a construction these steps do not make, or a part is missing")
-            loose = [lk.key for lk in sc.links
-                     if lk.key not in self.used_links and (lk.p in missing or lk.q in missing)]
+                why = (
+                    f"{', '.join(missing)} cannot be found by the construction steps "
+                    "(crank, dyad, slider, slotted link, carried point, rolling wheel, triad, "
+                    "peg in two slots, yoke): the chain needs "
+                    "a construction these steps do not make, or a part is missing"
+                )
+            loose = [
+                lk.key
+                for lk in sc.links
+                if lk.key not in self.used_links and (lk.p in missing or lk.q in missing)
+            ]
             where = f"[links] {', '.join(loose)}" if loose else "[links]"
             raise MobilityError(why, file=sc.file, key=where)
-        free = [p for p in extra_sliders if m > 1 and p not in sc.ground
-                and not any(p in (lk.p, lk.q) for lk in sc.links)
-                and not any(cp.name == p for cp in sc.points)]
+        free = [
+            p
+            for p in extra_sliders
+            if m > 1
+            and p not in sc.ground
+            and not any(p in (lk.p, lk.q) for lk in sc.links)
+            and not any(cp.name == p for cp in sc.points)
+        ]
         if free:  # a block on a guide and nothing else: it slides freely, a motion too many
             one = len(free) == 1
             raise MobilityError(
@@ -578,23 +700,32 @@ class _Compiler:
                 f"along {'its guide' if one else 'their guides'}: nothing places "
                 f"{'it' if one else 'them'} (pin {'it' if one else 'them'} to a link; or drive "
                 f"{'it' if one else 'one'} along its guide as a second input: [input.second] "
-                f"block = \"{free[0]}\" with vs_{free[0]}, s_{free[0]})", file=sc.file,
-                key=f"[sliders] {', '.join(free)}")
+                f'block = "{free[0]}" with vs_{free[0]}, s_{free[0]})',
+                file=sc.file,
+                key=f"[sliders] {', '.join(free)}",
+            )
         parts = []
         if extra_links:
-            parts.append(f"link{'s' if len(extra_links) > 1 else ''} "
-                         f"{', '.join(extra_links)} {'is' if len(extra_links) == 1 else 'are'}"
-                         " redundant (both ends already fixed by the other links): remove "
-                         f"{'it' if len(extra_links) == 1 else 'them'} or check the scene")
+            parts.append(
+                f"link{'s' if len(extra_links) > 1 else ''} "
+                f"{', '.join(extra_links)} {'is' if len(extra_links) == 1 else 'are'}"
+                " redundant (both ends already fixed by the other links): remove "
+                f"{'it' if len(extra_links) == 1 else 'them'} or check the scene"
+            )
         if extra_sliders:
             one = len(extra_sliders) == 1
             names, be = ", ".join(extra_sliders), "is" if one else "are"
-            parts.append(f"slider{'' if one else 's'} {names} {be} redundant ({names} {be} "
-                         "already placed by the other links and the crank: "
-                         f"{'its path adds' if one else 'their paths add'} a constraint, not "
-                         f"a motion): remove {'it' if one else 'them'} or check the scene")
-        where = (f"[links] {', '.join(extra_links)}" if extra_links
-                 else f"[sliders] {', '.join(extra_sliders)}")
-        raise MobilityError(f"{mob}: over-constrained: " + "; ".join(parts), file=sc.file,
-                            key=where)
-
+            parts.append(
+                f"slider{'' if one else 's'} {names} {be} redundant ({names} {be} "
+                "already placed by the other links and the crank: "
+                f"{'its path adds' if one else 'their paths add'} a constraint, not "
+                f"a motion): remove {'it' if one else 'them'} or check the scene"
+            )
+        where = (
+            f"[links] {', '.join(extra_links)}"
+            if extra_links
+            else f"[sliders] {', '.join(extra_sliders)}"
+        )
+        raise MobilityError(
+            f"{mob}: over-constrained: " + "; ".join(parts), file=sc.file, key=where
+        )

@@ -33,13 +33,17 @@ def given_completed(plan):
     object.__setattr__(sc, "input", completed(sc, res))
     g = sc.input.given
     per = "m/s" if g.kind != "omega" else "rad/s"
-    note = (f"the crank {sc.input.crank}'s speed is found from {g.key} = {g.text}: "
-            f"{g.key} is {res.per_omega:.6g} {per} per rad/s of the crank, so omega_"
-            f"{sc.input.crank} = {abs(res.omega):.6g} rad/s {sense(res.omega)}")
+    note = (
+        f"the crank {sc.input.crank}'s speed is found from {g.key} = {g.text}: "
+        f"{g.key} is {res.per_omega:.6g} {per} per rad/s of the crank, so omega_"
+        f"{sc.input.crank} = {abs(res.omega):.6g} rad/s {sense(res.omega)}"
+    )
     if res.rate is not None:
-        note += (f", and from {g.rate_key or 'its rate'} = "
-                 f"{g.rate_text if g.rate is not None else '0 (steady)'}: alpha_"
-                 f"{sc.input.crank} = {abs(res.alpha):.6g} rad/s^2 {sense(res.alpha)}")
+        note += (
+            f", and from {g.rate_key or 'its rate'} = "
+            f"{g.rate_text if g.rate is not None else '0 (steady)'}: alpha_"
+            f"{sc.input.crank} = {abs(res.alpha):.6g} rad/s^2 {sense(res.alpha)}"
+        )
     dims = replace(plan.dims, omega=res.omega, alpha=res.alpha)
     return replace(plan, dims=dims, notes=(note,) + res.notes + plan.notes, given=res)
 
@@ -62,10 +66,14 @@ def gas_towards_crank(plan, sc):
         where = f"[loads] {ld.target}"
         path = next((s for s in sc.sliders if s.point == ld.target), None)
         if pivot is None or path is None or not hasattr(path, "through") or path.slot:
-            raise SceneError(f"the gas force at {ld.target} pushes the piston towards the "
-                             "crank only for a piston on a fixed path driven by a crank: give "
-                             "its direction", file=sc.file, key=where,
-                             line=key_line(sc, where))
+            raise SceneError(
+                f"the gas force at {ld.target} pushes the piston towards the "
+                "crank only for a piston on a fixed path driven by a crank: give "
+                "its direction",
+                file=sc.file,
+                key=where,
+                line=key_line(sc, where),
+            )
         if state is None:
             inp = sc.input
             state = plan.run(Context(inp.angle, 0.0, 0.0), upto=0)
@@ -74,10 +82,14 @@ def gas_towards_crank(plan, sc):
         d = (ox - x) * ux + (oy - y) * uy
         size = max(lk.length for lk in sc.links)
         if abs(d) <= 1e-9 * size:
-            raise SceneError(f"the piston {ld.target} is level with the crank centre {pivot} "
-                             "along its path: towards the crank says no way: give the gas "
-                             "force's direction", file=sc.file, key=where,
-                             line=key_line(sc, where))
+            raise SceneError(
+                f"the piston {ld.target} is level with the crank centre {pivot} "
+                "along its path: towards the crank says no way: give the gas "
+                "force's direction",
+                file=sc.file,
+                key=where,
+                line=key_line(sc, where),
+            )
         s = 1.0 if d > 0 else -1.0
         f = ld.toward
         loads.append(replace(ld, force=(f * s * ux + 0.0, f * s * uy + 0.0)))
@@ -93,12 +105,12 @@ def place(scene, compile_trial) -> tuple:
     scene to its plan, the compiler's own run). Returns the notes."""
     inp = scene.input
     pl = inp.placed
-    trials = ([pl.near] if pl.near is not None else []) + \
-        [math.radians(d) for d in range(0, 360, 10)]
+    trials = ([pl.near] if pl.near is not None else []) + [
+        math.radians(d) for d in range(0, 360, 10)
+    ]
     plan = None
     for t in trials:
-        trial = replace(scene, input=replace(inp, angle=t,
-                                             placed=replace(pl, found=True)))
+        trial = replace(scene, input=replace(inp, angle=t, placed=replace(pl, found=True)))
         try:
             plan = compile_trial(trial)
             break
@@ -106,28 +118,38 @@ def place(scene, compile_trial) -> tuple:
             continue
     key = f"[input] {pl.key}"
     if plan is None:
-        raise AssemblyError(f"{pl.key} = {pl.text}: the mechanism assembles at no crank angle "
-                            f"of {inp.crank}", key=key)
+        raise AssemblyError(
+            f"{pl.key} = {pl.text}: the mechanism assembles at no crank angle of {inp.crank}",
+            key=key,
+        )
     roots, seen = place_roots(plan)
     if not roots:
         unit = 1.0 if pl.kind == "angle" else scene.length_unit
-        what = (f"; over the turn it runs from {in_units(seen[0] + pl.value, unit)} to "
-                f"{in_units(seen[1] + pl.value, unit)} {scene.units}"
-                if seen is not None and pl.kind != "angle" else "")
-        raise AssemblyError(f"{pl.key} = {pl.text}: no angle of the crank {inp.crank} gives it"
-                            f"{what}", key=key)
+        what = (
+            f"; over the turn it runs from {in_units(seen[0] + pl.value, unit)} to "
+            f"{in_units(seen[1] + pl.value, unit)} {scene.units}"
+            if seen is not None and pl.kind != "angle"
+            else ""
+        )
+        raise AssemblyError(
+            f"{pl.key} = {pl.text}: no angle of the crank {inp.crank} gives it{what}", key=key
+        )
     if pl.near is not None:
         theta = min(roots, key=lambda t: abs(math.remainder(t - pl.near, 2 * math.pi)))
     else:
         theta = min(roots, key=lambda t: t % (2 * math.pi))
-    shown = ", ".join(f"{math.degrees(t) % 360:.6g}" for t in sorted(
-        roots, key=lambda t: t % (2 * math.pi)))
-    note = (f"the crank {inp.crank}'s angle is found from {pl.key} = {pl.text}: "
-            f"{math.degrees(theta) % 360:.10g} deg")
+    shown = ", ".join(
+        f"{math.degrees(t) % 360:.6g}" for t in sorted(roots, key=lambda t: t % (2 * math.pi))
+    )
+    note = (
+        f"the crank {inp.crank}'s angle is found from {pl.key} = {pl.text}: "
+        f"{math.degrees(theta) % 360:.10g} deg"
+    )
     if len(roots) > 1:
-        note += (f" (of the crank angles that give it, {shown} deg, the "
-                 + ("one nearest near" if pl.near is not None else "first from 0 deg")
-                 + "; set near = a rough angle to choose)")
-    object.__setattr__(scene, "input", replace(inp, angle=theta,
-                                               placed=replace(pl, found=True)))
+        note += (
+            f" (of the crank angles that give it, {shown} deg, the "
+            + ("one nearest near" if pl.near is not None else "first from 0 deg")
+            + "; set near = a rough angle to choose)"
+        )
+    object.__setattr__(scene, "input", replace(inp, angle=theta, placed=replace(pl, found=True)))
     return (note,)

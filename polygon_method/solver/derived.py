@@ -14,7 +14,17 @@ from ..common.tolerances import crossing_angle
 
 from ..steps.rounding import largest
 
-__all__ = ["PinRubbing", "rubbing_at", "pin_rubbing", "pin_records", "rubbing_records", "largest", "power_terms", "input_torque", "transmission_angle"]
+__all__ = [
+    "PinRubbing",
+    "rubbing_at",
+    "pin_rubbing",
+    "pin_records",
+    "rubbing_records",
+    "largest",
+    "power_terms",
+    "input_torque",
+    "transmission_angle",
+]
 
 
 def rubbing_at(pin, W, radius) -> tuple:
@@ -24,7 +34,7 @@ def rubbing_at(pin, W, radius) -> tuple:
     w = W.get  # a body without a link (None) is not in W: it does not turn
     pairs = pin[5]
     if len(pairs) == 1:  # a pin of two bodies (the usual one)
-        (a, b), = pairs
+        ((a, b),) = pairs
         return (abs(w(a, 0.0) - w(b, 0.0)) * radius,)
     return tuple([abs(w(a, 0.0) - w(b, 0.0)) * radius for a, b in pairs])
 
@@ -38,8 +48,13 @@ def pin_rubbing(plan, W, radii) -> dict:
 def pin_records(pins, W, radii) -> dict:
     """pin -> :class:`PinRubbing` for every sized pin at one instant (floats): the values of
     :func:`rubbing_at`, in one pass (:func:`rubbing_records` with the radii ``radii``)."""
-    return rubbing_records(tuple((pin[0], radii[pin[0]], pin, pin[5],
-                                  pin[5][0] if len(pin[5]) == 1 else None) for pin in pins), W)
+    return rubbing_records(
+        tuple(
+            (pin[0], radii[pin[0]], pin, pin[5], pin[5][0] if len(pin[5]) == 1 else None)
+            for pin in pins
+        ),
+        W,
+    )
 
 
 def rubbing_records(table, W) -> dict:

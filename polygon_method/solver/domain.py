@@ -107,7 +107,6 @@ class Domain:
         return t, t <= self.hi + ROUNDING
 
 
-
 def fmt_deg(d, digits=4) -> str:
     """An angle in degrees to ``digits`` decimals, never "-0.0000"."""
     s = f"{d:.{digits}f}"
@@ -127,4 +126,5 @@ def degrees_fn(dom: Domain):
     def deg(t):
         d = math.degrees(t) % whole
         return 0.0 if d >= whole - 5e-4 else d
+
     return deg

@@ -38,14 +38,26 @@ from .compiler import compile_plan
 from .kinematics import hypot
 from ..steps.rounding import CAP, C_FLOOR, EPS, USELESS, largest, vmax, vmin
 
-__all__ = ["EPS", "C_FLOOR", "ErrorBounds", "error_bounds", "scales", "bounds_dict",
-           "shown_bounds", "SHOWN", "USELESS", "NO_BOUND"]
+__all__ = [
+    "EPS",
+    "C_FLOOR",
+    "ErrorBounds",
+    "error_bounds",
+    "scales",
+    "bounds_dict",
+    "shown_bounds",
+    "SHOWN",
+    "USELESS",
+    "NO_BOUND",
+]
 
 #: the text report shows a bound only above this (the promise of agreement everywhere else)
 SHOWN = 1e-9
 #: the reason given, in words and in the JSON, where a bound is no useful bound
-NO_BOUND = ("no useful bound: the rounding carried along the steps a quantity depends on "
-            "may reach its size (a long chain of steps, or ill-conditioned ones)")
+NO_BOUND = (
+    "no useful bound: the rounding carried along the steps a quantity depends on "
+    "may reach its size (a long chain of steps, or ill-conditioned ones)"
+)
 
 
 def _cap(x):
@@ -56,7 +68,9 @@ def _cap(x):
     if isinstance(x, tuple):
         return tuple(_cap(e) for e in x)
     import numpy as np
+
     return np.fmin(x, CAP)
+
 
 #: each kind's rounding constant is the ``rounding`` of its step class (fitted against the
 #: 50-digit reference, with a margin); its rule, the step's ``error_bound``
@@ -98,8 +112,14 @@ class ErrorBounds:
     @property
     def worst(self):
         """The largest relative bound of any answer."""
-        vals = [*self.P.values(), *self.V.values(), *self.A.values(), *self.W.values(),
-                *self.Al.values(), *(b for t in self.S.values() for b in t)]
+        vals = [
+            *self.P.values(),
+            *self.V.values(),
+            *self.A.values(),
+            *self.W.values(),
+            *self.Al.values(),
+            *(b for t in self.S.values() for b in t),
+        ]
         return largest(vals) if vals else EPS
 
     def rubbing(self, pin) -> object:
@@ -154,8 +174,9 @@ class _Walk:
         self.slide = {}
         self._local = {}
         #: carried point -> how far its place on its body may be off (m), where not 0
-        self.spread = {cp.name: cp.spread for cp in motion.scene.points
-                       if getattr(cp, "spread", 0.0)}
+        self.spread = {
+            cp.name: cp.spread for cp in motion.scene.points if getattr(cp, "spread", 0.0)
+        }
 
     def condition(self, step):
         return self.motion.cond.get(step.index, 1.0)
@@ -179,17 +200,19 @@ class _Walk:
         links = [lk for lk in (*step.links, *step.needs_links) if lk in m.W]
         span = 0.0
         for i, x in enumerate(pts):
-            for y in pts[i + 1:]:
-                span = vmax(span, hypot(self.P[x][0] - self.P[y][0],
-                                        self.P[x][1] - self.P[y][1]))
+            for y in pts[i + 1 :]:
+                span = vmax(span, hypot(self.P[x][0] - self.P[y][0], self.P[x][1] - self.P[y][1]))
         w = largest([abs(m.W[lk]) for lk in links])
         w2 = largest([m.W[lk] * m.W[lk] + abs(m.Al[lk]) for lk in links if lk in m.Al])
         tiny = 1e-300
         vs, as_ = vmax(sz["velocity"], tiny), vmax(sz["acceleration"], tiny)
         speed = largest([hypot(*self.V[x]) for x in pts])
         fv = (speed + w * span) / vs
-        fa = (largest([hypot(*self.A[x]) for x in pts if x in self.A]) + w2 * span
-              + 2 * w * (speed + w * span)) / as_
+        fa = (
+            largest([hypot(*self.A[x]) for x in pts if x in self.A])
+            + w2 * span
+            + 2 * w * (speed + w * span)
+        ) / as_
         ls = sz["position"]
         got = (vmin(fv, 1.0), vmin(fa, 1.0), w * ls / vs, w2 * ls / as_, 2 * w * vs / as_)
         self._local[step.index] = got
@@ -231,9 +254,13 @@ def error_bounds(motion) -> ErrorBounds:
     far = vmax(far, 1.0)
     for st in plan.steps:  # each kind's rule is its step's error_bound
         needs, nlinks = st.needs, st.needs_links
-        p, v, a, w, al = st.error_bound(walk, st.rounding * EPS * far, worst(eP, needs),
-                                        worst(eV, needs, eW, nlinks),
-                                        worst(eA, needs, eAl, nlinks))
+        p, v, a, w, al = st.error_bound(
+            walk,
+            st.rounding * EPS * far,
+            worst(eP, needs),
+            worst(eV, needs, eW, nlinks),
+            worst(eA, needs, eAl, nlinks),
+        )
         p, v, a, w, al = _cap(p), _cap(v), _cap(a), _cap(w), _cap(al)
         for x in st.finds:
             eP[x], eV[x], eA[x] = p, v, a
@@ -303,11 +330,9 @@ def _given_spread(motion, res, sizes, eV, eA, eW, eAl, eS):
     # relative to itself, that is rw times its own size over the size of its kind
     vs, ws = vmax(sizes["velocity"], 1e-300), vmax(sizes["omega"], 1e-300)
     for k in eV:
-        eV[k] = eV[k] + rw * vmin(hypot(*motion.V[k]) / vs, 1.0) if k in motion.V \
-            else eV[k] + rw
+        eV[k] = eV[k] + rw * vmin(hypot(*motion.V[k]) / vs, 1.0) if k in motion.V else eV[k] + rw
     for k in eW:
-        eW[k] = eW[k] + rw * vmin(abs(motion.W[k]) / ws, 1.0) if k in motion.W \
-            else eW[k] + rw
+        eW[k] = eW[k] + rw * vmin(abs(motion.W[k]) / ws, 1.0) if k in motion.W else eW[k] + rw
     for t in (eA, eAl):
         for k in t:
             t[k] = t[k] + ra
@@ -322,19 +347,34 @@ def bounds_dict(sol, b=None) -> dict:
     already computed)."""
     b = error_bounds(sol) if b is None else b
     sc = sol.scene
-    d = {"relative_to": {k: float(v) for k, v in b.scales.items()},
-         "points": {p: {"position": b.P[p], "velocity": b.V[p], "acceleration": b.A[p]}
-                    for p in sc.point_names},
-         "links": {lk.key: {"omega": b.W.get(lk.key, EPS), "alpha": b.Al.get(lk.key, EPS)}
-                   for lk in sc.links}}
+    d = {
+        "relative_to": {k: float(v) for k, v in b.scales.items()},
+        "points": {
+            p: {"position": b.P[p], "velocity": b.V[p], "acceleration": b.A[p]}
+            for p in sc.point_names
+        },
+        "links": {
+            lk.key: {"omega": b.W.get(lk.key, EPS), "alpha": b.Al.get(lk.key, EPS)}
+            for lk in sc.links
+        },
+    }
     if sc.blocks:
-        d["sliders"] = {s.key: dict(zip(("sliding_velocity", "sliding_acceleration",
-                                         "coriolis"), b.S.get(s.key, (EPS,) * 3)))
-                        for s in sc.blocks}
+        d["sliders"] = {
+            s.key: dict(
+                zip(
+                    ("sliding_velocity", "sliding_acceleration", "coriolis"),
+                    b.S.get(s.key, (EPS,) * 3),
+                )
+            )
+            for s in sc.blocks
+        }
     if sc.wheel_paths:  # a driving wheel's centre along its line, keyed as in `rolling`
-        d["rolling"] = {s.wheel: dict(zip(("centre_velocity", "centre_acceleration"),
-                                          b.S.get(s.key, (EPS,) * 2)))
-                        for s in sc.wheel_paths}
+        d["rolling"] = {
+            s.wheel: dict(
+                zip(("centre_velocity", "centre_acceleration"), b.S.get(s.key, (EPS,) * 2))
+            )
+            for s in sc.wheel_paths
+        }
     if sc.pins:
         d["pins"] = {pin[0]: {"rubbing_velocity": b.rubbing(pin)} for pin in sol.plan.pins}
     if sc.loads and sc.input.second is None:

@@ -45,8 +45,17 @@ from ..common.tolerances import ROUNDING
 from .plan import Context, Plan
 from ..scene import GIVEN_KINDS
 
-__all__ = ["resolve", "quantity", "Resolution", "completed", "stated", "working", "held",
-           "placing", "place_roots"]
+__all__ = [
+    "resolve",
+    "quantity",
+    "Resolution",
+    "completed",
+    "stated",
+    "working",
+    "held",
+    "placing",
+    "place_roots",
+]
 
 
 class Resolution:
@@ -94,12 +103,16 @@ def resolve(plan: Plan) -> Resolution:
                 f"{given.names[0]} cannot move as {given.key} = {given.text} says: here it "
                 f"moves along {math.degrees(math.atan2(vy, vx)) % 180.0:.4g} deg (or the "
                 f"opposite way), {off:.3g} deg from the stated direction; give its direction "
-                "as the mechanism allows", step=f"[input] {given.key}")
+                "as the mechanism allows",
+                step=f"[input] {given.key}",
+            )
         if off > 1e-6:
-            notes.append(f"{given.key}: {given.names[0]} moves along "
-                         f"{math.degrees(math.atan2(vy, vx)) % 360.0:.6g} deg here, {off:.3g} "
-                         "deg from the stated direction: the stated speed is taken along its "
-                         "true direction")
+            notes.append(
+                f"{given.key}: {given.names[0]} moves along "
+                f"{math.degrees(math.atan2(vy, vx)) % 360.0:.6g} deg here, {off:.3g} "
+                "deg from the stated direction: the stated speed is taken along its "
+                "true direction"
+            )
         sign = 1.0 if cos > 0 else -1.0
         y1 = sign * speed1  # the speed along the true direction, per rad/s
         direction = (sign * vx / speed1, sign * vy / speed1)
@@ -122,8 +135,10 @@ def resolve(plan: Plan) -> Resolution:
         rate = given.rate if given.rate is not None else (0.0 if inp.alpha is None else None)
         alpha = None if rate is None else (rate - omega * omega * h) / y1
     if given.rate is None and inp.alpha is None:
-        notes.append(f"{_rate_key(given)} = 0 is taken: the given motion is steady (give "
-                     f"{_rate_key(given)} or the crank's acceleration to set it)")
+        notes.append(
+            f"{_rate_key(given)} = 0 is taken: the given motion is steady (give "
+            f"{_rate_key(given)} or the crank's acceleration to set it)"
+        )
     rate = given.rate if given.rate is not None else (0.0 if inp.alpha is None else None)
     if alpha is None:
         alpha = inp.alpha
@@ -138,14 +153,17 @@ def _rate_key(given):
 
 def _check(cond, label, given, inp):
     if not cond >= TOL.singular:
-        what = {"omega": f"link {''.join(given.names)} does not turn",
-                "vs": f"the block {given.names[0]} does not slide",
-                "v": f"{given.names[0]} does not move"}[given.kind]
+        what = {
+            "omega": f"link {''.join(given.names)} does not turn",
+            "vs": f"the block {given.names[0]} does not slide",
+            "v": f"{given.names[0]} does not move",
+        }[given.kind]
         raise SingularStepError(
             f"{label} cannot set the crank's speed here: at this position {what} whatever "
             f"the crank {inp.crank}'s speed (a dead centre for this input; condition "
             f"{condition_text(cond)}): the crank's speed would be unbounded",
-            step=f"[input] {given.key}")
+            step=f"[input] {given.key}",
+        )
 
 
 def completed(scene, res: Resolution):
@@ -176,27 +194,35 @@ def working(plan, fmt) -> list:
     what = g.key + (" (along its motion)" if g.kind == "v" else "")
     unit = "rad/s" if g.kind == "omega" else "m/s"
     rate_unit = "rad/s^2" if g.kind == "omega" else "m/s^2"
-    out = [f"the motion is given: {g.key} = {g.text} = {fmt(g.value)} {unit}; draw the "
-           f"velocity polygon for omega_{c} = 1 rad/s ccw: on it {what} = "
-           f"{fmt(res.per_omega)} {unit}; every velocity is proportional to omega_{c}, so "
-           f"omega_{c} = {fmt(g.value)} / {fmt(res.per_omega)} = {fmt(abs(res.omega))} rad/s "
-           f"{sense(res.omega)}"]
+    out = [
+        f"the motion is given: {g.key} = {g.text} = {fmt(g.value)} {unit}; draw the "
+        f"velocity polygon for omega_{c} = 1 rad/s ccw: on it {what} = "
+        f"{fmt(res.per_omega)} {unit}; every velocity is proportional to omega_{c}, so "
+        f"omega_{c} = {fmt(g.value)} / {fmt(res.per_omega)} = {fmt(abs(res.omega))} rad/s "
+        f"{sense(res.omega)}"
+    ]
     if res.rate is not None:
         rate_key = g.rate_key or _rate_key(g)
         # a true zero (the cylinder's line through the crank's pivot, square to it) is
         # written 0, on the size of the quantity per rad/s or, in m, of the crank
-        h = quiet(res.per_omega2, max(abs(res.per_omega), 1.0 if g.kind == "omega" else
-                                      plan.scene.link(c).length))
-        out.append(f"the acceleration polygon for the crank turning uniformly at 1 rad/s "
-                   f"gives {rate_key} = {fmt(h)} {rate_unit}; every "
-                   f"acceleration is alpha_{c} x (the velocity polygon at 1 rad/s) + "
-                   f"omega_{c}^2 x (that acceleration polygon), so alpha_{c} = "
-                   f"({fmt(res.rate)} - {fmt(abs(res.omega))}^2 x {fmt(h)}) / "
-                   f"{fmt(res.per_omega)} = {fmt(abs(res.alpha))} rad/s^2 "
-                   f"{sense(res.alpha)}")
+        h = quiet(
+            res.per_omega2,
+            max(abs(res.per_omega), 1.0 if g.kind == "omega" else plan.scene.link(c).length),
+        )
+        out.append(
+            f"the acceleration polygon for the crank turning uniformly at 1 rad/s "
+            f"gives {rate_key} = {fmt(h)} {rate_unit}; every "
+            f"acceleration is alpha_{c} x (the velocity polygon at 1 rad/s) + "
+            f"omega_{c}^2 x (that acceleration polygon), so alpha_{c} = "
+            f"({fmt(res.rate)} - {fmt(abs(res.omega))}^2 x {fmt(h)}) / "
+            f"{fmt(res.per_omega)} = {fmt(abs(res.alpha))} rad/s^2 "
+            f"{sense(res.alpha)}"
+        )
     if res.condition < TOL.warn:
-        out.append(f"condition {res.condition:.3g}: near a dead centre for this input, the "
-                   "crank's speed is very sensitive to the given motion")
+        out.append(
+            f"condition {res.condition:.3g}: near a dead centre for this input, the "
+            "crank's speed is very sensitive to the given motion"
+        )
     return out
 
 
@@ -207,6 +233,7 @@ def held(plan, theta):
     angle, from one evaluation at 1 rad/s. Where the quantity does not move (a dead centre)
     the crank's speed is unbounded: those angles are masked by the caller (inf)."""
     import numpy as np
+
     res, inp = plan.given, plan.scene.input
     g = inp.given
     ctx = Context(theta, 1.0, 0.0, array=True)
@@ -229,8 +256,9 @@ def held(plan, theta):
         # where the quantity hardly moves the crank's speed is unbounded (as resolve says)
         y1 = np.where(np.abs(y1) >= TOL.singular * size, y1, np.nan)
         omega = value / y1
-        alpha = (rate - omega * omega * h) / y1 if rate is not None else \
-            np.full_like(omega, inp.alpha)
+        alpha = (
+            (rate - omega * omega * h) / y1 if rate is not None else np.full_like(omega, inp.alpha)
+        )
     return omega, alpha
 
 
@@ -242,6 +270,7 @@ def _dir0(plan):
 
 
 # --------------------------------------------------------------------------- the position
+
 
 def placing(scene):
     """``g(P)``: how far the positions ``P`` are from the position the scene states
@@ -255,6 +284,7 @@ def placing(scene):
         def g(P):
             (ax, ay), (bx, by) = P[a], P[b]
             return ((bx - ax) ** 2 + (by - ay) ** 2) ** 0.5 - pl.value
+
         return g, None
     if pl.kind == "s":
         sl = scene.slider(pl.names[0])
@@ -264,6 +294,7 @@ def placing(scene):
         def g(P):
             px, py = P[x]
             return (px - qx) * ux + (py - qy) * uy - pl.value
+
         return g, None
     a, b = pl.names
     c, s_ = math.cos(pl.value), math.sin(pl.value)
@@ -277,6 +308,7 @@ def placing(scene):
     def ahead(P):
         (ax, ay), (bx, by) = P[a], P[b]
         return c * (bx - ax) + s_ * (by - ay) > 0
+
     return g, ahead
 
 
@@ -286,6 +318,7 @@ def place_roots(plan, grid=720):
     the last bit; with the plan's branches. Returns (roots, the range of the quantity seen
     over the turn as (min, max) or None)."""
     import numpy as np
+
     sc = plan.scene
     g, ahead = placing(sc)
     theta0 = sc.input.angle

@@ -39,8 +39,6 @@ from ..steps.rounding import vhypot as hypot  # |(x, y)| for floats or arrays
 __all__ = ["Motion", "evaluate", "hypot"]
 
 
-
-
 class Motion:
     """Positions, velocities and accelerations of a mechanism (SI, ccw positive).
 
@@ -68,8 +66,7 @@ class Motion:
         known = {"point": self.P, "link": self.W, "slider": self.S}[what]
         if what == "point" and name in self.P and not self.V:
             return SceneError(f"the velocities of {name} were not evaluated (positions only)")
-        return SceneError(f"no {what} {name!r} here; the {what}s are "
-                          + ", ".join(map(str, known)))
+        return SceneError(f"no {what} {name!r} here; the {what}s are " + ", ".join(map(str, known)))
 
     def position(self, point):
         """The position of ``point``, (x, y) in m."""
@@ -173,8 +170,18 @@ class Motion:
         return len(self.theta) if hasattr(self.theta, "__len__") else 1
 
 
-def evaluate(plan: Plan, theta=None, omega=None, alpha=None, *, dims: Dims | None = None,
-             upto: int = 2, array: bool = False, points=None, links=None) -> Motion:
+def evaluate(
+    plan: Plan,
+    theta=None,
+    omega=None,
+    alpha=None,
+    *,
+    dims: Dims | None = None,
+    upto: int = 2,
+    array: bool = False,
+    points=None,
+    links=None,
+) -> Motion:
     """Evaluate ``plan`` (at its own scene's dimensions, or at ``dims``) and return the
     :class:`Motion`. ``upto``: 0 positions only, 1 with velocities, 2 with accelerations.
     ``theta``/``omega``/``alpha`` default to the dimensions' own; with ``array=True`` they
@@ -183,13 +190,28 @@ def evaluate(plan: Plan, theta=None, omega=None, alpha=None, *, dims: Dims | Non
     if points is not None or links is not None:
         if dims is not None:
             keep = {st.index for st in plan.restricted(points or (), links or ()).steps}
-            dims = replace(dims, steps=tuple(p for st, p in zip(plan.steps, dims.steps)
-                                             if st.index in keep))
+            dims = replace(
+                dims, steps=tuple(p for st, p in zip(plan.steps, dims.steps) if st.index in keep)
+            )
         plan = plan.restricted(points or (), links or ())
     d = plan.dims if dims is None else dims
-    ctx = Context(d.theta if theta is None else theta, d.omega if omega is None else omega,
-                  d.alpha if alpha is None else alpha, array=array)
+    ctx = Context(
+        d.theta if theta is None else theta,
+        d.omega if omega is None else omega,
+        d.alpha if alpha is None else alpha,
+        array=array,
+    )
     m = plan.run(ctx, dims, upto)
-    return Motion(plan.scene, plan, ctx.theta, m.P, m.V if upto >= 1 else {},
-                  m.A if upto >= 2 else {}, m.W if upto >= 1 else {},
-                  m.Al if upto >= 2 else {}, m.S, ctx.cond, ctx.bad)
+    return Motion(
+        plan.scene,
+        plan,
+        ctx.theta,
+        m.P,
+        m.V if upto >= 1 else {},
+        m.A if upto >= 2 else {},
+        m.W if upto >= 1 else {},
+        m.Al if upto >= 2 else {},
+        m.S,
+        ctx.cond,
+        ctx.bad,
+    )

@@ -42,8 +42,18 @@ from ..common.errors import TOL, PolygonMethodError
 from ..scene import FixedPath, GuideSlider, Scene
 from ..steps import Carried, Context, Crank, Dyad, SliderDyad, SlottedLink, State
 
-__all__ = ["Plan", "Dims", "Bodies", "Crank", "Dyad", "SliderDyad", "SlottedLink", "Carried",
-           "Context", "State"]
+__all__ = [
+    "Plan",
+    "Dims",
+    "Bodies",
+    "Crank",
+    "Dyad",
+    "SliderDyad",
+    "SlottedLink",
+    "Carried",
+    "Context",
+    "State",
+]
 
 
 _new = object.__new__
@@ -145,8 +155,10 @@ class Plan:
     def __str__(self):
         lines = [f"plan: {len(self.steps)} steps"]
         for st in self.steps:
-            lines.append(f"  {st.index + 1}. {st.title}: finds "
-                         f"{', '.join(st.finds) or 'its length and rates (no new point)'}")
+            lines.append(
+                f"  {st.index + 1}. {st.title}: finds "
+                f"{', '.join(st.finds) or 'its length and rates (no new point)'}"
+            )
         return "\n".join(lines)
 
     # ----- only what is asked
@@ -209,8 +221,14 @@ class Plan:
             steps = self._instant_dimensions(scene, bodies)
         else:
             steps = tuple(st.dimensions(scene, bodies) for st in self.steps)
-        return Dims(dict(scene.ground), steps, inp.angle, inp.omega, inp.alpha,
-                    {p.point: p.radius for p in scene.pins})
+        return Dims(
+            dict(scene.ground),
+            steps,
+            inp.angle,
+            inp.omega,
+            inp.alpha,
+            {p.point: p.radius for p in scene.pins},
+        )
 
     def _instant_dimensions(self, scene: Scene, bodies) -> tuple:
         """Each step's dimensions, a step that needs the positions at the scene's instant
@@ -222,8 +240,9 @@ class Plan:
         candidate fails at the step before it all the same."""
         inp = scene.input
         ctx = Context(inp.angle, inp.omega, inp.alpha)
-        m = State(dict(scene.ground), {}, {}, dict(self.fixed_links), dict(self.fixed_links),
-                  {}, ctx)
+        m = State(
+            dict(scene.ground), {}, {}, dict(self.fixed_links), dict(self.fixed_links), {}, ctx
+        )
         out, placed, broken = [], 0, False
         for k, st in enumerate(self.steps):
             if not getattr(st, "instant_dimensions", False):
@@ -255,8 +274,15 @@ class Plan:
         else:
             ground, phases = dims.ground, self.bind(dims)
         zero = self._zero
-        m = State(dict(ground), dict(zero), dict(zero), dict(self.fixed_links),
-                  dict(self.fixed_links), {}, ctx)
+        m = State(
+            dict(ground),
+            dict(zero),
+            dict(zero),
+            dict(self.fixed_links),
+            dict(self.fixed_links),
+            {},
+            ctx,
+        )
         try:
             for f in phases[0]:
                 f(m)
@@ -309,8 +335,7 @@ class Plan:
             st, j = steps[i], i + 1
             key = st.group_key
             if key is not None:  # neighbours the kind can do in one go (points on one body)
-                while j < len(steps) and type(steps[j]) is type(st) and \
-                        steps[j].group_key == key:
+                while j < len(steps) and type(steps[j]) is type(st) and steps[j].group_key == key:
                     j += 1
             yield steps[i:j], prms[i:j]
             i = j
@@ -318,15 +343,19 @@ class Plan:
     def bind(self, dims: Dims) -> tuple:
         """(positions, velocities, accelerations): each the steps' phase functions, in
         order, for ``dims``."""
-        bound = [type(g[0]).bind_group(g, p) if len(g) > 1 else g[0].bind(p[0])
-                 for g, p in self._groups(dims)]
+        bound = [
+            type(g[0]).bind_group(g, p) if len(g) > 1 else g[0].bind(p[0])
+            for g, p in self._groups(dims)
+        ]
         return tuple(tuple(b[k] for b in bound) for k in range(3))
 
     def bind_instant(self, dims: Dims) -> tuple:
         """One function per step (or group of steps) doing its three phases in a row, for
         one instant at ``dims`` (floats)."""
-        return tuple(type(g[0]).bind_group_instant(g, p) if len(g) > 1
-                     else g[0].bind_instant(p[0]) for g, p in self._groups(dims))
+        return tuple(
+            type(g[0]).bind_group_instant(g, p) if len(g) > 1 else g[0].bind_instant(p[0])
+            for g, p in self._groups(dims)
+        )
 
     def _bind_own(self):
         object.__setattr__(self, "_phases", self.bind(self.dims))
@@ -337,8 +366,11 @@ class Plan:
         return self._instant
 
     def __getstate__(self):  # the bound phases are made again, not pickled
-        return {k: v for k, v in self.__dict__.items()
-                if k not in ("_zero", "_phases", "_instant", "_checked", "pin_table")}
+        return {
+            k: v
+            for k, v in self.__dict__.items()
+            if k not in ("_zero", "_phases", "_instant", "_checked", "pin_table")
+        }
 
     def __setstate__(self, state):
         for k, v in state.items():
@@ -353,15 +385,21 @@ class Plan:
         # only its one-instant functions)
         object.__setattr__(self, "_phases", None)
         object.__setattr__(self, "_instant", None)
-        object.__setattr__(self, "_checked", tuple((st.index, st) for st in self.steps
-                                                   if st.branching))
+        object.__setattr__(
+            self, "_checked", tuple((st.index, st) for st in self.steps if st.branching)
+        )
         # each sized pin with its radius at the plan's own dimensions, its pairs' links and
         # its one pair's (None where it joins more than two bodies), what
         # derived.rubbing_records reads, one instant at a time
         radii = self.dims.radii if self.dims is not None else {}
-        object.__setattr__(self, "pin_table", tuple(
-            (pin[0], radii.get(pin[0]), pin, pin[5], pin[5][0] if len(pin[5]) == 1 else None)
-            for pin in self.pins))
+        object.__setattr__(
+            self,
+            "pin_table",
+            tuple(
+                (pin[0], radii.get(pin[0]), pin, pin[5], pin[5][0] if len(pin[5]) == 1 else None)
+                for pin in self.pins
+            ),
+        )
 
     def evaluate(self, ctx, *, velocities=True, accelerations=True):
         """Run the plan at the compiled scene's dimensions: dicts ``P, V, A`` (point ->

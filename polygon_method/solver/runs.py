@@ -12,8 +12,7 @@ from .given import held
 from .kinematics import Motion
 from .plan import Context
 
-__all__ = ["run_arrays", "merge", "valid_mask", "branch_steps", "tune_malloc",
-           "array_motion"]
+__all__ = ["run_arrays", "merge", "valid_mask", "branch_steps", "tune_malloc", "array_motion"]
 
 _MALLOC_TUNED = []
 
@@ -28,6 +27,7 @@ def tune_malloc():
     try:
         import ctypes
         import sys
+
         if not sys.platform.startswith("linux"):
             return
         libc = ctypes.CDLL("libc.so.6")
@@ -72,15 +72,16 @@ def run_arrays(plan, theta, omega, alpha, vel=True, acc=True) -> Motion:
     with np.errstate(all="ignore"):
         m = plan.run(ctx, upto=upto)
     const = {}
-    fix = lambda d: {k: (_full(v[0], n, const), _full(v[1], n, const))  # noqa: E731
-                     for k, v in d.items()}
+
+    def fix(d):
+        return {k: (_full(v[0], n, const), _full(v[1], n, const)) for k, v in d.items()}
+
     P = fix(m.P)
     V = fix(m.V) if upto >= 1 else {}
     A = fix(m.A) if upto >= 2 else {}
     W = {k: _full(v, n, const) for k, v in m.W.items()} if upto >= 1 else {}
     Al = {k: _full(v, n, const) for k, v in m.Al.items()} if upto >= 2 else {}
-    S = ({k: tuple(_full(x, n, const) for x in v) for k, v in m.S.items()} if upto >= 1
-         else {})
+    S = {k: tuple(_full(x, n, const) for x in v) for k, v in m.S.items()} if upto >= 1 else {}
     cond = {i: _full(c, n, const) for i, c in ctx.cond.items()}
     bad = ctx.bad if ctx.bad is not None else np.zeros(n, dtype=bool)
     if unbounded is not None:
@@ -109,8 +110,9 @@ def merge(theta, frames) -> Motion:
     A = {k: (put(lambda f: f.A[k][0]), put(lambda f: f.A[k][1])) for k in any_fr.A}
     W = {k: put(lambda f: f.W[k]) for k in any_fr.W}
     Al = {k: put(lambda f: f.Al[k]) for k in any_fr.Al}
-    S = {k: tuple(put(lambda f, j=j: f.S[k][j]) for j in range(len(v)))
-         for k, v in any_fr.S.items()}
+    S = {
+        k: tuple(put(lambda f, j=j: f.S[k][j]) for j in range(len(v))) for k, v in any_fr.S.items()
+    }
     cond = {i: put(lambda f: f.cond[i]) for i in any_fr.cond}
     bad = np.zeros(n, dtype=bool)
     for idx, fr in frames.values():

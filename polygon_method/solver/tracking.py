@@ -33,13 +33,27 @@ from ..common.tolerances import FLOOR, ROUNDING, SAME
 from .compiler import compile_plan
 from .plan import Context
 from .domain import NEAR, TWO_PI, ChangePoint, Domain, LimitPosition, degrees_fn, fmt_deg
-from .runs import (array_motion, branch_steps, merge, run_arrays, tune_malloc,
-                   valid_mask)
+from .runs import array_motion, branch_steps, merge, run_arrays, tune_malloc, valid_mask
 from ..scene import Scene
 
-__all__ = ["Sweeper", "Domain", "LimitPosition", "ChangePoint", "run_arrays", "merge",
-           "valid_mask", "degrees_fn", "fmt_deg", "tune_malloc", "TWO_PI", "CHUNK",
-           "NEAR", "MAX_CYCLE_POINTS", "array_motion", "branch_steps"]
+__all__ = [
+    "Sweeper",
+    "Domain",
+    "LimitPosition",
+    "ChangePoint",
+    "run_arrays",
+    "merge",
+    "valid_mask",
+    "degrees_fn",
+    "fmt_deg",
+    "tune_malloc",
+    "TWO_PI",
+    "CHUNK",
+    "NEAR",
+    "MAX_CYCLE_POINTS",
+    "array_motion",
+    "branch_steps",
+]
 
 #: crank angles evaluated per pass (about 32k: the temporaries of one pass stay in cache)
 CHUNK = 32768
@@ -69,6 +83,7 @@ _WIDEST = 0.05
 #: the domain of each plan (a plan is one scene's content), found once
 _DOMAINS = weakref.WeakKeyDictionary()
 
+
 def _variant(plan, flips):
     """The plan with the branch (sigma) of the steps in ``flips`` reversed."""
     if not flips:
@@ -88,10 +103,12 @@ class Sweeper:
         self.scene = scene
         n = len(scene.point_names)
         if n > MAX_CYCLE_POINTS:  # every angle evaluates every point, and extremes are
-            raise SceneError(    # refined for each: minutes for thousands
+            raise SceneError(  # refined for each: minutes for thousands
                 f"the scene has {n} points: the crank's cycle (sweep, linkage, page, "
                 f"--animate) is followed for at most {MAX_CYCLE_POINTS}; solve and steps "
-                "take more", file=scene.file)
+                "take more",
+                file=scene.file,
+            )
         self.plan = compile_plan(scene)
         inp = scene.input
         self.theta0, self.omega, self.alpha = inp.angle, inp.omega, inp.alpha
@@ -104,8 +121,7 @@ class Sweeper:
         self.period = TWO_PI if self.driver.periodic else _block_span(scene, self.driver)
         dom = _DOMAINS.get(self.plan)
         if dom is None:
-            dom = _DOMAINS[self.plan] = (self._explore() if self.driver.periodic
-                                         else self._stroke())
+            dom = _DOMAINS[self.plan] = self._explore() if self.driver.periodic else self._stroke()
         self.domain = dom
         if not dom.periodic and dom.hi - dom.lo < _LOCKED * self.period / TWO_PI:
             lp = dom.limits[0] if dom.limits else None
@@ -113,15 +129,18 @@ class Sweeper:
             raise SingularStepError(
                 f"the block {self.driver.finds[0]} can move only {(dom.hi - dom.lo) / u:.2g} "
                 f"{scene.units} from its place in the scene: the linkage is locked there"
-                + (f" ({lp.why})" if lp else ""), step=lp.step if lp else None,
-                file=scene.file)
+                + (f" ({lp.why})" if lp else ""),
+                step=lp.step if lp else None,
+                file=scene.file,
+            )
         if dom.periodic and not dom.full_turn and dom.hi - dom.lo < _LOCKED:
             lp = dom.limits[0] if dom.limits else None
             raise SingularStepError(
                 f"the crank can move only {math.degrees(dom.hi - dom.lo):.2g} deg from its "
-                f"angle in the scene: the linkage is locked there"
-                + (f" ({lp.why})" if lp else ""), step=lp.step if lp else None,
-                file=scene.file)
+                f"angle in the scene: the linkage is locked there" + (f" ({lp.why})" if lp else ""),
+                step=lp.step if lp else None,
+                file=scene.file,
+            )
 
     def stated_branch(self) -> None:
         """Raise as :func:`~polygon_method.motion.solution.solve` does where the scene's own instant
@@ -145,9 +164,11 @@ class Sweeper:
             if llim is not None:  # cannot happen for a periodic motion; be safe
                 lo, full = llim.theta, False
             elif self._flips(lsegs[-1][2]) != self._flips(rsegs[-1][2]):
-                notes.append("after a full turn of the crank the linkage is on its other "
-                             "branch: the motion repeats only every two turns; the sweep "
-                             "shows the turn centred on the scene's instant")
+                notes.append(
+                    "after a full turn of the crank the linkage is on its other "
+                    "branch: the motion repeats only every two turns; the sweep "
+                    "shows the turn centred on the scene's instant"
+                )
             limits = tuple(x for x in (llim,) if x is not None)
             if not notes and full:
                 turns = self._turns(rsegs[-1][2], t0)
@@ -162,8 +183,16 @@ class Sweeper:
             limits = tuple(x for x in (llim, rlim) if x is not None)
         segs = self._joined([(b, a, p) for a, b, p in reversed(lsegs)] + list(rsegs))
         cps = tuple(sorted(lcps + rcps, key=lambda c: c.theta))
-        return Domain(lo, hi, full, tuple(segs), limits, cps, tuple(notes),
-                      turn_only=bool(notes) and full and notes[-1].startswith(_NOT_AGAIN))
+        return Domain(
+            lo,
+            hi,
+            full,
+            tuple(segs),
+            limits,
+            cps,
+            tuple(notes),
+            turn_only=bool(notes) and full and notes[-1].startswith(_NOT_AGAIN),
+        )
 
     def _joined(self, segs):
         """Neighbouring segments on the same branches joined into one."""
@@ -181,8 +210,13 @@ class Sweeper:
         k = np.arange(13.0)
         fr = run_arrays(plan, t0 + TWO_PI * k, self.omega, self.alpha, vel=False, acc=False)
         size = max((lk.length for lk in self.scene.links), default=1.0)
-        xy = np.array([c for p in fr.P.values() for c in (np.broadcast_to(p[0], k.shape),
-                                                           np.broadcast_to(p[1], k.shape))])
+        xy = np.array(
+            [
+                c
+                for p in fr.P.values()
+                for c in (np.broadcast_to(p[0], k.shape), np.broadcast_to(p[1], k.shape))
+            ]
+        )
         same = np.all(np.abs(xy - xy[:, :1]) <= SAME * size, axis=0)
         return next((int(i) for i in range(1, 13) if same[i]), None)
 
@@ -198,11 +232,13 @@ class Sweeper:
         segs = self._joined([(b, a, p) for a, b, p in reversed(lsegs)] + list(rsegs))
         cps = tuple(sorted(lcps + rcps, key=lambda c: c.theta))
         lo, hi = math.degrees(t0 - half), math.degrees(t0 + half)
-        note = (f"{_NOT_AGAIN}: the motion repeats every {n} turns (a wheel turns a fraction "
-                f"of a turn more per turn of the crank); the sweep, its ranges and extremes "
-                f"and the page take the whole period, {n} turns of the crank from {lo:.6g} to "
-                f"{hi:.6g} deg (centred on the scene's instant), angles written within it "
-                f"(0 to {360 * n} deg)")
+        note = (
+            f"{_NOT_AGAIN}: the motion repeats every {n} turns (a wheel turns a fraction "
+            f"of a turn more per turn of the crank); the sweep, its ranges and extremes "
+            f"and the page take the whole period, {n} turns of the crank from {lo:.6g} to "
+            f"{hi:.6g} deg (centred on the scene's instant), angles written within it "
+            f"(0 to {360 * n} deg)"
+        )
         return Domain(t0 - half, t0 + half, True, tuple(segs), (), cps, (note,), turns=n)
 
     def _repeats(self, n, t0) -> list:
@@ -211,11 +247,13 @@ class Sweeper:
         turn shown is the one centred on the scene's instant."""
         if n == 1:
             return []
-        when = (f"only every {n} turns" if n is not None else "not within 12 turns")
+        when = f"only every {n} turns" if n is not None else "not within 12 turns"
         lo, hi = math.degrees(t0 - math.pi), math.degrees(t0 + math.pi)
-        return [f"{_NOT_AGAIN}: the motion repeats {when} (a wheel turns a fraction of a "
-                "turn more per turn of the crank); ranges and extremes are over the turn "
-                f"centred on the scene's instant, the crank from {lo:.6g} to {hi:.6g} deg"]
+        return [
+            f"{_NOT_AGAIN}: the motion repeats {when} (a wheel turns a fraction of a "
+            "turn more per turn of the crank); ranges and extremes are over the turn "
+            f"centred on the scene's instant, the crank from {lo:.6g} to {hi:.6g} deg"
+        ]
 
     def _stroke(self) -> Domain:
         """The places a driving block reaches from the scene's on its branch: its stated
@@ -233,7 +271,10 @@ class Sweeper:
                     f"the block {self.driver.finds[0]} can travel {('back', 'on')[(direction + 1) // 2]} from its place "
                     f"without limit (nothing in the mechanism stops it within "
                     f"{self.period / sc.length_unit:.6g} {sc.units}): state its stroke, "
-                    "[input] stroke = [from, to]", file=sc.file, key="[input] stroke")
+                    "[input] stroke = [from, to]",
+                    file=sc.file,
+                    key="[input] stroke",
+                )
             if lim is None:
                 lim = LimitPosition(end, self.driver.label, self.driver.limit_why())
             limits.append(lim)
@@ -248,8 +289,9 @@ class Sweeper:
                 merged.append((a, b, p))
         segs = [(a, b, p) for a, b, p in merged if b > a] or merged[:1]
         cps = tuple(sorted(cps, key=lambda c: c.theta))
-        return Domain(ends[0], ends[1], False, tuple(segs), tuple(limits), cps, (), False,
-                      sc.length_unit)
+        return Domain(
+            ends[0], ends[1], False, tuple(segs), tuple(limits), cps, (), False, sc.length_unit
+        )
 
     def _flips(self, plan):
         return tuple(s.sigma for s in plan.steps if hasattr(s, "sigma"))
@@ -379,8 +421,9 @@ class Sweeper:
         if lo <= 1e-3 * scale and lo < 0.1 * hi:
             flipped = df < dk
             new = flipped_plan if flipped else plan
-            what = ("the branch continuous in velocity is followed" +
-                    (f" ({pt} passes to its other side)" if flipped else ""))
+            what = "the branch continuous in velocity is followed" + (
+                f" ({pt} passes to its other side)" if flipped else ""
+            )
             # where the condition is below a few times the singular limit, the values are
             # taken from both sides instead (see richardson)
             probe = _PROBE * k
@@ -388,11 +431,12 @@ class Sweeper:
             c2 = self._scout(new, np.array([tc + direction * probe])).cond[st.index][0]
             slope = max(min(c1, c2) / probe, 1e-12 / k)
             radius = min(max(NEAR * k, 4 * TOL.singular / slope), _WIDEST * k)
-            return new, ChangePoint(tc, st.label, pt, True, flipped, f"{where}; {what}",
-                                    radius)
-        why = (f"{where}, and both branches leave with the same velocity: which one the "
-               "linkage takes cannot be told (a third, phase-shifted crank would decide it); "
-               "the sweep stops here")
+            return new, ChangePoint(tc, st.label, pt, True, flipped, f"{where}; {what}", radius)
+        why = (
+            f"{where}, and both branches leave with the same velocity: which one the "
+            "linkage takes cannot be told (a third, phase-shifted crank would decide it); "
+            "the sweep stops here"
+        )
         return plan, ChangePoint(tc, st.label, pt, False, False, why, NEAR * k)
 
     # ----- evaluating
@@ -411,8 +455,10 @@ class Sweeper:
         """
         theta = np.asarray(theta, dtype=float)
         dom = self.domain
-        if len(dom.segments) == 1 and ((dom.full_turn and not dom.turn_only) or (
-                len(theta) and dom.lo <= theta.min() and theta.max() <= dom.hi)):
+        if len(dom.segments) == 1 and (
+            (dom.full_turn and not dom.turn_only)
+            or (len(theta) and dom.lo <= theta.min() and theta.max() <= dom.hi)
+        ):
             return run_arrays(dom.segments[0][2], theta, self.omega, self.alpha, vel, acc)
         t, _ = dom.map(theta)
         seg = self.segment_plans(t)
@@ -422,8 +468,10 @@ class Sweeper:
         frames = {}
         for s in np.unique(seg):
             idx = np.nonzero(seg == s)[0]
-            frames[int(s)] = (idx, run_arrays(dom.segments[int(s)][2], t[idx], self.omega,
-                                        self.alpha, vel, acc))
+            frames[int(s)] = (
+                idx,
+                run_arrays(dom.segments[int(s)][2], t[idx], self.omega, self.alpha, vel, acc),
+            )
         return merge(theta, frames)
 
     def near_change_points(self, theta):
@@ -463,8 +511,10 @@ class Sweeper:
         A = {k: (comb(lambda f: f.A[k][0]), comb(lambda f: f.A[k][1])) for k in base.A}
         W = {k: comb(lambda f: f.W[k]) for k in base.W}
         Al = {k: comb(lambda f: f.Al[k]) for k in base.Al}
-        S = {k: tuple(comb(lambda f, j=j: f.S[k][j]) for j in range(len(v)))
-             for k, v in base.S.items()}
+        S = {
+            k: tuple(comb(lambda f, j=j: f.S[k][j]) for j in range(len(v)))
+            for k, v in base.S.items()
+        }
         return array_motion(th, P, V, A, W, Al, S, base.cond, base.bad)
 
 
@@ -473,7 +523,9 @@ def _block_span(scene, driver) -> float:
     either side of its place: twice the links' lengths and the ground's extent (m)."""
     path = scene.slider(driver.finds[0])
     through = getattr(path, "through", None)  # a collar on its rod: from the rod's pivot
-    return 2.0 * sum(lk.length for lk in scene.links) + max(
-        (math.dist(xy, through) for xy in scene.ground.values()), default=0.0) \
-        if through is not None else 2.0 * sum(lk.length for lk in scene.links)
-
+    return (
+        2.0 * sum(lk.length for lk in scene.links)
+        + max((math.dist(xy, through) for xy in scene.ground.values()), default=0.0)
+        if through is not None
+        else 2.0 * sum(lk.length for lk in scene.links)
+    )

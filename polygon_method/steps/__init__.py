@@ -33,11 +33,19 @@ Adding a kind: write its module (a frozen ``Step`` subclass and a ``recognise(g,
 function) and add it to :data:`TIERS`.
 """
 
-from . import (carried, dyad, peg, rack, rolling, slider, slotted, triad, wheel_centre,
-               yoke)
+from . import carried, dyad, peg, rack, rolling, slider, slotted, triad, wheel_centre, yoke
 from .block import BlockDriver
-from .base import (Construction, Context, DirectionLine, State, Step, Vector, image_label,
-                   image_name, pole_text)
+from .base import (
+    Construction,
+    Context,
+    DirectionLine,
+    State,
+    Step,
+    Vector,
+    image_label,
+    image_name,
+    pole_text,
+)
 from .carried import Carried
 from .crank import Crank
 from .cylinder import CylinderStep
@@ -53,12 +61,43 @@ from .triad import Triad
 #: order) every kind of the first tier in turn; the next tier only when no point of the
 #: tiers before can be found. The driver (a crank, or a block on a fixed guide) is the plan's
 #: first step and is not recognised.
-TIERS = ((rolling.recognise, wheel_centre.recognise, rack.recognise, carried.recognise,
-          slider.recognise, dyad.recognise, peg.recognise, yoke.recognise),
-         (slotted.recognise,),
-         (triad.recognise,))
+TIERS = (
+    (
+        rolling.recognise,
+        wheel_centre.recognise,
+        rack.recognise,
+        carried.recognise,
+        slider.recognise,
+        dyad.recognise,
+        peg.recognise,
+        yoke.recognise,
+    ),
+    (slotted.recognise,),
+    (triad.recognise,),
+)
 
-__all__ = ["TIERS", "Step", "Context", "State", "Crank", "BlockDriver", "Dyad", "SliderDyad",
-           "SlottedLink", "Carried", "CylinderStep", "RollingWheel", "Triad", "Peg", "Yoke", "Construction",
-           "Vector", "DirectionLine", "image_label", "image_name", "pole_text", "under_label",
-           "slot_labels"]
+__all__ = [
+    "TIERS",
+    "Step",
+    "Context",
+    "State",
+    "Crank",
+    "BlockDriver",
+    "Dyad",
+    "SliderDyad",
+    "SlottedLink",
+    "Carried",
+    "CylinderStep",
+    "RollingWheel",
+    "Triad",
+    "Peg",
+    "Yoke",
+    "Construction",
+    "Vector",
+    "DirectionLine",
+    "image_label",
+    "image_name",
+    "pole_text",
+    "under_label",
+    "slot_labels",
+]

@@ -15,8 +15,24 @@ from types import MappingProxyType
 from ..common.errors import TOL, AssemblyError, SingularStepError
 from .rounding import two_lines
 
-__all__ = ["REQUIRED", "OPTIONAL", "Context", "State", "Step", "Vector", "DirectionLine", "Construction",
-           "image_name", "image_label", "numbered", "pole_text", "unit", "sub", "add", "perp"]
+__all__ = [
+    "REQUIRED",
+    "OPTIONAL",
+    "Context",
+    "State",
+    "Step",
+    "Vector",
+    "DirectionLine",
+    "Construction",
+    "image_name",
+    "image_label",
+    "numbered",
+    "pole_text",
+    "unit",
+    "sub",
+    "add",
+    "perp",
+]
 
 
 class Context:
@@ -26,8 +42,7 @@ class Context:
     crank's angle, speed and acceleration; for a driving block, its place s along its
     guide, its velocity vs and acceleration as."""
 
-    __slots__ = ("theta", "omega", "alpha", "array", "cond", "bad", "failures", "np",
-                 "cos", "sin")
+    __slots__ = ("theta", "omega", "alpha", "array", "cond", "bad", "failures", "np", "cos", "sin")
 
     def __init__(self, theta, omega, alpha, *, array=False):
         self.theta, self.omega, self.alpha = theta, omega, alpha
@@ -37,6 +52,7 @@ class Context:
         self.failures = {}  # array mode: step index -> mask
         if array:
             import numpy as np
+
             self.np = np
             self.cos, self.sin = np.cos, np.sin
         else:
@@ -54,7 +70,7 @@ class Context:
             return np.sqrt(np.maximum(disc, 0.0))
         if disc < -TOL.closure * scale2:
             raise AssemblyError(why(), step=step.label)
-        return disc ** 0.5 if disc > 0 else 0.0
+        return disc**0.5 if disc > 0 else 0.0
 
     def fail(self, step, mask):
         """Mark the positions in ``mask`` where ``step`` fails (array mode): they are left out of
@@ -142,9 +158,27 @@ class State:
 #: ``limit_why``      why the linkage cannot be assembled beyond its limit position
 #: ``condition_column`` its condition's column in a sweep summary (or None)
 #: ``transmission``   the transmission angle its condition measures, in words (or None)
-REQUIRED = ("kind", "finds", "links", "needs", "title", "params", "dimensions", "place",
-            "bind", "reach", "bodies", "orient", "position_words", "construction",
-            "singular_why", "warning", "limit_why", "condition_column", "transmission")
+REQUIRED = (
+    "kind",
+    "finds",
+    "links",
+    "needs",
+    "title",
+    "params",
+    "dimensions",
+    "place",
+    "bind",
+    "reach",
+    "bodies",
+    "orient",
+    "position_words",
+    "construction",
+    "singular_why",
+    "warning",
+    "limit_why",
+    "condition_column",
+    "transmission",
+)
 
 #: what a kind may leave to the base class, each default right for most kinds: ``branching``
 #: (False: one assembly), ``image_by_similar_triangle``, ``draws_relative``,
@@ -169,13 +203,42 @@ REQUIRED = ("kind", "finds", "links", "needs", "title", "params", "dimensions", 
 #: driver that does not turn about the frame but about an instantaneous centre: its omega;
 #: None), ``input_items`` (the step table's heading and lines for the input; None: the
 #: views'), ``driver_name`` (body 2 of the centres' numbering: "the driving block A")
-OPTIONAL = ("periodic", "parameter_words", "input_scales", "input_words", "effort_words",
-            "parameter", "parameter_scale", "effort_key", "input_record", "drive_caption",
-            "travel", "body_omega", "input_items", "driver_name",
-            "assemble", "auxiliary", "branching", "image_by_similar_triangle", "draws_relative",
-            "other_assembly_mistake", "needs_links", "bind_instant", "group_key",
-            "bind_group", "bind_group_instant", "rounding", "error_bound", "contacts",
-            "contact_motion", "shapes", "produced", "drawn", "output", "default_hint")
+OPTIONAL = (
+    "periodic",
+    "parameter_words",
+    "input_scales",
+    "input_words",
+    "effort_words",
+    "parameter",
+    "parameter_scale",
+    "effort_key",
+    "input_record",
+    "drive_caption",
+    "travel",
+    "body_omega",
+    "input_items",
+    "driver_name",
+    "assemble",
+    "auxiliary",
+    "branching",
+    "image_by_similar_triangle",
+    "draws_relative",
+    "other_assembly_mistake",
+    "needs_links",
+    "bind_instant",
+    "group_key",
+    "bind_group",
+    "bind_group_instant",
+    "rounding",
+    "error_bound",
+    "contacts",
+    "contact_motion",
+    "shapes",
+    "produced",
+    "drawn",
+    "output",
+    "default_hint",
+)
 
 
 @dataclass(frozen=True)
@@ -196,11 +259,16 @@ class Step:
         """The step contract (:data:`REQUIRED`), checked when a kind is defined: a kind
         that leaves a member to this base class is refused at import."""
         super().__init_subclass__(**kw)
-        missing = [name for name in REQUIRED
-                   if not any(name in vars(k) for k in cls.__mro__[:-1] if k is not Step)]
+        missing = [
+            name
+            for name in REQUIRED
+            if not any(name in vars(k) for k in cls.__mro__[:-1] if k is not Step)
+        ]
         if missing:
-            raise TypeError(f"step kind {cls.__name__} does not give {', '.join(missing)} "
-                            "(the step contract: polygon_method.steps.base.REQUIRED)")
+            raise TypeError(
+                f"step kind {cls.__name__} does not give {', '.join(missing)} "
+                "(the step contract: polygon_method.steps.base.REQUIRED)"
+            )
 
     #: the name of the kind ("crank", "dyad", ...), as in the JSON ``steps``
     kind = "step"
@@ -300,10 +368,12 @@ class Step:
         calling the same module-level formulas (the numbers are the same to the last bit)."""
         position, velocity, acceleration = self.bind(prm)
         if not self.branching:
+
             def instant(m):
                 position(m)
                 velocity(m)
                 acceleration(m)
+
             return instant
         i, step = self.index, self
 
@@ -314,6 +384,7 @@ class Step:
                 raise step.singular(c)
             velocity(m)
             acceleration(m)
+
         return instant
 
     @classmethod
@@ -330,6 +401,7 @@ class Step:
                     raise st.singular(m.cond[st.index])
             velocity(m)
             acceleration(m)
+
         return instant
 
     def singular(self, c):
@@ -360,8 +432,9 @@ class Step:
         ``k``. ``walk`` (:mod:`polygon_method.solver.errorbound`) holds the motion, the sizes the
         bounds are relative to (``walk.sizes``, ``walk.ratio``) and the step's condition
         (``walk.condition(step)``). By default: two direction lines (:mod:`.rounding`)."""
-        return two_lines(walk.condition(self), walk.ratio, walk.own(self, k), p_in, v_in,
-                         a_in, walk.couple(self))
+        return two_lines(
+            walk.condition(self), walk.ratio, walk.own(self, k), p_in, v_in, a_in, walk.couple(self)
+        )
 
     #: steps of one kind next to each other with the same key may be bound together
     #: (``bind_group``): the same formulas, fewer calls
@@ -583,8 +656,9 @@ def absolute(sol, X, D, phase):
     """Vector from the pole to the image of X (v_X or a_X)."""
     o = "o" if phase == "velocity" else "o'"
     sym = "v" if phase == "velocity" else "a"
-    return Vector((0.0, 0.0), D[X], f"{o}{image_label(sol, X, phase)}", "absolute",
-                  f"{sym}_{X}", "")
+    return Vector(
+        (0.0, 0.0), D[X], f"{o}{image_label(sol, X, phase)}", "absolute", f"{sym}_{X}", ""
+    )
 
 
 def centripetal(sol, X, B, link, ph):
@@ -594,7 +668,11 @@ def centripetal(sol, X, B, link, ph):
     start = sol.A[B]
     end = add(start, (-w * w * r[0], -w * w * r[1]))
     L = math.hypot(*r)
-    return Vector(start, end, f"{image_label(sol, B, ph)}{X.lower()}c", "centripetal",
-                  f"centripetal of {X}{B}",
-                  f"v_{X}{B}^2 / {X}{B} = {w * w * L:.4g} m/s^2, parallel to {X}{B}, "
-                  f"towards {B}")
+    return Vector(
+        start,
+        end,
+        f"{image_label(sol, B, ph)}{X.lower()}c",
+        "centripetal",
+        f"centripetal of {X}{B}",
+        f"v_{X}{B}^2 / {X}{B} = {w * w * L:.4g} m/s^2, parallel to {X}{B}, towards {B}",
+    )

@@ -164,8 +164,13 @@ class BlockDriver(Step):
         """The JSON ``input``: the block, its place s, velocity vs and acceleration as along
         its guide (SI), the guide's direction and its stated stroke."""
         inp = scene.input
-        d = {"block": self.point, "s": inp.angle, "vs": inp.omega, "as": inp.alpha,
-             "direction": list(scene.slider(self.point).u)}
+        d = {
+            "block": self.point,
+            "s": inp.angle,
+            "vs": inp.omega,
+            "as": inp.alpha,
+            "direction": list(scene.slider(self.point).u),
+        }
         if inp.stroke is not None:
             d["stroke"] = list(inp.stroke)
         return d
@@ -175,10 +180,11 @@ class BlockDriver(Step):
     def drive_caption(self, scene):
         """The line under the drawings: the block's place, its velocity and acceleration."""
         inp = scene.input
-        return (f"block {self.point} at s = {in_units(inp.angle, scene.length_unit)} "
-                f"{scene.units}, {abs(inp.omega):.4g} m/s {self.sense(inp.omega)}"
-                + (f", {abs(inp.alpha):.4g} m/s² {self.sense(inp.alpha)}" if inp.alpha
-                   else ""))
+        return (
+            f"block {self.point} at s = {in_units(inp.angle, scene.length_unit)} "
+            f"{scene.units}, {abs(inp.omega):.4g} m/s {self.sense(inp.omega)}"
+            + (f", {abs(inp.alpha):.4g} m/s² {self.sense(inp.alpha)}" if inp.alpha else "")
+        )
 
     def input_scales(self, scene):
         """(v, a, omega, alpha): the least sizes of each kind the input sets (the error
@@ -193,17 +199,22 @@ class BlockDriver(Step):
         acceleration along the guide."""
         inp, u = scene.input, scene.length_unit
         vs, a_s = inp.omega, inp.alpha
-        words = (f"block {self.point} on {self.where} at s_{self.point} = "
-                 f"{in_units(inp.angle, u)} {scene.units} from {self.origin}, moving at "
-                 f"{abs(vs):.6g} m/s {self.sense(vs)}")
-        return words + (f", accelerating at {abs(a_s):.6g} m/s^2 {self.sense(a_s)}" if a_s
-                        else ", steadily")
+        words = (
+            f"block {self.point} on {self.where} at s_{self.point} = "
+            f"{in_units(inp.angle, u)} {scene.units} from {self.origin}, moving at "
+            f"{abs(vs):.6g} m/s {self.sense(vs)}"
+        )
+        return words + (
+            f", accelerating at {abs(a_s):.6g} m/s^2 {self.sense(a_s)}" if a_s else ", steadily"
+        )
 
     def effort_words(self, effort):
         """The driving force on the block along its guide, from the power balance
         (F vs + sum of the loads' powers = 0)."""
-        return (f"input force on block {self.point}: {abs(effort):.4g} N {self.sense(effort)}"
-                " along the guide (power balance, no friction or inertia)")
+        return (
+            f"input force on block {self.point}: {abs(effort):.4g} N {self.sense(effort)}"
+            " along the guide (power balance, no friction or inertia)"
+        )
 
     def parameter_words(self):
         """What the motion's parameter is, in words (a sweep's domain, a table's column)."""
@@ -243,8 +254,10 @@ class BlockDriver(Step):
     def position_words(self, L, which, place):
         """The configuration diagram's line for this step (``L`` writes a length; ``place``
         the block's place s, written)."""
-        return (f"{self.point}: on {self.where} through {self.origin}, {self.point} at "
-                f"s_{self.point} = {place} from {self.origin} along it")
+        return (
+            f"{self.point}: on {self.where} through {self.origin}, {self.point} at "
+            f"s_{self.point} = {place} from {self.origin} along it"
+        )
 
     def construction(self, sol, ph):
         X = self.point
@@ -255,29 +268,37 @@ class BlockDriver(Step):
         sense = self.sense
         if ph == "velocity":
             v = absolute(sol, X, sol.V, ph)
-            text = (f"from {o} draw {o}{lab} = {abs(vs):.4g} m/s along the guide "
-                    f"({sense(vs)}): the block {X}'s velocity, given")
-            return Construction(self.index, self.title, ph, lab, sol.V[X], (), (), (v,), text,
-                                cond)
+            text = (
+                f"from {o} draw {o}{lab} = {abs(vs):.4g} m/s along the guide "
+                f"({sense(vs)}): the block {X}'s velocity, given"
+            )
+            return Construction(self.index, self.title, ph, lab, sol.V[X], (), (), (v,), text, cond)
         a = absolute(sol, X, sol.A, ph)
         if a_s:
-            text = (f"from {o} draw {o}{lab} = {abs(a_s):.4g} m/s^2 along the guide "
-                    f"({sense(a_s)}): the block {X}'s acceleration, given")
+            text = (
+                f"from {o} draw {o}{lab} = {abs(a_s):.4g} m/s^2 along the guide "
+                f"({sense(a_s)}): the block {X}'s acceleration, given"
+            )
             found = (a,)
         else:
-            text = (f"{lab} is at {o}: the block {X} moves steadily along its fixed guide (no "
-                    "acceleration)")
+            text = (
+                f"{lab} is at {o}: the block {X} moves steadily along its fixed guide (no "
+                "acceleration)"
+            )
             found = ()
-        return Construction(self.index, self.title, ph, lab, sol.A[X], (), (), found, text,
-                            cond)
+        return Construction(self.index, self.title, ph, lab, sol.A[X], (), (), found, text, cond)
 
     def sense(self, value):
         """Which way a signed value along the guide points, in the book's words."""
         ux, uy = self.path.u
         if value < 0:
             ux, uy = -ux, -uy
-        for (wx, wy), word in (((1, 0), "to the right"), ((-1, 0), "to the left"),
-                               ((0, 1), "upwards"), ((0, -1), "downwards")):
+        for (wx, wy), word in (
+            ((1, 0), "to the right"),
+            ((-1, 0), "to the left"),
+            ((0, 1), "upwards"),
+            ((0, -1), "downwards"),
+        ):
             if abs(ux - wx) < 1e-12 and abs(uy - wy) < 1e-12:
                 return word
         return f"at {math.degrees(math.atan2(uy, ux)) % 360:.4g} deg"

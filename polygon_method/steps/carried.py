@@ -193,6 +193,7 @@ class Carried(Step):
         bit (a test holds the two roads equal)."""
         p, q, items, img = Carried._group(steps, prms)
         if img is not _image:  # dimensions not plain floats: the formula itself
+
             def instant(m):
                 P = m.P
                 V = m.V
@@ -265,8 +266,9 @@ class Carried(Step):
         x = self.point
         if self.p in P and self.q in P and x in P:
             (px, py), (ax, ay), (bx, by) = P[x], P[self.p], P[self.q]
-            gain = 1.0 + (vhypot(px - ax, py - ay) + vhypot(px - bx, py - by)) \
-                / vhypot(bx - ax, by - ay)
+            gain = 1.0 + (vhypot(px - ax, py - ay) + vhypot(px - bx, py - by)) / vhypot(
+                bx - ax, by - ay
+            )
         else:
             gain = 1.0
         kp, kv, ka = walk.own(self, k)
@@ -303,13 +305,28 @@ class Carried(Step):
         poles = [P for P in (p, q) if lab(P) != own(P)]
         at_pole = "".join(f" ({own(P)} at the pole {lab(P)})" for P in poles)
         if self.mu == 0:
-            text = (f"{own(p)}{lab(X)} / {own(p)}{own(q)} = {p}{X} / {p}{q} = {self.lam:.4g}: "
-                    f"{lab(X)} on {own(p)}{own(q)}"
-                    + (" produced" if not 0 <= self.lam <= 1 else "") + at_pole)
+            text = (
+                f"{own(p)}{lab(X)} / {own(p)}{own(q)} = {p}{X} / {p}{q} = {self.lam:.4g}: "
+                f"{lab(X)} on {own(p)}{own(q)}"
+                + (" produced" if not 0 <= self.lam <= 1 else "")
+                + at_pole
+            )
         else:
-            text = (f"triangle {own(p)}{own(q)}{lab(X)}{at_pole} similar to {p}{q}{X}, read "
-                    f"the same way round ({'ccw' if self.mu > 0 else 'cw'}): {lab(X)} is the "
-                    f"image of {X}")
+            text = (
+                f"triangle {own(p)}{own(q)}{lab(X)}{at_pole} similar to {p}{q}{X}, read "
+                f"the same way round ({'ccw' if self.mu > 0 else 'cw'}): {lab(X)} is the "
+                f"image of {X}"
+            )
         found = (absolute(sol, X, D, ph), relative(sol, X, p, D, ph))
-        return Construction(self.index, self.title, ph, lab(X), D[X], (), (), found, text,
-                            sol.conditions.get(self.index, 1.0))
+        return Construction(
+            self.index,
+            self.title,
+            ph,
+            lab(X),
+            D[X],
+            (),
+            (),
+            found,
+            text,
+            sol.conditions.get(self.index, 1.0),
+        )

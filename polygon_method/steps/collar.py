@@ -43,8 +43,19 @@ from ..common.errors import TOL, MobilityError, SingularStepError
 from ..common.numbers import in_units
 from ..scene import GuideSlider
 from . import dyad
-from .base import (Construction, DirectionLine, Step, Vector, absolute, add, image_label,
-                   perp, pole_text, sub, unit)
+from .base import (
+    Construction,
+    DirectionLine,
+    Step,
+    Vector,
+    absolute,
+    add,
+    image_label,
+    perp,
+    pole_text,
+    sub,
+    unit,
+)
 from .block import BlockDriver
 from .relations import coriolis, rigid_acceleration, rigid_velocity
 from .slotted import under_label
@@ -71,8 +82,7 @@ def acceleration(d1x, d1y, d2x, d2y, wx, wy, vs, a_s, w_r, w_d, d=None):
     """(al_r, al_D, aCx, aCy, corx, cory): the rod's and DC's alpha, the collar's
     acceleration and the Coriolis component 2 w_r vs perp(w)."""
     cx, cy = coriolis(w_r, vs, wx, wy)
-    out = dyad.acceleration(d1x, d1y, d2x, d2y, w_r, w_d, a_s * wx + cx, a_s * wy + cy,
-                            0.0, 0.0, d)
+    out = dyad.acceleration(d1x, d1y, d2x, d2y, w_r, w_d, a_s * wx + cx, a_s * wy + cy, 0.0, 0.0, d)
     return out + (cx, cy)
 
 
@@ -92,7 +102,10 @@ def driver(g, scene, mobility):
             f"frame at {'both ends: it cannot turn' if pivots else 'neither end'}: a driving "
             "collar's rod turns about one fixed pivot (put it in [ground]); a collar on a "
             "rod that a linkage moves is a second input ([input.second] block, beside a "
-            "crank)", file=scene.file, key=key)
+            "crank)",
+            file=scene.file,
+            key=key,
+        )
     K = pivots[0]
     N = rod.other(K)
     links = [lk for lk in scene.links if name in lk.points and lk.key != rod.key]
@@ -103,18 +116,39 @@ def driver(g, scene, mobility):
             f"mobility {m} (Gruebler: 3(n-1) - 2j): the collar {name}'s sliding along "
             f"{rod.key} sets one motion; the rod's turning needs one more relation: pin "
             f"{name} to a link about a fixed pivot (an inverted slider crank)"
-            + (", or drive the rod too: [input] crank = \"" + rod.key + "\" with the "
-               f"collar as [input.second] block = \"{name}\"" if m == 2 else ""),
-            file=scene.file, key=key)
+            + (
+                ', or drive the rod too: [input] crank = "' + rod.key + '" with the '
+                f'collar as [input.second] block = "{name}"'
+                if m == 2
+                else ""
+            ),
+            file=scene.file,
+            key=key,
+        )
     crank = to_ground[0]
     D = crank.other(name)
     if D == K:
-        raise MobilityError(f"the link {crank.key} joins the collar {name} to the rod's own "
-                            f"pivot {K}: the collar cannot slide", file=scene.file, key=key)
-    return CollarDriver(0, point=name, rod=rod.key, pivot=K, end=N, rod_length=rod.length,
-                        link=crank.key, fixed=D, length=crank.length,
-                        sense_first=1.0 if sl.first == K else -1.0, unit=g.unit,
-                        uname=g.uname, origin=K)
+        raise MobilityError(
+            f"the link {crank.key} joins the collar {name} to the rod's own "
+            f"pivot {K}: the collar cannot slide",
+            file=scene.file,
+            key=key,
+        )
+    return CollarDriver(
+        0,
+        point=name,
+        rod=rod.key,
+        pivot=K,
+        end=N,
+        rod_length=rod.length,
+        link=crank.key,
+        fixed=D,
+        length=crank.length,
+        sense_first=1.0 if sl.first == K else -1.0,
+        unit=g.unit,
+        uname=g.uname,
+        origin=K,
+    )
 
 
 @dataclass(frozen=True)
@@ -252,8 +286,9 @@ class CollarDriver(BlockDriver):
                 d = m.ctx.safe(d, step)
             vs, a_s = m.ctx.omega, m.ctx.alpha
             w_r, w_d = m.W[rod], m.W[link]
-            al_r, al_d, ax, ay, cx, cy = acceleration(d1x, d1y, d2x, d2y, wx, wy, vs, a_s,
-                                                      w_r, w_d, d)
+            al_r, al_d, ax, ay, cx, cy = acceleration(
+                d1x, d1y, d2x, d2y, wx, wy, vs, a_s, w_r, w_d, d
+            )
             m.Al[rod], m.Al[link] = al_r, al_d
             m.A[C] = (ax, ay)
             (kx, ky), (nx, ny) = m.P[K], m.P[N]
@@ -291,19 +326,20 @@ class CollarDriver(BlockDriver):
             m.W[rod], m.W[link] = w_r, w_d
             m.V[C] = (vx, vy)
             m.V[N] = rigid_velocity(nx - kx, ny - ky, w_r)
-            al_r, al_d, ax, ay, cx, cy = acceleration(d1x, d1y, d2x, d2y, wx, wy, vs, a_s,
-                                                      w_r, w_d, d)
+            al_r, al_d, ax, ay, cx, cy = acceleration(
+                d1x, d1y, d2x, d2y, wx, wy, vs, a_s, w_r, w_d, d
+            )
             m.Al[rod], m.Al[link] = al_r, al_d
             m.A[C] = (ax, ay)
             m.A[N] = rigid_acceleration(nx - kx, ny - ky, w_r, al_r)
             m.S[C] = [e * vs, e * a_s, cx, cy]
+
         return instant
 
     # ----- the driver protocol (the rest is the driving block's)
     def parameter(self, scene) -> tuple:
         """(name, symbol, unit): the collar's place along its rod from the pivot."""
-        return (f"place of collar {self.point} on {self.rod}", f"s_{self.point}",
-                f" {scene.units}")
+        return (f"place of collar {self.point} on {self.rod}", f"s_{self.point}", f" {scene.units}")
 
     def parameter_scale(self, scene) -> float:
         """The length along the rod that plays the part of a crank's radian: the link DC's
@@ -319,8 +355,16 @@ class CollarDriver(BlockDriver):
         its sliding velocity vs and acceleration as relative to the rod (SI, signed
         outward: from the pivot towards the rod's other end), its stated stroke."""
         inp = scene.input
-        d = {"block": self.point, "collar": True, "rod": self.rod, "pivot": self.pivot,
-             "s": inp.angle, "vs": inp.omega, "as": inp.alpha, "sense": "outward"}
+        d = {
+            "block": self.point,
+            "collar": True,
+            "rod": self.rod,
+            "pivot": self.pivot,
+            "s": inp.angle,
+            "vs": inp.omega,
+            "as": inp.alpha,
+            "sense": "outward",
+        }
         if inp.stroke is not None:
             d["stroke"] = list(inp.stroke)
         return d
@@ -329,30 +373,36 @@ class CollarDriver(BlockDriver):
 
     def drive_caption(self, scene):
         inp = scene.input
-        return (f"collar {self.point} at {self.pivot}{self.point} = "
-                f"{in_units(inp.angle, scene.length_unit)} {scene.units}, sliding "
-                f"{abs(inp.omega):.4g} m/s {self.sense(inp.omega)} along {self.rod}"
-                + (f", {abs(inp.alpha):.4g} m/s² {self.sense(inp.alpha)}" if inp.alpha
-                   else ""))
+        return (
+            f"collar {self.point} at {self.pivot}{self.point} = "
+            f"{in_units(inp.angle, scene.length_unit)} {scene.units}, sliding "
+            f"{abs(inp.omega):.4g} m/s {self.sense(inp.omega)} along {self.rod}"
+            + (f", {abs(inp.alpha):.4g} m/s² {self.sense(inp.alpha)}" if inp.alpha else "")
+        )
 
     def input_words(self, scene):
         """The printed solution's line for the input: the collar's place on its rod and
         its sliding relative to the rod."""
         inp, u = scene.input, scene.length_unit
         vs, a_s = inp.omega, inp.alpha
-        words = (f"collar {self.point} on the rod {self.rod} (pivoted at {self.pivot}) at "
-                 f"s_{self.point} = {self.pivot}{self.point} = {in_units(inp.angle, u)} "
-                 f"{scene.units}, sliding at {abs(vs):.6g} m/s {self.sense(vs)} relative to "
-                 "the rod")
-        return words + (f", accelerating at {abs(a_s):.6g} m/s^2 {self.sense(a_s)}" if a_s
-                        else ", steadily")
+        words = (
+            f"collar {self.point} on the rod {self.rod} (pivoted at {self.pivot}) at "
+            f"s_{self.point} = {self.pivot}{self.point} = {in_units(inp.angle, u)} "
+            f"{scene.units}, sliding at {abs(vs):.6g} m/s {self.sense(vs)} relative to "
+            "the rod"
+        )
+        return words + (
+            f", accelerating at {abs(a_s):.6g} m/s^2 {self.sense(a_s)}" if a_s else ", steadily"
+        )
 
     def effort_words(self, effort):
         """The force the rod exerts on the collar along the rod, from the power balance
         (F vs + sum of the loads' powers = 0: vs the sliding relative to the rod)."""
-        return (f"input force on collar {self.point}: {abs(effort):.4g} N "
-                f"{self.sense(effort)} along {self.rod} (power balance, no friction or "
-                "inertia)")
+        return (
+            f"input force on collar {self.point}: {abs(effort):.4g} N "
+            f"{self.sense(effort)} along {self.rod} (power balance, no friction or "
+            "inertia)"
+        )
 
     @property
     def driver_name(self):
@@ -370,22 +420,33 @@ class CollarDriver(BlockDriver):
         inp, C = scene.input, self.point
         vs, a_s = inp.omega, inp.alpha
         along = f"along {self.rod}, relative to the rod (given)"
-        return (f"Input collar {C} on the rod {self.rod}",
-                (f"vs_{C} = {fmt(abs(vs))} m/s {self.sense(vs)} {along}",
-                 f"as_{C} = {fmt(abs(a_s))} m/s^2 {self.sense(a_s)} {along}" if a_s else
-                 f"as_{C} = 0 (the collar slides at a steady speed along the rod)"))
+        return (
+            f"Input collar {C} on the rod {self.rod}",
+            (
+                f"vs_{C} = {fmt(abs(vs))} m/s {self.sense(vs)} {along}",
+                f"as_{C} = {fmt(abs(a_s))} m/s^2 {self.sense(a_s)} {along}"
+                if a_s
+                else f"as_{C} = 0 (the collar slides at a steady speed along the rod)",
+            ),
+        )
 
     def problem_words(self, scene):
         """The problem's sentence: the rod, the collar's place and its sliding on the rod."""
         inp, u = scene.input, scene.length_unit
         vs, a_s = inp.omega, inp.alpha
-        return (f"The collar {self.point} slides along the rod {self.rod}, which turns about "
-                f"the fixed pivot {self.pivot}; {self.point} is pinned to the link "
-                f"{self.link} about the fixed pivot {self.fixed}. At the instant shown the "
-                f"collar is {abs(inp.angle) / u:.10g} {scene.units} from {self.pivot}, "
-                f"sliding at {abs(vs):.10g} m/s {self.sense(vs)} relative to the rod"
-                + (f", with an acceleration of {abs(a_s):.10g} m/s² {self.sense(a_s)} "
-                   "relative to it" if a_s else ", steadily") + ".")
+        return (
+            f"The collar {self.point} slides along the rod {self.rod}, which turns about "
+            f"the fixed pivot {self.pivot}; {self.point} is pinned to the link "
+            f"{self.link} about the fixed pivot {self.fixed}. At the instant shown the "
+            f"collar is {abs(inp.angle) / u:.10g} {scene.units} from {self.pivot}, "
+            f"sliding at {abs(vs):.10g} m/s {self.sense(vs)} relative to the rod"
+            + (
+                f", with an acceleration of {abs(a_s):.10g} m/s² {self.sense(a_s)} relative to it"
+                if a_s
+                else ", steadily"
+            )
+            + "."
+        )
 
     def parameter_words(self):
         return f"the place s_{self.point} of the collar {self.point} along its rod {self.rod}"
@@ -401,25 +462,31 @@ class CollarDriver(BlockDriver):
     # ----- words
     def at_pivot(self):
         """The error for a collar at the rod's pivot: the rod's direction is undefined."""
-        return SingularStepError(f"the collar {self.point} is at {self.pivot}, the pivot of "
-                                 f"the rod {self.rod} (condition 0: {self.pivot}{self.point} "
-                                 f"/ {self.link} = 0): the rod's direction is undefined",
-                                 step=self.label)
+        return SingularStepError(
+            f"the collar {self.point} is at {self.pivot}, the pivot of "
+            f"the rod {self.rod} (condition 0: {self.pivot}{self.point} "
+            f"/ {self.link} = 0): the rod's direction is undefined",
+            step=self.label,
+        )
 
     def why(self, e):
         """Why the collar cannot be at this place: the arcs about the two pivots ``e`` apart
         do not meet (beyond a dead centre)."""
         u, n = self.unit, self.uname
-        return (f"the collar {self.point} cannot be at this place on {self.rod}: "
-                f"{self.fixed}{self.point} = {in_units(self.length, u)} {n} "
-                f"and {self.pivot}{self.fixed} = {in_units(e, u)} {n} let it be only from "
-                f"{in_units(abs(e - self.length), u)} to {in_units(e + self.length, u)} {n} "
-                "(its dead centres)")
+        return (
+            f"the collar {self.point} cannot be at this place on {self.rod}: "
+            f"{self.fixed}{self.point} = {in_units(self.length, u)} {n} "
+            f"and {self.pivot}{self.fixed} = {in_units(e, u)} {n} let it be only from "
+            f"{in_units(abs(e - self.length), u)} to {in_units(e + self.length, u)} {n} "
+            "(its dead centres)"
+        )
 
     def coincident(self):
         """The error where the rod's pivot and the link's coincide."""
-        return SingularStepError(f"the pivots {self.pivot} and {self.fixed} coincide: the "
-                                 "collar cannot slide", step=self.label)
+        return SingularStepError(
+            f"the pivots {self.pivot} and {self.fixed} coincide: the collar cannot slide",
+            step=self.label,
+        )
 
     def coriolis_left_out(self, sol):
         """What a polygon drawn without the Coriolis component gives: {(kind, name):
@@ -435,29 +502,41 @@ class CollarDriver(BlockDriver):
         x, y = (cx * d2[0] + cy * d2[1]) / d, (cx * d1[0] + cy * d1[1]) / d
         rn = sub(P[N], P[K])
         aC, aN = sol.A[C], sol.A[N]
-        return {("alpha", self.rod): sol.Al[self.rod] + x,
-                ("alpha", self.link): sol.Al[self.link] + y,
-                ("a", C): math.hypot(aC[0] - y * d2[1], aC[1] + y * d2[0]),
-                ("a", N): math.hypot(aN[0] - x * rn[1], aN[1] + x * rn[0])}
+        return {
+            ("alpha", self.rod): sol.Al[self.rod] + x,
+            ("alpha", self.link): sol.Al[self.link] + y,
+            ("a", C): math.hypot(aC[0] - y * d2[1], aC[1] + y * d2[0]),
+            ("a", N): math.hypot(aN[0] - x * rn[1], aN[1] + x * rn[0]),
+        }
 
     def singular_why(self, c) -> str:
-        return (f"the collar {self.point} is at the rod's pivot {self.pivot}, or the rod "
-                f"{self.rod}'s line passes through {self.fixed} (a dead centre: {self.pivot}, "
-                f"{self.point}, {self.fixed} in line, condition {c:.2g}): sliding along the "
-                f"rod cannot move {self.point} there, the rod's speed would be unbounded")
+        return (
+            f"the collar {self.point} is at the rod's pivot {self.pivot}, or the rod "
+            f"{self.rod}'s line passes through {self.fixed} (a dead centre: {self.pivot}, "
+            f"{self.point}, {self.fixed} in line, condition {c:.2g}): sliding along the "
+            f"rod cannot move {self.point} there, the rod's speed would be unbounded"
+        )
 
     def warning(self, c) -> str:
-        return (f"{self.label}: near a dead centre of the collar ({self.pivot}, {self.point}, "
-                f"{self.fixed} nearly in line, or {self.point} near {self.pivot}; condition "
-                f"{c:.3g})")
+        return (
+            f"{self.label}: near a dead centre of the collar ({self.pivot}, {self.point}, "
+            f"{self.fixed} nearly in line, or {self.point} near {self.pivot}; condition "
+            f"{c:.3g})"
+        )
 
     def limit_why(self) -> str:
-        return (f"the collar {self.point} reaches a dead centre: the rod {self.rod}'s line "
-                f"passes through {self.fixed}")
+        return (
+            f"the collar {self.point} reaches a dead centre: the rod {self.rod}'s line "
+            f"passes through {self.fixed}"
+        )
 
     def condition_column(self):
-        return (f"cond step {self.index + 1}", "1", f"|sin {self.pivot}{self.point}"
-                f"{self.fixed}| x min(1, {self.pivot}{self.point} / {self.link})")
+        return (
+            f"cond step {self.index + 1}",
+            "1",
+            f"|sin {self.pivot}{self.point}"
+            f"{self.fixed}| x min(1, {self.pivot}{self.point} / {self.link})",
+        )
 
     def transmission(self):
         return None
@@ -472,11 +551,13 @@ class CollarDriver(BlockDriver):
         return None
 
     def position_words(self, L, which, place):
-        return (f"{self.point}: an arc about {self.pivot} of radius {self.pivot}{self.point} = "
-                f"{place} and an arc about {self.fixed} of radius {self.fixed}{self.point} = "
-                f"{L(self.length)} meet at {self.point} ({which(self.point)}); the rod {self.rod} is the "
-                f"line from {self.pivot} through {self.point}, {self.pivot}{self.end} = "
-                f"{L(self.rod_length)}")
+        return (
+            f"{self.point}: an arc about {self.pivot} of radius {self.pivot}{self.point} = "
+            f"{place} and an arc about {self.fixed} of radius {self.fixed}{self.point} = "
+            f"{L(self.length)} meet at {self.point} ({which(self.point)}); the rod {self.rod} is the "
+            f"line from {self.pivot} through {self.point}, {self.pivot}{self.end} = "
+            f"{L(self.rod_length)}"
+        )
 
     # ----- the polygons
     def construction(self, sol, ph):
@@ -494,29 +575,71 @@ class CollarDriver(BlockDriver):
             V = sol.V
             slide = (vs * w[0], vs * w[1])
             under = sub(V[C], slide)
-            lines = (DirectionLine(slide, unit(*perp(d1)), f"the end of {c1}{lab(C)} drawn "
-                                   f"from {lab(K)}", f"perpendicular to {K}{C}",
-                                   mark=f"\u22a5 {K}{C}"),
-                     DirectionLine(V[D], unit(*perp(d2)), lab(D), f"perpendicular to {D}{C}",
-                                   mark=f"\u22a5 {D}{C}"))
-            given = (Vector((0.0, 0.0), slide, f"{c1}{lab(C)}", "sliding", f"vs_{C}",
-                            f"the collar {C} slides along {self.rod} at {speed}, given"),)
-            text = (f"the collar {C} slides along {self.rod} at {speed}: {c1}{lab(C)} = "
-                    f"{abs(vs):.4g} m/s along {self.rod}, from the image {c1} of the rod's "
-                    f"point under {C}, which moves perpendicular to {K}{C}; so from "
-                    f"{pole_text(sol, K, ph)} draw {abs(vs):.4g} m/s along {self.rod} and "
-                    f"through its end a line perpendicular to {K}{C}; through "
-                    f"{pole_text(sol, D, ph)} a line perpendicular to {D}{C}; they meet at "
-                    f"{lab(C)}; {c1} is {abs(vs):.4g} m/s back along {self.rod} from it; "
-                    f"{lab(K)}{lab(N)} / {lab(K)}{c1} = {K}{N} / {K}{C} gives {lab(N)}")
-            found = (Vector(V[K], under, f"{lab(K)}{c1}", "relative",
-                            f"v of the rod's point under {C}",
-                            f"omega_{self.rod} x {K}{C} = {abs(w_r) * s:.4g} m/s"),
-                     Vector(under, V[C], f"{c1}{lab(C)}", "sliding", f"vs_{C}",
-                            "the collar's sliding, given"),
-                     absolute(sol, C, V, ph), absolute(sol, N, V, ph))
-            return Construction(self.index, self.title, ph, lab(C), V[C], given, lines,
-                                found, text, cond, ((c1, under),))
+            lines = (
+                DirectionLine(
+                    slide,
+                    unit(*perp(d1)),
+                    f"the end of {c1}{lab(C)} drawn from {lab(K)}",
+                    f"perpendicular to {K}{C}",
+                    mark=f"\u22a5 {K}{C}",
+                ),
+                DirectionLine(
+                    V[D], unit(*perp(d2)), lab(D), f"perpendicular to {D}{C}", mark=f"\u22a5 {D}{C}"
+                ),
+            )
+            given = (
+                Vector(
+                    (0.0, 0.0),
+                    slide,
+                    f"{c1}{lab(C)}",
+                    "sliding",
+                    f"vs_{C}",
+                    f"the collar {C} slides along {self.rod} at {speed}, given",
+                ),
+            )
+            text = (
+                f"the collar {C} slides along {self.rod} at {speed}: {c1}{lab(C)} = "
+                f"{abs(vs):.4g} m/s along {self.rod}, from the image {c1} of the rod's "
+                f"point under {C}, which moves perpendicular to {K}{C}; so from "
+                f"{pole_text(sol, K, ph)} draw {abs(vs):.4g} m/s along {self.rod} and "
+                f"through its end a line perpendicular to {K}{C}; through "
+                f"{pole_text(sol, D, ph)} a line perpendicular to {D}{C}; they meet at "
+                f"{lab(C)}; {c1} is {abs(vs):.4g} m/s back along {self.rod} from it; "
+                f"{lab(K)}{lab(N)} / {lab(K)}{c1} = {K}{N} / {K}{C} gives {lab(N)}"
+            )
+            found = (
+                Vector(
+                    V[K],
+                    under,
+                    f"{lab(K)}{c1}",
+                    "relative",
+                    f"v of the rod's point under {C}",
+                    f"omega_{self.rod} x {K}{C} = {abs(w_r) * s:.4g} m/s",
+                ),
+                Vector(
+                    under,
+                    V[C],
+                    f"{c1}{lab(C)}",
+                    "sliding",
+                    f"vs_{C}",
+                    "the collar's sliding, given",
+                ),
+                absolute(sol, C, V, ph),
+                absolute(sol, N, V, ph),
+            )
+            return Construction(
+                self.index,
+                self.title,
+                ph,
+                lab(C),
+                V[C],
+                given,
+                lines,
+                found,
+                text,
+                cond,
+                ((c1, under),),
+            )
         A = sol.A
         al_r = sol.Al[self.rod]
         a_s = sol.S[C][1] * self.sense_first
@@ -526,43 +649,108 @@ class CollarDriver(BlockDriver):
         after_slide = add(after_cor, (a_s * w[0], a_s * w[1]))
         cen2 = (-w_d * w_d * d2[0], -w_d * w_d * d2[1])
         under = add(cen1, (-al_r * d1[1], al_r * d1[0]))
-        given = (Vector((0.0, 0.0), cen1, "cen", "centripetal",
-                        f"centripetal of the rod's point under {C}",
-                        f"omega_{self.rod}^2 x {K}{C} = {w_r * w_r * s:.4g} m/s^2, towards "
-                        f"{K}"),
-                 Vector(cen1, after_cor, "cor", "coriolis", f"Coriolis at {C}",
-                        f"2 omega_{self.rod} vs = {math.hypot(*cor):.4g} m/s^2, "
-                        f"perpendicular to {self.rod}"),
-                 Vector(after_cor, after_slide, "s", "sliding", f"as_{C}",
-                        f"the collar's sliding acceleration {abs(a_s):.4g} m/s^2 "
-                        f"{self.sense(a_s)}, given"),
-                 Vector((0.0, 0.0), cen2, "cen", "centripetal", f"centripetal of {C}{D}",
-                        f"omega_{self.link}^2 x {D}{C} = {w_d * w_d * math.hypot(*d2):.4g} "
-                        f"m/s^2, towards {D}"))
-        lines = (DirectionLine(after_slide, unit(*perp(d1)), "the end of the sliding "
-                               "acceleration", f"perpendicular to {K}{C}",
-                               mark=f"\u22a5 {K}{C}"),
-                 DirectionLine(cen2, unit(*perp(d2)), "the end of the centripetal of "
-                               f"{C}{D}", f"perpendicular to {D}{C}", mark=f"\u22a5 {D}{C}"))
-        text = (f"from {pole_text(sol, K, ph)} draw the centripetal of the rod's point under "
-                f"{C} ({given[0].text}), then the Coriolis component 2 omega v "
-                f"({given[1].text}), then the sliding acceleration {abs(a_s):.4g} m/s^2 "
-                f"along {self.rod}; through its end a line perpendicular to {K}{C}; from "
-                f"{pole_text(sol, D, ph)} the centripetal of {C} about {D} "
-                f"({given[3].text}) and through its end a line perpendicular to {D}{C}; they "
-                f"meet at {lab(C)}; {lab(N)} follows by {lab(K)}{lab(N)} / {lab(K)}{c1} = "
-                f"{K}{N} / {K}{C}")
-        found = (Vector(after_slide, A[C], "t", "tangential",
-                        f"tangential of the rod's point under {C}", f"alpha_{self.rod} x {K}{C}"),
-                 Vector(cen2, A[C], "t", "tangential", f"tangential of {C}{D}",
-                        f"alpha_{self.link} x {D}{C}"),
-                 absolute(sol, C, A, ph), absolute(sol, N, A, ph))
-        return Construction(self.index, self.title, ph, lab(C), A[C], given, lines, found,
-                            text, cond, ((c1, under),))
+        given = (
+            Vector(
+                (0.0, 0.0),
+                cen1,
+                "cen",
+                "centripetal",
+                f"centripetal of the rod's point under {C}",
+                f"omega_{self.rod}^2 x {K}{C} = {w_r * w_r * s:.4g} m/s^2, towards {K}",
+            ),
+            Vector(
+                cen1,
+                after_cor,
+                "cor",
+                "coriolis",
+                f"Coriolis at {C}",
+                f"2 omega_{self.rod} vs = {math.hypot(*cor):.4g} m/s^2, "
+                f"perpendicular to {self.rod}",
+            ),
+            Vector(
+                after_cor,
+                after_slide,
+                "s",
+                "sliding",
+                f"as_{C}",
+                f"the collar's sliding acceleration {abs(a_s):.4g} m/s^2 {self.sense(a_s)}, given",
+            ),
+            Vector(
+                (0.0, 0.0),
+                cen2,
+                "cen",
+                "centripetal",
+                f"centripetal of {C}{D}",
+                f"omega_{self.link}^2 x {D}{C} = {w_d * w_d * math.hypot(*d2):.4g} "
+                f"m/s^2, towards {D}",
+            ),
+        )
+        lines = (
+            DirectionLine(
+                after_slide,
+                unit(*perp(d1)),
+                "the end of the sliding acceleration",
+                f"perpendicular to {K}{C}",
+                mark=f"\u22a5 {K}{C}",
+            ),
+            DirectionLine(
+                cen2,
+                unit(*perp(d2)),
+                f"the end of the centripetal of {C}{D}",
+                f"perpendicular to {D}{C}",
+                mark=f"\u22a5 {D}{C}",
+            ),
+        )
+        text = (
+            f"from {pole_text(sol, K, ph)} draw the centripetal of the rod's point under "
+            f"{C} ({given[0].text}), then the Coriolis component 2 omega v "
+            f"({given[1].text}), then the sliding acceleration {abs(a_s):.4g} m/s^2 "
+            f"along {self.rod}; through its end a line perpendicular to {K}{C}; from "
+            f"{pole_text(sol, D, ph)} the centripetal of {C} about {D} "
+            f"({given[3].text}) and through its end a line perpendicular to {D}{C}; they "
+            f"meet at {lab(C)}; {lab(N)} follows by {lab(K)}{lab(N)} / {lab(K)}{c1} = "
+            f"{K}{N} / {K}{C}"
+        )
+        found = (
+            Vector(
+                after_slide,
+                A[C],
+                "t",
+                "tangential",
+                f"tangential of the rod's point under {C}",
+                f"alpha_{self.rod} x {K}{C}",
+            ),
+            Vector(
+                cen2,
+                A[C],
+                "t",
+                "tangential",
+                f"tangential of {C}{D}",
+                f"alpha_{self.link} x {D}{C}",
+            ),
+            absolute(sol, C, A, ph),
+            absolute(sol, N, A, ph),
+        )
+        return Construction(
+            self.index,
+            self.title,
+            ph,
+            lab(C),
+            A[C],
+            given,
+            lines,
+            found,
+            text,
+            cond,
+            ((c1, under),),
+        )
 
 
 def is_collar(scene) -> bool:
     """Whether the scene's driving block slides along a moving rod (a collar)."""
     name = scene.input.block
-    return name is not None and scene.input.wheel is None and \
-        isinstance(scene.slider(name), GuideSlider)
+    return (
+        name is not None
+        and scene.input.wheel is None
+        and isinstance(scene.slider(name), GuideSlider)
+    )

@@ -146,7 +146,7 @@ class Crank(Step):
         p = self.rounding * EPS * (vhypot(ox, oy) + r) / sizes["position"]
         gain = self.rounding * EPS * vmax((vhypot(ox, oy) + vhypot(tx, ty)) / r, 1.0)
         v = gain * abs(omega) * r / sizes["velocity"]
-        a = gain * (omega ** 2 + abs(alpha)) * r / sizes["acceleration"]
+        a = gain * (omega**2 + abs(alpha)) * r / sizes["acceleration"]
         return p, v, a, v, a
 
     def rates(self, scene):
@@ -160,7 +160,7 @@ class Crank(Step):
         inp = scene.input
         r = scene.link(inp.crank).length
         w = abs(inp.omega)
-        w2 = inp.omega ** 2 + abs(inp.alpha)
+        w2 = inp.omega**2 + abs(inp.alpha)
         return w * r, w2 * r, w, w2
 
     # ----- words
@@ -188,8 +188,10 @@ class Crank(Step):
 
     def position_words(self, L, which, angle_deg):
         """The configuration diagram's line for this step (``L`` writes a length)."""
-        return (f"{self.pivot}{self.tip}: from {self.pivot} draw {self.pivot}{self.tip} = "
-                f"{L(self.length)} at {angle_deg} deg")
+        return (
+            f"{self.pivot}{self.tip}: from {self.pivot} draw {self.pivot}{self.tip} = "
+            f"{L(self.length)} at {angle_deg} deg"
+        )
 
     #: the words a construction sentence opens with, and says of a crank with no alpha
     lead = ""
@@ -203,22 +205,29 @@ class Crank(Step):
             V = sol.V
             w = sol.W[self.link]
             v = absolute(sol, T, V, ph)
-            text = (f"{self.lead}from {pole_text(sol, O, ph)} draw {lab(O)}{lab(T)} "
-                    f"perpendicular to {O}{T}, = omega x {O}{T} = "
-                    f"{abs(w):.4g} x {self.length:.4g} = {v.magnitude:.4g} m/s")
-            return Construction(self.index, self.title, ph, lab(T), V[T], (), (), (v,),
-                                text, cond)
+            text = (
+                f"{self.lead}from {pole_text(sol, O, ph)} draw {lab(O)}{lab(T)} "
+                f"perpendicular to {O}{T}, = omega x {O}{T} = "
+                f"{abs(w):.4g} x {self.length:.4g} = {v.magnitude:.4g} m/s"
+            )
+            return Construction(self.index, self.title, ph, lab(T), V[T], (), (), (v,), text, cond)
         A = sol.A
         cen = centripetal(sol, T, O, self.link, ph)
         al = sol.Al[self.link]
         r = sub(sol.P[T], sol.P[O])
-        tan = Vector(cen.end, A[T], f"{lab(T)}t", "tangential", f"tangential of {T}{O}",
-                     f"alpha x {O}{T} = {abs(al) * math.hypot(*r):.4g} m/s^2, "
-                     f"perpendicular to {O}{T}")
-        text = (f"{self.lead}from {pole_text(sol, O, ph)} draw the centripetal component "
-                f"{cen.text}" + (f"; add the tangential component {tan.text}" if al else
-                                 self.uniform)
-                + f"; its end is {lab(T)}")
+        tan = Vector(
+            cen.end,
+            A[T],
+            f"{lab(T)}t",
+            "tangential",
+            f"tangential of {T}{O}",
+            f"alpha x {O}{T} = {abs(al) * math.hypot(*r):.4g} m/s^2, perpendicular to {O}{T}",
+        )
+        text = (
+            f"{self.lead}from {pole_text(sol, O, ph)} draw the centripetal component "
+            f"{cen.text}"
+            + (f"; add the tangential component {tan.text}" if al else self.uniform)
+            + f"; its end is {lab(T)}"
+        )
         found = (cen, tan, absolute(sol, T, A, ph)) if al else (cen, absolute(sol, T, A, ph))
-        return Construction(self.index, self.title, ph, lab(T), A[T], (cen,), (), found, text,
-                            cond)
+        return Construction(self.index, self.title, ph, lab(T), A[T], (cen,), (), found, text, cond)

@@ -24,8 +24,18 @@ from dataclasses import dataclass
 
 from ..common.errors import TOL, AssemblyError, SingularStepError
 from ..common.numbers import in_units
-from .base import (Construction, DirectionLine, Step, Vector, add, image_label, perp,
-                   pole_text, sub, unit)
+from .base import (
+    Construction,
+    DirectionLine,
+    Step,
+    Vector,
+    add,
+    image_label,
+    perp,
+    pole_text,
+    sub,
+    unit,
+)
 from .rounding import EPS, vhypot, vmax
 from .relations import coriolis
 from .slotted import velocity
@@ -47,15 +57,32 @@ def recognise_all(g):
     out = []
     for cyl in g.scene.cylinders:
         if cyl.barrel in g.P and cyl.rod in g.P:
-            ref = max([lk.length for lk in g.scene.links
-                       if cyl.barrel in lk.points or cyl.rod in lk.points] + [1e-9])
-            step = CylinderStep(g.next_index + len(out), cyl.key, cyl.barrel, cyl.rod, ref,
-                                cyl.stroke, unit=g.unit, uname=g.uname)
+            ref = max(
+                [
+                    lk.length
+                    for lk in g.scene.links
+                    if cyl.barrel in lk.points or cyl.rod in lk.points
+                ]
+                + [1e-9]
+            )
+            step = CylinderStep(
+                g.next_index + len(out),
+                cyl.key,
+                cyl.barrel,
+                cyl.rod,
+                ref,
+                cyl.stroke,
+                unit=g.unit,
+                uname=g.uname,
+            )
             n = math.dist(g.P[cyl.barrel], g.P[cyl.rod])
-            if cyl.stroke is not None and not \
-                    cyl.stroke[0] * (1 - 1e-12) <= n <= cyl.stroke[1] * (1 + 1e-12):
-                raise AssemblyError(step.why(n) + ": the mechanism cannot be in this "
-                                    "position", key=f"[cylinders] {cyl.key}")
+            if cyl.stroke is not None and not cyl.stroke[0] * (1 - 1e-12) <= n <= cyl.stroke[1] * (
+                1 + 1e-12
+            ):
+                raise AssemblyError(
+                    step.why(n) + ": the mechanism cannot be in this position",
+                    key=f"[cylinders] {cyl.key}",
+                )
             out.append(step)
     return out
 
@@ -115,8 +142,9 @@ class CylinderStep(Step):
             if not m.array:
                 if n <= TOL.singular * rho:
                     raise step.shrunk()
-                if stroke is not None and not stroke[0] * (1 - 1e-12) <= n <= \
-                        stroke[1] * (1 + 1e-12):
+                if stroke is not None and not stroke[0] * (1 - 1e-12) <= n <= stroke[1] * (
+                    1 + 1e-12
+                ):
                     raise AssemblyError(step.why(n), step=step.label)
             elif stroke is not None:
                 out = (n < stroke[0] * (1 - 1e-12)) | (n > stroke[1] * (1 + 1e-12))
@@ -172,30 +200,40 @@ class CylinderStep(Step):
     # ----- words
     def shrunk(self):
         """The error for a cylinder whose two pins coincide: its direction is undefined."""
-        return SingularStepError(f"cylinder {self.key} has no length here ({self.rod} is at "
-                                 f"{self.barrel}): its direction is undefined", step=self.label)
+        return SingularStepError(
+            f"cylinder {self.key} has no length here ({self.rod} is at "
+            f"{self.barrel}): its direction is undefined",
+            step=self.label,
+        )
 
     def why(self, n):
         """Why the cylinder cannot reach length ``n`` (m): outside its stroke."""
         u, nm = self.unit, self.uname
         lo, hi = self.stroke
-        return (f"cylinder {self.key} would be {in_units(n, u)} {nm} long here, outside its "
-                f"stroke {in_units(lo, u)} to {in_units(hi, u)} {nm} (fully "
-                f"{'closed' if n < lo else 'extended'})")
+        return (
+            f"cylinder {self.key} would be {in_units(n, u)} {nm} long here, outside its "
+            f"stroke {in_units(lo, u)} to {in_units(hi, u)} {nm} (fully "
+            f"{'closed' if n < lo else 'extended'})"
+        )
 
     def singular_why(self, c) -> str:
         return f"cylinder {self.key} is shrunk to nothing (condition {c:.2g})"
 
     def warning(self, c) -> str:
-        return (f"{self.label}: the rod end {self.rod} is close to the barrel's pivot "
-                f"{self.barrel} (condition {c:.3g})")
+        return (
+            f"{self.label}: the rod end {self.rod} is close to the barrel's pivot "
+            f"{self.barrel} (condition {c:.3g})"
+        )
 
     def limit_why(self) -> str:
         return f"cylinder {self.key} reaches the end of its stroke"
 
     def condition_column(self):
-        return (f"cond step {self.index + 1}", "1", f"|{self.barrel}{self.rod}| over the "
-                "longest link at its ends (at most 1)")
+        return (
+            f"cond step {self.index + 1}",
+            "1",
+            f"|{self.barrel}{self.rod}| over the longest link at its ends (at most 1)",
+        )
 
     def transmission(self):
         return None
@@ -216,13 +254,16 @@ class CylinderStep(Step):
         return "above"
 
     def position_words(self, L, which, angle_deg):
-        return (f"cylinder {self.key}: join {self.barrel} (the barrel's pivot) to {self.rod} "
-                f"(the rod's end) and measure its length")
+        return (
+            f"cylinder {self.key}: join {self.barrel} (the barrel's pivot) to {self.rod} "
+            f"(the rod's end) and measure its length"
+        )
 
     # ----- the polygons
     def under(self, sol, ph):
         """The image of the barrel's point under the rod's end: ``r1`` (``r1'``)."""
         from .slotted import under_label
+
         return under_label(sol, self.rod, ph)
 
     def construction(self, sol, ph):
@@ -237,44 +278,100 @@ class CylinderStep(Step):
         if ph == "velocity":
             V = sol.V
             under = add(V[K], (-w * d[1], w * d[0]))
-            lines = (DirectionLine(V[K], unit(*perp(d)), lab(K), f"perpendicular to {K}{R}", mark=f"\u22a5 {K}{R}"),
-                     DirectionLine(V[R], u, lab(R), f"along the cylinder {self.key}",
-                                   mark=f"along the cylinder {self.key}"))
-            text = (f"through {pole_text(sol, K, ph)} draw a line perpendicular to {K}{R} (the "
-                    f"barrel's point under {R}); through {lab(R)}, one along the cylinder; "
-                    f"they meet at {c}: {c}{lab(R)} = {abs(s[0]):.4g} m/s is the rate of "
-                    f"{'extension' if s[0] >= 0 else 'retraction'}, {lab(K)}{c} / {K}{R} the "
-                    f"barrel's omega")
-            found = (Vector(V[K], under, f"{lab(K)}{c}", "relative",
-                            f"v of the barrel's point under {R}", ""),
-                     Vector(under, V[R], f"{c}{lab(R)}", "sliding", f"vs_{self.key}",
-                            "rate of extension"))
-            return Construction(self.index, self.title, ph, c, under, (), lines, found, text,
-                                cond, ((c, under),))
+            lines = (
+                DirectionLine(
+                    V[K], unit(*perp(d)), lab(K), f"perpendicular to {K}{R}", mark=f"\u22a5 {K}{R}"
+                ),
+                DirectionLine(
+                    V[R],
+                    u,
+                    lab(R),
+                    f"along the cylinder {self.key}",
+                    mark=f"along the cylinder {self.key}",
+                ),
+            )
+            text = (
+                f"through {pole_text(sol, K, ph)} draw a line perpendicular to {K}{R} (the "
+                f"barrel's point under {R}); through {lab(R)}, one along the cylinder; "
+                f"they meet at {c}: {c}{lab(R)} = {abs(s[0]):.4g} m/s is the rate of "
+                f"{'extension' if s[0] >= 0 else 'retraction'}, {lab(K)}{c} / {K}{R} the "
+                f"barrel's omega"
+            )
+            found = (
+                Vector(
+                    V[K],
+                    under,
+                    f"{lab(K)}{c}",
+                    "relative",
+                    f"v of the barrel's point under {R}",
+                    "",
+                ),
+                Vector(
+                    under, V[R], f"{c}{lab(R)}", "sliding", f"vs_{self.key}", "rate of extension"
+                ),
+            )
+            return Construction(
+                self.index, self.title, ph, c, under, (), lines, found, text, cond, ((c, under),)
+            )
         A = sol.A
         al = sol.Al[self.key]
         cen_end = add(A[K], (-w * w * d[0], -w * w * d[1]))
         under = add(cen_end, (-al * d[1], al * d[0]))
         cor = (s[2], s[3])
         back = sub(A[R], cor)
-        cen = Vector(A[K], cen_end, "cen", "centripetal", f"centripetal of {R}{K} on the "
-                     f"barrel", f"omega^2 x {K}{R} = {w * w * math.hypot(*d):.4g} m/s^2, "
-                     f"towards {K}")
-        corv = Vector(back, A[R], "cor", "coriolis", f"Coriolis at {R}",
-                      f"2 omega vs = {math.hypot(*cor):.4g} m/s^2, perpendicular to the "
-                      "cylinder")
-        lines = (DirectionLine(cen_end, unit(*perp(d)), "the end of the centripetal",
-                               f"perpendicular to {K}{R}", mark=f"\u22a5 {K}{R}"),
-                 DirectionLine(back, u, "the start of the Coriolis component",
-                               "along the cylinder", mark="along the cylinder"))
-        text = (f"from {pole_text(sol, K, ph)} draw the centripetal of the barrel's point "
-                f"under {R} ({cen.text}) and through its end a line perpendicular to {K}{R}; "
-                f"from {lab(R)} draw the Coriolis component backwards ({corv.text}) and "
-                f"through its start a line along the cylinder; they meet at {c}: the rod's "
-                f"acceleration along the barrel is {s[1]:.4g} m/s^2")
-        found = (Vector(cen_end, under, "t", "tangential", f"tangential of {R}{K}",
-                        f"alpha x {K}{R}"),
-                 Vector(under, back, "s", "sliding", f"as_{self.key}",
-                        "acceleration of extension"))
-        return Construction(self.index, self.title, ph, c, under, (cen, corv), lines, found,
-                            text, cond, ((c, under),))
+        cen = Vector(
+            A[K],
+            cen_end,
+            "cen",
+            "centripetal",
+            f"centripetal of {R}{K} on the barrel",
+            f"omega^2 x {K}{R} = {w * w * math.hypot(*d):.4g} m/s^2, towards {K}",
+        )
+        corv = Vector(
+            back,
+            A[R],
+            "cor",
+            "coriolis",
+            f"Coriolis at {R}",
+            f"2 omega vs = {math.hypot(*cor):.4g} m/s^2, perpendicular to the cylinder",
+        )
+        lines = (
+            DirectionLine(
+                cen_end,
+                unit(*perp(d)),
+                "the end of the centripetal",
+                f"perpendicular to {K}{R}",
+                mark=f"\u22a5 {K}{R}",
+            ),
+            DirectionLine(
+                back,
+                u,
+                "the start of the Coriolis component",
+                "along the cylinder",
+                mark="along the cylinder",
+            ),
+        )
+        text = (
+            f"from {pole_text(sol, K, ph)} draw the centripetal of the barrel's point "
+            f"under {R} ({cen.text}) and through its end a line perpendicular to {K}{R}; "
+            f"from {lab(R)} draw the Coriolis component backwards ({corv.text}) and "
+            f"through its start a line along the cylinder; they meet at {c}: the rod's "
+            f"acceleration along the barrel is {s[1]:.4g} m/s^2"
+        )
+        found = (
+            Vector(cen_end, under, "t", "tangential", f"tangential of {R}{K}", f"alpha x {K}{R}"),
+            Vector(under, back, "s", "sliding", f"as_{self.key}", "acceleration of extension"),
+        )
+        return Construction(
+            self.index,
+            self.title,
+            ph,
+            c,
+            under,
+            (cen, corv),
+            lines,
+            found,
+            text,
+            cond,
+            ((c, under),),
+        )

@@ -27,8 +27,20 @@ from ..common.numbers import in_units, quiet
 from ..common.tolerances import crossing_angle
 from ..scene import split_name
 from .rounding import C_FLOOR, turning, vhypot, vmax, vmin
-from .base import (Construction, DirectionLine, Step, Vector, absolute, centripetal,
-                   image_label, perp, pole_text, relative, sub, unit)
+from .base import (
+    Construction,
+    DirectionLine,
+    Step,
+    Vector,
+    absolute,
+    centripetal,
+    image_label,
+    perp,
+    pole_text,
+    relative,
+    sub,
+    unit,
+)
 
 __all__ = ["Dyad", "place", "velocity", "acceleration", "recognise"]
 
@@ -48,13 +60,13 @@ def place(bx, by, dx, dy, l1, l2, sigma, ctx=None, step=None):
     q = (s * s - e2) * (e2 - t * t)
     if ctx is None or not ctx.array:
         if q > 0:  # two assemblies (e2 = 0 gives q <= 0)
-            root = q ** 0.5
+            root = q**0.5
         else:
             if step is not None:
                 if e2 == 0:
                     raise step.coincident()
                 if q < -TOL.closure * (l1 * l2) ** 2:
-                    raise AssemblyError(step.why(e2 ** 0.5), step=step.label)
+                    raise AssemblyError(step.why(e2**0.5), step=step.label)
             root = 0.0
     else:
         e2 = ctx.safe(e2, step)
@@ -137,8 +149,10 @@ class Dyad(Step):
         return (self.l1, self.l2)
 
     def dimensions(self, scene, bodies):
-        return (bodies.distance(self.link1, self.b, self.point),
-                bodies.distance(self.link2, self.d, self.point))
+        return (
+            bodies.distance(self.link1, self.b, self.point),
+            bodies.distance(self.link2, self.d, self.point),
+        )
 
     def drawn(self, prm, pencil, P):
         return (prm[0] + pencil(), prm[1] + pencil())
@@ -213,7 +227,7 @@ class Dyad(Step):
             e2 = ex * ex + ey * ey
             q = (ss - e2) * (e2 - tt)
             if q > 0:
-                root = q ** 0.5
+                root = q**0.5
             else:  # no crossing, or B on D: raises as place() does; else a toggle
                 place(bx, by, dx, dy, l1, l2, sigma, m.ctx, step)
                 root = 0.0
@@ -305,8 +319,19 @@ class Dyad(Step):
         for K, rx, ry in ((B, r1x, r1y), (D, r2x, r2y)):
             dv = vhypot(V[X][0] - V[K][0], V[X][1] - V[K][1])
             da = vhypot(A[X][0] - A[K][0], A[X][1] - A[K][1])
-            turns.append(turning(walk, rx, ry, dv, da, p + tab[0].get(K, 0.0),
-                                 v + tab[1].get(K, 0.0), a + tab[2].get(K, 0.0), k))
+            turns.append(
+                turning(
+                    walk,
+                    rx,
+                    ry,
+                    dv,
+                    da,
+                    p + tab[0].get(K, 0.0),
+                    v + tab[1].get(K, 0.0),
+                    a + tab[2].get(K, 0.0),
+                    k,
+                )
+            )
         (w1, al1), (w2, al2) = turns
         return p, v, a, (vmax(v, w1), vmax(v, w2)), (vmax(a, al1), vmax(a, al2))
 
@@ -315,9 +340,12 @@ class Dyad(Step):
         """The error when the two known points coincide: singular if the two sides are equal (the
         point may be anywhere on a circle), else no assembly."""
         if self.l1 == self.l2:
-            return SingularStepError(f"{self.b} and {self.d} coincide and {self.side(1)} = "
-                                     f"{self.side(2)}: {self.point} may be anywhere on a "
-                                     "circle", step=self.label)
+            return SingularStepError(
+                f"{self.b} and {self.d} coincide and {self.side(1)} = "
+                f"{self.side(2)}: {self.point} may be anywhere on a "
+                "circle",
+                step=self.label,
+            )
         return AssemblyError(self.why(0.0), step=self.label)
 
     def side(self, which) -> str:
@@ -333,29 +361,39 @@ class Dyad(Step):
         u, n = self.unit, self.uname
         e = quiet(e, self.l1 + self.l2)  # B on D to rounding (cos 180 deg): 0, not 1.2e-14
         if self.l1 + self.l2 < e:
-            return (f"cannot assemble {self.point}: {self.side(1)} + {self.side(2)} = "
-                    f"{in_units(self.l1 + self.l2, u)} {n} < {self.b}{self.d} = "
-                    f"{in_units(e, u)} {n} (short by {in_units(e - self.l1 - self.l2, u)} {n})")
-        return (f"cannot assemble {self.point}: |{self.side(1)} - {self.side(2)}| = "
-                f"{in_units(abs(self.l1 - self.l2), u)} {n} > {self.b}{self.d} = "
-                f"{in_units(e, u)} {n} (by {in_units(abs(self.l1 - self.l2) - e, u)} {n})")
+            return (
+                f"cannot assemble {self.point}: {self.side(1)} + {self.side(2)} = "
+                f"{in_units(self.l1 + self.l2, u)} {n} < {self.b}{self.d} = "
+                f"{in_units(e, u)} {n} (short by {in_units(e - self.l1 - self.l2, u)} {n})"
+            )
+        return (
+            f"cannot assemble {self.point}: |{self.side(1)} - {self.side(2)}| = "
+            f"{in_units(abs(self.l1 - self.l2), u)} {n} > {self.b}{self.d} = "
+            f"{in_units(e, u)} {n} (by {in_units(abs(self.l1 - self.l2) - e, u)} {n})"
+        )
 
     def singular_why(self, c) -> str:
-        return (f"{self.link1} and {self.link2} are in line (transmission angle "
-                f"{crossing_angle(c):.3g} deg): a toggle position (or a "
-                "change point, where the linkage may switch branch), where the direction "
-                f"lines perpendicular to {self.link1} and {self.link2} are parallel and the "
-                f"velocity of {self.point} is indeterminate")
+        return (
+            f"{self.link1} and {self.link2} are in line (transmission angle "
+            f"{crossing_angle(c):.3g} deg): a toggle position (or a "
+            "change point, where the linkage may switch branch), where the direction "
+            f"lines perpendicular to {self.link1} and {self.link2} are parallel and the "
+            f"velocity of {self.point} is indeterminate"
+        )
 
     def warning(self, c) -> str:
         deg = crossing_angle(c)
-        return (f"{self.label}: {self.link1} and {self.link2} are nearly in line (transmission "
-                f"angle {deg:.3g} deg, condition {c:.3g}): near a toggle position the "
-                "intersection of the direction lines is ill-conditioned")
+        return (
+            f"{self.label}: {self.link1} and {self.link2} are nearly in line (transmission "
+            f"angle {deg:.3g} deg, condition {c:.3g}): near a toggle position the "
+            "intersection of the direction lines is ill-conditioned"
+        )
 
     def limit_why(self) -> str:
-        return (f"{self.side(1)} and {self.side(2)} come into line (a toggle: {self.point} "
-                "cannot be assembled beyond it)")
+        return (
+            f"{self.side(1)} and {self.side(2)} come into line (a toggle: {self.point} "
+            "cannot be assembled beyond it)"
+        )
 
     def condition_column(self):
         """Its condition is the sine of the transmission angle at the point it finds."""
@@ -377,9 +415,11 @@ class Dyad(Step):
         return None
 
     def position_words(self, L, which, angle_deg):
-        return (f"{self.point}: arcs of radius {self.link1} = {L(self.l1)} about {self.b} and "
-                f"{self.link2} = {L(self.l2)} about {self.d} meet at {self.point} (of the two "
-                f"intersections, {which(self.point)})")
+        return (
+            f"{self.point}: arcs of radius {self.link1} = {L(self.l1)} about {self.b} and "
+            f"{self.link2} = {L(self.l2)} about {self.d} meet at {self.point} (of the two "
+            f"intersections, {which(self.point)})"
+        )
 
     # ----- the polygons
     def construction(self, sol, ph):
@@ -390,30 +430,69 @@ class Dyad(Step):
         d2 = unit(*perp(sub(P[X], P[D])))
         if ph == "velocity":
             V = sol.V
-            lines = (DirectionLine(V[B], d1, lab(B), f"perpendicular to {B}{X}", mark=f"\u22a5 {B}{X}"),
-                     DirectionLine(V[D], d2, lab(D), f"perpendicular to {D}{X}", mark=f"\u22a5 {D}{X}"))
-            text = (f"through {pole_text(sol, B, ph)} draw a line perpendicular to {B}{X}; "
-                    f"through {pole_text(sol, D, ph)}, one perpendicular to {D}{X}; they meet "
-                    f"at {lab(X)}")
-            found = (relative(sol, X, B, V, ph), relative(sol, X, D, V, ph),
-                     absolute(sol, X, V, ph))
-            return Construction(self.index, self.title, ph, lab(X), V[X], (), lines, found,
-                                text, cond)
+            lines = (
+                DirectionLine(V[B], d1, lab(B), f"perpendicular to {B}{X}", mark=f"\u22a5 {B}{X}"),
+                DirectionLine(V[D], d2, lab(D), f"perpendicular to {D}{X}", mark=f"\u22a5 {D}{X}"),
+            )
+            text = (
+                f"through {pole_text(sol, B, ph)} draw a line perpendicular to {B}{X}; "
+                f"through {pole_text(sol, D, ph)}, one perpendicular to {D}{X}; they meet "
+                f"at {lab(X)}"
+            )
+            found = (
+                relative(sol, X, B, V, ph),
+                relative(sol, X, D, V, ph),
+                absolute(sol, X, V, ph),
+            )
+            return Construction(
+                self.index, self.title, ph, lab(X), V[X], (), lines, found, text, cond
+            )
         A = sol.A
         c1 = centripetal(sol, X, B, self.link1, ph)
         c2 = centripetal(sol, X, D, self.link2, ph)
-        lines = (DirectionLine(c1.end, d1, f"the end of the centripetal of {X}{B}",
-                               f"perpendicular to {B}{X}", mark=f"\u22a5 {B}{X}"),
-                 DirectionLine(c2.end, d2, f"the end of the centripetal of {X}{D}",
-                               f"perpendicular to {D}{X}", mark=f"\u22a5 {D}{X}"))
-        text = (f"from {pole_text(sol, B, ph)} draw the centripetal of {X}{B} ({c1.text}), and "
-                f"through its end a line perpendicular to {B}{X}; from {pole_text(sol, D, ph)} "
-                f"draw the centripetal of {X}{D} ({c2.text}), and through its end a line "
-                f"perpendicular to {D}{X}; they meet at {lab(X)}")
-        found = (Vector(c1.end, A[X], f"t{X}{B}", "tangential", f"tangential of {X}{B}",
-                        f"alpha_{self.link1} x {B}{X}"),
-                 Vector(c2.end, A[X], f"t{X}{D}", "tangential", f"tangential of {X}{D}",
-                        f"alpha_{self.link2} x {D}{X}"),
-                 relative(sol, X, B, A, ph), relative(sol, X, D, A, ph), absolute(sol, X, A, ph))
-        return Construction(self.index, self.title, ph, lab(X), A[X], (c1, c2), lines, found,
-                            text, cond)
+        lines = (
+            DirectionLine(
+                c1.end,
+                d1,
+                f"the end of the centripetal of {X}{B}",
+                f"perpendicular to {B}{X}",
+                mark=f"\u22a5 {B}{X}",
+            ),
+            DirectionLine(
+                c2.end,
+                d2,
+                f"the end of the centripetal of {X}{D}",
+                f"perpendicular to {D}{X}",
+                mark=f"\u22a5 {D}{X}",
+            ),
+        )
+        text = (
+            f"from {pole_text(sol, B, ph)} draw the centripetal of {X}{B} ({c1.text}), and "
+            f"through its end a line perpendicular to {B}{X}; from {pole_text(sol, D, ph)} "
+            f"draw the centripetal of {X}{D} ({c2.text}), and through its end a line "
+            f"perpendicular to {D}{X}; they meet at {lab(X)}"
+        )
+        found = (
+            Vector(
+                c1.end,
+                A[X],
+                f"t{X}{B}",
+                "tangential",
+                f"tangential of {X}{B}",
+                f"alpha_{self.link1} x {B}{X}",
+            ),
+            Vector(
+                c2.end,
+                A[X],
+                f"t{X}{D}",
+                "tangential",
+                f"tangential of {X}{D}",
+                f"alpha_{self.link2} x {D}{X}",
+            ),
+            relative(sol, X, B, A, ph),
+            relative(sol, X, D, A, ph),
+            absolute(sol, X, A, ph),
+        )
+        return Construction(
+            self.index, self.title, ph, lab(X), A[X], (c1, c2), lines, found, text, cond
+        )

@@ -35,13 +35,34 @@ from dataclasses import dataclass
 from .relations import coriolis
 from ..common.errors import TOL, SingularStepError
 from ..scene import FixedPath, GuideSlider
-from .base import (Construction, DirectionLine, Step, Vector, absolute, add, image_label,
-                   image_name, numbered, pole_text, sub, unit)
+from .base import (
+    Construction,
+    DirectionLine,
+    Step,
+    Vector,
+    absolute,
+    add,
+    image_label,
+    image_name,
+    numbered,
+    pole_text,
+    sub,
+    unit,
+)
 from .rounding import line_rounding, plus, two_lines, vhypot, vmax
 
-__all__ = ["Peg", "place", "velocity", "acceleration", "under_velocity", "under_acceleration",
-           "under_point", "recognise",
-           "under_labels", "slot_labels"]
+__all__ = [
+    "Peg",
+    "place",
+    "velocity",
+    "acceleration",
+    "under_velocity",
+    "under_acceleration",
+    "under_point",
+    "recognise",
+    "under_labels",
+    "slot_labels",
+]
 
 
 def place(g1x, g1y, u1x, u1y, g2x, g2y, u2x, u2y, ctx=None, step=None):
@@ -86,9 +107,10 @@ def under_acceleration(gx, gy, x, y, w, al, agx, agy):
 
 def under_point(gx, gy, x, y, w, al, vgx, vgy, agx, agy):
     """Both: the velocity and the acceleration of the point under the peg."""
-    return (under_velocity(gx, gy, x, y, w, vgx, vgy),
-            under_acceleration(gx, gy, x, y, w, al, agx, agy))
-
+    return (
+        under_velocity(gx, gy, x, y, w, vgx, vgy),
+        under_acceleration(gx, gy, x, y, w, al, agx, agy),
+    )
 
 
 def recognise(g, name):
@@ -171,8 +193,9 @@ class Peg(Step):
 
     @property
     def needs(self):
-        return tuple(p for s in self.slots if isinstance(s, GuideSlider)
-                     for p in (s.first, s.second))
+        return tuple(
+            p for s in self.slots if isinstance(s, GuideSlider) for p in (s.first, s.second)
+        )
 
     @property
     def needs_links(self):
@@ -180,8 +203,7 @@ class Peg(Step):
 
     @property
     def title(self):
-        return (f"peg {self.point} in {_slot_words(self.first)} and "
-                f"{_slot_words(self.second)}")
+        return f"peg {self.point} in {_slot_words(self.first)} and {_slot_words(self.second)}"
 
     @property
     def params(self):
@@ -196,8 +218,9 @@ class Peg(Step):
         return (0.0, 0.0, 0.0, 0.0)
 
     def dimensions(self, scene, bodies):
-        return self._fixed(scene.slider(self.first.key)) + \
-            self._fixed(scene.slider(self.second.key))
+        return self._fixed(scene.slider(self.first.key)) + self._fixed(
+            scene.slider(self.second.key)
+        )
 
     def drawn(self, prm, pencil, P):
         """A fixed slot's point as a hand drawing places it (its direction is given)."""
@@ -217,7 +240,7 @@ class Peg(Step):
         out = []
         for j, s in ((0, self.first), (4, self.second)):
             if isinstance(s, FixedPath):
-                out.append(prm[j:j + 4])
+                out.append(prm[j : j + 4])
             else:
                 (gx, gy), (hx, hy) = P[s.first], P[s.second]
                 ux, uy = hx - gx, hy - gy
@@ -238,7 +261,7 @@ class Peg(Step):
         spec = []
         for j, s in ((0, self.first), (4, self.second)):
             if isinstance(s, FixedPath):
-                spec.append((True, s.key, None, None, None, prm[j:j + 4]))
+                spec.append((True, s.key, None, None, None, prm[j : j + 4]))
             else:
                 spec.append((False, s.key, s.guide, s.first, s.second, None))
         (f1, k1, L1, a1, b1, q1), (f2, k2, L2, a2, b2, q2) = spec
@@ -281,8 +304,9 @@ class Peg(Step):
             x, y = P[X]
             s1, s2 = frames(P)
             c1, c2 = under_v(m, f1, L1, a1, x, y), under_v(m, f2, L2, a2, x, y)
-            vs1, vs2 = velocity(s1[2], s1[3], s2[2], s2[3], c2[0] - c1[0], c2[1] - c1[1],
-                                cross_of(m, s1, s2))
+            vs1, vs2 = velocity(
+                s1[2], s1[3], s2[2], s2[3], c2[0] - c1[0], c2[1] - c1[1], cross_of(m, s1, s2)
+            )
             m.S[k1] = [vs1, None, 0.0, 0.0]
             m.S[k2] = [vs2, None, 0.0, 0.0]
             m.V[X] = (c1[0] + vs1 * s1[2], c1[1] + vs1 * s1[3])
@@ -296,8 +320,15 @@ class Peg(Step):
             cx1, cy1 = coriolis(w1, t1[0], s1[2], s1[3])
             cx2, cy2 = coriolis(w2, t2[0], s2[2], s2[3])
             e1x, e1y = d1[0] + cx1, d1[1] + cy1
-            as1, as2 = acceleration(s1[2], s1[3], s2[2], s2[3], d2[0] + cx2 - e1x,
-                                    d2[1] + cy2 - e1y, cross_of(m, s1, s2))
+            as1, as2 = acceleration(
+                s1[2],
+                s1[3],
+                s2[2],
+                s2[3],
+                d2[0] + cx2 - e1x,
+                d2[1] + cy2 - e1y,
+                cross_of(m, s1, s2),
+            )
             t1[1], t1[2], t1[3] = as1, cx1, cy1
             t2[1], t2[2], t2[3] = as2, cx2, cy2
             m.A[X] = (e1x + as1 * s1[2], e1y + as1 * s1[3])
@@ -312,6 +343,7 @@ class Peg(Step):
             position(m)
             velocity_(m)
             acceleration_(m)
+
         return instant
 
     rounding = 48.0
@@ -327,8 +359,9 @@ class Peg(Step):
         k0 = k
         for s in self.slots:  # a fixed slot's own numbers
             if hasattr(s, "through"):
-                k = k + line_rounding(self.rounding, s.through[0], s.through[1], x, y, Ls,
-                                      getattr(s, "angle", None))
+                k = k + line_rounding(
+                    self.rounding, s.through[0], s.through[1], x, y, Ls, getattr(s, "angle", None)
+                )
         lever = 1.0
         for s in self.slots:
             if isinstance(s, GuideSlider):
@@ -336,9 +369,15 @@ class Peg(Step):
                 x, y = P[self.point]
                 far = vhypot(x - gx, y - gy) / vmax(vhypot(hx - gx, hy - gy), 1e-12 * Ls)
                 lever = vmax(lever, 1.0 + far)
-        p, v, a, w, al = two_lines(walk.condition(self), walk.ratio,
-                                   plus(walk.own(self, k0), k - k0), p_in * lever,
-                                   v_in * lever, a_in * lever, walk.couple(self))
+        p, v, a, w, al = two_lines(
+            walk.condition(self),
+            walk.ratio,
+            plus(walk.own(self, k0), k - k0),
+            p_in * lever,
+            v_in * lever,
+            a_in * lever,
+            walk.couple(self),
+        )
         for s in self.slots:
             walk.slide[s.key] = (v, a, a)
         return p, v, a, w, al
@@ -346,33 +385,44 @@ class Peg(Step):
     # ----- failures and words
     def why(self, *_):
         """Why the peg cannot be placed: its two slots do not cross."""
-        return (f"a pin in two parallel slots: {_slot_words(self.first)} and "
-                f"{_slot_words(self.second)} do not cross")
+        return (
+            f"a pin in two parallel slots: {_slot_words(self.first)} and "
+            f"{_slot_words(self.second)} do not cross"
+        )
 
     def singular(self, c):
         """The error for slots that are parallel at condition ``c``."""
         return SingularStepError(self.singular_why(c), step=self.label)
 
     def singular_why(self, c) -> str:
-        return (f"a pin in two parallel slots: {_slot_words(self.first)} and "
-                f"{_slot_words(self.second)} are parallel (sine {condition_text(c)}): they do "
-                f"not cross at one point, and {self.point} is undetermined")
+        return (
+            f"a pin in two parallel slots: {_slot_words(self.first)} and "
+            f"{_slot_words(self.second)} are parallel (sine {condition_text(c)}): they do "
+            f"not cross at one point, and {self.point} is undetermined"
+        )
 
     def warning(self, c) -> str:
-        return (f"{self.label}: {_slot_words(self.first)} and {_slot_words(self.second)} "
-                f"are nearly parallel (condition {c:.3g}): the peg {self.point} is "
-                "ill-determined")
+        return (
+            f"{self.label}: {_slot_words(self.first)} and {_slot_words(self.second)} "
+            f"are nearly parallel (condition {c:.3g}): the peg {self.point} is "
+            "ill-determined"
+        )
 
     def limit_why(self) -> str:
-        return (f"{_slot_words(self.first)} and {_slot_words(self.second)} turn parallel: "
-                f"the peg {self.point} runs off along them")
+        return (
+            f"{_slot_words(self.first)} and {_slot_words(self.second)} turn parallel: "
+            f"the peg {self.point} runs off along them"
+        )
 
     def transmission(self):
         return None
 
     def condition_column(self):
-        return (f"cond step {self.index + 1}", "1",
-                f"sine of the angle between the two slots of {self.point}")
+        return (
+            f"cond step {self.index + 1}",
+            "1",
+            f"sine of the angle between the two slots of {self.point}",
+        )
 
     def bodies(self):
         return tuple(f"block {s.key}" for s in self.slots)
@@ -384,8 +434,10 @@ class Peg(Step):
         return None
 
     def position_words(self, L, which, angle_deg):
-        return (f"{self.point}: {_slot_words(self.first)} and {_slot_words(self.second)} "
-                f"cross at {self.point}")
+        return (
+            f"{self.point}: {_slot_words(self.first)} and {_slot_words(self.second)} "
+            f"cross at {self.point}"
+        )
 
     # ----- the polygons
     def construction(self, sol, ph):
@@ -401,50 +453,121 @@ class Peg(Step):
             words = _slot_words(s)
             if isinstance(s, FixedPath):
                 u, start = s.u, (0.0, 0.0)
-                lines.append(DirectionLine(start, u, tl, f"parallel to {words}", mark=f"\u2225 {words}"))
+                lines.append(
+                    DirectionLine(start, u, tl, f"parallel to {words}", mark=f"\u2225 {words}")
+                )
                 parts.append(f"through {tl} (a fixed slot) one parallel to {words}")
-                found.append(Vector(start, D[X], f"{tl}{lab}", "sliding",
-                                    f"{'vs' if ph == 'velocity' else 'as'}_{s.key}",
-                                    f"sliding {ph} of {X} in {words}"))
+                found.append(
+                    Vector(
+                        start,
+                        D[X],
+                        f"{tl}{lab}",
+                        "sliding",
+                        f"{'vs' if ph == 'velocity' else 'as'}_{s.key}",
+                        f"sliding {ph} of {X} in {words}",
+                    )
+                )
                 continue
             g1 = s.first
             u = unit(*sub(P[s.second], P[g1]))
             w = sol.W[s.guide]
-            vc, ac = under_point(*P[g1], x, y, w, sol.Al.get(s.guide, 0.0), *sol.V[g1],
-                                 *sol.A.get(g1, (0.0, 0.0)))
+            vc, ac = under_point(
+                *P[g1], x, y, w, sol.Al.get(s.guide, 0.0), *sol.V[g1], *sol.A.get(g1, (0.0, 0.0))
+            )
             g_lab = pole_text(sol, g1, ph)
             if ph == "velocity":
-                given.append(Vector(sol.V[g1], vc, f"{image_label(sol, g1, ph)}{tl}",
-                                    "relative", f"v of the point of {s.guide} under {X}",
-                                    f"omega_{s.guide} x {g1}{X}, perpendicular to {g1}{X}"))
+                given.append(
+                    Vector(
+                        sol.V[g1],
+                        vc,
+                        f"{image_label(sol, g1, ph)}{tl}",
+                        "relative",
+                        f"v of the point of {s.guide} under {X}",
+                        f"omega_{s.guide} x {g1}{X}, perpendicular to {g1}{X}",
+                    )
+                )
                 named.append((tl, vc))
-                lines.append(DirectionLine(vc, u, tl, f"parallel to {s.guide}", mark=f"\u2225 {s.guide}"))
-                parts.append(f"from {g_lab} draw {image_label(sol, g1, ph)}{tl} = omega_"
-                             f"{s.guide} x {g1}{X} perpendicular to {g1}{X} ({tl}: the point "
-                             f"of {s.guide} under the peg) and through {tl} a line parallel "
-                             f"to {s.guide}")
-                found.append(Vector(vc, D[X], f"{tl}{lab}", "sliding", f"vs_{s.key}",
-                                    f"sliding velocity of {X} in {words}"))
+                lines.append(
+                    DirectionLine(vc, u, tl, f"parallel to {s.guide}", mark=f"\u2225 {s.guide}")
+                )
+                parts.append(
+                    f"from {g_lab} draw {image_label(sol, g1, ph)}{tl} = omega_"
+                    f"{s.guide} x {g1}{X} perpendicular to {g1}{X} ({tl}: the point "
+                    f"of {s.guide} under the peg) and through {tl} a line parallel "
+                    f"to {s.guide}"
+                )
+                found.append(
+                    Vector(
+                        vc,
+                        D[X],
+                        f"{tl}{lab}",
+                        "sliding",
+                        f"vs_{s.key}",
+                        f"sliding velocity of {X} in {words}",
+                    )
+                )
                 continue
             cor = sol.coriolis(s.key)
             end = add(ac, cor)
-            given.append(Vector(sol.A[g1], ac, f"{image_label(sol, g1, ph)}{tl}", "relative",
-                                f"a of the point of {s.guide} under {X}",
-                                f"omega_{s.guide}^2 x {g1}{X} towards {g1} and alpha_"
-                                f"{s.guide} x {g1}{X}"))
-            given.append(Vector(ac, end, f"cor {s.key}", "coriolis", f"Coriolis at {X} in "
-                                f"{s.guide}", f"2 omega_{s.guide} vs_{s.key} = "
-                                f"{math.hypot(*cor):.4g} m/s^2, perpendicular to {s.guide}"))
+            given.append(
+                Vector(
+                    sol.A[g1],
+                    ac,
+                    f"{image_label(sol, g1, ph)}{tl}",
+                    "relative",
+                    f"a of the point of {s.guide} under {X}",
+                    f"omega_{s.guide}^2 x {g1}{X} towards {g1} and alpha_{s.guide} x {g1}{X}",
+                )
+            )
+            given.append(
+                Vector(
+                    ac,
+                    end,
+                    f"cor {s.key}",
+                    "coriolis",
+                    f"Coriolis at {X} in {s.guide}",
+                    f"2 omega_{s.guide} vs_{s.key} = "
+                    f"{math.hypot(*cor):.4g} m/s^2, perpendicular to {s.guide}",
+                )
+            )
             named.append((tl, ac))
-            lines.append(DirectionLine(end, u, f"the end of the Coriolis component in "
-                                       f"{s.guide}", f"parallel to {s.guide}", mark=f"\u2225 {s.guide}"))
-            parts.append(f"from {g_lab} draw {tl}, the acceleration of the point of {s.guide} "
-                         f"under the peg, lay off from {tl} the Coriolis component 2 omega_"
-                         f"{s.guide} vs_{s.key} = {math.hypot(*cor):.4g} m/s^2 perpendicular "
-                         f"to {s.guide}, and through its end a line parallel to {s.guide}")
-            found.append(Vector(end, D[X], "s", "sliding", f"as_{s.key}",
-                                f"sliding acceleration of {X} in {words}"))
+            lines.append(
+                DirectionLine(
+                    end,
+                    u,
+                    f"the end of the Coriolis component in {s.guide}",
+                    f"parallel to {s.guide}",
+                    mark=f"\u2225 {s.guide}",
+                )
+            )
+            parts.append(
+                f"from {g_lab} draw {tl}, the acceleration of the point of {s.guide} "
+                f"under the peg, lay off from {tl} the Coriolis component 2 omega_"
+                f"{s.guide} vs_{s.key} = {math.hypot(*cor):.4g} m/s^2 perpendicular "
+                f"to {s.guide}, and through its end a line parallel to {s.guide}"
+            )
+            found.append(
+                Vector(
+                    end,
+                    D[X],
+                    "s",
+                    "sliding",
+                    f"as_{s.key}",
+                    f"sliding acceleration of {X} in {words}",
+                )
+            )
         text = "; ".join(parts) + f"; the two lines meet at {lab}"
         found.append(absolute(sol, X, D, ph))
-        return Construction(self.index, self.title, ph, lab, D[X], tuple(given),
-                            tuple(lines), tuple(found), text, cond, tuple(named))
+        return Construction(
+            self.index,
+            self.title,
+            ph,
+            lab,
+            D[X],
+            tuple(given),
+            tuple(lines),
+            tuple(found),
+            text,
+            cond,
+            tuple(named),
+        )

@@ -51,14 +51,21 @@ def _rack_params(scene, pr, kb_rate, beta0=0.0):
     Rp = abs(d)
     where = f"[rolling] {pr.rim}"
     if Rp < 1e-12:
-        raise SceneError(f"the rack {pr.rim}'s path passes through the pinion's centre "
-                         f"{pr.base_centre}: a pinion of no radius", key=where, file=scene.file)
+        raise SceneError(
+            f"the rack {pr.rim}'s path passes through the pinion's centre "
+            f"{pr.base_centre}: a pinion of no radius",
+            key=where,
+            file=scene.file,
+        )
     if pr.base_radius is not None and abs(pr.base_radius - Rp) > 1e-9 * Rp:
         u = scene.length_unit
-        raise SceneError(f"the contact leaves the pitch point: the rack's pitch line is "
-                         f"{in_units(Rp, u)} {scene.units} from {pr.base_centre}, not the "
-                         f"pinion's pitch radius {in_units(pr.base_radius, u)} {scene.units}",
-                         key=where, file=scene.file)
+        raise SceneError(
+            f"the contact leaves the pitch point: the rack's pitch line is "
+            f"{in_units(Rp, u)} {scene.units} from {pr.base_centre}, not the "
+            f"pinion's pitch radius {in_units(pr.base_radius, u)} {scene.units}",
+            key=where,
+            file=scene.file,
+        )
     # I - O = d perp(u); v_I = omega perp(I - O) = -omega d u: k = -d
     return (tx, ty, ux, uy, -d, kb_rate, scene.input.angle, ox, oy, beta0)
 
@@ -78,17 +85,26 @@ def recognise(g, name):
     if base.key == sc.input.crank:
         rate = 1.0
     else:
-        rate = next((getattr(st, "theta_rate", None) for st in g.steps
-                     if base.key in st.links), None)
+        rate = next(
+            (getattr(st, "theta_rate", None) for st in g.steps if base.key in st.links), None
+        )
         if rate is None:  # the pinion turns as a linkage makes it: its angle from its points
             O = pr.base_centre
             free, rate = (O, base.other(O)), 0.0
             (ox, oy), (qx, qy) = g.P[O], g.P[free[1]]
             beta0 = angle_of(qx - ox, qy - oy)
     g.used_sliders.add(name)
-    return RackStep(g.next_index, name, base.key, pr.base_centre,
-                    _rack_params(sc, pr, rate, beta0), free=free, unit=g.unit, uname=g.uname,
-                    pressure_angle=pr.pressure_angle)
+    return RackStep(
+        g.next_index,
+        name,
+        base.key,
+        pr.base_centre,
+        _rack_params(sc, pr, rate, beta0),
+        free=free,
+        unit=g.unit,
+        uname=g.uname,
+        pressure_angle=pr.pressure_angle,
+    )
 
 
 @dataclass(frozen=True)
@@ -144,9 +160,12 @@ class RackStep(Step):
         if self.free is None:
             return _rack_params(scene, pr, self.dims[5])
         if P is None:
-            raise SceneError(f"the pinion {self.base} of rack {self.point} turns as a linkage "
-                             "makes it: its dimensions need its angle at the stated instant",
-                             key=f"[rolling] {self.point}", file=scene.file)
+            raise SceneError(
+                f"the pinion {self.base} of rack {self.point} turns as a linkage "
+                "makes it: its dimensions need its angle at the stated instant",
+                key=f"[rolling] {self.point}",
+                file=scene.file,
+            )
         (ox, oy), (qx, qy) = P[self.free[0]], P[self.free[1]]
         return _rack_params(scene, pr, 0.0, angle_of(qx - ox, qy - oy))
 
@@ -205,6 +224,7 @@ class RackStep(Step):
             m.S[X] = [vs, a_s, 0.0, 0.0]
             m.V[X] = (vs * ux, vs * uy)
             m.A[X] = (a_s * ux, a_s * uy)
+
         return instant
 
     rounding = 8.0
@@ -226,8 +246,7 @@ class RackStep(Step):
         axis = ux == 0.0 or uy == 0.0  # a horizontal or vertical path: u is exact
         angle = math.atan2(uy, ux)
         du = 0.0 if axis else 4 * EPS * max(1.0, abs(angle))
-        own = line_rounding(self.rounding, tx, ty, x, y, sz["position"],
-                            None if axis else angle)
+        own = line_rounding(self.rounding, tx, ty, x, y, sz["position"], None if axis else angle)
         pitch = (self.rounding * EPS + du) * math.hypot(tx - ox, ty - oy) / abs(kk)
         vs, a_s = walk.motion.S[self.point][0], walk.motion.S[self.point][1]
         v = v_in + kv + pitch * abs(vs) / sz["velocity"]
@@ -248,12 +267,21 @@ class RackStep(Step):
         return self.contact(sol.P), tuple(sol.V[self.point]), tuple(sol.A[self.point])
 
     def contacts(self, P):
-        return ((self.base, f"block {self.point}", self.contact(P),
-                 f"the pitch point of rack {self.point} and pinion {self.base} (no slip)"),)
+        return (
+            (
+                self.base,
+                f"block {self.point}",
+                self.contact(P),
+                f"the pitch point of rack {self.point} and pinion {self.base} (no slip)",
+            ),
+        )
 
     def shapes(self, P):
-        return (("circle", self.base_centre, abs(self.dims[4])), ("contact", self.contact(P)),
-                ("guide clear of", self.point, P[self.base_centre]))
+        return (
+            ("circle", self.base_centre, abs(self.dims[4])),
+            ("contact", self.contact(P)),
+            ("guide clear of", self.point, P[self.base_centre]),
+        )
 
     # ----- words
     def why(self, g):
@@ -268,9 +296,11 @@ class RackStep(Step):
 
     def limit_why(self):
         if self.free is not None:
-            return (f"the pinion {self.base} of rack {self.point} has turned half a turn from "
-                    "the stated instant: its angle is followed no further (solve the scene at "
-                    "a later instant to go on)")
+            return (
+                f"the pinion {self.base} of rack {self.point} has turned half a turn from "
+                "the stated instant: its angle is followed no further (solve the scene at "
+                "a later instant to go on)"
+            )
         return f"the rack {self.point} would leave its pinion {self.base}"
 
     def transmission(self):
@@ -292,9 +322,11 @@ class RackStep(Step):
         return "above"
 
     def position_words(self, L, which, angle_deg):
-        return (f"{self.point}: the rack's point, on its pitch line at {L(abs(self.dims[4]))} "
-                f"from {self.base_centre}, moved along it as far as the pinion {self.base} "
-                "rolls it")
+        return (
+            f"{self.point}: the rack's point, on its pitch line at {L(abs(self.dims[4]))} "
+            f"from {self.base_centre}, moved along it as far as the pinion {self.base} "
+            "rolls it"
+        )
 
     def construction(self, sol, ph):
         X = self.point
@@ -303,23 +335,27 @@ class RackStep(Step):
         o = "o" if ph == "velocity" else "o'"
         if ph == "velocity":
             D, w, sym = sol.V, sol.W[self.base], "v"
-            text = (f"equal velocities at the pitch point (no slip): the rack moves as the "
-                    f"pinion's point at I, "
-                    f"v_{X} = omega_{self.base} x {self.base_centre}I = {abs(w):.4g} x "
-                    f"{abs(self.dims[4]):.4g} = {math.hypot(*D[X]):.4g} m/s; from {o} draw "
-                    f"{o}{lab} parallel to the path")
+            text = (
+                f"equal velocities at the pitch point (no slip): the rack moves as the "
+                f"pinion's point at I, "
+                f"v_{X} = omega_{self.base} x {self.base_centre}I = {abs(w):.4g} x "
+                f"{abs(self.dims[4]):.4g} = {math.hypot(*D[X]):.4g} m/s; from {o} draw "
+                f"{o}{lab} parallel to the path"
+            )
         else:
             D, al, sym = sol.A, sol.Al[self.base], "a"
-            text = (f"the rack translates: a_{X} = alpha_{self.base} x {self.base_centre}I = "
-                    f"{abs(al):.4g} x {abs(self.dims[4]):.4g} = {math.hypot(*D[X]):.4g} m/s^2 "
-                    f"along the path (the pinion's point at I has besides the centripetal "
-                    f"omega^2 R_p = {sol.W[self.base] ** 2 * abs(self.dims[4]):.4g} m/s^2 "
-                    f"towards {self.base_centre}: the contact point's acceleration is not "
-                    f"zero); from {o} draw {o}{lab} "
-                    "parallel to the path")
-        found = (absolute(sol, X, D, ph),
-                 Vector((0.0, 0.0), D[X], f"{o}{lab}", "sliding", f"{sym}s_{X}",
-                        "along the path"))
+            text = (
+                f"the rack translates: a_{X} = alpha_{self.base} x {self.base_centre}I = "
+                f"{abs(al):.4g} x {abs(self.dims[4]):.4g} = {math.hypot(*D[X]):.4g} m/s^2 "
+                f"along the path (the pinion's point at I has besides the centripetal "
+                f"omega^2 R_p = {sol.W[self.base] ** 2 * abs(self.dims[4]):.4g} m/s^2 "
+                f"towards {self.base_centre}: the contact point's acceleration is not "
+                f"zero); from {o} draw {o}{lab} "
+                "parallel to the path"
+            )
+        found = (
+            absolute(sol, X, D, ph),
+            Vector((0.0, 0.0), D[X], f"{o}{lab}", "sliding", f"{sym}s_{X}", "along the path"),
+        )
         line = DirectionLine((0.0, 0.0), u, o, "parallel to the path", mark="\u2225 path")
-        return Construction(self.index, self.title, ph, lab, D[X], (), (line,), found, text,
-                            1.0)
+        return Construction(self.index, self.title, ph, lab, D[X], (), (line,), found, text, 1.0)

@@ -41,10 +41,20 @@ from dataclasses import dataclass
 from ..common.errors import AssemblyError, SceneError
 from ..common.numbers import in_units
 from .rolling_dims import GAP, arm_rate, follow_params, pair_of, rate, turned, wheel_params
-from .base import (Construction, Step, Vector, absolute, centripetal, image_label, pole_text,
-                   relative, sub)
+from .base import (
+    Construction,
+    Step,
+    Vector,
+    absolute,
+    centripetal,
+    image_label,
+    pole_text,
+    relative,
+    sub,
+)
 
 __all__ = ["RollingWheel", "line_rates", "circle_rates", "rim_motion", "recognise"]
+
 
 def line_rates(tx, ty, r, vx, vy, ax, ay):
     """(omega, alpha) of a wheel of radius r rolling on a fixed line along t = perp(m),
@@ -82,8 +92,17 @@ def recognise(g, name):
     if pr.on == "line":
         (cx, cy), (tx, ty), (mx, my) = g.P[pr.centre], pr.through, pr.m
         s0 = (cx - tx) * -my + (cy - ty) * mx
-        return RollingWheel(g.next_index, pr.wheel, pr.centre, name, pr.on, pr.label,
-                            wheel_params(sc, g.bodies, pr, s0=s0), unit=g.unit, uname=g.uname)
+        return RollingWheel(
+            g.next_index,
+            pr.wheel,
+            pr.centre,
+            name,
+            pr.on,
+            pr.label,
+            wheel_params(sc, g.bodies, pr, s0=s0),
+            unit=g.unit,
+            uname=g.uname,
+        )
     O = pr.base_centre
     if O not in g.P:
         return None
@@ -98,19 +117,40 @@ def recognise(g, name):
     else:
         kb_rate = 0.0
     kd_rate = arm_rate(g, pr.centre, O)
-    prm = wheel_params(sc, g.bodies, pr, kd_rate=kd_rate, kb_rate=kb_rate, P=g.P,
-                       base_free=base_free)
+    prm = wheel_params(
+        sc, g.bodies, pr, kd_rate=kd_rate, kb_rate=kb_rate, P=g.P, base_free=base_free
+    )
     follow = None
     if base_free is not None:  # a gear that is a wheel whose angle follows its arm: its turn
         bst = next((s for s in g.steps if pr.base in s.links), None)  # from its formula
-        if (isinstance(bst, RollingWheel) and bst.on != "line" and bst.kd_rate is None
-                and bst.base_free is None):
+        if (
+            isinstance(bst, RollingWheel)
+            and bst.on != "line"
+            and bst.kd_rate is None
+            and bst.base_free is None
+        ):
             follow = (bst.centre, bst.base_centre, bst.kb_rate)
             prm += follow_params(sc, g.bodies, pair_of(sc, pr.base), bst.kb_rate, g.P)
-    return RollingWheel(g.next_index, pr.wheel, pr.centre, name, pr.on, pr.label, prm,
-                        base=pr.base, base_centre=O, inside=pr.inside, ring=pr.ring,
-                        kd_rate=kd_rate, kb_rate=kb_rate, base_free=base_free, follow=follow,
-                        unit=g.unit, uname=g.uname, pressure_angle=pr.pressure_angle)
+    return RollingWheel(
+        g.next_index,
+        pr.wheel,
+        pr.centre,
+        name,
+        pr.on,
+        pr.label,
+        prm,
+        base=pr.base,
+        base_centre=O,
+        inside=pr.inside,
+        ring=pr.ring,
+        kd_rate=kd_rate,
+        kb_rate=kb_rate,
+        base_free=base_free,
+        follow=follow,
+        unit=g.unit,
+        uname=g.uname,
+        pressure_angle=pr.pressure_angle,
+    )
 
 
 @dataclass(frozen=True)
@@ -193,9 +233,12 @@ class RollingWheel(Step):
         pr = pair_of(scene, self.wheel)
         if self.on == "line":
             if P is None:
-                raise SceneError(f"wheel {self.wheel} rolls on a line: its dimensions need "
-                                 "its centre's place at the stated instant",
-                                 key=f"[rolling] {self.wheel}", file=scene.file)
+                raise SceneError(
+                    f"wheel {self.wheel} rolls on a line: its dimensions need "
+                    "its centre's place at the stated instant",
+                    key=f"[rolling] {self.wheel}",
+                    file=scene.file,
+                )
             (cx, cy), (tx, ty), (mx, my) = P[pr.centre], pr.through, pr.m
             s0 = (cx - tx) * -my + (cy - ty) * mx
             return wheel_params(scene, bodies, pr, s0=s0)
@@ -203,8 +246,9 @@ class RollingWheel(Step):
         kb_rate = self.kb_rate
         if two is not None and self.base == scene.link(two.crank).key:
             kb_rate = two.omega / scene.input.omega  # the ratio of this scene's speeds
-        prm = wheel_params(scene, bodies, pr, kd_rate=self.kd_rate, kb_rate=kb_rate,
-                           base_free=self.base_free, P=P)
+        prm = wheel_params(
+            scene, bodies, pr, kd_rate=self.kd_rate, kb_rate=kb_rate, base_free=self.base_free, P=P
+        )
         if self.follow is not None:
             prm += follow_params(scene, bodies, pair_of(scene, self.base), self.follow[2], P)
         return prm
@@ -244,7 +288,8 @@ class RollingWheel(Step):
         if self.follow is not None:  # the gear's turn from its own formula
             (bx, by), (qx, qy) = P[self.follow[0]], P[self.follow[1]]
             turn = prm[13] * (ctx.theta - prm[6]) + prm[12] * self._turned(
-                bx - qx, by - qy, prm[14], ctx)
+                bx - qx, by - qy, prm[14], ctx
+            )
             phi = phi + prm[4] * turn
         elif self.base_free is not None:
             (bx, by), (qx, qy) = P[self.base_free[0]], P[self.base_free[1]]
@@ -310,8 +355,9 @@ class RollingWheel(Step):
                 acx = acy = aox = aoy = 0.0
             wb = m.W[base] if base else 0.0
             ab = m.Al[base] if base and acc else 0.0
-            return circle_rates(cx - ox, cy - oy, vcx - vox, vcy - voy, acx - aox, acy - aoy,
-                                kd, kb, wb, ab)
+            return circle_rates(
+                cx - ox, cy - oy, vcx - vox, vcy - voy, acx - aox, acy - aoy, kd, kb, wb, ab
+            )
 
         def velocity_(m):
             (cx, cy), (x, y) = m.P[C], m.P[X]
@@ -354,6 +400,7 @@ class RollingWheel(Step):
                 vx, vy, ax, ay = rim_motion(rx, ry, w, al, vcx, vcy, acx, acy)
                 m.W[W], m.Al[W] = w, al
                 V[X], A[X] = (vx, vy), (ax, ay)
+
             return instant
         kd, kb, phi0, th0, K = prm[3], prm[4], prm[5], prm[6], prm[7]
         fixed = self.kd_rate is not None and self.base_free is None
@@ -371,12 +418,22 @@ class RollingWheel(Step):
             m.cond[i] = 1.0
             (vcx, vcy), (vox, voy) = V[C], V[O]
             (acx, acy), (aox, aoy) = A[C], A[O]
-            w, al = circle_rates(cx - ox, cy - oy, vcx - vox, vcy - voy, acx - aox, acy - aoy,
-                                 kd, kb, m.W[base] if base else 0.0,
-                                 m.Al[base] if base else 0.0)
+            w, al = circle_rates(
+                cx - ox,
+                cy - oy,
+                vcx - vox,
+                vcy - voy,
+                acx - aox,
+                acy - aoy,
+                kd,
+                kb,
+                m.W[base] if base else 0.0,
+                m.Al[base] if base else 0.0,
+            )
             vx, vy, ax, ay = rim_motion(rx, ry, w, al, vcx, vcy, acx, acy)
             m.W[W], m.Al[W] = w, al
             V[X], A[X] = (vx, vy), (ax, ay)
+
         return instant
 
     rounding = 8.0
@@ -412,8 +469,9 @@ class RollingWheel(Step):
         point there (v_I is the base's point's velocity: no slip)."""
         I, _ = self.contact(sol.P)
         rx, ry = sub(I, sol.P[self.centre])
-        vx, vy, ax, ay = rim_motion(rx, ry, sol.W[self.wheel], sol.Al[self.wheel],
-                                    *sol.V[self.centre], *sol.A[self.centre])
+        vx, vy, ax, ay = rim_motion(
+            rx, ry, sol.W[self.wheel], sol.Al[self.wheel], *sol.V[self.centre], *sol.A[self.centre]
+        )
         return I, (vx, vy), (ax, ay)
 
     def ratio_slips(self, sol):
@@ -430,12 +488,23 @@ class RollingWheel(Step):
         if wd == 0.0:
             return ()
         w = sol.W[self.wheel]
-        out = [(w - wd, "arm_row_left_out", "the turning relative to the arm given as the "
+        out = [
+            (
+                w - wd,
+                "arm_row_left_out",
+                "the turning relative to the arm given as the "
                 "wheel's own: the tabular method's row 'all locked' (+ the arm's turn) left "
-                "out")]
+                "out",
+            )
+        ]
         if self.base:
-            out.append((self.dims[4] * sol.W[self.base], "arm_taken_fixed",
-                        "the gear ratio of fixed centres used: the arm's motion left out"))
+            out.append(
+                (
+                    self.dims[4] * sol.W[self.base],
+                    "arm_taken_fixed",
+                    "the gear ratio of fixed centres used: the arm's motion left out",
+                )
+            )
         return tuple(out)
 
     def shapes(self, P):
@@ -453,33 +522,45 @@ class RollingWheel(Step):
     def contacts(self, P):
         """The contact point: the centre of the wheel and what it rolls on (no slip)."""
         I, _ = self.contact(P)
-        return ((self.base or "ground", self.wheel, I,
-                 f"the contact of {self.wheel} rolling on {self.where} (no slip)"),)
+        return (
+            (
+                self.base or "ground",
+                self.wheel,
+                I,
+                f"the contact of {self.wheel} rolling on {self.where} (no slip)",
+            ),
+        )
 
     def _off_words(self, cx, cy, prm):
         r = prm[1]
         if self.on == "line":
             tx, ty, mx, my = prm[2:6]
             d = (cx - tx) * mx + (cy - ty) * my
-            return (f"at the stated crank angle the centre {self.centre} of wheel {self.wheel} "
-                    f"is {in_units(d, self.unit)} {self.uname} from {self.where}, not its radius "
-                    f"{in_units(r, self.unit)} {self.uname}: "
-                    "the wheel cannot roll on it there (check the line's through, the radius "
-                    "and the links that place the centre)")
+            return (
+                f"at the stated crank angle the centre {self.centre} of wheel {self.wheel} "
+                f"is {in_units(d, self.unit)} {self.uname} from {self.where}, not its radius "
+                f"{in_units(r, self.unit)} {self.uname}: "
+                "the wheel cannot roll on it there (check the line's through, the radius "
+                "and the links that place the centre)"
+            )
         dist = math.hypot(cx - prm[8], cy - prm[9])
-        return (f"at the stated crank angle the centre {self.centre} of wheel {self.wheel} is "
-                f"{in_units(dist, self.unit)} {self.uname} from {self.base_centre}: the contact "
-                "leaves the pitch "
-                "point (check the radii)")
+        return (
+            f"at the stated crank angle the centre {self.centre} of wheel {self.wheel} is "
+            f"{in_units(dist, self.unit)} {self.uname} from {self.base_centre}: the contact "
+            "leaves the pitch "
+            "point (check the radii)"
+        )
 
     # ----- words
     def why(self, g):
         """Why the wheel cannot roll here: its centre is off its line or pitch circle by ``g`` of
         the radii."""
-        return (f"the centre {self.centre} of wheel {self.wheel} is off "
-                + ("its line" if self.on == "line" else "its pitch circle")
-                + f" by {abs(g):.3g} of the radii: the contact leaves the pitch point "
-                "(the wheel would slip or lift)")
+        return (
+            f"the centre {self.centre} of wheel {self.wheel} is off "
+            + ("its line" if self.on == "line" else "its pitch circle")
+            + f" by {abs(g):.3g} of the radii: the contact leaves the pitch point "
+            "(the wheel would slip or lift)"
+        )
 
     def singular_why(self, c):
         return f"the wheel {self.wheel} has left its contact (condition {c:.2g})"
@@ -489,9 +570,11 @@ class RollingWheel(Step):
 
     def limit_why(self):
         if self.on != "line" and self.theta_rate is None:
-            return (f"the wheel {self.wheel} would leave {self.where}, or its arm or gear has "
-                    "turned half a turn from the stated instant: its angle is followed no "
-                    "further (solve the scene at a later instant to go on)")
+            return (
+                f"the wheel {self.wheel} would leave {self.where}, or its arm or gear has "
+                "turned half a turn from the stated instant: its angle is followed no "
+                "further (solve the scene at a later instant to go on)"
+            )
         return f"the wheel {self.wheel} would leave {self.where}"
 
     def transmission(self):
@@ -522,32 +605,45 @@ class RollingWheel(Step):
             how = f"the wheel turns {self.dims[7]:.4g} times the crank's angle, by the gear ratio"
         else:
             kd, kb = self.dims[3], self.dims[4]
-            how = ("no slip relative to the arm: the wheel turns "
-                   + (f"{kd:.4g} times the line of centres {self.base_centre}{self.centre}"
-                      if kd else "")
-                   + (" and " if kd and kb and self.base else "")
-                   + (f"{kb:.4g} times the gear {self.base}" if kb and self.base else ""))
-        what = (f"the ring {self.wheel} (pitch radius {L(r)}) meshes with {self.where} inside "
-                "it" if self.ring else
-                f"the wheel {self.wheel} (radius {L(r)}) rolls without slipping on {self.where}")
-        return (f"{self.rim}: {what}; from {self.centre} draw {self.centre}{self.rim} = {L(ell)} at "
-                f"{phi:.4g} deg ({how})")
+            how = (
+                "no slip relative to the arm: the wheel turns "
+                + (
+                    f"{kd:.4g} times the line of centres {self.base_centre}{self.centre}"
+                    if kd
+                    else ""
+                )
+                + (" and " if kd and kb and self.base else "")
+                + (f"{kb:.4g} times the gear {self.base}" if kb and self.base else "")
+            )
+        what = (
+            f"the ring {self.wheel} (pitch radius {L(r)}) meshes with {self.where} inside it"
+            if self.ring
+            else f"the wheel {self.wheel} (radius {L(r)}) rolls without slipping on {self.where}"
+        )
+        return (
+            f"{self.rim}: {what}; from {self.centre} draw {self.centre}{self.rim} = {L(ell)} at "
+            f"{phi:.4g} deg ({how})"
+        )
 
     def _omega_words(self, sol, w, vI):
         """How omega follows from no slip at the contact I, in the book's words."""
         C, W, r = self.centre, self.wheel, self.dims[1]
         sense = f"{abs(w):.4g} rad/s {'ccw' if w >= 0 else 'cw'}"
         if self.on != "gear":
-            return (f"no slip: the wheel's point at the contact I with {self.where} is at rest, "
-                    f"so I is the wheel's instantaneous centre and omega_{W} = v_{C} / {C}I = "
-                    f"{math.hypot(*sol.V[C]):.4g} / {r:.4g} = {sense}")
+            return (
+                f"no slip: the wheel's point at the contact I with {self.where} is at rest, "
+                f"so I is the wheel's instantaneous centre and omega_{W} = v_{C} / {C}I = "
+                f"{math.hypot(*sol.V[C]):.4g} / {r:.4g} = {sense}"
+            )
         O = self.base_centre
         moving = math.hypot(*sol.V[O]) > 0.0
-        return ("equal velocities at the pitch point (no slip): the wheel's point at I moves as "
-                "the gear's, v_I = "
-                + (f"v_{O} + " if moving else "")
-                + f"omega_{self.base} x {O}I = {math.hypot(*vI):.4g} m/s; "
-                f"omega_{W} = (v_I - v_{C}) / {C}I, perpendicular to {C}I, = {sense}")
+        return (
+            "equal velocities at the pitch point (no slip): the wheel's point at I moves as "
+            "the gear's, v_I = "
+            + (f"v_{O} + " if moving else "")
+            + f"omega_{self.base} x {O}I = {math.hypot(*vI):.4g} m/s; "
+            f"omega_{W} = (v_I - v_{C}) / {C}I, perpendicular to {C}I, = {sense}"
+        )
 
     def construction(self, sol, ph):
         C, X, W = self.centre, self.rim, self.wheel
@@ -557,27 +653,39 @@ class RollingWheel(Step):
         w, al, r = sol.W[W], sol.Al[W], self.dims[1]
         if ph == "velocity":
             V = sol.V
-            text = (self._omega_words(sol, w, vI) + f"; from {pole_text(sol, C, ph)} draw "
-                    f"{lab(C)}{lab(X)} perpendicular to {C}{X} = omega x {C}{X} = "
-                    f"{abs(w) * self.dims[0]:.4g} m/s")
+            text = (
+                self._omega_words(sol, w, vI) + f"; from {pole_text(sol, C, ph)} draw "
+                f"{lab(C)}{lab(X)} perpendicular to {C}{X} = omega x {C}{X} = "
+                f"{abs(w) * self.dims[0]:.4g} m/s"
+            )
             found = (relative(sol, X, C, V, ph), absolute(sol, X, V, ph))
-            return Construction(self.index, self.title, ph, lab(X), V[X], (), (), found, text,
-                                cond)
+            return Construction(self.index, self.title, ph, lab(X), V[X], (), (), found, text, cond)
         A = sol.A
         cen = centripetal(sol, X, C, W, ph)
-        tan = Vector(cen.end, A[X], f"{lab(X)}t", "tangential", f"tangential of {X}{C}",
-                     f"alpha x {C}{X} = {abs(al) * self.dims[0]:.4g} m/s^2, "
-                     f"perpendicular to {C}{X}")
-        where = (f"omega^2 r = {w * w * r:.4g} m/s^2 towards the centre {C}" if self.on == "line"
-                 else f"{math.hypot(*aI):.4g} m/s^2")
-        why = (f"the tangential acceleration of {C} along the contact, over r"
-               if self.on != "gear" else "the two gears' points at I have one tangential "
-               "acceleration")
-        text = (f"alpha_{W} = {abs(al):.4g} rad/s^2 {'ccw' if al >= 0 else 'cw'} from the no-slip "
-                f"relation ({why}); from "
-                f"{pole_text(sol, C, ph)} draw the centripetal component {cen.text}, then the "
-                f"tangential {tan.text}; its end is {lab(X)}. The contact point I is not at rest "
-                f"in acceleration: a_I = {where}")
+        tan = Vector(
+            cen.end,
+            A[X],
+            f"{lab(X)}t",
+            "tangential",
+            f"tangential of {X}{C}",
+            f"alpha x {C}{X} = {abs(al) * self.dims[0]:.4g} m/s^2, perpendicular to {C}{X}",
+        )
+        where = (
+            f"omega^2 r = {w * w * r:.4g} m/s^2 towards the centre {C}"
+            if self.on == "line"
+            else f"{math.hypot(*aI):.4g} m/s^2"
+        )
+        why = (
+            f"the tangential acceleration of {C} along the contact, over r"
+            if self.on != "gear"
+            else "the two gears' points at I have one tangential acceleration"
+        )
+        text = (
+            f"alpha_{W} = {abs(al):.4g} rad/s^2 {'ccw' if al >= 0 else 'cw'} from the no-slip "
+            f"relation ({why}); from "
+            f"{pole_text(sol, C, ph)} draw the centripetal component {cen.text}, then the "
+            f"tangential {tan.text}; its end is {lab(X)}. The contact point I is not at rest "
+            f"in acceleration: a_I = {where}"
+        )
         found = (cen, tan, relative(sol, X, C, A, ph), absolute(sol, X, A, ph))
-        return Construction(self.index, self.title, ph, lab(X), A[X], (cen,), (), found, text,
-                            cond)
+        return Construction(self.index, self.title, ph, lab(X), A[X], (cen,), (), found, text, cond)

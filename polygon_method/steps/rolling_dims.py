@@ -10,8 +10,17 @@ import math
 from ..common.errors import AssemblyError, SceneError
 from ..common.numbers import in_units
 
-__all__ = ["GAP", "HALF", "pair_of", "rate", "arm_rate", "angle_of", "turned", "wheel_params",
-           "follow_params"]
+__all__ = [
+    "GAP",
+    "HALF",
+    "pair_of",
+    "rate",
+    "arm_rate",
+    "angle_of",
+    "turned",
+    "wheel_params",
+    "follow_params",
+]
 
 #: how far (relative to the radii) a wheel's centre may leave its line or pitch circle
 GAP = 1e-9
@@ -74,9 +83,12 @@ def turned(dx, dy, a0, ctx, step, what):
         return t
     t = math.atan2(y, x)
     if abs(t) > HALF:
-        raise AssemblyError(f"{what} has turned {math.degrees(abs(t)):.4g} deg from the stated "
-                            "instant: its angle cannot be followed past half a turn (solve the "
-                            "scene at that instant)", step=step.label)
+        raise AssemblyError(
+            f"{what} has turned {math.degrees(abs(t)):.4g} deg from the stated "
+            "instant: its angle cannot be followed past half a turn (solve the "
+            "scene at that instant)",
+            step=step.label,
+        )
     return t
 
 
@@ -107,11 +119,18 @@ def wheel_params(scene, bodies, pr, *, s0=None, kd_rate=0.0, kb_rate=0.0, P=None
     where = f"[rolling] {pr.wheel}"
     if P is not None:
         C0, O = P[pr.centre], P[pr.base_centre]
-    elif kd_rate is None or base_free is not None or pr.base_centre not in scene.ground or (
-            pr.centre not in scene.ground and pr.centre != inp.tip):
-        raise SceneError(f"the wheel {pr.wheel}'s arm or gear turns as a linkage makes it: "
-                         "its dimensions need the positions at the stated instant", key=where,
-                         file=scene.file)
+    elif (
+        kd_rate is None
+        or base_free is not None
+        or pr.base_centre not in scene.ground
+        or (pr.centre not in scene.ground and pr.centre != inp.tip)
+    ):
+        raise SceneError(
+            f"the wheel {pr.wheel}'s arm or gear turns as a linkage makes it: "
+            "its dimensions need the positions at the stated instant",
+            key=where,
+            file=scene.file,
+        )
     else:
         O = scene.ground[pr.base_centre]
         if pr.centre in scene.ground:
@@ -124,24 +143,34 @@ def wheel_params(scene, bodies, pr, *, s0=None, kd_rate=0.0, kb_rate=0.0, P=None
     ring = getattr(pr, "ring", False)  # the wheel a ring about the gear (e = -1 too)
     R = (dist - r) if e > 0 else (r - dist) if ring else (dist + r)
     if R <= 0 or dist == 0:
-        raise SceneError(f"the wheel {pr.wheel} (radius {in_units(r, scene.length_unit)} "
-                         f"{scene.units}) cannot "
-                         + (f"be a ring about {pr.label}" if ring else
-                            f"roll {'outside' if e > 0 else 'inside'} {pr.label}")
-                         + f": its centre is {in_units(dist, scene.length_unit)} "
-                         f"{scene.units} from {pr.base_centre}"
-                         + ("" if e < 0 else " (not more than its radius: inside = true?)")
-                         + (" (not less than its radius)" if ring else ""),
-                         key=where, file=scene.file)
+        raise SceneError(
+            f"the wheel {pr.wheel} (radius {in_units(r, scene.length_unit)} "
+            f"{scene.units}) cannot "
+            + (
+                f"be a ring about {pr.label}"
+                if ring
+                else f"roll {'outside' if e > 0 else 'inside'} {pr.label}"
+            )
+            + f": its centre is {in_units(dist, scene.length_unit)} "
+            f"{scene.units} from {pr.base_centre}"
+            + ("" if e < 0 else " (not more than its radius: inside = true?)")
+            + (" (not less than its radius)" if ring else ""),
+            key=where,
+            file=scene.file,
+        )
     if pr.base_radius is not None and abs(pr.base_radius - R) > GAP * (R + r):
         u, n = scene.length_unit, scene.units
         want = r - pr.base_radius if ring else pr.base_radius + e * r
-        raise SceneError(f"the contact leaves the pitch point: the centre distance "
-                         f"{pr.base_centre}{pr.centre} = {in_units(dist, u)} {n} is not "
-                         f"{'r - R' if ring else 'R + r' if e > 0 else 'R - r'} = "
-                         f"{in_units(want, u)} {n} "
-                         f"(R = {in_units(pr.base_radius, u)}, r = {in_units(r, u)}): "
-                         "the gears would not mesh", key=where, file=scene.file)
+        raise SceneError(
+            f"the contact leaves the pitch point: the centre distance "
+            f"{pr.base_centre}{pr.centre} = {in_units(dist, u)} {n} is not "
+            f"{'r - R' if ring else 'R + r' if e > 0 else 'R - r'} = "
+            f"{in_units(want, u)} {n} "
+            f"(R = {in_units(pr.base_radius, u)}, r = {in_units(r, u)}): "
+            "the gears would not mesh",
+            key=where,
+            file=scene.file,
+        )
     kd, kb = 1.0 + e * R / r, -e * R / r
     dx, dy = C0[0] - O[0], C0[1] - O[1]
     g = 1.0 if ring else e  # towards the contact: I - C = -g r (C - O) / |C - O|

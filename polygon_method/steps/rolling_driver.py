@@ -74,8 +74,11 @@ class WheelDriver(BlockDriver):
 
     def parameter(self, scene) -> tuple:
         """(name, symbol, unit): the wheel's centre's place along its line."""
-        return (f"place of centre {self.point} of wheel {self.wheel}", f"s_{self.point}",
-                f" {scene.units}")
+        return (
+            f"place of centre {self.point} of wheel {self.wheel}",
+            f"s_{self.point}",
+            f" {scene.units}",
+        )
 
     def input_record(self, scene):
         """The JSON ``input``: the block's record of the centre (its place, vs, as, its
@@ -89,10 +92,12 @@ class WheelDriver(BlockDriver):
         """The line under the drawings: the wheel's omega (and alpha), its centre's place."""
         inp = scene.input
         w, al = self.omega_alpha(inp.omega, inp.alpha)
-        return (f"wheel {self.wheel} rolling at {abs(w):.4g} rad/s {turn_sense(w)}"
-                + (f", {abs(al):.4g} rad/s² {turn_sense(al)}" if al else "")
-                + f", centre {self.point} at s = {in_units(inp.angle, scene.length_unit)} "
-                f"{scene.units}")
+        return (
+            f"wheel {self.wheel} rolling at {abs(w):.4g} rad/s {turn_sense(w)}"
+            + (f", {abs(al):.4g} rad/s² {turn_sense(al)}" if al else "")
+            + f", centre {self.point} at s = {in_units(inp.angle, scene.length_unit)} "
+            f"{scene.units}"
+        )
 
     def input_scales(self, scene):
         """(v, a, omega, alpha): |omega| r, omega^2 r + |alpha| r, |omega|, omega^2 +
@@ -108,15 +113,21 @@ class WheelDriver(BlockDriver):
         inp, u = scene.input, scene.length_unit
         w, al = self.omega_alpha(inp.omega, inp.alpha)
         r, C = self.radius, self.point
-        words = (f"wheel {self.wheel} (radius {in_units(r, u)} {scene.units}) rolls without "
-                 f"slip on {self.ground_words} at omega = {abs(w):.6g} rad/s {turn_sense(w)}"
-                 + (f", alpha = {abs(al):.6g} rad/s^2 {turn_sense(al)}" if al else ", steadily")
-                 + f": its centre {C} at s_{C} = {in_units(inp.angle, u)} {scene.units} moves "
-                 f"at omega r = {abs(inp.omega):.6g} m/s {self.sense(inp.omega)}")
+        words = (
+            f"wheel {self.wheel} (radius {in_units(r, u)} {scene.units}) rolls without "
+            f"slip on {self.ground_words} at omega = {abs(w):.6g} rad/s {turn_sense(w)}"
+            + (f", alpha = {abs(al):.6g} rad/s^2 {turn_sense(al)}" if al else ", steadily")
+            + f": its centre {C} at s_{C} = {in_units(inp.angle, u)} {scene.units} moves "
+            f"at omega r = {abs(inp.omega):.6g} m/s {self.sense(inp.omega)}"
+        )
         if inp.alpha:
-            words += f", accelerating at alpha r = {abs(inp.alpha):.6g} m/s^2 {self.sense(inp.alpha)}"
-        return (words + f"; its contact point I is the instantaneous centre (v_I = 0, a_I = "
-                f"omega^2 r = {contact_acceleration(w, r):.6g} m/s^2 towards {C})")
+            words += (
+                f", accelerating at alpha r = {abs(inp.alpha):.6g} m/s^2 {self.sense(inp.alpha)}"
+            )
+        return (
+            words + f"; its contact point I is the instantaneous centre (v_I = 0, a_I = "
+            f"omega^2 r = {contact_acceleration(w, r):.6g} m/s^2 towards {C})"
+        )
 
     def input_items(self, scene, fmt):
         """The step table's input: the wheel's omega and alpha (given), then its centre's
@@ -125,36 +136,51 @@ class WheelDriver(BlockDriver):
         w, al = self.omega_alpha(inp.omega, inp.alpha)
         W = self.wheel
         on_centre = inp.wheel_given  # the centre's velocity (acceleration) given instead
-        items = [(f"v_{C} = {fmt(abs(inp.omega))} m/s {self.sense(inp.omega)} (given); the "
-                  f"wheel rolls without slip on {self.ground_words}, radius r = {fmt(r)} m, so "
-                  f"omega_{W} = v_{C} / r = {fmt(abs(w))} rad/s {turn_sense(w)}")
-                 if f"vs_{C}" in on_centre else
-                 f"omega_{W} = {fmt(abs(w))} rad/s {turn_sense(w)} (given); the wheel rolls "
-                 f"without slip on {self.ground_words}, radius r = {fmt(r)} m",
-                 (f"a_{C} = {fmt(abs(inp.alpha))} m/s^2 {self.sense(inp.alpha)} (given), so "
-                  f"alpha_{W} = a_{C} / r = {fmt(abs(al))} rad/s^2 {turn_sense(al)}")
-                 if f"as_{C}" in on_centre and al else
-                 f"alpha_{W} = {fmt(abs(al))} rad/s^2 {turn_sense(al)} (given)" if al else
-                 f"alpha_{W} = 0 (the wheel rolls at a steady speed)",
-                 f"the wheel rolls: its centre moves at omega r = {fmt(abs(w))} x {fmt(r)} = "
-                 f"{fmt(abs(inp.omega))} m/s along the ground, {self.sense(inp.omega)}; its "
-                 "contact point I is the instantaneous centre (v_I = 0)",
-                 (f"a_{C} = alpha r = {fmt(abs(al))} x {fmt(r)} = {fmt(abs(inp.alpha))} m/s^2 "
-                  f"{self.sense(inp.alpha)}" if al else f"a_{C} = 0 (alpha = 0)")
-                 + "; the contact point's acceleration is not zero: a_I = omega^2 r = "
-                 f"{fmt(contact_acceleration(w, r))} m/s^2 towards {C}"]
+        items = [
+            (
+                f"v_{C} = {fmt(abs(inp.omega))} m/s {self.sense(inp.omega)} (given); the "
+                f"wheel rolls without slip on {self.ground_words}, radius r = {fmt(r)} m, so "
+                f"omega_{W} = v_{C} / r = {fmt(abs(w))} rad/s {turn_sense(w)}"
+            )
+            if f"vs_{C}" in on_centre
+            else f"omega_{W} = {fmt(abs(w))} rad/s {turn_sense(w)} (given); the wheel rolls "
+            f"without slip on {self.ground_words}, radius r = {fmt(r)} m",
+            (
+                f"a_{C} = {fmt(abs(inp.alpha))} m/s^2 {self.sense(inp.alpha)} (given), so "
+                f"alpha_{W} = a_{C} / r = {fmt(abs(al))} rad/s^2 {turn_sense(al)}"
+            )
+            if f"as_{C}" in on_centre and al
+            else f"alpha_{W} = {fmt(abs(al))} rad/s^2 {turn_sense(al)} (given)"
+            if al
+            else f"alpha_{W} = 0 (the wheel rolls at a steady speed)",
+            f"the wheel rolls: its centre moves at omega r = {fmt(abs(w))} x {fmt(r)} = "
+            f"{fmt(abs(inp.omega))} m/s along the ground, {self.sense(inp.omega)}; its "
+            "contact point I is the instantaneous centre (v_I = 0)",
+            (
+                f"a_{C} = alpha r = {fmt(abs(al))} x {fmt(r)} = {fmt(abs(inp.alpha))} m/s^2 "
+                f"{self.sense(inp.alpha)}"
+                if al
+                else f"a_{C} = 0 (alpha = 0)"
+            )
+            + "; the contact point's acceleration is not zero: a_I = omega^2 r = "
+            f"{fmt(contact_acceleration(w, r))} m/s^2 towards {C}",
+        ]
         return f"Input wheel {W}", items
 
     def effort_words(self, effort):
         """The driving force at the wheel's centre along the ground (power balance)."""
-        return (f"input force at the centre {self.point} of wheel {self.wheel}: {abs(effort):.4g} "
-                f"N {self.sense(effort)} along the ground, i.e. a torque of "
-                f"{abs(effort) * self.radius:.4g} N m about the contact point (power balance, no "
-                "friction or inertia)")
+        return (
+            f"input force at the centre {self.point} of wheel {self.wheel}: {abs(effort):.4g} "
+            f"N {self.sense(effort)} along the ground, i.e. a torque of "
+            f"{abs(effort) * self.radius:.4g} N m about the contact point (power balance, no "
+            "friction or inertia)"
+        )
 
     def parameter_words(self):
-        return (f"the place s_{self.point} of the centre {self.point} of the rolling wheel "
-                f"{self.wheel} along its line")
+        return (
+            f"the place s_{self.point} of the centre {self.point} of the rolling wheel "
+            f"{self.wheel} along its line"
+        )
 
     @property
     def driver_name(self):
@@ -165,16 +191,20 @@ class WheelDriver(BlockDriver):
         return f"the rolling wheel {self.wheel} is never singular (condition {c:.2g})"
 
     def limit_why(self) -> str:
-        return (f"the wheel {self.wheel} has rolled to the end of its travel (one turn of the "
-                "wheel from the stated place, unless [input] travel states the stretch: "
-                "several turns, if the problem asks)")
+        return (
+            f"the wheel {self.wheel} has rolled to the end of its travel (one turn of the "
+            "wheel from the stated place, unless [input] travel states the stretch: "
+            "several turns, if the problem asks)"
+        )
 
     def bodies(self):
         return (self.wheel,)
 
     def position_words(self, L, which, place):
-        return (f"{self.point}: the centre of wheel {self.wheel} (radius {L(self.radius)}), "
-                f"rolling on {self.ground_words}, at s_{self.point} = {place} along it")
+        return (
+            f"{self.point}: the centre of wheel {self.wheel} (radius {L(self.radius)}), "
+            f"rolling on {self.ground_words}, at s_{self.point} = {place} along it"
+        )
 
     def construction(self, sol, ph):
         C, W = self.point, self.wheel
@@ -186,24 +216,28 @@ class WheelDriver(BlockDriver):
         r = self.radius
         if ph == "velocity":
             v = absolute(sol, C, sol.V, ph)
-            text = (f"the wheel {W} rolls: its contact point I is the instantaneous centre "
-                    f"(v_I = 0, i at {o}); its centre moves at omega r = {abs(w):.4g} x "
-                    f"{r:.4g} = {abs(vs):.4g} m/s along the ground: from {o} draw {o}{lab} = "
-                    f"{abs(vs):.4g} m/s {self.sense(vs)}")
-            return Construction(self.index, self.title, ph, lab, sol.V[C], (), (), (v,), text,
-                                cond)
+            text = (
+                f"the wheel {W} rolls: its contact point I is the instantaneous centre "
+                f"(v_I = 0, i at {o}); its centre moves at omega r = {abs(w):.4g} x "
+                f"{r:.4g} = {abs(vs):.4g} m/s along the ground: from {o} draw {o}{lab} = "
+                f"{abs(vs):.4g} m/s {self.sense(vs)}"
+            )
+            return Construction(self.index, self.title, ph, lab, sol.V[C], (), (), (v,), text, cond)
         a = absolute(sol, C, sol.A, ph)
         aI = contact_acceleration(w, r)
         if a_s:
-            text = (f"the centre {C} moves on a straight line: a_{C} = alpha r = {abs(al):.4g} "
-                    f"x {r:.4g} = {abs(a_s):.4g} m/s^2 {self.sense(a_s)}: from {o} draw "
-                    f"{o}{lab}; the contact point's acceleration is not zero: omega^2 r = "
-                    f"{aI:.4g} m/s^2 towards {C}")
+            text = (
+                f"the centre {C} moves on a straight line: a_{C} = alpha r = {abs(al):.4g} "
+                f"x {r:.4g} = {abs(a_s):.4g} m/s^2 {self.sense(a_s)}: from {o} draw "
+                f"{o}{lab}; the contact point's acceleration is not zero: omega^2 r = "
+                f"{aI:.4g} m/s^2 towards {C}"
+            )
             found = (a,)
         else:
-            text = (f"{lab} is at {o}: the centre {C} moves steadily on a straight line (alpha "
-                    f"= 0); the contact point's acceleration is not zero: omega^2 r = "
-                    f"{aI:.4g} m/s^2 towards {C}")
+            text = (
+                f"{lab} is at {o}: the centre {C} moves steadily on a straight line (alpha "
+                f"= 0); the contact point's acceleration is not zero: omega^2 r = "
+                f"{aI:.4g} m/s^2 towards {C}"
+            )
             found = ()
-        return Construction(self.index, self.title, ph, lab, sol.A[C], (), (), found, text,
-                            cond)
+        return Construction(self.index, self.title, ph, lab, sol.A[C], (), (), found, text, cond)

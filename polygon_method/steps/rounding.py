@@ -28,11 +28,21 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["EPS", "C_FLOOR", "vmax", "vmin", "vhypot", "largest", "two_lines", "plus",
-           "turning", "line_rounding"]
+__all__ = [
+    "EPS",
+    "C_FLOOR",
+    "vmax",
+    "vmin",
+    "vhypot",
+    "largest",
+    "two_lines",
+    "plus",
+    "turning",
+    "line_rounding",
+]
 
 #: unit roundoff of IEEE double precision
-EPS = 2.0 ** -53
+EPS = 2.0**-53
 #: the conditions are at least the refusal band's edge; never divide by less than this
 C_FLOOR = 1e-12
 #: a relative bound at or above this says nothing (the error may be the size of the largest
@@ -48,6 +58,7 @@ def vmax(a, b):
     if isinstance(a, float) and isinstance(b, float):
         return a if a >= b else b
     import numpy as np
+
     return np.maximum(a, b)
 
 
@@ -56,6 +67,7 @@ def vmin(a, b):
     if isinstance(a, float) and isinstance(b, float):
         return a if a <= b else b
     import numpy as np
+
     return np.minimum(a, b)
 
 
@@ -64,6 +76,7 @@ def vhypot(x, y):
     if isinstance(x, float) and isinstance(y, float):
         return math.hypot(x, y)
     import numpy as np
+
     return np.hypot(x, y)
 
 
@@ -74,6 +87,7 @@ def largest(values):
     if all(isinstance(v, float) for v in values):
         return max(values)
     import numpy as np
+
     best = np.full(np.broadcast_shapes(*(np.shape(v) for v in values)), -np.inf)
     for v in values:
         np.maximum(best, v, out=best)

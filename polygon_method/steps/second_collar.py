@@ -26,8 +26,7 @@ from dataclasses import dataclass
 
 from ..common.errors import MobilityError
 from ..common.numbers import in_units
-from .base import (Construction, DirectionLine, Step, Vector, absolute, add, image_label,
-                   sub, unit)
+from .base import Construction, DirectionLine, Step, Vector, absolute, add, image_label, sub, unit
 from .relations import coriolis, rigid_acceleration, rigid_velocity
 from .slotted import under_label
 
@@ -117,8 +116,15 @@ class SecondCollar(Step):
 
     def bind(self, prm):
         """The step's three phases for dimensions ``prm``: functions of a State."""
-        C, K, N, rod, i, L, e = (self.point, self.pivot, self.end, self.rod, self.index,
-                                 self.rod_length, self.sense_first)
+        C, K, N, rod, i, L, e = (
+            self.point,
+            self.pivot,
+            self.end,
+            self.rod,
+            self.index,
+            self.rod_length,
+            self.sense_first,
+        )
         vs, a_s = prm[1], prm[2]
 
         def frame(m):
@@ -154,17 +160,31 @@ class SecondCollar(Step):
         """The JSON ``input.second``: the collar, its rod, its place and sliding (SI,
         signed outward)."""
         two = scene.input.second
-        return {"block": self.point, "collar": True, "rod": self.rod, "pivot": self.pivot,
-                "s": two.angle, "vs": two.omega, "as": two.alpha, "sense": "outward"}
+        return {
+            "block": self.point,
+            "collar": True,
+            "rod": self.rod,
+            "pivot": self.pivot,
+            "s": two.angle,
+            "vs": two.omega,
+            "as": two.alpha,
+            "sense": "outward",
+        }
 
     def second_words(self, scene):
         """The second input in words: the collar's place and its sliding on the rod."""
         two = scene.input.second
-        return (f"collar {self.point} at {self.pivot}{self.point} = "
-                f"{in_units(two.angle, scene.length_unit)} {scene.units} on {self.rod}, "
-                f"sliding at {abs(two.omega):.6g} m/s {self.sense(two.omega)} relative to the "
-                "rod" + (f", accelerating at {abs(two.alpha):.6g} m/s^2 "
-                         f"{self.sense(two.alpha)}" if two.alpha else ", steadily"))
+        return (
+            f"collar {self.point} at {self.pivot}{self.point} = "
+            f"{in_units(two.angle, scene.length_unit)} {scene.units} on {self.rod}, "
+            f"sliding at {abs(two.omega):.6g} m/s {self.sense(two.omega)} relative to the "
+            "rod"
+            + (
+                f", accelerating at {abs(two.alpha):.6g} m/s^2 {self.sense(two.alpha)}"
+                if two.alpha
+                else ", steadily"
+            )
+        )
 
     def coriolis_left_out(self, sol):
         """The collar's acceleration drawn without its Coriolis component: a_C - 2 omega_r
@@ -195,9 +215,11 @@ class SecondCollar(Step):
         return {}
 
     def position_words(self, L, which, angle_deg):
-        return (f"{self.point}: on the rod {self.rod}, {self.pivot}{self.point} = "
-                f"{L(abs(self.s))} from {self.pivot} "
-                f"{'towards' if self.s >= 0 else 'away from'} {self.end} (the second input)")
+        return (
+            f"{self.point}: on the rod {self.rod}, {self.pivot}{self.point} = "
+            f"{L(abs(self.s))} from {self.pivot} "
+            f"{'towards' if self.s >= 0 else 'away from'} {self.end} (the second input)"
+        )
 
     # ----- the polygons
     def construction(self, sol, ph):
@@ -212,35 +234,69 @@ class SecondCollar(Step):
         if ph == "velocity":
             V = sol.V
             under = add(V[K], rigid_velocity(d[0], d[1], w_r))
-            text = (f"{c1}, the image of the rod's point under {C}, divides {lab(K)}{lab(N)} "
-                    f"as {C} divides {K}{N} ({lab(K)}{c1} / {lab(K)}{lab(N)} = {K}{C} / "
-                    f"{K}{N}); the collar {C} slides along {self.rod} at {abs(vs):.4g} m/s "
-                    f"{self.sense(vs)}: from {c1} draw {c1}{lab(C)} = {abs(vs):.4g} m/s along "
-                    f"{self.rod}")
-            found = (Vector(V[K], under, f"{lab(K)}{c1}", "relative",
-                            f"v of the rod's point under {C}", ""),
-                     Vector(under, V[C], f"{c1}{lab(C)}", "sliding", f"vs_{C}",
-                            "the collar's sliding, given"),
-                     absolute(sol, C, V, ph))
-            return Construction(self.index, self.title, ph, lab(C), V[C], (), (), found,
-                                text, 1.0, ((c1, under),))
+            text = (
+                f"{c1}, the image of the rod's point under {C}, divides {lab(K)}{lab(N)} "
+                f"as {C} divides {K}{N} ({lab(K)}{c1} / {lab(K)}{lab(N)} = {K}{C} / "
+                f"{K}{N}); the collar {C} slides along {self.rod} at {abs(vs):.4g} m/s "
+                f"{self.sense(vs)}: from {c1} draw {c1}{lab(C)} = {abs(vs):.4g} m/s along "
+                f"{self.rod}"
+            )
+            found = (
+                Vector(
+                    V[K], under, f"{lab(K)}{c1}", "relative", f"v of the rod's point under {C}", ""
+                ),
+                Vector(
+                    under,
+                    V[C],
+                    f"{c1}{lab(C)}",
+                    "sliding",
+                    f"vs_{C}",
+                    "the collar's sliding, given",
+                ),
+                absolute(sol, C, V, ph),
+            )
+            return Construction(
+                self.index, self.title, ph, lab(C), V[C], (), (), found, text, 1.0, ((c1, under),)
+            )
         A = sol.A
         under = add(A[K], rigid_acceleration(d[0], d[1], w_r, al_r))
         cor = sol.coriolis(C)
         after = add(under, cor)
-        text = (f"{c1}' divides {lab(K)}{lab(N)} as {C} divides {K}{N}; from it draw the "
-                f"Coriolis component 2 omega_{self.rod} vs = {math.hypot(*cor):.4g} m/s^2 "
-                f"perpendicular to {self.rod}, then the sliding acceleration "
-                f"{abs(a_s):.4g} m/s^2 {self.sense(a_s)} along it: its end is {lab(C)}")
-        given = (Vector(under, after, "cor", "coriolis", f"Coriolis at {C}",
-                        f"2 omega_{self.rod} vs = {math.hypot(*cor):.4g} m/s^2, perpendicular "
-                        f"to {self.rod}"),)
-        found = (Vector(after, A[C], "s", "sliding", f"as_{C}", "the collar's sliding "
-                        "acceleration, given"), absolute(sol, C, A, ph))
-        lines = (DirectionLine(after, w, "the end of the Coriolis component",
-                               f"along {self.rod}", mark=f"\u2225 {self.rod}"),)
-        return Construction(self.index, self.title, ph, lab(C), A[C], given, lines, found,
-                            text, 1.0, ((c1, under),))
+        text = (
+            f"{c1}' divides {lab(K)}{lab(N)} as {C} divides {K}{N}; from it draw the "
+            f"Coriolis component 2 omega_{self.rod} vs = {math.hypot(*cor):.4g} m/s^2 "
+            f"perpendicular to {self.rod}, then the sliding acceleration "
+            f"{abs(a_s):.4g} m/s^2 {self.sense(a_s)} along it: its end is {lab(C)}"
+        )
+        given = (
+            Vector(
+                under,
+                after,
+                "cor",
+                "coriolis",
+                f"Coriolis at {C}",
+                f"2 omega_{self.rod} vs = {math.hypot(*cor):.4g} m/s^2, perpendicular "
+                f"to {self.rod}",
+            ),
+        )
+        found = (
+            Vector(
+                after, A[C], "s", "sliding", f"as_{C}", "the collar's sliding acceleration, given"
+            ),
+            absolute(sol, C, A, ph),
+        )
+        lines = (
+            DirectionLine(
+                after,
+                w,
+                "the end of the Coriolis component",
+                f"along {self.rod}",
+                mark=f"\u2225 {self.rod}",
+            ),
+        )
+        return Construction(
+            self.index, self.title, ph, lab(C), A[C], given, lines, found, text, 1.0, ((c1, under),)
+        )
 
 
 def second_collar(g, two):
@@ -250,15 +306,29 @@ def second_collar(g, two):
     sl = sc.slider(two.block)
     rod = sc.link(sl.guide)
     if rod.key != sc.link(inp.crank).key:
-        raise MobilityError(f"the second input's collar {two.block} slides along {rod.key}, "
-                            f"which is not the crank {inp.crank}: a collar as the second "
-                            "input slides along the crank that the first input turns",
-                            file=sc.file, key="[input.second] block")
+        raise MobilityError(
+            f"the second input's collar {two.block} slides along {rod.key}, "
+            f"which is not the crank {inp.crank}: a collar as the second "
+            "input slides along the crank that the first input turns",
+            file=sc.file,
+            key="[input.second] block",
+        )
     K = rod.p if rod.p in sc.ground else rod.q
     g.used_sliders.add(sl.key)
-    return SecondCollar(1, two.block, rod.key, K, rod.other(K), rod.length, two.angle,
-                        two.omega, two.alpha, inp.angle, inp.omega,
-                        1.0 if sl.first == K else -1.0)
+    return SecondCollar(
+        1,
+        two.block,
+        rod.key,
+        K,
+        rod.other(K),
+        rod.length,
+        two.angle,
+        two.omega,
+        two.alpha,
+        inp.angle,
+        inp.omega,
+        1.0 if sl.first == K else -1.0,
+    )
 
 
 def _s(ctx, prm):

@@ -56,8 +56,7 @@ class SecondCrank(Crank):
 
     def dimensions(self, scene, bodies):
         two, one = scene.input.second, scene.input
-        return (scene.link(self.link).length, two.angle, two.omega, two.alpha, one.angle,
-                one.omega)
+        return (scene.link(self.link).length, two.angle, two.omega, two.alpha, one.angle, one.omega)
 
     def drawn(self, prm, pencil, P):
         return (prm[0] + pencil(),) + tuple(prm[1:])
@@ -108,8 +107,10 @@ class SecondCrank(Crank):
         return f"the second crank {self.link} is never singular (condition {c:.2g})"
 
     def position_words(self, L, which, angle_deg):
-        return (f"{self.pivot}{self.tip}: from {self.pivot} draw {self.pivot}{self.tip} = "
-                f"{L(self.length)} at {math.degrees(self.angle):.5g} deg (the second input)")
+        return (
+            f"{self.pivot}{self.tip}: from {self.pivot} draw {self.pivot}{self.tip} = "
+            f"{L(self.length)} at {math.degrees(self.angle):.5g} deg (the second input)"
+        )
 
 
 def _theta2(ctx, prm):

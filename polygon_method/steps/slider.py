@@ -26,8 +26,21 @@ from ..common.numbers import in_units, condition_text
 from ..scene import FixedPath, GuideSlider, guide_words
 from .rounding import line_rounding, plus, turning, two_lines, vhypot, vmax
 from .slotted import under_label
-from .base import (Construction, DirectionLine, Step, Vector, absolute, add, centripetal,
-                   image_label, perp, pole_text, relative, sub, unit)
+from .base import (
+    Construction,
+    DirectionLine,
+    Step,
+    Vector,
+    absolute,
+    add,
+    centripetal,
+    image_label,
+    perp,
+    pole_text,
+    relative,
+    sub,
+    unit,
+)
 
 __all__ = ["SliderDyad", "place", "velocity", "acceleration", "guide_point", "recognise"]
 
@@ -82,7 +95,6 @@ def acceleration(rx, ry, ux, uy, tx, ty, w, abx, aby, d=None):
     return al, a_s, abx - k * rx - al * ry, aby - k * ry + al * rx
 
 
-
 def recognise(g, name):
     """A slider whose point has one free body with a known point, on a fixed path or on a
     guide link already found."""
@@ -96,14 +108,23 @@ def recognise(g, name):
     key, k, length = free[0]
     if isinstance(sl, FixedPath):
         g.used_sliders.add(name)
-        return SliderDyad(g.next_index, name, k, key, length, path=sl, unit=g.unit,
-                          uname=g.uname)
+        return SliderDyad(g.next_index, name, k, key, length, path=sl, unit=g.unit, uname=g.uname)
     if isinstance(sl, GuideSlider):
         guide = sc.link(sl.guide)
         if g.known_link(guide) and guide.key in g.used_links:
             g.used_sliders.add(name)
-            return SliderDyad(g.next_index, name, k, key, length, guide=guide.key,
-                              g1=sl.first, g2=sl.second, unit=g.unit, uname=g.uname)
+            return SliderDyad(
+                g.next_index,
+                name,
+                k,
+                key,
+                length,
+                guide=guide.key,
+                g1=sl.first,
+                g2=sl.second,
+                unit=g.unit,
+                uname=g.uname,
+            )
     return None
 
 
@@ -268,22 +289,30 @@ class SliderDyad(Step):
         ``dist`` from the path."""
         u, n = self.unit, self.uname
         where = f"path {self.path.label}" if self.path else f"line of {self.guide}"
-        return (f"cannot assemble {self.point}: {self.link} = {in_units(self.length, u)} {n} "
-                f"< distance of {self.b} from the {where} = {in_units(abs(dist), u)} {n}")
+        return (
+            f"cannot assemble {self.point}: {self.link} = {in_units(self.length, u)} {n} "
+            f"< distance of {self.b} from the {where} = {in_units(abs(dist), u)} {n}"
+        )
 
     def singular_why(self, c) -> str:
-        return (f"{self.link} is perpendicular to the guide of {self.point} "
-                f"(sine {condition_text(c)}): a "
-                f"dead centre for this step, where the line perpendicular to {self.link} is "
-                "parallel to the guide")
+        return (
+            f"{self.link} is perpendicular to the guide of {self.point} "
+            f"(sine {condition_text(c)}): a "
+            f"dead centre for this step, where the line perpendicular to {self.link} is "
+            "parallel to the guide"
+        )
 
     def warning(self, c) -> str:
-        return (f"{self.label}: the line perpendicular to {self.link} is nearly parallel to "
-                f"the guide (condition {c:.3g}): near a dead centre for this step")
+        return (
+            f"{self.label}: the line perpendicular to {self.link} is nearly parallel to "
+            f"the guide (condition {c:.3g}): near a dead centre for this step"
+        )
 
     def limit_why(self) -> str:
-        return (f"{self.link} stands perpendicular to the guide of {self.point} (it cannot "
-                "reach the guide beyond it)")
+        return (
+            f"{self.link} stands perpendicular to the guide of {self.point} (it cannot "
+            "reach the guide beyond it)"
+        )
 
     def condition_column(self):
         """Its condition is the sine of the transmission angle at the point it finds."""
@@ -306,10 +335,15 @@ class SliderDyad(Step):
         return None
 
     def position_words(self, L, which, angle_deg):
-        where = (f"the {guide_words(self.path.label, of=self.point)}" if self.path is not None
-                 else f"the line of {self.guide}")
-        return (f"{self.point}: an arc of radius {self.link} = {L(self.length)} about {self.b} "
-                f"cuts {where} at {self.point} ({which(self.point)})")
+        where = (
+            f"the {guide_words(self.path.label, of=self.point)}"
+            if self.path is not None
+            else f"the line of {self.guide}"
+        )
+        return (
+            f"{self.point}: an arc of radius {self.link} = {L(self.length)} about {self.b} "
+            f"cuts {where} at {self.point} ({which(self.point)})"
+        )
 
     def error_bound(self, walk, k, p_in, v_in, a_in):
         """Two direction lines (:mod:`.rounding`), with the path's own numbers in its
@@ -324,16 +358,32 @@ class SliderDyad(Step):
         own = k
         if self.path is not None:
             (qx, qy) = self.path.through
-            own = k + line_rounding(self.rounding, qx, qy, x, y, sz["position"],
-                                    getattr(self.path, "angle", None))
-        p, v, a, _, _ = two_lines(walk.condition(self), walk.ratio,
-                                  plus(walk.own(self, k), own - k), p_in, v_in, a_in,
-                                  walk.couple(self))
+            own = k + line_rounding(
+                self.rounding, qx, qy, x, y, sz["position"], getattr(self.path, "angle", None)
+            )
+        p, v, a, _, _ = two_lines(
+            walk.condition(self),
+            walk.ratio,
+            plus(walk.own(self, k), own - k),
+            p_in,
+            v_in,
+            a_in,
+            walk.couple(self),
+        )
         tab = walk.box.tables
         dv = vhypot(V[X][0] - V[B][0], V[X][1] - V[B][1])
         da = vhypot(A[X][0] - A[B][0], A[X][1] - A[B][1])
-        w, al = turning(walk, x - bx, y - by, dv, da, p + tab[0].get(B, 0.0),
-                        v + tab[1].get(B, 0.0), a + tab[2].get(B, 0.0), own)
+        w, al = turning(
+            walk,
+            x - bx,
+            y - by,
+            dv,
+            da,
+            p + tab[0].get(B, 0.0),
+            v + tab[1].get(B, 0.0),
+            a + tab[2].get(B, 0.0),
+            own,
+        )
         return p, v, a, vmax(v, w), vmax(a, al)
 
     # ----- the polygons
@@ -357,18 +407,32 @@ class SliderDyad(Step):
                 tl = under_label(sol, X, ph)
                 rel = f"parallel to {self.guide}"
                 mark = f"\u2225 {self.guide}"
-                given = (Vector(V[self.g1], through, f"{lab(self.g1)}{tl}", "relative",
-                                f"v of the point of {self.guide} under {X}",
-                                f"omega_{self.guide} x {self.g1}{X}"),)
-            lines = (DirectionLine(V[B], d1, lab(B), f"perpendicular to {B}{X}", mark=f"\u22a5 {B}{X}"),
-                     DirectionLine(through, u, tl, rel, mark=mark))
-            text = (f"through {pole_text(sol, B, ph)} draw a line perpendicular to {B}{X}; "
-                    f"through {tl}, one {rel}; they meet at {lab(X)}")
-            found = (relative(sol, X, B, V, ph), absolute(sol, X, V, ph),
-                     Vector(through, V[X], f"{tl}{lab(X)}", "sliding", f"vs_{X}",
-                            "sliding velocity"))
-            return Construction(self.index, self.title, ph, lab(X), V[X], given, lines, found,
-                                text, cond)
+                given = (
+                    Vector(
+                        V[self.g1],
+                        through,
+                        f"{lab(self.g1)}{tl}",
+                        "relative",
+                        f"v of the point of {self.guide} under {X}",
+                        f"omega_{self.guide} x {self.g1}{X}",
+                    ),
+                )
+            lines = (
+                DirectionLine(V[B], d1, lab(B), f"perpendicular to {B}{X}", mark=f"\u22a5 {B}{X}"),
+                DirectionLine(through, u, tl, rel, mark=mark),
+            )
+            text = (
+                f"through {pole_text(sol, B, ph)} draw a line perpendicular to {B}{X}; "
+                f"through {tl}, one {rel}; they meet at {lab(X)}"
+            )
+            found = (
+                relative(sol, X, B, V, ph),
+                absolute(sol, X, V, ph),
+                Vector(through, V[X], f"{tl}{lab(X)}", "sliding", f"vs_{X}", "sliding velocity"),
+            )
+            return Construction(
+                self.index, self.title, ph, lab(X), V[X], given, lines, found, text, cond
+            )
         A = sol.A
         c1 = centripetal(sol, X, B, self.link, ph)
         given = [c1]
@@ -379,28 +443,67 @@ class SliderDyad(Step):
         else:
             g1 = P[self.g1]
             u = unit(*sub(P[self.g2], g1))
-            under = guide_point_acceleration(*g1, x, y, sol.W[self.guide], sol.Al[self.guide],
-                                             *A[self.g1])
+            under = guide_point_acceleration(
+                *g1, x, y, sol.W[self.guide], sol.Al[self.guide], *A[self.g1]
+            )
             cor = sol.coriolis(X)
             through = add(under, cor)
             tl = "the end of the Coriolis component"
             rel = f"parallel to {self.guide}"
             mark = f"\u2225 {self.guide}"
-            given += [Vector(A[self.g1], under, under_label(sol, X, ph), "relative",
-                             f"a of the point of {self.guide} under {X}", ""),
-                      Vector(under, through, "cor", "coriolis", f"Coriolis at {X}",
-                             f"2 omega_{self.guide} vs = "
-                             f"{math.hypot(*cor):.4g} m/s^2")]
-        lines = (DirectionLine(c1.end, d1, f"the end of the centripetal of {X}{B}",
-                               f"perpendicular to {B}{X}", mark=f"\u22a5 {B}{X}"),
-                 DirectionLine(through, u, tl, rel, mark=mark))
-        text = (f"from {pole_text(sol, B, ph)} draw the centripetal of {X}{B} ({c1.text}) and "
-                f"through its end a line perpendicular to {B}{X}; through {tl}, one {rel}; "
-                f"they meet at {lab(X)}")
-        found = (Vector(c1.end, A[X], f"t{X}{B}", "tangential", f"tangential of {X}{B}",
-                        f"alpha_{self.link} x {B}{X}"),
-                 Vector(through, A[X], f"{tl}{lab(X)}" if self.path is not None else "s",
-                        "sliding", f"as_{X}", "sliding acceleration"),
-                 relative(sol, X, B, A, ph), absolute(sol, X, A, ph))
-        return Construction(self.index, self.title, ph, lab(X), A[X], tuple(given), lines,
-                            found, text, cond)
+            given += [
+                Vector(
+                    A[self.g1],
+                    under,
+                    under_label(sol, X, ph),
+                    "relative",
+                    f"a of the point of {self.guide} under {X}",
+                    "",
+                ),
+                Vector(
+                    under,
+                    through,
+                    "cor",
+                    "coriolis",
+                    f"Coriolis at {X}",
+                    f"2 omega_{self.guide} vs = {math.hypot(*cor):.4g} m/s^2",
+                ),
+            ]
+        lines = (
+            DirectionLine(
+                c1.end,
+                d1,
+                f"the end of the centripetal of {X}{B}",
+                f"perpendicular to {B}{X}",
+                mark=f"\u22a5 {B}{X}",
+            ),
+            DirectionLine(through, u, tl, rel, mark=mark),
+        )
+        text = (
+            f"from {pole_text(sol, B, ph)} draw the centripetal of {X}{B} ({c1.text}) and "
+            f"through its end a line perpendicular to {B}{X}; through {tl}, one {rel}; "
+            f"they meet at {lab(X)}"
+        )
+        found = (
+            Vector(
+                c1.end,
+                A[X],
+                f"t{X}{B}",
+                "tangential",
+                f"tangential of {X}{B}",
+                f"alpha_{self.link} x {B}{X}",
+            ),
+            Vector(
+                through,
+                A[X],
+                f"{tl}{lab(X)}" if self.path is not None else "s",
+                "sliding",
+                f"as_{X}",
+                "sliding acceleration",
+            ),
+            relative(sol, X, B, A, ph),
+            absolute(sol, X, A, ph),
+        )
+        return Construction(
+            self.index, self.title, ph, lab(X), A[X], tuple(given), lines, found, text, cond
+        )

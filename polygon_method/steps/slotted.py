@@ -29,8 +29,22 @@ from .relations import coriolis
 from ..common.errors import TOL, SingularStepError
 from ..scene import GuideSlider
 from .rounding import C_FLOOR, vhypot, vmax
-from .base import (Construction, DirectionLine, Step, Vector, absolute, add, image_label,
-                   image_name, numbered, perp, pole_text, relative, sub, unit)
+from .base import (
+    Construction,
+    DirectionLine,
+    Step,
+    Vector,
+    absolute,
+    add,
+    image_label,
+    image_name,
+    numbered,
+    perp,
+    pole_text,
+    relative,
+    sub,
+    unit,
+)
 
 __all__ = ["SlottedLink", "place", "velocity", "acceleration", "recognise"]
 
@@ -56,7 +70,6 @@ def velocity(dx, dy, ux, uy, ex, ey, d=None):
     return (ex * uy - ux * ey) / d, -(dx * ex + dy * ey) / d
 
 
-
 def acceleration(dx, dy, ux, uy, ex, ey, d=None):
     """(alG, as) from e = aA - aK + wG^2 d - Coriolis."""
     return velocity(dx, dy, ux, uy, ex, ey, d)
@@ -78,9 +91,20 @@ def recognise(g, name):
         known = ends[0]
         g.used_sliders.add(sl.point)
         ref = _reference(sc, guide.key, (sl.point, known)) or guide.key
-        return SlottedLink(g.next_index, sl.point, guide.key, known, guide.other(known),
-                           guide.length, sl.first, sl.second, unit=g.unit, uname=g.uname,
-                           ref=ref, rho=sc.link(ref).length)
+        return SlottedLink(
+            g.next_index,
+            sl.point,
+            guide.key,
+            known,
+            guide.other(known),
+            guide.length,
+            sl.first,
+            sl.second,
+            unit=g.unit,
+            uname=g.uname,
+            ref=ref,
+            rho=sc.link(ref).length,
+        )
 
 
 def _reference(sc, guide, points):
@@ -88,8 +112,11 @@ def _reference(sc, guide, points):
     what places them (None where no other link meets them)."""
     best = None
     for lk in sc.links:
-        if lk.key != guide and (lk.p in points or lk.q in points) and \
-                (best is None or lk.length > best.length):
+        if (
+            lk.key != guide
+            and (lk.p in points or lk.q in points)
+            and (best is None or lk.length > best.length)
+        ):
             best = lk
     for p in points:
         cp = sc.carried(p)
@@ -101,13 +128,13 @@ def _reference(sc, guide, points):
     return None
 
 
-
 def under_label(sol, X: str, phase: str = "velocity") -> str:
     """The image of the guide's point under the block at X: ``a1`` (``a1'``), or ``a2``
     and so on where the scene has a point A1 of its own (whose image is a1)."""
     sc = sol.scene
     taken = {image_name(sc, p) for p in sc.point_names} | {p.lower() for p in sc.point_names}
     return numbered(X.lower(), taken) + ("'" if phase == "acceleration" else "")
+
 
 @dataclass(frozen=True)
 class SlottedLink(Step):
@@ -167,8 +194,14 @@ class SlottedLink(Step):
 
     def bind(self, prm):
         """The step's three phases for dimensions ``prm``: functions of a State."""
-        Ab, K, N, F1, F2, guide = self.point, self.known, self.new, self.first, self.second, \
-            self.guide
+        Ab, K, N, F1, F2, guide = (
+            self.point,
+            self.known,
+            self.new,
+            self.first,
+            self.second,
+            self.guide,
+        )
         i, sigma, step, L, rho = self.index, self.sigma, self, prm[0], prm[1]
 
         def frame(P):
@@ -206,8 +239,9 @@ class SlottedLink(Step):
             cx, cy = coriolis(w, s[0], ux, uy)
             k = w * w
             (aax, aay), (akx, aky) = A[Ab], A[K]
-            al, a_s = acceleration(dx, dy, ux, uy, aax - akx + k * dx - cx,
-                                   aay - aky + k * dy - cy, d)
+            al, a_s = acceleration(
+                dx, dy, ux, uy, aax - akx + k * dx - cx, aay - aky + k * dy - cy, d
+            )
             m.Al[guide] = al
             s[1], s[2], s[3] = a_s, cx, cy
             (nx, ny), (kx, ky) = P[N], P[K]
@@ -239,9 +273,9 @@ class SlottedLink(Step):
         e = vhypot(V[A_][0] - V[K_][0], V[A_][1] - V[K_][1])
         ea = vhypot(A[A_][0] - A[K_][0], A[A_][1] - A[K_][1]) + w * w * m + 2 * w * vs
         _, kv, ka = walk.own(self, k)  # its own rounding, of its own speeds and accelerations
-        turn = p_in * Ls / m + k                            # the lever's direction, rad
-        d_w = (v_in * Vs + e * turn) / m + k * w           # omega, rad/s
-        d_vs = v_in * Vs + e * turn + kv * Vs              # sliding velocity, m/s
+        turn = p_in * Ls / m + k  # the lever's direction, rad
+        d_w = (v_in * Vs + e * turn) / m + k * w  # omega, rad/s
+        d_vs = v_in * Vs + e * turn + kv * Vs  # sliding velocity, m/s
         d_al = (a_in * As + ea * turn + 2 * d_w * vs + 2 * w * d_vs) / m + k * al
         d_as = a_in * As + ea * turn + 2 * w * d_w * m + ka * As
         d_cor = 2 * (d_w * vs + w * d_vs) + ka * As
@@ -254,27 +288,36 @@ class SlottedLink(Step):
     # ----- failures and words
     def at_pivot(self):
         """The error for a block at the slotted link's pivot: the link's direction is undefined."""
-        return SingularStepError(f"block {self.point} is at {self.known}, the pivot of "
-                                 f"{self.guide}: the link's direction is undefined",
-                                 step=self.label)
+        return SingularStepError(
+            f"block {self.point} is at {self.known}, the pivot of "
+            f"{self.guide}: the link's direction is undefined",
+            step=self.label,
+        )
 
     def singular_why(self, c) -> str:
-        return (f"block {self.point} is at {self.known}, the pivot of {self.guide} (condition "
-                f"{c:.2g}): the link's direction is undefined")
+        return (
+            f"block {self.point} is at {self.known}, the pivot of {self.guide} (condition "
+            f"{c:.2g}): the link's direction is undefined"
+        )
 
     def transmission(self):
         return None  # its condition is the block's distance from the pivot, not an angle
 
     def warning(self, c) -> str:
-        return (f"{self.label}: block {self.point} is close to {self.known}, the pivot of "
-                f"{self.guide} (condition {c:.3g})")
+        return (
+            f"{self.label}: block {self.point} is close to {self.known}, the pivot of "
+            f"{self.guide} (condition {c:.3g})"
+        )
 
     def limit_why(self) -> str:
         return f"block {self.point} reaches the pivot {self.known} of {self.guide}"
 
     def condition_column(self):
-        return (f"cond step {self.index + 1}", "1",
-                f"|{self.known}{self.point}| / {self.ref or self.guide} (at most 1)")
+        return (
+            f"cond step {self.index + 1}",
+            "1",
+            f"|{self.known}{self.point}| / {self.ref or self.guide} (at most 1)",
+        )
 
     def bodies(self):
         return (f"block {self.point}", self.guide)
@@ -290,9 +333,11 @@ class SlottedLink(Step):
         return None
 
     def position_words(self, L, which, angle_deg):
-        return (f"{self.new}: {self.guide} passes through the block at {self.point}: draw the "
-                f"line from {self.known} through {self.point} and mark {self.known}{self.new} = "
-                f"{L(self.length)} on it")
+        return (
+            f"{self.new}: {self.guide} passes through the block at {self.point}: draw the "
+            f"line from {self.known} through {self.point} and mark {self.known}{self.new} = "
+            f"{L(self.length)} on it"
+        )
 
     # ----- the polygons
     def construction(self, sol, ph):
@@ -306,22 +351,59 @@ class SlottedLink(Step):
             V = sol.V
             coincident = add(V[K], (-w * kA[1], w * kA[0]))
             c = under_label(sol, Ab, ph)  # the lever's point under the block (c1 at a swivel C)
-            lines = (DirectionLine(V[K], unit(*perp(kA)), lab(K), f"perpendicular to {K}{Ab}", mark=f"\u22a5 {K}{Ab}"),
-                     DirectionLine(V[Ab], u, lab(Ab), f"parallel to {self.guide}", mark=f"\u2225 {self.guide}"))
-            text = (f"through {pole_text(sol, K, ph)} draw a line perpendicular to {K}{Ab} (the "
-                    f"point of {self.guide} under the block); through {lab(Ab)}, one parallel "
-                    f"to {self.guide} (the sliding); they meet at {c}; then {lab(K)}{lab(N)} / "
-                    f"{lab(K)}{c} = {K}{N} / {K}{Ab} gives {lab(N)}")
-            found = (Vector(V[K], coincident, f"{lab(K)}{c}", "relative",
-                            f"v of the point of {self.guide} under {Ab}"
-                            + ("" if K in sol.scene.ground else f", relative to {K}"), ""),
-                     Vector(coincident, V[Ab], f"{c}{lab(Ab)}", "sliding", f"vs_{Ab}",
-                            "sliding velocity of the block"),
-                     absolute(sol, N, V, ph))
+            lines = (
+                DirectionLine(
+                    V[K],
+                    unit(*perp(kA)),
+                    lab(K),
+                    f"perpendicular to {K}{Ab}",
+                    mark=f"\u22a5 {K}{Ab}",
+                ),
+                DirectionLine(
+                    V[Ab], u, lab(Ab), f"parallel to {self.guide}", mark=f"\u2225 {self.guide}"
+                ),
+            )
+            text = (
+                f"through {pole_text(sol, K, ph)} draw a line perpendicular to {K}{Ab} (the "
+                f"point of {self.guide} under the block); through {lab(Ab)}, one parallel "
+                f"to {self.guide} (the sliding); they meet at {c}; then {lab(K)}{lab(N)} / "
+                f"{lab(K)}{c} = {K}{N} / {K}{Ab} gives {lab(N)}"
+            )
+            found = (
+                Vector(
+                    V[K],
+                    coincident,
+                    f"{lab(K)}{c}",
+                    "relative",
+                    f"v of the point of {self.guide} under {Ab}"
+                    + ("" if K in sol.scene.ground else f", relative to {K}"),
+                    "",
+                ),
+                Vector(
+                    coincident,
+                    V[Ab],
+                    f"{c}{lab(Ab)}",
+                    "sliding",
+                    f"vs_{Ab}",
+                    "sliding velocity of the block",
+                ),
+                absolute(sol, N, V, ph),
+            )
             if K not in sol.scene.ground:  # the lever's image line k c1 produced to n
                 found += (relative(sol, N, K, V, ph),)
-            return Construction(self.index, self.title, ph, lab(N), V[N], (), lines, found,
-                                text, cond, ((c, coincident),))
+            return Construction(
+                self.index,
+                self.title,
+                ph,
+                lab(N),
+                V[N],
+                (),
+                lines,
+                found,
+                text,
+                cond,
+                ((c, coincident),),
+            )
         A = sol.A
         al = sol.Al[self.guide]
         cen_end = add(A[K], (-w * w * kA[0], -w * w * kA[1]))
@@ -329,27 +411,71 @@ class SlottedLink(Step):
         cor = sol.coriolis(Ab)
         back = sub(A[Ab], cor)
         c = under_label(sol, Ab, ph)
-        cen = Vector(A[K], cen_end, "cen", "centripetal", f"centripetal of {Ab}{K} on "
-                     f"{self.guide}", f"omega^2 x {K}{Ab} = {w * w * math.hypot(*kA):.4g} "
-                     f"m/s^2, towards {K}")
-        corv = Vector(back, A[Ab], "cor", "coriolis", f"Coriolis at {Ab}",
-                      f"2 omega_{self.guide} vs = {math.hypot(*cor):.4g} m/s^2, perpendicular "
-                      f"to {self.guide}")
-        lines = (DirectionLine(cen_end, unit(*perp(kA)), "the end of the centripetal",
-                               f"perpendicular to {K}{Ab}", mark=f"\u22a5 {K}{Ab}"),
-                 DirectionLine(back, u, "the start of the Coriolis component",
-                               f"parallel to {self.guide}", mark=f"\u2225 {self.guide}"))
-        text = (f"from {pole_text(sol, K, ph)} draw the centripetal of the point of "
-                f"{self.guide} under the block ({cen.text}) and through its end a line "
-                f"perpendicular to {K}{Ab}; from {lab(Ab)} draw the Coriolis component "
-                f"backwards ({corv.text}) and through its start a line parallel to "
-                f"{self.guide}; they meet at {c}; {lab(N)} follows by {lab(K)}{lab(N)} / "
-                f"{lab(K)}{c} = {K}{N} / {K}{Ab}")
-        found = (Vector(cen_end, under, "t", "tangential", f"tangential of {Ab}{K}",
-                        f"alpha_{self.guide} x {K}{Ab}"),
-                 Vector(under, back, "s", "sliding", f"as_{Ab}", "sliding acceleration"),
-                 absolute(sol, N, A, ph))
+        cen = Vector(
+            A[K],
+            cen_end,
+            "cen",
+            "centripetal",
+            f"centripetal of {Ab}{K} on {self.guide}",
+            f"omega^2 x {K}{Ab} = {w * w * math.hypot(*kA):.4g} m/s^2, towards {K}",
+        )
+        corv = Vector(
+            back,
+            A[Ab],
+            "cor",
+            "coriolis",
+            f"Coriolis at {Ab}",
+            f"2 omega_{self.guide} vs = {math.hypot(*cor):.4g} m/s^2, perpendicular "
+            f"to {self.guide}",
+        )
+        lines = (
+            DirectionLine(
+                cen_end,
+                unit(*perp(kA)),
+                "the end of the centripetal",
+                f"perpendicular to {K}{Ab}",
+                mark=f"\u22a5 {K}{Ab}",
+            ),
+            DirectionLine(
+                back,
+                u,
+                "the start of the Coriolis component",
+                f"parallel to {self.guide}",
+                mark=f"\u2225 {self.guide}",
+            ),
+        )
+        text = (
+            f"from {pole_text(sol, K, ph)} draw the centripetal of the point of "
+            f"{self.guide} under the block ({cen.text}) and through its end a line "
+            f"perpendicular to {K}{Ab}; from {lab(Ab)} draw the Coriolis component "
+            f"backwards ({corv.text}) and through its start a line parallel to "
+            f"{self.guide}; they meet at {c}; {lab(N)} follows by {lab(K)}{lab(N)} / "
+            f"{lab(K)}{c} = {K}{N} / {K}{Ab}"
+        )
+        found = (
+            Vector(
+                cen_end,
+                under,
+                "t",
+                "tangential",
+                f"tangential of {Ab}{K}",
+                f"alpha_{self.guide} x {K}{Ab}",
+            ),
+            Vector(under, back, "s", "sliding", f"as_{Ab}", "sliding acceleration"),
+            absolute(sol, N, A, ph),
+        )
         if K not in sol.scene.ground:  # the lever's image line k' c1' produced to n'
             found += (relative(sol, N, K, A, ph),)
-        return Construction(self.index, self.title, ph, lab(N), A[N], (cen, corv), lines, found,
-                            text, cond, ((c, under),))
+        return Construction(
+            self.index,
+            self.title,
+            ph,
+            lab(N),
+            A[N],
+            (cen, corv),
+            lines,
+            found,
+            text,
+            cond,
+            ((c, under),),
+        )

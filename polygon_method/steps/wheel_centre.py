@@ -20,8 +20,20 @@ from dataclasses import dataclass
 
 from ..common.errors import TOL
 from ..common.numbers import in_units, condition_text
-from .base import (Construction, DirectionLine, Step, Vector, absolute, centripetal,
-                   image_label, perp, pole_text, relative, sub, unit)
+from .base import (
+    Construction,
+    DirectionLine,
+    Step,
+    Vector,
+    absolute,
+    centripetal,
+    image_label,
+    perp,
+    pole_text,
+    relative,
+    sub,
+    unit,
+)
 from .rounding import line_rounding
 from .slider import acceleration, place, velocity
 
@@ -40,8 +52,21 @@ def recognise(g, name):
     if not free:
         return None
     key, k, length = free[0]
-    return WheelCentre(g.next_index, name, k, key, length, pr.wheel, pr.radius, pr.through,
-                       pr.u, pr.m, pr.label, unit=g.unit, uname=g.uname)
+    return WheelCentre(
+        g.next_index,
+        name,
+        k,
+        key,
+        length,
+        pr.wheel,
+        pr.radius,
+        pr.through,
+        pr.u,
+        pr.m,
+        pr.label,
+        unit=g.unit,
+        uname=g.uname,
+    )
 
 
 @dataclass(frozen=True)
@@ -94,8 +119,7 @@ class WheelCentre(Step):
     def dimensions(self, scene, bodies):
         pr = next(r for r in scene.rolling if r.wheel == self.wheel)
         (tx, ty), (ux, uy), (mx, my), r = pr.through, pr.u, pr.m, pr.radius
-        return (bodies.distance(self.link, self.b, self.point), tx + r * mx, ty + r * my,
-                ux, uy)
+        return (bodies.distance(self.link, self.b, self.point), tx + r * mx, ty + r * my, ux, uy)
 
     def drawn(self, prm, pencil, P):
         return (prm[0] + pencil(), prm[1] + pencil(), prm[2] + pencil(), prm[3], prm[4])
@@ -167,6 +191,7 @@ class WheelCentre(Step):
             al, _, ax, ay = acceleration(rx, ry, ux, uy, 0.0, 0.0, w, *m.A[B], d)
             m.Al[link] = al
             m.A[X] = (ax, ay)
+
         return instant
 
     rounding = 48.0
@@ -183,17 +208,23 @@ class WheelCentre(Step):
         """Why the wheel's centre cannot be placed: its link is shorter than the known end's
         distance ``dist`` from the centre's line."""
         u, n = self.unit, self.uname
-        return (f"cannot assemble {self.point}: {self.link} = {in_units(self.length, u)} {n} "
-                f"< distance of {self.b} from the line of the wheel's centre = "
-                f"{in_units(abs(dist), u)} {n}")
+        return (
+            f"cannot assemble {self.point}: {self.link} = {in_units(self.length, u)} {n} "
+            f"< distance of {self.b} from the line of the wheel's centre = "
+            f"{in_units(abs(dist), u)} {n}"
+        )
 
     def singular_why(self, c):
-        return (f"{self.link} is perpendicular to the line of the wheel's centre {self.point} "
-                f"(sine {condition_text(c)}): a dead centre for this step")
+        return (
+            f"{self.link} is perpendicular to the line of the wheel's centre {self.point} "
+            f"(sine {condition_text(c)}): a dead centre for this step"
+        )
 
     def warning(self, c):
-        return (f"{self.label}: the line perpendicular to {self.link} is nearly parallel to "
-                f"the ground line (condition {c:.3g}): near a dead centre for this step")
+        return (
+            f"{self.label}: the line perpendicular to {self.link} is nearly parallel to "
+            f"the ground line (condition {c:.3g}): near a dead centre for this step"
+        )
 
     def limit_why(self):
         return f"{self.link} stands perpendicular to the ground line of wheel {self.wheel}"
@@ -214,9 +245,11 @@ class WheelCentre(Step):
         return None
 
     def position_words(self, L, which, angle_deg):
-        return (f"{self.point}: an arc of radius {self.link} = {L(self.length)} about {self.b} "
-                f"cuts the line at {L(self.radius)} from {self.where} (the wheel's centre) at "
-                f"{self.point} ({which(self.point)})")
+        return (
+            f"{self.point}: an arc of radius {self.link} = {L(self.length)} about {self.b} "
+            f"cuts the line at {L(self.radius)} from {self.where} (the wheel's centre) at "
+            f"{self.point} ({which(self.point)})"
+        )
 
     def construction(self, sol, ph):
         P, X, B = sol.P, self.point, self.b
@@ -227,23 +260,47 @@ class WheelCentre(Step):
         rel = f"parallel to {self.where} (the centre moves along it)"
         if ph == "velocity":
             V = sol.V
-            lines = (DirectionLine(V[B], d1, lab(B), f"perpendicular to {B}{X}", mark=f"\u22a5 {B}{X}"),
-                     DirectionLine((0.0, 0.0), self.u, o, rel, mark=f"\u2225 {self.where}"))
-            text = (f"through {pole_text(sol, B, ph)} draw a line perpendicular to {B}{X}; "
-                    f"through {o}, one {rel}; they meet at {lab(X)}")
+            lines = (
+                DirectionLine(V[B], d1, lab(B), f"perpendicular to {B}{X}", mark=f"\u22a5 {B}{X}"),
+                DirectionLine((0.0, 0.0), self.u, o, rel, mark=f"\u2225 {self.where}"),
+            )
+            text = (
+                f"through {pole_text(sol, B, ph)} draw a line perpendicular to {B}{X}; "
+                f"through {o}, one {rel}; they meet at {lab(X)}"
+            )
             found = (relative(sol, X, B, V, ph), absolute(sol, X, V, ph))
-            return Construction(self.index, self.title, ph, lab(X), V[X], (), lines, found,
-                                text, cond)
+            return Construction(
+                self.index, self.title, ph, lab(X), V[X], (), lines, found, text, cond
+            )
         A = sol.A
         c1 = centripetal(sol, X, B, self.link, ph)
-        lines = (DirectionLine(c1.end, d1, f"the end of the centripetal of {X}{B}",
-                               f"perpendicular to {B}{X}", mark=f"\u22a5 {B}{X}"),
-                 DirectionLine((0.0, 0.0), self.u, o, rel, mark=f"\u2225 {self.where}"))
-        text = (f"from {pole_text(sol, B, ph)} draw the centripetal of {X}{B} ({c1.text}) and "
-                f"through its end a line perpendicular to {B}{X}; through {o}, one {rel}; "
-                f"they meet at {lab(X)}")
-        found = (Vector(c1.end, A[X], f"t{X}{B}", "tangential", f"tangential of {X}{B}",
-                        f"alpha_{self.link} x {B}{X}"),
-                 relative(sol, X, B, A, ph), absolute(sol, X, A, ph))
-        return Construction(self.index, self.title, ph, lab(X), A[X], (c1,), lines, found,
-                            text, cond)
+        lines = (
+            DirectionLine(
+                c1.end,
+                d1,
+                f"the end of the centripetal of {X}{B}",
+                f"perpendicular to {B}{X}",
+                mark=f"\u22a5 {B}{X}",
+            ),
+            DirectionLine((0.0, 0.0), self.u, o, rel, mark=f"\u2225 {self.where}"),
+        )
+        text = (
+            f"from {pole_text(sol, B, ph)} draw the centripetal of {X}{B} ({c1.text}) and "
+            f"through its end a line perpendicular to {B}{X}; through {o}, one {rel}; "
+            f"they meet at {lab(X)}"
+        )
+        found = (
+            Vector(
+                c1.end,
+                A[X],
+                f"t{X}{B}",
+                "tangential",
+                f"tangential of {X}{B}",
+                f"alpha_{self.link} x {B}{X}",
+            ),
+            relative(sol, X, B, A, ph),
+            absolute(sol, X, A, ph),
+        )
+        return Construction(
+            self.index, self.title, ph, lab(X), A[X], (c1,), lines, found, text, cond
+        )

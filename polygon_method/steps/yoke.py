@@ -65,8 +65,16 @@ def recognise(g, name):
     if pin is None or pin.point not in g.P or pin.point in g.used_sliders:
         return None
     g.used_sliders.update((name, pin.point))
-    return Yoke(g.next_index, name, pin.point, path, pin, sc.link(sc.input.crank).length,
-                unit=g.unit, uname=g.uname)
+    return Yoke(
+        g.next_index,
+        name,
+        pin.point,
+        path,
+        pin,
+        sc.link(sc.input.crank).length,
+        unit=g.unit,
+        uname=g.uname,
+    )
 
 
 @dataclass(frozen=True)
@@ -103,7 +111,9 @@ class Yoke(Step):
 
     @property
     def title(self):
-        return f"yoke {self.point} on the {guide_words(self.path.label)}, pin {self.pin} in its slot"
+        return (
+            f"yoke {self.point} on the {guide_words(self.path.label)}, pin {self.pin} in its slot"
+        )
 
     @property
     def params(self):
@@ -162,6 +172,7 @@ class Yoke(Step):
             position(m)
             velocity_(m)
             acceleration_(m)
+
         return instant
 
     rounding = 48.0
@@ -172,32 +183,51 @@ class Yoke(Step):
         angle's); the yoke's and the pin's sliding quantities err as the yoke's velocity
         and acceleration."""
         (qx, qy), (x, y) = self.path.through, walk.P[self.point]
-        extra = line_rounding(self.rounding, qx, qy, x, y, walk.sizes["position"],
-                              getattr(self.path, "angle", None)) + 4 * EPS
-        p, v, a, w, al = two_lines(walk.condition(self), walk.ratio,
-                                   plus(walk.own(self, k), extra), p_in, v_in, a_in,
-                                   walk.couple(self))
+        extra = (
+            line_rounding(
+                self.rounding,
+                qx,
+                qy,
+                x,
+                y,
+                walk.sizes["position"],
+                getattr(self.path, "angle", None),
+            )
+            + 4 * EPS
+        )
+        p, v, a, w, al = two_lines(
+            walk.condition(self),
+            walk.ratio,
+            plus(walk.own(self, k), extra),
+            p_in,
+            v_in,
+            a_in,
+            walk.couple(self),
+        )
         walk.slide[self.point] = walk.slide[self.pin] = (v, a, a)
         return p, v, a, w, al
 
     # ----- failures and words
     def why(self, *_):
         """Why the yoke cannot be placed: its slot runs along its path."""
-        return (f"a pin in two parallel slots: the slot of yoke {self.point} runs along its "
-                "path")
+        return f"a pin in two parallel slots: the slot of yoke {self.point} runs along its path"
 
     def singular(self, c):
         """The error for a slot parallel to the yoke's path at condition ``c``."""
         return SingularStepError(self.singular_why(c), step=self.label)
 
     def singular_why(self, c) -> str:
-        return (f"a pin in two parallel slots: the slot of yoke {self.point} is parallel to "
-                f"its {guide_words(self.path.label)} (sine {condition_text(c)}): nothing moves "
-                "the yoke")
+        return (
+            f"a pin in two parallel slots: the slot of yoke {self.point} is parallel to "
+            f"its {guide_words(self.path.label)} (sine {condition_text(c)}): nothing moves "
+            "the yoke"
+        )
 
     def warning(self, c) -> str:
-        return (f"{self.label}: the slot of yoke {self.point} is nearly parallel to its path "
-                f"(condition {c:.3g})")
+        return (
+            f"{self.label}: the slot of yoke {self.point} is nearly parallel to its path "
+            f"(condition {c:.3g})"
+        )
 
     def limit_why(self) -> str:
         return f"the slot of yoke {self.point} turns parallel to its path"
@@ -206,8 +236,11 @@ class Yoke(Step):
         return None
 
     def condition_column(self):
-        return (f"cond step {self.index + 1}", "1",
-                f"sine of the angle between the slot of {self.point} and its path")
+        return (
+            f"cond step {self.index + 1}",
+            "1",
+            f"sine of the angle between the slot of {self.point} and its path",
+        )
 
     def bodies(self):
         return (f"block {self.pin}", f"block {self.point}")
@@ -221,9 +254,11 @@ class Yoke(Step):
     def position_words(self, L, which, angle_deg):
         (qx, qy) = self.path.through
         u, n = self.unit, self.uname
-        return (f"{self.point}: the line through {self.pin} along the yoke's slot "
-                f"({self.slot.label}) cuts the {guide_words(self.path.label)} through "
-                f"({in_units(qx, u)}, {in_units(qy, u)}) {n} at {self.point}")
+        return (
+            f"{self.point}: the line through {self.pin} along the yoke's slot "
+            f"({self.slot.label}) cuts the {guide_words(self.path.label)} through "
+            f"({in_units(qx, u)}, {in_units(qy, u)}) {n} at {self.point}"
+        )
 
     # ----- the polygons
     def construction(self, sol, ph):
@@ -233,17 +268,38 @@ class Yoke(Step):
         sym = "vs" if ph == "velocity" else "as"
         lab, lx = image_label(sol, Y, ph), image_label(sol, X, ph)
         o = "o" if ph == "velocity" else "o'"
-        lines = (DirectionLine((0.0, 0.0), self.path.u, o,
-                               f"parallel to the {guide_words(self.path.label)}", mark=f"\u2225 the {guide_words(self.path.label)}"),
-                 DirectionLine(D[X], self.slot.direction, lx,
-                               f"parallel to the slot ({self.slot.label})", mark=f"\u2225 the slot ({self.slot.label})"))
+        lines = (
+            DirectionLine(
+                (0.0, 0.0),
+                self.path.u,
+                o,
+                f"parallel to the {guide_words(self.path.label)}",
+                mark=f"\u2225 the {guide_words(self.path.label)}",
+            ),
+            DirectionLine(
+                D[X],
+                self.slot.direction,
+                lx,
+                f"parallel to the slot ({self.slot.label})",
+                mark=f"\u2225 the slot ({self.slot.label})",
+            ),
+        )
         what = "velocity" if ph == "velocity" else "acceleration"
-        text = (f"the yoke translates: through {o} draw a line parallel to its "
-                f"{guide_words(self.path.label)}; through {lx}, one parallel to its slot "
-                f"({self.slot.label}), the pin's sliding {what}; they meet at {lab} (no "
-                "Coriolis component: the slot does not turn)")
-        found = (absolute(sol, Y, D, ph),
-                 Vector(D[Y], D[X], f"{lab}{lx}", "sliding", f"{sym}_{X}",
-                        f"sliding {what} of {X} in the slot of {Y}"))
-        return Construction(self.index, self.title, ph, lab, D[Y], (), lines, found, text,
-                            cond)
+        text = (
+            f"the yoke translates: through {o} draw a line parallel to its "
+            f"{guide_words(self.path.label)}; through {lx}, one parallel to its slot "
+            f"({self.slot.label}), the pin's sliding {what}; they meet at {lab} (no "
+            "Coriolis component: the slot does not turn)"
+        )
+        found = (
+            absolute(sol, Y, D, ph),
+            Vector(
+                D[Y],
+                D[X],
+                f"{lab}{lx}",
+                "sliding",
+                f"{sym}_{X}",
+                f"sliding {what} of {X} in the slot of {Y}",
+            ),
+        )
+        return Construction(self.index, self.title, ph, lab, D[Y], (), lines, found, text, cond)

@@ -82,19 +82,28 @@ def _centre_lines(ic: Centres) -> list[str]:
     secondary = [ic.centres[k] for k in ic.order if not ic.centres[k].primary]
     if secondary:
         out.append("")
-        out.append("Secondary centres by Kennedy's theorem (the three centres of any three "
-                   "links lie on one line):")
+        out.append(
+            "Secondary centres by Kennedy's theorem (the three centres of any three "
+            "links lie on one line):"
+        )
         for c in secondary:
             (a, b), (p, q) = c.lines
-            cond = "" if c.condition >= 0.999 or c.point is None else \
-                f"; lines cross at {fmt(crossing_angle(c.condition), 3)} deg"
+            cond = (
+                ""
+                if c.condition >= 0.999 or c.point is None
+                else f"; lines cross at {fmt(crossing_angle(c.condition), 3)} deg"
+            )
             if "coincide" in c.how:  # located by the velocities on the common line
                 same = "" if (a, b) == (p, q) else f" = {p.label}-{q.label}: the same line"
-                out.append(f"  {c.label:<5}{_where(sol, c):<40} on {a.label}-{b.label}{same}; "
-                           f"on it where omega_{c.i} and omega_{c.j} give one velocity")
+                out.append(
+                    f"  {c.label:<5}{_where(sol, c):<40} on {a.label}-{b.label}{same}; "
+                    f"on it where omega_{c.i} and omega_{c.j} give one velocity"
+                )
                 continue
-            out.append(f"  {c.label:<5}{_where(sol, c):<40} on {a.label}-{b.label} and "
-                       f"{p.label}-{q.label}{cond}")
+            out.append(
+                f"  {c.label:<5}{_where(sol, c):<40} on {a.label}-{b.label} and "
+                f"{p.label}-{q.label}{cond}"
+            )
     return out
 
 
@@ -107,22 +116,30 @@ def _omega_line(ic: Centres, k: int) -> str:
     c1j = ic.centre(1, k)
     if k == 2 and c1j.point is None:  # a block driven along its guide
         v = sol.V[sol.plan.steps[0].finds[0]]
-        return (f"  omega_{k} ({name}) = 0: {name} translates at "
-                f"{math.hypot(*v):.4g} m/s along its guide (the input)")
+        return (
+            f"  omega_{k} ({name}) = 0: {name} translates at "
+            f"{math.hypot(*v):.4g} m/s along its guide (the input)"
+        )
     if k == 2:
-        return (f"  omega_{k} ({name}) = {fmt_angular(w, 'rad/s')} "
-                f"({getattr(sol.plan.steps[0], 'body_omega_source', 'the input')})")
+        return (
+            f"  omega_{k} ({name}) = {fmt_angular(w, 'rad/s')} "
+            f"({getattr(sol.plan.steps[0], 'body_omega_source', 'the input')})"
+        )
     i = ic.ratio_from.get(k, 2)
     if i == 2 and ic.centre(1, 2).point is None:  # from the driving block's velocity
-        return (f"  omega_{k} ({name}) = {fmt_angular(sol.shown(w, 'omega'), 'rad/s')} "
-                f"(from the velocity of {ic.bodies[i - 1]} at "
-                f"{ic.centre(i, k).label}, over its distance from {c1j.label})")
+        return (
+            f"  omega_{k} ({name}) = {fmt_angular(sol.shown(w, 'omega'), 'rad/s')} "
+            f"(from the velocity of {ic.bodies[i - 1]} at "
+            f"{ic.centre(i, k).label}, over its distance from {c1j.label})"
+        )
     if c1j.point is None:
         return f"  omega_{k} ({name}) = 0: I1{k} is at infinity, {name} translates"
-    return (f"  omega_{k} ({name}) = "
-            f"{fmt_angular(sol.shown(w, 'omega', _own(sol, name)), 'rad/s')} "
-            f"(from omega_{i} with {ic.centre(1, i).label}, {ic.centre(1, k).label}, "
-            f"{ic.centre(i, k).label})")
+    return (
+        f"  omega_{k} ({name}) = "
+        f"{fmt_angular(sol.shown(w, 'omega', _own(sol, name)), 'rad/s')} "
+        f"(from omega_{i} with {ic.centre(1, i).label}, {ic.centre(1, k).label}, "
+        f"{ic.centre(i, k).label})"
+    )
 
 
 def _velocity_lines(ic: Centres) -> list[str]:
@@ -130,8 +147,7 @@ def _velocity_lines(ic: Centres) -> list[str]:
     ground (or the link's translation)."""
     sol = ic.sol
     sc = sol.scene
-    out = ["", "Velocities of the points (v = omega x distance from the centre with the "
-               "ground):"]
+    out = ["", "Velocities of the points (v = omega x distance from the centre with the ground):"]
     size = _size(sol)
     for p in sc.point_names:
         if p in sc.ground:
@@ -145,9 +161,11 @@ def _velocity_lines(ic: Centres) -> list[str]:
             continue
         # 0 where the point is the centre (noise apart)
         r = quiet(math.hypot(sol.P[p][0] - c.point[0], sol.P[p][1] - c.point[1]), size)
-        out.append(f"  v_{p} = omega_{k} x {p}-{c.label} = "
-                   f"{fmt(abs(sol.shown(ic.omegas[k], 'omega', _own(sol, ic.bodies[k - 1]))))} x "
-                   f"{fmt(r / sc.length_unit, 5)} {sc.units} = {fmt(v)} m/s")
+        out.append(
+            f"  v_{p} = omega_{k} x {p}-{c.label} = "
+            f"{fmt(abs(sol.shown(ic.omegas[k], 'omega', _own(sol, ic.bodies[k - 1]))))} x "
+            f"{fmt(r / sc.length_unit, 5)} {sc.units} = {fmt(v)} m/s"
+        )
     return out
 
 
@@ -155,8 +173,11 @@ def centres_text(ic: Centres) -> str:
     """The instantaneous centres as ``centres`` prints them: the links numbered, each centre with
     how it was found, the omegas from the centres."""
     out = _numbering_lines(ic) + _centre_lines(ic)
-    out += ["", "Angular velocities (angular-velocity-ratio theorem: omega_j / omega_i = "
-                "I1i-Iij / I1j-Iij):"]
+    out += [
+        "",
+        "Angular velocities (angular-velocity-ratio theorem: omega_j / omega_i = "
+        "I1i-Iij / I1j-Iij):",
+    ]
     out += [_omega_line(ic, k) for k in range(2, ic.n + 1)]
     out += _velocity_lines(ic)
     out += [f"warning: {w}" for w in ic.warnings]

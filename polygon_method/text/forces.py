@@ -23,16 +23,19 @@ __all__ = ["forces_lines", "force_blocks", "bound_lines", "engine_lines"]
 
 def _scales(sol, f):
     """(the largest force, the largest force times the mechanism's size)."""
-    forces = [math.hypot(*i.force) for i in f.inertia] + [p.magnitude for p in f.pins] + \
-        [abs(g.normal) for g in f.guides] + \
-        [math.hypot(*ld.force) for ld in sol.scene.loads if ld.force is not None]
+    forces = (
+        [math.hypot(*i.force) for i in f.inertia]
+        + [p.magnitude for p in f.pins]
+        + [abs(g.normal) for g in f.guides]
+        + [math.hypot(*ld.force) for ld in sol.scene.loads if ld.force is not None]
+    )
     if sol.scene.gravity is not None:
         forces += [m.mass * sol.scene.gravity.g for m in sol.scene.masses]
-    size = max([math.hypot(*p) for p in sol.P.values()]
-               + [lk.length for lk in sol.scene.links])
+    size = max([math.hypot(*p) for p in sol.P.values()] + [lk.length for lk in sol.scene.links])
     F = max(forces, default=0.0)
-    couples = [abs(i.couple) for i in f.inertia] + \
-        [abs(ld.torque) for ld in sol.scene.loads if ld.torque is not None]
+    couples = [abs(i.couple) for i in f.inertia] + [
+        abs(ld.torque) for ld in sol.scene.loads if ld.torque is not None
+    ]
     return F, max([F * size] + couples)
 
 
@@ -72,9 +75,11 @@ def _friction_lines(sol, f, F, M) -> list:
     fr = sol.scene.friction
     if fr is None:
         return []
-    out = [f"friction (Coulomb: mu = {fr.guides:g} at the guides, {fr.pins:g} at the pins "
-           "with a size in [pins], the friction circle mu r; against the sliding and the "
-           "relative turning; where nothing slides it is not determined and taken as 0):"]
+    out = [
+        f"friction (Coulomb: mu = {fr.guides:g} at the guides, {fr.pins:g} at the pins "
+        "with a size in [pins], the friction circle mu r; against the sliding and the "
+        "relative turning; where nothing slides it is not determined and taken as 0):"
+    ]
     seen = set()
     for it in f.friction:
         if it[1] in seen or it[0] == FRAME:  # (the reaction of one already said)
@@ -84,16 +89,20 @@ def _friction_lines(sol, f, F, M) -> list:
             out.append(f"  {it[1]}: couple {_moment(it[2], M)} on {it[0]}")
         else:
             out.append(f"  {it[1]}: {_vec(it[2], F)} on {_body(it[0])}")
-    out.append(f"  friction power: {fmt(quiet(f.friction_power, M))} W (lost; the driver "
-               "supplies it)")
+    out.append(
+        f"  friction power: {fmt(quiet(f.friction_power, M))} W (lost; the driver supplies it)"
+    )
     return out
 
 
 def _rack_couple(f, g) -> bool:
     """Whether a guide's couple is a rack's (said with its normal force: the tooth load
     acts off the rack's point)."""
-    return any(c.wheel == f"block {g.point}" for c in f.contacts) and \
-        isinstance(g.couple, float) and g.couple != 0.0
+    return (
+        any(c.wheel == f"block {g.point}" for c in f.contacts)
+        and isinstance(g.couple, float)
+        and g.couple != 0.0
+    )
 
 
 def _driver_lines(f, F, M, said):
@@ -101,23 +110,41 @@ def _driver_lines(f, F, M, said):
     and a second crank's torque."""
     if f.driver == "cylinder":
         v = quiet(f.input_torque, F)
-        out = [f"input force in cylinder {f.crank}{said}: {fmt(abs(v))} N"
-               + ("" if not v else " pushing its ends apart" if v > 0 else
-                  " pulling its ends together")]
+        out = [
+            f"input force in cylinder {f.crank}{said}: {fmt(abs(v))} N"
+            + (
+                ""
+                if not v
+                else " pushing its ends apart"
+                if v > 0
+                else " pulling its ends together"
+            )
+        ]
     elif f.driver == "block":
         v = quiet(f.input_torque, F)
-        out = [f"input force on {f.crank} along its guide{said}: {fmt(abs(v))} N"
-               + ("" if not v else " along the guide's direction" if v > 0 else
-                  " against the guide's direction")]
+        out = [
+            f"input force on {f.crank} along its guide{said}: {fmt(abs(v))} N"
+            + (
+                ""
+                if not v
+                else " along the guide's direction"
+                if v > 0
+                else " against the guide's direction"
+            )
+        ]
     elif f.driver == "wheel":
-        out = [f"input torque on the wheel {f.crank}{said}: {_moment(f.input_torque, M)} (its "
-               "driver's torque on it, the effort taken as a torque; as a force at its "
-               f"centre along the ground instead: {_vec(f.centre_force, F)})"]
+        out = [
+            f"input torque on the wheel {f.crank}{said}: {_moment(f.input_torque, M)} (its "
+            "driver's torque on it, the effort taken as a torque; as a force at its "
+            f"centre along the ground instead: {_vec(f.centre_force, F)})"
+        ]
     else:
         out = [f"input torque on {f.crank}{said}: {_moment(f.input_torque, M)}"]
     if f.second_crank is not None:
-        out.append(f"input torque on {f.second_crank} (the second crank){said}: "
-                   f"{_moment(f.second_torque, M)}")
+        out.append(
+            f"input torque on {f.second_crank} (the second crank){said}: "
+            f"{_moment(f.second_torque, M)}"
+        )
     return out
 
 
@@ -133,37 +160,58 @@ def forces_lines(sol) -> list:
     f = sol.forces
     F, M = _scales(sol, f)
     u = sc.length_unit
-    out = ["", "forces (D'Alembert; SI, ccw positive; a pin's force is the force on the first "
-           "body by the second)"]
+    out = [
+        "",
+        "forces (D'Alembert; SI, ccw positive; a pin's force is the force on the first "
+        "body by the second)",
+    ]
     if sc.gravity is not None:
         out.append(f"gravity: {sc.gravity.text}")
     if f.inertia:
-        out.append(f"{'body':<10} {'mass (kg)':<10} {'inertia force -m a_G':<24} "
-                   f"{'couple -I alpha':<20} offset h ({sc.units})")
+        out.append(
+            f"{'body':<10} {'mass (kg)':<10} {'inertia force -m a_G':<24} "
+            f"{'couple -I alpha':<20} offset h ({sc.units})"
+        )
         for i in f.inertia:
             h = "-" if i.offset is None else fmt(abs(quiet(i.offset, M / max(F, FLOOR))) / u)
-            out.append(f"{i.body:<10} {fmt(i.mass):<10} {_vec(i.force, F):<24} "
-                       f"{_moment(i.couple, M):<20} {h}")
+            out.append(
+                f"{i.body:<10} {fmt(i.mass):<10} {_vec(i.force, F):<24} "
+                f"{_moment(i.couple, M):<20} {h}"
+            )
     out.append(f"{'pin':<5} {'on':<10} {'by':<10} force")
     for p in f.pins:
         out.append(f"{p.point:<5} {p.on:<10} {_body(p.by):<10} {_vec(p.force, F)}")
     for g in f.guides:
-        out.append(f"guide at {g.point}: normal force on block {g.point} {_vec(g.force, F)}"
-                   + (f"; its couple {_moment(g.couple, M)}" if _rack_couple(f, g) else ""))
+        out.append(
+            f"guide at {g.point}: normal force on block {g.point} {_vec(g.force, F)}"
+            + (f"; its couple {_moment(g.couple, M)}" if _rack_couple(f, g) else "")
+        )
     for c in f.contacts:
-        out.append(f"contact of {_wheel(c.wheel)} with {_base(c)}: normal "
-                   f"{fmt(quiet(c.normal, F))} N, tangential {fmt(quiet(c.tangential, F))} N "
-                   f"({_vec(c.force, F)}); " + c.grip_words())
+        out.append(
+            f"contact of {_wheel(c.wheel)} with {_base(c)}: normal "
+            f"{fmt(quiet(c.normal, F))} N, tangential {fmt(quiet(c.tangential, F))} N "
+            f"({_vec(c.force, F)}); " + c.grip_words()
+        )
     out += _friction_lines(sol, f, F, M)
-    out += _driver_lines(f, F, M, " (inertia, weights, loads and friction)"
-                         if sc.friction is not None else " (inertia, weights and loads)")
-    out.append(f"shaking force on the frame: {_vec(f.shaking_force, F)}; shaking moment "
-               f"about the origin: {_moment(f.shaking_moment, M)}")
+    out += _driver_lines(
+        f,
+        F,
+        M,
+        " (inertia, weights, loads and friction)"
+        if sc.friction is not None
+        else " (inertia, weights and loads)",
+    )
+    out.append(
+        f"shaking force on the frame: {_vec(f.shaking_force, F)}; shaking moment "
+        f"about the origin: {_moment(f.shaking_moment, M)}"
+    )
     out += engine_lines(sol)
     for st in f.steps:
         if st.condition < 0.0871557:  # sin 5 deg, as the kinematic warnings
-            out.append(f"warning: forces, step {st.index + 1} ({st.title}): condition "
-                       f"{st.condition:.3g} ({st.why}): the pin forces grow as 1/condition")
+            out.append(
+                f"warning: forces, step {st.index + 1} ({st.title}): condition "
+                f"{st.condition:.3g} ({st.why}): the pin forces grow as 1/condition"
+            )
     out += bound_lines(sol, f)
     return out
 
@@ -172,20 +220,25 @@ def bound_lines(sol, f) -> list:
     """The forces whose estimated error bound exceeds :data:`SHOWN` (largest first), in the
     words of the kinematic bounds below the plan; empty where every force is closer."""
     b = force_bounds(sol, f)
-    shown = [(f"F_{point} on {on} by {_body(by)}", e) for (point, on, by), e in b.pins.items()
-             if e > SHOWN]
+    shown = [
+        (f"F_{point} on {on} by {_body(by)}", e)
+        for (point, on, by), e in b.pins.items()
+        if e > SHOWN
+    ]
     shown += [(f"N_{k} (guide)", e) for k, e in b.guides.items() if e > SHOWN]
     if b.effort > SHOWN:
-        shown.append(("the driver's " + ("torque" if f.driver in ("crank", "wheel") else
-                                         "force"),
-                      b.effort))
+        shown.append(
+            ("the driver's " + ("torque" if f.driver in ("crank", "wheel") else "force"), b.effort)
+        )
     if b.second is not None and b.second > SHOWN:
         shown.append(("the second crank's torque", b.second))
     if not shown:
         return []
-    out = [f"estimated error of the forces above {SHOWN:g} (the kinematic bounds through "
-           "each group's equations, each dividing by its condition; relative to the largest "
-           "force, a torque to it times the longest link):"]
+    out = [
+        f"estimated error of the forces above {SHOWN:g} (the kinematic bounds through "
+        "each group's equations, each dividing by its condition; relative to the largest "
+        "force, a torque to it times the longest link):"
+    ]
     for what, e in sorted(shown, key=lambda t: -t[1]):
         out.append(f"  {what}: {e:.2g}" if e < USELESS else f"  {what}: no useful bound")
     if any(not e < USELESS for _, e in shown):
@@ -198,13 +251,22 @@ def _polygon_items(st, f, scale, F) -> list:
     if not st.polygon:
         return []
     tiny = 1e-9 * max(F, FLOOR)
-    sides = [f"{side_label(sd, f.numbers, unicode=False)} {scale.cm(math.hypot(*sd.vector)):.2f}"
-             " cm" + (" (found)" if any(k == u for u, _ in st.unknown) else "")
-             for k, sd in enumerate(st.polygon) if math.hypot(*sd.vector) > tiny]
-    items = [f"force polygon at {scale.text}, from its pole, head to tail: "
-             + ", ".join(sides) + "; it closes on the pole"]
-    across = [f"{side_label(c, f.numbers, unicode=False)} {scale.cm(math.hypot(*c.vector)):.2f}"
-              " cm" for c, _, _ in st.chords if math.hypot(*c.vector) > tiny]
+    sides = [
+        f"{side_label(sd, f.numbers, unicode=False)} {scale.cm(math.hypot(*sd.vector)):.2f}"
+        " cm" + (" (found)" if any(k == u for u, _ in st.unknown) else "")
+        for k, sd in enumerate(st.polygon)
+        if math.hypot(*sd.vector) > tiny
+    ]
+    items = [
+        f"force polygon at {scale.text}, from its pole, head to tail: "
+        + ", ".join(sides)
+        + "; it closes on the pole"
+    ]
+    across = [
+        f"{side_label(c, f.numbers, unicode=False)} {scale.cm(math.hypot(*c.vector)):.2f} cm"
+        for c, _, _ in st.chords
+        if math.hypot(*c.vector) > tiny
+    ]
     if across:
         items.append("read across it (whole pin forces): " + ", ".join(across))
     return items
@@ -218,52 +280,54 @@ def engine_lines(sol) -> list:
         return []
     F, M = _scales(sol, f)
     q = lambda v: fmt(quiet(v, F))  # noqa: E731
-    return [f"engine: piston effort F_P = {q(e.F_P)} N (along the line of stroke, towards "
-            f"the crank: the gas force and the reciprocating parts' inertia and weight); "
-            f"thrust in the rod {e.rod} F_Q = {q(e.F_Q)} N; side thrust on the cylinder "
-            f"walls F_N = {q(e.F_N)} N",
-            f"engine: crank effort F_T = {q(e.F_T)} N (across the crank {e.crank} at its pin, "
-            f"in the sense of rotation); turning moment T = F_T r = {fmt(quiet(e.T, M))} N m "
-            "(positive: with the rotation, the engine driving)"]
+    return [
+        f"engine: piston effort F_P = {q(e.F_P)} N (along the line of stroke, towards "
+        f"the crank: the gas force and the reciprocating parts' inertia and weight); "
+        f"thrust in the rod {e.rod} F_Q = {q(e.F_Q)} N; side thrust on the cylinder "
+        f"walls F_N = {q(e.F_N)} N",
+        f"engine: crank effort F_T = {q(e.F_T)} N (across the crank {e.crank} at its pin, "
+        f"in the sense of rotation); turning moment T = F_T r = {fmt(quiet(e.T, M))} N m "
+        "(positive: with the rotation, the engine driving)",
+    ]
 
 
 #: what each kind of force step does, as its paragraph says it
 _STEP_HEADS = {
     "dyad": "moments of each link about its other end give the pin force between them; each "
-            "link's force balance its end's",
+    "link's force balance its end's",
     "slider": "moments of the link about its other end give the guide's normal force; the block's"
-              " force balance the pin force; the link's the force at its other end",
+    " force balance the pin force; the link's the force at its other end",
     "slotted": "moments of the lever about its pivot give the normal force between it and the "
-               "block; the lever's force balance the force at its pivot; the block's the force at"
-               " its pin",
+    "block; the lever's force balance the force at its pivot; the block's the force at"
+    " its pin",
     "crank": "the frame holds the crank at its pivot; the moments about the pivot give the "
-             "driving torque",
+    "driving torque",
     "second crank": "the frame holds the second crank at its pivot; the moments about the pivot "
-                    "give its own driving torque",
+    "give its own driving torque",
     "cylinder": "a two-force member: its force along its line, pushing (or pulling) the bodies at"
-                " its ends",
+    " its ends",
     "yoke": "the yoke's balance along its path gives the slot's force on the block; across it the"
-            " path's normal force, its moments the path's couple; the block's balance the crank's"
-            " force on it",
+    " path's normal force, its moments the path's couple; the block's balance the crank's"
+    " force on it",
     "peg": "the peg's balance gives each slot's normal force",
     "triad": "each link's moments about its known end give its force across it; the plate's three"
-             " equations together (a 3x3 solve) the forces along the links; each link's balance "
-             "the rest",
+    " equations together (a 3x3 solve) the forces along the links; each link's balance "
+    "the rest",
     "wheel centre": "the wheel's moments about its centre give the ground's grip; the link's "
-                    "moments about its other end the ground's normal force; the balances the pin "
-                    "forces",
+    "moments about its other end the ground's normal force; the balances the pin "
+    "forces",
     "block": "the block's force balance: along the guide the driver's force, across it the "
-             "guide's normal force",
+    "guide's normal force",
     "rolling": "the tooth load along the line of action, at the pressure angle to the common "
-               "tangent through the pitch point; the wheel's moments about its centre give its "
-               "part along the tangent, the teeth push apart with that times tan phi; the "
-               "wheel's force balance the pin force at its centre",
+    "tangent through the pitch point; the wheel's moments about its centre give its "
+    "part along the tangent, the teeth push apart with that times tan phi; the "
+    "wheel's force balance the pin force at its centre",
     "rack": "the tooth load along the line of action, at the pressure angle to the pitch line; "
-            "the rack's balance along its guide gives its part along the guide, across it the "
-            "guide's normal force, its moments the guide's couple",
+    "the rack's balance along its guide gives its part along the guide, across it the "
+    "guide's normal force, its moments the guide's couple",
     "rolling driver": "the driving wheel alone, last: the balance along and across the ground "
-                      "gives the ground's grip and push at the contact, the moments about its "
-                      "centre the driver's torque",
+    "gives the ground's grip and push at the contact, the moments about its "
+    "centre the driver's torque",
 }
 
 
@@ -272,23 +336,54 @@ def _inertia_blocks(sol, f, F, M) -> list:
     sc = sol.scene
     u = sc.length_unit
     blocks = [("h", "6. Inertia forces (D'Alembert)")]
-    blocks.append(("p", "Each body's centre of mass G is a point of the body: its image g on "
-                   "the acceleration diagram gives a_G (a_G = a_P + lam (a_Q - a_P) + mu "
-                   "perp(a_Q - a_P), as for any point carried on the link). The inertia "
-                   "force m a_G acts opposite to a_G; the inertia couple is -I alpha. The "
-                   "book's single force: m a_G along a line offset from G by h = I alpha / "
-                   "(m a_G), on the side where its moment about G has the couple's sense."
-                   + (f" Gravity: {sc.gravity.text}, each weight m g at G." if sc.gravity
-                      else " No gravity (the scene gives no [gravity]).")))
+    blocks.append(
+        (
+            "p",
+            "Each body's centre of mass G is a point of the body: its image g on "
+            "the acceleration diagram gives a_G (a_G = a_P + lam (a_Q - a_P) + mu "
+            "perp(a_Q - a_P), as for any point carried on the link). The inertia "
+            "force m a_G acts opposite to a_G; the inertia couple is -I alpha. The "
+            "book's single force: m a_G along a line offset from G by h = I alpha / "
+            "(m a_G), on the side where its moment about G has the couple's sense."
+            + (
+                f" Gravity: {sc.gravity.text}, each weight m g at G."
+                if sc.gravity
+                else " No gravity (the scene gives no [gravity])."
+            ),
+        )
+    )
     rows = []
     for i in f.inertia:
         a = math.hypot(*i.a_G)
         h = "-" if i.offset is None else fmt(abs(quiet(i.offset, M / max(F, FLOOR))) / u)
-        rows.append((i.body, fmt(i.mass), fmt(i.inertia), i.how,
-                     f"{fmt(a)} m/s^2",
-                     _vec(i.force, F), _moment(i.couple, M), h))
-    blocks.append(("table", ("body", "m (kg)", "I_G (kg m^2)", "G", "a_G", "m a_G, opposite "
-                             "to a_G", "-I alpha", f"h ({sc.units})"), rows))
+        rows.append(
+            (
+                i.body,
+                fmt(i.mass),
+                fmt(i.inertia),
+                i.how,
+                f"{fmt(a)} m/s^2",
+                _vec(i.force, F),
+                _moment(i.couple, M),
+                h,
+            )
+        )
+    blocks.append(
+        (
+            "table",
+            (
+                "body",
+                "m (kg)",
+                "I_G (kg m^2)",
+                "G",
+                "a_G",
+                "m a_G, opposite to a_G",
+                "-I alpha",
+                f"h ({sc.units})",
+            ),
+            rows,
+        )
+    )
     return blocks
 
 
@@ -296,22 +391,31 @@ def _groups_intro(f, scale) -> list:
     """Section 7's heading and paragraphs: how a group is solved, and the force scale and the
     bodies' numbers when the polygons are drawn at ``scale``."""
     blocks = [("h", "7. Forces, group by group (the construction's groups in reverse)")]
-    blocks.append(("p", "Each group's bodies are statically determinate: the moments about "
-                   "the pins whose forces are not yet known give the pin force between them, "
-                   "then each body's force balance the rest. 'Known' is the resultant of the "
-                   "inertia force and couple, the weight, the loads and the forces of the "
-                   "groups solved before (the moment about the origin)."))
+    blocks.append(
+        (
+            "p",
+            "Each group's bodies are statically determinate: the moments about "
+            "the pins whose forces are not yet known give the pin force between them, "
+            "then each body's force balance the rest. 'Known' is the resultant of the "
+            "inertia force and couple, the weight, the loads and the forces of the "
+            "groups solved before (the moment about the origin).",
+        )
+    )
     if scale is not None:
-        names = ", ".join(f"{n} {'the frame' if b == FRAME else b}"
-                          for b, n in f.numbers.items())
-        blocks.append(("p", f"Force scale: {scale.text}, one scale for every polygon (the "
-                       "largest at most 12 cm across). The bodies are numbered as the books "
-                       f"number links ({names}); F_32 is the force on 3 by 2, Fi_3 the "
-                       "inertia force of 3, W_3 its weight. Each polygon starts at its pole "
-                       "with the known forces head to tail and each outer pin's force square "
-                       "to its link (^t, from that link's moments about the group's middle "
-                       "pin); the lines of the forces along the links (^n) and of a guide's "
-                       "normal force, drawn through the corners, meet where it closes."))
+        names = ", ".join(f"{n} {'the frame' if b == FRAME else b}" for b, n in f.numbers.items())
+        blocks.append(
+            (
+                "p",
+                f"Force scale: {scale.text}, one scale for every polygon (the "
+                "largest at most 12 cm across). The bodies are numbered as the books "
+                f"number links ({names}); F_32 is the force on 3 by 2, Fi_3 the "
+                "inertia force of 3, W_3 its weight. Each polygon starts at its pole "
+                "with the known forces head to tail and each outer pin's force square "
+                "to its link (^t, from that link's moments about the group's middle "
+                "pin); the lines of the forces along the links (^n) and of a guide's "
+                "normal force, drawn through the corners, meet where it closes.",
+            )
+        )
     return blocks
 
 
@@ -320,9 +424,11 @@ def _found_item(name, val, F, M) -> str:
     if isinstance(val, tuple):
         return f"{name} = {_vec(val, F)}"
     if name.startswith(("N at the contact", "T at the contact")):  # (not a torque T)
-        return (f"{name} = {fmt(quiet(val, F))} N ("
-                + ("normal to the line, + pushing the wheel off it)"
-                   if name[0] == "N" else "along the line, + along perp(m))"))
+        return f"{name} = {fmt(quiet(val, F))} N (" + (
+            "normal to the line, + pushing the wheel off it)"
+            if name[0] == "N"
+            else "along the line, + along perp(m))"
+        )
     if name.startswith(("T ", "C ")):  # a torque, a guide's couple
         return f"{name} = {_moment(val, M)}"
     if name.startswith("F in "):  # a cylinder's force
@@ -337,8 +443,9 @@ def _step_blocks(st, f, scale, F, M, bounds) -> list:
     polygon's sides at ``scale``, its condition and its error bound."""
     items = []
     for body, (fx, fy, m) in zip(st.bodies, st.known):
-        items.append(f"known on {body}: {_vec((fx, fy), F)}, moment about the origin "
-                     f"{_moment(m, M)}")
+        items.append(
+            f"known on {body}: {_vec((fx, fy), F)}, moment about the origin {_moment(m, M)}"
+        )
     items += list(st.equations)
     items += [_found_item(name, val, F, M) for name, val in st.found]
     if scale is not None:
@@ -347,8 +454,11 @@ def _step_blocks(st, f, scale, F, M, bounds) -> list:
         items.append(f"condition {st.condition:.3g} ({st.why})")
     e = bounds.steps.get(st.index, 0.0)
     if e > SHOWN:
-        items.append(f"estimated error of these forces: {e:.2g} of the largest force"
-                     if e < USELESS else f"estimated error of these forces: {NO_BOUND}")
+        items.append(
+            f"estimated error of these forces: {e:.2g} of the largest force"
+            if e < USELESS
+            else f"estimated error of these forces: {NO_BOUND}"
+        )
     head = _STEP_HEADS.get(st.kind, "")
     return [("p", f"Step {st.index + 1}, {st.title}: {head}."), ("list", items)]
 
@@ -357,19 +467,30 @@ def _driver_blocks(f, F, M, sol=None) -> list:
     """Section 8: the driving torque, the shaking force and moment, the guides' forces (and
     the friction, where the scene gives it)."""
     fric = [] if sol is None else [line.strip() for line in _friction_lines(sol, f, F, M)]
-    said = (" (inertia, weights, loads and friction; its power balances theirs and the "
-            "friction's loss)" if fric else " (inertia, weights and loads; its power balances "
-            "theirs)")
-    items = fric + [line + said for line in _driver_lines(f, F, M, "")] + [
-             f"shaking force (on the frame, through its pins and guides): "
-             f"{_vec(f.shaking_force, F)}",
-             f"shaking moment about the origin (with the driver's reaction): "
-             f"{_moment(f.shaking_moment, M)}"]
-    items += [f"guide at {g.point}: {_vec(g.force, F)} on block {g.point}"
-              + (f", its couple {_moment(g.couple, M)}" if _rack_couple(f, g) else "")
-              for g in f.guides]
-    items += [f"contact of {_wheel(c.wheel)} with {_base(c)}: {_vec(c.force, F)} on it; "
-              + c.grip_words() for c in f.contacts]
+    said = (
+        " (inertia, weights, loads and friction; its power balances theirs and the friction's loss)"
+        if fric
+        else " (inertia, weights and loads; its power balances theirs)"
+    )
+    items = (
+        fric
+        + [line + said for line in _driver_lines(f, F, M, "")]
+        + [
+            f"shaking force (on the frame, through its pins and guides): "
+            f"{_vec(f.shaking_force, F)}",
+            f"shaking moment about the origin (with the driver's reaction): "
+            f"{_moment(f.shaking_moment, M)}",
+        ]
+    )
+    items += [
+        f"guide at {g.point}: {_vec(g.force, F)} on block {g.point}"
+        + (f", its couple {_moment(g.couple, M)}" if _rack_couple(f, g) else "")
+        for g in f.guides
+    ]
+    items += [
+        f"contact of {_wheel(c.wheel)} with {_base(c)}: {_vec(c.force, F)} on it; " + c.grip_words()
+        for c in f.contacts
+    ]
     return [("h", "8. The driving torque and the frame"), ("list", items)]
 
 

@@ -19,8 +19,19 @@ from ..polygons.scales import DRAWING_PRECISION_CM, extent
 from ..scene import FixedPath, GuideSlider, guide_words, split_name
 from ..solver.derived import transmission_angle
 
-__all__ = ["read_off", "key_of", "link_name", "length_words", "extent_cm", "turn_words",
-           "polar_words", "velocity_section", "readoff_section", "acceleration_section"]
+__all__ = [
+    "read_off",
+    "key_of",
+    "link_name",
+    "length_words",
+    "extent_cm",
+    "turn_words",
+    "polar_words",
+    "velocity_section",
+    "readoff_section",
+    "acceleration_section",
+]
+
 
 def read_off(value: float, scale) -> tuple[float, float]:
     """(length read on the drawing in cm, the value it gives) for a vector of ``value``
@@ -50,7 +61,6 @@ def link_name(sol, key):
 def length_words(sol, metres: float) -> str:
     """A length (m) in the scene's own unit, to five figures: "180 mm"."""
     return f"{fmt(metres / sol.scene.length_unit, 5)} {sol.scene.units}"
-
 
 
 def extent_cm(points, scale):
@@ -122,8 +132,7 @@ def _readoff_rows(sol, constructions, scale, unit):
                 cm, val = scale.cm(mag), mag
             else:
                 cm, val = read_off(mag, scale)
-            rows.append((name, v.label, f"{cm:.2f}", f"{_fixed(val)} {unit}",
-                         f"{fmt(mag)} {unit}"))
+            rows.append((name, v.label, f"{cm:.2f}", f"{_fixed(val)} {unit}", f"{fmt(mag)} {unit}"))
     return rows
 
 
@@ -132,9 +141,11 @@ def velocity_section(doc, sol, vscale):
     drawn."""
     doc.h("3. Velocity diagram")
     cons = velocity_constructions(sol)
-    doc.p(f"Velocity scale: {vscale.text} (the diagram fits "
-          f"{fmt(extent_cm(list(sol.V.values()) + [(0.0, 0.0)], vscale), 3)} cm). Fixed "
-          "points have their images at the pole o.")
+    doc.p(
+        f"Velocity scale: {vscale.text} (the diagram fits "
+        f"{fmt(extent_cm(list(sol.V.values()) + [(0.0, 0.0)], vscale), 3)} cm). Fixed "
+        "points have their images at the pole o."
+    )
     items = []
     for c in cons:
         t = f"Step {c.step + 1} ({c.title}): {c.text}"
@@ -146,10 +157,13 @@ def velocity_section(doc, sol, vscale):
             if sol.plan.steps[c.step].transmission() is None:  # no transmission angle
                 t += f" (condition {fmt(c.condition, 3)})"
             else:
-                t += (f" (the lines cross at "
-                      f"{fmt(transmission_angle(float(c.condition)), 3)} deg, condition "
-                      f"{fmt(c.condition, 3)}" + ("; read carefully" if c.condition < 0.5
-                                                  else "") + ")")
+                t += (
+                    f" (the lines cross at "
+                    f"{fmt(transmission_angle(float(c.condition)), 3)} deg, condition "
+                    f"{fmt(c.condition, 3)}"
+                    + ("; read carefully" if c.condition < 0.5 else "")
+                    + ")"
+                )
         items.append(t)
     doc.items(items)
 
@@ -163,19 +177,28 @@ def _angular_velocity_items(sol):
         w = sol.shown(sol.W[lk.key], "omega", lk.key)
         v = sol.shown(sol.speed(lk.q, lk.p), "v", (lk.q, lk.p))
         if lk.key == sc.input.crank:
-            items.append(f"omega_{lk.key} = {fmt(abs(w))} rad/s {sense_word(w)} "
-                         + ("(the input)" if sc.input.given is None
-                            else f"(the crank's, found from {sc.input.given.key})"))
+            items.append(
+                f"omega_{lk.key} = {fmt(abs(w))} rad/s {sense_word(w)} "
+                + (
+                    "(the input)"
+                    if sc.input.given is None
+                    else f"(the crank's, found from {sc.input.given.key})"
+                )
+            )
             continue
         rel = key_of("v", (lk.q, lk.p))
-        items.append(f"omega_{lk.key} = {rel} / {lk.key} = {fmt(v)} / {fmt(lk.length, 5)} = "
-                     f"{fmt(abs(w))} rad/s {sense_word(w)}".rstrip())
+        items.append(
+            f"omega_{lk.key} = {rel} / {lk.key} = {fmt(v)} / {fmt(lk.length, 5)} = "
+            f"{fmt(abs(w))} rad/s {sense_word(w)}".rstrip()
+        )
     for c in sc.cylinders:  # the barrel's point under the rod's end: omega x its length
         w = sol.shown(sol.W[c.key], "omega", c.key)
         L = sol.cylinder_length(c.key)
-        items.append(f"omega_{c.key} = (the barrel's point under {c.rod}) / {c.barrel}{c.rod} "
-                     f"= {fmt(abs(w) * L)} / {fmt(L, 5)} = {fmt(abs(w))} rad/s "
-                     f"{sense_word(w)}".rstrip())
+        items.append(
+            f"omega_{c.key} = (the barrel's point under {c.rod}) / {c.barrel}{c.rod} "
+            f"= {fmt(abs(w) * L)} / {fmt(L, 5)} = {fmt(abs(w))} rad/s "
+            f"{sense_word(w)}".rstrip()
+        )
     return items
 
 
@@ -184,18 +207,26 @@ def _sliding_items(sol):
     for s in sol.scene.blocks:  # (a driving wheel's centre: its velocity said above)
         vs = sol.S[s.key][0]
         if vs == 0:  # (noise is 0 here: the solution is tidied)
-            guide = (f"the {guide_words(s.label)}" if isinstance(s, FixedPath) else
-                     f"the slot of yoke {s.yoke}" if hasattr(s, "yoke") else s.guide)
-            out.append(f"vs_{s.key} = 0 m/s: {s.point} does not slide along {guide} at "
-                       "this instant")
+            guide = (
+                f"the {guide_words(s.label)}"
+                if isinstance(s, FixedPath)
+                else f"the slot of yoke {s.yoke}"
+                if hasattr(s, "yoke")
+                else s.guide
+            )
+            out.append(
+                f"vs_{s.key} = 0 m/s: {s.point} does not slide along {guide} at this instant"
+            )
             continue
         if isinstance(s, FixedPath):
             along = f"along the {guide_words(s.label)} ({'+' if vs >= 0 else '-'} direction)"
         elif hasattr(s, "yoke"):
-            along = (f"along the {guide_words(s.label, 'slot', f'yoke {s.yoke}')} ({'+' if vs >= 0 else '-'} "
-                     "direction), relative to the yoke")
+            along = (
+                f"along the {guide_words(s.label, 'slot', f'yoke {s.yoke}')} ({'+' if vs >= 0 else '-'} "
+                "direction), relative to the yoke"
+            )
         else:
-            along = (f"along {s.guide}, {'from ' + s.first + ' towards ' + s.second if vs >= 0 else 'from ' + s.second + ' towards ' + s.first}")
+            along = f"along {s.guide}, {'from ' + s.first + ' towards ' + s.second if vs >= 0 else 'from ' + s.second + ' towards ' + s.first}"
         out.append(f"vs_{s.key} = {fmt(abs(vs))} m/s {along}")
     return out
 
@@ -213,16 +244,22 @@ def _rubbing_items(sol):
             if wa == 0 or wb == 0:
                 moving, w = (b, wb) if wa == 0 else (a, wa)
                 still = a if wa == 0 else b
-                rule = (f"{still} does not turn: rub = omega_{moving} r = {fmt(abs(w))} x {rr}")
+                rule = f"{still} does not turn: rub = omega_{moving} r = {fmt(abs(w))} x {rr}"
             elif (wa > 0) != (wb > 0):
-                rule = (f"{a} turns {sense_word(wa)}, {b} {sense_word(wb)} (opposite senses): "
-                        f"rub = (omega_{a} + omega_{b}) r = ({fmt(abs(wa))} + {fmt(abs(wb))}) "
-                        f"x {rr}")
+                rule = (
+                    f"{a} turns {sense_word(wa)}, {b} {sense_word(wb)} (opposite senses): "
+                    f"rub = (omega_{a} + omega_{b}) r = ({fmt(abs(wa))} + {fmt(abs(wb))}) "
+                    f"x {rr}"
+                )
             else:
-                rule = (f"{a} and {b} both turn {sense_word(wa)}: rub = |omega_{a} - "
-                        f"omega_{b}| r = |{fmt(abs(wa))} - {fmt(abs(wb))}| x {rr}")
-            out.append(f"pin {name} (r = {length_words(sol, r.radius)}), {a} and {b}: {rule} = "
-                       f"{fmt(val)} m/s")
+                rule = (
+                    f"{a} and {b} both turn {sense_word(wa)}: rub = |omega_{a} - "
+                    f"omega_{b}| r = |{fmt(abs(wa))} - {fmt(abs(wb))}| x {rr}"
+                )
+            out.append(
+                f"pin {name} (r = {length_words(sol, r.radius)}), {a} and {b}: {rule} = "
+                f"{fmt(val)} m/s"
+            )
         if len(r.pairs) > 1:
             out.append(f"pin {name}: the largest is {fmt(r.rubbing_velocity)} m/s")
     return out
@@ -234,8 +271,11 @@ def _torque_items(sol):
         return []
     inp = sc.input
     block = not sol.plan.steps[0].periodic  # a block driver: a force along its guide
-    out = ["power balance (no friction, no inertia): "
-           + (f"F vs_{inp.tip}" if block else f"T omega_{inp.crank}") + " + sum F . v = 0"]
+    out = [
+        "power balance (no friction, no inertia): "
+        + (f"F vs_{inp.tip}" if block else f"T omega_{inp.crank}")
+        + " + sum F . v = 0"
+    ]
     for load, (target, p) in zip(sc.loads, sol.power_terms):
         if load.force is not None:
             F = math.hypot(*load.force)
@@ -244,21 +284,29 @@ def _torque_items(sol):
                 vx, vy = sol.V[target]
                 cos = (load.force[0] * vx + load.force[1] * vy) / (F * v)
                 ang = math.degrees(math.acos(max(-1.0, min(1.0, cos))))
-                out.append(f"{target}: F . v_{target} = {fmt(F)} N x {fmt(v)} m/s x "
-                           f"cos {fmt(ang, 4)} deg = {fmt(p)} W")
+                out.append(
+                    f"{target}: F . v_{target} = {fmt(F)} N x {fmt(v)} m/s x "
+                    f"cos {fmt(ang, 4)} deg = {fmt(p)} W"
+                )
             else:
                 out.append(f"{target}: F . v_{target} = {fmt(p)} W")
         else:
-            out.append(f"torque on {target}: T_{target} omega_{target} = "
-                       f"{fmt(load.torque)} x {fmt(sol.W[target])} = {fmt(p)} W")
+            out.append(
+                f"torque on {target}: T_{target} omega_{target} = "
+                f"{fmt(load.torque)} x {fmt(sol.W[target])} = {fmt(p)} W"
+            )
     total = sum(p for _, p in sol.power_terms)
     t = sol.input_torque
     if block:
-        out.append(f"F = -(sum F . v) / vs_{inp.tip} = {fmt(-total)} / {fmt(inp.omega)} = "
-                   f"{fmt(t)} N along the guide ({sol.plan.steps[0].sense(t)})")
+        out.append(
+            f"F = -(sum F . v) / vs_{inp.tip} = {fmt(-total)} / {fmt(inp.omega)} = "
+            f"{fmt(t)} N along the guide ({sol.plan.steps[0].sense(t)})"
+        )
         return out
-    out.append(f"T = -(sum F . v) / omega_{inp.crank} = {fmt(-total)} / {fmt(inp.omega)} = "
-               f"{fmt(abs(t))} N m {sense_word(t)}".rstrip())
+    out.append(
+        f"T = -(sum F . v) / omega_{inp.crank} = {fmt(-total)} / {fmt(inp.omega)} = "
+        f"{fmt(abs(t))} N m {sense_word(t)}".rstrip()
+    )
     return out
 
 
@@ -266,20 +314,28 @@ def readoff_section(doc, sol, vscale):
     """Section 4: each vector read off the velocity diagram (its length in cm, what it gives, the
     exact value), then the angular, sliding and rubbing velocities and the input torque."""
     doc.h("4. Read-offs from the velocity diagram")
-    doc.p(f"Lengths are read to {DRAWING_PRECISION_CM} cm; 'read' is what that length gives "
-          f"at {vscale.text}, 'exact' the solver's value.")
-    doc.table(("vector", "on the diagram", "length (cm)", "read", "exact"),
-              _readoff_rows(sol, velocity_constructions(sol), vscale, "m/s"))
-    doc.p("Angular velocities (omega = relative velocity / length; the sense is the way the "
-          "relative velocity turns the link):")
+    doc.p(
+        f"Lengths are read to {DRAWING_PRECISION_CM} cm; 'read' is what that length gives "
+        f"at {vscale.text}, 'exact' the solver's value."
+    )
+    doc.table(
+        ("vector", "on the diagram", "length (cm)", "read", "exact"),
+        _readoff_rows(sol, velocity_constructions(sol), vscale, "m/s"),
+    )
+    doc.p(
+        "Angular velocities (omega = relative velocity / length; the sense is the way the "
+        "relative velocity turns the link):"
+    )
     doc.items(_angular_velocity_items(sol))
     sliding = _sliding_items(sol)
     if sliding:
         doc.p("Sliding velocities (relative to the guide):")
         doc.items(sliding)
     if sol.scene.pins:
-        doc.p("Rubbing velocities (|omega_1 - omega_2| r, with signed omegas: the sum of the "
-              "magnitudes when the two turn in opposite senses, the difference when alike):")
+        doc.p(
+            "Rubbing velocities (|omega_1 - omega_2| r, with signed omegas: the sum of the "
+            "magnitudes when the two turn in opposite senses, the difference when alike):"
+        )
         doc.items(_rubbing_items(sol))
     if sol.input_torque is not None:
         doc.p("Input torque:" if sol.plan.steps[0].periodic else "Input force:")
@@ -305,8 +361,10 @@ def _acceleration_table(sol):
             g = sc.link(s.guide).key
             vs = sol.S[s.key][0]
             cor = math.hypot(*sol.coriolis(s.key))
-            coriolis[g] = (f"2 omega v = 2 x {fmt(abs(sol.W[g]))} x {fmt(abs(vs))} = "
-                           f"{fmt(cor)} (block {s.key}, perp. to {s.guide})")
+            coriolis[g] = (
+                f"2 omega v = 2 x {fmt(abs(sol.W[g]))} x {fmt(abs(vs))} = "
+                f"{fmt(cor)} (block {s.key}, perp. to {s.guide})"
+            )
     rows = []
     for lk in sc.links:
         if lk.key in sol.plan.fixed_links:
@@ -321,10 +379,17 @@ def _acceleration_table(sol):
             tcell = f"alpha x {lk.key} = {fmt(tan)}"
         else:
             tcell = f"perp. to {X}{Y}; found: {fmt(tan)}"
-        rows.append((lk.key, fmt(L, 5), f"{key_of('v', (X, Y))} = {fmt(v)}",
-                     f"{fmt(v)}^2 / {fmt(L, 5)} = {fmt(cen)}",
-                     f"along {X}{Y}, towards {Y}", tcell,
-                     coriolis.get(lk.key, "-")))
+        rows.append(
+            (
+                lk.key,
+                fmt(L, 5),
+                f"{key_of('v', (X, Y))} = {fmt(v)}",
+                f"{fmt(v)}^2 / {fmt(L, 5)} = {fmt(cen)}",
+                f"along {X}{Y}, towards {Y}",
+                tcell,
+                coriolis.get(lk.key, "-"),
+            )
+        )
     return rows
 
 
@@ -333,25 +398,37 @@ def acceleration_section(doc, sol, ascale):
     acceleration diagram's constructions and its read-offs, the angular accelerations."""
     sc = sol.scene
     doc.h("5. Accelerations")
-    doc.table(("link", "length (m)", "relative velocity (m/s)", "centripetal v^2/l (m/s^2)",
-               "its direction", "tangential (m/s^2)", "Coriolis (m/s^2)"),
-              _acceleration_table(sol))
+    doc.table(
+        (
+            "link",
+            "length (m)",
+            "relative velocity (m/s)",
+            "centripetal v^2/l (m/s^2)",
+            "its direction",
+            "tangential (m/s^2)",
+            "Coriolis (m/s^2)",
+        ),
+        _acceleration_table(sol),
+    )
     cons = acceleration_constructions(sol)
-    doc.p(f"Acceleration scale: {ascale.text} (the diagram fits "
-          f"{fmt(extent_cm(list(sol.A.values()) + [(0.0, 0.0)], ascale), 3)} cm). Fixed "
-          "points have their images at the pole o'.")
+    doc.p(
+        f"Acceleration scale: {ascale.text} (the diagram fits "
+        f"{fmt(extent_cm(list(sol.A.values()) + [(0.0, 0.0)], ascale), 3)} cm). Fixed "
+        "points have their images at the pole o'."
+    )
     items = []
     for c in cons:
         t = f"Step {c.step + 1} ({c.title}): {c.text}"
-        set_out = [f"{g.name} {ascale.cm(g.magnitude):.2f} cm" for g in c.given
-                   if g.magnitude > 0]
+        set_out = [f"{g.name} {ascale.cm(g.magnitude):.2f} cm" for g in c.given if g.magnitude > 0]
         if set_out:
             t += "; lengths to set out: " + ", ".join(set_out)
         items.append(t)
     doc.items(items)
     doc.p(f"Read-offs (lengths to {DRAWING_PRECISION_CM} cm at {ascale.text}):")
-    doc.table(("vector", "on the diagram", "length (cm)", "read", "exact"),
-              _readoff_rows(sol, cons, ascale, "m/s^2"))
+    doc.table(
+        ("vector", "on the diagram", "length (cm)", "read", "exact"),
+        _readoff_rows(sol, cons, ascale, "m/s^2"),
+    )
     items = []
     orient = _orient(sol)
     for lk in sc.links:
@@ -359,15 +436,20 @@ def acceleration_section(doc, sol, ascale):
             continue
         al = sol.shown(sol.Al[lk.key], "alpha", lk.key)
         if lk.key == sc.input.crank:
-            items.append((f"alpha_{lk.key} = {fmt(abs(al))} rad/s^2 {sense_word(al)} "
-                          + ("(the input)" if sc.input.given is None
-                             else "(the crank's, found above)")).replace("  ", " "))
+            items.append(
+                (
+                    f"alpha_{lk.key} = {fmt(abs(al))} rad/s^2 {sense_word(al)} "
+                    + ("(the input)" if sc.input.given is None else "(the crank's, found above)")
+                ).replace("  ", " ")
+            )
             continue
         X, Y = orient[lk.key]
         tan = abs(al) * lk.length
-        items.append(f"alpha_{lk.key} = tangential of {key_of('a', (X, Y))} / {lk.key} = "
-                     f"{fmt(tan)} / {fmt(lk.length, 5)} = {fmt(abs(al))} rad/s^2 "
-                     f"{sense_word(al)}".rstrip())
+        items.append(
+            f"alpha_{lk.key} = tangential of {key_of('a', (X, Y))} / {lk.key} = "
+            f"{fmt(tan)} / {fmt(lk.length, 5)} = {fmt(abs(al))} rad/s^2 "
+            f"{sense_word(al)}".rstrip()
+        )
     doc.p("Angular accelerations (alpha = tangential component / length):")
     doc.items(items)
     sl = []
@@ -381,5 +463,3 @@ def acceleration_section(doc, sol, ascale):
     if sl:
         doc.p("Sliding accelerations:")
         doc.items(sl)
-
-

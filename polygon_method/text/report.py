@@ -52,23 +52,31 @@ def _given_lines(sol: Solution) -> list[str]:
     if own is not None:
         lines.append(own)
     else:
-        lines.append(f"crank {inp.crank} at {math.degrees(inp.angle):g} deg{said}, "
-                     f"{fmt_angular(inp.omega, 'rad/s')}"
-                     + ("" if "rad/s" in inp.speed_text and inp.given is None
-                        else f" ({'from ' if inp.given else ''}{stated(inp)})")
-                     + (f", {fmt_angular(inp.alpha, 'rad/s^2')}" if inp.alpha else ""))
+        lines.append(
+            f"crank {inp.crank} at {math.degrees(inp.angle):g} deg{said}, "
+            f"{fmt_angular(inp.omega, 'rad/s')}"
+            + (
+                ""
+                if "rad/s" in inp.speed_text and inp.given is None
+                else f" ({'from ' if inp.given else ''}{stated(inp)})"
+            )
+            + (f", {fmt_angular(inp.alpha, 'rad/s^2')}" if inp.alpha else "")
+        )
     two = inp.second
     if two is not None and two.block is not None:  # a collar sliding along the crank
-        lines.append(f"second input: {sol.plan.steps[1].second_words(sc)} (two degrees of "
-                     "freedom)")
+        lines.append(f"second input: {sol.plan.steps[1].second_words(sc)} (two degrees of freedom)")
     elif two is not None:
-        lines.append(f"second input: crank {two.crank} at {math.degrees(two.angle):g} deg, "
-                     f"{fmt_angular(two.omega, 'rad/s')}"
-                     + (f", {fmt_angular(two.alpha, 'rad/s^2')}" if two.alpha else "")
-                     + " (two degrees of freedom)")
+        lines.append(
+            f"second input: crank {two.crank} at {math.degrees(two.angle):g} deg, "
+            f"{fmt_angular(two.omega, 'rad/s')}"
+            + (f", {fmt_angular(two.alpha, 'rad/s^2')}" if two.alpha else "")
+            + " (two degrees of freedom)"
+        )
         if sc.loads:
-            lines.append("no input torque: with two inputs one power balance does not give "
-                         "the two driving torques")
+            lines.append(
+                "no input torque: with two inputs one power balance does not give "
+                "the two driving torques"
+            )
     return lines
 
 
@@ -76,13 +84,18 @@ def _point_lines(sol: Solution) -> list[str]:
     """The table of points: position, velocity and acceleration of each."""
     sc = sol.scene
     u = sc.length_unit
-    lines = ["", f"{'point':<6} {'position (' + sc.units + ')':<24} {'velocity (m/s)':<24} "
-                 f"{'acceleration (m/s^2)':<24}"]
+    lines = [
+        "",
+        f"{'point':<6} {'position (' + sc.units + ')':<24} {'velocity (m/s)':<24} "
+        f"{'acceleration (m/s^2)':<24}",
+    ]
     for p in sc.point_names:
         x, y = sol.P[p]
         pos = f"({_coord(x / u)}, {_coord(y / u)})"
-        lines.append(f"{p:<6} {pos:<24} {_vec(*sol.V[p], noise=sol.noise('v', p)):<24} "
-                     f"{_vec(*sol.A[p], noise=sol.noise('a', p)):<24}")
+        lines.append(
+            f"{p:<6} {pos:<24} {_vec(*sol.V[p], noise=sol.noise('v', p)):<24} "
+            f"{_vec(*sol.A[p], noise=sol.noise('a', p)):<24}"
+        )
     return lines
 
 
@@ -92,10 +105,14 @@ def _link_lines(sol: Solution) -> list[str]:
     u = sc.length_unit
     lines = ["", f"{'link':<8} {'length (' + sc.units + ')':<14} {'omega':<22} {'alpha':<22}"]
     for lk in sc.links:
-        w, al = (sol.shown(sol.W[lk.key], "omega", lk.key),
-                 sol.shown(sol.Al[lk.key], "alpha", lk.key))
-        lines.append(f"{lk.key:<8} {lk.length / u:<14.6g} {fmt_angular(w, 'rad/s'):<22} "
-                     f"{fmt_angular(al, 'rad/s^2'):<22}")
+        w, al = (
+            sol.shown(sol.W[lk.key], "omega", lk.key),
+            sol.shown(sol.Al[lk.key], "alpha", lk.key),
+        )
+        lines.append(
+            f"{lk.key:<8} {lk.length / u:<14.6g} {fmt_angular(w, 'rad/s'):<22} "
+            f"{fmt_angular(al, 'rad/s^2'):<22}"
+        )
     return lines
 
 
@@ -106,14 +123,19 @@ def _slider_lines(sol: Solution) -> list[str]:
     blocks = sc.blocks  # (not a driving wheel's centre: a point above)
     if not blocks:
         return []
-    lines = ["", f"{'slider':<8} {'guide':<16} {'sliding v (m/s)':<18} "
-                 f"{'sliding a (m/s^2)':<20} {'Coriolis (m/s^2)':<24}"]
+    lines = [
+        "",
+        f"{'slider':<8} {'guide':<16} {'sliding v (m/s)':<18} "
+        f"{'sliding a (m/s^2)':<20} {'Coriolis (m/s^2)':<24}",
+    ]
     for s in blocks:
         vs, a_s, cor = sol.S[s.key][0], sol.S[s.key][1], sol.coriolis(s.key)
         vs, a_s = sol.shown(vs, "vs", s.key), sol.shown(a_s, "as", s.key)
         guide = getattr(s, "label", None) or getattr(s, "guide", "")
-        lines.append(f"{s.key:<8} {guide:<16} {vs:<18.5g} {a_s:<20.5g} "
-                     f"{_vec(*cor, noise=sol.noise('ac', s.key)):<24}")
+        lines.append(
+            f"{s.key:<8} {guide:<16} {vs:<18.5g} {a_s:<20.5g} "
+            f"{_vec(*cor, noise=sol.noise('ac', s.key)):<24}"
+        )
     return lines
 
 
@@ -124,16 +146,21 @@ def _cylinder_lines(sol: Solution) -> list[str]:
     if not sc.cylinders:
         return []
     u = sc.length_unit
-    lines = ["", f"{'cylinder':<10} {'length (' + sc.units + ')':<14} {'extension (m/s)':<17} "
-                 f"{'its rate (m/s^2)':<18} {'omega':<20} {'alpha':<22}"]
+    lines = [
+        "",
+        f"{'cylinder':<10} {'length (' + sc.units + ')':<14} {'extension (m/s)':<17} "
+        f"{'its rate (m/s^2)':<18} {'omega':<20} {'alpha':<22}",
+    ]
     for cyl in sc.cylinders:
         n = sol.cylinder_length(cyl.key)
         vs = sol.shown(sol.S[cyl.key][0], "vs", cyl.key)
         a_s = sol.shown(sol.S[cyl.key][1], "as", cyl.key)
         w = sol.shown(sol.W[cyl.key], "omega", cyl.key)
         al = sol.shown(sol.Al[cyl.key], "alpha", cyl.key)
-        lines.append(f"{cyl.key:<10} {n / u:<14.6g} {vs:<17.5g} {a_s:<18.5g} "
-                     f"{fmt_angular(w, 'rad/s'):<20} {fmt_angular(al, 'rad/s^2'):<22}")
+        lines.append(
+            f"{cyl.key:<10} {n / u:<14.6g} {vs:<17.5g} {a_s:<18.5g} "
+            f"{fmt_angular(w, 'rad/s'):<20} {fmt_angular(al, 'rad/s^2'):<22}"
+        )
     return lines
 
 
@@ -146,12 +173,17 @@ def _rolling_lines(sol: Solution) -> list[str]:
     contacts = [(st.bodies()[0], c, _rim(st)) for st, c in contacts if c is not None]
     if not contacts:
         return []
-    lines = ["", f"{'rolling':<8} {'contact (' + sc.units + ')':<24} {'velocity (m/s)':<24} "
-                 f"{'acceleration (m/s^2)':<24}"]
+    lines = [
+        "",
+        f"{'rolling':<8} {'contact (' + sc.units + ')':<24} {'velocity (m/s)':<24} "
+        f"{'acceleration (m/s^2)':<24}",
+    ]
     for k, (I, v, a), rim in contacts:
         pos = f"({_coord(I[0] / u)}, {_coord(I[1] / u)})"
-        lines.append(f"{k:<8} {pos:<24} {_vec(*v, noise=sol.noise('v', rim)):<24} "
-                     f"{_vec(*a, noise=sol.noise('a', rim)):<24}")
+        lines.append(
+            f"{k:<8} {pos:<24} {_vec(*v, noise=sol.noise('v', rim)):<24} "
+            f"{_vec(*a, noise=sol.noise('a', rim)):<24}"
+        )
     return lines
 
 
@@ -165,12 +197,16 @@ def _rubbing_lines(sol: Solution) -> list[str]:
     lines = ["", "pin   radius (" + sc.units + ")  rubbing velocity (m/s)"]
     for name, r in tidied(sol).rubbing.items():  # two equal omegas rub at 0
         if not r.pairs:
-            lines.append(f"{name:<5} {r.radius / u:<12.6g} 0 (the pin joins only "
-                         f"{', '.join(r.bodies) or 'nothing'})")
+            lines.append(
+                f"{name:<5} {r.radius / u:<12.6g} 0 (the pin joins only "
+                f"{', '.join(r.bodies) or 'nothing'})"
+            )
             continue
         detail = "; ".join(f"{k}: {v:.4g}" for k, v in r.pairs.items())
-        lines.append(f"{name:<5} {r.radius / u:<12.6g} {r.rubbing_velocity:.4g}"
-                     + (f"   ({detail})" if len(r.pairs) > 1 else ""))
+        lines.append(
+            f"{name:<5} {r.radius / u:<12.6g} {r.rubbing_velocity:.4g}"
+            + (f"   ({detail})" if len(r.pairs) > 1 else "")
+        )
     return lines
 
 
@@ -182,22 +218,31 @@ def _torque_lines(sol: Solution) -> list[str]:
     sc = sol.scene
     driver = sol.plan.steps[0]
     t = tidied(sol).input_torque  # from the velocities without rounding noise
-    return ["", driver.effort_words(t) if driver.input_words(sc) is not None else
-            f"input torque on {sc.input.crank}: {fmt_angular(t, 'N m')} "
-            "(power balance, no friction or inertia)"]
+    return [
+        "",
+        driver.effort_words(t)
+        if driver.input_words(sc) is not None
+        else f"input torque on {sc.input.crank}: {fmt_angular(t, 'N m')} "
+        "(power balance, no friction or inertia)",
+    ]
 
 
 def _plan_lines(sol: Solution) -> list[str]:
     """The plan: each step, what it finds and its condition."""
-    lines = ["", "plan (condition: the sine of the angle between the step's two direction "
-                 "lines, unless it says otherwise):"]
+    lines = [
+        "",
+        "plan (condition: the sine of the angle between the step's two direction "
+        "lines, unless it says otherwise):",
+    ]
     for st in sol.plan.steps:
         c = sol.conditions.get(st.index, 1.0)
         col = st.condition_column()
         own = f" = {col[2]}" if col is not None and col[1] != "deg" else ""
-        lines.append(f"  {st.index + 1}. {st.title}: finds "
-                     f"{', '.join(st.finds) or 'its length and rates (no new point)'}"
-                     f"   condition {c:.3g}{own}")
+        lines.append(
+            f"  {st.index + 1}. {st.title}: finds "
+            f"{', '.join(st.finds) or 'its length and rates (no new point)'}"
+            f"   condition {c:.3g}{own}"
+        )
     return lines
 
 
@@ -207,17 +252,19 @@ def _bound_lines(sol: Solution) -> list[str]:
     bounds = shown_bounds(sol, sol.error_bounds)
     if not bounds:
         return []
-    lines = [f"estimated error above {SHOWN:g} (rounding times 1/condition along "
-             "each quantity's steps; relative to the largest of its kind):"]
+    lines = [
+        f"estimated error above {SHOWN:g} (rounding times 1/condition along "
+        "each quantity's steps; relative to the largest of its kind):"
+    ]
     for what, b in bounds[:SHOWN_LINES]:
         lines.append(f"  {what}: {b:.2g}" if b < USELESS else f"  {what}: no useful bound")
     useless = sum(1 for _, b in bounds if not b < USELESS)
     if useless:
-        lines.append(f"  ({useless} quantit{'y has' if useless == 1 else 'ies have'} "
-                     f"{NO_BOUND})")
+        lines.append(f"  ({useless} quantit{'y has' if useless == 1 else 'ies have'} {NO_BOUND})")
     if len(bounds) > SHOWN_LINES:
-        lines.append(f"  ... and {len(bounds) - SHOWN_LINES} more (every bound: "
-                     "solve --json, error_bounds)")
+        lines.append(
+            f"  ... and {len(bounds) - SHOWN_LINES} more (every bound: solve --json, error_bounds)"
+        )
     return lines
 
 
@@ -225,8 +272,15 @@ def solution_text(sol: Solution) -> str:
     """The solution as ``solve`` prints it: the given, positions, velocities, accelerations, omegas
     and alphas with cw/ccw, sliders, rubbing, the input torque, warnings and error bounds."""
     lines = _given_lines(sol)
-    for part in (_point_lines, _link_lines, _slider_lines, _cylinder_lines, _rolling_lines, _rubbing_lines,
-                 _torque_lines):
+    for part in (
+        _point_lines,
+        _link_lines,
+        _slider_lines,
+        _cylinder_lines,
+        _rolling_lines,
+        _rubbing_lines,
+        _torque_lines,
+    ):
         lines += part(sol)
     lines += forces_lines(sol)
     lines += _plan_lines(sol)

@@ -40,8 +40,16 @@ from dataclasses import replace
 from ..solver.given import working
 from ..common.numbers import fmt, sense_word
 from .forces import force_blocks
-from .polygon_steps import (acceleration_section, extent_cm, length_words, polar_words, read_off, readoff_section, turn_words,
-                            velocity_section)
+from .polygon_steps import (
+    acceleration_section,
+    extent_cm,
+    length_words,
+    polar_words,
+    read_off,
+    readoff_section,
+    turn_words,
+    velocity_section,
+)
 from ..polygons.scales import diagram_scales, force_scale
 from ..scene import FixedPath, GuideSlider, guide_words
 from ..solver.kinematics import evaluate
@@ -90,8 +98,10 @@ class _Doc:
                     out.append("\n".join(f"- {i}" for i in b[1]))
                 else:
                     esc = lambda c: c.replace("|", "\\|")  # noqa: E731
-                    lines = ["| " + " | ".join(esc(c) for c in b[1]) + " |",
-                             "|" + "|".join(" --- " for _ in b[1]) + "|"]
+                    lines = [
+                        "| " + " | ".join(esc(c) for c in b[1]) + " |",
+                        "|" + "|".join(" --- " for _ in b[1]) + "|",
+                    ]
                     lines += ["| " + " | ".join(esc(c) for c in r) + " |" for r in b[2]]
                     out.append("\n".join(lines))
             else:
@@ -100,16 +110,24 @@ class _Doc:
                 elif kind == "p":
                     out.append(textwrap.fill(b[1], _WIDTH))
                 elif kind == "list":
-                    out.append("\n".join(textwrap.fill(i, _WIDTH, initial_indent="  - ",
-                                                       subsequent_indent="    ")
-                                         for i in b[1]))
+                    out.append(
+                        "\n".join(
+                            textwrap.fill(
+                                i, _WIDTH, initial_indent="  - ", subsequent_indent="    "
+                            )
+                            for i in b[1]
+                        )
+                    )
                 else:
                     rows = [b[1]] + b[2]
                     w = [max(len(r[i]) for r in rows) for i in range(len(b[1]))]
-                    lines = ["  " + "  ".join(c.ljust(x) for c, x in zip(b[1], w)).rstrip(),
-                             "  " + "  ".join("-" * x for x in w)]
-                    lines += ["  " + "  ".join(c.ljust(x) for c, x in zip(r, w)).rstrip()
-                              for r in b[2]]
+                    lines = [
+                        "  " + "  ".join(c.ljust(x) for c, x in zip(b[1], w)).rstrip(),
+                        "  " + "  ".join("-" * x for x in w),
+                    ]
+                    lines += [
+                        "  " + "  ".join(c.ljust(x) for c, x in zip(r, w)).rstrip() for r in b[2]
+                    ]
                     out.append("\n".join(lines))
         sep = "\n\n"
         return sep.join(out) + "\n"
@@ -130,8 +148,7 @@ def _speed_working(sol) -> tuple[str, str]:
     m = re.match(r"^\s*([-+]?[0-9.]+(?:[eE][-+]?\d+)?)\s*([^\s]*)", inp.speed_text)
     number, unit = (m.group(1), m.group(2).lower()) if m else ("", "")
     if unit in ("rpm", "r.p.m.", "r.p.m", "rev/min"):
-        return (f"N = {number} rpm; {name} = 2 pi N / 60 = 2 pi x {number} / 60 = {result}",
-                result)
+        return (f"N = {number} rpm; {name} = 2 pi N / 60 = 2 pi x {number} / 60 = {result}", result)
     if unit in ("rps", "r.p.s.", "r.p.s", "rev/s"):
         return f"n = {number} rps; {name} = 2 pi n = 2 pi x {number} = {result}", result
     if unit == "deg/s":
@@ -143,8 +160,10 @@ def _config(doc, sol, space):
     sc = sol.scene
     u = sc.length_unit
     doc.h("1. Configuration diagram")
-    doc.p(f"Space scale: {space.text} (the mechanism fits "
-          f"{fmt(extent_cm(sol.P.values(), space), 3)} cm of the page).")
+    doc.p(
+        f"Space scale: {space.text} (the mechanism fits "
+        f"{fmt(extent_cm(sol.P.values(), space), 3)} cm of the page)."
+    )
     rows = []
     for lk in sc.links:
         fixed = " (fixed)" if lk.key in sol.plan.fixed_links else ""
@@ -155,30 +174,35 @@ def _config(doc, sol, space):
     facts = [f"fixed points ({sc.units}): " + ", ".join(g)]
     names = list(sc.ground)
     for i, a in enumerate(names):
-        for b in names[i + 1:]:
+        for b in names[i + 1 :]:
             if not sc.has_link(a + b if len(a) == len(b) == 1 else f"{a}-{b}"):
                 d = math.dist(sc.ground[a], sc.ground[b])
                 if d > 0:
-                    facts.append(f"{a}{b} = {fmt(d / u, 5)} {sc.units} (between the fixed "
-                                 "points)")
+                    facts.append(f"{a}{b} = {fmt(d / u, 5)} {sc.units} (between the fixed points)")
     driver = sol.plan.steps[0]
     if not driver.periodic:  # a block driven along its guide: its place is given
-        facts.append(f"driving {driver.title}, at s_{inp.tip} = {length_words(sol, inp.angle)} "
-                     f"from {driver.origin} along it (given)")
+        facts.append(
+            f"driving {driver.title}, at s_{inp.tip} = {length_words(sol, inp.angle)} "
+            f"from {driver.origin} along it (given)"
+        )
         _slider_facts(facts, sc, u, driver.finds[0])
         _drawing(doc, sol, space, facts)
         return
     ang = math.degrees(inp.angle)
     said = f"{inp.angle_words}; " if inp.angle_words else ""
-    crank_dir = f"crank {inp.crank} at {fmt(ang, 5)} deg ({said}direction {inp.pivot}" \
+    crank_dir = (
+        f"crank {inp.crank} at {fmt(ang, 5)} deg ({said}direction {inp.pivot}"
         f"{inp.tip}, counter-clockwise from the +x axis)"
+    )
     others = [n for n in sc.ground if n != inp.pivot]
     if len(others) == 1:
         ox, oy = sc.ground[inp.pivot]
         gx, gy = sc.ground[others[0]]
         ref = math.atan2(gy - oy, gx - ox)
         between = abs((inp.angle - ref + math.pi) % (2 * math.pi) - math.pi)
-        crank_dir += f"; angle {others[0]}{inp.pivot}{inp.tip} = {fmt(math.degrees(between), 4)} deg"
+        crank_dir += (
+            f"; angle {others[0]}{inp.pivot}{inp.tip} = {fmt(math.degrees(between), 4)} deg"
+        )
     facts.append(crank_dir)
     _slider_facts(facts, sc, u)
     _drawing(doc, sol, space, facts)
@@ -189,18 +213,28 @@ def _slider_facts(facts, sc, u, block=None):
         if s.point == block:  # the driving block: said above
             continue
         if s.slot:  # a peg in two slots
-            facts.append(f"peg {s.point} in the slot of {s.guide}" if isinstance(s, GuideSlider)
-                         else f"peg {s.point} in a fixed {guide_words(s.label, 'slot')} through "
-                         f"({fmt(s.through[0] / u, 5)}, {fmt(s.through[1] / u, 5)})")
-        elif isinstance(s, FixedPath) and any(getattr(t, "yoke", None) == s.point
-                                              for t in sc.sliders):
-            facts.append(f"yoke {s.point} on a {guide_words(s.label)} through "
-                         f"({fmt(s.through[0] / u, 5)}, {fmt(s.through[1] / u, 5)})")
+            facts.append(
+                f"peg {s.point} in the slot of {s.guide}"
+                if isinstance(s, GuideSlider)
+                else f"peg {s.point} in a fixed {guide_words(s.label, 'slot')} through "
+                f"({fmt(s.through[0] / u, 5)}, {fmt(s.through[1] / u, 5)})"
+            )
+        elif isinstance(s, FixedPath) and any(
+            getattr(t, "yoke", None) == s.point for t in sc.sliders
+        ):
+            facts.append(
+                f"yoke {s.point} on a {guide_words(s.label)} through "
+                f"({fmt(s.through[0] / u, 5)}, {fmt(s.through[1] / u, 5)})"
+            )
         elif isinstance(s, FixedPath):
-            facts.append(f"slider {s.point} on a {guide_words(s.label)} through "
-                         f"({fmt(s.through[0] / u, 5)}, {fmt(s.through[1] / u, 5)})")
+            facts.append(
+                f"slider {s.point} on a {guide_words(s.label)} through "
+                f"({fmt(s.through[0] / u, 5)}, {fmt(s.through[1] / u, 5)})"
+            )
         elif hasattr(s, "yoke"):  # the slot of a translating yoke
-            facts.append(f"block {s.point} slides in the {guide_words(s.label, 'slot', f'yoke {s.yoke}')}")
+            facts.append(
+                f"block {s.point} slides in the {guide_words(s.label, 'slot', f'yoke {s.yoke}')}"
+            )
         else:
             facts.append(f"block {s.point} slides along {s.guide}")
 
@@ -227,8 +261,11 @@ def _which(sol, X):
 def _position_words(sol, st, space) -> str:
     L = lambda x: f"{length_words(sol, x)} ({space.cm(x):.2f} cm)"  # noqa: E731
     inp = sol.scene.input
-    angle = (fmt(math.degrees(inp.angle), 5) if sol.plan.steps[0].periodic
-             else length_words(sol, inp.angle))  # a block driver's place along its guide
+    angle = (
+        fmt(math.degrees(inp.angle), 5)
+        if sol.plan.steps[0].periodic
+        else length_words(sol, inp.angle)
+    )  # a block driver's place along its guide
     return st.position_words(L, lambda point: _which(sol, point), angle)
 
 
@@ -244,26 +281,35 @@ def _input(doc, sol):
     if not driver.periodic:  # a block driven along its guide: its velocity and rate given
         doc.h(f"2. Input block {inp.tip}")
         vs, a_s = inp.omega, inp.alpha
-        doc.items([f"vs_{inp.tip} = {fmt(abs(vs))} m/s {driver.sense(vs)} along the guide "
-                   "(given)",
-                   f"as_{inp.tip} = {fmt(abs(a_s))} m/s^2 {driver.sense(a_s)} along the guide "
-                   "(given)" if a_s else
-                   f"as_{inp.tip} = 0 (the block moves at a steady speed)"])
+        doc.items(
+            [
+                f"vs_{inp.tip} = {fmt(abs(vs))} m/s {driver.sense(vs)} along the guide (given)",
+                f"as_{inp.tip} = {fmt(abs(a_s))} m/s^2 {driver.sense(a_s)} along the guide (given)"
+                if a_s
+                else f"as_{inp.tip} = 0 (the block moves at a steady speed)",
+            ]
+        )
         return
     second = inp.second and (inp.second.crank or f"collar {inp.second.block}")
     doc.h(f"2. Input link {inp.crank}" + (f" and {second}" if inp.second else ""))
     working, _ = _speed_working(sol)
     r = sc.link(inp.crank).length
     v = sol.speed(inp.tip)
-    items = [working,
-             f"v_{inp.tip} = omega_{inp.crank} x {inp.crank} = {fmt(abs(inp.omega))} x "
-             f"{fmt(r, 5)} = {fmt(v)} m/s, perpendicular to {inp.crank}"]
+    items = [
+        working,
+        f"v_{inp.tip} = omega_{inp.crank} x {inp.crank} = {fmt(abs(inp.omega))} x "
+        f"{fmt(r, 5)} = {fmt(v)} m/s, perpendicular to {inp.crank}",
+    ]
     if inp.alpha:
-        items.append(f"alpha_{inp.crank} = {fmt(abs(inp.alpha))} rad/s^2 "
-                     f"{sense_word(inp.alpha)} "
-                     + ("(given)" if inp.given is None
-                        else f"(found from {inp.given.rate_key or 'the given motion'}, "
-                             "above)"))
+        items.append(
+            f"alpha_{inp.crank} = {fmt(abs(inp.alpha))} rad/s^2 "
+            f"{sense_word(inp.alpha)} "
+            + (
+                "(given)"
+                if inp.given is None
+                else f"(found from {inp.given.rate_key or 'the given motion'}, above)"
+            )
+        )
     else:
         items.append(f"alpha_{inp.crank} = 0 (the crank turns at a uniform speed)")
     two = inp.second
@@ -271,11 +317,13 @@ def _input(doc, sol):
         items.append(f"the second input: {sol.plan.steps[1].second_words(sc)} (given)")
     elif two is not None:
         r2 = sc.link(two.crank).length
-        items.append(f"the second input, {two.crank}: omega_{two.crank} = "
-                     f"{fmt(abs(two.omega))} rad/s {sense_word(two.omega)} (given); v_{two.tip} "
-                     f"= {fmt(abs(two.omega))} x {fmt(r2, 5)} = {fmt(sol.speed(two.tip))} m/s, "
-                     f"perpendicular to {two.crank}; alpha_{two.crank} = "
-                     f"{fmt(abs(two.alpha))} rad/s^2 {sense_word(two.alpha)}")
+        items.append(
+            f"the second input, {two.crank}: omega_{two.crank} = "
+            f"{fmt(abs(two.omega))} rad/s {sense_word(two.omega)} (given); v_{two.tip} "
+            f"= {fmt(abs(two.omega))} x {fmt(r2, 5)} = {fmt(sol.speed(two.tip))} m/s, "
+            f"perpendicular to {two.crank}; alpha_{two.crank} = "
+            f"{fmt(abs(two.alpha))} rad/s^2 {sense_word(two.alpha)}"
+        )
     doc.items(items)
     if two is not None:
         _superposition(doc, sol)
@@ -287,32 +335,48 @@ def _superposition(doc, sol):
     sc = sol.scene
     inp, two = sc.input, sc.input.second
     plan = sol.plan
-    k = next(i for i, st in enumerate(plan.steps) if st.kind in ("second crank",
-                                                                  "second collar"))
-    held = tuple(prm if i != k else plan.steps[k].held(prm)
-                 for i, prm in enumerate(plan.dims.steps))
+    k = next(i for i, st in enumerate(plan.steps) if st.kind in ("second crank", "second collar"))
+    held = tuple(
+        prm if i != k else plan.steps[k].held(prm) for i, prm in enumerate(plan.dims.steps)
+    )
     name2 = two.crank or f"the collar {two.block}"  # its speed, or its sliding, held
-    first = evaluate(plan, omega=inp.omega, alpha=0.0, upto=1,
-                     dims=replace(plan.dims, steps=held))
+    first = evaluate(plan, omega=inp.omega, alpha=0.0, upto=1, dims=replace(plan.dims, steps=held))
     second = evaluate(plan, omega=0.0, alpha=0.0, upto=1)
-    doc.p(f"Two inputs (two degrees of freedom): the velocities are linear in the two speeds, "
-          f"so the velocity polygon is drawn for {inp.crank} alone ({name2} held), then "
-          f"for {name2} alone ({inp.crank} held), and the two are added, image by image: "
-          f"v = v' + v''.")
+    doc.p(
+        f"Two inputs (two degrees of freedom): the velocities are linear in the two speeds, "
+        f"so the velocity polygon is drawn for {inp.crank} alone ({name2} held), then "
+        f"for {name2} alone ({inp.crank} held), and the two are added, image by image: "
+        f"v = v' + v''."
+    )
     rows = []
     for p in sc.point_names:
         if p in sc.ground:
             continue
         a, b = first.V[p], second.V[p]
         rows.append((p, polar_words(a), polar_words(b), polar_words((a[0] + b[0], a[1] + b[1]))))
-    doc.table(("point", f"v' ({inp.crank} alone)", f"v'' ({name2} alone)",
-               "v = v' + v''"), rows)
-    doc.p("The angular velocities add in the same way (for gears, the tabular method: each "
-          "input alone, then the sum):")
-    rows = [(lk.key, turn_words(first.W[lk.key]), turn_words(second.W[lk.key]),
-             turn_words(first.W[lk.key] + second.W[lk.key])) for lk in sc.links]
-    doc.table(("link", f"omega' ({inp.crank} alone)", f"omega'' ({name2} alone)",
-               "omega = omega' + omega''"), rows)
+    doc.table(("point", f"v' ({inp.crank} alone)", f"v'' ({name2} alone)", "v = v' + v''"), rows)
+    doc.p(
+        "The angular velocities add in the same way (for gears, the tabular method: each "
+        "input alone, then the sum):"
+    )
+    rows = [
+        (
+            lk.key,
+            turn_words(first.W[lk.key]),
+            turn_words(second.W[lk.key]),
+            turn_words(first.W[lk.key] + second.W[lk.key]),
+        )
+        for lk in sc.links
+    ]
+    doc.table(
+        (
+            "link",
+            f"omega' ({inp.crank} alone)",
+            f"omega'' ({name2} alone)",
+            "omega = omega' + omega''",
+        ),
+        rows,
+    )
 
 
 def steps_blocks(sol: Solution) -> _Doc:

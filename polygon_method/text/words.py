@@ -26,7 +26,6 @@ from ..scene import guide_words
 __all__ = ["given"]
 
 
-
 def _slot(sc, s) -> str:
     """One slot of a peg in words: ``the slot of link O4-B``, ``a fixed horizontal slot
     through (0, 450) mm``."""
@@ -34,18 +33,24 @@ def _slot(sc, s) -> str:
         return f"the slot of link {s.guide}"
     return f"a fixed {guide_words(s.label, 'slot')} through {_at(sc, s.through)}"
 
+
 def _slider_sentence(sc, s) -> str | None:
     """A slider's sentence: a peg in two slots (said once, at its first slot), a yoke's slot, a
     block on a moving link or a slider on a fixed path; None for a peg's second slot (a
     driving wheel's centre is no block: said with the wheel)."""
     if s.slot:  # a peg in two slots: one sentence, at its first slot
         if s is sc.slots(s.point)[0]:
-            return (f"A peg {s.point} runs in two slots: "
-                    + " and ".join(_slot(sc, t) for t in sc.slots(s.point)) + ".")
+            return (
+                f"A peg {s.point} runs in two slots: "
+                + " and ".join(_slot(sc, t) for t in sc.slots(s.point))
+                + "."
+            )
         return None
     if hasattr(s, "yoke"):  # the slot of a translating yoke
-        return (f"A block at {s.point} slides in the "
-                f"{guide_words(s.label, 'slot', f'the yoke {s.yoke}')}.")
+        return (
+            f"A block at {s.point} slides in the "
+            f"{guide_words(s.label, 'slot', f'the yoke {s.yoke}')}."
+        )
     if hasattr(s, "guide"):  # a block on a moving link (a scene record, not a step)
         return f"A block at {s.point} slides along link {s.guide}."
     path = guide_words(s.label)  # "horizontal path", "path at 30 deg"
@@ -56,22 +61,37 @@ def _rolling_sentence(sc, r) -> str:
     """A wheel or gear rolling without slip (or a rack meshing with one): what rolls on what,
     and where it is at the instant shown."""
     if r.on == "rack":
-        return (f"The block {r.rim} is a rack meshing with {r.label}; its point is at "
-                f"{_at(sc, sc.slider(r.rim).through)} at the instant shown.")
+        return (
+            f"The block {r.rim} is a rack meshing with {r.label}; its point is at "
+            f"{_at(sc, sc.slider(r.rim).through)} at the instant shown."
+        )
     if r.on == "gear":
-        what = (f"The {'ring gear' if r.ring else 'gear'} {r.wheel} (centre {r.centre}, pitch "
-                f"radius {_len(sc, r.radius)}) meshes {'internally ' if r.inside else ''}with "
-                f"{r.label}" + (" inside it" if r.ring else ""))
+        what = (
+            f"The {'ring gear' if r.ring else 'gear'} {r.wheel} (centre {r.centre}, pitch "
+            f"radius {_len(sc, r.radius)}) meshes {'internally ' if r.inside else ''}with "
+            f"{r.label}" + (" inside it" if r.ring else "")
+        )
     else:
-        on = (f"on {r.label} through {_at(sc, r.through)}" if r.on == "line" else
-              f"{'inside' if r.inside else 'outside'} {r.label}")
-        what = (f"The wheel {r.wheel} (centre {r.centre}, radius {_len(sc, r.radius)}) "
-                f"rolls without slipping {on}")
+        on = (
+            f"on {r.label} through {_at(sc, r.through)}"
+            if r.on == "line"
+            else f"{'inside' if r.inside else 'outside'} {r.label}"
+        )
+        what = (
+            f"The wheel {r.wheel} (centre {r.centre}, radius {_len(sc, r.radius)}) "
+            f"rolls without slipping {on}"
+        )
     if r.base_radius:
         what += f" (radius {_len(sc, r.base_radius)})"
-    return what + (f"; {r.wheel} is at {fmt(math.degrees(r.angle) % 360)}° at the "
-                   "instant shown" if r.angle is not None else
-                   f"; {r.rim} is its point in contact at the instant shown") + "."
+    return (
+        what
+        + (
+            f"; {r.wheel} is at {fmt(math.degrees(r.angle) % 360)}° at the instant shown"
+            if r.angle is not None
+            else f"; {r.rim} is its point in contact at the instant shown"
+        )
+        + "."
+    )
 
 
 def _shape_sentences(sc) -> list:
@@ -79,23 +99,27 @@ def _shape_sentences(sc) -> list:
     which of two assembly positions, cylinders."""
     out = []
     if sc.ground:
-        out.append("Fixed points: " + ", ".join(f"{p} at {_at(sc, xy)}"
-                                                for p, xy in sc.ground.items()) + ".")
-    out.append("Links: " + ", ".join(f"{lk.key} = {_len(sc, lk.length)}" for lk in sc.links)
-               + ".")
+        out.append(
+            "Fixed points: "
+            + ", ".join(f"{p} at {_at(sc, xy)}" for p, xy in sc.ground.items())
+            + "."
+        )
+    out.append("Links: " + ", ".join(f"{lk.key} = {_len(sc, lk.length)}" for lk in sc.links) + ".")
     for cp in sc.points:
         out.append(f"Point {cp.name}: {cp.how}.")  # "on BC, 40 mm from B"
     out += [t for t in (_slider_sentence(sc, s) for s in sc.blocks) if t is not None]
     out += [_rolling_sentence(sc, r) for r in getattr(sc, "rolling", ())]
     for p, hint in sc.assembly.items():
-        where = (_SIDE.get(hint, hint) if isinstance(hint, str)
-                 else f"near {_at(sc, hint)}")
+        where = _SIDE.get(hint, hint) if isinstance(hint, str) else f"near {_at(sc, hint)}"
         out.append(f"Of its two positions, {p} is the one {where}.")
     for c in sc.cylinders:
-        stroke = (f", its stroke {_len(sc, c.stroke[0])} to {_len(sc, c.stroke[1])}"
-                  if c.stroke else "")
-        out.append(f"A hydraulic cylinder {c.key}: its barrel pivoted at {c.barrel}, its rod "
-                   f"pinned at {c.rod}{stroke}.")
+        stroke = (
+            f", its stroke {_len(sc, c.stroke[0])} to {_len(sc, c.stroke[1])}" if c.stroke else ""
+        )
+        out.append(
+            f"A hydraulic cylinder {c.key}: its barrel pivoted at {c.barrel}, its rod "
+            f"pinned at {c.rod}{stroke}."
+        )
     return out
 
 
@@ -103,19 +127,24 @@ def _load_sentence(ld) -> str | None:
     """A load's sentence: gas pressure on a piston, a force at a point or a torque on a link
     (None for a load of none of these)."""
     if ld.gas is not None and ld.force is None:  # towards the crank, not yet compiled
-        return (f"The gas pressure on the piston {ld.target} is {ld.gas[2]}, pushing "
-                "it towards the crank.")
+        return (
+            f"The gas pressure on the piston {ld.target} is {ld.gas[2]}, pushing "
+            "it towards the crank."
+        )
     if ld.gas is not None:
         fx, fy = ld.force
-        return (f"The gas pressure on the piston {ld.target} is {ld.gas[2]}, pushing "
-                f"it at {fmt(math.degrees(math.atan2(fy, fx)) % 360)}°.")
+        return (
+            f"The gas pressure on the piston {ld.target} is {ld.gas[2]}, pushing "
+            f"it at {fmt(math.degrees(math.atan2(fy, fx)) % 360)}°."
+        )
     if ld.force is not None:
         fx, fy = ld.force
-        return (f"A force of {fmt(math.hypot(fx, fy))} N acts at {ld.target} at "
-                f"{fmt(math.degrees(math.atan2(fy, fx)) % 360)}°.")
+        return (
+            f"A force of {fmt(math.hypot(fx, fy))} N acts at {ld.target} at "
+            f"{fmt(math.degrees(math.atan2(fy, fx)) % 360)}°."
+        )
     if ld.torque is not None:
-        return (f"A torque of {fmt(abs(ld.torque))} N m {sense(ld.torque)} acts on "
-                f"link {ld.target}.")
+        return f"A torque of {fmt(abs(ld.torque))} N m {sense(ld.torque)} acts on link {ld.target}."
     return None
 
 
@@ -129,13 +158,16 @@ def _force_sentences(sc) -> list:
     out += [t for t in (_load_sentence(ld) for ld in sc.loads) if t is not None]
     for m in sc.masses:
         what = f"The block {m.body}" if m.block else f"Link {m.body}"
-        out.append(f"{what} has a mass of {_given(m.mass)} kg"
-                   + ("." if m.block else f", its {m.how}."))
+        out.append(
+            f"{what} has a mass of {_given(m.mass)} kg" + ("." if m.block else f", its {m.how}.")
+        )
     if sc.gravity is not None:
         out.append(f"Gravity acts: {sc.gravity.text}.")
     if sc.indicator is not None:
-        out.append(f"The gas pressure on the piston {sc.indicator.piston} over the cycle is "
-                   f"given by its {sc.indicator.words}.")
+        out.append(
+            f"The gas pressure on the piston {sc.indicator.piston} over the cycle is "
+            f"given by its {sc.indicator.words}."
+        )
     if sc.flywheel is not None:
         out.append(f"A flywheel is to keep the speed steady: {sc.flywheel.words}.")
     return out
@@ -149,8 +181,11 @@ def given(sc) -> list:
     if own is not None:  # a driver of its own words (a collar driven along its rod)
         out.append(own)
     elif not driver.periodic:  # a block driven along its guide, or a wheel rolling: its place
-        out.append(_wheel_words(sc, driver.finds[0]) if sc.input.wheel is not None
-                   else _block_words(sc, driver.finds[0]))
+        out.append(
+            _wheel_words(sc, driver.finds[0])
+            if sc.input.wheel is not None
+            else _block_words(sc, driver.finds[0])
+        )
     else:
         _crank_words(sc, out)
     return out + _force_sentences(sc)
@@ -159,31 +194,40 @@ def given(sc) -> list:
 def _crank_words(sc, out):
     """The driving crank (and a second one) in words, appended to ``out``."""
     inp = sc.input
-    words = (f"The crank {inp.crank} turns about {inp.pivot}; at the instant shown it makes "
-             f"{fmt(math.degrees(inp.angle) % 360)}° with the x axis (counter-clockwise"
-             + (f"; {inp.angle_words}" if inp.angle_words else "") + ")")
+    words = (
+        f"The crank {inp.crank} turns about {inp.pivot}; at the instant shown it makes "
+        f"{fmt(math.degrees(inp.angle) % 360)}° with the x axis (counter-clockwise"
+        + (f"; {inp.angle_words}" if inp.angle_words else "")
+        + ")"
+    )
     g = inp.given
     if g is not None:
-        words += (f". At this instant "
-                  f"{_given_words(g, sc.cylinder(g.names[0]) is not None)}")
+        words += f". At this instant {_given_words(g, sc.cylinder(g.names[0]) is not None)}"
     else:
         words += f", turning at {inp.speed_text}"
     if g is None and "rad/s" not in inp.speed_text:
         words += f" ({fmt(abs(inp.omega))} rad/s {sense(inp.omega)})"
     if inp.alpha and g is None:
-        words += (f", with an angular acceleration of {fmt(abs(inp.alpha))} rad/s² "
-                  f"{sense(inp.alpha)}")
+        words += (
+            f", with an angular acceleration of {fmt(abs(inp.alpha))} rad/s² {sense(inp.alpha)}"
+        )
     out.append(words + ".")
     two = inp.second
     if two is not None and two.block is not None:  # a collar sliding along the crank
         step = compile_plan(sc).steps[1]
         out.append(f"At the same time the {step.second_words(sc)}.")
     elif two is not None:
-        out.append(f"A second crank {two.crank} is driven too, about {two.pivot}: at the "
-                   f"instant shown it makes {fmt(math.degrees(two.angle) % 360)}° with the x "
-                   f"axis, turning at {two.speed_text}"
-                   + (f", with an angular acceleration of {fmt(abs(two.alpha))} rad/s² "
-                      f"{sense(two.alpha)}" if two.alpha else "") + ".")
+        out.append(
+            f"A second crank {two.crank} is driven too, about {two.pivot}: at the "
+            f"instant shown it makes {fmt(math.degrees(two.angle) % 360)}° with the x "
+            f"axis, turning at {two.speed_text}"
+            + (
+                f", with an angular acceleration of {fmt(abs(two.alpha))} rad/s² {sense(two.alpha)}"
+                if two.alpha
+                else ""
+            )
+            + "."
+        )
 
 
 def _wheel_words(sc, centre) -> str:
@@ -192,12 +236,13 @@ def _wheel_words(sc, centre) -> str:
     pr = next(p for p in sc.rolling if p.wheel == inp.wheel)
     (ux, uy), (mx, my) = sc.slider(centre).u, pr.m
     alpha = inp.alpha * (-my * ux + mx * uy) / pr.radius  # a_C = alpha r along t = perp(m)
-    acc = (f" and {fmt(abs(alpha))} rad/s² {'ccw' if alpha > 0 else 'cw'}" if alpha else
-           ", steadily")
-    return (f"The wheel {inp.wheel} (radius {_len(sc, pr.radius)}) drives the mechanism, "
-            f"rolling without slip on {pr.label} at {inp.speed_text}{acc}; at the instant shown "
-            f"its centre {centre} is {_len(sc, abs(inp.angle))} along the line from the "
-            "foot of its given point. Its contact point is its instantaneous centre.")
+    acc = f" and {fmt(abs(alpha))} rad/s² {'ccw' if alpha > 0 else 'cw'}" if alpha else ", steadily"
+    return (
+        f"The wheel {inp.wheel} (radius {_len(sc, pr.radius)}) drives the mechanism, "
+        f"rolling without slip on {pr.label} at {inp.speed_text}{acc}; at the instant shown "
+        f"its centre {centre} is {_len(sc, abs(inp.angle))} along the line from the "
+        "foot of its given point. Its contact point is its instantaneous centre."
+    )
 
 
 def _block_words(sc, block) -> str:
@@ -206,24 +251,33 @@ def _block_words(sc, block) -> str:
     path = sc.slider(block)
     named = [p for p, xy in sc.ground.items() if xy == path.through]
     origin = named[0] if named else _at(sc, path.through)
-    guide = (f"the {path.label} guide" if path.label in ("horizontal", "vertical")
-             else f"the guide at {path.label}")
+    guide = (
+        f"the {path.label} guide"
+        if path.label in ("horizontal", "vertical")
+        else f"the guide at {path.label}"
+    )
     vs, a_s = inp.omega, inp.alpha
 
     def way(v):
         ux, uy = path.u if v >= 0 else (-path.u[0], -path.u[1])
-        for (wx, wy), word in (((1, 0), "to the right"), ((-1, 0), "to the left"),
-                               ((0, 1), "upwards"), ((0, -1), "downwards")):
+        for (wx, wy), word in (
+            ((1, 0), "to the right"),
+            ((-1, 0), "to the left"),
+            ((0, 1), "upwards"),
+            ((0, -1), "downwards"),
+        ):
             if abs(ux - wx) < ROUNDING and abs(uy - wy) < ROUNDING:
                 return word
         return f"at {fmt(math.degrees(math.atan2(uy, ux)) % 360)}°"
 
-    return (f"The block {block} drives the mechanism, sliding on {guide} through "
-            f"{origin}; at the instant shown it is {_len(sc, abs(inp.angle))} from {origin}"
-            + (f" ({'+' if inp.angle >= 0 else '-'} along the guide)" if inp.angle else "")
-            + f", moving at {fmt(abs(vs))} m/s {way(vs)}"
-            + (f", with an acceleration of {fmt(abs(a_s))} m/s² {way(a_s)}" if a_s else
-               ", steadily") + ".")
+    return (
+        f"The block {block} drives the mechanism, sliding on {guide} through "
+        f"{origin}; at the instant shown it is {_len(sc, abs(inp.angle))} from {origin}"
+        + (f" ({'+' if inp.angle >= 0 else '-'} along the guide)" if inp.angle else "")
+        + f", moving at {fmt(abs(vs))} m/s {way(vs)}"
+        + (f", with an acceleration of {fmt(abs(a_s))} m/s² {way(a_s)}" if a_s else ", steadily")
+        + "."
+    )
 
 
 _SIDE = {"left": "to the left", "right": "to the right"}
@@ -247,11 +301,18 @@ def _given(x: float) -> str:
 def _given_words(g, cylinder=False) -> str:
     """The given motion as a book states it: ``the block B slides at 5 m/s left``."""
     name = "-".join(g.names) if any(len(n) > 1 for n in g.names) else "".join(g.names)
-    what = {"omega": f"link {name} turns at {g.text}",
-            "vs": (f"the cylinder {g.names[0]} extends at {g.text}" if cylinder
-                   else f"the block {name} slides along its guide at {g.text}"),
-            "v": f"{name} moves at {g.text}"}[g.kind]
+    what = {
+        "omega": f"link {name} turns at {g.text}",
+        "vs": (
+            f"the cylinder {g.names[0]} extends at {g.text}"
+            if cylinder
+            else f"the block {name} slides along its guide at {g.text}"
+        ),
+        "v": f"{name} moves at {g.text}",
+    }[g.kind]
     if g.rate is not None:
-        what += f", its {'angular acceleration' if g.kind == 'omega' else 'acceleration'} " \
-                f"being {g.rate_text}"
+        what += (
+            f", its {'angular acceleration' if g.kind == 'omega' else 'acceleration'} "
+            f"being {g.rate_text}"
+        )
     return what

@@ -38,13 +38,34 @@ from ..linkage import four_bar_of, grashof, slider_crank_of, slotted_of
 from ..solver.compiler import compile_plan
 from ..scene import Scene, parse_scene, scene_from_table, scene_table
 from ..motion.solution import solve, tidied
-from .papers import (answer, answer_key_csv, answer_key_markdown, sheet_markdown, sheet_pdf,
-                     summary_text)
+from .papers import (
+    answer,
+    answer_key_csv,
+    answer_key_markdown,
+    sheet_markdown,
+    sheet_pdf,
+    summary_text,
+)
 
-__all__ = ["generate", "VariantSet", "Variant", "linkage_class", "dump_toml", "questions",
-           "screen", "answer", "ENUMERATE", "MAX_TRIED", "MAX_VARIANTS", "MAX_SEED",
-           "answer_key_csv", "answer_key_markdown", "sheet_markdown", "sheet_pdf",
-           "summary_text"]
+__all__ = [
+    "generate",
+    "VariantSet",
+    "Variant",
+    "linkage_class",
+    "dump_toml",
+    "questions",
+    "screen",
+    "answer",
+    "ENUMERATE",
+    "MAX_TRIED",
+    "MAX_VARIANTS",
+    "MAX_SEED",
+    "answer_key_csv",
+    "answer_key_markdown",
+    "sheet_markdown",
+    "sheet_pdf",
+    "summary_text",
+]
 
 #: a space of at most this many combinations is visited whole
 ENUMERATE = 50_000
@@ -82,8 +103,12 @@ def linkage_class(scene: Scene, shape=None) -> str:
     if kind == "four-bar":
         crank, coupler, output, o2, o4 = names
         (ax, ay), (dx, dy) = scene.ground[o2], scene.ground[o4]
-        g = grashof(scene.link(crank).length, scene.link(coupler).length,
-                    scene.link(output).length, math.hypot(dx - ax, dy - ay))
+        g = grashof(
+            scene.link(crank).length,
+            scene.link(coupler).length,
+            scene.link(output).length,
+            math.hypot(dx - ax, dy - ay),
+        )
         return f"four-bar: {g.kind}"
     if kind == "slider crank":
         o, crank, rod, b = names
@@ -92,15 +117,18 @@ def linkage_class(scene: Scene, shape=None) -> str:
         (qx, qy), (ux, uy) = path.through, path.u
         e = abs((ox - qx) * uy - (oy - qy) * ux)
         r, ell = scene.link(crank).length, scene.link(rod).length
-        return "slider crank: " + ("the crank turns fully" if ell >= (r + e) * (1 - ROUNDING)
-                                   else "the crank rocks")
+        return "slider crank: " + (
+            "the crank turns fully" if ell >= (r + e) * (1 - ROUNDING) else "the crank rocks"
+        )
     if kind == "slotted":
         crank, pivot, known = names
         (ox, oy), (kx, ky) = scene.ground[pivot], scene.ground[known]
         whit = scene.link(crank).length > math.hypot(kx - ox, ky - oy)
-        return "slotted lever: " + ("Whitworth (the lever turns fully)" if whit
-                                    else "oscillating lever")
+        return "slotted lever: " + (
+            "Whitworth (the lever turns fully)" if whit else "oscillating lever"
+        )
     from ..solver.tracking import Sweeper
+
     try:
         sw = Sweeper(scene)
         turns = sw.domain.full_turn
@@ -134,6 +162,7 @@ class Variant:
 class VariantSet:
     """The variants made of a base scene: each variant, how many were asked for, the seed, the
     combinations the ranges allow and how many were screened."""
+
     base: Scene
     variants: tuple
     requested: int
@@ -150,17 +179,26 @@ class VariantSet:
         n = len(self.variants)
         if n >= self.requested:
             return None
-        why = ", ".join(f"{k}: {v}" for k, v in sorted(self.rejected.items(),
-                                                          key=lambda kv: -kv[1]))
-        where = (f"only {n} of the {self.space} combinations of [variants] make a good variant"
-                 if self.exhaustive else
-                 f"only {n} good variants found in {self.tried} of the {self.space} "
-                 "combinations of [variants]")
-        return (f"{where} (assembled on the stated branch, every step's condition at least "
-                f"{self.base.variation.min_text}, the class kept: {self.linkage}), "
-                f"not {self.requested}" + (f"; turned down: {why}" if why else "")
-                + (f": widen the ranges or ask for --count {n}" if n else
-                   ": widen the ranges or lower min_condition"))
+        why = ", ".join(
+            f"{k}: {v}" for k, v in sorted(self.rejected.items(), key=lambda kv: -kv[1])
+        )
+        where = (
+            f"only {n} of the {self.space} combinations of [variants] make a good variant"
+            if self.exhaustive
+            else f"only {n} good variants found in {self.tried} of the {self.space} "
+            "combinations of [variants]"
+        )
+        return (
+            f"{where} (assembled on the stated branch, every step's condition at least "
+            f"{self.base.variation.min_text}, the class kept: {self.linkage}), "
+            f"not {self.requested}"
+            + (f"; turned down: {why}" if why else "")
+            + (
+                f": widen the ranges or ask for --count {n}"
+                if n
+                else ": widen the ranges or lower min_condition"
+            )
+        )
 
 
 # --------------------------------------------------------------------------- TOML
@@ -198,8 +236,7 @@ def _value(v) -> str:
 def dump_toml(raw: dict, header: str = "") -> str:
     """A scene's table as TOML text: top-level keys first, then one ``[table]`` each."""
     # a comment holds no control character (a title may: it is shown escaped here)
-    out = [f"# {printable(line)}" if line else "#"
-           for line in header.split("\n")]
+    out = [f"# {printable(line)}" if line else "#" for line in header.split("\n")]
     for k, v in raw.items():
         if not isinstance(v, dict):
             out.append(f"{_key(k)} = {_value(v)}")
@@ -221,9 +258,24 @@ def _put(raw, path, value):
 # --------------------------------------------------------------------------- questions
 
 
-_UNITS = {"v": "m/s", "a": "m/s^2", "omega": "rad/s", "alpha": "rad/s^2", "vs": "m/s",
-          "as": "m/s^2", "ac": "m/s^2", "rub": "m/s", "torque": "N m",
-          "vI": "m/s", "aI": "m/s^2", "F": "N", "N": "N", "Fc": "N", "vu": "m/s", "au": "m/s^2"}
+_UNITS = {
+    "v": "m/s",
+    "a": "m/s^2",
+    "omega": "rad/s",
+    "alpha": "rad/s^2",
+    "vs": "m/s",
+    "as": "m/s^2",
+    "ac": "m/s^2",
+    "rub": "m/s",
+    "torque": "N m",
+    "vI": "m/s",
+    "aI": "m/s^2",
+    "F": "N",
+    "N": "N",
+    "Fc": "N",
+    "vu": "m/s",
+    "au": "m/s^2",
+}
 
 
 def questions(scene: Scene) -> tuple:
@@ -233,8 +285,16 @@ def questions(scene: Scene) -> tuple:
     Each as (key, kind, names, unit, signed)."""
     asked = [a for a in scene.answers if a.kind != "centre"]
     if asked:
-        return tuple((a.key, a.kind, tuple(a.names), _UNITS[a.kind],
-                      a.kind in ("omega", "alpha", "vs", "as", "torque")) for a in asked)
+        return tuple(
+            (
+                a.key,
+                a.kind,
+                tuple(a.names),
+                _UNITS[a.kind],
+                a.kind in ("omega", "alpha", "vs", "as", "torque"),
+            )
+            for a in asked
+        )
     out = []
     ground = set(scene.ground)
     for p in scene.point_names:
@@ -244,6 +304,7 @@ def questions(scene: Scene) -> tuple:
         if p not in ground:
             out.append((f"a_{p}", "a", (p,), "m/s^2", False))
     from ..scene import split_name
+
     # the crank's omega is given, unless the scene gives the motion on another quantity
     crank = scene.input.crank if scene.input.given is None else None
     for lk in scene.links:
@@ -280,9 +341,15 @@ def _stack_dims(dl):
     ground = {p: _stack([d.ground[p] for d in dl]) for p in d0.ground}
     steps = tuple(_stack([d.steps[i] for d in dl]) for i in range(len(d0.steps)))
     radii = {p: _stack([d.radii[p] for d in dl]) for p in d0.radii}
-    return replace(d0, ground=ground, steps=steps, theta=_stack([d.theta for d in dl]),
-                   omega=_stack([d.omega for d in dl]), alpha=_stack([d.alpha for d in dl]),
-                   radii=radii)
+    return replace(
+        d0,
+        ground=ground,
+        steps=steps,
+        theta=_stack([d.theta for d in dl]),
+        omega=_stack([d.omega for d in dl]),
+        alpha=_stack([d.alpha for d in dl]),
+        radii=radii,
+    )
 
 
 def screen(plan, scenes, min_condition):
@@ -351,13 +418,17 @@ def _problem(plan, sc):
     turn = 2 * math.pi
     theta = round(float(d.theta) % turn, 12) % turn
     loads = [(ld.target, ld.force, ld.torque) for ld in sc.loads]
-    return (_numbers((d.ground, d.steps, d.radii, d.omega, d.alpha)) + [theta]
-            + _numbers([(f, t) for _, f, t in loads]))
+    return (
+        _numbers((d.ground, d.steps, d.radii, d.omega, d.alpha))
+        + [theta]
+        + _numbers([(f, t) for _, f, t in loads])
+    )
 
 
 def _same(a, b) -> bool:
-    return len(a) == len(b) and all(abs(x - y) <= ROUNDING * max(1.0, abs(x), abs(y))
-                                    for x, y in zip(a, b))
+    return len(a) == len(b) and all(
+        abs(x - y) <= ROUNDING * max(1.0, abs(x), abs(y)) for x, y in zip(a, b)
+    )
 
 
 def _id_width(count):
@@ -368,21 +439,35 @@ def _asked_for(scene: Scene, count: int, seed: int):
     """The scene's ``[variants]`` table, once the scene, the count and the seed are checked (a
     Scene with such a table; whole numbers in range)."""
     if not isinstance(scene, Scene):
-        raise SceneError("a Scene is needed (load_scene(path) or parse_scene(text)), not "
-                         f"{type(scene).__name__}")
+        raise SceneError(
+            f"a Scene is needed (load_scene(path) or parse_scene(text)), not {type(scene).__name__}"
+        )
     var = scene.variation
     if var is None:
-        raise SceneError("the scene has no [variants] table: add one saying what may vary, "
-                         "e.g. [variants] BC = { from = 60, to = 75, step = 1 } (see "
-                         "docs/variants.md)", file=scene.file, key="[variants]")
-    for name, v, low, high in (("--count", count, 1, MAX_VARIANTS),
-                               ("--seed", seed, 0, MAX_SEED)):
-        if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < low or \
-                (high is not None and v > high):
-            raise SceneError(f"{name} {v!r}: a whole number from {low}"
-                             + (f" to {high}" if high else "")
-                             + (" (each variant file records it, and TOML's integers are "
-                                "64-bit)" if name == "--seed" else ""), key=name)
+        raise SceneError(
+            "the scene has no [variants] table: add one saying what may vary, "
+            "e.g. [variants] BC = { from = 60, to = 75, step = 1 } (see "
+            "docs/variants.md)",
+            file=scene.file,
+            key="[variants]",
+        )
+    for name, v, low, high in (("--count", count, 1, MAX_VARIANTS), ("--seed", seed, 0, MAX_SEED)):
+        if (
+            isinstance(v, bool)
+            or not isinstance(v, (int, np.integer))
+            or v < low
+            or (high is not None and v > high)
+        ):
+            raise SceneError(
+                f"{name} {v!r}: a whole number from {low}"
+                + (f" to {high}" if high else "")
+                + (
+                    " (each variant file records it, and TOML's integers are 64-bit)"
+                    if name == "--seed"
+                    else ""
+                ),
+                key=name,
+            )
     return var
 
 
@@ -469,12 +554,14 @@ def generate(scene: Scene, count: int, seed: int, *, batch: int | None = None) -
                 continue
             if len(found) >= count:
                 break
-            v = _confirm(b, len(found) + 1, width, var, plan, title, seed, shape, cls,
-                         branches, rejected)
+            v = _confirm(
+                b, len(found) + 1, width, var, plan, title, seed, shape, cls, branches, rejected
+            )
             if v is not None:
                 found.append(v)
-    return VariantSet(scene, tuple(found), count, seed, total, tried, tried >= total,
-                      dict(rejected), cls, qs)
+    return VariantSet(
+        scene, tuple(found), count, seed, total, tried, tried >= total, dict(rejected), cls, qs
+    )
 
 
 def _hints_moved(r, plan, sc):
@@ -489,9 +576,14 @@ def _hints_moved(r, plan, sc):
     u = sc.length_unit
     size = max([lk.length for lk in sc.links] + [0.0]) / u
     digits = max(1, -math.floor(math.log10(size * 1e-4))) if size > 0 else 1
-    r["assembly"] = {p: ([_round(m.P[p][0] / u, digits), _round(m.P[p][1] / u, digits)]
-                         if isinstance(h, list) and p in m.P else h)
-                     for p, h in hints.items()}
+    r["assembly"] = {
+        p: (
+            [_round(m.P[p][0] / u, digits), _round(m.P[p][1] / u, digits)]
+            if isinstance(h, list) and p in m.P
+            else h
+        )
+        for p, h in hints.items()
+    }
     return r
 
 
@@ -516,8 +608,9 @@ def _confirm(b, k, width, var, plan, title, seed, shape, cls, branches, rejected
     values = {v.key: v.values[i] for v, i in zip(var.varied, t)}
     shown = {v.key: v.shown[i] for v, i in zip(var.varied, t)}
     r["variant"] = {"id": vid, "of": title, "seed": int(seed)}
-    header = (f"Variant {vid} of \"{title}\" (seed {seed}): " +
-              ", ".join(f"{v.label} {shown[v.key]}" for v in var.varied))
+    header = f'Variant {vid} of "{title}" (seed {seed}): ' + ", ".join(
+        f"{v.label} {shown[v.key]}" for v in var.varied
+    )
     text = dump_toml(r, header)
     try:
         sc = parse_scene(text, file=name)
@@ -538,4 +631,3 @@ def _confirm(b, k, width, var, plan, title, seed, shape, cls, branches, rejected
         return None
     # the key's values without rounding noise (a rod that does not turn: 0, not 3.7e-15)
     return Variant(vid, name, values, shown, text, sc, tidied(sol), least, got)
-

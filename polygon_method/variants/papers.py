@@ -34,8 +34,11 @@ def answer_key_csv(vs) -> str:
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(["variant", "file"] + keys + [f"{q[0]} ({q[3]})" for q in vs.questions])
     for v in vs.variants:
-        w.writerow([v.id, v.name] + [v.shown[k] for k in keys]
-                   + [repr(float(answer(v.solution, q))) for q in vs.questions])
+        w.writerow(
+            [v.id, v.name]
+            + [v.shown[k] for k in keys]
+            + [repr(float(answer(v.solution, q))) for q in vs.questions]
+        )
     return buf.getvalue()
 
 
@@ -48,44 +51,62 @@ def answer_key_markdown(vs) -> str:
     answers."""
     base = vs.base
     keys = [v.key for v in base.variation.varied]
-    out = [f"# Answer key: {base.title or base.file}", "",
-           f"{len(vs.variants)} variants, seed {vs.seed}; each assembled as the base scene, "
-           f"every construction step's condition at least {base.variation.min_text}, "
-           f"the linkage's class kept ({vs.linkage}). Values to four significant "
-           "figures (the CSV has ten); grade with `polygon-method check BASE ANSWERS "
-           "--variants DIR`.", ""]
+    out = [
+        f"# Answer key: {base.title or base.file}",
+        "",
+        f"{len(vs.variants)} variants, seed {vs.seed}; each assembled as the base scene, "
+        f"every construction step's condition at least {base.variation.min_text}, "
+        f"the linkage's class kept ({vs.linkage}). Values to four significant "
+        "figures (the CSV has ten); grade with `polygon-method check BASE ANSWERS "
+        "--variants DIR`.",
+        "",
+    ]
     head = ["variant"] + keys + [q[0] for q in vs.questions]
     out.append("| " + " | ".join(_cell(h) for h in head) + " |")
     out.append("|" + "---|" * len(head))
     for v in vs.variants:
-        cells = [v.id] + [v.shown[k] for k in keys] + \
-            [_signed(answer(v.solution, q), q[3], q[4]) for q in vs.questions]
+        cells = (
+            [v.id]
+            + [v.shown[k] for k in keys]
+            + [_signed(answer(v.solution, q), q[3], q[4]) for q in vs.questions]
+        )
         out.append("| " + " | ".join(_cell(c) for c in cells) + " |")
     return "\n".join(out) + "\n"
 
 
-_QUESTION_WORDS = {"v": "the velocity of {0}", "a": "the acceleration of {0}",
-                   "omega": "the angular velocity of link {0}",
-                   "alpha": "the angular acceleration of link {0}",
-                   "vs": "the sliding velocity at {0}", "as": "the sliding acceleration at {0}",
-                   "ac": "the Coriolis component at {0}", "rub": "the rubbing velocity at pin {0}",
-                   "torque": "the input torque on the crank",
-                   "vI": "the velocity of the point of wheel {0} in contact",
-                   "aI": "the acceleration of the point of wheel {0} in contact",
-                   "F": "the force at pin {0}", "N": "the guide's normal force on block {0}",
-                   "vu": "the velocity of the point of the guide under the block {0}",
-                   "au": "the acceleration of the point of the guide under the block {0}"}
+_QUESTION_WORDS = {
+    "v": "the velocity of {0}",
+    "a": "the acceleration of {0}",
+    "omega": "the angular velocity of link {0}",
+    "alpha": "the angular acceleration of link {0}",
+    "vs": "the sliding velocity at {0}",
+    "as": "the sliding acceleration at {0}",
+    "ac": "the Coriolis component at {0}",
+    "rub": "the rubbing velocity at pin {0}",
+    "torque": "the input torque on the crank",
+    "vI": "the velocity of the point of wheel {0} in contact",
+    "aI": "the acceleration of the point of wheel {0} in contact",
+    "F": "the force at pin {0}",
+    "N": "the guide's normal force on block {0}",
+    "vu": "the velocity of the point of the guide under the block {0}",
+    "au": "the acceleration of the point of the guide under the block {0}",
+}
 
 
 def _question(q) -> str:
     key, kind, names = q[0], q[1], q[2]
     if kind in ("v", "a") and len(names) == 2:
-        what = ("the velocity of {0} relative to {1}" if kind == "v"
-                else "the acceleration of {0} relative to {1}").format(*names)
+        what = (
+            "the velocity of {0} relative to {1}"
+            if kind == "v"
+            else "the acceleration of {0} relative to {1}"
+        ).format(*names)
     else:
-        what = _QUESTION_WORDS[kind].format("".join(names) if kind in ("omega", "alpha", "vI", "aI")
-                                            and all(len(n) == 1 for n in names)
-                                            else "-".join(names))
+        what = _QUESTION_WORDS[kind].format(
+            "".join(names)
+            if kind in ("omega", "alpha", "vI", "aI") and all(len(n) == 1 for n in names)
+            else "-".join(names)
+        )
     return f"{what} (`{key}`)"
 
 
@@ -96,8 +117,11 @@ def sheet_sections(vs) -> list:
         lines = ["Given:"] + [f"- {x}" for x in given(v.scene)]
         lines += ["", "Find, by the velocity and acceleration polygons:"]
         lines += [f"- {_question(q)}" for q in vs.questions]
-        lines += ["", f"Write your answers in a file with `variant = \"{v.id}\"` and an "
-                  "`[answers]` table (e.g. `v_C = \"0.4 m/s\"`)."]
+        lines += [
+            "",
+            f'Write your answers in a file with `variant = "{v.id}"` and an '
+            '`[answers]` table (e.g. `v_C = "0.4 m/s"`).',
+        ]
         out.append((f"Variant {v.id}", lines))
     return out
 
@@ -124,8 +148,9 @@ def sheet_pages(vs, figure=None):
 
     def page(head):
         fig = Figure(figsize=(PAGE_CM[0] / 2.54, PAGE_CM[1] / 2.54))
-        fig.text(0.08, 0.95, f"{base.title or base.file}".replace("$", r"\$"), fontsize=11,
-                 va="top")
+        fig.text(
+            0.08, 0.95, f"{base.title or base.file}".replace("$", r"\$"), fontsize=11, va="top"
+        )
         fig.text(0.08, 0.92, head, fontsize=15, weight="bold", va="top")
         return fig
 
@@ -178,8 +203,7 @@ def _put_figure(fig, top, sol, figure) -> bool:
     left = (PAGE_CM[0] - w) / 2
     bottom = top * PAGE_CM[1] - 1.0 - h
     ax.set_position((left / PAGE_CM[0], bottom / PAGE_CM[1], w / PAGE_CM[0], h / PAGE_CM[1]))
-    fig.text(0.08, top, f"Figure: the configuration, drawn at {scale.text}", fontsize=10,
-             va="top")
+    fig.text(0.08, top, f"Figure: the configuration, drawn at {scale.text}", fontsize=10, va="top")
     return True
 
 
@@ -190,8 +214,9 @@ def sheet_pdf(vs, figure=None) -> bytes:
 
     buf = io.BytesIO()
     base = vs.base
-    with PdfPages(buf, metadata={"Title": f"{base.title or base.file}: problem sheet",
-                                 "CreationDate": None}) as pdf:
+    with PdfPages(
+        buf, metadata={"Title": f"{base.title or base.file}: problem sheet", "CreationDate": None}
+    ) as pdf:
         for fig in sheet_pages(vs, figure):
             pdf.savefig(fig)
     return buf.getvalue()
@@ -200,10 +225,15 @@ def sheet_pdf(vs, figure=None) -> bytes:
 def summary_text(vs) -> str:
     """One line per variant and what varied, as ``variants`` prints it."""
     base = vs.base
-    lines = [f"{base.title or base.file}: {len(vs.variants)} variants (seed {vs.seed}) of "
-             f"{vs.space} combinations, {vs.tried} screened; class kept: {vs.linkage}; "
-             f"every step's condition at least {base.variation.min_text}"]
+    lines = [
+        f"{base.title or base.file}: {len(vs.variants)} variants (seed {vs.seed}) of "
+        f"{vs.space} combinations, {vs.tried} screened; class kept: {vs.linkage}; "
+        f"every step's condition at least {base.variation.min_text}"
+    ]
     for v in vs.variants:
-        lines.append(f"  {v.name}: " + ", ".join(f"{k} {v.shown[k]}" for k in v.shown)
-                     + f"; least condition {v.least_condition:.3f}")
+        lines.append(
+            f"  {v.name}: "
+            + ", ".join(f"{k} {v.shown[k]}" for k in v.shown)
+            + f"; least condition {v.least_condition:.3f}"
+        )
     return "\n".join(lines)

@@ -16,12 +16,35 @@ from ...common.numbers import in_units
 from ..base import Step, sub, unit
 from ..rounding import two_lines
 from . import goodman
-from .loop import (Memo, acceleration, assemblies, condition, det3, flat, matrix,
-                   newton_step, scale, sign, solve3, solve_array, solve_scalar, velocity,
-                   vertices)
+from .loop import (
+    Memo,
+    acceleration,
+    assemblies,
+    condition,
+    det3,
+    flat,
+    matrix,
+    newton_step,
+    scale,
+    sign,
+    solve3,
+    solve_array,
+    solve_scalar,
+    velocity,
+    vertices,
+)
 
-__all__ = ["Triad", "recognise", "solve3", "vertices", "velocity", "acceleration",
-           "condition", "newton_step", "assemblies"]
+__all__ = [
+    "Triad",
+    "recognise",
+    "solve3",
+    "vertices",
+    "velocity",
+    "acceleration",
+    "condition",
+    "newton_step",
+    "assemblies",
+]
 
 
 # --------------------------------------------------------------------------- recognition
@@ -49,10 +72,17 @@ def recognise(g, name):
             continue  # one link to two vertices: no triad
         f = b
         (p1, (k1, K1, l1)), (p2, (k2, K2, l2)), (p3, (k3, K3, l3)) = verts
-        return Triad(g.next_index, (p1, p2, p3), key, (K1, K2, K3), (k1, k2, k3),
-                     (l1, l2, l3), (f[p2][0] - f[p1][0], f[p2][1] - f[p1][1],
-                                    f[p3][0] - f[p1][0], f[p3][1] - f[p1][1]),
-                     unit=g.unit, uname=g.uname)
+        return Triad(
+            g.next_index,
+            (p1, p2, p3),
+            key,
+            (K1, K2, K3),
+            (k1, k2, k3),
+            (l1, l2, l3),
+            (f[p2][0] - f[p1][0], f[p2][1] - f[p1][1], f[p3][0] - f[p1][0], f[p3][1] - f[p1][1]),
+            unit=g.unit,
+            uname=g.uname,
+        )
     return _triangle(g, name)
 
 
@@ -74,9 +104,11 @@ def _triangle(g, name):
             ends.setdefault(other, key)
     names = list(ends)
     for i, X in enumerate(names):
-        for Y in names[i + 1:]:
-            side = next((k for k in g.bodies_of(X) if k not in g.used_links and
-                         set(g.body(k)) == {X, Y}), None)
+        for Y in names[i + 1 :]:
+            side = next(
+                (k for k in g.bodies_of(X) if k not in g.used_links and set(g.body(k)) == {X, Y}),
+                None,
+            )
             if side is None:
                 continue
             tri = {ends[X], side, ends[Y]}
@@ -87,10 +119,18 @@ def _triangle(g, name):
             a = g.bodies.distance(ends[X], name, X)
             b = g.bodies.distance(side, X, Y)
             c = g.bodies.distance(ends[Y], Y, name)
-            return Triad(g.next_index, (p1, p2, p3), ends[X], (K1, K2, K3), (k1, k2, k3),
-                         (l1, l2, l3), _triangle_offsets(a, b, c, 1.0),
-                         unit=g.unit, uname=g.uname,
-                         sides=((side, X, Y), (ends[Y], Y, name)))
+            return Triad(
+                g.next_index,
+                (p1, p2, p3),
+                ends[X],
+                (K1, K2, K3),
+                (k1, k2, k3),
+                (l1, l2, l3),
+                _triangle_offsets(a, b, c, 1.0),
+                unit=g.unit,
+                uname=g.uname,
+                sides=((side, X, Y), (ends[Y], Y, name)),
+            )
     return None
 
 
@@ -104,8 +144,9 @@ def _triangle_offsets(a, b, c, hand):
 def _any_assembly(K, prm, np):
     """(x, y, th, bad): an assembly of each element, if any (a step whose assembly is not
     chosen yet: where can the crank be set so that it assembles at all)."""
-    cols = [np.asarray(c, dtype=float) for xy in K for c in xy] + \
-        [np.asarray(p, dtype=float) for p in prm]
+    cols = [np.asarray(c, dtype=float) for xy in K for c in xy] + [
+        np.asarray(p, dtype=float) for p in prm
+    ]
     n = max([c.size for c in cols] + [1])
     cols = [np.broadcast_to(c, (n,)) if c.ndim else np.full(n, float(c)) for c in cols]
     out = np.zeros((3, n))
@@ -185,14 +226,18 @@ class Triad(Step):
         return tuple(self.lengths) + tuple(self.offsets)
 
     def dimensions(self, scene, bodies):
-        own = tuple(bodies.distance(k, K, V) for k, K, V in
-                    zip(self.links_, self.knowns, self.points))
+        own = tuple(
+            bodies.distance(k, K, V) for k, K, V in zip(self.links_, self.knowns, self.points)
+        )
         if self.sides:
             p1, p2, _ = self.points
             (k2, a2, b2), (k3, a3, b3) = self.sides
-            return own + _triangle_offsets(bodies.distance(self.plate, p1, p2),
-                                           bodies.distance(k2, a2, b2),
-                                           bodies.distance(k3, a3, b3), self.hand)
+            return own + _triangle_offsets(
+                bodies.distance(self.plate, p1, p2),
+                bodies.distance(k2, a2, b2),
+                bodies.distance(k3, a3, b3),
+                self.hand,
+            )
         f = bodies.frame(self.plate)
         (x1, y1), (x2, y2), (x3, y3) = (f[p] for p in self.points)
         return own + (x2 - x1, y2 - y1, x3 - x1, y3 - y1)
@@ -221,14 +266,15 @@ class Triad(Step):
         if not found:
             raise AssemblyError(self.why(), step=self.label)
         prms = [prm if h == self.hand else prm[:6] + (-prm[6],) for h in hands]
-        places = [dict(zip(self.points, vertices(*q, pr, math.cos, math.sin)))
-                  for q, pr in zip(found, prms)]
+        places = [
+            dict(zip(self.points, vertices(*q, pr, math.cos, math.sin)))
+            for q, pr in zip(found, prms)
+        ]
         hints = {p: g.scene.assembly[p] for p in self.points if p in g.scene.assembly}
         size = self.reach()
         coords = {p: h for p, h in hints.items() if isinstance(h, tuple)}
         if coords:
-            d = [sum(math.dist(pl[p], h) ** 2 for p, h in coords.items()) ** 0.5
-                 for pl in places]
+            d = [sum(math.dist(pl[p], h) ** 2 for p, h in coords.items()) ** 0.5 for pl in places]
             order = sorted(range(len(found)), key=d.__getitem__)
             best = order[0]
             key = f"[assembly] {', '.join(coords)}"
@@ -236,18 +282,23 @@ class Triad(Step):
                 raise AssemblyError(
                     f"assembly {', '.join(coords)} matches no assembly of the triad "
                     f"({self._listed(places, coords)}); give rough positions near the one "
-                    "the figure shows", key=key, file=g.scene.file)
+                    "the figure shows",
+                    key=key,
+                    file=g.scene.file,
+                )
             if len(order) > 1:
                 sep = max(math.dist(places[best][p], places[order[1]][p]) for p in coords)
                 if d[order[1]] - d[best] <= 0.1 * sep:
                     raise AssemblyError(
                         f"assembly {', '.join(coords)} is as near one assembly of the triad "
                         f"as another ({self._listed(places, coords)}): give rough positions "
-                        "nearer the one the figure shows", key=key, file=g.scene.file)
+                        "nearer the one the figure shows",
+                        key=key,
+                        file=g.scene.file,
+                    )
         elif hints:
             p, h = next(iter(hints.items()))
-            axis, want = {"above": (1, 1), "below": (1, -1), "right": (0, 1),
-                          "left": (0, -1)}[h]
+            axis, want = {"above": (1, 1), "below": (1, -1), "right": (0, 1), "left": (0, -1)}[h]
             best = max(range(len(found)), key=lambda i: places[i][p][axis] * want)
         else:
             p = self.points[0]
@@ -256,19 +307,35 @@ class Triad(Step):
                 g.notes.append(
                     f"{', '.join(self.points)}: of the triad's {len(found)} assemblies the one "
                     f"with {p} highest was taken (default; set [assembly] {p} = [x, y] to a "
-                    "rough position to choose)")
+                    "rough position to choose)"
+                )
         q, prm = found[best], prms[best]
         det = newton_step(q, K, prm, math.cos, math.sin)[2]
-        chosen = Triad(self.index, self.points, self.plate, self.knowns, self.links_,
-                       self.lengths, prm[3:], self.sigma, self.unit, self.uname,
-                       (flat(K, prm), q, sign(det)), len(found), sides=self.sides,
-                       hand=hands[best])
+        chosen = Triad(
+            self.index,
+            self.points,
+            self.plate,
+            self.knowns,
+            self.links_,
+            self.lengths,
+            prm[3:],
+            self.sigma,
+            self.unit,
+            self.uname,
+            (flat(K, prm), q, sign(det)),
+            len(found),
+            sides=self.sides,
+            hand=hands[best],
+        )
         return chosen, places[best]
 
     def _listed(self, places, coords):
         u, n = self.unit, self.uname
-        return "; ".join(", ".join(f"{p} [{in_units(pl[p][0], u)}, {in_units(pl[p][1], u)}]"
-                                   for p in coords) + f" {n}" for pl in places)
+        return "; ".join(
+            ", ".join(f"{p} [{in_units(pl[p][0], u)}, {in_units(pl[p][1], u)}]" for p in coords)
+            + f" {n}"
+            for pl in places
+        )
 
     # ----- evaluation
     def place(self, P, prm, ctx, sigma=None):
@@ -303,7 +370,7 @@ class Triad(Step):
         K = tuple(P[k] for k in self.knowns)
         here = tuple(P[p] for p in self.points)
         best = None
-        for h in ((1.0, -1.0) if self.sides else (1.0,)):
+        for h in (1.0, -1.0) if self.sides else (1.0,):
             prm = self.params[:6] + (h * self.params[6],)
             for q in assemblies(K, prm):
                 V = vertices(*q, prm, math.cos, math.sin)
@@ -354,8 +421,10 @@ class Triad(Step):
                 zero = d == 0
                 if np.any(zero):
                     m.ctx.fail(step, zero)
-                    V = tuple((np.where(zero, vx + 1e-3 * (j + 1), vx), vy)
-                              for j, (vx, vy) in enumerate(V))
+                    V = tuple(
+                        (np.where(zero, vx + 1e-3 * (j + 1), vx), vy)
+                        for j, (vx, vy) in enumerate(V)
+                    )
             return V, K
 
         def velocity_(m):
@@ -371,9 +440,14 @@ class Triad(Step):
 
         def acceleration_(m):
             V, K = parts(m)
-            al, aa, all_ = acceleration(V, K, tuple(m.V[p] for p in pts),
-                                        tuple(m.V[k] for k in kn), tuple(m.A[k] for k in kn),
-                                        m.W[plate])
+            al, aa, all_ = acceleration(
+                V,
+                K,
+                tuple(m.V[p] for p in pts),
+                tuple(m.V[k] for k in kn),
+                tuple(m.A[k] for k in kn),
+                m.W[plate],
+            )
             for p, a in zip(pts, aa):
                 m.A[p] = a
             m.Al[plate] = al
@@ -403,38 +477,54 @@ class Triad(Step):
         """Why the triad cannot assemble at this crank angle: no pose reaches its links, or its
         assembly ended at a limit."""
         if not self.start:  # no assembly chosen yet: none exists here
-            return (f"cannot assemble the triad {', '.join(self.points)}: no position of the "
-                    f"{self._plate_words} reaches the links {', '.join(self.links_)} from "
-                    f"{', '.join(self.knowns)} at this crank angle")
-        return (f"cannot assemble the triad {', '.join(self.points)}: its assembly ends before "
-                f"this crank angle (a limit of the triad, where the lines of "
-                f"{self._lines()} meet in one point)")
+            return (
+                f"cannot assemble the triad {', '.join(self.points)}: no position of the "
+                f"{self._plate_words} reaches the links {', '.join(self.links_)} from "
+                f"{', '.join(self.knowns)} at this crank angle"
+            )
+        return (
+            f"cannot assemble the triad {', '.join(self.points)}: its assembly ends before "
+            f"this crank angle (a limit of the triad, where the lines of "
+            f"{self._lines()} meet in one point)"
+        )
 
     def singular_why(self, c) -> str:
-        return (f"the lines of {self._lines()} meet in one point (or are parallel; condition "
-                f"{c:.2g}): the {self._plate_words} could turn about that point while the "
-                "links stand still, so its velocity is indeterminate (a limit position of "
-                "the triad, where two of its assemblies meet)")
+        return (
+            f"the lines of {self._lines()} meet in one point (or are parallel; condition "
+            f"{c:.2g}): the {self._plate_words} could turn about that point while the "
+            "links stand still, so its velocity is indeterminate (a limit position of "
+            "the triad, where two of its assemblies meet)"
+        )
 
     def warning(self, c) -> str:
-        return (f"{self.label}: the lines of {self._lines()} nearly meet in one point "
-                f"(condition {c:.3g}): near a limit of the triad the auxiliary point "
-                "construction is ill-conditioned")
+        return (
+            f"{self.label}: the lines of {self._lines()} nearly meet in one point "
+            f"(condition {c:.3g}): near a limit of the triad the auxiliary point "
+            "construction is ill-conditioned"
+        )
 
     def limit_why(self) -> str:
-        return (f"the lines of {self._lines()} meet in one point (the triad "
-                f"{', '.join(self.points)} cannot be assembled beyond it on its branch)")
+        return (
+            f"the lines of {self._lines()} meet in one point (the triad "
+            f"{', '.join(self.points)} cannot be assembled beyond it on its branch)"
+        )
 
     def transmission(self):
         return None
 
     def condition_column(self):
-        return (f"cond {''.join(self.points)}", "", "triad condition (0: the three links' "
-                "lines meet in a point)")
+        return (
+            f"cond {''.join(self.points)}",
+            "",
+            "triad condition (0: the three links' lines meet in a point)",
+        )
 
     def bodies(self):
-        return (self.links_[0], self.plate) + tuple(k for k, _, _ in self.sides) + \
-            (self.links_[1], self.links_[2])
+        return (
+            (self.links_[0], self.plate)
+            + tuple(k for k, _, _ in self.sides)
+            + (self.links_[1], self.links_[2])
+        )
 
     def orient(self):
         out = {self.plate: (self.points[1], self.points[0])}
@@ -454,12 +544,16 @@ class Triad(Step):
         return "above"
 
     def position_words(self, L, which, angle_deg):
-        arcs = "; ".join(f"{V} on the arc of radius {k} = {L(l)} about {K}" for V, k, K, l in
-                         zip(self.points, self.links_, self.knowns, self.lengths))
-        return (f"{', '.join(self.points)} together (no one of them can be found alone): "
-                f"{arcs}; the {self._plate_words} is fitted to the three arcs by trial (or "
-                f"by the loop equations), the assembly of the figure"
-                + (f" (one of {self.count})" if self.count > 1 else ""))
+        arcs = "; ".join(
+            f"{V} on the arc of radius {k} = {L(l)} about {K}"
+            for V, k, K, l in zip(self.points, self.links_, self.knowns, self.lengths)
+        )
+        return (
+            f"{', '.join(self.points)} together (no one of them can be found alone): "
+            f"{arcs}; the {self._plate_words} is fitted to the three arcs by trial (or "
+            f"by the loop equations), the assembly of the figure"
+            + (f" (one of {self.count})" if self.count > 1 else "")
+        )
 
     # ----- the polygons (the auxiliary point construction)
     def _aux(self, P):

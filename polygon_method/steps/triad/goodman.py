@@ -8,8 +8,18 @@ from __future__ import annotations
 
 import math
 
-from ..base import (Construction, DirectionLine, Vector, absolute, image_label, perp,
-                    pole_text, relative, sub, unit)
+from ..base import (
+    Construction,
+    DirectionLine,
+    Vector,
+    absolute,
+    image_label,
+    perp,
+    pole_text,
+    relative,
+    sub,
+    unit,
+)
 
 __all__ = ["construction"]
 
@@ -40,48 +50,156 @@ def _common(step, sol, ph):
         img_s = (ref[0] - w * (S[1] - y1), ref[1] + w * (S[0] - x1))
     else:
         al = sol.Al[step.plate]
-        img_s = (ref[0] - al * (S[1] - y1) - w * w * (S[0] - x1),
-                 ref[1] + al * (S[0] - x1) - w * w * (S[1] - y1))
+        img_s = (
+            ref[0] - al * (S[1] - y1) - w * w * (S[0] - x1),
+            ref[1] + al * (S[0] - x1) - w * w * (S[1] - y1),
+        )
     aux = f"S, where {Ki}{Vi} and {Kj}{Vj} (produced) meet, a point of the {step._plate_words}"
-    return (P, i, j, m, S, pts, kn, lk, Vi, Vj, Vm, Ki, Kj, Km, cond, lab, w, s_lab, perp_to, D, img_s, aux)
+    return (
+        P,
+        i,
+        j,
+        m,
+        S,
+        pts,
+        kn,
+        lk,
+        Vi,
+        Vj,
+        Vm,
+        Ki,
+        Kj,
+        Km,
+        cond,
+        lab,
+        w,
+        s_lab,
+        perp_to,
+        D,
+        img_s,
+        aux,
+    )
 
 
 def _velocity(step, sol, ph):
     """Goodman's construction on the velocity polygon."""
-    (P, i, j, m, S, pts, kn, lk, Vi, Vj, Vm, Ki, Kj, Km, cond, lab, w, s_lab, perp_to, D, img_s, aux) = _common(step, sol, ph)
-    lines = (DirectionLine(D[Ki], perp_to(Ki, Vi), lab(Ki), f"perpendicular to {Ki}{Vi}", mark=f"\u22a5 {Ki}{Vi}"),
-             DirectionLine(D[Kj], perp_to(Kj, Vj), lab(Kj), f"perpendicular to {Kj}{Vj}", mark=f"\u22a5 {Kj}{Vj}"),
-             DirectionLine(img_s, unit(*perp(sub(P[Vm], S))), s_lab,
-                           f"perpendicular to S{Vm}", mark=f"\u22a5 S{Vm}"),
-             DirectionLine(D[Km], perp_to(Km, Vm), lab(Km), f"perpendicular to {Km}{Vm}", mark=f"\u22a5 {Km}{Vm}"),
-             DirectionLine(D[Vm], perp_to(Vm, Vi), lab(Vm), f"perpendicular to {Vm}{Vi}", mark=f"\u22a5 {Vm}{Vi}"),
-             DirectionLine(D[Vm], perp_to(Vm, Vj), lab(Vm), f"perpendicular to {Vm}{Vj}", mark=f"\u22a5 {Vm}{Vj}"))
-    text = (f"auxiliary point (Goodman): {aux}, moves perpendicular to both lines; "
-            f"through {pole_text(sol, Ki, ph)} draw a line perpendicular to {Ki}{Vi}, "
-            f"through {pole_text(sol, Kj, ph)} one perpendicular to {Kj}{Vj}: they "
-            f"meet at {s_lab}; through {s_lab} draw a line perpendicular to S{Vm}, "
-            f"through {pole_text(sol, Km, ph)} one perpendicular to {Km}{Vm}: they meet "
-            f"at {lab(Vm)}; through {lab(Vm)} draw lines perpendicular to {Vm}{Vi} and "
-            f"{Vm}{Vj}: they cut the first two lines at {lab(Vi)} and {lab(Vj)}")
-    found = tuple(relative(sol, V, K, D, ph) for V, K in zip(pts, kn)) + \
-        (relative(sol, Vi, Vm, D, ph), relative(sol, Vj, Vm, D, ph)) + \
-        tuple(absolute(sol, V, D, ph) for V in pts)
-    return Construction(step.index, step.title, ph, ", ".join(lab(p) for p in pts),
-                        D[Vm], (), lines, found, text, cond, ((s_lab, img_s),))
+    (
+        P,
+        i,
+        j,
+        m,
+        S,
+        pts,
+        kn,
+        lk,
+        Vi,
+        Vj,
+        Vm,
+        Ki,
+        Kj,
+        Km,
+        cond,
+        lab,
+        w,
+        s_lab,
+        perp_to,
+        D,
+        img_s,
+        aux,
+    ) = _common(step, sol, ph)
+    lines = (
+        DirectionLine(
+            D[Ki], perp_to(Ki, Vi), lab(Ki), f"perpendicular to {Ki}{Vi}", mark=f"\u22a5 {Ki}{Vi}"
+        ),
+        DirectionLine(
+            D[Kj], perp_to(Kj, Vj), lab(Kj), f"perpendicular to {Kj}{Vj}", mark=f"\u22a5 {Kj}{Vj}"
+        ),
+        DirectionLine(
+            img_s,
+            unit(*perp(sub(P[Vm], S))),
+            s_lab,
+            f"perpendicular to S{Vm}",
+            mark=f"\u22a5 S{Vm}",
+        ),
+        DirectionLine(
+            D[Km], perp_to(Km, Vm), lab(Km), f"perpendicular to {Km}{Vm}", mark=f"\u22a5 {Km}{Vm}"
+        ),
+        DirectionLine(
+            D[Vm], perp_to(Vm, Vi), lab(Vm), f"perpendicular to {Vm}{Vi}", mark=f"\u22a5 {Vm}{Vi}"
+        ),
+        DirectionLine(
+            D[Vm], perp_to(Vm, Vj), lab(Vm), f"perpendicular to {Vm}{Vj}", mark=f"\u22a5 {Vm}{Vj}"
+        ),
+    )
+    text = (
+        f"auxiliary point (Goodman): {aux}, moves perpendicular to both lines; "
+        f"through {pole_text(sol, Ki, ph)} draw a line perpendicular to {Ki}{Vi}, "
+        f"through {pole_text(sol, Kj, ph)} one perpendicular to {Kj}{Vj}: they "
+        f"meet at {s_lab}; through {s_lab} draw a line perpendicular to S{Vm}, "
+        f"through {pole_text(sol, Km, ph)} one perpendicular to {Km}{Vm}: they meet "
+        f"at {lab(Vm)}; through {lab(Vm)} draw lines perpendicular to {Vm}{Vi} and "
+        f"{Vm}{Vj}: they cut the first two lines at {lab(Vi)} and {lab(Vj)}"
+    )
+    found = (
+        tuple(relative(sol, V, K, D, ph) for V, K in zip(pts, kn))
+        + (relative(sol, Vi, Vm, D, ph), relative(sol, Vj, Vm, D, ph))
+        + tuple(absolute(sol, V, D, ph) for V in pts)
+    )
+    return Construction(
+        step.index,
+        step.title,
+        ph,
+        ", ".join(lab(p) for p in pts),
+        D[Vm],
+        (),
+        lines,
+        found,
+        text,
+        cond,
+        ((s_lab, img_s),),
+    )
 
 
 def _acceleration(step, sol, ph):
     """Goodman's construction on the acceleration polygon (the centripetal components
     first, omega from the velocity polygon)."""
-    (P, i, j, m, S, pts, kn, lk, Vi, Vj, Vm, Ki, Kj, Km, cond, lab, w, s_lab, perp_to, D, img_s, aux) = _common(step, sol, ph)
+    (
+        P,
+        i,
+        j,
+        m,
+        S,
+        pts,
+        kn,
+        lk,
+        Vi,
+        Vj,
+        Vm,
+        Ki,
+        Kj,
+        Km,
+        cond,
+        lab,
+        w,
+        s_lab,
+        perp_to,
+        D,
+        img_s,
+        aux,
+    ) = _common(step, sol, ph)
     W = sol.W
 
     def cen(start, X, Y, om, name):  # centripetal of X about Y: om^2 XY towards Y
         r = sub(P[X] if isinstance(X, str) else X, P[Y] if isinstance(Y, str) else Y)
         end = (start[0] - om * om * r[0], start[1] - om * om * r[1])
-        return Vector(start, end, f"c{name}", "centripetal", f"centripetal of {name}",
-                      f"{om * om * math.hypot(*r):.4g} m/s^2, parallel to {name}, "
-                      f"towards its second point")
+        return Vector(
+            start,
+            end,
+            f"c{name}",
+            "centripetal",
+            f"centripetal of {name}",
+            f"{om * om * math.hypot(*r):.4g} m/s^2, parallel to {name}, towards its second point",
+        )
 
     ci = cen(D[Ki], Vi, Ki, W[lk[i]], f"{Vi}{Ki}")
     cj = cen(D[Kj], Vj, Kj, W[lk[j]], f"{Vj}{Kj}")
@@ -91,40 +209,103 @@ def _acceleration(step, sol, ph):
     ck = cen(D[Km], Vm, Km, W[lk[m]], f"{Vm}{Km}")
     cmi = cen(D[Vm], Vi, Vm, w, f"{Vi}{Vm}")
     cmj = cen(D[Vm], Vj, Vm, w, f"{Vj}{Vm}")
-    lines = (DirectionLine(csi.end, perp_to(Ki, Vi), f"the end of the centripetal of S{Vi}",
-                           f"perpendicular to {Ki}{Vi}", mark=f"\u22a5 {Ki}{Vi}"),
-             DirectionLine(csj.end, perp_to(Kj, Vj), f"the end of the centripetal of S{Vj}",
-                           f"perpendicular to {Kj}{Vj}", mark=f"\u22a5 {Kj}{Vj}"),
-             DirectionLine(cm.end, unit(*perp(sub(P[Vm], S))),
-                           f"the end of the centripetal of {Vm}S", f"perpendicular to S{Vm}", mark=f"\u22a5 S{Vm}"),
-             DirectionLine(ck.end, perp_to(Km, Vm), f"the end of the centripetal of {Vm}{Km}",
-                           f"perpendicular to {Km}{Vm}", mark=f"\u22a5 {Km}{Vm}"),
-             DirectionLine(cmi.end, perp_to(Vm, Vi), f"the end of the centripetal of {Vi}{Vm}",
-                           f"perpendicular to {Vm}{Vi}", mark=f"\u22a5 {Vm}{Vi}"),
-             DirectionLine(cmj.end, perp_to(Vm, Vj), f"the end of the centripetal of {Vj}{Vm}",
-                           f"perpendicular to {Vm}{Vj}", mark=f"\u22a5 {Vm}{Vj}"),
-             DirectionLine(ci.end, perp_to(Ki, Vi), f"the end of the centripetal of {Vi}{Ki}",
-                           f"perpendicular to {Ki}{Vi}", mark=f"\u22a5 {Ki}{Vi}"),
-             DirectionLine(cj.end, perp_to(Kj, Vj), f"the end of the centripetal of {Vj}{Kj}",
-                           f"perpendicular to {Kj}{Vj}", mark=f"\u22a5 {Kj}{Vj}"))
-    text = (f"auxiliary point (Goodman): {aux}; from {pole_text(sol, Ki, ph)} draw the "
-            f"centripetal of {Vi}{Ki} and from its end the centripetal of S{Vi} (both "
-            f"along {Ki}{Vi}), and through the end a line perpendicular to {Ki}{Vi}; the "
-            f"same from {pole_text(sol, Kj, ph)} along {Kj}{Vj}: the two lines meet at "
-            f"{s_lab}; from {s_lab} the centripetal of {Vm}S and a line perpendicular to "
-            f"S{Vm}, from {pole_text(sol, Km, ph)} the centripetal of {Vm}{Km} and a line "
-            f"perpendicular to {Km}{Vm}: they meet at {lab(Vm)}; from {lab(Vm)} the "
-            f"centripetals of {Vi}{Vm} and {Vj}{Vm} and lines perpendicular to {Vm}{Vi} "
-            f"and {Vm}{Vj}; they cut the lines perpendicular to {Ki}{Vi} and {Kj}{Vj} "
-            f"drawn through the ends of the centripetals of {Vi}{Ki} and {Vj}{Kj} at "
-            f"{lab(Vi)} and {lab(Vj)} (omega of the {step._plate_words} from the velocity "
-            "polygon)")
-    found = tuple(Vector(c.end, D[V], f"t{V}{K}", "tangential", f"tangential of {V}{K}",
-                         f"alpha_{k} x {K}{V}")
-                  for c, V, K, k in ((ci, Vi, Ki, lk[i]), (cj, Vj, Kj, lk[j]),
-                                     (ck, Vm, Km, lk[m]))) + \
-        tuple(relative(sol, V, K, D, ph) for V, K in zip(pts, kn)) + \
-        tuple(absolute(sol, V, D, ph) for V in pts)
-    return Construction(step.index, step.title, ph, ", ".join(lab(p) for p in pts),
-                        D[Vm], (ci, cj, csi, csj, cm, ck, cmi, cmj), lines, found, text,
-                        cond, ((s_lab, img_s),))
+    lines = (
+        DirectionLine(
+            csi.end,
+            perp_to(Ki, Vi),
+            f"the end of the centripetal of S{Vi}",
+            f"perpendicular to {Ki}{Vi}",
+            mark=f"\u22a5 {Ki}{Vi}",
+        ),
+        DirectionLine(
+            csj.end,
+            perp_to(Kj, Vj),
+            f"the end of the centripetal of S{Vj}",
+            f"perpendicular to {Kj}{Vj}",
+            mark=f"\u22a5 {Kj}{Vj}",
+        ),
+        DirectionLine(
+            cm.end,
+            unit(*perp(sub(P[Vm], S))),
+            f"the end of the centripetal of {Vm}S",
+            f"perpendicular to S{Vm}",
+            mark=f"\u22a5 S{Vm}",
+        ),
+        DirectionLine(
+            ck.end,
+            perp_to(Km, Vm),
+            f"the end of the centripetal of {Vm}{Km}",
+            f"perpendicular to {Km}{Vm}",
+            mark=f"\u22a5 {Km}{Vm}",
+        ),
+        DirectionLine(
+            cmi.end,
+            perp_to(Vm, Vi),
+            f"the end of the centripetal of {Vi}{Vm}",
+            f"perpendicular to {Vm}{Vi}",
+            mark=f"\u22a5 {Vm}{Vi}",
+        ),
+        DirectionLine(
+            cmj.end,
+            perp_to(Vm, Vj),
+            f"the end of the centripetal of {Vj}{Vm}",
+            f"perpendicular to {Vm}{Vj}",
+            mark=f"\u22a5 {Vm}{Vj}",
+        ),
+        DirectionLine(
+            ci.end,
+            perp_to(Ki, Vi),
+            f"the end of the centripetal of {Vi}{Ki}",
+            f"perpendicular to {Ki}{Vi}",
+            mark=f"\u22a5 {Ki}{Vi}",
+        ),
+        DirectionLine(
+            cj.end,
+            perp_to(Kj, Vj),
+            f"the end of the centripetal of {Vj}{Kj}",
+            f"perpendicular to {Kj}{Vj}",
+            mark=f"\u22a5 {Kj}{Vj}",
+        ),
+    )
+    text = (
+        f"auxiliary point (Goodman): {aux}; from {pole_text(sol, Ki, ph)} draw the "
+        f"centripetal of {Vi}{Ki} and from its end the centripetal of S{Vi} (both "
+        f"along {Ki}{Vi}), and through the end a line perpendicular to {Ki}{Vi}; the "
+        f"same from {pole_text(sol, Kj, ph)} along {Kj}{Vj}: the two lines meet at "
+        f"{s_lab}; from {s_lab} the centripetal of {Vm}S and a line perpendicular to "
+        f"S{Vm}, from {pole_text(sol, Km, ph)} the centripetal of {Vm}{Km} and a line "
+        f"perpendicular to {Km}{Vm}: they meet at {lab(Vm)}; from {lab(Vm)} the "
+        f"centripetals of {Vi}{Vm} and {Vj}{Vm} and lines perpendicular to {Vm}{Vi} "
+        f"and {Vm}{Vj}; they cut the lines perpendicular to {Ki}{Vi} and {Kj}{Vj} "
+        f"drawn through the ends of the centripetals of {Vi}{Ki} and {Vj}{Kj} at "
+        f"{lab(Vi)} and {lab(Vj)} (omega of the {step._plate_words} from the velocity "
+        "polygon)"
+    )
+    found = (
+        tuple(
+            Vector(
+                c.end,
+                D[V],
+                f"t{V}{K}",
+                "tangential",
+                f"tangential of {V}{K}",
+                f"alpha_{k} x {K}{V}",
+            )
+            for c, V, K, k in ((ci, Vi, Ki, lk[i]), (cj, Vj, Kj, lk[j]), (ck, Vm, Km, lk[m]))
+        )
+        + tuple(relative(sol, V, K, D, ph) for V, K in zip(pts, kn))
+        + tuple(absolute(sol, V, D, ph) for V in pts)
+    )
+    return Construction(
+        step.index,
+        step.title,
+        ph,
+        ", ".join(lab(p) for p in pts),
+        D[Vm],
+        (ci, cj, csi, csj, cm, ck, cmi, cmj),
+        lines,
+        found,
+        text,
+        cond,
+        ((s_lab, img_s),),
+    )

@@ -33,9 +33,26 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["solve3", "det3", "vertices", "matrix", "velocity", "acceleration", "condition",
-           "newton_step", "assemblies", "follow", "solve_scalar", "solve_array", "Memo",
-           "flat", "scale", "sign", "det_sign", "kp"]
+__all__ = [
+    "solve3",
+    "det3",
+    "vertices",
+    "matrix",
+    "velocity",
+    "acceleration",
+    "condition",
+    "newton_step",
+    "assemblies",
+    "follow",
+    "solve_scalar",
+    "solve_array",
+    "Memo",
+    "flat",
+    "scale",
+    "sign",
+    "det_sign",
+    "kp",
+]
 
 #: Newton's residual (|Fi| / 2 li, relative to the largest length) taken as converged
 _CONVERGED = 1e-13
@@ -74,8 +91,11 @@ def vertices(x, y, th, prm, cos, sin):
     u3x, u3y)."""
     c, s = cos(th), sin(th)
     u2x, u2y, u3x, u3y = prm[3], prm[4], prm[5], prm[6]
-    return ((x, y), (x + c * u2x - s * u2y, y + s * u2x + c * u2y),
-            (x + c * u3x - s * u3y, y + s * u3x + c * u3y))
+    return (
+        (x, y),
+        (x + c * u2x - s * u2y, y + s * u2x + c * u2y),
+        (x + c * u3x - s * u3y, y + s * u3x + c * u3y),
+    )
 
 
 def matrix(V, K):
@@ -109,6 +129,7 @@ def _vmax(a, b):
     if isinstance(a, float) and isinstance(b, float):
         return a if a >= b else b
     import numpy as np
+
     return np.maximum(a, b)
 
 
@@ -118,7 +139,7 @@ def condition(V, K):
     gx = (V[0][0] + V[1][0] + V[2][0]) / 3.0
     gy = (V[0][1] + V[1][1] + V[2][1]) / 3.0
     rho2 = sum((vx - gx) ** 2 + (vy - gy) ** 2 for vx, vy in V) / 3.0
-    rho = rho2 ** 0.5
+    rho = rho2**0.5
     rows, norm = [], 1.0
     for (vx, vy), (kx, ky) in zip(V, K):
         rx, ry = vx - kx, vy - ky
@@ -134,8 +155,7 @@ def velocity(V, K, VK):
     """(v1, w, (vV1, vV2, vV3), (w1, w2, w3)): the plate's and the links' angular velocities
     and the vertices' velocities, from the known points' velocities ``VK``."""
     m = matrix(V, K)
-    h = tuple((V[i][0] - K[i][0]) * VK[i][0] + (V[i][1] - K[i][1]) * VK[i][1]
-              for i in range(3))
+    h = tuple((V[i][0] - K[i][0]) * VK[i][0] + (V[i][1] - K[i][1]) * VK[i][1] for i in range(3))
     vx, vy, w = solve3(m, h)
     x1, y1 = V[0]
     vv, wl = [], []
@@ -158,8 +178,11 @@ def acceleration(V, K, VV, VK, AK, w):
     for i in range(3):
         rx, ry = V[i][0] - K[i][0], V[i][1] - K[i][1]
         sx, sy = VV[i][0] - VK[i][0], VV[i][1] - VK[i][1]
-        h.append(rx * (AK[i][0] + w2 * (V[i][0] - x1)) + ry * (AK[i][1] + w2 * (V[i][1] - y1))
-                 - (sx * sx + sy * sy))
+        h.append(
+            rx * (AK[i][0] + w2 * (V[i][0] - x1))
+            + ry * (AK[i][1] + w2 * (V[i][1] - y1))
+            - (sx * sx + sy * sy)
+        )
     ax, ay, al = solve3(m, h)
     aa, all_ = [], []
     for i in range(3):
@@ -176,8 +199,14 @@ def acceleration(V, K, VV, VK, AK, w):
 
 def scale(prm):
     """The triad's size: its largest dimension (the scale of its tolerances)."""
-    return max(abs(prm[0]), abs(prm[1]), abs(prm[2]), math.hypot(prm[3], prm[4]),
-               math.hypot(prm[5], prm[6]), 1e-300)
+    return max(
+        abs(prm[0]),
+        abs(prm[1]),
+        abs(prm[2]),
+        math.hypot(prm[3], prm[4]),
+        math.hypot(prm[5], prm[6]),
+        1e-300,
+    )
 
 
 def _newton(q, K, prm, size, iters=40):
@@ -239,6 +268,7 @@ def assemblies(K, prm, n=2048):
     circle about K2 (two ways), and taking the sign changes of |V3 - K3|^2 - l3^2, each
     polished by Newton."""
     import numpy as np
+
     l1, l2, l3, u2x, u2y, u3x, u3y = prm
     size = scale(prm)
     phi = np.linspace(0.0, 2.0 * math.pi, n + 1)
@@ -261,21 +291,35 @@ def assemblies(K, prm, n=2048):
         seeds = []
         for i in np.nonzero(ok[:-1] & ok[1:] & (np.sign(g[:-1]) != np.sign(g[1:])))[0]:
             w = g[i] / (g[i] - g[i + 1]) if g[i] != g[i + 1] else 0.5
-            seeds.append((x1[i] + w * (x1[i + 1] - x1[i]), y1[i] + w * (y1[i + 1] - y1[i]),
-                          th[i] + w * (th[i + 1] - th[i])))
+            seeds.append(
+                (
+                    x1[i] + w * (x1[i + 1] - x1[i]),
+                    y1[i] + w * (y1[i + 1] - y1[i]),
+                    th[i] + w * (th[i + 1] - th[i]),
+                )
+            )
         # two roots closer than the grid (near a limit) make no sign change: the small
         # local minima of |g| are tried too
         a = np.abs(g)
-        near = ok[1:-1] & ok[:-2] & ok[2:] & (a[1:-1] <= a[:-2]) & (a[1:-1] <= a[2:]) & \
-            (a[1:-1] < 0.05 * l3 * size)
+        near = (
+            ok[1:-1]
+            & ok[:-2]
+            & ok[2:]
+            & (a[1:-1] <= a[:-2])
+            & (a[1:-1] <= a[2:])
+            & (a[1:-1] < 0.05 * l3 * size)
+        )
         seeds += [(x1[i], y1[i], th[i]) for i in np.nonzero(near)[0] + 1]
         for q0 in seeds:
             got = _newton(tuple(float(v) for v in q0), K, prm, size)
             if got is None:
                 continue
             q = got[0]
-            if all(math.hypot(q[0] - p[0], q[1] - p[1]) > 1e-7 * size or
-                   abs(math.remainder(q[2] - p[2], 2 * math.pi)) > 1e-7 for p in found):
+            if all(
+                math.hypot(q[0] - p[0], q[1] - p[1]) > 1e-7 * size
+                or abs(math.remainder(q[2] - p[2], 2 * math.pi)) > 1e-7
+                for p in found
+            ):
                 found.append((q[0], q[1], math.remainder(q[2], 2 * math.pi)))
     return found
 
@@ -292,6 +336,7 @@ class Memo:
         """The memo's inputs as one array (for the nearest-neighbour search)."""
         if self._array is None or len(self._array) != len(self.items):
             import numpy as np
+
             self._array = np.array([it[0] for it in self.items])
         return self._array
 
@@ -309,6 +354,7 @@ class Memo:
                     best, bd = it, d
             return best, bd
         import numpy as np
+
         d = np.abs(self.array() - np.asarray(inp)).max(axis=1)
         k = int(np.argmin(d))
         return self.items[k], float(d[k]) / size
@@ -317,7 +363,7 @@ class Memo:
         """Remember the pose ``q`` solved at inputs ``inp`` with its determinant's sign (the oldest
         forgotten past the memo's size)."""
         if len(self.items) >= _KEEP:
-            del self.items[1:_KEEP // 2]
+            del self.items[1 : _KEEP // 2]
         self.items.append((inp, q, sign))
 
 
@@ -379,8 +425,9 @@ def solve_array(memo, K, prm, np):
 def _stacked(K, prm, np):
     """The inputs as an n x 13 array (the known points' x, y, then the dimensions) and the
     size of the largest dimension."""
-    cols = [np.asarray(c, dtype=float) for xy in K for c in xy] + \
-        [np.asarray(p, dtype=float) for p in prm]
+    cols = [np.asarray(c, dtype=float) for xy in K for c in xy] + [
+        np.asarray(p, dtype=float) for p in prm
+    ]
     n = max([c.size for c in cols] + [1])
     cols = [np.broadcast_to(c, (n,)) if c.ndim else np.full(n, float(c)) for c in cols]
     data = np.stack(cols, axis=1)  # n x 13
@@ -403,7 +450,7 @@ def _walk(memo, data, sub_idx, size, inp_of, np):
     solved (``memo``), stopping each way at a limit: (that element, poses, signs) by
     element index."""
     ref = memo.array()
-    probe = sub_idx[::max(1, len(sub_idx) // 16)]  # where the walk starts: near a solved one
+    probe = sub_idx[:: max(1, len(sub_idx) // 16)]  # where the walk starts: near a solved one
     dist = np.abs(data[probe][:, None, :] - ref[None, :, :]).max(axis=2).min(axis=1)
     a = probe[int(np.argmin(dist))]
     qs, signs = {}, {}
@@ -413,7 +460,7 @@ def _walk(memo, data, sub_idx, size, inp_of, np):
     qs[a] = qa
     signs[a] = det_sign(qa, inp_of(a))
     pos = sub_idx.index(a)
-    for order in (sub_idx[pos + 1:], sub_idx[:pos][::-1]):
+    for order in (sub_idx[pos + 1 :], sub_idx[:pos][::-1]):
         prev = a
         for i in order:
             q = follow(qs[prev], inp_of(prev), inp_of(i), size, signs[prev])
@@ -459,8 +506,13 @@ def _between(data, size, qs, signs, np):
             q, res, det = newton_step(tuple(q), Kx, pr, np.cos, np.sin)
         q, res, det = newton_step(tuple(q), Kx, pr, np.cos, np.sin)
         big = np.maximum(size, np.abs(data[:, :6]).max(axis=1))
-        good = inside & np.isfinite(res) & (res <= 1e3 * _CONVERGED * big) & \
-            (np.sign(det) == ks[lo]) & (np.sign(det) == ks[hi])
+        good = (
+            inside
+            & np.isfinite(res)
+            & (res <= 1e3 * _CONVERGED * big)
+            & (np.sign(det) == ks[lo])
+            & (np.sign(det) == ks[hi])
+        )
     x, y, th = (np.where(good, c, 0.0) for c in q)
     for k in known:
         x[k], y[k], th[k] = qs[int(k)]
@@ -471,5 +523,3 @@ def _between(data, size, qs, signs, np):
 def sign(d):
     """+1.0 for a positive ``d``, else -1.0."""
     return 1.0 if d > 0 else -1.0
-
-
