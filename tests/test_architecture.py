@@ -541,7 +541,6 @@ LONG_MODULES: dict = {
     "scene/records.py": 643,
     "scene/tables.py": 692,
     "solver/compiler.py": 731,
-    "steps/base.py": 678,
     "steps/collar.py": 756,
     "steps/rolling.py": 691,
     "steps/triad/__init__.py": 602,
