@@ -544,7 +544,6 @@ LONG_MODULES: dict = {
     "steps/collar.py": 756,
     "steps/rolling.py": 691,
     "steps/triad/__init__.py": 602,
-    "variants/__init__.py": 633,
 }
 
 
