@@ -535,7 +535,6 @@ LONG_MODULES: dict = {
     "forces/records.py": 639,
     "linkage/analysis.py": 632,
     "linkage/summary.py": 637,
-    "motion/solution.py": 630,
     "scene/inputs.py": 855,
     "scene/reading.py": 672,
     "scene/records.py": 643,
