@@ -542,7 +542,6 @@ LONG_MODULES: dict = {
     "solver/compiler.py": 731,
     "steps/collar.py": 756,
     "steps/rolling.py": 691,
-    "steps/triad/__init__.py": 602,
 }
 
 

@@ -16,6 +16,7 @@ from ...common.numbers import in_units
 from ..base import Step, sub, unit
 from ..rounding import two_lines
 from . import goodman
+from .recognition import plate_of, triangle_offsets
 from .loop import (
     Memo,
     acceleration,
@@ -51,94 +52,11 @@ __all__ = [
 
 
 def recognise(g, name):
-    """A plate (a link with carried points: a body of three or more points, none known)
-    with ``name`` among three of its points that each have exactly one unused link to a
-    known point; no other kind can find any point when this is tried."""
-    for key in g.bodies_of(name):
-        if key in g.used_links:
-            continue
-        b = g.body(key)
-        if len(b) < 3 or any(p in g.P for p in b):
-            continue
-        verts = []
-        for p in b:
-            free = [f for f in g.free(p) if f[0] != key]
-            if len(free) == 1:
-                verts.append((p, free[0]))
-        if name not in [v[0] for v in verts] or len(verts) < 3:
-            continue
-        verts = verts[:3]
-        if len({f[0] for _, f in verts}) < 3:
-            continue  # one link to two vertices: no triad
-        f = b
-        (p1, (k1, K1, l1)), (p2, (k2, K2, l2)), (p3, (k3, K3, l3)) = verts
-        return Triad(
-            g.next_index,
-            (p1, p2, p3),
-            key,
-            (K1, K2, K3),
-            (k1, k2, k3),
-            (l1, l2, l3),
-            (f[p2][0] - f[p1][0], f[p2][1] - f[p1][1], f[p3][0] - f[p1][0], f[p3][1] - f[p1][1]),
-            unit=g.unit,
-            uname=g.uname,
-        )
-    return _triangle(g, name)
-
-
-def _one_free(g, p, exclude):
-    free = [f for f in g.free(p) if f[0] not in exclude]
-    return free[0] if len(free) == 1 else None
-
-
-def _triangle(g, name):
-    """Three links joined in a triangle (a rigid plate made of links: name-X, X-Y, Y-name),
-    none of their points known, each point with one other link to a known point."""
-    ends = {}
-    for key in g.bodies_of(name):
-        b = g.body(key)
-        if key in g.used_links or len(b) != 2:
-            continue
-        other = next(p for p in b if p != name)
-        if other not in g.P:
-            ends.setdefault(other, key)
-    names = list(ends)
-    for i, X in enumerate(names):
-        for Y in names[i + 1 :]:
-            side = next(
-                (k for k in g.bodies_of(X) if k not in g.used_links and set(g.body(k)) == {X, Y}),
-                None,
-            )
-            if side is None:
-                continue
-            tri = {ends[X], side, ends[Y]}
-            free = [(p, _one_free(g, p, tri)) for p in (name, X, Y)]
-            if any(f is None for _, f in free) or len({f[0] for _, f in free}) < 3:
-                continue
-            (p1, (k1, K1, l1)), (p2, (k2, K2, l2)), (p3, (k3, K3, l3)) = free
-            a = g.bodies.distance(ends[X], name, X)
-            b = g.bodies.distance(side, X, Y)
-            c = g.bodies.distance(ends[Y], Y, name)
-            return Triad(
-                g.next_index,
-                (p1, p2, p3),
-                ends[X],
-                (K1, K2, K3),
-                (k1, k2, k3),
-                (l1, l2, l3),
-                _triangle_offsets(a, b, c, 1.0),
-                unit=g.unit,
-                uname=g.uname,
-                sides=((side, X, Y), (ends[Y], Y, name)),
-            )
-    return None
-
-
-def _triangle_offsets(a, b, c, hand):
-    """V2 - V1 and V3 - V1 of a triangle with V1V2 = a, V2V3 = b, V3V1 = c, V3 on the
-    side ``hand`` (+1: left of V1 -> V2)."""
-    x3 = (a * a + c * c - b * b) / (2.0 * a)
-    return (a, 0.0, x3, hand * max(c * c - x3 * x3, 0.0) ** 0.5)
+    """The triad finding ``name`` (:func:`.recognition.plate_of`: a plate, or three links
+    in a triangle, whose three vertices each hang on one link from a known point), or None;
+    no other kind can find any point when this is tried."""
+    found = plate_of(g, name)
+    return None if found is None else Triad(g.next_index, unit=g.unit, uname=g.uname, **found)
 
 
 def _any_assembly(K, prm, np):
@@ -232,7 +150,7 @@ class Triad(Step):
         if self.sides:
             p1, p2, _ = self.points
             (k2, a2, b2), (k3, a3, b3) = self.sides
-            return own + _triangle_offsets(
+            return own + triangle_offsets(
                 bodies.distance(self.plate, p1, p2),
                 bodies.distance(k2, a2, b2),
                 bodies.distance(k3, a3, b3),
