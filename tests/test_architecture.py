@@ -541,7 +541,6 @@ LONG_MODULES: dict = {
     "scene/tables.py": 692,
     "solver/compiler.py": 731,
     "steps/collar.py": 756,
-    "steps/rolling.py": 691,
 }
 
 
