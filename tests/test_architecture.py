@@ -534,7 +534,6 @@ def test_a_condition_is_read_as_an_angle_in_one_place():
 LONG_MODULES: dict = {
     "forces/records.py": 639,
     "linkage/analysis.py": 632,
-    "linkage/summary.py": 637,
     "scene/inputs.py": 855,
     "scene/reading.py": 672,
     "scene/records.py": 643,
@@ -578,7 +577,6 @@ LONG_FUNCTIONS = {
     "draw/symbols.py:ground_symbol",
     "linkage/analysis.py:_output_motion",
     "linkage/engine.py:_engine_lines",
-    "linkage/summary.py:finish",
     "page/data.py:page_data",
     "scene/angles.py:read_angle",
     "scene/answers.py:answer",
