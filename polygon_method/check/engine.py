@@ -18,6 +18,8 @@ from ..linkage.flywheel import turning_moment
 from ..motion.solution import solve
 from .verdicts import ROUNDING, Verdict
 
+__all__ = ["ENGINE_KEYS", "engine_value", "engine_verdict"]
+
 #: answer key -> (unit kind, SI unit, what it is)
 ENGINE_KEYS = {
     "piston_effort": ("force", "N", "the piston effort"),
@@ -46,7 +48,7 @@ def _refuse(sol, ans, why):
     raise SceneError(f"{ans.key}: {why}", key=f"[answers] {ans.key}", line=ans.line)
 
 
-def _value(sol, key, scene=None):
+def engine_value(sol, key, scene=None):
     """The exact value of ``key`` for ``scene`` (default the solution's), or None where the
     scene cannot give it."""
     sc = scene or sol.scene
@@ -91,7 +93,9 @@ def _slips(sol, key, correct):
             elif key in ("rod_thrust", "side_thrust"):
                 v = None  # (the closed forms give these from the piston effort alone)
             else:
-                v = _value(sol, key, replace(sc, masses=tuple(m for m in sc.masses if not m.block)))
+                v = engine_value(
+                    sol, key, replace(sc, masses=tuple(m for m in sc.masses if not m.block))
+                )
         except PolygonMethodError:
             v = None
         if v is not None:
@@ -164,8 +168,9 @@ def _gas_alone(sol, key):
     return e.F_T * F_P / e.F_P if e.F_P else None
 
 
-def engine_verdict(sol, ans, tolerance) -> Verdict:
-    """The :class:`Verdict` on one of the engine chapter's answers."""
+def _correct(sol, ans) -> float:
+    """The right value of the engine chapter's answer ``ans``, or the answer refused (a
+    :class:`SceneError` naming it) where the scene cannot give it."""
     key = ans.key
     if key in _INSTANT and not sol.scene.has_forces:
         _refuse(
@@ -180,7 +185,7 @@ def engine_verdict(sol, ans, tolerance) -> Verdict:
             "[masses] (the reciprocating parts), [gravity] or [indicator]",
         )
     try:
-        correct = _value(sol, key)
+        correct = engine_value(sol, key)
     except PolygonMethodError as exc:
         _refuse(sol, ans, exc.message)
     if correct is None:
@@ -196,6 +201,25 @@ def engine_verdict(sol, ans, tolerance) -> Verdict:
                 else "the scene is no engine (a gas force on a slider crank's piston)"
             ),
         )
+    return correct
+
+
+def _slip(sol, key, given, correct, rel, unit) -> tuple:
+    """(code, words) of the classic slip ``given`` matches (within ``rel``), or (None, None)."""
+    for v, code, words in _slips(sol, key, correct):
+        if abs(given - v) <= max(rel * abs(v), 1e-300) * (1 + 1e-12):
+            return code, (
+                f"{ENGINE_KEYS[key][2]} matches {words} "
+                f"({v:.4g} {unit}); the correct value is "
+                f"{correct:.4g} {unit}"
+            )
+    return None, None
+
+
+def engine_verdict(sol, ans, tolerance) -> Verdict:
+    """The :class:`Verdict` on one of the engine chapter's answers."""
+    key = ans.key
+    correct = _correct(sol, ans)
     unit = ENGINE_KEYS[key][1]
     if key != "T_mean":  # sizes (a shaking moment's sense is not asked)
         correct = abs(correct)
@@ -209,26 +233,15 @@ def engine_verdict(sol, ans, tolerance) -> Verdict:
     )
     rel = rel if rel is not None else ROUNDING
     tol = rel * abs(correct)
-    if (
-        correct == 0.0 and key == "T_mean"
-    ):  # a mean of nought: to the tolerance of the greatest turning moment
+    if correct == 0.0 and key == "T_mean":
+        # a mean of nought: to the tolerance of the greatest turning moment
         tm = turning_moment(sol.scene)
         tol = rel * max(abs(tm.T_max), abs(tm.T_min))
     err = abs(given - correct)
     ok = err <= tol * (1 + 1e-12)
     mistake = diagnosis = None
     if not ok:
-        for v, code, words in _slips(sol, key, correct):
-            if abs(given - v) <= max(rel * abs(v), 1e-300) * (1 + 1e-12):
-                mistake, diagnosis = (
-                    code,
-                    (
-                        f"{ENGINE_KEYS[key][2]} matches {words} "
-                        f"({v:.4g} {unit}); the correct value is "
-                        f"{correct:.4g} {unit}"
-                    ),
-                )
-                break
+        mistake, diagnosis = _slip(sol, key, given, correct, rel, unit)
     return Verdict(
         key,
         ans.raw,
