@@ -101,31 +101,19 @@ class _Diagnoser:
 
     # -- candidates
     def candidates(self, ans, signed):
+        """Every known mistake's value for the answer ``ans`` (``signed``: compared with its
+        sign), in the order they are matched: the sense, the speed and the factors, the
+        kind's own slips, the mechanism set up otherwise, a decimal slip, then another
+        quantity of the problem."""
         sol, sc = self.sol, self.sc
         kind, names = ans.kind, ans.names
         correct = sol.value(kind, names)
-        out = []
-        val = lambda s: self.cmp(s.value(kind, names), signed)  # noqa: E731
-        if signed:
-            word = "cw" if correct > 0 else "ccw"
-            if kind in ("vs", "as"):
-                out.append(
-                    _Candidate(-correct, "sense", "the direction along the guide is reversed")
-                )
-            else:
-                out.append(
-                    _Candidate(
-                        -correct,
-                        "sense",
-                        f"the sense is wrong ({word} given; "
-                        f"it turns {'ccw' if correct > 0 else 'cw'})",
-                    )
-                )
+        out = self._sense(kind, correct) if signed else []
         if kind != "torque":
             for factor, code, words in _speed_mistakes(sc):
                 alt = self.alts.speed(factor)
                 if alt is not None:
-                    out.append(_Candidate(val(alt), code, words))
+                    out.append(_Candidate(self.cmp(alt.value(kind, names), signed), code, words))
         elif not sc.has_forces:
             out += self.torque(signed)
         if kind in ("F", "N", "Fc", "Fi", "Ci", "h") or (kind == "torque" and sc.has_forces):
@@ -134,6 +122,34 @@ class _Diagnoser:
             _AS_KIND.get(kind, kind), ()
         ) + self.unit_slips(kind):
             out.append(_Candidate(self.cmp(correct, signed) * factor, code, words))
+        out += self._of_the_kind(ans, signed)
+        out += self._set_up_otherwise(ans, signed)
+        for factor, code, words in _DECIMAL:
+            out.append(_Candidate(self.cmp(correct, signed) * factor, code, words))
+        # last: another quantity of the problem (a named mistake of the same value first)
+        out += confusions.other_quantities(self, ans, signed)
+        return out
+
+    @staticmethod
+    def _sense(kind, correct) -> list:
+        """The sense reversed (a direction along the guide, or cw for ccw)."""
+        if kind in ("vs", "as"):
+            return [_Candidate(-correct, "sense", "the direction along the guide is reversed")]
+        word = "cw" if correct > 0 else "ccw"
+        return [
+            _Candidate(
+                -correct,
+                "sense",
+                f"the sense is wrong ({word} given; it turns {'ccw' if correct > 0 else 'cw'})",
+            )
+        ]
+
+    def _of_the_kind(self, ans, signed) -> list:
+        """The slips of the answer's own kind: a relative velocity for an absolute one, a
+        per-length slip, a gear ratio, a contact point taken at rest, a Coriolis component
+        left out, an absolute velocity for a sliding one, a rubbing slip."""
+        kind, names = ans.kind, ans.names
+        out = []
         if kind in ("vu", "au"):
             out += confusions.under_block(self, ans)
         if kind in ("v", "a"):
@@ -149,16 +165,24 @@ class _Diagnoser:
         if kind in ("a", "alpha"):
             out += self.step_coriolis_left_out(kind, names, signed)
         if kind == "vs":
-            X = sc.slider(names[0]).point  # a peg's slot: vs_P_OA is of the peg P
+            X = self.sc.slider(names[0]).point  # a peg's slot: vs_P_OA is of the peg P
             out.append(
                 _Candidate(
-                    sol.speed(X),
+                    self.sol.speed(X),
                     "absolute_for_relative",
                     f"the absolute velocity of {X} given for its sliding velocity",
                 )
             )
         if kind == "rub":
             out += self.rubbing(names[0])
+        return out
+
+    def _set_up_otherwise(self, ans, signed) -> list:
+        """The mechanism set up otherwise: the other assembly branch, the crank's angle
+        read otherwise, the angle in degrees taken as radians."""
+        sc, kind, names = self.sc, ans.kind, ans.names
+        val = lambda s: self.cmp(s.value(kind, names), signed)  # noqa: E731
+        out = []
         for X, side, alt in self.alts.branches():
             try:
                 out.append(
@@ -170,8 +194,10 @@ class _Diagnoser:
                 )
             except (KeyError, TypeError):
                 pass
+        if kind == "torque":
+            return out
         for slip, alt in self.alts.angle_slips():
-            if alt is not None and kind != "torque":
+            if alt is not None:
                 out.append(
                     _Candidate(
                         val(alt),
@@ -182,7 +208,7 @@ class _Diagnoser:
                     )
                 )
         alt = self.alts.angle_as_radians()
-        if alt is not None and kind != "torque":
+        if alt is not None:
             out.append(
                 _Candidate(
                     val(alt),
@@ -190,10 +216,6 @@ class _Diagnoser:
                     "the crank angle in degrees used as radians (calculator in RAD mode)",
                 )
             )
-        for factor, code, words in _DECIMAL:
-            out.append(_Candidate(self.cmp(correct, signed) * factor, code, words))
-        # last: another quantity of the problem (a named mistake of the same value first)
-        out += confusions.other_quantities(self, ans, signed)
         return out
 
     def relative(self, ans, signed):
