@@ -8,7 +8,8 @@ from __future__ import annotations
 import math
 
 from ..polygons.scales import Scale
-from .diagrams import _drive, _mechanism
+from .diagrams import _drive
+from .mechanism import mechanism
 from .sketch import _header, _Sketch, _text_size
 from .style import SMALL_PT
 
@@ -209,7 +210,7 @@ def centres_sketch(sol, scale: Scale, ic, window: float = WINDOW) -> _Sketch:
 
     sk.rings = RINGS
     sk.leader_clear = LEADER_CLEAR
-    _mechanism(sk, sol, scale, extra)
+    mechanism(sk, sol, scale, extra)
     n = ic.n
     _header(
         sk,
