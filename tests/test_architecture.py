@@ -562,8 +562,6 @@ LONG_FUNCTIONS = {
     "cli/commands.py:_cmd_draw",
     "draw/forces.py:_free_body",
     "draw/forces.py:_polygon",
-    "draw/sheet.py:_paint",
-    "draw/symbols.py:ground_symbol",
     "page/data.py:page_data",
     "scene/angles.py:read_angle",
     "scene/answers.py:answer",
@@ -586,7 +584,6 @@ LONG_FUNCTIONS = {
     "steps/rolling_dims.py:wheel_params",
     "steps/slider.py:construction",
     "steps/slotted.py:construction",
-    "steps/triad/goodman.py:_acceleration",
 }
 LONGEST = 80
 

@@ -165,48 +165,21 @@ def fixed_guide(sk, sc, sl, P, s, away=None):
     )
 
 
-def ground_symbol(sk, name, g, near, solid, soft=()):
-    """A fixed pivot: a bracket (triangle) from the pin to a hatched base, below the pin
-    where that keeps it off every link and block beyond the pin (``PIN_ZONE`` around it,
-    where the link's rounded end and the bracket meet), off the points ``near`` it and off
-    the ``soft`` shapes (the crank angle's sector and reference line); else turned as
-    little from below as that needs (15 deg steps); else where it overlaps the links and
-    points least, and of those the soft shapes least. Returns what it drew beyond the
-    pin's zone (a shape)."""
-    from shapely.geometry import LineString, MultiLineString, Point, Polygon
+#: the turns of a fixed pivot's bracket tried, in 15 deg steps from below: nearest first
+_BRACKET_TURNS = (0, *[k for j in range(1, 12) for k in (-j, j)], 12)
+
+
+def _bracket_turn(g, near, solid, soft, zone) -> float:
+    """The angle (rad) at which the bracket of the fixed pivot at ``g`` points from the pin
+    (see :func:`ground_symbol`): the first clear of everything, else the least overlap."""
+    from shapely.geometry import LineString, Point, Polygon
     from shapely.ops import unary_union
 
     bodies = unary_union(solid) if solid else None
-    zone = Point(g).buffer(PIN_ZONE, quad_segs=8)
     spots = [Point(p).buffer(0.12, quad_segs=4) for p in near]
     d, half, wide = 0.5, 0.3, 0.42
     best, best_cost = -math.pi / 2, (math.inf, math.inf)
-    for k in (
-        0,
-        -1,
-        1,
-        -2,
-        2,
-        -3,
-        3,
-        -4,
-        4,
-        -5,
-        5,
-        -6,
-        6,
-        -7,
-        7,
-        -8,
-        8,
-        -9,
-        9,
-        -10,
-        10,
-        -11,
-        11,
-        12,
-    ):
+    for k in _BRACKET_TURNS:
         th = -math.pi / 2 + k * math.pi / 12
         dx, dy = math.cos(th), math.sin(th)
         nx, ny = -dy, dx
@@ -238,10 +211,24 @@ def ground_symbol(sk, name, g, near, solid, soft=()):
         )
         cost = (round(hard, 9), round(sum(foot.intersection(q).area for q in soft), 9))
         if cost == (0.0, 0.0):
-            best = th
-            break
+            return th
         if cost < best_cost:
             best, best_cost = th, cost
+    return best
+
+
+def ground_symbol(sk, name, g, near, solid, soft=()):
+    """A fixed pivot: a bracket (triangle) from the pin to a hatched base, below the pin
+    where that keeps it off every link and block beyond the pin (``PIN_ZONE`` around it,
+    where the link's rounded end and the bracket meet), off the points ``near`` it and off
+    the ``soft`` shapes (the crank angle's sector and reference line); else turned as
+    little from below as that needs (15 deg steps); else where it overlaps the links and
+    points least, and of those the soft shapes least. Returns what it drew beyond the
+    pin's zone (a shape)."""
+    from shapely.geometry import LineString, MultiLineString, Point, Polygon
+
+    zone = Point(g).buffer(PIN_ZONE, quad_segs=8)
+    best = _bracket_turn(g, near, solid, soft, zone)
     dx, dy = math.cos(best), math.sin(best)
     nx, ny = -dy, dx
     d, half, wide = 0.5, 0.3, 0.42
