@@ -231,20 +231,16 @@ def _titles(res: SweepResult, fig, axes, clipped: bool) -> None:
     """The lower panels' axis label (the crank angle, or a driving block's place) and the
     figure's title: the scene's, what the dashes mark, and whether a range was cut."""
     sc = res.scene
-    driver = res.plan.steps[0]  # a block driver: its place is the axis
-    block = None if driver.periodic else driver.finds[0]
+    driver = res.plan.steps[0]  # a block or collar driver: its place is the axis
+    name, sym, _ = driver.parameter(sc)  # as the driver names it: "place of collar C on DC"
     for ax in axes[1]:
-        ax.set_xlabel(
-            "crank angle θ (°)"
-            if block is None
-            else f"place s_{block} of block {block} ({sc.units})"
-        )
+        ax.set_xlabel("crank angle θ (°)" if driver.periodic else f"{name}, {sym} ({sc.units})")
     title = sc.title or sc.file or "mechanism"
     key = (
         f"crank {sc.input.crank}; dashed: the scene's instant "
         f"({math.degrees(sc.input.angle):g} deg)"
-        if block is None
-        else f"block {block}; dashed: the scene's instant (s_{block} = "
+        if driver.periodic
+        else f"input: the {name}; dashed: the scene's instant ({sym} = "
         f"{sc.input.angle / sc.length_unit:g} {sc.units})"
         + ("; dotted red: limit positions" if res.limits else "")
         + ("; dash-dot: change points" if res.change_points else "")

@@ -111,6 +111,19 @@ class Solution(Motion):
         return t
 
     @property
+    def cylinder_force(self):
+        """(cylinder, F) where the motion is given as a cylinder's rate of extension vs (the
+        cylinder drives: the effort is a force along it, not a torque on the crank): F by
+        power balance, ``F vs = T omega``, + pushing its ends apart. None otherwise (no
+        loads, another driver, a standstill)."""
+        sc, t = self.scene, self.input_torque
+        g = sc.input.given
+        if t is None or g is None or g.kind != "vs" or g.value == 0 or sc.input.second:
+            return None
+        key = next((c.key for c in sc.cylinders if c.key == g.names[0]), None)
+        return None if key is None else (key, t * sc.input.omega / g.value)
+
+    @property
     def forces(self):
         """The force analysis (:class:`~polygon_method.forces.Forces`) where the scene gives
         masses or gravity, else None. Raises a one-line
