@@ -171,7 +171,7 @@ def _verdict(sol: Solution, ans, tolerance, tols, diag, clean: list) -> Verdict:
     tol, rule = answer_tolerance(sol, kind, ans.names, correct, tolerance, _tols=tols)
     err = abs(given - correct)
     rel = err / abs(correct) if correct != 0 else None
-    ok = err <= tol * (1 + 1e-12)
+    ok = err <= tol * (1 + ROUNDING)
     mistake = diagnosis = None
     if kind in _MAGNITUDES and ans.value < 0 and correct != 0:
         ok, mistake = False, "negative_magnitude"

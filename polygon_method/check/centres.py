@@ -113,7 +113,7 @@ def centre_verdict(sol, ans, tolerance, cache: list) -> Verdict:
             f"a centre: {10 * DRAWING_PRECISION_CM:g} mm on the configuration diagram at "
             f"{space.text}, / (2 sin gamma) where its lines cross under 30 deg"
         )
-    ok = err <= tol * (1 + 1e-12)
+    ok = err <= tol * (1 + ROUNDING)
     mistake, diagnosis = (None, None) if ok else _another_centre(sol, ic, c, gx, gy, tol)
     return Verdict(
         ans.key,

@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 
+from ..common.tolerances import FLOOR, SAME
 from ..common.errors import PolygonMethodError, SceneError
 from ..forces.engine import efforts, slider_crank
 from ..linkage.flywheel import turning_moment
@@ -72,8 +73,8 @@ def engine_value(sol, key, scene=None):
             }[key]
         )
     tm = turning_moment(sc)
-    if key == "T_mean":  # a mean within rounding of nought (1e-9 of the greatest) is nought
-        return tm.mean if abs(tm.mean) > 1e-9 * max(abs(tm.T_max), abs(tm.T_min)) else 0.0
+    if key == "T_mean":  # a mean within rounding of nought (SAME of the greatest) is nought
+        return tm.mean if abs(tm.mean) > SAME * max(abs(tm.T_max), abs(tm.T_min)) else 0.0
     if key == "dE_max":
         return tm.dE_max
     if tm.flywheel is None:
@@ -128,7 +129,7 @@ def _slips(sol, key, correct):
         tm = turning_moment(sc)
         if tm.lobes:
             big = max(abs(lb.energy) for lb in tm.lobes)
-            if abs(big - tm.dE_max) > 1e-9 * tm.dE_max:
+            if abs(big - tm.dE_max) > SAME * tm.dE_max:
                 f = big / tm.dE_max
                 out.append(
                     (
@@ -207,7 +208,7 @@ def _correct(sol, ans) -> float:
 def _slip(sol, key, given, correct, rel, unit) -> tuple:
     """(code, words) of the classic slip ``given`` matches (within ``rel``), or (None, None)."""
     for v, code, words in _slips(sol, key, correct):
-        if abs(given - v) <= max(rel * abs(v), 1e-300) * (1 + 1e-12):
+        if abs(given - v) <= max(rel * abs(v), FLOOR) * (1 + ROUNDING):
             return code, (
                 f"{ENGINE_KEYS[key][2]} matches {words} "
                 f"({v:.4g} {unit}); the correct value is "
@@ -238,7 +239,7 @@ def engine_verdict(sol, ans, tolerance) -> Verdict:
         tm = turning_moment(sol.scene)
         tol = rel * max(abs(tm.T_max), abs(tm.T_min))
     err = abs(given - correct)
-    ok = err <= tol * (1 + 1e-12)
+    ok = err <= tol * (1 + ROUNDING)
     mistake = diagnosis = None
     if not ok:
         mistake, diagnosis = _slip(sol, key, given, correct, rel, unit)

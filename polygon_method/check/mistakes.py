@@ -7,6 +7,7 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 
+from ..common.tolerances import SAME
 from ..common.errors import PolygonMethodError
 from ..forces import analyse, force_value
 from ..scene import GuideSlider, Gravity
@@ -409,7 +410,7 @@ class _Diagnoser:
         for st in sol.plan.steps:
             wrong = getattr(st, "coriolis_left_out", lambda sol: {})(sol).get(key)
             right = sol.value(kind, names)
-            if wrong is not None and abs(abs(wrong) - abs(right)) > 1e-9 * abs(right):
+            if wrong is not None and abs(abs(wrong) - abs(right)) > SAME * abs(right):
                 out.append(
                     _Candidate(
                         self.cmp(wrong, signed) if kind == "alpha" else wrong,
@@ -562,7 +563,7 @@ class _Diagnoser:
             if dev <= window:
                 rel = dev / max(abs(c.value), 1e-300)
                 # equal to rounding: the simpler mistake (earlier in the list) first
-                matches.append((rel if rel > 1e-9 else 0.0, order, c))
+                matches.append((rel if rel > SAME else 0.0, order, c))
         slip = _slip(ans.raw, given, correct, signed) or self.own_slip(ans)
         if slip is not None:  # its digits match exactly: before a mistake that only comes
             matches.append((_SLIP_RANK, 0, slip))  # near (more than rounding off)
@@ -579,7 +580,7 @@ class _Diagnoser:
             and d <= 0.005
             and matches[0][0] <= 0.005
             and not (  # the same value, named twice
-                c.code == "another_quantity" and abs(c.value - best.value) <= 1e-9 * abs(best.value)
+                c.code == "another_quantity" and abs(c.value - best.value) <= SAME * abs(best.value)
             )
         ]
         if others:

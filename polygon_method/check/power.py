@@ -8,6 +8,7 @@ from __future__ import annotations
 import itertools
 import math
 
+from ..common.tolerances import SAME
 from ..common.numbers import textbook as _g
 from ..common.numbers import working as _num
 from .alternatives import _Candidate, _speed_mistakes
@@ -229,7 +230,7 @@ def torque(d, signed):
         else:
             full += abs(load.torque * sol.W[load.target])
     power = sum(p for _, p in exact_terms)
-    if abs(full - abs(power)) > 1e-9 * full:
+    if abs(full - abs(power)) > SAME * full:
         out.append(
             _Candidate(
                 sign(math.copysign(full, -power / w)),

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import math
 
+from ..common.tolerances import ON_PAPER, SAME, ULP
 from ..polygons.scales import Scale
 from .diagrams import _drive
 from .mechanism import mechanism
@@ -61,7 +62,7 @@ def _clip(box, p, d):
     """The segment of the line p + t d inside ``box`` (Liang-Barsky), or None."""
     t0, t1 = -math.inf, math.inf
     for q, dq, lo, hi in ((p[0], d[0], box[0], box[2]), (p[1], d[1], box[1], box[3])):
-        if abs(dq) < 1e-15:
+        if abs(dq) < ULP:
             if not lo <= q <= hi:
                 return None
             continue
@@ -127,7 +128,7 @@ def _kennedy_lines(sk, ic, box, cm):
                 continue
             p0 = pts[0]
             p1 = max(pts[1:], key=lambda q: math.dist(q, p0), default=p0)
-            if math.dist(p0, p1) > 1e-9 * (box[2] - box[0]):
+            if math.dist(p0, p1) > SAME * (box[2] - box[0]):
                 d = (p1[0] - p0[0], p1[1] - p0[1])
             else:  # the known points at one place (two centres at one pin)
                 inf = next((x for x in (a, b, c) if x.point is None), None)
@@ -249,7 +250,7 @@ def _chord_numbers(sk, chords, pos):
             m = chord.interpolate(t, normalized=True)
             patch = box(m.x - w / 2, m.y - h / 2, m.x + w / 2, m.y + h / 2)
             gap = min([patch.distance(g) for g in others + taken] + [_ROOM])
-            if best is None or gap > best[0] + 1e-9:
+            if best is None or gap > best[0] + ON_PAPER:
                 best = (gap, m.x, m.y, patch)
         _, x, y, patch = best
         taken.append(patch)

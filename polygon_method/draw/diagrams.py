@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 import re
 
+from ..common.tolerances import ON_PAPER, ROUNDING, SAME
 from ..solver.given import stated
 from ..polygons.constructions import (
     acceleration_constructions,
@@ -67,7 +68,7 @@ def _auxiliary(sk, sol, scale, P):
     xs = [x for x, _ in P.values()]
     ys = [y for _, y in P.values()]
     cx, cy = (max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2
-    reach = max(max(xs) - min(xs), max(ys) - min(ys), 1e-9)
+    reach = max(max(xs) - min(xs), max(ys) - min(ys), ON_PAPER)
     for st in sol.plan.steps:
         for label, (x, y), ends in st.auxiliary(sol.P):
             xy = (x / s, y / s)
@@ -120,7 +121,7 @@ def _polygon(sol, scale: Scale, phase: str) -> _Sketch:
     cons = velocity_constructions(sol) if phase == "velocity" else acceleration_constructions(sol)
     vectors = drawn_vectors(sol, phase)
     ref = max([v.magnitude for v in vectors] + [math.hypot(*p) for p in D.values()] + [0.0])
-    tol = 1e-9 * ref if ref else 1e-12
+    tol = SAME * ref if ref else ROUNDING
     sk = _Sketch()
     _images(sk, sol, cons, D, cm, phase)
     marks = _construction_lines(sk, cons, tol, s, phase)

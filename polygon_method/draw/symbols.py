@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 
+from ..common.tolerances import ON_PAPER, ROUNDING
 from .style import BAR, BLOCK_CLEAR, BLOCK_MIN, JOINT_R, MARK_PT, PIN_ZONE
 
 __all__ = [
@@ -99,7 +100,7 @@ def block_size(sc, point, P):
     X = P[point]
     for q in sc.point_names:
         d = math.dist(P[q], X)
-        if q == point or d < 1e-9:
+        if q == point or d < ON_PAPER:
             continue
         # the rectangle's half-diagonal reaches sqrt(1 + 0.55^2) / 2 of its length
         room = (d - JOINT_R - BLOCK_CLEAR) / (0.5 * math.hypot(1.0, 0.55))
@@ -294,11 +295,11 @@ def crank_arc(sc, P, feet=()):
     # the angle the scene states, the way it states it (270 deg ccw is not 90 deg cw), less
     # whole turns
     th = math.copysign(math.fmod(abs(inp.angle), 2 * math.pi), inp.angle)
-    if abs(abs(th) - 2 * math.pi) < 1e-12:
+    if abs(abs(th) - 2 * math.pi) < ROUNDING:
         th = 0.0
     crank = math.dist(O, P[inp.tip])
     r = min(max(min(0.55 * crank, crank - 0.6), 0.45), 1.4)
-    if abs(th) < 1e-9:
+    if abs(th) < ON_PAPER:
         return O, th, r
     others = [P[q] for q in sc.point_names if q not in (inp.pivot, inp.tip)]
     lo, hi = 0.45, max(0.45, min(1.4, crank - JOINT_R - ARC_CLEAR))
@@ -312,7 +313,7 @@ def crank_arc(sc, P, feet=()):
     if not clear(r):
         for k in range(1, 40):
             for cand in (r - 0.05 * k, r + 0.05 * k):
-                if lo - 1e-9 <= cand <= hi + 1e-9 and clear(cand):
+                if lo - ON_PAPER <= cand <= hi + ON_PAPER and clear(cand):
                     return O, th, cand
     return O, th, r
 
@@ -352,7 +353,7 @@ def crank_angle_shapes(arc):
     from shapely.geometry import LineString, Polygon
 
     O, th, r = arc
-    if abs(th) < 1e-9:
+    if abs(th) < ON_PAPER:
         return []
     n = max(8, int(abs(math.degrees(th)) / 3))
     arc = [
@@ -369,7 +370,7 @@ def crank_angle(sk, arc):
     """The crank angle: a reference line along +x from the crank's pivot and an arc from it
     to the crank."""
     O, th, r = arc
-    if abs(th) < 1e-9:
+    if abs(th) < ON_PAPER:
         return
     sk.line(
         [O, (O[0] + r + 0.5, O[1])],
@@ -388,7 +389,7 @@ def crank_angle_label(sk, arc):
     """The crank angle's value written beside its arc (``arc``: centre, angle, radius), where it is
     clear."""
     O, th, r = arc
-    if abs(th) < 1e-9:
+    if abs(th) < ON_PAPER:
         return
     mids = [(O[0] + r * math.cos(th * f), O[1] + r * math.sin(th * f)) for f in (0.5, 0.3, 0.7)]
     sk.label(deg(abs(th)), mids, MARK_PT, gid="label-crank-angle", leader=True)

@@ -11,7 +11,7 @@ import numpy as np
 
 from ..solver.derived import transmission_angle
 from ..common.errors import TOL, SceneError, SingularStepError
-from ..common.tolerances import ROUNDING
+from ..common.tolerances import DISTINCT, ROUNDING
 from ..solver.compiler import compile_plan
 from ..scene import Scene
 from ..motion.solution import solve
@@ -375,7 +375,7 @@ def _crossed(fr, fb: FourBar) -> bool:
     (x2, y2), (xa, ya) = fr.P[fb.o2], fr.P[fb.a]
     (x4, y4), (xb, yb) = fr.P[fb.o4], fr.P[fb.b]
     d = math.hypot((xa - x2)[0] - (xb - x4)[0], (ya - y2)[0] - (yb - y4)[0])
-    return d > 1e-6 * fb.r2
+    return d > DISTINCT * fb.r2
 
 
 def _grashof_lines(g: Grashof, fb: FourBar, scene) -> list:

@@ -6,6 +6,7 @@ import math
 
 import numpy as np
 
+from ..common.tolerances import ROUNDING
 from ..scene import Scene
 from ..solver.tracking import TWO_PI
 from .cycle import _Cycle, stands_still
@@ -80,7 +81,7 @@ def _engine_lines(cyc: _Cycle, sk: SliderCrank, scene) -> list:
     }
     for name, unit, ex, ap, form in rows:
         err = _err(ap, ex, sizes[unit])
-        zero = 1e-12 * sizes[unit]  # rounding noise about a true zero is written 0
+        zero = ROUNDING * sizes[unit]  # rounding noise about a true zero is written 0
         ex, ap = (0.0 if abs(v) <= zero else v for v in (ex, ap))
         out.append(f"  {name:<{wlab}} {ex:>12.6g} {ap:>12.6g} {err:>9}  {form} ({unit})")
     out.append(_max_velocity_line(cyc, sk, d, th_idc, sg * W))
@@ -107,8 +108,8 @@ def _max_velocity_line(cyc: _Cycle, sk: SliderCrank, d, th_idc, w) -> str:
 
 def _err(approx, exact, size) -> str:
     """The formula's error in per cent of the exact value; "n/a" where the exact value is
-    zero (to rounding, 1e-12 of the quantity's ``size``) and the formula's is not."""
-    zero = 1e-12 * size
+    zero (to rounding, :data:`ROUNDING` of the quantity's ``size``) and the formula's is not."""
+    zero = ROUNDING * size
     if abs(exact) <= zero:
         return "0" if abs(approx) <= zero else "n/a"
     return f"{100.0 * (approx - exact) / abs(exact):+.3f} %"

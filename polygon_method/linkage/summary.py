@@ -10,7 +10,7 @@ import math
 import numpy as np
 
 from ..solver.kinematics import Motion
-from ..common.tolerances import crossing_angle
+from ..common.tolerances import REFINED, ROUNDING, SAME, TOL, crossing_angle
 from ..scene import FixedPath, Scene
 from ..motion.sweeps import (
     SweepResult,
@@ -330,17 +330,17 @@ class _Reducer:
         for name, (mx, imx, mn, imn, unit, what, cmax, cmin) in self.best.items():
             own = noise.get(name)  # each quantity's own error bound where it is reached
             if own is None:  # (a rubbing velocity, the input effort: the sizes the input sets)
-                zmx = zmn = 1e-9 * scales.get(unit, 0.0)
+                zmx = zmn = SAME * scales.get(unit, 0.0)
             else:
                 zmx, zmn = own(imx), own(imn)
             mx, mn = (0.0 if abs(mx) <= zmx else mx), (0.0 if abs(mn) <= zmn else mn)
             scale = max(abs(mx), abs(mn))
-            if n > 1 and (mx - mn <= 1e-10 * scale or scale == 0.0):
+            if n > 1 and (mx - mn <= TOL.negligible * scale or scale == 0.0):
                 rows.append([name, unit, mx, None, mn, None, what])
                 continue
             row = [name, unit, mx, float(theta[imx]), mn, float(theta[imn]), what]
             rows.append(row)
-            if refine and spacing and spacing > 1e-12:
+            if refine and spacing and spacing > ROUNDING:
                 for sense, i, cand in ((1.0, imx, cmax), (-1.0, imn, cmin)):
                     tasks += self._tasks(row, sense, i, cand, theta, spacing, limits)
         return rows, tasks
@@ -369,9 +369,9 @@ class _Reducer:
         return out
 
     def _refine_rows(self, tasks, spacing):
-        """Refine the ``tasks`` (:meth:`_refine`, down to about 1e-11 rad) and put each
+        """Refine the ``tasks`` (:meth:`_refine`, down to about :data:`REFINED` rad) and put each
         better extreme found into its row."""
-        passes = max(1, min(12, math.ceil(math.log(2 * spacing / 1e-11, 8))))
+        passes = max(1, min(12, math.ceil(math.log(2 * spacing / REFINED, 8))))
         self._refine(tasks, passes)
         for name, sense, _, _, val, t, row in tasks:
             if sense > 0 and val >= row[2]:
@@ -455,7 +455,7 @@ class _Reducer:
         return (f"the forces are not summarised: {self.forces_left_out}",)
 
     def scales(self) -> dict:
-        """Typical sizes per unit, below a 1e-9 part of which a value is zero (rounding);
+        """Typical sizes per unit, below a :data:`SAME` part of which a value is zero (rounding);
         forces and moments: the largest force, it times the longest length."""
         out = self._motion_scales()
         if self.force_names:

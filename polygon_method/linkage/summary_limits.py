@@ -13,6 +13,7 @@ import math
 
 import numpy as np
 
+from ..common.tolerances import AT_LIMIT, SAME, SMOOTH
 from ..scene import FixedPath
 
 __all__ = [
@@ -24,8 +25,9 @@ __all__ = [
 ]
 
 #: inward offsets (rad) from a limit position at which a quantity's value is compared with
-#: its value at the limit itself (equal to 1e-7 of its kind: it is finite and smooth there)
-_AT_LIMIT = (1e-9, 2e-9)
+#: its value at the limit itself (equal to :data:`SMOOTH` of its kind: it is finite and
+#: smooth there)
+_AT_LIMIT = (AT_LIMIT, 2 * AT_LIMIT)
 
 
 def limit_positions(red, rows, theta, spacing):
@@ -87,7 +89,7 @@ def limits_in(red, theta, spacing):
     if dom.full_turn or not dom.limits or not len(theta):
         return []
     t, _ = dom.map(np.asarray(theta, dtype=float))
-    reach = 1.5 * (spacing or 0.0) + 1e-9
+    reach = 1.5 * (spacing or 0.0) + SAME
     out = []
     for lp in dom.limits:
         if float(np.min(np.abs(t - lp.theta))) <= reach:
@@ -100,8 +102,8 @@ def at_limits(red, rows, theta, spacing):
     """Each quantity evaluated at the limit positions within the requested angles, the
     crank's exact angles there, and taken as the maximum or minimum where it is beyond
     the samples': the transmission angle is 0 there, a block's travel ends there. A
-    quantity is taken only where it is finite and smooth at the limit (its values 1e-9
-    and 2e-9 rad inside agree with it to 1e-7 of its kind); one that grows without bound
+    quantity is taken only where it is finite and smooth at the limit (its values one and
+    two :data:`AT_LIMIT` inside agree with it to :data:`SMOOTH` of its kind); one that grows without bound
     there is marked so (:func:`unbounded_at_limits`)."""
     scales = red.scales()
     for lp, inward in limits_in(red, theta, spacing):
@@ -118,7 +120,7 @@ def at_limits(red, rows, theta, spacing):
                 continue
             exact = u == "deg" or nm.startswith("s_")  # positions: exact at the limit
             if not exact:
-                tol = 1e-7 * max(scales.get(u, 0.0), abs(v))
+                tol = SMOOTH * max(scales.get(u, 0.0), abs(v))
                 if not (np.all(np.isfinite(vals)) and np.all(np.abs(vals - v) <= tol)):
                     continue
             if row[3] is None:  # a constant stays one

@@ -27,6 +27,7 @@ from ..draw.style import (
 )
 from ..solver.errorbound import USELESS
 from ..common.errors import TOL, PolygonMethodError
+from ..common.tolerances import PAGE
 from ..forces import analyse, side_label, Side
 from ..common.numbers import quiet, sense
 from ..draw.plots import MARKS, SERIES_COLORS
@@ -301,6 +302,7 @@ def page_data(fr: Frames) -> dict:
         "fullTurn": fr.full_turn,
         "limits": fr.limits_text,
         "cycle": fr.cycle_degrees,  # the angles shown modulo it (720: a four-stroke)
+        "tol": PAGE,  # the script's tolerances, by name (common/tolerances.py)
         "crank": sc.input.crank,
         "pivot": sc.input.pivot,
         **({} if sol.plan.steps[0].periodic else {"param": list(fr.parameter)}),

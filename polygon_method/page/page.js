@@ -17,6 +17,7 @@ const PT = 25.4 / 72;         // a point (line widths, dashes) in mm
 const FS = 3.6;               // the labels' size (mm)
 const FILL = {configuration: 0.86, velocity: 0.8, acceleration: 0.8};  // most of a panel a diagram takes
 const REST = 0.01;            // a polygon under this share of its median size is at rest
+const TOL = D.tol;            // the tolerances, by name: same, rounding, floor
 let frame = D.start;
 
 // numbers as the tool writes them: four significant figures, no exponent for usual sizes
@@ -95,7 +96,7 @@ function bbox(pts) {
 const span = (b) => Math.max(b[2] - b[0], b[3] - b[1]);
 function roundUp(x) {  // the smallest 1, 2 or 5 x 10^k that is at least x
   const e = Math.floor(Math.log10(x)), m = x / 10 ** e;
-  return [1, 2, 5, 10].find((s) => s >= m * (1 - 1e-9)) * 10 ** e;
+  return [1, 2, 5, 10].find((s) => s >= m * (1 - TOL.same)) * 10 ** e;
 }
 const factor = (phase) => phase === "configuration" ? D.unit : 1;  // SI per unit of the scale's text
 const unitText = (phase) => phase === "configuration" ? D.units : UNIT[phase];
@@ -116,7 +117,7 @@ function layout() {
         all = [Math.min(all[0], b[0]), Math.min(all[1], b[1]), Math.max(all[2], b[2]), Math.max(all[3], b[3])];
       }
       sizes.sort((a, b) => a - b);
-      v.rest = Math.max(REST * sizes[Math.floor(N / 2)], 1e-12);
+      v.rest = Math.max(REST * sizes[Math.floor(N / 2)], TOL.rounding);
       v.all = all;  // the configuration's box over the cycle
     }
   }
@@ -207,7 +208,7 @@ function poly(e, pts) { e.setAttribute("points", pts.map((a) => r3(a[0]) + "," +
 function clipLine(c, u, r) {
   let t0 = -Infinity, t1 = Infinity;
   for (const [p, q, lo, hi] of [[c[0], u[0], r[0], r[2]], [c[1], u[1], r[1], r[3]]]) {
-    if (Math.abs(q) < 1e-12) { if (p < lo || p > hi) return null; continue; }
+    if (Math.abs(q) < TOL.rounding) { if (p < lo || p > hi) return null; continue; }
     const a = (lo - p) / q, b = (hi - p) / q;
     t0 = Math.max(t0, Math.min(a, b)); t1 = Math.min(t1, Math.max(a, b));
   }
@@ -322,7 +323,7 @@ function update(phase, k) {
       let sx = 0, sy = 0;
       for (const p of D.points) { const c = P(p); const L = Math.hypot(c[0], c[1]) || 1; sx += c[0] / L; sy += c[1] / L; }
       const L = Math.hypot(sx, sy);
-      const u = L > 1e-9 ? [-sx / L, -sy / L] : [-0.7, 0.7];
+      const u = L > TOL.same ? [-sx / L, -sy / L] : [-0.7, 0.7];
       pole = keepIn([0.8 * fs * u[0], 0.8 * fs * u[1]], v.box, e.lastChild.nodeValue.length);
       place(e, pole);
       pole = [pole[0], pole[1] - 0.35 * fs];  // its middle, which the other labels keep clear of
@@ -357,7 +358,7 @@ function placeLabels(labels, phase, box, pole) {
     pts.every((c, i) => i === own || Math.hypot(q[0] - c[0], q[1] - c[1]) > 0.6 * fs);
   labels.forEach(([e], i) => {
     const c = pts[i], L = Math.hypot(c[0], c[1]);
-    const a0 = phase === "configuration" || L < 1e-9 ? -Math.PI / 4 : Math.atan2(c[1], c[0]);
+    const a0 = phase === "configuration" || L < TOL.same ? -Math.PI / 4 : Math.atan2(c[1], c[0]);
     let best = null;
     for (const turn of [0, 1, -1, 2, -2, 3, -3, 4]) {
       const a = a0 + turn * Math.PI / 4, q = [c[0] + 0.75 * fs * Math.cos(a), c[1] + 0.75 * fs * Math.sin(a)];
@@ -486,7 +487,7 @@ const PLOTS = [
 ];
 function roundTicks(lo, hi, most) {  // round ticks (1, 2, 5 x 10^k apart) over [lo, hi]
   const step = roundUp((hi - lo) / most), out = [];
-  for (let t = Math.ceil(lo / step - 1e-9) * step; t <= hi + 1e-9 * step; t += step) out.push(Math.abs(t) < 1e-9 * step ? 0 : t);
+  for (let t = Math.ceil(lo / step - TOL.same) * step; t <= hi + TOL.same * step; t += step) out.push(Math.abs(t) < TOL.same * step ? 0 : t);
   return out;
 }
 function typeset(parent, attrs, [base, s]) {
@@ -521,9 +522,9 @@ function buildPlots() {
     const q = (x) => all[Math.min(all.length - 1, Math.floor(x * all.length))];
     const lo5 = q(0.05), hi95 = q(0.95), room = 0.5 * (hi95 - lo5);
     let ymin = Math.min(0, Math.max(all[0], lo5 - room)), ymax = Math.max(0, Math.min(all[all.length - 1], hi95 + room));
-    if (!(ymax - ymin > 1e-12 * Math.max(Math.abs(ymin), Math.abs(ymax), 1e-300))) { ymax = ymin + Math.max(1, Math.abs(ymin)); }
+    if (!(ymax - ymin > TOL.rounding * Math.max(Math.abs(ymin), Math.abs(ymax), TOL.floor))) { ymax = ymin + Math.max(1, Math.abs(ymin)); }
     const yt = roundTicks(ymin, ymax, 4), step = yt.length > 1 ? yt[1] - yt[0] : ymax - ymin;
-    ymin = Math.min(ymin, Math.floor(ymin / step + 1e-9) * step); ymax = Math.max(ymax, Math.ceil(ymax / step - 1e-9) * step);
+    ymin = Math.min(ymin, Math.floor(ymin / step + TOL.same) * step); ymax = Math.max(ymax, Math.ceil(ymax / step - TOL.same) * step);
     const Y = (y) => T + (H - T - B) * (ymax - y) / (ymax - ymin);
     const clip = el(el(svg, "defs", {}), "clipPath", {id: id + "-clip"});
     el(clip, "rect", {x: L, y: T, width: W - L - R, height: H - T - B});
@@ -533,7 +534,7 @@ function buildPlots() {
       text(svg, {x: L - 3, y: r3(Y(y) + 3.5), class: "tick", "text-anchor": "end"}, fmt(y, 3));
     }
     const turned = Math.abs(t1 - t0), dstep = [5, 10, 15, 30, 45, 60, 90, 180].find((s) => turned / s <= 6) || 360;
-    for (let j = Math.ceil(Math.min(t0, t1) / dstep - 1e-9); j * dstep <= Math.max(t0, t1) + 1e-9; j++) {
+    for (let j = Math.ceil(Math.min(t0, t1) / dstep - TOL.same); j * dstep <= Math.max(t0, t1) + TOL.same; j++) {
       const t = j * dstep;  // a round angle, written between 0 and the cycle (360 or 720)
       el(svg, "line", {x1: r3(X(t)), y1: T, x2: r3(X(t)), y2: H - B, class: "grid"});
       text(svg, {x: r3(X(t)), y: H - B + 11, class: "tick", "text-anchor": "middle"}, D.param ? at(t) : String(inCycle(t)) + "°");

@@ -12,6 +12,7 @@ import math
 from dataclasses import dataclass
 from types import MappingProxyType
 
+from ..common.tolerances import LEAST_REACH
 from ..common.errors import TOL, AssemblyError, SingularStepError
 from .construction import (  # the records, here as before
     Construction,
@@ -466,7 +467,7 @@ class Step:
 
     def reach(self) -> float:
         """The largest length of the step (a scale for its tolerances)."""
-        return 1e-9
+        return LEAST_REACH
 
     # ----- words
     def singular_why(self, c) -> str:

@@ -38,8 +38,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from ..common.tolerances import LEAST_REACH
 from ..common.errors import AssemblyError, SceneError
-from ..common.numbers import in_units
 from .rolling_contact import RollingContact, circle_rates, line_rates, rim_motion
 from .rolling_dims import GAP, arm_rate, follow_params, pair_of, rate, turned, wheel_params
 from .base import (
@@ -173,14 +173,18 @@ class RollingWheel(RollingContact, Step):
 
     @property
     def finds(self):
+        """The wheel's point P (its rim point, the end of its link CP)."""
         return (self.rim,)
 
     @property
     def links(self):
+        """The wheel, whose omega and alpha follow from the no-slip relation."""
         return (self.wheel,)
 
     @property
     def needs(self):
+        """The wheel's centre; on a circle or a gear, that circle's centre too (and the points its
+        gear and its arm turn by, where the linkage turns them)."""
         if self.on == "line":
             return (self.centre,)
         more = (self.base_free[1],) if self.base_free else ()
@@ -189,16 +193,21 @@ class RollingWheel(RollingContact, Step):
 
     @property
     def needs_links(self):
+        """The gear it meshes with, whose omega enters its own (none on a line or a fixed
+        circle)."""
         return (self.base,) if self.base else ()
 
     @property
     def title(self):
+        """``wheel CA rolling on the line ...``, or a ring's ``ring ... meshing with ... inside
+        it``."""
         if self.ring:
             return f"ring {self.wheel} meshing with {self.where} inside it"
         return f"wheel {self.wheel} rolling on {self.where}"
 
     @property
     def params(self):
+        """Its dimensions as compiled (:func:`~polygon_method.steps.rolling_dims.wheel_params`)."""
         return self.dims
 
     #: its dimensions read the positions at the stated instant: on a line its centre's
@@ -206,6 +215,8 @@ class RollingWheel(RollingContact, Step):
     instant_dimensions = True
 
     def dimensions(self, scene, bodies, P=None):
+        """The same dimensions read from another scene of the same shape, at its stated instant
+        ``P`` (a wheel on a line needs its centre's place there)."""
         pr = pair_of(scene, self.wheel)
         if self.on == "line":
             if P is None:
@@ -230,10 +241,13 @@ class RollingWheel(RollingContact, Step):
         return prm
 
     def drawn(self, prm, pencil, P):
+        """The dimensions as a hand drawing sets them out: the link CP's length drawn with the
+        pencil's error, the rest as given."""
         return (prm[0] + pencil(),) + tuple(prm[1:])
 
     def reach(self):
-        return max(self.dims[0], self.dims[1], 1e-9)
+        """The larger of the link CP and the radius (a scale for its tolerances)."""
+        return max(self.dims[0], self.dims[1], LEAST_REACH)
 
     def place(self, P, prm, ctx, sigma=None):
         """The point at the compiler's instant (the scene's own): a centre off its line or
@@ -423,26 +437,6 @@ class RollingWheel(RollingContact, Step):
         p, v, a = gain * p_in + kp, gain * v_in + kv, gain * a_in + ka
         return p, v, a, v, a
 
-    def _off_words(self, cx, cy, prm):
-        r = prm[1]
-        if self.on == "line":
-            tx, ty, mx, my = prm[2:6]
-            d = (cx - tx) * mx + (cy - ty) * my
-            return (
-                f"at the stated crank angle the centre {self.centre} of wheel {self.wheel} "
-                f"is {in_units(d, self.unit)} {self.uname} from {self.where}, not its radius "
-                f"{in_units(r, self.unit)} {self.uname}: "
-                "the wheel cannot roll on it there (check the line's through, the radius "
-                "and the links that place the centre)"
-            )
-        dist = math.hypot(cx - prm[8], cy - prm[9])
-        return (
-            f"at the stated crank angle the centre {self.centre} of wheel {self.wheel} is "
-            f"{in_units(dist, self.unit)} {self.uname} from {self.base_centre}: the contact "
-            "leaves the pitch "
-            "point (check the radii)"
-        )
-
     # ----- words
     def why(self, g):
         """Why the wheel cannot roll here: its centre is off its line or pitch circle by ``g`` of
@@ -455,12 +449,16 @@ class RollingWheel(RollingContact, Step):
         )
 
     def singular_why(self, c):
+        """Why it is singular: the wheel has left its contact."""
         return f"the wheel {self.wheel} has left its contact (condition {c:.2g})"
 
     def warning(self, c):
+        """The warning near leaving its contact."""
         return f"{self.label}: the wheel {self.wheel} is near leaving its contact ({c:.3g})"
 
     def limit_why(self):
+        """Why its motion ends: the wheel would leave what it rolls on (or, followed from its arm,
+        the arm has turned half a turn)."""
         if self.on != "line" and self.theta_rate is None:
             return (
                 f"the wheel {self.wheel} would leave {self.where}, or its arm or gear has "
@@ -470,24 +468,32 @@ class RollingWheel(RollingContact, Step):
         return f"the wheel {self.wheel} would leave {self.where}"
 
     def transmission(self):
+        """None: no transmission angle (no two links meet at a joint here)."""
         return None
 
     def condition_column(self):
+        """None: its condition is no column of a sweep."""
         return None
 
     def bodies(self):
+        """The wheel, the body it moves."""
         return (self.wheel,)
 
     def orient(self):
+        """The wheel's line from its point P towards its centre (how the views draw it)."""
         return {self.wheel: (self.rim, self.centre)}
 
     def output(self, ground):
+        """None: a wheel is no output of the linkage's analysis."""
         return None
 
     def default_hint(self, P):
+        """``above``: the assembly hint where the scene gives none (it has one assembly)."""
         return "above"
 
     def position_words(self, L, which, angle_deg):
+        """The step table's words for its position: how far the wheel has turned and why (one over r
+        per unit of the centre's travel, the gear ratio, or the arm's and the gear's turns)."""
         r, ell = self.dims[1], self.dims[0]
         phi = math.degrees(self.dims[6] if self.on == "line" else self.dims[5])
         phi = round(phi, 9) + 0.0  # -7e-15 deg is 0 (rounding), as the table prints it
@@ -538,6 +544,8 @@ class RollingWheel(RollingContact, Step):
         )
 
     def construction(self, sol, ph):
+        """What it draws on the ``ph`` polygon: the centre's vector, the rim point's relative to it
+        at omega |CP|, and the contact's."""
         C, X, W = self.centre, self.rim, self.wheel
         lab = lambda p: image_label(sol, p, ph)  # noqa: E731
         cond = sol.conditions.get(self.index, 1.0)

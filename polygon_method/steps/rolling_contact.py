@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 
+from ..common.numbers import in_units
 from .construction import sub
 
 __all__ = ["line_rates", "circle_rates", "rim_motion", "RollingContact"]
@@ -44,7 +45,7 @@ class RollingContact:
     """What the views ask of a rolling wheel's contact (a part of
     :class:`~polygon_method.steps.rolling.RollingWheel`, which holds the fields read here:
     ``centre``, ``base_centre``, ``on``, ``ring``, ``inside``, ``dims``, ``wheel``,
-    ``base``, ``where``)."""
+    ``base``, ``where``, ``unit``, ``uname``)."""
 
     def contact(self, P):
         """The contact point I (the instantaneous centre of the wheel and what it rolls on)
@@ -127,4 +128,26 @@ class RollingContact:
                 I,
                 f"the contact of {self.wheel} rolling on {self.where} (no slip)",
             ),
+        )
+
+    def _off_words(self, cx, cy, prm):
+        """Why the wheel cannot roll at the stated instant: its centre (cx, cy) is off its
+        line, or the contact leaves the pitch point (the centre distance is not the radii's)."""
+        r = prm[1]
+        if self.on == "line":
+            tx, ty, mx, my = prm[2:6]
+            d = (cx - tx) * mx + (cy - ty) * my
+            return (
+                f"at the stated crank angle the centre {self.centre} of wheel {self.wheel} "
+                f"is {in_units(d, self.unit)} {self.uname} from {self.where}, not its radius "
+                f"{in_units(r, self.unit)} {self.uname}: "
+                "the wheel cannot roll on it there (check the line's through, the radius "
+                "and the links that place the centre)"
+            )
+        dist = math.hypot(cx - prm[8], cy - prm[9])
+        return (
+            f"at the stated crank angle the centre {self.centre} of wheel {self.wheel} is "
+            f"{in_units(dist, self.unit)} {self.uname} from {self.base_centre}: the contact "
+            "leaves the pitch "
+            "point (check the radii)"
         )

@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+from ...common.tolerances import SAME
 from ...common.errors import AssemblyError
 from ...common.numbers import in_units
 from ..base import Step, sub, unit
@@ -116,22 +117,28 @@ class Triad(Step):
     # ----- what it is
     @property
     def finds(self):
+        """Its three vertices, found at once."""
         return self.points
 
     @property
     def links(self):
+        """The plate (and a plate of three links' other sides) and the three links that hang it from
+        the known points."""
         return (self.plate,) + tuple(k for k, _, _ in self.sides) + self.links_
 
     @property
     def needs(self):
+        """The known points the three links hang from."""
         return tuple(dict.fromkeys(self.knowns))
 
     @property
     def needs_links(self):
+        """None: it reads no other link's omega."""
         return ()
 
     @property
     def title(self):
+        """``triad: plate BC (B, C, E) on AB, CD, FE``."""
         return f"triad: {self._plate_words} ({', '.join(self.points)}) on {', '.join(self.links_)}"
 
     @property
@@ -141,9 +148,12 @@ class Triad(Step):
 
     @property
     def params(self):
+        """The three links' lengths, then the vertices' offsets on the plate (V2 - V1, V3 - V1)."""
         return tuple(self.lengths) + tuple(self.offsets)
 
     def dimensions(self, scene, bodies):
+        """The same read from another scene of the same shape: the links' lengths and the plate's
+        offsets (a triangle of links': from its three sides)."""
         own = tuple(
             bodies.distance(k, K, V) for k, K, V in zip(self.links_, self.knowns, self.points)
         )
@@ -161,9 +171,11 @@ class Triad(Step):
         return own + (x2 - x1, y2 - y1, x3 - x1, y3 - y1)
 
     def drawn(self, prm, pencil, P):
+        """The dimensions as a hand drawing sets them out, each with the pencil's error."""
         return tuple(v + pencil() for v in prm)
 
     def reach(self):
+        """The triad's size (the largest of its lengths and offsets): a scale for its tolerances."""
         return scale(self.params)
 
     # ----- compiling: the assembly the scene states
@@ -257,6 +269,8 @@ class Triad(Step):
 
     # ----- evaluation
     def place(self, P, prm, ctx, sigma=None):
+        """The three vertices at the compiler's instant, continued from the scene's assembly (the
+        loop equations solved by Newton's method)."""
         K = tuple(P[k] for k in self.knowns)
         q = solve_scalar(self.memo, K, prm)
         if q is None:
@@ -293,7 +307,7 @@ class Triad(Step):
             for q in assemblies(K, prm):
                 V = vertices(*q, prm, math.cos, math.sin)
                 d = sum(math.dist(a, b) for a, b in zip(V, here))
-                if d > 1e-9 * self.reach() and (best is None or d < best[0]):
+                if d > SAME * self.reach() and (best is None or d < best[0]):
                     best = (d, V[0])
         x, y = here[0]
         if best is None:
@@ -302,6 +316,9 @@ class Triad(Step):
         return ((x + ox) / 2, (y + oy) / 2), ((x - ox) / 2, (y - oy) / 2)
 
     def bind(self, prm):
+        """The three phases: positions by continuation of the assembly (one instant) or by solving
+        each element (arrays), then the 3 x 3 loop equations for the velocities and the
+        accelerations."""
         pts, kn, i, step = self.points, self.knowns, self.index, self
         plate, lk = self.plate, self.links_
         sides = tuple(k for k, _, _ in self.sides)
@@ -377,6 +394,7 @@ class Triad(Step):
         return position, velocity_, acceleration_
 
     def bind_instant(self, prm):
+        """The default one-instant road: its three phases in a row."""
         return Step.bind_instant(self, prm)
 
     rounding = 96.0
@@ -407,6 +425,7 @@ class Triad(Step):
         )
 
     def singular_why(self, c) -> str:
+        """Why it is singular: the three links' lines meet in one point (a limit of the triad)."""
         return (
             f"the lines of {self._lines()} meet in one point (or are parallel; condition "
             f"{c:.2g}): the {self._plate_words} could turn about that point while the "
@@ -415,6 +434,7 @@ class Triad(Step):
         )
 
     def warning(self, c) -> str:
+        """The warning near a limit: the auxiliary-point construction is ill-conditioned."""
         return (
             f"{self.label}: the lines of {self._lines()} nearly meet in one point "
             f"(condition {c:.3g}): near a limit of the triad the auxiliary point "
@@ -422,15 +442,18 @@ class Triad(Step):
         )
 
     def limit_why(self) -> str:
+        """Why its motion ends: the three links' lines meet in one point."""
         return (
             f"the lines of {self._lines()} meet in one point (the triad "
             f"{', '.join(self.points)} cannot be assembled beyond it on its branch)"
         )
 
     def transmission(self):
+        """None: a triad has no single transmission angle."""
         return None
 
     def condition_column(self):
+        """The sweep's column of its condition (0 where the three links' lines meet in a point)."""
         return (
             f"cond {''.join(self.points)}",
             "",
@@ -438,6 +461,7 @@ class Triad(Step):
         )
 
     def bodies(self):
+        """The bodies it moves: its links and its plate."""
         return (
             (self.links_[0], self.plate)
             + tuple(k for k, _, _ in self.sides)
@@ -445,6 +469,8 @@ class Triad(Step):
         )
 
     def orient(self):
+        """How the views draw each of its bodies: the plate from V1 to V2, each link from its vertex
+        to its known point."""
         out = {self.plate: (self.points[1], self.points[0])}
         for k, a, b in self.sides:
             out[k] = (b, a)
@@ -453,15 +479,20 @@ class Triad(Step):
         return out
 
     def output(self, ground):
+        """None: a triad is no output of the linkage's analysis."""
         return None
 
     def produced(self):
+        """None: it draws no link produced."""
         return None
 
     def default_hint(self, P):
+        """``above``: the hint where the scene gives none (the triad chooses its own assembly)."""
         return "above"
 
     def position_words(self, L, which, angle_deg):
+        """The step table's words for its position: each vertex on the arc of its link about its
+        known point, the plate's shape, and the assembly taken."""
         arcs = "; ".join(
             f"{V} on the arc of radius {k} = {L(l)} about {K}"
             for V, k, K, l in zip(self.points, self.links_, self.knowns, self.lengths)
@@ -517,4 +548,5 @@ class Triad(Step):
         return f"s{k}"
 
     def construction(self, sol, ph):
+        """Goodman's auxiliary-point construction on the ``ph`` polygon (:mod:`.goodman`)."""
         return goodman.construction(self, sol, ph)
