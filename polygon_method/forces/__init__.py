@@ -41,6 +41,7 @@ from dataclasses import replace
 from ..common.errors import PolygonMethodError
 from . import (
     carried,
+    collar,
     crank,
     cylinder,
     driver,
@@ -49,6 +50,7 @@ from . import (
     peg,
     rack,
     rolling,
+    second_collar,
     slider,
     slotted,
     triad,
@@ -57,7 +59,9 @@ from . import (
     yoke,
 )
 from .bodies import Ledger, Singular, centre, cross, gather
+from .collar import second_name
 from .core import force_plan
+from .values import force_value
 from .records import (
     FRAME,
     Contact,
@@ -71,7 +75,6 @@ from .records import (
     Side,
     block,
     couple_label,
-    force_value,
     forces_dict,
     number_sub,
     side_label,
@@ -121,6 +124,8 @@ ROOMS = {
     "triad": triad,
     "rack": rack,
     "rolling driver": wheel_driver,
+    "collar": collar,
+    "second collar": second_collar,
 }
 
 __all__ = [
@@ -147,12 +152,7 @@ __all__ = [
     "number_sub",
 ]
 
-_NOT_YET = {
-    "collar": "a collar driven along its turning rod (its force along the rod without "
-    "inertia is the power balance's input force)",
-    "second collar": "a collar sliding along the crank as the second input",
-    "triad": "a triad whose plate is made of three links",
-}
+_NOT_YET = {"triad": "a triad whose plate is made of three links"}
 
 
 def _refuse(scene, st, what):
@@ -160,8 +160,8 @@ def _refuse(scene, st, what):
         f"forces: {what} is not solved for forces yet (step {st.index + 1}, {st.title}); "
         "the force analysis covers cranks (one or two), driving blocks, dyads, carried "
         "points, blocks on fixed paths and on moving links, slotted levers, yokes, pegs, "
-        "cylinders, wheels rolling on a line (driven or driving), gears, planets, racks "
-        "and triads",
+        "cylinders, wheels rolling on a line (driven or driving), gears, planets, racks, "
+        "collars on turning rods (driving, or the second input) and triads",
         file=scene.file,
         key=_key(scene),
     )
@@ -297,8 +297,8 @@ def _long(motion, fp, fric=()) -> tuple:
     fx, fy, m = led.of(FRAME)  # the drivers' reactions are the frame's too
     if driving is not None:
         name, kind, effort = driving.key, driving.kind, led.given[driving.key]
-    elif plan.steps[0].kind == "block":  # the driver the plan starts with: a block
-        name, kind, effort = block(plan.steps[0].point), "block", torque
+    elif plan.steps[0].kind in ("block", "collar"):  # a driving block, or a collar
+        name, kind, effort = block(plan.steps[0].point), plan.steps[0].kind, torque
     elif plan.steps[0].kind == "rolling driver":  # a wheel: the torque on it
         name, kind, effort = plan.steps[0].wheel, "wheel", torque
     else:
@@ -310,7 +310,7 @@ def _long(motion, fp, fric=()) -> tuple:
         name,
         kind,
         second,
-        None if inp.second is None else scene.link(inp.second.crank).key,
+        second_name(scene, plan),
         records_,
         tuple(pins),
         tuple(guides),
@@ -414,7 +414,7 @@ def _free_bodies(scene, P, numbers, records, pins, guides, led, torque, contacts
                     Side("pin", body, p.on, p.point, (-p.force[0], -p.force[1]), P[p.point])
                 )
         sides += [
-            Side("guide", body, FRAME, g.point, g.force, P[g.point])
+            Side("guide", body, g.by, g.point, g.force, P[g.point])
             for g in guides
             if block(g.point) == body
         ]
