@@ -107,13 +107,14 @@ def _mp(p):
     return (mpf(p[0]), mpf(p[1]))
 
 
-def _matrix(sc, ref, pins, guides, torque):
+def _matrix(sc, ref, pins, guides, torque, extra=()):
     """The matrix method at the current precision: ``pins`` (point, on, by) each two
     unknowns (the force on ``on`` by ``by``; ``by`` feels it back), ``guides`` (point,
     block, guide body, unit along the guide, driven) each the normal force along
     perp(unit) and the guide's couple on the block (and a driven collar's force along the
     unit), the guide's body feeling them back; ``torque``: the body a driver's torque
-    turns, or None. Moments about the origin. Returns the solution by name."""
+    turns, or None; ``extra``: more known loads, (body, force, point) or (body, couple).
+    Moments about the origin. Returns the solution by name."""
     P, Acc, Al = ref["positions"], ref["accelerations"], ref["alpha"]
 
     def pos(n):
@@ -194,6 +195,9 @@ def _matrix(sc, ref, pins, guides, torque):
             known(body, _mp(ld.force), pos(ld.target))
         else:
             known(sc.link(ld.target).key, (0, 0), (0, 0), mpf(ld.torque))
+    for it in extra:
+        if it[0] != FRAME:
+            known(*it) if len(it) == 3 else known(it[0], (0, 0), (0, 0), it[1])
     x = mpmath.lu_solve(M, rhs)
     out = {}
     for j, c in enumerate(cols):

@@ -239,15 +239,29 @@ class _Long:
 
 
 def _with_friction(motion, fp) -> Forces:
-    """The forces with the friction of the forces found before, until they settle."""
+    """The forces with the friction of the forces found before, until they settle (over a
+    sweep, the forces near a limit position may grow past a float's range: quietly)."""
+    if isinstance(motion.theta, float):
+        return _passes(motion, fp)
+    import numpy as np
+
+    with np.errstate(all="ignore"):
+        return _passes(motion, fp)
+
+
+def _passes(motion, fp) -> Forces:
+    """The walk repeated with the friction of the forces found before, until they settle."""
     scene = motion.scene
-    before = None
+    before = last = None
+    history = []  # the forces' largest changes from pass to pass (the bounds' estimate)
     for _ in range(friction.ROUNDS):
         f = _forces(motion, fp, before or ())
         now = friction.loads(scene, motion, f.pins, f.guides)
+        if last is not None:
+            history.append(friction.largest_changes(last, f))
         if friction.change(before, now) <= friction.SETTLED * friction.scale(f):
-            return f
-        before = now
+            return replace(f, settling=friction.settling(history, friction.scale(f)))
+        before, last = now, f
     raise PolygonMethodError(
         f"forces: with friction the forces do not settle after "
         f"{friction.ROUNDS} passes: the mechanism may lock itself here "

@@ -378,6 +378,9 @@ class Forces:
     #: (:func:`.friction.loads`), and its power (W, never positive)
     friction: tuple = ()
     friction_power: float = 0.0
+    #: with friction, how the passes settled (:func:`.friction.settling`): (the
+    #: contraction q, the last change of the forces, N, of the effort, of a second effort)
+    settling: tuple = ()
 
     def resultant(self, body: str) -> tuple:
         """``(Fx, Fy, M about the origin)`` of every force on ``body`` but those of its own
