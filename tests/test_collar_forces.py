@@ -191,7 +191,9 @@ def _matrix(sc, ref, pins, guides, torque, extra=()):
         known(body, (W[0] - mass * a[0], W[1] - mass * a[1]), G, -mpf(m.inertia) * al)
     for ld in sc.loads:
         if ld.force is not None:
-            body = f"block {ld.target}" if f"block {ld.target}" in row else ld.target
+            body = f"block {ld.target}"  # a block's, else the moving link's at that point
+            if body not in row:
+                body = next(lk.key for lk in sc.links if ld.target in lk.points and lk.key in row)
             known(body, _mp(ld.force), pos(ld.target))
         else:
             known(sc.link(ld.target).key, (0, 0), (0, 0), mpf(ld.torque))
@@ -409,3 +411,37 @@ def test_the_words_and_steps_of_a_collar(tmp_path, capsys):
         assert main(["steps", str(path)]) == 0
         out = capsys.readouterr().out
         assert "the collar: " in out or "moments of OA about O" in out
+
+
+def test_the_worked_collar_and_its_written_answers(digits):
+    """worked_problems/collar_forces.toml against the 9 x 9 matrix method: the tool to
+    1e-9, the file's written answers (and the screw's force in its comment) to their four
+    figures."""
+    from polygon_method.scene import load_scene
+
+    sc = load_scene(ROOT / "worked_problems" / "collar_forces.toml")
+    sol = solve(sc)
+    f = sol.forces
+    ref = reference_solution(sc, sol.P)
+    P = ref["positions"]
+    P.update({k: _mp(v) for k, v in sc.ground.items()})
+    want = _matrix(
+        sc,
+        ref,
+        [("O", "OA", FRAME), ("D", "DC", FRAME), ("C", "DC", "block C")],
+        [("C", "block C", "OA", _unit(P, "O", "A"), True)],
+        None,
+    )
+    big = _compare(f, want, 0.8)
+    assert abs(f.input_torque - float(want[("F", "C")])) <= 1e-9 * big
+    import tomllib
+
+    size = {k[0]: float(mpmath.sqrt(v[0] ** 2 + v[1] ** 2)) for k, v in want.items() if len(k) == 3}
+    size["N_C"] = abs(float(want[("N", "C")]))
+    answers = tomllib.loads((ROOT / "worked_problems" / "collar_forces.toml").read_text())[
+        "answers"
+    ]
+    for key in ("F_O", "F_D", "F_C", "N_C"):
+        value = float(answers[key].split()[0])
+        assert abs(size[key if key == "N_C" else key[2:]] - value) <= 5e-4 * value, key
+    assert abs(float(want[("F", "C")]) + 117.1) <= 5e-4 * 117.1  # towards O (the comment's)
