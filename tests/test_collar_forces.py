@@ -445,3 +445,45 @@ def test_the_worked_collar_and_its_written_answers(digits):
         value = float(answers[key].split()[0])
         assert abs(size[key if key == "N_C" else key[2:]] - value) <= 5e-4 * value, key
     assert abs(float(want[("F", "C")]) + 117.1) <= 5e-4 * 117.1  # towards O (the comment's)
+
+
+def test_the_bounds_hold_and_grow_towards_the_dead_centre(digits):
+    """The driving collar's forces near its dead centre (the rod's line through D, s_C ->
+    OD + DC = 450 mm) against the 50-digit matrix method: each within its stated bound,
+    the bound growing as the dead centre nears (its condition 0.64 to 0.030, the driver's
+    force 490 N to 58 MN)."""
+    from polygon_method.forces.bounds import force_bounds
+
+    worst = []
+    for s in (400.0, 440.0, 449.0, 449.9):
+        sc = parse_scene(DRIVING.replace("s_C = 350", f"s_C = {s}"))
+        sol = solve(sc)
+        f, b = sol.forces, force_bounds(sol)
+        ref = reference_solution(sc, sol.P)
+        P = ref["positions"]
+        P.update({k: _mp(v) for k, v in sc.ground.items()})
+        want = _matrix(
+            sc,
+            ref,
+            [
+                ("O", "OA", FRAME),
+                ("D", "DC", FRAME),
+                ("C", "DC", "block C"),
+                ("A", "AB", "OA"),
+                ("B", "AB", "block B"),
+            ],
+            [
+                ("C", "block C", "OA", _unit(P, "O", "A"), True),
+                ("B", "block B", FRAME, (mpf(1), mpf(0)), False),
+            ],
+            None,
+        )
+        for key, e in b.pins.items():
+            got, w = f.pin(*key), want[key]
+            err = float(mpmath.sqrt((got[0] - w[0]) ** 2 + (got[1] - w[1]) ** 2))
+            assert err <= e * b.force, (s, key, err / b.force, e)
+        for g in f.guides:
+            assert abs(float(g.normal - want[("N", g.point)])) <= b.guides[g.point] * b.force
+        assert abs(float(f.input_torque - want[("F", "C")])) <= b.effort * b.force
+        worst.append(b.worst)
+    assert all(later > 3 * earlier for earlier, later in zip(worst, worst[1:])), worst
