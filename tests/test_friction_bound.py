@@ -123,6 +123,8 @@ def test_the_bound_holds_at_the_tools_own_threshold(digits):
     want = _settled_reference(sc, sol)
     for err, bound in _errors(sol, want):
         assert err <= bound, (err, bound)
+    d = sol.to_dict()["error_bounds"]["forces"]
+    assert d["friction_passes"] == {"contraction": sol.forces.settling[0]}
 
 
 @pytest.mark.parametrize("threshold", [1e-5, 1e-8])

@@ -67,6 +67,8 @@ class ForceBounds:
     steps: dict
     force: object
     length: float
+    #: with friction, the contraction q of the walk's passes the bounds took in, else None
+    contraction: object = None
 
     @property
     def worst(self):
@@ -218,6 +220,7 @@ def _settled(b, f) -> ForceBounds:
             {k: CAP for k in b.steps},
             b.force,
             b.length,
+            q,
         )
     t, F, L = q / (1.0 - q), b.force, b.length
 
@@ -237,6 +240,7 @@ def _settled(b, f) -> ForceBounds:
         {k: on(e, d_force / F) for k, e in b.steps.items()},
         F,
         L,
+        q,
     )
 
 
@@ -262,6 +266,8 @@ def bounds_dict(b: ForceBounds) -> dict:
     }
     if b.second is not None:
         d["second_input"] = clean(b.second)
+    if b.contraction is not None:  # the friction's passes, taken in (see the module)
+        d["friction_passes"] = {"contraction": float(b.contraction)}
     if count[0]:
         d["no_useful_bound"] = {"count": count[0], "reason": NO_BOUND}
     return d
