@@ -372,13 +372,14 @@ def test_virtual_power_at_every_place_of_a_sweep(text):
     assert np.all((np.abs(total) <= 1e-9 * scale)[fine])
 
 
-def test_friction_at_the_collar_works_against_its_sliding():
+@pytest.mark.parametrize("base", [DRIVING, SECOND], ids=["driving", "second"])
+def test_friction_at_the_collar_works_against_its_sliding(base):
     """With friction at the guides and the pins the balance holds with the friction's
     power; the friction along the rod opposes the collar's sliding on it, mu |N|."""
-    text = DRIVING.replace("[input]", "[friction]\nguides = 0.15\npins = 0.1\n[input]")
+    text = base.replace("[input]\n", "[friction]\nguides = 0.15\npins = 0.1\n[input]\n", 1)
     text = text.replace(
         "[sliders]",
-        "[pins]\nC = { radius = 10 }\nD = { radius = 15 }\nO = { radius = 20 }\n[sliders]",
+        "[pins]\nC = { radius = 10 }\nO = { radius = 20 }\nB = { radius = 12 }\n[sliders]",
     )
     sc = parse_scene(text)
     sol = solve(sc)
@@ -392,8 +393,9 @@ def test_friction_at_the_collar_works_against_its_sliding():
     along = fr[2][0] * wx + fr[2][1] * wy
     assert abs(abs(along) - 0.15 * abs(g.normal)) <= 1e-12 * abs(g.normal)
     assert along * _sliding(sc, sol, "C") < 0
-    frictionless = solve(parse_scene(DRIVING)).forces.input_torque
-    assert f.input_torque != frictionless
+    frictionless = solve(parse_scene(base)).forces
+    assert f.input_torque != frictionless.input_torque
+    assert f.second_torque != frictionless.second_torque or sc.input.second is None
 
 
 def test_the_words_and_steps_of_a_collar(tmp_path, capsys):
