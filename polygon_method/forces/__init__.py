@@ -22,10 +22,13 @@ or a planet on a circle, carries the tooth load along the line of action at the 
 angle (:mod:`.rolling`); a rack likewise, held by its guide (:mod:`.rack`).
 
 A triad's plate and three links are solved together (:mod:`.triad`: the textbook's 3x3
-solve).
+solve). A collar driven along its turning rod is solved with the rod and the link it is
+pinned to, its driver's force along the rod the effort (:mod:`.collar`); a collar driven
+along the crank as the second input by its own balance (:mod:`.second_collar`).
 
 With ``[friction]`` the walk is repeated with the friction of the forces found before (at
-the guides ``mu |N|``, at the pins the friction circle) until they settle (:mod:`.friction`).
+the guides ``mu |N|``, at the pins the friction circle) until they settle (:mod:`.friction`);
+how they settled (the passes' contraction) goes into the forces' bounds.
 
 What is not written yet is refused in one line naming the step (a triad whose plate is
 three links): no guess.
