@@ -22,10 +22,13 @@ or a planet on a circle, carries the tooth load along the line of action at the 
 angle (:mod:`.rolling`); a rack likewise, held by its guide (:mod:`.rack`).
 
 A triad's plate and three links are solved together (:mod:`.triad`: the textbook's 3x3
-solve).
+solve). A collar driven along its turning rod is solved with the rod and the link it is
+pinned to, its driver's force along the rod the effort (:mod:`.collar`); a collar driven
+along the crank as the second input by its own balance (:mod:`.second_collar`).
 
 With ``[friction]`` the walk is repeated with the friction of the forces found before (at
-the guides ``mu |N|``, at the pins the friction circle) until they settle (:mod:`.friction`).
+the guides ``mu |N|``, at the pins the friction circle) until they settle (:mod:`.friction`);
+how they settled (the passes' contraction) goes into the forces' bounds.
 
 What is not written yet is refused in one line naming the step (a triad whose plate is
 three links): no guess.
@@ -41,6 +44,7 @@ from dataclasses import replace
 from ..common.errors import PolygonMethodError
 from . import (
     carried,
+    collar,
     crank,
     cylinder,
     driver,
@@ -49,6 +53,7 @@ from . import (
     peg,
     rack,
     rolling,
+    second_collar,
     slider,
     slotted,
     triad,
@@ -57,7 +62,9 @@ from . import (
     yoke,
 )
 from .bodies import Ledger, Singular, centre, cross, gather
+from .collar import second_name
 from .core import force_plan
+from .values import force_value
 from .records import (
     FRAME,
     Contact,
@@ -71,7 +78,6 @@ from .records import (
     Side,
     block,
     couple_label,
-    force_value,
     forces_dict,
     number_sub,
     side_label,
@@ -121,6 +127,8 @@ ROOMS = {
     "triad": triad,
     "rack": rack,
     "rolling driver": wheel_driver,
+    "collar": collar,
+    "second collar": second_collar,
 }
 
 __all__ = [
@@ -147,12 +155,7 @@ __all__ = [
     "number_sub",
 ]
 
-_NOT_YET = {
-    "collar": "a collar driven along its turning rod (its force along the rod without "
-    "inertia is the power balance's input force)",
-    "second collar": "a collar sliding along the crank as the second input",
-    "triad": "a triad whose plate is made of three links",
-}
+_NOT_YET = {"triad": "a triad whose plate is made of three links"}
 
 
 def _refuse(scene, st, what):
@@ -160,8 +163,8 @@ def _refuse(scene, st, what):
         f"forces: {what} is not solved for forces yet (step {st.index + 1}, {st.title}); "
         "the force analysis covers cranks (one or two), driving blocks, dyads, carried "
         "points, blocks on fixed paths and on moving links, slotted levers, yokes, pegs, "
-        "cylinders, wheels rolling on a line (driven or driving), gears, planets, racks "
-        "and triads",
+        "cylinders, wheels rolling on a line (driven or driving), gears, planets, racks, "
+        "collars on turning rods (driving, or the second input) and triads",
         file=scene.file,
         key=_key(scene),
     )
@@ -239,15 +242,29 @@ class _Long:
 
 
 def _with_friction(motion, fp) -> Forces:
-    """The forces with the friction of the forces found before, until they settle."""
+    """The forces with the friction of the forces found before, until they settle (over a
+    sweep, the forces near a limit position may grow past a float's range: quietly)."""
+    if isinstance(motion.theta, float):
+        return _passes(motion, fp)
+    import numpy as np
+
+    with np.errstate(all="ignore"):
+        return _passes(motion, fp)
+
+
+def _passes(motion, fp) -> Forces:
+    """The walk repeated with the friction of the forces found before, until they settle."""
     scene = motion.scene
-    before = None
+    before = last = None
+    history = []  # the forces' largest changes from pass to pass (the bounds' estimate)
     for _ in range(friction.ROUNDS):
         f = _forces(motion, fp, before or ())
         now = friction.loads(scene, motion, f.pins, f.guides)
+        if last is not None:
+            history.append(friction.largest_changes(last, f))
         if friction.change(before, now) <= friction.SETTLED * friction.scale(f):
-            return f
-        before = now
+            return replace(f, settling=friction.settling(history, friction.scale(f)))
+        before, last = now, f
     raise PolygonMethodError(
         f"forces: with friction the forces do not settle after "
         f"{friction.ROUNDS} passes: the mechanism may lock itself here "
@@ -297,8 +314,8 @@ def _long(motion, fp, fric=()) -> tuple:
     fx, fy, m = led.of(FRAME)  # the drivers' reactions are the frame's too
     if driving is not None:
         name, kind, effort = driving.key, driving.kind, led.given[driving.key]
-    elif plan.steps[0].kind == "block":  # the driver the plan starts with: a block
-        name, kind, effort = block(plan.steps[0].point), "block", torque
+    elif plan.steps[0].kind in ("block", "collar"):  # a driving block, or a collar
+        name, kind, effort = block(plan.steps[0].point), plan.steps[0].kind, torque
     elif plan.steps[0].kind == "rolling driver":  # a wheel: the torque on it
         name, kind, effort = plan.steps[0].wheel, "wheel", torque
     else:
@@ -310,7 +327,7 @@ def _long(motion, fp, fric=()) -> tuple:
         name,
         kind,
         second,
-        None if inp.second is None else scene.link(inp.second.crank).key,
+        second_name(scene, plan),
         records_,
         tuple(pins),
         tuple(guides),
@@ -414,7 +431,7 @@ def _free_bodies(scene, P, numbers, records, pins, guides, led, torque, contacts
                     Side("pin", body, p.on, p.point, (-p.force[0], -p.force[1]), P[p.point])
                 )
         sides += [
-            Side("guide", body, FRAME, g.point, g.force, P[g.point])
+            Side("guide", body, g.by, g.point, g.force, P[g.point])
             for g in guides
             if block(g.point) == body
         ]

@@ -157,15 +157,15 @@ class _Reducer:
         """(name, unit, array, what) of :meth:`force_quantities` from the forces ``f`` and
         an engine's efforts ``e`` (or None) at ``n`` angles."""
 
-        def b(v):
-            return np.broadcast_to(np.asarray(v, dtype=float), (n,))
+        b = lambda v: np.broadcast_to(np.asarray(v, dtype=float), (n,))  # noqa: E731
 
         if f.driver == "crank":
             yield "torque_inertia", "N m", b(f.input_torque), "driving torque with inertia, ccw +"
         else:
             yield "force_inertia", "N", b(f.input_torque), "driving force with inertia"
-        if f.second_crank is not None:
-            yield "torque2_inertia", "N m", b(f.second_torque), "second crank's torque, ccw +"
+        if f.second_crank is not None:  # a second crank's torque (N m), a second collar's force
+            k, u = ("force", "N") if "block " in f.second_crank else ("torque", "N m")
+            yield f"{k}2_inertia", u, b(f.second_torque), f"second input's {k}, with inertia"
         yield "shake", "N", (b(f.shaking_force[0]), b(f.shaking_force[1])), "shaking force"
         yield "shake_moment", "N m", b(f.shaking_moment), "shaking moment about O, ccw +"
         for g in f.guides:
