@@ -212,9 +212,7 @@ class _Answers:
         line = self.line_of("answers", key)
         forces = getattr(self, "scene_forces", None)  # an answer file: its scene's
         if forces is None:
-            forces = (
-                bool(self.raw.get("masses")) or "gravity" in self.raw or "indicator" in self.raw
-            )
+            forces = "masses" in self.raw or "gravity" in self.raw or "indicator" in self.raw
         hint = lambda: self.key_hint(key, known, slider_names, pin_names, loads)  # noqa: E731
         read = decimal_comma(value)
         if read is None:

@@ -378,7 +378,8 @@ class _Input:
                 "the crank speed is zero: nothing moves (for the torque that "
                 "holds the loads at rest, a statics problem, give any speed, e.g. "
                 '"1 rad/s ccw": without [masses] the torque by power balance '
-                "does not depend on it)",
+                "does not depend on it; an empty [masses] gives the pin forces too, "
+                "and weights at rest are [loads] at the centres of mass)",
                 "input",
                 "speed",
             )

@@ -465,6 +465,7 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
             _link_index=index,
             rolling=tuple(rolling),
             masses=tuple(masses),
+            statics="masses" in self.raw,
             gravity=gravity,
             indicator=indicator,
             flywheel=flywheel,

@@ -444,6 +444,9 @@ class Scene:
     #: force analysis; a scene without them is solved for its motion alone, as before
     masses: tuple = ()
     gravity: Gravity | None = None
+    #: the scene gave a ``[masses]`` table, empty or not: an empty one asks for the force
+    #: analysis of the loads alone (static force analysis: every pin force, no inertia)
+    statics: bool = False
     #: the engine chapter: an indicator diagram (:class:`Indicator`) and the flywheel
     #: asked for (:class:`Flywheel`), or None
     indicator: Indicator | None = None
@@ -625,9 +628,11 @@ class Scene:
 
     @property
     def has_forces(self) -> bool:
-        """Whether the scene asks for the force analysis: masses, gravity or friction."""
+        """Whether the scene asks for the force analysis: masses (an empty ``[masses]``
+        table too: the static force analysis of the loads), gravity or friction."""
         return (
             bool(self.masses)
+            or self.statics
             or self.gravity is not None
             or self.indicator is not None
             or self.friction is not None

@@ -336,6 +336,15 @@ def _inertia_blocks(sol, f, F, M) -> list:
     sc = sol.scene
     u = sc.length_unit
     blocks = [("h", "6. Inertia forces (D'Alembert)")]
+    if not f.inertia:  # an empty [masses]: the static force analysis of the loads
+        return blocks + [
+            (
+                "p",
+                "No masses (the scene's [masses] is empty): a static force analysis, no "
+                "inertia forces; the loads"
+                + (f" and gravity ({sc.gravity.text}) act." if sc.gravity else " alone act."),
+            )
+        ]
     blocks.append(
         (
             "p",

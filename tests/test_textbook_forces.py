@@ -1,0 +1,277 @@
+"""The force chapter's textbook corpus (tests/textbook/force_*.toml): static force analysis
+of four-bars, slider cranks, quick-return and six-bar mechanisms under loads and couples
+(the static ones with an empty ``[masses]`` table), the dynamic force analysis of massive
+linkages at speed (shaking force and moment), shapers under the cutting force, and the
+engine chapter (piston effort, thrusts, crank effort, a heavy connecting rod, vertical
+engines with the parts' weight).
+
+Against references that share nothing with the force solver:
+
+- the driver's torque by virtual power, with the 50-digit kinematics of
+  ``tests/reference.py``: ``T w + sum F.v + sum C w_L + sum m g.v_G - sum m a_G.v_G - sum
+  I alpha w = 0``, G's motion from its link's end points;
+- the shaking force and moment from the loads, weights and inertia alone (the same
+  reference kinematics);
+- Newton-Euler on every body of the file's own masses from the pin forces found;
+- the engine chapter's closed forms at 50 digits (``tests/engines.py``), and for a heavy
+  connecting rod the books' own second method, the equivalent dynamical system (two
+  masses and the correction couple);
+- the statics by hand (a two-force member's moments about a pivot);
+- the book-style answers each file gives, by ``check`` within the file's tolerance.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import mpmath
+import pytest
+from mpmath import mpf
+
+from engines import _precision, closed_forms  # noqa: F401  (a fixture)
+from polygon_method import load_scene, solve
+from polygon_method.check import check_answers
+from polygon_method.forces.engine import efforts
+from reference import reference_solution
+from test_forces import _newton_euler
+
+HERE = Path(__file__).resolve().parent / "textbook"
+FILES = sorted(HERE.glob("force_*.toml"))
+REL = mpf("1e-9")
+STATIC = [f for f in FILES if f.stem.startswith("force_static")]
+
+
+def _solved(path):
+    sol = solve(load_scene(path))
+    sc = sol.scene  # the crank's angle found where the position is given otherwise
+    mpmath.mp.dps = 50
+    return sc, sol, reference_solution(sc, sol.P)
+
+
+def _gas(sc, ld, ref):
+    """A gas force on a piston, towards the crank's foot on the line of stroke (by hand)."""
+    s = sc.slider(ld.target)
+    u = [mpf(c) for c in s.u]
+    O, B = ref["positions"][sc.link(sc.input.crank).p], ref["positions"][ld.target]
+    ahead = (O[0] - B[0]) * u[0] + (O[1] - B[1]) * u[1]
+    k = mpf(ld.toward) * (1 if ahead > 0 else -1)
+    return (k * u[0], k * u[1])
+
+
+def _external(sc, ref):
+    """(force, point) of every load and weight and -m a_G; couples; the power of them all
+    with the reference's velocities (50 digits)."""
+    P, V, A = ref["positions"], ref["velocities"], ref["accelerations"]
+    forces, couples, power = [], [], mpf(0)
+    for ld in sc.loads:
+        if ld.torque is not None:
+            couples.append(mpf(ld.torque))
+            power += mpf(ld.torque) * ref["omega"][sc.link(ld.target).key]
+            continue
+        F = _gas(sc, ld, ref) if ld.toward is not None else tuple(mpf(c) for c in ld.force)
+        v = V[ld.target]
+        power += F[0] * v[0] + F[1] * v[1]
+        if ld.toward is None:  # (a gas force's reaction is on the cover: internal)
+            forces.append((F, P[ld.target]))
+    g = sc.gravity
+    for m in sc.masses:
+        if m.block:
+            G, vG, aG, al, w = P[m.body], V[m.body], A[m.body], 0, 0
+        else:
+            lk = sc.link(m.body)
+
+            def at(T, lk=lk, m=m):
+                (px, py), (qx, qy) = T[lk.p], T[lk.q]
+                dx, dy = qx - px, qy - py
+                lam, mu = mpf(m.lam), mpf(m.mu)
+                return (px + lam * dx - mu * dy, py + lam * dy + mu * dx)
+
+            G, vG, aG = at(P), at(V), at(A)
+            al, w = ref["alpha"][lk.key], ref["omega"][lk.key]
+        mass = mpf(m.mass)
+        gx, gy = (mpf(g.g) * mpf(g.direction[0]), mpf(g.g) * mpf(g.direction[1])) if g else (0, 0)
+        W = (mass * gx, mass * gy)
+        Fi = (W[0] - mass * aG[0], W[1] - mass * aG[1])
+        forces.append((Fi, G))
+        couples.append(-mpf(m.inertia) * al)
+        power += Fi[0] * vG[0] + Fi[1] * vG[1] - mpf(m.inertia) * al * w
+    return forces, couples, power
+
+
+@pytest.mark.parametrize("path", FILES, ids=[f.stem for f in FILES])
+def test_driver_torque_by_virtual_power_with_the_reference(path):
+    sc, sol, ref = _solved(path)
+    _, _, power = _external(sc, ref)
+    want = -power / ref["omega"][sc.link(sc.input.crank).key]
+    assert abs(sol.forces.input_torque - want) <= REL * abs(want), (sol.forces.input_torque, want)
+
+
+@pytest.mark.parametrize("path", FILES, ids=[f.stem for f in FILES])
+def test_shaking_force_and_moment_from_the_loads_weights_and_inertia(path):
+    sc, sol, ref = _solved(path)
+    forces, couples, _ = _external(sc, ref)
+    Fx, Fy = sum(F[0] for F, _ in forces), sum(F[1] for F, _ in forces)
+    M = sum(r[0] * F[1] - r[1] * F[0] for F, r in forces) + sum(couples)
+    scale = max((abs(F[0]) + abs(F[1]) for F, _ in forces), default=0)
+    couple = sum(abs(c) for c in couples)
+    got = sol.forces.shaking_force
+    assert abs(got[0] - Fx) <= REL * scale and abs(got[1] - Fy) <= REL * scale, (got, Fx, Fy)
+    arm = max(abs(c) for r in ref["positions"].values() for c in r)
+    assert abs(sol.forces.shaking_moment - M) <= REL * (scale * arm + couple)
+
+
+@pytest.mark.parametrize("path", FILES, ids=[f.stem for f in FILES])
+def test_newton_euler_on_every_body_with_the_files_own_masses(path):
+    sol = solve(load_scene(path))
+    res = _newton_euler(sol, sol.forces)
+    sc = sol.scene
+    moving = {lk.key for lk in sc.links if not (lk.p in sc.ground and lk.q in sc.ground)}
+    assert moving <= set(res)
+    for body, (rf, rm, fs, ms) in res.items():
+        assert rf <= 1e-9 * fs and rm <= 1e-9 * ms, (body, rf, rm)
+
+
+@pytest.mark.parametrize("path", FILES, ids=[f.stem for f in FILES])
+def test_the_book_style_answers_hold(path):
+    sol = solve(load_scene(path))
+    verdicts = check_answers(sol)
+    assert verdicts and all(v.ok for v in verdicts), [
+        (v.key, v.given, v.correct) for v in verdicts if not v.ok
+    ]
+
+
+def test_the_corpus_states_the_chapter():
+    """At least 20 force problems: statics of every shape, dynamics, engines."""
+    assert len(FILES) >= 20 and len(STATIC) >= 8
+    scenes = [load_scene(f) for f in STATIC]
+    assert all(sc.statics and not sc.masses and sc.gravity is None for sc in scenes)
+    kinds = {type(s).__name__ for sc in map(load_scene, FILES) for s in sc.sliders}
+    assert {"FixedPath", "GuideSlider"} <= kinds
+
+
+def _area(d_mm):
+    return mpmath.pi / 4 * (mpf(d_mm) / 1000) ** 2
+
+
+ENGINES = {  # file: (r, l, rpm, reciprocating mass, i.d.c. at deg from +x, sense, gas (N))
+    # 0.6 N/mm^2 on the cover side of a 300 mm bore, 0.05 on the crank side less a 50 mm rod
+    "force_engine_double_acting": (
+        225,
+        1000,
+        200,
+        180,
+        0,
+        1,
+        0.6e6 * _area(300) - 0.05e6 * (_area(300) - _area(50)),
+    ),
+    "force_engine_petrol_from_idc": (60, 240, 1800, 1.2, 0, 1, 0.8e6 * _area(90)),
+}
+
+
+@pytest.mark.parametrize("name", sorted(ENGINES))
+def test_engine_efforts_by_the_closed_forms(name):
+    r, l, rpm, m, idc, sg, gas = ENGINES[name]
+    sc, sol, ref = _solved(HERE / f"{name}.toml")
+    e = efforts(sc, sol.plan, sol.P, sol.forces)
+    theta = mpmath.degrees(mpmath.atan2(*reversed(ref["positions"]["A"])))
+    want = closed_forms(idc, theta, r, l, rpm, m, gas, sg)
+    for got, key in ((e.F_P, "F_P"), (e.F_Q, "F_Q"), (e.F_N, "F_N"), (e.F_T, "F_T"), (e.T, "T")):
+        scale = abs(want["F_Q"]) * (mpf(r) / 1000 if key == "T" else 1)
+        assert abs(got - want[key]) <= REL * scale, key
+
+
+HEAVY_RODS = {  # file: (r, l, rpm, sense, deg past the i.d.c., rod mass, G from the crank
+    # pin, k, piston mass, gas force towards the crank (N), g along the stroke to the crank)
+    "force_engine_heavy_rod": (150, 600, 600, -1, 30, 40, 200, 200, 50, 0, 0),
+    "force_engine_vertical_rod_weight": (
+        200,
+        900,
+        300,
+        -1,
+        60,
+        90,
+        350,
+        300,
+        120,
+        1.2e6 * _area(250),
+        mpf("9.81"),
+    ),
+}
+
+
+@pytest.mark.parametrize("name", sorted(HEAVY_RODS))
+def test_heavy_rod_by_the_equivalent_dynamical_system(name):
+    """The books' second method for the rod's inertia: the rod replaced by a mass at the
+    gudgeon pin (reciprocating with the piston) and one at the crank pin (turning with
+    the crank), ``m_B = m GA / l``, ``m_A = m GB / l`` (statically equivalent), and the
+    correction couple ``-m (k^2 - GA GB) alpha_rod`` for the moment of inertia they leave
+    out, carried to the crank by ``omega_rod / omega``; the parts' weights (a vertical
+    engine: along the stroke, towards the crank) on the piston and at the crank pin. All in
+    the engine's own frame (the piston along +x, the crank turning ccw), t from the i.d.c."""
+    r, l, rpm, sg, deg, m, ga, k, mp, gas, g = HEAVY_RODS[name]
+    R, L, GA, K = (mpf(x) / 1000 for x in (r, l, ga, k))
+    GB = L - GA
+    mB, mA = m * GA / L, m * GB / L
+    w = 2 * mpmath.pi * rpm / 60
+    t = mpmath.radians(deg)
+    # the reciprocating parts (the piston and m_B): the closed forms, their weight a gas force
+    recip = closed_forms(0, deg, r, l, rpm, mp + mB, gas + (mp + mB) * g)["T"]
+    weight_at_pin = mA * g * R * mpmath.sin(t)  # m_A g (towards the crank) at A
+    psi = lambda u: mpmath.pi - mpmath.asin(R * mpmath.sin(u) / L)  # noqa: E731  the rod B->A
+    w_rod, a_rod = mpmath.diff(psi, t, 1) * w, mpmath.diff(psi, t, 2) * w**2
+    correction = -m * (K**2 - GA * GB) * a_rod * w_rod / w
+    turning = recip + weight_at_pin + correction  # with the rotation
+    sol = solve(load_scene(HERE / f"{name}.toml"))
+    want = -sg * turning  # the driver's torque, ccw positive: against the turning moment
+    assert abs(sol.forces.input_torque - want) <= REL * abs(want), (sol.forces.input_torque, want)
+
+
+STATIC_TEXT = """
+title = "slider crank held"
+units = "mm"
+[ground]
+O = [0, 0]
+[links]
+OA = 150
+AB = 600
+[sliders]
+B = { path = "horizontal", through = "O" }
+[input]
+crank = "OA"
+angle = 45
+speed = "1 rad/s ccw"
+[loads]
+B = { force = "2 kN", direction = 180 }
+"""
+
+
+def test_an_empty_masses_table_asks_for_the_static_force_analysis():
+    """docs/scene-format.md: an empty [masses] asks for the pin forces under the loads
+    alone (it used to be read as no [masses]: the torque only, and a force answer refused).
+    By hand: F_Q = F / cos phi, F_N = F tan phi, sin phi = r sin 45 deg / l."""
+    from polygon_method import parse_scene
+    from polygon_method.scene import scene_from_table, scene_table
+    from polygon_method.text.steptable import steps_text
+
+    assert solve(parse_scene(STATIC_TEXT)).forces is None
+    sc = parse_scene(STATIC_TEXT + "[masses]\n")
+    sol = solve(sc)
+    phi = mpmath.asin(mpf("0.15") * mpmath.sin(mpmath.pi / 4) / mpf("0.6"))
+    (pin,) = [p for p in sol.forces.pins if p.point == "B"]
+    assert abs(mpmath.hypot(*pin.force) - 2000 / mpmath.cos(phi)) <= REL * 2000
+    (gd,) = sol.forces.guides
+    assert abs(abs(gd.normal) - 2000 * mpmath.tan(phi)) <= REL * 2000
+    assert sol.forces.input_torque == pytest.approx(sol.input_torque, rel=1e-12)
+    assert scene_from_table(scene_table(sc)).statics  # (a variant keeps it)
+    assert "a static force analysis, no inertia forces" in " ".join(steps_text(sol).split())
+    text = STATIC_TEXT + '[masses]\n[answers]\ntolerance = "1%"\nF_B = "2032 N"\nN_B = "359.2 N"\n'
+    assert all(v.ok for v in check_answers(solve(parse_scene(text))))
+
+
+def test_a_crank_at_rest_says_how_to_state_a_statics_problem_with_weights():
+    from polygon_method import parse_scene
+    from polygon_method.common.errors import SceneError
+
+    text = STATIC_TEXT.replace('"1 rad/s ccw"', '"0 rad/s"') + "[masses]\nAB = { mass = 2 }\n"
+    with pytest.raises(SceneError, match=r"empty \[masses\].*\[loads\] at the centres of mass"):
+        parse_scene(text)
