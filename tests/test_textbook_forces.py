@@ -165,6 +165,7 @@ ENGINES = {  # file: (r, l, rpm, reciprocating mass, i.d.c. at deg from +x, sens
         0.6e6 * _area(300) - 0.05e6 * (_area(300) - _area(50)),
     ),
     "force_engine_petrol_from_idc": (60, 240, 1800, 1.2, 0, 1, 0.8e6 * _area(90)),
+    "force_engine_khurmi_horizontal": (300, 1200, 250, 250, 0, 1, 0.35e6 * _area(500)),
 }
 
 
@@ -275,3 +276,21 @@ def test_a_crank_at_rest_says_how_to_state_a_statics_problem_with_weights():
     text = STATIC_TEXT.replace('"1 rad/s ccw"', '"0 rad/s"') + "[masses]\nAB = { mass = 2 }\n"
     with pytest.raises(SceneError, match=r"empty \[masses\].*\[loads\] at the centres of mass"):
         parse_scene(text)
+
+
+def test_the_turning_moment_is_an_answer_key_and_its_slip_is_named():
+    """Khurmi's "turning moment on the crank shaft" (`turning_moment`, it was refused as an
+    unknown key, "did you mean 'shaking_moment'?"): held to the closed forms, and the
+    reciprocating parts' inertia left out (the closed forms with m = 0) named."""
+    from polygon_method import parse_scene
+
+    r, l, rpm, m, idc, sg, gas = ENGINES["force_engine_double_acting"]
+    T = closed_forms(idc, 45, r, l, rpm, m, gas, sg)["T"]
+    T0 = closed_forms(idc, 45, r, l, rpm, 0, gas, sg)["T"]
+    text = (HERE / "force_engine_double_acting.toml").read_text(encoding="utf-8")
+    text = text[: text.index("[answers]")]
+    for given, ok, slip in ((T, True, None), (T0, False, "piston_inertia_left_out")):
+        sol = solve(parse_scene(f'{text}[answers]\nturning_moment = "{float(given):.6g} N m"\n'))
+        (v,) = check_answers(sol)
+        assert v.ok is ok and v.mistake == slip, v
+        assert abs(v.correct - T) <= REL * T
