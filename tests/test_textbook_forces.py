@@ -200,11 +200,11 @@ HEAVY_RODS = {  # file: (r, l, rpm, sense, deg past the i.d.c., rod mass, G from
 }
 
 
-@pytest.mark.parametrize("name", sorted(HEAVY_RODS))
-def test_heavy_rod_by_the_equivalent_dynamical_system(name):
-    """The books' second method for the rod's inertia: the rod replaced by a mass at the
-    gudgeon pin (reciprocating with the piston) and one at the crank pin (turning with
-    the crank), ``m_B = m GA / l``, ``m_A = m GB / l`` (statically equivalent), and the
+def _equivalent_system(name):
+    """(the turning moment with the rotation, its correction couple's part, the sense) of
+    a heavy-rod engine by the books' equivalent dynamical system: the rod replaced by a mass
+    at the gudgeon pin (reciprocating with the piston) and one at the crank pin (turning
+    with the crank), ``m_B = m GA / l``, ``m_A = m GB / l`` (statically equivalent), and the
     correction couple ``-m (k^2 - GA GB) alpha_rod`` for the moment of inertia they leave
     out, carried to the crank by ``omega_rod / omega``; the parts' weights (a vertical
     engine: along the stroke, towards the crank) on the piston and at the crank pin. All in
@@ -221,10 +221,31 @@ def test_heavy_rod_by_the_equivalent_dynamical_system(name):
     psi = lambda u: mpmath.pi - mpmath.asin(R * mpmath.sin(u) / L)  # noqa: E731  the rod B->A
     w_rod, a_rod = mpmath.diff(psi, t, 1) * w, mpmath.diff(psi, t, 2) * w**2
     correction = -m * (K**2 - GA * GB) * a_rod * w_rod / w
-    turning = recip + weight_at_pin + correction  # with the rotation
+    return recip + weight_at_pin + correction, correction, sg
+
+
+@pytest.mark.parametrize("name", sorted(HEAVY_RODS))
+def test_heavy_rod_by_the_equivalent_dynamical_system(name):
+    turning, _, sg = _equivalent_system(name)
     sol = solve(load_scene(HERE / f"{name}.toml"))
     want = -sg * turning  # the driver's torque, ccw positive: against the turning moment
     assert abs(sol.forces.input_torque - want) <= REL * abs(want), (sol.forces.input_torque, want)
+
+
+@pytest.mark.parametrize("name", sorted(HEAVY_RODS))
+def test_the_correction_couple_left_out_is_named(name):
+    """A student who puts the rod's two masses at its pins and forgets the correction
+    couple: check names the slip (the value from the equivalent system without it)."""
+    from polygon_method import parse_scene
+
+    turning, correction, sg = _equivalent_system(name)
+    text = (HERE / f"{name}.toml").read_text(encoding="utf-8")
+    text = text[: text.index("[answers]")]
+    slip = abs(turning - correction)
+    sol = solve(parse_scene(f'{text}[answers]\ntorque = "{float(slip):.6g} N m"\n'))
+    (v,) = check_answers(sol)
+    assert not v.ok and v.mistake == "correction_couple_left_out", v
+    assert abs(v.correct - abs(turning)) <= REL * abs(turning)
 
 
 STATIC_TEXT = """
@@ -265,6 +286,9 @@ def test_an_empty_masses_table_asks_for_the_static_force_analysis():
     assert sol.forces.input_torque == pytest.approx(sol.input_torque, rel=1e-12)
     assert scene_from_table(scene_table(sc)).statics  # (a variant keeps it)
     assert "a static force analysis, no inertia forces" in " ".join(steps_text(sol).split())
+    assert "input torque on OA (the loads alone: a static force analysis): 250.2 N m cw" in (
+        sol.report()
+    )
     text = STATIC_TEXT + '[masses]\n[answers]\ntolerance = "1%"\nF_B = "2032 N"\nN_B = "359.2 N"\n'
     assert all(v.ok for v in check_answers(solve(parse_scene(text))))
 

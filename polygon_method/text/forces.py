@@ -199,7 +199,9 @@ def forces_lines(sol) -> list:
         M,
         " (inertia, weights, loads and friction)"
         if sc.friction is not None
-        else " (inertia, weights and loads)",
+        else " (inertia, weights and loads)"
+        if sc.masses or sc.gravity
+        else " (the loads alone: a static force analysis)",
     )
     out.append(
         f"shaking force on the frame: {_vec(f.shaking_force, F)}; shaking moment "
