@@ -166,16 +166,29 @@ ENGINES = {  # file: (r, l, rpm, reciprocating mass, i.d.c. at deg from +x, sens
     ),
     "force_engine_petrol_from_idc": (60, 240, 1800, 1.2, 0, 1, 0.8e6 * _area(90)),
     "force_engine_khurmi_horizontal": (300, 1200, 250, 250, 0, 1, 0.35e6 * _area(500)),
+    # the line of stroke at 60 deg: the weight's part along it (towards the crank) is a gas
+    # force; its part across it, m g cos 60, adds to the side thrust
+    "force_engine_inclined_weight": (
+        100,
+        400,
+        1500,
+        2,
+        60,
+        1,
+        2e6 * _area(100) + 2 * mpf("9.81") * mpmath.sin(mpmath.pi / 3),
+        2 * mpf("9.81") * mpmath.cos(mpmath.pi / 3),
+    ),
 }
 
 
 @pytest.mark.parametrize("name", sorted(ENGINES))
 def test_engine_efforts_by_the_closed_forms(name):
-    r, l, rpm, m, idc, sg, gas = ENGINES[name]
+    r, l, rpm, m, idc, sg, gas, *across = ENGINES[name]
     sc, sol, ref = _solved(HERE / f"{name}.toml")
     e = efforts(sc, sol.plan, sol.P, sol.forces)
     theta = mpmath.degrees(mpmath.atan2(*reversed(ref["positions"]["A"])))
     want = closed_forms(idc, theta, r, l, rpm, m, gas, sg)
+    want["F_N"] += sum(across)
     for got, key in ((e.F_P, "F_P"), (e.F_Q, "F_Q"), (e.F_N, "F_N"), (e.F_T, "F_T"), (e.T, "T")):
         scale = abs(want["F_Q"]) * (mpf(r) / 1000 if key == "T" else 1)
         assert abs(got - want[key]) <= REL * scale, key
