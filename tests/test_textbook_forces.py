@@ -22,6 +22,7 @@ Against references that share nothing with the force solver:
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import mpmath
@@ -331,3 +332,53 @@ def test_the_turning_moment_is_an_answer_key_and_its_slip_is_named():
         (v,) = check_answers(sol)
         assert v.ok is ok and v.mistake == slip, v
         assert abs(v.correct - T) <= REL * T
+
+
+def test_a_static_problem_per_student_says_it_is_static(tmp_path, capsys):
+    """variants of a static force analysis: each problem says the masses are neglected and
+    asks for the force polygons (it asked for the velocity and acceleration polygons); the
+    key's pin forces are each variant's statics (its rod a two-force member: the pins B
+    and C carry one force, and A's is B's)."""
+    import csv
+
+    from polygon_method.cli import main
+
+    root = Path(__file__).resolve().parent.parent / "worked_problems"
+    scene = tmp_path / "static.toml"
+    scene.write_text(
+        (root / "static_fourbar_pin_forces.toml").read_text(encoding="utf-8")
+        + "\n[variants]\nangle = { from = 40, to = 80, step = 5 }\n",
+        encoding="utf-8",
+    )
+    assert (
+        main(["variants", str(scene), "--count", "3", "--seed", "2", "-o", str(tmp_path / "v")])
+        == 0
+    )
+    capsys.readouterr()
+    sheet = (tmp_path / "v" / "problem-sheet.md").read_text(encoding="utf-8")
+    assert sheet.count("The links' masses are neglected: a static force analysis.") == 3
+    assert sheet.count("Find, by the force polygons (a static force analysis):") == 3
+    assert "velocity and acceleration polygons" not in sheet
+    rows = list(csv.DictReader((tmp_path / "v" / "answer-key.csv").open(encoding="utf-8")))
+    assert len(rows) == 3
+    for row in rows:  # by hand: C above AD, BC a two-force member, moments of DC about D
+        t = math.radians(float(row["angle"].split()[0]))
+        B, D = (200 * math.cos(t), 200 * math.sin(t)), (500.0, 0.0)
+        d = math.dist(B, D)
+        a = (d * d + 600**2 - 400**2) / (2 * d)  # from B along BD to the chord
+        h = math.sqrt(600**2 - a * a)
+        ex, ey = (D[0] - B[0]) / d, (D[1] - B[1]) / d
+        C = max(
+            ((B[0] + a * ex - s * h * ey, B[1] + a * ey + s * h * ex) for s in (1, -1)),
+            key=lambda c: c[1],
+        )
+        u = ((C[0] - B[0]) / 600, (C[1] - B[1]) / 600)
+        E = (D[0] + 250 * (C[0] - D[0]) / 400, D[1] + 250 * (C[1] - D[1]) / 400)
+        P = (100 * math.cos(math.radians(150)), 100 * math.sin(math.radians(150)))
+        m = ((E[0] - D[0]) * P[1] - (E[1] - D[1]) * P[0]) / 1000
+        F = -m / (((C[0] - D[0]) * u[1] - (C[1] - D[1]) * u[0]) / 1000)
+        # F u on DC at C, so -F u on AB at B: the driver's torque balances its moment about A
+        T = F * (B[0] * u[1] - B[1] * u[0]) / 1000
+        for k in ("F_A (N)", "F_B (N)", "F_C (N)"):
+            assert float(row[k]) == pytest.approx(abs(F), rel=1e-9)
+        assert float(row["torque (N m)"]) == pytest.approx(T, rel=1e-9)
