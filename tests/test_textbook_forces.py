@@ -382,3 +382,70 @@ def test_a_static_problem_per_student_says_it_is_static(tmp_path, capsys):
         for k in ("F_A (N)", "F_B (N)", "F_C (N)"):
             assert float(row[k]) == pytest.approx(abs(F), rel=1e-9)
         assert float(row["torque (N m)"]) == pytest.approx(T, rel=1e-9)
+
+
+#: a corpus problem kept here, not in tests/textbook (the corpus's generic force tests,
+#: tests/test_force_sweep.py's among them, are written for frictionless scenes)
+FRICTION = """# Of the kind of Ghosh & Mallik, "Static force analysis with friction": the slider crank
+# of force_static_slider_crank.toml with Coulomb friction at the guide, mu = 0.1 (the pins
+# frictionless); own numbers. Crank OA = 150 mm, rod AB = 600 mm, the crank at 45 deg
+# turning ccw (the slider moving towards O); 2 kN pushes the slider towards O. Find the
+# thrust in the rod, the guide's normal reaction and the torque on the crank.
+#
+# Answers worked by hand here (not read from the tool), to four figures: the slider moves
+# towards O, the friction mu N on it away from O; with the rod's thrust C at phi to the
+# line of stroke (sin phi = r sin 45 / l), N = C sin phi and C (cos phi + mu sin phi) =
+# 2000: C = 1996 N, N = 352.9 N; T = C r sin(45 deg + phi) = 245.8 N m (cw: the load
+# drives, the crank is held back), 4.4 N m less than without friction.
+source = "Ghosh-Mallik-style statics with friction, own numbers; answers by hand"
+title = "Slider crank held against a force on the piston, with friction at the guide"
+units = "mm"
+
+[ground]
+O = [0, 0]
+
+[links]
+OA = 150
+AB = 600
+
+[sliders]
+B = { path = "horizontal", through = "O" }
+
+[input]
+crank = "OA"
+angle = 45
+speed = "1 rad/s ccw"
+
+[friction]
+guides = 0.1
+
+[masses]
+
+[loads]
+B = { force = "2 kN", direction = 180 }
+
+[answers]
+tolerance = "1%"
+F_B = "1996 N"
+N_B = "352.9 N"
+torque = "245.8 N m cw"
+"""
+
+
+def test_static_slider_crank_with_friction_at_the_guide_by_hand():
+    """The slider moves towards O (the crank ccw at 45 deg), the friction mu N on it away
+    from O: N = C sin phi, C (cos phi + mu sin phi) = F, T = C r sin(45 deg + phi); and the
+    answers the problem gives."""
+    from polygon_method import parse_scene
+
+    sol = solve(parse_scene(FRICTION))
+    assert all(v.ok for v in check_answers(sol))
+    mpmath.mp.dps = 30
+    r, l, F, mu, t = mpf("0.15"), mpf("0.6"), mpf(2000), mpf("0.1"), mpmath.pi / 4
+    phi = mpmath.asin(r * mpmath.sin(t) / l)
+    C = F / (mpmath.cos(phi) + mu * mpmath.sin(phi))
+    (pin,) = [p for p in sol.forces.pins if p.point == "B"]
+    (gd,) = sol.forces.guides
+    assert abs(mpmath.hypot(*pin.force) - C) <= REL * F
+    assert abs(abs(gd.normal) - C * mpmath.sin(phi)) <= REL * F
+    assert abs(sol.forces.input_torque + C * r * mpmath.sin(t + phi)) <= REL * F * r
