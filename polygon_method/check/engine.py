@@ -25,6 +25,7 @@ __all__ = ["ENGINE_KEYS", "engine_value", "engine_verdict"]
 ENGINE_KEYS = {
     "piston_effort": ("force", "N", "the piston effort"),
     "crank_effort": ("force", "N", "the crank effort"),
+    "turning_moment": ("torque", "N m", "the turning moment on the crank shaft"),
     "T_mean": ("torque", "N m", "the mean turning moment"),
     "dE_max": ("energy", "J", "the maximum fluctuation of energy"),
     "I_flywheel": ("moment_of_inertia", "kg m^2", "the flywheel's moment of inertia"),
@@ -38,6 +39,7 @@ ENGINE_KEYS = {
 _INSTANT = (
     "piston_effort",
     "crank_effort",
+    "turning_moment",
     "rod_thrust",
     "side_thrust",
     "shaking_force",
@@ -68,6 +70,7 @@ def engine_value(sol, key, scene=None):
             {
                 "piston_effort": e.F_P,
                 "crank_effort": e.F_T,
+                "turning_moment": e.T,
                 "rod_thrust": e.F_Q,
                 "side_thrust": e.F_N,
             }[key]
@@ -89,7 +92,7 @@ def _slips(sol, key, correct):
     blocks = [m for m in sc.masses if m.block]
     if blocks and key != "T_mean":  # (the inertia averages nothing over a cycle)
         try:
-            if key in ("piston_effort", "crank_effort"):
+            if key in ("piston_effort", "crank_effort", "turning_moment"):
                 v = _gas_alone(sol, key)
             elif key in ("rod_thrust", "side_thrust"):
                 v = None  # (the closed forms give these from the piston effort alone)
@@ -166,7 +169,7 @@ def _gas_alone(sol, key):
     F_P = e.F_P - toward
     if key == "piston_effort":
         return F_P
-    return e.F_T * F_P / e.F_P if e.F_P else None
+    return (e.T if key == "turning_moment" else e.F_T) * F_P / e.F_P if e.F_P else None
 
 
 def _correct(sol, ans) -> float:
@@ -179,7 +182,7 @@ def _correct(sol, ans) -> float:
             ans,
             (
                 "the engine's efforts"
-                if "thrust" in key or "effort" in key
+                if "thrust" in key or "effort" in key or key == "turning_moment"
                 else "the shaking force and moment"
             )
             + " need the force analysis: give "

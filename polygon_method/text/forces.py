@@ -213,7 +213,9 @@ def forces_lines(sol) -> list:
         M,
         " (inertia, weights, loads and friction)"
         if sc.friction is not None
-        else " (inertia, weights and loads)",
+        else " (inertia, weights and loads)"
+        if sc.masses or sc.gravity
+        else " (the loads alone: a static force analysis)",
     )
     out.append(
         f"shaking force on the frame: {_vec(f.shaking_force, F)}; shaking moment "
@@ -362,6 +364,15 @@ def _inertia_blocks(sol, f, F, M) -> list:
     sc = sol.scene
     u = sc.length_unit
     blocks = [("h", "6. Inertia forces (D'Alembert)")]
+    if not f.inertia:  # an empty [masses]: the static force analysis of the loads
+        return blocks + [
+            (
+                "p",
+                "No masses (the scene's [masses] is empty): a static force analysis, no "
+                "inertia forces; the loads"
+                + (f" and gravity ({sc.gravity.text}) act." if sc.gravity else " alone act."),
+            )
+        ]
     blocks.append(
         (
             "p",
