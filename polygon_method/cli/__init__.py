@@ -298,7 +298,9 @@ def main(argv=None) -> int:
             return 2
     try:
         with _glyphs(args.command):
-            code = args.func(args)
+            from .energy import route  # a turning-moment diagram with no mechanism
+
+            code = (route(args) or args.func)(args)
         sys.stdout.flush()  # a full disk on standard output is one line too
         return code
     except PolygonMethodError as exc:
