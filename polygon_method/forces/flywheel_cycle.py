@@ -95,10 +95,12 @@ class CycleEnergy:
 
     @property
     def E_max(self) -> float:
+        """The greatest energy at a crossing (J, above E at a)."""
         return self.crossings[self.i_max].energy
 
     @property
     def E_min(self) -> float:
+        """The least energy at a crossing (J, above E at a)."""
         return self.crossings[self.i_min].energy
 
     def as_dict(self) -> dict:

@@ -21,7 +21,8 @@ import tomllib
 from ..common.errors import SceneError
 from ..common.units import UNITS, did_you_mean
 from .energy_flywheel import CYCLE_ANSWERS, _RimReader
-from .energy_records import CycleScene, Diagram, Law, Press, Table
+from .energy_press import _PressReader
+from .energy_records import CycleScene, Diagram, Law, Table
 from .source import syntax_error, toml_table
 
 __all__ = [
@@ -48,18 +49,6 @@ _TM_KEYS = (
     "angle",
     "cycle",
     "at",
-)
-_PRESS_KEYS = (
-    "energy",
-    "force",
-    "thickness",
-    "diameter",
-    "shear_strength",
-    "holes_per_minute",
-    "time",
-    "punching_time",
-    "punching_angle",
-    "punching_fraction",
 )
 _SCALE = re.compile(r"^\s*([0-9.]+)\s*(mm|cm)\s*=\s*(.+?)\s*$")
 _TOKEN = re.compile(
@@ -177,7 +166,7 @@ def _argument(toks, i):
     return k, phi, i
 
 
-class _CycleReader(_RimReader):
+class _CycleReader(_RimReader, _PressReader):
     """Reads a :class:`CycleScene` with a mechanism reader's location helpers ``ld``."""
 
     def __init__(self, ld):
@@ -192,7 +181,7 @@ class _CycleReader(_RimReader):
         for key in raw:
             if key in _MECHANISM:
                 raise self.err(
-                    f"[{key}]: a turning-moment diagram stated as [turning_moment] or [press] "
+                    "a turning-moment diagram stated as [turning_moment] or [press] "
                     "stands alone (no mechanism); an engine's diagram comes from its "
                     "[indicator]",
                     key,
@@ -301,14 +290,19 @@ class _CycleReader(_RimReader):
         resisting = None
         r = spec.get("resisting", "constant")
         if isinstance(r, str) and r.strip().lower() == "constant":
+            if isinstance(driving, Law) and not driving.terms:
+                raise self.err(
+                    'torque = "constant" needs a resisting torque that varies (resisting = '
+                    '"800 + 350 sin theta")',
+                    t,
+                    "resisting" if "resisting" in spec else "torque",
+                )
             words.append("the resisting torque constant, the mean (default)")
-        elif isinstance(driving, Law) and driving.text.strip().lower() == "constant":
-            raise self.err("only one of torque and resisting may be constant", t, "resisting")
         else:
             resisting = self._law(r, t, "resisting", k)
+            if not resisting.terms:
+                raise self.err("only one of torque and resisting may be constant", t, "resisting")
             words.append(f"the resisting torque {resisting.text} {unit.strip()}")
-        if isinstance(driving, Law) and not driving.terms and resisting is None:
-            raise self.err('torque = "constant" needs a resisting torque that varies', t, "torque")
         return Diagram(
             "law" if isinstance(driving, Law) else "table",
             cycle,
@@ -453,104 +447,3 @@ class _CycleReader(_RimReader):
         return vals[0] * vals[1]
 
     # -- [press]
-    def press(self) -> Press:
-        t = "press"
-        spec = self.ld.table(t)
-        self._keys(spec, t, _PRESS_KEYS)
-        words = []
-        if "energy" in spec:
-            for k in ("force", "diameter", "shear_strength"):
-                if k in spec:
-                    raise self.err(f"{k}: not with energy (the energy of one hole is given)", t, k)
-            energy = self.ld.qty(spec["energy"], "energy", t, "energy").value
-            words.append(f"the energy of one hole {energy:.6g} J")
-        else:
-            if "thickness" not in spec:
-                raise self.err(
-                    'give the energy of one hole (energy = "6 kJ"), or the greatest force '
-                    "and the plate's thickness (force, thickness), or the hole's diameter, "
-                    "the thickness and the plate's ultimate shear strength",
-                    t,
-                    "energy",
-                )
-            th = self.ld.length(spec["thickness"], t, "thickness")
-            if "force" in spec:
-                for k in ("diameter", "shear_strength"):
-                    if k in spec:
-                        raise self.err(f"{k}: not with force (the force is given)", t, k)
-                force = self.ld.qty(spec["force"], "force", t, "force").value
-            else:
-                if "diameter" not in spec or "shear_strength" not in spec:
-                    raise self.err(
-                        "the greatest force: give force, or the hole's diameter and the "
-                        "plate's ultimate shear strength (shear_strength)",
-                        t,
-                        "force",
-                    )
-                d = self.ld.length(spec["diameter"], t, "diameter")
-                tau = self.ld.qty(spec["shear_strength"], "pressure", t, "shear_strength").value
-                force = tau * math.pi * d * th
-                words.append(f"the greatest force F = tau pi d t = {force:.6g} N")
-            if not force > 0:
-                raise self.err("the force must be positive", t, "force")
-            energy = 0.5 * force * th
-            words.append(
-                f"the energy of one hole E = F t / 2 = {energy:.6g} J (the force falling "
-                "evenly from its greatest to nought through the plate: the book's triangle)"
-            )
-        if not energy > 0:
-            raise self.err("the energy of one hole must be positive", t, "energy")
-        if ("holes_per_minute" in spec) == ("time" in spec):
-            raise self.err(
-                'give the rate, holes_per_minute = 6, or the time of one cycle, time = "10 s": '
-                "one of them",
-                t,
-                "holes_per_minute",
-            )
-        if "time" in spec:
-            period = self._seconds(spec["time"], t, "time")
-        else:
-            n = spec["holes_per_minute"]
-            if isinstance(n, bool) or not isinstance(n, (int, float)) or not 0 < n < 1e6:
-                raise self.err("holes_per_minute = a positive number", t, "holes_per_minute")
-            period = 60.0 / n
-        words.append(f"one cycle {period:.6g} s")
-        given = [k for k in ("punching_time", "punching_angle", "punching_fraction") if k in spec]
-        if len(given) != 1:
-            raise self.err(
-                "how long the punching takes: punching_time (s), punching_angle (of the "
-                "crank's turn) or punching_fraction (of the cycle): one of them",
-                t,
-                given[1] if given else "punching_time",
-            )
-        key = given[0]
-        if key == "punching_time":
-            f = self._seconds(spec[key], t, key) / period
-        elif key == "punching_angle":
-            f = self.ld.qty(spec[key], "angle", t, key, default_unit="deg").value / (2 * math.pi)
-        else:
-            f = spec[key]
-            if isinstance(f, str) and "/" in f:
-                a, _, b = f.partition("/")
-                try:
-                    f = float(a) / float(b)
-                except (ValueError, ZeroDivisionError):
-                    raise self.err(f'{key} = {spec[key]!r}: a fraction, 0.1 or "1/10"', t, key)
-            if isinstance(f, bool) or not isinstance(f, (int, float)):
-                raise self.err(f'{key} = {spec[key]!r}: a fraction, 0.1 or "1/10"', t, key)
-        if not 0 < f < 1:
-            raise self.err(
-                f"{key}: the punching takes part of the cycle (0 to 1), not {f:g}", t, key
-            )
-        words.append(f"the punching {f:.6g} of the cycle")
-        return Press(energy, period, float(f), tuple(words))
-
-    def _seconds(self, raw, t, key) -> float:
-        m = re.match(r"^\s*([0-9.eE+-]+)\s*(s|sec|seconds?|min|minutes?)?\s*$", str(raw))
-        try:
-            v = float(m.group(1)) if m else math.nan
-        except ValueError:
-            v = math.nan
-        if isinstance(raw, bool) or not (v > 0 and math.isfinite(v)):
-            raise self.err(f'{key} = {raw!r}: a time, "10 s" or 10 (seconds)', t, key)
-        return v * (60.0 if m.group(2) and m.group(2).startswith("min") else 1.0)

@@ -98,6 +98,7 @@ class _RimReader:
         return None, w, i
 
     def flywheel(self, press) -> Rim:
+        """[flywheel]: a :class:`Rim`."""
         t = "flywheel"
         spec = self.ld.table(t)
         for k in spec:
@@ -105,6 +106,47 @@ class _RimReader:
                 raise self.err(f"unknown key '{k}'{did_you_mean(k, list(_FLY_KEYS))}", t, k)
         words = []
         c, w, inertia = self._coefficient(spec, t, words)
+        ld = self.ld
+        density = DEFAULT_DENSITY
+        if "density" in spec:
+            density = self._density(spec["density"], t)
+            words.append(f"the rim's density {density:.6g} kg/m^3")
+        radius, rim_speed, stress = self._radius(spec, t, w, density, words)
+        gyr = (
+            ld.length(spec["gyration"], t, "gyration")
+            if "gyration" in spec and "mass" not in spec
+            else None
+        )
+        share = 1.0
+        if "rim_share" in spec:
+            share = self._fraction(spec["rim_share"], t, "rim_share")
+            if not 0 < share <= 1:
+                raise self.err(
+                    "rim_share: the rim's part of the flywheel's effect, 0 to 1", t, "rim_share"
+                )
+            words.append(f"the rim gives {share:.6g} of the flywheel's effect")
+        ratio, width, thickness = self._section(spec, t, radius, words)
+        sec = ratio or width or thickness
+        if sec is not None and "density" not in spec and stress is None:
+            words.append(f"the rim's density {density:g} kg/m^3 (cast iron, the default)")
+        return Rim(
+            c,
+            w,
+            inertia,
+            radius,
+            gyr,
+            rim_speed,
+            stress,
+            density,
+            share,
+            ratio,
+            width,
+            thickness,
+            tuple(words),
+        )
+
+    def _radius(self, spec, t, w, density, words) -> tuple:
+        """(the rim's mean radius, its speed, the hoop stress), None where not given."""
         ld = self.ld
         sizes = [k for k in ("radius", "diameter", "rim_speed", "stress") if k in spec]
         if len(sizes) > 1:
@@ -114,10 +156,6 @@ class _RimReader:
                 "give the rim's radius or the radius of gyration, not both", t, "gyration"
             )
         radius = rim_speed = stress = None
-        density = DEFAULT_DENSITY
-        if "density" in spec:
-            density = self._density(spec["density"], t)
-            words.append(f"the rim's density {density:.6g} kg/m^3")
         if sizes == ["radius"]:
             radius = ld.length(spec["radius"], t, "radius")
         elif sizes == ["diameter"]:
@@ -140,19 +178,11 @@ class _RimReader:
                 f"the hoop stress sigma = rho v^2: v = {rim_speed:.6g} m/s, R = v / w = "
                 f"{radius:.6g} m"
             )
-        gyr = (
-            ld.length(spec["gyration"], t, "gyration")
-            if "gyration" in spec and "mass" not in spec
-            else None
-        )
-        share = 1.0
-        if "rim_share" in spec:
-            share = self._fraction(spec["rim_share"], t, "rim_share")
-            if not 0 < share <= 1:
-                raise self.err(
-                    "rim_share: the rim's part of the flywheel's effect, 0 to 1", t, "rim_share"
-                )
-            words.append(f"the rim gives {share:.6g} of the flywheel's effect")
+        return radius, rim_speed, stress
+
+    def _section(self, spec, t, radius, words) -> tuple:
+        """(width / thickness, the width, the thickness) the rim's section is set by."""
+        ld = self.ld
         ratio = width = thickness = None
         sec = [k for k in ("width_to_thickness", "width", "thickness") if k in spec]
         if len(sec) > 1:
@@ -177,23 +207,7 @@ class _RimReader:
             width = ld.length(spec["width"], t, "width")
         elif sec == ["thickness"]:
             thickness = ld.length(spec["thickness"], t, "thickness")
-        if sec and "density" not in spec and stress is None:
-            words.append(f"the rim's density {density:g} kg/m^3 (cast iron, the default)")
-        return Rim(
-            c,
-            w,
-            inertia,
-            radius,
-            gyr,
-            rim_speed,
-            stress,
-            density,
-            share,
-            ratio,
-            width,
-            thickness,
-            tuple(words),
-        )
+        return ratio, width, thickness
 
     def _density(self, raw, t):
         m = _NUM.match(raw) if isinstance(raw, str) else None

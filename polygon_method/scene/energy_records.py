@@ -100,6 +100,7 @@ class Table:
 
     @property
     def corners(self) -> tuple:
+        """Where T has a corner or a jump: every reading's angle."""
         return tuple(self.angles)
 
 

@@ -299,13 +299,6 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
         raw = self.raw
         self.check_integers()
         for key in raw:
-            if key in ("turning_moment", "press"):  # the flywheel chapter: no mechanism
-                raise self.error(
-                    "a turning-moment diagram (or a press) with no mechanism: not a "
-                    "mechanism's scene (read it with polygon_method.scene.energy."
-                    "cycle_from_text; the command line reads either)",
-                    key,
-                )
             if key not in TOP_KEYS:
                 kind = "table" if isinstance(raw[key], dict) else "key"
                 where = f"[{key}]" if kind == "table" else key
