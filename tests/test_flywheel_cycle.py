@@ -124,11 +124,14 @@ def _reference(T, R, cycle):
     mp.dps = 30
     q = lambda x: T(x) - R(x)  # noqa: E731
     n = 4000
-    xs = [cycle * mpf(i) / n for i in range(n + 1)]
+    shift = mpf("0.0123")  # a grid off the round angles: a crossing at 0 is inside a step
+    xs = [shift + cycle * mpf(i) / n for i in range(n + 1)]
     roots = []
     for a, b in zip(xs, xs[1:]):
         if q(a) * q(b) < 0:
-            roots.append(mp.findroot(q, (a, b), solver="anderson"))
+            r = mp.findroot(q, (a, b), solver="anderson")
+            roots.append(r - cycle if r >= cycle else r)
+    roots.sort()
     es = [mpf(0)]
     for a, b in zip(roots, roots[1:]):
         es.append(es[-1] + mp.quad(q, [a, b]))

@@ -241,7 +241,7 @@ def _curve(d) -> dict:
             "no fluctuation of energy, no flywheel to find",
             key="[turning_moment] torque",
         )
-    roots = []
+    roots = [0.0] if qs[0] == 0.0 and qs[-2] * qs[1] < 0 else []  # (the cycle repeats)
     for i in range(len(grid) - 1):
         a, b, qa, qb = grid[i], grid[i + 1], qs[i], qs[i + 1]
         if qa == 0.0 and i > 0 and qs[i - 1] * qb < 0:

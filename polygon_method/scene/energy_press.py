@@ -16,12 +16,29 @@ _PRESS_KEYS = (
     "thickness",
     "diameter",
     "shear_strength",
+    "energy_per_area",
     "holes_per_minute",
     "time",
     "punching_time",
     "punching_angle",
     "punching_fraction",
 )
+
+
+_PER_AREA = re.compile(
+    r"^\s*((?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(J|N m|N-m|Nm)\s*/\s*(mm\^2|mm2|mm²|cm\^2|cm2|cm²|m\^2|m2|m²)\s*$"
+)
+_AREA = {
+    "mm^2": 1e-6,
+    "mm2": 1e-6,
+    "mm²": 1e-6,
+    "cm^2": 1e-4,
+    "cm2": 1e-4,
+    "cm²": 1e-4,
+    "m^2": 1.0,
+    "m2": 1.0,
+    "m²": 1.0,
+}
 
 
 class _PressReader:
@@ -58,6 +75,8 @@ class _PressReader:
                     "energy",
                 )
             th = self.ld.length(spec["thickness"], t, "thickness")
+            if "energy_per_area" in spec:
+                return self._sheared(spec, t, th, words)
             if "force" in spec:
                 for k in ("diameter", "shear_strength"):
                     if k in spec:
@@ -82,6 +101,27 @@ class _PressReader:
                 f"the energy of one hole E = F t / 2 = {energy:.6g} J (the force falling "
                 "evenly from its greatest to nought through the plate: the book's triangle)"
             )
+        return energy
+
+    def _sheared(self, spec, t, th, words) -> float:
+        """The energy of one hole from the energy per mm^2 of sheared area (pi d t)."""
+        for k in ("force", "shear_strength"):
+            if k in spec:
+                raise self.err(f"{k}: not with energy_per_area", t, k)
+        if "diameter" not in spec:
+            raise self.err("energy_per_area needs the hole's diameter", t, "diameter")
+        d = self.ld.length(spec["diameter"], t, "diameter")
+        raw = spec["energy_per_area"]
+        m = _PER_AREA.match(raw) if isinstance(raw, str) else None
+        if m is None or not float(m.group(1)) > 0:
+            raise self.err(
+                f'energy_per_area = {raw!r}: "6 J/mm^2" (J or N m per mm^2, cm^2 or m^2)',
+                t,
+                "energy_per_area",
+            )
+        e = float(m.group(1)) / _AREA[m.group(3)]
+        energy = e * math.pi * d * th
+        words.append(f"the energy of one hole E = e pi d t = {energy:.6g} J (the sheared area)")
         return energy
 
     def _timing(self, spec, t, words) -> tuple:
