@@ -34,3 +34,20 @@ def test_every_answer_of_the_book_is_right(path, capsys):
     assert not wrong
     assert main(["check", str(path)]) == 0
     assert "WRONG" not in capsys.readouterr().out
+
+
+WORKED = sorted((HERE.parent.parent.parent / "worked_problems" / "flywheel").glob("*.toml"))
+
+
+@pytest.mark.parametrize("path", WORKED, ids=[f.stem for f in WORKED])
+def test_the_worked_problems_flag_exactly_the_students_slips(path):
+    """Each worked problem carries the answers worked by hand in its comment and one
+    student's slip (marked on its line): that one is wrong and named, the rest right."""
+    text = path.read_text(encoding="utf-8")
+    slips = {
+        line.split("=")[0].strip() for line in text.splitlines() if "the student's slip" in line
+    }
+    scene = cycle_from_text(text, str(path))
+    verdicts = cycle_verdicts(scene, solve_cycle(scene), scene.answers, scene.tolerance)
+    assert slips and {v.key for v in verdicts if not v.ok} == slips
+    assert all(v.mistake for v in verdicts if not v.ok)
