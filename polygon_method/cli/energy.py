@@ -87,7 +87,8 @@ def _solve(args, scene) -> int:
 def _steps(args, scene) -> int:
     from ..text.energy import cycle_steps
 
-    print(cycle_steps(scene, _solved(scene)))
+    text = cycle_steps(scene, _solved(scene))
+    print(f"```\n{text}\n```" if getattr(args, "format", "text") == "markdown" else text)
     return 0
 
 

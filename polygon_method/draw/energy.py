@@ -13,9 +13,9 @@ import math
 
 import numpy as np
 
-from ..common.numbers import textbook as _g
 from ..forces.flywheel_cycle import curves
 from .paper import PAPERS
+from ..text.energy import book_number as _g
 from .sheet import figure_data
 
 __all__ = ["cycle_sheet"]
@@ -85,7 +85,8 @@ def _extremes(c, ax, where):
     for x, col in ((hi, "#2e7d32"), (lo, "#c62828")):
         ax.plot([where(x)], [x.energy], "o", color=col, ms=5)
         ax.annotate(
-            f"{x.letter}: E {'+' if x.energy >= 0 else '-'} {_g(abs(x.energy))} J",
+            f"{x.letter}: E"
+            + (f" {'+' if x.energy > 0 else '-'} {_g(abs(x.energy))} J" if x.energy else ""),
             (where(x), x.energy),
             textcoords="offset points",
             xytext=(6, 6),

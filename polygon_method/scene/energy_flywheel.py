@@ -126,8 +126,7 @@ class _RimReader:
                 )
             words.append(f"the rim gives {share:.6g} of the flywheel's effect")
         ratio, width, thickness = self._section(spec, t, radius, words)
-        sec = ratio or width or thickness
-        if sec is not None and "density" not in spec and stress is None:
+        if radius is not None and "density" not in spec and stress is None:
             words.append(f"the rim's density {density:g} kg/m^3 (cast iron, the default)")
         return Rim(
             c,

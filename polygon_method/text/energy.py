@@ -6,9 +6,19 @@ from __future__ import annotations
 
 import math
 
-from ..common.numbers import textbook as _g
+from ..common.numbers import textbook
 
-__all__ = ["cycle_text", "cycle_steps"]
+
+def book_number(x: float) -> str:
+    """Four significant figures, as a book writes them; a whole number from 10,000 to ten
+    million written out (17963 J, not 1.7963e+04 J)."""
+    return f"{x:.0f}" if 1e4 <= abs(x) < 1e7 else textbook(x)
+
+
+_g = book_number
+
+
+__all__ = ["cycle_text", "cycle_steps", "book_number"]
 
 _FORMS = {
     "areas": "the turning-moment diagram given as its areas above and below the mean line",
