@@ -1,8 +1,9 @@
 """The commands on a scene that states a turning-moment diagram (or a punching press) and no
 mechanism: ``solve`` (``--json``), ``steps``, ``check``, ``draw``, ``sweep`` (``--summary``,
-``--csv``, ``--plot``); the others have nothing to do there and say so in one line. A
-mechanism's scene never comes here: the file is looked at for a ``[turning_moment]`` or
-``[press]`` header first, which costs a regular expression over its bytes."""
+``--csv``, ``--plot``); the others have nothing to do there and say so in one line. Only a
+scene the mechanism's reader refuses comes here: the file is looked at for a
+``[turning_moment]`` or ``[press]`` header, and where it has none the reader's refusal
+stands."""
 
 from __future__ import annotations
 
@@ -38,7 +39,7 @@ def route(args):
         data = Path(path).read_bytes()
     except OSError:
         return None
-    if not _HEADER.search(data):
+    if (b"turning_moment" not in data and b"press" not in data) or not _HEADER.search(data):
         return None
     from ..scene.energy import cycle_from_text
 
