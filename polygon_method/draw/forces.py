@@ -396,7 +396,8 @@ def _polygon(sol, st, scale: Scale, tiny, tag) -> _Sketch:
     bodies = ", ".join(_what(b, numbers, sol.scene) for b in st.bodies)
     lines = [
         f"step {st.index + 1}, {st.title}: {bodies}; link 1 the frame",
-        "F\u2083\u2082: the force on 3 by 2 (\u1d57 square to its link, \u207f along it)",
+        "F\u2083\u2082: the force on 3 by 2 (\u1d57 square to its link, guide or contact, "
+        "\u207f along the link or guide, normal to a contact)",
     ] + rows
     _header(sk, tag, "Force polygon", scale, lines=lines)
     return sk
