@@ -70,8 +70,10 @@ READ = """(ks) => {
       fy: Number(e.dataset.fy || 0), c: Number(e.dataset.c || 0),
       shown: getComputedStyle(e).display !== 'none',
       line: e.tagName === 'line' ? ['x1', 'y1', 'x2', 'y2'].map((a) => Number(e.getAttribute(a))) : null,
-      title: (e.querySelector(':scope > title') || {}).textContent || ''}));
-    out.push({k: k, per: Number(svg.dataset.perCm), items: items,
+      title: (e.querySelector(':scope > title') || {}).textContent || '',
+      box: (({left, top, right, bottom}) => [left, top, right, bottom])(e.getBoundingClientRect())}));
+    const r = svg.getBoundingClientRect();
+    out.push({k: k, per: Number(svg.dataset.perCm), items: items, panel: [r.left, r.top, r.right, r.bottom],
       scroll: [document.documentElement.scrollWidth, window.innerWidth]});
   }
   return out;
@@ -144,7 +146,8 @@ def test_every_body_drawn_on_the_page_balances_frame_by_frame(browser, tmp_path,
     assert page.evaluate(shown) == 0  # the layer is off until asked for
     page.check("#show-forces")
     frames_read = page.evaluate(READ, list(STEPS))
-    assert page.evaluate(shown) > 0
+    # (near a limit position the forces grow without bound: elsewhere they may be short)
+    assert any(it["shown"] and it["cls"] == "force" for fr_ in frames_read for it in fr_["items"])
     numbers = page.evaluate(
         "() => JSON.parse(document.getElementById('frames').textContent).forces.numbers"
     )
@@ -170,7 +173,17 @@ def test_every_body_drawn_on_the_page_balances_frame_by_frame(browser, tmp_path,
         # each arrow as drawn: from its point, along its force, at the stated scale
         for it in frame["items"]:
             assert it["title"].strip()
-            if it["line"] is None or not it["shown"]:
+            if not it["shown"]:
+                continue
+            x0, y0, x1, y1 = frame["panel"]  # nothing drawn outside its panel
+            b = it["box"]
+            assert x0 - 1 <= b[0] and b[2] <= x1 + 1 and y0 - 1 <= b[1] and b[3] <= y1 + 1, (
+                name,
+                frame["k"],
+                it["cls"],
+                it["on"],
+            )
+            if it["line"] is None:
                 continue
             x1, y1, x2, y2 = it["line"]
             assert x1 == pytest.approx(10 * it["x"] / frame["per"], abs=2e-3)

@@ -22,7 +22,7 @@ from ..polygons.scales import display_unit, newton_scale
 __all__ = ["force_layers", "FORCES_CM"]
 
 #: the longest force's arrow over the cycle on the page's configuration (cm)
-FORCES_CM = 3.0
+FORCES_CM = 2.0
 #: the kinds a joint's force is: drawn once for its two bodies
 PAIRED = ("pin", "guide", "contact")
 

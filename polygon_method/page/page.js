@@ -136,7 +136,7 @@ function frameView(phase, k) {
 // the configuration with the inertia forces' arrows (their own scale, in mm of the panel):
 // the smallest round scale at which the mechanism and every arrow over the cycle fit
 const FORCES = D.forces || D.inertia;  // one force scale for every arrow on the configuration
-const COUPLE_MM = 2.5;                 // a couple's curved arrow: its radius (mm)
+const COUPLE_MM = 1.8;                 // a couple's curved arrow: its radius (mm)
 // whether the layer of the joints' forces, loads and couples is shown (its toggle)
 const forcesOn = () => { const c = document.getElementById("show-forces"); return !!(c && c.checked); };
 function arrowsBox(per) {  // [x0, y0, x1, y1] in mm, y down
