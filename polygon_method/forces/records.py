@@ -442,7 +442,7 @@ class Forces:
     @cached_property
     def free(self) -> tuple:
         """:class:`FreeBody` of each moving body, in the order of :attr:`numbers` (one
-        instant; empty over a sweep)."""
+        instant, or arrays over a sweep)."""
         return self.drawing[1](self.numbers) if self.drawing else ()
 
     def pin(self, point: str, on: str, by: str | None = None):
