@@ -334,25 +334,37 @@ def _long(motion, fp, fric=()) -> tuple:
         tuple(steps),
         {k: tuple(v) for k, v in led.applied.items()},
         tuple(contacts),
-        _drawing(scene, plan, motion.P, records_, pins, guides, led, torque, steps, contacts),
+        _drawing(
+            scene,
+            plan,
+            motion.P,
+            records_,
+            pins,
+            guides,
+            led,
+            torque,
+            steps,
+            contacts,
+            None if inp.second is None else (scene.link(inp.second.crank).key, second),
+        ),
         led.of,
     )
 
 
-def _drawing(scene, plan, P, records, pins, guides, led, torque, steps, contacts) -> tuple:
-    """What the drawings read, made when first asked for: the bodies' numbers and, for one
-    instant, each body's free body."""
-    one = isinstance(torque, float)
-    driven = scene.input.crank if plan.steps[0].kind != "rolling driver" else plan.steps[0].wheel
+def _drawing(scene, plan, P, records, pins, guides, led, torque, steps, contacts, second=None):
+    """What the drawings read, made when first asked for: the bodies' numbers and each
+    body's free body (``second``: a second driving crank and its torque, or None)."""
+    first = plan.steps[0]
+    driven = scene.input.crank if first.kind != "rolling driver" else first.wheel
+    push = None
+    if first.kind == "block" and torque is not None:  # a driving block: its driver's force
+        (ux, uy), x = first.path.u, first.point
+        push = Side("driver", block(x), FRAME, x, (torque * ux, torque * uy), P[x])
     return (
         lambda: _numbers(scene, plan, steps),
-        (
-            lambda numbers: _free_bodies(
-                scene, P, numbers, records, pins, guides, led, torque, contacts, driven
-            )
-        )
-        if one
-        else (lambda numbers: ()),
+        lambda numbers: _free_bodies(
+            scene, P, numbers, records, pins, guides, led, torque, contacts, driven, push, second
+        ),
     )
 
 
@@ -406,13 +418,22 @@ def _numbers(scene, plan, steps) -> dict:
     return out
 
 
-def _free_bodies(scene, P, numbers, records, pins, guides, led, torque, contacts, driven) -> tuple:
+def _nonzero(x) -> bool:
+    """Whether a value is to be drawn: a float that is not 0, or any array (a sweep)."""
+    return x != 0 if isinstance(x, float) else True
+
+
+def _free_bodies(
+    scene, P, numbers, records, pins, guides, led, torque, contacts, driven, push=None, second=None
+) -> tuple:
     """Each moving body alone (:class:`FreeBody`): its inertia force (the book's single
     force, through the offset point), weight and loads as the ledger holds them, every pin
     force on it (the stored record, or its opposite where the body is the record's ``by``),
-    the guide's force on a block, a contact force (the ground's on a wheel, the teeth's on a
-    gear or a rack, and back on the gear that pushes); its couples (``driven``: the body
-    the driver's torque turns)."""
+    the guide's force on a block (and back on the guide's body, where that is solved with
+    the block: a slotted lever, a yoke), a contact force (the ground's on a wheel, the
+    teeth's on a gear or a rack, and back on the gear that pushes), a driving block's
+    driver's force (``push``); its couples (``driven``: the body the driver's torque turns).
+    Over a sweep the same records hold arrays (the inertia force at G with its couple)."""
     out = []
     for body, num in numbers.items():
         if body == FRAME:
@@ -435,6 +456,14 @@ def _free_bodies(scene, P, numbers, records, pins, guides, led, torque, contacts
             for g in guides
             if block(g.point) == body
         ]
+        had = {(s.point, s.by) for s in sides if s.what == "guide"}
+        sides += [  # a guide's body solved with the block feels its force back
+            Side("guide", body, block(g.point), g.point, (-g.force[0], -g.force[1]), P[g.point])
+            for g in guides
+            if g.by == body and (g.point, block(g.point)) not in had
+        ]
+        if push is not None and push.on == body:
+            sides.append(push)
         for k, c in enumerate(reversed(contacts)):  # (in the plan's order, as drawn)
             name = "I" if len(contacts) == 1 else f"I{k + 1}"
             if c.wheel == body:
@@ -446,7 +475,7 @@ def _free_bodies(scene, P, numbers, records, pins, guides, led, torque, contacts
         couples = [
             Couple("inertia", body, i.couple)
             for i in records
-            if i.body == body and i.offset is None and i.couple != 0
+            if i.body == body and i.offset is None and _nonzero(i.couple)
         ]
         couples += [
             Couple("friction" if e[0].startswith("friction") else "load", body, e[1])
@@ -456,9 +485,11 @@ def _free_bodies(scene, P, numbers, records, pins, guides, led, torque, contacts
         couples += [
             Couple("guide", body, g.couple)
             for g in guides
-            if block(g.point) == body and isinstance(g.couple, float) and g.couple
+            if block(g.point) == body and g.couple is not None and _nonzero(g.couple)
         ]
         if body == driven:
             couples.append(Couple("torque", body, torque))
+        if second is not None and body == second[0]:
+            couples.append(Couple("torque", body, second[1]))
         out.append(FreeBody(body, num, tuple(sides), tuple(couples)))
     return tuple(out)

@@ -190,11 +190,11 @@ class Side:
     ``on`` (by body ``by`` for a pin or a guide), acting along a line through ``at`` (m):
     the pin or the loaded point, G for a weight; for an inertia force, G in a polygon's
     side and, in a :class:`FreeBody`, the offset point of the book's single force (G where
-    there is none). ``what``: ``inertia``, ``weight``, ``load``,
-    ``gas``, ``pin``, ``guide`` or ``contact`` (a rolling contact's force: the ground's,
-    the teeth's); ``point``: the point it acts at (a pin, a loaded
+    there is none). ``what``: ``inertia``, ``weight``, ``load``, ``gas``, ``pin``, ``guide``,
+    ``contact`` (the ground's, the teeth's) or ``driver`` (a driving block's); ``point``: the point it acts at (a pin, a loaded
     point; "" for an inertia force or a weight); ``part``: "" the whole force, ``t`` its
-    component square to the link from ``point``, ``n`` its component along the link."""
+    component square to the link (a block's guide) from ``point``, ``n`` its component
+    along it (at a contact: ``n`` normal to it, ``t`` along it)."""
 
     what: str
     on: str
@@ -261,8 +261,8 @@ def side_label(side: Side, numbers: dict, unicode: bool = True) -> str:
         return ("F\u1d62" if unicode else "Fi") + _sub(numbers, side.on, unicode=unicode)
     if side.what == "weight":
         return "W" + _sub(numbers, side.on, unicode=unicode)
-    if side.what == "gas":
-        return "gas force"
+    if side.what in ("driver", "gas"):  # a driving block's driver, along its guide
+        return "gas force" if side.what == "gas" else "Fd" + _sub(numbers, side.on, unicode=unicode)
     if side.what == "friction":
         return ("\u03bcN" if unicode else "muN") + f" at {side.point}"
     return f"{'Fd' if side.what == 'driver' else 'P'} at {side.point}"  # (Fd: a collar's driver)
@@ -444,7 +444,7 @@ class Forces:
     @cached_property
     def free(self) -> tuple:
         """:class:`FreeBody` of each moving body, in the order of :attr:`numbers` (one
-        instant; empty over a sweep)."""
+        instant, or arrays over a sweep)."""
         return self.drawing[1](self.numbers) if self.drawing else ()
 
     def pin(self, point: str, on: str, by: str | None = None):

@@ -128,7 +128,7 @@ function frameView(phase, k) {
   const w = Math.max(b[2] - b[0], v.rest), h = Math.max(b[3] - b[1], v.rest);
   const need = 10 * Math.max(w / (FILL[phase] * v.W), h / (FILL[phase] * v.H)) / factor(phase);
   v.per = roundUp(need) * factor(phase);
-  if (phase === "configuration" && D.inertia) return withArrows(v, need);
+  if (phase === "configuration" && (D.inertia || D.forces)) return withArrows(v, need);
   v.text = "1 cm = " + fmt(v.per / factor(phase)) + " " + unitText(phase);
   v.box = [5 * (b[0] + b[2]) / v.per - v.W / 2, -5 * (b[1] + b[3]) / v.per - v.H / 2];
   v.box.push(v.box[0] + v.W, v.box[1] + v.H);  // [x0, y0, x1, y1] in mm, y down
@@ -136,28 +136,40 @@ function frameView(phase, k) {
 }
 // the configuration with the inertia forces' arrows (their own scale, in mm of the panel):
 // the smallest round scale at which the mechanism and every arrow over the cycle fit
+const FORCES = D.forces || D.inertia;  // one force scale for every arrow on the configuration
+const COUPLE_MM = 1.8;                 // a couple's curved arrow: its radius (mm)
+// whether the layer of the joints' forces, loads and couples is shown (its toggle)
+const forcesOn = () => { const c = document.getElementById("show-forces"); return !!(c && c.checked); };
 function arrowsBox(per) {  // [x0, y0, x1, y1] in mm, y down
-  const b = [Infinity, Infinity, -Infinity, -Infinity], f = 10 / D.inertia.perCm;
+  const b = [Infinity, Infinity, -Infinity, -Infinity], f = 10 / FORCES.perCm;
   const put = (x, y) => { b[0] = Math.min(b[0], x); b[1] = Math.min(b[1], y); b[2] = Math.max(b[2], x); b[3] = Math.max(b[3], y); };
+  const from = (at, F, k) => {  // an arrow from its point of application along its force
+    const x = 10 * at[2 * k] / per, y = -10 * at[2 * k + 1] / per;
+    put(x, y); put(x + f * F[2 * k], y - f * F[2 * k + 1]);
+  };
   for (let k = 0; k < N; k++) {
     for (const [x, y] of vertices("configuration", k)) put(10 * x / per, -10 * y / per);
-    for (const a of D.inertia.bodies) {
-      const gx = 10 * a.G[2 * k] / per, gy = -10 * a.G[2 * k + 1] / per;
-      const hx = 10 * a.H[2 * k] / per, hy = -10 * a.H[2 * k + 1] / per;
-      put(gx, gy); put(hx, hy);
-      put(hx + f * a.F[2 * k], hy - f * a.F[2 * k + 1]);
+    for (const a of (D.inertia ? D.inertia.bodies : [])) {
+      put(10 * a.G[2 * k] / per, -10 * a.G[2 * k + 1] / per);
+      from(a.H, a.F, k);
+    }
+    if (!forcesOn()) continue;  // the layer off: the inertia forces alone
+    for (const a of (D.forces ? D.forces.arrows : [])) from(a.at, a.F, k);
+    for (const c of (D.forces ? D.forces.couples : [])) {
+      const x = 10 * c.at[2 * k] / per, y = -10 * c.at[2 * k + 1] / per, r = COUPLE_MM + 1;
+      put(x - r, y - r); put(x + r, y + r);
     }
   }
   return b;
 }
 function withArrows(v, need) {
-  if (v.fitted === undefined || v.fitted[0] !== v.W || v.fitted[1] !== v.H) {
+  if (v.fitted === undefined || v.fitted[0] !== v.W || v.fitted[1] !== v.H || v.fitted[4] !== forcesOn()) {
     let per = roundUp(need) * factor("configuration"), b = arrowsBox(per);
     for (let i = 0; i < 60 && (b[2] - b[0] > FILL.configuration * v.W || b[3] - b[1] > FILL.configuration * v.H); i++) {
       per = roundUp(per / factor("configuration") * 1.000001) * factor("configuration");
       b = arrowsBox(per);
     }
-    v.fitted = [v.W, v.H, per, b];
+    v.fitted = [v.W, v.H, per, b, forcesOn()];
   }
   const [, , per, b] = v.fitted;
   v.per = per;
@@ -235,10 +247,20 @@ function setup(phase) {
     for (const [p, q, key] of D.links) add(el(svg, "line", {class: "link", stroke: D.style.body[1], id: "c-link-" + key}, "link:" + key), "link", [p, q, key]);
     for (const s of D.sliders) add(el(svg, "polygon", {class: "block", fill: D.style.body[0], stroke: D.style.body[1]}, "slider:" + s.key), "block", s);
     for (const p in D.ground) add(el(svg, "polygon", {class: "ground"}, "ground:" + p), "ground", p);
+    const heads = {}, headOf = (kind) => heads[kind] || (heads[kind] = head(kind));
     if (D.inertia) for (const b of D.inertia.bodies) {  // each inertia force -m a_G, along
       // its line offset from G by h = I alpha / (m a_G) (the couple taken into the force)
       add(el(svg, "line", styled("inertia", {"stroke-width": r3(0.6 * PT), "stroke-dasharray": r3(2 * PT) + " " + r3(1.5 * PT)}), "offset:" + b.body), "offset", b);
-      add(el(svg, "line", styled("inertia", {"marker-end": head("inertia")}), "inertia:" + b.body), "inertia", b);
+      add(el(svg, "line", styled("inertia", {"marker-end": headOf("inertia"), class: "inertia-force", "data-on": b.body}), "inertia:" + b.body), "inertia", b);
+      // where no line carries the couple (the force nearly nil): the couple alone, at G
+      add(el(svg, "path", styled("inertia", {"marker-end": headOf("inertia"), class: "inertia-couple", "data-on": b.body}), "icouple:" + b.body), "icouple", b);
+    }
+    if (D.forces) {  // the layer of the joints' forces, loads, weights and couples
+      const g = el(svg, "g", {id: "force-layer"});  // (each element hidden while the layer is off)
+      D.forces.arrows.forEach((a, i) => add(el(g, "line", styled(a.what, {"marker-end": headOf(a.what), class: "force",
+        "data-what": a.what, "data-on": a.on, "data-by": a.by || ""}), "force:" + i), "force", a));
+      D.forces.couples.forEach((c, i) => add(el(g, "path", styled("pin", {"marker-end": headOf("pin"), class: "couple",
+        "data-what": c.what, "data-on": c.on}), "couple:" + i), "couple", c));
     }
     for (const p of Object.keys(D.ground).concat(D.points)) {
       add(el(svg, "circle", {class: "joint point", r: r3(FS * 0.18), stroke: D.style.body[1]}, "point:" + p), "joint", p);
@@ -328,18 +350,35 @@ function update(phase, k) {
       place(e, pole);
       pole = [pole[0], pole[1] - 0.35 * fs];  // its middle, which the other labels keep clear of
     } else if (kind === "label") labels.push([e, P(x)]);
-    else if (kind === "inertia") {  // at the inertia forces' own scale (cm of the panel)
-      const h = C([x.H[2 * k], x.H[2 * k + 1]]), F = [x.F[2 * k], x.F[2 * k + 1]];
-      const d = [10 * F[0] / D.inertia.perCm, -10 * F[1] / D.inertia.perCm];
-      e.style.display = Math.hypot(d[0], d[1]) < 0.5 ? "none" : "";
-      line(e, h, [h[0] + d[0], h[1] + d[1]]);
-    } else if (kind === "offset") {  // G to the force's line, where it is off G
+    else if (kind === "inertia") arrowAt(e, x.H, x.F, k, 0.5);  // on its line h from G
+    else if (kind === "force") { arrowAt(e, x.at, x.F, k, 0.3); if (!forcesOn()) e.style.display = "none"; }
+    else if (kind === "icouple") coupleAt(e, x.G, x.C, k);
+    else if (kind === "couple") { coupleAt(e, x.at, x.C, k); if (!forcesOn()) e.style.display = "none"; } else if (kind === "offset") {  // G to the force's line, where it is off G
       const g = C([x.G[2 * k], x.G[2 * k + 1]]), h = C([x.H[2 * k], x.H[2 * k + 1]]);
       e.style.display = Math.hypot(h[0] - g[0], h[1] - g[1]) < 0.5 ? "none" : "";
       line(e, g, h);
     }
   }
   placeLabels(labels, phase, v.box, pole);
+}
+// a force's arrow from its point of application, at the forces' scale (cm of the panel);
+// its numbers (SI, every bit) kept on the element, as drawn, for a reader or a test
+function arrowAt(e, at, F, k, least) {
+  const a = [at[2 * k], at[2 * k + 1]], f = [F[2 * k], F[2 * k + 1]], p = toMm("configuration", a);
+  const d = [10 * f[0] / FORCES.perCm, -10 * f[1] / FORCES.perCm];
+  e.style.display = Math.hypot(d[0], d[1]) < least ? "none" : "";
+  line(e, p, [p[0] + d[0], p[1] + d[1]]);
+  Object.assign(e.dataset, {x: a[0], y: a[1], fx: f[0], fy: f[1]});
+}
+// a couple: three quarters of a circle round its point, the head showing its sense
+function coupleAt(e, at, C, k) {
+  const a = [at[2 * k], at[2 * k + 1]], c = C[k], p = toMm("configuration", a), r = COUPLE_MM;
+  e.dataset.x = a[0]; e.dataset.y = a[1]; e.dataset.c = c;
+  e.style.display = Math.abs(c) <= 1e-9 * FORCES.perCm ? "none" : "";
+  const s = c > 0 ? 1 : -1, a0 = c > 0 ? -0.75 * Math.PI : -0.25 * Math.PI, a1 = a0 + s * 1.5 * Math.PI;
+  const q = (t) => [p[0] + r * Math.cos(t), p[1] - r * Math.sin(t)];  // (y down on the screen)
+  const [x0, y0] = q(a0), [x1, y1] = q(a1);
+  e.setAttribute("d", "M" + r3(x0) + "," + r3(y0) + " A" + r3(r) + "," + r3(r) + " 0 1 " + (c > 0 ? 0 : 1) + " " + r3(x1) + "," + r3(y1));
 }
 // a label's place moved inside the panel (its text is about 0.6 fs wide a letter)
 function keepIn(q, box, letters) {
@@ -457,6 +496,21 @@ function tipText(tip, k) {
     return "inertia force " + b.label + " of " + name + " = m·a_G = " + fmt(Math.hypot(b.F[2 * k], b.F[2 * k + 1])) +
       " N, opposite to a_G, " + (h > 0 ? "along the line h = " + fmt(h / f) + " " + u + " from G that carries the couple I·α" : "through G") +
       " (drawn at " + D.inertia.text + ")";
+  }
+  if (kind === "force") {
+    const a = D.forces.arrows[Number(name)], F = [a.F[2 * k], a.F[2 * k + 1]];
+    const dir = Math.round(10 * Math.atan2(F[1], F[0]) * 180 / Math.PI) / 10;
+    return a.label + ": the " + ({pin: "pin force", guide: "guide's force", contact: "contact force", driver: "driver's force",
+      load: "load", gas: "gas force", weight: "weight", friction: "friction force"}[a.what] || "force") + " on " + a.on +
+      (a.by ? " by " + a.by + " (" + a.by + " feels its opposite)" : "") + " = " + fmt(Math.hypot(F[0], F[1])) +
+      " N at " + dir + "° (drawn at " + FORCES.text + ")";
+  }
+  if (kind === "couple" || kind === "icouple") {
+    const c = kind === "couple" ? D.forces.couples[Number(name)] : D.inertia.bodies.find((x) => x.body === name);
+    const C = c.C[k];
+    return (kind === "couple" ? c.label + ": the " + ({torque: "driver's torque", guide: "guide's couple", load: "couple",
+      friction: "friction couple"}[c.what] || "couple") + " on " + c.on : "the inertia couple −I·α of " + name + ", no single force carrying it") +
+      " = " + fmt(Math.abs(C)) + " N m " + (C > 0 ? "ccw" : C < 0 ? "cw" : "");
   }
   if (kind === "offset") {
     const b = D.inertia.bodies.find((x) => x.body === name);
@@ -582,6 +636,8 @@ play.addEventListener("click", () => {
   else { clearInterval(timer); timer = null; play.textContent = "▶ play"; }
 });
 slider.max = N - 1;
+const showForces = document.getElementById("show-forces");
+if (showForces) showForces.addEventListener("change", () => show(frame));
 slider.addEventListener("input", () => show(Number(slider.value)));
 window.addEventListener("resize", () => { layout(); show(frame); });
 layout();

@@ -450,7 +450,11 @@ def _groups_intro(f, scale) -> list:
                 "with the known forces head to tail and each outer pin's force square "
                 "to its link (^t, from that link's moments about the group's middle "
                 "pin); the lines of the forces along the links (^n) and of a guide's "
-                "normal force, drawn through the corners, meet where it closes.",
+                "normal force, drawn through the corners, meet where it closes. A block's "
+                "pin force is split along its guide or slot (^n) and across it (^t); a "
+                "contact's force normal to it (^n) and along it (^t); a gear's tooth load, "
+                "from its moments about its centre, lies along the line of action, and the "
+                "force at its centre closes its polygon.",
             )
         )
     return blocks
