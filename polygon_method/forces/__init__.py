@@ -345,7 +345,9 @@ def _long(motion, fp, fric=()) -> tuple:
             torque,
             steps,
             contacts,
-            None if inp.second is None else (scene.link(inp.second.crank).key, second),
+            None
+            if inp.second is None or inp.second.crank is None  # a second collar's: a force
+            else (scene.link(inp.second.crank).key, second),
         ),
         led.of,
     )
