@@ -36,9 +36,9 @@ from dataclasses import replace
 from ..common.errors import AssemblyError, MobilityError, PolygonMethodError, SceneError
 from ..common.numbers import in_units, quiet
 from .completion import gas_towards_crank, given_completed, place
-from .plan import Bodies, Dims, Plan, _bodies_at
+from .plan import Bodies, Dims, Plan, _pin_entry
 from ..scene import GuideSlider, Scene, key_line
-from ..steps import TIERS, Context, Crank, cylinder
+from ..steps import NEEDS, TIERS, Context, Crank, cylinder
 from ..steps import collar
 from ..steps.block import BlockDriver
 from ..steps.rolling_driver import WheelDriver
@@ -181,6 +181,8 @@ class _Compiler:
         for s in scene.sliders:
             if s.slot:
                 self._slots.setdefault(s.point, []).append(s)
+        # the first tier's recognisers that can find a point here (TIERS as it is now)
+        self.first_tier = tuple(r for r in TIERS[0] if r not in NEEDS or getattr(scene, NEEDS[r]))
         self._bodies_of = {}
         for lk in scene.links:
             for p in self.bodies.frame(lk.key):
@@ -452,7 +454,7 @@ class _Compiler:
                 name = names[i]
                 if name in self.P:
                     continue
-                found = self._first(TIERS[0], name)
+                found = self._first(self.first_tier, name)
             for tier in TIERS[1:]:
                 if found is not None:
                     break
@@ -474,26 +476,7 @@ class _Compiler:
             self.steps.append(st)
         self.finish()
         fixed = {lk.key: 0.0 for lk in sc.links if lk.p in sc.ground and lk.q in sc.ground}
-        pins = []
-        for pin in sc.pins:
-            joined = _bodies_at(sc, pin.point)
-            pairs = tuple(
-                (f"{a[0]}|{b[0]}", i, j)
-                for i, a in enumerate(joined)
-                for j, b in enumerate(joined)
-                if j > i
-            )
-            links = tuple(lk for _, lk in joined)
-            pins.append(
-                (
-                    pin.point,
-                    tuple(b for b, _ in joined),
-                    links,
-                    tuple(k for k, _, _ in pairs),
-                    tuple((i, j) for _, i, j in pairs),
-                    tuple((links[i], links[j]) for _, i, j in pairs),
-                )
-            )
+        pins = [_pin_entry(sc, pin.point) for pin in sc.pins]
         steps = tuple(self.steps)
         ground = dict(sc.ground)
         dims = Dims(
