@@ -101,7 +101,7 @@ def compile_plan(scene: Scene) -> Plan:
         object.__setattr__(scene, "input", plan.scene.input)  # completed when compiled
     if plan.scene is not scene:  # a scene of the same content: its own loads, masses, ...
         plan = _for_scene(plan, scene)
-    if any(ld.toward is not None and ld.force is None for ld in scene.loads):
+    if scene.loads and any(ld.toward is not None and ld.force is None for ld in scene.loads):
         gas_towards_crank(plan, scene)  # a gas force's direction (loads are not in the key)
     try:
         ident = id(scene)
@@ -154,6 +154,12 @@ def gruebler(scene: Scene) -> int:
     return 3 * (n - 1) - 2 * j - len(scene.rolling)
 
 
+def _first_tier(scene) -> tuple:
+    """The first tier's recognisers that can find a point in ``scene`` (TIERS as it is now):
+    those that need no table, and those whose table (``steps.NEEDS``) the scene has."""
+    return tuple([r for r in TIERS[0] if (t := NEEDS.get(r)) is None or getattr(scene, t)])
+
+
 class _Compiler:
     """The constraint graph as the recognisers see it (``g`` in the steps' ``recognise``):
     the points found so far (``P``), the links and sliders already used, the bodies."""
@@ -181,12 +187,16 @@ class _Compiler:
         for s in scene.sliders:
             if s.slot:
                 self._slots.setdefault(s.point, []).append(s)
-        # the first tier's recognisers that can find a point here (TIERS as it is now)
-        self.first_tier = tuple(r for r in TIERS[0] if r not in NEEDS or getattr(scene, NEEDS[r]))
-        self._bodies_of = {}
+        self.first_tier = _first_tier(scene)
+        self._bodies_of = of = {}
+        frame = self.bodies.frame
         for lk in scene.links:
-            for p in self.bodies.frame(lk.key):
-                self._bodies_of.setdefault(p, []).append(lk.key)
+            key = lk.key
+            for p in frame(key):
+                if p in of:
+                    of[p].append(key)
+                else:
+                    of[p] = [key]
         self._guided = {}  # link key -> slider points that slide on it
         self._yokes = {}  # a pin -> the yoke whose slot it slides in
         for s in scene.sliders:
@@ -266,7 +276,7 @@ class _Compiler:
             (),
             Dims(
                 dict(sc.ground),
-                tuple(st.params for st in steps),
+                tuple([st.params for st in steps]),
                 inp.angle,
                 inp.omega,
                 inp.alpha,
@@ -481,7 +491,7 @@ class _Compiler:
         ground = dict(sc.ground)
         dims = Dims(
             ground,
-            tuple(st.params for st in steps),
+            tuple([st.params for st in steps]),
             inp.angle,
             inp.omega,
             inp.alpha,

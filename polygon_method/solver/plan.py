@@ -380,13 +380,13 @@ class Plan:
     def __post_init__(self):
         # what every evaluation at the plan's own dimensions starts from (made anew by
         # dataclasses.replace, so a plan with other steps never runs stale functions)
-        object.__setattr__(self, "_zero", {name: (0.0, 0.0) for name in self.ground})
+        object.__setattr__(self, "_zero", dict.fromkeys(self.ground, (0.0, 0.0)))
         # the bound phases, made when first needed (a plan that solves one instant binds
         # only its one-instant functions)
         object.__setattr__(self, "_phases", None)
         object.__setattr__(self, "_instant", None)
         object.__setattr__(
-            self, "_checked", tuple((st.index, st) for st in self.steps if st.branching)
+            self, "_checked", tuple([(st.index, st) for st in self.steps if st.branching])
         )
         # each sized pin with its radius at the plan's own dimensions, its pairs' links and
         # its one pair's (None where it joins more than two bodies), what
