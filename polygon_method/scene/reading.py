@@ -47,6 +47,7 @@ from .tables import _suggest, _Tables
 from .variation import _Variants
 from .connected import _Connected
 
+_TOP_KEYS = frozenset(TOP_KEYS)
 #: the most a scene file may hold: a scene is a page of text (``/dev/zero`` is not read on)
 MAX_SCENE_BYTES = 1 << 20
 #: the most points a scene may have (a textbook's mechanism has a few dozen; a long chain
@@ -317,7 +318,7 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected
         raw = self.raw
         self.check_integers()
         for key in raw:
-            if key not in TOP_KEYS:
+            if key not in _TOP_KEYS:
                 kind = "table" if isinstance(raw[key], dict) else "key"
                 where = f"[{key}]" if kind == "table" else key
                 raise SceneError(
@@ -415,10 +416,11 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected
         self.ground = ground
 
         points = self.carried_points(index, ground)
-        sliders = self.sliders(index, ground, {p.name for p in points})
-        rolling = read_rolling(self, ground, sliders, {p.name for p in points})
+        carried = {p.name for p in points}
+        sliders = self.sliders(index, ground, carried)
+        rolling = read_rolling(self, ground, sliders, carried)
         self.rolling_pairs = rolling
-        known = set(ground) | {p for lk in links for p in lk.points} | {p.name for p in points}
+        known = set(ground).union([lk.p for lk in links], [lk.q for lk in links], carried)
         known |= {s.point for s in sliders if s.slot}  # a peg in two slots; a yoke
         known |= {s.yoke for s in sliders if hasattr(s, "yoke")}
         self.known = known
