@@ -175,9 +175,9 @@ class _Compiler:
         )  # only positions are placed here
         self.P = dict(scene.ground)
         self.steps = []
-        self.used_links = {
-            lk.key for lk in scene.links if lk.p in scene.ground and lk.q in scene.ground
-        }
+        ground = scene.ground  # the links of two ground points: used, and not turning
+        self._fixed = [lk.key for lk in scene.links if lk.p in ground and lk.q in ground]
+        self.used_links = set(self._fixed)
         self.used_sliders = set()
         self.notes = []
         self.bodies = Bodies(scene)
@@ -485,8 +485,8 @@ class _Compiler:
         for st in cylinder.recognise_all(self):  # both ends known: last, they find no point
             self.steps.append(st)
         self.finish()
-        fixed = {lk.key: 0.0 for lk in sc.links if lk.p in sc.ground and lk.q in sc.ground}
-        pins = [_pin_entry(sc, pin.point) for pin in sc.pins]
+        fixed = dict.fromkeys(self._fixed, 0.0)
+        pins = [_pin_entry(sc, pin.point) for pin in sc.pins] if sc.pins else ()
         steps = tuple(self.steps)
         ground = dict(sc.ground)
         dims = Dims(
@@ -495,7 +495,7 @@ class _Compiler:
             inp.angle,
             inp.omega,
             inp.alpha,
-            {p.point: p.radius for p in sc.pins},
+            {p.point: p.radius for p in sc.pins} if sc.pins else {},
         )
         return Plan(steps, ground, sc, tuple(self.notes), fixed, tuple(pins), dims)
 
