@@ -12,6 +12,7 @@ ROOT = Path(__file__).resolve().parent.parent
 WORKED = ROOT / "worked_problems"
 FOURBAR = WORKED / "fourbar_image_points.toml"
 ENGINE = WORKED / "engine_forces.toml"
+GEARS = WORKED / "gear_pair_forces.toml"
 
 #: (name, the command's arguments with OUT for the output, the scene)
 WRITERS = [
@@ -20,6 +21,8 @@ WRITERS = [
     ("draw.pdf", ["draw", "{scene}", "-o", "{out}.pdf"], FOURBAR),
     ("forces.svg", ["draw", "{scene}", "--forces", "-o", "{out}.svg"], ENGINE),
     ("forces.pdf", ["draw", "{scene}", "--forces", "-o", "{out}.pdf"], ENGINE),
+    ("gear-forces.svg", ["draw", "{scene}", "--forces", "-o", "{out}.svg"], GEARS),
+    ("forces-page.html", ["page", "{scene}", "--frames", "4", "-o", "{out}.html"], GEARS),
     ("centres.svg", ["draw", "{scene}", "--diagram", "centres", "-o", "{out}.svg"], FOURBAR),
     ("centres.pdf", ["draw", "{scene}", "--diagram", "centres", "-o", "{out}.pdf"], FOURBAR),
     ("sweep.svg", ["sweep", "{scene}", "--steps", "24", "--plot", "{out}.svg"], FOURBAR),

@@ -318,7 +318,8 @@ def test_draw_forces_on_the_command_line(tmp_path):
 
 def test_the_page_draws_each_inertia_force_on_its_offset_line_over_the_cycle():
     """The page's inertia forces, frame by frame, against m a_G from the sweep's link ends
-    (G placed on the link by the test), at one round scale that holds the largest; each
+    (G placed on the link by the test), at one round scale that holds the largest force
+    drawn (the layer of pin forces too); each
     drawn through H, the point of its line nearest G, where the force's moment about G is
     the inertia couple -I alpha (alpha from the sweep)."""
     from polygon_method.page.data import INERTIA_CM, page_data
@@ -329,7 +330,8 @@ def test_the_page_draws_each_inertia_force_on_its_offset_line_over_the_cycle():
     for path in WORKED:
         sc = load_scene(path)
         fr = frames(sc, 24)
-        d = page_data(fr)["inertia"]
+        data = page_data(fr)
+        d = data["inertia"]
         res = fr.res
         n = len(res.theta)
         largest = 0.0
@@ -375,6 +377,11 @@ def test_the_page_draws_each_inertia_force_on_its_offset_line_over_the_cycle():
                     )  # nearest G
                 elif abs(couple) < 1e-12:  # through G (to the page's rounding)
                     assert math.hypot(*h) < 1e-5 * lk_len
+        # one scale for every force on the page: the inertia forces and the layer of the
+        # joints' forces, loads and weights (each of those from the solve's own records)
+        assert data["forces"]["perCm"] == d["perCm"]
+        for a in data["forces"]["arrows"]:
+            largest = max(largest, max(map(math.hypot, a["F"][0::2], a["F"][1::2])))
         assert largest / d["perCm"] <= INERTIA_CM + 1e-9
         stated = parse_scale(d["text"])
         assert stated.per_cm == pytest.approx(d["perCm"])

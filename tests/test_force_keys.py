@@ -15,7 +15,7 @@ import pytest
 
 from polygon_method import load_scene, solve
 from polygon_method.check import check_answers
-from polygon_method.check.engine import _value
+from polygon_method.check.engine import engine_value
 from polygon_method.common.errors import SceneError
 from polygon_method.scene import parse_scene
 
@@ -77,8 +77,8 @@ def test_shaking_force_and_moment_by_newton_for_all_bodies():
     for path in (FOURBAR,):
         sol = solve(load_scene(path))
         F, M = _newton(sol)
-        assert _value(sol, "shaking_force") == pytest.approx(F, rel=1e-9)
-        assert _value(sol, "shaking_moment") == pytest.approx(M, rel=1e-9, abs=1e-9 * F)
+        assert engine_value(sol, "shaking_force") == pytest.approx(F, rel=1e-9)
+        assert engine_value(sol, "shaking_moment") == pytest.approx(M, rel=1e-9, abs=1e-9 * F)
 
 
 def test_engine_thrusts_from_the_rods_obliquity():
@@ -91,10 +91,10 @@ def test_engine_thrusts_from_the_rods_obliquity():
     ux, uy = path.u
     L = math.hypot(ax - bx, ay - by)
     cos_phi = abs((ax - bx) * ux + (ay - by) * uy) / L
-    F_P = _value(sol, "piston_effort")
+    F_P = engine_value(sol, "piston_effort")
     assert F_P > 0
-    assert _value(sol, "rod_thrust") == pytest.approx(F_P / cos_phi, rel=1e-9)
-    assert _value(sol, "side_thrust") == pytest.approx(
+    assert engine_value(sol, "rod_thrust") == pytest.approx(F_P / cos_phi, rel=1e-9)
+    assert engine_value(sol, "side_thrust") == pytest.approx(
         F_P * math.sqrt(1 - cos_phi**2) / cos_phi, rel=1e-9
     )
 
@@ -133,8 +133,8 @@ def test_check_marks_the_true_values_right_and_a_slip_wrong():
         ENGINE,
         {
             f"Fi_{piston}": f"{fi:.6g} N",
-            "rod_thrust": f"{_value(es, 'rod_thrust'):.6g} N",
-            "side_thrust": f"{_value(es, 'side_thrust'):.6g} N",
+            "rod_thrust": f"{engine_value(es, 'rod_thrust'):.6g} N",
+            "side_thrust": f"{engine_value(es, 'side_thrust'):.6g} N",
         },
     )
     assert all(v.ok for v in got.values()), got

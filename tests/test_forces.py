@@ -129,11 +129,28 @@ def _kin(sol, m):
     return at(sol.P), at(sol.V), at(sol.A), sol.Al[lk.key], sol.W[lk.key]
 
 
+def _collar(sc, sol, name):
+    """(rod, w, vs) of a collar ``name``: its rod's key, the rod's unit direction from its
+    pivot to its other end and the collar's sliding along it relative to the rod, from the
+    positions, the rod's omega and the collar's velocity (K fixed: v_C1 = w_r x KC)."""
+    rod = sc.link(sc.slider(name).guide)
+    K = rod.p if rod.p in sc.ground else rod.q
+    (kx, ky), (nx, ny), (cx, cy) = sol.P[K], sol.P[rod.other(K)], sol.P[name]
+    L = np.hypot(nx - kx, ny - ky)
+    w = ((nx - kx) / L, (ny - ky) / L)
+    om = sol.W[rod.key]
+    vx, vy = sol.V[name][0] + om * (cy - ky), sol.V[name][1] - om * (cx - kx)
+    return rod.key, w, vx * w[0] + vy * w[1]
+
+
 def _driver_power(sc, sol, f):
     """The drivers' power terms: T w of the crank (and of a second crank), or F vs of a
-    driving block (vs = v_X . u, the guide's unit u from the scene)."""
+    driving block (vs = v_X . u, the guide's unit u from the scene), of a collar (vs its
+    sliding relative to its rod: the driver pushes the collar and the rod back)."""
     inp = sc.input
-    if f.driver == "cylinder":  # the force in it times its rate of extension
+    if f.driver == "collar":
+        terms = [f.input_torque * _collar(sc, sol, inp.block)[2]]
+    elif f.driver == "cylinder":  # the force in it times its rate of extension
         cyl = next(c for c in sc.cylinders if c.key == f.crank)
         (kx, ky), (rx, ry) = sol.P[cyl.barrel], sol.P[cyl.rod]
         (vkx, vky), (vrx, vry) = sol.V[cyl.barrel], sol.V[cyl.rod]
@@ -147,7 +164,9 @@ def _driver_power(sc, sol, f):
         terms = [f.input_torque * (v[0] * u[0] + v[1] * u[1])]
     else:
         terms = [f.input_torque * sol.W[sc.link(inp.crank).key]]
-    if inp.second is not None:
+    if inp.second is not None and f.second_crank.startswith("block "):
+        terms.append(f.second_torque * _collar(sc, sol, inp.second.block)[2])
+    elif inp.second is not None:
         terms.append(f.second_torque * sol.W[sc.link(inp.second.crank).key])
     return terms
 
@@ -239,7 +258,14 @@ def _newton_euler(sol, f):
             else:
                 couple(body, it[1])
     inp = sc.input
-    if f.driver == "cylinder":  # the cylinder drives: its force is among the pins
+    collars = [(inp.block, f.input_torque)] if f.driver == "collar" else []
+    if inp.second is not None and f.second_crank.startswith("block "):
+        collars.append((inp.second.block, f.second_torque))
+    for name, F in collars:  # a collar's driver pushes it along its rod, and the rod back
+        rod, w, _ = _collar(sc, sol, name)
+        add(f"block {name}", (F * w[0], F * w[1]), sol.P[name])
+        add(rod, (-F * w[0], -F * w[1]), sol.P[name])
+    if f.driver in ("cylinder", "collar"):  # a cylinder's force is among the pins
         pass
     elif inp.wheel is not None:  # the driver's torque on the wheel
         couple(sc.link(inp.wheel).key, f.input_torque)
@@ -248,7 +274,7 @@ def _newton_euler(sol, f):
         add(f"block {inp.block}", (f.input_torque * u[0], f.input_torque * u[1]), sol.P[inp.block])
     else:
         couple(sc.link(inp.crank).key, f.input_torque)
-    if inp.second is not None:
+    if inp.second is not None and not f.second_crank.startswith("block "):
         couple(sc.link(inp.second.crank).key, f.second_torque)
     out = {}
     for m in sc.masses:

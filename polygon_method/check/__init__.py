@@ -127,60 +127,73 @@ def check_answers(sol: Solution, answers=None, tolerance: float | None = None, _
     diag = _Diagnoser(sol, answers)
     out = []
     centres = []
-    clean = None  # the solution without rounding noise, when an answer needs it
+    clean = []  # the solution without rounding noise, made when an answer needs it
     for ans in answers:
         kind = ans.kind
         if kind == "centre":
             rel = tolerance.relative if isinstance(tolerance, Stated) else tolerance
             out.append(centre_verdict(sol, ans, rel, centres))
-            continue
-        if kind in ENGINE_KEYS:  # the engine chapter's: its efforts, the cycle, the flywheel
+        elif kind in ENGINE_KEYS:  # the engine chapter's: its efforts, the cycle, the flywheel
             out.append(engine_verdict(sol, ans, tolerance))
-            continue
-        exact = sol.value(kind, ans.names)
-        if exact is None or not math.isfinite(exact):
-            raise SceneError(
-                f"{ans.key}: no value to check against", key=f"[answers] {ans.key}", line=ans.line
-            )
-        if kind in ("torque", "rub"):  # (a load that takes no power, two omegas alike)
-            clean = clean or tidied(sol)
-            exact = clean.value(kind, ans.names)
-        elif kind in _NOISE_KIND:  # noise within its bound is a zero (a translating
-            exact = sol.shown(exact, *_noise_of(sol, kind, ans.names))  # coupler's omega)
-        signed = ans.sense is not None or ans.value < 0
-        if kind in ("v", "a", "ac", "rub", "F", "N", "Fc", "vu", "au", "Fi", "h"):
-            signed = False
-        given = ans.value if signed else abs(ans.value)
-        correct = exact if signed else abs(exact)
-        tol, rule = answer_tolerance(sol, kind, ans.names, correct, tolerance, _tols=tols)
-        err = abs(given - correct)
-        rel = err / abs(correct) if correct != 0 else None
-        ok = err <= tol * (1 + 1e-12)
-        mistake = diagnosis = None
-        if kind in _MAGNITUDES and ans.value < 0 and correct != 0:
-            ok, mistake = False, "negative_magnitude"
-            diagnosis = (
-                f"{_MAGNITUDES[kind]} is a magnitude, never negative: give its size "
-                f"({abs(ans.value):g}), and its direction in words where asked"
-            )
-        elif not ok:
-            mistake, diagnosis = diag.diagnose(ans, given, correct, tol, signed)
-        out.append(
-            Verdict(
-                ans.key,
-                ans.raw,
-                given,
-                correct,
-                UNIT_OF[kind],
-                rel,
-                tol / abs(correct) if correct else math.inf,
-                tol,
-                rule,
-                ok,
-                signed,
-                mistake,
-                diagnosis,
-                ans.line,
-            )
-        )
+        else:
+            out.append(_verdict(sol, ans, tolerance, tols, diag, clean))
     return tuple(out)
+
+
+def _exact(sol: Solution, ans, clean: list) -> float:
+    """The right value of ``ans``: rounding noise within its bound a zero (a translating
+    coupler's omega; a load that takes no power, two omegas alike: from the tidied solution,
+    made once into ``clean``)."""
+    kind = ans.kind
+    exact = sol.value(kind, ans.names)
+    if exact is None or not math.isfinite(exact):
+        raise SceneError(
+            f"{ans.key}: no value to check against", key=f"[answers] {ans.key}", line=ans.line
+        )
+    if kind in ("torque", "rub"):  # (a load that takes no power, two omegas alike)
+        if not clean:
+            clean.append(tidied(sol))
+        return clean[0].value(kind, ans.names)
+    if kind in _NOISE_KIND:  # noise within its bound is a zero (a translating coupler's omega)
+        return sol.shown(exact, *_noise_of(sol, kind, ans.names))
+    return exact
+
+
+def _verdict(sol: Solution, ans, tolerance, tols, diag, clean: list) -> Verdict:
+    """The verdict on one answer of a kinematic quantity (:func:`check_answers`)."""
+    kind = ans.kind
+    exact = _exact(sol, ans, clean)
+    signed = ans.sense is not None or ans.value < 0
+    if kind in ("v", "a", "ac", "rub", "F", "N", "Fc", "vu", "au", "Fi", "h"):
+        signed = False
+    given = ans.value if signed else abs(ans.value)
+    correct = exact if signed else abs(exact)
+    tol, rule = answer_tolerance(sol, kind, ans.names, correct, tolerance, _tols=tols)
+    err = abs(given - correct)
+    rel = err / abs(correct) if correct != 0 else None
+    ok = err <= tol * (1 + ROUNDING)
+    mistake = diagnosis = None
+    if kind in _MAGNITUDES and ans.value < 0 and correct != 0:
+        ok, mistake = False, "negative_magnitude"
+        diagnosis = (
+            f"{_MAGNITUDES[kind]} is a magnitude, never negative: give its size "
+            f"({abs(ans.value):g}), and its direction in words where asked"
+        )
+    elif not ok:
+        mistake, diagnosis = diag.diagnose(ans, given, correct, tol, signed)
+    return Verdict(
+        ans.key,
+        ans.raw,
+        given,
+        correct,
+        UNIT_OF[kind],
+        rel,
+        tol / abs(correct) if correct else math.inf,
+        tol,
+        rule,
+        ok,
+        signed,
+        mistake,
+        diagnosis,
+        ans.line,
+    )

@@ -8,6 +8,7 @@ import math
 import re
 from dataclasses import dataclass, replace
 
+from ..common.tolerances import DISTINCT, LEAST_REACH, SAME
 from ..common.errors import PolygonMethodError
 from ..solver.plan import Context
 from ..scene import Scene
@@ -85,7 +86,7 @@ class _Alternatives:
             other = (base[0] - st.sigma * off[0], base[1] - st.sigma * off[1])
             here = sol.P[X]
             if (
-                math.dist(other, here) <= 1e-9 * max(math.hypot(*off), 1e-9)
+                math.dist(other, here) <= SAME * max(math.hypot(*off), LEAST_REACH)
                 or math.dist(other, here) == 0
             ):
                 continue
@@ -144,7 +145,7 @@ def _given_mistakes(scene, g):
             f"the given speed of {g.names[0]} ({g.text}) taken as the crank pin's "
             f"(omega_{scene.input.crank} = v / r, the polygon not scaled to it)"
         )
-    if abs(wrong - w) <= 1e-6 * w:
+    if abs(wrong - w) <= DISTINCT * w:
         return ()
     return ((wrong / w, "given_as_crank", words),)
 

@@ -20,9 +20,10 @@ from .verdicts import ROUNDING, Verdict
 __all__ = ["centre_verdict"]
 
 
-def centre_verdict(sol, ans, tolerance, cache: list) -> Verdict:
-    """The verdict on ``I_ij = [x, y]`` (``cache``: a list that keeps the located centres
-    for the other answers)."""
+def _asked(sol, ans, cache: list) -> tuple:
+    """(the located centres, i, j) of the answer ``I_ij`` (its bodies by number or by the
+    scene's names), refused with one line where it names no centre; ``cache`` keeps the
+    located centres for the other answers."""
     if not cache:
         try:
             cache.append(locate(sol))
@@ -33,7 +34,6 @@ def centre_verdict(sol, ans, tolerance, cache: list) -> Verdict:
                 line=ans.line,
             ) from None
     ic = cache[0]
-    sc = sol.scene
     if all(isinstance(x, int) for x in ans.names):
         i, j = ans.names
     else:  # by the scene's names
@@ -49,7 +49,33 @@ def centre_verdict(sol, ans, tolerance, cache: list) -> Verdict:
             key=f"[answers] {ans.key}",
             line=ans.line,
         )
+    return ic, i, j
+
+
+def _another_centre(sol, ic, c, gx, gy, tol) -> tuple:
+    """(code, words) where the wrong answer (gx, gy) is another centre than ``c`` (the
+    links numbered otherwise), else (None, None)."""
+    for other in ic.centres.values():
+        if (
+            other is not c
+            and other.point is not None
+            and math.hypot(gx - other.point[0], gy - other.point[1]) <= tol
+        ):
+            return "another_centre", (
+                f"that is {other.label}, the centre of links {other.i} and "
+                f"{other.j} (the links numbered otherwise: ground 1, "
+                f"{sol.plan.steps[0].driver_name} 2, "
+                f"then {', '.join(ic.bodies[2:])})"
+            )
+    return None, None
+
+
+def centre_verdict(sol, ans, tolerance, cache: list) -> Verdict:
+    """The verdict on ``I_ij = [x, y]`` (``cache``: a list that keeps the located centres
+    for the other answers)."""
+    ic, i, j = _asked(sol, ans, cache)
     c = ic.centre(i, j)
+    sc = sol.scene
     u, un = sc.length_unit, sc.units
     pivot = sol.P[sc.input.pivot or next(iter(sc.ground))]  # a block driver: no pivot
     longest = max(lk.length for lk in sc.links)
@@ -87,23 +113,8 @@ def centre_verdict(sol, ans, tolerance, cache: list) -> Verdict:
             f"a centre: {10 * DRAWING_PRECISION_CM:g} mm on the configuration diagram at "
             f"{space.text}, / (2 sin gamma) where its lines cross under 30 deg"
         )
-    ok = err <= tol * (1 + 1e-12)
-    mistake = diagnosis = None
-    if not ok:
-        for other in ic.centres.values():
-            if (
-                other is not c
-                and other.point is not None
-                and math.hypot(gx - other.point[0], gy - other.point[1]) <= tol
-            ):
-                mistake = "another_centre"
-                diagnosis = (
-                    f"that is {other.label}, the centre of links {other.i} and "
-                    f"{other.j} (the links numbered otherwise: ground 1, "
-                    f"{sol.plan.steps[0].driver_name} 2, "
-                    f"then {', '.join(ic.bodies[2:])})"
-                )
-                break
+    ok = err <= tol * (1 + ROUNDING)
+    mistake, diagnosis = (None, None) if ok else _another_centre(sol, ic, c, gx, gy, tol)
     return Verdict(
         ans.key,
         ans.raw,

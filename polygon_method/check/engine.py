@@ -12,16 +12,20 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 
+from ..common.tolerances import FLOOR, SAME
 from ..common.errors import PolygonMethodError, SceneError
 from ..forces.engine import efforts, slider_crank
 from ..linkage.flywheel import turning_moment
 from ..motion.solution import solve
 from .verdicts import ROUNDING, Verdict
 
+__all__ = ["ENGINE_KEYS", "engine_value", "engine_verdict"]
+
 #: answer key -> (unit kind, SI unit, what it is)
 ENGINE_KEYS = {
     "piston_effort": ("force", "N", "the piston effort"),
     "crank_effort": ("force", "N", "the crank effort"),
+    "turning_moment": ("torque", "N m", "the turning moment on the crank shaft"),
     "T_mean": ("torque", "N m", "the mean turning moment"),
     "dE_max": ("energy", "J", "the maximum fluctuation of energy"),
     "I_flywheel": ("moment_of_inertia", "kg m^2", "the flywheel's moment of inertia"),
@@ -35,6 +39,7 @@ ENGINE_KEYS = {
 _INSTANT = (
     "piston_effort",
     "crank_effort",
+    "turning_moment",
     "rod_thrust",
     "side_thrust",
     "shaking_force",
@@ -46,7 +51,7 @@ def _refuse(sol, ans, why):
     raise SceneError(f"{ans.key}: {why}", key=f"[answers] {ans.key}", line=ans.line)
 
 
-def _value(sol, key, scene=None):
+def engine_value(sol, key, scene=None):
     """The exact value of ``key`` for ``scene`` (default the solution's), or None where the
     scene cannot give it."""
     sc = scene or sol.scene
@@ -65,13 +70,14 @@ def _value(sol, key, scene=None):
             {
                 "piston_effort": e.F_P,
                 "crank_effort": e.F_T,
+                "turning_moment": e.T,
                 "rod_thrust": e.F_Q,
                 "side_thrust": e.F_N,
             }[key]
         )
     tm = turning_moment(sc)
-    if key == "T_mean":  # a mean within rounding of nought (1e-9 of the greatest) is nought
-        return tm.mean if abs(tm.mean) > 1e-9 * max(abs(tm.T_max), abs(tm.T_min)) else 0.0
+    if key == "T_mean":  # a mean within rounding of nought (SAME of the greatest) is nought
+        return tm.mean if abs(tm.mean) > SAME * max(abs(tm.T_max), abs(tm.T_min)) else 0.0
     if key == "dE_max":
         return tm.dE_max
     if tm.flywheel is None:
@@ -86,12 +92,14 @@ def _slips(sol, key, correct):
     blocks = [m for m in sc.masses if m.block]
     if blocks and key != "T_mean":  # (the inertia averages nothing over a cycle)
         try:
-            if key in ("piston_effort", "crank_effort"):
+            if key in ("piston_effort", "crank_effort", "turning_moment"):
                 v = _gas_alone(sol, key)
             elif key in ("rod_thrust", "side_thrust"):
                 v = None  # (the closed forms give these from the piston effort alone)
             else:
-                v = _value(sol, key, replace(sc, masses=tuple(m for m in sc.masses if not m.block)))
+                v = engine_value(
+                    sol, key, replace(sc, masses=tuple(m for m in sc.masses if not m.block))
+                )
         except PolygonMethodError:
             v = None
         if v is not None:
@@ -124,7 +132,7 @@ def _slips(sol, key, correct):
         tm = turning_moment(sc)
         if tm.lobes:
             big = max(abs(lb.energy) for lb in tm.lobes)
-            if abs(big - tm.dE_max) > 1e-9 * tm.dE_max:
+            if abs(big - tm.dE_max) > SAME * tm.dE_max:
                 f = big / tm.dE_max
                 out.append(
                     (
@@ -161,11 +169,12 @@ def _gas_alone(sol, key):
     F_P = e.F_P - toward
     if key == "piston_effort":
         return F_P
-    return e.F_T * F_P / e.F_P if e.F_P else None
+    return (e.T if key == "turning_moment" else e.F_T) * F_P / e.F_P if e.F_P else None
 
 
-def engine_verdict(sol, ans, tolerance) -> Verdict:
-    """The :class:`Verdict` on one of the engine chapter's answers."""
+def _correct(sol, ans) -> float:
+    """The right value of the engine chapter's answer ``ans``, or the answer refused (a
+    :class:`SceneError` naming it) where the scene cannot give it."""
     key = ans.key
     if key in _INSTANT and not sol.scene.has_forces:
         _refuse(
@@ -173,14 +182,14 @@ def engine_verdict(sol, ans, tolerance) -> Verdict:
             ans,
             (
                 "the engine's efforts"
-                if "thrust" in key or "effort" in key
+                if "thrust" in key or "effort" in key or key == "turning_moment"
                 else "the shaking force and moment"
             )
             + " need the force analysis: give "
             "[masses] (the reciprocating parts), [gravity] or [indicator]",
         )
     try:
-        correct = _value(sol, key)
+        correct = engine_value(sol, key)
     except PolygonMethodError as exc:
         _refuse(sol, ans, exc.message)
     if correct is None:
@@ -196,6 +205,25 @@ def engine_verdict(sol, ans, tolerance) -> Verdict:
                 else "the scene is no engine (a gas force on a slider crank's piston)"
             ),
         )
+    return correct
+
+
+def _slip(sol, key, given, correct, rel, unit) -> tuple:
+    """(code, words) of the classic slip ``given`` matches (within ``rel``), or (None, None)."""
+    for v, code, words in _slips(sol, key, correct):
+        if abs(given - v) <= max(rel * abs(v), FLOOR) * (1 + ROUNDING):
+            return code, (
+                f"{ENGINE_KEYS[key][2]} matches {words} "
+                f"({v:.4g} {unit}); the correct value is "
+                f"{correct:.4g} {unit}"
+            )
+    return None, None
+
+
+def engine_verdict(sol, ans, tolerance) -> Verdict:
+    """The :class:`Verdict` on one of the engine chapter's answers."""
+    key = ans.key
+    correct = _correct(sol, ans)
     unit = ENGINE_KEYS[key][1]
     if key != "T_mean":  # sizes (a shaking moment's sense is not asked)
         correct = abs(correct)
@@ -209,26 +237,15 @@ def engine_verdict(sol, ans, tolerance) -> Verdict:
     )
     rel = rel if rel is not None else ROUNDING
     tol = rel * abs(correct)
-    if (
-        correct == 0.0 and key == "T_mean"
-    ):  # a mean of nought: to the tolerance of the greatest turning moment
+    if correct == 0.0 and key == "T_mean":
+        # a mean of nought: to the tolerance of the greatest turning moment
         tm = turning_moment(sol.scene)
         tol = rel * max(abs(tm.T_max), abs(tm.T_min))
     err = abs(given - correct)
-    ok = err <= tol * (1 + 1e-12)
+    ok = err <= tol * (1 + ROUNDING)
     mistake = diagnosis = None
     if not ok:
-        for v, code, words in _slips(sol, key, correct):
-            if abs(given - v) <= max(rel * abs(v), 1e-300) * (1 + 1e-12):
-                mistake, diagnosis = (
-                    code,
-                    (
-                        f"{ENGINE_KEYS[key][2]} matches {words} "
-                        f"({v:.4g} {unit}); the correct value is "
-                        f"{correct:.4g} {unit}"
-                    ),
-                )
-                break
+        mistake, diagnosis = _slip(sol, key, given, correct, rel, unit)
     return Verdict(
         key,
         ans.raw,

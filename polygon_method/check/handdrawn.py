@@ -36,6 +36,7 @@ from __future__ import annotations
 import dataclasses
 import math
 
+from ..common.tolerances import SAME
 from ..polygons.constructions import acceleration_constructions, velocity_constructions
 from ..solver.derived import input_torque, largest, rubbing_at
 from ..solver.kinematics import evaluate
@@ -119,7 +120,7 @@ class HandDrawing:
 
         def sigma_at(xy):
             best = min(known, key=lambda k: math.dist(k[0], xy))
-            return best[1] if math.dist(best[0], xy) <= 1e-9 * (1 + math.hypot(*xy)) else None
+            return best[1] if math.dist(best[0], xy) <= SAME * (1 + math.hypot(*xy)) else None
 
         def set_out(vec):  # a vector drawn from a known image: its end's sigma
             s0 = sigma_at(vec.start)
@@ -142,7 +143,7 @@ class HandDrawing:
                 ends = [
                     set_out(v)
                     for v in c.found
-                    if math.dist(v.end, x) <= 1e-9 * (1 + math.hypot(*x))
+                    if math.dist(v.end, x) <= SAME * (1 + math.hypot(*x))
                 ]
                 s = min(ends) if ends else p
             known.append((x, s))

@@ -7,6 +7,7 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 
+from ..common.tolerances import SAME
 from ..common.errors import PolygonMethodError
 from ..forces import analyse, force_value
 from ..scene import GuideSlider, Gravity
@@ -101,31 +102,19 @@ class _Diagnoser:
 
     # -- candidates
     def candidates(self, ans, signed):
+        """Every known mistake's value for the answer ``ans`` (``signed``: compared with its
+        sign), in the order they are matched: the sense, the speed and the factors, the
+        kind's own slips, the mechanism set up otherwise, a decimal slip, then another
+        quantity of the problem."""
         sol, sc = self.sol, self.sc
         kind, names = ans.kind, ans.names
         correct = sol.value(kind, names)
-        out = []
-        val = lambda s: self.cmp(s.value(kind, names), signed)  # noqa: E731
-        if signed:
-            word = "cw" if correct > 0 else "ccw"
-            if kind in ("vs", "as"):
-                out.append(
-                    _Candidate(-correct, "sense", "the direction along the guide is reversed")
-                )
-            else:
-                out.append(
-                    _Candidate(
-                        -correct,
-                        "sense",
-                        f"the sense is wrong ({word} given; "
-                        f"it turns {'ccw' if correct > 0 else 'cw'})",
-                    )
-                )
+        out = self._sense(kind, correct) if signed else []
         if kind != "torque":
             for factor, code, words in _speed_mistakes(sc):
                 alt = self.alts.speed(factor)
                 if alt is not None:
-                    out.append(_Candidate(val(alt), code, words))
+                    out.append(_Candidate(self.cmp(alt.value(kind, names), signed), code, words))
         elif not sc.has_forces:
             out += self.torque(signed)
         if kind in ("F", "N", "Fc", "Fi", "Ci", "h") or (kind == "torque" and sc.has_forces):
@@ -134,6 +123,34 @@ class _Diagnoser:
             _AS_KIND.get(kind, kind), ()
         ) + self.unit_slips(kind):
             out.append(_Candidate(self.cmp(correct, signed) * factor, code, words))
+        out += self._of_the_kind(ans, signed)
+        out += self._set_up_otherwise(ans, signed)
+        for factor, code, words in _DECIMAL:
+            out.append(_Candidate(self.cmp(correct, signed) * factor, code, words))
+        # last: another quantity of the problem (a named mistake of the same value first)
+        out += confusions.other_quantities(self, ans, signed)
+        return out
+
+    @staticmethod
+    def _sense(kind, correct) -> list:
+        """The sense reversed (a direction along the guide, or cw for ccw)."""
+        if kind in ("vs", "as"):
+            return [_Candidate(-correct, "sense", "the direction along the guide is reversed")]
+        word = "cw" if correct > 0 else "ccw"
+        return [
+            _Candidate(
+                -correct,
+                "sense",
+                f"the sense is wrong ({word} given; it turns {'ccw' if correct > 0 else 'cw'})",
+            )
+        ]
+
+    def _of_the_kind(self, ans, signed) -> list:
+        """The slips of the answer's own kind: a relative velocity for an absolute one, a
+        per-length slip, a gear ratio, a contact point taken at rest, a Coriolis component
+        left out, an absolute velocity for a sliding one, a rubbing slip."""
+        kind, names = ans.kind, ans.names
+        out = []
         if kind in ("vu", "au"):
             out += confusions.under_block(self, ans)
         if kind in ("v", "a"):
@@ -149,16 +166,24 @@ class _Diagnoser:
         if kind in ("a", "alpha"):
             out += self.step_coriolis_left_out(kind, names, signed)
         if kind == "vs":
-            X = sc.slider(names[0]).point  # a peg's slot: vs_P_OA is of the peg P
+            X = self.sc.slider(names[0]).point  # a peg's slot: vs_P_OA is of the peg P
             out.append(
                 _Candidate(
-                    sol.speed(X),
+                    self.sol.speed(X),
                     "absolute_for_relative",
                     f"the absolute velocity of {X} given for its sliding velocity",
                 )
             )
         if kind == "rub":
             out += self.rubbing(names[0])
+        return out
+
+    def _set_up_otherwise(self, ans, signed) -> list:
+        """The mechanism set up otherwise: the other assembly branch, the crank's angle
+        read otherwise, the angle in degrees taken as radians."""
+        sc, kind, names = self.sc, ans.kind, ans.names
+        val = lambda s: self.cmp(s.value(kind, names), signed)  # noqa: E731
+        out = []
         for X, side, alt in self.alts.branches():
             try:
                 out.append(
@@ -170,8 +195,10 @@ class _Diagnoser:
                 )
             except (KeyError, TypeError):
                 pass
+        if kind == "torque":
+            return out
         for slip, alt in self.alts.angle_slips():
-            if alt is not None and kind != "torque":
+            if alt is not None:
                 out.append(
                     _Candidate(
                         val(alt),
@@ -182,7 +209,7 @@ class _Diagnoser:
                     )
                 )
         alt = self.alts.angle_as_radians()
-        if alt is not None and kind != "torque":
+        if alt is not None:
             out.append(
                 _Candidate(
                     val(alt),
@@ -190,10 +217,6 @@ class _Diagnoser:
                     "the crank angle in degrees used as radians (calculator in RAD mode)",
                 )
             )
-        for factor, code, words in _DECIMAL:
-            out.append(_Candidate(self.cmp(correct, signed) * factor, code, words))
-        # last: another quantity of the problem (a named mistake of the same value first)
-        out += confusions.other_quantities(self, ans, signed)
         return out
 
     def relative(self, ans, signed):
@@ -387,7 +410,7 @@ class _Diagnoser:
         for st in sol.plan.steps:
             wrong = getattr(st, "coriolis_left_out", lambda sol: {})(sol).get(key)
             right = sol.value(kind, names)
-            if wrong is not None and abs(abs(wrong) - abs(right)) > 1e-9 * abs(right):
+            if wrong is not None and abs(abs(wrong) - abs(right)) > SAME * abs(right):
                 out.append(
                     _Candidate(
                         self.cmp(wrong, signed) if kind == "alpha" else wrong,
@@ -475,7 +498,27 @@ class _Diagnoser:
                 "offset_wrong_side",
                 masses=tuple(replace(m, inertia=-m.inertia) for m in sc.masses),
             )
+        self.two_masses_slip(turning, again)
         return out
+
+    def two_masses_slip(self, turning, again):
+        """A link replaced by two masses at its pins (m_A = m GB / l, m_B = m GA / l, the
+        equivalent system of the engine chapter) without the correction couple: its moment
+        of inertia taken as m GA GB (G on the line between the pins), not m k^2."""
+        sc = self.sc
+        two = {}
+        for m in turning:
+            if not m.block and m.mu == 0.0 and 0.0 < m.lam < 1.0:
+                L = sc.link(m.body).length
+                if abs(m.inertia - m.mass * m.lam * (1 - m.lam) * L * L) > 1e-9 * m.inertia:
+                    two[m.body] = m.mass * m.lam * (1 - m.lam) * L * L
+        if two:
+            again(
+                "the rod replaced by two masses at its pins (m GB / l and m GA / l) "
+                "without the correction couple: I taken as m GA GB, not m k^2",
+                "correction_couple_left_out",
+                masses=tuple(replace(m, inertia=two.get(m.body, m.inertia)) for m in sc.masses),
+            )
 
     def gear_ratio(self, ans, signed):
         """A planet's omega by the tabular method, its classic slips (the step says them)."""
@@ -540,7 +583,7 @@ class _Diagnoser:
             if dev <= window:
                 rel = dev / max(abs(c.value), 1e-300)
                 # equal to rounding: the simpler mistake (earlier in the list) first
-                matches.append((rel if rel > 1e-9 else 0.0, order, c))
+                matches.append((rel if rel > SAME else 0.0, order, c))
         slip = _slip(ans.raw, given, correct, signed) or self.own_slip(ans)
         if slip is not None:  # its digits match exactly: before a mistake that only comes
             matches.append((_SLIP_RANK, 0, slip))  # near (more than rounding off)
@@ -557,7 +600,7 @@ class _Diagnoser:
             and d <= 0.005
             and matches[0][0] <= 0.005
             and not (  # the same value, named twice
-                c.code == "another_quantity" and abs(c.value - best.value) <= 1e-9 * abs(best.value)
+                c.code == "another_quantity" and abs(c.value - best.value) <= SAME * abs(best.value)
             )
         ]
         if others:

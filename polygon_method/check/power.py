@@ -8,6 +8,7 @@ from __future__ import annotations
 import itertools
 import math
 
+from ..common.tolerances import SAME
 from ..common.numbers import textbook as _g
 from ..common.numbers import working as _num
 from .alternatives import _Candidate, _speed_mistakes
@@ -26,10 +27,20 @@ def rubbing(d, X):
     mistake)`` pairs for the diagnoser ``d``."""
     sol, sc = d.sol, d.sc
     rub = sol.rubbing[X]
+    out = _radius_slips(sc, rub, X)
+    if not rub.pairs:
+        return out
+    rule, slips = _sense_slips(rub, X)
+    return out + slips + _links_not_at_pin(d, rub, X, rule)
+
+
+def _radius_slips(sc, rub, X) -> list:
+    """The radius taken for a diameter or the reverse, and one pair of bodies at a pin that
+    joins more."""
     r = rub.radius
     pin = next(p for p in sc.pins if p.point == X)
-    out = []
     correct = rub.rubbing_velocity
+    out = []
     if pin.given == "diameter":
         out.append(
             _Candidate(
@@ -64,8 +75,14 @@ def rubbing(d, X):
                     f"only; the largest at {X} is {_g(correct)} m/s",
                 )
             )
-    if not rub.pairs:
-        return out
+    return out
+
+
+def _sense_slips(rub, X) -> tuple:
+    """(the rule in words, the slips): the sum of the omegas for their difference or the
+    reverse, and one link's omega alone, at the pair of bodies that rub the most."""
+    r, correct = rub.radius, rub.rubbing_velocity
+    out = []
     pair = max(rub.pairs, key=rub.pairs.get)
     a, b = pair.split("|")
     wa, wb = rub.bodies[a], rub.bodies[b]
@@ -105,6 +122,14 @@ def rubbing(d, X):
                     abs(w) * r, "one_link_only", f"the angular velocity of {body} alone; {rule}"
                 )
             )
+    return rule, out
+
+
+def _links_not_at_pin(d, rub, X, rule) -> list:
+    """Omegas of links that do not meet at the pin, one to three, added or subtracted (the
+    student's own omegas too, from the diagnoser ``d``)."""
+    sol, sc, r = d.sol, d.sc, rub.radius
+    out = []
     at_pin = set(rub.bodies)
     moving = [lk.key for lk in sc.links if lk.key not in sol.plan.fixed_links]
     for omegas, yours in d.omega_sets():
@@ -205,7 +230,7 @@ def torque(d, signed):
         else:
             full += abs(load.torque * sol.W[load.target])
     power = sum(p for _, p in exact_terms)
-    if abs(full - abs(power)) > 1e-9 * full:
+    if abs(full - abs(power)) > SAME * full:
         out.append(
             _Candidate(
                 sign(math.copysign(full, -power / w)),

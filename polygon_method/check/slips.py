@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import re
 
+from ..common.tolerances import SAME
 from ..scene.answers import decimal_comma
 from .alternatives import _Candidate
 
@@ -16,7 +17,7 @@ def _pointed(raw) -> str:
 
 #: where a slip of the pen ranks among the mistakes (by their relative deviation): after
 #: one the answer equals to its rounding, before one it only comes near
-_SLIP_RANK = 0.005 * (1 + 1e-9)
+_SLIP_RANK = 0.005 * (1 + SAME)
 
 _NUM = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 

@@ -100,7 +100,7 @@ class _Tolerances:
         worst = 1.0
         for st in steps:
             worst = min(worst, sol.conditions.get(st.index, 1.0))
-            f = max(1.0, _SIN30 / max(worst, 1e-12))
+            f = max(1.0, _SIN30 / max(worst, ROUNDING))
             for p in st.finds:
                 self.factor[p] = f
             for lk in st.links:
@@ -228,7 +228,7 @@ def answer_tolerance(
     if relative is not None:
         tol = relative * abs(correct)
         if tol == 0:
-            tol = draw or 1e-12
+            tol = draw or ROUNDING
         return tol, f"{100 * relative:g} % ({source})"
     hand = None if where.startswith("computed") else tols.hand(kind, names, correct)
     if hand is not None and hand * abs(correct) > max(ROUNDING * abs(correct), draw):

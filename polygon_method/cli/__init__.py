@@ -298,7 +298,7 @@ def main(argv=None) -> int:
             return 2
     try:
         with _glyphs(args.command):
-            code = args.func(args)
+            code = _run(args)
         sys.stdout.flush()  # a full disk on standard output is one line too
         return code
     except PolygonMethodError as exc:
@@ -330,6 +330,21 @@ def main(argv=None) -> int:
             file=sys.stderr,
         )
         return 3
+
+
+def _run(args) -> int:
+    """The command on its scene; where the scene is refused as a mechanism's, the commands
+    of a turning-moment diagram stated on its own, if it is one (so that a mechanism's scene
+    pays nothing for them)."""
+    try:
+        return args.func(args)
+    except PolygonMethodError:
+        from .energy import route
+
+        other = route(args)
+        if other is None:
+            raise
+    return other(args)
 
 
 #: matplotlib's warning of a character its font cannot draw (one per character and figure)

@@ -411,20 +411,9 @@ def _cmd_check(args) -> int:
     return 0 if all(v.ok for v in verdicts) else 1
 
 
-def _cmd_variants(args) -> int:
-    """``polygon-method variants SCENE --count N --seed S -o DIR [--pdf]``: a scene per
-    student, the answer key (Markdown and CSV) and the problem sheet, written all or none;
-    fewer good variants than asked: one line, exit 2, nothing written."""
-    from ..scene import load_scene
-    from ..variants import (
-        answer_key_csv,
-        answer_key_markdown,
-        generate,
-        sheet_markdown,
-        sheet_pdf,
-        summary_text,
-    )
-
+def _variants_target(args) -> tuple:
+    """(the directory, whether it is to be made) of ``variants -o``, its count and seed
+    checked first: one clear line for each bad one, before anything is solved."""
     from ..variants import MAX_SEED, MAX_VARIANTS
 
     if args.count < 1 or args.count > MAX_VARIANTS:
@@ -448,6 +437,24 @@ def _cmd_variants(args) -> int:
         raise PolygonMethodError(f"cannot write into {out}: it is not a directory", key="-o")
     if made and not out.parent.is_dir():
         raise PolygonMethodError(f"cannot write into {out}: no directory {out.parent}", key="-o")
+    return out, made
+
+
+def _cmd_variants(args) -> int:
+    """``polygon-method variants SCENE --count N --seed S -o DIR [--pdf]``: a scene per
+    student, the answer key (Markdown and CSV) and the problem sheet, written all or none;
+    fewer good variants than asked: one line, exit 2, nothing written."""
+    from ..scene import load_scene
+    from ..variants import (
+        answer_key_csv,
+        answer_key_markdown,
+        generate,
+        sheet_markdown,
+        sheet_pdf,
+        summary_text,
+    )
+
+    out, made = _variants_target(args)
     scene = load_scene(args.scene)
     vs = generate(scene, args.count, args.seed)
     short = vs.shortfall()

@@ -532,11 +532,15 @@ def _driver(scene):
 
 
 def _what(scene) -> str:
-    """What a sweep's parameter values are, in words."""
+    """What a sweep's parameter values are, in words, as the driver names its parameter:
+    "places of collar C on DC (mm)"."""
     driver = _driver(scene)
     if driver.periodic:
         return "crank angles"
-    return f"places of block {driver.finds[0]} ({scene.units})"
+    name = driver.parameter(scene)[0]  # "place of block C", "place of collar C on DC"
+    if name.startswith("place "):
+        name = "places " + name[len("place ") :]
+    return f"{name} ({scene.units})"
 
 
 def _limits_text(dom) -> str:

@@ -22,6 +22,19 @@ __all__ = [
     "ROUNDING",
     "FLOOR",
     "LEAST_REACH",
+    "ULP",
+    "DISTINCT",
+    "ON_PAPER",
+    "PLOTTED_ZERO",
+    "EXTREME_RESOLVED",
+    "ZERO_RESOLVED",
+    "REFINED",
+    "AT_LIMIT",
+    "SMOOTH",
+    "CONVERGED",
+    "LEAST_STEP",
+    "ONE_ASSEMBLY",
+    "PAGE",
     "same",
     "crossing_angle",
 ]
@@ -41,6 +54,50 @@ FLOOR = 1e-300
 #: a step's least reach (m): the size its tolerances scale with never drops to zero, even
 #: for a link of no length (refused elsewhere, but the scale must not divide by zero first)
 LEAST_REACH = 1e-9
+
+# ----------------------------------------------------------------- near nothing, on the page
+#: a few units in the last place of a number of size one (a unit vector's component): below
+#: it the component is zero, and a line along it is parallel to that axis
+ULP = 1e-15
+#: a difference that must be plain to count: a slip whose value is the right one to this
+#: fraction is no slip, a plotted curve that varies less is drawn flat, a parallelogram whose
+#: links are parallel to it is not crossed, a point this far (cm) off a drawn line is off it
+DISTINCT = 1e-6
+#: a length on a drawing (cm on the sketch, pixels on a picture) or an angle drawn (rad)
+#: below which it is nothing, and the slack with which a drawn place is held to a limit (a
+#: tick at the end of an axis, a sheet that just fits the paper): a million times finer
+#: than a pen's 0.01 cm, far above the drawing's rounding
+ON_PAPER = 1e-9
+#: a plotted quantity whose every value is below this fraction of its unit's size is nought
+#: (drawn as a flat line about 0, not as magnified rounding noise)
+PLOTTED_ZERO = 1e-8
+
+# ----------------------------------------------------------------- refining over a cycle
+#: the bracket (rad of the crank) at which an extreme's refinement stops: the angle is then
+#: known to its last few digits
+EXTREME_RESOLVED = 1e-13
+#: the bracket (rad of the crank) at which a zero crossing's refinement stops
+ZERO_RESOLVED = 1e-14
+#: a sweep's extremes are refined to about this (rad of the crank, or of the parameter's
+#: radian): the zooming passes are as many as that takes from the sample spacing
+REFINED = 1e-11
+#: the offset (rad, or of the parameter's radian) inside a limit position at which a
+#: quantity is compared with its value at the limit (at one and at two offsets)
+AT_LIMIT = 1e-9
+#: a quantity whose values :data:`AT_LIMIT` inside a limit position agree with its value
+#: at the limit to this fraction of its kind is finite and smooth there (it is then taken as
+#: an extreme at the limit; one that does not may grow without bound)
+SMOOTH = 1e-7
+
+# ----------------------------------------------------------------- the triad's loop solve
+#: Newton's residual (|Fi| / 2 li, relative to the largest length) taken as converged
+CONVERGED = 1e-13
+#: continuation halves its step along the crank's angle (a fraction of the whole step) and
+#: gives up below this: the assembly cannot be followed there
+LEAST_STEP = 1e-7
+#: two assemblies of a triad whose vertices are closer than this fraction of its size, and
+#: whose plate angles closer than this (rad), are one
+ONE_ASSEMBLY = 1e-7
 
 
 def same(a: float, b: float, rel: float = SAME) -> bool:
@@ -93,3 +150,8 @@ class Tolerances:
 
 
 TOL = Tolerances()
+
+
+#: the names the browser page's script takes its tolerances by (sent in the page's data, so
+#: that the script holds no literal of its own)
+PAGE = {"same": SAME, "rounding": ROUNDING, "floor": FLOOR}

@@ -7,8 +7,10 @@ from __future__ import annotations
 
 import math
 
+from ..common.tolerances import ON_PAPER, SAME, ULP
 from ..polygons.scales import Scale
-from .diagrams import _drive, _mechanism
+from .diagrams import _drive
+from .mechanism import mechanism
 from .sketch import _header, _Sketch, _text_size
 from .style import SMALL_PT
 
@@ -60,7 +62,7 @@ def _clip(box, p, d):
     """The segment of the line p + t d inside ``box`` (Liang-Barsky), or None."""
     t0, t1 = -math.inf, math.inf
     for q, dq, lo, hi in ((p[0], d[0], box[0], box[2]), (p[1], d[1], box[1], box[3])):
-        if abs(dq) < 1e-15:
+        if abs(dq) < ULP:
             if not lo <= q <= hi:
                 return None
             continue
@@ -114,12 +116,84 @@ def _solid_obstacles(sk):
     sk.obstacles.extend(sk.solid)
 
 
+def _kennedy_lines(sk, ic, box, cm):
+    """The lines that located the secondary centres (Kennedy's theorem), dashed, clipped to
+    the window ``box``; ``cm``: a place in metres on the sketch (cm)."""
+    color, lw, dashes = KENNEDY_LINE
+    for key in ic.order:
+        c = ic.centres[key]
+        for a, b in c.lines:
+            pts = [cm(x.point) for x in (a, b, c) if x.point is not None]
+            if not pts:  # the line at infinity (two blocks on fixed guides): not drawn
+                continue
+            p0 = pts[0]
+            p1 = max(pts[1:], key=lambda q: math.dist(q, p0), default=p0)
+            if math.dist(p0, p1) > SAME * (box[2] - box[0]):
+                d = (p1[0] - p0[0], p1[1] - p0[1])
+            else:  # the known points at one place (two centres at one pin)
+                inf = next((x for x in (a, b, c) if x.point is None), None)
+                if inf is None:
+                    continue  # a line through one point only: nothing to draw
+                d = inf.direction
+            seg = _clip(box, p0, d)
+            if seg is not None:
+                sk.line(
+                    list(seg),
+                    gid=f"kennedy-{c.label}-{a.label}-{b.label}",
+                    color=color,
+                    lw=lw,
+                    dashes=dashes,
+                    z=1,
+                    obstacle=False,
+                    hint=False,
+                )
+
+
+def _centre_marks(sk, sol, ic, box, cm):
+    """Each centre: a ring and its name where it is within the window ``box``, else an
+    arrow at the edge towards it with its distance (from the crank's pivot; a driving block
+    has none: from the first fixed point)."""
+    unit, uname = sol.scene.length_unit, sol.scene.units
+    mid = ((box[0] + box[2]) / 2, (box[1] + box[3]) / 2)
+    pivot = sol.scene.input.pivot or next(iter(sol.scene.ground))
+    for key in ic.order:
+        c = ic.centres[key]
+        if c.point is not None and _inside(box, cm(c.point)):
+            where = cm(c.point)
+            sk.circle(
+                where,
+                0.07,
+                gid=f"centre-{c.label}",
+                face="#ffffff",
+                edge=CENTRE_COLOR,
+                lw=1.0,
+                z=7,
+            )
+            sk.label(
+                c.label,
+                [where],
+                SMALL_PT + 1,
+                gid=f"label-{c.label}",
+                color=CENTRE_COLOR,
+                point=True,
+            )
+            continue
+        text, start, d = far_words(c, sol.P[pivot], pivot, unit, uname)
+        start = cm(start) if start is not None else mid
+        n = math.hypot(*d)
+        d = (d[0] / n, d[1] / n)
+        seg = _clip(box, start, d)
+        tip = seg[1] if seg is not None else start
+        tail = (tip[0] - 0.9 * d[0], tip[1] - 0.9 * d[1])
+        sk.arrow(tail, tip, f"centre-{c.label}", CENTRE_COLOR, 1.0)
+        sk.label(text, [tip], SMALL_PT, gid=f"label-{c.label}", color=CENTRE_COLOR, point=True)
+
+
 def centres_sketch(sol, scale: Scale, ic, window: float = WINDOW) -> _Sketch:
     """The mechanism with its instantaneous centres (``ic``: a located ``Centres``), those
     within ``window`` times the mechanism's size of it where they are, the others by an
     arrow at the edge."""
     s = scale.per_cm
-    unit, uname = sol.scene.length_unit, sol.scene.units
     sk = _Sketch()
 
     def cm(p):
@@ -132,75 +206,12 @@ def centres_sketch(sol, scale: Scale, ic, window: float = WINDOW) -> _Sketch:
             [cm(ic.centres[k].point) for k in ic.order if ic.centres[k].point is not None],
             window,
         )
-        mid = ((box[0] + box[2]) / 2, (box[1] + box[3]) / 2)
-        # the far centres' distances from the crank's pivot (a driving block has none:
-        # from the first fixed point)
-        pivot = sol.scene.input.pivot or next(iter(sol.scene.ground))
-        # the lines that located the secondary centres, dashed
-        color, lw, dashes = KENNEDY_LINE
-        for key in ic.order:
-            c = ic.centres[key]
-            for a, b in c.lines:
-                pts = [cm(x.point) for x in (a, b, c) if x.point is not None]
-                if not pts:  # the line at infinity (two blocks on fixed guides): not drawn
-                    continue
-                p0 = pts[0]
-                p1 = max(pts[1:], key=lambda q: math.dist(q, p0), default=p0)
-                if math.dist(p0, p1) > 1e-9 * (box[2] - box[0]):
-                    d = (p1[0] - p0[0], p1[1] - p0[1])
-                else:  # the known points at one place (two centres at one pin)
-                    inf = next((x for x in (a, b, c) if x.point is None), None)
-                    if inf is None:
-                        continue  # a line through one point only: nothing to draw
-                    d = inf.direction
-                seg = _clip(box, p0, d)
-                if seg is not None:
-                    sk.line(
-                        list(seg),
-                        gid=f"kennedy-{c.label}-{a.label}-{b.label}",
-                        color=color,
-                        lw=lw,
-                        dashes=dashes,
-                        z=1,
-                        obstacle=False,
-                        hint=False,
-                    )
-        # the centres: a ring where it is, an arrow at the edge where it is off the sheet
-        for key in ic.order:
-            c = ic.centres[key]
-            if c.point is not None and _inside(box, cm(c.point)):
-                where = cm(c.point)
-                sk.circle(
-                    where,
-                    0.07,
-                    gid=f"centre-{c.label}",
-                    face="#ffffff",
-                    edge=CENTRE_COLOR,
-                    lw=1.0,
-                    z=7,
-                )
-                sk.label(
-                    c.label,
-                    [where],
-                    SMALL_PT + 1,
-                    gid=f"label-{c.label}",
-                    color=CENTRE_COLOR,
-                    point=True,
-                )
-                continue
-            text, start, d = far_words(c, sol.P[pivot], pivot, unit, uname)
-            start = cm(start) if start is not None else mid
-            n = math.hypot(*d)
-            d = (d[0] / n, d[1] / n)
-            seg = _clip(box, start, d)
-            tip = seg[1] if seg is not None else start
-            tail = (tip[0] - 0.9 * d[0], tip[1] - 0.9 * d[1])
-            sk.arrow(tail, tip, f"centre-{c.label}", CENTRE_COLOR, 1.0)
-            sk.label(text, [tip], SMALL_PT, gid=f"label-{c.label}", color=CENTRE_COLOR, point=True)
+        _kennedy_lines(sk, ic, box, cm)
+        _centre_marks(sk, sol, ic, box, cm)
 
     sk.rings = RINGS
     sk.leader_clear = LEADER_CLEAR
-    _mechanism(sk, sol, scale, extra)
+    mechanism(sk, sol, scale, extra)
     n = ic.n
     _header(
         sk,
@@ -219,11 +230,69 @@ def centres_sketch(sol, scale: Scale, ic, window: float = WINDOW) -> _Sketch:
 CIRCLE_RADIUS, CIRCLE_SMALL = 2.6, 1.9
 
 
+def _chord_numbers(sk, chords, pos):
+    """Each secondary centre's number on its own chord, on a white patch, where it keeps
+    clearest of the other chords, the other numbers and the links' points ``pos``."""
+    from shapely.geometry import Point, box
+
+    taken = [Point(p).buffer(0.3) for p in pos.values()]
+    nth = 0
+    for c, chord in chords:
+        if c.primary:
+            continue
+        nth += 1
+        text = f"{nth}"
+        w, h = _text_size(text, SMALL_PT)
+        w, h = w + 0.08, h + 0.02
+        others = [g for d, g in chords if d is not c]
+        best = None
+        for t in _CHORD_SPOTS:
+            m = chord.interpolate(t, normalized=True)
+            patch = box(m.x - w / 2, m.y - h / 2, m.x + w / 2, m.y + h / 2)
+            gap = min([patch.distance(g) for g in others + taken] + [_ROOM])
+            if best is None or gap > best[0] + ON_PAPER:
+                best = (gap, m.x, m.y, patch)
+        _, x, y, patch = best
+        taken.append(patch)
+        sk.polygon(
+            list(patch.exterior.coords),
+            gid=f"chord-order-{c.label}-patch",
+            face="#ffffff",
+            edge="#ffffff",
+            lw=0.0,
+            z=3,
+            obstacle=None,
+        )
+        sk.note(x, y, text, SMALL_PT, ha="center", gid=f"chord-order-{c.label}", color="#1f5fbf")
+
+
+def _circle_notes(sk):
+    """The labels placed, and the diagram's title and key above it."""
+    sk.place_labels()
+    x0, y0, x1, y1 = sk.content_box()
+    top = y1 + 0.4
+    rows = [
+        "Circle diagram",
+        "solid: primary centres (joints)",
+        "dashed: by Kennedy's theorem,",
+        "numbered as found",
+    ]
+    for i, text in enumerate(reversed(rows)):
+        sk.note(
+            x0,
+            top + 0.45 * i,
+            text,
+            SMALL_PT + (3.5 if i == len(rows) - 1 else 0),
+            gid=f"note-circle-{i}",
+            weight="bold" if i == len(rows) - 1 else "normal",
+        )
+
+
 def circle_sketch(ic, radius: float = CIRCLE_RADIUS) -> _Sketch:
     """The circle diagram: the links as points 1..n round a circle, a chord for each centre
     (solid: primary, from a joint; dashed: by Kennedy's theorem, numbered in the order
     found)."""
-    from shapely.geometry import LineString, Point, box
+    from shapely.geometry import LineString
 
     sk = _Sketch()
     n = ic.n
@@ -265,57 +334,10 @@ def circle_sketch(ic, radius: float = CIRCLE_RADIUS) -> _Sketch:
                 obstacle=False,
                 hint=False,
             )
-    # each number on its own chord, on a white patch, where it keeps clearest of the other
-    # chords, the other numbers and the links' points
-    taken = [Point(p).buffer(0.3) for p in pos.values()]
-    nth = 0
-    for c, chord in chords:
-        if c.primary:
-            continue
-        nth += 1
-        text = f"{nth}"
-        w, h = _text_size(text, SMALL_PT)
-        w, h = w + 0.08, h + 0.02
-        others = [g for d, g in chords if d is not c]
-        best = None
-        for t in _CHORD_SPOTS:
-            m = chord.interpolate(t, normalized=True)
-            patch = box(m.x - w / 2, m.y - h / 2, m.x + w / 2, m.y + h / 2)
-            gap = min([patch.distance(g) for g in others + taken] + [_ROOM])
-            if best is None or gap > best[0] + 1e-9:
-                best = (gap, m.x, m.y, patch)
-        _, x, y, patch = best
-        taken.append(patch)
-        sk.polygon(
-            list(patch.exterior.coords),
-            gid=f"chord-order-{c.label}-patch",
-            face="#ffffff",
-            edge="#ffffff",
-            lw=0.0,
-            z=3,
-            obstacle=None,
-        )
-        sk.note(x, y, text, SMALL_PT, ha="center", gid=f"chord-order-{c.label}", color="#1f5fbf")
+    _chord_numbers(sk, chords, pos)
     for k, p in pos.items():
         sk.circle(p, 0.09, gid=f"circle-point-{k}", face="#000000", z=6)
         out = (p[0] * (1 + 0.5 / radius), p[1] * (1 + 0.5 / radius))
         sk.label(str(k), [out], SMALL_PT + 2, gid=f"circle-label-{k}", weight="bold")
-    sk.place_labels()
-    x0, y0, x1, y1 = sk.content_box()
-    top = y1 + 0.4
-    rows = [
-        "Circle diagram",
-        "solid: primary centres (joints)",
-        "dashed: by Kennedy's theorem,",
-        "numbered as found",
-    ]
-    for i, text in enumerate(reversed(rows)):
-        sk.note(
-            x0,
-            top + 0.45 * i,
-            text,
-            SMALL_PT + (3.5 if i == len(rows) - 1 else 0),
-            gid=f"note-circle-{i}",
-            weight="bold" if i == len(rows) - 1 else "normal",
-        )
+    _circle_notes(sk)
     return sk

@@ -145,11 +145,18 @@ def _free_body(sol, fb, scale: Scale, tiny, tag, note=()) -> _Sketch:
             (X[0] + i * a * ux - j * b * uy, X[1] + i * a * uy + j * b * ux)
             for i, j in ((-1, -1), (1, -1), (1, 1), (-1, 1))
         ]
+        pts = {point: X}
+        # a force on the block away from its pin (a yoke's slot, at the crank pin): the body
+        # reaches it
+        pts.update({sd.point: cm(sd.at) for sd in fb.sides if sd.what == "guide" and sd.point})
+        body = Polygon(outline)
+        if len(pts) > 1:
+            hull = MultiPoint(outline + list(pts.values())).convex_hull
+            body = hull.buffer(BAR / 2, quad_segs=8)
+            outline = list(body.exterior.coords)
         sk.polygon(
             outline, gid=f"{tag}-body", face=BODY_FACE, edge=BODY_EDGE, lw=0.8, z=2, obstacle="edge"
         )
-        body = Polygon(outline)
-        pts = {point: X}
     else:
         cyl = sc.cylinder(fb.body)  # a cylinder (barrel and rod): one two-force member
         if cyl is not None:
@@ -396,7 +403,8 @@ def _polygon(sol, st, scale: Scale, tiny, tag) -> _Sketch:
     bodies = ", ".join(_what(b, numbers, sol.scene) for b in st.bodies)
     lines = [
         f"step {st.index + 1}, {st.title}: {bodies}; link 1 the frame",
-        "F\u2083\u2082: the force on 3 by 2 (\u1d57 square to its link, \u207f along it)",
+        "F\u2083\u2082: the force on 3 by 2 (\u1d57 square to its link, guide or contact, "
+        "\u207f along the link or guide, normal to a contact)",
     ] + rows
     _header(sk, tag, "Force polygon", scale, lines=lines)
     return sk

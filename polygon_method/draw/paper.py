@@ -23,6 +23,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from itertools import combinations
 
+from ..common.tolerances import ON_PAPER
 from ..common.errors import PolygonMethodError
 
 __all__ = [
@@ -142,7 +143,7 @@ def _one_page(items, paper):
     for w, h, pos in _arrangements(items):
         for orientation in ("portrait", "landscape"):
             rw, rh = room(paper, orientation)
-            if w <= rw + 1e-9 and h <= rh + 1e-9:
+            if w <= rw + ON_PAPER and h <= rh + ON_PAPER:
                 pw, ph = paper_size(paper)
                 size = (pw, ph) if orientation == "portrait" else (ph, pw)
                 left = MARGIN + (rw - w) / 2

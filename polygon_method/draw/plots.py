@@ -8,6 +8,7 @@ import textwrap
 
 import numpy as np
 
+from ..common.tolerances import DISTINCT, ON_PAPER, PLOTTED_ZERO
 from ..common.errors import PolygonMethodError, SceneError
 from ..motion.solution import solve
 from ..motion.sweeps import SweepResult
@@ -109,8 +110,8 @@ def _axis(res: SweepResult) -> tuple:
         period = max(math.degrees(sc.cycle), 360.0 * dom.turns)
         for per in dict.fromkeys((period, 360.0)):
             k = math.floor((x.min() - t0) / per + 1.0)
-            at = t0 + per * k if t0 + per * k <= x.max() + 1e-9 else t0 + per * (k - 1)
-            if x.min() - 1e-9 <= at <= x.max() + 1e-9:
+            at = t0 + per * k if t0 + per * k <= x.max() + ON_PAPER else t0 + per * (k - 1)
+            if x.min() - ON_PAPER <= at <= x.max() + ON_PAPER:
                 break
         t0 = at
     gaps = np.nonzero(np.diff(x) > 1.5 * np.median(np.diff(x)))[0] + 1 if len(x) > 2 else []
@@ -212,8 +213,8 @@ def _draw_panel(res: SweepResult, ax, label, series, unit_scale, axis) -> bool:
         ys = np.concatenate([np.asarray(y, dtype=float) for _, y, _ in series])
         lo, hi = float(np.nanmin(ys)), float(np.nanmax(ys))
         size = max(abs(lo), abs(hi))
-        if hi - lo <= 1e-6 * size or size < 1e-8 * unit_scale:
-            pad = 0.1 * size if size >= 1e-8 * unit_scale else 1.0
+        if hi - lo <= DISTINCT * size or size < PLOTTED_ZERO * unit_scale:
+            pad = 0.1 * size if size >= PLOTTED_ZERO * unit_scale else 1.0
             ax.set_ylim(0.5 * (lo + hi) - pad, 0.5 * (lo + hi) + pad)
     _mark(ax, t0, "instant")
     for lp in res.limits:
@@ -231,20 +232,16 @@ def _titles(res: SweepResult, fig, axes, clipped: bool) -> None:
     """The lower panels' axis label (the crank angle, or a driving block's place) and the
     figure's title: the scene's, what the dashes mark, and whether a range was cut."""
     sc = res.scene
-    driver = res.plan.steps[0]  # a block driver: its place is the axis
-    block = None if driver.periodic else driver.finds[0]
+    driver = res.plan.steps[0]  # a block or collar driver: its place is the axis
+    name, sym, _ = driver.parameter(sc)  # as the driver names it: "place of collar C on DC"
     for ax in axes[1]:
-        ax.set_xlabel(
-            "crank angle θ (°)"
-            if block is None
-            else f"place s_{block} of block {block} ({sc.units})"
-        )
+        ax.set_xlabel("crank angle θ (°)" if driver.periodic else f"{name}, {sym} ({sc.units})")
     title = sc.title or sc.file or "mechanism"
     key = (
         f"crank {sc.input.crank}; dashed: the scene's instant "
         f"({math.degrees(sc.input.angle):g} deg)"
-        if block is None
-        else f"block {block}; dashed: the scene's instant (s_{block} = "
+        if driver.periodic
+        else f"input: the {name}; dashed: the scene's instant ({sym} = "
         f"{sc.input.angle / sc.length_unit:g} {sc.units})"
         + ("; dotted red: limit positions" if res.limits else "")
         + ("; dash-dot: change points" if res.change_points else "")

@@ -38,10 +38,6 @@ from .style import CM_PER_INCH, FONT, FORMATS, MAX_FIGURE_CM, PNG_DPI, SMALL_PT
 def _paint(ax, sk: _Sketch, pad: float = 0.3) -> list:
     """Make the matplotlib artists of a sketch on ``ax`` (data units: cm) and set the axes'
     limits to the panel's extent. Returns the artists."""
-    from matplotlib.collections import LineCollection
-    from matplotlib.lines import Line2D
-    from matplotlib.patches import Circle, Polygon
-
     artists = []
     used = set()
 
@@ -54,49 +50,8 @@ def _paint(ax, sk: _Sketch, pad: float = 0.3) -> list:
         return gid
 
     for kind, geo, st in sk.items:
-        gid, z = st["gid"], st["z"]
-        if kind == "line":
-            a = Line2D(
-                [p[0] for p in geo],
-                [p[1] for p in geo],
-                color=st["color"],
-                linewidth=st["lw"],
-                zorder=z,
-                solid_capstyle="butt",
-                dash_capstyle="butt",
-                solid_joinstyle="round",
-            )
-            if st["dashes"]:
-                a.set_dashes(st["dashes"])
-            ax.add_line(a)
-        elif kind == "polygon":
-            a = Polygon(
-                geo,
-                closed=True,
-                facecolor=st["face"],
-                edgecolor=st["edge"],
-                linewidth=st["lw"],
-                zorder=z,
-                alpha=st["alpha"] if st["alpha"] < 1 else None,
-                joinstyle="miter" if gid and "head" in gid else "round",
-            )
-            ax.add_patch(a)
-        elif kind == "segments":
-            a = LineCollection(geo, colors=st["color"], linewidths=st["lw"], zorder=z)
-            ax.add_collection(a, autolim=False)
-        elif kind == "circle":
-            a = Circle(
-                geo[0],
-                geo[1],
-                facecolor=st["face"],
-                edgecolor=st["edge"],
-                linewidth=st["lw"],
-                zorder=z,
-            )
-            ax.add_patch(a)
-        else:  # pragma: no cover
-            raise ValueError(kind)
-        a.set_gid(unique(gid) if gid else None)
+        a = _artist(ax, kind, geo, st)
+        a.set_gid(unique(st["gid"]) if st["gid"] else None)
         a.set_clip_on(False)
         artists.append(a)
     for lab in sk.labels + sk.notes:
@@ -126,6 +81,58 @@ def _paint(ax, sk: _Sketch, pad: float = 0.3) -> list:
     ax.set_aspect("equal")
     ax.set_axis_off()
     return artists
+
+
+def _artist(ax, kind, geo, st):
+    """The matplotlib artist of one item of a sketch (a line, polygon, segments or circle),
+    added to ``ax``."""
+    from matplotlib.collections import LineCollection
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Circle, Polygon
+
+    gid, z = st["gid"], st["z"]
+    if kind == "line":
+        a = Line2D(
+            [p[0] for p in geo],
+            [p[1] for p in geo],
+            color=st["color"],
+            linewidth=st["lw"],
+            zorder=z,
+            solid_capstyle="butt",
+            dash_capstyle="butt",
+            solid_joinstyle="round",
+        )
+        if st["dashes"]:
+            a.set_dashes(st["dashes"])
+        ax.add_line(a)
+    elif kind == "polygon":
+        a = Polygon(
+            geo,
+            closed=True,
+            facecolor=st["face"],
+            edgecolor=st["edge"],
+            linewidth=st["lw"],
+            zorder=z,
+            alpha=st["alpha"] if st["alpha"] < 1 else None,
+            joinstyle="miter" if gid and "head" in gid else "round",
+        )
+        ax.add_patch(a)
+    elif kind == "segments":
+        a = LineCollection(geo, colors=st["color"], linewidths=st["lw"], zorder=z)
+        ax.add_collection(a, autolim=False)
+    elif kind == "circle":
+        a = Circle(
+            geo[0],
+            geo[1],
+            facecolor=st["face"],
+            edgecolor=st["edge"],
+            linewidth=st["lw"],
+            zorder=z,
+        )
+        ax.add_patch(a)
+    else:  # pragma: no cover
+        raise ValueError(kind)
+    return a
 
 
 def _scale_arg(sol, diagram, scale):

@@ -8,6 +8,7 @@ import io
 import math
 from dataclasses import dataclass, field
 
+from ..common.tolerances import DISTINCT, ON_PAPER, ROUNDING
 from ..polygons.scales import Scale, display_unit
 from .style import (
     CLEAR,
@@ -161,7 +162,7 @@ class _Sketch:
         """A vector: a shaft from ``start`` and a filled head whose tip is ``end``."""
         dx, dy = end[0] - start[0], end[1] - start[1]
         n = math.hypot(dx, dy)
-        if n < 1e-9:
+        if n < ON_PAPER:
             return
         ux, uy = dx / n, dy / n
         hl = min(HEAD_LEN, 0.45 * n)
@@ -302,8 +303,8 @@ class _Sketch:
                     th = math.pi / 4 + k * math.pi / 8
                     c, s = math.cos(th), math.sin(th)
                     edge = min(
-                        w / 2 / abs(c) if abs(c) > 1e-12 else math.inf,
-                        h / 2 / abs(s) if abs(s) > 1e-12 else math.inf,
+                        w / 2 / abs(c) if abs(c) > ROUNDING else math.inf,
+                        h / 2 / abs(s) if abs(s) > ROUNDING else math.inf,
                     )
                     cx, cy = ax + (gap + edge) * c, ay + (gap + edge) * s
                     clearance = min((_angle_between(th, a) for a in away), default=math.pi)
@@ -331,16 +332,16 @@ class _Sketch:
                 if lab.point:  # nearer to its own point than to any other?
                     here = Point(lab.anchors[ai])
                     own = b.distance(here)
-                    others = [q.distance(b) for q in spots if q.distance(here) > 1e-9]
+                    others = [q.distance(b) for q in spots if q.distance(here) > ON_PAPER]
                     margin = min(others, default=math.inf) - own
                     # by 0.8 mm, or (a point closer than that to another, where no place
                     # can) by nine tenths of what the other point's distance allows
                     nearest = min(
-                        (q.distance(here) for q in spots if q.distance(here) > 1e-9),
+                        (q.distance(here) for q in spots if q.distance(here) > ON_PAPER),
                         default=math.inf,
                     )
                     if margin < min(POINT_MARGIN, 0.9 * nearest):
-                        if clear_only is None or margin > clear_only[0] + 1e-9:
+                        if clear_only is None or margin > clear_only[0] + ON_PAPER:
                             clear_only = (margin, (cx, cy), leader)
                         continue
                 best = (cx, cy, leader)
@@ -355,17 +356,17 @@ class _Sketch:
         for (x1, y1), (x2, y2) in self.hints:
             dx, dy = x2 - x1, y2 - y1
             L2 = dx * dx + dy * dy
-            if L2 < 1e-18:
+            if L2 < ON_PAPER * ON_PAPER:
                 continue
             t = ((x - x1) * dx + (y - y1) * dy) / L2
-            if t < -1e-9 or t > 1 + 1e-9:
+            if t < -ON_PAPER or t > 1 + ON_PAPER:
                 continue
             px, py = x1 + t * dx, y1 + t * dy
-            if math.hypot(px - x, py - y) > 1e-6:
+            if math.hypot(px - x, py - y) > DISTINCT:
                 continue
-            if t < 1 - 1e-9:
+            if t < 1 - ON_PAPER:
                 out.append(math.atan2(dy, dx))
-            if t > 1e-9:
+            if t > ON_PAPER:
                 out.append(math.atan2(-dy, -dx))
         return out
 

@@ -54,6 +54,11 @@ FORCE_STYLE = {
     "gas": ("#1f5fbf", 1.4, None),
     "contact": ("#1b7837", 1.4, None),
     "friction": ("#b2182b", 1.2, None),
+    "driver": (
+        "#01665e",
+        1.4,
+        None,
+    ),  # a driver's force: a driving block's, a collar's along its rod
 }
 BODY_FACE, BODY_EDGE = "#dde6f2", "#23395d"
 IMAGE_FACE = "#f4d35e"

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 
+from ..common.tolerances import ON_PAPER, ROUNDING
 from .style import BAR, BLOCK_CLEAR, BLOCK_MIN, JOINT_R, MARK_PT, PIN_ZONE
 
 __all__ = [
@@ -99,7 +100,7 @@ def block_size(sc, point, P):
     X = P[point]
     for q in sc.point_names:
         d = math.dist(P[q], X)
-        if q == point or d < 1e-9:
+        if q == point or d < ON_PAPER:
             continue
         # the rectangle's half-diagonal reaches sqrt(1 + 0.55^2) / 2 of its length
         room = (d - JOINT_R - BLOCK_CLEAR) / (0.5 * math.hypot(1.0, 0.55))
@@ -165,48 +166,21 @@ def fixed_guide(sk, sc, sl, P, s, away=None):
     )
 
 
-def ground_symbol(sk, name, g, near, solid, soft=()):
-    """A fixed pivot: a bracket (triangle) from the pin to a hatched base, below the pin
-    where that keeps it off every link and block beyond the pin (``PIN_ZONE`` around it,
-    where the link's rounded end and the bracket meet), off the points ``near`` it and off
-    the ``soft`` shapes (the crank angle's sector and reference line); else turned as
-    little from below as that needs (15 deg steps); else where it overlaps the links and
-    points least, and of those the soft shapes least. Returns what it drew beyond the
-    pin's zone (a shape)."""
-    from shapely.geometry import LineString, MultiLineString, Point, Polygon
+#: the turns of a fixed pivot's bracket tried, in 15 deg steps from below: nearest first
+_BRACKET_TURNS = (0, *[k for j in range(1, 12) for k in (-j, j)], 12)
+
+
+def _bracket_turn(g, near, solid, soft, zone) -> float:
+    """The angle (rad) at which the bracket of the fixed pivot at ``g`` points from the pin
+    (see :func:`ground_symbol`): the first clear of everything, else the least overlap."""
+    from shapely.geometry import LineString, Point, Polygon
     from shapely.ops import unary_union
 
     bodies = unary_union(solid) if solid else None
-    zone = Point(g).buffer(PIN_ZONE, quad_segs=8)
     spots = [Point(p).buffer(0.12, quad_segs=4) for p in near]
     d, half, wide = 0.5, 0.3, 0.42
     best, best_cost = -math.pi / 2, (math.inf, math.inf)
-    for k in (
-        0,
-        -1,
-        1,
-        -2,
-        2,
-        -3,
-        3,
-        -4,
-        4,
-        -5,
-        5,
-        -6,
-        6,
-        -7,
-        7,
-        -8,
-        8,
-        -9,
-        9,
-        -10,
-        10,
-        -11,
-        11,
-        12,
-    ):
+    for k in _BRACKET_TURNS:
         th = -math.pi / 2 + k * math.pi / 12
         dx, dy = math.cos(th), math.sin(th)
         nx, ny = -dy, dx
@@ -238,10 +212,24 @@ def ground_symbol(sk, name, g, near, solid, soft=()):
         )
         cost = (round(hard, 9), round(sum(foot.intersection(q).area for q in soft), 9))
         if cost == (0.0, 0.0):
-            best = th
-            break
+            return th
         if cost < best_cost:
             best, best_cost = th, cost
+    return best
+
+
+def ground_symbol(sk, name, g, near, solid, soft=()):
+    """A fixed pivot: a bracket (triangle) from the pin to a hatched base, below the pin
+    where that keeps it off every link and block beyond the pin (``PIN_ZONE`` around it,
+    where the link's rounded end and the bracket meet), off the points ``near`` it and off
+    the ``soft`` shapes (the crank angle's sector and reference line); else turned as
+    little from below as that needs (15 deg steps); else where it overlaps the links and
+    points least, and of those the soft shapes least. Returns what it drew beyond the
+    pin's zone (a shape)."""
+    from shapely.geometry import LineString, MultiLineString, Point, Polygon
+
+    zone = Point(g).buffer(PIN_ZONE, quad_segs=8)
+    best = _bracket_turn(g, near, solid, soft, zone)
     dx, dy = math.cos(best), math.sin(best)
     nx, ny = -dy, dx
     d, half, wide = 0.5, 0.3, 0.42
@@ -307,11 +295,11 @@ def crank_arc(sc, P, feet=()):
     # the angle the scene states, the way it states it (270 deg ccw is not 90 deg cw), less
     # whole turns
     th = math.copysign(math.fmod(abs(inp.angle), 2 * math.pi), inp.angle)
-    if abs(abs(th) - 2 * math.pi) < 1e-12:
+    if abs(abs(th) - 2 * math.pi) < ROUNDING:
         th = 0.0
     crank = math.dist(O, P[inp.tip])
     r = min(max(min(0.55 * crank, crank - 0.6), 0.45), 1.4)
-    if abs(th) < 1e-9:
+    if abs(th) < ON_PAPER:
         return O, th, r
     others = [P[q] for q in sc.point_names if q not in (inp.pivot, inp.tip)]
     lo, hi = 0.45, max(0.45, min(1.4, crank - JOINT_R - ARC_CLEAR))
@@ -325,7 +313,7 @@ def crank_arc(sc, P, feet=()):
     if not clear(r):
         for k in range(1, 40):
             for cand in (r - 0.05 * k, r + 0.05 * k):
-                if lo - 1e-9 <= cand <= hi + 1e-9 and clear(cand):
+                if lo - ON_PAPER <= cand <= hi + ON_PAPER and clear(cand):
                     return O, th, cand
     return O, th, r
 
@@ -365,7 +353,7 @@ def crank_angle_shapes(arc):
     from shapely.geometry import LineString, Polygon
 
     O, th, r = arc
-    if abs(th) < 1e-9:
+    if abs(th) < ON_PAPER:
         return []
     n = max(8, int(abs(math.degrees(th)) / 3))
     arc = [
@@ -382,7 +370,7 @@ def crank_angle(sk, arc):
     """The crank angle: a reference line along +x from the crank's pivot and an arc from it
     to the crank."""
     O, th, r = arc
-    if abs(th) < 1e-9:
+    if abs(th) < ON_PAPER:
         return
     sk.line(
         [O, (O[0] + r + 0.5, O[1])],
@@ -401,7 +389,7 @@ def crank_angle_label(sk, arc):
     """The crank angle's value written beside its arc (``arc``: centre, angle, radius), where it is
     clear."""
     O, th, r = arc
-    if abs(th) < 1e-9:
+    if abs(th) < ON_PAPER:
         return
     mids = [(O[0] + r * math.cos(th * f), O[1] + r * math.sin(th * f)) for f in (0.5, 0.3, 0.7)]
     sk.label(deg(abs(th)), mids, MARK_PT, gid="label-crank-angle", leader=True)

@@ -22,10 +22,13 @@ or a planet on a circle, carries the tooth load along the line of action at the 
 angle (:mod:`.rolling`); a rack likewise, held by its guide (:mod:`.rack`).
 
 A triad's plate and three links are solved together (:mod:`.triad`: the textbook's 3x3
-solve).
+solve). A collar driven along its turning rod is solved with the rod and the link it is
+pinned to, its driver's force along the rod the effort (:mod:`.collar`); a collar driven
+along the crank as the second input by its own balance (:mod:`.second_collar`).
 
 With ``[friction]`` the walk is repeated with the friction of the forces found before (at
-the guides ``mu |N|``, at the pins the friction circle) until they settle (:mod:`.friction`).
+the guides ``mu |N|``, at the pins the friction circle) until they settle (:mod:`.friction`);
+how they settled (the passes' contraction) goes into the forces' bounds.
 
 What is not written yet is refused in one line naming the step (a triad whose plate is
 three links): no guess.
@@ -41,6 +44,7 @@ from dataclasses import replace
 from ..common.errors import PolygonMethodError
 from . import (
     carried,
+    collar,
     crank,
     cylinder,
     driver,
@@ -49,6 +53,7 @@ from . import (
     peg,
     rack,
     rolling,
+    second_collar,
     slider,
     slotted,
     triad,
@@ -57,7 +62,9 @@ from . import (
     yoke,
 )
 from .bodies import Ledger, Singular, centre, cross, gather
+from .collar import second_name
 from .core import force_plan
+from .values import force_value
 from .records import (
     FRAME,
     Contact,
@@ -71,7 +78,6 @@ from .records import (
     Side,
     block,
     couple_label,
-    force_value,
     forces_dict,
     number_sub,
     side_label,
@@ -121,6 +127,8 @@ ROOMS = {
     "triad": triad,
     "rack": rack,
     "rolling driver": wheel_driver,
+    "collar": collar,
+    "second collar": second_collar,
 }
 
 __all__ = [
@@ -147,12 +155,7 @@ __all__ = [
     "number_sub",
 ]
 
-_NOT_YET = {
-    "collar": "a collar driven along its turning rod (its force along the rod without "
-    "inertia is the power balance's input force)",
-    "second collar": "a collar sliding along the crank as the second input",
-    "triad": "a triad whose plate is made of three links",
-}
+_NOT_YET = {"triad": "a triad whose plate is made of three links"}
 
 
 def _refuse(scene, st, what):
@@ -160,8 +163,8 @@ def _refuse(scene, st, what):
         f"forces: {what} is not solved for forces yet (step {st.index + 1}, {st.title}); "
         "the force analysis covers cranks (one or two), driving blocks, dyads, carried "
         "points, blocks on fixed paths and on moving links, slotted levers, yokes, pegs, "
-        "cylinders, wheels rolling on a line (driven or driving), gears, planets, racks "
-        "and triads",
+        "cylinders, wheels rolling on a line (driven or driving), gears, planets, racks, "
+        "collars on turning rods (driving, or the second input) and triads",
         file=scene.file,
         key=_key(scene),
     )
@@ -239,15 +242,29 @@ class _Long:
 
 
 def _with_friction(motion, fp) -> Forces:
-    """The forces with the friction of the forces found before, until they settle."""
+    """The forces with the friction of the forces found before, until they settle (over a
+    sweep, the forces near a limit position may grow past a float's range: quietly)."""
+    if isinstance(motion.theta, float):
+        return _passes(motion, fp)
+    import numpy as np
+
+    with np.errstate(all="ignore"):
+        return _passes(motion, fp)
+
+
+def _passes(motion, fp) -> Forces:
+    """The walk repeated with the friction of the forces found before, until they settle."""
     scene = motion.scene
-    before = None
+    before = last = None
+    history = []  # the forces' largest changes from pass to pass (the bounds' estimate)
     for _ in range(friction.ROUNDS):
         f = _forces(motion, fp, before or ())
         now = friction.loads(scene, motion, f.pins, f.guides)
+        if last is not None:
+            history.append(friction.largest_changes(last, f))
         if friction.change(before, now) <= friction.SETTLED * friction.scale(f):
-            return f
-        before = now
+            return replace(f, settling=friction.settling(history, friction.scale(f)))
+        before, last = now, f
     raise PolygonMethodError(
         f"forces: with friction the forces do not settle after "
         f"{friction.ROUNDS} passes: the mechanism may lock itself here "
@@ -297,8 +314,8 @@ def _long(motion, fp, fric=()) -> tuple:
     fx, fy, m = led.of(FRAME)  # the drivers' reactions are the frame's too
     if driving is not None:
         name, kind, effort = driving.key, driving.kind, led.given[driving.key]
-    elif plan.steps[0].kind == "block":  # the driver the plan starts with: a block
-        name, kind, effort = block(plan.steps[0].point), "block", torque
+    elif plan.steps[0].kind in ("block", "collar"):  # a driving block, or a collar
+        name, kind, effort = block(plan.steps[0].point), plan.steps[0].kind, torque
     elif plan.steps[0].kind == "rolling driver":  # a wheel: the torque on it
         name, kind, effort = plan.steps[0].wheel, "wheel", torque
     else:
@@ -310,32 +327,44 @@ def _long(motion, fp, fric=()) -> tuple:
         name,
         kind,
         second,
-        None if inp.second is None else scene.link(inp.second.crank).key,
+        second_name(scene, plan),
         records_,
         tuple(pins),
         tuple(guides),
         tuple(steps),
         {k: tuple(v) for k, v in led.applied.items()},
         tuple(contacts),
-        _drawing(scene, plan, motion.P, records_, pins, guides, led, torque, steps, contacts),
+        _drawing(
+            scene,
+            plan,
+            motion.P,
+            records_,
+            pins,
+            guides,
+            led,
+            torque,
+            steps,
+            contacts,
+            None if inp.second is None else (scene.link(inp.second.crank).key, second),
+        ),
         led.of,
     )
 
 
-def _drawing(scene, plan, P, records, pins, guides, led, torque, steps, contacts) -> tuple:
-    """What the drawings read, made when first asked for: the bodies' numbers and, for one
-    instant, each body's free body."""
-    one = isinstance(torque, float)
-    driven = scene.input.crank if plan.steps[0].kind != "rolling driver" else plan.steps[0].wheel
+def _drawing(scene, plan, P, records, pins, guides, led, torque, steps, contacts, second=None):
+    """What the drawings read, made when first asked for: the bodies' numbers and each
+    body's free body (``second``: a second driving crank and its torque, or None)."""
+    first = plan.steps[0]
+    driven = scene.input.crank if first.kind != "rolling driver" else first.wheel
+    push = None
+    if first.kind == "block" and torque is not None:  # a driving block: its driver's force
+        (ux, uy), x = first.path.u, first.point
+        push = Side("driver", block(x), FRAME, x, (torque * ux, torque * uy), P[x])
     return (
         lambda: _numbers(scene, plan, steps),
-        (
-            lambda numbers: _free_bodies(
-                scene, P, numbers, records, pins, guides, led, torque, contacts, driven
-            )
-        )
-        if one
-        else (lambda numbers: ()),
+        lambda numbers: _free_bodies(
+            scene, P, numbers, records, pins, guides, led, torque, contacts, driven, push, second
+        ),
     )
 
 
@@ -389,13 +418,22 @@ def _numbers(scene, plan, steps) -> dict:
     return out
 
 
-def _free_bodies(scene, P, numbers, records, pins, guides, led, torque, contacts, driven) -> tuple:
+def _nonzero(x) -> bool:
+    """Whether a value is to be drawn: a float that is not 0, or any array (a sweep)."""
+    return x != 0 if isinstance(x, float) else True
+
+
+def _free_bodies(
+    scene, P, numbers, records, pins, guides, led, torque, contacts, driven, push=None, second=None
+) -> tuple:
     """Each moving body alone (:class:`FreeBody`): its inertia force (the book's single
     force, through the offset point), weight and loads as the ledger holds them, every pin
     force on it (the stored record, or its opposite where the body is the record's ``by``),
-    the guide's force on a block, a contact force (the ground's on a wheel, the teeth's on a
-    gear or a rack, and back on the gear that pushes); its couples (``driven``: the body
-    the driver's torque turns)."""
+    the guide's force on a block (and back on the guide's body, where that is solved with
+    the block: a slotted lever, a yoke), a contact force (the ground's on a wheel, the
+    teeth's on a gear or a rack, and back on the gear that pushes), a driving block's
+    driver's force (``push``); its couples (``driven``: the body the driver's torque turns).
+    Over a sweep the same records hold arrays (the inertia force at G with its couple)."""
     out = []
     for body, num in numbers.items():
         if body == FRAME:
@@ -414,10 +452,18 @@ def _free_bodies(scene, P, numbers, records, pins, guides, led, torque, contacts
                     Side("pin", body, p.on, p.point, (-p.force[0], -p.force[1]), P[p.point])
                 )
         sides += [
-            Side("guide", body, FRAME, g.point, g.force, P[g.point])
+            Side("guide", body, g.by, g.point, g.force, P[g.point])
             for g in guides
             if block(g.point) == body
         ]
+        had = {(s.point, s.by) for s in sides if s.what == "guide"}
+        sides += [  # a guide's body solved with the block feels its force back
+            Side("guide", body, block(g.point), g.point, (-g.force[0], -g.force[1]), P[g.point])
+            for g in guides
+            if g.by == body and (g.point, block(g.point)) not in had
+        ]
+        if push is not None and push.on == body:
+            sides.append(push)
         for k, c in enumerate(reversed(contacts)):  # (in the plan's order, as drawn)
             name = "I" if len(contacts) == 1 else f"I{k + 1}"
             if c.wheel == body:
@@ -429,7 +475,7 @@ def _free_bodies(scene, P, numbers, records, pins, guides, led, torque, contacts
         couples = [
             Couple("inertia", body, i.couple)
             for i in records
-            if i.body == body and i.offset is None and i.couple != 0
+            if i.body == body and i.offset is None and _nonzero(i.couple)
         ]
         couples += [
             Couple("friction" if e[0].startswith("friction") else "load", body, e[1])
@@ -439,9 +485,11 @@ def _free_bodies(scene, P, numbers, records, pins, guides, led, torque, contacts
         couples += [
             Couple("guide", body, g.couple)
             for g in guides
-            if block(g.point) == body and isinstance(g.couple, float) and g.couple
+            if block(g.point) == body and g.couple is not None and _nonzero(g.couple)
         ]
         if body == driven:
             couples.append(Couple("torque", body, torque))
+        if second is not None and body == second[0]:
+            couples.append(Couple("torque", body, second[1]))
         out.append(FreeBody(body, num, tuple(sides), tuple(couples)))
     return tuple(out)

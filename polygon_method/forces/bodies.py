@@ -232,3 +232,29 @@ def outer_pin(side_whole, p, q):
         Side(w.what, w.on, w.by, w.point, n, w.at, "n"),
         Side(w.what, w.on, w.by, w.point, t, w.at, "t"),
     )
+
+
+def split(side, u):
+    """The two sides of a force (a :class:`Side`) along the unit ``u`` (``part`` ``n``) and
+    square to it (``t``), as a polygon draws a force whose part along a guide or a slot is
+    found first and the rest where the direction lines meet.
+
+    >>> [s.vector for s in split(Side("pin", "a", "b", "X", (3.0, 4.0), (0.0, 0.0)), (0.0, 1.0))]
+    [(0.0, 4.0), (3.0, 0.0)]
+    """
+    ux, uy = u
+    fx, fy = side.vector
+    k = fx * ux + fy * uy
+    n = (k * ux, k * uy)
+    w = side
+    return (
+        Side(w.what, w.on, w.by, w.point, n, w.at, "n"),
+        Side(w.what, w.on, w.by, w.point, (fx - n[0], fy - n[1]), w.at, "t"),
+    )
+
+
+def direction(v, fallback):
+    """The unit along ``v``, or ``fallback`` where ``v`` is nil (a force's line known
+    before its size: a tooth load's line of action)."""
+    n = (v[0] * v[0] + v[1] * v[1]) ** 0.5
+    return (v[0] / n, v[1] / n) if n > 0 else fallback

@@ -25,6 +25,11 @@ inf), and a bound of 1 or more is **no useful bound** (null in the JSON, with th
 A driving cylinder's force is found from the whole walk (``F = -T0 / T1``): the walk's
 bound is carried twice, the second time with the cylinder's error on the bodies at its
 ends. The same formulas take floats (one instant) or arrays (a sweep).
+
+With friction the walk is repeated until the friction settles (:mod:`.friction`): each
+bound then takes in the passes not made (the last change between two passes times ``q /
+(1 - q)``, ``q`` the passes' contraction as they measured it) and the rounding carried
+round through the friction loads (divided by ``1 - q``): :func:`_settled`.
 """
 
 from __future__ import annotations
@@ -62,6 +67,8 @@ class ForceBounds:
     steps: dict
     force: object
     length: float
+    #: with friction, the contraction q of the walk's passes the bounds took in, else None
+    contraction: object = None
 
     @property
     def worst(self):
@@ -193,7 +200,48 @@ def force_bounds(sol, f=None) -> ForceBounds:
         ),
         None,
     )
-    return ForceBounds(pins, guides, steps[first], second, steps, F, L)
+    b = ForceBounds(pins, guides, steps[first], second, steps, F, L)
+    return _settled(b, f) if f.settling else b
+
+
+def _settled(b, f) -> ForceBounds:
+    """The bounds with friction (:func:`.friction.settling`): each force's bound ``e`` of
+    the last pass becomes ``(e + t d) / (1 - q)``, ``d`` the last change between two passes
+    (relative, as ``e``), ``t = q / (1 - q)`` the geometric tail of the passes left, and
+    ``1 / (1 - q)`` the rounding carried round through the friction loads; no useful bound
+    where the passes do not contract (``q >= 1``)."""
+    q, d_force, d_effort, d_second = f.settling
+    if not q < 1.0:
+        return ForceBounds(
+            {k: CAP for k in b.pins},
+            {k: CAP for k in b.guides},
+            CAP,
+            None if b.second is None else CAP,
+            {k: CAP for k in b.steps},
+            b.force,
+            b.length,
+            q,
+        )
+    t, F, L = q / (1.0 - q), b.force, b.length
+
+    def on(e, d):
+        return _cap((e + t * d) / (1.0 - q))
+
+    torque = f.driver in ("crank", "wheel")
+    second = None
+    if b.second is not None:
+        two = 1.0 if f.second_crank.startswith("block ") else L
+        second = on(b.second, d_second / (F * two))
+    return ForceBounds(
+        {k: on(e, d_force / F) for k, e in b.pins.items()},
+        {k: on(e, d_force / F) for k, e in b.guides.items()},
+        on(b.effort, d_effort / (F * (L if torque else 1.0))),
+        second,
+        {k: on(e, d_force / F) for k, e in b.steps.items()},
+        F,
+        L,
+        q,
+    )
 
 
 def bounds_dict(b: ForceBounds) -> dict:
@@ -218,6 +266,8 @@ def bounds_dict(b: ForceBounds) -> dict:
     }
     if b.second is not None:
         d["second_input"] = clean(b.second)
+    if b.contraction is not None:  # the friction's passes, taken in (see the module)
+        d["friction_passes"] = {"contraction": float(b.contraction)}
     if count[0]:
         d["no_useful_bound"] = {"count": count[0], "reason": NO_BOUND}
     return d

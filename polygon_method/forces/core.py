@@ -27,6 +27,7 @@ from __future__ import annotations
 import weakref
 
 from .bodies import Singular, centre, inertia_record
+from .collar import second_name
 from .engine import indicator_force
 from .records import FRAME, GuideForce, PinForce, block, quick_forces
 
@@ -107,11 +108,11 @@ class ForcePlan:
         self.zeros = [0.0] * len(ix.index)
         self.index = ix.index
         inp = scene.input
-        if first.kind == "block":  # the driver the plan starts with: a block
-            self.driver = (block(first.point), "block")
+        if first.kind in ("block", "collar"):  # the driver the plan starts with: a block
+            self.driver = (block(first.point), first.kind)
         else:
             self.driver = (inp.crank, "crank")
-        self.second = None if inp.second is None else scene.link(inp.second.crank).key
+        self.second = second_name(scene, plan)
 
     def _masses(self, scene, ix):
         """Each mass, in the scene's order as :func:`~.bodies.gather` takes them, as what

@@ -87,8 +87,19 @@ def step(st, P, led, own):
     ok, orr = own[K], own[R]
     led.add(orr, fx, fy, rx, ry, side=Side("pin", orr, st.key, R, (fx, fy), (rx, ry)))
     led.add(ok, -fx, -fy, kx, ky, side=Side("pin", ok, st.key, K, (-fx, -fy), (kx, ky)))
-    eq = ()
+    eq, drawing = (), None
     if isinstance(fx, float):
+
+        def drawing():  # a two-force member: its two pins' forces, equal and opposite
+            return (
+                (
+                    Side("pin", st.key, orr, R, (-fx, -fy), (rx, ry)),
+                    Side("pin", st.key, ok, K, (fx, fy), (kx, ky)),
+                ),
+                (),
+                (),
+            )
+
         eq = (
             (
                 f"the cylinder drives: F = -T0 / T1 = {fmt(f)} N, T0 the crank's torque "
@@ -110,6 +121,7 @@ def step(st, P, led, own):
         if st.key in led.given
         else "",
         eq,
+        drawing,
     )
     # the pins' forces on the cylinder by the bodies at its ends
     return (PinForce(R, st.key, orr, (-fx, -fy)), PinForce(K, st.key, ok, (fx, fy))), (), rec, None

@@ -15,7 +15,7 @@ The driver's reaction ``-F u`` and the guide's ``-N n`` act on the frame at the 
 from __future__ import annotations
 
 from ..common.numbers import fmt
-from .records import FRAME, ForceStep, GuideForce, block
+from .records import FRAME, ForceStep, GuideForce, Side, block
 
 
 def solve(known, u):
@@ -58,9 +58,19 @@ def step(st, P, led, own):
     f, n = solve(kb, (ux, uy))
     g = GuideForce(x, n, (-uy, ux), FRAME)
     xx, xy = P[x]
+    known = led.known(bl)
     led.add(FRAME, -(f * ux + n * -uy), -(f * uy + n * ux), xx, xy)
-    eq = ()
+    eq, drawing = (), None
     if isinstance(f, float):
+
+        def drawing():
+            # the pole, the block's known forces, the driver's force along the guide, the
+            # guide's across it: their lines meet where it closes
+            k = len(known)
+            push = Side("driver", bl, FRAME, x, (f * ux, f * uy), (xx, xy))
+            held = Side("guide", bl, FRAME, x, g.force, (xx, xy))
+            return known + (push, held), ((k, (ux, uy)), (k + 1, g.n)), ()
+
         eq = (
             f"the block: F u + N n + R = 0, R = ({fmt(kb[0])}, {fmt(kb[1])}) N the known "
             f"forces on {bl}",
@@ -77,5 +87,6 @@ def step(st, P, led, own):
         1.0,
         "",
         eq,
+        drawing,
     )
     return (), (g,), rec, f

@@ -13,6 +13,13 @@ them by about mu r over the mechanism's arms, a small fraction; :data:`ROUNDS` p
 most, else the mechanism is said to lock itself). Where nothing slides (relative velocity
 zero) the friction is static and not determined by the statics: it is taken as zero there.
 
+How far the forces may be off for the passes (:func:`settling`): the walk is linear in the
+friction loads and each pass shrinks their change by the contraction ``q``, so the forces
+of the last pass are off from the settled ones by at most ``q / (1 - q)`` times their last
+change (a geometric tail); the rounding of each pass is carried on through the friction
+loads, amplified by ``1 / (1 - q)`` at most. ``q`` is estimated from the passes (the
+largest ratio of two successive changes measured above the rounding).
+
 Every friction force works against the motion: its power ``-mu |N| |v_rel|`` at a guide,
 ``-mu r |F| |omega_rel|`` at a pin (:func:`power`), which the power balance then holds.
 
@@ -22,6 +29,7 @@ Every friction force works against the motion: its power ``-mu |N| |v_rel|`` at 
 
 from __future__ import annotations
 
+from ..steps.rounding import vhypot
 from .records import FRAME, Side, block
 
 #: the passes of the walk at most before friction is said not to settle
@@ -93,7 +101,7 @@ def loads(scene, motion, pins, guides) -> tuple:
             if r is None:
                 continue
             rel = _omega(scene, motion, p.on) - _omega(scene, motion, p.by)
-            c = -fr.pins * r * (p.force[0] ** 2 + p.force[1] ** 2) ** 0.5 * sgn(rel)
+            c = -fr.pins * r * vhypot(p.force[0], p.force[1]) * sgn(rel)
             what = f"friction at pin {p.point}"
             for body, cc in ((p.on, c), (p.by, -c)):
                 out.append((_turner(scene, body), what, cc))
@@ -122,7 +130,7 @@ def scale(f) -> float:
     """The largest pin or guide force of the analysis ``f`` (N; at least 1e-300)."""
     vals = [
         float(getattr(v, "max", lambda v=v: v)())
-        for v in [(p.force[0] ** 2 + p.force[1] ** 2) ** 0.5 for p in f.pins]
+        for v in [vhypot(p.force[0], p.force[1]) for p in f.pins]
         + [abs(g.normal) for g in f.guides]
     ]
     return max(vals + [1e-300])
@@ -140,6 +148,47 @@ def change(a, b) -> float:
             d = abs(x[2][0] - y[2][0]) + abs(x[2][1] - y[2][1])
         worst = max(worst, float(getattr(d, "max", lambda: d)()))
     return worst
+
+
+#: a change between two passes smaller than this, relative to the largest force, is rounding
+#: noise: no ratio of the contraction is read from it
+NOISE = 1e-11
+#: the contraction taken where the passes settle too fast to measure it (two passes or
+#: their changes already in the noise): the friction then moves nothing measurable
+UNMEASURED = 0.5
+
+
+def largest_changes(a, b) -> tuple:
+    """(the largest change of a pin force's component or a guide's normal force, of the
+    driver's effort, of a second input's effort) from the analysis ``a`` to ``b`` (N or
+    N m; the largest over a sweep's angles)."""
+
+    def most(x):
+        return float(getattr(x, "max", lambda: x)())
+
+    forces = [0.0]
+    for p, r in zip(a.pins, b.pins):
+        forces += [most(abs(p.force[0] - r.force[0])), most(abs(p.force[1] - r.force[1]))]
+    forces += [most(abs(g.normal - h.normal)) for g, h in zip(a.guides, b.guides)]
+    second = 0.0 if a.second_torque is None else most(abs(a.second_torque - b.second_torque))
+    return max(forces), most(abs(a.input_torque - b.input_torque)), second
+
+
+def settling(history, scale) -> tuple:
+    """(q, the forces' last change, the effort's, the second effort's) from the passes'
+    :func:`largest_changes` (``history``, in order) and the force scale (N): q the largest
+    ratio of two successive changes of the forces above :data:`NOISE` (:data:`UNMEASURED`
+    where none is measured). The bounds (:mod:`.bounds`) add ``q / (1 - q)`` times the last
+    changes and divide by ``1 - q``.
+
+    >>> settling([(8.0, 1.0, 0.0), (2.0, 0.25, 0.0), (0.5, 0.0625, 0.0)], 100.0)
+    (0.25, 0.5, 0.0625, 0.0)
+    """
+    noise = NOISE * scale
+    ratios = [b[0] / a[0] for a, b in zip(history, history[1:]) if a[0] > noise and b[0] > noise]
+    q = max(ratios) if ratios else UNMEASURED
+    last = history[-1] if history else (0.0, 0.0, 0.0)
+    return (q,) + tuple(last)
 
 
 def power(motion, scene, items) -> float:

@@ -60,6 +60,7 @@ def step(st, P, led, own):
     if n1 is None:
         raise Singular(f"the two slots at {X} run parallel")
     x, y = P[X]
+    known = led.known(pb)
     out = []
     for s, n, (ux, uy) in ((st.first, n1, (u1x, u1y)), (st.second, n2, (u2x, u2y))):
         g = GuideForce(X, n, (-uy, ux), _body(s, own), 0.0, s.key)
@@ -72,8 +73,16 @@ def step(st, P, led, own):
             side=Side("guide", g.by, pb, X, (-g.force[0], -g.force[1]), (x, y)),
         )
         out.append(g)
-    eq = ()
+    eq, drawing = (), None
     if isinstance(n1, float):
+
+        def drawing():
+            # the pole, the peg's known forces, each slot's normal force: their lines meet
+            # where it closes
+            k = len(known)
+            sides = tuple(Side("guide", pb, g.by, X, g.force, (x, y)) for g in out)
+            return known + sides, ((k, out[0].n), (k + 1, out[1].n)), ()
+
         eq = (
             f"the peg: N_1 n_1 + N_2 n_2 + R = 0, R = ({fmt(k[0])}, {fmt(k[1])}) N the "
             f"known forces on it: N_1 = {fmt(n1)} N ({out[0].by}), N_2 = {fmt(n2)} N "
@@ -89,6 +98,7 @@ def step(st, P, led, own):
         cond,
         "the sine of the angle between the slots",
         eq,
+        drawing,
     )
     return (), tuple(out), rec, None
 

@@ -25,7 +25,7 @@ it 100 N along +x and 100 tan 20 deg = 36.4 N up, the guide pulls it down as har
 from __future__ import annotations
 
 from ..common.numbers import fmt
-from .bodies import cross
+from .bodies import cross, direction
 from .records import FRAME, Contact, ForceStep, GuideForce, Side, block
 from .rolling import pressure_angle
 
@@ -76,11 +76,25 @@ def step(st, P, led, own):
     c = -(mr + cross(ix - xx, iy - xy, fx, fy))
     contact = Contact(bl, (ix, iy), n, -t * s, (mx, my), st.base, phi, stated)
     guide = GuideForce(X, g, (-uy, ux), FRAME, c)
+    known = led.known(bl)
     led.add(st.base, -fx, -fy, ix, iy, side=Side("contact", st.base, bl, "I", (-fx, -fy), (ix, iy)))
     led.add(FRAME, g * uy, -g * ux, xx, xy)
     led.couple(FRAME, -c)
-    eq = ()
+    eq, drawing = (), None
     if isinstance(t, float):
+
+        def drawing():
+            # the pole, the rack's known forces, the tooth load along the line of action
+            # and the guide's normal force: their lines meet where it closes
+            import math
+
+            tooth = Side("contact", bl, st.base, "I", (fx, fy), (ix, iy))
+            lean = math.tan(phi)
+            line = direction((fx, fy), (ux + lean * mx, uy + lean * my))
+            held = Side("guide", bl, FRAME, X, guide.force, (xx, xy))
+            k = len(known)
+            return known + (tooth, held), ((k, line), (k + 1, guide.n)), ()
+
         eq = (
             f"the tooth load on rack {X} by the pinion {st.base} acts at the pitch point I "
             f"along the line of action, at the pressure angle {contact.angle_words()} to "
@@ -105,5 +119,6 @@ def step(st, P, led, own):
         1.0,
         "",
         eq,
+        drawing,
     )
     return (), (contact, guide), rec, None

@@ -11,7 +11,6 @@ import math
 from dataclasses import dataclass, field
 from functools import cached_property
 
-from ..common.errors import SceneError
 
 FRAME = "frame"
 
@@ -191,11 +190,11 @@ class Side:
     ``on`` (by body ``by`` for a pin or a guide), acting along a line through ``at`` (m):
     the pin or the loaded point, G for a weight; for an inertia force, G in a polygon's
     side and, in a :class:`FreeBody`, the offset point of the book's single force (G where
-    there is none). ``what``: ``inertia``, ``weight``, ``load``,
-    ``gas``, ``pin``, ``guide`` or ``contact`` (a rolling contact's force: the ground's,
-    the teeth's); ``point``: the point it acts at (a pin, a loaded
+    there is none). ``what``: ``inertia``, ``weight``, ``load``, ``gas``, ``pin``, ``guide``,
+    ``contact`` (the ground's, the teeth's) or ``driver`` (a driving block's); ``point``: the point it acts at (a pin, a loaded
     point; "" for an inertia force or a weight); ``part``: "" the whole force, ``t`` its
-    component square to the link from ``point``, ``n`` its component along the link."""
+    component square to the link (a block's guide) from ``point``, ``n`` its component
+    along it (at a contact: ``n`` normal to it, ``t`` along it)."""
 
     what: str
     on: str
@@ -262,11 +261,11 @@ def side_label(side: Side, numbers: dict, unicode: bool = True) -> str:
         return ("F\u1d62" if unicode else "Fi") + _sub(numbers, side.on, unicode=unicode)
     if side.what == "weight":
         return "W" + _sub(numbers, side.on, unicode=unicode)
-    if side.what == "gas":
-        return "gas force"
+    if side.what in ("driver", "gas"):  # a driving block's driver, along its guide
+        return "gas force" if side.what == "gas" else "Fd" + _sub(numbers, side.on, unicode=unicode)
     if side.what == "friction":
         return ("\u03bcN" if unicode else "muN") + f" at {side.point}"
-    return f"P at {side.point}"
+    return f"{'Fd' if side.what == 'driver' else 'P'} at {side.point}"  # (Fd: a collar's driver)
 
 
 def couple_label(c: Couple, numbers: dict, unicode: bool = True) -> str:
@@ -343,11 +342,11 @@ class Forces:
     pair of bodies at a pin, in the order solved), ``guides`` (:class:`GuideForce`),
     ``input_torque`` (N m, on the crank by its driver, ccw positive, inertia included; for a
     driving block, ``driver == "block"``, the force on it by its driver, N, signed along
-    its guide's direction; for a driving wheel, ``driver == "wheel"``, the torque on the
-    wheel by its driver),
-    ``shaking_force`` (the resultant force the mechanism exerts on the frame, through its
-    pins and guides, and a gas force's push on the cylinder's cover: the gas acts between
-    the piston and the frame) and ``shaking_moment`` (its moment about the frame's origin, with the
+    its guide's direction; a driving collar's, ``"collar"``, along its rod, + outward; for
+    a driving wheel, ``"wheel"``, the torque on the wheel by its driver), ``shaking_force``
+    (the resultant force the mechanism exerts on the frame, through its pins and guides,
+    and a gas force's push on the cylinder's cover: the gas acts between the piston and
+    the frame) and ``shaking_moment`` (its moment about the frame's origin, with the
     driver's reaction ``-input_torque`` on the frame), ``steps`` (:class:`ForceStep`).
     ``applied``: body -> the loads and weights on it, (what, (Fx, Fy), point) and (what,
     couple) entries.
@@ -366,7 +365,7 @@ class Forces:
     #: "cylinder" (the force in the cylinder ``crank`` names, + pushing its ends apart) or
     #: "wheel" (a torque on the driving wheel ``crank`` names)
     driver: str = "crank"
-    #: a second driving crank's torque (N m, ccw positive) and its link, or None
+    #: a second input's effort and body: a crank's torque (N m, ccw +), a collar's force (N)
     second_torque: float | None = None
     second_crank: str | None = None
     #: what makes the records when first read (see above)
@@ -379,6 +378,9 @@ class Forces:
     #: (:func:`.friction.loads`), and its power (W, never positive)
     friction: tuple = ()
     friction_power: float = 0.0
+    #: with friction, how the passes settled (:func:`.friction.settling`): (the
+    #: contraction q, the last change of the forces, N, of the effort, of a second effort)
+    settling: tuple = ()
 
     def resultant(self, body: str) -> tuple:
         """``(Fx, Fy, M about the origin)`` of every force on ``body`` but those of its own
@@ -442,7 +444,7 @@ class Forces:
     @cached_property
     def free(self) -> tuple:
         """:class:`FreeBody` of each moving body, in the order of :attr:`numbers` (one
-        instant; empty over a sweep)."""
+        instant, or arrays over a sweep)."""
         return self.drawing[1](self.numbers) if self.drawing else ()
 
     def pin(self, point: str, on: str, by: str | None = None):
@@ -485,56 +487,6 @@ def quick_forces(
 _new = object.__new__
 
 
-def force_value(f: Forces, kind: str, name: str) -> float:
-    """The size of what an answer key names: ``F`` the force at pin ``name`` (a pin joining
-    two bodies), ``N`` the guide's normal force on the block at ``name``; ``Fc`` the size of
-    the contact force on the rolling body ``name`` (a wheel's link, a rack's ``block R``): a
-    gear's tooth load; of body ``name``
-    (a link's key, or ``block X``): ``Fi`` its inertia force's size ``m |a_G|``, ``Ci`` its
-    inertia couple ``-I alpha`` (signed, ccw positive), ``h`` the offset ``|I alpha| / (m
-    |a_G|)`` of the book's single force from G (0 where the body has no couple)."""
-    if kind == "Fc":
-        c = next((c for c in f.contacts if c.wheel == name), None)
-        if c is None:
-            raise SceneError(f"Fc: {name} has no rolling contact")
-        return c.load
-    if kind in ("Fi", "Ci", "h"):
-        i = f.inertia_of(name)
-        if i is None:
-            raise SceneError(
-                f"{kind}_{name.removeprefix('block ')}: {name} has no mass in "
-                "[masses]: no inertia force"
-            )
-        if kind == "Fi":
-            return (i.force[0] ** 2 + i.force[1] ** 2) ** 0.5
-        if kind == "Ci":
-            return i.couple
-        if i.offset is None and i.couple != 0:
-            raise SceneError(
-                f"h_{name.removeprefix('block ')}: a_G = 0: the inertia is a "
-                "couple alone, with no single force to offset"
-            )
-        return abs(i.offset or 0.0)
-    if kind == "N":
-        g = next((g for g in f.guides if g.key == name), None)
-        if g is None:
-            raise SceneError(f"N_{name}: the block at {name} slides on no guide")
-        return abs(g.normal)
-    found = [p for p in f.pins if p.point == name]
-    if len(found) != 1:
-        raise SceneError(
-            f"F_{name}: "
-            + (
-                f"no pin joins two bodies at {name}"
-                if not found
-                else f"the pin at {name} joins more than two bodies ("
-                + ", ".join(sorted({b for p in found for b in (p.on, p.by)}))
-                + "): its forces are in solve's table"
-            )
-        )
-    return found[0].magnitude
-
-
 def _vec(v):
     return [v[0] + 0.0, v[1] + 0.0]  # + 0.0: no -0.0 in the JSON
 
@@ -560,6 +512,12 @@ def _contact_dict(c: Contact) -> dict:
             tooth_load=c.load + 0.0,
         )
     return d
+
+
+def _second(f: Forces) -> dict:  # a second crank's torque, a second collar's force
+    if f.second_crank.startswith("block "):
+        return {"block": f.second_crank, "collar": True, "input_force": f.second_torque + 0.0}
+    return {"crank": f.second_crank, "input_torque": f.second_torque + 0.0}
 
 
 def forces_dict(f: Forces) -> dict:
@@ -605,11 +563,7 @@ def forces_dict(f: Forces) -> dict:
         ("input_torque" if f.driver in ("crank", "wheel") else "input_force"): f.input_torque + 0.0,
         **({} if f.centre_force is None else {"centre_force": _vec(f.centre_force)}),
         f.driver: f.crank,
-        **(
-            {}
-            if f.second_crank is None
-            else {"second": {"crank": f.second_crank, "input_torque": f.second_torque + 0.0}}
-        ),
+        **({} if f.second_crank is None else {"second": _second(f)}),
         **({"contacts": {c.wheel: _contact_dict(c) for c in f.contacts}} if f.contacts else {}),
         **(
             {

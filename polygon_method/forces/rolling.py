@@ -37,7 +37,7 @@ import math
 
 from ..common.numbers import fmt
 from ..steps.rounding import vhypot
-from .bodies import cross
+from .bodies import cross, direction
 from .records import FRAME, Contact, ForceStep, PinForce, Side
 
 #: the teeth's pressure angle where the scene gives none (rad): 20 deg, the standard
@@ -120,12 +120,22 @@ def step(st, P, led, own):
     base = FRAME if st.on == "circle" else st.base
     oc = own[C]
     contact = Contact(W, (ix, iy), n, t, m, base, phi, stated)
+    known = led.known(W)
     led.add(
         base, -F[0], -F[1], ix, iy, side=Side("contact", base, W, "I", (-F[0], -F[1]), (ix, iy))
     )
     led.add(oc, -FC[0], -FC[1], cx, cy, side=Side("pin", oc, W, C, (-FC[0], -FC[1]), (cx, cy)))
-    eq = ()
+    eq, drawing = (), None
     if isinstance(t, float):
+
+        def drawing():
+            # the pole, the tooth load (its size from the moments about C, along the line
+            # of action), the wheel's known forces, the centre's force: closed
+            tooth = Side("contact", W, base, "I", F, (ix, iy))
+            line = direction(F, (-m[1] + math.tan(phi) * m[0], m[0] + math.tan(phi) * m[1]))
+            pin = Side("pin", W, oc, C, FC, (cx, cy))
+            return (tooth,) + known + (pin,), ((0, line),), ()
+
         mc = kw[2] - cross(cx, cy, kw[0], kw[1])
         by = "the fixed circle" if base == FRAME else base
         eq = (
@@ -159,5 +169,6 @@ def step(st, P, led, own):
         1.0,
         "",
         eq,
+        drawing,
     )
     return (PinForce(C, W, oc, FC),), (contact,), rec, None

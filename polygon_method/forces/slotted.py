@@ -29,7 +29,7 @@ N = 2 along n = (-1, 0); the pivot holds the lever with 2 N to the left:
 from __future__ import annotations
 
 from ..steps.rounding import vhypot
-from .bodies import Singular, cross, guided, least
+from .bodies import Singular, cross, guided, least, outer_pin, split, unit
 from ..common.numbers import fmt
 from .records import ForceStep, GuideForce, PinForce, block, Side
 
@@ -103,10 +103,30 @@ def step(st, P, led, own):
         raise Singular(f"block {a} is at {k}, the pivot of {lv}")
     ok, oa = own[k], own[a]
     g = GuideForce(a, n, (-uy, ux), lv)
+    known_l, known_b = led.known(lv), led.known(bl)
     led.add(ok, -fk[0], -fk[1], kx, ky, side=Side("pin", ok, lv, k, (-fk[0], -fk[1]), (kx, ky)))
     led.add(oa, -fa[0], -fa[1], ax, ay, side=Side("pin", oa, bl, a, (-fa[0], -fa[1]), (ax, ay)))
-    eq = ()
-    if isinstance(cond, float):  # one instant: the working in words
+    eq, drawing = (), None
+    if isinstance(cond, float):  # one instant: the working in words, the force polygon
+
+        def drawing():
+            # the pole, F_K along KA (found last), F_K square to KA (the lever's moments
+            # about A), the lever's known forces, the block's, the force on the block at A
+            # along the lever (the block's balance along it) and across it (found last)
+            K, A = (kx, ky), (ax, ay)
+            whole_k = Side("pin", lv, ok, k, fk, K)
+            kn, kt = outer_pin(whole_k, K, A)
+            whole_a = Side("pin", bl, oa, a, fa, A)
+            along, across = split(whole_a, (ux, uy))
+            polygon = (kn, kt) + known_l + known_b + (along, across)
+            last = len(polygon)
+            back = Side("guide", lv, bl, a, (-g.force[0], -g.force[1]), A)
+            return (
+                polygon,
+                ((0, unit(K, A)), (last - 1, g.n)),
+                ((whole_k, 0, 2), (whole_a, last - 2, last), (back, 2 + len(known_l), last)),
+            )
+
         mk = kl[2] - cross(kx, ky, kl[0], kl[1])
         eq = (
             f"moments of {lv} about {k}: ({a} - {k}) x (-N n) + M_{k} = 0, M_{k} = "
@@ -131,6 +151,7 @@ def step(st, P, led, own):
         cond,
         f"|{k}{a}| / {lv}: the block's distance from the lever's pivot",
         eq,
+        drawing,
     )
     return (PinForce(k, lv, ok, fk), PinForce(a, bl, oa, fa)), (g,), rec, None
 

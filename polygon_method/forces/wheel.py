@@ -33,7 +33,7 @@ wheel's push of 2 N to the right and 0 across:
 from __future__ import annotations
 
 from ..steps.rounding import vhypot
-from .bodies import Singular, cross, guided, least
+from .bodies import Singular, cross, guided, least, outer_pin, unit
 from ..common.numbers import fmt
 from .records import FRAME, Contact, ForceStep, PinForce, Side
 
@@ -78,10 +78,33 @@ def step(st, P, led, own):
     ob = own[st.b]
     ix, iy = cx - st.radius * mx, cy - st.radius * my
     contact = Contact(wh, (ix, iy), n, t, (mx, my))
+    known_l, known_w = led.known(lk), led.known(wh)
     led.add(ob, -fb[0], -fb[1], bx, by, side=Side("pin", ob, lk, st.b, (-fb[0], -fb[1]), (bx, by)))
     led.add(FRAME, -contact.force[0], -contact.force[1], ix, iy)
-    eq = ()
+    eq, drawing = (), None
     if isinstance(n, float):
+
+        def drawing():
+            # the pole, F_B along BC (found last), F_B square to BC (the link's moments
+            # about C), the link's known forces, the wheel's, the ground's grip (the
+            # wheel's moments about C), its push across the line (found last): closed
+            B, Cp, I = (bx, by), (cx, cy), (ix, iy)
+            whole_b = Side("pin", lk, ob, st.b, fb, B)
+            bn, bt = outer_pin(whole_b, B, Cp)
+            grip = Side("contact", wh, FRAME, "I", (-t * my, t * mx), I, "t")
+            push = Side("contact", wh, FRAME, "I", (n * mx, n * my), I, "n")
+            polygon = (bn, bt) + known_l + known_w + (grip, push)
+            k = len(polygon)
+            return (
+                polygon,
+                ((0, unit(B, Cp)), (k - 1, (mx, my))),
+                (
+                    (whole_b, 0, 2),
+                    (Side("pin", lk, wh, C, q, Cp), 2 + len(known_l), 0),
+                    (Side("contact", wh, FRAME, "I", contact.force, I), k - 2, k),
+                ),
+            )
+
         mc = kw[2] - cross(cx, cy, kw[0], kw[1])
         eq = (
             f"moments of wheel {wh} about {C}: M_{C} - r T = 0, M_{C} = {fmt(mc)} N m the "
@@ -106,5 +129,6 @@ def step(st, P, led, own):
         cond,
         f"cosine of the angle between {st.b}{C} and the line",
         eq,
+        drawing,
     )
     return (PinForce(C, lk, wh, q), PinForce(st.b, lk, ob, fb)), (contact,), rec, None

@@ -27,7 +27,7 @@ from __future__ import annotations
 
 from ..common.numbers import fmt
 from .bodies import cross
-from .records import FRAME, Contact, ForceStep
+from .records import FRAME, Contact, ForceStep, Side
 
 
 def solve(cx, cy, known, r, m):
@@ -73,10 +73,21 @@ def step(st, P, led, own):
     n, t, tau = solve(cx, cy, kw, r, (mx, my))
     ix, iy = cx - r * mx, cy - r * my
     contact = Contact(W, (ix, iy), n, t, (mx, my))
+    known = led.known(W)
     led.add(FRAME, -contact.force[0], -contact.force[1], ix, iy)
     led.couple(FRAME, -tau)  # the driver, mounted on the frame, feels -tau
-    eq = ()
+    eq, drawing = (), None
     if isinstance(tau, float):
+
+        def drawing():
+            # the pole, the wheel's known forces, the ground's grip along the line and its
+            # push across it: their lines meet where it closes
+            grip = Side("contact", W, FRAME, "I", (-t * my, t * mx), (ix, iy), "t")
+            push = Side("contact", W, FRAME, "I", (n * mx, n * my), (ix, iy), "n")
+            k = len(known)
+            whole = Side("contact", W, FRAME, "I", contact.force, (ix, iy))
+            return known + (grip, push), ((k, (-my, mx)), (k + 1, (mx, my))), ((whole, k, k + 2),)
+
         mc = kw[2] - cross(cx, cy, kw[0], kw[1])
         eq = (
             f"the wheel {W} alone: its driver's torque tau, the ground's N m + T t at the "
@@ -102,5 +113,6 @@ def step(st, P, led, own):
         1.0,
         "",
         eq,
+        drawing,
     )
     return (), (contact,), rec, tau

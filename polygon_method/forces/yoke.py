@@ -26,7 +26,7 @@ the yoke with a couple of 10 N m cw (the block pushes it back 1 m above the load
 
 from __future__ import annotations
 
-from .bodies import Singular, any_zero, cross
+from .bodies import Singular, any_zero, cross, split
 from ..common.numbers import fmt
 from .records import FRAME, ForceStep, GuideForce, PinForce, block, Side
 
@@ -76,11 +76,30 @@ def step(st, P, led, own):
     op = own[X]
     slot = GuideForce(X, nd, (-d[1], d[0]), yb)
     path = GuideForce(Y, nu, (-u[1], u[0]), FRAME, c)
+    known_y, known_x = led.known(yb), led.known(xb)
     led.add(op, -fp[0], -fp[1], px, py, side=Side("pin", op, xb, X, (-fp[0], -fp[1]), (px, py)))
     led.add(FRAME, -path.force[0], -path.force[1], yx, yy)
     led.couple(FRAME, -c)
-    eq = ()
+    eq, drawing = (), None
     if isinstance(nd, float):  # one instant (its condition is a number even over a sweep)
+
+        def drawing():
+            # the pole, the path's normal force (found last), the yoke's known forces, the
+            # block's, the crank's force on the block along the slot (the block's balance
+            # along it), across the slot (found last): the two lines meet at the pole
+            Pp, Yp = (px, py), (yx, yy)
+            held = Side("guide", yb, FRAME, Y, path.force, Yp)
+            whole = Side("pin", xb, op, X, fp, Pp)
+            along, across = split(whole, d)
+            polygon = (held,) + known_y + known_x + (along, across)
+            k = len(polygon)
+            back = Side("guide", yb, xb, X, (-slot.force[0], -slot.force[1]), Pp)
+            return (
+                polygon,
+                ((0, path.n), (k - 1, slot.n)),
+                ((whole, k - 2, k), (back, 1 + len(known_y), k)),
+            )
+
         eq = (
             f"the yoke along its path: -N_d (n_d . u) + R_Y . u = 0, R_Y = ({fmt(ky[0])}, "
             f"{fmt(ky[1])}) N the known forces on {yb}: N_d = {fmt(nd)} N (the slot's "
@@ -104,6 +123,7 @@ def step(st, P, led, own):
         cond,
         "the sine of the angle between the slot and the path",
         eq,
+        drawing,
     )
     return (PinForce(X, xb, op, fp),), (slot, path), rec, None
 

@@ -11,17 +11,21 @@ import numpy as np
 
 from ..solver.derived import transmission_angle
 from ..common.errors import TOL, SceneError, SingularStepError
-from ..common.tolerances import ROUNDING, SAME
+from ..common.tolerances import DISTINCT, ROUNDING
 from ..solver.compiler import compile_plan
 from ..scene import Scene
 from ..motion.solution import solve
-from ..solver.tracking import TWO_PI
-from .cycle import _Cycle, stands_still
+from .cycle import _Cycle
 from .engine import _engine_lines
+from .output_motion import (  # noqa: F401  (Stationary, path_origin re-exported)
+    Stationary,
+    output_motion,
+    path_origin,
+    shown_place,
+)
 from .shapes import (
     FourBar,
     Grashof,
-    _Output,
     _output_of,
     four_bar_of,
     grashof,
@@ -32,16 +36,6 @@ from .shapes import (
 
 
 # --------------------------------------------------------------------------- results
-
-
-@dataclass(frozen=True)
-class Stationary:
-    """A crank angle where the output stands still (a toggle when driven from the output)."""
-
-    theta: float
-    deg: float
-    output: float  # rad (rocker, lever) or m (slider)
-    what: str
 
 
 @dataclass(frozen=True)
@@ -265,7 +259,7 @@ def _input_toggles(scene: Scene, plan, cyc, turns: bool) -> list:
         fr = cyc.at(lp.theta, vel=False)
         extra = ""
         if out is not None:
-            extra = f"; {out.label} at {_fmt_out(out, out.value(fr)[0], scene)}"
+            extra = f"; {out.label} at {shown_place(out, out.value(fr)[0], scene)}"
         input_toggles.append(f"  crank at {cyc.deg(lp.theta):9.4f} deg: {lp.why}{extra}")
     return input_toggles
 
@@ -335,7 +329,7 @@ def analyse(scene: Scene) -> Linkage:
     out = _output_of(scene, plan)
     stationary, out_lines, omin, omax, ratio, tlines = (), (), None, None, None, ()
     if out is not None:
-        stationary, out_lines, omin, omax, ratio, tlines = _output_motion(
+        stationary, out_lines, omin, omax, ratio, tlines = output_motion(
             cyc, out, scene, fb, sk, slot
         )
         if len(stationary) > _MAX_STATIONARY:  # a degenerate linkage: the output dwells
@@ -381,7 +375,7 @@ def _crossed(fr, fb: FourBar) -> bool:
     (x2, y2), (xa, ya) = fr.P[fb.o2], fr.P[fb.a]
     (x4, y4), (xb, yb) = fr.P[fb.o4], fr.P[fb.b]
     d = math.hypot((xa - x2)[0] - (xb - x4)[0], (ya - y2)[0] - (yb - y4)[0])
-    return d > 1e-6 * fb.r2
+    return d > DISTINCT * fb.r2
 
 
 def _grashof_lines(g: Grashof, fb: FourBar, scene) -> list:
@@ -426,148 +420,6 @@ def _grashof_lines(g: Grashof, fb: FourBar, scene) -> list:
             "Grashof), with change points where all four pivots come into line"
         )
     return [head, what]
-
-
-def path_origin(path, scene) -> str:
-    """Where a position "along the path" is measured from, and which way is +: "from
-    (0, 40) mm, + to the right"."""
-    (qx, qy), (ux, uy) = path.through, path.u
-    u = scene.length_unit
-    ang = math.degrees(math.atan2(uy, ux))
-    way = {
-        0: "to the right",
-        90: "upwards",
-        180: "to the left",
-        -180: "to the left",
-        -90: "downwards",
-    }.get(round(ang, 9), f"at {ang:.4g} deg")
-    return f"from ({qx / u:.6g}, {qy / u:.6g}) {scene.units}, + {way}"
-
-
-def _fmt_out(out, v, scene) -> str:
-    if out.kind == "slider":
-        return f"{v / scene.length_unit:.6g} {scene.units} along the path"
-    return f"{math.degrees(v):.4f} deg"
-
-
-def _output_motion(cyc: _Cycle, out: _Output, scene, fb, sk, slot):
-    dom = cyc.dom
-    zs = cyc.zeros(out.rate)
-    stats = []
-    for t in zs:
-        fr = cyc.at(t, vel=False)
-        v = float(out.value(fr)[0])
-        stats.append(
-            Stationary(t, cyc.deg(t), v, _what_stationary(fr, out, scene, fb, sk, slot, v))
-        )
-    stats.sort(key=lambda s: s.deg)
-    vals = [s.output for s in stats]
-    if not dom.full_turn:
-        for lp in dom.limits:
-            fr = cyc.at(lp.theta, vel=False)
-            vals.append(float(out.value(fr)[0]))
-    elif dom.turn_only:  # a turn that does not close: its two ends bound the range
-        for t in (dom.lo, dom.hi):
-            vals.append(float(out.value(cyc.at(t, vel=False))[0]))
-    lines = []
-    omin = omax = None
-    ratio, tlines = None, []
-    # the output's range is a matter of positions: every sample that assembles counts,
-    # also those where the velocities are indeterminate (a nearly locked linkage has no other)
-    placed = ~cyc.fr.bad
-    if out.kind == "slider":
-        all_v = out.value(cyc.fr)[placed]
-        lines.append(
-            f"{out.label}: its place along the path is measured {path_origin(out.path, scene)}"
-        )
-        if vals and len(all_v):
-            omin, omax = min(vals + [float(all_v.min())]), max(vals + [float(all_v.max())])
-            if stands_still(omax - omin, scene):  # rounding about a standstill, no stroke
-                mid = 0.5 * (omin + omax)
-                omin = omax = 0.0 if stands_still(abs(mid), scene) else mid
-                lines.append(
-                    f"{out.label}: stands still at {_fmt_out(out, omin, scene)}: no stroke"
-                )
-            else:
-                lines.append(
-                    f"{out.label}: moves between {_fmt_out(out, omin, scene)} and "
-                    f"{_fmt_out(out, omax, scene)}: stroke "
-                    f"{(omax - omin) / scene.length_unit:.6g} {scene.units}"
-                )
-    else:
-        ang = np.unwrap(out.value(cyc.fr)[placed])
-        span = float(ang.max() - ang.min()) if len(ang) else 0.0
-        if dom.full_turn and len(ang) and abs(ang[-1] - ang[0]) > math.pi:
-            lines.append(f"{out.label}: turns fully")
-        elif vals and len(ang):
-            ref = float(ang[0])
-            unwrapped = [ref + ((v - ref + math.pi) % TWO_PI) - math.pi for v in vals]
-            omin, omax = min(unwrapped), max(unwrapped)
-            shift = -TWO_PI * math.floor((omin + math.pi) / TWO_PI)  # omin in [-180, 180)
-            omin, omax = omin + shift, omax + shift
-            lines.append(
-                f"{out.label}: swings between {math.degrees(omin):.4f} and "
-                f"{math.degrees(omax):.4f} deg: swing "
-                f"{math.degrees(omax - omin):.4f} deg"
-            )
-        elif span:
-            lines.append(f"{out.label}: moves through {math.degrees(span):.4f} deg")
-    if dom.full_turn and len(stats) == 2:
-        w = cyc.sw.omega
-        t1, t2 = stats[0].theta, stats[1].theta
-        arc1 = ((t2 - t1) * (1 if w > 0 else -1)) % TWO_PI  # crank turn from stat 1 to 2
-        arc2 = TWO_PI - arc1
-        mid = t1 + (1 if w > 0 else -1) * arc1 / 2
-        fr = cyc.at(mid)
-        sgn = float(out.rate(fr)[0])
-        d1 = _direction(out, sgn)
-        d2 = _direction(out, -sgn)
-        slow, fast = max(arc1, arc2), min(arc1, arc2)
-        ratio = slow / fast
-        tlines.append(
-            f"quick return: from crank {stats[0].deg:.4f} deg the crank turns "
-            f"{math.degrees(arc1):.4f} deg while {out.label} moves {d1}, then "
-            f"{math.degrees(arc2):.4f} deg while it moves {d2}"
-        )
-        alpha = abs(math.degrees(arc1) - 180.0)
-        tlines.append(
-            f"  time ratio {ratio:.6f} = (180 + {alpha:.4f}) / (180 - {alpha:.4f})"
-            + ("  (equal strokes: no quick return)" if abs(ratio - 1) < SAME else "")
-        )
-    elif not dom.full_turn:
-        tlines.append("quick return: not applicable (the crank does not turn fully)")
-    return tuple(stats), tuple(lines), omin, omax, ratio, tuple(tlines)
-
-
-def _direction(out, sgn) -> str:
-    if out.kind == "slider":
-        return "forward (+ along the path)" if sgn > 0 else "back (- along the path)"
-    return "ccw" if sgn > 0 else "cw"
-
-
-def _what_stationary(fr, out, scene, fb, sk, slot, v) -> str:
-    val = _fmt_out(out, v, scene)
-    if fb is not None:
-        (x2, y2), (xa, ya), (xb, yb) = fr.P[fb.o2], fr.P[fb.a], fr.P[fb.b]
-        dot = float(((xa - x2) * (xb - xa) + (ya - y2) * (yb - ya))[0])
-        how = "extended" if dot > 0 else "folded"
-        return f"{fb.crank} and {fb.coupler} in line ({how}); {out.label} at {val}"
-    if sk is not None:
-        (xo, yo), (xa, ya), (xb, yb) = fr.P[sk.o], fr.P[sk.a], fr.P[sk.b]
-        dot = float(((xa - xo) * (xb - xa) + (ya - yo) * (yb - ya))[0])
-        if dot > 0:
-            return (
-                f"dead centre, {sk.crank} and {sk.rod} in line (extended: inner dead "
-                f"centre, slider farthest from {sk.o}); slider at {val}"
-            )
-        return (
-            f"dead centre, {sk.crank} and {sk.rod} in line (folded: outer dead centre, "
-            f"slider nearest {sk.o}); slider at {val}"
-        )
-    if slot is not None and out.kind == "lever":
-        cr, _ = slot
-        return f"the crank {cr.link} is perpendicular to the lever; {out.label} at {val}"
-    return f"the output stands still; {out.label} at {val}"
 
 
 def _transmission(cyc: _Cycle, st, scene) -> Transmission:

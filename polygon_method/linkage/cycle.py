@@ -3,10 +3,9 @@ something stands still or turns over."""
 
 from __future__ import annotations
 
-from ..common.tolerances import SAME
-
 import numpy as np
 
+from ..common.tolerances import EXTREME_RESOLVED, SAME, ZERO_RESOLVED
 from ..solver.tracking import Sweeper, degrees_fn, merge, run_arrays, valid_mask
 from .shapes import _GRID
 
@@ -86,7 +85,7 @@ class _Cycle:
             if v[j] >= best:
                 t, best = float(pts[j]), float(v[j])
             a, b = pts[max(j - 1, 0)], pts[min(j + 1, 16)]
-            if b - a < 1e-13:
+            if b - a < EXTREME_RESOLVED:
                 break
         return t, best * sense
 
@@ -115,7 +114,7 @@ class _Cycle:
                     break
                 j = ch[0] + 1
                 a, b = pts[j - 1], pts[j]
-                if b - a < 1e-14:
+                if b - a < ZERO_RESOLVED:
                     break
             out.append(0.5 * (a + b))
         return out

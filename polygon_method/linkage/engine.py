@@ -6,6 +6,7 @@ import math
 
 import numpy as np
 
+from ..common.tolerances import ROUNDING
 from ..scene import Scene
 from ..solver.tracking import TWO_PI
 from .cycle import _Cycle, stands_still
@@ -80,29 +81,35 @@ def _engine_lines(cyc: _Cycle, sk: SliderCrank, scene) -> list:
     }
     for name, unit, ex, ap, form in rows:
         err = _err(ap, ex, sizes[unit])
-        zero = 1e-12 * sizes[unit]  # rounding noise about a true zero is written 0
+        zero = ROUNDING * sizes[unit]  # rounding noise about a true zero is written 0
         ex, ap = (0.0 if abs(v) <= zero else v for v in (ex, ap))
         out.append(f"  {name:<{wlab}} {ex:>12.6g} {ap:>12.6g} {err:>9}  {form} ({unit})")
-    # maximum piston velocity: exact (refined over the cycle) and by the formula
-    dvec = d
+    out.append(_max_velocity_line(cyc, sk, d, th_idc, sg * W))
+    return out
 
-    tm, vm = cyc.extreme(lambda fr: -(fr.V[sk.b][0] * dvec[0] + fr.V[sk.b][1] * dvec[1]), 1.0)
+
+def _max_velocity_line(cyc: _Cycle, sk: SliderCrank, d, th_idc, w) -> str:
+    """The maximum piston velocity, exact (refined over the cycle) and by the formula
+    ``cos t = (-n + sqrt(n^2 + 8)) / 4``; ``d`` the line of stroke towards the inner dead
+    centre, at the crank's angle ``th_idc``, ``w`` the crank's omega."""
+    r, n, W = sk.r, sk.n, abs(w)
+    sg = 1.0 if w > 0 else -1.0
+    tm, vm = cyc.extreme(lambda fr: -(fr.V[sk.b][0] * d[0] + fr.V[sk.b][1] * d[1]), 1.0)
     tmx = (sg * (tm - th_idc)) % TWO_PI
     c = (-n + math.sqrt(n * n + 8)) / 4
     ts = math.acos(c)
     vs = r * W * (math.sin(ts) + math.sin(2 * ts) / (2 * n))
-    out.append(
+    return (
         f"  maximum piston velocity: exact {vm:.6g} m/s at {math.degrees(tmx):.4f} deg "
         f"from i.d.c.; formula {vs:.6g} m/s at {math.degrees(ts):.4f} deg "
         f"(cos t = (-n + sqrt(n^2 + 8)) / 4 = {c:.6g}), error {_err(vs, vm, r * W).strip()}"
     )
-    return out
 
 
 def _err(approx, exact, size) -> str:
     """The formula's error in per cent of the exact value; "n/a" where the exact value is
-    zero (to rounding, 1e-12 of the quantity's ``size``) and the formula's is not."""
-    zero = 1e-12 * size
+    zero (to rounding, :data:`ROUNDING` of the quantity's ``size``) and the formula's is not."""
+    zero = ROUNDING * size
     if abs(exact) <= zero:
         return "0" if abs(approx) <= zero else "n/a"
     return f"{100.0 * (approx - exact) / abs(exact):+.3f} %"

@@ -30,6 +30,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..common.tolerances import ROUNDING
 from ..common.errors import PolygonMethodError
 from ..forces import analyse
 from ..forces.engine import efforts, engine_piston as _piston, geometry, piston_side
@@ -301,7 +302,7 @@ def turning_moment(scene: Scene) -> TurningMoment:
     cross = sorted(c for c in cross if 0.0 <= c < cycle)
     rd = math.degrees
     i_max, i_min = int(np.argmax(T)), int(np.argmin(T))
-    if not cross or float(np.abs(d).max()) <= 1e-12 * size:  # a steady turning moment
+    if not cross or float(np.abs(d).max()) <= ROUNDING * size:  # a steady turning moment
         lobes, E_max, at_max, E_min, at_min = (), 0.0, 0.0, 0.0, 0.0
         cross = []
     else:

@@ -10,7 +10,7 @@ import math
 import numpy as np
 
 from ..solver.kinematics import Motion
-from ..common.tolerances import crossing_angle
+from ..common.tolerances import REFINED, ROUNDING, SAME, TOL, crossing_angle
 from ..scene import FixedPath, Scene
 from ..motion.sweeps import (
     SweepResult,
@@ -33,6 +33,13 @@ from ..solver.tracking import (
     valid_mask,
 )
 
+from .summary_limits import (
+    at_limits,
+    change_point_minima,
+    limit_positions,
+    limits_in,
+    unbounded_at_limits,
+)
 from .summary_record import Extreme, Summary
 
 __all__ = ["summarize", "summary_of", "Summary", "Extreme"]
@@ -43,9 +50,6 @@ _REFINE_BUDGET = 1_000_000
 #: local extremes of each sense kept per quantity and refined (the largest sampled first):
 #: the true extreme may be at another local one than the sampled best
 _CANDIDATES = 6
-#: inward offsets (rad) from a limit position at which a quantity's value is compared with
-#: its value at the limit itself (equal to 1e-7 of its kind: it is finite and smooth there)
-_AT_LIMIT = (1e-9, 2e-9)
 
 
 def _local_extremes(a):
@@ -153,15 +157,15 @@ class _Reducer:
         """(name, unit, array, what) of :meth:`force_quantities` from the forces ``f`` and
         an engine's efforts ``e`` (or None) at ``n`` angles."""
 
-        def b(v):
-            return np.broadcast_to(np.asarray(v, dtype=float), (n,))
+        b = lambda v: np.broadcast_to(np.asarray(v, dtype=float), (n,))  # noqa: E731
 
         if f.driver == "crank":
             yield "torque_inertia", "N m", b(f.input_torque), "driving torque with inertia, ccw +"
         else:
             yield "force_inertia", "N", b(f.input_torque), "driving force with inertia"
-        if f.second_crank is not None:
-            yield "torque2_inertia", "N m", b(f.second_torque), "second crank's torque, ccw +"
+        if f.second_crank is not None:  # a second crank's torque (N m), a second collar's force
+            k, u = ("force", "N") if "block " in f.second_crank else ("torque", "N m")
+            yield f"{k}2_inertia", u, b(f.second_torque), f"second input's {k}, with inertia"
         yield "shake", "N", (b(f.shaking_force[0]), b(f.shaking_force[1])), "shaking force"
         yield "shake_moment", "N m", b(f.shaking_moment), "shaking moment about O, ccw +"
         for g in f.guides:
@@ -261,66 +265,23 @@ class _Reducer:
             t[2], t[3] = p[max(j - 1, 0)], p[min(j + 1, 16)]
 
     def finish(self, theta, requested, evaluated, *, refine=True):
-        sw = self.sw
-        dom = sw.domain
+        """The :class:`Summary` of the chunks added, over the evaluated angles ``theta``:
+        each quantity's extremes (shown as 0 within their own error bound), refined between
+        samples, taken at the limit positions the angles reach, marked where unbounded."""
+        dom = self.sw.domain
         n = len(theta)
-        spacing = None
-        if n > 2:
-            step = np.abs(np.diff(theta[:10001]))
-            spacing = float(np.median(step))
-        cps = [c.theta for c in dom.change_points]
+        spacing = float(np.median(np.abs(np.diff(theta[:10001])))) if n > 2 else None
         notes = tuple(dom.notes) + self._forces_note()
-        tasks, rows = [], []
-        scales = self._scales()
-        limits = [lp.theta for lp, _ in self._limits_in(theta, spacing)]
-        noise = self._noise(theta)
-        for name, (mx, imx, mn, imn, unit, what, cmax, cmin) in self.best.items():
-            own = noise.get(name)  # each quantity's own error bound where it is reached
-            if own is None:  # (a rubbing velocity, the input effort: the sizes the input sets)
-                zmx = zmn = 1e-9 * scales.get(unit, 0.0)
-            else:
-                zmx, zmn = own(imx), own(imn)
-            mx, mn = (0.0 if abs(mx) <= zmx else mx), (0.0 if abs(mn) <= zmn else mn)
-            scale = max(abs(mx), abs(mn))
-            if n > 1 and (mx - mn <= 1e-10 * scale or scale == 0.0):
-                rows.append([name, unit, mx, None, mn, None, what])
-                continue
-            row = [name, unit, mx, float(theta[imx]), mn, float(theta[imn]), what]
-            rows.append(row)
-            if not (refine and spacing and spacing > 1e-12):
-                continue
-            for sense, i, cand in ((1.0, imx, cmax), (-1.0, imn, cmin)):
-                for k in dict.fromkeys([i, *cand]):
-                    t = float(theta[k])
-                    if not (
-                        _interior(theta, k, spacing)
-                        or any(
-                            abs(lim - dom.map(np.array([t]))[0][0]) <= 1.5 * spacing
-                            for lim in limits
-                        )
-                    ):
-                        continue  # the end of the requested range: its own value
-                    a, b = t - spacing, t + spacing  # (beyond a limit: left out)
-                    (tm,), _ = dom.map(np.array([t]))
-                    if any(abs(tc - tm) < 2 * spacing + 0.02 * self.rad for tc in cps):
-                        continue  # values next to a change point are not refined
-                    val = (row[2] if sense > 0 else row[4]) if k == i else -sense * math.inf
-                    tasks.append([name, sense, a, b, val, t, row])
+        rows, tasks = self._rows(theta, spacing, refine)
         if tasks:
-            passes = max(1, min(12, math.ceil(math.log(2 * spacing / 1e-11, 8))))
-            self._refine(tasks, passes)
-            for name, sense, _, _, val, t, row in tasks:
-                if sense > 0 and val >= row[2]:
-                    row[2], row[3] = val, t
-                elif sense < 0 and val <= row[4]:
-                    row[4], row[5] = val, t
+            self._refine_rows(tasks, spacing)
         if n and refine:
-            self._at_limits(rows, theta, spacing)
+            at_limits(self, rows, theta, spacing)
         if n:
-            self._change_point_minima(rows, spacing, float(np.min(theta)), float(np.max(theta)))
-            self._limit_positions(rows, theta, spacing)
+            change_point_minima(self, rows, spacing, float(np.min(theta)), float(np.max(theta)))
+            limit_positions(self, rows, theta, spacing)
         deg = degrees_fn(dom)
-        unbounded = self._unbounded(rows, theta, spacing) if n else {}
+        unbounded = unbounded_at_limits(self, rows, theta, spacing) if n else {}
         for row in rows:  # an unbounded extreme is at the limit position, not a sample
             nm = row[0]
             if (nm, 1.0) in unbounded:
@@ -342,16 +303,7 @@ class _Reducer:
             )
             for nm, u, mx, tmx, mn, tmn, what in rows
         )
-        formulas = ()
-        from . import engine_cycle_lines, engine_formula_lines  # an in-line slider crank's, or none
-
-        formulas = tuple(engine_formula_lines(self.scene, {e.name: e for e in extremes}))
-        cycle = engine_cycle_lines(self.scene)  # an engine's turning moment and flywheel
-        if cycle:
-            formulas += (("",) if formulas else ()) + tuple(cycle)
-        rng = None
-        if not dom.full_turn:
-            rng = (deg(dom.lo), deg(dom.hi))
+        rng = None if dom.full_turn else (deg(dom.lo), deg(dom.hi))
         return Summary(
             self.scene,
             requested,
@@ -360,137 +312,83 @@ class _Reducer:
             dom.limits,
             dom.change_points,
             notes,
-            formulas,
+            self._formulas(extremes),
             rng,
             deg,
         )
 
-    def _limit_positions(self, rows, theta, spacing):
-        """Where the crank rocks, a slider's extreme place may be at a limit position of
-        the crank (between two samples, where the velocities are not defined): its place
-        there, from the positions alone, is an extreme too, so that the summary gives the
-        same stroke as `linkage`. Only limits the requested angles reach are taken."""
-        dom = self.sw.domain
-        if dom.full_turn or not dom.limits or spacing is None:
-            return
-        mapped, _ = dom.map(np.asarray(theta, dtype=float))
-        lims = [lp.theta for lp in dom.limits if np.min(np.abs(mapped - lp.theta)) <= 1.5 * spacing]
-        if not lims:
-            return
-        fr = self.sw.evaluate(np.array(lims), vel=False, acc=False)
-        by = {row[0]: row for row in rows}
-        for s in self.scene.sliders:
-            row = by.get(f"s_{s.key}")
-            if row is None or not isinstance(s, FixedPath):
+    def _rows(self, theta, spacing, refine):
+        """(rows, tasks): each quantity's row ``[name, unit, max, its angle, min, its angle,
+        what]`` (the angles None for a constant), its extremes within their own error bound
+        written as 0; and the refinement tasks of its sampled local extremes
+        (:meth:`_tasks`)."""
+        n = len(theta)
+        tasks, rows = [], []
+        scales = self.scales()
+        limits = [lp.theta for lp, _ in limits_in(self, theta, spacing)]
+        noise = self._noise(theta)
+        for name, (mx, imx, mn, imn, unit, what, cmax, cmin) in self.best.items():
+            own = noise.get(name)  # each quantity's own error bound where it is reached
+            if own is None:  # (a rubbing velocity, the input effort: the sizes the input sets)
+                zmx = zmn = SAME * scales.get(unit, 0.0)
+            else:
+                zmx, zmn = own(imx), own(imn)
+            mx, mn = (0.0 if abs(mx) <= zmx else mx), (0.0 if abs(mn) <= zmn else mn)
+            scale = max(abs(mx), abs(mn))
+            if n > 1 and (mx - mn <= TOL.negligible * scale or scale == 0.0):
+                rows.append([name, unit, mx, None, mn, None, what])
                 continue
-            (qx, qy), (ux, uy) = s.through, s.u
-            x, y = fr.P[s.point]
-            for t, v in zip(lims, (x - qx) * ux + (y - qy) * uy):
-                v = float(v)
-                if not math.isfinite(v):
-                    continue
-                if v > row[2]:
-                    row[2], row[3] = v, t
-                if v < row[4]:
-                    row[4], row[5] = v, t
+            row = [name, unit, mx, float(theta[imx]), mn, float(theta[imn]), what]
+            rows.append(row)
+            if refine and spacing and spacing > ROUNDING:
+                for sense, i, cand in ((1.0, imx, cmax), (-1.0, imn, cmin)):
+                    tasks += self._tasks(row, sense, i, cand, theta, spacing, limits)
+        return rows, tasks
 
-    def _change_point_minima(self, rows, spacing, lo, hi):
-        """At a change point the step's two assemblies meet: its transmission angle is 0
-        there (the samples next to it, whose construction is not trusted, carry the refusal
-        threshold's value instead). A row whose minimum is next to a followed change point
-        of its step gets 0 at the change point's angle, where that is within the requested
-        angles ``lo`` to ``hi``."""
+    def _tasks(self, row, sense, i, cand, theta, spacing, limits):
+        """The refinement tasks ``[name, sense, a, b, best value, best angle, row]`` of the
+        sampled extreme at ``i`` and the local ones ``cand`` of one sense: a bracket of one
+        spacing each side, where the sample is a local extreme (or next to a limit
+        position), not next to a change point."""
         dom = self.sw.domain
-        near = 2 * (spacing or 0.0) + 0.02 * self.rad
-        for cp in dom.change_points:
-            if not cp.followed:
-                continue
-            for row in rows:
-                if row[0] != f"mu at {cp.point}" or row[5] is None:
-                    continue
-                (tm,), _ = dom.map(np.array([row[5]]))
-                d = cp.theta - float(tm)
-                if dom.full_turn:
-                    d = (d + 0.5 * dom.period) % dom.period - 0.5 * dom.period
-                if abs(d) < near and lo <= row[5] + d <= hi:
-                    row[4], row[5] = 0.0, row[5] + d
-
-    def _limits_in(self, theta, spacing):
-        """The limit positions within the requested angles: next to a sample (within one
-        and a half spacings, mapped into the domain)."""
-        dom = self.sw.domain
-        if dom.full_turn or not dom.limits or not len(theta):
-            return []
-        t, _ = dom.map(np.asarray(theta, dtype=float))
-        reach = 1.5 * (spacing or 0.0) + 1e-9
+        cps = [c.theta for c in dom.change_points]
         out = []
-        for lp in dom.limits:
-            if float(np.min(np.abs(t - lp.theta))) <= reach:
-                inward = -1.0 if abs(lp.theta - dom.hi) < abs(lp.theta - dom.lo) else 1.0
-                out.append((lp, inward))
+        for k in dict.fromkeys([i, *cand]):
+            t = float(theta[k])
+            if not (
+                _interior(theta, k, spacing)
+                or any(abs(lim - dom.map(np.array([t]))[0][0]) <= 1.5 * spacing for lim in limits)
+            ):
+                continue  # the end of the requested range: its own value
+            a, b = t - spacing, t + spacing  # (beyond a limit: left out)
+            (tm,), _ = dom.map(np.array([t]))
+            if any(abs(tc - tm) < 2 * spacing + 0.02 * self.rad for tc in cps):
+                continue  # values next to a change point are not refined
+            val = (row[2] if sense > 0 else row[4]) if k == i else -sense * math.inf
+            out.append([row[0], sense, a, b, val, t, row])
         return out
 
-    def _at_limits(self, rows, theta, spacing):
-        """Each quantity evaluated at the limit positions within the requested angles, the
-        crank's exact angles there, and taken as the maximum or minimum where it is beyond
-        the samples': the transmission angle is 0 there, a block's travel ends there. A
-        quantity is taken only where it is finite and smooth at the limit (its values 1e-9
-        and 2e-9 rad inside agree with it to 1e-7 of its kind); one that grows without bound
-        there is marked so (:meth:`_unbounded`)."""
-        scales = self._scales()
-        for lp, inward in self._limits_in(theta, spacing):
-            pts = lp.theta + inward * self.rad * np.array((0.0,) + _AT_LIMIT)
-            fr = self.sw.evaluate(pts)
-            q = {nm: (u, np.asarray(arr, dtype=float)) for nm, u, arr, _ in self.values(fr)}
-            for row in rows:
-                nm = row[0]
-                if nm not in q:
-                    continue
-                u, vals = q[nm]
-                v = float(vals[0])
-                if not math.isfinite(v):
-                    continue
-                exact = u == "deg" or nm.startswith("s_")  # positions: exact at the limit
-                if not exact:
-                    tol = 1e-7 * max(scales.get(u, 0.0), abs(v))
-                    if not (np.all(np.isfinite(vals)) and np.all(np.abs(vals - v) <= tol)):
-                        continue
-                if row[3] is None:  # a constant stays one
-                    continue
-                if v > row[2]:
-                    row[2], row[3] = v, float(lp.theta)
-                if v < row[4]:
-                    row[4], row[5] = v, float(lp.theta)
+    def _refine_rows(self, tasks, spacing):
+        """Refine the ``tasks`` (:meth:`_refine`, down to about :data:`REFINED` rad) and put each
+        better extreme found into its row."""
+        passes = max(1, min(12, math.ceil(math.log(2 * spacing / REFINED, 8))))
+        self._refine(tasks, passes)
+        for name, sense, _, _, val, t, row in tasks:
+            if sense > 0 and val >= row[2]:
+                row[2], row[3] = val, t
+            elif sense < 0 and val <= row[4]:
+                row[4], row[5] = val, t
 
-    def _unbounded(self, rows, theta, spacing) -> dict:
-        """(name, sense) -> the limit position's angle, for every quantity that grows
-        without bound towards a limit position within the requested angles (a toggle of the
-        driven side: velocities as 1 / sqrt(d), accelerations as 1 / d^1.5, d the crank's
-        distance from the limit), wherever its sampled extreme is. The quantity is probed
-        at 1e-2, 1e-3 and 1e-4 rad from the limit (for a driving block, those parts of its
-        travel over 2 pi); it is unbounded where its size grows,
-        with one sign, by more than twice each decade (as d^-0.5 does, 3.2 times: a
-        quantity that tends to a finite value, even one that passes 0 near the first
-        probe, does not grow so over the last decade)."""
-        found = {}
-        for lp, inward in self._limits_in(theta, spacing):
-            probe = lp.theta + inward * self.rad * np.array([1e-2, 1e-3, 1e-4])
-            fr = self.sw.evaluate(probe)
-            q = {nm: np.asarray(arr, dtype=float) for nm, _, arr, _ in self.values(fr)}
-            for nm, u, mx, tmx, mn, tmn, what in rows:
-                if u == "deg" or nm not in q or tmx is None:
-                    continue
-                vals = q[nm]
-                for sense in (1.0, -1.0):
-                    v = sense * vals
-                    if (
-                        np.all(np.isfinite(v))
-                        and v[0] > 0
-                        and v[1] > 2.0 * v[0]
-                        and v[2] > 2.0 * v[1]
-                    ):  # (d^-0.5 grows 3.2 times a decade)
-                        found.setdefault((nm, sense), lp.theta)
-        return found
+    def _formulas(self, extremes) -> tuple:
+        """The lines of an in-line slider crank's formulas (checked against the extremes)
+        and an engine's turning moment and flywheel, or ()."""
+        from . import engine_cycle_lines, engine_formula_lines
+
+        formulas = tuple(engine_formula_lines(self.scene, {e.name: e for e in extremes}))
+        cycle = engine_cycle_lines(self.scene)  # an engine's turning moment and flywheel
+        if cycle:
+            formulas += (("",) if formulas else ()) + tuple(cycle)
+        return formulas
 
     def _noise(self, theta) -> dict:
         """name -> f(i): the absolute error bound of each quantity (its own relative bound,
@@ -556,8 +454,8 @@ class _Reducer:
             self.best.pop(nm, None)
         return (f"the forces are not summarised: {self.forces_left_out}",)
 
-    def _scales(self) -> dict:
-        """Typical sizes per unit, below a 1e-9 part of which a value is zero (rounding);
+    def scales(self) -> dict:
+        """Typical sizes per unit, below a :data:`SAME` part of which a value is zero (rounding);
         forces and moments: the largest force, it times the longest length."""
         out = self._motion_scales()
         if self.force_names:
@@ -570,7 +468,7 @@ class _Reducer:
         return out
 
     def _motion_scales(self) -> dict:
-        """The kinematic quantities' typical sizes per unit (see :meth:`_scales`)."""
+        """The kinematic quantities' typical sizes per unit (see :meth:`scales`)."""
         sc = self.scene
         if not self.sw.driver.periodic:  # a block driver: the sizes its input sets
             v, a, w, k = self.sw.driver.input_scales(sc)

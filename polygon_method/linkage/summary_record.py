@@ -178,7 +178,7 @@ class Summary:
                     continue
                 # rounding noise about a true zero (a speed at a dead centre) is 0 already
                 # (each value within its own error bound: _Reducer._noise); an extreme
-                # refined to a zero of the quantity is found to about 1e-10 of the
+                # refined to a zero of the quantity is found to about TOL.negligible of the
                 # quantity's range, the accuracy of its place: written 0 too
                 big = max(abs(e.maximum), abs(e.minimum))
                 mx = "+unbounded" if e.max_unbounded else f"{quiet(e.maximum, big):.6g}"

@@ -23,15 +23,16 @@ from __future__ import annotations
 from ..solver.derived import input_torque as _torque
 from ..solver.derived import PinRubbing, power_terms, rubbing_records
 from ..solver.centres import JSON_BODIES, centres_dict, locate
-from ..solver.errorbound import NO_BOUND, USELESS, bounds_dict, error_bounds
+from ..solver.errorbound import bounds_dict, error_bounds
 from ..common.errors import TOL, PolygonMethodError, SceneError
 from ..solver.kinematics import Motion, hypot
 from ..common.numbers import fmt_angular, quiet, sense  # noqa: F401  (re-exported)
-from ..common.tolerances import FLOOR, SAME
 from ..solver.compiler import compile_plan
 from ..steps.base import Instant
 from ..scene import FixedPath, Scene
 from ..scene.force_records import rolling_body
+from .json_safe import finite_only, useful_bounds
+from .structure import structural_warnings
 
 __all__ = ["solve", "Solution", "PinRubbing", "sense", "fmt_angular"]
 
@@ -110,6 +111,19 @@ class Solution(Motion):
         return t
 
     @property
+    def cylinder_force(self):
+        """(cylinder, F) where the motion is given as a cylinder's rate of extension vs (the
+        cylinder drives: the effort is a force along it, not a torque on the crank): F by
+        power balance, ``F vs = T omega``, + pushing its ends apart. None otherwise (no
+        loads, another driver, a standstill)."""
+        sc, t = self.scene, self.input_torque
+        g = sc.input.given
+        if t is None or g is None or g.kind != "vs" or g.value == 0 or sc.input.second:
+            return None
+        key = next((c.key for c in sc.cylinders if c.key == g.names[0]), None)
+        return None if key is None else (key, t * sc.input.omega / g.value)
+
+    @property
     def forces(self):
         """The force analysis (:class:`~polygon_method.forces.Forces`) where the scene gives
         masses or gravity, else None. Raises a one-line
@@ -155,7 +169,7 @@ class Solution(Motion):
                 for st in self.plan.steps
                 if (c := self.cond.get(st.index, 1.0)) < TOL.warn
             )
-            out += _structural_warnings(self)
+            out += structural_warnings(self)
             res = self.plan.given
             if res is not None and res.condition < TOL.warn:
                 g = self.scene.input.given
@@ -377,12 +391,12 @@ class Solution(Motion):
         ]
         d["warnings"] = warnings
         d["notes"] = list(self.notes)
-        d["error_bounds"] = _useful(bounds_dict(self, self.error_bounds))
+        d["error_bounds"] = useful_bounds(bounds_dict(self, self.error_bounds))
         if sc.has_forces and not refused:  # each force's bound, null where none is useful
             from ..forces.bounds import bounds_dict as force_bounds_dict, force_bounds
 
             d["error_bounds"]["forces"] = force_bounds_dict(force_bounds(self))
-        return _finite(d)
+        return finite_only(d)
 
     def value(self, kind: str, names: tuple):
         """The exact value behind an answer key (``kind`` as in ``[answers]``)."""
@@ -429,106 +443,6 @@ class Solution(Motion):
                 if got is not None:
                     return hypot(*got[1 if kind == "vI" else 2])
         raise KeyError(kind)
-
-
-def _useful(d: dict) -> dict:
-    """The JSON's ``error_bounds`` with each bound of :data:`USELESS` or more (no useful
-    bound: it may be as large as the largest value of its kind) written as None, and
-    ``no_useful_bound`` giving their count and the reason."""
-    count = [0]
-
-    def clean(x):
-        if isinstance(x, dict):
-            return {k: clean(v) for k, v in x.items()}
-        if x < USELESS:
-            return float(x)
-        count[0] += 1
-        return None
-
-    out = {"relative_to": d["relative_to"]}
-    out.update(clean({k: v for k, v in d.items() if k != "relative_to"}))
-    if count[0]:
-        out["no_useful_bound"] = {"count": count[0] - (out["worst"] is None), "reason": NO_BOUND}
-    return out
-
-
-def _finite(d: dict) -> dict:
-    """``d`` with every number JSON cannot hold (an overflow to inf, an undefined value)
-    written as None, and a warning saying so: the JSON never holds NaN or inf."""
-    bad = []
-
-    def clean(x, where):
-        if isinstance(x, float):
-            if x - x == 0.0:  # finite
-                return x
-            bad.append(where)
-            return None
-        if isinstance(x, dict):
-            return {k: clean(v, f"{where}.{k}" if where else str(k)) for k, v in x.items()}
-        if isinstance(x, (list, tuple)):
-            return [clean(v, where) for v in x]
-        return x
-
-    out = clean(d, "")
-    if bad:
-        out["warnings"].append(
-            f"{len(bad)} number(s) overflowed or are undefined, written "
-            f"as null: {', '.join(dict.fromkeys(bad[:5]))}" + (" ..." if len(bad) > 5 else "")
-        )
-    return out
-
-
-def _structural_warnings(sol) -> tuple:
-    """Lines for what the scene says that is likely not meant: a moving point placed on a
-    fixed pivot, or on a link that is fixed (its velocity is zero because of where it
-    sits, not because of the motion), and lengths in metres that look like millimetres."""
-    sc = sol.scene
-    out = []
-    size = max([lk.length for lk in sc.links] + [FLOOR])
-    u, unit = sc.length_unit, sc.units
-    fixed = sol.plan.fixed_links
-    for cp in sc.points:
-        lk = sc.link(cp.link)
-        if lk.key in fixed:
-            out.append(
-                f"point {cp.name} is on link {lk.key}, whose ends are both fixed: it "
-                "sits on the frame, so its velocity and acceleration are zero (was it "
-                "meant to be on a moving link?)"
-            )
-    for X in sc.point_names:
-        if X in sc.ground:
-            continue
-        for G, g in sc.ground.items():
-            if hypot(sol.P[X][0] - g[0], sol.P[X][1] - g[1]) > SAME * size:
-                continue
-            cp = sc.carried(X)
-            lk = sc.link(cp.link) if cp is not None else None
-            if lk is not None and lk.key in fixed:
-                break  # said above
-            if lk is not None and G in lk.points:
-                out.append(
-                    f"point {X} is placed on the fixed pivot {G} (on link {lk.key}, "
-                    f"0 {unit} from {G}): it does not move, so its velocity and "
-                    "acceleration are zero"
-                )
-            else:
-                out.append(
-                    f"point {X} is at the fixed pivot {G} at this instant (the "
-                    f"mechanism passes through {G}'s place, at ({g[0] / u:g}, "
-                    f"{g[1] / u:g}) {unit}): check the figure"
-                )
-            break
-    if unit == "m" and sc.links:
-        lengths = [lk.length for lk in sc.links]
-        crank = sc.link(sc.input.crank) if sc.input.crank is not None else None
-        pin = abs(sc.input.omega or 0.0) * crank.length if crank is not None else 0.0
-        if min(lengths) >= 5.0 and pin > 60.0:
-            out.append(
-                f'units = "m", yet the links are {min(lengths):g} to '
-                f"{max(lengths):g} m long (the crank pin would move at {pin:.4g} m/s): "
-                'if the lengths are millimetres, write units = "mm"'
-            )
-    return tuple(out)
 
 
 def solve(scene: Scene) -> Solution:

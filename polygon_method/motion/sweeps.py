@@ -211,8 +211,9 @@ class SweepResult(Motion):
             if f.driver == "crank"
             else ("force_inertia", "N", np.broadcast_to(f.input_torque, n))
         ]
-        if f.second_crank is not None:
-            cols.append(("torque2_inertia", "N m", np.broadcast_to(f.second_torque, n)))
+        if f.second_crank is not None:  # a second crank's torque, a second collar's force
+            two = ("force2_inertia", "N") if f.second_crank.startswith("block ") else None
+            cols.append((*(two or ("torque2_inertia", "N m")), np.broadcast_to(f.second_torque, n)))
         cols += [
             ("shake_x", "N", np.broadcast_to(f.shaking_force[0], n)),
             ("shake_y", "N", np.broadcast_to(f.shaking_force[1], n)),

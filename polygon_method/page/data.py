@@ -26,21 +26,22 @@ from ..draw.style import (
     STYLE,
 )
 from ..solver.errorbound import USELESS
-from ..common.errors import TOL, PolygonMethodError
-from ..forces import analyse, side_label, Side
+from ..common.errors import TOL
+from ..common.tolerances import PAGE
 from ..common.numbers import quiet, sense
 from ..draw.plots import MARKS, SERIES_COLORS
-from ..polygons.scales import DIAGRAMS, display_unit, newton_scale
+from ..polygons.scales import DIAGRAMS, display_unit
 from ..scene import Link
 from ..steps import image_name, slot_labels, under_label
+from .force_layer import FORCES_CM, force_layers, offset_points
 from .frames import Frames, round_sig
 
-__all__ = ["page_data", "diagram_box", "page_style"]
+__all__ = ["page_data", "diagram_box", "page_style", "offset_points"]
 
 #: the largest polygon a diagram's box holds, in times the median polygon of the cycle
 REACH = 1.5
-#: the longest inertia force's arrow over the cycle on the page's configuration (cm)
-INERTIA_CM = 3.0
+#: the longest force's arrow over the cycle on the page's configuration (cm)
+INERTIA_CM = FORCES_CM
 
 
 def _flat(xy) -> list:
@@ -173,74 +174,14 @@ def _unders(sol) -> dict:
     return out
 
 
-def inertia_arrows(res, n):
-    """The inertia forces ``-m a_G`` of a scene with masses, per frame, drawn at G on the
-    configuration diagram at one round force scale (the largest over the cycle at most
-    :data:`INERTIA_CM`), each along the line offset from G that carries the couple
-    (:func:`offset_points`, ``H``): ``{"text", "perCm", "bodies": [{"body", "label", "G",
-    "F", "H"}]}``;
-    None without masses, or where the force analysis does not cover the plan."""
-    if not res.scene.has_forces:
-        return None
-    try:
-        f = analyse(res)
-    except PolygonMethodError:
-        return None
-    if not f.inertia:
-        return None
-    size = max(float(np.max(np.broadcast_to(np.hypot(*i.force), (n,)))) for i in f.inertia)
-    s = newton_scale(size, INERTIA_CM)
-    reach = max(lk.length for lk in res.scene.links)
-    return {
-        "text": display_unit(s.text),
-        "perCm": s.per_cm,
-        "bodies": [
-            {
-                "body": i.body,
-                "label": side_label(
-                    Side("inertia", i.body, "", "", (0.0, 0.0), (0.0, 0.0)), f.numbers
-                ),
-                "G": _flat(i.G),
-                "F": _flat(i.force),
-                "H": _flat(offset_points(i, n, reach)),
-            }
-            for i in f.inertia
-        ],
-    }
-
-
-def offset_points(inertia, n, reach):
-    """Per frame, the point of the single resultant's line nearest G, as a book draws the
-    inertia force: ``G + (M / |F|^2) (Fy, -Fx)`` with M the couple ``-I alpha`` (its moment
-    about G is then M); G itself where the body has no couple, no force, or where the line
-    would lie farther than ``reach`` (the longest link) from G (the force nearly zero: the
-    couple alone).
-
-    >>> from types import SimpleNamespace as NS
-    >>> i = NS(G=(0.0, 0.0), force=(10.0, 0.0), couple=-2.0)   # moment of F at H: -2
-    >>> [round(float(c), 12) for c in np.ravel(offset_points(i, 1, 1.0))]
-    [0.0, 0.2]
-    """
-    gx, gy = (np.broadcast_to(np.asarray(c, dtype=float), (n,)) for c in inertia.G)
-    fx, fy = (np.broadcast_to(np.asarray(c, dtype=float), (n,)) for c in inertia.force)
-    m = np.broadcast_to(np.asarray(inertia.couple, dtype=float), (n,))
-    f2 = fx * fx + fy * fy
-    with np.errstate(divide="ignore", invalid="ignore"):
-        k = np.where(f2 > 0, m / np.where(f2 > 0, f2, 1.0), 0.0)
-    dx, dy = k * fy, -k * fx
-    far = np.hypot(dx, dy) > reach
-    dx, dy = np.where(far, 0.0, dx), np.where(far, 0.0, dy)
-    return gx + dx, gy + dy
-
-
 def page_style() -> dict:
     """The drawings' colours, widths (pt) and dashes (in line widths), as ``draw`` and
     ``sweep --plot`` have them (:mod:`polygon_method.draw.style`), for the page's script."""
     lines = {k: [c, w, list(d) if d else None] for k, (c, w, d) in STYLE.items()}
     lines["line"] = [LINE_STYLE[0], LINE_STYLE[1], list(LINE_STYLE[2])]
     lines["pitch"] = [PITCH_STYLE[0], PITCH_STYLE[1], list(PITCH_STYLE[2])]
-    c, w, _ = FORCE_STYLE["inertia"]
-    lines["inertia"] = [c, w, None]
+    for kind, (c, w, _) in FORCE_STYLE.items():  # the forces' arrows, as the sheet's
+        lines[kind] = [c, w, None]
     return {
         "lines": lines,
         "head": [HEAD_LEN, HEAD_HALF],
@@ -301,6 +242,7 @@ def page_data(fr: Frames) -> dict:
         "fullTurn": fr.full_turn,
         "limits": fr.limits_text,
         "cycle": fr.cycle_degrees,  # the angles shown modulo it (720: a four-stroke)
+        "tol": PAGE,  # the script's tolerances, by name (common/tolerances.py)
         "crank": sc.input.crank,
         "pivot": sc.input.pivot,
         **({} if sol.plan.steps[0].periodic else {"param": list(fr.parameter)}),
@@ -336,8 +278,8 @@ def page_data(fr: Frames) -> dict:
         "sense": sense(sc.input.omega),
         "warnBelow": TOL.warn,
         "style": page_style(),
-        "inertia": inertia_arrows(res, n),
     }
+    d["inertia"], d["forces"] = force_layers(res, n)
     conds = [
         (st.label, np.broadcast_to(res.cond[st.index], (n,)))
         for st in res.plan.steps

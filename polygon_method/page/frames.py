@@ -24,6 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..common.tolerances import ROUNDING
 from ..common.errors import SceneError
 from ..polygons.scales import diagram_scales
 from ..motion.solution import solve
@@ -152,7 +153,7 @@ def frame_angles(scene, n: int, domain) -> tuple[np.ndarray, int]:
     pad = INSIDE * (hi - lo)
     th = np.linspace(lo + pad, hi - pad, max(n - 1, 1))
     k = int(np.searchsorted(th, t0))
-    near = [j for j in (k - 1, k) if 0 <= j < len(th) and abs(th[j] - t0) <= 1e-12 * (hi - lo)]
+    near = [j for j in (k - 1, k) if 0 <= j < len(th) and abs(th[j] - t0) <= ROUNDING * (hi - lo)]
     if near:  # the instant is a frame already (0 in a range symmetric about it): n frames
         th = np.linspace(lo + pad, hi - pad, n)  # of which the nearest is the instant,
         k = int(np.argmin(np.abs(th - t0)))  # none twice

@@ -20,7 +20,15 @@ from html import escape
 from importlib.resources import files
 
 from ..check.verdicts import correct_text
-from ..draw.style import BODY_EDGE, BODY_FACE, IMAGE_FACE, LEGEND_NAMES, LINE_STYLE, STYLE
+from ..draw.style import (
+    BODY_EDGE,
+    BODY_FACE,
+    FORCE_STYLE,
+    IMAGE_FACE,
+    LEGEND_NAMES,
+    LINE_STYLE,
+    STYLE,
+)
 from ..common.numbers import fmt
 from ..draw.plots import MARK_NAMES, MARKS
 from ..text.steptable import steps_blocks
@@ -158,17 +166,37 @@ def _cycle_words(fr: Frames) -> str:
     )
 
 
+def _sw(kind: str) -> str:
+    """A force's colour in words for the caption: a short bar of its colour."""
+    c = FORCE_STYLE[kind][0]
+    return f'<span class="sw" style="display:inline-block;width:1em;height:0.25em;background:{c}"></span>'
+
+
+def _forces_caption(d: dict) -> str:
+    """The configuration's caption's forces: the inertia forces' scale, and the toggle of
+    the layer of the other forces (at the same scale)."""
+    out = ""
+    if d.get("inertia"):
+        text = escape(d["inertia"]["text"])
+        out += f'; inertia forces (each on its line h from G): <b id="scale-inertia">{text}</b>'
+    if d.get("forces"):
+        text = escape(d["forces"]["text"])
+        out += (
+            '; <label class="toggle"><input type="checkbox" id="show-forces"> the pin '
+            f"({_sw('pin')}), guide ({_sw('guide')}) and contact ({_sw('contact')}) forces, "
+            f"loads ({_sw('load')}), weights ({_sw('weight')}) and couples</label> "
+            + ("(the same scale)" if d.get("inertia") else f'at <b id="scale-forces">{text}</b>')
+        )
+    return out
+
+
 def _figures_html(d: dict) -> str:
     """Each diagram's figure: its caption with its scale (the configuration's with the inertia
     forces' scale too) and the empty SVG the script draws into."""
     figs = []
     for s in d["scales"]:
         diagram = s["diagram"]
-        forces = (
-            ""
-            if diagram != "configuration" or not d.get("inertia")
-            else f'; inertia forces (each on its line h from G): <b id="scale-inertia">{escape(d["inertia"]["text"])}</b>'
-        )
+        forces = "" if diagram != "configuration" else _forces_caption(d)
         figs.append(
             f'<figure><figcaption>{escape(_CAPTION[diagram])}: <b class="scale" '
             f'id="scale-{diagram}">{escape(s["text"])}</b>{forces}</figcaption>'

@@ -17,6 +17,7 @@ const PT = 25.4 / 72;         // a point (line widths, dashes) in mm
 const FS = 3.6;               // the labels' size (mm)
 const FILL = {configuration: 0.86, velocity: 0.8, acceleration: 0.8};  // most of a panel a diagram takes
 const REST = 0.01;            // a polygon under this share of its median size is at rest
+const TOL = D.tol;            // the tolerances, by name: same, rounding, floor
 let frame = D.start;
 
 // numbers as the tool writes them: four significant figures, no exponent for usual sizes
@@ -95,7 +96,7 @@ function bbox(pts) {
 const span = (b) => Math.max(b[2] - b[0], b[3] - b[1]);
 function roundUp(x) {  // the smallest 1, 2 or 5 x 10^k that is at least x
   const e = Math.floor(Math.log10(x)), m = x / 10 ** e;
-  return [1, 2, 5, 10].find((s) => s >= m * (1 - 1e-9)) * 10 ** e;
+  return [1, 2, 5, 10].find((s) => s >= m * (1 - TOL.same)) * 10 ** e;
 }
 const factor = (phase) => phase === "configuration" ? D.unit : 1;  // SI per unit of the scale's text
 const unitText = (phase) => phase === "configuration" ? D.units : UNIT[phase];
@@ -116,7 +117,7 @@ function layout() {
         all = [Math.min(all[0], b[0]), Math.min(all[1], b[1]), Math.max(all[2], b[2]), Math.max(all[3], b[3])];
       }
       sizes.sort((a, b) => a - b);
-      v.rest = Math.max(REST * sizes[Math.floor(N / 2)], 1e-12);
+      v.rest = Math.max(REST * sizes[Math.floor(N / 2)], TOL.rounding);
       v.all = all;  // the configuration's box over the cycle
     }
   }
@@ -127,7 +128,7 @@ function frameView(phase, k) {
   const w = Math.max(b[2] - b[0], v.rest), h = Math.max(b[3] - b[1], v.rest);
   const need = 10 * Math.max(w / (FILL[phase] * v.W), h / (FILL[phase] * v.H)) / factor(phase);
   v.per = roundUp(need) * factor(phase);
-  if (phase === "configuration" && D.inertia) return withArrows(v, need);
+  if (phase === "configuration" && (D.inertia || D.forces)) return withArrows(v, need);
   v.text = "1 cm = " + fmt(v.per / factor(phase)) + " " + unitText(phase);
   v.box = [5 * (b[0] + b[2]) / v.per - v.W / 2, -5 * (b[1] + b[3]) / v.per - v.H / 2];
   v.box.push(v.box[0] + v.W, v.box[1] + v.H);  // [x0, y0, x1, y1] in mm, y down
@@ -135,28 +136,40 @@ function frameView(phase, k) {
 }
 // the configuration with the inertia forces' arrows (their own scale, in mm of the panel):
 // the smallest round scale at which the mechanism and every arrow over the cycle fit
+const FORCES = D.forces || D.inertia;  // one force scale for every arrow on the configuration
+const COUPLE_MM = 1.8;                 // a couple's curved arrow: its radius (mm)
+// whether the layer of the joints' forces, loads and couples is shown (its toggle)
+const forcesOn = () => { const c = document.getElementById("show-forces"); return !!(c && c.checked); };
 function arrowsBox(per) {  // [x0, y0, x1, y1] in mm, y down
-  const b = [Infinity, Infinity, -Infinity, -Infinity], f = 10 / D.inertia.perCm;
+  const b = [Infinity, Infinity, -Infinity, -Infinity], f = 10 / FORCES.perCm;
   const put = (x, y) => { b[0] = Math.min(b[0], x); b[1] = Math.min(b[1], y); b[2] = Math.max(b[2], x); b[3] = Math.max(b[3], y); };
+  const from = (at, F, k) => {  // an arrow from its point of application along its force
+    const x = 10 * at[2 * k] / per, y = -10 * at[2 * k + 1] / per;
+    put(x, y); put(x + f * F[2 * k], y - f * F[2 * k + 1]);
+  };
   for (let k = 0; k < N; k++) {
     for (const [x, y] of vertices("configuration", k)) put(10 * x / per, -10 * y / per);
-    for (const a of D.inertia.bodies) {
-      const gx = 10 * a.G[2 * k] / per, gy = -10 * a.G[2 * k + 1] / per;
-      const hx = 10 * a.H[2 * k] / per, hy = -10 * a.H[2 * k + 1] / per;
-      put(gx, gy); put(hx, hy);
-      put(hx + f * a.F[2 * k], hy - f * a.F[2 * k + 1]);
+    for (const a of (D.inertia ? D.inertia.bodies : [])) {
+      put(10 * a.G[2 * k] / per, -10 * a.G[2 * k + 1] / per);
+      from(a.H, a.F, k);
+    }
+    if (!forcesOn()) continue;  // the layer off: the inertia forces alone
+    for (const a of (D.forces ? D.forces.arrows : [])) from(a.at, a.F, k);
+    for (const c of (D.forces ? D.forces.couples : [])) {
+      const x = 10 * c.at[2 * k] / per, y = -10 * c.at[2 * k + 1] / per, r = COUPLE_MM + 1;
+      put(x - r, y - r); put(x + r, y + r);
     }
   }
   return b;
 }
 function withArrows(v, need) {
-  if (v.fitted === undefined || v.fitted[0] !== v.W || v.fitted[1] !== v.H) {
+  if (v.fitted === undefined || v.fitted[0] !== v.W || v.fitted[1] !== v.H || v.fitted[4] !== forcesOn()) {
     let per = roundUp(need) * factor("configuration"), b = arrowsBox(per);
     for (let i = 0; i < 60 && (b[2] - b[0] > FILL.configuration * v.W || b[3] - b[1] > FILL.configuration * v.H); i++) {
       per = roundUp(per / factor("configuration") * 1.000001) * factor("configuration");
       b = arrowsBox(per);
     }
-    v.fitted = [v.W, v.H, per, b];
+    v.fitted = [v.W, v.H, per, b, forcesOn()];
   }
   const [, , per, b] = v.fitted;
   v.per = per;
@@ -207,7 +220,7 @@ function poly(e, pts) { e.setAttribute("points", pts.map((a) => r3(a[0]) + "," +
 function clipLine(c, u, r) {
   let t0 = -Infinity, t1 = Infinity;
   for (const [p, q, lo, hi] of [[c[0], u[0], r[0], r[2]], [c[1], u[1], r[1], r[3]]]) {
-    if (Math.abs(q) < 1e-12) { if (p < lo || p > hi) return null; continue; }
+    if (Math.abs(q) < TOL.rounding) { if (p < lo || p > hi) return null; continue; }
     const a = (lo - p) / q, b = (hi - p) / q;
     t0 = Math.max(t0, Math.min(a, b)); t1 = Math.min(t1, Math.max(a, b));
   }
@@ -234,10 +247,20 @@ function setup(phase) {
     for (const [p, q, key] of D.links) add(el(svg, "line", {class: "link", stroke: D.style.body[1], id: "c-link-" + key}, "link:" + key), "link", [p, q, key]);
     for (const s of D.sliders) add(el(svg, "polygon", {class: "block", fill: D.style.body[0], stroke: D.style.body[1]}, "slider:" + s.key), "block", s);
     for (const p in D.ground) add(el(svg, "polygon", {class: "ground"}, "ground:" + p), "ground", p);
+    const heads = {}, headOf = (kind) => heads[kind] || (heads[kind] = head(kind));
     if (D.inertia) for (const b of D.inertia.bodies) {  // each inertia force -m a_G, along
       // its line offset from G by h = I alpha / (m a_G) (the couple taken into the force)
       add(el(svg, "line", styled("inertia", {"stroke-width": r3(0.6 * PT), "stroke-dasharray": r3(2 * PT) + " " + r3(1.5 * PT)}), "offset:" + b.body), "offset", b);
-      add(el(svg, "line", styled("inertia", {"marker-end": head("inertia")}), "inertia:" + b.body), "inertia", b);
+      add(el(svg, "line", styled("inertia", {"marker-end": headOf("inertia"), class: "inertia-force", "data-on": b.body}), "inertia:" + b.body), "inertia", b);
+      // where no line carries the couple (the force nearly nil): the couple alone, at G
+      add(el(svg, "path", styled("inertia", {"marker-end": headOf("inertia"), class: "inertia-couple", "data-on": b.body}), "icouple:" + b.body), "icouple", b);
+    }
+    if (D.forces) {  // the layer of the joints' forces, loads, weights and couples
+      const g = el(svg, "g", {id: "force-layer"});  // (each element hidden while the layer is off)
+      D.forces.arrows.forEach((a, i) => add(el(g, "line", styled(a.what, {"marker-end": headOf(a.what), class: "force",
+        "data-what": a.what, "data-on": a.on, "data-by": a.by || ""}), "force:" + i), "force", a));
+      D.forces.couples.forEach((c, i) => add(el(g, "path", styled("pin", {"marker-end": headOf("pin"), class: "couple",
+        "data-what": c.what, "data-on": c.on}), "couple:" + i), "couple", c));
     }
     for (const p of Object.keys(D.ground).concat(D.points)) {
       add(el(svg, "circle", {class: "joint point", r: r3(FS * 0.18), stroke: D.style.body[1]}, "point:" + p), "joint", p);
@@ -322,23 +345,40 @@ function update(phase, k) {
       let sx = 0, sy = 0;
       for (const p of D.points) { const c = P(p); const L = Math.hypot(c[0], c[1]) || 1; sx += c[0] / L; sy += c[1] / L; }
       const L = Math.hypot(sx, sy);
-      const u = L > 1e-9 ? [-sx / L, -sy / L] : [-0.7, 0.7];
+      const u = L > TOL.same ? [-sx / L, -sy / L] : [-0.7, 0.7];
       pole = keepIn([0.8 * fs * u[0], 0.8 * fs * u[1]], v.box, e.lastChild.nodeValue.length);
       place(e, pole);
       pole = [pole[0], pole[1] - 0.35 * fs];  // its middle, which the other labels keep clear of
     } else if (kind === "label") labels.push([e, P(x)]);
-    else if (kind === "inertia") {  // at the inertia forces' own scale (cm of the panel)
-      const h = C([x.H[2 * k], x.H[2 * k + 1]]), F = [x.F[2 * k], x.F[2 * k + 1]];
-      const d = [10 * F[0] / D.inertia.perCm, -10 * F[1] / D.inertia.perCm];
-      e.style.display = Math.hypot(d[0], d[1]) < 0.5 ? "none" : "";
-      line(e, h, [h[0] + d[0], h[1] + d[1]]);
-    } else if (kind === "offset") {  // G to the force's line, where it is off G
+    else if (kind === "inertia") arrowAt(e, x.H, x.F, k, 0.5);  // on its line h from G
+    else if (kind === "force") { arrowAt(e, x.at, x.F, k, 0.3); if (!forcesOn()) e.style.display = "none"; }
+    else if (kind === "icouple") coupleAt(e, x.G, x.C, k);
+    else if (kind === "couple") { coupleAt(e, x.at, x.C, k); if (!forcesOn()) e.style.display = "none"; } else if (kind === "offset") {  // G to the force's line, where it is off G
       const g = C([x.G[2 * k], x.G[2 * k + 1]]), h = C([x.H[2 * k], x.H[2 * k + 1]]);
       e.style.display = Math.hypot(h[0] - g[0], h[1] - g[1]) < 0.5 ? "none" : "";
       line(e, g, h);
     }
   }
   placeLabels(labels, phase, v.box, pole);
+}
+// a force's arrow from its point of application, at the forces' scale (cm of the panel);
+// its numbers (SI, every bit) kept on the element, as drawn, for a reader or a test
+function arrowAt(e, at, F, k, least) {
+  const a = [at[2 * k], at[2 * k + 1]], f = [F[2 * k], F[2 * k + 1]], p = toMm("configuration", a);
+  const d = [10 * f[0] / FORCES.perCm, -10 * f[1] / FORCES.perCm];
+  e.style.display = Math.hypot(d[0], d[1]) < least ? "none" : "";
+  line(e, p, [p[0] + d[0], p[1] + d[1]]);
+  Object.assign(e.dataset, {x: a[0], y: a[1], fx: f[0], fy: f[1]});
+}
+// a couple: three quarters of a circle round its point, the head showing its sense
+function coupleAt(e, at, C, k) {
+  const a = [at[2 * k], at[2 * k + 1]], c = C[k], p = toMm("configuration", a), r = COUPLE_MM;
+  e.dataset.x = a[0]; e.dataset.y = a[1]; e.dataset.c = c;
+  e.style.display = Math.abs(c) <= 1e-9 * FORCES.perCm ? "none" : "";
+  const s = c > 0 ? 1 : -1, a0 = c > 0 ? -0.75 * Math.PI : -0.25 * Math.PI, a1 = a0 + s * 1.5 * Math.PI;
+  const q = (t) => [p[0] + r * Math.cos(t), p[1] - r * Math.sin(t)];  // (y down on the screen)
+  const [x0, y0] = q(a0), [x1, y1] = q(a1);
+  e.setAttribute("d", "M" + r3(x0) + "," + r3(y0) + " A" + r3(r) + "," + r3(r) + " 0 1 " + (c > 0 ? 0 : 1) + " " + r3(x1) + "," + r3(y1));
 }
 // a label's place moved inside the panel (its text is about 0.6 fs wide a letter)
 function keepIn(q, box, letters) {
@@ -357,7 +397,7 @@ function placeLabels(labels, phase, box, pole) {
     pts.every((c, i) => i === own || Math.hypot(q[0] - c[0], q[1] - c[1]) > 0.6 * fs);
   labels.forEach(([e], i) => {
     const c = pts[i], L = Math.hypot(c[0], c[1]);
-    const a0 = phase === "configuration" || L < 1e-9 ? -Math.PI / 4 : Math.atan2(c[1], c[0]);
+    const a0 = phase === "configuration" || L < TOL.same ? -Math.PI / 4 : Math.atan2(c[1], c[0]);
     let best = null;
     for (const turn of [0, 1, -1, 2, -2, 3, -3, 4]) {
       const a = a0 + turn * Math.PI / 4, q = [c[0] + 0.75 * fs * Math.cos(a), c[1] + 0.75 * fs * Math.sin(a)];
@@ -457,6 +497,21 @@ function tipText(tip, k) {
       " N, opposite to a_G, " + (h > 0 ? "along the line h = " + fmt(h / f) + " " + u + " from G that carries the couple I·α" : "through G") +
       " (drawn at " + D.inertia.text + ")";
   }
+  if (kind === "force") {
+    const a = D.forces.arrows[Number(name)], F = [a.F[2 * k], a.F[2 * k + 1]];
+    const dir = Math.round(10 * Math.atan2(F[1], F[0]) * 180 / Math.PI) / 10;
+    return a.label + ": the " + ({pin: "pin force", guide: "guide's force", contact: "contact force", driver: "driver's force",
+      load: "load", gas: "gas force", weight: "weight", friction: "friction force"}[a.what] || "force") + " on " + a.on +
+      (a.by ? " by " + a.by + " (" + a.by + " feels its opposite)" : "") + " = " + fmt(Math.hypot(F[0], F[1])) +
+      " N at " + dir + "° (drawn at " + FORCES.text + ")";
+  }
+  if (kind === "couple" || kind === "icouple") {
+    const c = kind === "couple" ? D.forces.couples[Number(name)] : D.inertia.bodies.find((x) => x.body === name);
+    const C = c.C[k];
+    return (kind === "couple" ? c.label + ": the " + ({torque: "driver's torque", guide: "guide's couple", load: "couple",
+      friction: "friction couple"}[c.what] || "couple") + " on " + c.on : "the inertia couple −I·α of " + name + ", no single force carrying it") +
+      " = " + fmt(Math.abs(C)) + " N m " + (C > 0 ? "ccw" : C < 0 ? "cw" : "");
+  }
   if (kind === "offset") {
     const b = D.inertia.bodies.find((x) => x.body === name);
     return "the inertia force of " + name + " is offset from G by h = I·α / (m·a_G) = " +
@@ -486,7 +541,7 @@ const PLOTS = [
 ];
 function roundTicks(lo, hi, most) {  // round ticks (1, 2, 5 x 10^k apart) over [lo, hi]
   const step = roundUp((hi - lo) / most), out = [];
-  for (let t = Math.ceil(lo / step - 1e-9) * step; t <= hi + 1e-9 * step; t += step) out.push(Math.abs(t) < 1e-9 * step ? 0 : t);
+  for (let t = Math.ceil(lo / step - TOL.same) * step; t <= hi + TOL.same * step; t += step) out.push(Math.abs(t) < TOL.same * step ? 0 : t);
   return out;
 }
 function typeset(parent, attrs, [base, s]) {
@@ -521,9 +576,9 @@ function buildPlots() {
     const q = (x) => all[Math.min(all.length - 1, Math.floor(x * all.length))];
     const lo5 = q(0.05), hi95 = q(0.95), room = 0.5 * (hi95 - lo5);
     let ymin = Math.min(0, Math.max(all[0], lo5 - room)), ymax = Math.max(0, Math.min(all[all.length - 1], hi95 + room));
-    if (!(ymax - ymin > 1e-12 * Math.max(Math.abs(ymin), Math.abs(ymax), 1e-300))) { ymax = ymin + Math.max(1, Math.abs(ymin)); }
+    if (!(ymax - ymin > TOL.rounding * Math.max(Math.abs(ymin), Math.abs(ymax), TOL.floor))) { ymax = ymin + Math.max(1, Math.abs(ymin)); }
     const yt = roundTicks(ymin, ymax, 4), step = yt.length > 1 ? yt[1] - yt[0] : ymax - ymin;
-    ymin = Math.min(ymin, Math.floor(ymin / step + 1e-9) * step); ymax = Math.max(ymax, Math.ceil(ymax / step - 1e-9) * step);
+    ymin = Math.min(ymin, Math.floor(ymin / step + TOL.same) * step); ymax = Math.max(ymax, Math.ceil(ymax / step - TOL.same) * step);
     const Y = (y) => T + (H - T - B) * (ymax - y) / (ymax - ymin);
     const clip = el(el(svg, "defs", {}), "clipPath", {id: id + "-clip"});
     el(clip, "rect", {x: L, y: T, width: W - L - R, height: H - T - B});
@@ -533,7 +588,7 @@ function buildPlots() {
       text(svg, {x: L - 3, y: r3(Y(y) + 3.5), class: "tick", "text-anchor": "end"}, fmt(y, 3));
     }
     const turned = Math.abs(t1 - t0), dstep = [5, 10, 15, 30, 45, 60, 90, 180].find((s) => turned / s <= 6) || 360;
-    for (let j = Math.ceil(Math.min(t0, t1) / dstep - 1e-9); j * dstep <= Math.max(t0, t1) + 1e-9; j++) {
+    for (let j = Math.ceil(Math.min(t0, t1) / dstep - TOL.same); j * dstep <= Math.max(t0, t1) + TOL.same; j++) {
       const t = j * dstep;  // a round angle, written between 0 and the cycle (360 or 720)
       el(svg, "line", {x1: r3(X(t)), y1: T, x2: r3(X(t)), y2: H - B, class: "grid"});
       text(svg, {x: r3(X(t)), y: H - B + 11, class: "tick", "text-anchor": "middle"}, D.param ? at(t) : String(inCycle(t)) + "°");
@@ -581,6 +636,8 @@ play.addEventListener("click", () => {
   else { clearInterval(timer); timer = null; play.textContent = "▶ play"; }
 });
 slider.max = N - 1;
+const showForces = document.getElementById("show-forces");
+if (showForces) showForces.addEventListener("change", () => show(frame));
 slider.addEventListener("input", () => show(Number(slider.value)));
 window.addEventListener("resize", () => { layout(); show(frame); });
 layout();

@@ -25,6 +25,7 @@ from decimal import Decimal
 
 import numpy as np
 
+from ..common.tolerances import ON_PAPER, ROUNDING, SAME
 from ..draw.style import (
     BODY_EDGE,
     BODY_FACE,
@@ -63,7 +64,7 @@ def round_up(x) -> np.ndarray:
     x = np.asarray(x, dtype=float)
     e = np.floor(np.log10(x))
     m = x / 10.0**e
-    step = np.select([m <= 1 + 1e-9, m <= 2 + 1e-9, m <= 5 + 1e-9], [1.0, 2.0, 5.0], 10.0)
+    step = np.select([m <= 1 + SAME, m <= 2 + SAME, m <= 5 + SAME], [1.0, 2.0, 5.0], 10.0)
     return np.array([float(f"{s * 10.0**k:.1g}") for s, k in zip(step.ravel(), e.ravel())])
 
 
@@ -208,7 +209,7 @@ class Pictures:
             lo = np.broadcast_to(lo.min(axis=0), lo.shape)
             hi = np.broadcast_to(hi.max(axis=0), hi.shape)
         size = (hi - lo).max(axis=1)
-        rest = max(REST * float(np.median(size)), 1e-12)
+        rest = max(REST * float(np.median(size)), ROUNDING)
         need = np.maximum(hi - lo, rest).max(axis=1) / (FILL[phase] * PANEL / PX_PER_CM)
         f = self.d["unit"] if phase == "configuration" else 1.0
         return round_up(need / f) * f, (lo + hi) / 2
@@ -292,7 +293,7 @@ class _Panel:
         L, half = HEAD_LEN * PX_PER_CM * SS, HEAD_HALF * PX_PER_CM * SS
         dx, dy = b[0] - a[0], b[1] - a[1]
         n = math.hypot(dx, dy)
-        if n < 1e-9:
+        if n < ON_PAPER:
             return
         ux, uy = dx / n, dy / n
         end = (b[0] - ux * L * 0.8, b[1] - uy * L * 0.8) if head and n > L else b

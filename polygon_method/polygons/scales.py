@@ -21,7 +21,7 @@ from decimal import Decimal
 from .constructions import acceleration_constructions, drawn_vectors, velocity_constructions
 from ..common.errors import PolygonMethodError, SceneError
 from ..common.units import UNITS
-from ..common.tolerances import ROUNDING
+from ..common.tolerances import ROUNDING, SAME
 
 __all__ = [
     "Scale",
@@ -351,7 +351,7 @@ def _fit_scale(sol, diagram, room) -> Scale:
 
 def coarser(scale: Scale) -> Scale:
     """The next round scale after ``scale`` (the drawing gets smaller)."""
-    return choose_scale(scale.per_cm * (1 + 1e-9), 1.0, unit=scale.unit)
+    return choose_scale(scale.per_cm * (1 + SAME), 1.0, unit=scale.unit)
 
 
 def finer(scale: Scale) -> Scale:
@@ -359,7 +359,7 @@ def finer(scale: Scale) -> Scale:
     s = choose_scale(scale.per_cm / 2.6, 1.0, unit=scale.unit)
     while True:
         n = coarser(s)
-        if n.per_cm >= scale.per_cm * (1 - 1e-9):
+        if n.per_cm >= scale.per_cm * (1 - SAME):
             return s
         s = n
 

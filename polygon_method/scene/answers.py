@@ -19,6 +19,7 @@ __all__ = ["decimal_comma", "ENGINE_ANSWERS", "under_block_names"]
 ENGINE_ANSWERS = {
     "piston_effort": "force",
     "crank_effort": "force",
+    "turning_moment": "torque",
     "T_mean": "torque",
     "dE_max": "energy",
     "I_flywheel": "moment_of_inertia",
@@ -212,9 +213,7 @@ class _Answers:
         line = self.line_of("answers", key)
         forces = getattr(self, "scene_forces", None)  # an answer file: its scene's
         if forces is None:
-            forces = (
-                bool(self.raw.get("masses")) or "gravity" in self.raw or "indicator" in self.raw
-            )
+            forces = "masses" in self.raw or "gravity" in self.raw or "indicator" in self.raw
         hint = lambda: self.key_hint(key, known, slider_names, pin_names, loads)  # noqa: E731
         read = decimal_comma(value)
         if read is None:
@@ -290,7 +289,9 @@ class _Answers:
                 f"unknown answer key{hint() or _suggest(key, examples)}; keys are v_X, "
                 "a_X, v_XY, a_XY, omega_L, alpha_L, vs_X, as_X, ac_X, rub_X, "
                 "torque, I_ij (a centre), vI_L, aI_L (a wheel's contact point), "
-                "F_X, N_X, Fi_L, Ci_L, h_L, Fc_L (forces)",
+                "F_X, N_X, Fi_L, Ci_L, h_L, Fc_L (forces), piston_effort, crank_effort, "
+                "turning_moment, rod_thrust, side_thrust, shaking_force, shaking_moment, "
+                "T_mean, dE_max, I_flywheel, m_flywheel (the force and engine chapters)",
                 "answers",
                 key,
             )

@@ -375,10 +375,10 @@ class _Input:
             )
         if speed.value == 0:
             raise self.error(
-                "the crank speed is zero: nothing moves (for the torque that "
-                "holds the loads at rest, a statics problem, give any speed, e.g. "
-                '"1 rad/s ccw": without [masses] the torque by power balance '
-                "does not depend on it)",
+                "the crank speed is zero: nothing moves (a statics problem: give any "
+                'speed, e.g. "1 rad/s ccw": without masses nothing depends on it; an empty '
+                "[masses] gives the pin forces too, weights at rest are [loads] at the "
+                "centres of mass)",
                 "input",
                 "speed",
             )

@@ -440,8 +440,7 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected
             assembly.setdefault(*hint)
         pins = self.pins(known)
         loads = self.loads(known)
-        masses = self.masses(points, sliders)
-        gravity = self.gravity()
+        masses, gravity = self.masses(points, sliders), self.gravity()
         friction = self.friction(pins)
         indicator = self.indicator(sliders)
         flywheel = self.flywheel()
@@ -485,6 +484,7 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected
             _link_index=index,
             rolling=tuple(rolling),
             masses=tuple(masses),
+            statics="masses" in self.raw,
             gravity=gravity,
             indicator=indicator,
             flywheel=flywheel,

@@ -441,10 +441,10 @@ class Scene:
     cylinders: tuple = ()
     #: wheels and gears rolling without slip (the scene's [rolling])
     rolling: tuple = ()
-    #: the bodies' masses (:class:`Mass`) and gravity (:class:`Gravity` or None), for the
-    #: force analysis; a scene without them is solved for its motion alone, as before
+    #: the force analysis: masses (:class:`Mass`), gravity, ``statics`` (an empty [masses])
     masses: tuple = ()
     gravity: Gravity | None = None
+    statics: bool = False
     #: the engine chapter: an indicator diagram (:class:`Indicator`) and the flywheel
     #: asked for (:class:`Flywheel`), or None
     indicator: Indicator | None = None
@@ -626,12 +626,8 @@ class Scene:
     @property
     def has_forces(self) -> bool:
         """Whether the scene asks for the force analysis: masses, gravity or friction."""
-        return (
-            bool(self.masses)
-            or self.gravity is not None
-            or self.indicator is not None
-            or self.friction is not None
-        )
+        asked = (self.gravity, self.indicator, self.friction)  # statics: an empty [masses]
+        return bool(self.masses) or self.statics or any(x is not None for x in asked)
 
     def rolling_of(self, point: str):
         """The rolling pair whose wheel has ``point`` as its rim point, or None."""

@@ -38,8 +38,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from ..common.tolerances import LEAST_REACH
 from ..common.errors import AssemblyError, SceneError
-from ..common.numbers import in_units
+from .rolling_contact import RollingContact, circle_rates, line_rates, rim_motion
 from .rolling_dims import GAP, arm_rate, follow_params, pair_of, rate, turned, wheel_params
 from .base import (
     Construction,
@@ -50,34 +51,9 @@ from .base import (
     image_label,
     pole_text,
     relative,
-    sub,
 )
 
 __all__ = ["RollingWheel", "line_rates", "circle_rates", "rim_motion", "recognise"]
-
-
-def line_rates(tx, ty, r, vx, vy, ax, ay):
-    """(omega, alpha) of a wheel of radius r rolling on a fixed line along t = perp(m),
-    its centre moving at v, a: ``v.t / r``, ``a.t / r``."""
-    return (vx * tx + vy * ty) / r, (ax * tx + ay * ty) / r
-
-
-def circle_rates(dx, dy, vdx, vdy, adx, ady, kd, kb, wb, ab):
-    """(omega, alpha) of a wheel rolling on a circle: ``kd omega_d + kb omega_B``,
-    ``kd alpha_d + kb alpha_B``, d = C - O the line of centres (its velocity vd and
-    acceleration ad), kd = 1 + e R/r, kb = -e R/r."""
-    n2 = dx * dx + dy * dy
-    c = dx * vdy - dy * vdx
-    wd = c / n2
-    ad = (dx * ady - dy * adx) / n2 - 2.0 * c * (dx * vdx + dy * vdy) / (n2 * n2)
-    return kd * wd + kb * wb, kd * ad + kb * ab
-
-
-def rim_motion(rx, ry, w, al, vcx, vcy, acx, acy):
-    """(vx, vy, ax, ay) of the wheel's point at C + r: ``v_C + w perp(r)``,
-    ``a_C - w^2 r + al perp(r)``."""
-    k = w * w
-    return (vcx - w * ry, vcy + w * rx, acx - k * rx - al * ry, acy - k * ry + al * rx)
 
 
 def recognise(g, name):
@@ -154,7 +130,7 @@ def recognise(g, name):
 
 
 @dataclass(frozen=True)
-class RollingWheel(Step):
+class RollingWheel(RollingContact, Step):
     """The point P of a wheel CP rolling without slip (see the module): its angle from the
     no-slip relation, ``v_P = v_C + omega perp(CP)``."""
 
@@ -197,14 +173,18 @@ class RollingWheel(Step):
 
     @property
     def finds(self):
+        """The wheel's point P (its rim point, the end of its link CP)."""
         return (self.rim,)
 
     @property
     def links(self):
+        """The wheel, whose omega and alpha follow from the no-slip relation."""
         return (self.wheel,)
 
     @property
     def needs(self):
+        """The wheel's centre; on a circle or a gear, that circle's centre too (and the points its
+        gear and its arm turn by, where the linkage turns them)."""
         if self.on == "line":
             return (self.centre,)
         more = (self.base_free[1],) if self.base_free else ()
@@ -213,16 +193,21 @@ class RollingWheel(Step):
 
     @property
     def needs_links(self):
+        """The gear it meshes with, whose omega enters its own (none on a line or a fixed
+        circle)."""
         return (self.base,) if self.base else ()
 
     @property
     def title(self):
+        """``wheel CA rolling on the line ...``, or a ring's ``ring ... meshing with ... inside
+        it``."""
         if self.ring:
             return f"ring {self.wheel} meshing with {self.where} inside it"
         return f"wheel {self.wheel} rolling on {self.where}"
 
     @property
     def params(self):
+        """Its dimensions as compiled (:func:`~polygon_method.steps.rolling_dims.wheel_params`)."""
         return self.dims
 
     #: its dimensions read the positions at the stated instant: on a line its centre's
@@ -230,6 +215,8 @@ class RollingWheel(Step):
     instant_dimensions = True
 
     def dimensions(self, scene, bodies, P=None):
+        """The same dimensions read from another scene of the same shape, at its stated instant
+        ``P`` (a wheel on a line needs its centre's place there)."""
         pr = pair_of(scene, self.wheel)
         if self.on == "line":
             if P is None:
@@ -254,10 +241,13 @@ class RollingWheel(Step):
         return prm
 
     def drawn(self, prm, pencil, P):
+        """The dimensions as a hand drawing sets them out: the link CP's length drawn with the
+        pencil's error, the rest as given."""
         return (prm[0] + pencil(),) + tuple(prm[1:])
 
     def reach(self):
-        return max(self.dims[0], self.dims[1], 1e-9)
+        """The larger of the link CP and the radius (a scale for its tolerances)."""
+        return max(self.dims[0], self.dims[1], LEAST_REACH)
 
     def place(self, P, prm, ctx, sigma=None):
         """The point at the compiler's instant (the scene's own): a centre off its line or
@@ -447,110 +437,6 @@ class RollingWheel(Step):
         p, v, a = gain * p_in + kp, gain * v_in + kv, gain * a_in + ka
         return p, v, a, v, a
 
-    # ----- what the views ask
-    def contact(self, P):
-        """The contact point I (the instantaneous centre of the wheel and what it rolls on)
-        and the unit normal m from I towards the centre."""
-        cx, cy = P[self.centre]
-        if self.on == "line":
-            ell, r, tx, ty, mx, my = self.dims[:6]
-            return (cx - r * mx, cy - r * my), (mx, my)
-        R = self.dims[2]
-        ox, oy = P[self.base_centre]
-        n = math.hypot(cx - ox, cy - oy)
-        ux, uy = (cx - ox) / n, (cy - oy) / n
-        if self.ring:  # the gear inside the ring: I on its far side from the ring's centre
-            return (ox - R * ux, oy - R * uy), (ux, uy)
-        e = -1.0 if self.inside else 1.0
-        return (ox + R * ux, oy + R * uy), (e * ux, e * uy)
-
-    def contact_motion(self, sol):
-        """(I, v_I, a_I): the contact point and the velocity and acceleration of the wheel's
-        point there (v_I is the base's point's velocity: no slip)."""
-        I, _ = self.contact(sol.P)
-        rx, ry = sub(I, sol.P[self.centre])
-        vx, vy, ax, ay = rim_motion(
-            rx, ry, sol.W[self.wheel], sol.Al[self.wheel], *sol.V[self.centre], *sol.A[self.centre]
-        )
-        return I, (vx, vy), (ax, ay)
-
-    def ratio_slips(self, sol):
-        """The tabular method's classic slips for a wheel on a circle or a gear whose arm
-        turns: (value of omega, code, words) for the turning relative to the arm given as
-        the wheel's own (the row 'all locked' left out) and, on a gear, the ratio of fixed
-        centres (the arm's motion left out)."""
-        if self.on == "line":
-            return ()
-        (cx, cy), (ox, oy) = sol.P[self.centre], sol.P[self.base_centre]
-        (vcx, vcy), (vox, voy) = sol.V[self.centre], sol.V[self.base_centre]
-        dx, dy = cx - ox, cy - oy
-        wd = (dx * (vcy - voy) - dy * (vcx - vox)) / (dx * dx + dy * dy)
-        if wd == 0.0:
-            return ()
-        w = sol.W[self.wheel]
-        out = [
-            (
-                w - wd,
-                "arm_row_left_out",
-                "the turning relative to the arm given as the "
-                "wheel's own: the tabular method's row 'all locked' (+ the arm's turn) left "
-                "out",
-            )
-        ]
-        if self.base:
-            out.append(
-                (
-                    self.dims[4] * sol.W[self.base],
-                    "arm_taken_fixed",
-                    "the gear ratio of fixed centres used: the arm's motion left out",
-                )
-            )
-        return tuple(out)
-
-    def shapes(self, P):
-        """The wheel's pitch circle, what it rolls on (a circle, or the ground line hatched
-        on the far side) and the contact point."""
-        I, (mx, my) = self.contact(P)
-        out = [("circle", self.centre, self.dims[1])]
-        if self.on == "line":
-            out.append(("ground line", I, (-my, mx), (mx, my)))
-        else:
-            out.append(("circle", self.base_centre, self.dims[2]))
-        out.append(("contact", I))
-        return tuple(out)
-
-    def contacts(self, P):
-        """The contact point: the centre of the wheel and what it rolls on (no slip)."""
-        I, _ = self.contact(P)
-        return (
-            (
-                self.base or "ground",
-                self.wheel,
-                I,
-                f"the contact of {self.wheel} rolling on {self.where} (no slip)",
-            ),
-        )
-
-    def _off_words(self, cx, cy, prm):
-        r = prm[1]
-        if self.on == "line":
-            tx, ty, mx, my = prm[2:6]
-            d = (cx - tx) * mx + (cy - ty) * my
-            return (
-                f"at the stated crank angle the centre {self.centre} of wheel {self.wheel} "
-                f"is {in_units(d, self.unit)} {self.uname} from {self.where}, not its radius "
-                f"{in_units(r, self.unit)} {self.uname}: "
-                "the wheel cannot roll on it there (check the line's through, the radius "
-                "and the links that place the centre)"
-            )
-        dist = math.hypot(cx - prm[8], cy - prm[9])
-        return (
-            f"at the stated crank angle the centre {self.centre} of wheel {self.wheel} is "
-            f"{in_units(dist, self.unit)} {self.uname} from {self.base_centre}: the contact "
-            "leaves the pitch "
-            "point (check the radii)"
-        )
-
     # ----- words
     def why(self, g):
         """Why the wheel cannot roll here: its centre is off its line or pitch circle by ``g`` of
@@ -563,12 +449,16 @@ class RollingWheel(Step):
         )
 
     def singular_why(self, c):
+        """Why it is singular: the wheel has left its contact."""
         return f"the wheel {self.wheel} has left its contact (condition {c:.2g})"
 
     def warning(self, c):
+        """The warning near leaving its contact."""
         return f"{self.label}: the wheel {self.wheel} is near leaving its contact ({c:.3g})"
 
     def limit_why(self):
+        """Why its motion ends: the wheel would leave what it rolls on (or, followed from its arm,
+        the arm has turned half a turn)."""
         if self.on != "line" and self.theta_rate is None:
             return (
                 f"the wheel {self.wheel} would leave {self.where}, or its arm or gear has "
@@ -578,24 +468,32 @@ class RollingWheel(Step):
         return f"the wheel {self.wheel} would leave {self.where}"
 
     def transmission(self):
+        """None: no transmission angle (no two links meet at a joint here)."""
         return None
 
     def condition_column(self):
+        """None: its condition is no column of a sweep."""
         return None
 
     def bodies(self):
+        """The wheel, the body it moves."""
         return (self.wheel,)
 
     def orient(self):
+        """The wheel's line from its point P towards its centre (how the views draw it)."""
         return {self.wheel: (self.rim, self.centre)}
 
     def output(self, ground):
+        """None: a wheel is no output of the linkage's analysis."""
         return None
 
     def default_hint(self, P):
+        """``above``: the assembly hint where the scene gives none (it has one assembly)."""
         return "above"
 
     def position_words(self, L, which, angle_deg):
+        """The step table's words for its position: how far the wheel has turned and why (one over r
+        per unit of the centre's travel, the gear ratio, or the arm's and the gear's turns)."""
         r, ell = self.dims[1], self.dims[0]
         phi = math.degrees(self.dims[6] if self.on == "line" else self.dims[5])
         phi = round(phi, 9) + 0.0  # -7e-15 deg is 0 (rounding), as the table prints it
@@ -646,6 +544,8 @@ class RollingWheel(Step):
         )
 
     def construction(self, sol, ph):
+        """What it draws on the ``ph`` polygon: the centre's vector, the rim point's relative to it
+        at omega |CP|, and the contact's."""
         C, X, W = self.centre, self.rim, self.wheel
         lab = lambda p: image_label(sol, p, ph)  # noqa: E731
         cond = sol.conditions.get(self.index, 1.0)

@@ -132,6 +132,8 @@ def _driver_lines(f, F, M, said):
                 else " against the guide's direction"
             )
         ]
+    elif f.driver == "collar":
+        out = [_collar_line(f, f.crank, f.input_torque, F, said)]
     elif f.driver == "wheel":
         out = [
             f"input torque on the wheel {f.crank}{said}: {_moment(f.input_torque, M)} (its "
@@ -140,12 +142,24 @@ def _driver_lines(f, F, M, said):
         ]
     else:
         out = [f"input torque on {f.crank}{said}: {_moment(f.input_torque, M)}"]
-    if f.second_crank is not None:
+    if f.second_crank is not None and f.second_crank.startswith("block "):
+        out.append(_collar_line(f, f.second_crank, f.second_torque, F, said, " (the second input)"))
+    elif f.second_crank is not None:
         out.append(
             f"input torque on {f.second_crank} (the second crank){said}: "
             f"{_moment(f.second_torque, M)}"
         )
     return out
+
+
+def _collar_line(f, body, value, F, said, which=""):
+    """A collar's driver's force along its rod (signed outward: from the rod's pivot)."""
+    v = quiet(value, F)
+    rod = next((g.by for g in f.guides if f"block {g.point}" == body), "its rod")
+    return (
+        f"input force on collar {body.removeprefix('block ')}{which} along {rod}{said}: "
+        f"{fmt(abs(v))} N" + ("" if not v else " outward" if v > 0 else " inward")
+    )
 
 
 def forces_lines(sol) -> list:
@@ -199,7 +213,9 @@ def forces_lines(sol) -> list:
         M,
         " (inertia, weights, loads and friction)"
         if sc.friction is not None
-        else " (inertia, weights and loads)",
+        else " (inertia, weights and loads)"
+        if sc.masses or sc.gravity
+        else " (the loads alone: a static force analysis)",
     )
     out.append(
         f"shaking force on the frame: {_vec(f.shaking_force, F)}; shaking moment "
@@ -231,7 +247,14 @@ def bound_lines(sol, f) -> list:
             ("the driver's " + ("torque" if f.driver in ("crank", "wheel") else "force"), b.effort)
         )
     if b.second is not None and b.second > SHOWN:
-        shown.append(("the second crank's torque", b.second))
+        two = f.second_crank.startswith("block ")
+        shown.append(
+            (
+                f"the second {'collar' if two else 'crank'}'s driver's "
+                + ("force" if two else "torque"),
+                b.second,
+            )
+        )
     if not shown:
         return []
     out = [
@@ -318,6 +341,11 @@ _STEP_HEADS = {
     "forces",
     "block": "the block's force balance: along the guide the driver's force, across it the "
     "guide's normal force",
+    "collar": "the rod's moments about its pivot give the normal force between rod and collar "
+    "(the driver's force along the rod has no arm there); the moments of the collar's link "
+    "about its fixed pivot the driver's force along the rod; the balances the pin forces",
+    "second collar": "the collar's force balance: along the crank its driver's force, across it "
+    "the crank's normal force; the crank feels both back",
     "rolling": "the tooth load along the line of action, at the pressure angle to the common "
     "tangent through the pitch point; the wheel's moments about its centre give its "
     "part along the tangent, the teeth push apart with that times tan phi; the "
@@ -336,6 +364,15 @@ def _inertia_blocks(sol, f, F, M) -> list:
     sc = sol.scene
     u = sc.length_unit
     blocks = [("h", "6. Inertia forces (D'Alembert)")]
+    if not f.inertia:  # an empty [masses]: the static force analysis of the loads
+        return blocks + [
+            (
+                "p",
+                "No masses (the scene's [masses] is empty): a static force analysis, no "
+                "inertia forces; the loads"
+                + (f" and gravity ({sc.gravity.text}) act." if sc.gravity else " alone act."),
+            )
+        ]
     blocks.append(
         (
             "p",
@@ -413,7 +450,11 @@ def _groups_intro(f, scale) -> list:
                 "with the known forces head to tail and each outer pin's force square "
                 "to its link (^t, from that link's moments about the group's middle "
                 "pin); the lines of the forces along the links (^n) and of a guide's "
-                "normal force, drawn through the corners, meet where it closes.",
+                "normal force, drawn through the corners, meet where it closes. A block's "
+                "pin force is split along its guide or slot (^n) and across it (^t); a "
+                "contact's force normal to it (^n) and along it (^t); a gear's tooth load, "
+                "from its moments about its centre, lies along the line of action, and the "
+                "force at its centre closes its polygon.",
             )
         )
     return blocks

@@ -307,6 +307,13 @@ def _torque_items(sol):
         f"T = -(sum F . v) / omega_{inp.crank} = {fmt(-total)} / {fmt(inp.omega)} = "
         f"{fmt(abs(t))} N m {sense_word(t)}".rstrip()
     )
+    if sol.cylinder_force is not None:  # the cylinder drives: its force, not a torque
+        key, f = sol.cylinder_force
+        out.append(
+            f"the cylinder {key} drives: F vs_{key} = T omega_{inp.crank}, F = {fmt(t)} x "
+            f"{fmt(inp.omega)} / {fmt(inp.given.value)} = {fmt(abs(f))} N "
+            + ("pushing its ends apart" if f >= 0 else "pulling its ends together")
+        )
     return out
 
 

@@ -7,7 +7,7 @@ import math
 from ..solver.errorbound import NO_BOUND, SHOWN, USELESS, shown_bounds
 from .forces import forces_lines
 from ..solver.given import stated
-from ..common.numbers import fmt_angular
+from ..common.numbers import fmt, fmt_angular
 from ..motion.solution import Solution, tidied
 
 __all__ = ["solution_text", "direction_deg"]
@@ -211,18 +211,27 @@ def _rubbing_lines(sol: Solution) -> list[str]:
 
 
 def _torque_lines(sol: Solution) -> list[str]:
-    """The input torque by power balance, or the block driver's effort (nothing without
-    one)."""
+    """The input torque by power balance, or the block driver's or driving cylinder's
+    effort (nothing without one)."""
     if sol.input_torque is None:
         return []
     sc = sol.scene
     driver = sol.plan.steps[0]
-    t = tidied(sol).input_torque  # from the velocities without rounding noise
+    tidy = tidied(sol)  # from the velocities without rounding noise
+    t = tidy.input_torque
+    if driver.input_words(sc) is not None:
+        return ["", driver.effort_words(t)]
+    if tidy.cylinder_force is not None:  # the power T omega goes in as F vs along it
+        cylinder, f = tidy.cylinder_force
+        way = "pushing its ends apart" if f >= 0 else "pulling its ends together"
+        return [
+            "",
+            f"input force in cylinder {cylinder}: {fmt(abs(f))} N {way} "
+            "(power balance, no friction or inertia)",
+        ]
     return [
         "",
-        driver.effort_words(t)
-        if driver.input_words(sc) is not None
-        else f"input torque on {sc.input.crank}: {fmt_angular(t, 'N m')} "
+        f"input torque on {sc.input.crank}: {fmt_angular(t, 'N m')} "
         "(power balance, no friction or inertia)",
     ]
 

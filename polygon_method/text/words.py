@@ -163,6 +163,8 @@ def _force_sentences(sc) -> list:
         )
     if sc.gravity is not None:
         out.append(f"Gravity acts: {sc.gravity.text}.")
+    elif sc.statics and not sc.masses:  # an empty [masses]
+        out.append("The links' masses are neglected: a static force analysis.")
     if sc.indicator is not None:
         out.append(
             f"The gas pressure on the piston {sc.indicator.piston} over the cycle is "

@@ -115,7 +115,14 @@ def sheet_sections(vs) -> list:
     out = []
     for v in vs.variants:
         lines = ["Given:"] + [f"- {x}" for x in given(v.scene)]
-        lines += ["", "Find, by the velocity and acceleration polygons:"]
+        sc = v.scene
+        how = (
+            "the force polygons (a static force analysis)"
+            if sc.statics and not (sc.masses or sc.gravity)
+            else "the velocity and acceleration polygons"
+            + (" and the force polygons" if sc.has_forces else "")
+        )
+        lines += ["", f"Find, by {how}:"]
         lines += [f"- {_question(q)}" for q in vs.questions]
         lines += [
             "",

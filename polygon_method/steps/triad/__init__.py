@@ -11,11 +11,13 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+from ...common.tolerances import SAME
 from ...common.errors import AssemblyError
 from ...common.numbers import in_units
 from ..base import Step, sub, unit
 from ..rounding import two_lines
 from . import goodman
+from .recognition import plate_of, triangle_offsets
 from .loop import (
     Memo,
     acceleration,
@@ -51,94 +53,11 @@ __all__ = [
 
 
 def recognise(g, name):
-    """A plate (a link with carried points: a body of three or more points, none known)
-    with ``name`` among three of its points that each have exactly one unused link to a
-    known point; no other kind can find any point when this is tried."""
-    for key in g.bodies_of(name):
-        if key in g.used_links:
-            continue
-        b = g.body(key)
-        if len(b) < 3 or any(p in g.P for p in b):
-            continue
-        verts = []
-        for p in b:
-            free = [f for f in g.free(p) if f[0] != key]
-            if len(free) == 1:
-                verts.append((p, free[0]))
-        if name not in [v[0] for v in verts] or len(verts) < 3:
-            continue
-        verts = verts[:3]
-        if len({f[0] for _, f in verts}) < 3:
-            continue  # one link to two vertices: no triad
-        f = b
-        (p1, (k1, K1, l1)), (p2, (k2, K2, l2)), (p3, (k3, K3, l3)) = verts
-        return Triad(
-            g.next_index,
-            (p1, p2, p3),
-            key,
-            (K1, K2, K3),
-            (k1, k2, k3),
-            (l1, l2, l3),
-            (f[p2][0] - f[p1][0], f[p2][1] - f[p1][1], f[p3][0] - f[p1][0], f[p3][1] - f[p1][1]),
-            unit=g.unit,
-            uname=g.uname,
-        )
-    return _triangle(g, name)
-
-
-def _one_free(g, p, exclude):
-    free = [f for f in g.free(p) if f[0] not in exclude]
-    return free[0] if len(free) == 1 else None
-
-
-def _triangle(g, name):
-    """Three links joined in a triangle (a rigid plate made of links: name-X, X-Y, Y-name),
-    none of their points known, each point with one other link to a known point."""
-    ends = {}
-    for key in g.bodies_of(name):
-        b = g.body(key)
-        if key in g.used_links or len(b) != 2:
-            continue
-        other = next(p for p in b if p != name)
-        if other not in g.P:
-            ends.setdefault(other, key)
-    names = list(ends)
-    for i, X in enumerate(names):
-        for Y in names[i + 1 :]:
-            side = next(
-                (k for k in g.bodies_of(X) if k not in g.used_links and set(g.body(k)) == {X, Y}),
-                None,
-            )
-            if side is None:
-                continue
-            tri = {ends[X], side, ends[Y]}
-            free = [(p, _one_free(g, p, tri)) for p in (name, X, Y)]
-            if any(f is None for _, f in free) or len({f[0] for _, f in free}) < 3:
-                continue
-            (p1, (k1, K1, l1)), (p2, (k2, K2, l2)), (p3, (k3, K3, l3)) = free
-            a = g.bodies.distance(ends[X], name, X)
-            b = g.bodies.distance(side, X, Y)
-            c = g.bodies.distance(ends[Y], Y, name)
-            return Triad(
-                g.next_index,
-                (p1, p2, p3),
-                ends[X],
-                (K1, K2, K3),
-                (k1, k2, k3),
-                (l1, l2, l3),
-                _triangle_offsets(a, b, c, 1.0),
-                unit=g.unit,
-                uname=g.uname,
-                sides=((side, X, Y), (ends[Y], Y, name)),
-            )
-    return None
-
-
-def _triangle_offsets(a, b, c, hand):
-    """V2 - V1 and V3 - V1 of a triangle with V1V2 = a, V2V3 = b, V3V1 = c, V3 on the
-    side ``hand`` (+1: left of V1 -> V2)."""
-    x3 = (a * a + c * c - b * b) / (2.0 * a)
-    return (a, 0.0, x3, hand * max(c * c - x3 * x3, 0.0) ** 0.5)
+    """The triad finding ``name`` (:func:`.recognition.plate_of`: a plate, or three links
+    in a triangle, whose three vertices each hang on one link from a known point), or None;
+    no other kind can find any point when this is tried."""
+    found = plate_of(g, name)
+    return None if found is None else Triad(g.next_index, unit=g.unit, uname=g.uname, **found)
 
 
 def _any_assembly(K, prm, np):
@@ -198,22 +117,28 @@ class Triad(Step):
     # ----- what it is
     @property
     def finds(self):
+        """Its three vertices, found at once."""
         return self.points
 
     @property
     def links(self):
+        """The plate (and a plate of three links' other sides) and the three links that hang it from
+        the known points."""
         return (self.plate,) + tuple(k for k, _, _ in self.sides) + self.links_
 
     @property
     def needs(self):
+        """The known points the three links hang from."""
         return tuple(dict.fromkeys(self.knowns))
 
     @property
     def needs_links(self):
+        """None: it reads no other link's omega."""
         return ()
 
     @property
     def title(self):
+        """``triad: plate BC (B, C, E) on AB, CD, FE``."""
         return f"triad: {self._plate_words} ({', '.join(self.points)}) on {', '.join(self.links_)}"
 
     @property
@@ -223,16 +148,19 @@ class Triad(Step):
 
     @property
     def params(self):
+        """The three links' lengths, then the vertices' offsets on the plate (V2 - V1, V3 - V1)."""
         return tuple(self.lengths) + tuple(self.offsets)
 
     def dimensions(self, scene, bodies):
+        """The same read from another scene of the same shape: the links' lengths and the plate's
+        offsets (a triangle of links': from its three sides)."""
         own = tuple(
             bodies.distance(k, K, V) for k, K, V in zip(self.links_, self.knowns, self.points)
         )
         if self.sides:
             p1, p2, _ = self.points
             (k2, a2, b2), (k3, a3, b3) = self.sides
-            return own + _triangle_offsets(
+            return own + triangle_offsets(
                 bodies.distance(self.plate, p1, p2),
                 bodies.distance(k2, a2, b2),
                 bodies.distance(k3, a3, b3),
@@ -243,9 +171,11 @@ class Triad(Step):
         return own + (x2 - x1, y2 - y1, x3 - x1, y3 - y1)
 
     def drawn(self, prm, pencil, P):
+        """The dimensions as a hand drawing sets them out, each with the pencil's error."""
         return tuple(v + pencil() for v in prm)
 
     def reach(self):
+        """The triad's size (the largest of its lengths and offsets): a scale for its tolerances."""
         return scale(self.params)
 
     # ----- compiling: the assembly the scene states
@@ -339,6 +269,8 @@ class Triad(Step):
 
     # ----- evaluation
     def place(self, P, prm, ctx, sigma=None):
+        """The three vertices at the compiler's instant, continued from the scene's assembly (the
+        loop equations solved by Newton's method)."""
         K = tuple(P[k] for k in self.knowns)
         q = solve_scalar(self.memo, K, prm)
         if q is None:
@@ -375,7 +307,7 @@ class Triad(Step):
             for q in assemblies(K, prm):
                 V = vertices(*q, prm, math.cos, math.sin)
                 d = sum(math.dist(a, b) for a, b in zip(V, here))
-                if d > 1e-9 * self.reach() and (best is None or d < best[0]):
+                if d > SAME * self.reach() and (best is None or d < best[0]):
                     best = (d, V[0])
         x, y = here[0]
         if best is None:
@@ -384,6 +316,9 @@ class Triad(Step):
         return ((x + ox) / 2, (y + oy) / 2), ((x - ox) / 2, (y - oy) / 2)
 
     def bind(self, prm):
+        """The three phases: positions by continuation of the assembly (one instant) or by solving
+        each element (arrays), then the 3 x 3 loop equations for the velocities and the
+        accelerations."""
         pts, kn, i, step = self.points, self.knowns, self.index, self
         plate, lk = self.plate, self.links_
         sides = tuple(k for k, _, _ in self.sides)
@@ -459,6 +394,7 @@ class Triad(Step):
         return position, velocity_, acceleration_
 
     def bind_instant(self, prm):
+        """The default one-instant road: its three phases in a row."""
         return Step.bind_instant(self, prm)
 
     rounding = 96.0
@@ -489,6 +425,7 @@ class Triad(Step):
         )
 
     def singular_why(self, c) -> str:
+        """Why it is singular: the three links' lines meet in one point (a limit of the triad)."""
         return (
             f"the lines of {self._lines()} meet in one point (or are parallel; condition "
             f"{c:.2g}): the {self._plate_words} could turn about that point while the "
@@ -497,6 +434,7 @@ class Triad(Step):
         )
 
     def warning(self, c) -> str:
+        """The warning near a limit: the auxiliary-point construction is ill-conditioned."""
         return (
             f"{self.label}: the lines of {self._lines()} nearly meet in one point "
             f"(condition {c:.3g}): near a limit of the triad the auxiliary point "
@@ -504,15 +442,18 @@ class Triad(Step):
         )
 
     def limit_why(self) -> str:
+        """Why its motion ends: the three links' lines meet in one point."""
         return (
             f"the lines of {self._lines()} meet in one point (the triad "
             f"{', '.join(self.points)} cannot be assembled beyond it on its branch)"
         )
 
     def transmission(self):
+        """None: a triad has no single transmission angle."""
         return None
 
     def condition_column(self):
+        """The sweep's column of its condition (0 where the three links' lines meet in a point)."""
         return (
             f"cond {''.join(self.points)}",
             "",
@@ -520,6 +461,7 @@ class Triad(Step):
         )
 
     def bodies(self):
+        """The bodies it moves: its links and its plate."""
         return (
             (self.links_[0], self.plate)
             + tuple(k for k, _, _ in self.sides)
@@ -527,6 +469,8 @@ class Triad(Step):
         )
 
     def orient(self):
+        """How the views draw each of its bodies: the plate from V1 to V2, each link from its vertex
+        to its known point."""
         out = {self.plate: (self.points[1], self.points[0])}
         for k, a, b in self.sides:
             out[k] = (b, a)
@@ -535,15 +479,20 @@ class Triad(Step):
         return out
 
     def output(self, ground):
+        """None: a triad is no output of the linkage's analysis."""
         return None
 
     def produced(self):
+        """None: it draws no link produced."""
         return None
 
     def default_hint(self, P):
+        """``above``: the hint where the scene gives none (the triad chooses its own assembly)."""
         return "above"
 
     def position_words(self, L, which, angle_deg):
+        """The step table's words for its position: each vertex on the arc of its link about its
+        known point, the plate's shape, and the assembly taken."""
         arcs = "; ".join(
             f"{V} on the arc of radius {k} = {L(l)} about {K}"
             for V, k, K, l in zip(self.points, self.links_, self.knowns, self.lengths)
@@ -599,4 +548,5 @@ class Triad(Step):
         return f"s{k}"
 
     def construction(self, sol, ph):
+        """Goodman's auxiliary-point construction on the ``ph`` polygon (:mod:`.goodman`)."""
         return goodman.construction(self, sol, ph)

@@ -160,6 +160,53 @@ def _velocity(step, sol, ph):
     )
 
 
+def _centripetal(P, start, X, Y, om, name):
+    """The centripetal component of X about Y (each a point's name or a place), drawn from
+    ``start``: om^2 XY, towards Y."""
+    r = sub(P[X] if isinstance(X, str) else X, P[Y] if isinstance(Y, str) else Y)
+    end = (start[0] - om * om * r[0], start[1] - om * om * r[1])
+    return Vector(
+        start,
+        end,
+        f"c{name}",
+        "centripetal",
+        f"centripetal of {name}",
+        f"{om * om * math.hypot(*r):.4g} m/s^2, parallel to {name}, towards its second point",
+    )
+
+
+def _square(start, direction, of, a, b):
+    """The line through the end of the centripetal component ``of`` (at ``start``),
+    perpendicular to ``ab``."""
+    return DirectionLine(
+        start,
+        direction,
+        f"the end of the centripetal of {of}",
+        f"perpendicular to {a}{b}",
+        mark=f"\u22a5 {a}{b}",
+    )
+
+
+def _acceleration_words(step, sol, ph, aux, s_lab, lab, V, K):
+    """The sentence of Goodman's construction on the acceleration polygon (``V``: the three
+    vertices, ``K``: the known points they hang from)."""
+    (Vi, Vj, Vm), (Ki, Kj, Km) = V, K
+    return (
+        f"auxiliary point (Goodman): {aux}; from {pole_text(sol, Ki, ph)} draw the "
+        f"centripetal of {Vi}{Ki} and from its end the centripetal of S{Vi} (both "
+        f"along {Ki}{Vi}), and through the end a line perpendicular to {Ki}{Vi}; the "
+        f"same from {pole_text(sol, Kj, ph)} along {Kj}{Vj}: the two lines meet at "
+        f"{s_lab}; from {s_lab} the centripetal of {Vm}S and a line perpendicular to "
+        f"S{Vm}, from {pole_text(sol, Km, ph)} the centripetal of {Vm}{Km} and a line "
+        f"perpendicular to {Km}{Vm}: they meet at {lab(Vm)}; from {lab(Vm)} the "
+        f"centripetals of {Vi}{Vm} and {Vj}{Vm} and lines perpendicular to {Vm}{Vi} "
+        f"and {Vm}{Vj}; they cut the lines perpendicular to {Ki}{Vi} and {Kj}{Vj} "
+        f"drawn through the ends of the centripetals of {Vi}{Ki} and {Vj}{Kj} at "
+        f"{lab(Vi)} and {lab(Vj)} (omega of the {step._plate_words} from the velocity "
+        "polygon)"
+    )
+
+
 def _acceleration(step, sol, ph):
     """Goodman's construction on the acceleration polygon (the centripetal components
     first, omega from the velocity polygon)."""
@@ -189,17 +236,8 @@ def _acceleration(step, sol, ph):
     ) = _common(step, sol, ph)
     W = sol.W
 
-    def cen(start, X, Y, om, name):  # centripetal of X about Y: om^2 XY towards Y
-        r = sub(P[X] if isinstance(X, str) else X, P[Y] if isinstance(Y, str) else Y)
-        end = (start[0] - om * om * r[0], start[1] - om * om * r[1])
-        return Vector(
-            start,
-            end,
-            f"c{name}",
-            "centripetal",
-            f"centripetal of {name}",
-            f"{om * om * math.hypot(*r):.4g} m/s^2, parallel to {name}, towards its second point",
-        )
+    def cen(start, X, Y, om, name):
+        return _centripetal(P, start, X, Y, om, name)
 
     ci = cen(D[Ki], Vi, Ki, W[lk[i]], f"{Vi}{Ki}")
     cj = cen(D[Kj], Vj, Kj, W[lk[j]], f"{Vj}{Kj}")
@@ -210,77 +248,16 @@ def _acceleration(step, sol, ph):
     cmi = cen(D[Vm], Vi, Vm, w, f"{Vi}{Vm}")
     cmj = cen(D[Vm], Vj, Vm, w, f"{Vj}{Vm}")
     lines = (
-        DirectionLine(
-            csi.end,
-            perp_to(Ki, Vi),
-            f"the end of the centripetal of S{Vi}",
-            f"perpendicular to {Ki}{Vi}",
-            mark=f"\u22a5 {Ki}{Vi}",
-        ),
-        DirectionLine(
-            csj.end,
-            perp_to(Kj, Vj),
-            f"the end of the centripetal of S{Vj}",
-            f"perpendicular to {Kj}{Vj}",
-            mark=f"\u22a5 {Kj}{Vj}",
-        ),
-        DirectionLine(
-            cm.end,
-            unit(*perp(sub(P[Vm], S))),
-            f"the end of the centripetal of {Vm}S",
-            f"perpendicular to S{Vm}",
-            mark=f"\u22a5 S{Vm}",
-        ),
-        DirectionLine(
-            ck.end,
-            perp_to(Km, Vm),
-            f"the end of the centripetal of {Vm}{Km}",
-            f"perpendicular to {Km}{Vm}",
-            mark=f"\u22a5 {Km}{Vm}",
-        ),
-        DirectionLine(
-            cmi.end,
-            perp_to(Vm, Vi),
-            f"the end of the centripetal of {Vi}{Vm}",
-            f"perpendicular to {Vm}{Vi}",
-            mark=f"\u22a5 {Vm}{Vi}",
-        ),
-        DirectionLine(
-            cmj.end,
-            perp_to(Vm, Vj),
-            f"the end of the centripetal of {Vj}{Vm}",
-            f"perpendicular to {Vm}{Vj}",
-            mark=f"\u22a5 {Vm}{Vj}",
-        ),
-        DirectionLine(
-            ci.end,
-            perp_to(Ki, Vi),
-            f"the end of the centripetal of {Vi}{Ki}",
-            f"perpendicular to {Ki}{Vi}",
-            mark=f"\u22a5 {Ki}{Vi}",
-        ),
-        DirectionLine(
-            cj.end,
-            perp_to(Kj, Vj),
-            f"the end of the centripetal of {Vj}{Kj}",
-            f"perpendicular to {Kj}{Vj}",
-            mark=f"\u22a5 {Kj}{Vj}",
-        ),
+        _square(csi.end, perp_to(Ki, Vi), f"S{Vi}", Ki, Vi),
+        _square(csj.end, perp_to(Kj, Vj), f"S{Vj}", Kj, Vj),
+        _square(cm.end, unit(*perp(sub(P[Vm], S))), f"{Vm}S", "S", Vm),
+        _square(ck.end, perp_to(Km, Vm), f"{Vm}{Km}", Km, Vm),
+        _square(cmi.end, perp_to(Vm, Vi), f"{Vi}{Vm}", Vm, Vi),
+        _square(cmj.end, perp_to(Vm, Vj), f"{Vj}{Vm}", Vm, Vj),
+        _square(ci.end, perp_to(Ki, Vi), f"{Vi}{Ki}", Ki, Vi),
+        _square(cj.end, perp_to(Kj, Vj), f"{Vj}{Kj}", Kj, Vj),
     )
-    text = (
-        f"auxiliary point (Goodman): {aux}; from {pole_text(sol, Ki, ph)} draw the "
-        f"centripetal of {Vi}{Ki} and from its end the centripetal of S{Vi} (both "
-        f"along {Ki}{Vi}), and through the end a line perpendicular to {Ki}{Vi}; the "
-        f"same from {pole_text(sol, Kj, ph)} along {Kj}{Vj}: the two lines meet at "
-        f"{s_lab}; from {s_lab} the centripetal of {Vm}S and a line perpendicular to "
-        f"S{Vm}, from {pole_text(sol, Km, ph)} the centripetal of {Vm}{Km} and a line "
-        f"perpendicular to {Km}{Vm}: they meet at {lab(Vm)}; from {lab(Vm)} the "
-        f"centripetals of {Vi}{Vm} and {Vj}{Vm} and lines perpendicular to {Vm}{Vi} "
-        f"and {Vm}{Vj}; they cut the lines perpendicular to {Ki}{Vi} and {Kj}{Vj} "
-        f"drawn through the ends of the centripetals of {Vi}{Ki} and {Vj}{Kj} at "
-        f"{lab(Vi)} and {lab(Vj)} (omega of the {step._plate_words} from the velocity "
-        "polygon)"
-    )
+    text = _acceleration_words(step, sol, ph, aux, s_lab, lab, (Vi, Vj, Vm), (Ki, Kj, Km))
     found = (
         tuple(
             Vector(

@@ -31,6 +31,7 @@ without any link moving (the triad's singular position).
 
 from __future__ import annotations
 
+from ...common.tolerances import CONVERGED, LEAST_STEP, ONE_ASSEMBLY
 import math
 
 __all__ = [
@@ -55,7 +56,7 @@ __all__ = [
 ]
 
 #: Newton's residual (|Fi| / 2 li, relative to the largest length) taken as converged
-_CONVERGED = 1e-13
+_CONVERGED = CONVERGED
 #: the most plate positions continuation keeps per step (for starting new solves)
 _KEEP = 1024
 #: solved positions passed sequentially in array mode (the rest start from them)
@@ -257,7 +258,7 @@ def follow(q, a, b, size, det_sign):
             h = min(2.0 * h, 1.0)
         else:
             h *= 0.5
-            if h < 1e-7:
+            if h < LEAST_STEP:
                 return None
     return q
 
@@ -316,8 +317,8 @@ def assemblies(K, prm, n=2048):
                 continue
             q = got[0]
             if all(
-                math.hypot(q[0] - p[0], q[1] - p[1]) > 1e-7 * size
-                or abs(math.remainder(q[2] - p[2], 2 * math.pi)) > 1e-7
+                math.hypot(q[0] - p[0], q[1] - p[1]) > ONE_ASSEMBLY * size
+                or abs(math.remainder(q[2] - p[2], 2 * math.pi)) > ONE_ASSEMBLY
                 for p in found
             ):
                 found.append((q[0], q[1], math.remainder(q[2], 2 * math.pi)))

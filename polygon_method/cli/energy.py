@@ -1,0 +1,230 @@
+"""The commands on a scene that states a turning-moment diagram (or a punching press) and no
+mechanism: ``solve`` (``--json``), ``steps``, ``check``, ``draw``, ``sweep`` (``--summary``,
+``--csv``, ``--plot``); the others have nothing to do there and say so in one line. Only a
+scene the mechanism's reader refuses comes here: the file is looked at for a
+``[turning_moment]`` or ``[press]`` header, and where it has none the reader's refusal
+stands."""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import stat
+import sys
+from pathlib import Path
+
+from ..common.errors import PolygonMethodError, SceneError
+from .files import check_outputs, write_outputs
+
+__all__ = ["route"]
+
+_HEADER = re.compile(rb"(?m)^[ \t]*\[[ \t]*(turning_moment|press)[ \t]*\]")
+_MOST = 1 << 20
+
+
+def route(args):
+    """The command to run for ``args`` where its scene states a turning-moment diagram,
+    else None (the mechanism's commands run as ever)."""
+    path = getattr(args, "scene", None)
+    if not isinstance(path, str) or not path:
+        return None
+    try:
+        st = os.stat(path)
+    except (OSError, ValueError):
+        return None
+    if not stat.S_ISREG(st.st_mode) or st.st_size > _MOST:
+        return None
+    try:
+        data = Path(path).read_bytes()
+    except OSError:
+        return None
+    if (b"turning_moment" not in data and b"press" not in data) or not _HEADER.search(data):
+        return None
+    from ..scene.energy import cycle_from_text
+
+    try:
+        text = data.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        return None
+    try:
+        scene = cycle_from_text(text, file=path)
+    except PolygonMethodError as exc:
+        raise exc.located(path)
+    if scene is None:  # the header was inside a string: a mechanism's scene after all
+        return None
+    run = _COMMANDS.get(args.command)
+    if run is None:
+        raise SceneError(
+            f"a turning-moment diagram with no mechanism: {args.command} has nothing to "
+            "do here (solve, steps, check, draw and sweep --summary/--csv/--plot do)",
+            file=path,
+            key="[turning_moment]" if scene.diagram is not None else "[press]",
+        )
+    return lambda a: run(a, scene)
+
+
+def _solved(scene):
+    from ..forces.flywheel_cycle import solve_cycle
+
+    try:
+        return solve_cycle(scene)
+    except PolygonMethodError as exc:
+        raise exc.located(scene.file)
+
+
+def _solve(args, scene) -> int:
+    c = _solved(scene)
+    if args.json:
+        d = {"title": scene.title, "scene": scene.file, "cycle": c.as_dict()}
+        print(json.dumps(d, indent=2, allow_nan=False))
+    else:
+        from ..text.energy import cycle_text
+
+        print(cycle_text(scene, c))
+    return 0
+
+
+def _steps(args, scene) -> int:
+    from ..text.energy import cycle_steps
+
+    text = cycle_steps(scene, _solved(scene))
+    print(f"```\n{text}\n```" if getattr(args, "format", "text") == "markdown" else text)
+    return 0
+
+
+def _check(args, scene) -> int:
+    from ..check.energy import cycle_verdicts
+    from ..check.verdicts import verdicts_dict, verdicts_text
+    from ..scene.energy import answers_from_text
+
+    files = args.answers or []
+    if len(files) > 1 or getattr(args, "gradebook", None) or getattr(args, "variants", None):
+        raise SceneError(
+            "a turning-moment diagram's answers are checked one file at a time (no class, "
+            "gradebook or variants yet)",
+            key="answers",
+        )
+    c = _solved(scene)
+    tolerance, answers, source = scene.tolerance, scene.answers, args.scene
+    if files:
+        source = files[0]
+        try:
+            text = Path(source).read_text(encoding="utf-8-sig")
+        except (OSError, UnicodeDecodeError) as exc:
+            raise SceneError(f"cannot read: {exc}", file=source) from None
+        try:
+            tolerance, answers = answers_from_text(text, source)
+        except PolygonMethodError as exc:
+            raise exc.located(source)
+    if not answers:
+        raise SceneError(
+            "nothing to check: the scene has no [answers] and no answer file was given",
+            file=args.scene,
+            key="[answers]",
+        )
+    try:
+        verdicts = cycle_verdicts(scene, c, answers, tolerance)
+    except PolygonMethodError as exc:
+        raise exc.located(source)
+    why = (
+        f"{100 * tolerance:g} % (the answers' own)"
+        if tolerance is not None
+        else "three significant figures (computed answers)"
+    )
+    if getattr(args, "json", False):
+        d = verdicts_dict(verdicts, args.scene, files[0] if files else None)
+        d["tolerance_used"] = {"why": why}
+        print(json.dumps(d, indent=2, allow_nan=False))
+    else:
+        title = f"{scene.title or args.scene}: answers from {source}"
+        print(verdicts_text(verdicts, title))
+    return 0 if all(v.ok for v in verdicts) else 1
+
+
+def _sheet(scene, out, key) -> int:
+    from ..draw.energy import cycle_sheet
+
+    fmt = out.suffix.lower().lstrip(".")
+    if fmt not in ("svg", "png", "pdf"):
+        raise PolygonMethodError(
+            f"cannot draw to {out}: the file name must end in .svg, .png or .pdf", key=key
+        )
+    targets = check_outputs([(out, key)], protect=[scene.file])
+    c = _solved(scene)
+    write_outputs(targets, [(cycle_sheet(scene, c, fmt), fmt != "svg")])
+    print(f"{out}: the turning-moment diagram and the energy over the cycle, on A4")
+    return 0
+
+
+def _draw(args, scene) -> int:
+    given = {
+        "animate": getattr(args, "animate", False),
+        "forces": getattr(args, "forces", False),
+        "diagram": getattr(args, "diagram", "all") not in (None, "all"),
+        "scale": bool(getattr(args, "scale", None)),
+        "frames": getattr(args, "frames", None) is not None,
+        "centre-labels": getattr(args, "centre_labels", None) not in (None, "I13"),
+        "paper": str(getattr(args, "paper", "A4") or "A4").lower() != "a4",
+    }
+    for flag, on in given.items():
+        if on:
+            raise PolygonMethodError(
+                "a turning-moment diagram's sheet is one drawing on A4: leave it out",
+                key=f"--{flag}",
+            )
+    return _sheet(scene, Path(args.output), "-o")
+
+
+def _sweep(args, scene) -> int:
+    for flag in ("start", "stop", "step", "points", "links", "error_bound"):
+        if getattr(args, flag, None) not in (None, False):
+            name = {"start": "from", "stop": "to"}.get(flag, flag).replace("_", "-")
+            raise PolygonMethodError(
+                f"--{name}: a turning-moment diagram is swept over its whole cycle "
+                "(--steps N crank angles in the CSV); leave it out",
+                key=f"--{name}",
+            )
+    steps = getattr(args, "steps", None)
+    if steps is not None and not 2 <= steps <= 1_000_000:
+        raise PolygonMethodError("--steps: 2 to 1,000,000 crank angles", key="--steps")
+    done = False
+    if getattr(args, "csv", None):
+        _csv(scene, Path(args.csv), (steps or 360) + 1)
+        done = True
+    if getattr(args, "plot", None):
+        _sheet(scene, Path(args.plot), "--plot")
+        done = True
+    if getattr(args, "summary", False) or not done:
+        from ..text.energy import cycle_text
+
+        print(cycle_text(scene, _solved(scene)))
+    return 0
+
+
+def _csv(scene, out, n) -> None:
+    from ..forces.flywheel_cycle import curves
+
+    if scene.diagram is None or scene.diagram.form == "areas":
+        raise PolygonMethodError(
+            "--csv: the diagram is given as areas (or a press): no curve to tabulate over "
+            "the crank angle",
+            key="--csv",
+        )
+    targets = check_outputs([(out, "--csv")], protect=[scene.file])
+    c = _solved(scene)
+    th, tq, rs, es = curves(scene, c, n)
+    rows = ["angle_deg,torque,resisting,energy"]
+    for x, t, r, e in zip(th, tq, rs, es):
+        rows.append(f"{x * 57.29577951308232:.12g},{t:.12g},{r:.12g},{e:.12g}")
+    write_outputs(targets, [(("\n".join(rows) + "\n").encode(), True)])
+    print(f"{out}: {len(th)} crank angles", file=sys.stderr)
+
+
+_COMMANDS = {
+    "solve": _solve,
+    "steps": _steps,
+    "check": _check,
+    "draw": _draw,
+    "sweep": _sweep,
+}

@@ -1,0 +1,57 @@
+"""The size of what a force answer key names (``F_B``, ``N_B``, ``Fc_L``, ``Fi_L``, ``Ci_L``,
+``h_L``), read from a :class:`~.records.Forces`."""
+
+from __future__ import annotations
+
+from ..common.errors import SceneError
+from .records import Forces
+
+
+def force_value(f: Forces, kind: str, name: str) -> float:
+    """The size of what an answer key names: ``F`` the force at pin ``name`` (a pin joining
+    two bodies), ``N`` the guide's normal force on the block at ``name``; ``Fc`` the size of
+    the contact force on the rolling body ``name`` (a wheel's link, a rack's ``block R``): a
+    gear's tooth load; of body ``name``
+    (a link's key, or ``block X``): ``Fi`` its inertia force's size ``m |a_G|``, ``Ci`` its
+    inertia couple ``-I alpha`` (signed, ccw positive), ``h`` the offset ``|I alpha| / (m
+    |a_G|)`` of the book's single force from G (0 where the body has no couple)."""
+    if kind == "Fc":
+        c = next((c for c in f.contacts if c.wheel == name), None)
+        if c is None:
+            raise SceneError(f"Fc: {name} has no rolling contact")
+        return c.load
+    if kind in ("Fi", "Ci", "h"):
+        i = f.inertia_of(name)
+        if i is None:
+            raise SceneError(
+                f"{kind}_{name.removeprefix('block ')}: {name} has no mass in "
+                "[masses]: no inertia force"
+            )
+        if kind == "Fi":
+            return (i.force[0] ** 2 + i.force[1] ** 2) ** 0.5
+        if kind == "Ci":
+            return i.couple
+        if i.offset is None and i.couple != 0:
+            raise SceneError(
+                f"h_{name.removeprefix('block ')}: a_G = 0: the inertia is a "
+                "couple alone, with no single force to offset"
+            )
+        return abs(i.offset or 0.0)
+    if kind == "N":
+        g = next((g for g in f.guides if g.key == name), None)
+        if g is None:
+            raise SceneError(f"N_{name}: the block at {name} slides on no guide")
+        return abs(g.normal)
+    found = [p for p in f.pins if p.point == name]
+    if len(found) != 1:
+        raise SceneError(
+            f"F_{name}: "
+            + (
+                f"no pin joins two bodies at {name}"
+                if not found
+                else f"the pin at {name} joins more than two bodies ("
+                + ", ".join(sorted({b for p in found for b in (p.on, p.by)}))
+                + "): its forces are in solve's table"
+            )
+        )
+    return found[0].magnitude

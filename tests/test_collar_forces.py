@@ -1,0 +1,491 @@
+"""Forces on a collar sliding along a turning rod: driving (the inverted slider crank driven
+by its sliding) and as the second input beside a crank, against independent references:
+
+- the matrix method at 50 digits: every moving body's Newton-Euler equations (D'Alembert:
+  the inertia force at G, the couple -I alpha, the weights, the loads) as one linear system
+  in every pin force, each guide's normal force and couple, the collar drivers' forces
+  along their rods and a crank's torque, on the 50-digit constraint solve's kinematics
+  (``tests/reference.py``), not the tool's;
+- the virtual power with inertia: the collar driver's force times the collar's sliding
+  relative to its rod (from the tool's velocities, the rod's point under the collar found
+  here), plus every load's and weight's power, equals the rate of the kinetic energy, to
+  1e-9, at one instant and at every place of a sweep over the collar's travel;
+- with friction, the same balance with the friction's power (never positive), the friction
+  at the collar along the rod against its sliding.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import mpmath
+import numpy as np
+import pytest
+from mpmath import mpf
+
+from reference import reference_solution
+from polygon_method.forces import FRAME, analyse
+from polygon_method.motion.solution import solve
+from polygon_method.motion.sweeps import sweep
+from polygon_method.scene import parse_scene
+
+ROOT = Path(__file__).resolve().parent.parent
+
+DRIVING = """
+title = "collar driven along a turning rod, with masses"
+units = "mm"
+[ground]
+O = [0, 0]
+D = [300, 0]
+[links]
+OA = 500
+DC = 150
+AB = 400
+[sliders]
+C = { along = "O-A" }
+B = { path = "horizontal", through = "O" }
+[assembly]
+C = "above"
+B = "right"
+[masses]
+OA = { mass = "4 kg", distances = { O = 260, A = 250 }, turn = "ccw", gyration = 150 }
+DC = { mass = "1.5 kg", along = 60, from = "D", gyration = 50 }
+AB = { mass = "3 kg", distances = { A = 190, B = 230 }, turn = "cw", gyration = 120 }
+C = { mass = "0.8 kg" }
+B = { mass = "2.5 kg" }
+[gravity]
+direction = 250
+[loads]
+B = { force = [-300, 40] }
+AB = { torque = "12 N m ccw" }
+[input]
+block = "C"
+s_C = 350
+vs_C = "1.5 m/s outward"
+as_C = "4 m/s^2 towards O"
+"""
+
+SECOND = """
+title = "collar sliding along a turning rod (two inputs), with masses"
+units = "mm"
+[ground]
+O = [0, 0]
+[links]
+OA = 1000
+CB = 600
+[sliders]
+C = { along = "O-A" }
+B = { path = "horizontal", through = "O" }
+[assembly]
+B = "right"
+[masses]
+OA = { mass = "6 kg", distances = { O = 480, A = 530 }, turn = "cw", gyration = 300 }
+CB = { mass = "3 kg", along = 250, from = "C", gyration = 170 }
+C = { mass = "1.2 kg" }
+B = { mass = "2 kg" }
+[gravity]
+direction = 280
+[loads]
+B = { force = [150, -60] }
+OA = { torque = "20 N m cw" }
+[input]
+crank = "OA"
+angle = 40
+speed = "3 rad/s ccw"
+acceleration = "2 rad/s^2 cw"
+[input.second]
+block = "C"
+s_C = 500
+vs_C = "2 m/s outward"
+as_C = "1 m/s^2 outward"
+"""
+
+
+def _mp(p):
+    return (mpf(p[0]), mpf(p[1]))
+
+
+def _matrix(sc, ref, pins, guides, torque, extra=()):
+    """The matrix method at the current precision: ``pins`` (point, on, by) each two
+    unknowns (the force on ``on`` by ``by``; ``by`` feels it back), ``guides`` (point,
+    block, guide body, unit along the guide, driven) each the normal force along
+    perp(unit) and the guide's couple on the block (and a driven collar's force along the
+    unit), the guide's body feeling them back; ``torque``: the body a driver's torque
+    turns, or None; ``extra``: more known loads, (body, force, point) or (body, couple).
+    Moments about the origin. Returns the solution by name."""
+    P, Acc, Al = ref["positions"], ref["accelerations"], ref["alpha"]
+
+    def pos(n):
+        return P[n] if n in P else _mp(sc.ground[n])
+
+    def acc(n):
+        return Acc[n] if n in Acc else (mpf(0), mpf(0))
+
+    bodies = sorted(
+        {b for p in pins for b in p[1:] if b != FRAME}
+        | {b for g in guides for b in g[1:3] if b != FRAME}
+    )
+    row = {b: 3 * i for i, b in enumerate(bodies)}
+    cols = []
+    for p in pins:
+        cols += [("pin", p, 0), ("pin", p, 1)]
+    for g in guides:
+        cols += [("N", g[0]), ("M", g[0])] + ([("F", g[0])] if g[4] else [])
+    if torque is not None:
+        cols.append(("T",))
+    n = len(cols)
+    assert n == 3 * len(bodies)  # statically determinate
+    M, rhs = mpmath.zeros(n, n), mpmath.zeros(n, 1)
+
+    def force(body, col, F, at, sign=1):
+        if body == FRAME:
+            return
+        i = row[body]
+        M[i, col] += sign * F[0]
+        M[i + 1, col] += sign * F[1]
+        M[i + 2, col] += sign * (at[0] * F[1] - at[1] * F[0])
+
+    def known(body, F, at=(0, 0), c=0):
+        i = row[body]
+        rhs[i] -= F[0]
+        rhs[i + 1] -= F[1]
+        rhs[i + 2] -= at[0] * F[1] - at[1] * F[0] + c
+
+    for j, c in enumerate(cols):
+        if c[0] == "pin":
+            (point, on, by), k = c[1], c[2]
+            e = (mpf(1), mpf(0)) if k == 0 else (mpf(0), mpf(1))
+            force(on, j, e, pos(point))
+            force(by, j, e, pos(point), -1)
+        elif c[0] in ("N", "F", "M"):
+            g = next(g for g in guides if g[0] == c[1])
+            point, bl, gb, u = g[:4]
+            if c[0] == "M":
+                M[row[bl] + 2, j] += 1
+                if gb != FRAME:
+                    M[row[gb] + 2, j] -= 1
+                continue
+            e = (-u[1], u[0]) if c[0] == "N" else u
+            force(bl, j, e, pos(point))
+            force(gb, j, e, pos(point), -1)
+        else:
+            M[row[torque] + 2, j] += 1
+    g = sc.gravity
+    for m in sc.masses:
+        if m.block:
+            body, G, a, al = f"block {m.body}", pos(m.body), acc(m.body), mpf(0)
+        else:
+            lk = sc.link(m.body)
+            lam, mu = mpf(m.lam), mpf(m.mu)
+
+            def at(T, lk=lk, lam=lam, mu=mu):
+                (px, py), (qx, qy) = T(lk.p), T(lk.q)
+                dx, dy = qx - px, qy - py
+                return (px + lam * dx - mu * dy, py + lam * dy + mu * dx)
+
+            body, G, a, al = lk.key, at(pos), at(acc), Al[lk.key]
+        mass = mpf(m.mass)
+        W = (mass * mpf(g.g) * mpf(g.direction[0]), mass * mpf(g.g) * mpf(g.direction[1]))
+        known(body, (W[0] - mass * a[0], W[1] - mass * a[1]), G, -mpf(m.inertia) * al)
+    for ld in sc.loads:
+        if ld.force is not None:
+            body = f"block {ld.target}"  # a block's, else the moving link's at that point
+            if body not in row:
+                body = next(lk.key for lk in sc.links if ld.target in lk.points and lk.key in row)
+            known(body, _mp(ld.force), pos(ld.target))
+        else:
+            known(sc.link(ld.target).key, (0, 0), (0, 0), mpf(ld.torque))
+    for it in extra:
+        if it[0] != FRAME:
+            known(*it) if len(it) == 3 else known(it[0], (0, 0), (0, 0), it[1])
+    x = mpmath.lu_solve(M, rhs)
+    out = {}
+    for j, c in enumerate(cols):
+        if c[0] == "pin":
+            out.setdefault(c[1], [0, 0])[c[2]] = x[j]
+        else:
+            out[c[:2] if len(c) > 1 else c] = x[j]
+    return out
+
+
+def _unit(P, a, b):
+    dx, dy = P[b][0] - P[a][0], P[b][1] - P[a][1]
+    d = mpmath.sqrt(dx * dx + dy * dy)
+    return (dx / d, dy / d)
+
+
+@pytest.fixture
+def digits():
+    saved = mpmath.mp.dps
+    mpmath.mp.dps = 50  # (the reference constraint solve polishes to 50 digits)
+    yield
+    mpmath.mp.dps = saved
+
+
+def _compare(f, want, scale):
+    """Every pin force, normal force, collar force and torque of ``f`` against the matrix
+    method's, to 1e-9 of the largest force (a torque of it times ``scale``, m)."""
+    big = max(float(mpmath.sqrt(v[0] ** 2 + v[1] ** 2)) for k, v in want.items() if len(k) == 3)
+    for k, v in want.items():
+        if len(k) == 3:  # a pin (point, on, by)
+            got = f.pin(*k)
+            assert math.hypot(got[0] - float(v[0]), got[1] - float(v[1])) <= 1e-9 * big, k
+    for g in f.guides:
+        assert abs(g.normal - float(want[("N", g.point)])) <= 1e-9 * big, g.point
+        assert abs(float(want[("M", g.point)])) <= 1e-20 * big  # the guides hold no couple
+    return big
+
+
+def test_a_driving_collar_against_the_matrix_method(digits):
+    sc = parse_scene(DRIVING)
+    sol = solve(sc)
+    f = sol.forces
+    ref = reference_solution(sc, sol.P)
+    P = ref["positions"]
+    P.update({k: _mp(v) for k, v in sc.ground.items()})
+    want = _matrix(
+        sc,
+        ref,
+        [
+            ("O", "OA", FRAME),
+            ("D", "DC", FRAME),
+            ("C", "DC", "block C"),
+            ("A", "AB", "OA"),
+            ("B", "AB", "block B"),
+        ],
+        [
+            ("C", "block C", "OA", _unit(P, "O", "A"), True),
+            ("B", "block B", FRAME, (mpf(1), mpf(0)), False),
+        ],
+        None,
+    )
+    big = _compare(f, want, 0.5)
+    assert f.driver == "collar" and f.crank == "block C"
+    assert abs(f.input_torque - float(want[("F", "C")])) <= 1e-9 * big
+    g = next(g for g in f.guides if g.point == "C")
+    assert g.by == "OA"
+    d = json.loads(json.dumps(sol.to_dict()))["forces"]
+    assert d["input_force"] == f.input_torque and d["collar"] == "block C"
+
+
+def test_a_second_collar_against_the_matrix_method(digits):
+    sc = parse_scene(SECOND)
+    sol = solve(sc)
+    f = sol.forces
+    ref = reference_solution(sc, sol.P)
+    P = ref["positions"]
+    P.update({k: _mp(v) for k, v in sc.ground.items()})
+    want = _matrix(
+        sc,
+        ref,
+        [("O", "OA", FRAME), ("C", "CB", "block C"), ("B", "CB", "block B")],
+        [
+            ("C", "block C", "OA", _unit(P, "O", "A"), True),
+            ("B", "block B", FRAME, (mpf(1), mpf(0)), False),
+        ],
+        "OA",
+    )
+    big = _compare(f, want, 1.0)
+    assert abs(f.input_torque - float(want[("T",)])) <= 1e-9 * big * 1.0
+    assert f.second_crank == "block C"
+    assert abs(f.second_torque - float(want[("F", "C")])) <= 1e-9 * big
+    d = json.loads(json.dumps(sol.to_dict()))["forces"]
+    assert d["second"] == {"block": "block C", "collar": True, "input_force": f.second_torque}
+
+
+def _sliding(sc, sol, name):
+    """The collar's sliding along its rod relative to the rod, and the rod's unit
+    direction, from the positions and velocities (the rod's point under the collar moves
+    at omega x KC, K its fixed pivot)."""
+    rod = sc.link(sc.slider(name).guide)
+    K = rod.p if rod.p in sc.ground else rod.q
+    (kx, ky), (nx, ny), (cx, cy) = sol.P[K], sol.P[rod.other(K)], sol.P[name]
+    L = np.hypot(nx - kx, ny - ky)
+    wx, wy = (nx - kx) / L, (ny - ky) / L
+    om = sol.W[rod.key]
+    vx, vy = sol.V[name][0] + om * (cy - ky), sol.V[name][1] - om * (cx - kx)
+    return vx * wx + vy * wy
+
+
+def _power_terms(sc, sol, f):
+    """Every power of the balance: the drivers', the loads', the weights', the inertia's
+    (-m a_G . v_G - I alpha omega, G's motion from its link's ends) and the friction's."""
+    inp = sc.input
+    terms = []
+    if f.driver == "collar":
+        terms.append(f.input_torque * _sliding(sc, sol, inp.block))
+    else:
+        terms.append(f.input_torque * sol.W[sc.link(inp.crank).key])
+    if inp.second is not None:
+        terms.append(f.second_torque * _sliding(sc, sol, inp.second.block))
+    for ld in sc.loads:
+        if ld.force is not None:
+            v = sol.V[ld.target]
+            terms.append(ld.force[0] * v[0] + ld.force[1] * v[1])
+        else:
+            terms.append(ld.torque * sol.W[sc.link(ld.target).key])
+    g = sc.gravity
+    for m in sc.masses:
+        if m.block:
+            v, a, al, w = sol.V[m.body], sol.A[m.body], 0.0, 0.0
+        else:
+            lk = sc.link(m.body)
+
+            def at(T, lk=lk, m=m):
+                (px, py), (qx, qy) = T[lk.p], T[lk.q]
+                dx, dy = qx - px, qy - py
+                return (px + m.lam * dx - m.mu * dy, py + m.lam * dy + m.mu * dx)
+
+            v, a, al, w = at(sol.V), at(sol.A), sol.Al[lk.key], sol.W[lk.key]
+        terms.append(m.mass * g.g * (g.direction[0] * v[0] + g.direction[1] * v[1]))
+        terms.append(-m.mass * (a[0] * v[0] + a[1] * v[1]))
+        terms.append(-m.inertia * al * w)
+    terms.append(f.friction_power)
+    return terms
+
+
+@pytest.mark.parametrize("text", [DRIVING, SECOND], ids=["driving", "second"])
+def test_virtual_power_with_inertia(text):
+    sc = parse_scene(text)
+    sol = solve(sc)
+    terms = _power_terms(sc, sol, sol.forces)
+    assert abs(sum(terms)) <= 1e-9 * sum(abs(t) for t in terms)
+    assert abs(terms[0]) > 1e-3 * sum(abs(t) for t in terms)  # the driver does work
+
+
+@pytest.mark.parametrize("text", [DRIVING, SECOND], ids=["driving", "second"])
+def test_virtual_power_at_every_place_of_a_sweep(text):
+    """The vectorised forces over the collar's travel (or the crank's turn, the collar
+    sliding with it, as far as it stays on its rod): the balance at every place."""
+    sc = parse_scene(text)
+    res = sweep(sc, None if sc.input.block else np.radians(np.arange(3.0, 360.0, 7.0)))
+    f = analyse(res)
+    terms = _power_terms(sc, res, f)
+    total = sum(terms)
+    scale = sum(np.abs(t) for t in terms)
+    fine = np.ones(len(res), dtype=bool)
+    for st in f.steps:
+        fine &= np.broadcast_to(st.condition, fine.shape) > 1e-6
+    assert fine.sum() >= 12
+    assert np.all((np.abs(total) <= 1e-9 * scale)[fine])
+
+
+@pytest.mark.parametrize("base", [DRIVING, SECOND], ids=["driving", "second"])
+def test_friction_at_the_collar_works_against_its_sliding(base):
+    """With friction at the guides and the pins the balance holds with the friction's
+    power; the friction along the rod opposes the collar's sliding on it, mu |N|."""
+    text = base.replace("[input]\n", "[friction]\nguides = 0.15\npins = 0.1\n[input]\n", 1)
+    text = text.replace(
+        "[sliders]",
+        "[pins]\nC = { radius = 10 }\nO = { radius = 20 }\nB = { radius = 12 }\n[sliders]",
+    )
+    sc = parse_scene(text)
+    sol = solve(sc)
+    f = sol.forces
+    terms = _power_terms(sc, sol, f)
+    assert f.friction_power < 0
+    assert abs(sum(terms)) <= 1e-9 * sum(abs(t) for t in terms)
+    g = next(g for g in f.guides if g.point == "C")
+    fr = next(it for it in f.friction if it[0] == "block C")
+    wx, wy = g.n[1], -g.n[0]
+    along = fr[2][0] * wx + fr[2][1] * wy
+    assert abs(abs(along) - 0.15 * abs(g.normal)) <= 1e-12 * abs(g.normal)
+    assert along * _sliding(sc, sol, "C") < 0
+    frictionless = solve(parse_scene(base)).forces
+    assert f.input_torque != frictionless.input_torque
+    assert f.second_torque != frictionless.second_torque or sc.input.second is None
+
+
+def test_the_words_and_steps_of_a_collar(tmp_path, capsys):
+    from polygon_method.cli import main
+
+    for text, words in (
+        (DRIVING, "input force on collar C along OA (inertia, weights and loads): "),
+        (SECOND, "input force on collar C (the second input) along OA (inertia, "),
+    ):
+        path = tmp_path / "collar.toml"
+        path.write_text(text)
+        assert main(["solve", str(path)]) == 0
+        out = capsys.readouterr().out
+        assert words in out and "not solved for forces" not in out
+        assert main(["steps", str(path)]) == 0
+        out = capsys.readouterr().out
+        assert "the collar: " in out or "moments of OA about O" in out
+
+
+def test_the_worked_collar_and_its_written_answers(digits):
+    """worked_problems/collar_forces.toml against the 9 x 9 matrix method: the tool to
+    1e-9, the file's written answers (and the screw's force in its comment) to their four
+    figures."""
+    from polygon_method.scene import load_scene
+
+    sc = load_scene(ROOT / "worked_problems" / "collar_forces.toml")
+    sol = solve(sc)
+    f = sol.forces
+    ref = reference_solution(sc, sol.P)
+    P = ref["positions"]
+    P.update({k: _mp(v) for k, v in sc.ground.items()})
+    want = _matrix(
+        sc,
+        ref,
+        [("O", "OA", FRAME), ("D", "DC", FRAME), ("C", "DC", "block C")],
+        [("C", "block C", "OA", _unit(P, "O", "A"), True)],
+        None,
+    )
+    big = _compare(f, want, 0.8)
+    assert abs(f.input_torque - float(want[("F", "C")])) <= 1e-9 * big
+    import tomllib
+
+    size = {k[0]: float(mpmath.sqrt(v[0] ** 2 + v[1] ** 2)) for k, v in want.items() if len(k) == 3}
+    size["N_C"] = abs(float(want[("N", "C")]))
+    answers = tomllib.loads((ROOT / "worked_problems" / "collar_forces.toml").read_text())[
+        "answers"
+    ]
+    for key in ("F_O", "F_D", "F_C", "N_C"):
+        value = float(answers[key].split()[0])
+        assert abs(size[key if key == "N_C" else key[2:]] - value) <= 5e-4 * value, key
+    assert abs(float(want[("F", "C")]) + 117.1) <= 5e-4 * 117.1  # towards O (the comment's)
+
+
+def test_the_bounds_hold_and_grow_towards_the_dead_centre(digits):
+    """The driving collar's forces near its dead centre (the rod's line through D, s_C ->
+    OD + DC = 450 mm) against the 50-digit matrix method: each within its stated bound,
+    the bound growing as the dead centre nears (its condition 0.64 to 0.030, the driver's
+    force 490 N to 58 MN)."""
+    from polygon_method.forces.bounds import force_bounds
+
+    worst = []
+    for s in (400.0, 440.0, 449.0, 449.9):
+        sc = parse_scene(DRIVING.replace("s_C = 350", f"s_C = {s}"))
+        sol = solve(sc)
+        f, b = sol.forces, force_bounds(sol)
+        ref = reference_solution(sc, sol.P)
+        P = ref["positions"]
+        P.update({k: _mp(v) for k, v in sc.ground.items()})
+        want = _matrix(
+            sc,
+            ref,
+            [
+                ("O", "OA", FRAME),
+                ("D", "DC", FRAME),
+                ("C", "DC", "block C"),
+                ("A", "AB", "OA"),
+                ("B", "AB", "block B"),
+            ],
+            [
+                ("C", "block C", "OA", _unit(P, "O", "A"), True),
+                ("B", "block B", FRAME, (mpf(1), mpf(0)), False),
+            ],
+            None,
+        )
+        for key, e in b.pins.items():
+            got, w = f.pin(*key), want[key]
+            err = float(mpmath.sqrt((got[0] - w[0]) ** 2 + (got[1] - w[1]) ** 2))
+            assert err <= e * b.force, (s, key, err / b.force, e)
+        for g in f.guides:
+            assert abs(float(g.normal - want[("N", g.point)])) <= b.guides[g.point] * b.force
+        assert abs(float(f.input_torque - want[("F", "C")])) <= b.effort * b.force
+        worst.append(b.worst)
+    assert all(later > 3 * earlier for earlier, later in zip(worst, worst[1:])), worst
