@@ -338,6 +338,60 @@ def parse_quantity(
         read whatever its size (the mechanism may produce it) and warned of instead
         (:func:`implausible`).
     """
+    q = _at_once(raw, kind, default_unit, need_sense, allow_sense, refuse_absurd)
+    if q is not None:
+        return q
+    return _whole_way(raw, kind, where, default_unit, need_sense, allow_sense, refuse_absurd)
+
+
+#: the characters of a number as a quantity's text writes it: of these, what ``float``
+#: reads is what :data:`_NUMBER` matches (no underscores, no words such as ``inf``)
+_NUMBER_CHARS = frozenset("0123456789.eE+-")
+
+
+def _at_once(raw, kind, default_unit, need_sense, allow_sense, refuse_absurd):
+    """The usual quantity read without a regular expression: a bare number in its default
+    unit, or ``"number unit"`` or ``"number unit sense"`` with the kind's unit as its table
+    writes it; None for anything else and for a value the whole way refuses, which
+    :func:`parse_quantity` then reads the whole way (and words). The same value and
+    sense as the whole way, to the last bit (a test holds the two equal)."""
+    t = type(raw)
+    if t is int or t is float:
+        if default_unit is None or need_sense or not -1e300 < raw < 1e300:
+            return None
+        factor = UNITS[kind].get(default_unit)
+        value, sense = float(raw), None
+    elif t is str:
+        words = raw.split()
+        n = len(words)
+        if n != 2 and n != 3 or not _NUMBER_CHARS.issuperset(words[0]):
+            return None
+        factor = UNITS[kind].get(words[1])
+        sense = _SENSES.get(words[2].lower()) if n == 3 else None
+        if n == 3 and sense is None:
+            return None
+        try:
+            value = float(words[0])
+        except ValueError:
+            return None
+        if sense is not None and (value < 0 or not (need_sense or allow_sense)):
+            return None
+        if need_sense and sense is None and value != 0:
+            return None
+    else:
+        return None
+    if factor is None or not math.isfinite(value):
+        return None
+    si = value * factor
+    if refuse_absurd and kind in ABSURD and not abs(si) <= ABSURD[kind]:
+        return None
+    if kind in TINY and si != 0 and abs(si) < TINY[kind]:
+        return None
+    return Quantity(-si if sense == "cw" else si, sense)
+
+
+def _whole_way(raw, kind, where, default_unit, need_sense, allow_sense, refuse_absurd):
+    """:func:`parse_quantity` the whole way: every form, every refusal worded."""
     if isinstance(raw, bool) or not isinstance(raw, (int, float, str)):
         raise SceneError(
             f'expected a number or a string such as "50 mm", got {_kind_of(raw)}', key=where

@@ -3,6 +3,7 @@ every failure one :class:`SceneError` naming the file, key and line."""
 
 from __future__ import annotations
 
+import functools
 import math
 import os
 import re
@@ -34,7 +35,6 @@ from .records import (
     _UNIT_ORDER,
     TOP_KEYS,
     FixedPath,
-    GuideSlider,
     Link,
     Scene,
     split_name,
@@ -45,7 +45,9 @@ from .masses import _Masses
 from .answers import _Answers
 from .tables import _suggest, _Tables
 from .variation import _Variants
+from .connected import _Connected
 
+_TOP_KEYS = frozenset(TOP_KEYS)
 #: the most a scene file may hold: a scene is a page of text (``/dev/zero`` is not read on)
 MAX_SCENE_BYTES = 1 << 20
 #: the most points a scene may have (a textbook's mechanism has a few dozen; a long chain
@@ -178,7 +180,7 @@ def parse_scene(
 def scene_table(scene: Scene) -> dict:
     """The TOML table a scene was read from (its text parsed again), for making variants
     of it; empty for a scene not read from text."""
-    return toml_table("\n".join(scene._lines)) if scene._lines else {}
+    return toml_table("\n".join(toml_lines(scene._text))) if scene._text else {}
 
 
 def scene_from_table(raw: dict, file: str | None = None) -> Scene:
@@ -187,10 +189,10 @@ def scene_from_table(raw: dict, file: str | None = None) -> Scene:
     return _Loader(raw, "", file).scene()
 
 
-class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
+class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected):
     def __init__(self, raw: dict, text: str, file):
         self.raw = raw
-        self.lines = toml_lines(text)
+        self.text = text
         self.long_run = has_long_run(text)
         self.file = file
         self.unit = "mm"
@@ -198,6 +200,11 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
         self.read_notes = []  # how angles in a book's words were read
 
     # -- locations
+    @functools.cached_property
+    def lines(self) -> list:
+        """The text's lines (as TOML counts them), split when a line is first asked for."""
+        return toml_lines(self.text)
+
     def line_of(self, table: str | None, key: str | None = None):
         """Line number of ``[table] key`` (or of the table header) in the file, if found
         (all of them found in one pass, the first time one is asked for)."""
@@ -230,6 +237,14 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
             raise self.error(exc.message, table, key) from None
 
     def length(self, raw, table, key, *, positive=True):
+        kind = type(raw)
+        if kind is int or kind is float:  # a bare number in the scene's unit: at once
+            try:
+                q = float(raw) * UNITS["length"][self.unit]  # what parse_quantity gives
+            except OverflowError:  # an integer of hundreds of digits: worded below
+                q = math.nan
+            if (_ABSURD_SHORT if positive else -_ABSURD_LONG) <= q <= _ABSURD_LONG:
+                return q  # (else, NaN and infinities too: refused in the words below)
         q = self.qty(raw, "length", table, key, default_unit=self.unit).value
         if positive and q <= 0:
             raise self.error(f"length must be positive, got {raw!r}", table, key)
@@ -245,7 +260,10 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
     def coords(self, raw, table, key):
         if not (isinstance(raw, list) and len(raw) == 2):
             raise self.error("expected coordinates [x, y]", table, key)
-        return tuple(self.length(v, table, key, positive=False) for v in raw)
+        return (
+            self.length(raw[0], table, key, positive=False),
+            self.length(raw[1], table, key, positive=False),
+        )
 
     def table(self, name, required=False) -> dict:
         value = self.raw.get(name)
@@ -263,7 +281,8 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
         return value
 
     def point_name(self, name, table, key=None):
-        if not _POINT_ONLY.match(str(name)):
+        one = type(name) is str and len(name) == 1 and "A" <= name <= "Z"  # (the usual)
+        if not one and not _POINT_ONLY.match(str(name)):
             raise self.error(
                 f"'{name}' is not a point name (a capital letter, optionally "
                 "followed by digits: A, O2, B1)",
@@ -299,7 +318,7 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
         raw = self.raw
         self.check_integers()
         for key in raw:
-            if key not in TOP_KEYS:
+            if key not in _TOP_KEYS:
                 kind = "table" if isinstance(raw[key], dict) else "key"
                 where = f"[{key}]" if kind == "table" else key
                 raise SceneError(
@@ -397,10 +416,11 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
         self.ground = ground
 
         points = self.carried_points(index, ground)
-        sliders = self.sliders(index, ground, {p.name for p in points})
-        rolling = read_rolling(self, ground, sliders, {p.name for p in points})
+        carried = {p.name for p in points}
+        sliders = self.sliders(index, ground, carried)
+        rolling = read_rolling(self, ground, sliders, carried)
         self.rolling_pairs = rolling
-        known = set(ground) | {p for lk in links for p in lk.points} | {p.name for p in points}
+        known = set(ground).union([lk.p for lk in links], [lk.q for lk in links], carried)
         known |= {s.point for s in sliders if s.slot}  # a peg in two slots; a yoke
         known |= {s.yoke for s in sliders if hasattr(s, "yoke")}
         self.known = known
@@ -469,7 +489,7 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
             indicator=indicator,
             flywheel=flywheel,
             friction=friction,
-            _lines=tuple(self.lines),
+            _text=self.text,
         )
 
     def scale(self):
@@ -488,64 +508,6 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine):
                 key,
             )
         return link, pts
-
-    def connected(self, links, points, sliders, ground, inp, cylinders=(), rolling=()):
-        """Every point must take part: a dangling point is almost always a typo."""
-        uses = {}
-        for cyl in cylinders:
-            for p in (cyl.barrel, cyl.rod):
-                uses[p] = uses.get(p, 0) + 1
-        for lk in links:
-            for p in lk.points:
-                uses[p] = uses.get(p, 0) + 1
-        roles = set(ground) | {p.name for p in points} | {s.point for s in sliders}
-        roles |= {p for s in sliders if isinstance(s, GuideSlider) for p in (s.first, s.second)}
-        roles |= {p for r in rolling for p in (r.centre, r.rim)}  # a wheel's points roll
-        roles |= {
-            p for r in rolling if r.base for p in self.index[frozenset(split_name(r.base))].points
-        }  # and so does the gear a wheel meshes with
-        plates = {p.link for p in points}  # a link carrying points is a plate: its ends belong
-        roles |= {q for lk in links if lk.key in plates for q in lk.points}
-        through = {s.through for s in sliders if isinstance(s, FixedPath)}
-        through |= {r.through for r in rolling if r.through is not None}  # a ground line's
-        lonely = [
-            name
-            for name, xy in ground.items()
-            if name not in uses
-            and xy not in through
-            and name != inp.pivot
-            and name not in {s.point for s in sliders}
-        ]
-        for lk in links:
-            for p in lk.points:
-                if uses[p] == 1 and p not in roles:  # (a cylinder's end is used twice)
-                    other = lk.other(p)
-                    guess = [
-                        f"{other}{g}" if len(other) == len(g) == 1 else f"{other}-{g}"
-                        for g in lonely
-                    ]
-                    hint = (
-                        (
-                            f" (did you mean {guess[0]}? ground point {lonely[0]} is joined to "
-                            "nothing)"
-                        )
-                        if guess
-                        else ""
-                    )
-                    raise self.error(
-                        f"point {p} appears only in link {lk.key} and nowhere "
-                        f"else: nothing holds it (a typo?){hint}",
-                        "links",
-                        lk.key,
-                    )
-        if lonely:
-            name = lonely[0]
-            raise SceneError(
-                f"ground point {name} is not joined to any link: add its link or remove it",
-                file=self.file,
-                key=f"[ground] {name}",
-                line=self.line_of("ground", name),
-            )
 
 
 # --------------------------------------------------------------------------- answer files

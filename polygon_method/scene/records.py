@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from ..common.errors import SceneError
 from ..common.units import ABSURD, TINY, UNITS
 from .force_records import Flywheel, Friction, Gravity, Indicator, Mass  # noqa: F401  (re-exported)
+from .content import ContentKey
 
 POINT_NAME = re.compile(r"[A-Z][0-9]*")
 _POINT_ONLY = re.compile(r"^[A-Z][0-9]*\Z")  # \Z: "A\n" is no point name
@@ -459,16 +460,15 @@ class Scene:
     #: dead centre' = 210 deg from +x (...)"), notes of every solution
     reading_notes: tuple = field(default=(), compare=False)
     _link_index: dict = field(default_factory=dict, repr=False, compare=False)
-    _lines: tuple = field(default=(), repr=False, compare=False)  # the file's text, by line
+    _text: str = field(default="", repr=False, compare=False)  # the file's text
 
     def __post_init__(self):
-        # made once per scene (and anew by dataclasses.replace, which is checked as the
-        # loader checks a file): the points in file order, and the scene's content as a key
-        # for the plans cached outside it
+        # made once per scene (and anew by dataclasses.replace, checked as a file is): the
+        # points in file order, and the scene's content as a key for the plans cached outside
         self._check_numbers()
         seen = dict.fromkeys(self.ground)
         for link in self.links:
-            seen.update(dict.fromkeys(link.points))
+            seen[link.p] = seen[link.q] = None
         for cp in self.points:
             seen[cp.name] = None
         for r in self.rolling:  # a rack's point, on no link
@@ -493,7 +493,7 @@ class Scene:
                 self.cylinders,
                 self.rolling,
             )
-            hash(key)
+            key = ContentKey(key)
         except (TypeError, AttributeError):  # something unhashable: not cached by content
             key = None
         object.__setattr__(self, "_key", key)

@@ -148,9 +148,9 @@ def key_line(scene, key: str | None):
     """The line of a located key such as ``[assembly] C`` or ``[links] BC, CD`` (its first
     name) in the file the scene was read from, or None."""
     m = re.match(r"^\[([A-Za-z_]+)\]\s*([^,\s]+)?", key or "")
-    if not m or not scene._lines:
+    if not m or not scene._text:
         return None
-    return line_of(scene._lines, m.group(1), m.group(2))
+    return line_of(toml_lines(scene._text), m.group(1), m.group(2))
 
 
 def syntax_error(msg, text, file) -> SceneError:

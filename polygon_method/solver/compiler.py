@@ -36,9 +36,9 @@ from dataclasses import replace
 from ..common.errors import AssemblyError, MobilityError, PolygonMethodError, SceneError
 from ..common.numbers import in_units, quiet
 from .completion import gas_towards_crank, given_completed, place
-from .plan import Bodies, Dims, Plan, _bodies_at
+from .plan import Bodies, Dims, Plan, _pin_entry
 from ..scene import GuideSlider, Scene, key_line
-from ..steps import TIERS, Context, Crank, cylinder
+from ..steps import NEEDS, TIERS, Context, Crank, cylinder
 from ..steps import collar
 from ..steps.block import BlockDriver
 from ..steps.rolling_driver import WheelDriver
@@ -101,7 +101,7 @@ def compile_plan(scene: Scene) -> Plan:
         object.__setattr__(scene, "input", plan.scene.input)  # completed when compiled
     if plan.scene is not scene:  # a scene of the same content: its own loads, masses, ...
         plan = _for_scene(plan, scene)
-    if any(ld.toward is not None and ld.force is None for ld in scene.loads):
+    if scene.loads and any(ld.toward is not None and ld.force is None for ld in scene.loads):
         gas_towards_crank(plan, scene)  # a gas force's direction (loads are not in the key)
     try:
         ident = id(scene)
@@ -154,6 +154,12 @@ def gruebler(scene: Scene) -> int:
     return 3 * (n - 1) - 2 * j - len(scene.rolling)
 
 
+def _first_tier(scene) -> tuple:
+    """The first tier's recognisers that can find a point in ``scene`` (TIERS as it is now):
+    those that need no table, and those whose table (``steps.NEEDS``) the scene has."""
+    return tuple([r for r in TIERS[0] if (t := NEEDS.get(r)) is None or getattr(scene, t)])
+
+
 class _Compiler:
     """The constraint graph as the recognisers see it (``g`` in the steps' ``recognise``):
     the points found so far (``P``), the links and sliders already used, the bodies."""
@@ -169,9 +175,9 @@ class _Compiler:
         )  # only positions are placed here
         self.P = dict(scene.ground)
         self.steps = []
-        self.used_links = {
-            lk.key for lk in scene.links if lk.p in scene.ground and lk.q in scene.ground
-        }
+        ground = scene.ground  # the links of two ground points: used, and not turning
+        self._fixed = [lk.key for lk in scene.links if lk.p in ground and lk.q in ground]
+        self.used_links = set(self._fixed)
         self.used_sliders = set()
         self.notes = []
         self.bodies = Bodies(scene)
@@ -181,10 +187,16 @@ class _Compiler:
         for s in scene.sliders:
             if s.slot:
                 self._slots.setdefault(s.point, []).append(s)
-        self._bodies_of = {}
+        self.first_tier = _first_tier(scene)
+        self._bodies_of = of = {}
+        frame = self.bodies.frame
         for lk in scene.links:
-            for p in self.bodies.frame(lk.key):
-                self._bodies_of.setdefault(p, []).append(lk.key)
+            key = lk.key
+            for p in frame(key):
+                if p in of:
+                    of[p].append(key)
+                else:
+                    of[p] = [key]
         self._guided = {}  # link key -> slider points that slide on it
         self._yokes = {}  # a pin -> the yoke whose slot it slides in
         for s in scene.sliders:
@@ -264,7 +276,7 @@ class _Compiler:
             (),
             Dims(
                 dict(sc.ground),
-                tuple(st.params for st in steps),
+                tuple([st.params for st in steps]),
                 inp.angle,
                 inp.omega,
                 inp.alpha,
@@ -452,7 +464,7 @@ class _Compiler:
                 name = names[i]
                 if name in self.P:
                     continue
-                found = self._first(TIERS[0], name)
+                found = self._first(self.first_tier, name)
             for tier in TIERS[1:]:
                 if found is not None:
                     break
@@ -473,36 +485,17 @@ class _Compiler:
         for st in cylinder.recognise_all(self):  # both ends known: last, they find no point
             self.steps.append(st)
         self.finish()
-        fixed = {lk.key: 0.0 for lk in sc.links if lk.p in sc.ground and lk.q in sc.ground}
-        pins = []
-        for pin in sc.pins:
-            joined = _bodies_at(sc, pin.point)
-            pairs = tuple(
-                (f"{a[0]}|{b[0]}", i, j)
-                for i, a in enumerate(joined)
-                for j, b in enumerate(joined)
-                if j > i
-            )
-            links = tuple(lk for _, lk in joined)
-            pins.append(
-                (
-                    pin.point,
-                    tuple(b for b, _ in joined),
-                    links,
-                    tuple(k for k, _, _ in pairs),
-                    tuple((i, j) for _, i, j in pairs),
-                    tuple((links[i], links[j]) for _, i, j in pairs),
-                )
-            )
+        fixed = dict.fromkeys(self._fixed, 0.0)
+        pins = [_pin_entry(sc, pin.point) for pin in sc.pins] if sc.pins else ()
         steps = tuple(self.steps)
         ground = dict(sc.ground)
         dims = Dims(
             ground,
-            tuple(st.params for st in steps),
+            tuple([st.params for st in steps]),
             inp.angle,
             inp.omega,
             inp.alpha,
-            {p.point: p.radius for p in sc.pins},
+            {p.point: p.radius for p in sc.pins} if sc.pins else {},
         )
         return Plan(steps, ground, sc, tuple(self.notes), fixed, tuple(pins), dims)
 

@@ -380,13 +380,13 @@ class Plan:
     def __post_init__(self):
         # what every evaluation at the plan's own dimensions starts from (made anew by
         # dataclasses.replace, so a plan with other steps never runs stale functions)
-        object.__setattr__(self, "_zero", {name: (0.0, 0.0) for name in self.ground})
+        object.__setattr__(self, "_zero", dict.fromkeys(self.ground, (0.0, 0.0)))
         # the bound phases, made when first needed (a plan that solves one instant binds
         # only its one-instant functions)
         object.__setattr__(self, "_phases", None)
         object.__setattr__(self, "_instant", None)
         object.__setattr__(
-            self, "_checked", tuple((st.index, st) for st in self.steps if st.branching)
+            self, "_checked", tuple([(st.index, st) for st in self.steps if st.branching])
         )
         # each sized pin with its radius at the plan's own dimensions, its pairs' links and
         # its one pair's (None where it joins more than two bodies), what
@@ -416,15 +416,16 @@ class Plan:
 
 
 def _bodies_at(sc, point) -> tuple:
-    out = []
-    if point in sc.ground:
-        out.append(("ground", None))
+    out = [("ground", None)] if point in sc.ground else []
     for lk in sc.links:
-        if point in lk.points:
+        if lk.p == point or lk.q == point:
             out.append((lk.key, lk.key))
-    cp = sc.carried(point)
-    if cp is not None:
-        out.append((cp.link, cp.link))
+    for cp in sc.points:  # (sc.carried(point))
+        if cp.name == point:
+            out.append((cp.link, cp.link))
+            break
+    if not sc.cylinders and not sc.sliders:  # (the usual scene: pins of links alone)
+        return tuple(out)
     for cyl in sc.cylinders:  # barrel and rod turn together (the cylinder's omega)
         if point == cyl.barrel:
             out.append((f"barrel {cyl.key}", cyl.key))
@@ -441,3 +442,22 @@ def _bodies_at(sc, point) -> tuple:
         else:  # in the slot of a translating yoke: the block does not turn
             out.append((f"block {sl.key}", None))
     return tuple(out)
+
+
+def _pin_entry(sc, point) -> tuple:
+    """A pin's entry in the plan: (point, the bodies it joins, their links or None, each
+    pair's "a|b" key, the pairs' (i, j), the pairs' links)."""
+    joined = _bodies_at(sc, point)
+    if len(joined) == 2:  # (the usual pin: two bodies, one pair)
+        (a, la), (b, lb) = joined
+        return (point, (a, b), (la, lb), (f"{a}|{b}",), ((0, 1),), ((la, lb),))
+    bodies = tuple([b for b, _ in joined])
+    links = tuple([lk for _, lk in joined])
+    keys, pairs, linked = [], [], []
+    n = len(joined)
+    for i in range(n):
+        for j in range(i + 1, n):
+            keys.append(f"{bodies[i]}|{bodies[j]}")
+            pairs.append((i, j))
+            linked.append((links[i], links[j]))
+    return (point, bodies, links, tuple(keys), tuple(pairs), tuple(linked))

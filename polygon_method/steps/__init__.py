@@ -76,8 +76,23 @@ TIERS = (
     (triad.recognise,),
 )
 
+#: the scene's table (a :class:`~polygon_method.scene.Scene` attribute) without which a
+#: first-tier recogniser finds nothing: the compiler leaves it out for a scene whose table
+#: is empty (a linkage of pins alone tries the carried points and the dyad only). A
+#: recogniser not listed is always tried.
+NEEDS = {
+    rolling.recognise: "rolling",
+    wheel_centre.recognise: "rolling",
+    rack.recognise: "rolling",
+    carried.recognise: "points",
+    slider.recognise: "sliders",
+    peg.recognise: "sliders",
+    yoke.recognise: "sliders",
+}
+
 __all__ = [
     "TIERS",
+    "NEEDS",
     "Step",
     "Context",
     "State",

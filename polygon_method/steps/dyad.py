@@ -105,7 +105,7 @@ def recognise(g, name):
     free = g.free(name)
     if len(free) >= 2:
         (k1, b1, l1), (k2, b2, l2) = free[0], free[1]
-        return Dyad(g.next_index, name, b1, k1, l1, b2, k2, l2, unit=g.unit, uname=g.uname)
+        return Dyad(len(g.steps), name, b1, k1, l1, b2, k2, l2, 1.0, g.unit, g.uname)
     return None
 
 

@@ -1,0 +1,96 @@
+"""Where the time of a scene never solved before goes: from its text to one solved position,
+stage by stage (the TOML, the reading into a checked ``Scene``, compiling the plan, the
+first solve), each the least of many small batches (the least is the machine's own speed:
+a shared machine only adds to it).
+
+    python benchmarks/reading.py                 # the seed's worked file, stage by stage
+    python benchmarks/reading.py FILE.toml       # another scene
+    python benchmarks/reading.py --profile 30    # and cProfile's 30 costliest functions
+
+``solve`` reads a scene as ``parse_scene(text, variants=False, answers=False)`` does: its
+``[variants]`` and ``[answers]`` left unread (``check`` reads the answers, ``variants``
+the variants). The plan caches are emptied before each compile, as for a scene never seen.
+A benchmark, not a test: nothing here fails on time (``speed.py`` holds the targets).
+"""
+
+from __future__ import annotations
+
+import argparse
+import cProfile
+import pstats
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+SEED = ROOT / "worked_problems" / "fourbar_image_points.toml"
+
+
+def least(fn, batches=300, number=10):
+    """The least time of one call of ``fn`` over ``batches`` batches of ``number`` calls."""
+    best = float("inf")
+    for _ in range(batches):
+        t = time.perf_counter()
+        for _ in range(number):
+            fn()
+        best = min(best, (time.perf_counter() - t) / number)
+    return best
+
+
+def stages(text):
+    """(name, function) of each stage of a scene read from ``text`` and solved."""
+    from polygon_method import parse_scene, solve
+    from polygon_method.scene.reading import toml_table
+    from polygon_method.solver import compiler
+
+    def fresh():
+        compiler._BY_ID.clear()
+        compiler._BY_CONTENT.clear()
+
+    scene = parse_scene(text, variants=False, answers=False)
+
+    def compile_only():
+        fresh()
+        return compiler.compile_plan(scene)
+
+    def compile_and_solve():
+        fresh()
+        return solve(scene)
+
+    def text_to_solved():
+        fresh()
+        return solve(parse_scene(text, variants=False, answers=False))
+
+    return [
+        ("the TOML (rtoml)", lambda: toml_table(text)),
+        ("text -> checked Scene", lambda: parse_scene(text, variants=False, answers=False)),
+        ("Scene -> plan (compiled)", compile_only),
+        ("Scene -> one solved position", compile_and_solve),
+        ("warm solve (plan cached)", lambda: solve(scene)),
+        ("text -> solved, never seen", text_to_solved),
+    ]
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("scene", nargs="?", default=str(SEED))
+    parser.add_argument("--profile", type=int, default=0, metavar="N")
+    args = parser.parse_args(argv)
+    text = Path(args.scene).read_text()
+    rows = stages(text)
+    for name, fn in rows:
+        fn()  # imports and first-call costs out of the way
+    print(f"{Path(args.scene).name}: least of 300 batches of 10")
+    for name, fn in rows:
+        print(f"  {name:32s} {least(fn) * 1e6:9.1f} us")
+    if args.profile:
+        whole = rows[-1][1]
+        prof = cProfile.Profile()
+        prof.enable()
+        for _ in range(2000):
+            whole()
+        prof.disable()
+        pstats.Stats(prof).sort_stats("tottime").print_stats(args.profile)
+
+
+if __name__ == "__main__":
+    main()
