@@ -15,7 +15,7 @@ from ..scene.force_records import rolling_body
 from ..motion.solution import Solution, solve
 from ..steps import under_label
 from ..common.numbers import textbook as _g
-from . import confusions, power, slips
+from . import confusions, power, rod_slip, slips
 from .alternatives import _DECIMAL, _FACTOR_MISTAKES, _Alternatives, _Candidate, _speed_mistakes
 from .slips import _SLIP_RANK, _slip
 from .slots import coriolis_left_out
@@ -498,27 +498,11 @@ class _Diagnoser:
                 "offset_wrong_side",
                 masses=tuple(replace(m, inertia=-m.inertia) for m in sc.masses),
             )
-        self.two_masses_slip(turning, again)
-        return out
-
-    def two_masses_slip(self, turning, again):
-        """A link replaced by two masses at its pins (m_A = m GB / l, m_B = m GA / l, the
-        equivalent system of the engine chapter) without the correction couple: its moment
-        of inertia taken as m GA GB (G on the line between the pins), not m k^2."""
-        sc = self.sc
-        two = {}
-        for m in turning:
-            if not m.block and m.mu == 0.0 and 0.0 < m.lam < 1.0:
-                L = sc.link(m.body).length
-                if abs(m.inertia - m.mass * m.lam * (1 - m.lam) * L * L) > 1e-9 * m.inertia:
-                    two[m.body] = m.mass * m.lam * (1 - m.lam) * L * L
+        two = rod_slip.two_masses(sc, turning)  # the equivalent system, no correction couple
         if two:
-            again(
-                "the rod replaced by two masses at its pins (m GB / l and m GA / l) "
-                "without the correction couple: I taken as m GA GB, not m k^2",
-                "correction_couple_left_out",
-                masses=tuple(replace(m, inertia=two.get(m.body, m.inertia)) for m in sc.masses),
-            )
+            masses = tuple(replace(m, inertia=two.get(m.body, m.inertia)) for m in sc.masses)
+            again(rod_slip.WORDS, "correction_couple_left_out", masses=masses)
+        return out
 
     def gear_ratio(self, ans, signed):
         """A planet's omega by the tabular method, its classic slips (the step says them)."""
