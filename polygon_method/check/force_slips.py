@@ -6,11 +6,11 @@ from __future__ import annotations
 from dataclasses import replace
 
 from ..common.errors import PolygonMethodError
-from ..common.tolerances import SAME
 from ..forces import analyse, force_value
 from ..motion.solution import solve
 from ..scene import Gravity
 from ..scene.force_records import rolling_body
+from . import rod_slip
 from .alternatives import _Candidate
 
 __all__ = ["force_slips"]
@@ -87,25 +87,8 @@ def force_slips(d, kind, names, signed):
             "offset_wrong_side",
             masses=tuple(replace(m, inertia=-m.inertia) for m in sc.masses),
         )
-    _two_masses_slip(d, turning, again)
-    return out
-
-
-def _two_masses_slip(d, turning, again):
-    """A link replaced by two masses at its pins (m_A = m GB / l, m_B = m GA / l, the
-    equivalent system of the engine chapter) without the correction couple: its moment
-    of inertia taken as m GA GB (G on the line between the pins), not m k^2."""
-    sc = d.sc
-    two = {}
-    for m in turning:
-        if not m.block and m.mu == 0.0 and 0.0 < m.lam < 1.0:
-            L = sc.link(m.body).length
-            if abs(m.inertia - m.mass * m.lam * (1 - m.lam) * L * L) > SAME * m.inertia:
-                two[m.body] = m.mass * m.lam * (1 - m.lam) * L * L
+    two = rod_slip.two_masses(sc, turning)  # the equivalent system, no correction couple
     if two:
-        again(
-            "the rod replaced by two masses at its pins (m GB / l and m GA / l) "
-            "without the correction couple: I taken as m GA GB, not m k^2",
-            "correction_couple_left_out",
-            masses=tuple(replace(m, inertia=two.get(m.body, m.inertia)) for m in sc.masses),
-        )
+        masses = tuple(replace(m, inertia=two.get(m.body, m.inertia)) for m in sc.masses)
+        again(rod_slip.WORDS, "correction_couple_left_out", masses=masses)
+    return out
