@@ -152,7 +152,7 @@ def change(a, b) -> float:
 
 #: a change between two passes smaller than this, relative to the largest force, is rounding
 #: noise: no ratio of the contraction is read from it
-NOISE = 1e-11
+NOISE = 1000.0 * SETTLED
 #: the contraction taken where the passes settle too fast to measure it (two passes or
 #: their changes already in the noise): the friction then moves nothing measurable
 UNMEASURED = 0.5
