@@ -74,7 +74,7 @@ def test_a_driving_blocks_places_far_beyond_any_scene_are_named_as_places(capsys
     """A block's sweep past 1e4 m was refused as "crank angles ... within +-1e6 rad"."""
     assert main(["sweep", TRAMMEL, "--from", "1e300", "--to", "1e300", "--step", "1"]) == 2
     line = _one_line(capsys)
-    assert "places of the driving block" in line and "mm" in line and "crank" not in line
+    assert "the places of block" in line and "mm" in line and "crank" not in line
 
 
 # ----------------------------------------------------------------- naming the scene

@@ -42,6 +42,20 @@ def test_a_collar_driven_sweep_out_of_reach_names_the_collar(capsys, tmp_path):
     assert "block" not in err
 
 
+@pytest.mark.parametrize(
+    "args, says",
+    [
+        (["--from", "200", "--to", "400"], "--from, --to and --step go together (the places of "),
+        (["--from", "0", "--to", "1e9", "--step", "1"], "--from and --to are the places of "),
+    ],
+)
+def test_a_collar_driven_sweeps_bad_range_names_the_collar(args, says, capsys):
+    assert main(["sweep", str(COLLAR), *args, "--csv", "-"]) == 2
+    err = capsys.readouterr().err
+    assert len(err.strip().splitlines()) == 1 and says in err
+    assert "collar C on OA" in err and "block" not in err
+
+
 def test_a_collar_driven_sweeps_plot_is_labelled_by_the_collar():
     pytest.importorskip("matplotlib")
     from polygon_method.draw.plots import plot_figure

@@ -389,18 +389,15 @@ def _requested_places(args, scene, ranged):
     uname, u = scene.units, scene.length_unit
     if ranged:
         if args.start is None or args.stop is None or args.step is None:
-            raise SceneError(
-                f"--from, --to and --step go together (the block's places along "
-                f"its guide, in {uname})"
-            )
+            raise SceneError(f"--from, --to and --step go together (the {_what(scene)})")
         a, b, s = args.start, args.stop, args.step
         if not all(math.isfinite(v) for v in (a, b, s)):
             raise SceneError("--from, --to and --step must be finite numbers")
         far = MAX_PLACE_M / u  # the farthest place a scene may state, in its units
         if max(abs(a), abs(b)) > far:
             raise SceneError(
-                f"--from and --to are places of the driving block along its "
-                f"guide, in {uname}, within +-{far:g} (got {a:g} and {b:g})"
+                f"--from and --to are the {_what(scene, unit=False)}, in {uname}, "
+                f"within +-{far:g} (got {a:g} and {b:g})"
             )
         count = _range_count(a, b, s, uname, "places")
         return (a + s * np.arange(count)) * u
@@ -531,16 +528,16 @@ def _driver(scene):
     return compile_plan(scene).steps[0]
 
 
-def _what(scene) -> str:
+def _what(scene, unit: bool = True) -> str:
     """What a sweep's parameter values are, in words, as the driver names its parameter:
-    "places of collar C on DC (mm)"."""
+    "places of collar C on DC (mm)" (without the unit: "places of collar C on DC")."""
     driver = _driver(scene)
     if driver.periodic:
         return "crank angles"
     name = driver.parameter(scene)[0]  # "place of block C", "place of collar C on DC"
     if name.startswith("place "):
         name = "places " + name[len("place ") :]
-    return f"{name} ({scene.units})"
+    return f"{name} ({scene.units})" if unit else name
 
 
 def _limits_text(dom) -> str:
