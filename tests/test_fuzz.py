@@ -41,7 +41,7 @@ from hypothesis import HealthCheck, Phase, given, settings
 from hypothesis import strategies as st
 
 from polygon_method.check.engine import ENGINE_KEYS
-from polygon_method.check.engine import _value as engine_value
+from polygon_method.check.engine import engine_value
 from polygon_method.cli import main
 from polygon_method.common.errors import TOL, PolygonMethodError
 from polygon_method.solver.compiler import compile_plan
