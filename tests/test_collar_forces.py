@@ -489,3 +489,57 @@ def test_the_bounds_hold_and_grow_towards_the_dead_centre(digits):
         assert abs(float(f.input_torque - want[("F", "C")])) <= b.effort * b.force
         worst.append(b.worst)
     assert all(later > 3 * earlier for earlier, later in zip(worst, worst[1:])), worst
+
+
+@pytest.mark.parametrize("text", [DRIVING, SECOND], ids=["driving", "second"])
+def test_the_collars_force_polygon(digits, text):
+    """The collar's force polygon (its known forces, DC's pin force on it where DC holds
+    it, its driver's force along the rod, the rod's normal force across it): each found
+    side the matrix method's force, the unknowns' lines along their sides, closed to 1e-9
+    of its largest side."""
+    sc = parse_scene(text)
+    sol = solve(sc)
+    f = sol.forces
+    ref = reference_solution(sc, sol.P)
+    P = ref["positions"]
+    P.update({k: _mp(v) for k, v in sc.ground.items()})
+    w = _unit(P, "O", "A")
+    guides = [
+        ("C", "block C", "OA", w, True),
+        ("B", "block B", FRAME, (mpf(1), mpf(0)), False),
+    ]
+    if sc.input.block:
+        pins = [
+            ("O", "OA", FRAME),
+            ("D", "DC", FRAME),
+            ("C", "DC", "block C"),
+            ("A", "AB", "OA"),
+            ("B", "AB", "block B"),
+        ]
+        want = _matrix(sc, ref, pins, guides, None)
+    else:
+        pins = [("O", "OA", FRAME), ("C", "CB", "block C"), ("B", "CB", "block B")]
+        want = _matrix(sc, ref, pins, guides, "OA")
+    st = next(s for s in f.steps if s.kind in ("collar", "second collar"))
+    poly = st.polygon
+    big = max(math.hypot(*sd.vector) for sd in poly)
+    assert math.hypot(sum(sd.vector[0] for sd in poly), sum(sd.vector[1] for sd in poly)) <= (
+        1e-9 * big
+    )
+    N, F = want[("N", "C")], want[("F", "C")]
+    expect = {
+        "driver": (F * w[0], F * w[1]),
+        "guide": (-N * w[1], N * w[0]),
+    }
+    if sc.input.block:  # DC's pin force on the collar: the opposite of the collar's on DC
+        expect["pin"] = tuple(-c for c in want[("C", "DC", "block C")])
+    for sd in poly:
+        if sd.what in expect:
+            e = expect.pop(sd.what)
+            assert math.hypot(sd.vector[0] - float(e[0]), sd.vector[1] - float(e[1])) <= (
+                1e-9 * big
+            ), sd.what
+    assert expect == {}
+    for k, (dx, dy) in st.unknown:
+        vx, vy = poly[k].vector
+        assert abs(vx * dy - vy * dx) <= 1e-9 * big and poly[k].what in ("driver", "guide")

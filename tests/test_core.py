@@ -523,3 +523,38 @@ def test_parallelogram_coupler_translates_and_reports_say_zero():
     row = next(line for line in sol.report().splitlines() if line.startswith("BC "))
     assert "0 rad/s " in row and "cw" not in row and "ccw" not in row
     assert "omega_BC = v_CB / BC = 0 / 0.1 = 0 rad/s\n" in steps_text(sol) + "\n"
+
+
+def test_rubbing_records_are_the_rubbing_formula_at_every_pin():
+    """The records a solve makes (each pin of two bodies read straight from W) hold what
+    :func:`rubbing_at` gives (|w1 - w2| r, a body that does not turn at 0), on every worked
+    problem with sized pins; a link missing from W is read as 0, as that formula reads it,
+    and a pin of three bodies gives each pair."""
+    from pathlib import Path
+
+    from polygon_method import load_scene
+    from polygon_method.solver.derived import pin_records, rubbing_at
+
+    checked = 0
+    for path in sorted((Path(__file__).parent.parent / "worked_problems").glob("*.toml")):
+        sol = solve(load_scene(path))
+        plan, radii = sol.plan, sol.plan.dims.radii
+        for pin in plan.pins:
+            want = rubbing_at(pin, sol.W, radii[pin[0]])
+            assert sol.rubbing[pin[0]].values == want, (path.stem, pin[0])
+            assert sol.rubbing[pin[0]].rubbing_velocity == max(want)
+            links = [lk for pair in pin[5] for lk in pair if lk is not None]
+            W = {k: v for k, v in sol.W.items() if k != links[0]}  # one link missing
+            assert pin_records((pin,), W, radii)[pin[0]].values == rubbing_at(pin, W, radii[pin[0]])
+            checked += 1
+    assert checked >= 8
+    three = (
+        "P",
+        ("a", "b", "ground"),
+        ("AB", "BC", None),
+        ("a|b", "a|ground", "b|ground"),
+        (),
+        (("AB", "BC"), ("AB", None), ("BC", None)),
+    )
+    rec = pin_records((three,), {"AB": 2.0, "BC": -3.0}, {"P": 0.5})["P"]
+    assert rec.values == (2.5, 1.0, 1.5) and rec.rubbing_velocity == 2.5

@@ -153,3 +153,34 @@ def test_the_sweep_and_linkage_give_one_stroke(capsys):
     link = out_of(capsys, "linkage", path)
     got = float(re.search(r"slider D: moves between (-?[\d.]+) mm", link).group(1))
     assert got == pytest.approx(want, rel=1e-5)
+
+
+def test_the_pivots_near_a_point_are_those_every_pivot_tried_finds():
+    """The pivots within a distance of each point, looked up in cells (linear in the scene's
+    size), are those found by trying every pivot (in the ground's order): points on a pivot,
+    a hair inside and outside the distance, on cell edges, far off and not finite."""
+    import random
+
+    from polygon_method.motion.structural import _ground_near
+
+    rng = random.Random(7)
+    lim = 1e-9
+    ground = {f"G{i}": (rng.uniform(-1, 1), rng.uniform(-1, 1)) for i in range(40)}
+    ground["twin"] = ground["G3"]  # two pivots at one place: both, in order
+    ground["edge"] = (2 * lim * 5, -2 * lim * 7)  # on a cell's corner
+    ground["huge"] = (1e300, 0.0)  # beyond a cell's range: tried by every point
+    P = {}
+    for n, (G, (gx, gy)) in enumerate(ground.items()):
+        for k, d in enumerate((0.0, 0.999 * lim, 1.001 * lim, 0.5 * lim, 3 * lim)):
+            a = rng.uniform(0, 2 * math.pi)
+            P[f"X{n}_{k}"] = (gx + d * math.cos(a), gy + d * math.sin(a))
+    P["far"] = (1e305, -1e305)
+    P["inf"] = (math.inf, 0.0)
+    P["nan"] = (math.nan, 0.0)
+    near = _ground_near(ground, P, lim)
+    found = 0
+    for X, (x, y) in P.items():
+        every = [(G, g) for G, g in ground.items() if not math.hypot(x - g[0], y - g[1]) > lim]
+        assert near(X) == every, X
+        found += bool(every)
+    assert found >= 2 * len(ground)  # the cases near a pivot were generated

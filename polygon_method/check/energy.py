@@ -16,6 +16,7 @@ import math
 
 from ..common.errors import SceneError
 from .verdicts import ROUNDING, Verdict
+from ..common.tolerances import ROUNDING as ARITHMETIC, SAME
 
 __all__ = ["cycle_verdicts", "CYCLE_UNITS"]
 
@@ -52,7 +53,7 @@ def _slips(scene, c, key, correct) -> list:
     flywheel_keys = ("I_flywheel", "m_flywheel", "rim_width", "rim_thickness")
     if key in ("dE_max",) + flywheel_keys and c.form != "press" and c.areas:
         big = max(abs(a) for a in c.areas)
-        if abs(big - c.dE_max) > 1e-9 * c.dE_max:
+        if abs(big - c.dE_max) > SAME * c.dE_max:
             f = big / c.dE_max
             f = f if key not in ("rim_width", "rim_thickness") else math.sqrt(f)
             out.append(
@@ -142,11 +143,11 @@ def cycle_verdicts(scene, c, answers, tolerance) -> list:
         rel = rel if rel is not None else ROUNDING
         tol = rel * abs(correct)
         err = abs(given - correct)
-        ok = err <= tol * (1 + 1e-12)
+        ok = err <= tol * (1 + ARITHMETIC)
         mistake = diagnosis = None
         if not ok:
             for v, code, words in _slips(scene, c, ans.key, correct):
-                if abs(given - v) <= rel * abs(v) * (1 + 1e-12):
+                if abs(given - v) <= rel * abs(v) * (1 + ARITHMETIC):
                     mistake = code
                     diagnosis = (
                         f"{what} matches {words} ({v:.4g} {unit}); the correct value is "

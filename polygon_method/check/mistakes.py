@@ -5,17 +5,13 @@ or a re-solved scene, and matched against the answer given (the alternatives:
 from __future__ import annotations
 
 import math
-from dataclasses import replace
 
 from ..common.tolerances import SAME
-from ..common.errors import PolygonMethodError
-from ..forces import analyse, force_value
-from ..scene import GuideSlider, Gravity
-from ..scene.force_records import rolling_body
-from ..motion.solution import Solution, solve
+from ..scene import GuideSlider
+from ..motion.solution import Solution
 from ..steps import under_label
 from ..common.numbers import textbook as _g
-from . import confusions, power, slips
+from . import confusions, force_slips, power, slips
 from .alternatives import _DECIMAL, _FACTOR_MISTAKES, _Alternatives, _Candidate, _speed_mistakes
 from .slips import _SLIP_RANK, _slip
 from .slots import coriolis_left_out
@@ -428,97 +424,7 @@ class _Diagnoser:
         return power.torque(self, signed)
 
     def force_slips(self, kind, names, signed):
-        """The force chapter's classic slips, each solved again as the slip would have it:
-        the power balance without inertia, the piston's inertia left out, the weights added
-        where the problem leaves them out, the inertia couple left out, the offset h on the
-        wrong side of G (the couple's sense reversed); a tooth load given as its part along
-        the tangent (the pressure angle left out)."""
-        sol, sc = self.sol, self.sc
-        out = []
-
-        def pick(f):
-            return (
-                f.input_torque
-                if kind == "torque"
-                else force_value(f, kind, rolling_body(sc, names) if kind == "Fc" else names[0])
-            )
-
-        def again(words, code, **changes):
-            try:
-                value = pick(analyse(solve(replace(sc, **changes))))
-            except PolygonMethodError:
-                return
-            out.append(_Candidate(self.cmp(value, signed), code, words))
-
-        if kind == "torque" and sol.input_torque is not None:
-            out.append(
-                _Candidate(
-                    self.cmp(sol.input_torque, signed),
-                    "no_inertia",
-                    "the power balance without the inertia forces (T = -sum F . v "
-                    "/ omega leaves out -m a_G . v_G and -I alpha omega)",
-                )
-            )
-        if kind == "Fc":  # the tooth load's part along the tangent given for the whole
-            body = rolling_body(sc, names)
-            c = next((c for c in sol.forces.contacts if c.wheel == body), None)
-            if c is not None and c.teeth is not None and c.teeth > 0:
-                out.append(
-                    _Candidate(
-                        self.cmp(abs(c.tangential), signed),
-                        "pressure_angle_left_out",
-                        "the tooth load's part along the common tangent given "
-                        "for the whole load: the pressure angle left out (the "
-                        "load acts along the line of action, |T| / cos phi)",
-                    )
-                )
-        blocks = [m.body for m in sc.masses if m.block]
-        if blocks:
-            again(
-                f"the inertia of the reciprocating parts at {', '.join(blocks)} left out",
-                "piston_inertia_left_out",
-                masses=tuple(m for m in sc.masses if not m.block),
-            )
-        if sc.gravity is None and sc.masses:
-            again(
-                "the weights added: the problem leaves gravity out (a horizontal engine's "
-                "weights are neglected)",
-                "weight_added",
-                gravity=Gravity(9.81, (0.0, -1.0), "g = 9.81 m/s^2 downwards"),
-            )
-        turning = [m for m in sc.masses if m.inertia and sol.Al.get(m.body, 0.0)]
-        if turning:
-            again(
-                "the inertia couple -I alpha left out (the inertia force taken through G)",
-                "inertia_couple_left_out",
-                masses=tuple(replace(m, inertia=0.0) for m in sc.masses),
-            )
-            again(
-                "the inertia force's offset h = I alpha / (m a_G) on the wrong side of G",
-                "offset_wrong_side",
-                masses=tuple(replace(m, inertia=-m.inertia) for m in sc.masses),
-            )
-        self.two_masses_slip(turning, again)
-        return out
-
-    def two_masses_slip(self, turning, again):
-        """A link replaced by two masses at its pins (m_A = m GB / l, m_B = m GA / l, the
-        equivalent system of the engine chapter) without the correction couple: its moment
-        of inertia taken as m GA GB (G on the line between the pins), not m k^2."""
-        sc = self.sc
-        two = {}
-        for m in turning:
-            if not m.block and m.mu == 0.0 and 0.0 < m.lam < 1.0:
-                L = sc.link(m.body).length
-                if abs(m.inertia - m.mass * m.lam * (1 - m.lam) * L * L) > 1e-9 * m.inertia:
-                    two[m.body] = m.mass * m.lam * (1 - m.lam) * L * L
-        if two:
-            again(
-                "the rod replaced by two masses at its pins (m GB / l and m GA / l) "
-                "without the correction couple: I taken as m GA GB, not m k^2",
-                "correction_couple_left_out",
-                masses=tuple(replace(m, inertia=two.get(m.body, m.inertia)) for m in sc.masses),
-            )
+        return force_slips.force_slips(self, kind, names, signed)
 
     def gear_ratio(self, ans, signed):
         """A planet's omega by the tabular method, its classic slips (the step says them)."""

@@ -345,10 +345,17 @@ def _long(motion, fp, fric=()) -> tuple:
             torque,
             steps,
             contacts,
-            None if inp.second is None else (scene.link(inp.second.crank).key, second),
+            _second_torque(scene, plan, second),
         ),
         led.of,
     )
+
+
+def _second_torque(scene, plan, second):
+    """(a second driving crank, its torque) for its free body, or None (a second collar's
+    effort is a force, drawn on the collar)."""
+    two = second_name(scene, plan)
+    return None if two is None or two.startswith("block ") else (two, second)
 
 
 def _drawing(scene, plan, P, records, pins, guides, led, torque, steps, contacts, second=None):

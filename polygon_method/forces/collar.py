@@ -149,6 +149,7 @@ def step(st, P, led, own):
     led.add(FRAME, -fd[0], -fd[1], dx, dy)
     led.add(FRAME, -fk[0], -fk[1], kx, ky)
     # the drawings: the driver's force on the collar, and on the rod its and the guide's back
+    known_b = led.known(bl)  # (before the driver's force is entered: its polygon)
     led.items.setdefault(bl, []).append(Side("driver", bl, "", C, (f * w[0], f * w[1]), P[C]))
     led.items.setdefault(rod, []).extend(
         (
@@ -157,8 +158,18 @@ def step(st, P, led, own):
         )
     )
     cond = condition(P, st, den)
-    eq = ()
+    eq, drawing = (), None
     if isinstance(f, float):
+
+        def drawing():
+            # the collar's polygon: the pole, its known forces, DC's force on it (from DC's
+            # moments), the driver's along the rod, the rod's across it: closed
+            k = len(known_b)
+            pin = Side("pin", bl, link, C, (-p[0], -p[1]), P[C])
+            push = Side("driver", bl, rod, C, (f * w[0], f * w[1]), P[C])
+            held = Side("guide", bl, rod, C, g.force, P[C])
+            return known_b + (pin, push, held), ((k + 1, w), (k + 2, nv)), ()
+
         mk = kr[2] - cross(kx, ky, kr[0], kr[1])
         md = kl[2] - cross(dx, dy, kl[0], kl[1])
         sw = (cx - kx) * w[0] + (cy - ky) * w[1]
@@ -194,6 +205,7 @@ def step(st, P, led, own):
         f"|sin {K}{C}{D}| x min(1, {K}{C} / {link}): the rod's line through {D}, or the "
         f"collar at {K}",
         eq,
+        drawing,
     )
     pins = (PinForce(C, link, bl, p), PinForce(D, link, FRAME, fd), PinForce(K, rod, FRAME, fk))
     return pins, (g,), rec, f

@@ -39,8 +39,9 @@ def bind(st, own, ix):
     def run(P, S, pins, guides):
         ox, oy = P[pivot]
         sx, sy, sm = S.fx, S.fy, S.m
-        r, torque = solve(ox, oy, (sx[i], sy[i], sm[i]))
-        fx, fy = -r[0], -r[1]  # S.add(0, fx, fy, ox, oy); S.couple(0, -torque)
+        fx, fy = sx[i], sy[i]  # solve(ox, oy, known) written out
+        r, torque = (-fx, -fy), -(sm[i] - (ox * fy - oy * fx))
+        # S.add(0, -r, ox, oy); S.couple(0, -torque): -r is (fx, fy) itself
         sx[0] = sx[0] + fx
         sy[0] = sy[0] + fy
         sm[0] = sm[0] + (ox * fy - oy * fx) + -torque  # the driver, on the frame, feels -T

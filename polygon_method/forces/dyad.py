@@ -71,14 +71,23 @@ def bind(st, own, ix):
     why = f"{b}, {c} and {d} are in a line"
 
     def run(P, S, pins, guides):
+        # solve(...) written out, the same operations in the same order (no call, no
+        # tuple between them): the forces to the last bit of the long road's
         (bx, by), (dx, dy), (cx, cy) = P[b], P[d], P[c]
         sx, sy, sm = S.fx, S.fy, S.m
-        p, fb, fd, _ = solve(
-            bx, by, (sx[i1], sy[i1], sm[i1]), dx, dy, (sx[i2], sy[i2], sm[i2]), cx, cy, False
-        )
-        if p is None:
+        f1x, f1y, f2x, f2y = sx[i1], sy[i1], sx[i2], sy[i2]
+        m1b = sm[i1] - (bx * f1y - by * f1x)  # about B
+        m2d = sm[i2] - (dx * f2y - dy * f2x)  # about D
+        r1x, r1y = cx - bx, cy - by
+        r2x, r2y = cx - dx, cy - dy
+        det = r1x * r2y - r1y * r2x
+        if det == 0 if det.__class__ is float else any_zero(det):
             raise Singular(why)
-        pins += ((c, l1, l2, p), (b, l1, ob, fb), (d, l2, od, fd))
+        px = (-m1b * r2x - r1x * m2d) / det
+        py = (-r1y * m2d - m1b * r2y) / det
+        fb = (-(f1x + px), -(f1y + py))
+        fd = (-(f2x - px), -(f2y - py))
+        pins += ((c, l1, l2, (px, py)), (b, l1, ob, fb), (d, l2, od, fd))
         fx, fy = -fb[0], -fb[1]  # S.add(ib, fx, fy, bx, by), written out
         sx[ib] = sx[ib] + fx
         sy[ib] = sy[ib] + fy

@@ -43,6 +43,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..common.errors import SceneError
+from ..common.tolerances import FLOOR, ROUNDING, SAME
 
 __all__ = ["CycleEnergy", "Crossing", "solve_cycle", "letters", "curves"]
 
@@ -218,7 +219,7 @@ def _curve(d) -> dict:
         return mean_T + 0.0 * x if R is None else R.value(x)
 
     scale = float(np.max(np.abs(drive(grid)))) + float(np.max(np.abs(resist(grid))))
-    if R is not None and abs(mean_T - mean_R) > 1e-9 * scale:
+    if R is not None and abs(mean_T - mean_R) > SAME * scale:
         raise SceneError(
             f"the driving torque's mean ({mean_T:.6g} N m) and the resisting torque's "
             f"({mean_R:.6g} N m) differ: the speed would not return after a cycle (leave "
@@ -235,7 +236,7 @@ def _curve(d) -> dict:
         return float(dT - dR)
 
     qs = q(grid)
-    if float(np.max(np.abs(qs))) <= 1e-12 * max(scale, 1e-300):
+    if float(np.max(np.abs(qs))) <= ROUNDING * max(scale, FLOOR):
         raise SceneError(
             "the turning moment equals the resisting torque all through the cycle: "
             "no fluctuation of energy, no flywheel to find",
@@ -257,7 +258,7 @@ def _curve(d) -> dict:
     e0 = energy(roots[0])
     es = [energy(r) - e0 for r in roots]  # from the first crossing, as the books count
     big = max(abs(e) for e in es)
-    es = [0.0 if abs(e) <= 1e-12 * big else e for e in es]  # rounding noise is nought
+    es = [0.0 if abs(e) <= ROUNDING * big else e for e in es]  # rounding noise is nought
     n = len(roots)
     names = letters(n)
     cross = [Crossing(names[i], roots[i], es[i]) for i in range(n)]

@@ -74,9 +74,19 @@ def step(st, P, led, own):
             Side("driver", rod, "", C, (-f * wx, -f * wy), (cx, cy)),
         )
     )
+    known = led.known(bl)  # (before the driver's force is entered: its polygon)
     led.items.setdefault(bl, []).append(Side("driver", bl, "", C, (f * wx, f * wy), (cx, cy)))
-    eq = ()
+    eq, drawing = (), None
     if isinstance(f, float):
+
+        def drawing():
+            # the pole, the collar's known forces, its driver's along the crank, the
+            # crank's across it: their lines meet where it closes
+            k = len(known)
+            push = Side("driver", bl, rod, C, (f * wx, f * wy), (cx, cy))
+            held = Side("guide", bl, rod, C, g.force, (cx, cy))
+            return known + (push, held), ((k, (wx, wy)), (k + 1, g.n)), ()
+
         eq = (
             f"the collar: F w + N n + R = 0, R = ({fmt(kb[0])}, {fmt(kb[1])}) N the known "
             f"forces on {bl}, w along {rod} outward",
@@ -93,5 +103,6 @@ def step(st, P, led, own):
         1.0,
         "",
         eq,
+        drawing,
     )
     return (), (g,), rec, f

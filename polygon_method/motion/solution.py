@@ -29,10 +29,10 @@ from ..solver.kinematics import Motion, hypot
 from ..common.numbers import fmt_angular, quiet, sense  # noqa: F401  (re-exported)
 from ..solver.compiler import compile_plan
 from ..steps.base import Instant
+from .structural import structural_warnings
 from ..scene import FixedPath, Scene
 from ..scene.force_records import rolling_body
 from .json_safe import finite_only, useful_bounds
-from .structure import structural_warnings
 
 __all__ = ["solve", "Solution", "PinRubbing", "sense", "fmt_angular"]
 

@@ -374,7 +374,7 @@ function arrowAt(e, at, F, k, least) {
 function coupleAt(e, at, C, k) {
   const a = [at[2 * k], at[2 * k + 1]], c = C[k], p = toMm("configuration", a), r = COUPLE_MM;
   e.dataset.x = a[0]; e.dataset.y = a[1]; e.dataset.c = c;
-  e.style.display = Math.abs(c) <= 1e-9 * FORCES.perCm ? "none" : "";
+  e.style.display = Math.abs(c) <= TOL.same * FORCES.perCm ? "none" : "";
   const s = c > 0 ? 1 : -1, a0 = c > 0 ? -0.75 * Math.PI : -0.25 * Math.PI, a1 = a0 + s * 1.5 * Math.PI;
   const q = (t) => [p[0] + r * Math.cos(t), p[1] - r * Math.sin(t)];  // (y down on the screen)
   const [x0, y0] = q(a0), [x1, y1] = q(a1);

@@ -24,6 +24,7 @@ from .energy_flywheel import CYCLE_ANSWERS, _RimReader
 from .energy_press import _PressReader
 from .energy_records import CycleScene, Diagram, Law, Table
 from .source import syntax_error, toml_table
+from ..common.tolerances import ROUNDING
 
 __all__ = [
     "CYCLE_TABLES",
@@ -243,7 +244,7 @@ class _CycleReader(_RimReader, _PressReader):
         if isinstance(raw, str) and raw.strip().lower() in ("2-stroke", "two-stroke", "steam"):
             return 2 * math.pi, "the cycle 360 deg"
         c = self.ld.qty(raw, "angle", t, "cycle", default_unit="deg").value
-        if not 0 < c <= 8 * math.pi + 1e-12:
+        if not 0 < c <= 8 * math.pi + ROUNDING:
             raise self.err(f"cycle = {raw!r}: between 0 and 1440 deg", t, "cycle")
         return c, f"the cycle {math.degrees(c):g} deg"
 
@@ -280,7 +281,7 @@ class _CycleReader(_RimReader, _PressReader):
         if "angle" in spec:
             driving = self._table(spec, t, k)
             cycle, w = self._cycle(spec, t, driving.angles[-1])
-            if driving.angles[-1] > cycle + 1e-12:
+            if driving.angles[-1] > cycle + ROUNDING:
                 raise self.err("the table's angles run past the cycle", t, "angle")
             words.append(f"the turning moment in {len(driving.angles)} readings, {w}")
         else:

@@ -10,9 +10,12 @@ sweep (arrays).
 
 from __future__ import annotations
 
+from collections import defaultdict
+
 from ..common.tolerances import crossing_angle
 
 from ..steps.rounding import largest
+from .plan import pin_entry
 
 __all__ = [
     "PinRubbing",
@@ -48,42 +51,46 @@ def pin_rubbing(plan, W, radii) -> dict:
 def pin_records(pins, W, radii) -> dict:
     """pin -> :class:`PinRubbing` for every sized pin at one instant (floats): the values of
     :func:`rubbing_at`, in one pass (:func:`rubbing_records` with the radii ``radii``)."""
-    return rubbing_records(
-        tuple(
-            (pin[0], radii[pin[0]], pin, pin[5], pin[5][0] if len(pin[5]) == 1 else None)
-            for pin in pins
-        ),
-        W,
-    )
+    return rubbing_records(tuple(pin_entry(pin, radii[pin[0]]) for pin in pins), W)
 
 
 def rubbing_records(table, W) -> dict:
     """pin -> :class:`PinRubbing` for every pin of ``table`` (``plan.pin_table``: each
-    sized pin with its radius at the plan's own dimensions, its pairs' links and its one
-    pair's, None where it joins more bodies, made once per plan) at one instant: the values of :func:`rubbing_at`, in one pass. The records
-    are filled in here (a record has no ``__init__``: one Python call fewer per pin)."""
-    w = W.get
-    new = _new
+    sized pin's :func:`pin_entry`, made once per plan) at one instant: the values of
+    :func:`rubbing_at`, in one pass, a pin of two bodies read straight from ``W`` (a link
+    not in ``W`` turns at 0, as :func:`rubbing_at` has it: the pass taken again reading 0
+    for it)."""
+    try:
+        return _records(table, W, W)
+    except KeyError:
+        return _records(table, defaultdict(float, W), W)
+
+
+def _records(table, w, W) -> dict:
+    """The records of :func:`rubbing_records`, each link's omega read from ``w``, the
+    records' ``W``; filled in here, for a record has no ``__init__``."""
     out = {}
+    Rec = PinRubbing
     for k in table:
-        p, r, _, pairs, one = k
-        rec = new(PinRubbing)
-        if one is not None:  # a pin of two bodies (the usual one)
-            a, b = one
-            v = abs(w(a, 0.0) - w(b, 0.0)) * r
+        p, r, _, pairs, a, b = k
+        rec = Rec()
+        if pairs is None:  # a pin of two bodies (the usual one)
+            v = abs((0.0 if a is None else w[a]) - (0.0 if b is None else w[b])) * r
             rec.values = (v,)
             rec.rubbing_velocity = v
         else:
-            vs = tuple([abs(w(a, 0.0) - w(b, 0.0)) * r for a, b in pairs])
+            vs = tuple(
+                [
+                    abs((0.0 if x is None else w[x]) - (0.0 if y is None else w[y])) * r
+                    for x, y in pairs
+                ]
+            )
             rec.values = vs
             rec.rubbing_velocity = max(vs) if vs else 0.0
         rec._k = k  # the pin, its radius (constant: one field for the three)
         rec._W = W
         out[p] = rec
     return out
-
-
-_new = object.__new__
 
 
 class PinRubbing:

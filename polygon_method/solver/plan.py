@@ -395,10 +395,7 @@ class Plan:
         object.__setattr__(
             self,
             "pin_table",
-            tuple(
-                (pin[0], radii.get(pin[0]), pin, pin[5], pin[5][0] if len(pin[5]) == 1 else None)
-                for pin in self.pins
-            ),
+            tuple(pin_entry(pin, radii.get(pin[0])) for pin in self.pins),
         )
 
     def evaluate(self, ctx, *, velocities=True, accelerations=True):
@@ -413,6 +410,16 @@ class Plan:
         if upto == 1:
             return m.P, m.V, {}, m.W, {}, S
         return m.P, m.V, m.A, m.W, m.Al, S
+
+
+def pin_entry(pin, radius) -> tuple:
+    """A pin's entry in ``plan.pin_table``: (point, radius, the pin as ``plan.pins`` gives
+    it, its pairs' links or None for a pin of two bodies, that one pair's two links (None
+    for a body that does not turn; both None for a pin of more bodies))."""
+    pairs = pin[5]
+    if len(pairs) == 1:
+        return (pin[0], radius, pin, None, *pairs[0])
+    return (pin[0], radius, pin, pairs, None, None)
 
 
 def _bodies_at(sc, point) -> tuple:
