@@ -61,6 +61,38 @@ def _local_extremes(a):
     return np.nonzero(ok)[0] + 1
 
 
+def _keep_best(keep: dict, c, index) -> None:
+    """Keep in ``keep`` (angle index -> value) the best :data:`_CANDIDATES` local maxima of
+    the samples ``c`` and of the run's two ends (maybe next to a limit position), with those
+    kept from earlier chunks: ties go to the earlier kept, then to the earlier sample.
+
+    A noisy quantity has local maxima by the thousand in a chunk: only the best few of the
+    chunk can be among the best overall, so those are chosen in one stable sort of the
+    chunk's candidates, and the dictionary sees only them (the same choice, in the same
+    order, as offering it every one).
+
+    >>> keep = {}
+    >>> _keep_best(keep, np.array([0.0, 3.0, 1.0, 2.0, 0.5, 2.0, 1.0]), np.arange(7))
+    >>> keep
+    {1: 3.0, 3: 2.0, 5: 2.0, 0: 0.0, 6: 1.0}
+    """
+    ks = np.concatenate([_local_extremes(c), [0, len(c) - 1]]).astype(np.intp)
+    if len(c) > 1 and len(ks) > _CANDIDATES:  # distinct: the chunk alone overflows
+        ks = ks[np.sort(np.argsort(-c[ks], kind="stable")[:_CANDIDATES])]
+        for k in ks:
+            keep[int(index[k])] = float(c[k])
+        top = sorted(keep.items(), key=lambda kv: -kv[1])[:_CANDIDATES]
+        keep.clear()
+        keep.update(top)
+        return
+    for k in ks:
+        keep[int(index[k])] = float(c[k])
+    if len(keep) > _CANDIDATES:  # the best few local extremes of each sense
+        top = sorted(keep.items(), key=lambda kv: -kv[1])[:_CANDIDATES]
+        keep.clear()
+        keep.update(top)
+
+
 class _Reducer:
     """Running maxima and minima over chunks (with the index where each occurs)."""
 
@@ -215,14 +247,7 @@ class _Reducer:
                 if lo < b[2]:
                     b[2], b[3] = lo, int(index[j])
             for sense, keep in ((1.0, b[6]), (-1.0, b[7])):
-                c = sense * np.asarray(cand, dtype=float)
-                ends = [0, len(c) - 1]  # the ends of a run: maybe next to a limit position
-                for k in [*_local_extremes(c), *ends]:
-                    keep[int(index[k])] = float(c[k])
-                if len(keep) > _CANDIDATES:  # the best few local extremes of each sense
-                    top = sorted(keep.items(), key=lambda kv: -kv[1])[:_CANDIDATES]
-                    keep.clear()
-                    keep.update(top)
+                _keep_best(keep, sense * np.asarray(cand, dtype=float), index)
 
     def _refine(self, tasks, passes):
         """Zoom on sampled extremes, all at once: 17 points across each bracket a pass.
