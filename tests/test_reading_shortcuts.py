@@ -236,3 +236,24 @@ def test_a_changed_scene_is_never_served_the_old_plan():
     assert min(math.dist(c, w) for w in want) < 1e-9
     assert math.dist(c, (before.P["C"][0] * 1e3, before.P["C"][1] * 1e3)) > 1
     assert ContentKey((1, "a")) == ContentKey((1, "a")) != ContentKey((1, "b"))
+
+
+def test_scenes_solved_in_a_long_process_are_let_go():
+    """A class's worth of scenes solved one after another (variants, grading) does not keep
+    every scene alive: the cache by identity is bounded, and a scene no longer held
+    elsewhere is collected (its weak reference dies)."""
+    import gc
+    import weakref
+
+    plan_module._BY_ID.clear()
+    plan_module._BY_CONTENT.clear()
+    refs = []
+    for k in range(plan_module._KEEP + 40):
+        sc = parse_scene(seed().replace("BC = 66", f"BC = {60 + k / 100:g}"))
+        solve(sc)
+        refs.append(weakref.ref(sc))
+        del sc
+    gc.collect()
+    assert len(plan_module._BY_ID) <= plan_module._KEEP
+    gone = sum(r() is None for r in refs)
+    assert gone >= 40, f"only {gone} of {len(refs)} scenes were let go"

@@ -53,7 +53,7 @@ _REACH_GRID = 720
 
 # --------------------------------------------------------------------------- compiling
 
-_BY_ID: dict = {}  # id(scene) -> (weak reference to the scene, plan)
+_BY_ID: dict = {}  # id(scene) -> (weak reference to the scene, plan) (bounded)
 _BY_CONTENT: dict = {}  # content key -> plan (bounded)
 _KEEP = 256
 
@@ -105,7 +105,10 @@ def compile_plan(scene: Scene) -> Plan:
         gas_towards_crank(plan, scene)  # a gas force's direction (loads are not in the key)
     try:
         ident = id(scene)
-        _BY_ID[ident] = (weakref.ref(scene, functools.partial(_forget, ident)), plan)
+        entry = (weakref.ref(scene, functools.partial(_forget, ident)), plan)
+        while len(_BY_ID) >= _KEEP:  # the plan holds its scene: bounded, or none would go
+            _BY_ID.pop(next(iter(_BY_ID)))
+        _BY_ID[ident] = entry
     except TypeError:
         pass
     return plan
