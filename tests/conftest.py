@@ -9,3 +9,17 @@ if _TESTS not in sys.path:
 _BENCH = str(Path(__file__).resolve().parent.parent / "benchmarks")
 if _BENCH not in sys.path:
     sys.path.insert(0, _BENCH)
+
+import pytest  # noqa: E402
+
+
+@pytest.fixture(autouse=True)
+def _mpmath_precision_kept():
+    """Each test finds mpmath at the precision the reference sets (50 digits) and leaves it
+    there: a test that works at 30 digits and forgets to restore them must not lower the
+    precision of the reference solves in the tests after it."""
+    import mpmath
+
+    saved = mpmath.mp.dps
+    yield
+    mpmath.mp.dps = saved
