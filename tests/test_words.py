@@ -55,8 +55,12 @@ def test_every_datum_is_stated(path):
             assert f"A block at {s.point} slides along link {s.guide}" in text
     for p in sc.assembly:
         assert f"Of its two positions, {p} is the one " in text
-    for cp in sc.points:
-        assert f"Point {cp.name}: on {cp.link}" in text
+    for cp in sc.points:  # on the link as the scene writes it (DC: measured from D)
+        ends = sc.link(cp.link).points
+        assert any(
+            f"Point {cp.name}: on {k}" in text
+            for k in (cp.link, "".join(ends[::-1]), "-".join(ends[::-1]))
+        ), cp.name
     inp = sc.input
     if inp.block is None:
         assert f"makes {fmt(math.degrees(inp.angle) % 360)}°" in text

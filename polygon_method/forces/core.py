@@ -288,11 +288,19 @@ def force_plan(scene, plan) -> ForcePlan:
         ref = weakref.ref(scene, lambda r, ident=ident: _forget(r, ident))
     except TypeError:  # a scene that takes no weak reference: not kept
         return fp
+    while len(_PLANS) >= _KEEP:  # the force plan holds its scene: bounded, or none would go
+        _PLANS.pop(next(iter(_PLANS)))
     _PLANS[ident] = (ref, plan, fp)
     return fp
 
 
-def _forget(ref, ident):
-    hit = _PLANS.get(ident)
+#: the force plans kept at once (a class's worth of scenes)
+_KEEP = 256
+
+
+def _forget(ref, ident, plans=_PLANS):
+    """A scene has gone: drop its force plan (the table bound at definition, so that a
+    scene collected while the interpreter shuts down finds it still)."""
+    hit = plans.get(ident)
     if hit is not None and hit[0] is ref:
-        del _PLANS[ident]
+        del plans[ident]
