@@ -15,7 +15,7 @@ from __future__ import annotations
 import math
 
 from ..common.errors import SceneError
-from .verdicts import ROUNDING, Verdict
+from .verdicts import ROUNDING, Verdict, cs_slips
 from ..common.tolerances import ROUNDING as ARITHMETIC, SAME
 
 __all__ = ["cycle_verdicts", "CYCLE_UNITS"]
@@ -78,22 +78,7 @@ def _slips(scene, c, key, correct) -> list:
         )
     fw = scene.flywheel
     if key in ("I_flywheel", "m_flywheel") and fw is not None and fw.inertia is None:
-        out.append(
-            (
-                2 * correct,
-                "cs_half_range",
-                "the coefficient of fluctuation of speed taken as the range either side "
-                "of the mean: Cs = (w_max - w_min) / w_mean is the whole range (+-1 % is "
-                "Cs = 0.02)",
-            )
-        )
-        out.append(
-            (
-                correct / 2,
-                "cs_doubled",
-                "the coefficient of fluctuation of speed taken as twice the whole range",
-            )
-        )
+        out += cs_slips(correct)
         out.append(
             (
                 correct * (math.pi / 30) ** 2,

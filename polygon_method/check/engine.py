@@ -17,7 +17,7 @@ from ..common.errors import PolygonMethodError, SceneError
 from ..forces.engine import efforts, slider_crank
 from ..linkage.flywheel import turning_moment
 from ..motion.solution import solve
-from .verdicts import ROUNDING, Verdict
+from .verdicts import ROUNDING, Verdict, cs_slips
 
 __all__ = ["ENGINE_KEYS", "engine_value", "engine_verdict"]
 
@@ -112,22 +112,7 @@ def _slips(sol, key, correct):
                 )
             )
     if key in ("I_flywheel", "m_flywheel") and sc.flywheel is not None:
-        out.append(
-            (
-                2 * correct,
-                "cs_half_range",
-                "the coefficient of fluctuation of speed taken as the range either side "
-                "of the mean: Cs = (w_max - w_min) / w_mean is the whole range (+-1 % is "
-                "Cs = 0.02)",
-            )
-        )
-        out.append(
-            (
-                correct / 2,
-                "cs_doubled",
-                "the coefficient of fluctuation of speed taken as twice the whole range",
-            )
-        )
+        out += cs_slips(correct)
     if key in ("dE_max", "I_flywheel", "m_flywheel"):
         tm = turning_moment(sc)
         if tm.lobes:

@@ -227,3 +227,27 @@ def verdicts_dict(verdicts, scene: str | None = None, answers: str | None = None
         "wrong": wrong,
         "answers": [v.to_dict() for v in verdicts],
     }
+
+
+def cs_slips(correct: float) -> list:
+    """(value, code, words) of a flywheel's classic slips with the coefficient of
+    fluctuation of speed, for a flywheel's ``correct`` I or mass (an engine's, or a
+    diagram's on its own): Cs taken as the half range (I doubled) or as twice the range.
+
+    >>> [(v, code) for v, code, _ in cs_slips(4.0)]
+    [(8.0, 'cs_half_range'), (2.0, 'cs_doubled')]
+    """
+    return [
+        (
+            2 * correct,
+            "cs_half_range",
+            "the coefficient of fluctuation of speed taken as the range either side "
+            "of the mean: Cs = (w_max - w_min) / w_mean is the whole range (+-1 % is "
+            "Cs = 0.02)",
+        ),
+        (
+            correct / 2,
+            "cs_doubled",
+            "the coefficient of fluctuation of speed taken as twice the whole range",
+        ),
+    ]
