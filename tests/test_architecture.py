@@ -578,11 +578,6 @@ LONG_FUNCTIONS = {
     "solver/compiler.py:finish",
     "solver/compiler.py:run",
     "steps/collar.py:construction",
-    "steps/cylinder.py:construction",
-    "steps/peg.py:construction",
-    "steps/rolling_dims.py:wheel_params",
-    "steps/slider.py:construction",
-    "steps/slotted.py:construction",
 }
 LONGEST = 80
 

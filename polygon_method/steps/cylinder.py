@@ -37,7 +37,7 @@ from .base import (
     unit,
 )
 from .rounding import EPS, vhypot, vmax
-from .relations import coriolis
+from .relations import coriolis, rigid_velocity
 from .slotted import velocity
 
 __all__ = ["CylinderStep", "velocity_of", "recognise_all"]
@@ -277,7 +277,7 @@ class CylinderStep(Step):
         c = self.under(sol, ph)
         if ph == "velocity":
             V = sol.V
-            under = add(V[K], (-w * d[1], w * d[0]))
+            under = add(V[K], rigid_velocity(d[0], d[1], w))
             lines = (
                 DirectionLine(
                     V[K], unit(*perp(d)), lab(K), f"perpendicular to {K}{R}", mark=f"\u22a5 {K}{R}"
@@ -313,8 +313,14 @@ class CylinderStep(Step):
             return Construction(
                 self.index, self.title, ph, c, under, (), lines, found, text, cond, ((c, under),)
             )
-        A = sol.A
-        al = sol.Al[self.key]
+        return self._acceleration_polygon(sol, ph, d, u, c, cond)
+
+    def _acceleration_polygon(self, sol, ph, d, u, c, cond):
+        """The construction on the acceleration polygon (``d``: K to R on the
+        configuration, ``u`` its unit; ``c``: the label of the barrel's point under R)."""
+        A, K, R = sol.A, self.barrel, self.rod
+        lab = lambda p: image_label(sol, p, ph)  # noqa: E731
+        w, al, s = sol.W[self.key], sol.Al[self.key], sol.S[self.key]
         cen_end = add(A[K], (-w * w * d[0], -w * w * d[1]))
         under = add(cen_end, (-al * d[1], al * d[0]))
         cor = (s[2], s[3])

@@ -433,7 +433,14 @@ class SliderDyad(Step):
             return Construction(
                 self.index, self.title, ph, lab(X), V[X], given, lines, found, text, cond
             )
-        A = sol.A
+        return self._acceleration_polygon(sol, ph, d1, cond)
+
+    def _acceleration_polygon(self, sol, ph, d1, cond):
+        """The construction on the acceleration polygon (``d1``: the unit perpendicular to
+        BX on the configuration)."""
+        P, A, X, B = sol.P, sol.A, self.point, self.b
+        lab = lambda p: image_label(sol, p, ph)  # noqa: E731
+        (x, y) = P[X]
         c1 = centripetal(sol, X, B, self.link, ph)
         given = [c1]
         if self.path is not None:
