@@ -24,6 +24,7 @@ from dataclasses import dataclass
 
 from ..common.errors import TOL, AssemblyError, SingularStepError
 from ..common.numbers import in_units
+from ..common.tolerances import LEAST_REACH, ROUNDING
 from .base import (
     Construction,
     DirectionLine,
@@ -51,6 +52,12 @@ def velocity_of(dx, dy, evx, evy):
     return velocity(dx, dy, ux, uy, evx, evy)
 
 
+def _in_stroke(n, stroke) -> bool:
+    """Whether the cylinder's length ``n`` lies in its ``stroke`` (least, most), its ends
+    reached exactly held to them with the slack of rounding."""
+    return stroke[0] * (1 - ROUNDING) <= n <= stroke[1] * (1 + ROUNDING)
+
+
 def recognise_all(g):
     """The cylinders whose two ends are both known: one step each (added after the points
     are found; nothing in the mechanism depends on them but the given motion)."""
@@ -63,7 +70,7 @@ def recognise_all(g):
                     for lk in g.scene.links
                     if cyl.barrel in lk.points or cyl.rod in lk.points
                 ]
-                + [1e-9]
+                + [LEAST_REACH]
             )
             step = CylinderStep(
                 g.next_index + len(out),
@@ -76,9 +83,7 @@ def recognise_all(g):
                 uname=g.uname,
             )
             n = math.dist(g.P[cyl.barrel], g.P[cyl.rod])
-            if cyl.stroke is not None and not cyl.stroke[0] * (1 - 1e-12) <= n <= cyl.stroke[1] * (
-                1 + 1e-12
-            ):
+            if cyl.stroke is not None and not _in_stroke(n, cyl.stroke):
                 raise AssemblyError(
                     step.why(n) + ": the mechanism cannot be in this position",
                     key=f"[cylinders] {cyl.key}",
@@ -126,7 +131,7 @@ class CylinderStep(Step):
         return (self.rho,)
 
     def reach(self):
-        return max(self.rho, 1e-9)
+        return max(self.rho, LEAST_REACH)
 
     def place(self, P, prm, ctx, sigma=None):
         (kx, ky), (rx, ry) = P[self.barrel], P[self.rod]
@@ -142,12 +147,10 @@ class CylinderStep(Step):
             if not m.array:
                 if n <= TOL.singular * rho:
                     raise step.shrunk()
-                if stroke is not None and not stroke[0] * (1 - 1e-12) <= n <= stroke[1] * (
-                    1 + 1e-12
-                ):
+                if stroke is not None and not _in_stroke(n, stroke):
                     raise AssemblyError(step.why(n), step=step.label)
             elif stroke is not None:
-                out = (n < stroke[0] * (1 - 1e-12)) | (n > stroke[1] * (1 + 1e-12))
+                out = (n < stroke[0] * (1 - ROUNDING)) | (n > stroke[1] * (1 + ROUNDING))
                 if out is True or (out is not False and out.any()):
                     m.ctx.fail(step, out)
             m.cond[i] = m.ctx.minimum(n / rho, 1.0)

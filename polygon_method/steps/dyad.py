@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 from ..common.errors import TOL, AssemblyError, SingularStepError
 from ..common.numbers import in_units, quiet
-from ..common.tolerances import crossing_angle
+from ..common.tolerances import LEAST_REACH, crossing_angle
 from ..scene import split_name
 from .rounding import C_FLOOR, turning, vhypot, vmax, vmin
 from .base import (
@@ -158,7 +158,7 @@ class Dyad(Step):
         return (prm[0] + pencil(), prm[1] + pencil())
 
     def reach(self):
-        return max(self.l1, self.l2, 1e-9)
+        return max(self.l1, self.l2, LEAST_REACH)
 
     def place(self, P, prm, ctx, sigma=None):
         (bx, by), (dx, dy) = P[self.b], P[self.d]

@@ -34,6 +34,7 @@ from dataclasses import dataclass
 
 from .relations import coriolis
 from ..common.errors import TOL, SingularStepError
+from ..common.tolerances import LEAST_REACH
 from ..scene import FixedPath, GuideSlider
 from .base import (
     Construction,
@@ -232,7 +233,7 @@ class Peg(Step):
         return tuple(out)
 
     def reach(self):
-        return max(self.size, 1e-9)
+        return max(self.size, LEAST_REACH)
 
     def lines(self, P, prm=None):
         """(gx, gy, ux, uy) of each slot: fixed from ``prm``, moving from the positions."""

@@ -9,6 +9,7 @@ import math
 
 from ..common.errors import AssemblyError, SceneError
 from ..common.numbers import in_units
+from ..common.tolerances import SAME
 
 __all__ = [
     "GAP",
@@ -23,7 +24,7 @@ __all__ = [
 ]
 
 #: how far (relative to the radii) a wheel's centre may leave its line or pitch circle
-GAP = 1e-9
+GAP = SAME
 #: how far a link turning as a linkage makes it (a wheel's arm or gear, a rack's pinion)
 #: may turn from the stated instant before its angle is refused (a turn of nearly pi
 #: could be one the other way)

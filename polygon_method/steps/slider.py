@@ -23,6 +23,7 @@ from dataclasses import dataclass
 
 from .relations import coriolis
 from ..common.numbers import in_units, condition_text
+from ..common.tolerances import LEAST_REACH
 from ..scene import FixedPath, GuideSlider, guide_words
 from .rounding import line_rounding, plus, turning, two_lines, vhypot, vmax
 from .slotted import under_label
@@ -195,7 +196,7 @@ class SliderDyad(Step):
         return (prm[0] + pencil(), prm[1] + pencil(), prm[2] + pencil(), prm[3], prm[4])
 
     def reach(self):
-        return max(self.length, 1e-9)
+        return max(self.length, LEAST_REACH)
 
     def line(self, P, prm=None):
         """A point of the guide line and its unit direction."""

@@ -27,6 +27,7 @@ from dataclasses import dataclass
 
 from .relations import coriolis, rigid_velocity
 from ..common.errors import TOL, SingularStepError
+from ..common.tolerances import LEAST_REACH
 from ..scene import GuideSlider
 from .rounding import C_FLOOR, vhypot, vmax
 from .base import (
@@ -182,7 +183,7 @@ class SlottedLink(Step):
         return (length, scene.link(self.ref).length if self.ref else length)
 
     def reach(self):
-        return max(self.length, 1e-9)
+        return max(self.length, LEAST_REACH)
 
     def place(self, P, prm, ctx, sigma=None):
         (kx, ky), (ax, ay) = P[self.known], P[self.point]

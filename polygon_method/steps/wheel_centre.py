@@ -20,6 +20,7 @@ from dataclasses import dataclass
 
 from ..common.errors import TOL
 from ..common.numbers import in_units, condition_text
+from ..common.tolerances import LEAST_REACH
 from .base import (
     Construction,
     DirectionLine,
@@ -125,7 +126,7 @@ class WheelCentre(Step):
         return (prm[0] + pencil(), prm[1] + pencil(), prm[2] + pencil(), prm[3], prm[4])
 
     def reach(self):
-        return max(self.length, 1e-9)
+        return max(self.length, LEAST_REACH)
 
     def place(self, P, prm, ctx, sigma=None):
         bx, by = P[self.b]

@@ -80,7 +80,7 @@ def polar_words(v) -> str:
     m = math.hypot(*v)
     if m <= ROUNDING * (1 + abs(v[0]) + abs(v[1])):
         return "0"
-    ang = round(math.degrees(math.atan2(v[1], v[0])), 9) % 360  # no 1e-15 deg off an axis
+    ang = round(math.degrees(math.atan2(v[1], v[0])), 9) % 360  # no rounding noise off an axis
     return f"{fmt(m)} m/s at {fmt(ang, 4)} deg"
 
 
