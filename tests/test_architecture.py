@@ -538,7 +538,6 @@ LONG_MODULES: dict = {
     "scene/records.py": 643,
     "scene/tables.py": 692,
     "solver/compiler.py": 731,
-    "steps/collar.py": 756,
 }
 
 
@@ -577,7 +576,6 @@ LONG_FUNCTIONS = {
     "scene/wheel_input.py:wheel_input",
     "solver/compiler.py:finish",
     "solver/compiler.py:run",
-    "steps/collar.py:construction",
 }
 LONGEST = 80
 
@@ -628,7 +626,6 @@ LITERALS = {
     "solver/errorbound.py": 1,
     "solver/given.py": 1,
     "solver/tracking.py": 4,
-    "steps/collar.py": 1,
     "steps/peg.py": 1,
     "steps/rack.py": 1,
     "steps/rounding.py": 1,
