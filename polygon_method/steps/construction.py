@@ -27,6 +27,7 @@ __all__ = [
     "relative",
     "absolute",
     "centripetal",
+    "tangential",
 ]
 
 
@@ -166,4 +167,17 @@ def centripetal(sol, X, B, link, ph):
         "centripetal",
         f"centripetal of {X}{B}",
         f"v_{X}{B}^2 / {X}{B} = {w * w * L:.4g} m/s^2, parallel to {X}{B}, towards {B}",
+    )
+
+
+def tangential(sol, X, B, link, start):
+    """Tangential component of a_XB: alpha x BX, perpendicular to BX, drawn from ``start``
+    (the end of its centripetal component) to x'."""
+    return Vector(
+        start,
+        sol.A[X],
+        f"t{X}{B}",
+        "tangential",
+        f"tangential of {X}{B}",
+        f"alpha_{link} x {B}{X}",
     )

@@ -31,7 +31,6 @@ from .base import (
     Construction,
     DirectionLine,
     Step,
-    Vector,
     absolute,
     centripetal,
     image_label,
@@ -39,6 +38,7 @@ from .base import (
     pole_text,
     relative,
     sub,
+    tangential,
     unit,
 )
 
@@ -473,22 +473,8 @@ class Dyad(Step):
             f"perpendicular to {D}{X}; they meet at {lab(X)}"
         )
         found = (
-            Vector(
-                c1.end,
-                A[X],
-                f"t{X}{B}",
-                "tangential",
-                f"tangential of {X}{B}",
-                f"alpha_{self.link1} x {B}{X}",
-            ),
-            Vector(
-                c2.end,
-                A[X],
-                f"t{X}{D}",
-                "tangential",
-                f"tangential of {X}{D}",
-                f"alpha_{self.link2} x {D}{X}",
-            ),
+            tangential(sol, X, B, self.link1, c1.end),
+            tangential(sol, X, D, self.link2, c2.end),
             relative(sol, X, B, A, ph),
             relative(sol, X, D, A, ph),
             absolute(sol, X, A, ph),

@@ -40,6 +40,7 @@ from .base import (
     pole_text,
     relative,
     sub,
+    tangential,
     unit,
 )
 
@@ -493,14 +494,7 @@ class SliderDyad(Step):
             f"they meet at {lab(X)}"
         )
         found = (
-            Vector(
-                c1.end,
-                A[X],
-                f"t{X}{B}",
-                "tangential",
-                f"tangential of {X}{B}",
-                f"alpha_{self.link} x {B}{X}",
-            ),
+            tangential(sol, X, B, self.link, c1.end),
             Vector(
                 through,
                 A[X],

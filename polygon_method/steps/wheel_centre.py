@@ -25,7 +25,6 @@ from .base import (
     Construction,
     DirectionLine,
     Step,
-    Vector,
     absolute,
     centripetal,
     image_label,
@@ -33,6 +32,7 @@ from .base import (
     pole_text,
     relative,
     sub,
+    tangential,
     unit,
 )
 from .rounding import line_rounding
@@ -291,14 +291,7 @@ class WheelCentre(Step):
             f"they meet at {lab(X)}"
         )
         found = (
-            Vector(
-                c1.end,
-                A[X],
-                f"t{X}{B}",
-                "tangential",
-                f"tangential of {X}{B}",
-                f"alpha_{self.link} x {B}{X}",
-            ),
+            tangential(sol, X, B, self.link, c1.end),
             relative(sol, X, B, A, ph),
             absolute(sol, X, A, ph),
         )
