@@ -45,6 +45,9 @@ class Vector:
     kind: str
     name: str  # e.g. "v_CB" or "centripetal of CB"
     text: str  # how it is found: "omega_BC^2 x BC, parallel to BC, towards B"
+    #: the points of the polygon's quantity the vector is: (C, B) of v_CB, (C,) of v_C;
+    #: () for a component (centripetal, tangential, Coriolis, sliding)
+    points: tuple = ()
 
     @property
     def magnitude(self) -> float:
@@ -141,7 +144,7 @@ def relative(sol, X, Y, D, phase, kind="relative"):
     """Vector from the image of Y to the image of X (v_XY)."""
     lx, ly = image_label(sol, X, phase), image_label(sol, Y, phase)
     sym = "v" if phase == "velocity" else "a"
-    return Vector(D[Y], D[X], f"{ly}{lx}", kind, f"{sym}_{X}{Y}", "")
+    return Vector(D[Y], D[X], f"{ly}{lx}", kind, f"{sym}_{X}{Y}", "", (X, Y))
 
 
 def absolute(sol, X, D, phase):
@@ -149,7 +152,7 @@ def absolute(sol, X, D, phase):
     o = "o" if phase == "velocity" else "o'"
     sym = "v" if phase == "velocity" else "a"
     return Vector(
-        (0.0, 0.0), D[X], f"{o}{image_label(sol, X, phase)}", "absolute", f"{sym}_{X}", ""
+        (0.0, 0.0), D[X], f"{o}{image_label(sol, X, phase)}", "absolute", f"{sym}_{X}", "", (X,)
     )
 
 
