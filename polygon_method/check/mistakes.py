@@ -294,23 +294,11 @@ class _Diagnoser:
         return out
 
     def components(self, X, Y, lk, name):
+        """The slips of one component for the relative acceleration ``name`` of X about Y
+        on link ``lk``."""
         sol = self.sol
         r = math.dist(sol.P[X], sol.P[Y])
-        w, al = sol.W[lk.key], sol.Al[lk.key]
-        return [
-            _Candidate(
-                w * w * r,
-                "component_only",
-                f"only the centripetal component (omega^2 r = {_g(w * w * r)} "
-                f"m/s^2) of {name}; add the tangential one",
-            ),
-            _Candidate(
-                abs(al) * r,
-                "component_only",
-                f"only the tangential component (alpha r = {_g(abs(al) * r)} "
-                f"m/s^2) of {name}; add the centripetal one",
-            ),
-        ]
+        return confusions.component_only(sol.W[lk.key], sol.Al[lk.key], r, name)
 
     def per_length(self, ans):
         sol = self.sol

@@ -33,6 +33,7 @@ __all__ = [
     "suggest",
     "did_you_mean",
     "implausible",
+    "ANSWER_UNITS",
 ]
 
 _PI = math.pi
@@ -194,6 +195,30 @@ TINY: dict[str, float] = {
     "angular_velocity": 1e-9,  # rad/s (one turn in 200 years)
     "force": 1e-9,  # N
     "torque": 1e-12,  # N m
+}
+
+#: an answer's kind (the prefix of its key: ``v_C``, ``omega_BC``, ``F_B``, ``torque``) -> the SI
+#: unit its value is written in: the answer keys, the verdicts and the variants' papers
+ANSWER_UNITS = {
+    "v": "m/s",
+    "a": "m/s^2",
+    "omega": "rad/s",
+    "alpha": "rad/s^2",
+    "vs": "m/s",
+    "as": "m/s^2",
+    "ac": "m/s^2",
+    "rub": "m/s",
+    "torque": "N m",
+    "vI": "m/s",
+    "aI": "m/s^2",
+    "F": "N",
+    "N": "N",
+    "Fc": "N",
+    "vu": "m/s",
+    "au": "m/s^2",
+    "Fi": "N",
+    "Ci": "N m",
+    "h": "m",
 }
 
 #: the lengths a scene may be written in (``units = ...``)
