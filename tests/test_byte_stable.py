@@ -13,6 +13,7 @@ WORKED = ROOT / "worked_problems"
 FOURBAR = WORKED / "fourbar_image_points.toml"
 ENGINE = WORKED / "engine_forces.toml"
 GEARS = WORKED / "gear_pair_forces.toml"
+TRIAD = WORKED / "class3_six_bar_forces.toml"
 
 #: (name, the command's arguments with OUT for the output, the scene)
 WRITERS = [
@@ -22,6 +23,7 @@ WRITERS = [
     ("forces.svg", ["draw", "{scene}", "--forces", "-o", "{out}.svg"], ENGINE),
     ("forces.pdf", ["draw", "{scene}", "--forces", "-o", "{out}.pdf"], ENGINE),
     ("gear-forces.svg", ["draw", "{scene}", "--forces", "-o", "{out}.svg"], GEARS),
+    ("triad-forces.svg", ["draw", "{scene}", "--forces", "-o", "{out}.svg"], TRIAD),
     ("forces-page.html", ["page", "{scene}", "--frames", "4", "-o", "{out}.html"], GEARS),
     ("centres.svg", ["draw", "{scene}", "--diagram", "centres", "-o", "{out}.svg"], FOURBAR),
     ("centres.pdf", ["draw", "{scene}", "--diagram", "centres", "-o", "{out}.pdf"], FOURBAR),

@@ -513,3 +513,58 @@ def test_the_collars_force_polygon(digits, text):
     for k, (dx, dy) in st.unknown:
         vx, vy = poly[k].vector
         assert abs(vx * dy - vy * dx) <= 1e-9 * big and poly[k].what in ("driver", "guide")
+    if sc.input.block:  # the rod's and DC's polygons beside the collar's
+        _the_rod_and_link_polygons(sc, st, ref, want, w)
+
+
+def _known_side(sc, ref, sd):
+    """An inertia force, a weight or a load on a body, from the scene and the 50-digit
+    kinematics."""
+    if sd.what == "load":
+        return _mp(next(ld.force for ld in sc.loads if ld.target == sd.point))
+    m = next(m for m in sc.masses if (f"block {m.body}" if m.block else m.body) == sd.on)
+    mass, g = mpf(m.mass), sc.gravity
+    if sd.what == "weight":
+        return (mass * mpf(g.g) * mpf(g.direction[0]), mass * mpf(g.g) * mpf(g.direction[1]))
+    A = ref["accelerations"]
+
+    def acc(n):
+        return A[n] if n in A else (mpf(0), mpf(0))
+
+    if m.block:
+        a = acc(m.body)
+    else:
+        lk = sc.link(m.body)
+        (px, py), (qx, qy) = acc(lk.p), acc(lk.q)
+        lam, mu = mpf(m.lam), mpf(m.mu)
+        a = (px + lam * (qx - px) - mu * (qy - py), py + lam * (qy - py) + mu * (qx - px))
+    return (-mass * a[0], -mass * a[1])
+
+
+def _the_rod_and_link_polygons(sc, st, ref, want, w):
+    """The driving collar's rod OA (its known forces, the collar's push and the driver's
+    force back at C, the frame's at O closing it) and link DC (the collar's force on it,
+    its known forces, the frame's at D closing it): every side the matrix method's force
+    (or the scene's and the 50-digit kinematics' inertia, weight, load), each closed."""
+    polys = st.polygons
+    assert [pg.bodies for pg in polys] == [("block C",), ("OA",), ("DC",)]
+    N, F = want[("N", "C")], want[("F", "C")]
+    for pg in polys[1:]:
+        sides = pg.polygon
+        big = max(math.hypot(*sd.vector) for sd in sides)
+        assert math.hypot(sum(sd.vector[0] for sd in sides), sum(sd.vector[1] for sd in sides)) <= (
+            1e-9 * big
+        )
+        for sd in sides:
+            if sd.what in ("inertia", "weight", "load"):
+                e = _known_side(sc, ref, sd)
+            elif sd.what == "guide":  # the collar's push on the rod across it
+                e = (N * w[1], -N * w[0])
+            elif sd.what == "driver":  # the driver's force back on the rod
+                e = (-F * w[0], -F * w[1])
+            elif (sd.point, sd.on, sd.by) in want:
+                e = want[(sd.point, sd.on, sd.by)]
+            else:
+                e = tuple(-c for c in want[(sd.point, sd.by, sd.on)])
+            got = sd.vector
+            assert math.hypot(got[0] - float(e[0]), got[1] - float(e[1])) <= 1e-9 * big, sd

@@ -170,7 +170,7 @@ def test_the_force_scale_is_the_round_scale_the_rule_chooses():
     for p in SCENES:
         sol = solve(p.values[0])
         f = sol.forces
-        size = max(extent(polygon_corners(st)) for st in f.steps if st.polygon)
+        size = max(extent(polygon_corners(pg)) for st in f.steps for pg in st.polygons)
         s = force_scale(f)
         assert size / s.per_cm <= 12.0 + 1e-9
         assert size / finer(s).per_cm > 12.0

@@ -1,7 +1,8 @@
-"""Force polygons of every kind of group the force analysis solves: gears and planets, racks,
-the driving wheel, a wheel's centre on a line, the Scotch yoke, a peg in two slots, the
-slotted lever, a driving block and a hydraulic cylinder, as well as the dyads, sliders and
-cranks the sheet drew before.
+"""Force polygons of every kind of group the force analysis solves: a triad (a class-III
+group: the plate's polygon and each loaded link's), gears and planets, racks, the driving
+wheel, a wheel's centre on a line, the Scotch yoke, a peg in two slots, the slotted lever, a
+driving block and a hydraulic cylinder, as well as the dyads, sliders and cranks the sheet
+drew before.
 
 Each polygon is held to an independent reference: the matrix method (every moving body's
 Newton-Euler equations, D'Alembert's inertia at G, as one linear system in all the unknown
@@ -23,8 +24,9 @@ from pathlib import Path
 import pytest
 
 from polygon_method import load_scene, solve
+from polygon_method.scene import parse_scene
 from polygon_method.draw import render_pages
-from polygon_method.draw.forces import NEGLIGIBLE
+from polygon_method.draw.forces import NEGLIGIBLE, polygon_tag
 from polygon_method.forces import FRAME, side_label
 from test_draw import CM, Svg, vector_length_cm
 from test_forces import with_forces
@@ -285,7 +287,70 @@ def cylinder():
     return sol, out
 
 
+TRIAD = """
+title = "Class-III six-bar (plate BCD on AB, EC, FD), with masses"
+units = "mm"
+[ground]
+O = [0, 0]
+E = [70, 213]
+F = [235, -17]
+[links]
+OA = 20
+AB = 110
+BC = 78
+EC = 122
+FD = 101
+[points]
+D = { on = "BC", distances = { B = 73, C = 71 }, turn = "cw" }
+[assembly]
+B = [80, 60]
+[input]
+crank = "OA"
+angle = 150
+speed = "240 rpm ccw"
+[gravity]
+direction = 250
+"""
+
+
+def _triad(sc):
+    sol = solve(sc)
+    P = sol.P
+    mat = Ref(sol, ["OA", "AB", "BC", "EC", "FD"], {"A": "OA", "B": "BC", "C": "BC", "D": "BC"})
+    mat.pin("O", P["O"], "OA", FRAME)
+    mat.pin("A", P["A"], "AB", "OA")
+    mat.pin("B", P["B"], "AB", "BC")
+    mat.pin("C", P["C"], "EC", "BC")
+    mat.pin("D", P["D"], "FD", "BC")
+    mat.pin("E", P["E"], "EC", FRAME)
+    mat.pin("F", P["F"], "FD", FRAME)
+    mat.couple("T", "OA")
+    return sol, mat.forces(mat.solve())
+
+
+def triad():
+    """A class-III group (worked_problems/class3_six_bar_forces.toml): the plate and AB, EC
+    massive (their centres off the links), FD carrying a couple only, a load at the
+    plate's corner D."""
+    return _triad(load_scene(ROOT / "worked_problems" / "class3_six_bar_forces.toml"))
+
+
+def triad_two_force_links():
+    """EC and FD carrying nothing (two-force members: their forces along their lines, no
+    polygon of their own), the plate and AB massive, a load and a couple on the plate."""
+    return _triad(
+        parse_scene(
+            TRIAD + "[masses]\n"
+            'BC = { mass = 4, distances = { B = 30, C = 55 }, turn = "ccw", gyration = 35 }\n'
+            "AB = { mass = 1, along = 55 }\n"
+            '[loads]\nC = { force = [40, -90] }\nBC = { torque = "1.5 N m ccw" }\n'
+        )
+    )
+
+
 CASES = [
+    triad,
+    triad_two_force_links,
     gear_pair,
     planet_on_a_sun,
     two_racks,
@@ -342,8 +407,8 @@ def test_each_polygon_side_is_the_reference_force_and_each_polygon_closes(case):
     sol, forces = _case(case)
     f = sol.forces
     kinds = set()
-    for st in f.steps:
-        sides = st.polygon
+    for st, pg in ((st, pg) for st in f.steps for pg in st.polygons):
+        sides = pg.polygon
         assert sides, (st.kind, st.title)  # every group has its polygon now
         kinds.add(st.kind)
         big = max(math.hypot(*s.vector) for s in sides)
@@ -371,14 +436,14 @@ def test_each_polygon_side_is_the_reference_force_and_each_polygon_closes(case):
                     want = (want[0] - other.vector[0], want[1] - other.vector[1])
             assert math.dist(s.vector, want) <= 1e-9 * scale, (st.title, name, s.vector, want)
         # the unknowns' direction lines run along their sides
-        for k, u in st.unknown:
+        for k, u in pg.unknown:
             v = sides[k].vector
             assert abs(u[0] * v[1] - u[1] * v[0]) <= 1e-9 * scale, (st.title, k)
         # the whole forces read across it
         corners = [(0.0, 0.0)]
         for s in sides:
             corners.append((corners[-1][0] + s.vector[0], corners[-1][1] + s.vector[1]))
-        for c, i, j in st.chords:
+        for c, i, j in pg.chords:
             vec = (corners[j][0] - corners[i][0], corners[j][1] - corners[i][1])
             assert math.dist(vec, c.vector) <= 1e-9 * scale
             want = _reference(forces, c)
@@ -404,10 +469,10 @@ def test_the_sheet_draws_each_polygon_at_its_scale_on_a4(case):
     f = sol.forces
     fs = used["force polygons"]
     tol = 1e-5 * max(max(p.size) for p in pages)
-    big = max(math.hypot(*s.vector) for st in f.steps for s in st.polygon)
+    polys = [(polygon_tag(st, n), pg) for st in f.steps for n, pg in enumerate(st.polygons)]
+    big = max(math.hypot(*s.vector) for _, pg in polys for s in pg.polygon)
     drawn = 0
-    for st in f.steps:
-        tag = f"force-polygon-{st.index + 1}"
+    for tag, st in polys:  # (each polygon of each step, read as the step's first was)
         svg = next((s for s in svgs if f"{tag}-pole" in s.groups), None)
         nonzero = [math.hypot(*s.vector) > NEGLIGIBLE * big for s in st.polygon]
         if svg is None:  # two opposite forces (a massless crank, a cylinder): no polygon

@@ -68,31 +68,42 @@ def force_layout(sol, scales=None):
     given = dict(scales or {})
     space = given.get("length") or diagram_scales(sol)[0]
     fs = given.get("force") or force_scale(f)
-    big = max([math.hypot(*s.vector) for st in f.steps for s in st.polygon] + [0.0])
+    big = max([math.hypot(*s.vector) for st in f.steps for s in _sides(st)] + [0.0])
     tiny = NEGLIGIBLE * big
     free = {fb.body: fb for fb in f.free}
     panels, drawn = [], set()
     for st in f.steps:
-        sides = [s for s in st.polygon if math.hypot(*s.vector) > tiny]
-        note = ()
-        if len(sides) == 2:  # a crank with no mass: two forces, no polygon to draw
-            a, b = (side_label(s, f.numbers) for s in sides)
-            note = (f"{b} = \u2212{a}: two forces only, equal and opposite (no polygon)",)
+        notes, shown = {}, []
+        for n, pg in enumerate(st.polygons):
+            sides = [s for s in pg.polygon if math.hypot(*s.vector) > tiny]
+            if len(sides) >= 3:
+                shown.append((polygon_tag(st, n), pg))
+            elif len(sides) == 2:  # a crank with no mass: two forces, no polygon to draw
+                a, b = (side_label(s, f.numbers) for s in sides)
+                for body in pg.bodies:
+                    notes[body] = (
+                        f"{b} = \u2212{a}: two forces only, equal and opposite (no polygon)",
+                    )
         for body in st.bodies:
             if body in free and body not in drawn:
                 drawn.add(body)
                 num = f.numbers[body]
-                panels.append(
-                    (
-                        f"free-body-{num}",
-                        space,
-                        _free_body(sol, free[body], space, tiny, f"free-body-{num}", note),
-                    )
-                )
-        if len(sides) >= 3:
-            tag = f"force-polygon-{st.index + 1}"
-            panels.append((tag, fs, _polygon(sol, st, fs, tiny, tag)))
+                tag = f"free-body-{num}"
+                note = notes.get(body, ())
+                panels.append((tag, space, _free_body(sol, free[body], space, tiny, tag, note)))
+        for tag, pg in shown:
+            panels.append((tag, fs, _polygon(sol, st, pg, fs, tiny, tag)))
     return panels, space, fs
+
+
+def _sides(st):
+    return [s for pg in st.polygons for s in pg.polygon]
+
+
+def polygon_tag(st, n: int = 0) -> str:
+    """The panel's name of a step's ``n``-th force polygon: ``force-polygon-2`` the first of
+    step 2, ``force-polygon-2b`` its second (a triad's first link's, a collar's rod's)."""
+    return f"force-polygon-{st.index + 1}" + ("" if n == 0 else chr(ord("a") + n))
 
 
 def _unit(v):
@@ -309,12 +320,12 @@ def _along(a, b):
     ]
 
 
-def _polygon(sol, st, scale: Scale, tiny, tag) -> _Sketch:
+def _polygon(sol, st, pg, scale: Scale, tiny, tag) -> _Sketch:
     f = sol.forces
     numbers = f.numbers
     s = scale.per_cm
-    corners = [(x / s, y / s) for x, y in polygon_corners(st)]
-    sides = st.polygon
+    corners = [(x / s, y / s) for x, y in polygon_corners(pg)]
+    sides = pg.polygon
     sk = _Sketch()
     nonzero = [math.hypot(*sd.vector) > tiny for sd in sides]
 
@@ -340,7 +351,7 @@ def _polygon(sol, st, scale: Scale, tiny, tag) -> _Sketch:
         return side_label(sd, numbers)
 
     # the direction lines of the unknowns, through the corner the book draws them from
-    for k, u in st.unknown:
+    for k, u in pg.unknown:
         known = corners[k + 1] if k == 0 else corners[k]
         ends = [corners[k], corners[k + 1]]
         ts = [(p[0] - known[0]) * u[0] + (p[1] - known[1]) * u[1] for p in ends]
@@ -362,7 +373,7 @@ def _polygon(sol, st, scale: Scale, tiny, tag) -> _Sketch:
         )
     also = {}
     chords = []
-    for c, i, j in st.chords:
+    for c, i, j in pg.chords:
         if math.hypot(*c.vector) <= tiny:
             continue
         between = [k for k in range(min(i, j), max(i, j)) if nonzero[k]]
@@ -385,7 +396,7 @@ def _polygon(sol, st, scale: Scale, tiny, tag) -> _Sketch:
         a, b = corners[k], corners[k + 1]
         sk.arrow(a, b, f"{tag}-side-{k}", color, lw, dashes, z=4)
         sk.label(text, _along(a, b), LABEL_PT, gid=f"label-{tag}-side-{k}", color=color)
-        found = " (found)" if any(k == u for u, _ in st.unknown) else ""
+        found = " (found)" if any(k == u for u, _ in pg.unknown) else ""
         rows.append(
             f"{text}: {_magnitude(sd.vector)}, {scale.cm(math.hypot(*sd.vector)):.2f} cm{found}"
         )
@@ -400,7 +411,7 @@ def _polygon(sol, st, scale: Scale, tiny, tag) -> _Sketch:
         )
     sk.circle(corners[0], DOT_R * 1.3, gid=f"{tag}-pole", face="#000000", z=6)
     sk.place_labels()
-    bodies = ", ".join(_what(b, numbers, sol.scene) for b in st.bodies)
+    bodies = ", ".join(_what(b, numbers, sol.scene) for b in pg.bodies)
     lines = [
         f"step {st.index + 1}, {st.title}: {bodies}; link 1 the frame",
         "F\u2083\u2082: the force on 3 by 2 (\u1d57 square to its link, guide or contact, "

@@ -45,7 +45,7 @@ from __future__ import annotations
 from ..common.numbers import fmt
 from ..steps.rounding import vhypot
 from .bodies import Singular, any_zero, cross, guided, least
-from .records import FRAME, ForceStep, GuideForce, PinForce, Side, block
+from .records import FRAME, ForcePolygon, ForceStep, GuideForce, PinForce, Side, block
 
 
 def solve(K, C, D, w, known_rod, known_block, known_link):
@@ -149,7 +149,8 @@ def step(st, P, led, own):
     led.add(FRAME, -fd[0], -fd[1], dx, dy)
     led.add(FRAME, -fk[0], -fk[1], kx, ky)
     # the drawings: the driver's force on the collar, and on the rod its and the guide's back
-    known_b = led.known(bl)  # (before the driver's force is entered: its polygon)
+    # (before the driver's force is entered: the polygons)
+    known_b, known_r, known_l = led.known(bl), led.known(rod), led.known(link)
     led.items.setdefault(bl, []).append(Side("driver", bl, "", C, (f * w[0], f * w[1]), P[C]))
     led.items.setdefault(rod, []).extend(
         (
@@ -162,13 +163,7 @@ def step(st, P, led, own):
     if isinstance(f, float):
 
         def drawing():
-            # the collar's polygon: the pole, its known forces, DC's force on it (from DC's
-            # moments), the driver's along the rod, the rod's across it: closed
-            k = len(known_b)
-            pin = Side("pin", bl, link, C, (-p[0], -p[1]), P[C])
-            push = Side("driver", bl, rod, C, (f * w[0], f * w[1]), P[C])
-            held = Side("guide", bl, rod, C, g.force, P[C])
-            return known_b + (pin, push, held), ((k + 1, w), (k + 2, nv)), ()
+            return polygons(st, P, (n, f, p, fd, fk), w, (known_b, known_r, known_l))
 
         mk = kr[2] - cross(kx, ky, kr[0], kr[1])
         md = kl[2] - cross(dx, dy, kl[0], kl[1])
@@ -209,6 +204,36 @@ def step(st, P, led, own):
     )
     pins = (PinForce(C, link, bl, p), PinForce(D, link, FRAME, fd), PinForce(K, rod, FRAME, fk))
     return pins, (g,), rec, f
+
+
+def polygons(st, P, found, w, knowns):
+    """The group's force polygons: the collar's (the pole, its known forces, DC's force on
+    it from DC's moments, the driver's along the rod and the rod's across it, their lines
+    drawn: closed), the rod's (its known forces, the collar's push and the driver's back at
+    C, the frame's force at K closing it) and DC's (the collar's force on it, its known
+    forces, the frame's at D closing it). ``found``: (N, F, P, F_D, F_K) of :func:`solve`;
+    ``knowns``: the known forces (:class:`Side` s) on the collar, the rod and DC. Returns
+    (polygon, unknown, chords, every :class:`ForcePolygon`)."""
+    C, K, D, rod, link = st.point, st.pivot, st.fixed, st.rod, st.link
+    bl = block(C)
+    n, f, p, fd, fk = found
+    known_b, known_r, known_l = knowns
+    nv = (-w[1], w[0])
+    along, across = (f * w[0], f * w[1]), (n * nv[0], n * nv[1])
+    k = len(known_b)
+    pin = Side("pin", bl, link, C, (-p[0], -p[1]), P[C])
+    push = Side("driver", bl, rod, C, along, P[C])
+    held = Side("guide", bl, rod, C, across, P[C])
+    first = ForcePolygon((bl,), known_b + (pin, push, held), ((k + 1, w), (k + 2, nv)))
+    back = (
+        Side("guide", rod, bl, C, (-across[0], -across[1]), P[C]),
+        Side("driver", rod, bl, C, (-along[0], -along[1]), P[C]),
+    )
+    rod_p = known_r + back + (Side("pin", rod, FRAME, K, fk, P[K]),)
+    link_p = (Side("pin", link, bl, C, p, P[C]),) + known_l
+    link_p += (Side("pin", link, FRAME, D, fd, P[D]),)
+    polys = (first, ForcePolygon((rod,), rod_p), ForcePolygon((link,), link_p))
+    return first.polygon, first.unknown, (), polys
 
 
 def divisor(st, rec, P, L):

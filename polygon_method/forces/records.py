@@ -282,6 +282,22 @@ def couple_label(c: Couple, numbers: dict, unicode: bool = True) -> str:
 
 
 @dataclass(frozen=True)
+class ForcePolygon:
+    """One force polygon of a step: the balance of ``bodies`` drawn head to tail from the
+    pole (``polygon``: the :class:`Side` s in the order drawn, closing on the pole),
+    ``unknown`` (index, unit direction) the sides whose direction alone the book knows
+    before it closes the polygon (their lines drawn through its corners), ``chords``
+    (:class:`Side`, i, j) the whole forces read across it. A group of more than two bodies
+    may draw one for each body that carries forces of its own (a triad's plate and its
+    loaded links; a driving collar, its rod and the link it is pinned to)."""
+
+    bodies: tuple
+    polygon: tuple
+    unknown: tuple = ()
+    chords: tuple = ()
+
+
+@dataclass(frozen=True)
 class ForceStep:
     """One step of the force solution, in the order solved (the kinematic plan's, reversed):
     ``kind`` (crank, dyad, slider), ``title``, ``bodies`` and, for each body, the resultant
@@ -303,7 +319,8 @@ class ForceStep:
     #: the step's equations with their numbers, in the book's words (SI)
     equations: tuple = ()
     #: a function giving (polygon, unknown, chords), made when first asked for (one
-    #: instant; None over a sweep)
+    #: instant; None over a sweep); or (polygon, unknown, chords, polygons), ``polygons``
+    #: every :class:`ForcePolygon` of the step, the first that one
     drawing: object = field(default=None, repr=False, compare=False)
     #: the pin forces (:class:`PinForce`) and guide forces (:class:`GuideForce`) it found
     pins: tuple = ()
@@ -332,6 +349,16 @@ class ForceStep:
         """Whole forces read across the polygon: (:class:`Side`, i, j), the vector from
         corner i to corner j (corner 0 the pole, corner k the end of side k - 1)."""
         return self._drawn[2]
+
+    @property
+    def polygons(self) -> tuple:
+        """Every force polygon of the step (:class:`ForcePolygon`), the first its
+        :attr:`polygon`: one for most groups; a triad's plate and each of its links that
+        carries forces of its own, a driving collar, its rod and its link, each their own."""
+        d = self._drawn
+        if len(d) > 3:
+            return d[3]
+        return (ForcePolygon(self.bodies, *d),) if d[0] else ()
 
 
 @dataclass(frozen=True)

@@ -37,7 +37,7 @@ from __future__ import annotations
 from ..steps.rounding import largest, vhypot
 from .bodies import Singular, any_zero, cross, least
 from ..common.numbers import fmt
-from .records import ForceStep, PinForce, Side
+from .records import ForcePolygon, ForceStep, PinForce, Side
 
 
 def solve3x3(e, r, rhs):
@@ -118,6 +118,8 @@ def step(st, P, led, own):
     a1, a2, a3, cond = solve3x3(e, r, rhs)
     if a1 is None:
         raise Singular(f"the lines of {', '.join(st.links_)} meet in one point")
+    # the known forces one by one, for the polygons (before the reactions are entered)
+    knowns = (led.known(plate),) + tuple(led.known(lk) for lk in st.links_)
     pins, found, eq = [], [], []
     for ai, bi, ei, ni, kl, lk, K, V in zip(
         (a1, a2, a3), b, e, n, kls, st.links_, st.knowns, st.points
@@ -134,6 +136,13 @@ def step(st, P, led, own):
                 f"{lk}: across it b = -M_{K} / {lk} = {fmt(bi)} N (its moments about "
                 f"{K}); along it a = {fmt(ai)} N (the plate's 3x3 solve)"
             )
+    drawing = None
+    if isinstance(a1, float):
+        parts = tuple(zip((a1, a2, a3), b, e, n))
+
+        def drawing():
+            return polygons(st, P, own, parts, knowns, [p.force for p in pins[1::2]])
+
     rec = ForceStep(
         st.index,
         "triad",
@@ -142,8 +151,48 @@ def step(st, P, led, own):
         (kp,) + tuple(kls),
         tuple(found),
         cond,
-        "the plate's 3x3 determinant over its columns' sizes (zero where the "
+        "the plate's 3x3 system's divisor (Cramer's rule) over its columns' sizes (zero where the "
         "three links' lines meet in one point)",
         tuple(eq),
+        drawing,
     )
     return tuple(pins), (), rec, None
+
+
+def polygons(st, P, own, parts, knowns, at_k):
+    """The triad's force polygons, as a book draws a class-III group's: the plate's (its
+    known forces, then each link's force on it at its vertex, the part across the link
+    from the link's moments about K_i and the part along it from the 3x3 solve, whose
+    direction lines are drawn; it closes on the pole), then each link's that carries
+    forces of its own or a couple (the plate's force on it across and along it, its known
+    forces, the force at K_i closing it; a link carrying nothing is a two-force member, its
+    force along it, and has none). ``parts``: (a_i, b_i, e_i, n_i) per link; ``knowns``:
+    the plate's and each link's known forces (:class:`Side` s); ``at_k``: the force on each
+    link at K_i. Returns (polygon, unknown, chords, every :class:`ForcePolygon`)."""
+    plate = st.plate
+    sides, unknown, chords = list(knowns[0]), [], []
+    links = []
+    for (a, b, (ex, ey), (nx, ny)), lk, K, V, known, fk in zip(
+        parts, st.links_, st.knowns, st.points, knowns[1:], at_k
+    ):
+        at = P[V]
+        across, along = (b * nx, b * ny), (a * ex, a * ey)
+        whole = (across[0] + along[0], across[1] + along[1])
+        k = len(sides)  # on the plate: the link's force back, across and along the link
+        sides += [
+            Side("pin", plate, lk, V, (-across[0], -across[1]), at, "t"),
+            Side("pin", plate, lk, V, (-along[0], -along[1]), at, "n"),
+        ]
+        unknown.append((k + 1, (ex, ey)))
+        chords.append((Side("pin", plate, lk, V, (-whole[0], -whole[1]), at), k, k + 2))
+        if known or b != 0:
+            poly = (
+                Side("pin", lk, plate, V, across, at, "t"),
+                Side("pin", lk, plate, V, along, at, "n"),
+                *known,
+                Side("pin", lk, own[K], K, fk, P[K]),
+            )
+            read = ((Side("pin", lk, plate, V, whole, at), 0, 2),) if known else ()
+            links.append(ForcePolygon((lk,), poly, (), read))  # (no known: F_K the whole)
+    main = ForcePolygon((plate,), tuple(sides), tuple(unknown), tuple(chords))
+    return main.polygon, main.unknown, main.chords, (main, *links)

@@ -27,12 +27,13 @@ import numpy as np
 
 from ..solver.derived import input_torque, largest, pin_rubbing
 from ..solver.errorbound import error_bounds
-from ..common.errors import TOL, PolygonMethodError, SceneError
+from ..common.errors import TOL, SceneError
 from ..solver.kinematics import Motion
 from ..solver.compiler import compile_plan
 from ..scene import Scene
 from ..solver.tracking import CHUNK, Domain, Sweeper, array_motion, run_arrays, valid_mask
 from ..common.units import ABSURD
+from . import sweep_forces
 
 __all__ = [
     "sweep",
@@ -169,30 +170,32 @@ class SweepResult(Motion):
         if error_bound:
             worst = self.error_bounds.worst
             cols.append(("err_max", "1", np.broadcast_to(worst, np.shape(self.theta))))
-            f = self._forces()
-            if f is not None:  # the largest bound of any force (relative to the largest)
+            got = self._force_rows()
+            if got is not None:  # the largest bound of any force (relative to the largest)
                 from ..forces.bounds import force_bounds  # lazy, as in `_forces`
 
-                cols.append(
-                    (
-                        "err_forces",
-                        "1",
-                        np.broadcast_to(force_bounds(self, f).worst, np.shape(self.theta)),
-                    )
-                )
+                f, rows, _ = got
+                at = self if rows is None else sweep_forces.take(self, rows)
+                worst = [
+                    ("err_forces", "1", np.broadcast_to(force_bounds(at, f).worst, at.theta.shape))
+                ]
+                cols += worst if rows is None else sweep_forces.spread(worst, rows, len(self))
         return cols
 
     def _forces(self):
         """The force analysis over the sweep, or None (no masses or gravity; a plan, or a
         position, the analysis does not cover)."""
+        got = self._force_rows()
+        return None if got is None or got[1] is not None else got[0]
+
+    def _force_rows(self):
+        """``(forces, rows, why)`` over the sweep (:func:`.sweep_forces.by_rows`: ``rows``
+        None, or the angles where a group's equations are not singular), or None."""
         if not self.scene.has_forces or not len(self.theta):
             return None
         from ..forces import analyse  # lazy: a scene without masses never loads forces/
 
-        try:
-            return analyse(self)
-        except PolygonMethodError:
-            return None
+        return sweep_forces.by_rows(self, analyse)
 
     def force_columns(self) -> list:
         """The force analysis over the sweep, for a scene with masses or gravity (none for a
@@ -201,11 +204,15 @@ class SweepResult(Motion):
         force and the size of each pin force (named ``F_<pin>_<on>_<by>``); for an engine
         (a gas force or an indicator diagram on a slider crank's piston) the piston effort
         (towards the crank), the crank effort and the turning moment (both in the crank's
-        sense of rotation)."""
-        f = self._forces()
-        if f is None:
+        sense of rotation). Where a group's equations are exactly singular at some angles
+        (:mod:`.sweep_forces`) the cells there are empty, and ``condition_forces`` (0 there,
+        else the least condition of the groups' equations) says so row by row."""
+        got = self._force_rows()
+        if got is None:
             return []
-        n = np.shape(self.theta)
+        f, rows, _ = got
+        at = self if rows is None else sweep_forces.take(self, rows)
+        n = np.shape(at.theta)
         cols = [
             ("torque_inertia", "N m", np.broadcast_to(f.input_torque, n))
             if f.driver == "crank"
@@ -230,14 +237,19 @@ class SweepResult(Motion):
         ]
         from ..forces.engine import efforts  # lazy, as in `_forces`
 
-        e = efforts(self.scene, self.plan, self.P, f)
+        e = efforts(self.scene, self.plan, at.P, f)
         if e is not None:  # an engine: the turning-moment diagram and its efforts
             cols += [
                 ("piston_effort", "N", np.broadcast_to(e.F_P, n)),
                 ("crank_effort", "N", np.broadcast_to(e.F_T, n)),
                 ("turning_moment", "N m", np.broadcast_to(e.T, n)),
             ]
-        return cols
+        if rows is None:
+            return cols
+        whole = len(self)
+        return sweep_forces.spread(cols, rows, whole) + [
+            ("condition_forces", "1", sweep_forces.conditions(f, rows, whole))
+        ]
 
     def to_csv(self, error_bound=False) -> str:
         """One row per crank angle; the header names each quantity with its unit."""
@@ -245,6 +257,9 @@ class SweepResult(Motion):
         buf = io.StringIO()
         buf.write(",".join(f"{n} [{u}]" for n, u, _ in cols) + "\n")
         if len(self.theta):
+            if any(np.ma.is_masked(a) for _, _, a in cols):  # forces not determined: empty
+                buf.write(sweep_forces.csv_rows([a for _, _, a in cols]))
+                return buf.getvalue()
             data = np.column_stack([np.asarray(a, dtype=float) for _, _, a in cols])
             np.savetxt(buf, data, delimiter=",", fmt="%.17g")  # full precision
         return buf.getvalue()

@@ -267,8 +267,9 @@ def _drawn_beside(sol) -> list:
 
 
 def polygon_corners(step) -> list:
-    """The corners (N) of a force step's polygon: the pole, then the end of each side in
-    turn (the last is the pole again, to rounding)."""
+    """The corners (N) of a force step's polygon (or of one of its polygons, a
+    ``ForcePolygon``): the pole, then the end of each side in turn (the last is the pole
+    again, to rounding)."""
     out = [(0.0, 0.0)]
     for side in step.polygon:
         x, y = out[-1]
@@ -281,7 +282,9 @@ def force_scale(forces, fit_cm: float = FIT_CM) -> Scale:
     2.5, 5 x 10^k N or kN per cm) at which the largest polygon is at most ``fit_cm`` across
     (the rule of the velocity and acceleration polygons); in kN from 1 cm = 1 kN (a
     polygon 4 800 N across: 1 cm = 500 N; 68 700 N across: 1 cm = 10 kN)."""
-    size = max((extent(polygon_corners(st)) for st in forces.steps if st.polygon), default=0.0)
+    size = max(
+        (extent(polygon_corners(pg)) for st in forces.steps for pg in st.polygons), default=0.0
+    )
     return newton_scale(size, fit_cm)
 
 

@@ -270,24 +270,32 @@ def bound_lines(sol, f) -> list:
 
 
 def _polygon_items(st, f, scale, F) -> list:
-    """A step's force polygon in words: each side at ``scale`` (cm), in the order drawn."""
-    if not st.polygon:
-        return []
+    """A step's force polygons in words: each side at ``scale`` (cm), in the order drawn
+    (where the step draws several, each named by its body)."""
+    polys = st.polygons
+    items = []
+    for pg in polys:
+        items += _one_polygon(pg, f, scale, F, len(polys) > 1)
+    return items
+
+
+def _one_polygon(pg, f, scale, F, named) -> list:
     tiny = 1e-9 * max(F, FLOOR)
     sides = [
         f"{side_label(sd, f.numbers, unicode=False)} {scale.cm(math.hypot(*sd.vector)):.2f}"
-        " cm" + (" (found)" if any(k == u for u, _ in st.unknown) else "")
-        for k, sd in enumerate(st.polygon)
+        " cm" + (" (found)" if any(k == u for u, _ in pg.unknown) else "")
+        for k, sd in enumerate(pg.polygon)
         if math.hypot(*sd.vector) > tiny
     ]
+    whose = f" of {' and '.join(_body(b) for b in pg.bodies)}" if named else ""
     items = [
-        f"force polygon at {scale.text}, from its pole, head to tail: "
+        f"force polygon{whose} at {scale.text}, from its pole, head to tail: "
         + ", ".join(sides)
         + "; it closes on the pole"
     ]
     across = [
         f"{side_label(c, f.numbers, unicode=False)} {scale.cm(math.hypot(*c.vector)):.2f} cm"
-        for c, _, _ in st.chords
+        for c, _, _ in pg.chords
         if math.hypot(*c.vector) > tiny
     ]
     if across:
@@ -335,7 +343,11 @@ _STEP_HEADS = {
     "peg": "the peg's balance gives each slot's normal force",
     "triad": "each link's moments about its known end give its force across it; the plate's three"
     " equations together (a 3x3 solve) the forces along the links; each link's balance "
-    "the rest",
+    "the rest. The plate's polygon closes with the three links' forces on it (each across "
+    "its link, then along it: their lines drawn through the corners); a link that carries "
+    "forces or a couple of its own has its polygon too (the plate's force on it across and "
+    "along it, its known forces, the force at its known end closing it), a link that "
+    "carries none is a two-force member",
     "wheel centre": "the wheel's moments about its centre give the ground's grip; the link's "
     "moments about its other end the ground's normal force; the balances the pin "
     "forces",
@@ -343,7 +355,10 @@ _STEP_HEADS = {
     "guide's normal force",
     "collar": "the rod's moments about its pivot give the normal force between rod and collar "
     "(the driver's force along the rod has no arm there); the moments of the collar's link "
-    "about its fixed pivot the driver's force along the rod; the balances the pin forces",
+    "about its fixed pivot the driver's force along the rod; the balances the pin forces. "
+    "The collar's polygon, then the rod's (its known forces, the collar's push and the "
+    "driver's back at the collar, the pivot's force closing it) and the link's (the "
+    "collar's force on it, its known forces, its pivot's force closing it)",
     "second collar": "the collar's force balance: along the crank its driver's force, across it "
     "the crank's normal force; the crank feels both back",
     "rolling": "the tooth load along the line of action, at the pressure angle to the common "
