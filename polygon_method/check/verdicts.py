@@ -34,7 +34,14 @@ UNIT_OF = {
     "Fi": "N",
     "Ci": "N m",
     "h": "m",
+    "force": "N",
+    "force2": "N",
+    "torque2": "N m",
 }
+
+#: the answer kinds the force analysis gives (computed, not drawn: three significant
+#: figures, or the answers' tolerance; the force chapter's slips)
+FORCE_KINDS = ("F", "N", "Fc", "Fi", "Ci", "h", "force", "force2", "torque2")
 
 
 #: answer kind -> the kind of quantity whose largest value sets what is rounding noise
@@ -123,6 +130,10 @@ _KIND_OF_UNIT = {
     "N m": "torque",
     "N": "force",
     "m": "length",
+    "W": "power",
+    "J": "energy",
+    "kg m^2": "moment_of_inertia",
+    "kg": "mass",
 }
 
 

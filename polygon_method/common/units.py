@@ -82,6 +82,7 @@ UNITS: dict[str, dict[str, float]] = {
         "rad/sec2": 1.0,
     },
     "force": {"N": 1.0, "kN": 1e3, "MN": 1e6, "lbf": 4.4482216152605, "kgf": 9.80665},
+    "power": {"W": 1.0, "kW": 1e3, "MW": 1e6, "hp": 745.69987158227},
     "velocity": {
         "m/s": 1.0,
         "mm/s": 1e-3,
