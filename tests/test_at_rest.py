@@ -234,3 +234,14 @@ def test_a_zero_speed_refused_where_nothing_is_held(change, why):
         text = text.replace("speed = 0", change)
     with pytest.raises(SceneError, match=why.replace("[", r"\[").replace("]", r"\]")):
         parse_scene(text)
+
+
+def test_a_slider_crank_at_rest_has_no_klein_construction():
+    """Klein's construction draws the piston's motion: at rest there is none to draw."""
+    from polygon_method.linkage.klein import klein_of
+
+    sol = solve(parse_scene(VERTICAL))
+    k, why = klein_of(sol)
+    assert k is None and why.startswith("at rest")
+    moving = solve(parse_scene(VERTICAL.replace('speed = "0 rpm"', 'speed = "60 rpm ccw"')))
+    assert klein_of(moving)[0] is not None

@@ -547,6 +547,8 @@ def _driver_blocks(f, F, M, sol=None) -> list:
     what += "" if "inertia" in what else ", no inertia"
     said = (
         f" ({what}; its power balances theirs and the friction's loss)"
+        if fric and not sol.scene.at_rest
+        else f" ({what}; its power per rad/s of the motion about to start balances theirs)"
         if fric
         else f" ({what}; its power balances theirs)"
     )
