@@ -17,6 +17,10 @@ _SIN30 = 0.5
 #: answer kind -> the SI unit its value is written in
 UNIT_OF = ANSWER_UNITS
 
+#: the answer kinds the force analysis gives (computed, not drawn: three significant
+#: figures, or the answers' tolerance; the force chapter's slips)
+FORCE_KINDS = ("F", "N", "Fc", "Fi", "Ci", "h", "force", "force2", "torque2")
+
 
 #: answer kind -> the kind of quantity whose largest value sets what is rounding noise
 _NOISE_KIND = {
@@ -104,6 +108,10 @@ _KIND_OF_UNIT = {
     "N m": "torque",
     "N": "force",
     "m": "length",
+    "W": "power",
+    "J": "energy",
+    "kg m^2": "moment_of_inertia",
+    "kg": "mass",
 }
 
 

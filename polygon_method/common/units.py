@@ -83,6 +83,7 @@ UNITS: dict[str, dict[str, float]] = {
         "rad/sec2": 1.0,
     },
     "force": {"N": 1.0, "kN": 1e3, "MN": 1e6, "lbf": 4.4482216152605, "kgf": 9.80665},
+    "power": {"W": 1.0, "kW": 1e3, "MW": 1e6, "hp": 745.69987158227},
     "velocity": {
         "m/s": 1.0,
         "mm/s": 1e-3,
@@ -219,6 +220,9 @@ ANSWER_UNITS = {
     "Fi": "N",
     "Ci": "N m",
     "h": "m",
+    "force": "N",
+    "force2": "N",
+    "torque2": "N m",
 }
 
 #: the lengths a scene may be written in (``units = ...``)

@@ -21,6 +21,7 @@ polygon_method.common.errors.PolygonMethodError: --paper: panel 1 is 30 x 10 cm:
 from __future__ import annotations
 
 from dataclasses import dataclass
+from itertools import permutations
 
 from ..common.tolerances import ON_PAPER
 from ..common.errors import PolygonMethodError
@@ -33,6 +34,7 @@ __all__ = [
     "paper_size",
     "paper_name",
     "paginate",
+    "fill",
     "room",
     "fits",
     "page_files",
@@ -255,6 +257,62 @@ def paginate(sizes, paper: str = "A4", names=None, advice: str = "", panels=None
             tuple(panels[k] for k, _, _ in p.placed) if panels else (),
         )
         for i, p in enumerate(pages)
+    ]
+
+
+#: the most panels a page tries in every order where their own order does not fit (4: 24
+#: orders of 40 arrangements each; 5 would be 120 of 224)
+REORDER = 4
+
+
+def _one_page_any(items, paper):
+    """The page holding ``items`` in their order, or else in another order (up to
+    :data:`REORDER` panels), or None."""
+    page = _one_page(items, paper)
+    if page is not None or len(items) > REORDER:
+        return page
+    for order in permutations(items):
+        page = _one_page(list(order), paper)
+        if page is not None:
+            return page
+    return None
+
+
+def fill(sizes, paper: str = "A4", panels=None) -> list:
+    """The pages of a sheet whose panels are ``sizes`` ((width, height) in cm), each page
+    filled before another is started: the panels taken in order, each onto the page being
+    filled where the page still holds them all (in their order, or in another), else onto
+    a new page. For a sheet of many panels of a kind (the forces sheet's free bodies and
+    polygons, group by group), whose order across the pages is kept; the panels of one page
+    are laid out as :func:`paginate` lays them out. Each panel must fit a page alone
+    (:func:`paginate` refuses one that does not, in one line).
+
+    >>> [[k for k, _, _ in p.placed] for p in fill([(10, 7), (9, 10), (14, 13), (9, 7.5)])]
+    [[0, 1, 2], [3]]
+    """
+    paper = paper_name(paper)
+    groups = []
+    for k, size in enumerate(sizes):
+        tried = None if not groups else _one_page_any(groups[-1][1] + [(k, size)], paper)
+        if tried is None:
+            tried = _one_page_any([(k, size)], paper)
+            if tried is None:
+                return paginate(sizes, paper, panels=panels)  # (its one line)
+            groups.append((tried, [(k, size)]))
+        else:
+            groups[-1] = (tried, groups[-1][1] + [(k, size)])
+    n = len(groups)
+    return [
+        Page(
+            page.paper,
+            page.orientation,
+            page.size,
+            page.placed,
+            i + 1,
+            n,
+            tuple(panels[k] for k, _, _ in page.placed) if panels else (),
+        )
+        for i, (page, _) in enumerate(groups)
     ]
 
 

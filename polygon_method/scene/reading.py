@@ -485,6 +485,7 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected
             rolling=tuple(rolling),
             masses=tuple(masses),
             statics="masses" in self.raw,
+            at_rest=getattr(self, "at_rest", False),
             gravity=gravity,
             indicator=indicator,
             flywheel=flywheel,
