@@ -31,6 +31,8 @@ __all__ = [
     "CYCLE_ANSWERS",
     "is_cycle",
     "cycle_from_text",
+    "load_cycle",
+    "parse_cycle",
     "answers_from_text",
     "parse_law",
 ]
@@ -75,6 +77,42 @@ def cycle_from_text(text: str, file: str | None = None) -> CycleScene | None:
     if not is_cycle(raw):
         return None
     return _CycleReader(_Loader(raw, text, file)).scene()
+
+
+def parse_cycle(text: str, file: str | None = None) -> CycleScene:
+    """The :class:`CycleScene` of a turning-moment diagram's TOML text; a
+    :class:`SceneError` (one line) where the text states none (a mechanism's scene is read
+    by :func:`polygon_method.parse_scene`).
+
+    >>> s = parse_cycle('[turning_moment]\\ntorque = "1000 + 300 sin 2theta"')
+    >>> s.diagram.form, round(s.diagram.cycle, 6)
+    ('law', 6.283185)
+    """
+    if not isinstance(text, str):
+        raise SceneError("the scene's text (TOML) is needed as a str", file=file)
+    scene = cycle_from_text(text, file)
+    if scene is None:
+        raise SceneError(
+            "states no turning-moment diagram ([turning_moment] or [press]): a mechanism's "
+            "scene is read by polygon_method.load_scene (or parse_scene)",
+            file=file,
+        )
+    return scene
+
+
+def load_cycle(path) -> CycleScene:
+    """Read a scene file that states a turning-moment diagram (or a punching press) and no
+    mechanism: its :class:`CycleScene`, which
+    :func:`polygon_method.forces.flywheel_cycle.solve_cycle` solves. Every failure one
+    :class:`SceneError` naming file, key and line, as :func:`polygon_method.load_scene`."""
+    from ..common.errors import PolygonMethodError
+    from .reading import scene_text
+
+    path, text = scene_text(path)
+    try:
+        return parse_cycle(text, str(path))
+    except PolygonMethodError as exc:
+        raise exc.located(str(path))
 
 
 def answers_from_text(text: str, file: str | None = None) -> tuple:
