@@ -57,7 +57,7 @@ def route(args):
     if run is None:
         raise SceneError(
             f"a turning-moment diagram with no mechanism: {args.command} has nothing to "
-            "do here (solve, steps, check, draw and sweep --summary/--csv/--plot do)",
+            "do here (solve, steps, check, draw, page and sweep --summary/--csv/--plot do)",
             file=path,
             key="[turning_moment]" if scene.diagram is not None else "[press]",
         )
@@ -96,7 +96,6 @@ def _steps(args, scene) -> int:
 def _check(args, scene) -> int:
     from ..check.energy import cycle_verdicts
     from ..check.verdicts import verdicts_dict, verdicts_text
-    from ..scene.energy import answers_from_text
 
     files = args.answers or []
     if len(files) > 1 or getattr(args, "gradebook", None) or getattr(args, "variants", None):
@@ -106,17 +105,8 @@ def _check(args, scene) -> int:
             key="answers",
         )
     c = _solved(scene)
-    tolerance, answers, source = scene.tolerance, scene.answers, args.scene
-    if files:
-        source = files[0]
-        try:
-            text = Path(source).read_text(encoding="utf-8-sig")
-        except (OSError, UnicodeDecodeError) as exc:
-            raise SceneError(f"cannot read: {exc}", file=source) from None
-        try:
-            tolerance, answers = answers_from_text(text, source)
-        except PolygonMethodError as exc:
-            raise exc.located(source)
+    source = files[0] if files else args.scene
+    tolerance, answers = _answers(scene, files[0] if files else None)
     if not answers:
         raise SceneError(
             "nothing to check: the scene has no [answers] and no answer file was given",
@@ -140,6 +130,52 @@ def _check(args, scene) -> int:
         title = f"{scene.title or args.scene}: answers from {source}"
         print(verdicts_text(verdicts, title))
     return 0 if all(v.ok for v in verdicts) else 1
+
+
+def _answers(scene, file) -> tuple:
+    """``(tolerance, answers)``: a student's answer file's, or the scene's own."""
+    from ..scene.energy import answers_from_text
+
+    if file is None:
+        return scene.tolerance, scene.answers
+    try:
+        text = Path(file).read_text(encoding="utf-8-sig")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise SceneError(f"cannot read: {exc}", file=file) from None
+    try:
+        return answers_from_text(text, file)
+    except PolygonMethodError as exc:
+        raise exc.located(file)
+
+
+def _page(args, scene) -> int:
+    """``page SCENE -o page.html [--answers FILE] [--frames N]``: the diagram's page."""
+    from ..check.energy import cycle_verdicts
+    from ..page import check_frames
+    from ..page.energy import cycle_page
+
+    out = Path(args.output)
+    if out.suffix.lower() not in (".html", ".htm"):
+        raise PolygonMethodError(
+            f"cannot write the page to {out}: the file name must end in .html", key="-o"
+        )
+    n = check_frames(180 if args.frames is None else args.frames)
+    answers_file = getattr(args, "answers", None)
+    targets = check_outputs([(out, "-o")], protect=[scene.file, answers_file])
+    c = _solved(scene)
+    tolerance, answers = _answers(scene, answers_file)
+    verdicts = None
+    if answers:
+        try:
+            verdicts = cycle_verdicts(scene, c, answers, tolerance)
+        except PolygonMethodError as exc:
+            raise exc.located(answers_file or scene.file)
+    title = f"answers from {Path(answers_file).name if answers_file else 'the scene'}"
+    html = cycle_page(scene, c, n, verdicts=verdicts, answers_title=title)
+    write_outputs(targets, [(html, False)])
+    over = "the crossings" if c.form == "areas" else f"{n} frames over the cycle"
+    print(f"{out}: the turning-moment diagram over {over}; {len(html.encode()) / 1024:.0f} KiB")
+    return 0
 
 
 def _sheet(scene, out, key) -> int:
@@ -227,4 +263,5 @@ _COMMANDS = {
     "check": _check,
     "draw": _draw,
     "sweep": _sweep,
+    "page": _page,
 }
