@@ -57,7 +57,8 @@ def route(args):
     if run is None:
         raise SceneError(
             f"a turning-moment diagram with no mechanism: {args.command} has nothing to "
-            "do here (solve, steps, check, draw, page and sweep --summary/--csv/--plot do)",
+            "do here (solve, steps, check, draw, page, variants and sweep --summary/--csv/--plot "
+            "do)",
             file=path,
             key="[turning_moment]" if scene.diagram is not None else "[press]",
         )
@@ -96,17 +97,24 @@ def _steps(args, scene) -> int:
 def _check(args, scene) -> int:
     from ..check.energy import cycle_verdicts
     from ..check.verdicts import verdicts_dict, verdicts_text
+    from .classroom import _answer_files
+    from .energy_class import _percent, check_class, graded
 
-    files = args.answers or []
-    if len(files) > 1 or getattr(args, "gradebook", None) or getattr(args, "variants", None):
-        raise SceneError(
-            "a turning-moment diagram's answers are checked one file at a time (no class, "
-            "gradebook or variants yet)",
-            key="answers",
-        )
+    files = _answer_files(args.answers or [])
     c = _solved(scene)
+    if (
+        len(files) > 1
+        or (args.answers and Path(args.answers[0]).is_dir())
+        or getattr(args, "gradebook", None)
+    ):
+        if not files:
+            raise SceneError(
+                f"no answer files in {', '.join(args.answers or ['(none)'])}", key="answers"
+            )
+        return check_class(args, scene, c, files)
+    stated = _percent(args)
+    scene, c, tolerance, answers, note = graded(args, scene, c, files, stated)
     source = files[0] if files else args.scene
-    tolerance, answers = _answers(scene, files[0] if files else None)
     if not answers:
         raise SceneError(
             "nothing to check: the scene has no [answers] and no answer file was given",
@@ -118,16 +126,18 @@ def _check(args, scene) -> int:
     except PolygonMethodError as exc:
         raise exc.located(source)
     why = (
-        f"{100 * tolerance:g} % (the answers' own)"
-        if tolerance is not None
-        else "three significant figures (computed answers)"
+        "three significant figures (computed answers)"
+        if tolerance is None
+        else f"{100 * tolerance:g} % (--tolerance)"
+        if stated is not None
+        else f"{100 * tolerance:g} % (the answers' own)"
     )
     if getattr(args, "json", False):
         d = verdicts_dict(verdicts, args.scene, files[0] if files else None)
         d["tolerance_used"] = {"why": why}
         print(json.dumps(d, indent=2, allow_nan=False))
     else:
-        title = f"{scene.title or args.scene}: answers from {source}"
+        title = f"{scene.title or args.scene}: answers from {source}{note}"
         print(verdicts_text(verdicts, title))
     return 0 if all(v.ok for v in verdicts) else 1
 
@@ -264,4 +274,11 @@ _COMMANDS = {
     "draw": _draw,
     "sweep": _sweep,
     "page": _page,
+    "variants": lambda args, scene: _variants(args, scene),
 }
+
+
+def _variants(args, scene) -> int:
+    from .energy_class import make_variants
+
+    return make_variants(args, scene)

@@ -45,9 +45,36 @@ import numpy as np
 from ..common.errors import SceneError
 from ..common.tolerances import FLOOR, ROUNDING, SAME
 
-__all__ = ["CycleEnergy", "Crossing", "solve_cycle", "letters", "curves", "at_angles", "speed_at"]
+__all__ = [
+    "ANSWER_FIELDS",
+    "CycleEnergy",
+    "Crossing",
+    "solve_cycle",
+    "letters",
+    "curves",
+    "at_angles",
+    "speed_at",
+]
 
 _GRID = math.radians(0.25)
+
+#: each answer key of a diagram's scene -> (its field of :class:`CycleEnergy`, SI unit, what
+#: it is): what ``check`` holds and a variant's answer key lists
+ANSWER_FIELDS = {
+    "T_mean": ("T_mean", "N m", "the mean torque"),
+    "power": ("power", "W", "the power"),
+    "dE_max": ("dE_max", "J", "the maximum fluctuation of energy"),
+    "E_stroke": ("E_stroke", "J", "the energy of one hole"),
+    "I_flywheel": ("inertia", "kg m^2", "the flywheel's moment of inertia"),
+    "m_flywheel": ("mass", "kg", "the flywheel's mass"),
+    "Cs": ("Cs", "", "the coefficient of fluctuation of speed"),
+    "speed_max": ("speed_max", "rad/s", "the greatest speed"),
+    "speed_min": ("speed_min", "rad/s", "the least speed"),
+    "alpha_at": ("alpha_at", "rad/s^2", "the angular acceleration"),
+    "rim_radius": ("rim_radius", "m", "the rim's mean radius"),
+    "rim_width": ("rim_width", "m", "the rim's width"),
+    "rim_thickness": ("rim_thickness", "m", "the rim's thickness"),
+}
 
 
 @dataclass(frozen=True)

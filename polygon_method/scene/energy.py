@@ -33,13 +33,27 @@ __all__ = [
     "cycle_from_text",
     "load_cycle",
     "parse_cycle",
+    "cycle_from_table",
+    "cycle_variation",
+    "answer_file_from_text",
     "answers_from_text",
     "parse_law",
 ]
 
 #: the tables that make a scene a turning-moment diagram's (no mechanism)
 CYCLE_TABLES = ("turning_moment", "press")
-_TOP = ("title", "source", "notes", "units", "turning_moment", "press", "flywheel", "answers")
+_TOP = (
+    "title",
+    "source",
+    "notes",
+    "units",
+    "turning_moment",
+    "press",
+    "flywheel",
+    "answers",
+    "variants",
+    "variant",
+)
 _MECHANISM = ("ground", "links", "input", "sliders", "points", "indicator", "masses")
 _TM_KEYS = (
     "areas",
@@ -77,6 +91,54 @@ def cycle_from_text(text: str, file: str | None = None) -> CycleScene | None:
     if not is_cycle(raw):
         return None
     return _CycleReader(_Loader(raw, text, file)).scene()
+
+
+def cycle_from_table(raw: dict, file: str | None = None) -> CycleScene:
+    """The :class:`CycleScene` of a TOML table already parsed (checked as a file's would
+    be; the messages name no line): a variant's, made from its base scene's table."""
+    from .reading import _Loader
+
+    return _CycleReader(_Loader(raw, "", file)).scene()
+
+
+def cycle_variation(text: str, file: str | None = None) -> tuple:
+    """The ``[variants]`` of a diagram's scene text: its
+    :class:`~polygon_method.scene.energy_variation.CycleVaried` keys, each value checked
+    as the scene's own would be; ``()`` where it has none."""
+    from .energy_variation import read_cycle_variation
+    from .reading import _Loader
+
+    try:
+        raw = toml_table(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise syntax_error(str(exc), text, file) from None
+    return read_cycle_variation(_Loader(raw, text, file), cycle_from_table)
+
+
+def answer_file_from_text(text: str, file: str | None = None) -> tuple:
+    """``(tolerance, answers, variant, student)`` of a student's answer file for a
+    diagram's scene: its ``[answers]`` (read as the scene's are), the variant it names
+    (``variant = "07"``, or None) and the student's name (``student`` or ``name``, or
+    None)."""
+    from .reading import _Loader
+
+    try:
+        raw = toml_table(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise syntax_error(str(exc), text, file) from None
+    if not isinstance(raw.get("answers"), dict):
+        raise SceneError("no [answers] table", file=file, key="[answers]")
+    ld = _Loader(raw, text, file)
+    named = raw.get("variant")
+    if isinstance(named, int) and not isinstance(named, bool):
+        named = f"{named:02d}"
+    if named is not None and not (isinstance(named, str) and named.strip()):
+        raise SceneError('variant = "07": the variant\'s id', file=file, key="variant")
+    student = raw.get("student", raw.get("name"))
+    if student is not None and not isinstance(student, str):
+        raise SceneError('student = "A. Student": a name, a string', file=file, key="student")
+    tolerance, answers = _CycleReader(ld).answers()
+    return tolerance, answers, named.strip() if named else None, student
 
 
 def parse_cycle(text: str, file: str | None = None) -> CycleScene:
@@ -265,6 +327,7 @@ class _CycleReader(_RimReader, _PressReader):
             tolerance,
             raw.get("source"),
             units,
+            ld.variant_of(),
         )
 
     # -- [turning_moment]
