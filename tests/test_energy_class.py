@@ -99,7 +99,14 @@ def test_each_variants_key_is_the_closed_form_of_its_own_numbers(law_class):
         assert abs(c.inertia - inertia) <= 1e-9 * inertia
     md = (out / "answer-key.md").read_text(encoding="utf-8")
     assert md.count("\n| 0") == 6
-    assert "Variant 06" in (out / "problem-sheet.md").read_text(encoding="utf-8")
+    sheet = (out / "problem-sheet.md").read_text(encoding="utf-8").split("## Variant ")[1:]
+    assert len(sheet) == 6
+    for part, row in zip(sheet, rows):  # each student is given their own numbers
+        raw = tomllib.loads((out / row["file"]).read_text(encoding="utf-8"))
+        assert part.startswith(row["variant"])
+        assert f'[flywheel] speed = "{raw["flywheel"]["speed"]}"' in part
+        assert f'[flywheel] plus_minus = "{raw["flywheel"]["plus_minus"]}"' in part
+        assert "[turning_moment] torque = " in part and "Find: " in part
 
 
 def test_the_same_seed_gives_the_same_variants(law_class, tmp_path, capsys):

@@ -108,7 +108,18 @@ def _keys(base, c) -> tuple:
     """The answer key's keys: the base's [answers] keys, else every one with a value."""
     if base.answers:
         return tuple(dict.fromkeys(a.key for a in base.answers))
-    return tuple(k for k, (field, _, _) in CYCLE_UNITS.items() if getattr(c, field) is not None)
+    fw = base.flywheel
+    given = set()
+    if fw is not None:
+        given |= {"Cs"} if fw.coefficient is not None else set()
+        given |= {"rim_radius"} if fw.rim_speed is None and fw.stress is None else set()
+        given |= {"rim_width"} if fw.width is not None else set()
+        given |= {"rim_thickness"} if fw.thickness is not None else set()
+    return tuple(
+        k
+        for k, (field, _, _) in CYCLE_UNITS.items()
+        if getattr(c, field) is not None and k not in given
+    )
 
 
 def _checked(count, seed):
@@ -229,11 +240,31 @@ def cycle_sheet_markdown(vs) -> str:
     for v in vs.variants:
         out.append(f"## Variant {v.id}")
         out.append("")
+        out.append("Given (as the scene file states it):")
+        out.append("")
+        out += [f"- {line}" for line in _given(v.text)]
+        out.append("")
+        out.append("Read as:")
+        out.append("")
         out += [f"- {w}" for w in v.cycle.words]
         out.append("")
         out.append("Find: " + ", ".join(f"{CYCLE_UNITS[k][2]} ({k})" for k in vs.keys) + ".")
         out.append("")
     return "\n".join(out)
+
+
+def _given(text) -> list:
+    """The variant's tables as ``[table] key = value`` lines (its ``[variant]`` and title
+    left out): what the student is given, exactly."""
+    from .toml_text import _value
+
+    raw = toml_table(text)
+    return [
+        f"[{t}] {k} = {_value(x)}"
+        for t in ("turning_moment", "press", "flywheel")
+        if isinstance(raw.get(t), dict)
+        for k, x in raw[t].items()
+    ]
 
 
 def cycle_summary_text(vs) -> str:
