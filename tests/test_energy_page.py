@@ -306,3 +306,16 @@ def test_the_segments_page_loads_on_a_phone(browser, written):
     o.slide(20)
     assert o.fits()
     o.close()
+
+
+def test_an_answer_file_of_another_variant_is_refused(tmp_path, capsys):
+    """As ``check`` does: an answer file that names a variant is checked on that variant's
+    own page only."""
+    scene = tmp_path / "law.toml"
+    scene.write_text(LAW, encoding="utf-8")
+    ans = tmp_path / "ann.toml"
+    ans.write_text('variant = "03"\n[answers]\ndE_max = "583.1 J"\n', encoding="utf-8")
+    assert main(["page", str(scene), "-o", str(tmp_path / "p.html"), "--answers", str(ans)]) == 2
+    err = capsys.readouterr().err
+    assert "variant '03'" in err and err.count("\n") == 1
+    assert not (tmp_path / "p.html").exists()

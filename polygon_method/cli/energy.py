@@ -142,22 +142,6 @@ def _check(args, scene) -> int:
     return 0 if all(v.ok for v in verdicts) else 1
 
 
-def _answers(scene, file) -> tuple:
-    """``(tolerance, answers)``: a student's answer file's, or the scene's own."""
-    from ..scene.energy import answers_from_text
-
-    if file is None:
-        return scene.tolerance, scene.answers
-    try:
-        text = Path(file).read_text(encoding="utf-8-sig")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise SceneError(f"cannot read: {exc}", file=file) from None
-    try:
-        return answers_from_text(text, file)
-    except PolygonMethodError as exc:
-        raise exc.located(file)
-
-
 def _page(args, scene) -> int:
     """``page SCENE -o page.html [--answers FILE] [--frames N]``: the diagram's page."""
     from ..check.energy import cycle_verdicts
@@ -172,8 +156,12 @@ def _page(args, scene) -> int:
     n = check_frames(180 if args.frames is None else args.frames)
     answers_file = getattr(args, "answers", None)
     targets = check_outputs([(out, "-o")], protect=[scene.file, answers_file])
-    c = _solved(scene)
-    tolerance, answers = _answers(scene, answers_file)
+    from .energy_class import graded
+
+    c = _solved(scene)  # (an answer file naming another variant is refused, as check does)
+    _, _, tolerance, answers, _ = graded(
+        args, scene, c, [answers_file] if answers_file else [], None
+    )
     verdicts = None
     if answers:
         try:

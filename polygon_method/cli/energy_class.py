@@ -146,8 +146,10 @@ def graded(args, scene, c, files, stated) -> tuple:
             and _VariantBook._names(scene.variant.id) & _VariantBook._names(named)
         ):
             raise SceneError(
-                f"names variant '{printable(named)}': grade it against its own variant "
-                "with --variants DIR",
+                f"names variant '{printable(named)}', and this scene is "
+                + (f"variant '{printable(scene.variant.id)}'" if scene.variant else "not a variant")
+                + ": grade it against its own variant (check --variants DIR, or that "
+                "variant's own scene file)",
                 key="variant",
             )
     except PolygonMethodError as exc:
