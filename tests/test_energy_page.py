@@ -250,6 +250,16 @@ def test_the_laws_page_shows_the_closed_forms(browser, written, width, tmp_path)
         sign = -1 if i % 2 else 1  # T - 1000 = A sin(2t - phi): above its mean after a
         assert _agrees(r[2], sign * A, A), r
     assert [r[5] for r in o.table("#check")] == ["right", "right"]
+    # the crossings sit on the mean line (drawn dashed), the energy's at their energies
+    marks = o.page.evaluate(
+        "Array.from(document.querySelectorAll('#plot-torque circle.crossing')).map(c => "
+        "+c.getAttribute('cy'))"
+    )
+    mean = o.page.evaluate(
+        "document.querySelector('#plot-torque path[stroke-dasharray]').getAttribute('d')"
+    )
+    y_mean = float(mean.split(",")[1].split()[0])
+    assert len(marks) == 4 and all(abs(y - y_mean) < 0.02 for y in marks), (marks, y_mean)
     o.page.screenshot(path=str(tmp_path / f"law-{width}.png"), full_page=True)
     o.close()
 

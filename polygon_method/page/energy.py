@@ -159,7 +159,7 @@ def _curve_panels(scene, c, th):
         + f'<path class="series" d="{p.path(deg, rs_s)}" stroke="#1565c0" '
         'stroke-dasharray="6 4"/>' + f'<path class="series" d="{p.path(deg, tq_s)}" stroke="#111"/>'
     )
-    _, _, rs_x = at_angles(scene, c, [x.angle % c.cycle for x in c.crossings[:-1]])
+    _, rs_x, _ = at_angles(scene, c, [x.angle % c.cycle for x in c.crossings[:-1]])
     for x, r in zip(c.crossings[:-1], rs_x):
         body += _marker(p, math.degrees(x.angle % c.cycle), r, _crossing_tip(x))
     tq, rs, es = at_angles(scene, c, th)
