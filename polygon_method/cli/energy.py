@@ -1,7 +1,8 @@
 """The commands on a scene that states a turning-moment diagram (or a punching press) and no
-mechanism: ``solve`` (``--json``), ``steps``, ``check``, ``draw``, ``sweep`` (``--summary``,
-``--csv``, ``--plot``); the others have nothing to do there and say so in one line. Only a
-scene the mechanism's reader refuses comes here: the file is looked at for a
+mechanism: ``solve`` (``--json``), ``steps``, ``check`` (a class: :mod:`.energy_class`),
+``draw``, ``page``, ``variants``, ``sweep`` (``--summary``, ``--csv``, ``--plot``); the
+others have nothing to do there and say so in one line. Only a scene the mechanism's reader
+refuses comes here: the file is looked at for a
 ``[turning_moment]`` or ``[press]`` header, and where it has none the reader's refusal
 stands."""
 
@@ -255,6 +256,12 @@ def _csv(scene, out, n) -> None:
     print(f"{out}: {len(th)} crank angles", file=sys.stderr)
 
 
+def _variants(args, scene) -> int:
+    from .energy_class import make_variants
+
+    return make_variants(args, scene)
+
+
 _COMMANDS = {
     "solve": _solve,
     "steps": _steps,
@@ -262,11 +269,5 @@ _COMMANDS = {
     "draw": _draw,
     "sweep": _sweep,
     "page": _page,
-    "variants": lambda args, scene: _variants(args, scene),
+    "variants": _variants,
 }
-
-
-def _variants(args, scene) -> int:
-    from .energy_class import make_variants
-
-    return make_variants(args, scene)
