@@ -126,28 +126,6 @@ def _for_scene(plan, scene):
     return out
 
 
-def _with_sigma(step, sigma):
-    """``dataclasses.replace(step, sigma=sigma)``: a step record of plain fields copied
-    with its branch (without ``replace``'s walk over its fields and its call of the
-    constructor, a tenth of a compile of a four-bar); a kind with a ``__post_init__``
-    gets ``replace`` itself.
-
-    >>> from polygon_method.steps import Dyad
-    >>> st = Dyad(1, "C", "B", "BC", 0.066, "D", "CD", 0.056)
-    >>> _with_sigma(st, -1.0) == replace(st, sigma=-1.0), st.sigma
-    (True, 1.0)
-    """
-    cls = type(step)
-    if hasattr(cls, "__post_init__"):
-        return replace(step, sigma=sigma)
-    out = object.__new__(cls)
-    now, new = step.__dict__, out.__dict__
-    for name in cls.__dataclass_fields__:
-        new[name] = now[name]
-    new["sigma"] = sigma
-    return out
-
-
 def _forget(ident, ref, by_id=_BY_ID):
     """A scene has gone: drop its entry (unless its id already names a newer scene). The
     weak reference's callback, ``ident`` bound first (a partial bound by keyword costs
@@ -560,7 +538,7 @@ class _Compiler:
                 )
         else:
             sigma = self.pick(name, hint, plus, minus, step)
-        chosen = step if sigma == step.sigma else _with_sigma(step, sigma)
+        chosen = step if sigma == step.sigma else replace(step, sigma=sigma)
         return chosen, (plus if sigma > 0 else minus)
 
     def pick(self, name, hint, plus, minus, step, default=False, scale=None):
