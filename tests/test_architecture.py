@@ -629,7 +629,7 @@ LITERALS = {
     "steps/peg.py": 1,
     "steps/rack.py": 1,
     "steps/rounding.py": 1,
-    "text/forces.py": 1,
+    "text/force_polygons.py": 1,
 }
 TOLERANCE_LIKE = re.compile(r"\b1e-(6|7|8|9|10|11|12|13|14|15)\b")
 

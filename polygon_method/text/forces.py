@@ -12,11 +12,12 @@ from __future__ import annotations
 import math
 
 from ..solver.errorbound import SHOWN, USELESS
-from ..forces import FRAME, side_label
+from ..forces import FRAME
 from ..forces.bounds import NO_BOUND, force_bounds
 from ..forces.engine import efforts
 from ..common.numbers import fmt, quiet, sense_word
 from ..common.tolerances import FLOOR
+from .force_polygons import body_name as _body, polygon_items as _polygon_items
 from .force_words import acting, known_words, rest_blocks, symbol_words
 
 __all__ = ["forces_lines", "force_blocks", "bound_lines", "engine_lines"]
@@ -52,10 +53,6 @@ def _vec(v, scale):
 def _moment(c, scale, unit="N m"):
     c = quiet(c, scale)
     return f"{fmt(abs(c))} {unit} {sense_word(c)}".rstrip() if c else f"0 {unit}"
-
-
-def _body(name):
-    return "the frame" if name == FRAME else name
 
 
 def _wheel(body):
@@ -299,40 +296,6 @@ def bound_lines(sol, f) -> list:
     if any(not e < USELESS for _, e in shown):
         out.append(f"  ({NO_BOUND})")
     return out
-
-
-def _polygon_items(st, f, scale, F) -> list:
-    """A step's force polygons in words: each side at ``scale`` (cm), in the order drawn
-    (where the step draws several, each named by its body)."""
-    polys = st.polygons
-    items = []
-    for pg in polys:
-        items += _one_polygon(pg, f, scale, F, len(polys) > 1)
-    return items
-
-
-def _one_polygon(pg, f, scale, F, named) -> list:
-    tiny = 1e-9 * max(F, FLOOR)
-    sides = [
-        f"{side_label(sd, f.numbers, unicode=False)} {scale.cm(math.hypot(*sd.vector)):.2f}"
-        " cm" + (" (found)" if any(k == u for u, _ in pg.unknown) else "")
-        for k, sd in enumerate(pg.polygon)
-        if math.hypot(*sd.vector) > tiny
-    ]
-    whose = f" of {' and '.join(_body(b) for b in pg.bodies)}" if named else ""
-    items = [
-        f"force polygon{whose} at {scale.text}, from its pole, head to tail: "
-        + ", ".join(sides)
-        + "; it closes on the pole"
-    ]
-    across = [
-        f"{side_label(c, f.numbers, unicode=False)} {scale.cm(math.hypot(*c.vector)):.2f} cm"
-        for c, _, _ in pg.chords
-        if math.hypot(*c.vector) > tiny
-    ]
-    if across:
-        items.append("read across it (whole pin forces): " + ", ".join(across))
-    return items
 
 
 def engine_lines(sol) -> list:
