@@ -41,9 +41,9 @@ class _Masses:
                     "instant; the effort to start a motion against static friction is at "
                     "rest with [friction], the speed '0 rad/s ccw' naming its sense)"
                     if alpha
-                    else " (at rest, the weights held: give [masses] and [gravity]; loads "
-                    'alone: give an empty [masses], or any speed, e.g. "1 rad/s ccw": '
-                    "without masses nothing depends on it)"
+                    else " (at rest, the weights held: give [masses] and [gravity]; the "
+                    'loads alone: give any speed, e.g. "1 rad/s ccw", without masses nothing '
+                    "depends on it, and an empty [masses] for the pin forces too)"
                 ),
                 "input",
                 "speed",
