@@ -6,6 +6,15 @@ a shared machine only adds to it).
     python benchmarks/reading.py                 # the seed's worked file, stage by stage
     python benchmarks/reading.py FILE.toml       # another scene
     python benchmarks/reading.py --profile 30    # and cProfile's 30 costliest functions
+    python benchmarks/reading.py --count 200     # only N never-seen solves from the text,
+                                                 # for valgrind (below); with --loaded,
+                                                 # from the loaded scene (no reading)
+
+Counted in instructions, which the machine's other load does not move (the difference of
+200 runs and none, the hash seed fixed)::
+
+    PYTHONHASHSEED=0 valgrind --tool=cachegrind --cache-sim=no --cachegrind-out-file=/dev/null \
+        python benchmarks/reading.py --count 200     # and again with --count 0
 
 ``solve`` reads a scene as ``parse_scene(text, variants=False, answers=False)`` does: its
 ``[variants]`` and ``[answers]`` left unread (``check`` reads the answers, ``variants``
@@ -61,7 +70,7 @@ def stages(text):
         return solve(parse_scene(text, variants=False, answers=False))
 
     return [
-        ("the TOML (rtoml)", lambda: toml_table(text)),
+        ("the TOML (a compiled reader)", lambda: toml_table(text)),
         ("text -> checked Scene", lambda: parse_scene(text, variants=False, answers=False)),
         ("Scene -> plan (compiled)", compile_only),
         ("Scene -> one solved position", compile_and_solve),
@@ -74,9 +83,16 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("scene", nargs="?", default=str(SEED))
     parser.add_argument("--profile", type=int, default=0, metavar="N")
+    parser.add_argument("--count", type=int, default=None, metavar="N")
+    parser.add_argument("--loaded", action="store_true")
     args = parser.parse_args(argv)
     text = Path(args.scene).read_text()
     rows = stages(text)
+    if args.count is not None:  # for counting instructions: warm, then N whole runs
+        whole = rows[3 if args.loaded else -1][1]
+        for _ in range(20 + args.count):
+            whole()
+        return
     for name, fn in rows:
         fn()  # imports and first-call costs out of the way
     print(f"{Path(args.scene).name}: least of 300 batches of 10")

@@ -41,6 +41,9 @@ __version__ = "0.1.0"
 __all__ = [
     "load_scene",
     "parse_scene",
+    "load_cycle",
+    "parse_cycle",
+    "solve_cycle",
     "solve",
     "compile_plan",
     "sweep",
@@ -134,4 +137,12 @@ def __getattr__(name):  # lazy: sweeps need numpy, which `solve` does not
         from .motion.sweeps import sweep
 
         return sweep
+    if name in ("load_cycle", "parse_cycle"):  # a turning-moment diagram on its own
+        from .scene import energy
+
+        return getattr(energy, name)
+    if name == "solve_cycle":
+        from .forces.flywheel_cycle import solve_cycle
+
+        return solve_cycle
     raise AttributeError(name)

@@ -215,6 +215,16 @@ def test_sum_where_the_difference_applies():
     assert v.mistake == "sum_for_difference"
 
 
+def test_one_component_given_for_a_relative_acceleration():
+    """a_BA of the rod: omega_AB^2 AB alone (the closed form's omega) is the centripetal
+    component without the tangential one, and the checker says which is missing."""
+    sc = slider_scene()
+    w_ab = slider_closed_form(30, 300 * RPM)["omega_AB"]
+    v = one(sc, "a_BA", w_ab * w_ab * L, "m/s^2")
+    assert not v.ok and v.mistake == "component_only"
+    assert "only the centripetal component" in v.diagnosis and "a_BA" in v.diagnosis
+
+
 def fourbar_closed_form(theta2_deg=60.0, w2=-10.5, a=0.05, b=0.066, c=0.056, d=0.1):
     """Closed-form four-bar (C above AD): link angles and w3 (BC), w4 (DC)."""
     t2 = math.radians(theta2_deg)

@@ -25,6 +25,7 @@ import numpy as np
 import pytest
 from mpmath import mpf
 
+from newton_euler import NewtonEuler
 from reference import reference_solution
 from polygon_method.forces import FRAME, analyse
 from polygon_method.motion.solution import solve
@@ -127,51 +128,17 @@ def _matrix(sc, ref, pins, guides, torque, extra=()):
         {b for p in pins for b in p[1:] if b != FRAME}
         | {b for g in guides for b in g[1:3] if b != FRAME}
     )
-    row = {b: 3 * i for i, b in enumerate(bodies)}
-    cols = []
-    for p in pins:
-        cols += [("pin", p, 0), ("pin", p, 1)]
-    for g in guides:
-        cols += [("N", g[0]), ("M", g[0])] + ([("F", g[0])] if g[4] else [])
+    ne = NewtonEuler(bodies, mp=True)
+    for k, (point, on, by) in enumerate(pins):
+        ne.pin(f"pin{k}", pos(point), on, by)
+    for point, bl, gb, u, driven in guides:
+        ne.along(f"N {point}", pos(point), (-u[1], u[0]), bl, gb)
+        ne.couple(f"M {point}", bl, gb)
+        if driven:
+            ne.along(f"F {point}", pos(point), u, bl, gb)
     if torque is not None:
-        cols.append(("T",))
-    n = len(cols)
-    assert n == 3 * len(bodies)  # statically determinate
-    M, rhs = mpmath.zeros(n, n), mpmath.zeros(n, 1)
-
-    def force(body, col, F, at, sign=1):
-        if body == FRAME:
-            return
-        i = row[body]
-        M[i, col] += sign * F[0]
-        M[i + 1, col] += sign * F[1]
-        M[i + 2, col] += sign * (at[0] * F[1] - at[1] * F[0])
-
-    def known(body, F, at=(0, 0), c=0):
-        i = row[body]
-        rhs[i] -= F[0]
-        rhs[i + 1] -= F[1]
-        rhs[i + 2] -= at[0] * F[1] - at[1] * F[0] + c
-
-    for j, c in enumerate(cols):
-        if c[0] == "pin":
-            (point, on, by), k = c[1], c[2]
-            e = (mpf(1), mpf(0)) if k == 0 else (mpf(0), mpf(1))
-            force(on, j, e, pos(point))
-            force(by, j, e, pos(point), -1)
-        elif c[0] in ("N", "F", "M"):
-            g = next(g for g in guides if g[0] == c[1])
-            point, bl, gb, u = g[:4]
-            if c[0] == "M":
-                M[row[bl] + 2, j] += 1
-                if gb != FRAME:
-                    M[row[gb] + 2, j] -= 1
-                continue
-            e = (-u[1], u[0]) if c[0] == "N" else u
-            force(bl, j, e, pos(point))
-            force(gb, j, e, pos(point), -1)
-        else:
-            M[row[torque] + 2, j] += 1
+        ne.couple("T", torque)
+    known = ne.known
     g = sc.gravity
     for m in sc.masses:
         if m.block:
@@ -192,21 +159,24 @@ def _matrix(sc, ref, pins, guides, torque, extra=()):
     for ld in sc.loads:
         if ld.force is not None:
             body = f"block {ld.target}"  # a block's, else the moving link's at that point
-            if body not in row:
-                body = next(lk.key for lk in sc.links if ld.target in lk.points and lk.key in row)
+            if body not in bodies:
+                body = next(
+                    lk.key for lk in sc.links if ld.target in lk.points and lk.key in bodies
+                )
             known(body, _mp(ld.force), pos(ld.target))
         else:
             known(sc.link(ld.target).key, (0, 0), (0, 0), mpf(ld.torque))
     for it in extra:
         if it[0] != FRAME:
             known(*it) if len(it) == 3 else known(it[0], (0, 0), (0, 0), it[1])
-    x = mpmath.lu_solve(M, rhs)
-    out = {}
-    for j, c in enumerate(cols):
-        if c[0] == "pin":
-            out.setdefault(c[1], [0, 0])[c[2]] = x[j]
-        else:
-            out[c[:2] if len(c) > 1 else c] = x[j]
+    x = ne.solve()
+    out = {pin: list(ne.vector(x, f"pin{k}")) for k, pin in enumerate(pins)}
+    for point, *_, driven in guides:
+        out[("N", point)], out[("M", point)] = x[f"N {point}"], x[f"M {point}"]
+        if driven:
+            out[("F", point)] = x[f"F {point}"]
+    if torque is not None:
+        out[("T",)] = x["T"]
     return out
 
 

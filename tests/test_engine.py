@@ -257,24 +257,43 @@ class _Reference:
         )
 
     def integral(self, a, b):
-        pts = [a] + [x for x in self.breaks if a < x < b] + [b]
-        return mpmath.quad(self.T, pts)
+        """The integral of T from ``a`` to ``b``: each piece between the pressure's breaks
+        integrated once and kept (the mean and every running energy add them up)."""
+        if not hasattr(self, "_pieces"):
+            self._pieces = {}
+        total, x = mpmath.mpf(0), a
+        for brk in [y for y in self.breaks if a < y < b] + [b]:
+            if (x, brk) not in self._pieces:
+                self._pieces[x, brk] = mpmath.quad(self.T, [x, brk], method="gauss-legendre")
+            total += self._pieces[x, brk]
+            x = brk
+        return total
 
     def solve(self, known=()):
         """(mean, crossings, dE_max); ``known``: crossings known exactly (where the mean
-        line passes through a zero of the turning moment, at a dead centre)."""
+        line passes through a zero of the turning moment, at a dead centre). The crossings
+        are bracketed on a grid of 720 (two crossings closer than a 720th of the cycle
+        would be missed here: the counts would differ and the test fail)."""
         mean = self.integral(0, self.cycle) / self.cycle
         g = lambda t: self.T(t) - mean  # noqa: E731
-        grid = [self.cycle * k / 2000 for k in range(2001)]
+        grid = [self.cycle * k / 720 for k in range(721)]
+        gs = [g(t) for t in grid]
         cross = list(known)
-        for a, b in zip(grid, grid[1:]):
+        for a, b, ga, gb in zip(grid, grid[1:], gs, gs[1:]):
             if any(a <= c <= b for c in known):
                 continue
-            if (g(a) > 0) != (g(b) > 0):
+            if (ga > 0) != (gb > 0):
                 cross.append(mpmath.findroot(g, (a, b), solver="anderson"))
         # one cycle, [0, cycle): its end is its start
         cross = sorted(c for c in cross if c < self.cycle * (1 - mpmath.mpf(10) ** -20))
-        E = [self.integral(0, c) - mean * c for c in cross]
+        E, done, at = [], mpmath.mpf(0), mpmath.mpf(0)
+        for c in cross:  # from the last break before c: the pieces before it are kept
+            last = max([at] + [y for y in self.breaks if at < y < c])
+            done += self.integral(at, last) + mpmath.quad(
+                self.T, [last, c], method="gauss-legendre"
+            )
+            at = c
+            E.append(done - mean * c)
         return mean, cross, max(E) - min(E)
 
 

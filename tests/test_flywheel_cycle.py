@@ -246,3 +246,17 @@ def test_the_csv_curves_hold_the_law_and_its_integral():
         )
         _close(e, exact, 600)
     assert all(abs(r - 1000) <= 1e-9 * 1000 for r in rs)
+
+
+def test_a_crossing_at_the_cycles_start_where_only_its_end_rounds_to_nought():
+    """T = 5500 + 1600 sin 3theta crosses its mean at k x 60 deg, six times a turn (0 deg
+    among them: there the law's value rounds to the mean only at 360 deg); the energies
+    alternate between E and E - 2 x 1600 / 3 (int_0^{pi/3} 1600 sin 3t dt = 3200 / 3)."""
+    _, c = _solve('[turning_moment]\ntorque = "5500 + 1600 sin 3theta"\n')
+    got = c.crossings[:-1]
+    assert len(got) == 6
+    first = round(math.degrees(got[0].angle) / 60)
+    for i, x in enumerate(got):
+        _close(x.angle % (2 * math.pi), math.radians(60 * ((first + i) % 6)), 1.0)
+    assert sorted({round(abs(a), 6) for a in c.areas}) == [round(3200 / 3, 6)]
+    _close(c.dE_max, 3200 / 3)

@@ -17,6 +17,7 @@ import numpy as np
 import pytest
 from mpmath import mpf
 
+from newton_euler import NewtonEuler
 from reference import reference_solution
 from polygon_method.solver.errorbound import SHOWN
 from polygon_method.forces import FRAME
@@ -76,48 +77,31 @@ def _matrix_mp(sc, ref):
         dx, dy = qx - px, qy - py
         return (px + lam * dx - mu * dy, py + lam * dy + mu * dx)
 
-    M, rhs = mpmath.zeros(9, 9), mpmath.zeros(9, 1)
-    body = {"O2-A": 0, "A-B": 1, "B-O4": 2}
-
-    def force(b, col, where, sign=1):
-        i, (x, y) = 3 * body[b], where
-        M[i, col] += sign
-        M[i + 1, col + 1] += sign
-        M[i + 2, col] += -sign * y
-        M[i + 2, col + 1] += sign * x
-
-    def known(b, F, where=(0, 0), c=0):
-        i = 3 * body[b]
-        rhs[i] -= F[0]
-        rhs[i + 1] -= F[1]
-        rhs[i + 2] -= where[0] * F[1] - where[1] * F[0] + c
-
-    force("O2-A", 0, pos("O2"))
-    force("A-B", 2, pos("A"))
-    force("O2-A", 2, pos("A"), -1)
-    force("B-O4", 4, pos("B"))
-    force("A-B", 4, pos("B"), -1)
-    force("B-O4", 6, pos("O4"))
-    M[2, 8] = 1
+    ne = NewtonEuler(["O2-A", "A-B", "B-O4"], mp=True)
+    ne.pin("O2", pos("O2"), "O2-A", FRAME)
+    ne.pin("A", pos("A"), "A-B", "O2-A")
+    ne.pin("B", pos("B"), "B-O4", "A-B")
+    ne.pin("O4", pos("O4"), "B-O4", FRAME)
+    ne.couple("T", "O2-A")
     for m in sc.masses:
         lk = sc.link(m.body)
         lam, mu = mpf(m.lam), mpf(m.mu)
         G, a = at(pos, lk, lam, mu), at(acc, lk, lam, mu)
-        known(
+        ne.known(
             lk.key,
             (m.mass * (g.g * g.direction[0] - a[0]), m.mass * (g.g * g.direction[1] - a[1])),
             G,
             -mpf(m.inertia) * Al[lk.key],
         )
     for ld in sc.loads:
-        known("A-B", tuple(mpf(c) for c in ld.force), pos(ld.target))
-    x = mpmath.lu_solve(M, rhs)
+        ne.known("A-B", tuple(mpf(c) for c in ld.force), pos(ld.target))
+    x = ne.solve()
     return {
-        ("O2", "O2-A", FRAME): (x[0], x[1]),
-        ("A", "A-B", "O2-A"): (x[2], x[3]),
-        ("B", "B-O4", "A-B"): (x[4], x[5]),
-        ("O4", "B-O4", FRAME): (x[6], x[7]),
-    }, x[8]
+        ("O2", "O2-A", FRAME): ne.vector(x, "O2"),
+        ("A", "A-B", "O2-A"): ne.vector(x, "A"),
+        ("B", "B-O4", "A-B"): ne.vector(x, "B"),
+        ("O4", "B-O4", FRAME): ne.vector(x, "O4"),
+    }, x["T"]
 
 
 def test_the_force_bounds_hold_and_grow_towards_the_toggle():

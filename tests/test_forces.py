@@ -31,6 +31,7 @@ import numpy as np
 import pytest
 
 from engines import _precision, closed_forms, engine  # noqa: F401  (a fixture)
+from newton_euler import NewtonEuler
 from polygon_method.solver.compiler import compile_plan
 from polygon_method.common.errors import PolygonMethodError, SceneError
 from polygon_method.forces import FRAME, owners
@@ -819,23 +820,23 @@ def _fourbar_matrix(sol):
     by the crank, on the rocker at B by the coupler, on the rocker at O4 by the frame) and
     the driving torque; the loads at points of a link and couples on links, the weights
     and the inertia as the known side. Returns {name: value}."""
-    import numpy as np
-
     sc = sol.scene
-    (o2, a, b, o4) = ("O2", "A", "B", "O4")
     crank, coupler, rocker = "O2-A", "A-B", "B-O4"
     P = sol.P
     g = sc.gravity
-    rows, rhs = [], []
-    # unknowns: F_O2 (0,1), F_A (2,3), F_B (4,5), F_O4 (6,7), T (8)
-    known = {}
+    ne = NewtonEuler([crank, coupler, rocker])
+    ne.pin("F_O2", P["O2"], crank, FRAME)
+    ne.pin("F_A", P["A"], coupler, crank)
+    ne.pin("F_B", P["B"], rocker, coupler)
+    ne.pin("F_O4", P["O4"], rocker, FRAME)
+    ne.couple("T", crank)
     for m in sc.masses:
         G, v, acc, al, w = _kin(sol, m)
         F = (
             m.mass * g.g * g.direction[0] - m.mass * acc[0],
             m.mass * g.g * g.direction[1] - m.mass * acc[1],
         )
-        known[m.body] = [F[0], F[1], (G[0], G[1]), -m.inertia * al, []]
+        ne.known(m.body, F, G, -m.inertia * al)
     for ld in sc.loads:
         if ld.force is not None:
             body = next(
@@ -844,33 +845,11 @@ def _fourbar_matrix(sol):
                 if ld.target in lk.points
                 or (sc.carried(ld.target) and sc.carried(ld.target).link == lk.key)
             )
-            known[body][4].append((ld.force, P[ld.target]))
+            ne.known(body, ld.force, P[ld.target])
         else:
-            known[ld.target][3] += ld.torque
-    # each body: the unknown forces on it, (column of x, sign, point); moments about G
-    on = {
-        crank: [(0, 1, o2), (2, -1, a)],
-        coupler: [(2, 1, a), (4, -1, b)],
-        rocker: [(4, 1, b), (6, 1, o4)],
-    }
-    for body, forces in on.items():
-        fx, fy, G, c, loads = known[body]
-        for f, at in loads:
-            fx, fy = fx + f[0], fy + f[1]
-            c += (at[0] - G[0]) * f[1] - (at[1] - G[1]) * f[0]
-        rx, ry, rm = [0.0] * 9, [0.0] * 9, [0.0] * 9
-        for col, s, pt in forces:
-            rx[col] += s
-            ry[col + 1] += s
-            dx, dy = P[pt][0] - G[0], P[pt][1] - G[1]
-            rm[col] += -s * dy
-            rm[col + 1] += s * dx
-        if body == crank:
-            rm[8] = 1.0
-        rows += [rx, ry, rm]
-        rhs += [-fx, -fy, -c]
-    x = np.linalg.solve(np.array(rows), np.array(rhs))
-    return {"F_O2": x[0:2], "F_A": x[2:4], "F_B": x[4:6], "F_O4": x[6:8], "T": x[8]}
+            ne.known(ld.target, c=ld.torque)
+    x = ne.solve()
+    return {k: ne.vector(x, k) for k in ("F_O2", "F_A", "F_B", "F_O4")} | {"T": x["T"]}
 
 
 @pytest.mark.parametrize(
@@ -928,8 +907,6 @@ def _slotted_lever_matrix(sol):
     the driving torque; loads at P act on the lever, at Q on the block. Returns
     {name: value}; the guides' couples must come out zero (the blocks' loads pass
     through their pins)."""
-    import numpy as np
-
     sc = sol.scene
     P = sol.P
     g = sc.gravity
@@ -939,67 +916,34 @@ def _slotted_lever_matrix(sol):
     nA = (-uy / m, ux / m)
     qu = sc.slider("Q").u
     nQ = (-qu[1], qu[0])
-    bodies = ["O2-A", "block A", "O4-P", "P-Q", "block Q"]
-    row = {b: i for i, b in enumerate(bodies)}
-    M = np.zeros((15, 15))
-    rhs = np.zeros(15)
-
-    def force(body, col_x, col_y, at, sign=1.0, dirn=None):
-        i = 3 * row[body]
-        x, y = at
-        if dirn is None:  # a force with two unknown components
-            M[i, col_x] += sign
-            M[i + 1, col_y] += sign
-            M[i + 2, col_x] += -sign * y
-            M[i + 2, col_y] += sign * x
-        else:  # a force of unknown size along dirn
-            M[i, col_x] += sign * dirn[0]
-            M[i + 1, col_x] += sign * dirn[1]
-            M[i + 2, col_x] += sign * (x * dirn[1] - y * dirn[0])
-
-    def known(body, F, at=(0.0, 0.0), c=0.0):
-        i = 3 * row[body]
-        rhs[i] -= F[0]
-        rhs[i + 1] -= F[1]
-        rhs[i + 2] -= at[0] * F[1] - at[1] * F[0] + c
-
-    force("O2-A", 0, 1, P["O2"])  # F_O2 on the crank by the frame
-    force("block A", 2, 3, P["A"])  # F_A on block A by the crank
-    force("O2-A", 2, 3, P["A"], -1.0)
-    force("block A", 4, None, P["A"], 1.0, nA)  # N_A on block A by the lever
-    force("O4-P", 4, None, P["A"], -1.0, nA)
-    M[3 * row["block A"] + 2, 5] += 1.0  # C_A on block A by the lever
-    M[3 * row["O4-P"] + 2, 5] -= 1.0
-    force("O4-P", 6, 7, P["O4"])  # F_O4 on the lever by the frame
-    force("P-Q", 8, 9, P["P"])  # F_P on the rod by the lever
-    force("O4-P", 8, 9, P["P"], -1.0)
-    force("P-Q", 10, 11, P["Q"])  # F_Q on the rod by block Q
-    force("block Q", 10, 11, P["Q"], -1.0)
-    force("block Q", 12, None, P["Q"], 1.0, nQ)  # N_Q on block Q by the path
-    M[3 * row["block Q"] + 2, 13] += 1.0  # C_Q on block Q by the path
-    M[3 * row["O2-A"] + 2, 14] += 1.0  # T on the crank
+    ne = NewtonEuler(["O2-A", "block A", "O4-P", "P-Q", "block Q"])
+    ne.pin("F_O2", P["O2"], "O2-A", FRAME)  # on the crank by the frame
+    ne.pin("F_A", P["A"], "block A", "O2-A")  # on block A by the crank
+    ne.along("N_A", P["A"], nA, "block A", "O4-P")  # on block A by the lever
+    ne.couple("C_A", "block A", "O4-P")
+    ne.pin("F_O4", P["O4"], "O4-P", FRAME)  # on the lever by the frame
+    ne.pin("F_P", P["P"], "P-Q", "O4-P")  # on the rod by the lever
+    ne.pin("F_Q", P["Q"], "P-Q", "block Q")  # on the rod by block Q
+    ne.along("N_Q", P["Q"], nQ, "block Q", FRAME)  # on block Q by the path
+    ne.couple("C_Q", "block Q", FRAME)
+    ne.couple("T", "O2-A")  # on the crank
     for ms in sc.masses:
         G, v, a, al, w = _kin(sol, ms)
         W = (ms.mass * g.g * g.direction[0], ms.mass * g.g * g.direction[1])
-        known(_body(ms), (W[0] - ms.mass * a[0], W[1] - ms.mass * a[1]), G, -ms.inertia * al)
+        ne.known(_body(ms), (W[0] - ms.mass * a[0], W[1] - ms.mass * a[1]), G, -ms.inertia * al)
     for ld in sc.loads:
         body = {"P": "O4-P", "Q": "block Q"}.get(ld.target, ld.target)
         if ld.force is not None:
-            known(body, ld.force, P[ld.target])
+            ne.known(body, ld.force, P[ld.target])
         else:
-            known(body, (0.0, 0.0), c=ld.torque)
-    x = np.linalg.solve(M, rhs)
-    return {
-        "F_O2": x[0:2],
-        "F_A": x[2:4],
-        "N_A": x[4] * np.array(nA),
-        "C_A": x[5],
-        "F_O4": x[6:8],
-        "F_P": x[8:10],
-        "F_Q": x[10:12],
-        "N_Q": x[12] * np.array(nQ),
-        "C_Q": x[13],
-        "T": x[14],
+            ne.known(body, c=ld.torque)
+    x = ne.solve()
+    return {k: ne.vector(x, k) for k in ("F_O2", "F_A", "F_O4", "F_P", "F_Q")} | {
+        "N_A": (x["N_A"] * nA[0], x["N_A"] * nA[1]),
+        "C_A": x["C_A"],
+        "N_Q": (x["N_Q"] * nQ[0], x["N_Q"] * nQ[1]),
+        "C_Q": x["C_Q"],
+        "T": x["T"],
     }
 
 
@@ -1106,35 +1050,18 @@ def _five_bar_matrix(sol):
     """The matrix method on the five-bar A-B-C-D-E with two driven cranks AB and ED: the
     four links' Newton-Euler equations (moments about the origin) as one 12 x 12 system in
     the pin forces at A, B, C, D, E and the two torques; loads at P act on BC."""
-    import numpy as np
-
     sc, P, g = sol.scene, sol.P, sol.scene.gravity
-    body = {"AB": 0, "ED": 1, "BC": 2, "CD": 3}
-    M, rhs = np.zeros((12, 12)), np.zeros(12)
-
-    def force(b, col, at, sign=1.0):
-        i, (x, y) = 3 * body[b], at
-        M[i, col] += sign
-        M[i + 1, col + 1] += sign
-        M[i + 2, col] -= sign * y
-        M[i + 2, col + 1] += sign * x
-
-    def known(b, F, at=(0.0, 0.0), c=0.0):
-        i = 3 * body[b]
-        rhs[i] -= F[0]
-        rhs[i + 1] -= F[1]
-        rhs[i + 2] -= at[0] * F[1] - at[1] * F[0] + c
-
-    force("AB", 0, P["A"])  # on AB by the frame
-    force("BC", 2, P["B"]), force("AB", 2, P["B"], -1.0)  # on BC by AB
-    force("CD", 4, P["C"]), force("BC", 4, P["C"], -1.0)  # on CD by BC
-    force("CD", 6, P["D"]), force("ED", 6, P["D"], -1.0)  # on CD by ED
-    force("ED", 8, P["E"])  # on ED by the frame
-    M[2, 10] = 1.0  # T1 on AB
-    M[5, 11] = 1.0  # T2 on ED
+    ne = NewtonEuler(["AB", "ED", "BC", "CD"])
+    ne.pin("A", P["A"], "AB", FRAME)
+    ne.pin("B", P["B"], "BC", "AB")
+    ne.pin("C", P["C"], "CD", "BC")
+    ne.pin("D", P["D"], "CD", "ED")
+    ne.pin("E", P["E"], "ED", FRAME)
+    ne.couple("T1", "AB")
+    ne.couple("T2", "ED")
     for ms in sc.masses:
         G, v, a, al, w = _kin(sol, ms)
-        known(
+        ne.known(
             {"DE": "ED"}.get(ms.body, ms.body),
             (ms.mass * (g.g * g.direction[0] - a[0]), ms.mass * (g.g * g.direction[1] - a[1])),
             G,
@@ -1142,19 +1069,11 @@ def _five_bar_matrix(sol):
         )
     for ld in sc.loads:
         if ld.force is not None:
-            known("BC", ld.force, P[ld.target])
+            ne.known("BC", ld.force, P[ld.target])
         else:
-            known({"DE": "ED"}.get(ld.target, ld.target), (0.0, 0.0), c=ld.torque)
-    x = np.linalg.solve(M, rhs)
-    return {
-        "A": x[0:2],
-        "B": x[2:4],
-        "C": x[4:6],
-        "D": x[6:8],
-        "E": x[8:10],
-        "T1": x[10],
-        "T2": x[11],
-    }
+            ne.known({"DE": "ED"}.get(ld.target, ld.target), c=ld.torque)
+    x = ne.solve()
+    return {k: ne.vector(x, k) for k in "ABCDE"} | {"T1": x["T1"], "T2": x["T2"]}
 
 
 @pytest.mark.parametrize("angle", [60, 100, 250])

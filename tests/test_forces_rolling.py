@@ -28,6 +28,8 @@ import pytest
 
 from polygon_method.common.errors import PolygonMethodError, SceneError
 from polygon_method.forces import FRAME
+
+from newton_euler import NewtonEuler
 from polygon_method.motion.solution import solve
 from polygon_method.scene import load_scene, parse_scene, scene_from_table, scene_table
 
@@ -62,86 +64,44 @@ def _unit(v):
     return (v[0] / n, v[1] / n)
 
 
-class Matrix:
-    """The matrix method: unknowns added one by one, each with the bodies it acts on; then
-    every moving body's three equations (forces, moments about the origin) solved at once.
-
-    ``pin(name, point_xy, on, by)``: a force (2 unknowns) on ``on``, its opposite on ``by``;
-    ``along(name, point_xy, d, on, by)``: a force of unknown size along the unit ``d``;
-    ``couple(name, on, by)``: a couple of unknown size."""
+class Matrix(NewtonEuler):
+    """The matrix method (``newton_euler.NewtonEuler``) on a solved scene: its bodies, the
+    unknowns added one by one; then the inertia, the weights and the loads read from the
+    scene's masses and loads (``load_body``: point -> the body a load there acts on), and
+    every moving body's three equations solved at once at 30 digits. A block's moments are
+    taken about its own point (all its pins' forces pass through it)."""
 
     def __init__(self, sol, bodies, load_body):
-        self.sol, self.bodies = sol, list(bodies)
-        self.cols = []  # (name, [(body, fx, fy, m)])
-        self.load_body = load_body  # point -> the body a load there acts on
-
-    def pin(self, name, at, on, by):
-        x, y = at
-        self.cols.append((name + ".x", [(on, 1, 0, -y), (by, -1, 0, y)]))
-        self.cols.append((name + ".y", [(on, 0, 1, x), (by, 0, -1, -x)]))
-
-    def along(self, name, at, d, on, by):
-        x, y = at
-        m = x * d[1] - y * d[0]
-        self.cols.append((name, [(on, d[0], d[1], m), (by, -d[0], -d[1], -m)]))
+        about = {b: sol.P[b[6:]] for b in bodies if b.startswith("block ")}
+        super().__init__(bodies, about=about, mp=True)
+        self.sol, self.load_body = sol, load_body
 
     def couple(self, name, on, by=FRAME):
-        self.cols.append((name, [(on, 0, 0, 1), (by, 0, 0, -1)]))
+        """A couple of unknown size on ``on``, its opposite on ``by`` (the frame)."""
+        super().couple(name, on, by)
 
-    def known(self):
-        """body -> (Fx, Fy, M about the origin) of the inertia, weights and loads."""
+    def add_known(self):
+        """The inertia, the weights and the loads on the known side."""
         sol, sc = self.sol, self.sol.scene
-        out = {b: [0.0, 0.0, 0.0] for b in self.bodies}
-
-        def add(body, F, at):
-            e = out[body]
-            e[0] += F[0]
-            e[1] += F[1]
-            e[2] += at[0] * F[1] - at[1] * F[0]
-
         g = sc.gravity
         for m in sc.masses:
             G, a, al = _kin(sol, m)
             body = f"block {m.body}" if m.block else m.body
-            add(body, (-m.mass * a[0], -m.mass * a[1]), G)
-            out[body][2] += -m.inertia * al
+            F = (-m.mass * a[0], -m.mass * a[1])
             if g is not None:
-                add(body, (m.mass * g.g * g.direction[0], m.mass * g.g * g.direction[1]), G)
+                F = (F[0] + m.mass * g.g * g.direction[0], F[1] + m.mass * g.g * g.direction[1])
+            self.known(body, F, G, -m.inertia * al)
         for ld in sc.loads:
             if ld.force is not None:
-                add(self.load_body[ld.target], ld.force, sol.P[ld.target])
+                self.known(self.load_body[ld.target], ld.force, sol.P[ld.target])
             else:
-                out[ld.target][2] += ld.torque
-        return out
+                self.known(ld.target, c=ld.torque)
 
     def solve(self):
         """name -> value (30 digits, as floats)."""
         mpmath.mp.dps = 30
-        n = len(self.cols)
-        rows = {b: [[mpmath.mpf(0)] * n for _ in range(3)] for b in self.bodies}
-        # a block's moments about its own point (all its pins' forces pass through it)
-        ref = {
-            b: (self.sol.P[b[6:]] if b.startswith("block ") else (0.0, 0.0)) for b in self.bodies
-        }
-        for j, (_, acts) in enumerate(self.cols):
-            for body, fx, fy, m in acts:
-                if body in rows:
-                    rx, ry = ref[body]
-                    for k, v in enumerate((fx, fy, m - (rx * fy - ry * fx))):
-                        rows[body][k][j] += mpmath.mpf(v)
-        known = self.known()
-        A, b = [], []
-        for body in self.bodies:
-            rx, ry = ref[body]
-            kx, ky, km = known[body]
-            for k, v in enumerate((kx, ky, km - (rx * ky - ry * kx))):
-                if k == 2 and all(abs(e) < 1e-15 for e in rows[body][k]):
-                    continue  # a block whose forces all pass through its pin: no moment row
-                A.append(rows[body][k])
-                b.append(-mpmath.mpf(v))
-        assert len(A) == n, (len(A), n)
-        x = mpmath.lu_solve(mpmath.matrix(A), mpmath.matrix(b))
-        return {name: float(x[j]) for j, (name, _) in enumerate(self.cols)}
+        self.add_known()
+        return {k: float(v) for k, v in super().solve().items()}
 
 
 def _teeth(build, contacts):

@@ -326,7 +326,22 @@ def test_page_files_are_named_predictably():
     assert [p.name for p in page_files("d/sheet.png", 2)] == ["sheet-1.png", "sheet-2.png"]
 
 
+def _draw(argv):
+    """``main(["draw", ...])`` in this process: (exit code, stdout, stderr)."""
+    import contextlib
+    import io
+
+    from polygon_method.cli import main
+
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        code = main(["draw"] + [str(a) for a in argv])
+    return code, out.getvalue(), err.getvalue()
+
+
 def test_the_command_writes_a_file_a_page_and_says_which(tmp_path):
+    """The real entry point once (a process, as a user runs it), then ``main`` in this
+    process for the rest."""
     scene = ROOT / "worked_problems" / "fourbar_image_points.toml"
     run = [sys.executable, "-m", "polygon_method", "draw", str(scene)]
     env = {"PYTHONPATH": str(ROOT), "PATH": "/usr/bin:/bin"}
@@ -335,34 +350,25 @@ def test_the_command_writes_a_file_a_page_and_says_which(tmp_path):
     )
     assert out.returncode == 0, out.stderr
     files = sorted(p.name for p in tmp_path.iterdir())
-    sol = solve(load_scene(scene))
     _, panels, sizes = _panels(str(scene))
     pages = paginate(sizes, "A4")
     want = [p.name for p in page_files(tmp_path / "s.svg", len(pages))]
     assert files == sorted(want)
     for name in want:
         assert str(tmp_path / name) in out.stdout
-    # the same bytes twice
-    again = subprocess.run(
-        run + ["-o", str(tmp_path / "t.svg")], capture_output=True, text=True, env=env
-    )
-    assert again.returncode == 0
+    # the same bytes again
+    code, _, err = _draw([scene, "-o", tmp_path / "t.svg"])
+    assert code == 0, err
     for a, b in zip(
         page_files(tmp_path / "s.svg", len(pages)), page_files(tmp_path / "t.svg", len(pages))
     ):
         assert a.read_bytes() == b.read_bytes()
     # A3 holds it on one page, under the name given; a PDF is one file of as many pages
-    out = subprocess.run(
-        run + ["-o", str(tmp_path / "a3.pdf"), "--paper", "a3"],
-        capture_output=True,
-        text=True,
-        env=env,
-    )
-    assert out.returncode == 0 and "A3" in out.stdout
+    code, said, _ = _draw([scene, "-o", tmp_path / "a3.pdf", "--paper", "a3"])
+    assert code == 0 and "A3" in said
     assert len(_pdf_pages((tmp_path / "a3.pdf").read_bytes())) == 1
-    out = subprocess.run(
-        run + ["-o", str(tmp_path / "a4.pdf")], capture_output=True, text=True, env=env
-    )
+    code, _, _ = _draw([scene, "-o", tmp_path / "a4.pdf"])
+    assert code == 0
     assert len(_pdf_pages((tmp_path / "a4.pdf").read_bytes())) == len(pages)
     # a paper it does not know, and a scale that makes a diagram larger than the paper:
     # one line each, exit 2, nothing written
@@ -370,13 +376,10 @@ def test_the_command_writes_a_file_a_page_and_says_which(tmp_path):
         (["--paper", "B5"], "unknown paper 'B5'"),
         (["--scale", "1 cm = 0.01 m/s"], "more than A4 holds"),
     ):
-        bad = subprocess.run(
-            run + ["-o", str(tmp_path / "bad.svg")] + extra, capture_output=True, text=True, env=env
-        )
-        assert bad.returncode == 2 and words in bad.stderr, bad.stderr
-        assert len(bad.stderr.strip().splitlines()) == 1
+        code, _, err = _draw([scene, "-o", tmp_path / "bad.svg"] + extra)
+        assert code == 2 and words in err, err
+        assert len(err.strip().splitlines()) == 1
         assert not list(tmp_path.glob("bad*"))
-    assert sol is not None
 
 
 def test_every_page_of_render_pages_states_its_paper():

@@ -130,7 +130,7 @@ def _outcome(fn, *args):
     return (q.value, q.sense)
 
 
-@settings(max_examples=1500, deadline=None)
+@settings(max_examples=600, deadline=None)
 @given(
     NUMBERS,
     UNITS_WRITTEN,

@@ -307,13 +307,24 @@ def test_an_empty_masses_table_asks_for_the_static_force_analysis():
     assert all(v.ok for v in check_answers(solve(parse_scene(text))))
 
 
-def test_a_crank_at_rest_says_how_to_state_a_statics_problem_with_weights():
+def test_a_crank_at_rest_holds_its_weights_and_loads():
+    """A crank at rest (speed 0) with [masses] and [gravity]: the weights and the loads
+    alone, no inertia. By virtual work with the closed-form positions: T = 2000 dx_B/dtheta
+    + m g (r/2) cos theta (x_B = r cos theta + sqrt(l^2 - r^2 sin^2 theta)); without
+    [gravity] or [masses] a zero speed is refused, saying how to state it."""
     from polygon_method import parse_scene
     from polygon_method.common.errors import SceneError
 
-    text = STATIC_TEXT.replace('"1 rad/s ccw"', '"0 rad/s"') + "[masses]\nAB = { mass = 2 }\n"
-    with pytest.raises(SceneError, match=r"empty \[masses\].*\[loads\] at the centres of mass"):
+    text = STATIC_TEXT.replace('"1 rad/s ccw"', '"0 rad/s"')
+    with pytest.raises(SceneError, match=r"give \[masses\] and \[gravity\]"):
         parse_scene(text)
+    sol = solve(parse_scene(text + "[masses]\nOA = { mass = 2 }\n[gravity]\n"))
+    th, r, l = mpmath.pi / 4, mpf("0.15"), mpf("0.6")
+    dx = -r * mpmath.sin(th) - r * r * mpmath.sin(th) * mpmath.cos(th) / mpmath.sqrt(
+        l * l - (r * mpmath.sin(th)) ** 2
+    )
+    T = 2000 * dx + 2 * mpf("9.81") * r / 2 * mpmath.cos(th)
+    assert abs(sol.forces.input_torque - float(T)) <= 1e-9 * abs(float(T))
 
 
 def test_the_turning_moment_is_an_answer_key_and_its_slip_is_named():

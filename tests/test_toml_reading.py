@@ -7,10 +7,17 @@
 * ``LineIndex`` (every key's line in one pass) finds the line a regular expression per key
   finds (the reader's earlier way, kept here as the reference), for every table and key of
   every file, and for keys that are not there.
+* The same for texts changed a character at a time (a character of TOML's syntax put in
+  or in place of another, at random places drawn from a fixed seed), read by each compiled
+  reader (``toml_rs`` for a text of few brackets, ``rtoml`` for one of many), and a text
+  nested deeper than ``toml_rs``'s stack holds is refused in words, never a crash.
 * A command that makes no variants does not read ``[variants]``.
 """
 
+import random
 import re
+import subprocess
+import sys
 import tomllib
 from pathlib import Path
 
@@ -67,6 +74,69 @@ def test_the_fast_reader_reads_what_tomllib_reads(name, text, monkeypatch):
         assert repr(toml_table(t)) == repr(want)  # (nan is not nan: compared as text)
         compared += 1
     assert compared >= 1
+
+
+#: what a mutation puts in: TOML's syntax, and what tomllib refuses and a reader might not
+_SYNTAX = list("[]{},.=\"'#\\\n\r\t -+_:") + ["\ufeff", "\\e", "\\x41", "e", "x", "0", "T", "nan"]
+
+
+def _mutations(text, rng, count):
+    for _ in range(count):
+        i = rng.randrange(len(text) + 1)
+        cut = rng.choice((0, 0, 1))  # put in, or in place of the character there
+        yield text[:i] + rng.choice(_SYNTAX) + text[i + cut :]
+
+
+@pytest.mark.parametrize("route", ["toml_rs", "rtoml"])
+def test_a_changed_character_is_read_as_tomllib_reads_it(route, monkeypatch):
+    if route == "rtoml":  # every text one of many brackets: the other compiled reader
+        monkeypatch.setattr(source, "NESTING_SAFE", -1)
+    rng = random.Random(20261126)
+    compared = refused = beyond = 0
+    for name, text in TEXTS[::3]:
+        for t in _mutations(text, rng, 40):
+            try:
+                want = tomllib.loads(t)
+            except (tomllib.TOMLDecodeError, RecursionError):
+                try:
+                    source._fast_toml(t)
+                except Exception:  # noqa: BLE001 - refused by the compiled reader too
+                    pass
+                else:  # read: only rtoml, and only what TOML 1.1 added (its docstring)
+                    assert route == "rtoml", t
+                    beyond += 1
+                    continue
+                with pytest.raises(SceneError) as fast:
+                    parse_scene(t, file="x.toml")
+                with monkeypatch.context() as m:
+                    m.setattr(source, "_fast_toml", None)
+                    with pytest.raises(SceneError) as slow:
+                        parse_scene(t, file="x.toml")
+                assert str(fast.value) == str(slow.value), t
+                refused += 1
+                continue
+            assert repr(toml_table(t)) == repr(want), t
+            compared += 1
+    assert compared > 100 and refused > 100 and beyond < refused / 10
+
+
+def test_a_text_nested_past_the_compiled_readers_stack_is_refused_in_words():
+    code = (
+        "from polygon_method.scene import parse_scene\n"
+        "from polygon_method.common.errors import SceneError\n"
+        "for depth in (400, 20000):\n"
+        "    try:\n"
+        "        parse_scene('title = ' + '[' * depth + ']' * depth)\n"
+        "    except SceneError as exc:\n"
+        "        print(exc)\n"
+    )
+    out = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, timeout=120
+    )
+    assert out.returncode == 0, out.stderr[-500:]
+    lines = out.stdout.strip().splitlines()
+    assert len(lines) == 2 and "title must be a string" in lines[0], lines
+    assert "nested too deeply" in lines[1], lines
 
 
 _HEADER = re.compile(r"^\s*\[\s*([A-Za-z0-9_.\-\"]+)\s*\]\s*(#.*)?$")

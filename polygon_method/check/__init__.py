@@ -145,7 +145,12 @@ def _exact(sol: Solution, ans, clean: list) -> float:
     coupler's omega; a load that takes no power, two omegas alike: from the tidied solution,
     made once into ``clean``)."""
     kind = ans.kind
-    exact = sol.value(kind, ans.names)
+    try:
+        exact = sol.value(kind, ans.names)
+    except SceneError as exc:  # (a key the mechanism has no value for: name it, and its line)
+        if exc.key is not None:
+            raise
+        raise SceneError(exc.message, key=f"[answers] {ans.key}", line=ans.line) from None
     if exact is None or not math.isfinite(exact):
         raise SceneError(
             f"{ans.key}: no value to check against", key=f"[answers] {ans.key}", line=ans.line

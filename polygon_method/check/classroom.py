@@ -53,6 +53,13 @@ MISTAKE_WORDS = {
     "one_link_only": "one link's omega only at a pin",
     "one_pair": "one pair of bodies only at a pin",
     "force_times_speed": "F x v without the angle between them",
+    # the flywheel chapter's (a turning-moment diagram, a press, an engine's cycle)
+    "largest_area": "the largest single area taken for dE_max",
+    "whole_energy": "a press's whole energy of a hole taken for dE_max",
+    "rpm_not_rad_per_s": "the mean speed in rpm where rad/s belongs",
+    "cs_half_range": "Cs taken as the range either side of the mean",
+    "cs_doubled": "Cs taken as twice the whole range",
+    "one_turn_cycle": "a four-stroke cycle's work divided by one turn",
     "coriolis_factor": "the Coriolis component without its factor 2",
     "coriolis_omitted": "the Coriolis component of a moving slot left out",
     "angle_in_radians": "the crank angle taken in radians",

@@ -10,7 +10,7 @@ from ..common.numbers import textbook as _g
 from ..steps import under_label
 from .alternatives import _Candidate
 
-__all__ = ["other_quantities", "under_block"]
+__all__ = ["other_quantities", "under_block", "component_only"]
 
 #: an answer's kind -> the family of kinds it may be confused with (one unit)
 _FAMILY = {
@@ -156,21 +156,25 @@ def under_block(d, ans) -> list:
     if K is None:
         return out
     r = math.dist(sol.P[K], sol.P[X])
-    w, al = sol.W[g.key], sol.Al[g.key]
-    out.append(
+    out += component_only(sol.W[g.key], sol.Al[g.key], r, img, f"{K}{X}")
+    return out
+
+
+def component_only(w, al, r, of, r_words="r") -> list:
+    """The two slips of one component for the whole relative acceleration ``of`` (a point
+    of a link turning at ``w``, ``al``, at ``r`` from its other point, named ``r_words``):
+    the centripetal component alone (omega^2 r) and the tangential one alone (alpha r)."""
+    return [
         _Candidate(
             w * w * r,
             "component_only",
-            f"only the centripetal component (omega^2 {K}{X} = {_g(w * w * r)} "
-            f"m/s^2) of {img}; add the tangential one",
-        )
-    )
-    out.append(
+            f"only the centripetal component (omega^2 {r_words} = {_g(w * w * r)} "
+            f"m/s^2) of {of}; add the tangential one",
+        ),
         _Candidate(
             abs(al) * r,
             "component_only",
-            f"only the tangential component (alpha {K}{X} = {_g(abs(al) * r)} "
-            f"m/s^2) of {img}; add the centripetal one",
-        )
-    )
-    return out
+            f"only the tangential component (alpha {r_words} = {_g(abs(al) * r)} "
+            f"m/s^2) of {of}; add the centripetal one",
+        ),
+    ]

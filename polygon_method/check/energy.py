@@ -15,27 +15,14 @@ from __future__ import annotations
 import math
 
 from ..common.errors import SceneError
+from ..forces.flywheel_cycle import ANSWER_FIELDS
 from .verdicts import ROUNDING, Verdict, cs_slips
 from ..common.tolerances import ROUNDING as ARITHMETIC, SAME
 
 __all__ = ["cycle_verdicts", "CYCLE_UNITS"]
 
 #: answer key -> (the record's field, SI unit, what it is)
-CYCLE_UNITS = {
-    "T_mean": ("T_mean", "N m", "the mean torque"),
-    "power": ("power", "W", "the power"),
-    "dE_max": ("dE_max", "J", "the maximum fluctuation of energy"),
-    "E_stroke": ("E_stroke", "J", "the energy of one hole"),
-    "I_flywheel": ("inertia", "kg m^2", "the flywheel's moment of inertia"),
-    "m_flywheel": ("mass", "kg", "the flywheel's mass"),
-    "Cs": ("Cs", "", "the coefficient of fluctuation of speed"),
-    "speed_max": ("speed_max", "rad/s", "the greatest speed"),
-    "speed_min": ("speed_min", "rad/s", "the least speed"),
-    "alpha_at": ("alpha_at", "rad/s^2", "the angular acceleration"),
-    "rim_radius": ("rim_radius", "m", "the rim's mean radius"),
-    "rim_width": ("rim_width", "m", "the rim's width"),
-    "rim_thickness": ("rim_thickness", "m", "the rim's thickness"),
-}
+CYCLE_UNITS = ANSWER_FIELDS
 _NEEDS = {
     "T_mean": "a turning moment given as a law or segments (areas give no mean)",
     "power": "the mean speed ([flywheel] speed) and a law or segments, or a press",

@@ -21,33 +21,32 @@ def force_slips(d, kind, names, signed):
     the power balance without inertia, the piston's inertia left out, the weights added
     where the problem leaves them out, the inertia couple left out, the offset h on the
     wrong side of G (the couple's sense reversed); a tooth load given as its part along
-    the tangent (the pressure angle left out)."""
+    the tangent (the pressure angle left out); a driver's effort with the inertia left out
+    (as at rest), a driver's force along its guide given as the guide's normal force or
+    as the whole pin force at its block."""
     sol, sc = d.sol, d.sc
     out = []
 
     def pick(f):
-        return (
-            f.input_torque
-            if kind == "torque"
-            else force_value(f, kind, rolling_body(sc, names) if kind == "Fc" else names[0])
-        )
+        if kind in ("torque", "force"):
+            return f.input_torque
+        if kind in ("torque2", "force2"):
+            return f.second_torque
+        return force_value(f, kind, rolling_body(sc, names) if kind == "Fc" else names[0])
 
     def again(words, code, **changes):
+        """The slip's candidate: the scene solved again with ``changes``, or None."""
         try:
             value = pick(analyse(solve(replace(sc, **changes))))
         except PolygonMethodError:
-            return
-        out.append(_Candidate(d.cmp(value, signed), code, words))
+            return None
+        return _Candidate(d.cmp(value, signed), code, words)
 
-    if kind == "torque" and sol.input_torque is not None:
-        out.append(
-            _Candidate(
-                d.cmp(sol.input_torque, signed),
-                "no_inertia",
-                "the power balance without the inertia forces (T = -sum F . v "
-                "/ omega leaves out -m a_G . v_G and -I alpha omega)",
-            )
-        )
+    def redo(words, code, **changes):
+        out.extend(c for c in (again(words, code, **changes),) if c is not None)
+
+    if kind in ("torque", "force", "torque2", "force2"):
+        out += _effort_slips(d, kind, signed, again)
     if kind == "Fc":  # the tooth load's part along the tangent given for the whole
         body = rolling_body(sc, names)
         c = next((c for c in sol.forces.contacts if c.wheel == body), None)
@@ -63,13 +62,13 @@ def force_slips(d, kind, names, signed):
             )
     blocks = [m.body for m in sc.masses if m.block]
     if blocks:
-        again(
+        redo(
             f"the inertia of the reciprocating parts at {', '.join(blocks)} left out",
             "piston_inertia_left_out",
             masses=tuple(m for m in sc.masses if not m.block),
         )
     if sc.gravity is None and sc.masses:
-        again(
+        redo(
             "the weights added: the problem leaves gravity out (a horizontal engine's "
             "weights are neglected)",
             "weight_added",
@@ -77,12 +76,12 @@ def force_slips(d, kind, names, signed):
         )
     turning = [m for m in sc.masses if m.inertia and sol.Al.get(m.body, 0.0)]
     if turning:
-        again(
+        redo(
             "the inertia couple -I alpha left out (the inertia force taken through G)",
             "inertia_couple_left_out",
             masses=tuple(replace(m, inertia=0.0) for m in sc.masses),
         )
-        again(
+        redo(
             "the inertia force's offset h = I alpha / (m a_G) on the wrong side of G",
             "offset_wrong_side",
             masses=tuple(replace(m, inertia=-m.inertia) for m in sc.masses),
@@ -90,5 +89,73 @@ def force_slips(d, kind, names, signed):
     two = rod_slip.two_masses(sc, turning)  # the equivalent system, no correction couple
     if two:
         masses = tuple(replace(m, inertia=two.get(m.body, m.inertia)) for m in sc.masses)
-        again(rod_slip.WORDS, "correction_couple_left_out", masses=masses)
+        redo(rod_slip.WORDS, "correction_couple_left_out", masses=masses)
+    return out
+
+
+def _effort_slips(d, kind, signed, again) -> list:
+    """A driver's effort: the power balance without inertia (for the first input), the
+    inertia left out with the weights kept (as at rest: ``again`` solves the scene again
+    so; where the problem has weights, or for a second input, which no power balance
+    gives), and a force along a guide given as another force at its block."""
+    sol, sc, out = d.sol, d.sc, []
+    if kind in ("torque", "force") and sol.input_torque is not None:
+        out.append(
+            _Candidate(
+                d.cmp(sol.input_torque, signed),
+                "no_inertia",
+                "the power balance without the inertia forces (T = -sum F . v "
+                "/ omega leaves out -m a_G . v_G and -I alpha omega)"
+                if kind == "torque"
+                else "the power balance of the loads alone (F = -sum P / v_s leaves out "
+                "the weights' m g . v_G, -m a_G . v_G and -I alpha omega)",
+            )
+        )
+    if sc.masses and not sc.at_rest and (sc.gravity is not None or kind.endswith("2")):
+        slip = again(
+            "the inertia left out: the driver's effort of the weights and loads alone, as "
+            "if the mechanism were at rest (D'Alembert's -m a_G and -I alpha belong among "
+            "the forces it holds)",
+            "inertia_left_out",
+            at_rest=True,
+        )
+        out += [slip] if slip is not None else []
+    if kind in ("force", "force2"):
+        out += _driver_slips(d, kind, signed)
+    return out
+
+
+def _driver_slips(d, kind, signed) -> list:
+    """A driver's force along its guide (a driving block's, a collar's): the guide's
+    normal force on its block given for it, and the whole force on the block from the
+    link pinned to it (its part along the guide is the driver's)."""
+    sol, out = d.sol, []
+    f = sol.forces
+    if f is None:
+        return out
+    body = f.crank if kind == "force" else f.second_crank
+    if not body or not body.startswith("block "):
+        return out
+    X = body.removeprefix("block ")
+    g = next((g for g in f.guides if g.point == X), None)
+    if g is not None:
+        out.append(
+            _Candidate(
+                d.cmp(abs(g.normal), signed),
+                "normal_for_driver",
+                f"the guide's normal force on the block at {X} (N_{X}, across the guide) "
+                "given for the driver's force along it",
+            )
+        )
+    for p in f.pins:
+        if p.point == X and body in (p.on, p.by):
+            out.append(
+                _Candidate(
+                    d.cmp(p.magnitude, signed),
+                    "pin_force_for_driver",
+                    f"the whole force at the pin {X} (F_{X}, of {p.by if p.on == body else p.on} "
+                    "on the block) given for the driver's force: only its part along the "
+                    "guide is the driver's, with the block's own loads and inertia",
+                )
+            )
     return out

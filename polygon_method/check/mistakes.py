@@ -15,6 +15,7 @@ from . import confusions, force_slips, power, slips
 from .alternatives import _DECIMAL, _FACTOR_MISTAKES, _Alternatives, _Candidate, _speed_mistakes
 from .slips import _SLIP_RANK, _slip
 from .slots import coriolis_left_out
+from .verdicts import FORCE_KINDS
 
 
 _OPPOSITE = {"above": "below", "below": "above", "left": "right", "right": "left"}
@@ -113,7 +114,7 @@ class _Diagnoser:
                     out.append(_Candidate(self.cmp(alt.value(kind, names), signed), code, words))
         elif not sc.has_forces:
             out += self.torque(signed)
-        if kind in ("F", "N", "Fc", "Fi", "Ci", "h") or (kind == "torque" and sc.has_forces):
+        if kind in FORCE_KINDS or (kind == "torque" and sc.has_forces):
             out += self.force_slips(kind, names, signed)
         for factor, code, words in _FACTOR_MISTAKES.get(
             _AS_KIND.get(kind, kind), ()
@@ -132,6 +133,15 @@ class _Diagnoser:
         """The sense reversed (a direction along the guide, or cw for ccw)."""
         if kind in ("vs", "as"):
             return [_Candidate(-correct, "sense", "the direction along the guide is reversed")]
+        if kind in ("force", "force2"):
+            return [
+                _Candidate(
+                    -correct,
+                    "sense",
+                    "the driver's force's direction along its guide is reversed (+ along the "
+                    "guide's direction; a collar's + outward, from the rod's pivot)",
+                )
+            ]
         word = "cw" if correct > 0 else "ccw"
         return [
             _Candidate(
@@ -294,23 +304,11 @@ class _Diagnoser:
         return out
 
     def components(self, X, Y, lk, name):
+        """The slips of one component for the relative acceleration ``name`` of X about Y
+        on link ``lk``."""
         sol = self.sol
         r = math.dist(sol.P[X], sol.P[Y])
-        w, al = sol.W[lk.key], sol.Al[lk.key]
-        return [
-            _Candidate(
-                w * w * r,
-                "component_only",
-                f"only the centripetal component (omega^2 r = {_g(w * w * r)} "
-                f"m/s^2) of {name}; add the tangential one",
-            ),
-            _Candidate(
-                abs(al) * r,
-                "component_only",
-                f"only the tangential component (alpha r = {_g(abs(al) * r)} "
-                f"m/s^2) of {name}; add the centripetal one",
-            ),
-        ]
+        return confusions.component_only(sol.W[lk.key], sol.Al[lk.key], r, name)
 
     def per_length(self, ans):
         sol = self.sol

@@ -11,7 +11,7 @@ from ..polygons.scales import DRAWING_PRECISION_CM, diagram_scales
 from .handdrawn import BUILT, HOW, HandDrawing
 from ..scene import GuideSlider
 from ..motion.solution import Solution
-from .verdicts import ROUNDING, UNIT_OF
+from .verdicts import FORCE_KINDS, ROUNDING, UNIT_OF
 
 _SIN30 = 0.5
 
@@ -148,7 +148,7 @@ class _Tolerances:
         sol, d = self.sol, self.d
         sv, sa = self.sv.per_cm, self.sa.per_cm
         vt, at = f"velocity diagram at {self.sv.text}", f"acceleration diagram at {self.sa.text}"
-        if kind in ("F", "N", "Fc", "Fi", "Ci", "h") or (kind == "torque" and sol.scene.has_forces):
+        if kind in FORCE_KINDS or (kind == "torque" and sol.scene.has_forces):
             return 0.0, "computed (the force analysis)"
         if kind in ("v", "a"):
             if len(names) == 1 and names[0] == self.input_point and sol.scene.input.given is None:

@@ -7,34 +7,19 @@ import textwrap
 from dataclasses import dataclass
 
 from ..common.numbers import textbook as _g
-from ..common.units import UNITS, implausible
+from ..common.units import ANSWER_UNITS, UNITS, implausible
 
 #: relative error of a value rounded to three significant figures (the floor of every
 #: tolerance)
 ROUNDING = 0.005
 _SIN30 = 0.5
 
-UNIT_OF = {
-    "v": "m/s",
-    "a": "m/s^2",
-    "omega": "rad/s",
-    "alpha": "rad/s^2",
-    "vs": "m/s",
-    "as": "m/s^2",
-    "ac": "m/s^2",
-    "rub": "m/s",
-    "torque": "N m",
-    "vI": "m/s",
-    "aI": "m/s^2",
-    "F": "N",
-    "N": "N",
-    "Fc": "N",
-    "vu": "m/s",
-    "au": "m/s^2",
-    "Fi": "N",
-    "Ci": "N m",
-    "h": "m",
-}
+#: answer kind -> the SI unit its value is written in
+UNIT_OF = ANSWER_UNITS
+
+#: the answer kinds the force analysis gives (computed, not drawn: three significant
+#: figures, or the answers' tolerance; the force chapter's slips)
+FORCE_KINDS = ("F", "N", "Fc", "Fi", "Ci", "h", "force", "force2", "torque2")
 
 
 #: answer kind -> the kind of quantity whose largest value sets what is rounding noise
@@ -123,6 +108,10 @@ _KIND_OF_UNIT = {
     "N m": "torque",
     "N": "force",
     "m": "length",
+    "W": "power",
+    "J": "energy",
+    "kg m^2": "moment_of_inertia",
+    "kg": "mass",
 }
 
 

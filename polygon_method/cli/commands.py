@@ -97,19 +97,7 @@ def _cmd_draw(args) -> int:
     out = Path(args.output)
     fmt = out.suffix.lower().lstrip(".")
     if getattr(args, "forces", False):  # the same as --diagram forces
-        if args.diagram not in (None, "all", "forces"):
-            raise PolygonMethodError(
-                f"--forces draws the forces sheet: leave out --diagram {args.diagram}",
-                key="--forces",
-            )
-        if getattr(args, "animate", False):
-            raise PolygonMethodError(
-                "--forces draws a sheet on paper, not an animation (the "
-                "page shows the inertia forces moving): leave out "
-                "--animate",
-                key="--forces",
-            )
-        args.diagram = "forces"
+        _forces_flag(args)
     if getattr(args, "animate", False):
         if fmt not in ("gif", "html", "svg"):
             raise PolygonMethodError(
@@ -138,21 +126,7 @@ def _cmd_draw(args) -> int:
         raise PolygonMethodError(
             f"cannot draw to {out}: the file name must end in .svg, .png or .pdf", key="-o"
         )
-    scales = parse_scales(getattr(args, "scale", None))
-    drawn = {
-        "all": ("length", "velocity", "acceleration"),
-        "centres": ("length",),
-        "configuration": ("length",),
-        "forces": ("length", "force"),
-    }.get(args.diagram or "all", (args.diagram,))
-    for kind, s in scales.items():  # never silently ignored
-        if kind not in drawn:
-            raise PolygonMethodError(
-                f"{s.text} is {'an' if kind[0] == 'a' else 'a'} {kind} "
-                f"scale, and --diagram {args.diagram} draws no {kind} "
-                "diagram: leave it out",
-                key="--scale",
-            )
+    scales = _drawn_scales(args, parse_scales(getattr(args, "scale", None)))
     paper = paper_name(getattr(args, "paper", None) or "A4")
     targets = check_outputs([(out, "-o")], protect=[args.scene])
     sol = solve(load_scene(args.scene, variants=False, answers=False))
@@ -178,9 +152,54 @@ def _cmd_draw(args) -> int:
         targets = check_outputs([(f, "-o") for f in files], protect=[args.scene])
     write_outputs(targets, [(d, fmt != "svg") for d in datas])
     scales_text = "; ".join(f"{name} {display_unit(s.text)}" for name, s in used.items())
+    _print_drawn(out, fmt, files, pages, paper, scales_text)
+    return 0
+
+
+def _forces_flag(args) -> None:
+    """``--forces``: the same as ``--diagram forces``, refused beside another diagram or
+    ``--animate``."""
+    if args.diagram not in (None, "all", "forces"):
+        raise PolygonMethodError(
+            f"--forces draws the forces sheet: leave out --diagram {args.diagram}",
+            key="--forces",
+        )
+    if getattr(args, "animate", False):
+        raise PolygonMethodError(
+            "--forces draws a sheet on paper, not an animation (the "
+            "page shows the inertia forces moving): leave out "
+            "--animate",
+            key="--forces",
+        )
+    args.diagram = "forces"
+
+
+def _drawn_scales(args, scales) -> dict:
+    """The scales ``--scale`` gives, each of a kind the asked diagram draws (one it does not
+    draw is refused, never silently ignored)."""
+    drawn = {
+        "all": ("length", "velocity", "acceleration"),
+        "centres": ("length",),
+        "configuration": ("length",),
+        "forces": ("length", "force"),
+    }.get(args.diagram or "all", (args.diagram,))
+    for kind, s in scales.items():
+        if kind not in drawn:
+            raise PolygonMethodError(
+                f"{s.text} is {'an' if kind[0] == 'a' else 'a'} {kind} "
+                f"scale, and --diagram {args.diagram} draws no {kind} "
+                "diagram: leave it out",
+                key="--scale",
+            )
+    return scales
+
+
+def _print_drawn(out, fmt, files, pages, paper, scales_text) -> None:
+    """What ``draw`` wrote: the file and its scales; for a sheet of several pages, each
+    page's file (or the PDF's page) and its panels."""
     if len(pages) == 1:
         print(f"{out}: {pages[0].text}; {scales_text}")
-        return 0
+        return
     print(
         f"{out if fmt == 'pdf' else ', '.join(map(str, files))}: {len(pages)} pages on "
         f"{paper} (the diagrams do not fit one at their scales); {scales_text}"
@@ -190,7 +209,6 @@ def _cmd_draw(args) -> int:
             f"  {f}: page {p.number}, {p.text}: "
             + ", ".join(_panel_name(name) for name in p.panels)
         )
-    return 0
 
 
 def _panel_name(name: str) -> str:

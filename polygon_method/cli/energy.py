@@ -1,7 +1,8 @@
 """The commands on a scene that states a turning-moment diagram (or a punching press) and no
-mechanism: ``solve`` (``--json``), ``steps``, ``check``, ``draw``, ``sweep`` (``--summary``,
-``--csv``, ``--plot``); the others have nothing to do there and say so in one line. Only a
-scene the mechanism's reader refuses comes here: the file is looked at for a
+mechanism: ``solve`` (``--json``), ``steps``, ``check`` (a class: :mod:`.energy_class`),
+``draw``, ``page``, ``variants``, ``sweep`` (``--summary``, ``--csv``, ``--plot``); the
+others have nothing to do there and say so in one line. Only a scene the mechanism's reader
+refuses comes here: the file is looked at for a
 ``[turning_moment]`` or ``[press]`` header, and where it has none the reader's refusal
 stands."""
 
@@ -57,7 +58,8 @@ def route(args):
     if run is None:
         raise SceneError(
             f"a turning-moment diagram with no mechanism: {args.command} has nothing to "
-            "do here (solve, steps, check, draw and sweep --summary/--csv/--plot do)",
+            "do here (solve, steps, check, draw, page, variants and sweep --summary/--csv/--plot "
+            "do)",
             file=path,
             key="[turning_moment]" if scene.diagram is not None else "[press]",
         )
@@ -96,27 +98,24 @@ def _steps(args, scene) -> int:
 def _check(args, scene) -> int:
     from ..check.energy import cycle_verdicts
     from ..check.verdicts import verdicts_dict, verdicts_text
-    from ..scene.energy import answers_from_text
+    from .classroom import _answer_files
+    from .energy_class import _percent, check_class, graded
 
-    files = args.answers or []
-    if len(files) > 1 or getattr(args, "gradebook", None) or getattr(args, "variants", None):
-        raise SceneError(
-            "a turning-moment diagram's answers are checked one file at a time (no class, "
-            "gradebook or variants yet)",
-            key="answers",
-        )
+    files = _answer_files(args.answers or [])
     c = _solved(scene)
-    tolerance, answers, source = scene.tolerance, scene.answers, args.scene
-    if files:
-        source = files[0]
-        try:
-            text = Path(source).read_text(encoding="utf-8-sig")
-        except (OSError, UnicodeDecodeError) as exc:
-            raise SceneError(f"cannot read: {exc}", file=source) from None
-        try:
-            tolerance, answers = answers_from_text(text, source)
-        except PolygonMethodError as exc:
-            raise exc.located(source)
+    if (
+        len(files) > 1
+        or (args.answers and Path(args.answers[0]).is_dir())
+        or getattr(args, "gradebook", None)
+    ):
+        if not files:
+            raise SceneError(
+                f"no answer files in {', '.join(args.answers or ['(none)'])}", key="answers"
+            )
+        return check_class(args, scene, c, files)
+    stated = _percent(args)
+    scene, c, tolerance, answers, note = graded(args, scene, c, files, stated)
+    source = files[0] if files else args.scene
     if not answers:
         raise SceneError(
             "nothing to check: the scene has no [answers] and no answer file was given",
@@ -128,18 +127,54 @@ def _check(args, scene) -> int:
     except PolygonMethodError as exc:
         raise exc.located(source)
     why = (
-        f"{100 * tolerance:g} % (the answers' own)"
-        if tolerance is not None
-        else "three significant figures (computed answers)"
+        "three significant figures (computed answers)"
+        if tolerance is None
+        else f"{100 * tolerance:g} % (--tolerance)"
+        if stated is not None
+        else f"{100 * tolerance:g} % (the answers' own)"
     )
     if getattr(args, "json", False):
         d = verdicts_dict(verdicts, args.scene, files[0] if files else None)
         d["tolerance_used"] = {"why": why}
         print(json.dumps(d, indent=2, allow_nan=False))
     else:
-        title = f"{scene.title or args.scene}: answers from {source}"
+        title = f"{scene.title or args.scene}: answers from {source}{note}"
         print(verdicts_text(verdicts, title))
     return 0 if all(v.ok for v in verdicts) else 1
+
+
+def _page(args, scene) -> int:
+    """``page SCENE -o page.html [--answers FILE] [--frames N]``: the diagram's page."""
+    from ..check.energy import cycle_verdicts
+    from ..page import check_frames
+    from ..page.energy import cycle_page
+
+    out = Path(args.output)
+    if out.suffix.lower() not in (".html", ".htm"):
+        raise PolygonMethodError(
+            f"cannot write the page to {out}: the file name must end in .html", key="-o"
+        )
+    n = check_frames(180 if args.frames is None else args.frames)
+    answers_file = getattr(args, "answers", None)
+    targets = check_outputs([(out, "-o")], protect=[scene.file, answers_file])
+    from .energy_class import graded
+
+    c = _solved(scene)  # (an answer file naming another variant is refused, as check does)
+    _, _, tolerance, answers, _ = graded(
+        args, scene, c, [answers_file] if answers_file else [], None
+    )
+    verdicts = None
+    if answers:
+        try:
+            verdicts = cycle_verdicts(scene, c, answers, tolerance)
+        except PolygonMethodError as exc:
+            raise exc.located(answers_file or scene.file)
+    title = f"answers from {Path(answers_file).name if answers_file else 'the scene'}"
+    html = cycle_page(scene, c, n, verdicts=verdicts, answers_title=title)
+    write_outputs(targets, [(html, False)])
+    over = "the crossings" if c.form == "areas" else f"{n} frames over the cycle"
+    print(f"{out}: the turning-moment diagram over {over}; {len(html.encode()) / 1024:.0f} KiB")
+    return 0
 
 
 def _sheet(scene, out, key) -> int:
@@ -221,10 +256,18 @@ def _csv(scene, out, n) -> None:
     print(f"{out}: {len(th)} crank angles", file=sys.stderr)
 
 
+def _variants(args, scene) -> int:
+    from .energy_class import make_variants
+
+    return make_variants(args, scene)
+
+
 _COMMANDS = {
     "solve": _solve,
     "steps": _steps,
     "check": _check,
     "draw": _draw,
     "sweep": _sweep,
+    "page": _page,
+    "variants": _variants,
 }

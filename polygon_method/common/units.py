@@ -33,6 +33,7 @@ __all__ = [
     "suggest",
     "did_you_mean",
     "implausible",
+    "ANSWER_UNITS",
 ]
 
 _PI = math.pi
@@ -82,6 +83,7 @@ UNITS: dict[str, dict[str, float]] = {
         "rad/sec2": 1.0,
     },
     "force": {"N": 1.0, "kN": 1e3, "MN": 1e6, "lbf": 4.4482216152605, "kgf": 9.80665},
+    "power": {"W": 1.0, "kW": 1e3, "MW": 1e6, "hp": 745.69987158227},
     "velocity": {
         "m/s": 1.0,
         "mm/s": 1e-3,
@@ -194,6 +196,33 @@ TINY: dict[str, float] = {
     "angular_velocity": 1e-9,  # rad/s (one turn in 200 years)
     "force": 1e-9,  # N
     "torque": 1e-12,  # N m
+}
+
+#: an answer's kind (the prefix of its key: ``v_C``, ``omega_BC``, ``F_B``, ``torque``) -> the SI
+#: unit its value is written in: the answer keys, the verdicts and the variants' papers
+ANSWER_UNITS = {
+    "v": "m/s",
+    "a": "m/s^2",
+    "omega": "rad/s",
+    "alpha": "rad/s^2",
+    "vs": "m/s",
+    "as": "m/s^2",
+    "ac": "m/s^2",
+    "rub": "m/s",
+    "torque": "N m",
+    "vI": "m/s",
+    "aI": "m/s^2",
+    "F": "N",
+    "N": "N",
+    "Fc": "N",
+    "vu": "m/s",
+    "au": "m/s^2",
+    "Fi": "N",
+    "Ci": "N m",
+    "h": "m",
+    "force": "N",
+    "force2": "N",
+    "torque2": "N m",
 }
 
 #: the lengths a scene may be written in (``units = ...``)

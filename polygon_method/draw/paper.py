@@ -21,7 +21,7 @@ polygon_method.common.errors.PolygonMethodError: --paper: panel 1 is 30 x 10 cm:
 from __future__ import annotations
 
 from dataclasses import dataclass
-from itertools import combinations
+from itertools import permutations
 
 from ..common.tolerances import ON_PAPER
 from ..common.errors import PolygonMethodError
@@ -34,6 +34,7 @@ __all__ = [
     "paper_size",
     "paper_name",
     "paginate",
+    "fill",
     "room",
     "fits",
     "page_files",
@@ -116,40 +117,78 @@ class Page:
         )
 
 
-def _arrangements(items):
-    """Every arrangement of the panels ``items`` ([(index, (w, h))], in order) that cuts
-    straight across: (width, height, [(index, x, y)]); side by side before stacked."""
-    if len(items) == 1:
-        k, (w, h) = items[0]
-        return [(w, h, [(k, 0.0, 0.0)])]
-    out = []
-    for across in (True, False):
-        for cut in range(1, len(items)):
-            for a in _arrangements(items[:cut]):
-                for b in _arrangements(items[cut:]):
-                    if across:  # side by side, tops aligned
-                        w, h = a[0] + GAP + b[0], max(a[1], b[1])
-                        pos = a[2] + [(k, x + a[0] + GAP, y) for k, x, y in b[2]]
-                    else:  # stacked, left edges aligned
-                        w, h = max(a[0], b[0]), a[1] + GAP + b[1]
-                        pos = a[2] + [(k, x, y + a[1] + GAP) for k, x, y in b[2]]
-                    out.append((w, h, pos))
-    return out
+def _fitting(w, h, paper):
+    """The first orientation (portrait before landscape) whose room holds ``w`` x ``h``
+    cm, or None."""
+    for orientation in ("portrait", "landscape"):
+        rw, rh = room(paper, orientation)
+        if w <= rw + ON_PAPER and h <= rh + ON_PAPER:
+            return orientation
+    return None
+
+
+def _front(items, paper):
+    """The arrangements of the panels ``items`` ([(index, (w, h))], in order) that cut
+    straight across and may be the first that fits: (width, height, rank, [(index, x,
+    y)]), by rank.
+
+    Every such arrangement is one panel, or two arrangements of a cut of the panels, side
+    by side (tops aligned) before stacked (left edges aligned), cut after the first panel
+    before after the second, ...: its rank is (0 or 1, the cut, the first part's rank, the
+    second part's), the order they are tried in. An arrangement is dropped where it fits
+    neither way round (none made of it would fit: a part is never larger than the whole),
+    or where one of lower rank is no wider and no taller (whatever is made of it would fit
+    where the same made of the other fits, and comes later). So the first that fits is
+    the first of every arrangement that fits, found in time polynomial in the number of
+    panels (there are millions of arrangements of ten panels)."""
+    n = len(items)
+    fronts = {}
+    for i, (k, (w, h)) in enumerate(items):
+        fronts[i, i + 1] = [(w, h, (), [(k, 0.0, 0.0)])]
+    for length in range(2, n + 1):
+        for i in range(n - length + 1):
+            j = i + length
+            made = []
+            for across in (0, 1):
+                for cut in range(i + 1, j):
+                    for a in fronts[i, cut]:
+                        for b in fronts[cut, j]:
+                            if across == 0:  # side by side, tops aligned
+                                w, h = a[0] + GAP + b[0], max(a[1], b[1])
+                            else:  # stacked, left edges aligned
+                                w, h = max(a[0], b[0]), a[1] + GAP + b[1]
+                            if _fitting(w, h, paper) is not None:
+                                made.append((w, h, (across, cut - i, a[2], b[2]), a, b))
+            made.sort(key=lambda m: m[2])
+            kept = []
+            for m in made:
+                if not any(q[0] <= m[0] and q[1] <= m[1] for q in kept):
+                    kept.append(m)
+            fronts[i, j] = [(w, h, rank, _placed(a, b, rank[0])) for w, h, rank, a, b in kept]
+    return fronts[0, n]
+
+
+def _placed(a, b, across):
+    """The panels' places in the arrangement of ``a`` and ``b`` side by side (``across``
+    0) or stacked (1)."""
+    if across == 0:
+        return a[3] + [(k, x + a[0] + GAP, y) for k, x, y in b[3]]
+    return a[3] + [(k, x, y + a[1] + GAP) for k, x, y in b[3]]
 
 
 def _one_page(items, paper):
     """The page holding ``items``, or None: the first arrangement that fits, portrait
     before landscape for each; the arrangement centred across the page, at its top."""
-    for w, h, pos in _arrangements(items):
-        for orientation in ("portrait", "landscape"):
-            rw, rh = room(paper, orientation)
-            if w <= rw + ON_PAPER and h <= rh + ON_PAPER:
-                pw, ph = paper_size(paper)
-                size = (pw, ph) if orientation == "portrait" else (ph, pw)
-                left = MARGIN + (rw - w) / 2
-                return Page(
-                    paper, orientation, size, tuple((k, left + x, MARGIN + y) for k, x, y in pos)
-                )
+    for w, h, _, pos in _front(items, paper):
+        orientation = _fitting(w, h, paper)
+        if orientation is not None:
+            rw, _ = room(paper, orientation)
+            pw, ph = paper_size(paper)
+            size = (pw, ph) if orientation == "portrait" else (ph, pw)
+            left = MARGIN + (rw - w) / 2
+            return Page(
+                paper, orientation, size, tuple((k, left + x, MARGIN + y) for k, x, y in pos)
+            )
     return None
 
 
@@ -158,12 +197,34 @@ def fits(size, paper: str) -> bool:
     return _one_page([(0, tuple(size))], paper_name(paper)) is not None
 
 
-def _groups(n):
-    """The ways to cut 0..n-1 into runs, fewest runs first."""
-    for cuts in range(n):
-        for at in combinations(range(1, n), cuts):
-            bounds = (0,) + at + (n,)
-            yield [list(range(bounds[i], bounds[i + 1])) for i in range(len(bounds) - 1)]
+def _fewest_runs(sizes, paper):
+    """The pages of panels ``sizes`` as runs of consecutive panels: as few as hold them,
+    and of those the one whose first page holds fewest, then the second, ... (each panel
+    alone fits). A run that does not fit on one page does not fit with one more panel, so
+    each panel starts a run of at most so many."""
+    n = len(sizes)
+    pages = {}
+
+    def page(i, j):
+        if (i, j) not in pages:
+            pages[i, j] = _one_page([(k, sizes[k]) for k in range(i, j)], paper)
+        return pages[i, j]
+
+    longest = []
+    for i in range(n):
+        j = i + 1
+        while j < n and page(i, j + 1) is not None:
+            j += 1
+        longest.append(j)
+    fewest = [0] * (n + 1)  # fewest pages from panel i to the end
+    for i in range(n - 1, -1, -1):
+        fewest[i] = 1 + min(fewest[j] for j in range(i + 1, longest[i] + 1))
+    runs, i = [], 0
+    while i < n:
+        j = next(j for j in range(i + 1, longest[i] + 1) if fewest[j] == fewest[i] - 1)
+        runs.append(page(i, j))
+        i = j
+    return runs
 
 
 def paginate(sizes, paper: str = "A4", names=None, advice: str = "", panels=None) -> list:
@@ -183,23 +244,76 @@ def paginate(sizes, paper: str = "A4", names=None, advice: str = "", panels=None
                 f"round){advice}",
                 key="--paper",
             )
-    for groups in _groups(len(sizes)):
-        pages = [_one_page([(k, sizes[k]) for k in g], paper) for g in groups]
-        if all(p is not None for p in pages):
-            n = len(pages)
-            return [
-                Page(
-                    p.paper,
-                    p.orientation,
-                    p.size,
-                    p.placed,
-                    i + 1,
-                    n,
-                    tuple(panels[k] for k, _, _ in p.placed) if panels else (),
-                )
-                for i, p in enumerate(pages)
-            ]
-    raise AssertionError("unreachable: one panel a page always fits")  # pragma: no cover
+    pages = _fewest_runs(sizes, paper)
+    n = len(pages)
+    return [
+        Page(
+            p.paper,
+            p.orientation,
+            p.size,
+            p.placed,
+            i + 1,
+            n,
+            tuple(panels[k] for k, _, _ in p.placed) if panels else (),
+        )
+        for i, p in enumerate(pages)
+    ]
+
+
+#: the most panels a page tries in every order where their own order does not fit (4: 24
+#: orders of 40 arrangements each; 5 would be 120 of 224)
+REORDER = 4
+
+
+def _one_page_any(items, paper):
+    """The page holding ``items`` in their order, or else in another order (up to
+    :data:`REORDER` panels), or None."""
+    page = _one_page(items, paper)
+    if page is not None or len(items) > REORDER:
+        return page
+    for order in permutations(items):
+        page = _one_page(list(order), paper)
+        if page is not None:
+            return page
+    return None
+
+
+def fill(sizes, paper: str = "A4", panels=None) -> list:
+    """The pages of a sheet whose panels are ``sizes`` ((width, height) in cm), each page
+    filled before another is started: the panels taken in order, each onto the page being
+    filled where the page still holds them all (in their order, or in another), else onto
+    a new page. For a sheet of many panels of a kind (the forces sheet's free bodies and
+    polygons, group by group), whose order across the pages is kept; the panels of one page
+    are laid out as :func:`paginate` lays them out. Each panel must fit a page alone
+    (:func:`paginate` refuses one that does not, in one line).
+
+    >>> [[k for k, _, _ in p.placed] for p in fill([(10, 7), (9, 10), (14, 13), (9, 7.5)])]
+    [[0, 1, 2], [3]]
+    """
+    paper = paper_name(paper)
+    groups = []
+    for k, size in enumerate(sizes):
+        tried = None if not groups else _one_page_any(groups[-1][1] + [(k, size)], paper)
+        if tried is None:
+            tried = _one_page_any([(k, size)], paper)
+            if tried is None:
+                return paginate(sizes, paper, panels=panels)  # (its one line)
+            groups.append((tried, [(k, size)]))
+        else:
+            groups[-1] = (tried, groups[-1][1] + [(k, size)])
+    n = len(groups)
+    return [
+        Page(
+            page.paper,
+            page.orientation,
+            page.size,
+            page.placed,
+            i + 1,
+            n,
+            tuple(panels[k] for k, _, _ in page.placed) if panels else (),
+        )
+        for i, (page, _) in enumerate(groups)
+    ]
 
 
 def page_files(path, count: int) -> list:

@@ -24,6 +24,7 @@ from .paper import (
     MARGIN as PAGE_MARGIN,
     PAPER_NAMES,
     PAPERS,
+    fill,
     fits,
     paginate,
     paper_name,
@@ -470,7 +471,9 @@ def sheet_pages(
             f"margins ({rw:.3g} x {rh:.3g} cm, either way round); {advice}",
             key="--scale" if asked and given else "--paper",
         )
-    pages = paginate(sizes, paper, panels=[name for name, _, _ in panels])
+    names = [name for name, _, _ in panels]
+    # the forces sheet's many panels: each page filled before another is started
+    pages = (fill if diagram == "forces" else paginate)(sizes, paper, panels=names)
     return panels, sizes, pages
 
 

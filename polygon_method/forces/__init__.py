@@ -64,7 +64,8 @@ from . import (
 from .bodies import Ledger, Singular, centre, cross, gather
 from .collar import second_name
 from .core import force_plan
-from .values import force_value
+from .values import effort_value, force_value
+from .rest import still
 from .records import (
     FRAME,
     Contact,
@@ -147,6 +148,7 @@ __all__ = [
     "owners",
     "ROOMS",
     "force_value",
+    "effort_value",
     "Side",
     "Couple",
     "FreeBody",
@@ -216,6 +218,8 @@ def analyse(motion) -> Forces:
     walk is repeated with the friction of the forces found before until they settle
     (:mod:`.friction`)."""
     scene, plan = motion.scene, motion.plan
+    if scene.at_rest:  # the weights and loads alone, no inertia: nothing moves
+        motion = still(motion)
     fp = force_plan(scene, plan)
     if scene.friction is not None:
         return _with_friction(motion, fp)

@@ -24,6 +24,7 @@ for everything: :attr:`ForcePlan.quick` is False.
 
 from __future__ import annotations
 
+import functools
 import weakref
 
 from .bodies import Singular, centre, inertia_record
@@ -285,7 +286,7 @@ def force_plan(scene, plan) -> ForcePlan:
         return hit[2]
     fp = ForcePlan(scene, plan)
     try:
-        ref = weakref.ref(scene, lambda r, ident=ident: _forget(r, ident))
+        ref = weakref.ref(scene, functools.partial(_forget, ident=ident))
     except TypeError:  # a scene that takes no weak reference: not kept
         return fp
     while len(_PLANS) >= _KEEP:  # the force plan holds its scene: bounded, or none would go

@@ -45,9 +45,36 @@ import numpy as np
 from ..common.errors import SceneError
 from ..common.tolerances import FLOOR, ROUNDING, SAME
 
-__all__ = ["CycleEnergy", "Crossing", "solve_cycle", "letters", "curves"]
+__all__ = [
+    "ANSWER_FIELDS",
+    "CycleEnergy",
+    "Crossing",
+    "solve_cycle",
+    "letters",
+    "curves",
+    "at_angles",
+    "speed_at",
+]
 
 _GRID = math.radians(0.25)
+
+#: each answer key of a diagram's scene -> (its field of :class:`CycleEnergy`, SI unit, what
+#: it is): what ``check`` holds and a variant's answer key lists
+ANSWER_FIELDS = {
+    "T_mean": ("T_mean", "N m", "the mean torque"),
+    "power": ("power", "W", "the power"),
+    "dE_max": ("dE_max", "J", "the maximum fluctuation of energy"),
+    "E_stroke": ("E_stroke", "J", "the energy of one hole"),
+    "I_flywheel": ("inertia", "kg m^2", "the flywheel's moment of inertia"),
+    "m_flywheel": ("mass", "kg", "the flywheel's mass"),
+    "Cs": ("Cs", "", "the coefficient of fluctuation of speed"),
+    "speed_max": ("speed_max", "rad/s", "the greatest speed"),
+    "speed_min": ("speed_min", "rad/s", "the least speed"),
+    "alpha_at": ("alpha_at", "rad/s^2", "the angular acceleration"),
+    "rim_radius": ("rim_radius", "m", "the rim's mean radius"),
+    "rim_width": ("rim_width", "m", "the rim's width"),
+    "rim_thickness": ("rim_thickness", "m", "the rim's thickness"),
+}
 
 
 @dataclass(frozen=True)
@@ -242,13 +269,7 @@ def _curve(d) -> dict:
             "no fluctuation of energy, no flywheel to find",
             key="[turning_moment] torque",
         )
-    roots = [0.0] if qs[0] == 0.0 and qs[-2] * qs[1] < 0 else []  # (the cycle repeats)
-    for i in range(len(grid) - 1):
-        a, b, qa, qb = grid[i], grid[i + 1], qs[i], qs[i + 1]
-        if qa == 0.0 and i > 0 and qs[i - 1] * qb < 0:
-            roots.append(float(a))
-        elif qa * qb < 0:
-            roots.append(_bisect(q, float(a), float(b), qa))
+    roots = _roots(q, grid, qs)
     if not roots:
         raise SceneError(
             "the turning moment never crosses the resisting torque over the cycle: the "
@@ -280,6 +301,24 @@ def _curve(d) -> dict:
         dE_max=max(es) - min(es),
         _q=q,
     )
+
+
+def _roots(q, grid, qs) -> list:
+    """The crossings of ``q`` (T - R) over the cycle's ``grid`` (``qs`` its values there):
+    each sign change bisected; a nought on the grid taken where the sign changes across it."""
+    # a crossing at the cycle's start (the cycle repeats: q at its end is q at its start, and
+    # either may be the one that rounds to nought exactly)
+    start = (qs[0] == 0.0 or qs[-1] == 0.0) and qs[-2] * qs[1] < 0
+    roots = [0.0] if start else []
+    for i in range(len(grid) - 1):
+        a, b, qa, qb = grid[i], grid[i + 1], qs[i], qs[i + 1]
+        if start and i == 0:
+            continue  # (taken: a rounding's sign change here is the same crossing)
+        if qa == 0.0 and i > 0 and qs[i - 1] * qb < 0:
+            roots.append(float(a))
+        elif qa * qb < 0:
+            roots.append(_bisect(q, float(a), float(b), qa))
+    return roots
 
 
 def _bisect(f, a, b, fa):
@@ -363,16 +402,54 @@ def curves(scene, c, n: int = 1441) -> tuple:
         for i in range(1, len(th)):
             if th[i] == th[i - 1] and i + 1 < len(th):
                 tq[i - 1] = _before(T, th[i])
-    e0 = c.crossings[0]
+    return th, tq, rs, _energies(scene, c, th)
+
+
+def _energies(scene, c, th):
+    """E at each crank angle of ``th`` (rad) above E at the first crossing, a (J): the
+    closed forms' ``int_a^theta (T - R) dtheta``."""
+    d = scene.diagram
+    T, R = d.driving, d.resisting
+    steady = not getattr(T, "terms", True)
 
     def energy(x):
         dT = c.T_mean * x if steady else T.integral(x) - T.integral(0.0)
         dR = c.T_mean * x if R is None else R.integral(x) - R.integral(0.0)
         return dT - dR
 
-    base = energy(e0.angle)
-    es = np.array([energy(float(x)) - base for x in th])
-    return th, tq, rs, es
+    base = energy(c.crossings[0].angle)
+    return np.array([energy(float(x)) - base for x in th])
+
+
+def at_angles(scene, c, th) -> tuple:
+    """``(T, R, E)`` at the crank angles ``th`` (rad, within the cycle; a sequence) of a
+    diagram given as a law or segments: the driving and resisting torques (N m; at a
+    segments' jump, the value after it) and the energy above E at a (J), as arrays."""
+    d = scene.diagram
+    T, R = d.driving, d.resisting
+    th = np.asarray(th, dtype=float)
+    steady = not getattr(T, "terms", True)
+    tq = c.T_mean + 0.0 * th if steady else np.array([T.value(float(x)) for x in th])
+    rs = c.T_mean + 0.0 * th if R is None else np.array([R.value(float(x)) for x in th])
+    return tq, rs, _energies(scene, c, th)
+
+
+def speed_at(c, energy):
+    """The flywheel's speed (rad/s) where the energy above E at a is ``energy`` (J; a float
+    or an array), or None without a flywheel: its kinetic energy less its least,
+    ``I (w^2 - w_min^2) / 2 = E - E_min``. With ``w_max, w_min = w (1 +- Cs / 2)`` and
+    ``dE_max = I w^2 Cs`` this is exact at both ends: ``I (w_max^2 - w_min^2) / 2 =
+    I w (w Cs) = dE_max``.
+
+    >>> from types import SimpleNamespace as N
+    >>> c = N(inertia=2.0, speed_min=9.0, crossings=(N(energy=0.0), N(energy=-19.0)), i_min=1)
+    >>> round(float(speed_at(c, 0.0)), 12)        # sqrt(81 + 2 x 19 / 2)
+    10.0
+    """
+    if c.inertia is None:
+        return None
+    e_min = c.crossings[c.i_min].energy
+    return np.sqrt(c.speed_min**2 + 2.0 * (np.asarray(energy, dtype=float) - e_min) / c.inertia)
 
 
 def _before(T, x):

@@ -1,5 +1,6 @@
 """The size of what a force answer key names (``F_B``, ``N_B``, ``Fc_L``, ``Fi_L``, ``Ci_L``,
-``h_L``), read from a :class:`~.records.Forces`."""
+``h_L``), and a driver's effort but the crank's torque (``force``, ``torque2``, ``force2``),
+read from a :class:`~.records.Forces`."""
 
 from __future__ import annotations
 
@@ -55,3 +56,33 @@ def force_value(f: Forces, kind: str, name: str) -> float:
             )
         )
     return found[0].magnitude
+
+
+def effort_value(f: Forces | None, kind: str) -> float:
+    """A driver's effort other than the crank's torque (signed): ``force`` a driving
+    block's, collar's or cylinder's force along its guide (:attr:`Forces.input_torque`),
+    ``torque2`` a second crank's torque, ``force2`` a second collar's force along the
+    crank (:attr:`Forces.second_torque`). Refused in one line where the mechanism has no
+    such effort."""
+    if f is None:
+        raise SceneError(f"{kind}: a crank drives this mechanism: its effort is a torque")
+    if kind == "force":
+        if f.driver not in ("block", "collar", "cylinder"):
+            raise SceneError(
+                f"force: {f.crank} drives this mechanism with a torque, not a force "
+                "(its answer key is torque)"
+            )
+        return f.input_torque
+    if f.second_torque is None:
+        raise SceneError(f"{kind}: the mechanism has one input: no second effort")
+    torque = not (f.second_crank or "").startswith("block ")
+    if torque != (kind == "torque2"):
+        raise SceneError(
+            f"{kind}: the second input's effort is "
+            + (
+                "a torque (its answer key is torque2)"
+                if torque
+                else "a force (its answer key is force2)"
+            )
+        )
+    return f.second_torque

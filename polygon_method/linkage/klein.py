@@ -108,6 +108,8 @@ def klein_of(sol):
         return None, "no slider crank"
     if sol.scene.input.alpha:
         return None, ("the crank accelerates: Klein's construction takes its speed as uniform")
+    if sol.scene.at_rest:
+        return None, "at rest: nothing moves (Klein's construction is of the piston's motion)"
     w = sol.W[sk.crank]
     k = construct(sol.P[sk.o], sol.P[sk.a], sol.P[sk.b], sk.u, w)
     if k is None:

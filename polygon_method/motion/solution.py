@@ -369,6 +369,8 @@ class Solution(Motion):
             from ..forces import forces_dict  # lazy, as in `forces`
 
             d["forces"] = None if refused else forces_dict(self.forces)
+            if sc.at_rest:  # the weights and loads alone; the motion per rad/s of the crank
+                d["at_rest"] = True
         d.update(self._rolling_dict())
         warnings = list(self.warnings)
         if refused:
@@ -426,6 +428,16 @@ class Solution(Motion):
                     "a torque (solve gives it as the input force)"
                 )
             return f.input_torque
+        if kind in ("force", "torque2", "force2"):  # a driver's effort but the crank's torque
+            if (
+                kind == "force"
+                and not self.scene.has_forces
+                and self.plan.steps[0].effort_key == "input_force"
+            ):
+                return self.input_torque  # (the loads' power balance)
+            from ..forces import effort_value  # lazy, as in `forces`
+
+            return effort_value(self.forces, kind)
         if kind in ("F", "N", "Fc", "Fi", "Ci", "h"):
             from ..forces import force_value  # lazy, as in `forces`
 

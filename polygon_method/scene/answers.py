@@ -13,7 +13,7 @@ from ..common.units import UNITS
 from .records import ANSWER_KINDS, UNDER_BLOCK_KINDS, Answer, split_name
 from .tables import _suggest, _which_point
 
-__all__ = ["decimal_comma", "ENGINE_ANSWERS", "under_block_names"]
+__all__ = ["decimal_comma", "DRIVER_ANSWERS", "ENGINE_ANSWERS", "under_block_names"]
 
 #: the engine chapter's answer keys -> their unit kind (checked in check/engine.py)
 ENGINE_ANSWERS = {
@@ -97,8 +97,42 @@ def decimal_comma(value):
     return f"{sign}{whole or '0'}.{frac}{rest}"
 
 
+#: the drivers' efforts other than the crank's torque: a driving block's, collar's or
+#: cylinder's force along its guide (``force``), a second input's torque or force
+DRIVER_ANSWERS = {"force": "force", "torque2": "torque", "force2": "force"}
+
+
 class _Answers:
     """The loader's ``[answers]`` methods (mixed into the loader with the other tables)."""
+
+    def driver_answer(self, key, value, raw_text, line, loads, forces):
+        """``force`` (a driving block's, collar's or cylinder's force along its guide, N:
+        a size, or signed along the guide, + outward for a collar), ``torque2`` and
+        ``force2`` (a second input's effort: a second crank's torque, a second collar's
+        force; the force analysis gives them)."""
+        if key == "force" and not (loads or forces):
+            raise self.error(
+                "a driver's force answer needs [loads] to balance, or [masses]", "answers", key
+            )
+        if key != "force" and not forces:
+            raise self.error(
+                f"{key}: a second input's effort needs the force analysis (the power "
+                "balance gives only the two efforts' weighted sum): give [masses] (empty "
+                "for the loads alone) or [gravity]",
+                "answers",
+                key,
+            )
+        q = self.qty(
+            value,
+            DRIVER_ANSWERS[key],
+            "answers",
+            key,
+            default_unit=next(iter(UNITS[DRIVER_ANSWERS[key]])),
+            allow_sense=key == "torque2",
+            refuse_absurd=False,
+        )
+        sense = q.sense or ("+" if str(value).lstrip().startswith("+") else None)
+        return Answer(key, key, (), q.value, sense, raw_text, line)  # (+: signed, as -)
 
     def answers(self, known, sliders, pins, loads):
         spec = self.table("answers")
@@ -182,7 +216,7 @@ class _Answers:
         keys += [f"{k}_{s}" for k in ("vs", "as", "ac") for s in slider_names]
         keys += [f"rub_{p}" for p in sorted(pin_names)]
         keys += [f"{k}_{n}" for k in ("v", "a") for n in self.under_names(known, slider_names)]
-        return keys + (["torque"] if loads else []) + list(ENGINE_ANSWERS)
+        return keys + (["torque"] if loads else []) + list(DRIVER_ANSWERS) + list(ENGINE_ANSWERS)
 
     def under_names(self, known, slider_names) -> dict:
         """``A1`` -> the block at A's slider key: the guide's point under the block."""
@@ -230,10 +264,11 @@ class _Answers:
                 raise self.error(
                     "a torque answer needs [loads] to balance, or [masses]", "answers", key
                 )
-            if getattr(self, "two_inputs", False):
+            if getattr(self, "two_inputs", False) and not forces:
                 raise self.error(
                     "with two inputs one power balance does not give the two "
-                    "driving torques: no torque answer",
+                    "driving torques: no torque answer (the force analysis gives each: "
+                    "give [masses], empty for the loads alone; torque2 the second's)",
                     "answers",
                     key,
                 )
@@ -243,7 +278,7 @@ class _Answers:
                 raise self.error(
                     f"the block {self.driving_block} drives the mechanism: its "
                     "driving effort is a force along its guide, not a torque "
-                    "(solve prints it; no torque answer)",
+                    "(solve prints it; its answer key is force)",
                     "answers",
                     key,
                 )
@@ -257,6 +292,8 @@ class _Answers:
                 refuse_absurd=False,
             )
             return Answer(key, "torque", (), q.value, q.sense, raw_text, line)
+        if key in DRIVER_ANSWERS:
+            return self.driver_answer(key, value, raw_text, line, loads, forces)
         if key in ENGINE_ANSWERS:  # the engine chapter's: efforts, the cycle, the flywheel
             kind = ENGINE_ANSWERS[key]
             q = self.qty(
@@ -288,7 +325,8 @@ class _Answers:
             raise self.error(
                 f"unknown answer key{hint() or _suggest(key, examples)}; keys are v_X, "
                 "a_X, v_XY, a_XY, omega_L, alpha_L, vs_X, as_X, ac_X, rub_X, "
-                "torque, I_ij (a centre), vI_L, aI_L (a wheel's contact point), "
+                "torque, force, torque2, force2 (the drivers' efforts), I_ij (a centre), "
+                "vI_L, aI_L (a wheel's contact point), "
                 "F_X, N_X, Fi_L, Ci_L, h_L, Fc_L (forces), piston_effort, crank_effort, "
                 "turning_moment, rod_thrust, side_thrust, shaking_force, shaking_moment, "
                 "T_mean, dE_max, I_flywheel, m_flywheel (the force and engine chapters)",

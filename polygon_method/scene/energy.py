@@ -31,13 +31,29 @@ __all__ = [
     "CYCLE_ANSWERS",
     "is_cycle",
     "cycle_from_text",
+    "load_cycle",
+    "parse_cycle",
+    "cycle_from_table",
+    "cycle_variation",
+    "answer_file_from_text",
     "answers_from_text",
     "parse_law",
 ]
 
 #: the tables that make a scene a turning-moment diagram's (no mechanism)
 CYCLE_TABLES = ("turning_moment", "press")
-_TOP = ("title", "source", "notes", "units", "turning_moment", "press", "flywheel", "answers")
+_TOP = (
+    "title",
+    "source",
+    "notes",
+    "units",
+    "turning_moment",
+    "press",
+    "flywheel",
+    "answers",
+    "variants",
+    "variant",
+)
 _MECHANISM = ("ground", "links", "input", "sliders", "points", "indicator", "masses")
 _TM_KEYS = (
     "areas",
@@ -75,6 +91,90 @@ def cycle_from_text(text: str, file: str | None = None) -> CycleScene | None:
     if not is_cycle(raw):
         return None
     return _CycleReader(_Loader(raw, text, file)).scene()
+
+
+def cycle_from_table(raw: dict, file: str | None = None) -> CycleScene:
+    """The :class:`CycleScene` of a TOML table already parsed (checked as a file's would
+    be; the messages name no line): a variant's, made from its base scene's table."""
+    from .reading import _Loader
+
+    return _CycleReader(_Loader(raw, "", file)).scene()
+
+
+def cycle_variation(text: str, file: str | None = None) -> tuple:
+    """The ``[variants]`` of a diagram's scene text: its
+    :class:`~polygon_method.scene.energy_variation.CycleVaried` keys, each value checked
+    as the scene's own would be; ``()`` where it has none."""
+    from .energy_variation import read_cycle_variation
+    from .reading import _Loader
+
+    try:
+        raw = toml_table(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise syntax_error(str(exc), text, file) from None
+    return read_cycle_variation(_Loader(raw, text, file), cycle_from_table)
+
+
+def answer_file_from_text(text: str, file: str | None = None) -> tuple:
+    """``(tolerance, answers, variant, student)`` of a student's answer file for a
+    diagram's scene: its ``[answers]`` (read as the scene's are), the variant it names
+    (``variant = "07"``, or None) and the student's name (``student`` or ``name``, or
+    None)."""
+    from .reading import _Loader
+
+    try:
+        raw = toml_table(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise syntax_error(str(exc), text, file) from None
+    if not isinstance(raw.get("answers"), dict):
+        raise SceneError("no [answers] table", file=file, key="[answers]")
+    ld = _Loader(raw, text, file)
+    named = raw.get("variant")
+    if isinstance(named, int) and not isinstance(named, bool):
+        named = f"{named:02d}"
+    if named is not None and not (isinstance(named, str) and named.strip()):
+        raise SceneError('variant = "07": the variant\'s id', file=file, key="variant")
+    student = raw.get("student", raw.get("name"))
+    if student is not None and not isinstance(student, str):
+        raise SceneError('student = "A. Student": a name, a string', file=file, key="student")
+    tolerance, answers = _CycleReader(ld).answers()
+    return tolerance, answers, named.strip() if named else None, student
+
+
+def parse_cycle(text: str, file: str | None = None) -> CycleScene:
+    """The :class:`CycleScene` of a turning-moment diagram's TOML text; a
+    :class:`SceneError` (one line) where the text states none (a mechanism's scene is read
+    by :func:`polygon_method.parse_scene`).
+
+    >>> s = parse_cycle('[turning_moment]\\ntorque = "1000 + 300 sin 2theta"')
+    >>> s.diagram.form, round(s.diagram.cycle, 6)
+    ('law', 6.283185)
+    """
+    if not isinstance(text, str):
+        raise SceneError("the scene's text (TOML) is needed as a str", file=file)
+    scene = cycle_from_text(text, file)
+    if scene is None:
+        raise SceneError(
+            "states no turning-moment diagram ([turning_moment] or [press]): a mechanism's "
+            "scene is read by polygon_method.load_scene (or parse_scene)",
+            file=file,
+        )
+    return scene
+
+
+def load_cycle(path) -> CycleScene:
+    """Read a scene file that states a turning-moment diagram (or a punching press) and no
+    mechanism: its :class:`CycleScene`, which
+    :func:`polygon_method.forces.flywheel_cycle.solve_cycle` solves. Every failure one
+    :class:`SceneError` naming file, key and line, as :func:`polygon_method.load_scene`."""
+    from ..common.errors import PolygonMethodError
+    from .reading import scene_text
+
+    path, text = scene_text(path)
+    try:
+        return parse_cycle(text, str(path))
+    except PolygonMethodError as exc:
+        raise exc.located(str(path))
 
 
 def answers_from_text(text: str, file: str | None = None) -> tuple:
@@ -227,6 +327,7 @@ class _CycleReader(_RimReader, _PressReader):
             tolerance,
             raw.get("source"),
             units,
+            ld.variant_of(),
         )
 
     # -- [turning_moment]

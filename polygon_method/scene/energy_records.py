@@ -169,7 +169,9 @@ class CycleScene:
     """A scene that states a turning-moment diagram (or a press) and no mechanism: its
     ``diagram`` or ``press`` (one of them), its ``flywheel`` (a :class:`Rim`, or None),
     ``answers`` (:class:`~polygon_method.scene.records.Answer` records), the answers'
-    ``tolerance``; ``units`` the lengths' default unit."""
+    ``tolerance``; ``units`` the lengths' default unit; ``variant`` the ``[variant]`` table
+    of a generated variant (a :class:`~polygon_method.scene.variation.VariantOf`) or
+    None."""
 
     title: str
     file: str | None
@@ -180,3 +182,4 @@ class CycleScene:
     tolerance: float | None = None
     source: str | None = None
     units: str = "mm"
+    variant: object = None

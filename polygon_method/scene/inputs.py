@@ -298,7 +298,8 @@ class _Input:
         speed = (
             None
             if given_keys
-            else self.qty(spec["speed"], "angular_velocity", "input", "speed", need_sense=True)
+            else self.rest_speed(spec["speed"])  # at rest: a bare nought needs no unit
+            or self.qty(spec["speed"], "angular_velocity", "input", "speed", need_sense=True)
         )
         if is_book_form(spec["angle"]):  # a dead centre is passed in the crank's sense
             if given_keys and re.search(
@@ -373,15 +374,8 @@ class _Input:
                 "input",
                 rate_keys[0],
             )
-        if speed.value == 0:
-            raise self.error(
-                "the crank speed is zero: nothing moves (a statics problem: give any "
-                'speed, e.g. "1 rad/s ccw": without masses nothing depends on it; an empty '
-                "[masses] gives the pin forces too, weights at rest are [loads] at the "
-                "centres of mass)",
-                "input",
-                "speed",
-            )
+        if speed.value == 0:  # at rest: the weights and loads alone, per rad/s of the crank
+            speed = self.at_rest_speed(alpha, speed.sense)
         self.two_inputs = second is not None
         if second is not None and second.crank == link.key:
             raise self.error(

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 
-from ..common.units import did_you_mean
+from ..common.units import Quantity, did_you_mean
 from .records import Friction, Gravity, Mass, split_name
 from .tables import _unit_at
 
@@ -20,6 +20,36 @@ _LINK_KEYS = ("mass", "centre", "along", "from", "distances", "turn", "inertia",
 
 class _Masses:
     """The scene reader's methods for [masses] and [gravity] (mixed into the reader)."""
+
+    @staticmethod
+    def rest_speed(raw):
+        """A crank's speed of a bare nought (at rest: it needs no unit), else None."""
+        return Quantity(0.0) if type(raw) in (int, float) and raw == 0 else None
+
+    def at_rest_speed(self, alpha, sense=None) -> Quantity:
+        """A crank's speed of nought: at rest, where the scene asks for the force analysis
+        (its weights and loads alone, no inertia); the motion is then solved per rad/s of
+        the crank (ccw), the virtual velocities of the power balance. Refused with an
+        acceleration or without the force analysis. ``sense`` (``"0 rad/s cw"``): the way
+        the motion is about to start, against which a limiting friction acts (ccw unless
+        cw)."""
+        if not ("masses" in self.raw or "gravity" in self.raw) or alpha:
+            raise self.error(
+                "the crank speed is zero: nothing moves"
+                + (
+                    " (at rest with an acceleration is not solved: give the speed at the "
+                    "instant; the effort to start a motion against static friction is at "
+                    "rest with [friction], the speed '0 rad/s ccw' naming its sense)"
+                    if alpha
+                    else " (at rest, the weights held: give [masses] and [gravity]; loads "
+                    'alone: give an empty [masses], or any speed, e.g. "1 rad/s ccw": '
+                    "without masses nothing depends on it)"
+                ),
+                "input",
+                "speed",
+            )
+        self.at_rest = True  # (to turn in the sense stated: a limiting friction's sense)
+        return Quantity(-1.0, "cw") if sense == "cw" else Quantity(1.0, "ccw")
 
     def masses(self, carried, sliders):
         """[masses]: one :class:`Mass` per link or block named."""

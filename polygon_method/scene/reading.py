@@ -61,7 +61,20 @@ def load_scene(path, *, variants: bool = True, answers: bool = True) -> Scene:
     With ``variants=False`` the ``[variants]`` table is left unread (``scene.variation``
     is None): for a command that makes no variants, which need not pay for reading it.
     With ``answers=False`` the ``[answers]`` table is left unread (``scene.answers`` is
-    empty, ``scene.tolerance`` None): for a command that checks no answers."""
+    empty, ``scene.tolerance`` None): for a command that checks no answers. A file that
+    states a turning-moment diagram with no mechanism (``[turning_moment]`` or ``[press]``)
+    is refused in one line naming :func:`polygon_method.load_cycle`, its reader."""
+    path, text = scene_text(path)
+    try:
+        return parse_scene(text, file=str(path), variants=variants, answers=answers)
+    except PolygonMethodError as exc:
+        raise exc.located(str(path))
+
+
+def scene_text(path) -> tuple:
+    """``(path, text)`` of a scene file: its bytes read (at most ``MAX_SCENE_BYTES``; a
+    named pipe without waiting for ever), refused in one line where they are not UTF-8
+    text. Shared by :func:`load_scene` and :func:`polygon_method.scene.energy.load_cycle`."""
     path = _path_of(path, "scene")
     try:
         data = _read_start(path)
@@ -87,10 +100,7 @@ def load_scene(path, *, variants: bool = True, answers: bool = True) -> Scene:
         raise SceneError(
             f"not UTF-8 text (byte {exc.start}); save the scene as UTF-8", file=str(path)
         ) from None
-    try:
-        return parse_scene(text, file=str(path), variants=variants, answers=answers)
-    except PolygonMethodError as exc:
-        raise exc.located(str(path))
+    return path, text
 
 
 def _read_start(path) -> bytes:
@@ -319,6 +329,15 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected
         self.check_integers()
         for key in raw:
             if key not in _TOP_KEYS:
+                if key in ("turning_moment", "press") and isinstance(raw[key], dict):
+                    raise SceneError(
+                        f"a turning-moment diagram with no mechanism ([{key}]) is not a "
+                        "mechanism's scene: read it with polygon_method.load_cycle (or "
+                        "parse_cycle) and solve it with polygon_method.solve_cycle",
+                        file=self.file,
+                        key=f"[{key}]",
+                        line=self.line_of(key),
+                    )
                 kind = "table" if isinstance(raw[key], dict) else "key"
                 where = f"[{key}]" if kind == "table" else key
                 raise SceneError(
@@ -485,6 +504,7 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected
             rolling=tuple(rolling),
             masses=tuple(masses),
             statics="masses" in self.raw,
+            at_rest=getattr(self, "at_rest", False),
             gravity=gravity,
             indicator=indicator,
             flywheel=flywheel,

@@ -126,6 +126,8 @@ def _rack(rd, key, spec, ground, sliders, _suggest):
 
 def read_rolling(rd, ground, sliders, points) -> list:
     """The [rolling] table's pairs, checked (``rd`` is the scene reader)."""
+    if "rolling" not in rd.raw:  # (the usual scene: nothing to import or check)
+        return []
     from .tables import _suggest  # the reader's own did-you-mean
 
     out = []

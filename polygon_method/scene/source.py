@@ -9,10 +9,34 @@ import tomllib
 
 from ..common.errors import SceneError
 
-try:  # a compiled TOML reader: a scene in a twentieth of tomllib's time
-    import rtoml as _fast_toml
-except ImportError:  # pragma: no cover - the pure-Python reader does it all, slower
-    _fast_toml = None
+try:  # a compiled TOML reader held to TOML 1.0, as tomllib is: a scene in a fortieth of its time
+    from toml_rs import loads as _toml_rs
+except ImportError:  # pragma: no cover - rtoml, or the pure-Python reader, does it all
+    _toml_rs = None
+try:  # a compiled reader with a nesting limit of its own: for the texts of many brackets
+    from rtoml import loads as _rtoml
+except ImportError:  # pragma: no cover
+    _rtoml = None
+
+#: the most brackets (``[`` and ``{``) a text that ``toml_rs`` reads may hold: it goes one
+#: level deeper on its stack for each level of nesting and has no limit of its own (a text
+#: nested some thousands deep ends the process), so a text that could be nested deeper
+#: (a scene of hundreds of points) is read by ``rtoml``, which stops at a depth of its own
+NESTING_SAFE = 512
+
+
+def _compiled(text: str) -> dict:
+    """The table of ``text`` read by a compiled reader, or an exception where it refuses
+    it (or none is installed)."""
+    if _toml_rs is not None and text.count("[") + text.count("{") <= NESTING_SAFE:
+        return _toml_rs(text, toml_version="1.0.0")
+    if _rtoml is not None:
+        return _rtoml(text)
+    raise ImportError("no compiled TOML reader")
+
+
+#: the compiled readers, None where tomllib is to read every text (as a test has it)
+_fast_toml = _compiled if _toml_rs is not None or _rtoml is not None else None
 
 
 __all__ = [
@@ -31,23 +55,25 @@ __all__ = [
 
 
 def toml_table(text: str) -> dict:
-    """The TOML table of ``text``: read by the compiled reader where it reads it, else by
+    """The TOML table of ``text``: read by a compiled reader where it reads it, else by
     ``tomllib``, whose errors (:class:`tomllib.TOMLDecodeError`, ``RecursionError``) are
-    the ones this module words. The compiled reader is tried first for speed only: where it
-    fails (too deep, an integer past 64 bits, a float past the largest, bad syntax) tomllib
-    reads the text again, so every text tomllib reads gives the same table, and every text
-    it refuses is refused in the same words, except what TOML 1.1 added (a newline or a
-    trailing comma in an inline table, ``\\e`` and ``\\xHH`` escapes, times without
-    seconds), which is read.
+    the ones this module words. The compiled reader (``toml_rs``, held to TOML 1.0; for a
+    text of more than :data:`NESTING_SAFE` brackets ``rtoml``) is tried first for speed
+    only: where it refuses a text (too deep, a float past the largest, bad syntax, a
+    byte-order mark, which tomllib refuses too) tomllib reads the text again, so every text
+    tomllib reads gives the same table, and every text it refuses is refused in the same
+    words; ``rtoml``, for a text of many brackets, also reads what TOML 1.1 added (a
+    newline or a trailing comma in an inline table, ``\\e`` and ``\\xHH`` escapes, times
+    without seconds) and gives a date's time zone as a class of its own.
 
     >>> toml_table("a = 1\\n[b]\\nc = 'x'")
     {'a': 1, 'b': {'c': 'x'}}
-    >>> toml_table('a = 9223372036854775808')   # past 64 bits: tomllib reads it
+    >>> toml_table('a = 9223372036854775808')   # past 64 bits: read (refused later)
     {'a': 9223372036854775808}
     """
-    if _fast_toml is not None:
+    if _fast_toml is not None and text[:1] != "\ufeff":  # (a mark: tomllib refuses it)
         try:
-            return _fast_toml.loads(text)
+            return _fast_toml(text)
         except Exception:  # noqa: BLE001 - any refusal: tomllib reads it, or words why not
             pass
     return tomllib.loads(text)

@@ -28,6 +28,7 @@ from .construction import (  # the records, here as before
     pole_text,
     relative,
     sub,
+    tangential,
     unit,
 )
 from .rounding import two_lines
@@ -52,6 +53,7 @@ __all__ = [
     "relative",
     "absolute",
     "centripetal",
+    "tangential",
 ]
 
 

@@ -19,6 +19,7 @@ import math
 from dataclasses import dataclass
 
 from ..common.numbers import in_units
+from ..common.tolerances import LEAST_REACH, ROUNDING
 from ..scene import FixedPath
 from .base import Construction, Step, absolute, image_label
 from .rounding import EPS, vhypot
@@ -94,7 +95,7 @@ class BlockDriver(Step):
 
     def reach(self):
         (qx, qy) = self.path.through
-        return max(abs(qx), abs(qy), 1e-9)
+        return max(abs(qx), abs(qy), LEAST_REACH)
 
     def place(self, P, prm, ctx, sigma=None):
         return place(prm[0], prm[1], prm[2], prm[3], ctx.theta)
@@ -299,6 +300,6 @@ class BlockDriver(Step):
             ((0, 1), "upwards"),
             ((0, -1), "downwards"),
         ):
-            if abs(ux - wx) < 1e-12 and abs(uy - wy) < 1e-12:
+            if abs(ux - wx) < ROUNDING and abs(uy - wy) < ROUNDING:
                 return word
         return f"at {math.degrees(math.atan2(uy, ux)) % 360:.4g} deg"

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ..common.tolerances import LEAST_REACH
 from .base import Construction, Step, absolute, image_label, image_name, relative
 from .rounding import vhypot, vmax
 
@@ -111,7 +112,7 @@ class Carried(Step):
     def reach(self):
         """Its distance from the first point it is carried by, over the line of the two
         (a scale only: a carried point has one position)."""
-        return max(1e-9, (self.lam * self.lam + self.mu * self.mu) ** 0.5)
+        return max(LEAST_REACH, (self.lam * self.lam + self.mu * self.mu) ** 0.5)
 
     def singular_why(self, c) -> str:
         return f"the point {self.point} is carried on {self.link}: it is never singular"

@@ -41,24 +41,15 @@ from dataclasses import dataclass
 
 from ..common.errors import TOL, MobilityError, SingularStepError
 from ..common.numbers import in_units
+from ..common.tolerances import LEAST_REACH
 from ..scene import GuideSlider
-from . import dyad
+from . import collar_polygons, dyad
 from .base import (
-    Construction,
-    DirectionLine,
     Step,
-    Vector,
-    absolute,
-    add,
-    image_label,
-    perp,
-    pole_text,
     sub,
-    unit,
 )
 from .block import BlockDriver
 from .relations import coriolis, rigid_acceleration, rigid_velocity
-from .slotted import under_label
 
 __all__ = ["CollarDriver", "place", "velocity", "acceleration", "driver", "is_collar"]
 
@@ -209,7 +200,7 @@ class CollarDriver(BlockDriver):
         return (prm[0] + pencil(), prm[1] + pencil())
 
     def reach(self):
-        return max(self.length, self.rod_length, 1e-9)
+        return max(self.length, self.rod_length, LEAST_REACH)
 
     def default_hint(self, P):
         return "above"
@@ -561,189 +552,7 @@ class CollarDriver(BlockDriver):
 
     # ----- the polygons
     def construction(self, sol, ph):
-        P, C, K, D, N = sol.P, self.point, self.pivot, self.fixed, self.end
-        cond = sol.conditions.get(self.index, 1.0)
-        lab = lambda p: image_label(sol, p, ph)  # noqa: E731
-        d1, d2 = sub(P[C], P[K]), sub(P[C], P[D])
-        s = math.hypot(*d1)
-        w = unit(*sub(P[N], P[K]))
-        vs = sol.S[C][0] * self.sense_first
-        w_r, w_d = sol.W[self.rod], sol.W[self.link]
-        c1 = under_label(sol, C, ph)
-        speed = f"{abs(vs):.4g} m/s {self.sense(vs)}"
-        if ph == "velocity":
-            V = sol.V
-            slide = (vs * w[0], vs * w[1])
-            under = sub(V[C], slide)
-            lines = (
-                DirectionLine(
-                    slide,
-                    unit(*perp(d1)),
-                    f"the end of {c1}{lab(C)} drawn from {lab(K)}",
-                    f"perpendicular to {K}{C}",
-                    mark=f"\u22a5 {K}{C}",
-                ),
-                DirectionLine(
-                    V[D], unit(*perp(d2)), lab(D), f"perpendicular to {D}{C}", mark=f"\u22a5 {D}{C}"
-                ),
-            )
-            given = (
-                Vector(
-                    (0.0, 0.0),
-                    slide,
-                    f"{c1}{lab(C)}",
-                    "sliding",
-                    f"vs_{C}",
-                    f"the collar {C} slides along {self.rod} at {speed}, given",
-                ),
-            )
-            text = (
-                f"the collar {C} slides along {self.rod} at {speed}: {c1}{lab(C)} = "
-                f"{abs(vs):.4g} m/s along {self.rod}, from the image {c1} of the rod's "
-                f"point under {C}, which moves perpendicular to {K}{C}; so from "
-                f"{pole_text(sol, K, ph)} draw {abs(vs):.4g} m/s along {self.rod} and "
-                f"through its end a line perpendicular to {K}{C}; through "
-                f"{pole_text(sol, D, ph)} a line perpendicular to {D}{C}; they meet at "
-                f"{lab(C)}; {c1} is {abs(vs):.4g} m/s back along {self.rod} from it; "
-                f"{lab(K)}{lab(N)} / {lab(K)}{c1} = {K}{N} / {K}{C} gives {lab(N)}"
-            )
-            found = (
-                Vector(
-                    V[K],
-                    under,
-                    f"{lab(K)}{c1}",
-                    "relative",
-                    f"v of the rod's point under {C}",
-                    f"omega_{self.rod} x {K}{C} = {abs(w_r) * s:.4g} m/s",
-                ),
-                Vector(
-                    under,
-                    V[C],
-                    f"{c1}{lab(C)}",
-                    "sliding",
-                    f"vs_{C}",
-                    "the collar's sliding, given",
-                ),
-                absolute(sol, C, V, ph),
-                absolute(sol, N, V, ph),
-            )
-            return Construction(
-                self.index,
-                self.title,
-                ph,
-                lab(C),
-                V[C],
-                given,
-                lines,
-                found,
-                text,
-                cond,
-                ((c1, under),),
-            )
-        A = sol.A
-        al_r = sol.Al[self.rod]
-        a_s = sol.S[C][1] * self.sense_first
-        cor = sol.coriolis(C)
-        cen1 = (-w_r * w_r * d1[0], -w_r * w_r * d1[1])
-        after_cor = add(cen1, cor)
-        after_slide = add(after_cor, (a_s * w[0], a_s * w[1]))
-        cen2 = (-w_d * w_d * d2[0], -w_d * w_d * d2[1])
-        under = add(cen1, (-al_r * d1[1], al_r * d1[0]))
-        given = (
-            Vector(
-                (0.0, 0.0),
-                cen1,
-                "cen",
-                "centripetal",
-                f"centripetal of the rod's point under {C}",
-                f"omega_{self.rod}^2 x {K}{C} = {w_r * w_r * s:.4g} m/s^2, towards {K}",
-            ),
-            Vector(
-                cen1,
-                after_cor,
-                "cor",
-                "coriolis",
-                f"Coriolis at {C}",
-                f"2 omega_{self.rod} vs = {math.hypot(*cor):.4g} m/s^2, "
-                f"perpendicular to {self.rod}",
-            ),
-            Vector(
-                after_cor,
-                after_slide,
-                "s",
-                "sliding",
-                f"as_{C}",
-                f"the collar's sliding acceleration {abs(a_s):.4g} m/s^2 {self.sense(a_s)}, given",
-            ),
-            Vector(
-                (0.0, 0.0),
-                cen2,
-                "cen",
-                "centripetal",
-                f"centripetal of {C}{D}",
-                f"omega_{self.link}^2 x {D}{C} = {w_d * w_d * math.hypot(*d2):.4g} "
-                f"m/s^2, towards {D}",
-            ),
-        )
-        lines = (
-            DirectionLine(
-                after_slide,
-                unit(*perp(d1)),
-                "the end of the sliding acceleration",
-                f"perpendicular to {K}{C}",
-                mark=f"\u22a5 {K}{C}",
-            ),
-            DirectionLine(
-                cen2,
-                unit(*perp(d2)),
-                f"the end of the centripetal of {C}{D}",
-                f"perpendicular to {D}{C}",
-                mark=f"\u22a5 {D}{C}",
-            ),
-        )
-        text = (
-            f"from {pole_text(sol, K, ph)} draw the centripetal of the rod's point under "
-            f"{C} ({given[0].text}), then the Coriolis component 2 omega v "
-            f"({given[1].text}), then the sliding acceleration {abs(a_s):.4g} m/s^2 "
-            f"along {self.rod}; through its end a line perpendicular to {K}{C}; from "
-            f"{pole_text(sol, D, ph)} the centripetal of {C} about {D} "
-            f"({given[3].text}) and through its end a line perpendicular to {D}{C}; they "
-            f"meet at {lab(C)}; {lab(N)} follows by {lab(K)}{lab(N)} / {lab(K)}{c1} = "
-            f"{K}{N} / {K}{C}"
-        )
-        found = (
-            Vector(
-                after_slide,
-                A[C],
-                "t",
-                "tangential",
-                f"tangential of the rod's point under {C}",
-                f"alpha_{self.rod} x {K}{C}",
-            ),
-            Vector(
-                cen2,
-                A[C],
-                "t",
-                "tangential",
-                f"tangential of {C}{D}",
-                f"alpha_{self.link} x {D}{C}",
-            ),
-            absolute(sol, C, A, ph),
-            absolute(sol, N, A, ph),
-        )
-        return Construction(
-            self.index,
-            self.title,
-            ph,
-            lab(C),
-            A[C],
-            given,
-            lines,
-            found,
-            text,
-            cond,
-            ((c1, under),),
-        )
+        return collar_polygons.construction(self, sol, ph)
 
 
 def is_collar(scene) -> bool:

@@ -27,6 +27,7 @@ __all__ = [
     "relative",
     "absolute",
     "centripetal",
+    "tangential",
 ]
 
 
@@ -44,6 +45,9 @@ class Vector:
     kind: str
     name: str  # e.g. "v_CB" or "centripetal of CB"
     text: str  # how it is found: "omega_BC^2 x BC, parallel to BC, towards B"
+    #: the points of the polygon's quantity the vector is: (C, B) of v_CB, (C,) of v_C;
+    #: () for a component (centripetal, tangential, Coriolis, sliding)
+    points: tuple = ()
 
     @property
     def magnitude(self) -> float:
@@ -140,7 +144,7 @@ def relative(sol, X, Y, D, phase, kind="relative"):
     """Vector from the image of Y to the image of X (v_XY)."""
     lx, ly = image_label(sol, X, phase), image_label(sol, Y, phase)
     sym = "v" if phase == "velocity" else "a"
-    return Vector(D[Y], D[X], f"{ly}{lx}", kind, f"{sym}_{X}{Y}", "")
+    return Vector(D[Y], D[X], f"{ly}{lx}", kind, f"{sym}_{X}{Y}", "", (X, Y))
 
 
 def absolute(sol, X, D, phase):
@@ -148,7 +152,7 @@ def absolute(sol, X, D, phase):
     o = "o" if phase == "velocity" else "o'"
     sym = "v" if phase == "velocity" else "a"
     return Vector(
-        (0.0, 0.0), D[X], f"{o}{image_label(sol, X, phase)}", "absolute", f"{sym}_{X}", ""
+        (0.0, 0.0), D[X], f"{o}{image_label(sol, X, phase)}", "absolute", f"{sym}_{X}", "", (X,)
     )
 
 
@@ -166,4 +170,17 @@ def centripetal(sol, X, B, link, ph):
         "centripetal",
         f"centripetal of {X}{B}",
         f"v_{X}{B}^2 / {X}{B} = {w * w * L:.4g} m/s^2, parallel to {X}{B}, towards {B}",
+    )
+
+
+def tangential(sol, X, B, link, start):
+    """Tangential component of a_XB: alpha x BX, perpendicular to BX, drawn from ``start``
+    (the end of its centripetal component) to x'."""
+    return Vector(
+        start,
+        sol.A[X],
+        f"t{X}{B}",
+        "tangential",
+        f"tangential of {X}{B}",
+        f"alpha_{link} x {B}{X}",
     )

@@ -15,6 +15,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from ..common.tolerances import LEAST_REACH
 from .relations import rigid_acceleration, rigid_velocity
 from .base import Construction, Step, Vector, absolute, centripetal, image_label, pole_text, sub
 from .rounding import EPS, vhypot, vmax
@@ -65,7 +66,7 @@ class Crank(Step):
         return (prm[0] + pencil(),)
 
     def reach(self):
-        return max(self.length, 1e-9)
+        return max(self.length, LEAST_REACH)
 
     def place(self, P, prm, ctx, sigma=None):
         ox, oy = P[self.pivot]

@@ -24,6 +24,7 @@ from dataclasses import dataclass
 
 from ..common.errors import TOL, AssemblyError, SingularStepError
 from ..common.numbers import in_units
+from ..common.tolerances import LEAST_REACH, ROUNDING
 from .base import (
     Construction,
     DirectionLine,
@@ -37,7 +38,7 @@ from .base import (
     unit,
 )
 from .rounding import EPS, vhypot, vmax
-from .relations import coriolis
+from .relations import coriolis, rigid_velocity
 from .slotted import velocity
 
 __all__ = ["CylinderStep", "velocity_of", "recognise_all"]
@@ -49,6 +50,12 @@ def velocity_of(dx, dy, evx, evy):
     n = (dx * dx + dy * dy) ** 0.5
     ux, uy = dx / n, dy / n
     return velocity(dx, dy, ux, uy, evx, evy)
+
+
+def _in_stroke(n, stroke) -> bool:
+    """Whether the cylinder's length ``n`` lies in its ``stroke`` (least, most), its ends
+    reached exactly held to them with the slack of rounding."""
+    return stroke[0] * (1 - ROUNDING) <= n <= stroke[1] * (1 + ROUNDING)
 
 
 def recognise_all(g):
@@ -63,7 +70,7 @@ def recognise_all(g):
                     for lk in g.scene.links
                     if cyl.barrel in lk.points or cyl.rod in lk.points
                 ]
-                + [1e-9]
+                + [LEAST_REACH]
             )
             step = CylinderStep(
                 g.next_index + len(out),
@@ -76,9 +83,7 @@ def recognise_all(g):
                 uname=g.uname,
             )
             n = math.dist(g.P[cyl.barrel], g.P[cyl.rod])
-            if cyl.stroke is not None and not cyl.stroke[0] * (1 - 1e-12) <= n <= cyl.stroke[1] * (
-                1 + 1e-12
-            ):
+            if cyl.stroke is not None and not _in_stroke(n, cyl.stroke):
                 raise AssemblyError(
                     step.why(n) + ": the mechanism cannot be in this position",
                     key=f"[cylinders] {cyl.key}",
@@ -126,7 +131,7 @@ class CylinderStep(Step):
         return (self.rho,)
 
     def reach(self):
-        return max(self.rho, 1e-9)
+        return max(self.rho, LEAST_REACH)
 
     def place(self, P, prm, ctx, sigma=None):
         (kx, ky), (rx, ry) = P[self.barrel], P[self.rod]
@@ -142,12 +147,10 @@ class CylinderStep(Step):
             if not m.array:
                 if n <= TOL.singular * rho:
                     raise step.shrunk()
-                if stroke is not None and not stroke[0] * (1 - 1e-12) <= n <= stroke[1] * (
-                    1 + 1e-12
-                ):
+                if stroke is not None and not _in_stroke(n, stroke):
                     raise AssemblyError(step.why(n), step=step.label)
             elif stroke is not None:
-                out = (n < stroke[0] * (1 - 1e-12)) | (n > stroke[1] * (1 + 1e-12))
+                out = (n < stroke[0] * (1 - ROUNDING)) | (n > stroke[1] * (1 + ROUNDING))
                 if out is True or (out is not False and out.any()):
                     m.ctx.fail(step, out)
             m.cond[i] = m.ctx.minimum(n / rho, 1.0)
@@ -277,7 +280,7 @@ class CylinderStep(Step):
         c = self.under(sol, ph)
         if ph == "velocity":
             V = sol.V
-            under = add(V[K], (-w * d[1], w * d[0]))
+            under = add(V[K], rigid_velocity(d[0], d[1], w))
             lines = (
                 DirectionLine(
                     V[K], unit(*perp(d)), lab(K), f"perpendicular to {K}{R}", mark=f"\u22a5 {K}{R}"
@@ -313,8 +316,14 @@ class CylinderStep(Step):
             return Construction(
                 self.index, self.title, ph, c, under, (), lines, found, text, cond, ((c, under),)
             )
-        A = sol.A
-        al = sol.Al[self.key]
+        return self._acceleration_polygon(sol, ph, d, u, c, cond)
+
+    def _acceleration_polygon(self, sol, ph, d, u, c, cond):
+        """The construction on the acceleration polygon (``d``: K to R on the
+        configuration, ``u`` its unit; ``c``: the label of the barrel's point under R)."""
+        A, K, R = sol.A, self.barrel, self.rod
+        lab = lambda p: image_label(sol, p, ph)  # noqa: E731
+        w, al, s = sol.W[self.key], sol.Al[self.key], sol.S[self.key]
         cen_end = add(A[K], (-w * w * d[0], -w * w * d[1]))
         under = add(cen_end, (-al * d[1], al * d[0]))
         cor = (s[2], s[3])

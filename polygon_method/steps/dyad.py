@@ -24,14 +24,13 @@ from dataclasses import dataclass
 
 from ..common.errors import TOL, AssemblyError, SingularStepError
 from ..common.numbers import in_units, quiet
-from ..common.tolerances import crossing_angle
+from ..common.tolerances import LEAST_REACH, crossing_angle
 from ..scene import split_name
 from .rounding import C_FLOOR, turning, vhypot, vmax, vmin
 from .base import (
     Construction,
     DirectionLine,
     Step,
-    Vector,
     absolute,
     centripetal,
     image_label,
@@ -39,6 +38,7 @@ from .base import (
     pole_text,
     relative,
     sub,
+    tangential,
     unit,
 )
 
@@ -158,7 +158,7 @@ class Dyad(Step):
         return (prm[0] + pencil(), prm[1] + pencil())
 
     def reach(self):
-        return max(self.l1, self.l2, 1e-9)
+        return max(self.l1, self.l2, LEAST_REACH)
 
     def place(self, P, prm, ctx, sigma=None):
         (bx, by), (dx, dy) = P[self.b], P[self.d]
@@ -473,22 +473,8 @@ class Dyad(Step):
             f"perpendicular to {D}{X}; they meet at {lab(X)}"
         )
         found = (
-            Vector(
-                c1.end,
-                A[X],
-                f"t{X}{B}",
-                "tangential",
-                f"tangential of {X}{B}",
-                f"alpha_{self.link1} x {B}{X}",
-            ),
-            Vector(
-                c2.end,
-                A[X],
-                f"t{X}{D}",
-                "tangential",
-                f"tangential of {X}{D}",
-                f"alpha_{self.link2} x {D}{X}",
-            ),
+            tangential(sol, X, B, self.link1, c1.end),
+            tangential(sol, X, D, self.link2, c2.end),
             relative(sol, X, B, A, ph),
             relative(sol, X, D, A, ph),
             absolute(sol, X, A, ph),

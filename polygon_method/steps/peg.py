@@ -34,6 +34,7 @@ from dataclasses import dataclass
 
 from .relations import coriolis
 from ..common.errors import TOL, SingularStepError
+from ..common.tolerances import LEAST_REACH
 from ..scene import FixedPath, GuideSlider
 from .base import (
     Construction,
@@ -232,7 +233,7 @@ class Peg(Step):
         return tuple(out)
 
     def reach(self):
-        return max(self.size, 1e-9)
+        return max(self.size, LEAST_REACH)
 
     def lines(self, P, prm=None):
         """(gx, gy, ux, uy) of each slot: fixed from ``prm``, moving from the positions."""
@@ -445,117 +446,21 @@ class Peg(Step):
         cond = sol.conditions.get(self.index, 1.0)
         lab = image_label(sol, X, ph)
         unders = under_labels(sol, X, ph)
-        P = sol.P
-        x, y = P[X]
         D = sol.V if ph == "velocity" else sol.A
         given, lines, found, named, parts = [], [], [], [], []
         for s, tl in zip(self.slots, unders):
-            words = _slot_words(s)
             if isinstance(s, FixedPath):
-                u, start = s.u, (0.0, 0.0)
-                lines.append(
-                    DirectionLine(start, u, tl, f"parallel to {words}", mark=f"\u2225 {words}")
-                )
-                parts.append(f"through {tl} (a fixed slot) one parallel to {words}")
-                found.append(
-                    Vector(
-                        start,
-                        D[X],
-                        f"{tl}{lab}",
-                        "sliding",
-                        f"{'vs' if ph == 'velocity' else 'as'}_{s.key}",
-                        f"sliding {ph} of {X} in {words}",
-                    )
-                )
-                continue
-            g1 = s.first
-            u = unit(*sub(P[s.second], P[g1]))
-            w = sol.W[s.guide]
-            vc, ac = under_point(
-                *P[g1], x, y, w, sol.Al.get(s.guide, 0.0), *sol.V[g1], *sol.A.get(g1, (0.0, 0.0))
-            )
-            g_lab = pole_text(sol, g1, ph)
-            if ph == "velocity":
-                given.append(
-                    Vector(
-                        sol.V[g1],
-                        vc,
-                        f"{image_label(sol, g1, ph)}{tl}",
-                        "relative",
-                        f"v of the point of {s.guide} under {X}",
-                        f"omega_{s.guide} x {g1}{X}, perpendicular to {g1}{X}",
-                    )
-                )
-                named.append((tl, vc))
-                lines.append(
-                    DirectionLine(vc, u, tl, f"parallel to {s.guide}", mark=f"\u2225 {s.guide}")
-                )
-                parts.append(
-                    f"from {g_lab} draw {image_label(sol, g1, ph)}{tl} = omega_"
-                    f"{s.guide} x {g1}{X} perpendicular to {g1}{X} ({tl}: the point "
-                    f"of {s.guide} under the peg) and through {tl} a line parallel "
-                    f"to {s.guide}"
-                )
-                found.append(
-                    Vector(
-                        vc,
-                        D[X],
-                        f"{tl}{lab}",
-                        "sliding",
-                        f"vs_{s.key}",
-                        f"sliding velocity of {X} in {words}",
-                    )
-                )
-                continue
-            cor = sol.coriolis(s.key)
-            end = add(ac, cor)
-            given.append(
-                Vector(
-                    sol.A[g1],
-                    ac,
-                    f"{image_label(sol, g1, ph)}{tl}",
-                    "relative",
-                    f"a of the point of {s.guide} under {X}",
-                    f"omega_{s.guide}^2 x {g1}{X} towards {g1} and alpha_{s.guide} x {g1}{X}",
-                )
-            )
-            given.append(
-                Vector(
-                    ac,
-                    end,
-                    f"cor {s.key}",
-                    "coriolis",
-                    f"Coriolis at {X} in {s.guide}",
-                    f"2 omega_{s.guide} vs_{s.key} = "
-                    f"{math.hypot(*cor):.4g} m/s^2, perpendicular to {s.guide}",
-                )
-            )
-            named.append((tl, ac))
-            lines.append(
-                DirectionLine(
-                    end,
-                    u,
-                    f"the end of the Coriolis component in {s.guide}",
-                    f"parallel to {s.guide}",
-                    mark=f"\u2225 {s.guide}",
-                )
-            )
-            parts.append(
-                f"from {g_lab} draw {tl}, the acceleration of the point of {s.guide} "
-                f"under the peg, lay off from {tl} the Coriolis component 2 omega_"
-                f"{s.guide} vs_{s.key} = {math.hypot(*cor):.4g} m/s^2 perpendicular "
-                f"to {s.guide}, and through its end a line parallel to {s.guide}"
-            )
-            found.append(
-                Vector(
-                    end,
-                    D[X],
-                    "s",
-                    "sliding",
-                    f"as_{s.key}",
-                    f"sliding acceleration of {X} in {words}",
-                )
-            )
+                one = self._fixed_slot(sol, ph, s, tl, lab)
+            elif ph == "velocity":
+                one = self._turning_slot_velocity(sol, s, tl, lab)
+            else:
+                one = self._turning_slot_acceleration(sol, s, tl, lab)
+            g, line, f, nm, part = one
+            given += g
+            lines.append(line)
+            found.append(f)
+            named += nm
+            parts.append(part)
         text = "; ".join(parts) + f"; the two lines meet at {lab}"
         found.append(absolute(sol, X, D, ph))
         return Construction(
@@ -571,3 +476,115 @@ class Peg(Step):
             cond,
             tuple(named),
         )
+
+    def _fixed_slot(self, sol, ph, s, tl, lab):
+        """A fixed slot's part of the construction: (given vectors, its line, the sliding
+        vector found, the named points, its words)."""
+        X, words = self.point, _slot_words(s)
+        D = sol.V if ph == "velocity" else sol.A
+        u, start = s.u, (0.0, 0.0)
+        line = DirectionLine(start, u, tl, f"parallel to {words}", mark=f"\u2225 {words}")
+        found = Vector(
+            start,
+            D[X],
+            f"{tl}{lab}",
+            "sliding",
+            f"{'vs' if ph == 'velocity' else 'as'}_{s.key}",
+            f"sliding {ph} of {X} in {words}",
+        )
+        return (), line, found, (), f"through {tl} (a fixed slot) one parallel to {words}"
+
+    def _under(self, sol, s):
+        """The velocity and the acceleration of the point of slot ``s``'s turning link under
+        the peg."""
+        P, g1 = sol.P, s.first
+        return under_point(
+            *P[g1],
+            *P[self.point],
+            sol.W[s.guide],
+            sol.Al.get(s.guide, 0.0),
+            *sol.V[g1],
+            *sol.A.get(g1, (0.0, 0.0)),
+        )
+
+    def _turning_slot_velocity(self, sol, s, tl, lab):
+        """A slot in a turning link, on the velocity polygon: (given vectors, its line, the
+        sliding vector found, the named points, its words)."""
+        X, g1, ph = self.point, s.first, "velocity"
+        u = unit(*sub(sol.P[s.second], sol.P[g1]))
+        vc, _ = self._under(sol, s)
+        given = Vector(
+            sol.V[g1],
+            vc,
+            f"{image_label(sol, g1, ph)}{tl}",
+            "relative",
+            f"v of the point of {s.guide} under {X}",
+            f"omega_{s.guide} x {g1}{X}, perpendicular to {g1}{X}",
+        )
+        line = DirectionLine(vc, u, tl, f"parallel to {s.guide}", mark=f"\u2225 {s.guide}")
+        part = (
+            f"from {pole_text(sol, g1, ph)} draw {image_label(sol, g1, ph)}{tl} = omega_"
+            f"{s.guide} x {g1}{X} perpendicular to {g1}{X} ({tl}: the point "
+            f"of {s.guide} under the peg) and through {tl} a line parallel "
+            f"to {s.guide}"
+        )
+        found = Vector(
+            vc,
+            sol.V[X],
+            f"{tl}{lab}",
+            "sliding",
+            f"vs_{s.key}",
+            f"sliding velocity of {X} in {_slot_words(s)}",
+        )
+        return (given,), line, found, ((tl, vc),), part
+
+    def _turning_slot_acceleration(self, sol, s, tl, lab):
+        """A slot in a turning link, on the acceleration polygon (its point under the peg,
+        the Coriolis component laid off from it): (given vectors, its line, the sliding
+        vector found, the named points, its words)."""
+        X, g1, ph = self.point, s.first, "acceleration"
+        u = unit(*sub(sol.P[s.second], sol.P[g1]))
+        _, ac = self._under(sol, s)
+        cor = sol.coriolis(s.key)
+        end = add(ac, cor)
+        given = (
+            Vector(
+                sol.A[g1],
+                ac,
+                f"{image_label(sol, g1, ph)}{tl}",
+                "relative",
+                f"a of the point of {s.guide} under {X}",
+                f"omega_{s.guide}^2 x {g1}{X} towards {g1} and alpha_{s.guide} x {g1}{X}",
+            ),
+            Vector(
+                ac,
+                end,
+                f"cor {s.key}",
+                "coriolis",
+                f"Coriolis at {X} in {s.guide}",
+                f"2 omega_{s.guide} vs_{s.key} = "
+                f"{math.hypot(*cor):.4g} m/s^2, perpendicular to {s.guide}",
+            ),
+        )
+        line = DirectionLine(
+            end,
+            u,
+            f"the end of the Coriolis component in {s.guide}",
+            f"parallel to {s.guide}",
+            mark=f"\u2225 {s.guide}",
+        )
+        part = (
+            f"from {pole_text(sol, g1, ph)} draw {tl}, the acceleration of the point of "
+            f"{s.guide} under the peg, lay off from {tl} the Coriolis component 2 omega_"
+            f"{s.guide} vs_{s.key} = {math.hypot(*cor):.4g} m/s^2 perpendicular "
+            f"to {s.guide}, and through its end a line parallel to {s.guide}"
+        )
+        found = Vector(
+            end,
+            sol.A[X],
+            "s",
+            "sliding",
+            f"as_{s.key}",
+            f"sliding acceleration of {X} in {_slot_words(s)}",
+        )
+        return given, line, found, ((tl, ac),), part

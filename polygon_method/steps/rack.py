@@ -28,6 +28,7 @@ from dataclasses import dataclass
 
 from ..common.errors import SceneError
 from ..common.numbers import in_units
+from ..common.tolerances import LEAST_REACH, SAME
 from .base import Construction, DirectionLine, Step, Vector, absolute, image_label
 from .rolling_dims import angle_of, turned
 from .rounding import EPS, line_rounding
@@ -57,7 +58,7 @@ def _rack_params(scene, pr, kb_rate, beta0=0.0):
             key=where,
             file=scene.file,
         )
-    if pr.base_radius is not None and abs(pr.base_radius - Rp) > 1e-9 * Rp:
+    if pr.base_radius is not None and abs(pr.base_radius - Rp) > SAME * Rp:
         u = scene.length_unit
         raise SceneError(
             f"the contact leaves the pitch point: the rack's pitch line is "
@@ -173,7 +174,7 @@ class RackStep(Step):
         return (prm[0] + pencil(), prm[1] + pencil()) + tuple(prm[2:])
 
     def reach(self):
-        return max(abs(self.dims[4]), 1e-9)
+        return max(abs(self.dims[4]), LEAST_REACH)
 
     def place(self, P, prm, ctx, sigma=None):
         tx, ty, ux, uy, k, K, th0 = prm[:7]

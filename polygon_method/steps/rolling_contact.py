@@ -13,6 +13,7 @@ import math
 
 from ..common.numbers import in_units
 from .construction import sub
+from .relations import rigid_acceleration, rigid_velocity
 
 __all__ = ["line_rates", "circle_rates", "rim_motion", "RollingContact"]
 
@@ -36,9 +37,10 @@ def circle_rates(dx, dy, vdx, vdy, adx, ady, kd, kb, wb, ab):
 
 def rim_motion(rx, ry, w, al, vcx, vcy, acx, acy):
     """(vx, vy, ax, ay) of the wheel's point at C + r: ``v_C + w perp(r)``,
-    ``a_C - w^2 r + al perp(r)``."""
-    k = w * w
-    return (vcx - w * ry, vcy + w * rx, acx - k * rx - al * ry, acy - k * ry + al * rx)
+    ``a_C - w^2 r + al perp(r)``: the rigid body's relations (:mod:`.relations`)."""
+    dvx, dvy = rigid_velocity(rx, ry, w)
+    dax, day = rigid_acceleration(rx, ry, w, al)
+    return vcx + dvx, vcy + dvy, acx + dax, acy + day
 
 
 class RollingContact:

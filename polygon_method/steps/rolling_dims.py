@@ -9,6 +9,7 @@ import math
 
 from ..common.errors import AssemblyError, SceneError
 from ..common.numbers import in_units
+from ..common.tolerances import SAME
 
 __all__ = [
     "GAP",
@@ -23,7 +24,7 @@ __all__ = [
 ]
 
 #: how far (relative to the radii) a wheel's centre may leave its line or pitch circle
-GAP = 1e-9
+GAP = SAME
 #: how far a link turning as a linkage makes it (a wheel's arm or gear, a rack's pinion)
 #: may turn from the stated instant before its angle is refused (a turn of nearly pi
 #: could be one the other way)
@@ -117,27 +118,7 @@ def wheel_params(scene, bodies, pr, *, s0=None, kd_rate=0.0, kb_rate=0.0, P=None
         return (ell, r, tx, ty, mx, my, phi0, s0)
     inp = scene.input
     where = f"[rolling] {pr.wheel}"
-    if P is not None:
-        C0, O = P[pr.centre], P[pr.base_centre]
-    elif (
-        kd_rate is None
-        or base_free is not None
-        or pr.base_centre not in scene.ground
-        or (pr.centre not in scene.ground and pr.centre != inp.tip)
-    ):
-        raise SceneError(
-            f"the wheel {pr.wheel}'s arm or gear turns as a linkage makes it: "
-            "its dimensions need the positions at the stated instant",
-            key=where,
-            file=scene.file,
-        )
-    else:
-        O = scene.ground[pr.base_centre]
-        if pr.centre in scene.ground:
-            C0 = scene.ground[pr.centre]
-        else:  # the crank's tip at the stated angle
-            L = scene.link(inp.crank).length
-            C0 = (O[0] + L * math.cos(inp.angle), O[1] + L * math.sin(inp.angle))
+    C0, O = _centres(scene, pr, P, kd_rate, base_free, where)
     dist = math.dist(C0, O)
     e = -1.0 if pr.inside else 1.0
     ring = getattr(pr, "ring", False)  # the wheel a ring about the gear (e = -1 too)
@@ -182,3 +163,29 @@ def wheel_params(scene, bodies, pr, *, s0=None, kd_rate=0.0, kb_rate=0.0, P=None
         beta0 = angle_of(qx - bx, qy - by)
     K = kd * (kd_rate or 0.0) + kb * (kb_rate or 0.0)
     return (ell, r, R, kd, kb, phi0, inp.angle, K, O[0], O[1], psi0, beta0)
+
+
+def _centres(scene, pr, P, kd_rate, base_free, where):
+    """The wheel's centre and its gear's (or circle's) centre at the stated instant: from
+    the positions ``P`` where given, else each a fixed point or the crank's tip; refused
+    where a linkage turns the arm or the gear and no positions are given."""
+    inp = scene.input
+    if P is not None:
+        return P[pr.centre], P[pr.base_centre]
+    if (
+        kd_rate is None
+        or base_free is not None
+        or pr.base_centre not in scene.ground
+        or (pr.centre not in scene.ground and pr.centre != inp.tip)
+    ):
+        raise SceneError(
+            f"the wheel {pr.wheel}'s arm or gear turns as a linkage makes it: "
+            "its dimensions need the positions at the stated instant",
+            key=where,
+            file=scene.file,
+        )
+    O = scene.ground[pr.base_centre]
+    if pr.centre in scene.ground:
+        return scene.ground[pr.centre], O
+    L = scene.link(inp.crank).length  # the crank's tip at the stated angle
+    return (O[0] + L * math.cos(inp.angle), O[1] + L * math.sin(inp.angle)), O

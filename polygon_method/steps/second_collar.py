@@ -26,6 +26,7 @@ from dataclasses import dataclass
 
 from ..common.errors import MobilityError
 from ..common.numbers import in_units
+from ..common.tolerances import LEAST_REACH
 from .base import Construction, DirectionLine, Step, Vector, absolute, add, image_label, sub, unit
 from .relations import coriolis, rigid_acceleration, rigid_velocity
 from .slotted import under_label
@@ -106,7 +107,7 @@ class SecondCollar(Step):
         return (prm[0], 0.0, 0.0) + tuple(prm[3:])
 
     def reach(self):
-        return max(self.rod_length, 1e-9)
+        return max(self.rod_length, LEAST_REACH)
 
     def place(self, P, prm, ctx, sigma=None):
         (kx, ky), (nx, ny) = P[self.pivot], P[self.end]

@@ -23,6 +23,7 @@ from dataclasses import dataclass
 
 from .relations import coriolis
 from ..common.numbers import in_units, condition_text
+from ..common.tolerances import LEAST_REACH
 from ..scene import FixedPath, GuideSlider, guide_words
 from .rounding import line_rounding, plus, turning, two_lines, vhypot, vmax
 from .slotted import under_label
@@ -39,6 +40,7 @@ from .base import (
     pole_text,
     relative,
     sub,
+    tangential,
     unit,
 )
 
@@ -195,7 +197,7 @@ class SliderDyad(Step):
         return (prm[0] + pencil(), prm[1] + pencil(), prm[2] + pencil(), prm[3], prm[4])
 
     def reach(self):
-        return max(self.length, 1e-9)
+        return max(self.length, LEAST_REACH)
 
     def line(self, P, prm=None):
         """A point of the guide line and its unit direction."""
@@ -433,7 +435,14 @@ class SliderDyad(Step):
             return Construction(
                 self.index, self.title, ph, lab(X), V[X], given, lines, found, text, cond
             )
-        A = sol.A
+        return self._acceleration_polygon(sol, ph, d1, cond)
+
+    def _acceleration_polygon(self, sol, ph, d1, cond):
+        """The construction on the acceleration polygon (``d1``: the unit perpendicular to
+        BX on the configuration)."""
+        P, A, X, B = sol.P, sol.A, self.point, self.b
+        lab = lambda p: image_label(sol, p, ph)  # noqa: E731
+        (x, y) = P[X]
         c1 = centripetal(sol, X, B, self.link, ph)
         given = [c1]
         if self.path is not None:
@@ -485,14 +494,7 @@ class SliderDyad(Step):
             f"they meet at {lab(X)}"
         )
         found = (
-            Vector(
-                c1.end,
-                A[X],
-                f"t{X}{B}",
-                "tangential",
-                f"tangential of {X}{B}",
-                f"alpha_{self.link} x {B}{X}",
-            ),
+            tangential(sol, X, B, self.link, c1.end),
             Vector(
                 through,
                 A[X],

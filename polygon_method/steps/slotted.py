@@ -25,8 +25,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .relations import coriolis
+from .relations import coriolis, rigid_velocity
 from ..common.errors import TOL, SingularStepError
+from ..common.tolerances import LEAST_REACH
 from ..scene import GuideSlider
 from .rounding import C_FLOOR, vhypot, vmax
 from .base import (
@@ -182,7 +183,7 @@ class SlottedLink(Step):
         return (length, scene.link(self.ref).length if self.ref else length)
 
     def reach(self):
-        return max(self.length, 1e-9)
+        return max(self.length, LEAST_REACH)
 
     def place(self, P, prm, ctx, sigma=None):
         (kx, ky), (ax, ay) = P[self.known], P[self.point]
@@ -349,7 +350,7 @@ class SlottedLink(Step):
         u = unit(*sub(P[self.second], P[self.first]))
         if ph == "velocity":
             V = sol.V
-            coincident = add(V[K], (-w * kA[1], w * kA[0]))
+            coincident = add(V[K], rigid_velocity(kA[0], kA[1], w))
             c = under_label(sol, Ab, ph)  # the lever's point under the block (c1 at a swivel C)
             lines = (
                 DirectionLine(
@@ -404,8 +405,14 @@ class SlottedLink(Step):
                 cond,
                 ((c, coincident),),
             )
-        A = sol.A
-        al = sol.Al[self.guide]
+        return self._acceleration_polygon(sol, ph, kA, u, cond)
+
+    def _acceleration_polygon(self, sol, ph, kA, u, cond):
+        """The construction on the acceleration polygon (``kA``: K to the block on the
+        configuration; ``u``: the guide's unit)."""
+        A, Ab, K, N = sol.A, self.point, self.known, self.new
+        lab = lambda p: image_label(sol, p, ph)  # noqa: E731
+        w, al = sol.W[self.guide], sol.Al[self.guide]
         cen_end = add(A[K], (-w * w * kA[0], -w * w * kA[1]))
         under = add(cen_end, (-al * kA[1], al * kA[0]))
         cor = sol.coriolis(Ab)

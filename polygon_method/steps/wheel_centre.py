@@ -20,11 +20,11 @@ from dataclasses import dataclass
 
 from ..common.errors import TOL
 from ..common.numbers import in_units, condition_text
+from ..common.tolerances import LEAST_REACH
 from .base import (
     Construction,
     DirectionLine,
     Step,
-    Vector,
     absolute,
     centripetal,
     image_label,
@@ -32,6 +32,7 @@ from .base import (
     pole_text,
     relative,
     sub,
+    tangential,
     unit,
 )
 from .rounding import line_rounding
@@ -125,7 +126,7 @@ class WheelCentre(Step):
         return (prm[0] + pencil(), prm[1] + pencil(), prm[2] + pencil(), prm[3], prm[4])
 
     def reach(self):
-        return max(self.length, 1e-9)
+        return max(self.length, LEAST_REACH)
 
     def place(self, P, prm, ctx, sigma=None):
         bx, by = P[self.b]
@@ -290,14 +291,7 @@ class WheelCentre(Step):
             f"they meet at {lab(X)}"
         )
         found = (
-            Vector(
-                c1.end,
-                A[X],
-                f"t{X}{B}",
-                "tangential",
-                f"tangential of {X}{B}",
-                f"alpha_{self.link} x {B}{X}",
-            ),
+            tangential(sol, X, B, self.link, c1.end),
             relative(sol, X, B, A, ph),
             absolute(sol, X, A, ph),
         )

@@ -26,6 +26,7 @@ from dataclasses import dataclass
 
 from ..common.errors import TOL, SingularStepError
 from ..common.numbers import in_units, condition_text
+from ..common.tolerances import LEAST_REACH
 from ..scene import YokeSlot, guide_words
 from .base import Construction, DirectionLine, Step, Vector, absolute, image_label
 from .rounding import EPS, line_rounding, plus, two_lines
@@ -130,7 +131,7 @@ class Yoke(Step):
         return (prm[0] + pencil(), prm[1] + pencil()) + tuple(prm[2:])
 
     def reach(self):
-        return max(self.size, 1e-9)
+        return max(self.size, LEAST_REACH)
 
     def place(self, P, prm, ctx, sigma=None):
         qx, qy, ux, uy, dx, dy = prm

@@ -18,7 +18,7 @@ def book_number(x: float) -> str:
 _g = book_number
 
 
-__all__ = ["cycle_text", "cycle_steps", "book_number"]
+__all__ = ["cycle_text", "cycle_steps", "book_number", "answer_lines", "FORMS"]
 
 _FORMS = {
     "areas": "the turning-moment diagram given as its areas above and below the mean line",
@@ -26,6 +26,10 @@ _FORMS = {
     "table": "the turning moment given as straight segments",
     "press": "a punching press",
 }
+
+
+#: what each form of the diagram is, in words
+FORMS = _FORMS
 
 
 def _rpm(w: float) -> str:
@@ -78,19 +82,24 @@ def _flywheel(c) -> list:
     return out
 
 
-def cycle_text(scene, c) -> str:
-    """``solve``'s words for a :class:`~polygon_method.forces.flywheel_cycle.CycleEnergy`."""
-    lines = [scene.title or "Turning-moment diagram", _FORMS[c.form]]
-    lines += ["  " + w for w in c.words]
-    lines.append("")
-    lines += _summary(c)
+def answer_lines(c) -> list:
+    """The answers of ``solve``'s words, a line each (the page lists them)."""
+    lines = _summary(c)
     e_max, e_min = c.crossings[c.i_max], c.crossings[c.i_min]
     if c.form != "press":
         lines.append(
             f"  the energy greatest at {_where(e_max)}, least at {_where(e_min)} (the speed "
             "greatest and least there)"
         )
-    lines += _flywheel(c)
+    return lines + _flywheel(c)
+
+
+def cycle_text(scene, c) -> str:
+    """``solve``'s words for a :class:`~polygon_method.forces.flywheel_cycle.CycleEnergy`."""
+    lines = [scene.title or "Turning-moment diagram", _FORMS[c.form]]
+    lines += ["  " + w for w in c.words]
+    lines.append("")
+    lines += answer_lines(c)
     return "\n".join(lines)
 
 

@@ -12,11 +12,13 @@ from __future__ import annotations
 import math
 
 from ..solver.errorbound import SHOWN, USELESS
-from ..forces import FRAME, side_label
+from ..forces import FRAME
 from ..forces.bounds import NO_BOUND, force_bounds
 from ..forces.engine import efforts
 from ..common.numbers import fmt, quiet, sense_word
 from ..common.tolerances import FLOOR
+from .force_polygons import body_name as _body, polygon_items as _polygon_items
+from .force_words import acting, known_words, rest_blocks, symbol_words
 
 __all__ = ["forces_lines", "force_blocks", "bound_lines", "engine_lines"]
 
@@ -53,10 +55,6 @@ def _moment(c, scale, unit="N m"):
     return f"{fmt(abs(c))} {unit} {sense_word(c)}".rstrip() if c else f"0 {unit}"
 
 
-def _body(name):
-    return "the frame" if name == FRAME else name
-
-
 def _wheel(body):
     """A rolling body in words: "wheel CP", "rack R" (a rack's block)."""
     return f"rack {body[6:]}" if body.startswith("block ") else f"wheel {body}"
@@ -77,8 +75,14 @@ def _friction_lines(sol, f, F, M) -> list:
         return []
     out = [
         f"friction (Coulomb: mu = {fr.guides:g} at the guides, {fr.pins:g} at the pins "
-        "with a size in [pins], the friction circle mu r; against the sliding and the "
-        "relative turning; where nothing slides it is not determined and taken as 0):"
+        "with a size in [pins], the friction circle mu r; "
+        + (
+            "at rest, the limiting static friction against the motion about to start, "
+            "the effort to start it):"
+            if sol.scene.at_rest
+            else "against the sliding and the relative turning; where nothing slides it is "
+            "not determined and taken as 0):"
+        )
     ]
     seen = set()
     for it in f.friction:
@@ -91,6 +95,9 @@ def _friction_lines(sol, f, F, M) -> list:
             out.append(f"  {it[1]}: {_vec(it[2], F)} on {_body(it[0])}")
     out.append(
         f"  friction power: {fmt(quiet(f.friction_power, M))} W (lost; the driver supplies it)"
+        if not sol.scene.at_rest
+        else f"  friction power per rad/s of the crank: {fmt(quiet(f.friction_power, M))} W "
+        "(virtual: nothing moves yet)"
     )
     return out
 
@@ -173,7 +180,6 @@ def forces_lines(sol) -> list:
         return ["", refused]
     f = sol.forces
     F, M = _scales(sol, f)
-    u = sc.length_unit
     out = [
         "",
         "forces (D'Alembert; SI, ccw positive; a pin's force is the force on the first "
@@ -181,17 +187,7 @@ def forces_lines(sol) -> list:
     ]
     if sc.gravity is not None:
         out.append(f"gravity: {sc.gravity.text}")
-    if f.inertia:
-        out.append(
-            f"{'body':<10} {'mass (kg)':<10} {'inertia force -m a_G':<24} "
-            f"{'couple -I alpha':<20} offset h ({sc.units})"
-        )
-        for i in f.inertia:
-            h = "-" if i.offset is None else fmt(abs(quiet(i.offset, M / max(F, FLOOR))) / u)
-            out.append(
-                f"{i.body:<10} {fmt(i.mass):<10} {_vec(i.force, F):<24} "
-                f"{_moment(i.couple, M):<20} {h}"
-            )
+    out += _inertia_lines(sc, f, F, M)
     out.append(f"{'pin':<5} {'on':<10} {'by':<10} force")
     for p in f.pins:
         out.append(f"{p.point:<5} {p.on:<10} {_body(p.by):<10} {_vec(p.force, F)}")
@@ -211,7 +207,9 @@ def forces_lines(sol) -> list:
         f,
         F,
         M,
-        " (inertia, weights, loads and friction)"
+        f" (at rest: {acting(sc)}, no inertia)"
+        if sc.at_rest
+        else " (inertia, weights, loads and friction)"
         if sc.friction is not None
         else " (inertia, weights and loads)"
         if sc.masses or sc.gravity
@@ -229,6 +227,37 @@ def forces_lines(sol) -> list:
                 f"{st.condition:.3g} ({st.why}): the pin forces grow as 1/condition"
             )
     out += bound_lines(sol, f)
+    return out
+
+
+def _inertia_lines(sc, f, F, M) -> list:
+    """The inertia table (each massive body's force -m a_G, couple and offset); at rest,
+    the weights alone (each body's m g at G: nothing moves, no inertia)."""
+    u = sc.length_unit
+    if not f.inertia:
+        return []
+    if sc.at_rest:
+        g = sc.gravity
+        out = [
+            "at rest: no inertia (nothing moves); the weights m g at G"
+            + ("" if g is not None else ": none, the scene has no [gravity]")
+        ]
+        for i in f.inertia if g is not None else ():
+            w = (i.mass * g.g * g.direction[0], i.mass * g.g * g.direction[1])
+            out.append(
+                f"{i.body:<10} {fmt(i.mass) + ' kg':<10} weight {_vec(w, F)} at G "
+                f"({fmt(i.G[0] / u)}, {fmt(i.G[1] / u)}) {sc.units}"
+            )
+        return out
+    out = [
+        f"{'body':<10} {'mass (kg)':<10} {'inertia force -m a_G':<24} "
+        f"{'couple -I alpha':<20} offset h ({sc.units})"
+    ]
+    for i in f.inertia:
+        h = "-" if i.offset is None else fmt(abs(quiet(i.offset, M / max(F, FLOOR))) / u)
+        out.append(
+            f"{i.body:<10} {fmt(i.mass):<10} {_vec(i.force, F):<24} {_moment(i.couple, M):<20} {h}"
+        )
     return out
 
 
@@ -267,40 +296,6 @@ def bound_lines(sol, f) -> list:
     if any(not e < USELESS for _, e in shown):
         out.append(f"  ({NO_BOUND})")
     return out
-
-
-def _polygon_items(st, f, scale, F) -> list:
-    """A step's force polygons in words: each side at ``scale`` (cm), in the order drawn
-    (where the step draws several, each named by its body)."""
-    polys = st.polygons
-    items = []
-    for pg in polys:
-        items += _one_polygon(pg, f, scale, F, len(polys) > 1)
-    return items
-
-
-def _one_polygon(pg, f, scale, F, named) -> list:
-    tiny = 1e-9 * max(F, FLOOR)
-    sides = [
-        f"{side_label(sd, f.numbers, unicode=False)} {scale.cm(math.hypot(*sd.vector)):.2f}"
-        " cm" + (" (found)" if any(k == u for u, _ in pg.unknown) else "")
-        for k, sd in enumerate(pg.polygon)
-        if math.hypot(*sd.vector) > tiny
-    ]
-    whose = f" of {' and '.join(_body(b) for b in pg.bodies)}" if named else ""
-    items = [
-        f"force polygon{whose} at {scale.text}, from its pole, head to tail: "
-        + ", ".join(sides)
-        + "; it closes on the pole"
-    ]
-    across = [
-        f"{side_label(c, f.numbers, unicode=False)} {scale.cm(math.hypot(*c.vector)):.2f} cm"
-        for c, _, _ in pg.chords
-        if math.hypot(*c.vector) > tiny
-    ]
-    if across:
-        items.append("read across it (whole pin forces): " + ", ".join(across))
-    return items
 
 
 def engine_lines(sol) -> list:
@@ -379,8 +374,10 @@ def _inertia_blocks(sol, f, F, M) -> list:
     sc = sol.scene
     u = sc.length_unit
     blocks = [("h", "6. Inertia forces (D'Alembert)")]
+    if sc.at_rest and f.inertia:  # nothing moves: the weights alone
+        return [("h", "6. Weights at rest (no inertia)")] + rest_blocks(sc, f, F, _vec)
     if not f.inertia:  # an empty [masses]: the static force analysis of the loads
-        return blocks + [
+        return [("h", "6. No inertia forces (a static force analysis)")] + [
             (
                 "p",
                 "No masses (the scene's [masses] is empty): a static force analysis, no "
@@ -439,7 +436,7 @@ def _inertia_blocks(sol, f, F, M) -> list:
     return blocks
 
 
-def _groups_intro(f, scale) -> list:
+def _groups_intro(f, scale, sc=None) -> list:
     """Section 7's heading and paragraphs: how a group is solved, and the force scale and the
     bodies' numbers when the polygons are drawn at ``scale``."""
     blocks = [("h", "7. Forces, group by group (the construction's groups in reverse)")]
@@ -448,9 +445,9 @@ def _groups_intro(f, scale) -> list:
             "p",
             "Each group's bodies are statically determinate: the moments about "
             "the pins whose forces are not yet known give the pin force between them, "
-            "then each body's force balance the rest. 'Known' is the resultant of the "
-            "inertia force and couple, the weight, the loads and the forces of the "
-            "groups solved before (the moment about the origin).",
+            "then each body's force balance the rest. 'Known' is the resultant of "
+            + known_words(sc)
+            + " and the forces of the groups solved before (the moment about the origin).",
         )
     )
     if scale is not None:
@@ -460,8 +457,9 @@ def _groups_intro(f, scale) -> list:
                 "p",
                 f"Force scale: {scale.text}, one scale for every polygon (the "
                 "largest at most 12 cm across). The bodies are numbered as the books "
-                f"number links ({names}); F_32 is the force on 3 by 2, Fi_3 the "
-                "inertia force of 3, W_3 its weight. Each polygon starts at its pole "
+                f"number links ({names}); F_32 is the force on 3 by 2"
+                + symbol_words(sc)
+                + ". Each polygon starts at its pole "
                 "with the known forces head to tail and each outer pin's force square "
                 "to its link (^t, from that link's moments about the group's middle "
                 "pin); the lines of the forces along the links (^n) and of a guide's "
@@ -523,10 +521,14 @@ def _driver_blocks(f, F, M, sol=None) -> list:
     """Section 8: the driving torque, the shaking force and moment, the guides' forces (and
     the friction, where the scene gives it)."""
     fric = [] if sol is None else [line.strip() for line in _friction_lines(sol, f, F, M)]
+    what = "inertia, weights and loads" if sol is None else acting(sol.scene)
+    what += "" if "inertia" in what else ", no inertia"
     said = (
-        " (inertia, weights, loads and friction; its power balances theirs and the friction's loss)"
+        f" ({what}; its power balances theirs and the friction's loss)"
+        if fric and not sol.scene.at_rest
+        else f" ({what}; its power per rad/s of the motion about to start balances theirs)"
         if fric
-        else " (inertia, weights and loads; its power balances theirs)"
+        else f" ({what}; its power balances theirs)"
     )
     items = (
         fric
@@ -563,7 +565,7 @@ def force_blocks(sol, scale=None) -> list:
     f = sol.forces
     F, M = _scales(sol, f)
     blocks = _inertia_blocks(sol, f, F, M)
-    blocks += _groups_intro(f, scale)
+    blocks += _groups_intro(f, scale, sc)
     bounds = force_bounds(sol, f)
     for st in f.steps:
         blocks += _step_blocks(st, f, scale, F, M, bounds)

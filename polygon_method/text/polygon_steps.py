@@ -10,13 +10,12 @@ orders the sections.
 from __future__ import annotations
 
 import math
-import re
 
 from ..common.numbers import fixed as _fixed, fmt, sense_word
 from ..common.tolerances import ROUNDING
 from ..polygons.constructions import acceleration_constructions, velocity_constructions
 from ..polygons.scales import DRAWING_PRECISION_CM, extent
-from ..scene import FixedPath, GuideSlider, guide_words, split_name
+from ..scene import FixedPath, GuideSlider, guide_words
 from ..solver.derived import transmission_angle
 
 __all__ = [
@@ -80,15 +79,15 @@ def polar_words(v) -> str:
     m = math.hypot(*v)
     if m <= ROUNDING * (1 + abs(v[0]) + abs(v[1])):
         return "0"
-    ang = round(math.degrees(math.atan2(v[1], v[0])), 9) % 360  # no 1e-15 deg off an axis
+    ang = round(math.degrees(math.atan2(v[1], v[0])), 9) % 360  # no rounding noise off an axis
     return f"{fmt(m)} m/s at {fmt(ang, 4)} deg"
 
 
 def _vector_name(v) -> str:
-    """``v_CB`` style key for a construction Vector, with '-' where names have digits."""
-    m = re.match(r"^(v|a|vs|as)_([A-Z0-9]+)$", v.name)
-    if m:
-        return key_of(m.group(1), split_name(m.group(2)))
+    """``v_CB`` style key for a construction Vector, with '-' where names have digits (a
+    polygon's velocity or acceleration, by its points); a component's own name."""
+    if v.points:
+        return key_of(v.name[0], v.points)
     return v.name
 
 
@@ -96,12 +95,9 @@ def _vector_points(sol, v, c) -> tuple:
     """The points whose error bounds bound a construction vector's: the two of ``v_CB``,
     the one of ``v_C``; else those the step reads and finds (a centripetal, tangential or
     Coriolis component)."""
-    m = re.match(r"^(v|a)_([A-Z0-9]+)$", v.name)
     names = set(sol.P)
-    if m:
-        got = tuple(split_name(m.group(2)))
-        if got and all(p in names for p in got):
-            return got
+    if v.points and all(p in names for p in v.points):
+        return v.points
     st = sol.plan.steps[c.step] if 0 <= c.step < len(sol.plan.steps) else None
     got = tuple(p for p in ((*st.needs, *st.finds) if st is not None else ()) if p in names)
     return got or None
@@ -109,11 +105,7 @@ def _vector_points(sol, v, c) -> tuple:
 
 def _is_ground_relative(sol, v) -> bool:
     """A relative vector to a fixed point duplicates the absolute one."""
-    m = re.match(r"^(v|a)_([A-Z0-9]+)$", v.name)
-    if not m:
-        return False
-    names = split_name(m.group(2))
-    return len(names) == 2 and names[1] in sol.scene.ground
+    return len(v.points) == 2 and v.points[1] in sol.scene.ground
 
 
 def _readoff_rows(sol, constructions, scale, unit):

@@ -7,7 +7,7 @@ import math
 from ..solver.errorbound import NO_BOUND, SHOWN, USELESS, shown_bounds
 from .forces import forces_lines
 from ..solver.given import stated
-from ..common.numbers import fmt, fmt_angular
+from ..common.numbers import fmt, fmt_angular, sense
 from ..motion.solution import Solution, tidied
 
 __all__ = ["solution_text", "direction_deg"]
@@ -54,10 +54,16 @@ def _given_lines(sol: Solution) -> list[str]:
     else:
         lines.append(
             f"crank {inp.crank} at {math.degrees(inp.angle):g} deg{said}, "
-            f"{fmt_angular(inp.omega, 'rad/s')}"
+            + (
+                f"at rest, about to turn {sense(inp.omega)} (the velocities and "
+                f"accelerations below are per 1 rad/s {sense(inp.omega)} of the crank: the "
+                "virtual velocities of the power balance)"
+                if sc.at_rest
+                else f"{fmt_angular(inp.omega, 'rad/s')}"
+            )
             + (
                 ""
-                if "rad/s" in inp.speed_text and inp.given is None
+                if ("rad/s" in inp.speed_text and inp.given is None) or sc.at_rest
                 else f" ({'from ' if inp.given else ''}{stated(inp)})"
             )
             + (f", {fmt_angular(inp.alpha, 'rad/s^2')}" if inp.alpha else "")
@@ -232,7 +238,11 @@ def _torque_lines(sol: Solution) -> list[str]:
     return [
         "",
         f"input torque on {sc.input.crank}: {fmt_angular(t, 'N m')} "
-        "(power balance, no friction or inertia)",
+        + (
+            "(the loads' power balance, without the weights)"
+            if sc.at_rest
+            else "(power balance, no friction or inertia)"
+        ),
     ]
 
 

@@ -145,6 +145,13 @@ def _speed_working(sol) -> tuple[str, str]:
     lines = working(sol.plan, fmt)
     if lines is not None:  # the motion given on another quantity: scaled from 1 rad/s
         return "; ".join(lines), result
+    if sol.scene.at_rest:  # the polygons per rad/s: the virtual velocities
+        return (
+            f"at rest ({name} = 0, about to turn {sense_word(w)}): the polygons are drawn "
+            f"for {name} = {result}, the virtual velocities of the power balance (per rad/s "
+            "of the crank; no inertia)",
+            result,
+        )
     m = re.match(r"^\s*([-+]?[0-9.]+(?:[eE][-+]?\d+)?)\s*([^\s]*)", inp.speed_text)
     number, unit = (m.group(1), m.group(2).lower()) if m else ("", "")
     if unit in ("rpm", "r.p.m.", "r.p.m", "rev/min"):

@@ -31,6 +31,7 @@ import numpy as np
 
 from ..common.errors import PolygonMethodError, SceneError
 from ..common.tolerances import ROUNDING
+from ..common.units import ANSWER_UNITS
 from ..solver.kinematics import evaluate
 from ..linkage import four_bar_of, grashof, slider_crank_of, slotted_of
 from ..solver.compiler import compile_plan
@@ -210,26 +211,6 @@ def _put(raw, path, value):
 # --------------------------------------------------------------------------- questions
 
 
-_UNITS = {
-    "v": "m/s",
-    "a": "m/s^2",
-    "omega": "rad/s",
-    "alpha": "rad/s^2",
-    "vs": "m/s",
-    "as": "m/s^2",
-    "ac": "m/s^2",
-    "rub": "m/s",
-    "torque": "N m",
-    "vI": "m/s",
-    "aI": "m/s^2",
-    "F": "N",
-    "N": "N",
-    "Fc": "N",
-    "vu": "m/s",
-    "au": "m/s^2",
-}
-
-
 def questions(scene: Scene) -> tuple:
     """What the answer key gives: the base scene's ``[answers]`` keys where it has them
     (centres aside), else every moving point's speed and acceleration, every moving link's
@@ -242,7 +223,7 @@ def questions(scene: Scene) -> tuple:
                 a.key,
                 a.kind,
                 tuple(a.names),
-                _UNITS[a.kind],
+                ANSWER_UNITS[a.kind],
                 a.kind in ("omega", "alpha", "vs", "as", "torque"),
             )
             for a in asked

@@ -7,12 +7,14 @@ vectors and the book's words (:class:`..base.Construction`)."""
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 from ..base import (
     Construction,
     DirectionLine,
     Vector,
     absolute,
+    add,
     image_label,
     perp,
     pole_text,
@@ -20,6 +22,7 @@ from ..base import (
     sub,
     unit,
 )
+from ..relations import rigid_acceleration, rigid_velocity
 
 __all__ = ["construction"]
 
@@ -29,110 +32,105 @@ def construction(step, sol, ph):
     return (_velocity if ph == "velocity" else _acceleration)(step, sol, ph)
 
 
-def _common(step, sol, ph):
-    """What both polygons' constructions share: the points, the auxiliary point S and
-    its image, the labels and the words of S."""
+@dataclass(frozen=True)
+class _Goodman:
+    """What both polygons' constructions share: the points (``V``: the vertices in the
+    order i, j, m of the auxiliary point; ``K``: the known points they hang from), the
+    auxiliary point S and its image, the labels and the words of S."""
+
+    step: object
+    sol: object
+    ph: str
+    i: int
+    j: int
+    m: int
+    S: tuple
+    V: tuple
+    K: tuple
+    D: dict
+    w: float
+    s_lab: str
+    img_s: tuple
+    aux: str
+
+    @property
+    def cond(self):
+        """The step's condition (1 where the solution has none)."""
+        return self.sol.conditions.get(self.step.index, 1.0)
+
+    def lab(self, p):
+        """The image label of point ``p`` on this polygon."""
+        return image_label(self.sol, p, self.ph)
+
+    def perp_to(self, a, b):
+        """The unit direction perpendicular to ``ab`` on the configuration (each a point's
+        name or a place: S)."""
+        P = self.sol.P
+        return unit(
+            *perp(sub(P[b] if isinstance(b, str) else b, P[a] if isinstance(a, str) else a))
+        )
+
+    def record(self, given, lines, found, text):
+        """The step's :class:`Construction` on this polygon."""
+        return Construction(
+            self.step.index,
+            self.step.title,
+            self.ph,
+            ", ".join(self.lab(p) for p in self.step.points),
+            self.D[self.V[2]],
+            given,
+            lines,
+            found,
+            text,
+            self.cond,
+            ((self.s_lab, self.img_s),),
+        )
+
+
+def _common(step, sol, ph) -> _Goodman:
+    """The points, the auxiliary point S and its image (S a point of the plate: the rigid
+    body's relations from the triad's first point), the labels and the words of S."""
     P = sol.P
     i, j, m, S = step._aux(P)
-    pts, kn, lk = step.points, step.knowns, step.links_
-    Vi, Vj, Vm = pts[i], pts[j], pts[m]
-    Ki, Kj, Km = kn[i], kn[j], kn[m]
-    cond = sol.conditions.get(step.index, 1.0)
-    lab = lambda p: image_label(sol, p, ph)  # noqa: E731
+    pts, kn = step.points, step.knowns
     w = sol.W[step.plate]
     prime = "'" if ph == "acceleration" else ""
     s_lab = step._aux_label(sol) + prime
-    perp_to = lambda a, b: unit(*perp(sub(P[b], P[a])))  # noqa: E731
     D = sol.V if ph == "velocity" else sol.A
     x1, y1 = P[pts[0]]
-    ref = D[pts[0]]
     if ph == "velocity":
-        img_s = (ref[0] - w * (S[1] - y1), ref[1] + w * (S[0] - x1))
+        img_s = add(D[pts[0]], rigid_velocity(S[0] - x1, S[1] - y1, w))
     else:
-        al = sol.Al[step.plate]
-        img_s = (
-            ref[0] - al * (S[1] - y1) - w * w * (S[0] - x1),
-            ref[1] + al * (S[0] - x1) - w * w * (S[1] - y1),
-        )
-    aux = f"S, where {Ki}{Vi} and {Kj}{Vj} (produced) meet, a point of the {step._plate_words}"
-    return (
-        P,
-        i,
-        j,
-        m,
-        S,
-        pts,
-        kn,
-        lk,
-        Vi,
-        Vj,
-        Vm,
-        Ki,
-        Kj,
-        Km,
-        cond,
-        lab,
-        w,
-        s_lab,
-        perp_to,
-        D,
-        img_s,
-        aux,
+        img_s = add(D[pts[0]], rigid_acceleration(S[0] - x1, S[1] - y1, w, sol.Al[step.plate]))
+    aux = (
+        f"S, where {kn[i]}{pts[i]} and {kn[j]}{pts[j]} (produced) meet, a point of the "
+        f"{step._plate_words}"
     )
+    V, K = (pts[i], pts[j], pts[m]), (kn[i], kn[j], kn[m])
+    return _Goodman(step, sol, ph, i, j, m, S, V, K, D, w, s_lab, img_s, aux)
 
 
 def _velocity(step, sol, ph):
     """Goodman's construction on the velocity polygon."""
-    (
-        P,
-        i,
-        j,
-        m,
-        S,
-        pts,
-        kn,
-        lk,
-        Vi,
-        Vj,
-        Vm,
-        Ki,
-        Kj,
-        Km,
-        cond,
-        lab,
-        w,
-        s_lab,
-        perp_to,
-        D,
-        img_s,
-        aux,
-    ) = _common(step, sol, ph)
+    g = _common(step, sol, ph)
+    (Vi, Vj, Vm), (Ki, Kj, Km), D, lab, s_lab = g.V, g.K, g.D, g.lab, g.s_lab
+    pts, kn = step.points, step.knowns
+
+    def square(through, a, b):  # through a point's image (S's where ``through`` is None)
+        start, label = (g.img_s, s_lab) if through is None else (D[through], lab(through))
+        d = g.perp_to(g.S if a == "S" and through is None else a, b)
+        return DirectionLine(start, d, label, f"perpendicular to {a}{b}", mark=f"\u22a5 {a}{b}")
+
     lines = (
-        DirectionLine(
-            D[Ki], perp_to(Ki, Vi), lab(Ki), f"perpendicular to {Ki}{Vi}", mark=f"\u22a5 {Ki}{Vi}"
-        ),
-        DirectionLine(
-            D[Kj], perp_to(Kj, Vj), lab(Kj), f"perpendicular to {Kj}{Vj}", mark=f"\u22a5 {Kj}{Vj}"
-        ),
-        DirectionLine(
-            img_s,
-            unit(*perp(sub(P[Vm], S))),
-            s_lab,
-            f"perpendicular to S{Vm}",
-            mark=f"\u22a5 S{Vm}",
-        ),
-        DirectionLine(
-            D[Km], perp_to(Km, Vm), lab(Km), f"perpendicular to {Km}{Vm}", mark=f"\u22a5 {Km}{Vm}"
-        ),
-        DirectionLine(
-            D[Vm], perp_to(Vm, Vi), lab(Vm), f"perpendicular to {Vm}{Vi}", mark=f"\u22a5 {Vm}{Vi}"
-        ),
-        DirectionLine(
-            D[Vm], perp_to(Vm, Vj), lab(Vm), f"perpendicular to {Vm}{Vj}", mark=f"\u22a5 {Vm}{Vj}"
-        ),
+        square(Ki, Ki, Vi),
+        square(Kj, Kj, Vj),
+        square(None, "S", Vm),
+        square(Km, Km, Vm),
+        square(Vm, Vm, Vi),
+        square(Vm, Vm, Vj),
     )
     text = (
-        f"auxiliary point (Goodman): {aux}, moves perpendicular to both lines; "
+        f"auxiliary point (Goodman): {g.aux}, moves perpendicular to both lines; "
         f"through {pole_text(sol, Ki, ph)} draw a line perpendicular to {Ki}{Vi}, "
         f"through {pole_text(sol, Kj, ph)} one perpendicular to {Kj}{Vj}: they "
         f"meet at {s_lab}; through {s_lab} draw a line perpendicular to S{Vm}, "
@@ -145,19 +143,7 @@ def _velocity(step, sol, ph):
         + (relative(sol, Vi, Vm, D, ph), relative(sol, Vj, Vm, D, ph))
         + tuple(absolute(sol, V, D, ph) for V in pts)
     )
-    return Construction(
-        step.index,
-        step.title,
-        ph,
-        ", ".join(lab(p) for p in pts),
-        D[Vm],
-        (),
-        lines,
-        found,
-        text,
-        cond,
-        ((s_lab, img_s),),
-    )
+    return g.record((), lines, found, text)
 
 
 def _centripetal(P, start, X, Y, om, name):
@@ -210,30 +196,10 @@ def _acceleration_words(step, sol, ph, aux, s_lab, lab, V, K):
 def _acceleration(step, sol, ph):
     """Goodman's construction on the acceleration polygon (the centripetal components
     first, omega from the velocity polygon)."""
-    (
-        P,
-        i,
-        j,
-        m,
-        S,
-        pts,
-        kn,
-        lk,
-        Vi,
-        Vj,
-        Vm,
-        Ki,
-        Kj,
-        Km,
-        cond,
-        lab,
-        w,
-        s_lab,
-        perp_to,
-        D,
-        img_s,
-        aux,
-    ) = _common(step, sol, ph)
+    g = _common(step, sol, ph)
+    (Vi, Vj, Vm), (Ki, Kj, Km), D, lab, w, S = g.V, g.K, g.D, g.lab, g.w, g.S
+    P, pts, kn, lk, perp_to = sol.P, step.points, step.knowns, step.links_, g.perp_to
+    i, j, m = g.i, g.j, g.m
     W = sol.W
 
     def cen(start, X, Y, om, name):
@@ -243,21 +209,21 @@ def _acceleration(step, sol, ph):
     cj = cen(D[Kj], Vj, Kj, W[lk[j]], f"{Vj}{Kj}")
     csi = cen(ci.end, S, Vi, w, f"S{Vi}")
     csj = cen(cj.end, S, Vj, w, f"S{Vj}")
-    cm = cen(img_s, Vm, S, w, f"{Vm}S")
+    cm = cen(g.img_s, Vm, S, w, f"{Vm}S")
     ck = cen(D[Km], Vm, Km, W[lk[m]], f"{Vm}{Km}")
     cmi = cen(D[Vm], Vi, Vm, w, f"{Vi}{Vm}")
     cmj = cen(D[Vm], Vj, Vm, w, f"{Vj}{Vm}")
     lines = (
         _square(csi.end, perp_to(Ki, Vi), f"S{Vi}", Ki, Vi),
         _square(csj.end, perp_to(Kj, Vj), f"S{Vj}", Kj, Vj),
-        _square(cm.end, unit(*perp(sub(P[Vm], S))), f"{Vm}S", "S", Vm),
+        _square(cm.end, perp_to(S, Vm), f"{Vm}S", "S", Vm),
         _square(ck.end, perp_to(Km, Vm), f"{Vm}{Km}", Km, Vm),
         _square(cmi.end, perp_to(Vm, Vi), f"{Vi}{Vm}", Vm, Vi),
         _square(cmj.end, perp_to(Vm, Vj), f"{Vj}{Vm}", Vm, Vj),
         _square(ci.end, perp_to(Ki, Vi), f"{Vi}{Ki}", Ki, Vi),
         _square(cj.end, perp_to(Kj, Vj), f"{Vj}{Kj}", Kj, Vj),
     )
-    text = _acceleration_words(step, sol, ph, aux, s_lab, lab, (Vi, Vj, Vm), (Ki, Kj, Km))
+    text = _acceleration_words(step, sol, ph, g.aux, g.s_lab, lab, (Vi, Vj, Vm), (Ki, Kj, Km))
     found = (
         tuple(
             Vector(
@@ -273,16 +239,4 @@ def _acceleration(step, sol, ph):
         + tuple(relative(sol, V, K, D, ph) for V, K in zip(pts, kn))
         + tuple(absolute(sol, V, D, ph) for V in pts)
     )
-    return Construction(
-        step.index,
-        step.title,
-        ph,
-        ", ".join(lab(p) for p in pts),
-        D[Vm],
-        (ci, cj, csi, csj, cm, ck, cmi, cmj),
-        lines,
-        found,
-        text,
-        cond,
-        ((s_lab, img_s),),
-    )
+    return g.record((ci, cj, csi, csj, cm, ck, cmi, cmj), lines, found, text)

@@ -34,6 +34,9 @@ from __future__ import annotations
 from ...common.tolerances import CONVERGED, LEAST_STEP, ONE_ASSEMBLY
 import math
 
+from ..construction import add
+from ..relations import rigid_acceleration, rigid_velocity
+
 __all__ = [
     "solve3",
     "det3",
@@ -162,7 +165,7 @@ def velocity(V, K, VK):
     vv, wl = [], []
     for i in range(3):
         dx, dy = V[i][0] - x1, V[i][1] - y1
-        ex, ey = vx - w * dy, vy + w * dx
+        ex, ey = add((vx, vy), rigid_velocity(dx, dy, w))
         vv.append((ex, ey))
         rx, ry = V[i][0] - K[i][0], V[i][1] - K[i][1]
         wl.append((rx * (ey - VK[i][1]) - ry * (ex - VK[i][0])) / (rx * rx + ry * ry))
@@ -188,7 +191,7 @@ def acceleration(V, K, VV, VK, AK, w):
     aa, all_ = [], []
     for i in range(3):
         dx, dy = V[i][0] - x1, V[i][1] - y1
-        ex, ey = ax - al * dy - w2 * dx, ay + al * dx - w2 * dy
+        ex, ey = add((ax, ay), rigid_acceleration(dx, dy, w, al))
         aa.append((ex, ey))
         rx, ry = V[i][0] - K[i][0], V[i][1] - K[i][1]
         all_.append((rx * (ey - AK[i][1]) - ry * (ex - AK[i][0])) / (rx * rx + ry * ry))

@@ -1,0 +1,58 @@
+// The turning-moment diagram's page: moves the cursor over the plots and writes the values
+// at it. Everything shown is in the page's data, computed and formatted by the tool.
+(function () {
+  "use strict";
+  const D = JSON.parse(document.getElementById("cycle").textContent);
+  const slider = document.getElementById("angle");
+  const now = document.getElementById("angle-now");
+  const body = document.querySelector("#values tbody");
+  const cells = D.rows.map(function (row) {
+    const tr = document.createElement("tr");
+    const th = document.createElement("th");
+    const td = document.createElement("td");
+    th.textContent = row[0];
+    tr.appendChild(th);
+    tr.appendChild(td);
+    body.appendChild(tr);
+    return td;
+  });
+  const plots = D.cursor.map(function (c) {
+    return {
+      line: document.getElementById(c[0] + "-cursor"),
+      dot: document.getElementById(c[0] + "-dot"),
+      xs: c[1],
+      ys: c[2],
+    };
+  });
+  function show(k) {
+    plots.forEach(function (p) {
+      p.line.setAttribute("x1", p.xs[k]);
+      p.line.setAttribute("x2", p.xs[k]);
+      p.dot.setAttribute("cx", p.xs[k]);
+      p.dot.setAttribute("cy", p.ys[k]);
+    });
+    D.rows.forEach(function (row, i) {
+      cells[i].textContent = row[1][k];
+    });
+    now.textContent = D.rows[0][1][k];
+  }
+  slider.addEventListener("input", function () {
+    show(Number(slider.value));
+  });
+  const play = document.getElementById("play");
+  let timer = null;
+  play.addEventListener("click", function () {
+    if (timer !== null) {
+      clearInterval(timer);
+      timer = null;
+      play.textContent = "▶ play";
+      return;
+    }
+    play.textContent = "❚❚ pause";
+    timer = setInterval(function () {
+      slider.value = (Number(slider.value) + 1) % D.n;
+      show(Number(slider.value));
+    }, D.n > 40 ? 60 : 500);
+  });
+  show(Number(slider.value));
+})();

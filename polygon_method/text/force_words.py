@@ -1,0 +1,98 @@
+"""The force chapter's words of what acts on a mechanism: inertia, weights, loads, friction
+(a static force analysis has the loads alone; a mechanism at rest its weights and loads,
+no inertia), for the ``steps`` document's sections 6 to 8."""
+
+from __future__ import annotations
+
+from ..common.numbers import fmt
+
+__all__ = ["acting", "known_words", "rest_blocks", "symbol_words"]
+
+
+def rest_blocks(sc, f, F, vec) -> list:
+    """Section 6 at rest: no inertia (nothing moves), each body's weight at G."""
+    g = sc.gravity
+    said = (
+        f"Gravity: {g.text}, each weight m g at G (the centre of mass, a point of the body)."
+        if g is not None
+        else "No gravity (the scene gives no [gravity]): the masses weigh nothing here."
+    )
+    blocks = [
+        (
+            "p",
+            "At rest: nothing moves, so no body has an inertia force or couple (a_G = 0, "
+            f"alpha = 0); the weights and the loads alone act. {said}",
+        )
+    ]
+    if g is None:
+        return blocks
+    rows = []
+    u = sc.length_unit
+    for i in f.inertia:
+        w = (i.mass * g.g * g.direction[0], i.mass * g.g * g.direction[1])
+        at = f"({fmt(i.G[0] / u)}, {fmt(i.G[1] / u)})"
+        rows.append(
+            (
+                i.body,
+                fmt(i.mass),
+                i.how.split("; I_G")[0],
+                at,
+                f"{fmt(i.mass)} x {fmt(g.g)}",
+                vec(w, F),
+            )
+        )
+    header = ("body", "m (kg)", "G", f"G ({sc.units})", "m g", "weight W")
+    return blocks + [("table", header, rows)]
+
+
+def acting(sc) -> str:
+    """What acts on the mechanism, in words: "inertia, weights and loads", "the weights and
+    loads" at rest, "the loads alone" in a static force analysis (no mass).
+
+    >>> from types import SimpleNamespace as S
+    >>> acting(S(masses=(1,), at_rest=False, gravity=1, loads=(1,), indicator=None,
+    ...          friction=None))
+    'inertia, weights and loads'
+    >>> acting(S(masses=(), at_rest=False, gravity=None, loads=(1,), indicator=None,
+    ...          friction=None))
+    'the loads alone'
+    """
+    kinds = []
+    if sc.masses and not sc.at_rest:
+        kinds.append("inertia")
+    if sc.masses and sc.gravity is not None:
+        kinds.append("weights")
+    if sc.loads or sc.indicator is not None:
+        kinds.append("loads")
+    if sc.friction is not None:
+        kinds.append("friction")
+    if not kinds:
+        return "no load: nothing to hold"
+    if len(kinds) == 1:
+        return f"the {kinds[0]} alone" if kinds[0] != "inertia" else "inertia alone"
+    words = ", ".join(kinds[:-1]) + " and " + kinds[-1]
+    return words if kinds[0] == "inertia" else "the " + words
+
+
+def known_words(sc) -> str:
+    """What a body's known resultant holds (section 7): its inertia force and couple (not
+    at rest, nor without masses), its weight (with gravity), the loads."""
+    if sc is None:
+        return "the inertia force and couple, the weight, the loads"
+    parts = []
+    if sc.masses and not sc.at_rest:
+        parts.append("the inertia force and couple")
+    if sc.masses and sc.gravity is not None:
+        parts.append("the weight")
+    parts.append("the loads")
+    return ", ".join(parts) + (" (no inertia: at rest)" if sc.at_rest else "")
+
+
+def symbol_words(sc) -> str:
+    """The symbols of the known forces named on the polygons: Fi_3, W_3, where they act."""
+    inertia = sc is None or (sc.masses and not sc.at_rest)
+    weight = sc is None or (sc.masses and sc.gravity is not None)
+    words = (["Fi_3 the inertia force of 3"] if inertia else []) + (
+        ["W_3 its weight" if inertia else "W_3 the weight of 3"] if weight else []
+    )
+    return "".join(f", {w}" for w in words)
