@@ -93,7 +93,9 @@ def _magnitude(sol, side):
     if side.what == "guide":
         return abs(next(g.normal for g in f.guides if g.point == side.point))
     if side.what == "contact":  # a rolling contact's force (the teeth's load), either body
-        return next(c.load for c in f.contacts if {c.wheel, c.by} == {side.on, side.by})
+        c = next(c for c in f.contacts if {c.wheel, c.by} == {side.on, side.by})
+        # its parts: normal to the contact (n), along it (t)
+        return {"": c.load, "n": abs(c.normal), "t": abs(c.tangential)}[side.part]
     F = f.pin(side.point, side.on, side.by)  # the solved pin force, by the sign rule
     if not side.part:
         return math.hypot(*F)
@@ -155,14 +157,21 @@ def test_each_polygon_side_measures_its_force_and_each_polygon_closes(scene):
                     length == pytest.approx(_magnitude(sol, c) / fs.per_cm, abs=tol)
                     for c, _, _ in st.chords
                 )
-        # the unknowns' direction lines pass through the pole, where the polygon closes
+        # the unknowns' direction lines run through both ends of their sides: the first's
+        # and the last's through the pole, where the polygon closes (a driving wheel's two
+        # contact parts, the last two sides, meet at the corner between them)
         pole = _centre(svg, f"{tag}-pole")
+        corners = [pole]
+        for k, side in enumerate(st.polygon):
+            dx, dy = (side.vector[0] / fs.per_cm * CM, -side.vector[1] / fs.per_cm * CM)
+            corners.append((corners[-1][0] + dx, corners[-1][1] + dy))
         for k, _ in st.unknown:
             (x1, y1), (x2, y2) = svg.path(f"{tag}-line-{k}")[:2]
-            d = abs((x2 - x1) * (pole[1] - y1) - (y2 - y1) * (pole[0] - x1)) / math.hypot(
-                x2 - x1, y2 - y1
-            )
-            assert d / CM < tol * 10
+            for px, py in corners[k : k + 2]:
+                d = abs((x2 - x1) * (py - y1) - (y2 - y1) * (px - x1)) / math.hypot(
+                    x2 - x1, y2 - y1
+                )
+                assert d / CM < tol * 10
     assert drawn_polygons >= 1
 
 
