@@ -15,74 +15,15 @@ from dataclasses import replace
 from ..common.tolerances import FLOOR, SAME
 from ..common.errors import PolygonMethodError, SceneError
 from ..forces.engine import efforts, slider_crank
+from ..linkage.engine_values import ENGINE_KEYS, INSTANT as _INSTANT, engine_value
 from ..linkage.flywheel import turning_moment
-from ..motion.solution import solve
 from .verdicts import ROUNDING, Verdict, cs_slips
 
 __all__ = ["ENGINE_KEYS", "engine_value", "engine_verdict"]
 
-#: answer key -> (unit kind, SI unit, what it is)
-ENGINE_KEYS = {
-    "piston_effort": ("force", "N", "the piston effort"),
-    "crank_effort": ("force", "N", "the crank effort"),
-    "turning_moment": ("torque", "N m", "the turning moment on the crank shaft"),
-    "T_mean": ("torque", "N m", "the mean turning moment"),
-    "dE_max": ("energy", "J", "the maximum fluctuation of energy"),
-    "I_flywheel": ("moment_of_inertia", "kg m^2", "the flywheel's moment of inertia"),
-    "m_flywheel": ("mass", "kg", "the flywheel's mass"),
-    "rod_thrust": ("force", "N", "the thrust in the connecting rod"),
-    "side_thrust": ("force", "N", "the side thrust on the cylinder walls"),
-    "shaking_force": ("force", "N", "the shaking force on the frame"),
-    "shaking_moment": ("torque", "N m", "the shaking moment about the frame's origin"),
-}
-#: the keys read from the force analysis at the instant (the rest from the cycle)
-_INSTANT = (
-    "piston_effort",
-    "crank_effort",
-    "turning_moment",
-    "rod_thrust",
-    "side_thrust",
-    "shaking_force",
-    "shaking_moment",
-)
-
 
 def _refuse(sol, ans, why):
     raise SceneError(f"{ans.key}: {why}", key=f"[answers] {ans.key}", line=ans.line)
-
-
-def engine_value(sol, key, scene=None):
-    """The exact value of ``key`` for ``scene`` (default the solution's), or None where the
-    scene cannot give it."""
-    sc = scene or sol.scene
-    if key in _INSTANT:
-        s = sol if scene is None else solve(sc)
-        if not sc.has_forces:
-            return None
-        if key == "shaking_force":
-            return math.hypot(*s.forces.shaking_force)
-        if key == "shaking_moment":
-            return s.forces.shaking_moment
-        e = efforts(sc, s.plan, s.P, s.forces)
-        if e is None:
-            return None
-        return abs(
-            {
-                "piston_effort": e.F_P,
-                "crank_effort": e.F_T,
-                "turning_moment": e.T,
-                "rod_thrust": e.F_Q,
-                "side_thrust": e.F_N,
-            }[key]
-        )
-    tm = turning_moment(sc)
-    if key == "T_mean":  # a mean within rounding of nought (SAME of the greatest) is nought
-        return tm.mean if abs(tm.mean) > SAME * max(abs(tm.T_max), abs(tm.T_min)) else 0.0
-    if key == "dE_max":
-        return tm.dE_max
-    if tm.flywheel is None:
-        return None
-    return tm.flywheel[2] if key == "I_flywheel" else tm.flywheel[3]
 
 
 def _slips(sol, key, correct):

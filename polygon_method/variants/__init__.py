@@ -34,6 +34,7 @@ from ..common.tolerances import ROUNDING
 from ..common.units import ANSWER_UNITS
 from ..solver.kinematics import evaluate
 from ..linkage import four_bar_of, grashof, slider_crank_of, slotted_of
+from ..linkage.engine_values import ENGINE_KEYS
 from ..solver.compiler import compile_plan
 from ..scene import Scene, parse_scene, scene_from_table, scene_table
 from ..motion.solution import solve, tidied
@@ -223,8 +224,8 @@ def questions(scene: Scene) -> tuple:
                 a.key,
                 a.kind,
                 tuple(a.names),
-                ANSWER_UNITS[a.kind],
-                a.kind in ("omega", "alpha", "vs", "as", "torque"),
+                ANSWER_UNITS[a.kind] if a.kind in ANSWER_UNITS else ENGINE_KEYS[a.kind][1],
+                a.kind in ("omega", "alpha", "vs", "as", "torque", "torque2"),
             )
             for a in asked
         )

@@ -7,12 +7,25 @@ from __future__ import annotations
 import csv
 import io
 
+from ..common.errors import SceneError
 from ..common.numbers import fmt, sense
+from ..linkage.engine_values import ENGINE_KEYS, engine_value
 from ..text.words import given
 
 
 def answer(sol, q) -> float:
-    """The exact value of a question ``(key, kind, names, unit, signed)`` in ``sol``."""
+    """The exact value of a question ``(key, kind, names, unit, signed)`` in ``sol`` (an
+    engine's key from the engine chapter's values: a variant that cannot give it is
+    refused in one line naming the key)."""
+    if q[1] in ENGINE_KEYS:
+        v = engine_value(sol, q[0])
+        if v is None:
+            raise SceneError(
+                f"{q[0]}: a variant of this scene does not give it (no forces, or no "
+                "flywheel); leave it out of the base scene's [answers]",
+                key=f"[answers] {q[0]}",
+            )
+        return float(v)
     return float(sol.value(q[1], q[2]))
 
 
@@ -90,6 +103,13 @@ _QUESTION_WORDS = {
     "N": "the guide's normal force on block {0}",
     "vu": "the velocity of the point of the guide under the block {0}",
     "au": "the acceleration of the point of the guide under the block {0}",
+    "Fc": "the contact force between {0}",
+    "Fi": "the inertia force of {0}",
+    "Ci": "the inertia couple of {0}",
+    "h": "the offset of {0}'s inertia force from its centre of mass",
+    "force": "the driver's force along its guide",
+    "force2": "the second input's force along its guide",
+    "torque2": "the second input's torque",
 }
 
 
@@ -101,6 +121,8 @@ def _question(q) -> str:
             if kind == "v"
             else "the acceleration of {0} relative to {1}"
         ).format(*names)
+    elif kind in ENGINE_KEYS:
+        what = ENGINE_KEYS[kind][2]
     else:
         what = _QUESTION_WORDS[kind].format(
             "".join(names)
