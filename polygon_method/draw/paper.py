@@ -20,6 +20,7 @@ polygon_method.common.errors.PolygonMethodError: --paper: panel 1 is 30 x 10 cm:
 
 from __future__ import annotations
 
+from bisect import bisect_right
 from dataclasses import dataclass
 from itertools import permutations
 
@@ -160,10 +161,16 @@ def _front(items, paper):
                             if _fitting(w, h, paper) is not None:
                                 made.append((w, h, (across, cut - i, a[2], b[2]), a, b))
             made.sort(key=lambda m: m[2])
-            kept = []
+            kept, ws, hs = [], [], []  # (ws, hs): the staircase of the kept, w up, h down
             for m in made:
-                if not any(q[0] <= m[0] and q[1] <= m[1] for q in kept):
-                    kept.append(m)
+                at = bisect_right(ws, m[0])  # the kept no wider: the lowest of them
+                if at and hs[at - 1] <= m[1]:
+                    continue
+                kept.append(m)
+                end = at
+                while end < len(ws) and hs[end] >= m[1]:  # those it now beats
+                    end += 1
+                ws[at:end], hs[at:end] = [m[0]], [m[1]]
             fronts[i, j] = [(w, h, rank, _placed(a, b, rank[0])) for w, h, rank, a, b in kept]
     return fronts[0, n]
 
