@@ -5,6 +5,7 @@ every link's length."""
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -130,7 +131,7 @@ def test_a_crank_that_turns_fully_has_no_unbounded_extreme():
     assert not any(e.max_unbounded or e.min_unbounded for e in s.extremes)
 
 
-from hypothesis import HealthCheck, given, settings  # noqa: E402
+from hypothesis import HealthCheck, event, given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 
 from polygon_method import PolygonMethodError  # noqa: E402
@@ -174,8 +175,13 @@ def test_fuzz_sweeps_near_change_points(shape, angle, lo, span, n):
     try:
         sc = parse_scene(text)
         res = sweep(sc, np.radians(np.linspace(lo, lo + span, n)))
-    except PolygonMethodError:
+    except PolygonMethodError as exc:  # a refusal: one line, naming what it refuses
+        line = exc.one_line()
+        assert line.strip() and "\n" not in line, line
+        assert not re.search(r"\b(nan|inf)\b", line.lower()), line
+        event("refused")
         return
+    event("swept")
     for lk in sc.links:
         (px, py), (qx, qy) = res.P[lk.p], res.P[lk.q]
         off = np.abs(np.hypot(qx - px, qy - py) - lk.length)
