@@ -209,7 +209,7 @@ def _areas_panels(c):
     lobes = [a * math.pi / 2 for a in c.areas]  # a half sine of the lobe's area, unit width
     p = _Plot(0.0, float(n), np.array(lobes + [0.0]))
     body = p.frame(
-        "the areas above and below the mean line (a sketch: no widths given)",
+        "the areas about the mean line (a sketch)",
         "torque",
         "crossing",
         ticks,
