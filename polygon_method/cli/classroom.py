@@ -267,24 +267,12 @@ def _graded_against(named, scene, sol, tols, book):
 def _cmd_class(args, scene, sol, files) -> int:
     """A whole class: a row per answer file, the summary, the gradebook."""
     from ..check import check_answers, choose_tolerance, tolerances
-    from ..check.classroom import (
-        Row,
-        class_dict,
-        class_text,
-        gradebook_csv,
-        gradebook_markdown,
-        summary_text,
-    )
+    from ..check.classroom import Row
     from ..scene import load_answers
 
-    book = getattr(args, "gradebook", None)
-    if book and not book.lower().endswith((".csv", ".md")):
-        raise SceneError(f"--gradebook {book}: the file must end in .csv or .md", key="--gradebook")
     variants = getattr(args, "variants", None)
     vbook = _VariantBook(variants, scene) if variants else None
-    # every file read is an input the gradebook must not be written over
-    inputs = [args.scene, *files, *(vbook.files if vbook else ())]
-    targets = check_outputs([(book, "--gradebook")], protect=inputs) if book else []
+    book, targets = class_gradebook(args, files, vbook)
     tols = tolerances(sol)
     stated = _command_line_tolerance(getattr(args, "tolerance", None))
     rows = []
@@ -321,21 +309,47 @@ def _cmd_class(args, scene, sol, files) -> int:
                     variant=(printable(named) if named else "") if vbook else None,
                 )
             )
+    return class_report(args, scene, rows, len(files), book, targets, scene.tolerance)
+
+
+def class_gradebook(args, files, vbook) -> tuple:
+    """(``--gradebook``'s file or None, its write targets): refused in one line unless it
+    ends in .csv or .md, or where it would write over a file the class reads (the scene,
+    an answer file, a variant)."""
+    book = getattr(args, "gradebook", None)
+    if book and not book.lower().endswith((".csv", ".md")):
+        raise SceneError(f"--gradebook {book}: the file must end in .csv or .md", key="--gradebook")
+    inputs = [args.scene, *files, *(vbook.files if vbook else ())]
+    return book, (check_outputs([(book, "--gradebook")], protect=inputs) if book else [])
+
+
+def class_report(args, scene, rows, count, book, targets, tolerance=None) -> int:
+    """A class's rows printed (``--json``, or the table and the summary) and its gradebook
+    written; 0 whatever the answers (``tolerance``: the book's, where the scene states one)."""
+    from ..check.classroom import (
+        class_dict,
+        class_text,
+        gradebook_csv,
+        gradebook_markdown,
+        summary_text,
+    )
+
+    variants = getattr(args, "variants", None)
     if getattr(args, "json", False):
-        print(_json(class_dict(rows, book=scene.tolerance)))
+        print(_json(class_dict(rows, book=tolerance)))
     else:
         print(
-            f"{scene.title or args.scene}: {len(files)} answer files"
-            + (f", each graded against its own variant in {variants}" if vbook else "")
+            f"{scene.title or args.scene}: {count} answer files"
+            + (f", each graded against its own variant in {variants}" if variants else "")
         )
         print(class_text(rows))
         print()
-        print(summary_text(rows, book=scene.tolerance))
+        print(summary_text(rows, book=tolerance))
     if targets:
         data = (
             gradebook_csv(rows)
             if book.lower().endswith(".csv")
-            else gradebook_markdown(rows, book=scene.tolerance)
+            else gradebook_markdown(rows, book=tolerance)
         )
         write_outputs(targets, [(data, False)])
     return 0

@@ -205,40 +205,15 @@ def _row(f, scene, c, stated, vbook, given):
 def check_class(args, scene, c, files) -> int:
     """A whole class of answer files: the table, the summary, the gradebook; 0 whatever
     the answers, 2 only on bad input that stops the run."""
-    import json
+    from .classroom import class_gradebook, class_report
 
-    from ..check.classroom import (
-        class_dict,
-        class_text,
-        gradebook_csv,
-        gradebook_markdown,
-        summary_text,
-    )
-
-    book = getattr(args, "gradebook", None)
-    if book and not book.lower().endswith((".csv", ".md")):
-        raise SceneError(f"--gradebook {book}: the file must end in .csv or .md", key="--gradebook")
     variants = getattr(args, "variants", None)
     vbook = _CycleBook(variants, scene) if variants else None
-    inputs = [args.scene, *files, *(vbook.files if vbook else ())]
-    targets = check_outputs([(book, "--gradebook")], protect=inputs) if book else []
+    book, targets = class_gradebook(args, files, vbook)
     stated = _percent(args)
     given = set(args.answers or ())
     rows = [_row(f, scene, c, stated, vbook, f in given) for f in files]
-    if getattr(args, "json", False):
-        print(json.dumps(class_dict(rows), indent=2, allow_nan=False))
-    else:
-        print(
-            f"{scene.title or args.scene}: {len(files)} answer files"
-            + (f", each graded against its own variant in {variants}" if vbook else "")
-        )
-        print(class_text(rows))
-        print()
-        print(summary_text(rows))
-    if targets:
-        data = gradebook_csv(rows) if book.lower().endswith(".csv") else gradebook_markdown(rows)
-        write_outputs(targets, [(data, False)])
-    return 0
+    return class_report(args, scene, rows, len(files), book, targets)
 
 
 def make_variants(args, scene) -> int:
