@@ -50,6 +50,7 @@ from .papers import (
 
 __all__ = [
     "generate",
+    "shortfall_line",
     "VariantSet",
     "Variant",
     "linkage_class",
@@ -159,6 +160,28 @@ class Variant:
     linkage: str
 
 
+def shortfall_line(found, kept: str, widen: str) -> str | None:
+    """One line when ``found`` (a set of variants: ``variants``, ``requested``, ``space``,
+    ``tried``, ``exhaustive``, ``rejected``) holds fewer than asked, else None: how many
+    of how many combinations made a good variant (``kept``: what a good one is), why the
+    others were turned down, and what to do (``widen``: the ranges, or more)."""
+    n = len(found.variants)
+    if n >= found.requested:
+        return None
+    why = ", ".join(f"{k}: {v}" for k, v in sorted(found.rejected.items(), key=lambda kv: -kv[1]))
+    where = (
+        f"only {n} of the {found.space} combinations of [variants] make a good variant"
+        if found.exhaustive
+        else f"only {n} good variants found in {found.tried} of the {found.space} "
+        "combinations of [variants]"
+    )
+    return (
+        f"{where} ({kept}), not {found.requested}"
+        + (f"; turned down: {why}" if why else "")
+        + (f": widen the ranges or ask for --count {n}" if n else f": {widen}")
+    )
+
+
 @dataclass(frozen=True)
 class VariantSet:
     """The variants made of a base scene: each variant, how many were asked for, the seed, the
@@ -177,28 +200,11 @@ class VariantSet:
 
     def shortfall(self) -> str | None:
         """One line when fewer variants than asked were found, else None."""
-        n = len(self.variants)
-        if n >= self.requested:
-            return None
-        why = ", ".join(
-            f"{k}: {v}" for k, v in sorted(self.rejected.items(), key=lambda kv: -kv[1])
-        )
-        where = (
-            f"only {n} of the {self.space} combinations of [variants] make a good variant"
-            if self.exhaustive
-            else f"only {n} good variants found in {self.tried} of the {self.space} "
-            "combinations of [variants]"
-        )
-        return (
-            f"{where} (assembled on the stated branch, every step's condition at least "
-            f"{self.base.variation.min_text}, the class kept: {self.linkage}), "
-            f"not {self.requested}"
-            + (f"; turned down: {why}" if why else "")
-            + (
-                f": widen the ranges or ask for --count {n}"
-                if n
-                else ": widen the ranges or lower min_condition"
-            )
+        return shortfall_line(
+            self,
+            f"assembled on the stated branch, every step's condition at least "
+            f"{self.base.variation.min_text}, the class kept: {self.linkage}",
+            "widen the ranges or lower min_condition",
         )
 
 

@@ -28,7 +28,7 @@ from ..forces.flywheel_cycle import solve_cycle
 from ..scene.energy import cycle_from_table, cycle_variation, parse_cycle
 from ..scene.source import toml_table
 from ..text.energy import book_number as _g
-from . import ENUMERATE, MAX_SEED, MAX_VARIANTS, _candidates, _id_width
+from . import ENUMERATE, MAX_SEED, MAX_VARIANTS, _candidates, _id_width, shortfall_line
 from .toml_text import dump_toml
 
 __all__ = [
@@ -74,23 +74,10 @@ class CycleVariants:
 
     def shortfall(self) -> str | None:
         """One line when fewer variants than asked were found, else None."""
-        n = len(self.variants)
-        if n >= self.requested:
-            return None
-        why = ", ".join(
-            f"{k}: {v}" for k, v in sorted(self.rejected.items(), key=lambda kv: -kv[1])
-        )
-        where = (
-            f"only {n} of the {self.space} combinations of [variants] make a good variant"
-            if self.exhaustive
-            else f"only {n} good variants found in {self.tried} of the {self.space} "
-            "combinations of [variants]"
-        )
-        return (
-            f"{where} (each read and solved as a scene, none the base problem, no two "
-            f"alike), not {self.requested}"
-            + (f"; turned down: {why}" if why else "")
-            + (f": widen the ranges or ask for --count {n}" if n else ": widen the ranges")
+        return shortfall_line(
+            self,
+            "each read and solved as a scene, none the base problem, no two alike",
+            "widen the ranges",
         )
 
 
