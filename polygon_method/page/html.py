@@ -72,8 +72,9 @@ def check_html(verdicts, title: str) -> str:
     """The check table: each answer given, correct, error, tolerance, verdict, diagnosis."""
     rows = []
     for v in verdicts:
-        err = "-" if v.error is None else f"{100 * v.error:.2f} %"
-        tol = "-" if not math.isfinite(v.tolerance) else f"{100 * v.tolerance:.2g} %"
+        # a number and its per cent never split across lines (a no-break space)
+        err = "-" if v.error is None else f"{100 * v.error:.2f}\u00a0%"
+        tol = "-" if not math.isfinite(v.tolerance) else f"{100 * v.tolerance:.2g}\u00a0%"
         verdict = '<span class="right">right</span>' if v.ok else '<span class="wrong">WRONG</span>'
         why = "" if v.ok else escape(v.diagnosis or "none of the known mistakes explains it")
         rows.append(
