@@ -74,10 +74,11 @@ def _records(table, w, W) -> dict:
     for k in table:
         p, r, _, pairs, a, b = k
         rec = Rec()
-        if pairs is None:  # a pin of two bodies (the usual one)
-            v = abs((0.0 if a is None else w[a]) - (0.0 if b is None else w[b])) * r
-            rec.values = (v,)
-            rec.rubbing_velocity = v
+        if pairs is None:  # a pin of two bodies (the usual one): its values (v,) when read
+            rec.rubbing_velocity = (
+                abs((0.0 if a is None else w[a]) - (0.0 if b is None else w[b])) * r
+            )
+            rec._values = None
         else:
             vs = tuple(
                 [
@@ -85,7 +86,7 @@ def _records(table, w, W) -> dict:
                     for x, y in pairs
                 ]
             )
-            rec.values = vs
+            rec._values = vs
             rec.rubbing_velocity = max(vs) if vs else 0.0
         rec._k = k  # the pin, its radius (constant: one field for the three)
         rec._W = W
@@ -101,7 +102,20 @@ class PinRubbing:
     :func:`pin_records`.
     """
 
-    __slots__ = ("values", "rubbing_velocity", "_k", "_W")  # _k: the pin's table entry
+    # _k: the pin's table entry; _values: the values of a pin of more than two bodies (None
+    # for a pin of two: its one value is rubbing_velocity, no tuple made until read)
+    __slots__ = ("rubbing_velocity", "_k", "_W", "_values")
+
+    @property
+    def values(self) -> tuple:
+        """The rubbing velocity of each pair of bodies the pin joins, in ``pairs``' order."""
+        vs = self._values
+        return (self.rubbing_velocity,) if vs is None else vs
+
+    @values.setter
+    def values(self, vs):
+        """Set the values (a tidied solution writes its noise as exact zeros)."""
+        self._values = tuple(vs)
 
     @property
     def point(self) -> str:
