@@ -565,7 +565,7 @@ def test_the_page_grades_an_answer_file_as_check_does(tmp_path, capsys):
     capsys.readouterr()
     table = re.search(r'<table id="check">.*?</table>', page.read_text(), re.S).group(0)
     assert "right" in table and "WRONG" not in table
-    assert f"{verdict['tolerance_percent']:.2g} %" in table
+    assert f"{verdict['tolerance_percent']:.2g}\u00a0%" in table  # (a no-break space)
 
 
 def test_a_pipe_in_a_listed_directory_is_a_row_never_a_wait(tmp_path, klass):
