@@ -375,7 +375,7 @@ class _Input:
                 rate_keys[0],
             )
         if speed.value == 0:  # at rest: the weights and loads alone, per rad/s of the crank
-            speed = self.at_rest_speed(alpha, speed.sense)
+            speed, alpha = self.at_rest_speed(alpha, speed.sense, second is not None), 0.0
         self.two_inputs = second is not None
         if second is not None and second.crank == link.key:
             raise self.error(

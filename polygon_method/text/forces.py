@@ -18,7 +18,7 @@ from ..forces.engine import efforts
 from ..common.numbers import fmt, quiet, sense_word
 from ..common.tolerances import FLOOR
 from .force_polygons import body_name as _body, polygon_items as _polygon_items
-from .force_words import acting, known_words, rest_blocks, symbol_words
+from .force_words import acting, holding, known_words, rest_blocks, start_words, symbol_words
 
 __all__ = ["forces_lines", "force_blocks", "bound_lines", "engine_lines"]
 
@@ -208,6 +208,8 @@ def forces_lines(sol) -> list:
         F,
         M,
         f" (at rest: {acting(sc)}, no inertia)"
+        if holding(sc)
+        else f" (starting from rest: {acting(sc)}, the inertia of the start)"
         if sc.at_rest
         else " (inertia, weights, loads and friction)"
         if sc.friction is not None
@@ -236,7 +238,7 @@ def _inertia_lines(sc, f, F, M) -> list:
     u = sc.length_unit
     if not f.inertia:
         return []
-    if sc.at_rest:
+    if holding(sc):
         g = sc.gravity
         out = [
             "at rest: no inertia (nothing moves); the weights m g at G"
@@ -249,7 +251,8 @@ def _inertia_lines(sc, f, F, M) -> list:
                 f"({fmt(i.G[0] / u)}, {fmt(i.G[1] / u)}) {sc.units}"
             )
         return out
-    out = [
+    out = [start_words(sc)] if sc.at_rest else []
+    out += [
         f"{'body':<10} {'mass (kg)':<10} {'inertia force -m a_G':<24} "
         f"{'couple -I alpha':<20} offset h ({sc.units})"
     ]
@@ -374,7 +377,7 @@ def _inertia_blocks(sol, f, F, M) -> list:
     sc = sol.scene
     u = sc.length_unit
     blocks = [("h", "6. Inertia forces (D'Alembert)")]
-    if sc.at_rest and f.inertia:  # nothing moves: the weights alone
+    if holding(sc) and f.inertia:  # nothing moves: the weights alone
         return [("h", "6. Weights at rest (no inertia)")] + rest_blocks(sc, f, F, _vec)
     if not f.inertia:  # an empty [masses]: the static force analysis of the loads
         return [("h", "6. No inertia forces (a static force analysis)")] + [
@@ -385,6 +388,18 @@ def _inertia_blocks(sol, f, F, M) -> list:
                 + (f" and gravity ({sc.gravity.text}) act." if sc.gravity else " alone act."),
             )
         ]
+    if sc.at_rest:  # starting from rest: the accelerations of the start
+        blocks.append(
+            (
+                "p",
+                start_words(sc)[0].upper()
+                + start_words(sc)[1:]
+                + ": the acceleration diagram of the start is the velocity diagram per "
+                "rad/s (section 2's virtual velocities) scaled by alpha, and each a_G below "
+                "is alpha times v_G there (the acceleration diagram drawn per rad/s, with "
+                "its centripetal terms, is not the start's).",
+            )
+        )
     blocks.append(
         (
             "p",

@@ -58,6 +58,12 @@ def _given_lines(sol: Solution) -> list[str]:
                 f"at rest, about to turn {sense(inp.omega)} (the velocities and "
                 f"accelerations below are per 1 rad/s {sense(inp.omega)} of the crank: the "
                 "virtual velocities of the power balance)"
+                if sc.at_rest and not sc.start_alpha
+                else f"starting from rest {sense(inp.omega)}, "
+                f"{fmt_angular(sc.start_alpha, 'rad/s^2')} (the velocities and accelerations "
+                f"below are per 1 rad/s {sense(inp.omega)} of the crank, the virtual "
+                "velocities of the power balance; the start's accelerations, the tangential "
+                "terms alone, alpha times those velocities, are in the forces below)"
                 if sc.at_rest
                 else f"{fmt_angular(inp.omega, 'rad/s')}"
             )
