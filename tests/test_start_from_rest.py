@@ -14,7 +14,6 @@ its meaning (the weights and loads held, no inertia).
 
 from __future__ import annotations
 
-import math
 
 import mpmath
 import numpy as np
