@@ -189,7 +189,7 @@ class _Reducer:
 
         b = lambda v: np.broadcast_to(np.asarray(v, dtype=float), (n,))  # noqa: E731
 
-        if f.driver == "crank":
+        if f.driver in ("crank", "wheel"):  # (a driving wheel's: the torque on it)
             yield "torque_inertia", "N m", b(f.input_torque), "driving torque with inertia, ccw +"
         else:
             yield "force_inertia", "N", b(f.input_torque), "driving force with inertia"

@@ -215,7 +215,7 @@ class SweepResult(Motion):
         n = np.shape(at.theta)
         cols = [
             ("torque_inertia", "N m", np.broadcast_to(f.input_torque, n))
-            if f.driver == "crank"
+            if f.driver in ("crank", "wheel")  # (a driving wheel's: the torque on it)
             else ("force_inertia", "N", np.broadcast_to(f.input_torque, n))
         ]
         if f.second_crank is not None:  # a second crank's torque, a second collar's force

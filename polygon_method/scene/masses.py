@@ -71,6 +71,25 @@ class _Masses:
             sense = way
         return Quantity(-1.0, "cw") if sense == "cw" else Quantity(1.0, "ccw")
 
+    def at_rest_driver(self, speed, acc, key) -> float:
+        """A driving block's or wheel's speed of nought (``key``: ``vs_A``, ``omega_W``):
+        at rest as a crank's (:meth:`at_rest_speed`), the motion solved per 1 m/s (1
+        rad/s) the way the zero's sign says (``"0 m/s left"``; a bare 0 along the guide's
+        direction, or a wheel's ccw), or starting from rest the way ``acc`` says, its
+        inertia ``start_alpha = acc``. Refused without the force analysis."""
+        if not ("masses" in self.raw or "gravity" in self.raw):
+            raise self.error(
+                f"{key} is zero: nothing moves (at rest, the weights held: give [masses] "
+                "and [gravity]; starting from rest with an acceleration: [masses])",
+                "input",
+                key,
+            )
+        self.at_rest = True
+        if acc:
+            self.start_alpha = acc
+            return 1.0 if acc > 0 else -1.0
+        return math.copysign(1.0, speed)
+
     def masses(self, carried, sliders):
         """[masses]: one :class:`Mass` per link or block named."""
         out = []

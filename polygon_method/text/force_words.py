@@ -20,11 +20,20 @@ def start_words(sc) -> str:
     a = getattr(sc, "start_alpha", 0.0)
     if not (sc.at_rest and a):
         return ""
+    b = None if sc.input.crank is not None else sc.input.tip  # (a driving block, a wheel's centre)
+    given, per = (
+        (f"as_{b} = {fmt(abs(a))} m/s^2 {'along' if a > 0 else 'against'} its path", f"m/s of {b}")
+        if b is not None
+        else (
+            f"alpha_{sc.input.crank} = {fmt(abs(a))} rad/s^2 {'ccw' if a > 0 else 'cw'}",
+            "rad/s of the crank",
+        )
+    )
     return (
-        f"starting from rest with alpha_{sc.input.crank} = {fmt(abs(a))} rad/s^2 "
-        f"{'ccw' if a > 0 else 'cw'}: no velocity yet, so every acceleration has its "
-        "tangential terms alone (no centripetal, no Coriolis component), alpha times the "
-        "motion per rad/s of the crank (a_G = alpha x v_G per rad/s)"
+        f"starting from rest with {given}: no velocity yet, so every acceleration has its "
+        "tangential terms alone (no centripetal, no Coriolis component), the start's "
+        f"acceleration times the motion per {per} (a_G = {given.split(' =')[0]} x v_G per "
+        f"{per.split(' of')[0]})"
     )
 
 
