@@ -172,19 +172,4 @@ def engine_verdict(sol, ans, tolerance) -> Verdict:
     mistake = diagnosis = None
     if not ok:
         mistake, diagnosis = _slip(sol, key, given, correct, rel, unit)
-    return Verdict(
-        key,
-        ans.raw,
-        given,
-        correct,
-        unit,
-        err / abs(correct) if correct else None,
-        tol / abs(correct) if correct else math.inf,
-        tol,
-        rule,
-        ok,
-        signed,
-        mistake,
-        diagnosis,
-        ans.line,
-    )
+    return Verdict.judged(ans, given, correct, unit, tol, rule, ok, signed, mistake, diagnosis)
