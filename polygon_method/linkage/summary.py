@@ -162,19 +162,21 @@ class _Reducer:
         :attr:`forces_left_out` says why, and the summary says so."""
         from ..common.errors import PolygonMethodError
         from ..forces import analyse  # lazy: a scene without masses never loads forces/
-        from ..forces.engine import efforts
+        from ..forces.engine import cylinder_efforts, efforts
 
         try:
             got = force_arrays(self, fr, analyse)
             if got is None:  # (singular at every angle of ``fr``)
                 return
             f, rows, P = got
-            e = efforts(self.scene, self.plan if fr.plan is None else fr.plan, P, f)
+            plan = self.plan if fr.plan is None else fr.plan
+            e = efforts(self.scene, plan, P, f)
+            cyl = cylinder_efforts(self.scene, plan, P, f) if e is None else ()
         except PolygonMethodError as exc:
             self.forces_left_out = exc.message
             return
         n = fr.n if rows is None else len(rows)
-        for name, unit, arr, what in self._force_items(f, e, n):
+        for name, unit, arr, what in self._force_items(f, e, n, cyl):
             self.force_names.add(name)
             if isinstance(arr, tuple):
                 arr = tuple(spread(a, rows, fr.n) for a in arr)
@@ -183,7 +185,7 @@ class _Reducer:
             yield name, unit, arr, what
 
     @staticmethod
-    def _force_items(f, e, n):
+    def _force_items(f, e, n, cylinders=()):
         """(name, unit, array, what) of :meth:`force_quantities` from the forces ``f`` and
         an engine's efforts ``e`` (or None) at ``n`` angles."""
 
@@ -211,6 +213,11 @@ class _Reducer:
             yield "piston_effort", "N", b(e.F_P), "towards the crank"
             yield "crank_effort", "N", b(e.F_T), "in the sense of rotation"
             yield "turning_moment", "N m", b(e.T), "in the sense of rotation"
+        for c in cylinders:  # several cylinders on one crank
+            yield f"piston_effort_{c.piston}", "N", b(c.F_P), "towards the crank"
+            yield f"crank_effort_{c.piston}", "N", b(c.F_T), "in the sense of rotation"
+        if cylinders:
+            yield "turning_moment", "N m", b(sum(c.T for c in cylinders)), "of all the cylinders"
 
     @staticmethod
     def shown(unit, value):

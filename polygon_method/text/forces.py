@@ -14,31 +14,13 @@ import math
 from ..solver.errorbound import SHOWN, USELESS
 from ..forces import FRAME
 from ..forces.bounds import NO_BOUND, force_bounds
-from ..forces.engine import efforts
 from ..common.numbers import fmt, quiet, sense_word
 from ..common.tolerances import FLOOR
 from .force_polygons import body_name as _body, polygon_items as _polygon_items
+from .force_engine import engine_lines, scales as _scales
 from .force_words import acting, holding, known_words, rest_blocks, start_words, symbol_words
 
 __all__ = ["forces_lines", "force_blocks", "bound_lines", "engine_lines"]
-
-
-def _scales(sol, f):
-    """(the largest force, the largest force times the mechanism's size)."""
-    forces = (
-        [math.hypot(*i.force) for i in f.inertia]
-        + [p.magnitude for p in f.pins]
-        + [abs(g.normal) for g in f.guides]
-        + [math.hypot(*ld.force) for ld in sol.scene.loads if ld.force is not None]
-    )
-    if sol.scene.gravity is not None:
-        forces += [m.mass * sol.scene.gravity.g for m in sol.scene.masses]
-    size = max([math.hypot(*p) for p in sol.P.values()] + [lk.length for lk in sol.scene.links])
-    F = max(forces, default=0.0)
-    couples = [abs(i.couple) for i in f.inertia] + [
-        abs(ld.torque) for ld in sol.scene.loads if ld.torque is not None
-    ]
-    return F, max([F * size] + couples)
 
 
 def _vec(v, scale):
@@ -299,25 +281,6 @@ def bound_lines(sol, f) -> list:
     if any(not e < USELESS for _, e in shown):
         out.append(f"  ({NO_BOUND})")
     return out
-
-
-def engine_lines(sol) -> list:
-    """An engine's efforts at the instant, in the book's words (none for another scene)."""
-    f = sol.forces
-    e = efforts(sol.scene, sol.plan, sol.P, f)
-    if e is None:
-        return []
-    F, M = _scales(sol, f)
-    q = lambda v: fmt(quiet(v, F))  # noqa: E731
-    return [
-        f"engine: piston effort F_P = {q(e.F_P)} N (along the line of stroke, towards "
-        f"the crank: the gas force and the reciprocating parts' inertia and weight); "
-        f"thrust in the rod {e.rod} F_Q = {q(e.F_Q)} N; side thrust on the cylinder "
-        f"walls F_N = {q(e.F_N)} N",
-        f"engine: crank effort F_T = {q(e.F_T)} N (across the crank {e.crank} at its pin, "
-        f"in the sense of rotation); turning moment T = F_T r = {fmt(quiet(e.T, M))} N m "
-        "(positive: with the rotation, the engine driving)",
-    ]
 
 
 #: what each kind of force step does, as its paragraph says it
