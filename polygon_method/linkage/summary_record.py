@@ -184,11 +184,7 @@ class Summary:
                 # (each value within its own error bound: _Reducer._noise); an extreme
                 # refined to a zero of the quantity is found to about TOL.negligible of the
                 # quantity's range, the accuracy of its place: written 0 too
-                big = max(  # (an unbounded end's value is only that of an angle next to it)
-                    [abs(e.maximum)] * (not e.max_unbounded)
-                    + [abs(e.minimum)] * (not e.min_unbounded),
-                    default=0.0,
-                )
+                big = max(abs(e.maximum), abs(e.minimum))
                 mx = "+unbounded" if e.max_unbounded else f"{quiet(e.maximum, big):.6g}"
                 mn = "-unbounded" if e.min_unbounded else f"{quiet(e.minimum, big):.6g}"
                 out.append(
