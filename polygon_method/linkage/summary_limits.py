@@ -165,7 +165,7 @@ def unbounded_sizes(red, rows, unbounded, theta, spacing):
     towards) made its value 1e-2 rad (of the parameter) from that angle, inward of a limit
     position, the larger of the two sides elsewhere: a size of the quantity no grid decides
     (the sample or refinement nearest the angle would: 1e13 N for a pin force refined to
-    1e-11 rad of a toggle), which the table writes as unbounded and against which the
+    within REFINED of a toggle), which the table writes as unbounded and against which the
     other end's rounding noise is judged."""
     if not unbounded:
         return
