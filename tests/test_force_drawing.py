@@ -404,9 +404,12 @@ def test_the_page_draws_each_inertia_force_on_its_offset_line_over_the_cycle():
     assert page_data(plain)["inertia"] is None
 
 
-def test_a_plan_the_forces_do_not_cover_is_refused_by_the_sheet_in_one_line():
+def test_a_plan_the_forces_do_not_cover_is_refused_by_the_sheet_in_one_line(monkeypatch):
     from polygon_method.common.errors import PolygonMethodError
     from polygon_method.scene import scene_from_table, scene_table
+    from test_forces import _not_covered
+
+    _not_covered(monkeypatch)  # (every kind is covered now: one made uncovered again)
 
     raw = scene_table(load_scene(ROOT / "tests" / "textbook" / "class3_triangle_plate.toml"))
     raw["gravity"] = {}

@@ -98,8 +98,9 @@ def step(st, P, led, own):
     points. Returns as :func:`.dyad.step`."""
     plate = st.plate
     kp = led.of(plate)
-    for key, _, _ in st.sides:  # a plate of three links: the triangle as one body first
-        kp = tuple(a + b for a, b in zip(kp, led.of(key)))
+    each = (kp,) + tuple(led.of(key) for key, _, _ in st.sides)  # (each side's known)
+    for k in each[1:]:  # a plate of three links: the triangle as one body first
+        kp = tuple(a + b for a, b in zip(kp, k))
     (x1, y1) = P[st.points[0]]
     S = _size(P, st)
     e, n, b, r, kls = [], [], [], [], []
@@ -156,7 +157,7 @@ def step(st, P, led, own):
         "triad",
         st.title,
         (plate,) + tuple(k for k, _, _ in st.sides) + tuple(st.links_),
-        (kp,) + tuple(kls),
+        each + tuple(kls),
         tuple(found),
         cond,
         "the plate's 3x3 system's divisor (Cramer's rule) over its columns' sizes (zero where the "
@@ -178,13 +179,15 @@ def _sides(st, P, led, pins, found, eq):
     from .dyad import solve as dyad
 
     vown = owns(st)
+    (s2, _, _), (s3, _, _) = st.sides
+    known = {st.plate: led.of(st.plate), s2: led.of(s2)}  # (the ledger keeps its own)
     for pin in pins[0::2]:  # (on each hanging link at its vertex, by the side there)
         (vx, vy), (fx, fy) = P[pin.point], pin.force
-        led.add(vown[pin.point], -fx, -fy, vx, vy)
-    (s2, _, _), (s3, _, _) = st.sides
+        kx, ky, km = known[vown[pin.point]]
+        known[vown[pin.point]] = (kx - fx, ky - fy, km - (vx * fy - vy * fx))
     V1, V2, V3 = st.points
     (x1, y1), (x2, y2), (x3, y3) = P[V1], P[V2], P[V3]
-    p, f1, f3, cond = dyad(x1, y1, led.of(st.plate), x3, y3, led.of(s2), x2, y2)
+    p, f1, f3, cond = dyad(x1, y1, known[st.plate], x3, y3, known[s2], x2, y2)
     if p is None:
         raise Singular(f"{V1}, {V2} and {V3} are in a line")
     pins += [PinForce(V2, st.plate, s2, p), PinForce(V1, st.plate, s3, f1)]
