@@ -223,3 +223,12 @@ def test_no_masses_refused_with_the_reason(tmp_path, capsys):
     assert main(["solve", str(scene)]) == 2
     err = capsys.readouterr().err.strip()
     assert "starting from rest" in err and len(err.splitlines()) == 1
+
+
+def test_the_summary_says_the_start():
+    from polygon_method.linkage.summary import summarize
+
+    text = summarize(parse_scene(scene_text()), np.radians(np.arange(0.0, 360.0, 30.0))).text()
+    assert "crank OA at rest, the motion per 1 rad/s ccw (virtual); the forces of a start" in text
+    held = summarize(parse_scene(scene_text(60.0, None)), np.radians([0.0, 90.0])).text()
+    assert "the forces that hold it at every angle" in held

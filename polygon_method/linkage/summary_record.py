@@ -87,6 +87,17 @@ class Summary:
                 )
                 + " at every angle (the crank's speed follows); "
             )
+        elif sc.at_rest:  # the motion per rad/s: the virtual velocities
+            held = (
+                f"crank {inp.crank} at rest, the motion per 1 rad/s "
+                f"{'ccw' if inp.omega > 0 else 'cw'} (virtual); the forces "
+                + (
+                    f"of a start from rest with alpha = {sc.start_alpha:+.6g} rad/s^2"
+                    if sc.start_alpha
+                    else "that hold it"
+                )
+                + " at every angle; "
+            )
         else:
             held = (
                 f"crank {inp.crank} at {abs(inp.omega):.6g} rad/s "
