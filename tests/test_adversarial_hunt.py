@@ -1,0 +1,57 @@
+"""Adversarial inputs found by a scripted sweep of every command over hostile files and
+options, each kept as a table of its class: the output holds no "nan" or "inf", a bad input
+is one line naming its file, key or option with exit code 2, and no file is clobbered.
+
+Expected values come from the inputs themselves (a number the user wrote, the scene's own
+closed-form answer in its comment, a count of lines), never from the code under test."""
+
+from __future__ import annotations
+
+import json
+import re
+
+import pytest
+
+from polygon_method.cli import main
+
+from scenes import FOURBAR
+
+#: a word of the output that is no number a user can read
+_NOT_A_NUMBER = re.compile(r"\b(nan|inf|infinity)\b", re.IGNORECASE)
+
+#: v_C of the seed four-bar (closed-form positions and finite differences, not this
+#: project's solver: worked_problems/fourbar_image_points.toml)
+V_C = 0.4005
+
+
+def _scene(tmp_path, text, name="s.toml"):
+    path = tmp_path / name
+    path.write_text(text, encoding="utf-8")
+    return str(path)
+
+
+# ------------------------------------------------- an answer of absurd size in the tables
+
+
+@pytest.mark.parametrize("given", ["1e308", "-1e308", "1.7e308", "1e200", "4e306", "1e7"])
+@pytest.mark.parametrize("command", ["check", "check-json"])
+def test_an_answer_of_absurd_size_has_an_error_in_words_never_inf(tmp_path, capsys, given, command):
+    """``v_C = "1e308 m/s"``: its error, 2.5e308 %, is past the largest float; the table
+    wrote "inf %" (and a 300-digit per cent for 1e300)."""
+    path = _scene(tmp_path, FOURBAR + f'\n[answers]\nv_C = "{given} m/s"\n')
+    argv = ["check", "--json", path] if command == "check-json" else ["check", path]
+    assert main(argv) == 1
+    out = capsys.readouterr().out
+    assert not _NOT_A_NUMBER.search(out), out
+    if command == "check-json":
+        record = json.loads(out)["answers"][0]
+        assert record["verdict"] == "wrong" and abs(record["given"]) == abs(float(given))
+        return
+    row = next(line for line in out.splitlines() if line.startswith("v_C"))
+    percent = 100 * abs(float(given) - V_C) / V_C
+    if percent > 1.7976931348623157e308:
+        assert "more than 1e+308 %" in row, row
+    else:
+        shown = float(re.search(r"([0-9.e+]+) %", row.split("m/s", 2)[-1]).group(1))
+        assert shown == pytest.approx(percent, rel=5e-3), row
+        assert len(row) < 100, row
