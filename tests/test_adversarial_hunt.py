@@ -24,6 +24,14 @@ _NOT_A_NUMBER = re.compile(r"\b(nan|inf|infinity)\b", re.IGNORECASE)
 V_C = 0.4005
 
 
+def _code(argv) -> int:
+    """main's exit code, or argparse's (which exits)."""
+    try:
+        return main(argv)
+    except SystemExit as exc:
+        return exc.code
+
+
 def _scene(tmp_path, text, name="s.toml"):
     path = tmp_path / name
     path.write_text(text, encoding="utf-8")
@@ -55,3 +63,69 @@ def test_an_answer_of_absurd_size_has_an_error_in_words_never_inf(tmp_path, caps
         shown = float(re.search(r"([0-9.e+]+) %", row.split("m/s", 2)[-1]).group(1))
         assert shown == pytest.approx(percent, rel=5e-3), row
         assert len(row) < 100, row
+
+
+# ------------------------------------------------------------------ options given twice
+
+SEED = "worked_problems/fourbar_image_points.toml"
+
+
+@pytest.mark.parametrize(
+    "argv, option",
+    [
+        (["sweep", SEED, "--steps", "12", "--steps", "24"], "--steps"),
+        (["sweep", SEED, "--from", "0", "--from", "5", "--to", "9", "--step", "1"], "--from"),
+        (["draw", SEED, "-o", "{tmp}/a.svg", "-o", "{tmp}/b.svg"], "-o/--output"),
+        (["draw", SEED, "-o", "{tmp}/a.svg", "--paper", "A4", "--paper", "A3"], "--paper"),
+        (
+            ["draw", SEED, "-o", "{tmp}/a.svg", "--diagram", "all", "--diagram", "velocity"],
+            "--diagram",
+        ),
+        (["page", SEED, "-o", "{tmp}/a.html", "--frames", "4", "--frames", "8"], "--frames"),
+        (["steps", SEED, "--format", "text", "--format", "markdown"], "--format"),
+        (["variants", SEED, "-o", "{tmp}/v", "--seed", "1", "--seed", "2"], "--seed"),
+        (["check", SEED, "--gradebook", "{tmp}/g.csv", "--gradebook", "{tmp}/h.md"], "--gradebook"),
+        (["centres", SEED, "--centre-labels", "13", "--centre-labels", "I13"], "--centre-labels"),
+    ],
+)
+def test_an_option_given_twice_with_two_values_is_refused_and_nothing_written(
+    tmp_path, capsys, argv, option
+):
+    """argparse keeps the last of ``-o a.svg -o b.svg`` silently: which one was meant?"""
+    argv = [a.replace("{tmp}", str(tmp_path)) for a in argv]
+    assert _code(argv) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and f"{option} given twice" in err[0], err
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["sweep", SEED, "--steps", "12", "--steps", "12"],
+        ["steps", SEED, "--format", "markdown", "--format", "markdown"],
+        ["solve", "--json", "--json", SEED],
+    ],
+)
+def test_an_option_repeated_with_its_own_value_is_taken(capsys, argv):
+    assert main(argv) == 0
+    assert capsys.readouterr().out.strip()
+
+
+# ------------------------------------------------------ a negative value after an option
+
+
+@pytest.mark.parametrize(
+    "argv, words",
+    [
+        (["check", SEED, "--tolerance", "-5%"], "'-5%': a per cent between 0 and 100"),
+        (["sweep", SEED, "--from", "0", "--to", "-inf", "--step", "1"], "finite numbers"),
+        (["sweep", SEED, "--from", "-nan", "--to", "5", "--step", "1"], "finite numbers"),
+        (["sweep", SEED, "--steps", "-5"], "--steps must be at least 1, got -5"),
+    ],
+)
+def test_a_negative_value_is_refused_in_its_options_words(capsys, argv, words):
+    """``--tolerance -5%`` was "expected one argument": argparse took "-5%" for an option."""
+    assert _code(argv) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and words in err[0], err
