@@ -9,12 +9,15 @@ from __future__ import annotations
 
 import json
 import re
+from pathlib import Path
 
 import pytest
 
 from polygon_method.cli import main
 
 from scenes import FOURBAR
+
+ROOT = Path(__file__).resolve().parent.parent
 
 #: a word of the output that is no number a user can read
 _NOT_A_NUMBER = re.compile(r"\b(nan|inf|infinity)\b", re.IGNORECASE)
@@ -129,3 +132,27 @@ def test_a_negative_value_is_refused_in_its_options_words(capsys, argv, words):
     assert _code(argv) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and words in err[0], err
+
+
+# ------------------------------------------- a slider's path given by a far point on it
+
+SLIDER_CRANK = (ROOT / "worked_problems/offset_slider_crank.toml").read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("far", ["[1e6, -40]", "[-5e5, -40]", "[20000, -40]"])
+@pytest.mark.parametrize("diagram", ["configuration", "centres"])
+def test_a_path_through_a_far_point_is_drawn_as_the_same_line_through_a_near_one(
+    tmp_path, capsys, far, diagram
+):
+    """``through = [1e6, -40]`` names the horizontal line y = -40 as ``[0, -40]`` does; the
+    line of stroke was drawn out to the far point: "the configuration diagram ... would be
+    2e+04 cm across; use a coarser scale such as" the very scale refused (and the centres
+    diagram, coarsened to 1 cm = 50 m, took minutes placing its labels)."""
+    said = []
+    for through in ("[0, -40]", far):
+        path = _scene(tmp_path, SLIDER_CRANK.replace("[0, -40]", through), f"{len(said)}.toml")
+        out = tmp_path / f"{len(said)}.svg"
+        assert main(["draw", path, "-o", str(out), "--diagram", diagram]) == 0
+        said.append(capsys.readouterr().out.split(":", 1)[1])
+        assert out.stat().st_size > 0
+    assert said[0] == said[1]
