@@ -156,3 +156,29 @@ def test_a_path_through_a_far_point_is_drawn_as_the_same_line_through_a_near_one
         said.append(capsys.readouterr().out.split(":", 1)[1])
         assert out.stat().st_size > 0
     assert said[0] == said[1]
+
+
+# --------------------------------------------------- a link in a loop among the variants
+
+
+@pytest.mark.parametrize("where", ["variants", "answers"])
+def test_a_link_in_a_loop_among_the_files_is_a_row_never_an_internal_error(tmp_path, capsys, where):
+    """``variant-09.toml -> variant-09.toml`` in the variants' directory: ``Path.resolve``
+    raised RuntimeError (exit 3, "internal error")."""
+    base = str(ROOT / SEED)
+    out = tmp_path / "class"
+    assert main(["variants", base, "--count", "2", "--seed", "1", "-o", str(out)]) == 0
+    answers = tmp_path / "answers"
+    answers.mkdir()
+    (answers / "amy.toml").write_text('variant = "01"\n[answers]\nv_C = "0.4 m/s"\n')
+    loop = (out if where == "variants" else answers) / "variant-09.toml"
+    loop.symlink_to(loop)
+    book = tmp_path / "book.csv"
+    capsys.readouterr()
+    code = main(["check", base, str(answers), "--variants", str(out), "--gradebook", str(book)])
+    captured = capsys.readouterr()
+    assert code == 0, captured.err
+    assert "internal error" not in captured.err
+    rows = book.read_text().splitlines()
+    assert rows[0].startswith("student") and any(r.startswith("amy,") for r in rows)
+    assert len(rows) == (3 if where == "answers" else 2)
