@@ -182,3 +182,24 @@ def test_a_link_in_a_loop_among_the_files_is_a_row_never_an_internal_error(tmp_p
     rows = book.read_text().splitlines()
     assert rows[0].startswith("student") and any(r.startswith("amy,") for r in rows)
     assert len(rows) == (3 if where == "answers" else 2)
+
+
+# ------------------------------------------- a directory that takes no new file (/proc)
+
+
+@pytest.mark.skipif(not Path("/proc/self").is_dir(), reason="no /proc on this system")
+@pytest.mark.parametrize(
+    "argv, option",
+    [
+        (["sweep", SEED, "--steps", "12", "--csv", "/proc/x.csv"], "--csv"),
+        (["draw", SEED, "--diagram", "velocity", "-o", "/proc/x.svg"], "-o"),
+        (["page", SEED, "--frames", "4", "-o", "/proc/x.html"], "-o"),
+    ],
+)
+def test_an_output_where_no_file_can_be_made_names_the_output_not_a_temporary(capsys, argv, option):
+    """The temporary file beside the output could not be made: the line named
+    "/proc/.x.csv.dco3etcc.tmp", a file the user never asked for."""
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1, err
+    assert f"{option}: cannot write {argv[-1]}:" in err[0] and ".tmp" not in err[0], err
