@@ -203,3 +203,33 @@ def test_an_output_where_no_file_can_be_made_names_the_output_not_a_temporary(ca
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1, err
     assert f"{option}: cannot write {argv[-1]}:" in err[0] and ".tmp" not in err[0], err
+
+
+# ------------------------------------------- a [variants] table's example, as TOML
+
+
+@pytest.mark.parametrize(
+    "variants, words",
+    [
+        ("D = [[100, 0], [110, 0]]", "a point's variation says what varies"),
+        ("BC = { from = 60, to = 72 }", "the range has no step"),
+        ('BC = "60 to 72"', "give a range"),
+    ],
+)
+def test_a_bad_variants_entry_shows_its_example_as_toml_a_reader_can_copy(
+    tmp_path, capsys, variants, words
+):
+    """The examples were written "{ from = 60, to = 75, step = 1 }}" (an f-string's
+    doubled brace in a plain string): each brace of the example must pair with one."""
+    base = (ROOT / SEED).read_text(encoding="utf-8").split("[variants]")[0]
+    path = _scene(tmp_path, base + "[variants]\n" + variants + "\n")
+    assert main(["variants", path, "--count", "2", "-o", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and words in err[0], err
+    example = err[0].split(words, 1)[1]
+    depth = 0
+    for ch in example:
+        depth += {"{": 1, "}": -1}.get(ch, 0)
+        assert depth >= 0, example
+    assert depth == 0, example
+    assert not (tmp_path / "out").exists()
