@@ -8,6 +8,7 @@ closed-form answer in its comment, a count of lines), never from the code under 
 from __future__ import annotations
 
 import json
+import math
 import re
 from pathlib import Path
 
@@ -233,3 +234,47 @@ def test_a_bad_variants_entry_shows_its_example_as_toml_a_reader_can_copy(
         assert depth >= 0, example
     assert depth == 0, example
     assert not (tmp_path / "out").exists()
+
+
+# ------------------------------------------- a turning-moment diagram of countless areas
+
+ENGINE_AREAS = (ROOT / "worked_problems/flywheel/engine_areas_rim.toml").read_text(encoding="utf-8")
+_AREAS_LINE = "areas = [52, -124, 92, -140, 85, -72, 107]"
+
+
+def _areas(n: int) -> str:
+    return ENGINE_AREAS.replace(_AREAS_LINE, "areas = [" + ", ".join(["1, -1"] * (n // 2)) + "]")
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["solve", "{scene}"],
+        ["steps", "{scene}"],
+        ["check", "{scene}"],
+        ["draw", "{scene}", "-o", "{tmp}/x.svg"],
+        ["page", "{scene}", "-o", "{tmp}/x.html"],
+    ],
+)
+@pytest.mark.parametrize("n", [102, 100000])
+def test_a_diagram_of_countless_areas_is_one_line_before_minutes_of_drawing(
+    tmp_path, capsys, argv, n
+):
+    """``areas = [1, -1, ...]`` 100000 long: ``draw`` ran for minutes (each area a lobe, a
+    label and a lettered crossing)."""
+    scene = _scene(tmp_path, _areas(n))
+    argv = [a.replace("{scene}", scene).replace("{tmp}", str(tmp_path)) for a in argv]
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and f"{n} areas: at most 100" in err[0], err
+    assert "[turning_moment] areas" in err[0] and "s.toml" in err[0]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["s.toml"]
+
+
+def test_a_diagram_of_a_hundred_areas_is_solved(tmp_path, capsys):
+    """At the bound: alternate areas of +1 and -1 mm^2 swing the energy by one of them,
+    1 mm^2 = 70 N m x 4.5 deg = 70 x 4.5 pi / 180 J."""
+    assert main(["solve", "--json", _scene(tmp_path, _areas(100))]) == 0
+    cycle = json.loads(capsys.readouterr().out)["cycle"]
+    assert len(cycle["areas"]) == 100
+    assert cycle["dE_max"] == pytest.approx(70 * 4.5 * math.pi / 180, rel=1e-12)
