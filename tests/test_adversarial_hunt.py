@@ -156,3 +156,80 @@ def test_a_path_through_a_far_point_is_drawn_as_the_same_line_through_a_near_one
         said.append(capsys.readouterr().out.split(":", 1)[1])
         assert out.stat().st_size > 0
     assert said[0] == said[1]
+
+
+# --------------------------------------------------- a link in a loop among the variants
+
+
+@pytest.mark.parametrize("where", ["variants", "answers"])
+def test_a_link_in_a_loop_among_the_files_is_a_row_never_an_internal_error(tmp_path, capsys, where):
+    """``variant-09.toml -> variant-09.toml`` in the variants' directory: ``Path.resolve``
+    raised RuntimeError (exit 3, "internal error")."""
+    base = str(ROOT / SEED)
+    out = tmp_path / "class"
+    assert main(["variants", base, "--count", "2", "--seed", "1", "-o", str(out)]) == 0
+    answers = tmp_path / "answers"
+    answers.mkdir()
+    (answers / "amy.toml").write_text('variant = "01"\n[answers]\nv_C = "0.4 m/s"\n')
+    loop = (out if where == "variants" else answers) / "variant-09.toml"
+    loop.symlink_to(loop)
+    book = tmp_path / "book.csv"
+    capsys.readouterr()
+    code = main(["check", base, str(answers), "--variants", str(out), "--gradebook", str(book)])
+    captured = capsys.readouterr()
+    assert code == 0, captured.err
+    assert "internal error" not in captured.err
+    rows = book.read_text().splitlines()
+    assert rows[0].startswith("student") and any(r.startswith("amy,") for r in rows)
+    assert len(rows) == (3 if where == "answers" else 2)
+
+
+# ------------------------------------------- a directory that takes no new file (/proc)
+
+
+@pytest.mark.skipif(not Path("/proc/self").is_dir(), reason="no /proc on this system")
+@pytest.mark.parametrize(
+    "argv, option",
+    [
+        (["sweep", SEED, "--steps", "12", "--csv", "/proc/x.csv"], "--csv"),
+        (["draw", SEED, "--diagram", "velocity", "-o", "/proc/x.svg"], "-o"),
+        (["page", SEED, "--frames", "4", "-o", "/proc/x.html"], "-o"),
+    ],
+)
+def test_an_output_where_no_file_can_be_made_names_the_output_not_a_temporary(capsys, argv, option):
+    """The temporary file beside the output could not be made: the line named
+    "/proc/.x.csv.dco3etcc.tmp", a file the user never asked for."""
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1, err
+    assert f"{option}: cannot write {argv[-1]}:" in err[0] and ".tmp" not in err[0], err
+
+
+# ------------------------------------------- a [variants] table's example, as TOML
+
+
+@pytest.mark.parametrize(
+    "variants, words",
+    [
+        ("D = [[100, 0], [110, 0]]", "a point's variation says what varies"),
+        ("BC = { from = 60, to = 72 }", "the range has no step"),
+        ('BC = "60 to 72"', "give a range"),
+    ],
+)
+def test_a_bad_variants_entry_shows_its_example_as_toml_a_reader_can_copy(
+    tmp_path, capsys, variants, words
+):
+    """The examples were written "{ from = 60, to = 75, step = 1 }}" (an f-string's
+    doubled brace in a plain string): each brace of the example must pair with one."""
+    base = (ROOT / SEED).read_text(encoding="utf-8").split("[variants]")[0]
+    path = _scene(tmp_path, base + "[variants]\n" + variants + "\n")
+    assert main(["variants", path, "--count", "2", "-o", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and words in err[0], err
+    example = err[0].split(words, 1)[1]
+    depth = 0
+    for ch in example:
+        depth += {"{": 1, "}": -1}.get(ch, 0)
+        assert depth >= 0, example
+    assert depth == 0, example
+    assert not (tmp_path / "out").exists()
