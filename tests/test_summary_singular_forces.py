@@ -230,3 +230,28 @@ def test_a_rocking_input_refines_its_force_minima_and_marks_the_limits():
         )[0]
         assert there == pytest.approx(e.minimum, rel=1e-9)
         assert e.minimum > cols[e.name].min() - 1e-6 * e.minimum  # (refined: to the grid's)
+
+
+def test_the_page_draws_the_forces_but_at_the_dead_points(scene):
+    """The page's force layer over a turn through both dead points: the frames there are
+    named and carry no force (none drawn); every other frame's arrows are the forces of the
+    sweep without those frames; the force scale is set by them (not by the 1e19 N the
+    rounding leaves at 180 deg)."""
+    from polygon_method.motion.sweeps import sweep
+    from polygon_method.page.force_layer import force_layers
+
+    degs = np.arange(0.0, 360.0, 7.5)
+    res = sweep(scene, np.radians(degs))
+    inertia, forces = force_layers(res, len(degs))
+    assert forces is not None and inertia is not None
+    dead = [int(i) for i in np.flatnonzero((degs == 0.0) | (degs == 180.0))]
+    assert forces["singular"] == dead
+    clear = [i for i in range(len(degs)) if i not in dead]
+    _, ref = force_layers(sweep(scene, np.radians(degs[clear])), len(clear))
+    largest = 0.0
+    for a, b in zip(forces["arrows"], ref["arrows"]):
+        F = np.asarray(a["F"]).reshape(-1, 2)
+        assert np.all(np.isfinite(F)) and np.all(F[dead] == 0.0)
+        assert np.array_equal(F[clear], np.asarray(b["F"]).reshape(-1, 2))
+        largest = max(largest, float(np.max(np.hypot(*F.T))))
+    assert forces["perCm"] == ref["perCm"] and largest < 1e5

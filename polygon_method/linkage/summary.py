@@ -39,6 +39,7 @@ from .summary_limits import (
     limit_positions,
     limits_in,
     unbounded_at_limits,
+    unbounded_sizes,
 )
 from .summary_forces import at_singular, force_arrays, singular_note, spread
 from .summary_record import Extreme, Summary
@@ -327,6 +328,7 @@ class _Reducer:
             if key not in unbounded:
                 unbounded[key], where[key] = ts, words
         notes += singular_note(self, deg)
+        unbounded_sizes(self, rows, unbounded, theta, spacing)
         for row in rows:  # an unbounded extreme is at the limit position, not a sample
             nm = row[0]
             if (nm, 1.0) in unbounded:

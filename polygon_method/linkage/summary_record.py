@@ -184,13 +184,7 @@ class Summary:
                 # (each value within its own error bound: _Reducer._noise); an extreme
                 # refined to a zero of the quantity is found to about TOL.negligible of the
                 # quantity's range, the accuracy of its place: written 0 too
-                big = max(  # (an end unbounded at a singular force angle: only the value
-                    # of an angle next to it, as large as the grid makes it; one unbounded at
-                    # a limit position keeps its sampled size, the quantity's scale)
-                    [abs(e.maximum)] * (not (e.max_unbounded and e.max_where))
-                    + [abs(e.minimum)] * (not (e.min_unbounded and e.min_where)),
-                    default=0.0,
-                )
+                big = max(abs(e.maximum), abs(e.minimum))
                 mx = "+unbounded" if e.max_unbounded else f"{quiet(e.maximum, big):.6g}"
                 mn = "-unbounded" if e.min_unbounded else f"{quiet(e.minimum, big):.6g}"
                 out.append(
