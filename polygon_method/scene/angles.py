@@ -131,6 +131,15 @@ def _tidy(raw: str) -> str:
         text,
     )
     text = re.sub(r"[,;()]", " ", text)
+    # "makes an angle of 60 deg with the vertical", "inclined at 30 deg to the line of
+    # stroke": the angle from that reference
+    text = re.sub(r"^(?:(?:makes|making|is|inclined|at|an|angle|of)\s+)+", "", text)
+    text = re.sub(
+        r"\b(?:with|to)\s+(?=(?:the\s+)?(?:upward |downward )?"
+        r"(?:vertical|horizontal|line of stroke))",
+        "from ",
+        text,
+    )
     text = re.sub(r"\b(the|measured|to|on|is|at)\b", "", text)
     text = text.replace("x-axis", "x axis")
     return re.sub(r"\s+", " ", text).strip()
