@@ -166,18 +166,24 @@ def test_with_the_vertical_without_its_side_is_refused_saying_which_forms_do():
 
 
 @pytest.mark.parametrize(
-    "words",
+    "words,alpha",
     [
-        "an angular retardation of 30 rad/s^2",
-        "a retardation of 30 rad/s^2",
-        "30 rad/s^2 retardation",
-        "deceleration of 30 rad/s^2",
-        "30 rad/s^2, retarding",
+        ("an angular retardation of 30 rad/s^2", -30.0),
+        ("a retardation of 30 rad/s^2", -30.0),
+        ("30 rad/s^2 retardation", -30.0),
+        ("deceleration of 30 rad/s^2", -30.0),
+        ("30 rad/s^2, retarding", -30.0),
+        ("30 rad/s^2 opposite to the rotation", -30.0),
+        ("30 rad/s^2, decreasing", -30.0),
+        ("increasing at the rate of 30 rad/s^2", 30.0),
+        ("30 rad/s^2 in the direction of rotation", 30.0),
+        ("30 rad/s^2 in the same sense", 30.0),
     ],
 )
-def test_a_retardation_in_the_books_words_acts_against_the_speed(words):
+def test_a_rate_in_the_books_words_acts_against_or_with_the_speed(words, alpha):
+    """The crank turning at 10 rad/s ccw: a retardation acts cw, an increase ccw."""
     sc = parse_scene(BASE + f'angle = 30\nspeed = "10 rad/s ccw"\nacceleration = "{words}"\n')
-    assert sc.input.alpha == -30.0
+    assert sc.input.alpha == alpha
 
 
 @pytest.mark.parametrize(

@@ -13,6 +13,7 @@ from ..common.errors import SceneError, printable
 from ..common.units import UNITS
 from .angles import candidates, is_book_form
 from .crank_speed import crank_speed
+from .rate_words import RATED as _RATED, slowing as _slowing
 from .records import GIVEN_KINDS, INPUT_KEYS, FixedPath, GivenRate, Input, PositionGiven, split_name
 from .tables import _suggest, _unit_at
 from .wheel_input import wheel_input
@@ -25,15 +26,6 @@ _DIRECTED = re.compile(
     re.IGNORECASE,
 )
 _WORDS = {"up": (0.0, 1.0), "down": (0.0, -1.0), "left": (-1.0, 0.0), "right": (1.0, 0.0)}
-#: a rate in a book's words, after or before its size: "2 rad/s^2 slowing down",
-#: "decelerating at 3 m/s^2", "speeding up at 1 ft/s^2"
-_RATE_WORD = (
-    r"(slowing(?: down)?|decelerat(?:ing|ion)|retard(?:ing|ation)|speeding up|accelerating)"
-)
-_RATED = (
-    re.compile(rf"^(.*?\S)\s*,?\s+{_RATE_WORD}$", re.IGNORECASE),
-    re.compile(rf"^(?:an? )?(?:angular )?{_RATE_WORD}\s+(?:(?:at|of)\s+)?(.+)$", re.IGNORECASE),
-)
 #: a sense or a way in a rate's text (refused beside "slowing down": one or the other)
 _SENSE_OR_WAY = re.compile(
     r"(^\s*[-+])|\b(cw|ccw|acw|clockwise|anticlockwise|"
@@ -146,7 +138,7 @@ class _Input:
                 key,
             )
         size = abs(self.qty(size_text, kind, table, key).value)
-        slowing = word.lower().startswith(("slow", "decel", "retard"))
+        slowing = _slowing(word)
         return (-size if slowing else size) * (1.0 if motion >= 0 else -1.0)
 
     def dead_centres(self, link, pivot, tip, ground):
