@@ -45,6 +45,7 @@ BOOKS = [
     "sadhu_offset_slider_past_idc",
     "oscillating_cylinder_piston_speed",
     "waldron_stephenson_slider",
+    "norton_fourbar_coupler_point_polar",
     "force_static_bell_crank",
     "force_static_geared_five_bar",
     "force_static_slider_drives_rocker",
@@ -242,3 +243,57 @@ speed = "100 rpm ccw"
     with pytest.raises(SceneError) as exc:
         parse_scene(text) and solve(parse_scene(text))
     assert "\n" not in str(exc.value) and "cannot be found" in str(exc.value)
+
+
+FOURBAR = """units = "mm"
+[ground]
+A = [0, 0]
+D = [100, 0]
+[links]
+AB = 40
+BC = 120
+CD = 80
+[input]
+crank = "AB"
+angle = 40
+speed = "25 rad/s ccw"
+[points]
+"""
+
+
+@pytest.mark.parametrize(
+    "spec,start,turn",
+    [
+        ('{ on = "BC", from = "B", along = 60, angle = 30 }', "B", 30),
+        ('{ on = "BC", along = 60, angle = "30 deg cw" }', "B", -30),
+        ('{ on = "BC", from = "C", along = 50, angle = 140 }', "C", 140),
+        ('{ on = "CB", from = "C", along = 50, angle = -100 }', "C", -100),
+    ],
+)
+def test_a_point_at_a_distance_and_an_angle_from_a_links_end(spec, start, turn):
+    """P = S + d (cos(g + a), sin(g + a)), g the direction from S to the link's other end
+    (by hand, from the solved ends)."""
+    import math
+
+    sol = solve(parse_scene(FOURBAR + f"P = {spec}\n"))
+    S, O = sol.P[start], sol.P["C" if start == "B" else "B"]
+    g = math.atan2(O[1] - S[1], O[0] - S[0]) + math.radians(turn)
+    d = 0.06 if start == "B" else 0.05
+    assert sol.P["P"] == pytest.approx((S[0] + d * math.cos(g), S[1] + d * math.sin(g)), abs=1e-15)
+
+
+@pytest.mark.parametrize(
+    "spec,words",
+    [
+        ('{ on = "BC", from = "B", along = 60, angle = 180 }', "on the line of BC"),
+        ('{ on = "BC", from = "B", angle = 30 }', "angle goes with along"),
+        ('{ on = "BC", distances = { B = 50, C = 80 }, angle = 30 }', "angle goes with along"),
+        ('{ on = "BC", from = "A", along = 60, angle = 30 }', "is not an end of BC"),
+        ('{ on = "BC", from = "B", along = -60, angle = 30 }', "positive"),
+    ],
+)
+def test_a_point_at_an_angle_stated_wrong_is_refused_in_one_line(spec, words):
+    with pytest.raises(SceneError) as exc:
+        parse_scene(FOURBAR + f"P = {spec}\n")
+    msg = str(exc.value)
+    assert "\n" not in msg and "[points] P" in msg and words in msg, msg
