@@ -31,6 +31,10 @@ class Extreme:
     refined: bool = False
     max_unbounded: bool = False  # grows without bound towards the limit position at_max
     min_unbounded: bool = False
+    #: where the maximum (minimum) grows without bound towards an angle that is not a limit
+    #: position: why (a group's force equations singular there), else ""
+    max_where: str = ""
+    min_where: str = ""
 
     @property
     def constant(self) -> bool:
@@ -180,7 +184,13 @@ class Summary:
                 # (each value within its own error bound: _Reducer._noise); an extreme
                 # refined to a zero of the quantity is found to about TOL.negligible of the
                 # quantity's range, the accuracy of its place: written 0 too
-                big = max(abs(e.maximum), abs(e.minimum))
+                big = max(  # (an end unbounded at a singular force angle: only the value
+                    # of an angle next to it, as large as the grid makes it; one unbounded at
+                    # a limit position keeps its sampled size, the quantity's scale)
+                    [abs(e.maximum)] * (not (e.max_unbounded and e.max_where))
+                    + [abs(e.minimum)] * (not (e.min_unbounded and e.min_where)),
+                    default=0.0,
+                )
                 mx = "+unbounded" if e.max_unbounded else f"{quiet(e.maximum, big):.6g}"
                 mn = "-unbounded" if e.min_unbounded else f"{quiet(e.minimum, big):.6g}"
                 out.append(
@@ -188,11 +198,15 @@ class Summary:
                     f"{fmt_deg(e.at_max, 3):>10} {mn:>12} "
                     f"{fmt_deg(e.at_min, 3):>10}" + (f"  {e.what}" if e.what else "")
                 )
-                for flag, at, word in (
-                    (e.max_unbounded, e.at_max, "grows"),
-                    (e.min_unbounded, e.at_min, "falls"),
+                for flag, at, word, why in (
+                    (e.max_unbounded, e.at_max, "grows", e.max_where),
+                    (e.min_unbounded, e.at_min, "falls", e.min_where),
                 ):
-                    if flag:
+                    if flag and why:
+                        out.append(
+                            f"{'':<{w}}  ({word} without bound towards {fmt_deg(at, 3)} {unit})"
+                        )
+                    elif flag:
                         out.append(
                             f"{'':<{w}}  ({word} without bound towards the limit "
                             f"position at {fmt_deg(at, 3)} {unit})"

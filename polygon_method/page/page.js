@@ -58,22 +58,16 @@ function unit(a, b) {
   const dx = b[0] - a[0], dy = b[1] - a[1], L = Math.hypot(dx, dy) || 1;
   return [dx / L, dy / L];
 }
-// the image of the guide's point under a sliding block, and (accelerations) the start of
-// the Coriolis component: v_X = v_X1 + vs u; a_X = a_X1 + as u + coriolis (SI)
+const pair = (flat, k) => [flat[2 * k], flat[2 * k + 1]];
+// the image of the guide's point under a sliding block, and where the next component starts
+// (velocities: x itself; accelerations: the Coriolis component's start), as the data gives
+// them: v_X = v_X1 + vs u; a_X = a_X1 + as u + coriolis (SI)
 function under(phase, s, k) {
-  const u = unit(vec("configuration", s.guide[0], k), vec("configuration", s.guide[1], k));
-  const x = vec(phase, s.point, k), S = D.S[s.key];
-  const cor = phase === "velocity" ? [0, 0] : [S[2][k], S[3][k]];
-  const along = phase === "velocity" ? S[0][k] : S[1][k];
-  const back = [x[0] - cor[0], x[1] - cor[1]];
-  return [[back[0] - along * u[0], back[1] - along * u[1]], back];
+  const g = D.guidePoints[s.key];
+  return phase === "velocity" ? [pair(g[0], k), vec(phase, s.point, k)] : [pair(g[1], k), pair(g[2], k)];
 }
 // where a link's centripetal component (of q about p) ends and its tangential one starts (SI)
-function knee([p, q, key], k) {
-  const w = D.W[key][k], Pp = vec("configuration", p, k), Pq = vec("configuration", q, k);
-  const ap = vec("acceleration", p, k);
-  return [ap[0] - w * w * (Pq[0] - Pp[0]), ap[1] - w * w * (Pq[1] - Pp[1])];
-}
+const knee = ([, , key], k) => pair(D.knees[key], k);
 
 // ---------------------------------------------------------------- scales and panels
 // every point a diagram draws at frame k (SI): what its panel must hold

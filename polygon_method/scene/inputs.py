@@ -370,7 +370,7 @@ class _Input:
                 rate_keys[0],
             )
         if speed.value == 0:  # at rest: the weights and loads alone, per rad/s of the crank
-            speed = self.at_rest_speed(alpha, speed.sense)
+            speed, alpha = self.at_rest_speed(alpha, speed.sense, second is not None), 0.0
         self.two_inputs = second is not None
         if second is not None and second.crank == link.key:
             raise self.error(
@@ -439,8 +439,6 @@ class _Input:
         through = sl.through if sl.through[1] is not None else next(iter(ground.values()))
         u = sl.u
         vs, _ = self.directed(spec[vs_key], "velocity", vs_key, u, need=False)
-        if vs == 0:
-            raise self.error(f"{vs_key} is zero: nothing moves", "input", vs_key)
         raw_as = spec.get(as_key, 0)
         if isinstance(raw_as, (int, float)) and not isinstance(raw_as, bool) and raw_as == 0:
             acc = 0.0
@@ -448,6 +446,8 @@ class _Input:
             acc = self.rated(raw_as, "acceleration", "input", as_key, vs)
             if acc is None:
                 acc, _ = self.directed(raw_as, "acceleration", as_key, u, need=False)
+        if vs == 0:  # at rest (the weights held, or starting with acc): per 1 m/s
+            vs, acc = self.at_rest_driver(vs, acc, vs_key), 0.0
         if (s_key in spec) == (name in spec):
             raise self.error(
                 f"[input] gives the block's place {'twice' if name in spec else 'not at all'}:"
