@@ -46,6 +46,7 @@ BOOKS = [
     "oscillating_cylinder_piston_speed",
     "waldron_stephenson_slider",
     "norton_fourbar_coupler_point_polar",
+    "ghosh_mallik_fourbar_inclined_frame",
     "force_static_bell_crank",
     "force_static_geared_five_bar",
     "force_static_slider_drives_rocker",
@@ -297,3 +298,60 @@ def test_a_point_at_an_angle_stated_wrong_is_refused_in_one_line(spec, words):
         parse_scene(FOURBAR + f"P = {spec}\n")
     msg = str(exc.value)
     assert "\n" not in msg and "[points] P" in msg and words in msg, msg
+
+
+INCLINED = """units = "mm"
+[ground]
+A = [0, 0]
+D = [90, -40]
+[links]
+AB = 40
+BC = 100
+CD = 70
+[input]
+crank = "AB"
+speed = "25 rad/s ccw"
+"""
+
+
+@pytest.mark.parametrize(
+    "words,turn",
+    [
+        ("60 deg from AD, ccw", 60),
+        ("60 deg from DA, cw", -60),
+        ("60 deg from the line of centres, ccw", 60),
+        ("makes 60 deg with the line of centers, clockwise", -60),
+        ("30 deg from the fixed link, ccw", 30),
+    ],
+)
+def test_a_cranks_angle_from_the_line_of_centres(words, turn):
+    """A book's "angle BAD = 60 deg" on a frame drawn inclined: the direction A -> D,
+    atan2(-40, 90), turned by the angle (by hand)."""
+    import math
+
+    sc = parse_scene(INCLINED + f'angle = "{words}"\n')
+    want = math.degrees(math.atan2(-40, 90)) + turn
+    assert math.degrees(sc.input.angle) == pytest.approx(want, abs=1e-12)
+
+
+@pytest.mark.parametrize(
+    "words,said",
+    [
+        ("60 deg from AD", 'add the sense, e.g. "60 deg from AD, ccw"'),
+        ("60 deg from AB, ccw", "AB is no line of two ground points through the crank's pivot A"),
+    ],
+)
+def test_an_angle_from_the_line_of_centres_stated_wrong_is_refused_in_one_line(words, said):
+    with pytest.raises(SceneError) as exc:
+        parse_scene(INCLINED + f'angle = "{words}"\n')
+    msg = str(exc.value)
+    assert "\n" not in msg and "[input] angle" in msg and said in msg, msg
+
+
+def test_the_line_of_centres_of_a_frame_of_three_points_must_be_named():
+    text = INCLINED.replace("D = [90, -40]", "D = [90, -40]\nE = [0, 200]") + (
+        'angle = "60 deg from the line of centres, ccw"\n'
+    )
+    with pytest.raises(SceneError) as exc:
+        parse_scene(text)
+    assert "the frame has 3 points" in str(exc.value) and "\n" not in str(exc.value)

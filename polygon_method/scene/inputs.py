@@ -315,6 +315,7 @@ class _Input:
                 "crank angle",
                 dead=lambda: self.dead_centres(link, pivot, tip, ground),
                 sense=None if speed is None else speed.value,
+                centres=(pivot, ground),
             )
             angle = book.value
             said = (book.words, angle, book.slips, f"crank angle: {book.note}")

@@ -27,6 +27,8 @@ from __future__ import annotations
 
 import math
 
+from ..common.tolerances import SAME
+
 __all__ = ["apex", "polar_points", "ROUNDING"]
 
 #: the rounding of a length given in the scene's unit and held in metres, relative
@@ -92,7 +94,7 @@ def _polar(reader, spec, name):
         )
     a = reader.qty(spec["angle"], "angle", "points", name, default_unit="deg", allow_sense=True)
     d, L = reader.length(spec["along"], "points", name), link.length
-    if abs(math.sin(a.value)) < 1e-9:  # on the link's line: along says it
+    if abs(math.sin(a.value)) < SAME:  # on the link's line: along says it
         raise reader.error(
             f"angle = {spec['angle']!r} puts {name} on the line of {link.key}: give along "
             "alone (negative: beyond the start)",
