@@ -36,7 +36,7 @@ from dataclasses import replace
 from ..common.errors import AssemblyError, MobilityError, PolygonMethodError, SceneError
 from ..common.numbers import in_units, quiet
 from .completion import gas_towards_crank, given_completed, place
-from .plan import Bodies, Dims, Plan, _pin_entry
+from .plan import Bodies, Dims, Plan, _pin_entries, first_tier
 from ..scene import GuideSlider, Scene, key_line
 from ..steps import NEEDS, TIERS, Context, Crank, cylinder
 from ..steps import collar
@@ -159,12 +159,6 @@ def gruebler(scene: Scene) -> int:
     return 3 * (n - 1) - 2 * j - len(scene.rolling)
 
 
-def _first_tier(scene) -> tuple:
-    """The first tier's recognisers that can find a point in ``scene`` (TIERS as it is now):
-    those that need no table, and those whose table (``steps.NEEDS``) the scene has."""
-    return tuple([r for r in TIERS[0] if (t := NEEDS.get(r)) is None or getattr(scene, t)])
-
-
 class _Compiler:
     """The constraint graph as the recognisers see it (``g`` in the steps' ``recognise``):
     the points found so far (``P``), the links and sliders already used, the bodies."""
@@ -185,16 +179,16 @@ class _Compiler:
         self.used_links = set(self._fixed)
         self.used_sliders = set()
         self.notes = []
-        self.bodies = Bodies(scene)
+        self.bodies = bodies = Bodies(scene)
         self._carried = {cp.name: cp for cp in scene.points}
-        self._sliders = {s.point: s for s in scene.sliders if not s.slot}
+        sliders = scene.sliders
+        self._sliders = {s.point: s for s in sliders if not s.slot} if sliders else {}
         self._slots = {}  # a peg's point -> its two slots
-        for s in scene.sliders:
-            if s.slot:
-                self._slots.setdefault(s.point, []).append(s)
-        self.first_tier = _first_tier(scene)
+        self._guided = {}  # link key -> slider points that slide on it
+        self._yokes = {}  # a pin -> the yoke whose slot it slides in
+        self.first_tier = first_tier(scene, TIERS[0], NEEDS)  # (TIERS as it is now)
         self._bodies_of = of = {}
-        frame = self.bodies.frame
+        frame = bodies.frame
         for lk in scene.links:
             key = lk.key
             for p in frame(key):
@@ -202,9 +196,12 @@ class _Compiler:
                     of[p].append(key)
                 else:
                     of[p] = [key]
-        self._guided = {}  # link key -> slider points that slide on it
-        self._yokes = {}  # a pin -> the yoke whose slot it slides in
-        for s in scene.sliders:
+        if not sliders:
+            return
+        for s in sliders:
+            if s.slot:
+                self._slots.setdefault(s.point, []).append(s)
+        for s in sliders:
             if isinstance(s, GuideSlider):
                 self._guided.setdefault(scene.link(s.guide).key, []).append(s.point)
             elif hasattr(s, "yoke"):
@@ -436,7 +433,7 @@ class _Compiler:
                 )
             )
         else:
-            crank = self.bodies._links.get(inp.crank) or sc.link(inp.crank)
+            crank = self.bodies.link(inp.crank)
             self.add(Crank(0, crank.key, inp.pivot, inp.tip, crank.length))
         two = inp.second
         if two is not None and two.block is not None:  # a collar sliding along the crank
@@ -491,7 +488,7 @@ class _Compiler:
             self.steps.append(st)
         self.finish()
         fixed = dict.fromkeys(self._fixed, 0.0)
-        pins = [_pin_entry(sc, pin.point) for pin in sc.pins] if sc.pins else ()
+        pins = _pin_entries(sc) if sc.pins else ()
         steps = tuple(self.steps)
         ground = dict(sc.ground)
         dims = Dims(
@@ -502,7 +499,7 @@ class _Compiler:
             inp.alpha,
             {p.point: p.radius for p in sc.pins} if sc.pins else {},
         )
-        return Plan(steps, ground, sc, tuple(self.notes), fixed, tuple(pins), dims)
+        return Plan(steps, ground, sc, tuple(self.notes), fixed, pins, dims)
 
     def _first(self, kinds, name):
         for recognise in kinds:
