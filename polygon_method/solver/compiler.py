@@ -38,8 +38,7 @@ from ..common.numbers import in_units, quiet
 from .completion import gas_towards_crank, given_completed, place
 from .plan import Bodies, Dims, Plan, _pin_entries, first_tier
 from ..scene import GuideSlider, Scene, key_line
-from ..steps import NEEDS, TIERS, Context, Crank, cylinder
-from ..steps import collar
+from ..steps import NEEDS, TIERS, Context, Crank, collar, cylinder
 from ..steps.block import BlockDriver
 from ..steps.rolling_driver import WheelDriver
 from ..steps.second_collar import second_collar
@@ -49,6 +48,8 @@ __all__ = ["compile_plan", "gruebler"]
 
 #: crank angles tried per turn for saying where a scene that cannot assemble could
 _REACH_GRID = 720
+#: an [assembly] hint in words: (the axis compared, +1 for the larger coordinate)
+_SIDES = {"above": (1, 1), "below": (1, -1), "right": (0, 1), "left": (0, -1)}
 
 
 # --------------------------------------------------------------------------- compiling
@@ -387,10 +388,13 @@ class _Compiler:
 
     def neighbours(self, name):
         out = set()
-        for key in self.bodies_of(name):
-            out.update(self.body(key))
-            out.update(self._guided.get(key, ()))
-        out.update(self._yokes.get(name, ()))
+        frame, guided = self.bodies.frame, self._guided
+        for key in self._bodies_of.get(name, ()):
+            out.update(frame(key))
+            if guided:
+                out.update(guided.get(key, ()))
+        if self._yokes:
+            out.update(self._yokes.get(name, ()))
         return out
 
     def run(self) -> Plan:
@@ -551,7 +555,7 @@ class _Compiler:
             d = (plus[0] - minus[0]) * ux + (plus[1] - minus[1]) * uy
             return 1.0 if d >= 0 else -1.0
         if isinstance(hint, str):
-            axis, want = {"above": (1, 1), "below": (1, -1), "right": (0, 1), "left": (0, -1)}[hint]
+            axis, want = _SIDES[hint]
             d = (plus[axis] - minus[axis]) * want
             if abs(d) <= 1e-9 * scale:
                 if default:  # level: take the right-hand one
