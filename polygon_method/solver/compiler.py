@@ -236,10 +236,10 @@ class _Compiler:
     def free(self, name):
         """(body key, its known point K, |KX|) for each unused body of ``name`` that has
         exactly one known point (none if a body has two: that is a carried point)."""
-        out = []
-        for key in self.bodies_of(name):
-            b = self.body(key)
-            known = [p for p in b if p in self.P]
+        out, frame, P = [], self.bodies.frame, self.P
+        for key in self._bodies_of.get(name, ()):
+            b = frame(key)
+            known = [p for p in b if p in P]
             if len(known) == 1 and key not in self.used_links:
                 k = known[0]
                 (kx, ky), (x, y) = b[k], b[name]

@@ -40,9 +40,9 @@ def _image(px, py, qx, qy, lam, mu):
 
 def recognise(g, name):
     """A body of ``name`` with two known points."""
-    P = g.P
+    P, frame = g.P, g.bodies.frame
     for key in g.bodies_of(name):
-        b = g.body(key)
+        b = frame(key)
         if len(b) == 2:  # a plain link: its other end alone is no second known point
             continue
         known = [p for p in b if p in P]
