@@ -65,6 +65,30 @@ class Verdict:
     correct_text: str | None = None  # how the correct value is shown, where not a number
     extra: dict | None = None  # more for the JSON (a centre's positions)
 
+    @classmethod
+    def judged(
+        cls, ans, given, correct, unit, tol, rule, ok, signed, mistake=None, diagnosis=None
+    ) -> "Verdict":
+        """The verdict on answer ``ans`` (its key, text and line) of ``given`` against
+        ``correct`` with the absolute tolerance ``tol``: error |given - correct| / |correct|
+        (None where correct is nought) and tolerance tol / |correct| (infinite there)."""
+        return cls(
+            ans.key,
+            ans.raw,
+            given,
+            correct,
+            unit,
+            abs(given - correct) / abs(correct) if correct else None,
+            tol / abs(correct) if correct else math.inf,
+            tol,
+            rule,
+            ok,
+            signed,
+            mistake,
+            diagnosis,
+            ans.line,
+        )
+
     @property
     def warning(self) -> str | None:
         """Words warning of a given value beyond what a mechanism usually reaches (read

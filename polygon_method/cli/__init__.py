@@ -219,7 +219,7 @@ def _add_sweep(sub) -> None:
     s.add_argument("--from", dest="start", type=float, help="first crank angle (deg)")
     s.add_argument("--to", dest="stop", type=float, help="last crank angle (deg)")
     s.add_argument("--step", type=float, help="crank angle step (deg)")
-    s.add_argument("--csv", help="FILE.csv: one row per crank angle")
+    s.add_argument("--csv", help="FILE.csv: one row per crank angle (- : on standard output)")
     s.add_argument(
         "--error-bound",
         action="store_true",
