@@ -278,3 +278,45 @@ def test_a_diagram_of_a_hundred_areas_is_solved(tmp_path, capsys):
     cycle = json.loads(capsys.readouterr().out)["cycle"]
     assert len(cycle["areas"]) == 100
     assert cycle["dE_max"] == pytest.approx(70 * 4.5 * math.pi / 180, rel=1e-12)
+
+
+# --------------------------------------------------- a point used before it is set out
+
+_E = 'E = { on = "BC", along = 40 }'
+
+
+@pytest.mark.parametrize(
+    "points, words",
+    [
+        (  # F set out from E, which is given below it
+            'F = { on = "BC", distances = { E = 20, C = 30 }, turn = "cw" }\n' + _E,
+            "E is not a point of link BC yet: E is set out on it below F in [points]; give E first",
+        ),
+        (  # the same, E named as on "CB"
+            'F = { on = "BC", distances = { E = 20, C = 30 }, turn = "cw" }\n'
+            'E = { on = "CB", along = 26 }',
+            "E is set out on it below F in [points]; give E first",
+        ),
+        (  # a point of another link is no forward reference
+            'F = { on = "BC", distances = { A = 20, C = 30 }, turn = "cw" }\n' + _E,
+            "): A is not a point of link BC",
+        ),
+    ],
+)
+def test_a_point_set_out_from_one_given_below_it_says_to_give_that_one_first(
+    tmp_path, capsys, points, words
+):
+    """The order of [points] matters (a point is set out from those above it): the line
+    said only "E is not a point of link BC", though E is, further down."""
+    text = FOURBAR.replace("[input]", "[points]\n" + points + "\n[input]")
+    path = _scene(tmp_path, text)
+    assert main(["solve", path]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "[points] F (line" in err[0], err
+    assert words in err[0], err
+    if "give E first" not in words:
+        assert "yet" not in err[0], err
+    else:  # and given first, the same points are solved
+        lines = points.splitlines()
+        swapped = _scene(tmp_path, text.replace(points, lines[1] + "\n" + lines[0]), "t.toml")
+        assert main(["solve", swapped]) == 0
