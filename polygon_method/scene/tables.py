@@ -10,7 +10,7 @@ import re
 from ..common.errors import SceneError
 from ..common.units import did_you_mean
 from .angles import read_angle
-from .triangle import apex, polar_points
+from .triangle import apex, not_on_link, polar_points
 
 from .records import (
     CarriedPoint,
@@ -99,17 +99,6 @@ class _Tables:
             out.append(CarriedPoint(name, link.key, xy[0] / L, xy[1] / L, how, spread, source))
         return out
 
-    def _carried_on(self, point, link) -> bool:
-        """Whether [points] sets ``point`` out on ``link`` (further down than where it is
-        named)."""
-        spec = self.table("points").get(point)
-        if not isinstance(spec, dict) or not isinstance(spec.get("on"), str):
-            return False
-        try:
-            return self.find_link(spec["on"], "points", point)[0].key == link.key
-        except SceneError:
-            return False
-
     def on_link(self, spec, link, pts, frame, table, name, spreads=None):
         """(x, y) in the link's frame (P at 0, Q at (L, 0); ``frame`` the points known in
         it) of a place given as ``along`` (with ``from``) or ``distances`` with ``turn``, the
@@ -159,19 +148,8 @@ class _Tables:
                 )
             (r1, d1), (r2, d2) = dist.items()
             for r in (r1, r2):
-                if r not in frame:
-                    later = table == "points" and self._carried_on(r, link)
-                    raise self.error(
-                        f"{r} is not a point of link {link.key}"
-                        + (
-                            f" yet: {r} is set out on it below {name} in [points]; give {r} "
-                            f"first (a point is set out from those above it)"
-                            if later
-                            else ""
-                        ),
-                        table,
-                        name,
-                    )
+                if r not in frame:  # (or not yet: given below in [points])
+                    raise self.error(not_on_link(self, r, link, name, table), table, name)
             d1 = self.length(d1, table, name)
             d2 = self.length(d2, table, name)
             (x1, y1), (x2, y2) = frame[r1], frame[r2]

@@ -28,8 +28,9 @@ from __future__ import annotations
 import math
 
 from ..common.tolerances import SAME
+from .records import split_name
 
-__all__ = ["apex", "polar_points", "ROUNDING"]
+__all__ = ["apex", "not_on_link", "polar_points", "ROUNDING"]
 
 #: the rounding of a length given in the scene's unit and held in metres, relative
 ROUNDING = 2.0**-52
@@ -106,3 +107,17 @@ def _polar(reader, spec, name):
     rest = {k: v for k, v in spec.items() if k not in ("along", "from", "angle")}
     turn = "ccw" if math.sin(a.value) > 0 else "cw"
     return {**rest, "distances": {start: d / u, link.other(start): d2 / u}, "turn": turn}
+
+
+def not_on_link(reader, point, link, name, table) -> str:
+    """Why ``point``, named in ``distances`` of ``name``, is no point of ``link``: it is
+    not, or (in ``[points]``, whose points are set out in order) not yet, being set out on
+    the link further down."""
+    spec = reader.table("points").get(point) if table == "points" else None
+    on = spec.get("on") if isinstance(spec, dict) else None
+    if isinstance(on, str) and frozenset(split_name(on)) == frozenset(link.points):
+        return (
+            f"{point} is not a point of link {link.key} yet: {point} is set out on it below "
+            f"{name} in [points]; give {point} first (a point is set out from those above it)"
+        )
+    return f"{point} is not a point of link {link.key}"
