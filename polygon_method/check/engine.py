@@ -85,6 +85,10 @@ def _gas_alone(sol, key):
     reciprocating parts' inertia)."""
     sc = sol.scene
     e = efforts(sc, sol.plan, sol.P, sol.forces)
+    if e is None:  # (several cylinders: their pistons' inertia left out, below)
+        return engine_value(
+            sol, key, replace(sc, masses=tuple(m for m in sc.masses if not m.block))
+        )
     blk = next(i for i in sol.forces.inertia if i.body == f"block {e.piston}")
     _, sd = slider_crank(sol.plan, e.piston)
     fx, fy = blk.force
