@@ -199,3 +199,31 @@ def test_a_block_driven_page_s_axis_has_round_places_that_do_not_run_together(br
     assert min(abs(mantissa - m) for m in (1, 2, 5)) < 1e-9
     for (_, _, right), (_, left, _) in zip(ticks, ticks[1:]):
         assert left - right >= 4  # px apart
+
+
+@pytest.mark.parametrize(
+    "path",
+    [
+        "worked_problems/gear_train_given_gear.toml",  # the motion given on another link
+        "worked_problems/boom_cylinder_load.toml",  # an angle in a book's words
+        "tests/textbook/scotch_yoke_inclined.toml",  # a guide at an angle, marked on a line
+    ],
+)
+def test_a_sheet_writes_squares_degrees_and_greek_letters_as_a_book_does(path):
+    """What the sheet writes, read back from the glyphs it draws: no ``^2``, no ``deg``
+    after a number, no ``omega_``/``alpha_`` (the scene's ASCII spellings), but the
+    characters a book prints; the sheet still names what the scene gives."""
+    from test_paper import _said
+
+    sol = solve(load_scene(ROOT / path))
+    datas, _, _, _ = render_pages(sol, "svg", "all", paper="A3")
+    svg = Svg(datas[0])
+    said = " | ".join(
+        _said(svg, g) for g in svg.groups if g.startswith(("note-", "label-")) and g != "label-"
+    )
+    for ascii_ in ("^", "omega", "alpha", "deg"):
+        assert ascii_ not in said, (ascii_, said)
+    given = sol.scene.input.given
+    if given is not None:
+        assert given.key.replace("omega_", "ω_") in said
+    assert "°" in said

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import io
 import math
+import re
 from dataclasses import dataclass, field
 
 from ..common.tolerances import DISTINCT, ON_PAPER, ROUNDING
@@ -61,6 +62,28 @@ def _text_size(text: str, size: float, weight: str = "normal"):
         got = (bb.width / PT_PER_CM, bb.height / PT_PER_CM)
         _MEASURE[key] = got
     return got
+
+
+# --------------------------------------------------------------------------- on paper
+
+_PAPER_WORDS = (
+    (re.compile(r"\^2\b"), "\u00b2"),  # m/s^2 -> m/s²
+    (re.compile(r"(\d) ?deg\b"), "\\1\u00b0"),  # 40 deg -> 40°
+    (re.compile(r"\bomega_"), "\u03c9_"),  # omega_BC -> ω_BC
+    (re.compile(r"\balpha_"), "\u03b1_"),  # alpha_BC -> α_BC
+)
+
+
+def paper_words(text: str) -> str:
+    """Words as a drawing writes them: the units' squares, the degrees and the Greek letters
+    that the scene's text and the printed solution spell out in ASCII.
+
+    >>> paper_words("from omega_O2-B = 200 rpm cw, alpha_O2-B = 10 rad/s^2 ccw (40 deg past)")
+    'from ω_O2-B = 200 rpm cw, α_O2-B = 10 rad/s² ccw (40° past)'
+    """
+    for pattern, to in _PAPER_WORDS:
+        text = pattern.sub(to, text)
+    return text
 
 
 # --------------------------------------------------------------------------- a sketch
@@ -200,7 +223,7 @@ class _Sketch:
     ):
         self.labels.append(
             _Label(
-                text,
+                paper_words(text),
                 [tuple(map(float, a)) for a in anchors],
                 size,
                 gid or f"label-{len(self.labels)}",
@@ -214,6 +237,7 @@ class _Sketch:
 
     def note(self, x, y, text, size=NOTE_PT, ha="left", gid=None, weight="normal", color="#000000"):
         """Fixed text, ``(x, y)`` its left (or centre) and vertical middle."""
+        text = paper_words(text)
         w, h = _text_size(text, size, weight)
         cx = x + w / 2 if ha == "left" else x
         self.notes.append(
