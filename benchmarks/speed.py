@@ -558,6 +558,13 @@ def side_by_side(rounds):
             r.rubbing_velocity
         sol.input_torque
 
+    def full_named():  # and every number by name, as the floor gives them (dicts)
+        sol = solve(scene)
+        for r in sol.rubbing.values():
+            r.rubbing_velocity
+        sol.input_torque
+        return sol.P, sol.V, sol.A, sol.W, sol.Al, sol.cond
+
     floor = floor_fourbar()
     fresh_scene = parse_scene(FOURBAR_TEXT)
 
@@ -580,6 +587,7 @@ def side_by_side(rounds):
     build = _pylinkage_build_and_step
     batches = {
         "full": (full, 50),
+        "full_named": (full_named, 50),
         "floor": (floor, 50),
         "floor_tuple": (lambda: floor(True), 50),
         "pylinkage_step": (lambda: next(steps), 20),
@@ -757,6 +765,7 @@ def main(argv=None):
             ("sbs_full", "sbs_pylinkage_step", 0.25, "warm full solve / pylinkage step"),
             ("sbs_full", "sbs_floor", 2.0, "warm full solve / the floor"),
             ("sbs_full", "sbs_floor_tuple", None, "warm full solve / the floor, unnamed"),
+            ("sbs_full_named", "sbs_floor", 2.0, "the same, its dicts read / the floor"),
             ("sbs_fresh", "sbs_pylinkage_build_step", 0.8, "never seen / pylinkage build + step"),
         ):
             ratio = r[ours] / r[peer]
