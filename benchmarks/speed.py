@@ -541,7 +541,8 @@ def side_by_side(rounds):
     measured a minute after its peer is compared with another machine. Our warm full
     solve, the floor (named and unnamed), pylinkage's step (a running
     ``step_with_derivatives``), and a mechanism never seen against pylinkage building its
-    ``Linkage`` and stepping once. Empty where pylinkage is not installed."""
+    ``Linkage`` and stepping once. Each batch is timed after three untimed calls (warm,
+    whatever ran before it). Empty where pylinkage is not installed."""
     try:
         from pylinkage.mechanism import fourbar
     except ImportError:
@@ -598,6 +599,12 @@ def side_by_side(rounds):
     clock = time.perf_counter
     for _ in range(rounds):
         for name, (fn, n) in batches.items():
+            # three calls untimed first: each batch timed warm, whichever batch ran before
+            # it (the batch after pylinkage's build, whose objects fill the caches, was
+            # 15-20 % slower in its first calls: the figure first in the round paid for it)
+            fn()
+            fn()
+            fn()
             t = clock()
             for _ in range(n):
                 fn()
