@@ -302,6 +302,12 @@ def test_the_press_page_follows_the_flywheels_energy(browser, written, width):
         assert _agrees(v["the flywheel's energy above its start"], e, dE), (k, v)
         assert _agrees(v["the motor's power"], E / 5, E)
         assert o.fits()
+    # the book's table: a to b while the hole is punched, b back to a while the motor refills
+    book = o.page.evaluate(
+        "[...document.querySelectorAll('#book tbody tr')].map(r => [...r.cells].map(c => c.textContent))"
+    )
+    assert [r[:2] for r in book] == [["a", "b"], ["b", "a"]], book
+    assert _agrees(book[0][2], -dE, dE) and _agrees(book[1][2], dE, dE)
     o.close()
 
 

@@ -491,7 +491,18 @@ def test_bad_force_input_is_one_located_line(extra, words):
     assert words in line and "\n" not in line and line.startswith("engine.toml: [")
 
 
-def test_a_step_not_covered_is_refused_in_one_line_naming_it():
+def _not_covered(monkeypatch):
+    """A kind the force analysis does not cover (every kind is covered now: the triad's
+    plate of three links, the last, made uncovered again here)."""
+    import polygon_method.forces as forces
+    import polygon_method.forces.triad as triad
+
+    monkeypatch.setattr(triad, "covers", lambda st: not st.sides)
+    monkeypatch.setitem(forces._NOT_YET, "triad", "a triad whose plate is made of three links")
+
+
+def test_a_step_not_covered_is_refused_in_one_line_naming_it(monkeypatch):
+    _not_covered(monkeypatch)
     sc = load_scene(ROOT / "tests" / "textbook" / "class3_triangle_plate.toml")
     raw = scene_table(sc)
     raw["gravity"] = {}
@@ -622,7 +633,8 @@ def test_every_force_problem_writes_finite_json_and_words(path):
     assert "8. The driving torque and the frame" in steps_text(sol)
 
 
-def test_a_refused_scene_still_shows_its_motion_and_says_why():
+def test_a_refused_scene_still_shows_its_motion_and_says_why(monkeypatch):
+    _not_covered(monkeypatch)
     from polygon_method.text.report import solution_text
     from polygon_method.text.steptable import steps_text
 

@@ -157,6 +157,59 @@ def test_page_data_is_the_frames_rounded_to_six_figures():
     assert np.allclose(d["theta"], fr.degrees, atol=5e-7, rtol=0)
 
 
+@pytest.mark.parametrize("name", ["fourbar_image_points", "crank_slotted_lever", "whitworth"])
+def test_the_pages_component_ends_close_the_polygons(name):
+    """The page draws each centripetal component to its ``knees`` point and each block's
+    guide point from ``guidePoints``: the tangential component alpha perp(q - p) from the
+    knee reaches a_q, and the guide's point under a block moves with the guide link
+    (v = v_G + omega perp(X - G), a = a_G - omega^2 (X - G) + alpha perp(X - G)), its
+    sliding and Coriolis components reaching a_X: closures against the frames' own
+    relations, written here afresh."""
+    scene = pm.load_scene(str(ROOT / "worked_problems" / f"{name}.toml"))
+    fr = frames(scene, 24)
+    d, res, n = page_data(fr), fr.res, len(fr)
+
+    def b(x):
+        return np.broadcast_to(np.asarray(x, dtype=float), (n,))
+
+    def xy(flat):
+        a = np.array(flat).reshape(n, 2)
+        return a[:, 0], a[:, 1]
+
+    amax = max(float(np.max(np.hypot(b(a[0]), b(a[1])))) for a in res.A.values())
+    vmax = max(float(np.max(np.hypot(b(v[0]), b(v[1])))) for v in res.V.values())
+    checked = 0
+    for p, q, key in d["links"]:
+        kx, ky = xy(d["knees"][key])
+        rx, ry = b(res.P[q][0]) - b(res.P[p][0]), b(res.P[q][1]) - b(res.P[p][1])
+        al = b(res.Al[key])
+        assert np.allclose(kx - al * ry, b(res.A[q][0]), rtol=0, atol=1e-5 * amax)
+        assert np.allclose(ky + al * rx, b(res.A[q][1]), rtol=0, atol=1e-5 * amax)
+        checked += 1
+    for s in d["sliders"]:
+        if "guide" not in s:
+            continue
+        g, link, x = s["guide"][0], s["link"], s["point"]
+        w, al = b(res.W[link]), b(res.Al[link])
+        rx, ry = b(res.P[x][0]) - b(res.P[g][0]), b(res.P[x][1]) - b(res.P[g][1])
+        vg = (b(res.V[g][0]), b(res.V[g][1])) if g in res.V else (0.0, 0.0)
+        ag = (b(res.A[g][0]), b(res.A[g][1])) if g in res.A else (0.0, 0.0)
+        v1, a1, back = (xy(f) for f in d["guidePoints"][s["key"]])
+        assert np.allclose(v1[0], vg[0] - w * ry, rtol=0, atol=1e-5 * vmax)
+        assert np.allclose(v1[1], vg[1] + w * rx, rtol=0, atol=1e-5 * vmax)
+        assert np.allclose(a1[0], ag[0] - w * w * rx - al * ry, rtol=0, atol=1e-5 * amax)
+        assert np.allclose(a1[1], ag[1] - w * w * ry + al * rx, rtol=0, atol=1e-5 * amax)
+        vs = b(res.S[s["key"]][0])  # the Coriolis component 2 omega vs, across the guide
+        assert np.allclose(
+            np.hypot(b(res.A[x][0]) - back[0], b(res.A[x][1]) - back[1]),
+            2 * np.abs(w * vs),
+            rtol=0,
+            atol=1e-5 * amax,
+        )
+        checked += 1
+    assert checked >= len(d["links"]) + (name != "fourbar_image_points")
+
+
 def test_page_is_small_and_self_contained(tmp_path):
     out = tmp_path / "page.html"
     assert main(["page", SEED, "-o", str(out)]) == 0

@@ -175,7 +175,6 @@ def _verdict(sol: Solution, ans, tolerance, tols, diag, clean: list) -> Verdict:
     correct = exact if signed else abs(exact)
     tol, rule = answer_tolerance(sol, kind, ans.names, correct, tolerance, _tols=tols)
     err = abs(given - correct)
-    rel = err / abs(correct) if correct != 0 else None
     ok = err <= tol * (1 + ROUNDING)
     mistake = diagnosis = None
     if kind in _MAGNITUDES and ans.value < 0 and correct != 0:
@@ -186,19 +185,6 @@ def _verdict(sol: Solution, ans, tolerance, tols, diag, clean: list) -> Verdict:
         )
     elif not ok:
         mistake, diagnosis = diag.diagnose(ans, given, correct, tol, signed)
-    return Verdict(
-        ans.key,
-        ans.raw,
-        given,
-        correct,
-        UNIT_OF[kind],
-        rel,
-        tol / abs(correct) if correct else math.inf,
-        tol,
-        rule,
-        ok,
-        signed,
-        mistake,
-        diagnosis,
-        ans.line,
+    return Verdict.judged(
+        ans, given, correct, UNIT_OF[kind], tol, rule, ok, signed, mistake, diagnosis
     )

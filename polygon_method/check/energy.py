@@ -127,21 +127,6 @@ def cycle_verdicts(scene, c, answers, tolerance) -> list:
                     )
                     break
         out.append(
-            Verdict(
-                ans.key,
-                ans.raw,
-                given,
-                correct,
-                unit,
-                err / abs(correct) if correct else None,
-                tol / abs(correct) if correct else math.inf,
-                tol,
-                rule,
-                ok,
-                signed,
-                mistake,
-                diagnosis,
-                ans.line,
-            )
+            Verdict.judged(ans, given, correct, unit, tol, rule, ok, signed, mistake, diagnosis)
         )
     return out

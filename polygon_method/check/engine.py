@@ -85,6 +85,10 @@ def _gas_alone(sol, key):
     reciprocating parts' inertia)."""
     sc = sol.scene
     e = efforts(sc, sol.plan, sol.P, sol.forces)
+    if e is None:  # (several cylinders: their pistons' inertia left out, below)
+        return engine_value(
+            sol, key, replace(sc, masses=tuple(m for m in sc.masses if not m.block))
+        )
     blk = next(i for i in sol.forces.inertia if i.body == f"block {e.piston}")
     _, sd = slider_crank(sol.plan, e.piston)
     fx, fy = blk.force
@@ -172,19 +176,4 @@ def engine_verdict(sol, ans, tolerance) -> Verdict:
     mistake = diagnosis = None
     if not ok:
         mistake, diagnosis = _slip(sol, key, given, correct, rel, unit)
-    return Verdict(
-        key,
-        ans.raw,
-        given,
-        correct,
-        unit,
-        err / abs(correct) if correct else None,
-        tol / abs(correct) if correct else math.inf,
-        tol,
-        rule,
-        ok,
-        signed,
-        mistake,
-        diagnosis,
-        ans.line,
-    )
+    return Verdict.judged(ans, given, correct, unit, tol, rule, ok, signed, mistake, diagnosis)

@@ -111,13 +111,19 @@ def _effort_slips(d, kind, signed, again) -> list:
                 "the weights' m g . v_G, -m a_G . v_G and -I alpha omega)",
             )
         )
-    if sc.masses and not sc.at_rest and (sc.gravity is not None or kind.endswith("2")):
+    starting = sc.start_alpha != 0.0  # (from rest: the holding effort is the slip)
+    if (
+        sc.masses
+        and (starting or not sc.at_rest)
+        and (sc.gravity is not None or kind.endswith("2") or starting)
+    ):
         slip = again(
             "the inertia left out: the driver's effort of the weights and loads alone, as "
             "if the mechanism were at rest (D'Alembert's -m a_G and -I alpha belong among "
             "the forces it holds)",
             "inertia_left_out",
             at_rest=True,
+            start_alpha=0.0,
         )
         out += [slip] if slip is not None else []
     if kind in ("force", "force2"):

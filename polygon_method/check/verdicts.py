@@ -65,6 +65,30 @@ class Verdict:
     correct_text: str | None = None  # how the correct value is shown, where not a number
     extra: dict | None = None  # more for the JSON (a centre's positions)
 
+    @classmethod
+    def judged(
+        cls, ans, given, correct, unit, tol, rule, ok, signed, mistake=None, diagnosis=None
+    ) -> "Verdict":
+        """The verdict on answer ``ans`` (its key, text and line) of ``given`` against
+        ``correct`` with the absolute tolerance ``tol``: error |given - correct| / |correct|
+        (None where correct is nought) and tolerance tol / |correct| (infinite there)."""
+        return cls(
+            ans.key,
+            ans.raw,
+            given,
+            correct,
+            unit,
+            abs(given - correct) / abs(correct) if correct else None,
+            tol / abs(correct) if correct else math.inf,
+            tol,
+            rule,
+            ok,
+            signed,
+            mistake,
+            diagnosis,
+            ans.line,
+        )
+
     @property
     def warning(self) -> str | None:
         """Words warning of a given value beyond what a mechanism usually reaches (read
@@ -154,11 +178,27 @@ def _show(v: Verdict, x: float) -> str:
     return f"{_g(x)} {v.unit}" + (f" ({_g(x / own[1])} {own[0]})" if own else "")
 
 
+def percent_text(error, space: str = " ") -> str:
+    """An answer's relative error in per cent as the tables write it: two decimals, in
+    powers of ten past a million per cent, and past the largest float (an answer such as
+    ``1e308 m/s``) what it is more than; "-" where there is none.
+
+    >>> percent_text(0.0123), percent_text(2.5e300), percent_text(float("inf")), percent_text(None)
+    ('1.23 %', '2.5e+302 %', 'more than 1e+308 %', '-')
+    """
+    if error is None:
+        return "-"
+    p = 100 * error
+    if not math.isfinite(p):
+        return f"more than 1e+308{space}%"
+    return f"{p:.2f}{space}%" if p < 1e6 else f"{p:.3g}{space}%"
+
+
 def verdicts_text(verdicts, title: str = "") -> str:
     """The verdicts as a terminal table, with the mistake named under a wrong answer."""
     rows = [("answer", "given", "correct", "error", "tolerance", "verdict")]
     for v in verdicts:
-        err = "-" if v.error is None else f"{100 * v.error:.2f} %"
+        err = percent_text(v.error)
         tol = "-" if not math.isfinite(v.tolerance) else f"{100 * v.tolerance:.2g} %"
         rows.append((v.key, v.raw, correct_text(v), err, tol, "right" if v.ok else "WRONG"))
     widths = [max(len(r[i]) for r in rows) for i in range(6)]

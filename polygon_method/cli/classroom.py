@@ -165,7 +165,7 @@ class _VariantBook:
         if self._index is None:
             self._index, seen = [], set()
             for f in self.files:
-                real = f.resolve()
+                real = os.path.realpath(f)  # a link in a loop is itself (resolve raises)
                 if real in seen:  # a link to a variant listed already: one variant
                     continue
                 seen.add(real)
@@ -425,7 +425,37 @@ def _cmd_check(args) -> int:
     return 0 if all(v.ok for v in verdicts) else 1
 
 
-def _variants_target(args) -> tuple:
+def write_variant_files(args, out, made: bool, files: list) -> None:
+    """Write ``files`` ((name, data, binary) each) into the variants' directory ``out``
+    (made here when ``made``, and removed again if nothing could be written into it),
+    never over the scene; refused in one line where ``out`` holds variants of an earlier
+    run that these would not replace (they would be paired with the wrong students)."""
+    names = {f[0] for f in files}
+    if not made:
+        stale = sorted(p.name for p in out.glob("variant-*.toml") if p.name not in names)
+        if stale:
+            raise PolygonMethodError(
+                f"{out} holds {stale[0]}"
+                + (f" and {len(stale) - 1} more" if len(stale) > 1 else "")
+                + " from an earlier run that this one would not "
+                "replace: remove them or write to a new directory",
+                key="-o",
+            )
+    if made:
+        out.mkdir()
+    try:
+        targets = check_outputs([(out / name, "-o") for name, _, _ in files], protect=[args.scene])
+        write_outputs(targets, [(data, binary) for _, data, binary in files])
+    except BaseException:
+        if made:
+            try:
+                out.rmdir()  # only if nothing was written into it
+            except OSError:
+                pass
+        raise
+
+
+def variants_target(args) -> tuple:
     """(the directory, whether it is to be made) of ``variants -o``, its count and seed
     checked first: one clear line for each bad one, before anything is solved."""
     from ..variants import MAX_SEED, MAX_VARIANTS
@@ -468,7 +498,7 @@ def _cmd_variants(args) -> int:
         summary_text,
     )
 
-    out, made = _variants_target(args)
+    out, made = variants_target(args)
     scene = load_scene(args.scene)
     vs = generate(scene, args.count, args.seed)
     short = vs.shortfall()
@@ -484,29 +514,7 @@ def _cmd_variants(args) -> int:
         from ..draw import draw_configuration
 
         files.append(("problem-sheet.pdf", sheet_pdf(vs, figure=draw_configuration), True))
-    names = {f[0] for f in files}
-    if not made:  # variants of an earlier run would be paired with the wrong students
-        stale = sorted(p.name for p in out.glob("variant-*.toml") if p.name not in names)
-        if stale:
-            raise PolygonMethodError(
-                f"{out} holds {stale[0]}"
-                + (f" and {len(stale) - 1} more" if len(stale) > 1 else "")
-                + " from an earlier run that this one would not "
-                "replace: remove them or write to a new directory",
-                key="-o",
-            )
-    if made:
-        out.mkdir()
-    try:
-        targets = check_outputs([(out / name, "-o") for name, _, _ in files], protect=[args.scene])
-        write_outputs(targets, [(data, binary) for _, data, binary in files])
-    except BaseException:
-        if made:
-            try:
-                out.rmdir()  # only if nothing was written into it
-            except OSError:
-                pass
-        raise
+    write_variant_files(args, out, made, files)
     print(summary_text(vs))
     print(
         f"written to {out}: {len(vs.variants)} scenes ({vs.variants[0].name} ... "

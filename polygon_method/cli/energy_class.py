@@ -10,7 +10,6 @@ from __future__ import annotations
 from pathlib import Path
 
 from ..common.errors import PolygonMethodError, SceneError, printable
-from .files import check_outputs, write_outputs
 
 __all__ = ["check_class", "make_variants", "one_file", "graded"]
 
@@ -226,7 +225,7 @@ def make_variants(args, scene) -> int:
         cycle_summary_text,
         cycle_variants,
     )
-    from .classroom import _variants_target
+    from .classroom import variants_target, write_variant_files
 
     if getattr(args, "pdf", False):
         raise PolygonMethodError(
@@ -234,7 +233,7 @@ def make_variants(args, scene) -> int:
             "leave out --pdf",
             key="--pdf",
         )
-    out, made = _variants_target(args)
+    out, made = variants_target(args)
     try:
         vs = cycle_variants(_text(args.scene), args.scene, args.count, args.seed)
     except PolygonMethodError as exc:
@@ -242,35 +241,13 @@ def make_variants(args, scene) -> int:
     short = vs.shortfall()
     if short:
         raise PolygonMethodError(short, file=args.scene, key="[variants]")
-    files = [(v.name, v.text) for v in vs.variants]
+    files = [(v.name, v.text, False) for v in vs.variants]
     files += [
-        ("answer-key.md", cycle_key_markdown(vs)),
-        ("answer-key.csv", cycle_key_csv(vs)),
-        ("problem-sheet.md", cycle_sheet_markdown(vs)),
+        ("answer-key.md", cycle_key_markdown(vs), False),
+        ("answer-key.csv", cycle_key_csv(vs), False),
+        ("problem-sheet.md", cycle_sheet_markdown(vs), False),
     ]
-    names = {f[0] for f in files}
-    if not made:
-        stale = sorted(p.name for p in out.glob("variant-*.toml") if p.name not in names)
-        if stale:
-            raise PolygonMethodError(
-                f"{out} holds {stale[0]}"
-                + (f" and {len(stale) - 1} more" if len(stale) > 1 else "")
-                + " from an earlier run that this one would not replace: remove them or "
-                "write to a new directory",
-                key="-o",
-            )
-    if made:
-        out.mkdir()
-    try:
-        targets = check_outputs([(out / name, "-o") for name, _ in files], protect=[args.scene])
-        write_outputs(targets, [(data, False) for _, data in files])
-    except BaseException:
-        if made:
-            try:
-                out.rmdir()
-            except OSError:
-                pass
-        raise
+    write_variant_files(args, out, made, files)
     print(cycle_summary_text(vs))
     print(
         f"written to {out}: {len(vs.variants)} scenes ({vs.variants[0].name} ... "

@@ -103,6 +103,9 @@ class _Sketch:
     leader_clear: float = 0.02
     #: the areas (shapely) a leader line keeps off, away from its own point
     solid: list = field(default_factory=list)
+    #: lines a label keeps off where it can, and sits on where nothing else is clear (the
+    #: centres' diagram's lines of Kennedy's theorem, which meet at the centres it names)
+    soft: list = field(default_factory=list)
 
     # -- primitives (coordinates in cm)
     def line(
@@ -114,7 +117,8 @@ class _Sketch:
         if obstacle and len(pts) > 1:
             from shapely.geometry import LineString
 
-            self.obstacles.append(LineString(pts).buffer(lw / PT_PER_CM / 2))
+            g = LineString(pts).buffer(lw / PT_PER_CM / 2)
+            (self.soft if obstacle == "soft" else self.obstacles).append(g)
         if hint:
             self.hints.extend(zip(pts[:-1], pts[1:]))
 
@@ -239,17 +243,22 @@ class _Sketch:
         from shapely.geometry import Point
 
         tree = STRtree(self.obstacles) if self.obstacles else None
+        soft_tree = STRtree(self.soft) if self.soft else None
         placed, named = [], []  # every box placed; the boxes of the points' labels
         unplaced = []  # labels that overlap a line: one warning for them all
         spots = [Point(lab.anchors[0]) for lab in self.labels if lab.point]
         for lab in self.labels:
             w, h = _text_size(lab.text, lab.size, lab.weight)
             # a label kept apart from the points' labels (a line's mark, so that "perp EF"
-            # is not read with e' beside it) first tries to be, then settles for less
-            for apart in (lab.apart, 0.0) if lab.apart else (0.0,):
-                best, clear_only, clashes = self._place(
-                    lab, w, h, tree, placed, named, spots, apart
-                )
+            # is not read with e' beside it) first tries to be, then settles for less; and
+            # one first keeps off the soft lines too
+            for soft in (soft_tree, None) if soft_tree is not None else (None,):
+                for apart in (lab.apart, 0.0) if lab.apart else (0.0,):
+                    best, clear_only, clashes = self._place(
+                        lab, w, h, tree, placed, named, spots, apart, soft
+                    )
+                    if best is not None:
+                        break
                 if best is not None:
                     break
             if best is None and clear_only is not None:
@@ -288,9 +297,10 @@ class _Sketch:
                 "be placed clear of the lines"
             )
 
-    def _place(self, lab, w, h, tree, placed, named, spots, apart):
+    def _place(self, lab, w, h, tree, placed, named, spots, apart, soft=None):
         """(best (cx, cy, leader) or None, the best position only clear of lines, the
-        clashing positions) of one label: rings of growing distance around its anchors."""
+        clashing positions) of one label: rings of growing distance around its anchors;
+        with ``soft`` (a tree of the soft lines), only places clear of them too."""
         from shapely import box
         from shapely.geometry import Point
 
@@ -320,6 +330,8 @@ class _Sketch:
                     clashes.append((b, hits, crowd, (cx, cy)))
                     continue
                 if apart and any(q.distance(b) < apart for q in named):
+                    continue
+                if soft is not None and len(soft.query(b, predicate="intersects")):
                     continue
                 leader = None
                 if lab.leader and gap > 0.5:  # far from its point: a leader line to it

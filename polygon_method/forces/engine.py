@@ -237,6 +237,31 @@ def efforts(scene, plan, P, f) -> Efforts | None:
     piston = engine_piston(scene, plan)
     if piston is None:
         return None
+    return _efforts_of(scene, plan, P, f, piston)
+
+
+def engine_pistons(scene, plan) -> tuple:
+    """The pistons of an engine of several cylinders on one crank (a V-twin's two on one
+    crank pin, a radial's): every point a gas force acts on, when there are two or more and
+    each slides on a fixed path pinned by a rod to the driving crank's pin; else ()."""
+    if scene.indicator is not None:
+        return ()
+    gas = tuple(dict.fromkeys(ld.target for ld in scene.loads if ld.gas is not None))
+    if len(gas) < 2 or any(slider_crank(plan, p) is None for p in gas):
+        return ()
+    return gas
+
+
+def cylinder_efforts(scene, plan, P, f) -> tuple:
+    """Each cylinder's :class:`Efforts` of an engine of several cylinders on one crank
+    (:func:`engine_pistons`), in the scene's order: its piston effort, its rod's thrust,
+    its side thrust, its rod's crank effort across the common crank and the turning moment
+    that rod gives (their sum is the engine's turning moment); () for another scene."""
+    return tuple(_efforts_of(scene, plan, P, f, p) for p in engine_pistons(scene, plan))
+
+
+def _efforts_of(scene, plan, P, f, piston) -> Efforts:
+    """The :class:`Efforts` of the slider crank whose piston is ``piston``."""
     first, sd = slider_crank(plan, piston)
     side = piston_side(scene, plan, P, piston)
     ux, uy = sd.path.u

@@ -189,7 +189,9 @@ def solve_cycle(scene) -> "CycleEnergy":
             T_mean=None,
             work=p.energy,
             areas=(-dE, dE),
-            crossings=tuple(Crossing(x, None, e) for x, e in zip("abc", (0.0, -dE, 0.0))),
+            crossings=tuple(
+                Crossing(x, None, e) for x, e in zip("aba", (0.0, -dE, 0.0))
+            ),  # back to a
             i_max=0,
             i_min=1,
             dE_max=dE,

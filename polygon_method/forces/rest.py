@@ -1,6 +1,14 @@
 """The mechanism at rest where it stands: what the force analysis sees of a scene at rest
-(``[input] speed = 0``: its weights and loads, no inertia), and of a scene whose inertia a
-slip leaves out (the check's "the inertia left out").
+(``[input] speed = 0``: its weights and loads, no inertia), of one starting from rest with
+an acceleration (the inertia of the start), and of a scene whose inertia a slip leaves out
+(the check's "the inertia left out").
+
+Starting from rest (``speed = 0`` with the crank's ``acceleration`` alpha): every velocity is
+nought, so each acceleration has its tangential terms alone (no centripetal, no Coriolis
+component): a point's is ``alpha dP/dtheta``, a link's angular acceleration ``alpha
+dphi/dtheta``, a block's sliding one ``alpha ds/dtheta``: alpha over the virtual omega times
+the motion per rad/s of the crank (the acceleration polygon is the velocity polygon per rad/s
+scaled by alpha).
 
 At rest every acceleration is nought, so each body's inertia force ``-m a_G`` and couple
 ``-I alpha`` vanish and only its weight ``m g`` and the loads remain. The velocities are
@@ -22,10 +30,15 @@ class Still:
 
     __slots__ = ("scene", "plan", "theta", "P", "V", "A", "W", "Al", "S", "cond", "bad")
 
-    def __init__(self, motion, zero):
+    def __init__(self, motion, zero, k=0.0):
         self.scene, self.plan, self.theta = motion.scene, motion.plan, motion.theta
         self.P, self.cond, self.bad = motion.P, motion.cond, motion.bad
         self.V, self.W = motion.V, motion.W  # the motion about to start (friction's sense)
+        if k:  # starting from rest: alpha / omega times the motion per rad/s
+            self.A = {p: (k * v[0] + zero, k * v[1] + zero) for p, v in motion.V.items()}
+            self.Al = {lk: k * w + zero for lk, w in motion.W.items()}
+            self.S = {p: (v[0], k * v[0] + zero, zero, zero) for p, v in motion.S.items()}
+            return
         self.A = {k: (zero, zero) for k in motion.A}
         self.Al = {k: zero for k in motion.Al}
         self.S = {k: (v[0], zero, zero, zero) for k, v in motion.S.items()}
@@ -43,8 +56,10 @@ def still(motion) -> Still:
     ((1.0, 2.0), (3.0, 0.0), (0.0, 0.0), 2.0, 0.0)
     """
     theta = motion.theta
+    sc = motion.scene
+    k = 0.0 if sc is None else sc.start_alpha / sc.input.omega  # (starting from rest)
     if isinstance(theta, float):
-        return Still(motion, 0.0)
+        return Still(motion, 0.0, k)
     import numpy as np
 
-    return Still(motion, np.zeros(np.shape(theta)))
+    return Still(motion, np.zeros(np.shape(theta)), k)

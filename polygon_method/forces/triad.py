@@ -68,12 +68,15 @@ def solve3x3(e, r, rhs):
 
 
 def covers(st) -> bool:
-    """A plate that is one body (a plate made of three links is not written yet)."""
-    return not st.sides
+    """A plate that is one body, or one made of three links (:func:`_sides`)."""
+    return True
 
 
 def owns(st) -> dict:
-    """The plate's vertices act, for loads and later pins, on the plate."""
+    """The plate's vertices act, for loads and later pins, on the plate; a plate of three
+    links' V_1 and V_2 on its first side (V_1 V_2), V_3 on the second (V_2 V_3)."""
+    if st.sides:
+        return dict(zip(st.points, (st.plate, st.plate, st.sides[0][0])))
     return {p: st.plate for p in st.points}
 
 
@@ -95,6 +98,8 @@ def step(st, P, led, own):
     points. Returns as :func:`.dyad.step`."""
     plate = st.plate
     kp = led.of(plate)
+    for key, _, _ in st.sides:  # a plate of three links: the triangle as one body first
+        kp = tuple(a + b for a, b in zip(kp, led.of(key)))
     (x1, y1) = P[st.points[0]]
     S = _size(P, st)
     e, n, b, r, kls = [], [], [], [], []
@@ -121,6 +126,7 @@ def step(st, P, led, own):
     # the known forces one by one, for the polygons (before the reactions are entered)
     knowns = (led.known(plate),) + tuple(led.known(lk) for lk in st.links_)
     pins, found, eq = [], [], []
+    vown = owns(st)
     for ai, bi, ei, ni, kl, lk, K, V in zip(
         (a1, a2, a3), b, e, n, kls, st.links_, st.knowns, st.points
     ):
@@ -129,15 +135,17 @@ def step(st, P, led, own):
         ok = own[K]
         (kx, ky) = P[K]
         led.add(ok, -fk[0], -fk[1], kx, ky, side=Side("pin", ok, lk, K, (-fk[0], -fk[1]), (kx, ky)))
-        pins += [PinForce(V, lk, plate, p), PinForce(K, lk, ok, fk)]
-        found += [(f"F_{V} on {lk} by {plate}", p), (f"F_{K} on {lk} by {ok}", fk)]
+        pins += [PinForce(V, lk, vown[V], p), PinForce(K, lk, ok, fk)]
+        found += [(f"F_{V} on {lk} by {vown[V]}", p), (f"F_{K} on {lk} by {ok}", fk)]
         if isinstance(ai, float):
             eq.append(
                 f"{lk}: across it b = -M_{K} / {lk} = {fmt(bi)} N (its moments about "
                 f"{K}); along it a = {fmt(ai)} N (the plate's 3x3 solve)"
             )
     drawing = None
-    if isinstance(a1, float):
+    if st.sides:  # the triangle's own pins, from its sides' moments
+        cond = least(cond, _sides(st, P, led, pins, found, eq))
+    elif isinstance(a1, float):
         parts = tuple(zip((a1, a2, a3), b, e, n))
 
         def drawing():
@@ -147,7 +155,7 @@ def step(st, P, led, own):
         st.index,
         "triad",
         st.title,
-        (plate,) + tuple(st.links_),
+        (plate,) + tuple(k for k, _, _ in st.sides) + tuple(st.links_),
         (kp,) + tuple(kls),
         tuple(found),
         cond,
@@ -157,6 +165,41 @@ def step(st, P, led, own):
         drawing,
     )
     return tuple(pins), (), rec, None
+
+
+def _sides(st, P, led, pins, found, eq):
+    """A plate of three links (sides S_1 = V_1 V_2, the plate's key; S_2 = V_2 V_3; S_3 = V_3
+    V_1): each hanging link's force back on the side that owns its vertex, then the pins
+    between the sides as a dyad's at V_2, S_1 about V_1 and S_2 about V_3 (where the other
+    pins have no arm): the force on S_1 at V_2 by S_2, and from the two sides' balances the
+    force on S_1 at V_1 by S_3 and on S_2 at V_3 by S_3 (S_3's balance then holds, the
+    triangle's as a whole having been solved). Returns that dyad's condition (the sine of
+    the triangle's angle at V_2)."""
+    from .dyad import solve as dyad
+
+    vown = owns(st)
+    for pin in pins[0::2]:  # (on each hanging link at its vertex, by the side there)
+        (vx, vy), (fx, fy) = P[pin.point], pin.force
+        led.add(vown[pin.point], -fx, -fy, vx, vy)
+    (s2, _, _), (s3, _, _) = st.sides
+    V1, V2, V3 = st.points
+    (x1, y1), (x2, y2), (x3, y3) = P[V1], P[V2], P[V3]
+    p, f1, f3, cond = dyad(x1, y1, led.of(st.plate), x3, y3, led.of(s2), x2, y2)
+    if p is None:
+        raise Singular(f"{V1}, {V2} and {V3} are in a line")
+    pins += [PinForce(V2, st.plate, s2, p), PinForce(V1, st.plate, s3, f1)]
+    pins.append(PinForce(V3, s2, s3, f3))
+    found += [
+        (f"F_{V2} on {st.plate} by {s2}", p),
+        (f"F_{V1} on {st.plate} by {s3}", f1),
+        (f"F_{V3} on {s2} by {s3}", f3),
+    ]
+    if isinstance(cond, float):
+        eq.append(
+            f"the plate's sides: {st.plate}'s moments about {V1} and {s2}'s about {V3} give the "
+            f"force at {V2}; their balances the forces at {V1} and {V3} by {s3}"
+        )
+    return cond
 
 
 def polygons(st, P, own, parts, knowns, at_k):

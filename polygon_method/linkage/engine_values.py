@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 
 from ..common.tolerances import SAME
-from ..forces.engine import efforts
+from ..forces.engine import cylinder_efforts, efforts
 from ..motion.solution import solve
 from .flywheel import turning_moment
 
@@ -53,8 +53,9 @@ def engine_value(sol, key, scene=None):
         if key == "shaking_moment":
             return s.forces.shaking_moment
         e = efforts(sc, s.plan, s.P, s.forces)
-        if e is None:
-            return None
+        if e is None:  # several cylinders on one crank: the turning moment of them all
+            cs = cylinder_efforts(sc, s.plan, s.P, s.forces)
+            return abs(sum(c.T for c in cs)) if cs and key == "turning_moment" else None
         return abs(
             {
                 "piston_effort": e.F_P,

@@ -39,7 +39,9 @@ from .summary_limits import (
     limit_positions,
     limits_in,
     unbounded_at_limits,
+    unbounded_sizes,
 )
+from .summary_forces import at_singular, force_arrays, singular_note, spread
 from .summary_record import Extreme, Summary
 
 __all__ = ["summarize", "summary_of", "Summary", "Extreme"]
@@ -102,6 +104,8 @@ class _Reducer:
         self.best = {}  # name -> [max, imax, min, imin, unit, what]
         self.forces_left_out = None  # why the force analysis is not summarised, or None
         self.force_names = set()  # the names of the force analysis's quantities
+        self.singular = {}  # angle -> why a group's force equations are singular there
+        self.near = []  # angles where they are nearly so (left out of the force extremes)
         dom = sw.domain  # the parameter's size of a radian: a driving block's travel / 2 pi
         self.rad = 1.0 if dom.periodic else (dom.hi - dom.lo) / TWO_PI
 
@@ -159,39 +163,36 @@ class _Reducer:
         :attr:`forces_left_out` says why, and the summary says so."""
         from ..common.errors import PolygonMethodError
         from ..forces import analyse  # lazy: a scene without masses never loads forces/
-        from ..forces.engine import efforts
+        from ..forces.engine import cylinder_efforts, efforts
 
-        m = Motion(
-            self.scene,
-            fr.plan or self.plan,
-            fr.theta,
-            fr.P,
-            fr.V,
-            fr.A,
-            fr.W,
-            fr.Al,
-            fr.S,
-            fr.cond,
-            fr.bad,
-        )  # (a chunk's motion knows no scene)
         try:
-            f = analyse(m)
-            e = efforts(self.scene, m.plan, fr.P, f)
+            got = force_arrays(self, fr, analyse)
+            if got is None:  # (singular at every angle of ``fr``)
+                return
+            f, rows, P = got
+            plan = self.plan if fr.plan is None else fr.plan
+            e = efforts(self.scene, plan, P, f)
+            cyl = cylinder_efforts(self.scene, plan, P, f) if e is None else ()
         except PolygonMethodError as exc:
             self.forces_left_out = exc.message
             return
-        for item in self._force_items(f, e, fr.n):
-            self.force_names.add(item[0])
-            yield item
+        n = fr.n if rows is None else len(rows)
+        for name, unit, arr, what in self._force_items(f, e, n, cyl):
+            self.force_names.add(name)
+            if isinstance(arr, tuple):
+                arr = tuple(spread(a, rows, fr.n) for a in arr)
+            else:
+                arr = spread(arr, rows, fr.n)
+            yield name, unit, arr, what
 
     @staticmethod
-    def _force_items(f, e, n):
+    def _force_items(f, e, n, cylinders=()):
         """(name, unit, array, what) of :meth:`force_quantities` from the forces ``f`` and
         an engine's efforts ``e`` (or None) at ``n`` angles."""
 
         b = lambda v: np.broadcast_to(np.asarray(v, dtype=float), (n,))  # noqa: E731
 
-        if f.driver == "crank":
+        if f.driver in ("crank", "wheel"):  # (a driving wheel's: the torque on it)
             yield "torque_inertia", "N m", b(f.input_torque), "driving torque with inertia, ccw +"
         else:
             yield "force_inertia", "N", b(f.input_torque), "driving force with inertia"
@@ -213,6 +214,11 @@ class _Reducer:
             yield "piston_effort", "N", b(e.F_P), "towards the crank"
             yield "crank_effort", "N", b(e.F_T), "in the sense of rotation"
             yield "turning_moment", "N m", b(e.T), "in the sense of rotation"
+        for c in cylinders:  # several cylinders on one crank
+            yield f"piston_effort_{c.piston}", "N", b(c.F_P), "towards the crank"
+            yield f"crank_effort_{c.piston}", "N", b(c.F_T), "in the sense of rotation"
+        if cylinders:
+            yield "turning_moment", "N m", b(sum(c.T for c in cylinders)), "of all the cylinders"
 
     @staticmethod
     def shown(unit, value):
@@ -229,15 +235,21 @@ class _Reducer:
                     continue
                 sq = x * x
                 sq += y * y
-                i, j = int(np.argmax(sq)), int(np.argmin(sq))
-                hi, lo = math.hypot(x[i], y[i]), math.hypot(x[j], y[j])
                 cand = sq
             else:
-                if not len(arr):
-                    continue
-                i, j = int(np.argmax(arr)), int(np.argmin(arr))
-                hi, lo = float(arr[i]), float(arr[j])
                 cand = arr
+            if not len(cand):
+                continue
+            gap = name in self.force_names and np.isnan(cand).any()  # (singular angles)
+            if gap and np.isnan(cand).all():
+                continue
+            hi_of = np.where(np.isnan(cand), -np.inf, cand) if gap else cand
+            lo_of = np.where(np.isnan(cand), np.inf, cand) if gap else cand
+            i, j = int(np.argmax(hi_of)), int(np.argmin(lo_of))
+            if isinstance(arr, tuple):
+                hi, lo = math.hypot(x[i], y[i]), math.hypot(x[j], y[j])
+            else:
+                hi, lo = float(arr[i]), float(arr[j])
             b = self.best.get(name)
             if b is None:
                 b = self.best[name] = [hi, int(index[i]), lo, int(index[j]), unit, what, {}, {}]
@@ -247,7 +259,8 @@ class _Reducer:
                 if lo < b[2]:
                     b[2], b[3] = lo, int(index[j])
             for sense, keep in ((1.0, b[6]), (-1.0, b[7])):
-                _keep_best(keep, sense * np.asarray(cand, dtype=float), index)
+                c = sense * np.asarray(cand, dtype=float)
+                _keep_best(keep, np.where(np.isnan(c), -np.inf, c) if gap else c, index)
 
     def _refine(self, tasks, passes):
         """Zoom on sampled extremes, all at once: 17 points across each bracket a pass.
@@ -279,7 +292,8 @@ class _Reducer:
             if name not in q:  # (the force analysis failed at these angles)
                 t[3] = t[2]
                 continue
-            vals = np.where(invalid[sl], -np.inf, q[name][sl] * sense)
+            vals = q[name][sl] * sense
+            vals = np.where(invalid[sl] | np.isnan(vals), -np.inf, vals)
             j = int(np.argmax(vals))
             if not np.isfinite(vals[j]):
                 t[3] = t[2]  # give up on this one
@@ -307,6 +321,14 @@ class _Reducer:
             limit_positions(self, rows, theta, spacing)
         deg = degrees_fn(dom)
         unbounded = unbounded_at_limits(self, rows, theta, spacing) if n else {}
+        where = {}  # (name, sense) -> why it is unbounded there, where not a limit position
+        for key, (ts, words) in (
+            at_singular(self, rows, spacing) if self.singular or self.near else {}
+        ).items():
+            if key not in unbounded:
+                unbounded[key], where[key] = ts, words
+        notes += singular_note(self, deg)
+        unbounded_sizes(self, rows, unbounded, theta, spacing)
         for row in rows:  # an unbounded extreme is at the limit position, not a sample
             nm = row[0]
             if (nm, 1.0) in unbounded:
@@ -325,6 +347,8 @@ class _Reducer:
                 bool(tasks),
                 (nm, 1.0) in unbounded,
                 (nm, -1.0) in unbounded,
+                where.get((nm, 1.0), ""),
+                where.get((nm, -1.0), ""),
             )
             for nm, u, mx, tmx, mn, tmn, what in rows
         )

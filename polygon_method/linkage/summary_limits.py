@@ -22,6 +22,7 @@ __all__ = [
     "change_point_minima",
     "at_limits",
     "unbounded_at_limits",
+    "unbounded_sizes",
 ]
 
 #: inward offsets (rad) from a limit position at which a quantity's value is compared with
@@ -157,3 +158,35 @@ def unbounded_at_limits(red, rows, theta, spacing) -> dict:
                 ):  # (d^-0.5 grows 3.2 times a decade)
                     found.setdefault((nm, sense), lp.theta)
     return found
+
+
+def unbounded_sizes(red, rows, unbounded, theta, spacing):
+    """Each unbounded end's value (``unbounded``: (name, sense) -> the angle it grows
+    towards) made its value 1e-2 rad (of the parameter) from that angle, inward of a limit
+    position, the larger of the two sides elsewhere: a size of the quantity no grid decides
+    (the sample or refinement nearest the angle would: 1e13 N for a pin force refined to
+    within REFINED of a toggle), which the table writes as unbounded and against which the
+    other end's rounding noise is judged."""
+    if not unbounded:
+        return
+    dom = red.sw.domain
+    inward = {lp.theta: s for lp, s in limits_in(red, theta, spacing)}
+    where = []  # (name, sense, angle probed)
+    for (nm, sense), t in unbounded.items():
+        for s in [inward[t]] if t in inward else [-1.0, 1.0]:
+            p = t + s * red.rad * 1e-2
+            if dom.periodic or dom.lo <= p <= dom.hi:
+                where.append((nm, sense, p))
+    if not where:
+        return
+    fr = red.sw.evaluate(np.array([p for _, _, p in where]))
+    q = {nm: np.asarray(arr, dtype=float) for nm, _, arr, _ in red.values(fr)}
+    got = {}
+    for k, (nm, sense, _) in enumerate(where):
+        v = sense * float(q[nm][k]) if nm in q else math.nan
+        if math.isfinite(v) and v > got.get((nm, sense), -math.inf):
+            got[(nm, sense)] = v
+    for row in rows:
+        for sense, i in ((1.0, 2), (-1.0, 4)):
+            if (row[0], sense) in got:
+                row[i] = sense * got[(row[0], sense)]

@@ -31,6 +31,10 @@ class Extreme:
     refined: bool = False
     max_unbounded: bool = False  # grows without bound towards the limit position at_max
     min_unbounded: bool = False
+    #: where the maximum (minimum) grows without bound towards an angle that is not a limit
+    #: position: why (a group's force equations singular there), else ""
+    max_where: str = ""
+    min_where: str = ""
 
     @property
     def constant(self) -> bool:
@@ -188,11 +192,15 @@ class Summary:
                     f"{fmt_deg(e.at_max, 3):>10} {mn:>12} "
                     f"{fmt_deg(e.at_min, 3):>10}" + (f"  {e.what}" if e.what else "")
                 )
-                for flag, at, word in (
-                    (e.max_unbounded, e.at_max, "grows"),
-                    (e.min_unbounded, e.at_min, "falls"),
+                for flag, at, word, why in (
+                    (e.max_unbounded, e.at_max, "grows", e.max_where),
+                    (e.min_unbounded, e.at_min, "falls", e.min_where),
                 ):
-                    if flag:
+                    if flag and why:
+                        out.append(
+                            f"{'':<{w}}  ({word} without bound towards {fmt_deg(at, 3)} {unit})"
+                        )
+                    elif flag:
                         out.append(
                             f"{'':<{w}}  ({word} without bound towards the limit "
                             f"position at {fmt_deg(at, 3)} {unit})"

@@ -371,6 +371,8 @@ class Solution(Motion):
             d["forces"] = None if refused else forces_dict(self.forces)
             if sc.at_rest:  # the weights and loads alone; the motion per rad/s of the crank
                 d["at_rest"] = True
+                if sc.start_alpha:  # starting from rest: the inertia of the start
+                    d["start_alpha"] = sc.start_alpha
         d.update(self._rolling_dict())
         warnings = list(self.warnings)
         if refused:

@@ -60,12 +60,13 @@ def _undetermined(exc) -> bool:
     return UNDETERMINED in exc.message
 
 
-def by_rows(res, analyse):
+def by_rows(res, analyse, cut=take):
     """``(forces, rows, why)``: the force analysis ``analyse`` over the whole sweep ``res``
     (``rows`` None); or, where a group's equations are exactly singular at some angles, over
-    the others (``forces`` over ``take(res, rows)``, ``rows`` their indices) and ``why``,
+    the others (``forces`` over ``cut(res, rows)``, ``rows`` their indices) and ``why``,
     each singular angle's index -> the words; None where the analysis covers no angle (or
-    not the plan)."""
+    not the plan). ``cut`` takes the angles ``rows`` of ``res`` (:func:`take` for a
+    sweep)."""
     try:
         return analyse(res), None, {}
     except PolygonMethodError as exc:
@@ -76,7 +77,7 @@ def by_rows(res, analyse):
     while stack:
         rows = stack.pop()
         try:
-            analyse(take(res, rows))
+            analyse(cut(res, rows))
         except PolygonMethodError as exc:
             if not _undetermined(exc):
                 return None
@@ -90,7 +91,7 @@ def by_rows(res, analyse):
     if not good:
         return None
     rows = np.sort(np.concatenate(good))
-    return analyse(take(res, rows)), rows, why
+    return analyse(cut(res, rows)), rows, why
 
 
 def spread(cols, rows, n):

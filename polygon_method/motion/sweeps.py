@@ -215,7 +215,7 @@ class SweepResult(Motion):
         n = np.shape(at.theta)
         cols = [
             ("torque_inertia", "N m", np.broadcast_to(f.input_torque, n))
-            if f.driver == "crank"
+            if f.driver in ("crank", "wheel")  # (a driving wheel's: the torque on it)
             else ("force_inertia", "N", np.broadcast_to(f.input_torque, n))
         ]
         if f.second_crank is not None:  # a second crank's torque, a second collar's force
@@ -235,7 +235,7 @@ class SweepResult(Motion):
             )
             for p in f.pins
         ]
-        from ..forces.engine import efforts  # lazy, as in `_forces`
+        from ..forces.engine import cylinder_efforts, efforts  # lazy, as in `_forces`
 
         e = efforts(self.scene, self.plan, at.P, f)
         if e is not None:  # an engine: the turning-moment diagram and its efforts
@@ -244,6 +244,14 @@ class SweepResult(Motion):
                 ("crank_effort", "N", np.broadcast_to(e.F_T, n)),
                 ("turning_moment", "N m", np.broadcast_to(e.T, n)),
             ]
+        es = cylinder_efforts(self.scene, self.plan, at.P, f) if e is None else ()
+        for c in es:  # several cylinders on one crank: each one's, then their sum
+            cols += [
+                (f"piston_effort_{c.piston}", "N", np.broadcast_to(c.F_P, n)),
+                (f"crank_effort_{c.piston}", "N", np.broadcast_to(c.F_T, n)),
+            ]
+        if es:
+            cols.append(("turning_moment", "N m", np.broadcast_to(sum(c.T for c in es), n)))
         if rows is None:
             return cols
         whole = len(self)

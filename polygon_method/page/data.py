@@ -33,6 +33,7 @@ from ..draw.plots import MARKS, SERIES_COLORS
 from ..polygons.scales import DIAGRAMS, display_unit
 from ..scene import Link
 from ..steps import image_name, slot_labels, under_label
+from ..steps.relations import rigid_acceleration
 from .force_layer import FORCES_CM, force_layers, offset_points
 from .frames import Frames, round_sig
 
@@ -174,6 +175,48 @@ def _unders(sol) -> dict:
     return out
 
 
+def _per_frame(xs, n) -> list:
+    """Each of ``xs`` (a number or one per frame) as an array of ``n`` frames."""
+    return [np.broadcast_to(np.asarray(x, dtype=float), (n,)) for x in xs]
+
+
+def _knees(res, links, n) -> dict:
+    """Per link (q about p), per frame: where its centripetal component ends and its
+    tangential one starts in the acceleration polygon, a_p - omega^2 (q - p) (SI)."""
+    out = {}
+    for lk in links:
+        px, py, qx, qy, w, ax, ay = _per_frame(
+            (*res.P[lk.p], *res.P[lk.q], res.W[lk.key], *res.A[lk.p]), n
+        )
+        cx, cy = rigid_acceleration(qx - px, qy - py, w, 0.0)
+        out[lk.key] = _flat([ax + cx, ay + cy])
+    return out
+
+
+def _guide_points(res, sliders, n) -> dict:
+    """Per block on a moving guide, per frame: the image of the guide's point under it,
+    v_X1 = v_X - vs u (velocities), and a_X1 = a_X - as u - coriolis with the Coriolis
+    component's start a_X - coriolis (accelerations), u along the guide (SI): the
+    decomposition the step table states, for the script to draw."""
+    out = {}
+    for s in sliders:
+        if "guide" not in s:
+            continue
+        (g, h) = s["guide"]
+        gx, gy, hx, hy, vs, a_s, cx, cy = _per_frame((*res.P[g], *res.P[h], *res.S[s["key"]]), n)
+        vx, vy, ax, ay = _per_frame((*res.V[s["point"]], *res.A[s["point"]]), n)
+        d = np.hypot(hx - gx, hy - gy)
+        d = np.where(d > 0, d, 1.0)
+        ux, uy = (hx - gx) / d, (hy - gy) / d
+        bx, by = ax - cx, ay - cy
+        out[s["key"]] = [
+            _flat([vx - vs * ux, vy - vs * uy]),
+            _flat([bx - a_s * ux, by - a_s * uy]),
+            _flat([bx, by]),
+        ]
+    return out
+
+
 def page_style() -> dict:
     """The drawings' colours, widths (pt) and dashes (in line widths), as ``draw`` and
     ``sweep --plot`` have them (:mod:`polygon_method.draw.style`), for the page's script."""
@@ -253,6 +296,8 @@ def page_data(fr: Frames) -> dict:
         "links": [[lk.p, lk.q, lk.key] for lk in links],
         "plates": [[sc.link(cp.link).p, sc.link(cp.link).q, cp.name] for cp in sc.points],
         "sliders": sliders,
+        "knees": _knees(res, links, n),  # where each centripetal component ends
+        "guidePoints": _guide_points(res, sliders, n),  # the guide's point under a block
         "wheels": wheels,
         "rollLines": lines,
         "P": {p: _flat([_quiet(c, k["P"], n) for c in res.P[p]]) for p in moving},

@@ -16,6 +16,8 @@ from __future__ import annotations
 import numpy as np
 
 from ..common.errors import PolygonMethodError
+from ..common.tolerances import TOL
+from ..motion import sweep_forces
 from ..forces import FRAME, Side, analyse, couple_label, side_label
 from ..polygons.scales import display_unit, newton_scale
 
@@ -146,11 +148,15 @@ def force_layers(res, n):
     if not res.scene.has_forces:
         return None, None
     try:
-        f = analyse(res)
-        arrows, couples = _joints(res, f, n)
+        at, rows, f = _determined(res)
+        m = n if rows is None else len(rows)
+        arrows, couples = _joints(at, f, m)
     except PolygonMethodError:
         return None, None
-    bodies = _inertia(res, f, n)
+    bodies = _inertia(at, f, m)
+    if rows is not None:  # frames where the forces are not determined: none drawn there
+        for item in arrows + couples + bodies:
+            _spread(item, rows, n)
     sizes = [np.hypot(b["F"][0::2], b["F"][1::2]) for b in bodies]
     sizes += [np.hypot(a["F"][0::2], a["F"][1::2]) for a in arrows]
     size = max((float(np.max(s)) for s in sizes), default=0.0)
@@ -159,4 +165,44 @@ def force_layers(res, n):
     inertia = {**scale, "bodies": bodies} if bodies else None
     numbers = {b: k for b, k in f.numbers.items() if b != FRAME}
     forces = {**scale, "arrows": arrows, "couples": couples, "numbers": numbers}
+    if rows is not None:  # (their frames' indices, for a reader or a test)
+        forces["singular"] = sorted(set(range(n)) - {int(r) for r in rows})
     return inertia, forces
+
+
+def _determined(res):
+    """``(the sweep at the frames where the forces are determined, their indices or None
+    for all, the forces there)``: a frame where a group's force equations are singular (a
+    parallel crank's dead point), or within ``TOL.singular`` of it in their condition (the
+    rounding's hair: forces of 1e19 N there, which would set the scale), is left out."""
+    got = sweep_forces.by_rows(res, analyse)
+    if got is None:
+        raise PolygonMethodError("forces: not determined at any frame")
+    f, rows, _ = got
+    at = res if rows is None else sweep_forces.take(res, rows)
+    near = sweep_forces.conditions(f, None, len(at.theta)) < TOL.singular
+    if near.any():
+        keep = np.flatnonzero(~near)
+        rows = keep if rows is None else np.asarray(rows)[keep]
+        at = sweep_forces.take(res, rows)
+        f = analyse(at)
+    return at, rows, f
+
+
+def _spread(item, rows, n):
+    """A layer's item over the ``rows`` of ``n`` frames: its forces and couples (``F``,
+    ``C``) nought elsewhere (not drawn), its places those of the nearest frame kept."""
+    m = len(rows)
+    near = np.searchsorted(rows, np.arange(n)).clip(0, m - 1)
+    alt = (near - 1).clip(0, m - 1)
+    closer = np.where(
+        np.abs(rows[alt] - np.arange(n)) < np.abs(rows[near] - np.arange(n)), alt, near
+    )
+    for key, v in item.items():
+        if not isinstance(v, list) or len(v) not in (m, 2 * m):
+            continue
+        a = np.asarray(v, dtype=float).reshape(m, -1)
+        full = a[closer]
+        if key in ("F", "C"):
+            full[np.setdiff1d(np.arange(n), rows)] = 0.0
+        item[key] = [float(x) for x in full.ravel()]

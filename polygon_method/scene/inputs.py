@@ -12,6 +12,8 @@ import re
 from ..common.errors import SceneError, printable
 from ..common.units import UNITS
 from .angles import candidates, is_book_form
+from .crank_speed import crank_speed
+from .rate_words import RATED as _RATED, slowing as _slowing
 from .records import GIVEN_KINDS, INPUT_KEYS, FixedPath, GivenRate, Input, PositionGiven, split_name
 from .tables import _suggest, _unit_at
 from .wheel_input import wheel_input
@@ -24,13 +26,6 @@ _DIRECTED = re.compile(
     re.IGNORECASE,
 )
 _WORDS = {"up": (0.0, 1.0), "down": (0.0, -1.0), "left": (-1.0, 0.0), "right": (1.0, 0.0)}
-#: a rate in a book's words, after or before its size: "2 rad/s^2 slowing down",
-#: "decelerating at 3 m/s^2", "speeding up at 1 ft/s^2"
-_RATE_WORD = r"(slowing(?: down)?|decelerating|retarding|speeding up|accelerating)"
-_RATED = (
-    re.compile(rf"^(.*?\S)\s*,?\s+{_RATE_WORD}$", re.IGNORECASE),
-    re.compile(rf"^{_RATE_WORD}\s+(?:at\s+)?(.+)$", re.IGNORECASE),
-)
 #: a sense or a way in a rate's text (refused beside "slowing down": one or the other)
 _SENSE_OR_WAY = re.compile(
     r"(^\s*[-+])|\b(cw|ccw|acw|clockwise|anticlockwise|"
@@ -143,7 +138,7 @@ class _Input:
                 key,
             )
         size = abs(self.qty(size_text, kind, table, key).value)
-        slowing = word.lower().startswith(("slow", "decel", "retard"))
+        slowing = _slowing(word)
         return (-size if slowing else size) * (1.0 if motion >= 0 else -1.0)
 
     def dead_centres(self, link, pivot, tip, ground):
@@ -299,7 +294,7 @@ class _Input:
             None
             if given_keys
             else self.rest_speed(spec["speed"])  # at rest: a bare nought needs no unit
-            or self.qty(spec["speed"], "angular_velocity", "input", "speed", need_sense=True)
+            or crank_speed(self, spec["speed"], link)
         )
         if is_book_form(spec["angle"]):  # a dead centre is passed in the crank's sense
             if given_keys and re.search(
@@ -320,6 +315,7 @@ class _Input:
                 "crank angle",
                 dead=lambda: self.dead_centres(link, pivot, tip, ground),
                 sense=None if speed is None else speed.value,
+                centres=(pivot, ground),
             )
             angle = book.value
             said = (book.words, angle, book.slips, f"crank angle: {book.note}")
@@ -375,7 +371,7 @@ class _Input:
                 rate_keys[0],
             )
         if speed.value == 0:  # at rest: the weights and loads alone, per rad/s of the crank
-            speed = self.at_rest_speed(alpha, speed.sense)
+            speed, alpha = self.at_rest_speed(alpha, speed.sense, second is not None), 0.0
         self.two_inputs = second is not None
         if second is not None and second.crank == link.key:
             raise self.error(
@@ -444,8 +440,6 @@ class _Input:
         through = sl.through if sl.through[1] is not None else next(iter(ground.values()))
         u = sl.u
         vs, _ = self.directed(spec[vs_key], "velocity", vs_key, u, need=False)
-        if vs == 0:
-            raise self.error(f"{vs_key} is zero: nothing moves", "input", vs_key)
         raw_as = spec.get(as_key, 0)
         if isinstance(raw_as, (int, float)) and not isinstance(raw_as, bool) and raw_as == 0:
             acc = 0.0
@@ -453,6 +447,8 @@ class _Input:
             acc = self.rated(raw_as, "acceleration", "input", as_key, vs)
             if acc is None:
                 acc, _ = self.directed(raw_as, "acceleration", as_key, u, need=False)
+        if vs == 0:  # at rest (the weights held, or starting with acc): per 1 m/s
+            vs, acc = self.at_rest_driver(vs, acc, vs_key), 0.0
         if (s_key in spec) == (name in spec):
             raise self.error(
                 f"[input] gives the block's place {'twice' if name in spec else 'not at all'}:"
@@ -704,9 +700,7 @@ class _Input:
             )
         pivot = on_ground[0]
         angle = self.qty(spec["angle"], "angle", "input.second", "angle", default_unit="deg").value
-        speed = self.qty(
-            spec["speed"], "angular_velocity", "input.second", "speed", need_sense=True
-        )
+        speed = crank_speed(self, spec["speed"], link, "input.second")
         if speed.value == 0:
             raise self.error(
                 "the second crank's speed is zero: give it, or make it part of the frame",

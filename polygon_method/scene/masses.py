@@ -26,20 +26,21 @@ class _Masses:
         """A crank's speed of a bare nought (at rest: it needs no unit), else None."""
         return Quantity(0.0) if type(raw) in (int, float) and raw == 0 else None
 
-    def at_rest_speed(self, alpha, sense=None) -> Quantity:
+    def at_rest_speed(self, alpha, sense=None, two=False) -> Quantity:
         """A crank's speed of nought: at rest, where the scene asks for the force analysis
         (its weights and loads alone, no inertia); the motion is then solved per rad/s of
-        the crank (ccw), the virtual velocities of the power balance. Refused with an
-        acceleration or without the force analysis. ``sense`` (``"0 rad/s cw"``): the way
-        the motion is about to start, against which a limiting friction acts (ccw unless
-        cw)."""
-        if not ("masses" in self.raw or "gravity" in self.raw) or alpha:
+        the crank (ccw), the virtual velocities of the power balance. Refused without the
+        force analysis. ``sense`` (``"0 rad/s cw"``): the way the motion is about to start,
+        against which a limiting friction acts (ccw unless cw). With an acceleration
+        ``alpha`` (rad/s^2): starting from rest, its inertia the tangential terms alone
+        (``start_alpha``), the motion per rad/s in alpha's sense (a stated sense must agree;
+        one crank: ``two`` inputs refused). The caller solves the motion without alpha."""
+        if not ("masses" in self.raw or "gravity" in self.raw):
             raise self.error(
                 "the crank speed is zero: nothing moves"
                 + (
-                    " (at rest with an acceleration is not solved: give the speed at the "
-                    "instant; the effort to start a motion against static friction is at "
-                    "rest with [friction], the speed '0 rad/s ccw' naming its sense)"
+                    " (starting from rest with an acceleration: give [masses] for the "
+                    "inertia of the start, or the speed at the instant)"
                     if alpha
                     else " (at rest, the weights held: give [masses] and [gravity]; the "
                     'loads alone: give any speed, e.g. "1 rad/s ccw", without masses nothing '
@@ -49,7 +50,45 @@ class _Masses:
                 "speed",
             )
         self.at_rest = True  # (to turn in the sense stated: a limiting friction's sense)
+        if alpha:
+            way = "ccw" if alpha > 0 else "cw"
+            if sense is not None and sense != way:
+                raise self.error(
+                    f"the crank starts from rest {sense}, but its acceleration is {way}: "
+                    "from rest it turns the way it accelerates (drop the speed's sense, or "
+                    "give the acceleration's)",
+                    "input",
+                    "speed",
+                )
+            if two:
+                raise self.error(
+                    "starting from rest with an acceleration is solved for one crank: "
+                    "with two inputs give each crank's speed at the instant",
+                    "input",
+                    "speed",
+                )
+            self.start_alpha = alpha
+            sense = way
         return Quantity(-1.0, "cw") if sense == "cw" else Quantity(1.0, "ccw")
+
+    def at_rest_driver(self, speed, acc, key) -> float:
+        """A driving block's or wheel's speed of nought (``key``: ``vs_A``, ``omega_W``):
+        at rest as a crank's (:meth:`at_rest_speed`), the motion solved per 1 m/s (1
+        rad/s) the way the zero's sign says (``"0 m/s left"``; a bare 0 along the guide's
+        direction, or a wheel's ccw), or starting from rest the way ``acc`` says, its
+        inertia ``start_alpha = acc``. Refused without the force analysis."""
+        if not ("masses" in self.raw or "gravity" in self.raw):
+            raise self.error(
+                f"{key} is zero: nothing moves (at rest, the weights held: give [masses] "
+                "and [gravity]; starting from rest with an acceleration: [masses])",
+                "input",
+                key,
+            )
+        self.at_rest = True
+        if acc:
+            self.start_alpha = acc
+            return 1.0 if acc > 0 else -1.0
+        return math.copysign(1.0, speed)
 
     def masses(self, carried, sliders):
         """[masses]: one :class:`Mass` per link or block named."""

@@ -505,6 +505,7 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected
             masses=tuple(masses),
             statics="masses" in self.raw,
             at_rest=getattr(self, "at_rest", False),
+            start_alpha=getattr(self, "start_alpha", 0.0),
             gravity=gravity,
             indicator=indicator,
             flywheel=flywheel,

@@ -445,10 +445,10 @@ class Scene:
     masses: tuple = ()
     gravity: Gravity | None = None
     statics: bool = False
-    #: at rest (``[input] speed = 0`` with the force analysis): the weights and loads
-    #: alone, no inertia; the motion is solved per rad/s of the crank (its virtual
-    #: velocities, the power balance's)
+    #: at rest (``[input] speed = 0``, force analysis): no inertia, the motion per rad/s of
+    #: the crank (virtual); ``start_alpha`` (rad/s^2, ccw +) starting so: its inertia
     at_rest: bool = False
+    start_alpha: float = 0.0
     #: the engine chapter: an indicator diagram (:class:`Indicator`) and the flywheel
     #: asked for (:class:`Flywheel`), or None
     indicator: Indicator | None = None

@@ -10,7 +10,7 @@ import re
 from ..common.errors import SceneError
 from ..common.units import did_you_mean
 from .angles import read_angle
-from .triangle import apex
+from .triangle import apex, polar_points
 
 from .records import (
     CarriedPoint,
@@ -60,7 +60,7 @@ class _Tables:
         return f"{metres / self.scale():.6g} {self.unit}"
 
     def carried_points(self, index, ground):
-        table = self.table("points")
+        table = polar_points(self, self.table("points"))
         local = {}  # link key -> {point: (x, y) in the link frame, P at 0, Q at (L, 0)}
         spreads = {}  # point -> how far its place on the link may be off (m)
         out = []

@@ -112,12 +112,6 @@ def wheel_input(rd, spec, ground):
         omega = vs / (r * along)
     else:
         omega = rd.qty(spec[w_key], "angular_velocity", "input", w_key, need_sense=True).value
-    if omega == 0:
-        raise rd.error(
-            f"{v_key if v_key in spec else w_key} is zero: nothing moves",
-            "input",
-            v_key if v_key in spec else w_key,
-        )
     raw_a = spec.get(a_key, spec.get(as_key, 0))
     if isinstance(raw_a, (int, float)) and not isinstance(raw_a, bool) and raw_a == 0:
         alpha = 0.0
@@ -130,6 +124,9 @@ def wheel_input(rd, spec, ground):
         alpha = rd.rated(raw_a, "angular_acceleration", "input", a_key, omega)
         if alpha is None:
             alpha = rd.qty(raw_a, "angular_acceleration", "input", a_key, need_sense=True).value
+    if omega == 0:  # at rest (the weights held, or starting with alpha): per 1 rad/s
+        omega, alpha = rd.at_rest_driver(omega, alpha, v_key if v_key in spec else w_key), 0.0
+        rd.start_alpha = getattr(rd, "start_alpha", 0.0) * r * along  # (the centre's, m/s^2)
     if (s_key in spec) == (C in spec):
         raise rd.error(
             f"[input] gives the wheel's place {'twice' if C in spec else 'not at all'}:"

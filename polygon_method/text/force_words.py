@@ -6,7 +6,35 @@ from __future__ import annotations
 
 from ..common.numbers import fmt
 
-__all__ = ["acting", "known_words", "rest_blocks", "symbol_words"]
+__all__ = ["acting", "known_words", "rest_blocks", "symbol_words", "holding", "start_words"]
+
+
+def holding(sc) -> bool:
+    """At rest with no acceleration: the weights and loads held, no inertia (starting from
+    rest with one has the inertia of the start)."""
+    return bool(sc.at_rest) and not getattr(sc, "start_alpha", 0.0)
+
+
+def start_words(sc) -> str:
+    """Starting from rest, in words: the crank's alpha and what it gives (or "")."""
+    a = getattr(sc, "start_alpha", 0.0)
+    if not (sc.at_rest and a):
+        return ""
+    b = None if sc.input.crank is not None else sc.input.tip  # (a driving block, a wheel's centre)
+    given, per = (
+        (f"as_{b} = {fmt(abs(a))} m/s^2 {'along' if a > 0 else 'against'} its path", f"m/s of {b}")
+        if b is not None
+        else (
+            f"alpha_{sc.input.crank} = {fmt(abs(a))} rad/s^2 {'ccw' if a > 0 else 'cw'}",
+            "rad/s of the crank",
+        )
+    )
+    return (
+        f"starting from rest with {given}: no velocity yet, so every acceleration has its "
+        "tangential terms alone (no centripetal, no Coriolis component), the start's "
+        f"acceleration times the motion per {per} (a_G = {given.split(' =')[0]} x v_G per "
+        f"{per.split(' of')[0]})"
+    )
 
 
 def rest_blocks(sc, f, F, vec) -> list:
@@ -58,7 +86,7 @@ def acting(sc) -> str:
     'the loads alone'
     """
     kinds = []
-    if sc.masses and not sc.at_rest:
+    if sc.masses and not holding(sc):
         kinds.append("inertia")
     if sc.masses and sc.gravity is not None:
         kinds.append("weights")
@@ -80,17 +108,23 @@ def known_words(sc) -> str:
     if sc is None:
         return "the inertia force and couple, the weight, the loads"
     parts = []
-    if sc.masses and not sc.at_rest:
+    if sc.masses and not holding(sc):
         parts.append("the inertia force and couple")
     if sc.masses and sc.gravity is not None:
         parts.append("the weight")
     parts.append("the loads")
-    return ", ".join(parts) + (" (no inertia: at rest)" if sc.at_rest else "")
+    return ", ".join(parts) + (
+        " (no inertia: at rest)"
+        if holding(sc)
+        else " (the inertia of the start from rest)"
+        if sc.at_rest
+        else ""
+    )
 
 
 def symbol_words(sc) -> str:
     """The symbols of the known forces named on the polygons: Fi_3, W_3, where they act."""
-    inertia = sc is None or (sc.masses and not sc.at_rest)
+    inertia = sc is None or (sc.masses and not holding(sc))
     weight = sc is None or (sc.masses and sc.gravity is not None)
     words = (["Fi_3 the inertia force of 3"] if inertia else []) + (
         ["W_3 its weight" if inertia else "W_3 the weight of 3"] if weight else []

@@ -14,31 +14,13 @@ import math
 from ..solver.errorbound import SHOWN, USELESS
 from ..forces import FRAME
 from ..forces.bounds import NO_BOUND, force_bounds
-from ..forces.engine import efforts
 from ..common.numbers import fmt, quiet, sense_word
 from ..common.tolerances import FLOOR
 from .force_polygons import body_name as _body, polygon_items as _polygon_items
-from .force_words import acting, known_words, rest_blocks, symbol_words
+from .force_engine import engine_lines, scales as _scales
+from .force_words import acting, holding, known_words, rest_blocks, start_words, symbol_words
 
 __all__ = ["forces_lines", "force_blocks", "bound_lines", "engine_lines"]
-
-
-def _scales(sol, f):
-    """(the largest force, the largest force times the mechanism's size)."""
-    forces = (
-        [math.hypot(*i.force) for i in f.inertia]
-        + [p.magnitude for p in f.pins]
-        + [abs(g.normal) for g in f.guides]
-        + [math.hypot(*ld.force) for ld in sol.scene.loads if ld.force is not None]
-    )
-    if sol.scene.gravity is not None:
-        forces += [m.mass * sol.scene.gravity.g for m in sol.scene.masses]
-    size = max([math.hypot(*p) for p in sol.P.values()] + [lk.length for lk in sol.scene.links])
-    F = max(forces, default=0.0)
-    couples = [abs(i.couple) for i in f.inertia] + [
-        abs(ld.torque) for ld in sol.scene.loads if ld.torque is not None
-    ]
-    return F, max([F * size] + couples)
 
 
 def _vec(v, scale):
@@ -208,6 +190,8 @@ def forces_lines(sol) -> list:
         F,
         M,
         f" (at rest: {acting(sc)}, no inertia)"
+        if holding(sc)
+        else f" (starting from rest: {acting(sc)}, the inertia of the start)"
         if sc.at_rest
         else " (inertia, weights, loads and friction)"
         if sc.friction is not None
@@ -236,7 +220,7 @@ def _inertia_lines(sc, f, F, M) -> list:
     u = sc.length_unit
     if not f.inertia:
         return []
-    if sc.at_rest:
+    if holding(sc):
         g = sc.gravity
         out = [
             "at rest: no inertia (nothing moves); the weights m g at G"
@@ -249,7 +233,8 @@ def _inertia_lines(sc, f, F, M) -> list:
                 f"({fmt(i.G[0] / u)}, {fmt(i.G[1] / u)}) {sc.units}"
             )
         return out
-    out = [
+    out = [start_words(sc)] if sc.at_rest else []
+    out += [
         f"{'body':<10} {'mass (kg)':<10} {'inertia force -m a_G':<24} "
         f"{'couple -I alpha':<20} offset h ({sc.units})"
     ]
@@ -296,25 +281,6 @@ def bound_lines(sol, f) -> list:
     if any(not e < USELESS for _, e in shown):
         out.append(f"  ({NO_BOUND})")
     return out
-
-
-def engine_lines(sol) -> list:
-    """An engine's efforts at the instant, in the book's words (none for another scene)."""
-    f = sol.forces
-    e = efforts(sol.scene, sol.plan, sol.P, f)
-    if e is None:
-        return []
-    F, M = _scales(sol, f)
-    q = lambda v: fmt(quiet(v, F))  # noqa: E731
-    return [
-        f"engine: piston effort F_P = {q(e.F_P)} N (along the line of stroke, towards "
-        f"the crank: the gas force and the reciprocating parts' inertia and weight); "
-        f"thrust in the rod {e.rod} F_Q = {q(e.F_Q)} N; side thrust on the cylinder "
-        f"walls F_N = {q(e.F_N)} N",
-        f"engine: crank effort F_T = {q(e.F_T)} N (across the crank {e.crank} at its pin, "
-        f"in the sense of rotation); turning moment T = F_T r = {fmt(quiet(e.T, M))} N m "
-        "(positive: with the rotation, the engine driving)",
-    ]
 
 
 #: what each kind of force step does, as its paragraph says it
@@ -374,7 +340,7 @@ def _inertia_blocks(sol, f, F, M) -> list:
     sc = sol.scene
     u = sc.length_unit
     blocks = [("h", "6. Inertia forces (D'Alembert)")]
-    if sc.at_rest and f.inertia:  # nothing moves: the weights alone
+    if holding(sc) and f.inertia:  # nothing moves: the weights alone
         return [("h", "6. Weights at rest (no inertia)")] + rest_blocks(sc, f, F, _vec)
     if not f.inertia:  # an empty [masses]: the static force analysis of the loads
         return [("h", "6. No inertia forces (a static force analysis)")] + [
@@ -385,6 +351,18 @@ def _inertia_blocks(sol, f, F, M) -> list:
                 + (f" and gravity ({sc.gravity.text}) act." if sc.gravity else " alone act."),
             )
         ]
+    if sc.at_rest:  # starting from rest: the accelerations of the start
+        blocks.append(
+            (
+                "p",
+                start_words(sc)[0].upper()
+                + start_words(sc)[1:]
+                + ": the acceleration diagram of the start is the velocity diagram per "
+                "rad/s (section 2's virtual velocities) scaled by alpha, and each a_G below "
+                "is alpha times v_G there (the acceleration diagram drawn per rad/s, with "
+                "its centripetal terms, is not the start's).",
+            )
+        )
     blocks.append(
         (
             "p",

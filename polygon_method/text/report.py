@@ -49,7 +49,19 @@ def _given_lines(sol: Solution) -> list[str]:
     lines = [sc.title or (sc.file or "mechanism")]
     said = f" ({inp.angle_words})" if inp.angle_words else ""
     own = sol.plan.steps[0].input_words(sc)  # a block driver's; a crank's are written here
-    if own is not None:
+    if own is not None and sc.at_rest:  # a driving block or wheel at rest
+        per = "1 m/s of the block" if inp.wheel is None else "1 rad/s of the wheel"
+        lines.append(
+            f"{own} (at rest: nothing moves yet; the velocities and accelerations below are "
+            f"per {per}, the virtual velocities of the power balance"
+            + (
+                "; starting from rest that way, the start's accelerations (the tangential "
+                "terms alone) are in the forces below)"
+                if sc.start_alpha
+                else ")"
+            )
+        )
+    elif own is not None:
         lines.append(own)
     else:
         lines.append(
@@ -58,6 +70,12 @@ def _given_lines(sol: Solution) -> list[str]:
                 f"at rest, about to turn {sense(inp.omega)} (the velocities and "
                 f"accelerations below are per 1 rad/s {sense(inp.omega)} of the crank: the "
                 "virtual velocities of the power balance)"
+                if sc.at_rest and not sc.start_alpha
+                else f"starting from rest {sense(inp.omega)}, "
+                f"{fmt_angular(sc.start_alpha, 'rad/s^2')} (the velocities and accelerations "
+                f"below are per 1 rad/s {sense(inp.omega)} of the crank, the virtual "
+                "velocities of the power balance; the start's accelerations, the tangential "
+                "terms alone, alpha times those velocities, are in the forces below)"
                 if sc.at_rest
                 else f"{fmt_angular(inp.omega, 'rad/s')}"
             )
@@ -226,7 +244,11 @@ def _torque_lines(sol: Solution) -> list[str]:
     tidy = tidied(sol)  # from the velocities without rounding noise
     t = tidy.input_torque
     if driver.input_words(sc) is not None:
-        return ["", driver.effort_words(t)]
+        said = driver.effort_words(t)
+        if sc.at_rest:  # (per unit speed of the driver: the loads' virtual power)
+            said = said.replace("(power balance, no friction or inertia)", "").rstrip()
+            said += " (the loads' power balance, without the weights)"
+        return ["", said]
     if tidy.cylinder_force is not None:  # the power T omega goes in as F vs along it
         cylinder, f = tidy.cylinder_force
         way = "pushing its ends apart" if f >= 0 else "pulling its ends together"

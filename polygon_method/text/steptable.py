@@ -149,7 +149,15 @@ def _speed_working(sol) -> tuple[str, str]:
         return (
             f"at rest ({name} = 0, about to turn {sense_word(w)}): the polygons are drawn "
             f"for {name} = {result}, the virtual velocities of the power balance (per rad/s "
-            "of the crank; no inertia)",
+            "of the crank; "
+            + (
+                f"starting with alpha = {fmt(abs(sol.scene.start_alpha))} rad/s^2 "
+                f"{sense_word(sol.scene.start_alpha)}: the start's accelerations are alpha "
+                "times these velocities, section 6; the acceleration diagram below, per "
+                "rad/s with its centripetal terms, is not the start's)"
+                if sol.scene.start_alpha
+                else "no inertia)"
+            ),
             result,
         )
     m = re.match(r"^\s*([-+]?[0-9.]+(?:[eE][-+]?\d+)?)\s*([^\s]*)", inp.speed_text)
@@ -318,7 +326,12 @@ def _input(doc, sol):
             )
         )
     else:
-        items.append(f"alpha_{inp.crank} = 0 (the crank turns at a uniform speed)")
+        items.append(
+            f"alpha_{inp.crank} = 0 in the polygons per rad/s (the start's alpha is taken "
+            "in section 6)"
+            if sol.scene.start_alpha
+            else f"alpha_{inp.crank} = 0 (the crank turns at a uniform speed)"
+        )
     two = inp.second
     if two is not None and two.block is not None:  # a collar sliding along the crank
         items.append(f"the second input: {sol.plan.steps[1].second_words(sc)} (given)")
