@@ -9,6 +9,15 @@ a shared machine only adds to it).
     python benchmarks/reading.py --count 200     # only N never-seen solves from the text,
                                                  # for valgrind (below); with --loaded,
                                                  # from the loaded scene (no reading)
+    python benchmarks/reading.py --side-by-side 150   # the two figures with their targets,
+                                                 # taken in turn with pylinkage's build
+
+The two figures and their targets: the seed's worked file from text to solved, as ``solve``
+reads it, at most 0.3 ms; a mechanism never seen (``speed.py``'s four-bar), from its loaded
+scene to one solved position, at most 0.8 of pylinkage building the same four-bar and
+stepping it once. ``--side-by-side N`` takes the three in turn, in small batches, N rounds,
+each figure the least (a shared machine's load comes and goes: a figure measured a minute
+after its peer is compared with another machine).
 
 Counted in instructions, which the machine's other load does not move (the difference of
 200 runs and none, the hash seed fixed)::
@@ -79,14 +88,72 @@ def stages(text):
     ]
 
 
+def side_by_side(text, rounds):
+    """{name: least seconds per call} of the worked file from ``text`` to solved, the
+    four-bar never seen from its loaded scene, and pylinkage's build and step, taken in
+    turn in small batches over ``rounds`` rounds."""
+    from speed import FOURBAR_TEXT, _pylinkage_build_and_step
+
+    from polygon_method import parse_scene, solve
+    from polygon_method.solver import compiler
+
+    loaded = parse_scene(FOURBAR_TEXT)
+
+    def worked():
+        compiler._BY_ID.clear()
+        compiler._BY_CONTENT.clear()
+        return solve(parse_scene(text, variants=False, answers=False))
+
+    def fresh():
+        compiler._BY_ID.clear()
+        compiler._BY_CONTENT.clear()
+        return solve(loaded)
+
+    batches = {"worked": (worked, 5), "fresh": (fresh, 10)}
+    batches["pylinkage"] = (_pylinkage_build_and_step, 10)
+    best = dict.fromkeys(batches, float("inf"))
+    for fn, _ in batches.values():
+        fn()  # imports and first-call costs out of the way
+    clock = time.perf_counter
+    for _ in range(rounds):
+        for name, (fn, n) in batches.items():
+            t = clock()
+            for _ in range(n):
+                fn()
+            best[name] = min(best[name], (clock() - t) / n)
+    return best
+
+
+def _print_side_by_side(text, rounds):
+    try:
+        best = side_by_side(text, rounds)
+    except ImportError:  # pylinkage not installed: pip install '.[peers]'
+        print("pylinkage is not installed (pip install '.[peers]')")
+        return
+    worked, ratio = best["worked"], best["fresh"] / best["pylinkage"]
+    print(f"side by side, the least of {rounds} rounds:")
+    print(
+        f"  the worked file, text -> solved    {worked * 1e6:8.1f} us   "
+        f"at most 300 us: {'met' if worked <= 3e-4 else 'not met'}"
+    )
+    print(
+        f"  a four-bar never seen, loaded -> solved {best['fresh'] * 1e6:6.1f} us, pylinkage's "
+        f"build and step {best['pylinkage'] * 1e6:.1f} us: {ratio:.3f}   "
+        f"at most 0.8: {'met' if ratio <= 0.8 else 'not met'}"
+    )
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("scene", nargs="?", default=str(SEED))
     parser.add_argument("--profile", type=int, default=0, metavar="N")
     parser.add_argument("--count", type=int, default=None, metavar="N")
     parser.add_argument("--loaded", action="store_true")
+    parser.add_argument("--side-by-side", type=int, default=0, metavar="ROUNDS")
     args = parser.parse_args(argv)
     text = Path(args.scene).read_text()
+    if args.side_by_side:
+        return _print_side_by_side(text, args.side_by_side)
     rows = stages(text)
     if args.count is not None:  # for counting instructions: warm, then N whole runs
         whole = rows[3 if args.loaded else -1][1]

@@ -63,3 +63,29 @@ def test_the_force_benchmark_runs_and_its_checks_hold(capsys):
     assert set(res["one"]) == set(mod.NAMES) == set(res["sweep"]) and res["angles"] == 360
     assert "floor" in res["one"]["fourbar_forces"]
     assert all(t > 0 for r in (*res["one"].values(), *res["sweep"].values()) for t in r.values())
+
+
+def test_the_instruction_counts_count_what_they_say():
+    """``benchmarks/instructions.py``: each case's call (run here once, without valgrind)
+    computes what its name says: ``named`` gives the solve's dicts by name, the floor's
+    numbers are the solve's (``speed.py`` checks them to 1e-12), the force case gives the
+    worked problem's forces, a chain case counts its links."""
+
+    spec = importlib.util.spec_from_file_location(
+        "instructions", ROOT / "benchmarks" / "instructions.py"
+    )
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    from polygon_method import load_scene, solve
+
+    for case in mod.CASES:
+        if case == "chain10001":  # (as chain1001, ten times longer)
+            continue
+        fn, per = mod._function(case)
+        out = fn()
+        assert per == (1001 if case == "chain1001" else 1), case
+        if case == "named":
+            sol = solve(load_scene(ROOT / "worked_problems" / "fourbar_image_points.toml"))
+            assert out[0] == sol.P and out[2] == sol.A and set(out[3]) == {"AB", "BC", "CD"}
+        if case == "forces":
+            assert out.input_torque is not None

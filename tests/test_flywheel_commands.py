@@ -127,6 +127,19 @@ def test_sweep_summary_and_csv(tmp_path, capsys):
         assert abs(r - 1000) < 1e-9 * 1000
 
 
+def test_a_diagrams_csv_on_standard_output(tmp_path, capsys, monkeypatch):
+    """``--csv -``: the CSV on standard output, the summary on stderr, no file named '-'."""
+    monkeypatch.chdir(tmp_path)
+    f = _write(tmp_path, LAW)
+    code, out, err = _run(capsys, "sweep", f, "--csv", "-", "--steps", "36", "--summary")
+    rows = out.splitlines()
+    assert code == 0 and rows[0] == "angle_deg,torque,resisting,energy" and len(rows) == 38
+    x, t, _, _ = map(float, rows[10].split(","))
+    th = math.radians(x)
+    assert abs(t - (1000 + 300 * math.sin(2 * th) - 500 * math.cos(2 * th))) < 1e-9 * 1000
+    assert "dE_max" in err and not (tmp_path / "-").exists()
+
+
 BAD = [
     ("plan", AREAS, "[turning_moment]", "nothing to do"),
     (

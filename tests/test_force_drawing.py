@@ -21,6 +21,7 @@ from polygon_method import load_scene, solve
 from polygon_method.draw import render_pages
 from polygon_method.draw.forces import NEGLIGIBLE
 from polygon_method.forces import side_label
+from polygon_method.scene import FixedPath
 from polygon_method.polygons.scales import (
     choose_scale,
     extent,
@@ -99,19 +100,28 @@ def _magnitude(sol, side):
     F = f.pin(side.point, side.on, side.by)  # the solved pin force, by the sign rule
     if not side.part:
         return math.hypot(*F)
-    # its parts along and square to the link that carries the pin on body `on`
-    other = _other_end(sc, side)
-    (ax, ay), (bx, by) = sol.P[side.point], sol.P[other]
-    ex, ey = bx - ax, by - ay
+    # its parts along and square to the link that carries the pin on body `on` (a block's
+    # guide, for a block)
+    ex, ey = _line(sol, side)
     L = math.hypot(ex, ey)
     along = (F[0] * ex + F[1] * ey) / L
     return abs(along) if side.part == "n" else abs(F[0] * ey - F[1] * ex) / L
 
 
-def _other_end(sc, side):
-    """The link's other end from the pin (the block's point for a link on a block)."""
+def _line(sol, side):
+    """The direction of the link that carries the pin on body ``side.on`` (from the pin to
+    the link's other end), or of the block's guide for a block."""
+    sc = sol.scene
+    if side.on.startswith("block "):
+        s = sc.slider(side.on.split()[1])
+        if isinstance(s, FixedPath):
+            return s.u
+        (ax, ay), (bx, by) = sol.P[s.first], sol.P[s.second]
+        return (bx - ax, by - ay)
     lk = sc.link(side.on)
-    return lk.q if lk.p == side.point else lk.p
+    other = lk.q if lk.p == side.point else lk.p
+    (ax, ay), (bx, by) = sol.P[side.point], sol.P[other]
+    return (bx - ax, by - ay)
 
 
 @pytest.mark.parametrize("scene", SCENES)

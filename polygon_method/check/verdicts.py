@@ -178,11 +178,27 @@ def _show(v: Verdict, x: float) -> str:
     return f"{_g(x)} {v.unit}" + (f" ({_g(x / own[1])} {own[0]})" if own else "")
 
 
+def percent_text(error, space: str = " ") -> str:
+    """An answer's relative error in per cent as the tables write it: two decimals, in
+    powers of ten past a million per cent, and past the largest float (an answer such as
+    ``1e308 m/s``) what it is more than; "-" where there is none.
+
+    >>> percent_text(0.0123), percent_text(2.5e300), percent_text(float("inf")), percent_text(None)
+    ('1.23 %', '2.5e+302 %', 'more than 1e+308 %', '-')
+    """
+    if error is None:
+        return "-"
+    p = 100 * error
+    if not math.isfinite(p):
+        return f"more than 1e+308{space}%"
+    return f"{p:.2f}{space}%" if p < 1e6 else f"{p:.3g}{space}%"
+
+
 def verdicts_text(verdicts, title: str = "") -> str:
     """The verdicts as a terminal table, with the mistake named under a wrong answer."""
     rows = [("answer", "given", "correct", "error", "tolerance", "verdict")]
     for v in verdicts:
-        err = "-" if v.error is None else f"{100 * v.error:.2f} %"
+        err = percent_text(v.error)
         tol = "-" if not math.isfinite(v.tolerance) else f"{100 * v.tolerance:.2g} %"
         rows.append((v.key, v.raw, correct_text(v), err, tol, "right" if v.ok else "WRONG"))
     widths = [max(len(r[i]) for r in rows) for i in range(6)]

@@ -35,9 +35,29 @@ from .files import check_outputs, write_output, write_outputs
 __all__ = ["main", "build_parser", "write_output", "write_outputs", "check_outputs"]
 
 
+class _Once(argparse.Action):
+    """An option of one value given twice with two values (``--steps 12 --steps 24``,
+    ``-o a.svg -o b.svg``) is refused: which one was meant? (argparse keeps the last.)"""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        seen = namespace.__dict__.setdefault("_given", {})
+        if self.dest in seen and seen[self.dest] != values:
+            parser.error(
+                f"{'/'.join(self.option_strings)} given twice ({seen[self.dest]} and {values}): "
+                "give it once"
+            )
+        seen[self.dest] = values
+        setattr(namespace, self.dest, values)
+
+
 class _Parser(argparse.ArgumentParser):
     def error(self, message):  # one line, exit 2
         self.exit(2, f"{self.prog}: error: {message}\n")
+
+    def add_argument(self, *args, **kwargs):
+        if args and args[0].startswith("-") and kwargs.get("action", "store") == "store":
+            kwargs["action"] = _Once
+        return super().add_argument(*args, **kwargs)
 
 
 def _add_solve(sub) -> None:
@@ -199,7 +219,7 @@ def _add_sweep(sub) -> None:
     s.add_argument("--from", dest="start", type=float, help="first crank angle (deg)")
     s.add_argument("--to", dest="stop", type=float, help="last crank angle (deg)")
     s.add_argument("--step", type=float, help="crank angle step (deg)")
-    s.add_argument("--csv", help="FILE.csv: one row per crank angle")
+    s.add_argument("--csv", help="FILE.csv: one row per crank angle (- : on standard output)")
     s.add_argument(
         "--error-bound",
         action="store_true",
@@ -264,14 +284,15 @@ def build_parser() -> argparse.ArgumentParser:
     return p
 
 
-#: a negative number argparse takes for an option: an exponent ("-1e3", "-2.5E-4"); its own
-#: rule knows "-30" and "-0.5" only
-_NEGATIVE_EXPONENT = re.compile(r"^-(\d+\.?\d*|\.\d+)[eE][+-]?\d+$")
+#: a negative value argparse takes for an option: an exponent ("-1e3", "-2.5E-4"), a per cent
+#: ("-5%"), an infinity ("-inf"); its own rule knows "-30" and "-0.5" only
+_NEGATIVE_EXPONENT = re.compile(r"^-(\d|\.\d|inf|nan)", re.IGNORECASE)
 
 
 def _negative_values(argv: list) -> list:
-    """``--from -1e3`` as ``--from=-1e3``: a negative number in exponent form after a long
-    option is that option's value, as "-30" is."""
+    """``--from -1e3`` as ``--from=-1e3``: a negative number in exponent form (or a negative
+    per cent, an infinity) after a long option is that option's value, as "-30" is, and
+    is then refused in that option's words."""
     out = []
     for tok in argv:
         if (
@@ -291,6 +312,7 @@ def main(argv=None) -> int:
     scene or argument (one line on stderr), 3 an internal error."""
     parser = build_parser()
     args = parser.parse_args(_negative_values(list(sys.argv[1:] if argv is None else argv)))
+    vars(args).pop("_given", None)  # what _Once kept to see an option given twice
     for dest, value in vars(args).items():  # an empty name is never "not given"
         if isinstance(value, str) and dest != "command" and not value.strip():
             flag = {"output": "-o", "scene": "SCENE"}.get(dest, "--" + dest.replace("_", "-"))

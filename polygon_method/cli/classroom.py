@@ -165,7 +165,7 @@ class _VariantBook:
         if self._index is None:
             self._index, seen = [], set()
             for f in self.files:
-                real = f.resolve()
+                real = os.path.realpath(f)  # a link in a loop is itself (resolve raises)
                 if real in seen:  # a link to a variant listed already: one variant
                     continue
                 seen.add(real)

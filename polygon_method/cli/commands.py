@@ -447,7 +447,12 @@ def _cmd_sweep(args) -> int:
         raise SceneError(
             "--error-bound adds a column to the CSV: give --csv FILE as well", key="--error-bound"
         )
-    wanted = [(path, option) for path, option in ((args.csv, "--csv"), (plot, "--plot")) if path]
+    to_stdout = args.csv == "-"  # the CSV on standard output (the words then on stderr)
+    wanted = [
+        (path, option)
+        for path, option in ((None if to_stdout else args.csv, "--csv"), (plot, "--plot"))
+        if path
+    ]
     targets = check_outputs(wanted, protect=[args.scene])
     scene = load_scene(args.scene, variants=False, answers=False)
     angles = _requested_angles(args, scene)
@@ -473,7 +478,7 @@ def _cmd_sweep(args) -> int:
             file=scene.file,
         )
     outputs = []
-    if args.csv:
+    if args.csv and not to_stdout:
         outputs.append((res.to_csv(getattr(args, "error_bound", False)), False))
     if plot:
         from ..draw.plots import plot_bytes
@@ -485,12 +490,16 @@ def _cmd_sweep(args) -> int:
             )
         )
     write_outputs(targets, outputs)
+    words = sys.stderr if to_stdout else sys.stdout
+    if to_stdout:
+        sys.stdout.write(res.to_csv(getattr(args, "error_bound", False)))
     if want_summary:
-        print(summary_of(res).text())
+        print(summary_of(res).text(), file=words)
     else:
         print(
             f"{len(res)} of {res.requested} {_what(scene)} evaluated"
-            + (f" {_limits_text(res.domain)}" if res.domain.limits else "")
+            + (f" {_limits_text(res.domain)}" if res.domain.limits else ""),
+            file=words,
         )
     return 0
 

@@ -233,7 +233,9 @@ def _sweep(args, scene) -> int:
     if getattr(args, "summary", False) or not done:
         from ..text.energy import cycle_text
 
-        print(cycle_text(scene, _solved(scene)))
+        # (a CSV on standard output keeps it to itself: the words go to stderr)
+        words = sys.stderr if getattr(args, "csv", None) == "-" else sys.stdout
+        print(cycle_text(scene, _solved(scene)), file=words)
     return 0
 
 
@@ -246,13 +248,18 @@ def _csv(scene, out, n) -> None:
             "the crank angle",
             key="--csv",
         )
-    targets = check_outputs([(out, "--csv")], protect=[scene.file])
+    to_stdout = str(out) == "-"  # the CSV on standard output
+    targets = None if to_stdout else check_outputs([(out, "--csv")], protect=[scene.file])
     c = _solved(scene)
     th, tq, rs, es = curves(scene, c, n)
     rows = ["angle_deg,torque,resisting,energy"]
     for x, t, r, e in zip(th, tq, rs, es):
         rows.append(f"{x * 57.29577951308232:.12g},{t:.12g},{r:.12g},{e:.12g}")
-    write_outputs(targets, [(("\n".join(rows) + "\n").encode(), True)])
+    text = "\n".join(rows) + "\n"
+    if to_stdout:
+        sys.stdout.write(text)
+    else:
+        write_outputs(targets, [(text.encode(), True)])
     print(f"{out}: {len(th)} crank angles", file=sys.stderr)
 
 

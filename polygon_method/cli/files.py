@@ -66,9 +66,12 @@ class _Target:
         self.data, self.binary = data, binary
         if self.special:
             return
-        fd, self.tmp = tempfile.mkstemp(
-            dir=self.path.parent, prefix=f".{self.path.name}.", suffix=".tmp"
-        )
+        try:  # a directory that takes no new file (/proc) is the output's failure
+            fd, self.tmp = tempfile.mkstemp(
+                dir=self.path.parent, prefix=f".{self.path.name}.", suffix=".tmp"
+            )
+        except OSError as exc:
+            raise self.fail(exc) from None
         try:
             with os.fdopen(
                 fd, "wb" if binary else "w", **({} if binary else {"encoding": "utf-8"})

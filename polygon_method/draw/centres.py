@@ -144,7 +144,7 @@ def _kennedy_lines(sk, ic, box, cm):
                     lw=lw,
                     dashes=dashes,
                     z=1,
-                    obstacle=False,
+                    obstacle="soft",
                     hint=False,
                 )
 

@@ -222,10 +222,14 @@ def layout(sol, diagram: str = "all", scales=None, centre_prefix: str = "I", pap
         sk = _sketch(sol, name, s)
         w, h = _panel_size(sk)
         if max(w, h) > MAX_FIGURE_CM:
+            such = (  # never the very scale refused
+                f" such as {display_unit(stated[name].text)}"
+                if stated[name].per_cm > s.per_cm
+                else " (--scale)"
+            )
             raise PolygonMethodError(
                 f"the {name} diagram at {display_unit(s.text)} would be "
-                f"{max(w, h):.3g} cm across; use a coarser scale such as "
-                f"{display_unit(stated[name].text)}",
+                f"{max(w, h):.3g} cm across; use a coarser scale{such}",
                 key="--scale",
             )
         if s.per_cm > _SPECK * stated[name].per_cm:

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import io
 import math
+import re
 from dataclasses import dataclass, field
 
 from ..common.tolerances import DISTINCT, ON_PAPER, ROUNDING
@@ -63,6 +64,28 @@ def _text_size(text: str, size: float, weight: str = "normal"):
     return got
 
 
+# --------------------------------------------------------------------------- on paper
+
+_PAPER_WORDS = (
+    (re.compile(r"\^2\b"), "\u00b2"),  # m/s^2 -> m/s²
+    (re.compile(r"(\d) ?deg\b"), "\\1\u00b0"),  # 40 deg -> 40°
+    (re.compile(r"\bomega_"), "\u03c9_"),  # omega_BC -> ω_BC
+    (re.compile(r"\balpha_"), "\u03b1_"),  # alpha_BC -> α_BC
+)
+
+
+def paper_words(text: str) -> str:
+    """Words as a drawing writes them: the units' squares, the degrees and the Greek letters
+    that the scene's text and the printed solution spell out in ASCII.
+
+    >>> paper_words("from omega_O2-B = 200 rpm cw, alpha_O2-B = 10 rad/s^2 ccw (40 deg past)")
+    'from ω_O2-B = 200 rpm cw, α_O2-B = 10 rad/s² ccw (40° past)'
+    """
+    for pattern, to in _PAPER_WORDS:
+        text = pattern.sub(to, text)
+    return text
+
+
 # --------------------------------------------------------------------------- a sketch
 
 #: how much nearer (cm) a point's label is to its own point than to any other point
@@ -103,6 +126,9 @@ class _Sketch:
     leader_clear: float = 0.02
     #: the areas (shapely) a leader line keeps off, away from its own point
     solid: list = field(default_factory=list)
+    #: lines a label keeps off where it can, and sits on where nothing else is clear (the
+    #: centres' diagram's lines of Kennedy's theorem, which meet at the centres it names)
+    soft: list = field(default_factory=list)
 
     # -- primitives (coordinates in cm)
     def line(
@@ -114,7 +140,8 @@ class _Sketch:
         if obstacle and len(pts) > 1:
             from shapely.geometry import LineString
 
-            self.obstacles.append(LineString(pts).buffer(lw / PT_PER_CM / 2))
+            g = LineString(pts).buffer(lw / PT_PER_CM / 2)
+            (self.soft if obstacle == "soft" else self.obstacles).append(g)
         if hint:
             self.hints.extend(zip(pts[:-1], pts[1:]))
 
@@ -196,7 +223,7 @@ class _Sketch:
     ):
         self.labels.append(
             _Label(
-                text,
+                paper_words(text),
                 [tuple(map(float, a)) for a in anchors],
                 size,
                 gid or f"label-{len(self.labels)}",
@@ -210,6 +237,7 @@ class _Sketch:
 
     def note(self, x, y, text, size=NOTE_PT, ha="left", gid=None, weight="normal", color="#000000"):
         """Fixed text, ``(x, y)`` its left (or centre) and vertical middle."""
+        text = paper_words(text)
         w, h = _text_size(text, size, weight)
         cx = x + w / 2 if ha == "left" else x
         self.notes.append(
@@ -239,17 +267,22 @@ class _Sketch:
         from shapely.geometry import Point
 
         tree = STRtree(self.obstacles) if self.obstacles else None
+        soft_tree = STRtree(self.soft) if self.soft else None
         placed, named = [], []  # every box placed; the boxes of the points' labels
         unplaced = []  # labels that overlap a line: one warning for them all
         spots = [Point(lab.anchors[0]) for lab in self.labels if lab.point]
         for lab in self.labels:
             w, h = _text_size(lab.text, lab.size, lab.weight)
             # a label kept apart from the points' labels (a line's mark, so that "perp EF"
-            # is not read with e' beside it) first tries to be, then settles for less
-            for apart in (lab.apart, 0.0) if lab.apart else (0.0,):
-                best, clear_only, clashes = self._place(
-                    lab, w, h, tree, placed, named, spots, apart
-                )
+            # is not read with e' beside it) first tries to be, then settles for less; and
+            # one first keeps off the soft lines too
+            for soft in (soft_tree, None) if soft_tree is not None else (None,):
+                for apart in (lab.apart, 0.0) if lab.apart else (0.0,):
+                    best, clear_only, clashes = self._place(
+                        lab, w, h, tree, placed, named, spots, apart, soft
+                    )
+                    if best is not None:
+                        break
                 if best is not None:
                     break
             if best is None and clear_only is not None:
@@ -288,9 +321,10 @@ class _Sketch:
                 "be placed clear of the lines"
             )
 
-    def _place(self, lab, w, h, tree, placed, named, spots, apart):
+    def _place(self, lab, w, h, tree, placed, named, spots, apart, soft=None):
         """(best (cx, cy, leader) or None, the best position only clear of lines, the
-        clashing positions) of one label: rings of growing distance around its anchors."""
+        clashing positions) of one label: rings of growing distance around its anchors;
+        with ``soft`` (a tree of the soft lines), only places clear of them too."""
         from shapely import box
         from shapely.geometry import Point
 
@@ -320,6 +354,8 @@ class _Sketch:
                     clashes.append((b, hits, crowd, (cx, cy)))
                     continue
                 if apart and any(q.distance(b) < apart for q in named):
+                    continue
+                if soft is not None and len(soft.query(b, predicate="intersects")):
                     continue
                 leader = None
                 if lab.leader and gap > 0.5:  # far from its point: a leader line to it

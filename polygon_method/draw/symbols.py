@@ -120,13 +120,15 @@ def rect(c, u, length, width):
 
 
 def fixed_guide(sk, sc, sl, P, s, away=None):
-    """The line of stroke (chain-dotted, through the path's given point) and the guide's
-    wall on the side away from the connecting link, hatched."""
+    """The line of stroke (chain-dotted, through the path's given point where that is
+    among the mechanism's points: one given far along the path draws no line to it) and
+    the guide's wall on the side away from the connecting link, hatched."""
     X = P[sl.point]
     ux, uy = sl.u
     nx, ny = -uy, ux
     tx, ty = sl.through[0] / s, sl.through[1] / s
-    t_through = (tx - X[0]) * ux + (ty - X[1]) * uy
+    along = [(p[0] - X[0]) * ux + (p[1] - X[1]) * uy for p in P.values()]
+    t_through = min(max((tx - X[0]) * ux + (ty - X[1]) * uy, min(along)), max(along))
     lo, hi = min(-1.8, t_through - 0.5), max(1.8, t_through + 0.5)
     sk.line(
         [(X[0] + lo * ux, X[1] + lo * uy), (X[0] + hi * ux, X[1] + hi * uy)],

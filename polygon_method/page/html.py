@@ -19,7 +19,7 @@ import math
 from html import escape
 from importlib.resources import files
 
-from ..check.verdicts import correct_text
+from ..check.verdicts import correct_text, percent_text
 from ..draw.style import (
     BODY_EDGE,
     BODY_FACE,
@@ -73,7 +73,7 @@ def check_html(verdicts, title: str) -> str:
     rows = []
     for v in verdicts:
         # a number and its per cent never split across lines (a no-break space)
-        err = "-" if v.error is None else f"{100 * v.error:.2f}\u00a0%"
+        err = percent_text(v.error, "\u00a0")
         tol = "-" if not math.isfinite(v.tolerance) else f"{100 * v.tolerance:.2g}\u00a0%"
         verdict = '<span class="right">right</span>' if v.ok else '<span class="wrong">WRONG</span>'
         why = "" if v.ok else escape(v.diagnosis or "none of the known mistakes explains it")

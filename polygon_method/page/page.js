@@ -339,10 +339,7 @@ function update(phase, k) {
       let sx = 0, sy = 0;
       for (const p of D.points) { const c = P(p); const L = Math.hypot(c[0], c[1]) || 1; sx += c[0] / L; sy += c[1] / L; }
       const L = Math.hypot(sx, sy);
-      const u = L > TOL.same ? [-sx / L, -sy / L] : [-0.7, 0.7];
-      pole = keepIn([0.8 * fs * u[0], 0.8 * fs * u[1]], v.box, e.lastChild.nodeValue.length);
-      place(e, pole);
-      pole = [pole[0], pole[1] - 0.35 * fs];  // its middle, which the other labels keep clear of
+      pole = [e, L > TOL.same ? Math.atan2(-sy, -sx) : 0.75 * Math.PI];  // (placed first)
     } else if (kind === "label") labels.push([e, P(x)]);
     else if (kind === "inertia") arrowAt(e, x.H, x.F, k, 0.5);  // on its line h from G
     else if (kind === "force") { arrowAt(e, x.at, x.F, k, 0.3); if (!forcesOn()) e.style.display = "none"; }
@@ -380,27 +377,81 @@ function keepIn(q, box, letters) {
   return [Math.min(Math.max(q[0], box[0] + hw), box[2] - hw),
     Math.min(Math.max(q[1], box[1] + 0.5 * FS), box[3] - 0.6 * FS) + 0.35 * FS];
 }
-// labels beside their points, each where it is clear of the labels already placed and of
-// the other points (tried around the point, the preferred side first)
+// labels beside their points, each where it is clear of the labels already placed, of
+// the other points and of the lines drawn (links, vectors, components, guides), tried
+// around the point, the preferred side first, then a little farther off; where no place
+// is clear of the lines, the first clear of the labels and points
 function placeLabels(labels, phase, box, pole) {
   const pts = labels.map(([, c]) => c);
   if (phase !== "configuration") pts.push([0, 0]);
-  const placed = pole ? [pole] : [], fs = FS;
-  // (labels are wider than high: two letters side by side need more room than one above another)
-  const clear = (q, own) => placed.every((c) => Math.hypot((q[0] - c[0]) / 2, (q[1] - c[1]) / 0.95) > fs) &&
-    pts.every((c, i) => i === own || Math.hypot(q[0] - c[0], q[1] - c[1]) > 0.6 * fs);
-  labels.forEach(([e], i) => {
-    const c = pts[i], L = Math.hypot(c[0], c[1]);
-    const a0 = phase === "configuration" || L < TOL.same ? -Math.PI / 4 : Math.atan2(c[1], c[0]);
-    let best = null;
-    for (const turn of [0, 1, -1, 2, -2, 3, -3, 4]) {
-      const a = a0 + turn * Math.PI / 4, q = [c[0] + 0.75 * fs * Math.cos(a), c[1] + 0.75 * fs * Math.sin(a)];
-      if (best === null) best = q;
-      if (clear(q, i)) { best = q; break; }
+  const placed = [], fs = FS, segs = segmentsOf(document.getElementById(phase));
+  // the pole's first, on the side away from the images where that is clear
+  const todo = (pole ? [[pole[0], pts.length - 1, pole[1]]] : []).concat(labels.map(([e], i) => [e, i, null]));
+  const apart = (p, q) => p[2] + 0.5 < q[0] || q[2] + 0.5 < p[0] || p[3] + 1 < q[1] || q[3] + 1 < p[1];
+  for (const [e, i, away] of todo) {
+    const c = pts[i], L = Math.hypot(c[0], c[1]), letters = e.lastChild.nodeValue.length;  // (the text after its <title>)
+    const a0 = away !== null ? away : phase === "configuration" || L < TOL.same ? -Math.PI / 4 : Math.atan2(c[1], c[0]);
+    const hw = 0.3 * fs * letters + 0.2, hh = 0.4 * fs;  // half the text's box
+    // the text's box where it is placed at q (moved inside the panel; y is its baseline)
+    const boxAt = (q) => { const k = keepIn(q, box, letters); return [k[0] - hw, k[1] - 0.35 * fs - hh, k[0] + hw, k[1] - 0.35 * fs + hh]; };
+    const clear = (b) => placed.every((p) => apart(p, b)) &&
+      pts.every((p, j) => j === i || p[0] < b[0] - 0.3 || p[0] > b[2] + 0.3 || p[1] < b[1] - 0.3 || p[1] > b[3] + 0.3);
+    let least = null, free = null, best = null;  // (least: the place that overlaps least)
+    for (const r of [0.75, 1.15, 1.6]) {
+      for (const turn of [0, 1, -1, 2, -2, 3, -3, 4]) {
+        const a = a0 + turn * Math.PI / 4;
+        // (a place at its distance from the point to the nearer side of the text's box)
+        const d = r * fs + Math.min(Math.abs(hw / Math.cos(a)), Math.abs(hh / Math.sin(a))) - 0.35 * fs;
+        const q = [c[0] + d * Math.cos(a), c[1] + d * Math.sin(a)], b = boxAt(q);
+        if (!clear(b)) {
+          const o = overlap(b, placed, pts, i);
+          if (least === null || o < least[1]) least = [q, o];
+          continue;
+        }
+        if (free === null) free = q;
+        const wide = [b[0] - 0.3, b[1] - 0.3, b[2] + 0.3, b[3] + 0.3];  // (a line's half width and a little)
+        if (segs.every((sg) => !crosses(sg, wide))) { best = q; break; }
+      }
+      if (best !== null) break;
     }
-    placed.push(best);
-    place(e, keepIn(best, box, e.lastChild.nodeValue.length));  // (the text after its <title>)
-  });
+    best = best || free || least[0];
+    placed.push(boxAt(best));
+    place(e, keepIn(best, box, letters));
+  }
+}
+// how much a box b overlaps the boxes placed (their area in common) and the other points
+function overlap(b, placed, pts, own) {
+  let o = 0;
+  for (const p of placed) o += Math.max(0, Math.min(b[2], p[2]) - Math.max(b[0], p[0])) * Math.max(0, Math.min(b[3], p[3]) - Math.max(b[1], p[1]));
+  pts.forEach((p, j) => { if (j !== own && p[0] >= b[0] && p[0] <= b[2] && p[1] >= b[1] && p[1] <= b[3]) o += FS * FS; });
+  return o;
+}
+// the lines drawn in a panel, as segments [x1, y1, x2, y2] (the forces' layer left out)
+// and the sides of the blocks and the ground's marks
+function segmentsOf(svg) {
+  const out = [];
+  for (const e of svg.querySelectorAll("line, polygon.block, polygon.ground")) {
+    if (e.style.display === "none" || e.closest("#force-layer")) continue;
+    if (e.tagName === "line") {
+      const s = ["x1", "y1", "x2", "y2"].map((a) => Number(e.getAttribute(a)));
+      if (s.every(Number.isFinite)) out.push(s);
+      continue;
+    }
+    const p = (e.getAttribute("points") || "").split(" ").filter(Boolean).map((q) => q.split(",").map(Number));
+    p.forEach((a, i) => out.push([a[0], a[1], p[(i + 1) % p.length][0], p[(i + 1) % p.length][1]]));
+  }
+  return out;
+}
+// whether the segment s crosses the box b [x0, y0, x1, y1] (clipped to it, Liang-Barsky)
+function crosses(s, b) {
+  let t0 = 0, t1 = 1;
+  const d = [s[2] - s[0], s[3] - s[1]];
+  for (const [p, q] of [[-d[0], s[0] - b[0]], [d[0], b[2] - s[0]], [-d[1], s[1] - b[1]], [d[1], b[3] - s[1]]]) {
+    if (p === 0) { if (q < 0) return false; continue; }
+    const t = q / p;
+    if (p < 0) { if (t > t1) return false; if (t > t0) t0 = t; } else { if (t < t0) return false; if (t < t1) t1 = t; }
+  }
+  return t0 <= t1;
 }
 
 // ---------------------------------------------------------------- values and tooltips
@@ -582,10 +633,13 @@ function buildPlots() {
       text(svg, {x: L - 3, y: r3(Y(y) + 3.5), class: "tick", "text-anchor": "end"}, fmt(y, 3));
     }
     const turned = Math.abs(t1 - t0), dstep = [5, 10, 15, 30, 45, 60, 90, 180].find((s) => turned / s <= 6) || 360;
-    for (let j = Math.ceil(Math.min(t0, t1) / dstep - TOL.same); j * dstep <= Math.max(t0, t1) + TOL.same; j++) {
-      const t = j * dstep;  // a round angle, written between 0 and the cycle (360 or 720)
+    const xt = [];  // a round angle, written between 0 and the cycle (360 or 720); a block's
+    // place: round numbers (1, 2 or 5 x 10^k apart), its unit in the axis' title
+    if (D.param) for (const t of roundTicks(Math.min(t0, t1), Math.max(t0, t1), 6)) xt.push([t, fmt(t, 3)]);
+    else for (let j = Math.ceil(Math.min(t0, t1) / dstep - TOL.same); j * dstep <= Math.max(t0, t1) + TOL.same; j++) xt.push([j * dstep, String(inCycle(j * dstep)) + "°"]);
+    for (const [t, words] of xt) {
       el(svg, "line", {x1: r3(X(t)), y1: T, x2: r3(X(t)), y2: H - B, class: "grid"});
-      text(svg, {x: r3(X(t)), y: H - B + 11, class: "tick", "text-anchor": "middle"}, D.param ? at(t) : String(inCycle(t)) + "°");
+      text(svg, {x: r3(X(t)), y: H - B + 11, class: "tick", "text-anchor": "middle"}, words);
     }
     el(svg, "line", {x1: L, y1: T, x2: L, y2: H - B, class: "axis"});
     text(svg, {x: (L + W - R) / 2, y: H - 6, class: "axis-title", "text-anchor": "middle"},

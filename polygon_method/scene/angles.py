@@ -76,7 +76,8 @@ _SENSE_RE = "|".join(sorted(_SENSE, key=len, reverse=True))
 _BOOK_WORDS = re.compile(
     r"horizontal|vertical|dead|\b[iotb]dc\b|[iotb]\.d\.c|stroke|"
     r"\bfrom\b|\babove\b|\bbelow\b|\bleft\b|\bright\b|\bpast\b|\bbefore\b|"
-    r"\bafter\b|\bbeyond\b|x\s*axis|\+x|\bup(wards?)?\b|\bdown(wards?)?\b",
+    r"\bafter\b|\bbeyond\b|x\s*axis|\+x|\bup(wards?)?\b|\bdown(wards?)?\b|"
+    r"line of cent(?:re|er)s?|fixed link",
     re.IGNORECASE,
 )
 #: a way in words, without a size: "down" (vertically downwards, straight down, to the left)
@@ -131,13 +132,28 @@ def _tidy(raw: str) -> str:
         text,
     )
     text = re.sub(r"[,;()]", " ", text)
+    # "makes an angle of 60 deg with the vertical", "inclined at 30 deg to the line of
+    # stroke": the angle from that reference
+    text = re.sub(r"^(?:(?:makes|making|is|inclined|at|an|angle|of)\s+)+", "", text)
+    text = re.sub(
+        r"\b(?:with|to)\s+(?=(?:the\s+)?(?:upward |downward )?"
+        r"(?:vertical|horizontal|line of stroke|line of centres?))",
+        "from ",
+        text,
+    )
     text = re.sub(r"\b(the|measured|to|on|is|at)\b", "", text)
     text = text.replace("x-axis", "x axis")
     return re.sub(r"\s+", " ", text).strip()
 
 
 def read_angle(
-    raw, where: str, *, dead=None, sense: float | None = None, strokes: dict | None = None
+    raw,
+    where: str,
+    *,
+    dead=None,
+    sense: float | None = None,
+    strokes: dict | None = None,
+    centres=None,
 ):
     """Read a book's angle; None where ``raw`` is a plain angle (``"30 deg"``, ``30``).
 
@@ -146,7 +162,9 @@ def read_angle(
     crank angles (rad) with None or a test of the final crank angle (whether the slider's
     [assembly] point keeps the side they were found for), or raising :class:`SceneError`
     with the reason there are none; ``sense`` the crank's sense of
-    rotation (+1 ccw, -1 cw); ``strokes`` the fixed paths' directions (rad) by slider name.
+    rotation (+1 ccw, -1 cw); ``strokes`` the fixed paths' directions (rad) by slider name;
+    ``centres`` the crank's pivot and the ground points (name -> (x, y)), for an angle from
+    the line of centres (a four-bar's "angle BAD = 60 deg": "60 deg from AD, ccw").
     Raises :class:`SceneError` (no key: the caller adds it) for an ambiguous or unreadable
     form, with examples of good ones.
     """
@@ -318,6 +336,14 @@ def read_angle(
                 f'"{_size(m)} from the line of stroke, ccw" (or cw)'
             )
         return done(_Rad(ref), given or 1, f"the line of stroke{named} is at {_deg(ref)} deg")
+    if centres is not None and (target in _FRAME_WORDS or re.fullmatch(_PAIR, target)):
+        ref, words = _centres_line(centres, target, shown)
+        if given is None and size != 0:
+            raise SceneError(
+                f"'{shown}' does not say to which side: add the sense, e.g. "
+                f'"{_size(m)} from {_line_words(target)}, ccw" (or cw)'
+            )
+        return done(_Rad(ref), given or 1, words)
     refs = {
         "horizontal": 0.0,
         "+x": 0.0,
@@ -374,6 +400,45 @@ def _half_turn(a, half):
 def _deg(theta) -> str:
     """An angle (rad) in degrees for the notes, in (-180, 180]."""
     return f"{_half_turn(round(math.degrees(theta), 9), 180.0):g}"
+
+
+#: the frame's line in words, and a line named by two ground points ("AD", "O2O4", "O2-O4")
+_FRAME_WORDS = ("line of centres", "line of centre", "fixed link", "frame")
+_PAIR = r"(?:line )?([a-z][0-9]*)-?([a-z][0-9]*)"
+
+
+def _line_words(target: str) -> str:
+    """The line of centres as the scene names it: "the line of centres", "AD"."""
+    if target in _FRAME_WORDS:
+        return "the line of centres" if target.startswith("line") else f"the {target}"
+    return target.upper()
+
+
+def _centres_line(centres, target: str, shown: str):
+    """(direction rad, words) of the line of centres from the crank's pivot: to the frame's
+    other point (of two), or along the named pair of ground points through the pivot."""
+    pivot, ground = centres
+    others = [g for g in ground if g != pivot]
+    if target in _FRAME_WORDS:
+        if len(others) != 1:
+            raise SceneError(
+                f"'{shown}': the frame has {len(ground)} points: name the line from the "
+                f'crank\'s pivot, e.g. "... from {pivot}{others[0] if others else "D"}, ccw"'
+            )
+        (other,) = others
+    else:
+        pair = re.fullmatch(_PAIR, target)
+        names = {g.lower(): g for g in ground}
+        a, b = names.get(pair.group(1)), names.get(pair.group(2))
+        if a is None or b is None or a == b or pivot not in (a, b):
+            raise SceneError(
+                f"'{shown}': {_line_words(target)} is no line of two ground points through the "
+                f"crank's pivot {pivot}"
+            )
+        other = b if a == pivot else a
+    (x0, y0), (x1, y1) = ground[pivot], ground[other]
+    ref = math.atan2(y1 - y0, x1 - x0)
+    return ref, f"the line of centres {pivot}{other} is at {_deg(ref)} deg"
 
 
 def _stroke(strokes: dict, name: str, shown: str):

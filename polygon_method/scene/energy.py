@@ -54,6 +54,10 @@ _TOP = (
     "variants",
     "variant",
 )
+#: the most areas a turning-moment diagram may give: each is drawn as a lobe with its
+#: value, lettered at its crossings and a row of the table (100000 took minutes to draw)
+MAX_AREAS = 100
+
 _MECHANISM = ("ground", "links", "input", "sliders", "points", "indicator", "masses")
 _TM_KEYS = (
     "areas",
@@ -474,6 +478,13 @@ class _CycleReader(_RimReader, _PressReader):
 
     def _areas(self, spec, t) -> Diagram:
         xs = spec["areas"]
+        if isinstance(xs, list) and len(xs) > MAX_AREAS:  # each is a lobe, a letter, a row
+            raise self.err(
+                f"{len(xs)} areas: at most {MAX_AREAS} (a book's diagram has a dozen; a "
+                "diagram read at many angles is angle = [...] and torque = [...])",
+                t,
+                "areas",
+            )
         if (
             not isinstance(xs, list)
             or len(xs) < 2

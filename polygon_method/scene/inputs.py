@@ -12,6 +12,8 @@ import re
 from ..common.errors import SceneError, printable
 from ..common.units import UNITS
 from .angles import candidates, is_book_form
+from .crank_speed import crank_speed
+from .rate_words import RATED as _RATED, slowing as _slowing
 from .records import GIVEN_KINDS, INPUT_KEYS, FixedPath, GivenRate, Input, PositionGiven, split_name
 from .tables import _suggest, _unit_at
 from .wheel_input import wheel_input
@@ -24,13 +26,6 @@ _DIRECTED = re.compile(
     re.IGNORECASE,
 )
 _WORDS = {"up": (0.0, 1.0), "down": (0.0, -1.0), "left": (-1.0, 0.0), "right": (1.0, 0.0)}
-#: a rate in a book's words, after or before its size: "2 rad/s^2 slowing down",
-#: "decelerating at 3 m/s^2", "speeding up at 1 ft/s^2"
-_RATE_WORD = r"(slowing(?: down)?|decelerating|retarding|speeding up|accelerating)"
-_RATED = (
-    re.compile(rf"^(.*?\S)\s*,?\s+{_RATE_WORD}$", re.IGNORECASE),
-    re.compile(rf"^{_RATE_WORD}\s+(?:at\s+)?(.+)$", re.IGNORECASE),
-)
 #: a sense or a way in a rate's text (refused beside "slowing down": one or the other)
 _SENSE_OR_WAY = re.compile(
     r"(^\s*[-+])|\b(cw|ccw|acw|clockwise|anticlockwise|"
@@ -143,7 +138,7 @@ class _Input:
                 key,
             )
         size = abs(self.qty(size_text, kind, table, key).value)
-        slowing = word.lower().startswith(("slow", "decel", "retard"))
+        slowing = _slowing(word)
         return (-size if slowing else size) * (1.0 if motion >= 0 else -1.0)
 
     def dead_centres(self, link, pivot, tip, ground):
@@ -299,7 +294,7 @@ class _Input:
             None
             if given_keys
             else self.rest_speed(spec["speed"])  # at rest: a bare nought needs no unit
-            or self.qty(spec["speed"], "angular_velocity", "input", "speed", need_sense=True)
+            or crank_speed(self, spec["speed"], link)
         )
         if is_book_form(spec["angle"]):  # a dead centre is passed in the crank's sense
             if given_keys and re.search(
@@ -320,6 +315,7 @@ class _Input:
                 "crank angle",
                 dead=lambda: self.dead_centres(link, pivot, tip, ground),
                 sense=None if speed is None else speed.value,
+                centres=(pivot, ground),
             )
             angle = book.value
             said = (book.words, angle, book.slips, f"crank angle: {book.note}")
@@ -704,9 +700,7 @@ class _Input:
             )
         pivot = on_ground[0]
         angle = self.qty(spec["angle"], "angle", "input.second", "angle", default_unit="deg").value
-        speed = self.qty(
-            spec["speed"], "angular_velocity", "input.second", "speed", need_sense=True
-        )
+        speed = crank_speed(self, spec["speed"], link, "input.second")
         if speed.value == 0:
             raise self.error(
                 "the second crank's speed is zero: give it, or make it part of the frame",

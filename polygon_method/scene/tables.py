@@ -10,7 +10,7 @@ import re
 from ..common.errors import SceneError
 from ..common.units import did_you_mean
 from .angles import read_angle
-from .triangle import apex
+from .triangle import apex, not_on_link, polar_points
 
 from .records import (
     CarriedPoint,
@@ -60,7 +60,7 @@ class _Tables:
         return f"{metres / self.scale():.6g} {self.unit}"
 
     def carried_points(self, index, ground):
-        table = self.table("points")
+        table = polar_points(self, self.table("points"))
         local = {}  # link key -> {point: (x, y) in the link frame, P at 0, Q at (L, 0)}
         spreads = {}  # point -> how far its place on the link may be off (m)
         out = []
@@ -148,8 +148,8 @@ class _Tables:
                 )
             (r1, d1), (r2, d2) = dist.items()
             for r in (r1, r2):
-                if r not in frame:
-                    raise self.error(f"{r} is not a point of link {link.key}", table, name)
+                if r not in frame:  # (or not yet: given below in [points])
+                    raise self.error(not_on_link(self, r, link, name, table), table, name)
             d1 = self.length(d1, table, name)
             d2 = self.length(d2, table, name)
             (x1, y1), (x2, y2) = frame[r1], frame[r2]

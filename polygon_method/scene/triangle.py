@@ -25,7 +25,12 @@ moves by ``dF / 2h`` for a change ``dF`` of ``F = h^2``, and never by more than
 
 from __future__ import annotations
 
-__all__ = ["apex", "ROUNDING"]
+import math
+
+from ..common.tolerances import SAME
+from .records import split_name
+
+__all__ = ["apex", "not_on_link", "polar_points", "ROUNDING"]
 
 #: the rounding of a length given in the scene's unit and held in metres, relative
 ROUNDING = 2.0**-52
@@ -54,3 +59,65 @@ def apex(d1: float, d2: float, e: float, rounding: float = ROUNDING):
     dh = dF**0.5 if h == 0.0 else min(dF**0.5, dF / h)
     d_along = rounding * (d1 * d1 + d2 * d2 + far * e) / e + 4 * ROUNDING * abs(along)
     return along, h, dh + d_along
+
+
+def polar_points(reader, table):
+    """``[points]`` with each point given by its distance and angle from an end of its link
+    (a coupler point as Norton and Uicker give it, "BE = 40 mm at 30 deg ccw from BC": ``E
+    = { on = "BC", from = "B", along = 40, angle = 30 }``; the angle ccw from the line from
+    ``from`` to the link's other end, or ``"30 deg cw"``) given instead by its distances
+    from the link's two ends, the second by the cosine rule in a form that does not cancel,
+    ``d2^2 = (d - L)^2 + 4 d L sin^2(a / 2)``, the triangle read ccw where the angle is
+    between 0 and 180 deg. The other points as they are."""
+    if not isinstance(table, dict) or not any(
+        isinstance(s, dict) and "angle" in s and "on" in s for s in table.values()
+    ):
+        return table
+    return {
+        name: _polar(reader, spec, name)
+        if isinstance(spec, dict) and "angle" in spec and "on" in spec
+        else spec
+        for name, spec in table.items()
+    }
+
+
+def _polar(reader, spec, name):
+    link, pts = reader.find_link(spec["on"], "points", name)
+    start = spec.get("from", pts[0])
+    if start not in link.points:
+        raise reader.error(f"from = {start!r} is not an end of {link.key}", "points", name)
+    if "along" not in spec or "distances" in spec or "turn" in spec:
+        raise reader.error(
+            "angle goes with along, the distance from the link's end named by from: "
+            '{ on = "BC", from = "B", along = 40, angle = 30 } (30 deg ccw from BC)',
+            "points",
+            name,
+        )
+    a = reader.qty(spec["angle"], "angle", "points", name, default_unit="deg", allow_sense=True)
+    d, L = reader.length(spec["along"], "points", name), link.length
+    if abs(math.sin(a.value)) < SAME:  # on the link's line: along says it
+        raise reader.error(
+            f"angle = {spec['angle']!r} puts {name} on the line of {link.key}: give along "
+            "alone (negative: beyond the start)",
+            "points",
+            name,
+        )
+    d2 = math.sqrt((d - L) ** 2 + 4 * d * L * math.sin(a.value / 2) ** 2)
+    u = reader.scale()
+    rest = {k: v for k, v in spec.items() if k not in ("along", "from", "angle")}
+    turn = "ccw" if math.sin(a.value) > 0 else "cw"
+    return {**rest, "distances": {start: d / u, link.other(start): d2 / u}, "turn": turn}
+
+
+def not_on_link(reader, point, link, name, table) -> str:
+    """Why ``point``, named in ``distances`` of ``name``, is no point of ``link``: it is
+    not, or (in ``[points]``, whose points are set out in order) not yet, being set out on
+    the link further down."""
+    spec = reader.table("points").get(point) if table == "points" else None
+    on = spec.get("on") if isinstance(spec, dict) else None
+    if isinstance(on, str) and frozenset(split_name(on)) == frozenset(link.points):
+        return (
+            f"{point} is not a point of link {link.key} yet: {point} is set out on it below "
+            f"{name} in [points]; give {point} first (a point is set out from those above it)"
+        )
+    return f"{point} is not a point of link {link.key}"

@@ -168,7 +168,7 @@ class _Variants:
         if not isinstance(value, dict) or not value:
             raise self.error(
                 f"a point's variation says what varies: {key} = {{ x = {{ from "
-                "= 95, to = 105, step = 1 }} }} (x, y, along, distances, "
+                "= 95, to = 105, step = 1 } } (x, y, along, distances, "
                 "diameter, radius, force)",
                 "variants",
                 key,
@@ -409,7 +409,7 @@ class _Variants:
         else:
             raise self.error(
                 f"{key} = {value!r}: give a range {{ from = 60, to = 75, step = "
-                "1 }} or a list [60, 65, 70]",
+                "1 } or a list [60, 65, 70]",
                 "variants",
                 where,
             )
@@ -474,8 +474,7 @@ class _Variants:
             v = spec.get(k)
             if v is None:
                 raise self.error(
-                    f"{key}: the range has no {k} (a range is {{ from = 60, to = "
-                    "75, step = 1 }})",
+                    f"{key}: the range has no {k} (a range is {{ from = 60, to = 75, step = 1 }})",
                     "variants",
                     where,
                 )

@@ -36,10 +36,9 @@ from dataclasses import replace
 from ..common.errors import AssemblyError, MobilityError, PolygonMethodError, SceneError
 from ..common.numbers import in_units, quiet
 from .completion import gas_towards_crank, given_completed, place
-from .plan import Bodies, Dims, Plan, _pin_entry
+from .plan import Bodies, Dims, Plan, _pin_entries, first_tier
 from ..scene import GuideSlider, Scene, key_line
-from ..steps import NEEDS, TIERS, Context, Crank, cylinder
-from ..steps import collar
+from ..steps import NEEDS, TIERS, Context, Crank, collar, cylinder
 from ..steps.block import BlockDriver
 from ..steps.rolling_driver import WheelDriver
 from ..steps.second_collar import second_collar
@@ -49,6 +48,8 @@ __all__ = ["compile_plan", "gruebler"]
 
 #: crank angles tried per turn for saying where a scene that cannot assemble could
 _REACH_GRID = 720
+#: an [assembly] hint in words: (the axis compared, +1 for the larger coordinate)
+_SIDES = {"above": (1, 1), "below": (1, -1), "right": (0, 1), "left": (0, -1)}
 
 
 # --------------------------------------------------------------------------- compiling
@@ -159,12 +160,6 @@ def gruebler(scene: Scene) -> int:
     return 3 * (n - 1) - 2 * j - len(scene.rolling)
 
 
-def _first_tier(scene) -> tuple:
-    """The first tier's recognisers that can find a point in ``scene`` (TIERS as it is now):
-    those that need no table, and those whose table (``steps.NEEDS``) the scene has."""
-    return tuple([r for r in TIERS[0] if (t := NEEDS.get(r)) is None or getattr(scene, t)])
-
-
 class _Compiler:
     """The constraint graph as the recognisers see it (``g`` in the steps' ``recognise``):
     the points found so far (``P``), the links and sliders already used, the bodies."""
@@ -185,16 +180,16 @@ class _Compiler:
         self.used_links = set(self._fixed)
         self.used_sliders = set()
         self.notes = []
-        self.bodies = Bodies(scene)
+        self.bodies = bodies = Bodies(scene)
         self._carried = {cp.name: cp for cp in scene.points}
-        self._sliders = {s.point: s for s in scene.sliders if not s.slot}
+        sliders = scene.sliders
+        self._sliders = {s.point: s for s in sliders if not s.slot} if sliders else {}
         self._slots = {}  # a peg's point -> its two slots
-        for s in scene.sliders:
-            if s.slot:
-                self._slots.setdefault(s.point, []).append(s)
-        self.first_tier = _first_tier(scene)
+        self._guided = {}  # link key -> slider points that slide on it
+        self._yokes = {}  # a pin -> the yoke whose slot it slides in
+        self.first_tier = first_tier(scene, TIERS[0], NEEDS)  # (TIERS as it is now)
         self._bodies_of = of = {}
-        frame = self.bodies.frame
+        frame = bodies.frame
         for lk in scene.links:
             key = lk.key
             for p in frame(key):
@@ -202,9 +197,12 @@ class _Compiler:
                     of[p].append(key)
                 else:
                     of[p] = [key]
-        self._guided = {}  # link key -> slider points that slide on it
-        self._yokes = {}  # a pin -> the yoke whose slot it slides in
-        for s in scene.sliders:
+        if not sliders:
+            return
+        for s in sliders:
+            if s.slot:
+                self._slots.setdefault(s.point, []).append(s)
+        for s in sliders:
             if isinstance(s, GuideSlider):
                 self._guided.setdefault(scene.link(s.guide).key, []).append(s.point)
             elif hasattr(s, "yoke"):
@@ -238,10 +236,10 @@ class _Compiler:
     def free(self, name):
         """(body key, its known point K, |KX|) for each unused body of ``name`` that has
         exactly one known point (none if a body has two: that is a carried point)."""
-        out = []
-        for key in self.bodies_of(name):
-            b = self.body(key)
-            known = [p for p in b if p in self.P]
+        out, frame, P = [], self.bodies.frame, self.P
+        for key in self._bodies_of.get(name, ()):
+            b = frame(key)
+            known = [p for p in b if p in P]
             if len(known) == 1 and key not in self.used_links:
                 k = known[0]
                 (kx, ky), (x, y) = b[k], b[name]
@@ -390,10 +388,13 @@ class _Compiler:
 
     def neighbours(self, name):
         out = set()
-        for key in self.bodies_of(name):
-            out.update(self.body(key))
-            out.update(self._guided.get(key, ()))
-        out.update(self._yokes.get(name, ()))
+        frame, guided = self.bodies.frame, self._guided
+        for key in self._bodies_of.get(name, ()):
+            out.update(frame(key))
+            if guided:
+                out.update(guided.get(key, ()))
+        if self._yokes:
+            out.update(self._yokes.get(name, ()))
         return out
 
     def run(self) -> Plan:
@@ -436,7 +437,7 @@ class _Compiler:
                 )
             )
         else:
-            crank = self.bodies._links.get(inp.crank) or sc.link(inp.crank)
+            crank = self.bodies.link(inp.crank)
             self.add(Crank(0, crank.key, inp.pivot, inp.tip, crank.length))
         two = inp.second
         if two is not None and two.block is not None:  # a collar sliding along the crank
@@ -491,7 +492,7 @@ class _Compiler:
             self.steps.append(st)
         self.finish()
         fixed = dict.fromkeys(self._fixed, 0.0)
-        pins = [_pin_entry(sc, pin.point) for pin in sc.pins] if sc.pins else ()
+        pins = _pin_entries(sc) if sc.pins else ()
         steps = tuple(self.steps)
         ground = dict(sc.ground)
         dims = Dims(
@@ -502,7 +503,7 @@ class _Compiler:
             inp.alpha,
             {p.point: p.radius for p in sc.pins} if sc.pins else {},
         )
-        return Plan(steps, ground, sc, tuple(self.notes), fixed, tuple(pins), dims)
+        return Plan(steps, ground, sc, tuple(self.notes), fixed, pins, dims)
 
     def _first(self, kinds, name):
         for recognise in kinds:
@@ -554,7 +555,7 @@ class _Compiler:
             d = (plus[0] - minus[0]) * ux + (plus[1] - minus[1]) * uy
             return 1.0 if d >= 0 else -1.0
         if isinstance(hint, str):
-            axis, want = {"above": (1, 1), "below": (1, -1), "right": (0, 1), "left": (0, -1)}[hint]
+            axis, want = _SIDES[hint]
             d = (plus[axis] - minus[axis]) * want
             if abs(d) <= 1e-9 * scale:
                 if default:  # level: take the right-hand one

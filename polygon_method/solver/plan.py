@@ -74,6 +74,10 @@ class Bodies:
         for cp in scene.points:
             self._carried.setdefault(cp.link, []).append(cp)
 
+    def link(self, key):
+        """The scene's link ``key`` (its own key, or its two points in either order)."""
+        return self._links.get(key) or self.scene.link(key)
+
     def frame(self, key) -> dict:
         """The points of link ``key`` in the link's own frame (its first point at the origin, its
         second on the x axis), carried points included."""
@@ -99,6 +103,24 @@ class Bodies:
         dx, dy = x2 - x1, y2 - y1
         n2 = dx * dx + dy * dy
         return (((px - x1) * dx + (py - y1) * dy) / n2, (dx * (py - y1) - dy * (px - x1)) / n2)
+
+
+def first_tier(scene: Scene, tier: tuple, needs: dict) -> tuple:
+    """The recognisers of ``tier`` that can find a point in ``scene``: those that need no
+    table, and those whose table (``needs``, ``steps.NEEDS``) the scene has. Kept by the
+    tier, the needs (their identity and number) and which of those tables the scene lacks."""
+    key = (id(tier), id(needs), not scene.points, not scene.sliders, not scene.rolling)
+    hit = _TIERS_KEPT.get(key)
+    if hit is not None and hit[0] is tier and hit[1] is needs and hit[2] == len(needs):
+        return hit[3]
+    out = tuple([r for r in tier if (t := needs.get(r)) is None or getattr(scene, t)])
+    if set(needs.values()) <= {"points", "sliders", "rolling"}:  # (the tables of the key)
+        _TIERS_KEPT[key] = (tier, needs, len(needs), out)
+    return out
+
+
+#: ``first_tier``'s answers: (tier, needs, their number, the recognisers) by its key
+_TIERS_KEPT: dict = {}
 
 
 # --------------------------------------------------------------------------- dimensions
@@ -451,10 +473,35 @@ def _bodies_at(sc, point) -> tuple:
     return tuple(out)
 
 
-def _pin_entry(sc, point) -> tuple:
+def _pin_entries(sc) -> tuple:
+    """Each sized pin's entry in the plan (:func:`_pin_entry`), in the order of
+    ``sc.pins``; the bodies at the pins of a scene of links and carried points alone found
+    in one pass over them (as :func:`_bodies_at` finds them pin by pin, in its order)."""
+    if sc.cylinders or sc.sliders:
+        return tuple([_pin_entry(sc, pin.point) for pin in sc.pins])
+    ground = sc.ground
+    at = {pin.point: [("ground", None)] if pin.point in ground else [] for pin in sc.pins}
+    for lk in sc.links:
+        p, q, key = lk.p, lk.q, lk.key
+        if p in at:
+            at[p].append((key, key))
+        if q in at and q != p:
+            at[q].append((key, key))
+    carried = set()
+    for cp in sc.points:  # the first carried point of each name (as sc.carried finds it)
+        name = cp.name
+        if name in at and name not in carried:
+            carried.add(name)
+            at[name].append((cp.link, cp.link))
+    return tuple([_pin_entry(sc, pin.point, tuple(at[pin.point])) for pin in sc.pins])
+
+
+def _pin_entry(sc, point, joined=None) -> tuple:
     """A pin's entry in the plan: (point, the bodies it joins, their links or None, each
-    pair's "a|b" key, the pairs' (i, j), the pairs' links)."""
-    joined = _bodies_at(sc, point)
+    pair's "a|b" key, the pairs' (i, j), the pairs' links). ``joined``: the bodies at the
+    pin, where they are known (:func:`_bodies_at`)."""
+    if joined is None:
+        joined = _bodies_at(sc, point)
     if len(joined) == 2:  # (the usual pin: two bodies, one pair)
         (a, la), (b, lb) = joined
         return (point, (a, b), (la, lb), (f"{a}|{b}",), ((0, 1),), ((la, lb),))

@@ -40,18 +40,18 @@ def _image(px, py, qx, qy, lam, mu):
 
 def recognise(g, name):
     """A body of ``name`` with two known points."""
-    sc = g.scene
-    cp = g.carried(name)
+    P, frame = g.P, g.bodies.frame
     for key in g.bodies_of(name):
-        b = g.body(key)
+        b = frame(key)
         if len(b) == 2:  # a plain link: its other end alone is no second known point
             continue
-        known = [p for p in b if p in g.P]
+        known = [p for p in b if p in P]
         if len(known) >= 2:
-            lk = sc.link(key)
+            lk = g.bodies.link(key)
+            cp = g.carried(name)
             if key not in g.used_links and name in lk.points:
                 continue  # both ends known, the link unused: redundant, reported later
-            ends = [p for p in lk.points if p in g.P]
+            ends = [p for p in lk.points if p in P]
             refs = ends if len(ends) == 2 else known[:2]
             how = cp.how if cp is not None and cp.link == key else ""
             lam, mu = g.bodies.coefficients(key, refs[0], refs[1], name)
