@@ -93,6 +93,8 @@ def _magnitude(sol, side):
         return m.mass * math.hypot(*a)
     if side.what == "guide":
         return abs(next(g.normal for g in f.guides if g.point == side.point))
+    if side.what == "driver" and f.driver == "block":  # the driving force along its guide
+        return abs(f.input_torque)
     if side.what == "contact":  # a rolling contact's force (the teeth's load), either body
         c = next(c for c in f.contacts if {c.wheel, c.by} == {side.on, side.by})
         # its parts: normal to the contact (n), along it (t)
