@@ -1,5 +1,5 @@
 """Force polygons of every kind of group the force analysis solves: a triad (a class-III
-group: the plate's polygon and each loaded link's), gears and planets, racks, the driving
+group: the plate's polygon and each loaded link's; a plate of three links, its sides' too), gears and planets, racks, the driving
 wheel, a wheel's centre on a line, the Scotch yoke, a peg in two slots, the slotted lever, a
 driving block and a hydraulic cylinder, as well as the dyads, sliders and cranks the sheet
 drew before.
@@ -348,9 +348,48 @@ def triad_two_force_links():
     )
 
 
+def _three_links(text):
+    from test_triad_three_links import PINS
+
+    sol = solve(parse_scene(text))
+    P = sol.P
+    mat = Ref(sol, ["OA", "AB", "BC", "CD", "DB", "EC", "FD"], {"C": "BC", "D": "CD"})
+    for point, on, by in PINS:  # (two pins at each corner: one per pair of bodies)
+        mat.pin(f"{point} {on} {by}", P[point], on, by, point=point)
+    mat.couple("T", "OA")
+    return sol, mat.forces(mat.solve())
+
+
+def triad_three_links():
+    """A class-III group whose plate is three links (BC, CD, DB pinned in a triangle, hung
+    from AB, EC, FD): every body massive, gravity, loads at C and D, a couple on CD
+    (tests/test_triad_three_links.py's scene at 110 deg). Its polygons: the triangle's as
+    one plate, each hanging link's, the sides BC and CD as a dyad about C, and DB's."""
+    from test_triad_three_links import scene_text
+
+    return _three_links(scene_text(110.0))
+
+
+def triad_three_links_bare_side():
+    """The same with the third side DB carrying nothing (a two-force member between B and
+    D: its two forces equal and opposite along it, no polygon of its own), nor the rockers."""
+    from test_triad_three_links import ROOT as TOP
+
+    text = (TOP / "tests" / "textbook" / "class3_triangle_plate.toml").read_text()
+    return _three_links(
+        text.replace("angle = 30", "angle = 250") + "[masses]\n"
+        "AB = { mass = 1.1, along = 55, gyration = 35 }\n"
+        'BC = { mass = 0.8, distances = { B = 45, C = 45 }, turn = "ccw", gyration = 25 }\n'
+        "CD = { mass = 0.7, along = 35, gyration = 22 }\n"
+        "[loads]\nC = { force = [15, -40] }\nD = { force = [-10, 5] }\n"
+    )
+
+
 CASES = [
     triad,
     triad_two_force_links,
+    triad_three_links,
+    triad_three_links_bare_side,
     gear_pair,
     planet_on_a_sun,
     two_racks,

@@ -136,5 +136,8 @@ def test_the_views_give_it(tmp_path, capsys):
     assert main(["steps", str(scene)]) == 0
     steps = " ".join(capsys.readouterr().out.split())
     assert "the plate's sides: BC's moments about B and CD's about D" in steps
+    for whose in ("BC and CD and DB", "AB", "EC", "FD", "BC and CD", "DB"):  # (in this order)
+        assert f"force polygon of {whose} at " in steps, whose
+        steps = steps[steps.index(f"force polygon of {whose} at ") + 1 :]
     sol = solve(load_scene(scene))
     assert sol.to_dict()["forces"] is not None

@@ -35,7 +35,7 @@ along link 1's line, is held by link 1 alone:
 from __future__ import annotations
 
 from ..steps.rounding import largest, vhypot
-from .bodies import Singular, any_zero, cross, least
+from .bodies import Singular, any_zero, cross, least, outer_pin, unit
 from ..common.numbers import fmt
 from .records import ForcePolygon, ForceStep, PinForce, Side
 
@@ -145,12 +145,15 @@ def step(st, P, led, own):
             )
     drawing = None
     if st.sides:  # the triangle's own pins, from its sides' moments
+        knowns = knowns[:1] + tuple(led.known(k) for k, _, _ in st.sides) + knowns[1:]
         cond = least(cond, _sides(st, P, led, pins, found, eq))
-    elif isinstance(a1, float):
+    if isinstance(a1, float):
         parts = tuple(zip((a1, a2, a3), b, e, n))
+        at_k = [p.force for p in pins[1:6:2]]
+        mid = tuple(p.force for p in pins[6:])  # (a plate of three links: V2's, V1's, V3's)
 
         def drawing():
-            return polygons(st, P, own, parts, knowns, [p.force for p in pins[1::2]])
+            return polygons(st, P, own, parts, knowns, at_k, mid)
 
     rec = ForceStep(
         st.index,
@@ -205,40 +208,83 @@ def _sides(st, P, led, pins, found, eq):
     return cond
 
 
-def polygons(st, P, own, parts, knowns, at_k):
+def polygons(st, P, own, parts, knowns, at_k, mid=()):
     """The triad's force polygons, as a book draws a class-III group's: the plate's (its
     known forces, then each link's force on it at its vertex, the part across the link
     from the link's moments about K_i and the part along it from the 3x3 solve, whose
     direction lines are drawn; it closes on the pole), then each link's that carries
     forces of its own or a couple (the plate's force on it across and along it, its known
     forces, the force at K_i closing it; a link carrying nothing is a two-force member, its
-    force along it, and has none). ``parts``: (a_i, b_i, e_i, n_i) per link; ``knowns``:
-    the plate's and each link's known forces (:class:`Side` s); ``at_k``: the force on each
-    link at K_i. Returns (polygon, unknown, chords, every :class:`ForcePolygon`)."""
+    force along it, and has none). A plate of three links: the first polygon is the
+    triangle's as one plate (its three sides' known forces), and after the links' come its
+    sides' (:func:`_side_polygons`). ``parts``: (a_i, b_i, e_i, n_i) per link; ``knowns``:
+    the plate's (then each other side's) and each link's known forces (:class:`Side` s);
+    ``at_k``: the force on each link at K_i; ``mid``: a plate of three links' pin forces
+    between its sides (on S_1 at V_2 by S_2, on S_1 at V_1 by S_3, on S_2 at V_3 by S_3).
+    Returns (polygon, unknown, chords, every :class:`ForcePolygon`)."""
     plate = st.plate
-    sides, unknown, chords = list(knowns[0]), [], []
-    links = []
+    vown = owns(st)
+    nplate = 1 + len(st.sides)
+    sides, unknown, chords = [s for k in knowns[:nplate] for s in k], [], []
+    links, hung = [], []
     for (a, b, (ex, ey), (nx, ny)), lk, K, V, known, fk in zip(
-        parts, st.links_, st.knowns, st.points, knowns[1:], at_k
+        parts, st.links_, st.knowns, st.points, knowns[nplate:], at_k
     ):
-        at = P[V]
+        at, on = P[V], vown[V]
         across, along = (b * nx, b * ny), (a * ex, a * ey)
         whole = (across[0] + along[0], across[1] + along[1])
         k = len(sides)  # on the plate: the link's force back, across and along the link
         sides += [
-            Side("pin", plate, lk, V, (-across[0], -across[1]), at, "t"),
-            Side("pin", plate, lk, V, (-along[0], -along[1]), at, "n"),
+            Side("pin", on, lk, V, (-across[0], -across[1]), at, "t"),
+            Side("pin", on, lk, V, (-along[0], -along[1]), at, "n"),
         ]
         unknown.append((k + 1, (ex, ey)))
-        chords.append((Side("pin", plate, lk, V, (-whole[0], -whole[1]), at), k, k + 2))
+        hung.append(Side("pin", on, lk, V, (-whole[0], -whole[1]), at))
+        chords.append((hung[-1], k, k + 2))
         if known or b != 0:
             poly = (
-                Side("pin", lk, plate, V, across, at, "t"),
-                Side("pin", lk, plate, V, along, at, "n"),
+                Side("pin", lk, on, V, across, at, "t"),
+                Side("pin", lk, on, V, along, at, "n"),
                 *known,
                 Side("pin", lk, own[K], K, fk, P[K]),
             )
-            read = ((Side("pin", lk, plate, V, whole, at), 0, 2),) if known else ()
+            read = ((Side("pin", lk, on, V, whole, at), 0, 2),) if known else ()
             links.append(ForcePolygon((lk,), poly, (), read))  # (no known: F_K the whole)
-    main = ForcePolygon((plate,), tuple(sides), tuple(unknown), tuple(chords))
-    return main.polygon, main.unknown, main.chords, (main, *links)
+    bodies = (plate,) + tuple(k for k, _, _ in st.sides)
+    main = ForcePolygon(bodies, tuple(sides), tuple(unknown), tuple(chords))
+    more = _side_polygons(st, P, dict(zip(bodies, knowns)), hung, mid) if st.sides else ()
+    return main.polygon, main.unknown, main.chords, (main, *links, *more)
+
+
+def _side_polygons(st, P, known, hung, mid):
+    """A plate of three links' own polygons, drawn as the dyad S_1, S_2 about V_2 is (its
+    solve): the two sides' known forces and the hanging links' forces on them (found
+    before, now known), S_3's forces on them at V_1 and V_3, each split along its side
+    (V_1 V_2, V_3 V_2: their direction lines meet where it closes) and square to it (from
+    the side's moments about V_2), the force at V_2 between them read across; then S_3's
+    (its known forces and the other two sides' on it: two alone, equal and opposite
+    along it, where it carries none)."""
+    V1, V2, V3 = st.points
+    s1 = st.plate
+    (s2, _, _), (s3, _, _) = st.sides
+    X1, X2, X3 = P[V1], P[V2], P[V3]
+    p, f1, f3 = mid
+    k1 = known[s1] + tuple(h for h in hung if h.on == s1)
+    k2 = known[s2] + tuple(h for h in hung if h.on == s2)
+    whole1, whole3 = Side("pin", s1, s3, V1, f1, X1), Side("pin", s2, s3, V3, f3, X3)
+    n1, t1 = outer_pin(whole1, X1, X2)
+    n3, t3 = outer_pin(whole3, X3, X2)
+    poly = (n1, t1) + k1 + k2 + (t3, n3)
+    k = len(poly)
+    middle = (Side("pin", s1, s2, V2, p, X2), 2 + len(k1), 0)
+    pair = ForcePolygon(
+        (s1, s2),
+        poly,
+        ((0, unit(X1, X2)), (k - 1, unit(X3, X2))),
+        ((whole1, 0, 2), middle, (whole3, k - 2, k)),
+    )
+    back = (
+        Side("pin", s3, s1, V1, (-f1[0], -f1[1]), X1),
+        Side("pin", s3, s2, V3, (-f3[0], -f3[1]), X3),
+    )
+    return pair, ForcePolygon((s3,), known[s3] + back)

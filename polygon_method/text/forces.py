@@ -284,6 +284,15 @@ def bound_lines(sol, f) -> list:
 
 
 #: what each kind of force step does, as its paragraph says it
+#: a triad whose plate is three links: its sides' polygons after the links'
+_TRIANGLE = (
+    "The plate's three links: the first polygon is the triangle's as one plate; after the "
+    "links' come the first two sides' together, as a dyad's about their common pin (the "
+    "hanging links' forces on them now known, the third side's forces on them split along "
+    "each side and square to it: their lines meet where it closes, the pin between them "
+    "read across), and the third side's (two forces alone, equal and opposite along it, "
+    "where it carries nothing of its own)"
+)
 _STEP_HEADS = {
     "dyad": "moments of each link about its other end give the pin force between them; each "
     "link's force balance its end's",
@@ -492,6 +501,8 @@ def _step_blocks(st, f, scale, F, M, bounds) -> list:
             else f"estimated error of these forces: {NO_BOUND}"
         )
     head = _STEP_HEADS.get(st.kind, "")
+    if st.kind == "triad" and len(st.bodies) == 6:  # (a plate of three links)
+        head += f". {_TRIANGLE}"
     return [("p", f"Step {st.index + 1}, {st.title}: {head}."), ("list", items)]
 
 
