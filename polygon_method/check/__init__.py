@@ -61,6 +61,8 @@ _MAGNITUDES = {
     "F": "a pin force's size",
     "N": "a guide's normal force's size",
     "Fc": "a contact force's size",
+    "Tmax": "a largest torque",
+    "Pmax": "a largest power",
     "vu": "a speed",
     "au": "an acceleration's size",
     "Fi": "an inertia force's size",
@@ -169,7 +171,7 @@ def _verdict(sol: Solution, ans, tolerance, tols, diag, clean: list) -> Verdict:
     kind = ans.kind
     exact = _exact(sol, ans, clean)
     signed = ans.sense is not None or ans.value < 0
-    if kind in ("v", "a", "ac", "rub", "F", "N", "Fc", "vu", "au", "Fi", "h"):
+    if kind in ("v", "a", "ac", "rub", "F", "N", "Fc", "vu", "au", "Fi", "h", "Tmax", "Pmax"):
         signed = False
     given = ans.value if signed else abs(ans.value)
     correct = exact if signed else abs(exact)

@@ -32,6 +32,8 @@ def force_slips(d, kind, names, signed):
             return f.input_torque
         if kind in ("torque2", "force2"):
             return f.second_torque
+        if kind in ("Tmax", "Pmax"):
+            return force_value(f, kind, sc.link("-".join(names)).key)
         return force_value(f, kind, rolling_body(sc, names) if kind == "Fc" else names[0])
 
     def again(words, code, **changes):

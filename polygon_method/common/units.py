@@ -215,6 +215,8 @@ ANSWER_UNITS = {
     "F": "N",
     "N": "N",
     "Fc": "N",
+    "Tmax": "N m",
+    "Pmax": "W",
     "vu": "m/s",
     "au": "m/s^2",
     "Fi": "N",

@@ -50,6 +50,7 @@ from . import (
     driver,
     dyad,
     friction,
+    grip,
     peg,
     rack,
     rolling,
@@ -315,6 +316,7 @@ def _long(motion, fp, fric=()) -> tuple:
                 file=scene.file,
             ) from None
     pins, guides, steps, torque, second, contacts = _walk(scene, plan, motion.P, led, own)
+    contacts = grip.attach(contacts, motion, plan)  # a friction drive's: holds or slips
     fx, fy, m = led.of(FRAME)  # the drivers' reactions are the frame's too
     if driving is not None:
         name, kind, effort = driving.key, driving.kind, led.given[driving.key]

@@ -11,6 +11,8 @@ import math
 from dataclasses import dataclass, field
 from functools import cached_property
 
+from .grip import json as grip_json, words as grip_words
+
 
 FRAME = "frame"
 
@@ -120,6 +122,8 @@ class Contact:
     teeth: float | None = None
     #: whether the scene states the pressure angle (False: the default, 20 deg)
     stated: bool = True
+    #: a friction drive's (mu or None, N pressing, r, R or None, v or None): :mod:`.grip`
+    grip: tuple | None = None
 
     couple = 0.0
 
@@ -147,8 +151,8 @@ class Contact:
         over a sweep) where the wheel would lift off, and for gear teeth."""
         if self.teeth is not None:
             return None
-        n, t = self.normal, self.tangential
-        if not isinstance(n, float):  # a sweep: where it lifts off, no number
+        n, t = self.normal if self.grip is None else self.grip[1], self.tangential
+        if not isinstance(t, float):  # a sweep: where it lifts off, no number
             import numpy as np
 
             return np.where(n > 0, np.abs(t) / np.where(n > 0, n, 1.0), np.inf)
@@ -171,6 +175,8 @@ class Contact:
                 f"part along the tangent {abs(self.tangential):.4g} N, pushing the teeth "
                 f"apart {self.normal:.4g} N)"
             )
+        if self.grip is not None:  # a friction drive (or a stated mu): holds or slips
+            return grip_words(self)
         mu = self.required_friction
         if mu is None:
             return (
@@ -532,6 +538,7 @@ def _contact_dict(c: Contact) -> dict:
     }
     if c.teeth is None:
         d["required_friction"] = c.required_friction
+        d.update(grip_json(c))
     else:
         d.update(
             pressure_angle=math.degrees(c.teeth),

@@ -72,15 +72,16 @@ def pressure_angle(st) -> tuple:
     return (DEFAULT_PRESSURE_ANGLE, False) if a is None else (a, True)
 
 
-def solve(cx, cy, known, r, m, phi, apart=1.0):
+def solve(cx, cy, known, r, m, phi, apart=1.0, preload=None):
     """(N along m, T along t = perp(m), the contact force F on the wheel at I = C - r m, the
     force F_C on the wheel at its centre); floats, or arrays over a sweep. ``apart``: +1
     where the teeth's push points towards the wheel's centre (m), -1 for a ring (an
-    internal gear: the gear inside pushes it outwards)."""
+    internal gear: the gear inside pushes it outwards). ``preload``: a friction drive's,
+    pressing the two apart with it instead of the teeth (``phi`` unused)."""
     fx, fy, mo = known
     mx, my = m
     t = (mo - cross(cx, cy, fx, fy)) / r
-    n = apart * abs(t) * math.tan(phi)
+    n = apart * (abs(t) * math.tan(phi) if preload is None else preload + 0.0 * t)
     ffx, ffy = n * mx - t * my, n * my + t * mx
     return n, t, (ffx, ffy), (-(fx + ffx), -(fy + ffy))
 
@@ -116,16 +117,20 @@ def step(st, P, led, own):
     r = st.dims[1]
     (ix, iy), m = contact_frame(st, P)
     phi, stated = pressure_angle(st)
-    n, t, F, FC = solve(cx, cy, kw, r, m, phi, -1.0 if getattr(st, "ring", False) else 1.0)
+    preload = st.grip[0] if st.grip else None
+    apart = -1.0 if getattr(st, "ring", False) else 1.0
+    n, t, F, FC = solve(cx, cy, kw, r, m, phi, apart, preload)
     base = FRAME if st.on == "circle" else st.base
     oc = own[C]
-    contact = Contact(W, (ix, iy), n, t, m, base, phi, stated)
+    contact = Contact(W, (ix, iy), n, t, m, base, None if preload else phi, stated)
     known = led.known(W)
     led.add(
         base, -F[0], -F[1], ix, iy, side=Side("contact", base, W, "I", (-F[0], -F[1]), (ix, iy))
     )
     led.add(oc, -FC[0], -FC[1], cx, cy, side=Side("pin", oc, W, C, (-FC[0], -FC[1]), (cx, cy)))
     eq, drawing = (), None
+    if preload is not None:
+        return _grip_step(st, P, contact, kw, known, F, FC, oc, base)
     if isinstance(t, float):
 
         def drawing():
@@ -164,6 +169,48 @@ def step(st, P, led, own):
                 "along the line of action)",
                 F,
             ),
+            (f"F_{C} on {W} by {'the frame' if oc == FRAME else oc}", FC),
+        ),
+        1.0,
+        "",
+        eq,
+        drawing,
+    )
+    return (PinForce(C, W, oc, FC),), (contact,), rec, None
+
+
+def _grip_step(st, P, contact, kw, known, F, FC, oc, base):
+    """A friction drive's step: the preload across, the wheel's moments along the tangent,
+    the centre's pin closing its polygon (every side known but that one)."""
+    W, C = st.wheel, st.centre
+    (cx, cy), (ix, iy), t, r = P[C], contact.point, contact.tangential, st.dims[1]
+    by = "the fixed circle" if base == FRAME else base
+    eq, drawing = (), None
+    if isinstance(t, float):
+
+        def drawing():
+            grip = Side("contact", W, base, "I", F, (ix, iy))
+            return (grip,) + known + (Side("pin", W, oc, C, FC, (cx, cy)),), (), ()
+
+        mc = kw[2] - cross(cx, cy, kw[0], kw[1])
+        eq = (
+            f"{W} and {by} grip by friction, pressed together with the preload: the normal "
+            f"force at the contact N = {fmt(st.grip[0])} N (what the mechanism adds along "
+            "the line of centres goes into the centres' pins)",
+            f"moments of {W} about its centre {C} (the pin force there has no arm): "
+            f"M_{C} - r T = 0, M_{C} = {fmt(mc)} N m the known forces', r = {fmt(r)} m: "
+            f"T = M_{C} / r = {fmt(t)} N (along the common tangent)",
+            f"forces on {W}: F_{C} = -(the known forces + the contact's) = "
+            f"({fmt(FC[0])}, {fmt(FC[1])}) N",
+        )
+    rec = ForceStep(
+        st.index,
+        "rolling",
+        st.title,
+        (W,),
+        (kw,),
+        (
+            (f"F_I on {W} by {by} (the grip: the preload across, T along the tangent)", F),
             (f"F_{C} on {W} by {'the frame' if oc == FRAME else oc}", FC),
         ),
         1.0,

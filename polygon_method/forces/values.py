@@ -1,10 +1,11 @@
 """The size of what a force answer key names (``F_B``, ``N_B``, ``Fc_L``, ``Fi_L``, ``Ci_L``,
-``h_L``), and a driver's effort but the crank's torque (``force``, ``torque2``, ``force2``),
-read from a :class:`~.records.Forces`."""
+``h_L``, ``Tmax_L``, ``Pmax_L``), and a driver's effort but the crank's torque (``force``,
+``torque2``, ``force2``), read from a :class:`~.records.Forces`."""
 
 from __future__ import annotations
 
 from ..common.errors import SceneError
+from .grip import value as drive_value
 from .records import Forces
 
 
@@ -16,6 +17,8 @@ def force_value(f: Forces, kind: str, name: str) -> float:
     (a link's key, or ``block X``): ``Fi`` its inertia force's size ``m |a_G|``, ``Ci`` its
     inertia couple ``-I alpha`` (signed, ccw positive), ``h`` the offset ``|I alpha| / (m
     |a_G|)`` of the book's single force from G (0 where the body has no couple)."""
+    if kind in ("Tmax", "Pmax"):  # a friction drive's largest torque, power
+        return drive_value(f.contacts, kind, name)
     if kind == "Fc":
         c = next((c for c in f.contacts if c.wheel == name), None)
         if c is None:

@@ -203,6 +203,10 @@ class _Reducer:
         yield "shake_moment", "N m", b(f.shaking_moment), "shaking moment about O, ccw +"
         for g in f.guides:
             yield f"N_{g.point}", "N", b(g.normal), "guide's normal force, signed"
+        from ..forces.grip import margins  # lazy, as in `force_quantities`
+
+        for name, unit, v, what in margins(f):  # a friction drive: its worst angle
+            yield name, unit, b(v), what
         for p in f.pins:
             yield (
                 f"F_{p.point}_{p.on}_{p.by}".replace(" ", ""),
@@ -353,6 +357,10 @@ class _Reducer:
             for nm, u, mx, tmx, mn, tmn, what in rows
         )
         rng = None if dom.full_turn else (deg(dom.lo), deg(dom.hi))
+        if any(e.name.startswith("grip_") for e in extremes):  # a friction drive's verdict
+            from ..forces.grip import sweep_notes
+
+            notes += sweep_notes(extremes)
         return Summary(
             self.scene,
             requested,

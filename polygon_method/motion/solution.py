@@ -440,9 +440,11 @@ class Solution(Motion):
             from ..forces import effort_value  # lazy, as in `forces`
 
             return effort_value(self.forces, kind)
-        if kind in ("F", "N", "Fc", "Fi", "Ci", "h"):
+        if kind in ("F", "N", "Fc", "Fi", "Ci", "h", "Tmax", "Pmax"):
             from ..forces import force_value  # lazy, as in `forces`
 
+            if kind in ("Tmax", "Pmax"):  # a friction drive's wheel, or the gear it grips
+                names = (self.scene.link("-".join(names)).key,)
             return force_value(
                 self.forces, kind, rolling_body(self.scene, names) if kind == "Fc" else names[0]
             )

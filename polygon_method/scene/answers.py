@@ -243,11 +243,34 @@ class _Answers:
             best = suggest(key, keys)
         return f" (did you mean '{best}'?)" if best is not None and best != written else ""
 
+    def _drive(self, key, prefix, rest, names):
+        """``Tmax_L``, ``Pmax_L``: L a wheel of ``[rolling]`` whose grip states ``friction``
+        (``Tmax``: or the gear it grips; ``Pmax``: not on a line, whose contact does not move)."""
+        lk = self.index.get(frozenset(names)) if len(names) == 2 else None
+        pairs = [r for r in getattr(self, "rolling_pairs", ()) or () if r.grip and r.grip[1]]
+        if prefix == "Pmax":
+            pairs = [r for r in pairs if r.on != "line"]
+        if lk is None or not any(
+            lk.key in (r.wheel, r.base if prefix == "Tmax" else None) for r in pairs
+        ):
+            raise self.error(
+                f"{key}: {rest} is no wheel of a friction drive (a wheel of [rolling] with "
+                "friction = mu"
+                + (
+                    ", not on a line: its contact does not move)"
+                    if prefix == "Pmax"
+                    else ", or the gear it grips)"
+                ),
+                "answers",
+                key,
+            )
+
     def answer(self, key, value, known, slider_names, pin_names, loads):
         line = self.line_of("answers", key)
         forces = getattr(self, "scene_forces", None)  # an answer file: its scene's
         if forces is None:
             forces = "masses" in self.raw or "gravity" in self.raw or "indicator" in self.raw
+            forces = forces or any(r.grip for r in getattr(self, "rolling_pairs", ()) or ())
         hint = lambda: self.key_hint(key, known, slider_names, pin_names, loads)  # noqa: E731
         read = decimal_comma(value)
         if read is None:
@@ -327,14 +350,15 @@ class _Answers:
                 "a_X, v_XY, a_XY, omega_L, alpha_L, vs_X, as_X, ac_X, rub_X, "
                 "torque, force, torque2, force2 (the drivers' efforts), I_ij (a centre), "
                 "vI_L, aI_L (a wheel's contact point), "
-                "F_X, N_X, Fi_L, Ci_L, h_L, Fc_L (forces), piston_effort, crank_effort, "
+                "F_X, N_X, Fi_L, Ci_L, h_L, Fc_L (forces), Tmax_L, Pmax_L (a friction "
+                "drive's largest torque and power), piston_effort, crank_effort, "
                 "turning_moment, rod_thrust, side_thrust, shaking_force, shaking_moment, "
                 "T_mean, dE_max, I_flywheel, m_flywheel (the force and engine chapters)",
                 "answers",
                 key,
             )
         kind, what, sense_ok = ANSWER_KINDS[prefix]
-        if what in ("pin_force", "guide", "body", "contact") and not forces:
+        if what in ("pin_force", "guide", "body", "contact", "drive") and not forces:
             raise self.error(
                 f"{key}: a force answer needs the force analysis: give [masses] or [gravity]",
                 "answers",
@@ -419,6 +443,8 @@ class _Answers:
                     "answers",
                     key,
                 )
+        elif what == "drive":  # a friction drive's wheel (or the gear it grips), mu stated
+            self._drive(key, prefix, rest, names)
         elif what == "body":  # a link, or the block at a slider's point
             if rest in slider_names or (len(names) == 1 and names[0] in slider_names):
                 names = (f"block {slider_names[rest].point if rest in slider_names else rest}",)

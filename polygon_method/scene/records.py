@@ -75,8 +75,9 @@ ANSWER_KINDS = {
     "Fi": ("force", "body", False),
     "Ci": ("torque", "body", True),
     "h": ("length", "body", False),
-    # the contact force's size at rolling wheel L (a tooth load; a rack by its point)
-    "Fc": ("force", "contact", False),
+    "Fc": ("force", "contact", False),  # rolling wheel L's contact force (a rack: its point)
+    "Tmax": ("torque", "drive", False),  # a friction drive's largest torque on L, mu N r
+    "Pmax": ("power", "drive", False),  # and the largest power through its grip, mu N v
 }
 #: the answer kinds of the guide's point under a block (``v_A1``, ``a_A1``: its image a1)
 UNDER_BLOCK_KINDS = {"v": "vu", "a": "au"}
@@ -262,23 +263,20 @@ class GivenRate:
 @dataclass(frozen=True)
 class RollingPair:
     """A wheel or gear rolling without slip: link ``wheel`` from its centre ``centre`` to
-    the point ``rim`` on it, rolling (pitch) radius ``radius`` (m), on one of
-
-    - a fixed line (``on = "line"``) through ``through`` along unit ``u``, the wheel on the
-      side of unit normal ``m`` (from the line towards the centre);
-    - a fixed circle (``on = "circle"``) about ground point ``base_centre``;
-    - a gear (``on = "gear"``): link ``base`` turning about its ground end ``base_centre``;
-    - a rack (``on = "rack"``): the block ``rim`` on a fixed path (its pitch line), meshing
-      with the gear ``base`` (``wheel`` is the block's point, ``centre`` None).
-
-    ``inside``: the wheel rolls inside the circle (a ring, an internal gear).
-    ``ring``: the wheel is itself a ring (an internal gear) about its centre, the gear it
-    meshes with inside it (``inside`` is then true as well: the pair meshes internally).
-    ``base_radius``: the circle's radius as the problem states it (None: from the centre
-    distance). ``angle``: the direction centre -> rim (rad) at the scene's crank angle
-    (None: towards the contact point). ``label``: the line or circle in words.
-    ``pressure_angle``: the teeth's pressure angle (rad) a gear, circle or rack states (None:
-    the default, 20 deg): the tooth load's line of action.
+    the point ``rim`` on it, rolling (pitch) radius ``radius`` (m), on a fixed line (``on =
+    "line"``) through ``through`` along unit ``u``, the wheel on the side of unit normal
+    ``m`` (from the line towards the centre); a fixed circle (``on = "circle"``) about
+    ground point ``base_centre``; a gear (``on = "gear"``): link ``base`` turning about its
+    ground end ``base_centre``; a rack (``on = "rack"``): the block ``rim`` on a fixed path
+    (its pitch line), meshing with the gear ``base`` (``wheel`` the block's point, ``centre``
+    None). ``inside``: the wheel rolls inside the circle (a ring, an internal gear). ``ring``:
+    the wheel is itself a ring (an internal gear) about its centre, the gear it meshes with
+    inside it (``inside`` is then true as well: the pair meshes internally). ``base_radius``:
+    the circle's radius as the problem states it (None: from the centre distance).
+    ``angle``: the direction centre -> rim (rad) at the scene's crank angle (None: towards
+    the contact point). ``label``: the line or circle in words. ``pressure_angle``: the
+    teeth's pressure angle (rad) a gear, circle or rack states (None: the default, 20 deg).
+    ``grip``: a friction drive's (preload N or None, friction coefficient or None), or None.
     """
 
     wheel: str
@@ -297,6 +295,7 @@ class RollingPair:
     angle: float | None = None
     ring: bool = False
     pressure_angle: float | None = None
+    grip: tuple | None = None
 
 
 @dataclass(frozen=True)
@@ -629,9 +628,10 @@ class Scene:
 
     @property
     def has_forces(self) -> bool:
-        """Whether the scene asks for the force analysis: masses, gravity or friction."""
+        """Whether the scene asks for the force analysis: masses, gravity, friction, a grip."""
         asked = (self.gravity, self.indicator, self.friction)  # statics: an empty [masses]
-        return bool(self.masses) or self.statics or any(x is not None for x in asked)
+        grip = any(r.grip for r in self.rolling)  # a friction drive's grip: its statics
+        return bool(self.masses) or self.statics or grip or any(x is not None for x in asked)
 
     def rolling_of(self, point: str):
         """The rolling pair whose wheel has ``point`` as its rim point, or None."""

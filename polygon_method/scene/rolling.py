@@ -21,6 +21,9 @@ crank angle (default: towards the contact point); ``side`` which side of a line 
 is on (``above`` by default, ``right`` of a vertical line). ``pressure_angle`` (a gear, a
 planet on a circle, a rack): the teeth's pressure angle, which sets the tooth load's line
 of action in the force analysis (default 20 deg; 0 for a tangential force alone).
+``preload`` (a circle or a gear): a friction drive, the wheels pressed together with this
+force and gripping by friction (no teeth); ``friction``: the coefficient at the contact (a
+line's wheel too), whether it slips (:func:`_grip`).
 """
 
 from __future__ import annotations
@@ -40,6 +43,8 @@ _KEYS = (
     "side",
     "ring",
     "pressure_angle",
+    "preload",
+    "friction",
 )
 _SIDES = ("above", "below", "left", "right")
 
@@ -66,6 +71,56 @@ def _pressure_angle(rd, spec, key):
             key,
         )
     return a
+
+
+def _grip(rd, spec, key, line):
+    """A friction drive's (preload N or None, friction coefficient or None), or None where
+    the pair states neither: on a line mu alone (the statics give the ground's push), on a
+    circle or a gear the preload (and mu), never with teeth."""
+    if "preload" not in spec and "friction" not in spec:
+        return None
+    mu = spec.get("friction")
+    if mu is not None and (
+        isinstance(mu, bool) or not isinstance(mu, (int, float)) or not 0 < mu < 1
+    ):
+        raise rd.error(
+            f"friction = {mu!r}: the coefficient of friction at the contact, a number "
+            "above 0 and below 1",
+            "rolling",
+            key,
+        )
+    if line:
+        if "preload" in spec:
+            raise rd.error(
+                "preload: a wheel on a line is pressed on it by the mechanism's own forces "
+                "(the statics give the ground's push): remove preload (friction = mu alone "
+                "says whether it slips)",
+                "rolling",
+                key,
+            )
+        return (None, float(mu))
+    if "preload" not in spec:
+        raise rd.error(
+            "friction: two wheels held at their centres grip only as hard as they are "
+            'pressed together: give the force pressing them, preload = "500 N"',
+            "rolling",
+            key,
+        )
+    if "pressure_angle" in spec:
+        raise rd.error(
+            "preload: wheels pressed together grip by friction and have no teeth: "
+            "remove pressure_angle (or preload, for gears)",
+            "rolling",
+            key,
+        )
+    p = rd.qty(spec["preload"], "force", "rolling", key, default_unit="N").value
+    if not 0 < p < math.inf:
+        raise rd.error(
+            f"preload = {spec['preload']!r}: the force pressing the wheels together, above 0",
+            "rolling",
+            key,
+        )
+    return (p, None if mu is None else float(mu))
 
 
 def _rack(rd, key, spec, ground, sliders, _suggest):
@@ -288,6 +343,7 @@ def read_rolling(rd, ground, sliders, points) -> list:
                     through=through,
                     m=m,
                     angle=angle,
+                    grip=_grip(rd, spec, key, True),
                 )
             )
             continue
@@ -310,6 +366,7 @@ def read_rolling(rd, ground, sliders, points) -> list:
                     base_radius=base_radius,
                     angle=angle,
                     pressure_angle=_pressure_angle(rd, spec, key),
+                    grip=_grip(rd, spec, key, False),
                 )
             )
             continue
@@ -358,6 +415,7 @@ def read_rolling(rd, ground, sliders, points) -> list:
                 angle=angle,
                 ring=ring,
                 pressure_angle=_pressure_angle(rd, spec, key),
+                grip=_grip(rd, spec, key, False),
             )
         )
     return out

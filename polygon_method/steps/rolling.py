@@ -126,6 +126,7 @@ def recognise(g, name):
         unit=g.unit,
         uname=g.uname,
         pressure_angle=pr.pressure_angle,
+        grip=pr.grip,
     )
 
 
@@ -161,6 +162,8 @@ class RollingWheel(RollingContact, Step):
     #: the teeth's pressure angle (rad) the scene states, or None (the default: the force
     #: analysis takes 20 deg and says so)
     pressure_angle: float | None = None
+    #: a friction drive's (preload N, friction coefficient or None): no teeth; or None
+    grip: tuple | None = None
 
     kind = "rolling"
 

@@ -91,6 +91,22 @@ def _rolling_sentence(sc, r) -> str:
             else f"; {r.rim} is its point in contact at the instant shown"
         )
         + "."
+        + _grip_sentence(r)
+    )
+
+
+def _grip_sentence(r) -> str:
+    """A friction drive's: the wheels pressed together (no teeth), the friction coefficient."""
+    if not r.grip:
+        return ""
+    preload, mu = r.grip
+    out = (
+        ""
+        if preload is None
+        else f" They grip by friction, pressed together with {fmt(preload)} N."
+    )
+    return out + (
+        "" if mu is None else f" The coefficient of friction at the contact is {fmt(mu)}."
     )
 
 

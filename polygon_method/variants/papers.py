@@ -104,6 +104,8 @@ _QUESTION_WORDS = {
     "vu": "the velocity of the point of the guide under the block {0}",
     "au": "the acceleration of the point of the guide under the block {0}",
     "Fc": "the contact force between {0}",
+    "Tmax": "the largest torque the friction drive passes to {0}",
+    "Pmax": "the largest power through the grip of {0}",
     "Fi": "the inertia force of {0}",
     "Ci": "the inertia couple of {0}",
     "h": "the offset of {0}'s inertia force from its centre of mass",
