@@ -14,7 +14,9 @@ References, each independent of the tool:
   centres, the grip's tangential force one unknown along the common tangent) on a wheel
   that drives a slider through a rod, at several angles, at the sweep's worst angle and on
   either side of it;
-- on a line, the same matrix method's ground force split along and across the line.
+- on a line, the same matrix method's ground force split along and across the line; a ring
+  pressed by its planet (pushed outwards) the same; a planet on a fixed sun passes no power
+  (its contact does not move).
 """
 
 from __future__ import annotations
@@ -278,3 +280,77 @@ def test_a_preload_on_a_line_and_bad_drive_keys_are_refused(tmp_path, capsys):
         assert main(["check", str(scene)]) == 2
         err = capsys.readouterr().err.strip()
         assert "\n" not in err and words in err and "bad.toml" in err, err
+
+
+def test_a_ring_pressed_by_its_planet_against_the_matrix_method():
+    """The ring (an internal gear) about O gripped by the planet inside it with a preload of
+    300 N, the planet toothed on the fixed sun: the preload pushes the planet towards its own
+    centre and the ring outwards; the ring's grip T one unknown along the tangent."""
+    from test_forces_rolling import DEG20, _teeth, _unit, _with
+
+    sc = _with(
+        ROOT / "worked_problems" / "ring_gear_output.toml",
+        {
+            "OA": {"mass": 1, "along": 30},
+            "AP": {"mass": 0.5, "along": 0, "gyration": 14},
+            "O-Q": {"mass": 3, "along": 0, "gyration": 70},
+            "Q-B": {"mass": 1, "along": 75, "gyration": 45},
+            "B": {"mass": 2},
+        },
+        {"B": {"force": [-150, 20]}},
+        rolling={"O-Q": {"preload": "300 N", "friction": 0.35}},
+    )
+    sol = solve(sc)
+    f = sol.forces
+    P = sol.P
+    O, A = P["O"], P["A"]
+    u = _unit((A[0] - O[0], A[1] - O[1]))
+    sun = ("tooth sun", (O[0] + 0.040 * u[0], O[1] + 0.040 * u[1]), (-u[1], u[0]), u, "AP")
+    m = (-u[0], -u[1])  # from the ring's pitch point towards the planet's centre
+    I = (A[0] + 0.020 * u[0], A[1] + 0.020 * u[1])
+
+    def build():
+        mat = Matrix(sol, ["OA", "AP", "O-Q", "Q-B", "block B"], {"B": "block B"})
+        mat.pin("O", O, "OA", FRAME)
+        mat.pin("OQ", O, "O-Q", FRAME)
+        mat.pin("A", A, "AP", "OA")
+        mat.pin("Q", P["Q"], "Q-B", "O-Q")
+        mat.pin("B", P["B"], "Q-B", "block B")
+        mat.along("N_B", P["B"], (0.0, 1.0), "block B", FRAME)
+        mat.along("T ring", I, (-m[1], m[0]), "AP", "O-Q")
+        mat.known("AP", (300.0 * m[0], 300.0 * m[1]), I)
+        mat.known("O-Q", (-300.0 * m[0], -300.0 * m[1]), I)
+        mat.couple("T", "OA")
+        return mat
+
+    x = _teeth(build, [(*sun, FRAME, DEG20)])
+    scale = max(math.hypot(x[k + ".x"], x[k + ".y"]) for k in ("O", "OQ", "A", "Q", "B"))
+    on_ring = {c.wheel: c for c in f.contacts}["O-Q"]
+    Tr = x["T ring"]
+    want = (-(300.0 * m[0] - Tr * m[1]), -(300.0 * m[1] + Tr * m[0]))  # on the ring
+    assert math.dist(on_ring.force, want) <= 1e-9 * scale
+    assert math.dist(f.pin("O", "O-Q", FRAME), (x["OQ.x"], x["OQ.y"])) <= 1e-9 * scale
+    assert abs(f.input_torque - x["T"]) <= 1e-9 * scale * 0.1
+    d = sol.to_dict()["forces"]["contacts"]["O-Q"]
+    assert d["normal_pressing"] == 300.0 and d["normal_force"] == -300.0  # pushed outwards
+    assert d["margin"] == pytest.approx(0.35 * 300.0 - abs(Tr), abs=1e-9 * scale)
+
+
+def test_a_planet_on_a_fixed_circle_passes_no_power(tmp_path, capsys):
+    text = (ROOT / "worked_problems" / "rolling_epicyclic.toml").read_text().split("[answers]")[0]
+    text = text.replace(
+        'AP = { on = "O", on_radius = 60, angle = 30 }',
+        'AP = { on = "O", on_radius = 60, angle = 30, preload = "200 N", friction = 0.4 }',
+    )
+    assert "preload" in text
+    scene = tmp_path / "planet.toml"
+    scene.write_text(text + '[answers]\nPmax_AP = "0 W"\nTmax_AP = "3.2 N m"\n')
+    sol = solve(parse_scene(scene.read_text()))
+    assert force_value(sol.forces, "Pmax", "AP") == 0.0
+    r = 0.040  # AP = 40 mm, the planet's radius
+    assert force_value(sol.forces, "Tmax", "AP") == pytest.approx(0.4 * 200 * r, rel=1e-12)
+    assert main(["check", str(scene)]) == 0
+    assert "2 of 2 right" in capsys.readouterr().out
+    assert main(["solve", str(scene)]) == 0
+    out = " ".join(capsys.readouterr().out.split())
+    assert "with the fixed circle" in out and "no power passes" in out

@@ -52,6 +52,8 @@ def attach(contacts, motion, plan) -> list:
             (vx, vy), w = motion.V[pr.centre], motion.W[pr.wheel]
             mx, my = c.m
             v = abs((vx - w * (iy - cy)) * -my + (vy + w * (ix - cx)) * mx)
+            if st.on == "circle":  # a fixed circle's contact does not move: exactly
+                v = 0.0 * v
         N = c.normal if preload is None else preload
         out.append(replace(c, grip=(mu, N, pr.radius, R, v)))
     return out
@@ -82,6 +84,8 @@ def max_power(g):
 def words(c) -> str:
     """The grip at one instant in words: what it carries against what it can, and whether
     it holds (with its margin) or slips."""
+    from .records import FRAME  # (the records read this module)
+
     g, t = c.grip, c.tangential
     mu, N = g[0], g[1]
     pressed = "the preload" if g[3] is not None else "the ground's push"
@@ -105,7 +109,9 @@ def words(c) -> str:
     else:
         verdict = f"slips (it needs {fmt(-left)} N more; {need})"
     most = f"; the largest torque it passes to {c.wheel} mu N r = {fmt(max_torque(g))} N m"
-    if g[3] is not None:
+    if g[3] is not None and c.by == FRAME:  # a fixed circle: its contact does not move
+        most += " (no power passes: its contact on the fixed circle does not move)"
+    elif g[3] is not None:
         most += (
             f" (to the gear mu N R = {fmt(max_torque(g, True))} N m), the largest power mu N v "
             f"= {fmt(max_power(g))} W at the contact's speed v = {fmt(g[4])} m/s"

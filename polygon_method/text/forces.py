@@ -46,7 +46,8 @@ def _base(c):
     """What a contact's body rolls on, in words."""
     if c.by != FRAME:
         return f"{'the pinion' if c.wheel.startswith('block ') else 'the gear'} {c.by}"
-    return "the fixed circle" if c.teeth is not None else "the ground"
+    circle = c.teeth is not None or (c.grip is not None and c.grip[3] is not None)
+    return "the fixed circle" if circle else "the ground"
 
 
 def _friction_lines(sol, f, F, M) -> list:
