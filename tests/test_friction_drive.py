@@ -354,3 +354,32 @@ def test_a_planet_on_a_fixed_circle_passes_no_power(tmp_path, capsys):
     assert main(["solve", str(scene)]) == 0
     out = " ".join(capsys.readouterr().out.split())
     assert "with the fixed circle" in out and "no power passes" in out
+
+
+def test_the_worked_friction_drive():
+    """worked_problems/friction_drive.toml: its closed-form answers right; the margin it
+    quotes at the instant and at the sweep's worst angle, each the matrix method's there."""
+    path = ROOT / "worked_problems" / "friction_drive.toml"
+    text = path.read_text()
+    assert main(["check", str(path)]) == 0
+
+    def posed(deg):
+        wheel = (60.0 - 2.0 * deg / 3.0) % 360.0
+        t = text.replace(
+            'preload = "500 N", friction = 0.3, angle = 60',
+            (f'preload = "500 N", friction = 0.3, angle = {wheel!r}'),
+        )
+        return solve(parse_scene(t.replace("angle = 0\n", f"angle = {deg % 360.0!r}\n")))
+
+    def margin(sol):
+        return 150.0 - abs(_matrix(sol, 500.0)["T"])
+
+    sol = posed(0.0)
+    assert margin(sol) == pytest.approx(138.3, abs=0.05)  # as the file says
+    (c,) = sol.forces.contacts
+    assert 150.0 - abs(c.tangential) == pytest.approx(margin(sol), abs=1e-9 * 500)
+    (e,) = [e for e in summarize(parse_scene(text)).extremes if e.name == "grip_O2-B"]
+    assert e.at_min == pytest.approx(792.06, abs=0.01) and e.minimum == pytest.approx(
+        0.72, abs=0.005
+    )
+    assert e.minimum == pytest.approx(margin(posed(e.at_min)), abs=1e-9 * 500)

@@ -84,7 +84,8 @@ def _grip(rd, spec, key, line):
         isinstance(mu, bool) or not isinstance(mu, (int, float)) or not 0 < mu < 1
     ):
         raise rd.error(
-            f"friction = {mu!r}: the coefficient of friction at the contact, a number "
+            f"friction = {str(mu).lower() if isinstance(mu, bool) else repr(mu)}: the "
+            "coefficient of friction at the contact, a number "
             "above 0 and below 1",
             "rolling",
             key,
