@@ -317,3 +317,20 @@ def test_without_the_force_analysis_it_is_refused(tmp_path, capsys):
     assert main(["solve", str(scene)]) == 2
     err = capsys.readouterr().err.strip()
     assert "applied by the force analysis" in err and len(err.splitlines()) == 1
+
+
+def test_the_worked_problem_and_its_answers():
+    from pathlib import Path
+
+    from polygon_method.check import check_answers
+    from polygon_method.scene import load_scene
+
+    path = Path(__file__).resolve().parent.parent / "worked_problems/cylinder_pull_on_rocker.toml"
+    sol = solve(load_scene(path))
+    push = -5e6 * math.pi / 4 * (0.05**2 - 0.02**2)
+    ref = reference(60.0, push, 0.0)
+    size = max(abs(v) for v in ref.values() if isinstance(v, float))
+    assert sol.forces.input_torque == pytest.approx(ref["T"], abs=1e-9 * size)
+    rows = check_answers(sol)
+    assert len(rows) == 7 and all(r.ok for r in rows), rows
+    assert abs(rows[1].given - ref["T"]) < 0.0005 * abs(ref["T"])  # the file's 4 figures

@@ -558,6 +558,6 @@ def tidied(sol: Solution) -> Solution:
         out._cache["power"] = [
             (what, 0.0 if abs(p) <= (el if el < 1.0 else 0.0) * sz else p)
             for (what, p), el, sz in zip(out.power_terms, loads, sizes)
-        ]
+        ] + out.power_terms[len(sc.loads) :]  # (a passive cylinder's F vs: kept)
         out._cache["torque"] = 0.0 if abs(t) <= e * sum(sizes) / abs(sc.input.omega) else t
     return out

@@ -149,12 +149,9 @@ class PinRubbing:
 
 def power_terms(scene, V, W, S=None) -> list:
     """(what, power in W) of each load: F . v for forces, T w for torques on links; with the
-    sliding rates ``S``, ``F vs`` of each passive cylinder's given force (vs its rate of
-    extension; at rest a damper pushes nothing)."""
+    sliding rates ``S``, then ``F vs`` of each passive cylinder's given force (vs its rate
+    of extension; at rest a damper pushes nothing), named ``cylinder C-R``."""
     out = []
-    for c in stated(scene) if S is not None else ():
-        vs = S[c.key][0]
-        out.append((f"cylinder {c.key}", c.force_at(vs, scene.at_rest) * vs))
     for load in scene.loads:
         if load.force is not None:
             fx, fy = load.force
@@ -162,6 +159,9 @@ def power_terms(scene, V, W, S=None) -> list:
             out.append((load.target, fx * vx + fy * vy))
         else:
             out.append((load.target, load.torque * W[scene.link(load.target).key]))
+    for c in stated(scene) if S is not None else ():  # (after the loads: zipped with them)
+        vs = S[c.key][0]
+        out.append((f"cylinder {c.key}", c.force_at(vs, scene.at_rest) * vs))
     return out
 
 
