@@ -334,3 +334,28 @@ def test_the_worked_problem_and_its_answers():
     rows = check_answers(sol)
     assert len(rows) == 7 and all(r.ok for r in rows), rows
     assert abs(rows[1].given - ref["T"]) < 0.0005 * abs(ref["T"])  # the file's 4 figures
+
+
+@pytest.mark.parametrize(
+    "load, slip, push, damping",
+    [
+        (
+            '{ pressure = "5 N/mm^2", bore = 50, rod = 20 }',
+            "rod_area_not_taken_off",
+            -5e6 * math.pi / 4 * 0.05**2,
+            0.0,
+        ),
+        ('{ push = "2 kN" }', "cylinder_force_left_out", 0.0, 0.0),
+        ('{ push = "500 N", damping = "2 kN s/m" }', "damper_sense_turned", 500.0, -2000.0),
+    ],
+)
+def test_check_names_the_cylinders_slips(load, slip, push, damping):
+    """The torque a slip gives, worked by the matrix method with the slip's force, is
+    named by ``check``."""
+    from polygon_method.check import check_answers
+
+    ref = reference(135.0, push, damping)
+    way = "ccw" if ref["T"] > 0 else "cw"
+    text = scene_text(load, 135.0) + f'[answers]\ntorque = "{abs(ref["T"]):.5g} N m {way}"\n'
+    (row,) = check_answers(solve(parse_scene(text)))
+    assert not row.ok and row.mistake == slip, row

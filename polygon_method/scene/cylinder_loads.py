@@ -46,6 +46,9 @@ class LoadedCylinder(Cylinder):
     push: float = 0.0
     damping: float = 0.0
     words: str = ""
+    #: a pressure on the annulus (Pa) and the bore's whole area (m^2), or None: the slip
+    #: of the rod's area not taken off is asked of it (``check``)
+    annulus: tuple | None = None
 
     def force_at(self, rate, at_rest=False):
         """The force (N, + pushing apart) at the rate of extension ``rate`` (m/s; floats or
@@ -126,7 +129,7 @@ class _CylinderLoads:
         ways = [k for k in ("push", "pull", "pressure") if k in spec]
         if len(ways) > 1:
             raise self.error(f"give one of push, pull and pressure, not {ways}", "loads", name)
-        push, words = 0.0, []
+        push, words, annulus = 0.0, [], None
         if ways and ways[0] != "pressure":
             f = self.qty(spec[ways[0]], "force", "loads", name, default_unit="N").value
             if f < 0:
@@ -140,6 +143,10 @@ class _CylinderLoads:
             words.append(f"a {ways[0]} of {spec[ways[0]]}")
         elif ways or any(k in spec for k in ("bore", "rod", "back")):
             push, said = self._oil(cyl, name, spec)
+            if "rod" in spec and "back" not in spec:  # (the annulus side alone)
+                bore = self.length(spec["bore"], "loads", name)
+                p = self.qty(spec["pressure"], "pressure", "loads", name).value
+                annulus = (p, math.pi / 4 * bore * bore)
             words.append(said)
         c = 0.0
         if "damping" in spec:
@@ -154,7 +161,9 @@ class _CylinderLoads:
             words.append(
                 f"a damper of {spec['damping']}" + (" N s/m" if _bare(spec["damping"]) else "")
             )
-        return LoadedCylinder(cyl.key, cyl.barrel, cyl.rod, cyl.stroke, push, c, ", ".join(words))
+        return LoadedCylinder(
+            cyl.key, cyl.barrel, cyl.rod, cyl.stroke, push, c, ", ".join(words), annulus
+        )
 
     def _oil(self, cyl, name, spec):
         """(the force, + pushing apart; its words) of a pressure on the cylinder's piston."""
