@@ -359,3 +359,23 @@ def test_check_names_the_cylinders_slips(load, slip, push, damping):
     text = scene_text(load, 135.0) + f'[answers]\ntorque = "{abs(ref["T"]):.5g} N m {way}"\n'
     (row,) = check_answers(solve(parse_scene(text)))
     assert not row.ok and row.mistake == slip, row
+
+
+def test_named_either_way_and_not_twice(tmp_path, capsys):
+    """``"R-C"`` names the same cylinder (its force still + pushing the ends apart); two
+    entries for one cylinder, or a push under a name that is no cylinder, are refused."""
+    text = scene_text('{ push = "2 kN" }', 135.0).replace('"C-R" = { push', '"R-C" = { push')
+    sol = solve(parse_scene(text))
+    ref = reference(135.0, 2000.0, 0.0)
+    assert sol.forces.input_torque == pytest.approx(ref["T"], rel=1e-9)
+    scene = tmp_path / "twice.toml"
+    scene.write_text(
+        text.replace('"R-C" = { push = "2 kN" }', 'RC = { push = "2 kN" }\nCR = {pull = 1}')
+    )
+    assert main(["solve", str(scene)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert "the cylinder C-R is loaded twice" in err and len(err.splitlines()) == 1
+    scene.write_text(text.replace('[cylinders]\n"C-R" = {}\n', ""))
+    assert main(["solve", str(scene)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert "no cylinder R-C in [cylinders]" in err and len(err.splitlines()) == 1

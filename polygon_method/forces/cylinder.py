@@ -193,7 +193,7 @@ def given_words(key, given, f) -> str:
     return (
         f"the force in the cylinder {key} is given ({c.words}): F = {fmt(c.push)} - "
         f"{fmt(c.damping)} x "
-        f"vs = {fmt(c.push)} - {fmt(c.damping)} x {fmt(rate)} = {fmt(f)} N, {way} (vs the "
+        f"vs = {fmt(c.push)} - {fmt(c.damping)} x {_paren(rate)} = {fmt(f)} N, {way} (vs the "
         "rate of extension, m/s; a damper resists it"
         + ("; at rest nothing moves: it pushes nothing)" if at_rest else ")")
     )
@@ -203,3 +203,8 @@ def divisor(st, rec, P, L):
     """A driving cylinder's force divides by its arm about the crank's pivot (its condition
     is that over the mechanism's size): ``c L``."""
     return rec.condition * L
+
+
+def _paren(x) -> str:
+    """A number as a factor: in brackets where negative (``2000 x (-0.15)``)."""
+    return f"({fmt(x)})" if x < 0 else fmt(x)

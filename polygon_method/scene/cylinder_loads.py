@@ -76,11 +76,20 @@ class _CylinderLoads:
 
     def point_loads(self):
         """The ``[loads]`` entries that are not a cylinder's (the points' and the links')."""
-        return [
-            (name, spec)
-            for name, spec in self.table("loads").items()
-            if self._cylinder_named(name) is None
-        ]
+        out = []
+        for name, spec in self.table("loads").items():
+            if self._cylinder_named(name) is not None:
+                continue
+            if isinstance(spec, dict) and {"push", "pull", "damping"} & set(spec):
+                raise self.error(
+                    f"no cylinder {name} in [cylinders]: a push, a pull or a damping acts "
+                    f'in a cylinder (add [cylinders] "{name}" = {{}}, its barrel\'s pivot '
+                    "first)",
+                    "loads",
+                    name,
+                )
+            out.append((name, spec))
+        return out
 
     def cylinder_loads(self, cylinders, inp) -> list:
         """``cylinders`` with each one ``[loads]`` names made a :class:`LoadedCylinder`."""
