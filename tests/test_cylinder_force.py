@@ -379,3 +379,21 @@ def test_named_either_way_and_not_twice(tmp_path, capsys):
     assert main(["solve", str(scene)]) == 2
     err = capsys.readouterr().err.strip()
     assert "no cylinder R-C in [cylinders]" in err and len(err.splitlines()) == 1
+
+
+@pytest.mark.parametrize("angle", [30.0, 135.0, 250.0])
+def test_the_bounds_hold_with_a_damper(angle):
+    """Each force's stated error bound (``forces/bounds.py``, a damper's force erring by c
+    times its rate's bound) holds against the 30-digit matrix method."""
+    from polygon_method.forces.bounds import force_bounds
+
+    sol = solve(parse_scene(scene_text('{ push = "500 N", damping = "2 kN s/m" }', angle)))
+    ref = reference(angle, 500.0, 2000.0)
+    f, b = sol.forces, force_bounds(sol)
+    assert 0 < b.effort < 1e-9
+    assert abs(f.input_torque - ref["T"]) <= b.effort * b.force * b.length
+    for pin, on, by in (("O", "OA", "frame"), ("A", "AB", "OA"), ("B", "AB", "QB")):
+        got = _pin(f, pin, on, by)
+        err = math.hypot(got[0] - ref[pin + ".x"], got[1] - ref[pin + ".y"])
+        (e,) = [v for (p, o, y), v in b.pins.items() if p == pin and {o, y} == {on, by}]
+        assert err <= e * b.force, pin
