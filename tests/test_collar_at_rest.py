@@ -162,7 +162,13 @@ def test_the_views_say_it(tmp_path, capsys):
     assert main(["solve", "--json", str(scene)]) == 0
     assert '"at_rest": true' in capsys.readouterr().out
     assert main(["steps", str(scene)]) == 0
-    assert "6. Weights at rest (no inertia)" in capsys.readouterr().out
+    steps = " ".join(capsys.readouterr().out.split())
+    assert "6. Weights at rest (no inertia)" in steps
+    assert (
+        "at rest (nothing moves yet): the polygons are drawn per 1 m/s of the collar C along "
+        "its rod, the virtual velocities of the power balance (no inertia)" in steps
+    )
+    assert "vs_C = 1 m/s outward along OA, relative to the rod (virtual: at rest)" in steps
     assert main(["sweep", str(scene), "--summary"]) == 0
     summary = capsys.readouterr().out
     assert (
