@@ -118,6 +118,10 @@ def _power_terms(sc, res, f):
             terms.append(ld.force[0] * v[0] + ld.force[1] * v[1])
         else:
             terms.append(ld.torque * res.W[ld.target])
+    for c in sc.cylinders:  # a passive cylinder's given force: F vs
+        if hasattr(c, "push"):
+            vs = res.S[c.key][0]
+            terms.append((c.push - c.damping * vs) * vs)
     g = sc.gravity
     for m in sc.masses:
         G, v, a, al, w = _kin(res, m)

@@ -213,6 +213,10 @@ def test_power_balance_with_inertia(path, seed):
             terms.append(ld.force[0] * v[0] + ld.force[1] * v[1])
         else:
             terms.append(ld.torque * sol.W[ld.target])
+    for c in sc.cylinders:  # a passive cylinder's given force: F vs
+        if hasattr(c, "push"):
+            vs = sol.sliding_velocity(c.key)
+            terms.append((c.push - c.damping * vs) * vs)
     g = sc.gravity
     for m in sc.masses:
         G, v, a, al, w = _kin(sol, m)

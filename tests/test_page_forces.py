@@ -53,6 +53,7 @@ def _scenes():
         "peg": lambda: with_forces(load_scene(WORKED / "shaper_ram_pin_in_slot.toml"), 3),
         "block": lambda: with_forces(load_scene(WORKED / "ellipse_trammel.toml"), 3),
         "cylinder": lambda: with_forces(load_scene(WORKED / "tipper_cylinder.toml"), 3),
+        "pulled": lambda: load_scene(WORKED / "cylinder_pull_on_rocker.toml"),  # a given force
         "triad": lambda: load_scene(WORKED / "class3_six_bar_forces.toml"),
     }
 

@@ -9,6 +9,7 @@ from ..common.errors import PolygonMethodError
 from ..forces import analyse, force_value
 from ..motion.solution import solve
 from ..scene import Gravity
+from ..scene.cylinder_loads import stated
 from ..scene.force_records import rolling_body
 from . import rod_slip
 from .alternatives import _Candidate
@@ -88,10 +89,45 @@ def force_slips(d, kind, names, signed):
             "offset_wrong_side",
             masses=tuple(replace(m, inertia=-m.inertia) for m in sc.masses),
         )
+    for c in stated(sc):  # a passive cylinder's given force
+        for words, code, slip in _cylinder_slips(c):
+            redo(words, code, cylinders=tuple(slip if x is c else x for x in sc.cylinders))
     two = rod_slip.two_masses(sc, turning)  # the equivalent system, no correction couple
     if two:
         masses = tuple(replace(m, inertia=two.get(m.body, m.inertia)) for m in sc.masses)
         redo(rod_slip.WORDS, "correction_couple_left_out", masses=masses)
+    return out
+
+
+def _cylinder_slips(c) -> list:
+    """(words, code, the cylinder as the slip has it) of a passive cylinder's given force:
+    left out, a pressure on the annulus taken on the whole bore, a damper's sense turned."""
+    out = [
+        (
+            f"the force in the cylinder {c.key} left out",
+            "cylinder_force_left_out",
+            replace(c, push=0.0, damping=0.0),
+        )
+    ]
+    if c.annulus is not None:
+        p, bore = c.annulus
+        out.append(
+            (
+                f"the pressure in {c.key} taken on the whole bore: on the annulus side the "
+                "rod's area comes off (p pi/4 (D^2 - d^2))",
+                "rod_area_not_taken_off",
+                replace(c, push=-p * bore),
+            )
+        )
+    if c.damping:
+        out.append(
+            (
+                f"the damper in {c.key} taken as helping its motion (+c vs): a damper "
+                "resists it, F = -c vs",
+                "damper_sense_turned",
+                replace(c, damping=-c.damping),
+            )
+        )
     return out
 
 

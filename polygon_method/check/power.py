@@ -180,6 +180,7 @@ def torque(d, signed):
             used.append(f"v_{target} = {a.raw}")
         else:
             theirs += p
+    theirs += sum(p for _, p in exact_terms[len(sc.loads) :])  # a passive cylinder's F vs
     if used:
         powers.insert(0, (theirs, f" with your {', '.join(used)}"))
     sign = (lambda t: t) if signed else abs

@@ -173,6 +173,19 @@ UNITS: dict[str, dict[str, float]] = {
         "kgf/cm^2": 9.80665e4,
         "kgf/cm²": 9.80665e4,
     },
+    # a damper's coefficient: its force per unit rate of extension
+    "damping": {
+        "N s/m": 1.0,
+        "N·s/m": 1.0,
+        "Ns/m": 1.0,
+        "N/(m/s)": 1.0,
+        "kN s/m": 1e3,
+        "kN·s/m": 1e3,
+        "N s/mm": 1e3,
+        "N·s/mm": 1e3,
+        "lbf s/in": 4.4482216152605 / 0.0254,
+        "lbf s/ft": 4.4482216152605 / 0.3048,
+    },
 }
 
 #: the largest magnitude (SI) that makes sense for a mechanism, by kind: beyond it a value
@@ -188,6 +201,7 @@ ABSURD: dict[str, float] = {
     "mass": 1e7,  # kg
     "moment_of_inertia": 1e7,  # kg m^2
     "pressure": 1e10,  # Pa
+    "damping": 1e9,  # N s/m
 }
 
 #: the smallest magnitude (SI) other than zero that makes sense, by kind: below it a value
@@ -242,6 +256,7 @@ _SI_NAME = {
     "moment_of_inertia": "kg m^2",
     "pressure": "Pa",
     "energy": "J",
+    "damping": "N s/m",
 }
 #: sense words: the format's cw/ccw, and the spellings textbooks use
 _SENSES = {

@@ -300,6 +300,7 @@ def _long(motion, fp, fric=()) -> tuple:
     ``fric``: the friction loads."""
     scene, plan, own = motion.scene, motion.plan, fp.own
     records_, led = gather(scene, motion, own)
+    cylinder.stated(scene, motion, led)  # a force given in a passive cylinder
     friction.apply(led, fric)
     inp = scene.input
     driving = fp.driving
@@ -385,6 +386,7 @@ def _copy(led):
     """A ledger of the same known forces (the first walk must not change the one kept)."""
     out = Ledger()
     out.total = dict(led.total)
+    out.stated = led.stated
     return out
 
 

@@ -96,6 +96,8 @@ class Ledger:
         #: a driving cylinder's force (N), by its key, and the condition it was found with
         self.given = {}
         self.conditions = {}
+        #: a passive cylinder's force given in the scene (N, + pushing apart), by its key
+        self.stated = {}
         self.items = {}  # body -> the known forces one by one (:class:`Side`), in order
 
     def add(self, body, fx, fy, x, y, what=None, side=None):

@@ -8,7 +8,8 @@ link, the position scale). Along the force analysis' walk (the kinematic plan in
 - the known forces on a body err by its inertia's error, ``m |a_G| eA / F`` with ``eA``
   the bound of its centre's acceleration (the largest of its link's ends, times ``1 + |lam|
   + 2 |mu|`` for a centre carried off the link), and ``I alpha eAl / (F L)`` for its couple;
-  loads and weights are exact, their arms err by the positions' bound ``eP``;
+  loads and weights are exact, their arms err by the positions' bound ``eP``; a damper's
+  given force ``-c vs`` by ``c`` times its rate of extension's bound;
 - a group's equations divide the known moments by a length ``D``: a dyad's ``min(|CB|,
   |CD|) c / 2`` (its determinate ``|CB| |CD| c``, c the sine at its middle pin), a
   slider's ``|XB| c``, a slotted lever's ``|KA|`` (the block's distance from the pivot),
@@ -40,6 +41,7 @@ from dataclasses import dataclass
 from ..steps.rounding import CAP, EPS, USELESS
 from ..steps.rounding import largest, vhypot, vmax
 from .records import FRAME, block
+from ..scene.cylinder_loads import stated
 
 __all__ = ["ForceBounds", "force_bounds", "K"]
 
@@ -168,6 +170,10 @@ def force_bounds(sol, f=None) -> ForceBounds:
     L = float(kb.scales["position"])
     F = _scale(sol, f)
     start = _inertia_errors(sol, kb, F, L)
+    for c in stated(sol.scene):  # a damper's force errs by c times its rate's error
+        if c.damping and not sol.scene.at_rest:
+            ev = kb.S[c.key][0] if c.key in kb.S else kb.V.get(c.rod, EPS) + kb.V.get(c.barrel, 0)
+            start[c.key] = c.damping * ev * kb.scales["velocity"] / F
     steps = _walk(sol, f, kb, F, L, start)
     driver = sol.plan.steps[0]  # the first input's step: a crank or a driving block
     by_index = {st.index: st for st in sol.plan.steps}

@@ -10,8 +10,11 @@ the loads, so the force analysis is walked once with ``F = 0`` (the crank's torq
 once with ``F = 1 N`` alone (T1, the torque one newton in the cylinder gives the crank: its
 arm), and ``F = -T0 / T1`` makes the crank's torque vanish; ``|T1|`` over the mechanism's
 size is the condition (zero where the cylinder's line passes through the crank's pivot: a
-toggle). Otherwise a cylinder carries no force: a free, frictionless cylinder without a
-pressure pushes nothing.
+toggle). A passive cylinder carries the force the scene gives in it (``[loads] "O-R"``: a
+push or a pull, a pressure on its bore or annulus, a damper's ``-c vs``, vs its rate of
+extension; :mod:`polygon_method.scene.cylinder_loads`), entered in the ledger before the
+walk (:func:`stated`); without one it carries no force: a free, frictionless cylinder
+without a pressure pushes nothing.
 
 >>> push(0.0, 0.0, 3.0, 4.0, 10.0)     # 10 N pushing R away from K = (0, 0), R = (3, 4)
 (6.0, 8.0)
@@ -23,6 +26,21 @@ from ..common.numbers import fmt
 from ..common.tolerances import FLOOR
 from .bodies import Singular, any_zero
 from .records import ForceStep, PinForce, Side
+from ..scene.cylinder_loads import stated as loaded
+
+
+#: the mark of a passive cylinder's force given in the scene, in its step's found label
+GIVEN = " (given)"
+
+
+def given_forces(f) -> list:
+    """(key, F) of each passive cylinder whose force the scene gives, from the force steps
+    ``f.steps`` (F, N, + pushing its ends apart; arrays over a sweep)."""
+    return [
+        (rec.bodies[0], rec.found[0][1])
+        for rec in f.steps
+        if rec.kind == "cylinder" and GIVEN in rec.found[0][0]
+    ]
 
 
 def push(kx, ky, rx, ry, f):
@@ -46,6 +64,15 @@ def drives(scene, st) -> bool:
         and scene.input.block is None
         and scene.input.second is None
     )
+
+
+def stated(scene, motion, led):
+    """Enter each passive cylinder's given force in ``led.stated``: (F, the rate of
+    extension it was taken at, the scene's words). At rest (or starting from rest) nothing
+    moves: a damper pushes nothing."""
+    for c in loaded(scene):
+        rate = motion.S[c.key][0] * (0.0 if scene.at_rest else 1.0)
+        led.stated[c.key] = (c.force_at(rate, scene.at_rest), rate, c, scene.at_rest)
 
 
 def unit_ledger(st):
@@ -80,7 +107,8 @@ def effort(st, t0, t1, led):
 def step(st, P, led, own):
     """The cylinder's push on the bodies at its ends (``led.given``: its force, 0 where it
     does not drive). Returns as :func:`.dyad.step`."""
-    f = led.given.get(st.key, 0.0)
+    given = led.stated.get(st.key)
+    f = led.given.get(st.key, 0.0 if given is None else given[0])
     K, R = st.barrel, st.rod
     (kx, ky), (rx, ry) = P[K], P[R]
     fx, fy = push(kx, ky, rx, ry, f)
@@ -105,9 +133,13 @@ def step(st, P, led, own):
                 f"the cylinder drives: F = -T0 / T1 = {fmt(f)} N, T0 the crank's torque "
                 "without it, T1 with 1 N in it alone"
                 if st.key in led.given
+                else given_words(st.key, given, f)
+                if given is not None
                 else "the cylinder does not drive (the motion is not given on it): a free, "
                 "frictionless cylinder carries no force"
             ),
+            f"a two-force member: F u on the body at {R}, -F u on the body at {K} (u from "
+            f"{K} to {R}, F + pushing them apart)",
         )
     rec = ForceStep(
         st.index,
@@ -115,7 +147,7 @@ def step(st, P, led, own):
         st.title,
         (st.key,),
         ((0.0, 0.0, 0.0),),
-        ((f"F in {st.key}, + pushing {K} and {R} apart", f),),
+        ((f"F in {st.key}{GIVEN if given is not None else ''}, + pushing {K} and {R} apart", f),),
         led.conditions.get(st.key, 1.0),
         "the arm of the cylinder about the crank's pivot over the mechanism's size"
         if st.key in led.given
@@ -127,7 +159,52 @@ def step(st, P, led, own):
     return (PinForce(R, st.key, orr, (-fx, -fy)), PinForce(K, st.key, ok, (fx, fy))), (), rec, None
 
 
+def given_line(scene, S, key, f) -> str:
+    """``solve``'s line for a passive cylinder's given force ``f`` (one instant; ``S`` the
+    motion's sliding rates, the cylinder's rate of extension among them)."""
+    (c,) = [c for c in loaded(scene) if c.key == key]
+    rate = 0.0 if scene.at_rest else S[key][0]
+    return given_words(key, (f, rate, c, scene.at_rest), f).removeprefix("the ")
+
+
+def given_dict(scene, S, f) -> dict:
+    """``solve --json``'s ``forces.cylinders``: each passive cylinder's given force (N, +
+    pushing its ends apart), its parts and words."""
+    out = {}
+    for key, v in given_forces(f):
+        (c,) = [c for c in loaded(scene) if c.key == key]
+        out[key] = {
+            "force": v + 0.0,
+            "given": c.words,
+            "push": c.push + 0.0,  # a push, minus a pull, or a pressure times its area
+            "damping": c.damping,
+            "rate_of_extension": 0.0 if scene.at_rest else S[key][0] + 0.0,
+            "sign": "+ pushing its ends apart",
+        }
+    return out
+
+
+def given_words(key, given, f) -> str:
+    """Where a passive cylinder's force comes from, in words (one instant)."""
+    _, rate, c, at_rest = given
+    way = "pushing its ends apart" if f >= 0 else "pulling its ends together"
+    if not c.damping:
+        return f"the force in the cylinder {key} is given ({c.words}): F = {fmt(f)} N, {way}"
+    return (
+        f"the force in the cylinder {key} is given ({c.words}): F = {fmt(c.push)} - "
+        f"{fmt(c.damping)} x "
+        f"vs = {fmt(c.push)} - {fmt(c.damping)} x {_paren(rate)} = {fmt(f)} N, {way} (vs the "
+        "rate of extension, m/s; a damper resists it"
+        + ("; at rest nothing moves: it pushes nothing)" if at_rest else ")")
+    )
+
+
 def divisor(st, rec, P, L):
     """A driving cylinder's force divides by its arm about the crank's pivot (its condition
     is that over the mechanism's size): ``c L``."""
     return rec.condition * L
+
+
+def _paren(x) -> str:
+    """A number as a factor: in brackets where negative (``2000 x (-0.15)``)."""
+    return f"({fmt(x)})" if x < 0 else fmt(x)

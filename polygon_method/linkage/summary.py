@@ -42,6 +42,7 @@ from .summary_limits import (
     unbounded_sizes,
 )
 from .summary_forces import at_singular, force_arrays, singular_note, spread
+from ..forces.cylinder import given_forces
 from .summary_record import Extreme, Summary
 
 __all__ = ["summarize", "summary_of", "Summary", "Extreme"]
@@ -143,7 +144,7 @@ class _Reducer:
         if getattr(plan, "pins", ()):
             for pin, r in rubbing_arrays(plan, fr.W, fr.n).items():
                 yield f"rub_{pin}", "m/s", r, "rubbing"
-        t = torque_array(sc, fr.V, fr.W, self.sw.omega, fr.n)
+        t = torque_array(sc, fr.V, fr.W, self.sw.omega, fr.n, fr.S)
         if t is not None and not plan.steps[0].periodic:  # the force driving the block
             yield "force", "N", t, "input force, along the guide"
         elif t is not None:
@@ -214,6 +215,8 @@ class _Reducer:
                 (b(p.force[0]), b(p.force[1])),
                 "pin force",
             )
+        for k, v in given_forces(f):  # a passive cylinder's given force (a damper's varies)
+            yield f"F_{k}", "N", b(v), "force in the cylinder, + pushing apart"
         if e is not None:
             yield "piston_effort", "N", b(e.F_P), "towards the crank"
             yield "crank_effort", "N", b(e.F_T), "in the sense of rotation"

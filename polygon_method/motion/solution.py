@@ -97,17 +97,18 @@ class Solution(Motion):
     @property
     def power_terms(self) -> list:
         """(what, power in W) of each load: F . v for forces, T w for torques on links."""
-        return self._get("power", lambda: power_terms(self.scene, self.V, self.W))
+        return self._get("power", lambda: power_terms(self.scene, self.V, self.W, self.S))
 
     @property
     def input_torque(self):
         """T on the crank, ccw positive: T w + sum(F . v) = 0. None without loads."""
-        if not self.scene.loads:  # (the usual scene: nothing to balance)
+        sc = self.scene
+        if not sc.loads and not sc.cylinders:  # (the usual scene: nothing to balance)
             return None
         c = self._cache
         t = c.get("torque", _UNSET)  # None is a value (no loads): a sentinel, not a raise
         if t is _UNSET:
-            t = c["torque"] = _torque(self.scene, self.V, self.W, self.scene.input.omega)
+            t = c["torque"] = _torque(sc, self.V, self.W, sc.input.omega, self.S)
         return t
 
     @property
@@ -360,7 +361,7 @@ class Solution(Motion):
             },
         }
         d.update(self._pairs_dict())
-        if sc.loads and sc.input.second is None:  # two inputs: no one torque
+        if self.input_torque is not None:  # (loads; two inputs: no one torque)
             # a block driver: the force along its guide (N, signed along it)
             d[self.plan.steps[0].effort_key] = self.input_torque
         d["input"] = self._input_dict()
@@ -369,6 +370,10 @@ class Solution(Motion):
             from ..forces import forces_dict  # lazy, as in `forces`
 
             d["forces"] = None if refused else forces_dict(self.forces)
+            if not refused and any(hasattr(c, "push") for c in sc.cylinders):
+                from ..forces.cylinder import given_dict  # a strut's, a damper's force
+
+                d["forces"]["cylinders"] = given_dict(sc, self.S, self.forces)
             if sc.at_rest:  # the weights and loads alone; the motion per rad/s of the crank
                 d["at_rest"] = True
                 if sc.start_alpha:  # starting from rest: the inertia of the start
@@ -555,6 +560,6 @@ def tidied(sol: Solution) -> Solution:
         out._cache["power"] = [
             (what, 0.0 if abs(p) <= (el if el < 1.0 else 0.0) * sz else p)
             for (what, p), el, sz in zip(out.power_terms, loads, sizes)
-        ]
+        ] + out.power_terms[len(sc.loads) :]  # (a passive cylinder's F vs: kept)
         out._cache["torque"] = 0.0 if abs(t) <= e * sum(sizes) / abs(sc.input.omega) else t
     return out

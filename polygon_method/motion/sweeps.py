@@ -239,6 +239,9 @@ class SweepResult(Motion):
             for p in f.pins
         ]
         from ..forces.engine import cylinder_efforts, efforts  # lazy, as in `_forces`
+        from ..forces.cylinder import given_forces
+
+        cols += [(f"F_{k}", "N", np.broadcast_to(v, n)) for k, v in given_forces(f)]
 
         e = efforts(self.scene, self.plan, at.P, f)
         if e is not None:  # an engine: the turning-moment diagram and its efforts
@@ -286,12 +289,13 @@ def rubbing_arrays(plan, W, n):
     }
 
 
-def torque_array(scene, V, W, omega, n):
+def torque_array(scene, V, W, omega, n, S=None):
     """The input torque over a sweep (``omega`` the crank's; where the motion is given
-    on another quantity and held, the crank's speed at each angle, ``W`` of the crank)."""
+    on another quantity and held, the crank's speed at each angle, ``W`` of the crank;
+    ``S`` the sliding rates, for a passive cylinder's given force)."""
     if scene.input.given is not None:
         omega = W[scene.link(scene.input.crank).key]
-    t = input_torque(scene, V, W, omega)
+    t = input_torque(scene, V, W, omega, S)
     return None if t is None else np.broadcast_to(t, (n,)) + 0.0
 
 
@@ -426,7 +430,7 @@ def sweep(scene: Scene, angles=None, *, chunk: int = CHUNK) -> SweepResult:
         th = th[~bad]
     n = len(th)
     rub = rubbing_arrays(plan, fr.W, n)
-    torque = torque_array(scene, fr.V, fr.W, sw.omega, n)
+    torque = torque_array(scene, fr.V, fr.W, sw.omega, n, fr.S)
     return SweepResult(
         scene,
         plan,

@@ -557,13 +557,15 @@ class _Input:
             )
 
         vs = self.collar_rate(spec, vs_key, "velocity", rod.key, K, N, table)
-        if vs == 0:
-            raise self.error(f"{vs_key} is zero: nothing moves", table, vs_key)
         acc = (
             self.collar_rate(spec, as_key, "acceleration", rod.key, K, N, table)
             if as_key in spec
             else 0.0
         )
+        if vs == 0:  # at rest (the weights held, or starting with acc): per 1 m/s
+            if table != "input":
+                raise self.error(f"{vs_key} is zero: nothing moves", table, vs_key)
+            vs, acc = self.at_rest_driver(vs, acc, vs_key), 0.0
         if (s_key in spec) == (name in spec):
             raise self.error(
                 f"[{table}] gives the collar's place "

@@ -46,6 +46,7 @@ from .answers import _Answers
 from .tables import _suggest, _Tables
 from .variation import _Variants
 from .connected import _Connected
+from .cylinder_loads import _CylinderLoads
 
 _TOP_KEYS = frozenset(TOP_KEYS)
 #: the most a scene file may hold: a scene is a page of text (``/dev/zero`` is not read on)
@@ -199,7 +200,7 @@ def scene_from_table(raw: dict, file: str | None = None) -> Scene:
     return _Loader(raw, "", file).scene()
 
 
-class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected):
+class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected, _CylinderLoads):
     def __init__(self, raw: dict, text: str, file):
         self.raw = raw
         self.text = text
@@ -459,6 +460,7 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected
             assembly.setdefault(*hint)
         pins = self.pins(known)
         loads = self.loads(known)
+        cylinders = self.cylinder_loads(cylinders, inp)  # a force given in a passive one
         masses, gravity = self.masses(points, sliders), self.gravity()
         friction = self.friction(pins)
         indicator = self.indicator(sliders)

@@ -564,7 +564,7 @@ class _Tables:
 
     def loads(self, known):
         out = []
-        for name, spec in self.table("loads").items():
+        for name, spec in self.point_loads():  # (a cylinder's: scene/cylinder_loads.py)
             if not isinstance(spec, dict):
                 raise self.error(
                     'a load is { force = "2 kN", direction = 0 }, { force = '

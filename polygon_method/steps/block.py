@@ -221,6 +221,9 @@ class BlockDriver(Step):
         """What the motion's parameter is, in words (a sweep's domain, a table's column)."""
         return f"the place s_{self.point} of the block {self.point} along its guide"
 
+    #: what the motion is solved per where the driver is at rest (its virtual speed)
+    virtual_unit = "1 m/s of the block"
+
     @property
     def driver_name(self):
         """Body 2 of the centres' numbering: the block itself."""

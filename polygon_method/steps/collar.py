@@ -396,6 +396,11 @@ class CollarDriver(BlockDriver):
         )
 
     @property
+    def virtual_unit(self):
+        """What the motion is solved per at rest: the collar's sliding along its rod."""
+        return f"1 m/s of the collar {self.point} along its rod"
+
+    @property
     def driver_name(self):
         """Body 2 of the centres' numbering: the rod the collar is driven along."""
         return f"the rod {self.rod}, along which the collar {self.point} is driven,"

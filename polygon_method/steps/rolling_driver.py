@@ -182,6 +182,8 @@ class WheelDriver(BlockDriver):
             f"{self.wheel} along its line"
         )
 
+    virtual_unit = "1 rad/s of the wheel"
+
     @property
     def driver_name(self):
         """Body 2 of the centres' numbering: the wheel (its centre's path is no block)."""

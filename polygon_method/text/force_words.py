@@ -21,8 +21,14 @@ def start_words(sc) -> str:
     if not (sc.at_rest and a):
         return ""
     b = None if sc.input.crank is not None else sc.input.tip  # (a driving block, a wheel's centre)
+    rod = next((s.guide for s in sc.sliders if s.point == b and hasattr(s, "guide")), None)
+    way = (
+        f"{'outward along' if a > 0 else 'inward along'} its rod {rod}"  # a driving collar
+        if rod is not None
+        else f"{'along' if a > 0 else 'against'} its path"
+    )
     given, per = (
-        (f"as_{b} = {fmt(abs(a))} m/s^2 {'along' if a > 0 else 'against'} its path", f"m/s of {b}")
+        (f"as_{b} = {fmt(abs(a))} m/s^2 {way}", f"m/s of {b}")
         if b is not None
         else (
             f"alpha_{sc.input.crank} = {fmt(abs(a))} rad/s^2 {'ccw' if a > 0 else 'cw'}",

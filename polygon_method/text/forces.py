@@ -14,6 +14,7 @@ import math
 from ..solver.errorbound import SHOWN, USELESS
 from ..forces import FRAME
 from ..forces.bounds import NO_BOUND, force_bounds
+from ..forces.cylinder import given_forces, given_line
 from ..common.numbers import fmt, quiet, sense_word
 from ..common.tolerances import FLOOR
 from .force_polygons import body_name as _body, polygon_items as _polygon_items
@@ -179,6 +180,7 @@ def forces_lines(sol) -> list:
             f"guide at {g.point}: normal force on block {g.point} {_vec(g.force, F)}"
             + (f"; its couple {_moment(g.couple, M)}" if _rack_couple(f, g) else "")
         )
+    out += [given_line(sc, sol.S, k, v) for k, v in given_forces(f)]  # a strut, a damper
     for c in f.contacts:
         out.append(
             f"contact of {_wheel(c.wheel)} with {_base(c)}: normal "

@@ -287,6 +287,9 @@ def _torque_items(sol):
                 f"torque on {target}: T_{target} omega_{target} = "
                 f"{fmt(load.torque)} x {fmt(sol.W[target])} = {fmt(p)} W"
             )
+    for what, p in sol.power_terms[len(sc.loads) :]:  # a passive cylinder's given force
+        key = what.removeprefix("cylinder ")
+        out.append(f"{what}: F vs_{key.replace('-', '')} = {fmt(p)} W (its given force)")
     total = sum(p for _, p in sol.power_terms)
     t = sol.input_torque
     if block:

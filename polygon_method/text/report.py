@@ -50,7 +50,7 @@ def _given_lines(sol: Solution) -> list[str]:
     said = f" ({inp.angle_words})" if inp.angle_words else ""
     own = sol.plan.steps[0].input_words(sc)  # a block driver's; a crank's are written here
     if own is not None and sc.at_rest:  # a driving block or wheel at rest
-        per = "1 m/s of the block" if inp.wheel is None else "1 rad/s of the wheel"
+        per = sol.plan.steps[0].virtual_unit
         lines.append(
             f"{own} (at rest: nothing moves yet; the velocities and accelerations below are "
             f"per {per}, the virtual velocities of the power balance"

@@ -284,6 +284,26 @@ def _position_words(sol, st, space) -> str:
     return st.position_words(L, lambda point: _which(sol, point), angle)
 
 
+def _at_rest_items(sc, driver, items) -> list:
+    """A block's, a collar's or a wheel's input lines, at rest: the driver's zero stated
+    first, its unit speed in the polygons the virtual velocities, not given."""
+    if not sc.at_rest:
+        return items
+    a = sc.start_alpha
+    return [
+        f"at rest (nothing moves yet): the polygons are drawn per {driver.virtual_unit}, the "
+        "virtual velocities of the power balance ("
+        + (
+            f"starting from rest with {fmt(abs(a))} m/s^2"
+            f"{' of its centre' if 'rad/s' in driver.virtual_unit else ''}: the start's "
+            "accelerations are that times these velocities, section 6; the acceleration "
+            "diagram below, at this unit speed, is not the start's)"
+            if a
+            else "no inertia)"
+        )
+    ] + [x.replace("(given)", "(virtual: at rest)") for x in items]
+
+
 def _input(doc, sol):
     sc = sol.scene
     inp = sc.input
@@ -291,19 +311,18 @@ def _input(doc, sol):
     own = driver.input_items(sc, fmt)
     if own is not None:  # a driver of its own words (a wheel rolling on the ground)
         doc.h(f"2. {own[0]}")
-        doc.items(list(own[1]))
+        doc.items(_at_rest_items(sc, driver, list(own[1])))
         return
     if not driver.periodic:  # a block driven along its guide: its velocity and rate given
         doc.h(f"2. Input block {inp.tip}")
         vs, a_s = inp.omega, inp.alpha
-        doc.items(
-            [
-                f"vs_{inp.tip} = {fmt(abs(vs))} m/s {driver.sense(vs)} along the guide (given)",
-                f"as_{inp.tip} = {fmt(abs(a_s))} m/s^2 {driver.sense(a_s)} along the guide (given)"
-                if a_s
-                else f"as_{inp.tip} = 0 (the block moves at a steady speed)",
-            ]
-        )
+        items = [
+            f"vs_{inp.tip} = {fmt(abs(vs))} m/s {driver.sense(vs)} along the guide (given)",
+            f"as_{inp.tip} = {fmt(abs(a_s))} m/s^2 {driver.sense(a_s)} along the guide (given)"
+            if a_s
+            else f"as_{inp.tip} = 0 (the block moves at a steady speed)",
+        ]
+        doc.items(_at_rest_items(sc, driver, items))
         return
     second = inp.second and (inp.second.crank or f"collar {inp.second.block}")
     doc.h(f"2. Input link {inp.crank}" + (f" and {second}" if inp.second else ""))
