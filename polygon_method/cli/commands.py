@@ -38,11 +38,13 @@ def _engine_cycle(sol):
     the cycle (an indicator diagram, or a flywheel); else None (``sweep --summary`` gives
     it for any engine)."""
     sc = sol.scene
-    if sc.indicator is None and sc.flywheel is None:
+    if not sc.indicators and sc.flywheel is None:
         return None
     from ..common.errors import PolygonMethodError
     from ..linkage.flywheel import engine_piston, turning_moment
 
+    if sc.indicators and sol.forces_refused:
+        sol.forces  # the indicator's own refusal, in its words (a lag, a piston)
     if sol.forces_refused or engine_piston(sc) is None:
         if sc.flywheel is not None:
             raise PolygonMethodError(

@@ -33,13 +33,28 @@ import numpy as np
 from ..common.tolerances import ROUNDING
 from ..common.errors import PolygonMethodError
 from ..forces import analyse
-from ..forces.engine import efforts, engine_piston as _piston, geometry, piston_side
+from ..forces.engine import (
+    cylinder_efforts,
+    cylinders,
+    efforts,
+    engine_piston as _piston,
+    engine_pistons,
+    geometry,
+    piston_side,
+)
 from ..scene import Scene
 from ..motion.sweeps import sweep
 from ..solver.compiler import compile_plan
 from ..motion.solution import solve
 
-__all__ = ["TurningMoment", "Lobe", "turning_moment", "engine_piston", "turning_moment_at"]
+__all__ = [
+    "TurningMoment",
+    "Lobe",
+    "EngineCycle",
+    "turning_moment",
+    "engine_piston",
+    "turning_moment_at",
+]
 
 _PIECE = math.radians(5.0)
 _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(20)
@@ -168,14 +183,42 @@ class TurningMoment:
 
 
 def engine_piston(scene: Scene):
-    """The piston of an engine (see :func:`polygon_method.forces.engine.engine_piston`), or
-    None for a scene that is no engine."""
+    """The piston of an engine (see :func:`polygon_method.forces.engine.engine_piston`; of
+    several cylinders on one crank, the first's), or None for a scene that is no engine."""
     if not scene.has_forces and not any(ld.gas for ld in scene.loads):
         return None
-    return _piston(scene, compile_plan(scene))
+    plan = compile_plan(scene)
+    one = _piston(scene, plan)
+    if one is not None:
+        return one
+    many = engine_pistons(scene, plan)
+    return many[0] if many else None
 
 
-def _geometry(scene):
+@dataclass(frozen=True)
+class EngineCycle:
+    """The slider cranks whose turning moments make the diagram: ``parts``, each (its
+    indicator or None, its :class:`~polygon_method.forces.engine.SliderCrankGeometry`, its
+    lag: rad after the first's inner dead centre); ``many`` for several cylinders on one
+    crank (their turning moments summed); the phase counts from the first's inner dead
+    centre ``theta_i`` in the sense ``sg``."""
+
+    parts: tuple
+    many: bool
+    words: str = ""
+
+    @property
+    def theta_i(self) -> float:
+        """The first cylinder's inner dead centre (rad from +x): the diagram's start."""
+        return self.parts[0][1].theta_i
+
+    @property
+    def sg(self) -> float:
+        """The crank's sense of rotation (+1 ccw, -1 cw)."""
+        return self.parts[0][1].sg
+
+
+def _geometry(scene) -> EngineCycle:
     piston = engine_piston(scene)
     if piston is None:
         raise PolygonMethodError(
@@ -186,12 +229,31 @@ def _geometry(scene):
         )
     plan = compile_plan(scene)
     sol = solve(scene)
-    return geometry(scene, plan, piston, piston_side(scene, plan, sol.P, piston))
+    many = engine_pistons(scene, plan)
+    if not many:
+        g = geometry(scene, plan, piston, piston_side(scene, plan, sol.P, piston))
+        return EngineCycle(((scene.indicator, g, 0.0),), False)
+    cyl = {c.ind.piston: c for c in cylinders(scene, plan, sol.P)}
+    parts, words = [], []
+    for p in many:
+        if p in cyl:
+            c = cyl[p]
+            parts.append((c.ind, c.g, c.lag))
+            if len(parts) > 1:
+                how = "given" if c.lag_given else "the least: its first inner dead centre"
+                words.append(f"{p}'s cycle {math.degrees(c.lag):.6g} deg after {many[0]}'s ({how})")
+            continue
+        g = geometry(scene, plan, p, piston_side(scene, plan, sol.P, p))
+        g0 = parts[0][1] if parts else g
+        parts.append((None, g, (g0.sg * (g.theta_i - g0.theta_i)) % (2 * math.pi)))
+    head = f"the cylinders {', '.join(many)} on one crank, their turning moments summed"
+    return EngineCycle(tuple(parts), True, "; ".join([head] + words))
 
 
 def turning_moment_at(scene: Scene, g, phase):
     """The turning moment (N m, in the sense of rotation) at the phases ``phase`` (rad from
-    the inner dead centre, an array), solved with the forces at each."""
+    the inner dead centre, an array), solved with the forces at each (``g``: the
+    :class:`EngineCycle`; of several cylinders, the sum of their turning moments)."""
     phase = np.asarray(phase, dtype=float)
     theta = g.theta_i + g.sg * phase
     res = sweep(scene, theta)
@@ -201,26 +263,33 @@ def turning_moment_at(scene: Scene, g, phase):
             "solved: no turning moment over the cycle",
             file=scene.file,
         )
-    e = efforts(scene, res.plan, res.P, analyse(res))
-    return np.broadcast_to(e.T, theta.shape)
+    f = analyse(res)
+    if g.many:
+        T = sum(e.T for e in cylinder_efforts(scene, res.plan, res.P, f))
+    else:
+        T = efforts(scene, res.plan, res.P, f).T
+    return np.broadcast_to(T, theta.shape)
 
 
-def _breaks(scene, g, cycle) -> list:
-    """The phases (rad) where the turning moment may have a corner or a jump."""
+def _breaks(scene, eng, cycle) -> list:
+    """The phases (rad) where the turning moment may have a corner or a jump: each
+    cylinder's dead centres, its indicator's readings (or the stroke's places), in its own
+    phase shifted by its lag."""
     out = {0.0, cycle}
-    k = 0.0
-    while k < cycle:
-        out |= {k, k + g.phase_o}
-        k += 2 * math.pi
-    ind = scene.indicator
-    if ind is not None and ind.against == "angle":
-        for x in ind.x:
-            out.add(x % cycle)
-    elif ind is not None:  # the stroke's places, on each stroke
-        starts = sorted(p for p in out if p < cycle)
-        for a, b in zip(starts, starts[1:] + [cycle]):
-            for x in ind.x:
-                out.add(_phase_at_fraction(g, a, b, x))
+    for ind, g, lag in eng.parts:
+        own = set()
+        k = 0.0
+        while k < cycle:
+            own |= {k, k + g.phase_o}
+            k += 2 * math.pi
+        if ind is not None and ind.against == "angle":
+            own |= {x % cycle for x in ind.x}
+        elif ind is not None:  # the stroke's places, on each stroke
+            starts = sorted(p for p in own if p < cycle)
+            for a, b in zip(starts, starts[1:] + [cycle]):
+                for x in ind.x:
+                    own.add(_phase_at_fraction(g, a, b, x))
+        out |= {(p + lag) % cycle for p in own}
     return sorted(p for p in out if 0.0 <= p <= cycle)
 
 
@@ -335,6 +404,10 @@ def turning_moment(scene: Scene) -> TurningMoment:
         if ind is not None
         else "; ".join(ld.gas[2] for ld in scene.loads if ld.gas is not None)
     )
+    if g.many:
+        each = [f"{i.piston}: {i.words}" for i in scene.indicators]
+        gas = [f"{ld.target}: {ld.gas[2]}" for ld in scene.loads if ld.gas is not None]
+        words = "; ".join([g.words] + each + gas)
     return TurningMoment(
         cycle,
         math.degrees(g.theta_i),

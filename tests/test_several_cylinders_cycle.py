@@ -1,0 +1,308 @@
+"""Several cylinders on one crank under their indicator diagrams: each cylinder's gas force
+in its own phase ([indicator] with a sub-table per piston: a shared table with a lag, or the
+piston's own), the turning-moment diagram the sum over the cylinders, its mean, the
+fluctuation of energy and the flywheel.
+
+The references are independent of the tool:
+
+- at an instant, a V-twin and a radial with every body massive and gravity: the matrix
+  Newton-Euler method at 30 digits of ``test_several_cylinders`` (closed-form positions,
+  mpmath's differentiation), each cylinder's pressure interpolated here from its table at
+  its own phase;
+- over the cycle, the pistons alone massive (the books' reciprocating parts) and the crank
+  steady: the virtual power in closed form at 30 digits, ``T = sum_k (-p_k A - m w^2 s_k'')
+  s_k'`` (``s_k`` the piston's distance from the crank centre along its line, its
+  derivatives written out and held to mpmath's differentiation), the mean and the energies
+  by mpmath's quadrature between the corners of every cylinder's table, the crossings by
+  mpmath's root finder, to 1e-9.
+"""
+
+from __future__ import annotations
+
+import math
+
+import mpmath
+import pytest
+
+from polygon_method.cli import main
+from polygon_method.forces.engine import cylinder_efforts
+from polygon_method.linkage.flywheel import turning_moment
+from polygon_method.motion.solution import solve
+from polygon_method.scene import parse_scene
+
+from test_several_cylinders import R, L, VTWIN, RADIAL, reference, scene_text
+
+#: a four-stroke table (bar) against the crank angle from the inner dead centre
+ANGLES = [0, 180, 240, 300, 330, 360, 375, 390, 420, 450, 480, 540, 560, 720]
+BAR = [-0.1, -0.1, 0.8, 3.0, 6.0, 12.0, 40.0, 32.0, 18.0, 10.0, 6.0, 3.0, 0.2, -0.1]
+#: a two-stroke table (N/mm^2) for the radial's own tables
+ANGLES2 = [0, 20, 60, 120, 180, 240, 300, 345, 360]
+MPA2 = [3.5, 2.8, 1.2, 0.5, 0.1, 0.15, 0.6, 2.0, 3.5]
+MPA2_C = [2.0, 2.4, 1.0, 0.3, 0.05, 0.1, 0.4, 1.2, 2.0]
+
+
+def _indicator_tables(kind):
+    """The [indicator] text and {piston: (its table's angles deg, pressures Pa, lag deg)}."""
+    if kind == "v-twin":  # one shared four-stroke table, C's cycle 450 deg after B's
+        text = (
+            '[indicator]\nbore = 80\ncycle = "4-stroke"\nunit = "bar"\n'
+            f"angle = {ANGLES}\npressure = {BAR}\n[indicator.B]\n[indicator.C]\nlag = 450\n"
+        )
+        return text, {
+            "B": (ANGLES, [p * 1e5 for p in BAR], 0),
+            "C": (ANGLES, [p * 1e5 for p in BAR], 450),
+        }
+    # the radial: two-stroke, B and D the shared table, C its own; the lags left to the
+    # geometry (C's inner dead centre 120 deg after B's, D's 240 deg)
+    text = (
+        '[indicator]\nbore = 80\nunit = "N/mm^2"\n'
+        f"angle = {ANGLES2}\npressure = {MPA2}\n[indicator.B]\n"
+        f"[indicator.C]\nangle = {ANGLES2}\npressure = {MPA2_C}\n[indicator.D]\n"
+    )
+    mpa = [p * 1e6 for p in MPA2]
+    return text, {
+        "B": (ANGLES2, mpa, 0),
+        "C": (ANGLES2, [p * 1e6 for p in MPA2_C], 120),
+        "D": (ANGLES2, mpa, 240),
+    }
+
+
+def _interp(xs, ps, x):
+    """The table's value at ``x`` (deg, within it), linear between readings."""
+    for a, b, pa, pb in zip(xs, xs[1:], ps, ps[1:]):
+        if a <= x <= b:
+            return pa + (pb - pa) * (x - a) / (b - a)
+    raise AssertionError(x)
+
+
+def _massive_scene(cyl, kind, angle):
+    """``test_several_cylinders``' scene (every body massive, gravity) with the indicator
+    in place of the steady pressures."""
+    text = scene_text(cyl, angle)
+    text = text[: text.index("[loads]")]
+    return text + _indicator_tables(kind)[0]
+
+
+@pytest.mark.parametrize(
+    "cyl, kind, angle",
+    [
+        (VTWIN, "v-twin", 400.0),
+        (VTWIN, "v-twin", 100.0),
+        (VTWIN, "v-twin", 650.0),
+        (RADIAL, "radial", 30.0),
+        (RADIAL, "radial", 250.0),
+    ],
+)
+def test_each_cylinder_in_its_phase_against_the_matrix_method(cyl, kind, angle):
+    _, tables = _indicator_tables(kind)
+    first = next(iter(cyl))
+    cycle = 720 if kind == "v-twin" else 360
+    pressures = {}
+    for p, (deg, _) in cyl.items():
+        xs, ps, lag = tables[p]
+        phase = (angle - cyl[first][0] - lag) % cycle  # the crank angle from its own i.d.c.
+        pressures[p] = (deg, _interp(xs, ps, phase) / 1e6)  # N/mm^2, as the reference takes
+    ref = reference(pressures, angle)
+    sol = solve(parse_scene(_massive_scene(cyl, kind, angle)))
+    size = max(abs(v) for v in ref.values())
+    es = cylinder_efforts(sol.scene, sol.plan, sol.P, sol.forces)
+    assert [e.piston for e in es] == list(cyl)
+    for e in es:
+        assert e.F_T == pytest.approx(ref["F_T" + e.piston], abs=1e-9 * size)
+        assert e.F_P == pytest.approx(ref["F_P" + e.piston], abs=1e-9 * size)
+    total = sum(ref["F_T" + p] for p in cyl) * R
+    assert sum(e.T for e in es) == pytest.approx(total, abs=1e-9 * size * R)
+    assert sol.forces.input_torque == pytest.approx(ref["T"], abs=1e-9 * size * R)
+
+
+# -- over the cycle: the pistons alone massive, the virtual power in closed form ----------
+
+M_PISTON, W = 1.2, 3000 * math.pi / 30
+AREA = math.pi / 4 * 0.08**2
+
+
+def _cycle_scene(cyl, kind, flywheel=True):
+    links = "\n".join(f"A{p} = 240" for p in cyl)
+    sliders = "\n".join(f'{p} = {{ path = {a}, through = "O" }}' for p, (a, _) in cyl.items())
+    masses = "\n".join(f'{p} = {{ mass = "{M_PISTON} kg" }}' for p in cyl)
+    assembly = "\n".join(f'{p} = "{"above" if a < 180 else "below"}"' for p, (a, _) in cyl.items())
+    fw = '[flywheel]\nplus_minus = "1%"\nradius = 150\n' if flywheel else ""
+    return f"""
+title = "cylinders on one crank over the cycle"
+units = "mm"
+[ground]
+O = [0, 0]
+[links]
+OA = 60
+{links}
+[sliders]
+{sliders}
+[assembly]
+{assembly}
+[input]
+crank = "OA"
+angle = 45
+speed = "3000 rpm ccw"
+[masses]
+{masses}
+{_indicator_tables(kind)[0]}
+{fw}"""
+
+
+class _Reference:
+    """The summed turning moment against the diagram's phase (rad from the first
+    cylinder's inner dead centre) in closed form at 30 digits."""
+
+    def __init__(self, cyl, kind):
+        self.cyl, self.tables = cyl, _indicator_tables(kind)[1]
+        self.cycle = 720 if kind == "v-twin" else 360
+        self.first = cyl[next(iter(cyl))][0]
+
+    @staticmethod
+    def s_derivatives(psi):
+        """s', s'' (d/dtheta) of the piston's distance s = r cos psi + sqrt(l^2 - r^2
+        sin^2 psi), psi the crank's angle from the piston's line."""
+        r, l = mpmath.mpf(R), mpmath.mpf(L)
+        sn, cs = mpmath.sin(psi), mpmath.cos(psi)
+        q = mpmath.sqrt(l * l - r * r * sn * sn)
+        d1 = -r * sn - r * r * sn * cs / q
+        d2 = -r * cs - r * r * (cs * cs - sn * sn) / q - r**4 * sn * sn * cs * cs / q**3
+        return d1, d2
+
+    def __call__(self, phase):
+        theta_deg = self.first + mpmath.degrees(phase)
+        total = mpmath.mpf(0)
+        for p, (deg, _) in self.cyl.items():
+            xs, ps, lag = self.tables[p]
+            own = (mpmath.degrees(phase) - lag) % self.cycle
+            pr = _interp(xs, ps, own)
+            d1, d2 = self.s_derivatives(mpmath.radians(theta_deg - deg))
+            total += (-pr * AREA - M_PISTON * W**2 * d2) * d1
+        return total
+
+    def corners(self):
+        """The phases (rad) where a cylinder's pressure has a corner: its table's angles
+        shifted by its lag."""
+        out = {0.0, float(self.cycle)}
+        for xs, _, lag in self.tables.values():
+            out |= {(x + lag) % self.cycle for x in xs}
+        return [mpmath.radians(x) for x in sorted(out)]
+
+    def integral(self, a, b):
+        """int_a^b T dphase (a < b within the cycle) between the corners."""
+        cuts = [a] + [c for c in self.corners() if a < c < b] + [b]
+        return mpmath.quad(self, cuts)
+
+
+def test_the_written_out_derivatives_are_mpmaths():
+    with mpmath.workdps(30):
+        for psi in (0.3, 1.9, 4.4):
+            d1, d2 = _Reference.s_derivatives(mpmath.mpf(psi))
+
+            def s(t):
+                return R * mpmath.cos(t) + mpmath.sqrt(L**2 - R**2 * mpmath.sin(t) ** 2)
+
+            assert abs(d1 - mpmath.diff(s, psi)) < 1e-15
+            assert abs(d2 - mpmath.diff(s, psi, 2)) < 1e-12
+
+
+@pytest.mark.parametrize(
+    "cyl, kind", [(VTWIN, "v-twin"), (RADIAL, "radial")], ids=["v-twin", "radial"]
+)
+def test_the_cycle_of_the_summed_diagram_against_the_quadrature(cyl, kind):
+    sc = parse_scene(_cycle_scene(cyl, kind))
+    tm = turning_moment(sc)
+    ref = _Reference(cyl, kind)
+    with mpmath.workdps(30):
+        cycle = mpmath.radians(ref.cycle)
+        work = ref.integral(mpmath.mpf(0), cycle)
+        mean = work / cycle
+        size = float(max(abs(ref(mpmath.radians(x))) for x in range(0, ref.cycle, 2)))
+        assert tm.mean == pytest.approx(float(mean), abs=1e-9 * size)
+        # the crossings: every sign change of T - mean on a 0.1 deg grid, refined here
+        grid = [mpmath.radians(x / 10) for x in range(0, 10 * ref.cycle + 1)]
+        vals = [ref(x) - mean for x in grid]
+        roots = []
+        for a, b, fa, fb in zip(grid, grid[1:], vals, vals[1:]):
+            if fa * fb < 0:
+                roots.append(mpmath.findroot(lambda x: ref(x) - mean, (a, b), solver="anderson"))
+        assert len(tm.crossings) == len(roots) >= 2
+        for got, want in zip(tm.crossings, roots):
+            assert got == pytest.approx(float(mpmath.degrees(want)), abs=1e-9 * ref.cycle)
+        # the energy at each crossing, from the first, by quadrature of T - mean
+        E = [mpmath.mpf(0)]
+        for a, b in zip(roots, roots[1:]):
+            E.append(E[-1] + ref.integral(a, b) - mean * (b - a))
+        dE = max(E) - min(E)
+        assert tm.dE_max == pytest.approx(float(dE), rel=1e-9)
+        areas = [b - a for a, b in zip(E, E[1:])] + [E[0] - E[-1]]
+        assert [lb.energy for lb in tm.lobes] == pytest.approx(
+            [float(x) for x in areas], abs=1e-9 * float(dE)
+        )
+        cs, w, inertia, mass = tm.flywheel
+        assert (cs, w) == (0.02, pytest.approx(W, rel=1e-15))
+        assert inertia == pytest.approx(float(dE / (W**2 * 0.02)), rel=1e-9)
+        assert mass == pytest.approx(float(dE / (W**2 * 0.02) / mpmath.mpf("0.15") ** 2), rel=1e-9)
+
+
+def test_a_shared_table_gives_each_cylinder_the_work_of_one():
+    """Two cylinders on one table do twice one cylinder's work per cycle (the inertia does
+    none): the mean torque is twice the single cylinder's."""
+    sc = parse_scene(_cycle_scene(VTWIN, "v-twin", flywheel=False))
+    tm = turning_moment(sc)
+    with mpmath.workdps(30):  # one cylinder's work: its turning moment over the cycle
+        ref = _Reference({"B": VTWIN["B"]}, "v-twin")
+        one = ref.integral(mpmath.mpf(0), mpmath.radians(720))
+    assert tm.mean == pytest.approx(2 * float(one) / (4 * math.pi), rel=1e-9)
+
+
+def _views(tmp_path, text, *args):
+    path = tmp_path / "e.toml"
+    path.write_text(text)
+    return main([*args, str(path)])
+
+
+def test_solve_json_and_the_summary_give_the_cycle(tmp_path, capsys):
+    text = _cycle_scene(VTWIN, "v-twin")
+    tm = turning_moment(parse_scene(text))
+    assert _views(tmp_path, text, "solve") == 0
+    out = capsys.readouterr().out
+    assert "the cylinders B, C on one crank, their turning moments summed" in out
+    assert "C's cycle 450 deg after B's (given)" in out
+    assert "dE_max = E_max - E_min" in out and f"{tm.dE_max:.6g} J" in out
+    assert _views(tmp_path, text, "solve", "--json") == 0
+    import json
+
+    d = json.loads(capsys.readouterr().out)["turning_moment"]
+    assert d["dE_max"] == pytest.approx(tm.dE_max, rel=1e-12)
+    assert d["flywheel"]["I"] == pytest.approx(tm.flywheel[2], rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    "old, new, words",
+    [
+        ("lag = 450", "lag = 400", "lag = 90, 450 (deg)"),
+        ("[indicator.B]\n", "[indicator.B]\nlag = 30\n", "[indicator.B] lag"),
+        (
+            'cycle = "4-stroke"\n',
+            'cycle = "4-stroke"\npiston = "B"\n',
+            "the sub-tables name the pistons",
+        ),
+        (
+            "lag = 450",
+            'lag = 450\ncycle = "2-stroke"\nangle = [0, 360]\npressure = [1, 1]',
+            "share their cycle",
+        ),
+        ("lag = 450", "lag = 450\nbores = 80", "[indicator.C] bores"),
+        ("lag = 450", "lag = 900", "[indicator.C] lag"),
+        ("[indicator.C]", "[indicator.E]", "[indicator.E] piston"),
+    ],
+)
+def test_a_bad_indicator_of_several_cylinders_is_one_line(tmp_path, capsys, old, new, words):
+    text = _cycle_scene(VTWIN, "v-twin")
+    assert old in text
+    path = tmp_path / "bad.toml"
+    path.write_text(text.replace(old, new, 1))
+    assert main(["solve", str(path)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and words in err, err
