@@ -306,3 +306,104 @@ def test_a_bad_indicator_of_several_cylinders_is_one_line(tmp_path, capsys, old,
     assert main(["solve", str(path)]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and words in err, err
+
+
+# -- check: each cylinder's keys --------------------------------------------------------
+
+
+def _check(tmp_path, capsys, text, answers):
+    path = tmp_path / "a.toml"
+    path.write_text(text + "[answers]\n" + answers)
+    code = main(["check", str(path), "--json"])
+    import json
+
+    return code, json.loads(capsys.readouterr().out)
+
+
+def _given(v):
+    return f"{v:.10g}"
+
+
+@pytest.mark.parametrize("cyl, kind, angle", [(VTWIN, "v-twin", 400.0), (RADIAL, "radial", 250.0)])
+def test_each_pistons_keys_against_the_matrix_method(tmp_path, capsys, cyl, kind, angle):
+    ref = reference(_pressures(cyl, kind, angle), angle)
+    lines = []
+    for p in cyl:
+        lines += [
+            f'piston_effort_{p} = "{_given(abs(ref["F_P" + p]))} N"',
+            f'crank_effort_{p} = "{_given(abs(ref["F_T" + p]))} N"',
+            f'turning_moment_{p} = "{_given(abs(ref["F_T" + p] * R))} N m"',
+            f'rod_thrust_{p} = "{_given(math.hypot(ref[f"P{p}.x"], ref[f"P{p}.y"]))} N"',
+            f'side_thrust_{p} = "{_given(abs(ref["N" + p]))} N"',
+        ]
+    code, out = _check(tmp_path, capsys, _massive_scene(cyl, kind, angle), "\n".join(lines) + "\n")
+    verdicts = out["answers"]
+    assert code == 0 and len(verdicts) == 5 * len(cyl)
+    for v in verdicts:  # the tool's own value, to the matrix method's
+        assert v["verdict"] == "right" and v["correct"] == pytest.approx(v["given"], rel=1e-9)
+
+
+def _pressures(cyl, kind, angle):
+    """{piston: (its line's angle, its pressure N/mm^2 at ``angle``)} from its table."""
+    _, tables = _indicator_tables(kind)
+    first = next(iter(cyl))
+    cycle = 720 if kind == "v-twin" else 360
+    out = {}
+    for p, (deg, _) in cyl.items():
+        xs, ps, lag = tables[p]
+        out[p] = (deg, _interp(xs, ps, (angle - cyl[first][0] - lag) % cycle) / 1e6)
+    return out
+
+
+def test_a_pistons_inertia_left_out_is_named_for_that_piston(tmp_path, capsys, monkeypatch):
+    """The piston effort and crank effort of C given as if its piston had no mass: the
+    matrix method with C's piston massless (and weightless) gives the slip's values."""
+    import test_several_cylinders as ts
+
+    angle = 400.0
+    pr = _pressures(VTWIN, "v-twin", angle)
+    right = reference(pr, angle)
+    text = _massive_scene(VTWIN, "v-twin", angle)
+    monkeypatch.setattr(ts, "M_PISTON", 0.0)
+    slip = reference(pr, angle)
+    assert abs(slip["F_PC"] - right["F_PC"]) > 0.05 * abs(right["F_PC"])  # (a slip to tell)
+    answers = (
+        f'piston_effort_C = "{_given(abs(slip["F_PC"]))} N"\n'
+        f'crank_effort_C = "{_given(abs(slip["F_TC"]))} N"\n'
+    )
+    code, out = _check(tmp_path, capsys, text, answers)
+    assert code == 1
+    for v in out["answers"]:
+        assert v["verdict"] == "wrong" and v["mistake"] == "piston_inertia_left_out", v
+
+
+@pytest.mark.parametrize(
+    "key, words",
+    [
+        ("piston_effort", "name the piston, piston_effort_B"),
+        ("side_thrust", "name the piston, side_thrust_B"),
+        ("piston_effort_Z", "Z is no slider of the scene"),
+        ("crank_effort_A", "A is no slider of the scene"),
+    ],
+)
+def test_a_key_of_no_cylinder_is_one_line(tmp_path, capsys, key, words):
+    path = tmp_path / "a.toml"
+    path.write_text(_cycle_scene(VTWIN, "v-twin") + f'[answers]\n{key} = "100 N"\n')
+    assert main(["check", str(path)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and words in err and f"[answers] {key}" in err, err
+
+
+def test_the_cycles_keys_and_their_slips(tmp_path, capsys):
+    text = _cycle_scene(VTWIN, "v-twin")
+    tm = turning_moment(parse_scene(text))
+    inertia = tm.flywheel[2]
+    answers = (
+        f'T_mean = "{_given(2 * tm.mean)} N m"\ndE_max = "{_given(tm.dE_max)} J"\n'
+        f'I_flywheel = "{_given(2 * inertia)} kg m^2"\nm_flywheel = "{_given(tm.flywheel[3])} kg"\n'
+    )
+    code, out = _check(tmp_path, capsys, text, answers)
+    verdicts = out["answers"]
+    assert [v["verdict"] for v in verdicts] == ["wrong", "right", "wrong", "right"]
+    assert verdicts[0]["mistake"] == "one_turn_cycle"  # a four-stroke's work over one turn
+    assert verdicts[2]["mistake"] == "cs_half_range"
