@@ -22,6 +22,7 @@ from __future__ import annotations
 import math
 
 import mpmath
+import numpy as np
 import pytest
 
 from polygon_method.cli import main
@@ -407,3 +408,47 @@ def test_the_cycles_keys_and_their_slips(tmp_path, capsys):
     assert [v["verdict"] for v in verdicts] == ["wrong", "right", "wrong", "right"]
     assert verdicts[0]["mistake"] == "one_turn_cycle"  # a four-stroke's work over one turn
     assert verdicts[2]["mistake"] == "cs_half_range"
+
+
+# -- the sweep's views ----------------------------------------------------------------
+
+
+def test_the_sweep_csv_summary_and_plot_of_the_summed_diagram(tmp_path, capsys):
+    import csv
+
+    text = _cycle_scene(VTWIN, "v-twin")
+    path = tmp_path / "e.toml"
+    path.write_text(text)
+    out = tmp_path / "e.csv"
+    assert main(["sweep", str(path), "--csv", str(out), "--steps", "36"]) == 0
+    rows = list(csv.DictReader(out.open()))
+    assert len(rows) == 72 and float(rows[-1]["theta [deg]"]) > 360  # the 720 deg cycle
+    ref = _Reference(VTWIN, "v-twin")
+    with mpmath.workdps(30):
+        for row in rows[::5]:  # each row's crank angle, as the diagram's phase from B's
+            phase = mpmath.radians(float(row["theta [deg]"]) - VTWIN["B"][0])
+            want = float(ref(phase % (4 * mpmath.pi)))
+            assert float(row["turning_moment [N m]"]) == pytest.approx(want, abs=1e-9 * 1e3)
+    capsys.readouterr()
+    assert main(["sweep", str(path), "--summary"]) == 0
+    summary = capsys.readouterr().out
+    tm = turning_moment(parse_scene(text))
+    assert "the cylinders B, C on one crank, their turning moments summed" in summary
+    assert f"dE_max = E_max - E_min = {tm.E_max:.6g} - ({tm.E_min:.6g})" in summary
+    from polygon_method.draw.plots import plot_figure
+    from polygon_method.motion.sweeps import sweep
+
+    sc = parse_scene(text)
+    fig = plot_figure(sweep(sc, np.radians(np.arange(0.0, 720.0, 10.0))))
+    panel = fig.axes[-1]
+    labels = [ln.get_label() for ln in panel.lines]
+    assert {"cylinder B", "cylinder C", "turning moment T (the sum)"} <= set(labels)
+    assert "inner dead centre of B" in panel.get_xlabel()
+    lines = {ln.get_label(): ln for ln in panel.lines}
+    x = lines["turning moment T (the sum)"].get_xdata()
+    total = lines["turning moment T (the sum)"].get_ydata()
+    parts = lines["cylinder B"].get_ydata() + lines["cylinder C"].get_ydata()
+    assert np.allclose(total, parts, rtol=0, atol=1e-9 * np.abs(total).max())
+    with mpmath.workdps(30):
+        for k in (0, 200, 777, 1300):  # the plotted sum at its phase, to the closed form
+            assert total[k] == pytest.approx(float(ref(mpmath.radians(x[k]))), abs=1e-9 * 1e3)

@@ -54,6 +54,7 @@ __all__ = [
     "turning_moment",
     "engine_piston",
     "turning_moment_at",
+    "cylinder_moments_at",
 ]
 
 _PIECE = math.radians(5.0)
@@ -254,6 +255,13 @@ def turning_moment_at(scene: Scene, g, phase):
     """The turning moment (N m, in the sense of rotation) at the phases ``phase`` (rad from
     the inner dead centre, an array), solved with the forces at each (``g``: the
     :class:`EngineCycle`; of several cylinders, the sum of their turning moments)."""
+    parts = cylinder_moments_at(scene, g, phase)
+    return parts[0][1] if len(parts) == 1 else sum(T for _, T in parts)
+
+
+def cylinder_moments_at(scene: Scene, g, phase) -> tuple:
+    """((piston, its turning moment at each phase, N m), ...): each cylinder's part of the
+    turning moment (one for a single cylinder), at the phases ``phase`` (rad)."""
     phase = np.asarray(phase, dtype=float)
     theta = g.theta_i + g.sg * phase
     res = sweep(scene, theta)
@@ -264,11 +272,9 @@ def turning_moment_at(scene: Scene, g, phase):
             file=scene.file,
         )
     f = analyse(res)
-    if g.many:
-        T = sum(e.T for e in cylinder_efforts(scene, res.plan, res.P, f))
-    else:
-        T = efforts(scene, res.plan, res.P, f).T
-    return np.broadcast_to(T, theta.shape)
+    es = cylinder_efforts(scene, res.plan, res.P, f) if g.many else ()
+    es = es or (efforts(scene, res.plan, res.P, f),)
+    return tuple((e.piston, np.broadcast_to(e.T, theta.shape)) for e in es)
 
 
 def _breaks(scene, eng, cycle) -> list:
