@@ -452,3 +452,62 @@ def test_the_sweep_csv_summary_and_plot_of_the_summed_diagram(tmp_path, capsys):
     with mpmath.workdps(30):
         for k in (0, 200, 777, 1300):  # the plotted sum at its phase, to the closed form
             assert total[k] == pytest.approx(float(ref(mpmath.radians(x[k]))), abs=1e-9 * 1e3)
+
+
+def test_the_worked_v_twin_against_the_closed_form(capsys):
+    """``worked_problems/vtwin_flywheel.toml`` (this file's V-twin, its instant 390 deg after
+    B's inner dead centre): each stated answer to the virtual power in closed form to its
+    four figures, the tool's to 1e-9, and ``check`` holds them all."""
+    from pathlib import Path
+
+    from polygon_method.scene import load_scene
+
+    path = Path(__file__).resolve().parent.parent / "worked_problems" / "vtwin_flywheel.toml"
+    sc = load_scene(path)
+    ref = _Reference(VTWIN, "v-twin")
+    want = {}
+    with mpmath.workdps(30):
+        total = mpmath.mpf(0)
+        for p, (deg, _) in VTWIN.items():
+            xs, ps, lag = ref.tables[p]
+            pr = _interp(xs, ps, (435 - VTWIN["B"][0] - lag) % 720)
+            d1, d2 = ref.s_derivatives(mpmath.radians(435 - deg))
+            F_P = pr * AREA + M_PISTON * W**2 * d2  # towards the crank
+            want[f"piston_effort_{p}"] = F_P
+            want[f"crank_effort_{p}"] = -F_P * d1 / R
+            want[f"turning_moment_{p}"] = -F_P * d1
+            total += -F_P * d1
+        want["turning_moment"] = total
+        cycle = 4 * mpmath.pi
+        mean = ref.integral(mpmath.mpf(0), cycle) / cycle
+        want["T_mean"] = mean
+        tm = turning_moment(sc)
+        roots = [
+            mpmath.findroot(lambda x: ref(x) - mean, mpmath.radians(c), tol=1e-25)
+            for c in tm.crossings
+        ]
+        E = [mpmath.mpf(0)]
+        for a, b in zip(roots, roots[1:]):
+            E.append(E[-1] + ref.integral(a, b) - mean * (b - a))
+        dE = max(E) - min(E)
+        want["dE_max"] = dE
+        want["I_flywheel"] = dE / (W**2 * mpmath.mpf("0.02"))
+        want["m_flywheel"] = want["I_flywheel"] / mpmath.mpf("0.15") ** 2
+    assert tm.mean == pytest.approx(float(mean), rel=1e-9)
+    assert tm.dE_max == pytest.approx(float(dE), rel=1e-9)
+    stated = {a.key: a.value for a in sc.answers}
+    assert set(stated) == set(want) - {"piston_effort_C", "crank_effort_C"}
+    for key, v in stated.items():  # to the four figures stated
+        assert v == pytest.approx(abs(float(want[key])), rel=6e-4), key
+    assert main(["check", str(path)]) == 0
+    assert "9 of 9 right" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("command", [["solve"], ["steps"], ["sweep", "--summary"], ["check"]])
+def test_a_lag_off_the_inner_dead_centre_is_refused_by_every_view(tmp_path, capsys, command):
+    text = _cycle_scene(VTWIN, "v-twin").replace("lag = 450", "lag = 400")
+    path = tmp_path / "bad.toml"
+    path.write_text(text + '[answers]\nT_mean = "100 N m"\n')
+    assert main([*command, str(path)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "lag = 90, 450 (deg)" in err, err
