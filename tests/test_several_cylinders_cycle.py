@@ -40,6 +40,15 @@ BAR = [-0.1, -0.1, 0.8, 3.0, 6.0, 12.0, 40.0, 32.0, 18.0, 10.0, 6.0, 3.0, 0.2, -
 ANGLES2 = [0, 20, 60, 120, 180, 240, 300, 345, 360]
 MPA2 = [3.5, 2.8, 1.2, 0.5, 0.1, 0.15, 0.6, 2.0, 3.5]
 MPA2_C = [2.0, 2.4, 1.0, 0.3, 0.05, 0.1, 0.4, 1.2, 2.0]
+#: a four-stroke table against the stroke (fractions from the inner dead centre; bar, one
+#: row a stroke: suction, compression, expansion, exhaust)
+PLACES = [0, 0.1, 0.25, 0.5, 0.75, 1]
+ROWS = [
+    [-0.1, -0.15, -0.15, -0.1, -0.1, 0.0],
+    [0.0, 0.8, 1.5, 3.0, 6.0, 12.0],
+    [40.0, 30.0, 18.0, 9.0, 5.0, 3.0],
+    [0.2, 0.15, 0.1, 0.1, 0.0, -0.1],
+]
 
 
 def _indicator_tables(kind):
@@ -53,6 +62,14 @@ def _indicator_tables(kind):
             "B": (ANGLES, [p * 1e5 for p in BAR], 0),
             "C": (ANGLES, [p * 1e5 for p in BAR], 450),
         }
+    if kind == "stroke":  # a V-twin on one four-stroke table against the stroke, C's lag
+        # left to the geometry (90 deg: its inner dead centre on the first turn)
+        text = (
+            '[indicator]\nbore = 80\ncycle = "4-stroke"\nunit = "bar"\n'
+            f"stroke = {PLACES}\npressure = {ROWS}\n[indicator.B]\n[indicator.C]\n"
+        )
+        rows = [[p * 1e5 for p in row] for row in ROWS]
+        return text, {"B": (PLACES, rows, 0, "stroke"), "C": (PLACES, rows, 90, "stroke")}
     # the radial: two-stroke, B and D the shared table, C its own; the lags left to the
     # geometry (C's inner dead centre 120 deg after B's, D's 240 deg)
     text = (
@@ -156,7 +173,7 @@ class _Reference:
 
     def __init__(self, cyl, kind):
         self.cyl, self.tables = cyl, _indicator_tables(kind)[1]
-        self.cycle = 720 if kind == "v-twin" else 360
+        self.cycle = 360 if kind == "radial" else 720
         self.first = cyl[next(iter(cyl))][0]
 
     @staticmethod
@@ -174,19 +191,36 @@ class _Reference:
         theta_deg = self.first + mpmath.degrees(phase)
         total = mpmath.mpf(0)
         for p, (deg, _) in self.cyl.items():
-            xs, ps, lag = self.tables[p]
+            xs, ps, lag = self.tables[p][:3]
             own = (mpmath.degrees(phase) - lag) % self.cycle
-            pr = _interp(xs, ps, own)
-            d1, d2 = self.s_derivatives(mpmath.radians(theta_deg - deg))
+            psi = mpmath.radians(theta_deg - deg)
+            if len(self.tables[p]) == 4:  # against the stroke: the row of its stroke
+                s = R * mpmath.cos(psi) + mpmath.sqrt(L**2 - R**2 * mpmath.sin(psi) ** 2)
+                x = min(max((L + R - s) / (2 * R), 0), 1)
+                pr = _interp(xs, ps[min(int(own // 180), 3)], x)
+            else:
+                pr = _interp(xs, ps, own)
+            d1, d2 = self.s_derivatives(psi)
             total += (-pr * AREA - M_PISTON * W**2 * d2) * d1
         return total
 
     def corners(self):
         """The phases (rad) where a cylinder's pressure has a corner: its table's angles
         shifted by its lag."""
-        out = {0.0, float(self.cycle)}
-        for xs, _, lag in self.tables.values():
-            out |= {(x + lag) % self.cycle for x in xs}
+        out = {mpmath.mpf(0), mpmath.mpf(self.cycle)}
+        for table in self.tables.values():
+            xs, _, lag = table[:3]
+            if len(table) == 4:  # the dead centres and the places of stroke, each stroke
+                out |= {mpmath.mpf((k * 180 + lag) % self.cycle) for k in range(4)}
+                for k in range(4):
+                    for x in xs:  # cos psi where the piston is at x: the cosine rule
+                        s = L + R - 2 * R * mpmath.mpf(x)
+                        c = min(max((s * s + R * R - L * L) / (2 * R * s), -1), 1)
+                        a = mpmath.degrees(mpmath.acos(c))
+                        own = k * 180 + (a if k % 2 == 0 else 180 - a)
+                        out.add((own + lag) % self.cycle)
+            else:
+                out |= {mpmath.mpf((x + lag) % self.cycle) for x in xs}
         return [mpmath.radians(x) for x in sorted(out)]
 
     def integral(self, a, b):
@@ -208,12 +242,16 @@ def test_the_written_out_derivatives_are_mpmaths():
 
 
 @pytest.mark.parametrize(
-    "cyl, kind", [(VTWIN, "v-twin"), (RADIAL, "radial")], ids=["v-twin", "radial"]
+    "cyl, kind",
+    [(VTWIN, "v-twin"), (RADIAL, "radial"), (VTWIN, "stroke")],
+    ids=["v-twin", "radial", "against-the-stroke"],
 )
 def test_the_cycle_of_the_summed_diagram_against_the_quadrature(cyl, kind):
     sc = parse_scene(_cycle_scene(cyl, kind))
     tm = turning_moment(sc)
     ref = _Reference(cyl, kind)
+    if kind == "stroke":  # the default lag is said
+        assert "C's cycle 90 deg after B's (the least: its first inner dead centre)" in tm.words
     with mpmath.workdps(30):
         cycle = mpmath.radians(ref.cycle)
         work = ref.integral(mpmath.mpf(0), cycle)
