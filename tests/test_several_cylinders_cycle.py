@@ -549,3 +549,23 @@ def test_a_lag_off_the_inner_dead_centre_is_refused_by_every_view(tmp_path, caps
     assert main([*command, str(path)]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and "lag = 90, 450 (deg)" in err, err
+
+
+def test_steps_gives_the_books_table_of_the_areas(tmp_path, capsys):
+    text = _cycle_scene(VTWIN, "v-twin")
+    tm = turning_moment(parse_scene(text))
+    assert _views(tmp_path, text, "steps") == 0
+    out = capsys.readouterr().out
+    assert "The turning-moment diagram" in out and "running sum (J)" in out
+    table = out[out.index("running sum (J)") :].split("\n\n")[0].splitlines()[2:]
+    rows = [[float(x) for x in line.split()] for line in table]
+    assert len(rows) == len(tm.lobes)
+    run = 0.0
+    for k, (row, lb) in enumerate(zip(rows, tm.lobes)):  # each area, its running sum
+        run += lb.energy
+        assert row[:4] == [k + 1, round(lb.start, 3), round(lb.end, 3), float(f"{lb.energy:.6g}")]
+        assert row[4] == pytest.approx(run, abs=1e-5 * tm.dE_max)
+    assert rows[-1][4] == 0.0  # the cycle closes on itself
+    assert f"dE_max = E_max - E_min = {tm.E_max:.6g}" in out
+    assert _views(tmp_path, text, "steps", "--format", "markdown") == 0
+    assert "| area | from (deg) |" in capsys.readouterr().out

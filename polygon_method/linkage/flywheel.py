@@ -55,6 +55,7 @@ __all__ = [
     "engine_piston",
     "turning_moment_at",
     "cylinder_moments_at",
+    "cycle_blocks",
 ]
 
 _PIECE = math.radians(5.0)
@@ -448,3 +449,46 @@ def engine_cycle_lines(scene: Scene) -> list:
         return turning_moment(scene).lines(scene)
     except PolygonMethodError as exc:
         return [f"turning moment over the cycle: not found ({exc.message})"]
+
+
+def cycle_blocks(sol) -> list:
+    """The ``steps`` document's blocks for an engine that asks for its cycle (``[indicator]``
+    or ``[flywheel]``): the turning moment over the cycle, the book's table of the areas
+    between it and the mean line with their running sums, the fluctuation of energy and the
+    flywheel; none for another scene."""
+    sc = sol.scene
+    if not sc.indicators and sc.flywheel is None:
+        return []
+    try:
+        if sol.forces_refused or engine_piston(sc) is None:
+            return []
+        tm = turning_moment(sc)
+    except PolygonMethodError as exc:
+        return [("h", "The turning-moment diagram"), ("p", f"not found: {exc.message}")]
+    lines = tm.lines(sc)
+    out = [("h", "The turning-moment diagram"), ("p", lines[0])]
+    rows, run = [], 0.0
+    big = max((abs(lb.energy) for lb in tm.lobes), default=0.0)
+    for k, lb in enumerate(tm.lobes):
+        run += lb.energy
+        run = 0.0 if abs(run) <= ROUNDING * big * len(tm.lobes) else run  # (rounding)
+        rows.append(
+            (
+                str(k + 1),
+                f"{lb.start:.3f}",
+                f"{lb.end:.3f}",
+                f"{lb.energy:+.6g}",
+                f"{run:+.6g}",
+            )
+        )
+    if rows:
+        out.append(
+            (
+                "table",
+                ("area", "from (deg)", "to (deg)", "energy (J)", "running sum (J)"),
+                rows,
+            )
+        )
+    rest = [ln.strip() for ln in lines[1:] if "areas above" not in ln]
+    out.append(("list", rest))
+    return out
