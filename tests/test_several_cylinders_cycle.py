@@ -569,3 +569,42 @@ def test_steps_gives_the_books_table_of_the_areas(tmp_path, capsys):
     assert f"dE_max = E_max - E_min = {tm.E_max:.6g}" in out
     assert _views(tmp_path, text, "steps", "--format", "markdown") == 0
     assert "| area | from (deg) |" in capsys.readouterr().out
+
+
+def test_the_drawn_energy_curve_is_the_quadrature_of_the_summed_diagram(tmp_path, capsys):
+    """``draw --diagram cycle``: its energy curve, E above E at the first crossing, at every
+    10 deg to the closed form's quadrature at 30 digits; the sheet is written for the
+    engine and refused in one line for a mechanism that is no engine."""
+    from polygon_method.linkage.flywheel import energy_curve
+
+    sc = parse_scene(_cycle_scene(VTWIN, "v-twin"))
+    tm = turning_moment(sc)
+    x, T, E, parts = energy_curve(sc, tm, n=73)
+    assert [p for p, _ in parts] == ["B", "C"]
+    ref = _Reference(VTWIN, "v-twin")
+    with mpmath.workdps(30):
+        cycle = 4 * mpmath.pi
+        mean = ref.integral(mpmath.mpf(0), cycle) / cycle
+        a = mpmath.findroot(lambda t: ref(t) - mean, mpmath.radians(tm.crossings[0]), tol=1e-25)
+        E_a = ref.integral(mpmath.mpf(0), a) - mean * a  # E at the first crossing, from 0
+        for k in range(0, 73, 6):
+            phase = mpmath.radians(x[k])
+            E_ref = (ref.integral(mpmath.mpf(0), phase) - mean * phase if k else 0) - E_a
+            assert E[k] == pytest.approx(float(E_ref), abs=1e-9 * tm.dE_max), x[k]
+            assert T[k] == pytest.approx(float(ref(phase)), abs=1e-9 * 1e3)
+    assert float(E.max() - E.min()) <= tm.dE_max * (1 + 1e-12)  # (the extremes at crossings)
+    path = tmp_path / "e.toml"
+    path.write_text(_cycle_scene(VTWIN, "v-twin"))
+    out = tmp_path / "cycle.svg"
+    assert main(["draw", str(path), "--diagram", "cycle", "-o", str(out)]) == 0
+    svg = out.read_text()
+    assert "cylinder B" in svg and "dE_max" in svg
+    plain = tmp_path / "plain.toml"
+    plain.write_text(
+        '[ground]\nO = [0, 0]\nQ = [4, 0]\n[links]\nOA = 1\nAB = 4\nBQ = 2\n[input]\ncrank = "OA"\n'
+        'angle = 30\nspeed = "10 rad/s ccw"\n'
+    )
+    capsys.readouterr()
+    assert main(["draw", str(plain), "--diagram", "cycle", "-o", str(tmp_path / "p.svg")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "an engine's turning-moment diagram" in err, err

@@ -492,3 +492,22 @@ def cycle_blocks(sol) -> list:
     rest = [ln.strip() for ln in lines[1:] if "areas above" not in ln]
     out.append(("list", rest))
     return out
+
+
+def energy_curve(scene: Scene, tm: TurningMoment, n: int = 1441) -> tuple:
+    """``(phase deg, T, E, parts)`` over the cycle at ``n`` evenly spaced phases from the
+    first cylinder's inner dead centre: the turning moment (N m; of several cylinders the
+    sum, ``parts`` each one's as (piston, T)) and the energy ``E = int (T - T_mean) dphi``
+    above its value at the first crossing of the mean (J), each piece between neighbouring
+    phases (and the corners and crossings) integrated by the Gauss-Legendre rule of the
+    cycle's solve: exact to rounding, not a sum of samples."""
+    g = _geometry(scene)
+    phase = np.linspace(0.0, tm.cycle, n)
+    parts = [(p, np.asarray(T, dtype=float)) for p, T in cylinder_moments_at(scene, g, phase)]
+    T = parts[0][1] if len(parts) == 1 else sum(t for _, t in parts)
+    cross = [math.radians(c) for c in tm.crossings]
+    edges = sorted(set(phase.tolist()) | set(_breaks(scene, g, tm.cycle)) | set(cross))
+    E = np.concatenate([[0.0], np.cumsum(_integrals(scene, g, edges) - tm.mean * np.diff(edges))])
+    at = dict(zip(edges, E))
+    base = at[cross[0]] if cross else 0.0
+    return np.degrees(phase), T, np.array([at[p] for p in phase.tolist()]) - base, tuple(parts)
