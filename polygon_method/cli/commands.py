@@ -158,7 +158,9 @@ def _cmd_draw_cycle(args, out, fmt) -> int:
             file=scene.file,
             key="--diagram",
         )
-    data, words = engine_cycle_sheet(scene, fmt)
+    from ..draw import paper_name
+
+    data, words = engine_cycle_sheet(scene, fmt, paper_name(getattr(args, "paper", None) or "A4"))
     write_outputs(targets, [(data, fmt != "svg")])
     print(f"{out}: {words}")
     return 0

@@ -23,14 +23,14 @@ _ABOVE, _BELOW = "#c8e6c9", "#ffcdd2"
 _DASHED = ("#6a1b9a", "#ef6c00", "#00838f", "#ad1457", "#558b2f", "#4e342e")
 
 
-def engine_cycle_sheet(scene, fmt: str):
+def engine_cycle_sheet(scene, fmt: str, paper: str = "A4"):
     """(the sheet's file data: SVG text, PNG or PDF bytes; its words) for the engine's
-    cycle of ``scene``."""
+    cycle of ``scene``, on ``paper`` (portrait)."""
     from matplotlib.figure import Figure
 
     tm = turning_moment(scene)
     x, T, E, parts = energy_curve(scene, tm)
-    w, h = PAPERS["A4"]
+    w, h = PAPERS[paper]
     fig = Figure(figsize=(w / _CM, h / _CM), dpi=100)
     top = fig.add_axes((0.12, 0.56, 0.80, 0.34))
     low = fig.add_axes((0.12, 0.10, 0.80, 0.34))
@@ -70,7 +70,8 @@ def engine_cycle_sheet(scene, fmt: str):
         if mass is not None:
             foot += f";  m = {_g(mass)} kg"
     fig.text(0.5, 0.035, foot, ha="center", fontsize=10)
-    return figure_data(fig, fmt), "A4 portrait: the turning-moment diagram and the energy curve"
+    words = f"{paper} portrait: the turning-moment diagram and the energy curve"
+    return figure_data(fig, fmt), words
 
 
 def _at_crossing(tm, angle) -> float:
