@@ -608,3 +608,27 @@ def test_the_drawn_energy_curve_is_the_quadrature_of_the_summed_diagram(tmp_path
     assert main(["draw", str(plain), "--diagram", "cycle", "-o", str(tmp_path / "p.svg")]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and "an engine's turning-moment diagram" in err, err
+
+
+def test_solve_json_has_each_cylinders_efforts(tmp_path, capsys):
+    """``solve --json``'s ``forces.engine``: each cylinder's efforts and their turning
+    moment, to the 30-digit matrix method."""
+    import json
+
+    angle = 650.0
+    ref = reference(_pressures(VTWIN, "v-twin", angle), angle)
+    size = max(abs(v) for v in ref.values())
+    assert _views(tmp_path, _massive_scene(VTWIN, "v-twin", angle), "solve", "--json") == 0
+    eng = json.loads(capsys.readouterr().out)["forces"]["engine"]
+    assert [c["piston"] for c in eng["cylinders"]] == ["B", "C"]
+    for c in eng["cylinders"]:
+        p = c["piston"]
+        assert c["piston_effort"] == pytest.approx(ref["F_P" + p], abs=1e-9 * size)
+        assert c["crank_effort"] == pytest.approx(ref["F_T" + p], abs=1e-9 * size)
+        assert c["turning_moment"] == pytest.approx(ref["F_T" + p] * R, abs=1e-9 * size * R)
+        assert c["rod_thrust"] == pytest.approx(
+            math.hypot(ref[f"P{p}.x"], ref[f"P{p}.y"]), abs=1e-9 * size
+        )
+        assert c["side_thrust"] == pytest.approx(abs(ref["N" + p]), abs=1e-9 * size)
+    total = (ref["F_TB"] + ref["F_TC"]) * R
+    assert eng["turning_moment"] == pytest.approx(total, abs=1e-9 * size * R)

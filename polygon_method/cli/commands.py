@@ -22,6 +22,11 @@ def _cmd_solve(args) -> int:
     cycle = engine_cycle(sol)  # an engine asked for its cycle: [indicator] or [flywheel]
     if args.json:
         d = sol.to_dict()
+        from ..linkage.engine_values import engine_dict
+
+        engine = engine_dict(sol)  # an engine's efforts, each cylinder's
+        if engine is not None:
+            d["forces"]["engine"] = engine
         if cycle is not None:
             d["turning_moment"] = cycle.as_dict()
         print(json.dumps(d, indent=2, allow_nan=False))

@@ -13,7 +13,7 @@ from ..motion.solution import solve
 from ..scene.answers import ENGINE_PER_PISTON as PER_PISTON
 from .flywheel import turning_moment
 
-__all__ = ["ENGINE_KEYS", "INSTANT", "PER_PISTON", "engine_value", "split_key"]
+__all__ = ["ENGINE_KEYS", "INSTANT", "PER_PISTON", "engine_dict", "engine_value", "split_key"]
 
 #: answer key -> (unit kind, SI unit, what it is)
 ENGINE_KEYS = {
@@ -95,3 +95,33 @@ def engine_value(sol, key, scene=None):
     if tm.flywheel is None:
         return None
     return tm.flywheel[2] if key == "I_flywheel" else tm.flywheel[3]
+
+
+def engine_dict(sol) -> dict | None:
+    """The JSON of an engine's efforts at the instant (``solve --json``'s ``engine``; SI,
+    each effort signed as ``solve`` prints it: the piston effort towards the crank, the
+    crank effort and turning moment in the sense of rotation): one cylinder's, or of several
+    on one crank each one's under ``cylinders`` and the turning moment of them all; None for
+    a scene that is no engine (or whose forces are refused)."""
+    sc = sol.scene
+    if not sc.has_forces or sol.forces_refused:
+        return None
+
+    def one(e):
+        return {
+            "piston": e.piston,
+            "rod": e.rod,
+            "piston_effort": float(e.F_P),
+            "rod_thrust": float(e.F_Q),
+            "side_thrust": float(e.F_N),
+            "crank_effort": float(e.F_T),
+            "turning_moment": float(e.T),
+        }
+
+    e = efforts(sc, sol.plan, sol.P, sol.forces)
+    if e is not None:
+        return one(e)
+    cs = cylinder_efforts(sc, sol.plan, sol.P, sol.forces)
+    if not cs:
+        return None
+    return {"cylinders": [one(c) for c in cs], "turning_moment": float(sum(c.T for c in cs))}
