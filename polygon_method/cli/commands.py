@@ -10,7 +10,7 @@ from pathlib import Path
 
 from ..common.errors import PolygonMethodError, SceneError
 from ..common.tolerances import SAME
-from .energy import check_cylinders, engine_cycle
+from .energy import check_cylinders, draw_engine_cycle, engine_cycle
 from .files import check_outputs, write_outputs
 
 
@@ -112,7 +112,7 @@ def _cmd_draw(args) -> int:
             f"cannot draw to {out}: the file name must end in .svg, .png or .pdf", key="-o"
         )
     if args.diagram == "cycle":  # an engine's turning-moment diagram and energy curve
-        return _cmd_draw_cycle(args, out, fmt)
+        return draw_engine_cycle(args, out, fmt)
     scales = _drawn_scales(args, parse_scales(getattr(args, "scale", None)))
     paper = paper_name(getattr(args, "paper", None) or "A4")
     targets = check_outputs([(out, "-o")], protect=[args.scene])
@@ -140,34 +140,6 @@ def _cmd_draw(args) -> int:
     write_outputs(targets, [(d, fmt != "svg") for d in datas])
     scales_text = "; ".join(f"{name} {display_unit(s.text)}" for name, s in used.items())
     _print_drawn(out, fmt, files, pages, paper, scales_text)
-    return 0
-
-
-def _cmd_draw_cycle(args, out, fmt) -> int:
-    """``draw --diagram cycle``: an engine's cycle on A4 (refused for another scene)."""
-    from ..draw.engine_cycle import engine_cycle_sheet
-    from ..linkage.flywheel import engine_piston
-    from ..scene import load_scene
-
-    if args.scale or getattr(args, "centre_labels", None):
-        raise PolygonMethodError(
-            "--diagram cycle draws at its own scales: leave out --scale", key="--scale"
-        )
-    targets = check_outputs([(out, "-o")], protect=[args.scene])
-    scene = load_scene(args.scene, variants=False, answers=False)
-    check_cylinders(scene)
-    if engine_piston(scene) is None:
-        raise PolygonMethodError(
-            "--diagram cycle draws an engine's turning-moment diagram: a slider crank with "
-            "a gas force on its piston ([loads] pressure, or [indicator])",
-            file=scene.file,
-            key="--diagram",
-        )
-    from ..draw import paper_name
-
-    data, words = engine_cycle_sheet(scene, fmt, paper_name(getattr(args, "paper", None) or "A4"))
-    write_outputs(targets, [(data, fmt != "svg")])
-    print(f"{out}: {words}")
     return 0
 
 

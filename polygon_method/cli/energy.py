@@ -6,7 +6,8 @@ refuses comes here: the file is looked at for a
 ``[turning_moment]`` or ``[press]`` header, and where it has none the reader's refusal
 stands. Here too a mechanism's engine's cycle for ``solve`` (:func:`engine_cycle`) and the
 refusal of several cylinders' indicator diagrams that do not fit their engine
-(:func:`check_cylinders`)."""
+(:func:`check_cylinders`), and its sheet, ``draw --diagram cycle``
+(:func:`draw_engine_cycle`)."""
 
 from __future__ import annotations
 
@@ -318,3 +319,30 @@ def check_cylinders(scene, sol=None) -> None:
 
     sol = sol or solve(scene)
     cylinders(scene, sol.plan, sol.P)
+
+
+def draw_engine_cycle(args, out, fmt) -> int:
+    """``draw --diagram cycle``: an engine's cycle on A4 (refused for another scene)."""
+    from ..draw import paper_name
+    from ..draw.engine_cycle import engine_cycle_sheet
+    from ..linkage.flywheel import engine_piston
+    from ..scene import load_scene
+
+    if args.scale or getattr(args, "centre_labels", None):
+        raise PolygonMethodError(
+            "--diagram cycle draws at its own scales: leave out --scale", key="--scale"
+        )
+    targets = check_outputs([(out, "-o")], protect=[args.scene])
+    scene = load_scene(args.scene, variants=False, answers=False)
+    check_cylinders(scene)
+    if engine_piston(scene) is None:
+        raise PolygonMethodError(
+            "--diagram cycle draws an engine's turning-moment diagram: a slider crank with "
+            "a gas force on its piston ([loads] pressure, or [indicator])",
+            file=scene.file,
+            key="--diagram",
+        )
+    data, words = engine_cycle_sheet(scene, fmt, paper_name(getattr(args, "paper", None) or "A4"))
+    write_outputs(targets, [(data, fmt != "svg")])
+    print(f"{out}: {words}")
+    return 0
