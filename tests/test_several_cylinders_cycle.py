@@ -632,3 +632,19 @@ def test_solve_json_has_each_cylinders_efforts(tmp_path, capsys):
         assert c["side_thrust"] == pytest.approx(abs(ref["N" + p]), abs=1e-9 * size)
     total = (ref["F_TB"] + ref["F_TC"]) * R
     assert eng["turning_moment"] == pytest.approx(total, abs=1e-9 * size * R)
+
+
+def test_the_summary_places_a_four_stroke_extreme_in_its_turn(tmp_path, capsys):
+    """The summary's turning moment's greatest and least are at crank angles within the
+    four-stroke cycle's two turns: the closed form there is the value it gives (a turn
+    earlier the other cylinder's stroke differs)."""
+    text = _cycle_scene(VTWIN, "v-twin")
+    assert _views(tmp_path, text, "sweep", "--summary") == 0
+    row = next(ln for ln in capsys.readouterr().out.splitlines() if ln.startswith("turning_moment"))
+    top, at_top, low, at_low = (float(x) for x in row.split()[3:7])
+    ref = _Reference(VTWIN, "v-twin")
+    with mpmath.workdps(30):
+        for value, at in ((top, at_top), (low, at_low)):
+            assert value == pytest.approx(float(ref(mpmath.radians(at - 45))), rel=1e-5)
+            other = float(ref(mpmath.radians(at - 45 + 360)))  # the same angle a turn on
+            assert abs(other - value) > 0.05 * abs(value)
