@@ -648,3 +648,27 @@ def test_the_summary_places_a_four_stroke_extreme_in_its_turn(tmp_path, capsys):
             assert value == pytest.approx(float(ref(mpmath.radians(at - 45))), rel=1e-5)
             other = float(ref(mpmath.radians(at - 45 + 360)))  # the same angle a turn on
             assert abs(other - value) > 0.05 * abs(value)
+
+
+def test_one_indicator_beside_another_cylinders_steady_gas_force(tmp_path, capsys):
+    """A V-twin whose B has the one [indicator] (piston named) and C a steady [loads]
+    pressure: an engine of two cylinders (before, C's rod was left out of the turning
+    moment); each to the matrix method."""
+    angle = 400.0
+    text = scene_text(VTWIN, angle)
+    text = text.replace('B = { pressure = "2.0 N/mm^2", bore = 80 }\n', "")
+    text += (
+        '[indicator]\npiston = "B"\nbore = 80\ncycle = "4-stroke"\nunit = "bar"\n'
+        f"angle = {ANGLES}\npressure = {BAR}\n"
+    )
+    assert "B = { pressure" not in text
+    pr = {"B": (45, _interp(ANGLES, BAR, (angle - 45) % 720) / 10), "C": VTWIN["C"]}
+    ref = reference(pr, angle)
+    size = max(abs(v) for v in ref.values())
+    sol = solve(parse_scene(text))
+    es = cylinder_efforts(sol.scene, sol.plan, sol.P, sol.forces)
+    assert [e.piston for e in es] == ["B", "C"]
+    for e in es:
+        assert e.F_T == pytest.approx(ref["F_T" + e.piston], abs=1e-9 * size)
+    assert _views(tmp_path, text, "solve") == 0
+    assert "engine, cylinder C:" in capsys.readouterr().out

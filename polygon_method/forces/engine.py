@@ -267,10 +267,10 @@ def engine_piston(scene, plan):
     """The piston of an engine: the point the indicator or a gas force acts on, sliding on a
     fixed path pinned by a rod to the driving crank's pin; None for a scene that is no
     engine (no gas force, or not a slider crank there)."""
-    if scene.indicator is not None:
-        return scene.indicator.piston
+    if scene.indicator is not None:  # (with another cylinder's gas force: several)
+        return None if _other_cylinders(scene, plan) else scene.indicator.piston
     gas = [ld.target for ld in scene.loads if ld.gas is not None]
-    if len(gas) != 1:
+    if len(gas) != 1 or scene.indicators:
         return None
     return gas[0] if slider_crank(plan, gas[0]) is not None else None
 
@@ -309,14 +309,22 @@ def engine_pistons(scene, plan) -> tuple:
     """The pistons of an engine of several cylinders on one crank (a V-twin's two on one
     crank pin, a radial's): every point a gas force acts on, when there are two or more and
     each slides on a fixed path pinned by a rod to the driving crank's pin; else ()."""
-    if scene.indicator is not None:
-        return ()
     named = [i.piston for i in scene.indicators]
+    if scene.indicator is not None:  # one indicator: with other cylinders' gas forces
+        others = _other_cylinders(scene, plan)
+        return tuple(dict.fromkeys(named + others)) if others else ()
     gas = named + [ld.target for ld in scene.loads if ld.gas is not None]
     gas = tuple(dict.fromkeys(gas))
     if len(gas) < 2 or any(slider_crank(plan, p) is None for p in gas):
         return ()
     return gas
+
+
+def _other_cylinders(scene, plan) -> list:
+    """The slider cranks' pistons under a ``[loads]`` gas force besides the indicators'."""
+    named = {i.piston for i in scene.indicators}
+    gas = [ld.target for ld in scene.loads if ld.gas is not None and ld.target not in named]
+    return [p for p in gas if slider_crank(plan, p) is not None]
 
 
 def cylinder_efforts(scene, plan, P, f) -> tuple:
