@@ -563,7 +563,6 @@ LONG_FUNCTIONS = {
     "page/data.py:page_data",
     "scene/angles.py:read_angle",
     "scene/answers.py:answer",
-    "scene/engine.py:indicator",
     "scene/inputs.py:block_input",
     "scene/inputs.py:collar_input",
     "scene/inputs.py:input",

@@ -14,6 +14,7 @@ FOURBAR = WORKED / "fourbar_image_points.toml"
 ENGINE = WORKED / "engine_forces.toml"
 GEARS = WORKED / "gear_pair_forces.toml"
 TRIAD = WORKED / "class3_six_bar_forces.toml"
+VTWIN = WORKED / "vtwin_flywheel.toml"
 
 #: (name, the command's arguments with OUT for the output, the scene)
 WRITERS = [
@@ -31,6 +32,7 @@ WRITERS = [
     ("sweep.png", ["sweep", "{scene}", "--steps", "24", "--plot", "{out}.png"], FOURBAR),
     ("sweep.pdf", ["sweep", "{scene}", "--steps", "24", "--plot", "{out}.pdf"], FOURBAR),
     ("engine-sweep.svg", ["sweep", "{scene}", "--steps", "24", "--plot", "{out}.svg"], ENGINE),
+    ("engine-cycle.svg", ["draw", "{scene}", "--diagram", "cycle", "-o", "{out}.svg"], VTWIN),
     ("animate.svg", ["draw", "{scene}", "--animate", "--frames", "4", "-o", "{out}.svg"], FOURBAR),
     ("animate.gif", ["draw", "{scene}", "--animate", "--frames", "4", "-o", "{out}.gif"], FOURBAR),
     ("page.html", ["page", "{scene}", "--frames", "4", "-o", "{out}.html"], FOURBAR),

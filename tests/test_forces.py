@@ -95,11 +95,9 @@ def with_forces(scene, seed):
     if lk.key not in loads:
         loads[lk.key] = {"torque": f"{rnd.uniform(1, 50):.3f} N m ccw"}
     ind = raw.pop("indicator", None)
-    if ind is not None:  # a steady gas force instead, its power in the balance as a load's
-        loads[ind.get("piston", scene.indicator.piston)] = {
-            "pressure": "3 bar",
-            "bore": ind["bore"],
-        }
+    for each in scene.indicators:  # a steady gas force instead, its power a load's
+        own = ind.get(each.piston) if isinstance(ind.get(each.piston), dict) else {}
+        loads[each.piston] = {"pressure": "3 bar", "bore": own.get("bore", ind.get("bore"))}
     raw["loads"] = loads
     return scene_from_table(raw)
 

@@ -14,8 +14,9 @@ from dataclasses import replace
 
 from ..common.tolerances import FLOOR, SAME
 from ..common.errors import PolygonMethodError, SceneError
-from ..forces.engine import efforts, slider_crank
-from ..linkage.engine_values import ENGINE_KEYS, INSTANT as _INSTANT, engine_value
+from ..forces.engine import efforts, engine_piston, engine_pistons, slider_crank
+from ..linkage.engine_values import ENGINE_KEYS, INSTANT as _INSTANT, engine_value, split_key
+from ..scene.answers import ENGINE_PER_PISTON
 from ..linkage.flywheel import turning_moment
 from .verdicts import ROUNDING, Verdict, cs_slips
 
@@ -26,14 +27,22 @@ def _refuse(sol, ans, why):
     raise SceneError(f"{ans.key}: {why}", key=f"[answers] {ans.key}", line=ans.line)
 
 
-def _slips(sol, key, correct):
-    """(value, code, words) of each classic slip for ``key``."""
+def _slips(sol, full, correct):
+    """(value, code, words) of each classic slip for the answer key ``full`` (a piston's
+    own, ``piston_effort_B``: its cylinder's, the pistons' inertia left out)."""
     sc = sol.scene
     out = []
+    key, piston = split_key(full)
     blocks = [m for m in sc.masses if m.block]
+    if piston is not None:  # one cylinder's: its piston's inertia (the others' touch it not)
+        blocks = [m for m in blocks if m.body == piston]
     if blocks and key != "T_mean":  # (the inertia averages nothing over a cycle)
         try:
-            if key in ("piston_effort", "crank_effort", "turning_moment"):
+            if piston is not None:
+                v = engine_value(
+                    sol, full, replace(sc, masses=tuple(m for m in sc.masses if m not in blocks))
+                )
+            elif key in ("piston_effort", "crank_effort", "turning_moment"):
                 v = _gas_alone(sol, key)
             elif key in ("rod_thrust", "side_thrust"):
                 v = None  # (the closed forms give these from the piston effort alone)
@@ -49,7 +58,8 @@ def _slips(sol, key, correct):
                     abs(v),
                     "piston_inertia_left_out",
                     "the inertia of the reciprocating parts at "
-                    f"{', '.join(m.body for m in blocks)} left out",
+                    f"{', '.join(m.body for m in blocks)} left out"
+                    + (" (their mass, and its weight)" if piston and sc.gravity else ""),
                 )
             )
     if key in ("I_flywheel", "m_flywheel") and sc.flywheel is not None:
@@ -69,7 +79,7 @@ def _slips(sol, key, correct):
                         "energies at the crossings summed in order",
                     )
                 )
-    if key == "T_mean" and sc.indicator is not None and sc.indicator.cycle > 2 * math.pi + 1:
+    if key == "T_mean" and sc.indicators and sc.indicators[0].cycle > 2 * math.pi + 1:
         out.append(
             (
                 2 * correct,
@@ -105,7 +115,7 @@ def _gas_alone(sol, key):
 def _correct(sol, ans) -> float:
     """The right value of the engine chapter's answer ``ans``, or the answer refused (a
     :class:`SceneError` naming it) where the scene cannot give it."""
-    key = ans.key
+    key = ans.kind
     if key in _INSTANT and not sol.scene.has_forces:
         _refuse(
             sol,
@@ -119,31 +129,48 @@ def _correct(sol, ans) -> float:
             "[masses] (the reciprocating parts), [gravity] or [indicator]",
         )
     try:
-        correct = engine_value(sol, key)
+        correct = engine_value(sol, ans.key)
     except PolygonMethodError as exc:
         _refuse(sol, ans, exc.message)
     if correct is None:
-        _refuse(
-            sol,
-            ans,
-            "no value to check against: "
-            + (
-                "the scene has no [flywheel]"
-                if key == "I_flywheel"
-                else "give the flywheel's [flywheel] radius (or gyration) for its mass"
-                if key == "m_flywheel"
-                else "the scene is no engine (a gas force on a slider crank's piston)"
-            ),
-        )
+        _refuse(sol, ans, "no value to check against: " + _why_none(sol, ans))
     return correct
+
+
+def _why_none(sol, ans) -> str:
+    """Why the scene has no value for the engine key ``ans``."""
+    key = ans.kind
+    if key == "I_flywheel":
+        return "the scene has no [flywheel]"
+    if key == "m_flywheel":
+        return "give the flywheel's [flywheel] radius (or gyration) for its mass"
+    pistons = cylinder_pistons(sol)
+    if ans.names:
+        if pistons:
+            return f"{ans.names[0]} is no cylinder's piston of the engine ({', '.join(pistons)})"
+        one = engine_piston(sol.scene, sol.plan)
+        if one is not None:
+            return f"{ans.names[0]} is not the engine's piston ({one})"
+    elif pistons and key in ENGINE_PER_PISTON:
+        return (
+            f"several cylinders on one crank ({', '.join(pistons)}): name the piston, "
+            f"{key}_{pistons[0]}"
+        )
+    return "the scene is no engine (a gas force on a slider crank's piston)"
+
+
+def cylinder_pistons(sol) -> tuple:
+    """The pistons of an engine of several cylinders on one crank (() for another)."""
+    return engine_pistons(sol.scene, sol.plan)
 
 
 def _slip(sol, key, given, correct, rel, unit) -> tuple:
     """(code, words) of the classic slip ``given`` matches (within ``rel``), or (None, None)."""
+    what = ENGINE_KEYS[split_key(key)[0]][2]
     for v, code, words in _slips(sol, key, correct):
         if abs(given - v) <= max(rel * abs(v), FLOOR) * (1 + ROUNDING):
             return code, (
-                f"{ENGINE_KEYS[key][2]} matches {words} "
+                f"{what} matches {words} "
                 f"({v:.4g} {unit}); the correct value is "
                 f"{correct:.4g} {unit}"
             )
@@ -152,7 +179,7 @@ def _slip(sol, key, given, correct, rel, unit) -> tuple:
 
 def engine_verdict(sol, ans, tolerance) -> Verdict:
     """The :class:`Verdict` on one of the engine chapter's answers."""
-    key = ans.key
+    key = ans.kind
     correct = _correct(sol, ans)
     unit = ENGINE_KEYS[key][1]
     if key != "T_mean":  # sizes (a shaking moment's sense is not asked)
@@ -175,5 +202,5 @@ def engine_verdict(sol, ans, tolerance) -> Verdict:
     ok = err <= tol * (1 + ROUNDING)
     mistake = diagnosis = None
     if not ok:
-        mistake, diagnosis = _slip(sol, key, given, correct, rel, unit)
+        mistake, diagnosis = _slip(sol, ans.key, given, correct, rel, unit)
     return Verdict.judged(ans, given, correct, unit, tol, rule, ok, signed, mistake, diagnosis)

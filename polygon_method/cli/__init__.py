@@ -145,7 +145,7 @@ def _add_draw(sub) -> None:
     s.add_argument("-o", "--output", required=True, help="FILE.svg, .png or .pdf")
     s.add_argument(
         "--diagram",
-        choices=("configuration", "velocity", "acceleration", "all", "centres", "forces"),
+        choices=("configuration", "velocity", "acceleration", "all", "centres", "forces", "cycle"),
         default="all",
     )
     s.add_argument(

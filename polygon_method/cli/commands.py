@@ -10,6 +10,7 @@ from pathlib import Path
 
 from ..common.errors import PolygonMethodError, SceneError
 from ..common.tolerances import SAME
+from .energy import check_cylinders, draw_engine_cycle, engine_cycle
 from .files import check_outputs, write_outputs
 
 
@@ -18,9 +19,14 @@ def _cmd_solve(args) -> int:
     from ..motion.solution import solve
 
     sol = solve(load_scene(args.scene, variants=False, answers=False))
-    cycle = _engine_cycle(sol)  # an engine asked for its cycle: [indicator] or [flywheel]
+    cycle = engine_cycle(sol)  # an engine asked for its cycle: [indicator] or [flywheel]
     if args.json:
         d = sol.to_dict()
+        from ..linkage.engine_values import engine_dict
+
+        engine = engine_dict(sol)  # an engine's efforts, each cylinder's
+        if engine is not None:
+            d["forces"]["engine"] = engine
         if cycle is not None:
             d["turning_moment"] = cycle.as_dict()
         print(json.dumps(d, indent=2, allow_nan=False))
@@ -31,29 +37,6 @@ def _cmd_solve(args) -> int:
         if cycle is not None:
             print("\n" + "\n".join(cycle.lines(sol.scene)))
     return 0
-
-
-def _engine_cycle(sol):
-    """The turning moment over an engine's cycle, for ``solve``, where the scene asks for
-    the cycle (an indicator diagram, or a flywheel); else None (``sweep --summary`` gives
-    it for any engine)."""
-    sc = sol.scene
-    if sc.indicator is None and sc.flywheel is None:
-        return None
-    from ..common.errors import PolygonMethodError
-    from ..linkage.flywheel import engine_piston, turning_moment
-
-    if sol.forces_refused or engine_piston(sc) is None:
-        if sc.flywheel is not None:
-            raise PolygonMethodError(
-                "the flywheel is an engine's: a slider crank "
-                "with a gas force on its piston ([loads] pressure, or "
-                "[indicator])",
-                file=sc.file,
-                key="[flywheel]",
-            )
-        return None
-    return turning_moment(sc)
 
 
 def _cmd_plan(args) -> int:
@@ -83,7 +66,9 @@ def _cmd_steps(args) -> int:
     from ..motion.solution import solve
     from ..text.steptable import steps_text
 
-    print(steps_text(solve(load_scene(args.scene, variants=False, answers=False)), fmt=args.format))
+    sol = solve(load_scene(args.scene, variants=False, answers=False))
+    check_cylinders(sol.scene, sol)
+    print(steps_text(sol, fmt=args.format))
     return 0
 
 
@@ -126,6 +111,8 @@ def _cmd_draw(args) -> int:
         raise PolygonMethodError(
             f"cannot draw to {out}: the file name must end in .svg, .png or .pdf", key="-o"
         )
+    if args.diagram == "cycle":  # an engine's turning-moment diagram and energy curve
+        return draw_engine_cycle(args, out, fmt)
     scales = _drawn_scales(args, parse_scales(getattr(args, "scale", None)))
     paper = paper_name(getattr(args, "paper", None) or "A4")
     targets = check_outputs([(out, "-o")], protect=[args.scene])
@@ -455,6 +442,7 @@ def _cmd_sweep(args) -> int:
     ]
     targets = check_outputs(wanted, protect=[args.scene])
     scene = load_scene(args.scene, variants=False, answers=False)
+    check_cylinders(scene)
     angles = _requested_angles(args, scene)
     if args.csv:
         need = _csv_bytes(scene, len(angles), getattr(args, "error_bound", False))

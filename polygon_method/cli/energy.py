@@ -4,7 +4,10 @@ mechanism: ``solve`` (``--json``), ``steps``, ``check`` (a class: :mod:`.energy_
 others have nothing to do there and say so in one line. Only a scene the mechanism's reader
 refuses comes here: the file is looked at for a
 ``[turning_moment]`` or ``[press]`` header, and where it has none the reader's refusal
-stands."""
+stands. Here too a mechanism's engine's cycle for ``solve`` (:func:`engine_cycle`) and the
+refusal of several cylinders' indicator diagrams that do not fit their engine
+(:func:`check_cylinders`), and its sheet, ``draw --diagram cycle``
+(:func:`draw_engine_cycle`)."""
 
 from __future__ import annotations
 
@@ -278,3 +281,68 @@ _COMMANDS = {
     "page": _page,
     "variants": _variants,
 }
+
+
+def engine_cycle(sol):
+    """The turning moment over an engine's cycle, for ``solve``, where the scene asks for
+    the cycle (an indicator diagram, or a flywheel); else None (``sweep --summary`` gives
+    it for any engine)."""
+    sc = sol.scene
+    if not sc.indicators and sc.flywheel is None:
+        return None
+    from ..common.errors import PolygonMethodError
+    from ..linkage.flywheel import engine_piston, turning_moment
+
+    if sc.indicators and sol.forces_refused:
+        sol.forces  # the indicator's own refusal, in its words (a lag, a piston)
+    if sol.forces_refused or engine_piston(sc) is None:
+        if sc.flywheel is not None:
+            raise PolygonMethodError(
+                "the flywheel is an engine's: a slider crank "
+                "with a gas force on its piston ([loads] pressure, or "
+                "[indicator])",
+                file=sc.file,
+                key="[flywheel]",
+            )
+        return None
+    return turning_moment(sc)
+
+
+def check_cylinders(scene, sol=None) -> None:
+    """Refuse, in the indicator's one line, several cylinders' indicator diagrams that do not
+    fit their engine (a lag off a cylinder's inner dead centre, a piston that is no slider
+    crank's): the views that would only note it refuse it."""
+    if len(scene.indicators) < 2:
+        return
+    from ..forces.engine import cylinders
+    from ..motion.solution import solve
+
+    sol = sol or solve(scene)
+    cylinders(scene, sol.plan, sol.P)
+
+
+def draw_engine_cycle(args, out, fmt) -> int:
+    """``draw --diagram cycle``: an engine's cycle on A4 (refused for another scene)."""
+    from ..draw import paper_name
+    from ..draw.engine_cycle import engine_cycle_sheet
+    from ..linkage.flywheel import engine_piston
+    from ..scene import load_scene
+
+    if args.scale or getattr(args, "centre_labels", None):
+        raise PolygonMethodError(
+            "--diagram cycle draws at its own scales: leave out --scale", key="--scale"
+        )
+    targets = check_outputs([(out, "-o")], protect=[args.scene])
+    scene = load_scene(args.scene, variants=False, answers=False)
+    check_cylinders(scene)
+    if engine_piston(scene) is None:
+        raise PolygonMethodError(
+            "--diagram cycle draws an engine's turning-moment diagram: a slider crank with "
+            "a gas force on its piston ([loads] pressure, or [indicator])",
+            file=scene.file,
+            key="--diagram",
+        )
+    data, words = engine_cycle_sheet(scene, fmt, paper_name(getattr(args, "paper", None) or "A4"))
+    write_outputs(targets, [(data, fmt != "svg")])
+    print(f"{out}: {words}")
+    return 0

@@ -276,7 +276,7 @@ def _engine_cycle(scene):
     """(the :class:`~polygon_method.linkage.TurningMoment`, phases in deg, the turning
     moment at each) of an engine, or None for another mechanism (or one whose cycle cannot
     be taken)."""
-    from ..linkage.flywheel import _geometry, engine_piston, turning_moment, turning_moment_at
+    from ..linkage.flywheel import _geometry, cylinder_moments_at, engine_piston, turning_moment
 
     try:
         if engine_piston(scene) is None:
@@ -286,15 +286,23 @@ def _engine_cycle(scene):
     except PolygonMethodError:
         return None
     phase = np.linspace(0.0, tm.cycle, int(round(math.degrees(tm.cycle) * 2)) + 1)
-    return tm, np.degrees(phase), np.asarray(turning_moment_at(scene, g, phase), dtype=float)
+    parts = [(p, np.asarray(T, dtype=float)) for p, T in cylinder_moments_at(scene, g, phase)]
+    T = parts[0][1] if len(parts) == 1 else sum(t for _, t in parts)
+    return tm, np.degrees(phase), T, tuple(parts) if g.many else (), g.parts[0][1].piston
 
 
-def _turning_moment_panel(ax, scene, tm, x, T):
+def _turning_moment_panel(ax, scene, tm, x, T, parts=(), first=""):
     """The turning-moment diagram: T against the crank angle from the inner dead centre,
-    the mean line, the areas above it and below it shaded, the crossings marked."""
+    the mean line, the areas above it and below it shaded, the crossings marked; of several
+    cylinders on one crank (``parts``: each one's turning moment), each thin and dashed,
+    T their sum, the angle from the first cylinder's inner dead centre."""
     from matplotlib.ticker import MultipleLocator
 
-    ax.plot(x, T, lw=1.3, color=SERIES_COLORS[0], label="turning moment T")
+    total = "turning moment T (the sum)" if parts else "turning moment T"
+    ax.plot(x, T, lw=1.3, color=SERIES_COLORS[0], label=total)
+    for k, (piston, t) in enumerate(parts):
+        color = SERIES_COLORS[(4 + k) % len(SERIES_COLORS)]
+        ax.plot(x, t, lw=0.7, ls="--", color=color, label=f"cylinder {piston}")
     ax.axhline(tm.mean, color=SERIES_COLORS[3], lw=1.0, label=f"mean T_mean = {tm.mean:.4g} N m")
     ax.fill_between(
         x,
@@ -321,7 +329,11 @@ def _turning_moment_panel(ax, scene, tm, x, T):
         _mark(ax, c, "change")
     ax.set_xlim(0.0, math.degrees(tm.cycle))
     ax.xaxis.set_major_locator(MultipleLocator(90.0 if tm.cycle > 2 * math.pi + 1 else 30.0))
-    ax.set_xlabel("crank angle from the inner dead centre, in the sense of rotation (°)")
+    ax.set_xlabel(
+        "crank angle from the inner dead centre"
+        + (f" of {first}" if parts else "")
+        + ", in the sense of rotation (°)"
+    )
     ax.set_ylabel("turning moment T (N m, + driving)")
     words = f"dE_max = {tm.dE_max:.4g} J"
     if tm.flywheel is not None:

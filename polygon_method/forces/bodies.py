@@ -8,7 +8,7 @@ The moment about another point ``B`` is then ``M - cross(B, F)``.
 
 from __future__ import annotations
 
-from .engine import indicator_force
+from .engine import indicator_forces
 from .records import FRAME, Inertia, Side, block
 
 
@@ -189,13 +189,11 @@ def gather(scene, motion, owner):
                 led.add(FRAME, -ld.force[0], -ld.force[1], x, y)  # along the same line
         else:
             led.couple(ld.target, ld.torque, f"couple on {ld.target}")
-    if scene.indicator is not None:  # the gas force of the indicator diagram at this angle
-        ind = scene.indicator
-        fx, fy, p, _ = indicator_force(scene, motion)
-        x, y = P[ind.piston]
-        body = owner.get(ind.piston, FRAME)
+    for piston, fx, fy, p in indicator_forces(scene, motion):  # the indicators' gas forces
+        x, y = P[piston]
+        body = owner.get(piston, FRAME)
         what = (
-            f"gas force at {ind.piston} (indicator: {p / 1e5:.6g} bar)"
+            f"gas force at {piston} (indicator: {p / 1e5:.6g} bar)"
             if isinstance(p, float)
             else None
         )

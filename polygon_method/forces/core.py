@@ -29,7 +29,7 @@ import weakref
 
 from .bodies import Singular, centre, inertia_record
 from .collar import second_name
-from .engine import indicator_force
+from .engine import indicator_forces
 from .records import FRAME, GuideForce, PinForce, block, quick_forces
 
 __all__ = ["ForcePlan", "Sums", "force_plan"]
@@ -153,8 +153,7 @@ class ForcePlan:
             else:
                 out.append((None, ix(ld.target), ld.torque, None))
         self.loads = tuple(out)
-        ind = scene.indicator
-        self.indicator = None if ind is None else (ind.piston, ix(own.get(ind.piston, FRAME)))
+        self.indicators = tuple(ix(own.get(i.piston, FRAME)) for i in scene.indicators)
 
     def run(self, motion):
         """The :class:`~.records.Forces` at ``motion``'s instant (or over its angles): its
@@ -198,12 +197,13 @@ class ForcePlan:
             sm[i] = sm[i] + (x * fy - y * fx)
             if gas:  # the gas pushes the cylinder's cover (the frame) as hard, back
                 S.add(0, -fx, -fy, x, y)
-        if self.indicator is not None:
-            piston, i = self.indicator
-            fx, fy, _, _ = indicator_force(self.scene, motion)
-            x, y = P[piston]
-            S.add(i, fx, fy, x, y)
-            S.add(0, -fx, -fy, x, y)
+        if self.indicators:
+            for i, (piston, fx, fy, _) in zip(
+                self.indicators, indicator_forces(self.scene, motion)
+            ):
+                x, y = P[piston]
+                S.add(i, fx, fy, x, y)
+                S.add(0, -fx, -fy, x, y)
         pins, guides = [], []
         effort = second = None
         for st, fn, first in self.steps:

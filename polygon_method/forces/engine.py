@@ -28,6 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..common.errors import PolygonMethodError
+from ..common.tolerances import DISTINCT
 
 
 @dataclass(frozen=True)
@@ -160,9 +161,10 @@ def stroke_of(g: SliderCrankGeometry, phase, cycle):
     return k.astype(int) if np.ndim(k) else int(k)
 
 
-def pressure(ind, g: SliderCrankGeometry, theta, bx, by):
-    """The indicator's pressure (Pa) at crank angle ``theta`` (the piston at ``(bx, by)``)."""
-    phase = g.phase(theta)
+def pressure(ind, g: SliderCrankGeometry, theta, bx, by, phase=None):
+    """The indicator's pressure (Pa) at crank angle ``theta`` (the piston at ``(bx, by)``;
+    ``phase``, where given, the cylinder's own phase: see :func:`cylinders`)."""
+    phase = g.phase(theta) if phase is None else phase
     if ind.against == "angle":
         return table_pressure(ind.x, ind.p, ind.cycle, phase)
     x = np.clip(g.fraction(bx, by), 0.0, 1.0)
@@ -198,14 +200,77 @@ def indicator_force(scene, motion):
     return f * g.u[0], f * g.u[1], p, g
 
 
+@dataclass(frozen=True)
+class Cylinder:
+    """One cylinder of several on one crank under its indicator diagram: its table ``ind``,
+    its slider crank ``g``, the diagram's reference (the first cylinder's geometry ``g0``)
+    and ``lag`` (rad): its cycle's phase is the first's less the lag."""
+
+    ind: object
+    g: SliderCrankGeometry
+    g0: SliderCrankGeometry
+    lag: float
+    lag_given: bool
+
+    def phase(self, theta):
+        """The cylinder's own phase (rad from its inner dead centre, this cycle's)."""
+        return self.g0.phase(theta) - self.lag
+
+
+def cylinders(scene, plan, P) -> tuple:
+    """Each indicator's :class:`Cylinder` (in the scene's order), the first the diagram's
+    reference. A later cylinder's cycle begins at its own inner dead centre, ``lag`` after
+    the first's (the scene's, or the least such angle); a lag that misses its inner dead
+    centre is refused in one line that names the lags it may have."""
+    out = []
+    for ind in scene.indicators:
+        g = geometry(scene, plan, ind.piston, piston_side(scene, plan, P, ind.piston))
+        g0 = out[0].g if out else g
+        turn = 2 * math.pi
+        least = (g0.sg * (g.theta_i - g0.theta_i)) % turn
+        lag = least if ind.lag is None else ind.lag
+        miss = (lag - least) % turn
+        if min(miss, turn - miss) > DISTINCT:
+            first = out[0].ind.piston
+            can = ", ".join(
+                f"{math.degrees(least + k * turn):.6g}"
+                for k in range(round(ind.cycle / turn))
+                if least + k * turn < ind.cycle
+            )
+            raise PolygonMethodError(
+                f"lag = {math.degrees(lag):.6g} deg: {ind.piston}'s inner dead centre comes "
+                f"{math.degrees(least):.6g} deg of the crank after {first}'s, and its cycle "
+                f"begins there: lag = {can} (deg)",
+                file=scene.file,
+                key=f"[indicator.{ind.piston}] lag",
+            )
+        out.append(Cylinder(ind, g, g0, lag, ind.lag is not None))
+    return tuple(out)
+
+
+def indicator_forces(scene, motion) -> tuple:
+    """((piston, Fx, Fy, p), ...): each indicator's gas force at ``motion``'s crank
+    angles, in its own phase (one piston's, or several cylinders' on one crank)."""
+    if scene.indicator is not None:
+        fx, fy, p, _ = indicator_force(scene, motion)
+        return ((scene.indicator.piston, fx, fy, p),)
+    out = []
+    for c in cylinders(scene, motion.plan, motion.P):
+        bx, by = motion.P[c.ind.piston]
+        p = pressure(c.ind, c.g, motion.theta, bx, by, c.phase(motion.theta))
+        f = -c.g.s * p * c.ind.area
+        out.append((c.ind.piston, f * c.g.u[0], f * c.g.u[1], p))
+    return tuple(out)
+
+
 def engine_piston(scene, plan):
     """The piston of an engine: the point the indicator or a gas force acts on, sliding on a
     fixed path pinned by a rod to the driving crank's pin; None for a scene that is no
     engine (no gas force, or not a slider crank there)."""
-    if scene.indicator is not None:
-        return scene.indicator.piston
+    if scene.indicator is not None:  # (with another cylinder's gas force: several)
+        return None if _other_cylinders(scene, plan) else scene.indicator.piston
     gas = [ld.target for ld in scene.loads if ld.gas is not None]
-    if len(gas) != 1:
+    if len(gas) != 1 or scene.indicators:
         return None
     return gas[0] if slider_crank(plan, gas[0]) is not None else None
 
@@ -244,12 +309,22 @@ def engine_pistons(scene, plan) -> tuple:
     """The pistons of an engine of several cylinders on one crank (a V-twin's two on one
     crank pin, a radial's): every point a gas force acts on, when there are two or more and
     each slides on a fixed path pinned by a rod to the driving crank's pin; else ()."""
-    if scene.indicator is not None:
-        return ()
-    gas = tuple(dict.fromkeys(ld.target for ld in scene.loads if ld.gas is not None))
+    named = [i.piston for i in scene.indicators]
+    if scene.indicator is not None:  # one indicator: with other cylinders' gas forces
+        others = _other_cylinders(scene, plan)
+        return tuple(dict.fromkeys(named + others)) if others else ()
+    gas = named + [ld.target for ld in scene.loads if ld.gas is not None]
+    gas = tuple(dict.fromkeys(gas))
     if len(gas) < 2 or any(slider_crank(plan, p) is None for p in gas):
         return ()
     return gas
+
+
+def _other_cylinders(scene, plan) -> list:
+    """The slider cranks' pistons under a ``[loads]`` gas force besides the indicators'."""
+    named = {i.piston for i in scene.indicators}
+    gas = [ld.target for ld in scene.loads if ld.gas is not None and ld.target not in named]
+    return [p for p in gas if slider_crank(plan, p) is not None]
 
 
 def cylinder_efforts(scene, plan, P, f) -> tuple:

@@ -33,13 +33,30 @@ import numpy as np
 from ..common.tolerances import ROUNDING
 from ..common.errors import PolygonMethodError
 from ..forces import analyse
-from ..forces.engine import efforts, engine_piston as _piston, geometry, piston_side
+from ..forces.engine import (
+    cylinder_efforts,
+    cylinders,
+    efforts,
+    engine_piston as _piston,
+    engine_pistons,
+    geometry,
+    piston_side,
+)
 from ..scene import Scene
 from ..motion.sweeps import sweep
 from ..solver.compiler import compile_plan
 from ..motion.solution import solve
 
-__all__ = ["TurningMoment", "Lobe", "turning_moment", "engine_piston", "turning_moment_at"]
+__all__ = [
+    "TurningMoment",
+    "Lobe",
+    "EngineCycle",
+    "turning_moment",
+    "engine_piston",
+    "turning_moment_at",
+    "cylinder_moments_at",
+    "cycle_blocks",
+]
 
 _PIECE = math.radians(5.0)
 _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(20)
@@ -168,14 +185,42 @@ class TurningMoment:
 
 
 def engine_piston(scene: Scene):
-    """The piston of an engine (see :func:`polygon_method.forces.engine.engine_piston`), or
-    None for a scene that is no engine."""
+    """The piston of an engine (see :func:`polygon_method.forces.engine.engine_piston`; of
+    several cylinders on one crank, the first's), or None for a scene that is no engine."""
     if not scene.has_forces and not any(ld.gas for ld in scene.loads):
         return None
-    return _piston(scene, compile_plan(scene))
+    plan = compile_plan(scene)
+    one = _piston(scene, plan)
+    if one is not None:
+        return one
+    many = engine_pistons(scene, plan)
+    return many[0] if many else None
 
 
-def _geometry(scene):
+@dataclass(frozen=True)
+class EngineCycle:
+    """The slider cranks whose turning moments make the diagram: ``parts``, each (its
+    indicator or None, its :class:`~polygon_method.forces.engine.SliderCrankGeometry`, its
+    lag: rad after the first's inner dead centre); ``many`` for several cylinders on one
+    crank (their turning moments summed); the phase counts from the first's inner dead
+    centre ``theta_i`` in the sense ``sg``."""
+
+    parts: tuple
+    many: bool
+    words: str = ""
+
+    @property
+    def theta_i(self) -> float:
+        """The first cylinder's inner dead centre (rad from +x): the diagram's start."""
+        return self.parts[0][1].theta_i
+
+    @property
+    def sg(self) -> float:
+        """The crank's sense of rotation (+1 ccw, -1 cw)."""
+        return self.parts[0][1].sg
+
+
+def _geometry(scene) -> EngineCycle:
     piston = engine_piston(scene)
     if piston is None:
         raise PolygonMethodError(
@@ -186,12 +231,38 @@ def _geometry(scene):
         )
     plan = compile_plan(scene)
     sol = solve(scene)
-    return geometry(scene, plan, piston, piston_side(scene, plan, sol.P, piston))
+    many = engine_pistons(scene, plan)
+    if not many:
+        g = geometry(scene, plan, piston, piston_side(scene, plan, sol.P, piston))
+        return EngineCycle(((scene.indicator, g, 0.0),), False)
+    cyl = {c.ind.piston: c for c in cylinders(scene, plan, sol.P)}
+    parts, words = [], []
+    for p in many:
+        if p in cyl:
+            c = cyl[p]
+            parts.append((c.ind, c.g, c.lag))
+            if len(parts) > 1:
+                how = "given" if c.lag_given else "the least: its first inner dead centre"
+                words.append(f"{p}'s cycle {math.degrees(c.lag):.6g} deg after {many[0]}'s ({how})")
+            continue
+        g = geometry(scene, plan, p, piston_side(scene, plan, sol.P, p))
+        g0 = parts[0][1] if parts else g
+        parts.append((None, g, (g0.sg * (g.theta_i - g0.theta_i)) % (2 * math.pi)))
+    head = f"the cylinders {', '.join(many)} on one crank, their turning moments summed"
+    return EngineCycle(tuple(parts), True, "; ".join([head] + words))
 
 
 def turning_moment_at(scene: Scene, g, phase):
     """The turning moment (N m, in the sense of rotation) at the phases ``phase`` (rad from
-    the inner dead centre, an array), solved with the forces at each."""
+    the inner dead centre, an array), solved with the forces at each (``g``: the
+    :class:`EngineCycle`; of several cylinders, the sum of their turning moments)."""
+    parts = cylinder_moments_at(scene, g, phase)
+    return parts[0][1] if len(parts) == 1 else sum(T for _, T in parts)
+
+
+def cylinder_moments_at(scene: Scene, g, phase) -> tuple:
+    """((piston, its turning moment at each phase, N m), ...): each cylinder's part of the
+    turning moment (one for a single cylinder), at the phases ``phase`` (rad)."""
     phase = np.asarray(phase, dtype=float)
     theta = g.theta_i + g.sg * phase
     res = sweep(scene, theta)
@@ -201,26 +272,31 @@ def turning_moment_at(scene: Scene, g, phase):
             "solved: no turning moment over the cycle",
             file=scene.file,
         )
-    e = efforts(scene, res.plan, res.P, analyse(res))
-    return np.broadcast_to(e.T, theta.shape)
+    f = analyse(res)
+    es = cylinder_efforts(scene, res.plan, res.P, f) if g.many else ()
+    es = es or (efforts(scene, res.plan, res.P, f),)
+    return tuple((e.piston, np.broadcast_to(e.T, theta.shape)) for e in es)
 
 
-def _breaks(scene, g, cycle) -> list:
-    """The phases (rad) where the turning moment may have a corner or a jump."""
+def _breaks(scene, eng, cycle) -> list:
+    """The phases (rad) where the turning moment may have a corner or a jump: each
+    cylinder's dead centres, its indicator's readings (or the stroke's places), in its own
+    phase shifted by its lag."""
     out = {0.0, cycle}
-    k = 0.0
-    while k < cycle:
-        out |= {k, k + g.phase_o}
-        k += 2 * math.pi
-    ind = scene.indicator
-    if ind is not None and ind.against == "angle":
-        for x in ind.x:
-            out.add(x % cycle)
-    elif ind is not None:  # the stroke's places, on each stroke
-        starts = sorted(p for p in out if p < cycle)
-        for a, b in zip(starts, starts[1:] + [cycle]):
-            for x in ind.x:
-                out.add(_phase_at_fraction(g, a, b, x))
+    for ind, g, lag in eng.parts:
+        own = set()
+        k = 0.0
+        while k < cycle:
+            own |= {k, k + g.phase_o}
+            k += 2 * math.pi
+        if ind is not None and ind.against == "angle":
+            own |= {x % cycle for x in ind.x}
+        elif ind is not None:  # the stroke's places, on each stroke
+            starts = sorted(p for p in own if p < cycle)
+            for a, b in zip(starts, starts[1:] + [cycle]):
+                for x in ind.x:
+                    own.add(_phase_at_fraction(g, a, b, x))
+        out |= {(p + lag) % cycle for p in own}
     return sorted(p for p in out if 0.0 <= p <= cycle)
 
 
@@ -335,6 +411,10 @@ def turning_moment(scene: Scene) -> TurningMoment:
         if ind is not None
         else "; ".join(ld.gas[2] for ld in scene.loads if ld.gas is not None)
     )
+    if g.many:
+        each = [f"{i.piston}: {i.words}" for i in scene.indicators]
+        gas = [f"{ld.target}: {ld.gas[2]}" for ld in scene.loads if ld.gas is not None]
+        words = "; ".join([g.words] + each + gas)
     return TurningMoment(
         cycle,
         math.degrees(g.theta_i),
@@ -369,3 +449,65 @@ def engine_cycle_lines(scene: Scene) -> list:
         return turning_moment(scene).lines(scene)
     except PolygonMethodError as exc:
         return [f"turning moment over the cycle: not found ({exc.message})"]
+
+
+def cycle_blocks(sol) -> list:
+    """The ``steps`` document's blocks for an engine that asks for its cycle (``[indicator]``
+    or ``[flywheel]``): the turning moment over the cycle, the book's table of the areas
+    between it and the mean line with their running sums, the fluctuation of energy and the
+    flywheel; none for another scene."""
+    sc = sol.scene
+    if not sc.indicators and sc.flywheel is None:
+        return []
+    try:
+        if sol.forces_refused or engine_piston(sc) is None:
+            return []
+        tm = turning_moment(sc)
+    except PolygonMethodError as exc:
+        return [("h", "The turning-moment diagram"), ("p", f"not found: {exc.message}")]
+    lines = tm.lines(sc)
+    out = [("h", "The turning-moment diagram"), ("p", lines[0])]
+    rows, run = [], 0.0
+    big = max((abs(lb.energy) for lb in tm.lobes), default=0.0)
+    for k, lb in enumerate(tm.lobes):
+        run += lb.energy
+        run = 0.0 if abs(run) <= ROUNDING * big * len(tm.lobes) else run  # (rounding)
+        rows.append(
+            (
+                str(k + 1),
+                f"{lb.start:.3f}",
+                f"{lb.end:.3f}",
+                f"{lb.energy:+.6g}",
+                f"{run:+.6g}",
+            )
+        )
+    if rows:
+        out.append(
+            (
+                "table",
+                ("area", "from (deg)", "to (deg)", "energy (J)", "running sum (J)"),
+                rows,
+            )
+        )
+    rest = [ln.strip() for ln in lines[1:] if "areas above" not in ln]
+    out.append(("list", rest))
+    return out
+
+
+def energy_curve(scene: Scene, tm: TurningMoment, n: int = 1441) -> tuple:
+    """``(phase deg, T, E, parts)`` over the cycle at ``n`` evenly spaced phases from the
+    first cylinder's inner dead centre: the turning moment (N m; of several cylinders the
+    sum, ``parts`` each one's as (piston, T)) and the energy ``E = int (T - T_mean) dphi``
+    above its value at the first crossing of the mean (J), each piece between neighbouring
+    phases (and the corners and crossings) integrated by the Gauss-Legendre rule of the
+    cycle's solve: exact to rounding, not a sum of samples."""
+    g = _geometry(scene)
+    phase = np.linspace(0.0, tm.cycle, n)
+    parts = [(p, np.asarray(T, dtype=float)) for p, T in cylinder_moments_at(scene, g, phase)]
+    T = parts[0][1] if len(parts) == 1 else sum(t for _, t in parts)
+    cross = [math.radians(c) for c in tm.crossings]
+    edges = sorted(set(phase.tolist()) | set(_breaks(scene, g, tm.cycle)) | set(cross))
+    E = np.concatenate([[0.0], np.cumsum(_integrals(scene, g, edges) - tm.mean * np.diff(edges))])
+    at = dict(zip(edges, E))
+    base = at[cross[0]] if cross else 0.0
+    return np.degrees(phase), T, np.array([at[p] for p in phase.tolist()]) - base, tuple(parts)

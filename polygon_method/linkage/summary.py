@@ -6,6 +6,7 @@ a million angles need little memory.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 
@@ -327,6 +328,9 @@ class _Reducer:
             change_point_minima(self, rows, spacing, float(np.min(theta)), float(np.max(theta)))
             limit_positions(self, rows, theta, spacing)
         deg = degrees_fn(dom)
+        if dom.periodic and dom.turns == 1 and self.scene.cycle > 2 * math.pi:
+            # a four-stroke engine's forces repeat after two turns: the angles within them
+            deg = degrees_fn(replace(dom, turns=round(self.scene.cycle / (2 * math.pi))))
         unbounded = unbounded_at_limits(self, rows, theta, spacing) if n else {}
         where = {}  # (name, sense) -> why it is unbounded there, where not a limit position
         for key, (ts, words) in (

@@ -13,7 +13,13 @@ from ..common.units import UNITS
 from .records import ANSWER_KINDS, UNDER_BLOCK_KINDS, Answer, split_name
 from .tables import _suggest, _which_point
 
-__all__ = ["decimal_comma", "DRIVER_ANSWERS", "ENGINE_ANSWERS", "under_block_names"]
+__all__ = [
+    "decimal_comma",
+    "DRIVER_ANSWERS",
+    "ENGINE_ANSWERS",
+    "ENGINE_PER_PISTON",
+    "under_block_names",
+]
 
 #: the engine chapter's answer keys -> their unit kind (checked in check/engine.py)
 ENGINE_ANSWERS = {
@@ -29,6 +35,11 @@ ENGINE_ANSWERS = {
     "shaking_force": "force",
     "shaking_moment": "torque",
 }
+
+
+#: the keys each cylinder of several on one crank has, its piston after them
+#: (``piston_effort_B``, as the sweep's columns name them)
+ENGINE_PER_PISTON = ("piston_effort", "crank_effort", "turning_moment", "rod_thrust", "side_thrust")
 
 
 def under_block_names(point_names, ground, sliders) -> dict:
@@ -329,6 +340,25 @@ class _Answers:
                 refuse_absurd=False,
             )
             return Answer(key, key, (), q.value, None, raw_text, line)
+        base, _, piston = key.rpartition("_")
+        if base in ENGINE_PER_PISTON and piston:  # piston_effort_B: one cylinder's of several
+            if piston not in slider_names:
+                raise self.error(
+                    f"{key}: {piston} is no slider of the scene (name a cylinder's piston)",
+                    "answers",
+                    key,
+                )
+            kind = ENGINE_ANSWERS[base]
+            q = self.qty(
+                value,
+                kind,
+                "answers",
+                key,
+                default_unit=next(iter(UNITS[kind])),
+                allow_sense=False,
+                refuse_absurd=False,
+            )
+            return Answer(key, base, (piston,), q.value, None, raw_text, line)
         prefix, _, rest = key.partition("_")
         if prefix == "I" and rest:
             return self.centre_answer(key, rest, value, line)
@@ -352,7 +382,8 @@ class _Answers:
                 "vI_L, aI_L (a wheel's contact point), "
                 "F_X, N_X, Fi_L, Ci_L, h_L, Fc_L (forces), Tmax_L, Pmax_L (a friction "
                 "drive's largest torque and power), piston_effort, crank_effort, "
-                "turning_moment, rod_thrust, side_thrust, shaking_force, shaking_moment, "
+                "turning_moment, rod_thrust, side_thrust (each with _B: piston B's of several "
+                "cylinders), shaking_force, shaking_moment, "
                 "T_mean, dE_max, I_flywheel, m_flywheel (the force and engine chapters)",
                 "answers",
                 key,

@@ -12,10 +12,14 @@ from __future__ import annotations
 
 import math
 
+import dataclasses
+
 from ..common.units import ABSURD, UNITS, did_you_mean
 from .records import FixedPath, Flywheel, Indicator
 
 _INDICATOR_KEYS = ("piston", "bore", "rod", "cycle", "unit", "angle", "stroke", "pressure")
+#: a sub-table's form of table ("angle" or "stroke") drops the shared table's other form
+_OTHER = {"angle": ("stroke",), "stroke": ("angle",)}
 _FLYWHEEL_KEYS = ("coefficient", "plus_minus", "speed", "radius", "gyration")
 #: the least coefficient of fluctuation of speed (or +- range) a scene may ask for
 _LEAST_FLUCTUATION = 1e-6
@@ -28,57 +32,90 @@ _CYCLES = {
 }
 
 
+def _form(sub) -> str | None:
+    """The form of table a sub-table gives: "angle", "stroke" or None (the shared one)."""
+    return "angle" if "angle" in sub else ("stroke" if "stroke" in sub else None)
+
+
 class _Engine:
     """The scene reader's methods for [indicator] and [flywheel] (mixed into the reader)."""
 
-    def indicator(self, sliders):
-        """[indicator]: an :class:`Indicator`, or None without the table."""
+    def indicators(self, sliders) -> tuple:
+        """[indicator]: its :class:`Indicator` records, () without the table. One piston's
+        table as the keys of [indicator]; several cylinders' as a sub-table per piston
+        (``[indicator.B]``, ``[indicator.C]``), each with the keys of [indicator] itself
+        (the shared table) or its own, and ``lag``: the crank angle its cycle begins after
+        the first's."""
         if "indicator" not in self.raw:
-            return None
+            return ()
         spec = self.table("indicator")
-        t = "indicator"
+        subs = {k: v for k, v in spec.items() if isinstance(v, dict)}
+        if not subs:
+            return (self._indicator(spec, lambda k: "indicator", sliders),)
+        shared = {k: v for k, v in spec.items() if not isinstance(v, dict)}
+        if "piston" in shared:
+            raise self.error(
+                "with a sub-table per piston ([indicator.B], [indicator.C]) the sub-tables "
+                "name the pistons: no piston here",
+                "indicator",
+                "piston",
+            )
+        out = []
+        for n, (name, sub) in enumerate(subs.items()):
+            t = f"indicator.{name}"
+            for k in sub:
+                if k not in _INDICATOR_KEYS[1:] + ("lag",):
+                    keys = list(_INDICATOR_KEYS[1:]) + ["lag"]
+                    raise self.error(f"unknown key '{k}'{did_you_mean(k, keys)}", t, k)
+            merged = {k: v for k, v in shared.items() if k not in _OTHER.get(_form(sub), ())}
+            merged.update({k: v for k, v in sub.items() if k != "lag"})
+            merged["piston"] = name
+            lag = None
+            if "lag" in sub:
+                lag = self.qty(sub["lag"], "angle", t, "lag", default_unit="deg").value
+                if n == 0 and lag != 0:
+                    raise self.error(
+                        f"{name}'s is the first cylinder: the diagram's cycle begins at its "
+                        "inner dead centre (no lag; give the others' after it)",
+                        t,
+                        "lag",
+                    )
+                if n and not 0 <= lag < out[0].cycle:
+                    raise self.error(
+                        f"lag = {sub['lag']!r}: from 0 to the cycle's "
+                        f"{math.degrees(out[0].cycle):g} deg after the first cylinder's",
+                        t,
+                        "lag",
+                    )
+
+            def where(k, sub=sub, t=t):
+                return t if k in sub or k == "piston" else "indicator"
+
+            ind = self._indicator(merged, where, sliders)
+            if out and ind.cycle != out[0].cycle:
+                raise self.error(
+                    f"{name}'s cycle is not {out[0].piston}'s: the cylinders on one crank "
+                    "share their cycle (every one 2-stroke or every one 4-stroke)",
+                    where("cycle"),
+                    "cycle",
+                )
+            out.append(dataclasses.replace(ind, lag=lag) if n else ind)
+        return tuple(out)
+
+    def _indicator(self, spec, where, sliders):
+        """One piston's :class:`Indicator` from the keys ``spec`` (``where(key)``: the
+        table a key was given in, for the error's label)."""
         for k in spec:
             if k not in _INDICATOR_KEYS:
-                raise self.error(f"unknown key '{k}'{did_you_mean(k, list(_INDICATOR_KEYS))}", t, k)
-        fixed = [s.point for s in sliders if isinstance(s, FixedPath) and not s.slot]
-        piston = spec.get("piston")
-        if piston is None:
-            if len(fixed) != 1:
-                raise self.error(
-                    'name the piston: piston = "B" (a slider on a fixed path)', t, "piston"
-                )
-            piston = fixed[0]
-        if piston not in fixed:
-            raise self.error(
-                f"piston = {piston!r}: no slider on a fixed path of that name", t, "piston"
-            )
-        if "bore" not in spec:
-            raise self.error(
-                "the indicator's pressure acts on the piston's area: give bore "
-                "(and rod, the piston rod's diameter, on a crank side)",
-                t,
-                "bore",
-            )
-        bore = self.length(spec["bore"], t, "bore")
-        area = math.pi / 4 * bore * bore
-        words = f"on a {self._words(bore)} bore"
-        if "rod" in spec:
-            rod = self.length(spec["rod"], t, "rod")
-            if rod >= bore:
-                raise self.error(
-                    f"the piston rod ({self._words(rod)}) must be thinner than "
-                    f"the bore ({self._words(bore)})",
-                    t,
-                    "rod",
-                )
-            area -= math.pi / 4 * rod * rod
-            words += f" less a {self._words(rod)} rod"
+                keys = list(_INDICATOR_KEYS)
+                raise self.error(f"unknown key '{k}'{did_you_mean(k, keys)}", where(k), k)
+        piston, area, words = self._piston_area(spec, where, sliders)
         cyc = str(spec.get("cycle", "2-stroke")).strip().lower()
         if cyc not in _CYCLES:
             raise self.error(
                 f'cycle = {spec.get("cycle")!r}: "2-stroke" (one turn, also a '
                 'steam engine) or "4-stroke" (two turns)',
-                t,
+                where("cycle"),
                 "cycle",
             )
         cycle = _CYCLES[cyc]
@@ -86,7 +123,7 @@ class _Engine:
         if not isinstance(unit, str) or unit.strip() not in UNITS["pressure"]:
             raise self.error(
                 f"unit = {unit!r}: the pressures' unit, one of " + ", ".join(UNITS["pressure"]),
-                t,
+                where("unit"),
                 "unit",
             )
         k = UNITS["pressure"][unit.strip()]
@@ -97,24 +134,28 @@ class _Engine:
                 "...], deg from the inner dead centre) or against the stroke "
                 "(stroke = [0, 0.25, ...], fractions from the inner dead centre, "
                 "with one row of pressures per stroke): one of them",
-                t,
+                where("angle" if has_angle else "stroke"),
                 "angle" if has_angle else "stroke",
             )
         if "pressure" not in spec:
-            raise self.error("no pressure: the indicator's pressures, in unit", t, "pressure")
+            raise self.error(
+                "no pressure: the indicator's pressures, in unit", where("pressure"), "pressure"
+            )
         if has_angle:
-            xs = self._numbers(spec["angle"], t, "angle")
+            xs = self._numbers(spec["angle"], where("angle"), "angle")
             if xs[0] < 0 or xs[-1] > math.degrees(cycle) + 1e-9:
                 raise self.error(
                     f"the angles run from 0 to {math.degrees(cycle):g} deg (the "
                     f"{cyc} cycle from the inner dead centre)",
-                    t,
+                    where("angle"),
                     "angle",
                 )
-            ps = self._numbers(spec["pressure"], t, "pressure", increasing=False)
+            ps = self._numbers(spec["pressure"], where("pressure"), "pressure", increasing=False)
             if len(ps) != len(xs):
-                raise self.error(f"{len(ps)} pressures for {len(xs)} angles", t, "pressure")
-            self._pressures(ps, k, unit, t)
+                raise self.error(
+                    f"{len(ps)} pressures for {len(xs)} angles", where("pressure"), "pressure"
+                )
+            self._pressures(ps, k, unit, where("pressure"))
             return Indicator(
                 piston,
                 area,
@@ -124,11 +165,59 @@ class _Engine:
                 tuple(p * k for p in ps),
                 f"{cyc} indicator diagram, {len(xs)} crank angles, {words}",
             )
-        xs = self._numbers(spec["stroke"], t, "stroke")
+        return self._stroke_table(spec, where, piston, area, (cycle, cyc), (k, unit), words)
+
+    def _piston_area(self, spec, where, sliders):
+        """(the piston, the area the pressure acts on, m^2, its words) of an indicator."""
+        fixed = [s.point for s in sliders if isinstance(s, FixedPath) and not s.slot]
+        piston = spec.get("piston")
+        if piston is None:
+            if len(fixed) != 1:
+                raise self.error(
+                    'name the piston: piston = "B" (a slider on a fixed path)',
+                    where("piston"),
+                    "piston",
+                )
+            piston = fixed[0]
+        if piston not in fixed:
+            raise self.error(
+                f"piston = {piston!r}: no slider on a fixed path of that name",
+                where("piston"),
+                "piston",
+            )
+        if "bore" not in spec:
+            raise self.error(
+                "the indicator's pressure acts on the piston's area: give bore "
+                "(and rod, the piston rod's diameter, on a crank side)",
+                where("bore"),
+                "bore",
+            )
+        bore = self.length(spec["bore"], where("bore"), "bore")
+        area = math.pi / 4 * bore * bore
+        words = f"on a {self._words(bore)} bore"
+        if "rod" in spec:
+            rod = self.length(spec["rod"], where("rod"), "rod")
+            if rod >= bore:
+                raise self.error(
+                    f"the piston rod ({self._words(rod)}) must be thinner than "
+                    f"the bore ({self._words(bore)})",
+                    where("rod"),
+                    "rod",
+                )
+            area -= math.pi / 4 * rod * rod
+            words += f" less a {self._words(rod)} rod"
+        return piston, area, words
+
+    def _stroke_table(self, spec, where, piston, area, cycles, units, words):
+        """The :class:`Indicator` of a table against the stroke: one row of pressures per
+        stroke (``cycles``: the cycle in rad and its name; ``units``: the factor to Pa and
+        the unit's name)."""
+        (cycle, cyc), (k, unit) = cycles, units
+        xs = self._numbers(spec["stroke"], where("stroke"), "stroke")
         if xs[0] < 0 or xs[-1] > 1:
             raise self.error(
                 "the stroke's places are fractions from 0 (inner dead centre) to 1 (outer)",
-                t,
+                where("stroke"),
                 "stroke",
             )
         rows = spec["pressure"]
@@ -141,17 +230,19 @@ class _Engine:
             raise self.error(
                 f"pressure = one row per stroke ({n} for a {cyc} cycle), each a "
                 "pressure at every place of stroke",
-                t,
+                where("pressure"),
                 "pressure",
             )
         ps = []
         for r in rows:
-            row = self._numbers(r, t, "pressure", increasing=False)
+            row = self._numbers(r, where("pressure"), "pressure", increasing=False)
             if len(row) != len(xs):
                 raise self.error(
-                    f"a row of {len(row)} pressures for {len(xs)} places of stroke", t, "pressure"
+                    f"a row of {len(row)} pressures for {len(xs)} places of stroke",
+                    where("pressure"),
+                    "pressure",
                 )
-            self._pressures(row, k, unit, t)
+            self._pressures(row, k, unit, where("pressure"))
             ps.append(tuple(p * k for p in row))
         return Indicator(
             piston,

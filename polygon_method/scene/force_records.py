@@ -49,7 +49,11 @@ class Indicator:
     centre in the crank's sense, rad; ``p``: the pressure at each, Pa; linear between them,
     round the cycle) or "stroke" (``x``: the piston's place as a fraction of the stroke from
     the inner dead centre, 0 to 1; ``p``: one row of pressures per stroke, in the cycle's
-    order from the inner dead centre). ``words``: how the scene gave it."""
+    order from the inner dead centre). ``words``: how the scene gave it. ``lag``: for a
+    cylinder after the first of several on one crank, the crank angle (rad, in the sense of
+    rotation) from the first cylinder's inner dead centre to where this one's cycle begins
+    (its own inner dead centre, some turns on); None for the first, or where the scene
+    leaves it to the geometry (the least such angle)."""
 
     piston: str
     area: float
@@ -58,6 +62,7 @@ class Indicator:
     x: tuple
     p: tuple
     words: str = ""
+    lag: float | None = None
 
 
 @dataclass(frozen=True)

@@ -463,7 +463,8 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected
         cylinders = self.cylinder_loads(cylinders, inp)  # a force given in a passive one
         masses, gravity = self.masses(points, sliders), self.gravity()
         friction = self.friction(pins)
-        indicator = self.indicator(sliders)
+        indicators = self.indicators(sliders)
+        indicator = indicators[0] if len(indicators) == 1 else None
         flywheel = self.flywheel()
         tolerance, answers = (
             self.answers(known, sliders, pins, loads)
@@ -510,6 +511,7 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected
             start_alpha=getattr(self, "start_alpha", 0.0),
             gravity=gravity,
             indicator=indicator,
+            indicators=indicators,
             flywheel=flywheel,
             friction=friction,
             _text=self.text,

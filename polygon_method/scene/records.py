@@ -448,9 +448,10 @@ class Scene:
     #: the crank (virtual); ``start_alpha`` (rad/s^2, ccw +) starting so: its inertia
     at_rest: bool = False
     start_alpha: float = 0.0
-    #: the engine chapter: an indicator diagram (:class:`Indicator`) and the flywheel
-    #: asked for (:class:`Flywheel`), or None
+    #: the engine chapter: the indicator diagrams (:class:`Indicator`; ``indicator`` a single
+    #: cylinder's, else None) and the flywheel asked for (:class:`Flywheel`), or None
     indicator: Indicator | None = None
+    indicators: tuple = ()
     flywheel: Flywheel | None = None
     #: Coulomb friction at the guides and the pins (:class:`Friction`), or None
     friction: Friction | None = None
@@ -614,9 +615,8 @@ class Scene:
 
     @property
     def cycle(self) -> float:
-        """The crank's angle (rad) over which the motion and its forces repeat: two turns
-        for a four-stroke engine's indicator diagram (4 pi), else one turn (2 pi)."""
-        return self.indicator.cycle if self.indicator is not None else 2 * math.pi
+        """The crank's angle (rad) the motion and forces repeat over: 4 pi for a four-stroke."""
+        return self.indicators[0].cycle if self.indicators else 2 * math.pi
 
     def slots(self, point: str) -> tuple:
         """Every slider record at ``point``: one for a block, two for a peg in two slots."""
@@ -629,7 +629,7 @@ class Scene:
     @property
     def has_forces(self) -> bool:
         """Whether the scene asks for the force analysis: masses, gravity, friction, a grip."""
-        asked = (self.gravity, self.indicator, self.friction)  # statics: an empty [masses]
+        asked = (self.gravity, self.indicators or None, self.friction)  # statics: [masses] = {}
         grip = any(r.grip for r in self.rolling)  # a friction drive's grip: its statics
         return bool(self.masses) or self.statics or grip or any(x is not None for x in asked)
 

@@ -96,7 +96,7 @@ def acting(sc) -> str:
         kinds.append("inertia")
     if sc.masses and sc.gravity is not None:
         kinds.append("weights")
-    if sc.loads or sc.indicator is not None:
+    if sc.loads or getattr(sc, "indicators", ()):
         kinds.append("loads")
     if sc.friction is not None:
         kinds.append("friction")

@@ -54,6 +54,7 @@ from ..polygons.scales import diagram_scales, force_scale
 from ..scene import FixedPath, GuideSlider, guide_words
 from ..solver.kinematics import evaluate
 from ..motion.solution import Solution, tidied
+from ..linkage.flywheel import cycle_blocks
 from ..linkage.klein import klein_blocks
 
 __all__ = ["steps_text", "steps_blocks", "read_off", "fmt", "sense_word"]
@@ -434,6 +435,7 @@ def steps_blocks(sol: Solution) -> _Doc:
     fscale = force_scale(sol.forces) if sc.has_forces and not sol.forces_refused else None
     doc.blocks += force_blocks(sol, fscale)
     doc.blocks += klein_blocks(sol)  # a slider crank at uniform crank speed
+    doc.blocks += cycle_blocks(sol)  # an engine asked for its cycle: the areas, the flywheel
     tail = [f"warning: {w}" for w in sol.warnings] + [f"note: {n}" for n in sol.notes]
     if tail:
         doc.h("Notes")

@@ -181,10 +181,13 @@ def _force_sentences(sc) -> list:
         out.append(f"Gravity acts: {sc.gravity.text}.")
     elif sc.statics and not sc.masses:  # an empty [masses]
         out.append("The links' masses are neglected: a static force analysis.")
-    if sc.indicator is not None:
+    for k, ind in enumerate(getattr(sc, "indicators", ())):
+        lag = ""
+        if k and ind.lag is not None:
+            lag = f", its cycle {math.degrees(ind.lag):g} deg of the crank after the first's"
         out.append(
-            f"The gas pressure on the piston {sc.indicator.piston} over the cycle is "
-            f"given by its {sc.indicator.words}."
+            f"The gas pressure on the piston {ind.piston} over the cycle is "
+            f"given by its {ind.words}{lag}."
         )
     if sc.flywheel is not None:
         out.append(f"A flywheel is to keep the speed steady: {sc.flywheel.words}.")

@@ -124,7 +124,7 @@ def _question(q) -> str:
             else "the acceleration of {0} relative to {1}"
         ).format(*names)
     elif kind in ENGINE_KEYS:
-        what = ENGINE_KEYS[kind][2]
+        what = ENGINE_KEYS[kind][2] + (f" of the cylinder {names[0]}" if names else "")
     else:
         what = _QUESTION_WORDS[kind].format(
             "".join(names)

@@ -1,0 +1,81 @@
+"""The sheet of an engine's cycle (``draw --diagram cycle``, A4 portrait): above, the
+turning moment against the crank angle from the (first cylinder's) inner dead centre with
+the mean line, the areas between them shaded and the crossings marked (of several cylinders
+on one crank the sum, each cylinder's own dashed under it); below, the energy E above its
+value at the first crossing, its greatest and least marked and dE_max between them. The
+numbers are the cycle's solve (:func:`~polygon_method.linkage.flywheel.turning_moment`);
+the energy curve is its integral piece by piece, not a sum of samples. Byte for byte the
+same run to run (:func:`~polygon_method.draw.sheet.figure_data`)."""
+
+from __future__ import annotations
+
+import math
+
+from ..linkage.flywheel import energy_curve, turning_moment
+from ..text.energy import book_number as _g
+from .paper import PAPERS
+from .sheet import figure_data
+
+__all__ = ["engine_cycle_sheet"]
+
+_CM = 2.54
+_ABOVE, _BELOW = "#c8e6c9", "#ffcdd2"
+_DASHED = ("#6a1b9a", "#ef6c00", "#00838f", "#ad1457", "#558b2f", "#4e342e")
+
+
+def engine_cycle_sheet(scene, fmt: str, paper: str = "A4"):
+    """(the sheet's file data: SVG text, PNG or PDF bytes; its words) for the engine's
+    cycle of ``scene``, on ``paper`` (portrait)."""
+    from matplotlib.figure import Figure
+
+    tm = turning_moment(scene)
+    x, T, E, parts = energy_curve(scene, tm)
+    w, h = PAPERS[paper]
+    fig = Figure(figsize=(w / _CM, h / _CM), dpi=100)
+    top = fig.add_axes((0.12, 0.56, 0.80, 0.34))
+    low = fig.add_axes((0.12, 0.10, 0.80, 0.34))
+    fig.text(0.5, 0.95, scene.title or "Turning-moment diagram", ha="center", fontsize=11)
+    many = len(parts) > 1
+    top.plot(x, T, color="black", lw=1.2, label="turning moment T" + (" (the sum)" if many else ""))
+    for k, (piston, t) in enumerate(parts if many else ()):
+        top.plot(x, t, color=_DASHED[k % len(_DASHED)], lw=0.7, ls="--", label=f"cylinder {piston}")
+    top.axhline(tm.mean, color="#1565c0", lw=1.0, label=f"mean T_mean = {_g(tm.mean)} N m")
+    top.fill_between(x, T, tm.mean, where=T >= tm.mean, color=_ABOVE, interpolate=True)
+    top.fill_between(x, T, tm.mean, where=T <= tm.mean, color=_BELOW, interpolate=True)
+    for c in tm.crossings:
+        top.axvline(c, color="#757575", lw=0.6, ls="-.")
+    first = f" of {parts[0][0]}" if many else ""
+    for ax in (top, low):
+        ax.set_xlim(0.0, math.degrees(tm.cycle))
+        ax.set_xlabel(f"crank angle from the inner dead centre{first} (deg, with the rotation)")
+        ax.grid(True, lw=0.3, color="#bbbbbb")
+    top.set_ylabel("turning moment (N m)")
+    top.legend(fontsize=7, loc="best")
+    low.plot(x, E, color="black", lw=1.2)
+    low.set_ylabel("energy E above E at the first crossing (J)")
+    hi, lo = _at_crossing(tm, tm.at_max), _at_crossing(tm, tm.at_min)
+    low.plot([tm.at_max], [hi], "o", color="#2e7d32")
+    low.plot([tm.at_min], [lo], "o", color="#c62828")
+    low.annotate(
+        "",
+        xy=(tm.at_max, hi),
+        xytext=(tm.at_max, lo),
+        arrowprops=dict(arrowstyle="<->", color="#455a64", lw=0.8),
+    )
+    low.text(tm.at_max, (hi + lo) / 2, f"  dE_max = {_g(tm.dE_max)} J", fontsize=9, va="center")
+    foot = f"dE_max = {_g(tm.dE_max)} J"
+    if tm.flywheel is not None:
+        cs, om, inertia, mass = tm.flywheel
+        foot += f";  I = {_g(inertia)} kg m^2 (Cs = {_g(cs)}, w = {_g(om)} rad/s)"
+        if mass is not None:
+            foot += f";  m = {_g(mass)} kg"
+    fig.text(0.5, 0.035, foot, ha="center", fontsize=10)
+    words = f"{paper} portrait: the turning-moment diagram and the energy curve"
+    return figure_data(fig, fmt), words
+
+
+def _at_crossing(tm, angle) -> float:
+    """E at the crossing at ``angle`` (deg) above E at the first: the areas before it."""
+    if angle not in tm.crossings:
+        return 0.0
+    return float(sum(lb.energy for lb in tm.lobes[: tm.crossings.index(angle)]))
