@@ -460,7 +460,7 @@ def _read_text(raw: str, kind: str, where: str, default_unit: str | None) -> tup
     without one); two senses, no number or no unit (without ``default_unit``) are errors."""
     sense = None
     text = raw.strip()
-    words = text.split()
+    words = text.replace(", ", " ").split()  # "120 rpm, clockwise" as a book writes it
     if words and words[-1].lower() in _SENSES:
         sense = _SENSES[words[-1].lower()]
         text = " ".join(words[:-1])

@@ -1,13 +1,14 @@
 """A crank's speed as a book gives it: an angular velocity (``"180 rpm cw"``), or the linear
 speed of its pin with the crank's sense (``"3 m/s cw"``: "the crank pin moves at 3 m/s"),
-``omega = v / r`` with r the crank's length."""
+``omega = v / r`` with r the crank's length; a second crank's angle in a book's words."""
 
 from __future__ import annotations
 
 from ..common.errors import SceneError
 from ..common.units import Quantity, parse_quantity
+from .angles import is_book_form
 
-__all__ = ["crank_speed"]
+__all__ = ["crank_speed", "second_crank_angle"]
 
 
 def crank_speed(reader, raw, link, table: str = "input") -> Quantity:
@@ -30,3 +31,17 @@ def crank_speed(reader, raw, link, table: str = "input") -> Quantity:
             raise exc from None
     v = reader.qty(raw, "velocity", table, "speed", need_sense=True)
     return Quantity(v.value / link.length, v.sense)
+
+
+def second_crank_angle(reader, raw, link, pivot, ground, omega) -> float:
+    """[input.second]'s crank angle (rad): a plain angle, or a book's words read as the first
+    crank's ("makes 30 deg with the vertical, ccw", "angle EDA = 60 deg, cw"), noted."""
+    if not is_book_form(raw):
+        return reader.qty(raw, "angle", "input.second", "angle", default_unit="deg").value
+    book = reader.book_angle(
+        *(raw, "angle", "input.second", "angle", "second crank angle"),
+        dead=lambda: reader.dead_centres(link, pivot, link.other(pivot), ground),
+        **dict(sense=omega or None, centres=(pivot, ground)),
+    )
+    reader.read_notes.append(f"second crank angle: {book.note}")
+    return book.value

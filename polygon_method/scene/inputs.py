@@ -12,7 +12,7 @@ import re
 from ..common.errors import SceneError, printable
 from ..common.units import UNITS
 from .angles import candidates, is_book_form
-from .crank_speed import crank_speed
+from .crank_speed import crank_speed, second_crank_angle
 from .rate_words import RATED as _RATED, slowing as _slowing
 from .records import GIVEN_KINDS, INPUT_KEYS, FixedPath, GivenRate, Input, PositionGiven, split_name
 from .tables import _suggest, _unit_at
@@ -699,8 +699,8 @@ class _Input:
                 "crank",
             )
         pivot = on_ground[0]
-        angle = self.qty(spec["angle"], "angle", "input.second", "angle", default_unit="deg").value
         speed = crank_speed(self, spec["speed"], link, "input.second")
+        angle = second_crank_angle(self, spec["angle"], link, pivot, ground, speed.value)
         if speed.value == 0:
             raise self.error(
                 "the second crank's speed is zero: give it, or make it part of the frame",

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 
+from ..common.errors import SceneError
 from ..common.units import Quantity, did_you_mean
 from .records import Friction, Gravity, Mass, split_name
 from .tables import _unit_at
@@ -102,7 +103,7 @@ class _Masses:
                     "masses",
                     name,
                 )
-            m = self.qty(spec["mass"], "mass", "masses", name, default_unit="kg").value
+            m = self._mass(spec["mass"], name)
             if not m > 0:
                 hint = (
                     "; a balanced crank (its G at its pivot) has its real mass with "
@@ -212,6 +213,23 @@ class _Masses:
             k = self.length(spec["gyration"], "masses", name)
             return m * k * k, f"k_G = {self._words(k)}, I_G = m k^2 = {m * k * k:.6g} kg m^2"
         return 0.0, "I_G = 0 (no inertia given: a point mass)"
+
+    def _mass(self, raw, name) -> float:
+        """A [masses] entry's mass (kg); a book's weight ("the reciprocating parts weigh 300
+        N": ``mass = "300 N"``, also kN, kgf, lbf) is read as the mass W / g (the g of
+        [gravity], else 9.81 m/s^2), said in the notes."""
+        try:
+            return self.qty(raw, "mass", "masses", name, default_unit="kg").value
+        except SceneError as not_a_mass:
+            try:
+                w = self.qty(raw, "force", "masses", name).value if isinstance(raw, str) else None
+            except SceneError:
+                w = None
+            if w is None:
+                raise not_a_mass from None
+        g = (self.gravity() or Gravity(STANDARD_G, None, "")).g
+        self.read_notes.append(f"mass of {name}: the weight {raw} read as W / g = {w / g:.6g} kg")
+        return w / g
 
     def gravity(self):
         """[gravity]: None without the table (gravity off)."""

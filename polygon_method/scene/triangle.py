@@ -26,11 +26,12 @@ moves by ``dF / 2h`` for a change ``dF`` of ``F = h^2``, and never by more than
 from __future__ import annotations
 
 import math
+import re
 
 from ..common.tolerances import SAME
 from .records import split_name
 
-__all__ = ["apex", "not_on_link", "polar_points", "ROUNDING"]
+__all__ = ["apex", "not_on_link", "polar_points", "along_length", "ROUNDING"]
 
 #: the rounding of a length given in the scene's unit and held in metres, relative
 ROUNDING = 2.0**-52
@@ -121,3 +122,22 @@ def not_on_link(reader, point, link, name, table) -> str:
             f"{name} in [points]; give {point} first (a point is set out from those above it)"
         )
     return f"{point} is not a point of link {link.key}"
+
+
+_MIDDLE = re.compile(r"(?:the\s+)?(?:mid-?\s*point|middle)(?:\s+of\s+\S+)?", re.IGNORECASE)
+
+
+def along_length(reader, raw, link, table, name) -> float:
+    """``along`` as a length (m): a number or a quantity in the scene's units, or a book's
+    "midpoint" (also "the middle", "the mid-point of BC"): half the link.
+
+    >>> class R:
+    ...     length = staticmethod(lambda raw, *a, **k: float(raw))
+    >>> class L:
+    ...     length = 0.15
+    >>> along_length(R, "the midpoint", L, "points", "E"), along_length(R, 0.04, L, "points", "E")
+    (0.075, 0.04)
+    """
+    if isinstance(raw, str) and _MIDDLE.fullmatch(raw.strip()):
+        return link.length / 2
+    return reader.length(raw, table, name, positive=False)
