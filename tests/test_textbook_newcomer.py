@@ -740,3 +740,33 @@ def test_a_load_across_a_link_is_refused_saying_to_give_its_angle(words):
         parse_scene(text.replace("direction = 225", f'direction = "{words}"'))
     msg = str(exc.value)
     assert "\n" not in msg and "[loads] C" in msg and "give its angle at this instant" in msg
+
+
+@pytest.mark.parametrize(
+    "speed,omega",
+    [
+        ("120 rpm c.w.", -1),
+        ("120 rpm a.c.w.", 1),
+        ("120 rpm counter clockwise", 1),
+        ("120 rpm anti clockwise", 1),
+    ],
+)
+def test_older_books_senses(speed, omega):
+    text = (HERE / "ambekar_fourbar_angle_bad_midpoint.toml").read_text(encoding="utf-8")
+    sc = parse_scene(text.replace('"120 rpm clockwise"', f'"{speed}"'))
+    assert sc.input.omega == pytest.approx(omega * 4 * math.pi, rel=1e-15)
+    turned = parse_scene(text.replace('"angle BAD = 60 deg, cw"', '"60 deg from AD, a.c.w."'))
+    assert math.degrees(turned.input.angle) == pytest.approx(60, abs=1e-12)
+
+
+def test_a_rockers_angle_from_the_frame_in_words_sets_the_position():
+    """ "When angle CDA = 60 deg" (C above AD): angle_DC = "60 deg from DA, cw", the
+    direction D -> C at 180 - 60 = 120 deg; the crank angle found puts C there (by hand: D +
+    CD (cos 120, sin 120)), and B is 150 mm from it."""
+    text = (HERE / "ambekar_fourbar_angle_bad_midpoint.toml").read_text(encoding="utf-8")
+    text = text.replace('angle = "angle BAD = 60 deg, cw"', 'angle_DC = "60 deg from DA, cw"')
+    sol = solve(parse_scene(text))
+    C = (0.15 + 0.08 * math.cos(math.radians(120)), 0.08 * math.sin(math.radians(120)))
+    assert sol.P["C"] == pytest.approx(C, abs=1e-15)
+    assert math.dist(sol.P["B"], C) == pytest.approx(0.15, rel=1e-14)
+    assert any("angle_DC" in n and "120 deg" in n for n in sol.notes)

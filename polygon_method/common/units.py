@@ -251,6 +251,9 @@ _SENSES = {
     "anti-clockwise": "ccw",
     "counterclockwise": "ccw",
     "counter-clockwise": "ccw",
+    "c.w.": "cw",  # older books' abbreviations
+    "a.c.w.": "ccw",
+    "c.c.w.": "ccw",
 }
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _QUANTITY = re.compile(rf"^\s*({_NUMBER})\s*(.*?)\s*$")
@@ -460,7 +463,10 @@ def _read_text(raw: str, kind: str, where: str, default_unit: str | None) -> tup
     without one); two senses, no number or no unit (without ``default_unit``) are errors."""
     sense = None
     text = raw.strip()
-    words = text.replace(", ", " ").split()  # "120 rpm, clockwise" as a book writes it
+    # "120 rpm, clockwise", "... counter clockwise" as a book writes them
+    words = re.sub(
+        r"(?i)\b(counter|anti) clockwise", r"\1clockwise", text.replace(", ", " ")
+    ).split()
     if words and words[-1].lower() in _SENSES:
         sense = _SENSES[words[-1].lower()]
         text = " ".join(words[:-1])

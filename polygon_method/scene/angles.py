@@ -71,7 +71,8 @@ _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _UNIT = r"deg|degrees|degree|°|rad"
 _HEAD = re.compile(rf"^\s*({_NUMBER})\s*({_UNIT})?(?:\s+|(?<=°)|$)(.*)$")
 _SENSE = {"cw": -1, "clockwise": -1, "ccw": 1, "acw": 1, "anticlockwise": 1, "counterclockwise": 1}
-_SENSE_RE = "|".join(sorted(_SENSE, key=len, reverse=True))
+_SENSE.update({"c.w.": -1, "a.c.w.": 1, "c.c.w.": 1})  # older books' abbreviations
+_SENSE_RE = "|".join(re.escape(s) for s in sorted(_SENSE, key=len, reverse=True))
 #: words that make an angle a book's form (without them the plain reader reads it)
 _BOOK_WORDS = re.compile(
     r"horizontal|vertical|dead|\b[iotb]dc\b|[iotb]\.d\.c|stroke|"
@@ -128,7 +129,7 @@ def _tidy(raw: str) -> str:
     text = re.sub(r"cent(er|re)s?\b", "centre", text)
     text = re.sub(r"\b([iotb])\.\s*d\.\s*c\.?", r"\1dc", text)
     text = re.sub(
-        r"\banti-\s*clockwise|\bcounter-\s*clockwise",
+        r"\banti[-\s]\s*clockwise|\bcounter[-\s]\s*clockwise",
         lambda m: m.group(0).replace("-", "").replace(" ", ""),
         text,
     )

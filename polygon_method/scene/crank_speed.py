@@ -1,6 +1,7 @@
 """A crank's speed as a book gives it: an angular velocity (``"180 rpm cw"``), or the linear
 speed of its pin with the crank's sense (``"3 m/s cw"``: "the crank pin moves at 3 m/s"),
-``omega = v / r`` with r the crank's length; a second crank's angle in a book's words."""
+``omega = v / r`` with r the crank's length; a second crank's angle and a link's (the
+position given by a rocker's angle) in a book's words."""
 
 from __future__ import annotations
 
@@ -8,7 +9,7 @@ from ..common.errors import SceneError
 from ..common.units import Quantity, parse_quantity
 from .angles import is_book_form
 
-__all__ = ["crank_speed", "second_crank_angle"]
+__all__ = ["crank_speed", "second_crank_angle", "link_angle"]
 
 
 def crank_speed(reader, raw, link, table: str = "input") -> Quantity:
@@ -44,4 +45,24 @@ def second_crank_angle(reader, raw, link, pivot, ground, omega) -> float:
         **dict(sense=omega or None, centres=(pivot, ground)),
     )
     reader.read_notes.append(f"second crank angle: {book.note}")
+    return book.value
+
+
+def link_angle(reader, raw, key, names, ground) -> float:
+    """``angle_DC`` (rad), the direction D -> C that sets the position: a plain angle, or a
+    book's words ("120 deg from DA, cw", "makes 30 deg with the vertical, cw"), from the
+    frame's line where D is a ground point; noted."""
+    if not is_book_form(raw):
+        return reader.qty(raw, "angle", "input", key, default_unit="deg").value
+
+    def no_dead_centre():
+        raise SceneError("a dead centre is a position of the crank; give the link's angle from +x")
+
+    pivot = names[0] if names[0] in ground else None
+    book = reader.book_angle(
+        *(raw, "angle", "input", key, key),
+        dead=lambda: [(*no_dead_centre(),)],
+        centres=None if pivot is None else (pivot, ground),
+    )
+    reader.read_notes.append(f"{key}: {book.note}")
     return book.value

@@ -12,7 +12,7 @@ import re
 from ..common.errors import SceneError, printable
 from ..common.units import UNITS
 from .angles import candidates, is_book_form
-from .crank_speed import crank_speed, second_crank_angle
+from .crank_speed import crank_speed, link_angle, second_crank_angle
 from .rate_words import RATED as _RATED, slowing as _slowing
 from .records import GIVEN_KINDS, INPUT_KEYS, FixedPath, GivenRate, Input, PositionGiven, split_name
 from .tables import _suggest, _unit_at
@@ -640,7 +640,7 @@ class _Input:
                     "input",
                     key,
                 )
-            value = self.qty(raw, "angle", "input", key, default_unit="deg").value
+            value = link_angle(self, raw, key, names, self.ground)
         near_v = (
             None
             if near is None
