@@ -770,3 +770,19 @@ def test_a_rockers_angle_from_the_frame_in_words_sets_the_position():
     assert sol.P["C"] == pytest.approx(C, abs=1e-15)
     assert math.dist(sol.P["B"], C) == pytest.approx(0.15, rel=1e-14)
     assert any("angle_DC" in n and "120 deg" in n for n in sol.notes)
+
+
+@pytest.mark.parametrize(
+    "name,words",
+    [
+        ("martin_collar_on_turning_rod", "not within 12 turns (the second input moves on"),
+        ("erdman_five_bar_two_cranks_words", "every 2 turns (the second input moves on"),
+    ],
+)
+def test_a_sweep_of_two_inputs_says_why_a_turn_does_not_bring_it_back(name, words):
+    """The second crank turns half a turn cw per turn of the first (5 / 10): back after 2;
+    the collar slides on: never. The note named a wheel, which neither has."""
+    from polygon_method import sweep
+
+    notes = " ".join(sweep(load_scene(HERE / f"{name}.toml")).notes)
+    assert words in notes and "wheel" not in notes, notes
