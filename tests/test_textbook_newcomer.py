@@ -786,3 +786,14 @@ def test_a_sweep_of_two_inputs_says_why_a_turn_does_not_bring_it_back(name, word
 
     notes = " ".join(sweep(load_scene(HERE / f"{name}.toml")).notes)
     assert words in notes and "wheel" not in notes, notes
+
+
+@pytest.mark.parametrize(
+    "words", ["angle CO5O2 = 60 deg, cw", "60 deg from O5O2, cw", "30 deg left of the vertical"]
+)
+def test_the_second_cranks_angle_in_the_words_of_the_first(words):
+    """O5C at 120 deg: 60 deg clockwise from O5 -> O2 (180 deg), or 30 deg left of the
+    vertical (by hand)."""
+    text = (HERE / "erdman_five_bar_two_cranks_words.toml").read_text(encoding="utf-8")
+    sc = parse_scene(text.replace('"makes 30 deg with the vertical, ccw"', f'"{words}"'))
+    assert math.degrees(sc.input.second.angle) == pytest.approx(120, abs=1e-12)
