@@ -657,7 +657,7 @@ def test_an_offset_key_is_refused_saying_how_an_offset_is_stated():
     with pytest.raises(SceneError) as exc:
         parse_scene(bad)
     msg = str(exc.value)
-    assert "\n" not in msg and "[sliders] B" in msg and "through = [0, -40]" in msg, msg
+    assert "\n" not in msg and "[sliders] B" in msg and "its through = [x, y]" in msg, msg
 
 
 @pytest.mark.parametrize(

@@ -61,7 +61,7 @@ def link_angle(reader, raw, key, names, ground) -> float:
     pivot = names[0] if names[0] in ground else None
     book = reader.book_angle(
         *(raw, "angle", "input", key, key),
-        dead=lambda: [(*no_dead_centre(),)],
+        dead=no_dead_centre,
         centres=None if pivot is None else (pivot, ground),
     )
     reader.read_notes.append(f"{key}: {book.note}")

@@ -37,15 +37,13 @@ def _unit_at(ang: float) -> tuple:
     return (math.cos(ang), math.sin(ang))
 
 
-#: keys a book's words lead to, and how a scene says them
-_BOOK_KEYS = {
-    "offset": ": an offset line of stroke is given by a point on it, through = [x, y] "
-    "(40 mm below a crank centre at [0, 0]: through = [0, -40])"
-}
+#: a key a book's words lead to (in [sliders], which says it with through), and how to say it
+_OFFSET = ": an offset line of stroke is its through = [x, y] (40 mm below O: [0, -40])"
 
 
 def _suggest(word, choices) -> str:
-    return _BOOK_KEYS.get(word) or did_you_mean(word, list(choices))
+    hint = _OFFSET if word == "offset" and "through" in choices else None
+    return hint or did_you_mean(word, list(choices))
 
 
 def _which_point(name, known) -> str:
