@@ -797,3 +797,52 @@ def test_the_second_cranks_angle_in_the_words_of_the_first(words):
     text = (HERE / "erdman_five_bar_two_cranks_words.toml").read_text(encoding="utf-8")
     sc = parse_scene(text.replace('"makes 30 deg with the vertical, ccw"', f'"{words}"'))
     assert math.degrees(sc.input.second.angle) == pytest.approx(120, abs=1e-12)
+
+
+PISTON = """units = "mm"
+[ground]
+O = [0, 0]
+[links]
+OA = 100
+AB = 400
+[sliders]
+B = {{ path = "horizontal" }}
+{hint}
+[input]
+crank = "OA"
+angle = 30
+vs_B = "{v}"
+as_B = "20 m/s^2 towards the crank"
+"""
+
+
+@pytest.mark.parametrize(
+    "hint,v,sign",
+    [
+        ("", "5 m/s towards the crank", -1),  # the piston right of O: towards it is -x
+        ("", "5 m/s away from the crank", 1),
+        ('[assembly]\nB = "left"', "5 m/s towards the crank", 1),
+        ("[assembly]\nB = [-300, 0]", "5 m/s, toward the crank shaft", 1),
+    ],
+)
+def test_the_piston_moves_towards_the_crank(hint, v, sign):
+    """ "The piston moves at 5 m/s towards the crank": x_B = r cos t + s sqrt(l^2 - r^2
+    sin^2 t) (s the side), the crank's omega = v_B / (dx_B/dt) (by hand, 40 digits)."""
+    sol = solve(parse_scene(PISTON.format(hint=hint, v=v)))
+    side = 1 if not hint else -1
+    r, l, t = mpf("0.1"), mpf("0.4"), pi / 6
+
+    def x(a):
+        return r * mpmath.cos(a) + side * mpmath.sqrt(l * l - (r * mpmath.sin(a)) ** 2)
+
+    assert (x(t) > 0) == (side > 0)
+    _close(sol.S["B"][0], sign * 5)
+    _close(sol.scene.input.omega, sign * 5 / mpmath.diff(x, t))
+    _close(sol.S["B"][1], -20 * (1 if x(t) > 0 else -1))
+
+
+def test_towards_the_crank_with_the_position_given_otherwise_is_refused():
+    text = PISTON.format(hint="", v="5 m/s towards the crank").replace("angle = 30", "s_B = 450")
+    with pytest.raises(SceneError) as exc:
+        parse_scene(text)
+    assert "\n" not in str(exc.value) and "left, right, up or down" in str(exc.value)

@@ -13,6 +13,7 @@ from ..common.errors import SceneError, printable
 from ..common.units import UNITS
 from .angles import candidates, is_book_form
 from .crank_speed import crank_speed, link_angle, second_crank_angle
+from .piston_words import towards_the_crank
 from .rate_words import RATED as _RATED, slowing as _slowing
 from .records import GIVEN_KINDS, INPUT_KEYS, FixedPath, GivenRate, Input, PositionGiven, split_name
 from .tables import _suggest, _unit_at
@@ -343,7 +344,8 @@ class _Input:
                 "input",
                 given_keys[0],
             )
-        if given_keys:
+        if given_keys:  # (the crank as stated, for "the piston moves towards the crank")
+            self.crank_now = None if placed is not None else (pivot, tip, angle, link)
             given = self.given_rate(given_keys[0], rate_keys, spec, index)
             if given.rate is not None and "acceleration" in spec:
                 raise self.error(
@@ -777,6 +779,7 @@ class _Input:
                 if sl is None:
                     raise self.error(f"no slider {''.join(names)} in [sliders]", "input", key)
                 u = getattr(sl, "u", None)
+                raw, raw_rate = towards_the_crank(self, sl, (raw, key), (raw_rate, rate_key))
             else:
                 if point is None or point not in self.known:
                     raise self.error(f"no point {''.join(names)} in the scene", "input", key)
