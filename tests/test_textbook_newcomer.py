@@ -846,3 +846,29 @@ def test_towards_the_crank_with_the_position_given_otherwise_is_refused():
     with pytest.raises(SceneError) as exc:
         parse_scene(text)
     assert "\n" not in str(exc.value) and "left, right, up or down" in str(exc.value)
+
+
+@pytest.mark.parametrize(
+    "old,new",
+    [
+        ('"O4-B" = { torque = "20 N m cw" }', '"O4-B" = { couple = "20 N m cw" }'),
+        ('"O4-B" = { torque = "20 N m cw" }', '"O4-B" = { torque = "2000 N cm cw" }'),
+        ('"O4-B" = { torque = "20 N m cw" }', '"O4-B" = { torque = "20 N-m cw" }'),
+    ],
+)
+def test_a_couple_and_its_units_as_books_write_them(old, new):
+    """ "A couple of 20 N m acts on link 4", in N cm: the same torque on the crank as the
+    file's (the virtual-work test above holds that one)."""
+    text = (HERE / "force_static_shigley_fourbar_coupler_load.toml").read_text(encoding="utf-8")
+    want = solve(parse_scene(text)).forces.input_torque
+    assert old in text
+    assert solve(parse_scene(text.replace(old, new))).forces.input_torque == pytest.approx(
+        want, rel=1e-14
+    )
+
+
+@pytest.mark.parametrize("inertia", ["0.0588 kg-m^2", "0.0588 kg.m^2", "588 kg-cm^2"])
+def test_a_moment_of_inertia_with_a_hyphen_or_a_dot(inertia):
+    text = (HERE / "force_wilson_sadler_slider_crank_inertia.toml").read_text(encoding="utf-8")
+    sc = parse_scene(text.replace("gyration = 140", f'inertia = "{inertia}"'))
+    assert sc.mass_of("AB").inertia == pytest.approx(0.0588, rel=1e-14)  # 3 kg x 0.14^2

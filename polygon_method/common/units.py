@@ -134,6 +134,7 @@ UNITS: dict[str, dict[str, float]] = {
         "kNm": 1e3,
         "kN.m": 1e3,
         "N mm": 1e-3,
+        "N cm": 1e-2,
         "Nmm": 1e-3,
         "N·mm": 1e-3,
         "lbf in": 4.4482216152605 * 0.0254,
@@ -325,6 +326,9 @@ def _unit_factor(unit: str, kind: str, where: str) -> float:
     table = UNITS[kind]
     if unit in table:
         return table[unit]
+    spaced = re.sub(r"(?<=[A-Za-z])[-.](?=[A-Za-z])", " ", unit)  # "kg-m^2", "kg.m^2"
+    if spaced in table:
+        return table[spaced]
     folded = {u.lower(): f for u, f in table.items()}
     if unit.lower() in folded and kind not in ("force", "pressure"):
         return folded[unit.lower()]

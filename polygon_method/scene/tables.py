@@ -570,6 +570,8 @@ class _Tables:
                     "loads",
                     name,
                 )
+            if "couple" in spec and "torque" not in spec:  # a book's "a couple of 50 N m"
+                spec = {("torque" if k == "couple" else k): v for k, v in spec.items()}
             allowed = ("force", "direction", "torque", "pressure", "bore", "rod", "back")
             for k in spec:
                 if k not in allowed:
