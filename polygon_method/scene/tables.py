@@ -145,8 +145,8 @@ class _Tables:
             turn = spec.get("turn")
             if turn not in ("cw", "ccw"):
                 raise self.error(
-                    'turn = "cw" or "ccw": how the triangle (the two '
-                    "points of distances, then this point) reads",
+                    'turn = "cw" or "ccw": how the triangle (the two points of distances, then '
+                    'this point) reads (a point "below BC", B to the left of C, reads cw)',
                     table,
                     name,
                 )
