@@ -872,3 +872,11 @@ def test_a_moment_of_inertia_with_a_hyphen_or_a_dot(inertia):
     text = (HERE / "force_wilson_sadler_slider_crank_inertia.toml").read_text(encoding="utf-8")
     sc = parse_scene(text.replace("gyration = 140", f'inertia = "{inertia}"'))
     assert sc.mass_of("AB").inertia == pytest.approx(0.0588, rel=1e-14)  # 3 kg x 0.14^2
+
+
+def test_a_wheel_left_out_of_links_is_told_it_is_a_link():
+    text = (HERE / "hamilton_mabie_wheel_rod_slider.toml").read_text(encoding="utf-8")
+    with pytest.raises(SceneError) as exc:
+        parse_scene(text.replace("CA = 0.25\n", ""))
+    msg = str(exc.value)
+    assert "\n" not in msg and "[rolling] CA" in msg and "CA = its radius" in msg, msg

@@ -525,9 +525,10 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected
             raise self.error(f"'{name}' is not a link name (two points, e.g. BC)", table, key)
         link = self.index.get(frozenset(pts))
         if link is None:
+            wheel = f" (a wheel is a link too: {name} = its radius)" if table == "rolling" else ""
             raise self.error(
                 f"no link {name} in [links]"
-                f"{_suggest(name, [lk.key for lk in self.index.values()])}",
+                f"{_suggest(name, [lk.key for lk in self.index.values()]) or wheel}",
                 table,
                 key,
             )
