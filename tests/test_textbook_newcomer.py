@@ -880,3 +880,14 @@ def test_a_wheel_left_out_of_links_is_told_it_is_a_link():
         parse_scene(text.replace("CA = 0.25\n", ""))
     msg = str(exc.value)
     assert "\n" not in msg and "[rolling] CA" in msg and "CA = its radius" in msg, msg
+
+
+def test_the_ram_force_for_a_given_crank_torque_by_scaling_the_load():
+    """The book's other question: the ram's force that a torque of 100 N m on the crank holds.
+    Linear in the load: P = 10 kN x 100 / T; stated with P, the crank needs 100 N m (and the
+    virtual work of the test above gives the same)."""
+    text = (HERE / "force_static_ballaney_toggle_press.toml").read_text(encoding="utf-8")
+    T = solve(parse_scene(text)).forces.input_torque
+    P = 10000 * 100 / abs(T)
+    again = solve(parse_scene(text.replace('force = "10 kN"', f'force = "{P!r} N"')))
+    assert abs(again.forces.input_torque) == pytest.approx(100, rel=1e-12)
