@@ -891,3 +891,28 @@ def test_the_ram_force_for_a_given_crank_torque_by_scaling_the_load():
     P = 10000 * 100 / abs(T)
     again = solve(parse_scene(text.replace('force = "10 kN"', f'force = "{P!r} N"')))
     assert abs(again.forces.input_torque) == pytest.approx(100, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    "words,sign",
+    [
+        ("0.1 m/s, extending", 1),
+        ("extending at 0.1 m/s", 1),
+        ("retracting at 100 mm/s", -1),
+        ("0.1 m/s lengthening", 1),
+        ("0.1 m/s shortening", -1),
+    ],
+)
+def test_a_cylinders_rate_in_a_books_order_of_words(words, sign):
+    """The dump body's omega by the cosine rule (the test above), the sign by the way the
+    cylinder moves ("extending at 0.1 m/s" was read as a direction "at 0.1 m/s")."""
+    text = (HERE / "mabie_dump_body_cylinder.toml").read_text(encoding="utf-8")
+    sol = solve(parse_scene(text.replace('"0.1 m/s extending"', f'"{words}"')))
+    want = _sol("mabie_dump_body_cylinder").W["QR"]
+    assert sol.W["QR"] == pytest.approx(sign * want, rel=1e-13)
+
+
+def test_a_collars_sliding_after_a_comma():
+    text = (HERE / "martin_collar_on_turning_rod.toml").read_text(encoding="utf-8")
+    sol = solve(parse_scene(text.replace('"3 m/s outward"', '"3 m/s, outward"')))
+    _close(math.hypot(*sol.V["C"]), mpmath.sqrt(10))

@@ -36,16 +36,19 @@ _SENSE_OR_WAY = re.compile(
 )
 
 
+_WAYS = r"(extending|retracting|lengthening|shortening|outwards?|inwards?)"
+
+
 def _extending(raw):
-    """A cylinder's rate with a word: ``"0.2 m/s extending"`` -> 0.2 m/s, ``retracting`` ->
-    its negative (a signed number: + extending)."""
+    """A cylinder's rate with a word: ``"0.2 m/s extending"`` (``"0.2 m/s, extending"``,
+    ``"extending at 0.2 m/s"``) -> 0.2 m/s, ``retracting`` -> its negative (a signed
+    number: + extending)."""
     if isinstance(raw, str):
-        m = re.match(
-            r"^\s*(.*?\S)\s+(extending|retracting|outwards?|inwards?)\s*$", raw, re.IGNORECASE
-        )
+        m = re.match(rf"^\s*(.*?\S)\s*,?\s+{_WAYS}\s*$", raw, re.IGNORECASE)
+        m = m or re.match(rf"^\s*(){_WAYS}\s+(?:at\s+)?(.*?\S)\s*$", raw, re.IGNORECASE)
         if m:
-            text = m.group(1).strip()
-            if m.group(2).lower() in ("retracting", "inward", "inwards"):
+            text = (m.group(1) or m.group(3)).strip()
+            if m.group(2).lower() in ("retracting", "shortening", "inward", "inwards"):
                 text = text[1:] if text.startswith("-") else "-" + text.lstrip("+")
             return text
     return raw
@@ -53,7 +56,7 @@ def _extending(raw):
 
 #: "1.5 m/s outward", "2 m/s towards O", "inwards", "away from O": the sliding's sense
 _SENSE = re.compile(
-    r"^\s*(.*?\S)\s+(outwards?|inwards?|(?:towards?|away from)\s+"
+    r"^\s*(.*?\S)\s*,?\s+(outwards?|inwards?|(?:towards?|away from)\s+"
     r"([A-Z][0-9]*))\s*$",
     re.IGNORECASE,
 )
