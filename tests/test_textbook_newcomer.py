@@ -759,12 +759,13 @@ def test_older_books_senses(speed, omega):
     assert math.degrees(turned.input.angle) == pytest.approx(60, abs=1e-12)
 
 
-def test_a_rockers_angle_from_the_frame_in_words_sets_the_position():
+@pytest.mark.parametrize("words", ["60 deg from DA, cw", "angle CDA = 60 deg, cw"])
+def test_a_rockers_angle_from_the_frame_in_words_sets_the_position(words):
     """ "When angle CDA = 60 deg" (C above AD): angle_DC = "60 deg from DA, cw", the
     direction D -> C at 180 - 60 = 120 deg; the crank angle found puts C there (by hand: D +
     CD (cos 120, sin 120)), and B is 150 mm from it."""
     text = (HERE / "ambekar_fourbar_angle_bad_midpoint.toml").read_text(encoding="utf-8")
-    text = text.replace('angle = "angle BAD = 60 deg, cw"', 'angle_DC = "60 deg from DA, cw"')
+    text = text.replace('angle = "angle BAD = 60 deg, cw"', f'angle_DC = "{words}"')
     sol = solve(parse_scene(text))
     C = (0.15 + 0.08 * math.cos(math.radians(120)), 0.08 * math.sin(math.radians(120)))
     assert sol.P["C"] == pytest.approx(C, abs=1e-15)
