@@ -123,7 +123,7 @@ def _rate(f, n):
 # -- the answers each file gives, as a book prints them
 
 
-#: the twenty files, each with its [answers] as a book prints them
+#: the twenty files (and one more), each with its [answers] as a book prints them
 NEWCOMER = [
     "ambekar_fourbar_angle_bad_midpoint",
     "bansal_fourbar_pin_speed_retarding",
@@ -145,11 +145,12 @@ NEWCOMER = [
     "force_bansal_steam_engine_efforts",
     "force_jagdish_lal_vertical_engine_weight",
     "force_static_ballaney_toggle_press",
+    "ballaney_shaper_lever_in_ram_slot",
 ]
 
 
-def test_twenty_files_each_solved_by_a_test_here():
-    assert len(set(NEWCOMER)) == 20 and all((HERE / f"{n}.toml").exists() for n in NEWCOMER)
+def test_the_files_each_solved_by_a_test_here():
+    assert len(set(NEWCOMER)) == 21 and all((HERE / f"{n}.toml").exists() for n in NEWCOMER)
     rest = Path(__file__).read_text(encoding="utf-8").split("def test_the_files_answers")[-1]
     assert all(n in rest for n in NEWCOMER), [n for n in NEWCOMER if n not in rest]
 
@@ -375,6 +376,26 @@ def test_hamilton_mabie_drag_link_ram_and_its_time_ratio():
     assert len(marks) == 2 and all(min(abs(m - e) for e in ends) < 1e-9 for m in marks), marks
     ahead = (marks[1] - marks[0]) % 360  # the working stroke: the longer turn
     _close(lk.time_ratio, mpf(max(ahead, 360 - ahead)) / min(ahead, 360 - ahead))
+
+
+def test_ballaney_shaper_ram_by_the_levers_angle():
+    sol = _sol("ballaney_shaper_lever_in_ram_slot")
+    w = -pi
+
+    def lever(t):
+        th = mpmath.radians(150) + w * t
+        return mpmath.atan2(mpf("0.3") + mpf("0.15") * mpmath.sin(th), mpf("0.15") * mpmath.cos(th))
+
+    def pts(t):
+        psi = lever(t)
+        R = (mpf("0.7") * mpmath.cos(psi), mpf("0.7") * mpmath.sin(psi))
+        return {"R": R, "Y": (R[0], mpf("0.65"))}
+
+    P, V, A = _motion(pts)
+    _check_kinematics(sol, P, V, A)
+    _close(sol.S["Y"][0], V["Y"][0])
+    _close(sol.S["Y"][1], A["Y"][0])
+    _close(sol.S["R"][0], V["R"][1])  # the pin's sliding in the vertical slot: R's dy/dt
 
 
 def test_bevan_toggle():
