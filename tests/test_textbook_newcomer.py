@@ -938,3 +938,10 @@ def test_a_collars_sliding_after_a_comma():
     text = (HERE / "martin_collar_on_turning_rod.toml").read_text(encoding="utf-8")
     sol = solve(parse_scene(text.replace('"3 m/s outward"', '"3 m/s, outward"')))
     _close(math.hypot(*sol.V["C"]), mpmath.sqrt(10))
+
+
+def test_a_bare_speed_is_told_its_unit_and_its_sense_at_once():
+    text = (HERE / "ambekar_fourbar_angle_bad_midpoint.toml").read_text(encoding="utf-8")
+    with pytest.raises(SceneError) as exc:
+        parse_scene(text.replace('speed = "120 rpm clockwise"', "speed = 10"))
+    assert '"10 rad/s ccw"' in str(exc.value) and "\n" not in str(exc.value)

@@ -437,7 +437,7 @@ def _whole_way(raw, kind, where, default_unit, need_sense, allow_sense, refuse_a
     if isinstance(raw, str):
         value, factor, sense = _read_text(raw, kind, where, default_unit)
     else:
-        (value, factor), sense = _read_number(raw, kind, where, default_unit), None
+        (value, factor), sense = _read_number(raw, kind, where, default_unit, need_sense), None
     if not math.isfinite(value):
         raise SceneError(f"'{_clip(raw)}' is not a finite number", key=where)
     _check_sense(raw, value, sense, where, need_sense, allow_sense)
@@ -494,7 +494,7 @@ def _read_text(raw: str, kind: str, where: str, default_unit: str | None) -> tup
     return value, _unit_factor(unit, kind, where), sense
 
 
-def _read_number(raw, kind: str, where: str, default_unit: str | None) -> tuple:
+def _read_number(raw, kind: str, where: str, default_unit: str | None, need_sense=False) -> tuple:
     """A bare number's value and ``default_unit``'s factor to SI; without a default unit, or an
     integer too large for a float, an error."""
     try:
@@ -508,7 +508,7 @@ def _read_number(raw, kind: str, where: str, default_unit: str | None) -> tuple:
     if default_unit is None:
         raise SceneError(
             f"{raw} has no unit; write it as a string such as "
-            f'"{raw} {format_unit_list(kind).split(", ")[0]}"',
+            f'"{raw} {format_unit_list(kind).split(", ")[0]}{" ccw" if need_sense else ""}"',
             key=where,
         )
     return value, _unit_factor(default_unit, kind, where)
