@@ -945,3 +945,27 @@ def test_a_bare_speed_is_told_its_unit_and_its_sense_at_once():
     with pytest.raises(SceneError) as exc:
         parse_scene(text.replace('speed = "120 rpm clockwise"', "speed = 10"))
     assert '"10 rad/s ccw"' in str(exc.value) and "\n" not in str(exc.value)
+
+
+@pytest.mark.parametrize(
+    "given",
+    [
+        'inertia = "0.1263 kg m^2", about = "A"',
+        f'gyration = {1000 * math.sqrt(0.1263 / 3)!r}, about = "A"',
+    ],
+)
+def test_a_moment_of_inertia_about_an_end_by_the_parallel_axes(given):
+    """The rod of 3 kg with G 150 mm from A and k_G = 140 mm: I_A = 3 (0.14^2 + 0.15^2) =
+    0.1263 kg m^2 (by hand); stated about A it is the same rod (the same torque)."""
+    text = (HERE / "force_wilson_sadler_slider_crank_inertia.toml").read_text(encoding="utf-8")
+    sc = parse_scene(text.replace("gyration = 140", given))
+    assert sc.mass_of("AB").inertia == pytest.approx(0.0588, rel=1e-12)
+    want = _sol("force_wilson_sadler_slider_crank_inertia").forces.input_torque
+    assert solve(sc).forces.input_torque == pytest.approx(want, rel=1e-12)
+
+
+def test_a_moment_of_inertia_about_an_end_below_m_d_squared_is_refused():
+    text = (HERE / "force_wilson_sadler_slider_crank_inertia.toml").read_text(encoding="utf-8")
+    with pytest.raises(SceneError) as exc:
+        parse_scene(text.replace("gyration = 140", 'inertia = "0.05 kg m^2", about = "A"'))
+    assert "no body has it" in str(exc.value) and "\n" not in str(exc.value)
