@@ -969,3 +969,17 @@ def test_a_moment_of_inertia_about_an_end_below_m_d_squared_is_refused():
     with pytest.raises(SceneError) as exc:
         parse_scene(text.replace("gyration = 140", 'inertia = "0.05 kg m^2", about = "A"'))
     assert "no body has it" in str(exc.value) and "\n" not in str(exc.value)
+
+
+@pytest.mark.parametrize(
+    "words,part",
+    [("1/3 of BC", 1 / 3), ("0.4 BC", 0.4), ("2/3 of CB", 2 / 3), ("40 mm", 0.04 / 0.15)],
+)
+def test_a_part_of_a_link(words, part):
+    """E "one third of BC from B": B + part (C - B) (by hand, from the solved ends); a length
+    with its unit is still a length."""
+    text = (HERE / "ambekar_fourbar_angle_bad_midpoint.toml").read_text(encoding="utf-8")
+    sol = solve(parse_scene(text.replace('along = "midpoint"', f'along = "{words}"')))
+    B, C = sol.P["B"], sol.P["C"]
+    want = (B[0] + part * (C[0] - B[0]), B[1] + part * (C[1] - B[1]))
+    assert sol.P["E"] == pytest.approx(want, abs=1e-15)

@@ -124,12 +124,14 @@ def not_on_link(reader, point, link, name, table) -> str:
     return f"{point} is not a point of link {link.key}"
 
 
+_PART = re.compile(r"([0-9]*\.?[0-9]+)\s*(?:/\s*([0-9]+))?\s*(?:of\s+)?([A-Za-z][A-Za-z0-9-]*)")
 _MIDDLE = re.compile(r"(?:the\s+)?(?:mid-?\s*point|middle)(?:\s+of\s+\S+)?", re.IGNORECASE)
 
 
 def along_length(reader, raw, link, table, name) -> float:
-    """``along`` as a length (m): a number or a quantity in the scene's units, or a book's
-    "midpoint" (also "the middle", "the mid-point of BC"): half the link.
+    """``along`` as a length (m): a number or a quantity in the scene's units, a book's
+    "midpoint" (also "the middle", "the mid-point of BC"): half the link, or a part of it
+    ("1/3 of BC", "0.4 BC", the link named as written or reversed).
 
     >>> class R:
     ...     length = staticmethod(lambda raw, *a, **k: float(raw))
@@ -140,4 +142,8 @@ def along_length(reader, raw, link, table, name) -> float:
     """
     if isinstance(raw, str) and _MIDDLE.fullmatch(raw.strip()):
         return link.length / 2
+    part = _PART.fullmatch(raw.strip()) if isinstance(raw, str) else None
+    ends = (link.p + link.q).upper(), (link.q + link.p).upper()
+    if part and part.group(3).upper().replace("-", "") in ends:  # "1/3 of BC", "0.4 BC"
+        return float(part.group(1)) / float(part.group(2) or 1) * link.length
     return reader.length(raw, table, name, positive=False)
