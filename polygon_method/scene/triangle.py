@@ -136,9 +136,11 @@ def along_length(reader, raw, link, table, name) -> float:
     >>> class R:
     ...     length = staticmethod(lambda raw, *a, **k: float(raw))
     >>> class L:
-    ...     length = 0.15
+    ...     p, q, length = "B", "C", 0.15
     >>> along_length(R, "the midpoint", L, "points", "E"), along_length(R, 0.04, L, "points", "E")
     (0.075, 0.04)
+    >>> round(along_length(R, "1/3 of CB", L, "points", "E"), 15)
+    0.05
     """
     if isinstance(raw, str) and _MIDDLE.fullmatch(raw.strip()):
         return link.length / 2
