@@ -152,8 +152,6 @@ def along_length(reader, raw, link, table, name) -> float:
     part = _PART.fullmatch(raw.strip()) if isinstance(raw, str) else None
     ends = (link.p + link.q).upper(), (link.q + link.p).upper()
     named = part is not None and part.group(4).upper().replace("-", "") in ends
-    if named and (part.group(3) or part.group(4).lower() not in _LENGTHS):  # "1/3 of BC", "0.4 BC"
-        return (
-            float(part.group(1)) / float(part.group(2) or 1) * link.length
-        )  # (link CM: "0.4 of CM")
+    if named and (part.group(3) or part.group(4).lower() not in _LENGTHS):  # "1/3 of BC"
+        return float(part.group(1)) / float(part.group(2) or 1) * link.length
     return reader.length(raw, table, name, positive=False)
