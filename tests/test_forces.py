@@ -466,7 +466,7 @@ speed = "450 rpm ccw"
     "extra, words",
     [
         ('[masses]\nAB = { mass = "-2 kg" }', "[masses] AB (line 15): a mass must be positive"),
-        ('[masses]\nAB = { mass = "2 kN" }', "'kN' is a unit of force, not of mass"),
+        ('[masses]\nAB = { mass = "2 m/s" }', "'m/s' is a unit of velocity, not of mass"),
         ('[masses]\nAB = { mass = 2, centre = "B", along = 20 }', "not both"),
         ('[masses]\nAB = { mass = 2, centre = "O" }', "'O' is not a point of link AB"),
         (

@@ -349,7 +349,7 @@ def test_every_construction_line_carries_its_mark_and_runs_as_it_says(path):
                 n += 1
                 assert ln.mark, (c.title, ln.relation)
                 assert ln.mark[0] in "\u22a5\u2225" or ln.mark.startswith("along"), ln.mark
-                m = re.fullmatch("([\u22a5\u2225]) ([A-Z][0-9]*)([A-Z][0-9]*)", ln.mark)
+                m = re.fullmatch("([\u22a5\u2225]) ([A-Z][0-9]*)-?([A-Z][0-9]*)", ln.mark)
                 if m and m.group(2) in sol.P and m.group(3) in sol.P:
                     (x1, y1), (x2, y2) = sol.P[m.group(2)], sol.P[m.group(3)]
                     L = math.hypot(x2 - x1, y2 - y1)

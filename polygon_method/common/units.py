@@ -134,6 +134,7 @@ UNITS: dict[str, dict[str, float]] = {
         "kNm": 1e3,
         "kN.m": 1e3,
         "N mm": 1e-3,
+        "N cm": 1e-2,
         "Nmm": 1e-3,
         "N·mm": 1e-3,
         "lbf in": 4.4482216152605 * 0.0254,
@@ -268,6 +269,9 @@ _SENSES = {
     "anti-clockwise": "ccw",
     "counterclockwise": "ccw",
     "counter-clockwise": "ccw",
+    "c.w.": "cw",  # older books' abbreviations
+    "a.c.w.": "ccw",
+    "c.c.w.": "ccw",
 }
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _QUANTITY = re.compile(rf"^\s*({_NUMBER})\s*(.*?)\s*$")
@@ -339,6 +343,9 @@ def _unit_factor(unit: str, kind: str, where: str) -> float:
     table = UNITS[kind]
     if unit in table:
         return table[unit]
+    spaced = re.sub(r"(?<=[A-Za-z])[-.](?=[A-Za-z])", " ", unit)  # "kg-m^2", "kg.m^2"
+    if spaced in table:
+        return table[spaced]
     folded = {u.lower(): f for u, f in table.items()}
     if unit.lower() in folded and kind not in ("force", "pressure"):
         return folded[unit.lower()]
@@ -447,7 +454,7 @@ def _whole_way(raw, kind, where, default_unit, need_sense, allow_sense, refuse_a
     if isinstance(raw, str):
         value, factor, sense = _read_text(raw, kind, where, default_unit)
     else:
-        (value, factor), sense = _read_number(raw, kind, where, default_unit), None
+        (value, factor), sense = _read_number(raw, kind, where, default_unit, need_sense), None
     if not math.isfinite(value):
         raise SceneError(f"'{_clip(raw)}' is not a finite number", key=where)
     _check_sense(raw, value, sense, where, need_sense, allow_sense)
@@ -477,7 +484,10 @@ def _read_text(raw: str, kind: str, where: str, default_unit: str | None) -> tup
     without one); two senses, no number or no unit (without ``default_unit``) are errors."""
     sense = None
     text = raw.strip()
-    words = text.split()
+    # "120 rpm, clockwise", "... counter clockwise" as a book writes them
+    words = re.sub(
+        r"(?i)\b(counter|anti) clockwise", r"\1clockwise", text.replace(", ", " ")
+    ).split()
     if words and words[-1].lower() in _SENSES:
         sense = _SENSES[words[-1].lower()]
         text = " ".join(words[:-1])
@@ -501,7 +511,7 @@ def _read_text(raw: str, kind: str, where: str, default_unit: str | None) -> tup
     return value, _unit_factor(unit, kind, where), sense
 
 
-def _read_number(raw, kind: str, where: str, default_unit: str | None) -> tuple:
+def _read_number(raw, kind: str, where: str, default_unit: str | None, need_sense=False) -> tuple:
     """A bare number's value and ``default_unit``'s factor to SI; without a default unit, or an
     integer too large for a float, an error."""
     try:
@@ -515,7 +525,7 @@ def _read_number(raw, kind: str, where: str, default_unit: str | None) -> tuple:
     if default_unit is None:
         raise SceneError(
             f"{raw} has no unit; write it as a string such as "
-            f'"{raw} {format_unit_list(kind).split(", ")[0]}"',
+            f'"{raw} {format_unit_list(kind).split(", ")[0]}{" ccw" if need_sense else ""}"',
             key=where,
         )
     return value, _unit_factor(default_unit, kind, where)

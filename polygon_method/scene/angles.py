@@ -71,13 +71,15 @@ _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _UNIT = r"deg|degrees|degree|°|rad"
 _HEAD = re.compile(rf"^\s*({_NUMBER})\s*({_UNIT})?(?:\s+|(?<=°)|$)(.*)$")
 _SENSE = {"cw": -1, "clockwise": -1, "ccw": 1, "acw": 1, "anticlockwise": 1, "counterclockwise": 1}
-_SENSE_RE = "|".join(sorted(_SENSE, key=len, reverse=True))
+_SENSE.update({"c.w.": -1, "a.c.w.": 1, "c.c.w.": 1})  # older books' abbreviations
+_SENSE_RE = "|".join(re.escape(s) for s in sorted(_SENSE, key=len, reverse=True))
 #: words that make an angle a book's form (without them the plain reader reads it)
 _BOOK_WORDS = re.compile(
     r"horizontal|vertical|dead|\b[iotb]dc\b|[iotb]\.d\.c|stroke|"
     r"\bfrom\b|\babove\b|\bbelow\b|\bleft\b|\bright\b|\bpast\b|\bbefore\b|"
     r"\bafter\b|\bbeyond\b|x\s*axis|\+x|\bup(wards?)?\b|\bdown(wards?)?\b|"
-    r"line of cent(?:re|er)s?|fixed link",
+    r"line of cent(?:re|er)s?|fixed link|\bangle\s+[a-z]\w*\s*=|^\s*(?:at\s|θ|theta)|"
+    r"^\s*(?:perpendicular|normal|at right angles|along|parallel)\b",
     re.IGNORECASE,
 )
 #: a way in words, without a size: "down" (vertically downwards, straight down, to the left)
@@ -127,11 +129,28 @@ def _tidy(raw: str) -> str:
     text = re.sub(r"cent(er|re)s?\b", "centre", text)
     text = re.sub(r"\b([iotb])\.\s*d\.\s*c\.?", r"\1dc", text)
     text = re.sub(
-        r"\banti-\s*clockwise|\bcounter-\s*clockwise",
+        r"\banti[-\s]\s*clockwise|\bcounter[-\s]\s*clockwise",
         lambda m: m.group(0).replace("-", "").replace(" ", ""),
         text,
     )
     text = re.sub(r"[,;()]", " ", text)
+    # "angle BAD = 60 deg, ccw": a four-bar's angle at the crank's pivot A, from the frame's
+    # AD (read_angle finds which end is the frame's)
+    text = re.sub(
+        rf"^angle\s+((?:[a-z][0-9]*){{3}})\s*=\s*({_NUMBER}\s*(?:{_UNIT})?)(.*)$",
+        r"\2 from angle \1 \3",
+        text,
+    )
+    # "theta2 = 30 deg", "θ = 30°" (a US book's crank angle): the plain angle that follows
+    text = re.sub(r"^(?:θ|theta)\s*_?[0-9]*\s*=\s*", "", text)
+    # "the crank makes 45 deg with ...", "crank OA is inclined at 30 deg to ...": the
+    # crank is the subject of the book's sentence
+    text = re.sub(
+        r"^(?:the\s+)?(?:driving\s+)?crank(?:\s+[a-z][0-9]*-?[a-z][0-9]*)?\s+"
+        r"(?=(?:makes|making|is|inclined|at)\b)",
+        "",
+        text,
+    )
     # "makes an angle of 60 deg with the vertical", "inclined at 30 deg to the line of
     # stroke": the angle from that reference
     text = re.sub(r"^(?:(?:makes|making|is|inclined|at|an|angle|of)\s+)+", "", text)
@@ -173,14 +192,26 @@ def read_angle(
     shown = raw.strip()
     good = f"write it as e.g. {EXAMPLES[where]}"
     text = _tidy(raw)
+    across = re.match(r"(perpendicular|normal|right angles|along|parallel)\b\s*(\S*)", text)
+    if across:  # "perpendicular to CD": the link's direction is known once it is solved
+        how = {"along": "along", "right angles": "at right angles to"}.get(across.group(1))
+        link = across.group(2).upper() or "the link"
+        raise SceneError(
+            f"'{shown}': a direction {how or across.group(1) + ' to'} {link} turns with the "
+            f"link and is not read; give its angle at this instant ({link}'s direction from "
+            f"the solved positions, plus or minus 90 deg across it); {good}"
+        )
     way = _WAY.fullmatch(text)
     if way:  # "down", "to the left": a way, the plain angle of its axis
         theta = math.radians(_WAY_DEG[way.group(1)])
         return BookAngle(theta, shown, f"'{shown}' = {_deg(theta)} deg from +x")
     m = _HEAD.match(text)
-    if not m or not m.group(3):
+    plain = m is not None and not m.group(3) and text != raw.strip().lower()
+    if not m or not (m.group(3) or plain):
         raise SceneError(f"cannot read '{shown}' as an angle: {good}")
-    size, unit, rest = float(m.group(1)), m.group(2) or "deg", m.group(3).strip()
+    size, unit, rest = float(m.group(1)), m.group(2) or "deg", (m.group(3) or "").strip()
+    if plain or rest in _SENSE:  # "at 30 deg", "theta2 = 30 deg": from +x, ccw (or as said)
+        rest = f"from +x {rest}"
     if not math.isfinite(size) or size < 0:
         raise SceneError(
             f"'{shown}': give the size of the angle (not negative) and the side "
@@ -322,6 +353,9 @@ def read_angle(
                 )
             )
         return done(_Rad(ref), s, ref_words, slips)
+    vertex = re.fullmatch(r"angle ([a-z][0-9]*)([a-z][0-9]*)([a-z][0-9]*)", target)
+    if vertex:  # "angle BAD = 60 deg": from the frame's line AD through the crank's pivot A
+        target = _frame_side(vertex.groups(), centres, shown, good)
     stroke = re.fullmatch(r"line of stroke(?: of ([a-z][0-9]*))?", target)
     if stroke:
         if where == "path":
@@ -412,6 +446,30 @@ def _line_words(target: str) -> str:
     if target in _FRAME_WORDS:
         return "the line of centres" if target.startswith("line") else f"the {target}"
     return target.upper()
+
+
+def _frame_side(names3, centres, shown: str, good: str) -> str:
+    """The frame's line ("ad") of a book's "angle BAD": its vertex the crank's pivot, one of
+    its two other letters a ground point (the other is the crank's pin)."""
+    if centres is None:
+        raise SceneError(
+            f"'{shown}': an angle at the crank's pivot is read for [input] only; {good}"
+        )
+    pivot, ground = centres
+    names = {g.lower(): g for g in ground}
+    first, vertex, last = names3
+    if names.get(vertex) != pivot:
+        raise SceneError(
+            f"'{shown}': the angle's vertex {vertex.upper()} (its middle letter) is not the "
+            f"crank's pivot {pivot}"
+        )
+    ends = [e for e in (first, last) if names.get(e) not in (None, pivot)]
+    if len(ends) != 1:
+        raise SceneError(
+            f"'{shown}': one of {first.upper()} and {last.upper()} must be a ground point "
+            f"(the frame's line from the crank's pivot {pivot}), the other the crank's pin"
+        )
+    return vertex + ends[0]
 
 
 def _centres_line(centres, target: str, shown: str):

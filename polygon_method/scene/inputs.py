@@ -12,7 +12,8 @@ import re
 from ..common.errors import SceneError, printable
 from ..common.units import UNITS
 from .angles import candidates, is_book_form
-from .crank_speed import crank_speed
+from .crank_speed import crank_speed, link_angle, second_crank_angle
+from .piston_words import towards_the_crank
 from .rate_words import RATED as _RATED, slowing as _slowing
 from .records import GIVEN_KINDS, INPUT_KEYS, FixedPath, GivenRate, Input, PositionGiven, split_name
 from .tables import _suggest, _unit_at
@@ -35,16 +36,19 @@ _SENSE_OR_WAY = re.compile(
 )
 
 
+_WAYS = r"(extending|retracting|lengthening|shortening|outwards?|inwards?)"
+
+
 def _extending(raw):
-    """A cylinder's rate with a word: ``"0.2 m/s extending"`` -> 0.2 m/s, ``retracting`` ->
-    its negative (a signed number: + extending)."""
+    """A cylinder's rate with a word: ``"0.2 m/s extending"`` (``"0.2 m/s, extending"``,
+    ``"extending at 0.2 m/s"``) -> 0.2 m/s, ``retracting`` -> its negative (a signed
+    number: + extending)."""
     if isinstance(raw, str):
-        m = re.match(
-            r"^\s*(.*?\S)\s+(extending|retracting|outwards?|inwards?)\s*$", raw, re.IGNORECASE
-        )
+        m = re.match(rf"^\s*(.*?\S)\s*,?\s+{_WAYS}\s*$", raw, re.IGNORECASE)
+        m = m or re.match(rf"^\s*(){_WAYS}\s+(?:at\s+)?(.*?\S)\s*$", raw, re.IGNORECASE)
         if m:
-            text = m.group(1).strip()
-            if m.group(2).lower() in ("retracting", "inward", "inwards"):
+            text = (m.group(1) or m.group(3)).strip()
+            if m.group(2).lower() in ("retracting", "shortening", "inward", "inwards"):
                 text = text[1:] if text.startswith("-") else "-" + text.lstrip("+")
             return text
     return raw
@@ -52,7 +56,7 @@ def _extending(raw):
 
 #: "1.5 m/s outward", "2 m/s towards O", "inwards", "away from O": the sliding's sense
 _SENSE = re.compile(
-    r"^\s*(.*?\S)\s+(outwards?|inwards?|(?:towards?|away from)\s+"
+    r"^\s*(.*?\S)\s*,?\s+(outwards?|inwards?|(?:towards?|away from)\s+"
     r"([A-Z][0-9]*))\s*$",
     re.IGNORECASE,
 )
@@ -343,7 +347,8 @@ class _Input:
                 "input",
                 given_keys[0],
             )
-        if given_keys:
+        if given_keys:  # (the crank as stated, for "the piston moves towards the crank")
+            self.crank_now = None if placed is not None else (pivot, tip, angle, link)
             given = self.given_rate(given_keys[0], rate_keys, spec, index)
             if given.rate is not None and "acceleration" in spec:
                 raise self.error(
@@ -642,7 +647,7 @@ class _Input:
                     "input",
                     key,
                 )
-            value = self.qty(raw, "angle", "input", key, default_unit="deg").value
+            value = link_angle(self, raw, key, names, self.ground)
         near_v = (
             None
             if near is None
@@ -701,8 +706,8 @@ class _Input:
                 "crank",
             )
         pivot = on_ground[0]
-        angle = self.qty(spec["angle"], "angle", "input.second", "angle", default_unit="deg").value
         speed = crank_speed(self, spec["speed"], link, "input.second")
+        angle = second_crank_angle(self, spec["angle"], link, pivot, ground, speed.value)
         if speed.value == 0:
             raise self.error(
                 "the second crank's speed is zero: give it, or make it part of the frame",
@@ -779,6 +784,7 @@ class _Input:
                 if sl is None:
                     raise self.error(f"no slider {''.join(names)} in [sliders]", "input", key)
                 u = getattr(sl, "u", None)
+                raw, raw_rate = towards_the_crank(self, sl, (raw, key), (raw_rate, rate_key))
             else:
                 if point is None or point not in self.known:
                     raise self.error(f"no point {''.join(names)} in the scene", "input", key)

@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import math
 
+from ..common.errors import SceneError
+from ..common.tolerances import ROUNDING
 from ..common.units import Quantity, did_you_mean
 from .records import Friction, Gravity, Mass, split_name
 from .tables import _unit_at
@@ -15,7 +17,17 @@ from .tables import _unit_at
 #: the g of a book (m/s^2), when [gravity] does not give its own
 STANDARD_G = 9.81
 
-_LINK_KEYS = ("mass", "centre", "along", "from", "distances", "turn", "inertia", "gyration")
+_LINK_KEYS = (
+    "mass",
+    "centre",
+    "along",
+    "from",
+    "distances",
+    "turn",
+    "inertia",
+    "gyration",
+    "about",
+)
 
 
 class _Masses:
@@ -102,7 +114,7 @@ class _Masses:
                     "masses",
                     name,
                 )
-            m = self.qty(spec["mass"], "mass", "masses", name, default_unit="kg").value
+            m = self._mass(spec["mass"], name)
             if not m > 0:
                 hint = (
                     "; a balanced crank (its G at its pivot) has its real mass with "
@@ -140,6 +152,8 @@ class _Masses:
                 raise self.error(f"link {link.key} has a mass already", "masses", name)
             lam, mu, where, centre = self._centre(spec, link, pts, carried, name)
             inertia, said = self._inertia(spec, m, name)
+            if "about" in spec:  # "I about the crank shaft's axis O": the parallel axes
+                inertia, said = self._about(spec, link, m, lam, mu, inertia, said, name)
             out.append(
                 Mass(
                     link.key,
@@ -191,6 +205,33 @@ class _Masses:
         xy, how, _, _ = self.on_link(spec, link, pts, frame, "masses", name)
         return xy[0] / L, xy[1] / L, how, None
 
+    def _about(self, spec, link, m, lam, mu, inertia, said, name):
+        """(I about G, words) from a moment of inertia (or a radius of gyration) a book gives
+        about an end of the link ("about the crank shaft's axis O"): I_G = I_O - m |OG|^2
+        (the parallel axes), |OG| from G's place on the link."""
+        end = spec["about"]
+        if end not in link.points or not ("inertia" in spec or "gyration" in spec):
+            raise self.error(
+                f"about = {end!r}: the end of {link.key} the moment of inertia (or the "
+                "radius of gyration) is given about, with inertia or gyration",
+                "masses",
+                name,
+            )
+        d = link.length * math.hypot(lam - (0.0 if end == link.p else 1.0), mu)
+        i_g = inertia - m * d * d
+        if i_g < -ROUNDING * inertia:  # (nought within rounding: all the mass at G)
+            raise self.error(
+                f"I about {end} = {inertia:.6g} kg m^2 is less than m |{end}G|^2 = "
+                f"{m * d * d:.6g} kg m^2: no body has it (check the centre and the value)",
+                "masses",
+                name,
+            )
+        i_g = max(i_g, 0.0)
+        return (
+            i_g,
+            f"{said.replace('_G', '_' + end)} about {end}; I_G = I_{end} - m |{end}G|^2 = {i_g:.6g} kg m^2",
+        )
+
     def _inertia(self, spec, m, name):
         """(I about G, words): given, from the radius of gyration (I = m k^2), or 0."""
         if "inertia" in spec and "gyration" in spec:
@@ -212,6 +253,23 @@ class _Masses:
             k = self.length(spec["gyration"], "masses", name)
             return m * k * k, f"k_G = {self._words(k)}, I_G = m k^2 = {m * k * k:.6g} kg m^2"
         return 0.0, "I_G = 0 (no inertia given: a point mass)"
+
+    def _mass(self, raw, name) -> float:
+        """A [masses] entry's mass (kg); a book's weight ("the reciprocating parts weigh 300
+        N": ``mass = "300 N"``, also kN, kgf, lbf) is read as the mass W / g (the g of
+        [gravity], else 9.81 m/s^2), said in the notes."""
+        try:
+            return self.qty(raw, "mass", "masses", name, default_unit="kg").value
+        except SceneError as not_a_mass:
+            try:
+                w = self.qty(raw, "force", "masses", name).value if isinstance(raw, str) else None
+            except SceneError:
+                w = None
+            if w is None:
+                raise not_a_mass from None
+        g = (self.gravity() or Gravity(STANDARD_G, None, "")).g
+        self.read_notes.append(f"mass of {name}: the weight {raw} read as W / g = {w / g:.6g} kg")
+        return w / g
 
     def gravity(self):
         """[gravity]: None without the table (gravity off)."""

@@ -383,12 +383,15 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected
                 )
 
         ground = {}
-        for name, value in self.table("ground", required=True).items():
+        for name, value in self.table("ground").items():
             self.point_name(name, "ground")
             ground[name] = self.coords(value, "ground", name)
-        if not ground:
+        if not ground:  # (a wheel rolling on the floor has no pivot, but its floor a point)
             raise SceneError(
-                "[ground] is empty; give at least the crank's fixed pivot",
+                f"{'[ground] is empty' if 'ground' in raw else 'missing [ground] table'}; give "
+                "at least the crank's fixed pivot (where no link turns about the frame, as a "
+                "wheel rolling on the floor or a driving block, a point of its line: O = [0, 0], "
+                'with through = "O")',
                 file=self.file,
                 key="[ground]",
                 line=self.line_of("ground"),
@@ -441,7 +444,7 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected
         rolling = read_rolling(self, ground, sliders, carried)
         self.rolling_pairs = rolling
         known = set(ground).union([lk.p for lk in links], [lk.q for lk in links], carried)
-        known |= {s.point for s in sliders if s.slot}  # a peg in two slots; a yoke
+        known |= {s.point for s in sliders}  # a peg in two slots, a collar on no link; a yoke
         known |= {s.yoke for s in sliders if hasattr(s, "yoke")}
         self.known = known
         self.slider_points = {s.point: s for s in sliders}
@@ -526,9 +529,10 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected
             raise self.error(f"'{name}' is not a link name (two points, e.g. BC)", table, key)
         link = self.index.get(frozenset(pts))
         if link is None:
+            wheel = f" (a wheel is a link too: {name} = its radius)" if table == "rolling" else ""
             raise self.error(
                 f"no link {name} in [links]"
-                f"{_suggest(name, [lk.key for lk in self.index.values()])}",
+                f"{_suggest(name, [lk.key for lk in self.index.values()]) or wheel}",
                 table,
                 key,
             )

@@ -477,11 +477,8 @@ class Scene:
             seen[cp.name] = None
         for r in self.rolling:  # a rack's point, on no link
             seen[r.rim] = None
-        for sl in self.sliders:  # a peg in two slots need be no joint of a link, nor a
-            if getattr(sl, "slot", ""):  # yoke (a block on a fixed path with a slot)
-                seen[sl.point] = None
-            elif isinstance(sl, YokeSlot):
-                seen[sl.yoke] = None
+        for sl in self.sliders:  # a peg in two slots, a yoke, a collar driven along its rod
+            seen[sl.yoke if isinstance(sl, YokeSlot) else sl.point] = None  # need be no joint
         object.__setattr__(self, "_names", tuple(seen))
         try:
             key = (

@@ -10,7 +10,7 @@ import re
 from ..common.errors import SceneError
 from ..common.units import did_you_mean
 from .angles import read_angle
-from .triangle import apex, not_on_link, polar_points
+from .triangle import along_length, apex, not_on_link, polar_points
 
 from .records import (
     CarriedPoint,
@@ -37,11 +37,15 @@ def _unit_at(ang: float) -> tuple:
     return (math.cos(ang), math.sin(ang))
 
 
+#: a key a book's words lead to (in [sliders], which says it with through), and how to say it
+_OFFSET = ": an offset line of stroke is its through = [x, y] (40 mm below O: [0, -40])"
+
+
 def _suggest(word, choices) -> str:
-    return did_you_mean(word, list(choices))
+    hint = _OFFSET if word == "offset" and "through" in choices else None
+    return hint or did_you_mean(word, list(choices))
 
 
-#: a number written with a decimal comma: "0,39 m/s", "12,5"
 def _which_point(name, known) -> str:
     """A did-you-mean, or else the scene's points, for a message about an unknown point."""
     names = sorted(known, key=lambda p: (p[0], len(p), p))
@@ -117,7 +121,7 @@ class _Tables:
                 raise self.error(f"from = {start!r} is not an end of {link.key}", table, name)
             if "turn" in spec:
                 raise self.error("turn goes with distances, not with along", table, name)
-            d = self.length(spec["along"], table, name, positive=False)
+            d = along_length(self, spec["along"], link, table, name)
             sx, sy = frame[start]
             ox, oy = frame[link.other(start)]
             t = d / link.length
@@ -141,8 +145,8 @@ class _Tables:
             turn = spec.get("turn")
             if turn not in ("cw", "ccw"):
                 raise self.error(
-                    'turn = "cw" or "ccw": how the triangle (the two '
-                    "points of distances, then this point) reads",
+                    'turn = "cw" or "ccw": how the triangle (the two points of distances, then '
+                    'this point) reads (a point "below BC", B to the left of C, reads cw)',
                     table,
                     name,
                 )
@@ -276,24 +280,18 @@ class _Tables:
                 "sliders",
                 name,
             )
-        if name in ground:
-            raise self.error(
-                f"{name} is a ground point; it cannot slide in a moving yoke", "sliders", name
-            )
-        if yoke == name:
-            raise self.error(
-                f"{name} cannot slide in its own slot: the yoke is another "
-                'block, e.g. along = "block Y"',
-                "sliders",
-                name,
-            )
-        if "direction" not in spec:
-            raise self.error(
-                "the yoke's slot has no direction: add direction = "
-                '"vertical", "horizontal" or an angle such as "60 deg"',
-                "sliders",
-                name,
-            )
+        why = (
+            f"{name} is a ground point; it cannot slide in a moving yoke"
+            if name in ground
+            else f'{name} cannot slide in its own slot: the yoke is another block, e.g. along = "block Y"'
+            if yoke == name
+            else "the yoke's slot has no direction: add direction = "
+            '"vertical", "horizontal" or an angle such as "60 deg"'
+            if "direction" not in spec
+            else None
+        )
+        if why:
+            raise self.error(why, "sliders", name)
         ang, label = self.direction(spec["direction"], name)
         return YokeSlot(name, yoke, _unit_at(ang), label)
 
@@ -572,6 +570,8 @@ class _Tables:
                     "loads",
                     name,
                 )
+            if "couple" in spec and "torque" not in spec:  # a book's "a couple of 50 N m"
+                spec = {("torque" if k == "couple" else k): v for k, v in spec.items()}
             allowed = ("force", "direction", "torque", "pressure", "bore", "rod", "back")
             for k in spec:
                 if k not in allowed:

@@ -26,11 +26,13 @@ moves by ``dF / 2h`` for a change ``dF`` of ``F = h^2``, and never by more than
 from __future__ import annotations
 
 import math
+import re
 
 from ..common.tolerances import SAME
+from ..common.units import UNITS
 from .records import split_name
 
-__all__ = ["apex", "not_on_link", "polar_points", "ROUNDING"]
+__all__ = ["apex", "not_on_link", "polar_points", "along_length", "ROUNDING"]
 
 #: the rounding of a length given in the scene's unit and held in metres, relative
 ROUNDING = 2.0**-52
@@ -121,3 +123,35 @@ def not_on_link(reader, point, link, name, table) -> str:
             f"{name} in [points]; give {point} first (a point is set out from those above it)"
         )
     return f"{point} is not a point of link {link.key}"
+
+
+_LENGTHS = {u.lower() for u in UNITS["length"]}  # a link named as a unit (CM): "of CM"
+_PART = re.compile(r"([0-9]*\.?[0-9]+)\s*(?:/\s*([0-9]+))?\s*(of\s+)?([A-Za-z][A-Za-z0-9-]*)")
+_MIDDLE = re.compile(r"(?:the\s+)?(?:mid-?\s*point|middle)(?:\s+of\s+\S+)?", re.IGNORECASE)
+
+
+def along_length(reader, raw, link, table, name) -> float:
+    """``along`` as a length (m): a number or a quantity in the scene's units, a book's
+    "midpoint" (also "the middle", "the mid-point of BC"): half the link, or a part of it
+    ("1/3 of BC", "0.4 BC", the link named as written or reversed).
+
+    >>> class R:
+    ...     length = staticmethod(lambda raw, *a, **k: float(raw))
+    >>> class L:
+    ...     p, q, length = "B", "C", 0.15
+    >>> along_length(R, "the midpoint", L, "points", "E"), along_length(R, 0.04, L, "points", "E")
+    (0.075, 0.04)
+    >>> round(along_length(R, "1/3 of CB", L, "points", "E"), 15)
+    0.05
+    >>> L.p, L.q = "C", "M"     # a link CM: "4 cm" is a length, "0.4 of CM" a part
+    >>> along_length(R, "0.4 of CM", L, "points", "E") == 0.4 * 0.15
+    True
+    """
+    if isinstance(raw, str) and _MIDDLE.fullmatch(raw.strip()):
+        return link.length / 2
+    part = _PART.fullmatch(raw.strip()) if isinstance(raw, str) else None
+    ends = (link.p + link.q).upper(), (link.q + link.p).upper()
+    named = part is not None and part.group(4).upper().replace("-", "") in ends
+    if named and (part.group(3) or part.group(4).lower() not in _LENGTHS):  # "1/3 of BC"
+        return float(part.group(1)) / float(part.group(2) or 1) * link.length
+    return reader.length(raw, table, name, positive=False)

@@ -233,13 +233,19 @@ class Sweeper:
         cps = tuple(sorted(lcps + rcps, key=lambda c: c.theta))
         lo, hi = math.degrees(t0 - half), math.degrees(t0 + half)
         note = (
-            f"{_NOT_AGAIN}: the motion repeats every {n} turns (a wheel turns a fraction "
-            f"of a turn more per turn of the crank); the sweep, its ranges and extremes "
+            f"{_NOT_AGAIN}: the motion repeats every {n} turns ({self._why_not_again()}); "
+            "the sweep, its ranges and extremes "
             f"and the page take the whole period, {n} turns of the crank from {lo:.6g} to "
             f"{hi:.6g} deg (centred on the scene's instant), angles written within it "
             f"(0 to {360 * n} deg)"
         )
         return Domain(t0 - half, t0 + half, True, tuple(segs), (), cps, (note,), turns=n)
+
+    def _why_not_again(self) -> str:
+        """Why a turn of the crank does not bring the mechanism back, in words."""
+        if self.scene.rolling:
+            return "a wheel turns a fraction of a turn more per turn of the crank"
+        return "the second input moves on at its own rate, not back with the crank"
 
     def _repeats(self, n, t0) -> list:
         """[] where the mechanism is where it started after a turn of the crank; else the
@@ -250,8 +256,8 @@ class Sweeper:
         when = f"only every {n} turns" if n is not None else "not within 12 turns"
         lo, hi = math.degrees(t0 - math.pi), math.degrees(t0 + math.pi)
         return [
-            f"{_NOT_AGAIN}: the motion repeats {when} (a wheel turns a fraction of a "
-            "turn more per turn of the crank); ranges and extremes are over the turn "
+            f"{_NOT_AGAIN}: the motion repeats {when} ({self._why_not_again()}); "
+            "ranges and extremes are over the turn "
             f"centred on the scene's instant, the crank from {lo:.6g} to {hi:.6g} deg"
         ]
 
