@@ -598,12 +598,12 @@ def test_no_function_is_longer_than_80_lines_but_the_listed():
 #: tolerance-like literals (1e-6 to 1e-15) still written in place of a name of
 #: ``common/tolerances.py``, by module, with the most each may hold: the list may only
 #: shrink and no count may rise (name a new tolerance there, with what it protects). Those in
-#: ``common/units.py`` are unit factors and the least sizes a quantity may have (``TINY``),
+#: ``common/unit_tables.py`` are unit factors and the least sizes a quantity may have (``TINY``),
 #: those in ``polygons/scales.py`` the range of a drawing's scale, those in
 #: ``scene/energy_press.py`` an area's unit factors, and ``forces/friction.py``'s are the
 #: passes' own named settling and noise: named where they stand
 LITERALS = {
-    "common/units.py": 7,
+    "common/unit_tables.py": 7,
     "draw/forces.py": 2,
     "forces/friction.py": 1,
     "polygons/scales.py": 4,
