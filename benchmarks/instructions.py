@@ -5,7 +5,9 @@
     python benchmarks/instructions.py --case full --count 2000   # one run (what is counted)
 
 Each case runs in a fresh interpreter under valgrind's cachegrind (``--cache-sim=no``, the
-hash seed fixed: with a random one the same run's count moves by a tenth), once making N
+hash seed fixed: with a random one the same run's count moves by a tenth; numpy's linear
+algebra on one thread: its idle threads spin, a start's count moved by some tens of
+millions from run to run), once making N
 calls and once making none; the difference over N is the instructions per call. On a
 machine shared with other work the times of ``speed.py`` and ``forces_speed.py`` jump from
 minute to minute; these counts do not (they leave out what the time also holds: the misses
@@ -34,6 +36,7 @@ import sys
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parent))  # this tree's package, not an installed one
 CASES = (
     "solve",
     "full",
@@ -91,14 +94,16 @@ def _function(case):
 
 def _count(case, calls):
     """Instructions of a fresh interpreter making ``calls`` calls of ``case``."""
-    env = dict(os.environ, PYTHONHASHSEED="0")
+    # the hash seed fixed, and numpy's linear algebra on one thread: its worker threads
+    # spin while they wait, and their count moved the start's by tens of millions
+    env = dict(os.environ, PYTHONHASHSEED="0", OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1")
     run = subprocess.run(
         [
             "valgrind",
             "--tool=cachegrind",
             "--cache-sim=no",
             "--cachegrind-out-file=/dev/null",
-            os.path.realpath(sys.executable),
+            sys.executable,  # as given: a virtual environment's link keeps its packages
             __file__,
             "--case",
             case,
@@ -110,7 +115,7 @@ def _count(case, calls):
         env=env,
     )
     found = re.search(r"I\s+refs:\s+([\d,]+)", run.stderr)
-    if found is None:
+    if found is None or run.returncode != 0:
         raise SystemExit(f"valgrind gave no count for {case}:\n{run.stderr[-2000:]}")
     return int(found.group(1).replace(",", ""))
 

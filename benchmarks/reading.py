@@ -36,10 +36,12 @@ from __future__ import annotations
 import argparse
 import cProfile
 import pstats
+import sys
 import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))  # this tree's package, not an installed one
 SEED = ROOT / "worked_problems" / "fourbar_image_points.toml"
 
 

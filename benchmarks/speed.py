@@ -45,6 +45,7 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))  # this tree's package, not an installed one
 PROBLEMS = ROOT / "worked_problems"
 IMAGE_POINTS = PROBLEMS / "fourbar_image_points.toml"
 GRASHOF = PROBLEMS / "fourbar_crank_acceleration.toml"  # AB 40, BC 120, CD 80, AD 100
