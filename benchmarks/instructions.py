@@ -19,7 +19,10 @@ and the torque read, as ``speed.py`` times it), ``named`` (and every dict of the
 read), ``floor`` and ``floor_tuple`` (``speed.floor_fourbar``: the same numbers by name, or
 unnamed), ``kinematic`` and ``forces`` (``worked_problems/fourbar_forces.toml``: its warm
 solve, and its warm force solve alone), ``chain1001`` and ``chain10001`` (a chain of dyads'
-warm solve, per link).
+warm solve, per link), ``worked`` (the seed's worked file from text to solved, as ``solve``
+reads it, its plan never seen), ``tomllib`` (Python's TOML reader on that text: the
+yardstick of the 0.3 ms target) and ``fresh`` (``speed.py``'s four-bar never seen, from
+its loaded scene to one solved position).
 
 A benchmark, not a test: nothing here fails on time.
 """
@@ -47,9 +50,12 @@ CASES = (
     "forces",
     "chain1001",
     "chain10001",
+    "worked",
+    "fresh",
+    "tomllib",
 )
 #: calls counted per case (fewer for the long ones); a chain's count is per link
-CALLS = {"chain1001": 20, "chain10001": 4}
+CALLS = {"chain1001": 20, "chain10001": 4, "worked": 300, "tomllib": 300, "fresh": 1000}
 
 
 def _function(case):
@@ -65,6 +71,27 @@ def _function(case):
         scene = parse_scene(speed.chain_text(n))
         solve(scene)
         return (lambda: solve(scene)), 2 * n + 1
+    if case in ("worked", "fresh", "tomllib"):
+        import tomllib
+
+        from polygon_method.solver import compiler
+
+        text = speed.IMAGE_POINTS.read_text()
+        if case == "tomllib":
+            return (lambda: tomllib.loads(text)), 1
+        loaded = parse_scene(speed.FOURBAR_TEXT)
+
+        def worked():  # as solve reads it: [variants] and [answers] left unread
+            compiler._BY_ID.clear()
+            compiler._BY_CONTENT.clear()
+            return solve(parse_scene(text, variants=False, answers=False))
+
+        def fresh():
+            compiler._BY_ID.clear()
+            compiler._BY_CONTENT.clear()
+            return solve(loaded)
+
+        return (worked if case == "worked" else fresh), 1
     if case in ("floor", "floor_tuple"):
         floor = speed.floor_fourbar()
         return (floor if case == "floor" else (lambda: floor(True))), 1
@@ -150,6 +177,7 @@ def main(argv=None):
         ("full", "floor_tuple", "warm full solve / the floor, unnamed"),
         ("forces", "kinematic", "force solve / its kinematic solve"),
         ("chain10001", "chain1001", "a chain's solve per link, 10,001 / 1,001 links"),
+        ("worked", "tomllib", "the worked file, text -> solved / tomllib on it"),
     ):
         if ours in got and floor in got:
             print(f"{words:<48} {got[ours] / got[floor]:.2f}")
