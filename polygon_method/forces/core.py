@@ -30,7 +30,7 @@ import weakref
 from .bodies import Singular, centre, inertia_record
 from .collar import second_name
 from .engine import indicator_force
-from .records import FRAME, GuideForce, PinForce, block, quick_forces
+from .records import FRAME, Forces, GuideForce, PinForce, block
 
 __all__ = ["ForcePlan", "Sums", "force_plan"]
 
@@ -228,17 +228,18 @@ class ForcePlan:
                     effort = t
                 else:
                     second = t
-        name, kind = self.driver
-        return quick_forces(
-            effort,
-            (sx[0], sy[0]),
-            sm[0],
-            name,
-            kind,
-            second,
-            self.second,
-            (self, motion, pins, guides, S),
-        )
+        # the record's fields put straight into its dictionary (its frozen __init__ sets
+        # them one by one through object.__setattr__: three times as long)
+        f = _new(Forces)
+        d = f.__dict__
+        d["input_torque"] = effort
+        d["shaking_force"] = (sx[0], sy[0])
+        d["shaking_moment"] = sm[0]
+        d["crank"], d["driver"] = self.driver
+        d["second_torque"] = second
+        d["second_crank"] = self.second
+        d["source"] = (self, motion, pins, guides, S)
+        return f
 
     def _singular(self, st, exc):
         """The one-line error of a group whose pin forces are not determined."""
@@ -301,6 +302,8 @@ def force_plan(scene, plan) -> ForcePlan:
     if hit is not None and hit[0]() is scene and hit[1] is plan:
         return hit[2]
     fp = ForcePlan(scene, plan)
+    if plan.scene is scene:  # kept on the plan too: analyse reads it there, without a call
+        object.__setattr__(plan, "force_plan", fp)
     try:
         ref = weakref.ref(scene, functools.partial(_forget, ident=ident))
     except TypeError:  # a scene that takes no weak reference: not kept
