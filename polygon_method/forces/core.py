@@ -141,7 +141,9 @@ class ForcePlan:
         self.masses, self.mass_records = tuple(hot), tuple(cold)
         # what run reads: a link's masses, then a block's (a body is a link or a block,
         # never both, so the sums are added to in each body's own order)
-        self.on_links = tuple(h[:1] + h[2:] for h in hot if h[1] is None)
+        self.on_links = tuple(
+            h[:1] + h[2:9] + (h[9] or (None, None)) for h in hot if h[1] is None
+        )  # (i, p, q, key, lam, mu, -m, -I, weight x, weight y or None, None)
         self.on_blocks = tuple((h[0], h[1], h[7], h[8], h[9]) for h in hot if h[1] is not None)
 
     def _loads(self, scene, own, ix):
@@ -170,7 +172,7 @@ class ForcePlan:
         S.fx = sx = z[:]
         S.fy = sy = z[:]
         S.m = sm = z[:]
-        for i, p, q, body, lam, mu, nm, ni, weight in self.on_links:  # G, a_G: as centre
+        for i, p, q, body, lam, mu, nm, ni, wx, wy in self.on_links:  # G, a_G: as centre
             (px, py), (qx, qy) = P[p], P[q]
             dx, dy = qx - px, qy - py
             gx, gy = px + lam * dx - mu * dy, py + lam * dy + mu * dx
@@ -179,12 +181,11 @@ class ForcePlan:
             fx = nm * (px + lam * dx - mu * dy)  # -m a_G
             fy = nm * (py + lam * dy + mu * dx)
             # S.add(i, fx, fy, gx, gy), S.couple(i, -I alpha), the weight's: in order
-            if weight is None:
+            if wx is None:
                 sx[i] = sx[i] + fx
                 sy[i] = sy[i] + fy
                 sm[i] = sm[i] + (gx * fy - gy * fx) + ni * Al[body]
             else:
-                wx, wy = weight
                 sx[i] = sx[i] + fx + wx
                 sy[i] = sy[i] + fy + wy
                 sm[i] = sm[i] + (gx * fy - gy * fx) + ni * Al[body] + (gx * wy - gy * wx)
