@@ -21,10 +21,13 @@ stepping it once. ``--side-by-side N`` takes the three in turn, in small batches
 each figure the least (a shared machine's load comes and goes: a figure measured a minute
 after its peer is compared with another machine).
 
-Counted in instructions, which the machine's other load does not move (the difference of
-200 runs and none, the hash seed fixed)::
+Counted in instructions, which the machine's other load does not move, by
+``python benchmarks/instructions.py worked fresh tomllib``; or by hand (the difference of
+200 runs and none, the hash seed fixed, numpy's threads held to one: idle, they spin, and
+move the count from run to run)::
 
-    PYTHONHASHSEED=0 valgrind --tool=cachegrind --cache-sim=no --cachegrind-out-file=/dev/null \
+    OPENBLAS_NUM_THREADS=1 PYTHONHASHSEED=0 valgrind --tool=cachegrind --cache-sim=no \
+        --cachegrind-out-file=/dev/null \
         python benchmarks/reading.py --count 200     # and again with --count 0
 
 ``solve`` reads a scene as ``parse_scene(text, variants=False, answers=False)`` does: its
