@@ -40,6 +40,7 @@ from pathlib import Path
 import numpy as np
 
 ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))  # this tree's package, not an installed one
 PROBLEMS = ROOT / "worked_problems"
 NAMES = ("fourbar_forces", "engine_forces", "shaper_forces")
 

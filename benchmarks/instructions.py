@@ -5,7 +5,9 @@
     python benchmarks/instructions.py --case full --count 2000   # one run (what is counted)
 
 Each case runs in a fresh interpreter under valgrind's cachegrind (``--cache-sim=no``, the
-hash seed fixed: with a random one the same run's count moves by a tenth), once making N
+hash seed fixed: with a random one the same run's count moves by a tenth; numpy's linear
+algebra on one thread: its idle threads spin, a start's count moved by some tens of
+millions from run to run), once making N
 calls and once making none; the difference over N is the instructions per call. On a
 machine shared with other work the times of ``speed.py`` and ``forces_speed.py`` jump from
 minute to minute; these counts do not (they leave out what the time also holds: the misses
@@ -17,7 +19,10 @@ and the torque read, as ``speed.py`` times it), ``named`` (and every dict of the
 read), ``floor`` and ``floor_tuple`` (``speed.floor_fourbar``: the same numbers by name, or
 unnamed), ``kinematic`` and ``forces`` (``worked_problems/fourbar_forces.toml``: its warm
 solve, and its warm force solve alone), ``chain1001`` and ``chain10001`` (a chain of dyads'
-warm solve, per link).
+warm solve, per link), ``worked`` (the seed's worked file from text to solved, as ``solve``
+reads it, its plan never seen), ``tomllib`` (Python's TOML reader on that text: the
+yardstick of the 0.3 ms target) and ``fresh`` (``speed.py``'s four-bar never seen, from
+its loaded scene to one solved position).
 
 A benchmark, not a test: nothing here fails on time.
 """
@@ -34,6 +39,7 @@ import sys
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parent))  # this tree's package, not an installed one
 CASES = (
     "solve",
     "full",
@@ -44,9 +50,12 @@ CASES = (
     "forces",
     "chain1001",
     "chain10001",
+    "worked",
+    "fresh",
+    "tomllib",
 )
 #: calls counted per case (fewer for the long ones); a chain's count is per link
-CALLS = {"chain1001": 20, "chain10001": 4}
+CALLS = {"chain1001": 20, "chain10001": 4, "worked": 300, "tomllib": 300, "fresh": 1000}
 
 
 def _function(case):
@@ -62,6 +71,27 @@ def _function(case):
         scene = parse_scene(speed.chain_text(n))
         solve(scene)
         return (lambda: solve(scene)), 2 * n + 1
+    if case in ("worked", "fresh", "tomllib"):
+        import tomllib
+
+        from polygon_method.solver import compiler
+
+        text = speed.IMAGE_POINTS.read_text()
+        if case == "tomllib":
+            return (lambda: tomllib.loads(text)), 1
+        loaded = parse_scene(speed.FOURBAR_TEXT)
+
+        def worked():  # as solve reads it: [variants] and [answers] left unread
+            compiler._BY_ID.clear()
+            compiler._BY_CONTENT.clear()
+            return solve(parse_scene(text, variants=False, answers=False))
+
+        def fresh():
+            compiler._BY_ID.clear()
+            compiler._BY_CONTENT.clear()
+            return solve(loaded)
+
+        return (worked if case == "worked" else fresh), 1
     if case in ("floor", "floor_tuple"):
         floor = speed.floor_fourbar()
         return (floor if case == "floor" else (lambda: floor(True))), 1
@@ -91,14 +121,16 @@ def _function(case):
 
 def _count(case, calls):
     """Instructions of a fresh interpreter making ``calls`` calls of ``case``."""
-    env = dict(os.environ, PYTHONHASHSEED="0")
+    # the hash seed fixed, and numpy's linear algebra on one thread: its worker threads
+    # spin while they wait, and their count moved the start's by tens of millions
+    env = dict(os.environ, PYTHONHASHSEED="0", OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1")
     run = subprocess.run(
         [
             "valgrind",
             "--tool=cachegrind",
             "--cache-sim=no",
             "--cachegrind-out-file=/dev/null",
-            os.path.realpath(sys.executable),
+            sys.executable,  # as given: a virtual environment's link keeps its packages
             __file__,
             "--case",
             case,
@@ -110,7 +142,7 @@ def _count(case, calls):
         env=env,
     )
     found = re.search(r"I\s+refs:\s+([\d,]+)", run.stderr)
-    if found is None:
+    if found is None or run.returncode != 0:
         raise SystemExit(f"valgrind gave no count for {case}:\n{run.stderr[-2000:]}")
     return int(found.group(1).replace(",", ""))
 
@@ -145,6 +177,7 @@ def main(argv=None):
         ("full", "floor_tuple", "warm full solve / the floor, unnamed"),
         ("forces", "kinematic", "force solve / its kinematic solve"),
         ("chain10001", "chain1001", "a chain's solve per link, 10,001 / 1,001 links"),
+        ("worked", "tomllib", "the worked file, text -> solved / tomllib on it"),
     ):
         if ours in got and floor in got:
             print(f"{words:<48} {got[ours] / got[floor]:.2f}")

@@ -13,16 +13,21 @@ a shared machine only adds to it).
                                                  # taken in turn with pylinkage's build
 
 The two figures and their targets: the seed's worked file from text to solved, as ``solve``
-reads it, at most 0.3 ms; a mechanism never seen (``speed.py``'s four-bar), from its loaded
+reads it, at most 0.3 ms (the issue set it on a machine where ``tomllib`` read that file
+in 0.45 ms, so the side-by-side rounds also time ``tomllib`` on it: at most two thirds of
+that, on any machine); a mechanism never seen (``speed.py``'s four-bar), from its loaded
 scene to one solved position, at most 0.8 of pylinkage building the same four-bar and
 stepping it once. ``--side-by-side N`` takes the three in turn, in small batches, N rounds,
 each figure the least (a shared machine's load comes and goes: a figure measured a minute
 after its peer is compared with another machine).
 
-Counted in instructions, which the machine's other load does not move (the difference of
-200 runs and none, the hash seed fixed)::
+Counted in instructions, which the machine's other load does not move, by
+``python benchmarks/instructions.py worked fresh tomllib``; or by hand (the difference of
+200 runs and none, the hash seed fixed, numpy's threads held to one: idle, they spin, and
+move the count from run to run)::
 
-    PYTHONHASHSEED=0 valgrind --tool=cachegrind --cache-sim=no --cachegrind-out-file=/dev/null \
+    OPENBLAS_NUM_THREADS=1 PYTHONHASHSEED=0 valgrind --tool=cachegrind --cache-sim=no \
+        --cachegrind-out-file=/dev/null \
         python benchmarks/reading.py --count 200     # and again with --count 0
 
 ``solve`` reads a scene as ``parse_scene(text, variants=False, answers=False)`` does: its
@@ -36,10 +41,12 @@ from __future__ import annotations
 import argparse
 import cProfile
 import pstats
+import sys
 import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))  # this tree's package, not an installed one
 SEED = ROOT / "worked_problems" / "fourbar_image_points.toml"
 
 
@@ -109,8 +116,13 @@ def side_by_side(text, rounds):
         compiler._BY_CONTENT.clear()
         return solve(loaded)
 
+    import tomllib
+
     batches = {"worked": (worked, 5), "fresh": (fresh, 10)}
     batches["pylinkage"] = (_pylinkage_build_and_step, 10)
+    # the machine's yardstick: Python's own TOML reader on the same text (the issue's 0.3
+    # ms was set where it took 0.45 ms: two thirds of it on any machine)
+    batches["tomllib"] = (lambda: tomllib.loads(text), 5)
     best = dict.fromkeys(batches, float("inf"))
     for fn, _ in batches.values():
         fn()  # imports and first-call costs out of the way
@@ -130,11 +142,19 @@ def _print_side_by_side(text, rounds):
     except ImportError:  # pylinkage not installed: pip install '.[peers]'
         print("pylinkage is not installed (pip install '.[peers]')")
         return
+    from importlib.metadata import version
+
     worked, ratio = best["worked"], best["fresh"] / best["pylinkage"]
-    print(f"side by side, the least of {rounds} rounds:")
+    yard = worked / best["tomllib"]
+    print(f"side by side, the least of {rounds} rounds (pylinkage {version('pylinkage')}):")
     print(
         f"  the worked file, text -> solved    {worked * 1e6:8.1f} us   "
         f"at most 300 us: {'met' if worked <= 3e-4 else 'not met'}"
+    )
+    print(
+        f"    against tomllib reading the same text ({best['tomllib'] * 1e6:.1f} us): "
+        f"{yard:.3f}   at most 0.667 (0.3 ms where it took 0.45): "
+        f"{'met' if yard <= 2 / 3 else 'not met'}"
     )
     print(
         f"  a four-bar never seen, loaded -> solved {best['fresh'] * 1e6:6.1f} us, pylinkage's "

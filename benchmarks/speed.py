@@ -2,6 +2,7 @@
 
     python benchmarks/speed.py            # everything (a few minutes)
     python benchmarks/speed.py --quick    # fewer repeats
+    python benchmarks/speed.py --side-by-side 300   # only the interleaved four-bar figures
 
 Each figure is the median of repeated runs (the machine's other load shows in the spread),
 beside the peer it is compared with and the ratio the architecture issue asks for:
@@ -45,6 +46,7 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))  # this tree's package, not an installed one
 PROBLEMS = ROOT / "worked_problems"
 IMAGE_POINTS = PROBLEMS / "fourbar_image_points.toml"
 GRASHOF = PROBLEMS / "fourbar_crank_acceleration.toml"  # AB 40, BC 120, CD 80, AD 100
@@ -612,6 +614,36 @@ def side_by_side(rounds):
     return {f"sbs_{k}": v for k, v in best.items()}
 
 
+def _print_side_by_side(r):
+    """The interleaved figures of :func:`side_by_side` (in ``r``) with their targets."""
+    if "sbs_full" not in r:  # pylinkage not installed
+        print("side by side: pylinkage is not installed (pip install '.[peers]')")
+        return
+    from importlib.metadata import version
+
+    row = "{:<58} {:>12} {:>12} {:>7}  {}"
+    print(f"side by side, interleaved (pylinkage {version('pylinkage')}):")
+    for ours, peer, target, words in (
+        ("sbs_full", "sbs_pylinkage_step", 0.25, "warm full solve / pylinkage step"),
+        ("sbs_full", "sbs_floor", 2.0, "warm full solve / the floor"),
+        ("sbs_full", "sbs_floor_tuple", None, "warm full solve / the floor, unnamed"),
+        ("sbs_full_named", "sbs_floor", 2.0, "the same, its dicts read / the floor"),
+        ("sbs_fresh", "sbs_pylinkage_build_step", 0.8, "never seen / pylinkage build + step"),
+    ):
+        ratio = r[ours] / r[peer]
+        print(
+            row.format(
+                "  " + words,
+                fmt(r[ours]).strip(),
+                fmt(r[peer]).strip(),
+                f"{ratio:.3f}",
+                ""
+                if target is None
+                else f"<= {target:g}: " + ("met" if ratio <= target else "MISSED"),
+            )
+        )
+
+
 def _pylinkage_build_and_step():
     """The seed's four-bar as pylinkage builds it: a Linkage built and stepped once."""
     import warnings
@@ -678,7 +710,16 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="fewer repeats")
     ap.add_argument("--json", action="store_true", help="print the numbers as JSON too")
+    ap.add_argument(
+        "--side-by-side",
+        type=int,
+        default=0,
+        metavar="ROUNDS",
+        help="only the interleaved four-bar figures, over ROUNDS rounds (a minute for 300)",
+    )
     args = ap.parse_args(argv)
+    if args.side_by_side:
+        return _print_side_by_side(side_by_side(args.side_by_side))
     repeat = 5 if args.quick else 15
     r = {}
     r.update(bench_single(repeat))
@@ -766,27 +807,7 @@ def main(argv=None):
         )
     )
     print(row.format("  solve() alone", fmt(r["single"]).strip(), "", "", ""))
-    if "sbs_full" in r:  # the same figures interleaved (the least of many small batches)
-        print("side by side, interleaved:")
-        for ours, peer, target, words in (
-            ("sbs_full", "sbs_pylinkage_step", 0.25, "warm full solve / pylinkage step"),
-            ("sbs_full", "sbs_floor", 2.0, "warm full solve / the floor"),
-            ("sbs_full", "sbs_floor_tuple", None, "warm full solve / the floor, unnamed"),
-            ("sbs_full_named", "sbs_floor", 2.0, "the same, its dicts read / the floor"),
-            ("sbs_fresh", "sbs_pylinkage_build_step", 0.8, "never seen / pylinkage build + step"),
-        ):
-            ratio = r[ours] / r[peer]
-            print(
-                row.format(
-                    "  " + words,
-                    fmt(r[ours]).strip(),
-                    fmt(r[peer]).strip(),
-                    f"{ratio:.2f}",
-                    ""
-                    if target is None
-                    else f"<= {target:g}: " + ("met" if ratio <= target else "MISSED"),
-                )
-            )
+    _print_side_by_side(r)
     vs(
         "3600 positions, Grashof four-bar",
         r["cycle"],

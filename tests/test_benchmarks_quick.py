@@ -89,3 +89,10 @@ def test_the_instruction_counts_count_what_they_say():
             assert out[0] == sol.P and out[2] == sol.A and set(out[3]) == {"AB", "BC", "CD"}
         if case == "forces":
             assert out.input_torque is not None
+        if case == "worked":  # the seed's file read and solved anew: the loaded scene's motion
+            sol = solve(load_scene(ROOT / "worked_problems" / "fourbar_image_points.toml"))
+            assert out.P == sol.P and out.V == sol.V and out.plan is not sol.plan
+        if case == "fresh":
+            assert set(out.P) == {"A", "B", "C", "D"}
+        if case == "tomllib":
+            assert set(out) >= {"ground", "links", "input"}

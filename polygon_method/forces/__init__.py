@@ -221,7 +221,9 @@ def analyse(motion) -> Forces:
     scene, plan = motion.scene, motion.plan
     if scene.at_rest:  # the weights and loads alone, no inertia: nothing moves
         motion = still(motion)
-    fp = force_plan(scene, plan)
+    fp = plan.force_plan  # made once per plan and scene (force_plan), kept on the plan
+    if fp is None or fp.scene is not scene:
+        fp = force_plan(scene, plan)
     if scene.friction is not None:
         return _with_friction(motion, fp)
     if not fp.quick:

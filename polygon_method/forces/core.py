@@ -30,7 +30,7 @@ import weakref
 from .bodies import Singular, centre, inertia_record
 from .collar import second_name
 from .engine import indicator_forces
-from .records import FRAME, GuideForce, PinForce, block, quick_forces
+from .records import FRAME, Forces, GuideForce, PinForce, block
 
 __all__ = ["ForcePlan", "Sums", "force_plan"]
 
@@ -139,6 +139,12 @@ class ForcePlan:
             hot.append((ix(body), *where, body, m.lam, m.mu, -m.mass, -m.inertia, weight))
             cold.append((body, m.mass, m.inertia, m.how))
         self.masses, self.mass_records = tuple(hot), tuple(cold)
+        # what run reads: a link's masses, then a block's (a body is a link or a block,
+        # never both, so the sums are added to in each body's own order)
+        self.on_links = tuple(
+            h[:1] + h[2:9] + (h[9] or (None, None)) for h in hot if h[1] is None
+        )  # (i, p, q, key, lam, mu, -m, -I, weight x, weight y or None, None)
+        self.on_blocks = tuple((h[0], h[1], h[7], h[8], h[9]) for h in hot if h[1] is not None)
 
     def _loads(self, scene, own, ix):
         """Each load as (body number or None for a couple's, point, force or couple, gas);
@@ -165,22 +171,29 @@ class ForcePlan:
         S.fx = sx = z[:]
         S.fy = sy = z[:]
         S.m = sm = z[:]
-        for i, pt, p, q, body, lam, mu, nm, ni, weight in self.masses:
-            if pt is None:  # G and a_G: the link's image of (lam, mu), as bodies.centre
-                (px, py), (qx, qy) = P[p], P[q]
-                dx, dy = qx - px, qy - py
-                gx, gy = px + lam * dx - mu * dy, py + lam * dy + mu * dx
-                (px, py), (qx, qy) = A[p], A[q]
-                dx, dy = qx - px, qy - py
-                ax, ay = px + lam * dx - mu * dy, py + lam * dy + mu * dx
-                alpha = Al[body]
+        for i, p, q, body, lam, mu, nm, ni, wx, wy in self.on_links:  # G, a_G: as centre
+            (px, py), (qx, qy) = P[p], P[q]
+            dx, dy = qx - px, qy - py
+            gx, gy = px + lam * dx - mu * dy, py + lam * dy + mu * dx
+            (px, py), (qx, qy) = A[p], A[q]
+            dx, dy = qx - px, qy - py
+            fx = nm * (px + lam * dx - mu * dy)  # -m a_G
+            fy = nm * (py + lam * dy + mu * dx)
+            # S.add(i, fx, fy, gx, gy), S.couple(i, -I alpha), the weight's: in order
+            if wx is None:
+                sx[i] = sx[i] + fx
+                sy[i] = sy[i] + fy
+                sm[i] = sm[i] + (gx * fy - gy * fx) + ni * Al[body]
             else:
-                (gx, gy), (ax, ay), alpha = P[pt], A[pt], 0.0
-            fx, fy = nm * ax, nm * ay  # -m a_G
-            # S.add(i, fx, fy, gx, gy); S.couple(i, -I alpha); the weight likewise
+                sx[i] = sx[i] + fx + wx
+                sy[i] = sy[i] + fy + wy
+                sm[i] = sm[i] + (gx * fy - gy * fx) + ni * Al[body] + (gx * wy - gy * wx)
+        for i, pt, nm, ni, weight in self.on_blocks:  # a block: its point, no turning
+            (gx, gy), (ax, ay) = P[pt], A[pt]
+            fx, fy = nm * ax, nm * ay
             sx[i] = sx[i] + fx
             sy[i] = sy[i] + fy
-            sm[i] = sm[i] + (gx * fy - gy * fx) + ni * alpha
+            sm[i] = sm[i] + (gx * fy - gy * fx) + ni * 0.0
             if weight is not None:
                 fx, fy = weight
                 sx[i] = sx[i] + fx
@@ -210,28 +223,33 @@ class ForcePlan:
             try:
                 t = fn(P, S, pins, guides)
             except Singular as exc:
-                from ..common.errors import PolygonMethodError
-
-                raise PolygonMethodError(
-                    f"forces: {exc}: the pin forces are not determined "
-                    f"here (step {st.index + 1}, {st.title})",
-                    file=self.scene.file,
-                ) from None
+                raise self._singular(st, exc) from None
             if t is not None:
                 if first:
                     effort = t
                 else:
                     second = t
-        name, kind = self.driver
-        return quick_forces(
-            effort,
-            (sx[0], sy[0]),
-            sm[0],
-            name,
-            kind,
-            second,
-            self.second,
-            (self, motion, pins, guides, S),
+        # the record's fields put straight into its dictionary (its frozen __init__ sets
+        # them one by one through object.__setattr__: three times as long)
+        f = _new(Forces)
+        d = f.__dict__
+        d["input_torque"] = effort
+        d["shaking_force"] = (sx[0], sy[0])
+        d["shaking_moment"] = sm[0]
+        d["crank"], d["driver"] = self.driver
+        d["second_torque"] = second
+        d["second_crank"] = self.second
+        d["source"] = (self, motion, pins, guides, S)
+        return f
+
+    def _singular(self, st, exc):
+        """The one-line error of a group whose pin forces are not determined."""
+        from ..common.errors import PolygonMethodError
+
+        return PolygonMethodError(
+            f"forces: {exc}: the pin forces are not determined "
+            f"here (step {st.index + 1}, {st.title})",
+            file=self.scene.file,
         )
 
     # what its :class:`~.records.Forces` asks of its ``source``, (this plan, the motion, the
@@ -285,6 +303,8 @@ def force_plan(scene, plan) -> ForcePlan:
     if hit is not None and hit[0]() is scene and hit[1] is plan:
         return hit[2]
     fp = ForcePlan(scene, plan)
+    if plan.scene is scene:  # kept on the plan too: analyse reads it there, without a call
+        object.__setattr__(plan, "force_plan", fp)
     try:
         ref = weakref.ref(scene, functools.partial(_forget, ident=ident))
     except TypeError:  # a scene that takes no weak reference: not kept

@@ -85,17 +85,16 @@ def bind(st, own, ix):
             raise Singular(why)
         px = (-m1b * r2x - r1x * m2d) / det
         py = (-r1y * m2d - m1b * r2y) / det
-        fb = (-(f1x + px), -(f1y + py))
-        fd = (-(f2x - px), -(f2y - py))
-        pins += ((c, l1, l2, (px, py)), (b, l1, ob, fb), (d, l2, od, fd))
-        fx, fy = -fb[0], -fb[1]  # S.add(ib, fx, fy, bx, by), written out
-        sx[ib] = sx[ib] + fx
-        sy[ib] = sy[ib] + fy
-        sm[ib] = sm[ib] + (bx * fy - by * fx)
-        fx, fy = -fd[0], -fd[1]  # S.add(id_, fx, fy, dx, dy)
-        sx[id_] = sx[id_] + fx
-        sy[id_] = sy[id_] + fy
-        sm[id_] = sm[id_] + (dx * fy - dy * fx)
+        # -F_B and -F_D, the reactions on the bodies at B and D (a negation is exact:
+        # -(-x) is x to the bit)
+        ex, ey, gx, gy = f1x + px, f1y + py, f2x - px, f2y - py
+        pins += ((c, l1, l2, (px, py)), (b, l1, ob, (-ex, -ey)), (d, l2, od, (-gx, -gy)))
+        sx[ib] = sx[ib] + ex  # S.add(ib, ex, ey, bx, by), written out
+        sy[ib] = sy[ib] + ey
+        sm[ib] = sm[ib] + (bx * ey - by * ex)
+        sx[id_] = sx[id_] + gx  # S.add(id_, gx, gy, dx, dy)
+        sy[id_] = sy[id_] + gy
+        sm[id_] = sm[id_] + (dx * gy - dy * gx)
 
     return run
 

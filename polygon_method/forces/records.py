@@ -497,29 +497,6 @@ class Forces:
         return next((i for i in self.inertia if i.body == body), None)
 
 
-def quick_forces(
-    effort, shaking_force, shaking_moment, crank, driver, second_torque, second_crank, source
-) -> Forces:
-    """``Forces(effort, shaking_force, ...)``, its fields put straight into the instance's
-    dictionary (the frozen dataclass's ``__init__`` sets them one by one through
-    ``object.__setattr__``: three times as long, a sixth of the short road's cost on a
-    four-bar): the same record."""
-    f = _new(Forces)
-    d = f.__dict__
-    d["input_torque"] = effort
-    d["shaking_force"] = shaking_force
-    d["shaking_moment"] = shaking_moment
-    d["crank"] = crank
-    d["driver"] = driver
-    d["second_torque"] = second_torque
-    d["second_crank"] = second_crank
-    d["source"] = source
-    return f
-
-
-_new = object.__new__
-
-
 def _vec(v):
     return [v[0] + 0.0, v[1] + 0.0]  # + 0.0: no -0.0 in the JSON
 

@@ -28,7 +28,7 @@ NESTING_SAFE = 512
 def _compiled(text: str) -> dict:
     """The table of ``text`` read by a compiled reader, or an exception where it refuses
     it (or none is installed)."""
-    if _toml_rs is not None and text.count("[") + text.count("{") <= NESTING_SAFE:
+    if _toml_rs is not None and _scanned(text).count(b"[") <= NESTING_SAFE:
         return _toml_rs(text, toml_version="1.0.0")
     if _rtoml is not None:
         return _rtoml(text)
@@ -263,7 +263,25 @@ _INT64 = 1 << 63
 #: tries every position): a digit is one ASCII byte, and no other character's bytes are
 #: digits, so the runs are the same
 _LONG_RUN = b"x" * 16
-_DIGITS = bytes(ord("x") if chr(c) in "0123456789ABCDEFabcdef_" else ord(" ") for c in range(256))
+#: the same pass counts the brackets (``[`` and ``{``, made ``[``) for :data:`NESTING_SAFE`
+_DIGITS = bytes(
+    ord("x") if chr(c) in "0123456789ABCDEFabcdef_" else ord("[") if chr(c) in "[{" else ord(" ")
+    for c in range(256)
+)
+#: the last text scanned and its scan (reading a scene asks twice: the brackets before the
+#: TOML is read, the runs of digits after), kept as one pair: a text held is never another
+_LAST = [("", b"")]
+
+
+def _scanned(text: str) -> bytes:
+    """``text``'s UTF-8 bytes with each digit (of any base, and ``_``) made ``x``, each
+    ``[`` and ``{`` made ``[``, every other byte a space (one C pass)."""
+    last = _LAST[0]
+    if last[0] is text:
+        return last[1]
+    out = text.encode("utf-8", "replace").translate(_DIGITS)
+    _LAST[0] = (text, out)
+    return out
 
 
 def has_long_run(text: str) -> bool:
@@ -272,7 +290,7 @@ def has_long_run(text: str) -> bool:
     >>> has_long_run("BC = 1234567890123456"), has_long_run("BC = 123456789012345 # é")
     (True, False)
     """
-    return _LONG_RUN in text.encode("utf-8", "replace").translate(_DIGITS)
+    return _LONG_RUN in _scanned(text)
 
 
 def long_integer(raw):

@@ -651,6 +651,26 @@ class _Compiler:
                 file=sc.file,
                 key="[input.second] crank",
             )
+        free = [
+            p
+            for p in extra_sliders
+            if m > 1
+            and p not in sc.ground
+            and not any(p in (lk.p, lk.q) for lk in sc.links)
+            and not any(cp.name == p for cp in sc.points)
+        ]
+        if free and set(missing) <= set(free):  # a block on a guide alone: a motion too many
+            one = len(free) == 1
+            raise MobilityError(
+                f"{mob}: the mechanism is under-constrained; the block"
+                f"{'' if one else 's'} {', '.join(free)} slide{'s' if one else ''} freely "
+                f"along {'its guide' if one else 'their guides'}: nothing places "
+                f"{'it' if one else 'them'} (pin {'it' if one else 'them'} to a link; or drive "
+                f"{'it' if one else 'one'} along its guide as a second input: [input.second] "
+                f'block = "{free[0]}" with vs_{free[0]}, s_{free[0]})',
+                file=sc.file,
+                key=f"[sliders] {', '.join(free)}",
+            )
         if missing:
             if m > 1:
                 why = (
@@ -683,26 +703,6 @@ class _Compiler:
             ]
             where = f"[links] {', '.join(loose)}" if loose else "[links]"
             raise MobilityError(why, file=sc.file, key=where)
-        free = [
-            p
-            for p in extra_sliders
-            if m > 1
-            and p not in sc.ground
-            and not any(p in (lk.p, lk.q) for lk in sc.links)
-            and not any(cp.name == p for cp in sc.points)
-        ]
-        if free:  # a block on a guide and nothing else: it slides freely, a motion too many
-            one = len(free) == 1
-            raise MobilityError(
-                f"{mob}: the mechanism is under-constrained; the block"
-                f"{'' if one else 's'} {', '.join(free)} slide{'s' if one else ''} freely "
-                f"along {'its guide' if one else 'their guides'}: nothing places "
-                f"{'it' if one else 'them'} (pin {'it' if one else 'them'} to a link; or drive "
-                f"{'it' if one else 'one'} along its guide as a second input: [input.second] "
-                f'block = "{free[0]}" with vs_{free[0]}, s_{free[0]})',
-                file=sc.file,
-                key=f"[sliders] {', '.join(free)}",
-            )
         parts = []
         if extra_links:
             parts.append(

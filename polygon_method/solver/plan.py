@@ -163,6 +163,10 @@ class Plan:
     #: quantity (a :class:`polygon_method.solver.given.Resolution`), else None
     given: object = field(default=None, repr=False, compare=False)
 
+    #: the force analysis's plan for this plan's scene, kept here by ``forces`` when first
+    #: made (not a field: never compared, copied by ``replace`` or pickled)
+    force_plan = None
+
     def __hash__(self):
         return id(self)
 
@@ -391,7 +395,7 @@ class Plan:
         return {
             k: v
             for k, v in self.__dict__.items()
-            if k not in ("_zero", "_phases", "_instant", "_checked", "pin_table")
+            if k not in ("_zero", "_phases", "_instant", "_checked", "pin_table", "force_plan")
         }
 
     def __setstate__(self, state):
