@@ -320,3 +320,215 @@ def test_a_point_set_out_from_one_given_below_it_says_to_give_that_one_first(
         lines = points.splitlines()
         swapped = _scene(tmp_path, text.replace(points, lines[1] + "\n" + lines[0]), "t.toml")
         assert main(["solve", swapped]) == 0
+
+
+# ------------------------------------------- one quantity under two names: graded once
+
+#: omega_BC of the seed four-bar, rad/s ccw (the scene's comment: closed-form positions and
+#: finite differences, not this project's solver)
+OMEGA_BC = 5.150
+
+
+@pytest.mark.parametrize(
+    "second, right",
+    [
+        ('omega_CB = "5.17 rad/s ccw"', True),  # the same value, the other order
+        ('omega_CB = "5.1"', True),  # a size, no sense: still BC's
+        ('omega_CB = "7 rad/s cw"', False),  # another value: one of the two is wrong
+    ],
+)
+def test_one_quantity_under_two_names_is_graded_once(tmp_path, capsys, second, right):
+    """``omega_BC`` and ``omega_CB`` are one link's angular velocity: the table graded
+    both ("2 of 2 right"), counting one answer twice; now one row, the other name under it,
+    right only if every value given for it is."""
+    answers = _scene(
+        tmp_path, f'[answers]\nomega_BC = "5.17 rad/s ccw"\n{second}\n', "answers.toml"
+    )
+    assert abs(5.17 - OMEGA_BC) / OMEGA_BC < 0.01  # (the first is right, to 0.4 %)
+    code = main(["check", "--json", str(ROOT / SEED), answers])
+    record = json.loads(capsys.readouterr().out)
+    assert code == (0 if right else 1)
+    assert len(record["answers"]) == 1 and record["right"] + record["wrong"] == 1
+    row = record["answers"][0]
+    assert row["key"] == "omega_BC" and row["correct"] == pytest.approx(OMEGA_BC, rel=1e-3)
+    assert [a["key"] for a in row["also"]] == ["omega_CB"] and row["also"][0]["line"] == 3
+    assert (row["verdict"] == "right") is right
+    main(["check", str(ROOT / SEED), answers])
+    text = capsys.readouterr().out
+    assert "also given as omega_CB" in text and "graded once" in text
+    assert text.strip().endswith("1 of 1 right" if right else "0 of 1 right, 1 wrong")
+
+
+def test_a_relative_velocity_named_either_way_is_graded_once(tmp_path, capsys):
+    """v_CB and v_BC: one relative velocity's size (0.3399 m/s, the scene's comment)."""
+    answers = _scene(
+        tmp_path, '[answers]\nv_CB = "0.34 m/s"\nv_BC = "0.34 m/s"\nv_C = "0.4005"\n', "a.toml"
+    )
+    assert main(["check", "--json", str(ROOT / SEED), answers]) == 0
+    rows = json.loads(capsys.readouterr().out)["answers"]
+    assert [r["key"] for r in rows] == ["v_CB", "v_C"]
+    assert rows[0]["correct"] == pytest.approx(0.3399, rel=1e-3)
+
+
+# ------------------------------------- typography a word processor puts in numbers
+
+
+@pytest.mark.parametrize(
+    "cd",
+    [
+        '"5.6\u00d710^1 mm"',  # 5.6 x 10^1
+        '"5.6\u00b710\u00b9 mm"',  # a middle dot and a superscript power
+        '"0.56\u00d710**2 mm"',
+        '"55\u00bd mm"',  # a vulgar fraction: 55.5, not 56 (checked below)
+        '"56\u00a0mm"',  # a non-breaking space
+        '"56\u202fmm"',  # a narrow one
+        '"5,6 cm"',  # a decimal comma
+        '"56\u00b70 mm"',  # the British decimal point
+    ],
+)
+def test_a_number_with_typographic_characters_is_read_as_it_means(tmp_path, capsys, cd):
+    """``CD = "5.6×10^1 mm"``: "unknown unit '×10^1 mm'"; ``"−10.5 rad/s"``: "cannot read".
+    Each form means CD = 56 mm (55.5 for the fraction): v_C agrees with the closed form."""
+    text = FOURBAR.replace("CD = 56", f"CD = {cd}")
+    assert main(["solve", "--json", _scene(tmp_path, text)]) == 0
+    v = json.loads(capsys.readouterr().out)["points"]["C"]["velocity"]
+    if "\u00bd" in cd:  # another length: only the reading is checked, by the position
+        assert (
+            main(["solve", "--json", _scene(tmp_path, FOURBAR.replace("CD = 56", "CD = 55.5"))])
+            == 0
+        )
+        assert v == json.loads(capsys.readouterr().out)["points"]["C"]["velocity"]
+        return
+    assert math.hypot(*v) == pytest.approx(V_C, rel=1e-3)
+
+
+@pytest.mark.parametrize("minus", ["\u2212", "\u2013", "\uff0d"])
+def test_a_typographic_minus_in_an_answer_is_a_minus(tmp_path, capsys, minus):
+    """``omega_CD = "−7.15 rad/s"`` (a minus sign pasted from a document): omega_CD is
+    7.151 rad/s cw (the scene's comment), so the signed answer is right."""
+    answers = _scene(tmp_path, f'[answers]\nomega_CD = "{minus}7.15 rad/s"\n', "a.toml")
+    assert main(["check", "--json", str(ROOT / SEED), answers]) == 0
+    row = json.loads(capsys.readouterr().out)["answers"][0]
+    assert row["given"] == -7.15 and row["correct"] == pytest.approx(-7.151, rel=1e-3)
+
+
+@pytest.mark.parametrize("bad, char", [("10\u2030 rad/s cw", "U+2030"), ("10 \u2126", "U+2126")])
+def test_a_character_no_number_has_is_named_in_one_line(tmp_path, capsys, bad, char):
+    """A character left that no number or unit has: one line naming it and its line."""
+    text = FOURBAR.replace('"10.5 rad/s cw"', f'"{bad}"')
+    assert main(["solve", _scene(tmp_path, text)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "[input] speed (line 11)" in err[0], err
+    if char == "U+2030":
+        assert char in err[0], err
+
+
+def test_a_comma_that_reads_two_ways_in_a_scene_is_one_line(tmp_path, capsys):
+    """``speed = "1,050 rpm cw"``: 1.05 or 1050? (was "unknown unit ',050 rpm'")."""
+    text = FOURBAR.replace('"10.5 rad/s cw"', '"1,050 rpm cw"')
+    assert main(["solve", _scene(tmp_path, text)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "reads two ways" in err[0], err
+
+
+# ------------------------------------------------ a pin larger than the link it joins
+
+
+@pytest.mark.parametrize("radius, warned", [(500, True), (60, True), (40, False)])
+def test_a_pin_larger_than_its_link_is_warned_of(tmp_path, capsys, radius, warned):
+    """A pin of radius 500 mm on a crank of 50 mm (its friction circle 150 mm) was taken
+    silently. The crank AB is 50 mm: a radius past it is warned of, in the text and the
+    JSON, with the friction circle where mu r passes it too."""
+    text = FOURBAR + f"[pins]\nB = {{ radius = {radius} }}\n[masses]\n[friction]\npins = 0.3\n"
+    path = _scene(tmp_path, text)
+    assert main(["solve", "--json", path]) == 0
+    warnings = [w for w in json.loads(capsys.readouterr().out)["warnings"] if "pin B" in w]
+    assert bool(warnings) is warned
+    if warned:
+        assert "more than the link AB (50 mm)" in warnings[0]
+        assert ("friction circle" in warnings[0]) is (0.3 * radius > 50)
+
+
+# ------------------------------------------- a differential's output reversing often
+
+
+def _slider_reversals(turns=4, n=400001):
+    """The crank angles (deg, within the period) where the differential's slider Q turns
+    back, by its closed-form position: the arm OA 100 at theta, the planet's point P 40
+    from A turning 3.25 times as fast (40.84 / 12.566 rad/s, the scene's answer over its
+    arm's speed: external mesh, (omega_p - omega_a) / (omega_s - omega_a) = -60 / 40),
+    the rod PQ 150 to Q on the line through O."""
+    t0 = math.radians(30.0)
+    phi0 = math.atan2(0.07 - 0.05, 0.12124355652982143 - 0.08660254037844388)  # P - A at 30 deg
+    k = 1 - 1.5 * (-0.5 - 1)  # 3.25
+    import numpy as np
+
+    th = np.linspace(t0 - turns * math.pi, t0 + turns * math.pi, n)
+    xp = 0.1 * np.cos(th) + 0.04 * np.cos(phi0 + k * (th - t0))
+    yp = 0.1 * np.sin(th) + 0.04 * np.sin(phi0 + k * (th - t0))
+    d = np.diff(xp + np.sqrt(0.15**2 - yp**2))
+    z = np.nonzero(np.sign(d[1:]) != np.sign(d[:-1]))[0]
+    return sorted(np.degrees(th[z + 1]) % (360 * turns))
+
+
+def test_a_slider_reversing_many_times_through_a_train_does_not_dwell(capsys):
+    """linkage said the differential's slider "dwells over whole ranges of the crank" (26
+    stationary positions were taken for a degenerate linkage): it reverses 26 times over
+    the train's period of 4 turns, each listed where the closed form puts it."""
+    expected = _slider_reversals()
+    assert len(expected) == 26
+    assert main(["linkage", str(ROOT / "worked_problems/differential_epicyclic.toml")]) == 0
+    out = capsys.readouterr().out
+    assert "dwells" not in out
+    found = [float(m) for m in re.findall(r"crank at +([0-9.]+) deg: the output stands still", out)]
+    assert found == pytest.approx(expected, abs=2e-3)
+
+
+def test_a_second_input_far_faster_than_the_crank_is_one_line_not_an_alias(tmp_path, capsys):
+    """The arm at 1.2e-5 rpm, the sun at 60 rpm: linkage ran for 17 s and said the slider
+    dwells (3600 samples of a sun turning 5 million times a turn). One line, at once."""
+    import time
+
+    text = (ROOT / "worked_problems/differential_epicyclic.toml").read_text(encoding="utf-8")
+    text = text.replace('speed = "120 rpm ccw"', 'speed = "1.2e-5 rpm ccw"').split("[answers]")[0]
+    start = time.perf_counter()
+    assert main(["linkage", _scene(tmp_path, text)]) == 2
+    assert time.perf_counter() - start < 5
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "[input.second] speed" in err[0] and "cannot follow" in err[0], err
+
+
+# ----------------------------------------------- an output that is a link to itself
+
+
+@pytest.mark.parametrize("ring", [1, 2])
+@pytest.mark.parametrize(
+    "argv",
+    [["draw", SEED, "--diagram", "velocity", "-o"], ["sweep", SEED, "--steps", "4", "--csv"]],
+)
+def test_an_output_that_is_a_link_round_to_itself_is_refused_and_kept(tmp_path, capsys, ring, argv):
+    """``-o x.svg`` where x.svg -> x.svg: the link was replaced by the drawing."""
+    links = [tmp_path / f"x{k}.svg" for k in range(ring)]
+    for k, link in enumerate(links):
+        link.symlink_to(links[(k + 1) % ring].name)
+    assert main([*argv, str(links[0])]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "leads round to itself" in err[0], err
+    assert all(link.is_symlink() for link in links)
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(link.name for link in links)
+
+
+# --------------------------------------------- a driving block at rest: its header
+
+
+def test_a_block_at_rest_is_said_at_rest_in_the_sweep_header(tmp_path, capsys):
+    """``sweep --summary`` of a block at rest said "block A ... at 1 m/s to the left at
+    every place", as if it moved; a crank's says "at rest, the motion per 1 rad/s
+    (virtual)"."""
+    text = (ROOT / "worked_problems/ellipse_trammel.toml").read_text(encoding="utf-8")
+    text = re.sub(r"(?m)^vs_A = .*$", "vs_A = 0", text.split("[answers]")[0])
+    text += '[masses]\nAB = { mass = "5 kg" }\n[gravity]\n'
+    assert main(["sweep", "--summary", "--steps", "8", _scene(tmp_path, text)]) == 0
+    head = capsys.readouterr().out.splitlines()[1]
+    assert "at rest, the motion per 1 m/s to the left (virtual)" in head, head
+    assert "start from rest with 5 m/s^2 to the left" in head, head

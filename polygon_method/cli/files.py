@@ -24,6 +24,17 @@ class _Target:
         self.shown, self.option = str(path), option
         if not str(path).strip():
             raise PolygonMethodError("an empty file name", key=option)
+        try:
+            os.stat(path)
+        except OSError as exc:  # a link to itself, or in a ring of links: never replaced
+            if exc.errno == errno.ELOOP:
+                raise PolygonMethodError(
+                    f"cannot write {path}: a symbolic link that leads round to itself "
+                    "(a loop): it names no file; give another output",
+                    key=option,
+                ) from None
+        except ValueError:  # (a NUL in the name: refused below, as before)
+            pass
         real = Path(os.path.realpath(path))
         if real.is_dir():
             raise PolygonMethodError(f"cannot write {path}: it is a directory", key=option)
