@@ -532,3 +532,29 @@ def test_a_block_at_rest_is_said_at_rest_in_the_sweep_header(tmp_path, capsys):
     head = capsys.readouterr().out.splitlines()[1]
     assert "at rest, the motion per 1 m/s to the left (virtual)" in head, head
     assert "start from rest with 5 m/s^2 to the left" in head, head
+
+
+# ------------------------------------------ an integer past what str() converts
+
+
+@pytest.mark.parametrize("reader", ["compiled", "tomllib"])
+@pytest.mark.parametrize("where", ["scene", "answers"])
+def test_an_integer_of_thousands_of_digits_is_one_line(
+    tmp_path, capsys, monkeypatch, reader, where
+):
+    """``AB = 111...1`` (100,000 digits): str() of it raised ValueError past 4300 digits
+    (exit 3, "internal error")."""
+    from polygon_method.scene import source
+
+    if reader == "tomllib":
+        monkeypatch.setattr(source, "_fast_toml", None)
+    digits = "1" * 100000
+    if where == "scene":
+        argv = ["solve", _scene(tmp_path, FOURBAR.replace("AB = 50", f"AB = {digits}"))]
+    else:
+        answers = _scene(tmp_path, f"[answers]\nv_C = {digits}\n", "a.toml")
+        argv = ["check", str(ROOT / SEED), answers]
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "100000 digits" in err[0], err
+    assert ("line 5" if where == "scene" else "line 2") in err[0], err

@@ -9,7 +9,7 @@ import unicodedata
 
 from .errors import SceneError
 
-__all__ = ["typographic", "decimal_comma"]
+__all__ = ["typographic", "decimal_comma", "long_integer_text"]
 
 
 def _clip(raw, most=60) -> str:
@@ -98,3 +98,21 @@ def decimal_comma(value):
     if whole.lstrip("0") and len(frac) == 3:  # a thousands separator, or a decimal comma?
         return None
     return f"{sign}{whole or '0'}.{frac}{rest}"
+
+
+def long_integer_text(value: int) -> str:
+    """An integer too long to quote as a message quotes it: its sign, first digits and how
+    many it has, also past what ``str`` converts (4300 digits).
+
+    >>> long_integer_text(-(10**30)), long_integer_text(10**5000)
+    ('-100000...(31 digits)', '(5001 digits)')
+    """
+    sign = "-" if value < 0 else ""
+    try:
+        digits = str(abs(value))
+    except ValueError:  # past str's limit: count them from its bits
+        count = int(abs(value).bit_length() * 0.30102999566398120) + 1
+        if 10 ** (count - 1) > abs(value):
+            count -= 1
+        return f"{sign}({count} digits)"
+    return f"{sign}{digits[:6]}...({len(digits)} digits)"

@@ -21,7 +21,7 @@ import re
 from dataclasses import dataclass
 
 from .errors import SceneError
-from .typography import decimal_comma, typographic
+from .typography import decimal_comma, long_integer_text, typographic
 
 __all__ = [
     "Quantity",
@@ -508,7 +508,7 @@ def _read_number(raw, kind: str, where: str, default_unit: str | None) -> tuple:
         value = float(raw)
     except OverflowError:  # an integer of hundreds of digits
         raise SceneError(
-            f"the integer {str(raw)[:8]}... ({len(str(abs(raw)))} digits) is "
+            f"the integer {long_integer_text(raw)} is "
             "absurd for a mechanism; check the value and its unit",
             key=where,
         ) from None

@@ -13,6 +13,7 @@ from dataclasses import replace
 from pathlib import Path
 
 from ..common.errors import PolygonMethodError, SceneError, printable
+from ..common.typography import long_integer_text
 from ..common.units import LENGTH_UNITS, UNITS, parse_quantity
 from .rolling import read_rolling
 from .source import (
@@ -308,8 +309,7 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected
         if hit is None:
             return
         path, value = hit
-        digits = str(abs(value))
-        shown = f"{'-' if value < 0 else ''}{digits[:6]}...({len(digits)} digits)"
+        shown = long_integer_text(value)
         message = (
             f"the integer {shown} is beyond TOML's 64-bit integers, and absurd for a "
             "mechanism; check the value and its unit"
