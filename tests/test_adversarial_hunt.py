@@ -558,3 +558,39 @@ def test_an_integer_of_thousands_of_digits_is_one_line(
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "100000 digits" in err[0], err
     assert ("line 5" if where == "scene" else "line 2") in err[0], err
+
+
+# ------------------------------------------------ /dev/stdout when it is a pipe
+
+
+@pytest.mark.skipif(not Path("/dev/stdout").exists(), reason="no /dev/stdout on this system")
+def test_a_csv_to_dev_stdout_into_a_pipe_is_written(tmp_path):
+    """``sweep --csv /dev/stdout | head``: the link resolves to /proc/self/fd/1 and on to
+    "pipe:[208160]", a name no file has: "cannot write /dev/stdout: No such file or
+    directory". It is the command's own standard output: written as ``--csv -`` is."""
+    import subprocess
+    import sys
+
+    done = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "polygon_method",
+            "sweep",
+            SEED,
+            "--steps",
+            "4",
+            "--csv",
+            "/dev/stdout",
+        ],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert done.returncode == 0, done.stderr
+    rows = done.stdout.splitlines()  # the CSV alone: the words go to stderr, as with -
+    assert rows[0].startswith("theta [deg],"), rows[:1]
+    # the seed's crank reaches -103.79 to 103.79 deg (BC + CD = BD there): 0, 90, 270
+    assert [float(r.split(",")[0]) for r in rows[1:]] == [0.0, 90.0, 270.0]
+    assert "3 of 4 crank angles" in done.stderr
