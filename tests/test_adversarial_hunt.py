@@ -594,3 +594,29 @@ def test_a_csv_to_dev_stdout_into_a_pipe_is_written(tmp_path):
     # the seed's crank reaches -103.79 to 103.79 deg (BC + CD = BD there): 0, 90, 270
     assert [float(r.split(",")[0]) for r in rows[1:]] == [0.0, 90.0, 270.0]
     assert "3 of 4 crank angles" in done.stderr
+
+
+def test_a_class_gives_one_column_to_one_quantity_under_either_name(tmp_path, capsys):
+    """One student writes omega_BC, another omega_CB: the gradebook had two columns, and
+    "most often wrong" counted them apart."""
+    answers = tmp_path / "answers"
+    answers.mkdir()
+    (answers / "ann.toml").write_text('[answers]\nomega_BC = "5.15 rad/s ccw"\n')
+    (answers / "bob.toml").write_text('[answers]\nomega_CB = "7.15 rad/s ccw"\n')  # CD's
+    (answers / "cat.toml").write_text('[answers]\nomega_CB = "2 rad/s ccw"\n')
+    book = tmp_path / "book.csv"
+    assert main(["check", str(ROOT / SEED), str(answers), "--gradebook", str(book)]) == 0
+    out = capsys.readouterr().out
+    assert "omega_BC: 2 of 3 students" in out and "omega_CB:" not in out
+    head, *rows = book.read_text().splitlines()
+    assert head.split(",")[2:4] == ["omega_BC", "right"]
+    assert [r.split(",")[2].split(" ")[0] for r in rows] == ["right", "WRONG", "WRONG"]
+
+
+def test_a_negative_pin_speed_with_a_sense_is_worded_as_a_pin_speed(tmp_path, capsys):
+    """``speed = "-3 m/s cw"``: "'m/s' is a unit of velocity, not of angular velocity",
+    though "3 m/s cw" (the pin's speed) is read."""
+    text = FOURBAR.replace('"10.5 rad/s cw"', '"-3 m/s cw"')
+    assert main(["solve", _scene(tmp_path, text)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "reads two ways" in err[0] and '"3 m/s cw"' in err[0], err

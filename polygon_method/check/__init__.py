@@ -138,7 +138,7 @@ def check_answers(sol: Solution, answers=None, tolerance: float | None = None, _
             out.append(engine_verdict(sol, ans, tolerance))
         else:
             out.append(_verdict(sol, ans, tolerance, tols, diag, clean))
-    return _graded_once(answers, out)
+    return _graded_once(sol, answers, out)
 
 
 #: the answer kinds whose two names, in either order, are one quantity: a link's omega
@@ -154,7 +154,24 @@ def _quantity(ans):
     return ans.kind, tuple(ans.names)
 
 
-def _graded_once(answers, verdicts) -> tuple:
+def _column(sol: Solution, ans) -> str | None:
+    """The one name of an answer's quantity where it has two (``omega_CB``: ``omega_BC``, as
+    the scene names the link; ``v_CB``: its points in the scene's order), else None."""
+    if ans.kind not in _EITHER_ORDER or ans.kind == "centre" or len(ans.names) != 2:
+        return None
+    sc = sol.scene
+    if ans.kind in ("v", "a"):
+        order = {p: i for i, p in enumerate(sc.point_names)}
+        a, b = sorted(ans.names, key=lambda p: order.get(p, len(order)))
+        name = f"{ans.kind}_{a}{b}" if len(a) == len(b) == 1 else f"{ans.kind}_{a}-{b}"
+    elif sc.has_link("-".join(ans.names)):
+        name = f"{ans.kind}_{sc.link('-'.join(ans.names)).key}"
+    else:
+        return None
+    return None if name == ans.key else name
+
+
+def _graded_once(sol: Solution, answers, verdicts) -> tuple:
     """The verdicts with the same quantity given under several names (``omega_BC`` and
     ``omega_CB``) graded once, in the first name's row, the others named in it: right
     only where every value given for it is."""
@@ -164,7 +181,7 @@ def _graded_once(answers, verdicts) -> tuple:
         q = _quantity(ans)
         if q not in first:
             first[q] = len(out)
-            out.append(v)
+            out.append(replace(v, column=_column(sol, ans)))
             continue
         k = first[q]
         also = (*out[k].also, (v.key, v.raw, v.line, v.ok, v.given))

@@ -65,6 +65,13 @@ class Verdict:
     correct_text: str | None = None  # how the correct value is shown, where not a number
     extra: dict | None = None  # more for the JSON (a centre's positions)
     also: tuple = ()  # the same quantity given again under another name: (key, raw, line, ok, given)
+    column: str | None = None  # the quantity's one name in a class's table (omega_BC for omega_CB)
+
+    @property
+    def quantity(self) -> str:
+        """The name a class's table and summary give this answer: one for every spelling of
+        one quantity (``omega_CB`` is ``omega_BC``, as the scene names the link)."""
+        return self.column or self.key
 
     @classmethod
     def judged(
