@@ -620,3 +620,13 @@ def test_a_negative_pin_speed_with_a_sense_is_worded_as_a_pin_speed(tmp_path, ca
     assert main(["solve", _scene(tmp_path, text)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "reads two ways" in err[0] and '"3 m/s cw"' in err[0], err
+
+
+def test_two_fixed_pivots_at_one_place_are_warned_of(tmp_path, capsys):
+    """``D = [0, 0]`` beside ``A = [0, 0]``: the four-bar is a rigid triangle ABC turning
+    about A (every link at the crank's omega, as a rigid body must), solved silently."""
+    text = FOURBAR.replace("D = [100, 0]", "D = [0, 0]")
+    assert main(["solve", "--json", _scene(tmp_path, text)]) == 0
+    record = json.loads(capsys.readouterr().out)
+    assert [w for w in record["warnings"] if "fixed pivots A and D are at one place" in w]
+    assert all(record["links"][k]["omega"] == pytest.approx(-10.5) for k in ("AB", "BC", "CD"))

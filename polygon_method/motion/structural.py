@@ -71,6 +71,14 @@ def structural_warnings(sol) -> tuple:
                 "meant to be on a moving link?)"
             )
     near = _ground_near(sc.ground, sol.P, SAME * size)
+    ground = list(sc.ground)
+    for k, G in enumerate(ground):  # two fixed pivots at one place: one pivot named twice?
+        for H, h in near(G):
+            if ground.index(H) > k:
+                out.append(
+                    f"the fixed pivots {G} and {H} are at one place, ({h[0] / u:g}, "
+                    f"{h[1] / u:g}) {unit} (was one meant to be elsewhere?)"
+                )
     for X in sc.point_names:
         if X in sc.ground:
             continue
