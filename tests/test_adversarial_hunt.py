@@ -630,3 +630,15 @@ def test_two_fixed_pivots_at_one_place_are_warned_of(tmp_path, capsys):
     record = json.loads(capsys.readouterr().out)
     assert [w for w in record["warnings"] if "fixed pivots A and D are at one place" in w]
     assert all(record["links"][k]["omega"] == pytest.approx(-10.5) for k in ("AB", "BC", "CD"))
+
+
+def test_the_scene_given_as_its_own_answer_file_is_named_a_scene(capsys):
+    """``check SCENE SCENE``: "units: an answer file holds an [answers] table ... (did you
+    mean 'notes'?)"; ``--gradebook x.txt`` said "--gradebook: --gradebook x.txt: ..."."""
+    scene = str(ROOT / SEED)
+    assert main(["check", scene, scene]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "this is a scene (it has [ground]), not an answer file" in err[0]
+    assert main(["check", scene, scene, "--gradebook", "marks.txt"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].count("--gradebook") == 1, err

@@ -574,6 +574,14 @@ def parse_answers(
             file=file,
             key=deepest_key(text),
         ) from None
+    scene_tables = [k for k in ("ground", "links", "input") if isinstance(raw.get(k), dict)]
+    if scene_tables:  # the scene itself, or another, given as the answers
+        raise SceneError(
+            f"this is a scene (it has [{scene_tables[0]}]), not an answer file: an answer "
+            "file holds an [answers] table (and optionally title, student)",
+            file=file,
+            key=f"[{scene_tables[0]}]",
+        )
     for key in raw:
         if key not in _ANSWER_FILE_KEYS:
             raise SceneError(
