@@ -642,3 +642,13 @@ def test_the_scene_given_as_its_own_answer_file_is_named_a_scene(capsys):
     assert main(["check", scene, scene, "--gradebook", "marks.txt"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].count("--gradebook") == 1, err
+
+
+def test_the_centres_of_a_crank_at_rest_say_the_velocities_are_virtual(tmp_path, capsys):
+    """``centres`` of a scene at rest wrote "omega_2 (O2-A) = 1 rad/s ccw (the input)", as
+    if the crank turned at 1 rad/s: the velocities are the virtual ones, per rad/s."""
+    text = (ROOT / "worked_problems/fourbar_forces.toml").read_text(encoding="utf-8")
+    text = re.sub(r"(?m)^speed = .*$", "speed = 0", text.split("[answers]")[0])
+    assert main(["centres", _scene(tmp_path, text)]) == 0
+    line = next(s for s in capsys.readouterr().out.splitlines() if "omega_2 (O2-A)" in s)
+    assert "at rest" in line and "virtual" in line, line
