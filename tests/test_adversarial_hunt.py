@@ -652,3 +652,28 @@ def test_the_centres_of_a_crank_at_rest_say_the_velocities_are_virtual(tmp_path,
     assert main(["centres", _scene(tmp_path, text)]) == 0
     line = next(s for s in capsys.readouterr().out.splitlines() if "omega_2 (O2-A)" in s)
     assert "at rest" in line and "virtual" in line, line
+
+
+def _trammel_at_rest(tmp_path, start=True):
+    text = (ROOT / "worked_problems/ellipse_trammel.toml").read_text(encoding="utf-8")
+    text = re.sub(r"(?m)^vs_A = .*$", "vs_A = 0", text.split("[answers]")[0])
+    if not start:
+        text = re.sub(r"(?m)^as_A = .*$", "", text)
+    return _scene(tmp_path, text + '[masses]\nAB = { mass = "5 kg" }\n[gravity]\n')
+
+
+@pytest.mark.parametrize("start", [True, False])
+def test_a_block_at_rest_is_said_at_rest_in_the_problem_and_under_the_drawings(tmp_path, start):
+    """The problem's words (the page's "Given") said the block was "moving at 1 m/s to the
+    left, steadily", and the drawings' caption "1 m/s to the left": at rest, that is the
+    virtual speed the polygons are drawn for."""
+    from polygon_method import solve
+    from polygon_method.draw.diagrams import _drive
+    from polygon_method.scene import load_scene
+    from polygon_method.text.words import given
+
+    scene = load_scene(_trammel_at_rest(tmp_path, start))
+    words = next(g for g in given(scene) if "drives the mechanism" in g)
+    assert "at rest, about to move to the" in words and "moving at" not in words, words
+    assert ("acceleration of 5 m/s² to the left" in words) is start, words
+    assert "at rest: the polygons per this speed (virtual)" in _drive(solve(scene))
