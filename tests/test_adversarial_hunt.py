@@ -677,3 +677,24 @@ def test_a_block_at_rest_is_said_at_rest_in_the_problem_and_under_the_drawings(t
     assert "at rest, about to move to the" in words and "moving at" not in words, words
     assert ("acceleration of 5 m/s² to the left" in words) is start, words
     assert "at rest: the polygons per this speed (virtual)" in _drive(solve(scene))
+
+
+def test_the_step_table_of_a_block_at_rest_gives_no_speed_as_given(tmp_path, capsys):
+    """steps: "vs_A = 1 m/s to the left along the guide (given)" for a block at rest."""
+    assert main(["steps", _trammel_at_rest(tmp_path)]) == 0
+    out = capsys.readouterr().out
+    section = out.split("2. Input block A", 1)[1].split("3. ", 1)[0]
+    assert "(given)" not in section and "at rest (vs_A = 0, about to move to the left)" in section
+    assert "the start's 5 m/s^2 to the left" in section, section
+
+
+def test_the_step_table_of_a_wheel_at_rest_gives_no_speed_as_given(tmp_path, capsys):
+    """steps: "omega_CA = 1 rad/s ccw (given)" and "alpha_CA = 0 (the wheel rolls at a
+    steady speed)" for a wheel at rest, starting at 2 rad/s^2 ccw."""
+    text = (ROOT / "worked_problems/rolling_wheel_driver.toml").read_text(encoding="utf-8")
+    text = re.sub(r"(?m)^omega_CA = .*$", 'omega_CA = "0 rad/s"', text.split("[answers]")[0])
+    text += '[masses]\nCA = { mass = "5 kg" }\n[gravity]\n'
+    assert main(["steps", _scene(tmp_path, text)]) == 0
+    section = capsys.readouterr().out.split("2. Input wheel CA", 1)[1].split("3. ", 1)[0]
+    assert "(given)" not in section and "at rest (omega_CA = 0" in section, section
+    assert "alpha_CA = 0 in the polygons (the start's 2 rad/s^2 ccw: in the forces)" in section

@@ -296,9 +296,26 @@ def _input(doc, sol):
     if not driver.periodic:  # a block driven along its guide: its velocity and rate given
         doc.h(f"2. Input block {inp.tip}")
         vs, a_s = inp.omega, inp.alpha
+        given = f"vs_{inp.tip} = {fmt(abs(vs))} m/s {driver.sense(vs)} along the guide"
+        if sc.at_rest:  # the polygons per m/s: the virtual velocities
+            a = sc.start_alpha
+            doc.items(
+                [
+                    f"at rest (vs_{inp.tip} = 0, about to move {driver.sense(vs)}): the "
+                    f"polygons are drawn for {given}, the virtual velocities of the power "
+                    "balance (per m/s of the block)",
+                    f"as_{inp.tip} = 0 in the polygons"
+                    + (
+                        f" (the start's {fmt(abs(a))} m/s^2 {driver.sense(a)}: in the forces)"
+                        if a
+                        else ""
+                    ),
+                ]
+            )
+            return
         doc.items(
             [
-                f"vs_{inp.tip} = {fmt(abs(vs))} m/s {driver.sense(vs)} along the guide (given)",
+                f"{given} (given)",
                 f"as_{inp.tip} = {fmt(abs(a_s))} m/s^2 {driver.sense(a_s)} along the guide (given)"
                 if a_s
                 else f"as_{inp.tip} = 0 (the block moves at a steady speed)",
