@@ -320,3 +320,381 @@ def test_a_point_set_out_from_one_given_below_it_says_to_give_that_one_first(
         lines = points.splitlines()
         swapped = _scene(tmp_path, text.replace(points, lines[1] + "\n" + lines[0]), "t.toml")
         assert main(["solve", swapped]) == 0
+
+
+# ------------------------------------------- one quantity under two names: graded once
+
+#: omega_BC of the seed four-bar, rad/s ccw (the scene's comment: closed-form positions and
+#: finite differences, not this project's solver)
+OMEGA_BC = 5.150
+
+
+@pytest.mark.parametrize(
+    "second, right",
+    [
+        ('omega_CB = "5.17 rad/s ccw"', True),  # the same value, the other order
+        ('omega_CB = "5.1"', True),  # a size, no sense: still BC's
+        ('omega_CB = "7 rad/s cw"', False),  # another value: one of the two is wrong
+    ],
+)
+def test_one_quantity_under_two_names_is_graded_once(tmp_path, capsys, second, right):
+    """``omega_BC`` and ``omega_CB`` are one link's angular velocity: the table graded
+    both ("2 of 2 right"), counting one answer twice; now one row, the other name under it,
+    right only if every value given for it is."""
+    answers = _scene(
+        tmp_path, f'[answers]\nomega_BC = "5.17 rad/s ccw"\n{second}\n', "answers.toml"
+    )
+    assert abs(5.17 - OMEGA_BC) / OMEGA_BC < 0.01  # (the first is right, to 0.4 %)
+    code = main(["check", "--json", str(ROOT / SEED), answers])
+    record = json.loads(capsys.readouterr().out)
+    assert code == (0 if right else 1)
+    assert len(record["answers"]) == 1 and record["right"] + record["wrong"] == 1
+    row = record["answers"][0]
+    assert row["key"] == "omega_BC" and row["correct"] == pytest.approx(OMEGA_BC, rel=1e-3)
+    assert [a["key"] for a in row["also"]] == ["omega_CB"] and row["also"][0]["line"] == 3
+    assert (row["verdict"] == "right") is right
+    main(["check", str(ROOT / SEED), answers])
+    text = capsys.readouterr().out
+    assert "also given as omega_CB" in text and "graded once" in text
+    assert text.strip().endswith("1 of 1 right" if right else "0 of 1 right, 1 wrong")
+
+
+def test_a_relative_velocity_named_either_way_is_graded_once(tmp_path, capsys):
+    """v_CB and v_BC: one relative velocity's size (0.3399 m/s, the scene's comment)."""
+    answers = _scene(
+        tmp_path, '[answers]\nv_CB = "0.34 m/s"\nv_BC = "0.34 m/s"\nv_C = "0.4005"\n', "a.toml"
+    )
+    assert main(["check", "--json", str(ROOT / SEED), answers]) == 0
+    rows = json.loads(capsys.readouterr().out)["answers"]
+    assert [r["key"] for r in rows] == ["v_CB", "v_C"]
+    assert rows[0]["correct"] == pytest.approx(0.3399, rel=1e-3)
+
+
+# ------------------------------------- typography a word processor puts in numbers
+
+
+@pytest.mark.parametrize(
+    "cd",
+    [
+        '"5.6\u00d710^1 mm"',  # 5.6 x 10^1
+        '"5.6\u00b710\u00b9 mm"',  # a middle dot and a superscript power
+        '"0.56\u00d710**2 mm"',
+        '"55\u00bd mm"',  # a vulgar fraction: 55.5, not 56 (checked below)
+        '"56\u00a0mm"',  # a non-breaking space
+        '"56\u202fmm"',  # a narrow one
+        '"5,6 cm"',  # a decimal comma
+        '"56\u00b70 mm"',  # the British decimal point
+    ],
+)
+def test_a_number_with_typographic_characters_is_read_as_it_means(tmp_path, capsys, cd):
+    """``CD = "5.6×10^1 mm"``: "unknown unit '×10^1 mm'"; ``"−10.5 rad/s"``: "cannot read".
+    Each form means CD = 56 mm (55.5 for the fraction): v_C agrees with the closed form."""
+    text = FOURBAR.replace("CD = 56", f"CD = {cd}")
+    assert main(["solve", "--json", _scene(tmp_path, text)]) == 0
+    v = json.loads(capsys.readouterr().out)["points"]["C"]["velocity"]
+    if "\u00bd" in cd:  # another length: only the reading is checked, by the position
+        assert (
+            main(["solve", "--json", _scene(tmp_path, FOURBAR.replace("CD = 56", "CD = 55.5"))])
+            == 0
+        )
+        assert v == json.loads(capsys.readouterr().out)["points"]["C"]["velocity"]
+        return
+    assert math.hypot(*v) == pytest.approx(V_C, rel=1e-3)
+
+
+@pytest.mark.parametrize("minus", ["\u2212", "\u2013", "\uff0d"])
+def test_a_typographic_minus_in_an_answer_is_a_minus(tmp_path, capsys, minus):
+    """``omega_CD = "−7.15 rad/s"`` (a minus sign pasted from a document): omega_CD is
+    7.151 rad/s cw (the scene's comment), so the signed answer is right."""
+    answers = _scene(tmp_path, f'[answers]\nomega_CD = "{minus}7.15 rad/s"\n', "a.toml")
+    assert main(["check", "--json", str(ROOT / SEED), answers]) == 0
+    row = json.loads(capsys.readouterr().out)["answers"][0]
+    assert row["given"] == -7.15 and row["correct"] == pytest.approx(-7.151, rel=1e-3)
+
+
+@pytest.mark.parametrize("bad, char", [("10\u2030 rad/s cw", "U+2030"), ("10 \u2126", "U+2126")])
+def test_a_character_no_number_has_is_named_in_one_line(tmp_path, capsys, bad, char):
+    """A character left that no number or unit has: one line naming it and its line."""
+    text = FOURBAR.replace('"10.5 rad/s cw"', f'"{bad}"')
+    assert main(["solve", _scene(tmp_path, text)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "[input] speed (line 11)" in err[0], err
+    if char == "U+2030":
+        assert char in err[0], err
+
+
+def test_a_comma_that_reads_two_ways_in_a_scene_is_one_line(tmp_path, capsys):
+    """``speed = "1,050 rpm cw"``: 1.05 or 1050? (was "unknown unit ',050 rpm'")."""
+    text = FOURBAR.replace('"10.5 rad/s cw"', '"1,050 rpm cw"')
+    assert main(["solve", _scene(tmp_path, text)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "reads two ways" in err[0], err
+
+
+# ------------------------------------------------ a pin larger than the link it joins
+
+
+@pytest.mark.parametrize("radius, warned", [(500, True), (60, True), (40, False)])
+def test_a_pin_larger_than_its_link_is_warned_of(tmp_path, capsys, radius, warned):
+    """A pin of radius 500 mm on a crank of 50 mm (its friction circle 150 mm) was taken
+    silently. The crank AB is 50 mm: a radius past it is warned of, in the text and the
+    JSON, with the friction circle where mu r passes it too."""
+    text = FOURBAR + f"[pins]\nB = {{ radius = {radius} }}\n[masses]\n[friction]\npins = 0.3\n"
+    path = _scene(tmp_path, text)
+    assert main(["solve", "--json", path]) == 0
+    warnings = [w for w in json.loads(capsys.readouterr().out)["warnings"] if "pin B" in w]
+    assert bool(warnings) is warned
+    if warned:
+        assert "more than the link AB (50 mm)" in warnings[0]
+        assert ("friction circle" in warnings[0]) is (0.3 * radius > 50)
+
+
+# ------------------------------------------- a differential's output reversing often
+
+
+def _slider_reversals(turns=4, n=400001):
+    """The crank angles (deg, within the period) where the differential's slider Q turns
+    back, by its closed-form position: the arm OA 100 at theta, the planet's point P 40
+    from A turning 3.25 times as fast (40.84 / 12.566 rad/s, the scene's answer over its
+    arm's speed: external mesh, (omega_p - omega_a) / (omega_s - omega_a) = -60 / 40),
+    the rod PQ 150 to Q on the line through O."""
+    t0 = math.radians(30.0)
+    phi0 = math.atan2(0.07 - 0.05, 0.12124355652982143 - 0.08660254037844388)  # P - A at 30 deg
+    k = 1 - 1.5 * (-0.5 - 1)  # 3.25
+    import numpy as np
+
+    th = np.linspace(t0 - turns * math.pi, t0 + turns * math.pi, n)
+    xp = 0.1 * np.cos(th) + 0.04 * np.cos(phi0 + k * (th - t0))
+    yp = 0.1 * np.sin(th) + 0.04 * np.sin(phi0 + k * (th - t0))
+    d = np.diff(xp + np.sqrt(0.15**2 - yp**2))
+    z = np.nonzero(np.sign(d[1:]) != np.sign(d[:-1]))[0]
+    return sorted(np.degrees(th[z + 1]) % (360 * turns))
+
+
+def test_a_slider_reversing_many_times_through_a_train_does_not_dwell(capsys):
+    """linkage said the differential's slider "dwells over whole ranges of the crank" (26
+    stationary positions were taken for a degenerate linkage): it reverses 26 times over
+    the train's period of 4 turns, each listed where the closed form puts it."""
+    expected = _slider_reversals()
+    assert len(expected) == 26
+    assert main(["linkage", str(ROOT / "worked_problems/differential_epicyclic.toml")]) == 0
+    out = capsys.readouterr().out
+    assert "dwells" not in out
+    found = [float(m) for m in re.findall(r"crank at +([0-9.]+) deg: the output stands still", out)]
+    assert found == pytest.approx(expected, abs=2e-3)
+
+
+def test_a_second_input_far_faster_than_the_crank_is_one_line_not_an_alias(tmp_path, capsys):
+    """The arm at 1.2e-5 rpm, the sun at 60 rpm: linkage ran for 17 s and said the slider
+    dwells (3600 samples of a sun turning 5 million times a turn). One line, at once."""
+    import time
+
+    text = (ROOT / "worked_problems/differential_epicyclic.toml").read_text(encoding="utf-8")
+    text = text.replace('speed = "120 rpm ccw"', 'speed = "1.2e-5 rpm ccw"').split("[answers]")[0]
+    start = time.perf_counter()
+    assert main(["linkage", _scene(tmp_path, text)]) == 2
+    assert time.perf_counter() - start < 5
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "[input.second] speed" in err[0] and "cannot follow" in err[0], err
+
+
+# ----------------------------------------------- an output that is a link to itself
+
+
+@pytest.mark.parametrize("ring", [1, 2])
+@pytest.mark.parametrize(
+    "argv",
+    [["draw", SEED, "--diagram", "velocity", "-o"], ["sweep", SEED, "--steps", "4", "--csv"]],
+)
+def test_an_output_that_is_a_link_round_to_itself_is_refused_and_kept(tmp_path, capsys, ring, argv):
+    """``-o x.svg`` where x.svg -> x.svg: the link was replaced by the drawing."""
+    links = [tmp_path / f"x{k}.svg" for k in range(ring)]
+    for k, link in enumerate(links):
+        link.symlink_to(links[(k + 1) % ring].name)
+    assert main([*argv, str(links[0])]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "leads round to itself" in err[0], err
+    assert all(link.is_symlink() for link in links)
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(link.name for link in links)
+
+
+# --------------------------------------------- a driving block at rest: its header
+
+
+def test_a_block_at_rest_is_said_at_rest_in_the_sweep_header(tmp_path, capsys):
+    """``sweep --summary`` of a block at rest said "block A ... at 1 m/s to the left at
+    every place", as if it moved; a crank's says "at rest, the motion per 1 rad/s
+    (virtual)"."""
+    text = (ROOT / "worked_problems/ellipse_trammel.toml").read_text(encoding="utf-8")
+    text = re.sub(r"(?m)^vs_A = .*$", "vs_A = 0", text.split("[answers]")[0])
+    text += '[masses]\nAB = { mass = "5 kg" }\n[gravity]\n'
+    assert main(["sweep", "--summary", "--steps", "8", _scene(tmp_path, text)]) == 0
+    head = capsys.readouterr().out.splitlines()[1]
+    assert "at rest, the motion per 1 m/s to the left (virtual)" in head, head
+    assert "start from rest with 5 m/s^2 to the left" in head, head
+
+
+# ------------------------------------------ an integer past what str() converts
+
+
+@pytest.mark.parametrize("reader", ["compiled", "tomllib"])
+@pytest.mark.parametrize("where", ["scene", "answers"])
+def test_an_integer_of_thousands_of_digits_is_one_line(
+    tmp_path, capsys, monkeypatch, reader, where
+):
+    """``AB = 111...1`` (100,000 digits): str() of it raised ValueError past 4300 digits
+    (exit 3, "internal error")."""
+    from polygon_method.scene import source
+
+    if reader == "tomllib":
+        monkeypatch.setattr(source, "_fast_toml", None)
+    digits = "1" * 100000
+    if where == "scene":
+        argv = ["solve", _scene(tmp_path, FOURBAR.replace("AB = 50", f"AB = {digits}"))]
+    else:
+        answers = _scene(tmp_path, f"[answers]\nv_C = {digits}\n", "a.toml")
+        argv = ["check", str(ROOT / SEED), answers]
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "100000 digits" in err[0], err
+    assert ("line 5" if where == "scene" else "line 2") in err[0], err
+
+
+# ------------------------------------------------ /dev/stdout when it is a pipe
+
+
+@pytest.mark.skipif(not Path("/dev/stdout").exists(), reason="no /dev/stdout on this system")
+def test_a_csv_to_dev_stdout_into_a_pipe_is_written(tmp_path):
+    """``sweep --csv /dev/stdout | head``: the link resolves to /proc/self/fd/1 and on to
+    "pipe:[208160]", a name no file has: "cannot write /dev/stdout: No such file or
+    directory". It is the command's own standard output: written as ``--csv -`` is."""
+    import subprocess
+    import sys
+
+    done = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "polygon_method",
+            "sweep",
+            SEED,
+            "--steps",
+            "4",
+            "--csv",
+            "/dev/stdout",
+        ],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert done.returncode == 0, done.stderr
+    rows = done.stdout.splitlines()  # the CSV alone: the words go to stderr, as with -
+    assert rows[0].startswith("theta [deg],"), rows[:1]
+    # the seed's crank reaches -103.79 to 103.79 deg (BC + CD = BD there): 0, 90, 270
+    assert [float(r.split(",")[0]) for r in rows[1:]] == [0.0, 90.0, 270.0]
+    assert "3 of 4 crank angles" in done.stderr
+
+
+def test_a_class_gives_one_column_to_one_quantity_under_either_name(tmp_path, capsys):
+    """One student writes omega_BC, another omega_CB: the gradebook had two columns, and
+    "most often wrong" counted them apart."""
+    answers = tmp_path / "answers"
+    answers.mkdir()
+    (answers / "ann.toml").write_text('[answers]\nomega_BC = "5.15 rad/s ccw"\n')
+    (answers / "bob.toml").write_text('[answers]\nomega_CB = "7.15 rad/s ccw"\n')  # CD's
+    (answers / "cat.toml").write_text('[answers]\nomega_CB = "2 rad/s ccw"\n')
+    book = tmp_path / "book.csv"
+    assert main(["check", str(ROOT / SEED), str(answers), "--gradebook", str(book)]) == 0
+    out = capsys.readouterr().out
+    assert "omega_BC: 2 of 3 students" in out and "omega_CB:" not in out
+    head, *rows = book.read_text().splitlines()
+    assert head.split(",")[2:4] == ["omega_BC", "right"]
+    assert [r.split(",")[2].split(" ")[0] for r in rows] == ["right", "WRONG", "WRONG"]
+
+
+def test_a_negative_pin_speed_with_a_sense_is_worded_as_a_pin_speed(tmp_path, capsys):
+    """``speed = "-3 m/s cw"``: "'m/s' is a unit of velocity, not of angular velocity",
+    though "3 m/s cw" (the pin's speed) is read."""
+    text = FOURBAR.replace('"10.5 rad/s cw"', '"-3 m/s cw"')
+    assert main(["solve", _scene(tmp_path, text)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "reads two ways" in err[0] and '"3 m/s cw"' in err[0], err
+
+
+def test_two_fixed_pivots_at_one_place_are_warned_of(tmp_path, capsys):
+    """``D = [0, 0]`` beside ``A = [0, 0]``: the four-bar is a rigid triangle ABC turning
+    about A (every link at the crank's omega, as a rigid body must), solved silently."""
+    text = FOURBAR.replace("D = [100, 0]", "D = [0, 0]")
+    assert main(["solve", "--json", _scene(tmp_path, text)]) == 0
+    record = json.loads(capsys.readouterr().out)
+    assert [w for w in record["warnings"] if "fixed pivots A and D are at one place" in w]
+    assert all(record["links"][k]["omega"] == pytest.approx(-10.5) for k in ("AB", "BC", "CD"))
+
+
+def test_the_scene_given_as_its_own_answer_file_is_named_a_scene(capsys):
+    """``check SCENE SCENE``: "units: an answer file holds an [answers] table ... (did you
+    mean 'notes'?)"; ``--gradebook x.txt`` said "--gradebook: --gradebook x.txt: ..."."""
+    scene = str(ROOT / SEED)
+    assert main(["check", scene, scene]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "this is a scene (it has [ground]), not an answer file" in err[0]
+    assert main(["check", scene, scene, "--gradebook", "marks.txt"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].count("--gradebook") == 1, err
+
+
+def test_the_centres_of_a_crank_at_rest_say_the_velocities_are_virtual(tmp_path, capsys):
+    """``centres`` of a scene at rest wrote "omega_2 (O2-A) = 1 rad/s ccw (the input)", as
+    if the crank turned at 1 rad/s: the velocities are the virtual ones, per rad/s."""
+    text = (ROOT / "worked_problems/fourbar_forces.toml").read_text(encoding="utf-8")
+    text = re.sub(r"(?m)^speed = .*$", "speed = 0", text.split("[answers]")[0])
+    assert main(["centres", _scene(tmp_path, text)]) == 0
+    line = next(s for s in capsys.readouterr().out.splitlines() if "omega_2 (O2-A)" in s)
+    assert "at rest" in line and "virtual" in line, line
+
+
+def _trammel_at_rest(tmp_path, start=True):
+    text = (ROOT / "worked_problems/ellipse_trammel.toml").read_text(encoding="utf-8")
+    text = re.sub(r"(?m)^vs_A = .*$", "vs_A = 0", text.split("[answers]")[0])
+    if not start:
+        text = re.sub(r"(?m)^as_A = .*$", "", text)
+    return _scene(tmp_path, text + '[masses]\nAB = { mass = "5 kg" }\n[gravity]\n')
+
+
+@pytest.mark.parametrize("start", [True, False])
+def test_a_block_at_rest_is_said_at_rest_in_the_problem_and_under_the_drawings(tmp_path, start):
+    """The problem's words (the page's "Given") said the block was "moving at 1 m/s to the
+    left, steadily", and the drawings' caption "1 m/s to the left": at rest, that is the
+    virtual speed the polygons are drawn for."""
+    from polygon_method import solve
+    from polygon_method.draw.diagrams import _drive
+    from polygon_method.scene import load_scene
+    from polygon_method.text.words import given
+
+    scene = load_scene(_trammel_at_rest(tmp_path, start))
+    words = next(g for g in given(scene) if "drives the mechanism" in g)
+    assert "at rest, about to move to the" in words and "moving at" not in words, words
+    assert ("acceleration of 5 m/s² to the left" in words) is start, words
+    assert "at rest: the polygons per this speed (virtual)" in _drive(solve(scene))
+
+
+def test_the_step_table_of_a_block_at_rest_gives_no_speed_as_given(tmp_path, capsys):
+    """steps: "vs_A = 1 m/s to the left along the guide (given)" for a block at rest."""
+    assert main(["steps", _trammel_at_rest(tmp_path)]) == 0
+    out = capsys.readouterr().out
+    section = out.split("2. Input block A", 1)[1].split("3. ", 1)[0]
+    assert "(given)" not in section and "at rest (vs_A = 0, about to move to the left)" in section
+    assert "the start's 5 m/s^2 to the left" in section, section
+
+
+def test_the_step_table_of_a_wheel_at_rest_gives_no_speed_as_given(tmp_path, capsys):
+    """steps: "omega_CA = 1 rad/s ccw (given)" and "alpha_CA = 0 (the wheel rolls at a
+    steady speed)" for a wheel at rest, starting at 2 rad/s^2 ccw."""
+    text = (ROOT / "worked_problems/rolling_wheel_driver.toml").read_text(encoding="utf-8")
+    text = re.sub(r"(?m)^omega_CA = .*$", 'omega_CA = "0 rad/s"', text.split("[answers]")[0])
+    text += '[masses]\nCA = { mass = "5 kg" }\n[gravity]\n'
+    assert main(["steps", _scene(tmp_path, text)]) == 0
+    section = capsys.readouterr().out.split("2. Input wheel CA", 1)[1].split("3. ", 1)[0]
+    assert "(given)" not in section and "at rest (omega_CA = 0" in section, section
+    assert "alpha_CA = 0 in the polygons (the start's 2 rad/s^2 ccw: in the forces)" in section

@@ -43,6 +43,7 @@ decides where it allows more.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 from ..common.errors import SceneError
 from ..motion.solution import Solution, tidied
@@ -139,6 +140,57 @@ def check_answers(sol: Solution, answers=None, tolerance: float | None = None, _
             out.append(engine_verdict(sol, ans, tolerance))
         else:
             out.append(_verdict(sol, ans, tolerance, tols, diag, clean))
+    return _graded_once(sol, answers, out)
+
+
+#: the answer kinds whose two names, in either order, are one quantity: a link's omega
+#: and alpha (omega_BC is omega_CB), a relative velocity's or acceleration's size (v_BC,
+#: v_CB), a wheel's contact point, a contact force
+_EITHER_ORDER = ("omega", "alpha", "v", "a", "vI", "aI", "Fc", "centre")
+
+
+def _quantity(ans):
+    """What an answer names, the same for its names in either order."""
+    if ans.kind in _EITHER_ORDER:
+        return ans.kind, frozenset(ans.names)
+    return ans.kind, tuple(ans.names)
+
+
+def _column(sol: Solution, ans) -> str | None:
+    """The one name of an answer's quantity where it has two (``omega_CB``: ``omega_BC``, as
+    the scene names the link; ``v_CB``: its points in the scene's order), else None."""
+    if ans.kind not in _EITHER_ORDER or ans.kind == "centre" or len(ans.names) != 2:
+        return None
+    sc = sol.scene
+    if ans.kind in ("v", "a"):
+        order = {p: i for i, p in enumerate(sc.point_names)}
+        a, b = sorted(ans.names, key=lambda p: order.get(p, len(order)))
+        name = f"{ans.kind}_{a}{b}" if len(a) == len(b) == 1 else f"{ans.kind}_{a}-{b}"
+    elif sc.has_link("-".join(ans.names)):
+        name = f"{ans.kind}_{sc.link('-'.join(ans.names)).key}"
+    else:
+        return None
+    return None if name == ans.key else name
+
+
+def _graded_once(sol: Solution, answers, verdicts) -> tuple:
+    """The verdicts with the same quantity given under several names (``omega_BC`` and
+    ``omega_CB``) graded once, in the first name's row, the others named in it: right
+    only where every value given for it is."""
+    first: dict = {}
+    out: list = []
+    for ans, v in zip(answers, verdicts):
+        q = _quantity(ans)
+        if q not in first:
+            first[q] = len(out)
+            out.append(replace(v, column=_column(sol, ans)))
+            continue
+        k = first[q]
+        also = (*out[k].also, (v.key, v.raw, v.line, v.ok, v.given))
+        out[k] = replace(out[k], also=also, ok=out[k].ok and v.ok)
+        if out[k].mistake is None and not v.ok:  # the wrong one's mistake, the first right
+            why = v.diagnosis or "none of the known ones explains it"
+            out[k] = replace(out[k], mistake=v.mistake, diagnosis=f"{v.key}: {why}")
     return tuple(out)
 
 

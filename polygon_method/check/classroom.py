@@ -111,8 +111,8 @@ def _keys(rows):
     keys = []
     for r in rows:
         for v in r.verdicts:
-            if v.key not in keys:
-                keys.append(v.key)
+            if v.quantity not in keys:
+                keys.append(v.quantity)
     return keys
 
 
@@ -197,8 +197,8 @@ def summary_text(rows, book=None) -> str:
     tol = tolerance_text(rows, book)
     if tol:
         out.append(tol)
-    wrong_by_key = Counter(v.key for r in read for v in r.verdicts if not v.ok)
-    asked = Counter(v.key for r in read for v in r.verdicts)
+    wrong_by_key = Counter(v.quantity for r in read for v in r.verdicts if not v.ok)
+    asked = Counter(v.quantity for r in read for v in r.verdicts)
     if wrong_by_key:
         out.append("most often wrong:")
         for key, n in sorted(wrong_by_key.items(), key=lambda kv: (-kv[1], kv[0])):
@@ -227,7 +227,7 @@ def _table(rows):
     )
     body = []
     for r in rows:
-        by_key = {v.key: v for v in r.verdicts}
+        by_key = {v.quantity: v for v in r.verdicts}
         cells = [r.student, r.file] + ([r.variant or ""] if variants else [])
         for k in keys:
             v = by_key.get(k)

@@ -64,6 +64,14 @@ class Verdict:
     line: int | None = None
     correct_text: str | None = None  # how the correct value is shown, where not a number
     extra: dict | None = None  # more for the JSON (a centre's positions)
+    also: tuple = ()  # the same quantity given again under another name: (key, raw, line, ok, given)
+    column: str | None = None  # the quantity's one name in a class's table (omega_BC for omega_CB)
+
+    @property
+    def quantity(self) -> str:
+        """The name a class's table and summary give this answer: one for every spelling of
+        one quantity (``omega_CB`` is ``omega_BC``, as the scene names the link)."""
+        return self.column or self.key
 
     @classmethod
     def judged(
@@ -119,8 +127,29 @@ class Verdict:
             "diagnosis": self.diagnosis,
             "line": self.line,
             **({"warning": self.warning} if self.warning else {}),
+            **({"also": [_also_dict(a) for a in self.also]} if self.also else {}),
             **(self.extra or {}),
         }
+
+
+def _also_dict(also) -> dict:
+    """One answer graded with another of the same quantity, for the JSON."""
+    key, raw, line, ok, _ = also
+    return {"key": key, "given_text": raw, "line": line, "verdict": "right" if ok else "wrong"}
+
+
+def also_words(v: Verdict) -> str | None:
+    """The line under a row where the same quantity was given under several names
+    (``omega_BC`` and ``omega_CB``: one link's angular velocity): graded once."""
+    if not v.also:
+        return None
+    names = ", ".join(
+        f"{key} = {raw}" + (f" (line {line})" if line else "") for key, raw, line, _, _ in v.also
+    )
+    same = all(given == v.given for *_, given in v.also)
+    return f"also given as {names}: the same quantity, graded once" + (
+        "" if same else " (right only if every value given for it is right)"
+    )
 
 
 #: the SI unit of an answer -> the kind of quantity (units.UNITS) it is given in
@@ -209,6 +238,10 @@ def verdicts_text(verdicts, title: str = "") -> str:
             lines.append("  ".join("-" * w for w in widths))
             continue
         v = verdicts[i - 1]
+        if v.also:
+            lines.append(
+                textwrap.fill(also_words(v), 92, initial_indent="    ", subsequent_indent="      ")
+            )
         if not v.ok:
             lines.append(
                 textwrap.fill(

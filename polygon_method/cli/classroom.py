@@ -318,7 +318,7 @@ def class_gradebook(args, files, vbook) -> tuple:
     an answer file, a variant)."""
     book = getattr(args, "gradebook", None)
     if book and not book.lower().endswith((".csv", ".md")):
-        raise SceneError(f"--gradebook {book}: the file must end in .csv or .md", key="--gradebook")
+        raise SceneError(f"{book}: the file must end in .csv or .md", key="--gradebook")
     inputs = [args.scene, *files, *(vbook.files if vbook else ())]
     return book, (check_outputs([(book, "--gradebook")], protect=inputs) if book else [])
 

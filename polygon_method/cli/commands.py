@@ -11,7 +11,7 @@ from pathlib import Path
 from ..common.errors import PolygonMethodError, SceneError
 from ..common.tolerances import SAME
 from .energy import check_cylinders, draw_engine_cycle, engine_cycle
-from .files import check_outputs, write_outputs
+from .files import check_outputs, is_stdout, write_outputs
 
 
 def _cmd_solve(args) -> int:
@@ -434,7 +434,7 @@ def _cmd_sweep(args) -> int:
         raise SceneError(
             "--error-bound adds a column to the CSV: give --csv FILE as well", key="--error-bound"
         )
-    to_stdout = args.csv == "-"  # the CSV on standard output (the words then on stderr)
+    to_stdout = bool(args.csv) and is_stdout(args.csv)  # (-, /dev/stdout: the words on stderr)
     wanted = [
         (path, option)
         for path, option in ((None if to_stdout else args.csv, "--csv"), (plot, "--plot"))

@@ -19,7 +19,7 @@ import sys
 from pathlib import Path
 
 from ..common.errors import PolygonMethodError, SceneError
-from .files import check_outputs, write_outputs
+from .files import check_outputs, is_stdout, write_outputs
 
 __all__ = ["route"]
 
@@ -237,7 +237,7 @@ def _sweep(args, scene) -> int:
         from ..text.energy import cycle_text
 
         # (a CSV on standard output keeps it to itself: the words go to stderr)
-        words = sys.stderr if getattr(args, "csv", None) == "-" else sys.stdout
+        words = sys.stderr if getattr(args, "csv", None) and is_stdout(args.csv) else sys.stdout
         print(cycle_text(scene, _solved(scene)), file=words)
     return 0
 
@@ -247,11 +247,10 @@ def _csv(scene, out, n) -> None:
 
     if scene.diagram is None or scene.diagram.form == "areas":
         raise PolygonMethodError(
-            "--csv: the diagram is given as areas (or a press): no curve to tabulate over "
-            "the crank angle",
+            "the diagram is given as areas (or a press): no curve to tabulate over the crank angle",
             key="--csv",
         )
-    to_stdout = str(out) == "-"  # the CSV on standard output
+    to_stdout = is_stdout(out)  # the CSV on standard output (-, /dev/stdout)
     targets = None if to_stdout else check_outputs([(out, "--csv")], protect=[scene.file])
     c = _solved(scene)
     th, tq, rs, es = curves(scene, c, n)

@@ -7,12 +7,27 @@ from __future__ import annotations
 import errno
 import os
 import stat
+import sys
 import tempfile
 from pathlib import Path
 
 from ..common.errors import PolygonMethodError, printable
 
-__all__ = ["check_outputs", "write_outputs", "write_output"]
+__all__ = ["check_outputs", "write_outputs", "write_output", "is_stdout"]
+
+
+def is_stdout(path) -> bool:
+    """Whether ``path`` is ``-`` or names this process's standard output (``/dev/stdout``,
+    ``/proc/self/fd/1``: into a pipe or a file the shell opened), to be written as ``-`` is:
+    straight, with the command's words on stderr (never a file renamed over the one the shell
+    holds open)."""
+    if str(path) == "-":
+        return True
+    try:
+        mine, there = os.fstat(sys.stdout.fileno()), os.stat(path)
+    except (OSError, ValueError, AttributeError):  # (no stdout, a captured one, a bad name)
+        return False
+    return (mine.st_dev, mine.st_ino) == (there.st_dev, there.st_ino)
 
 
 class _Target:
@@ -24,7 +39,20 @@ class _Target:
         self.shown, self.option = str(path), option
         if not str(path).strip():
             raise PolygonMethodError("an empty file name", key=option)
+        try:
+            os.stat(path)
+        except OSError as exc:  # a link to itself, or in a ring of links: never replaced
+            if exc.errno == errno.ELOOP:
+                raise PolygonMethodError(
+                    f"cannot write {path}: a symbolic link that leads round to itself "
+                    "(a loop): it names no file; give another output",
+                    key=option,
+                ) from None
+        except ValueError:  # (a NUL in the name: refused below, as before)
+            pass
         real = Path(os.path.realpath(path))
+        if not real.exists() and os.path.exists(path):  # a pipe or a socket behind a link
+            real = Path(path)  # (/dev/stdout -> /proc/self/fd/1 -> "pipe:[123]"): opened as named
         if real.is_dir():
             raise PolygonMethodError(f"cannot write {path}: it is a directory", key=option)
         for k, other in enumerate(protect):

@@ -21,6 +21,7 @@ import re
 from dataclasses import dataclass
 
 from .errors import SceneError
+from .typography import decimal_comma, long_integer_text, typographic
 
 __all__ = [
     "Quantity",
@@ -229,6 +230,18 @@ def _whole_way(raw, kind, where, default_unit, need_sense, allow_sense, refuse_a
         raise SceneError(
             f'expected a number or a string such as "50 mm", got {_kind_of(raw)}', key=where
         )
+    if isinstance(raw, str) and (not raw.isascii() or "10^" in raw or "10**" in raw):
+        # "−10.5 rad/s", "1.2×10^3 mm", "2½ in", "1.2*10^3 mm"
+        raw = typographic(raw, where, _UNIT_MARKS)
+    if isinstance(raw, str) and "," in raw:  # "10,5 rad/s": a decimal comma
+        read = decimal_comma(raw)
+        if read is None:
+            raise SceneError(
+                f"'{_clip(raw)}': the comma reads two ways (a decimal comma, or "
+                'thousands?): write the number with a decimal point, e.g. "1.25" or "1250"',
+                key=where,
+            )
+        raw = read
     if kind == "length" and isinstance(raw, str) and _FEET_INCHES.match(raw):
         return _feet_and_inches(raw, where)
     if isinstance(raw, str):
@@ -243,6 +256,10 @@ def _whole_way(raw, kind, where, default_unit, need_sense, allow_sense, refuse_a
     if sense == "cw":
         si = -si
     return Quantity(si, sense)
+
+
+#: the characters outside ASCII that units are spelt with (the degree sign, a superscript two)
+_UNIT_MARKS = "".join(sorted({c for t in UNITS.values() for u in t for c in u if not c.isascii()}))
 
 
 def _feet_and_inches(raw: str, where: str) -> Quantity:
@@ -298,7 +315,7 @@ def _read_number(raw, kind: str, where: str, default_unit: str | None, need_sens
         value = float(raw)
     except OverflowError:  # an integer of hundreds of digits
         raise SceneError(
-            f"the integer {str(raw)[:8]}... ({len(str(abs(raw)))} digits) is "
+            f"the integer {long_integer_text(raw)} is "
             "absurd for a mechanism; check the value and its unit",
             key=where,
         ) from None

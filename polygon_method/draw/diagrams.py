@@ -90,11 +90,14 @@ def _auxiliary(sk, sol, scale, P):
 def _drive(sol) -> str:
     inp = sol.scene.input
     own = sol.plan.steps[0].drive_caption(sol.scene)  # a block driver's; a crank's below
+    rest = getattr(sol.scene, "at_rest", False)  # the polygons per unit speed: virtual
     if own is not None:
-        return own
+        return own + ("; at rest: the polygons per this speed (virtual)" if rest else "")
     said = f" ({inp.angle_words})" if inp.angle_words else ""
     drive = f"crank {inp.crank} at {deg(inp.angle)}{said}, " + (
-        inp.speed_text
+        f"at rest: the polygons per {fmt_angular(inp.omega, 'rad/s')} (virtual)"
+        if rest
+        else inp.speed_text
         if inp.given is None
         else f"{fmt_angular(inp.omega, 'rad/s')} (from {stated(inp)})"
     )

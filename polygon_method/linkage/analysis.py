@@ -11,7 +11,7 @@ import numpy as np
 
 from ..solver.derived import transmission_angle
 from ..common.errors import TOL, SceneError, SingularStepError
-from ..common.tolerances import DISTINCT, ROUNDING
+from ..common.tolerances import DISTINCT, ROUNDING, SAME
 from ..solver.compiler import compile_plan
 from ..scene import Scene
 from ..motion.solution import solve
@@ -166,7 +166,21 @@ def _dir_deg(x, y) -> float:
     return math.degrees(math.atan2(y, x))
 
 
-_MAX_STATIONARY = 12  # more than this: the output dwells (a degenerate linkage)
+_MAX_STATIONARY = 12  # more samples still than this: the output dwells (a degenerate linkage)
+
+
+def _dwell(cyc, out) -> int:
+    """How many of the cycle's samples the output stands still at, its rate nought to
+    rounding against its largest, where they are more than :data:`_MAX_STATIONARY` (it
+    dwells over whole ranges of the crank: a degenerate linkage); else 0. An output that
+    merely reverses many times (a slider driven through a gear train, 26 times over the
+    train's period) does not dwell: its reversals are its toggles."""
+    rate = np.abs(np.asarray(out.rate(cyc.fr), dtype=float))[~cyc.bad]
+    rate = rate[np.isfinite(rate)]
+    if not len(rate):
+        return 0
+    still = int(np.count_nonzero(rate <= SAME * float(rate.max())))
+    return still if still > _MAX_STATIONARY else 0
 
 
 def _four_bar_character(scene: Scene, cyc, fb) -> tuple:
@@ -332,11 +346,12 @@ def analyse(scene: Scene) -> Linkage:
         stationary, out_lines, omin, omax, ratio, tlines = output_motion(
             cyc, out, scene, fb, sk, slot
         )
-        if len(stationary) > _MAX_STATIONARY:  # a degenerate linkage: the output dwells
+        dwell = _dwell(cyc, out)
+        if dwell:  # a degenerate linkage: the output dwells
             notes.append(
-                f"{out.label} stands still at {len(stationary)} of the sampled "
-                "crank angles: it dwells over whole ranges of the crank (a degenerate "
-                "linkage), so no single toggle positions are listed"
+                f"{out.label} stands still at {dwell} of the sampled crank angles (its "
+                "rate nought to rounding): it dwells over whole ranges of the crank (a "
+                "degenerate linkage), so no single toggle positions are listed"
             )
             stationary, ratio, tlines = (), None, ()
     still = standing_steps(scene, plan)

@@ -3,7 +3,11 @@ something stands still or turns over."""
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
+
+from ..common.errors import SceneError
 
 from ..common.tolerances import EXTREME_RESOLVED, SAME, ZERO_RESOLVED
 from ..solver.tracking import Sweeper, degrees_fn, merge, run_arrays, valid_mask
@@ -20,6 +24,39 @@ def stands_still(span, scene) -> bool:
     return span <= STANDSTILL * max(lk.length for lk in scene.links)
 
 
+#: the most a wheel or a second crank may turn between two of the cycle's samples (rad):
+#: past it the samples cannot follow its turning (a sun turning millions of times per turn
+#: of its arm), and what they show of the cycle is aliased
+MOST_PER_SAMPLE = math.radians(10.0)
+
+
+def _followable(scene, plan, h) -> None:
+    """Refuse, in one line, a cycle whose samples (``h`` rad of the crank apart) cannot
+    follow a wheel or a second crank turning at a fixed ratio of the crank: its turning
+    between two samples past :data:`MOST_PER_SAMPLE`."""
+    rates = [
+        (abs(r), st) for st in plan.steps if (r := getattr(st, "theta_rate", None)) is not None
+    ]
+    if not rates:
+        return
+    rate, st = max(rates, key=lambda t: t[0])
+    if not rate * h > MOST_PER_SAMPLE:
+        return
+    second = scene.input.second is not None
+    raise SceneError(
+        f"{st.title} turns {rate:.3g} times as fast as the crank {scene.input.crank}: "
+        f"the crank's cycle, sampled every {math.degrees(h):.3g} deg, cannot follow it "
+        f"(it turns {math.degrees(rate * h):.3g} deg between two samples); "
+        + (
+            "give the two inputs speeds of comparable size"
+            if second
+            else "drive the train from its fast end"
+        ),
+        file=scene.file,
+        key="[input.second] speed" if second else "[rolling]",
+    )
+
+
 # --------------------------------------------------------------------------- over the cycle
 
 
@@ -31,6 +68,7 @@ class _Cycle:
         self.dom = dom = sw.domain
         self.plan = sw.plan
         span = dom.period if dom.full_turn else dom.hi - dom.lo
+        _followable(scene, sw.plan, span / n)
         self.grid = dom.lo + span * (np.arange(n) + 0.5) / n
         self.h = span / n
         self.fr = sw.evaluate(self.grid)

@@ -71,6 +71,14 @@ def structural_warnings(sol) -> tuple:
                 "meant to be on a moving link?)"
             )
     near = _ground_near(sc.ground, sol.P, SAME * size)
+    ground = list(sc.ground)
+    for k, G in enumerate(ground):  # two fixed pivots at one place: one pivot named twice?
+        for H, h in near(G):
+            if ground.index(H) > k:
+                out.append(
+                    f"the fixed pivots {G} and {H} are at one place, ({h[0] / u:g}, "
+                    f"{h[1] / u:g}) {unit} (was one meant to be elsewhere?)"
+                )
     for X in sc.point_names:
         if X in sc.ground:
             continue
@@ -92,6 +100,7 @@ def structural_warnings(sol) -> tuple:
                     f"{g[1] / u:g}) {unit}): check the figure"
                 )
             break
+    out += _pin_warnings(sc)
     if unit == "m" and sc.links:
         lengths = [lk.length for lk in sc.links]
         crank = sc.link(sc.input.crank) if sc.input.crank is not None else None
@@ -103,3 +112,31 @@ def structural_warnings(sol) -> tuple:
                 'if the lengths are millimetres, write units = "mm"'
             )
     return tuple(out)
+
+
+def _pin_warnings(sc) -> list:
+    """A pin whose radius is more than a link it joins (a pin of 500 mm in a crank of
+    100 mm: an eccentric's sheave may be so, a slip of the unit more often), and the
+    friction circle, where friction acts at the pins, past that link's length."""
+    out = []
+    u, unit = sc.length_unit, sc.units
+    mu = sc.friction.pins if sc.friction is not None else 0.0
+    for pin in sc.pins:
+        links = [lk for lk in sc.links if pin.point in (lk.p, lk.q)]
+        if not links:
+            continue
+        short = min(links, key=lambda lk: lk.length)
+        if pin.radius <= short.length:
+            continue
+        line = (
+            f"pin {pin.point}'s radius ({pin.radius / u:g} {unit}) is more than the link "
+            f"{short.key} ({short.length / u:g} {unit}) it joins (an eccentric's sheave "
+            "may be; else check its size and unit)"
+        )
+        if mu * pin.radius > short.length:
+            line += (
+                f"; its friction circle (mu r = {mu * pin.radius / u:g} {unit}) is larger "
+                "than that link: the friction couple at it is taken as stated"
+            )
+        out.append(line)
+    return out

@@ -19,7 +19,7 @@ import math
 from html import escape
 from importlib.resources import files
 
-from ..check.verdicts import correct_text, percent_text
+from ..check.verdicts import also_words, correct_text, percent_text
 from ..draw.style import (
     BODY_EDGE,
     BODY_FACE,
@@ -77,6 +77,8 @@ def check_html(verdicts, title: str) -> str:
         tol = "-" if not math.isfinite(v.tolerance) else f"{100 * v.tolerance:.2g}\u00a0%"
         verdict = '<span class="right">right</span>' if v.ok else '<span class="wrong">WRONG</span>'
         why = "" if v.ok else escape(v.diagnosis or "none of the known mistakes explains it")
+        if v.also:  # the same quantity under two names: graded once
+            why = (why + " " if why else "") + escape(also_words(v))
         rows.append(
             "<tr>"
             + "".join(f"<td>{escape(c)}</td>" for c in (v.key, v.raw, correct_text(v), err, tol))

@@ -6,10 +6,9 @@ an unknown key gets a "did you mean" hint. A decimal comma is read as a point.""
 from __future__ import annotations
 
 import math
-import re
 
 from ..common.errors import printable
-from ..common.units import UNITS
+from ..common.units import UNITS, decimal_comma
 from .records import ANSWER_KINDS, UNDER_BLOCK_KINDS, Answer, split_name
 from .tables import _suggest, _which_point
 
@@ -84,28 +83,6 @@ def _bare(value) -> bool:
     except ValueError:
         return False
     return True
-
-
-_COMMA_NUMBER = re.compile(r"^(\s*[-+]?)(\d*),(\d+)(?![\d.,])(.*)$", re.S)
-
-
-def decimal_comma(value):
-    """``value`` with its decimal comma read as a point (``"0,39 m/s"`` -> ``"0.39 m/s"``),
-    or ``value`` as it is; None where the comma reads two ways (``"1,250 m/s"``: 1.25 or
-    1250?).
-
-    >>> decimal_comma("0,39 m/s"), decimal_comma("12,5 rad/s cw"), decimal_comma("1,250")
-    ('0.39 m/s', '12.5 rad/s cw', None)
-    """
-    if not isinstance(value, str):
-        return value
-    m = _COMMA_NUMBER.match(value)
-    if not m:
-        return value
-    sign, whole, frac, rest = m.groups()
-    if whole.lstrip("0") and len(frac) == 3:  # a thousands separator, or a decimal comma?
-        return None
-    return f"{sign}{whole or '0'}.{frac}{rest}"
 
 
 #: the drivers' efforts other than the crank's torque: a driving block's, collar's or

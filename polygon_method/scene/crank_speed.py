@@ -28,8 +28,9 @@ def crank_speed(reader, raw, link, table: str = "input") -> Quantity:
     except SceneError as exc:
         try:
             parse_quantity(raw, "velocity", allow_sense=True)  # the crank pin's speed
-        except SceneError:
-            raise exc from None
+        except SceneError:  # in a unit of neither: the angular velocity's words;
+            if not _speed_unit(raw):  # a pin's speed ("-3 m/s cw"): its own
+                raise exc from None
     v = reader.qty(raw, "velocity", table, "speed", need_sense=True)
     return Quantity(v.value / link.length, v.sense)
 
@@ -66,3 +67,16 @@ def link_angle(reader, raw, key, names, ground) -> float:
     )
     reader.read_notes.append(f"{key}: {book.note}")
     return book.value
+
+
+def _speed_unit(raw) -> bool:
+    """Whether ``raw`` is written in a unit of linear speed (``"-3 m/s cw"``, ``"3 ft/s"``):
+    then its faults are a pin speed's, not an angular velocity's.
+
+    >>> _speed_unit("-3 m/s cw"), _speed_unit("3 rad/s"), _speed_unit(3)
+    (True, False, False)
+    """
+    from ..common.units import UNITS
+
+    words = str(raw).split() if isinstance(raw, str) else []
+    return any(w in UNITS["velocity"] for w in words[1:])

@@ -13,6 +13,7 @@ from dataclasses import replace
 from pathlib import Path
 
 from ..common.errors import PolygonMethodError, SceneError, printable
+from ..common.typography import long_integer_text
 from ..common.units import LENGTH_UNITS, UNITS, parse_quantity
 from .rolling import read_rolling
 from .source import (
@@ -309,8 +310,7 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected
         if hit is None:
             return
         path, value = hit
-        digits = str(abs(value))
-        shown = f"{'-' if value < 0 else ''}{digits[:6]}...({len(digits)} digits)"
+        shown = long_integer_text(value)
         message = (
             f"the integer {shown} is beyond TOML's 64-bit integers, and absurd for a "
             "mechanism; check the value and its unit"
@@ -582,6 +582,14 @@ def parse_answers(
             file=file,
             key=deepest_key(text),
         ) from None
+    scene_tables = [k for k in ("ground", "links", "input") if isinstance(raw.get(k), dict)]
+    if scene_tables:  # the scene itself, or another, given as the answers
+        raise SceneError(
+            f"this is a scene (it has [{scene_tables[0]}]), not an answer file: an answer "
+            "file holds an [answers] table (and optionally title, student)",
+            file=file,
+            key=f"[{scene_tables[0]}]",
+        )
     for key in raw:
         if key not in _ANSWER_FILE_KEYS:
             raise SceneError(

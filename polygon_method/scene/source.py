@@ -76,7 +76,34 @@ def toml_table(text: str) -> dict:
             return _fast_toml(text)
         except Exception:  # noqa: BLE001 - any refusal: tomllib reads it, or words why not
             pass
-    return tomllib.loads(text)
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError:
+        raise
+    except ValueError:  # int() refuses an integer of thousands of digits: where is it?
+        raise tomllib.TOMLDecodeError(_too_many_digits(text)) from None
+
+
+_LONG_DIGITS = re.compile(r"\d[\d_]{4000,}")
+
+
+def _too_many_digits(text: str) -> str:
+    """A decode error's words for an integer too long for ``int`` to read (thousands of
+    digits), at its line and column as tomllib gives them.
+
+    >>> _too_many_digits("a = 1\\nb = " + "1" * 5000)
+    'An integer of 5000 digits: absurd for a mechanism; check the value and its unit (at line 2, column 5)'
+    """
+    m = _LONG_DIGITS.search(text)
+    if m is None:
+        return "Invalid value"
+    line = text.count("\n", 0, m.start()) + 1
+    column = m.start() - text.rfind("\n", 0, m.start())
+    digits = sum(c.isdigit() for c in m.group(0))
+    return (
+        f"An integer of {digits} digits: absurd for a mechanism; check the value and its "
+        f"unit (at line {line}, column {column})"
+    )
 
 
 def toml_lines(text: str) -> list:
@@ -195,6 +222,8 @@ def syntax_error(msg, text, file) -> SceneError:
                 key=label,
                 line=again,
             )
+    if core.startswith("An integer of"):  # (no syntax error: a value past reading)
+        return SceneError(core[:1].lower() + core[1:], file=file, key=where)
     for pattern, words in _TOML_WORDS:
         hit = re.match(pattern, core)
         if hit:

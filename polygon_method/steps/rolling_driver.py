@@ -143,8 +143,14 @@ class WheelDriver(BlockDriver):
                 f"omega_{W} = v_{C} / r = {fmt(abs(w))} rad/s {turn_sense(w)}"
             )
             if f"vs_{C}" in on_centre
-            else f"omega_{W} = {fmt(abs(w))} rad/s {turn_sense(w)} (given); the wheel rolls "
-            f"without slip on {self.ground_words}, radius r = {fmt(r)} m",
+            else (
+                f"at rest (omega_{W} = 0, about to roll {turn_sense(w)}): the polygons are "
+                f"drawn for omega_{W} = {fmt(abs(w))} rad/s {turn_sense(w)}, the virtual "
+                "velocities"
+                if getattr(scene, "at_rest", False)
+                else f"omega_{W} = {fmt(abs(w))} rad/s {turn_sense(w)} (given)"
+            )
+            + f"; the wheel rolls without slip on {self.ground_words}, radius r = {fmt(r)} m",
             (
                 f"a_{C} = {fmt(abs(inp.alpha))} m/s^2 {self.sense(inp.alpha)} (given), so "
                 f"alpha_{W} = a_{C} / r = {fmt(abs(al))} rad/s^2 {turn_sense(al)}"
@@ -152,6 +158,8 @@ class WheelDriver(BlockDriver):
             if f"as_{C}" in on_centre and al
             else f"alpha_{W} = {fmt(abs(al))} rad/s^2 {turn_sense(al)} (given)"
             if al
+            else _rest_alpha(W, self.omega_alpha(inp.omega, scene.start_alpha)[1], fmt)
+            if getattr(scene, "at_rest", False)
             else f"alpha_{W} = 0 (the wheel rolls at a steady speed)",
             f"the wheel rolls: its centre moves at omega r = {fmt(abs(w))} x {fmt(r)} = "
             f"{fmt(abs(inp.omega))} m/s along the ground, {self.sense(inp.omega)}; its "
@@ -243,3 +251,13 @@ class WheelDriver(BlockDriver):
             )
             found = ()
         return Construction(self.index, self.title, ph, lab, sol.A[C], (), (), found, text, cond)
+
+
+def _rest_alpha(W, start, fmt) -> str:
+    """The step table's alpha line of a wheel at rest: none in the polygons (drawn per rad/s,
+    steadily), the start's, where it starts so, in the forces."""
+    return f"alpha_{W} = 0 in the polygons" + (
+        f" (the start's {fmt(abs(start))} rad/s^2 {turn_sense(start)}: in the forces)"
+        if start
+        else ""
+    )

@@ -114,16 +114,21 @@ def _omega_line(ic: Centres, k: int) -> str:
     w = ic.omegas[k]
     name = ic.bodies[k - 1]
     c1j = ic.centre(1, k)
+    rest = (  # at rest: the motion per unit speed, the virtual velocities
+        "; at rest: per unit of the input's speed, the virtual velocities"
+        if getattr(sol.scene, "at_rest", False)
+        else ""
+    )
     if k == 2 and c1j.point is None:  # a block driven along its guide
         v = sol.V[sol.plan.steps[0].finds[0]]
         return (
             f"  omega_{k} ({name}) = 0: {name} translates at "
-            f"{math.hypot(*v):.4g} m/s along its guide (the input)"
+            f"{math.hypot(*v):.4g} m/s along its guide (the input{rest})"
         )
     if k == 2:
         return (
             f"  omega_{k} ({name}) = {fmt_angular(w, 'rad/s')} "
-            f"({getattr(sol.plan.steps[0], 'body_omega_source', 'the input')})"
+            f"({getattr(sol.plan.steps[0], 'body_omega_source', 'the input')}{rest})"
         )
     i = ic.ratio_from.get(k, 2)
     if i == 2 and ic.centre(1, 2).point is None:  # from the driving block's velocity
