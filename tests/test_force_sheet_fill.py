@@ -51,18 +51,54 @@ def test_each_page_is_filled_before_the_next_and_holds_its_panels(name):
 
 def test_the_four_bars_first_page_holds_both_links_and_their_polygon():
     """The worked four-bar (fourbar_forces.toml): the dyad's free bodies and its polygon on
-    the first page (they went on two pages, the first mostly blank), the crank's on the
-    second; the static four-bar likewise."""
+    the first page (they went on two pages, the first mostly blank), then the crank's (on
+    the same page since the panels' words wrap to their drawings: the crank's free body
+    with them, its polygon on the second); the static four-bar's whole sheet on one page
+    (it took two)."""
+    pages_of = {}
     for name in FOUR_BARS:
         sol = solve(load_scene(ROOT / "worked_problems" / name))
         panels, sizes, pages = sheet_pages(sol, "forces")
-        assert pages[0].panels == ("free-body-3", "free-body-4", "force-polygon-2"), name
-        assert len(pages) == 2
+        assert pages[0].panels[:3] == ("free-body-3", "free-body-4", "force-polygon-2"), name
+        pages_of[name] = [p.panels for p in pages]
+    assert len(pages_of["fourbar_forces.toml"]) == 2
+    assert pages_of["static_fourbar_pin_forces.toml"] == [
+        ("free-body-3", "free-body-4", "force-polygon-2", "free-body-2")
+    ]
 
 
-def test_the_written_pages_are_on_their_paper_inside_the_margins():
-    sol = solve(load_scene(ROOT / "worked_problems" / "static_fourbar_pin_forces.toml"))
+@pytest.mark.parametrize(
+    "name, count", [("static_fourbar_pin_forces.toml", 1), ("class3_six_bar_forces.toml", 2)]
+)
+def test_the_written_pages_are_on_their_paper_inside_the_margins(name, count):
+    sol = solve(load_scene(ROOT / "worked_problems" / name))
     datas, used, warnings, pages = render_pages(sol, "svg", "forces", paper="A4")
-    assert len(datas) == len(pages) == 2
+    assert len(datas) == len(pages) == count
     for data, page in zip(datas, pages):
         _check_page(Svg(data), page, "A4")
+
+
+def test_a_triads_sheet_shares_its_pages_and_its_words_stay_apart(tmp_path):
+    """The triad whose plate is three links (tests/test_triad_three_links.py's scene): its
+    panels' lines of words wrap to their drawings (at least 7 cm), so narrow polygons
+    share a page: on A4 at most 4 pages (it took 7, each polygon about 17 cm wide for its
+    words), each on its paper inside the margins, no line of words wider than 13 cm and no
+    two lines of words of a page overlapping."""
+    from test_triad_three_links import scene_text
+
+    path = tmp_path / "tri.toml"
+    path.write_text(scene_text(30.0), encoding="utf-8")
+    sol = solve(load_scene(path))
+    datas, used, warnings, pages = render_pages(sol, "svg", "forces", paper="A4")
+    assert len(datas) == len(pages) <= 4
+    assert sum(len(p.placed) for p in pages) == 14  # links 2 to 8, and 7 polygons
+    for data, page in zip(datas, pages):
+        svg = Svg(data)
+        _check_page(svg, page, "A4")
+        boxes = [svg.text_box(g) for g in svg.groups if g.startswith("note-") and "-line-" in g]
+        boxes = [b for b in boxes if b is not None]
+        assert len(boxes) > 5
+        for i, a in enumerate(boxes):
+            assert (a.bounds[2] - a.bounds[0]) / (72 / 2.54) <= 13.0, a.bounds
+            for b in boxes[i + 1 :]:
+                assert a.intersection(b).area <= 1e-6 * min(a.area, b.area), (a.bounds, b.bounds)

@@ -13,12 +13,13 @@ nothing here works a force out.
 from __future__ import annotations
 
 import math
+import re
 
 from ..common.errors import PolygonMethodError
 from ..forces import couple_label, number_sub, side_label
 from ..common.numbers import fmt, sense_word
 from ..polygons.scales import Scale, diagram_scales, force_scale, polygon_corners
-from .sketch import _header, _Sketch
+from .sketch import _header, _Sketch, _text_size
 from .style import (
     BAR,
     BODY_EDGE,
@@ -32,6 +33,7 @@ from .style import (
     LINE_STYLE,
     MARK_PT,
     OVERSHOOT,
+    SMALL_PT,
 )
 
 __all__ = ["force_layout", "FORCE_STYLE", "ARROW_CM"]
@@ -45,6 +47,9 @@ ARROW_CM = 1.5
 COUPLE_R = 0.5
 #: a side shorter than this fraction of the sheet's largest force is not drawn (rounding)
 NEGLIGIBLE = 1e-9
+#: the narrowest (cm) a panel's lines of words are wrapped to: a panel is as wide as its
+#: drawing, or this, so that narrow polygons and free bodies share a page
+LINES_CM = 7.0
 
 
 def force_layout(sol, scales=None):
@@ -119,6 +124,29 @@ def _what(body, numbers, sc):
 
 def _magnitude(v) -> str:
     return f"{fmt(math.hypot(*v))} N"
+
+
+def _fit(sk, lines) -> list:
+    """The panel's lines of words wrapped to the width of its drawing (at least
+    :data:`LINES_CM`), after a comma or a semicolon where one is near enough, else at a
+    space: a line too long goes on over the next, indented (a force's number and unit
+    stay together)."""
+    x0, _, x1, _ = sk.content_box()
+    room = max(x1 - x0, LINES_CM)
+    out = []
+    for line in lines:
+        cur = ""
+        for part in re.split(r"(?<=[,;]) ", line):
+            words = [part] if _text_size("    " + part, SMALL_PT)[0] <= room else part.split(" ")
+            for word in words:
+                more = f"{cur} {word}" if cur else word
+                if cur.strip() and _text_size(more, SMALL_PT)[0] > room:
+                    out.append(cur)
+                    cur = "    " + word
+                else:
+                    cur = more
+        out.append(cur)
+    return out
 
 
 def _wrap(items, width=70):
@@ -275,7 +303,7 @@ def _free_body(sol, fb, scale: Scale, tiny, tag, note=()) -> _Sketch:
             + ("wheel" if f.driver == "wheel" else "crank")
             + " (ccw +)"
         )
-    _header(sk, tag, f"Free body of {_what(fb.body, numbers, sc)}", scale, lines=lines)
+    _header(sk, tag, f"Free body of {_what(fb.body, numbers, sc)}", scale, lines=_fit(sk, lines))
     return sk
 
 
@@ -417,5 +445,5 @@ def _polygon(sol, st, pg, scale: Scale, tiny, tag) -> _Sketch:
         "F\u2083\u2082: the force on 3 by 2 (\u1d57 square to its link, guide or contact, "
         "\u207f along the link or guide, normal to a contact)",
     ] + rows
-    _header(sk, tag, "Force polygon", scale, lines=lines)
+    _header(sk, tag, "Force polygon", scale, lines=_fit(sk, lines))
     return sk

@@ -494,15 +494,16 @@ def cycle_blocks(sol) -> list:
     return out
 
 
-def energy_curve(scene: Scene, tm: TurningMoment, n: int = 1441) -> tuple:
+def energy_curve(scene: Scene, tm: TurningMoment, n: int = 1441, phase=None) -> tuple:
     """``(phase deg, T, E, parts)`` over the cycle at ``n`` evenly spaced phases from the
-    first cylinder's inner dead centre: the turning moment (N m; of several cylinders the
+    first cylinder's inner dead centre (or at the phases ``phase``, rad in [0, cycle), in any
+    order: a page's frames): the turning moment (N m; of several cylinders the
     sum, ``parts`` each one's as (piston, T)) and the energy ``E = int (T - T_mean) dphi``
     above its value at the first crossing of the mean (J), each piece between neighbouring
     phases (and the corners and crossings) integrated by the Gauss-Legendre rule of the
     cycle's solve: exact to rounding, not a sum of samples."""
     g = _geometry(scene)
-    phase = np.linspace(0.0, tm.cycle, n)
+    phase = np.linspace(0.0, tm.cycle, n) if phase is None else np.asarray(phase, dtype=float)
     parts = [(p, np.asarray(T, dtype=float)) for p, T in cylinder_moments_at(scene, g, phase)]
     T = parts[0][1] if len(parts) == 1 else sum(t for _, t in parts)
     cross = [math.radians(c) for c in tm.crossings]

@@ -1,11 +1,13 @@
 // The turning-moment diagram's page: moves the cursor over the plots and writes the values
 // at it. Everything shown is in the page's data, computed and formatted by the tool.
+// On a mechanism's page (the data's "follow"), the cursor follows the mechanism's frame
+// (the "pm-frame" event of page.js) and the values go to the data's own table.
 (function () {
   "use strict";
   const D = JSON.parse(document.getElementById("cycle").textContent);
   const slider = document.getElementById("angle");
   const now = document.getElementById("angle-now");
-  const body = document.querySelector("#values tbody");
+  const body = document.querySelector("#" + (D.table || "values") + " tbody");
   const cells = D.rows.map(function (row) {
     const tr = document.createElement("tr");
     const th = document.createElement("th");
@@ -34,7 +36,14 @@
     D.rows.forEach(function (row, i) {
       cells[i].textContent = row[1][k];
     });
-    now.textContent = D.rows[0][1][k];
+    if (!D.follow) now.textContent = D.rows[0][1][k];
+  }
+  if (D.follow) {
+    document.addEventListener("pm-frame", function (ev) {
+      show(ev.detail);
+    });
+    show(Number(slider.value));
+    return;
   }
   slider.addEventListener("input", function () {
     show(Number(slider.value));

@@ -31,7 +31,16 @@ from ..forces.flywheel_cycle import at_angles, curves, speed_at
 from ..text.energy import FORMS, answer_lines, book_number as _g, cycle_steps
 from .html import _asset, _json, check_html
 
-__all__ = ["cycle_page"]
+__all__ = [
+    "cycle_page",
+    "book_table",
+    "energy_words",
+    "Plot",
+    "plot_svg",
+    "angle_ticks",
+    "shaded",
+    "marker",
+]
 
 _W, _H = 600, 250  # a plot's viewBox (px)
 _L, _R, _T, _B = 74, 16, 30, 46  # its margins
@@ -58,7 +67,7 @@ def _round_ticks(lo: float, hi: float, most: int = 6) -> list:
     return [i * step for i in range(first, int(math.floor(hi / step + ROUNDING)) + 1)]
 
 
-class _Plot:
+class Plot:
     """One plot's axes: data to viewBox pixels."""
 
     def __init__(self, x0, x1, ys):
@@ -67,12 +76,15 @@ class _Plot:
         self.x0, self.x1, self.y0, self.y1 = x0, x1, lo - pad, hi + pad
 
     def px(self, x):
+        """The viewBox x (px) of the data's ``x``."""
         return _L + (np.asarray(x, float) - self.x0) / (self.x1 - self.x0) * (_W - _L - _R)
 
     def py(self, y):
+        """The viewBox y (px) of the data's ``y``."""
         return _H - _B - (np.asarray(y, float) - self.y0) / (self.y1 - self.y0) * (_H - _T - _B)
 
     def path(self, xs, ys) -> str:
+        """An SVG path through the data's points, to the hundredth of a px."""
         pts = zip(self.px(xs), self.py(ys))
         return "M" + " L".join(f"{a:.2f},{b:.2f}" for a, b in pts)
 
@@ -109,7 +121,8 @@ class _Plot:
         return "".join(out)
 
 
-def _svg(pid, label, body) -> str:
+def plot_svg(pid, label, body) -> str:
+    """A plot's SVG (``pid`` its id) with the cursor's line and dot the script moves."""
     return (
         f'<svg class="plot cycle-plot" id="{pid}" viewBox="0 0 {_W} {_H}" role="img" '
         f'aria-label="{escape(label)}">{body}'
@@ -118,12 +131,29 @@ def _svg(pid, label, body) -> str:
     )
 
 
-def _angle_ticks(cycle_deg):
+def angle_ticks(cycle_deg):
+    """Round crank-angle ticks over a cycle of ``cycle_deg``: (value, label) pairs."""
     step = next(s for s in (15, 30, 45, 60, 90, 120, 180, 360) if cycle_deg / s <= 8)
     return [(v, f"{v:g}°") for v in np.arange(0, cycle_deg + ROUNDING, step)]
 
 
-def _marker(p, x, y, tip, cls="crossing") -> str:
+def shaded(p, x, T, R, cuts) -> str:
+    """The areas between the turning moment ``T`` and the line ``R`` (at ``x``), shaded from
+    one crossing to the next (``cuts``, with the ends; ``x``'s unit): green above, red below."""
+    out = []
+    for a, b in zip(cuts, cuts[1:]):
+        m = (x >= a) & (x <= b)
+        t_in, T_in, R_in = x[m], T[m], R[m]
+        if len(t_in) < 2:
+            continue
+        above = float(np.mean(T_in - R_in)) >= 0
+        d = p.path(t_in, T_in) + " L" + p.path(t_in[::-1], R_in[::-1])[1:] + " Z"
+        out.append(f'<path d="{d}" fill="{_ABOVE if above else _BELOW}" stroke="none"/>')
+    return "".join(out)
+
+
+def marker(p, x, y, tip, cls="crossing") -> str:
+    """A dot at the data's (x, y) on the plot ``p`` that names itself (``tip``) on hover."""
     return (
         f'<circle class="{cls}" cx="{float(p.px(x)):.2f}" cy="{float(p.py(y)):.2f}" r="3.5">'
         f"<title>{escape(tip)}</title></circle>"
@@ -140,43 +170,42 @@ def _curve_panels(scene, c, th):
     """The law's or the segments' plots: (svg texts, cursor rows per plot)."""
     th_s, tq_s, rs_s, es_s = curves(scene, c, 721)
     deg, cyc = np.degrees(th_s), math.degrees(c.cycle)
-    ticks = _angle_ticks(cyc)
-    p = _Plot(0.0, cyc, np.concatenate([tq_s, rs_s]))
-    shade = []
+    ticks = angle_ticks(cyc)
+    p = Plot(0.0, cyc, np.concatenate([tq_s, rs_s]))
     cuts = sorted({0.0, c.cycle} | {x.angle % c.cycle for x in c.crossings[:-1]})
-    for a, b in zip(cuts, cuts[1:]):
-        m = (th_s >= a) & (th_s <= b)
-        t_in, T_in, R_in = np.degrees(th_s[m]), tq_s[m], rs_s[m]
-        if len(t_in) < 2:
-            continue
-        above = float(np.mean(T_in - R_in)) >= 0
-        d = p.path(t_in, T_in) + " L" + p.path(t_in[::-1], R_in[::-1])[1:] + " Z"
-        shade.append(f'<path d="{d}" fill="{_ABOVE if above else _BELOW}" stroke="none"/>')
+    shade = shaded(p, deg, tq_s, rs_s, np.degrees(cuts))
     mean = "the mean torque" if scene.diagram.resisting is None else "the resisting torque"
     body = (
         p.frame(f"turning moment T and {mean}", "torque (N m)", "crank angle", ticks)
-        + "".join(shade)
+        + shade
         + f'<path class="series" d="{p.path(deg, rs_s)}" stroke="#1565c0" '
         'stroke-dasharray="6 4"/>' + f'<path class="series" d="{p.path(deg, tq_s)}" stroke="#111"/>'
     )
     _, rs_x, _ = at_angles(scene, c, [x.angle % c.cycle for x in c.crossings[:-1]])
     for x, r in zip(c.crossings[:-1], rs_x):
-        body += _marker(p, math.degrees(x.angle % c.cycle), r, _crossing_tip(x))
+        body += marker(p, math.degrees(x.angle % c.cycle), r, _crossing_tip(x))
     tq, rs, es = at_angles(scene, c, th)
-    panels = [(_svg("plot-torque", "turning moment over the cycle", body), p, np.degrees(th), tq)]
-    pe = _Plot(0.0, cyc, es_s)
+    panels = [
+        (plot_svg("plot-torque", "turning moment over the cycle", body), p, np.degrees(th), tq)
+    ]
+    pe = Plot(0.0, cyc, es_s)
     body = pe.frame("energy above E at a", "energy (J)", "crank angle", ticks)
     body += f'<path class="series" d="{pe.path(deg, es_s)}" stroke="#111"/>'
     for x in c.crossings[:-1]:
-        body += _marker(pe, math.degrees(x.angle % c.cycle), x.energy, _crossing_tip(x))
-    panels.append((_svg("plot-energy", "energy over the cycle", body), pe, np.degrees(th), es))
+        body += marker(pe, math.degrees(x.angle % c.cycle), x.energy, _crossing_tip(x))
+    panels.append((plot_svg("plot-energy", "energy over the cycle", body), pe, np.degrees(th), es))
     if c.inertia is not None:
         ws = speed_at(c, es_s)
-        pw = _Plot(0.0, cyc, ws)
+        pw = Plot(0.0, cyc, ws)
         body = pw.frame("the flywheel's speed", "speed (rad/s)", "crank angle", ticks)
         body += f'<path class="series" d="{pw.path(deg, ws)}" stroke="#6a1b9a"/>'
         panels.append(
-            (_svg("plot-speed", "speed over the cycle", body), pw, np.degrees(th), speed_at(c, es))
+            (
+                plot_svg("plot-speed", "speed over the cycle", body),
+                pw,
+                np.degrees(th),
+                speed_at(c, es),
+            )
         )
     return panels, (tq, rs, es)
 
@@ -207,7 +236,7 @@ def _areas_panels(c):
     idx = np.arange(n + 1)
     ticks = [(i, x.letter) for i, x in enumerate(c.crossings)]
     lobes = [a * math.pi / 2 for a in c.areas]  # a half sine of the lobe's area, unit width
-    p = _Plot(0.0, float(n), np.array(lobes + [0.0]))
+    p = Plot(0.0, float(n), np.array(lobes + [0.0]))
     body = p.frame(
         "the areas about the mean line (a sketch)",
         "torque",
@@ -227,19 +256,19 @@ def _areas_panels(c):
         )
     body += f'<path class="series" d="{p.path([0, n], [0, 0])}" stroke="#1565c0" stroke-dasharray="6 4"/>'
     es = np.array([x.energy for x in c.crossings])
-    panels = [(_svg("plot-torque", "the areas of the diagram", body), p, idx, np.zeros(n + 1))]
-    pe = _Plot(0.0, float(n), es)
+    panels = [(plot_svg("plot-torque", "the areas of the diagram", body), p, idx, np.zeros(n + 1))]
+    pe = Plot(0.0, float(n), es)
     body = pe.frame("energy above E at a", "energy (J)", "crossing", ticks)
     body += f'<path class="series" d="{pe.path(idx, es)}" stroke="#111"/>'
     for i, x in enumerate(c.crossings[:-1]):
-        body += _marker(pe, i, x.energy, _crossing_tip(x))
-    panels.append((_svg("plot-energy", "energy at the crossings", body), pe, idx, es))
+        body += marker(pe, i, x.energy, _crossing_tip(x))
+    panels.append((plot_svg("plot-energy", "energy at the crossings", body), pe, idx, es))
     if c.inertia is not None:
         ws = speed_at(c, es)
-        pw = _Plot(0.0, float(n), ws)
+        pw = Plot(0.0, float(n), ws)
         body = pw.frame("the flywheel's speed at the crossings", "speed (rad/s)", "crossing", ticks)
         body += f'<path class="series" d="{pw.path(idx, ws)}" stroke="#6a1b9a"/>'
-        panels.append((_svg("plot-speed", "speed at the crossings", body), pw, idx, ws))
+        panels.append((plot_svg("plot-speed", "speed at the crossings", body), pw, idx, ws))
     rows = [
         ("crossing", [x.letter for x in c.crossings]),
         ("energy above E at a", [f"{_g(v)} J" for v in es]),
@@ -263,23 +292,23 @@ def _press_panels(scene, c, n):
     t = np.linspace(0.0, P, n, endpoint=False)
     ticks = [(v, f"{_g(v) if v else '0'} s") for v in _round_ticks(0.0, P)]
     draw = c.E_stroke / tp
-    p = _Plot(0.0, P, np.array([0.0, draw, c.power]))
+    p = Plot(0.0, P, np.array([0.0, draw, c.power]))
     body = p.frame(
         "the power the punching takes, and the motor's", "power (W)", "time in the cycle", ticks
     )
     body += f'<path class="series" d="{p.path([0, tp, tp, P], [draw, draw, 0, 0])}" stroke="#111"/>'
     body += f'<path class="series" d="{p.path([0, P], [c.power, c.power])}" stroke="#1565c0" stroke-dasharray="6 4"/>'
     taken = np.where(t < tp, draw, 0.0)
-    panels = [(_svg("plot-torque", "power over the cycle", body), p, t, taken)]
+    panels = [(plot_svg("plot-torque", "power over the cycle", body), p, t, taken)]
     es = _press_energy(c, press, t)
-    pe = _Plot(0.0, P, np.array([0.0, -c.dE_max]))
+    pe = Plot(0.0, P, np.array([0.0, -c.dE_max]))
     body = pe.frame(
         "the flywheel's energy above its start", "energy (J)", "time in the cycle", ticks
     )
     body += f'<path class="series" d="{pe.path([0, tp, P], [0, -c.dE_max, 0])}" stroke="#111"/>'
     for x, tt in zip(c.crossings[:2], (0.0, tp)):
-        body += _marker(pe, tt, x.energy, _crossing_tip(x))
-    panels.append((_svg("plot-energy", "energy over the cycle", body), pe, t, es))
+        body += marker(pe, tt, x.energy, _crossing_tip(x))
+    panels.append((plot_svg("plot-energy", "energy over the cycle", body), pe, t, es))
     rows = [
         ("time in the cycle", [f"{_g(v) if v else '0'} s" for v in t]),
         ("power the punching takes", [f"{_g(v) if v else '0'} W" for v in taken]),
@@ -288,10 +317,10 @@ def _press_panels(scene, c, n):
     ]
     if c.inertia is not None:
         ws = speed_at(c, es)
-        pw = _Plot(0.0, P, speed_at(c, np.array([0.0, -c.dE_max])))
+        pw = Plot(0.0, P, speed_at(c, np.array([0.0, -c.dE_max])))
         body = pw.frame("the flywheel's speed", "speed (rad/s)", "time in the cycle", ticks)
         body += f'<path class="series" d="{pw.path([0, tp, P], speed_at(c, [0, -c.dE_max, 0]))}" stroke="#6a1b9a"/>'
-        panels.append((_svg("plot-speed", "speed over the cycle", body), pw, t, ws))
+        panels.append((plot_svg("plot-speed", "speed over the cycle", body), pw, t, ws))
         rows.append(("speed ω", [f"{_g(w)} rad/s ({_g(w * 30 / math.pi)} rpm)" for w in ws]))
     return panels, rows
 
@@ -316,20 +345,29 @@ def _book_table(c) -> str:
     def where(x):
         return x.letter if x.angle is None else f"{x.letter} ({math.degrees(x.angle):.4f}°)"
 
-    def energy(e):
-        return "E" if e == 0 else f"E {'+' if e > 0 else '−'} {_g(abs(e))}"
-
     rows = []
     for i in range(len(c.crossings) - 1):
         a, b = c.crossings[i], c.crossings[i + 1]
         area = c.areas[i] if i < len(c.areas) else b.energy - a.energy
-        cells = (where(a), where(b), f"{area:+.6g}", energy(b.energy))
-        rows.append("<tr>" + "".join(f"<td>{escape(x)}</td>" for x in cells) + "</tr>")
+        rows.append((where(a), where(b), f"{area:+.6g}", energy_words(b.energy)))
+    return book_table(rows)
+
+
+def energy_words(e: float) -> str:
+    """The energy at a crossing in the book's words: E, E + 12.5, E − 3 (J)."""
+    return "E" if e == 0 else f"E {'+' if e > 0 else '−'} {_g(abs(e))}"
+
+
+def book_table(rows, tid: str = "book") -> str:
+    """The book's table of the areas between the crossings: each row (from, to, the area
+    (J), the energy at the end) as text, in a box that scrolls on a phone."""
+    body = "".join(
+        "<tr>" + "".join(f"<td>{escape(x)}</td>" for x in cells) + "</tr>" for cells in rows
+    )
     return (
-        '<div class="scroll"><table id="book"><thead><tr><th>from</th><th>to</th>'
-        "<th>area (J)</th><th>energy at the end (J)</th></tr></thead><tbody>"
-        + "".join(rows)
-        + "</tbody></table></div>"
+        f'<div class="scroll"><table id="{tid}"><thead><tr><th>from</th><th>to</th>'
+        f"<th>area (J)</th><th>energy at the end (J)</th></tr></thead><tbody>{body}"
+        "</tbody></table></div>"
     )
 
 

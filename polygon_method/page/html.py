@@ -210,6 +210,16 @@ def _figures_html(d: dict) -> str:
     return "".join(figs)
 
 
+def _engine_script(eng) -> str:
+    """An engine's cycle's data and the energy page's script that moves its cursor."""
+    if not eng or not eng.data:
+        return ""
+    return (
+        f'<script type="application/json" id="cycle">{_json(eng.data)}</script>\n'
+        f"<script>\n{_asset('energy.js')}</script>"
+    )
+
+
 def page_html(fr: Frames, *, verdicts=None, answers_title: str = "") -> str:
     """The page for the frames ``fr``: an HTML document as text."""
     sc = need_frames(fr).sol.scene
@@ -223,6 +233,9 @@ def page_html(fr: Frames, *, verdicts=None, answers_title: str = "") -> str:
     check = ""
     if verdicts:
         check = f"<h2>Answers checked</h2>\n{check_html(verdicts, answers_title)}"
+    from .engine_cycle import engine_part  # (it reads the energy page's parts, which read ours)
+
+    eng = engine_part(fr)
     return f"""<!DOCTYPE html>
 <html lang="en">
 <head>
@@ -231,6 +244,7 @@ def page_html(fr: Frames, *, verdicts=None, answers_title: str = "") -> str:
 <title>{escape(title)}</title>
 <style>
 {_asset("page.css")}
+{_asset("energy.css") if eng else ""}
 </style>
 </head>
 <body>
@@ -271,6 +285,7 @@ value, or tap it.</p>
 </div>
 </div>
 </div>
+{eng.html if eng else ""}
 <h2>Step by step, at the stated instant</h2>
 {blocks_html(steps_blocks(fr.sol).blocks)}
 {check}
@@ -281,6 +296,7 @@ are one sweep of the scene on its own branch.</footer>
 <script>
 {_asset("page.js")}
 </script>
+{_engine_script(eng)}
 </body>
 </html>
 """

@@ -671,6 +671,7 @@ function show(k) {
   for (const [id, , words] of valuesRows(k)) document.getElementById("val-" + id).textContent = words;
   document.getElementById("angle-now").textContent = PARAM[1] + " = " + at(D.theta[k]);
   for (const [m, X] of markers) { m.setAttribute("x1", r3(X(D.theta[k]))); m.setAttribute("x2", r3(X(D.theta[k]))); }
+  document.dispatchEvent(new CustomEvent("pm-frame", {detail: k}));  // an engine's cycle follows
 }
 let timer = null, step = 1;
 function tick() {
