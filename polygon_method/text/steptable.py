@@ -38,6 +38,7 @@ import textwrap
 from dataclasses import replace
 
 from ..solver.given import working
+from ..steps.block import at_rest_rate
 from ..common.numbers import fmt, sense_word
 from .forces import force_blocks
 from .polygon_steps import (
@@ -321,6 +322,8 @@ def _input(doc, sol):
             f"vs_{inp.tip} = {fmt(abs(vs))} m/s {driver.sense(vs)} along the guide (given)",
             f"as_{inp.tip} = {fmt(abs(a_s))} m/s^2 {driver.sense(a_s)} along the guide (given)"
             if a_s
+            else f"as_{inp.tip} = 0 {at_rest_rate(sc, '1 m/s', f'as_{inp.tip}')}"
+            if sc.at_rest
             else f"as_{inp.tip} = 0 (the block moves at a steady speed)",
         ]
         doc.items(_at_rest_items(sc, driver, items))

@@ -258,9 +258,15 @@ def _wheel_words(sc, centre) -> str:
     (ux, uy), (mx, my) = sc.slider(centre).u, pr.m
     alpha = inp.alpha * (-my * ux + mx * uy) / pr.radius  # a_C = alpha r along t = perp(m)
     acc = f" and {fmt(abs(alpha))} rad/s² {'ccw' if alpha > 0 else 'cw'}" if alpha else ", steadily"
+    w = inp.omega * (-my * ux + mx * uy)  # its sense of turning (at rest: about to)
+    how = (
+        f"at rest on {pr.label}, about to roll without slip turning {'ccw' if w > 0 else 'cw'}"
+        if sc.at_rest
+        else f"rolling without slip on {pr.label} at {inp.speed_text}{acc}"
+    )
     return (
         f"The wheel {inp.wheel} (radius {_len(sc, pr.radius)}) drives the mechanism, "
-        f"rolling without slip on {pr.label} at {inp.speed_text}{acc}; at the instant shown "
+        f"{how}; at the instant shown "
         f"its centre {centre} is {_len(sc, abs(inp.angle))} along the line from the "
         "foot of its given point. Its contact point is its instantaneous centre."
     )
@@ -295,8 +301,21 @@ def _block_words(sc, block) -> str:
         f"The block {block} drives the mechanism, sliding on {guide} through "
         f"{origin}; at the instant shown it is {_len(sc, abs(inp.angle))} from {origin}"
         + (f" ({'+' if inp.angle >= 0 else '-'} along the guide)" if inp.angle else "")
-        + f", moving at {fmt(abs(vs))} m/s {way(vs)}"
-        + (f", with an acceleration of {fmt(abs(a_s))} m/s² {way(a_s)}" if a_s else ", steadily")
+        + (
+            f", at rest, about to move {way(vs)}"
+            + (
+                f" (starting with an acceleration of {fmt(abs(sc.start_alpha))} m/s²)"
+                if sc.start_alpha
+                else ""
+            )
+            if sc.at_rest
+            else f", moving at {fmt(abs(vs))} m/s {way(vs)}"
+            + (
+                f", with an acceleration of {fmt(abs(a_s))} m/s² {way(a_s)}"
+                if a_s
+                else ", steadily"
+            )
+        )
         + "."
     )
 
