@@ -136,8 +136,14 @@ class Solution(Motion):
 
     def _analyse(self):
         from ..forces import analyse  # lazy: a scene without masses never loads forces/
+        from ..scene import key_line
 
-        return analyse(self)
+        try:
+            return analyse(self)
+        except PolygonMethodError as exc:  # name the key's line where it names a key
+            if exc.line is None and exc.key:
+                exc.line = key_line(self.scene, exc.key)
+            raise
 
     @property
     def forces_refused(self):
