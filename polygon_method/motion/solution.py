@@ -182,8 +182,9 @@ class Solution(Motion):
                 g = self.scene.input.given
                 out += (
                     f"[input] {g.key}: near a dead centre for this input (condition "
-                    f"{res.condition:.3g}): the crank's speed found from it is very "
-                    "sensitive to it",
+                    f"{res.condition:.3g}): the crank's speed found from it (as 1 / c)"
+                    + (" and its acceleration (as 1 / c^3)" if res.rate is not None else "")
+                    + " are large and very sensitive to it",
                 )
             return out
 
