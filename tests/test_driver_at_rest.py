@@ -269,3 +269,6 @@ def test_a_wheel_at_rest_is_not_said_to_roll_steadily(tmp_path, capsys):
         assert "steady speed" not in text and "steadily" not in text
     assert "alpha_CA = 0 in the polygons per 1 rad/s (at rest" in steps
     assert "about to turn ccw" in out
+    assert main(["sweep", str(scene), "--summary"]) == 0
+    head = capsys.readouterr().out.splitlines()[1]
+    assert "at rest, the motion per 1 rad/s of the wheel" in head and "m/s to the" not in head

@@ -145,16 +145,21 @@ class Summary:
         driver = compile_plan(sc).steps[0]
         block = driver.finds[0]
         deg = self.deg
+        per = (
+            f"1 rad/s of the wheel, its centre {driver.sense(inp.omega)}"
+            if inp.wheel is not None
+            else f"1 m/s {driver.sense(inp.omega)}"
+        )
         moving = (
-            f"{driver.title} at rest, the motion per 1 m/s {driver.sense(inp.omega)} "
-            "(virtual); the forces "
+            f"{driver.title} at rest, the motion per {per} (virtual); the forces "
             + (
                 f"of a start from rest with {abs(sc.start_alpha):.6g} m/s^2 "
                 f"{driver.sense(sc.start_alpha)}"
+                + (" of its centre" if inp.wheel is not None else "")
                 if sc.start_alpha
                 else "that hold it"
             )
-            if sc.at_rest and inp.wheel is None
+            if sc.at_rest
             else f"{driver.title} at {abs(inp.omega):.6g} m/s {driver.sense(inp.omega)}"
             + (f", {abs(inp.alpha):.6g} m/s^2 {driver.sense(inp.alpha)}" if inp.alpha else "")
         )
