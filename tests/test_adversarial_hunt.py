@@ -684,8 +684,9 @@ def test_the_step_table_of_a_block_at_rest_gives_no_speed_as_given(tmp_path, cap
     assert main(["steps", _trammel_at_rest(tmp_path)]) == 0
     out = capsys.readouterr().out
     section = out.split("2. Input block A", 1)[1].split("3. ", 1)[0]
-    assert "(given)" not in section and "at rest (vs_A = 0, about to move to the left)" in section
-    assert "the start's 5 m/s^2 to the left" in section, section
+    assert "(given)" not in section and "at rest (nothing moves yet)" in section, section
+    assert "as_A = 0 in the polygons" in section and "steady speed" not in section, section
+    assert "the start's as_A is taken in section 6" in " ".join(section.split()), section
 
 
 def test_the_step_table_of_a_wheel_at_rest_gives_no_speed_as_given(tmp_path, capsys):
@@ -696,5 +697,5 @@ def test_the_step_table_of_a_wheel_at_rest_gives_no_speed_as_given(tmp_path, cap
     text += '[masses]\nCA = { mass = "5 kg" }\n[gravity]\n'
     assert main(["steps", _scene(tmp_path, text)]) == 0
     section = capsys.readouterr().out.split("2. Input wheel CA", 1)[1].split("3. ", 1)[0]
-    assert "(given)" not in section and "at rest (omega_CA = 0" in section, section
-    assert "alpha_CA = 0 in the polygons (the start's 2 rad/s^2 ccw: in the forces)" in section
+    assert "(given)" not in section and "at rest (nothing moves yet)" in section, section
+    assert "alpha_CA = 0 in the polygons" in section and "steady speed" not in section, section

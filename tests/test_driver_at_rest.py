@@ -227,3 +227,48 @@ def test_a_zero_speed_without_masses_is_refused(tmp_path, capsys):
     err = capsys.readouterr().err.strip()
     assert "vs_A is zero: nothing moves" in err and "[masses]" in err
     assert len(err.splitlines()) == 1
+
+
+@pytest.mark.parametrize("acc", [0.0, 2.0])
+def test_a_block_at_rest_is_not_said_to_move(tmp_path, capsys, acc):
+    """At rest the block does not move "at a steady speed", its polygons are per 1 m/s (not
+    per rad/s), and no view says it moves at 1 m/s."""
+    from polygon_method.scene import load_scene
+    from polygon_method.text.words import given
+
+    scene = tmp_path / "held.toml"
+    extra = f'as_A = "{acc} m/s^2 right"' if acc else ""
+    text = TRAMMEL.replace("S", "300").replace("ACC", extra)
+    scene.write_text(text + "[friction]\nguides = 0.1\n")
+    assert main(["steps", str(scene)]) == 0
+    steps = " ".join(capsys.readouterr().out.split())
+    assert main(["solve", str(scene)]) == 0
+    out = " ".join(capsys.readouterr().out.split())
+    page = " ".join(given(load_scene(scene)))
+    for text in (steps, out, page):
+        assert "steady speed" not in text and "steadily" not in text
+        assert "per rad/s" not in text and "rad/s of the crank" not in text
+        assert "moving at 1 m/s" not in text
+    assert "as_A = 0 in the polygons per 1 m/s (at rest: nothing moves yet;" in steps
+    assert "friction power per 1 m/s of the block" in steps
+    assert "about to move to the right (at rest: nothing moves yet;" in out
+    assert "at rest, about to move to the right" in page
+    if acc:
+        assert "velocity diagram per 1 m/s of the block (section 2's virtual" in steps
+        assert "the start's as_A is taken in section 6" in steps
+
+
+def test_a_wheel_at_rest_is_not_said_to_roll_steadily(tmp_path, capsys):
+    scene = tmp_path / "wheel.toml"
+    scene.write_text(WHEEL.replace("ACC", ""))
+    assert main(["steps", str(scene)]) == 0
+    steps = " ".join(capsys.readouterr().out.split())
+    assert main(["solve", str(scene)]) == 0
+    out = " ".join(capsys.readouterr().out.split())
+    for text in (steps, out):
+        assert "steady speed" not in text and "steadily" not in text
+    assert "alpha_CA = 0 in the polygons per 1 rad/s (at rest" in steps
+    assert "about to turn ccw" in out
+    assert main(["sweep", str(scene), "--summary"]) == 0
+    head = capsys.readouterr().out.splitlines()[1]
+    assert "at rest, the motion per 1 rad/s of the wheel" in head and "m/s to the" not in head

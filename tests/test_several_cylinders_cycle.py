@@ -347,6 +347,43 @@ def test_a_bad_indicator_of_several_cylinders_is_one_line(tmp_path, capsys, old,
     assert len(err.splitlines()) == 1 and words in err, err
 
 
+@pytest.mark.parametrize("command", ["solve", "steps", "sweep", "check"])
+@pytest.mark.parametrize("dotted", [False, True])
+def test_a_lag_that_misses_its_dead_centre_names_its_line(tmp_path, capsys, command, dotted):
+    """The lag found wrong by the force analysis (not when the file is read) names the line
+    it is on, under the dotted header ``[indicator.C]`` or as ``C.lag`` under
+    ``[indicator]``: the line counted here from the text, by hand."""
+    text = _cycle_scene(VTWIN, "v-twin").replace("lag = 450", "lag = 400", 1)
+    if dotted:
+        text = text.replace("[indicator.C]\nlag = 400\n", "").replace(
+            "[indicator.B]\n", "B = {}\nC.lag = 400\n", 1
+        )
+    if command == "check":  # an answer that needs the cycle: the lag's fault, not its
+        text += '\n[answers]\nT_mean = "100 N m"\n'
+    line = [i for i, s in enumerate(text.split("\n"), 1) if "lag = 400" in s]
+    assert len(line) == 1
+    path = tmp_path / "lag.toml"
+    path.write_text(text)
+    assert main([command, str(path)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "lag = 90, 450 (deg)" in err, err
+    assert f"[indicator.C] lag (line {line[0]})" in err, err
+
+
+def test_a_lag_on_the_first_cylinder_names_its_line(tmp_path, capsys):
+    """Refused as the file is read: ``C.lag`` under [indicator] before B's sub-table makes
+    C the first cylinder (no lag there); its line named all the same."""
+    text = _cycle_scene(VTWIN, "v-twin").replace("[indicator.C]\nlag = 450\n", "")
+    text = text.replace("[indicator.B]\n", "C.lag = 450\n[indicator.B]\n", 1)
+    line = [i for i, s in enumerate(text.split("\n"), 1) if s.startswith("C.lag = 450")]
+    path = tmp_path / "first.toml"
+    path.write_text(text)
+    assert main(["solve", str(path)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert "C's is the first cylinder" in err, err
+    assert len(line) == 1 and f"[indicator.C] lag (line {line[0]})" in err, err
+
+
 # -- check: each cylinder's keys --------------------------------------------------------
 
 

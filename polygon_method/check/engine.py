@@ -131,6 +131,8 @@ def _correct(sol, ans) -> float:
     try:
         correct = engine_value(sol, ans.key)
     except PolygonMethodError as exc:
+        if exc.key and not exc.key.startswith("[answers]"):  # the scene's fault: its key
+            raise exc.located(sol.scene.file) from None
         _refuse(sol, ans, exc.message)
     if correct is None:
         _refuse(sol, ans, "no value to check against: " + _why_none(sol, ans))

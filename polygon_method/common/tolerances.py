@@ -48,6 +48,11 @@ SAME = 1e-9
 #: computed value is held to a limit it may reach exactly (a stroke's ends, a crank that just
 #: turns fully, a full turn of 2 pi, a scale that is exactly round)
 ROUNDING = 1e-12
+#: a cycle's mean (a turning moment's over its cycle: its work over the cycle's angle) at most
+#: this fraction of the diagram's largest value is rounding about a true nought (the
+#: quadrature's many products; a steady gas pressure does no net work over a cycle): it is
+#: written 0, not -9e-15 N m
+MEAN_NOUGHT = ROUNDING
 #: a floor for a divisor or a norm that may be exactly zero, far below any real size: the
 #: quotient comes out large and finite, never a ZeroDivisionError, an inf or a NaN
 FLOOR = 1e-300

@@ -1,5 +1,5 @@
 """The force step of a hydraulic cylinder (barrel pivoted at K, rod pinned at R): a
-two-force member, massless, frictionless: its force ``F`` acts along K-R, pushing R away
+two-force member, massless: its force ``F`` acts along K-R, pushing R away
 from K with ``F u`` (``u = (R - K) / |R - K|``, ``F > 0`` pushing apart, the cylinder in
 compression) and K with ``-F u``. It is the first group solved (the kinematic plan places
 it last: nothing depends on it), so the bodies at K and R are solved with its push.
@@ -15,6 +15,12 @@ push or a pull, a pressure on its bore or annulus, a damper's ``-c vs``, vs its 
 extension; :mod:`polygon_method.scene.cylinder_loads`), entered in the ledger before the
 walk (:func:`stated`); without one it carries no force: a free, frictionless cylinder
 without a pressure pushes nothing.
+
+With friction at its pins (``[friction] pins``, a size at K or R) the friction circles put
+a couple ``M`` on it (entered in the ledger by :mod:`.friction` under its key): it is no
+longer a two-force member, and its pins' forces gain ``(M / L) n`` across its line (n the
+unit along K-R turned 90 deg ccw, L its length; the cylinder's moments about K), tangent to
+the friction circles.
 
 >>> push(0.0, 0.0, 3.0, 4.0, 10.0)     # 10 N pushing R away from K = (0, 0), R = (3, 4)
 (6.0, 8.0)
@@ -112,13 +118,18 @@ def step(st, P, led, own):
     K, R = st.barrel, st.rod
     (kx, ky), (rx, ry) = P[K], P[R]
     fx, fy = push(kx, ky, rx, ry, f)
+    couple = led.of(st.key)[2]  # the friction circles' couples at its pins, if any
+    across = _nonzero(couple)
+    if across:  # no longer a two-force member: a part across its line, M / L
+        ax, ay = _across(kx, ky, rx, ry, couple)
+        fx, fy = fx + ax, fy + ay
     ok, orr = own[K], own[R]
     led.add(orr, fx, fy, rx, ry, side=Side("pin", orr, st.key, R, (fx, fy), (rx, ry)))
     led.add(ok, -fx, -fy, kx, ky, side=Side("pin", ok, st.key, K, (-fx, -fy), (kx, ky)))
     eq, drawing = (), None
     if isinstance(fx, float):
 
-        def drawing():  # a two-force member: its two pins' forces, equal and opposite
+        def drawing():  # its two pins' forces, equal and opposite (and its couple)
             return (
                 (
                     Side("pin", st.key, orr, R, (-fx, -fy), (rx, ry)),
@@ -139,14 +150,19 @@ def step(st, P, led, own):
                 "frictionless cylinder carries no force"
             ),
             f"a two-force member: F u on the body at {R}, -F u on the body at {K} (u from "
-            f"{K} to {R}, F + pushing them apart)",
+            f"{K} to {R}, F + pushing them apart)"
+            if not across
+            else f"no longer a two-force member: the friction circles at its pins put a couple "
+            f"M = {fmt(couple)} N m on it, so its pins' forces are tangent to them: F u + (M / "
+            f"L) n on the body at {R}, the opposite on the body at {K} (u from {K} to {R}, F + "
+            f"pushing them apart, n = u turned 90 deg ccw, L = |{K}{R}|)",
         )
     rec = ForceStep(
         st.index,
         "cylinder",
         st.title,
         (st.key,),
-        ((0.0, 0.0, 0.0),),
+        ((0.0, 0.0, couple + 0.0),),
         ((f"F in {st.key}{GIVEN if given is not None else ''}, + pushing {K} and {R} apart", f),),
         led.conditions.get(st.key, 1.0),
         "the arm of the cylinder about the crank's pivot over the mechanism's size"
@@ -197,6 +213,20 @@ def given_words(key, given, f) -> str:
         "rate of extension, m/s; a damper resists it"
         + ("; at rest nothing moves: it pushes nothing)" if at_rest else ")")
     )
+
+
+def _across(kx, ky, rx, ry, couple):
+    """The part across the line K-R of the force on the body at R that a couple ``couple``
+    on the cylinder asks for: ``(M / L) n``, n the unit along K-R turned 90 deg ccw (the
+    cylinder's moments: ``cross(R - K, -(M / L) n) + M = 0``)."""
+    dx, dy = rx - kx, ry - ky
+    m2 = dx * dx + dy * dy
+    return -couple * dy / m2, couple * dx / m2
+
+
+def _nonzero(x) -> bool:
+    """Whether a couple is there: a float not 0, or an array with any entry not 0."""
+    return x != 0 if isinstance(x, float) else bool(getattr(x, "any", lambda: x != 0)())
 
 
 def divisor(st, rec, P, L):

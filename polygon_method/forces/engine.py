@@ -28,6 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..common.errors import PolygonMethodError
+from ..scene import key_line
 from ..common.tolerances import DISTINCT
 
 
@@ -98,6 +99,7 @@ def geometry(scene, plan, piston: str, side: float) -> SliderCrankGeometry:
             "pinned by a rod to the driving crank's pin (a slider crank)",
             file=scene.file,
             key="[indicator] piston",
+            line=key_line(scene, "[indicator] piston"),
         )
     first, sd = pair
     w = scene.input.omega
@@ -106,6 +108,7 @@ def geometry(scene, plan, piston: str, side: float) -> SliderCrankGeometry:
             "[indicator]: the cycle runs in the crank's sense of rotation: give the crank a speed",
             file=scene.file,
             key="[input] speed",
+            line=key_line(scene, "[input] speed"),
         )
     ox, oy = scene.ground[first.pivot]
     r, l = first.length, sd.length
@@ -118,6 +121,7 @@ def geometry(scene, plan, piston: str, side: float) -> SliderCrankGeometry:
             f"[indicator]: the crank {first.link} cannot turn fully (l <= r + e): no engine cycle",
             file=scene.file,
             key="[indicator]",
+            line=key_line(scene, "[indicator]"),
         )
     far, near = math.sqrt((l + r) ** 2 - e * e), math.sqrt((l - r) ** 2 - e * e)
     bi = (fx + side * far * ux, fy + side * far * uy)
@@ -243,6 +247,7 @@ def cylinders(scene, plan, P) -> tuple:
                 f"begins there: lag = {can} (deg)",
                 file=scene.file,
                 key=f"[indicator.{ind.piston}] lag",
+                line=key_line(scene, f"[indicator.{ind.piston}] lag"),
             )
         out.append(Cylinder(ind, g, g0, lag, ind.lag is not None))
     return tuple(out)

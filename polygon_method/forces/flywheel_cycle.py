@@ -43,7 +43,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..common.errors import SceneError
-from ..common.tolerances import FLOOR, ROUNDING, SAME
+from ..common.tolerances import FLOOR, MEAN_NOUGHT, ROUNDING, SAME
 
 __all__ = [
     "ANSWER_FIELDS",
@@ -240,6 +240,8 @@ def _curve(d) -> dict:
     grid = np.linspace(0.0, cyc, max(16, int(math.ceil(cyc / _GRID))) + 1)
     corners = [c for c in T.corners + (R.corners if R is not None else ()) if 0 < c < cyc]
     grid = np.unique(np.concatenate([grid, corners]))
+    if not steady and abs(mean_T) <= MEAN_NOUGHT * float(np.max(np.abs(T.value(grid)))):
+        mean_T = 0.0  # rounding about a true nought
 
     def drive(x):
         return mean_T + 0.0 * x if steady else T.value(x)

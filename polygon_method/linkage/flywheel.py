@@ -30,7 +30,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..common.tolerances import ROUNDING
+from ..common.tolerances import MEAN_NOUGHT, ROUNDING
 from ..common.errors import PolygonMethodError
 from ..forces import analyse
 from ..forces.engine import (
@@ -356,18 +356,28 @@ def _bisect(scene, g, lo, hi, mean):
     return 0.5 * (lo + hi)
 
 
-def turning_moment(scene: Scene) -> TurningMoment:
-    """The turning-moment diagram's numbers over the engine's cycle (see the module)."""
-    g = _geometry(scene)
-    ind = scene.indicator
-    cycle = scene.cycle
-    breaks = _breaks(scene, g, cycle)
+def _mean(scene, g, breaks, cycle) -> tuple:
+    """(the work per cycle, the mean torque, the grid, the turning moment on it): a mean at
+    most :data:`MEAN_NOUGHT` of the largest turning moment is rounding about a true nought
+    (a steady pressure does no net work over a turn): written 0."""
     work = float(_integrals(scene, g, breaks).sum())
     mean = work / cycle
     grid = np.unique(
         np.concatenate([np.linspace(0.0, cycle, int(round(cycle / _GRID)) + 1), breaks])
     )
     T = turning_moment_at(scene, g, grid)
+    if abs(mean) <= MEAN_NOUGHT * float(np.abs(T).max()):
+        mean = work = 0.0
+    return work, mean, grid, T
+
+
+def turning_moment(scene: Scene) -> TurningMoment:
+    """The turning-moment diagram's numbers over the engine's cycle (see the module)."""
+    g = _geometry(scene)
+    ind = scene.indicator
+    cycle = scene.cycle
+    breaks = _breaks(scene, g, cycle)
+    work, mean, grid, T = _mean(scene, g, breaks, cycle)
     d = T - mean
     size = max(float(np.abs(T).max()), abs(mean), 1e-300)
     exact = np.nonzero(d[:-1] == 0.0)[0]
@@ -395,7 +405,9 @@ def turning_moment(scene: Scene) -> TurningMoment:
             e_next = Ec[k + 1] if k + 1 < len(cross) else Ec[0]  # the cycle closes on itself
             lobes.append(
                 Lobe(
-                    rd(c), rd(nxt) % math.degrees(cycle) if nxt > cycle else rd(nxt), e_next - Ec[k]
+                    rd(c),
+                    rd(nxt) % math.degrees(cycle) if nxt >= cycle else rd(nxt),
+                    e_next - Ec[k],
                 )
             )
         lobes = tuple(lobes)

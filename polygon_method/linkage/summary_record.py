@@ -145,24 +145,27 @@ class Summary:
         driver = compile_plan(sc).steps[0]
         block = driver.finds[0]
         deg = self.deg
-        if sc.at_rest:  # the motion per m/s: the virtual velocities
-            a = sc.start_alpha
-            held = (
-                f"{driver.title} at rest, the motion per {abs(inp.omega):.6g} m/s "
-                f"{driver.sense(inp.omega)} (virtual); the forces "
-                + (
-                    f"of a start from rest with {abs(a):.6g} m/s^2 {driver.sense(a)}"
-                    if a
-                    else "that hold it"
-                )
+        per = (
+            f"1 rad/s of the wheel, its centre {driver.sense(inp.omega)}"
+            if inp.wheel is not None
+            else f"1 m/s {driver.sense(inp.omega)}"
+        )
+        moving = (
+            f"{driver.title} at rest, the motion per {per} (virtual); the forces "
+            + (
+                f"of a start from rest with {abs(sc.start_alpha):.6g} m/s^2 "
+                f"{driver.sense(sc.start_alpha)}"
+                + (" of its centre" if inp.wheel is not None else "")
+                if sc.start_alpha
+                else "that hold it"
             )
-        else:
-            held = f"{driver.title} at {abs(inp.omega):.6g} m/s {driver.sense(inp.omega)}" + (
-                f", {abs(inp.alpha):.6g} m/s^2 {driver.sense(inp.alpha)}" if inp.alpha else ""
-            )
+            if sc.at_rest
+            else f"{driver.title} at {abs(inp.omega):.6g} m/s {driver.sense(inp.omega)}"
+            + (f", {abs(inp.alpha):.6g} m/s^2 {driver.sense(inp.alpha)}" if inp.alpha else "")
+        )
         out = [
             f"sweep of {sc.title or sc.file or 'the mechanism'}",
-            held + f" at every place; {self.evaluated} of {self.requested} places "
+            f"{moving} at every place; {self.evaluated} of {self.requested} places "
             f"s_{block} along its guide evaluated",
         ]
         if self.range_deg is not None:

@@ -136,8 +136,14 @@ class Solution(Motion):
 
     def _analyse(self):
         from ..forces import analyse  # lazy: a scene without masses never loads forces/
+        from ..scene import key_line
 
-        return analyse(self)
+        try:
+            return analyse(self)
+        except PolygonMethodError as exc:  # name the key's line where it names a key
+            if exc.line is None and exc.key:
+                exc.line = key_line(self.scene, exc.key)
+            raise
 
     @property
     def forces_refused(self):
@@ -176,8 +182,9 @@ class Solution(Motion):
                 g = self.scene.input.given
                 out += (
                     f"[input] {g.key}: near a dead centre for this input (condition "
-                    f"{res.condition:.3g}): the crank's speed found from it is very "
-                    "sensitive to it",
+                    f"{res.condition:.3g}): the crank's speed found from it (as 1 / c)"
+                    + (" and its acceleration (as 1 / c^3)" if res.rate is not None else "")
+                    + " are large and very sensitive to it",
                 )
             return out
 

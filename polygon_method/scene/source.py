@@ -155,9 +155,11 @@ class LineIndex:
     table's section, else the first dotted ``table.key =`` line; a header's own line for
     ``key=None``), for a reader that asks for many: the lines of a scene's answers.
 
-    >>> ix = LineIndex(['a = 1', '[t]', 'k = 2', '"O-R" = {x = 1}', 'u.w = 3'])
+    >>> ix = LineIndex(['a = 1', '[t]', 'k = 2', '"O-R" = {x = 1}', 'u.w = 3', '[t.v]', 'k = 4'])
     >>> ix('t', 'k'), ix('t', 'O-R'), ix('t', None), ix(None, 'a'), ix('u', 'w'), ix('t', 'z')
     (3, 4, 2, 1, 5, None)
+    >>> ix('t.u', 'w'), ix('t.v', 'k'), ix('t.v', None)
+    (5, 7, 6)
     """
 
     def __init__(self, lines):
@@ -180,7 +182,10 @@ class LineIndex:
             if dot:
                 table = _unquoted(table)
                 if table and not any(c in table for c in '"= \t'):
-                    self.dotted.setdefault((table, _unquoted(rest.lstrip())), i)
+                    key = _unquoted(rest.lstrip())
+                    self.dotted.setdefault((table, key), i)
+                    if current:  # ``C.lag = 1`` under [indicator]: [indicator.C] lag
+                        self.dotted.setdefault((f"{current}.{table}", key), i)
 
     def __call__(self, table: str | None, key: str | None = None):
         if key is None:
@@ -198,12 +203,24 @@ def line_of(lines, table: str | None, key: str | None = None):
 
 
 def key_line(scene, key: str | None):
-    """The line of a located key such as ``[assembly] C`` or ``[links] BC, CD`` (its first
-    name) in the file the scene was read from, or None."""
-    m = re.match(r"^\[([A-Za-z_]+)\]\s*([^,\s]+)?", key or "")
+    """The line of a located key such as ``[assembly] C``, ``[links] BC, CD`` (its first
+    name), ``[loads] "C-R"`` or ``[indicator.C] lag`` (a dotted table's, as its header
+    ``[indicator.C]`` names it, or a dotted key ``C.lag`` under ``[indicator]``) in the file
+    the scene was read from, or None.
+
+    >>> from types import SimpleNamespace as NS
+    >>> text = '[indicator]\\nbore = 100\\n[indicator.B]\\n[indicator.C]\\nlag = 450\\n'
+    >>> sc = NS(_text=text)
+    >>> key_line(sc, "[indicator.C] lag"), key_line(sc, "[indicator.B]")
+    (5, 3)
+    >>> key_line(sc, "[indicator] bore"), key_line(sc, "[indicator.D] lag")
+    (2, None)
+    """
+    m = re.match(r"^\[\s*([A-Za-z0-9_.\-\"]+)\s*\]\s*([^,\s]+)?", key or "")
     if not m or not scene._text:
         return None
-    return line_of(toml_lines(scene._text), m.group(1), m.group(2))
+    name = None if m.group(2) is None else _unquoted(m.group(2))
+    return line_of(toml_lines(scene._text), m.group(1).strip('"'), name)
 
 
 def syntax_error(msg, text, file) -> SceneError:

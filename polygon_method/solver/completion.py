@@ -13,7 +13,7 @@ from ..common.errors import AssemblyError, PolygonMethodError, SceneError
 from ..common.numbers import in_units, sense
 from ..scene import key_line
 from ..steps import Context
-from .given import completed, place_roots, resolve
+from .given import completed, growth_words, place_roots, resolve
 
 __all__ = ["given_completed", "gas_towards_crank", "place"]
 
@@ -44,6 +44,9 @@ def given_completed(plan):
             f"{g.rate_text if g.rate is not None else '0 (steady)'}: alpha_"
             f"{sc.input.crank} = {abs(res.alpha):.6g} rad/s^2 {sense(res.alpha)}"
         )
+    grows = growth_words(res)
+    if grows:
+        note += f" ({grows})"
     dims = replace(plan.dims, omega=res.omega, alpha=res.alpha)
     return replace(plan, dims=dims, notes=(note,) + res.notes + plan.notes, given=res)
 

@@ -146,6 +146,31 @@ def resolve(plan: Plan) -> Resolution:
     return Resolution(omega, alpha, y1, h, cond, tuple(notes), rate)
 
 
+def growth_words(res) -> str:
+    """Why a crank's speed and acceleration found from a given motion may be large: the
+    condition of this input (the quantity per rad/s of the crank, at most 1) and how they
+    grow towards a dead centre for it (``omega = value / c``; at a steady given motion
+    ``alpha = -omega^2 h / c``, h its rate per (rad/s)^2: as ``1 / c^3``); "" where the
+    condition is 1 (nothing amplified).
+
+    >>> from types import SimpleNamespace as NS
+    >>> print(growth_words(NS(condition=0.1, rate=None)))
+    condition 0.1 of this input: its value per rad/s of the crank, 0 at a dead centre for it as where a rocker given as the input reaches its limit; the crank's speed grows as 1 / c towards it
+    """
+    c = res.condition
+    if not c < 1.0:
+        return ""
+    return (
+        f"condition {c:.3g} of this input: its value per rad/s of the crank, 0 at a dead "
+        "centre for it as where a rocker given as the input reaches its limit; the crank's "
+        + (
+            "speed grows as 1 / c and its acceleration as 1 / c^3 towards it"
+            if res.rate is not None
+            else "speed grows as 1 / c towards it"
+        )
+    )
+
+
 def _rate_key(given):
     """The [input] key of the given motion's rate (``alpha_BC``, ``as_B``, ``a_B``)."""
     return f"{GIVEN_KINDS[given.kind]}_{given.key.partition('_')[2]}"
@@ -218,11 +243,14 @@ def working(plan, fmt) -> list:
             f"{fmt(res.per_omega)} = {fmt(abs(res.alpha))} rad/s^2 "
             f"{sense(res.alpha)}"
         )
+    grows = growth_words(res)
     if res.condition < TOL.warn:
-        out.append(
-            f"condition {res.condition:.3g}: near a dead centre for this input, the "
-            "crank's speed is very sensitive to the given motion"
+        grows += (
+            ": near a dead centre for this input, the crank's speed is very sensitive to "
+            "the given motion"
         )
+    if grows:
+        out.append(grows)
     return out
 
 

@@ -42,6 +42,22 @@ def acceleration(ux, uy, a_s):
     return a_s * ux, a_s * uy
 
 
+def at_rest_rate(scene, unit, name) -> str:
+    """The words after a driver's zero rate of speed at rest: the polygons are drawn per
+    ``unit`` of the driver (its virtual speed), nothing moves yet (``name``: the rate's
+    key, which a start from rest takes in the forces' section).
+
+    >>> from types import SimpleNamespace as NS
+    >>> at_rest_rate(NS(start_alpha=0.0), "1 m/s", "as_A")
+    'in the polygons per 1 m/s (at rest: nothing moves yet; the virtual velocities)'
+    """
+    return f"in the polygons per {unit} (at rest: nothing moves yet; " + (
+        f"the start's {name} is taken in section 6)"
+        if scene.start_alpha
+        else "the virtual velocities)"
+    )
+
+
 @dataclass(frozen=True)
 class BlockDriver(Step):
     """X = Q + s u; v = vs u; a = as u (see the module). The plan's first step where a
@@ -202,9 +218,11 @@ class BlockDriver(Step):
         vs, a_s = inp.omega, inp.alpha
         words = (
             f"block {self.point} on {self.where} at s_{self.point} = "
-            f"{in_units(inp.angle, u)} {scene.units} from {self.origin}, moving at "
-            f"{abs(vs):.6g} m/s {self.sense(vs)}"
+            f"{in_units(inp.angle, u)} {scene.units} from {self.origin}, "
         )
+        if scene.at_rest:  # nothing moves: the sense it is about to move in
+            return words + f"about to move {self.sense(vs)}"
+        words += f"moving at {abs(vs):.6g} m/s {self.sense(vs)}"
         return words + (
             f", accelerating at {abs(a_s):.6g} m/s^2 {self.sense(a_s)}" if a_s else ", steadily"
         )
@@ -286,7 +304,9 @@ class BlockDriver(Step):
             found = (a,)
         else:
             text = (
-                f"{lab} is at {o}: the block {X} moves steadily along its fixed guide (no "
+                f"{lab} is at {o}: as_{X} = 0 {at_rest_rate(sol.scene, '1 m/s', f'as_{X}')}"
+                if sol.scene.at_rest
+                else f"{lab} is at {o}: the block {X} moves steadily along its fixed guide (no "
                 "acceleration)"
             )
             found = ()

@@ -48,7 +48,7 @@ from .base import (
     Step,
     sub,
 )
-from .block import BlockDriver
+from .block import BlockDriver, at_rest_rate
 from .relations import coriolis, rigid_acceleration, rigid_velocity
 
 __all__ = ["CollarDriver", "place", "velocity", "acceleration", "driver", "is_collar"]
@@ -379,9 +379,11 @@ class CollarDriver(BlockDriver):
         words = (
             f"collar {self.point} on the rod {self.rod} (pivoted at {self.pivot}) at "
             f"s_{self.point} = {self.pivot}{self.point} = {in_units(inp.angle, u)} "
-            f"{scene.units}, sliding at {abs(vs):.6g} m/s {self.sense(vs)} relative to "
-            "the rod"
+            f"{scene.units}, "
         )
+        if scene.at_rest:  # nothing moves: the sense it is about to slide in
+            return words + f"about to slide {self.sense(vs)} along the rod"
+        words += f"sliding at {abs(vs):.6g} m/s {self.sense(vs)} relative to the rod"
         return words + (
             f", accelerating at {abs(a_s):.6g} m/s^2 {self.sense(a_s)}" if a_s else ", steadily"
         )
@@ -422,6 +424,8 @@ class CollarDriver(BlockDriver):
                 f"vs_{C} = {fmt(abs(vs))} m/s {self.sense(vs)} {along}",
                 f"as_{C} = {fmt(abs(a_s))} m/s^2 {self.sense(a_s)} {along}"
                 if a_s
+                else f"as_{C} = 0 {at_rest_rate(scene, '1 m/s', f'as_{C}')}"
+                if scene.at_rest
                 else f"as_{C} = 0 (the collar slides at a steady speed along the rod)",
             ),
         )
@@ -435,10 +439,16 @@ class CollarDriver(BlockDriver):
             f"the fixed pivot {self.pivot}; {self.point} is pinned to the link "
             f"{self.link} about the fixed pivot {self.fixed}. At the instant shown the "
             f"collar is {abs(inp.angle) / u:.10g} {scene.units} from {self.pivot}, "
-            f"sliding at {abs(vs):.10g} m/s {self.sense(vs)} relative to the rod"
+            + (
+                f"at rest, about to slide {self.sense(vs)} along the rod"
+                if scene.at_rest
+                else f"sliding at {abs(vs):.10g} m/s {self.sense(vs)} relative to the rod"
+            )
             + (
                 f", with an acceleration of {abs(a_s):.10g} m/s² {self.sense(a_s)} relative to it"
                 if a_s
+                else ""
+                if scene.at_rest
                 else ", steadily"
             )
             + "."

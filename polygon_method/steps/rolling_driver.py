@@ -25,7 +25,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..common.numbers import in_units, sense as turn_sense
-from .block import BlockDriver
+from .block import BlockDriver, at_rest_rate
 from .base import Construction, absolute, image_label
 
 __all__ = ["WheelDriver", "centre_rates", "contact_acceleration"]
@@ -113,6 +113,13 @@ class WheelDriver(BlockDriver):
         inp, u = scene.input, scene.length_unit
         w, al = self.omega_alpha(inp.omega, inp.alpha)
         r, C = self.radius, self.point
+        if scene.at_rest:  # nothing moves: the senses it is about to turn and move in
+            return (
+                f"wheel {self.wheel} (radius {in_units(r, u)} {scene.units}) on "
+                f"{self.ground_words} (no slip), about to turn {turn_sense(w)}: its "
+                f"centre {C} at s_{C} = {in_units(inp.angle, u)} {scene.units}, about to move "
+                f"{self.sense(inp.omega)}; its contact point I the instantaneous centre"
+            )
         words = (
             f"wheel {self.wheel} (radius {in_units(r, u)} {scene.units}) rolls without "
             f"slip on {self.ground_words} at omega = {abs(w):.6g} rad/s {turn_sense(w)}"
@@ -143,14 +150,8 @@ class WheelDriver(BlockDriver):
                 f"omega_{W} = v_{C} / r = {fmt(abs(w))} rad/s {turn_sense(w)}"
             )
             if f"vs_{C}" in on_centre
-            else (
-                f"at rest (omega_{W} = 0, about to roll {turn_sense(w)}): the polygons are "
-                f"drawn for omega_{W} = {fmt(abs(w))} rad/s {turn_sense(w)}, the virtual "
-                "velocities"
-                if getattr(scene, "at_rest", False)
-                else f"omega_{W} = {fmt(abs(w))} rad/s {turn_sense(w)} (given)"
-            )
-            + f"; the wheel rolls without slip on {self.ground_words}, radius r = {fmt(r)} m",
+            else f"omega_{W} = {fmt(abs(w))} rad/s {turn_sense(w)} (given); the wheel rolls "
+            f"without slip on {self.ground_words}, radius r = {fmt(r)} m",
             (
                 f"a_{C} = {fmt(abs(inp.alpha))} m/s^2 {self.sense(inp.alpha)} (given), so "
                 f"alpha_{W} = a_{C} / r = {fmt(abs(al))} rad/s^2 {turn_sense(al)}"
@@ -158,8 +159,8 @@ class WheelDriver(BlockDriver):
             if f"as_{C}" in on_centre and al
             else f"alpha_{W} = {fmt(abs(al))} rad/s^2 {turn_sense(al)} (given)"
             if al
-            else _rest_alpha(W, self.omega_alpha(inp.omega, scene.start_alpha)[1], fmt)
-            if getattr(scene, "at_rest", False)
+            else f"alpha_{W} = 0 {at_rest_rate(scene, '1 rad/s', f'alpha_{W}')}"
+            if scene.at_rest
             else f"alpha_{W} = 0 (the wheel rolls at a steady speed)",
             f"the wheel rolls: its centre moves at omega r = {fmt(abs(w))} x {fmt(r)} = "
             f"{fmt(abs(inp.omega))} m/s along the ground, {self.sense(inp.omega)}; its "
@@ -245,19 +246,14 @@ class WheelDriver(BlockDriver):
             found = (a,)
         else:
             text = (
-                f"{lab} is at {o}: the centre {C} moves steadily on a straight line (alpha "
-                f"= 0); the contact point's acceleration is not zero: omega^2 r = "
+                f"{lab} is at {o}: "
+                + (
+                    f"alpha = 0 {at_rest_rate(sol.scene, '1 rad/s', f'alpha_{self.wheel}')}"
+                    if sol.scene.at_rest
+                    else f"the centre {C} moves steadily on a straight line (alpha = 0)"
+                )
+                + "; the contact point's acceleration is not zero: omega^2 r = "
                 f"{aI:.4g} m/s^2 towards {C}"
             )
             found = ()
         return Construction(self.index, self.title, ph, lab, sol.A[C], (), (), found, text, cond)
-
-
-def _rest_alpha(W, start, fmt) -> str:
-    """The step table's alpha line of a wheel at rest: none in the polygons (drawn per rad/s,
-    steadily), the start's, where it starts so, in the forces."""
-    return f"alpha_{W} = 0 in the polygons" + (
-        f" (the start's {fmt(abs(start))} rad/s^2 {turn_sense(start)}: in the forces)"
-        if start
-        else ""
-    )

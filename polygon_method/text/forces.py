@@ -77,12 +77,40 @@ def _friction_lines(sol, f, F, M) -> list:
             out.append(f"  {it[1]}: couple {_moment(it[2], M)} on {it[0]}")
         else:
             out.append(f"  {it[1]}: {_vec(it[2], F)} on {_body(it[0])}")
+    out += _cylinder_couples(sol, f, M)
     out.append(
         f"  friction power: {fmt(quiet(f.friction_power, M))} W (lost; the driver supplies it)"
         if not sol.scene.at_rest
-        else f"  friction power per rad/s of the crank: {fmt(quiet(f.friction_power, M))} W "
+        else f"  friction power per {_per(sol)}: {fmt(quiet(f.friction_power, M))} W "
         "(virtual: nothing moves yet)"
     )
+    return out
+
+
+def _per(sol) -> str:
+    """What the motion is solved per at rest: 1 rad/s of the crank, 1 m/s of a driving
+    block or collar, 1 rad/s of a driving wheel (the virtual velocities)."""
+    return getattr(sol.plan.steps[0], "virtual_unit", "1 rad/s of the crank")
+
+
+def _rate(sc) -> str:
+    """The start's rate by name: a crank's alpha, a driving block's or collar's as."""
+    return "alpha" if sc.input.crank is not None else f"as_{sc.input.tip}"
+
+
+def _cylinder_couples(sol, f, M) -> list:
+    """A line for each cylinder the friction circles at its pins put a couple on: it is no
+    longer a two-force member."""
+    out = []
+    for key in sorted({c.key for c in sol.scene.cylinders}):
+        each = [it[2] for it in f.friction if len(it) == 3 and it[0] == key]
+        total = quiet(sum(each), sum(abs(c) for c in each))  # (cancelling: rounding)
+        if isinstance(total, float) and total != 0.0:
+            out.append(
+                f"  cylinder {key}: the couples at its pins sum to {_moment(total, M)}: no "
+                "longer a two-force member, its pins' forces are tangent to the friction "
+                "circles (a part M / L across its line, L its length)"
+            )
     return out
 
 
@@ -309,7 +337,7 @@ _STEP_HEADS = {
     "second crank": "the frame holds the second crank at its pivot; the moments about the pivot "
     "give its own driving torque",
     "cylinder": "a two-force member: its force along its line, pushing (or pulling) the bodies at"
-    " its ends",
+    " its ends (with friction at its pins, tangent to their friction circles: said below)",
     "yoke": "the yoke's balance along its path gives the slot's force on the block; across it the"
     " path's normal force, its moments the path's couple; the block's balance the crank's"
     " force on it",
@@ -369,10 +397,10 @@ def _inertia_blocks(sol, f, F, M) -> list:
                 "p",
                 start_words(sc)[0].upper()
                 + start_words(sc)[1:]
-                + ": the acceleration diagram of the start is the velocity diagram per "
-                "rad/s (section 2's virtual velocities) scaled by alpha, and each a_G below "
-                "is alpha times v_G there (the acceleration diagram drawn per rad/s, with "
-                "its centripetal terms, is not the start's).",
+                + f": the acceleration diagram of the start is the velocity diagram per "
+                f"{_per(sol)} (section 2's virtual velocities) scaled by {_rate(sc)}, and "
+                f"each a_G below is {_rate(sc)} times v_G there (the acceleration diagram drawn "
+                f"per {_per(sol)}, with its centripetal terms, is not the start's).",
             )
         )
     blocks.append(
@@ -518,7 +546,7 @@ def _driver_blocks(f, F, M, sol=None) -> list:
     said = (
         f" ({what}; its power balances theirs and the friction's loss)"
         if fric and not sol.scene.at_rest
-        else f" ({what}; its power per rad/s of the motion about to start balances theirs)"
+        else f" ({what}; its power per {_per(sol)}, the motion about to start, balances theirs)"
         if fric
         else f" ({what}; its power balances theirs)"
     )

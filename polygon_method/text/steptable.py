@@ -38,6 +38,7 @@ import textwrap
 from dataclasses import replace
 
 from ..solver.given import working
+from ..steps.block import at_rest_rate
 from ..common.numbers import fmt, sense_word
 from .forces import force_blocks
 from .polygon_steps import (
@@ -305,19 +306,6 @@ def _at_rest_items(sc, driver, items) -> list:
     ] + [x.replace("(given)", "(virtual: at rest)") for x in items]
 
 
-def _block_at_rest_items(sc, tip, sense, vs) -> list:
-    """A driving block's input lines at rest: its zero stated first, the polygons drawn for
-    the virtual speed (per m/s of the block), the start's acceleration left to the forces."""
-    a = sc.start_alpha
-    start = f" (the start's {fmt(abs(a))} m/s^2 {sense}: in the forces)" if a else ""
-    return [
-        f"at rest (vs_{tip} = 0, about to move {sense}): the polygons are drawn for vs_{tip} = "
-        f"{fmt(abs(vs))} m/s {sense} along the guide, the virtual velocities of the power "
-        "balance (per m/s of the block)",
-        f"as_{tip} = 0 in the polygons{start}",
-    ]
-
-
 def _input(doc, sol):
     sc = sol.scene
     inp = sc.input
@@ -330,16 +318,15 @@ def _input(doc, sol):
     if not driver.periodic:  # a block driven along its guide: its velocity and rate given
         doc.h(f"2. Input block {inp.tip}")
         vs, a_s = inp.omega, inp.alpha
-        if sc.at_rest:  # the polygons per m/s: the virtual velocities
-            doc.items(_block_at_rest_items(sc, inp.tip, driver.sense(vs), vs))
-            return
         items = [
             f"vs_{inp.tip} = {fmt(abs(vs))} m/s {driver.sense(vs)} along the guide (given)",
             f"as_{inp.tip} = {fmt(abs(a_s))} m/s^2 {driver.sense(a_s)} along the guide (given)"
             if a_s
+            else f"as_{inp.tip} = 0 {at_rest_rate(sc, '1 m/s', f'as_{inp.tip}')}"
+            if sc.at_rest
             else f"as_{inp.tip} = 0 (the block moves at a steady speed)",
         ]
-        doc.items(items)
+        doc.items(_at_rest_items(sc, driver, items))
         return
     second = inp.second and (inp.second.crank or f"collar {inp.second.block}")
     doc.h(f"2. Input link {inp.crank}" + (f" and {second}" if inp.second else ""))

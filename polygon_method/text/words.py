@@ -258,24 +258,15 @@ def _wheel_words(sc, centre) -> str:
     (ux, uy), (mx, my) = sc.slider(centre).u, pr.m
     alpha = inp.alpha * (-my * ux + mx * uy) / pr.radius  # a_C = alpha r along t = perp(m)
     acc = f" and {fmt(abs(alpha))} rad/s² {'ccw' if alpha > 0 else 'cw'}" if alpha else ", steadily"
-    if sc.at_rest:  # the polygons per unit speed: the virtual velocities
-        w = inp.omega * (-my * ux + mx * uy) / pr.radius
-        start = sc.start_alpha * (-my * ux + mx * uy) / pr.radius
-        acc = (
-            f", at rest, about to roll {'ccw' if w > 0 else 'cw'}"
-            + (
-                f" with an angular acceleration of {fmt(abs(start))} rad/s² "
-                f"{'ccw' if start > 0 else 'cw'}"
-                if start
-                else ""
-            )
-            + f" (the polygons are drawn for {fmt(abs(w))} rad/s, the virtual velocities)"
-        )
+    w = inp.omega * (-my * ux + mx * uy)  # its sense of turning (at rest: about to)
+    how = (
+        f"at rest on {pr.label}, about to roll without slip turning {'ccw' if w > 0 else 'cw'}"
+        if sc.at_rest
+        else f"rolling without slip on {pr.label} at {inp.speed_text}{acc}"
+    )
     return (
         f"The wheel {inp.wheel} (radius {_len(sc, pr.radius)}) drives the mechanism, "
-        f"rolling without slip on {pr.label}"
-        + ("" if sc.at_rest else f" at {inp.speed_text}")
-        + f"{acc}; at the instant shown "
+        f"{how}; at the instant shown "
         f"its centre {centre} is {_len(sc, abs(inp.angle))} along the line from the "
         "foot of its given point. Its contact point is its instantaneous centre."
     )
@@ -313,11 +304,11 @@ def _block_words(sc, block) -> str:
         + (
             f", at rest, about to move {way(vs)}"
             + (
-                f" with an acceleration of {fmt(abs(sc.start_alpha))} m/s² {way(sc.start_alpha)}"
+                f" (starting with an acceleration of {fmt(abs(sc.start_alpha))} m/s² "
+                f"{way(sc.start_alpha)})"
                 if sc.start_alpha
                 else ""
             )
-            + f" (the polygons are drawn for {fmt(abs(vs))} m/s, the virtual velocities)"
             if sc.at_rest
             else f", moving at {fmt(abs(vs))} m/s {way(vs)}"
             + (
