@@ -21,7 +21,7 @@
 from __future__ import annotations
 
 from ..solver.derived import input_torque as _torque
-from ..solver.derived import PinRubbing, power_terms, rubbing_records
+from ..solver.derived import PinRubbing, power_terms, rubbing_records, table_records as _records
 from ..solver.centres import JSON_BODIES, centres_dict, locate
 from ..solver.errorbound import bounds_dict, error_bounds
 from ..common.errors import TOL, PolygonMethodError, SceneError
@@ -91,7 +91,12 @@ class Solution(Motion):
         c = self._cache
         r = c.get("rubbing")
         if r is None:
-            r = c["rubbing"] = rubbing_records(self.plan.pin_table, self.W)
+            W = self.W  # rubbing_records(self.plan.pin_table, W), one call fewer
+            try:
+                r = _records(self.plan.pin_table, W, W)
+            except KeyError:  # a link not in W turns at 0
+                r = rubbing_records(self.plan.pin_table, W)
+            c["rubbing"] = r
         return r
 
     @property
