@@ -16,6 +16,12 @@ class Singular(Exception):
     """A force step's equations have no unique solution here (its words: why)."""
 
 
+#: the first item of a short road's raw pin entry holding a dyad's three pins at once
+#: (``(THREE_PINS, c, l1, l2, px, py, b, ob, ex, ey, d, od, gx, gy)``: the pin forces
+#: ``(px, py)``, ``(-ex, -ey)``, ``(-gx, -gy)``), expanded when the records are read
+THREE_PINS = ("three pins",)
+
+
 def any_zero(x) -> bool:
     """Whether ``x`` (a float, or an array over a sweep) is exactly zero anywhere."""
     z = x == 0

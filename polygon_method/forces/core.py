@@ -27,7 +27,7 @@ from __future__ import annotations
 import functools
 import weakref
 
-from .bodies import Singular, centre, inertia_record
+from .bodies import THREE_PINS, Singular, centre, inertia_record
 from .collar import second_name
 from .engine import indicator_forces
 from .records import FRAME, Forces, GuideForce, PinForce, block
@@ -284,11 +284,22 @@ class ForcePlan:
             else:
                 G, a_G, alpha = P[pt], A[pt], 0.0
             inertia.append(inertia_record(body, mass, moment, G, a_G, alpha, how))
-        return (
-            tuple(inertia),
-            tuple(PinForce(*p) for p in pins),
-            tuple(GuideForce(*g) for g in guides),
-        )
+        return tuple(inertia), pin_forces(pins), tuple(GuideForce(*g) for g in guides)
+
+
+def pin_forces(pins) -> tuple:
+    """The :class:`~.records.PinForce` s of :meth:`ForcePlan.run`'s raw pin entries, in
+    order: a dyad's entry (``THREE_PINS`` first) is its three pins."""
+    out = []
+    for p in pins:
+        if p[0] is THREE_PINS:
+            _, c, l1, l2, px, py, b, ob, ex, ey, d, od, gx, gy = p
+            out.append(PinForce(c, l1, l2, (px, py)))
+            out.append(PinForce(b, l1, ob, (-ex, -ey)))
+            out.append(PinForce(d, l2, od, (-gx, -gy)))
+        else:
+            out.append(PinForce(*p))
+    return tuple(out)
 
 
 _new = object.__new__

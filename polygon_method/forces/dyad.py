@@ -23,7 +23,7 @@ D = (1, 0) and takes it all (the joint's triangle of forces: link 1 carries none
 from __future__ import annotations
 
 from ..steps.rounding import vhypot
-from .bodies import Singular, any_zero, cross, least, outer_pin, unit
+from .bodies import THREE_PINS, Singular, any_zero, cross, least, outer_pin, unit
 from ..common.numbers import fmt
 from .records import ForceStep, PinForce, Side
 
@@ -88,7 +88,9 @@ def bind(st, own, ix):
         # -F_B and -F_D, the reactions on the bodies at B and D (a negation is exact:
         # -(-x) is x to the bit)
         ex, ey, gx, gy = f1x + px, f1y + py, f2x - px, f2y - py
-        pins += ((c, l1, l2, (px, py)), (b, l1, ob, (-ex, -ey)), (d, l2, od, (-gx, -gy)))
+        # its three pins, (c, l1, l2, (px, py)), (b, l1, ob, (-ex, -ey)) and (d, l2, od,
+        # (-gx, -gy)), in one tuple: made into records only when they are read
+        pins.append((THREE_PINS, c, l1, l2, px, py, b, ob, ex, ey, d, od, gx, gy))
         sx[ib] = sx[ib] + ex  # S.add(ib, ex, ey, bx, by), written out
         sy[ib] = sy[ib] + ey
         sm[ib] = sm[ib] + (bx * ey - by * ex)

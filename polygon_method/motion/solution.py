@@ -21,13 +21,13 @@
 from __future__ import annotations
 
 from ..solver.derived import input_torque as _torque
-from ..solver.derived import PinRubbing, power_terms, rubbing_records
+from ..solver.derived import PinRubbing, power_terms, rubbing_records, table_records as _records
 from ..solver.centres import JSON_BODIES, centres_dict, locate
 from ..solver.errorbound import bounds_dict, error_bounds
 from ..common.errors import TOL, PolygonMethodError, SceneError
 from ..solver.kinematics import Motion, hypot
 from ..common.numbers import fmt_angular, quiet, sense  # noqa: F401  (re-exported)
-from ..solver.compiler import compile_plan
+from ..solver.compiler import PLANS_BY_ID, compile_plan
 from ..steps.base import Instant
 from .structural import structural_warnings
 from ..scene import FixedPath, Scene
@@ -91,7 +91,12 @@ class Solution(Motion):
         c = self._cache
         r = c.get("rubbing")
         if r is None:
-            r = c["rubbing"] = rubbing_records(self.plan.pin_table, self.W)
+            W = self.W  # rubbing_records(self.plan.pin_table, W), one call fewer
+            try:
+                r = _records(self.plan.pin_table, W, W)
+            except KeyError:  # a link not in W turns at 0
+                r = rubbing_records(self.plan.pin_table, W)
+            c["rubbing"] = r
         return r
 
     @property
@@ -479,15 +484,35 @@ def solve(scene: Scene) -> Solution:
     Raises :class:`~polygon_method.common.errors.AssemblyError` or
     :class:`~polygon_method.common.errors.SingularStepError` where the construction fails.
     """
-    plan = compile_plan(scene)
+    hit = PLANS_BY_ID.get(id(scene))  # compile_plan's first look, without its call
+    if hit is not None and hit[0]() is scene:
+        plan = hit[1]
+    else:
+        plan = compile_plan(scene)
     inp = scene.input
     sol = _new(Solution)  # Solution(scene, plan, ...): filled in here, by the plan too
     ctx = _new(Instant)  # Context.instant(inp.angle, inp.omega, inp.alpha), one call fewer
     ctx.theta = inp.angle
     ctx.omega = inp.omega
     ctx.alpha = inp.alpha
-    ctx.cond = {}
-    plan.instant(ctx, sol)  # = plan.run(ctx), one instant
+    ctx.cond = sol.cond = {}
+    # plan.instant(ctx, sol) (= plan.run(ctx), one instant) written out: one call fewer
+    # (its fields read here as Plan.instant reads them: keep the two alike)
+    zero = plan._zero
+    fixed = plan.fixed_links
+    sol.P = plan.ground.copy()
+    sol.V = zero.copy()
+    sol.A = zero.copy()
+    sol.W = fixed.copy()
+    sol.Al = fixed.copy()
+    sol.S = {}
+    sol.ctx = ctx
+    sol.array = False  # one instant
+    try:
+        for f in plan._instant or plan._bind_own_instant():
+            f(sol)
+    except PolygonMethodError as exc:  # name the scene file in the one-line message
+        raise exc.located(plan.scene.file)
     sol.scene = scene
     sol.plan = plan
     sol.theta = inp.angle

@@ -57,6 +57,7 @@ _SIDES = {"above": (1, 1), "below": (1, -1), "right": (0, 1), "left": (0, -1)}
 _BY_ID: dict = {}  # id(scene) -> (weak reference to the scene, plan) (bounded)
 _BY_CONTENT: dict = {}  # content key -> plan (bounded)
 _KEEP = 256
+PLANS_BY_ID = _BY_ID  # the same dict, for solve's first look (without compile_plan's call)
 
 
 def compile_plan(scene: Scene) -> Plan:

@@ -24,6 +24,7 @@ __all__ = [
     "pin_rubbing",
     "pin_records",
     "rubbing_records",
+    "table_records",
     "largest",
     "power_terms",
     "input_torque",
@@ -62,12 +63,12 @@ def rubbing_records(table, W) -> dict:
     not in ``W`` turns at 0, as :func:`rubbing_at` has it: the pass taken again reading 0
     for it)."""
     try:
-        return _records(table, W, W)
+        return table_records(table, W, W)
     except KeyError:
-        return _records(table, defaultdict(float, W), W)
+        return table_records(table, defaultdict(float, W), W)
 
 
-def _records(table, w, W) -> dict:
+def table_records(table, w, W) -> dict:
     """The records of :func:`rubbing_records`, each link's omega read from ``w``, the
     records' ``W``; filled in here, for a record has no ``__init__``."""
     out = {}

@@ -332,7 +332,8 @@ class Plan:
         the plan's own dimensions, each step's position, check, velocity and acceleration in
         a row (``bind_instant``), the same formulas with fewer calls. A step that cannot
         assemble, or is singular, raises before any later step is placed. ``m``: the record
-        to fill (a State's slots; a new State when None)."""
+        to fill (a State's slots; a new State when None). ``solve`` writes this out for
+        its one instant: a change here is made there too."""
         zero = self._zero
         fixed = self.fixed_links
         if m is None:

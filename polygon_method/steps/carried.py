@@ -38,6 +38,69 @@ def _image(px, py, qx, qy, lam, mu):
     return px, py
 
 
+def _one_instant(p, q, X, i, lam, mu):
+    """``bind_group_instant``'s function for one point carried by ``p, q`` whose ``lam``
+    and ``mu`` are both non-zero (a point off the line PQ): the same operations in the same
+    order, the loop and its tests of zero terms left out."""
+
+    def instant(m):
+        P = m.P
+        V = m.V
+        A = m.A
+        px, py = P[p]
+        qx, qy = P[q]
+        dx = qx - px
+        dy = qy - py
+        P[X] = (px + lam * dx - mu * dy, py + lam * dy + mu * dx)
+        m.cond[i] = 1.0
+        px, py = V[p]
+        qx, qy = V[q]
+        dx = qx - px
+        dy = qy - py
+        V[X] = (px + lam * dx - mu * dy, py + lam * dy + mu * dx)
+        px, py = A[p]
+        qx, qy = A[q]
+        dx = qx - px
+        dy = qy - py
+        A[X] = (px + lam * dx - mu * dy, py + lam * dy + mu * dx)
+
+    return instant
+
+
+def _two_instant(p, q, X, i, lam, _, Y, j, lam2, mu2):
+    """``bind_group_instant``'s function for two points carried by ``p, q``: the first on
+    the line PQ (its ``mu`` zero), the second off it (a coupler's point on the line and one
+    beside it, the seed's E and F): the same operations in the same order, unrolled."""
+
+    def instant(m):
+        P = m.P
+        V = m.V
+        A = m.A
+        cond = m.cond
+        px, py = P[p]
+        qx, qy = P[q]
+        dx = qx - px
+        dy = qy - py
+        vx, vy = V[p]
+        qx, qy = V[q]
+        vdx = qx - vx
+        vdy = qy - vy
+        ax, ay = A[p]
+        qx, qy = A[q]
+        adx = qx - ax
+        ady = qy - ay
+        P[X] = (px + lam * dx, py + lam * dy)
+        cond[i] = 1.0
+        V[X] = (vx + lam * vdx, vy + lam * vdy)
+        A[X] = (ax + lam * adx, ay + lam * ady)
+        P[Y] = (px + lam2 * dx - mu2 * dy, py + lam2 * dy + mu2 * dx)
+        cond[j] = 1.0
+        V[Y] = (vx + lam2 * vdx - mu2 * vdy, vy + lam2 * vdy + mu2 * vdx)
+        A[Y] = (ax + lam2 * adx - mu2 * ady, ay + lam2 * ady + mu2 * adx)
+
+    return instant
+
+
 def recognise(g, name):
     """A body of ``name`` with two known points."""
     P, frame = g.P, g.bodies.frame
@@ -213,6 +276,10 @@ class Carried(Step):
                     A[X] = img(apx, apy, aqx, aqy, lam, mu)
 
             return instant
+        if len(items) == 1 and items[0][2] and items[0][3]:
+            return _one_instant(p, q, *items[0])  # (no loop, no zero term to test)
+        if len(items) == 2 and items[0][2] and not items[0][3] and items[1][2] and items[1][3]:
+            return _two_instant(p, q, *items[0], *items[1])
 
         def instant(m):
             P = m.P
