@@ -338,8 +338,8 @@ def test_records_filled_in_place_have_every_field_their_constructor_sets():
     m = plan.instant(ctx)
     made = State(
         dict(plan.ground),
-        dict(plan._zero),
-        dict(plan._zero),
+        dict(plan.zero_motion),
+        dict(plan.zero_motion),
         dict(plan.fixed_links),
         dict(plan.fixed_links),
         {},

@@ -498,7 +498,7 @@ def solve(scene: Scene) -> Solution:
     ctx.cond = sol.cond = {}
     # plan.instant(ctx, sol) (= plan.run(ctx), one instant) written out: one call fewer
     # (its fields read here as Plan.instant reads them: keep the two alike)
-    zero = plan._zero
+    zero = plan.zero_motion
     fixed = plan.fixed_links
     sol.P = plan.ground.copy()
     sol.V = zero.copy()
@@ -509,7 +509,7 @@ def solve(scene: Scene) -> Solution:
     sol.ctx = ctx
     sol.array = False  # one instant
     try:
-        for f in plan._instant or plan._bind_own_instant():
+        for f in plan.instant_steps or plan.bind_own_instant():
             f(sol)
     except PolygonMethodError as exc:  # name the scene file in the one-line message
         raise exc.located(plan.scene.file)

@@ -124,7 +124,7 @@ def _for_scene(plan, scene):
     (which the key fixes) are shared."""
     out = replace(plan, scene=scene)
     object.__setattr__(out, "_phases", plan._phases)
-    object.__setattr__(out, "_instant", plan._instant)
+    object.__setattr__(out, "instant_steps", plan.instant_steps)
     return out
 
 

@@ -299,7 +299,7 @@ class Plan:
             phases = self._phases or self._bind_own()
         else:
             ground, phases = dims.ground, self.bind(dims)
-        zero = self._zero
+        zero = self.zero_motion
         m = State(
             dict(ground),
             dict(zero),
@@ -334,7 +334,7 @@ class Plan:
         assemble, or is singular, raises before any later step is placed. ``m``: the record
         to fill (a State's slots; a new State when None). ``solve`` writes this out for
         its one instant: a change here is made there too."""
-        zero = self._zero
+        zero = self.zero_motion
         fixed = self.fixed_links
         if m is None:
             m = _new(State)  # State(...) filled in here: one Python call fewer per solve
@@ -348,7 +348,7 @@ class Plan:
         m.ctx = ctx
         m.array = ctx.array  # false: one instant
         try:
-            for f in self._instant or self._bind_own_instant():
+            for f in self.instant_steps or self.bind_own_instant():
                 f(m)
         except PolygonMethodError as exc:  # name the scene file in the one-line message
             raise exc.located(self.scene.file)
@@ -388,15 +388,25 @@ class Plan:
         object.__setattr__(self, "_phases", self.bind(self.dims))
         return self._phases
 
-    def _bind_own_instant(self):
-        object.__setattr__(self, "_instant", self.bind_instant(self.dims))
-        return self._instant
+    def bind_own_instant(self):
+        """The plan's own one-instant functions (``instant_steps``), bound once to its
+        dimensions and kept: ``solve`` runs them in turn on a solution."""
+        object.__setattr__(self, "instant_steps", self.bind_instant(self.dims))
+        return self.instant_steps
 
     def __getstate__(self):  # the bound phases are made again, not pickled
         return {
             k: v
             for k, v in self.__dict__.items()
-            if k not in ("_zero", "_phases", "_instant", "_checked", "pin_table", "force_plan")
+            if k
+            not in (
+                "zero_motion",
+                "_phases",
+                "instant_steps",
+                "_checked",
+                "pin_table",
+                "force_plan",
+            )
         }
 
     def __setstate__(self, state):
@@ -407,11 +417,11 @@ class Plan:
     def __post_init__(self):
         # what every evaluation at the plan's own dimensions starts from (made anew by
         # dataclasses.replace, so a plan with other steps never runs stale functions)
-        object.__setattr__(self, "_zero", dict.fromkeys(self.ground, (0.0, 0.0)))
+        object.__setattr__(self, "zero_motion", dict.fromkeys(self.ground, (0.0, 0.0)))
         # the bound phases, made when first needed (a plan that solves one instant binds
         # only its one-instant functions)
         object.__setattr__(self, "_phases", None)
-        object.__setattr__(self, "_instant", None)
+        object.__setattr__(self, "instant_steps", None)
         object.__setattr__(
             self, "_checked", tuple([(st.index, st) for st in self.steps if st.branching])
         )
