@@ -289,7 +289,12 @@ def test_every_view_says_it(tmp_path, capsys):
         ('{ push = "-2 kN" }', "say pull instead"),
         ('{ damping = "-30 N s/m" }', "a damper resists its motion"),
         ('{ force = "2 kN", direction = 30 }', "acts along its line"),
-        ("{ stiffness = 3 }", "unknown key 'stiffness'"),
+        ("{ stiffness = 3 }", "needs its stiffness and its free length"),
+        ('{ stiffness = "-2 N/mm", free_length = 250 }', "is not positive"),
+        ('{ stiffness = "2 N/mm", free_length = -250 }', "is not positive"),
+        ('{ stiffness = "2 N/mm", free_length = 0 }', "is not positive"),
+        ("{ free_length = 250 }", "no stiffness"),
+        ('{ stiffness = "2 kg", free_length = 250 }', "stiffness"),
         ('"2 kN"', "push"),
     ],
 )

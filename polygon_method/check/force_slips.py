@@ -106,7 +106,7 @@ def _cylinder_slips(c) -> list:
         (
             f"the force in the cylinder {c.key} left out",
             "cylinder_force_left_out",
-            replace(c, push=0.0, damping=0.0),
+            replace(c, push=0.0, damping=0.0, stiffness=0.0),
         )
     ]
     if c.annulus is not None:

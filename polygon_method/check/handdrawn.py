@@ -223,7 +223,7 @@ class HandDrawing:
             return vals, r * math.hypot(self.omega_sigma(a), self.omega_sigma(b))
         if kind == "torque":  # T = -sum(F . v + T_l w_l) / omega with the drawn v, omega
             sc, w = sol.scene, sol.plan.dims.omega
-            vals = input_torque(sc, m.V, m.W, w, m.S)  # (S: a passive cylinder's F vs)
+            vals = input_torque(sc, m.V, m.W, w, m.S, m.P)  # (S: a passive cylinder's F vs)
             if vals is None:
                 return None, None
             var = 0.0

@@ -161,6 +161,17 @@ UNITS: dict[str, dict[str, float]] = {
         "lbf s/in": 4.4482216152605 / 0.0254,
         "lbf s/ft": 4.4482216152605 / 0.3048,
     },
+    # a spring's stiffness: its force per unit change of length
+    "stiffness": {
+        "N/m": 1.0,
+        "N/mm": 1e3,
+        "N/cm": 1e2,
+        "kN/m": 1e3,
+        "kN/mm": 1e6,
+        "MN/m": 1e6,
+        "lbf/in": 4.4482216152605 / 0.0254,
+        "lbf/ft": 4.4482216152605 / 0.3048,
+    },
 }
 
 #: the largest magnitude (SI) that makes sense for a mechanism, by kind: beyond it a value
@@ -177,6 +188,7 @@ ABSURD: dict[str, float] = {
     "moment_of_inertia": 1e7,  # kg m^2
     "pressure": 1e10,  # Pa
     "damping": 1e9,  # N s/m
+    "stiffness": 1e12,  # N/m (a steel bar's, a million times over)
 }
 
 #: the smallest magnitude (SI) other than zero that makes sense, by kind: below it a value
@@ -186,6 +198,8 @@ TINY: dict[str, float] = {
     "force": 1e-9,  # N
     "torque": 1e-12,  # N m
 }
+#: a stiffness below the smallest force per millimetre: a nanonewton per mm (1e-6 N/m)
+TINY["stiffness"] = TINY["force"] / UNITS["length"]["mm"]
 
 #: an answer's kind (the prefix of its key: ``v_C``, ``omega_BC``, ``F_B``, ``torque``) -> the SI
 #: unit its value is written in: the answer keys, the verdicts and the variants' papers
@@ -233,4 +247,5 @@ SI_NAME = {
     "pressure": "Pa",
     "energy": "J",
     "damping": "N s/m",
+    "stiffness": "N/m",
 }

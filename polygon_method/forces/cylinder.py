@@ -12,7 +12,7 @@ arm), and ``F = -T0 / T1`` makes the crank's torque vanish; ``|T1|`` over the me
 size is the condition (zero where the cylinder's line passes through the crank's pivot: a
 toggle). A passive cylinder carries the force the scene gives in it (``[loads] "O-R"``: a
 push or a pull, a pressure on its bore or annulus, a damper's ``-c vs``, vs its rate of
-extension; :mod:`polygon_method.scene.cylinder_loads`), entered in the ledger before the
+extension, a spring's ``k (L0 - L)``, L its length at the instant; :mod:`polygon_method.scene.cylinder_loads`), entered in the ledger before the
 walk (:func:`stated`); without one it carries no force: a free, frictionless cylinder
 without a pressure pushes nothing.
 
@@ -32,7 +32,7 @@ from ..common.numbers import fmt
 from ..common.tolerances import FLOOR
 from .bodies import Singular, any_zero
 from .records import ForceStep, PinForce, Side
-from ..scene.cylinder_loads import stated as loaded
+from ..scene.cylinder_loads import length_of, stated as loaded
 
 
 #: the mark of a passive cylinder's force given in the scene, in its step's found label
@@ -74,11 +74,12 @@ def drives(scene, st) -> bool:
 
 def stated(scene, motion, led):
     """Enter each passive cylinder's given force in ``led.stated``: (F, the rate of
-    extension it was taken at, the scene's words). At rest (or starting from rest) nothing
-    moves: a damper pushes nothing."""
+    extension it was taken at, the cylinder, at rest, its length). At rest (or starting
+    from rest) nothing moves: a damper pushes nothing (a spring still does)."""
     for c in loaded(scene):
         rate = motion.S[c.key][0] * (0.0 if scene.at_rest else 1.0)
-        led.stated[c.key] = (c.force_at(rate, scene.at_rest), rate, c, scene.at_rest)
+        n = length_of(c, motion.P)
+        led.stated[c.key] = (c.force_at(rate, scene.at_rest, n), rate, c, scene.at_rest, n)
 
 
 def unit_ledger(st):
@@ -175,17 +176,19 @@ def step(st, P, led, own):
     return (PinForce(R, st.key, orr, (-fx, -fy)), PinForce(K, st.key, ok, (fx, fy))), (), rec, None
 
 
-def given_line(scene, S, key, f) -> str:
+def given_line(scene, S, key, f, P=None) -> str:
     """``solve``'s line for a passive cylinder's given force ``f`` (one instant; ``S`` the
-    motion's sliding rates, the cylinder's rate of extension among them)."""
+    motion's sliding rates, the cylinder's rate of extension among them; ``P`` the
+    positions, for a spring's length)."""
     (c,) = [c for c in loaded(scene) if c.key == key]
     rate = 0.0 if scene.at_rest else S[key][0]
-    return given_words(key, (f, rate, c, scene.at_rest), f).removeprefix("the ")
+    n = length_of(c, P) if P is not None else None
+    return given_words(key, (f, rate, c, scene.at_rest, n), f).removeprefix("the ")
 
 
-def given_dict(scene, S, f) -> dict:
+def given_dict(scene, S, f, P=None) -> dict:
     """``solve --json``'s ``forces.cylinders``: each passive cylinder's given force (N, +
-    pushing its ends apart), its parts and words."""
+    pushing its ends apart), its parts and words (a spring's with ``P``, the positions)."""
     out = {}
     for key, v in given_forces(f):
         (c,) = [c for c in loaded(scene) if c.key == key]
@@ -197,22 +200,45 @@ def given_dict(scene, S, f) -> dict:
             "rate_of_extension": 0.0 if scene.at_rest else S[key][0] + 0.0,
             "sign": "+ pushing its ends apart",
         }
+        if c.stiffness and P is not None:
+            n = length_of(c, P)
+            out[key].update(
+                stiffness=c.stiffness,  # N/m
+                free_length=c.free_length,  # m
+                length=n + 0.0,  # m, at the instant
+                spring=c.spring_at(n) + 0.0,  # k (L0 - L), N
+            )
     return out
 
 
 def given_words(key, given, f) -> str:
     """Where a passive cylinder's force comes from, in words (one instant)."""
-    _, rate, c, at_rest = given
+    _, rate, c, at_rest, n = given
     way = "pushing its ends apart" if f >= 0 else "pulling its ends together"
-    if not c.damping:
-        return f"the force in the cylinder {key} is given ({c.words}): F = {fmt(f)} N, {way}"
-    return (
-        f"the force in the cylinder {key} is given ({c.words}): F = {fmt(c.push)} - "
-        f"{fmt(c.damping)} x "
-        f"vs = {fmt(c.push)} - {fmt(c.damping)} x {_paren(rate)} = {fmt(f)} N, {way} (vs the "
-        "rate of extension, m/s; a damper resists it"
-        + ("; at rest nothing moves: it pushes nothing)" if at_rest else ")")
-    )
+    head = f"the force in the cylinder {key} is given ({c.words}): F = "
+    if not c.damping and not c.stiffness:
+        return f"{head}{fmt(f)} N, {way}"
+    terms, values, notes = [], [], []
+    if c.push or c.damping or not c.stiffness:  # (a damper: "push - c vs" as ever)
+        terms.append(fmt(c.push))
+        values.append(fmt(c.push))
+    if c.damping:
+        terms.append(f"- {fmt(c.damping)} x vs")
+        values.append(f"- {fmt(c.damping)} x {_paren(rate)}")
+        notes.append(
+            "vs the rate of extension, m/s; a damper resists it"
+            + ("; at rest nothing moves: it pushes nothing" if at_rest else "")
+        )
+    if c.stiffness:
+        terms.append(f"+ {fmt(c.stiffness)} x (L0 - L)")
+        values.append(f"+ {fmt(c.stiffness)} x ({fmt(c.free_length)} - {fmt(n)})")
+        notes.append(
+            f"L = |{c.barrel}{c.rod}| its length, m; a spring "
+            + ("compressed pushes" if n < c.free_length else "stretched pulls")
+        )
+    lhs = " ".join(terms).removeprefix("+ ")
+    rhs = " ".join(values).removeprefix("+ ")
+    return f"{head}{lhs} = {rhs} = {fmt(f)} N, {way} ({'; '.join(notes)})"
 
 
 def _across(kx, ky, rx, ry, couple):

@@ -145,7 +145,7 @@ class _Reducer:
         if getattr(plan, "pins", ()):
             for pin, r in rubbing_arrays(plan, fr.W, fr.n).items():
                 yield f"rub_{pin}", "m/s", r, "rubbing"
-        t = torque_array(sc, fr.V, fr.W, self.sw.omega, fr.n, fr.S)
+        t = torque_array(sc, fr.V, fr.W, self.sw.omega, fr.n, fr.S, fr.P)
         if t is not None and not plan.steps[0].periodic:  # the force driving the block
             yield "force", "N", t, "input force, along the guide"
         elif t is not None:

@@ -102,7 +102,7 @@ class Solution(Motion):
     @property
     def power_terms(self) -> list:
         """(what, power in W) of each load: F . v for forces, T w for torques on links."""
-        return self._get("power", lambda: power_terms(self.scene, self.V, self.W, self.S))
+        return self._get("power", lambda: power_terms(self.scene, self.V, self.W, self.S, self.P))
 
     @property
     def input_torque(self):
@@ -113,7 +113,7 @@ class Solution(Motion):
         c = self._cache
         t = c.get("torque", _UNSET)  # None is a value (no loads): a sentinel, not a raise
         if t is _UNSET:
-            t = c["torque"] = _torque(sc, self.V, self.W, sc.input.omega, self.S)
+            t = c["torque"] = _torque(sc, self.V, self.W, sc.input.omega, self.S, self.P)
         return t
 
     @property
@@ -385,7 +385,7 @@ class Solution(Motion):
             if not refused and any(hasattr(c, "push") for c in sc.cylinders):
                 from ..forces.cylinder import given_dict  # a strut's, a damper's force
 
-                d["forces"]["cylinders"] = given_dict(sc, self.S, self.forces)
+                d["forces"]["cylinders"] = given_dict(sc, self.S, self.forces, self.P)
             if sc.at_rest:  # the weights and loads alone; the motion per rad/s of the crank
                 d["at_rest"] = True
                 if sc.start_alpha:  # starting from rest: the inertia of the start

@@ -289,13 +289,13 @@ def rubbing_arrays(plan, W, n):
     }
 
 
-def torque_array(scene, V, W, omega, n, S=None):
+def torque_array(scene, V, W, omega, n, S=None, P=None):
     """The input torque over a sweep (``omega`` the crank's; where the motion is given
     on another quantity and held, the crank's speed at each angle, ``W`` of the crank;
     ``S`` the sliding rates, for a passive cylinder's given force)."""
     if scene.input.given is not None:
         omega = W[scene.link(scene.input.crank).key]
-    t = input_torque(scene, V, W, omega, S)
+    t = input_torque(scene, V, W, omega, S, P)
     return None if t is None else np.broadcast_to(t, (n,)) + 0.0
 
 
@@ -430,7 +430,7 @@ def sweep(scene: Scene, angles=None, *, chunk: int = CHUNK) -> SweepResult:
         th = th[~bad]
     n = len(th)
     rub = rubbing_arrays(plan, fr.W, n)
-    torque = torque_array(scene, fr.V, fr.W, sw.omega, n, fr.S)
+    torque = torque_array(scene, fr.V, fr.W, sw.omega, n, fr.S, fr.P)
     return SweepResult(
         scene,
         plan,

@@ -9,6 +9,7 @@ naming the cylinder by its key (a part of the scene reader).
 "O-R" = { pressure = "5 N/mm^2", bore = 50 }       # on the whole bore: pushes its ends apart
 "O-R" = { pressure = "5 N/mm^2", bore = 50, rod = 20 }   # on the annulus: pulls them together
 "O-R" = { damping = "400 N s/m" }                  # a damper: F = -c (rate of extension)
+"O-R" = { stiffness = "2 N/mm", free_length = 250 } # a spring: F = k (L0 - L)
 ```
 
 The cylinder is a two-force member: its force ``F`` (+ pushing its ends apart) acts along its
@@ -16,13 +17,19 @@ line on the bodies at its two ends. ``pressure`` with ``bore`` acts on the whole
 side, the barrel's closed end), pushing the rod out; with ``rod`` and no ``back`` on the
 annulus (the rod side), pulling it in; with both, ``pressure`` on the cap side against
 ``back`` on the annulus. ``damping`` c adds ``-c vs`` (vs the rate of extension: a damper
-resists its motion), alone or with a push, a pull or a pressure. The force analysis applies
+resists its motion), alone or with a push, a pull or a pressure; ``stiffness`` k with
+``free_length`` L0 a spring's ``k (L0 - L)`` (L the cylinder's length at the instant:
+compressed it pushes its ends apart, stretched it pulls them together), alone or with the
+others. The force analysis applies
 it (:mod:`polygon_method.forces.cylinder`); a cylinder on which the motion is given drives
 and its force is found, so a force given in it is refused.
 
 >>> c = LoadedCylinder("O-R", "O", "R", None, 2000.0, 50.0, "a push of 2 kN")
 >>> c.force_at(0.4), c.force_at(0.4, at_rest=True)
 (1980.0, 2000.0)
+>>> s = LoadedCylinder("O-R", "O", "R", None, 0.0, 0.0, "a spring", None, 2000.0, 0.25)
+>>> s.force_at(0.4, length=0.2), s.force_at(0.0, at_rest=True, length=0.3)
+(100.0, -100.0)
 """
 
 from __future__ import annotations
@@ -32,9 +39,9 @@ from dataclasses import dataclass
 
 from .records import Cylinder, split_name
 
-__all__ = ["LoadedCylinder", "stated", "_CylinderLoads"]
+__all__ = ["LoadedCylinder", "length_of", "stated", "_CylinderLoads"]
 
-_KEYS = ("push", "pull", "pressure", "bore", "rod", "back", "damping")
+_KEYS = ("push", "pull", "pressure", "bore", "rod", "back", "damping", "stiffness", "free_length")
 
 
 @dataclass(frozen=True)
@@ -49,11 +56,29 @@ class LoadedCylinder(Cylinder):
     #: a pressure on the annulus (Pa) and the bore's whole area (m^2), or None: the slip
     #: of the rod's area not taken off is asked of it (``check``)
     annulus: tuple | None = None
+    #: a spring's stiffness k (N/m, 0 without) and its free length L0 (m, None without)
+    stiffness: float = 0.0
+    free_length: float | None = None
 
-    def force_at(self, rate, at_rest=False):
-        """The force (N, + pushing apart) at the rate of extension ``rate`` (m/s; floats or
-        arrays): ``push - c rate``; at rest nothing moves, so the damper pushes nothing."""
-        return self.push if at_rest or not self.damping else self.push - self.damping * rate
+    def force_at(self, rate, at_rest=False, length=None):
+        """The force (N, + pushing apart) at the rate of extension ``rate`` (m/s) and the
+        length ``length`` (m; floats or arrays): ``push - c rate + k (L0 - L)``; at rest
+        nothing moves, so the damper pushes nothing (the spring still does)."""
+        f = self.push if at_rest or not self.damping else self.push - self.damping * rate
+        return f + self.spring_at(length) if self.stiffness else f
+
+    def spring_at(self, length):
+        """The spring's part ``k (L0 - L)`` (N, + pushing apart: compressed) at ``length``."""
+        if not self.stiffness:
+            return 0.0
+        return self.stiffness * (self.free_length - length)
+
+
+def length_of(c, P):
+    """The cylinder ``c``'s length |R - K| (m; floats or arrays) in the positions ``P``."""
+    (kx, ky), (rx, ry) = P[c.barrel], P[c.rod]
+    dx, dy = rx - kx, ry - ky
+    return (dx * dx + dy * dy) ** 0.5
 
 
 def stated(scene) -> tuple:
@@ -122,7 +147,7 @@ class _CylinderLoads:
         example = (
             f'a force in the cylinder {cyl.key} is {{ push = "2 kN" }} or {{ pull = "2 kN" }}, '
             '{ pressure = "5 N/mm^2", bore = 50 } (and rod = 20: on the annulus), and/or '
-            '{ damping = "400 N s/m" }'
+            '{ damping = "400 N s/m" }, and/or { stiffness = "2 N/mm", free_length = 250 }'
         )
         if not isinstance(spec, dict) or not spec:
             raise self.error(example, "loads", name)
@@ -170,9 +195,42 @@ class _CylinderLoads:
             words.append(
                 f"a damper of {spec['damping']}" + (" N s/m" if _bare(spec["damping"]) else "")
             )
+        k, free = self._spring(cyl, name, spec, words)
         return LoadedCylinder(
-            cyl.key, cyl.barrel, cyl.rod, cyl.stroke, push, c, ", ".join(words), annulus
+            cyl.key, cyl.barrel, cyl.rod, cyl.stroke, push, c, ", ".join(words), annulus, k, free
         )
+
+    def _spring(self, cyl, name, spec, words):
+        """(k N/m, L0 m) of a spring in the cylinder (0, None without); its words appended."""
+        if "stiffness" not in spec and "free_length" not in spec:
+            return 0.0, None
+        for k in ("stiffness", "free_length"):
+            if k not in spec:
+                raise self.error(
+                    f"a spring in the cylinder {cyl.key} needs its stiffness and its free "
+                    f'length (stiffness = "2 N/mm", free_length = 250): no {k}',
+                    "loads",
+                    name,
+                )
+        k = self.qty(spec["stiffness"], "stiffness", "loads", name, default_unit="N/m").value
+        if not k > 0:
+            raise self.error(
+                f"stiffness = {spec['stiffness']!r} is not positive: a spring's stiffness k > 0 "
+                "(F = k (L0 - L), compressed it pushes its ends apart)",
+                "loads",
+                name,
+            )
+        free = self.length(spec["free_length"], "loads", name, positive=False)
+        if not free > 0:
+            raise self.error(
+                f"free_length = {spec['free_length']!r} is not positive: a spring's free "
+                "length is its length unloaded, L0 > 0",
+                "loads",
+                name,
+            )
+        unit = " N/m" if _bare(spec["stiffness"]) else ""
+        words.append(f"a spring of {spec['stiffness']}{unit}, free length {self._words(free)}")
+        return k, free
 
     def _oil(self, cyl, name, spec):
         """(the force, + pushing apart; its words) of a pressure on the cylinder's piston."""

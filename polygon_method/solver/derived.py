@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections import defaultdict
 
 from ..common.tolerances import crossing_angle
-from ..scene.cylinder_loads import stated
+from ..scene.cylinder_loads import length_of, stated
 
 from ..steps.rounding import largest
 from .plan import pin_entry
@@ -148,10 +148,11 @@ class PinRubbing:
         return f"PinRubbing({self.point!r}, radius={self.radius!r}, pairs={self.pairs!r})"
 
 
-def power_terms(scene, V, W, S=None) -> list:
+def power_terms(scene, V, W, S=None, P=None) -> list:
     """(what, power in W) of each load: F . v for forces, T w for torques on links; with the
     sliding rates ``S``, then ``F vs`` of each passive cylinder's given force (vs its rate
-    of extension; at rest a damper pushes nothing), named ``cylinder C-R``."""
+    of extension; at rest a damper pushes nothing; with the positions ``P`` a spring's
+    ``k (L0 - L)``), named ``cylinder C-R``."""
     out = []
     for load in scene.loads:
         if load.force is not None:
@@ -162,16 +163,17 @@ def power_terms(scene, V, W, S=None) -> list:
             out.append((load.target, load.torque * W[scene.link(load.target).key]))
     for c in stated(scene) if S is not None else ():  # (after the loads: zipped with them)
         vs = S[c.key][0]
-        out.append((f"cylinder {c.key}", c.force_at(vs, scene.at_rest) * vs))
+        n = length_of(c, P) if c.stiffness else None  # (a spring: its length)
+        out.append((f"cylinder {c.key}", c.force_at(vs, scene.at_rest, n) * vs))
     return out
 
 
-def input_torque(scene, V, W, omega, S=None):
+def input_torque(scene, V, W, omega, S=None, P=None):
     """T on the crank, ccw positive, from the power balance; None without loads (``S``: a
     passive cylinder's given force is a load, :func:`power_terms`)."""
     if not (scene.loads or S is not None and stated(scene)) or scene.input.second is not None:
         return None  # two inputs: one power balance does not give two driving torques
-    terms = power_terms(scene, V, W, S)
+    terms = power_terms(scene, V, W, S, P)
     total = terms[0][1]
     for _, p in terms[1:]:
         total = total + p

@@ -208,7 +208,7 @@ def forces_lines(sol) -> list:
             f"guide at {g.point}: normal force on block {g.point} {_vec(g.force, F)}"
             + (f"; its couple {_moment(g.couple, M)}" if _rack_couple(f, g) else "")
         )
-    out += [given_line(sc, sol.S, k, v) for k, v in given_forces(f)]  # a strut, a damper
+    out += [given_line(sc, sol.S, k, v, sol.P) for k, v in given_forces(f)]  # a strut, a spring
     for c in f.contacts:
         out.append(
             f"contact of {_wheel(c.wheel)} with {_base(c)}: normal "
