@@ -198,7 +198,7 @@ TINY: dict[str, float] = {
     "force": 1e-9,  # N
     "torque": 1e-12,  # N m
 }
-#: a stiffness below the smallest force per millimetre: a nanonewton per mm (1e-6 N/m)
+#: a stiffness below the smallest force per millimetre (a nanonewton per mm) is a slip
 TINY["stiffness"] = TINY["force"] / UNITS["length"]["mm"]
 
 #: an answer's kind (the prefix of its key: ``v_C``, ``omega_BC``, ``F_B``, ``torque``) -> the SI
