@@ -134,10 +134,13 @@ BODIES = {  # link: (mass, centre, gyration, angle)
 }
 
 
-def reference(angle, push, damping, massive=True, omega=OMEGA, alpha=0.0, rest=False):
+def reference(
+    angle, push, damping, massive=True, omega=OMEGA, alpha=0.0, rest=False, spring=(0, 0)
+):
     """The cylinder's force, the torque on the crank and the pin forces at the crank angle
     ``angle`` (deg) turning at ``omega`` rad/s ccw (``rest``: at rest where it stands, the
-    velocities nought), by the matrix method and by the virtual power."""
+    velocities nought; ``spring``: (k N/m, L0 m), its force k (L0 - L), L the closed-form
+    length), by the matrix method and by the virtual power."""
     with mpmath.workdps(30):
         th = mpmath.radians(angle)
         P, d1, d2 = _place(th), _diff(th, 1), _diff(th, 2)
@@ -150,7 +153,7 @@ def reference(angle, push, damping, massive=True, omega=OMEGA, alpha=0.0, rest=F
             for k, v in d2.items()
         }
         vs = vel["L"]
-        F = push - damping * vs
+        F = push - damping * vs + mpmath.mpf(spring[0]) * (mpmath.mpf(spring[1]) - P["L"])
         C = (mpmath.mpf("0.45"), mpmath.mpf("-0.15"))
         u = ((P["R"][0] - C[0]) / P["L"], (P["R"][1] - C[1]) / P["L"])
         ne = NewtonEuler(["OA", "AB", "QB"], mp=True)
@@ -173,7 +176,7 @@ def reference(angle, push, damping, massive=True, omega=OMEGA, alpha=0.0, rest=F
             power += fx * d1[g][0] + fy * d1[g][1] - inertia * ang_acc * ang_vel
         x = {k: float(v) for k, v in ne.solve().items()}
         x["T_power"] = float(-power)
-        x["F"], x["vs"] = float(F), float(vs)
+        x["F"], x["vs"], x["L"] = float(F), float(vs), float(P["L"])
         x["R"] = tuple(float(c) for c in P["R"])
         x["u"] = tuple(float(c) for c in u)
         return x
