@@ -149,3 +149,21 @@ def test_the_stiffness_units(tmp_path, capsys):
         assert main(["solve", str(scene)]) == 2
         err = capsys.readouterr().err.strip()
         assert words in err and len(err.splitlines()) == 1 and "C-R" in err, err
+
+
+def test_the_worked_problem_and_its_answers():
+    from pathlib import Path
+
+    from polygon_method.check import check_answers
+    from polygon_method.scene import load_scene
+
+    path = Path(__file__).resolve().parent.parent / "worked_problems"
+    sol = solve(load_scene(path / "cylinder_spring_damper_on_rocker.toml"))
+    ref = reference(60.0, 0.0, 400.0, spring=(K, 0.25))
+    assert ref["L"] > 0.25  # stretched: the spring pulls
+    size = max(abs(v) for v in ref.values() if isinstance(v, float))
+    assert sol.forces.input_torque == pytest.approx(ref["T"], abs=1e-9 * size)
+    rows = check_answers(sol)
+    assert len(rows) == 7 and all(r.ok for r in rows), rows
+    assert abs(rows[1].given - ref["T"]) < 0.0005 * abs(ref["T"])  # the file's 4 figures
+    assert abs(rows[6].given - abs(ref["F"])) < 0.0005 * abs(ref["F"])

@@ -54,6 +54,7 @@ def _scenes():
         "block": lambda: with_forces(load_scene(WORKED / "ellipse_trammel.toml"), 3),
         "cylinder": lambda: with_forces(load_scene(WORKED / "tipper_cylinder.toml"), 3),
         "pulled": lambda: load_scene(WORKED / "cylinder_pull_on_rocker.toml"),  # a given force
+        "spring": lambda: load_scene(WORKED / "cylinder_spring_damper_on_rocker.toml"),
         "triad": lambda: load_scene(WORKED / "class3_six_bar_forces.toml"),
     }
 
