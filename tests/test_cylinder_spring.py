@@ -167,3 +167,41 @@ def test_the_worked_problem_and_its_answers():
     assert len(rows) == 7 and all(r.ok for r in rows), rows
     assert abs(rows[1].given - ref["T"]) < 0.0005 * abs(ref["T"])  # the file's 4 figures
     assert abs(rows[6].given - abs(ref["F"])) < 0.0005 * abs(ref["F"])
+
+
+@pytest.mark.parametrize(
+    "slip, spring",
+    [("spring_sense_turned", (-K, L0)), ("free_length_left_out", (K, 0.0))],
+)
+def test_check_names_the_springs_slips(slip, spring):
+    """The torque a slip gives, worked by the matrix method with the slip's force (``k (L -
+    L0)``, or ``-k L``), is named by ``check``; the right one is right."""
+    from polygon_method.check import check_answers
+
+    load = '{ stiffness = "2 N/mm", free_length = 310 }'
+    for spr, ok in ((spring, False), ((K, L0), True)):
+        ref = reference(250.0, 0.0, 0.0, spring=spr)
+        way = "ccw" if ref["T"] > 0 else "cw"
+        text = scene_text(load, 250.0) + f'[answers]\ntorque = "{abs(ref["T"]):.5g} N m {way}"\n'
+        (row,) = check_answers(solve(parse_scene(text)))
+        assert row.ok == ok and (ok or row.mistake == slip), row
+
+
+@pytest.mark.parametrize("angle", [30.0, 250.0])
+def test_the_bounds_hold_with_a_spring(angle):
+    """Each force's stated error bound (a spring's force erring by k times its length's
+    bound) holds against the 30-digit matrix method."""
+    from polygon_method.forces.bounds import force_bounds
+
+    load = '{ stiffness = "2 N/mm", free_length = 310, damping = "400 N s/m" }'
+    sol = solve(parse_scene(scene_text(load, angle)))
+    ref = reference(angle, 0.0, 400.0, spring=(K, L0))
+    f, b = sol.forces, force_bounds(sol)
+    assert 0 < b.effort < 1e-9
+    assert abs(f.input_torque - ref["T"]) <= b.effort * b.force * b.length
+    ref["R.x"], ref["R.y"] = ref["F"] * ref["u"][0], ref["F"] * ref["u"][1]  # F u on QB
+    for pin, on, by in (("O", "OA", "frame"), ("B", "AB", "QB"), ("R", "QB", "C-R")):
+        got = _pin(f, pin, on, by)
+        err = math.hypot(got[0] - ref[pin + ".x"], got[1] - ref[pin + ".y"])
+        (e,) = [v for (p, o, y), v in b.pins.items() if p == pin and {o, y} == {on, by}]
+        assert err <= e * b.force, pin

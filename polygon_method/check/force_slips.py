@@ -101,7 +101,8 @@ def force_slips(d, kind, names, signed):
 
 def _cylinder_slips(c) -> list:
     """(words, code, the cylinder as the slip has it) of a passive cylinder's given force:
-    left out, a pressure on the annulus taken on the whole bore, a damper's sense turned."""
+    left out, a pressure on the annulus taken on the whole bore, a damper's sense turned, a
+    spring's sense turned or its free length left out."""
     out = [
         (
             f"the force in the cylinder {c.key} left out",
@@ -128,6 +129,21 @@ def _cylinder_slips(c) -> list:
                 replace(c, damping=-c.damping),
             )
         )
+    if c.stiffness:
+        out += [
+            (
+                f"the spring in {c.key} taken as k (L - L0): a spring stretched pulls its ends "
+                "together, compressed pushes them apart, F = k (L0 - L)",
+                "spring_sense_turned",
+                replace(c, stiffness=-c.stiffness),
+            ),
+            (
+                f"the spring in {c.key} taken as k L, its free length left out: it pushes "
+                "only as far as it is compressed below its free length, F = k (L0 - L)",
+                "free_length_left_out",
+                replace(c, free_length=0.0),
+            ),
+        ]
     return out
 
 

@@ -176,7 +176,7 @@ def force_bounds(sol, f=None) -> ForceBounds:
             start[c.key] = c.damping * ev * kb.scales["velocity"] / F
         if c.stiffness:  # a spring's by k times its length's error (its two ends')
             el = (kb.P.get(c.rod, EPS) + kb.P.get(c.barrel, 0)) * kb.scales["position"]
-            start[c.key] = start.get(c.key, 0.0) + c.stiffness * el / F
+            start[c.key] = start.get(c.key, 0.0) + abs(c.stiffness) * el / F
     steps = _walk(sol, f, kb, F, L, start)
     driver = sol.plan.steps[0]  # the first input's step: a crank or a driving block
     by_index = {st.index: st for st in sol.plan.steps}
