@@ -118,10 +118,13 @@ def _power_terms(sc, res, f):
             terms.append(ld.force[0] * v[0] + ld.force[1] * v[1])
         else:
             terms.append(ld.torque * res.W[ld.target])
-    for c in sc.cylinders:  # a passive cylinder's given force: F vs
+    for c in sc.cylinders:  # a passive cylinder's given force (a spring's k (L0 - L)): F vs
         if hasattr(c, "push"):
             vs = res.S[c.key][0]
-            terms.append((c.push - c.damping * vs) * vs)
+            (kx, ky), (rx, ry) = res.P[c.barrel], res.P[c.rod]
+            L = ((rx - kx) ** 2 + (ry - ky) ** 2) ** 0.5
+            spring = c.stiffness * (c.free_length - L) if c.stiffness else 0.0
+            terms.append((c.push - c.damping * vs + spring) * vs)
     g = sc.gravity
     for m in sc.masses:
         G, v, a, al, w = _kin(res, m)

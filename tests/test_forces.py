@@ -211,10 +211,13 @@ def test_power_balance_with_inertia(path, seed):
             terms.append(ld.force[0] * v[0] + ld.force[1] * v[1])
         else:
             terms.append(ld.torque * sol.W[ld.target])
-    for c in sc.cylinders:  # a passive cylinder's given force: F vs
+    for c in sc.cylinders:  # a passive cylinder's given force (a spring's k (L0 - L)): F vs
         if hasattr(c, "push"):
             vs = sol.sliding_velocity(c.key)
-            terms.append((c.push - c.damping * vs) * vs)
+            (kx, ky), (rx, ry) = sol.P[c.barrel], sol.P[c.rod]
+            L = ((rx - kx) ** 2 + (ry - ky) ** 2) ** 0.5
+            spring = c.stiffness * (c.free_length - L) if c.stiffness else 0.0
+            terms.append((c.push - c.damping * vs + spring) * vs)
     g = sc.gravity
     for m in sc.masses:
         G, v, a, al, w = _kin(sol, m)
@@ -700,6 +703,13 @@ def test_the_sweep_balances_power_at_every_angle(path):
             terms.append(ld.force[0] * v[0] + ld.force[1] * v[1])
         else:
             terms.append(ld.torque * res.W[ld.target])
+    for c in sc.cylinders:  # a passive cylinder's given force (a spring's k (L0 - L)): F vs
+        if hasattr(c, "push"):
+            vs = res.S[c.key][0]
+            (kx, ky), (rx, ry) = res.P[c.barrel], res.P[c.rod]
+            L = ((rx - kx) ** 2 + (ry - ky) ** 2) ** 0.5
+            spring = c.stiffness * (c.free_length - L) if c.stiffness else 0.0
+            terms.append((c.push - c.damping * vs + spring) * vs)
     g = sc.gravity
     for m in sc.masses:
         G, v, a, al, w = _kin(res, m)
