@@ -27,8 +27,8 @@ and its force is found, so a force given in it is refused.
 >>> c = LoadedCylinder("O-R", "O", "R", None, 2000.0, 50.0, "a push of 2 kN")
 >>> c.force_at(0.4), c.force_at(0.4, at_rest=True)
 (1980.0, 2000.0)
->>> s = LoadedCylinder("O-R", "O", "R", None, 0.0, 0.0, "a spring", None, 2000.0, 0.25)
->>> s.force_at(0.4, length=0.2), s.force_at(0.0, at_rest=True, length=0.3)
+>>> s = LoadedCylinder("O-R", "O", "R", None, 0.0, 0.0, "a spring", None, 2000.0, 0.5)
+>>> s.force_at(0.4, length=0.25), s.force_at(0.0, at_rest=True, length=0.75)
 (100.0, -100.0)
 """
 
