@@ -29,7 +29,7 @@ and its force is found, so a force given in it is refused.
 (1980.0, 2000.0)
 >>> s = LoadedCylinder("O-R", "O", "R", None, 0.0, 0.0, "a spring", None, 2000.0, 0.5)
 >>> s.force_at(0.4, length=0.25), s.force_at(0.0, at_rest=True, length=0.75)
-(100.0, -100.0)
+(500.0, -500.0)
 """
 
 from __future__ import annotations
