@@ -96,7 +96,8 @@ from .records import (
 #: ``bodies(st)``, where present: the bodies it moves, in the order the sheet numbers them,
 #: else those of its force step; ``bind(st, own, ix)``, where present: its short road
 #: (:mod:`.core`), a function ``f(P, S, pins, guides)`` doing what ``step`` does to the
-#: numbered sums ``S`` (body ``ix(name)``), appending its pin forces ``(point, on, by,
+#: numbered sums ``S`` (three lists, Fx, Fy and M by the body's number ``ix(name)``:
+#: ``bodies.sums_add``, ``bodies.sums_of``), appending its pin forces ``(point, on, by,
 #: force)`` and guides' ``(point, normal, n, by)`` and returning the driver's effort or
 #: None, with no record made; None for a step with nothing to solve)
 #: the members a room may give, said once above for every room

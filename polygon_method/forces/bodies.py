@@ -73,6 +73,21 @@ def guided(qx, qy, known, xx, xy, n, r):
     return N, (px, py), (-(fx + px), -(fy + py)), den
 
 
+def sums_of(S, i):
+    """``(Fx, Fy, M about the origin)`` known on body ``i`` in the short road's sums ``S``:
+    three lists by the body's number (the frame 0), ``(Fx, Fy, M)``."""
+    return (S[0][i], S[1][i], S[2][i])
+
+
+def sums_add(S, i, fx, fy, x, y):
+    """A force ``(fx, fy)`` at ``(x, y)`` on body ``i`` added to the sums ``S``, as the
+    :class:`Ledger` adds it (``t + f``, ``t + cross(r, f)``)."""
+    sx, sy, sm = S
+    sx[i] = sx[i] + fx
+    sy[i] = sy[i] + fy
+    sm[i] = sm[i] + (x * fy - y * fx)
+
+
 def centre(P, lam, mu, p, q):
     """``p + lam (q - p) + mu perp(q - p)`` (a point carried on a link, its image on the
     velocity and the acceleration polygons alike)."""

@@ -38,10 +38,10 @@ def bind(st, own, ix):
 
     def run(P, S, pins, guides):
         ox, oy = P[pivot]
-        sx, sy, sm = S.fx, S.fy, S.m
+        sx, sy, sm = S
         fx, fy = sx[i], sy[i]  # solve(ox, oy, known) written out
         r, torque = (-fx, -fy), -(sm[i] - (ox * fy - oy * fx))
-        # S.add(0, -r, ox, oy); S.couple(0, -torque): -r is (fx, fy) itself
+        # sums_add(S, 0, -r, ox, oy) and the couple -torque: -r is (fx, fy) itself
         sx[0] = sx[0] + fx
         sy[0] = sy[0] + fy
         sm[0] = sm[0] + (ox * fy - oy * fx) + -torque  # the driver, on the frame, feels -T
