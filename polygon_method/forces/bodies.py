@@ -16,10 +16,13 @@ class Singular(Exception):
     """A force step's equations have no unique solution here (its words: why)."""
 
 
-#: the first item of a short road's raw pin entry holding a dyad's three pins at once
-#: (``(THREE_PINS, c, l1, l2, px, py, b, ob, ex, ey, d, od, gx, gy)``: the pin forces
-#: ``(px, py)``, ``(-ex, -ey)``, ``(-gx, -gy)``), expanded when the records are read
+#: the first item of the head of a short road's raw pin entry holding a dyad's three pins
+#: at once (``((THREE_PINS, c, l1, l2, b, ob, d, od), px, py, ex, ey, gx, gy)``: the pin
+#: forces ``(px, py)``, ``(-ex, -ey)``, ``(-gx, -gy)``), expanded when the records are read
 THREE_PINS = ("three pins",)
+#: the same for one pin whose force is kept negated (``((NEGATED_PIN, point, on, by), fx,
+#: fy)``: the force ``(-fx, -fy)``), as a crank's pivot keeps it
+NEGATED_PIN = ("a negated pin",)
 
 
 def any_zero(x) -> bool:

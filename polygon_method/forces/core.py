@@ -260,16 +260,22 @@ class ForcePlan:
 
 def pin_forces(pins) -> tuple:
     """The :class:`~.records.PinForce` s of :meth:`ForcePlan.run`'s raw pin entries, in
-    order: a dyad's entry (``THREE_PINS`` first) is its three pins."""
+    order: an entry whose first item is a head (a tuple) is a dyad's three pins
+    (``THREE_PINS`` first) or one pin kept negated (``NEGATED_PIN``: a crank's pivot)."""
     out = []
     for p in pins:
-        if p[0] is THREE_PINS:
-            _, c, l1, l2, px, py, b, ob, ex, ey, d, od, gx, gy = p
+        head = p[0]
+        if head.__class__ is not tuple:
+            out.append(PinForce(*p))
+        elif head[0] is THREE_PINS:
+            _, c, l1, l2, b, ob, d, od = head
+            _, px, py, ex, ey, gx, gy = p
             out.append(PinForce(c, l1, l2, (px, py)))
             out.append(PinForce(b, l1, ob, (-ex, -ey)))
             out.append(PinForce(d, l2, od, (-gx, -gy)))
-        else:
-            out.append(PinForce(*p))
+        else:  # NEGATED_PIN
+            _, point, on, by = head
+            out.append(PinForce(point, on, by, (-p[1], -p[2])))
     return tuple(out)
 
 

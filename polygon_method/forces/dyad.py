@@ -69,6 +69,7 @@ def bind(st, own, ix):
     ob, od = own[b], own[d]
     i1, i2, ib, id_ = ix(l1), ix(l2), ix(ob), ix(od)
     why = f"{b}, {c} and {d} are in a line"
+    head = (THREE_PINS, c, l1, l2, b, ob, d, od)  # what its raw pin entry always holds
 
     def run(P, S, pins, guides):
         # solve(...) written out, the same operations in the same order (no call, no
@@ -90,7 +91,7 @@ def bind(st, own, ix):
         ex, ey, gx, gy = f1x + px, f1y + py, f2x - px, f2y - py
         # its three pins, (c, l1, l2, (px, py)), (b, l1, ob, (-ex, -ey)) and (d, l2, od,
         # (-gx, -gy)), in one tuple: made into records only when they are read
-        pins.append((THREE_PINS, c, l1, l2, px, py, b, ob, ex, ey, d, od, gx, gy))
+        pins.append((head, px, py, ex, ey, gx, gy))
         sx[ib] = sx[ib] + ex  # sums_add(S, ib, ex, ey, bx, by), written out
         sy[ib] = sy[ib] + ey
         sm[ib] = sm[ib] + (bx * ey - by * ex)
