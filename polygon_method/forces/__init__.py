@@ -220,9 +220,11 @@ def analyse(motion) -> Forces:
     walk is repeated with the friction of the forces found before until they settle
     (:mod:`.friction`)."""
     scene, plan = motion.scene, motion.plan
+    fp = plan.force_plan  # made once per plan and scene (force_plan), kept on the plan
+    if fp is not None and fp.fast and fp.scene is scene:  # the short road and nothing else
+        return fp.run(motion)
     if scene.at_rest:  # the weights and loads alone, no inertia: nothing moves
         motion = still(motion)
-    fp = plan.force_plan  # made once per plan and scene (force_plan), kept on the plan
     if fp is None or fp.scene is not scene:
         fp = force_plan(scene, plan)
     if scene.friction is not None:

@@ -53,7 +53,8 @@ class Numbering:
 class ForcePlan:
     """What the force analysis of ``scene`` on ``plan`` needs, worked out once (see the
     module). ``own``: point -> the body its forces act on; ``quick``: whether every group
-    has its short road; ``driving``: a step that drives the mechanism by a force found
+    has its short road; ``fast``: that, and the scene neither at rest nor with friction
+    (its forces are :meth:`run` alone); ``driving``: a step that drives the mechanism by a force found
     from the walk (a cylinder), or None."""
 
     def __init__(self, scene, plan):
@@ -72,6 +73,8 @@ class ForcePlan:
         self.quick = self.driving is None and all(
             hasattr(ROOMS[st.kind], "bind") for st in plan.steps
         )
+        # the short road and nothing about it: not at rest, no friction
+        self.fast = self.quick and not scene.at_rest and scene.friction is None
         if not self.quick:
             return
         ix = Numbering()
