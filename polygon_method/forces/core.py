@@ -7,10 +7,10 @@ each group's bodies and points. :class:`ForcePlan` works all of that out once; i
 :meth:`~ForcePlan.run` then adds the known forces on each body into numbered sums
 (three lists, ``(Fx, Fy, M about the origin)`` by the body's number, the frame 0: the
 same additions, in the same order, as the :class:`~polygon_method.forces.bodies.Ledger`
-makes them; :func:`~.bodies.sums_add`, :func:`~.bodies.sums_of`) and calls each group's equations
-(its room's ``solve``, the one place they are written) in the plan's reverse order: the
-function each room's ``bind`` gives, on floats for one instant or on arrays of crank
-angles for a sweep alike.
+makes them; :func:`~.bodies.sums_add`, :func:`~.bodies.sums_of`) and calls each group's
+equations (its room's ``solve``, the one place they are written) in the plan's reverse
+order: the function each room's ``bind`` gives, on floats for one instant or on arrays
+of crank angles for a sweep alike.
 
 It keeps the pin forces, the guides' forces, the driver's effort and the shaking force and
 moment as plain numbers; the records a reader may ask for (:class:`~.records.Inertia`,
