@@ -96,7 +96,8 @@ from .records import (
 #: ``bodies(st)``, where present: the bodies it moves, in the order the sheet numbers them,
 #: else those of its force step; ``bind(st, own, ix)``, where present: its short road
 #: (:mod:`.core`), a function ``f(P, S, pins, guides)`` doing what ``step`` does to the
-#: numbered sums ``S`` (body ``ix(name)``), appending its pin forces ``(point, on, by,
+#: numbered sums ``S`` (three lists, Fx, Fy and M by the body's number ``ix(name)``:
+#: ``bodies.sums_add``, ``bodies.sums_of``), appending its pin forces ``(point, on, by,
 #: force)`` and guides' ``(point, normal, n, by)`` and returning the driver's effort or
 #: None, with no record made; None for a step with nothing to solve)
 #: the members a room may give, said once above for every room
@@ -219,9 +220,11 @@ def analyse(motion) -> Forces:
     walk is repeated with the friction of the forces found before until they settle
     (:mod:`.friction`)."""
     scene, plan = motion.scene, motion.plan
+    fp = plan.force_plan  # made once per plan and scene (force_plan), kept on the plan
+    if fp is not None and fp.fast and fp.scene is scene:  # the short road and nothing else
+        return fp.run(motion)
     if scene.at_rest:  # the weights and loads alone, no inertia: nothing moves
         motion = still(motion)
-    fp = plan.force_plan  # made once per plan and scene (force_plan), kept on the plan
     if fp is None or fp.scene is not scene:
         fp = force_plan(scene, plan)
     if scene.friction is not None:

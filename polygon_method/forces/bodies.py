@@ -16,10 +16,13 @@ class Singular(Exception):
     """A force step's equations have no unique solution here (its words: why)."""
 
 
-#: the first item of a short road's raw pin entry holding a dyad's three pins at once
-#: (``(THREE_PINS, c, l1, l2, px, py, b, ob, ex, ey, d, od, gx, gy)``: the pin forces
-#: ``(px, py)``, ``(-ex, -ey)``, ``(-gx, -gy)``), expanded when the records are read
+#: the first item of the head of a short road's raw pin entry holding a dyad's three pins
+#: at once (``((THREE_PINS, c, l1, l2, b, ob, d, od), px, py, ex, ey, gx, gy)``: the pin
+#: forces ``(px, py)``, ``(-ex, -ey)``, ``(-gx, -gy)``), expanded when the records are read
 THREE_PINS = ("three pins",)
+#: the same for one pin whose force is kept negated (``((NEGATED_PIN, point, on, by), fx,
+#: fy)``: the force ``(-fx, -fy)``), as a crank's pivot keeps it
+NEGATED_PIN = ("a negated pin",)
 
 
 def any_zero(x) -> bool:
@@ -71,6 +74,21 @@ def guided(qx, qy, known, xx, xy, n, r):
     N = -(mq + (ex * ry - ey * rx)) / den  # cross(X - Q, r)
     px, py = N * nx + rx, N * ny + ry
     return N, (px, py), (-(fx + px), -(fy + py)), den
+
+
+def sums_of(S, i):
+    """``(Fx, Fy, M about the origin)`` known on body ``i`` in the short road's sums ``S``:
+    three lists by the body's number (the frame 0), ``(Fx, Fy, M)``."""
+    return (S[0][i], S[1][i], S[2][i])
+
+
+def sums_add(S, i, fx, fy, x, y):
+    """A force ``(fx, fy)`` at ``(x, y)`` on body ``i`` added to the sums ``S``, as the
+    :class:`Ledger` adds it (``t + f``, ``t + cross(r, f)``)."""
+    sx, sy, sm = S
+    sx[i] = sx[i] + fx
+    sy[i] = sy[i] + fy
+    sm[i] = sm[i] + (x * fy - y * fx)
 
 
 def centre(P, lam, mu, p, q):

@@ -44,7 +44,7 @@ from __future__ import annotations
 
 from ..common.numbers import fmt
 from ..steps.rounding import vhypot
-from .bodies import Singular, any_zero, cross, guided, least
+from .bodies import sums_add, sums_of, Singular, any_zero, cross, guided, least
 from .records import FRAME, ForcePolygon, ForceStep, GuideForce, PinForce, Side, block
 
 
@@ -111,14 +111,16 @@ def bind(st, own, ix):
 
     def run(P, S, pins, guides):
         w = axes(P, K, N)
-        n, f, p, fd, fk, _ = solve(P[K], P[C], P[D], w, S.of(ir), S.of(ibl), S.of(il))
+        n, f, p, fd, fk, _ = solve(
+            P[K], P[C], P[D], w, sums_of(S, ir), sums_of(S, ibl), sums_of(S, il)
+        )
         if f is None:
             raise Singular(at_pivot if n is None else dead)
         guides.append((C, n, (-w[1], w[0]), rod))
         pins += ((C, link, bl, p), (D, link, FRAME, fd), (K, rod, FRAME, fk))
         (dx, dy), (kx, ky) = P[D], P[K]
-        S.add(0, -fd[0], -fd[1], dx, dy)
-        S.add(0, -fk[0], -fk[1], kx, ky)
+        sums_add(S, 0, -fd[0], -fd[1], dx, dy)
+        sums_add(S, 0, -fk[0], -fk[1], kx, ky)
         return f
 
     return run

@@ -5,11 +5,12 @@ instant: which body each point's forces act on (:func:`~polygon_method.forces.ow
 each mass's body, centre (``lam``, ``mu`` on its link) and weight, each load's body, and
 each group's bodies and points. :class:`ForcePlan` works all of that out once; its
 :meth:`~ForcePlan.run` then adds the known forces on each body into numbered sums
-(:class:`Sums`: the same additions, in the same order, as the
-:class:`~polygon_method.forces.bodies.Ledger` makes them) and calls each group's equations
-(its room's ``solve``, the one place they are written) in the plan's reverse order: the
-function each room's ``bind`` gives, on floats for one instant or on arrays of crank
-angles for a sweep alike.
+(three lists, ``(Fx, Fy, M about the origin)`` by the body's number, the frame 0: the
+same additions, in the same order, as the :class:`~polygon_method.forces.bodies.Ledger`
+makes them; :func:`~.bodies.sums_add`, :func:`~.bodies.sums_of`) and calls each group's
+equations (its room's ``solve``, the one place they are written) in the plan's reverse
+order: the function each room's ``bind`` gives, on floats for one instant or on arrays
+of crank angles for a sweep alike.
 
 It keeps the pin forces, the guides' forces, the driver's effort and the shaking force and
 moment as plain numbers; the records a reader may ask for (:class:`~.records.Inertia`,
@@ -27,43 +28,16 @@ from __future__ import annotations
 import functools
 import weakref
 
-from .bodies import THREE_PINS, Singular, centre, inertia_record
+from .bodies import THREE_PINS, Singular, centre, inertia_record, sums_add, sums_of
 from .collar import second_name
 from .engine import indicator_forces
 from .records import FRAME, Forces, GuideForce, PinForce, block
 
-__all__ = ["ForcePlan", "Sums", "force_plan"]
-
-
-class Sums:
-    """The resultant ``(Fx, Fy, M about the origin)`` of the known forces on each body,
-    by the body's number (the frame 0): three lists, added to as the
-    :class:`~polygon_method.forces.bodies.Ledger` adds (``t + f``, ``t + cross(r, f)``)."""
-
-    __slots__ = ("fx", "fy", "m")
-
-    def __init__(self, zeros):
-        self.fx = zeros[:]
-        self.fy = zeros[:]
-        self.m = zeros[:]
-
-    def add(self, i, fx, fy, x, y):
-        """A force ``(fx, fy)`` at ``(x, y)`` on body ``i``."""
-        self.fx[i] = self.fx[i] + fx
-        self.fy[i] = self.fy[i] + fy
-        self.m[i] = self.m[i] + (x * fy - y * fx)
-
-    def couple(self, i, c):
-        """A couple ``c`` (N m, ccw positive) on body ``i``."""
-        self.m[i] = self.m[i] + c
-
-    def of(self, i):
-        """``(Fx, Fy, M about the origin)`` known on body ``i``."""
-        return (self.fx[i], self.fy[i], self.m[i])
+__all__ = ["ForcePlan", "force_plan"]
 
 
 class Numbering:
-    """body name -> its number in the :class:`Sums` (the frame 0), given as first asked."""
+    """body name -> its number in the sums (the frame 0), given as first asked."""
 
     def __init__(self):
         self.index = {FRAME: 0}
@@ -79,7 +53,8 @@ class Numbering:
 class ForcePlan:
     """What the force analysis of ``scene`` on ``plan`` needs, worked out once (see the
     module). ``own``: point -> the body its forces act on; ``quick``: whether every group
-    has its short road; ``driving``: a step that drives the mechanism by a force found
+    has its short road; ``fast``: that, and the scene neither at rest nor with friction
+    (its forces are :meth:`run` alone); ``driving``: a step that drives the mechanism by a force found
     from the walk (a cylinder), or None."""
 
     def __init__(self, scene, plan):
@@ -98,6 +73,8 @@ class ForcePlan:
         self.quick = self.driving is None and all(
             hasattr(ROOMS[st.kind], "bind") for st in plan.steps
         )
+        # the short road and nothing about it: not at rest, no friction
+        self.fast = self.quick and not scene.at_rest and scene.friction is None
         if not self.quick:
             return
         ix = Numbering()
@@ -166,11 +143,8 @@ class ForcePlan:
         numbers (the effort, the shaking force and moment: the frame's sums); its records
         made when first read, from the raw pin and guide forces kept."""
         P, A, Al = motion.P, motion.A, motion.Al
-        S = _new(Sums)  # Sums(self.zeros), one call fewer
-        z = self.zeros
-        S.fx = sx = z[:]
-        S.fy = sy = z[:]
-        S.m = sm = z[:]
+        z = self.zeros  # the sums: (Fx, Fy, M) by the body's number, three lists
+        S = (sx, sy, sm) = (z[:], z[:], z[:])
         for i, p, q, body, lam, mu, nm, ni, wx, wy in self.on_links:  # G, a_G: as centre
             (px, py), (qx, qy) = P[p], P[q]
             dx, dy = qx - px, qy - py
@@ -179,7 +153,7 @@ class ForcePlan:
             dx, dy = qx - px, qy - py
             fx = nm * (px + lam * dx - mu * dy)  # -m a_G
             fy = nm * (py + lam * dy + mu * dx)
-            # S.add(i, fx, fy, gx, gy), S.couple(i, -I alpha), the weight's: in order
+            # sums_add(S, i, fx, fy, gx, gy), the couple -I alpha, the weight's: in order
             if wx is None:
                 sx[i] = sx[i] + fx
                 sy[i] = sy[i] + fy
@@ -200,23 +174,23 @@ class ForcePlan:
                 sy[i] = sy[i] + fy
                 sm[i] = sm[i] + (gx * fy - gy * fx)
         for i, target, f, gas in self.loads:
-            if i is None:  # a couple on a link: S.couple(target, f)
+            if i is None:  # a couple on a link: added to its moment
                 sm[target] = sm[target] + f
                 continue
             x, y = P[target]
             fx, fy = f
-            sx[i] = sx[i] + fx  # S.add(i, fx, fy, x, y)
+            sx[i] = sx[i] + fx  # sums_add(S, i, fx, fy, x, y)
             sy[i] = sy[i] + fy
             sm[i] = sm[i] + (x * fy - y * fx)
             if gas:  # the gas pushes the cylinder's cover (the frame) as hard, back
-                S.add(0, -fx, -fy, x, y)
+                sums_add(S, 0, -fx, -fy, x, y)
         if self.indicators:
             for i, (piston, fx, fy, _) in zip(
                 self.indicators, indicator_forces(self.scene, motion)
             ):
                 x, y = P[piston]
-                S.add(i, fx, fy, x, y)
-                S.add(0, -fx, -fy, x, y)
+                sums_add(S, i, fx, fy, x, y)
+                sums_add(S, 0, -fx, -fy, x, y)
         pins, guides = [], []
         effort = second = None
         for st, fn, first in self.steps:
@@ -268,7 +242,7 @@ class ForcePlan:
     def resultant(self, source, body) -> tuple:
         """``body``'s resultant in the sums (zero for a body with none)."""
         i = self.index.get(body)
-        return (0.0, 0.0, 0.0) if i is None else source[4].of(i)
+        return (0.0, 0.0, 0.0) if i is None else sums_of(source[4], i)
 
     def records(self, motion, pins, guides) -> tuple:
         """(:class:`~.records.Inertia` s, :class:`~.records.PinForce` s,
@@ -289,16 +263,22 @@ class ForcePlan:
 
 def pin_forces(pins) -> tuple:
     """The :class:`~.records.PinForce` s of :meth:`ForcePlan.run`'s raw pin entries, in
-    order: a dyad's entry (``THREE_PINS`` first) is its three pins."""
+    order: an entry whose first item is a head (a tuple) is a dyad's three pins
+    (``THREE_PINS`` first) or one pin kept negated (``NEGATED_PIN``: a crank's pivot)."""
     out = []
     for p in pins:
-        if p[0] is THREE_PINS:
-            _, c, l1, l2, px, py, b, ob, ex, ey, d, od, gx, gy = p
+        head = p[0]
+        if head.__class__ is not tuple:
+            out.append(PinForce(*p))
+        elif head[0] is THREE_PINS:
+            _, c, l1, l2, b, ob, d, od = head
+            _, px, py, ex, ey, gx, gy = p
             out.append(PinForce(c, l1, l2, (px, py)))
             out.append(PinForce(b, l1, ob, (-ex, -ey)))
             out.append(PinForce(d, l2, od, (-gx, -gy)))
-        else:
-            out.append(PinForce(*p))
+        else:  # NEGATED_PIN
+            _, point, on, by = head
+            out.append(PinForce(point, on, by, (-p[1], -p[2])))
     return tuple(out)
 
 

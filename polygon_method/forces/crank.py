@@ -14,6 +14,7 @@ from __future__ import annotations
 import math
 
 from ..common.numbers import fmt, quiet
+from .bodies import NEGATED_PIN
 from .records import FRAME, ForceStep, PinForce, Side
 
 
@@ -35,17 +36,18 @@ def owns(st) -> dict:
 
 def bind(st, own, ix):
     pivot, link, i = st.pivot, st.link, ix(st.link)
+    head = (NEGATED_PIN, pivot, link, FRAME)  # its raw pin entry: the force (-fx, -fy)
 
     def run(P, S, pins, guides):
         ox, oy = P[pivot]
-        sx, sy, sm = S.fx, S.fy, S.m
+        sx, sy, sm = S
         fx, fy = sx[i], sy[i]  # solve(ox, oy, known) written out
-        r, torque = (-fx, -fy), -(sm[i] - (ox * fy - oy * fx))
-        # S.add(0, -r, ox, oy); S.couple(0, -torque): -r is (fx, fy) itself
+        torque = -(sm[i] - (ox * fy - oy * fx))  # and r = (-fx, -fy), made when read
+        # sums_add(S, 0, -r, ox, oy) and the couple -torque: -r is (fx, fy) itself
         sx[0] = sx[0] + fx
         sy[0] = sy[0] + fy
         sm[0] = sm[0] + (ox * fy - oy * fx) + -torque  # the driver, on the frame, feels -T
-        pins.append((pivot, link, FRAME, r))
+        pins.append((head, fx, fy))
         return torque
 
     return run

@@ -15,6 +15,7 @@ The driver's reaction ``-F u`` and the guide's ``-N n`` act on the frame at the 
 from __future__ import annotations
 
 from ..common.numbers import fmt
+from .bodies import sums_add, sums_of
 from .records import FRAME, ForceStep, GuideForce, Side, block
 
 
@@ -40,10 +41,10 @@ def bind(st, own, ix):
     ux, uy = st.path.u
 
     def run(P, S, pins, guides):
-        f, n = solve(S.of(i), (ux, uy))
+        f, n = solve(sums_of(S, i), (ux, uy))
         guides.append((x, n, (-uy, ux), FRAME))
         xx, xy = P[x]
-        S.add(0, -(f * ux + n * -uy), -(f * uy + n * ux), xx, xy)
+        sums_add(S, 0, -(f * ux + n * -uy), -(f * uy + n * ux), xx, xy)
         return f
 
     return run

@@ -69,12 +69,13 @@ def bind(st, own, ix):
     ob, od = own[b], own[d]
     i1, i2, ib, id_ = ix(l1), ix(l2), ix(ob), ix(od)
     why = f"{b}, {c} and {d} are in a line"
+    head = (THREE_PINS, c, l1, l2, b, ob, d, od)  # what its raw pin entry always holds
 
     def run(P, S, pins, guides):
         # solve(...) written out, the same operations in the same order (no call, no
         # tuple between them): the forces to the last bit of the long road's
         (bx, by), (dx, dy), (cx, cy) = P[b], P[d], P[c]
-        sx, sy, sm = S.fx, S.fy, S.m
+        sx, sy, sm = S
         f1x, f1y, f2x, f2y = sx[i1], sy[i1], sx[i2], sy[i2]
         m1b = sm[i1] - (bx * f1y - by * f1x)  # about B
         m2d = sm[i2] - (dx * f2y - dy * f2x)  # about D
@@ -90,11 +91,11 @@ def bind(st, own, ix):
         ex, ey, gx, gy = f1x + px, f1y + py, f2x - px, f2y - py
         # its three pins, (c, l1, l2, (px, py)), (b, l1, ob, (-ex, -ey)) and (d, l2, od,
         # (-gx, -gy)), in one tuple: made into records only when they are read
-        pins.append((THREE_PINS, c, l1, l2, px, py, b, ob, ex, ey, d, od, gx, gy))
-        sx[ib] = sx[ib] + ex  # S.add(ib, ex, ey, bx, by), written out
+        pins.append((head, px, py, ex, ey, gx, gy))
+        sx[ib] = sx[ib] + ex  # sums_add(S, ib, ex, ey, bx, by), written out
         sy[ib] = sy[ib] + ey
         sm[ib] = sm[ib] + (bx * ey - by * ex)
-        sx[id_] = sx[id_] + gx  # S.add(id_, gx, gy, dx, dy)
+        sx[id_] = sx[id_] + gx  # sums_add(S, id_, gx, gy, dx, dy)
         sy[id_] = sy[id_] + gy
         sm[id_] = sm[id_] + (dx * gy - dy * gx)
 

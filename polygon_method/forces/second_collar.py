@@ -22,6 +22,7 @@ from __future__ import annotations
 from ..common.numbers import fmt
 from .collar import axes
 from .driver import solve
+from .bodies import sums_add, sums_of
 from .records import ForceStep, GuideForce, Side, block
 
 __all__ = ["solve", "owns", "blocks", "bodies", "bind", "step"]
@@ -47,10 +48,10 @@ def bind(st, own, ix):
 
     def run(P, S, pins, guides):
         wx, wy = axes(P, K, N)
-        f, n = solve(S.of(i), (wx, wy))
+        f, n = solve(sums_of(S, i), (wx, wy))
         guides.append((C, n, (-wy, wx), rod))
         cx, cy = P[C]
-        S.add(ir, -(f * wx - n * wy), -(f * wy + n * wx), cx, cy)
+        sums_add(S, ir, -(f * wx - n * wy), -(f * wy + n * wx), cx, cy)
         return f
 
     return run

@@ -22,7 +22,7 @@ Then ``P = N n + R`` and the link's force balance gives the force on it at B, ``
 from __future__ import annotations
 
 from ..steps.rounding import vhypot
-from .bodies import Singular, cross, guided, outer_pin, unit
+from .bodies import sums_add, sums_of, Singular, cross, guided, outer_pin, unit
 from ..common.numbers import fmt
 from .records import FRAME, ForceStep, GuideForce, PinForce, Side, block
 
@@ -85,14 +85,14 @@ def bind(st, own, ix):
     def run(P, S, pins, guides):
         (bx, by), (xx, xy) = P[b], P[x]
         v = u if fixed else guide(st, P, own)[0]
-        n, p, fb, _ = solve(bx, by, S.of(il), xx, xy, S.of(ibl), v, False)
+        n, p, fb, _ = solve(bx, by, sums_of(S, il), xx, xy, sums_of(S, ibl), v, False)
         if n is None:
             raise Singular(why)
         nv = (-v[1], v[0])
         guides.append((x, n, nv, gb))
         pins += ((x, lk, bl, p), (b, lk, ob, fb))
-        S.add(ib, -fb[0], -fb[1], bx, by)
-        S.add(ig, -(n * nv[0]), -(n * nv[1]), xx, xy)
+        sums_add(S, ib, -fb[0], -fb[1], bx, by)
+        sums_add(S, ig, -(n * nv[0]), -(n * nv[1]), xx, xy)
 
     return run
 

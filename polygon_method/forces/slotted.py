@@ -29,7 +29,7 @@ N = 2 along n = (-1, 0); the pivot holds the lever with 2 N to the left:
 from __future__ import annotations
 
 from ..steps.rounding import vhypot
-from .bodies import Singular, cross, guided, least, outer_pin, split, unit
+from .bodies import sums_add, sums_of, Singular, cross, guided, least, outer_pin, split, unit
 from ..common.numbers import fmt
 from .records import ForceStep, GuideForce, PinForce, block, Side
 
@@ -76,13 +76,15 @@ def bind(st, own, ix):
         ux, uy = fx2 - fx1, fy2 - fy1
         m = (ux * ux + uy * uy) ** 0.5
         ux, uy = ux / m, uy / m
-        n, fk, fa, _ = solve(kx, ky, S.of(ilv), ax, ay, S.of(ibl), (ux, uy), length, False)
+        n, fk, fa, _ = solve(
+            kx, ky, sums_of(S, ilv), ax, ay, sums_of(S, ibl), (ux, uy), length, False
+        )
         if n is None:
             raise Singular(why)
         guides.append((a, n, (-uy, ux), lv))
         pins += ((k, lv, ok, fk), (a, bl, oa, fa))
-        S.add(iok, -fk[0], -fk[1], kx, ky)
-        S.add(ioa, -fa[0], -fa[1], ax, ay)
+        sums_add(S, iok, -fk[0], -fk[1], kx, ky)
+        sums_add(S, ioa, -fa[0], -fa[1], ax, ay)
 
     return run
 
