@@ -1,0 +1,70 @@
+"""Adversarial inputs at the seams of the features merged together (a force in a passive
+cylinder, several cylinders' indicator diagrams, a friction drive held by a preload, the
+scene's new readings), found by a scripted sweep of every command over mutated worked
+problems. Each test compares with something independent of the code under test: a closed
+form computed here, or the numbers the user wrote."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+from polygon_method.cli import main
+
+ROOT = Path(__file__).resolve().parent.parent
+CYLINDER = ROOT / "worked_problems" / "cylinder_pull_on_rocker.toml"
+
+
+def _v_R() -> float:
+    """The speed of R (120 mm up the rocker QB) in the cylinder problem, in closed form:
+    the four-bar's rocker angle by circle intersection, its rate by a central difference
+    in the crank angle (60 rpm: omega = 2 pi rad/s)."""
+
+    def rocker(theta: float) -> float:
+        ax, ay = 100 * math.cos(theta), 100 * math.sin(theta)
+        dx, dy = 300 - ax, -ay  # from A to Q
+        d = math.hypot(dx, dy)
+        a = (300**2 - 200**2 + d**2) / (2 * d)  # from A along AQ to the chord
+        h = math.sqrt(300**2 - a**2)
+        mx, my = ax + a * dx / d, ay + a * dy / d
+        bx, by = mx - h * dy / d, my + h * dx / d  # the branch above OQ
+        if by < 0:
+            bx, by = mx + h * dy / d, my - h * dx / d
+        return math.atan2(by, bx - 300)
+
+    theta, step = math.radians(60), 1e-6
+    rate = (rocker(theta + step) - rocker(theta - step)) / (2 * step)
+    return abs(rate * 2 * math.pi) * 0.120
+
+
+def test_a_cylinders_sliding_velocity_given_as_its_rods_speed_is_diagnosed(tmp_path, capsys):
+    """``vs_CR`` wrong in a scene whose C-R is a cylinder (no slider named C-R): the
+    mistake finder looked the key up as a slider and check stopped with an internal error
+    (exit 3). A student who gives the rod end's absolute speed for the rod's sliding
+    velocity is now told so."""
+    v_R = _v_R()
+    text = CYLINDER.read_text(encoding="utf-8").replace(
+        'vs_CR = "0.1526 m/s"', f'vs_CR = "{v_R:.4f} m/s"'
+    )
+    path = tmp_path / "cyl.toml"
+    path.write_text(text, encoding="utf-8")
+    assert main(["check", "--json", str(path)]) == 1
+    record = json.loads(capsys.readouterr().out)["answers"][0]
+    assert record["key"] == "vs_CR" and record["verdict"] == "wrong"
+    assert record["mistake"] == "absolute_for_relative", record
+    assert "of R" in record["diagnosis"]
+
+
+def test_a_cylinders_sliding_velocity_wrong_by_anything_is_one_verdict(tmp_path, capsys):
+    """Any wrong ``vs_CR`` (here the rod pinned at Q, so the cylinder does not move: the
+    given 0.1526 m/s is wrong), in the text table and the page's check alike."""
+    text = CYLINDER.read_text(encoding="utf-8").replace(
+        'R = { on = "QB", along = 120 }', 'R = { on = "QB", along = 0 }'
+    )
+    path = tmp_path / "cyl.toml"
+    path.write_text(text, encoding="utf-8")
+    assert main(["check", str(path)]) == 1
+    row = next(line for line in capsys.readouterr().out.splitlines() if line.startswith("vs_CR"))
+    assert "WRONG" in row and " 0 m/s" in row, row
+    assert main(["page", str(path), "-o", str(tmp_path / "p.html"), "--frames", "4"]) == 0
