@@ -68,3 +68,27 @@ def test_a_cylinders_sliding_velocity_wrong_by_anything_is_one_verdict(tmp_path,
     row = next(line for line in capsys.readouterr().out.splitlines() if line.startswith("vs_CR"))
     assert "WRONG" in row and " 0 m/s" in row, row
     assert main(["page", str(path), "-o", str(tmp_path / "p.html"), "--frames", "4"]) == 0
+
+
+VTWIN = ROOT / "worked_problems" / "vtwin_flywheel.toml"
+
+
+def test_a_flywheel_of_an_engine_at_rest_is_refused_in_one_line(tmp_path, capsys):
+    """``speed = "0 rpm"`` with a [flywheel]: the motion is solved per rad/s of the crank
+    (the virtual velocities), and the flywheel came out for a mean speed of 1 rad/s, I =
+    38990 kg m^2; with [flywheel] speed = "3000 rpm" it came out 0.3950 kg m^2 against the
+    scene's 0.3972 (computed independently in its comment), the parts' inertia taken at 1
+    rad/s. A flywheel needs the running speed: one line naming [flywheel] and its line."""
+    text = VTWIN.read_text(encoding="utf-8").replace('speed = "3000 rpm ccw"', 'speed = "0 rpm"')
+    for extra in ("", 'speed = "3000 rpm"\n'):
+        body = text.replace("radius = 150 ", extra + "radius = 150 ")
+        path = tmp_path / "vt.toml"
+        path.write_text(body, encoding="utf-8")
+        line_no = 1 + body.splitlines().index(
+            next(s for s in body.splitlines() if s.startswith("[flywheel]"))
+        )
+        for argv in (["solve", str(path)], ["check", str(path)]):
+            assert main(argv) == 2
+            err = capsys.readouterr().err.strip().splitlines()
+            assert len(err) == 1 and "[flywheel]" in err[0], err
+            assert f"line {line_no}" in err[0] and str(path) in err[0], err

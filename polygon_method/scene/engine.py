@@ -325,6 +325,13 @@ class _Engine:
             c *= 2
         else:
             words = f"Cs = {c:g}"
+        if getattr(self, "at_rest", False):  # the motion per rad/s: no inertia, no speed
+            raise self.error(
+                "the crank is at rest (its speed 0): a flywheel keeps a running engine's "
+                "speed, its turning moment with the inertia of the parts at that speed; "
+                'give the crank\'s speed in [input] (speed = "3000 rpm")',
+                t,
+            )
         speed = None
         if "speed" in spec:
             speed = abs(self.qty(spec["speed"], "angular_velocity", t, "speed").value)
