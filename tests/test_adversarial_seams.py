@@ -92,3 +92,24 @@ def test_a_flywheel_of_an_engine_at_rest_is_refused_in_one_line(tmp_path, capsys
             err = capsys.readouterr().err.strip().splitlines()
             assert len(err) == 1 and "[flywheel]" in err[0], err
             assert f"line {line_no}" in err[0] and str(path) in err[0], err
+
+
+DRIVE = ROOT / "worked_problems" / "friction_drive.toml"
+
+
+def test_a_friction_drive_at_rest_passes_no_power(tmp_path, capsys):
+    """``speed = "0 rpm"``: the largest power mu N v came out 15 W "at the contact's speed
+    v = 0.1 m/s", the virtual speed of 1 rad/s (mu N r1 x 1 rad/s = 0.3 x 500 x 0.1); at
+    rest the contact does not move and no power passes: 0 W. The largest torque, mu N r,
+    is the speed's no matter (22.5 N m, the scene's closed form)."""
+    text = DRIVE.read_text(encoding="utf-8").replace('speed = "300 rpm ccw"', 'speed = "0 rpm"')
+    text = text.replace('Pmax_O2B = "471.2 W"', 'Pmax_O2B = "0 W"')
+    path = tmp_path / "drive.toml"
+    path.write_text(text, encoding="utf-8")
+    assert main(["check", "--json", str(path)]) == 0
+    records = {r["key"]: r for r in json.loads(capsys.readouterr().out)["answers"]}
+    assert records["Pmax_O2B"]["correct"] == 0 and records["Pmax_O2B"]["verdict"] == "right"
+    assert math.isclose(records["Tmax_O2B"]["correct"], 0.3 * 500 * 0.150, rel_tol=1e-12)
+    assert main(["solve", str(path)]) == 0
+    line = next(s for s in capsys.readouterr().out.splitlines() if "largest power" in s)
+    assert "= 0 W" in line and "at rest" in line, line
