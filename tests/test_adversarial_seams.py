@@ -10,6 +10,8 @@ import json
 import math
 from pathlib import Path
 
+import pytest
+
 from polygon_method.cli import main
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -113,3 +115,50 @@ def test_a_friction_drive_at_rest_passes_no_power(tmp_path, capsys):
     assert main(["solve", str(path)]) == 0
     line = next(s for s in capsys.readouterr().out.splitlines() if "largest power" in s)
     assert "= 0 W" in line and "at rest" in line, line
+
+
+AMBEKAR = ROOT / "tests" / "textbook" / "ambekar_fourbar_angle_bad_midpoint.toml"
+
+
+@pytest.mark.parametrize(
+    "along, words",
+    [
+        ('"1/0 of BC"', "over nought"),  # was an internal error (ZeroDivisionError)
+        ('"midpoint of CD"', "E is on BC"),  # was read as the midpoint of BC, silently
+        ('"the middle of AB"', "E is on BC"),
+        ('"1/3 of CD"', "E is on BC"),  # was "unknown unit '/3 of CD'"
+    ],
+)
+def test_a_part_of_a_link_names_its_own_link_and_no_nought(tmp_path, capsys, along, words):
+    """``along = "1/3 of BC"`` and ``"midpoint"``, the book's words for a point on a link:
+    a part over nought stopped with an internal error, and a midpoint of another link was
+    taken for the midpoint of the point's own. One line naming the point and its line."""
+    text = AMBEKAR.read_text(encoding="utf-8")
+    body = text.replace('along = "midpoint"', f"along = {along}")
+    path = tmp_path / "am.toml"
+    path.write_text(body, encoding="utf-8")
+    line_no = 1 + next(i for i, s in enumerate(body.splitlines()) if s.startswith("E = {"))
+    assert main(["solve", str(path)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and words in err[0], err
+    assert f"[points] E (line {line_no})" in err[0], err
+
+
+def test_a_third_of_a_link_from_its_far_end_is_two_thirds_from_the_near(tmp_path, capsys):
+    """``"1/3 of BC", from = "C"`` and ``"2/3 of BC"`` (from B) are the one point: an
+    identity of the inputs, and the midpoint the mean of B and C."""
+    text = AMBEKAR.read_text(encoding="utf-8").split("[answers]")[0]
+    got = {}
+    for key, along in (
+        ("c", '"1/3 of BC", from = "C"'),
+        ("b", '"2/3 of BC"'),
+        ("m", '"midpoint of CB"'),
+    ):
+        path = tmp_path / f"{key}.toml"
+        path.write_text(text.replace('along = "midpoint"', f"along = {along}"), encoding="utf-8")
+        assert main(["solve", "--json", str(path)]) == 0
+        got[key] = json.loads(capsys.readouterr().out)
+    pos = lambda doc, p: doc["points"][p]["position"]  # noqa: E731
+    assert pos(got["c"], "E") == pytest.approx(pos(got["b"], "E"), abs=1e-12)
+    mid = [(b + c) / 2 for b, c in zip(pos(got["m"], "B"), pos(got["m"], "C"))]
+    assert pos(got["m"], "E") == pytest.approx(mid, abs=1e-12)
