@@ -162,3 +162,38 @@ def test_a_third_of_a_link_from_its_far_end_is_two_thirds_from_the_near(tmp_path
     assert pos(got["c"], "E") == pytest.approx(pos(got["b"], "E"), abs=1e-12)
     mid = [(b + c) / 2 for b, c in zip(pos(got["m"], "B"), pos(got["m"], "C"))]
     assert pos(got["m"], "E") == pytest.approx(mid, abs=1e-12)
+
+
+DUMP = ROOT / "tests" / "textbook" / "mabie_dump_body_cylinder.toml"
+
+
+@pytest.mark.parametrize("length", [1.0, 2.2])
+def test_a_cylinder_placed_at_its_strokes_end_is_found(tmp_path, capsys, length):
+    """``length_OR`` at the cylinder's stroke end (``stroke = [1.0, 2.2]``): the turn was
+    searched for a sign change only, and none brackets a stroke's end (past it the
+    mechanism does not assemble): "no angle of the crank QR gives it; over the turn it
+    runs from 1.00253 to 2.19916 m", a sampled range. The closed form: R = 1.5 (cos t,
+    sin t) from Q, O at (1.2, -0.4): |OR|^2 = 3.85 - 3 (1.2 cos t - 0.4 sin t); the first
+    root from 0 deg; omega = vs / (dL/dt)."""
+    text = DUMP.read_text(encoding="utf-8").split("[answers]")[0]
+    path = tmp_path / "dump.toml"
+    path.write_text(text.replace("length_OR = 1.6", f"length_OR = {length}"), encoding="utf-8")
+    assert main(["solve", "--json", str(path)]) == 0
+    got = json.loads(capsys.readouterr().out)["input"]
+    c = (3.85 - length**2) / 3 / math.hypot(1.2, 0.4)  # cos(t + phi)
+    phi = math.atan2(0.4, 1.2)
+    roots = sorted((s * math.acos(c) - phi) % (2 * math.pi) for s in (1, -1))
+    theta = roots[0]
+    dL = 3 * (1.2 * math.sin(theta) + 0.4 * math.cos(theta)) / (2 * length)
+    assert got["angle"] % (2 * math.pi) == pytest.approx(theta, rel=1e-9)
+    assert got["omega"] == pytest.approx(0.1 / dL, rel=1e-8)
+
+
+def test_a_length_past_the_stroke_names_the_strokes_ends(tmp_path, capsys):
+    """Past the stroke, the range named is the stroke's, 1 to 2.2 m, not a sampled one."""
+    text = DUMP.read_text(encoding="utf-8").split("[answers]")[0]
+    path = tmp_path / "dump.toml"
+    path.write_text(text.replace("length_OR = 1.6", "length_OR = 0.5"), encoding="utf-8")
+    assert main(["solve", str(path)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "runs from 1 to 2.2 m" in err[0], err
