@@ -197,3 +197,30 @@ def test_a_length_past_the_stroke_names_the_strokes_ends(tmp_path, capsys):
     assert main(["solve", str(path)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "runs from 1 to 2.2 m" in err[0], err
+
+
+@pytest.mark.parametrize(
+    "pressures, ok",
+    [
+        ("[-5, -5, -5, -5, -5, -5, -5, -5, -5, -5, -5, -5, -5, -5]", False),
+        ("[-0.1, -0.1, 0.8, 3.0, 6.0, 12.0, 40.0, 32.0, 18.0, 10.0, 6.0, 3.0, 0.2, -1.1]", False),
+        ("[-1.0, -0.1, 0.8, 3.0, 6.0, 12.0, 40.0, 32.0, 18.0, 10.0, 6.0, 3.0, 0.2, -1.0]", True),
+    ],
+)
+def test_an_indicator_pressure_below_a_vacuum_is_refused(tmp_path, capsys, pressures, ok):
+    """An indicator diagram of -5 bar (gauge) was read and its cycle worked out: no gas
+    pressure is below a vacuum, -1.01325 bar gauge (the standard atmosphere, 101325 Pa;
+    absolute pressures are never negative); -1 bar, a near vacuum, is a pressure."""
+    text = VTWIN.read_text(encoding="utf-8")
+    old = next(s for s in text.splitlines() if s.startswith("pressure = ["))
+    body = text.replace(old, f"pressure = {pressures}")
+    path = tmp_path / "vt.toml"
+    path.write_text(body, encoding="utf-8")
+    line_no = 1 + body.splitlines().index(f"pressure = {pressures}")
+    code = main(["solve", str(path)])
+    err = capsys.readouterr().err.strip().splitlines()
+    if ok:
+        assert code == 0 and not err, err
+        return
+    assert code == 2 and len(err) == 1, err
+    assert f"[indicator] pressure (line {line_no})" in err[0] and "vacuum" in err[0], err
