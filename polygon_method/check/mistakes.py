@@ -171,8 +171,8 @@ class _Diagnoser:
             out += self.coriolis_left_out(kind, names[0])
         if kind in ("a", "alpha"):
             out += self.step_coriolis_left_out(kind, names, signed)
-        if kind == "vs":
-            X = self.sc.slider(names[0]).point  # a peg's slot: vs_P_OA is of the peg P
+        X = self._sliding_point(names[0]) if kind == "vs" else None
+        if X is not None:
             out.append(
                 _Candidate(
                     self.sol.speed(X),
@@ -183,6 +183,16 @@ class _Diagnoser:
         if kind == "rub":
             out += self.rubbing(names[0])
         return out
+
+    def _sliding_point(self, name: str) -> str | None:
+        """The point whose absolute velocity a student may give for the sliding velocity
+        ``vs_<name>``: a block's point (a peg's slot: vs_P_OA is of the peg P), a
+        cylinder's rod end (vs_CR: the rod slides in its barrel)."""
+        slider = self.sc.slider(name)
+        if slider is not None:
+            return slider.point
+        cylinder = self.sc.cylinder(name)
+        return cylinder.rod if cylinder is not None else None
 
     def _set_up_otherwise(self, ans, signed) -> list:
         """The mechanism set up otherwise: the other assembly branch, the crank's angle

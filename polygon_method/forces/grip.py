@@ -52,8 +52,8 @@ def attach(contacts, motion, plan) -> list:
             (vx, vy), w = motion.V[pr.centre], motion.W[pr.wheel]
             mx, my = c.m
             v = abs((vx - w * (iy - cy)) * -my + (vy + w * (ix - cx)) * mx)
-            if st.on == "circle":  # a fixed circle's contact does not move: exactly
-                v = 0.0 * v
+            if st.on == "circle" or motion.scene.at_rest:  # a fixed circle's contact, or
+                v = 0.0 * v  # one at rest (its velocities per rad/s: virtual), does not move
         N = c.normal if preload is None else preload
         out.append(replace(c, grip=(mu, N, pr.radius, R, v)))
     return out
@@ -115,6 +115,7 @@ def words(c) -> str:
         most += (
             f" (to the gear mu N R = {fmt(max_torque(g, True))} N m), the largest power mu N v "
             f"= {fmt(max_power(g))} W at the contact's speed v = {fmt(g[4])} m/s"
+            + (" (at rest: no power passes)" if g[4] == 0 else "")
         )
     return head + verdict + most
 

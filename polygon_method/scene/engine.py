@@ -31,6 +31,9 @@ _CYCLES = {
     "four-stroke": 4 * math.pi,
 }
 
+#: the atmosphere's pressure (Pa): a gauge pressure is never below its negative
+ATMOSPHERE = 101_325.0
+
 
 def _form(sub) -> str | None:
     """The form of table a sub-table gives: "angle", "stroke" or None (the shared one)."""
@@ -258,6 +261,15 @@ class _Engine:
         """Refuse a pressure beyond what a mechanism meets (a units slip; the cycle's
         torque and energy of such a pressure overflow)."""
         worst = max(abs(p) for p in ps)
+        least = min(ps)
+        if worst * k <= ABSURD["pressure"] and least * k < -ATMOSPHERE:
+            raise self.error(
+                f"a pressure of {least:g} {unit.strip()} is below a vacuum (gauge "
+                f"pressures reach -{ATMOSPHERE / 1e5:g} bar at the least, absolute ones "
+                "0); check the values and their unit",
+                table,
+                "pressure",
+            )
         if not worst * k <= ABSURD["pressure"]:
             raise self.error(
                 f"a pressure of {worst:g} {unit.strip()} is absurd for an engine "
@@ -325,6 +337,13 @@ class _Engine:
             c *= 2
         else:
             words = f"Cs = {c:g}"
+        if getattr(self, "at_rest", False):  # the motion per rad/s: no inertia, no speed
+            raise self.error(
+                "the crank is at rest (its speed 0): a flywheel keeps a running engine's "
+                "speed, its turning moment with the inertia of the parts at that speed; "
+                'give the crank\'s speed in [input] (speed = "3000 rpm")',
+                t,
+            )
         speed = None
         if "speed" in spec:
             speed = abs(self.qty(spec["speed"], "angular_velocity", t, "speed").value)

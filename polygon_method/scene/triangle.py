@@ -127,7 +127,7 @@ def not_on_link(reader, point, link, name, table) -> str:
 
 _LENGTHS = {u.lower() for u in UNITS["length"]}  # a link named as a unit (CM): "of CM"
 _PART = re.compile(r"([0-9]*\.?[0-9]+)\s*(?:/\s*([0-9]+))?\s*(of\s+)?([A-Za-z][A-Za-z0-9-]*)")
-_MIDDLE = re.compile(r"(?:the\s+)?(?:mid-?\s*point|middle)(?:\s+of\s+\S+)?", re.IGNORECASE)
+_MIDDLE = re.compile(r"(?:the\s+)?(?:mid-?\s*point|middle)(?:\s+of\s+(\S+))?", re.IGNORECASE)
 
 
 def along_length(reader, raw, link, table, name) -> float:
@@ -147,11 +147,18 @@ def along_length(reader, raw, link, table, name) -> float:
     >>> along_length(R, "0.4 of CM", L, "points", "E") == 0.4 * 0.15
     True
     """
-    if isinstance(raw, str) and _MIDDLE.fullmatch(raw.strip()):
+    ends = (link.p + link.q).upper(), (link.q + link.p).upper()
+    middle = _MIDDLE.fullmatch(raw.strip()) if isinstance(raw, str) else None
+    if middle is not None:
+        if middle.group(1) and middle.group(1).upper().replace("-", "") not in ends:
+            raise reader.error(f"along = {raw!r}: {name} is on {link.key}", table, name)
         return link.length / 2
     part = _PART.fullmatch(raw.strip()) if isinstance(raw, str) else None
-    ends = (link.p + link.q).upper(), (link.q + link.p).upper()
     named = part is not None and part.group(4).upper().replace("-", "") in ends
+    if part is not None and part.group(3) and not named:  # "1/3 of CD" on BC
+        raise reader.error(f"along = {raw!r}: {name} is on {link.key}", table, name)
     if named and (part.group(3) or part.group(4).lower() not in _LENGTHS):  # "1/3 of BC"
+        if part.group(2) is not None and float(part.group(2)) == 0:
+            raise reader.error(f"along = {raw!r}: a part of the link over nought", table, name)
         return float(part.group(1)) / float(part.group(2) or 1) * link.length
     return reader.length(raw, table, name, positive=False)

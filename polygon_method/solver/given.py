@@ -41,7 +41,7 @@ from dataclasses import replace
 
 from ..common.errors import TOL, SingularStepError
 from ..common.numbers import condition_text, quiet, sense
-from ..common.tolerances import ROUNDING
+from ..common.tolerances import ROUNDING, SAME
 from .plan import Context, Plan
 from ..scene import GIVEN_KINDS
 
@@ -391,8 +391,41 @@ def place_roots(plan, grid=720):
         r = f(cand)
         if r is not None and r[1]:
             roots.append(math.remainder(cand, 2.0 * math.pi))
+    scale = max([lk.length for lk in sc.links] + [abs(sc.input.placed.value)])
+    edges = _edge_roots(th, ok, f, scale)  # a stroke's end, exactly: no sign change there
+    roots += [t for t, v, met in edges if met]
+    if edges and seen is not None:  # the range seen reaches the ends found
+        ends = [v for _, v, _ in edges]
+        seen = (min(seen[0], *ends), max(seen[1], *ends))
     out = []
     for t in roots:  # a root at a grid point may be found twice
         if all(abs(math.remainder(t - u, 2.0 * math.pi)) > ROUNDING for u in out):
             out.append(t)
     return out, seen
+
+
+def _edge_roots(th, ok, f, scale) -> list:
+    """Where the mechanism stops assembling between two grid angles (a cylinder's stroke
+    ends, a dyad's reach), the last angle that assembles, by bisection to the last bit;
+    ``(angle, the quantity there less the value stated, whether it is met there to
+    rounding)`` for each: a root where it is met (``length_OR`` at a stroke's end: no sign change brackets
+    it). ``f`` the quantity less the stated value and its direction check, or None."""
+    out = []
+    for i in range(len(th) - 1):
+        if bool(ok[i]) == bool(ok[i + 1]):
+            continue
+        good, bad = (float(th[i]), float(th[i + 1])) if ok[i] else (float(th[i + 1]), float(th[i]))
+        for _ in range(80):
+            mid = 0.5 * (good + bad)
+            if mid in (good, bad):
+                break
+            if f(mid) is None:
+                bad = mid
+            else:
+                good = mid
+        r = f(good)
+        if r is None:
+            continue
+        met = abs(r[0]) <= SAME * scale and bool(r[1])
+        out.append((math.remainder(good, 2.0 * math.pi), r[0], met))
+    return out
