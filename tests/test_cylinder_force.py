@@ -290,6 +290,8 @@ def test_every_view_says_it(tmp_path, capsys):
         ('{ pressure = "5 N/mm^2", bore = 50, back = "1 bar" }', "give the rod's diameter"),
         ('{ push = "2 kN", pull = "1 kN" }', "give one of push, pull and pressure"),
         ('{ push = "-2 kN" }', "say pull instead"),
+        ('{ pressure = "-5 N/mm^2", bore = 50 }', "is below a vacuum"),
+        ('{ pressure = "5 N/mm^2", bore = 50, rod = 20, back = "-2 bar" }', "is below a vacuum"),
         ('{ damping = "-30 N s/m" }', "a damper resists its motion"),
         ('{ force = "2 kN", direction = 30 }', "acts along its line"),
         ("{ stiffness = 3 }", "needs its stiffness and its free length"),
@@ -405,3 +407,15 @@ def test_the_bounds_hold_with_a_damper(angle):
         err = math.hypot(got[0] - ref[pin + ".x"], got[1] - ref[pin + ".y"])
         (e,) = [v for (p, o, y), v in b.pins.items() if p == pin and {o, y} == {on, by}]
         assert err <= e * b.force, pin
+
+
+def test_a_pressure_below_the_atmosphere_pulls_and_is_said_to(tmp_path, capsys):
+    """-0.5 bar gauge on the cap side pulls the rod in with 0.5e5 pi/4 d^2 (closed form);
+    below a vacuum (-1.01325 bar) is refused above."""
+    scene = tmp_path / "vacuum.toml"
+    scene.write_text(scene_text('{ pressure = "-0.5 bar", bore = 50 }'))
+    assert main(["solve", str(scene)]) == 0
+    line = next(x for x in capsys.readouterr().out.splitlines() if "is given (" in x)
+    f = 0.5e5 * math.pi / 4 * 0.05**2
+    assert f"F = -{f:.4g} N" in line and "pulling the rod in" in line, line
+    assert "pushing the rod out" not in line, line

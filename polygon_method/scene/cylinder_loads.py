@@ -37,6 +37,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from .engine import ATMOSPHERE
 from .records import Cylinder, split_name
 
 __all__ = ["LoadedCylinder", "length_of", "stated", "_CylinderLoads"]
@@ -179,7 +180,7 @@ class _CylinderLoads:
             push, said = self._oil(cyl, name, spec)
             if "rod" in spec and "back" not in spec:  # (the annulus side alone)
                 bore = self.length(spec["bore"], "loads", name)
-                p = self.qty(spec["pressure"], "pressure", "loads", name).value
+                p = self._gauge(spec, "pressure", name)
                 annulus = (p, math.pi / 4 * bore * bore)
             words.append(said)
         c = 0.0
@@ -232,6 +233,20 @@ class _CylinderLoads:
         words.append(f"a spring of {spec['stiffness']}{unit}, free length {self._words(free)}")
         return k, free
 
+    def _gauge(self, spec, key, name) -> float:
+        """The gauge pressure ``spec[key]`` (Pa), refused below a vacuum (a slip of sign or
+        unit: it would turn a pull into a push silently)."""
+        p = self.qty(spec[key], "pressure", "loads", name).value
+        if p < -ATMOSPHERE:
+            raise self.error(
+                f"{key} = {spec[key]!r} is below a vacuum (gauge pressures reach "
+                f"-{ATMOSPHERE / 1e5:g} bar at the least): a pull is a pressure on the "
+                "annulus (rod = ...) or pull = ...",
+                "loads",
+                name,
+            )
+        return p
+
     def _oil(self, cyl, name, spec):
         """(the force, + pushing apart; its words) of a pressure on the cylinder's piston."""
         for k in ("pressure", "bore"):
@@ -242,7 +257,7 @@ class _CylinderLoads:
                     "loads",
                     name,
                 )
-        p = self.qty(spec["pressure"], "pressure", "loads", name).value
+        p = self._gauge(spec, "pressure", name)
         bore = self.length(spec["bore"], "loads", name)
         area = math.pi / 4 * bore * bore
         words = f"{spec['pressure']} on a {self._words(bore)} bore"
@@ -254,7 +269,9 @@ class _CylinderLoads:
                 name,
             )
         if "rod" not in spec:
-            return p * area, words + " on the cap side, pushing the rod out"
+            return p * area, words + " on the cap side, " + (
+                "pushing the rod out" if p >= 0 else "below the atmosphere: pulling the rod in"
+            )
         rod = self.length(spec["rod"], "loads", name)
         if rod >= bore:
             raise self.error(
@@ -268,9 +285,10 @@ class _CylinderLoads:
             return (
                 -p * annulus,
                 f"{spec['pressure']} on the annulus of a {self._words(bore)} bore less a "
-                f"{self._words(rod)} rod, pulling the rod in",
+                f"{self._words(rod)} rod, "
+                + ("pulling the rod in" if p >= 0 else "below the atmosphere: pushing the rod out"),
             )
-        back = self.qty(spec["back"], "pressure", "loads", name).value
+        back = self._gauge(spec, "back", name)
         return p * area - back * annulus, (
             words + f" on the cap side against {spec['back']} on the annulus, less a "
             f"{self._words(rod)} rod"
