@@ -224,3 +224,29 @@ def test_an_indicator_pressure_below_a_vacuum_is_refused(tmp_path, capsys, press
         return
     assert code == 2 and len(err) == 1, err
     assert f"[indicator] pressure (line {line_no})" in err[0] and "vacuum" in err[0], err
+
+
+def test_an_engines_cycle_at_rest_has_no_power_and_the_same_mean(tmp_path, capsys):
+    """An engine's scene at rest (``speed = "0 rpm"``, no ``[flywheel]``) printed "at 9.5493
+    rpm, power ..." for its turning-moment diagram: the virtual 1 rad/s taken for a speed.
+    At rest no power passes; the mean torque is the running engine's (the inertia forces do
+    no net work over a cycle), so the two means agree."""
+    import re
+
+    text = (ROOT / "worked_problems" / "engine_flywheel.toml").read_text(encoding="utf-8")
+    text = text.split("[answers]")[0]
+    text = re.sub(r"(?ms)^\[flywheel\].*?(?=^\[|\Z)", "", text)
+    running = tmp_path / "running.toml"
+    running.write_text(text, encoding="utf-8")
+    rest = tmp_path / "rest.toml"
+    rest.write_text(re.sub(r"(?m)^speed = .*$", 'speed = "0 rpm"', text), encoding="utf-8")
+    means = []
+    for scene in (running, rest):
+        assert main(["solve", str(scene)]) == 0
+        line = next(x for x in capsys.readouterr().out.splitlines() if "T_mean =" in x)
+        means.append(float(line.split("T_mean =")[1].split()[0]))
+        if scene is rest:
+            assert "at rest: no power" in line and "rpm" not in line, line
+        else:
+            assert "rpm, power" in line, line
+    assert math.isclose(means[0], means[1], rel_tol=1e-5), means

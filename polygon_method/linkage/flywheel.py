@@ -114,16 +114,21 @@ class TurningMoment:
             f"turning moment over the cycle ({deg:g} deg of the crank from the inner dead "
             f"centre at {self.theta_idc:.4f} deg, in the crank's sense of rotation; "
             + (
-                "with the inertia of the moving parts"
-                if self.inertia_included
-                else "no masses given: the gas force alone"
+                "no masses given: the gas force alone"
+                if not self.inertia_included
+                else "with the inertia of the moving parts"
+                + (" at the virtual 1 rad/s: the crank is at rest" if scene.at_rest else "")
             )
             + "; "
             + self.words
             + ")",
-            f"  mean torque T_mean = {self.mean:.6g} N m (work per cycle {self.work:.6g} J;"
-            f" at {abs(scene.input.omega) * 30 / math.pi:.6g} rpm, power "
-            f"{self.mean * abs(scene.input.omega) / 1000:.6g} kW)",
+            f"  mean torque T_mean = {self.mean:.6g} N m (work per cycle {self.work:.6g} J; "
+            + (
+                "at rest: no power)"
+                if scene.at_rest
+                else f"at {abs(scene.input.omega) * 30 / math.pi:.6g} rpm, power "
+                f"{self.mean * abs(scene.input.omega) / 1000:.6g} kW)"
+            ),
             f"  greatest turning moment (on a 0.25 deg grid) {self.T_max:.6g} N m at "
             f"{self.at_T_max:.4f} deg, "
             f"least {self.T_min:.6g} N m at {self.at_T_min:.4f} deg",
