@@ -162,10 +162,6 @@ def _mm(x, scene) -> str:
     return f"{x / scene.length_unit:.6g} {scene.units}"
 
 
-def _dir_deg(x, y) -> float:
-    return math.degrees(math.atan2(y, x))
-
-
 _MAX_STATIONARY = 12  # more samples still than this: the output dwells (a degenerate linkage)
 
 

@@ -93,6 +93,20 @@ DRIVER_ANSWERS = {"force": "force", "torque2": "torque", "force2": "force"}
 class _Answers:
     """The loader's ``[answers]`` methods (mixed into the loader with the other tables)."""
 
+    def _engine_value(self, value, kind, key) -> float:
+        """An engine answer's value (SI) of ``kind``, in its kind's first unit when bare: an
+        effort, a turning moment, the cycle's energy or the flywheel's (one cylinder's, or
+        one piston's of several)."""
+        return self.qty(
+            value,
+            kind,
+            "answers",
+            key,
+            default_unit=next(iter(UNITS[kind])),
+            allow_sense=False,
+            refuse_absurd=False,
+        ).value
+
     def driver_answer(self, key, value, raw_text, line, loads, forces):
         """``force`` (a driving block's, collar's or cylinder's force along its guide, N:
         a size, or signed along the guide, + outward for a collar), ``torque2`` and
@@ -306,17 +320,8 @@ class _Answers:
         if key in DRIVER_ANSWERS:
             return self.driver_answer(key, value, raw_text, line, loads, forces)
         if key in ENGINE_ANSWERS:  # the engine chapter's: efforts, the cycle, the flywheel
-            kind = ENGINE_ANSWERS[key]
-            q = self.qty(
-                value,
-                kind,
-                "answers",
-                key,
-                default_unit=next(iter(UNITS[kind])),
-                allow_sense=False,
-                refuse_absurd=False,
-            )
-            return Answer(key, key, (), q.value, None, raw_text, line)
+            value = self._engine_value(value, ENGINE_ANSWERS[key], key)
+            return Answer(key, key, (), value, None, raw_text, line)
         base, _, piston = key.rpartition("_")
         if base in ENGINE_PER_PISTON and piston:  # piston_effort_B: one cylinder's of several
             if piston not in slider_names:
@@ -325,17 +330,8 @@ class _Answers:
                     "answers",
                     key,
                 )
-            kind = ENGINE_ANSWERS[base]
-            q = self.qty(
-                value,
-                kind,
-                "answers",
-                key,
-                default_unit=next(iter(UNITS[kind])),
-                allow_sense=False,
-                refuse_absurd=False,
-            )
-            return Answer(key, base, (piston,), q.value, None, raw_text, line)
+            value = self._engine_value(value, ENGINE_ANSWERS[base], key)
+            return Answer(key, base, (piston,), value, None, raw_text, line)
         prefix, _, rest = key.partition("_")
         if prefix == "I" and rest:
             return self.centre_answer(key, rest, value, line)
