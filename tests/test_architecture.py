@@ -83,11 +83,12 @@ def test_which_sliders_are_blocks_is_asked_of_the_scene():
 
 def test_views_ask_the_driver_never_the_scene_what_drives():
     """What drives the mechanism (a crank, or a block along its guide) is asked of the
-    plan's first step (the driver protocol): outside the scene's reading, the steps and the
-    compiler that makes the driver from ``[input] block`` and a force room asking whether
-    the scene's given motion drives its cylinder, nothing reads ``input.block``."""
+    plan's first step (the driver protocol): outside the scene's reading, the steps, the
+    compiler that makes the driver from ``[input] block`` (and says where a block that
+    cannot assemble could be placed) and a force room asking whether the scene's given
+    motion drives its cylinder, nothing reads ``input.block``."""
     pattern = re.compile(r"\b(input|inp)\.block\b")
-    allowed = ("solver/compiler.py", "forces/cylinder.py")
+    allowed = ("solver/compiler.py", "solver/reach.py", "forces/cylinder.py")
     seen = []
     for path, text in _sources():
         rel = path.relative_to(PACKAGE)
@@ -537,7 +538,6 @@ LONG_MODULES: dict = {
     "scene/reading.py": 672,
     "scene/records.py": 643,
     "scene/tables.py": 692,
-    "solver/compiler.py": 731,
 }
 
 
@@ -573,8 +573,6 @@ LONG_FUNCTIONS = {
     "scene/tables.py:sliders",
     "scene/variation.py:_point",
     "scene/wheel_input.py:wheel_input",
-    "solver/compiler.py:finish",
-    "solver/compiler.py:run",
 }
 LONGEST = 80
 
@@ -620,7 +618,7 @@ LITERALS = {
     "scene/variation.py": 2,
     "scene/wheel_input.py": 1,
     "solver/centres.py": 1,
-    "solver/compiler.py": 4,
+    "solver/compiler.py": 3,
     "solver/completion.py": 1,
     "solver/errorbound.py": 1,
     "solver/given.py": 1,
