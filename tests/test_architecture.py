@@ -533,7 +533,6 @@ def test_a_condition_is_read_as_an_angle_in_one_place():
 #: the code was laid out by ``ruff format`` (a call's arguments one to a line), and wait to be
 #: split into modules of one job; the list may only shrink and no cap may rise
 LONG_MODULES: dict = {
-    "forces/records.py": 639,
     "scene/inputs.py": 855,
     "scene/reading.py": 672,
     "scene/records.py": 643,
