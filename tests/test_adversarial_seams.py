@@ -174,9 +174,13 @@ def test_a_cylinder_placed_at_its_strokes_end_is_found(tmp_path, capsys, length)
     mechanism does not assemble): "no angle of the crank QR gives it; over the turn it
     runs from 1.00253 to 2.19916 m", a sampled range. The closed form: R = 1.5 (cos t,
     sin t) from Q, O at (1.2, -0.4): |OR|^2 = 3.85 - 3 (1.2 cos t - 0.4 sin t); the first
-    root from 0 deg; omega = vs / (dL/dt)."""
+    root from 0 deg; omega = vs / (dL/dt), the cylinder moving away from the end it is at
+    (towards it, it is refused: below)."""
     text = DUMP.read_text(encoding="utf-8").split("[answers]")[0]
     path = tmp_path / "dump.toml"
+    vs = 0.1 if length == 1.0 else -0.1
+    if vs < 0:
+        text = text.replace("0.1 m/s extending", "0.1 m/s retracting")
     path.write_text(text.replace("length_OR = 1.6", f"length_OR = {length}"), encoding="utf-8")
     assert main(["solve", "--json", str(path)]) == 0
     got = json.loads(capsys.readouterr().out)["input"]
@@ -186,7 +190,22 @@ def test_a_cylinder_placed_at_its_strokes_end_is_found(tmp_path, capsys, length)
     theta = roots[0]
     dL = 3 * (1.2 * math.sin(theta) + 0.4 * math.cos(theta)) / (2 * length)
     assert got["angle"] % (2 * math.pi) == pytest.approx(theta, rel=1e-9)
-    assert got["omega"] == pytest.approx(0.1 / dL, rel=1e-8)
+    assert got["omega"] == pytest.approx(vs / dL, rel=1e-8)
+
+
+@pytest.mark.parametrize("length, way", [(2.2, "extending"), (1.0, "retracting")])
+def test_a_cylinder_at_its_strokes_end_cannot_go_on(tmp_path, capsys, length, way):
+    """Fully extended (2.2 m, the stroke's most) it cannot extend, fully closed (1 m) it
+    cannot retract: one line naming the given motion, as any impossible statement."""
+    text = DUMP.read_text(encoding="utf-8").split("[answers]")[0]
+    text = text.replace("length_OR = 1.6", f"length_OR = {length}")
+    path = tmp_path / "dump.toml"
+    path.write_text(text.replace("0.1 m/s extending", f"0.1 m/s {way}"), encoding="utf-8")
+    for command in (["solve"], ["solve", "--json"], ["steps"], ["check"]):
+        assert main([*command, str(path)]) == 2
+        err = capsys.readouterr().err.strip().splitlines()
+        assert len(err) == 1 and "[input] vs_OR" in err[0], err
+        assert f"cannot {way.removesuffix('ing')}" in err[0], err
 
 
 def test_a_length_past_the_stroke_names_the_strokes_ends(tmp_path, capsys):
