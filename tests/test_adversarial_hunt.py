@@ -498,6 +498,28 @@ def test_a_second_input_far_faster_than_the_crank_is_one_line_not_an_alias(tmp_p
     assert len(err) == 1 and "[input.second] speed" in err[0] and "cannot follow" in err[0], err
 
 
+def test_a_sweep_too_coarse_for_a_second_input_says_its_extremes_may_be_aliased(tmp_path, capsys):
+    """sweep --summary of the same scene printed the extremes of 360 samples of a planet
+    turning 7.5 million times per turn of its arm, as if they were the motion's. It now
+    says so in one line, by linkage's own check, with the spacing that would follow it:
+    the planet's omega_P = omega_arm (1 + rS/rP) - omega_sun rS/rP (closed form, rS = 60,
+    rP = 40), at most 10 deg between two samples."""
+    text = (ROOT / "worked_problems/differential_epicyclic.toml").read_text(encoding="utf-8")
+    text = text.split("[answers]")[0]
+    arm, sun = 1.2e-5 * 2 * math.pi / 60, -2 * math.pi
+    ratio = abs((arm * 2.5 - 1.5 * sun) / arm)
+    assert main(["sweep", "--summary", _scene(tmp_path, text)]) == 0
+    out = capsys.readouterr().out
+    assert "aliased" not in out  # at 120 rpm the samples follow it
+    fast = text.replace('speed = "120 rpm ccw"', 'speed = "1.2e-5 rpm ccw"')
+    assert main(["sweep", "--summary", _scene(tmp_path, fast)]) == 0
+    lines = [x for x in capsys.readouterr().out.splitlines() if "aliased" in x]
+    assert len(lines) == 1, lines
+    assert f"turns {ratio:.3g} times as fast as the crank OA" in lines[0], lines
+    assert f"samples {10 / ratio:.3g} deg apart or closer would follow it" in lines[0], lines
+    assert "the extremes below may be aliased" in lines[0], lines
+
+
 # ----------------------------------------------- an output that is a link to itself
 
 

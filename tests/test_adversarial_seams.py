@@ -10,6 +10,7 @@ import json
 import math
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from polygon_method.cli import main
@@ -174,9 +175,13 @@ def test_a_cylinder_placed_at_its_strokes_end_is_found(tmp_path, capsys, length)
     mechanism does not assemble): "no angle of the crank QR gives it; over the turn it
     runs from 1.00253 to 2.19916 m", a sampled range. The closed form: R = 1.5 (cos t,
     sin t) from Q, O at (1.2, -0.4): |OR|^2 = 3.85 - 3 (1.2 cos t - 0.4 sin t); the first
-    root from 0 deg; omega = vs / (dL/dt)."""
+    root from 0 deg; omega = vs / (dL/dt), the cylinder moving away from the end it is at
+    (towards it, it is refused: below)."""
     text = DUMP.read_text(encoding="utf-8").split("[answers]")[0]
     path = tmp_path / "dump.toml"
+    vs = 0.1 if length == 1.0 else -0.1
+    if vs < 0:
+        text = text.replace("0.1 m/s extending", "0.1 m/s retracting")
     path.write_text(text.replace("length_OR = 1.6", f"length_OR = {length}"), encoding="utf-8")
     assert main(["solve", "--json", str(path)]) == 0
     got = json.loads(capsys.readouterr().out)["input"]
@@ -186,7 +191,22 @@ def test_a_cylinder_placed_at_its_strokes_end_is_found(tmp_path, capsys, length)
     theta = roots[0]
     dL = 3 * (1.2 * math.sin(theta) + 0.4 * math.cos(theta)) / (2 * length)
     assert got["angle"] % (2 * math.pi) == pytest.approx(theta, rel=1e-9)
-    assert got["omega"] == pytest.approx(0.1 / dL, rel=1e-8)
+    assert got["omega"] == pytest.approx(vs / dL, rel=1e-8)
+
+
+@pytest.mark.parametrize("length, way", [(2.2, "extending"), (1.0, "retracting")])
+def test_a_cylinder_at_its_strokes_end_cannot_go_on(tmp_path, capsys, length, way):
+    """Fully extended (2.2 m, the stroke's most) it cannot extend, fully closed (1 m) it
+    cannot retract: one line naming the given motion, as any impossible statement."""
+    text = DUMP.read_text(encoding="utf-8").split("[answers]")[0]
+    text = text.replace("length_OR = 1.6", f"length_OR = {length}")
+    path = tmp_path / "dump.toml"
+    path.write_text(text.replace("0.1 m/s extending", f"0.1 m/s {way}"), encoding="utf-8")
+    for command in (["solve"], ["solve", "--json"], ["steps"], ["check"]):
+        assert main([*command, str(path)]) == 2
+        err = capsys.readouterr().err.strip().splitlines()
+        assert len(err) == 1 and "[input] vs_OR" in err[0], err
+        assert f"cannot {way.removesuffix('ing')}" in err[0], err
 
 
 def test_a_length_past_the_stroke_names_the_strokes_ends(tmp_path, capsys):
@@ -250,3 +270,70 @@ def test_an_engines_cycle_at_rest_has_no_power_and_the_same_mean(tmp_path, capsy
         else:
             assert "rpm, power" in line, line
     assert math.isclose(means[0], means[1], rel_tol=1e-5), means
+
+
+def _gas_alone(deg):
+    """The engine_flywheel problem's turning moment of its gas force alone (N m) at ``deg``
+    from the inner dead centre, in closed form: the indicator's pressure read linearly
+    between its readings, on the 100 mm bore, T = F r sin(t + phi) / cos(phi) with
+    sin(phi) = sin(t) / n (r = 60 mm, n = 4)."""
+    ang = [0, 180, 240, 300, 330, 360, 375, 390, 420, 450, 480, 540, 560, 720]
+    bar = [-0.1, -0.1, 0.8, 3.0, 6.0, 12.0, 40.0, 32.0, 18.0, 10.0, 6.0, 3.0, 0.2, -0.1]
+    force = float(np.interp(deg, ang, bar)) * 1e5 * math.pi / 4 * 0.1**2
+    t = math.radians(deg % 360)
+    phi = math.asin(math.sin(t) / 4)
+    return force * 0.06 * math.sin(t + phi) / math.cos(phi)
+
+
+def test_an_engines_cycle_at_rest_is_the_gas_force_alone_in_every_view(tmp_path, capsys):
+    """At rest nothing moves: the cycle's turning moment is the gas force's alone (its
+    greatest and least on the 0.25 deg grid are the closed form's, to the last bits), as
+    the instant's forces say ("at rest: no inertia"). It was said to be "with the inertia
+    of the moving parts at the virtual 1 rad/s" and the --json had inertia_included true:
+    neither was so. Every view says the same; none speaks of a speed as if real."""
+    import re
+
+    text = (ROOT / "worked_problems" / "engine_flywheel.toml").read_text(encoding="utf-8")
+    text = re.sub(r"(?ms)^\[flywheel\].*?(?=^\[|\Z)", "", text.split("[answers]")[0])
+    rest = tmp_path / "rest.toml"
+    rest.write_text(re.sub(r"(?m)^speed = .*$", 'speed = "0 rpm"', text), encoding="utf-8")
+    grid = np.arange(0.0, 720.0, 0.25)
+    T = [_gas_alone(x) for x in grid]
+    assert main(["solve", "--json", str(rest)]) == 0
+    tm = json.loads(capsys.readouterr().out)["turning_moment"]
+    assert tm["inertia_included"] is False
+    assert tm["T_max"] == pytest.approx(max(T), rel=1e-12)
+    assert tm["at_T_max_deg"] == grid[int(np.argmax(T))]
+    assert tm["T_min"] == pytest.approx(min(T), rel=1e-12)
+    assert tm["at_T_min_deg"] == grid[int(np.argmin(T))]
+    for command in (["solve"], ["steps"], ["sweep", "--summary"]):
+        assert main([*command, str(rest)]) == 0
+        out = " ".join(capsys.readouterr().out.split())
+        assert "at rest: the gas force alone, no inertia (nothing moves)" in out, command
+        assert "virtual 1 rad/s: the crank" not in out and "rpm, power" not in out, command
+        assert "the speed would be greatest at" in out and "turning slowly" in out, command
+    page = tmp_path / "rest.html"
+    assert main(["page", str(rest), "-o", str(page)]) == 0
+    html = " ".join(page.read_text(encoding="utf-8").split())
+    assert "at rest: the gas force alone, no inertia (nothing moves)" in html
+    assert "virtual 1 rad/s: the crank" not in html
+
+
+def test_an_engines_cycle_starting_from_rest_says_what_it_counts(tmp_path, capsys):
+    """Starting from rest (an acceleration at speed 0) the cycle counts the start's inertia
+    at every angle, no velocity: its inertia is included (--json), its words say so and
+    that it is no running engine's cycle, and no speed is said to be greatest or least."""
+    import re
+
+    text = (ROOT / "worked_problems" / "engine_flywheel.toml").read_text(encoding="utf-8")
+    text = re.sub(r"(?ms)^\[flywheel\].*?(?=^\[|\Z)", "", text.split("[answers]")[0])
+    start = 'speed = "0 rpm"\nacceleration = "2000 rad/s^2 ccw"'
+    scene = tmp_path / "start.toml"
+    scene.write_text(re.sub(r"(?m)^speed = .*$", start, text), encoding="utf-8")
+    assert main(["solve", "--json", str(scene)]) == 0
+    assert json.loads(capsys.readouterr().out)["turning_moment"]["inertia_included"] is True
+    assert main(["solve", str(scene)]) == 0
+    out = capsys.readouterr().out
+    assert "starting from rest at every angle, alpha_OA = 2000 rad/s^2 ccw" in out
+    assert "not a running engine's cycle" in out and "no speed yet to be greatest" in out
+    assert "the speed greatest at" not in out and "would be greatest" not in out

@@ -291,6 +291,15 @@ def test_every_view_says_it(tmp_path, capsys):
         ('{ push = "2 kN", pull = "1 kN" }', "give one of push, pull and pressure"),
         ('{ push = "-2 kN" }', "say pull instead"),
         ('{ pressure = "-5 N/mm^2", bore = 50 }', "is below a vacuum"),
+        # below any gauge's resolution (1 mPa): subnormal forces and powers, or a text
+        # that reads as 0.0 though it says otherwise
+        ('{ pressure = "1e-300 Pa", bore = 50 }', "'1e-300 Pa' is absurdly small"),
+        ('{ pressure = "1e-310 Pa", bore = 50, rod = 20 }', "absurdly small"),
+        ('{ pressure = "1e-330 N/mm^2", bore = 50 }', "absurdly small"),
+        ('{ pressure = "-1e-300 bar", bore = 50 }', "absurdly small"),
+        ('{ pressure = "5 N/mm^2", bore = 50, rod = 20, back = "1e-300 Pa" }', "absurdly small"),
+        ('{ push = "1e-330 N" }', "absurdly small"),
+        ('{ damping = "1e-300 N s/m" }', "absurdly small"),
         ('{ pressure = "5 N/mm^2", bore = 50, rod = 20, back = "-2 bar" }', "is below a vacuum"),
         ('{ damping = "-30 N s/m" }', "a damper resists its motion"),
         ('{ force = "2 kN", direction = 30 }', "acts along its line"),
@@ -419,3 +428,47 @@ def test_a_pressure_below_the_atmosphere_pulls_and_is_said_to(tmp_path, capsys):
     f = 0.5e5 * math.pi / 4 * 0.05**2
     assert f"F = -{f:.4g} N" in line and "pulling the rod in" in line, line
     assert "pushing the rod out" not in line, line
+
+
+def _floats(doc):
+    """Every number in a --json document."""
+    if isinstance(doc, dict):
+        for v in doc.values():
+            yield from _floats(v)
+    elif isinstance(doc, list):
+        for v in doc:
+            yield from _floats(v)
+    elif isinstance(doc, float):
+        yield doc
+
+
+@pytest.mark.parametrize("pressure", ["0.002 Pa", "-0.002 Pa"])
+def test_a_pressure_just_above_the_least_is_exact_and_no_junk(tmp_path, capsys, pressure):
+    """Just above the least pressure read (1 mPa), a 50 mm bore's force p pi/4 D^2 (a few
+    micronewtons) and the crank's torque agree with the matrix method to 1e-9 of the
+    loads' size, and no number of the --json is subnormal, inf or NaN."""
+    p = float(pressure.split()[0])
+    push = p * math.pi / 4 * 0.05**2
+    scene = tmp_path / "small.toml"
+    scene.write_text(scene_text(f'{{ pressure = "{pressure}", bore = 50 }}', masses="[masses]"))
+    ref = reference(60.0, push, 0.0, massive=False)
+    sol = solve(parse_scene(scene.read_text()))
+    assert sol.forces.input_torque == pytest.approx(ref["T"], rel=1e-9)
+    assert ref["T_power"] == pytest.approx(ref["T"], rel=1e-12)
+    assert main(["solve", "--json", str(scene)]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["forces"]["cylinders"]["C-R"]["force"] == pytest.approx(push, rel=1e-12)
+    for x in _floats(doc):
+        assert math.isfinite(x) and (x == 0 or abs(x) >= 2.2250738585072014e-308), x
+
+
+@pytest.mark.parametrize("load", ['{ pressure = "0 Pa", bore = 50, rod = 20 }', '{ push = "0 N" }'])
+def test_no_force_is_said_so(tmp_path, capsys, load):
+    """A gauge pressure of nought (or a push of 0 N) pushes nothing: its line says F = 0 N
+    with no way it acts (it said "pulling the rod in ... F = 0 N, pushing its ends apart")."""
+    scene = tmp_path / "nought.toml"
+    scene.write_text(scene_text(load))
+    assert main(["solve", str(scene)]) == 0
+    line = next(x for x in capsys.readouterr().out.splitlines() if "is given (" in x)
+    assert line.endswith("F = 0 N"), line
+    assert "pulling" not in line and "pushing" not in line, line

@@ -9,6 +9,7 @@ of the offset slider crank from right triangles; the slotted lever's return angl
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import pytest
 
@@ -406,3 +407,49 @@ speed = "1.0 rad/s cw"
     assert "do not apply" in text
     assert not _re.search(r"(?<![A-Za-z])(nan|inf)(?![A-Za-z])", text, _re.I)
     assert not _re.search(r"e\+0[5-9]|e\+[1-9]\d", text)  # no absurd percentages
+
+
+TOGGLE_PRESS = Path(__file__).parent / "textbook" / "toggle_press.toml"
+
+
+def test_an_output_standing_on_a_pivot_dwells_at_once(tmp_path, capsys, monkeypatch):
+    """The toggle press without ``D = "below"`` takes D on the pivot C (BD = CB: D stays at
+    C whatever the crank does, warned): the slider stands still over the whole cycle. Its
+    rounding's hundreds of sign changes were each refined (13,000 evaluations of the cycle,
+    seconds) and then thrown away; now none is, and the place is C's: 0 along the path."""
+    from polygon_method.linkage import cycle
+
+    calls = []
+    real = cycle._Cycle.evaluate
+    monkeypatch.setattr(
+        cycle._Cycle, "evaluate", lambda self, *a, **k: calls.append(1) or real(self, *a, **k)
+    )
+    scene = tmp_path / "press.toml"
+    scene.write_text(TOGGLE_PRESS.read_text().replace('D = "below"\n', ""))
+    assert main(["linkage", str(scene)]) == 0
+    out = capsys.readouterr().out
+    assert "slider D: stands still at 0 mm along the path: no stroke" in out
+    assert "stands still at all 3600 of the sampled crank angles" in out
+    assert "dwells over the whole cycle" in out and "the output stands still" not in out
+    assert len(calls) < 100, len(calls)
+
+
+def test_a_rocker_standing_on_its_circle_lists_no_toggles(tmp_path, capsys):
+    """A rocker ED whose circle about E passes through the pivot C, with BD = CB: D stays at
+    C, the rocker at atan2(C - E) = atan2(-160, -120) = -126.8699 deg (closed form). Its
+    rate is all rounding, whose sign changes were listed as 300-odd toggle positions."""
+    scene = tmp_path / "rocker.toml"
+    text = (
+        TOGGLE_PRESS.read_text()
+        .split("[sliders]")[0]
+        .replace("C = [0, 400]", "C = [0, 400]\nE = [120, 560]")
+    )
+    text = text.replace("BD = 150", "BD = 150\nED = 200")
+    scene.write_text(
+        text + '[assembly]\nB = "below"\n[input]\ncrank = "OA"\nangle = 0\nspeed = "60 rpm cw"\n'
+    )
+    assert main(["linkage", str(scene)]) == 0
+    out = capsys.readouterr().out
+    deg = math.degrees(math.atan2(-160, -120))
+    assert f"swings between {deg:.4f} and {deg:.4f} deg: swing 0.0000 deg" in out, out
+    assert "the output stands still" not in out and "dwells over the whole cycle" in out

@@ -200,6 +200,11 @@ TINY: dict[str, float] = {
 }
 #: a stiffness below the smallest force per millimetre (a nanonewton per mm) is a slip
 TINY["stiffness"] = TINY["force"] / UNITS["length"]["mm"]
+#: and so are a damping below a nanonewton per mm/s and a pressure below a nanonewton per
+#: square millimetre (1 mPa, a hundred-millionth of the atmosphere: no gauge reads it, and a
+#: value far below it, 1e-300 Pa, makes forces and powers of subnormal junk)
+TINY["damping"] = TINY["force"] / UNITS["length"]["mm"]
+TINY["pressure"] = TINY["force"] / UNITS["length"]["mm"] ** 2
 
 #: an answer's kind (the prefix of its key: ``v_C``, ``omega_BC``, ``F_B``, ``torque``) -> the SI
 #: unit its value is written in: the answer keys, the verdicts and the variants' papers

@@ -219,7 +219,7 @@ def _at_once(raw, kind, default_unit, need_sense, allow_sense, refuse_absurd):
     si = value * factor
     if refuse_absurd and kind in ABSURD and not abs(si) <= ABSURD[kind]:
         return None
-    if kind in TINY and si != 0 and abs(si) < TINY[kind]:
+    if kind in TINY and abs(si) < TINY[kind] and (si != 0 or t is str and _nonzero(words[0])):
         return None
     return Quantity(-si if sense == "cw" else si, sense)
 
@@ -355,12 +355,28 @@ def _check_size(raw, si: float, kind: str, where: str, refuse_absurd: bool) -> N
             f"{_SI_NAME[kind]}); check the value and its unit",
             key=where,
         )
-    if kind in TINY and si != 0 and abs(si) < TINY[kind]:
+    if kind in TINY and abs(si) < TINY[kind] and (si != 0 or _nonzero(_number_text(raw))):
         raise SceneError(
             f"'{_clip(raw)}' is absurdly small for a mechanism (less than "
             f"{TINY[kind]:g} {_SI_NAME[kind]}); check the value and its unit",
             key=where,
         )
+
+
+def _number_text(raw) -> str:
+    """The number a quantity's text begins with (``"1e-330 Pa"`` -> ``"1e-330"``), or ""."""
+    m = _QUANTITY.match(raw) if isinstance(raw, str) else None
+    return m.group(1) if m else ""
+
+
+def _nonzero(number: str) -> bool:
+    """Whether a number's text is other than zero, though it may read as 0.0: ``"1e-330"``
+    underflows (a digit other than 0 before its exponent).
+
+    >>> _nonzero("1e-330"), _nonzero("0.000e5"), _nonzero("-0")
+    (True, False, False)
+    """
+    return any(c in "123456789" for c in number.lower().partition("e")[0])
 
 
 def implausible(value: float, kind: str) -> str | None:

@@ -214,10 +214,12 @@ def given_dict(scene, S, f, P=None) -> dict:
 def given_words(key, given, f) -> str:
     """Where a passive cylinder's force comes from, in words (one instant)."""
     _, rate, c, at_rest, n = given
-    way = "pushing its ends apart" if f >= 0 else "pulling its ends together"
+    way = (
+        ", pushing its ends apart" if f > 0 else ", pulling its ends together" if f < 0 else ""
+    )  # (a force of 0 pushes nothing)
     head = f"the force in the cylinder {key} is given ({c.words}): F = "
     if not c.damping and not c.stiffness:
-        return f"{head}{fmt(f)} N, {way}"
+        return f"{head}{fmt(f)} N{way}"
     terms, values, notes = [], [], []
     if c.push or c.damping or not c.stiffness:  # (a damper: "push - c vs" as ever)
         terms.append(fmt(c.push))
@@ -234,11 +236,17 @@ def given_words(key, given, f) -> str:
         values.append(f"+ {fmt(c.stiffness)} x ({fmt(c.free_length)} - {fmt(n)})")
         notes.append(
             f"L = |{c.barrel}{c.rod}| its length, m; a spring "
-            + ("compressed pushes" if n < c.free_length else "stretched pulls")
+            + (
+                "compressed pushes"
+                if n < c.free_length
+                else "stretched pulls"
+                if n > c.free_length
+                else "at its free length pushes nothing"
+            )
         )
     lhs = " ".join(terms).removeprefix("+ ")
     rhs = " ".join(values).removeprefix("+ ")
-    return f"{head}{lhs} = {rhs} = {fmt(f)} N, {way} ({'; '.join(notes)})"
+    return f"{head}{lhs} = {rhs} = {fmt(f)} N{way} ({'; '.join(notes)})"
 
 
 def _across(kx, ky, rx, ry, couple):

@@ -15,7 +15,7 @@ from ..common.tolerances import DISTINCT, ROUNDING, SAME
 from ..solver.compiler import compile_plan
 from ..scene import Scene
 from ..motion.solution import solve
-from .cycle import _Cycle
+from .cycle import _Cycle, stands_still
 from .engine import _engine_lines
 from .output_motion import (  # noqa: F401  (Stationary, path_origin re-exported)
     Stationary,
@@ -165,16 +165,23 @@ def _mm(x, scene) -> str:
 _MAX_STATIONARY = 12  # more samples still than this: the output dwells (a degenerate linkage)
 
 
-def _dwell(cyc, out) -> int:
+def _dwell(cyc, out, scene) -> int:
     """How many of the cycle's samples the output stands still at, its rate nought to
     rounding against its largest, where they are more than :data:`_MAX_STATIONARY` (it
     dwells over whole ranges of the crank: a degenerate linkage); else 0. An output that
     merely reverses many times (a slider driven through a gear train, 26 times over the
-    train's period) does not dwell: its reversals are its toggles."""
+    train's period) does not dwell: its reversals are its toggles. One whose place spans
+    nothing over the cycle stands still at every sample (its rate is all rounding, the
+    largest too: hundreds of its sign changes were listed as toggles)."""
     rate = np.abs(np.asarray(out.rate(cyc.fr), dtype=float))[~cyc.bad]
     rate = rate[np.isfinite(rate)]
     if not len(rate):
         return 0
+    place = np.asarray(out.value(cyc.fr), dtype=float)[~cyc.fr.bad]
+    if out.kind != "slider":  # an angle: its arc at the longest link's length
+        place = np.unwrap(place) * max(lk.length for lk in scene.links)
+    if len(place) > _MAX_STATIONARY and stands_still(float(np.ptp(place)), scene):
+        return len(rate)
     still = int(np.count_nonzero(rate <= SAME * float(rate.max())))
     return still if still > _MAX_STATIONARY else 0
 
@@ -339,14 +346,16 @@ def analyse(scene: Scene) -> Linkage:
     out = _output_of(scene, plan)
     stationary, out_lines, omin, omax, ratio, tlines = (), (), None, None, None, ()
     if out is not None:
+        dwell = _dwell(cyc, out, scene)
         stationary, out_lines, omin, omax, ratio, tlines = output_motion(
-            cyc, out, scene, fb, sk, slot
+            cyc, out, scene, fb, sk, slot, dwells=bool(dwell)
         )
-        dwell = _dwell(cyc, out)
         if dwell:  # a degenerate linkage: the output dwells
+            every = dwell == int(np.count_nonzero(~cyc.bad))
             notes.append(
-                f"{out.label} stands still at {dwell} of the sampled crank angles (its "
-                "rate nought to rounding): it dwells over whole ranges of the crank (a "
+                f"{out.label} stands still at {'all ' if every else ''}{dwell} of the "
+                "sampled crank angles (its rate nought to rounding): it dwells over "
+                f"{'the whole cycle' if every else 'whole ranges of the crank'} (a "
                 "degenerate linkage), so no single toggle positions are listed"
             )
             stationary, ratio, tlines = (), None, ()

@@ -30,23 +30,36 @@ def stands_still(span, scene) -> bool:
 MOST_PER_SAMPLE = math.radians(10.0)
 
 
-def _followable(scene, plan, h) -> None:
-    """Refuse, in one line, a cycle whose samples (``h`` rad of the crank apart) cannot
-    follow a wheel or a second crank turning at a fixed ratio of the crank: its turning
-    between two samples past :data:`MOST_PER_SAMPLE`."""
+def _too_fast(scene, plan, h) -> str | None:
+    """Why samples ``h`` rad of the crank apart cannot follow a wheel or a second crank
+    turning at a fixed ratio of the crank (its turning between two samples past
+    :data:`MOST_PER_SAMPLE`), with the spacing that would; None where they can."""
     rates = [
         (abs(r), st) for st in plan.steps if (r := getattr(st, "theta_rate", None)) is not None
     ]
-    if not rates:
-        return
+    if not rates or not plan.steps[0].periodic:
+        return None
     rate, st = max(rates, key=lambda t: t[0])
     if not rate * h > MOST_PER_SAMPLE:
+        return None
+    return (
+        f"{st.title} turns {rate:.3g} times as fast as the crank {scene.input.crank}: "
+        f"the crank's cycle, sampled every {math.degrees(h):.3g} deg, cannot follow it "
+        f"(it turns {math.degrees(rate * h):.3g} deg between two samples; samples "
+        f"{math.degrees(MOST_PER_SAMPLE / rate):.3g} deg apart or closer would follow it)"
+    )
+
+
+def _followable(scene, plan, h) -> None:
+    """Refuse, in one line, a cycle whose samples (``h`` rad of the crank apart) cannot
+    follow a wheel or a second crank turning at a fixed ratio of the crank (:func:`_too_fast`)."""
+    why = _too_fast(scene, plan, h)
+    if why is None:
         return
     second = scene.input.second is not None
     raise SceneError(
-        f"{st.title} turns {rate:.3g} times as fast as the crank {scene.input.crank}: "
-        f"the crank's cycle, sampled every {math.degrees(h):.3g} deg, cannot follow it "
-        f"(it turns {math.degrees(rate * h):.3g} deg between two samples); "
+        why
+        + "; "
         + (
             "give the two inputs speeds of comparable size"
             if second
@@ -55,6 +68,16 @@ def _followable(scene, plan, h) -> None:
         file=scene.file,
         key="[input.second] speed" if second else "[rolling]",
     )
+
+
+def aliased(scene, plan, spacing) -> tuple:
+    """A sweep's note where its samples, ``spacing`` rad of the crank apart, cannot follow
+    a wheel or a second crank (the check ``linkage`` refuses by): its extremes may be
+    aliased; () where they can (or fewer than three samples give no spacing)."""
+    why = None if spacing is None else _too_fast(scene, plan, spacing)
+    if why is None:
+        return ()
+    return (f"{why}: the extremes below may be aliased, not the motion's own",)
 
 
 # --------------------------------------------------------------------------- over the cycle

@@ -113,12 +113,7 @@ class TurningMoment:
         out = [
             f"turning moment over the cycle ({deg:g} deg of the crank from the inner dead "
             f"centre at {self.theta_idc:.4f} deg, in the crank's sense of rotation; "
-            + (
-                "no masses given: the gas force alone"
-                if not self.inertia_included
-                else "with the inertia of the moving parts"
-                + (" at the virtual 1 rad/s: the crank is at rest" if scene.at_rest else "")
-            )
+            + _basis(scene, self.inertia_included)
             + "; "
             + self.words
             + ")",
@@ -142,8 +137,14 @@ class TurningMoment:
             )
         out.append(
             f"  maximum fluctuation of energy dE_max = E_max - E_min = {self.E_max:.6g}"
-            f" - ({self.E_min:.6g}) = {self.dE_max:.6g} J (the speed greatest at "
-            f"{self.at_max:.4f} deg, least at {self.at_min:.4f} deg)"
+            f" - ({self.E_min:.6g}) = {self.dE_max:.6g} J ("
+            + (
+                "starting from rest: no speed yet to be greatest or least)"
+                if scene.at_rest and scene.start_alpha
+                else ("turning slowly, its inertia nought, " if scene.at_rest else "")
+                + f"the speed {'would be ' if scene.at_rest else ''}greatest at "
+                f"{self.at_max:.4f} deg, least at {self.at_min:.4f} deg)"
+            )
         )
         if self.flywheel is not None:
             cs, w, inertia, mass = self.flywheel
@@ -187,6 +188,25 @@ class TurningMoment:
             cs, w, inertia, mass = self.flywheel
             out["flywheel"] = {"Cs": cs, "omega_mean": w, "I": inertia, "mass": mass}
         return out
+
+
+def _basis(scene, inertia) -> str:
+    """What the turning moment over the cycle counts, in words: the inertia of the moving
+    parts, or at rest none (nothing moves: the gas force and the weights), or starting from
+    rest the start's alone (its alpha at every angle, no velocity: not a running cycle)."""
+    rest, start = scene.at_rest, scene.start_alpha
+    if rest and start and inertia:
+        return (
+            f"starting from rest at every angle, alpha_{scene.input.crank} = "
+            f"{abs(start):.6g} rad/s^2 {'ccw' if start > 0 else 'cw'}: the gas force and the "
+            "start's inertia alone (no velocity), not a running engine's cycle"
+        )
+    if inertia:
+        return "with the inertia of the moving parts"
+    if rest:
+        weights = " and the weights" if scene.gravity is not None else " alone"
+        return f"at rest: the gas force{weights}, no inertia (nothing moves)"
+    return "no masses given: the gas force alone"
 
 
 def engine_piston(scene: Scene):
@@ -449,7 +469,8 @@ def turning_moment(scene: Scene) -> TurningMoment:
         float(E_min),
         at_min,
         fly,
-        bool(scene.masses),
+        bool(scene.masses) and not (scene.at_rest and not scene.start_alpha),  # (at rest
+        # nothing moves: no inertia; starting from rest, the start's)
         words,
     )
 

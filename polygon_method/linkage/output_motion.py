@@ -28,12 +28,15 @@ class Stationary:
     what: str
 
 
-def output_motion(cyc: _Cycle, out: _Output, scene, fb, sk, slot):
+def output_motion(cyc: _Cycle, out: _Output, scene, fb, sk, slot, dwells=False):
     """(stationary, lines, min, max, time ratio, quick-return lines) of the output ``out``
     over the cycle ``cyc``; ``fb``, ``sk``, ``slot``: the four-bar, slider crank or slotted
-    lever the scene is (or None), which name the toggles."""
-    stats = _stationary(cyc, out, scene, fb, sk, slot)
-    vals = _ends(cyc, out, stats)
+    lever the scene is (or None), which name the toggles. An output that ``dwells`` (its
+    rate nought to rounding over whole ranges: a degenerate linkage) has no single toggle
+    positions: its rounding's hundreds of sign changes are not refined one by one (seconds
+    of work thrown away), its range is its place's extremes, refined."""
+    stats = [] if dwells else _stationary(cyc, out, scene, fb, sk, slot)
+    vals = _ends(cyc, out, stats) + (_extremes(cyc, out) if dwells else [])
     # the output's range is a matter of positions: every sample that assembles counts,
     # also those where the velocities are indeterminate (a nearly locked linkage has no other)
     if out.kind == "slider":
@@ -55,6 +58,21 @@ def _stationary(cyc, out, scene, fb, sk, slot) -> list:
         )
     stats.sort(key=lambda s: s.deg)
     return stats
+
+
+def _extremes(cyc, out) -> list:
+    """The output's least and largest place over the cycle, each refined (an angle taken
+    within half a turn of its first sample's)."""
+    if out.kind == "slider":
+        f = out.value
+    else:
+        ok = ~cyc.fr.bad
+        ref = float(out.value(cyc.fr)[ok][0]) if ok.any() else 0.0
+
+        def f(fr):
+            return ref + (out.value(fr) - ref + math.pi) % TWO_PI - math.pi
+
+    return [cyc.extreme(f, sense, positions=True)[1] for sense in (-1.0, 1.0)]
 
 
 def _ends(cyc, out, stats) -> list:

@@ -45,6 +45,7 @@ from .summary_limits import (
 from .summary_forces import at_singular, force_arrays, singular_note, spread
 from ..forces.cylinder import given_forces
 from .summary_record import Extreme, Summary
+from .cycle import aliased
 
 __all__ = ["summarize", "summary_of", "Summary", "Extreme"]
 
@@ -318,7 +319,7 @@ class _Reducer:
         dom = self.sw.domain
         n = len(theta)
         spacing = float(np.median(np.abs(np.diff(theta[:10001])))) if n > 2 else None
-        notes = tuple(dom.notes) + self._forces_note()
+        notes = tuple(dom.notes) + self._forces_note() + aliased(self.scene, self.sw.plan, spacing)
         rows, tasks = self._rows(theta, spacing, refine)
         if tasks:
             self._refine_rows(tasks, spacing)

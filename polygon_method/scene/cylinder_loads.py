@@ -270,7 +270,11 @@ class _CylinderLoads:
             )
         if "rod" not in spec:
             return p * area, words + " on the cap side, " + (
-                "pushing the rod out" if p >= 0 else "below the atmosphere: pulling the rod in"
+                "pushing the rod out"
+                if p > 0
+                else "no force"
+                if p == 0
+                else "below the atmosphere: pulling the rod in"
             )
         rod = self.length(spec["rod"], "loads", name)
         if rod >= bore:
@@ -286,7 +290,13 @@ class _CylinderLoads:
                 -p * annulus,
                 f"{spec['pressure']} on the annulus of a {self._words(bore)} bore less a "
                 f"{self._words(rod)} rod, "
-                + ("pulling the rod in" if p >= 0 else "below the atmosphere: pushing the rod out"),
+                + (
+                    "pulling the rod in"
+                    if p > 0
+                    else "no force"
+                    if p == 0
+                    else "below the atmosphere: pushing the rod out"
+                ),
             )
         back = self._gauge(spec, "back", name)
         return p * area - back * annulus, (

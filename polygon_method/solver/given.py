@@ -127,6 +127,10 @@ def resolve(plan: Plan) -> Resolution:
         if given.rate is None and inp.alpha is None:
             alpha = -omega * omega * h / y1  # steady: the rate of change of speed is 0
     else:
+        for st in plan.steps:  # a cylinder at the end of its stroke: against its stop
+            stop = st.stop_words(m.P, given.names[0], given.value)
+            if stop:
+                raise SingularStepError(f"{label}: {stop}", step=f"[input] {given.key}")
         y1, h = quantity(given, m, sc)
         size = 1.0 if given.kind == "omega" else r
         cond = abs(y1) / size

@@ -484,6 +484,12 @@ class Step:
         """Why the linkage cannot be assembled beyond a limit position of this step."""
         return "the linkage cannot be assembled beyond it"
 
+    def stop_words(self, P, key, rate) -> str | None:
+        """Why its link ``key`` cannot move at the stated ``rate`` (signed as the scene reads
+        it) from the positions ``P``: against a stop (a cylinder at the end of its stroke);
+        None where it can."""
+        return None
+
     def condition_column(self):
         """(name, unit, words) of this step's condition in a sweep summary: the
         transmission angle for the steps whose condition is its sine."""

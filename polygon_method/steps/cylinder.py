@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 from ..common.errors import TOL, AssemblyError, SingularStepError
 from ..common.numbers import in_units
-from ..common.tolerances import LEAST_REACH, ROUNDING
+from ..common.tolerances import LEAST_REACH, ROUNDING, SAME
 from .base import (
     Construction,
     DirectionLine,
@@ -217,6 +217,22 @@ class CylinderStep(Step):
             f"cylinder {self.key} would be {in_units(n, u)} {nm} long here, outside its "
             f"stroke {in_units(lo, u)} to {in_units(hi, u)} {nm} (fully "
             f"{'closed' if n < lo else 'extended'})"
+        )
+
+    def stop_words(self, P, key, rate) -> str | None:
+        """Extending (``rate`` > 0) at its full extension, or retracting at its least length,
+        is against the end of its stroke (its length that end's to the answers' resolution,
+        ``SAME``): it cannot."""
+        if key != self.key or self.stroke is None or not rate:
+            return None
+        n, (lo, hi) = math.dist(P[self.barrel], P[self.rod]), self.stroke
+        if n < hi * (1 - SAME) if rate > 0 else n > lo * (1 + SAME):
+            return None
+        u, nm = self.unit, self.uname
+        return (
+            f"the cylinder {self.key} is fully {'extended' if rate > 0 else 'closed'} here "
+            f"({in_units(n, u)} {nm} long, the end of its stroke {in_units(lo, u)} to "
+            f"{in_units(hi, u)} {nm}): it cannot {'extend' if rate > 0 else 'retract'}"
         )
 
     def singular_why(self, c) -> str:
