@@ -10,6 +10,7 @@ import math
 import re
 
 from ..common.errors import SceneError, printable
+from ..common.tolerances import SAME
 from ..common.units import UNITS
 from .angles import candidates, is_book_form
 from .crank_speed import crank_speed, link_angle, second_crank_angle
@@ -468,7 +469,7 @@ class _Input:
             x, y = self.coords(spec[name], "input", name)
             s = (x - through[0]) * u[0] + (y - through[1]) * u[1]
             off = -(x - through[0]) * u[1] + (y - through[1]) * u[0]
-            if abs(off) > 1e-9 * max(abs(x), abs(y), abs(s), self.scale()):
+            if abs(off) > SAME * max(abs(x), abs(y), abs(s), self.scale()):
                 raise self.error(
                     f"{name} = {spec[name]} is {abs(off) / self.scale():.6g} "
                     f"{self.unit} off the guide of {name}: give a point of it",
@@ -829,7 +830,7 @@ class _Input:
         if u is not None:
             if d is not None:
                 along = d[0] * u[0] + d[1] * u[1]
-                if abs(along) < 1e-9:
+                if abs(along) < SAME:
                     raise self.error(
                         f"{raw!r}: the guide is perpendicular to that direction; "
                         "give the speed along the guide, signed, or up, down, "
