@@ -205,7 +205,9 @@ def test_play_runs_and_pause_stops(opened):
     o = opened("slotted")
     before = o.text("#angle-now")
     o.page.click("#play")
-    o.page.wait_for_timeout(600)
+    o.page.wait_for_function(  # waited for, not timed: a loaded machine draws slower
+        "b => document.getElementById('angle-now').textContent !== b", arg=before, timeout=20000
+    )
     running = o.text("#angle-now")
     assert running != before
     o.page.click("#play")
@@ -220,7 +222,9 @@ def test_play_turns_back_at_the_limit_positions(opened):
     n = len(o.data["theta"])
     o.slide(n - 2)
     o.page.click("#play")
-    o.page.wait_for_timeout(500)
+    o.page.wait_for_function(  # back below where it started: it turned at the limit
+        "m => +document.getElementById('angle').value < m", arg=n - 2, timeout=20000
+    )
     o.page.click("#play")
     k = int(o.page.input_value("#angle"))
     assert 0 <= k < n - 2

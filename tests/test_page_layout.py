@@ -175,7 +175,10 @@ def test_the_animation_player_works_offline(browser, tmp_path):
         page.goto(url)
         first = page.text_content("#now")
         page.click("#play")
-        page.wait_for_timeout(500)
+        # the player moves on (waited for, not timed: a loaded machine draws slower)
+        page.wait_for_function(
+            "f => document.getElementById('now').textContent !== f", arg=first, timeout=20000
+        )
         page.click("#play")
         assert page.text_content("#now") != first
         assert all(page.text_content(b).strip() for b in ("#play", "#back", "#next"))
