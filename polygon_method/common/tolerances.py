@@ -22,15 +22,21 @@ __all__ = [
     "ROUNDING",
     "FLOOR",
     "LEAST_REACH",
+    "LEAST_CONDITION",
+    "NO_RADIUS",
     "ULP",
     "DISTINCT",
     "ON_PAPER",
     "PLOTTED_ZERO",
+    "PARALLEL",
     "EXTREME_RESOLVED",
     "ZERO_RESOLVED",
     "REFINED",
     "AT_LIMIT",
     "SMOOTH",
+    "CHANGE_POINT",
+    "BESIDE_CHANGE",
+    "SETTLED",
     "CONVERGED",
     "LEAST_STEP",
     "ONE_ASSEMBLY",
@@ -41,8 +47,10 @@ __all__ = [
 
 #: the tool's promise: every answer agrees with an independent reference to this fraction of
 #: its size, so two lengths, places or directions that agree to it are the same (a point on
-#: a line, a centre distance that is the sum of the radii, a drawn label on its spot): a
-#: finer difference is not one the answers can resolve
+#: a line, a centre distance that is the sum of the radii, a drawn label on its spot, an
+#: assembly's two positions, a piston level with its crank centre): a finer difference is
+#: not one the answers can resolve, so an error bound below it is not shown, and a force
+#: below it of the sheet's largest is no side of a force polygon
 SAME = 1e-9
 #: a few units in the last place gathered by a handful of operations: the slack with which a
 #: computed value is held to a limit it may reach exactly (a stroke's ends, a crank that just
@@ -59,6 +67,14 @@ FLOOR = 1e-300
 #: a step's least reach (m): the size its tolerances scale with never drops to zero, even
 #: for a link of no length (refused elsewhere, but the scale must not divide by zero first)
 LEAST_REACH = 1e-9
+#: the least condition an error bound divides by (its 1/condition along the plan), and the
+#: least fraction of the mechanism's size a lever's length is taken as there: a bound stays
+#: finite at a step of no condition or a lever of no length (a solved step's condition is
+#: far above it, at the refusal band's edge or more)
+LEAST_CONDITION = 1e-12
+#: a rack's pitch line closer than this (m) to its pinion's centre passes through it: a
+#: pinion of no radius, refused (never a division by a rounding-sized radius)
+NO_RADIUS = 1e-12
 
 # ----------------------------------------------------------------- near nothing, on the page
 #: a few units in the last place of a number of size one (a unit vector's component): below
@@ -66,7 +82,8 @@ LEAST_REACH = 1e-9
 ULP = 1e-15
 #: a difference that must be plain to count: a slip whose value is the right one to this
 #: fraction is no slip, a plotted curve that varies less is drawn flat, a parallelogram whose
-#: links are parallel to it is not crossed, a point this far (cm) off a drawn line is off it
+#: links are parallel to it is not crossed, a point this far (cm) off a drawn line is off it,
+#: a point moving this far (deg) from the direction its given speed states is noted
 DISTINCT = 1e-6
 #: a length on a drawing (cm on the sketch, pixels on a picture) or an angle drawn (rad)
 #: below which it is nothing, and the slack with which a drawn place is held to a limit (a
@@ -76,12 +93,16 @@ ON_PAPER = 1e-9
 #: a plotted quantity whose every value is below this fraction of its unit's size is nought
 #: (drawn as a flat line about 0, not as magnified rounding noise)
 PLOTTED_ZERO = 1e-8
+#: two lines whose angle's sine is below this are parallel: they meet at infinity (an
+#: instantaneous centre too far to locate, said so), never at a place that is rounding
+PARALLEL = 1e-12
 
 # ----------------------------------------------------------------- refining over a cycle
 #: the bracket (rad of the crank) at which an extreme's refinement stops: the angle is then
 #: known to its last few digits
 EXTREME_RESOLVED = 1e-13
-#: the bracket (rad of the crank) at which a zero crossing's refinement stops
+#: the bracket (rad of the crank, or of the parameter's radian) at which a zero crossing's
+#: refinement stops (a limit position's too: where the failing step's discriminant vanishes)
 ZERO_RESOLVED = 1e-14
 #: a sweep's extremes are refined to about this (rad of the crank, or of the parameter's
 #: radian): the zooming passes are as many as that takes from the sample spacing
@@ -93,6 +114,19 @@ AT_LIMIT = 1e-9
 #: at the limit to this fraction of its kind is finite and smooth there (it is then taken as
 #: an extreme at the limit; one that does not may grow without bound)
 SMOOTH = 1e-7
+#: a step whose condition's refined minimum over the cycle is below this passes through a
+#: change point there (its two assemblies meet): the branch is then decided by the velocity
+CHANGE_POINT = 1e-7
+#: the offset (rad, or of the parameter's radian) either side of a change point at which
+#: the velocities of the branch arriving, of the branch kept and of the one flipped are
+#: compared: far enough for the branches to differ, near enough for the motion to be one
+BESIDE_CHANGE = 1e-6
+
+# ----------------------------------------------------------------- the force analysis
+#: with friction, the passes have settled when the friction loads change by less than this
+#: fraction of the instant's largest force from one pass to the next (some fifty units in
+#: the last place of the largest force: rounding, not a change)
+SETTLED = 1e-14
 
 # ----------------------------------------------------------------- the triad's loop solve
 #: Newton's residual (|Fi| / 2 li, relative to the largest length) taken as converged

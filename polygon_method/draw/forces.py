@@ -18,6 +18,7 @@ import re
 from ..common.errors import PolygonMethodError
 from ..forces import couple_label, number_sub, side_label
 from ..common.numbers import fmt, sense_word
+from ..common.tolerances import ON_PAPER, SAME
 from ..polygons.scales import Scale, diagram_scales, force_scale, polygon_corners
 from .sketch import _header, _Sketch, _text_size
 from .style import (
@@ -45,8 +46,9 @@ CHORD_STYLE = ("#000000", 0.9, (5.0, 2.0))
 ARROW_CM = 1.5
 #: the radius (cm) of a couple's curved arrow
 COUPLE_R = 0.5
-#: a side shorter than this fraction of the sheet's largest force is not drawn (rounding)
-NEGLIGIBLE = 1e-9
+#: a side shorter than this fraction of the sheet's largest force is not drawn (rounding:
+#: a finer difference than the answers resolve)
+NEGLIGIBLE = SAME
 #: the narrowest (cm) a panel's lines of words are wrapped to: a panel is as wide as its
 #: drawing, or this, so that narrow polygons and free bodies share a page
 LINES_CM = 7.0
@@ -308,7 +310,7 @@ def _force_arrows(sk, sol, fb, body, cm, tiny, numbers, tag) -> list:
         out = (at, (at[0] + ARROW_CM * u[0], at[1] + ARROW_CM * u[1]))
         into = ((at[0] - ARROW_CM * u[0], at[1] - ARROW_CM * u[1]), at)
         inside = [LineString(c).intersection(body).length for c in (out, into)]
-        start, end = out if inside[0] <= inside[1] + 1e-9 else into
+        start, end = out if inside[0] <= inside[1] + ON_PAPER else into
         if fb.body.startswith("block ") and side.what == "pin":
             # on a block (too small to keep off): the link's push drawn from the link's
             # side onto the pin, its pull from the pin towards the link

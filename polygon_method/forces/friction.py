@@ -29,14 +29,13 @@ Every friction force works against the motion: its power ``-mu |N| |v_rel|`` at 
 
 from __future__ import annotations
 
+from ..common.tolerances import SETTLED
 from ..steps.rounding import vhypot
 from .records import FRAME, Side, block
 
-#: the passes of the walk at most before friction is said not to settle
+#: the passes of the walk at most before friction is said not to settle (they have settled
+#: when the loads change by less than ``SETTLED`` of the largest force: common/tolerances.py)
 ROUNDS = 200
-#: how little the friction loads may change between two passes, relative to the largest
-#: force (of the instant): then they have settled
-SETTLED = 1e-14
 
 
 def sgn(x):

@@ -50,7 +50,7 @@ import math
 from dataclasses import dataclass
 
 from ..common.errors import TOL, SceneError, SingularStepError
-from ..common.tolerances import SAME, crossing_angle
+from ..common.tolerances import PARALLEL, SAME, crossing_angle
 from ..scene import FixedPath, GuideSlider, YokeSlot, guide_words
 
 __all__ = ["Centre", "Centres", "locate", "centres_dict", "MAX_BODIES", "JSON_BODIES"]
@@ -59,8 +59,6 @@ __all__ = ["Centre", "Centres", "locate", "centres_dict", "MAX_BODIES", "JSON_BO
 MAX_BODIES = 30
 #: ``solve --json`` lists the centres of mechanisms of at most this many bodies (66 centres)
 JSON_BODIES = 12
-#: two lines closer to parallel than this (sine of their angle) meet at infinity
-PARALLEL = 1e-12
 #: what a student can do where a centre is too far to locate
 _POLYGONS_STAND = (
     "; the velocity and acceleration polygons are not affected "

@@ -35,6 +35,7 @@ from dataclasses import replace
 
 from ..common.errors import AssemblyError, PolygonMethodError, SceneError
 from ..common.numbers import in_units, quiet
+from ..common.tolerances import SAME, TOL
 from .completion import gas_towards_crank, given_completed, place
 from .mobility import gruebler, leftover
 from .plan import Bodies, Dims, Plan, _pin_entries, first_tier
@@ -414,7 +415,7 @@ class _Compiler:
             default = step.default_hint(P)
             reach = step.reach()
             sigma = self.pick(name, default, plus, minus, step, default=True, scale=reach)
-            if math.dist(plus, minus) > 1e-9 * reach:
+            if math.dist(plus, minus) > SAME * reach:
                 side = (
                     "on the side of the block"
                     if default == "block side"
@@ -435,7 +436,7 @@ class _Compiler:
         sep = math.dist(plus, minus)
         if scale is None:
             scale = step.reach()
-        if sep <= 1e-12 * scale:
+        if sep <= TOL.closure * scale:  # the circles touch: one position
             return 1.0
         if hint == "block side":
             return 1.0
@@ -446,7 +447,7 @@ class _Compiler:
         if isinstance(hint, str):
             axis, want = _SIDES[hint]
             d = (plus[axis] - minus[axis]) * want
-            if abs(d) <= 1e-9 * scale:
+            if abs(d) <= SAME * scale:
                 if default:  # level: take the right-hand one
                     return 1.0 if plus[0] >= minus[0] else -1.0
                 other = "left/right" if axis == 1 else "above/below"

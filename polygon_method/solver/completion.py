@@ -11,6 +11,7 @@ from dataclasses import replace
 
 from ..common.errors import AssemblyError, PolygonMethodError, SceneError
 from ..common.numbers import in_units, sense
+from ..common.tolerances import SAME
 from ..scene import key_line
 from ..steps import Context
 from .given import completed, growth_words, place_roots, resolve
@@ -84,7 +85,7 @@ def gas_towards_crank(plan, sc):
         ux, uy = path.u
         d = (ox - x) * ux + (oy - y) * uy
         size = max(lk.length for lk in sc.links)
-        if abs(d) <= 1e-9 * size:
+        if abs(d) <= SAME * size:
             raise SceneError(
                 f"the piston {ld.target} is level with the crank centre {pivot} "
                 "along its path: towards the crank says no way: give the gas "

@@ -34,6 +34,7 @@ and then given a margin (``benchmarks/error_bounds.py``). The same formulas take
 
 from __future__ import annotations
 
+from ..common.tolerances import SAME
 from .compiler import compile_plan
 from .kinematics import hypot
 from ..steps.rounding import CAP, C_FLOOR, EPS, USELESS, largest, vmax, vmin
@@ -52,7 +53,7 @@ __all__ = [
 ]
 
 #: the text report shows a bound only above this (the promise of agreement everywhere else)
-SHOWN = 1e-9
+SHOWN = SAME
 #: the reason given, in words and in the JSON, where a bound is no useful bound
 NO_BOUND = (
     "no useful bound: the rounding carried along the steps a quantity depends on "

@@ -41,7 +41,7 @@ from dataclasses import replace
 
 from ..common.errors import TOL, SingularStepError
 from ..common.numbers import condition_text, quiet, sense
-from ..common.tolerances import ROUNDING, SAME
+from ..common.tolerances import DISTINCT, ROUNDING, SAME
 from .plan import Context, Plan
 from ..scene import GIVEN_KINDS
 
@@ -106,7 +106,7 @@ def resolve(plan: Plan) -> Resolution:
                 "as the mechanism allows",
                 step=f"[input] {given.key}",
             )
-        if off > 1e-6:
+        if off > DISTINCT:
             notes.append(
                 f"{given.key}: {given.names[0]} moves along "
                 f"{math.degrees(math.atan2(vy, vx)) % 360.0:.6g} deg here, {off:.3g} "

@@ -29,7 +29,7 @@ from dataclasses import replace
 import numpy as np
 
 from ..common.errors import TOL, SceneError, SingularStepError
-from ..common.tolerances import FLOOR, ROUNDING, SAME
+from ..common.tolerances import BESIDE_CHANGE, CHANGE_POINT, FLOOR, ROUNDING, SAME, ZERO_RESOLVED
 from .compiler import compile_plan
 from .plan import Context
 from .domain import NEAR, TWO_PI, ChangePoint, Domain, LimitPosition, degrees_fn, fmt_deg
@@ -62,7 +62,7 @@ SCOUT = 4096
 #: a step whose condition falls below this (and rises again) is checked for a change point
 _CANDIDATE = 0.2
 #: ... and is a change point where its refined minimum is below this
-_CHANGE = 1e-7
+_CHANGE = CHANGE_POINT
 #: the most points whose motion over the crank's cycle is followed (a sweep's summary of
 #: 1000 takes about 10 s)
 MAX_CYCLE_POINTS = 1000
@@ -73,7 +73,7 @@ _NOT_AGAIN = "after a full turn of the crank the mechanism is not where it start
 #: offset either side of a change point when comparing the branches' velocities (rad; for
 #: a driving block, times the length that plays a radian's part: ``Step.parameter_scale``,
 #: as for every offset below)
-_DELTA = 1e-6
+_DELTA = BESIDE_CHANGE
 #: where the condition is measured either side of a change point, for its slope (rad)
 _PROBE = 0.01
 #: the widest a change point's neighbourhood is made (rad)
@@ -365,7 +365,7 @@ class Sweeper:
             if j == 0:
                 break
             good, bad = pts[j - 1], pts[j]
-            if abs(bad - good) < 1e-14 * self.scale:
+            if abs(bad - good) < ZERO_RESOLVED * self.scale:
                 break
         return float(good), step or "the plan"
 
@@ -435,7 +435,7 @@ class Sweeper:
             probe = _PROBE * k
             c1 = self._scout(plan, np.array([tc - direction * probe])).cond[st.index][0]
             c2 = self._scout(new, np.array([tc + direction * probe])).cond[st.index][0]
-            slope = max(min(c1, c2) / probe, 1e-12 / k)
+            slope = max(min(c1, c2) / probe, ROUNDING / k)  # a slope of rounding: none
             radius = min(max(NEAR * k, 4 * TOL.singular / slope), _WIDEST * k)
             return new, ChangePoint(tc, st.label, pt, True, flipped, f"{where}; {what}", radius)
         why = (

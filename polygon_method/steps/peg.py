@@ -50,7 +50,7 @@ from .base import (
     sub,
     unit,
 )
-from .rounding import line_rounding, plus, two_lines, vhypot, vmax
+from .rounding import C_FLOOR, line_rounding, plus, two_lines, vhypot, vmax
 
 __all__ = [
     "Peg",
@@ -368,7 +368,7 @@ class Peg(Step):
             if isinstance(s, GuideSlider):
                 (gx, gy), (hx, hy) = P[s.first], P[s.second]
                 x, y = P[self.point]
-                far = vhypot(x - gx, y - gy) / vmax(vhypot(hx - gx, hy - gy), 1e-12 * Ls)
+                far = vhypot(x - gx, y - gy) / vmax(vhypot(hx - gx, hy - gy), C_FLOOR * Ls)
                 lever = vmax(lever, 1.0 + far)
         p, v, a, w, al = two_lines(
             walk.condition(self),

@@ -28,7 +28,7 @@ from dataclasses import dataclass
 
 from ..common.errors import SceneError
 from ..common.numbers import in_units
-from ..common.tolerances import LEAST_REACH, SAME
+from ..common.tolerances import LEAST_REACH, NO_RADIUS, SAME
 from .base import Construction, DirectionLine, Step, Vector, absolute, image_label
 from .rolling_dims import angle_of, turned
 from .rounding import EPS, line_rounding
@@ -51,7 +51,7 @@ def _rack_params(scene, pr, kb_rate, beta0=0.0):
     d = (tx - ox) * -uy + (ty - oy) * ux  # signed distance of the line from O (along perp u)
     Rp = abs(d)
     where = f"[rolling] {pr.rim}"
-    if Rp < 1e-12:
+    if Rp < NO_RADIUS:
         raise SceneError(
             f"the rack {pr.rim}'s path passes through the pinion's centre "
             f"{pr.base_centre}: a pinion of no radius",

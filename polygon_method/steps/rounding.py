@@ -28,6 +28,8 @@ from __future__ import annotations
 
 import math
 
+from ..common.tolerances import LEAST_CONDITION
+
 __all__ = [
     "EPS",
     "C_FLOOR",
@@ -43,8 +45,9 @@ __all__ = [
 
 #: unit roundoff of IEEE double precision
 EPS = 2.0**-53
-#: the conditions are at least the refusal band's edge; never divide by less than this
-C_FLOOR = 1e-12
+#: the conditions are at least the refusal band's edge; never divide by less than this (nor
+#: by a lever shorter than this fraction of the mechanism's size)
+C_FLOOR = LEAST_CONDITION
 #: a relative bound at or above this says nothing (the error may be the size of the largest
 #: value of its kind): "no useful bound", null in the JSON
 USELESS = 1.0

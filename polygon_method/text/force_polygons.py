@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import math
 
-from ..common.tolerances import FLOOR
+from ..common.tolerances import FLOOR, SAME
 from ..forces import FRAME, side_label
 
 __all__ = ["body_name", "polygon_items"]
@@ -27,7 +27,7 @@ def polygon_items(st, f, scale, F) -> list:
 
 
 def _one_polygon(pg, f, scale, F, named) -> list:
-    tiny = 1e-9 * max(F, FLOOR)
+    tiny = SAME * max(F, FLOOR)  # as the sheet leaves a side out (draw.forces.NEGLIGIBLE)
     sides = [
         f"{side_label(sd, f.numbers, unicode=False)} {scale.cm(math.hypot(*sd.vector)):.2f}"
         " cm" + (" (found)" if any(k == u for u, _ in pg.unknown) else "")
