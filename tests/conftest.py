@@ -23,3 +23,59 @@ def _mpmath_precision_kept():
     saved = mpmath.mp.dps
     yield
     mpmath.mp.dps = saved
+
+
+#: Chromium's switches for a headless run with no network and nothing started beside the page
+CHROMIUM_ARGS = [
+    "--headless",
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-quic",
+    "--no-first-run",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+]
+
+
+def _chromium():
+    """The system's Chromium (``$CHROMIUM``, Debian's /usr/bin/chromium, or on the path)."""
+    import os
+    import shutil
+
+    for path in (
+        os.environ.get("CHROMIUM"),
+        "/usr/bin/chromium",
+        shutil.which("chromium"),
+        shutil.which("chromium-browser"),
+    ):
+        if path and os.path.exists(path):
+            return path
+    return None
+
+
+@pytest.fixture(scope="module")
+def browser():
+    """Headless Chromium driven by Playwright, one per test module; where Playwright or the
+    browser is missing, or it will not start, the tests that ask for it skip saying which
+    (``.ci/run`` installs both where it can)."""
+    try:
+        from playwright.sync_api import sync_playwright
+    except ImportError:
+        pytest.skip(
+            "playwright is not installed (pip install playwright): the page's "
+            "browser tests cannot run"
+        )
+    exe = _chromium()
+    if exe is None:
+        pytest.skip(
+            "no Chromium found (/usr/bin/chromium; apt-get install chromium): the "
+            "page's browser tests cannot run"
+        )
+    with sync_playwright() as p:
+        try:
+            b = p.chromium.launch(executable_path=exe, args=CHROMIUM_ARGS)
+        except Exception as exc:  # a browser that will not start is a skip with its reason
+            pytest.skip(f"Chromium at {exe} does not start: {str(exc).splitlines()[0]}")
+        yield b
+        b.close()

@@ -83,11 +83,12 @@ def test_which_sliders_are_blocks_is_asked_of_the_scene():
 
 def test_views_ask_the_driver_never_the_scene_what_drives():
     """What drives the mechanism (a crank, or a block along its guide) is asked of the
-    plan's first step (the driver protocol): outside the scene's reading, the steps and the
-    compiler that makes the driver from ``[input] block`` and a force room asking whether
-    the scene's given motion drives its cylinder, nothing reads ``input.block``."""
+    plan's first step (the driver protocol): outside the scene's reading, the steps, the
+    compiler that makes the driver from ``[input] block`` (and says where a block that
+    cannot assemble could be placed) and a force room asking whether the scene's given
+    motion drives its cylinder, nothing reads ``input.block``."""
     pattern = re.compile(r"\b(input|inp)\.block\b")
-    allowed = ("solver/compiler.py", "forces/cylinder.py")
+    allowed = ("solver/compiler.py", "solver/reach.py", "forces/cylinder.py")
     seen = []
     for path, text in _sources():
         rel = path.relative_to(PACKAGE)
@@ -532,12 +533,9 @@ def test_a_condition_is_read_as_an_angle_in_one_place():
 #: the code was laid out by ``ruff format`` (a call's arguments one to a line), and wait to be
 #: split into modules of one job; the list may only shrink and no cap may rise
 LONG_MODULES: dict = {
-    "forces/records.py": 639,
-    "scene/inputs.py": 855,
     "scene/reading.py": 672,
     "scene/records.py": 643,
     "scene/tables.py": 692,
-    "solver/compiler.py": 731,
 }
 
 
@@ -558,14 +556,8 @@ def test_modules_of_one_job_stay_under_600_lines():
 #: laid out by ``ruff format``; the rest grew past 80 lines in that layout (a call's arguments
 #: one to a line) and are split as they are next worked on
 LONG_FUNCTIONS = {
-    "draw/forces.py:_free_body",
-    "draw/forces.py:_polygon",
-    "page/data.py:page_data",
     "scene/angles.py:read_angle",
     "scene/answers.py:answer",
-    "scene/inputs.py:block_input",
-    "scene/inputs.py:collar_input",
-    "scene/inputs.py:input",
     "scene/reading.py:parse_answers",
     "scene/reading.py:scene",
     "scene/rolling.py:read_rolling",
@@ -573,8 +565,6 @@ LONG_FUNCTIONS = {
     "scene/tables.py:sliders",
     "scene/variation.py:_point",
     "scene/wheel_input.py:wheel_input",
-    "solver/compiler.py:finish",
-    "solver/compiler.py:run",
 }
 LONGEST = 80
 
@@ -599,28 +589,16 @@ def test_no_function_is_longer_than_80_lines_but_the_listed():
 #: ``common/tolerances.py``, by module, with the most each may hold: the list may only
 #: shrink and no count may rise (name a new tolerance there, with what it protects). Those in
 #: ``common/unit_tables.py`` are unit factors and the least sizes a quantity may have (``TINY``),
-#: those in ``polygons/scales.py`` the range of a drawing's scale, those in
-#: ``scene/energy_press.py`` an area's unit factors, and ``forces/friction.py``'s are the
-#: passes' own named settling and noise: named where they stand
+#: those in ``polygons/scales.py`` the range of a drawing's scale, and ``forces/friction.py``'s
+#: are the passes' own named settling and noise: named where they stand
 LITERALS = {
     "common/unit_tables.py": 7,
     "draw/forces.py": 2,
     "forces/friction.py": 1,
     "polygons/scales.py": 4,
-    "scene/angles.py": 3,
-    "scene/energy_flywheel.py": 2,
-    "scene/energy_press.py": 3,
-    "scene/engine.py": 2,
-    "scene/inputs.py": 2,
-    "scene/reading.py": 1,
-    "scene/records.py": 2,
-    "scene/rolling.py": 4,
     "scene/tables.py": 3,
-    "scene/triangle.py": 2,
-    "scene/variation.py": 2,
-    "scene/wheel_input.py": 1,
     "solver/centres.py": 1,
-    "solver/compiler.py": 4,
+    "solver/compiler.py": 3,
     "solver/completion.py": 1,
     "solver/errorbound.py": 1,
     "solver/given.py": 1,

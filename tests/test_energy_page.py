@@ -8,9 +8,7 @@ quadrature, to the four figures shown. Without Playwright or Chromium the browse
 skip and say which is missing."""
 
 import math
-import os
 import re
-import shutil
 from pathlib import Path
 
 import mpmath
@@ -38,7 +36,6 @@ angle = [0, 30, 90, 90, 180, 360]
 torque = [0, 900, 900, 200, 0, 0]
 """
 N = 90  # frames of the law's page: 4 deg apart
-ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--no-first-run"]
 NUM = re.compile(r"[-+−]?\d+(?:\.\d+)?(?:e[-+]\d+)?")
 
 
@@ -140,31 +137,6 @@ def test_bad_input_is_one_line_and_leaves_the_file(tmp_path, capsys):
 
 
 # -- in the browser
-
-
-def _chromium():
-    for path in (os.environ.get("CHROMIUM"), "/usr/bin/chromium", shutil.which("chromium")):
-        if path and os.path.exists(path):
-            return path
-    return None
-
-
-@pytest.fixture(scope="module")
-def browser():
-    try:
-        from playwright.sync_api import sync_playwright
-    except ImportError:
-        pytest.skip("playwright is not installed: the page's browser tests cannot run")
-    exe = _chromium()
-    if exe is None:
-        pytest.skip("no Chromium found (/usr/bin/chromium): the browser tests cannot run")
-    with sync_playwright() as p:
-        try:
-            b = p.chromium.launch(executable_path=exe, args=ARGS)
-        except Exception as exc:
-            pytest.skip(f"Chromium at {exe} does not start: {str(exc).splitlines()[0]}")
-        yield b
-        b.close()
 
 
 class Opened:

@@ -9,8 +9,6 @@ installs both where it can)."""
 import dataclasses
 import json
 import math
-import os
-import shutil
 from pathlib import Path
 
 import pytest
@@ -26,52 +24,6 @@ STEEP = ROOT / "worked_problems" / "fourbar_acceleration.toml"  # ill-conditione
 # a cylinder whose rate of extension is given: each frame holds it (the crank's speed follows)
 TIPPER = ROOT / "worked_problems" / "tipper_cylinder.toml"
 PISTON = ROOT / "worked_problems" / "piston_driven_slider_crank.toml"
-ARGS = [
-    "--headless",
-    "--no-sandbox",
-    "--disable-gpu",
-    "--disable-quic",
-    "--no-first-run",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-]
-
-
-def _chromium():
-    for path in (
-        os.environ.get("CHROMIUM"),
-        "/usr/bin/chromium",
-        shutil.which("chromium"),
-        shutil.which("chromium-browser"),
-    ):
-        if path and os.path.exists(path):
-            return path
-    return None
-
-
-@pytest.fixture(scope="module")
-def browser():
-    try:
-        from playwright.sync_api import sync_playwright
-    except ImportError:
-        pytest.skip(
-            "playwright is not installed (pip install playwright): the page's "
-            "browser tests cannot run"
-        )
-    exe = _chromium()
-    if exe is None:
-        pytest.skip(
-            "no Chromium found (/usr/bin/chromium; apt-get install chromium): the "
-            "page's browser tests cannot run"
-        )
-    with sync_playwright() as p:
-        try:
-            b = p.chromium.launch(executable_path=exe, args=ARGS)
-        except Exception as exc:  # a browser that will not start is a skip with its reason
-            pytest.skip(f"Chromium at {exe} does not start: {str(exc).splitlines()[0]}")
-        yield b
-        b.close()
 
 
 @pytest.fixture(scope="module")

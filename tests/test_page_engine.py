@@ -20,7 +20,7 @@ import pytest
 
 from polygon_method.cli import main
 
-from test_energy_page import Opened, _agrees, _number, browser  # noqa: F401 (a fixture)
+from test_energy_page import Opened, _agrees, _number
 
 ROOT = Path(__file__).resolve().parents[1]
 N = 90  # frames: 8 deg apart over a four-stroke's 720

@@ -26,7 +26,6 @@ from polygon_method.page.html import page_html
 from polygon_method.polygons.scales import parse_scale
 from test_forces import with_forces
 from test_forces_rolling import _driving_wheel, _with
-from test_page_browser import ARGS, _chromium
 
 ROOT = Path(__file__).resolve().parents[1]
 WORKED = ROOT / "worked_problems"
@@ -81,24 +80,6 @@ READ = """(ks) => {
   }
   return out;
 }"""
-
-
-@pytest.fixture(scope="module")
-def browser():
-    try:
-        from playwright.sync_api import sync_playwright
-    except ImportError:
-        pytest.skip("playwright is not installed (pip install playwright)")
-    exe = _chromium()
-    if exe is None:
-        pytest.skip("no Chromium found (/usr/bin/chromium; apt-get install chromium)")
-    with sync_playwright() as p:
-        try:
-            b = p.chromium.launch(executable_path=exe, args=ARGS)
-        except Exception as exc:
-            pytest.skip(f"Chromium at {exe} does not start: {str(exc).splitlines()[0]}")
-        yield b
-        b.close()
 
 
 def _balance(frame, numbers):

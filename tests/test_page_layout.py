@@ -20,7 +20,6 @@ import pytest
 
 from polygon_method.cli import main
 
-from test_page_browser import ARGS, _chromium
 
 ROOT = Path(__file__).resolve().parents[1]
 WORKED = sorted(glob.glob(str(ROOT / "worked_problems" / "*.toml")))
@@ -57,27 +56,6 @@ MEASURE = """(ks) => {
   }
   return out;
 }"""
-
-
-@pytest.fixture(scope="module")
-def browser():
-    try:
-        from playwright.sync_api import sync_playwright
-    except ImportError:
-        pytest.skip(
-            "playwright is not installed (pip install playwright): the page's "
-            "browser tests cannot run"
-        )
-    exe = _chromium()
-    if exe is None:
-        pytest.skip("no Chromium found (/usr/bin/chromium; apt-get install chromium)")
-    with sync_playwright() as p:
-        try:
-            b = p.chromium.launch(executable_path=exe, args=ARGS)
-        except Exception as exc:
-            pytest.skip(f"Chromium at {exe} does not start: {str(exc).splitlines()[0]}")
-        yield b
-        b.close()
 
 
 @pytest.fixture(scope="module")

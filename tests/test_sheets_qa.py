@@ -18,7 +18,6 @@ from polygon_method import load_scene, solve
 from polygon_method.cli import main
 from polygon_method.draw import render_pages
 from test_draw import Svg
-from test_page_layout import browser  # noqa: F401 (the fixture: Chromium, or a skip)
 
 ROOT = Path(__file__).resolve().parents[1]
 WORKED = ROOT / "worked_problems"

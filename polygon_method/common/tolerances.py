@@ -160,3 +160,16 @@ TOL = Tolerances()
 #: the names the browser page's script takes its tolerances by (sent in the page's data, so
 #: that the script holds no literal of its own)
 PAGE = {"same": SAME, "rounding": ROUNDING, "floor": FLOOR}
+
+
+# ----------------------------------------------------------------- a scene's least sizes
+#: the least coefficient of fluctuation of speed (or +- range about the mean) a scene may ask
+#: of a flywheel: a greatest and a least speed closer than this fraction are no plain
+#: difference (:data:`DISTINCT`), and the flywheel that would hold them, the energy over
+#: ``Cs w^2``, grows without a size a book would print
+LEAST_FLUCTUATION = DISTINCT
+#: a driving block's least speed (m/s) other than nought (a crank's is ``TINY``'s): below it
+#: the block's driving force, its power over its speed, overflows; nought is a block at rest
+LEAST_BLOCK_SPEED = 1e-12
+
+__all__ += ["LEAST_FLUCTUATION", "LEAST_BLOCK_SPEED"]

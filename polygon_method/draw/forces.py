@@ -164,8 +164,10 @@ def _wrap(items, width=70):
 
 
 def _free_body(sol, fb, scale: Scale, tiny, tag, note=()) -> _Sketch:
-    from shapely.geometry import LineString, MultiPoint, Polygon
-
+    """One body alone (``fb``, a :class:`~polygon_method.forces.FreeBody`) at the
+    configuration diagram's ``scale``: its outline and joints, its centre of mass and the
+    inertia force's offset, an arrow for each force, a curved arrow for each couple, and
+    its words."""
     sc, f = sol.scene, sol.forces
     s = scale.per_cm
 
@@ -174,6 +176,40 @@ def _free_body(sol, fb, scale: Scale, tiny, tag, note=()) -> _Sketch:
 
     sk = _Sketch()
     numbers = f.numbers
+    pts, body = _outline(sk, sol, fb, cm, tag)
+    _joints(sk, fb, pts, tag)
+    inertia = f.inertia_of(fb.body)
+    if inertia is not None:
+        _centre_of_mass(sk, sc, fb, inertia, pts, cm, s, numbers, tag)
+    words = _force_arrows(sk, sol, fb, body, cm, tiny, numbers, tag)
+    centre = (
+        cm(inertia.G)
+        if inertia is not None
+        else tuple(sum(c) / len(pts) for c in zip(*pts.values()))
+    )
+    _couples(sk, fb, centre, numbers, tag)
+    sk.place_labels()
+    lines = (
+        _wrap(words)
+        + list(note)
+        + ["the arrows give each force's line and sense; its size is the polygon's"]
+    )
+    if fb.body == sc.input.crank or any(c.what == "torque" for c in fb.couples):
+        lines.append(
+            "T: the driver's torque on the "
+            + ("wheel" if f.driver == "wheel" else "crank")
+            + " (ccw +)"
+        )
+    _header(sk, tag, f"Free body of {_what(fb.body, numbers, sc)}", scale, lines=_fit(sk, lines))
+    return sk
+
+
+def _outline(sk, sol, fb, cm, tag):
+    """The body's outline drawn (a block's box along its path; a link's, or a cylinder's,
+    hull of its points): ``(its points by name, in cm; the outline, a shapely shape)``."""
+    from shapely.geometry import MultiPoint, Polygon
+
+    sc, f = sol.scene, sol.forces
     if fb.body.startswith("block "):
         point = fb.body[6:]
         X = cm(sol.P[point])
@@ -196,25 +232,30 @@ def _free_body(sol, fb, scale: Scale, tiny, tag, note=()) -> _Sketch:
         sk.polygon(
             outline, gid=f"{tag}-body", face=BODY_FACE, edge=BODY_EDGE, lw=0.8, z=2, obstacle="edge"
         )
+        return pts, body
+    cyl = sc.cylinder(fb.body)  # a cylinder (barrel and rod): one two-force member
+    if cyl is not None:
+        names = [cyl.barrel, cyl.rod]
     else:
-        cyl = sc.cylinder(fb.body)  # a cylinder (barrel and rod): one two-force member
-        if cyl is not None:
-            names = [cyl.barrel, cyl.rod]
-        else:
-            lk = sc.link(fb.body)
-            names = [lk.p, lk.q] + [cp.name for cp in sc.points if cp.link == lk.key]
-        pts = {n: cm(sol.P[n]) for n in names}
-        pts.update({sd.point: cm(sd.at) for sd in fb.sides if sd.what == "contact"})
-        body = MultiPoint(list(pts.values())).convex_hull.buffer(BAR / 2, quad_segs=8)
-        sk.polygon(
-            list(body.exterior.coords),
-            gid=f"{tag}-body",
-            face=BODY_FACE,
-            edge=BODY_EDGE,
-            lw=0.8,
-            z=2,
-            obstacle="edge",
-        )
+        lk = sc.link(fb.body)
+        names = [lk.p, lk.q] + [cp.name for cp in sc.points if cp.link == lk.key]
+    pts = {n: cm(sol.P[n]) for n in names}
+    pts.update({sd.point: cm(sd.at) for sd in fb.sides if sd.what == "contact"})
+    body = MultiPoint(list(pts.values())).convex_hull.buffer(BAR / 2, quad_segs=8)
+    sk.polygon(
+        list(body.exterior.coords),
+        gid=f"{tag}-body",
+        face=BODY_FACE,
+        edge=BODY_EDGE,
+        lw=0.8,
+        z=2,
+        obstacle="edge",
+    )
+    return pts, body
+
+
+def _joints(sk, fb, pts, tag):
+    """Each of the body's points, named: a pin (a force acts there) open, else a dot."""
     for n, xy in pts.items():
         pin = any(sd.point == n and sd.what in ("pin", "guide") for sd in fb.sides)
         sk.circle(
@@ -225,24 +266,36 @@ def _free_body(sol, fb, scale: Scale, tiny, tag, note=()) -> _Sketch:
             z=6,
         )
         sk.label(n, [xy], LABEL_PT, gid=f"label-{tag}-point-{n}", point=True)
-    inertia = f.inertia_of(fb.body)
-    if inertia is not None:
-        G = cm(inertia.G)
-        if all(math.dist(G, xy) > 0.05 for xy in pts.values()):
-            sk.circle(G, DOT_R, gid=f"{tag}-G", face="#000000", z=6)
-            sk.label(
-                "G" + number_sub(numbers, fb.body), [G], LABEL_PT, gid=f"label-{tag}-G", point=True
-            )
-        if inertia.offset is not None and abs(inertia.offset) / s > 0.05:
-            H = cm(inertia.offset_point)
-            sk.line([G, H], gid=f"{tag}-offset", color="#d95f02", lw=0.6, dashes=(2.0, 1.5), z=3)
-            sk.label(
-                f"h = {fmt(abs(inertia.offset) / sc.length_unit)} {sc.units}",
-                [((G[0] + H[0]) / 2, (G[1] + H[1]) / 2)],
-                MARK_PT,
-                gid=f"label-{tag}-offset",
-                color="#d95f02",
-            )
+
+
+def _centre_of_mass(sk, sc, fb, inertia, pts, cm, s, numbers, tag):
+    """The body's centre of mass G (where no point of it stands there) and the offset h
+    of the book's single inertia force from G (where it shows)."""
+    G = cm(inertia.G)
+    if all(math.dist(G, xy) > 0.05 for xy in pts.values()):
+        sk.circle(G, DOT_R, gid=f"{tag}-G", face="#000000", z=6)
+        sk.label(
+            "G" + number_sub(numbers, fb.body), [G], LABEL_PT, gid=f"label-{tag}-G", point=True
+        )
+    if inertia.offset is not None and abs(inertia.offset) / s > 0.05:
+        H = cm(inertia.offset_point)
+        sk.line([G, H], gid=f"{tag}-offset", color="#d95f02", lw=0.6, dashes=(2.0, 1.5), z=3)
+        sk.label(
+            f"h = {fmt(abs(inertia.offset) / sc.length_unit)} {sc.units}",
+            [((G[0] + H[0]) / 2, (G[1] + H[1]) / 2)],
+            MARK_PT,
+            gid=f"label-{tag}-offset",
+            color="#d95f02",
+        )
+
+
+def _force_arrows(sk, sol, fb, body, cm, tiny, numbers, tag) -> list:
+    """An arrow of :data:`ARROW_CM` for each force on the body (above ``tiny``) at its
+    point, from it or onto it, whichever keeps off the ``body``; named. Its words, ``F32 =
+    120 N``, returned."""
+    from shapely.geometry import LineString
+
+    sc = sol.scene
     words = []
     for k, side in enumerate(fb.sides):
         if math.hypot(*side.vector) <= tiny:
@@ -273,11 +326,12 @@ def _free_body(sol, fb, scale: Scale, tiny, tag, note=()) -> _Sketch:
             gid=f"label-{tag}-force-{k}",
             color=color,
         )
-    centre = (
-        cm(inertia.G)
-        if inertia is not None
-        else tuple(sum(c) / len(pts) for c in zip(*pts.values()))
-    )
+    return words
+
+
+def _couples(sk, fb, centre, numbers, tag):
+    """A curved arrow round ``centre`` for each couple on the body (each a little wider
+    than the one before), with its value and sense."""
     for k, c in enumerate(fb.couples):
         if c.value == 0:
             continue
@@ -291,20 +345,6 @@ def _free_body(sol, fb, scale: Scale, tiny, tag, note=()) -> _Sketch:
             gid=f"label-{tag}-couple-{k}",
             color="#000000",
         )
-    sk.place_labels()
-    lines = (
-        _wrap(words)
-        + list(note)
-        + ["the arrows give each force's line and sense; its size is the polygon's"]
-    )
-    if fb.body == sc.input.crank or any(c.what == "torque" for c in fb.couples):
-        lines.append(
-            "T: the driver's torque on the "
-            + ("wheel" if f.driver == "wheel" else "crank")
-            + " (ccw +)"
-        )
-    _header(sk, tag, f"Free body of {_what(fb.body, numbers, sc)}", scale, lines=_fit(sk, lines))
-    return sk
 
 
 def _curved_arrow(sk, centre, r, ccw, gid):
@@ -349,6 +389,9 @@ def _along(a, b):
 
 
 def _polygon(sol, st, pg, scale: Scale, tiny, tag) -> _Sketch:
+    """One force polygon (``pg`` of step ``st``) at the sheet's force ``scale``: the
+    unknowns' direction lines, its sides head to tail from the pole and the whole forces
+    read across it, each named, with a row of words each."""
     f = sol.forces
     numbers = f.numbers
     s = scale.per_cm
@@ -356,6 +399,26 @@ def _polygon(sol, st, pg, scale: Scale, tiny, tag) -> _Sketch:
     sides = pg.polygon
     sk = _Sketch()
     nonzero = [math.hypot(*sd.vector) > tiny for sd in sides]
+    name = _namer(sides, nonzero, numbers)
+    _direction_lines(sk, pg, corners, tag)
+    also, chords = _chords(pg, sides, nonzero, name, numbers, tiny)
+    rows = _polygon_sides(sk, pg, sides, nonzero, name, also, corners, scale, tag)
+    rows += _chord_arrows(sk, chords, corners, numbers, scale, tag)
+    sk.circle(corners[0], DOT_R * 1.3, gid=f"{tag}-pole", face="#000000", z=6)
+    sk.place_labels()
+    bodies = ", ".join(_what(b, numbers, sol.scene) for b in pg.bodies)
+    lines = [
+        f"step {st.index + 1}, {st.title}: {bodies}; link 1 the frame",
+        "F\u2083\u2082: the force on 3 by 2 (\u1d57 square to its link, guide or contact, "
+        "\u207f along the link or guide, normal to a contact)",
+    ] + rows
+    _header(sk, tag, "Force polygon", scale, lines=_fit(sk, lines))
+    return sk
+
+
+def _namer(sides, nonzero, numbers):
+    """A side's name by its index: a component whose partner is nil is named as the whole
+    force (``F34``, not ``F34t``)."""
 
     def name(k):  # a component whose partner is nil is the whole force
         sd = sides[k]
@@ -378,7 +441,11 @@ def _polygon(sol, st, pg, scale: Scale, tiny, tag) -> _Sketch:
                 return side_label(replace(sd, part=""), numbers)
         return side_label(sd, numbers)
 
-    # the direction lines of the unknowns, through the corner the book draws them from
+    return name
+
+
+def _direction_lines(sk, pg, corners, tag):
+    """The direction lines of the unknowns, through the corner the book draws them from."""
     for k, u in pg.unknown:
         known = corners[k + 1] if k == 0 else corners[k]
         ends = [corners[k], corners[k + 1]]
@@ -399,6 +466,11 @@ def _polygon(sol, st, pg, scale: Scale, tiny, tag) -> _Sketch:
             z=1,
             obstacle=False,
         )
+
+
+def _chords(pg, sides, nonzero, name, numbers, tiny):
+    """The whole forces read across the polygon: ``(also, chords)``, a chord that is one
+    side named with it (side index -> `` = F32``, or its opposite), the others to draw."""
     also = {}
     chords = []
     for c, i, j in pg.chords:
@@ -415,6 +487,12 @@ def _polygon(sol, st, pg, scale: Scale, tiny, tag) -> _Sketch:
                 also[k] = f" = {other}"
             continue
         chords.append((c, i, j))
+    return also, chords
+
+
+def _polygon_sides(sk, pg, sides, nonzero, name, also, corners, scale, tag) -> list:
+    """Each side of the polygon (not nil) an arrow from corner to corner, named; its row
+    of words (size in N and cm, whether found) returned."""
     rows = []
     for k, sd in enumerate(sides):
         if not nonzero[k]:
@@ -428,6 +506,13 @@ def _polygon(sol, st, pg, scale: Scale, tiny, tag) -> _Sketch:
         rows.append(
             f"{text}: {_magnitude(sd.vector)}, {scale.cm(math.hypot(*sd.vector)):.2f} cm{found}"
         )
+    return rows
+
+
+def _chord_arrows(sk, chords, corners, numbers, scale, tag) -> list:
+    """Each whole force read across the polygon, a dashed arrow from corner to corner; its
+    row of words returned."""
+    rows = []
     for n, (c, i, j) in enumerate(chords):
         color, lw, dashes = CHORD_STYLE
         a, b = corners[i], corners[j]
@@ -437,13 +522,4 @@ def _polygon(sol, st, pg, scale: Scale, tiny, tag) -> _Sketch:
         rows.append(
             f"{text}: {_magnitude(c.vector)}, {scale.cm(math.hypot(*c.vector)):.2f} cm (across)"
         )
-    sk.circle(corners[0], DOT_R * 1.3, gid=f"{tag}-pole", face="#000000", z=6)
-    sk.place_labels()
-    bodies = ", ".join(_what(b, numbers, sol.scene) for b in pg.bodies)
-    lines = [
-        f"step {st.index + 1}, {st.title}: {bodies}; link 1 the frame",
-        "F\u2083\u2082: the force on 3 by 2 (\u1d57 square to its link, guide or contact, "
-        "\u207f along the link or guide, normal to a contact)",
-    ] + rows
-    _header(sk, tag, "Force polygon", scale, lines=_fit(sk, lines))
-    return sk
+    return rows

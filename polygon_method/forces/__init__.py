@@ -79,11 +79,9 @@ from .records import (
     PinForce,
     Side,
     block,
-    couple_label,
-    forces_dict,
-    number_sub,
-    side_label,
 )
+from .labels import couple_label, number_sub, side_label
+from .json_entry import forces_dict
 
 #: the force step of each kind of kinematic step: its room (``owns(st)``: the bodies its
 #: points act on; ``step(st, P, ledger, owners)``: its pin forces; ``covers(st)``, where

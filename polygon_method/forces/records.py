@@ -11,7 +11,7 @@ import math
 from dataclasses import dataclass, field
 from functools import cached_property
 
-from .grip import json as grip_json, words as grip_words
+from .grip import words as grip_words
 
 
 FRAME = "frame"
@@ -236,57 +236,6 @@ class FreeBody:
     couples: tuple
 
 
-_SUB = str.maketrans("0123456789", "\u2080\u2081\u2082\u2083\u2084\u2085\u2086\u2087\u2088\u2089")
-
-
-def _sub(numbers, *bodies, unicode=True):
-    nums = [str(numbers.get(b, "?")) for b in bodies]
-    text = ("," if any(len(n) > 1 for n in nums) else "").join(nums)
-    return text.translate(_SUB) if unicode else "_" + text
-
-
-def number_sub(numbers: dict, body: str, unicode: bool = True) -> str:
-    """A body's number as a subscript (``G\u2083`` is link 3's centre of mass)."""
-    return _sub(numbers, body, unicode=unicode)
-
-
-def side_label(side: Side, numbers: dict, unicode: bool = True) -> str:
-    """The book's name of a force: ``F32`` the force on link 3 by link 2 (the frame is
-    link 1), ``F34t``/``F34n`` its components square to and along link 3, ``Fi3`` link 3's
-    inertia force, ``W3`` its weight, ``P at E`` a load, ``gas force``; with subscripts
-    (``F\u2083\u2082``) or, ``unicode=False``, written out (``F_32^t``).
-
-    >>> side_label(Side("pin", "AB", "BC", "B", (1.0, 0.0), (0.0, 0.0), "t"),
-    ...            {"frame": 1, "AB": 3, "BC": 4}, unicode=False)
-    'F_34^t'
-    """
-    sup = {"t": "\u1d57", "n": "\u207f"} if unicode else {"t": "^t", "n": "^n"}
-    if side.what in ("pin", "guide", "contact"):
-        return "F" + _sub(numbers, side.on, side.by, unicode=unicode) + sup.get(side.part, "")
-    if side.what == "inertia":
-        return ("F\u1d62" if unicode else "Fi") + _sub(numbers, side.on, unicode=unicode)
-    if side.what == "weight":
-        return "W" + _sub(numbers, side.on, unicode=unicode)
-    if side.what in ("driver", "gas"):  # a driving block's driver, along its guide
-        return "gas force" if side.what == "gas" else "Fd" + _sub(numbers, side.on, unicode=unicode)
-    if side.what == "friction":
-        return ("\u03bcN" if unicode else "muN") + f" at {side.point}"
-    return f"{'Fd' if side.what == 'driver' else 'P'} at {side.point}"  # (Fd: a collar's driver)
-
-
-def couple_label(c: Couple, numbers: dict, unicode: bool = True) -> str:
-    """``T2`` the driver's torque on link 2, ``C4`` a couple on link 4, ``Ci3`` the inertia
-    couple of link 3."""
-    head = {
-        "torque": "T",
-        "load": "C",
-        "guide": "C",
-        "friction": "C\u03bc" if unicode else "Cmu",
-        "inertia": "C\u1d62" if unicode else "Ci",
-    }[c.what]
-    return head + _sub(numbers, c.on, unicode=unicode)
-
-
 @dataclass(frozen=True)
 class ForcePolygon:
     """One force polygon of a step: the balance of ``bodies`` drawn head to tail from the
@@ -495,110 +444,3 @@ class Forces:
     def inertia_of(self, body: str):
         """The inertia record of ``body``, or None when it has no mass."""
         return next((i for i in self.inertia if i.body == body), None)
-
-
-def _vec(v):
-    return [v[0] + 0.0, v[1] + 0.0]  # + 0.0: no -0.0 in the JSON
-
-
-def _contact_dict(c: Contact) -> dict:
-    """One contact's JSON entry: the force on the wheel by ``by`` at the contact point; for
-    teeth the pressure angle (deg, and whether the scene states it) and the tooth load, for
-    a friction grip the least friction coefficient."""
-    d = {
-        "point": _vec(c.point),
-        "by": c.by,
-        "normal_force": c.normal + 0.0,
-        "tangential_force": c.tangential + 0.0,
-        "normal": _vec(c.m),
-        "force": _vec(c.force),
-    }
-    if c.teeth is None:
-        d["required_friction"] = c.required_friction
-        d.update(grip_json(c))
-    else:
-        d.update(
-            pressure_angle=math.degrees(c.teeth),
-            pressure_angle_stated=c.stated,
-            tooth_load=c.load + 0.0,
-        )
-    return d
-
-
-def _second(f: Forces) -> dict:  # a second crank's torque, a second collar's force
-    if f.second_crank.startswith("block "):
-        return {"block": f.second_crank, "collar": True, "input_force": f.second_torque + 0.0}
-    return {"crank": f.second_crank, "input_torque": f.second_torque + 0.0}
-
-
-def forces_dict(f: Forces) -> dict:
-    """The ``forces`` entry of ``solve --json`` (SI, ccw positive; the sign rule in
-    ``convention``)."""
-    pins = {}
-    for p in f.pins:
-        pins.setdefault(p.point, []).append(
-            {"on": p.on, "by": p.by, "force": _vec(p.force), "magnitude": p.magnitude}
-        )
-    return {
-        "convention": "SI, counter-clockwise positive; a pin's force is the force on body "
-        "'on' by body 'by' (body 'by' feels its opposite); moments about the "
-        "frame's origin",
-        "bodies": {
-            i.body: {
-                "mass": i.mass,
-                "moment_of_inertia": i.inertia,
-                "centre_of_mass": _vec(i.G),
-                "acceleration_of_centre": _vec(i.a_G),
-                "inertia_force": _vec(i.force),
-                "inertia_couple": i.couple + 0.0,
-                "offset": i.offset,
-                "offset_point": None if i.offset is None else _vec(i.offset_point),
-            }
-            for i in f.inertia
-        },
-        "pins": pins,
-        "guides": {
-            g.key: {
-                "normal_force": g.normal + 0.0,
-                "normal": _vec(g.n),
-                "force": _vec(g.force),
-                "by": g.by,
-                **(
-                    {"couple": g.couple + 0.0}
-                    if g.couple is not None and isinstance(g.couple, float) and g.couple
-                    else {}
-                ),
-            }
-            for g in f.guides
-        },
-        ("input_torque" if f.driver in ("crank", "wheel") else "input_force"): f.input_torque + 0.0,
-        **({} if f.centre_force is None else {"centre_force": _vec(f.centre_force)}),
-        f.driver: f.crank,
-        **({} if f.second_crank is None else {"second": _second(f)}),
-        **({"contacts": {c.wheel: _contact_dict(c) for c in f.contacts}} if f.contacts else {}),
-        **(
-            {
-                "friction": {
-                    "power": f.friction_power + 0.0,
-                    "guides": [
-                        {"on": it[0], "what": it[1], "force": _vec(it[2]), "at": _vec(it[3])}
-                        for it in f.friction
-                        if len(it) == 4
-                    ],
-                    "pins": [
-                        {"on": it[0], "what": it[1], "couple": it[2] + 0.0}
-                        for it in f.friction
-                        if len(it) == 3
-                    ],
-                }
-            }
-            if f.friction
-            else {}
-        ),
-        "shaking_force": _vec(f.shaking_force),
-        "shaking_moment": f.shaking_moment + 0.0,
-        "steps": [
-            {"step": s.index + 1, "kind": s.kind, "title": s.title, "condition": s.condition}
-            for s in f.steps
-        ],
-    }

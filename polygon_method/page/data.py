@@ -240,37 +240,10 @@ def page_data(fr: Frames) -> dict:
     sol, res = fr.sol, fr.res
     sc = sol.scene
     moving = list(fr.moving)
-    links = [lk for lk in sc.links if not (lk.p in sc.ground and lk.q in sc.ground)]
-    # a cylinder is drawn and tabled as a link between its barrel's pivot and its rod's end
-    # (it turns as one, at its omega; its length changes)
-    links += [Link(c.key, c.barrel, c.rod, res_length(res, c)) for c in sc.cylinders]
-    sliders = []
-    for s in sc.blocks:  # (a driving wheel's centre path: no block, no guide)
-        if hasattr(s, "guide"):
-            sliders.append(
-                {"point": s.point, "key": s.key, "guide": [s.first, s.second], "link": s.guide}
-            )
-        elif hasattr(s, "yoke"):  # a yoke's slot: a line through the pin, moving with it
-            sliders.append({"point": s.point, "key": s.key, "u": [float(c) for c in s.direction]})
-        else:
-            sliders.append(
-                {
-                    "point": s.point,
-                    "key": s.key,
-                    "u": [float(c) for c in s.u],
-                    "through": [float(c) for c in s.through],
-                }
-            )
-    shapes = [sh for st in sol.plan.steps for sh in st.shapes(sol.P)]
-    wheels = [[sh[1], float(sh[2])] for sh in shapes if sh[0] == "circle"]  # pitch circles
-    lines = [
-        [[float(c) for c in sh[1]], [float(c) for c in sh[2]]]
-        for sh in shapes
-        if sh[0] == "ground line"
-    ]  # the fixed lines wheels roll on
+    links = _links(sc, res)
+    sliders = _sliders(sc)
+    wheels, lines = _rolling_shapes(sol)
     n = len(fr)
-    k = _noise_scales(res, moving, links, n)
-    eb = res.error_bounds  # each quantity's own bound, per frame: below it, noise
     d = {
         "title": sc.title or sc.file or "mechanism",
         "units": sc.units,
@@ -300,6 +273,68 @@ def page_data(fr: Frames) -> dict:
         "guidePoints": _guide_points(res, sliders, n),  # the guide's point under a block
         "wheels": wheels,
         "rollLines": lines,
+        **_motion(sc, res, moving, links, n),
+        "sense": sense(sc.input.omega),
+        "warnBelow": TOL.warn,
+        "style": page_style(),
+    }
+    d["inertia"], d["forces"] = force_layers(res, n)
+    d.update(_conditions(res, n))
+    return d
+
+
+def _links(sc, res) -> list:
+    """The moving links, and each cylinder as a link between its barrel's pivot and its
+    rod's end (drawn and tabled so: it turns as one, at its omega; its length changes)."""
+    links = [lk for lk in sc.links if not (lk.p in sc.ground and lk.q in sc.ground)]
+    links += [Link(c.key, c.barrel, c.rod, res_length(res, c)) for c in sc.cylinders]
+    return links
+
+
+def _sliders(sc) -> list:
+    """Each block the page draws: on a moving guide (its guide's two points and link), in
+    a yoke's slot (the slot's direction, moving with the pin), or on a fixed path (its
+    direction and a point it passes through). A driving wheel's centre path: none."""
+    sliders = []
+    for s in sc.blocks:  # (a driving wheel's centre path: no block, no guide)
+        if hasattr(s, "guide"):
+            sliders.append(
+                {"point": s.point, "key": s.key, "guide": [s.first, s.second], "link": s.guide}
+            )
+        elif hasattr(s, "yoke"):  # a yoke's slot: a line through the pin, moving with it
+            sliders.append({"point": s.point, "key": s.key, "u": [float(c) for c in s.direction]})
+        else:
+            sliders.append(
+                {
+                    "point": s.point,
+                    "key": s.key,
+                    "u": [float(c) for c in s.u],
+                    "through": [float(c) for c in s.through],
+                }
+            )
+    return sliders
+
+
+def _rolling_shapes(sol):
+    """``(wheels, lines)``: the pitch circles ([centre, radius]) and the fixed lines
+    wheels roll on ([point, point]), as the steps' shapes give them at the stated instant."""
+    shapes = [sh for st in sol.plan.steps for sh in st.shapes(sol.P)]
+    wheels = [[sh[1], float(sh[2])] for sh in shapes if sh[0] == "circle"]  # pitch circles
+    lines = [
+        [[float(c) for c in sh[1]], [float(c) for c in sh[2]]]
+        for sh in shapes
+        if sh[0] == "ground line"
+    ]  # the fixed lines wheels roll on
+    return wheels, lines
+
+
+def _motion(sc, res, moving, links, n) -> dict:
+    """The motion per frame: positions, velocities, accelerations, each link's omega and
+    alpha, each block's sliding and the input torque, each with its rounding noise (within
+    its own error bound, or below its kind's size) written 0."""
+    k = _noise_scales(res, moving, links, n)
+    eb = res.error_bounds  # each quantity's own bound, per frame: below it, noise
+    return {
         "P": {p: _flat([_quiet(c, k["P"], n) for c in res.P[p]]) for p in moving},
         "V": {
             p: _flat(_own_vec(res.V[p], eb.V.get(p, 0.0), eb.scales["velocity"], n)) for p in moving
@@ -320,20 +355,24 @@ def page_data(fr: Frames) -> dict:
         "torque": None
         if res.input_torque is None
         else round_sig(_quiet(res.input_torque, _torque_scale(sc, k), n)),
-        "sense": sense(sc.input.omega),
-        "warnBelow": TOL.warn,
-        "style": page_style(),
     }
-    d["inertia"], d["forces"] = force_layers(res, n)
+
+
+def _conditions(res, n) -> dict:
+    """Each frame's worst-conditioned step: its condition (six figures: shown to three,
+    rounded once) and which step it is, with the steps' labels; none where no step has a
+    condition."""
     conds = [
         (st.label, np.broadcast_to(res.cond[st.index], (n,)))
         for st in res.plan.steps
         if st.index in res.cond
     ]
-    if conds:  # each frame's worst-conditioned step: its condition and which step it is
-        table = np.array([c for _, c in conds])
-        worst = table.argmin(axis=0)
-        d["condition"] = round_sig(table.min(axis=0))  # six figures: shown to three, rounded once
-        d["conditionStep"] = [int(i) for i in worst]
-        d["stepLabels"] = [label for label, _ in conds]
-    return d
+    if not conds:
+        return {}
+    table = np.array([c for _, c in conds])
+    worst = table.argmin(axis=0)
+    return {
+        "condition": round_sig(table.min(axis=0)),
+        "conditionStep": [int(i) for i in worst],
+        "stepLabels": [label for label, _ in conds],
+    }

@@ -54,6 +54,7 @@ import re
 from dataclasses import dataclass
 
 from ..common.errors import SceneError
+from ..common.tolerances import ROUNDING, SAME, TOL
 from ..common.units import UNITS
 
 __all__ = [
@@ -219,7 +220,7 @@ def read_angle(
         )
     in_deg = unit != "rad"
     phi = size * UNITS["angle"]["deg" if in_deg else "rad"]
-    if phi > 2 * math.pi * (1 + 1e-12):
+    if phi > 2 * math.pi * (1 + ROUNDING):
         raise SceneError(f"'{shown}' is more than a full turn from its reference; {good}")
 
     def turned(ref, s):
@@ -528,7 +529,7 @@ def side_along(hint, u) -> int:
     axis, want = {"above": (1, 1), "below": (1, -1), "right": (0, 1), "left": (0, -1)}.get(
         hint, (0, 0)
     )
-    return -1 if u[axis] * want < -1e-9 else 1
+    return -1 if u[axis] * want < -SAME else 1
 
 
 def dead_centres(pivot, r, l, through, u, side, unit=("m", 1.0)) -> tuple:
@@ -555,7 +556,7 @@ def dead_centres(pivot, r, l, through, u, side, unit=("m", 1.0)) -> tuple:
                 f"no {words} dead centre: the rod ({l / k:g} {name}) is not "
                 f"longer than the crank ({r / k:g} {name})"
             )
-        if reach < e * (1 + 1e-12):
+        if reach < e * (1 + TOL.closure):
             raise SceneError(
                 f"no {words} dead centre: the rod and crank in line reach "
                 f"{reach / k:g} {name}, less than the line of stroke's offset "

@@ -9,7 +9,8 @@ from __future__ import annotations
 import math
 import re
 
-from ..common.units import did_you_mean
+from ..common.units import TINY, did_you_mean
+from ..common.tolerances import LEAST_FLUCTUATION
 from .energy_records import Rim
 from .records import Answer
 
@@ -19,7 +20,7 @@ _NUM = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$"
 #: cast iron, the books' flywheel (kg/m^3), where the scene gives no density
 DEFAULT_DENSITY = 7200.0
 #: the least coefficient of fluctuation of speed a scene may ask for (as the engine's)
-_LEAST = 1e-6
+_LEAST = LEAST_FLUCTUATION
 
 
 class _RimReader:
@@ -34,7 +35,7 @@ class _RimReader:
 
     def _speed(self, spec, t, key):
         w = abs(self.ld.qty(spec[key], "angular_velocity", t, key).value)
-        if not w > 1e-9:
+        if not w > TINY["angular_velocity"]:
             raise self.err(f"{key}: the speed must not be nought", t, key)
         return w
 

@@ -9,6 +9,7 @@ import math
 import re
 
 from .energy_records import Press
+from ..common.units import UNITS
 
 _PRESS_KEYS = (
     "energy",
@@ -28,13 +29,15 @@ _PRESS_KEYS = (
 _PER_AREA = re.compile(
     r"^\s*((?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(J|N m|N-m|Nm)\s*/\s*(mm\^2|mm2|mm²|cm\^2|cm2|cm²|m\^2|m2|m²)\s*$"
 )
+#: an area's unit factors (m^2), from the length's
+_MM2, _CM2 = UNITS["length"]["mm"] ** 2, UNITS["length"]["cm"] ** 2
 _AREA = {
-    "mm^2": 1e-6,
-    "mm2": 1e-6,
-    "mm²": 1e-6,
-    "cm^2": 1e-4,
-    "cm2": 1e-4,
-    "cm²": 1e-4,
+    "mm^2": _MM2,
+    "mm2": _MM2,
+    "mm²": _MM2,
+    "cm^2": _CM2,
+    "cm2": _CM2,
+    "cm²": _CM2,
     "m^2": 1.0,
     "m2": 1.0,
     "m²": 1.0,

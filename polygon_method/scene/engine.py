@@ -14,6 +14,7 @@ import math
 
 import dataclasses
 
+from ..common.tolerances import LEAST_FLUCTUATION, SAME
 from ..common.units import ABSURD, UNITS, did_you_mean
 from .records import FixedPath, Flywheel, Indicator
 
@@ -22,7 +23,7 @@ _INDICATOR_KEYS = ("piston", "bore", "rod", "cycle", "unit", "angle", "stroke", 
 _OTHER = {"angle": ("stroke",), "stroke": ("angle",)}
 _FLYWHEEL_KEYS = ("coefficient", "plus_minus", "speed", "radius", "gyration")
 #: the least coefficient of fluctuation of speed (or +- range) a scene may ask for
-_LEAST_FLUCTUATION = 1e-6
+_LEAST_FLUCTUATION = LEAST_FLUCTUATION
 _CYCLES = {
     "2-stroke": 2 * math.pi,
     "two-stroke": 2 * math.pi,
@@ -146,7 +147,8 @@ class _Engine:
             )
         if has_angle:
             xs = self._numbers(spec["angle"], where("angle"), "angle")
-            if xs[0] < 0 or xs[-1] > math.degrees(cycle) + 1e-9:
+            # the cycle's end (deg), held to SAME of a degree: its rounding in degrees
+            if xs[0] < 0 or xs[-1] > math.degrees(cycle) + SAME:
                 raise self.error(
                     f"the angles run from 0 to {math.degrees(cycle):g} deg (the "
                     f"{cyc} cycle from the inner dead centre)",

@@ -13,6 +13,7 @@ from dataclasses import replace
 from pathlib import Path
 
 from ..common.errors import PolygonMethodError, SceneError, printable
+from ..common.tolerances import SAME
 from ..common.typography import long_integer_text
 from ..common.units import LENGTH_UNITS, UNITS, parse_quantity
 from .rolling import read_rolling
@@ -424,7 +425,7 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected
             links.append(link)
             if pts[0] in ground and pts[1] in ground:
                 gx = math.dist(ground[pts[0]], ground[pts[1]])
-                if abs(gx - length) > 1e-9 * max(gx, length):
+                if abs(gx - length) > SAME * max(gx, length):
                     raise self.error(
                         f"both ends are ground points {gx / self.scale():g} "
                         f"{self.unit} apart, but the link is {value}",

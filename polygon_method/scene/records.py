@@ -11,6 +11,7 @@ import re
 from dataclasses import dataclass, field
 
 from ..common.errors import SceneError
+from ..common.tolerances import LEAST_BLOCK_SPEED
 from ..common.units import ABSURD, TINY, UNITS
 from .force_records import Flywheel, Friction, Gravity, Indicator, Mass  # noqa: F401  (re-exported)
 from .content import ContentKey
@@ -23,7 +24,7 @@ _UNIT_ORDER = ("mm", "cm", "m", "in", "ft")
 
 #: the largest and smallest lengths a scene may state, in metres
 _ABSURD_LONG = 1e4
-_ABSURD_SHORT = 1e-7
+_ABSURD_SHORT = UNITS["length"]["mm"] / 10_000  # a tenth of a micrometre
 
 TOP_KEYS = (
     "title",
@@ -528,7 +529,7 @@ class Scene:
             # the bounds a file's values meet, for a scene made through the API too: beyond
             # them the squares of the solution overflow, or the input torque divides by 0
             if not abs(v) <= ABSURD[kind] or (
-                name == "speed" and not abs(v) >= TINY.get(kind, 1e-12)
+                name == "speed" and not abs(v) >= TINY.get(kind, LEAST_BLOCK_SPEED)
             ):
                 raise SceneError(
                     f"the {'crank' if inp.block is None else 'block'}'s {name} "

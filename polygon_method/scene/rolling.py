@@ -31,6 +31,8 @@ from __future__ import annotations
 import math
 import re
 
+
+from ..common.tolerances import ROUNDING
 from .records import RollingPair, split_name
 
 _KEYS = (
@@ -52,7 +54,7 @@ _SIDES = ("above", "below", "left", "right")
 def _unit_at(ang):
     q = ang / (math.pi / 2)
     k = round(q)
-    if abs(q - k) <= 1e-12:
+    if abs(q - k) <= ROUNDING:
         return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[k % 4]
     return (math.cos(ang), math.sin(ang))
 
@@ -63,7 +65,7 @@ def _pressure_angle(rd, spec, key):
     if "pressure_angle" not in spec:
         return None
     a = rd.qty(spec["pressure_angle"], "angle", "rolling", key, default_unit="deg").value
-    if not 0.0 <= a <= math.pi / 4 + 1e-12:
+    if not 0.0 <= a <= math.pi / 4 + ROUNDING:
         raise rd.error(
             f"pressure_angle = {spec['pressure_angle']!r}: from 0 to 45 deg (the "
             "teeth's angle, 20 deg by default)",
@@ -306,10 +308,10 @@ def read_rolling(rd, ground, sliders, points) -> list:
                     key,
                 )
             m = (-u[1], u[0])
-            vertical = abs(m[1]) <= 1e-12
+            vertical = abs(m[1]) <= ROUNDING
             want = side or ("right" if vertical else "above")
             axis, sign = {"above": (1, 1), "below": (1, -1), "right": (0, 1), "left": (0, -1)}[want]
-            if abs(m[axis]) <= 1e-12:
+            if abs(m[axis]) <= ROUNDING:
                 raise rd.error(
                     f"side = {want!r}: a {'vertical' if vertical else 'horizontal'}"
                     f" line has {'a left and a right' if vertical else 'an above and a below'}",

@@ -4,7 +4,8 @@ far its place may be off when the triangle is nearly flat.
 The apex X of the triangle R1 R2 X with ``|R1 X| = d1``, ``|R2 X| = d2``, ``|R1 R2| = e``
 lies ``along = (d1^2 - d2^2 + e^2) / 2e`` from R1 towards R2 and ``h`` off that line.
 Written as ``h^2 = d1^2 - along^2`` the height cancels to nothing when the triangle is
-nearly flat (``d1 + d2`` close to ``e``: a height of 1e-10 of the sides comes out as 0).
+nearly flat (``d1 + d2`` close to ``e``: a height of one part in ten billion of the sides
+comes out as 0).
 Here ``h = 2 area / e`` with the area by Heron's formula in the stable form (the sides
 sorted, ``a >= b >= c``)::
 
@@ -19,8 +20,8 @@ moves by ``dF / 2h`` for a change ``dF`` of ``F = h^2``, and never by more than
 >>> along, h
 (1.8, 2.4)
 >>> _, h, spread = apex(0.04, 0.06, 0.1)     # flat: on the line, to the rounding
->>> h, spread < 1e-8
-(0.0, True)
+>>> h, round(spread * 1e9, 1)        # nm
+(0.0, 1.6)
 """
 
 from __future__ import annotations

@@ -16,6 +16,7 @@ import math
 from dataclasses import dataclass
 
 from ..common.errors import SceneError
+from ..common.tolerances import ROUNDING, SAME
 from .records import split_name
 
 __all__ = ["Varied", "Variation", "VariantOf", "DEFAULT_MIN_CONDITION", "MAX_VALUES"]
@@ -242,7 +243,7 @@ class _Variants:
                     )
                 ]
             if slider is not None and hasattr(slider, "u"):
-                if abs(slider.u[1 - i]) < 1e-12:  # along the path itself: nothing moves
+                if abs(slider.u[1 - i]) < ROUNDING:  # along the path itself: nothing moves
                     raise self.error(
                         f"the path of {name} runs along {sub}: moving it along "
                         f"{sub} changes nothing (vary its "
@@ -501,7 +502,7 @@ class _Variants:
                 f"{key}: the range is empty (from {a!r} is above to {b!r})", "variants", where
             )
         span = (b - a) / s
-        n = int(math.floor(span + 1e-9)) + 1 if span < 10 * MAX_VALUES else MAX_VALUES + 1
+        n = int(math.floor(span + SAME)) + 1 if span < 10 * MAX_VALUES else MAX_VALUES + 1
         if n > MAX_VALUES:
             raise self.error(
                 f"{key}: the range holds more than {MAX_VALUES} values; take a larger step",

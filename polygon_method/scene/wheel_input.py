@@ -20,6 +20,8 @@ from __future__ import annotations
 
 import math
 
+
+from ..common.tolerances import SAME
 from .records import INPUT_KEYS, FixedPath, Input, split_name
 
 __all__ = ["wheel_input", "centre_path"]
@@ -141,7 +143,7 @@ def wheel_input(rd, spec, ground):
         x, y = rd.coords(spec[C], "input", C)
         s = (x - qx) * ux + (y - qy) * uy
         off = -(x - qx) * uy + (y - qy) * ux
-        if abs(off) > 1e-9 * max(abs(x), abs(y), abs(s), rd.scale(), r):
+        if abs(off) > SAME * max(abs(x), abs(y), abs(s), rd.scale(), r):
             raise rd.error(
                 f"{C} = {spec[C]} is {abs(off) / rd.scale():.6g} {rd.unit} off the "
                 f"path of the wheel's centre ({r / rd.scale():.6g} {rd.unit} from "

@@ -33,10 +33,12 @@ import math
 import weakref
 from dataclasses import replace
 
-from ..common.errors import AssemblyError, MobilityError, PolygonMethodError, SceneError
+from ..common.errors import AssemblyError, PolygonMethodError, SceneError
 from ..common.numbers import in_units, quiet
 from .completion import gas_towards_crank, given_completed, place
+from .mobility import gruebler, leftover
 from .plan import Bodies, Dims, Plan, _pin_entries, first_tier
+from .reach import reach_words
 from ..scene import GuideSlider, Scene, key_line
 from ..steps import NEEDS, TIERS, Context, Crank, collar, cylinder
 from ..steps.block import BlockDriver
@@ -135,30 +137,6 @@ def _forget(ident, ref, by_id=_BY_ID):
     hit = by_id.get(ident)
     if hit is not None and hit[0] is ref:
         del by_id[ident]
-
-
-def gruebler(scene: Scene) -> int:
-    """Mobility M = 3 (n - 1) - 2 j - h: n bodies incl. ground and blocks, j lower pairs,
-    h rolling pairs (each takes one freedom: no slip)."""
-    ground = set(scene.ground)
-    moving = [lk for lk in scene.links if not (lk.p in ground and lk.q in ground)]
-    n = 1 + len(moving) + len(scene.sliders)
-    bodies_at = {}
-    for lk in moving:
-        for p in lk.points:
-            bodies_at.setdefault(p, set()).add(lk.key)
-    for cp in scene.points:
-        bodies_at.setdefault(cp.name, set()).add(scene.link(cp.link).key)
-    for p in ground:
-        bodies_at.setdefault(p, set()).add("ground")
-    for s in scene.sliders:  # a peg in two slots: a block in each, pinned together
-        bodies_at.setdefault(s.point, set()).add(f"block {s.key}")
-    for c in scene.cylinders:  # barrel and rod: two bodies, a sliding pair between them
-        n += 2
-        bodies_at.setdefault(c.barrel, set()).add(f"barrel {c.key}")
-        bodies_at.setdefault(c.rod, set()).add(f"rod {c.key}")
-    j = sum(len(b) - 1 for b in bodies_at.values()) + len(scene.sliders) + len(scene.cylinders)
-    return 3 * (n - 1) - 2 * j - len(scene.rolling)
 
 
 class _Compiler:
@@ -267,125 +245,9 @@ class _Compiler:
         self.used_links.update(step.links)
 
     def reach(self, failing, n=_REACH_GRID) -> str:
-        """Where the crank can be set so that the steps so far and ``failing`` assemble
-        (each end to about 1e-4 deg): what to do when the stated angle cannot."""
-        sc, inp = self.scene, self.scene.input
-        steps = tuple(self.steps) + (failing,)
-        plan = Plan(
-            steps,
-            dict(sc.ground),
-            sc,
-            (),
-            {},
-            (),
-            Dims(
-                dict(sc.ground),
-                tuple([st.params for st in steps]),
-                inp.angle,
-                inp.omega,
-                inp.alpha,
-                {},
-            ),
-        )
-
-        def fails(theta):
-            import numpy as np
-
-            ctx = Context(np.asarray(theta, dtype=float), inp.omega, inp.alpha, array=True)
-            with np.errstate(all="ignore"):
-                plan.run(ctx, upto=0)
-            if ctx.bad is None:
-                return np.zeros(len(theta), dtype=bool)
-            return np.broadcast_to(ctx.bad, (len(theta),))  # a step of fixed points: one
-
-        two_pi = 2.0 * math.pi
-        if inp.block is not None:  # a block's place: a stretch of its guide either side
-            return self.reach_block(fails, n)
-        grid = [inp.angle + two_pi * (k / n - 0.5) for k in range(n)]
-        bad = fails(grid)
-        crank = inp.crank
-        if bad.all():
-            return (
-                f"no angle of the crank {crank} assembles it: the links are too short "
-                "or too long (check the lengths)"
-            )
-        if not bad.any():
-            return f"(it assembles at the angles either side: a limit of the crank {crank})"
-
-        def edge(good, wrong):  # bisection between an angle that assembles and one that not
-            for _ in range(24):
-                mid = 0.5 * (good + wrong)
-                if fails([mid])[0]:
-                    wrong = mid
-                else:
-                    good = mid
-            return math.degrees(good)
-
-        h = two_pi / n
-        ranges = []
-        for i in range(n):
-            if not bad[i] and bad[i - 1]:  # a range starts at i (the grid closes the turn)
-                j = i
-                while not bad[(j + 1) % n]:
-                    j += 1
-                lo = edge(grid[i], grid[i] - h)
-                hi = edge(grid[j % n] + two_pi * (j // n), grid[j % n] + two_pi * (j // n) + h)
-                shown = (lo + 180.0) % 360.0 - 180.0  # from -180 to 180, the end follows
-                ranges.append(f"{shown:.2f} to {shown + hi - lo:.2f} deg")
-        return (
-            f"the crank {crank} can be set only from "
-            + ", or from ".join(ranges)
-            + ": give an angle there"
-        )
-
-    def reach_block(self, fails, n) -> str:
-        """Where the driving block can be placed so that the steps so far assemble: its
-        guide searched from its through point either way, as far as the links reach, past
-        the stated place too (each end to about 1e-6 of that reach)."""
-        sc, inp = self.scene, self.scene.input
-        through = getattr(sc.slider(inp.block), "through", None)  # a collar: from its pivot
-        span = (
-            2.0 * sum(lk.length for lk in sc.links)
-            + max((math.dist(xy, through) for xy in sc.ground.values()), default=0.0)
-            if through is not None
-            else sum(lk.length for lk in sc.links)
-        )
-        lo, hi = min(inp.angle, 0.0) - span, max(inp.angle, 0.0) + span
-        grid = [lo + (hi - lo) * k / (n - 1) for k in range(n)]
-        bad = fails(grid)
-        name, u, uname = inp.block, self.unit, self.uname
-        if bad.all():
-            return (
-                f"no place of the block {name} along its guide assembles it: the links "
-                "are too short or too long (check the lengths)"
-            )
-
-        def edge(good, wrong):  # bisection between a place that assembles and one that not
-            for _ in range(30):
-                mid = 0.5 * (good + wrong)
-                if fails([mid])[0]:
-                    wrong = mid
-                else:
-                    good = mid
-            return good
-
-        ranges, i = [], 0
-        while i < n:
-            if bad[i]:
-                i += 1
-                continue
-            j = i
-            while j + 1 < n and not bad[j + 1]:
-                j += 1
-            a = "beyond" if i == 0 else in_units(edge(grid[i], grid[i - 1]), u)
-            b = "beyond" if j == n - 1 else in_units(edge(grid[j], grid[j + 1]), u)
-            ranges.append(f"{a} to {b} {uname}")
-            i = j + 1
-        return (
-            f"the block {name} can be placed only from s_{name} = about "
-            + ", or from ".join(ranges)
-            + ": give a place there"
-        )
+        """Where the crank (or the driving block) can be set so that the steps so far and
+        ``failing`` assemble: what to do when the stated angle cannot."""
+        return reach_words(self, failing, n)
 
     def neighbours(self, name):
         out = set()
@@ -399,6 +261,19 @@ class _Compiler:
         return out
 
     def run(self) -> Plan:
+        """The plan: the driver first, a second input next, then each point found by the
+        first recogniser that takes it, the cylinders last; what is left over refused."""
+        self._driver()
+        self._second_input()
+        self._walk()
+        for st in cylinder.recognise_all(self):  # both ends known: last, they find no point
+            self.steps.append(st)
+        self.finish()
+        return self._plan()
+
+    def _driver(self):
+        """The first step: a wheel rolling on a ground line, a collar driven along its rod,
+        a block on a fixed guide, or the crank."""
         sc = self.scene
         inp = sc.input
         if inp.wheel is not None:  # a wheel rolling on a ground line drives: its centre
@@ -440,6 +315,12 @@ class _Compiler:
         else:
             crank = self.bodies.link(inp.crank)
             self.add(Crank(0, crank.key, inp.pivot, inp.tip, crank.length))
+
+    def _second_input(self):
+        """The second input's step, where the scene has two degrees of freedom: a collar
+        sliding along the crank, or a second driven crank."""
+        sc = self.scene
+        inp = sc.input
         two = inp.second
         if two is not None and two.block is not None:  # a collar sliding along the crank
             self.add(second_collar(self, two))
@@ -459,6 +340,11 @@ class _Compiler:
                     inp.omega,
                 )
             )
+
+    def _walk(self):
+        """Each point not yet found, in the scene's order, tried with the first tier's
+        recognisers (looked at again only when a neighbour has just been found), then with
+        the later tiers', until none finds one."""
         names = self.names
         order = {p: i for i, p in enumerate(names)}
         heap = list(range(len(names)))  # sorted: a heap
@@ -489,9 +375,11 @@ class _Compiler:
                     if i is not None and p not in self.P and i not in waiting:
                         heapq.heappush(heap, i)
                         waiting.add(i)
-        for st in cylinder.recognise_all(self):  # both ends known: last, they find no point
-            self.steps.append(st)
-        self.finish()
+
+    def _plan(self) -> Plan:
+        """The plan of the steps found, with the scene's dimensions."""
+        sc = self.scene
+        inp = sc.input
         fixed = dict.fromkeys(self._fixed, 0.0)
         pins = _pin_entries(sc) if sc.pins else ()
         steps = tuple(self.steps)
@@ -589,143 +477,6 @@ class _Compiler:
         return f"[{in_units(x, self.unit)}, {in_units(y, self.unit)}]"
 
     # ----- what is left over
-    def _rolling_used(self):
-        """Every rolling pair must set its wheel moving: a pair whose point another step
-        has placed (a driven crank, a dyad) is one constraint too many, never ignored."""
-        sc = self.scene
-        for pr in sc.rolling:
-            if any(pr.rim in st.finds and st.kind in ("rolling", "rack") for st in self.steps):
-                continue
-            by = next((st for st in self.steps if pr.rim in st.finds), None)
-            if by is None:
-                continue  # not found at all: the mobility words below say why
-            m = gruebler(sc)
-            mob = f"mobility {m} (Gruebler: 3(n-1) - 2j - h)"
-            if sc.input.second is not None and by.kind == "second crank":
-                raise MobilityError(
-                    f"{mob}: two inputs over-determine the chain: the second crank "
-                    f"{sc.input.second.crank} is driven by its mesh ([rolling] {pr.wheel}) as "
-                    "well: remove [input.second] (or the mesh)",
-                    file=sc.file,
-                    key="[input.second] crank",
-                )
-            if by.kind == "crank" and pr.base is not None and pr.wheel in by.links:
-                base = sc.link(pr.base)
-                raise MobilityError(
-                    f"the gear {pr.wheel} is the crank, so it drives the mesh: write the "
-                    f'driven gear as the wheel, "{base.key}" = {{ on = "{pr.wheel}" }} '
-                    f"(centre first: {pr.base_centre})",
-                    file=sc.file,
-                    key=f"[rolling] {pr.wheel}",
-                )
-            raise MobilityError(
-                f"{mob}: over-constrained: {pr.rim} is placed by step {by.title} and would "
-                f"also be set by the rolling of {pr.wheel}: one constraint too many (remove "
-                "a link or the rolling pair)",
-                file=sc.file,
-                key=f"[rolling] {pr.wheel}",
-            )
-
     def finish(self):
-        sc = self.scene
-        self._rolling_used()
-        if (
-            len(self.P) == len(self.names)
-            and len(self.used_links) == len(sc.links)
-            and len(self.used_sliders) == len(sc.sliders)
-        ):
-            return  # every point found, every link and slider used
-        missing = [p for p in self.names if p not in self.P]
-        extra_links = [lk.key for lk in sc.links if lk.key not in self.used_links]
-        extra_sliders = list(
-            dict.fromkeys(s.point for s in sc.sliders if s.key not in self.used_sliders)
-        )
-        if not missing and not extra_links and not extra_sliders:
-            return
-        m = gruebler(sc)
-        mob = f"mobility {m} (Gruebler: 3(n-1) - 2j{' - h' if sc.rolling else ''})"
-        if sc.input.second is not None and m < 2:
-            raise MobilityError(
-                f"{mob}: two inputs over-determine the chain (a mechanism of {m} degree"
-                f"{'' if m == 1 else 's'} of freedom takes {max(m, 0)} input"
-                f"{'' if m == 1 else 's'}): remove [input.second]",
-                file=sc.file,
-                key="[input.second] crank",
-            )
-        free = [
-            p
-            for p in extra_sliders
-            if m > 1
-            and p not in sc.ground
-            and not any(p in (lk.p, lk.q) for lk in sc.links)
-            and not any(cp.name == p for cp in sc.points)
-        ]
-        if free and set(missing) <= set(free):  # a block on a guide alone: a motion too many
-            one = len(free) == 1
-            raise MobilityError(
-                f"{mob}: the mechanism is under-constrained; the block"
-                f"{'' if one else 's'} {', '.join(free)} slide{'s' if one else ''} freely "
-                f"along {'its guide' if one else 'their guides'}: nothing places "
-                f"{'it' if one else 'them'} (pin {'it' if one else 'them'} to a link; or drive "
-                f"{'it' if one else 'one'} along its guide as a second input: [input.second] "
-                f'block = "{free[0]}" with vs_{free[0]}, s_{free[0]})',
-                file=sc.file,
-                key=f"[sliders] {', '.join(free)}",
-            )
-        if missing:
-            if m > 1:
-                why = (
-                    f"{mob}: the mechanism is under-constrained; "
-                    f"{', '.join(missing)} {'is' if len(missing) == 1 else 'are'} not "
-                    "determined by the crank (add the missing link or slider"
-                    + (
-                        ", or a second driven crank: [input.second]"
-                        if m == 2 and sc.input.second is None
-                        else ""
-                    )
-                    + ")"
-                )
-            elif m < 1:
-                why = (
-                    f"{mob}: the mechanism is over-constrained (a structure); "
-                    f"{', '.join(missing)} cannot move"
-                )
-            else:
-                why = (
-                    f"{', '.join(missing)} cannot be found by the construction steps "
-                    "(crank, dyad, slider, slotted link, carried point, rolling wheel, triad, "
-                    "peg in two slots, yoke): the chain needs "
-                    "a construction these steps do not make, or a part is missing"
-                )
-            loose = [
-                lk.key
-                for lk in sc.links
-                if lk.key not in self.used_links and (lk.p in missing or lk.q in missing)
-            ]
-            where = f"[links] {', '.join(loose)}" if loose else "[links]"
-            raise MobilityError(why, file=sc.file, key=where)
-        parts = []
-        if extra_links:
-            parts.append(
-                f"link{'s' if len(extra_links) > 1 else ''} "
-                f"{', '.join(extra_links)} {'is' if len(extra_links) == 1 else 'are'}"
-                " redundant (both ends already fixed by the other links): remove "
-                f"{'it' if len(extra_links) == 1 else 'them'} or check the scene"
-            )
-        if extra_sliders:
-            one = len(extra_sliders) == 1
-            names, be = ", ".join(extra_sliders), "is" if one else "are"
-            parts.append(
-                f"slider{'' if one else 's'} {names} {be} redundant ({names} {be} "
-                "already placed by the other links and the crank: "
-                f"{'its path adds' if one else 'their paths add'} a constraint, not "
-                f"a motion): remove {'it' if one else 'them'} or check the scene"
-            )
-        where = (
-            f"[links] {', '.join(extra_links)}"
-            if extra_links
-            else f"[sliders] {', '.join(extra_sliders)}"
-        )
-        raise MobilityError(
-            f"{mob}: over-constrained: " + "; ".join(parts), file=sc.file, key=where
-        )
+        """Refuse what the steps leave over (:func:`~polygon_method.solver.mobility.leftover`)."""
+        leftover(self)

@@ -1,0 +1,131 @@
+"""The motion given on another quantity than the crank's speed (a part of the scene reader):
+``[input] omega_BC``, ``vs_B`` (a slider's, or a cylinder's rate of extension), ``v_C``, with
+their rates, read into a :class:`GivenRate`."""
+
+from __future__ import annotations
+
+import re
+
+from ..common.errors import printable
+from .piston_words import towards_the_crank
+from .rate_words import RATED as _RATED
+from .records import GIVEN_KINDS, GivenRate, split_name
+
+_WAYS = r"(extending|retracting|lengthening|shortening|outwards?|inwards?)"
+
+
+def _extending(raw):
+    """A cylinder's rate with a word: ``"0.2 m/s extending"`` (``"0.2 m/s, extending"``,
+    ``"extending at 0.2 m/s"``) -> 0.2 m/s, ``retracting`` -> its negative (a signed
+    number: + extending)."""
+    if isinstance(raw, str):
+        m = re.match(rf"^\s*(.*?\S)\s*,?\s+{_WAYS}\s*$", raw, re.IGNORECASE)
+        m = m or re.match(rf"^\s*(){_WAYS}\s+(?:at\s+)?(.*?\S)\s*$", raw, re.IGNORECASE)
+        if m:
+            text = (m.group(1) or m.group(3)).strip()
+            if m.group(2).lower() in ("retracting", "shortening", "inward", "inwards"):
+                text = text[1:] if text.startswith("-") else "-" + text.lstrip("+")
+            return text
+    return raw
+
+
+def _given_key(key):
+    """(prefix, names) of an [input] key naming a given motion or its rate (``vs_B`` ->
+    ("vs", ("B",))), or None."""
+    prefix, _, rest = key.partition("_")
+    if prefix not in ("omega", "vs", "v", "alpha", "as", "a") or not rest:
+        return None
+    names = split_name(rest)
+    if (
+        not names
+        or len(names) > 2
+        or (prefix in ("omega", "alpha") and len(names) != 2)
+        or (prefix in ("v", "a") and len(names) != 1)
+    ):
+        return None  # vs_OR, as_OR: a cylinder's rate of extension
+    return prefix, names
+
+
+class _GivenMotion:
+    """The reader's methods for a motion given on another quantity in [input]."""
+
+    def given_rate(self, key, rate_keys, spec, index) -> GivenRate:
+        """``omega_BC = "3 rad/s cw"``, ``vs_B = "1.5 m/s up"``, ``v_B = "3 m/s down"`` in
+        [input], with its rate (``alpha_BC``, ``as_B``, ``a_B``) if given."""
+        kind, names = _given_key(key)
+        rate_kind = GIVEN_KINDS[kind]
+        for r in rate_keys:
+            rk, rnames = _given_key(r)
+            if rk != rate_kind or rnames != names:
+                raise self.error(
+                    f"{r} does not go with {key}: the given motion's rate is "
+                    f"{rate_kind}_{'-'.join(names) if len(names) > 1 and any(len(n) > 1 for n in names) else ''.join(names)}",
+                    "input",
+                    r,
+                )
+        rate_key = rate_keys[0] if rate_keys else None
+        raw, raw_rate = spec[key], spec.get(rate_key) if rate_key else None
+        text = printable(str(raw))
+        rate_text = None if raw_rate is None else printable(str(raw_rate))
+        direction = None
+        if kind == "omega":
+            if len(names) != 2 or frozenset(names) not in index:
+                raise self.error(f"no link {''.join(names)} in [links]", "input", key)
+            value = self.qty(raw, "angular_velocity", "input", key, need_sense=True).value
+            rate = (
+                None
+                if raw_rate is None
+                else (
+                    0.0
+                    if raw_rate == 0
+                    else self.rated(raw_rate, "angular_acceleration", "input", rate_key, value)
+                )
+            )
+            if rate is None and raw_rate is not None:
+                rate = self.qty(
+                    raw_rate, "angular_acceleration", "input", rate_key, need_sense=True
+                ).value
+            names = index[frozenset(names)].points
+        else:
+            point = names[0] if len(names) == 1 else None
+            if kind == "vs" and point is None:  # a cylinder's rate of extension
+                cyl = self.find_cylinder(names)
+                if cyl is None:
+                    raise self.error(f"no cylinder {'-'.join(names)} in [cylinders]", "input", key)
+                names, u = (cyl.key,), (1.0, 0.0)  # signed: + extending
+                raw = _extending(raw)
+                if raw_rate is not None and not (
+                    isinstance(raw_rate, str) and any(r.match(raw_rate.strip()) for r in _RATED)
+                ):  # slowing: kept
+                    raw_rate = _extending(raw_rate)
+            elif kind == "vs":
+                sl = self.slider_points.get(point)
+                if sl is None:
+                    raise self.error(f"no slider {''.join(names)} in [sliders]", "input", key)
+                u = getattr(sl, "u", None)
+                raw, raw_rate = towards_the_crank(self, sl, (raw, key), (raw_rate, rate_key))
+            else:
+                if point is None or point not in self.known:
+                    raise self.error(f"no point {''.join(names)} in the scene", "input", key)
+                u = None
+            value, direction = self.directed(raw, "velocity", key, u, need=kind == "v")
+            rate = None
+            if raw_rate is not None:  # a point's speed: its rate is of the speed (+1)
+                rate = self.rated(
+                    raw_rate, "acceleration", "input", rate_key, value if kind == "vs" else 1.0
+                )
+            if raw_rate is not None and rate is None:
+                rate, _ = self.directed(
+                    raw_rate, "acceleration", rate_key, u if kind == "vs" else None, need=False
+                )
+        if value == 0:
+            raise self.error(
+                f"{key} is zero: it does not set the crank's speed (give the "
+                "crank's speed instead)",
+                "input",
+                key,
+            )
+        return GivenRate(key, kind, tuple(names), value, rate, direction, text, rate_key, rate_text)
+
+    def find_cylinder(self, names):
+        return next((c for c in self.cylinder_list if {c.barrel, c.rod} == set(names)), None)
