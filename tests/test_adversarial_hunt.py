@@ -518,6 +518,16 @@ def test_a_sweep_too_coarse_for_a_second_input_says_its_extremes_may_be_aliased(
     assert f"turns {ratio:.3g} times as fast as the crank OA" in lines[0], lines
     assert f"samples {10 / ratio:.3g} deg apart or closer would follow it" in lines[0], lines
     assert "the extremes below may be aliased" in lines[0], lines
+    # the CSV's and the plot's values too, by the same check
+    scene = _scene(tmp_path, fast)
+    assert main(["sweep", scene, "--csv", str(tmp_path / "s.csv")]) == 0
+    lines = [x for x in capsys.readouterr().out.splitlines() if "aliased" in x]
+    assert len(lines) == 1 and "its values may be aliased" in lines[0], lines
+    assert f"samples {10 / ratio:.3g} deg apart or closer would follow it" in lines[0], lines
+    # and the page's, among its notes
+    assert main(["page", scene, "-o", str(tmp_path / "s.html")]) == 0
+    html = (tmp_path / "s.html").read_text(encoding="utf-8")
+    assert html.count("the curves and the frames may be aliased") == 1
 
 
 # ----------------------------------------------- an output that is a link to itself

@@ -312,6 +312,17 @@ def test_an_engines_cycle_at_rest_is_the_gas_force_alone_in_every_view(tmp_path,
         assert "at rest: the gas force alone, no inertia (nothing moves)" in out, command
         assert "virtual 1 rad/s: the crank" not in out and "rpm, power" not in out, command
         assert "the speed would be greatest at" in out and "turning slowly" in out, command
+    # sweep --summary's driving torque at rest holds the crank against the gas alone: its
+    # words said "with inertia"; its extremes are the closed form's, refined (6 figures)
+    assert main(["sweep", "--summary", str(rest)]) == 0
+    (row,) = [x for x in capsys.readouterr().out.splitlines() if x.startswith("torque_inertia")]
+    assert "at rest: the loads alone, no inertia" in row and "with inertia" not in row, row
+    fine = np.arange(300.0, 420.0, 0.001)
+    held = [-_gas_alone(x) for x in fine]
+    mx, at_mx, mn, at_mn = (float(v) for v in row.split()[3:7])  # (its unit N m: two words)
+    assert mx == float(f"{max(held):.6g}") and mn == float(f"{min(held):.6g}"), row
+    assert abs(at_mx - fine[int(np.argmax(held))]) < 2e-3, row
+    assert abs(at_mn - fine[int(np.argmin(held))]) < 2e-3, row
     page = tmp_path / "rest.html"
     assert main(["page", str(rest), "-o", str(page)]) == 0
     html = " ".join(page.read_text(encoding="utf-8").split())

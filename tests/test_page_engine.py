@@ -176,3 +176,37 @@ def test_the_drawn_curve_and_the_cursor_follow_the_sweep(browser, pages, name, w
     assert abs(sum(areas)) <= 0.5 * ulps * (1 + 1e-9)
     o.page.screenshot(path=str(tmp_path / f"{name}_{width}.png"), full_page=True)
     o.close()
+
+
+@pytest.mark.parametrize("width", [1280, 390])
+@pytest.mark.parametrize("name", sorted(ENGINES))
+def test_the_kinematic_plots_axis_reads_in_order(browser, pages, name, width):  # noqa: F811
+    """The speeds', omegas' and accelerations' plots run over the four-stroke's 720 deg from
+    the scene's angle (435 deg for the V-twin): their ticks were written within the cycle,
+    "540°, 0°, 180°, 360°". They are the angle turned from the first frame, in order; the
+    marker at frame k (the scene's angle + 720 k / N, worked here) stands on the tick of
+    that angle turned, and the readout gives the frame's crank angle within the cycle."""
+    _, _, start = ENGINES[name]
+    o = Opened(browser, pages[name], width)
+    assert o.fits()
+    for pid in ("plot-v", "plot-w", "plot-a"):
+        got = o.page.evaluate(
+            f"Array.from(document.querySelectorAll('#{pid} text.tick'))"
+            ".filter(t => t.getAttribute('text-anchor') === 'middle')"
+            ".map(t => [t.textContent, +t.getAttribute('x')])"
+        )
+        labels = [float(t.rstrip("°")) for t, _ in got]
+        assert labels == [0.0, 180.0, 360.0, 540.0], (pid, got)
+        assert [x for _, x in got] == sorted(x for _, x in got)
+        title = o.page.evaluate(f"document.querySelector('#{pid} text.axis-title').textContent")
+        assert title == f"crank angle turned (ccw) from θ = {start:.1f}°", title
+        for k in (0, 45, 67):  # 0, 360 and 536 deg turned
+            o.slide(k)
+            turned = 720.0 * k / N
+            marker = float(o.page.get_attribute(f"#{pid}-marker", "x1"))
+            tick = {t: x for (t, x) in zip(labels, (x for _, x in got))}
+            if turned in tick:
+                assert abs(marker - tick[turned]) <= 0.01, (pid, k, marker, tick)
+            now = o.page.text_content("#angle-now").strip()
+            assert now == f"θ = {(start + turned) % 720.0:.1f}°", now
+    o.close()

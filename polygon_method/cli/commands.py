@@ -419,6 +419,7 @@ def _cmd_sweep(args) -> int:
     [--plot FILE.svg] [--summary]``: print the summary; the CSV and the plot are written by
     ``write_output`` (whole or not at all)."""
     from ..scene import load_scene
+    from ..linkage.cycle import sweep_aliased
     from ..linkage.summary import summarize, summary_of
     from ..motion.sweeps import sweep
 
@@ -489,6 +490,8 @@ def _cmd_sweep(args) -> int:
             + (f" {_limits_text(res.domain)}" if res.domain.limits else ""),
             file=words,
         )
+        for note in sweep_aliased(res, "its values"):  # (the summary says it in its notes)
+            print(note, file=words)
     return 0
 
 

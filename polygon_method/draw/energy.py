@@ -16,6 +16,7 @@ import numpy as np
 from ..forces.flywheel_cycle import curves
 from .paper import PAPERS
 from ..text.energy import book_number as _g
+from .heading import heading
 from .sheet import figure_data
 
 __all__ = ["cycle_sheet"]
@@ -32,7 +33,7 @@ def cycle_sheet(scene, c, fmt: str):
     fig = Figure(figsize=(w / _CM, h / _CM), dpi=100)
     top = fig.add_axes((0.12, 0.56, 0.80, 0.34))
     low = fig.add_axes((0.12, 0.10, 0.80, 0.34))
-    fig.text(0.5, 0.95, scene.title or "Turning-moment diagram", ha="center", fontsize=13)
+    heading(fig, scene.title or "Turning-moment diagram", (w, h), 13, top=0.90)
     if c.form == "press":
         _press(scene, c, top, low)
     elif c.form == "areas":

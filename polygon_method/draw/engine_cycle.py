@@ -14,6 +14,7 @@ import math
 from ..linkage.flywheel import energy_curve, turning_moment
 from ..text.energy import book_number as _g
 from .paper import PAPERS
+from .heading import heading
 from .sheet import figure_data
 
 __all__ = ["engine_cycle_sheet"]
@@ -34,7 +35,7 @@ def engine_cycle_sheet(scene, fmt: str, paper: str = "A4"):
     fig = Figure(figsize=(w / _CM, h / _CM), dpi=100)
     top = fig.add_axes((0.12, 0.56, 0.80, 0.34))
     low = fig.add_axes((0.12, 0.10, 0.80, 0.34))
-    fig.text(0.5, 0.95, scene.title or "Turning-moment diagram", ha="center", fontsize=11)
+    heading(fig, scene.title or "Turning-moment diagram", (w, h), 11, top=0.90)
     many = len(parts) > 1
     top.plot(x, T, color="black", lw=1.2, label="turning moment T" + (" (the sum)" if many else ""))
     for k, (piston, t) in enumerate(parts if many else ()):

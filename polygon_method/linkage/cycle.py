@@ -70,14 +70,21 @@ def _followable(scene, plan, h) -> None:
     )
 
 
-def aliased(scene, plan, spacing) -> tuple:
+def aliased(scene, plan, spacing, what="the extremes below") -> tuple:
     """A sweep's note where its samples, ``spacing`` rad of the crank apart, cannot follow
-    a wheel or a second crank (the check ``linkage`` refuses by): its extremes may be
+    a wheel or a second crank (the check ``linkage`` refuses by): ``what`` it shows may be
     aliased; () where they can (or fewer than three samples give no spacing)."""
     why = None if spacing is None else _too_fast(scene, plan, spacing)
     if why is None:
         return ()
-    return (f"{why}: the extremes below may be aliased, not the motion's own",)
+    return (f"{why}: {what} may be aliased, not the motion's own",)
+
+
+def sweep_aliased(res, what) -> tuple:
+    """:func:`aliased` of a sweep made (``res``: its angles, its scene and plan)."""
+    th = np.asarray(res.theta, dtype=float)
+    spacing = float(np.median(np.abs(np.diff(th)))) if len(th) > 2 else None
+    return aliased(res.scene, res.plan, spacing, what)
 
 
 # --------------------------------------------------------------------------- over the cycle

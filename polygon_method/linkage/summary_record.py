@@ -203,7 +203,12 @@ class Summary:
             out.append(
                 f"{'quantity':<{w}}  {'unit':<7} {'maximum':>12} {at:>10} {'minimum':>12} {at:>10}"
             )
+            # at rest nothing moves: a driver's effort holds it against the loads alone (its
+            # column's words say "with inertia", as they are where the mechanism moves)
+            still = self.scene.at_rest and not self.scene.start_alpha
             for e in self.extremes:
+                what = e.what.replace("with inertia", "at rest: the loads alone, no inertia")
+                what = what if still else e.what
                 if e.constant:
                     out.append(f"{e.name:<{w}}  {e.unit:<7} {e.maximum:>12.6g} {'(constant)':>10}")
                     continue
@@ -217,7 +222,7 @@ class Summary:
                 out.append(
                     f"{e.name:<{w}}  {e.unit:<7} {mx:>12} "
                     f"{fmt_deg(e.at_max, 3):>10} {mn:>12} "
-                    f"{fmt_deg(e.at_min, 3):>10}" + (f"  {e.what}" if e.what else "")
+                    f"{fmt_deg(e.at_min, 3):>10}" + (f"  {what}" if what else "")
                 )
                 for flag, at, word, why in (
                     (e.max_unbounded, e.at_max, "grows", e.max_where),

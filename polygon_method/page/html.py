@@ -31,6 +31,7 @@ from ..draw.style import (
 )
 from ..common.numbers import fmt
 from ..draw.plots import MARK_NAMES, MARKS
+from ..linkage.cycle import sweep_aliased
 from ..text.steptable import steps_blocks
 from ..text.words import given
 from .data import page_data
@@ -220,6 +221,13 @@ def _engine_script(eng) -> str:
     )
 
 
+def _notes(fr) -> str:
+    """The sweep's notes as list items, and where its frames cannot follow a second input
+    (``linkage``'s check), that its curves may be aliased."""
+    said = fr.res.notes + sweep_aliased(fr.res, "the curves and the frames")
+    return "".join(f"<li>{escape(n)}</li>" for n in said)
+
+
 def page_html(fr: Frames, *, verdicts=None, answers_title: str = "") -> str:
     """The page for the frames ``fr``: an HTML document as text."""
     sc = need_frames(fr).sol.scene
@@ -229,7 +237,7 @@ def page_html(fr: Frames, *, verdicts=None, answers_title: str = "") -> str:
     name, symbol, unit = fr.parameter
     block = not fr.sol.plan.steps[0].periodic  # a block driven along its guide
     cycle = _cycle_words(fr)
-    notes = "".join(f"<li>{escape(n)}</li>" for n in fr.res.notes)
+    notes = _notes(fr)
     check = ""
     if verdicts:
         check = f"<h2>Answers checked</h2>\n{check_html(verdicts, answers_title)}"

@@ -35,6 +35,7 @@ function angular(x, unit) {
 const deg = (t) => (((t % 360) + 360) % 360).toFixed(1);
 // a crank angle as shown: modulo the cycle (720 for a four-stroke engine: 390 is not 30)
 const CYCLE = D.cycle || 360, inCycle = (t) => ((t % CYCLE) + CYCLE) % CYCLE;
+const MANY_TURNS = !D.param && CYCLE > 360;  // a four-stroke's 720°, a train's period of turns
 // what the frames step through: the crank angle, or a driving block's place (D.param)
 const PARAM = D.param || ["crank angle", "θ", "°"];
 const at = (t) => D.param ? t.toFixed(1) + PARAM[2] : inCycle(t).toFixed(1) + "°";
@@ -633,9 +634,13 @@ function buildPlots() {
       text(svg, {x: L - 3, y: r3(Y(y) + 3.5), class: "tick", "text-anchor": "end"}, fmt(y, 3));
     }
     const turned = Math.abs(t1 - t0), dstep = [5, 10, 15, 30, 45, 60, 90, 180].find((s) => turned / s <= 6) || 360;
-    const xt = [];  // a round angle, written between 0 and the cycle (360 or 720); a block's
-    // place: round numbers (1, 2 or 5 x 10^k apart), its unit in the axis' title
+    const xt = [];  // a round angle, written between 0 and the cycle (360); a block's
+    // place: round numbers (1, 2 or 5 x 10^k apart), its unit in the axis' title; over a
+    // cycle of more than a turn (a four-stroke's 720°) the angle turned from the first
+    // frame, in order (written within the cycle it read 540°, 0°, 180°, 360°)
+    const sg = t1 < t0 ? -1 : 1;
     if (D.param) for (const t of roundTicks(Math.min(t0, t1), Math.max(t0, t1), 6)) xt.push([t, fmt(t, 3)]);
+    else if (MANY_TURNS) for (let j = 0; j * dstep <= turned + TOL.same * dstep; j++) xt.push([t0 + sg * j * dstep, String(j * dstep) + "°"]);
     else for (let j = Math.ceil(Math.min(t0, t1) / dstep - TOL.same); j * dstep <= Math.max(t0, t1) + TOL.same; j++) xt.push([j * dstep, String(inCycle(j * dstep)) + "°"]);
     for (const [t, words] of xt) {
       el(svg, "line", {x1: r3(X(t)), y1: T, x2: r3(X(t)), y2: H - B, class: "grid"});
@@ -643,7 +648,7 @@ function buildPlots() {
     }
     el(svg, "line", {x1: L, y1: T, x2: L, y2: H - B, class: "axis"});
     text(svg, {x: (L + W - R) / 2, y: H - 6, class: "axis-title", "text-anchor": "middle"},
-      D.param ? PARAM[0] + " " + PARAM[1] + " (" + PARAM[2].trim() + ")" : D.fullTurn ? "crank angle θ, as the crank turns (" + (t1 < t0 ? "cw" : "ccw") + ")" : "crank angle θ, between the limit positions");
+      D.param ? PARAM[0] + " " + PARAM[1] + " (" + PARAM[2].trim() + ")" : MANY_TURNS ? "crank angle turned (" + (t1 < t0 ? "cw" : "ccw") + ") from θ = " + at(t0) : D.fullTurn ? "crank angle θ, as the crank turns (" + (t1 < t0 ? "cw" : "ccw") + ")" : "crank angle θ, between the limit positions");
     text(svg, {x: 0, y: 0, class: "axis-title", "text-anchor": "middle", transform: "translate(10," + r3((T + H - B) / 2) + ") rotate(-90)"}, ytitle);
     const [ic, iw, idash] = D.style.marks.instant;
     el(svg, "line", {x1: r3(X(D.theta[D.start])), x2: r3(X(D.theta[D.start])), y1: T, y2: H - B, stroke: ic, "stroke-width": iw,
