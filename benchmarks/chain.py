@@ -12,14 +12,15 @@ Each round times every size in turn, a batch of solves of some 40,000 links in a
 solve at 100,001 links), in two ways: ``dropped``, each solution freed before the next
 solve (as ``instructions.py`` counts it), and ``kept``, the last solution alive while the
 next is made, as a program that reads one position while solving the next (the objects
-it keeps are then the cyclic garbage collector's to look at). Each also as it ran before
-the plan held the collector off while its steps run (``solver/collector.py``): the same
-functions, not held (``unheld``). The least time per link over the rounds is printed, with
-its ratio to the smallest chain's, and the collector's collections per solve (young,
-middle, full) in the ``kept`` batches. On a machine shared
-with other work the times move from minute to minute: take the ratios of one run, not
-figures of two runs, and run it twice to see its noise. The instructions, which no other
-load moves: ``python benchmarks/instructions.py chain1001 chain10001``.
+it keeps are then the cyclic garbage collector's to look at); and each of those as it ran
+before the plan held the collector off while its steps run (``solver/collector.py``): the
+same functions, not held (``unheld``). The sizes are timed back to back, the smallest
+before and after the others: a shared machine's speed drifts from second to second, by
+half at times, and the ratio of two batches far apart means little. Printed: the least
+time per link over the rounds, in brackets the median over the rounds of its ratio to the
+smallest chain's in the same round, and the collector's collections per solve (young,
+middle, full) in the ``kept`` batches. Run it twice to see its noise. The instructions,
+which no other load moves: ``python benchmarks/instructions.py chain1001 chain10001``.
 
 A benchmark, not a test: nothing here fails on time.
 """
@@ -29,6 +30,7 @@ from __future__ import annotations
 import argparse
 import gc
 import importlib.util
+import statistics
 import sys
 import time
 from pathlib import Path
@@ -113,36 +115,53 @@ def _collections(scene, calls):
 WAYS = (("held", False), ("held", True), ("unheld", False), ("unheld", True))
 
 
+def _round(scenes, sizes, calls, way):
+    """Time per link of each size in one round, the sizes back to back, the smallest timed
+    before and after the others (its mean: a machine whose speed drifts moves both)."""
+    out = {}
+    for n in (*sizes, sizes[0]):
+        scene, plan, held, unheld = scenes[n]
+        object.__setattr__(plan, "instant_steps", held if way[0] == "held" else unheld)
+        t = _batch(scene, calls[n], way[1]) / calls[n] / n
+        out[n] = (out[n] + t) / 2 if n in out else t
+    return out
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("links", nargs="*", type=int, default=[1001, 10001, 100001])
-    ap.add_argument("--rounds", type=int, default=7, help="rounds of batches (least kept)")
+    ap.add_argument("--rounds", type=int, default=15, help="rounds of batches")
     args = ap.parse_args(argv)
     sizes = sorted(set(args.links))
     scenes = _scenes(sizes)
     calls = {n: max(1, BATCH_LINKS // n) for n in sizes}
-    best = {(n, way): float("inf") for n in sizes for way in WAYS}
-    counts = {}
+    times = {(n, way): [] for n in sizes for way in WAYS}
+    ratios = {(n, way): [] for n in sizes for way in WAYS}
     for _ in range(args.rounds):
-        for n in sizes:
-            scene, plan, held, unheld = scenes[n]
-            for way in WAYS:
-                object.__setattr__(plan, "instant_steps", held if way[0] == "held" else unheld)
-                t = _batch(scene, calls[n], way[1]) / calls[n] / n
-                best[n, way] = min(best[n, way], t)
+        for way in WAYS:
+            got = _round(scenes, sizes, calls, way)
+            for n in sizes:
+                times[n, way].append(got[n])
+                ratios[n, way].append(got[n] / got[sizes[0]])
+    counts = {}
     for n in sizes:
         scene, plan, held, unheld = scenes[n]
         for name, fns in (("held", held), ("unheld", unheld)):
             object.__setattr__(plan, "instant_steps", fns)
             counts[n, name] = _collections(scene, max(4, calls[n]))
         object.__setattr__(plan, "instant_steps", held)
-    first = sizes[0]
     heads = [f"{a}, {'kept' if k else 'dropped'}" for a, k in WAYS]
     print(f"{'links':>8}" + "".join(f"  {h:>18}" for h in heads))
     for n in sizes:
-        cells = [f"{best[n, w] * 1e6:6.3f} us ({best[n, w] / best[first, w]:.3f})" for w in WAYS]
+        cells = [
+            f"{min(times[n, w]) * 1e6:6.3f} us ({statistics.median(ratios[n, w]):.3f})"
+            for w in WAYS
+        ]
         print(f"{n:>8,}" + "".join(f"  {c:>18}" for c in cells))
-    print(f"time per link, least of {args.rounds} rounds (its ratio to {first:,} links)")
+    print(
+        f"time per link, least of {args.rounds} rounds (in brackets the median over the rounds"
+        f" of its ratio to {sizes[0]:,} links in the same round)"
+    )
     print("collections per solve, solutions kept (young, middle, full):")
     for n in sizes:
         words = [
