@@ -19,7 +19,8 @@ and the torque read, as ``speed.py`` times it), ``named`` (and every dict of the
 read), ``floor`` and ``floor_tuple`` (``speed.floor_fourbar``: the same numbers by name, or
 unnamed), ``kinematic`` and ``forces`` (``worked_problems/fourbar_forces.toml``: its warm
 solve, and its warm force solve alone), ``chain1001`` and ``chain10001`` (a chain of dyads'
-warm solve, per link), ``worked`` (the seed's worked file from text to solved, as ``solve``
+warm solve, per link; its time per link at 1,001, 10,001 and 100,001 links side by side:
+``chain.py``), ``worked`` (the seed's worked file from text to solved, as ``solve``
 reads it, its plan never seen), ``tomllib`` (Python's TOML reader on that text: the
 yardstick of the 0.3 ms target) and ``fresh`` (``speed.py``'s four-bar never seen, from
 its loaded scene to one solved position).

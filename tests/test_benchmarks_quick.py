@@ -96,3 +96,26 @@ def test_the_instruction_counts_count_what_they_say():
             assert set(out.P) == {"A", "B", "C", "D"}
         if case == "tomllib":
             assert set(out) >= {"ground", "links", "input"}
+
+
+def test_the_chain_benchmark_times_each_size_held_off_and_not(capsys):
+    """``benchmarks/chain.py`` at two small sizes, one round: a row per size and its
+    collections, the held-off road and the plan's functions unheld, and the plan given back
+    its held-off functions after."""
+    spec = importlib.util.spec_from_file_location("chain", ROOT / "benchmarks" / "chain.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    mod.BATCH_LINKS = 1000
+    mod.main(["--rounds", "1", "403", "601"])
+    out = capsys.readouterr().out
+    lines = out.splitlines()
+    rows = [x.split() for x in lines if x.lstrip().startswith(("403", "601")) and ":" not in x]
+    assert [r[0] for r in rows] == ["403", "601", "403", "601"]  # times, then collections
+    assert sum("links: read, planned and solved once" in x for x in lines) == 2
+    assert rows[0][3] == "(1.000)" and "held" in rows[2] and "unheld" in rows[2]
+    from polygon_method import parse_scene, solve
+    from polygon_method.solver.compiler import compile_plan
+
+    scene = parse_scene(mod._chain_text(403))
+    solve(scene)
+    assert len(compile_plan(scene).instant_steps) == 1  # 202 steps: held off

@@ -41,6 +41,7 @@ from dataclasses import dataclass, field, replace
 from ..common.errors import TOL, PolygonMethodError
 from ..scene import FixedPath, GuideSlider, Scene
 from ..steps import Carried, Context, Crank, Dyad, SliderDyad, SlottedLink, State
+from .collector import held_off
 
 __all__ = [
     "Plan",
@@ -390,8 +391,9 @@ class Plan:
 
     def bind_own_instant(self):
         """The plan's own one-instant functions (``instant_steps``), bound once to its
-        dimensions and kept: ``solve`` runs them in turn on a solution."""
-        object.__setattr__(self, "instant_steps", self.bind_instant(self.dims))
+        dimensions and kept: ``solve`` runs them in turn on a solution (a large plan's in
+        one function, the cyclic collector held off: :mod:`.collector`)."""
+        object.__setattr__(self, "instant_steps", held_off(self.bind_instant(self.dims)))
         return self.instant_steps
 
     def __getstate__(self):  # the bound phases are made again, not pickled
