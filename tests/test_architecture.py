@@ -535,7 +535,6 @@ LONG_MODULES: dict = {
     "forces/records.py": 639,
     "scene/reading.py": 672,
     "scene/records.py": 643,
-    "scene/tables.py": 692,
     "solver/compiler.py": 731,
 }
 
@@ -565,8 +564,6 @@ LONG_FUNCTIONS = {
     "scene/reading.py:parse_answers",
     "scene/reading.py:scene",
     "scene/rolling.py:read_rolling",
-    "scene/tables.py:on_link",
-    "scene/tables.py:sliders",
     "scene/variation.py:_point",
     "scene/wheel_input.py:wheel_input",
     "solver/compiler.py:finish",
@@ -602,7 +599,6 @@ LITERALS = {
     "draw/forces.py": 2,
     "forces/friction.py": 1,
     "polygons/scales.py": 4,
-    "scene/tables.py": 3,
     "solver/centres.py": 1,
     "solver/compiler.py": 4,
     "solver/completion.py": 1,

@@ -10,7 +10,7 @@ import math
 from ..common.errors import printable
 from ..common.units import UNITS, decimal_comma
 from .records import ANSWER_KINDS, UNDER_BLOCK_KINDS, Answer, split_name
-from .tables import _suggest, _which_point
+from .table_help import _suggest, _which_point
 
 __all__ = [
     "decimal_comma",

@@ -186,7 +186,7 @@ def read_rolling(rd, ground, sliders, points) -> list:
     """The [rolling] table's pairs, checked (``rd`` is the scene reader)."""
     if "rolling" not in rd.raw:  # (the usual scene: nothing to import or check)
         return []
-    from .tables import _suggest  # the reader's own did-you-mean
+    from .table_help import _suggest  # the reader's own did-you-mean
 
     out = []
     wheels = set()

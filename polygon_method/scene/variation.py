@@ -180,7 +180,7 @@ class _Variants:
         return out
 
     def _choices(self, key) -> str:
-        from .tables import _suggest
+        from .table_help import _suggest
 
         names = (
             [lk.key for lk in self.index.values()]
@@ -369,7 +369,7 @@ class _Variants:
                     table_key=name,
                 )
             ]
-        from .tables import _suggest
+        from .table_help import _suggest
 
         subs = ("x", "y", "along", "distances", "diameter", "radius", "force")
         raise self.error(
@@ -463,7 +463,7 @@ class _Variants:
     def _range(self, key, spec, unit, where):
         for k in spec:
             if k not in _RANGE_KEYS:
-                from .tables import _suggest
+                from .table_help import _suggest
 
                 raise self.error(
                     f"{key}: unknown key '{k}'{_suggest(k, _RANGE_KEYS)}; a range "
