@@ -10,7 +10,7 @@ from .carried import _CarriedPoints
 from .loads import _Loads
 from .records import Cylinder, Pin, split_name
 from .sliders import _Sliders
-from .table_help import _suggest, _which_point  # noqa: F401  (_suggest: for reading.py)
+from .table_help import _which_point
 
 
 class _Tables(_CarriedPoints, _Sliders, _Loads):
