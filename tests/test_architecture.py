@@ -557,7 +557,6 @@ LONG_FUNCTIONS = {
     "draw/forces.py:_free_body",
     "draw/forces.py:_polygon",
     "page/data.py:page_data",
-    "scene/answers.py:answer",
     "scene/rolling.py:read_rolling",
     "scene/variation.py:_point",
     "scene/wheel_input.py:wheel_input",
