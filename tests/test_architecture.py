@@ -559,7 +559,6 @@ LONG_FUNCTIONS = {
     "page/data.py:page_data",
     "scene/rolling.py:read_rolling",
     "scene/variation.py:_point",
-    "scene/wheel_input.py:wheel_input",
     "solver/compiler.py:finish",
     "solver/compiler.py:run",
 }
