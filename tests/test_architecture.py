@@ -557,7 +557,6 @@ LONG_FUNCTIONS = {
     "draw/forces.py:_free_body",
     "draw/forces.py:_polygon",
     "page/data.py:page_data",
-    "scene/variation.py:_point",
     "solver/compiler.py:finish",
     "solver/compiler.py:run",
 }
