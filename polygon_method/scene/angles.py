@@ -24,18 +24,7 @@ form                            reference and sense                             
 unambiguous forms. So is "30 deg from the horizontal" and, without a sense, "from the line
 of stroke". A size of zero needs no side.
 
-Dead centres of a slider crank (crank O A = r, rod A B = l, B on a straight path through
-Q along unit u; B on the side ``s`` of A along u, +1 unless [assembly] says otherwise):
-O, A and B are in line. At the inner dead centre the crank pin points at the piston and
-the piston is farthest from the crank shaft, ``|OB| = l + r`` (A between O and B: the
-books' "x = (l + r) - (l cos phi + r cos theta) from the i.d.c.", the project's
-``worked_problems/engine_analytical.toml``; also "top dead centre", TDC); at the outer
-dead centre it is nearest, ``|OB| = l - r`` (O between A and B; "bottom dead centre",
-BDC). With F the foot of O on the path and ``e = |OF|`` (the offset),
-``B = F + s sqrt(|OB|^2 - e^2) u``; the crank points along O->B at the inner dead centre
-and the other way at the outer one: for a horizontal path below O (``e`` below) and the
-piston on the right, ``theta_IDC = -asin(e / (l + r))`` and
-``theta_ODC = 180 deg - asin(e / (l - r))``.
+The slider crank's dead centres a book's angle may be measured from: :mod:`.dead_centres`.
 
 >>> round(math.degrees(read_angle("30 deg below the horizontal", "path").value), 12)
 -30.0
@@ -54,8 +43,10 @@ import re
 from dataclasses import dataclass
 
 from ..common.errors import SceneError
-from ..common.tolerances import ROUNDING, SAME, TOL
+from ..common.tolerances import ROUNDING
 from ..common.units import UNITS
+from .angle_turns import _deg, _half_turn
+from .dead_centres import candidates, dead_centres, side_along
 
 __all__ = [
     "BookAngle",
@@ -193,95 +184,18 @@ def read_angle(
     shown = raw.strip()
     good = f"write it as e.g. {EXAMPLES[where]}"
     text = _tidy(raw)
-    across = re.match(r"(perpendicular|normal|right angles|along|parallel)\b\s*(\S*)", text)
-    if across:  # "perpendicular to CD": the link's direction is known once it is solved
-        how = {"along": "along", "right angles": "at right angles to"}.get(across.group(1))
-        link = across.group(2).upper() or "the link"
-        raise SceneError(
-            f"'{shown}': a direction {how or across.group(1) + ' to'} {link} turns with the "
-            f"link and is not read; give its angle at this instant ({link}'s direction from "
-            f"the solved positions, plus or minus 90 deg across it); {good}"
-        )
+    _refuse_across(text, shown, good)
     way = _WAY.fullmatch(text)
     if way:  # "down", "to the left": a way, the plain angle of its axis
         theta = math.radians(_WAY_DEG[way.group(1)])
         return BookAngle(theta, shown, f"'{shown}' = {_deg(theta)} deg from +x")
-    m = _HEAD.match(text)
-    plain = m is not None and not m.group(3) and text != raw.strip().lower()
-    if not m or not (m.group(3) or plain):
-        raise SceneError(f"cannot read '{shown}' as an angle: {good}")
-    size, unit, rest = float(m.group(1)), m.group(2) or "deg", (m.group(3) or "").strip()
-    if plain or rest in _SENSE:  # "at 30 deg", "theta2 = 30 deg": from +x, ccw (or as said)
-        rest = f"from +x {rest}"
-    if not math.isfinite(size) or size < 0:
-        raise SceneError(
-            f"'{shown}': give the size of the angle (not negative) and the side "
-            f"it is measured to; {good}"
-        )
-    in_deg = unit != "rad"
-    phi = size * UNITS["angle"]["deg" if in_deg else "rad"]
-    if phi > 2 * math.pi * (1 + ROUNDING):
-        raise SceneError(f"'{shown}' is more than a full turn from its reference; {good}")
-
-    def turned(ref, s):
-        """``ref + s phi`` in (-pi, pi]; a reference in degrees (a float from the tables
-        here) is turned in degrees where the size is, so that "60 deg right of the
-        vertical" is exactly the plain 30 deg; a dead centre or a stroke is in rad."""
-        if isinstance(ref, float) and in_deg:
-            return _half_turn(ref + s * size, 180.0) * UNITS["angle"]["deg"]
-        base = math.radians(ref) if isinstance(ref, float) else ref.rad
-        return _half_turn(base + s * phi, math.pi)
-
-    def done(ref, s, ref_words, slips=()):
-        theta = turned(ref, s)
-        note = f"'{shown}' = {_deg(theta)} deg from +x" + (f" ({ref_words})" if ref_words else "")
-        return BookAngle(
-            theta,
-            shown,
-            note,
-            tuple(Slip(turned(r2, s2), code, words) for r2, s2, code, words in slips),
-        )
-
+    a, rest = _measured(raw, text, shown, good)
     hv = re.fullmatch(r"(above|below) horizontal(?: (left|right))?", rest)
     if hv:
-        up = hv.group(1) == "above"
-        left = hv.group(2) == "left"
-        ref, s = (180.0, -1 if up else 1) if left else (0.0, 1 if up else -1)
-        return done(
-            ref,
-            s,
-            "",
-            [
-                (
-                    ref,
-                    -s,
-                    "above_below",
-                    "the angle taken "
-                    f"{'below' if up else 'above'} the horizontal instead of "
-                    f"{'above' if up else 'below'}",
-                )
-            ],
-        )
+        return _horizontal_side(a, hv)
     vv = re.fullmatch(r"(left|right) of (upward |downward )?vertical", rest)
     if vv:
-        down = (vv.group(2) or "").strip() == "downward"
-        right = vv.group(1) == "right"
-        ref = 270.0 if down else 90.0
-        s = (1 if right else -1) if down else (-1 if right else 1)
-        h_ref, h_s = (0.0, 1 if not down else -1) if right else (180.0, -1 if not down else 1)
-        return done(
-            ref,
-            s,
-            "",
-            [
-                (
-                    h_ref,
-                    h_s,
-                    "from_horizontal",
-                    "the angle measured from the horizontal instead of the vertical",
-                )
-            ],
-        )
+        return _vertical_side(a, vv)
     fm = re.fullmatch(
         rf"(?:({_SENSE_RE}) )?(from|past|after|beyond|before) (.+?)"
         rf"(?: ({_SENSE_RE}))?",
@@ -310,50 +224,177 @@ def read_angle(
                 f"'{shown}': a dead centre is a position of the crank; only "
                 f"[input] angle may be measured from it; {good}"
             )
-        said = dc.group(1) or dc.group(2)[0]
-        if said[0] in "hc" and said.endswith("end"):  # US books: the cylinder head's end
-            said = "inner" if said[0] == "h" else "outer"  # is the inner, the crank's the outer
-        inner = said in ("inner", "i", "top", "t")
-        name = {"i": "inner", "o": "outer", "t": "top", "b": "bottom"}.get(said, said)
-        turning = 1 if sense is None or sense > 0 else -1
-        s = given if given is not None else turning
-        if word == "before":
-            s = -s
-        found = []
-        for idc, odc, keeps in dead():  # one candidate, or one per side of an [assembly] point
-            ref, other = (idc, odc) if inner else (odc, idc)
-            if keeps is None or keeps(turned(_Rad(ref), s)):
-                found.append((ref, other))
-        if len(found) != 1:
-            raise SceneError(
-                f"'{shown}': the slider's [assembly] position does not settle "
-                "on which side of the crank pin the slider is at the dead centre; "
-                "give it as left/right (above/below) instead of a point"
-            )
-        ((ref, other),) = found
-        ref_words = (
-            f"the {name} dead centre is at {_deg(ref)} deg, the crank turning "
-            f"{'ccw' if turning > 0 else 'cw'}"
+        return _from_dead_centre(a, dc, word, given, sense, dead)
+    return _from_line(a, target, where, given, strokes, centres, good)
+
+
+def _refuse_across(text, shown, good):
+    """A direction across or along a link ("perpendicular to CD") turns with the link: it
+    is refused, with what to give instead."""
+    across = re.match(r"(perpendicular|normal|right angles|along|parallel)\b\s*(\S*)", text)
+    if across:  # "perpendicular to CD": the link's direction is known once it is solved
+        how = {"along": "along", "right angles": "at right angles to"}.get(across.group(1))
+        link = across.group(2).upper() or "the link"
+        raise SceneError(
+            f"'{shown}': a direction {how or across.group(1) + ' to'} {link} turns with the "
+            f"link and is not read; give its angle at this instant ({link}'s direction from "
+            f"the solved positions, plus or minus 90 deg across it); {good}"
         )
-        slips = [
+
+
+class _Measured:
+    """A book's angle whose size is read: ``phi`` (rad; ``size`` as written, in degrees
+    where ``in_deg``), the words as written (``shown``) and the match of its size (``m``),
+    turned from a reference in a sense into a :class:`BookAngle`."""
+
+    __slots__ = ("shown", "m", "size", "in_deg", "phi")
+
+    def __init__(self, shown, m, size, in_deg, phi):
+        self.shown, self.m, self.size, self.in_deg, self.phi = shown, m, size, in_deg, phi
+
+    def turned(self, ref, s):
+        """``ref + s phi`` in (-pi, pi]; a reference in degrees (a float from the tables
+        here) is turned in degrees where the size is, so that "60 deg right of the
+        vertical" is exactly the plain 30 deg; a dead centre or a stroke is in rad."""
+        if isinstance(ref, float) and self.in_deg:
+            return _half_turn(ref + s * self.size, 180.0) * UNITS["angle"]["deg"]
+        base = math.radians(ref) if isinstance(ref, float) else ref.rad
+        return _half_turn(base + s * self.phi, math.pi)
+
+    def done(self, ref, s, ref_words, slips=()):
+        """The :class:`BookAngle` ``ref + s phi``, its note naming the reference's place
+        (``ref_words``), with the slips ``(ref, s, code, words)`` a reader might make."""
+        theta = self.turned(ref, s)
+        shown = self.shown
+        note = f"'{shown}' = {_deg(theta)} deg from +x" + (f" ({ref_words})" if ref_words else "")
+        return BookAngle(
+            theta,
+            shown,
+            note,
+            tuple(Slip(self.turned(r2, s2), code, words) for r2, s2, code, words in slips),
+        )
+
+
+def _measured(raw, text, shown, good):
+    """(the angle's size read, the words after it): a size not negative, at most a full
+    turn; a plain "at 30 deg" (or with a sense only) measured from +x."""
+    m = _HEAD.match(text)
+    plain = m is not None and not m.group(3) and text != raw.strip().lower()
+    if not m or not (m.group(3) or plain):
+        raise SceneError(f"cannot read '{shown}' as an angle: {good}")
+    size, unit, rest = float(m.group(1)), m.group(2) or "deg", (m.group(3) or "").strip()
+    if plain or rest in _SENSE:  # "at 30 deg", "theta2 = 30 deg": from +x, ccw (or as said)
+        rest = f"from +x {rest}"
+    if not math.isfinite(size) or size < 0:
+        raise SceneError(
+            f"'{shown}': give the size of the angle (not negative) and the side "
+            f"it is measured to; {good}"
+        )
+    in_deg = unit != "rad"
+    phi = size * UNITS["angle"]["deg" if in_deg else "rad"]
+    if phi > 2 * math.pi * (1 + ROUNDING):
+        raise SceneError(f"'{shown}' is more than a full turn from its reference; {good}")
+    return _Measured(shown, m, size, in_deg, phi), rest
+
+
+def _horizontal_side(a, hv):
+    """ "30 deg above (below) the horizontal" (", left": from -x)."""
+    up = hv.group(1) == "above"
+    left = hv.group(2) == "left"
+    ref, s = (180.0, -1 if up else 1) if left else (0.0, 1 if up else -1)
+    return a.done(
+        ref,
+        s,
+        "",
+        [
             (
-                _Rad(other),
-                s,
-                "other_dead_centre",
-                f"the angle measured from the other dead centre instead of the {name}",
+                ref,
+                -s,
+                "above_below",
+                "the angle taken "
+                f"{'below' if up else 'above'} the horizontal instead of "
+                f"{'above' if up else 'below'}",
             )
-        ]
-        if size != 0:
-            slips.append(
-                (
-                    _Rad(ref),
-                    -s,
-                    "against_rotation",
-                    "the angle measured from the "
-                    "dead centre against the crank's rotation instead of with it",
-                )
+        ],
+    )
+
+
+def _vertical_side(a, vv):
+    """ "60 deg right (left) of the vertical" (the upward one, or the downward)."""
+    down = (vv.group(2) or "").strip() == "downward"
+    right = vv.group(1) == "right"
+    ref = 270.0 if down else 90.0
+    s = (1 if right else -1) if down else (-1 if right else 1)
+    h_ref, h_s = (0.0, 1 if not down else -1) if right else (180.0, -1 if not down else 1)
+    return a.done(
+        ref,
+        s,
+        "",
+        [
+            (
+                h_ref,
+                h_s,
+                "from_horizontal",
+                "the angle measured from the horizontal instead of the vertical",
             )
-        return done(_Rad(ref), s, ref_words, slips)
+        ],
+    )
+
+
+def _from_dead_centre(a, dc, word, given, sense, dead):
+    """ "30 deg past (before) the inner (outer) dead centre": from the crank at that dead
+    centre, in the crank's sense of rotation (against it: before) unless a sense is said."""
+    said = dc.group(1) or dc.group(2)[0]
+    if said[0] in "hc" and said.endswith("end"):  # US books: the cylinder head's end
+        said = "inner" if said[0] == "h" else "outer"  # is the inner, the crank's the outer
+    inner = said in ("inner", "i", "top", "t")
+    name = {"i": "inner", "o": "outer", "t": "top", "b": "bottom"}.get(said, said)
+    turning = 1 if sense is None or sense > 0 else -1
+    s = given if given is not None else turning
+    if word == "before":
+        s = -s
+    found = []
+    for idc, odc, keeps in dead():  # one candidate, or one per side of an [assembly] point
+        ref, other = (idc, odc) if inner else (odc, idc)
+        if keeps is None or keeps(a.turned(_Rad(ref), s)):
+            found.append((ref, other))
+    if len(found) != 1:
+        raise SceneError(
+            f"'{a.shown}': the slider's [assembly] position does not settle "
+            "on which side of the crank pin the slider is at the dead centre; "
+            "give it as left/right (above/below) instead of a point"
+        )
+    ((ref, other),) = found
+    ref_words = (
+        f"the {name} dead centre is at {_deg(ref)} deg, the crank turning "
+        f"{'ccw' if turning > 0 else 'cw'}"
+    )
+    slips = [
+        (
+            _Rad(other),
+            s,
+            "other_dead_centre",
+            f"the angle measured from the other dead centre instead of the {name}",
+        )
+    ]
+    if a.size != 0:
+        slips.append(
+            (
+                _Rad(ref),
+                -s,
+                "against_rotation",
+                "the angle measured from the "
+                "dead centre against the crank's rotation instead of with it",
+            )
+        )
+    return a.done(_Rad(ref), s, ref_words, slips)
+
+
+def _from_line(a, target, where, given, strokes, centres, good):
+    """ "... from the line of stroke", "from the line of centres" (or "angle BAD"), "from the
+    horizontal (vertical), cw": from that line, in the sense said (a size not nought
+    needs one)."""
+    shown, m = a.shown, a.m
     vertex = re.fullmatch(r"angle ([a-z][0-9]*)([a-z][0-9]*)([a-z][0-9]*)", target)
     if vertex:  # "angle BAD = 60 deg": from the frame's line AD through the crank's pivot A
         target = _frame_side(vertex.groups(), centres, shown, good)
@@ -365,33 +406,24 @@ def read_angle(
                 f"direction as {EXAMPLES['path']}"
             )
         ref, named = _stroke(strokes or {}, (stroke.group(1) or "").upper(), shown)
-        if given is None and size != 0:
+        if given is None and a.size != 0:
             raise SceneError(
                 f"'{shown}' does not say to which side: add the sense, e.g. "
                 f'"{_size(m)} from the line of stroke, ccw" (or cw)'
             )
-        return done(_Rad(ref), given or 1, f"the line of stroke{named} is at {_deg(ref)} deg")
+        return a.done(_Rad(ref), given or 1, f"the line of stroke{named} is at {_deg(ref)} deg")
     if centres is not None and (target in _FRAME_WORDS or re.fullmatch(_PAIR, target)):
         ref, words = _centres_line(centres, target, shown)
-        if given is None and size != 0:
+        if given is None and a.size != 0:
             raise SceneError(
                 f"'{shown}' does not say to which side: add the sense, e.g. "
                 f'"{_size(m)} from {_line_words(target)}, ccw" (or cw)'
             )
-        return done(_Rad(ref), given or 1, words)
-    refs = {
-        "horizontal": 0.0,
-        "+x": 0.0,
-        "x axis": 0.0,
-        "positive x axis": 0.0,
-        "vertical": 90.0,
-        "upward vertical": 90.0,
-        "downward vertical": 270.0,
-    }
-    if target not in refs:
+        return a.done(_Rad(ref), given or 1, words)
+    if target not in _AXES:
         raise SceneError(f"cannot read '{shown}' as an angle (measured from what?): {good}")
-    ref = refs[target]
-    if given is None and size != 0:
+    ref = _AXES[target]
+    if given is None and a.size != 0:
         if "vertical" in target:
             which = "" if target == "vertical" else target.split()[0] + " "
             raise SceneError(
@@ -405,7 +437,19 @@ def read_angle(
                 f'"{_size(m)} above the horizontal" or "{_size(m)} below the '
                 'horizontal" (add ", left" for the left-hand side)'
             )
-    return done(ref, given or 1, "")
+    return a.done(ref, given or 1, "")
+
+
+#: the axes an angle may be measured from, by name, and their direction (deg)
+_AXES = {
+    "horizontal": 0.0,
+    "+x": 0.0,
+    "x axis": 0.0,
+    "positive x axis": 0.0,
+    "vertical": 90.0,
+    "upward vertical": 90.0,
+    "downward vertical": 270.0,
+}
 
 
 def _size(m) -> str:
@@ -418,23 +462,6 @@ class _Rad:
     """A reference direction in radians (a dead centre, a line of stroke)."""
 
     rad: float
-
-
-def _half_turn(a, half):
-    """``a`` turned by whole turns into (-half, half] (``half`` = 180 or pi).
-
-    >>> _half_turn(330.0, 180.0), _half_turn(-180.0, 180.0), _half_turn(0.0, 180.0)
-    (-30.0, 180.0, 0.0)
-    """
-    if -half < a <= half:
-        return a + 0.0  # as it is, to the last bit (and never -0.0)
-    d = (a + half) % (2 * half) - half
-    return half if d == -half else d
-
-
-def _deg(theta) -> str:
-    """An angle (rad) in degrees for the notes, in (-180, 180]."""
-    return f"{_half_turn(round(math.degrees(theta), 9), 180.0):g}"
 
 
 #: the frame's line in words, and a line named by two ground points ("AD", "O2O4", "O2-O4")
@@ -517,82 +544,3 @@ def _stroke(strokes: dict, name: str, shown: str):
         )
     ((name, ang),) = strokes.items()
     return ang, ""
-
-
-def side_along(hint, u) -> int:
-    """Which of the two slider positions (+1: the one farther along ``u``) an [assembly]
-    hint word takes, as the compiler picks: the default (None) the one farther along the
-    path; above/below/right/left the one on that side (+1 where the path has no such
-    component: the compiler refuses the hint in its own words)."""
-    if not isinstance(hint, str):
-        return 1
-    axis, want = {"above": (1, 1), "below": (1, -1), "right": (0, 1), "left": (0, -1)}.get(
-        hint, (0, 0)
-    )
-    return -1 if u[axis] * want < -SAME else 1
-
-
-def dead_centres(pivot, r, l, through, u, side, unit=("m", 1.0)) -> tuple:
-    """(inner, outer) dead-centre crank angles (rad) of a slider crank: pivot O, crank r,
-    rod l, path through ``through`` along unit ``u``, slider on ``side`` (+1 / -1) of the
-    crank pin along u (lengths in m; ``unit`` (name, metres) for the messages). Raises
-    :class:`SceneError` where the rod cannot reach.
-
-    >>> i, o = dead_centres((0, 0), 1, 4, (0, 0), (1, 0), 1)   # in-line, path +x
-    >>> round(math.degrees(i), 9), round(math.degrees(o), 9)
-    (0.0, 180.0)
-    """
-    ox, oy = pivot
-    qx, qy = through
-    ux, uy = u
-    t0 = (ox - qx) * ux + (oy - qy) * uy
-    fx, fy = qx + t0 * ux, qy + t0 * uy  # the foot of O on the path
-    e = math.hypot(ox - fx, oy - fy)
-    name, k = unit
-    out = []
-    for reach, words in ((l + r, "inner"), (l - r, "outer")):
-        if reach <= 0:
-            raise SceneError(
-                f"no {words} dead centre: the rod ({l / k:g} {name}) is not "
-                f"longer than the crank ({r / k:g} {name})"
-            )
-        if reach < e * (1 + TOL.closure):
-            raise SceneError(
-                f"no {words} dead centre: the rod and crank in line reach "
-                f"{reach / k:g} {name}, less than the line of stroke's offset "
-                f"{e / k:g} {name} from the crank's pivot (the crank cannot turn "
-                "a full turn)"
-            )
-        t = side * math.sqrt(reach * reach - e * e)
-        bx, by = fx + t * ux - ox, fy + t * uy - oy
-        ang = math.atan2(by, bx)
-        out.append(ang + math.pi if words == "outer" else ang)
-    return tuple(_half_turn(a, math.pi) for a in out)
-
-
-def candidates(pivot, r, l, through, u, hint, unit=("m", 1.0)) -> list:
-    """The dead centres of a slider crank as :func:`read_angle` takes them,
-    ``[(inner, outer, keeps)]``: one candidate for the piston's side that an [assembly]
-    word (or none) sets; for a rough position ``hint = (x, y)``, one per side, each with a
-    test of the final crank angle: whether the position is nearer the piston on that side
-    there (as the compiler picks it)."""
-    if not isinstance(hint, tuple):
-        return [(*dead_centres(pivot, r, l, through, u, side_along(hint, u), unit), None)]
-    (ox, oy), (qx, qy), (ux, uy) = pivot, through, u
-
-    def keeps(side):
-        def test(theta):
-            ax, ay = ox + r * math.cos(theta), oy + r * math.sin(theta)
-            t = (ax - qx) * ux + (ay - qy) * uy
-            fx, fy = qx + t * ux, qy + t * uy  # the foot of the crank pin on the path
-            h2 = l * l - (ax - fx) ** 2 - (ay - fy) ** 2
-            if h2 <= 0:
-                return False
-            h = math.sqrt(h2)
-            ahead = math.dist((fx + h * ux, fy + h * uy), hint)
-            behind = math.dist((fx - h * ux, fy - h * uy), hint)
-            return (ahead < behind) == (side > 0)
-
-        return test
-
-    return [(*dead_centres(pivot, r, l, through, u, side, unit), keeps(side)) for side in (1, -1)]

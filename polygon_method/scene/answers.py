@@ -10,7 +10,7 @@ import math
 from ..common.errors import printable
 from ..common.units import UNITS, decimal_comma
 from .records import ANSWER_KINDS, UNDER_BLOCK_KINDS, Answer, split_name
-from .tables import _suggest, _which_point
+from .table_help import _suggest, _which_point
 
 __all__ = [
     "decimal_comma",
@@ -268,6 +268,9 @@ class _Answers:
             )
 
     def answer(self, key, value, known, slider_names, pin_names, loads):
+        """One key of [answers] (or of a student's file) and its value: an :class:`Answer`,
+        the key checked against the scene (what it names is there, the force analysis
+        asked for where it is a force) and the value read in the key's kind."""
         line = self.line_of("answers", key)
         forces = getattr(self, "scene_forces", None)  # an answer file: its scene's
         if forces is None:
@@ -285,82 +288,17 @@ class _Answers:
             )
         raw_text, value = printable(str(value)), read
         if key == "torque":
-            if not loads and not forces:
-                raise self.error(
-                    "a torque answer needs [loads] to balance, or [masses]", "answers", key
-                )
-            if getattr(self, "two_inputs", False) and not forces:
-                raise self.error(
-                    "with two inputs one power balance does not give the two "
-                    "driving torques: no torque answer (the force analysis gives each: "
-                    "give [masses], empty for the loads alone; torque2 the second's)",
-                    "answers",
-                    key,
-                )
-            if getattr(self, "driving_block", None) and not (
-                forces and getattr(self, "driving_wheel", None)
-            ):
-                raise self.error(
-                    f"the block {self.driving_block} drives the mechanism: its "
-                    "driving effort is a force along its guide, not a torque "
-                    "(solve prints it; its answer key is force)",
-                    "answers",
-                    key,
-                )
-            q = self.qty(
-                value,
-                "torque",
-                "answers",
-                key,
-                default_unit="N m",
-                allow_sense=True,
-                refuse_absurd=False,
-            )
-            return Answer(key, "torque", (), q.value, q.sense, raw_text, line)
+            return self._torque_answer(key, value, raw_text, line, loads, forces)
         if key in DRIVER_ANSWERS:
             return self.driver_answer(key, value, raw_text, line, loads, forces)
-        if key in ENGINE_ANSWERS:  # the engine chapter's: efforts, the cycle, the flywheel
-            value = self._engine_value(value, ENGINE_ANSWERS[key], key)
-            return Answer(key, key, (), value, None, raw_text, line)
-        base, _, piston = key.rpartition("_")
-        if base in ENGINE_PER_PISTON and piston:  # piston_effort_B: one cylinder's of several
-            if piston not in slider_names:
-                raise self.error(
-                    f"{key}: {piston} is no slider of the scene (name a cylinder's piston)",
-                    "answers",
-                    key,
-                )
-            value = self._engine_value(value, ENGINE_ANSWERS[base], key)
-            return Answer(key, base, (piston,), value, None, raw_text, line)
+        engine = self._engine_answer(key, value, raw_text, line, slider_names)
+        if engine is not None:
+            return engine
         prefix, _, rest = key.partition("_")
         if prefix == "I" and rest:
             return self.centre_answer(key, rest, value, line)
         if prefix not in ANSWER_KINDS or not rest:
-            examples = [
-                "v_C",
-                "a_C",
-                "v_CB",
-                "omega_BC",
-                "alpha_BC",
-                "vs_D",
-                "as_D",
-                "ac_A",
-                "rub_B",
-                "torque",
-            ]
-            raise self.error(
-                f"unknown answer key{hint() or _suggest(key, examples)}; keys are v_X, "
-                "a_X, v_XY, a_XY, omega_L, alpha_L, vs_X, as_X, ac_X, rub_X, "
-                "torque, force, torque2, force2 (the drivers' efforts), I_ij (a centre), "
-                "vI_L, aI_L (a wheel's contact point), "
-                "F_X, N_X, Fi_L, Ci_L, h_L, Fc_L (forces), Tmax_L, Pmax_L (a friction "
-                "drive's largest torque and power), piston_effort, crank_effort, "
-                "turning_moment, rod_thrust, side_thrust (each with _B: piston B's of several "
-                "cylinders), shaking_force, shaking_moment, "
-                "T_mean, dE_max, I_flywheel, m_flywheel (the force and engine chapters)",
-                "answers",
-                key,
-            )
+            raise self._unknown_key(key, hint)
         kind, what, sense_ok = ANSWER_KINDS[prefix]
         if what in ("pin_force", "guide", "body", "contact", "drive") and not forces:
             raise self.error(
@@ -378,6 +316,115 @@ class _Answers:
         names = (rest,) if what == "slider" and rest in slider_names else split_name(rest)
         if not names:
             raise self.error(f"'{rest}' is not a point or link name{hint()}", "answers", key)
+        if what in ("pin_force", "guide", "body", "contact", "drive"):
+            names = self._force_names(key, prefix, rest, names, what, known, slider_names)
+        else:
+            names = self._motion_names(
+                key, prefix, rest, names, what, known, slider_names, pin_names, hint
+            )
+        if prefix == "h":  # (a body's: the offset of its single inertia force)
+            q = self.qty(
+                value, "length", "answers", key, default_unit=self.unit, refuse_absurd=False
+            )
+            if _bare(value):  # a bare length is in the scene's unit: say so
+                raw_text = f"{raw_text} {self.unit}"
+            return Answer(key, prefix, names, q.value, None, raw_text, line)
+        q = self.qty(
+            value,
+            kind,
+            "answers",
+            key,
+            default_unit=next(iter(UNITS[kind])),
+            allow_sense=sense_ok,
+            refuse_absurd=False,
+        )  # warned of when checked
+        return Answer(key, prefix, names, q.value, q.sense, raw_text, line)
+
+    def _engine_answer(self, key, value, raw_text, line, slider_names):
+        """An engine chapter's answer (efforts, the cycle, the flywheel; ``piston_effort_B``
+        one cylinder's of several), or None for a key of another kind."""
+        if key in ENGINE_ANSWERS:  # the engine chapter's: efforts, the cycle, the flywheel
+            value = self._engine_value(value, ENGINE_ANSWERS[key], key)
+            return Answer(key, key, (), value, None, raw_text, line)
+        base, _, piston = key.rpartition("_")
+        if base in ENGINE_PER_PISTON and piston:  # piston_effort_B: one cylinder's of several
+            if piston not in slider_names:
+                raise self.error(
+                    f"{key}: {piston} is no slider of the scene (name a cylinder's piston)",
+                    "answers",
+                    key,
+                )
+            value = self._engine_value(value, ENGINE_ANSWERS[base], key)
+            return Answer(key, base, (piston,), value, None, raw_text, line)
+        return None
+
+    def _torque_answer(self, key, value, raw_text, line, loads, forces):
+        """``torque``: the crank's driving torque, where a power balance (or the force
+        analysis) gives it (not a driving block's: its effort is a force)."""
+        if not loads and not forces:
+            raise self.error(
+                "a torque answer needs [loads] to balance, or [masses]", "answers", key
+            )
+        if getattr(self, "two_inputs", False) and not forces:
+            raise self.error(
+                "with two inputs one power balance does not give the two "
+                "driving torques: no torque answer (the force analysis gives each: "
+                "give [masses], empty for the loads alone; torque2 the second's)",
+                "answers",
+                key,
+            )
+        if getattr(self, "driving_block", None) and not (
+            forces and getattr(self, "driving_wheel", None)
+        ):
+            raise self.error(
+                f"the block {self.driving_block} drives the mechanism: its "
+                "driving effort is a force along its guide, not a torque "
+                "(solve prints it; its answer key is force)",
+                "answers",
+                key,
+            )
+        q = self.qty(
+            value,
+            "torque",
+            "answers",
+            key,
+            default_unit="N m",
+            allow_sense=True,
+            refuse_absurd=False,
+        )
+        return Answer(key, "torque", (), q.value, q.sense, raw_text, line)
+
+    def _unknown_key(self, key, hint):
+        """The error for a key of no answer kind, with the keys there are."""
+        examples = [
+            "v_C",
+            "a_C",
+            "v_CB",
+            "omega_BC",
+            "alpha_BC",
+            "vs_D",
+            "as_D",
+            "ac_A",
+            "rub_B",
+            "torque",
+        ]
+        return self.error(
+            f"unknown answer key{hint() or _suggest(key, examples)}; keys are v_X, "
+            "a_X, v_XY, a_XY, omega_L, alpha_L, vs_X, as_X, ac_X, rub_X, "
+            "torque, force, torque2, force2 (the drivers' efforts), I_ij (a centre), "
+            "vI_L, aI_L (a wheel's contact point), "
+            "F_X, N_X, Fi_L, Ci_L, h_L, Fc_L (forces), Tmax_L, Pmax_L (a friction "
+            "drive's largest torque and power), piston_effort, crank_effort, "
+            "turning_moment, rod_thrust, side_thrust (each with _B: piston B's of several "
+            "cylinders), shaking_force, shaking_moment, "
+            "T_mean, dE_max, I_flywheel, m_flywheel (the force and engine chapters)",
+            "answers",
+            key,
+        )
+
+    def _motion_names(self, key, prefix, rest, names, what, known, slider_names, pin_names, hint):
+        """The names a motion's answer key gives (points, a link or a cylinder, a slider, a
+        rolling wheel, a pin of [pins]), each checked to be in the scene."""
         if what == "point":
             if len(names) > 2:
                 raise self.error(f"v_X or v_XY: one or two points{hint()}", "answers", key)
@@ -426,7 +473,17 @@ class _Answers:
                     "answers",
                     key,
                 )
-        elif what == "pin_force":
+        elif what == "pin":
+            if len(names) != 1 or names[0] not in pin_names:
+                raise self.error(
+                    f"rubbing at {rest} needs its size in [pins]{hint()}", "answers", key
+                )
+        return names
+
+    def _force_names(self, key, prefix, rest, names, what, known, slider_names):
+        """The names a force answer key gives (a pin, a rolling contact, a friction drive, a
+        body, a guide's block), each checked to be in the scene."""
+        if what == "pin_force":
             if len(names) != 1 or names[0] not in known:
                 raise self.error(
                     f"F_X names a pin: no point {rest} in the scene{_which_point(rest, known)}",
@@ -461,30 +518,9 @@ class _Answers:
                 )
             else:
                 names = (self.index[frozenset(names)].key,)
-            if prefix == "h":
-                q = self.qty(
-                    value, "length", "answers", key, default_unit=self.unit, refuse_absurd=False
-                )
-                if _bare(value):  # a bare length is in the scene's unit: say so
-                    raw_text = f"{raw_text} {self.unit}"
-                return Answer(key, prefix, names, q.value, None, raw_text, line)
         elif what == "guide":
             if len(names) != 1 or names[0] not in slider_names:
                 raise self.error(
                     f"N_X names a slider's block: no slider {rest} in [sliders]", "answers", key
                 )
-        elif what == "pin":
-            if len(names) != 1 or names[0] not in pin_names:
-                raise self.error(
-                    f"rubbing at {rest} needs its size in [pins]{hint()}", "answers", key
-                )
-        q = self.qty(
-            value,
-            kind,
-            "answers",
-            key,
-            default_unit=next(iter(UNITS[kind])),
-            allow_sense=sense_ok,
-            refuse_absurd=False,
-        )  # warned of when checked
-        return Answer(key, prefix, names, q.value, q.sense, raw_text, line)
+        return names

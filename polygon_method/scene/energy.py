@@ -86,7 +86,7 @@ def is_cycle(raw: dict) -> bool:
 def cycle_from_text(text: str, file: str | None = None) -> CycleScene | None:
     """The :class:`CycleScene` of a scene's TOML text (see the module's words); None where
     the text states no turning-moment diagram (a mechanism's scene)."""
-    from .reading import _Loader
+    from .loader import _Loader
 
     try:
         raw = toml_table(text)
@@ -100,7 +100,7 @@ def cycle_from_text(text: str, file: str | None = None) -> CycleScene | None:
 def cycle_from_table(raw: dict, file: str | None = None) -> CycleScene:
     """The :class:`CycleScene` of a TOML table already parsed (checked as a file's would
     be; the messages name no line): a variant's, made from its base scene's table."""
-    from .reading import _Loader
+    from .loader import _Loader
 
     return _CycleReader(_Loader(raw, "", file)).scene()
 
@@ -110,7 +110,7 @@ def cycle_variation(text: str, file: str | None = None) -> tuple:
     :class:`~polygon_method.scene.energy_variation.CycleVaried` keys, each value checked
     as the scene's own would be; ``()`` where it has none."""
     from .energy_variation import read_cycle_variation
-    from .reading import _Loader
+    from .loader import _Loader
 
     try:
         raw = toml_table(text)
@@ -124,7 +124,7 @@ def answer_file_from_text(text: str, file: str | None = None) -> tuple:
     diagram's scene: its ``[answers]`` (read as the scene's are), the variant it names
     (``variant = "07"``, or None) and the student's name (``student`` or ``name``, or
     None)."""
-    from .reading import _Loader
+    from .loader import _Loader
 
     try:
         raw = toml_table(text)
@@ -172,7 +172,7 @@ def load_cycle(path) -> CycleScene:
     :func:`polygon_method.forces.flywheel_cycle.solve_cycle` solves. Every failure one
     :class:`SceneError` naming file, key and line, as :func:`polygon_method.load_scene`."""
     from ..common.errors import PolygonMethodError
-    from .reading import scene_text
+    from .file_text import scene_text
 
     path, text = scene_text(path)
     try:
@@ -184,7 +184,7 @@ def load_cycle(path) -> CycleScene:
 def answers_from_text(text: str, file: str | None = None) -> tuple:
     """``(tolerance, answers)`` of a student's answer file for a diagram's scene (its
     ``[answers]`` table, read as the scene's is)."""
-    from .reading import _Loader
+    from .loader import _Loader
 
     try:
         raw = toml_table(text)

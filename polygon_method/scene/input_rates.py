@@ -9,7 +9,7 @@ import re
 from ..common.tolerances import SAME
 from ..common.units import UNITS
 from .rate_words import RATED as _RATED, slowing as _slowing
-from .tables import _unit_at
+from .table_help import _unit_at
 
 #: a speed followed by a direction: up, down, left, right (upwards, to the left, ...), or
 #: "at 30 deg"

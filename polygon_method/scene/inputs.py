@@ -17,7 +17,7 @@ from .crank_speed import crank_speed, link_angle, second_crank_angle
 from .given_motion import _given_key, _GivenMotion
 from .input_rates import _Rates
 from .records import GIVEN_KINDS, INPUT_KEYS, FixedPath, Input, PositionGiven, split_name
-from .tables import _suggest
+from .table_help import _suggest
 from .wheel_input import wheel_input
 
 

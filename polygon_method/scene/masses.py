@@ -12,7 +12,7 @@ from ..common.errors import SceneError
 from ..common.tolerances import ROUNDING
 from ..common.units import Quantity, did_you_mean
 from .records import Friction, Gravity, Mass, split_name
-from .tables import _unit_at
+from .table_help import _unit_at
 
 #: the g of a book (m/s^2), when [gravity] does not give its own
 STANDARD_G = 9.81

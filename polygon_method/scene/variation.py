@@ -180,7 +180,7 @@ class _Variants:
         return out
 
     def _choices(self, key) -> str:
-        from .tables import _suggest
+        from .table_help import _suggest
 
         names = (
             [lk.key for lk in self.index.values()]
@@ -224,65 +224,11 @@ class _Variants:
         )
 
     def _point(self, name, sub, value, ground, sliders, inp, raw):
+        """The keys varied of point ``name``'s ``sub`` (x, y; along, distances; a pin's
+        diameter or radius; a load's force)."""
         key = f"{name}.{sub}"
-        at = [s for s in sliders if s.point == name]  # a peg in two slots: its fixed one
-        slider = next((s for s in at if hasattr(s, "u")), at[0] if at else None)
         if sub in ("x", "y"):
-            i = 0 if sub == "x" else 1
-            if name in ground:
-                return [
-                    self._values(
-                        key,
-                        value,
-                        "length",
-                        self.unit,
-                        ("ground", name, i),
-                        f"{sub} of ground point {name}",
-                        positive=False,
-                        table_key=name,
-                    )
-                ]
-            if slider is not None and hasattr(slider, "u"):
-                if abs(slider.u[1 - i]) < ROUNDING:  # along the path itself: nothing moves
-                    raise self.error(
-                        f"the path of {name} runs along {sub}: moving it along "
-                        f"{sub} changes nothing (vary its "
-                        f"{'y' if sub == 'x' else 'x'})",
-                        "variants",
-                        name,
-                    )
-                through = raw["sliders"][name].get("through")
-                if isinstance(through, str):
-                    raise self.error(
-                        f"the path of {name} passes through ground point "
-                        f"{through}: vary {through} = {{ {sub} = ... }}",
-                        "variants",
-                        name,
-                    )
-                setup = ()
-                if through is None:  # through the crank's pivot (a block driver: the first
-                    # ground point), as written in [ground]
-                    origin = inp.pivot if inp.pivot is not None else next(iter(raw["ground"]))
-                    setup = ((("sliders", name, "through"), list(raw["ground"][origin])),)
-                return [
-                    self._values(
-                        key,
-                        value,
-                        "length",
-                        self.unit,
-                        ("sliders", name, "through", i),
-                        f"{sub} of the path of slider {name}",
-                        setup=setup,
-                        positive=False,
-                        table_key=name,
-                    )
-                ]
-            raise self.error(
-                f"{name} is not a ground point or a slider on a fixed path: "
-                f"its {sub} is not stated",
-                "variants",
-                name,
-            )
+            return self._coordinate(key, name, sub, value, ground, sliders, inp, raw)
         spec = raw.get("points", {}).get(name)
         if sub == "along":
             if not isinstance(spec, dict) or "along" not in spec:
@@ -300,36 +246,7 @@ class _Variants:
                 )
             ]
         if sub == "distances":
-            if not isinstance(spec, dict) or not isinstance(spec.get("distances"), dict):
-                raise self.error(f"{name} is not a point carried with distances", "variants", name)
-            if not isinstance(value, dict) or not value:
-                raise self.error(
-                    f"{name}.distances names the distances that vary, e.g. "
-                    "distances = { B = [40, 45] }",
-                    "variants",
-                    name,
-                )
-            out = []
-            for r, v in value.items():
-                if r not in spec["distances"]:
-                    raise self.error(
-                        f"{name} is not given a distance from {r} (its distances "
-                        f"are from {', '.join(spec['distances'])})",
-                        "variants",
-                        name,
-                    )
-                out.append(
-                    self._values(
-                        f"{key}.{r}",
-                        v,
-                        "length",
-                        self.unit,
-                        ("points", name, "distances", r),
-                        f"{r}{name}",
-                        table_key=name,
-                    )
-                )
-            return out
+            return self._distances(key, name, value, spec)
         if sub in ("diameter", "radius"):
             if name not in raw.get("pins", {}):
                 raise self.error(f"no pin {name} in [pins] to vary", "variants", name)
@@ -346,30 +263,8 @@ class _Variants:
                 )
             ]
         if sub == "force":
-            spec = raw.get("loads", {}).get(name)
-            if (
-                not isinstance(spec, dict)
-                or isinstance(spec.get("force"), list)
-                or "force" not in spec
-            ):
-                raise self.error(
-                    f"no force of a given size at {name} in [loads] to vary "
-                    "(a force [Fx, Fy] cannot vary by its size)",
-                    "variants",
-                    name,
-                )
-            return [
-                self._values(
-                    key,
-                    value,
-                    "force",
-                    "N",
-                    ("loads", name, "force"),
-                    f"force at {name}",
-                    table_key=name,
-                )
-            ]
-        from .tables import _suggest
+            return self._force_size(key, name, value, raw)
+        from .table_help import _suggest
 
         subs = ("x", "y", "along", "distances", "diameter", "radius", "force")
         raise self.error(
@@ -377,6 +272,121 @@ class _Variants:
             "variants",
             name,
         )
+
+    def _coordinate(self, key, name, sub, value, ground, sliders, inp, raw):
+        """``x`` or ``y`` of a ground point, or of the path of a slider on a fixed path (its
+        through point; across the path only: along it nothing moves)."""
+        at = [s for s in sliders if s.point == name]  # a peg in two slots: its fixed one
+        slider = next((s for s in at if hasattr(s, "u")), at[0] if at else None)
+        i = 0 if sub == "x" else 1
+        if name in ground:
+            return [
+                self._values(
+                    key,
+                    value,
+                    "length",
+                    self.unit,
+                    ("ground", name, i),
+                    f"{sub} of ground point {name}",
+                    positive=False,
+                    table_key=name,
+                )
+            ]
+        if slider is not None and hasattr(slider, "u"):
+            if abs(slider.u[1 - i]) < ROUNDING:  # along the path itself: nothing moves
+                raise self.error(
+                    f"the path of {name} runs along {sub}: moving it along "
+                    f"{sub} changes nothing (vary its "
+                    f"{'y' if sub == 'x' else 'x'})",
+                    "variants",
+                    name,
+                )
+            through = raw["sliders"][name].get("through")
+            if isinstance(through, str):
+                raise self.error(
+                    f"the path of {name} passes through ground point "
+                    f"{through}: vary {through} = {{ {sub} = ... }}",
+                    "variants",
+                    name,
+                )
+            setup = ()
+            if through is None:  # through the crank's pivot (a block driver: the first
+                # ground point), as written in [ground]
+                origin = inp.pivot if inp.pivot is not None else next(iter(raw["ground"]))
+                setup = ((("sliders", name, "through"), list(raw["ground"][origin])),)
+            return [
+                self._values(
+                    key,
+                    value,
+                    "length",
+                    self.unit,
+                    ("sliders", name, "through", i),
+                    f"{sub} of the path of slider {name}",
+                    setup=setup,
+                    positive=False,
+                    table_key=name,
+                )
+            ]
+        raise self.error(
+            f"{name} is not a ground point or a slider on a fixed path: its {sub} is not stated",
+            "variants",
+            name,
+        )
+
+    def _distances(self, key, name, value, spec):
+        """The distances of a point carried with ``distances`` that vary, each its own key."""
+        if not isinstance(spec, dict) or not isinstance(spec.get("distances"), dict):
+            raise self.error(f"{name} is not a point carried with distances", "variants", name)
+        if not isinstance(value, dict) or not value:
+            raise self.error(
+                f"{name}.distances names the distances that vary, e.g. "
+                "distances = { B = [40, 45] }",
+                "variants",
+                name,
+            )
+        out = []
+        for r, v in value.items():
+            if r not in spec["distances"]:
+                raise self.error(
+                    f"{name} is not given a distance from {r} (its distances "
+                    f"are from {', '.join(spec['distances'])})",
+                    "variants",
+                    name,
+                )
+            out.append(
+                self._values(
+                    f"{key}.{r}",
+                    v,
+                    "length",
+                    self.unit,
+                    ("points", name, "distances", r),
+                    f"{r}{name}",
+                    table_key=name,
+                )
+            )
+        return out
+
+    def _force_size(self, key, name, value, raw):
+        """The size of a force of [loads] given by its size (not as [Fx, Fy])."""
+        spec = raw.get("loads", {}).get(name)
+        if not isinstance(spec, dict) or isinstance(spec.get("force"), list) or "force" not in spec:
+            raise self.error(
+                f"no force of a given size at {name} in [loads] to vary "
+                "(a force [Fx, Fy] cannot vary by its size)",
+                "variants",
+                name,
+            )
+        return [
+            self._values(
+                key,
+                value,
+                "force",
+                "N",
+                ("loads", name, "force"),
+                f"force at {name}",
+                table_key=name,
+            )
+        ]
 
     # ----- the values of one key
     def _values(
@@ -463,7 +473,7 @@ class _Variants:
     def _range(self, key, spec, unit, where):
         for k in spec:
             if k not in _RANGE_KEYS:
-                from .tables import _suggest
+                from .table_help import _suggest
 
                 raise self.error(
                     f"{key}: unknown key '{k}'{_suggest(k, _RANGE_KEYS)}; a range "

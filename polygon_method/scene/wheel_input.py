@@ -37,6 +37,37 @@ def centre_path(pr, centre):
 
 def wheel_input(rd, spec, ground):
     """The :class:`Input` of a scene driven by a rolling wheel (``rd`` the scene reader)."""
+    pr = _rolling_wheel(rd, spec, ground)
+    C, W = pr.centre, pr.wheel
+    w_key, v_key, as_key = f"omega_{W}", f"vs_{C}", f"as_{C}"
+    _wheel_keys(rd, spec, C, W)
+    path = centre_path(pr, C)
+    (qx, qy), (ux, uy), (mx, my), r = path.through, path.u, pr.m, pr.radius
+    along = -my * ux + mx * uy  # t . u, t = perp(m): +1 or -1
+    omega, alpha = _wheel_motion(rd, spec, C, W, (ux, uy), r, along)
+    s = _centre_place(rd, spec, C, (qx, qy), (ux, uy), r)
+    stroke = _travel(rd, spec, s, omega * r * along, r)
+    rd.driving_block = C  # (a torque answer is refused: the driver is given no crank)
+    rd.driving_wheel = W  # (but with masses or gravity: the driver's torque on the wheel)
+    rd.slider_points[C] = path
+    return Input(
+        None,
+        None,
+        C,
+        s,
+        omega * r * along,
+        alpha * r * along,
+        str(spec.get(w_key, spec.get(v_key))).strip(),
+        block=C,
+        stroke=stroke,
+        wheel=W,
+        wheel_given=tuple(k for k in (v_key, as_key) if k in spec),
+    )
+
+
+def _rolling_wheel(rd, spec, ground):
+    """The rolling pair ``wheel`` names: a wheel of [rolling] on a ground line, its centre
+    neither a ground point nor a block of [sliders]."""
     name = spec["wheel"]
     pts = split_name(name) if isinstance(name, str) else ()
     rolling = getattr(rd, "rolling_pairs", ()) or ()
@@ -72,6 +103,12 @@ def wheel_input(rd, spec, ground):
             "input",
             "wheel",
         )
+    return pr
+
+
+def _wheel_keys(rd, spec, C, W):
+    """The keys of [input] a driving wheel W (centre C) takes: no other, its motion given
+    once (on the wheel or on its centre)."""
     w_key, a_key, s_key = f"omega_{W}", f"alpha_{W}", f"s_{C}"
     v_key, as_key = f"vs_{C}", f"as_{C}"
     allowed = ("wheel", w_key, a_key, s_key, C, "travel", v_key, as_key)
@@ -106,9 +143,13 @@ def wheel_input(rd, spec, ground):
             'right")',
             "input",
         )
-    path = centre_path(pr, C)
-    (qx, qy), (ux, uy), (mx, my), r = path.through, path.u, pr.m, pr.radius
-    along = -my * ux + mx * uy  # t . u, t = perp(m): +1 or -1
+
+
+def _wheel_motion(rd, spec, C, W, u, r, along):
+    """(omega, alpha) of the wheel: given, or from its centre's along the ground (``along``
+    = t . u); at rest, per 1 rad/s."""
+    w_key, a_key, v_key, as_key = f"omega_{W}", f"alpha_{W}", f"vs_{C}", f"as_{C}"
+    ux, uy = u
     if v_key in spec:  # the centre's velocity along the ground: omega = vs / (r t.u)
         vs, _ = rd.directed(spec[v_key], "velocity", v_key, (ux, uy), need=False)
         omega = vs / (r * along)
@@ -129,6 +170,12 @@ def wheel_input(rd, spec, ground):
     if omega == 0:  # at rest (the weights held, or starting with alpha): per 1 rad/s
         omega, alpha = rd.at_rest_driver(omega, alpha, v_key if v_key in spec else w_key), 0.0
         rd.start_alpha = getattr(rd, "start_alpha", 0.0) * r * along  # (the centre's, m/s^2)
+    return omega, alpha
+
+
+def _centre_place(rd, spec, C, through, u, r):
+    """The wheel's centre's place s along its path: ``s_C``, or ``C = [x, y]`` on it."""
+    s_key, (qx, qy), (ux, uy) = f"s_{C}", through, u
     if (s_key in spec) == (C in spec):
         raise rd.error(
             f"[input] gives the wheel's place {'twice' if C in spec else 'not at all'}:"
@@ -151,6 +198,12 @@ def wheel_input(rd, spec, ground):
                 "input",
                 C,
             )
+    return s
+
+
+def _travel(rd, spec, s, vs, r):
+    """``travel = [from, to]``: the stretch of places a sweep runs over (holding ``s``), or
+    one turn of the wheel from ``s``, the way its centre moves (``vs``)."""
     if "travel" in spec:
         raw = spec["travel"]
         if not isinstance(raw, list) or len(raw) != 2:
@@ -173,21 +226,5 @@ def wheel_input(rd, spec, ground):
         stroke = (a, b)
     else:  # one turn of the wheel, the way it rolls
         turn = 2.0 * math.pi * r
-        vs = omega * r * along
         stroke = (s, s + turn) if vs > 0 else (s - turn, s)
-    rd.driving_block = C  # (a torque answer is refused: the driver is given no crank)
-    rd.driving_wheel = W  # (but with masses or gravity: the driver's torque on the wheel)
-    rd.slider_points[C] = path
-    return Input(
-        None,
-        None,
-        C,
-        s,
-        omega * r * along,
-        alpha * r * along,
-        str(spec.get(w_key, spec.get(v_key))).strip(),
-        block=C,
-        stroke=stroke,
-        wheel=W,
-        wheel_given=tuple(k for k in (v_key, as_key) if k in spec),
-    )
+    return stroke
