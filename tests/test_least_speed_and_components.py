@@ -281,7 +281,10 @@ def test_the_foot_beyond_the_link_is_said():
 
 def test_the_cli_solve_and_json_read_the_keys_from_the_scene():
     run = lambda *a: subprocess.run(  # noqa: E731
-        [sys.executable, "-m", "polygon_method", *a, str(BOOK)], capture_output=True, text=True
+        [sys.executable, "-m", "polygon_method", *a, str(BOOK)],
+        capture_output=True,
+        text=True,
+        cwd=HERE.parent,
     )
     out = run("solve")
     assert out.returncode == 0 and "vmin_AB = 9.275 m/s" in out.stdout
@@ -336,3 +339,18 @@ def test_a_key_of_two_points_of_no_one_link_is_refused_in_one_line():
         parse_scene(_slider_crank(60, 'ar_AA = "1 m/s^2"'))
     with pytest.raises(SceneError, match="did you mean 'vmin_AB'"):
         parse_scene(_slider_crank(60, 'vmin_Ab = "1 m/s"'))
+
+
+def test_a_students_answer_file_and_either_order_of_the_names():
+    """An answer file reads the keys as the scene does; vmin_BA is vmin_AB, ar_AB is ar_BA
+    (one size): each graded once, in the first name's row."""
+    from polygon_method.scene import parse_answers
+
+    sol = solve(load_scene(BOOK, answers=False))
+    _, answers = parse_answers(
+        '[answers]\nvmin_BA = "9.28 m/s"\nvmin_AB = "9.27 m/s"\nar_AB = "15.4 m/s^2"\n',
+        sol.scene,
+    )
+    verdicts = check_answers(sol, answers)
+    assert [v.key for v in verdicts] == ["vmin_BA", "ar_AB"]
+    assert verdicts[0].also and verdicts[0].column == "vmin_AB" and all(v.ok for v in verdicts)
