@@ -311,7 +311,8 @@ def test_check_flags_a_wrong_least_speed_and_names_the_midpoint():
 def test_check_names_the_least_of_the_line_produced():
     sol = solve(parse_scene(_slider_crank(100)))  # op 8.54 m/s, v_B 8.94 m/s
     op = least_speed(sol, "A", "B").foot_speed
-    v, _ = _verdict(_slider_crank(100, f'vmin_AB = "{op:.4g} m/s"'), "vmin_AB")
+    answers = f'tolerance = "1%"\nvmin_AB = "{op:.4g} m/s"'  # (4.5 % from the right one)
+    v, _ = _verdict(_slider_crank(100, answers), "vmin_AB")
     assert not v.ok and v.mistake == "produced_for_link", v
 
 
@@ -354,3 +355,17 @@ def test_a_students_answer_file_and_either_order_of_the_names():
     verdicts = check_answers(sol, answers)
     assert [v.key for v in verdicts] == ["vmin_BA", "ar_AB"]
     assert verdicts[0].also and verdicts[0].column == "vmin_AB" and all(v.ok for v in verdicts)
+
+
+def test_the_default_tolerance_is_a_careful_hand_drawings():
+    """Read off the drawn polygons as v_B is: op from the drawn a and b, v_BA^2 / BA with
+    the drawn v_BA, the tangential component between the drawn images; each says how it is
+    built, and none is tighter than the points' own read-offs would make it."""
+    text = BOOK.read_text().replace('tolerance = "1%"', "")
+    sol = solve(parse_scene(text))
+    got = {v.key: v for v in check_answers(sol)}
+    assert "built as: op, p the foot of the perpendicular" in got["vmin_AB"].rule
+    assert "built as: v_XY^2 / XY" in got["ar_BA"].rule
+    assert got["vmin_AB"].tolerance > 0.01 and got["at_BA"].tolerance > 0.01
+    # v^2 / r doubles the relative error of the drawn v_BA (omega_AB's is v_BA's)
+    assert got["ar_BA"].tolerance > 1.5 * got["omega_AB"].tolerance

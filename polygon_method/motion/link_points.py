@@ -35,6 +35,8 @@ __all__ = [
     "least_speed",
     "components",
     "pair_value",
+    "segment_least",
+    "link_rates",
     "asked_pairs",
     "asked_dict",
 ]
@@ -135,6 +137,32 @@ def common_link(scene, x: str, y: str):
     )
 
 
+def segment_least(vx, vy):
+    """The least speed of the points of a segment whose ends move at ``vx`` and ``vy``
+    (floats, or arrays of many drawn mechanisms): ``|v_X + t v_YX|`` at the foot t
+    clipped to [0, 1]; ``|v_X|`` where the ends move alike."""
+    import numpy as np
+
+    (bx, by), (cx, cy) = vx, vy
+    dx, dy = np.subtract(cx, bx), np.subtract(cy, by)
+    dd = dx * dx + dy * dy
+    with np.errstate(all="ignore"):
+        t = np.where(dd > 0, -(bx * dx + by * dy) / np.where(dd > 0, dd, 1.0), 0.0)
+    t = np.clip(t, 0.0, 1.0)
+    return np.hypot(bx + t * dx, by + t * dy)
+
+
+def link_rates(scene, W, Al, P, x: str, y: str) -> tuple:
+    """(omega^2 r, |alpha| r) of ``x`` about ``y`` on their link, from the motion's
+    omegas, alphas and places (floats, or arrays of many drawn mechanisms)."""
+    import numpy as np
+
+    key = common_link(scene, x, y).key
+    (px, py), (qx, qy) = P[x], P[y]
+    r = np.hypot(np.subtract(px, qx), np.subtract(py, qy))
+    return W[key] * W[key] * r, np.abs(Al[key]) * r
+
+
 def least_speed(sol, x: str, y: str) -> LeastSpeed:
     """The slowest point of segment ``x``-``y`` of one link (see the module docstring)."""
     lk = common_link(sol.scene, x, y)
@@ -145,15 +173,10 @@ def least_speed(sol, x: str, y: str) -> LeastSpeed:
         s = math.hypot(bx, by)
         return LeastSpeed(lk.key, x, y, None, 0.0, s, s, length, (px, py), "translating")
     dx, dy = cx - bx, cy - by
-    dd = dx * dx + dy * dy
-    t = -(bx * dx + by * dy) / dd
-    foot = abs(bx * cy - by * cx) / math.sqrt(dd)  # op = |v_X x v_Y| / |v_YX|
-    if t < 0:
-        at, speed, where = 0.0, math.hypot(bx, by), f"beyond {x}"
-    elif t > 1:
-        at, speed, where = 1.0, math.hypot(cx, cy), f"beyond {y}"
-    else:
-        at, speed, where = t, foot, "between"
+    t = -(bx * dx + by * dy) / (dx * dx + dy * dy)
+    foot = abs(bx * cy - by * cx) / math.hypot(dx, dy)  # op = |v_X x v_Y| / |v_YX|
+    where = f"beyond {x}" if t < 0 else f"beyond {y}" if t > 1 else "between"
+    at, speed = min(max(t, 0.0), 1.0), float(segment_least((bx, by), (cx, cy)))
     pos = (px + at * (qx - px), py + at * (qy - py))
     return LeastSpeed(lk.key, x, y, t, at, speed, foot, length, pos, where)
 
@@ -167,11 +190,12 @@ def _still(sol, x: str) -> tuple:
 def components(sol, x: str, y: str) -> Components:
     """The radial and tangential components of ``x``'s acceleration relative to ``y`` (the
     link's omega and alpha within their error bounds of 0 are 0, as every report shows them)."""
-    lk = common_link(sol.scene, x, y)
+    key = common_link(sol.scene, x, y).key
+    w = sol.shown(sol.W[key], "omega", key)  # rounding noise about 0 is 0
+    al = sol.shown(sol.Al[key], "alpha", key)
+    radial, tangential = link_rates(sol.scene, {key: w}, {key: al}, sol.P, x, y)
     r = math.dist(sol.P[x], sol.P[y])
-    w = sol.shown(sol.W[lk.key], "omega", lk.key)  # rounding noise about 0 is 0
-    al = sol.shown(sol.Al[lk.key], "alpha", lk.key)
-    return Components(lk.key, x, y, r, w, al, w * w * r, abs(al) * r)
+    return Components(key, x, y, r, w, al, float(radial), float(tangential))
 
 
 def pair_value(sol, kind: str, names) -> float:
