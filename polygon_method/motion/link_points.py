@@ -209,21 +209,21 @@ def pair_value(sol, kind: str, names) -> float:
 
 def asked_pairs(scene, answers=None) -> tuple:
     """(key, kind, (X, Y)) of every ``vmin``, ``ar``, ``at`` key the scene's ``[answers]``
-    asks (``answers``: another set's, an answer file's), each quantity once, in the
-    order asked. A scene read without its answers (``solve``, ``steps``) is asked from its
+    asks (``answers``: another set's, an answer file's, answers or (key, kind, names)), each
+    quantity once, in the order asked. A scene read without its answers (``solve``, ``steps``) is asked from its
     text: only the keys' names are read there (their values are ``check``'s)."""
     if answers is None:
         answers = scene.answers or _keys_of_text(scene)
     out, seen = [], set()
     for a in answers:
-        kind, names = (a.kind, tuple(a.names)) if hasattr(a, "kind") else a
+        key, kind, names = (a.key, a.kind, tuple(a.names)) if hasattr(a, "kind") else a
         if kind not in PAIR_KINDS or len(names) != 2:
             continue
         ident = (kind, frozenset(names))
         if ident in seen:
             continue
         seen.add(ident)
-        out.append((getattr(a, "key", None) or f"{kind}_{''.join(names)}", kind, names))
+        out.append((key, kind, names))
     return tuple(out)
 
 
@@ -238,7 +238,7 @@ def asked_dict(sol) -> dict:
 
 
 def _keys_of_text(scene) -> tuple:
-    """(kind, names) of the pair keys of the scene's ``[answers]`` read from its text (a
+    """(key, kind, names) of the pair keys of the scene's ``[answers]`` read from its text (a
     scene loaded without its answers), those naming two points of one link."""
     text = getattr(scene, "_text", None) or ""
     if not _ASKED.search(text):
@@ -256,5 +256,5 @@ def _keys_of_text(scene) -> tuple:
                 common_link(scene, *names)
             except SceneError:  # (check names it, with its line)
                 continue
-            out.append((kind, names))
+            out.append((key, kind, names))
     return tuple(out)

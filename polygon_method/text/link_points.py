@@ -17,6 +17,11 @@ def _len(sol, metres: float) -> str:
     return f"{fmt(metres / sol.scene.length_unit, 4)} {sol.scene.units}"
 
 
+def _two(x: str, y: str) -> str:
+    """Two points' names as one: "BC", "O4-B" where a name has digits (as the keys)."""
+    return x + y if len(x) == len(y) == 1 else f"{x}-{y}"
+
+
 def _foot(sol) -> str:
     """The slowest point's name, as the books call it (P), or a letter the scene leaves free."""
     return next((n for n in "PFMNQKZ" if n not in sol.scene.point_names), "P'")
@@ -25,33 +30,33 @@ def _foot(sol) -> str:
 def _least_words(sol, key, x, y, construction=False, scale=None) -> str:
     """The least speed on segment XY: where, and how much (with the construction)."""
     ls = least_speed(sol, x, y)
-    b, c = x.lower(), y.lower()
+    b, c = x.lower(), y.lower()  # their images
     P, p = _foot(sol), _foot(sol).lower()
     if ls.where == "translating":
         return (
-            f"{key} = {fmt(ls.speed, 4)} m/s: {x}{y} does not turn (omega_{ls.link} = 0), so "
+            f"{key} = {fmt(ls.speed, 4)} m/s: {_two(x, y)} does not turn (omega_{ls.link} = 0), so "
             f"every point of it moves alike, at {fmt(ls.speed, 4)} m/s ({b} and {c} are one "
             "point of the velocity diagram)"
         )
     cm = f" ({ls.foot_speed / scale.per_cm:.2f} cm at {scale.text})" if scale else ""
     foot = (
-        f"from o draw o{p} perpendicular to {b}{c}, meeting {b}{c}"
+        f"from o draw o{p} perpendicular to {_two(b, c)}, meeting {_two(b, c)}"
         + (" produced" if ls.where != "between" else "")
-        + f" at {p}: {x}{P} = {x}{y} x {b}{p} / {b}{c} = {_len(sol, ls.length)} x "
+        + f" at {p}: {_two(x, P)} = {_two(x, y)} x {_two(b, p)} / {_two(b, c)} = {_len(sol, ls.length)} x "
         f"{fmt(ls.fraction, 4)} = {_len(sol, ls.offset)}; v_{P} = o{p} = "
         f"{fmt(ls.foot_speed, 4)} m/s{cm}"
         if construction
-        else f"the foot {p} of the perpendicular from o to {b}{c}: {x}{P} = "
-        f"{_len(sol, ls.offset)} ({x}{P} / {x}{y} = {fmt(ls.fraction, 4)}), o{p} = "
+        else f"the foot {p} of the perpendicular from o to {_two(b, c)}: {_two(x, P)} = "
+        f"{_len(sol, ls.offset)} ({_two(x, P)} / {_two(x, y)} = {fmt(ls.fraction, 4)}), o{p} = "
         f"{fmt(ls.foot_speed, 4)} m/s"
     )
     if ls.where == "between":
-        return f"{key} = {fmt(ls.speed, 4)} m/s at {P} on {x}{y}: {foot}"
+        return f"{key} = {fmt(ls.speed, 4)} m/s at {P} on {_two(x, y)}: {foot}"
     end = x if ls.fraction < 0 else y
     return (
         f"{key} = {fmt(ls.speed, 4)} m/s at the end {end}: {foot}; {p} falls beyond "
-        f"{end.lower()}, outside {b}{c}, so the point of the link itself moving slowest is "
-        f"its end {end} (o{p} is the least of {x}{y} produced)"
+        f"{end.lower()}, outside {_two(b, c)}, so the point of the link itself moving slowest is "
+        f"its end {end} (o{p} is the least of {_two(x, y)} produced)"
     )
 
 
@@ -61,12 +66,12 @@ def _component_words(sol, key, kind, x, y) -> str:
     w, al, r = abs(c.omega), abs(c.alpha), fmt(c.r, 4)
     if kind == "ar":
         return (
-            f"{key} = omega_{c.link}^2 x {x}{y} = {fmt(w, 4)}^2 x {r} = "
-            f"{fmt(c.radial, 4)} m/s^2, along {x}{y} from {x} towards {y} (centripetal)"
+            f"{key} = omega_{c.link}^2 x {_two(x, y)} = {fmt(w, 4)}^2 x {r} = "
+            f"{fmt(c.radial, 4)} m/s^2, along {_two(x, y)} from {x} towards {y} (centripetal)"
         )
     return (
-        f"{key} = alpha_{c.link} x {x}{y} = {fmt(al, 4)} x {r} = {fmt(c.tangential, 4)} "
-        f"m/s^2, perpendicular to {x}{y} (tangential)"
+        f"{key} = alpha_{c.link} x {_two(x, y)} = {fmt(al, 4)} x {r} = {fmt(c.tangential, 4)} "
+        f"m/s^2, perpendicular to {_two(x, y)} (tangential)"
     )
 
 
