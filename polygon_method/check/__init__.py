@@ -46,6 +46,7 @@ import math
 from dataclasses import replace
 
 from ..common.errors import SceneError
+from ..motion.link_points import PAIR_KINDS
 from ..motion.solution import Solution, tidied
 from .centres import centre_verdict
 from .engine import ENGINE_KEYS, engine_verdict
@@ -68,6 +69,9 @@ _MAGNITUDES = {
     "au": "an acceleration's size",
     "Fi": "an inertia force's size",
     "h": "an offset",
+    "vmin": "a speed",
+    "ar": "a component's size",
+    "at": "a component's size",
 }
 
 
@@ -80,6 +84,8 @@ def _noise_of(sol: Solution, kind, names) -> tuple:
     if kind in ("vu", "au"):  # the guide's point under a block: from the guide's end and
         sl = sol.scene.slider(names[0])  # the block's point, the sum of their bounds
         return kind[0], (sol.scene.link(sl.guide).p, sl.point)
+    if kind in PAIR_KINDS:  # two points of one link: the sum of their bounds
+        return PAIR_KINDS[kind][0], tuple(names)
     if kind in ("vI", "aI"):  # the rolling step's points
         key = sol.scene.link("-".join(names)).key
         pts = [p for st in sol.plan.steps if key in st.links for p in (*st.needs, *st.finds)]
@@ -146,7 +152,7 @@ def check_answers(sol: Solution, answers=None, tolerance: float | None = None, _
 #: the answer kinds whose two names, in either order, are one quantity: a link's omega
 #: and alpha (omega_BC is omega_CB), a relative velocity's or acceleration's size (v_BC,
 #: v_CB), a wheel's contact point, a contact force
-_EITHER_ORDER = ("omega", "alpha", "v", "a", "vI", "aI", "Fc", "centre")
+_EITHER_ORDER = ("omega", "alpha", "v", "a", "vI", "aI", "Fc", "centre", "vmin", "ar", "at")
 
 
 def _quantity(ans):
@@ -224,6 +230,8 @@ def _verdict(sol: Solution, ans, tolerance, tols, diag, clean: list) -> Verdict:
     exact = _exact(sol, ans, clean)
     signed = ans.sense is not None or ans.value < 0
     if kind in ("v", "a", "ac", "rub", "F", "N", "Fc", "vu", "au", "Fi", "h", "Tmax", "Pmax"):
+        signed = False
+    if kind in PAIR_KINDS:
         signed = False
     given = ans.value if signed else abs(ans.value)
     correct = exact if signed else abs(exact)

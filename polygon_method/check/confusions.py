@@ -25,6 +25,9 @@ _FAMILY = {
     "aI": "acceleration",
     "omega": "omega",
     "alpha": "alpha",
+    "vmin": "velocity",
+    "ar": "acceleration",
+    "at": "acceleration",
 }
 _UNIT = {"velocity": "m/s", "acceleration": "m/s^2", "omega": "rad/s", "alpha": "rad/s^2"}
 

@@ -38,6 +38,7 @@ import math
 
 from ..common.tolerances import SAME
 from ..polygons.constructions import acceleration_constructions, velocity_constructions
+from ..motion.link_points import link_rates, segment_least
 from ..solver.derived import input_torque, largest, rubbing_at
 from ..solver.kinematics import evaluate
 from ..polygons.scales import diagram_scales
@@ -72,6 +73,9 @@ HOW = {
     "vs": "read off between the two images the sliding joins",
     "as": "read off between the two images the sliding joins",
     "ac": "2 omega vs with the drawn omega and vs",
+    "vmin": "op, p the foot of the perpendicular from o to the drawn xy",
+    "ar": "v_XY^2 / XY with the drawn v_XY",
+    "at": "read off across XY between the two images",
 }
 
 
@@ -211,6 +215,8 @@ class HandDrawing:
             s_vs = math.hypot(self.sliding.get(f"vs_{X}", sv.get(X, 0.0)), rv)
             poly = 2 * math.hypot(self.omega_sigma(guide) * vs, w * s_vs)
             return np.hypot(*m.coriolis(X)), poly
+        if kind in ("vmin", "ar", "at"):  # two points of one link
+            return self._pair(kind, *names)
         if kind == "rub":  # |w1 -/+ w2| r with the drawn omegas (the largest pair)
             pin = next(p for p in sol.plan.pins if p[0] == names[0])
             r = sol.plan.dims.radii[names[0]]
@@ -234,6 +240,22 @@ class HandDrawing:
                     var += (load.torque * self.omega_sigma(load.target)) ** 2
             return np.abs(vals), math.sqrt(var) / abs(w)
         return None, None
+
+    def _pair(self, kind, x, y):
+        """(values, sigma) of ``vmin_XY`` (op from the drawn x and y), ``ar_XY`` (the drawn
+        v_XY squared over XY), ``at_XY`` (read off between the images x' and y')."""
+        m, sol = self.m, self.sol
+        phase = "acceleration" if kind == "at" else "velocity"
+        scale = self.sa if kind == "at" else self.sv
+        s = self.sigma[phase]
+        poly = math.sqrt(s.get(x, 0.0) ** 2 + s.get(y, 0.0) ** 2 + (LENGTH_CM * scale.per_cm) ** 2)
+        if kind == "vmin":
+            return segment_least(m.V[x], m.V[y]), poly
+        radial, tangential = link_rates(sol.scene, m.W, m.Al, m.P, x, y)
+        if kind == "at":
+            return tangential, poly
+        r = math.dist(sol.P[x], sol.P[y])
+        return radial, (2 * sol.speed(x, y) * poly / r if r else 0.0)
 
     def omega_sigma(self, link) -> float:
         """The standard deviation of omega of ``link`` as read off the velocity polygon

@@ -14,6 +14,7 @@ from ..common.numbers import textbook as _g
 from . import confusions, force_slips, power, slips
 from .alternatives import _DECIMAL, _FACTOR_MISTAKES, _Alternatives, _Candidate, _speed_mistakes
 from .slips import _SLIP_RANK, _slip
+from .link_slips import link_slips
 from .slots import coriolis_left_out
 from .verdicts import FORCE_KINDS
 
@@ -35,7 +36,7 @@ _UNIT_FAMILY = {
     "alpha": "alpha",
 }
 #: the kind whose unit slips an answer shares (the guide's point under a block: a point's)
-_AS_KIND = {"vu": "v", "au": "a"}
+_AS_KIND = {"vu": "v", "au": "a", "vmin": "v", "ar": "a", "at": "a"}
 
 
 class _Diagnoser:
@@ -57,7 +58,7 @@ class _Diagnoser:
         u, f = self.sc.units, self.sc.length_unit
         if u in ("mm", "m"):
             return ()
-        family = _UNIT_FAMILY.get(kind)
+        family = _UNIT_FAMILY.get(_AS_KIND.get(kind, kind))
         if family in ("v", "a"):
             per = "/s" if family == "v" else "/s^2"
             return ((1 / f, "length_unit", f"{u}{per} given as m{per}"),)
@@ -182,6 +183,8 @@ class _Diagnoser:
             )
         if kind == "rub":
             out += self.rubbing(names[0])
+        if kind in ("vmin", "ar", "at"):  # two points of one link
+            out += link_slips(self.sol, ans)
         return out
 
     def _sliding_point(self, name: str) -> str | None:

@@ -172,6 +172,14 @@ class _Tolerances:
         if kind in ("vI", "aI"):  # read off at the contact's image, like the wheel's point
             f = max(self.f(n) for n in names)
             return (d * sv * f, vt) if kind == "vI" else (d * sa * f, at)
+        if kind in ("vmin", "ar", "at"):  # two points of one link
+            f = max(self.f(n) for n in names)
+            if kind == "at":  # the tangential component, read off the acceleration diagram
+                return d * sa * f, at
+            if kind == "vmin":  # op, read off the velocity diagram
+                return d * sv * f, vt
+            r = math.dist(sol.P[names[0]], sol.P[names[1]])  # v^2 / r with v as read
+            return 2 * d * sv * f * sol.speed(*names) / r if r else 0.0, vt
         if kind in ("vs", "as"):
             if names[0] == self.input_point and not self.crank.periodic:
                 return 0.0, "given (the driving block)"

@@ -36,6 +36,9 @@ _NOISE_KIND = {
     "au": "a",
     "omega": "omega",
     "alpha": "alpha",
+    "vmin": "v",
+    "ar": "a",
+    "at": "a",
 }
 
 

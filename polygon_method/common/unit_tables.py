@@ -233,6 +233,9 @@ ANSWER_UNITS = {
     "force": "N",
     "force2": "N",
     "torque2": "N m",
+    "vmin": "m/s",
+    "ar": "m/s^2",
+    "at": "m/s^2",
 }
 
 #: the lengths a scene may be written in (``units = ...``)

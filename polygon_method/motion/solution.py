@@ -33,6 +33,7 @@ from .structural import structural_warnings
 from ..scene import FixedPath, Scene
 from ..scene.force_records import rolling_body
 from .json_safe import finite_only, useful_bounds
+from .link_points import PAIR_KINDS, asked_dict, pair_value
 
 __all__ = ["solve", "Solution", "PinRubbing", "sense", "fmt_angular"]
 
@@ -390,7 +391,7 @@ class Solution(Motion):
                 d["at_rest"] = True
                 if sc.start_alpha:  # starting from rest: the inertia of the start
                     d["start_alpha"] = sc.start_alpha
-        d.update(self._rolling_dict())
+        d.update(self._rolling_dict(), **asked_dict(self))  # vmin_BC ...: where asked
         warnings = list(self.warnings)
         if refused:
             warnings.append(refused)
@@ -465,6 +466,8 @@ class Solution(Motion):
             return force_value(
                 self.forces, kind, rolling_body(self.scene, names) if kind == "Fc" else names[0]
             )
+        if kind in PAIR_KINDS:  # two points of one link (vmin_BC, ar_CB, at_CB)
+            return pair_value(self, kind, names)
         if kind in ("vu", "au"):  # the guide's point under a block (v_A1, a_A1)
             return hypot(
                 *self.under_block(names[0], "velocity" if kind == "vu" else "acceleration")

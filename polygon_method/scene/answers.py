@@ -85,6 +85,16 @@ def _bare(value) -> bool:
     return True
 
 
+#: the answer kinds of two points of one link, as ``ANSWER_KINDS``: the least speed of a
+#: point between them (``vmin_BC``), the radial and tangential components of one's
+#: acceleration relative to the other (``ar_CB``, ``at_CB``; ``motion/link_points.py``)
+PAIR_ANSWER_KINDS = {
+    "vmin": ("velocity", "pair", False),
+    "ar": ("acceleration", "pair", False),
+    "at": ("acceleration", "pair", False),
+}
+_KINDS = {**ANSWER_KINDS, **PAIR_ANSWER_KINDS}
+
 #: the drivers' efforts other than the crank's torque: a driving block's, collar's or
 #: cylinder's force along its guide (``force``), a second input's torque or force
 DRIVER_ANSWERS = {"force": "force", "torque2": "torque", "force2": "force"}
@@ -215,6 +225,7 @@ class _Answers:
                 f"a_{lk.p}{lk.q}",
                 f"a_{lk.q}{lk.p}",
             ]
+            keys += [f"{k}_{lk.p}{lk.q}" for k in ("vmin", "ar", "at")]
         keys += [f"{k}_{s}" for k in ("vs", "as", "ac") for s in slider_names]
         keys += [f"rub_{p}" for p in sorted(pin_names)]
         keys += [f"{k}_{n}" for k in ("v", "a") for n in self.under_names(known, slider_names)]
@@ -297,9 +308,9 @@ class _Answers:
         prefix, _, rest = key.partition("_")
         if prefix == "I" and rest:
             return self.centre_answer(key, rest, value, line)
-        if prefix not in ANSWER_KINDS or not rest:
+        if prefix not in _KINDS or not rest:
             raise self._unknown_key(key, hint)
-        kind, what, sense_ok = ANSWER_KINDS[prefix]
+        kind, what, sense_ok = _KINDS[prefix]
         if what in ("pin_force", "guide", "body", "contact", "drive") and not forces:
             raise self.error(
                 f"{key}: a force answer needs the force analysis: give [masses] or [gravity]",
@@ -412,7 +423,9 @@ class _Answers:
             f"unknown answer key{hint() or _suggest(key, examples)}; keys are v_X, "
             "a_X, v_XY, a_XY, omega_L, alpha_L, vs_X, as_X, ac_X, rub_X, "
             "torque, force, torque2, force2 (the drivers' efforts), I_ij (a centre), "
-            "vI_L, aI_L (a wheel's contact point), "
+            "vI_L, aI_L (a wheel's contact point), vmin_XY (the least speed between "
+            "two points of a link), ar_XY, at_XY (X's radial and tangential "
+            "acceleration relative to Y), "
             "F_X, N_X, Fi_L, Ci_L, h_L, Fc_L (forces), Tmax_L, Pmax_L (a friction "
             "drive's largest torque and power), piston_effort, crank_effort, "
             "turning_moment, rod_thrust, side_thrust (each with _B: piston B's of several "
@@ -435,6 +448,13 @@ class _Answers:
                         "answers",
                         key,
                     )
+        elif what == "pair":  # two points of one link: vmin_BC, ar_CB, at_CB
+            if len(names) != 2 or names[0] == names[1] or not set(names) <= set(known):
+                raise self.error(
+                    f"{prefix}_XY names two points of one link (e.g. {prefix}_CB){hint()}",
+                    "answers",
+                    key,
+                )
         elif what == "link" and len(names) == 2 and self.find_cylinder(names):
             names = tuple(split_name(self.find_cylinder(names).key))
         elif (

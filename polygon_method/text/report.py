@@ -6,6 +6,7 @@ import math
 
 from ..solver.errorbound import NO_BOUND, SHOWN, USELESS, shown_bounds
 from .forces import forces_lines
+from .link_points import pair_lines
 from ..solver.given import stated
 from ..common.numbers import fmt, fmt_angular, sense
 from ..motion.solution import Solution, tidied
@@ -323,6 +324,7 @@ def solution_text(sol: Solution) -> str:
         _torque_lines,
     ):
         lines += part(sol)
+    lines += pair_lines(sol)  # vmin_BC, ar_CB, at_CB: where the answers ask them
     lines += forces_lines(sol)
     lines += _plan_lines(sol)
     lines += _bound_lines(sol)

@@ -41,6 +41,7 @@ from ..solver.given import working
 from ..steps.block import at_rest_rate
 from ..common.numbers import fmt, sense_word
 from .forces import force_blocks
+from .link_points import pair_items
 from .polygon_steps import (
     acceleration_section,
     extent_cm,
@@ -435,6 +436,10 @@ def steps_blocks(sol: Solution) -> _Doc:
     velocity_section(doc, sol, vscale)
     readoff_section(doc, sol, vscale)
     acceleration_section(doc, sol, ascale)
+    asked = pair_items(sol, vscale)  # vmin_BC, ar_CB, at_CB: where the answers ask them
+    if asked:
+        doc.h("Asked of two points of a link")
+        doc.items(asked)
     fscale = force_scale(sol.forces) if sc.has_forces and not sol.forces_refused else None
     doc.blocks += force_blocks(sol, fscale)
     doc.blocks += klein_blocks(sol)  # a slider crank at uniform crank speed

@@ -113,6 +113,12 @@ _QUESTION_WORDS = {
     "force2": "the second input's force along its guide",
     "torque2": "the second input's torque",
 }
+#: two points of one link (X, Y): the least speed between them, X's components about Y
+_PAIR_WORDS = {
+    "vmin": "the least velocity of a point of {0}{1} (and where it is)",
+    "ar": "the radial component of the acceleration of {0} relative to {1}",
+    "at": "the tangential component of the acceleration of {0} relative to {1}",
+}
 
 
 def _question(q) -> str:
@@ -123,6 +129,8 @@ def _question(q) -> str:
             if kind == "v"
             else "the acceleration of {0} relative to {1}"
         ).format(*names)
+    elif kind in _PAIR_WORDS:
+        what = _PAIR_WORDS[kind].format(*names)
     elif kind in ENGINE_KEYS:
         what = ENGINE_KEYS[kind][2] + (f" of the cylinder {names[0]}" if names else "")
     else:

@@ -1,0 +1,260 @@
+"""Two points of one link, as the books ask of them: the point of the segment between them
+with the least absolute velocity (``vmin_BC``), and the radial and tangential components
+of one's acceleration relative to the other (``ar_CB``, ``at_CB``). Written once here; the
+answer keys, ``check``, ``solve``, ``--json`` and ``steps`` read these records.
+
+The least speed, by hand (Rattan, Sadhu Singh, Khurmi): on the velocity polygon draw op
+perpendicular to bc from the pole; p is the image of the point of BC (produced if need be)
+moving slowest, ``BP = BC x bp / bc`` and ``v_P = op``. As a formula, the points of the line
+move as ``v(t) = v_B + t (v_C - v_B)``; the foot is ``t = -v_B . v_CB / |v_CB|^2`` and
+``op = |v_B x v_C| / |v_CB|``. Where the foot falls outside bc the least on the link itself
+is at the nearer end; where the link does not turn (omega within its error bound of 0)
+every point of it moves alike, and the least is that common speed, at no point in
+particular. A link with more than two points (a plate) is named by two of its points: the
+least on the segment between them (the least of the whole plane of the plate is its
+instantaneous centre's, 0).
+
+The components, as the acceleration polygon sets them out: ``omega^2 CB`` directed from C
+to B (radial, centripetal) and ``alpha CB`` perpendicular to CB (tangential), omega and
+alpha the link's.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+
+from ..common.errors import SceneError
+
+__all__ = [
+    "PAIR_KINDS",
+    "LeastSpeed",
+    "Components",
+    "common_link",
+    "least_speed",
+    "components",
+    "pair_value",
+    "segment_least",
+    "link_rates",
+    "asked_pairs",
+    "asked_dict",
+]
+
+#: the answer kinds of two points of one link -> (the kind of their error bound, words)
+PAIR_KINDS = {
+    "vmin": ("v", "the least speed of a point of {0}{1}"),
+    "ar": ("a", "the radial component of the acceleration of {0} relative to {1}"),
+    "at": ("a", "the tangential component of the acceleration of {0} relative to {1}"),
+}
+
+
+#: a line of a scene's text that may ask one (its key first on the line)
+_ASKED = re.compile(r"^[ \t]*[\"']?(?:vmin|ar|at)_", re.M)
+
+
+@dataclass(frozen=True)
+class LeastSpeed:
+    """The point of segment XY of one link moving slowest.
+
+    ``fraction`` is bp/bc of the foot p of the perpendicular from o to bc (None where the
+    link does not turn: no foot), ``at`` the fraction along XY of the slowest point of the
+    segment (the foot, or the nearer end where the foot falls outside; 0 where the link
+    does not turn), ``speed`` its speed (m/s), ``foot_speed`` op (the least of the line
+    XY produced), ``length`` XY (m), ``position`` the slowest point's (m), ``where``
+    "between", "beyond X" (the foot beyond x: the least at X), or "translating"."""
+
+    link: str
+    x: str
+    y: str
+    fraction: float | None
+    at: float
+    speed: float
+    foot_speed: float
+    length: float
+    position: tuple
+    where: str
+
+    @property
+    def offset(self) -> float | None:
+        """XP (m): the foot's distance from X along XY (negative behind X), None without one."""
+        return None if self.fraction is None else self.fraction * self.length
+
+    def as_dict(self) -> dict:
+        """The JSON entry (SI)."""
+        return {
+            "link": self.link,
+            "from": self.x,
+            "to": self.y,
+            "speed": self.speed,
+            "fraction": self.at,
+            "distance": self.at * self.length,
+            "position": list(self.position),
+            "foot_fraction": self.fraction,
+            "foot_speed": self.foot_speed,
+            "where": self.where,
+        }
+
+
+@dataclass(frozen=True)
+class Components:
+    """X relative to Y on one link: ``radial`` = omega^2 r (directed X to Y), ``tangential``
+    = |alpha| r, at ``r`` = XY (m), omega and alpha the link's."""
+
+    link: str
+    x: str
+    y: str
+    r: float
+    omega: float
+    alpha: float
+    radial: float
+    tangential: float
+
+    def as_dict(self) -> dict:
+        """The JSON entry (SI)."""
+        return {
+            "link": self.link,
+            "of": self.x,
+            "relative_to": self.y,
+            "r": self.r,
+            "omega": self.omega,
+            "alpha": self.alpha,
+            "radial": self.radial,
+            "tangential": self.tangential,
+        }
+
+
+def common_link(scene, x: str, y: str):
+    """The link both ``x`` and ``y`` are points of (its ends or its carried points), else a
+    :class:`SceneError` naming them."""
+    for lk in scene.links:
+        on = {lk.p, lk.q} | {c.name for c in scene.points if c.link == lk.key}
+        if x in on and y in on:
+            return lk
+    raise SceneError(
+        f"{x} and {y} are not two points of one link (the ends of a link of [links], or "
+        "points of [points] carried on it)"
+    )
+
+
+def segment_least(vx, vy):
+    """The least speed of the points of a segment whose ends move at ``vx`` and ``vy``
+    (floats, or arrays of many drawn mechanisms): ``|v_X + t v_YX|`` at the foot t
+    clipped to [0, 1]; ``|v_X|`` where the ends move alike."""
+    import numpy as np
+
+    (bx, by), (cx, cy) = vx, vy
+    dx, dy = np.subtract(cx, bx), np.subtract(cy, by)
+    dd = dx * dx + dy * dy
+    with np.errstate(all="ignore"):
+        t = np.where(dd > 0, -(bx * dx + by * dy) / np.where(dd > 0, dd, 1.0), 0.0)
+    t = np.clip(t, 0.0, 1.0)
+    return np.hypot(bx + t * dx, by + t * dy)
+
+
+def link_rates(scene, W, Al, P, x: str, y: str) -> tuple:
+    """(omega^2 r, |alpha| r) of ``x`` about ``y`` on their link, from the motion's
+    omegas, alphas and places (floats, or arrays of many drawn mechanisms)."""
+    import numpy as np
+
+    key = common_link(scene, x, y).key
+    (px, py), (qx, qy) = P[x], P[y]
+    r = np.hypot(np.subtract(px, qx), np.subtract(py, qy))
+    return W[key] * W[key] * r, np.abs(Al[key]) * r
+
+
+def least_speed(sol, x: str, y: str) -> LeastSpeed:
+    """The slowest point of segment ``x``-``y`` of one link (see the module docstring)."""
+    lk = common_link(sol.scene, x, y)
+    (bx, by), (cx, cy) = _still(sol, x), _still(sol, y)
+    (px, py), (qx, qy) = sol.P[x], sol.P[y]
+    length = math.hypot(qx - px, qy - py)
+    if sol.shown(sol.W[lk.key], "omega", lk.key) == 0 or length == 0:  # every point alike
+        s = math.hypot(bx, by)
+        return LeastSpeed(lk.key, x, y, None, 0.0, s, s, length, (px, py), "translating")
+    dx, dy = cx - bx, cy - by
+    t = -(bx * dx + by * dy) / (dx * dx + dy * dy)
+    foot = abs(bx * cy - by * cx) / math.hypot(dx, dy)  # op = |v_X x v_Y| / |v_YX|
+    where = f"beyond {x}" if t < 0 else f"beyond {y}" if t > 1 else "between"
+    at, speed = min(max(t, 0.0), 1.0), float(segment_least((bx, by), (cx, cy)))
+    pos = (px + at * (qx - px), py + at * (qy - py))
+    return LeastSpeed(lk.key, x, y, t, at, speed, foot, length, pos, where)
+
+
+def _still(sol, x: str) -> tuple:
+    """``x``'s velocity, 0 where it is within its error bound (a dead centre's piston)."""
+    v = sol.V[x]
+    return (0.0, 0.0) if math.hypot(*v) <= sol.noise("v", x) else v
+
+
+def components(sol, x: str, y: str) -> Components:
+    """The radial and tangential components of ``x``'s acceleration relative to ``y`` (the
+    link's omega and alpha within their error bounds of 0 are 0, as every report shows them)."""
+    key = common_link(sol.scene, x, y).key
+    w = sol.shown(sol.W[key], "omega", key)  # rounding noise about 0 is 0
+    al = sol.shown(sol.Al[key], "alpha", key)
+    radial, tangential = link_rates(sol.scene, {key: w}, {key: al}, sol.P, x, y)
+    r = math.dist(sol.P[x], sol.P[y])
+    return Components(key, x, y, r, w, al, float(radial), float(tangential))
+
+
+def pair_value(sol, kind: str, names) -> float:
+    """The value behind ``vmin_XY``, ``ar_XY``, ``at_XY``."""
+    x, y = names
+    if kind == "vmin":
+        return least_speed(sol, x, y).speed
+    c = components(sol, x, y)
+    return c.radial if kind == "ar" else c.tangential
+
+
+def asked_pairs(scene, answers=None) -> tuple:
+    """(key, kind, (X, Y)) of every ``vmin``, ``ar``, ``at`` key the scene's ``[answers]``
+    asks (``answers``: another set's, an answer file's, answers or (key, kind, names)), each
+    quantity once, in the order asked. A scene read without its answers (``solve``, ``steps``) is asked from its
+    text: only the keys' names are read there (their values are ``check``'s)."""
+    if answers is None:
+        answers = scene.answers or _keys_of_text(scene)
+    out, seen = [], set()
+    for a in answers:
+        key, kind, names = (a.key, a.kind, tuple(a.names)) if hasattr(a, "kind") else a
+        if kind not in PAIR_KINDS or len(names) != 2:
+            continue
+        ident = (kind, frozenset(names))
+        if ident in seen:
+            continue
+        seen.add(ident)
+        out.append((key, kind, names))
+    return tuple(out)
+
+
+def asked_dict(sol) -> dict:
+    """``solve --json``'s ``link_points``: each asked key's value and its record (SI);
+    empty where none is asked."""
+    out = {}
+    for key, kind, (x, y) in asked_pairs(sol.scene):
+        rec = least_speed(sol, x, y) if kind == "vmin" else components(sol, x, y)
+        out[key] = {"value": pair_value(sol, kind, (x, y)), **rec.as_dict()}
+    return {"link_points": out} if out else {}
+
+
+def _keys_of_text(scene) -> tuple:
+    """(key, kind, names) of the pair keys of the scene's ``[answers]`` read from its text (a
+    scene loaded without its answers), those naming two points of one link."""
+    text = getattr(scene, "_text", None) or ""
+    if not _ASKED.search(text):
+        return ()
+    from ..scene import split_name
+    from ..scene.reading import scene_table
+
+    table = scene_table(scene).get("answers")
+    out = []
+    for key in table if isinstance(table, dict) else ():
+        kind, _, rest = key.partition("_")
+        names = split_name(rest)
+        if kind in PAIR_KINDS and len(names) == 2 and names[0] != names[1]:
+            try:
+                common_link(scene, *names)
+            except SceneError:  # (check names it, with its line)
+                continue
+            out.append((key, kind, names))
+    return tuple(out)
