@@ -369,3 +369,27 @@ def test_the_default_tolerance_is_a_careful_hand_drawings():
     assert got["vmin_AB"].tolerance > 0.01 and got["at_BA"].tolerance > 0.01
     # v^2 / r doubles the relative error of the drawn v_BA (omega_AB's is v_BA's)
     assert got["ar_BA"].tolerance > 1.5 * got["omega_AB"].tolerance
+
+
+def test_the_velocity_polygon_draws_op_where_asked(tmp_path):
+    """draw: op from the pole square to ab, its foot p named; ab produced to p where p falls
+    beyond b (at 120 deg); nothing where vmin is not asked."""
+
+    def drawn(text):
+        scene = tmp_path / "s.toml"
+        scene.write_text(text)
+        out = tmp_path / "v.svg"
+        subprocess.run(
+            [sys.executable, "-m", "polygon_method", "draw", str(scene), "--diagram", "velocity"]
+            + ["-o", str(out)],
+            check=True,
+            capture_output=True,
+            cwd=HERE.parent,
+        )
+        return out.read_text()
+
+    between = drawn(_slider_crank(60, 'vmin_AB = "9 m/s"'))
+    assert 'id="velocity-least-A-B-0"' in between and "velocity-least-A-B-1" not in between
+    beyond = drawn(_slider_crank(120, 'vmin_AB = "7 m/s"'))
+    assert 'id="velocity-least-A-B-1"' in beyond  # ab produced to p
+    assert "velocity-least" not in drawn(_slider_crank(60))

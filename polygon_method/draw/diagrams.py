@@ -20,6 +20,8 @@ from .symbols import (
     deg,
 )
 from .mechanism import mechanism
+from ..motion.link_points import asked_pairs, least_speed
+from ..text.link_points import foot_name
 from .sketch import _header, _Sketch
 
 from .style import (
@@ -133,12 +135,43 @@ def _polygon(sol, scale: Scale, phase: str) -> _Sketch:
         sk.arrow(cm(v.start), cm(v.end), f"{phase}-vector-{n}", color, lw, dashes)
     pole = "o" + ("" if phase == "velocity" else "'")
     names = _image_points(sol, cons, D, tol, phase, pole)
+    if phase == "velocity":  # vmin_XY asked: op square to xy, its foot p
+        _least_speed(sk, sol, cm, names)
     _named_points(sk, names, pole, cm, phase)
     for text, anchors, gid in marks:
         sk.label(text, anchors, MARK_PT, gid=f"label-{gid}", color="#555555", apart=MARK_APART)
     sk.place_labels()
     _legend(sk, sol, scale, phase, vectors, cons)
     return sk
+
+
+def _least_speed(sk, sol, cm, names):
+    """For each ``vmin_XY`` the answers ask: op drawn from the pole square to xy, its foot
+    named (p, or the letter the steps give it), xy produced to it where it falls outside,
+    within a quarter of the polygon's size past its extent (the scale is the polygon's: a
+    foot far beyond it is left to the step table's words)."""
+    box = [(0.0, 0.0)] + list(sol.V.values())
+    lo, hi = [min(q[i] for q in box) for i in (0, 1)], [max(q[i] for q in box) for i in (0, 1)]
+    room = max(hi[0] - lo[0], hi[1] - lo[1]) / 4  # a quarter of the polygon's size past it
+    for _, kind, (x, y) in asked_pairs(sol.scene):
+        ls = least_speed(sol, x, y) if kind == "vmin" else None
+        if ls is None or ls.fraction is None:  # (a link that does not turn has no foot)
+            continue
+        (bx, by), (cx, cy), t = sol.V[x], sol.V[y], ls.fraction
+        foot = (bx + t * (cx - bx), by + t * (cy - by))
+        if not all(lo[i] - room <= foot[i] <= hi[i] + room for i in (0, 1)):
+            continue
+        ends = [(0.0, 0.0)] + ([] if ls.where == "between" else [sol.V[x if t < 0 else y]])
+        for i, end in enumerate(ends):  # op; xy produced to p
+            sk.line(
+                [cm(end), cm(foot)],
+                gid=f"velocity-least-{x}-{y}-{i}",
+                color="#000000",
+                lw=0.6,
+                dashes=(2.0, 1.5),
+                z=2,
+            )
+        names.setdefault(tuple(foot), []).append(foot_name(sol).lower())
 
 
 def _images(sk, sol, cons, D, cm, phase):

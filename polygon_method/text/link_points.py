@@ -9,7 +9,7 @@ from __future__ import annotations
 from ..common.numbers import fmt
 from ..motion.link_points import asked_pairs, components, least_speed
 
-__all__ = ["pair_lines", "pair_items"]
+__all__ = ["pair_lines", "pair_items", "foot_name"]
 
 
 def _len(sol, metres: float) -> str:
@@ -22,7 +22,7 @@ def _two(x: str, y: str) -> str:
     return x + y if len(x) == len(y) == 1 else f"{x}-{y}"
 
 
-def _foot(sol) -> str:
+def foot_name(sol) -> str:
     """The slowest point's name, as the books call it (P), or a letter the scene leaves free."""
     return next((n for n in "PFMNQKZ" if n not in sol.scene.point_names), "P'")
 
@@ -31,7 +31,7 @@ def _least_words(sol, key, x, y, construction=False, scale=None) -> str:
     """The least speed on segment XY: where, and how much (with the construction)."""
     ls = least_speed(sol, x, y)
     b, c = x.lower(), y.lower()  # their images
-    P, p = _foot(sol), _foot(sol).lower()
+    P, p = foot_name(sol), foot_name(sol).lower()
     if ls.where == "translating":
         return (
             f"{key} = {fmt(ls.speed, 4)} m/s: {_two(x, y)} does not turn (omega_{ls.link} = 0), so "
