@@ -219,3 +219,14 @@ def test_module_bare_number_is_mm_in_any_unit():
     sol = solve(parse_scene(text))
     assert sol.scene.rolling[0].radius == pytest.approx(0.1, rel=1e-12)
     assert any("module 4 mm" in n for n in sol.notes)
+
+
+def test_every_view_says_the_teeth():
+    """solve's note, the step table's drawing of the wheel, the JSON's rolling record."""
+    from polygon_method.text.steptable import steps_text
+
+    sol = solve(parse_scene(_pair(20, 50)))
+    assert any("pitch radius m z / 2 = 4 x 50 / 2 = 100 mm" in n for n in sol.notes)
+    assert "50 teeth, pitch radius m z / 2 = 4 x 50 / 2 = 100 mm" in steps_text(sol)
+    rec = sol.to_dict()["rolling"]["O3-B"]["teeth"]
+    assert rec == {"teeth": 50, "on_teeth": 20, "module": pytest.approx(0.004, rel=1e-15)}
