@@ -32,6 +32,7 @@ from ..steps.base import Instant
 from .structural import structural_warnings
 from ..scene import FixedPath, Scene
 from ..scene.force_records import rolling_body
+from ..scene.teeth import teeth_records
 from .json_safe import finite_only, useful_bounds
 from .link_points import PAIR_KINDS, asked_dict, pair_value
 
@@ -331,9 +332,7 @@ class Solution(Motion):
         return d
 
     def _rolling_dict(self) -> dict:
-        """The JSON's rolling contacts: the wheel's point at each (empty without rolling);
-        a driving wheel's also its centre, the centre's velocity and acceleration along its
-        ground line (signed along the line's direction) and the line."""
+        """The JSON's rolling contacts (a gear's teeth; a driving wheel's centre, its line)."""
         contacts = {}
         for st in self.plan.steps:
             c = st.contact_motion(self)
@@ -343,6 +342,7 @@ class Solution(Motion):
             return {}
         d = {
             k: {"contact": list(c[0]), "velocity": list(c[1]), "acceleration": list(c[2])}
+            | teeth_records(self.scene.rolling).get(k, {})  # a gear given by its teeth
             for k, c in contacts.items()
         }
         for s in self.scene.wheel_paths:

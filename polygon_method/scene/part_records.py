@@ -167,6 +167,7 @@ class RollingPair:
     the contact point). ``label``: the line or circle in words. ``pressure_angle``: the
     teeth's pressure angle (rad) a gear, circle or rack states (None: the default, 20 deg).
     ``grip``: a friction drive's (preload N or None, friction coefficient or None), or None.
+    ``teeth``: where the scene gives the gears by their teeth (:mod:`.teeth`).
     """
 
     wheel: str
@@ -186,6 +187,9 @@ class RollingPair:
     ring: bool = False
     pressure_angle: float | None = None
     grip: tuple | None = None
+    #: a gear given by its teeth: (its teeth or None, its gear's or None, the module m or
+    #: None where the centre distance gave the radii), or None
+    teeth: tuple | None = None
 
 
 @dataclass(frozen=True)

@@ -34,6 +34,7 @@ import re
 
 from ..common.tolerances import ROUNDING
 from .records import RollingPair, split_name
+from .teeth import TABLE_KEYS, TEETH_KEYS, apply_teeth, table_module
 
 _KEYS = (
     "on",
@@ -47,6 +48,7 @@ _KEYS = (
     "pressure_angle",
     "preload",
     "friction",
+    *TEETH_KEYS,
 )
 _SIDES = ("above", "below", "left", "right")
 
@@ -145,12 +147,13 @@ def _rack(rd, key, spec, ground, sliders, _suggest):
             "rolling",
             key,
         )
+    rack_keys = ("on", "on_radius", "on_teeth", "module", "diametral_pitch", "pressure_angle")
     for k in spec:
-        if k not in ("on", "on_radius", "pressure_angle"):
+        if k not in rack_keys:
             raise rd.error(
                 f"unknown key '{k}' for a rack"
-                f"{_suggest(k, ('on', 'on_radius', 'pressure_angle'))}; a rack has "
-                "on (its pinion), on_radius and pressure_angle",
+                f"{_suggest(k, rack_keys)}; a rack has "
+                "on (its pinion), on_radius (or on_teeth and module) and pressure_angle",
                 "rolling",
                 key,
             )
@@ -190,20 +193,25 @@ def read_rolling(rd, ground, sliders, points) -> list:
 
     out = []
     wheels = set()
+    module = table_module(rd)  # the table's module = "4 mm", for every gear in it
     for key, spec in rd.table("rolling").items():
+        if key in TABLE_KEYS and not isinstance(spec, dict):
+            continue
         if not isinstance(spec, dict):
             raise rd.error(_EXAMPLE, "rolling", key)
         for k in spec:
             if k not in _KEYS:
                 raise rd.error(f"unknown key '{k}'{_suggest(k, _KEYS)}", "rolling", key)
         if len(split_name(key)) == 1:  # a rack: a block on a fixed path, on a pinion
-            out.append(_rack(rd, key, spec, ground, sliders, _suggest))
+            pair = _rack(rd, key, spec, ground, sliders, _suggest)
+            out.append(apply_teeth(rd, key, spec, pair, None, out, (module, ground)))
             continue
         link, pts = rd.find_link(key, "rolling", key)
         if link.key in wheels:
             raise rd.error(f"wheel {link.key} is named twice", "rolling", key)
         wheels.add(link.key)
-        out.append(_wheel(rd, key, spec, (link, pts), (ground, sliders, points), out, _suggest))
+        pair = _wheel(rd, key, spec, (link, pts), (ground, sliders, points), out, _suggest)
+        out.append(apply_teeth(rd, key, spec, pair, link, out, (module, ground)))
     return out
 
 

@@ -41,6 +41,7 @@ from dataclasses import dataclass
 from ..common.tolerances import LEAST_REACH
 from ..common.errors import AssemblyError, SceneError
 from .rolling_contact import RollingContact, circle_rates, line_rates, rim_motion
+from ..scene.teeth import pitch_words
 from .rolling_dims import GAP, arm_rate, follow_params, pair_of, rate, turned, wheel_params
 from .base import (
     Construction,
@@ -127,6 +128,7 @@ def recognise(g, name):
         uname=g.uname,
         pressure_angle=pr.pressure_angle,
         grip=pr.grip,
+        teeth=pr.teeth,
     )
 
 
@@ -164,6 +166,7 @@ class RollingWheel(RollingContact, Step):
     pressure_angle: float | None = None
     #: a friction drive's (preload N, friction coefficient or None): no teeth; or None
     grip: tuple | None = None
+    teeth: tuple | None = None  # a gear given by its teeth: (z, z of its gear, m or None)
 
     kind = "rolling"
 
@@ -516,10 +519,11 @@ class RollingWheel(RollingContact, Step):
                 + (" and " if kd and kb and self.base else "")
                 + (f"{kb:.4g} times the gear {self.base}" if kb and self.base else "")
             )
+        rad = pitch_words(self.teeth, r, L)  # "radius m z / 2 = ..." for a gear by its teeth
         what = (
-            f"the ring {self.wheel} (pitch radius {L(r)}) meshes with {self.where} inside it"
+            f"the ring {self.wheel} ({'' if self.teeth else 'pitch '}{rad}) meshes with {self.where} inside it"
             if self.ring
-            else f"the wheel {self.wheel} (radius {L(r)}) rolls without slipping on {self.where}"
+            else f"the wheel {self.wheel} ({rad}) rolls without slipping on {self.where}"
         )
         return (
             f"{self.rim}: {what}; from {self.centre} draw {self.centre}{self.rim} = {L(ell)} at "

@@ -67,8 +67,9 @@ def _rolling_sentence(sc, r) -> str:
         )
     if r.on == "gear":
         what = (
-            f"The {'ring gear' if r.ring else 'gear'} {r.wheel} (centre {r.centre}, pitch "
-            f"radius {_len(sc, r.radius)}) meshes {'internally ' if r.inside else ''}with "
+            f"The {'ring gear' if r.ring else 'gear'} {r.wheel} (centre {r.centre}, "
+            + (f"{r.teeth[0]} teeth, " if r.teeth and r.teeth[0] else "")
+            + f"pitch radius {_len(sc, r.radius)}) meshes {'internally ' if r.inside else ''}with "
             f"{r.label}" + (" inside it" if r.ring else "")
         )
     else:
@@ -78,7 +79,9 @@ def _rolling_sentence(sc, r) -> str:
             else f"{'inside' if r.inside else 'outside'} {r.label}"
         )
         what = (
-            f"The wheel {r.wheel} (centre {r.centre}, radius {_len(sc, r.radius)}) "
+            f"The wheel {r.wheel} (centre {r.centre}, "
+            + (f"{r.teeth[0]} teeth, " if r.teeth and r.teeth[0] else "")
+            + f"radius {_len(sc, r.radius)}) "
             f"rolls without slipping {on}"
         )
     if r.base_radius:

@@ -1,0 +1,232 @@
+"""Gears given by their teeth ([rolling] teeth, on_teeth, module or diametral_pitch, or the
+centre distance alone): the speed ratios are the teeth's (z1/z2 exactly, to 1e-12), held
+to the closed forms of the gear-train chapters (omega3 = -omega2 z2/z3 for fixed centres,
+the train value of a compound train, Willis' formula for an epicyclic), and a scene by its
+teeth moves as the same scene with its radii stated by hand. Bad teeth: one line, exit 2."""
+
+import math
+import subprocess
+import sys
+
+import pytest
+
+from polygon_method import parse_scene, solve
+
+W1 = -1000 * 2 * math.pi / 60  # the driver, 1000 rpm cw
+
+PAIR = """
+units = "mm"
+[ground]
+O2 = [0, 0]
+O3 = [{d}, 0]
+[links]
+"O2-A" = {r2}
+"O3-B" = {r3}
+[rolling]
+{table}
+"O3-B" = {{ on = "O2-A"{keys} }}
+[input]
+crank = "O2-A"
+angle = 25
+speed = "1000 rpm cw"
+"""
+
+
+def _pair(z2, z3, m=4.0, keys=None, table=None, d=None, r2=None, r3=None):
+    r2 = m * z2 / 2 if r2 is None else r2
+    r3 = m * z3 / 2 if r3 is None else r3
+    keys = f", teeth = {z3}, on_teeth = {z2}" if keys is None else keys
+    table = f'module = "{m} mm"' if table is None else table
+    d = r2 + r3 if d is None else d
+    return PAIR.format(d=d, r2=r2, r3=r3, keys=keys, table=table)
+
+
+@pytest.mark.parametrize("z2,z3", [(20, 60), (17, 43), (31, 19), (12, 100)])
+def test_external_pair_turns_by_the_teeth_ratio(z2, z3):
+    """omega3 = -omega2 z2 / z3 (fixed centres, external mesh), and the scene by its teeth
+    moves as the one with its radii by hand (radius m z / 2)."""
+    sol = solve(parse_scene(_pair(z2, z3)))
+    assert sol.W["O3-B"] / sol.W["O2-A"] == pytest.approx(-z2 / z3, rel=1e-12)
+    assert sol.W["O3-B"] == pytest.approx(-W1 * z2 / z3, rel=1e-12)
+    by_hand = solve(parse_scene(_pair(z2, z3, keys="", table="")))
+    for p in ("A", "B"):
+        assert math.dist(sol.V[p], by_hand.V[p]) <= 1e-12 * math.hypot(*by_hand.V[p])
+        assert math.dist(sol.A[p], by_hand.A[p]) <= 1e-12 * math.hypot(*by_hand.A[p])
+
+
+def test_module_in_the_entry_and_diametral_pitch():
+    """The module in the entry; a US book's diametral pitch P (radius z / (2 P) inches)."""
+    sol = solve(
+        parse_scene(_pair(20, 50, keys=", teeth = 50, on_teeth = 20, module = 4", table=""))
+    )
+    assert sol.W["O3-B"] == pytest.approx(-W1 * 20 / 50, rel=1e-12)
+    text = _pair(20, 50, m=0.1, keys=", teeth = 50, on_teeth = 20", table="diametral_pitch = 10")
+    sol = solve(parse_scene(text.replace('units = "mm"', 'units = "in"')))
+    assert sol.scene.rolling[0].radius == pytest.approx(50 / 20 * 0.0254, rel=1e-12)
+    assert sol.W["O3-B"] == pytest.approx(-W1 * 20 / 50, rel=1e-12)
+
+
+def test_without_a_module_the_centre_distance_gives_the_radii():
+    """No module: r = d z / (z2 + z3), said as a default taken; the ratio the teeth's."""
+    sol = solve(parse_scene(_pair(20, 60, m=2.4, keys=", teeth = 60, on_teeth = 20", table="")))
+    assert sol.scene.rolling[0].radius == pytest.approx(0.072, rel=1e-12)
+    assert sol.W["O3-B"] == pytest.approx(-W1 / 3, rel=1e-12)
+    note = next(n for n in sol.notes if "module not given" in n)
+    assert "96 mm" in note and "72 mm and 24 mm" in note, note
+
+
+RING = """
+units = "mm"
+[ground]
+O1 = [{e}, 0]
+O = [0, 0]
+[links]
+"O1-A" = {rp}
+"O-Q" = {rr}
+[rolling]
+"O-Q" = {{ on = "O1-A", ring = true, teeth = {zr}, on_teeth = {zp}{module} }}
+[input]
+crank = "O1-A"
+angle = 0
+speed = "1000 rpm cw"
+"""
+
+
+@pytest.mark.parametrize("zp,zr,module", [(20, 80, ', module = "2 mm"'), (15, 61, "")])
+def test_a_pinion_drives_a_ring_by_the_teeth_ratio(zp, zr, module):
+    """A pinion on a fixed centre inside a ring: the ring turns the pinion's way at zp/zr."""
+    rp, rr = zp, zr  # module 2 mm: m z / 2 = z mm (without one, the centre distance)
+    sol = solve(parse_scene(RING.format(e=rr - rp, rp=rp, rr=rr, zr=zr, zp=zp, module=module)))
+    assert sol.W["O-Q"] / sol.W["O1-A"] == pytest.approx(zp / zr, rel=1e-12)
+
+
+COMPOUND = """
+units = "mm"
+[ground]
+O1 = [0, 0]
+O2 = [{d1}, 0]
+O4 = [{d1}, {d2}]
+[links]
+"O1-A" = {r1}
+"O2-B" = {r2}
+"O4-C" = {r4}
+[rolling]
+module = "{m} mm"
+"O2-B" = {{ on = "O1-A"{k1} }}
+"O4-C" = {{ on = "O2-B"{k2} }}
+[input]
+crank = "O1-A"
+angle = 0
+speed = "1000 rpm cw"
+"""
+
+
+@pytest.mark.parametrize("z1,z2,z3,z4,m", [(20, 50, 15, 45, 4), (18, 54, 20, 60, 3)])
+def test_compound_train_value_is_the_teeth_product(z1, z2, z3, z4, m):
+    """Two gears keyed to one shaft: omega4 = omega1 (z1/z2)(z3/z4), two external meshes;
+    and the scene by the teeth moves as the scene by the radii (on_radius by hand)."""
+    r = [m * z / 2 for z in (z1, z2, z3, z4)]
+    geo = dict(d1=r[0] + r[1], d2=r[2] + r[3], r1=r[0], r2=r[1], r4=r[3], m=m)
+    teeth = COMPOUND.format(
+        **geo, k1=f", teeth = {z2}, on_teeth = {z1}", k2=f", teeth = {z4}, on_teeth = {z3}"
+    )
+    sol = solve(parse_scene(teeth))
+    assert sol.W["O4-C"] / sol.W["O1-A"] == pytest.approx(z1 * z3 / (z2 * z4), rel=1e-12)
+    hand = solve(parse_scene(COMPOUND.format(**geo, k1="", k2=f", on_radius = {r[2]}")))
+    for p in ("A", "B", "C"):
+        assert math.dist(sol.V[p], hand.V[p]) <= 1e-12 * math.hypot(*hand.V[p])
+
+
+EPICYCLIC = """
+units = "mm"
+[ground]
+O = [0, 0]
+[links]
+OA = {arm}
+AP = {rp}
+"O-Q" = {rr}
+[rolling]
+{module}
+AP = {{ on = "O", teeth = {zp}, on_teeth = {zs} }}
+"O-Q" = {{ on = "AP", ring = true, teeth = {zr} }}
+[input]
+crank = "OA"
+angle = 30
+speed = "200 rpm ccw"
+"""
+
+
+@pytest.mark.parametrize("zs,zp,module", [(40, 24, 'module = "5 mm"'), (30, 21, "")])
+def test_epicyclic_by_willis(zs, zp, module):
+    """The sun fixed, the arm driven: Willis' formula, (omega - omega_arm) / (omega_sun -
+    omega_arm) = -zs/z for the planet and -zs/zr for the annulus (zr = zs + 2 zp)."""
+    zr = zs + 2 * zp
+    m = 5.0
+    text = EPICYCLIC.format(
+        arm=m * (zs + zp) / 2, rp=m * zp / 2, rr=m * zr / 2, module=module, zp=zp, zs=zs, zr=zr
+    )
+    sol = solve(parse_scene(text))
+    w_arm, w_sun = sol.W["OA"], 0.0
+    assert (sol.W["AP"] - w_arm) / (w_sun - w_arm) == pytest.approx(-zs / zp, rel=1e-12)
+    assert (sol.W["O-Q"] - w_arm) / (w_sun - w_arm) == pytest.approx(-zs / zr, rel=1e-12)
+
+
+def _run(text, tmp_path):
+    f = tmp_path / "g.toml"
+    f.write_text(text, encoding="utf-8")
+    return subprocess.run(
+        [sys.executable, "-m", "polygon_method", "solve", str(f)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+
+
+@pytest.mark.parametrize(
+    "keys,table,words",
+    [
+        (", teeth = 50.5, on_teeth = 20", None, "whole number"),
+        (", teeth = 0, on_teeth = 20", None, "whole number"),
+        (', teeth = "50", on_teeth = 20', None, "whole number"),
+        (", teeth = 50, on_teeth = 20, radius = 90", None, "radius is 90 mm"),
+        (", teeth = 50, on_teeth = 20", 'module = "5 mm"', "the link O3-B is 100 mm"),
+        (", teeth = 50, on_teeth = 20, on_radius = 30", None, "on_radius is 30 mm"),
+        (", teeth = 50", "", "module not given"),
+        (', teeth = 50, on_teeth = 20, module = "4 mm", diametral_pitch = 6', "", "keep one"),
+        (", teeth = 50, on_teeth = 20, module = -4", "", "above 0"),
+    ],
+)
+def test_bad_teeth_are_one_line(tmp_path, keys, table, words):
+    """Teeth not a whole number above 0, a radius that disagrees, no module and no second
+    gear's teeth: one line naming the key, exit 2."""
+    text = _pair(20, 50, keys=keys, table=table)
+    out = _run(text, tmp_path)
+    lines = out.stderr.strip().splitlines()
+    assert out.returncode == 2 and len(lines) == 1, out.stderr + out.stdout
+    assert "[rolling] O3-B" in lines[0]
+    if words:
+        assert words in lines[0], lines[0]
+
+
+def test_module_bare_number_is_mm_in_any_unit():
+    """A bare module is in mm (as a module always is), whatever the scene's unit."""
+    text = _pair(20, 50, keys=", teeth = 50, on_teeth = 20", table="module = 4")
+    text = text.replace('units = "mm"', 'units = "m"')
+    for x in ("140", "40", "100"):
+        text = text.replace(f"= {x}.0\n", f"= {float(x) / 1000}\n").replace(
+            f"[{x}.0, 0]", f"[{float(x) / 1000}, 0]"
+        )
+    sol = solve(parse_scene(text))
+    assert sol.scene.rolling[0].radius == pytest.approx(0.1, rel=1e-12)
+    assert any("module 4 mm" in n for n in sol.notes)
+
+
+def test_every_view_says_the_teeth():
+    """solve's note, the step table's drawing of the wheel, the JSON's rolling record."""
+    from polygon_method.text.steptable import steps_text
+
+    sol = solve(parse_scene(_pair(20, 50)))
+    assert any("pitch radius m z / 2 = 4 x 50 / 2 = 100 mm" in n for n in sol.notes)
+    assert "50 teeth, pitch radius m z / 2 = 4 x 50 / 2 = 100 mm" in steps_text(sol)
+    rec = sol.to_dict()["rolling"]["O3-B"]["teeth"]
+    assert rec == {"teeth": 50, "on_teeth": 20, "module": pytest.approx(0.004, rel=1e-15)}
