@@ -182,7 +182,7 @@ class _Compiler:
         self.used_sliders = set()
         self.notes = []
         self.bodies = bodies = Bodies(scene)
-        self._carried = {cp.name: cp for cp in scene.points}
+        self._carried = {cp.name: cp for cp in scene.points} if scene.points else {}
         sliders = scene.sliders
         self._sliders = {s.point: s for s in sliders if not s.slot} if sliders else {}
         self._slots = {}  # a peg's point -> its two slots

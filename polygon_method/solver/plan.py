@@ -68,11 +68,18 @@ class Bodies:
 
     def __init__(self, scene: Scene):
         self.scene = scene
-        self._frames = {}
-        self._links = {lk.key: lk for lk in scene.links}
-        self._carried = {}
+        self._carried = carried = {}
         for cp in scene.points:
-            self._carried.setdefault(cp.link, []).append(cp)
+            carried.setdefault(cp.link, []).append(cp)
+        # each link's own key; the frame of a link with no carried point made here, in the
+        # same pass (:meth:`frame` makes the others, and the frames asked by other names)
+        self._links = links = {}
+        self._frames = frames = {}
+        for lk in scene.links:
+            key = lk.key
+            links[key] = lk
+            if key not in carried:
+                frames[key] = {lk.p: (0.0, 0.0), lk.q: (lk.length, 0.0)}
 
     def link(self, key):
         """The scene's link ``key`` (its own key, or its two points in either order)."""
