@@ -483,6 +483,8 @@ class _Compiler:
             if found is None:
                 break
             self.add(found)
+            if len(self.P) >= len(names) and order.keys() <= self.P.keys():
+                continue  # every point found: no neighbour is left to look at again
             for x in found.finds:
                 for p in self.neighbours(x):
                     i = order.get(p)
