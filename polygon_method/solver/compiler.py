@@ -161,7 +161,7 @@ class _Compiler:
         self.used_sliders = set()
         self.notes = []
         self.bodies = bodies = Bodies(scene)
-        self._carried = {cp.name: cp for cp in scene.points}
+        self._carried = {cp.name: cp for cp in scene.points} if scene.points else {}
         sliders = scene.sliders
         self._sliders = {s.point: s for s in sliders if not s.slot} if sliders else {}
         self._slots = {}  # a peg's point -> its two slots
@@ -370,6 +370,8 @@ class _Compiler:
             if found is None:
                 break
             self.add(found)
+            if len(self.P) >= len(names) and order.keys() <= self.P.keys():
+                continue  # every point found: no neighbour is left to look at again
             for x in found.finds:
                 for p in self.neighbours(x):
                     i = order.get(p)

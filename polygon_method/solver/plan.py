@@ -69,11 +69,18 @@ class Bodies:
 
     def __init__(self, scene: Scene):
         self.scene = scene
-        self._frames = {}
-        self._links = {lk.key: lk for lk in scene.links}
-        self._carried = {}
+        self._carried = carried = {}
         for cp in scene.points:
-            self._carried.setdefault(cp.link, []).append(cp)
+            carried.setdefault(cp.link, []).append(cp)
+        # each link's own key; the frame of a link with no carried point made here, in the
+        # same pass (:meth:`frame` makes the others, and the frames asked by other names)
+        self._links = links = {}
+        self._frames = frames = {}
+        for lk in scene.links:
+            key = lk.key
+            links[key] = lk
+            if key not in carried:
+                frames[key] = {lk.p: (0.0, 0.0), lk.q: (lk.length, 0.0)}
 
     def link(self, key):
         """The scene's link ``key`` (its own key, or its two points in either order)."""
@@ -167,6 +174,15 @@ class Plan:
     #: the force analysis's plan for this plan's scene, kept here by ``forces`` when first
     #: made (not a field: never compared, copied by ``replace`` or pickled)
     force_plan = None
+    #: what is made when first needed and then kept in the plan (none of it a field, so
+    #: ``replace`` starts from these again): the bound phases (``_bind_own``), the
+    #: one-instant functions (``bind_own_instant``; a plan that solves one instant binds
+    #: only these) and the branching steps checked after the positions (``checked``); and
+    #: the sized pins' table where there are none (``__post_init__``)
+    _phases = None
+    instant_steps = None
+    _checked = None
+    pin_table = ()
 
     def __hash__(self):
         return id(self)
@@ -315,7 +331,7 @@ class Plan:
                 f(m)
             if not ctx.array:
                 cond = m.cond
-                for i, st in self._checked:
+                for i, st in self._checked or self.checked():
                     if cond[i] < TOL.singular:
                         raise st.singular(cond[i])
             if upto >= 1:
@@ -355,18 +371,26 @@ class Plan:
             raise exc.located(self.scene.file)
         return m
 
-    def _groups(self, dims: Dims):
-        """The steps in runs that a kind binds together (``group_key``), with their
-        dimensions."""
-        steps, prms, i = self.steps, dims.steps, 0
-        while i < len(steps):
+    def _runs(self) -> list:
+        """(i, j): the steps ``i`` to ``j - 1`` of each run that a kind binds together
+        (``group_key``; a step of no group is a run of one)."""
+        steps, out, i, n = self.steps, [], 0, len(self.steps)
+        while i < n:
             st, j = steps[i], i + 1
             key = st.group_key
             if key is not None:  # neighbours the kind can do in one go (points on one body)
-                while j < len(steps) and type(steps[j]) is type(st) and steps[j].group_key == key:
+                while j < n and type(steps[j]) is type(st) and steps[j].group_key == key:
                     j += 1
-            yield steps[i:j], prms[i:j]
+            out.append((i, j))
             i = j
+        return out
+
+    def _groups(self, dims: Dims):
+        """The steps in runs that a kind binds together (:meth:`_runs`), with their
+        dimensions."""
+        steps, prms = self.steps, dims.steps
+        for i, j in self._runs():
+            yield steps[i:j], prms[i:j]
 
     def bind(self, dims: Dims) -> tuple:
         """(positions, velocities, accelerations): each the steps' phase functions, in
@@ -379,11 +403,15 @@ class Plan:
 
     def bind_instant(self, dims: Dims) -> tuple:
         """One function per step (or group of steps) doing its three phases in a row, for
-        one instant at ``dims`` (floats)."""
-        return tuple(
-            type(g[0]).bind_group_instant(g, p) if len(g) > 1 else g[0].bind_instant(p[0])
-            for g, p in self._groups(dims)
-        )
+        one instant at ``dims`` (floats); a step of no group (the usual one) bound without
+        a slice."""
+        steps, prms, out = self.steps, dims.steps, []
+        for i, j in self._runs():
+            if j == i + 1:
+                out.append(steps[i].bind_instant(prms[i]))
+            else:
+                out.append(type(steps[i]).bind_group_instant(steps[i:j], prms[i:j]))
+        return tuple(out)
 
     def _bind_own(self):
         object.__setattr__(self, "_phases", self.bind(self.dims))
@@ -418,24 +446,25 @@ class Plan:
 
     def __post_init__(self):
         # what every evaluation at the plan's own dimensions starts from (made anew by
-        # dataclasses.replace, so a plan with other steps never runs stale functions)
+        # dataclasses.replace, so a plan with other steps never runs stale functions; the
+        # rest is made when first needed: the class's attributes above)
         object.__setattr__(self, "zero_motion", dict.fromkeys(self.ground, (0.0, 0.0)))
-        # the bound phases, made when first needed (a plan that solves one instant binds
-        # only its one-instant functions)
-        object.__setattr__(self, "_phases", None)
-        object.__setattr__(self, "instant_steps", None)
-        object.__setattr__(
-            self, "_checked", tuple([(st.index, st) for st in self.steps if st.branching])
-        )
-        # each sized pin with its radius at the plan's own dimensions, its pairs' links and
-        # its one pair's (None where it joins more than two bodies), what
-        # derived.rubbing_records reads, one instant at a time
-        radii = self.dims.radii if self.dims is not None else {}
-        object.__setattr__(
-            self,
-            "pin_table",
-            tuple(pin_entry(pin, radii.get(pin[0])) for pin in self.pins),
-        )
+        if self.pins:  # each sized pin with its radius at the plan's own dimensions, its
+            # pairs' links and its one pair's (None where it joins more than two bodies),
+            # what derived.rubbing_records reads, one instant at a time
+            radii = self.dims.radii if self.dims is not None else {}
+            object.__setattr__(
+                self,
+                "pin_table",
+                tuple([pin_entry(pin, radii.get(pin[0])) for pin in self.pins]),
+            )
+
+    def checked(self) -> tuple:
+        """(index, step) of each branching step: checked for a singular condition after
+        the positions (``run``); made once and kept."""
+        out = tuple([(st.index, st) for st in self.steps if st.branching])
+        object.__setattr__(self, "_checked", out)
+        return out
 
     def evaluate(self, ctx, *, velocities=True, accelerations=True):
         """Run the plan at the compiled scene's dimensions: dicts ``P, V, A`` (point ->
