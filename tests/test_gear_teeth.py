@@ -307,3 +307,40 @@ def test_gear_without_a_length_is_one_line(tmp_path, keys, table, words):
     lines = out.stderr.strip().splitlines()
     assert out.returncode == 2 and len(lines) == 1, out.stderr + out.stdout
     assert "[rolling] O3-B" in lines[0] and words in lines[0], lines[0]
+
+
+RING_FIXED = """
+units = "mm"
+[ground]
+O = [0, 0]
+[rolling]
+module = "{m} mm"
+AP = {{ on = "O", inside = true, teeth = {zp}, on_teeth = {zr} }}
+[input]
+crank = "OA"
+angle = 30
+speed = "200 rpm ccw"
+"""
+
+
+@pytest.mark.parametrize("zp,zr,m", [(24, 88, 5.0), (17, 61, 3.0)])
+def test_arm_inside_a_fixed_ring_is_r_ring_less_r_planet(zp, zr, m):
+    """A planet inside a fixed annulus, [links] left out: the arm r_ring - r_planet = m (zr
+    - zp) / 2, and Willis' formula omega = omega_arm (1 - zr / zp)."""
+    sol = solve(parse_scene(RING_FIXED.format(m=m, zp=zp, zr=zr)))
+    arm = next(lk for lk in sol.scene.links if lk.key == "OA")
+    assert arm.length * 1e3 == pytest.approx(m * (zr - zp) / 2, rel=1e-12)
+    assert sol.W["AP"] == pytest.approx(sol.W["OA"] * (1 - zr / zp), rel=1e-12)
+    assert any("220 - 60 = 160 mm" in n for n in sol.notes) or zp != 24
+
+
+def test_arm_two_pairs_disagree_is_one_line(tmp_path):
+    """The annulus's teeth not the sun's and two planets' (90, not 40 + 2 x 24): the arm
+    from the two pairs disagrees, refused in one line naming it, exit 2."""
+    text = EPICYCLIC.format(arm=160, rp=60, rr=225, module='module = "5 mm"', zp=24, zs=40, zr=90)
+    text = text.replace("OA = 160\n", "").replace("AP = 60\n", "").replace('"O-Q" = 225\n', "")
+    assert "[links]\n[rolling]" in text
+    out = _run(text, tmp_path)
+    lines = out.stderr.strip().splitlines()
+    assert out.returncode == 2 and len(lines) == 1, out.stderr + out.stdout
+    assert "[rolling] O-Q" in lines[0] and "the arm OA" in lines[0], lines[0]
