@@ -80,7 +80,9 @@ def _arms(rd, entries, known):
     held by no stated link but its wheels, as long as the centre distance."""
     index, radius, table, ground = known
     wheels = {frozenset(split_name(k)) for k, _, _ in entries}
-    held = {p for pair, lk in index.items() if pair not in wheels for p in pair}
+    held = {p for pair in index if pair not in wheels for p in pair}
+    for tab in ("points", "sliders"):  # a carried point, a block: held already
+        held.update(rd.raw[tab] if isinstance(rd.raw.get(tab), dict) else ())
     arms = {}
     for key, spec, pts in entries:
         base = _base(rd, key, spec, (radius, table, ground))
