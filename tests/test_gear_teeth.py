@@ -230,3 +230,117 @@ def test_every_view_says_the_teeth():
     assert "50 teeth, pitch radius m z / 2 = 4 x 50 / 2 = 100 mm" in steps_text(sol)
     rec = sol.to_dict()["rolling"]["O3-B"]["teeth"]
     assert rec == {"teeth": 50, "on_teeth": 20, "module": pytest.approx(0.004, rel=1e-15)}
+
+
+BY_HAND = """
+units = "mm"
+[ground]
+O = [0, 0]
+[links]
+OA = {arm}
+AP = {rp}
+"O-Q" = {rr}
+[rolling]
+AP = {{ on = "O", on_radius = {rs} }}
+"O-Q" = {{ on = "AP", ring = true }}
+[input]
+crank = "OA"
+angle = 30
+speed = "200 rpm ccw"
+"""
+
+
+@pytest.mark.parametrize("left_out", [("OA", "AP", "O-Q"), ("AP", "O-Q"), ("OA",)])
+@pytest.mark.parametrize("zs,zp,m", [(40, 24, 5.0), (30, 21, 2.5)])
+def test_lengths_left_out_are_the_teeth(zs, zp, m, left_out):
+    """The gears' links and the arm left out of [links]: their lengths the pitch radii (m z
+    / 2) and the centre distance (r_sun + r_planet), the motion the same as the scene with
+    every length and radius by hand (no teeth), to 1e-12; Willis' formula holds."""
+    zr = zs + 2 * zp
+    geo = dict(arm=m * (zs + zp) / 2, rp=m * zp / 2, rr=m * zr / 2)
+    text = EPICYCLIC.format(**geo, module=f'module = "{m} mm"', zp=zp, zs=zs, zr=zr)
+    for key, name, length in (("OA", "OA", "arm"), ("AP", "AP", "rp"), ("O-Q", '"O-Q"', "rr")):
+        if key in left_out:
+            line = f"\n{name} = {geo[length]}\n"
+            assert line in text
+            text = text.replace(line, "\n", 1)
+    sol = solve(parse_scene(text))
+    hand = solve(parse_scene(BY_HAND.format(**geo, rs=m * zs / 2)))
+    for p in ("A", "P", "Q"):
+        assert math.dist(sol.P[p], hand.P[p]) <= 1e-12 * math.hypot(*hand.P[p])
+        assert math.dist(sol.V[p], hand.V[p]) <= 1e-12 * math.hypot(*hand.V[p])
+        assert math.dist(sol.A[p], hand.A[p]) <= 1e-12 * math.hypot(*hand.A[p])
+    w_arm = sol.W["OA"]
+    assert (sol.W["AP"] - w_arm) / -w_arm == pytest.approx(-zs / zp, rel=1e-12)
+    assert (sol.W["O-Q"] - w_arm) / -w_arm == pytest.approx(-zs / zr, rel=1e-12)
+    for key in left_out:
+        assert any(n.startswith(f"[links] {key} not given") for n in sol.notes), sol.notes
+
+
+@pytest.mark.parametrize("z2,z3", [(20, 50), (17, 43)])
+def test_fixed_centres_gears_left_out(z2, z3):
+    """Two gears about fixed centres with [links] left out (the driver named by on and
+    on_teeth): the radii m z / 2, omega3 = -omega2 z2/z3, the motion of the scene with its
+    links by hand, to 1e-12."""
+    hand_text = _pair(z2, z3, keys="", table="")
+    text = _pair(z2, z3).replace(f'"O2-A" = {2.0 * z2}\n"O3-B" = {2.0 * z3}\n', "")
+    assert '"O2-A" = ' not in text.split("[rolling]")[0]
+    sol, hand = solve(parse_scene(text)), solve(parse_scene(hand_text))
+    assert sol.W["O3-B"] == pytest.approx(-W1 * z2 / z3, rel=1e-12)
+    for p in ("A", "B"):
+        assert math.dist(sol.V[p], hand.V[p]) <= 1e-12 * math.hypot(*hand.V[p])
+        assert math.dist(sol.A[p], hand.A[p]) <= 1e-12 * math.hypot(*hand.A[p])
+
+
+@pytest.mark.parametrize(
+    "keys,table,words",
+    [
+        ("", "", "no link O3-B in [links]"),  # neither a length nor teeth
+        (", teeth = 50, on_teeth = 20", "", "no module to make its length"),
+    ],
+)
+def test_gear_without_a_length_is_one_line(tmp_path, keys, table, words):
+    """A gear left out of [links] with neither teeth and a module: one line naming the
+    link, exit 2."""
+    text = _pair(20, 50, keys=keys, table=table).replace('"O3-B" = 100.0\n', "", 1)
+    out = _run(text, tmp_path)
+    lines = out.stderr.strip().splitlines()
+    assert out.returncode == 2 and len(lines) == 1, out.stderr + out.stdout
+    assert "[rolling] O3-B" in lines[0] and words in lines[0], lines[0]
+
+
+RING_FIXED = """
+units = "mm"
+[ground]
+O = [0, 0]
+[rolling]
+module = "{m} mm"
+AP = {{ on = "O", inside = true, teeth = {zp}, on_teeth = {zr} }}
+[input]
+crank = "OA"
+angle = 30
+speed = "200 rpm ccw"
+"""
+
+
+@pytest.mark.parametrize("zp,zr,m", [(24, 88, 5.0), (17, 61, 3.0)])
+def test_arm_inside_a_fixed_ring_is_r_ring_less_r_planet(zp, zr, m):
+    """A planet inside a fixed annulus, [links] left out: the arm r_ring - r_planet = m (zr
+    - zp) / 2, and Willis' formula omega = omega_arm (1 - zr / zp)."""
+    sol = solve(parse_scene(RING_FIXED.format(m=m, zp=zp, zr=zr)))
+    arm = next(lk for lk in sol.scene.links if lk.key == "OA")
+    assert arm.length * 1e3 == pytest.approx(m * (zr - zp) / 2, rel=1e-12)
+    assert sol.W["AP"] == pytest.approx(sol.W["OA"] * (1 - zr / zp), rel=1e-12)
+    assert any("220 - 60 = 160 mm" in n for n in sol.notes) or zp != 24
+
+
+def test_arm_two_pairs_disagree_is_one_line(tmp_path):
+    """The annulus's teeth not the sun's and two planets' (90, not 40 + 2 x 24): the arm
+    from the two pairs disagrees, refused in one line naming it, exit 2."""
+    text = EPICYCLIC.format(arm=160, rp=60, rr=225, module='module = "5 mm"', zp=24, zs=40, zr=90)
+    text = text.replace("OA = 160\n", "").replace("AP = 60\n", "").replace('"O-Q" = 225\n', "")
+    assert "[links]\n[rolling]" in text
+    out = _run(text, tmp_path)
+    lines = out.stderr.strip().splitlines()
+    assert out.returncode == 2 and len(lines) == 1, out.stderr + out.stdout
+    assert "[rolling] O-Q" in lines[0] and "the arm OA" in lines[0], lines[0]

@@ -15,6 +15,7 @@ from ..common.tolerances import SAME
 from ..common.typography import long_integer_text
 from ..common.units import LENGTH_UNITS, UNITS, parse_quantity
 from .rolling import read_rolling
+from .teeth_links import links_from_teeth
 from .source import (
     LineIndex,
     has_long_run,
@@ -333,7 +334,8 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected
         """(links, index): [links], each a length between two points (one between two
         ground points as far apart as they are); the index by the pair of points."""
         links, index = [], {}
-        for key, value in self.table("links", required=True).items():
+        stated = self.table("links", required="rolling" not in self.raw)
+        for key, value in stated.items():
             pts = split_name(key)
             if len(pts) != 2:
                 raise self.error(
@@ -366,6 +368,9 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected
                         "links",
                         key,
                     )
+        for key, p, q, length in links_from_teeth(self, index, ground):  # a book's gears
+            index[frozenset((p, q))] = link = Link(key, p, q, length)
+            links.append(link)
         if not links:
             raise SceneError(
                 "[links] is empty", file=self.file, key="[links]", line=self.line_of("links")
@@ -406,7 +411,11 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected
             raise self.error(f"'{name}' is not a link name (two points, e.g. BC)", table, key)
         link = self.index.get(frozenset(pts))
         if link is None:
-            wheel = f" (a wheel is a link too: {name} = its radius)" if table == "rolling" else ""
+            wheel = (
+                f" (a wheel is a link too: {name} = its radius, or its teeth and a module)"
+                if table == "rolling"
+                else ""
+            )
             raise self.error(
                 f"no link {name} in [links]"
                 f"{_suggest(name, [lk.key for lk in self.index.values()]) or wheel}",

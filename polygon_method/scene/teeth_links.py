@@ -1,0 +1,143 @@
+"""The lengths a book never states, taken from the teeth (a part of the [links] reader).
+
+A gear given by its teeth and a module (or a diametral pitch) in [rolling] may be left out
+of [links]: its link (centre to a point on its pitch circle) is the pitch radius m z / 2.
+An arm left out whose two ends are the centres of a meshing pair (a planet's centre and
+its sun's, or its ring's) is the centre distance: r_sun + r_planet, or r_ring - r_planet.
+Each length so taken is said among the notes."""
+
+from __future__ import annotations
+
+from ..common.tolerances import SAME
+from .names import split_name
+from .teeth import _count, _module, table_module
+
+
+def links_from_teeth(rd, index, ground):
+    """[(key, p, q, length)]: the links [links] leaves out that the teeth fix (``index``:
+    the stated links by their pair of points), each said in ``rd.read_notes``."""
+    raw = rd.raw.get("rolling")
+    if not isinstance(raw, dict):
+        return []
+    entries = [
+        (k, s, split_name(k))
+        for k, s in raw.items()
+        if isinstance(s, dict) and len(split_name(k)) == 2
+    ]
+    table = table_module(rd) if entries else None
+    radius, added = {}, []  # a wheel's pitch radius by its pair of points; the links taken
+    for key, spec, pts in entries:
+        pair, mod = frozenset(pts), _module(rd, spec, key) or table
+        z = _count(rd, spec, "teeth", key)
+        if "radius" in spec:
+            radius[pair] = rd.length(spec["radius"], "rolling", key)
+        elif pair in index:
+            radius[pair] = index[pair].length
+        elif z is not None and mod is not None:
+            radius[pair] = mod[0] * z / 2
+            added.append((key, *pts, radius[pair]))
+            rd.read_notes.append(
+                f"[links] {key} not given: its length the pitch radius from the teeth, "
+                f"m z / 2 = {mod[0] * 1e3:.6g} x {z} / 2 = {_say(rd, radius[pair])}"
+            )
+        elif z is not None:
+            raise rd.error(
+                f"no link {key} in [links] and no module to make its length from its "
+                f'{z} teeth: give module = "4 mm" (or diametral_pitch), or {key} = its '
+                "radius in [links]",
+                "rolling",
+                key,
+            )
+    drivers = _drivers(rd, entries, index, table)
+    for key, p, q, r in drivers:
+        radius[frozenset((p, q))] = r
+    return _arms(rd, entries, (index, radius, table, ground)) + drivers + added
+
+
+def _drivers(rd, entries, index, table):
+    """The gears named only by ``on`` with ``on_teeth`` and a module (a driving gear with
+    no [rolling] entry of its own), left out of [links]: (key, p, q, m z / 2)."""
+    wheels = {frozenset(split_name(k)) for k, _, _ in entries}
+    out = {}
+    for key, spec, _ in entries:
+        on, mod = spec.get("on"), _module(rd, spec, key) or table
+        pts = split_name(on) if isinstance(on, str) else ()
+        pair = frozenset(pts)
+        if len(pts) != 2 or pair in index or pair in wheels or pair in out or mod is None:
+            continue
+        zo = _count(rd, spec, "on_teeth", key)
+        if zo is not None and "on_radius" not in spec:
+            out[pair] = (on, *pts, mod[0] * zo / 2)
+            rd.read_notes.append(
+                f"[links] {on} not given: its length the pitch radius from the teeth, "
+                f"m z / 2 = {mod[0] * 1e3:.6g} x {zo} / 2 = {_say(rd, out[pair][3])}"
+            )
+    return list(out.values())
+
+
+def _arms(rd, entries, known):
+    """The arms left out: a link between the centres of a meshing pair, one moving and
+    held by no stated link but its wheels, as long as the centre distance."""
+    index, radius, table, ground = known
+    wheels = {frozenset(split_name(k)) for k, _, _ in entries}
+    held = {p for pair in index if pair not in wheels for p in pair}
+    for tab in ("points", "sliders"):  # a carried point, a block: held already
+        held.update(rd.raw[tab] if isinstance(rd.raw.get(tab), dict) else ())
+    arms = {}
+    for key, spec, pts in entries:
+        base = _base(rd, key, spec, (radius, table, ground))
+        r = radius.get(frozenset(pts))
+        if base is None or r is None:
+            continue
+        (o, big), a = base, pts[0]
+        moving = [p for p in (o, a) if p not in ground]
+        if len(moving) != 1 or moving[0] in held or frozenset((o, a)) in index:
+            continue
+        d = r - big if spec.get("ring") is True else big - r if spec.get("inside") else r + big
+        o, a = (a, o) if o in moving else (o, a)  # the arm from its fixed end
+        name = f"{o}{a}" if split_name(f"{o}{a}") == (o, a) else f"{o}-{a}"
+        pair = frozenset((o, a))
+        if pair in arms and abs(arms[pair][3] - d) > SAME * d:
+            raise rd.error(
+                f"the arm {name} (not in [links]) is {_say(rd, arms[pair][3])} from one "
+                f"pair's teeth and {_say(rd, d)} from this one's: state {name} in [links]",
+                "rolling",
+                key,
+            )
+        if d > 0 and pair not in arms:
+            arms[pair] = (name, o, a, d)
+            two = (r, big) if spec.get("ring") is True else (big, r)
+            how = " - ".join(_say(rd, x)[: -len(rd.unit) - 1] for x in two)
+            how = how if spec.get("ring") is True or spec.get("inside") else how.replace("-", "+")
+            rd.read_notes.append(
+                f"[links] {name} not given: the arm carrying {a}, its length the centre "
+                f"distance of {key} and the gear it meshes with, from the teeth: {how} = "
+                f"{_say(rd, d)}"
+            )
+    return list(arms.values())
+
+
+def _base(rd, key, spec, known):
+    """(centre, pitch radius) of the gear or fixed circle a wheel meshes with, where the
+    teeth (or stated lengths) give it; else None."""
+    radius, table, ground = known
+    on = spec.get("on")
+    if not isinstance(on, str):
+        return None
+    if "on_radius" in spec:
+        big = rd.length(spec["on_radius"], "rolling", key)
+    elif "on_teeth" in spec and (_module(rd, spec, key) or table):
+        big = (_module(rd, spec, key) or table)[0] * _count(rd, spec, "on_teeth", key) / 2
+    else:
+        big = radius.get(frozenset(split_name(on)))
+    if on in ground:
+        return None if big is None else (on, big)
+    bpts = split_name(on)
+    if len(bpts) != 2 or big is None:
+        return None
+    fixed = [p for p in bpts if p in ground]
+    return (fixed[0] if fixed else bpts[0], big)
+
+
+def _say(rd, x):
+    return f"{x / rd.scale():.6g} {rd.unit}"
