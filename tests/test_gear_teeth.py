@@ -344,3 +344,44 @@ def test_arm_two_pairs_disagree_is_one_line(tmp_path):
     lines = out.stderr.strip().splitlines()
     assert out.returncode == 2 and len(lines) == 1, out.stderr + out.stdout
     assert "[rolling] O-Q" in lines[0] and "the arm OA" in lines[0], lines[0]
+
+
+def _left_out(radius_words="", module='module = "5 mm"'):
+    """The book's epicyclic (sun 40, planet 24, annulus 88 teeth) with [links] left out, the
+    annulus's entry given ``radius_words`` beside its teeth."""
+    text = EPICYCLIC.format(arm=160, rp=60, rr=220, module=module, zp=24, zs=40, zr=88)
+    text = text.replace("OA = 160\n", "").replace("AP = 60\n", "").replace('"O-Q" = 220\n', "")
+    return text.replace("ring = true, teeth = 88", "ring = true, teeth = 88" + radius_words)
+
+
+def test_a_radius_beside_teeth_that_disagrees_is_named_before_any_arm(tmp_path):
+    """An annulus's radius of 200 mm beside 88 teeth of module 5 (220 mm): the radius is what
+    is wrong, so the line names it (it had named an arm of 140 mm made from it)."""
+    out = _run(_left_out(", radius = 200"), tmp_path)
+    lines = out.stderr.strip().splitlines()
+    assert out.returncode == 2 and len(lines) == 1, out.stderr + out.stdout
+    assert "[rolling] O-Q" in lines[0] and "radius is 200 mm" in lines[0], lines[0]
+    assert "220 mm" in lines[0] and "arm" not in lines[0], lines[0]
+
+
+def test_a_radius_beside_teeth_that_agrees_makes_the_link_left_out():
+    """The same radius stated as the teeth make it (220 mm), the annulus left out of
+    [links]: its link that radius, and the train obeys Willis' formula to 1e-12."""
+    sol = solve(parse_scene(_left_out(", radius = 220")))
+    ring = next(lk for lk in sol.scene.links if lk.key == "O-Q")
+    assert ring.length == pytest.approx(0.220, rel=1e-12)
+    w_arm = sol.W["OA"]
+    assert (sol.W["O-Q"] - w_arm) / -w_arm == pytest.approx(-40 / 88, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    "module", ['module = "1e-300 mm"', 'module = "1e9 mm"', "diametral_pitch = 1e300"]
+)
+def test_an_absurd_module_is_one_line(tmp_path, module):
+    """A module (or a diametral pitch) that would make teeth below a tenth of a micrometre
+    or kilometres long is refused in one line naming the module (it had passed to a length
+    of 3e-302 m, refused as an [links] entry the scene never wrote)."""
+    out = _run(_left_out(module=module), tmp_path)
+    lines = out.stderr.strip().splitlines()
+    assert out.returncode == 2 and len(lines) == 1, out.stderr + out.stdout
+    assert "[rolling] module" in lines[0] and "absurd" in lines[0], lines[0]

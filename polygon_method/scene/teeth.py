@@ -19,6 +19,8 @@ import math
 from dataclasses import replace
 
 from ..common.tolerances import SAME
+from .records import _ABSURD_LONG as ABSURD_LONG
+from .records import _ABSURD_SHORT as ABSURD_SHORT
 
 #: the keys this module reads, in an entry of [rolling]
 TEETH_KEYS = ("teeth", "on_teeth", "module", "diametral_pitch")
@@ -50,6 +52,7 @@ def _module(rd, spec, key):
         m = rd.qty(raw, "length", "rolling", key, default_unit="mm").value
         if not 0 < m < math.inf:
             raise rd.error(f"module = {raw!r}: a length above 0", "rolling", key)
+        _sized(rd, m, f"module = {raw!r}", key)
         return m, f"module {m * 1e3:g} mm"
     if "diametral_pitch" in spec:
         p = spec["diametral_pitch"]
@@ -59,8 +62,18 @@ def _module(rd, spec, key):
                 "rolling",
                 key,
             )
+        _sized(rd, _INCH / p, f"diametral_pitch = {p!r}", key)
         return _INCH / p, f"diametral pitch {p:g} per inch (module 25.4 / P = {25.4 / p:.6g} mm)"
     return None
+
+
+def _sized(rd, m, said, key):
+    """Refused where a module (m) would make a gear no mechanism has: a tooth below the
+    shortest length a scene may state, or one longer than the longest."""
+    if not ABSURD_SHORT <= m <= ABSURD_LONG:
+        raise rd.error(
+            f"{said}: a module of {m:g} m is absurd for a gear; check the units", "rolling", key
+        )
 
 
 def _count(rd, spec, name, key):

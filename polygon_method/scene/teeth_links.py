@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from ..common.tolerances import SAME
 from .names import split_name
-from .teeth import _count, _module, table_module
+from .teeth import _agree, _count, _module, table_module
 
 
 def links_from_teeth(rd, index, ground):
@@ -31,6 +31,14 @@ def links_from_teeth(rd, index, ground):
         z = _count(rd, spec, "teeth", key)
         if "radius" in spec:
             radius[pair] = rd.length(spec["radius"], "rolling", key)
+            if z is not None and mod is not None:  # checked before an arm is made of it
+                _agree(rd, key, "radius", radius[pair], mod[0] * z / 2, f"teeth = {z} ({mod[1]})")
+                if pair not in index:  # left out of [links]: its point on the pitch circle
+                    added.append((key, *pts, radius[pair]))
+                    rd.read_notes.append(
+                        f"[links] {key} not given: its length the pitch radius, "
+                        f"{_say(rd, radius[pair])}"
+                    )
         elif pair in index:
             radius[pair] = index[pair].length
         elif z is not None and mod is not None:
