@@ -312,6 +312,9 @@ def test_an_engines_cycle_at_rest_is_the_gas_force_alone_in_every_view(tmp_path,
         assert "at rest: the gas force alone, no inertia (nothing moves)" in out, command
         assert "virtual 1 rad/s: the crank" not in out and "rpm, power" not in out, command
         assert "the speed would be greatest at" in out and "turning slowly" in out, command
+        if command == ["solve"]:  # the instant's efforts: the weight, no inertia
+            assert "reciprocating parts' weight (at rest: no inertia)" in out, command
+            assert "reciprocating parts' inertia" not in out, command
     # sweep --summary's driving torque at rest holds the crank against the gas alone: its
     # words said "with inertia"; its extremes are the closed form's, refined (6 figures)
     assert main(["sweep", "--summary", str(rest)]) == 0

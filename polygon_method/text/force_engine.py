@@ -41,9 +41,12 @@ def engine_lines(sol) -> list:
         return _cylinders_lines(sol, f)
     F, M = scales(sol, f)
     q = lambda v: fmt(quiet(v, F))  # noqa: E731
+    sc = sol.scene  # at rest and not starting: nothing moves, so no inertia (said so)
+    held = bool(sc.at_rest) and not getattr(sc, "start_alpha", 0.0)
+    parts = "weight (at rest: no inertia)" if held else "inertia and weight"
     return [
         f"engine: piston effort F_P = {q(e.F_P)} N (along the line of stroke, towards "
-        f"the crank: the gas force and the reciprocating parts' inertia and weight); "
+        f"the crank: the gas force and the reciprocating parts' {parts}); "
         f"thrust in the rod {e.rod} F_Q = {q(e.F_Q)} N; side thrust on the cylinder "
         f"walls F_N = {q(e.F_N)} N",
         f"engine: crank effort F_T = {q(e.F_T)} N (across the crank {e.crank} at its pin, "
