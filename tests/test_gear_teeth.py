@@ -384,4 +384,5 @@ def test_an_absurd_module_is_one_line(tmp_path, module):
     out = _run(_left_out(module=module), tmp_path)
     lines = out.stderr.strip().splitlines()
     assert out.returncode == 2 and len(lines) == 1, out.stderr + out.stdout
-    assert "[rolling] module" in lines[0] and "absurd" in lines[0], lines[0]
+    said = module.split(" =")[0]  # the key the scene wrote (module or diametral_pitch)
+    assert f"[rolling] {said} (line" in lines[0] and "absurd" in lines[0], lines[0]

@@ -33,7 +33,8 @@ def table_module(rd):
     """The module the [rolling] table states once for all its gears: (m in metres, words)
     or None."""
     raw = rd.raw["rolling"]
-    return _module(rd, {k: raw[k] for k in TABLE_KEYS if k in raw}, "module")
+    said = next((k for k in TABLE_KEYS if k in raw), "module")  # the key a refusal names
+    return _module(rd, {k: raw[k] for k in TABLE_KEYS if k in raw}, said)
 
 
 def _module(rd, spec, key):
@@ -58,7 +59,8 @@ def _module(rd, spec, key):
         p = spec["diametral_pitch"]
         if isinstance(p, bool) or not isinstance(p, (int, float)) or not 0 < p < math.inf:
             raise rd.error(
-                f"diametral_pitch = {p!r}: teeth per inch of pitch diameter, a number above 0",
+                f"diametral_pitch = {p!r}: teeth per inch of pitch diameter, a bare number above 0 "
+                "(diametral_pitch = 10)",
                 "rolling",
                 key,
             )
