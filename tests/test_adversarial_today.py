@@ -44,6 +44,27 @@ speed = "120 rpm ccw"
 RPM = 2 * math.pi / 60
 
 
+@pytest.mark.parametrize(
+    "links",
+    [
+        'OA = 60\nAP = 20\n"O-Q" = 80\n"Q-B" = 150',  # the gear before the ring meshing with it
+        'OA = 60\n"O-Q" = 80\n"Q-B" = 150\nAP = 20',  # the gear written last
+        'OA = 60\n"O-Q" = 80\n"Q-B" = 150',  # the gear left out: from its teeth
+        '"Q-B" = 150',  # the arm, the planet and the ring from the teeth
+    ],
+)
+def test_a_ring_meshing_with_a_gear_written_after_it_is_found(links):
+    # (the ring's point was tried before the planet was placed and never looked at again:
+    # "Q, B cannot be found by the construction steps")
+    sol = solve(parse_scene(RING.format(links=links)))
+    # Willis, the sun fixed: planet = arm (1 + Ts/Tp), ring = arm (1 + Ts/Tr)
+    assert math.isclose(sol.W["AP"], 120 * RPM * (1 + 20 / 10), rel_tol=1e-9)
+    assert math.isclose(sol.W["O-Q"], 120 * RPM * (1 + 20 / 40), rel_tol=1e-9)
+    # the ring's point on its pitch circle, the block's rod closed
+    assert math.isclose(math.dist(sol.P["O"], sol.P["Q"]), 0.08, rel_tol=1e-9)
+    assert math.isclose(math.dist(sol.P["Q"], sol.P["B"]), 0.15, rel_tol=1e-9)
+
+
 def _solve_cli(text, tmp_path, cmd="solve"):
     f = tmp_path / "s.toml"
     f.write_text(text, encoding="utf-8")

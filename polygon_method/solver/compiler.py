@@ -165,7 +165,8 @@ class _Compiler:
         sliders = scene.sliders
         self._sliders = {s.point: s for s in sliders if not s.slot} if sliders else {}
         self._slots = {}  # a peg's point -> its two slots
-        self._guided = {}  # link key -> slider points that slide on it
+        self._guided = {}  # link key -> slider points that slide on it (or a wheel's rim
+        # point meshing with it: found once the gear is, whatever [links]' order)
         self._yokes = {}  # a pin -> the yoke whose slot it slides in
         self.first_tier = first_tier(scene, TIERS[0], NEEDS)  # (TIERS as it is now)
         self._bodies_of = of = {}
@@ -177,6 +178,9 @@ class _Compiler:
                     of[p].append(key)
                 else:
                     of[p] = [key]
+        for pr in scene.rolling or ():
+            if pr.on == "gear" and pr.rim:
+                self._guided.setdefault(scene.link(pr.base).key, []).append(pr.rim)
         if not sliders:
             return
         for s in sliders:
