@@ -3,13 +3,11 @@ student's, with their name and variant), read against the scene it answers."""
 
 from __future__ import annotations
 
-import tomllib
-
 from ..common.errors import PolygonMethodError, SceneError
 from .file_text import MAX_SCENE_BYTES, _path_of, _read_start
 from .loader import _Loader
 from .records import Scene
-from .source import deepest_key, syntax_error, toml_table
+from .source import parsed_table
 from .table_help import _suggest
 
 _ANSWER_FILE_KEYS = ("answers", "title", "student", "name", "notes", "source", "variant")
@@ -68,18 +66,7 @@ def _answer_table(text, scene, file) -> dict:
         raise SceneError(
             f"a Scene is needed to read answers against, not {type(scene).__name__}", file=file
         )
-    try:
-        raw = toml_table(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise syntax_error(str(exc), text, file) from None
-    except RecursionError:
-        raise SceneError(
-            "TOML nested too deeply (brackets or braces inside each other "
-            'hundreds of times); an answer file needs only key = "value" '
-            "lines",
-            file=file,
-            key=deepest_key(text),
-        ) from None
+    raw = parsed_table(text, file, 'an answer file needs only key = "value" lines')
     scene_tables = [k for k in ("ground", "links", "input") if isinstance(raw.get(k), dict)]
     if scene_tables:  # the scene itself, or another, given as the answers
         raise SceneError(

@@ -3,16 +3,13 @@ every failure one :class:`SceneError` naming the file, key and line."""
 
 from __future__ import annotations
 
-import tomllib
-
 from ..common.errors import PolygonMethodError, SceneError
 from .source import (
     LineIndex,  # noqa: F401
-    deepest_key,
     has_long_run as _has_long_run,  # noqa: F401  (its old name)
     key_line,  # noqa: F401
     line_of,  # noqa: F401
-    syntax_error,
+    parsed_table,
     toml_lines,
     toml_table,
 )
@@ -57,18 +54,7 @@ def parse_scene(
         raise SceneError(
             "the file is empty; a scene needs [ground], [links] and [input]", file=file
         )
-    try:
-        raw = toml_table(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise syntax_error(str(exc), text, file) from None
-    except RecursionError:
-        raise SceneError(
-            "TOML nested too deeply (brackets or braces inside each other "
-            "hundreds of times); a scene needs at most [x, y] pairs and small "
-            "tables",
-            file=file,
-            key=deepest_key(text),
-        ) from None
+    raw = parsed_table(text, file, "a scene needs at most [x, y] pairs and small tables")
     if not raw:
         raise SceneError(
             "the file has no tables or keys (only comments); a scene needs "

@@ -223,6 +223,23 @@ def key_line(scene, key: str | None):
     return line_of(toml_lines(scene._text), m.group(1).strip('"'), name)
 
 
+def parsed_table(text: str, file, needs: str) -> dict:
+    """``text``'s TOML table (:func:`toml_table`), or one located :class:`SceneError`: the
+    reader's syntax error at its line, or a nesting too deep for it, with ``needs`` (what the
+    file needs instead, in words) and the deepest key."""
+    try:
+        return toml_table(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise syntax_error(str(exc), text, file) from None
+    except RecursionError:
+        raise SceneError(
+            "TOML nested too deeply (brackets or braces inside each other hundreds of "
+            f"times); {needs}",
+            file=file,
+            key=deepest_key(text),
+        ) from None
+
+
 def syntax_error(msg, text, file) -> SceneError:
     """A TOML decode error as a :class:`SceneError` at its line and column."""
     m = re.search(r"\(at line (\d+), column (\d+)\)", msg)
