@@ -11,6 +11,7 @@ import math
 
 from ..common.numbers import fmt, quiet
 from ..forces.engine import cylinder_efforts, efforts
+from .force_words import holding
 
 __all__ = ["engine_lines", "scales"]
 
@@ -41,9 +42,8 @@ def engine_lines(sol) -> list:
         return _cylinders_lines(sol, f)
     F, M = scales(sol, f)
     q = lambda v: fmt(quiet(v, F))  # noqa: E731
-    sc = sol.scene  # at rest and not starting: nothing moves, so no inertia (said so)
-    held = bool(sc.at_rest) and not getattr(sc, "start_alpha", 0.0)
-    parts = "weight (at rest: no inertia)" if held else "inertia and weight"
+    # at rest and not starting: nothing moves, so no inertia (said so)
+    parts = "weight (at rest: no inertia)" if holding(sol.scene) else "inertia and weight"
     return [
         f"engine: piston effort F_P = {q(e.F_P)} N (along the line of stroke, towards "
         f"the crank: the gas force and the reciprocating parts' {parts}); "
