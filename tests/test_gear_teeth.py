@@ -7,6 +7,7 @@ teeth moves as the same scene with its radii stated by hand. Bad teeth: one line
 import math
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -386,3 +387,17 @@ def test_an_absurd_module_is_one_line(tmp_path, module):
     assert out.returncode == 2 and len(lines) == 1, out.stderr + out.stdout
     said = module.split(" =")[0]  # the key the scene wrote (module or diametral_pitch)
     assert f"[rolling] {said} (line" in lines[0] and "absurd" in lines[0], lines[0]
+
+
+def test_a_wheel_that_does_not_speed_up_has_no_sense_in_the_step_table(capsys):
+    """The arm turning uniformly, Willis' formula makes every wheel's alpha nought (omega a
+    fixed multiple of the arm's): the step table writes it with no sense (it wrote
+    "alpha_AP = 0 rad/s^2 ccw"), as every nought angular quantity is written."""
+    from polygon_method.cli import main
+
+    path = Path(__file__).resolve().parents[1] / "tests" / "textbook"
+    assert main(["steps", str(path / "rattan_epicyclic_by_teeth.toml")]) == 0
+    out = " ".join(capsys.readouterr().out.split())
+    assert "alpha_AP = 0 rad/s^2 from the no-" in out  # (the line may break at its hyphen)
+    assert "alpha_O-Q = 0 rad/s^2 from the no-" in out
+    assert "0 rad/s^2 ccw" not in out and "0 rad/s^2 cw" not in out

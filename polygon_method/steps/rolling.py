@@ -40,6 +40,7 @@ from dataclasses import dataclass
 
 from ..common.tolerances import LEAST_REACH
 from ..common.errors import AssemblyError, SceneError
+from ..common.numbers import sense_word
 from .rolling_contact import RollingContact, circle_rates, line_rates, rim_motion
 from ..scene.teeth import pitch_words
 from .rolling_dims import GAP, arm_rate, follow_params, pair_of, rate, turned, wheel_params
@@ -533,7 +534,7 @@ class RollingWheel(RollingContact, Step):
     def _omega_words(self, sol, w, vI):
         """How omega follows from no slip at the contact I, in the book's words."""
         C, W, r = self.centre, self.wheel, self.dims[1]
-        sense = f"{abs(w):.4g} rad/s {'ccw' if w >= 0 else 'cw'}"
+        sense = f"{abs(w):.4g} rad/s {sense_word(w)}".rstrip()  # (nought: no sense)
         if self.on != "gear":
             return (
                 f"no slip: the wheel's point at the contact I with {self.where} is at rest, "
@@ -588,7 +589,7 @@ class RollingWheel(RollingContact, Step):
             else "the two gears' points at I have one tangential acceleration"
         )
         text = (
-            f"alpha_{W} = {abs(al):.4g} rad/s^2 {'ccw' if al >= 0 else 'cw'} from the no-slip "
+            f"alpha_{W} = {f'{abs(al):.4g} rad/s^2 {sense_word(al)}'.rstrip()} from the no-slip "
             f"relation ({why}); from "
             f"{pole_text(sol, C, ph)} draw the centripetal component {cen.text}, then the "
             f"tangential {tan.text}; its end is {lab(X)}. The contact point I is not at rest "
