@@ -121,10 +121,26 @@ def apply_teeth(rd, key, spec, pair, link, out, table):
     mod = own or scene_module
     if mod is not None:
         m, words = mod
+        made = []  # the teeth made whole from a radius, where the entry states none
+        if z is None and pair.on != "rack":  # the wheel's own, from its stated radius
+            r0, said = _own_radius(rd, key, spec, link)
+            z = _whole(rd, key, r0, mod, said, "teeth = z")
+            made.append(f"{said}: {z} teeth")
+        if zo is None:
+            R0, said, alt = _gear_radius(
+                rd, pair, ground, None if z is None else m * z / 2, "on_radius" in spec
+            )
+            if R0 is not None:
+                zo = _whole(rd, key, R0, mod, said, "on_teeth = z", alt)
+                made.append(f"{said}: {zo} teeth")
         r = None if z is None else m * z / 2
         R = None if zo is None else m * zo / 2
-        note = f"[rolling] {key}: {words}: pitch radius m z / 2 = " + " and ".join(
-            f"{m * 1e3:.6g} x {t} / 2 = {_say(rd, x)}" for t, x in ((z, r), (zo, R)) if t
+        note = (
+            f"[rolling] {key}: {words}: pitch radius m z / 2 = "
+            + " and ".join(
+                f"{m * 1e3:.6g} x {t} / 2 = {_say(rd, x)}" for t, x in ((z, r), (zo, R)) if t
+            )
+            + "".join(f"; {x}" for x in made)
         )
     else:
         r, R, note = _from_centres(rd, key, pair, ground, z, zo)
@@ -142,6 +158,126 @@ def apply_teeth(rd, key, spec, pair, link, out, table):
         radius=pair.radius if r is None else r,
         base_radius=pair.base_radius if R is None else R,
         teeth=(z, zo, None if mod is None else mod[0]),
+        label=pair.label if zo is None else gear_label(pair, zo, out),
+    )
+
+
+def gear_label(pair, zo, out=()):
+    """The gear (or fixed circle) a wheel meshes with, by its ``zo`` teeth, as a book says
+    it: ``the sun of 40 teeth about O``, ``the fixed annulus of 88 teeth about O``, ``the
+    gear O1-A of 20 teeth``, ``the planet AP of 24 teeth`` (a wheel of ``out``, the pairs
+    read before, on a fixed circle), ``the pinion O1-A of 20 teeth`` (a rack's)."""
+    if pair.on == "circle":
+        what = "fixed annulus" if pair.inside else "sun"
+        return f"the {what} of {zo} teeth about {pair.base_centre}"
+    planet = any(r.wheel == pair.base and r.on == "circle" for r in out)
+    what = "pinion" if pair.on == "rack" else "planet" if planet else "gear"
+    return f"the {what} {pair.base} of {zo} teeth"
+
+
+def _own_radius(rd, key, spec, link):
+    """(r, words): the wheel's pitch radius as the scene states it, ``radius`` or else its
+    link's length."""
+    if "radius" in spec:
+        r = rd.length(spec["radius"], "rolling", key)
+        return r, f"{link.key}'s radius {_say(rd, r)}"
+    return link.length, f"{link.key}'s radius {_say(rd, link.length)} (the link {link.key})"
+
+
+def _gear_radius(rd, pair, ground, r, on_radius):
+    """(R, words, alt) of the gear (or fixed circle) a wheel meshes with where the entry
+    gives no ``on_teeth``: its ``on_radius`` (or the earlier wheel's radius), else the
+    centre distance where the scene fixes it (two fixed centres, or the link joining them)
+    less (inside: plus) the wheel's ``r``, as the contact makes it; ``alt(zf)`` the centre
+    distances whole teeth would need. (None, None, None) where neither is known before the
+    mechanism is placed."""
+    what = _gear_words(pair)
+    if pair.base_radius is not None:
+        said = "on_radius" if on_radius else f"the gear {pair.base}'s radius"
+        return pair.base_radius, f"{said} {_say(rd, pair.base_radius)}", None
+    d, arm = _centre_distance(rd, pair, ground)
+    if d is None or r is None:
+        return None, None, None
+    sign = -1 if pair.ring else 1 if pair.inside else 0  # R = d - r, d + r, r - d
+    R = r - d if sign < 0 else d + r if sign > 0 else d - r
+    if R <= 0:
+        return None, None, None  # (the step refuses it: the wheel cannot reach)
+    if sign < 0:  # the wheel a ring about the gear inside it
+        how = f"{pair.wheel}'s {_say(rd, r)} less {arm} = {_say(rd, d)}"
+    else:
+        how = f"{arm} = {_say(rd, d)} {'plus' if sign > 0 else 'less'} {pair.wheel}'s {_say(rd, r)}"
+    words = (
+        f"{what} has no on_teeth or on_radius: its pitch radius from the centre distance, "
+        f"{how} = {_say(rd, R)}"
+    )
+
+    def alt(zf):
+        """The centre distances that would make the gear's teeth the whole numbers either
+        side of ``zf``."""
+        ds = ((t, R * t / zf) for t in (math.floor(zf), math.ceil(zf)) if t >= 1)
+        ok = [
+            f"{_say(rd, d)} ({t} teeth)"
+            for t, Rt in ds
+            for d in [r - Rt if sign < 0 else Rt - r if sign > 0 else Rt + r]
+            if d > 0
+        ]
+        return f", or make {arm} " + " or ".join(ok) if ok else ""
+
+    return R, words, alt
+
+
+def _centre_distance(rd, pair, ground):
+    """(d, its name) of the wheel's centre and its gear's where the scene fixes it before
+    the mechanism is placed (two fixed points, or a link joining them), else (None, None)."""
+    a, b = pair.centre, pair.base_centre
+    if a is None or b is None:
+        return None, None
+    if a in ground and b in ground:
+        return math.dist(ground[a], ground[b]), f"{b}{a}"
+    arm = rd.index.get(frozenset((a, b)))
+    return (None, None) if arm is None else (arm.length, arm.key)
+
+
+def _gear_words(pair):
+    """The gear a wheel meshes with, in words: ``the sun about O``, ``the fixed annulus
+    about O``, ``the gear O1-A``."""
+    if pair.on == "circle":
+        return f"the {'fixed annulus' if pair.inside else 'sun'} about {pair.base_centre}"
+    return f"the {'pinion' if pair.on == 'rack' else 'gear'} {pair.base}"
+
+
+def placed_teeth(pr, R, d, say):
+    """(z, words) of the gear a wheel of pair ``pr`` (given by its teeth and a module)
+    meshes with, where the entry states neither its teeth nor its radius and the centre
+    distance ``d`` is known only once the mechanism is placed (a planet on a coupler's
+    point): ``R`` its pitch radius from it, ``say`` writes a length. ``z`` is None where
+    2 R / m is no whole number: the words are then the refusal's, else the note's."""
+    m = pr.teeth[2]
+    zf = 2 * R / m
+    z = round(zf)
+    how = (
+        f"{_gear_words(pr)} has no on_teeth or on_radius: its pitch radius from the centre "
+        f"distance {pr.base_centre}{pr.centre} = {say(d)} at the stated instant, "
+        f"{say(R)}: {zf:.6g} teeth of module {m * 1e3:.6g} mm"
+    )
+    if z >= 1 and abs(zf - z) <= SAME * zf:
+        return z, f"[rolling] {pr.wheel}: {how.replace(f'{zf:.6g} teeth', f'{z} teeth')}"
+    return None, f"{how} (the pitch diameter over the module), not a whole number: give on_teeth"
+
+
+def _whole(rd, key, x, mod, said, give, alt=None):
+    """The whole number of teeth a pitch radius ``x`` makes with the module: 2 x / m,
+    refused where it is not whole (to :data:`SAME` of it), naming what to give."""
+    m, words = mod
+    zf = 2 * x / m
+    z = round(zf)
+    if z >= 1 and abs(zf - z) <= SAME * zf:
+        return z
+    raise rd.error(
+        f"{said}: {zf:.6g} teeth of {words} (the pitch diameter over the module), not a "
+        f"whole number: give {give}" + ("" if alt is None else alt(zf)),
+        "rolling",
+        key,
     )
 
 

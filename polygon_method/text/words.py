@@ -65,11 +65,12 @@ def _rolling_sentence(sc, r) -> str:
             f"The block {r.rim} is a rack meshing with {r.label}; its point is at "
             f"{_at(sc, sc.slider(r.rim).through)} at the instant shown."
         )
-    if r.on == "gear":
+    if r.teeth:  # gears by their teeth, as a book says them
+        what = _gear_sentence(sc, r)
+    elif r.on == "gear":
         what = (
             f"The {'ring gear' if r.ring else 'gear'} {r.wheel} (centre {r.centre}, "
-            + (f"{r.teeth[0]} teeth, " if r.teeth and r.teeth[0] else "")
-            + f"pitch radius {_len(sc, r.radius)}) meshes {'internally ' if r.inside else ''}with "
+            f"pitch radius {_len(sc, r.radius)}) meshes {'internally ' if r.inside else ''}with "
             f"{r.label}" + (" inside it" if r.ring else "")
         )
     else:
@@ -79,13 +80,11 @@ def _rolling_sentence(sc, r) -> str:
             else f"{'inside' if r.inside else 'outside'} {r.label}"
         )
         what = (
-            f"The wheel {r.wheel} (centre {r.centre}, "
-            + (f"{r.teeth[0]} teeth, " if r.teeth and r.teeth[0] else "")
-            + f"radius {_len(sc, r.radius)}) "
-            f"rolls without slipping {on}"
+            f"The wheel {r.wheel} (centre {r.centre}, radius {_len(sc, r.radius)}) rolls "
+            f"without slipping {on}"
         )
     if r.base_radius:
-        what += f" (radius {_len(sc, r.base_radius)})"
+        what += f" ({'pitch ' if r.teeth else ''}radius {_len(sc, r.base_radius)})"
     return (
         what
         + (
@@ -95,6 +94,18 @@ def _rolling_sentence(sc, r) -> str:
         )
         + "."
         + _grip_sentence(r)
+    )
+
+
+def _gear_sentence(sc, r) -> str:
+    """A gear given by its teeth: ``The planet AP of 24 teeth (centre A, pitch radius 60 mm)
+    meshes with the sun of 40 teeth about O``; a ring ``The ring gear O-Q of 88 teeth
+    (...) meshes internally with the gear AP of 24 teeth inside it``."""
+    noun = "ring gear" if r.ring else "planet" if r.on == "circle" else "gear"
+    return (
+        f"The {noun} {r.wheel} of {r.teeth[0]} teeth (centre {r.centre}, pitch radius "
+        f"{_len(sc, r.radius)}) meshes {'internally ' if r.inside else ''}with {r.label}"
+        + (" inside it" if r.ring else "")
     )
 
 
