@@ -103,7 +103,8 @@ def apply_teeth(rd, key, spec, pair, link, out, table):
     own = _module(rd, spec, key)
     if z is None and zo is None:
         if own is not None:
-            raise rd.error("a module with no teeth: add teeth = z", "rolling", key)
+            add = "on_teeth = z (its pinion's)" if pair.on == "rack" else "teeth = z"
+            raise rd.error(f"a module with no teeth: add {add}", "rolling", key)
         return pair
     if pair.on == "line":
         raise rd.error(
@@ -165,13 +166,21 @@ def apply_teeth(rd, key, spec, pair, link, out, table):
 def gear_label(pair, zo, out=()):
     """The gear (or fixed circle) a wheel meshes with, by its ``zo`` teeth, as a book says
     it: ``the sun of 40 teeth about O``, ``the fixed annulus of 88 teeth about O``, ``the
-    gear O1-A of 20 teeth``, ``the planet AP of 24 teeth`` (a wheel of ``out``, the pairs
-    read before, on a fixed circle), ``the pinion O1-A of 20 teeth`` (a rack's)."""
+    gear O1-A of 20 teeth``, ``the ring gear O-Q of 88 teeth`` (the wheel inside it), ``the
+    planet AP of 24 teeth`` (a wheel of ``out``, the pairs read before, on a fixed circle),
+    ``the gear of 15 teeth keyed to the gear O2-B`` (a second gear on a wheel's shaft: a
+    compound train), ``the pinion O1-A of 20 teeth`` (a rack's)."""
     if pair.on == "circle":
         what = "fixed annulus" if pair.inside else "sun"
         return f"the {what} of {zo} teeth about {pair.base_centre}"
-    planet = any(r.wheel == pair.base and r.on == "circle" for r in out)
-    what = "pinion" if pair.on == "rack" else "planet" if planet else "gear"
+    if pair.on == "rack":
+        return f"the pinion {pair.base} of {zo} teeth"
+    base = next((r for r in out if r.wheel == pair.base), None)
+    what = "planet" if base is not None and base.on == "circle" else "gear"
+    if pair.inside and not pair.ring:
+        what = "ring gear"
+    if base is not None and base.teeth and base.teeth[0] not in (None, zo):
+        return f"the gear of {zo} teeth keyed to the {what} {pair.base}"
     return f"the {what} {pair.base} of {zo} teeth"
 
 

@@ -56,7 +56,8 @@ def links_from_teeth(rd, index, ground):
                 "rolling",
                 key,
             )
-    drivers = _drivers(rd, entries, index, table)
+    racks = [(k, s, ()) for k, s in raw.items() if isinstance(s, dict) and len(split_name(k)) == 1]
+    drivers = _drivers(rd, entries + racks, index, table)
     for key, p, q, r in drivers:
         radius[frozenset((p, q))] = r
     return _arms(rd, entries, (index, radius, table, ground)) + drivers + added
@@ -64,7 +65,8 @@ def links_from_teeth(rd, index, ground):
 
 def _drivers(rd, entries, index, table):
     """The gears named only by ``on`` with ``on_teeth`` and a module (a driving gear with
-    no [rolling] entry of its own), left out of [links]: (key, p, q, m z / 2)."""
+    no [rolling] entry of its own, a rack's pinion), left out of [links]: (key, p, q, m z /
+    2)."""
     wheels = {frozenset(split_name(k)) for k, _, _ in entries}
     out = {}
     for key, spec, _ in entries:
