@@ -51,7 +51,9 @@ def test_steps_say_the_teeth_and_pitch_radii():
 
 
 def test_problem_words_say_the_teeth():
+    """The planet's, the sun's and the annulus's teeth, their pitch radii and the module."""
     lines = given(load_scene(str(BOOK)))
+    assert "The module is 5 mm." in lines, lines
     assert (
         "The planet AP of 24 teeth (centre A, pitch radius 60 mm) meshes with the sun of 40 "
         "teeth about O (pitch radius 100 mm); P is its point in contact at the instant shown."

@@ -109,6 +109,17 @@ def _gear_sentence(sc, r) -> str:
     )
 
 
+def _module_sentence(rolling) -> list:
+    """The gears' module, where they are given by their teeth and one: ``The module is 5
+    mm.`` (each gear's where they differ)."""
+    mods = {r.wheel: r.teeth[2] for r in rolling if r.teeth and r.teeth[2]}
+    if not mods:
+        return []
+    if len(set(mods.values())) == 1:
+        return [f"The module is {fmt(next(iter(mods.values())) * 1e3)} mm."]
+    return ["The modules: " + ", ".join(f"{w} {fmt(m * 1e3)} mm" for w, m in mods.items()) + "."]
+
+
 def _grip_sentence(r) -> str:
     """A friction drive's: the wheels pressed together (no teeth), the friction coefficient."""
     if not r.grip:
@@ -139,6 +150,7 @@ def _shape_sentences(sc) -> list:
         out.append(f"Point {cp.name}: {cp.how}.")  # "on BC, 40 mm from B"
     out += [t for t in (_slider_sentence(sc, s) for s in sc.blocks) if t is not None]
     out += [_rolling_sentence(sc, r) for r in getattr(sc, "rolling", ())]
+    out += _module_sentence(getattr(sc, "rolling", ()))
     for p, hint in sc.assembly.items():
         where = _SIDE.get(hint, hint) if isinstance(hint, str) else f"near {_at(sc, hint)}"
         out.append(f"Of its two positions, {p} is the one {where}.")
