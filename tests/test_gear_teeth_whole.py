@@ -99,7 +99,7 @@ def test_on_radius_with_a_module_is_whole_teeth(tmp_path, more, said, teeth):
     text = PLANET.format(arm=160 if said is None else 163, more=more)
     if said is None:
         sol = solve(parse_scene(text))
-        assert sol.scene.rolling[0].teeth == (24, 40, pytest.approx(5e-3, rel=1e-15))
+        assert sol.scene.rolling[0].teeth == (24, 40, pytest.approx(5e-3, rel=1e-15), None)
         return
     line = _one_line(_run(text, tmp_path))
     assert "[rolling] AP" in line and said in line and f"{teeth} teeth" in line, line

@@ -145,3 +145,26 @@ def test_page_says_the_teeth_in_a_browser(browser, tmp_path):
         assert not any(re.match(r"pitch circle about", t) for t in titles), titles
     finally:
         page.close()
+
+
+def test_a_us_book_says_the_diametral_pitch(capsys, tmp_path):
+    """Diametral pitch 10 per inch, gears of 50 and 20 teeth: the pitch radius z / (2 P) =
+    50 / 20 = 2.5 in (not "m z / 2 = 2.54 x 50 / 2 = 2.5 in", millimetres and inches
+    mixed), in the notes and the step table; the problem's words and the JSON say P."""
+    text = PAIR.format(d=3.5, more=", on_teeth = 20").replace('units = "mm"', 'units = "in"')
+    text = text.replace('module = "4 mm"', "diametral_pitch = 10").replace("30\n", "1\n", 1)
+    text = text.replace('"O3-B" = 100', '"O3-B" = 2.5')
+    sol = solve(parse_scene(text))
+    out = _flat(steps_text(sol))
+    assert "50 teeth, pitch radius z / (2 P) = 50 / (2 x 10) = 2.5 in (" in out, out
+    assert "2.54 x" not in out
+    assert any(
+        "pitch radius z / (2 P) = 50 / (2 x 10) = 2.5 in and 20 / (2 x 10) = 1 in" in n
+        for n in sol.notes
+    ), sol.notes
+    assert "The diametral pitch is 10 per inch." in given(sol.scene)
+    f = tmp_path / "us.toml"
+    f.write_text(text, encoding="utf-8")
+    assert main(["solve", "--json", str(f)]) == 0
+    rec = json.loads(capsys.readouterr().out)["rolling"]["O3-B"]["teeth"]
+    assert rec["diametral_pitch"] == 10 and rec["module"] == pytest.approx(0.0254 / 10, rel=1e-15)

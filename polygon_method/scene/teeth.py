@@ -30,16 +30,16 @@ _INCH = 0.0254
 
 
 def table_module(rd):
-    """The module the [rolling] table states once for all its gears: (m in metres, words)
-    or None."""
+    """The module the [rolling] table states once for all its gears: (m in metres, words,
+    the diametral pitch or None) or None."""
     raw = rd.raw["rolling"]
     said = next((k for k in TABLE_KEYS if k in raw), "module")  # the key a refusal names
     return _module(rd, {k: raw[k] for k in TABLE_KEYS if k in raw}, said)
 
 
 def _module(rd, spec, key):
-    """(m metres, how it was said) from ``module`` or ``diametral_pitch`` in ``spec``, or
-    None."""
+    """(m metres, how it was said, the diametral pitch P or None) from ``module`` or
+    ``diametral_pitch`` in ``spec``, or None."""
     if "module" in spec and "diametral_pitch" in spec:
         raise rd.error(
             "module and diametral_pitch both given: keep one (module = 25.4 / P mm)",
@@ -54,7 +54,7 @@ def _module(rd, spec, key):
         if not 0 < m < math.inf:
             raise rd.error(f"module = {raw!r}: a length above 0", "rolling", key)
         _sized(rd, m, f"module = {raw!r}", key)
-        return m, f"module {m * 1e3:g} mm"
+        return m, f"module {m * 1e3:g} mm", None
     if "diametral_pitch" in spec:
         p = spec["diametral_pitch"]
         if isinstance(p, bool) or not isinstance(p, (int, float)) or not 0 < p < math.inf:
@@ -65,7 +65,8 @@ def _module(rd, spec, key):
                 key,
             )
         _sized(rd, _INCH / p, f"diametral_pitch = {p!r}", key)
-        return _INCH / p, f"diametral pitch {p:g} per inch (module 25.4 / P = {25.4 / p:.6g} mm)"
+        words = f"diametral pitch {p:g} per inch (module 25.4 / P = {25.4 / p:.6g} mm)"
+        return _INCH / p, words, p
     return None
 
 
@@ -121,7 +122,7 @@ def apply_teeth(rd, key, spec, pair, link, out, table):
         zo = next((r.teeth[0] for r in out if r.wheel == pair.base and r.teeth), None)
     mod = own or scene_module
     if mod is not None:
-        m, words = mod
+        m, words, P = mod
         made = []  # the teeth made whole from a radius, where the entry states none
         if z is None and pair.on != "rack":  # the wheel's own, from its stated radius
             r0, said = _own_radius(rd, key, spec, link)
@@ -136,11 +137,10 @@ def apply_teeth(rd, key, spec, pair, link, out, table):
                 made.append(f"{said}: {zo} teeth")
         r = None if z is None else m * z / 2
         R = None if zo is None else m * zo / 2
+        sums = [(t, x) for t, x in ((z, r), (zo, R)) if t]
         note = (
-            f"[rolling] {key}: {words}: pitch radius m z / 2 = "
-            + " and ".join(
-                f"{m * 1e3:.6g} x {t} / 2 = {_say(rd, x)}" for t, x in ((z, r), (zo, R)) if t
-            )
+            f"[rolling] {key}: {words}: pitch radius {formula(m, P)[0]} = "
+            + " and ".join(f"{formula(m, P, t)[1]} = {_say(rd, x)}" for t, x in sums)
             + "".join(f"; {x}" for x in made)
         )
     else:
@@ -158,7 +158,7 @@ def apply_teeth(rd, key, spec, pair, link, out, table):
         pair,
         radius=pair.radius if r is None else r,
         base_radius=pair.base_radius if R is None else R,
-        teeth=(z, zo, None if mod is None else mod[0]),
+        teeth=(z, zo) + ((None, None) if mod is None else mod[::2]),
         label=pair.label if zo is None else gear_label(pair, zo, out),
     )
 
@@ -261,13 +261,14 @@ def placed_teeth(pr, R, d, say):
     distance ``d`` is known only once the mechanism is placed (a planet on a coupler's
     point): ``R`` its pitch radius from it, ``say`` writes a length. ``z`` is None where
     2 R / m is no whole number: the words are then the refusal's, else the note's."""
-    m = pr.teeth[2]
+    m, P = pr.teeth[2:]
     zf = 2 * R / m
     z = round(zf)
     how = (
         f"{_gear_words(pr)} has no on_teeth or on_radius: its pitch radius from the centre "
         f"distance {pr.base_centre}{pr.centre} = {say(d)} at the stated instant, "
-        f"{say(R)}: {zf:.6g} teeth of module {m * 1e3:.6g} mm"
+        f"{say(R)}: {zf:.6g} teeth of "
+        + (f"module {m * 1e3:.6g} mm" if P is None else f"diametral pitch {P:g} per inch")
     )
     if z >= 1 and abs(zf - z) <= SAME * zf:
         return z, f"[rolling] {pr.wheel}: {how.replace(f'{zf:.6g} teeth', f'{z} teeth')}"
@@ -277,7 +278,7 @@ def placed_teeth(pr, R, d, say):
 def _whole(rd, key, x, mod, said, give, alt=None):
     """The whole number of teeth a pitch radius ``x`` makes with the module: 2 x / m,
     refused where it is not whole (to :data:`SAME` of it), naming what to give."""
-    m, words = mod
+    m, words = mod[:2]
     zf = 2 * x / m
     z = round(zf)
     if z >= 1 and abs(zf - z) <= SAME * zf:
@@ -350,17 +351,34 @@ def pitch_words(teeth, r, L):
     the scene gives it by its teeth (``L`` formats a length), else ``radius ...``."""
     if not teeth or teeth[0] is None:
         return f"radius {L(r)}"
-    z, zo, m = teeth
+    z, zo, m, P = teeth
     if m is None:
         return f"{z} teeth, pitch radius from the centre distance and the teeth {L(r)}"
-    return f"{z} teeth, pitch radius m z / 2 = {m * 1e3:.6g} x {z} / 2 = {L(r)}"
+    return f"{z} teeth, pitch radius {' = '.join(formula(m, P, z))} = {L(r)}"
+
+
+def formula(m, P, z=None):
+    """(the pitch radius's formula, its figures for ``z`` teeth): ``("m z / 2", "4 x 50 /
+    2")``, the module in mm as a book quotes it; a US book's ``("z / (2 P)", "50 / (2 x
+    10)")`` where the diametral pitch ``P`` gave it.
+
+    >>> formula(0.004, None, 50), formula(0.00254, 10, 50)
+    (('m z / 2', '4 x 50 / 2'), ('z / (2 P)', '50 / (2 x 10)'))
+    """
+    if P is not None:
+        return "z / (2 P)", f"{z} / (2 x {P:g})"
+    return "m z / 2", f"{m * 1e3:.6g} x {z} / 2"
 
 
 def teeth_records(rolling):
     """The JSON's teeth of each gear given by them, by its link: ``{"teeth": {"teeth": z,
-    "on_teeth": z_o, "module": m (m) or null}}``."""
+    "on_teeth": z_o, "module": m (m) or null}}``, and ``diametral_pitch`` (per inch) where
+    a US book's gave the module."""
     return {
-        r.wheel: {"teeth": dict(zip(("teeth", "on_teeth", "module"), r.teeth))}
+        r.wheel: {
+            "teeth": dict(zip(("teeth", "on_teeth", "module"), r.teeth))
+            | ({} if r.teeth[3] is None else {"diametral_pitch": r.teeth[3]})
+        }
         for r in rolling
         if r.teeth
     }

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from ..common.tolerances import SAME
 from .names import split_name
-from .teeth import _agree, _count, _module, table_module
+from .teeth import _agree, _count, _module, formula, table_module
 
 
 def links_from_teeth(rd, index, ground):
@@ -46,7 +46,7 @@ def links_from_teeth(rd, index, ground):
             added.append((key, *pts, radius[pair]))
             rd.read_notes.append(
                 f"[links] {key} not given: its length the pitch radius from the teeth, "
-                f"m z / 2 = {mod[0] * 1e3:.6g} x {z} / 2 = {_say(rd, radius[pair])}"
+                f"{' = '.join(formula(mod[0], mod[2], z))} = {_say(rd, radius[pair])}"
             )
         elif z is not None:
             raise rd.error(
@@ -80,7 +80,7 @@ def _drivers(rd, entries, index, table):
             out[pair] = (on, *pts, mod[0] * zo / 2)
             rd.read_notes.append(
                 f"[links] {on} not given: its length the pitch radius from the teeth, "
-                f"m z / 2 = {mod[0] * 1e3:.6g} x {zo} / 2 = {_say(rd, out[pair][3])}"
+                f"{' = '.join(formula(mod[0], mod[2], zo))} = {_say(rd, out[pair][3])}"
             )
     return list(out.values())
 

@@ -30,6 +30,7 @@ from ..common.errors import SceneError
 from ..common.numbers import in_units
 from ..common.tolerances import LEAST_REACH, NO_RADIUS, SAME
 from .base import Construction, DirectionLine, Step, Vector, absolute, image_label
+from ..scene.teeth import formula
 from .rolling_dims import angle_of, turned
 from .rounding import EPS, line_rounding
 
@@ -336,7 +337,7 @@ class RackStep(Step):
             f"{self.point}: the rack's point, on its pitch line at {L(abs(self.dims[4]))} "
             f"from {self.base_centre}"
             + (
-                f" (m z / 2 = {self.teeth[2] * 1e3:.6g} x {self.teeth[1]} / 2)"
+                f" ({' = '.join(formula(self.teeth[2], self.teeth[3], self.teeth[1]))})"
                 if self.teeth
                 else ""
             )

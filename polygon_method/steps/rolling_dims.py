@@ -190,7 +190,7 @@ def placed_teeth(g, pr, R):
         return pr.teeth
     if found[1] not in g.notes:
         g.notes.append(found[1])
-    return (pr.teeth[0], found[0], pr.teeth[2])
+    return (pr.teeth[0], found[0], *pr.teeth[2:])
 
 
 def _whole_gear(scene, pr, R, dist, where):

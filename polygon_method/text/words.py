@@ -111,13 +111,19 @@ def _gear_sentence(sc, r) -> str:
 
 def _module_sentence(rolling) -> list:
     """The gears' module, where they are given by their teeth and one: ``The module is 5
-    mm.`` (each gear's where they differ)."""
-    mods = {r.wheel: r.teeth[2] for r in rolling if r.teeth and r.teeth[2]}
-    if not mods:
+    mm.``, ``The diametral pitch is 10 per inch.`` (each gear's where they differ)."""
+    said = {r.wheel: _module_words(*r.teeth[2:]) for r in rolling if r.teeth and r.teeth[2]}
+    if not said:
         return []
-    if len(set(mods.values())) == 1:
-        return [f"The module is {fmt(next(iter(mods.values())) * 1e3)} mm."]
-    return ["The modules: " + ", ".join(f"{w} {fmt(m * 1e3)} mm" for w, m in mods.items()) + "."]
+    if len(set(said.values())) == 1:
+        what, value = next(iter(said.values()))
+        return [f"The {what} is {value}."]
+    return ["The gears' " + ", ".join(f"{w}: {a} {v}" for w, (a, v) in said.items()) + "."]
+
+
+def _module_words(m, P):
+    """(``module``, ``5 mm``) or (``diametral pitch``, ``10 per inch``)."""
+    return ("module", f"{fmt(m * 1e3)} mm") if P is None else ("diametral pitch", f"{P:g} per inch")
 
 
 def _grip_sentence(r) -> str:
