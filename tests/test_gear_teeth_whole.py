@@ -203,3 +203,29 @@ def test_the_centre_distance_known_only_once_placed(tmp_path):
     line = _one_line(_run(PLACED.format(ox=100.0, oy=250.0), tmp_path))
     assert "[rolling] OS" in line and f"{zf:.6g} teeth" in line, line
     assert abs(zf - round(zf)) > 0.1
+
+
+def test_no_arm_and_no_sun_is_one_line_naming_the_planet(tmp_path):
+    """The planet of 24 teeth on a fixed circle about O, neither the sun's teeth nor the
+    arm OA stated: nothing fixes the centre distance; the line names the planet's entry and
+    what to give (it named '[input] crank: no link OA')."""
+    text = PLANET.format(arm=160, more="").replace("[links]\nOA = 160\n", "")
+    line = _one_line(_run(text, tmp_path))
+    assert "[rolling] AP (line" in line and "the arm OA is not in [links]" in line, line
+    assert "give on_teeth" in line, line
+
+
+def test_the_sun_from_the_annulus_and_the_planet():
+    """No arm and no sun's teeth, the annulus of 88 (or 90) teeth on the planet of 24: the
+    arm is r_ring - r_planet = 5 (88 - 24) / 2 = 160 mm (165 mm), the sun 160 - 60 = 100
+    mm, 40 teeth (42: z_r - 2 z_p), and the annulus turns by Willis' formula with them."""
+    for zr in (88, 90):
+        text = PLANET.format(arm=0, more="").replace("[links]\nOA = 0\n", "")
+        text = text.replace(
+            "[input]", f'"O-Q" = {{ on = "AP", ring = true, teeth = {zr} }}\n[input]'
+        )
+        sol = solve(parse_scene(text))
+        zs = zr - 48
+        assert sol.scene.rolling[0].teeth[1] == zs
+        w_arm = sol.W["OA"]
+        assert (sol.W["O-Q"] - w_arm) / -w_arm == pytest.approx(-zs / zr, rel=1e-12)

@@ -124,7 +124,30 @@ def _arms(rd, entries, known):
                 f"distance of {key} and the gear it meshes with, from the teeth: {how} = "
                 f"{_say(rd, d)}"
             )
+    _no_arm(rd, entries, (index, arms, held, ground))
     return list(arms.values())
+
+
+def _no_arm(rd, entries, known):
+    """Refused: a planet on a fixed circle given by its teeth, neither the circle's size
+    (on_teeth, on_radius) nor its arm stated, nor the arm made from another pair's teeth:
+    nothing fixes the centre distance (it was refused as '[input] crank: no link OA')."""
+    index, arms, held, ground = known
+    for key, spec, (a, _) in entries:
+        o = spec.get("on")
+        if o not in ground or a in ground or a in held or "teeth" not in spec:
+            continue
+        arm = frozenset((o, a))
+        if "on_teeth" in spec or "on_radius" in spec or arm in index or arm in arms:
+            continue
+        name = f"{o}{a}" if split_name(f"{o}{a}") == (o, a) else f"{o}-{a}"
+        raise rd.error(
+            f"the arm {name} is not in [links] and the circle about {o} has no on_teeth or "
+            f"on_radius: nothing fixes their centre distance: give on_teeth (its teeth) or "
+            f"{name} in [links]",
+            "rolling",
+            key,
+        )
 
 
 def _base(rd, key, spec, known):
