@@ -316,10 +316,13 @@ def _sliders(sc) -> list:
 
 
 def _rolling_shapes(sol):
-    """``(wheels, lines)``: the pitch circles ([centre, radius]) and the fixed lines
+    """``(wheels, lines)``: the pitch circles ([centre, radius], a gear's [centre, radius,
+    words]: "pitch circle of the sun of 40 teeth about O") and the fixed lines
     wheels roll on ([point, point]), as the steps' shapes give them at the stated instant."""
     shapes = [sh for st in sol.plan.steps for sh in st.shapes(sol.P)]
-    wheels = [[sh[1], float(sh[2])] for sh in shapes if sh[0] == "circle"]  # pitch circles
+    wheels = [  # pitch circles (a gear's with its words: its tooltip)
+        [sh[1], float(sh[2]), *sh[3:]] for sh in shapes if sh[0] == "circle"
+    ]
     lines = [
         [[float(c) for c in sh[1]], [float(c) for c in sh[2]]]
         for sh in shapes

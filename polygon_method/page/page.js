@@ -237,7 +237,7 @@ function setup(phase) {
   if (phase === "configuration") {
     for (const [p, q, c] of D.plates) add(el(svg, "polygon", {class: "plate", fill: D.style.body[0], stroke: D.style.body[1]}, "plate:" + c), "plate", [p, q, c]);
     for (const s of D.sliders) if (s.u) add(el(svg, "line", styled("line"), "guide:" + s.key), "guide", s);
-    for (const w of D.wheels) add(el(svg, "circle", styled("pitch"), "pitch circle about " + w[0]), "pitch", w);
+    for (const w of D.wheels) add(el(svg, "circle", styled("pitch"), w[2] || "pitch circle about " + w[0]), "pitch", w);
     for (const l of D.rollLines) add(el(svg, "line", styled("line"), "the line a wheel rolls on"), "rollline", l);
     for (const [p, q, key] of D.links) add(el(svg, "line", {class: "link", stroke: D.style.body[1], id: "c-link-" + key}, "link:" + key), "link", [p, q, key]);
     for (const s of D.sliders) add(el(svg, "polygon", {class: "block", fill: D.style.body[0], stroke: D.style.body[1]}, "slider:" + s.key), "block", s);
