@@ -39,6 +39,8 @@ __all__ = [
     "link_rates",
     "asked_pairs",
     "asked_dict",
+    "pair_bounds",
+    "bounds_dict",
 ]
 
 #: the answer kinds of two points of one link -> (the kind of their error bound, words)
@@ -234,6 +236,74 @@ def asked_dict(sol) -> dict:
     for key, kind, (x, y) in asked_pairs(sol.scene):
         rec = least_speed(sol, x, y) if kind == "vmin" else components(sol, x, y)
         out[key] = {"value": pair_value(sol, kind, (x, y)), **rec.as_dict()}
+    return {"link_points": out} if out else {}
+
+
+#: the rounding of the few operations from the points' numbers to an answer, in EPS
+_OWN = 8.0
+
+
+def pair_bounds(sol, kind: str, x: str, y: str) -> dict:
+    """The estimated error bound of each number of an asked key's record
+    (:meth:`LeastSpeed.as_dict`, :meth:`Components.as_dict`), each relative to the size of
+    its kind that ``solve --json``'s ``error_bounds.relative_to`` gives (a speed to the
+    velocities', a component to the accelerations', a distance or a place to the
+    positions', omega and alpha to theirs; a fraction of XY is absolute), from the bounds
+    of the points' and the link's own (:attr:`Solution.error_bounds`).
+
+    The velocity of each point of XY is a weighted mean of v_X's and v_Y's, so no point's
+    is off by more than the larger of their two bounds, ``e``: the least speed of the
+    segment neither (a least of numbers each within ``e``); op, at the foot t of XY
+    produced, by ``(|t| + |1 - t|) e``. The foot's place ``t = -v_X . v_YX / |v_YX|^2``
+    moves by at most ``e / |v_YX| + 6 e |v_X| / |v_YX|^2`` (to first order): large where
+    the link barely turns (v_YX = omega XY small). ``omega^2 r``: ``(2 |omega| dw + dw^2) r
+    + omega^2 dr``; ``|alpha| r``: ``r da + |alpha| dr`` (dw, da, dr the bounds of omega,
+    alpha and XY)."""
+    b = sol.error_bounds
+    k = b.scales
+    vs, acc, ps = k["velocity"], k["acceleration"], k["position"]
+    eps = _OWN * 2.0**-53
+    dr = b.P.get(x, 0.0) + b.P.get(y, 0.0)  # XY's error, relative to the positions' size
+    if kind != "vmin":
+        c = components(sol, x, y)
+        key = c.link
+        dw, da = b.W.get(key, 0.0) * k["omega"], b.Al.get(key, 0.0) * k["alpha"]
+        w, al = abs(c.omega), abs(c.alpha)
+        radial = ((2 * w * dw + dw * dw) * c.r + w * w * dr * ps) / acc + eps * c.radial / acc
+        tangential = (da * c.r + al * dr * ps) / acc + eps * c.tangential / acc
+        return {
+            "value": radial if kind == "ar" else tangential,
+            "r": dr + eps,
+            "omega": b.W.get(key, 0.0),
+            "alpha": b.Al.get(key, 0.0),
+            "radial": radial,
+            "tangential": tangential,
+        }
+    ls = least_speed(sol, x, y)
+    e = max(b.V.get(x, 0.0), b.V.get(y, 0.0))
+    out = {"value": e + eps, "speed": e + eps}
+    if ls.fraction is None:  # every point alike: no foot, no place (at no point in particular)
+        out["foot_speed"] = out["speed"]
+        return out
+    t = ls.fraction
+    out["foot_speed"] = (abs(t) + abs(1 - t)) * (e + eps)
+    (bx, by), (cx, cy) = _still(sol, x), _still(sol, y)
+    d = math.hypot(cx - bx, cy - by)  # |v_YX|, not 0: the link turns
+    err = e * vs
+    dt = err / d + 6 * err * math.hypot(bx, by) / (d * d) + eps * (1 + abs(t))
+    out["foot_fraction"] = dt
+    out["fraction"] = dt  # (the foot clipped to the segment: no farther off)
+    where = dt * ls.length / ps
+    out["distance"] = where + ls.at * dr + eps
+    px, py = b.P.get(x, 0.0), b.P.get(y, 0.0)
+    out["position"] = where + (1 - ls.at) * px + ls.at * py + eps
+    return out
+
+
+def bounds_dict(sol) -> dict:
+    """``solve --json``'s ``error_bounds.link_points``: each asked key's bounds
+    (:func:`pair_bounds`); empty where none is asked."""
+    out = {key: pair_bounds(sol, kind, x, y) for key, kind, (x, y) in asked_pairs(sol.scene)}
     return {"link_points": out} if out else {}
 
 

@@ -1,0 +1,218 @@
+"""The answer keys of two points of one link (``vmin_XY``, ``ar_XY``, ``at_XY``) in every
+view: their error bounds in ``solve --json`` (and ``solve``'s lines of estimated errors),
+an answer file asking them (``solve``, ``steps``, ``page --answers``), the sweep's columns
+and summary, and the page's mark of p.
+
+Each against something independent: the 50-digit loop-closure reference
+(tests/reference.py: its velocities, omegas and alphas, the slowest point of XY worked from
+them in mpmath), the rod's instantaneous centre (|omega| times its distance from the rod),
+omega^2 r and alpha r of the reference, central finite differences over the crank angle.
+"""
+
+import json
+from pathlib import Path
+
+import mpmath
+import pytest
+from mpmath import mpf
+
+from polygon_method import parse_scene, solve
+from polygon_method.motion.link_points import least_speed, pair_bounds
+from reference import reference_solution
+
+HERE = Path(__file__).resolve().parent
+BOOK = HERE / "textbook" / "rattan_slider_crank_least_speed.toml"
+
+
+def _slider_crank(angle, answers=""):
+    return f"""
+units = "mm"
+[ground]
+O = [0, 0]
+[links]
+OA = 480
+AB = 1600
+[points]
+E = {{ on = "AB", along = -450 }}
+[sliders]
+B = {{ path = "horizontal", through = "O" }}
+[assembly]
+B = "right"
+[input]
+crank = "OA"
+angle = {angle}
+speed = "20 rad/s ccw"
+acceleration = "30 rad/s^2 cw"
+[answers]
+{answers}
+"""
+
+
+#: a non-Grashof four-bar whose coupler and rocker come into line at 112.0243 deg (a toggle: the dyad's
+#: condition small, every bound of the points it finds large)
+FOURBAR = """
+units = "mm"
+[ground]
+O2 = [0, 0]
+O4 = [300, 0]
+[links]
+"O2-A" = 100
+AB = 250
+"O4-B" = 100
+[points]
+C = {{ on = "AB", distances = {{ A = 150, B = 150 }}, turn = "ccw" }}
+[input]
+crank = "O2-A"
+angle = {angle}
+speed = "12 rad/s cw"
+acceleration = "40 rad/s^2 ccw"
+[assembly]
+B = "above"
+[answers]
+{answers}
+"""
+
+
+def _exact(sol, kind, x, y):
+    """The record's numbers from the 50-digit reference: v_X, v_Y, and the slowest point
+    of XY worked from them (the foot t = -v_X . v_YX / |v_YX|^2 and op = |v_X x v_Y| /
+    |v_YX|), omega^2 XY and |alpha| XY with the reference's omega and alpha."""
+    ref = reference_solution(sol.scene, sol.P)
+    P, V = ref["positions"], ref["velocities"]
+    (px, py), (qx, qy) = P[x], P[y]
+    r = mpmath.hypot(qx - px, qy - py)
+    if kind != "vmin":
+        key = _link(sol, x, y)
+        w, al = ref["omega"][key], ref["alpha"][key]
+        return {
+            "r": r,
+            "omega": w,
+            "alpha": al,
+            "radial": w * w * r,
+            "tangential": abs(al) * r,
+            "value": w * w * r if kind == "ar" else abs(al) * r,
+        }
+    b, c = V[x], V[y]
+    d = (c[0] - b[0], c[1] - b[1])
+    dd = d[0] ** 2 + d[1] ** 2
+    t = -(b[0] * d[0] + b[1] * d[1]) / dd
+    at = min(max(t, mpf(0)), mpf(1))
+    speed = mpmath.hypot(b[0] + at * d[0], b[1] + at * d[1])
+    return {
+        "value": speed,
+        "speed": speed,
+        "foot_speed": abs(b[0] * c[1] - b[1] * c[0]) / mpmath.sqrt(dd),
+        "foot_fraction": t,
+        "fraction": at,
+        "distance": at * r,
+        "position": (px + at * (qx - px), py + at * (qy - py)),
+    }
+
+
+def _link(sol, x, y):
+    for lk in sol.scene.links:
+        on = {lk.p, lk.q} | {c.name for c in sol.scene.points if c.link == lk.key}
+        if {x, y} <= on:
+            return lk.key
+    raise AssertionError((x, y))
+
+
+#: the size each number's bound is relative to (``error_bounds.relative_to``; 1: absolute)
+_SIZE = {
+    "value": None,
+    "speed": "velocity",
+    "foot_speed": "velocity",
+    "foot_fraction": 1,
+    "fraction": 1,
+    "distance": "position",
+    "position": "position",
+    "r": "position",
+    "omega": "omega",
+    "alpha": "alpha",
+    "radial": "acceleration",
+    "tangential": "acceleration",
+}
+
+BOUND_CASES = [
+    (_slider_crank(60), "vmin", "A", "B"),
+    (_slider_crank(160), "vmin", "A", "B"),  # the foot beyond b
+    (_slider_crank("90.0001"), "vmin", "A", "B"),  # the rod barely turns: t far off
+    (_slider_crank("89.99999"), "vmin", "E", "B"),
+    (_slider_crank(60), "ar", "B", "A"),
+    (_slider_crank("90.0001"), "ar", "B", "A"),
+    (_slider_crank(160), "at", "E", "A"),
+    (FOURBAR.format(angle="112.024", answers=""), "vmin", "A", "B"),  # near the toggle
+    (FOURBAR.format(angle="112.024", answers=""), "vmin", "C", "B"),
+    (FOURBAR.format(angle="112.024", answers=""), "ar", "B", "A"),
+    (FOURBAR.format(angle="112.024", answers=""), "at", "C", "A"),
+    (FOURBAR.format(angle=-40, answers=""), "vmin", "A", "C"),
+]
+
+
+@pytest.mark.parametrize(
+    "text,kind,x,y", BOUND_CASES, ids=[f"{c[1]}{c[2]}{c[3]}-{i}" for i, c in enumerate(BOUND_CASES)]
+)
+def test_every_number_of_a_record_is_within_its_bound_of_the_reference(text, kind, x, y):
+    sol = solve(parse_scene(text))
+    got = sol.to_dict()  # (nothing asked: the record's numbers as link_points gives them)
+    from polygon_method.motion.link_points import components
+
+    rec = (least_speed(sol, x, y) if kind == "vmin" else components(sol, x, y)).as_dict()
+    rec["value"] = sol.value(kind, (x, y))
+    bounds = pair_bounds(sol, kind, x, y)
+    sizes = got["error_bounds"]["relative_to"]
+    exact = _exact(sol, kind, x, y)
+    for part, bound in bounds.items():
+        size = _SIZE[part] or ("velocity" if kind == "vmin" else "acceleration")
+        size = 1.0 if size == 1 else sizes[size]
+        want, have = exact[part], rec[part]
+        if part == "position":
+            err = max(abs(float(w) - h) for w, h in zip(want, have))
+        elif part in ("omega", "alpha"):  # (a size: the record's are signed)
+            err = abs(abs(float(want)) - abs(have))
+        else:
+            err = abs(float(want) - have)
+        assert err <= bound * size, (part, err, bound * size)
+
+
+def test_the_bounds_say_where_the_answer_is_uncertain():
+    """Away from trouble every bound is below the promise of 1e-9; where the rod barely
+    turns the foot's place is uncertain (its bound large, the error there real), the
+    speeds not; near the toggle the speeds' bounds grow too."""
+    calm = solve(parse_scene(_slider_crank(60)))
+    assert all(b < 1e-9 for b in pair_bounds(calm, "vmin", "A", "B").values())
+    flat = solve(parse_scene(_slider_crank("90.0001")))
+    b = pair_bounds(flat, "vmin", "A", "B")
+    assert b["foot_fraction"] > 1e-7 and b["speed"] < 1e-13
+    exact = _exact(flat, "vmin", "A", "B")
+    err = abs(float(exact["foot_fraction"]) - least_speed(flat, "A", "B").fraction)
+    assert err > 1e-4 * b["foot_fraction"]  # (the bound within 1e4 of a real error)
+    toggle = solve(parse_scene(FOURBAR.format(angle="112.024", answers="")))
+    assert (
+        pair_bounds(toggle, "vmin", "A", "B")["speed"]
+        > 1e3 * pair_bounds(calm, "vmin", "A", "B")["speed"]
+    )
+
+
+def test_solve_json_gives_each_asked_keys_bounds_and_solve_lists_the_large_ones():
+    text = _slider_crank("90.0001", 'vmin_AB = "9.6 m/s"\nar_BA = "1 m/s^2"')
+    sol = solve(parse_scene(text))
+    d = json.loads(json.dumps(sol.to_dict()))
+    lp = d["error_bounds"]["link_points"]
+    assert set(lp) == {"vmin_AB", "ar_BA"}
+    assert set(lp["vmin_AB"]) == {
+        "value",
+        "speed",
+        "foot_speed",
+        "foot_fraction",
+        "fraction",
+        "distance",
+        "position",
+    }
+    assert lp["ar_BA"]["value"] == lp["ar_BA"]["radial"]
+    from polygon_method.text.report import solution_text
+
+    report = solution_text(sol)
+    tail = report[report.index("estimated error above") :]
+    assert "vmin_AB: where along:" in tail
+    assert "link_points" not in solve(parse_scene(_slider_crank(60))).to_dict()["error_bounds"]
