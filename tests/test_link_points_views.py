@@ -216,3 +216,101 @@ def test_solve_json_gives_each_asked_keys_bounds_and_solve_lists_the_large_ones(
     tail = report[report.index("estimated error above") :]
     assert "vmin_AB: where along:" in tail
     assert "link_points" not in solve(parse_scene(_slider_crank(60))).to_dict()["error_bounds"]
+
+
+# ----------------------------------------------------------------------------- --answers
+
+
+def _rod_least(angle):
+    """The closed form of the rod AB's slowest point of the line AB (Rattan's slider crank
+    of the textbook scene, 480 / 1600 mm, 20 rad/s): |omega_AB| times the distance of the
+    rod's instantaneous centre I (OA produced meets the normal to the stroke at B) from AB."""
+    from reference import reference_slider_crank
+
+    r, l, th = mpf("0.48"), mpf("1.6"), mpmath.radians(angle)
+    ref = reference_slider_crank(r, l, 0, th, 20, 0)
+    A, B = (r * mpmath.cos(th), r * mpmath.sin(th)), (ref["x"], mpf(0))
+    t = B[0] / mpmath.cos(th)
+    ic = (t * mpmath.cos(th), t * mpmath.sin(th))
+    d = (B[0] - A[0], B[1] - A[1])
+    dist = abs(d[0] * (ic[1] - A[1]) - d[1] * (ic[0] - A[0])) / mpmath.hypot(*d)
+    return float(abs(ref["omega_rod"]) * dist)
+
+
+def _book_without_answers(tmp_path):
+    """The textbook scene with its [answers] left out, and a student's answer file asking
+    vmin_EB (E on the rod produced beyond A: the foot falls between E and B) and at_AB."""
+    text = BOOK.read_text()
+    scene = tmp_path / "scene.toml"
+    scene.write_text(text[: text.index("[answers]")])
+    answers = tmp_path / "answers.toml"
+    answers.write_text(
+        'student = "A. Student"\n[answers]\nvmin_EB = "9.3 m/s"\nat_AB = "168 m/s^2"\n'
+    )
+    return scene, answers
+
+
+def _run(*args):
+    from polygon_method.cli import main
+
+    return main([str(a) for a in args])
+
+
+def test_solve_and_steps_show_what_an_answer_file_asks(tmp_path, capsys):
+    scene, answers = _book_without_answers(tmp_path)
+    assert _run("solve", scene) == 0
+    assert "asked of two points" not in capsys.readouterr().out  # the scene asks none
+    assert _run("solve", scene, "--answers", answers) == 0
+    out = capsys.readouterr().out
+    assert "vmin_EB = 9.275 m/s at P on EB" in out and "at_AB = alpha_AB x AB" in out
+    assert _run("solve", scene, "--answers", answers, "--json") == 0
+    d = json.loads(capsys.readouterr().out)
+    want = _rod_least(60)  # the foot between E and B: the line's least is the segment's
+    assert abs(d["link_points"]["vmin_EB"]["value"] - want) <= 1e-9 * want
+    assert d["link_points"]["vmin_EB"]["where"] == "between"
+    assert set(d["error_bounds"]["link_points"]) == {"vmin_EB", "at_AB"}
+    assert _run("steps", scene, "--answers", answers) == 0
+    steps = " ".join(capsys.readouterr().out.split())
+    assert "from o draw op perpendicular to eb, meeting eb at p" in steps
+
+
+def test_the_answer_files_keys_replace_the_scenes(tmp_path, capsys):
+    """As check and page read one: the file's [answers] in place of the scene's."""
+    answers = tmp_path / "answers.toml"
+    answers.write_text('[answers]\nar_EA = "1 m/s^2"\n')
+    assert _run("solve", BOOK, "--json") == 0
+    assert set(json.loads(capsys.readouterr().out)["link_points"]) == {"vmin_AB", "ar_BA", "at_BA"}
+    assert _run("solve", BOOK, "--json", "--answers", answers) == 0
+    assert set(json.loads(capsys.readouterr().out)["link_points"]) == {"ar_EA"}
+
+
+def test_draw_marks_op_where_an_answer_file_asks_vmin(tmp_path, capsys):
+    scene, answers = _book_without_answers(tmp_path)
+    out = tmp_path / "v.svg"
+    assert _run("draw", scene, "--diagram", "velocity", "-o", out) == 0
+    assert "velocity-least" not in out.read_text()
+    assert _run("draw", scene, "--diagram", "velocity", "--answers", answers, "-o", out) == 0
+    assert 'id="velocity-least-E-B-0"' in out.read_text()
+
+
+@pytest.mark.parametrize(
+    "body,words",
+    [
+        ('[answers]\nvmin_OB = "1 m/s"\n', "[answers] vmin_OB (line 2): O and B are not two"),
+        ('[answers]\nvmin_Eb = "1 m/s"\n', "did you mean"),
+        ('variant = "07"\n[answers]\nvmin_AB = "1 m/s"\n', "names variant '07'"),
+    ],
+)
+def test_a_bad_answer_file_is_one_line_naming_it(tmp_path, capsys, body, words):
+    scene, _ = _book_without_answers(tmp_path)
+    bad = tmp_path / "bad.toml"
+    bad.write_text(body)
+    for command in ("solve", "steps"):
+        assert _run(command, scene, "--answers", bad) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and str(bad) in err and words in err, err
+    assert _run("draw", scene, "--answers", bad, "-o", tmp_path / "x.svg") == 2
+    assert not (tmp_path / "x.svg").exists()
+    capsys.readouterr()
+    assert _run("draw", scene, "--animate", "--answers", bad, "-o", tmp_path / "x.gif") == 2
+    assert "--answers" in capsys.readouterr().err
