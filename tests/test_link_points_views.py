@@ -10,6 +10,7 @@ omega^2 r and alpha r of the reference, central finite differences over the cran
 """
 
 import json
+import math
 from pathlib import Path
 
 import mpmath
@@ -314,3 +315,75 @@ def test_a_bad_answer_file_is_one_line_naming_it(tmp_path, capsys, body, words):
     capsys.readouterr()
     assert _run("draw", scene, "--animate", "--answers", bad, "-o", tmp_path / "x.gif") == 2
     assert "--answers" in capsys.readouterr().err
+
+
+# ----------------------------------------------------------------------------- sweep
+
+
+def _csv(path):
+    import csv
+
+    with open(path) as f:
+        rows = list(csv.reader(f))
+    head = [h.split(" [")[0] for h in rows[0]]
+    return [dict(zip(head, r)) for r in rows[1:]]
+
+
+def test_the_sweeps_columns_against_the_closed_form_at_every_angle(tmp_path, capsys):
+    """vmin_AB by a golden-section search over the rod's points, their velocities from the
+    closed form's v_A (omega r) and v_B (its x differentiated), at every 15 deg; where
+    along, and ar_BA, at_BA as omega_rod^2 l and |alpha_rod| l of the closed form."""
+    from reference import reference_slider_crank
+    from test_least_speed_and_components import _brute_least
+
+    out = tmp_path / "s.csv"
+    assert _run("sweep", BOOK, "--steps", 24, "--csv", out) == 0
+    rows = _csv(out)
+    assert len(rows) == 24 and {"vmin_AB", "vmin_AB_from_A", "ar_BA", "at_BA"} <= set(rows[0])
+    r, l, w = mpf("0.48"), mpf("1.6"), 20
+    for row in rows:
+        th = mpmath.radians(mpf(row["theta"]))
+        ref = reference_slider_crank(r, l, 0, th, w, 0)
+        va = (-w * r * mpmath.sin(th), w * r * mpmath.cos(th))
+        vb = (ref["v"], mpf(0))
+        s, v = _brute_least(None, None, va, vb)
+        assert abs(float(row["vmin_AB"]) - float(v)) <= 1e-9 * 9.6, row["theta"]
+        assert abs(float(row["ar_BA"]) - float(ref["omega_rod"] ** 2 * l)) <= 1e-9 * 57.6
+        assert abs(float(row["at_BA"]) - float(abs(ref["alpha_rod"]) * l)) <= 1e-9 * 210
+        if abs(ref["omega_rod"]) < 1e-9:  # 90 and 270 deg: the rod does not turn
+            assert row["vmin_AB_from_A"] == "", row
+        else:
+            assert abs(float(row["vmin_AB_from_A"]) - float(s * l)) < 1e-6
+    assert any(row["vmin_AB_from_A"] == "" for row in rows)  # (the cases cover it)
+    assert any(0.1 < float(row["vmin_AB_from_A"] or 0) < 1.5 for row in rows)  # between
+
+
+def test_the_summarys_extremes_against_the_closed_form():
+    """omega_rod^2 l is greatest at the dead centres, (r omega)^2 / l; |alpha_rod| l at 90
+    deg, l r omega^2 / sqrt(l^2 - r^2); the least speed of the rod is 0 at the inner dead
+    centre (the piston at rest) and at most v_A = r omega."""
+    from polygon_method import load_scene
+    from polygon_method.linkage.summary import summarize
+
+    got = {e.name: e for e in summarize(load_scene(BOOK, answers=False)).extremes}
+    r, l, w = 0.48, 1.6, 20.0
+    assert abs(got["ar_BA"].maximum - (r * w) ** 2 / l) <= 1e-9 * 57.6
+    assert got["ar_BA"].at_max % 180 == pytest.approx(0, abs=1e-6)
+    want = l * r * w * w / math.sqrt(l * l - r * r)
+    assert abs(got["at_BA"].maximum - want) <= 1e-9 * want
+    assert got["at_BA"].at_max % 180 == pytest.approx(90, abs=1e-6)
+    assert got["vmin_AB"].minimum == 0 and got["vmin_AB"].at_min == pytest.approx(0, abs=1e-6)
+    assert abs(got["vmin_AB"].maximum - r * w) <= 1e-9 * r * w
+    assert "least speed of a point of AB" in got["vmin_AB"].what
+
+
+def test_a_sweep_without_the_keys_asked_has_no_such_column(tmp_path, capsys):
+    scene, answers = _book_without_answers(tmp_path)
+    out = tmp_path / "s.csv"
+    assert _run("sweep", scene, "--steps", 4, "--csv", out) == 0
+    assert "vmin" not in out.read_text().splitlines()[0]
+    assert _run("sweep", scene, "--steps", 4, "--csv", out, "--answers", answers) == 0
+    head = out.read_text().splitlines()[0]
+    assert "vmin_EB [m/s],vmin_EB_from_E [m]" in head and "at_AB [m/s^2]" in head
+    assert _run("sweep", scene, "--summary", "--answers", answers) == 0
+    assert "least speed of a point of EB" in capsys.readouterr().out

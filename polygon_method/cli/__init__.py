@@ -236,6 +236,7 @@ def _add_sweep(sub) -> None:
     s.add_argument(
         "--summary", action="store_true", help="maxima and minima with their crank angles"
     )
+    s.add_argument("--answers", help=ASKED_HELP)
     s.set_defaults(func=_cmd_sweep)
 
 

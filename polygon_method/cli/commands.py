@@ -425,15 +425,9 @@ def _requested_places(args, scene, ranged):
     return stroke_places(scene, n)
 
 
-def _cmd_sweep(args) -> int:
-    """``polygon-method sweep SCENE [--steps N | --from A --to B --step S] [--csv FILE]
-    [--plot FILE.svg] [--summary]``: print the summary; the CSV and the plot are written by
-    ``write_output`` (whole or not at all)."""
-    from ..scene import load_scene
-    from ..linkage.cycle import sweep_aliased
-    from ..linkage.summary import summarize, summary_of
-    from ..motion.sweeps import sweep
-
+def _sweep_flags(args):
+    """``sweep``'s options that go together checked (a flag never silently ignored): the
+    plot's file name, given back."""
     plot = getattr(args, "plot", None)
     if plot and not plot.lower().endswith((".svg", ".png", ".pdf")):
         raise SceneError(f"--plot {plot}: the file must end in .svg, .png or .pdf")
@@ -446,14 +440,29 @@ def _cmd_sweep(args) -> int:
         raise SceneError(
             "--error-bound adds a column to the CSV: give --csv FILE as well", key="--error-bound"
         )
+    return plot
+
+
+def _cmd_sweep(args) -> int:
+    """``polygon-method sweep SCENE [--steps N | --from A --to B --step S] [--csv FILE]
+    [--plot FILE.svg] [--summary]``: print the summary; the CSV and the plot are written by
+    ``write_output`` (whole or not at all)."""
+    from ..scene import load_scene
+    from ..linkage.cycle import sweep_aliased
+    from ..linkage.summary import summarize, summary_of
+    from ..motion.sweeps import sweep
+
+    plot = _sweep_flags(args)
     to_stdout = bool(args.csv) and is_stdout(args.csv)  # (-, /dev/stdout: the words on stderr)
     wanted = [
         (path, option)
         for path, option in ((None if to_stdout else args.csv, "--csv"), (plot, "--plot"))
         if path
     ]
-    targets = check_outputs(wanted, protect=[args.scene])
-    scene = load_scene(args.scene, variants=False, answers=False)
+    targets = check_outputs(wanted, protect=[args.scene, getattr(args, "answers", None)])
+    from .asked import asked_scene
+
+    scene = asked_scene(args, load_scene(args.scene, variants=False, answers=False))
     check_cylinders(scene)
     angles = _requested_angles(args, scene)
     if args.csv:

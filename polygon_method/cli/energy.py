@@ -228,6 +228,7 @@ def _draw(args, scene) -> int:
 
 
 def _sweep(args, scene) -> int:
+    _shows_all(args, "sweep")
     for flag in ("start", "stop", "step", "points", "links", "error_bound"):
         if getattr(args, flag, None) not in (None, False):
             name = {"start": "from", "stop": "to"}.get(flag, flag).replace("_", "-")

@@ -36,6 +36,9 @@ __all__ = [
     "components",
     "pair_value",
     "segment_least",
+    "segment_slowest",
+    "pair_quantities",
+    "pair_columns",
     "link_rates",
     "asked_pairs",
     "asked_dict",
@@ -143,6 +146,12 @@ def segment_least(vx, vy):
     """The least speed of the points of a segment whose ends move at ``vx`` and ``vy``
     (floats, or arrays of many drawn mechanisms): ``|v_X + t v_YX|`` at the foot t
     clipped to [0, 1]; ``|v_X|`` where the ends move alike."""
+    return segment_slowest(vx, vy)[1]
+
+
+def segment_slowest(vx, vy) -> tuple:
+    """(t, speed): the fraction along XY of the slowest point of the segment (the foot
+    clipped to [0, 1]; 0 where the ends move alike) and its speed (:func:`segment_least`)."""
     import numpy as np
 
     (bx, by), (cx, cy) = vx, vy
@@ -151,7 +160,52 @@ def segment_least(vx, vy):
     with np.errstate(all="ignore"):
         t = np.where(dd > 0, -(bx * dx + by * dy) / np.where(dd > 0, dd, 1.0), 0.0)
     t = np.clip(t, 0.0, 1.0)
-    return np.hypot(bx + t * dx, by + t * dy)
+    return t, np.hypot(bx + t * dx, by + t * dy)
+
+
+#: the words of each kind in sweep --summary's table
+_SUMMARY_WORDS = {
+    "vmin": "least speed of a point of {0}{1}",
+    "ar": "radial comp. of {0} rel. {1}, omega^2 r",
+    "at": "tangential comp. of {0} rel. {1}, alpha r",
+}
+
+
+def pair_quantities(scene, m):
+    """(key, unit, array, words) of each asked key over the crank angles of the motion
+    ``m`` (a sweep's, or its chunk's): what ``sweep --summary`` takes the extremes of."""
+    for key, kind, (x, y) in asked_pairs(scene):
+        if kind == "vmin":
+            value, unit = segment_least(m.V[x], m.V[y]), "m/s"
+        else:
+            value, unit = link_rates(scene, m.W, m.Al, m.P, x, y)[kind == "at"], "m/s^2"
+        yield key, unit, value, _SUMMARY_WORDS[kind].format(x, y)
+
+
+def pair_columns(res) -> list:
+    """``sweep --csv``'s columns (name, unit, array) of each asked key: its value; for
+    ``vmin_XY`` also ``vmin_XY_from_X``, the slowest point's distance from X along XY (m),
+    an empty cell where the link does not turn (its omega within its own error bound:
+    every point alike, at no point in particular)."""
+    import numpy as np
+
+    from ..solver.errorbound import USELESS
+
+    cols, eb = [], None
+    for key, unit, value, _ in pair_quantities(res.scene, res):
+        cols.append((key, unit, value))
+        kind, (x, y) = next((k, n) for c, k, n in asked_pairs(res.scene) if c == key)
+        if kind != "vmin":
+            continue
+        eb = res.error_bounds if eb is None else eb
+        link = common_link(res.scene, x, y).key
+        e = np.broadcast_to(np.asarray(eb.W.get(link, 0.0), dtype=float), np.shape(res.theta))
+        still = np.abs(res.W[link]) <= np.where(e < USELESS, e * eb.scales["omega"], 0.0)
+        t, _ = segment_slowest(res.V[x], res.V[y])
+        (px, py), (qx, qy) = res.P[x], res.P[y]
+        far = np.broadcast_to(t * np.hypot(np.subtract(qx, px), np.subtract(qy, py)), still.shape)
+        cols.append((f"{key}_from_{x}", "m", np.ma.masked_array(far, mask=still)))
+    return cols
 
 
 def link_rates(scene, W, Al, P, x: str, y: str) -> tuple:
