@@ -387,3 +387,108 @@ def test_a_sweep_without_the_keys_asked_has_no_such_column(tmp_path, capsys):
     assert "vmin_EB [m/s],vmin_EB_from_E [m]" in head and "at_AB [m/s^2]" in head
     assert _run("sweep", scene, "--summary", "--answers", answers) == 0
     assert "least speed of a point of EB" in capsys.readouterr().out
+
+
+# ----------------------------------------------------------------------------- the page
+
+
+def _page_of(tmp_path, name, *args):
+    out = tmp_path / f"{name}.html"
+    assert _run("page", *args, "--frames", 36, "-o", out) == 0
+    return out
+
+
+def _opened(browser, path, width):
+    page = browser.new_page(viewport={"width": width, "height": 900})
+    errors = []
+    page.on("pageerror", lambda e: errors.append(str(e)))
+    page.on("console", lambda m: m.type in ("error", "warning") and errors.append(m.text))
+    page.goto(path.as_uri())
+    return page, errors
+
+
+def _slide(page, k):
+    page.evaluate(
+        "(k) => { const s = document.getElementById('angle'); s.value = k; "
+        "s.dispatchEvent(new Event('input')); }",
+        k,
+    )
+
+
+def _closed_form_foot(degrees):
+    """The rod's velocities by the closed form (v_A = omega r across OA, v_B = omega dx/dth),
+    and from them the foot t of the perpendicular from o to ab, p's image and the least
+    speed of the rod by a golden-section search over its points (s, speed)."""
+    from reference import reference_slider_crank
+    from test_least_speed_and_components import _brute_least
+
+    r, l, w = mpf("0.48"), mpf("1.6"), 20
+    th = mpmath.radians(mpf(degrees))
+    ref = reference_slider_crank(r, l, 0, th, w, 0)
+    va, vb = (-w * r * mpmath.sin(th), w * r * mpmath.cos(th)), (ref["v"], mpf(0))
+    d = (vb[0] - va[0], vb[1] - va[1])
+    t = -(va[0] * d[0] + va[1] * d[1]) / (d[0] ** 2 + d[1] ** 2)
+    s, v = _brute_least(None, None, va, vb)
+    foot = (float(va[0] + t * d[0]), float(va[1] + t * d[1]))
+    return float(t), foot, float(s * l), float(v), float(ref["omega_rod"])
+
+
+@pytest.mark.parametrize("width", [1280, 390])
+def test_the_page_marks_p_where_vmin_is_asked(browser, tmp_path, width):
+    """In headless Chromium: at 60 deg p between a and b, at 160 deg beyond b (ab produced
+    to it), at 90 deg none (the rod does not turn); op drawn to p's image as the closed form
+    puts it, at the panel's scale; the values row and the tooltip say the least speed and
+    where; nothing sideways on a phone."""
+    path = _page_of(tmp_path, "book", BOOK)
+    page, errors = _opened(browser, path, width)
+    data = json.loads(page.evaluate("document.getElementById('frames').textContent"))
+    assert data["theta"][0] == 60 and len(data["least"]) == 1
+    for k, where in ((0, "between"), (10, "beyond"), (3, "still")):
+        _slide(page, k)
+        deg = data["theta"][k]
+        t, foot, dist, least, w_rod = _closed_form_foot(deg)
+        row = page.text_content("#val-least-vmin_AB")
+        op = page.query_selector("#v-least-op-vmin_AB")
+        ext = page.query_selector("#v-least-ext-vmin_AB")
+        speed = float(row.split()[0])
+        assert abs(speed - least) <= 5e-4 * least, (deg, row)  # (four figures)
+        if where == "still":
+            assert abs(w_rod) < 1e-12 and not op.is_visible() and "does not turn" in row
+            continue
+        per = float(page.get_attribute("#velocity", "data-per-cm")) / 10  # SI per mm
+        x2, y2 = (float(op.get_attribute(a)) for a in ("x2", "y2"))
+        assert op.is_visible() and abs(x2 - foot[0] / per) < 2e-3 and abs(y2 + foot[1] / per) < 2e-3
+        assert ext.is_visible() == (where == "beyond") and (t > 1) == (where == "beyond")
+        if where == "between":  # AP in the scene's mm, four figures
+            assert abs(float(row.split("AP = ")[1].split()[0]) - dist * 1000) < 0.05, row
+        else:
+            assert "at the end B (p falls beyond b)" in row
+        tip = page.evaluate("document.querySelector('#v-least-dot-vmin_AB title').textContent")
+        assert tip.startswith("vmin_AB = ") and "op = " in tip
+        label = page.query_selector("#v-least-lab-vmin_AB")
+        assert label.is_visible() and label.text_content().endswith("p")
+    if width == 390:  # a phone: the page does not scroll sideways
+        assert page.evaluate("document.documentElement.scrollWidth") <= 390
+    page.query_selector("#velocity").screenshot(path=str(tmp_path / f"velocity-{width}.png"))
+    assert errors == []
+    page.close()
+
+
+def test_the_page_marks_what_an_answer_file_asks_and_nothing_unasked(browser, tmp_path):
+    scene, answers = _book_without_answers(tmp_path)
+    bare = _page_of(tmp_path, "bare", scene)
+    page, errors = _opened(browser, bare, 1280)
+    assert page.query_selector("[id^=v-least]") is None
+    page.close()
+    asked = _page_of(tmp_path, "asked", scene, "--answers", answers)
+    page, errors = _opened(browser, asked, 1280)
+    t, foot, dist, least, _ = _closed_form_foot(60)
+    e = page.query_selector("#v-least-op-vmin_EB")
+    assert e.is_visible()
+    row = page.text_content("#val-least-vmin_EB")
+    assert abs(float(row.split()[0]) - least) <= 5e-4 * least  # the foot lies between E and B
+    assert "EP = " in row
+    steps = " ".join(page.text_content("body").split())
+    assert "from o draw op perpendicular to eb" in steps
+    assert errors == []
+    page.close()

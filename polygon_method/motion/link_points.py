@@ -39,6 +39,8 @@ __all__ = [
     "segment_slowest",
     "pair_quantities",
     "pair_columns",
+    "Feet",
+    "feet_over",
     "link_rates",
     "asked_pairs",
     "asked_dict",
@@ -189,23 +191,68 @@ def pair_columns(res) -> list:
     every point alike, at no point in particular)."""
     import numpy as np
 
-    from ..solver.errorbound import USELESS
-
-    cols, eb = [], None
+    cols, feet = [], {f.key: f for f in feet_over(res)}
     for key, unit, value, _ in pair_quantities(res.scene, res):
         cols.append((key, unit, value))
-        kind, (x, y) = next((k, n) for c, k, n in asked_pairs(res.scene) if c == key)
-        if kind != "vmin":
-            continue
-        eb = res.error_bounds if eb is None else eb
-        link = common_link(res.scene, x, y).key
-        e = np.broadcast_to(np.asarray(eb.W.get(link, 0.0), dtype=float), np.shape(res.theta))
-        still = np.abs(res.W[link]) <= np.where(e < USELESS, e * eb.scales["omega"], 0.0)
-        t, _ = segment_slowest(res.V[x], res.V[y])
-        (px, py), (qx, qy) = res.P[x], res.P[y]
-        far = np.broadcast_to(t * np.hypot(np.subtract(qx, px), np.subtract(qy, py)), still.shape)
-        cols.append((f"{key}_from_{x}", "m", np.ma.masked_array(far, mask=still)))
+        f = feet.get(key)
+        if f is not None:
+            cols.append((f"{key}_from_{f.x}", "m", np.ma.masked_array(f.distance, mask=f.still)))
     return cols
+
+
+@dataclass(frozen=True)
+class Feet:
+    """A ``vmin_XY`` asked, over the crank angles of a sweep (arrays): ``t`` the foot p of
+    the perpendicular from o to xy as a fraction of XY from X (unclipped: beyond an end where
+    outside [0, 1]), ``foot`` its image (v_X + t v_YX: (x, y), m/s), ``speed`` the least speed
+    of the segment, ``distance`` the slowest point's distance from X (m), ``still`` where the
+    link does not turn (its omega within its own error bound: no foot, every point alike),
+    ``noise`` the speed's absolute error bound (:func:`pair_bounds`' ``speed``; 0 where it is
+    no useful bound)."""
+
+    key: str
+    x: str
+    y: str
+    t: object
+    foot: tuple
+    speed: object
+    distance: object
+    still: object
+    noise: object
+
+
+def feet_over(res) -> list:
+    """The :class:`Feet` of each ``vmin_XY`` asked of the sweep ``res`` (``sweep --csv``'s
+    columns, the page's mark of p)."""
+    import numpy as np
+
+    from ..solver.errorbound import USELESS
+
+    asked = [(key, x, y) for key, kind, (x, y) in asked_pairs(res.scene) if kind == "vmin"]
+    if not asked:
+        return []
+    eb, n, out = res.error_bounds, np.shape(res.theta), []
+    for key, x, y in asked:
+        link = common_link(res.scene, x, y).key
+        e = np.broadcast_to(np.asarray(eb.W.get(link, 0.0), dtype=float), n)
+        still = np.abs(res.W[link]) <= np.where(e < USELESS, e * eb.scales["omega"], 0.0)
+        vel = (*res.V[x], *res.V[y])
+        bx, by, cx, cy = (np.broadcast_to(np.asarray(c, dtype=float), n) for c in vel)
+        dx, dy = cx - bx, cy - by
+        dd = np.where(still, 1.0, dx * dx + dy * dy)
+        with np.errstate(all="ignore"):
+            t = np.where(still | (dd == 0), 0.0, -(bx * dx + by * dy) / dd)
+        at, speed = segment_slowest((bx, by), (cx, cy))
+        (px, py), (qx, qy) = res.P[x], res.P[y]
+        length = np.hypot(np.subtract(qx, px), np.subtract(qy, py))
+        far = np.broadcast_to(np.where(still, 0.0, at) * length, n)
+        foot = (bx + t * dx, by + t * dy)
+        ev = np.maximum(
+            *(np.broadcast_to(np.asarray(eb.V.get(p, 0.0), dtype=float), n) for p in (x, y))
+        )
+        noise = np.where(ev < USELESS, ev * eb.scales["velocity"], 0.0)
+        out.append(Feet(key, x, y, t, foot, np.broadcast_to(speed, n), far, still, noise))
+    return out
 
 
 def link_rates(scene, W, Al, P, x: str, y: str) -> tuple:
