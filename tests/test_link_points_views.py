@@ -439,6 +439,8 @@ def test_the_page_marks_p_where_vmin_is_asked(browser, tmp_path, width):
     to it), at 90 deg none (the rod does not turn); op drawn to p's image as the closed form
     puts it, at the panel's scale; the values row and the tooltip say the least speed and
     where; nothing sideways on a phone."""
+    from reference import reference_slider_crank
+
     path = _page_of(tmp_path, "book", BOOK)
     page, errors = _opened(browser, path, width)
     data = json.loads(page.evaluate("document.getElementById('frames').textContent"))
@@ -452,6 +454,10 @@ def test_the_page_marks_p_where_vmin_is_asked(browser, tmp_path, width):
         ext = page.query_selector("#v-least-ext-vmin_AB")
         speed = float(row.split()[0])
         assert abs(speed - least) <= 5e-4 * least, (deg, row)  # (four figures)
+        ref = reference_slider_crank(mpf("0.48"), mpf("1.6"), 0, mpmath.radians(mpf(deg)), 20, 0)
+        for key, want in (("ar_BA", ref["omega_rod"] ** 2), ("at_BA", abs(ref["alpha_rod"]))):
+            shown = page.text_content(f"#val-asked-{key}").split()[0]
+            assert abs(float(shown) - float(want) * 1.6) <= 5e-4 * float(want) * 1.6 + 1e-12
         if where == "still":
             assert abs(w_rod) < 1e-12 and not op.is_visible() and "does not turn" in row
             continue
@@ -467,6 +473,11 @@ def test_the_page_marks_p_where_vmin_is_asked(browser, tmp_path, width):
         assert tip.startswith("vmin_AB = ") and "op = " in tip
         label = page.query_selector("#v-least-lab-vmin_AB")
         assert label.is_visible() and label.text_content().endswith("p")
+    plotted = page.evaluate(
+        "[...document.querySelectorAll('#plot-v .series title, #plot-a .series title')]"
+        ".map((t) => t.textContent)"
+    )
+    assert "min,AB" in plotted and "BA" in plotted  # v_min,AB; ar_BA and at_BA
     if width == 390:  # a phone: the page does not scroll sideways
         assert page.evaluate("document.documentElement.scrollWidth") <= 390
     page.query_selector("#velocity").screenshot(path=str(tmp_path / f"velocity-{width}.png"))
@@ -492,3 +503,24 @@ def test_the_page_marks_what_an_answer_file_asks_and_nothing_unasked(browser, tm
     assert "from o draw op perpendicular to eb" in steps
     assert errors == []
     page.close()
+
+
+def test_sweep_plot_draws_them_beside_the_speeds_and_accelerations():
+    """sweep --plot: v_min,AB among the speeds, a^r_BA and a^t_BA among the accelerations,
+    each curve the closed form's at its angles."""
+    import numpy as np
+
+    from polygon_method import load_scene
+    from polygon_method.draw.plots import plot_figure
+    from polygon_method.motion.sweeps import sweep
+
+    res = sweep(load_scene(BOOK, answers=False), np.radians(np.arange(0.0, 360.0, 30.0)))
+    fig = plot_figure(res)
+    lines = {ln.get_label(): ln for ax in fig.axes for ln in ax.get_lines()}
+    vmin, ar = lines["$v_{\\mathrm{min,AB}}$"], lines["$a^{r}_{\\mathrm{BA}}$"]
+    assert "$a^{t}_{\\mathrm{BA}}$" in lines
+    for deg, v, a in zip(vmin.get_xdata(), vmin.get_ydata(), ar.get_ydata()):
+        _, _, _, least, w_rod = _closed_form_foot(deg)
+        assert abs(v - least) <= 1e-9 * 9.6, deg
+        assert abs(a - w_rod**2 * 1.6) <= 1e-9 * 57.6, deg
+    assert len(vmin.get_xdata()) == 12

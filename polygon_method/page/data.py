@@ -35,7 +35,7 @@ from ..polygons.scales import DIAGRAMS, display_unit
 from ..scene import Link
 from ..steps import image_name, slot_labels, under_label
 from ..steps.relations import rigid_acceleration
-from ..motion.link_points import feet_over
+from ..motion.link_points import asked_pairs, feet_over, pair_quantities
 from ..text.link_points import foot_name
 from .force_layer import FORCES_CM, force_layers, offset_points
 from .frames import Frames, round_sig
@@ -245,6 +245,23 @@ def _least(sol, res) -> list:
     return out
 
 
+def _components(sc, res) -> list:
+    """Each ``ar_XY``, ``at_XY`` the answers ask, per frame: its key, kind and points, and its
+    values (omega^2 XY, |alpha| XY: :func:`..motion.link_points.pair_quantities`, m/s^2)."""
+    kinds = {key: (kind, names) for key, kind, names in asked_pairs(sc)}
+    return [
+        {
+            "key": key,
+            "kind": kinds[key][0],
+            "x": kinds[key][1][0],
+            "y": kinds[key][1][1],
+            "values": round_sig(np.broadcast_to(value, np.shape(res.theta))),
+        }
+        for key, unit, value, _ in pair_quantities(sc, res)
+        if kinds[key][0] != "vmin"
+    ]
+
+
 def page_style() -> dict:
     """The drawings' colours, widths (pt) and dashes (in line widths), as ``draw`` and
     ``sweep --plot`` have them (:mod:`polygon_method.draw.style`), for the page's script."""
@@ -301,6 +318,7 @@ def page_data(fr: Frames) -> dict:
         "knees": _knees(res, links, n),  # where each centripetal component ends
         "guidePoints": _guide_points(res, sliders, n),  # the guide's point under a block
         "least": _least(sol, res),  # vmin_XY asked: the foot p of op square to xy
+        "asked": _components(sc, res),  # ar_XY, at_XY asked: their values per frame
         "wheels": wheels,
         "rollLines": lines,
         **_motion(sc, res, moving, links, n),

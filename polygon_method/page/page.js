@@ -500,6 +500,8 @@ function valuesRows(k) {  // [id, name (HTML), value]
     const c = Math.hypot(D.S[s][2][k], D.S[s][3][k]);
     if (c > 0) rows.push(["ac-" + s, "Coriolis component at " + esc(s), fmt(c) + " m/s²"]);
   }
+  for (const c of D.asked) rows.push(["asked-" + c.key, esc(c.key) + " (" + (c.kind === "ar" ? "radial, ω²·" : "tangential, α·") +
+    esc(two(c.x, c.y)) + ")", fmt(c.values[k]) + " m/s²"]);
   for (const l of D.least) rows.push(["least-" + l.key, esc(l.key) + " (the slowest point " + esc(l.P) + " of " + esc(two(l.x, l.y)) + ")", leastWords(l, k)]);
   if (D.torque) rows.push(["torque", "input torque", angular(D.torque[k], "N m")]);
   if (D.condition) {
@@ -622,9 +624,11 @@ document.addEventListener("click", (ev) => {
 // ---------------------------------------------------------------- sweep plots
 // each series: [name as SVG text parts [base, subscript], f(k)]
 const PLOTS = [
-  ["plot-v", "speeds of the points", "speed (m/s)", () => D.points.map((p) => [["v", p], (k) => pointValues(p, k).v])],
+  ["plot-v", "speeds of the points", "speed (m/s)", () => D.points.map((p) => [["v", p], (k) => pointValues(p, k).v])
+    .concat(D.least.map((l) => [["v", "min," + two(l.x, l.y)], (k) => l.speed[k]]))],
   ["plot-w", "angular velocities of the links", "ω (rad/s, ccw +)", () => D.links.map(([, , key]) => [["ω", key], (k) => D.W[key][k]])],
-  ["plot-a", "accelerations of the points", "acceleration (m/s²)", () => D.points.map((p) => [["a", p], (k) => pointValues(p, k).a])],
+  ["plot-a", "accelerations of the points", "acceleration (m/s²)", () => D.points.map((p) => [["a", p], (k) => pointValues(p, k).a])
+    .concat(D.asked.map((c) => [[c.key.slice(0, 2), c.key.slice(3)], (k) => c.values[k]]))],
 ];
 function roundTicks(lo, hi, most) {  // round ticks (1, 2, 5 x 10^k apart) over [lo, hi]
   const step = roundUp((hi - lo) / most), out = [];
