@@ -28,6 +28,7 @@ from .style import (
     DOT_R,
     IMAGE_FACE,
     LABEL_PT,
+    LEAST_STYLE,
     LEGEND_NAMES,
     LINE_STYLE,
     MARK_APART,
@@ -162,13 +163,14 @@ def _least_speed(sk, sol, cm, names):
         if not all(lo[i] - room <= foot[i] <= hi[i] + room for i in (0, 1)):
             continue
         ends = [(0.0, 0.0)] + ([] if ls.where == "between" else [sol.V[x if t < 0 else y]])
+        color, lw, dashes = LEAST_STYLE
         for i, end in enumerate(ends):  # op; xy produced to p
             sk.line(
                 [cm(end), cm(foot)],
                 gid=f"velocity-least-{x}-{y}-{i}",
-                color="#000000",
-                lw=0.6,
-                dashes=(2.0, 1.5),
+                color=color,
+                lw=lw,
+                dashes=dashes,
                 z=2,
             )
         names.setdefault(tuple(foot), []).append(foot_name(sol).lower())

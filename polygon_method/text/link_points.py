@@ -7,9 +7,10 @@ values are :mod:`polygon_method.motion.link_points`')."""
 from __future__ import annotations
 
 from ..common.numbers import fmt
-from ..motion.link_points import asked_pairs, components, least_speed
+from ..motion.link_points import asked_pairs, components, least_speed, pair_bounds
+from ..solver.errorbound import SHOWN
 
-__all__ = ["pair_lines", "pair_items", "foot_name"]
+__all__ = ["pair_lines", "pair_items", "foot_name", "pair_shown_bounds"]
 
 
 def _len(sol, metres: float) -> str:
@@ -100,3 +101,20 @@ def pair_items(sol, vscale) -> list[str]:
         else _component_words(sol, key, kind, x, y)
         for key, kind, (x, y) in asked_pairs(sol.scene)
     ]
+
+
+#: the numbers of an asked key's record that solve's text shows, by the words it lists them in
+_SHOWN_PARTS = {"value": "{0}", "foot_speed": "{0}: op", "distance": "{0}: where along"}
+
+
+def pair_shown_bounds(sol) -> list:
+    """(quantity, bound) of the asked keys' numbers whose bound exceeds ``SHOWN`` (the
+    value; for ``vmin`` op and the slowest point's distance along XY, relative to the
+    positions' size), for ``solve``'s lines of estimated errors."""
+    out = []
+    for key, kind, (x, y) in asked_pairs(sol.scene):
+        b = pair_bounds(sol, kind, x, y)
+        for part, words in _SHOWN_PARTS.items():
+            if part in b and b[part] > SHOWN:
+                out.append((words.format(key), b[part]))
+    return out
