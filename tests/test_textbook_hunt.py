@@ -369,3 +369,17 @@ def test_the_books_answers_are_right(name):
     assert verdicts and all(v.ok for v in verdicts), [
         (v.key, v.given, v.correct) for v in verdicts if not v.ok
     ]
+
+
+def test_a_large_correct_value_is_written_in_whole_units_as_a_book_does():
+    """The check table writes 16559 rad/s^2 and 51601 N as a book does (it had written
+    1.6559e+04 and 5.1601e+04 beside the book's 16560 and 51.60 kN)."""
+    from polygon_method.check.verdicts import correct_text
+
+    verdicts = {v.key: v for v in check_answers(_sol("hunt_articulated_rod_radial_engine"))}
+    alpha = _radial().alpha_of("CD")
+    assert correct_text(verdicts["alpha_CD"]) == f"{round(float(alpha))} rad/s^2 ccw"
+    heavy = {v.key: v for v in check_answers(_sol("force_engine_heavy_rod"))}
+    text = correct_text(heavy["shaking_force"])
+    assert "e+" not in text and text.endswith("N (51.6 kN)"), text
+    assert abs(int(text.split()[0]) - heavy["shaking_force"].correct) <= 0.5
