@@ -363,7 +363,9 @@ def test_hand_pump_crank_speed_found_from_the_plunger():
     _close(sol.A["B"], (mpf(0), mpf(0)), 1.0)
 
 
-@pytest.mark.parametrize("name", sorted(CASES))
+@pytest.mark.parametrize(
+    "name", sorted(CASES) + ["force_hunt_beam_engine_steam", "force_hunt_radial_master_rod_gas"]
+)
 def test_the_books_answers_are_right(name):
     verdicts = check_answers(_sol(name))
     assert verdicts and all(v.ok for v in verdicts), [
@@ -383,3 +385,69 @@ def test_a_large_correct_value_is_written_in_whole_units_as_a_book_does():
     text = correct_text(heavy["shaking_force"])
     assert "e+" not in text and text.endswith("N (51.6 kN)"), text
     assert abs(int(text.split()[0]) - heavy["shaking_force"].correct) <= 0.5
+
+
+def _driving_torque(ref, bodies, blocks, forces, g=(0, 0)):
+    """The torque on the crank by virtual power, T w = sum (m a_G . v_G + I_G alpha omega)
+    - sum (F . v) - sum (m g . v_G): ``bodies`` (G as a function of the points, m, I_G, the
+    link), ``blocks`` (point, m), ``forces`` (point, (Fx, Fy))."""
+    th, w, power = ref.theta, ref.omega, mpf(0)
+
+    def rates(f):
+        d1 = [mpmath.diff(lambda t, i=i: f(ref.points(t))[i], th) for i in (0, 1)]
+        d2 = [mpmath.diff(lambda t, i=i: f(ref.points(t))[i], th, 2) for i in (0, 1)]
+        return [x * w for x in d1], [d2[i] * w**2 + d1[i] * ref.alpha for i in (0, 1)]
+
+    parts = [(G, m, I, key) for G, m, I, key in bodies]
+    parts += [(lambda P, n=n: P[n], m, 0, None) for n, m in blocks]
+    for G, m, I, key in parts:
+        v, a = rates(G)
+        power += m * (a[0] * v[0] + a[1] * v[1]) - m * (g[0] * v[0] + g[1] * v[1])
+        if key is not None:
+            power += I * ref.alpha_of(key) * ref.omega_of(key)
+    for n, F in forces:
+        v = ref.velocity(n)
+        power -= F[0] * v[0] + F[1] * v[1]
+    return power / w
+
+
+def _mid(p, q):
+    return lambda P: ((P[p][0] + P[q][0]) / 2, (P[p][1] + P[q][1]) / 2)
+
+
+def test_beam_engine_torque_on_the_crank_shaft_by_virtual_power():
+    sol = _sol("force_hunt_beam_engine_steam")
+    gas = mpf("0.3e6") * pi / 4 * mpf("0.25") ** 2  # on the piston E, upwards
+    want = _driving_torque(
+        _beam(),
+        [(lambda P: P["D"], 60, 12, "DB"), (_mid("C", "E"), 15, 15 * mpf("0.12") ** 2, "CE")],
+        [("E", 40)],
+        [("E", (0, gas))],
+        g=(0, mpf("-9.81")),
+    )
+    _close(sol.forces.input_torque, want)
+
+
+def test_radial_engine_torque_from_both_pistons_gas_towards_the_crank_by_virtual_power():
+    """The gas pushes each piston towards the crank centre O along its line of stroke
+    (the default: B down its vertical line, D along 210 deg), and the notes say so."""
+    sol = _sol("force_hunt_radial_master_rod_gas")
+    area = pi / 4 * mpf("0.08") ** 2
+    fb, fd = mpf("0.6e6") * area, mpf("0.2e6") * area
+    u = _polar((0, 0), 1, _deg(210))
+
+    def g80(P):
+        return _add(P["A"], _unit(P["A"], P["B"]), mpf("0.08"))
+
+    want = _driving_torque(
+        _radial(),
+        [
+            (g80, 2, 2 * mpf("0.07") ** 2, "AB"),
+            (_mid("C", "D"), mpf("0.8"), mpf("0.8") * mpf("0.06") ** 2, "CD"),
+        ],
+        [("B", mpf("1.2")), ("D", mpf("1.2"))],
+        [("B", (0, -fb)), ("D", (fd * u[0], fd * u[1]))],
+    )
+    _close(sol.forces.input_torque, want)
+    said = [n for n in sol.notes if n.startswith("the gas force on the piston")]
+    assert len(said) == 2 and "at 270 deg" in said[0] and "at 210 deg" in said[1], said
