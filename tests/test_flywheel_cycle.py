@@ -260,3 +260,27 @@ def test_a_crossing_at_the_cycles_start_where_only_its_end_rounds_to_nought():
         _close(x.angle % (2 * math.pi), math.radians(60 * ((first + i) % 6)), 1.0)
     assert sorted({round(abs(a), 6) for a in c.areas}) == [round(3200 / 3, 6)]
     _close(c.dE_max, 3200 / 3)
+
+
+@pytest.mark.parametrize(
+    "angle,torque",
+    [
+        ([0, 180, 180, 360], [1500, 1500, 500, 500]),  # the jump back at the cycle's end
+        ([0, 90, 180, 180, 360], [1500, 1500, 1500, 500, 500]),
+        ([0, 0, 180, 180, 360], [500, 1500, 1500, 500, 500]),  # a jump at 0 stated too
+    ],
+)
+def test_a_jump_across_the_cycles_end_is_a_crossing(angle, torque):
+    """A torque of 1500 N m for half a turn and 500 N m for the other half, its mean 1000:
+    the energy rises by 500 pi J over the first half and falls back over the second. The
+    crossing at 0 deg (the segments end below the mean and start above it) had been missed
+    (no reading there is nought), leaving one crossing and dE_max = 0."""
+    _, c = _solve(
+        f"[turning_moment]\nangle = {angle}\ntorque = {torque}\n"
+        '[flywheel]\nspeed = "300 rpm"\nplus_minus = "1%"\n'
+    )
+    assert c.T_mean == pytest.approx(1000, rel=1e-12)
+    assert c.dE_max == pytest.approx(500 * math.pi, rel=1e-12)
+    angles = sorted(round(math.degrees(x.angle), 9) % 360 for x in c.crossings)
+    assert angles[:3] == [0, 0, 180]  # a at 0 (and again a cycle on), b at 180
+    assert math.degrees(c.crossings[c.i_max].angle) % 360 == pytest.approx(180)

@@ -313,7 +313,10 @@ def _roots(q, grid, qs) -> list:
     # a crossing at the cycle's start (the cycle repeats: q at its end is q at its start, and
     # either may be the one that rounds to nought exactly)
     start = (qs[0] == 0.0 or qs[-1] == 0.0) and qs[-2] * qs[1] < 0
-    roots = [0.0] if start else []
+    # or a jump there (segments that end on one side of the line and start on the other),
+    # not two roundings about a nought, of either sign
+    jump = qs[-1] * qs[0] < 0 and min(abs(qs[0]), abs(qs[-1])) > SAME * np.max(np.abs(qs))
+    roots = [0.0] if start or jump else []
     for i in range(len(grid) - 1):
         a, b, qa, qb = grid[i], grid[i + 1], qs[i], qs[i + 1]
         if start and i == 0:
