@@ -260,3 +260,86 @@ def test_a_crossing_at_the_cycles_start_where_only_its_end_rounds_to_nought():
         _close(x.angle % (2 * math.pi), math.radians(60 * ((first + i) % 6)), 1.0)
     assert sorted({round(abs(a), 6) for a in c.areas}) == [round(3200 / 3, 6)]
     _close(c.dE_max, 3200 / 3)
+
+
+@pytest.mark.parametrize(
+    "angle,torque",
+    [
+        ([0, 180, 180, 360], [1500, 1500, 500, 500]),  # the jump back at the cycle's end
+        ([0, 90, 180, 180, 360], [1500, 1500, 1500, 500, 500]),
+        ([0, 0, 180, 180, 360], [500, 1500, 1500, 500, 500]),  # a jump at 0 stated too
+    ],
+)
+def test_a_jump_across_the_cycles_end_is_a_crossing(angle, torque):
+    """A torque of 1500 N m for half a turn and 500 N m for the other half, its mean 1000:
+    the energy rises by 500 pi J over the first half and falls back over the second. The
+    crossing at 0 deg (the segments end below the mean and start above it) had been missed
+    (no reading there is nought), leaving one crossing and dE_max = 0."""
+    _, c = _solve(
+        f"[turning_moment]\nangle = {angle}\ntorque = {torque}\n"
+        '[flywheel]\nspeed = "300 rpm"\nplus_minus = "1%"\n'
+    )
+    assert c.T_mean == pytest.approx(1000, rel=1e-12)
+    assert c.dE_max == pytest.approx(500 * math.pi, rel=1e-12)
+    angles = sorted(round(math.degrees(x.angle), 9) % 360 for x in c.crossings)
+    assert angles[:3] == [0, 0, 180]  # a at 0 (and again a cycle on), b at 180
+    assert math.degrees(c.crossings[c.i_max].angle) % 360 == pytest.approx(180)
+
+
+def _exact_dE(ang, tq):
+    """dE_max of straight segments by hand, in fractions: the energy at every corner and at
+    every crossing of the mean within a segment (a parabola's value there), greatest less
+    least (J, the angles in degrees)."""
+    from fractions import Fraction as Fr
+
+    a, t = [Fr(x) for x in ang], [Fr(x) for x in tq]
+    mean = sum((t[i] + t[i + 1]) / 2 * (a[i + 1] - a[i]) for i in range(len(a) - 1)) / a[-1]
+    E, seen = Fr(0), [Fr(0)]
+    for i in range(len(a) - 1):
+        L = a[i + 1] - a[i]
+        if L == 0:
+            continue
+        q0, q1 = t[i] - mean, t[i + 1] - mean
+        if q0 * q1 < 0:
+            x = -q0 / (q1 - q0) * L
+            seen.append(E + q0 * x + (q1 - q0) / L * x * x / 2)
+        E += (q0 + q1) / 2 * L
+        seen.append(E)
+    return float(max(seen) - min(seen)) * math.pi / 180
+
+
+def _tables(n, seed=7):
+    import random
+
+    rnd = random.Random(seed)
+    out = []
+    while len(out) < n:
+        ang = [0] + sorted(rnd.choice([0, 30, 45, 90, 120, 180, 270, 360]) for _ in range(5))
+        ang = [x for i, x in enumerate(ang + [360]) if (ang + [360])[: i + 1].count(x) <= 2]
+        tq = [rnd.choice([500, 1000, 1500, 2000, rnd.randint(0, 3000)]) for _ in ang]
+        if len(set(tq)) > 1:
+            out.append((ang, tq))
+    return out
+
+
+CASES = [
+    ([0, 30, 30, 270, 360], [2000, 1500, 1500, 500, 1000]),  # ends on the mean, jumps up
+    ([0, 0, 45, 45, 90, 360, 360], [776, 500, 2000, 2000, 1500, 1500, 500]),
+    ([0, 90, 180, 270, 360], [2000, 1000, 1000, 0, 1000]),  # a segment along the mean
+    ([0, 90, 90, 270, 270, 360], [1500, 1500, 1000, 1000, 500, 500]),  # jumps onto it
+]
+
+
+@pytest.mark.parametrize("ang,tq", CASES + _tables(60), ids=lambda v: str(v))
+def test_segments_dE_max_against_the_energy_at_every_corner_by_hand(ang, tq):
+    """Segments that end on the mean line and jump off it, run along it or jump onto it: a
+    run of noughts is a crossing where the sign changes across it (two such tables had
+    given dE_max = 0: the crossing at the cycle's start was missed where the mean's
+    rounding left the last reading a hair off nought)."""
+    _, c = _solve(
+        f"[turning_moment]\nangle = {ang}\ntorque = {tq}\n"
+        '[flywheel]\nspeed = "300 rpm"\nplus_minus = "1%"\n'
+    )
+    want = _exact_dE(ang, tq)
+    assert want > 0
+    _close(c.dE_max, want)

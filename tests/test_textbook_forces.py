@@ -72,8 +72,8 @@ def _external(sc, ref):
         F = _gas(sc, ld, ref) if ld.toward is not None else tuple(mpf(c) for c in ld.force)
         v = V[ld.target]
         power += F[0] * v[0] + F[1] * v[1]
-        if ld.toward is None:  # (a gas force's reaction is on the cover: internal)
-            forces.append((F, P[ld.target]))
+        if ld.gas is None:  # (a gas force's reaction is on the cover: internal, whether
+            forces.append((F, P[ld.target]))  # its direction is given or towards the crank)
     g = sc.gravity
     for m in sc.masses:
         if m.block:

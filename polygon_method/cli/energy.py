@@ -270,13 +270,15 @@ def _csv(scene, out, n) -> None:
     th, tq, rs, es = curves(scene, c, n)
     rows = ["angle_deg,torque,resisting,energy"]
     for x, t, r, e in zip(th, tq, rs, es):
-        rows.append(f"{x * 57.29577951308232:.12g},{t:.12g},{r:.12g},{e:.12g}")
+        row = f"{x * 57.29577951308232:.12g},{t:.12g},{r:.12g},{e:.12g}"
+        if row != rows[-1]:  # (a corner on the grid is drawn twice, a jump upright: one row)
+            rows.append(row)
     text = "\n".join(rows) + "\n"
     if to_stdout:
         sys.stdout.write(text)
     else:
         write_outputs(targets, [(text.encode(), True)])
-    print(f"{out}: {len(th)} crank angles", file=sys.stderr)
+    print(f"{out}: {len(rows) - 1} crank angles", file=sys.stderr)
 
 
 def _variants(args, scene) -> int:

@@ -83,16 +83,18 @@ def fixed(x: float, digits: int = 3) -> str:
 
 
 def textbook(x: float) -> str:
-    """A value as a textbook writes it: four significant figures (an exponent if needed).
+    """A value as a textbook writes it: four significant figures, a large one in whole
+    units as a book writes a force of 51 601 N (no exponent below 1e7), an exponent only
+    for a tiny or an absurd size.
 
-    >>> textbook(0.39183), textbook(0), textbook(1.5e-7)
-    ('0.3918', '0', '1.5000e-07')
+    >>> textbook(0.39183), textbook(0), textbook(1.5e-7), textbook(51601.2), textbook(-16559.4)
+    ('0.3918', '0', '1.5000e-07', '51601', '-16559')
     """
     if x == 0:
         return "0"
     s = f"{x:.4g}"
     if "e" in s:
-        s = f"{x:.4e}"
+        s = f"{x:.0f}" if 1e4 <= abs(x) < 1e7 else f"{x:.4e}"
     return s
 
 

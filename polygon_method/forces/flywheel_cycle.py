@@ -309,19 +309,22 @@ def _curve(d) -> dict:
 
 def _roots(q, grid, qs) -> list:
     """The crossings of ``q`` (T - R) over the cycle's ``grid`` (``qs`` its values there):
-    each sign change bisected; a nought on the grid taken where the sign changes across it."""
-    # a crossing at the cycle's start (the cycle repeats: q at its end is q at its start, and
-    # either may be the one that rounds to nought exactly)
-    start = (qs[0] == 0.0 or qs[-1] == 0.0) and qs[-2] * qs[1] < 0
-    roots = [0.0] if start else []
+    each sign change bisected; a run of noughts on the grid (one reading, or a segment
+    along the line) a crossing where it begins, if the sign changes across it; the cycle's
+    start a crossing if the sign before its end and after its start differ (the cycle
+    repeats: a nought there, or segments that end on one side and start on the other)."""
+    qs = np.where(np.abs(qs) <= SAME * np.max(np.abs(qs)), 0.0, qs)  # a rounding is nought
+    signed = np.flatnonzero(qs)
+    roots = [0.0] if qs[signed[-1]] * qs[signed[0]] < 0 else []
+    last = None  # the last value not nought before a run of noughts
     for i in range(len(grid) - 1):
         a, b, qa, qb = grid[i], grid[i + 1], qs[i], qs[i + 1]
-        if start and i == 0:
-            continue  # (taken: a rounding's sign change here is the same crossing)
-        if qa == 0.0 and i > 0 and qs[i - 1] * qb < 0:
-            roots.append(float(a))
-        elif qa * qb < 0:
+        if qa * qb < 0:
             roots.append(_bisect(q, float(a), float(b), qa))
+        elif qa != 0.0 and qb == 0.0:
+            last = i
+        elif qa == 0.0 and qb != 0.0 and last is not None and qs[last] * qb < 0:
+            roots.append(float(grid[last + 1]))
     return roots
 
 
@@ -402,10 +405,11 @@ def curves(scene, c, n: int = 1441) -> tuple:
     steady = not getattr(T, "terms", True)
     tq = c.T_mean + 0.0 * th if steady else np.array([T.value(float(x)) for x in th])
     rs = c.T_mean + 0.0 * th if R is None else np.array([R.value(float(x)) for x in th])
-    if T.corners:  # at a jump, the value before it at the first of the pair
-        for i in range(1, len(th)):
-            if th[i] == th[i - 1] and i + 1 < len(th):
-                tq[i - 1] = _before(T, th[i])
+    for f, vs in ((T, tq), (R, rs)):  # at a jump (the machine's too), the value before
+        if f is not None and f.corners:  # it at the first of the pair
+            for i in range(1, len(th)):
+                if th[i] == th[i - 1] and i + 1 < len(th):
+                    vs[i - 1] = _before(f, th[i])
     return th, tq, rs, _energies(scene, c, th)
 
 

@@ -271,6 +271,11 @@ def _argument(toks, i):
     return k, phi, i
 
 
+def _constant(value) -> bool:
+    """A torque written "constant" (a motor's steady torque, or the machine's at the mean)."""
+    return isinstance(value, str) and value.strip().lower() == "constant"
+
+
 class _CycleReader(_RimReader, _PressReader):
     """Reads a :class:`CycleScene` with a mechanism reader's location helpers ``ld``."""
 
@@ -383,19 +388,26 @@ class _CycleReader(_RimReader, _PressReader):
             )
         k = UNITS["torque"][unit.strip()]
         words = []
+        # the machine's torque in readings, the motor's steady: torque = "constant"
+        machine = _constant(spec["torque"]) and isinstance(spec.get("resisting"), list)
         if "angle" in spec:
-            driving = self._table(spec, t, k)
-            cycle, w = self._cycle(spec, t, driving.angles[-1])
-            if driving.angles[-1] > cycle + ROUNDING:
+            table = self._table(spec, t, k, "resisting" if machine else "torque")
+            driving = Law((), "constant") if machine else table
+            cycle, w = self._cycle(spec, t, table.angles[-1])
+            if table.angles[-1] > cycle + ROUNDING:
                 raise self.err("the table's angles run past the cycle", t, "angle")
-            words.append(f"the turning moment in {len(driving.angles)} readings, {w}")
+            what = "the resisting torque" if machine else "the turning moment"
+            words.append(f"{what} in {len(table.angles)} readings, {w}")
         else:
             driving = self._law(spec["torque"], t, "torque", k)
             cycle, w = self._cycle(spec, t, 2 * math.pi)
             words.append(f"T = {driving.text} {unit.strip()}, {w}")
         resisting = None
         r = spec.get("resisting", "constant")
-        if isinstance(r, str) and r.strip().lower() == "constant":
+        if machine and "angle" in spec:
+            resisting = table
+            words.append("the driving torque constant, at the resisting torque's mean")
+        elif _constant(r):
             if isinstance(driving, Law) and not driving.terms:
                 raise self.err(
                     'torque = "constant" needs a resisting torque that varies (resisting = '
@@ -410,7 +422,7 @@ class _CycleReader(_RimReader, _PressReader):
                 raise self.err("only one of torque and resisting may be constant", t, "resisting")
             words.append(f"the resisting torque {resisting.text} {unit.strip()}")
         return Diagram(
-            "law" if isinstance(driving, Law) else "table",
+            "table" if "angle" in spec else "law",
             cycle,
             driving=driving,
             resisting=resisting,
@@ -448,8 +460,10 @@ class _CycleReader(_RimReader, _PressReader):
         text = " + ".join(str(s) for s in items)
         return Law(terms, text)
 
-    def _table(self, spec, t, k) -> Table:
-        ang, tq = spec["angle"], spec["torque"]
+    def _table(self, spec, t, k, key="torque") -> Table:
+        """The segments of ``angle`` and ``key`` (the turning moment's ``torque``, or the
+        machine's ``resisting`` beside a steady ``torque = "constant"``)."""
+        ang, tq = spec["angle"], spec[key]
         ok = (
             isinstance(ang, list)
             and isinstance(tq, list)
@@ -458,10 +472,10 @@ class _CycleReader(_RimReader, _PressReader):
         )
         if not ok:
             raise self.err(
-                "angle = [...] (deg) and torque = [...] (in unit): two lists of numbers", t, "angle"
+                f"angle = [...] (deg) and {key} = [...] (in unit): two lists of numbers", t, "angle"
             )
         if len(ang) != len(tq):
-            raise self.err(f"{len(tq)} torques for {len(ang)} angles", t, "torque")
+            raise self.err(f"{len(tq)} torques for {len(ang)} angles", t, key)
         if ang[0] != 0 or any(b < a for a, b in zip(ang, ang[1:])) or ang[-1] <= 0:
             raise self.err(
                 "the angles start at 0 and do not decrease (a jump: one angle twice)", t, "angle"
@@ -469,7 +483,7 @@ class _CycleReader(_RimReader, _PressReader):
         if any(a == b == c for a, b, c in zip(ang, ang[1:], ang[2:])):
             raise self.err("an angle given three times: a jump needs it twice", t, "angle")
         if any(not math.isfinite(v) or abs(v * k) > 1e9 for v in tq):
-            raise self.err("a torque beyond 1e9 N m is absurd; check the unit", t, "torque")
+            raise self.err("a torque beyond 1e9 N m is absurd; check the unit", t, key)
         return Table(
             tuple(math.radians(a) for a in ang),
             tuple(v * k for v in tq),

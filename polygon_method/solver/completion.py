@@ -10,7 +10,7 @@ import math
 from dataclasses import replace
 
 from ..common.errors import AssemblyError, PolygonMethodError, SceneError
-from ..common.numbers import in_units, sense
+from ..common.numbers import fmt, in_units, sense
 from ..common.tolerances import SAME
 from ..scene import key_line
 from ..steps import Context
@@ -62,7 +62,7 @@ def gas_towards_crank(plan, sc):
     first = plan.steps[0]
     pivot = getattr(first, "pivot", None)  # a driving crank's (a block driver has none)
     state = None
-    loads = []
+    loads, said = [], []  # the loads completed, and a note of each default taken
     for ld in sc.loads:
         if ld.toward is None:
             loads.append(ld)
@@ -97,7 +97,14 @@ def gas_towards_crank(plan, sc):
         s = 1.0 if d > 0 else -1.0
         f = ld.toward
         loads.append(replace(ld, force=(f * s * ux + 0.0, f * s * uy + 0.0)))
+        said.append(
+            f"the gas force on the piston {ld.target} ({ld.gas[2]}: {fmt(abs(f))} N) "
+            f"pushes it towards the crank centre {pivot} along its path, at "
+            f"{fmt(math.degrees(math.atan2(s * uy, s * ux)) % 360)} deg (default; give "
+            "its direction to choose)"
+        )
     object.__setattr__(sc, "loads", tuple(loads))
+    object.__setattr__(sc, "reading_notes", tuple(sc.reading_notes) + tuple(said))
 
 
 def place(scene, compile_trial) -> tuple:
