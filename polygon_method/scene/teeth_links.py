@@ -135,7 +135,9 @@ def _no_arm(rd, entries, known):
     index, arms, held, ground = known
     for key, spec, (a, _) in entries:
         o = spec.get("on")
-        if o not in ground or a in ground or a in held or "teeth" not in spec:
+        if not isinstance(o, str) or o not in ground or a in ground or a in held:
+            continue  # (an 'on' not a name is refused where the wheel's entry is read)
+        if "teeth" not in spec:
             continue
         arm = frozenset((o, a))
         if "on_teeth" in spec or "on_radius" in spec or arm in index or arm in arms:
