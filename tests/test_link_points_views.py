@@ -524,3 +524,48 @@ def test_sweep_plot_draws_them_beside_the_speeds_and_accelerations():
         assert abs(v - least) <= 1e-9 * 9.6, deg
         assert abs(a - w_rod**2 * 1.6) <= 1e-9 * 57.6, deg
     assert len(vmin.get_xdata()) == 12
+
+
+GROUND_LINK = """
+units = "mm"
+[ground]
+O2 = [0, 0]
+O4 = [300, 0]
+[links]
+"O2-A" = 100
+AB = 250
+"O4-B" = 200
+"O2-O4" = 300
+[input]
+crank = "O2-A"
+angle = 30
+speed = "10 rad/s ccw"
+[assembly]
+B = "above"
+[answers]
+vmin_O2-O4 = "0 m/s"
+ar_O4-O2 = "0 m/s^2"
+vmin_O4-B = "1 m/s"
+"""
+
+
+def test_the_frames_own_link_asked_is_at_rest_in_every_view(tmp_path, capsys):
+    """Two fixed points (the frame written as a link): 0 at every angle, in one array per
+    view (a constant would break the summary's arrays); O4-B turns about the fixed O4: its
+    slowest point is the pivot, at 0 m/s, 0 m from O4."""
+    scene = tmp_path / "g.toml"
+    scene.write_text(GROUND_LINK)
+    assert _run("sweep", scene, "--summary") == 0
+    out = capsys.readouterr().out
+    assert "vmin_O2-O4  m/s                0 (constant)" in out
+    csv = tmp_path / "g.csv"
+    assert _run("sweep", scene, "--steps", 8, "--csv", csv) == 0
+    rows = _csv(csv)
+    assert all(float(r["vmin_O2-O4"]) == 0 and r["vmin_O2-O4_from_O2"] == "" for r in rows)
+    assert all(float(r["vmin_O4-B"]) == 0 and float(r["vmin_O4-B_from_O4"]) == 0 for r in rows)
+    assert all(float(r["ar_O4-O2"]) == 0 for r in rows)
+    assert _run("page", scene, "--frames", 8, "-o", tmp_path / "g.html") == 0
+    capsys.readouterr()
+    assert _run("solve", scene, "--json") == 0
+    d = json.loads(capsys.readouterr().out)
+    assert d["link_points"]["vmin_O2-O4"]["where"] == "translating"

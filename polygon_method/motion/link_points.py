@@ -176,11 +176,14 @@ _SUMMARY_WORDS = {
 def pair_quantities(scene, m):
     """(key, unit, array, words) of each asked key over the crank angles of the motion
     ``m`` (a sweep's, or its chunk's): what ``sweep --summary`` takes the extremes of."""
+    import numpy as np
+
     for key, kind, (x, y) in asked_pairs(scene):
         if kind == "vmin":
             value, unit = segment_least(m.V[x], m.V[y]), "m/s"
         else:
             value, unit = link_rates(scene, m.W, m.Al, m.P, x, y)[kind == "at"], "m/s^2"
+        value = np.broadcast_to(np.asarray(value, dtype=float), (m.n,))  # (two fixed points: 0)
         yield key, unit, value, _SUMMARY_WORDS[kind].format(x, y)
 
 
@@ -272,10 +275,11 @@ def least_speed(sol, x: str, y: str) -> LeastSpeed:
     (bx, by), (cx, cy) = _still(sol, x), _still(sol, y)
     (px, py), (qx, qy) = sol.P[x], sol.P[y]
     length = math.hypot(qx - px, qy - py)
-    if sol.shown(sol.W[lk.key], "omega", lk.key) == 0 or length == 0:  # every point alike
+    dx, dy = cx - bx, cy - by
+    turns = sol.shown(sol.W[lk.key], "omega", lk.key) != 0 and (dx, dy) != (0.0, 0.0)
+    if not turns or length == 0:  # every point alike (v_X and v_Y both within their bounds)
         s = math.hypot(bx, by)
         return LeastSpeed(lk.key, x, y, None, 0.0, s, s, length, (px, py), "translating")
-    dx, dy = cx - bx, cy - by
     t = -(bx * dx + by * dy) / (dx * dx + dy * dy)
     foot = abs(bx * cy - by * cx) / math.hypot(dx, dy)  # op = |v_X x v_Y| / |v_YX|
     where = f"beyond {x}" if t < 0 else f"beyond {y}" if t > 1 else "between"
