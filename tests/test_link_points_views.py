@@ -490,6 +490,7 @@ def test_the_page_marks_what_an_answer_file_asks_and_nothing_unasked(browser, tm
     bare = _page_of(tmp_path, "bare", scene)
     page, errors = _opened(browser, bare, 1280)
     assert page.query_selector("[id^=v-least]") is None
+    assert "op square to xy" not in page.text_content(".legend")
     page.close()
     asked = _page_of(tmp_path, "asked", scene, "--answers", answers)
     page, errors = _opened(browser, asked, 1280)
@@ -498,7 +499,7 @@ def test_the_page_marks_what_an_answer_file_asks_and_nothing_unasked(browser, tm
     assert e.is_visible()
     row = page.text_content("#val-least-vmin_EB")
     assert abs(float(row.split()[0]) - least) <= 5e-4 * least  # the foot lies between E and B
-    assert "EP = " in row
+    assert "EP = " in row and "op square to xy" in page.text_content(".legend")
     steps = " ".join(page.text_content("body").split())
     assert "from o draw op perpendicular to eb" in steps
     assert errors == []
