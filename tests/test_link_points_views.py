@@ -664,3 +664,42 @@ def _exact_of(r, sol, kind, x, y):
         "distance": at * length,
         "position": (px + at * (qx - px), py + at * (qy - py)),
     }
+
+
+def test_the_sweeps_err_max_covers_the_asked_columns():
+    """sweep --csv --error-bound: err_max at each angle is at least each asked column's own
+    bound (the value's; the slowest point's distance where the rod turns), the bound
+    solve --json gives at that angle, and every such column is within it of the closed
+    form (the rod near 90 deg, where where-along grows uncertain, included)."""
+    import dataclasses
+
+    import numpy as np
+
+    from polygon_method import load_scene
+    from polygon_method.motion.sweeps import sweep
+
+    scene = load_scene(BOOK, answers=False)
+    degrees = [0.0, 30.0, 60.0, 89.9999999, 90.0, 160.0, 270.00001]
+    res = sweep(scene, np.radians(degrees))
+    cols = {name: np.asarray(a) for name, _, a in res.columns(error_bound=True)}
+    sizes = res.error_bounds.scales
+    for i, deg in enumerate(degrees):
+        sol = solve(
+            dataclasses.replace(scene, input=dataclasses.replace(scene.input, angle=res.theta[i]))
+        )
+        worst = cols["err_max"][i]
+        for key, kind, names in (
+            ("vmin_AB", "vmin", "AB"),
+            ("ar_BA", "ar", "BA"),
+            ("at_BA", "at", "BA"),
+        ):
+            b = pair_bounds(sol, kind, *names)
+            assert worst >= b["value"] * (1 - 1e-9), (deg, key)
+            if "distance" in b:
+                assert worst >= b["distance"] * (1 - 1e-9), (deg, key)
+        _, _, dist, least, w_rod = _closed_form_foot(deg)
+        vs = np.broadcast_to(sizes["velocity"], res.theta.shape)[i]
+        assert abs(cols["vmin_AB"][i] - least) <= worst * vs
+        if abs(w_rod) > 1e-6:
+            ps = np.broadcast_to(sizes["position"], res.theta.shape)[i]
+            assert abs(cols["vmin_AB_from_A"][i] - dist) <= max(worst * ps, 1e-7)
