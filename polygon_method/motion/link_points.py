@@ -1,7 +1,9 @@
 """Two points of one link, as the books ask of them: the point of the segment between them
 with the least absolute velocity (``vmin_BC``), and the radial and tangential components
 of one's acceleration relative to the other (``ar_CB``, ``at_CB``). Written once here; the
-answer keys, ``check``, ``solve``, ``--json`` and ``steps`` read these records.
+answer keys, ``check``, ``solve``, ``--json`` and ``steps`` read these records, with each
+number's error bound (:func:`pair_bounds`); ``sweep`` (its columns, summary and plot) and
+the page the same over many crank angles (:func:`pair_quantities`, :func:`feet_over`).
 
 The least speed, by hand (Rattan, Sadhu Singh, Khurmi): on the velocity polygon draw op
 perpendicular to bc from the pole; p is the image of the point of BC (produced if need be)
