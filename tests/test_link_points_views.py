@@ -703,3 +703,32 @@ def test_the_sweeps_err_max_covers_the_asked_columns():
         if abs(w_rod) > 1e-6:
             ps = np.broadcast_to(sizes["position"], res.theta.shape)[i]
             assert abs(cols["vmin_AB_from_A"][i] - dist) <= max(worst * ps, 1e-7)
+
+
+def test_two_least_speeds_asked_have_feet_of_their_own_names(tmp_path, capsys):
+    """vmin_AB and vmin_C-B on one polygon: p and f (the next letter the scene leaves free),
+    in the solution's words, the steps, and the page's marks; each value the brute-force
+    least of the reference's velocities."""
+    from test_least_speed_and_components import _brute_least
+
+    text = FOURBAR.format(angle=40, answers='vmin_AB = "1 m/s"\nvmin_C-B = "1 m/s"')
+    scene = tmp_path / "fb.toml"
+    scene.write_text(text)
+    assert _run("solve", scene) == 0
+    out = capsys.readouterr().out
+    assert "the foot p of the perpendicular from o to ab" in out
+    assert "at F on CB: the foot f of the perpendicular from o to cb" in out
+    sol = solve(parse_scene(text))
+    V = reference_solution(sol.scene, sol.P)["velocities"]
+    for key, (x, y) in (("vmin_AB", "AB"), ("vmin_C-B", "CB")):
+        _, want = _brute_least(None, None, V[x], V[y])
+        got = json.loads(json.dumps(sol.to_dict()))["link_points"][key]["value"]
+        assert abs(got - float(want)) <= 1e-9 * float(want), key
+    from polygon_method.page.data import page_data
+    from polygon_method.page.frames import frames
+
+    least = page_data(frames(sol.scene, 6))["least"]
+    assert [(d["key"], d["p"], d["P"]) for d in least] == [
+        ("vmin_AB", "p", "P"),
+        ("vmin_C-B", "f", "F"),
+    ]
