@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-__all__ = ["asked_scene", "ANSWERS_HELP", "ASKED_HELP"]
+__all__ = ["asked_scene", "no_answers", "ANSWERS_HELP", "ASKED_HELP"]
 
 #: the option's help where the command checks the answers (``page``)
 ANSWERS_HELP = "a TOML file with an [answers] table to check"
@@ -41,3 +41,16 @@ def asked_scene(args, scene):
             except SceneError as exc:
                 raise SceneError(exc.message, file=path, key=f"[answers] {a.key}", line=a.line)
     return replace(scene, answers=tuple(answers))
+
+
+def no_answers(args, what: str) -> None:
+    """``--answers`` refused, in one line, where the view marks no answer (``what``: what it
+    draws instead): never silently ignored."""
+    if getattr(args, "answers", None):
+        from ..common.errors import PolygonMethodError
+
+        raise PolygonMethodError(
+            f"{what}, no answer marked: leave out --answers (the page marks them: page "
+            "SCENE --answers FILE)",
+            key="--answers",
+        )

@@ -12,6 +12,7 @@ from pathlib import Path
 from ..common.errors import PolygonMethodError, SceneError
 from ..common.tolerances import SAME
 from .energy import check_cylinders, draw_engine_cycle, engine_cycle
+from .asked import no_answers
 from .files import check_outputs, is_stdout, write_outputs
 
 
@@ -98,12 +99,7 @@ def _cmd_draw(args) -> int:
                 "--centre-labels",
                 key="--animate",
             )
-        if getattr(args, "answers", None):  # never silently ignored
-            raise PolygonMethodError(
-                "--animate draws the diagrams alone, no answer marked: leave out --answers "
-                "(the page marks them: page SCENE --answers FILE)",
-                key="--answers",
-            )
+        no_answers(args, "--animate draws the diagrams alone")
         if args.frames is None:
             args.frames = DEFAULT_FRAMES
         return _cmd_animate(args, out, fmt)

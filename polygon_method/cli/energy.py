@@ -19,6 +19,7 @@ import sys
 from pathlib import Path
 
 from ..common.errors import PolygonMethodError, SceneError
+from .asked import no_answers
 from .files import check_outputs, is_stdout, write_outputs
 
 __all__ = ["route"]
@@ -347,6 +348,7 @@ def draw_engine_cycle(args, out, fmt) -> int:
         raise PolygonMethodError(
             "--diagram cycle draws at its own scales: leave out --scale", key="--scale"
         )
+    no_answers(args, "--diagram cycle draws the engine's turning moment over its cycle")
     targets = check_outputs([(out, "-o")], protect=[args.scene])
     scene = load_scene(args.scene, variants=False, answers=False)
     check_cylinders(scene)

@@ -154,7 +154,7 @@ def _least_speed(sk, sol, cm, names):
     box = [(0.0, 0.0)] + list(sol.V.values())
     lo, hi = [min(q[i] for q in box) for i in (0, 1)], [max(q[i] for q in box) for i in (0, 1)]
     room = max(hi[0] - lo[0], hi[1] - lo[1]) / 4  # a quarter of the polygon's size past it
-    for _, kind, (x, y) in asked_pairs(sol.scene):
+    for key, kind, (x, y) in asked_pairs(sol.scene):
         ls = least_speed(sol, x, y) if kind == "vmin" else None
         if ls is None or ls.fraction is None:  # (a link that does not turn has no foot)
             continue
@@ -173,7 +173,7 @@ def _least_speed(sk, sol, cm, names):
                 dashes=dashes,
                 z=2,
             )
-        names.setdefault(tuple(foot), []).append(foot_name(sol).lower())
+        names.setdefault(tuple(foot), []).append(foot_name(sol, key).lower())
 
 
 def _images(sk, sol, cons, D, cm, phase):

@@ -1,7 +1,9 @@
 """Two points of one link, as the books ask of them: the point of the segment between them
 with the least absolute velocity (``vmin_BC``), and the radial and tangential components
 of one's acceleration relative to the other (``ar_CB``, ``at_CB``). Written once here; the
-answer keys, ``check``, ``solve``, ``--json`` and ``steps`` read these records.
+answer keys, ``check``, ``solve``, ``--json`` and ``steps`` read these records, with each
+number's error bound (:func:`pair_bounds`); ``sweep`` (its columns, summary and plot) and
+the page the same over many crank angles (:func:`pair_quantities`, :func:`feet_over`).
 
 The least speed, by hand (Rattan, Sadhu Singh, Khurmi): on the velocity polygon draw op
 perpendicular to bc from the pole; p is the image of the point of BC (produced if need be)
@@ -45,6 +47,7 @@ __all__ = [
     "asked_pairs",
     "asked_dict",
     "pair_bounds",
+    "pair_worst",
     "bounds_dict",
 ]
 
@@ -176,11 +179,14 @@ _SUMMARY_WORDS = {
 def pair_quantities(scene, m):
     """(key, unit, array, words) of each asked key over the crank angles of the motion
     ``m`` (a sweep's, or its chunk's): what ``sweep --summary`` takes the extremes of."""
+    import numpy as np
+
     for key, kind, (x, y) in asked_pairs(scene):
         if kind == "vmin":
             value, unit = segment_least(m.V[x], m.V[y]), "m/s"
         else:
             value, unit = link_rates(scene, m.W, m.Al, m.P, x, y)[kind == "at"], "m/s^2"
+        value = np.broadcast_to(np.asarray(value, dtype=float), (m.n,))  # (two fixed points: 0)
         yield key, unit, value, _SUMMARY_WORDS[kind].format(x, y)
 
 
@@ -272,10 +278,11 @@ def least_speed(sol, x: str, y: str) -> LeastSpeed:
     (bx, by), (cx, cy) = _still(sol, x), _still(sol, y)
     (px, py), (qx, qy) = sol.P[x], sol.P[y]
     length = math.hypot(qx - px, qy - py)
-    if sol.shown(sol.W[lk.key], "omega", lk.key) == 0 or length == 0:  # every point alike
+    dx, dy = cx - bx, cy - by
+    turns = sol.shown(sol.W[lk.key], "omega", lk.key) != 0 and (dx, dy) != (0.0, 0.0)
+    if not turns or length == 0:  # every point alike (v_X and v_Y both within their bounds)
         s = math.hypot(bx, by)
         return LeastSpeed(lk.key, x, y, None, 0.0, s, s, length, (px, py), "translating")
-    dx, dy = cx - bx, cy - by
     t = -(bx * dx + by * dy) / (dx * dx + dy * dy)
     foot = abs(bx * cy - by * cx) / math.hypot(dx, dy)  # op = |v_X x v_Y| / |v_YX|
     where = f"beyond {x}" if t < 0 else f"beyond {y}" if t > 1 else "between"
@@ -342,6 +349,7 @@ def asked_dict(sol) -> dict:
 
 #: the rounding of the few operations from the points' numbers to an answer, in EPS
 _OWN = 8.0
+_EPS = _OWN * 2.0**-53
 
 
 def pair_bounds(sol, kind: str, x: str, y: str) -> dict:
@@ -361,43 +369,90 @@ def pair_bounds(sol, kind: str, x: str, y: str) -> dict:
     + omega^2 dr``; ``|alpha| r``: ``r da + |alpha| dr`` (dw, da, dr the bounds of omega,
     alpha and XY)."""
     b = sol.error_bounds
-    k = b.scales
-    vs, acc, ps = k["velocity"], k["acceleration"], k["position"]
-    eps = _OWN * 2.0**-53
-    dr = b.P.get(x, 0.0) + b.P.get(y, 0.0)  # XY's error, relative to the positions' size
     if kind != "vmin":
         c = components(sol, x, y)
-        key = c.link
-        dw, da = b.W.get(key, 0.0) * k["omega"], b.Al.get(key, 0.0) * k["alpha"]
-        w, al = abs(c.omega), abs(c.alpha)
-        radial = ((2 * w * dw + dw * dw) * c.r + w * w * dr * ps) / acc + eps * c.radial / acc
-        tangential = (da * c.r + al * dr * ps) / acc + eps * c.tangential / acc
+        radial, tangential, dr = _component_bounds(b, c.link, c.omega, c.alpha, c.r, x, y)
         return {
             "value": radial if kind == "ar" else tangential,
-            "r": dr + eps,
-            "omega": b.W.get(key, 0.0),
-            "alpha": b.Al.get(key, 0.0),
+            "r": dr + _EPS,
+            "omega": b.W.get(c.link, 0.0),
+            "alpha": b.Al.get(c.link, 0.0),
             "radial": radial,
             "tangential": tangential,
         }
     ls = least_speed(sol, x, y)
     e = max(b.V.get(x, 0.0), b.V.get(y, 0.0))
-    out = {"value": e + eps, "speed": e + eps}
+    out = {"value": e + _EPS, "speed": e + _EPS}
     if ls.fraction is None:  # every point alike: no foot, no place (at no point in particular)
         out["foot_speed"] = out["speed"]
         return out
-    t = ls.fraction
-    out["foot_speed"] = (abs(t) + abs(1 - t)) * (e + eps)
-    (bx, by), (cx, cy) = _still(sol, x), _still(sol, y)
-    d = math.hypot(cx - bx, cy - by)  # |v_YX|, not 0: the link turns
-    err = e * vs
-    dt = err / d + 6 * err * math.hypot(bx, by) / (d * d) + eps * (1 + abs(t))
-    out["foot_fraction"] = dt
-    out["fraction"] = dt  # (the foot clipped to the segment: no farther off)
-    where = dt * ls.length / ps
-    out["distance"] = where + ls.at * dr + eps
+    op, dt, distance, position = _foot_bounds(
+        b, x, y, _still(sol, x), _still(sol, y), ls.fraction, ls.at, ls.length
+    )
+    out.update(foot_speed=op, foot_fraction=dt, fraction=dt, distance=distance, position=position)
+    return out  # (the foot clipped to the segment, "fraction", is no farther off than the foot)
+
+
+def _component_bounds(b, key, w, al, r, x, y) -> tuple:
+    """(radial, tangential, dr): the bounds of ``omega^2 r`` and ``|alpha| r`` relative to
+    the accelerations' size, and of r = XY relative to the positions' (``b`` the bounds,
+    ``w``, ``al`` the link's omega and alpha, floats or arrays)."""
+    import numpy as np
+
+    k = b.scales
+    acc, ps = k["acceleration"], k["position"]
+    dr = b.P.get(x, 0.0) + b.P.get(y, 0.0)
+    dw, da = b.W.get(key, 0.0) * k["omega"], b.Al.get(key, 0.0) * k["alpha"]
+    w, al = np.abs(w), np.abs(al)
+    radial = ((2 * w * dw + dw * dw) * r + w * w * dr * ps) / acc + _EPS * w * w * r / acc
+    tangential = (da * r + al * dr * ps) / acc + _EPS * al * r / acc
+    return radial, tangential, dr
+
+
+def _foot_bounds(b, x, y, vx, vy, t, at, length) -> tuple:
+    """(op, foot, distance, position): the bounds of op (relative to the velocities' size),
+    of the foot's fraction t of XY (absolute), of the slowest point's distance from X and of
+    its place (relative to the positions' size); ``vx``, ``vy`` the ends' velocities, ``at``
+    the foot clipped to the segment (floats or arrays; the link turns: v_YX is not 0)."""
+    import numpy as np
+
+    k = b.scales
+    e = np.maximum(b.V.get(x, 0.0), b.V.get(y, 0.0))
+    (bx, by), (cx, cy) = vx, vy
+    d = np.hypot(np.subtract(cx, bx), np.subtract(cy, by))  # |v_YX|
+    err = e * k["velocity"]
+    dt = err / d + 6 * err * np.hypot(bx, by) / (d * d) + _EPS * (1 + np.abs(t))
+    op = (np.abs(t) + np.abs(1 - t)) * (e + _EPS)
+    where = dt * length / k["position"]
+    dr = b.P.get(x, 0.0) + b.P.get(y, 0.0)
     px, py = b.P.get(x, 0.0), b.P.get(y, 0.0)
-    out["position"] = where + (1 - ls.at) * px + ls.at * py + eps
+    return op, dt, where + at * dr + _EPS, where + (1 - at) * px + at * py + _EPS
+
+
+def pair_worst(res):
+    """The largest bound (relative) of the asked keys' columns of ``sweep --csv`` at each
+    angle (their values; a slowest point's distance from X where the link turns), for its
+    ``err_max``; 0 where none is asked."""
+    import numpy as np
+
+    b, n, out = res.error_bounds, np.shape(res.theta), np.zeros(np.shape(res.theta))
+    feet = {f.key: f for f in feet_over(res)}
+    for key, kind, (x, y) in asked_pairs(res.scene):
+        if kind == "vmin":
+            f = feet[key]
+            e = np.maximum(b.V.get(x, 0.0), b.V.get(y, 0.0)) + _EPS
+            (px, py), (qx, qy) = res.P[x], res.P[y]
+            length = np.hypot(np.subtract(qx, px), np.subtract(qy, py))
+            at = np.clip(f.t, 0.0, 1.0)
+            with np.errstate(all="ignore"):  # (where the link does not turn: no foot, no bound)
+                _, _, far, _ = _foot_bounds(b, x, y, res.V[x], res.V[y], f.t, at, length)
+            out = np.fmax(out, np.fmax(e, np.where(f.still, 0.0, far)))
+            continue
+        link = common_link(res.scene, x, y).key
+        (px, py), (qx, qy) = res.P[x], res.P[y]
+        r = np.hypot(np.subtract(qx, px), np.subtract(qy, py))
+        radial, tangential, _ = _component_bounds(b, link, res.W[link], res.Al[link], r, x, y)
+        out = np.fmax(out, np.broadcast_to(radial if kind == "ar" else tangential, n))
     return out
 
 

@@ -234,8 +234,8 @@ def _least(sol, res) -> list:
                 "key": f.key,
                 "x": f.x,
                 "y": f.y,
-                "P": foot_name(sol),
-                "p": foot_name(sol).lower(),
+                "P": foot_name(sol, f.key),
+                "p": foot_name(sol, f.key).lower(),
                 "t": none(f.t),
                 "foot": _flat(f.foot),
                 "speed": round_sig(np.where(f.speed <= f.noise, 0.0, f.speed)),  # (noise: 0)
