@@ -168,3 +168,12 @@ def test_a_us_book_says_the_diametral_pitch(capsys, tmp_path):
     assert main(["solve", "--json", str(f)]) == 0
     rec = json.loads(capsys.readouterr().out)["rolling"]["O3-B"]["teeth"]
     assert rec["diametral_pitch"] == 10 and rec["module"] == pytest.approx(0.0254 / 10, rel=1e-15)
+
+
+def test_centres_name_the_pitch_point(capsys):
+    """The instantaneous centre of the planet and the sun is the pitch point of gears that
+    mesh (a wheel with no teeth keeps 'the contact of ...')."""
+    assert main(["centres", str(BOOK)]) == 0
+    out = capsys.readouterr().out
+    assert "the pitch point of AP meshing with the sun of 40 teeth about O (no slip)" in out, out
+    assert "the contact of AP" not in out
