@@ -6,6 +6,7 @@ inputs, a compound planet; an internal pair driven by its ring; a rack and pinio
 the words: a second gear on a wheel's shaft is "keyed to" it, a pinion inside a ring gear
 meshes with "the ring gear"."""
 
+import json
 import math
 import subprocess
 import sys
@@ -13,6 +14,7 @@ import sys
 import pytest
 
 from polygon_method import parse_scene, solve
+from polygon_method.cli import main
 from polygon_method.text.steptable import steps_text
 
 RPM = 2 * math.pi / 60
@@ -228,3 +230,62 @@ def test_a_rack_with_a_module_and_no_teeth_asks_for_on_teeth(tmp_path):
     lines = out.stderr.strip().splitlines()
     assert out.returncode == 2 and len(lines) == 1, out.stderr
     assert "[rolling] R (line" in lines[0] and "add on_teeth" in lines[0], lines[0]
+
+
+HOLD = """
+[ground]
+O = [0, 0]
+[rolling]
+module = "5 mm"
+{planet}
+{other}
+[input]
+crank = "OA"
+angle = 30
+speed = "200 rpm ccw"
+[loads]
+{load} = {{ torque = "100 N m cw" }}
+[gravity]
+"""
+
+
+@pytest.mark.parametrize(
+    "planet,other,load,held",
+    [
+        # the sun fixed, 100 N m cw resisting the annulus: the sun held with 100 x 40/88
+        (
+            'AP = { on = "O", teeth = 24, on_teeth = 40 }',
+            '"O-Q" = { on = "AP", ring = true, teeth = 88 }',
+            '"O-Q"',
+            -100 * 40 / 88,
+        ),
+        # the annulus fixed, 100 N m cw resisting the sun: the annulus held with 100 x 88/40
+        (
+            'AP = { on = "O", inside = true, teeth = 24, on_teeth = 88 }',
+            '"O-S" = { on = "AP", teeth = 40 }',
+            '"O-S"',
+            -100 * 88 / 40,
+        ),
+    ],
+)
+def test_the_torque_holding_the_fixed_gear(planet, other, load, held, capsys, tmp_path):
+    """The book's holding torque on the fixed wheel of an epicyclic (no friction, the arm
+    turning uniformly, no masses): the torques on the train sum to nought, so the fixed
+    gear is held with the output torque times z_fixed / z_output, in its sense; and the
+    input torque is the power balance's. Said in the contact's words, in the JSON."""
+    text = HOLD.format(planet=planet, other=other, load=load)
+    sol = _solve(text)
+    w_out = sol.W[load.strip('"')]
+    t_in = 100 * w_out / sol.W["OA"]  # T_in w_a = 100 w_out (the load cw, ccw positive)
+    assert sol.input_torque == pytest.approx(t_in, rel=1e-9)
+    assert held == pytest.approx(-(t_in - 100), rel=1e-9)  # the three torques sum to 0
+    f = tmp_path / "hold.toml"
+    f.write_text('units = "mm"\n' + text, encoding="utf-8")
+    assert main(["solve", "--json", str(f)]) == 0
+    contact = json.loads(capsys.readouterr().out)["forces"]["contacts"]["AP"]
+    assert contact["holding_torque"] == pytest.approx(held, rel=1e-9)
+    assert main(["solve", str(f)]) == 0
+    out = capsys.readouterr().out
+    fixed = "the sun of 40 teeth" if "40 }" in planet else "the fixed annulus of 88 teeth"
+    assert f"contact of planet AP with {fixed} about O" in out, out
+    assert f"the frame holds {fixed} about O with {abs(held):.4g} N m cw" in out, out
