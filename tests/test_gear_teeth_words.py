@@ -132,6 +132,8 @@ def test_page_says_the_teeth_in_a_browser(browser, tmp_path):
     path = tmp_path / "book.html"
     assert main(["page", str(BOOK), "-o", str(path)]) == 0
     page = browser.new_page()
+    errors = []
+    page.on("pageerror", lambda e: errors.append(str(e)))
     try:
         page.goto(path.as_uri())
         body = _flat(page.inner_text("body"))
@@ -143,6 +145,7 @@ def test_page_says_the_teeth_in_a_browser(browser, tmp_path):
         assert "pitch circle of the planet AP of 24 teeth" in titles, titles
         assert "pitch circle of the ring O-Q of 88 teeth" in titles, titles
         assert not any(re.match(r"pitch circle about", t) for t in titles), titles
+        assert not errors, errors
     finally:
         page.close()
 

@@ -289,3 +289,30 @@ def test_the_torque_holding_the_fixed_gear(planet, other, load, held, capsys, tm
     fixed = "the sun of 40 teeth" if "40 }" in planet else "the fixed annulus of 88 teeth"
     assert f"contact of planet AP with {fixed} about O" in out, out
     assert f"the frame holds {fixed} about O with {abs(held):.4g} N m cw" in out, out
+
+
+def test_two_planets_in_series_on_one_arm():
+    """Sun 30 fixed; planet 1 (15) on it, planet 2 (15) meshing with planet 1, both on the
+    arm (B carried on OA, 90 mm from O); the annulus 60 (90 + 30 = 120 mm) about O.
+    Arm fixed: ring / sun = (-30/15)(-15/15)(15/60) = +1/2, so omega_r = omega_a (1 -
+    1/2); planet 2: (omega_2 - omega_a) / (0 - omega_a) = (-30/15)(-15/15) = 2."""
+    sol = _solve("""
+[ground]
+O = [0, 0]
+[links]
+OA = 90
+[points]
+B = { on = "OA", distances = { O = 90, A = 60 }, turn = "cw" }
+[rolling]
+module = "4 mm"
+AP = { on = "O", teeth = 15, on_teeth = 30 }
+BQ = { on = "A-P", teeth = 15 }
+"O-R" = { on = "BQ", ring = true, teeth = 60 }
+[input]
+crank = "OA"
+angle = 30
+speed = "100 rpm ccw"
+""")
+    wa = sol.W["OA"]
+    assert sol.W["O-R"] == pytest.approx(wa / 2, rel=1e-12)
+    assert sol.W["BQ"] == pytest.approx(-wa, rel=1e-12)
