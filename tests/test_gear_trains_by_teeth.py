@@ -316,3 +316,20 @@ speed = "100 rpm ccw"
     wa = sol.W["OA"]
     assert sol.W["O-R"] == pytest.approx(wa / 2, rel=1e-12)
     assert sol.W["BQ"] == pytest.approx(-wa, rel=1e-12)
+
+
+def test_arm_and_annulus_both_driven():
+    """Arm 200 rpm ccw, annulus 88 at 100 rpm cw (the second input), the sun 40 the output:
+    (omega_s - omega_a) / (omega_r - omega_a) = -88/40: 200 + 2.2 x 300 = 860 rpm ccw; the
+    planet (omega_p - omega_a) / (omega_r - omega_a) = 88/24: -900 rpm."""
+    sol = _solve(
+        EPI.format(
+            planet='AP = { on = "O-Q", inside = true, teeth = 24, on_teeth = 88 }',
+            other='"O-S" = { on = "AP", teeth = 40 }',
+            speed='speed = "200 rpm ccw"\n[input.second]\ncrank = "O-Q"\nangle = 0\n'
+            'speed = "100 rpm cw"',
+        )
+    )
+    assert sol.W["O-S"] == pytest.approx(860 * RPM, rel=1e-12)
+    assert sol.W["AP"] == pytest.approx(-900 * RPM, rel=1e-12)
+    assert "meshing with the ring gear O-Q of 88 teeth" in steps_text(sol)
