@@ -11,7 +11,11 @@ The pitch radius is m z / 2 (z / (2 P)); a ``radius`` (else the link's length: t
 the pitch circle) or ``on_radius`` stated too must agree. Without a module the teeth fix
 the ratio of the radii, and the centre distance (two fixed centres, or the arm joining
 them) fixes the radii: r = d z / (z + z_o) outside, d z / (z_o - z) inside a ring, said
-as a default taken."""
+as a default taken. With a module both gears are toothed: the one whose teeth the entry
+leaves out has 2 r / m of the radius the scene fixes for it (its link or ``radius``, the
+gear's ``on_radius``, else the centre distance less the wheel's), taken and said where
+that is a whole number, refused where it is not. The gear a wheel meshes with is then
+named by its teeth, as a book names it (:func:`gear_label`)."""
 
 from __future__ import annotations
 
