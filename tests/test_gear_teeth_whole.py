@@ -199,6 +199,7 @@ def test_the_centre_distance_known_only_once_placed(tmp_path):
     sol = solve(parse_scene(PLACED.format(ox=cx, oy=cy + 160)))
     note = next(n for n in sol.notes if "at the stated instant" in n)
     assert "CO = 160 mm" in note and "100 mm: 40 teeth" in note, note
+    assert sol.plan.steps[-1].title == "gear OS of 24 teeth meshing with the gear BC of 40 teeth"
     zf = 2 * (math.hypot(100 - cx, 250 - cy) - 60) / 5
     line = _one_line(_run(PLACED.format(ox=100.0, oy=250.0), tmp_path))
     assert "[rolling] OS" in line and f"{zf:.6g} teeth" in line, line
