@@ -108,7 +108,8 @@ def test_a_pair_by_its_teeth_in_every_view(more, capsys, tmp_path):
 
 def test_a_wheel_without_teeth_keeps_its_words():
     """A friction wheel on a fixed circle (no teeth): "the wheel AP (radius 60 mm) rolls
-    without slipping on the fixed circle about O", as before."""
+    without slipping on the fixed circle about O", as before, the circle's radius the
+    centre distance's, 160 - 60 = 100 mm."""
     text = BOOK.read_text(encoding="utf-8")
     text = text.split("[rolling]")[0] + (
         '[links]\nOA = 160\nAP = 60\n[rolling]\nAP = { on = "O" }\n[input]\ncrank = "OA"\n'
@@ -118,7 +119,7 @@ def test_a_wheel_without_teeth_keeps_its_words():
     out = _flat(steps_text(sol))
     assert (
         "the wheel AP (radius 60 mm (" in out
-        and "rolls without slipping on the fixed circle about O" in out
+        and "rolls without slipping on the fixed circle about O (radius 100 mm (" in out
     )
     assert "of 40 teeth" not in out and "planet AP" not in out
     assert any(
