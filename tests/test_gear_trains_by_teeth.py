@@ -333,3 +333,26 @@ def test_arm_and_annulus_both_driven():
     assert sol.W["O-S"] == pytest.approx(860 * RPM, rel=1e-12)
     assert sol.W["AP"] == pytest.approx(-900 * RPM, rel=1e-12)
     assert "meshing with the ring gear O-Q of 88 teeth" in steps_text(sol)
+
+
+def test_a_rack_pinion_by_teeth_without_a_module_asks_for_one(tmp_path):
+    """on_teeth without a module on a rack: a rack has no second gear's teeth to share a
+    centre distance with, so the line asks for the module (or on_radius), not for 'the
+    teeth of both gears'."""
+    f = tmp_path / "r.toml"
+    f.write_text(
+        'units = "mm"\n[ground]\nO1 = [0, 0]\n[links]\n"O1-A" = 40\n[sliders]\nR = { path = '
+        '"horizontal", through = [0, -40] }\n[rolling]\nR = { on = "O1-A", on_teeth = 20 }\n'
+        '[input]\ncrank = "O1-A"\nangle = 0\nspeed = "300 rpm ccw"\n',
+        encoding="utf-8",
+    )
+    out = subprocess.run(
+        [sys.executable, "-m", "polygon_method", "solve", str(f)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    lines = out.stderr.strip().splitlines()
+    assert out.returncode == 2 and len(lines) == 1, out.stderr
+    assert "[rolling] R (line" in lines[0] and "pinion's on_teeth" in lines[0], lines[0]
+    assert "both gears" not in lines[0]

@@ -298,6 +298,13 @@ def _whole(rd, key, x, mod, said, give, alt=None):
 def _from_centres(rd, key, pair, ground, z, zo):
     """(r, R, note) without a module: the teeth's ratio and the centre distance (two fixed
     centres, or the link joining them, the arm) fix the pitch radii."""
+    if pair.on == "rack":  # its pinion's teeth make its pitch radius only with a module
+        raise rd.error(
+            'the module not given: give module = "4 mm" (or diametral_pitch) with the '
+            "pinion's on_teeth, or on_radius instead",
+            "rolling",
+            key,
+        )
     if z is None or zo is None or pair.on not in ("gear", "circle"):
         raise rd.error(
             'the module not given: give module = "4 mm" (or diametral_pitch), or the '
