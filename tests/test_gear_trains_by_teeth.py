@@ -356,3 +356,28 @@ def test_a_rack_pinion_by_teeth_without_a_module_asks_for_one(tmp_path):
     assert out.returncode == 2 and len(lines) == 1, out.stderr
     assert "[rolling] R (line" in lines[0] and "pinion's on_teeth" in lines[0], lines[0]
     assert "both gears" not in lines[0]
+
+
+def test_a_reduction_given_on_its_output_is_no_dead_centre():
+    """A 20:1 compound reduction (20/50 x 15/120) with the speed given on its output, 100
+    rpm: the crank turns at 2000 rpm, and nothing warns of a dead centre (the ratio is the
+    same at every angle: it had warned 'near a dead centre for this input (condition
+    0.05)')."""
+    sol = _solve("""
+[ground]
+O1 = [0, 0]
+O2 = [140, 0]
+O4 = [140, 270]
+[rolling]
+module = "4 mm"
+"O2-B" = { on = "O1-A", teeth = 50, on_teeth = 20 }
+"O4-C" = { on = "O2-B", teeth = 120, on_teeth = 15 }
+[input]
+crank = "O1-A"
+angle = 0
+"omega_O4-C" = "100 rpm ccw"
+""")
+    assert sol.W["O1-A"] == pytest.approx(2000 * RPM, rel=1e-12)
+    assert sol.W["O4-C"] == pytest.approx(100 * RPM, rel=1e-12)
+    assert not sol.warnings, sol.warnings
+    assert not any("dead centre" in n for n in sol.notes), sol.notes
