@@ -181,3 +181,16 @@ def test_centres_name_the_pitch_point(capsys):
     out = capsys.readouterr().out
     assert "the pitch point of AP meshing with the sun of 40 teeth about O (no slip)" in out, out
     assert "the contact of AP" not in out
+
+
+def test_the_force_drawing_names_the_gears_by_their_teeth(tmp_path):
+    """The force sheet's heading of the planet's step and the contact's words (its text
+    is kept beside each drawn line of the SVG)."""
+    text = BOOK.read_text(encoding="utf-8").split("[answers]")[0]
+    scene = tmp_path / "held.toml"
+    scene.write_text(text + '[loads]\n"O-Q" = { torque = "100 N m cw" }\n[gravity]\n', "utf-8")
+    svg = tmp_path / "f.svg"
+    assert main(["draw", "--diagram", "forces", str(scene), "-o", str(svg)]) == 0
+    out = svg.read_text(encoding="utf-8")
+    assert "planet AP of 24 teeth meshing with the sun of" in out
+    assert "fixed circle" not in out
