@@ -110,7 +110,8 @@ def apply_teeth(rd, key, spec, pair, link, out, table):
         if own is not None:
             add = "on_teeth = z (its pinion's)" if pair.on == "rack" else "teeth = z"
             raise rd.error(f"a module with no teeth: add {add}", "rolling", key)
-        return pair
+        if not _meshes_teeth(spec, pair, out, scene_module):
+            return pair
     if pair.on == "line":
         raise rd.error(
             "a wheel on a line grips by friction: it has no teeth (a rack is a block of "
@@ -165,6 +166,15 @@ def apply_teeth(rd, key, spec, pair, link, out, table):
         teeth=(z, zo) + ((None, None) if mod is None else mod[::2]),
         label=pair.label if zo is None else gear_label(pair, zo, out),
     )
+
+
+def _meshes_teeth(spec, pair, out, module):
+    """Whether a wheel whose entry names no teeth is a gear all the same: the table's
+    module given and the gear it meshes with an earlier wheel given by its teeth (an
+    annulus on a toothed planet: its teeth are then its radius's)."""
+    if module is None or pair.on != "gear" or pair.grip is not None or "on_radius" in spec:
+        return False
+    return any(r.wheel == pair.base and r.teeth and r.teeth[0] for r in out)
 
 
 def gear_label(pair, zo, out=()):
