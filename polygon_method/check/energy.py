@@ -122,8 +122,8 @@ def cycle_verdicts(scene, c, answers, tolerance) -> list:
                 if abs(given - v) <= rel * abs(v) * (1 + ARITHMETIC):
                     mistake = code
                     diagnosis = (
-                        f"{what} matches {words} ({v:.4g} {unit}); the correct value is "
-                        f"{correct:.4g} {unit}"
+                        f"{what} matches {words} ({f'{v:.4g} {unit}'.strip()}); the correct "
+                        f"value is {f'{correct:.4g} {unit}'.strip()}"
                     )
                     break
         out.append(

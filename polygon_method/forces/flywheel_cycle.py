@@ -402,10 +402,12 @@ def curves(scene, c, n: int = 1441) -> tuple:
     steady = not getattr(T, "terms", True)
     tq = c.T_mean + 0.0 * th if steady else np.array([T.value(float(x)) for x in th])
     rs = c.T_mean + 0.0 * th if R is None else np.array([R.value(float(x)) for x in th])
-    if T.corners:  # at a jump, the value before it at the first of the pair
+    for curve, values in ((T, tq), (R, rs)):  # at a jump, the value before it at the
+        if curve is None or not curve.corners:  # first of the pair (a law has no corner)
+            continue
         for i in range(1, len(th)):
             if th[i] == th[i - 1] and i + 1 < len(th):
-                tq[i - 1] = _before(T, th[i])
+                values[i - 1] = _before(curve, th[i])
     return th, tq, rs, _energies(scene, c, th)
 
 

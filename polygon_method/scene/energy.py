@@ -384,11 +384,7 @@ class _CycleReader(_RimReader, _PressReader):
         k = UNITS["torque"][unit.strip()]
         words = []
         if "angle" in spec:
-            driving = self._table(spec, t, k)
-            cycle, w = self._cycle(spec, t, driving.angles[-1])
-            if driving.angles[-1] > cycle + ROUNDING:
-                raise self.err("the table's angles run past the cycle", t, "angle")
-            words.append(f"the turning moment in {len(driving.angles)} readings, {w}")
+            return self._readings(spec, t, k, unit.strip(), at)
         else:
             driving = self._law(spec["torque"], t, "torque", k)
             cycle, w = self._cycle(spec, t, 2 * math.pi)
@@ -416,6 +412,45 @@ class _CycleReader(_RimReader, _PressReader):
             resisting=resisting,
             at=at,
             words=tuple(words),
+        )
+
+    def _readings(self, spec, t, k, unit, at) -> Diagram:
+        """A diagram of straight segments at ``angle``: the engine's turning moment
+        (``torque``) and the machine's (``resisting``), each a list of readings at those
+        angles; one of them may be ``"constant"`` (a motor's steady torque; the resisting
+        torque's default), the resisting torque a law."""
+        tq, r = spec["torque"], spec.get("resisting", "constant")
+        steady = [isinstance(x, str) and x.strip().lower() == "constant" for x in (tq, r)]
+        if steady[0] and not isinstance(r, list):
+            raise self.err(
+                'torque = "constant" with angle = [...] needs the resisting torque\'s '
+                "readings at those angles (resisting = [...])",
+                t,
+                "resisting" if "resisting" in spec else "torque",
+            )
+        driving = Law((), "constant") if steady[0] else self._table(spec, "torque", t, k)
+        if steady[1]:
+            resisting = None
+        elif isinstance(r, list) and all(isinstance(v, (int, float)) for v in r):
+            resisting = self._table(spec, "resisting", t, k)  # readings at the same angles
+        else:
+            resisting = self._law(r, t, "resisting", k)
+        cycle, w = self._cycle(spec, t, math.radians(spec["angle"][-1]))
+        if math.radians(spec["angle"][-1]) > cycle + ROUNDING:
+            raise self.err("the table's angles run past the cycle", t, "angle")
+        n = len(spec["angle"])
+        if steady[0]:
+            words = [f"the driving torque constant (a motor's), the mean, {w}"]
+        else:
+            words = [f"the turning moment in {n} readings, {w}"]
+        if resisting is None:
+            words.append("the resisting torque constant, the mean (default)")
+        elif isinstance(resisting, Table):
+            words.append(f"the resisting torque in {n} readings at the same angles")
+        else:
+            words.append(f"the resisting torque {resisting.text} {unit}")
+        return Diagram(
+            "table", cycle, driving=driving, resisting=resisting, at=at, words=tuple(words)
         )
 
     def _law(self, raw, t, key, k):
@@ -448,8 +483,8 @@ class _CycleReader(_RimReader, _PressReader):
         text = " + ".join(str(s) for s in items)
         return Law(terms, text)
 
-    def _table(self, spec, t, k) -> Table:
-        ang, tq = spec["angle"], spec["torque"]
+    def _table(self, spec, key, t, k) -> Table:
+        ang, tq = spec["angle"], spec[key]
         ok = (
             isinstance(ang, list)
             and isinstance(tq, list)
@@ -458,10 +493,10 @@ class _CycleReader(_RimReader, _PressReader):
         )
         if not ok:
             raise self.err(
-                "angle = [...] (deg) and torque = [...] (in unit): two lists of numbers", t, "angle"
+                f"angle = [...] (deg) and {key} = [...] (in unit): two lists of numbers", t, "angle"
             )
         if len(ang) != len(tq):
-            raise self.err(f"{len(tq)} torques for {len(ang)} angles", t, "torque")
+            raise self.err(f"{len(tq)} torques for {len(ang)} angles", t, key)
         if ang[0] != 0 or any(b < a for a, b in zip(ang, ang[1:])) or ang[-1] <= 0:
             raise self.err(
                 "the angles start at 0 and do not decrease (a jump: one angle twice)", t, "angle"
@@ -469,7 +504,7 @@ class _CycleReader(_RimReader, _PressReader):
         if any(a == b == c for a, b, c in zip(ang, ang[1:], ang[2:])):
             raise self.err("an angle given three times: a jump needs it twice", t, "angle")
         if any(not math.isfinite(v) or abs(v * k) > 1e9 for v in tq):
-            raise self.err("a torque beyond 1e9 N m is absurd; check the unit", t, "torque")
+            raise self.err("a torque beyond 1e9 N m is absurd; check the unit", t, key)
         return Table(
             tuple(math.radians(a) for a in ang),
             tuple(v * k for v in tq),

