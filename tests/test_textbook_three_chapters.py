@@ -14,6 +14,8 @@ import mpmath
 import pytest
 from mpmath import mpf
 
+from newton_euler import NewtonEuler
+from polygon_method import load_scene, solve
 from polygon_method.cli import main
 from polygon_method.forces.flywheel_cycle import curves, solve_cycle
 from polygon_method.scene.energy import cycle_from_text
@@ -138,3 +140,141 @@ def test_a_machines_torque_in_segments_badly_given_is_one_line(tmp_path, capsys,
     )
     code, out, err = _run(capsys, "solve", f)
     assert code == 2 and words in err and err.count("\n") == 1 and "Traceback" not in err
+
+
+# --- static force analysis with friction at the pins and the slides ------------------------
+
+
+def _with_friction(bodies, about, pins, guides, knowns, driver, omegas, mu_pin, mu_guide):
+    """The matrix Newton-Euler method with Coulomb friction, repeated until the friction
+    settles: each pin's couple ``mu r |F|`` against the relative turning of its two bodies,
+    each guide's force ``mu |N|`` against the block's sliding, from the forces of the pass
+    before (the first pass without). ``pins``: (name, at, on, by, r); ``guides``: (name, at,
+    block, normal, along, sliding velocity); ``knowns``: (body, F, at, couple); the driver's
+    torque ``T`` on ``driver`` by the frame. At mpmath's precision."""
+    sizes, normals, last = {}, {}, None
+    for _ in range(200):
+        ne = NewtonEuler(bodies, about=about, mp=True)
+        for name, at, on, by, r in pins:
+            ne.pin(name, at, on, by)
+            if name in sizes:
+                c = -mu_pin * r * sizes[name] * mpmath.sign(omegas[on] - omegas.get(by, 0))
+                ne.known(on, c=c)
+                ne.known(by, c=-c)
+        for name, at, block, n, u, vs in guides:
+            ne.along(name, at, n, block, "frame")
+            if name in normals:
+                f = -mu_guide * abs(normals[name]) * mpmath.sign(vs)
+                ne.known(block, (f * u[0], f * u[1]), at)
+        for body, F, at, c in knowns:
+            ne.known(body, F, at, c)
+        ne.couple("T", driver, "frame")
+        x = ne.solve()
+        if last is not None and abs(last - x["T"]) < mpf(10) ** -30:
+            return x
+        last = x["T"]
+        sizes = {n: mpmath.hypot(x[n + ".x"], x[n + ".y"]) for n, *_ in pins}
+        normals = {n: x[n] for n, *_ in guides}
+    raise AssertionError("the friction did not settle")
+
+
+def _fourbar(a, b, c, d, theta, w2):
+    """A four-bar A (0, 0), D (d, 0): B, C (above AD), omega of BC and CD, closed form."""
+    B = (a * mpmath.cos(theta), a * mpmath.sin(theta))
+    dx, dy = d - B[0], -B[1]
+    L = mpmath.hypot(dx, dy)
+    x = (b**2 - c**2 + L**2) / (2 * L)
+    h = mpmath.sqrt(b**2 - x**2)
+    ux, uy = dx / L, dy / L
+    C = (B[0] + x * ux - h * uy, B[1] + x * uy + h * ux)
+    if C[1] < 0:
+        C = (B[0] + x * ux + h * uy, B[1] + x * uy - h * ux)
+    vB = (-w2 * B[1], w2 * B[0])  # vB + w3 x (C - B) = w4 x (C - D)
+    m = mpmath.matrix([[-(C[1] - B[1]), C[1]], [C[0] - B[0], -(C[0] - d)]])
+    w3, w4 = mpmath.lu_solve(m, mpmath.matrix([-vB[0], -vB[1]]))
+    return B, C, w3, w4
+
+
+def _pin(sol, point):
+    return next(p for p in sol.forces.pins if p.point == point).magnitude
+
+
+def test_fourbar_with_friction_at_the_pins_against_the_matrix_method():
+    """Rattan's four-link mechanism, friction circles at its four pins: the torque and every
+    pin force to the 40-digit matrix method repeated until the friction settles."""
+    mpmath.mp.dps = 40
+    f = HERE / "friction_static_fourbar_pins.toml"
+    B, C, w3, w4 = _fourbar(
+        mpf("0.1"), mpf("0.3"), mpf("0.25"), mpf("0.35"), mpmath.radians(75), 10
+    )
+    A, D = (0, 0), (mpf("0.35"), 0)
+    pins = [
+        ("A", A, "AB", "frame", mpf("0.015")),
+        ("B", B, "BC", "AB", mpf("0.0125")),
+        ("C", C, "BC", "CD", mpf("0.0125")),
+        ("D", D, "CD", "frame", mpf("0.015")),
+    ]
+    om = {"AB": mpf(10), "BC": w3, "CD": w4}
+    args = (["AB", "BC", "CD"], {}, pins, [], [("CD", (0, 0), (0, 0), mpf(-40))], "AB", om)
+    x = _with_friction(*args, mpf("0.2"), 0)
+    sol = solve(load_scene(f))
+    assert sol.forces.input_torque == pytest.approx(float(x["T"]), rel=REL)
+    for name, *_ in pins:
+        want = mpmath.hypot(x[name + ".x"], x[name + ".y"])
+        assert _pin(sol, name) == pytest.approx(float(want), rel=REL)
+    bare = _with_friction(*args, 0, 0)  # the slip: the friction left out
+    assert sol.input_torque == pytest.approx(float(bare["T"]), rel=REL)
+
+
+def test_slider_crank_with_friction_at_the_slide_and_pins_against_the_matrix_method():
+    mpmath.mp.dps = 40
+    f = HERE / "friction_static_slider_crank_slide.toml"
+    r, l, th, w2 = mpf("0.08"), mpf("0.32"), mpmath.radians(120), mpf(-20)
+    A = (r * mpmath.cos(th), r * mpmath.sin(th))
+    B = (A[0] + mpmath.sqrt(l**2 - A[1] ** 2), mpf(0))
+    vA = (-w2 * A[1], w2 * A[0])
+    w3 = -vA[1] / (B[0] - A[0])  # B moves along the line of stroke
+    vs = vA[0] - w3 * (B[1] - A[1])
+    pins = [
+        ("O", (0, 0), "OA", "frame", 0),
+        ("A", A, "AB", "OA", mpf("0.02")),
+        ("B", B, "AB", "block", mpf("0.0125")),
+    ]
+    guides = [("N", B, "block", (0, 1), (1, 0), vs)]
+    om = {"OA": w2, "AB": w3, "block": 0}
+    load = [("block", (mpf(-1500), 0), B, 0)]
+    x = _with_friction(
+        ["OA", "AB", "block"], {"block": B}, pins, guides, load, "OA", om, mpf("0.1"), mpf("0.15")
+    )
+    sol = solve(load_scene(f))
+    assert sol.forces.input_torque == pytest.approx(float(x["T"]), rel=REL)
+    assert _pin(sol, "B") == pytest.approx(float(mpmath.hypot(x["B.x"], x["B.y"])), rel=REL)
+    assert sol.forces.guides[0].normal == pytest.approx(float(x["N"]), rel=REL)
+
+
+@pytest.mark.parametrize(
+    "name, slip",
+    [
+        ("friction_static_fourbar_pins", "11.89 N m ccw"),
+        ("friction_static_slider_crank_slide", "90.62 N m cw"),
+    ],
+)
+def test_friction_problems_in_every_view(capsys, tmp_path, name, slip):
+    f = HERE / f"{name}.toml"
+    code, out, _ = _run(capsys, "solve", f)
+    assert (
+        code == 0 and "input torque on" in out and "(inertia, weights, loads and friction)" in out
+    )
+    code, out, _ = _run(capsys, "steps", f)
+    assert code == 0 and "friction power" in out
+    code, out, _ = _run(capsys, "draw", f, "--forces", "-o", tmp_path / "f.svg")
+    assert code == 0
+    assert _run(capsys, "page", f, "-o", tmp_path / "p.html")[0] == 0
+    code, out, _ = _run(capsys, "sweep", f, "--summary")
+    line = next(x for x in out.splitlines() if x.startswith("torque_inertia"))
+    assert "with inertia" not in line and "of the loads and friction (no body massive)" in line
+    answers = tmp_path / "a.toml"
+    answers.write_text(f'[answers]\ntorque = "{slip}"\n', encoding="utf-8")
+    code, out, _ = _run(capsys, "check", f, answers)
+    assert code == 1 and "mistake: the friction left out" in out
+    assert "inertia" not in out.split("mistake:")[1]  # no inertia in a static problem
