@@ -278,3 +278,94 @@ def test_friction_problems_in_every_view(capsys, tmp_path, name, slip):
     code, out, _ = _run(capsys, "check", f, answers)
     assert code == 1 and "mistake: the friction left out" in out
     assert "inertia" not in out.split("mistake:")[1]  # no inertia in a static problem
+
+
+# --- a coupler's inertia force at its offset (Shigley & Uicker) ---------------------------
+
+OFFSET = HERE / "force_fourbar_coupler_offset_accelerating.toml"
+
+
+def test_coupler_inertia_force_offset_and_torque_against_newton_euler():
+    """Closed-form positions of the four-bar, their crank-angle derivatives by mpmath
+    (a = x'' w^2 + x' alpha), each body's inertia force and couple, the three bodies'
+    equations as one 9 x 9 system at 40 digits."""
+    mpmath.mp.dps = 40
+    a, b, c, d = mpf("0.075"), mpf("0.25"), mpf("0.15"), mpf("0.3")
+    th0, w, al = mpmath.radians(110), 240 * 2 * mpmath.pi / 60, mpf(60)
+
+    def pos(th):
+        B, C, _, _ = _fourbar(a, b, c, d, th, 1)
+        return B, C
+
+    def G3(th, k):
+        B, C = pos(th)
+        return B[k] + mpf("0.11") * (C[k] - B[k]) / b
+
+    def G4(th, k):
+        _, C = pos(th)
+        return (d, 0)[k] + mpf("0.075") * (C[k] - (d, 0)[k]) / c
+
+    def ang3(th):
+        B, C = pos(th)
+        return mpmath.atan2(C[1] - B[1], C[0] - B[0])
+
+    def ang4(th):
+        _, C = pos(th)
+        return mpmath.atan2(C[1], C[0] - d)
+
+    def acc(f):
+        return mpmath.diff(f, th0, 2) * w**2 + mpmath.diff(f, th0, 1) * al
+
+    aG3 = [acc(lambda t, k=k: G3(t, k)) for k in (0, 1)]
+    aG4 = [acc(lambda t, k=k: G4(t, k)) for k in (0, 1)]
+    al3, al4 = acc(ang3), acc(ang4)
+    I3, I4 = 4 * mpf("0.09") ** 2, mpf("2.5") * mpf("0.055") ** 2
+    B, C = pos(th0)
+    ne = NewtonEuler(["AB", "BC", "CD"], mp=True)
+    ne.pin("A", (0, 0), "AB", "frame")
+    ne.pin("B", B, "BC", "AB")
+    ne.pin("C", C, "BC", "CD")
+    ne.pin("D", (d, 0), "CD", "frame")
+    ne.known("BC", (-4 * aG3[0], -4 * aG3[1]), (G3(th0, 0), G3(th0, 1)), -I3 * al3)
+    m4 = mpf("2.5")
+    ne.known("CD", (-m4 * aG4[0], -m4 * aG4[1]), (G4(th0, 0), G4(th0, 1)), -I4 * al4 - 25)
+    ne.couple("T", "AB", "frame")
+    x = ne.solve()
+
+    sol = solve(load_scene(OFFSET))
+    f = sol.forces
+    assert f.input_torque == pytest.approx(float(x["T"]), rel=REL)
+    for name in "ABCD":
+        assert _pin(sol, name) == pytest.approx(
+            float(mpmath.hypot(x[name + ".x"], x[name + ".y"])), rel=REL
+        )
+    i3 = next(i for i in f.inertia if i.body == "BC")
+    assert math.hypot(*i3.force) == pytest.approx(float(4 * mpmath.hypot(*aG3)), rel=REL)
+    assert i3.couple == pytest.approx(float(-I3 * al3), rel=REL)
+    # the single force's offset h = I alpha / (m a_G), on the side where its moment about G
+    # is the couple -I alpha: h's sign along the force turned 90 deg ccw gives that moment
+    h = I3 * al3 / (4 * mpmath.hypot(*aG3))
+    assert abs(i3.offset) == pytest.approx(float(h), rel=REL)
+    F = i3.force
+    moment = i3.offset * (-F[1] * F[1] - F[0] * F[0]) / math.hypot(*F)  # (h n) x F, n = perp(F)/|F|
+    assert moment == pytest.approx(float(-I3 * al3), rel=REL)
+
+
+def test_coupler_offset_problem_in_every_view(capsys, tmp_path):
+    code, out, _ = _run(capsys, "solve", OFFSET)
+    assert code == 0 and "offset h (mm)" in out and "16.26" in out
+    code, out, _ = _run(capsys, "steps", OFFSET)
+    assert code == 0 and "h = I alpha / (m a_G)" in out
+    assert _run(capsys, "draw", OFFSET, "--forces", "-o", tmp_path / "f.svg")[0] == 0
+    assert _run(capsys, "page", OFFSET, "-o", tmp_path / "p.html")[0] == 0
+    answers = tmp_path / "a.toml"
+    answers.write_text(
+        '[answers]\ntorque = "13.22 N m ccw"\nCi_BC = "2.535 N m ccw"\nh_BC = "16.26 m"\n',
+        encoding="utf-8",
+    )
+    code, out, _ = _run(capsys, "check", OFFSET, answers)
+    out = " ".join(out.split())  # (the diagnoses are wrapped)
+    assert code == 1
+    assert "mistake: the power balance without the inertia forces" in out
+    assert "the offset in mm given as m" in out  # h's unit: mm written as m
+    assert "offset h = I alpha / (m a_G) on the wrong side of G" in out  # the couple's sense
