@@ -7,6 +7,7 @@ typical slip, page where it applies)."""
 
 from __future__ import annotations
 
+import json
 import math
 from pathlib import Path
 
@@ -369,3 +370,148 @@ def test_coupler_offset_problem_in_every_view(capsys, tmp_path):
     assert "mistake: the power balance without the inertia forces" in out
     assert "the offset in mm given as m" in out  # h's unit: mm written as m
     assert "offset h = I alpha / (m a_G) on the wrong side of G" in out  # the couple's sense
+
+
+# --- instantaneous centres by Kennedy's theorem, by hand geometry ---------------------------
+
+
+def _meet(p1, p2, q1, q2):
+    """Where the line p1 p2 meets the line q1 q2 (mpmath)."""
+    d1, d2 = (p2[0] - p1[0], p2[1] - p1[1]), (q2[0] - q1[0], q2[1] - q1[1])
+    t = ((q1[0] - p1[0]) * d2[1] - (q1[1] - p1[1]) * d2[0]) / (d1[0] * d2[1] - d1[1] * d2[0])
+    return (p1[0] + t * d1[0], p1[1] + t * d1[1])
+
+
+def _dist(a, b):
+    return mpmath.hypot(a[0] - b[0], a[1] - b[1])
+
+
+def _centres(path):
+    from polygon_method.solver.centres import locate
+
+    sol = solve(load_scene(path))
+    return sol, locate(sol)
+
+
+def _at(ic, i, j, unit=1e-3):
+    c = ic.centre(i, j)
+    return (c.point[0] / unit, c.point[1] / unit)  # in mm
+
+
+def _close(got, want, scale):
+    assert math.dist(got, (float(want[0]), float(want[1]))) <= REL * scale, (got, want)
+
+
+def test_fourbar_centres_and_coupler_point_by_kennedy():
+    mpmath.mp.dps = 40
+    sol, ic = _centres(HERE / "centres_fourbar_coupler_point.toml")
+    w2 = -120 * 2 * mpmath.pi / 60
+    B, C, _, _ = _fourbar(mpf(200), mpf(500), mpf(400), mpf(600), mpmath.radians(60), w2)
+    A, D = (0, 0), (mpf(600), 0)
+    bc = _dist(B, C)  # E: BE = 300, CE = 350, the triangle B C E anticlockwise
+    xe = (300**2 - 350**2 + bc**2) / (2 * bc)
+    he = mpmath.sqrt(300**2 - xe**2)
+    ux, uy = (C[0] - B[0]) / bc, (C[1] - B[1]) / bc
+    E = (B[0] + xe * ux - he * uy, B[1] + xe * uy + he * ux)
+    I13, I24 = _meet(A, B, D, C), _meet(A, D, B, C)  # Kennedy: I12 I23 with I14 I34; ...
+    assert ic.n == 4 and len(ic.centres) == 6  # N = 4 x 3 / 2
+    _close(_at(ic, 1, 3), I13, 1000)
+    _close(_at(ic, 2, 4), I24, 1000)
+    # the angular-velocity-ratio theorem, the senses from the side the centre falls on
+    s3 = 1 if (B[0] - A[0]) * (B[0] - I13[0]) + (B[1] - A[1]) * (B[1] - I13[1]) > 0 else -1
+    w3 = w2 * _dist(B, A) / _dist(B, I13) * s3
+    w4 = w2 * _dist(I24, A) / _dist(I24, D) * (1 if (I24[0] - A[0]) * (I24[0] - D[0]) > 0 else -1)
+    assert sol.W["BC"] == pytest.approx(float(w3), rel=REL)
+    assert sol.W["CD"] == pytest.approx(float(w4), rel=REL)
+    assert math.hypot(*sol.V["E"]) == pytest.approx(float(abs(w3) * _dist(E, I13) / 1000), rel=REL)
+
+
+def test_six_link_two_sliders_centres_by_kennedy():
+    mpmath.mp.dps = 40
+    sol, ic = _centres(HERE / "centres_six_link_two_sliders.toml")
+    O, th = (mpf(0), mpf(0)), mpmath.radians(45)
+    A = (150 * mpmath.cos(th), 150 * mpmath.sin(th))
+    B = (A[0] + mpmath.sqrt(600**2 - A[1] ** 2), mpf(0))
+    C = (A[0] + (B[0] - A[0]) / 3, A[1] + (B[1] - A[1]) / 3)
+    D = (mpf(300), C[1] + mpmath.sqrt(500**2 - (300 - C[0]) ** 2))
+    I13 = _meet(O, A, B, (B[0], B[1] + 1))  # OA produced; the normal to B's path
+    I15 = _meet(I13, C, D, (D[0] + 1, D[1]))  # I13 I35; the normal to D's path
+    I25 = _meet(O, I15, A, C)  # I12 I15; I23 I35
+    I26 = _meet(O, (1, 0), I25, D)  # I12 I16; I25 I56
+    assert ic.n == 6 and len(ic.centres) == 15  # N = 6 x 5 / 2
+    for (i, j), want in {(1, 3): I13, (1, 5): I15, (2, 5): I25, (2, 6): I26}.items():
+        _close(_at(ic, i, j), want, 1000)
+    w2 = 2 * mpmath.pi
+    assert math.hypot(*sol.V["D"]) == pytest.approx(float(w2 * _dist(O, I26) / 1000), rel=REL)
+    w3 = w2 * _dist(A, O) / _dist(A, I13)
+    w5 = w3 * _dist(C, I13) / _dist(C, I15)
+    assert abs(sol.W["CD"]) == pytest.approx(float(w5), rel=REL)
+    # the two blocks' centres with the frame are at infinity, square to their paths
+    assert ic.centre(1, 4).point is None and abs(ic.centre(1, 4).direction[0]) < 1e-15
+    assert ic.centre(1, 6).point is None and abs(ic.centre(1, 6).direction[1]) < 1e-15
+
+
+def test_crank_and_slotted_lever_centres_by_kennedy():
+    mpmath.mp.dps = 40
+    sol, ic = _centres(HERE / "centres_crank_slotted_lever.toml")
+    O4, O2, th = (mpf(0), mpf(0)), (mpf(0), mpf(300)), mpmath.radians(150)
+    A = (120 * mpmath.cos(th), 300 + 120 * mpmath.sin(th))
+    n = (-A[1], A[0])  # square to the slot O4 A
+    I13 = _meet(O2, A, O4, (O4[0] + n[0], O4[1] + n[1]))
+    I24 = _meet(O2, O4, A, (A[0] + n[0], A[1] + n[1]))
+    _close(_at(ic, 1, 3), I13, 1000)
+    _close(_at(ic, 2, 4), I24, 1000)
+    w2 = 90 * 2 * mpmath.pi / 60
+    w4 = w2 * _dist(O2, I24) / _dist(O4, I24)  # I24 beyond both pivots: the same sense
+    assert sol.W["O4-P"] == pytest.approx(float(w4), rel=REL)
+    assert math.hypot(*sol.V["P"]) == pytest.approx(float(w4 * mpf("0.5")), rel=REL)
+    c34 = ic.centre(3, 4)
+    assert c34.point is None
+    assert abs(c34.direction[0] * A[0] + c34.direction[1] * A[1]) <= 1e-12 * _dist(A, O4)
+
+
+@pytest.mark.parametrize(
+    "name",
+    [
+        "centres_fourbar_coupler_point",
+        "centres_six_link_two_sliders",
+        "centres_crank_slotted_lever",
+    ],
+)
+def test_centres_problems_in_every_view(capsys, tmp_path, name):
+    f = HERE / f"{name}.toml"
+    code, out, _ = _run(capsys, "centres", f)
+    assert code == 0 and "Number of centres: N = n (n - 1) / 2" in out
+    assert "angular-velocity-ratio theorem" in out
+    assert _run(capsys, "draw", f, "--diagram", "centres", "-o", tmp_path / "c.svg")[0] == 0
+    assert _run(capsys, "check", f)[0] == 0
+
+
+def test_a_centre_at_infinity_answered_in_words(capsys, tmp_path):
+    """Khurmi writes "I14 at infinity, perpendicular to the path": such an answer is read,
+    its direction checked, and the slips named: the path's own direction given, a finite
+    centre said to be at infinity; a finite point for it stays wrong."""
+    f = HERE / "centres_six_link_two_sliders.toml"
+    answers = tmp_path / "a.toml"
+    answers.write_text(
+        "[answers]\n"
+        'I_14 = "at infinity"\n'  # its direction not stated: right
+        'I_46 = "infinity, along 119.7 deg"\n'
+        'I_16 = "at infinity, vertical"\n'  # the path's direction: square to the lines
+        'I_13 = "at infinity"\n'  # finite
+        "I_34 = [696.6, 0]\n",
+        encoding="utf-8",
+    )
+    code, out, _ = _run(capsys, "check", f, answers)
+    flat = " ".join(out.split())
+    assert code == 1 and "3 of 5 right" in flat
+    assert "the direction square to I16's lines given: it is at infinity along 0 deg" in flat
+    assert "I13 is at [696.62, 696.62] mm, not at infinity" in flat
+    code, out, _ = _run(capsys, "check", f, answers, "--json")
+    rows = {r["key"]: r for r in json.loads(out)["answers"]}
+    assert rows["I_16"]["mistake"] == "centre_direction_square"
+    assert rows["I_13"]["mistake"] == "centre_not_at_infinity"
+    assert rows["I_14"]["verdict"] == "right" and rows["I_14"]["given"] is None
+    answers.write_text('[answers]\nI_14 = "infinite"\n', encoding="utf-8")
+    code, _, err = _run(capsys, "check", f, answers)
+    assert code == 2 and err.count("\n") == 1 and '"at infinity"' in err and "line 2" in err
