@@ -18,6 +18,7 @@ from mpmath import mpf
 from newton_euler import NewtonEuler
 from polygon_method import load_scene, solve
 from polygon_method.cli import main
+from polygon_method.forces.bounds import force_bounds
 from polygon_method.forces.flywheel_cycle import curves, solve_cycle
 from polygon_method.scene.energy import cycle_from_text
 
@@ -515,3 +516,64 @@ def test_a_centre_at_infinity_answered_in_words(capsys, tmp_path):
     answers.write_text('[answers]\nI_14 = "infinite"\n', encoding="utf-8")
     code, _, err = _run(capsys, "check", f, answers)
     assert code == 2 and err.count("\n") == 1 and '"at infinity"' in err and "line 2" in err
+
+
+# --- friction in a slotted lever's slot: the forces and how far they may be off -------------
+
+SLOT = HERE / "friction_static_slotted_lever.toml"
+
+
+def test_slotted_lever_with_friction_in_the_slot_and_its_error_bounds(capsys):
+    """The crank and slotted lever against a couple on the lever, mu 0.1 in the slot: the
+    torque, the slot's normal force and the pivots' forces to the 40-digit matrix method
+    repeated until the friction settles (the block slides in along the slot). The friction
+    acts along the slot, through O4: the second pass's friction reproduces the first's, and
+    the forces' error bounds are the rounding's (they read 0.19 of the largest force
+    before: the first pass's change, from no friction to its friction, taken for a
+    settling change)."""
+    mpmath.mp.dps = 40
+    O4, O2, th = (mpf(0), mpf(0)), (mpf(0), mpf("0.3")), mpmath.radians(150)
+    A = (mpf("0.12") * mpmath.cos(th), mpf("0.3") + mpf("0.12") * mpmath.sin(th))
+    L = mpmath.hypot(*A)
+    u, n = (A[0] / L, A[1] / L), (-A[1] / L, A[0] / L)
+    w2 = 90 * 2 * mpmath.pi / 60
+    vA = (-w2 * (A[1] - O2[1]), w2 * A[0])
+    vs = vA[0] * u[0] + vA[1] * u[1]  # along the slot, outward +
+    assert vs < 0
+    normal, last = None, None
+    for _ in range(50):
+        ne = NewtonEuler(["crank", "block", "lever"], about={"block": A}, mp=True)
+        ne.pin("O2", O2, "crank", "frame")
+        ne.pin("A", A, "block", "crank")
+        ne.along("N", A, n, "block", "lever")
+        ne.pin("O4", O4, "lever", "frame")
+        if normal is not None:  # the lever's friction on the block, against its sliding
+            f = -mpf("0.1") * abs(normal) * mpmath.sign(vs)
+            ne.known("block", (f * u[0], f * u[1]), A)
+            ne.known("lever", (-f * u[0], -f * u[1]), A)
+        ne.known("lever", c=mpf(-60))
+        ne.couple("T", "crank", "frame")
+        x = ne.solve()
+        if last is not None and abs(last - x["T"]) < mpf(10) ** -30:
+            break
+        last, normal = x["T"], x["N"]
+    sol = solve(load_scene(SLOT))
+    f = sol.forces
+    assert f.input_torque == pytest.approx(float(x["T"]), rel=REL)
+    assert abs(f.guides[0].normal) == pytest.approx(float(abs(x["N"])), rel=REL)
+    for name in ("O2", "A", "O4"):
+        want = mpmath.hypot(x[name + ".x"], x[name + ".y"])
+        assert _pin(sol, name) == pytest.approx(float(want), rel=REL)
+    b = force_bounds(sol)
+    assert b.contraction == 0.0  # the loads reproduced themselves
+    assert max(b.pins.values()) < 1e-12 and b.effort < 1e-12
+    # and each still bounds the error against the 40-digit solve
+    assert abs(f.input_torque - float(x["T"])) <= b.effort * b.force * b.length
+    for p in f.pins:  # the pivots' forces, on the crank and the lever by the frame
+        if p.point in ("O2", "O4"):
+            err = max(abs(float(p.force[k] - x[p.point + (".x", ".y")[k]])) for k in (0, 1))
+            assert err <= b.pins[(p.point, p.on, p.by)] * b.force, p
+    code, out, _ = _run(capsys, "solve", SLOT)
+    assert code == 0 and "estimated error of the forces" not in out
+    answers_ok = _run(capsys, "check", SLOT)[0] == 0
+    assert answers_ok
