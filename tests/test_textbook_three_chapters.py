@@ -577,3 +577,50 @@ def test_slotted_lever_with_friction_in_the_slot_and_its_error_bounds(capsys):
     assert code == 0 and "estimated error of the forces" not in out
     answers_ok = _run(capsys, "check", SLOT)[0] == 0
     assert answers_ok
+
+
+# --- a punching press given the punch's stroke --------------------------------------------
+
+PRESS = HERE / "flywheel" / "press_stroke_shear_strength.toml"
+
+
+def test_press_with_the_punchs_stroke_by_the_books_formulas():
+    """F = tau pi d t, E = F t / 2, the punching t / (2 s) of the cycle, dE_max = E (1 -
+    t / (2 s)) = I (w1^2 - w2^2) / 2, written out at 30 digits."""
+    mpmath.mp.dps = 30
+    F = mpf(300e6) * mpmath.pi * mpf("0.03") * mpf("0.02")
+    E = F * mpf("0.02") / 2
+    dE = E * (1 - mpf(20) / (2 * 100))
+    w1, w2 = (mpf(n) * 2 * mpmath.pi / 60 for n in (200, 180))
+    inertia = 2 * dE / (w1**2 - w2**2)
+    c = solve_cycle(cycle_from_text(PRESS.read_text(encoding="utf-8"), str(PRESS)))
+    assert c.E_stroke == pytest.approx(float(E), rel=REL)
+    assert c.power == pytest.approx(float(E / 5), rel=REL)
+    assert c.dE_max == pytest.approx(float(dE), rel=REL)
+    assert c.inertia == pytest.approx(float(inertia), rel=REL)
+    assert c.mass == pytest.approx(float(inertia / mpf("0.36")), rel=REL)
+
+
+def test_press_with_the_punchs_stroke_in_every_view(capsys, tmp_path):
+    code, out, _ = _run(capsys, "solve", PRESS)
+    assert code == 0 and "the punching t / (2 s) = 20 mm / (2 x 100 mm) of the cycle" in out
+    assert _run(capsys, "steps", PRESS)[0] == 0
+    assert _run(capsys, "draw", PRESS, "-o", tmp_path / "d.svg")[0] == 0
+    assert _run(capsys, "page", PRESS, "-o", tmp_path / "p.html")[0] == 0
+    answers = tmp_path / "a.toml"
+    answers.write_text('[answers]\ndE_max = "5655 J"\n', encoding="utf-8")  # the whole hole's
+    code, out, _ = _run(capsys, "check", PRESS, answers)
+    assert code == 1 and "the whole energy of a hole taken for dE_max" in " ".join(out.split())
+    for body, words in (
+        ('energy = "6 kJ"\nholes_per_minute = 6\nstroke = 100\n', "needs the plate's thickness"),
+        (
+            'energy = "6 kJ"\nthickness = 20\nholes_per_minute = 6\nstroke = 100\n'
+            'punching_time = "1 s"\n',
+            "one of them",
+        ),
+        ('force = "300 kN"\nthickness = 20\nholes_per_minute = 6\nstroke = 5\n', "0 to 1"),
+    ):
+        f = tmp_path / "bad.toml"
+        f.write_text("[press]\n" + body + '[flywheel]\nspeed = "200 rpm"\ncoefficient = 0.1\n')
+        code, _, err = _run(capsys, "solve", f)
+        assert code == 2 and words in err and err.count("\n") == 1, err
