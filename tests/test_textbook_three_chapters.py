@@ -624,3 +624,23 @@ def test_press_with_the_punchs_stroke_in_every_view(capsys, tmp_path):
         f.write_text("[press]\n" + body + '[flywheel]\nspeed = "200 rpm"\ncoefficient = 0.1\n')
         code, _, err = _run(capsys, "solve", f)
         assert code == 2 and words in err and err.count("\n") == 1, err
+
+
+def test_wheel_rolling_on_the_floor_centres_by_kennedy():
+    """The point of contact is the wheel's centre with the floor (no slip); the rest by
+    Kennedy's theorem and the angular-velocity-ratio theorem, by hand geometry."""
+    mpmath.mp.dps = 40
+    sol, ic = _centres(HERE / "centres_wheel_rolling_crank_rod.toml")
+    O, th = (mpf(0), mpf(150)), mpmath.radians(120)
+    A = (80 * mpmath.cos(th), 150 + 80 * mpmath.sin(th))
+    C = (A[0] + mpmath.sqrt(300**2 - (A[1] - 100) ** 2), mpf(100))
+    I14 = (C[0], mpf(0))
+    I13 = _meet(O, A, I14, C)  # I12 I23; I14 I34
+    I24 = _meet(O, I14, A, C)  # I12 I14; I23 I34
+    for (i, j), want in {(1, 4): I14, (1, 3): I13, (2, 4): I24}.items():
+        _close(_at(ic, i, j), want, 1000)
+    w2 = -100 * 2 * mpmath.pi / 60
+    side = 1 if (I24[0] - O[0]) * (I24[0] - I14[0]) > 0 else -1
+    w4 = w2 * _dist(I24, O) / _dist(I24, I14) * side
+    assert sol.W["CP"] == pytest.approx(float(w4), rel=REL)
+    assert math.hypot(*sol.V["P"]) == pytest.approx(float(abs(w4) * 200 / 1000), rel=REL)
