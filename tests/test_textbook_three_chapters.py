@@ -259,6 +259,8 @@ def test_slider_crank_with_friction_at_the_slide_and_pins_against_the_matrix_met
     [
         ("friction_static_fourbar_pins", "11.89 N m ccw"),
         ("friction_static_slider_crank_slide", "90.62 N m cw"),
+        ("friction_static_slotted_lever", "13.85 N m ccw"),
+        ("friction_static_shaper_ram_and_slot", "373.4 N m ccw"),
     ],
 )
 def test_friction_problems_in_every_view(capsys, tmp_path, name, slip):
@@ -644,3 +646,54 @@ def test_wheel_rolling_on_the_floor_centres_by_kennedy():
     w4 = w2 * _dist(I24, O) / _dist(I24, I14) * side
     assert sol.W["CP"] == pytest.approx(float(w4), rel=REL)
     assert math.hypot(*sol.V["P"]) == pytest.approx(float(abs(w4) * 200 / 1000), rel=REL)
+
+
+def test_shaper_with_friction_at_the_ram_and_in_the_slot_against_the_matrix_method():
+    """Five bodies (the crank, the block, the lever, PQ, the ram), 13 unknowns, the ram's
+    guide's and the slot's friction against their sliding, repeated until it settles."""
+    mpmath.mp.dps = 40
+    O1, O2, th = (mpf(0), mpf(0)), (mpf(0), mpf("-0.3")), mpmath.radians(30)
+    A = (mpf("0.12") * mpmath.cos(th), mpf("0.12") * mpmath.sin(th))
+    L = _dist(A, O2)
+    u = ((A[0] - O2[0]) / L, (A[1] - O2[1]) / L)
+    n = (-u[1], u[0])
+    P = (O2[0] + mpf("0.6") * u[0], O2[1] + mpf("0.6") * u[1])
+    Q = (P[0] + mpmath.sqrt(mpf("0.2") ** 2 - (mpf("0.32") - P[1]) ** 2), mpf("0.32"))
+    vA = (-A[1], A[0])  # the crank at 1 rad/s ccw
+    vs = vA[0] * u[0] + vA[1] * u[1]  # the block along the slot, outward +
+    wl = (vA[0] * n[0] + vA[1] * n[1]) / L
+    vP = (-wl * (P[1] - O2[1]), wl * (P[0] - O2[0]))
+    vQ = vP[0] + vP[1] / (Q[0] - P[0]) * (Q[1] - P[1])  # the ram along its guide
+    NQ = NA = last = None
+    for _ in range(100):
+        ne = NewtonEuler(
+            ["crank", "block", "lever", "PQ", "ram"], about={"block": A, "ram": Q}, mp=True
+        )
+        ne.pin("O1", O1, "crank", "frame")
+        ne.pin("A", A, "block", "crank")
+        ne.along("NA", A, n, "block", "lever")
+        ne.pin("O2", O2, "lever", "frame")
+        ne.pin("P", P, "PQ", "lever")
+        ne.pin("Q", Q, "PQ", "ram")
+        ne.along("NQ", Q, (0, 1), "ram", "frame")
+        ne.known("ram", (mpf(3000), 0), Q)
+        if NQ is not None:
+            f = -mpf("0.1") * abs(NQ) * mpmath.sign(vQ)
+            ne.known("ram", (f, 0), Q)
+            g = -mpf("0.1") * abs(NA) * mpmath.sign(vs)
+            ne.known("block", (g * u[0], g * u[1]), A)
+            ne.known("lever", (-g * u[0], -g * u[1]), A)
+        ne.couple("T", "crank", "frame")
+        x = ne.solve()
+        if last is not None and abs(last - x["T"]) < mpf(10) ** -30:
+            break
+        last, NQ, NA = x["T"], x["NQ"], x["NA"]
+    sol = solve(load_scene(HERE / "friction_static_shaper_ram_and_slot.toml"))
+    f = sol.forces
+    assert f.input_torque == pytest.approx(float(x["T"]), rel=REL)
+    normals = {g.point: abs(g.normal) for g in f.guides}
+    assert normals["Q"] == pytest.approx(float(abs(x["NQ"])), rel=REL)
+    assert normals["A"] == pytest.approx(float(abs(x["NA"])), rel=REL)
+    for name in ("O1", "O2", "P", "Q"):
+        want = mpmath.hypot(x[name + ".x"], x[name + ".y"])
+        assert _pin(sol, name) == pytest.approx(float(want), rel=REL)
