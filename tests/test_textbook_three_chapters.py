@@ -697,3 +697,12 @@ def test_shaper_with_friction_at_the_ram_and_in_the_slot_against_the_matrix_meth
     for name in ("O1", "O2", "P", "Q"):
         want = mpmath.hypot(x[name + ".x"], x[name + ".y"])
         assert _pin(sol, name) == pytest.approx(float(want), rel=REL)
+
+
+def test_a_large_correct_value_is_written_whole_as_a_book_writes_it(capsys):
+    """The check table's correct value of five or six figures is the book's 50641 N, not
+    5.0641e+04 N."""
+    code, out, _ = _run(
+        capsys, "check", HERE.parent.parent / "worked_problems" / "engine_forces.toml"
+    )
+    assert code == 0 and "50641 N (50.64 kN)" in out and "e+04" not in out

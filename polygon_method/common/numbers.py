@@ -83,16 +83,17 @@ def fixed(x: float, digits: int = 3) -> str:
 
 
 def textbook(x: float) -> str:
-    """A value as a textbook writes it: four significant figures (an exponent if needed).
+    """A value as a textbook writes it: four significant figures, a number of five or six
+    figures whole (the book's 14137 J, not 1.414e+04), an exponent beyond.
 
-    >>> textbook(0.39183), textbook(0), textbook(1.5e-7)
-    ('0.3918', '0', '1.5000e-07')
+    >>> textbook(0.39183), textbook(0), textbook(1.5e-7), textbook(14137.2), textbook(-2.5e6)
+    ('0.3918', '0', '1.5000e-07', '14137', '-2.5000e+06')
     """
     if x == 0:
         return "0"
     s = f"{x:.4g}"
     if "e" in s:
-        s = f"{x:.4e}"
+        s = f"{x:.0f}" if 1e4 <= abs(x) < 999999.5 else f"{x:.4e}"
     return s
 
 
