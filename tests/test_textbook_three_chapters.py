@@ -699,6 +699,49 @@ def test_shaper_with_friction_at_the_ram_and_in_the_slot_against_the_matrix_meth
         assert _pin(sol, name) == pytest.approx(float(want), rel=REL)
 
 
+# --- a flywheel given by its rim's speed alone ---------------------------------------------
+
+RIM = HERE / "flywheel" / "press_rim_speed_alone.toml"
+
+
+def test_flywheel_from_its_rims_speed_alone():
+    """Khurmi's "the mean speed of the flywheel is 20 m/s": dE_max = I w^2 Cs = m (w R)^2
+    Cs = m v^2 Cs, the radius and the shaft's speed not needed (30 digits)."""
+    mpmath.mp.dps = 30
+    E = 6 * mpmath.pi * 30 * 25  # J: 6 J per mm^2 of the sheared area pi d t
+    dE = E * (1 - mpf(25) / (2 * 90))
+    c = solve_cycle(cycle_from_text(RIM.read_text(encoding="utf-8"), str(RIM)))
+    assert c.E_stroke == pytest.approx(float(E), rel=REL)
+    assert c.power == pytest.approx(float(E / 8), rel=REL)
+    assert c.dE_max == pytest.approx(float(dE), rel=REL)
+    assert c.mass == pytest.approx(float(dE / (20**2 * mpf("0.04"))), rel=REL)
+    assert c.inertia is None and c.speed is None and c.rim_radius is None  # not stated
+
+
+def test_flywheel_from_its_rims_speed_alone_in_every_view(capsys, tmp_path):
+    code, out, _ = _run(capsys, "solve", RIM)
+    assert code == 0 and "rim's mass m = dE_max / (v^2 Cs) = 760.9 kg" in out
+    assert "I and R need the shaft's speed" in out
+    code, out, _ = _run(capsys, "steps", RIM)
+    assert code == 0 and "m = 12174 / (20^2 x 0.04) = 760.9 kg." in out
+    assert _run(capsys, "draw", RIM, "-o", tmp_path / "d.svg")[0] == 0
+    assert _run(capsys, "page", RIM, "-o", tmp_path / "p.html")[0] == 0
+    code, out, _ = _run(capsys, "solve", RIM, "--json")
+    cyc = json.loads(out)["cycle"]
+    assert cyc["speed"] is None and cyc["inertia"] is None and cyc["mass"] > 0
+    answers = tmp_path / "a.toml"
+    answers.write_text('[answers]\nm_flywheel = "1522 kg"\nI_flywheel = "10 kg m^2"\n')
+    code, out, err = _run(capsys, "check", RIM, answers)  # I: nothing to check it against
+    assert code == 2 and "I_flywheel" in err and err.count("\n") == 1
+    answers.write_text('[answers]\nm_flywheel = "1522 kg"\n')  # Cs taken as +-4 %
+    code, out, _ = _run(capsys, "check", RIM, answers)
+    assert code == 1 and "range either side of the mean" in " ".join(out.split())
+    bad = tmp_path / "bad.toml"  # a section needs the radius: the shaft's speed
+    bad.write_text(RIM.read_text(encoding="utf-8").replace("[answers]", "width = 100\n[answers]"))
+    code, _, err = _run(capsys, "solve", bad)
+    assert code == 2 and "needs its radius" in err and err.count("\n") == 1
+
+
 def test_a_large_correct_value_is_written_whole_as_a_book_writes_it(capsys):
     """The check table's correct value of five or six figures is the book's 50641 N, not
     5.0641e+04 N."""

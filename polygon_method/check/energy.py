@@ -66,6 +66,7 @@ def _slips(scene, c, key, correct) -> list:
     fw = scene.flywheel
     if key in ("I_flywheel", "m_flywheel") and fw is not None and fw.inertia is None:
         out += cs_slips(correct)
+    if key in ("I_flywheel", "m_flywheel") and fw is not None and fw.inertia is None and fw.speed:
         out.append(
             (
                 correct * (math.pi / 30) ** 2,

@@ -348,6 +348,12 @@ def _flywheel(scene, base, words) -> CycleEnergy:
         return CycleEnergy(**base, words=tuple(words))
     words += list(fw.words)
     w, dE = fw.speed, base["dE_max"]
+    if w is None:  # the rim's speed alone: m v^2 Cs = dE_max (I w^2 = m v^2)
+        v, cs = fw.rim_speed, fw.coefficient
+        share = "" if fw.share == 1 else f"{fw.share:.6g} "
+        words.append(f"the rim's mass m = {share}dE_max / (v^2 Cs)")
+        out = dict(base, Cs=cs, rim_speed=v, mass=fw.share * dE / (v * v * cs))
+        return CycleEnergy(**out, words=tuple(words))
     out = dict(base, speed=w)
     if base["T_mean"] is not None:
         out["power"] = base["T_mean"] * w

@@ -147,10 +147,11 @@ class Rim:
     m), or ``gyration``, or found from ``rim_speed`` (m/s) or the hoop ``stress`` (Pa:
     sigma = rho v^2); ``density`` (kg/m^3); ``share`` of the flywheel's effect the rim gives;
     its section from ``ratio`` (width / thickness), ``width`` or ``thickness`` (m).
-    ``words``: how each item was read, the defaults named."""
+    ``words``: how each item was read, the defaults named. ``speed`` None: the shaft's
+    speed not given, the rim's speed alone (its mass from ``m v^2 Cs = dE_max``)."""
 
     coefficient: float | None
-    speed: float
+    speed: float | None
     inertia: float | None = None
     radius: float | None = None
     gyration: float | None = None
