@@ -19,6 +19,7 @@ from newton_euler import NewtonEuler
 from polygon_method import load_scene, solve
 from polygon_method.cli import main
 from polygon_method.forces.bounds import force_bounds
+from polygon_method.forces.engine import efforts
 from polygon_method.forces.flywheel_cycle import curves, solve_cycle
 from polygon_method.scene.energy import cycle_from_text
 
@@ -749,3 +750,66 @@ def test_a_large_correct_value_is_written_whole_as_a_book_writes_it(capsys):
         capsys, "check", HERE.parent.parent / "worked_problems" / "engine_forces.toml"
     )
     assert code == 0 and "50641 N (50.64 kN)" in out and "e+04" not in out
+
+
+# --- an engine's efforts with friction at the crosshead guides -----------------------------
+
+CROSSHEAD = HERE / "friction_engine_crosshead.toml"
+
+
+def test_engine_efforts_with_crosshead_friction_by_the_closed_forms():
+    """The piston's exact acceleration (OB = r cos t + sqrt(l^2 - r^2 sin^2 t) differentiated
+    twice by mpmath at 50 digits; the books' w^2 r (cos t + cos 2t / n) is its first two
+    terms), the rod a two-force member: along the stroke F_Q cos phi = F_L + F_I -+ mu F_Q
+    sin phi, the friction against the piston's sliding (towards the crank here)."""
+    mpmath.mp.dps = 50
+    r, n, t = mpf("0.25"), mpf("4.4"), mpmath.radians(120)
+    w, m, mu = 200 * 2 * mpmath.pi / 60, 180, mpf("0.08")
+    F_L = mpf("0.6e6") * mpmath.pi / 4 * mpf("0.3") ** 2
+
+    def ob(x):
+        return r * mpmath.cos(x) + mpmath.sqrt((n * r) ** 2 - (r * mpmath.sin(x)) ** 2)
+
+    a = w**2 * mpmath.diff(ob, t, 2)  # along OB, + away from the crank
+    assert mpmath.diff(ob, t) < 0  # (the piston moves towards the crank)
+    toward = F_L + m * a  # the gas force and the inertia force -m a, towards the crank
+    phi = mpmath.asin(mpmath.sin(t) / n)
+    # the piston moves towards the crank (past 0 < t < 180 deg, from the i.d.c.): the
+    # friction on it acts away from the crank
+    F_Q = toward / (mpmath.cos(phi) + mu * mpmath.sin(phi))
+    want = {
+        "piston_effort": F_Q * mpmath.cos(phi),
+        "rod_thrust": F_Q,
+        "side_thrust": F_Q * mpmath.sin(phi),
+        "crank_effort": F_Q * mpmath.sin(t + phi),
+        "turning_moment": F_Q * mpmath.sin(t + phi) * r,
+    }
+    sol = solve(load_scene(CROSSHEAD))
+    e = efforts(sol.scene, sol.plan, sol.P, sol.forces)
+    got = {
+        "piston_effort": e.F_P,
+        "rod_thrust": e.F_Q,
+        "side_thrust": e.F_N,
+        "crank_effort": e.F_T,
+        "turning_moment": e.T,
+    }
+    for k, v in want.items():
+        assert abs(got[k]) == pytest.approx(float(v), rel=REL), k
+    # the driver's torque (the machine's resistance) is the turning moment's opposite:
+    # the crank turns cw, the engine drives it cw, so the resisting torque is ccw
+    assert sol.forces.input_torque == pytest.approx(float(want["turning_moment"]), rel=REL)
+
+
+def test_engine_with_crosshead_friction_in_every_view(capsys, tmp_path):
+    code, out, _ = _run(capsys, "solve", CROSSHEAD)
+    assert code == 0 and "with the guide's friction 0.08 F_N against its sliding" in out
+    assert _run(capsys, "steps", CROSSHEAD)[0] == 0
+    assert _run(capsys, "draw", CROSSHEAD, "--forces", "-o", tmp_path / "f.svg")[0] == 0
+    assert _run(capsys, "page", CROSSHEAD, "-o", tmp_path / "p.html")[0] == 0
+    assert _run(capsys, "check", CROSSHEAD)[0] == 0
+    answers = tmp_path / "a.toml"
+    answers.write_text('[answers]\npiston_effort = "54.52 kN"\nturning_moment = "10.44 kN m"\n')
+    code, out, _ = _run(capsys, "check", CROSSHEAD, answers)
+    flat = " ".join(out.split())
+    assert code == 1 and flat.count("matches the friction left out") == 2
+    assert "(54523 N); the correct value is 53661 N" in flat  # whole, as the book writes it
