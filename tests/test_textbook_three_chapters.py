@@ -813,3 +813,37 @@ def test_engine_with_crosshead_friction_in_every_view(capsys, tmp_path):
     flat = " ".join(out.split())
     assert code == 1 and flat.count("matches the friction left out") == 2
     assert "(54523 N); the correct value is 53661 N" in flat  # whole, as the book writes it
+
+
+# --- a multi-cylinder engine's areas, the first below the mean line -----------------------
+
+BELOW = HERE / "flywheel" / "areas_starting_below.toml"
+
+
+def test_areas_starting_below_the_mean_by_exact_running_sums(capsys):
+    """The running sums of the book's whole mm^2, exactly (fractions), times the scales:
+    dE_max, I and the rim; and no rounding noise where the areas come back to nought (the
+    table read 'E - 2.3874e-12' at its end, and the words 'the areas add up to -2.387e-12
+    J (the book's rounding), not nought')."""
+    from fractions import Fraction
+
+    mpmath.mp.dps = 30
+    areas = [-30, 410, -280, 320, -330, 250, -360, 20]
+    run = [sum(Fraction(a) for a in areas[:k]) for k in range(len(areas) + 1)]
+    assert run[-1] == 0
+    per = 600 * 3 * mpmath.pi / 180  # J per mm^2
+    dE = (max(run) - min(run)) * per
+    w = 300 * 2 * mpmath.pi / 60
+    inertia = dE / (w**2 * mpf("0.03"))
+    sc = cycle_from_text(BELOW.read_text(encoding="utf-8"), str(BELOW))
+    c = solve_cycle(sc)
+    assert c.dE_max == pytest.approx(float(dE), rel=REL)
+    assert c.inertia == pytest.approx(float(inertia), rel=REL)
+    assert c.mass == pytest.approx(float(inertia / mpf("0.49")), rel=REL)
+    assert [x.energy for x in c.crossings] == pytest.approx([float(r * per) for r in run], rel=REL)
+    assert c.crossings[-1].energy == 0.0  # back to E, exactly
+    for cmd in ("solve", "steps"):
+        code, out, _ = _run(capsys, cmd, BELOW)
+        assert code == 0 and "e-1" not in out and "add up to" not in out
+    code, out, _ = _run(capsys, "steps", BELOW)
+    assert out.split("h     a")[1].split("\n")[0].rstrip().endswith("E")

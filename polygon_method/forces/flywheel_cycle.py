@@ -211,9 +211,12 @@ def solve_cycle(scene) -> "CycleEnergy":
 
 
 def _areas(d) -> dict:
-    run = [0.0]
-    for a in d.areas:
-        run.append(run[-1] + a)
+    # the running sums of the numbers as the book gives them (exact where they are whole),
+    # in energy: no rounding noise where the book's areas come back to nought
+    given, per = (d.mm2, d.per_mm2) if d.mm2 else (d.areas, 1.0)
+    run = [math.fsum(given[:k]) * per for k in range(len(given) + 1)]
+    if abs(run[-1]) <= ROUNDING * max(abs(a) for a in d.areas):
+        run[-1] = 0.0
     n = len(run)
     names = letters(n - 1) + ["a"]
     cross = tuple(Crossing(names[i], None, run[i]) for i in range(n))

@@ -558,7 +558,9 @@ class _CycleReader(_RimReader, _PressReader):
         scale = max(abs(a) for a in areas)
         if scale > 1e12:
             raise self.err("an energy beyond 1e12 J is absurd; check the scales", t, "areas")
-        net = sum(areas)
+        net = math.fsum(xs) * per  # the numbers as the book gives them, summed exactly
+        if abs(net) <= ROUNDING * scale:
+            net = 0.0  # (the rounding of their energies, not the book's)
         if abs(net) > 0.02 * scale:
             raise self.err(
                 f"the areas add up to {net:.4g} J, not nought: over a cycle the energy the "
