@@ -23,6 +23,7 @@ _PRESS_KEYS = (
     "punching_time",
     "punching_angle",
     "punching_fraction",
+    "stroke",
 )
 
 
@@ -144,16 +145,27 @@ class _PressReader:
                 raise self.err("holes_per_minute = a positive number", t, "holes_per_minute")
             period = 60.0 / n
         words.append(f"one cycle {period:.6g} s")
-        given = [k for k in ("punching_time", "punching_angle", "punching_fraction") if k in spec]
+        ways = ("punching_time", "punching_angle", "punching_fraction", "stroke")
+        given = [k for k in ways if k in spec]
         if len(given) != 1:
             raise self.err(
                 "how long the punching takes: punching_time (s), punching_angle (of the "
-                "crank's turn) or punching_fraction (of the cycle): one of them",
+                "crank's turn), punching_fraction (of the cycle) or the punch's stroke (with "
+                "the plate's thickness): one of them",
                 t,
                 given[1] if given else "punching_time",
             )
         key = given[0]
-        if key == "punching_time":
+        if key == "stroke":  # the punch's stroke half a turn; the plate's thickness of it
+            if "thickness" not in spec:
+                raise self.err("stroke: the punching time needs the plate's thickness", t, key)
+            th = self.ld.length(spec["thickness"], t, "thickness")
+            f = th / (2 * self.ld.length(spec[key], t, key))
+            words.append(
+                "the punch's stroke half the crank's turn, the plate's thickness of it "
+                "punched: t / (2 s) of the cycle"
+            )
+        elif key == "punching_time":
             f = self._seconds(spec[key], t, key) / period
         elif key == "punching_angle":
             f = self.ld.qty(spec[key], "angle", t, key, default_unit="deg").value / (2 * math.pi)
