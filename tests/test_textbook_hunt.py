@@ -459,7 +459,7 @@ def _block_on_rocker():
     def at(t):
         B = _polar(A, mpf("0.1"), t)
         C = _circles(B, mpf("0.28"), D, mpf("0.22"), 1)  # above: left of B -> D
-        E = _on_line(F, mpf("0.15"), D, _unit(D, C), 1)  # on DC produced, past C
+        E = _on_line(F, mpf("0.3"), D, _unit(D, C), 1)  # on DC produced, past C
         return {"A": A, "D": D, "F": F, "B": B, "C": C, "E": E}
 
     links = {"AB": ("A", "B"), "BC": ("B", "C"), "CD": ("C", "D"), "EF": ("E", "F")}
