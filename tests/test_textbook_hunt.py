@@ -499,3 +499,29 @@ def test_a_block_on_a_rocker_slides_signed_the_way_its_guide_is_written(along, c
         assert main(["steps", str(scene)]) == 0
         out = capsys.readouterr().out
         assert f"(signed along {along}, from {along[0]} towards {along[1]})" in out
+
+
+@pytest.mark.parametrize(
+    "path",
+    [
+        HERE / "force_hunt_radial_master_rod_gas.toml",
+        HERE / "force_engine_khurmi_horizontal.toml",
+        HERE.parent.parent / "worked_problems" / "collar_forces.toml",
+    ],
+    ids=lambda p: p.stem,
+)
+def test_a_worked_sum_is_written_as_a_book_writes_it(path, capsys):
+    """A negative term in the step table's worked sums is subtracted, "-(34.86 - 222.5)",
+    never added as "+ -222.5"; and the sum still gives the value it states."""
+    import re
+
+    from polygon_method.cli import main
+
+    assert main(["steps", str(path)]) == 0
+    out = capsys.readouterr().out
+    assert "+ -" not in out
+    sums = re.findall(r"= -\((-?[\d.]+) ([+-]) ([\d.]+)\) / (-?[\d.]+) = (-?[\d.]+)", out)
+    assert sums
+    for a, op, b, den, got in sums:
+        total = float(a) + (float(b) if op == "+" else -float(b))
+        assert -total / float(den) == pytest.approx(float(got), rel=2e-3)
