@@ -343,3 +343,34 @@ def test_segments_dE_max_against_the_energy_at_every_corner_by_hand(ang, tq):
     want = _exact_dE(ang, tq)
     assert want > 0
     _close(c.dE_max, want)
+
+
+@pytest.mark.parametrize("thickness,stroke", [(32, 100), (10, 150), (45, 50)])
+def test_a_punchs_stroke_sets_the_punching_time(thickness, stroke):
+    """ "The punch has a stroke of 100 mm": the punching takes t / (2 s) of the cycle (the
+    stroke half a turn of the crank), so dE_max = E (1 - t / 2 s); the rim's mass from its
+    speed, dE_max / (v^2 Cs), whatever the flywheel's speed (by hand)."""
+    e = 7 * math.pi * 38 * thickness  # J: 7 N m per mm^2 of the sheared area pi d t
+    for rpm in (150, 300):
+        _, c = _solve(
+            f"[press]\ndiameter = 38\nthickness = {thickness}\n"
+            f'energy_per_area = "7 J/mm^2"\ntime = "10 s"\nstroke = {stroke}\n'
+            f'[flywheel]\nspeed = "{rpm} rpm"\nrim_speed = "25 m/s"\ncoefficient = 0.03\n'
+        )
+        dE = e * (1 - thickness / (2 * stroke))
+        _close(c.dE_max, dE)
+        _close(c.mass, dE / (25**2 * 0.03))
+
+
+def test_a_punchs_stroke_needs_the_plates_thickness_and_is_one_way_of_timing():
+    from polygon_method.common.errors import SceneError
+
+    for press, word in (
+        ('energy = "6 kJ"\ntime = "10 s"\nstroke = 100\n', "thickness"),
+        (
+            'energy = "6 kJ"\nthickness = 20\ntime = "10 s"\nstroke = 100\npunching_angle = 30\n',
+            "one of them",
+        ),
+    ):
+        with pytest.raises(SceneError, match=word):
+            _solve(f'[press]\n{press}[flywheel]\nspeed = "150 rpm"\ncoefficient = 0.03\n')

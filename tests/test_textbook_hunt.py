@@ -451,3 +451,77 @@ def test_radial_engine_torque_from_both_pistons_gas_towards_the_crank_by_virtual
     _close(sol.forces.input_torque, want)
     said = [n for n in sol.notes if n.startswith("the gas force on the piston")]
     assert len(said) == 2 and "at 270 deg" in said[0] and "at 210 deg" in said[1], said
+
+
+def _block_on_rocker():
+    A, D, F = _p(0, 0), _p("0.3", 0), _p("0.45", "0.25")
+
+    def at(t):
+        B = _polar(A, mpf("0.1"), t)
+        C = _circles(B, mpf("0.28"), D, mpf("0.22"), 1)  # above: left of B -> D
+        E = _on_line(F, mpf("0.3"), D, _unit(D, C), 1)  # on DC produced, past C
+        return {"A": A, "D": D, "F": F, "B": B, "C": C, "E": E}
+
+    links = {"AB": ("A", "B"), "BC": ("B", "C"), "CD": ("C", "D"), "EF": ("E", "F")}
+    return Reference(at, links, _deg(40), 10, 0)
+
+
+CASES["hunt_block_on_rocker_produced"] = _block_on_rocker
+
+
+@pytest.mark.parametrize("along", ["DC", "CD"])
+def test_a_block_on_a_rocker_slides_signed_the_way_its_guide_is_written(along, capsys):
+    """The sliding velocity and acceleration are signed from the guide's first point as the
+    scene writes it, and every view names the guide so (it had named the link's key CD
+    beside a sign taken along DC)."""
+    from polygon_method import parse_scene
+    from polygon_method.cli import main
+
+    path = HERE / "hunt_block_on_rocker_produced.toml"
+    text = path.read_text(encoding="utf-8").replace('along = "DC"', f'along = "{along}"')
+    sol, ref = solve(parse_scene(text)), _block_on_rocker()
+    sign = 1 if along == "DC" else -1  # d|DE|/dt is the sliding along D -> C
+    d = mpmath.diff(lambda t: _dist(ref.points(t)["D"], ref.points(t)["E"]), ref.theta, 1)
+    d2 = mpmath.diff(lambda t: _dist(ref.points(t)["D"], ref.points(t)["E"]), ref.theta, 2)
+    _close(sol.S["E"][0], sign * d * ref.omega)
+    _close(sol.S["E"][1], sign * d2 * ref.omega**2)
+    _close(math.hypot(*sol.coriolis("E")), 2 * abs(ref.omega_of("CD") * d * ref.omega))
+    assert sol.to_dict()["sliders"]["E"]["guide"] == along
+    import tempfile
+
+    with tempfile.TemporaryDirectory() as tmp:
+        scene = Path(tmp) / "s.toml"
+        scene.write_text(text, encoding="utf-8")
+        assert main(["solve", str(scene)]) == 0
+        lines = capsys.readouterr().out.splitlines()
+        head = next(i for i, ln in enumerate(lines) if ln.startswith("slider "))
+        assert lines[head + 1].split()[:2] == ["E", along]
+        assert main(["steps", str(scene)]) == 0
+        out = capsys.readouterr().out
+        assert f"(signed along {along}, from {along[0]} towards {along[1]})" in out
+
+
+@pytest.mark.parametrize(
+    "path",
+    [
+        HERE / "force_hunt_radial_master_rod_gas.toml",
+        HERE / "force_engine_khurmi_horizontal.toml",
+        HERE.parent.parent / "worked_problems" / "collar_forces.toml",
+    ],
+    ids=lambda p: p.stem,
+)
+def test_a_worked_sum_is_written_as_a_book_writes_it(path, capsys):
+    """A negative term in the step table's worked sums is subtracted, "-(34.86 - 222.5)",
+    never added as "+ -222.5"; and the sum still gives the value it states."""
+    import re
+
+    from polygon_method.cli import main
+
+    assert main(["steps", str(path)]) == 0
+    out = capsys.readouterr().out
+    assert "+ -" not in out
+    sums = re.findall(r"= -\((-?[\d.]+) ([+-]) ([\d.]+)\) / (-?[\d.]+) = (-?[\d.]+)", out)
+    assert sums
+    for a, op, b, den, got in sums:
+        total = float(a) + (float(b) if op == "+" else -float(b))
+        assert -total / float(den) == pytest.approx(float(got), rel=2e-3)

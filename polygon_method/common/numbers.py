@@ -98,6 +98,15 @@ def textbook(x: float) -> str:
     return s
 
 
+def added(x: float) -> str:
+    """A term added in a worked sum as a book writes it, its sign the operator.
+
+    >>> added(9.273), added(-222.5)
+    ('+ 9.273', '- 222.5')
+    """
+    return f"- {fmt(-x)}" if x < 0 else f"+ {fmt(x)}"
+
+
 def working(x: float) -> str:
     """A number as written in working: up to five significant figures."""
     return f"{x:.5g}"

@@ -116,3 +116,22 @@ def long_integer_text(value: int) -> str:
             count -= 1
         return f"{sign}({count} digits)"
     return f"{sign}{digits[:6]}...({len(digits)} digits)"
+
+
+def character_words(ch: str) -> str:
+    """A character outside ASCII named as a refusal names it, with the plain one it may
+    have been written for.
+
+    >>> character_words("\u0397"), character_words("\uff11")
+    ("'\u0397' (U+0397 GREEK CAPITAL LETTER ETA)", "'\uff11' (U+FF11 FULLWIDTH DIGIT ONE), written for '1'?")
+    """
+    plain = unicodedata.normalize("NFKC", ch)
+    like = f", written for '{plain}'?" if plain != ch and plain.isascii() else ""
+    return f"'{ch}' (U+{ord(ch):04X} {unicodedata.name(ch, 'a character')}){like}"
+
+
+def odd_in_name(name) -> str:
+    """'' for a name in ASCII; else words naming its first character outside it (a Greek
+    capital Eta looks like H), for a refusal of the name."""
+    ch = next((c for c in str(name) if not c.isascii()), None)
+    return "" if ch is None else f"; its character {character_words(ch)} is not ASCII"

@@ -42,7 +42,7 @@ collar down with 2 N, and the driver pushes nothing:
 
 from __future__ import annotations
 
-from ..common.numbers import fmt
+from ..common.numbers import added, fmt
 from ..steps.rounding import vhypot
 from .bodies import sums_add, sums_of, Singular, any_zero, cross, guided, least
 from .records import FRAME, ForcePolygon, ForceStep, GuideForce, PinForce, Side, block
@@ -178,8 +178,8 @@ def step(st, P, led, own):
             f"push on {bl} across the rod",
             f"moments of {link} about {D}: ({C} - {D}) x (F w + N n + R) + M_{D} = 0, R = "
             f"({fmt(kb[0])}, {fmt(kb[1])}) N the known forces on {bl}, M_{D} = {fmt(md)} N m",
-            f"F = -(M_{D} + ({C} - {D}) x (N n + R)) / (({C} - {D}) x w) = -({fmt(md)} + "
-            f"{fmt(cross(cx - dx, cy - dy, r[0], r[1]))}) / {fmt(den)} = {fmt(f)} N, the "
+            f"F = -(M_{D} + ({C} - {D}) x (N n + R)) / (({C} - {D}) x w) = -({fmt(md)} "
+            f"{added(cross(cx - dx, cy - dy, r[0], r[1]))}) / {fmt(den)} = {fmt(f)} N, the "
             f"driver's force on {bl} along {rod} (+ outward)",
             f"the collar: F_{C} = F w + N n + R = ({fmt(p[0])}, {fmt(p[1])}) N on {link}",
             f"forces on {link}: F_{D} = ({fmt(fd[0])}, {fmt(fd[1])}) N; on {rod}: F_{K} = "

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 from ..steps.rounding import vhypot
 from .bodies import sums_add, sums_of, Singular, cross, guided, outer_pin, unit
-from ..common.numbers import fmt
+from ..common.numbers import added, fmt
 from .records import FRAME, ForceStep, GuideForce, PinForce, Side, block
 
 
@@ -149,8 +149,8 @@ def step(st, P, led, own):
             f"moments of {lk} about {B}: ({x} - {B}) x (N n + R) + M_{B} = 0, R = "
             f"({fmt(kb[0])}, {fmt(kb[1])}) N the known forces on the block, M_{B} = "
             f"{fmt(mb)} N m those on {lk}",
-            f"N = -(M_{B} + ({x} - {B}) x R) / (({x} - {B}) . u) = -({fmt(mb)} + "
-            f"{fmt(cross(ex, ey, kb[0], kb[1]))}) / {fmt(ex * ux + ey * uy)} = {fmt(n)} N",
+            f"N = -(M_{B} + ({x} - {B}) x R) / (({x} - {B}) . u) = -({fmt(mb)} "
+            f"{added(cross(ex, ey, kb[0], kb[1]))}) / {fmt(ex * ux + ey * uy)} = {fmt(n)} N",
             f"the block: F_{x} = N n + R = ({fmt(p[0])}, {fmt(p[1])}) N on {lk}",
             f"forces on {lk}: F_{B} = -(the known forces + F_{x}) = ({fmt(fb[0])}, {fmt(fb[1])}) N",
         )

@@ -270,7 +270,7 @@ class Solution(Motion):
                         if isinstance(s, FixedPath)
                         else f"block {s.yoke}"
                         if hasattr(s, "yoke")
-                        else s.guide
+                        else s.along  # (the link from the point the sliding is signed from)
                     ),
                 }
                 for s in sc.blocks

@@ -4,7 +4,7 @@ student's, with their name and variant), read against the scene it answers."""
 from __future__ import annotations
 
 from ..common.errors import PolygonMethodError, SceneError
-from .file_text import MAX_SCENE_BYTES, _path_of, _read_start
+from .file_text import MAX_SCENE_BYTES, _path_of, _read_start, wide_text
 from .loader import _Loader
 from .records import Scene
 from .source import parsed_table
@@ -131,6 +131,8 @@ def load_answers(path, scene: Scene, *, with_variant: bool = False, with_student
             raise SceneError(
                 f"larger than {MAX_SCENE_BYTES >> 20} MiB: not an answer file", file=str(path)
             )
+        if wide_text(data):
+            raise SceneError(f"{wide_text(data)}: save the answers as UTF-8", file=str(path))
         text = data.decode("utf-8-sig")  # a byte-order mark is fine, as in a scene
     except FileNotFoundError:
         raise SceneError("no such file", file=str(path)) from None

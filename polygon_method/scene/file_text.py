@@ -33,6 +33,9 @@ def scene_text(path) -> tuple:
             "scene is a page of TOML text)",
             file=str(path),
         )
+    other = wide_text(data)
+    if other:
+        raise SceneError(f"{other}: save the scene as UTF-8", file=str(path))
     if b"\x00" in data:
         raise SceneError(
             "not a text file (it holds binary data); a scene is TOML text", file=str(path)
@@ -44,6 +47,33 @@ def scene_text(path) -> tuple:
             f"not UTF-8 text (byte {exc.start}); save the scene as UTF-8", file=str(path)
         ) from None
     return path, text
+
+
+def wide_text(data: bytes) -> str:
+    """Words naming the encoding of text saved as UTF-16 or UTF-32 (by its byte-order mark,
+    or without one by the noughts every other byte of plain text), which reads as bytes of
+    nought, not as binary data; '' for anything else.
+
+    >>> wide_text("AB = 5".encode("utf-16")), wide_text("AB = 5".encode("utf-16-be"))
+    ('UTF-16 text (little-endian, with a byte-order mark)', 'UTF-16 text (big-endian)')
+    >>> wide_text(b"AB = 5"), wide_text(b"\\x00\\x01\\x02\\x03")
+    ('', '')
+    """
+    for bom, name in (
+        (b"\xff\xfe\x00\x00", "UTF-32 text (little-endian, with a byte-order mark)"),
+        (b"\x00\x00\xfe\xff", "UTF-32 text (big-endian, with a byte-order mark)"),
+        (b"\xff\xfe", "UTF-16 text (little-endian, with a byte-order mark)"),
+        (b"\xfe\xff", "UTF-16 text (big-endian, with a byte-order mark)"),
+    ):
+        if data.startswith(bom):
+            return name
+    even, odd = data[0:200:2], data[1:200:2]
+    if len(data) >= 8 and len(data) % 2 == 0:
+        if not odd.strip(b"\x00") and even.isascii() and even.strip(b"\x00"):
+            return "UTF-16 text (little-endian)"
+        if not even.strip(b"\x00") and odd.isascii() and odd.strip(b"\x00"):
+            return "UTF-16 text (big-endian)"
+    return ""
 
 
 def _read_start(path) -> bytes:

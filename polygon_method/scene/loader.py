@@ -12,7 +12,7 @@ from dataclasses import replace
 
 from ..common.errors import SceneError
 from ..common.tolerances import SAME
-from ..common.typography import long_integer_text
+from ..common.typography import long_integer_text, odd_in_name
 from ..common.units import LENGTH_UNITS, UNITS, parse_quantity
 from .rolling import read_rolling
 from .teeth_links import links_from_teeth
@@ -147,7 +147,7 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected
         if not one and not _POINT_ONLY.match(str(name)):
             raise self.error(
                 f"'{name}' is not a point name (a capital letter, optionally "
-                "followed by digits: A, O2, B1)",
+                f"followed by digits: A, O2, B1){odd_in_name(name)}",
                 table,
                 key or name,
             )
@@ -340,7 +340,7 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected
             if len(pts) != 2:
                 raise self.error(
                     f"{key!r} is not a link name: a link is named by its two "
-                    'joint points, e.g. BC or "O2-A"',
+                    f'joint points, e.g. BC or "O2-A"{odd_in_name(key)}',
                     "links",
                     key,
                 )

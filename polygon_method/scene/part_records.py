@@ -92,6 +92,13 @@ class GuideSlider:
         a peg in two slots the point and the slot (``P_OA``)."""
         return f"{self.point}_{self.slot}" if self.slot else self.point
 
+    @property
+    def along(self) -> str:
+        """The guide named from its first point to its second, as the scene wrote it (``DC``
+        for the link CD written ``along = "DC"``; ``P-O1``): the way the sliding is signed."""
+        one = len(self.first) == 1 and len(self.second) == 1
+        return f"{self.first}{self.second}" if one else f"{self.first}-{self.second}"
+
 
 @dataclass(frozen=True)
 class YokeSlot:

@@ -8,6 +8,7 @@ import re
 import tomllib
 
 from ..common.errors import SceneError
+from ..common.typography import character_words
 
 try:  # a compiled TOML reader held to TOML 1.0, as tomllib is: a scene in a fortieth of its time
     from toml_rs import loads as _toml_rs
@@ -268,12 +269,29 @@ def syntax_error(msg, text, file) -> SceneError:
             break
     else:
         core = core[:1].lower() + core[1:]
+    if m:
+        core += _odd_character(text, int(m.group(1)), int(m.group(2)))
     if re.search(r"\r(?!\n)", text):  # an old Mac's line ends: TOML sees one long line
         core += (
             "; the file ends its lines with a lone carriage return (CR): save it with "
             "LF or CRLF line endings"
         )
     return SceneError(f"TOML syntax error: {core}", file=file, key=where)
+
+
+def _odd_character(text, line, column) -> str:
+    """Words naming the character outside ASCII where TOML stopped (``line``, ``column``
+    from 1), which the eye may not tell from the one meant (a Greek capital Eta for H, a
+    no-break space, a full-width digit); '' where it stopped at an ASCII one."""
+    lines = toml_lines(text)
+    row = lines[line - 1] if 0 < line <= len(lines) else ""
+    ch = row[column - 1] if 0 < column <= len(row) else ""
+    if not ch or ch.isascii():
+        return ""
+    return (
+        f": the character {character_words(ch)} there; keys and values outside quotes are "
+        'plain ASCII (a point A, O2; a link AB, "O2-A")'
+    )
 
 
 def duplicate_key(text):

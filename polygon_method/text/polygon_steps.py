@@ -460,6 +460,7 @@ def acceleration_section(doc, sol, ascale):
         cor = math.hypot(*sol.coriolis(s.key))
         t = f"as_{s.key} = {fmt(a_s)} m/s^2 (signed along the guide)"
         if isinstance(s, GuideSlider):
+            t = t.replace("the guide", f"{s.along}, from {s.first} towards {s.second}")
             t += f"; Coriolis component {fmt(cor)} m/s^2"
         sl.append(t)
     if sl:
