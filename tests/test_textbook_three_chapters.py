@@ -915,3 +915,29 @@ def test_links_weighing_per_metre_in_every_view(capsys, tmp_path):
     )
     code, _, err = _run(capsys, "solve", f)
     assert code == 2 and "per length is a uniform link's" in err and err.count("\n") == 1
+
+
+def test_the_machines_readings_vary_per_student(capsys, tmp_path):
+    """[variants] varies the machine's readings; each variant's fluctuation of energy to the
+    closed form of that shape, resisting = [a, b, b, a, a]: the mean (a + b) / 2, the
+    machine above it for 1.25 turns less two half-triangles, dE_max = (b - a) / 2 x 2.5 pi."""
+    import csv
+
+    base = tmp_path / "base.toml"
+    base.write_text(
+        THREE_TURNS.read_text(encoding="utf-8")
+        + "\n[variants]\n"
+        + 'flywheel = { speed = { from = 200, to = 300, step = 25, unit = "rpm" } }\n'
+        + "turning_moment = { resisting = [[500, 2500, 2500, 500, 500], "
+        + "[600, 3200, 3200, 600, 600], [750, 3000, 3000, 750, 750]] }\n",
+        encoding="utf-8",
+    )
+    out = tmp_path / "class"
+    assert _run(capsys, "variants", base, "-o", out, "--count", "4")[0] == 0
+    rows = list(csv.DictReader((out / "answer-key.csv").open(encoding="utf-8")))
+    assert len(rows) == 4
+    for row in rows:
+        a, b = (float(v) for v in row["turning_moment.resisting"].strip("[]").split(",")[:2])
+        assert float(row["dE_max (J)"]) == pytest.approx((b - a) / 2 * 2.5 * math.pi, rel=REL)
+        assert float(row["T_mean (N m)"]) == pytest.approx((a + b) / 2, rel=REL)
+    assert "| Cs (1) |" in (out / "answer-key.md").read_text(encoding="utf-8")  # not "Cs ()"
