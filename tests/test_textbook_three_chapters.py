@@ -272,6 +272,8 @@ def test_friction_problems_in_every_view(capsys, tmp_path, name, slip):
     )
     code, out, _ = _run(capsys, "steps", f)
     assert code == 0 and "friction power" in out
+    # section 7 says where a body's known friction comes from
+    assert "'Known' is the resultant of the loads, the friction (mu |N|" in " ".join(out.split())
     code, out, _ = _run(capsys, "draw", f, "--forces", "-o", tmp_path / "f.svg")
     assert code == 0
     assert _run(capsys, "page", f, "-o", tmp_path / "p.html")[0] == 0
