@@ -89,6 +89,8 @@ def with_forces(scene, seed):
     # frictionless: these tests' balances have no friction (a scene's own [friction] is
     # held by its own tests, the matrix method repeated until the friction settles)
     raw.pop("friction", None)
+    if scene.at_rest and scene.input.block is None and "input" in raw:  # a statics problem's
+        raw["input"]["speed"] = "7 rad/s ccw"  # weights held: here it moves, with inertia
     loads = dict(raw.get("loads", {}))
     pts = [p for lk in moving for p in lk.points if p not in scene.ground]
     p = rnd.choice(sorted(set(pts)))

@@ -272,6 +272,8 @@ def test_friction_problems_in_every_view(capsys, tmp_path, name, slip):
     )
     code, out, _ = _run(capsys, "steps", f)
     assert code == 0 and "friction power" in out
+    # section 7 says where a body's known friction comes from
+    assert "'Known' is the resultant of the loads, the friction (mu |N|" in " ".join(out.split())
     code, out, _ = _run(capsys, "draw", f, "--forces", "-o", tmp_path / "f.svg")
     assert code == 0
     assert _run(capsys, "page", f, "-o", tmp_path / "p.html")[0] == 0
@@ -847,3 +849,97 @@ def test_areas_starting_below_the_mean_by_exact_running_sums(capsys):
         assert code == 0 and "e-1" not in out and "add up to" not in out
     code, out, _ = _run(capsys, "steps", BELOW)
     assert out.split("h     a")[1].split("\n")[0].rstrip().endswith("E")
+
+
+# --- uniform heavy links given by their weight per metre (Hibbeler) -----------------------
+
+PER_METRE = HERE / "weights_links_per_metre_held.toml"
+
+
+def test_links_weighing_per_metre_held_by_a_couple():
+    """The couple by virtual work on the closed-form positions (mpmath's derivatives at 40
+    digits), the pins at A and D by the 9 x 9 matrix method; each link's weight 40 N/m
+    times its length at its middle."""
+    mpmath.mp.dps = 40
+    a, b, c, d = mpf("0.1"), mpf("0.3"), mpf("0.25"), mpf("0.35")
+    th0 = mpmath.radians(75)
+
+    def pts(th):
+        B, C, _, _ = _fourbar(a, b, c, d, th, 1)
+        return B, C
+
+    W = {"AB": 40 * a, "BC": 40 * b, "CD": 40 * c}
+
+    def height(th):  # the potential of the weights and the load, N m
+        B, C = pts(th)
+        return W["AB"] * B[1] / 2 + W["BC"] * (B[1] + C[1]) / 2 + W["CD"] * C[1] / 2 + 60 * C[1]
+
+    T = mpmath.diff(height, th0)  # T dtheta = dU: the couple that holds it
+    B, C = pts(th0)
+    ne = NewtonEuler(["AB", "BC", "CD"], mp=True)
+    ne.pin("A", (0, 0), "AB", "frame")
+    ne.pin("B", B, "BC", "AB")
+    ne.pin("C", C, "BC", "CD")
+    ne.pin("D", (d, 0), "CD", "frame")
+    ne.known("AB", (0, -W["AB"]), (B[0] / 2, B[1] / 2))
+    ne.known("BC", (0, -W["BC"]), ((B[0] + C[0]) / 2, (B[1] + C[1]) / 2))
+    ne.known("BC", (0, mpf(-60)), C)
+    ne.known("CD", (0, -W["CD"]), ((C[0] + d) / 2, C[1] / 2))
+    ne.couple("T", "AB", "frame")
+    x = ne.solve()
+    assert x["T"] == pytest.approx(T, rel=1e-25)  # the two methods agree
+    sol = solve(load_scene(PER_METRE))
+    assert sol.forces.input_torque == pytest.approx(float(T), rel=REL)
+    for name in ("A", "D"):
+        want = mpmath.hypot(x[name + ".x"], x[name + ".y"])
+        assert _pin(sol, name) == pytest.approx(float(want), rel=REL)
+    masses = {m.body: m for m in sol.scene.masses}
+    for key, L in (("AB", a), ("BC", b), ("CD", c)):
+        m = masses[key]
+        assert m.mass * 9.81 == pytest.approx(float(40 * L), rel=1e-12)
+        assert m.inertia == pytest.approx(float(m.mass * L**2 / 12), rel=1e-12)  # uniform
+
+
+def test_links_weighing_per_metre_in_every_view(capsys, tmp_path):
+    code, out, _ = _run(capsys, "solve", PER_METRE)
+    assert code == 0
+    assert (
+        "note: mass of BC: 40 N/m x 0.3 m = 12 N, read as W / g = 1.22324 kg (a uniform link)"
+        in out
+    )
+    assert _run(capsys, "steps", PER_METRE)[0] == 0
+    assert _run(capsys, "draw", PER_METRE, "--forces", "-o", tmp_path / "f.svg")[0] == 0
+    assert _run(capsys, "check", PER_METRE)[0] == 0
+    f = tmp_path / "bad.toml"
+    f.write_text(
+        '[ground]\nO = [0, 0]\n[links]\nOA = 100\nAB = 300\n[sliders]\nB = { path = "horizontal" }\n'
+        '[input]\ncrank = "OA"\nangle = 30\nspeed = 0\n[masses]\nB = { mass = "40 N/m" }\n[gravity]\n'
+    )
+    code, _, err = _run(capsys, "solve", f)
+    assert code == 2 and "per length is a uniform link's" in err and err.count("\n") == 1
+
+
+def test_the_machines_readings_vary_per_student(capsys, tmp_path):
+    """[variants] varies the machine's readings; each variant's fluctuation of energy to the
+    closed form of that shape, resisting = [a, b, b, a, a]: the mean (a + b) / 2, the
+    machine above it for 1.25 turns less two half-triangles, dE_max = (b - a) / 2 x 2.5 pi."""
+    import csv
+
+    base = tmp_path / "base.toml"
+    base.write_text(
+        THREE_TURNS.read_text(encoding="utf-8")
+        + "\n[variants]\n"
+        + 'flywheel = { speed = { from = 200, to = 300, step = 25, unit = "rpm" } }\n'
+        + "turning_moment = { resisting = [[500, 2500, 2500, 500, 500], "
+        + "[600, 3200, 3200, 600, 600], [750, 3000, 3000, 750, 750]] }\n",
+        encoding="utf-8",
+    )
+    out = tmp_path / "class"
+    assert _run(capsys, "variants", base, "-o", out, "--count", "4")[0] == 0
+    rows = list(csv.DictReader((out / "answer-key.csv").open(encoding="utf-8")))
+    assert len(rows) == 4
+    for row in rows:
+        a, b = (float(v) for v in row["turning_moment.resisting"].strip("[]").split(",")[:2])
+        assert float(row["dE_max (J)"]) == pytest.approx((b - a) / 2 * 2.5 * math.pi, rel=REL)
+        assert float(row["T_mean (N m)"]) == pytest.approx((a + b) / 2, rel=REL)
+    assert "| Cs (1) |" in (out / "answer-key.md").read_text(encoding="utf-8")  # not "Cs ()"

@@ -7,15 +7,21 @@ A scene without them is solved for its motion alone, as before.
 from __future__ import annotations
 
 import math
+import re
 
 from ..common.errors import SceneError
 from ..common.tolerances import ROUNDING
-from ..common.units import Quantity, did_you_mean
+from ..common.units import UNITS, Quantity, did_you_mean
 from .records import Friction, Gravity, Mass, split_name
 from .table_help import _unit_at
 
 #: the g of a book (m/s^2), when [gravity] does not give its own
 STANDARD_G = 9.81
+#: a uniform link's mass or weight per length: "20 N/m", "5 kg/m", "2 lbf/ft"
+_PER_LENGTH = re.compile(
+    r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(kg|g|t|lb|N|kN|kgf|lbf)\s*/\s*"
+    r"(m|mm|cm|ft|in)\s*$"
+)
 
 _LINK_KEYS = (
     "mass",
@@ -114,7 +120,8 @@ class _Masses:
                     "masses",
                     name,
                 )
-            m = self._mass(spec["mass"], name)
+            per = _PER_LENGTH.match(spec["mass"]) if isinstance(spec["mass"], str) else None
+            m = self._mass(per.group(1) + " " + per.group(2) if per else spec["mass"], name)
             if not m > 0:
                 hint = (
                     "; a balanced crank (its G at its pivot) has its real mass with "
@@ -126,6 +133,11 @@ class _Masses:
                     f"a mass must be positive, got {spec['mass']!r}{hint}", "masses", name
                 )
             pts = split_name(name)
+            if per is not None and len(pts) == 1:
+                raise self.error(
+                    f"mass = {spec['mass']!r}: a mass (or weight) per length is a uniform "
+                    "link's; a block's is its mass", "masses", name,
+                )  # fmt: skip
             if len(pts) == 1 and name in self.slider_points:
                 extra = [k for k in spec if k != "mass"]
                 if extra:
@@ -151,7 +163,13 @@ class _Masses:
             if any(o.body == link.key for o in out):
                 raise self.error(f"link {link.key} has a mass already", "masses", name)
             lam, mu, where, centre = self._centre(spec, link, pts, carried, name)
-            inertia, said = self._inertia(spec, m, name)
+            if per is not None:  # "the links weigh 20 N/m": a uniform bar, m = w L
+                m, said = self._uniform(spec, per, m, link, name)
+                inertia = m * link.length**2 / 12.0
+                if "inertia" in spec or "gyration" in spec:
+                    inertia, said = self._inertia(spec, m, name)
+            else:
+                inertia, said = self._inertia(spec, m, name)
             if "about" in spec:  # "I about the crank shaft's axis O": the parallel axes
                 inertia, said = self._about(spec, link, m, lam, mu, inertia, said, name)
             out.append(
@@ -253,6 +271,21 @@ class _Masses:
             k = self.length(spec["gyration"], "masses", name)
             return m * k * k, f"k_G = {self._words(k)}, I_G = m k^2 = {m * k * k:.6g} kg m^2"
         return 0.0, "I_G = 0 (no inertia given: a point mass)"
+
+    def _uniform(self, spec, per, m, link, name) -> tuple:
+        """(the link's mass, words) from its mass ``m`` per ``per``'s length unit: times its
+        length; a uniform bar's I_G = m L^2 / 12 unless the entry gives its own."""
+        unit = UNITS["length"][per.group(3)]
+        total = m * link.length / unit
+        length = f"{spec['mass']} x {link.length / unit:.6g} {per.group(3)}"
+        weight = self.read_notes and self.read_notes[-1].startswith(f"mass of {name}: the weight")
+        if weight:  # (the note of the weight per length read as a mass: said once, here)
+            self.read_notes.pop()
+            w = float(per.group(1)) * link.length / unit
+            length += f" = {w:.6g} {per.group(2)}, read as W / g"
+        self.read_notes.append(f"mass of {name}: {length} = {total:.6g} kg (a uniform link)")
+        said = f"I_G = m L^2 / 12 = {total * link.length**2 / 12.0:.6g} kg m^2 (a uniform bar)"
+        return total, said
 
     def _mass(self, raw, name) -> float:
         """A [masses] entry's mass (kg); a book's weight ("the reciprocating parts weigh 300

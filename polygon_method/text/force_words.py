@@ -110,7 +110,7 @@ def acting(sc) -> str:
 
 def known_words(sc) -> str:
     """What a body's known resultant holds (section 7): its inertia force and couple (not
-    at rest, nor without masses), its weight (with gravity), the loads."""
+    at rest, nor without masses), its weight (with gravity), the loads, the friction."""
     if sc is None:
         return "the inertia force and couple, the weight, the loads"
     parts = []
@@ -119,6 +119,12 @@ def known_words(sc) -> str:
     if sc.masses and sc.gravity is not None:
         parts.append("the weight")
     parts.append("the loads")
+    fr = sc.friction
+    if fr is not None and (fr.guides or fr.pins):  # (their sizes from the forces found)
+        parts.append(
+            "the friction (mu |N| at the guides, the couples mu r |F| at the pins, from the "
+            "forces found, the walk repeated until they settle)"
+        )
     return ", ".join(parts) + (
         " (no inertia: at rest)"
         if holding(sc)

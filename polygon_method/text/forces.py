@@ -262,11 +262,13 @@ def _inertia_lines(sc, f, F, M) -> list:
             "at rest: no inertia (nothing moves); the weights m g at G"
             + ("" if g is not None else ": none, the scene has no [gravity]")
         ]
+        big = max([lk.length for lk in sc.links] + [abs(c) for i in f.inertia for c in i.G])
         for i in f.inertia if g is not None else ():
             w = (i.mass * g.g * g.direction[0], i.mass * g.g * g.direction[1])
+            x, y = (fmt(quiet(c, big) / u) for c in i.G)  # (a vertical link's G: x 0, not 3e-15)
             out.append(
-                f"{i.body:<10} {fmt(i.mass) + ' kg':<10} weight {_vec(w, F)} at G "
-                f"({fmt(i.G[0] / u)}, {fmt(i.G[1] / u)}) {sc.units}"
+                f"{i.body:<10} {fmt(i.mass) + ' kg':<10} weight {_vec(w, F)} at G ({x}, {y}) "
+                f"{sc.units}"
             )
         return out
     out = [start_words(sc)] if sc.at_rest else []

@@ -210,7 +210,9 @@ def cycle_key_markdown(vs) -> str:
         "(the CSV has them in full); grade with `polygon-method check BASE ANSWERS "
         "--variants DIR`.",
         "",
-        "| variant | " + " | ".join(names + [f"{k} ({CYCLE_UNITS[k][1]})" for k in vs.keys]) + " |",
+        "| variant | "
+        + " | ".join(names + [f"{k} ({CYCLE_UNITS[k][1] or '1'})" for k in vs.keys])
+        + " |",
         "|---|" + "---|" * (len(names) + len(vs.keys)),
     ]
     for v in vs.variants:
