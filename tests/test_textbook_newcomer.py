@@ -755,12 +755,13 @@ def test_a_speed_with_a_comma_before_its_sense():
 
 
 @pytest.mark.parametrize("words", ["perpendicular to CD", "along CD", "at right angles to CD"])
-def test_a_load_across_a_link_is_refused_saying_to_give_its_angle(words):
+def test_a_load_across_a_link_the_scene_has_not_is_refused_naming_it(words):
+    """(A direction against a link of the scene is read: tests/test_link_loads.py.)"""
     text = (HERE / "force_static_shigley_fourbar_coupler_load.toml").read_text(encoding="utf-8")
     with pytest.raises(SceneError) as exc:
         parse_scene(text.replace("direction = 225", f'direction = "{words}"'))
     msg = str(exc.value)
-    assert "\n" not in msg and "[loads] C" in msg and "give its angle at this instant" in msg
+    assert "\n" not in msg and "[loads] C" in msg and "no link CD in [links]" in msg
 
 
 @pytest.mark.parametrize(

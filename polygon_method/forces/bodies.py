@@ -8,6 +8,7 @@ The moment about another point ``B`` is then ``M - cross(B, F)``.
 
 from __future__ import annotations
 
+from ..scene.link_loads import load_force
 from .engine import indicator_forces
 from .records import FRAME, Inertia, Side, block
 
@@ -200,17 +201,18 @@ def gather(scene, motion, owner):
             if body == FRAME:
                 continue
             x, y = P[ld.target]
+            f = load_force(ld, P)  # (a force against a link turns with it)
             led.add(
                 body,
-                ld.force[0],
-                ld.force[1],
+                f[0],
+                f[1],
                 x,
                 y,
                 f"gas force at {ld.target}" if ld.gas else f"load at {ld.target}",
-                Side("gas" if ld.gas else "load", body, "", ld.target, ld.force, (x, y)),
+                Side("gas" if ld.gas else "load", body, "", ld.target, f, (x, y)),
             )
             if ld.gas:  # the gas pushes the cylinder's cover (the frame) as hard, back
-                led.add(FRAME, -ld.force[0], -ld.force[1], x, y)  # along the same line
+                led.add(FRAME, -f[0], -f[1], x, y)  # along the same line
         else:
             led.couple(ld.target, ld.torque, f"couple on {ld.target}")
     for piston, fx, fy, p in indicator_forces(scene, motion):  # the indicators' gas forces

@@ -30,6 +30,7 @@ import weakref
 
 from .bodies import THREE_PINS, Singular, centre, inertia_record, sums_add, sums_of
 from .collar import second_name
+from ..scene.link_loads import load_force
 from .engine import indicator_forces
 from .records import FRAME, Forces, GuideForce, PinForce, block
 
@@ -132,7 +133,7 @@ class ForcePlan:
                 body = own.get(ld.target, FRAME)
                 if body == FRAME:
                     continue
-                out.append((ix(body), ld.target, ld.force, ld.gas))
+                out.append((ix(body), ld.target, ld.force if ld.across is None else ld, ld.gas))
             else:
                 out.append((None, ix(ld.target), ld.torque, None))
         self.loads = tuple(out)
@@ -178,7 +179,7 @@ class ForcePlan:
                 sm[target] = sm[target] + f
                 continue
             x, y = P[target]
-            fx, fy = f
+            fx, fy = f if isinstance(f, tuple) else load_force(f, P)  # (turning with a link)
             sx[i] = sx[i] + fx  # sums_add(S, i, fx, fy, x, y)
             sy[i] = sy[i] + fy
             sm[i] = sm[i] + (x * fy - y * fx)

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import math
 
+from ..common.errors import SceneError
+from .link_loads import read_across
 from .records import Load, split_name
 from .table_help import _suggest, _unit_at, _which_point
 
@@ -63,6 +65,10 @@ class _Loads:
                 mag = self.qty(f, "force", "loads", name, default_unit="N").value
                 if "direction" not in spec:
                     raise self.error("a force needs a direction (deg, ccw from +x)", "loads", name)
+                across = self.link_direction(spec["direction"], name)
+                if across is not None:  # turns with the link: completed when compiled
+                    out.append(Load(name, across=(*across, mag)))
+                    continue
                 book = self.book_angle(
                     spec["direction"],
                     "direction",
@@ -81,6 +87,21 @@ class _Loads:
                 fx, fy = mag * ux, mag * uy
             out.append(Load(name, force=(fx, fy)))
         return out
+
+    def link_direction(self, raw, name):
+        """(first point, second point, offset, words) of a direction stated against a link
+        of the scene ("perpendicular to CD, ccw"), or None (:mod:`.link_loads`)."""
+        try:
+            got = read_across(raw, split_name)
+        except SceneError as exc:
+            raise self.error(exc.message, "loads", name) from None
+        if got is not None and not self.index.get(frozenset(got[:2])):
+            raise self.error(
+                f"'{raw.strip()}': no link {got[0]}{got[1]} in [links] to take the direction from",
+                "loads",
+                name,
+            )
+        return got
 
     def gas_load(self, name, spec):
         """A gas force on a piston: pressure times the piston's area (the bore's circle, less

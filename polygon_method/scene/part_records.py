@@ -296,13 +296,19 @@ class Load:
     A gas force given without its direction pushes the piston towards the crank, as books
     mean it: ``toward`` is then its size (N; negative: away from the crank), and its
     direction is worked out when the scene is compiled, from the piston's place beside the
-    crank centre (``force`` is None until then)."""
+    crank centre (``force`` is None until then).
+
+    A force whose direction is stated against a link ("perpendicular to CD, ccw") has
+    ``across`` = (first point, second point, offset in rad or None, the words, size in N):
+    it turns with the link; ``force`` is its vector at the scene's instant, completed when
+    compiled (:func:`~polygon_method.scene.link_loads.load_force` gives it anywhere)."""
 
     target: str
     force: tuple[float, float] | None = None
     torque: float | None = None
     gas: tuple | None = None
     toward: float | None = None
+    across: tuple | None = None
 
 
 @dataclass(frozen=True)

@@ -36,7 +36,7 @@ from dataclasses import replace
 from ..common.errors import AssemblyError, PolygonMethodError, SceneError
 from ..common.numbers import in_units, quiet
 from ..common.tolerances import SAME, TOL
-from .completion import gas_towards_crank, given_completed, place
+from .completion import gas_towards_crank, given_completed, loads_along_links, place
 from .mobility import gruebler, leftover
 from .plan import Bodies, Dims, Plan, _pin_entries, first_tier
 from .reach import reach_words
@@ -108,6 +108,8 @@ def compile_plan(scene: Scene) -> Plan:
         plan = _for_scene(plan, scene)
     if scene.loads and any(ld.toward is not None and ld.force is None for ld in scene.loads):
         gas_towards_crank(plan, scene)  # a gas force's direction (loads are not in the key)
+    if scene.loads and any(ld.across is not None for ld in scene.loads):
+        loads_along_links(plan, scene)  # a force against a link: its vector at the instant
     try:
         ident = id(scene)
         entry = (weakref.ref(scene, functools.partial(_forget, ident)), plan)

@@ -13,10 +13,11 @@ from ..common.errors import AssemblyError, PolygonMethodError, SceneError
 from ..common.numbers import fmt, in_units, sense
 from ..common.tolerances import SAME
 from ..scene import key_line
+from ..scene.link_loads import across_words, load_force
 from ..steps import Context
 from .given import completed, growth_words, place_roots, resolve
 
-__all__ = ["given_completed", "gas_towards_crank", "place"]
+__all__ = ["given_completed", "gas_towards_crank", "loads_along_links", "place"]
 
 
 def given_completed(plan):
@@ -164,3 +165,28 @@ def place(scene, compile_trial) -> tuple:
         )
     object.__setattr__(scene, "input", replace(inp, angle=theta, placed=replace(pl, found=True)))
     return (note,)
+
+
+def loads_along_links(plan, sc):
+    """A force stated against a link ("perpendicular to CD, ccw") turns with the link: its
+    vector at the scene's instant, from the positions there (:func:`load_force`, the one
+    place every view takes it from), completes the scene's loads; an ambiguous
+    "perpendicular to CD" (no sense) is refused, saying which way each sense points."""
+    state = plan.run(Context(sc.input.angle, 0.0, 0.0), upto=0)
+    loads, said = [], []
+    for ld in sc.loads:
+        if ld.across is None:
+            loads.append(ld)
+            continue
+        try:
+            f = load_force(ld, state.P)
+        except SceneError as exc:
+            where = f"[loads] {ld.target}"
+            raise SceneError(
+                exc.message, file=sc.file, key=where, line=key_line(sc, where)
+            ) from None
+        loads.append(replace(ld, force=(f[0] + 0.0, f[1] + 0.0)))
+        said.append(f"the force at {ld.target}: {across_words(loads[-1])}, turning with the link")
+    old = tuple(n for n in sc.reading_notes if not n.startswith("the force at "))
+    object.__setattr__(sc, "loads", tuple(loads))
+    object.__setattr__(sc, "reading_notes", old + tuple(said))

@@ -14,6 +14,7 @@ from collections import defaultdict
 
 from ..common.tolerances import crossing_angle
 from ..scene.cylinder_loads import length_of, stated
+from ..scene.link_loads import load_force
 
 from ..steps.rounding import largest
 from .plan import pin_entry
@@ -156,7 +157,7 @@ def power_terms(scene, V, W, S=None, P=None) -> list:
     out = []
     for load in scene.loads:
         if load.force is not None:
-            fx, fy = load.force
+            fx, fy = load.force if P is None else load_force(load, P)  # (turning with a link)
             vx, vy = V[load.target]
             out.append((load.target, fx * vx + fy * vy))
         else:

@@ -16,6 +16,7 @@ from ..common.tolerances import ROUNDING
 from ..polygons.constructions import acceleration_constructions, velocity_constructions
 from ..polygons.scales import DRAWING_PRECISION_CM, extent
 from ..scene import FixedPath, GuideSlider, guide_words
+from ..scene.link_loads import across_words, load_force
 from ..solver.derived import transmission_angle
 
 __all__ = [
@@ -270,18 +271,20 @@ def _torque_items(sol):
     ]
     for load, (target, p) in zip(sc.loads, sol.power_terms):
         if load.force is not None:
-            F = math.hypot(*load.force)
+            fx, fy = load_force(load, sol.P)  # (a force against a link: at this instant)
+            F = math.hypot(fx, fy)
             v = sol.speed(target)
+            said = "" if load.across is None else f" (F: {across_words(load)})"
             if F * v > 0:  # (both may be positive and their product underflow to 0)
                 vx, vy = sol.V[target]
-                cos = (load.force[0] * vx + load.force[1] * vy) / (F * v)
+                cos = (fx * vx + fy * vy) / (F * v)
                 ang = math.degrees(math.acos(max(-1.0, min(1.0, cos))))
                 out.append(
                     f"{target}: F . v_{target} = {fmt(F)} N x {fmt(v)} m/s x "
-                    f"cos {fmt(ang, 4)} deg = {fmt(p)} W"
+                    f"cos {fmt(ang, 4)} deg = {fmt(p)} W{said}"
                 )
             else:
-                out.append(f"{target}: F . v_{target} = {fmt(p)} W")
+                out.append(f"{target}: F . v_{target} = {fmt(p)} W{said}")
         else:
             out.append(
                 f"torque on {target}: T_{target} omega_{target} = "

@@ -20,6 +20,7 @@ import math
 
 from ..solver.compiler import compile_plan
 from ..common.numbers import fmt, sense
+from ..scene.link_loads import across_words
 from ..common.tolerances import ROUNDING
 from ..scene import guide_words
 
@@ -185,6 +186,8 @@ def _load_sentence(ld) -> str | None:
             f"The gas pressure on the piston {ld.target} is {ld.gas[2]}, pushing "
             f"it at {fmt(math.degrees(math.atan2(fy, fx)) % 360)}°."
         )
+    if ld.across is not None:  # turning with a link: as stated, and its angle now
+        return f"A force of {across_words(ld)} acts at {ld.target}."
     if ld.force is not None:
         fx, fy = ld.force
         return (
