@@ -228,3 +228,26 @@ def test_the_cli_refuses_with_exit_code_two(tmp_path, capsys):
         assert main([cmd, str(f)]) == 2
         err = capsys.readouterr().err.strip()
         assert "\n" not in err and "', ccw' or ', cw'" in err
+
+
+def test_the_free_bodies_over_a_sweep_turn_the_load_too():
+    """The free bodies' load (the force polygons', the page's arrows) at every angle."""
+    degs = [10, 95, 250]
+    res = sweep(_scene('"perpendicular to BC, ccw"', '"30 deg ccw from CD"'), np.radians(degs))
+    f = res._forces()
+    sides = [s for fb in f.free for s in fb.sides if s.what == "load" and s.point == "M"]
+    assert len(sides) == 1
+    fx, fy = (np.broadcast_to(c, (len(degs),)) for c in sides[0].vector)
+    for i, d in enumerate(degs):
+        _, B, C, _, _, _ = _positions(math.radians(d))
+        assert np.allclose((fx[i], fy[i]), 500 * _unit(B, C, 90), rtol=1e-12, atol=1e-9)
+
+
+def test_a_line_of_the_frame_is_read_too():
+    """Two ground points make a fixed line: "perpendicular to AD, ccw" is straight up
+    (exactly), "30 deg from AD, ccw" the plain 30 deg (AD along +x)."""
+    up = solve(_scene('"perpendicular to AD, ccw"', '"30 deg from AD, ccw"'))
+    assert up.scene.loads[0].force == (0.0, 500.0)
+    plain = solve(_scene("90", "30"))
+    assert up.input_torque == pytest.approx(plain.input_torque, rel=1e-12)
+    assert any("along a line of the frame" in n for n in up.scene.reading_notes)

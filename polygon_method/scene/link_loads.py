@@ -14,6 +14,7 @@ import numpy as np
 
 from ..common.errors import SceneError
 from ..common.numbers import fmt
+from .table_help import _unit_at
 
 _SENSE = {
     "ccw": 1.0,
@@ -128,7 +129,8 @@ def load_force(ld, P):
     mag = ld.across[4]
     if np.ndim(ang):
         return (mag * np.cos(ang), mag * np.sin(ang))
-    return (mag * math.cos(ang), mag * math.sin(ang))
+    ux, uy = _unit_at(float(ang))  # (exact along the axes, as a plain angle is)
+    return (mag * ux, mag * uy)
 
 
 def across_words(ld) -> str:

@@ -95,9 +95,11 @@ class _Loads:
             got = read_across(raw, split_name)
         except SceneError as exc:
             raise self.error(exc.message, "loads", name) from None
-        if got is not None and not self.index.get(frozenset(got[:2])):
+        fixed = got is not None and got[0] != got[1] and all(p in self.ground for p in got[:2])
+        if got is not None and not fixed and not self.index.get(frozenset(got[:2])):
             raise self.error(
-                f"'{raw.strip()}': no link {got[0]}{got[1]} in [links] to take the direction from",
+                f"'{raw.strip()}': no link {got[0]}{got[1]} in [links] (nor two ground "
+                "points) to take the direction from",
                 "loads",
                 name,
             )

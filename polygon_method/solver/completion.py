@@ -186,7 +186,9 @@ def loads_along_links(plan, sc):
                 exc.message, file=sc.file, key=where, line=key_line(sc, where)
             ) from None
         loads.append(replace(ld, force=(f[0] + 0.0, f[1] + 0.0)))
-        said.append(f"the force at {ld.target}: {across_words(loads[-1])}, turning with the link")
+        fixed = all(p in sc.ground for p in ld.across[:2])  # (two ground points: the frame's)
+        how = "along a line of the frame" if fixed else "turning with the link"
+        said.append(f"the force at {ld.target}: {across_words(loads[-1])}, {how}")
     old = tuple(n for n in sc.reading_notes if not n.startswith("the force at "))
     object.__setattr__(sc, "loads", tuple(loads))
     object.__setattr__(sc, "reading_notes", old + tuple(said))
