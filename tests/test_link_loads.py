@@ -251,3 +251,16 @@ def test_a_line_of_the_frame_is_read_too():
     plain = solve(_scene("90", "30"))
     assert up.input_torque == pytest.approx(plain.input_torque, rel=1e-12)
     assert any("along a line of the frame" in n for n in up.scene.reading_notes)
+
+
+def test_the_torques_error_bound_holds_the_directions_error():
+    """A direction from the positions carries their error: the input torque's bound is
+    larger than with the same angle stated as a number (given exactly), and still tiny."""
+    _, B, C, D, _, _ = _positions(math.radians(60))
+    dm = math.degrees(math.atan2(*(_unit(B, C, 90)[::-1]))) % 360
+    de = math.degrees(math.atan2(*(_unit(C, D, 30)[::-1]))) % 360
+    turned = solve(_scene('"perpendicular to BC, ccw"', '"30 deg ccw from CD"'))
+    plain = solve(_scene(repr(dm), repr(de)))
+    a = turned.error_bounds.torque(turned.scene)
+    b = plain.error_bounds.torque(plain.scene)
+    assert b < a < 1e-10

@@ -141,10 +141,21 @@ class ErrorBounds:
         b = []
         for load in scene.loads:
             if load.force is not None:
-                b.append(self.V.get(load.target, 0.0))
+                b.append(self.V.get(load.target, 0.0) + self._turned(scene, load))
             else:
                 b.append(self.W.get(scene.link(load.target).key, 0.0))
         return largest(b) if b else 0.0
+
+    def _turned(self, scene, load) -> object:
+        """A force stated against a link: its direction's error (rad), from its two
+        points' positions' errors over their distance (0 for any other force)."""
+        if load.across is None:
+            return 0.0
+        a, b = load.across[:2]
+        if a in scene.ground and b in scene.ground:
+            return 0.0  # (a line of the frame: given)
+        n = scene.link(f"{a}-{b}").length
+        return (self.P.get(a, 0.0) + self.P.get(b, 0.0)) * (self.scales["position"] / n)
 
 
 class _Boxes(dict):
