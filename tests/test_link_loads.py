@@ -264,3 +264,24 @@ def test_the_torques_error_bound_holds_the_directions_error():
     a = turned.error_bounds.torque(turned.scene)
     b = plain.error_bounds.torque(plain.scene)
     assert b < a < 1e-10
+
+
+@pytest.mark.parametrize(
+    "words,first,second,turn",
+    [
+        ("Along CD", "C", "D", 0),
+        ("parallel to DC", "D", "C", 0),
+        ("normal to CD (ccw)", "C", "D", 90),
+        ("square to CD, cw", "C", "D", -90),
+        ("Perpendicular to BC, anti-clockwise", "B", "C", 90),
+        ("30° cw from CD", "C", "D", -30),
+        ("at 30 deg with CD, counter-clockwise", "C", "D", 30),
+    ],
+)
+def test_the_words_a_book_uses(words, first, second, turn):
+    from polygon_method.scene.link_loads import read_across
+    from polygon_method.scene.names import split_name
+
+    a, b, off, said = read_across(words, split_name)
+    assert (a, b, said) == (first, second, words)
+    assert math.degrees(off) == pytest.approx(turn, abs=1e-12)

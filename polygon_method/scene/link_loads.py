@@ -25,13 +25,14 @@ _SENSE = {
 }
 _S = r"(ccw|cw|anticlockwise|counterclockwise|clockwise)"
 _NAME = r"([A-Za-z][A-Za-z0-9]*(?:-[A-Za-z][A-Za-z0-9]*)?)"
-_ALONG = re.compile(rf"(?:along|parallel to) {_NAME}")
+_ALONG = re.compile(rf"(?:along|parallel to) {_NAME}", re.I)
 _ACROSS = re.compile(
-    rf"(?:perpendicular to|normal to|at right angles to|square to) {_NAME}(?: {_S})?"
+    rf"(?:perpendicular to|normal to|at right angles to|square to) {_NAME}(?: {_S})?", re.I
 )
 _AT = re.compile(
     rf"(?:at )?([0-9]+(?:\.[0-9]*)?|\.[0-9]+) ?(?:deg|degrees|°)"
-    rf"(?: {_S})? (?:from|to|with) {_NAME}(?: {_S})?"
+    rf"(?: {_S})? (?:from|to|with) {_NAME}(?: {_S})?",
+    re.I,
 )
 
 
@@ -55,7 +56,14 @@ def read_across(raw, split_name):
         return None
     text = _tidy(raw)
     low = text.lower()
-    for word in ("along", "parallel to", "perpendicular to", "normal to", "at right angles to"):
+    for word in (
+        "along",
+        "parallel to",
+        "perpendicular to",
+        "normal to",
+        "at right angles to",
+        "square to",
+    ):
         if low.startswith(word + " "):
             break
     else:
