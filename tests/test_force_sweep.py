@@ -113,7 +113,12 @@ def _power_terms(sc, res, f):
     """The virtual-power terms (arrays over the sweep), G's motion from the links' ends."""
     terms = _driver_power(sc, res, f)
     for ld in sc.loads:
-        if ld.force is not None:
+        if ld.across is not None:  # stated against a link: it turns with it, angle by angle
+            a, b, off, _, size = ld.across
+            (ax, ay), (bx, by), v = res.P[a], res.P[b], res.V[ld.target]
+            t = np.arctan2(by - ay, bx - ax) + off
+            terms.append(size * (np.cos(t) * v[0] + np.sin(t) * v[1]))
+        elif ld.force is not None:
             v = res.V[ld.target]
             terms.append(ld.force[0] * v[0] + ld.force[1] * v[1])
         else:
