@@ -238,3 +238,43 @@ def test_a_sweep_that_cannot_hold_a_couplers_speed_is_refused(tmp_path):
 def test_steps_text_says_the_speeds_found():
     sol = solve(_scene('"omega_O-S" = "240 rpm cw"', 'speed = "120 rpm ccw"'))
     assert "two cranks' speeds are found" in steps_text(sol)
+
+
+def test_the_crank_acceleration_stated_beside_the_given_speed():
+    """The arm's own acceleration stated, the sun's speed given without its rate: the
+    sun's acceleration by Willis' formula on the rates (the annulus uniform)."""
+    sc = _scene(
+        '"omega_O-S" = "240 rpm cw"\nacceleration = "2 rad/s^2 ccw"', 'speed = "120 rpm ccw"'
+    )
+    sol = solve(sc)
+    assert sol.Al["OA"] == pytest.approx(2.0, rel=1e-12)
+    # alpha_a = (zs alpha_s + zr 0) / (zs + zr)
+    assert sol.Al["O-S"] == pytest.approx(2.0 * (ZS + ZR) / ZS, rel=1e-12)
+    assert sol.W["OA"] == pytest.approx(_willis(-240 * RPM, 120 * RPM), rel=1e-12)
+
+
+def test_the_arms_position_stated_otherwise():
+    """The arm's angle given as a direction (angle_OA): found, then both speeds."""
+    text = _text('"omega_O-S" = "240 rpm cw"', 'speed = "120 rpm ccw"').replace(
+        "angle = 30\n", "angle_OA = 50\n", 1
+    )
+    sol = solve(parse_scene(text))
+    assert math.degrees(sol.scene.input.angle) == pytest.approx(50.0, abs=1e-9)
+    assert sol.W["OA"] == pytest.approx(_willis(-240 * RPM, 120 * RPM), rel=1e-12)
+
+
+def test_variants_refused_in_one_line(tmp_path):
+    f = tmp_path / "v.toml"
+    f.write_text(BOOK.read_text() + "\n[variants]\nangle = { from = 30, to = 60, step = 5 }\n")
+    r = _cli("variants", f, "--count", "2", "-o", tmp_path / "out")
+    assert r.returncode == 2
+    assert "speeds are given on other links" in r.stderr and "\n" not in r.stderr.strip()
+
+
+def test_a_rest_of_the_arm_is_refused_not_rounding_noise(tmp_path):
+    """Sun 240 cw, annulus 90 ccw: 30 x -240 + 80 x 90 = 0, the arm at rest: refused (the
+    train is then an ordinary one), never a speed of rounding noise."""
+    f = tmp_path / "rest.toml"
+    f.write_text(_text('"omega_O-S" = "240 rpm cw"', 'speed = "90 rpm ccw"'))
+    r = _cli("solve", f)
+    assert r.returncode == 2 and "at rest" in r.stderr

@@ -37,7 +37,7 @@ from ..common.errors import AssemblyError, PolygonMethodError, SceneError
 from ..common.numbers import in_units, quiet
 from ..common.tolerances import SAME, TOL
 from .completion import gas_towards_crank, given_completed, place
-from .two_given import complete_two, needs_two
+from .two_given import complete_two, needs_two, trial_speeds
 from .mobility import gruebler, leftover
 from .plan import Bodies, Dims, Plan, _pin_entries, first_tier
 from .reach import reach_words
@@ -86,7 +86,7 @@ def compile_plan(scene: Scene) -> Plan:
             notes = ()
             if scene.input.placed is not None and not scene.input.placed.found:
                 notes = place(
-                    scene, lambda trial: _Compiler(trial).run()
+                    scene, lambda trial: _Compiler(trial_speeds(trial)).run()
                 )  # the crank's angle that gives the stated position
             if needs_two(scene.input):  # two inputs, a speed given on another link
                 notes = notes + complete_two(scene, lambda trial: _Compiler(trial).run())

@@ -49,7 +49,7 @@ from ..common.numbers import condition_text, sense
 from ..scene import key_line
 from ..steps import Context
 
-__all__ = ["needs_two", "complete_two", "held_over"]
+__all__ = ["needs_two", "complete_two", "held_over", "trial_speeds"]
 
 
 def needs_two(inp) -> bool:
@@ -69,19 +69,7 @@ def complete_two(scene, compile_trial) -> tuple:
     (see the module) and set them on ``scene``'s input (a scene is complete once
     compiled). ``compile_trial``: a scene to its plan. Returns the notes."""
     inp, two = scene.input, scene.input.second
-    trial = replace(
-        inp,
-        omega=1.0 if inp.omega is None else inp.omega,
-        alpha=0.0 if inp.alpha is None else inp.alpha,
-        given=None,
-        second=replace(
-            two,
-            omega=1.0 if two.omega is None else two.omega,
-            alpha=0.0 if two.alpha is None else two.alpha,
-            given=None,
-        ),
-    )
-    plan = compile_trial(replace(scene, input=trial))
+    plan = compile_trial(trial_speeds(scene))
     k = next(i for i, st in enumerate(plan.steps) if st.kind == "second crank")
 
     def run(w1, a1, w2, a2):
@@ -133,6 +121,29 @@ def complete_two(scene, compile_trial) -> tuple:
     )
     object.__setattr__(scene, "input", done)
     return (_note(ins, per, w, a, cond),) + tuple(notes)
+
+
+def trial_speeds(scene):
+    """``scene`` with a trial speed (1 rad/s, no rate) on each crank whose speed is to be
+    found (the positions, and the plan's shape, do not depend on them); ``scene`` itself
+    where none is to be found."""
+    inp = scene.input
+    if not needs_two(inp):
+        return scene
+    two = inp.second
+    trial = replace(
+        inp,
+        omega=1.0 if inp.omega is None else inp.omega,
+        alpha=0.0 if inp.alpha is None else inp.alpha,
+        given=None,
+        second=replace(
+            two,
+            omega=1.0 if two.omega is None else two.omega,
+            alpha=0.0 if two.alpha is None else two.alpha,
+            given=None,
+        ),
+    )
+    return replace(scene, input=trial)
 
 
 def _unit(i):
