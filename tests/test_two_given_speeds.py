@@ -278,3 +278,13 @@ def test_a_rest_of_the_arm_is_refused_not_rounding_noise(tmp_path):
     f.write_text(_text('"omega_O-S" = "240 rpm cw"', 'speed = "90 rpm ccw"'))
     r = _cli("solve", f)
     assert r.returncode == 2 and "at rest" in r.stderr
+
+
+def test_steps_say_which_speeds_were_found_and_which_given():
+    """The step table: the arm's speed found from the sun's, the annulus's given; with
+    both found, the annulus's found too, never '(given)' for a speed found."""
+    text = steps_text(solve(_scene('"omega_O-S" = "240 rpm cw"', 'speed = "120 rpm ccw"')))
+    assert "omega_OA = 2.285 rad/s ccw (the crank's, found from omega_O-S = 240 rpm cw)" in text
+    assert "omega_O-Q = 12.57 rad/s ccw (given)" in text
+    text = steps_text(solve(_scene('"omega_O-S" = "240 rpm cw"', 'omega_AP = "300 rpm ccw"')))
+    assert "(found above)" in text and "rad/s ccw (given)" not in text

@@ -49,7 +49,7 @@ from ..common.numbers import condition_text, sense
 from ..scene import key_line
 from ..steps import Context
 
-__all__ = ["needs_two", "complete_two", "held_over", "trial_speeds"]
+__all__ = ["needs_two", "complete_two", "held_over", "trial_speeds", "found_note", "FOUND"]
 
 
 def needs_two(inp) -> bool:
@@ -146,6 +146,18 @@ def trial_speeds(scene):
     return replace(scene, input=trial)
 
 
+#: how the note saying the two cranks' speeds found begins
+FOUND = "the two cranks' speeds are found from the speeds given"
+
+
+def found_note(plan) -> str | None:
+    """The note saying how the two cranks' speeds were found (the step table's working),
+    or None where they were stated."""
+    if not plan.scene.input.found_from:
+        return None
+    return next((n for n in plan.notes if n.startswith(FOUND)), None)
+
+
 def _unit(i):
     return (1.0, 0.0) if i == 0 else (0.0, 1.0)
 
@@ -208,7 +220,7 @@ def _note(ins, per, w, a, cond) -> str:
         else:
             parts.append(f"the crank {x.crank} turns at its own stated speed")
     out = (
-        "the two cranks' speeds are found from the speeds given (" + "; ".join(parts) + "): "
+        f"{FOUND} (" + "; ".join(parts) + "): "
         f"solving the two together, omega_{ins[0].crank} = {abs(w[0]):.6g} rad/s "
         f"{sense(w[0])} and omega_{ins[1].crank} = {abs(w[1]):.6g} rad/s {sense(w[1])}, "
         f"alpha_{ins[0].crank} = {_rate(a[0])} and alpha_{ins[1].crank} = {_rate(a[1])}"
