@@ -288,3 +288,22 @@ def test_steps_say_which_speeds_were_found_and_which_given():
     assert "omega_O-Q = 12.57 rad/s ccw (given)" in text
     text = steps_text(solve(_scene('"omega_O-S" = "240 rpm cw"', 'omega_AP = "300 rpm ccw"')))
     assert "(found above)" in text and "rad/s ccw (given)" not in text
+
+
+def test_a_five_bars_coupler_speed_against_the_50_digit_reference():
+    """A linkage, not a train: the five-bar's second input given as the coupler CD's
+    speed and rate; the general 50-digit solve at both cranks' speeds found turns CD at
+    the stated speed and rate (so the 2 x 2 solve, with its velocity terms, is right)."""
+    from mpmath import mpf
+    from reference import reference_solution
+
+    text = (ROOT / "worked_problems" / "five_bar_two_inputs.toml").read_text()
+    text = text.replace(
+        'speed = "5 rad/s cw"', 'omega_CD = "1 rad/s ccw"\nalpha_CD = "4 rad/s^2 cw"'
+    )
+    text = text[: text.index("[answers]")]
+    sol = solve(parse_scene(text))
+    ref = reference_solution(sol.scene, sol.P)
+    assert abs(ref["omega"]["CD"] - 1) <= mpf("1e-9")
+    assert abs(ref["alpha"]["CD"] + 4) <= mpf("1e-9") * 4
+    assert abs(ref["omega"]["AB"] - 10) <= mpf("1e-9") * 10
