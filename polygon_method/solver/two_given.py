@@ -226,7 +226,12 @@ def _note(ins, per, w, a, cond) -> str:
         f"alpha_{ins[0].crank} = {_rate(a[0])} and alpha_{ins[1].crank} = {_rate(a[1])}"
     )
     if cond < 1.0 - ROUNDING:
-        out += f" (condition {cond:.3g} of the two given speeds: 1 independent, 0 singular)"
+        out += f" (condition {cond:.3g} of the two equations: 1 independent, 0 singular)"
+    if cond < TOL.warn:
+        out += (
+            ": near singular, the cranks' speeds are very sensitive to the speeds given "
+            "(they grow as 1 / condition)"
+        )
     return out
 
 
