@@ -256,10 +256,22 @@ class Input:
     #: a driving wheel's motion given on its centre (``vs_C``, ``as_C``) instead of its own
     #: omega and alpha: the keys so given (the step table says which were given)
     wheel_given: tuple = ()
+    #: with two inputs, the speeds given on other links (:class:`GivenRate`) that the
+    #: cranks' speeds were found from when the scene was compiled (then ``given`` is None
+    #: and ``omega``, ``alpha`` of both cranks are those found); empty otherwise
+    found_from: tuple = field(default=(), compare=False)
     #: an angle the scene gave in a book's words: (words, the angle they gave (rad), the
     #: slips a reader of them might make (:class:`~.angles.Slip`), the note saying how
     #: they were read); empty for a plain angle
     said: tuple = field(default=(), compare=False)
+
+    def found_record(self) -> dict:
+        """The JSON input's ``found_from``: the speeds given on other links (SI, ccw +)
+        that two cranks' speeds were found from; {} where there are none."""
+        if not self.found_from:
+            return {}
+        keys = ("key", "value", "rate_key", "rate")
+        return {"found_from": [{k: getattr(g, k) for k in keys} for g in self.found_from]}
 
     @property
     def angle_words(self) -> str | None:

@@ -172,7 +172,9 @@ def _angular_velocity_items(sol):
             items.append(
                 f"omega_{lk.key} = {fmt(abs(w))} rad/s {sense_word(w)} "
                 + (
-                    "(the input)"
+                    f"(the crank's, {sc.input.speed_text})"
+                    if sc.input.found_from and sc.input.speed_text.startswith("found from")
+                    else "(the input)"
                     if sc.input.given is None
                     else f"(the crank's, found from {sc.input.given.key})"
                 )
@@ -441,7 +443,12 @@ def acceleration_section(doc, sol, ascale):
             items.append(
                 (
                     f"alpha_{lk.key} = {fmt(abs(al))} rad/s^2 {sense_word(al)} "
-                    + ("(the input)" if sc.input.given is None else "(the crank's, found above)")
+                    + (
+                        "(the input)"
+                        if sc.input.given is None
+                        and not (sc.input.found_from and sc.input.speed_text.startswith("found"))
+                        else "(the crank's, found above)"
+                    )
                 ).replace("  ", " ")
             )
             continue

@@ -458,6 +458,14 @@ def generate(scene: Scene, count: int, seed: int, *, batch: int | None = None) -
     var = _asked_for(scene, count, seed)
     solve(scene)  # the base problem itself must solve (else its error, as solve gives it)
     plan = compile_plan(scene)
+    if scene.input.found_from:  # each candidate's two speeds would be found anew
+        raise SceneError(
+            "variants of a scene whose two inputs' speeds are given on other links "
+            f"({', '.join(g.key for g in scene.input.found_from)}) are not made: state "
+            "each crank's speed to vary it",
+            key="[variants]",
+            file=scene.file,
+        )
     branches = _branches(plan)
     shape = _shape(scene)
     cls = linkage_class(scene, shape)
