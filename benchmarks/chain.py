@@ -22,6 +22,12 @@ smallest chain's in the same round, and the collector's collections per solve (y
 middle, full) in the ``kept`` batches. Run it twice to see its noise. The instructions,
 which no other load moves: ``python benchmarks/instructions.py chain1001 chain10001``.
 
+Beside them, the floor (:func:`floor_chain`): plain Python float code for the same chain,
+its numbers kept by name in dicts as a solve keeps them (checked against the solve to 1e-9).
+It makes as many tuples and dict entries as a solve, so its time per link grows with the
+chain as the memory's reach does: what the solve's growth has beyond the floor's is the
+solve's own.
+
 A benchmark, not a test: nothing here fails on time.
 """
 
@@ -30,6 +36,7 @@ from __future__ import annotations
 import argparse
 import gc
 import importlib.util
+import math
 import statistics
 import sys
 import time
@@ -115,6 +122,100 @@ def _collections(scene, calls):
 WAYS = (("held", False), ("held", True), ("unheld", False), ("unheld", True))
 
 
+def floor_chain(plan):
+    """The floor for a chain: plain Python float code for the same chain (the crank, then
+    each dyad's place, velocity and acceleration written out as straight-line arithmetic,
+    the numbers kept by name in dicts as a solve keeps them), its branch and dimensions
+    read from ``plan``. Its time per link grows with the chain as the memory's reach does
+    (it makes as many tuples and dict entries as a solve): the solve's growth beside it is
+    what the solve adds. Returns the function."""
+    steps = plan.steps
+    crank = steps[0]
+    ground = plan.ground
+    r = crank.params[0]  # the crank's length (m)
+    ox, oy = ground[crank.pivot]
+    dyads = []
+    for st in steps[1:]:
+        l1, l2 = st.params
+        dyads.append((st.point, st.b, st.d, st.link1, st.link2, l1, l2, st.sigma))
+    inp = plan.scene.input
+    theta, omega, alpha = inp.angle, inp.omega, inp.alpha
+    cos, sin = math.cos, math.sin
+
+    def floor():
+        P = dict(ground)
+        V = dict.fromkeys(ground, (0.0, 0.0))
+        A = dict(V)
+        bx = ox + r * cos(theta)
+        by = oy + r * sin(theta)
+        rx, ry = bx - ox, by - oy
+        P[crank.tip] = (bx, by)
+        V[crank.tip] = (-omega * ry, omega * rx)
+        A[crank.tip] = (-omega * omega * rx - alpha * ry, -omega * omega * ry + alpha * rx)
+        W = {crank.link: omega}
+        Al = {crank.link: alpha}
+        for X, B, D, j1, j2, l1, l2, sigma in dyads:
+            bx, by = P[B]
+            dx, dy = P[D]
+            ex, ey = dx - bx, dy - by
+            e2 = ex * ex + ey * ey
+            root = (((l1 + l2) ** 2 - e2) * (e2 - (l1 - l2) ** 2)) ** 0.5
+            a = (l1 * l1 - l2 * l2 + e2) / (2 * e2)
+            g = sigma * root / (2 * e2)
+            x, y = bx + a * ex - g * ey, by + a * ey + g * ex
+            P[X] = (x, y)
+            r1x, r1y, r2x, r2y = x - bx, y - by, x - dx, y - dy
+            d = r1x * r2y - r1y * r2x
+            (vbx, vby), (vdx, vdy) = V[B], V[D]
+            wx, wy = vdx - vbx, vdy - vby
+            w1 = (wx * r2x + wy * r2y) / d
+            w2 = (wx * r1x + wy * r1y) / d
+            W[j1], W[j2] = w1, w2
+            V[X] = (vbx - w1 * r1y, vby + w1 * r1x)
+            (abx, aby), (adx, ady) = A[B], A[D]
+            qx = (adx - w2 * w2 * r2x) - (abx - w1 * w1 * r1x)
+            qy = (ady - w2 * w2 * r2y) - (aby - w1 * w1 * r1y)
+            a1 = (qx * r2x + qy * r2y) / d
+            Al[j1], Al[j2] = a1, (qx * r1x + qy * r1y) / d
+            A[X] = (abx - w1 * w1 * r1x - a1 * r1y, aby - w1 * w1 * r1y + a1 * r1x)
+        return P, V, A, W, Al
+
+    return floor
+
+
+def _floor_agrees(scene, floor):
+    """The floor gives the solve's numbers (to 1e-9 of each kind's size: the crank's
+    length r, omega r, (omega^2 + |alpha|) r, omega, omega^2 + |alpha|), or its time means
+    nothing."""
+    from polygon_method import solve
+
+    sol = solve(scene)
+    w, al = abs(scene.input.omega), abs(scene.input.alpha)
+    r = sol.plan.steps[0].params[0]
+    sizes = (r, w * r, (w * w + al) * r, w, w * w + al)
+    for mine, theirs, size in zip(floor(), (sol.P, sol.V, sol.A, sol.W, sol.Al), sizes):
+        assert mine.keys() == theirs.keys()
+        vals = [(a, b) for k in mine for a, b in zip(*(map(_flat, (mine[k], theirs[k]))))]
+        assert all(abs(a - b) <= 1e-9 * size for a, b in vals)
+
+
+def _flat(v):
+    return v if isinstance(v, tuple) else (v,)
+
+
+def _floor_round(floors, sizes, calls):
+    """The floor's time per link of each size in one round (as :func:`_round`)."""
+    out = {}
+    for n in (*sizes, sizes[0]):
+        f = floors[n]
+        t = time.perf_counter()
+        for _ in range(calls[n]):
+            f()
+        t = (time.perf_counter() - t) / calls[n] / n
+        out[n] = (out[n] + t) / 2 if n in out else t
+    return out
+
+
 def _round(scenes, sizes, calls, way):
     """Time per link of each size in one round, the sizes back to back, the smallest timed
     before and after the others (its mean: a machine whose speed drifts moves both)."""
@@ -135,11 +236,19 @@ def main(argv=None):
     sizes = sorted(set(args.links))
     scenes = _scenes(sizes)
     calls = {n: max(1, BATCH_LINKS // n) for n in sizes}
-    times = {(n, way): [] for n in sizes for way in WAYS}
-    ratios = {(n, way): [] for n in sizes for way in WAYS}
+    floors = {}
+    for n in sizes:
+        floors[n] = floor_chain(scenes[n][1])
+        _floor_agrees(scenes[n][0], floors[n])
+    ways = (*WAYS, ("floor", False))
+    times = {(n, way): [] for n in sizes for way in ways}
+    ratios = {(n, way): [] for n in sizes for way in ways}
     for _ in range(args.rounds):
-        for way in WAYS:
-            got = _round(scenes, sizes, calls, way)
+        for way in ways:
+            if way[0] == "floor":
+                got = _floor_round(floors, sizes, calls)
+            else:
+                got = _round(scenes, sizes, calls, way)
             for n in sizes:
                 times[n, way].append(got[n])
                 ratios[n, way].append(got[n] / got[sizes[0]])
@@ -150,12 +259,12 @@ def main(argv=None):
             object.__setattr__(plan, "instant_steps", fns)
             counts[n, name] = _collections(scene, max(4, calls[n]))
         object.__setattr__(plan, "instant_steps", held)
-    heads = [f"{a}, {'kept' if k else 'dropped'}" for a, k in WAYS]
+    heads = [f"{a}, {'kept' if k else 'dropped'}" for a, k in WAYS] + ["the floor"]
     print(f"{'links':>8}" + "".join(f"  {h:>18}" for h in heads))
     for n in sizes:
         cells = [
             f"{min(times[n, w]) * 1e6:6.3f} us ({statistics.median(ratios[n, w]):.3f})"
-            for w in WAYS
+            for w in ways
         ]
         print(f"{n:>8,}" + "".join(f"  {c:>18}" for c in cells))
     print(

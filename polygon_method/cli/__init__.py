@@ -30,6 +30,7 @@ from .commands import (
     _cmd_steps,
     _cmd_sweep,
 )
+from .asked import ANSWERS_HELP, ASKED_HELP
 from .files import check_outputs, write_output, write_outputs
 
 __all__ = ["main", "build_parser", "write_output", "write_outputs", "check_outputs"]
@@ -65,6 +66,7 @@ def _add_solve(sub) -> None:
     s = sub.add_parser("solve", help="solve a scene at its stated instant")
     s.add_argument("scene")
     s.add_argument("--json", action="store_true", help="machine-readable output (SI)")
+    s.add_argument("--answers", help=ASKED_HELP)
     s.set_defaults(func=_cmd_solve)
 
 
@@ -80,6 +82,7 @@ def _add_steps(sub) -> None:
     s = sub.add_parser("steps", help="the hand solution, step by step")
     s.add_argument("scene")
     s.add_argument("--format", choices=("text", "markdown"), default="text")
+    s.add_argument("--answers", help=ASKED_HELP)
     s.set_defaults(func=_cmd_steps)
 
 
@@ -178,6 +181,7 @@ def _add_draw(sub) -> None:
         action="store_true",
         help="the three diagrams over the crank's cycle (-o FILE.gif, .html or .svg)",
     )
+    s.add_argument("--answers", help=ASKED_HELP)
     s.add_argument(
         "--frames", type=int, help=f"frames of --animate over the cycle (default {DEFAULT_FRAMES})"
     )
@@ -194,7 +198,7 @@ def _add_page(sub) -> None:
     )
     s.add_argument("scene")
     s.add_argument("-o", "--output", required=True, help="FILE.html")
-    s.add_argument("--answers", help="a TOML file with an [answers] table to check")
+    s.add_argument("--answers", help=ANSWERS_HELP)
     s.add_argument(
         "--frames",
         type=int,
@@ -232,6 +236,7 @@ def _add_sweep(sub) -> None:
     s.add_argument(
         "--summary", action="store_true", help="maxima and minima with their crank angles"
     )
+    s.add_argument("--answers", help=ASKED_HELP)
     s.set_defaults(func=_cmd_sweep)
 
 

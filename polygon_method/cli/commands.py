@@ -6,19 +6,22 @@ from __future__ import annotations
 import json
 import math
 import sys
+from dataclasses import replace
 from pathlib import Path
 
 from ..common.errors import PolygonMethodError, SceneError
 from ..common.tolerances import SAME
 from .energy import check_cylinders, draw_engine_cycle, engine_cycle
+from .asked import no_answers
 from .files import check_outputs, is_stdout, write_outputs
 
 
 def _cmd_solve(args) -> int:
     from ..scene import load_scene
     from ..motion.solution import solve
+    from .asked import asked_scene
 
-    sol = solve(load_scene(args.scene, variants=False, answers=False))
+    sol = solve(asked_scene(args, load_scene(args.scene, variants=False, answers=False)))
     cycle = engine_cycle(sol)  # an engine asked for its cycle: [indicator] or [flywheel]
     if args.json:
         d = sol.to_dict()
@@ -65,8 +68,9 @@ def _cmd_steps(args) -> int:
     from ..scene import load_scene
     from ..motion.solution import solve
     from ..text.steptable import steps_text
+    from .asked import asked_scene
 
-    sol = solve(load_scene(args.scene, variants=False, answers=False))
+    sol = solve(asked_scene(args, load_scene(args.scene, variants=False, answers=False)))
     check_cylinders(sol.scene, sol)
     print(steps_text(sol, fmt=args.format))
     return 0
@@ -95,6 +99,7 @@ def _cmd_draw(args) -> int:
                 "--centre-labels",
                 key="--animate",
             )
+        no_answers(args, "--animate draws the diagrams alone")
         if args.frames is None:
             args.frames = DEFAULT_FRAMES
         return _cmd_animate(args, out, fmt)
@@ -115,8 +120,10 @@ def _cmd_draw(args) -> int:
         return draw_engine_cycle(args, out, fmt)
     scales = _drawn_scales(args, parse_scales(getattr(args, "scale", None)))
     paper = paper_name(getattr(args, "paper", None) or "A4")
-    targets = check_outputs([(out, "-o")], protect=[args.scene])
-    sol = solve(load_scene(args.scene, variants=False, answers=False))
+    targets = check_outputs([(out, "-o")], protect=[args.scene, getattr(args, "answers", None)])
+    from .asked import asked_scene
+
+    sol = solve(asked_scene(args, load_scene(args.scene, variants=False, answers=False)))
     diagram = getattr(args, "diagram", None) or "all"
     prefix = "" if getattr(args, "centre_labels", "I13") == "13" else "I"
     try:  # a diagram too large for the paper is this scene's: the line names it
@@ -237,15 +244,16 @@ def _cmd_page(args) -> int:
         )
     targets = check_outputs([(out, "-o")], protect=[args.scene, args.answers])
     scene = load_scene(args.scene)
-    fr = _frames(args, scene)
     if args.answers:
         tolerance, answers, named = load_answers(args.answers, scene, with_variant=True)
         _own_variant(named, scene, args.answers)
         # as `check` grades: the file's own tolerance, else the default (the scene's is
         # the book's, for its own answers)
         tolerance = choose_tolerance(None, tolerance, scene.tolerance, False)[0]
+        scene = replace(scene, answers=tuple(answers))  # what it asks: its keys' marks, steps
     else:
         tolerance, answers = scene.tolerance, scene.answers
+    fr = _frames(args, scene)
     title = f"answers from {Path(args.answers).name if args.answers else 'the scene'}"
     try:
         verdicts = check_answers(fr.sol, answers, tolerance) if answers else None
@@ -293,8 +301,7 @@ def _own_variant(named, scene, file):
         raise SceneError(
             f"names variant '{printable(named)}', and this scene is "
             + (f"variant '{printable(own.id)}'" if own else "not a variant")
-            + ": make the page of that variant's own scene (the file "
-            "`variants -o DIR` wrote)",
+            + ": give that variant's own scene (the file `variants -o DIR` wrote)",
             file=file,
             key="variant",
         )
@@ -414,15 +421,9 @@ def _requested_places(args, scene, ranged):
     return stroke_places(scene, n)
 
 
-def _cmd_sweep(args) -> int:
-    """``polygon-method sweep SCENE [--steps N | --from A --to B --step S] [--csv FILE]
-    [--plot FILE.svg] [--summary]``: print the summary; the CSV and the plot are written by
-    ``write_output`` (whole or not at all)."""
-    from ..scene import load_scene
-    from ..linkage.cycle import sweep_aliased
-    from ..linkage.summary import summarize, summary_of
-    from ..motion.sweeps import sweep
-
+def _sweep_flags(args):
+    """``sweep``'s options that go together checked (a flag never silently ignored): the
+    plot's file name, given back."""
     plot = getattr(args, "plot", None)
     if plot and not plot.lower().endswith((".svg", ".png", ".pdf")):
         raise SceneError(f"--plot {plot}: the file must end in .svg, .png or .pdf")
@@ -435,14 +436,29 @@ def _cmd_sweep(args) -> int:
         raise SceneError(
             "--error-bound adds a column to the CSV: give --csv FILE as well", key="--error-bound"
         )
+    return plot
+
+
+def _cmd_sweep(args) -> int:
+    """``polygon-method sweep SCENE [--steps N | --from A --to B --step S] [--csv FILE]
+    [--plot FILE.svg] [--summary]``: print the summary; the CSV and the plot are written by
+    ``write_output`` (whole or not at all)."""
+    from ..scene import load_scene
+    from ..linkage.cycle import sweep_aliased
+    from ..linkage.summary import summarize, summary_of
+    from ..motion.sweeps import sweep
+
+    plot = _sweep_flags(args)
     to_stdout = bool(args.csv) and is_stdout(args.csv)  # (-, /dev/stdout: the words on stderr)
     wanted = [
         (path, option)
         for path, option in ((None if to_stdout else args.csv, "--csv"), (plot, "--plot"))
         if path
     ]
-    targets = check_outputs(wanted, protect=[args.scene])
-    scene = load_scene(args.scene, variants=False, answers=False)
+    targets = check_outputs(wanted, protect=[args.scene, getattr(args, "answers", None)])
+    from .asked import asked_scene
+
+    scene = asked_scene(args, load_scene(args.scene, variants=False, answers=False))
     check_cylinders(scene)
     angles = _requested_angles(args, scene)
     if args.csv:

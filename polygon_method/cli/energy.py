@@ -19,6 +19,7 @@ import sys
 from pathlib import Path
 
 from ..common.errors import PolygonMethodError, SceneError
+from .asked import no_answers
 from .files import check_outputs, is_stdout, write_outputs
 
 __all__ = ["route"]
@@ -78,7 +79,18 @@ def _solved(scene):
         raise exc.located(scene.file)
 
 
+def _shows_all(args, command) -> None:
+    """``--answers`` refused where a turning-moment diagram's view shows every answer."""
+    if getattr(args, "answers", None):
+        raise PolygonMethodError(
+            f"a turning-moment diagram's {command} shows every answer: leave out --answers "
+            "(check grades it)",
+            key="--answers",
+        )
+
+
 def _solve(args, scene) -> int:
+    _shows_all(args, "solve")
     c = _solved(scene)
     if args.json:
         d = {"title": scene.title, "scene": scene.file, "cycle": c.as_dict()}
@@ -93,6 +105,7 @@ def _solve(args, scene) -> int:
 def _steps(args, scene) -> int:
     from ..text.energy import cycle_steps
 
+    _shows_all(args, "steps")
     text = cycle_steps(scene, _solved(scene))
     print(f"```\n{text}\n```" if getattr(args, "format", "text") == "markdown" else text)
     return 0
@@ -204,6 +217,7 @@ def _draw(args, scene) -> int:
         "frames": getattr(args, "frames", None) is not None,
         "centre-labels": getattr(args, "centre_labels", None) not in (None, "I13"),
         "paper": str(getattr(args, "paper", "A4") or "A4").lower() != "a4",
+        "answers": bool(getattr(args, "answers", None)),
     }
     for flag, on in given.items():
         if on:
@@ -215,6 +229,7 @@ def _draw(args, scene) -> int:
 
 
 def _sweep(args, scene) -> int:
+    _shows_all(args, "sweep")
     for flag in ("start", "stop", "step", "points", "links", "error_bound"):
         if getattr(args, flag, None) not in (None, False):
             name = {"start": "from", "stop": "to"}.get(flag, flag).replace("_", "-")
@@ -333,6 +348,7 @@ def draw_engine_cycle(args, out, fmt) -> int:
         raise PolygonMethodError(
             "--diagram cycle draws at its own scales: leave out --scale", key="--scale"
         )
+    no_answers(args, "--diagram cycle draws the engine's turning moment over its cycle")
     targets = check_outputs([(out, "-o")], protect=[args.scene])
     scene = load_scene(args.scene, variants=False, answers=False)
     check_cylinders(scene)

@@ -28,6 +28,7 @@ from .style import (
     DOT_R,
     IMAGE_FACE,
     LABEL_PT,
+    LEAST_STYLE,
     LEGEND_NAMES,
     LINE_STYLE,
     MARK_APART,
@@ -153,7 +154,7 @@ def _least_speed(sk, sol, cm, names):
     box = [(0.0, 0.0)] + list(sol.V.values())
     lo, hi = [min(q[i] for q in box) for i in (0, 1)], [max(q[i] for q in box) for i in (0, 1)]
     room = max(hi[0] - lo[0], hi[1] - lo[1]) / 4  # a quarter of the polygon's size past it
-    for _, kind, (x, y) in asked_pairs(sol.scene):
+    for key, kind, (x, y) in asked_pairs(sol.scene):
         ls = least_speed(sol, x, y) if kind == "vmin" else None
         if ls is None or ls.fraction is None:  # (a link that does not turn has no foot)
             continue
@@ -162,16 +163,17 @@ def _least_speed(sk, sol, cm, names):
         if not all(lo[i] - room <= foot[i] <= hi[i] + room for i in (0, 1)):
             continue
         ends = [(0.0, 0.0)] + ([] if ls.where == "between" else [sol.V[x if t < 0 else y]])
+        color, lw, dashes = LEAST_STYLE
         for i, end in enumerate(ends):  # op; xy produced to p
             sk.line(
                 [cm(end), cm(foot)],
                 gid=f"velocity-least-{x}-{y}-{i}",
-                color="#000000",
-                lw=0.6,
-                dashes=(2.0, 1.5),
+                color=color,
+                lw=lw,
+                dashes=dashes,
                 z=2,
             )
-        names.setdefault(tuple(foot), []).append(foot_name(sol).lower())
+        names.setdefault(tuple(foot), []).append(foot_name(sol, key).lower())
 
 
 def _images(sk, sol, cons, D, cm, phase):

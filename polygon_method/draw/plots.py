@@ -11,6 +11,7 @@ import numpy as np
 from ..common.tolerances import DISTINCT, ON_PAPER, PLOTTED_ZERO
 from ..common.errors import PolygonMethodError, SceneError
 from ..motion.solution import solve
+from ..motion.link_points import asked_pairs, pair_quantities
 from ..motion.sweeps import SweepResult
 from ..solver.tracking import degrees_fn
 
@@ -149,6 +150,10 @@ def _panels(res: SweepResult, axes, pts, keys) -> list:
     accelerations, omegas and alphas, each series ``(name, values, value at the instant)``."""
     sc = res.scene
     here = _scene_values(sc)
+    asked = [  # vmin_BC, ar_CB, at_CB where the answers ask them: with the speeds, accelerations
+        (_pair_name(key), unit, value, here.get(key))
+        for key, unit, value, _ in pair_quantities(sc, res)
+    ]
     return [
         (
             axes[0][0],
@@ -157,12 +162,14 @@ def _panels(res: SweepResult, axes, pts, keys) -> list:
             + [
                 (typeset("v", "s," + s.key), res.S[s.key][0], here.get(f"vs_{s.key}"))
                 for s in sc.sliders
-            ],
+            ]
+            + [(name, v, at) for name, unit, v, at in asked if unit == "m/s"],
         ),
         (
             axes[1][0],
             "acceleration a (m/s²)",
-            [(typeset("a", p), res.acceleration_magnitude(p), here.get(f"a_{p}")) for p in pts],
+            [(typeset("a", p), res.acceleration_magnitude(p), here.get(f"a_{p}")) for p in pts]
+            + [(name, v, at) for name, unit, v, at in asked if unit != "m/s"],
         ),
         (
             axes[0][1],
@@ -175,6 +182,14 @@ def _panels(res: SweepResult, axes, pts, keys) -> list:
             [(typeset("alpha", k), res.Al[k], here.get(f"alpha_{k}")) for k in keys],
         ),
     ]
+
+
+def _pair_name(key: str) -> str:
+    """An asked key of two points of a link as the books write it: v_min,AB; a^r_BA, a^t_BA."""
+    kind, _, names = key.partition("_")
+    if kind == "vmin":
+        return typeset("v", "min," + names)
+    return typeset("a", names).replace("$a_{", "$a^{" + kind[1] + "}_{", 1)
 
 
 def _unit_scales(res: SweepResult) -> list:
@@ -372,4 +387,6 @@ def _scene_values(scene) -> dict:
         out[f"alpha_{lk.key}"] = sol.Al[lk.key]
     for s in scene.sliders:
         out[f"vs_{s.key}"] = sol.S[s.key][0]
+    for key, kind, names in asked_pairs(scene):
+        out[key] = sol.value(kind, names)
     return out

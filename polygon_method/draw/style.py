@@ -35,6 +35,8 @@ STYLE = {
     "coriolis": ("#1a9641", 2.2, None),
 }
 LINE_STYLE = ("#777777", 0.6, (4.0, 2.5))  # construction (direction) lines
+#: op drawn from the pole square to xy where vmin_XY is asked, and xy produced to its foot p
+LEAST_STYLE = ("#000000", 0.6, (2.0, 1.5))
 LEGEND_NAMES = {
     "absolute": "total (from the pole)",
     "relative": "relative (between images)",

@@ -24,15 +24,9 @@ from ..motion.sweeps import (
     sweep_angles,
 )
 from ..solver.compiler import compile_plan
-from ..solver.tracking import (
-    CHUNK,
-    TWO_PI,
-    Sweeper,
-    branch_steps,
-    degrees_fn,
-    tune_malloc,
-    valid_mask,
-)
+from ..solver.tracking import CHUNK, TWO_PI, Sweeper, branch_steps, degrees_fn
+from ..solver.tracking import tune_malloc, valid_mask
+from ..motion.link_points import pair_quantities
 
 from .summary_limits import (
     at_limits,
@@ -133,6 +127,7 @@ class _Reducer:
                 continue
             yield f"omega_{lk.key}", "rad/s", fr.W[lk.key], "ccw +"
             yield f"alpha_{lk.key}", "rad/s^2", fr.Al[lk.key], "ccw +"
+        yield from pair_quantities(sc, fr)  # vmin_BC, ar_CB, at_CB: where the answers ask them
         for s in sc.sliders:
             vs, a_s, cx, cy = fr.S[s.key]
             if isinstance(s, FixedPath):

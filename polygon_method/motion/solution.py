@@ -34,14 +34,13 @@ from ..scene import FixedPath, Scene
 from ..scene.force_records import rolling_body
 from ..scene.teeth import teeth_records
 from .json_safe import finite_only, useful_bounds
-from .link_points import PAIR_KINDS, asked_dict, pair_value
+from .link_points import PAIR_KINDS, asked_dict, bounds_dict as pair_bounds_dict, pair_value
 
 __all__ = ["solve", "Solution", "PinRubbing", "sense", "fmt_angular"]
 
 _UNSET = object()  # a quantity not yet derived (its value may be None)
 
-#: answer kind -> (its table of :class:`~polygon_method.solver.errorbound.ErrorBounds`, the size
-#: that bound is relative to)
+#: answer kind -> (its table of :class:`~.errorbound.ErrorBounds`, the size it is relative to)
 _BOUND_OF = {
     "v": ("V", "velocity"),
     "a": ("A", "acceleration"),
@@ -413,7 +412,8 @@ class Solution(Motion):
         ]
         d["warnings"] = warnings
         d["notes"] = list(self.notes)
-        d["error_bounds"] = useful_bounds(bounds_dict(self, self.error_bounds))
+        bounds = bounds_dict(self, self.error_bounds) | pair_bounds_dict(self)  # (vmin_BC ...)
+        d["error_bounds"] = useful_bounds(bounds)
         if sc.has_forces and not refused:  # each force's bound, null where none is useful
             from ..forces.bounds import bounds_dict as force_bounds_dict, force_bounds
 

@@ -34,6 +34,7 @@ from ..scene import Scene
 from ..solver.tracking import CHUNK, Domain, Sweeper, array_motion, run_arrays, valid_mask
 from ..common.units import ABSURD
 from . import sweep_forces
+from .link_points import pair_columns, pair_worst
 
 __all__ = [
     "sweep",
@@ -141,6 +142,7 @@ class SweepResult(Motion):
                 (f"omega_{lk.key}", "rad/s", self.W[lk.key]),
                 (f"alpha_{lk.key}", "rad/s^2", self.Al[lk.key]),
             ]
+        cols += pair_columns(self)  # vmin_BC, ar_CB, at_CB: where the answers ask them
         for s in sc.sliders:
             vs, a_s, cx, cy = self.S[s.key]
             cols += [
@@ -168,7 +170,7 @@ class SweepResult(Motion):
             if st.branching:
                 cols.append((f"condition_step{st.index + 1}", "1", self.conditions[st.index]))
         if error_bound:
-            worst = self.error_bounds.worst
+            worst = np.fmax(self.error_bounds.worst, pair_worst(self))  # (vmin_BC ... asked)
             cols.append(("err_max", "1", np.broadcast_to(worst, np.shape(self.theta))))
             got = self._force_rows()
             if got is not None:  # the largest bound of any force (relative to the largest)

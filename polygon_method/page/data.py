@@ -21,6 +21,7 @@ from ..draw.style import (
     HEAD_HALF,
     HEAD_LEN,
     IMAGE_FACE,
+    LEAST_STYLE,
     LINE_STYLE,
     PITCH_STYLE,
     STYLE,
@@ -34,6 +35,8 @@ from ..polygons.scales import DIAGRAMS, display_unit
 from ..scene import Link
 from ..steps import image_name, slot_labels, under_label
 from ..steps.relations import rigid_acceleration
+from ..motion.link_points import asked_pairs, feet_over, pair_quantities
+from ..text.link_points import foot_name
 from .force_layer import FORCES_CM, force_layers, offset_points
 from .frames import Frames, round_sig
 
@@ -217,12 +220,55 @@ def _guide_points(res, sliders, n) -> dict:
     return out
 
 
+def _least(sol, res) -> list:
+    """Each ``vmin_XY`` the answers ask, per frame (:func:`..motion.link_points.feet_over`):
+    ``t`` the foot p as a fraction of XY from X (beyond an end outside [0, 1]; None where the
+    link does not turn: no foot), ``foot`` p's image (SI), ``speed`` the least speed of the
+    segment, ``from`` the slowest point's distance from X (m; None where it does not turn),
+    and ``p``, ``P`` the names the steps give the foot and the slowest point."""
+    out = []
+    for f in feet_over(res):
+        none = lambda a: [None if s else v for v, s in zip(round_sig(a), f.still)]  # noqa: E731
+        out.append(
+            {
+                "key": f.key,
+                "x": f.x,
+                "y": f.y,
+                "P": foot_name(sol, f.key),
+                "p": foot_name(sol, f.key).lower(),
+                "t": none(f.t),
+                "foot": _flat(f.foot),
+                "speed": round_sig(np.where(f.speed <= f.noise, 0.0, f.speed)),  # (noise: 0)
+                "from": none(f.distance),
+            }
+        )
+    return out
+
+
+def _components(sc, res) -> list:
+    """Each ``ar_XY``, ``at_XY`` the answers ask, per frame: its key, kind and points, and its
+    values (omega^2 XY, |alpha| XY: :func:`..motion.link_points.pair_quantities`, m/s^2)."""
+    kinds = {key: (kind, names) for key, kind, names in asked_pairs(sc)}
+    return [
+        {
+            "key": key,
+            "kind": kinds[key][0],
+            "x": kinds[key][1][0],
+            "y": kinds[key][1][1],
+            "values": round_sig(np.broadcast_to(value, np.shape(res.theta))),
+        }
+        for key, unit, value, _ in pair_quantities(sc, res)
+        if kinds[key][0] != "vmin"
+    ]
+
+
 def page_style() -> dict:
     """The drawings' colours, widths (pt) and dashes (in line widths), as ``draw`` and
     ``sweep --plot`` have them (:mod:`polygon_method.draw.style`), for the page's script."""
     lines = {k: [c, w, list(d) if d else None] for k, (c, w, d) in STYLE.items()}
     lines["line"] = [LINE_STYLE[0], LINE_STYLE[1], list(LINE_STYLE[2])]
     lines["pitch"] = [PITCH_STYLE[0], PITCH_STYLE[1], list(PITCH_STYLE[2])]
+    lines["least"] = [LEAST_STYLE[0], LEAST_STYLE[1], list(LEAST_STYLE[2])]
     for kind, (c, w, _) in FORCE_STYLE.items():  # the forces' arrows, as the sheet's
         lines[kind] = [c, w, None]
     return {
@@ -271,6 +317,8 @@ def page_data(fr: Frames) -> dict:
         "sliders": sliders,
         "knees": _knees(res, links, n),  # where each centripetal component ends
         "guidePoints": _guide_points(res, sliders, n),  # the guide's point under a block
+        "least": _least(sol, res),  # vmin_XY asked: the foot p of op square to xy
+        "asked": _components(sc, res),  # ar_XY, at_XY asked: their values per frame
         "wheels": wheels,
         "rollLines": lines,
         **_motion(sc, res, moving, links, n),
@@ -316,10 +364,13 @@ def _sliders(sc) -> list:
 
 
 def _rolling_shapes(sol):
-    """``(wheels, lines)``: the pitch circles ([centre, radius]) and the fixed lines
+    """``(wheels, lines)``: the pitch circles ([centre, radius], a gear's [centre, radius,
+    words]: "pitch circle of the sun of 40 teeth about O") and the fixed lines
     wheels roll on ([point, point]), as the steps' shapes give them at the stated instant."""
     shapes = [sh for st in sol.plan.steps for sh in st.shapes(sol.P)]
-    wheels = [[sh[1], float(sh[2])] for sh in shapes if sh[0] == "circle"]  # pitch circles
+    wheels = [  # pitch circles (a gear's with its words: its tooltip)
+        [sh[1], float(sh[2]), *sh[3:]] for sh in shapes if sh[0] == "circle"
+    ]
     lines = [
         [[float(c) for c in sh[1]], [float(c) for c in sh[2]]]
         for sh in shapes

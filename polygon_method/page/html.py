@@ -25,6 +25,7 @@ from ..draw.style import (
     BODY_FACE,
     FORCE_STYLE,
     IMAGE_FACE,
+    LEAST_STYLE,
     LEGEND_NAMES,
     LINE_STYLE,
     STYLE,
@@ -126,10 +127,13 @@ def _swatch(color: str, width_pt: float, dashes, *, head: bool = False) -> str:
     )
 
 
-def legend_html(kinds=_KINDS) -> str:
-    """The legend of the colours and dashes, the same as ``draw``'s and the plots'."""
+def legend_html(kinds=_KINDS, least=False) -> str:
+    """The legend of the colours and dashes, the same as ``draw``'s and the plots'
+    (``least``: op square to xy, where a ``vmin_XY`` is asked)."""
     items = [_swatch(*STYLE[k], head=k != "relative") + escape(LEGEND_NAMES[k]) for k in kinds]
     items.append(_swatch(*LINE_STYLE) + "a path or a guide")
+    if least:
+        items.append(_swatch(*LEAST_STYLE) + "op square to xy: p, the slowest point's image")
     items.append(
         f'<span class="sw box" style="background:{BODY_FACE};border-color:'
         f'{BODY_EDGE}"></span>a link carrying a third point'
@@ -278,7 +282,7 @@ value, or tap it.</p>
 <div class="diagrams">
 {_figures_html(d)}
 </div>
-{legend_html(_KINDS if d["under"] else _KINDS[:4])}
+{legend_html(_KINDS if d["under"] else _KINDS[:4], bool(d["least"]))}
 <div class="columns">
 <div>
 <h2>Values at the current angle</h2>

@@ -237,7 +237,7 @@ function setup(phase) {
   if (phase === "configuration") {
     for (const [p, q, c] of D.plates) add(el(svg, "polygon", {class: "plate", fill: D.style.body[0], stroke: D.style.body[1]}, "plate:" + c), "plate", [p, q, c]);
     for (const s of D.sliders) if (s.u) add(el(svg, "line", styled("line"), "guide:" + s.key), "guide", s);
-    for (const w of D.wheels) add(el(svg, "circle", styled("pitch"), "pitch circle about " + w[0]), "pitch", w);
+    for (const w of D.wheels) add(el(svg, "circle", styled("pitch"), w[2] || "pitch circle about " + w[0]), "pitch", w);
     for (const l of D.rollLines) add(el(svg, "line", styled("line"), "the line a wheel rolls on"), "rollline", l);
     for (const [p, q, key] of D.links) add(el(svg, "line", {class: "link", stroke: D.style.body[1], id: "c-link-" + key}, "link:" + key), "link", [p, q, key]);
     for (const s of D.sliders) add(el(svg, "polygon", {class: "block", fill: D.style.body[0], stroke: D.style.body[1]}, "slider:" + s.key), "block", s);
@@ -278,6 +278,12 @@ function setup(phase) {
       if (v === "a") add(el(svg, "line", styled("coriolis", {"marker-end": head("coriolis")}), "coriolis:" + s.key), "coriolis", s);
       add(el(svg, "circle", {class: "point", r: r3(FS * 0.12)}, "under:" + s.key), "underdot", s);
       add(text(svg, {class: "label image-label"}, D.under[s.key] + (v === "a" ? "'" : ""), "under:" + s.key), "underlabel", s);
+    }
+    if (v === "v") for (const l of D.least) {  // vmin_XY asked: op square to xy, its foot p
+      add(el(svg, "line", styled("least", {id: "v-least-op-" + l.key}), "least:" + l.key), "leastop", l);
+      add(el(svg, "line", styled("least", {id: "v-least-ext-" + l.key}), "least:" + l.key), "leastext", l);
+      add(el(svg, "circle", {class: "point", r: r3(FS * 0.1), id: "v-least-dot-" + l.key}, "least:" + l.key), "leastdot", l);
+      add(text(svg, {class: "label image-label", id: "v-least-lab-" + l.key}, l.p, "least:" + l.key), "leastlabel", l);
     }
     for (const p of D.points) add(el(svg, "line", styled("absolute", {id: v + "-abs-" + p, "marker-end": head("absolute")}), "abs:" + p), "abs", p);
     add(el(svg, "circle", {class: "point pole", r: r3(FS * 0.14), cx: 0, cy: 0}, "pole:" + phase), "poledot", null);
@@ -342,6 +348,15 @@ function update(phase, k) {
       const L = Math.hypot(sx, sy);
       pole = [e, L > TOL.same ? Math.atan2(-sy, -sx) : 0.75 * Math.PI];  // (placed first)
     } else if (kind === "label") labels.push([e, P(x)]);
+    else if (kind.startsWith("least")) {  // p, the foot of op square to xy, as the data gives it
+      const f = footAt(x, k), t = x.t[k], show = f !== null && (kind !== "leastext" || t < 0 || t > 1);
+      e.style.display = show ? "" : "none";
+      if (!show) continue;
+      if (kind === "leastop") line(e, [0, 0], C(f));
+      else if (kind === "leastext") line(e, P(t < 0 ? x.x : x.y), C(f));
+      else if (kind === "leastdot") dot(e, C(f));
+      else labels.push([e, C(f)]);
+    }
     else if (kind === "inertia") arrowAt(e, x.H, x.F, k, 0.5);  // on its line h from G
     else if (kind === "force") { arrowAt(e, x.at, x.F, k, 0.3); if (!forcesOn()) e.style.display = "none"; }
     else if (kind === "icouple") coupleAt(e, x.G, x.C, k);
@@ -352,6 +367,14 @@ function update(phase, k) {
     }
   }
   placeLabels(labels, phase, v.box, pole);
+}
+// the foot p of a vmin_XY asked at frame k (SI), or null: the link does not turn there (no
+// foot), or p lies farther than a quarter of the polygon's size beyond it (as draw leaves it:
+// the values and the steps say where)
+function footAt(l, k) {
+  if (l.t[k] === null) return null;
+  const f = pair(l.foot, k), b = bbox(vertices("velocity", k)), room = span(b) / 4;
+  return f[0] < b[0] - room || f[0] > b[2] + room || f[1] < b[1] - room || f[1] > b[3] + room ? null : f;
 }
 // a force's arrow from its point of application, at the forces' scale (cm of the panel);
 // its numbers (SI, every bit) kept on the element, as drawn, for a reader or a test
@@ -477,6 +500,9 @@ function valuesRows(k) {  // [id, name (HTML), value]
     const c = Math.hypot(D.S[s][2][k], D.S[s][3][k]);
     if (c > 0) rows.push(["ac-" + s, "Coriolis component at " + esc(s), fmt(c) + " m/s²"]);
   }
+  for (const c of D.asked) rows.push(["asked-" + c.key, esc(c.key) + " (" + (c.kind === "ar" ? "radial, ω²·" : "tangential, α·") +
+    esc(two(c.x, c.y)) + ")", fmt(c.values[k]) + " m/s²"]);
+  for (const l of D.least) rows.push(["least-" + l.key, esc(l.key) + " (the slowest point " + esc(l.P) + " of " + esc(two(l.x, l.y)) + ")", leastWords(l, k)]);
   if (D.torque) rows.push(["torque", "input torque", angular(D.torque[k], "N m")]);
   if (D.condition) {
     const c = D.condition[k], why = D.stepLabels[D.conditionStep[k]];
@@ -493,6 +519,17 @@ function buildValues() {
     tr.lastChild.id = "val-" + id;
     body.appendChild(tr);
   }
+}
+// the least speed of segment XY at frame k, and where (its distance from X), as the data says
+// two names as one, as the steps join them: "AB", "O2-A" where a name is longer than a letter
+const two = (a, b) => a.length === 1 && b.length === 1 ? a + b : a + "-" + b;
+function leastWords(l, k) {
+  const xy = two(l.x, l.y);
+  if (l.t[k] === null) return fmt(l.speed[k]) + " m/s: " + xy + " does not turn, every point of it moves alike";
+  const at = two(l.x, l.P) + " = " + fmt(l.from[k] / D.unit) + " " + D.units;
+  if (l.t[k] >= 0 && l.t[k] <= 1) return fmt(l.speed[k]) + " m/s at " + at;
+  return fmt(l.speed[k]) + " m/s at the end " + (l.t[k] < 0 ? l.x : l.y) + " (" + l.p + " falls beyond " +
+    D.images[l.t[k] < 0 ? l.x : l.y] + ")";
 }
 function tipText(tip, k) {
   if (!tip.includes(":")) return tip;
@@ -526,6 +563,12 @@ function tipText(tip, k) {
     const L = Math.hypot(b[0] - a[0], b[1] - a[1]);
     return kind === "cen" ? "centripetal a_" + q + p + " = ω²·" + p + q + " = " + fmt(w * w * L) + " m/s²"
       : "tangential a_" + q + p + " = α·" + p + q + " = " + fmt(Math.abs(al) * L) + " m/s²";
+  }
+  if (kind === "least") {
+    const l = D.least.find((x) => x.key === name), f = pair(l.foot, k);
+    const op = l.t[k] === null ? "" : "; o" + l.p + " = " + fmt(Math.hypot(f[0], f[1])) + " m/s, o" + l.p + " square to " +
+      two(D.images[l.x], D.images[l.y]) + (l.t[k] < 0 || l.t[k] > 1 ? " produced" : "");
+    return name + " = " + leastWords(l, k) + op;
   }
   if (kind === "plate" || kind === "image") return "point " + name + " on its link: " + tipText("abs:" + name, k);
   if (kind === "pole") return (name === "velocity" ? "o" : "o'") + ": the pole, image of every fixed point (zero " + (name === "velocity" ? "velocity)" : "acceleration)");
@@ -581,9 +624,11 @@ document.addEventListener("click", (ev) => {
 // ---------------------------------------------------------------- sweep plots
 // each series: [name as SVG text parts [base, subscript], f(k)]
 const PLOTS = [
-  ["plot-v", "speeds of the points", "speed (m/s)", () => D.points.map((p) => [["v", p], (k) => pointValues(p, k).v])],
+  ["plot-v", "speeds of the points", "speed (m/s)", () => D.points.map((p) => [["v", p], (k) => pointValues(p, k).v])
+    .concat(D.least.map((l) => [["v", "min," + two(l.x, l.y)], (k) => l.speed[k]]))],
   ["plot-w", "angular velocities of the links", "ω (rad/s, ccw +)", () => D.links.map(([, , key]) => [["ω", key], (k) => D.W[key][k]])],
-  ["plot-a", "accelerations of the points", "acceleration (m/s²)", () => D.points.map((p) => [["a", p], (k) => pointValues(p, k).a])],
+  ["plot-a", "accelerations of the points", "acceleration (m/s²)", () => D.points.map((p) => [["a", p], (k) => pointValues(p, k).a])
+    .concat(D.asked.map((c) => [[c.key.slice(0, 2), c.key.slice(3)], (k) => c.values[k]]))],
 ];
 function roundTicks(lo, hi, most) {  // round ticks (1, 2, 5 x 10^k apart) over [lo, hi]
   const step = roundUp((hi - lo) / most), out = [];

@@ -6,6 +6,7 @@ an unknown key gets a "did you mean" hint. A decimal comma is read as a point.""
 from __future__ import annotations
 
 import math
+import re
 
 from ..common.errors import printable
 from ..common.units import UNITS, decimal_comma
@@ -19,6 +20,9 @@ __all__ = [
     "ENGINE_PER_PISTON",
     "under_block_names",
 ]
+
+#: a centre answered as at infinity, optionally with the direction of its lines
+_INFINITY = re.compile(r"^\s*(?:at\s+)?infinity\s*(?:[,;]\s*(?:along\s+)?(.*?))?\s*$", re.I)
 
 #: the engine chapter's answer keys -> their unit kind (checked in check/engine.py)
 ENGINE_ANSWERS = {
@@ -185,6 +189,11 @@ class _Answers:
                 "answers",
                 key,
             )
+        pair = tuple(parts) if named else tuple(sorted(int(p) for p in parts))
+        if isinstance(value, str):  # "at infinity", or with the direction of its lines
+            return Answer(
+                key, "centre", pair, self.centre_at_infinity(key, value), None, value, line
+            )
         if not (
             isinstance(value, list)
             and len(value) == 2
@@ -194,13 +203,13 @@ class _Answers:
             )
         ):
             raise self.error(
-                f"a centre's answer is its position [x, y] in {self.unit}, got {value!r}",
+                f"a centre's answer is its position [x, y] in {self.unit}, or \"at "
+                f'infinity" ("at infinity, 90 deg": the direction of its lines), got {value!r}',
                 "answers",
                 key,
             )
         for v in value:  # [1e300, 0]: a units slip, never an error of 1e299 per cent
             self.length(v, "answers", key, positive=False)
-        pair = tuple(parts) if named else tuple(sorted(int(p) for p in parts))
         u = self.scale()
         return Answer(
             key,
@@ -211,6 +220,26 @@ class _Answers:
             f"[{value[0]:g}, {value[1]:g}] {self.unit}",
             line,
         )
+
+    def centre_at_infinity(self, key, value) -> tuple:
+        """``("infinity", direction)`` of a centre answered as at infinity: ``"at infinity"``
+        (the direction not stated: None) or ``"at infinity, 90 deg"``, ``"..., vertical"``
+        (the direction of the parallel lines it is the meeting point of, rad, mod pi)."""
+        m = _INFINITY.match(value)
+        if m is None:
+            raise self.error(
+                f'{value!r}: a centre is [x, y] in {self.unit}, or "at infinity" (with the '
+                'direction of its lines: "at infinity, 90 deg", "at infinity, vertical")',
+                "answers",
+                key,
+            )
+        d = (m.group(1) or "").strip().lower()
+        if not d:
+            return ("infinity", None)
+        if d in ("horizontal", "vertical"):
+            return ("infinity", 0.0 if d == "horizontal" else math.pi / 2)
+        q = self.qty(d, "angle", "answers", key, default_unit="deg")
+        return ("infinity", q.value % math.pi)
 
     def answer_keys(self, known, slider_names, pin_names, loads) -> list:
         """Every answer key this scene can check (for a did-you-mean)."""

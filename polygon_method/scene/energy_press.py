@@ -145,8 +145,8 @@ class _PressReader:
                 raise self.err("holes_per_minute = a positive number", t, "holes_per_minute")
             period = 60.0 / n
         words.append(f"one cycle {period:.6g} s")
-        ways = ("punching_time", "punching_angle", "punching_fraction", "stroke")
-        given = [k for k in ways if k in spec]
+        keys = ("punching_time", "punching_angle", "punching_fraction", "stroke")
+        given = [k for k in keys if k in spec]
         if len(given) != 1:
             raise self.err(
                 "how long the punching takes: punching_time (s), punching_angle (of the "
@@ -156,14 +156,17 @@ class _PressReader:
                 given[1] if given else "punching_time",
             )
         key = given[0]
-        if key == "stroke":  # the punch's stroke half a turn; the plate's thickness of it
+        if key == "stroke":  # the books' t / (2 s): down its stroke in half a turn
             if "thickness" not in spec:
-                raise self.err("stroke: the punching time needs the plate's thickness", t, key)
+                raise self.err("the punch's stroke needs the plate's thickness", t, key)
             th = self.ld.length(spec["thickness"], t, "thickness")
-            f = th / (2 * self.ld.length(spec[key], t, key))
+            stroke = self.ld.length(spec[key], t, key)
+            f = th / (2.0 * stroke)
             words.append(
-                "the punch's stroke half the crank's turn, the plate's thickness of it "
-                "punched: t / (2 s) of the cycle"
+                f"the punching t / (2 s) = {th * 1e3:.6g} mm / (2 x {stroke * 1e3:.6g} mm) "
+                "of the cycle (the "
+                "punch goes down its stroke in half a turn, through the plate's thickness "
+                "of it at a uniform rate: the books' assumption)"
             )
         elif key == "punching_time":
             f = self._seconds(spec[key], t, key) / period

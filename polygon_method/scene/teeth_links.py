@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from ..common.tolerances import SAME
 from .names import split_name
-from .teeth import _agree, _count, _module, table_module
+from .teeth import _agree, _count, _module, formula, table_module
 
 
 def links_from_teeth(rd, index, ground):
@@ -46,7 +46,7 @@ def links_from_teeth(rd, index, ground):
             added.append((key, *pts, radius[pair]))
             rd.read_notes.append(
                 f"[links] {key} not given: its length the pitch radius from the teeth, "
-                f"m z / 2 = {mod[0] * 1e3:.6g} x {z} / 2 = {_say(rd, radius[pair])}"
+                f"{' = '.join(formula(mod[0], mod[2], z))} = {_say(rd, radius[pair])}"
             )
         elif z is not None:
             raise rd.error(
@@ -56,7 +56,8 @@ def links_from_teeth(rd, index, ground):
                 "rolling",
                 key,
             )
-    drivers = _drivers(rd, entries, index, table)
+    racks = [(k, s, ()) for k, s in raw.items() if isinstance(s, dict) and len(split_name(k)) == 1]
+    drivers = _drivers(rd, entries + racks, index, table)
     for key, p, q, r in drivers:
         radius[frozenset((p, q))] = r
     return _arms(rd, entries, (index, radius, table, ground)) + drivers + added
@@ -64,7 +65,8 @@ def links_from_teeth(rd, index, ground):
 
 def _drivers(rd, entries, index, table):
     """The gears named only by ``on`` with ``on_teeth`` and a module (a driving gear with
-    no [rolling] entry of its own), left out of [links]: (key, p, q, m z / 2)."""
+    no [rolling] entry of its own, a rack's pinion), left out of [links]: (key, p, q, m z /
+    2)."""
     wheels = {frozenset(split_name(k)) for k, _, _ in entries}
     out = {}
     for key, spec, _ in entries:
@@ -78,7 +80,7 @@ def _drivers(rd, entries, index, table):
             out[pair] = (on, *pts, mod[0] * zo / 2)
             rd.read_notes.append(
                 f"[links] {on} not given: its length the pitch radius from the teeth, "
-                f"m z / 2 = {mod[0] * 1e3:.6g} x {zo} / 2 = {_say(rd, out[pair][3])}"
+                f"{' = '.join(formula(mod[0], mod[2], zo))} = {_say(rd, out[pair][3])}"
             )
     return list(out.values())
 
@@ -122,7 +124,32 @@ def _arms(rd, entries, known):
                 f"distance of {key} and the gear it meshes with, from the teeth: {how} = "
                 f"{_say(rd, d)}"
             )
+    _no_arm(rd, entries, (index, arms, held, ground))
     return list(arms.values())
+
+
+def _no_arm(rd, entries, known):
+    """Refused: a planet on a fixed circle given by its teeth, neither the circle's size
+    (on_teeth, on_radius) nor its arm stated, nor the arm made from another pair's teeth:
+    nothing fixes the centre distance (it was refused as '[input] crank: no link OA')."""
+    index, arms, held, ground = known
+    for key, spec, (a, _) in entries:
+        o = spec.get("on")
+        if not isinstance(o, str) or o not in ground or a in ground or a in held:
+            continue  # (a wheel on a gear or a line, its centre fixed or held by a link)
+        arm = frozenset((o, a))
+        if "teeth" not in spec or "on_teeth" in spec or "on_radius" in spec:
+            continue
+        if arm in index or arm in arms:
+            continue
+        name = f"{o}{a}" if split_name(f"{o}{a}") == (o, a) else f"{o}-{a}"
+        raise rd.error(
+            f"the arm {name} is not in [links] and the circle about {o} has no on_teeth or "
+            f"on_radius: nothing fixes their centre distance: give on_teeth (its teeth) or "
+            f"{name} in [links]",
+            "rolling",
+            key,
+        )
 
 
 def _base(rd, key, spec, known):

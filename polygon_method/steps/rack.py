@@ -30,6 +30,7 @@ from ..common.errors import SceneError
 from ..common.numbers import in_units
 from ..common.tolerances import LEAST_REACH, NO_RADIUS, SAME
 from .base import Construction, DirectionLine, Step, Vector, absolute, image_label
+from ..scene.teeth import formula
 from .rolling_dims import angle_of, turned
 from .rounding import EPS, line_rounding
 
@@ -105,6 +106,7 @@ def recognise(g, name):
         unit=g.unit,
         uname=g.uname,
         pressure_angle=pr.pressure_angle,
+        teeth=pr.teeth,
     )
 
 
@@ -124,6 +126,8 @@ class RackStep(Step):
     #: the teeth's pressure angle (rad) the scene states, or None (the force analysis'
     #: default, 20 deg)
     pressure_angle: float | None = None
+    #: the pinion given by its teeth: (None, its teeth, the module m), or None
+    teeth: tuple | None = None
 
     kind = "rack"
 
@@ -145,7 +149,13 @@ class RackStep(Step):
 
     @property
     def title(self):
-        return f"rack {self.point} on the pinion {self.base}"
+        return f"rack {self.point} on {self._pinion}"
+
+    @property
+    def _pinion(self):
+        """``the pinion O1-A``, ``the pinion O1-A of 20 teeth`` where its teeth are given."""
+        of = f" of {self.teeth[1]} teeth" if self.teeth and self.teeth[1] else ""
+        return f"the pinion {self.base}{of}"
 
     @property
     def params(self):
@@ -325,8 +335,13 @@ class RackStep(Step):
     def position_words(self, L, which, angle_deg):
         return (
             f"{self.point}: the rack's point, on its pitch line at {L(abs(self.dims[4]))} "
-            f"from {self.base_centre}, moved along it as far as the pinion {self.base} "
-            "rolls it"
+            f"from {self.base_centre}"
+            + (
+                f" ({' = '.join(formula(self.teeth[2], self.teeth[3], self.teeth[1]))})"
+                if self.teeth
+                else ""
+            )
+            + f", moved along it as far as {self._pinion} rolls it"
         )
 
     def construction(self, sol, ph):

@@ -42,8 +42,10 @@ from ..common.tolerances import LEAST_REACH
 from ..common.errors import AssemblyError, SceneError
 from ..common.numbers import sense_word
 from .rolling_contact import RollingContact, circle_rates, line_rates, rim_motion
-from ..scene.teeth import pitch_words
+from . import rolling_words as words
 from .rolling_dims import GAP, arm_rate, follow_params, pair_of, rate, turned, wheel_params
+from .rolling_dims import placed_teeth
+from ..scene.teeth import gear_label
 from .base import (
     Construction,
     Step,
@@ -98,6 +100,8 @@ def recognise(g, name):
     prm = wheel_params(
         sc, g.bodies, pr, kd_rate=kd_rate, kb_rate=kb_rate, P=g.P, base_free=base_free
     )
+    teeth = placed_teeth(g, pr, prm[2])  # (its gear's teeth found once placed: named by them)
+    where = pr.label if teeth is pr.teeth else gear_label(pr, teeth[1], sc.rolling)
     follow = None
     if base_free is not None:  # a gear that is a wheel whose angle follows its arm: its turn
         bst = next((s for s in g.steps if pr.base in s.links), None)  # from its formula
@@ -115,7 +119,7 @@ def recognise(g, name):
         pr.centre,
         name,
         pr.on,
-        pr.label,
+        where,
         prm,
         base=pr.base,
         base_centre=O,
@@ -129,7 +133,7 @@ def recognise(g, name):
         uname=g.uname,
         pressure_angle=pr.pressure_angle,
         grip=pr.grip,
-        teeth=pr.teeth,
+        teeth=teeth,
     )
 
 
@@ -206,11 +210,9 @@ class RollingWheel(RollingContact, Step):
 
     @property
     def title(self):
-        """``wheel CA rolling on the line ...``, or a ring's ``ring ... meshing with ... inside
-        it``."""
-        if self.ring:
-            return f"ring {self.wheel} meshing with {self.where} inside it"
-        return f"wheel {self.wheel} rolling on {self.where}"
+        """``wheel CA rolling on the line ...``, ``planet AP of 24 teeth meshing with the sun
+        of 40 teeth about O`` (:func:`.rolling_words.title`)."""
+        return words.title(self)
 
     @property
     def params(self):
@@ -499,57 +501,8 @@ class RollingWheel(RollingContact, Step):
         return "above"
 
     def position_words(self, L, which, angle_deg):
-        """The step table's words for its position: how far the wheel has turned and why (one over r
-        per unit of the centre's travel, the gear ratio, or the arm's and the gear's turns)."""
-        r, ell = self.dims[1], self.dims[0]
-        phi = math.degrees(self.dims[6] if self.on == "line" else self.dims[5])
-        phi = round(phi, 9) + 0.0  # -7e-15 deg is 0 (rounding), as the table prints it
-        if self.on == "line":
-            how = "the wheel turns 1/r rad for each unit its centre moves along the line"
-        elif self.theta_rate is not None:
-            how = f"the wheel turns {self.dims[7]:.4g} times the crank's angle, by the gear ratio"
-        else:
-            kd, kb = self.dims[3], self.dims[4]
-            how = (
-                "no slip relative to the arm: the wheel turns "
-                + (
-                    f"{kd:.4g} times the line of centres {self.base_centre}{self.centre}"
-                    if kd
-                    else ""
-                )
-                + (" and " if kd and kb and self.base else "")
-                + (f"{kb:.4g} times the gear {self.base}" if kb and self.base else "")
-            )
-        rad = pitch_words(self.teeth, r, L)  # "radius m z / 2 = ..." for a gear by its teeth
-        what = (
-            f"the ring {self.wheel} ({'' if self.teeth else 'pitch '}{rad}) meshes with {self.where} inside it"
-            if self.ring
-            else f"the wheel {self.wheel} ({rad}) rolls without slipping on {self.where}"
-        )
-        return (
-            f"{self.rim}: {what}; from {self.centre} draw {self.centre}{self.rim} = {L(ell)} at "
-            f"{phi:.4g} deg ({how})"
-        )
-
-    def _omega_words(self, sol, w, vI):
-        """How omega follows from no slip at the contact I, in the book's words."""
-        C, W, r = self.centre, self.wheel, self.dims[1]
-        sense = f"{abs(w):.4g} rad/s {sense_word(w)}".rstrip()  # (nought: no sense)
-        if self.on != "gear":
-            return (
-                f"no slip: the wheel's point at the contact I with {self.where} is at rest, "
-                f"so I is the wheel's instantaneous centre and omega_{W} = v_{C} / {C}I = "
-                f"{math.hypot(*sol.V[C]):.4g} / {r:.4g} = {sense}"
-            )
-        O = self.base_centre
-        moving = math.hypot(*sol.V[O]) > 0.0
-        return (
-            "equal velocities at the pitch point (no slip): the wheel's point at I moves as "
-            "the gear's, v_I = "
-            + (f"v_{O} + " if moving else "")
-            + f"omega_{self.base} x {O}I = {math.hypot(*vI):.4g} m/s; "
-            f"omega_{W} = (v_I - v_{C}) / {C}I, perpendicular to {C}I, = {sense}"
-        )
+        """The step table's words for its position (:func:`.rolling_words.position_words`)."""
+        return words.position_words(self, L)
 
     def construction(self, sol, ph):
         """What it draws on the ``ph`` polygon: the centre's vector, the rim point's relative to it
@@ -562,7 +515,7 @@ class RollingWheel(RollingContact, Step):
         if ph == "velocity":
             V = sol.V
             text = (
-                self._omega_words(sol, w, vI) + f"; from {pole_text(sol, C, ph)} draw "
+                words.omega_words(self, sol, w, vI) + f"; from {pole_text(sol, C, ph)} draw "
                 f"{lab(C)}{lab(X)} perpendicular to {C}{X} = omega x {C}{X} = "
                 f"{abs(w) * self.dims[0]:.4g} m/s"
             )

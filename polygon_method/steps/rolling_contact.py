@@ -14,6 +14,7 @@ import math
 from ..common.numbers import in_units
 from .construction import sub
 from .relations import rigid_acceleration, rigid_velocity
+from .rolling_words import circle_words
 
 __all__ = ["line_rates", "circle_rates", "rim_motion", "RollingContact"]
 
@@ -110,13 +111,15 @@ class RollingContact:
 
     def shapes(self, P):
         """The wheel's pitch circle, what it rolls on (a circle, or the ground line hatched
-        on the far side) and the contact point."""
+        on the far side) and the contact point; a gear's circles also say whose they are,
+        by the teeth."""
         I, (mx, my) = self.contact(P)
-        out = [("circle", self.centre, self.dims[1])]
+        own, base = circle_words(self)  # a gear's by its teeth (the page's tooltips), or ()
+        out = [("circle", self.centre, self.dims[1]) + own]
         if self.on == "line":
             out.append(("ground line", I, (-my, mx), (mx, my)))
         else:
-            out.append(("circle", self.base_centre, self.dims[2]))
+            out.append(("circle", self.base_centre, self.dims[2]) + base)
         out.append(("contact", I))
         return tuple(out)
 
@@ -128,7 +131,9 @@ class RollingContact:
                 self.base or "ground",
                 self.wheel,
                 I,
-                f"the contact of {self.wheel} rolling on {self.where} (no slip)",
+                f"the pitch point of {self.wheel} meshing with {self.where} (no slip)"
+                if self.teeth
+                else f"the contact of {self.wheel} rolling on {self.where} (no slip)",
             ),
         )
 

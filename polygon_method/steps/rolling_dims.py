@@ -10,6 +10,7 @@ import math
 from ..common.errors import AssemblyError, SceneError
 from ..common.numbers import in_units
 from ..common.tolerances import SAME
+from ..scene import teeth as by_teeth
 
 __all__ = [
     "GAP",
@@ -21,6 +22,8 @@ __all__ = [
     "turned",
     "wheel_params",
     "follow_params",
+    "gear_teeth",
+    "placed_teeth",
 ]
 
 #: how far (relative to the radii) a wheel's centre may leave its line or pitch circle
@@ -152,6 +155,7 @@ def wheel_params(scene, bodies, pr, *, s0=None, kd_rate=0.0, kb_rate=0.0, P=None
             key=where,
             file=scene.file,
         )
+    _whole_gear(scene, pr, R, dist, where)
     kd, kb = 1.0 + e * R / r, -e * R / r
     dx, dy = C0[0] - O[0], C0[1] - O[1]
     g = 1.0 if ring else e  # towards the contact: I - C = -g r (C - O) / |C - O|
@@ -163,6 +167,38 @@ def wheel_params(scene, bodies, pr, *, s0=None, kd_rate=0.0, kb_rate=0.0, P=None
         beta0 = angle_of(qx - bx, qy - by)
     K = kd * (kd_rate or 0.0) + kb * (kb_rate or 0.0)
     return (ell, r, R, kd, kb, phi0, inp.angle, K, O[0], O[1], psi0, beta0)
+
+
+def gear_teeth(scene, pr, R, dist):
+    """(z, words) of the gear a wheel given by its teeth and a module meshes with, its
+    radius ``R`` from the centre distance ``dist`` at the stated instant (neither its teeth
+    nor its radius stated, nor the distance fixed by the scene: :func:`placed_teeth`);
+    None where the scene states them (or gives no module)."""
+    teeth = getattr(pr, "teeth", None)
+    if not teeth or teeth[2] is None or teeth[1] is not None or pr.base_radius is not None:
+        return None
+    u = scene.length_unit
+    return by_teeth.placed_teeth(pr, R, dist, lambda x: f"{in_units(x, u)} {scene.units}")
+
+
+def placed_teeth(g, pr, R):
+    """The teeth of pair ``pr`` (its own, its gear's, the module) as the compiler ``g``
+    places it; its gear's found from the centre distance at the stated instant where the
+    scene could not fix them, said in a note of the plan."""
+    found = gear_teeth(g.scene, pr, R, math.dist(g.P[pr.centre], g.P[pr.base_centre]))
+    if found is None:
+        return pr.teeth
+    if found[1] not in g.notes:
+        g.notes.append(found[1])
+    return (pr.teeth[0], found[0], *pr.teeth[2:])
+
+
+def _whole_gear(scene, pr, R, dist, where):
+    """Refused where the gear a wheel meshes with, its radius from the centre distance at
+    the stated instant, would have teeth that are no whole number of the module."""
+    found = gear_teeth(scene, pr, R, dist)
+    if found is not None and found[0] is None:
+        raise SceneError(found[1], key=where, file=scene.file)
 
 
 def _centres(scene, pr, P, kd_rate, base_free, where):

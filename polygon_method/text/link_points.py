@@ -7,9 +7,10 @@ values are :mod:`polygon_method.motion.link_points`')."""
 from __future__ import annotations
 
 from ..common.numbers import fmt
-from ..motion.link_points import asked_pairs, components, least_speed
+from ..motion.link_points import asked_pairs, components, least_speed, pair_bounds
+from ..solver.errorbound import SHOWN
 
-__all__ = ["pair_lines", "pair_items", "foot_name"]
+__all__ = ["pair_lines", "pair_items", "foot_name", "pair_shown_bounds"]
 
 
 def _len(sol, metres: float) -> str:
@@ -22,16 +23,24 @@ def _two(x: str, y: str) -> str:
     return x + y if len(x) == len(y) == 1 else f"{x}-{y}"
 
 
-def foot_name(sol) -> str:
-    """The slowest point's name, as the books call it (P), or a letter the scene leaves free."""
-    return next((n for n in "PFMNQKZ" if n not in sol.scene.point_names), "P'")
+def foot_name(sol, key=None) -> str:
+    """The slowest point's name, as the books call it (P), or a letter the scene leaves free;
+    where several ``vmin`` keys are asked, ``key``'s own: the first P, the next the next free
+    letter (F, M, N, ...), so that no two feet share a name on one polygon."""
+    taken = set(sol.scene.point_names)
+    least = [k for k, kind, _ in asked_pairs(sol.scene) if kind == "vmin"]
+    i = least.index(key) if key in least else 0
+    free = [n for n in "PFMNQKZ" if n not in taken]
+    free += [f"P{j}" for j in range(1, len(least) + len(taken) + 2) if f"P{j}" not in taken]
+    return free[i]
 
 
 def _least_words(sol, key, x, y, construction=False, scale=None) -> str:
     """The least speed on segment XY: where, and how much (with the construction)."""
     ls = least_speed(sol, x, y)
     b, c = x.lower(), y.lower()  # their images
-    P, p = foot_name(sol), foot_name(sol).lower()
+    P = foot_name(sol, key)
+    p = P.lower()
     if ls.where == "translating":
         return (
             f"{key} = {fmt(ls.speed, 4)} m/s: {_two(x, y)} does not turn (omega_{ls.link} = 0), so "
@@ -100,3 +109,20 @@ def pair_items(sol, vscale) -> list[str]:
         else _component_words(sol, key, kind, x, y)
         for key, kind, (x, y) in asked_pairs(sol.scene)
     ]
+
+
+#: the numbers of an asked key's record that solve's text shows, by the words it lists them in
+_SHOWN_PARTS = {"value": "{0}", "foot_speed": "{0}: op", "distance": "{0}: where along"}
+
+
+def pair_shown_bounds(sol) -> list:
+    """(quantity, bound) of the asked keys' numbers whose bound exceeds ``SHOWN`` (the
+    value; for ``vmin`` op and the slowest point's distance along XY, relative to the
+    positions' size), for ``solve``'s lines of estimated errors."""
+    out = []
+    for key, kind, (x, y) in asked_pairs(sol.scene):
+        b = pair_bounds(sol, kind, x, y)
+        for part, words in _SHOWN_PARTS.items():
+            if part in b and b[part] > SHOWN:
+                out.append((words.format(key), b[part]))
+    return out

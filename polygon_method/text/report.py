@@ -6,7 +6,7 @@ import math
 
 from ..solver.errorbound import NO_BOUND, SHOWN, USELESS, shown_bounds
 from .forces import forces_lines
-from .link_points import pair_lines
+from .link_points import pair_lines, pair_shown_bounds
 from ..solver.given import stated
 from ..common.numbers import fmt, fmt_angular, sense
 from ..motion.solution import Solution, tidied
@@ -291,7 +291,8 @@ def _plan_lines(sol: Solution) -> list[str]:
 def _bound_lines(sol: Solution) -> list[str]:
     """The estimated error bounds above the shown threshold, the largest first, at most
     ``SHOWN_LINES`` of them (nothing when none is above it)."""
-    bounds = shown_bounds(sol, sol.error_bounds)
+    bounds = shown_bounds(sol, sol.error_bounds) + pair_shown_bounds(sol)
+    bounds.sort(key=lambda t: -t[1])  # (vmin_BC ... where asked, among the others)
     if not bounds:
         return []
     lines = [

@@ -65,11 +65,12 @@ def _rolling_sentence(sc, r) -> str:
             f"The block {r.rim} is a rack meshing with {r.label}; its point is at "
             f"{_at(sc, sc.slider(r.rim).through)} at the instant shown."
         )
-    if r.on == "gear":
+    if r.teeth:  # gears by their teeth, as a book says them
+        what = _gear_sentence(sc, r)
+    elif r.on == "gear":
         what = (
             f"The {'ring gear' if r.ring else 'gear'} {r.wheel} (centre {r.centre}, "
-            + (f"{r.teeth[0]} teeth, " if r.teeth and r.teeth[0] else "")
-            + f"pitch radius {_len(sc, r.radius)}) meshes {'internally ' if r.inside else ''}with "
+            f"pitch radius {_len(sc, r.radius)}) meshes {'internally ' if r.inside else ''}with "
             f"{r.label}" + (" inside it" if r.ring else "")
         )
     else:
@@ -79,13 +80,11 @@ def _rolling_sentence(sc, r) -> str:
             else f"{'inside' if r.inside else 'outside'} {r.label}"
         )
         what = (
-            f"The wheel {r.wheel} (centre {r.centre}, "
-            + (f"{r.teeth[0]} teeth, " if r.teeth and r.teeth[0] else "")
-            + f"radius {_len(sc, r.radius)}) "
-            f"rolls without slipping {on}"
+            f"The wheel {r.wheel} (centre {r.centre}, radius {_len(sc, r.radius)}) rolls "
+            f"without slipping {on}"
         )
     if r.base_radius:
-        what += f" (radius {_len(sc, r.base_radius)})"
+        what += f" ({'pitch ' if r.teeth else ''}radius {_len(sc, r.base_radius)})"
     return (
         what
         + (
@@ -96,6 +95,35 @@ def _rolling_sentence(sc, r) -> str:
         + "."
         + _grip_sentence(r)
     )
+
+
+def _gear_sentence(sc, r) -> str:
+    """A gear given by its teeth: ``The planet AP of 24 teeth (centre A, pitch radius 60 mm)
+    meshes with the sun of 40 teeth about O``; a ring ``The ring gear O-Q of 88 teeth
+    (...) meshes internally with the gear AP of 24 teeth inside it``."""
+    noun = "ring gear" if r.ring else "planet" if r.on == "circle" else "gear"
+    return (
+        f"The {noun} {r.wheel} of {r.teeth[0]} teeth (centre {r.centre}, pitch radius "
+        f"{_len(sc, r.radius)}) meshes {'internally ' if r.inside else ''}with {r.label}"
+        + (" inside it" if r.ring else "")
+    )
+
+
+def _module_sentence(rolling) -> list:
+    """The gears' module, where they are given by their teeth and one: ``The module is 5
+    mm.``, ``The diametral pitch is 10 per inch.`` (each gear's where they differ)."""
+    said = {r.wheel: _module_words(*r.teeth[2:]) for r in rolling if r.teeth and r.teeth[2]}
+    if not said:
+        return []
+    if len(set(said.values())) == 1:
+        what, value = next(iter(said.values()))
+        return [f"The {what} is {value}."]
+    return ["The gears' " + ", ".join(f"{w}: {a} {v}" for w, (a, v) in said.items()) + "."]
+
+
+def _module_words(m, P):
+    """(``module``, ``5 mm``) or (``diametral pitch``, ``10 per inch``)."""
+    return ("module", f"{fmt(m * 1e3)} mm") if P is None else ("diametral pitch", f"{P:g} per inch")
 
 
 def _grip_sentence(r) -> str:
@@ -128,6 +156,7 @@ def _shape_sentences(sc) -> list:
         out.append(f"Point {cp.name}: {cp.how}.")  # "on BC, 40 mm from B"
     out += [t for t in (_slider_sentence(sc, s) for s in sc.blocks) if t is not None]
     out += [_rolling_sentence(sc, r) for r in getattr(sc, "rolling", ())]
+    out += _module_sentence(getattr(sc, "rolling", ()))
     for p, hint in sc.assembly.items():
         where = _SIDE.get(hint, hint) if isinstance(hint, str) else f"near {_at(sc, hint)}"
         out.append(f"Of its two positions, {p} is the one {where}.")
