@@ -6,9 +6,10 @@ an unknown key gets a "did you mean" hint. A decimal comma is read as a point.""
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
-from ..common.errors import printable
-from ..common.units import UNITS, decimal_comma
+from ..common.errors import SceneError, printable
+from ..common.units import UNITS, decimal_comma, question, question_unit
 from .records import ANSWER_KINDS, UNDER_BLOCK_KINDS, Answer, split_name
 from .table_help import _suggest, _which_point
 
@@ -18,6 +19,7 @@ __all__ = [
     "ENGINE_ANSWERS",
     "ENGINE_PER_PISTON",
     "under_block_names",
+    "unit_kind",
 ]
 
 #: the engine chapter's answer keys -> their unit kind (checked in check/engine.py)
@@ -70,6 +72,26 @@ def under_block_names(point_names, ground, sliders) -> dict:
         used.add(f"{s.point.lower()}{k}")
         out[f"{s.point}{k}"] = s.key
     return out
+
+
+def unit_kind(kind: str) -> str:
+    """The kind of quantity (a key of ``UNITS``) an answer of ``kind`` is (its
+    :class:`Answer`'s ``kind``).
+
+    >>> unit_kind("omega"), unit_kind("centre"), unit_kind("vu"), unit_kind("I_flywheel")
+    ('angular_velocity', 'length', 'velocity', 'moment_of_inertia')
+    """
+    if kind in ("centre", "h"):
+        return "length"
+    if kind == "torque":
+        return "torque"
+    if kind in ENGINE_ANSWERS:
+        return ENGINE_ANSWERS[kind]
+    if kind in DRIVER_ANSWERS:
+        return DRIVER_ANSWERS[kind]
+    if kind in ("vu", "au"):  # the guide's point under a block
+        return "velocity" if kind == "vu" else "acceleration"
+    return _KINDS[kind][0]
 
 
 def _bare(value) -> bool:
@@ -281,7 +303,29 @@ class _Answers:
     def answer(self, key, value, known, slider_names, pin_names, loads):
         """One key of [answers] (or of a student's file) and its value: an :class:`Answer`,
         the key checked against the scene (what it names is there, the force analysis
-        asked for where it is a force) and the value read in the key's kind."""
+        asked for where it is a force) and the value read in the key's kind; or a question
+        asked without its answer (``"?"``, ``"? rpm"``: :meth:`question`)."""
+        unit = question(value)
+        if unit is not None:
+            return self.question(key, unit, known, slider_names, pin_names, loads)
+        return self._answer(key, value, known, slider_names, pin_names, loads)
+
+    def question(self, key, unit, known, slider_names, pin_names, loads):
+        """``v_C = "?"`` (or ``"? m/s"``: the unit its answer is to be given in): the key
+        checked exactly as an answer's is (a stand-in value read in its place), the unit
+        one of the key's kind (no sense: the answer gives it). An :class:`Answer` whose
+        value is None (``asked``)."""
+        stand_in = [0, 0] if key.startswith("I_") else 1
+        ans = self._answer(key, stand_in, known, slider_names, pin_names, loads)
+        if unit:
+            try:
+                question_unit(unit, unit_kind(ans.kind), "")
+            except SceneError as exc:
+                raise self.error(exc.message, "answers", key) from None
+        return replace(ans, value=None, sense=None, raw=f"? {unit}".rstrip(), unit=unit or None)
+
+    def _answer(self, key, value, known, slider_names, pin_names, loads):
+        """:meth:`answer` of a value (not a question)."""
         line = self.line_of("answers", key)
         forces = getattr(self, "scene_forces", None)  # an answer file: its scene's
         if forces is None:
