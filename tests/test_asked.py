@@ -401,3 +401,22 @@ def test_a_books_problem_in_words_ends_with_its_answers(capsys):
         f"vs_P = {textbook(vs)} m/s"
     )
     assert check_answers(sol)[0].ok  # the book's v_S still graded
+
+
+def test_the_engine_chapters_questions_against_the_closed_form(tmp_path, capsys):
+    text = (HERE.parent / "worked_problems" / "engine_forces.toml").read_text()
+    text = text[: text.index("[answers]")] + (
+        '[answers]\npiston_effort = "? kN"\nrod_thrust = "?"\ncrank_effort = "?"\n'
+        'turning_moment = "? kN m"\n'
+    )
+    got = _solve_json(_write(tmp_path, text), capsys)
+    w, th, r, l = 2 * math.pi * 250 / 60, math.radians(60), 0.3, 1.2
+    a = float(reference_slider_crank(r, l, 0.0, th, w, 0.0)["a"])
+    gas = 0.35e6 * math.pi * 0.5**2 / 4  # towards the crank: -x
+    fp = abs(-gas - 250 * a)  # the gas force less the reciprocating parts' inertia
+    phi = math.asin(r * math.sin(th) / l)
+    _close(got["piston_effort"]["value"], fp)
+    _close(got["rod_thrust"]["value"], fp / math.cos(phi))
+    _close(got["crank_effort"]["value"], fp * math.sin(th + phi) / math.cos(phi))
+    _close(got["turning_moment"]["value"], fp * math.sin(th + phi) / math.cos(phi) * r)
+    assert got["piston_effort"]["text"] == f"{textbook(fp / 1000)} kN"
