@@ -319,9 +319,6 @@ def test_the_page_marks_a_question_asked():
 
 
 def test_variants_ask_the_question_and_their_key_answers_it_in_the_unit_asked(tmp_path):
-    import sys
-
-    sys.path.insert(0, str(HERE))
     from test_variants import FOURBAR as BASE, _dims, _fourbar_by_hand
 
     from polygon_method.variants import generate
@@ -420,3 +417,29 @@ def test_the_engine_chapters_questions_against_the_closed_form(tmp_path, capsys)
     _close(got["crank_effort"]["value"], fp * math.sin(th + phi) / math.cos(phi))
     _close(got["turning_moment"]["value"], fp * math.sin(th + phi) / math.cos(phi) * r)
     assert got["piston_effort"]["text"] == f"{textbook(fp / 1000)} kN"
+
+
+def test_a_diagrams_variants_ask_its_questions_and_key_them_by_the_closed_form(tmp_path, capsys):
+    """dE_max of T = 1000 + 300 sin 2t - 500 cos 2t is A = sqrt(300^2 + 500^2) (the energy
+    swings by A about its mean); I = A / (w^2 Cs), each variant's own speed and Cs."""
+    import tomllib
+
+    import test_energy_class as energy
+
+    text = energy.LAW.replace('dE_max = "583.1 J"', 'dE_max = "?"').replace(
+        'I_flywheel = "29.5 kg m^2"', 'I_flywheel = "? kg m^2"'
+    )
+    base, out = _write(tmp_path, text), tmp_path / "cls"
+    capsys.readouterr()
+    assert main(["variants", str(base), "--count", "3", "--seed", "1", "-o", str(out)]) == 0
+    rows = list(csv.DictReader((out / "answer-key.csv").open(encoding="utf-8")))
+    for row in rows:
+        raw = tomllib.loads((out / row["file"]).read_text(encoding="utf-8"))
+        assert "answers" not in raw
+        w = float(raw["flywheel"]["speed"].split()[0]) * math.pi / 30
+        cs = 2 * float(raw["flywheel"]["plus_minus"].rstrip("%")) / 100
+        a = math.hypot(300, 500)
+        _close(float(row["dE_max (J)"]), a)
+        _close(float(row["I_flywheel (kg m^2)"]), a / (w * w * cs))
+    sheet = (out / "problem-sheet.md").read_text(encoding="utf-8")
+    assert sheet.count("(dE_max), the flywheel's moment of inertia (I_flywheel)") == 3
