@@ -443,3 +443,18 @@ def test_a_diagrams_variants_ask_its_questions_and_key_them_by_the_closed_form(t
         _close(float(row["I_flywheel (kg m^2)"]), a / (w * w * cs))
     sheet = (out / "problem-sheet.md").read_text(encoding="utf-8")
     assert sheet.count("(dE_max), the flywheel's moment of inertia (I_flywheel)") == 3
+
+
+def test_a_fraction_asked_in_per_cent_and_a_mean_against_the_hand_working(tmp_path, capsys):
+    """T = 1000 + 300 sin 2t: the mean 1000 N m, the energy swings by 300 J (150 either
+    side), so a flywheel of 40 kg m^2 at 300 rpm holds Cs = 300 / (I w^2)."""
+    text = (
+        'title = "x"\n[turning_moment]\ntorque = "1000 + 300 sin 2theta"\n[flywheel]\n'
+        'speed = "300 rpm"\ninertia = "40 kg m^2"\n[answers]\nCs = "? %"\nT_mean = "?"\n'
+    )
+    got = _solve_json(_write(tmp_path, text), capsys)
+    cs = 300 / (40 * (300 * math.pi / 30) ** 2)
+    _close(got["Cs"]["value"], cs)
+    _close(got["T_mean"]["value"], 1000.0)
+    assert got["Cs"]["text"] == f"{textbook(100 * cs)} %"
+    assert got["T_mean"]["text"] == "1000 N m"

@@ -243,6 +243,9 @@ def asked_text(v: Verdict) -> str:
     ``4.785 rad/s cw``; a centre ``[x, y] mm``)."""
     if v.correct_text:
         return v.correct_text
+    if v.unit == "":  # a fraction (a coefficient of fluctuation): "? %" in per cent
+        pc = v.raw.split()[1:] == ["%"]
+        return f"{_g(100 * v.correct)} %" if pc else _g(v.correct)
     own = _given_unit(v)
     if own is None:
         return _show(v, v.correct)
