@@ -387,15 +387,17 @@ def test_a_books_problem_in_words_ends_with_its_answers(capsys):
     ref = reference_solution(scene, sol.P)
     w = float(ref["omega"][scene.link("RS").key])
     vs = float(ref["sliders"]["P"]["vs"])
-    (a, b) = asked_verdicts(sol, [x for x in scene.answers if x.asked])
-    _close(a.correct, w)
-    _close(b.correct, vs)
+    (x, y) = asked_verdicts(sol, [q for q in scene.answers if q.asked])
+    _close(x.correct, w)
+    _close(y.correct, vs)
+    sl = scene.slider("P")  # the reference's vs is along first -> second
+    a, b = (sl.first, sl.second) if vs > 0 else (sl.second, sl.first)
     capsys.readouterr()
     assert main(["solve", str(path)]) == 0
     out = capsys.readouterr().out
     assert out.rstrip().splitlines()[-1] == (
         f"Answers asked: omega_RS = {textbook(abs(w))} rad/s {'ccw' if w > 0 else 'cw'}; "
-        f"vs_P = {textbook(vs)} m/s"
+        f"vs_P = {textbook(abs(vs))} m/s along QR, from {a} towards {b}"
     )
     assert check_answers(sol)[0].ok  # the book's v_S still graded
 

@@ -246,12 +246,15 @@ def asked_text(v: Verdict) -> str:
     if v.unit == "":  # a fraction (a coefficient of fluctuation): "? %" in per cent
         pc = v.raw.split()[1:] == ["%"]
         return f"{_g(100 * v.correct)} %" if pc else _g(v.correct)
-    own = _given_unit(v)
+    along = (v.extra or {}).get("along")  # a sliding velocity's: its size, and which way
+    x, own = (abs(v.correct) if along else v.correct), _given_unit(v)
     if own is None:
-        return _show(v, v.correct)
-    x = v.correct / own[1]
-    s = ("ccw" if x > 0 else "cw" if x < 0 else "") if v.signed and v.unit in _TURNING else ""
-    return f"{_g(abs(x) if s else x)} {own[0]}" + (f" {s}" if s else "")
+        text = _show(v, x)
+    else:
+        x = x / own[1]
+        s = ("ccw" if x > 0 else "cw" if x < 0 else "") if v.signed and v.unit in _TURNING else ""
+        text = f"{_g(abs(x) if s else x)} {own[0]}" + (f" {s}" if s else "")
+    return f"{text} {along}" if along else text
 
 
 def asked_dict(v: Verdict) -> dict:
