@@ -145,6 +145,8 @@ def _unit_factor(unit: str, kind: str, where: str) -> float:
     )
 
 
+#: the kinds of quantity with a sense (cw, ccw)
+_TURNING_KINDS = ("angular_velocity", "angular_acceleration", "torque")
 #: a question asked without its answer: ``"?"``, or ``"? rpm"`` (the unit of its answer)
 _QUESTION = re.compile(r"^\s*\?\s*(.*?)\s*$", re.S)
 
@@ -166,6 +168,12 @@ def question_unit(unit: str, kind: str, where: str = "") -> float:
     """The factor to SI of a question's unit (``"rpm"`` of ``"? rpm"``), checked to be a
     unit of ``kind``; a sense after it is refused (the answer gives the sense)."""
     words = unit.split()
+    if words and words[-1].lower() in _SENSES and kind not in _TURNING_KINDS:
+        raise SceneError(
+            f"'? {_clip(unit)}': {kind.replace('_', ' ')} has no sense cw or ccw: write "
+            f'"? {" ".join(words[:-1]) or format_unit_list(kind).split(", ")[0]}"',
+            key=where,
+        )
     if words and words[-1].lower() in _SENSES:
         raise SceneError(
             f"'? {_clip(unit)}': a question asks for the sense too: write "

@@ -176,6 +176,12 @@ class _Answers:
         pin_names = {p.point for p in pins}
         for key, value in spec.items():
             if key == "tolerance":
+                if question(value) is not None:
+                    raise self.error(
+                        'tolerance is the answers\' allowance, a per cent ("3%"): not a question',
+                        "answers",
+                        key,
+                    )
                 q = self.qty(value, "percent", "answers", key, default_unit="%").value
                 if not 0 < q < 1:
                     raise self.error(
