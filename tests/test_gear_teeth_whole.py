@@ -199,6 +199,7 @@ def test_the_centre_distance_known_only_once_placed(tmp_path):
     sol = solve(parse_scene(PLACED.format(ox=cx, oy=cy + 160)))
     note = next(n for n in sol.notes if "at the stated instant" in n)
     assert "CO = 160 mm" in note and "100 mm: 40 teeth" in note, note
+    assert sol.plan.steps[-1].title == "gear OS of 24 teeth meshing with the gear BC of 40 teeth"
     zf = 2 * (math.hypot(100 - cx, 250 - cy) - 60) / 5
     line = _one_line(_run(PLACED.format(ox=100.0, oy=250.0), tmp_path))
     assert "[rolling] OS" in line and f"{zf:.6g} teeth" in line, line
@@ -229,3 +230,26 @@ def test_the_sun_from_the_annulus_and_the_planet():
         assert sol.scene.rolling[0].teeth[1] == zs
         w_arm = sol.W["OA"]
         assert (sol.W["O-Q"] - w_arm) / -w_arm == pytest.approx(-zs / zr, rel=1e-12)
+
+
+@pytest.mark.parametrize("ring,teeth", [(220, 88), (221, None)])
+def test_an_annulus_on_a_toothed_planet_is_toothed_too(tmp_path, ring, teeth):
+    """The table's module, the annulus's entry naming no teeth, on the planet of 24 teeth:
+    the annulus is a gear all the same, 2 x 220 / 5 = 88 teeth (said; Willis' formula with
+    them), and a link of 221 mm (88.4 teeth) is refused naming the annulus's entry."""
+    text = (
+        PLANET.format(arm=160, more=", on_teeth = 40")
+        .replace("[input]", '"O-Q" = { on = "AP", ring = true }\n[input]')
+        .replace("OA = 160\n", f'OA = 160\n"O-Q" = {ring}\n')
+    )
+    if teeth is None:
+        line = _one_line(_run(text, tmp_path))
+        assert "[rolling] O-Q" in line and "88.4 teeth" in line, line
+        return
+    sol = solve(parse_scene(text))
+    assert any("O-Q's radius 220 mm (the link O-Q): 88 teeth" in n for n in sol.notes)
+    w_arm = sol.W["OA"]
+    assert (sol.W["O-Q"] - w_arm) / -w_arm == pytest.approx(-40 / 88, rel=1e-12)
+    assert "ring O-Q of 88 teeth meshing with the planet AP of 24 teeth inside it" in [
+        st.title for st in sol.plan.steps
+    ]

@@ -108,7 +108,8 @@ def test_a_pair_by_its_teeth_in_every_view(more, capsys, tmp_path):
 
 def test_a_wheel_without_teeth_keeps_its_words():
     """A friction wheel on a fixed circle (no teeth): "the wheel AP (radius 60 mm) rolls
-    without slipping on the fixed circle about O", as before."""
+    without slipping on the fixed circle about O", as before, the circle's radius the
+    centre distance's, 160 - 60 = 100 mm."""
     text = BOOK.read_text(encoding="utf-8")
     text = text.split("[rolling]")[0] + (
         '[links]\nOA = 160\nAP = 60\n[rolling]\nAP = { on = "O" }\n[input]\ncrank = "OA"\n'
@@ -118,7 +119,7 @@ def test_a_wheel_without_teeth_keeps_its_words():
     out = _flat(steps_text(sol))
     assert (
         "the wheel AP (radius 60 mm (" in out
-        and "rolls without slipping on the fixed circle about O" in out
+        and "rolls without slipping on the fixed circle about O (radius 100 mm (" in out
     )
     assert "of 40 teeth" not in out and "planet AP" not in out
     assert any(
@@ -132,6 +133,8 @@ def test_page_says_the_teeth_in_a_browser(browser, tmp_path):
     path = tmp_path / "book.html"
     assert main(["page", str(BOOK), "-o", str(path)]) == 0
     page = browser.new_page()
+    errors = []
+    page.on("pageerror", lambda e: errors.append(str(e)))
     try:
         page.goto(path.as_uri())
         body = _flat(page.inner_text("body"))
@@ -143,6 +146,7 @@ def test_page_says_the_teeth_in_a_browser(browser, tmp_path):
         assert "pitch circle of the planet AP of 24 teeth" in titles, titles
         assert "pitch circle of the ring O-Q of 88 teeth" in titles, titles
         assert not any(re.match(r"pitch circle about", t) for t in titles), titles
+        assert not errors, errors
     finally:
         page.close()
 
@@ -168,3 +172,25 @@ def test_a_us_book_says_the_diametral_pitch(capsys, tmp_path):
     assert main(["solve", "--json", str(f)]) == 0
     rec = json.loads(capsys.readouterr().out)["rolling"]["O3-B"]["teeth"]
     assert rec["diametral_pitch"] == 10 and rec["module"] == pytest.approx(0.0254 / 10, rel=1e-15)
+
+
+def test_centres_name_the_pitch_point(capsys):
+    """The instantaneous centre of the planet and the sun is the pitch point of gears that
+    mesh (a wheel with no teeth keeps 'the contact of ...')."""
+    assert main(["centres", str(BOOK)]) == 0
+    out = capsys.readouterr().out
+    assert "the pitch point of AP meshing with the sun of 40 teeth about O (no slip)" in out, out
+    assert "the contact of AP" not in out
+
+
+def test_the_force_drawing_names_the_gears_by_their_teeth(tmp_path):
+    """The force sheet's heading of the planet's step and the contact's words (its text
+    is kept beside each drawn line of the SVG)."""
+    text = BOOK.read_text(encoding="utf-8").split("[answers]")[0]
+    scene = tmp_path / "held.toml"
+    scene.write_text(text + '[loads]\n"O-Q" = { torque = "100 N m cw" }\n[gravity]\n', "utf-8")
+    svg = tmp_path / "f.svg"
+    assert main(["draw", "--diagram", "forces", str(scene), "-o", str(svg)]) == 0
+    out = svg.read_text(encoding="utf-8")
+    assert "planet AP of 24 teeth meshing with the sun of" in out
+    assert "fixed circle" not in out

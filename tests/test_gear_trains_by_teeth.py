@@ -6,6 +6,7 @@ inputs, a compound planet; an internal pair driven by its ring; a rack and pinio
 the words: a second gear on a wheel's shaft is "keyed to" it, a pinion inside a ring gear
 meshes with "the ring gear"."""
 
+import json
 import math
 import subprocess
 import sys
@@ -13,6 +14,7 @@ import sys
 import pytest
 
 from polygon_method import parse_scene, solve
+from polygon_method.cli import main
 from polygon_method.text.steptable import steps_text
 
 RPM = 2 * math.pi / 60
@@ -228,3 +230,154 @@ def test_a_rack_with_a_module_and_no_teeth_asks_for_on_teeth(tmp_path):
     lines = out.stderr.strip().splitlines()
     assert out.returncode == 2 and len(lines) == 1, out.stderr
     assert "[rolling] R (line" in lines[0] and "add on_teeth" in lines[0], lines[0]
+
+
+HOLD = """
+[ground]
+O = [0, 0]
+[rolling]
+module = "5 mm"
+{planet}
+{other}
+[input]
+crank = "OA"
+angle = 30
+speed = "200 rpm ccw"
+[loads]
+{load} = {{ torque = "100 N m cw" }}
+[gravity]
+"""
+
+
+@pytest.mark.parametrize(
+    "planet,other,load,held",
+    [
+        # the sun fixed, 100 N m cw resisting the annulus: the sun held with 100 x 40/88
+        (
+            'AP = { on = "O", teeth = 24, on_teeth = 40 }',
+            '"O-Q" = { on = "AP", ring = true, teeth = 88 }',
+            '"O-Q"',
+            -100 * 40 / 88,
+        ),
+        # the annulus fixed, 100 N m cw resisting the sun: the annulus held with 100 x 88/40
+        (
+            'AP = { on = "O", inside = true, teeth = 24, on_teeth = 88 }',
+            '"O-S" = { on = "AP", teeth = 40 }',
+            '"O-S"',
+            -100 * 88 / 40,
+        ),
+    ],
+)
+def test_the_torque_holding_the_fixed_gear(planet, other, load, held, capsys, tmp_path):
+    """The book's holding torque on the fixed wheel of an epicyclic (no friction, the arm
+    turning uniformly, no masses): the torques on the train sum to nought, so the fixed
+    gear is held with the output torque times z_fixed / z_output, in its sense; and the
+    input torque is the power balance's. Said in the contact's words, in the JSON."""
+    text = HOLD.format(planet=planet, other=other, load=load)
+    sol = _solve(text)
+    w_out = sol.W[load.strip('"')]
+    t_in = 100 * w_out / sol.W["OA"]  # T_in w_a = 100 w_out (the load cw, ccw positive)
+    assert sol.input_torque == pytest.approx(t_in, rel=1e-9)
+    assert held == pytest.approx(-(t_in - 100), rel=1e-9)  # the three torques sum to 0
+    f = tmp_path / "hold.toml"
+    f.write_text('units = "mm"\n' + text, encoding="utf-8")
+    assert main(["solve", "--json", str(f)]) == 0
+    contact = json.loads(capsys.readouterr().out)["forces"]["contacts"]["AP"]
+    assert contact["holding_torque"] == pytest.approx(held, rel=1e-9)
+    assert main(["solve", str(f)]) == 0
+    out = capsys.readouterr().out
+    fixed = "the sun of 40 teeth" if "40 }" in planet else "the fixed annulus of 88 teeth"
+    assert f"contact of planet AP with {fixed} about O" in out, out
+    assert f"the frame holds {fixed} about O with {abs(held):.4g} N m cw" in out, out
+
+
+def test_two_planets_in_series_on_one_arm():
+    """Sun 30 fixed; planet 1 (15) on it, planet 2 (15) meshing with planet 1, both on the
+    arm (B carried on OA, 90 mm from O); the annulus 60 (90 + 30 = 120 mm) about O.
+    Arm fixed: ring / sun = (-30/15)(-15/15)(15/60) = +1/2, so omega_r = omega_a (1 -
+    1/2); planet 2: (omega_2 - omega_a) / (0 - omega_a) = (-30/15)(-15/15) = 2."""
+    sol = _solve("""
+[ground]
+O = [0, 0]
+[links]
+OA = 90
+[points]
+B = { on = "OA", distances = { O = 90, A = 60 }, turn = "cw" }
+[rolling]
+module = "4 mm"
+AP = { on = "O", teeth = 15, on_teeth = 30 }
+BQ = { on = "A-P", teeth = 15 }
+"O-R" = { on = "BQ", ring = true, teeth = 60 }
+[input]
+crank = "OA"
+angle = 30
+speed = "100 rpm ccw"
+""")
+    wa = sol.W["OA"]
+    assert sol.W["O-R"] == pytest.approx(wa / 2, rel=1e-12)
+    assert sol.W["BQ"] == pytest.approx(-wa, rel=1e-12)
+
+
+def test_arm_and_annulus_both_driven():
+    """Arm 200 rpm ccw, annulus 88 at 100 rpm cw (the second input), the sun 40 the output:
+    (omega_s - omega_a) / (omega_r - omega_a) = -88/40: 200 + 2.2 x 300 = 860 rpm ccw; the
+    planet (omega_p - omega_a) / (omega_r - omega_a) = 88/24: -900 rpm."""
+    sol = _solve(
+        EPI.format(
+            planet='AP = { on = "O-Q", inside = true, teeth = 24, on_teeth = 88 }',
+            other='"O-S" = { on = "AP", teeth = 40 }',
+            speed='speed = "200 rpm ccw"\n[input.second]\ncrank = "O-Q"\nangle = 0\n'
+            'speed = "100 rpm cw"',
+        )
+    )
+    assert sol.W["O-S"] == pytest.approx(860 * RPM, rel=1e-12)
+    assert sol.W["AP"] == pytest.approx(-900 * RPM, rel=1e-12)
+    assert "meshing with the ring gear O-Q of 88 teeth" in steps_text(sol)
+
+
+def test_a_rack_pinion_by_teeth_without_a_module_asks_for_one(tmp_path):
+    """on_teeth without a module on a rack: a rack has no second gear's teeth to share a
+    centre distance with, so the line asks for the module (or on_radius), not for 'the
+    teeth of both gears'."""
+    f = tmp_path / "r.toml"
+    f.write_text(
+        'units = "mm"\n[ground]\nO1 = [0, 0]\n[links]\n"O1-A" = 40\n[sliders]\nR = { path = '
+        '"horizontal", through = [0, -40] }\n[rolling]\nR = { on = "O1-A", on_teeth = 20 }\n'
+        '[input]\ncrank = "O1-A"\nangle = 0\nspeed = "300 rpm ccw"\n',
+        encoding="utf-8",
+    )
+    out = subprocess.run(
+        [sys.executable, "-m", "polygon_method", "solve", str(f)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    lines = out.stderr.strip().splitlines()
+    assert out.returncode == 2 and len(lines) == 1, out.stderr
+    assert "[rolling] R (line" in lines[0] and "pinion's on_teeth" in lines[0], lines[0]
+    assert "both gears" not in lines[0]
+
+
+def test_a_reduction_given_on_its_output_is_no_dead_centre():
+    """A 20:1 compound reduction (20/50 x 15/120) with the speed given on its output, 100
+    rpm: the crank turns at 2000 rpm, and nothing warns of a dead centre (the ratio is the
+    same at every angle: it had warned 'near a dead centre for this input (condition
+    0.05)')."""
+    sol = _solve("""
+[ground]
+O1 = [0, 0]
+O2 = [140, 0]
+O4 = [140, 270]
+[rolling]
+module = "4 mm"
+"O2-B" = { on = "O1-A", teeth = 50, on_teeth = 20 }
+"O4-C" = { on = "O2-B", teeth = 120, on_teeth = 15 }
+[input]
+crank = "O1-A"
+angle = 0
+"omega_O4-C" = "100 rpm ccw"
+""")
+    assert sol.W["O1-A"] == pytest.approx(2000 * RPM, rel=1e-12)
+    assert sol.W["O4-C"] == pytest.approx(100 * RPM, rel=1e-12)
+    assert not sol.warnings, sol.warnings
+    assert not any("dead centre" in n for n in sol.notes), sol.notes

@@ -174,6 +174,10 @@ _FACTOR_MISTAKES = {
         (1e-3, "mm_m", "a length in mm used in alpha = a_t / l (l must be in m)"),
     ),
     "torque": ((1e3, "mm_m", "N mm given as N m"), (1e-3, "mm_m", "N m given as N mm")),
+    "h": (  # the offset of the inertia force from G: I alpha / (m a_G) is in m
+        (1e3, "mm_m", 'the offset in mm given as m (a bare h is in m; write "16 mm")'),
+        (1e-3, "mm_m", "the offset in m given as mm"),
+    ),
 }
 _DECIMAL = (
     (10.0, "decimal_point", "the decimal point misplaced (10 times too large)"),

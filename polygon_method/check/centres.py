@@ -103,6 +103,8 @@ def centre_verdict(sol, ans, tolerance, cache: list) -> Verdict:
     longest = max(lk.length for lk in sc.links)
     if ans.asked:  # a question without its answer: where the centre is, not graded
         return _asked_centre(ans, c, pivot, max(longest, 1e-300), u, un)
+    if ans.value[0] == "infinity":
+        return _at_infinity(sol, ans, c)
     gx, gy = ans.value
     if c.point is None:
         deg = math.degrees(math.atan2(c.direction[1], c.direction[0])) % 180.0
@@ -159,3 +161,41 @@ def centre_verdict(sol, ans, tolerance, cache: list) -> Verdict:
         + f"] {un}",  # (noise about an axis: 0)
         {"given_position": [gx, gy], "correct_position": [cx, cy]},
     )
+
+
+#: how far a centre at infinity's direction may be off (deg): a line's direction as drawn
+DIRECTION_TOLERANCE_DEG = 1.0
+
+
+def _at_infinity(sol, ans, c) -> Verdict:
+    """The verdict on a centre answered as at infinity (``"at infinity"``, or with the
+    direction of the parallel lines it is the meeting point of, mod 180 deg)."""
+    sc = sol.scene
+    said = ans.value[1]
+    rule = f"a centre at infinity: its direction within {DIRECTION_TOLERANCE_DEG:g} deg"
+    if c.point is not None:
+        cx, cy = c.point
+        where = "[" + ", ".join(fmt(v / sc.length_unit, 5) for v in (cx, cy)) + f"] {sc.units}"
+        words = f"{c.label} is at {where}, not at infinity: {c.how}"
+        return Verdict(
+            ans.key, ans.raw, math.inf, math.hypot(cx, cy), "m", None, math.inf, math.inf, rule, False,
+            False, "centre_not_at_infinity", words, ans.line, where,
+            {"correct_position": [cx, cy]},
+        )  # fmt: skip
+    deg = math.degrees(math.atan2(c.direction[1], c.direction[0])) % 180.0
+    off = 0.0 if said is None else abs((math.degrees(said) - deg + 90.0) % 180.0 - 90.0)
+    ok = off <= DIRECTION_TOLERANCE_DEG
+    mistake = words = None
+    if not ok:
+        mistake, words = "centre_direction", f"{c.label}'s lines run at {fmt(deg, 4)} deg: {c.how}"
+        if abs(off - 90.0) <= DIRECTION_TOLERANCE_DEG:
+            mistake = "centre_direction_square"
+            words = (
+                f"the direction square to {c.label}'s lines given: it is at infinity along "
+                f"{fmt(deg, 4)} deg (a block on a path: perpendicular to the path), {c.how}"
+            )
+    return Verdict(
+        ans.key, ans.raw, math.inf, math.inf, "m", None, math.inf, math.inf, rule, ok, False, mistake,
+        words, ans.line, f"at infinity, {fmt(deg, 4)} deg",
+        {"correct_direction": list(c.direction)},
+    )  # fmt: skip

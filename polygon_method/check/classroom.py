@@ -75,6 +75,9 @@ MISTAKE_WORDS = {
     "carried_error": "an error carried from earlier answers",
     "another_centre": "the centre of other links",
     "centre_at_infinity": "a finite point for a centre at infinity",
+    "centre_not_at_infinity": "a finite centre said to be at infinity",
+    "centre_direction": "a centre at infinity in the wrong direction",
+    "centre_direction_square": "a centre at infinity along the path, not square to it",
 }
 
 

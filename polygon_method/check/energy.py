@@ -66,6 +66,7 @@ def _slips(scene, c, key, correct) -> list:
     fw = scene.flywheel
     if key in ("I_flywheel", "m_flywheel") and fw is not None and fw.inertia is None:
         out += cs_slips(correct)
+    if key in ("I_flywheel", "m_flywheel") and fw is not None and fw.inertia is None and fw.speed:
         out.append(
             (
                 correct * (math.pi / 30) ** 2,
@@ -126,8 +127,8 @@ def cycle_verdicts(scene, c, answers, tolerance) -> list:
                 if abs(given - v) <= rel * abs(v) * (1 + ARITHMETIC):
                     mistake = code
                     diagnosis = (
-                        f"{what} matches {words} ({v:.4g} {unit}); the correct value is "
-                        f"{correct:.4g} {unit}"
+                        f"{what} matches {words} ({f'{v:.4g} {unit}'.strip()}); the correct "
+                        f"value is {f'{correct:.4g} {unit}'.strip()}"
                     )
                     break
         out.append(

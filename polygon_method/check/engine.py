@@ -12,11 +12,13 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 
+from ..common.numbers import textbook
 from ..common.tolerances import FLOOR, SAME
 from ..common.errors import PolygonMethodError, SceneError
 from ..forces.engine import efforts, engine_piston, engine_pistons, slider_crank
 from ..linkage.engine_values import ENGINE_KEYS, INSTANT as _INSTANT, engine_value, split_key
 from ..scene.answers import ENGINE_PER_PISTON
+from ..scene.force_records import Friction
 from ..linkage.flywheel import turning_moment
 from .verdicts import ROUNDING, Verdict, cs_slips
 
@@ -33,6 +35,21 @@ def _slips(sol, full, correct):
     sc = sol.scene
     out = []
     key, piston = split_key(full)
+    fr = sc.friction
+    if fr is not None and (fr.guides or fr.pins) and key in _INSTANT:
+        try:  # the books' F_P = F_L - F_I - R_F: the friction's part left out
+            v = engine_value(sol, full, replace(sc, friction=Friction(0.0, 0.0)))
+        except PolygonMethodError:
+            v = None
+        if v is not None:
+            out.append(
+                (
+                    abs(v),
+                    "friction_left_out",
+                    "the friction left out (the guides' mu F_N against the piston's sliding, "
+                    "the pins' friction circles)",
+                )
+            )
     blocks = [m for m in sc.masses if m.block]
     if piston is not None:  # one cylinder's: its piston's inertia (the others' touch it not)
         blocks = [m for m in blocks if m.body == piston]
@@ -173,8 +190,8 @@ def _slip(sol, key, given, correct, rel, unit) -> tuple:
         if abs(given - v) <= max(rel * abs(v), FLOOR) * (1 + ROUNDING):
             return code, (
                 f"{what} matches {words} "
-                f"({v:.4g} {unit}); the correct value is "
-                f"{correct:.4g} {unit}"
+                f"({textbook(v)} {unit}); the correct value is "
+                f"{textbook(correct)} {unit}"
             )
     return None, None
 

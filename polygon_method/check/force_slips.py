@@ -10,7 +10,7 @@ from ..forces import analyse, force_value
 from ..motion.solution import solve
 from ..scene import Gravity
 from ..scene.cylinder_loads import stated
-from ..scene.force_records import rolling_body
+from ..scene.force_records import Friction, rolling_body
 from . import rod_slip
 from .alternatives import _Candidate
 
@@ -19,14 +19,11 @@ __all__ = ["force_slips"]
 
 def force_slips(d, kind, names, signed):
     """The force chapter's classic slips, each solved again as the slip would have it:
-    the power balance without inertia, the piston's inertia left out, the weights added
-    where the problem leaves them out, the inertia couple left out, the offset h on the
-    wrong side of G (the couple's sense reversed); a tooth load given as its part along
-    the tangent (the pressure angle left out); a driver's effort with the inertia left out
-    (as at rest), a driver's force along its guide given as the guide's normal force or
-    as the whole pin force at its block."""
-    sol, sc = d.sol, d.sc
-    out = []
+    the friction or the piston's inertia left out, the weights added where the problem
+    leaves them out, the inertia couple left out, the offset h on the wrong side of G;
+    a tooth load's part along the tangent given for it; a driver's effort by the power
+    balance without inertia, or as at rest, or given as another force at its block."""
+    sol, sc, out = d.sol, d.sc, []
 
     def pick(f):
         if kind in ("torque", "force"):
@@ -48,6 +45,7 @@ def force_slips(d, kind, names, signed):
     def redo(words, code, **changes):
         out.extend(c for c in (again(words, code, **changes),) if c is not None)
 
+    _friction_left_out(sc, redo)
     if kind in ("torque", "force", "torque2", "force2"):
         out += _effort_slips(d, kind, signed, again)
     if kind == "Fc":  # the tooth load's part along the tangent given for the whole
@@ -97,6 +95,17 @@ def force_slips(d, kind, names, signed):
         masses = tuple(replace(m, inertia=two.get(m.body, m.inertia)) for m in sc.masses)
         redo(rod_slip.WORDS, "correction_couple_left_out", masses=masses)
     return out
+
+
+def _friction_left_out(sc, redo) -> None:
+    """With friction: the answer solved again without it (``redo`` adds the candidate)."""
+    if sc.friction is not None and (sc.friction.guides or sc.friction.pins):
+        redo(
+            "the friction left out (mu |N| at the slides, the friction circles' couples mu r "
+            "|F| at the pins: against the sliding and the turning, the driver overcomes them)",
+            "friction_left_out",
+            friction=Friction(0.0, 0.0),
+        )
 
 
 def _cylinder_slips(c) -> list:
@@ -153,13 +162,21 @@ def _effort_slips(d, kind, signed, again) -> list:
     so; where the problem has weights, or for a second input, which no power balance
     gives), and a force along a guide given as another force at its block."""
     sol, sc, out = d.sol, d.sc, []
-    if kind in ("torque", "force") and sol.input_torque is not None:
+    frictionless = sc.friction is None or not (sc.friction.guides or sc.friction.pins)
+    massless = not sc.masses and sc.gravity is None  # (the loads' balance: friction left out)
+    if (
+        kind in ("torque", "force")
+        and sol.input_torque is not None
+        and (frictionless or not massless)
+    ):
         out.append(
             _Candidate(
                 d.cmp(sol.input_torque, signed),
                 "no_inertia",
                 "the power balance without the inertia forces (T = -sum F . v "
-                "/ omega leaves out -m a_G . v_G and -I alpha omega)"
+                "/ omega leaves out -m a_G . v_G and -I alpha omega"
+                + ("" if frictionless else ", and the friction")
+                + ")"
                 if kind == "torque"
                 else "the power balance of the loads alone (F = -sum P / v_s leaves out "
                 "the weights' m g . v_G, -m a_G . v_G and -I alpha omega)",

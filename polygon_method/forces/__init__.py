@@ -265,13 +265,17 @@ def _passes(motion, fp) -> Forces:
     scene = motion.scene
     before = last = None
     history = []  # the forces' largest changes from pass to pass (the bounds' estimate)
+    moved = []  # the friction loads' (the first pass's: their size)
     for _ in range(friction.ROUNDS):
         f = _forces(motion, fp, before or ())
         now = friction.loads(scene, motion, f.pins, f.guides)
         if last is not None:
             history.append(friction.largest_changes(last, f))
-        if friction.change(before, now) <= friction.SETTLED * friction.scale(f):
-            return replace(f, settling=friction.settling(history, friction.scale(f)))
+        d = friction.change(before, now) if before is not None else friction.size(now)
+        moved.append(d)
+        if d <= friction.SETTLED * friction.scale(f):
+            settled = friction.settling(history, friction.scale(f), moved)
+            return replace(f, settling=settled)
         before, last = now, f
     raise PolygonMethodError(
         f"forces: with friction the forces do not settle after "

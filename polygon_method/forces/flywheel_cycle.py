@@ -211,9 +211,12 @@ def solve_cycle(scene) -> "CycleEnergy":
 
 
 def _areas(d) -> dict:
-    run = [0.0]
-    for a in d.areas:
-        run.append(run[-1] + a)
+    # the running sums of the numbers as the book gives them (exact where they are whole),
+    # in energy: no rounding noise where the book's areas come back to nought
+    given, per = (d.mm2, d.per_mm2) if d.mm2 else (d.areas, 1.0)
+    run = [math.fsum(given[:k]) * per for k in range(len(given) + 1)]
+    if abs(run[-1]) <= ROUNDING * max(abs(a) for a in d.areas):
+        run[-1] = 0.0
     n = len(run)
     names = letters(n - 1) + ["a"]
     cross = tuple(Crossing(names[i], None, run[i]) for i in range(n))
@@ -351,6 +354,12 @@ def _flywheel(scene, base, words) -> CycleEnergy:
         return CycleEnergy(**base, words=tuple(words))
     words += list(fw.words)
     w, dE = fw.speed, base["dE_max"]
+    if w is None:  # the rim's speed alone: m v^2 Cs = dE_max (I w^2 = m v^2)
+        v, cs = fw.rim_speed, fw.coefficient
+        share = "" if fw.share == 1 else f"{fw.share:.6g} "
+        words.append(f"the rim's mass m = {share}dE_max / (v^2 Cs)")
+        out = dict(base, Cs=cs, rim_speed=v, mass=fw.share * dE / (v * v * cs))
+        return CycleEnergy(**out, words=tuple(words))
     out = dict(base, speed=w)
     if base["T_mean"] is not None:
         out["power"] = base["T_mean"] * w
@@ -405,11 +414,12 @@ def curves(scene, c, n: int = 1441) -> tuple:
     steady = not getattr(T, "terms", True)
     tq = c.T_mean + 0.0 * th if steady else np.array([T.value(float(x)) for x in th])
     rs = c.T_mean + 0.0 * th if R is None else np.array([R.value(float(x)) for x in th])
-    for f, vs in ((T, tq), (R, rs)):  # at a jump (the machine's too), the value before
-        if f is not None and f.corners:  # it at the first of the pair
-            for i in range(1, len(th)):
-                if th[i] == th[i - 1] and i + 1 < len(th):
-                    vs[i - 1] = _before(f, th[i])
+    for curve, values in ((T, tq), (R, rs)):  # at a jump, the value before it at the
+        if curve is None or not curve.corners:  # first of the pair (a law has no corner)
+            continue
+        for i in range(1, len(th)):
+            if th[i] == th[i - 1] and i + 1 < len(th):
+                values[i - 1] = _before(curve, th[i])
     return th, tq, rs, _energies(scene, c, th)
 
 

@@ -135,6 +135,12 @@ def scale(f) -> float:
     return max(vals + [1e-300])
 
 
+def size(a) -> float:
+    """The largest of the friction loads ``a`` (:func:`loads`): their change from none."""
+    none = tuple(x[:2] + (0.0,) if len(x) == 3 else x[:2] + ((0.0, 0.0), x[3]) for x in a)
+    return change(none, a)
+
+
 def change(a, b) -> float:
     """The largest change between two passes' friction loads (N, or N m over a length)."""
     if a is None or len(a) != len(b):
@@ -173,18 +179,26 @@ def largest_changes(a, b) -> tuple:
     return max(forces), most(abs(a.input_torque - b.input_torque)), second
 
 
-def settling(history, scale) -> tuple:
+def settling(history, scale, loads=()) -> tuple:
     """(q, the forces' last change, the effort's, the second effort's) from the passes'
     :func:`largest_changes` (``history``, in order) and the force scale (N): q the largest
-    ratio of two successive changes of the forces above :data:`NOISE` (:data:`UNMEASURED`
-    where none is measured). The bounds (:mod:`.bounds`) add ``q / (1 - q)`` times the last
-    changes and divide by ``1 - q``.
+    ratio of two successive changes of the forces above :data:`NOISE`. Where none is
+    measured (the passes settled at the second), the ratio of the friction loads' last two
+    changes (``loads``: each pass's :func:`change` of them, the first their :func:`size`;
+    the walk is linear in them, so the forces' next change shrinks as they do: nought
+    where the second pass's loads reproduce the first's), else :data:`UNMEASURED`. The
+    bounds (:mod:`.bounds`) add ``q / (1 - q)`` times the last changes and divide by
+    ``1 - q``.
 
     >>> settling([(8.0, 1.0, 0.0), (2.0, 0.25, 0.0), (0.5, 0.0625, 0.0)], 100.0)
     (0.25, 0.5, 0.0625, 0.0)
+    >>> settling([(16.0, 2.0, 0.0)], 160.0, (16.0, 0.0))  # the loads reproduced themselves
+    (0.0, 16.0, 2.0, 0.0)
     """
     noise = NOISE * scale
     ratios = [b[0] / a[0] for a, b in zip(history, history[1:]) if a[0] > noise and b[0] > noise]
+    if not ratios:
+        ratios = [b / a for a, b in zip(loads, loads[1:]) if a > noise]
     q = max(ratios) if ratios else UNMEASURED
     last = history[-1] if history else (0.0, 0.0, 0.0)
     return (q,) + tuple(last)

@@ -36,6 +36,8 @@ def _contact_dict(c: Contact) -> dict:
             pressure_angle_stated=c.stated,
             tooth_load=c.load + 0.0,
         )
+    if c.holding is not None:  # a fixed circle: the torque the frame holds it with
+        d["holding_torque"] = c.holding + 0.0
     return d
 
 

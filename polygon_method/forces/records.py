@@ -11,6 +11,7 @@ import math
 from dataclasses import dataclass, field
 from functools import cached_property
 
+from ..common.numbers import fmt, sense_word
 from .grip import words as grip_words
 
 
@@ -124,6 +125,12 @@ class Contact:
     stated: bool = True
     #: a friction drive's (mu or None, N pressing, r, R or None, v or None): :mod:`.grip`
     grip: tuple | None = None
+    #: a gear given by its teeth: (the body in words, what it meshes with), as the step
+    #: table says them ("planet AP of 24 teeth", "the sun of 40 teeth about O"), or None
+    words: tuple | None = None
+    #: on a fixed circle: the torque (N m, ccw positive) the frame holds it with (the
+    #: circle's own balance against the wheel's push at the contact), else None
+    holding: float | None = None
 
     couple = 0.0
 
@@ -165,6 +172,15 @@ class Contact:
             "" if self.stated else " (the default; pressure_angle in [rolling] gives it)"
         )
 
+    def holding_words(self) -> str:
+        """``; the frame holds the sun of 40 teeth about O with 45.45 N m cw`` on a fixed
+        circle (the torque a book asks to hold the sun), else nothing."""
+        if self.holding is None or not isinstance(self.holding, float):
+            return ""
+        what = self.words[1] if self.words else "the fixed circle"
+        h = self.holding
+        return f"; the frame holds {what} with {fmt(abs(h))} N m {sense_word(h)}".rstrip()
+
     def grip_words(self) -> str:
         """The friction rolling needs here, in words (or why the wheel lifts off); for
         teeth, the tooth load along the line of action."""
@@ -173,7 +189,7 @@ class Contact:
                 f"the tooth load along the line of action, at the pressure angle "
                 f"{self.angle_words()} to the common tangent: {self.load:.4g} N (its "
                 f"part along the tangent {abs(self.tangential):.4g} N, pushing the teeth "
-                f"apart {self.normal:.4g} N)"
+                f"apart {self.normal:.4g} N)" + self.holding_words()
             )
         if self.grip is not None:  # a friction drive (or a stated mu): holds or slips
             return grip_words(self)

@@ -38,6 +38,9 @@ import math
 from ..common.numbers import fmt
 from ..steps.rounding import vhypot
 from .bodies import cross, direction
+from dataclasses import replace
+
+from ..steps.rolling_words import noun
 from .records import FRAME, Contact, ForceStep, PinForce, Side
 
 #: the teeth's pressure angle where the scene gives none (rad): 20 deg, the standard
@@ -100,6 +103,21 @@ def contact_frame(st, P):
     return (ox + R * ux, oy + R * uy), (e * ux, e * uy)
 
 
+def gear_words(st):
+    """(the wheel, what it meshes with) in the step table's words where it is a gear given
+    by its teeth ("planet AP of 24 teeth", "the sun of 40 teeth about O"), else None."""
+    return (f"{noun(st)} {st.wheel}", st.where) if st.teeth else None
+
+
+def _holding(st, P, I, F):
+    """On a fixed circle, the torque the frame holds it with: the circle's balance about
+    its centre O against the push -F of the wheel at I, ``(I - O) x F``; else None."""
+    if st.on != "circle":
+        return None
+    ox, oy = P[st.base_centre]
+    return cross(I[0] - ox, I[1] - oy, F[0], F[1])
+
+
 def divisor(st, rec, P, L):
     """The wheel's moments divide by its pitch radius."""
     return L if st.on == "line" else st.dims[1]
@@ -123,6 +141,7 @@ def step(st, P, led, own):
     base = FRAME if st.on == "circle" else st.base
     oc = own[C]
     contact = Contact(W, (ix, iy), n, t, m, base, None if preload else phi, stated)
+    contact = replace(contact, words=gear_words(st), holding=_holding(st, P, (ix, iy), F))
     known = led.known(W)
     led.add(
         base, -F[0], -F[1], ix, iy, side=Side("contact", base, W, "I", (-F[0], -F[1]), (ix, iy))
@@ -142,7 +161,7 @@ def step(st, P, led, own):
             return (tooth,) + known + (pin,), ((0, line),), ()
 
         mc = kw[2] - cross(cx, cy, kw[0], kw[1])
-        by = "the fixed circle" if base == FRAME else base
+        by = st.where if st.teeth else "the fixed circle" if base == FRAME else base
         eq = (
             f"the tooth load on {W} by {by} acts at the pitch point I along the line of "
             f"action, at the pressure angle {contact.angle_words()} to the common tangent, "

@@ -206,9 +206,15 @@ class Summary:
             # at rest nothing moves: a driver's effort holds it against the loads alone (its
             # column's words say "with inertia", as they are where the mechanism moves)
             still = self.scene.at_rest and not self.scene.start_alpha
+            sc = self.scene  # a static analysis (no body massive): the loads (and friction)
+            fr = sc.friction is not None and (sc.friction.guides or sc.friction.pins)
+            massless = not sc.masses and sc.gravity is None
             for e in self.extremes:
                 what = e.what.replace("with inertia", "at rest: the loads alone, no inertia")
                 what = what if still else e.what
+                if massless and not still:
+                    loads = "of the loads and friction" if fr else "of the loads"
+                    what = what.replace("with inertia", f"{loads} (no body massive)")
                 if e.constant:
                     out.append(f"{e.name:<{w}}  {e.unit:<7} {e.maximum:>12.6g} {'(constant)':>10}")
                     continue

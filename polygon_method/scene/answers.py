@@ -6,11 +6,12 @@ an unknown key gets a "did you mean" hint. A decimal comma is read as a point.""
 from __future__ import annotations
 
 import math
-from dataclasses import replace
+import re
 
-from ..common.errors import SceneError, printable
-from ..common.units import UNITS, decimal_comma, question, question_unit
+from ..common.errors import printable
+from ..common.units import UNITS, decimal_comma, question
 from .records import ANSWER_KINDS, UNDER_BLOCK_KINDS, Answer, split_name
+from .questions import _Questions, unit_kind
 from .table_help import _suggest, _which_point
 
 __all__ = [
@@ -21,6 +22,9 @@ __all__ = [
     "under_block_names",
     "unit_kind",
 ]
+
+#: a centre answered as at infinity, optionally with the direction of its lines
+_INFINITY = re.compile(r"^\s*(?:at\s+)?infinity\s*(?:[,;]\s*(?:along\s+)?(.*?))?\s*$", re.I)
 
 #: the engine chapter's answer keys -> their unit kind (checked in check/engine.py)
 ENGINE_ANSWERS = {
@@ -74,26 +78,6 @@ def under_block_names(point_names, ground, sliders) -> dict:
     return out
 
 
-def unit_kind(kind: str) -> str:
-    """The kind of quantity (a key of ``UNITS``) an answer of ``kind`` is (its
-    :class:`Answer`'s ``kind``).
-
-    >>> unit_kind("omega"), unit_kind("centre"), unit_kind("vu"), unit_kind("I_flywheel")
-    ('angular_velocity', 'length', 'velocity', 'moment_of_inertia')
-    """
-    if kind in ("centre", "h"):
-        return "length"
-    if kind == "torque":
-        return "torque"
-    if kind in ENGINE_ANSWERS:
-        return ENGINE_ANSWERS[kind]
-    if kind in DRIVER_ANSWERS:
-        return DRIVER_ANSWERS[kind]
-    if kind in ("vu", "au"):  # the guide's point under a block
-        return "velocity" if kind == "vu" else "acceleration"
-    return _KINDS[kind][0]
-
-
 def _bare(value) -> bool:
     """A number without a unit (``20``, ``"20"``).
 
@@ -122,7 +106,7 @@ _KINDS = {**ANSWER_KINDS, **PAIR_ANSWER_KINDS}
 DRIVER_ANSWERS = {"force": "force", "torque2": "torque", "force2": "force"}
 
 
-class _Answers:
+class _Answers(_Questions):
     """The loader's ``[answers]`` methods (mixed into the loader with the other tables)."""
 
     def _engine_value(self, value, kind, key) -> float:
@@ -213,6 +197,11 @@ class _Answers:
                 "answers",
                 key,
             )
+        pair = tuple(parts) if named else tuple(sorted(int(p) for p in parts))
+        if isinstance(value, str):  # "at infinity", or with the direction of its lines
+            return Answer(
+                key, "centre", pair, self.centre_at_infinity(key, value), None, value, line
+            )
         if not (
             isinstance(value, list)
             and len(value) == 2
@@ -222,13 +211,13 @@ class _Answers:
             )
         ):
             raise self.error(
-                f"a centre's answer is its position [x, y] in {self.unit}, got {value!r}",
+                f"a centre's answer is its position [x, y] in {self.unit}, or \"at "
+                f'infinity" ("at infinity, 90 deg": the direction of its lines), got {value!r}',
                 "answers",
                 key,
             )
         for v in value:  # [1e300, 0]: a units slip, never an error of 1e299 per cent
             self.length(v, "answers", key, positive=False)
-        pair = tuple(parts) if named else tuple(sorted(int(p) for p in parts))
         u = self.scale()
         return Answer(
             key,
@@ -239,6 +228,26 @@ class _Answers:
             f"[{value[0]:g}, {value[1]:g}] {self.unit}",
             line,
         )
+
+    def centre_at_infinity(self, key, value) -> tuple:
+        """``("infinity", direction)`` of a centre answered as at infinity: ``"at infinity"``
+        (the direction not stated: None) or ``"at infinity, 90 deg"``, ``"..., vertical"``
+        (the direction of the parallel lines it is the meeting point of, rad, mod pi)."""
+        m = _INFINITY.match(value)
+        if m is None:
+            raise self.error(
+                f'{value!r}: a centre is [x, y] in {self.unit}, or "at infinity" (with the '
+                'direction of its lines: "at infinity, 90 deg", "at infinity, vertical")',
+                "answers",
+                key,
+            )
+        d = (m.group(1) or "").strip().lower()
+        if not d:
+            return ("infinity", None)
+        if d in ("horizontal", "vertical"):
+            return ("infinity", 0.0 if d == "horizontal" else math.pi / 2)
+        q = self.qty(d, "angle", "answers", key, default_unit="deg")
+        return ("infinity", q.value % math.pi)
 
     def answer_keys(self, known, slider_names, pin_names, loads) -> list:
         """Every answer key this scene can check (for a did-you-mean)."""
@@ -315,20 +324,6 @@ class _Answers:
         if unit is not None:
             return self.question(key, unit, known, slider_names, pin_names, loads)
         return self._answer(key, value, known, slider_names, pin_names, loads)
-
-    def question(self, key, unit, known, slider_names, pin_names, loads):
-        """``v_C = "?"`` (or ``"? m/s"``: the unit its answer is to be given in): the key
-        checked exactly as an answer's is (a stand-in value read in its place), the unit
-        one of the key's kind (no sense: the answer gives it). An :class:`Answer` whose
-        value is None (``asked``)."""
-        stand_in = [0, 0] if key.startswith("I_") else 1
-        ans = self._answer(key, stand_in, known, slider_names, pin_names, loads)
-        if unit:
-            try:
-                question_unit(unit, unit_kind(ans.kind), "")
-            except SceneError as exc:
-                raise self.error(exc.message, "answers", key) from None
-        return replace(ans, value=None, sense=None, raw=f"? {unit}".rstrip(), unit=unit or None)
 
     def _answer(self, key, value, known, slider_names, pin_names, loads):
         """:meth:`answer` of a value (not a question)."""

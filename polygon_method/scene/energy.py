@@ -271,11 +271,6 @@ def _argument(toks, i):
     return k, phi, i
 
 
-def _constant(value) -> bool:
-    """A torque written "constant" (a motor's steady torque, or the machine's at the mean)."""
-    return isinstance(value, str) and value.strip().lower() == "constant"
-
-
 class _CycleReader(_RimReader, _PressReader):
     """Reads a :class:`CycleScene` with a mechanism reader's location helpers ``ld``."""
 
@@ -388,26 +383,15 @@ class _CycleReader(_RimReader, _PressReader):
             )
         k = UNITS["torque"][unit.strip()]
         words = []
-        # the machine's torque in readings, the motor's steady: torque = "constant"
-        machine = _constant(spec["torque"]) and isinstance(spec.get("resisting"), list)
         if "angle" in spec:
-            table = self._table(spec, t, k, "resisting" if machine else "torque")
-            driving = Law((), "constant") if machine else table
-            cycle, w = self._cycle(spec, t, table.angles[-1])
-            if table.angles[-1] > cycle + ROUNDING:
-                raise self.err("the table's angles run past the cycle", t, "angle")
-            what = "the resisting torque" if machine else "the turning moment"
-            words.append(f"{what} in {len(table.angles)} readings, {w}")
+            return self._readings(spec, t, k, unit.strip(), at)
         else:
             driving = self._law(spec["torque"], t, "torque", k)
             cycle, w = self._cycle(spec, t, 2 * math.pi)
             words.append(f"T = {driving.text} {unit.strip()}, {w}")
         resisting = None
         r = spec.get("resisting", "constant")
-        if machine and "angle" in spec:
-            resisting = table
-            words.append("the driving torque constant, at the resisting torque's mean")
-        elif _constant(r):
+        if isinstance(r, str) and r.strip().lower() == "constant":
             if isinstance(driving, Law) and not driving.terms:
                 raise self.err(
                     'torque = "constant" needs a resisting torque that varies (resisting = '
@@ -422,12 +406,51 @@ class _CycleReader(_RimReader, _PressReader):
                 raise self.err("only one of torque and resisting may be constant", t, "resisting")
             words.append(f"the resisting torque {resisting.text} {unit.strip()}")
         return Diagram(
-            "table" if "angle" in spec else "law",
+            "law" if isinstance(driving, Law) else "table",
             cycle,
             driving=driving,
             resisting=resisting,
             at=at,
             words=tuple(words),
+        )
+
+    def _readings(self, spec, t, k, unit, at) -> Diagram:
+        """A diagram of straight segments at ``angle``: the engine's turning moment
+        (``torque``) and the machine's (``resisting``), each a list of readings at those
+        angles; one of them may be ``"constant"`` (a motor's steady torque; the resisting
+        torque's default), the resisting torque a law."""
+        tq, r = spec["torque"], spec.get("resisting", "constant")
+        steady = [isinstance(x, str) and x.strip().lower() == "constant" for x in (tq, r)]
+        if steady[0] and not isinstance(r, list):
+            raise self.err(
+                'torque = "constant" with angle = [...] needs the resisting torque\'s '
+                "readings at those angles (resisting = [...])",
+                t,
+                "resisting" if "resisting" in spec else "torque",
+            )
+        driving = Law((), "constant") if steady[0] else self._table(spec, "torque", t, k)
+        if steady[1]:
+            resisting = None
+        elif isinstance(r, list) and all(isinstance(v, (int, float)) for v in r):
+            resisting = self._table(spec, "resisting", t, k)  # readings at the same angles
+        else:
+            resisting = self._law(r, t, "resisting", k)
+        cycle, w = self._cycle(spec, t, math.radians(spec["angle"][-1]))
+        if math.radians(spec["angle"][-1]) > cycle + ROUNDING:
+            raise self.err("the table's angles run past the cycle", t, "angle")
+        n = len(spec["angle"])
+        if steady[0]:
+            words = [f"the driving torque constant (a motor's), the mean, {w}"]
+        else:
+            words = [f"the turning moment in {n} readings, {w}"]
+        if resisting is None:
+            words.append("the resisting torque constant, the mean (default)")
+        elif isinstance(resisting, Table):
+            words.append(f"the resisting torque in {n} readings at the same angles")
+        else:
+            words.append(f"the resisting torque {resisting.text} {unit}")
+        return Diagram(
+            "table", cycle, driving=driving, resisting=resisting, at=at, words=tuple(words)
         )
 
     def _law(self, raw, t, key, k):
@@ -460,9 +483,7 @@ class _CycleReader(_RimReader, _PressReader):
         text = " + ".join(str(s) for s in items)
         return Law(terms, text)
 
-    def _table(self, spec, t, k, key="torque") -> Table:
-        """The segments of ``angle`` and ``key`` (the turning moment's ``torque``, or the
-        machine's ``resisting`` beside a steady ``torque = "constant"``)."""
+    def _table(self, spec, key, t, k) -> Table:
         ang, tq = spec["angle"], spec[key]
         ok = (
             isinstance(ang, list)
@@ -537,7 +558,9 @@ class _CycleReader(_RimReader, _PressReader):
         scale = max(abs(a) for a in areas)
         if scale > 1e12:
             raise self.err("an energy beyond 1e12 J is absurd; check the scales", t, "areas")
-        net = sum(areas)
+        net = math.fsum(xs) * per  # the numbers as the book gives them, summed exactly
+        if abs(net) <= ROUNDING * scale:
+            net = 0.0  # (the rounding of their energies, not the book's)
         if abs(net) > 0.02 * scale:
             raise self.err(
                 f"the areas add up to {net:.4g} J, not nought: over a cycle the energy the "

@@ -66,10 +66,20 @@ class _RimReader:
                 f"(w_max - w_min) / w_mean = {(hi - lo) / w:.6g}"
             )
             return (hi - lo) / w, w, None
-        if "speed" not in spec:
+        rim_alone = way in ("coefficient", "plus_minus") and (
+            "rim_speed" in spec or "stress" in spec
+        )
+        if "speed" not in spec and not rim_alone:
             raise self.err('give the mean speed: speed = "300 rpm"', t, "speed")
-        w = self._speed(spec, t, "speed")
-        words.append(f"the mean speed {_rpm(w)} = {w:.6g} rad/s")
+        w = None
+        if "speed" in spec:
+            w = self._speed(spec, t, "speed")
+            words.append(f"the mean speed {_rpm(w)} = {w:.6g} rad/s")
+        else:  # the books' "the mean speed of the flywheel is 25 m/s": the rim's alone
+            words.append(
+                "the shaft's mean speed not given: the rim's speed v stands for it, m = dE_max "
+                "/ (v^2 Cs) (I = m R^2, w = v / R: R cancels; I and R need the shaft's speed)"
+            )
         if way in ("coefficient", "plus_minus"):
             c = self._fraction(spec[way], t, way)
             if not 0 < c < 1:
@@ -165,8 +175,9 @@ class _RimReader:
             rim_speed = abs(ld.qty(spec["rim_speed"], "velocity", t, "rim_speed").value)
             if not rim_speed > 0:
                 raise self.err("rim_speed must be positive", t, "rim_speed")
-            radius = rim_speed / w
-            words.append(f"the rim's mean radius R = v / w = {radius:.6g} m")
+            if w is not None:
+                radius = rim_speed / w
+                words.append(f"the rim's mean radius R = v / w = {radius:.6g} m")
         elif sizes == ["stress"]:
             stress = ld.qty(spec["stress"], "pressure", t, "stress").value
             if not stress > 0:
@@ -174,10 +185,10 @@ class _RimReader:
             if "density" not in spec:
                 words.append(f"the rim's density {density:g} kg/m^3 (cast iron, the default)")
             rim_speed = math.sqrt(stress / density)
-            radius = rim_speed / w
+            radius = None if w is None else rim_speed / w
             words.append(
-                f"the hoop stress sigma = rho v^2: v = {rim_speed:.6g} m/s, R = v / w = "
-                f"{radius:.6g} m"
+                f"the hoop stress sigma = rho v^2: v = {rim_speed:.6g} m/s"
+                + ("" if w is None else f", R = v / w = {radius:.6g} m")
             )
         return radius, rim_speed, stress
 

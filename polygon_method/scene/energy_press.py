@@ -23,6 +23,7 @@ _PRESS_KEYS = (
     "punching_time",
     "punching_angle",
     "punching_fraction",
+    "stroke",
 )
 
 
@@ -144,16 +145,30 @@ class _PressReader:
                 raise self.err("holes_per_minute = a positive number", t, "holes_per_minute")
             period = 60.0 / n
         words.append(f"one cycle {period:.6g} s")
-        given = [k for k in ("punching_time", "punching_angle", "punching_fraction") if k in spec]
+        keys = ("punching_time", "punching_angle", "punching_fraction", "stroke")
+        given = [k for k in keys if k in spec]
         if len(given) != 1:
             raise self.err(
                 "how long the punching takes: punching_time (s), punching_angle (of the "
-                "crank's turn) or punching_fraction (of the cycle): one of them",
+                "crank's turn), punching_fraction (of the cycle) or the punch's stroke (with "
+                "the plate's thickness): one of them",
                 t,
                 given[1] if given else "punching_time",
             )
         key = given[0]
-        if key == "punching_time":
+        if key == "stroke":  # the books' t / (2 s): down its stroke in half a turn
+            if "thickness" not in spec:
+                raise self.err("the punch's stroke needs the plate's thickness", t, key)
+            th = self.ld.length(spec["thickness"], t, "thickness")
+            stroke = self.ld.length(spec[key], t, key)
+            f = th / (2.0 * stroke)
+            words.append(
+                f"the punching t / (2 s) = {th * 1e3:.6g} mm / (2 x {stroke * 1e3:.6g} mm) "
+                "of the cycle (the "
+                "punch goes down its stroke in half a turn, through the plate's thickness "
+                "of it at a uniform rate: the books' assumption)"
+            )
+        elif key == "punching_time":
             f = self._seconds(spec[key], t, key) / period
         elif key == "punching_angle":
             f = self.ld.qty(spec[key], "angle", t, key, default_unit="deg").value / (2 * math.pi)

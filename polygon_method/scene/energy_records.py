@@ -80,7 +80,7 @@ class Table:
         i = np.clip(np.searchsorted(a, x, side="right") - 1, 0, len(a) - 2)
         a0, a1, t0, t1 = a[i], a[i + 1], t[i], t[i + 1]
         span = np.where(a1 > a0, a1 - a0, 1.0)
-        out = t0 + (t1 - t0) * (x - a0) / span
+        out = np.where(x == a1, t1, t0 + (t1 - t0) * (x - a0) / span)  # a reading: its own
         return float(out) if np.ndim(out) == 0 else out
 
     def integral(self, th):
@@ -147,10 +147,11 @@ class Rim:
     m), or ``gyration``, or found from ``rim_speed`` (m/s) or the hoop ``stress`` (Pa:
     sigma = rho v^2); ``density`` (kg/m^3); ``share`` of the flywheel's effect the rim gives;
     its section from ``ratio`` (width / thickness), ``width`` or ``thickness`` (m).
-    ``words``: how each item was read, the defaults named."""
+    ``words``: how each item was read, the defaults named. ``speed`` None: the shaft's
+    speed not given, the rim's speed alone (its mass from ``m v^2 Cs = dE_max``)."""
 
     coefficient: float | None
-    speed: float
+    speed: float | None
     inertia: float | None = None
     radius: float | None = None
     gyration: float | None = None

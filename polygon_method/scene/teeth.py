@@ -11,7 +11,11 @@ The pitch radius is m z / 2 (z / (2 P)); a ``radius`` (else the link's length: t
 the pitch circle) or ``on_radius`` stated too must agree. Without a module the teeth fix
 the ratio of the radii, and the centre distance (two fixed centres, or the arm joining
 them) fixes the radii: r = d z / (z + z_o) outside, d z / (z_o - z) inside a ring, said
-as a default taken."""
+as a default taken. With a module both gears are toothed: the one whose teeth the entry
+leaves out has 2 r / m of the radius the scene fixes for it (its link or ``radius``, the
+gear's ``on_radius``, else the centre distance less the wheel's), taken and said where
+that is a whole number, refused where it is not. The gear a wheel meshes with is then
+named by its teeth, as a book names it (:func:`gear_label`)."""
 
 from __future__ import annotations
 
@@ -106,7 +110,8 @@ def apply_teeth(rd, key, spec, pair, link, out, table):
         if own is not None:
             add = "on_teeth = z (its pinion's)" if pair.on == "rack" else "teeth = z"
             raise rd.error(f"a module with no teeth: add {add}", "rolling", key)
-        return pair
+        if not _meshes_teeth(spec, pair, out, scene_module):
+            return pair
     if pair.on == "line":
         raise rd.error(
             "a wheel on a line grips by friction: it has no teeth (a rack is a block of "
@@ -161,6 +166,15 @@ def apply_teeth(rd, key, spec, pair, link, out, table):
         teeth=(z, zo) + ((None, None) if mod is None else mod[::2]),
         label=pair.label if zo is None else gear_label(pair, zo, out),
     )
+
+
+def _meshes_teeth(spec, pair, out, module):
+    """Whether a wheel whose entry names no teeth is a gear all the same: the table's
+    module given and the gear it meshes with an earlier wheel given by its teeth (an
+    annulus on a toothed planet: its teeth are then its radius's)."""
+    if module is None or pair.on != "gear" or pair.grip is not None or "on_radius" in spec:
+        return False
+    return any(r.wheel == pair.base and r.teeth and r.teeth[0] for r in out)
 
 
 def gear_label(pair, zo, out=()):
@@ -294,6 +308,13 @@ def _whole(rd, key, x, mod, said, give, alt=None):
 def _from_centres(rd, key, pair, ground, z, zo):
     """(r, R, note) without a module: the teeth's ratio and the centre distance (two fixed
     centres, or the link joining them, the arm) fix the pitch radii."""
+    if pair.on == "rack":  # its pinion's teeth make its pitch radius only with a module
+        raise rd.error(
+            'the module not given: give module = "4 mm" (or diametral_pitch) with the '
+            "pinion's on_teeth, or on_radius instead",
+            "rolling",
+            key,
+        )
     if z is None or zo is None or pair.on not in ("gear", "circle"):
         raise rd.error(
             'the module not given: give module = "4 mm" (or diametral_pitch), or the '

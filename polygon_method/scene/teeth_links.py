@@ -136,11 +136,11 @@ def _no_arm(rd, entries, known):
     for key, spec, (a, _) in entries:
         o = spec.get("on")
         if not isinstance(o, str) or o not in ground or a in ground or a in held:
-            continue  # (an 'on' not a name is refused where the wheel's entry is read)
-        if "teeth" not in spec:
-            continue
+            continue  # (a wheel on a gear or a line, its centre fixed or held by a link)
         arm = frozenset((o, a))
-        if "on_teeth" in spec or "on_radius" in spec or arm in index or arm in arms:
+        if "teeth" not in spec or "on_teeth" in spec or "on_radius" in spec:
+            continue
+        if arm in index or arm in arms:
             continue
         name = f"{o}{a}" if split_name(f"{o}{a}") == (o, a) else f"{o}-{a}"
         raise rd.error(

@@ -135,6 +135,8 @@ def resolve(plan: Plan) -> Resolution:
         size = 1.0 if given.kind == "omega" else r
         cond = abs(y1) / size
         _check(cond, label, given, inp)
+        if given.kind == "omega" and _fixed_ratio(plan, sc.link("-".join(given.names)).key):
+            cond = 1.0  # a gear train's ratio: the same at every angle, no dead centre
         omega = given.value / y1
         rate = given.rate if given.rate is not None else (0.0 if inp.alpha is None else None)
         alpha = None if rate is None else (rate - omega * omega * h) / y1
@@ -173,6 +175,13 @@ def growth_words(res) -> str:
             else "speed grows as 1 / c towards it"
         )
     )
+
+
+def _fixed_ratio(plan, key) -> bool:
+    """Whether link ``key`` turns at a fixed ratio of the crank (a gear of a train: its
+    ``theta_rate``): a speed given on it divides by that ratio at every angle, so a small
+    ratio is a reduction, not a dead centre."""
+    return any(key in st.links and getattr(st, "theta_rate", None) is not None for st in plan.steps)
 
 
 def _rate_key(given):

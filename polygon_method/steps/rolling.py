@@ -45,6 +45,7 @@ from .rolling_contact import RollingContact, circle_rates, line_rates, rim_motio
 from . import rolling_words as words
 from .rolling_dims import GAP, arm_rate, follow_params, pair_of, rate, turned, wheel_params
 from .rolling_dims import placed_teeth
+from ..scene.teeth import gear_label
 from .base import (
     Construction,
     Step,
@@ -99,7 +100,8 @@ def recognise(g, name):
     prm = wheel_params(
         sc, g.bodies, pr, kd_rate=kd_rate, kb_rate=kb_rate, P=g.P, base_free=base_free
     )
-    teeth = placed_teeth(g, pr, prm[2])
+    teeth = placed_teeth(g, pr, prm[2])  # (its gear's teeth found once placed: named by them)
+    where = pr.label if teeth is pr.teeth else gear_label(pr, teeth[1], sc.rolling)
     follow = None
     if base_free is not None:  # a gear that is a wheel whose angle follows its arm: its turn
         bst = next((s for s in g.steps if pr.base in s.links), None)  # from its formula
@@ -117,7 +119,7 @@ def recognise(g, name):
         pr.centre,
         name,
         pr.on,
-        pr.label,
+        where,
         prm,
         base=pr.base,
         base_centre=O,

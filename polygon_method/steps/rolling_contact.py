@@ -131,7 +131,9 @@ class RollingContact:
                 self.base or "ground",
                 self.wheel,
                 I,
-                f"the contact of {self.wheel} rolling on {self.where} (no slip)",
+                f"the pitch point of {self.wheel} meshing with {self.where} (no slip)"
+                if self.teeth
+                else f"the contact of {self.wheel} rolling on {self.where} (no slip)",
             ),
         )
 

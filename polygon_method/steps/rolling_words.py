@@ -67,9 +67,17 @@ def position_words(st, L):
             f"{' inside it' if st.ring else ''} (pitch radius {L(dims[2])})"
         )
     elif st.ring:
-        what = f"the ring {st.wheel} (pitch {rad}) meshes with {st.where} inside it"
-    else:
-        what = f"the wheel {st.wheel} ({rad}) rolls without slipping on {st.where}"
+        what = (
+            f"the ring {st.wheel} (pitch {rad}) meshes with {st.where} inside it (pitch "
+            f"radius {L(dims[2])})"
+        )
+    else:  # what it rolls on, its radius (stated, or the centre distance's)
+        on = (
+            ""
+            if st.on == "line"
+            else f" ({'pitch ' if st.on == 'gear' else ''}radius {L(dims[2])})"
+        )
+        what = f"the wheel {st.wheel} ({rad}) rolls without slipping on {st.where}{on}"
     return (
         f"{st.rim}: {what}; from {st.centre} draw {st.centre}{st.rim} = {L(ell)} at "
         f"{phi:.4g} deg ({how})"

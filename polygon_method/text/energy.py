@@ -60,6 +60,12 @@ def _summary(c) -> list:
 
 def _flywheel(c) -> list:
     out = []
+    if c.inertia is None and c.mass is not None:  # the rim's speed alone, no shaft's speed
+        return [
+            f"coefficient of fluctuation of speed Cs = {_g(c.Cs)}",
+            f"rim's mass m = dE_max / (v^2 Cs) = {_g(c.mass)} kg (its speed {_g(c.rim_speed)} "
+            "m/s; I and R need the shaft's speed)",
+        ]
     if c.inertia is None:
         return out
     out.append(f"mean speed w = {_rpm(c.speed)}")
@@ -141,6 +147,24 @@ def cycle_steps(scene, c) -> str:
             f"({_g(e_min.energy)}) = {_g(c.dE_max)} J."
         )
         k += 1
+    out += _flywheel_steps(scene, c, k)
+    return "\n".join(out)
+
+
+def _flywheel_steps(scene, c, k) -> list:
+    """The flywheel's steps, numbered from ``k``: I (or Cs) from dE_max, the speeds, the
+    acceleration asked, the mass and the rim; or the rim's mass from its speed alone."""
+    out = []
+    if c.inertia is None and c.mass is not None:
+        out.append(
+            f"{k}. dE_max = I w^2 Cs = m v^2 Cs (I = m R^2, v = w R): m = {_g(c.dE_max)} / "
+            f"({_g(c.rim_speed)}^2 x {_g(c.Cs)}) = {_g(c.mass)} kg"
+            + (
+                "."
+                if scene.flywheel.share == 1
+                else f", times its share {_g(scene.flywheel.share)}."
+            )
+        )
     if c.inertia is not None:
         w = c.speed
         if scene.flywheel.inertia is None:
@@ -178,7 +202,7 @@ def cycle_steps(scene, c) -> str:
                     else "."
                 )
             )
-    return "\n".join(out)
+    return out
 
 
 def _e(x: float) -> str:

@@ -38,13 +38,18 @@ def _moment(c, scale, unit="N m"):
     return f"{fmt(abs(c))} {unit} {sense_word(c)}".rstrip() if c else f"0 {unit}"
 
 
-def _wheel(body):
-    """A rolling body in words: "wheel CP", "rack R" (a rack's block)."""
+def _wheel(c):
+    """A rolling body in words: "wheel CP", "planet AP" (a gear by its teeth), "rack R"."""
+    body = c.wheel
+    if c.words:
+        return c.words[0]
     return f"rack {body[6:]}" if body.startswith("block ") else f"wheel {body}"
 
 
 def _base(c):
     """What a contact's body rolls on, in words."""
+    if c.words:
+        return c.words[1]
     if c.by != FRAME:
         return f"{'the pinion' if c.wheel.startswith('block ') else 'the gear'} {c.by}"
     circle = c.teeth is not None or (c.grip is not None and c.grip[3] is not None)
@@ -211,7 +216,7 @@ def forces_lines(sol) -> list:
     out += [given_line(sc, sol.S, k, v, sol.P) for k, v in given_forces(f)]  # a strut, a spring
     for c in f.contacts:
         out.append(
-            f"contact of {_wheel(c.wheel)} with {_base(c)}: normal "
+            f"contact of {_wheel(c)} with {_base(c)}: normal "
             f"{fmt(quiet(c.normal, F))} N, tangential {fmt(quiet(c.tangential, F))} N "
             f"({_vec(c.force, F)}); " + c.grip_words()
         )
@@ -566,7 +571,7 @@ def _driver_blocks(f, F, M, sol=None) -> list:
         for g in f.guides
     ]
     items += [
-        f"contact of {_wheel(c.wheel)} with {_base(c)}: {_vec(c.force, F)} on it; " + c.grip_words()
+        f"contact of {_wheel(c)} with {_base(c)}: {_vec(c.force, F)} on it; " + c.grip_words()
         for c in f.contacts
     ]
     return [("h", "8. The driving torque and the frame"), ("list", items)]

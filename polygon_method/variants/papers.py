@@ -11,7 +11,7 @@ from ..common.errors import SceneError
 from ..common.numbers import fmt, sense
 from ..common.units import UNITS, question_unit
 from ..linkage.engine_values import ENGINE_KEYS, engine_value
-from ..scene.answers import unit_kind
+from ..scene.questions import unit_kind
 from ..text.words import given
 
 
