@@ -465,3 +465,28 @@ def test_a_fraction_asked_in_per_cent_and_a_mean_against_the_hand_working(tmp_pa
     _close(got["T_mean"]["value"], 1000.0)
     assert got["Cs"]["text"] == f"{textbook(100 * cs)} %"
     assert got["T_mean"]["text"] == "1000 N m"
+
+
+def test_a_diagrams_class_counts_a_question_as_not_answered(tmp_path, capsys):
+    """T = 1000 + 300 sin 2t: T_mean 1000 N m, dE_max 300 J (by hand); bob leaves dE_max
+    as "?": an empty cell, as a key left out, and not among his answers."""
+    scene = _write(
+        tmp_path,
+        'title = "x"\n[turning_moment]\ntorque = "1000 + 300 sin 2theta"\n[flywheel]\n'
+        'speed = "300 rpm"\ninertia = "40 kg m^2"\n',
+    )
+    answers = tmp_path / "answers"
+    answers.mkdir()
+    (answers / "ann.toml").write_text(
+        'student = "ann"\n[answers]\nT_mean = "1000 N m"\ndE_max = "300 J"\n'
+    )
+    (answers / "bob.toml").write_text(
+        'student = "bob"\n[answers]\nT_mean = "1000 N m"\ndE_max = "?"\n'
+    )
+    book = tmp_path / "book.csv"
+    capsys.readouterr()
+    assert main(["check", str(scene), str(answers), "--gradebook", str(book)]) == 0
+    rows = {r["student"]: r for r in csv.DictReader(book.open())}
+    assert (rows["ann"]["dE_max"], rows["ann"]["right"], rows["ann"]["of"]) == ("right", "2", "2")
+    assert (rows["bob"]["dE_max"], rows["bob"]["right"], rows["bob"]["of"]) == ("", "1", "1")
+    assert "3 of 3 answers right" in capsys.readouterr().out
