@@ -490,3 +490,25 @@ def test_a_diagrams_class_counts_a_question_as_not_answered(tmp_path, capsys):
     assert (rows["ann"]["dE_max"], rows["ann"]["right"], rows["ann"]["of"]) == ("right", "2", "2")
     assert (rows["bob"]["dE_max"], rows["bob"]["right"], rows["bob"]["of"]) == ("", "1", "1")
     assert "3 of 3 answers right" in capsys.readouterr().out
+
+
+def test_an_engines_cycle_keys_asked_beside_its_efforts(tmp_path, capsys):
+    """I_flywheel = "?" is the engine's key (not a centre I_ij); its value and dE_max's
+    against the file's answers worked by hand to four figures."""
+    text = (HERE.parent / "worked_problems" / "engine_flywheel.toml").read_text()
+    head, answers = text.split("[answers]")
+    book = {
+        line.split("=")[0].strip(): float(line.split('"')[1].split()[0])
+        for line in answers.splitlines()
+        if line.strip().startswith(("dE_max", "I_flywheel", "T_mean"))
+    }
+    asked = answers
+    for key in book:
+        asked = "\n".join(
+            f'{key} = "?"' if line.strip().startswith(key + " ") else line
+            for line in asked.splitlines()
+        )
+    got = _solve_json(_write(tmp_path, head + "[answers]" + asked), capsys)
+    assert list(got) == ["T_mean", "dE_max", "I_flywheel"]
+    for key, want in book.items():
+        assert abs(got[key]["value"] - want) <= 5e-4 * want, (key, got[key]["value"], want)

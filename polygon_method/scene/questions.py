@@ -43,7 +43,10 @@ class _Questions:
         checked exactly as an answer's is (a stand-in value read in its place), the unit
         one of the key's kind (no sense: the answer gives it). An :class:`Answer` whose
         value is None (``asked``)."""
-        stand_in = [0, 0] if key.startswith("I_") else 1
+        from .answers import ENGINE_ANSWERS
+
+        centre = key.startswith("I_") and key not in ENGINE_ANSWERS  # (not I_flywheel)
+        stand_in = [0, 0] if centre else 1
         ans = self._answer(key, stand_in, known, slider_names, pin_names, loads)
         if unit:
             try:
