@@ -512,3 +512,39 @@ def test_an_engines_cycle_keys_asked_beside_its_efforts(tmp_path, capsys):
     assert list(got) == ["T_mean", "dE_max", "I_flywheel"]
     for key, want in book.items():
         assert abs(got[key]["value"] - want) <= 5e-4 * want, (key, got[key]["value"], want)
+
+
+def _every_answer_asked(text: str) -> str:
+    """The scene with each value of its [answers] (its tolerance aside) made "?"."""
+    head, rest = text.split("\n[answers]", 1)
+    body, sep, tail = rest.partition("\n[")
+    lines = [
+        line.split("=")[0].rstrip() + ' = "?"'
+        if "=" in line and not line.lstrip().startswith(("tolerance", "#"))
+        else line
+        for line in body.splitlines()
+    ]
+    return head + "\n[answers]" + "\n".join(lines) + sep + tail
+
+
+WORKED = [
+    f
+    for f in sorted((HERE.parent / "worked_problems").glob("*.toml"))
+    if "\n[answers]" in f.read_text()
+]
+
+
+@pytest.mark.parametrize("path", WORKED, ids=[f.stem for f in WORKED])
+def test_every_worked_problems_answers_asked_are_the_values_check_grades(path, tmp_path, capsys):
+    """Each worked problem with its every answer asked as "?" (every kind of key: the
+    force chapter's, the engine's, centres, sliding, a cylinder's, ...): solve, steps and
+    check answer it, and each value is the one check grades the book's answer against."""
+    asked = _write(tmp_path, _every_answer_asked(path.read_text()))
+    got = _solve_json(asked, capsys)
+    for command in ("steps", "check"):
+        assert main([command, str(asked)]) == 0
+    graded = {v.key: v for v in check_answers(solve(load_scene(path)))}
+    assert set(graded) <= set(got)
+    for key, v in graded.items():
+        value = got[key]["value"]
+        assert abs(abs(value) - abs(v.correct)) <= 1e-12 * abs(v.correct), key

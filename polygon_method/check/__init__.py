@@ -185,11 +185,13 @@ def asked_verdict(sol: Solution, ans, clean=None, centres=None) -> Verdict:
     if ans.kind in ENGINE_KEYS:
         return engine_verdict(sol, ans, None)
     exact = _exact(sol, ans, clean)
-    if ans.kind in ("vs", "as"):  # along the guide: its size and which way, in words
+    slider = sol.scene.slider(ans.names[0]) if ans.kind in ("vs", "as") else None
+    if slider is not None:  # along the guide: its size and which way, in words
         from ..text.polygon_steps import sliding_words
 
-        along = sliding_words(sol.scene.slider(ans.names[0]), exact)
+        along = sliding_words(slider, exact)
         return Verdict.asked_of(ans, exact, UNIT_OF[ans.kind], False, extra={"along": along})
+    # (a cylinder's extension and its rate: signed, as solve's cylinder table gives them)
     signed = ans.kind not in _SIZES and ans.kind not in PAIR_KINDS
     return Verdict.asked_of(ans, exact if signed else abs(exact), UNIT_OF[ans.kind], signed)
 
