@@ -113,6 +113,10 @@ def cycle_verdicts(scene, c, answers, tolerance) -> list:
                     "radius or the greatest and least speeds"
                 )
             _refuse(ans, f"no value to check against: the scene needs {need}")
+        if ans.asked:  # a question without its answer: the value, not graded
+            keep = ans.key in ("T_mean", "alpha_at")  # (signed: the rest are sizes)
+            out.append(Verdict.asked_of(ans, correct if keep else abs(correct), unit, False))
+            continue
         signed = ans.key in ("T_mean", "alpha_at") and ans.value < 0
         correct = correct if signed or ans.key in ("T_mean", "alpha_at") else abs(correct)
         given = ans.value if ans.key in ("T_mean", "alpha_at") else abs(ans.value)

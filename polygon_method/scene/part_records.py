@@ -320,13 +320,21 @@ class Load:
 @dataclass(frozen=True)
 class Answer:
     """One answer of ``[answers]`` (or of a student's file): its key, what it names, its value in SI
-    and its sense as given."""
+    and its sense as given; or a question asked without its answer (``v_C = "?"``, ``"? rpm"``):
+    ``value`` None, ``unit`` the unit its answer is to be given in (None: the SI unit)."""
 
     key: str
     kind: str  # prefix of ANSWER_KINDS, "torque", "centre", or "vu"/"au" (the guide's point
     # under a block: names is the slider's key)
     names: tuple  # points or a link's points; (i, j) link numbers for a centre
-    value: float  # SI; signed when a sense was given; (x, y) in m for a centre
+    value: float | tuple | None  # SI; signed when a sense was given; (x, y) in m for a
+    # centre; None for a question asked without its answer
     sense: str | None
     raw: str
     line: int | None = None
+    unit: str | None = None  # a question's unit ("? rpm": "rpm"), as written
+
+    @property
+    def asked(self) -> bool:
+        """A question asked without its answer (``"?"``): not graded, its value shown."""
+        return self.value is None

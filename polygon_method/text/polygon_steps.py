@@ -212,17 +212,23 @@ def _sliding_items(sol):
                 f"vs_{s.key} = 0 m/s: {s.point} does not slide along {guide} at this instant"
             )
             continue
-        if isinstance(s, FixedPath):
-            along = f"along the {guide_words(s.label)} ({'+' if vs >= 0 else '-'} direction)"
-        elif hasattr(s, "yoke"):
-            along = (
-                f"along the {guide_words(s.label, 'slot', f'yoke {s.yoke}')} ({'+' if vs >= 0 else '-'} "
-                "direction), relative to the yoke"
-            )
-        else:
-            along = f"along {s.guide}, {'from ' + s.first + ' towards ' + s.second if vs >= 0 else 'from ' + s.second + ' towards ' + s.first}"
-        out.append(f"vs_{s.key} = {fmt(abs(vs))} m/s {along}")
+        out.append(f"vs_{s.key} = {fmt(abs(vs))} m/s {sliding_words(s, vs)}")
     return out
+
+
+def sliding_words(s, value) -> str:
+    """Which way a sliding velocity or acceleration ``value`` (signed along the guide of
+    slider ``s``) points, in words: "along QR, from Q towards R", "along the horizontal
+    path (- direction)"."""
+    if isinstance(s, FixedPath):
+        return f"along the {guide_words(s.label)} ({'+' if value >= 0 else '-'} direction)"
+    if hasattr(s, "yoke"):
+        return (
+            f"along the {guide_words(s.label, 'slot', f'yoke {s.yoke}')} "
+            f"({'+' if value >= 0 else '-'} direction), relative to the yoke"
+        )
+    a, b = (s.first, s.second) if value >= 0 else (s.second, s.first)
+    return f"along {s.guide}, from {a} towards {b}"
 
 
 def _rubbing_items(sol):
