@@ -52,7 +52,16 @@ from .centres import centre_verdict
 from .engine import ENGINE_KEYS, engine_verdict
 from .mistakes import _Diagnoser
 from .tolerance import SOURCES, Stated, _Tolerances, answer_tolerance, choose_tolerance
-from .verdicts import _NOISE_KIND, ROUNDING, UNIT_OF, Verdict, verdicts_dict, verdicts_text
+from .verdicts import (
+    _NOISE_KIND,
+    ROUNDING,
+    UNIT_OF,
+    Verdict,
+    asked_line,
+    asked_text,
+    verdicts_dict,
+    verdicts_text,
+)
 
 #: answers that are magnitudes (a negative one is a mistake of its own)
 _MAGNITUDES = {
@@ -102,6 +111,10 @@ __all__ = [
     "tolerances",
     "Verdict",
     "check_answers",
+    "asked_verdict",
+    "asked_verdicts",
+    "asked_line",
+    "asked_text",
     "answer_tolerance",
     "verdicts_text",
     "verdicts_dict",
@@ -133,13 +146,15 @@ def check_answers(sol: Solution, answers=None, tolerance: float | None = None, _
             tolerance = sol.scene.tolerance
     answers = tuple(answers)
     tols = _tols or _Tolerances(sol)  # (one for a whole class: the same drawings)
-    diag = _Diagnoser(sol, answers)
+    diag = _Diagnoser(sol, [a for a in answers if not a.asked])
     out = []
     centres = []
     clean = []  # the solution without rounding noise, made when an answer needs it
     for ans in answers:
         kind = ans.kind
-        if kind == "centre":
+        if ans.asked:  # a question without its answer: the value, not graded
+            out.append(asked_verdict(sol, ans, clean, centres))
+        elif kind == "centre":
             rel = tolerance.relative if isinstance(tolerance, Stated) else tolerance
             out.append(centre_verdict(sol, ans, rel, centres))
         elif kind in ENGINE_KEYS:  # the engine chapter's: its efforts, the cycle, the flywheel
@@ -153,6 +168,39 @@ def check_answers(sol: Solution, answers=None, tolerance: float | None = None, _
 #: and alpha (omega_BC is omega_CB), a relative velocity's or acceleration's size (v_BC,
 #: v_CB), a wheel's contact point, a contact force
 _EITHER_ORDER = ("omega", "alpha", "v", "a", "vI", "aI", "Fc", "centre", "vmin", "ar", "at")
+
+
+#: the answer kinds that are sizes (a question's value is shown as one): the rest are
+#: signed (a sense, ccw positive, or a sign along a guide)
+_SIZES = ("v", "a", "ac", "rub", "F", "N", "Fc", "vu", "au", "Fi", "h", "Tmax", "Pmax", "vI", "aI")
+
+
+def asked_verdict(sol: Solution, ans, clean=None, centres=None) -> Verdict:
+    """The tool's value of a question asked without its answer (``v_C = "?"``): the value
+    a given answer is checked against (the same functions: :func:`_exact`, the engine's
+    and the centres' verdicts), a :class:`Verdict` marked ``asked``, not graded."""
+    clean = [] if clean is None else clean
+    if ans.kind == "centre":
+        return centre_verdict(sol, ans, None, [] if centres is None else centres)
+    if ans.kind in ENGINE_KEYS:
+        return engine_verdict(sol, ans, None)
+    exact = _exact(sol, ans, clean)
+    slider = sol.scene.slider(ans.names[0]) if ans.kind in ("vs", "as") else None
+    if slider is not None:  # along the guide: its size and which way, in words
+        from ..text.polygon_steps import sliding_words
+
+        along = sliding_words(slider, exact)
+        return Verdict.asked_of(ans, exact, UNIT_OF[ans.kind], False, extra={"along": along})
+    # (a cylinder's extension and its rate: signed, as solve's cylinder table gives them)
+    signed = ans.kind not in _SIZES and ans.kind not in PAIR_KINDS
+    return Verdict.asked_of(ans, exact if signed else abs(exact), UNIT_OF[ans.kind], signed)
+
+
+def asked_verdicts(sol: Solution, answers) -> tuple:
+    """:func:`asked_verdict` of each question among ``answers`` asked without its answer,
+    in their order (``solve`` and ``steps`` end with them)."""
+    clean, centres = [], []
+    return tuple(asked_verdict(sol, a, clean, centres) for a in answers if a.asked)
 
 
 def _quantity(ans):
@@ -187,6 +235,9 @@ def _graded_once(sol: Solution, answers, verdicts) -> tuple:
     out: list = []
     for ans, v in zip(answers, verdicts):
         q = _quantity(ans)
+        if v.asked:  # a question, not graded: its own row
+            out.append(v)
+            continue
         if q not in first:
             first[q] = len(out)
             out.append(replace(v, column=_column(sol, ans)))

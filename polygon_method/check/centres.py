@@ -70,6 +70,28 @@ def _another_centre(sol, ic, c, gx, gy, tol) -> tuple:
     return None, None
 
 
+def _asked_centre(ans, c, pivot, longest, u, un) -> Verdict:
+    """The centre a question asks for (``I_13 = "?"``): its place, or its direction at
+    infinity, not graded."""
+    if c.point is None:
+        deg = math.degrees(math.atan2(c.direction[1], c.direction[0])) % 180.0
+        text = f"at infinity, {fmt(deg, 4)} deg"
+        return Verdict.asked_of(
+            ans, None, "m", False, text, {"correct_direction": list(c.direction)}
+        )
+    cx, cy = c.point
+    base = max(math.hypot(cx - pivot[0], cy - pivot[1]), longest)
+    text = "[" + ", ".join(fmt(quiet(v, base) / u, 5) for v in (cx, cy)) + f"] {un}"
+    return Verdict.asked_of(
+        ans,
+        math.hypot(cx - pivot[0], cy - pivot[1]),
+        "m",
+        False,
+        text,
+        {"correct_position": [cx, cy]},
+    )
+
+
 def centre_verdict(sol, ans, tolerance, cache: list) -> Verdict:
     """The verdict on ``I_ij = [x, y]`` (``cache``: a list that keeps the located centres
     for the other answers)."""
@@ -79,6 +101,8 @@ def centre_verdict(sol, ans, tolerance, cache: list) -> Verdict:
     u, un = sc.length_unit, sc.units
     pivot = sol.P[sc.input.pivot or next(iter(sc.ground))]  # a block driver: no pivot
     longest = max(lk.length for lk in sc.links)
+    if ans.asked:  # a question without its answer: where the centre is, not graded
+        return _asked_centre(ans, c, pivot, max(longest, 1e-300), u, un)
     if ans.value[0] == "infinity":
         return _at_infinity(sol, ans, c)
     gx, gy = ans.value

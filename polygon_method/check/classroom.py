@@ -95,9 +95,15 @@ class Row:
     tolerance: str | None = None
 
     @property
+    def graded(self) -> tuple:
+        """The file's answers given (a question left as ``"?"`` is not answered: counted
+        as a key left out is)."""
+        return tuple(v for v in self.verdicts if not v.asked)
+
+    @property
     def right(self) -> int:
         """How many of the file's answers are right."""
-        return sum(v.ok for v in self.verdicts)
+        return sum(v.ok for v in self.graded)
 
 
 def _v(key, ok, mistake=None):  # a verdict for the doctest
@@ -113,7 +119,7 @@ def _words(code):
 def _keys(rows):
     keys = []
     for r in rows:
-        for v in r.verdicts:
+        for v in r.graded:
             if v.quantity not in keys:
                 keys.append(v.quantity)
     return keys
@@ -148,7 +154,7 @@ def class_text(rows) -> str:
             if not v.ok
         ]
         out.append(
-            f"{r.student:<{w}}  {var(r)}{f'{r.right} of {len(r.verdicts)}':>9}  "
+            f"{r.student:<{w}}  {var(r)}{f'{r.right} of {len(r.graded)}':>9}  "
             + ("; ".join(wrong) if wrong else "-")
         )
     return "\n".join(out)
@@ -190,7 +196,7 @@ def summary_text(rows, book=None) -> str:
     mistakes that explain them (most students first), and the tolerance used (``book``:
     the scene's own tolerance, which is not a student's)."""
     read = [r for r in rows if r.error is None]
-    total = sum(len(r.verdicts) for r in read)
+    total = sum(len(r.graded) for r in read)
     right = sum(r.right for r in read)
     out = [
         f"{len(read)} of {len(rows)} answer files read"
@@ -200,8 +206,8 @@ def summary_text(rows, book=None) -> str:
     tol = tolerance_text(rows, book)
     if tol:
         out.append(tol)
-    wrong_by_key = Counter(v.quantity for r in read for v in r.verdicts if not v.ok)
-    asked = Counter(v.quantity for r in read for v in r.verdicts)
+    wrong_by_key = Counter(v.quantity for r in read for v in r.graded if not v.ok)
+    asked = Counter(v.quantity for r in read for v in r.graded)
     if wrong_by_key:
         out.append("most often wrong:")
         for key, n in sorted(wrong_by_key.items(), key=lambda kv: (-kv[1], kv[0])):
@@ -230,7 +236,7 @@ def _table(rows):
     )
     body = []
     for r in rows:
-        by_key = {v.quantity: v for v in r.verdicts}
+        by_key = {v.quantity: v for v in r.graded}  # a "?": no answer, as a key left out
         cells = [r.student, r.file] + ([r.variant or ""] if variants else [])
         for k in keys:
             v = by_key.get(k)
@@ -241,7 +247,7 @@ def _table(rows):
             )
         cells += [
             str(r.right) if r.error is None else "",
-            str(len(r.verdicts)) if r.error is None else "",
+            str(len(r.graded)) if r.error is None else "",
             r.error or "",
         ]
         if tols:

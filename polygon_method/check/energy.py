@@ -101,7 +101,22 @@ def cycle_verdicts(scene, c, answers, tolerance) -> list:
             need = _NEEDS.get(ans.key, "[flywheel] (the speed and its fluctuation)")
             if ans.key == "m_flywheel":
                 need = "the rim's radius or the radius of gyration in [flywheel]"
+            fw = getattr(scene, "flywheel", None)
+            if (
+                fw is not None
+                and fw.speed is None
+                and ans.key not in _NEEDS.keys() - {"rim_radius"}
+            ):
+                need = (  # (the rim's speed alone: its mass is found, not I nor the speeds)
+                    "the shaft's mean speed ([flywheel] speed): it gives the rim's speed "
+                    "alone, which finds the rim's mass, not the flywheel's I, the rim's "
+                    "radius or the greatest and least speeds"
+                )
             _refuse(ans, f"no value to check against: the scene needs {need}")
+        if ans.asked:  # a question without its answer: the value, not graded
+            keep = ans.key in ("T_mean", "alpha_at")  # (signed: the rest are sizes)
+            out.append(Verdict.asked_of(ans, correct if keep else abs(correct), unit, False))
+            continue
         signed = ans.key in ("T_mean", "alpha_at") and ans.value < 0
         correct = correct if signed or ans.key in ("T_mean", "alpha_at") else abs(correct)
         given = ans.value if ans.key in ("T_mean", "alpha_at") else abs(ans.value)

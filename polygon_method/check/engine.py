@@ -203,6 +203,8 @@ def engine_verdict(sol, ans, tolerance) -> Verdict:
     unit = ENGINE_KEYS[key][1]
     if key != "T_mean":  # sizes (a shaking moment's sense is not asked)
         correct = abs(correct)
+    if ans.asked:  # a question without its answer: the value, not graded
+        return Verdict.asked_of(ans, correct, unit, False)
     signed = key == "T_mean" and ans.value < 0
     given = ans.value if key == "T_mean" else abs(ans.value)
     rel = getattr(tolerance, "relative", tolerance)

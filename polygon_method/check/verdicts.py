@@ -69,6 +69,7 @@ class Verdict:
     extra: dict | None = None  # more for the JSON (a centre's positions)
     also: tuple = ()  # the same quantity given again under another name: (key, raw, line, ok, given)
     column: str | None = None  # the quantity's one name in a class's table (omega_BC for omega_CB)
+    asked: bool = False  # a question asked without its answer ("?"): not graded, its value shown
 
     @property
     def quantity(self) -> str:
@@ -100,6 +101,29 @@ class Verdict:
             ans.line,
         )
 
+    @classmethod
+    def asked_of(cls, ans, correct, unit, signed, correct_text=None, extra=None) -> "Verdict":
+        """A question asked without its answer (``v_C = "?"``): the tool's value
+        ``correct`` (the one a given answer is checked against), not graded (``ok``: it
+        makes nothing wrong)."""
+        return cls(
+            ans.key,
+            ans.raw,
+            None,
+            correct,
+            unit,
+            None,
+            math.inf,
+            math.inf,
+            ASKED_RULE,
+            True,
+            signed,
+            line=ans.line,
+            correct_text=correct_text,
+            extra=extra,
+            asked=True,
+        )
+
     @property
     def warning(self) -> str | None:
         """Words warning of a given value beyond what a mechanism usually reaches (read
@@ -115,7 +139,22 @@ class Verdict:
         return None if self.error is None else 100.0 * self.error
 
     def to_dict(self) -> dict:
-        """The verdict as the JSON of ``check --json`` records it."""
+        """The verdict as the JSON of ``check --json`` records it (a question asked without
+        its answer: ``verdict`` "asked", ``given`` null, ``correct`` the tool's value, and
+        ``correct_text`` as the book gives it, in the unit asked for)."""
+        if self.asked:
+            return {
+                "key": self.key,
+                "given": None,
+                "given_text": self.raw,
+                "correct": self.correct,
+                "correct_text": asked_text(self),
+                "unit": self.unit,
+                "verdict": "asked",
+                "asked": True,
+                "line": self.line,
+                **(self.extra or {}),
+            }
         return {
             "key": self.key,
             "given": self.given,
@@ -194,6 +233,59 @@ def _given_unit(v: Verdict):
     return unit, factor
 
 
+#: the rule of a question asked without its answer
+ASKED_RULE = "asked, no answer given: not graded"
+
+
+def asked_text(v: Verdict) -> str:
+    """The tool's value of a question asked without its answer, as a book gives its answer:
+    in the unit asked for (``"? rpm"``: ``45.69 rpm cw``), else in SI (``0.3828 m/s``,
+    ``4.785 rad/s cw``; a centre ``[x, y] mm``)."""
+    if v.correct_text:
+        return v.correct_text
+    if v.unit == "":  # a fraction (a coefficient of fluctuation): "? %" in per cent
+        pc = v.raw.split()[1:] == ["%"]
+        return f"{_g(100 * v.correct)} %" if pc else _g(v.correct)
+    along = (v.extra or {}).get("along")  # a sliding velocity's: its size, and which way
+    x, own = (abs(v.correct) if along else v.correct), _given_unit(v)
+    if own is None:
+        text = _show(v, x)
+    else:
+        x = x / own[1]
+        s = ("ccw" if x > 0 else "cw" if x < 0 else "") if v.signed and v.unit in _TURNING else ""
+        text = f"{_g(abs(x) if s else x)} {own[0]}" + (f" {s}" if s else "")
+    return f"{text} {along}" if along else text
+
+
+def asked_dict(v: Verdict) -> dict:
+    """A question's answer for ``solve --json``'s ``answers_asked``: its key, the value in
+    SI and its unit, the text as a book gives it (in the unit asked for), the question as
+    written and its line."""
+    return {
+        "key": v.key,
+        "value": v.correct,
+        "unit": v.unit,
+        "text": asked_text(v),
+        "asked_as": v.raw,
+        "line": v.line,
+        **(v.extra or {}),
+    }
+
+
+def asked_line(verdicts) -> str | None:
+    """``Answers asked: v_C = 0.3828 m/s; omega_CD = 4.785 rad/s cw``: the questions asked
+    without their answers (``"?"``) and the tool's answers, in the book's form; None where
+    none is asked."""
+    asked = [v for v in verdicts if v.asked]
+    if not asked:
+        return None
+    return "Answers asked: " + "; ".join(f"{v.key} = {asked_text(v)}" for v in asked)
+
+
+#: the SI units of quantities with a sense (cw, ccw)
+_TURNING = ("rad/s", "rad/s^2", "N m")
+
+
 def correct_text(v: Verdict) -> str:
     """How the check table (terminal and page) writes the correct value."""
     return v.correct_text or _show(v, v.correct)
@@ -203,7 +295,7 @@ def _show(v: Verdict, x: float) -> str:
     """The correct value in SI, and in the answer's own unit where it was another (a
     problem set in inches or rpm is answered in its units)."""
     own = _given_unit(v)
-    if v.unit in ("rad/s", "rad/s^2", "N m") and v.signed:
+    if v.unit in _TURNING and v.signed:
         s = "ccw" if x > 0 else ("cw" if x < 0 else "")
         text = f"{_g(abs(x))} {v.unit}" + (f" {s}" if s else "")
         return text + (f" ({_g(abs(x) / own[1])} {own[0]})" if own else "")
@@ -232,7 +324,8 @@ def verdicts_text(verdicts, title: str = "") -> str:
     for v in verdicts:
         err = percent_text(v.error)
         tol = "-" if not math.isfinite(v.tolerance) else f"{100 * v.tolerance:.2g} %"
-        rows.append((v.key, v.raw, correct_text(v), err, tol, "right" if v.ok else "WRONG"))
+        word = "asked" if v.asked else "right" if v.ok else "WRONG"
+        rows.append((v.key, v.raw, correct_text(v), err, tol, word))
     widths = [max(len(r[i]) for r in rows) for i in range(6)]
     lines = [title] if title else []
     for i, r in enumerate(rows):
@@ -241,6 +334,8 @@ def verdicts_text(verdicts, title: str = "") -> str:
             lines.append("  ".join("-" * w for w in widths))
             continue
         v = verdicts[i - 1]
+        if v.asked:
+            lines.append(f"    asked, no answer given: the tool's value is {asked_text(v)}")
         if v.also:
             lines.append(
                 textwrap.fill(also_words(v), 92, initial_indent="    ", subsequent_indent="      ")
@@ -253,16 +348,24 @@ def verdicts_text(verdicts, title: str = "") -> str:
                 if v.diagnosis
                 else "    mistake: none of the known ones explains it"
             )
-    wrong = sum(not v.ok for v in verdicts)
     for v in verdicts:
         if v.warning:
             lines.append(f"warning: {v.key} = {v.raw}: {v.warning}")
+    graded = [v for v in verdicts if not v.asked]
     lines.append("")
-    lines.append("tolerance: " + "; ".join(_rules(v.rule for v in verdicts)))
-    lines.append(
-        f"{len(verdicts) - wrong} of {len(verdicts)} right" + (f", {wrong} wrong" if wrong else "")
-    )
+    if graded:
+        lines.append("tolerance: " + "; ".join(_rules(v.rule for v in graded)))
+    lines.append(count_text(verdicts))
     return "\n".join(lines)
+
+
+def count_text(verdicts) -> str:
+    """``2 of 3 right, 1 wrong; 2 asked, no answer given (not graded)``."""
+    graded = [v for v in verdicts if not v.asked]
+    wrong = sum(not v.ok for v in graded)
+    asked = len(verdicts) - len(graded)
+    text = f"{len(graded) - wrong} of {len(graded)} right" + (f", {wrong} wrong" if wrong else "")
+    return text + (f"; {asked} asked, no answer given (not graded)" if asked else "")
 
 
 def _rules(rules) -> list:
@@ -284,12 +387,14 @@ def _rules(rules) -> list:
 def verdicts_dict(verdicts, scene: str | None = None, answers: str | None = None) -> dict:
     """The verdicts for ``check --json`` (SI values)."""
     wrong = sum(not v.ok for v in verdicts)
+    asked = sum(v.asked for v in verdicts)
     return {
         "scene": scene,
         "answers_file": answers,
         "all_right": wrong == 0,
-        "right": len(verdicts) - wrong,
+        "right": len(verdicts) - wrong - asked,
         "wrong": wrong,
+        "asked": asked,
         "answers": [v.to_dict() for v in verdicts],
     }
 

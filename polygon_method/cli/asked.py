@@ -6,9 +6,18 @@ answers are shown whether asked or not); the values given are ``check``'s to gra
 
 from __future__ import annotations
 
+import re
 from dataclasses import replace
 
-__all__ = ["asked_scene", "no_answers", "ANSWERS_HELP", "ASKED_HELP"]
+__all__ = [
+    "asked_scene",
+    "asked_verdicts",
+    "asked_lines",
+    "steps_answers",
+    "no_answers",
+    "ANSWERS_HELP",
+    "ASKED_HELP",
+]
 
 #: the option's help where the command checks the answers (``page``)
 ANSWERS_HELP = "a TOML file with an [answers] table to check"
@@ -54,3 +63,63 @@ def no_answers(args, what: str) -> None:
             "SCENE --answers FILE)",
             key="--answers",
         )
+
+
+def asked_verdicts(sol, file) -> tuple:
+    """The tool's answers to the questions asked without their answers (``v_C = "?"``) of
+    the scene's ``[answers]``, or of ``--answers FILE`` in its place (check's verdicts,
+    marked asked: one definition of each value); () where none is asked (a scene without
+    one pays a search of its text). A fault is one line naming ``file``, the key, its line."""
+    from ..common.errors import PolygonMethodError
+    from ..scene import asked_questions
+
+    try:
+        questions = asked_questions(sol.scene)
+        if not questions:
+            return ()
+        from ..check import asked_verdicts as verdicts
+
+        return verdicts(sol, questions)
+    except PolygonMethodError as exc:
+        raise exc.located(file)
+
+
+def asked_lines(verdicts) -> list:
+    """``solve``'s last lines: the answers to the questions asked, in the book's form
+    (``Answers asked: v_C = 0.3828 m/s; omega_CD = 4.785 rad/s cw``); [] where none is
+    asked."""
+    if not verdicts:
+        return []
+    from ..check.verdicts import asked_line
+
+    return ["", asked_line(verdicts)]
+
+
+def asked_json(verdicts) -> dict:
+    """``solve --json``'s ``answers_asked`` (each question's key, value in SI, unit, text
+    as a book gives it, the question as written, its line); {} where none is asked."""
+    if not verdicts:
+        return {}
+    from ..check.verdicts import asked_dict
+
+    return {"answers_asked": [asked_dict(v) for v in verdicts]}
+
+
+_SECTION = re.compile(r"^(?:## )?(\d+)\. ", re.M)
+
+
+def steps_answers(text: str, verdicts, fmt: str = "text") -> str:
+    """``steps``' text ``text`` with a last section, "N. Answers", the answers to the
+    questions asked (a line each, in the unit asked for), N the number after its last
+    section's; ``text`` itself where none is asked."""
+    if not verdicts:
+        return text
+    from ..check.verdicts import asked_text
+
+    numbers = [int(m.group(1)) for m in _SECTION.finditer(text)]
+    head = f"{max(numbers, default=0) + 1}. Answers"
+    if fmt == "markdown":
+        lines = [f"## {head}", ""] + [f"- {v.key} = {asked_text(v)}" for v in verdicts]
+    else:
+        lines = [head, "=" * len(head), ""] + [f"  - {v.key} = {asked_text(v)}" for v in verdicts]
+    return text.rstrip("\n") + "\n\n" + "\n".join(lines)

@@ -12,7 +12,7 @@ from pathlib import Path
 from ..common.errors import PolygonMethodError, SceneError
 from ..common.tolerances import SAME
 from .energy import check_cylinders, draw_engine_cycle, engine_cycle
-from .asked import no_answers
+from .asked import asked_json, asked_lines, asked_verdicts, no_answers, steps_answers
 from .files import check_outputs, is_stdout, write_outputs
 
 
@@ -23,6 +23,7 @@ def _cmd_solve(args) -> int:
 
     sol = solve(asked_scene(args, load_scene(args.scene, variants=False, answers=False)))
     cycle = engine_cycle(sol)  # an engine asked for its cycle: [indicator] or [flywheel]
+    asked = asked_verdicts(sol, getattr(args, "answers", None) or args.scene)  # "?" keys
     if args.json:
         d = sol.to_dict()
         from ..linkage.engine_values import engine_dict
@@ -32,6 +33,7 @@ def _cmd_solve(args) -> int:
             d["forces"]["engine"] = engine
         if cycle is not None:
             d["turning_moment"] = cycle.as_dict()
+        d.update(asked_json(asked))  # the "?" keys' answers
         print(json.dumps(d, indent=2, allow_nan=False))
     else:
         from ..text.report import solution_text
@@ -39,6 +41,8 @@ def _cmd_solve(args) -> int:
         print(solution_text(sol))
         if cycle is not None:
             print("\n" + "\n".join(cycle.lines(sol.scene)))
+        if asked:
+            print("\n".join(asked_lines(asked)))
     return 0
 
 
@@ -72,7 +76,8 @@ def _cmd_steps(args) -> int:
 
     sol = solve(asked_scene(args, load_scene(args.scene, variants=False, answers=False)))
     check_cylinders(sol.scene, sol)
-    print(steps_text(sol, fmt=args.format))
+    asked = asked_verdicts(sol, getattr(args, "answers", None) or args.scene)  # "?" keys
+    print(steps_answers(steps_text(sol, fmt=args.format), asked, args.format))
     return 0
 
 

@@ -19,7 +19,7 @@ import sys
 from pathlib import Path
 
 from ..common.errors import PolygonMethodError, SceneError
-from .asked import no_answers
+from .asked import asked_json, asked_lines, no_answers, steps_answers
 from .files import check_outputs, is_stdout, write_outputs
 
 __all__ = ["route"]
@@ -89,16 +89,34 @@ def _shows_all(args, command) -> None:
         )
 
 
+def _asked(scene, c) -> tuple:
+    """The tool's answers to the questions the scene asks without their answers
+    (``dE_max = "?"``): check's verdicts, marked asked; () where none is asked."""
+    questions = [a for a in scene.answers if a.asked]
+    if not questions:
+        return ()
+    from ..check.energy import cycle_verdicts
+
+    try:
+        return tuple(cycle_verdicts(scene, c, questions, None))
+    except PolygonMethodError as exc:
+        raise exc.located(scene.file)
+
+
 def _solve(args, scene) -> int:
     _shows_all(args, "solve")
     c = _solved(scene)
+    asked = _asked(scene, c)
     if args.json:
         d = {"title": scene.title, "scene": scene.file, "cycle": c.as_dict()}
+        d.update(asked_json(asked))  # the "?" keys' answers
         print(json.dumps(d, indent=2, allow_nan=False))
     else:
         from ..text.energy import cycle_text
 
         print(cycle_text(scene, c))
+        if asked:
+            print("\n".join(asked_lines(asked)))
     return 0
 
 
@@ -106,8 +124,11 @@ def _steps(args, scene) -> int:
     from ..text.energy import cycle_steps
 
     _shows_all(args, "steps")
-    text = cycle_steps(scene, _solved(scene))
-    print(f"```\n{text}\n```" if getattr(args, "format", "text") == "markdown" else text)
+    c = _solved(scene)
+    text = cycle_steps(scene, c)
+    markdown = getattr(args, "format", "text") == "markdown"
+    text = steps_answers(text, _asked(scene, c), "text")
+    print(f"```\n{text}\n```" if markdown else text)
     return 0
 
 

@@ -35,6 +35,8 @@ __all__ = [
     "did_you_mean",
     "implausible",
     "ANSWER_UNITS",
+    "question",
+    "question_unit",
 ]
 
 from .unit_tables import ABSURD, ANSWER_UNITS, LENGTH_UNITS, TINY, UNITS
@@ -141,6 +143,45 @@ def _unit_factor(unit: str, kind: str, where: str) -> float:
         f"unknown unit '{_clip(unit)}'{did_you_mean(unit, table)}; use {format_unit_list(kind)}",
         key=where,
     )
+
+
+#: the kinds of quantity with a sense (cw, ccw)
+_TURNING_KINDS = ("angular_velocity", "angular_acceleration", "torque")
+#: a question asked without its answer: ``"?"``, or ``"? rpm"`` (the unit of its answer)
+_QUESTION = re.compile(r"^\s*\?\s*(.*?)\s*$", re.S)
+
+
+def question(raw) -> str | None:
+    """The unit a question asks its answer in (``"? rpm"``: ``"rpm"``; a bare ``"?"``:
+    ``""``); None where ``raw`` is no question (a value).
+
+    >>> question("?"), question(" ? m/s "), question("0.4 m/s"), question(0.4)
+    ('', 'm/s', None, None)
+    """
+    if not isinstance(raw, str):
+        return None
+    m = _QUESTION.match(raw)
+    return None if m is None else m.group(1)
+
+
+def question_unit(unit: str, kind: str, where: str = "") -> float:
+    """The factor to SI of a question's unit (``"rpm"`` of ``"? rpm"``), checked to be a
+    unit of ``kind``; a sense after it is refused (the answer gives the sense)."""
+    words = unit.split()
+    if words and words[-1].lower() in _SENSES and kind not in _TURNING_KINDS:
+        raise SceneError(
+            f"'? {_clip(unit)}': {kind.replace('_', ' ')} has no sense cw or ccw: write "
+            f'"? {" ".join(words[:-1]) or format_unit_list(kind).split(", ")[0]}"',
+            key=where,
+        )
+    if words and words[-1].lower() in _SENSES:
+        raise SceneError(
+            f"'? {_clip(unit)}': a question asks for the sense too: write "
+            f'"? {" ".join(words[:-1]) or format_unit_list(kind).split(", ")[0]}" '
+            "(the answer gives cw or ccw)",
+            key=where,
+        )
+    return _unit_factor(unit, kind, where)
 
 
 def parse_quantity(

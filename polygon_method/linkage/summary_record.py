@@ -103,7 +103,13 @@ class Summary:
                 f"crank {inp.crank} at {abs(inp.omega):.6g} rad/s "
                 f"{'ccw' if inp.omega > 0 else 'cw'}"
                 + (f", {inp.alpha:+.6g} rad/s^2" if inp.alpha else "")
-                + " at every angle; "
+                + " at every angle"
+                + (
+                    f" (the two cranks' speeds found from {', '.join(f'{g.key} = {g.text}' for g in inp.found_from)}, held by the train's fixed ratios)"
+                    if inp.found_from
+                    else ""
+                )
+                + "; "
             )
         if inp.given is not None and self.evaluated < self.requested:
             held = (

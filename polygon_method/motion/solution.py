@@ -301,8 +301,7 @@ class Solution(Motion):
     def _input_dict(self) -> dict:
         """The JSON's input: the block driver's record or the crank's angle and rates, a second
         input's, and the stated velocity it was found from (with its condition)."""
-        sc = self.scene
-        inp = sc.input
+        sc, inp = self.scene, self.scene.input
         own = self.plan.steps[0].input_record(sc)  # a block driver's place and rates
         d = (
             own
@@ -316,6 +315,7 @@ class Solution(Motion):
                 if two.block is None
                 else self.plan.steps[1].second_record(sc)
             )  # a collar's
+        d.update(inp.found_record())  # two inputs' speeds found from other links' speeds
         res = self.plan.given
         if res is not None:
             g = inp.given

@@ -30,6 +30,7 @@ from ..solver.errorbound import error_bounds
 from ..common.errors import TOL, SceneError
 from ..solver.kinematics import Motion
 from ..solver.compiler import compile_plan
+from ..solver.two_given import held_over
 from ..scene import Scene
 from ..solver.tracking import CHUNK, Domain, Sweeper, array_motion, run_arrays, valid_mask
 from ..common.units import ABSURD
@@ -317,6 +318,8 @@ def evaluate_all(sw: Sweeper, theta, chunk):
         fr = sw.evaluate(th)
         for idx, h in sw.near_change_points(th):
             _patch(fr, sw.richardson(th[idx], h), idx)
+        if sw.plan.scene.input.found_from:  # two inputs' speeds found elsewhere: held?
+            held_over(sw.plan.scene, fr.W, fr.Al)
         yield slice(s, min(s + chunk, n)), fr
 
 

@@ -19,7 +19,7 @@ import math
 from html import escape
 from importlib.resources import files
 
-from ..check.verdicts import also_words, correct_text, percent_text
+from ..check.verdicts import also_words, asked_text, correct_text, count_text, percent_text
 from ..draw.style import (
     BODY_EDGE,
     BODY_FACE,
@@ -79,6 +79,9 @@ def check_html(verdicts, title: str) -> str:
         tol = "-" if not math.isfinite(v.tolerance) else f"{100 * v.tolerance:.2g}\u00a0%"
         verdict = '<span class="right">right</span>' if v.ok else '<span class="wrong">WRONG</span>'
         why = "" if v.ok else escape(v.diagnosis or "none of the known mistakes explains it")
+        if v.asked:  # a question without its answer: the value, not graded
+            verdict = '<span class="asked">asked</span>'
+            why = escape(f"asked, no answer given: the tool's value is {asked_text(v)}")
         if v.also:  # the same quantity under two names: graded once
             why = (why + " " if why else "") + escape(also_words(v))
         rows.append(
@@ -86,15 +89,13 @@ def check_html(verdicts, title: str) -> str:
             + "".join(f"<td>{escape(c)}</td>" for c in (v.key, v.raw, correct_text(v), err, tol))
             + f"<td>{verdict}</td><td>{why}</td></tr>"
         )
-    wrong = sum(not v.ok for v in verdicts)
-    rules = "; ".join(sorted({v.rule for v in verdicts}))
+    rules = "; ".join(sorted({v.rule for v in verdicts if not v.asked}))
     return (
         f'<p>{escape(title)}</p><div class="scroll"><table id="check"><thead><tr><th>'
         "answer</th><th>given</th><th>correct</th><th>error</th><th>tolerance</th><th>"
         f"verdict</th><th>mistake</th></tr></thead><tbody>{''.join(rows)}</tbody></table></div>"
-        f"<p>tolerance: {escape(rules)}. {len(verdicts) - wrong} of {len(verdicts)} right"
-        + (f", {wrong} wrong" if wrong else "")
-        + ".</p>"
+        + (f"<p>tolerance: {escape(rules)}. " if rules else "<p>")
+        + f"{escape(count_text(verdicts))}.</p>"
     )
 
 

@@ -26,6 +26,7 @@ plan's business).
 
 from __future__ import annotations
 
+from .answer_files import asked_questions
 from .reading import (
     key_line,
     load_answers,
@@ -77,6 +78,7 @@ __all__ = [
     "ANSWER_KINDS",
     "parse_answers",
     "load_answers",
+    "asked_questions",
     "key_line",
     "scene_table",
     "scene_from_table",

@@ -3,11 +3,14 @@ student's, with their name and variant), read against the scene it answers."""
 
 from __future__ import annotations
 
+import re
+
 from ..common.errors import PolygonMethodError, SceneError
 from .file_text import MAX_SCENE_BYTES, _path_of, _read_start, wide_text
 from .loader import _Loader
 from .records import Scene
-from .source import parsed_table
+from ..common.units import question
+from .source import parsed_table, toml_lines, toml_table
 from .table_help import _suggest
 
 _ANSWER_FILE_KEYS = ("answers", "title", "student", "name", "notes", "source", "variant")
@@ -31,6 +34,49 @@ def parse_answers(
     :class:`SceneError` naming the key.
     """
     raw = _answer_table(text, scene, file)
+    loader = _answer_loader(raw, text, file, scene)
+    tolerance, answers = loader.answers(
+        set(scene.point_names), scene.sliders, scene.pins, scene.loads
+    )
+    student = _student(raw, loader, file)
+    if not with_variant:
+        return (tolerance, tuple(answers)) + ((student,) if with_student else ())
+    variant = _variant(raw, loader, file)
+    return (tolerance, tuple(answers), (variant.strip() if variant else None)) + (
+        (student,) if with_student else ()
+    )
+
+
+#: a value that may be a question in a TOML text: ``= "?``, ``= '?`` (a scene without one
+#: pays for nothing more than this search)
+_QUESTION_TEXT = re.compile(r"""=[ \t]*["'][ \t]*\?""")
+
+
+def asked_questions(scene: Scene) -> tuple:
+    """The questions asked without their answers (``v_C = "?"``, ``"? rpm"``), each an
+    :class:`Answer` whose value is None, in their order: among ``scene.answers`` where they
+    were read (``check``, or an answer file put in their place: ``--answers FILE``), else
+    from the scene's text (``solve``, ``steps`` leave ``[answers]`` unread: only its
+    ``"?"`` keys are read here, checked as ``check`` checks them, and only where the text
+    has one). A fault in one is a :class:`SceneError` naming its key and line."""
+    if scene.answers:
+        return tuple(a for a in scene.answers if a.asked)
+    text = scene._text
+    if not text or "?" not in text or not _QUESTION_TEXT.search(text):
+        return ()
+    table = toml_table("\n".join(toml_lines(text))).get("answers")
+    if not isinstance(table, dict):
+        return ()
+    asked = {k: v for k, v in table.items() if k != "tolerance" and question(v) is not None}
+    if not asked:
+        return ()
+    loader = _answer_loader({"answers": asked}, text, scene.file, scene)
+    return tuple(loader.answers(set(scene.point_names), scene.sliders, scene.pins, scene.loads)[1])
+
+
+def _answer_loader(raw, text, file, scene) -> _Loader:
+    """A reader of ``raw``'s ``[answers]`` against ``scene`` (its names, links, sliders,
+    forces), its lines found in ``text``."""
     loader = _Loader(raw, text, file)
     loader.check_integers()
     loader.unit = scene.units
@@ -42,16 +88,7 @@ def parse_answers(
     loader.driving_wheel = scene.input.wheel
     loader.rolling_pairs = scene.rolling
     loader.ground = scene.ground
-    tolerance, answers = loader.answers(
-        set(scene.point_names), scene.sliders, scene.pins, scene.loads
-    )
-    student = _student(raw, loader, file)
-    if not with_variant:
-        return (tolerance, tuple(answers)) + ((student,) if with_student else ())
-    variant = _variant(raw, loader, file)
-    return (tolerance, tuple(answers), (variant.strip() if variant else None)) + (
-        (student,) if with_student else ()
-    )
+    return loader
 
 
 def _answer_table(text, scene, file) -> dict:

@@ -9,8 +9,9 @@ import math
 import re
 
 from ..common.errors import printable
-from ..common.units import UNITS, decimal_comma
+from ..common.units import UNITS, decimal_comma, question
 from .records import ANSWER_KINDS, UNDER_BLOCK_KINDS, Answer, split_name
+from .questions import _Questions, unit_kind
 from .table_help import _suggest, _which_point
 
 __all__ = [
@@ -19,6 +20,7 @@ __all__ = [
     "ENGINE_ANSWERS",
     "ENGINE_PER_PISTON",
     "under_block_names",
+    "unit_kind",
 ]
 
 #: a centre answered as at infinity, optionally with the direction of its lines
@@ -104,7 +106,7 @@ _KINDS = {**ANSWER_KINDS, **PAIR_ANSWER_KINDS}
 DRIVER_ANSWERS = {"force": "force", "torque2": "torque", "force2": "force"}
 
 
-class _Answers:
+class _Answers(_Questions):
     """The loader's ``[answers]`` methods (mixed into the loader with the other tables)."""
 
     def _engine_value(self, value, kind, key) -> float:
@@ -158,6 +160,12 @@ class _Answers:
         pin_names = {p.point for p in pins}
         for key, value in spec.items():
             if key == "tolerance":
+                if question(value) is not None:
+                    raise self.error(
+                        'tolerance is the answers\' allowance, a per cent ("3%"): not a question',
+                        "answers",
+                        key,
+                    )
                 q = self.qty(value, "percent", "answers", key, default_unit="%").value
                 if not 0 < q < 1:
                     raise self.error(
@@ -310,7 +318,15 @@ class _Answers:
     def answer(self, key, value, known, slider_names, pin_names, loads):
         """One key of [answers] (or of a student's file) and its value: an :class:`Answer`,
         the key checked against the scene (what it names is there, the force analysis
-        asked for where it is a force) and the value read in the key's kind."""
+        asked for where it is a force) and the value read in the key's kind; or a question
+        asked without its answer (``"?"``, ``"? rpm"``: :meth:`question`)."""
+        unit = question(value)
+        if unit is not None:
+            return self.question(key, unit, known, slider_names, pin_names, loads)
+        return self._answer(key, value, known, slider_names, pin_names, loads)
+
+    def _answer(self, key, value, known, slider_names, pin_names, loads):
+        """:meth:`answer` of a value (not a question)."""
         line = self.line_of("answers", key)
         forces = getattr(self, "scene_forces", None)  # an answer file: its scene's
         if forces is None:

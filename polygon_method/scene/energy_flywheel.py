@@ -9,7 +9,8 @@ from __future__ import annotations
 import math
 import re
 
-from ..common.units import TINY, did_you_mean
+from ..common.errors import SceneError
+from ..common.units import TINY, did_you_mean, question, question_unit
 from ..common.tolerances import LEAST_FLUCTUATION
 from .energy_records import Rim
 from .records import Answer
@@ -259,6 +260,9 @@ class _RimReader:
                 key,
             )
         kind = CYCLE_ANSWERS[key]
+        unit = question(value)
+        if unit is not None:  # a question without its answer ("?", "? kW")
+            return self._question(key, kind, unit)
         raw = value.replace(",", ".") if isinstance(value, str) and "." not in value else value
         if kind == "power":
             m = _NUM.match(raw) if isinstance(raw, str) else None
@@ -272,6 +276,23 @@ class _RimReader:
         if not math.isfinite(v):
             raise self.err(f"{key} = {value!r}: not a finite number", t, key)
         return Answer(key, key, (), v, None, str(value), self.ld.line_of(t, key))
+
+    def _question(self, key, kind, unit):
+        """``dE_max = "?"`` (or ``"? kJ"``: the unit its answer is to be given in): an
+        :class:`Answer` whose value is None (``asked``), the unit one of the key's kind."""
+        t = "answers"
+        if unit:
+            if kind == "power" and unit not in _POWER:
+                raise self.err(f'{key} = "? {unit}": a power\'s unit: W, kW, MW or hp', t, key)
+            if kind == "percent" and unit != "%":
+                raise self.err(f'{key} = "? {unit}": a fraction, "?" or "? %"', t, key)
+            if kind not in ("power", "percent"):
+                try:
+                    question_unit(unit, kind, "")
+                except SceneError as exc:
+                    raise self.err(exc.message, t, key) from None
+        raw = f"? {unit}".rstrip()
+        return Answer(key, key, (), None, None, raw, self.ld.line_of(t, key), unit or None)
 
 
 def _rpm(w):

@@ -9,7 +9,8 @@ import re
 from ..common.errors import printable
 from .piston_words import towards_the_crank
 from .rate_words import RATED as _RATED
-from .records import GIVEN_KINDS, GivenRate, split_name
+from .crank_speed import second_crank_angle
+from .records import GIVEN_KINDS, INPUT_KEYS, GivenRate, Input, split_name
 
 _WAYS = r"(extending|retracting|lengthening|shortening|outwards?|inwards?)"
 
@@ -49,7 +50,7 @@ def _given_key(key):
 class _GivenMotion:
     """The reader's methods for a motion given on another quantity in [input]."""
 
-    def given_rate(self, key, rate_keys, spec, index) -> GivenRate:
+    def given_rate(self, key, rate_keys, spec, index, table="input") -> GivenRate:
         """``omega_BC = "3 rad/s cw"``, ``vs_B = "1.5 m/s up"``, ``v_B = "3 m/s down"`` in
         [input], with its rate (``alpha_BC``, ``as_B``, ``a_B``) if given."""
         kind, names = _given_key(key)
@@ -60,7 +61,7 @@ class _GivenMotion:
                 raise self.error(
                     f"{r} does not go with {key}: the given motion's rate is "
                     f"{rate_kind}_{'-'.join(names) if len(names) > 1 and any(len(n) > 1 for n in names) else ''.join(names)}",
-                    "input",
+                    table,
                     r,
                 )
         rate_key = rate_keys[0] if rate_keys else None
@@ -70,20 +71,20 @@ class _GivenMotion:
         direction = None
         if kind == "omega":
             if len(names) != 2 or frozenset(names) not in index:
-                raise self.error(f"no link {''.join(names)} in [links]", "input", key)
-            value = self.qty(raw, "angular_velocity", "input", key, need_sense=True).value
+                raise self.error(f"no link {''.join(names)} in [links]", table, key)
+            value = self.qty(raw, "angular_velocity", table, key, need_sense=True).value
             rate = (
                 None
                 if raw_rate is None
                 else (
                     0.0
                     if raw_rate == 0
-                    else self.rated(raw_rate, "angular_acceleration", "input", rate_key, value)
+                    else self.rated(raw_rate, "angular_acceleration", table, rate_key, value)
                 )
             )
             if rate is None and raw_rate is not None:
                 rate = self.qty(
-                    raw_rate, "angular_acceleration", "input", rate_key, need_sense=True
+                    raw_rate, "angular_acceleration", table, rate_key, need_sense=True
                 ).value
             names = index[frozenset(names)].points
         else:
@@ -91,7 +92,7 @@ class _GivenMotion:
             if kind == "vs" and point is None:  # a cylinder's rate of extension
                 cyl = self.find_cylinder(names)
                 if cyl is None:
-                    raise self.error(f"no cylinder {'-'.join(names)} in [cylinders]", "input", key)
+                    raise self.error(f"no cylinder {'-'.join(names)} in [cylinders]", table, key)
                 names, u = (cyl.key,), (1.0, 0.0)  # signed: + extending
                 raw = _extending(raw)
                 if raw_rate is not None and not (
@@ -101,18 +102,18 @@ class _GivenMotion:
             elif kind == "vs":
                 sl = self.slider_points.get(point)
                 if sl is None:
-                    raise self.error(f"no slider {''.join(names)} in [sliders]", "input", key)
+                    raise self.error(f"no slider {''.join(names)} in [sliders]", table, key)
                 u = getattr(sl, "u", None)
                 raw, raw_rate = towards_the_crank(self, sl, (raw, key), (raw_rate, rate_key))
             else:
                 if point is None or point not in self.known:
-                    raise self.error(f"no point {''.join(names)} in the scene", "input", key)
+                    raise self.error(f"no point {''.join(names)} in the scene", table, key)
                 u = None
             value, direction = self.directed(raw, "velocity", key, u, need=kind == "v")
             rate = None
             if raw_rate is not None:  # a point's speed: its rate is of the speed (+1)
                 rate = self.rated(
-                    raw_rate, "acceleration", "input", rate_key, value if kind == "vs" else 1.0
+                    raw_rate, "acceleration", table, rate_key, value if kind == "vs" else 1.0
                 )
             if raw_rate is not None and rate is None:
                 rate, _ = self.directed(
@@ -122,10 +123,62 @@ class _GivenMotion:
             raise self.error(
                 f"{key} is zero: it does not set the crank's speed (give the "
                 "crank's speed instead)",
-                "input",
+                table,
                 key,
             )
         return GivenRate(key, kind, tuple(names), value, rate, direction, text, rate_key, rate_text)
 
     def find_cylinder(self, names):
         return next((c for c in self.cylinder_list if {c.barrel, c.rod} == set(names)), None)
+
+    def two_given_checks(self, given_keys, second):
+        """With two inputs, a speed given elsewhere is a link's (``omega_XY``), beside a
+        second crank (not a collar)."""
+        if not (given_keys and second is not None):
+            return
+        if _given_key(given_keys[0])[0] != "omega" or second.block is not None:
+            raise self.error(
+                f"{given_keys[0]} with two inputs: a speed is given on a link (omega_XY, "
+                "its rate alpha_XY) beside a second crank, or the crank's own",
+                "input",
+                given_keys[0],
+            )
+
+    def second_given(self, spec):
+        """The speed of the second input given on another link (``omega_XY``, with its rate
+        ``alpha_XY``) in ``[input.second]``, read as the first input's; None where it gives
+        its crank's own speed."""
+        keys = [k for k in spec if k not in INPUT_KEYS and _given_key(k) is not None]
+        given = [k for k in keys if _given_key(k)[0] in GIVEN_KINDS]
+        if not given:
+            return None
+        if len(given) > 1 or _given_key(given[0])[0] != "omega" or "speed" in spec:
+            raise self.error(
+                f"{given[-1]}: the second input's speed is its crank's (speed) or one link's "
+                "(omega_XY, its rate alpha_XY), one only",
+                "input.second",
+                given[-1],
+            )
+        rates = [k for k in keys if k not in given]
+        g = self.given_rate(given[0], rates, spec, self.index, "input.second")
+        if g.rate is not None and "acceleration" in spec:
+            raise self.error(
+                f"[input.second] gives both the crank's acceleration and {g.rate_key}: one only",
+                "input.second",
+                g.rate_key,
+            )
+        return g
+
+    def second_given_input(self, spec, given, link, pivot, ground):
+        """The second crank whose speed is found from ``given`` when the scene is compiled
+        (its omega None until then; its alpha None unless its own is stated)."""
+        angle = second_crank_angle(self, spec["angle"], link, pivot, ground, None)
+        acc = spec.get("acceleration")
+        alpha = None
+        if isinstance(acc, (int, float)) and not isinstance(acc, bool) and acc == 0:
+            alpha = 0.0
+        elif acc is not None:
+            alpha = self.qty(
+                acc, "angular_acceleration", "input.second", "acceleration", need_sense=True
+            ).value
+        return Input(link.key, pivot, link.other(pivot), angle, None, alpha, given.text, given)

@@ -91,13 +91,8 @@ class _Input(_BlockInput, _GivenMotion, _Rates):
             spec = dict(spec, angle=math.degrees(placed.near) if placed.near is not None else 0)
         angle, speed, said = self._angle_and_speed(spec, given_keys, link, pivot, ground)
         alpha = self._crank_acceleration(spec, given_keys, speed)
-        if given_keys and second is not None:
-            raise self.error(
-                f"{given_keys[0]} with two inputs: give each crank's speed (a "
-                "motion given elsewhere sets one input only)",
-                "input",
-                given_keys[0],
-            )
+        self.two_inputs = second is not None
+        self.two_given_checks(given_keys, second)
         if given_keys:  # (the crank as stated, for "the piston moves towards the crank")
             self.crank_now = None if placed is not None else (pivot, tip, angle, link)
             given = self._given_motion(given_keys[0], rate_keys, spec, index)
@@ -112,6 +107,7 @@ class _Input(_BlockInput, _GivenMotion, _Rates):
                 given,
                 said=said,
                 placed=placed,
+                second=second,
             )
         if rate_keys:
             raise self.error(
@@ -382,8 +378,9 @@ class _Input(_BlockInput, _GivenMotion, _Rates):
                     "block",
                 )
             return self.collar_input(spec, sl, ground, table="input.second")
+        given = self.second_given(spec)
         for k in spec:
-            if k not in INPUT_KEYS:
+            if k not in INPUT_KEYS and (given is None or k not in (given.key, given.rate_key)):
                 why = (
                     " (a block driven along a turning link, the collar on a rotating rod, "
                     "is not solved yet; a block on a fixed guide drives alone as [input] "
@@ -393,11 +390,11 @@ class _Input(_BlockInput, _GivenMotion, _Rates):
                 )
                 raise self.error(
                     f"unknown key{_suggest(k, INPUT_KEYS)}; the second input "
-                    f"takes crank, angle, speed, acceleration{why}",
+                    f"takes crank, angle, speed (or a link's, omega_XY), acceleration{why}",
                     "input.second",
                     k,
                 )
-        for k in ("crank", "angle", "speed"):
+        for k in ("crank", "angle") + (() if given is not None else ("speed",)):
             if k not in spec:
                 raise self.error(f"[input.second] has no {k}", "input.second")
         link, pts = self.find_link(spec["crank"], "input.second", "crank")
@@ -409,6 +406,8 @@ class _Input(_BlockInput, _GivenMotion, _Rates):
                 "crank",
             )
         pivot = on_ground[0]
+        if given is not None:
+            return self.second_given_input(spec, given, link, pivot, ground)
         speed = crank_speed(self, spec["speed"], link, "input.second")
         angle = second_crank_angle(self, spec["angle"], link, pivot, ground, speed.value)
         if speed.value == 0:

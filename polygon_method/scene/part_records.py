@@ -256,10 +256,22 @@ class Input:
     #: a driving wheel's motion given on its centre (``vs_C``, ``as_C``) instead of its own
     #: omega and alpha: the keys so given (the step table says which were given)
     wheel_given: tuple = ()
+    #: with two inputs, the speeds given on other links (:class:`GivenRate`) that the
+    #: cranks' speeds were found from when the scene was compiled (then ``given`` is None
+    #: and ``omega``, ``alpha`` of both cranks are those found); empty otherwise
+    found_from: tuple = field(default=(), compare=False)
     #: an angle the scene gave in a book's words: (words, the angle they gave (rad), the
     #: slips a reader of them might make (:class:`~.angles.Slip`), the note saying how
     #: they were read); empty for a plain angle
     said: tuple = field(default=(), compare=False)
+
+    def found_record(self) -> dict:
+        """The JSON input's ``found_from``: the speeds given on other links (SI, ccw +)
+        that two cranks' speeds were found from; {} where there are none."""
+        if not self.found_from:
+            return {}
+        keys = ("key", "value", "rate_key", "rate")
+        return {"found_from": [{k: getattr(g, k) for k in keys} for g in self.found_from]}
 
     @property
     def angle_words(self) -> str | None:
@@ -314,13 +326,21 @@ class Load:
 @dataclass(frozen=True)
 class Answer:
     """One answer of ``[answers]`` (or of a student's file): its key, what it names, its value in SI
-    and its sense as given."""
+    and its sense as given; or a question asked without its answer (``v_C = "?"``, ``"? rpm"``):
+    ``value`` None, ``unit`` the unit its answer is to be given in (None: the SI unit)."""
 
     key: str
     kind: str  # prefix of ANSWER_KINDS, "torque", "centre", or "vu"/"au" (the guide's point
     # under a block: names is the slider's key)
     names: tuple  # points or a link's points; (i, j) link numbers for a centre
-    value: float  # SI; signed when a sense was given; (x, y) in m for a centre
+    value: float | tuple | None  # SI; signed when a sense was given; (x, y) in m for a
+    # centre; None for a question asked without its answer
     sense: str | None
     raw: str
     line: int | None = None
+    unit: str | None = None  # a question's unit ("? rpm": "rpm"), as written
+
+    @property
+    def asked(self) -> bool:
+        """A question asked without its answer (``"?"``): not graded, its value shown."""
+        return self.value is None

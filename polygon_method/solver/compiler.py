@@ -37,6 +37,7 @@ from ..common.errors import AssemblyError, PolygonMethodError, SceneError
 from ..common.numbers import in_units, quiet
 from ..common.tolerances import SAME, TOL
 from .completion import gas_towards_crank, given_completed, loads_along_links, place
+from .two_given import complete_two, needs_two, trial_speeds
 from .mobility import gruebler, leftover
 from .plan import Bodies, Dims, Plan, _pin_entries, first_tier
 from .reach import reach_words
@@ -85,8 +86,10 @@ def compile_plan(scene: Scene) -> Plan:
             notes = ()
             if scene.input.placed is not None and not scene.input.placed.found:
                 notes = place(
-                    scene, lambda trial: _Compiler(trial).run()
+                    scene, lambda trial: _Compiler(trial_speeds(trial)).run()
                 )  # the crank's angle that gives the stated position
+            if needs_two(scene.input):  # two inputs, a speed given on another link
+                notes = notes + complete_two(scene, lambda trial: _Compiler(trial).run())
             plan = _Compiler(scene).run()
             if notes:
                 plan = replace(plan, notes=notes + plan.notes)
@@ -100,8 +103,10 @@ def compile_plan(scene: Scene) -> Plan:
             while _BY_CONTENT and len(_BY_CONTENT) >= _KEEP:
                 _BY_CONTENT.pop(next(iter(_BY_CONTENT)))
             _BY_CONTENT[key] = plan
-    if scene.input.omega is None or (
-        scene.input.placed is not None and not scene.input.placed.found
+    if (
+        scene.input.omega is None
+        or needs_two(scene.input)
+        or (scene.input.placed is not None and not scene.input.placed.found)
     ):
         object.__setattr__(scene, "input", plan.scene.input)  # completed when compiled
     if plan.scene is not scene:  # a scene of the same content: its own loads, masses, ...

@@ -173,7 +173,9 @@ def _angular_velocity_items(sol):
             items.append(
                 f"omega_{lk.key} = {fmt(abs(w))} rad/s {sense_word(w)} "
                 + (
-                    "(the input)"
+                    f"(the crank's, {sc.input.speed_text})"
+                    if sc.input.found_from and sc.input.speed_text.startswith("found from")
+                    else "(the input)"
                     if sc.input.given is None
                     else f"(the crank's, found from {sc.input.given.key})"
                 )
@@ -211,17 +213,23 @@ def _sliding_items(sol):
                 f"vs_{s.key} = 0 m/s: {s.point} does not slide along {guide} at this instant"
             )
             continue
-        if isinstance(s, FixedPath):
-            along = f"along the {guide_words(s.label)} ({'+' if vs >= 0 else '-'} direction)"
-        elif hasattr(s, "yoke"):
-            along = (
-                f"along the {guide_words(s.label, 'slot', f'yoke {s.yoke}')} ({'+' if vs >= 0 else '-'} "
-                "direction), relative to the yoke"
-            )
-        else:
-            along = f"along {s.guide}, {'from ' + s.first + ' towards ' + s.second if vs >= 0 else 'from ' + s.second + ' towards ' + s.first}"
-        out.append(f"vs_{s.key} = {fmt(abs(vs))} m/s {along}")
+        out.append(f"vs_{s.key} = {fmt(abs(vs))} m/s {sliding_words(s, vs)}")
     return out
+
+
+def sliding_words(s, value) -> str:
+    """Which way a sliding velocity or acceleration ``value`` (signed along the guide of
+    slider ``s``) points, in words: "along QR, from Q towards R", "along the horizontal
+    path (- direction)"."""
+    if isinstance(s, FixedPath):
+        return f"along the {guide_words(s.label)} ({'+' if value >= 0 else '-'} direction)"
+    if hasattr(s, "yoke"):
+        return (
+            f"along the {guide_words(s.label, 'slot', f'yoke {s.yoke}')} "
+            f"({'+' if value >= 0 else '-'} direction), relative to the yoke"
+        )
+    a, b = (s.first, s.second) if value >= 0 else (s.second, s.first)
+    return f"along {s.guide}, from {a} towards {b}"
 
 
 def _rubbing_items(sol):
@@ -444,7 +452,12 @@ def acceleration_section(doc, sol, ascale):
             items.append(
                 (
                     f"alpha_{lk.key} = {fmt(abs(al))} rad/s^2 {sense_word(al)} "
-                    + ("(the input)" if sc.input.given is None else "(the crank's, found above)")
+                    + (
+                        "(the input)"
+                        if sc.input.given is None
+                        and not (sc.input.found_from and sc.input.speed_text.startswith("found"))
+                        else "(the crank's, found above)"
+                    )
                 ).replace("  ", " ")
             )
             continue

@@ -94,6 +94,7 @@ def _given_lines(sol: Solution) -> list[str]:
         lines.append(
             f"second input: crank {two.crank} at {math.degrees(two.angle):g} deg, "
             f"{fmt_angular(two.omega, 'rad/s')}"
+            + (f" ({two.speed_text})" if two.speed_text.startswith("found from") else "")
             + (f", {fmt_angular(two.alpha, 'rad/s^2')}" if two.alpha else "")
             + " (two degrees of freedom)"
         )

@@ -38,6 +38,7 @@ import textwrap
 from dataclasses import replace
 
 from ..solver.given import working
+from ..solver.two_given import found_note
 from ..steps.block import at_rest_rate
 from ..common.numbers import fmt, sense_word
 from .forces import force_blocks
@@ -145,6 +146,9 @@ def _speed_working(sol) -> tuple[str, str]:
     w = inp.omega
     name = f"omega_{inp.crank}"
     result = f"{fmt(abs(w))} rad/s {sense_word(w)}"
+    found = found_note(sol.plan)
+    if found is not None:  # two inputs' speeds found from speeds on other links
+        return found, result
     lines = working(sol.plan, fmt)
     if lines is not None:  # the motion given on another quantity: scaled from 1 rad/s
         return "; ".join(lines), result
@@ -344,7 +348,9 @@ def _input(doc, sol):
             f"alpha_{inp.crank} = {fmt(abs(inp.alpha))} rad/s^2 "
             f"{sense_word(inp.alpha)} "
             + (
-                "(given)"
+                "(found above)"
+                if inp.found_from and inp.speed_text.startswith("found from")
+                else "(given)"
                 if inp.given is None
                 else f"(found from {inp.given.rate_key or 'the given motion'}, above)"
             )
@@ -363,7 +369,8 @@ def _input(doc, sol):
         r2 = sc.link(two.crank).length
         items.append(
             f"the second input, {two.crank}: omega_{two.crank} = "
-            f"{fmt(abs(two.omega))} rad/s {sense_word(two.omega)} (given); v_{two.tip} "
+            f"{fmt(abs(two.omega))} rad/s {sense_word(two.omega)} "
+            f"({'found above' if two.speed_text.startswith('found from') else 'given'}); v_{two.tip} "
             f"= {fmt(abs(two.omega))} x {fmt(r2, 5)} = {fmt(sol.speed(two.tip))} m/s, "
             f"perpendicular to {two.crank}; alpha_{two.crank} = "
             f"{fmt(abs(two.alpha))} rad/s^2 {sense_word(two.alpha)}"

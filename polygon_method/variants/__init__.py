@@ -196,7 +196,7 @@ class VariantSet:
     exhaustive: bool  # every combination was screened
     rejected: dict  # why candidates were turned down -> how many
     linkage: str
-    questions: tuple  # (key, kind, names, unit, signed)
+    questions: tuple  # (key, kind, names, unit, signed, the unit asked or None)
 
     def shortfall(self) -> str | None:
         """One line when fewer variants than asked were found, else None."""
@@ -222,7 +222,9 @@ def questions(scene: Scene) -> tuple:
     """What the answer key gives: the base scene's ``[answers]`` keys where it has them
     (centres aside), else every moving point's speed and acceleration, every moving link's
     omega and alpha, each slider's sliding velocity and acceleration, the input torque.
-    Each as (key, kind, names, unit, signed)."""
+    Each as (key, kind, names, unit, signed, the unit a question asks its answer in: "rpm"
+    of ``omega_BC = "? rpm"``, else None). A key asked without its answer (``"?"``) is a
+    question as any other: the base's values are never the variants'."""
     asked = [a for a in scene.answers if a.kind != "centre"]
     if asked:
         return tuple(
@@ -232,6 +234,7 @@ def questions(scene: Scene) -> tuple:
                 tuple(a.names),
                 ANSWER_UNITS[a.kind] if a.kind in ANSWER_UNITS else ENGINE_KEYS[a.kind][1],
                 a.kind in ("omega", "alpha", "vs", "as", "torque", "torque2"),
+                getattr(a, "unit", None),
             )
             for a in asked
         )
@@ -239,27 +242,27 @@ def questions(scene: Scene) -> tuple:
     ground = set(scene.ground)
     for p in scene.point_names:
         if p not in ground:
-            out.append((f"v_{p}", "v", (p,), "m/s", False))
+            out.append((f"v_{p}", "v", (p,), "m/s", False, None))
     for p in scene.point_names:
         if p not in ground:
-            out.append((f"a_{p}", "a", (p,), "m/s^2", False))
+            out.append((f"a_{p}", "a", (p,), "m/s^2", False, None))
     from ..scene import split_name
 
     # the crank's omega is given, unless the scene gives the motion on another quantity
     crank = scene.input.crank if scene.input.given is None else None
     for lk in scene.links:
         if not (lk.p in ground and lk.q in ground) and lk.key != crank:
-            out.append((f"omega_{lk.key}", "omega", split_name(lk.key), "rad/s", True))
+            out.append((f"omega_{lk.key}", "omega", split_name(lk.key), "rad/s", True, None))
     for lk in scene.links:
         if not (lk.p in ground and lk.q in ground) and lk.key != crank:
-            out.append((f"alpha_{lk.key}", "alpha", split_name(lk.key), "rad/s^2", True))
+            out.append((f"alpha_{lk.key}", "alpha", split_name(lk.key), "rad/s^2", True, None))
     for s in scene.sliders:
-        out.append((f"vs_{s.point}", "vs", (s.point,), "m/s", True))
-        out.append((f"as_{s.point}", "as", (s.point,), "m/s^2", True))
+        out.append((f"vs_{s.point}", "vs", (s.point,), "m/s", True, None))
+        out.append((f"as_{s.point}", "as", (s.point,), "m/s^2", True, None))
     for p in scene.pins:
-        out.append((f"rub_{p.point}", "rub", (p.point,), "m/s", False))
+        out.append((f"rub_{p.point}", "rub", (p.point,), "m/s", False, None))
     if scene.loads:
-        out.append(("torque", "torque", (), "N m", True))
+        out.append(("torque", "torque", (), "N m", True, None))
     return tuple(out)
 
 
@@ -458,6 +461,14 @@ def generate(scene: Scene, count: int, seed: int, *, batch: int | None = None) -
     var = _asked_for(scene, count, seed)
     solve(scene)  # the base problem itself must solve (else its error, as solve gives it)
     plan = compile_plan(scene)
+    if scene.input.found_from:  # each candidate's two speeds would be found anew
+        raise SceneError(
+            "variants of a scene whose two inputs' speeds are given on other links "
+            f"({', '.join(g.key for g in scene.input.found_from)}) are not made: state "
+            "each crank's speed to vary it",
+            key="[variants]",
+            file=scene.file,
+        )
     branches = _branches(plan)
     shape = _shape(scene)
     cls = linkage_class(scene, shape)

@@ -9,8 +9,15 @@ import io
 
 from ..common.errors import SceneError
 from ..common.numbers import fmt, sense
+from ..common.units import UNITS, question_unit
 from ..linkage.engine_values import ENGINE_KEYS, engine_value
+from ..scene.questions import unit_kind
 from ..text.words import given
+
+
+def _turning_unit(unit) -> bool:
+    """A unit of a quantity with a sense (cw, ccw): rpm, deg/s^2, kN m, ..."""
+    return any(unit in UNITS[k] for k in ("angular_velocity", "angular_acceleration", "torque"))
 
 
 def answer(sol, q) -> float:
@@ -29,10 +36,18 @@ def answer(sol, q) -> float:
     return float(sol.value(q[1], q[2]))
 
 
+def _in_unit_asked(x, q) -> tuple:
+    """(value, unit) of a question's answer ``x`` (SI) in the unit it asks (``"? rpm"``),
+    else as it is."""
+    if len(q) < 6 or not q[5]:
+        return x, q[3]
+    return x / question_unit(q[5], unit_kind(q[1])), q[5]
+
+
 def _signed(x, unit, signed):
     if not signed:
         return f"{fmt(abs(x))} {unit}"
-    s = sense(x) if unit in ("rad/s", "rad/s^2", "N m") else ""
+    s = sense(x) if unit in ("rad/s", "rad/s^2", "N m") or _turning_unit(unit) else ""
     if s:
         return f"{fmt(abs(x))} {unit} {s}"
     return f"{fmt(x)} {unit}"
@@ -81,7 +96,7 @@ def answer_key_markdown(vs) -> str:
         cells = (
             [v.id]
             + [v.shown[k] for k in keys]
-            + [_signed(answer(v.solution, q), q[3], q[4]) for q in vs.questions]
+            + [_signed(*_in_unit_asked(answer(v.solution, q), q), q[4]) for q in vs.questions]
         )
         out.append("| " + " | ".join(_cell(c) for c in cells) + " |")
     return "\n".join(out) + "\n"
@@ -139,7 +154,8 @@ def _question(q) -> str:
             if kind in ("omega", "alpha", "vI", "aI") and all(len(n) == 1 for n in names)
             else "-".join(names)
         )
-    return f"{what} (`{key}`)"
+    unit = f", in {q[5]}" if len(q) > 5 and q[5] else ""  # "? rpm": the unit asked
+    return f"{what} (`{key}`{unit})"
 
 
 def sheet_sections(vs) -> list:
