@@ -14,6 +14,7 @@ import math
 from .errors import TOL
 
 __all__ = [
+    "article",
     "fmt",
     "fixed",
     "textbook",
@@ -25,6 +26,22 @@ __all__ = [
     "quiet",
     "condition_text",
 ]
+
+
+def article(words: str) -> str:
+    """``words`` after "a" or "an" as it is read aloud: a number is "an" where it is read
+    from an eight, an eleven or an eighteen ("an 80 mm bore", "an 11 mm pin", "an 18 kN
+    load", "a 110 mm bore", "a 1.8 m rod").
+
+    >>> article("80 mm"), article("110 mm"), article("11.5 mm"), article("18000 N"), article("1.8 m")
+    ('an 80 mm', 'a 110 mm', 'an 11.5 mm', 'an 18000 N', 'a 1.8 m')
+    """
+    head = words.split(" ", 1)[0].split(".", 1)[0].lstrip("+-")
+    if head.startswith("8"):
+        return f"an {words}"
+    if head[:2] in ("11", "18") and len(head) in (2, 5, 8):  # eleven, eleven thousand, million
+        return f"an {words}"
+    return f"a {words}"
 
 
 def quiet(x, scale):

@@ -37,6 +37,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from ..common.numbers import article
 from .engine import ATMOSPHERE
 from .records import Cylinder, split_name
 
@@ -260,7 +261,7 @@ class _CylinderLoads:
         p = self._gauge(spec, "pressure", name)
         bore = self.length(spec["bore"], "loads", name)
         area = math.pi / 4 * bore * bore
-        words = f"{spec['pressure']} on a {self._words(bore)} bore"
+        words = f"{spec['pressure']} on {article(self._words(bore))} bore"
         if "back" in spec and "rod" not in spec:
             raise self.error(
                 "back is the pressure on the annulus (the rod side): give the rod's diameter "
@@ -288,7 +289,7 @@ class _CylinderLoads:
         if "back" not in spec:
             return (
                 -p * annulus,
-                f"{spec['pressure']} on the annulus of a {self._words(bore)} bore less a "
+                f"{spec['pressure']} on the annulus of {article(self._words(bore))} bore less a "
                 f"{self._words(rod)} rod, "
                 + (
                     "pulling the rod in"

@@ -14,6 +14,7 @@ import math
 
 import dataclasses
 
+from ..common.numbers import article
 from ..common.tolerances import LEAST_FLUCTUATION, SAME
 from ..common.units import ABSURD, UNITS, did_you_mean
 from .records import FixedPath, Flywheel, Indicator
@@ -199,7 +200,7 @@ class _Engine:
             )
         bore = self.length(spec["bore"], where("bore"), "bore")
         area = math.pi / 4 * bore * bore
-        words = f"on a {self._words(bore)} bore"
+        words = f"on {article(self._words(bore))} bore"
         if "rod" in spec:
             rod = self.length(spec["rod"], where("rod"), "rod")
             if rod >= bore:

@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 
 from ..common.errors import SceneError
+from ..common.numbers import article
 from .link_loads import read_across
 from .records import Load, split_name
 from .table_help import _suggest, _unit_at, _which_point
@@ -131,7 +132,7 @@ class _Loads:
         bore = self.length(spec["bore"], "loads", name)
         area = math.pi / 4 * bore * bore
         rod_area = 0.0
-        words = f"{spec['pressure']} on a {self._words(bore)} bore"
+        words = f"{spec['pressure']} on {article(self._words(bore))} bore"
         if "rod" in spec:
             rod = self.length(spec["rod"], "loads", name)
             if rod >= bore:
