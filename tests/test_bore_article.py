@@ -39,3 +39,18 @@ def test_other_bores_read_a_or_an_as_spoken():
     assert "on a 110 mm bore" in _note(110)
     assert "on an 11 mm bore" in _note(11)
     assert "on a 250 mm bore" in _note(250)
+
+
+def test_a_piston_pressure_below_a_vacuum_is_refused_as_the_indicator_refuses_it():
+    # -0.5 N/mm^2 gauge is -5 bar: below the -1.01325 bar of a perfect vacuum; -0.05 N/mm^2
+    # (-0.5 bar, a suction stroke) is a pressure a piston can feel: its force p pi d^2 / 4
+    import pytest
+
+    from polygon_method.common.errors import SceneError
+
+    with pytest.raises(SceneError, match=r"\[loads\] B .*below a vacuum"):
+        parse_scene(SCENE.format(bore=80).replace('"1 N/mm^2"', '"-0.5 N/mm^2"'))
+    scene = parse_scene(SCENE.format(bore=80).replace('"1 N/mm^2"', '"-0.05 N/mm^2"'))
+    (load,) = scene.loads
+    p, area, _ = load.gas  # (gauge pressure Pa, area m^2, words)
+    assert p * area == pytest.approx(-0.05e6 * math.pi / 4 * 0.08**2, rel=1e-12)

@@ -7,6 +7,7 @@ import math
 
 from ..common.errors import SceneError
 from ..common.numbers import article
+from .engine import ATMOSPHERE
 from .link_loads import read_across
 from .records import Load, split_name
 from .table_help import _suggest, _unit_at, _which_point
@@ -14,6 +15,19 @@ from .table_help import _suggest, _unit_at, _which_point
 
 class _Loads:
     """The reader's methods for [loads] (mixed into the reader)."""
+
+    def _gas_gauge(self, spec, key, name) -> float:
+        """A piston's gauge pressure ``spec[key]`` (Pa), refused below a vacuum as the
+        indicator's readings are (a slip of sign or unit: it would pull the piston)."""
+        p = self.qty(spec[key], "pressure", "loads", name).value
+        if p < -ATMOSPHERE:
+            raise self.error(
+                f"{key} = {spec[key]!r} is below a vacuum (a gauge pressure reaches "
+                f"-{ATMOSPHERE / 1e5:g} bar at the least)",
+                "loads",
+                name,
+            )
+        return p
 
     def loads(self, known):
         out = []
@@ -128,7 +142,7 @@ class _Loads:
             raise self.error(
                 "give the gas force by pressure and bore, or a force, not both", "loads", name
             )
-        p = self.qty(spec["pressure"], "pressure", "loads", name).value
+        p = self._gas_gauge(spec, "pressure", name)
         bore = self.length(spec["bore"], "loads", name)
         area = math.pi / 4 * bore * bore
         rod_area = 0.0
@@ -148,7 +162,7 @@ class _Loads:
                 words += f" less a {self._words(rod)} rod"
         f = p * area
         if "back" in spec:  # double-acting: the cover side's pressure less the crank side's
-            back = self.qty(spec["back"], "pressure", "loads", name).value
+            back = self._gas_gauge(spec, "back", name)
             f -= back * (area - rod_area)
             words += f" (the cover side) against {spec['back']} on the crank side" + (
                 f" less a {self._words(math.sqrt(rod_area * 4 / math.pi))} rod" if rod_area else ""
