@@ -28,18 +28,41 @@ def stands_still(span, scene) -> bool:
 #: past it the samples cannot follow its turning (a sun turning millions of times per turn
 #: of its arm), and what they show of the cycle is aliased
 MOST_PER_SAMPLE = math.radians(10.0)
+#: the most samples a cycle is given to follow a fast wheel or second crank (20 times the
+#: usual grid's): beyond them it is refused, saying why
+MOST_SAMPLES = 72_000
+
+
+def _fastest(plan):
+    """(rate, step) of the wheel or second crank turning fastest at a fixed ratio of a
+    periodic crank (its turn per radian of the crank's), or None."""
+    rates = [
+        (abs(r), st) for st in plan.steps if (r := getattr(st, "theta_rate", None)) is not None
+    ]
+    if not rates or not plan.steps[0].periodic:
+        return None
+    return max(rates, key=lambda t: t[0])
+
+
+def samples_to_follow(plan, span, n) -> int:
+    """``n`` samples over ``span`` rad of the crank, or more where a wheel or a second crank
+    turning at a fixed ratio of it would turn more than :data:`MOST_PER_SAMPLE` between two
+    (a differential's planet at 15 times its arm's speed: the cycle sampled finer, not
+    refused), up to :data:`MOST_SAMPLES`."""
+    fast = _fastest(plan)
+    if fast is None:
+        return n
+    return max(n, min(MOST_SAMPLES, math.ceil(span * fast[0] / MOST_PER_SAMPLE)))
 
 
 def _too_fast(scene, plan, h) -> str | None:
     """Why samples ``h`` rad of the crank apart cannot follow a wheel or a second crank
     turning at a fixed ratio of the crank (its turning between two samples past
     :data:`MOST_PER_SAMPLE`), with the spacing that would; None where they can."""
-    rates = [
-        (abs(r), st) for st in plan.steps if (r := getattr(st, "theta_rate", None)) is not None
-    ]
-    if not rates or not plan.steps[0].periodic:
+    fast = _fastest(plan)
+    if fast is None:
         return None
-    rate, st = max(rates, key=lambda t: t[0])
+    rate, st = fast
     if not rate * h > MOST_PER_SAMPLE:
         return None
     return (
@@ -98,6 +121,7 @@ class _Cycle:
         self.dom = dom = sw.domain
         self.plan = sw.plan
         span = dom.period if dom.full_turn else dom.hi - dom.lo
+        n = samples_to_follow(sw.plan, span, n)
         _followable(scene, sw.plan, span / n)
         self.grid = dom.lo + span * (np.arange(n) + 0.5) / n
         self.h = span / n

@@ -101,7 +101,10 @@ def complete_two(scene, compile_trial) -> tuple:
             arows.append(_unit(i))
             arhs.append(x.alpha if x.alpha is not None else 0.0)
     a = _solve(arows, arhs, ins, "accelerations")
-    w, a = _quiet(w, rhs), _quiet(a, arhs)
+    # an acceleration's rows hold the velocity terms (omega^2 r of the links turning at
+    # the speeds found): its noise is on their size, not on the accelerations' own
+    turning = max([abs(v) for v in w] + [0.0]) ** 2 * max([abs(v) for r in rows for v in r] + [1.0])
+    w, a = _quiet(w, rhs), _quiet(a, (*arhs, ROUNDING * turning / SAME))
     if w[0] == 0.0:
         raise SingularStepError(
             f"the speeds given leave the crank {inp.crank} at rest (omega_{inp.crank} = 0 "
