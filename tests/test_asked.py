@@ -282,6 +282,17 @@ def test_check_lists_a_question_and_does_not_grade_it(tmp_path, capsys):
     _close(row["correct"], vc, 1e-15)
 
 
+def test_check_of_questions_alone_names_no_tolerance(tmp_path, capsys):
+    """Nothing graded, no tolerance used: the line "tolerance used: ..." is for graded
+    answers only (it was printed above a table of questions alone)."""
+    path = _write(tmp_path, FOURBAR.replace('v_B = "0.503 m/s"\n', "") + QUESTIONS)
+    capsys.readouterr()
+    assert main(["check", str(path)]) == 0
+    out = capsys.readouterr().out
+    assert "tolerance used" not in out
+    assert "0 of 0 right; 6 asked, no answer given (not graded)" in out
+
+
 def test_a_class_counts_a_question_as_not_answered(tmp_path, capsys):
     scene = _write(tmp_path, FOURBAR)
     sol = solve(load_scene(scene))

@@ -421,7 +421,8 @@ def _cmd_check(args) -> int:
         d["tolerance_used"] = {"source": source, "why": why}
         print(_json(d))
     else:
-        print(verdicts_text(verdicts, f"{title}\ntolerance used: {why}"))
+        graded = any(not a.asked for a in answers)  # (questions alone: no tolerance used)
+        print(verdicts_text(verdicts, f"{title}\ntolerance used: {why}" if graded else title))
     return 0 if all(v.ok for v in verdicts) else 1
 
 
