@@ -307,3 +307,18 @@ def test_a_five_bars_coupler_speed_against_the_50_digit_reference():
     assert abs(ref["omega"]["CD"] - 1) <= mpf("1e-9")
     assert abs(ref["alpha"]["CD"] + 4) <= mpf("1e-9") * 4
     assert abs(ref["omega"]["AB"] - 10) <= mpf("1e-9") * 10
+
+
+def test_the_problem_words_state_the_given_speed_not_the_answer():
+    """The problem's words (page, sheet) state what is given: the arm's speed is the
+    question, found from the sun's; it read "turning at found from omega_O-S = ..., (2.285
+    rad/s ccw)", the answer given away in broken words."""
+    from polygon_method import load_scene
+    from polygon_method.text.words import given
+
+    text = " ".join(given(load_scene(BOOK)))
+    assert "its speed found from omega_O-S = 240 rpm cw." in text
+    assert "turning at found" not in text
+    arm = (30 * -240 + 80 * 120) / 110 * RPM  # Willis: 21.82 rpm ccw, the answer
+    assert f"{arm:.4g}" not in text and "2.285" not in text
+    assert "turning at 120 rpm ccw" in text  # the annulus: its own speed, given

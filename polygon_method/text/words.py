@@ -257,11 +257,14 @@ def _crank_words(sc, out):
         + ")"
     )
     g = inp.given
+    found = bool(getattr(inp, "found_from", ())) and inp.speed_text.startswith("found from")
     if g is not None:
         words += f". At this instant {_given_words(g, sc.cylinder(g.names[0]) is not None)}"
+    elif found:  # two inputs' speeds found from speeds given on gears: the question
+        words += f", its speed {inp.speed_text}"
     else:
         words += f", turning at {inp.speed_text}"
-    if g is None and "rad/s" not in inp.speed_text:
+    if g is None and not found and "rad/s" not in inp.speed_text:
         words += f" ({fmt(abs(inp.omega))} rad/s {sense(inp.omega)})"
     if inp.alpha and g is None:
         words += (
@@ -276,7 +279,9 @@ def _crank_words(sc, out):
         out.append(
             f"A second crank {two.crank} is driven too, about {two.pivot}: at the "
             f"instant shown it makes {fmt(math.degrees(two.angle) % 360)}° with the x "
-            f"axis, turning at {two.speed_text}"
+            f"axis, "
+            + ("its speed " if two.speed_text.startswith("found from") else "turning at ")
+            + two.speed_text
             + (
                 f", with an angular acceleration of {fmt(abs(two.alpha))} rad/s² {sense(two.alpha)}"
                 if two.alpha
