@@ -1,0 +1,271 @@
+"""The answer keys of the crank's cycle and of the configuration: a quick return's ratio of
+the time of the cutting stroke to the return stroke (``time_ratio``), a slider's length of
+stroke (``stroke_X``), a link's direction from +x (``theta_XY``) and the angle at a joint
+(``angle_XYZ``); graded by ``check`` with their slips, asked ``"?"`` and answered by
+``solve``, refused in one line where they do not apply. Against closed forms written here
+from the geometry: the crank and slotted lever's extreme positions tangent to the crank
+circle, the offset slider crank's dead centres, a four-bar's positions by the cosine rule;
+and a book's answers (Khurmi & Gupta's shaper, tests/textbook)."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import pytest
+
+from polygon_method import parse_scene, solve
+from polygon_method.check import asked_verdicts, check_answers
+from polygon_method.cli import main
+from polygon_method.scene import load_scene
+
+REL = 1e-9
+HERE = Path(__file__).parent
+SHAPER = HERE / "textbook" / "khurmi_shaper_ram_time_ratio_stroke.toml"
+
+
+def _slotted(d, r, L, rod, h, answers):
+    """A crank and slotted lever shaper: lever pivot Q, crank centre O at d above it, crank
+    r, lever QR = L, the ram S on a horizontal line h above Q, driven by the rod RS."""
+    return f"""
+units = "mm"
+[ground]
+Q = [0, 0]
+O = [0, {d}]
+[links]
+OP = {r}
+QR = {L}
+RS = {rod}
+[sliders]
+P = {{ along = "QR" }}
+S = {{ path = "horizontal", through = [0, {h}] }}
+[input]
+crank = "OP"
+angle = 40
+speed = "30 rpm cw"
+[answers]
+{answers}
+"""
+
+
+def _offset(r, l, e, answers, speed="100 rad/s ccw"):
+    """An offset slider crank: crank OA = r about O, rod AB = l, B on y = e."""
+    return f"""
+units = "mm"
+[ground]
+O = [0, 0]
+[links]
+OA = {r}
+AB = {l}
+[sliders]
+B = {{ path = "horizontal", through = [0, {e}] }}
+[input]
+crank = "OA"
+angle = 50
+speed = "{speed}"
+[answers]
+{answers}
+"""
+
+
+def _asked(text) -> dict:
+    sol = solve(parse_scene(text))
+    return {v.key: v for v in asked_verdicts(sol, sol.scene.answers)}
+
+
+@pytest.mark.parametrize(
+    "d,r,L,rod,h",
+    [(300, 150, 700, 200, 680), (400, 100, 600, 250, 590), (250, 150, 500, 150, 480)],
+)
+def test_slotted_lever_time_ratio_and_stroke_by_the_tangent_positions(d, r, L, rod, h):
+    """The lever's extreme positions are tangent to the crank circle, at alpha = asin(r/d)
+    either side of the line of centres: the crank turns 180 + 2 alpha on the cutting
+    stroke, 180 - 2 alpha on the return; the lever's end swings through the chord
+    2 L sin(alpha) = 2 L r / d, and the ram, its rod's other end at the same height at the
+    two extremes, moves as far."""
+    alpha = math.degrees(math.asin(r / d))
+    got = _asked(_slotted(d, r, L, rod, h, 'time_ratio = "?"\nstroke_S = "? mm"'))
+    assert got["time_ratio"].correct == pytest.approx(
+        (180 + 2 * alpha) / (180 - 2 * alpha), rel=REL
+    )
+    assert got["stroke_S"].correct == pytest.approx(2 * L * r / d * 1e-3, rel=REL)
+
+
+@pytest.mark.parametrize("r,l,e", [(50, 200, 30), (80, 300, 60), (40, 120, 10), (60, 250, -40)])
+def test_offset_slider_crank_stroke_and_time_ratio_by_its_dead_centres(r, l, e):
+    """The dead centres: crank and rod in line, extended (the slider at sqrt((l + r)^2 -
+    e^2) from the crank's centre along the line, the crank at asin(e / (l + r))) and folded
+    (at sqrt((l - r)^2 - e^2), the crank at 180 + asin(e / (l - r))): the stroke is their
+    distance apart, the crank turns 180 + beta between them one way and 180 - beta the
+    other, beta = asin(e / (l - r)) - asin(e / (l + r))."""
+    stroke = math.sqrt((l + r) ** 2 - e**2) - math.sqrt((l - r) ** 2 - e**2)
+    beta = abs(math.asin(e / (l - r)) - math.asin(e / (l + r)))
+    got = _asked(_offset(r, l, e, 'time_ratio = "?"\nstroke_B = "?"'))
+    assert got["stroke_B"].correct == pytest.approx(stroke * 1e-3, rel=REL)
+    assert got["time_ratio"].correct == pytest.approx((math.pi + beta) / (math.pi - beta), rel=REL)
+    assert got["stroke_B"].correct_text.endswith(" mm")  # in the scene's unit
+
+
+def test_in_line_slider_crank_strokes_take_equal_times_and_its_stroke_is_twice_the_crank():
+    got = _asked(_offset(50, 200, 0, 'time_ratio = "?"\nstroke_B = "?"'))
+    assert got["time_ratio"].correct == pytest.approx(1.0, rel=REL)
+    assert got["stroke_B"].correct == pytest.approx(0.100, rel=REL)
+
+
+FOURBAR = """
+units = "mm"
+[ground]
+A = [0, 0]
+D = [{d}, 0]
+[links]
+AB = {a}
+BC = {b}
+CD = {c}
+[assembly]
+C = "above"
+[input]
+crank = "AB"
+angle = {t}
+speed = "10 rad/s ccw"
+[answers]
+theta_CD = "?"
+theta_BC = "? rad"
+angle_BCD = "?"
+angle_ABC = "?"
+theta_DC = "?"
+"""
+
+
+@pytest.mark.parametrize(
+    "a,b,c,d,t", [(40, 150, 80, 150, 60), (95, 60, 120, 70, 120), (30, 90, 70, 100, 250)]
+)
+def test_link_angles_against_the_four_bars_closed_form_positions(a, b, c, d, t):
+    """B = a (cos t, sin t); C where the circles about B (radius b) and D (radius c) meet,
+    the upper one: each direction by atan2, each joint's angle by the cosine rule."""
+    bx, by = a * math.cos(math.radians(t)), a * math.sin(math.radians(t))
+    bd = math.hypot(d - bx, by)
+    phi = math.atan2(-by, d - bx)  # B to D
+    beta = math.acos((b * b + bd * bd - c * c) / (2 * b * bd))  # at B, between BD and BC
+    cands = [
+        (bx + b * math.cos(phi + s * beta), by + b * math.sin(phi + s * beta)) for s in (1, -1)
+    ]
+    cx, cy = max(cands, key=lambda p: p[1])
+    assert math.hypot(cx - d, cy) == pytest.approx(c, rel=1e-12)
+    got = _asked(FOURBAR.format(a=a, b=b, c=c, d=d, t=t))
+    deg = lambda x: math.degrees(x) % 360  # noqa: E731
+    assert got["theta_CD"].correct == pytest.approx(deg(math.atan2(-cy, d - cx)), rel=REL)
+    assert got["theta_DC"].correct == pytest.approx(deg(math.atan2(cy, cx - d)), rel=REL)
+    theta_bc = math.atan2(cy - by, cx - bx) % (2 * math.pi)
+    assert float(got["theta_BC"].correct_text.split()[0]) == pytest.approx(theta_bc, rel=1e-3)
+    assert got["theta_BC"].correct == pytest.approx(math.degrees(theta_bc), rel=REL)
+    bcd = math.acos((b * b + c * c - bd * bd) / (2 * b * c))
+    ac = math.hypot(cx, cy)
+    abc = math.acos((a * a + b * b - ac * ac) / (2 * a * b))
+    assert got["angle_BCD"].correct == pytest.approx(math.degrees(bcd), rel=REL)
+    assert got["angle_ABC"].correct == pytest.approx(math.degrees(abc), rel=REL)
+
+
+def test_the_books_shaper_ratio_and_stroke_are_right_and_asked_are_answered(tmp_path, capsys):
+    """Khurmi & Gupta: the time ratio 2, the stroke 450 mm, graded right; asked "?" the
+    same keys are answered by solve's "Answers asked" line, in the book's numbers."""
+    verdicts = check_answers(solve(load_scene(SHAPER)))
+    assert [v.key for v in verdicts] == ["time_ratio", "stroke_Y"]
+    assert all(v.ok for v in verdicts)
+    assert verdicts[0].correct == pytest.approx(2.0, rel=REL)
+    assert verdicts[1].correct == pytest.approx(0.450, rel=REL)
+    asked = tmp_path / "asked.toml"
+    asked.write_text('[answers]\ntime_ratio = "?"\nstroke_Y = "?"\n')
+    capsys.readouterr()
+    assert main(["solve", str(SHAPER), "--answers", str(asked)]) == 0
+    out = capsys.readouterr().out
+    assert "Answers asked: time_ratio = 2; stroke_Y = 450 mm" in out
+    assert main(["solve", str(SHAPER), "--answers", str(asked), "--json"]) == 0
+    got = {a["key"]: a for a in json.loads(capsys.readouterr().out)["answers_asked"]}
+    assert got["time_ratio"]["value"] == pytest.approx(2.0, rel=REL)
+    assert got["stroke_Y"]["value"] == pytest.approx(0.450, rel=REL)
+    assert main(["steps", str(SHAPER), "--answers", str(asked)]) == 0
+    assert "stroke_Y = 450 mm" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize(
+    "key,given,code",
+    [
+        ("time_ratio", "0.5", "inverse_ratio"),  # return over cutting
+        ("stroke_Y", '"450 m"', "wrong_unit"),
+        ("stroke_Y", '"45 cm"', None),  # the right stroke in another unit: right
+        ("stroke_Y", "0.45", "wrong_unit"),  # metres written bare in a scene in mm
+    ],
+)
+def test_the_classic_slips_are_named(key, given, code):
+    text = SHAPER.read_text().split("[answers]")[0] + f"[answers]\n{key} = {given}\n"
+    (v,) = check_answers(solve(parse_scene(text)))
+    assert v.ok == (code is None) and v.mistake == code
+
+
+def test_a_links_direction_from_its_other_end_and_an_angles_supplement_are_named():
+    text = FOURBAR.format(a=40, b=150, c=80, d=150, t=60).split("[answers]")[0]
+    sol = solve(parse_scene(text + "[answers]\ntheta_CD = 10\n"))
+    true = (
+        math.degrees(math.atan2(*(sol.P["D"][1] - sol.P["C"][1], sol.P["D"][0] - sol.P["C"][0])))
+        % 360
+    )
+    bcd = check_answers(solve(parse_scene(text + "[answers]\nangle_BCD = 10\n")))[0].correct
+    cases = [
+        (f"theta_CD = {(true + 180) % 360}", "other_end", False),
+        (f"theta_CD = {true - 360}", None, True),  # -x deg is 360 - x deg
+        (f"angle_BCD = {180 - bcd}", "supplement", False),
+    ]
+    for line, code, ok in cases:
+        (v,) = check_answers(solve(parse_scene(text + f"[answers]\n{line}\n")))
+        assert (v.ok, v.mistake) == (ok, code), line
+
+
+BAD = [
+    ("double_rocker.toml", 'time_ratio = "?"', "time_ratio: the crank AB does not turn fully"),
+    ("drag_link.toml", 'time_ratio = "?"', "no quick return"),
+    ("khurmi_shaper_ram_time_ratio_stroke.toml", 'stroke_A = "?"', "not a fixed path"),
+    ("khurmi_shaper_ram_time_ratio_stroke.toml", 'stroke_Z = "?"', "no slider Z"),
+    ("khurmi_shaper_ram_time_ratio_stroke.toml", 'time_ratio = "? s"', "a bare number"),
+    ("khurmi_shaper_ram_time_ratio_stroke.toml", "time_ratio = -2", "a ratio, a bare number"),
+    ("khurmi_shaper_ram_time_ratio_stroke.toml", 'angle_PA = "?"', "angle_XYZ names 3"),
+    ("khurmi_shaper_ram_time_ratio_stroke.toml", 'theta_PP = "?"', "theta_XY names 2"),
+]
+
+
+@pytest.mark.parametrize("name,line,words", BAD)
+def test_a_key_that_does_not_apply_is_refused_in_one_line(tmp_path, capsys, name, line, words):
+    text = (HERE / "textbook" / name).read_text().split("[answers]")[0]
+    path = tmp_path / name
+    path.write_text(text + f"\n[answers]\n{line}\n")
+    # (solve reads only the questions: a value given is check's alone)
+    for command in ("check", "solve") if '"?' in line else ("check",):
+        capsys.readouterr()
+        assert main([command, str(path)]) == 2
+        err = capsys.readouterr().err
+        assert words in err and err.count("\n") == 1 and "Traceback" not in err, err
+
+
+def test_a_driving_collar_has_no_crank_to_time(tmp_path, capsys):
+    src = HERE.parent / "worked_problems" / "collar_on_turning_rod.toml"
+    path = tmp_path / "collar.toml"
+    path.write_text(src.read_text().split("[answers]")[0] + '\n[answers]\ntime_ratio = "?"\n')
+    assert main(["solve", str(path)]) == 2
+    assert "no crank turns" in capsys.readouterr().err
+
+
+def test_a_solve_not_asked_the_cycle_pays_nothing(monkeypatch):
+    """The cycle is sampled only where time_ratio or stroke_X is asked: a link's angle, or
+    no such key, never builds it."""
+    import polygon_method.linkage.cycle_values as cv
+
+    def refuse(*_):
+        raise AssertionError("the cycle was sampled")
+
+    monkeypatch.setattr(cv, "_Cycle", refuse)
+    text = FOURBAR.format(a=40, b=150, c=80, d=150, t=60)
+    sol = solve(parse_scene(text))
+    assert len(asked_verdicts(sol, sol.scene.answers)) == 5
+    sol = solve(load_scene(SHAPER))
+    with pytest.raises(AssertionError):
+        check_answers(sol)
