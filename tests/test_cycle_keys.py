@@ -269,3 +269,37 @@ def test_a_solve_not_asked_the_cycle_pays_nothing(monkeypatch):
     sol = solve(load_scene(SHAPER))
     with pytest.raises(AssertionError):
         check_answers(sol)
+
+
+def test_a_direction_between_points_that_coincide_is_refused(tmp_path, capsys):
+    """At the crank's 0 deg B stands on the ground point E: BE has no direction."""
+    path = tmp_path / "coincide.toml"
+    path.write_text(
+        'units = "mm"\n[ground]\nA = [0, 0]\nD = [150, 0]\nE = [40, 0]\n[links]\nAB = 40\n'
+        'BC = 150\nCD = 80\nDE = 110\n[input]\ncrank = "AB"\nangle = 0\n'
+        'speed = "10 rad/s ccw"\n[answers]\ntheta_BE = "?"\n'
+    )
+    assert main(["solve", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert "theta_BE: B and E coincide at the instant" in err and err.count("\n") == 1
+
+
+def test_a_class_answer_key_gives_each_variants_ratio_and_stroke(tmp_path, capsys):
+    """variants: each variant's crank r, its ratio (180 + 2 alpha) / (180 - 2 alpha) and
+    its ram's stroke 2 L sin(alpha), alpha = asin(r / 240), in SI."""
+    import csv
+
+    text = SHAPER.read_text().split("[answers]")[0]
+    text += '[answers]\ntime_ratio = "?"\nstroke_Y = "?"\n[variants]\nOA = { from = 100, to = 130, step = 10 }\n'
+    path = tmp_path / "shaper.toml"
+    path.write_text(text)
+    out = tmp_path / "out"
+    assert main(["variants", str(path), "--count", "3", "-o", str(out)]) == 0
+    rows = list(csv.DictReader((out / "answer-key.csv").open()))
+    assert len(rows) == 3
+    for row in rows:
+        r = float(row["OA"].split()[0])
+        alpha = math.asin(r / 240)
+        ratio = (math.pi + 2 * alpha) / (math.pi - 2 * alpha)
+        assert float(row["time_ratio ()"]) == pytest.approx(ratio, rel=REL)
+        assert float(row["stroke_Y (m)"]) == pytest.approx(2 * 0.450 * r / 240, rel=REL)

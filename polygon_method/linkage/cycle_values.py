@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 
 from ..common.errors import SceneError
+from ..common.tolerances import SAME
 from ..scene import Scene
 from .analysis import motion_over_cycle
 from .cycle import _Cycle
@@ -146,8 +147,14 @@ def cycle_value(sol, kind: str, names: tuple, key: str | None = None) -> float:
         return time_ratio(sol.scene, key)
     if kind == "stroke":
         return stroke(sol.scene, names[0], key)
-    if kind == "theta":
-        return direction(sol.P, *names)
-    if kind == "angle":
-        return joint_angle(sol.P, *names)
-    raise KeyError(kind)
+    if kind not in ("theta", "angle"):
+        raise KeyError(kind)
+    at = names[1] if kind == "angle" else names[0]
+    size = max((lk.length for lk in sol.scene.links), default=1.0)
+    for other in names:
+        if other != at and math.dist(sol.P[at], sol.P[other]) <= SAME * size:
+            _refuse(
+                key,
+                f"{at} and {other} coincide at the instant: the line {at}{other} has no direction",
+            )
+    return direction(sol.P, *names) if kind == "theta" else joint_angle(sol.P, *names)
