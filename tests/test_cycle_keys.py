@@ -192,6 +192,8 @@ def test_the_books_shaper_ratio_and_stroke_are_right_and_asked_are_answered(tmp_
     "key,given,code",
     [
         ("time_ratio", "0.5", "inverse_ratio"),  # return over cutting
+        ("time_ratio", '"2:1"', None),  # as a book writes a ratio
+        ("time_ratio", '"1 : 2"', "inverse_ratio"),
         ("stroke_Y", '"450 m"', "wrong_unit"),
         ("stroke_Y", '"45 cm"', None),  # the right stroke in another unit: right
         ("stroke_Y", "0.45", "wrong_unit"),  # metres written bare in a scene in mm
@@ -303,3 +305,49 @@ def test_a_class_answer_key_gives_each_variants_ratio_and_stroke(tmp_path, capsy
         ratio = (math.pi + 2 * alpha) / (math.pi - 2 * alpha)
         assert float(row["time_ratio ()"]) == pytest.approx(ratio, rel=REL)
         assert float(row["stroke_Y (m)"]) == pytest.approx(2 * 0.450 * r / 240, rel=REL)
+
+
+def _whitworth(c, r, p, q, h):
+    return f"""
+units = "mm"
+[ground]
+O4 = [0, 0]
+O2 = [0, {c}]
+[links]
+"O2-A" = {r}
+"O4-P" = {p}
+"P-Q" = {q}
+[sliders]
+A = {{ along = "O4-P" }}
+Q = {{ path = "horizontal", through = [0, {h}] }}
+[assembly]
+Q = "right"
+[input]
+crank = "O2-A"
+angle = 30
+speed = "60 rpm cw"
+[answers]
+time_ratio = "?"
+stroke_Q = "?"
+"""
+
+
+@pytest.mark.parametrize("c,r,p,q,h", [(50, 100, 150, 450, 250), (60, 120, 100, 400, 200)])
+def test_whitworth_ratio_and_stroke_by_the_rams_dead_points(c, r, p, q, h):
+    """The ram Q stands still where the rod PQ lies along the lever O4P: extended (O4Q =
+    p + q) and folded (O4Q = q - p, P on the far side of O4); its stroke is the two places
+    apart. The block A on the lever's line through O4 (on P's side) meets the crank circle
+    about O2 at s = c sin(phi) + sqrt(c^2 sin^2(phi) + r^2 - c^2) from O4: the crank's
+    angles there split its turn into the two strokes."""
+    x1, x2 = math.sqrt((p + q) ** 2 - h * h), math.sqrt((q - p) ** 2 - h * h)
+    phis = (math.atan2(h, x1), math.atan2(h, x2) + math.pi)  # the lever, O4 to P
+
+    def crank(phi):
+        s = c * math.sin(phi) + math.sqrt((c * math.sin(phi)) ** 2 + r * r - c * c)
+        return math.atan2(s * math.sin(phi) - c, s * math.cos(phi))
+
+    arc = (crank(phis[1]) - crank(phis[0])) % (2 * math.pi)
+    ratio = max(arc, 2 * math.pi - arc) / min(arc, 2 * math.pi - arc)
+    got = _asked(_whitworth(c, r, p, q, h))
+    assert got["stroke_Q"].correct == pytest.approx((x1 - x2) * 1e-3, rel=REL)
+    assert got["time_ratio"].correct == pytest.approx(ratio, rel=REL)

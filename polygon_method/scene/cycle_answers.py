@@ -14,7 +14,7 @@ from ..common.errors import printable
 from .names import split_name
 from .part_records import Answer
 
-__all__ = ["CYCLE_ANSWERS", "bare"]
+__all__ = ["CYCLE_ANSWERS", "bare", "ratio"]
 
 #: the answers of the crank's cycle and of the configuration -> their unit kind: a quick
 #: return's ratio of the cutting stroke's time to the return's (``time_ratio``), a slider's
@@ -36,6 +36,21 @@ def bare(value) -> bool:
     return True
 
 
+def ratio(value) -> float | None:
+    """A ratio as a book writes it, a bare number or ``a:b``; None where it is no positive
+    finite ratio.
+
+    >>> ratio(2), ratio("1.71"), ratio("3 : 2"), ratio("2:0"), ratio("-1"), ratio("2 s")
+    (2.0, 1.71, 1.5, None, None, None)
+    """
+    a, colon, b = str(value).partition(":")
+    try:
+        v = float(a) / float(b) if colon else float(a)
+    except (ValueError, ZeroDivisionError):
+        return None
+    return v if math.isfinite(v) and v > 0 else None
+
+
 class _CycleAnswers:
     """The loader's method for these keys (mixed into :class:`.answers._Answers`)."""
 
@@ -45,14 +60,11 @@ class _CycleAnswers:
         :class:`Answer`, or None for a key of another kind."""
         prefix, _, rest = key.partition("_")
         if key == "time_ratio":
-            try:
-                v = float(str(value).strip())
-            except ValueError:
-                v = math.nan
-            if not (math.isfinite(v) and v > 0):
+            v = ratio(value)
+            if v is None:
                 raise self.error(
-                    f"{key} is a ratio, a bare number (e.g. 1.5: the cutting stroke's time "
-                    f"over the return's), got {printable(str(value))!r}",
+                    f"{key} is a ratio, a bare number (e.g. 1.5, or 3:2: the cutting "
+                    f"stroke's time over the return's), got {printable(str(value))!r}",
                     "answers",
                     key,
                 )
