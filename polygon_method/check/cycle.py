@@ -95,8 +95,9 @@ def cycle_verdict(sol, ans, tolerance) -> Verdict:
         return Verdict.asked_of(ans, correct, unit, False, correct_text=text)
     given = math.degrees(ans.value) if kind in ("theta", "angle") else ans.value
     rel = getattr(tolerance, "relative", tolerance)
+    source = getattr(tolerance, "source", None) or "the answers' tolerance"
     rule = (
-        f"{100 * rel:g} % (the answers' tolerance)"
+        f"{100 * rel:g} % ({source})"
         if rel is not None
         else "three significant figures (a computed answer)"
     )
