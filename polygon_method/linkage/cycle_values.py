@@ -71,15 +71,19 @@ def _cycle(scene: Scene, key: str):
     if not plan.steps[0].periodic:
         _refuse(key, f"no crank turns (the mechanism is driven by {plan.steps[0].title})")
     cyc = _Cycle(scene)
-    _LAST["scene"] = (scene, cyc)
+    _LAST["scene"] = (scene, cyc, {})  # and each output's motion, as it is asked
     return cyc
 
 
 def _motion(scene, cyc, out):
-    """:func:`motion_over_cycle`'s (stationary, lines, min, max, time ratio, lines)."""
-    return motion_over_cycle(
-        cyc, out, scene, four_bar_of(scene), slider_crank_of(scene), slotted_of(scene)
-    )[1]
+    """:func:`motion_over_cycle`'s (stationary, lines, min, max, time ratio, lines), once
+    per output of the scene (its time ratio and its stroke asked both: one search)."""
+    done = _LAST["scene"][2]
+    if (out.kind, out.name) not in done:
+        done[out.kind, out.name] = motion_over_cycle(
+            cyc, out, scene, four_bar_of(scene), slider_crank_of(scene), slotted_of(scene)
+        )[1]
+    return done[out.kind, out.name]
 
 
 def time_ratio(scene: Scene, key: str = "time_ratio") -> float:
@@ -116,7 +120,7 @@ def stroke(scene: Scene, point: str, key: str) -> float:
     cyc = _cycle(scene, key)
     out = _Output(
         "slider",
-        sl.key if hasattr(sl, "key") else point,
+        sl.point,  # (named as linkage names its output: one search for both keys)
         f"slider {point}",
         point=sl.point,
         path=sl,
