@@ -351,3 +351,19 @@ def test_whitworth_ratio_and_stroke_by_the_rams_dead_points(c, r, p, q, h):
     got = _asked(_whitworth(c, r, p, q, h))
     assert got["stroke_Q"].correct == pytest.approx((x1 - x2) * 1e-3, rel=REL)
     assert got["time_ratio"].correct == pytest.approx(ratio, rel=REL)
+
+
+def test_the_ratio_and_the_stroke_of_one_output_are_one_search(monkeypatch):
+    import polygon_method.linkage.cycle_values as cv
+
+    seen = []
+    real = cv.motion_over_cycle
+
+    def spy(*args, **kw):
+        seen.append(args[1].name)
+        return real(*args, **kw)
+
+    monkeypatch.setattr(cv, "motion_over_cycle", spy)
+    scene = load_scene(SHAPER)  # (a scene of its own: none kept from another test)
+    assert [v.ok for v in check_answers(solve(scene))] == [True, True]
+    assert seen == ["Y"]
