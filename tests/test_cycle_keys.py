@@ -152,18 +152,20 @@ def test_link_angles_against_the_four_bars_closed_form_positions(a, b, c, d, t):
     ]
     cx, cy = max(cands, key=lambda p: p[1])
     assert math.hypot(cx - d, cy) == pytest.approx(c, rel=1e-12)
-    got = _asked(FOURBAR.format(a=a, b=b, c=c, d=d, t=t))
-    deg = lambda x: math.degrees(x) % 360  # noqa: E731
+    got = _asked(FOURBAR.format(a=a, b=b, c=c, d=d, t=t))  # (SI: rad)
+    deg = lambda x: x % (2 * math.pi)  # noqa: E731
     assert got["theta_CD"].correct == pytest.approx(deg(math.atan2(-cy, d - cx)), rel=REL)
     assert got["theta_DC"].correct == pytest.approx(deg(math.atan2(cy, cx - d)), rel=REL)
     theta_bc = math.atan2(cy - by, cx - bx) % (2 * math.pi)
     assert float(got["theta_BC"].correct_text.split()[0]) == pytest.approx(theta_bc, rel=1e-3)
-    assert got["theta_BC"].correct == pytest.approx(math.degrees(theta_bc), rel=REL)
+    assert got["theta_BC"].correct == pytest.approx(theta_bc, rel=REL)
     bcd = math.acos((b * b + c * c - bd * bd) / (2 * b * c))
     ac = math.hypot(cx, cy)
     abc = math.acos((a * a + b * b - ac * ac) / (2 * a * b))
-    assert got["angle_BCD"].correct == pytest.approx(math.degrees(bcd), rel=REL)
-    assert got["angle_ABC"].correct == pytest.approx(math.degrees(abc), rel=REL)
+    assert got["angle_BCD"].correct == pytest.approx(bcd, rel=REL)
+    assert got["angle_ABC"].correct == pytest.approx(abc, rel=REL)
+    words = float(got["angle_BCD"].correct_text.removesuffix(" deg"))  # in degrees, 4 figures
+    assert words == pytest.approx(math.degrees(bcd), rel=5e-4)
 
 
 def test_the_books_shaper_ratio_and_stroke_are_right_and_asked_are_answered(tmp_path, capsys):

@@ -92,6 +92,8 @@ def cycle_verdict(sol, ans, tolerance) -> Verdict:
         if kind != "time_ratio":
             own, f = _own_unit(sol, ans)
             text = f"{textbook(correct / f)} {own}"
+        if kind in ("theta", "angle"):  # (solve --json's value in SI, as every other's)
+            return Verdict.asked_of(ans, math.radians(correct), "rad", False, correct_text=text)
         return Verdict.asked_of(ans, correct, unit, False, correct_text=text)
     given = math.degrees(ans.value) if kind in ("theta", "angle") else ans.value
     rel = getattr(tolerance, "relative", tolerance)
