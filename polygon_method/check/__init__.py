@@ -49,6 +49,7 @@ from ..common.errors import SceneError
 from ..motion.link_points import PAIR_KINDS
 from ..motion.solution import Solution, tidied
 from .centres import centre_verdict
+from .cycle import CYCLE_KEYS, cycle_verdict
 from .engine import ENGINE_KEYS, engine_verdict
 from .mistakes import _Diagnoser
 from .tolerance import SOURCES, Stated, _Tolerances, answer_tolerance, choose_tolerance
@@ -159,6 +160,8 @@ def check_answers(sol: Solution, answers=None, tolerance: float | None = None, _
             out.append(centre_verdict(sol, ans, rel, centres))
         elif kind in ENGINE_KEYS:  # the engine chapter's: its efforts, the cycle, the flywheel
             out.append(engine_verdict(sol, ans, tolerance))
+        elif kind in CYCLE_KEYS:  # a quick return's times, a stroke, a link's angle
+            out.append(cycle_verdict(sol, ans, tolerance))
         else:
             out.append(_verdict(sol, ans, tolerance, tols, diag, clean))
     return _graded_once(sol, answers, out)
@@ -184,6 +187,8 @@ def asked_verdict(sol: Solution, ans, clean=None, centres=None) -> Verdict:
         return centre_verdict(sol, ans, None, [] if centres is None else centres)
     if ans.kind in ENGINE_KEYS:
         return engine_verdict(sol, ans, None)
+    if ans.kind in CYCLE_KEYS:
+        return cycle_verdict(sol, ans, None)
     exact = _exact(sol, ans, clean)
     slider = sol.scene.slider(ans.names[0]) if ans.kind in ("vs", "as") else None
     if slider is not None:  # along the guide: its size and which way, in words

@@ -78,6 +78,12 @@ MISTAKE_WORDS = {
     "centre_not_at_infinity": "a finite centre said to be at infinity",
     "centre_direction": "a centre at infinity in the wrong direction",
     "centre_direction_square": "a centre at infinity along the path, not square to it",
+    # a quick return's times, a stroke, a link's angle (check/cycle.py)
+    "inverse_ratio": "the return stroke's time over the cutting stroke's",
+    "wrong_unit": "a stroke in the wrong unit",
+    "other_end": "a link's direction from its other end",
+    "from_minus_x": "a direction measured from -x",
+    "supplement": "the supplement of the angle at a joint",
 }
 
 

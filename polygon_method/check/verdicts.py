@@ -299,7 +299,7 @@ def _show(v: Verdict, x: float) -> str:
         s = "ccw" if x > 0 else ("cw" if x < 0 else "")
         text = f"{_g(abs(x))} {v.unit}" + (f" {s}" if s else "")
         return text + (f" ({_g(abs(x) / own[1])} {own[0]})" if own else "")
-    return f"{_g(x)} {v.unit}" + (f" ({_g(x / own[1])} {own[0]})" if own else "")
+    return f"{_g(x)} {v.unit}".rstrip() + (f" ({_g(x / own[1])} {own[0]})" if own else "")
 
 
 def percent_text(error, space: str = " ") -> str:

@@ -165,6 +165,18 @@ def _mm(x, scene) -> str:
 _MAX_STATIONARY = 12  # more samples still than this: the output dwells (a degenerate linkage)
 
 
+def motion_over_cycle(cyc, out, scene, fb, sk, slot) -> tuple:
+    """(dwell, :func:`output_motion`'s six) of the output ``out`` over the cycle ``cyc``:
+    an output that dwells (:func:`_dwell`, a degenerate linkage) has no toggles and no
+    quick return. The one definition of the output's stroke, swing and time ratio
+    (``linkage`` prints them; the answers ``time_ratio`` and ``stroke_X`` read them)."""
+    dwell = _dwell(cyc, out, scene)
+    got = output_motion(cyc, out, scene, fb, sk, slot, dwells=bool(dwell))
+    if dwell:
+        got = ((), got[1], got[2], got[3], None, ())
+    return dwell, got
+
+
 def _dwell(cyc, out, scene) -> int:
     """How many of the cycle's samples the output stands still at, its rate nought to
     rounding against its largest, where they are more than :data:`_MAX_STATIONARY` (it
@@ -346,9 +358,8 @@ def analyse(scene: Scene) -> Linkage:
     out = _output_of(scene, plan)
     stationary, out_lines, omin, omax, ratio, tlines = (), (), None, None, None, ()
     if out is not None:
-        dwell = _dwell(cyc, out, scene)
-        stationary, out_lines, omin, omax, ratio, tlines = output_motion(
-            cyc, out, scene, fb, sk, slot, dwells=bool(dwell)
+        dwell, (stationary, out_lines, omin, omax, ratio, tlines) = motion_over_cycle(
+            cyc, out, scene, fb, sk, slot
         )
         if dwell:  # a degenerate linkage: the output dwells
             every = dwell == int(np.count_nonzero(~cyc.bad))
@@ -358,7 +369,6 @@ def analyse(scene: Scene) -> Linkage:
                 f"{'the whole cycle' if every else 'whole ranges of the crank'} (a "
                 "degenerate linkage), so no single toggle positions are listed"
             )
-            stationary, ratio, tlines = (), None, ()
     still = standing_steps(scene, plan)
     trans = tuple(
         _transmission(cyc, st, scene)

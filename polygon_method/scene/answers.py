@@ -11,6 +11,7 @@ import re
 from ..common.errors import printable
 from ..common.units import UNITS, decimal_comma, question
 from .records import ANSWER_KINDS, UNDER_BLOCK_KINDS, Answer, split_name
+from .cycle_answers import CYCLE_ANSWERS, _CycleAnswers, bare as _bare
 from .questions import _Questions, unit_kind
 from .table_help import _suggest, _which_point
 
@@ -20,6 +21,7 @@ __all__ = [
     "ENGINE_ANSWERS",
     "ENGINE_PER_PISTON",
     "under_block_names",
+    "CYCLE_ANSWERS",
     "unit_kind",
 ]
 
@@ -78,19 +80,6 @@ def under_block_names(point_names, ground, sliders) -> dict:
     return out
 
 
-def _bare(value) -> bool:
-    """A number without a unit (``20``, ``"20"``).
-
-    >>> _bare(20), _bare("20.5"), _bare("20 mm")
-    (True, True, False)
-    """
-    try:
-        float(str(value))
-    except ValueError:
-        return False
-    return True
-
-
 #: the answer kinds of two points of one link, as ``ANSWER_KINDS``: the least speed of a
 #: point between them (``vmin_BC``), the radial and tangential components of one's
 #: acceleration relative to the other (``ar_CB``, ``at_CB``; ``motion/link_points.py``)
@@ -106,7 +95,7 @@ _KINDS = {**ANSWER_KINDS, **PAIR_ANSWER_KINDS}
 DRIVER_ANSWERS = {"force": "force", "torque2": "torque", "force2": "force"}
 
 
-class _Answers(_Questions):
+class _Answers(_Questions, _CycleAnswers):
     """The loader's ``[answers]`` methods (mixed into the loader with the other tables)."""
 
     def _engine_value(self, value, kind, key) -> float:
@@ -263,7 +252,8 @@ class _Answers(_Questions):
                 f"a_{lk.q}{lk.p}",
             ]
             keys += [f"{k}_{lk.p}{lk.q}" for k in ("vmin", "ar", "at")]
-        keys += [f"{k}_{s}" for k in ("vs", "as", "ac") for s in slider_names]
+        keys += [f"{k}_{s}" for k in ("vs", "as", "ac", "stroke") for s in slider_names]
+        keys += [f"theta_{lk.p}{lk.q}" for lk in self.index.values()] + ["time_ratio"]
         keys += [f"rub_{p}" for p in sorted(pin_names)]
         keys += [f"{k}_{n}" for k in ("v", "a") for n in self.under_names(known, slider_names)]
         return keys + (["torque"] if loads else []) + list(DRIVER_ANSWERS) + list(ENGINE_ANSWERS)
@@ -350,6 +340,9 @@ class _Answers(_Questions):
         engine = self._engine_answer(key, value, raw_text, line, slider_names)
         if engine is not None:
             return engine
+        cycle = self._cycle_answer(key, value, raw_text, line, known, slider_names, hint)
+        if cycle is not None:
+            return cycle
         prefix, _, rest = key.partition("_")
         if prefix == "I" and rest:
             return self.centre_answer(key, rest, value, line)
@@ -475,7 +468,9 @@ class _Answers(_Questions):
             "drive's largest torque and power), piston_effort, crank_effort, "
             "turning_moment, rod_thrust, side_thrust (each with _B: piston B's of several "
             "cylinders), shaking_force, shaking_moment, "
-            "T_mean, dE_max, I_flywheel, m_flywheel (the force and engine chapters)",
+            "T_mean, dE_max, I_flywheel, m_flywheel (the force and engine chapters), "
+            "time_ratio, stroke_X (a quick return's times, a slider's stroke), theta_XY, "
+            "angle_XYZ (a link's direction from +x, the angle at a joint)",
             "answers",
             key,
         )

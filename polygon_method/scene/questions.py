@@ -19,7 +19,7 @@ def unit_kind(kind: str) -> str:
     >>> unit_kind("omega"), unit_kind("centre"), unit_kind("vu"), unit_kind("I_flywheel")
     ('angular_velocity', 'length', 'velocity', 'moment_of_inertia')
     """
-    from .answers import _KINDS, DRIVER_ANSWERS, ENGINE_ANSWERS
+    from .answers import _KINDS, CYCLE_ANSWERS, DRIVER_ANSWERS, ENGINE_ANSWERS
 
     if kind in ("centre", "h"):
         return "length"
@@ -29,6 +29,8 @@ def unit_kind(kind: str) -> str:
         return ENGINE_ANSWERS[kind]
     if kind in DRIVER_ANSWERS:
         return DRIVER_ANSWERS[kind]
+    if kind in CYCLE_ANSWERS:  # time_ratio, stroke, theta, angle
+        return CYCLE_ANSWERS[kind]
     if kind in ("vu", "au"):  # the guide's point under a block
         return "velocity" if kind == "vu" else "acceleration"
     return _KINDS[kind][0]
@@ -48,6 +50,8 @@ class _Questions:
         centre = key.startswith("I_") and key not in ENGINE_ANSWERS  # (not I_flywheel)
         stand_in = [0, 0] if centre else 1
         ans = self._answer(key, stand_in, known, slider_names, pin_names, loads)
+        if unit and ans.kind == "time_ratio":
+            raise self.error(f'{key} is a bare number: ask "?"', "answers", key)
         if unit:
             try:
                 question_unit(unit, unit_kind(ans.kind), "")

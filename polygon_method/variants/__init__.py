@@ -34,6 +34,7 @@ from ..common.tolerances import ROUNDING
 from ..common.units import ANSWER_UNITS
 from ..solver.kinematics import evaluate
 from ..linkage import four_bar_of, grashof, slider_crank_of, slotted_of
+from ..linkage.cycle_values import CYCLE_SI
 from ..linkage.engine_values import ENGINE_KEYS
 from ..solver.compiler import compile_plan
 from ..scene import Scene, parse_scene, scene_from_table, scene_table
@@ -218,6 +219,13 @@ def _put(raw, path, value):
 # --------------------------------------------------------------------------- questions
 
 
+def _unit_of(kind) -> str:
+    """The SI unit a class's answer key gives an answer of ``kind`` in."""
+    if kind in CYCLE_SI:  # a quick return's times, a stroke, a link's angle
+        return CYCLE_SI[kind]
+    return ANSWER_UNITS[kind] if kind in ANSWER_UNITS else ENGINE_KEYS[kind][1]
+
+
 def questions(scene: Scene) -> tuple:
     """What the answer key gives: the base scene's ``[answers]`` keys where it has them
     (centres aside), else every moving point's speed and acceleration, every moving link's
@@ -232,7 +240,7 @@ def questions(scene: Scene) -> tuple:
                 a.key,
                 a.kind,
                 tuple(a.names),
-                ANSWER_UNITS[a.kind] if a.kind in ANSWER_UNITS else ENGINE_KEYS[a.kind][1],
+                _unit_of(a.kind),
                 a.kind in ("omega", "alpha", "vs", "as", "torque", "torque2"),
                 getattr(a, "unit", None),
             )

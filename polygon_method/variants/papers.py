@@ -10,6 +10,7 @@ import io
 from ..common.errors import SceneError
 from ..common.numbers import fmt, sense
 from ..common.units import UNITS, question_unit
+from ..linkage.cycle_values import CYCLE_KEYS, cycle_value, words as cycle_words
 from ..linkage.engine_values import ENGINE_KEYS, engine_value
 from ..scene.questions import unit_kind
 from ..text.words import given
@@ -33,6 +34,8 @@ def answer(sol, q) -> float:
                 key=f"[answers] {q[0]}",
             )
         return float(v)
+    if q[1] in CYCLE_KEYS:  # a quick return's times, a stroke, a link's angle (rad)
+        return float(cycle_value(sol, q[1], q[2], q[0]))
     return float(sol.value(q[1], q[2]))
 
 
@@ -148,6 +151,8 @@ def _question(q) -> str:
         what = _PAIR_WORDS[kind].format(*names)
     elif kind in ENGINE_KEYS:
         what = ENGINE_KEYS[kind][2] + (f" of the cylinder {names[0]}" if names else "")
+    elif kind in CYCLE_KEYS:
+        what = cycle_words(kind, names)
     else:
         what = _QUESTION_WORDS[kind].format(
             "".join(names)
