@@ -15,9 +15,19 @@ from ..common.tolerances import SAME
 from ..scene import Scene
 from .analysis import motion_over_cycle
 from .cycle import _Cycle
+from .output_motion import stroke_turns
 from .shapes import _Output, _output_of, four_bar_of, slider_crank_of, slotted_of
 
-__all__ = ["CYCLE_KEYS", "CYCLE_SI", "cycle_value", "words"]
+__all__ = [
+    "CYCLE_KEYS",
+    "CYCLE_SI",
+    "cycle_value",
+    "direction",
+    "joint_angle",
+    "quick_return",
+    "stroke_ends",
+    "words",
+]
 
 #: answer kind -> (unit kind, the unit ``check`` shows it in, what it is: :func:`words`)
 CYCLE_KEYS = {
@@ -89,6 +99,12 @@ def _motion(scene, cyc, out):
 def time_ratio(scene: Scene, key: str = "time_ratio") -> float:
     """The quick return's ratio of the crank's turn during the slower stroke (the cutting
     stroke) to the quicker (the return), the output's as ``linkage`` gives it."""
+    return quick_return(scene, key)[4]
+
+
+def quick_return(scene: Scene, key: str = "time_ratio") -> tuple:
+    """(output, its two standstills, the crank's turn from the first to the second and on
+    round, rad, the time ratio): :func:`time_ratio`'s working (``steps`` writes it)."""
     cyc = _cycle(scene, key)
     if not cyc.dom.full_turn:
         _refuse(
@@ -97,19 +113,27 @@ def time_ratio(scene: Scene, key: str = "time_ratio") -> float:
     out = _output_of(scene, cyc.plan)
     if out is None:
         _refuse(key, "the mechanism has no output link or slider whose strokes to time")
-    ratio = _motion(scene, cyc, out)[4]
+    motion = _motion(scene, cyc, out)
+    ratio = motion[4]
     if ratio is None:
         _refuse(
             key,
             f"{out.label} does not stand still twice in the crank's turn: no forward and "
             "return strokes (no quick return)",
         )
-    return ratio
+    return (out, motion[0], *stroke_turns(cyc, motion[0]), ratio)
 
 
 def stroke(scene: Scene, point: str, key: str) -> float:
     """Slider ``point``'s length of stroke (m) over the crank's cycle, as ``linkage`` gives
     the output's: its farthest places along its fixed path apart."""
+    omin, omax, _ = stroke_ends(scene, point, key)
+    return omax - omin
+
+
+def stroke_ends(scene: Scene, point: str, key: str) -> tuple:
+    """(least, largest place along its path, m; the slider's path): :func:`stroke`'s
+    working (``steps`` writes it)."""
     sl = scene.slider(point)
     if sl is None or not hasattr(sl, "through"):
         _refuse(
@@ -128,7 +152,7 @@ def stroke(scene: Scene, point: str, key: str) -> float:
     _, _, omin, omax, _, _ = _motion(scene, cyc, out)
     if omin is None or omax - omin == 0.0:
         _refuse(key, f"{point} stands still over the crank's cycle: no stroke")
-    return omax - omin
+    return omin, omax, sl
 
 
 def direction(P, x: str, y: str) -> float:

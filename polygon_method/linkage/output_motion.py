@@ -15,7 +15,7 @@ from ..solver.tracking import TWO_PI
 from .cycle import _Cycle, stands_still
 from .shapes import _Output
 
-__all__ = ["Stationary", "output_motion", "path_origin", "shown_place"]
+__all__ = ["Stationary", "output_motion", "stroke_turns", "path_origin", "shown_place"]
 
 
 @dataclass(frozen=True)
@@ -143,10 +143,8 @@ def _quick_return(cyc, out, stats):
     dom = cyc.dom
     if dom.full_turn and len(stats) == 2:
         w = cyc.sw.omega
-        t1, t2 = stats[0].theta, stats[1].theta
-        arc1 = ((t2 - t1) * (1 if w > 0 else -1)) % TWO_PI  # crank turn from stat 1 to 2
-        arc2 = TWO_PI - arc1
-        mid = t1 + (1 if w > 0 else -1) * arc1 / 2
+        arc1, arc2 = stroke_turns(cyc, stats)
+        mid = stats[0].theta + (1 if w > 0 else -1) * arc1 / 2
         sgn = float(out.rate(cyc.at(mid))[0])
         d1, d2 = _direction(out, sgn), _direction(out, -sgn)
         ratio = max(arc1, arc2) / min(arc1, arc2)
@@ -161,6 +159,14 @@ def _quick_return(cyc, out, stats):
     if not dom.full_turn:
         return None, ["quick return: not applicable (the crank does not turn fully)"]
     return None, []
+
+
+def stroke_turns(cyc, stats) -> tuple:
+    """(arc1, arc2), rad: the crank's turn, in its own sense, from the output's first
+    standstill ``stats[0]`` to its second, then on round to the first (their sum 2 pi)."""
+    t1, t2 = stats[0].theta, stats[1].theta
+    arc1 = ((t2 - t1) * (1 if cyc.sw.omega > 0 else -1)) % TWO_PI
+    return arc1, TWO_PI - arc1
 
 
 def path_origin(path, scene) -> str:

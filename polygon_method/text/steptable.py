@@ -42,6 +42,7 @@ from ..solver.two_given import found_note
 from ..steps.block import at_rest_rate
 from ..common.numbers import fmt, sense_word
 from .forces import force_blocks
+from .cycle_steps import cycle_items
 from .link_points import pair_items
 from .polygon_steps import (
     acceleration_section,
@@ -447,6 +448,10 @@ def steps_blocks(sol: Solution) -> _Doc:
     if asked:
         doc.h("Asked of two points of a link")
         doc.items(asked)
+    worked = cycle_items(sol)  # time_ratio, stroke_X, theta_XY, angle_XYZ: where asked
+    if worked:
+        doc.h("Asked of the cycle and the configuration")
+        doc.items(worked)
     fscale = force_scale(sol.forces) if sc.has_forces and not sol.forces_refused else None
     doc.blocks += force_blocks(sol, fscale)
     doc.blocks += klein_blocks(sol)  # a slider crank at uniform crank speed
