@@ -214,7 +214,9 @@ def test_a_links_direction_from_its_other_end_and_an_angles_supplement_are_named
         math.degrees(math.atan2(*(sol.P["D"][1] - sol.P["C"][1], sol.P["D"][0] - sol.P["C"][0])))
         % 360
     )
-    bcd = check_answers(solve(parse_scene(text + "[answers]\nangle_BCD = 10\n")))[0].correct
+    bcd = math.degrees(
+        check_answers(solve(parse_scene(text + "[answers]\nangle_BCD = 10\n")))[0].correct
+    )  # (SI: rad)
     cases = [
         (f"theta_CD = {(true + 180) % 360}", "other_end", False),
         (f"theta_CD = {true - 360}", None, True),  # -x deg is 360 - x deg

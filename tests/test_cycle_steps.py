@@ -7,6 +7,7 @@ centres, crank and rod in line), and its worked sums against what they state."""
 
 from __future__ import annotations
 
+import json
 import math
 import re
 
@@ -177,3 +178,28 @@ def test_a_key_that_cannot_be_worked_says_why_in_its_line():
     sol = solve(parse_scene(_offset(100, 130, 60)))
     items = cycle_items(sol)
     assert items[0].startswith("time_ratio: not answered: the crank OA does not turn fully")
+
+
+def test_check_json_gives_a_graded_angle_in_si(tmp_path, capsys):
+    """``check --json``: a graded theta_XY or angle_XYZ in rad (unit "rad"), as every other
+    number; the table's row in degrees. Against the cosine rule and atan2 of the closed-form
+    positions (crank 30 deg)."""
+    r, l, e = 100.0, 380.0, 60.0
+    xa, ya = r * math.cos(math.radians(30)), r * math.sin(math.radians(30))
+    xb = xa + math.sqrt(l**2 - (e - ya) ** 2)
+    angle = math.acos((r**2 + l**2 - (xb**2 + e**2)) / (2 * r * l))
+    theta = math.atan2(e - ya, xb - xa)  # small and positive: -358.5 deg is written as it
+    path = tmp_path / "graded.toml"
+    text = _offset(r, l, e).split("[answers]")[0]
+    path.write_text(text + '[answers]\nangle_OAB = "151.5 deg"\ntheta_AB = -358.5\n')
+    assert main(["check", "--json", str(path)]) == 0
+    got = {a["key"]: a for a in json.loads(capsys.readouterr().out)["answers"]}
+    a, t = got["angle_OAB"], got["theta_AB"]
+    assert a["unit"] == t["unit"] == "rad" and a["verdict"] == t["verdict"] == "right"
+    assert abs(a["correct"] - angle) <= REL * angle
+    assert abs(a["given"] - math.radians(151.5)) <= REL
+    assert abs(t["correct"] - (theta - 2 * math.pi)) <= REL * 2 * math.pi  # as given: -360 + x
+    assert abs(t["given"] - math.radians(-358.5)) <= REL
+    assert main(["check", str(path)]) == 0
+    row = next(x for x in capsys.readouterr().out.splitlines() if x.startswith("angle_OAB"))
+    assert f"{math.degrees(angle):.4g} deg" in row

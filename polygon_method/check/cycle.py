@@ -12,6 +12,7 @@ three significant figures.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 from ..common.errors import PolygonMethodError, SceneError
 from ..common.numbers import textbook
@@ -124,4 +125,18 @@ def cycle_verdict(sol, ans, tolerance) -> Verdict:
                     + f"); the correct value is {textbook(correct)} {unit}".rstrip()
                 )
                 break
+    if kind in ("theta", "angle"):  # graded in degrees, recorded in SI (rad) as every other
+        v = Verdict.judged(
+            ans,
+            math.radians(given),
+            math.radians(correct_shown),
+            "rad",
+            math.radians(tol),
+            rule,
+            ok,
+            False,
+            mistake,
+            diagnosis,
+        )
+        return replace(v, correct_text=f"{textbook(correct_shown)} deg")
     return Verdict.judged(ans, given, correct_shown, unit, tol, rule, ok, False, mistake, diagnosis)
