@@ -371,3 +371,19 @@ def test_the_ratio_and_the_stroke_of_one_output_are_one_search(monkeypatch):
     scene = load_scene(SHAPER)  # (a scene of its own: none kept from another test)
     assert [v.ok for v in check_answers(solve(scene))] == [True, True]
     assert seen == ["Y"]
+
+
+def test_a_direction_near_nought_is_held_to_a_right_angles_tolerance():
+    """A direction written near 0 deg was held to 0.5 % of itself (1.5 deg: +-0.0075 deg) and
+    the same direction written as -358.5 deg to +-1.8 deg: both are now held to 0.5 % of a
+    right angle at the least (0.45 deg), the direction's true place by atan2 of the
+    positions."""
+    text = FOURBAR.format(a=40, b=150, c=80, d=150, t=60).split("[answers]")[0]
+    sol = solve(parse_scene(text))
+    true = math.degrees(math.atan2(sol.P["C"][1] - sol.P["B"][1], sol.P["C"][0] - sol.P["B"][0]))
+    tol = 0.005 * 90
+    for off, ok in ((0.4 * tol, True), (-0.9 * tol, True), (1.1 * tol, False), (-1.2 * tol, False)):
+        for written in (true + off, true + off - 360):  # the same direction, two ways
+            answers = f'[answers]\ntolerance = "0.5%"\ntheta_BC = {written}\n'
+            (v,) = check_answers(solve(parse_scene(text + answers)))
+            assert v.ok == ok, (written, true)

@@ -23,6 +23,9 @@ from .verdicts import ROUNDING, Verdict
 
 __all__ = ["CYCLE_KEYS", "cycle_verdict"]
 
+#: the size a direction's or an angle's tolerance is taken of (deg), whatever its value
+RIGHT_ANGLE = 90.0
+
 
 def _correct(sol, ans) -> float:
     """The right value (a ratio, m, or deg), or the answer refused in one line naming it."""
@@ -112,13 +115,17 @@ def cycle_verdict(sol, ans, tolerance) -> Verdict:
     else:
         err = abs(given - correct)
         correct_shown = correct
-    tol = max(rel * abs(correct_shown), FLOOR)
+    # a direction or an angle: its tolerance that of a right angle, however it is written
+    # (near 0 deg, or as 1.5 rather than -358.5, it was held tighter than any other)
+    size = RIGHT_ANGLE if kind in ("theta", "angle") else abs(correct_shown)
+    tol = max(rel * size, FLOOR)
     ok = err <= tol * (1 + ROUNDING)
     mistake = diagnosis = None
     if not ok:
         for v, code, what in _slips(sol, ans, correct):
             off = _angle_off(given, v) if kind == "theta" else abs(given - v)
-            if off <= max(rel * abs(v), FLOOR) * (1 + ROUNDING):
+            slack = rel * (RIGHT_ANGLE if kind in ("theta", "angle") else abs(v))
+            if off <= max(slack, FLOOR) * (1 + ROUNDING):
                 mistake = code
                 diagnosis = (
                     f"{words(kind, ans.names)} matches {what} ({textbook(v)} {unit}".rstrip()
