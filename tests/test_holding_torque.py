@@ -134,3 +134,24 @@ def test_refused_in_one_line(answers, masses, words, tmp_path, capsys):
     assert main(["check", str(f)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and words in err[0] and "Thold_" in err[0], err
+
+
+def test_over_a_sweep_the_arms_and_planets_weights_leave_it_alone():
+    """Heavy arm and planet, gravity on: the planet's weight and its inertia force act at
+    its centre (its mass there, at A), so its moments about A still make its two tooth
+    loads equal: the sun is held with 100 x 40/88 at every angle (the sweep's ``Thold_O``
+    column), while the arm's torque changes with the weights."""
+    import numpy as np
+
+    from polygon_method.motion.sweeps import sweep
+
+    planet, other, load, *_ = SUN_FIXED
+    text = TRAIN.format(planet=planet, other=other, load=load).replace(
+        "[masses]\n",
+        '[masses]\nOA = { mass = "4 kg" }\nAP = { mass = "2 kg", along = 0, from = "A", gyration = 40 }\n',
+    )
+    sc = parse_scene(text + "[gravity]\n")
+    res = sweep(sc, np.radians([0.0, 50.0, 130.0, 200.0, 290.0]))
+    cols = {n: np.asarray(a, dtype=float) for n, _, a in res.force_columns()}
+    assert cols["Thold_O"] == pytest.approx([-100 * 40 / 88] * 5, rel=1e-9)
+    assert np.ptp(cols["torque_inertia"]) > 1.0  # (the weights do change the arm's)

@@ -68,6 +68,22 @@ def force_value(f: Forces, kind: str, name: str) -> float:
     return found[0].magnitude
 
 
+def holding_columns(f: Forces) -> list:
+    """(name, unit, torque, words) of each fixed circle a gear rolls on, for the sweep's
+    columns and its summary: ``Thold_O`` the torque (N m, ccw positive) the frame holds
+    the circle about O with, the sum over the gears on it (as :func:`force_value`)."""
+    about = dict.fromkeys(c.about for c in f.contacts if c.about is not None)
+    return [
+        (
+            f"Thold_{o}",
+            "N m",
+            force_value(f, "Thold", o),
+            f"torque holding the fixed circle about {o}, ccw +",
+        )
+        for o in about
+    ]
+
+
 def effort_value(f: Forces | None, kind: str) -> float:
     """A driver's effort other than the crank's torque (signed): ``force`` a driving
     block's, collar's or cylinder's force along its guide (:attr:`Forces.input_torque`),
