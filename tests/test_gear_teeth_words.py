@@ -187,8 +187,9 @@ def test_the_force_drawing_names_the_gears_by_their_teeth(tmp_path):
     """The force sheet's heading of the planet's step and the contact's words (its text
     is kept beside each drawn line of the SVG)."""
     text = BOOK.read_text(encoding="utf-8").split("[answers]")[0]
+    assert '"O-Q" = { torque = "100 N m cw" }' in text  # the book's resisting torque
     scene = tmp_path / "held.toml"
-    scene.write_text(text + '[loads]\n"O-Q" = { torque = "100 N m cw" }\n[gravity]\n', "utf-8")
+    scene.write_text(text, "utf-8")
     svg = tmp_path / "f.svg"
     assert main(["draw", "--diagram", "forces", str(scene), "-o", str(svg)]) == 0
     out = svg.read_text(encoding="utf-8")

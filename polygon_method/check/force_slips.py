@@ -21,7 +21,8 @@ def force_slips(d, kind, names, signed):
     """The force chapter's classic slips, each solved again as the slip would have it:
     the friction or the piston's inertia left out, the weights added where the problem
     leaves them out, the inertia couple left out, the offset h on the wrong side of G;
-    a tooth load's part along the tangent given for it; a driver's effort by the power
+    a tooth load's part along the tangent given for it; a fixed gear's holding torque by
+    the ratio of teeth turned over; a driver's effort by the power
     balance without inertia, or as at rest, or given as another force at its block."""
     sol, sc, out = d.sol, d.sc, []
 
@@ -48,19 +49,7 @@ def force_slips(d, kind, names, signed):
     _friction_left_out(sc, redo)
     if kind in ("torque", "force", "torque2", "force2"):
         out += _effort_slips(d, kind, signed, again)
-    if kind == "Fc":  # the tooth load's part along the tangent given for the whole
-        body = rolling_body(sc, names)
-        c = next((c for c in sol.forces.contacts if c.wheel == body), None)
-        if c is not None and c.teeth is not None and c.teeth > 0:
-            out.append(
-                _Candidate(
-                    d.cmp(abs(c.tangential), signed),
-                    "pressure_angle_left_out",
-                    "the tooth load's part along the common tangent given "
-                    "for the whole load: the pressure angle left out (the "
-                    "load acts along the line of action, |T| / cos phi)",
-                )
-            )
+    out += _gear_slips(d, kind, names, signed)
     blocks = [m.body for m in sc.masses if m.block]
     if blocks:
         redo(
@@ -94,6 +83,60 @@ def force_slips(d, kind, names, signed):
     if two:
         masses = tuple(replace(m, inertia=two.get(m.body, m.inertia)) for m in sc.masses)
         redo(rod_slip.WORDS, "correction_couple_left_out", masses=masses)
+    return out
+
+
+def _gear_slips(d, kind, names, signed) -> list:
+    """A gear's slips: a tooth load's part along the tangent given for it, a fixed gear's
+    holding torque by the ratio of teeth turned over."""
+    sol, sc, out = d.sol, d.sc, []
+    if kind == "Fc":  # the tooth load's part along the tangent given for the whole
+        body = rolling_body(sc, names)
+        c = next((c for c in sol.forces.contacts if c.wheel == body), None)
+        if c is not None and c.teeth is not None and c.teeth > 0:
+            out.append(
+                _Candidate(
+                    d.cmp(abs(c.tangential), signed),
+                    "pressure_angle_left_out",
+                    "the tooth load's part along the common tangent given "
+                    "for the whole load: the pressure angle left out (the "
+                    "load acts along the line of action, |T| / cos phi)",
+                )
+            )
+    if kind == "Thold":  # the ratio of teeth turned over
+        out += _ratio_inverted(d, names[0], signed)
+    return out
+
+
+def _ratio_inverted(d, centre, signed) -> list:
+    """The holding torque of the fixed circle about ``centre`` by the ratio of teeth turned
+    over: a planet's two tooth loads are equal, so the fixed gear takes the other gear's
+    torque times z_fixed / z_other; the slip takes z_other / z_fixed, the right value
+    times (r_other / r_fixed)^2 (the pitch radii, in proportion to the teeth)."""
+    sc, out = d.sc, []
+    for r in sc.rolling:
+        if r.on != "circle" or r.base_centre != centre:
+            continue
+        others = [q for q in sc.rolling if q.base == r.wheel and q.on == "gear"]
+        if len(others) != 1 or not r.base_radius:  # (a compound planet: no one ratio)
+            continue
+        q, held = others[0], d.sol.value("Thold", (centre,))
+        k = (q.radius / r.base_radius) ** 2
+        ratio = (
+            f"{q.teeth[0]}/{r.teeth[1]}"
+            if r.teeth and q.teeth and q.teeth[0] and r.teeth[1]
+            else "r_other / r_fixed"
+        )
+        out.append(
+            _Candidate(
+                d.cmp(held * k, signed),
+                "teeth_ratio_inverted",
+                f"the ratio of teeth turned over ({ratio} taken for its inverse): the "
+                "planet's tooth loads are equal, so the fixed gear takes the other gear's "
+                "torque times z_fixed / z_other (each torque the load times its own pitch "
+                "radius)",
+            )
+        )
     return out
 
 

@@ -144,6 +144,16 @@ class _Diagnoser:
                 )
             ]
         word = "cw" if correct > 0 else "ccw"
+        if kind == "Thold":
+            return [
+                _Candidate(
+                    -correct,
+                    "sense",
+                    f"the sense is wrong ({word} given; the frame holds the fixed gear "
+                    f"{'ccw' if correct > 0 else 'cw'}: against the planet's push on its "
+                    "teeth, the torques on the train summing to nought)",
+                )
+            ]
         return [
             _Candidate(
                 -correct,

@@ -19,7 +19,9 @@ UNIT_OF = ANSWER_UNITS
 
 #: the answer kinds the force analysis gives (computed, not drawn: three significant
 #: figures, or the answers' tolerance; the force chapter's slips)
-FORCE_KINDS = ("F", "N", "Fc", "Fi", "Ci", "h", "force", "force2", "torque2", "Tmax", "Pmax")
+FORCE_KINDS = (
+    *("F", "N", "Fc", "Fi", "Ci", "h", "force", "force2", "torque2", "Tmax", "Pmax", "Thold"),
+)
 
 
 #: answer kind -> the kind of quantity whose largest value sets what is rounding noise

@@ -229,6 +229,7 @@ ANSWER_UNITS = {
     "au": "m/s^2",
     "Fi": "N",
     "Ci": "N m",
+    "Thold": "N m",
     "h": "m",
     "force": "N",
     "force2": "N",

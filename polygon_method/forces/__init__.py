@@ -65,7 +65,7 @@ from . import (
 from .bodies import Ledger, Singular, centre, cross, gather
 from .collar import second_name
 from .core import force_plan
-from .values import effort_value, force_value
+from .values import effort_value, force_value, holding_columns
 from .rest import still
 from .records import (
     FRAME,
@@ -133,6 +133,7 @@ ROOMS = {
 }
 
 __all__ = [
+    "holding_columns",
     "analyse",
     "Forces",
     "Inertia",

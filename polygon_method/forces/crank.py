@@ -72,12 +72,14 @@ def step(st, P, led, own):
         O = st.pivot
         # a driver elsewhere (a cylinder, a given block) leaves the crank no torque: its
         # rounding noise is written 0, on the size of the pivot's force times the mechanism's
-        size = math.hypot(*r) * max(math.dist(q, (ox, oy)) for q in P.values())
+        size_r = math.hypot(*r)
+        size = size_r * max(math.dist(q, (ox, oy)) for q in P.values())
         t = quiet(torque, size)
         eq = (
             f"moments about {O}: T + M_{O} = 0, M_{O} = {fmt(-t if t else 0.0)} N m the "
             f"known forces' moment: T = {fmt(t)} N m",
-            f"forces: F_{O} = -(the known forces) = ({fmt(r[0])}, {fmt(r[1])}) N",
+            f"forces: F_{O} = -(the known forces) = ({fmt(quiet(r[0], size_r))}, "
+            f"{fmt(quiet(r[1], size_r))}) N",
         )
     rec = ForceStep(
         st.index,

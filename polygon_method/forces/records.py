@@ -131,6 +131,8 @@ class Contact:
     #: on a fixed circle: the torque (N m, ccw positive) the frame holds it with (the
     #: circle's own balance against the wheel's push at the contact), else None
     holding: float | None = None
+    #: on a fixed circle: its centre (the point the ``Thold_O`` answer key names), else None
+    about: str | None = None
 
     couple = 0.0
 

@@ -35,7 +35,7 @@ from __future__ import annotations
 
 import math
 
-from ..common.numbers import fmt
+from ..common.numbers import fmt, quiet
 from ..steps.rounding import vhypot
 from .bodies import cross, direction
 from dataclasses import replace
@@ -103,6 +103,12 @@ def contact_frame(st, P):
     return (ox + R * ux, oy + R * uy), (e * ux, e * uy)
 
 
+def _vec_words(v) -> str:
+    """``(x, y)`` of a force, noise about a zero component (below its size's) written 0."""
+    size = math.hypot(v[0], v[1])
+    return f"({fmt(quiet(v[0], size))}, {fmt(quiet(v[1], size))})"
+
+
 def gear_words(st):
     """(the wheel, what it meshes with) in the step table's words where it is a gear given
     by its teeth ("planet AP of 24 teeth", "the sun of 40 teeth about O"), else None."""
@@ -141,7 +147,9 @@ def step(st, P, led, own):
     base = FRAME if st.on == "circle" else st.base
     oc = own[C]
     contact = Contact(W, (ix, iy), n, t, m, base, None if preload else phi, stated)
-    contact = replace(contact, words=gear_words(st), holding=_holding(st, P, (ix, iy), F))
+    held = _holding(st, P, (ix, iy), F)
+    about = st.base_centre if held is not None else None
+    contact = replace(contact, words=gear_words(st), holding=held, about=about)
     known = led.known(W)
     led.add(
         base, -F[0], -F[1], ix, iy, side=Side("contact", base, W, "I", (-F[0], -F[1]), (ix, iy))
@@ -173,8 +181,7 @@ def step(st, P, led, own):
             + ("outwards, a ring" if getattr(st, "ring", False) else "towards its centre")
             + "); the tooth load "
             f"|T| / cos phi = {fmt(contact.load)} N",
-            f"forces on {W}: F_{C} = -(the known forces + the tooth load) = "
-            f"({fmt(FC[0])}, {fmt(FC[1])}) N",
+            f"forces on {W}: F_{C} = -(the known forces + the tooth load) = {_vec_words(FC)} N",
         )
     rec = ForceStep(
         st.index,
@@ -219,8 +226,7 @@ def _grip_step(st, P, contact, kw, known, F, FC, oc, base):
             f"moments of {W} about its centre {C} (the pin force there has no arm): "
             f"M_{C} - r T = 0, M_{C} = {fmt(mc)} N m the known forces', r = {fmt(r)} m: "
             f"T = M_{C} / r = {fmt(t)} N (along the common tangent)",
-            f"forces on {W}: F_{C} = -(the known forces + the contact's) = "
-            f"({fmt(FC[0])}, {fmt(FC[1])}) N",
+            f"forces on {W}: F_{C} = -(the known forces + the contact's) = {_vec_words(FC)} N",
         )
     rec = ForceStep(
         st.index,

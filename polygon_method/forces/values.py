@@ -1,5 +1,5 @@
 """The size of what a force answer key names (``F_B``, ``N_B``, ``Fc_L``, ``Fi_L``, ``Ci_L``,
-``h_L``, ``Tmax_L``, ``Pmax_L``), and a driver's effort but the crank's torque (``force``,
+``h_L``, ``Tmax_L``, ``Pmax_L``, ``Thold_O``), and a driver's effort but the crank's torque (``force``,
 ``torque2``, ``force2``), read from a :class:`~.records.Forces`."""
 
 from __future__ import annotations
@@ -16,9 +16,16 @@ def force_value(f: Forces, kind: str, name: str) -> float:
     gear's tooth load; of body ``name``
     (a link's key, or ``block X``): ``Fi`` its inertia force's size ``m |a_G|``, ``Ci`` its
     inertia couple ``-I alpha`` (signed, ccw positive), ``h`` the offset ``|I alpha| / (m
-    |a_G|)`` of the book's single force from G (0 where the body has no couple)."""
+    |a_G|)`` of the book's single force from G (0 where the body has no couple);
+    ``Thold`` the torque (ccw positive) the frame holds the fixed circle about ``name``
+    with, the sum over the gears rolling on it (an epicyclic's fixed sun or annulus)."""
     if kind in ("Tmax", "Pmax"):  # a friction drive's largest torque, power
         return drive_value(f.contacts, kind, name)
+    if kind == "Thold":  # the frame's torque on the fixed circle about ``name``
+        held = [c.holding for c in f.contacts if c.about == name and c.holding is not None]
+        if not held:
+            raise SceneError(f"Thold_{name}: no gear rolls on a fixed circle about {name}")
+        return sum(held)
     if kind == "Fc":
         c = next((c for c in f.contacts if c.wheel == name), None)
         if c is None:
@@ -59,6 +66,22 @@ def force_value(f: Forces, kind: str, name: str) -> float:
             )
         )
     return found[0].magnitude
+
+
+def holding_columns(f: Forces) -> list:
+    """(name, unit, torque, words) of each fixed circle a gear rolls on, for the sweep's
+    columns and its summary: ``Thold_O`` the torque (N m, ccw positive) the frame holds
+    the circle about O with, the sum over the gears on it (as :func:`force_value`)."""
+    about = dict.fromkeys(c.about for c in f.contacts if c.about is not None)
+    return [
+        (
+            f"Thold_{o}",
+            "N m",
+            force_value(f, "Thold", o),
+            f"torque holding the fixed circle about {o}, ccw +",
+        )
+        for o in about
+    ]
 
 
 def effort_value(f: Forces | None, kind: str) -> float:

@@ -201,9 +201,11 @@ class _Reducer:
         yield "shake_moment", "N m", b(f.shaking_moment), "shaking moment about O, ccw +"
         for g in f.guides:
             yield f"N_{g.point}", "N", b(g.normal), "guide's normal force, signed"
-        from ..forces.grip import margins  # lazy, as in `force_quantities`
+        from ..forces import holding_columns  # lazy, as in `force_quantities`
+        from ..forces.grip import margins
 
-        for name, unit, v, what in margins(f):  # a friction drive: its worst angle
+        # a friction drive's grip, a fixed gear's holding torque: each one's worst angle
+        for name, unit, v, what in margins(f) + holding_columns(f):
             yield name, unit, b(v), what
         for p in f.pins:
             yield (

@@ -458,7 +458,7 @@ class Solution(Motion):
             from ..forces import effort_value  # lazy, as in `forces`
 
             return effort_value(self.forces, kind)
-        if kind in ("F", "N", "Fc", "Fi", "Ci", "h", "Tmax", "Pmax"):
+        if kind in ("F", "N", "Fc", "Fi", "Ci", "h", "Tmax", "Pmax", "Thold"):
             from ..forces import force_value  # lazy, as in `forces`
 
             if kind in ("Tmax", "Pmax"):  # a friction drive's wheel, or the gear it grips

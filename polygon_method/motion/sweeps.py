@@ -230,9 +230,10 @@ class SweepResult(Motion):
             ("shake_moment", "N m", np.broadcast_to(f.shaking_moment, n)),
         ]
         cols += [(f"N_{g.point}", "N", np.broadcast_to(g.normal, n)) for g in f.guides]
+        from ..forces import holding_columns  # lazy, as below: a fixed gear's holding
         from ..forces.grip import margins  # lazy, as below: a friction drive's grip
 
-        cols += [(k, u, np.broadcast_to(v, n)) for k, u, v, _ in margins(f)]
+        cols += [(k, u, np.broadcast_to(v, n)) for k, u, v, _ in margins(f) + holding_columns(f)]
         cols += [
             (
                 f"F_{p.point}_{p.on}_{p.by}".replace(" ", ""),

@@ -349,7 +349,7 @@ class _Answers(_Questions, _CycleAnswers):
         if prefix not in _KINDS or not rest:
             raise self._unknown_key(key, hint)
         kind, what, sense_ok = _KINDS[prefix]
-        if what in ("pin_force", "guide", "body", "contact", "drive") and not forces:
+        if what in ("pin_force", "guide", "body", "contact", "drive", "held") and not forces:
             raise self.error(
                 f"{key}: a force answer needs the force analysis: give [masses] or [gravity]",
                 "answers",
@@ -365,7 +365,7 @@ class _Answers(_Questions, _CycleAnswers):
         names = (rest,) if what == "slider" and rest in slider_names else split_name(rest)
         if not names:
             raise self.error(f"'{rest}' is not a point or link name{hint()}", "answers", key)
-        if what in ("pin_force", "guide", "body", "contact", "drive"):
+        if what in ("pin_force", "guide", "body", "contact", "drive", "held"):
             names = self._force_names(key, prefix, rest, names, what, known, slider_names)
         else:
             names = self._motion_names(
@@ -464,7 +464,8 @@ class _Answers(_Questions, _CycleAnswers):
             "vI_L, aI_L (a wheel's contact point), vmin_XY (the least speed between "
             "two points of a link), ar_XY, at_XY (X's radial and tangential "
             "acceleration relative to Y), "
-            "F_X, N_X, Fi_L, Ci_L, h_L, Fc_L (forces), Tmax_L, Pmax_L (a friction "
+            "F_X, N_X, Fi_L, Ci_L, h_L, Fc_L (forces), Thold_O (the torque holding a "
+            "fixed gear about O), Tmax_L, Pmax_L (a friction "
             "drive's largest torque and power), piston_effort, crank_effort, "
             "turning_moment, rod_thrust, side_thrust (each with _B: piston B's of several "
             "cylinders), shaking_force, shaking_moment, "
@@ -561,6 +562,18 @@ class _Answers(_Questions, _CycleAnswers):
                     f"Fc_{rest}: {rest} is no wheel of [rolling] and no rack (the "
                     "key names a rolling wheel's link, e.g. Fc_AP, or a rack's "
                     "point)",
+                    "answers",
+                    key,
+                )
+        elif what == "held":  # a fixed circle's centre (an epicyclic's fixed sun or annulus)
+            fixed = {
+                r.base_centre for r in getattr(self, "rolling_pairs", ()) or () if r.on == "circle"
+            }
+            if len(names) != 1 or names[0] not in fixed:
+                raise self.error(
+                    f"Thold_{rest}: no gear of [rolling] rolls on a fixed circle about "
+                    f"{rest} (the key names the fixed circle's centre"
+                    + (f", e.g. Thold_{sorted(fixed)[0]})" if fixed else ")"),
                     "answers",
                     key,
                 )

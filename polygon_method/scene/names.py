@@ -68,6 +68,9 @@ ANSWER_KINDS = {
     "Fc": ("force", "contact", False),  # rolling wheel L's contact force (a rack: its point)
     "Tmax": ("torque", "drive", False),  # a friction drive's largest torque on L, mu N r
     "Pmax": ("power", "drive", False),  # and the largest power through its grip, mu N v
+    # the torque the frame holds a fixed circle (an epicyclic's fixed sun or annulus) with,
+    # about its centre O (Thold_O: ccw positive, or a sense)
+    "Thold": ("torque", "held", True),
 }
 #: the answer kinds of the guide's point under a block (``v_A1``, ``a_A1``: its image a1)
 UNDER_BLOCK_KINDS = {"v": "vu", "a": "au"}

@@ -126,6 +126,7 @@ _QUESTION_WORDS = {
     "Pmax": "the largest power through the grip of {0}",
     "Fi": "the inertia force of {0}",
     "Ci": "the inertia couple of {0}",
+    "Thold": "the torque holding the fixed gear about {0}",
     "h": "the offset of {0}'s inertia force from its centre of mass",
     "force": "the driver's force along its guide",
     "force2": "the second input's force along its guide",
