@@ -38,7 +38,6 @@ import math
 from dataclasses import dataclass
 
 from ..common.numbers import article
-from .engine import ATMOSPHERE
 from .records import Cylinder, split_name
 
 __all__ = ["LoadedCylinder", "length_of", "stated", "_CylinderLoads"]
@@ -235,18 +234,11 @@ class _CylinderLoads:
         return k, free
 
     def _gauge(self, spec, key, name) -> float:
-        """The gauge pressure ``spec[key]`` (Pa), refused below a vacuum (a slip of sign or
-        unit: it would turn a pull into a push silently)."""
-        p = self.qty(spec[key], "pressure", "loads", name).value
-        if p < -ATMOSPHERE:
-            raise self.error(
-                f"{key} = {spec[key]!r} is below a vacuum (gauge pressures reach "
-                f"-{ATMOSPHERE / 1e5:g} bar at the least): a pull is a pressure on the "
-                "annulus (rod = ...) or pull = ...",
-                "loads",
-                name,
-            )
-        return p
+        """A cylinder's gauge pressure ``spec[key]`` (Pa): the reader's :meth:`gauge`, a
+        pull said as a cylinder gives it."""
+        return self.gauge(
+            spec, key, name, ": a pull is a pressure on the annulus (rod = ...) or pull = ..."
+        )
 
     def _oil(self, cyl, name, spec):
         """(the force, + pushing apart; its words) of a pressure on the cylinder's piston."""

@@ -16,14 +16,15 @@ from .table_help import _suggest, _unit_at, _which_point
 class _Loads:
     """The reader's methods for [loads] (mixed into the reader)."""
 
-    def _gas_gauge(self, spec, key, name) -> float:
-        """A piston's gauge pressure ``spec[key]`` (Pa), refused below a vacuum as the
-        indicator's readings are (a slip of sign or unit: it would pull the piston)."""
+    def gauge(self, spec, key, name, advice="") -> float:
+        """The gauge pressure ``spec[key]`` (Pa) of ``[loads] name``, refused below a vacuum
+        (a slip of sign or unit: it would pull a piston silently; ``advice``: what to write
+        instead), as the indicator's readings are: a piston's gas force and a cylinder's."""
         p = self.qty(spec[key], "pressure", "loads", name).value
         if p < -ATMOSPHERE:
             raise self.error(
-                f"{key} = {spec[key]!r} is below a vacuum (a gauge pressure reaches "
-                f"-{ATMOSPHERE / 1e5:g} bar at the least)",
+                f"{key} = {spec[key]!r} is below a vacuum (gauge pressures reach "
+                f"-{ATMOSPHERE / 1e5:g} bar at the least){advice}",
                 "loads",
                 name,
             )
@@ -142,7 +143,7 @@ class _Loads:
             raise self.error(
                 "give the gas force by pressure and bore, or a force, not both", "loads", name
             )
-        p = self._gas_gauge(spec, "pressure", name)
+        p = self.gauge(spec, "pressure", name)
         bore = self.length(spec["bore"], "loads", name)
         area = math.pi / 4 * bore * bore
         rod_area = 0.0
@@ -162,7 +163,7 @@ class _Loads:
                 words += f" less a {self._words(rod)} rod"
         f = p * area
         if "back" in spec:  # double-acting: the cover side's pressure less the crank side's
-            back = self._gas_gauge(spec, "back", name)
+            back = self.gauge(spec, "back", name)
             f -= back * (area - rod_area)
             words += f" (the cover side) against {spec['back']} on the crank side" + (
                 f" less a {self._words(math.sqrt(rod_area * 4 / math.pi))} rod" if rod_area else ""
