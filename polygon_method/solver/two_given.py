@@ -104,7 +104,7 @@ def complete_two(scene, compile_trial) -> tuple:
     # an acceleration's rows hold the velocity terms (omega^2 r of the links turning at
     # the speeds found): its noise is on their size, not on the accelerations' own
     turning = max([abs(v) for v in w] + [0.0]) ** 2 * max([abs(v) for r in rows for v in r] + [1.0])
-    w, a = _quiet(w, rhs), _quiet(a, (*arhs, ROUNDING * turning / SAME))
+    w, a = _quiet(w, rhs), _quiet(a, arhs, ROUNDING * turning)
     if w[0] == 0.0:
         raise SingularStepError(
             f"the speeds given leave the crank {inp.crank} at rest (omega_{inp.crank} = 0 "
@@ -282,8 +282,10 @@ def _worst(d) -> float:
     return float(d.max()) if d.size else 0.0
 
 
-def _quiet(x, rhs):
-    """The two values found, each written 0 where it is rounding noise (below ``SAME``)
-    on the size of the values and of the right-hand sides they are found from."""
+def _quiet(x, rhs, noise=0.0):
+    """The two values found, each written 0 where it is rounding noise: below ``SAME`` of
+    the size of the values and of the right-hand sides they are found from, or below
+    ``noise`` (an acceleration's: the rounding of the velocity terms its rows hold)."""
     size = max(abs(v) for v in (*x, *rhs))
-    return tuple(0.0 if abs(v) <= SAME * size else v for v in x)
+    least = max(SAME * size, noise)
+    return tuple(0.0 if abs(v) <= least else v for v in x)
