@@ -14,16 +14,10 @@ import numpy as np
 
 from ..common.errors import SceneError
 from ..common.numbers import fmt
+from .angles import _SENSE, _SENSE_RE
 from .table_help import _unit_at
 
-_SENSE = {
-    "ccw": 1.0,
-    "anticlockwise": 1.0,
-    "counterclockwise": 1.0,
-    "cw": -1.0,
-    "clockwise": -1.0,
-}
-_S = r"(ccw|cw|anticlockwise|counterclockwise|clockwise)"
+_S = rf"({_SENSE_RE})"  # the senses an angle takes (scene/angles.py's table)
 _NAME = r"([A-Za-z][A-Za-z0-9]*(?:-[A-Za-z][A-Za-z0-9]*)?)"
 _ALONG = re.compile(rf"(?:along|parallel to) {_NAME}", re.I)
 _ACROSS = re.compile(
