@@ -322,3 +322,15 @@ def test_the_problem_words_state_the_given_speed_not_the_answer():
     arm = (30 * -240 + 80 * 120) / 110 * RPM  # Willis: 21.82 rpm ccw, the answer
     assert f"{arm:.4g}" not in text and "2.285" not in text
     assert "turning at 120 rpm ccw" in text  # the annulus: its own speed, given
+
+
+def test_the_configuration_says_a_gear_turning_against_the_crank_the_other_way():
+    """The sun turns -240 / (240/11) = -11 times the arm's angle (Willis, both inputs at
+    their speeds): the step table read 'turns -11 times the crank's angle'."""
+    sol = solve(parse_scene(BOOK.read_text(encoding="utf-8")))
+    arm = (30 * -240 + 80 * 120) / 110  # rpm ccw, by Willis' formula
+    k = -240 / arm
+    assert k == pytest.approx(-11, rel=1e-12)
+    text = steps_text(sol)
+    assert f"turns {abs(k):.4g} times the crank's angle the other way" in " ".join(text.split())
+    assert "turns -" not in text

@@ -51,7 +51,9 @@ def position_words(st, L):
     if st.on == "line":
         how = "the wheel turns 1/r rad for each unit its centre moves along the line"
     elif st.theta_rate is not None:
-        how = f"the {noun(st)} turns {dims[7]:.4g} times the crank's angle, by the gear ratio"
+        k = dims[7]  # (a gear turning against the crank: the other way, not "-11 times")
+        way = " the other way" if k < 0 else ""
+        how = f"the {noun(st)} turns {abs(k):.4g} times the crank's angle{way}, by the gear ratio"
     else:
         kd, kb = dims[3], dims[4]
         how = (
