@@ -14,7 +14,7 @@ from reference import reference_solution
 from polygon_method import parse_scene, solve
 from polygon_method.check import check_answers
 from polygon_method.text.report import solution_text
-from polygon_method.motion.solution import tidied
+from polygon_method.motion.tidy import tidied
 from polygon_method.text.steptable import steps_text
 
 SCENE = """

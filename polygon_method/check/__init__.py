@@ -47,7 +47,8 @@ from dataclasses import replace
 
 from ..common.errors import SceneError
 from ..motion.link_points import PAIR_KINDS
-from ..motion.solution import Solution, tidied
+from ..motion.solution import Solution
+from ..motion.tidy import tidied
 from .centres import centre_verdict
 from .cycle import CYCLE_KEYS, cycle_verdict
 from .engine import ENGINE_KEYS, engine_verdict

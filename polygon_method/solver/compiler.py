@@ -58,10 +58,11 @@ _SIDES = {"above": (1, 1), "below": (1, -1), "right": (0, 1), "left": (0, -1)}
 
 # --------------------------------------------------------------------------- compiling
 
-_BY_ID: dict = {}  # id(scene) -> (weak reference to the scene, plan) (bounded)
+_BY_ID: dict = {}  # id(scene) -> [weak reference to the scene, plan, kept] (bounded)
 _BY_CONTENT: dict = {}  # content key -> plan (bounded)
 _KEEP = 256
 PLANS_BY_ID = _BY_ID  # the same dict, for solve's first look (without compile_plan's call)
+_NOT_KEPT = (None, None)  # an entry's (input, context) before solve keeps its own
 
 
 def compile_plan(scene: Scene) -> Plan:
@@ -117,7 +118,8 @@ def compile_plan(scene: Scene) -> Plan:
         loads_along_links(plan, scene)  # a force against a link: its vector at the instant
     try:
         ident = id(scene)
-        entry = (weakref.ref(scene, functools.partial(_forget, ident)), plan)
+        # (the scene, its plan, and solve's kept (input, one-instant context), none yet)
+        entry = [weakref.ref(scene, functools.partial(_forget, ident)), plan, _NOT_KEPT]
         while len(_BY_ID) >= _KEEP:  # the plan holds its scene: bounded, or none would go
             _BY_ID.pop(next(iter(_BY_ID)))
         _BY_ID[ident] = entry

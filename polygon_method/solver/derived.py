@@ -25,7 +25,7 @@ __all__ = [
     "pin_rubbing",
     "pin_records",
     "rubbing_records",
-    "table_records",
+    "plan_records",
     "largest",
     "power_terms",
     "input_torque",
@@ -60,29 +60,19 @@ def pin_records(pins, W, radii) -> dict:
 def rubbing_records(table, W) -> dict:
     """pin -> :class:`PinRubbing` for every pin of ``table`` (``plan.pin_table``: each
     sized pin's :func:`pin_entry`, made once per plan) at one instant: the values of
-    :func:`rubbing_at`, in one pass, a pin of two bodies read straight from ``W`` (a link
-    not in ``W`` turns at 0, as :func:`rubbing_at` has it: the pass taken again reading 0
-    for it)."""
-    try:
-        return table_records(table, W, W)
-    except KeyError:
-        return table_records(table, defaultdict(float, W), W)
-
-
-def table_records(table, w, W) -> dict:
-    """The records of :func:`rubbing_records`, each link's omega read from ``w``, the
-    records' ``W``; filled in here, for a record has no ``__init__``."""
+    :func:`rubbing_at`, in one pass, a link not in ``W`` turning at 0 (as
+    :func:`rubbing_at` has it: ``W`` read through a :class:`~collections.defaultdict`)."""
+    w = defaultdict(float, W)
     out = {}
-    Rec = PinRubbing
     for k in table:
         p, r, _, pairs, a, b = k
-        rec = Rec()
-        if pairs is None:  # a pin of two bodies (the usual one): its values (v,) when read
+        if pairs is None:  # a pin of two bodies (the usual one)
+            rec = PinRubbing()
             rec.rubbing_velocity = (
                 abs((0.0 if a is None else w[a]) - (0.0 if b is None else w[b])) * r
             )
-            rec._values = None
         else:
+            rec = _Many()
             vs = tuple(
                 [
                     abs((0.0 if x is None else w[x]) - (0.0 if y is None else w[y])) * r
@@ -97,17 +87,42 @@ def table_records(table, w, W) -> dict:
     return out
 
 
+def plan_records(plan, W) -> dict:
+    """The records of :func:`rubbing_records` at a ``plan``'s sized pins: where every pin
+    joins two bodies, one at least turning (``plan.pin_rows``,
+    :func:`~.plan.two_body_rows`, made when first asked), in one pass with no test of a body's link per pin; else,
+    or where a link is not in ``W`` (turning at 0), by :func:`rubbing_records`."""
+    rows = plan.pin_rows
+    if rows is None:  # not yet made
+        rows = plan.two_body_rows()
+    if rows is False:
+        return rubbing_records(plan.pin_table, W)
+    out = {}
+    Rec = PinRubbing
+    try:
+        for p, r, k, a, b in rows:
+            out[p] = rec = Rec()
+            rec.rubbing_velocity = abs(W[a] - W[b]) * r if b is not None else abs(W[a]) * r
+            rec._k = k
+            rec._W = W
+    except KeyError:
+        return rubbing_records(plan.pin_table, W)
+    return out
+
+
 class PinRubbing:
     """Rubbing velocity at a pin: ``|w1 - w2| r`` for each pair of bodies the pin joins.
 
     Attributes: ``point``, ``radius``, ``values`` (one per pair), ``pairs`` ({"AB|BC": v}),
     ``bodies`` ({body: omega}) and ``rubbing_velocity`` (the largest pair). Made by
-    :func:`pin_records`.
+    :func:`pin_records` and :func:`rubbing_records`; a pin of more than two bodies is a
+    :class:`_Many` (its values kept apart).
     """
 
-    # _k: the pin's table entry; _values: the values of a pin of more than two bodies (None
-    # for a pin of two: its one value is rubbing_velocity, no tuple made until read)
-    __slots__ = ("rubbing_velocity", "_k", "_W", "_values")
+    # _k: the pin's table entry; a pin of two bodies has one value, rubbing_velocity (no
+    # tuple made until read)
+    __slots__ = ("rubbing_velocity", "_k", "_W")
+    _values = None
 
     @property
     def values(self) -> tuple:
@@ -117,8 +132,9 @@ class PinRubbing:
 
     @values.setter
     def values(self, vs):
-        """Set the values (a tidied solution writes its noise as exact zeros)."""
-        self._values = tuple(vs)
+        """Set the values (a tidied solution writes its noise as exact zeros): a pin of two
+        bodies its one value, as its rubbing velocity."""
+        (self.rubbing_velocity,) = vs
 
     @property
     def point(self) -> str:
@@ -147,6 +163,22 @@ class PinRubbing:
 
     def __repr__(self):
         return f"PinRubbing({self.point!r}, radius={self.radius!r}, pairs={self.pairs!r})"
+
+
+class _Many(PinRubbing):
+    """A :class:`PinRubbing` at a pin of more than two bodies: a value for each pair."""
+
+    __slots__ = ("_values",)
+
+    @property
+    def values(self) -> tuple:
+        """The rubbing velocity of each pair of bodies the pin joins, in ``pairs``' order."""
+        return self._values
+
+    @values.setter
+    def values(self, vs):
+        """Set the values (a tidied solution writes its noise as exact zeros)."""
+        self._values = tuple(vs)
 
 
 def power_terms(scene, V, W, S=None, P=None) -> list:

@@ -183,6 +183,7 @@ class Plan:
     instant_steps = None
     _checked = None
     pin_table = ()
+    pin_rows = None  # two_body_rows of pin_table, made when first asked (pin_rows())
 
     def __hash__(self):
         return id(self)
@@ -435,6 +436,7 @@ class Plan:
                 "instant_steps",
                 "_checked",
                 "pin_table",
+                "pin_rows",
                 "force_plan",
             )
         }
@@ -458,6 +460,12 @@ class Plan:
                 "pin_table",
                 tuple([pin_entry(pin, radii.get(pin[0])) for pin in self.pins]),
             )
+
+    def two_body_rows(self):
+        """:func:`two_body_rows` of the sized pins, made once and kept as ``pin_rows``."""
+        rows = two_body_rows(self.pin_table)
+        object.__setattr__(self, "pin_rows", rows)
+        return rows
 
     def checked(self) -> tuple:
         """(index, step) of each branching step: checked for a singular condition after
@@ -488,6 +496,20 @@ def pin_entry(pin, radius) -> tuple:
     if len(pairs) == 1:
         return (pin[0], radius, pin, None, *pairs[0])
     return (pin[0], radius, pin, pairs, None, None)
+
+
+def two_body_rows(table):
+    """The rows of :func:`~.derived.plan_records` for ``table`` (a plan's ``pin_table``):
+    (point, radius, entry, a turning link, the other body's link or None where it does not
+    turn) per pin, in the table's order; False where a pin joins more than two bodies or two
+    that do not turn (:func:`~.derived.rubbing_records` takes those)."""
+    rows = []
+    for k in table:
+        p, r, _, pairs, a, b = k
+        if pairs is not None or a is None and b is None:
+            return False
+        rows.append((p, r, k, a, b) if a is not None else (p, r, k, b, None))
+    return tuple(rows)
 
 
 def _bodies_at(sc, point) -> tuple:

@@ -127,8 +127,10 @@ class Instant(Context):
     cos = math.cos
     sin = math.sin
 
-    def __reduce__(self):  # its own four fields (the rest are the class's)
-        return _instant, (self.theta, self.omega, self.alpha, self.cond)
+    def __reduce__(self):  # its own four fields (the rest are the class's; a kept
+        # context's read-only conditions, none written there, come back empty)
+        cond = self.cond
+        return _instant, (self.theta, self.omega, self.alpha, cond if type(cond) is dict else None)
 
 
 def _instant(theta, omega, alpha, cond=None, new=object.__new__, cls=Instant) -> Context:

@@ -9,7 +9,8 @@ from .forces import forces_lines
 from .link_points import pair_lines, pair_shown_bounds
 from ..solver.given import stated
 from ..common.numbers import fmt, fmt_angular, sense
-from ..motion.solution import Solution, tidied
+from ..motion.solution import Solution
+from ..motion.tidy import tidied
 
 __all__ = ["solution_text", "direction_deg"]
 

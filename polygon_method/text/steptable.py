@@ -57,7 +57,8 @@ from .polygon_steps import (
 from ..polygons.scales import diagram_scales, force_scale
 from ..scene import FixedPath, GuideSlider, guide_words
 from ..solver.kinematics import evaluate
-from ..motion.solution import Solution, tidied
+from ..motion.solution import Solution
+from ..motion.tidy import tidied
 from ..linkage.flywheel import cycle_blocks
 from ..linkage.klein import klein_blocks
 
@@ -433,7 +434,7 @@ def _superposition(doc, sol):
 
 def steps_blocks(sol: Solution) -> _Doc:
     """The hand solution as a document (headings, paragraphs, lists, tables). Rounding
-    noise is written as 0 (:func:`~polygon_method.motion.solution.tidied`)."""
+    noise is written as 0 (:func:`~polygon_method.motion.tidy.tidied`)."""
     sol = tidied(sol)
     sc = sol.scene
     space, vscale, ascale = diagram_scales(sol)

@@ -38,7 +38,8 @@ from ..linkage.cycle_values import CYCLE_SI
 from ..linkage.engine_values import ENGINE_KEYS
 from ..solver.compiler import compile_plan
 from ..scene import Scene, parse_scene, scene_from_table, scene_table
-from ..motion.solution import solve, tidied
+from ..motion.solution import solve
+from ..motion.tidy import tidied
 from .toml_text import dump_toml
 from .papers import (
     answer,
