@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 import re
 
-from ..common.errors import printable
+from ..common.errors import SceneError, printable
 from ..common.units import UNITS, decimal_comma, question
 from .answer_keys import (
     _KINDS,
@@ -33,6 +33,17 @@ __all__ = [
     "unit_kind",
     "PAIR_ANSWER_KINDS",
 ]
+
+#: a file's own keys (an answer file's, a scene's) -> what each is, an example: written
+#: inside [answers] they are said to belong above it
+_FILE_KEYS = {
+    "student": ("the student's name", 'student = "A. Student"'),
+    "name": ("the student's name", 'name = "A. Student"'),
+    "variant": ("the student's variant", 'variant = "07"'),
+    "title": ("the title", 'title = "..."'),
+    "source": ("the source", 'source = "..."'),
+    "notes": ("a note", 'notes = "..."'),
+}
 
 #: a centre answered as at infinity, optionally with the direction of its lines
 _INFINITY = re.compile(r"^\s*(?:at\s+)?infinity\s*(?:[,;]\s*(?:along\s+)?(.*?))?\s*$", re.I)
@@ -105,8 +116,42 @@ class _Answers(_AnswerNames, _Questions, _CycleAnswers):
                     )
                 tolerance = q
                 continue
+            if isinstance(value, dict):  # [answers.extra], extra.v_C = ..., extra = {...}
+                raise self._sub_table(key, value)
+            if key in _FILE_KEYS:
+                raise self._misplaced(key)
             out.append(self.answer(key, value, known, slider_names, pin_names, loads))
         return tolerance, out
+
+    def _sub_table(self, key, value):
+        """The error for a table inside ``[answers]``, at its header's line (or its first
+        key's: a dotted ``extra.v_C``, an inline ``extra = {...}``)."""
+        table = f"answers.{key}"
+        line = self.line_of(table) or self.line_of("answers", key)
+        for k in value:
+            line = line or self.line_of(table, k)
+        return SceneError(
+            f"[answers] takes no table inside it: write each answer as a key = value line "
+            f"under [answers] itself (e.g. {next(iter(value), 'v_C')} = ...)",
+            file=self.file,
+            key=printable(f"[{table}]"),
+            line=line,
+        )
+
+    def _misplaced(self, key):
+        """The error for an answer file's own key (``student``, ``variant``) or a file's
+        (``title``) written inside ``[answers]``: where it belongs."""
+        what, example = _FILE_KEYS[key]
+        if getattr(self, "answer_file", False):
+            where = f"write it at the top of the file, above the [answers] heading ({example})"
+        elif key in ("student", "name", "variant"):
+            where = (
+                f"it belongs at the top of the student's answer file, above its [answers] "
+                f"heading ({example}); a scene's [answers] are the book's"
+            )
+        else:
+            where = f"write it at the top of the scene, above its first [table] heading ({example})"
+        return self.error(f"{key} is {what}, not an answer: {where}", "answers", key)
 
     def centre_answer(self, key, rest, value, line):
         """``I_13 = [x, y]``: the instantaneous centre of links 1 and 3 (textbook numbers:
