@@ -321,7 +321,7 @@ def evaluate_all(sw: Sweeper, theta, chunk):
         for idx, h in sw.near_change_points(th):
             _patch(fr, sw.richardson(th[idx], h), idx)
         if sw.plan.scene.input.found_from:  # two inputs' speeds found elsewhere: held?
-            held_over(sw.plan.scene, fr.W, fr.Al)
+            held_over(sw.plan.scene, fr)
         yield slice(s, min(s + chunk, n)), fr
 
 
