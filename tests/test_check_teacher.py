@@ -76,7 +76,7 @@ def test_an_absolute_tolerance_applies_to_its_unit(tmp_path, capsys):
     assert code == 1
 
 
-@pytest.mark.parametrize("bad", ["5", "0.01 m", "0 %", "150%", "-0.1 m/s"])
+@pytest.mark.parametrize("bad", ["5", "0.01 kg", "0 %", "150%", "-0.1 m/s"])
 def test_a_bad_command_line_tolerance_is_one_line(tmp_path, capsys, bad):
     scene = fourbar_file(tmp_path)
     code, out, err = run(capsys, "check", scene, "--tolerance", bad)

@@ -157,8 +157,7 @@ def check_answers(sol: Solution, answers=None, tolerance: float | None = None, _
         if ans.asked:  # a question without its answer: the value, not graded
             out.append(asked_verdict(sol, ans, clean, centres))
         elif kind == "centre":
-            rel = tolerance.relative if isinstance(tolerance, Stated) else tolerance
-            out.append(centre_verdict(sol, ans, rel, centres))
+            out.append(centre_verdict(sol, ans, tolerance, centres))
         elif kind in ENGINE_KEYS:  # the engine chapter's: its efforts, the cycle, the flywheel
             out.append(engine_verdict(sol, ans, tolerance))
         elif kind in CYCLE_KEYS:  # a quick return's times, a stroke, a link's angle

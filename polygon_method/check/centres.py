@@ -94,7 +94,13 @@ def _asked_centre(ans, c, pivot, longest, u, un) -> Verdict:
 
 def centre_verdict(sol, ans, tolerance, cache: list) -> Verdict:
     """The verdict on ``I_ij = [x, y]`` (``cache``: a list that keeps the located centres
-    for the other answers)."""
+    for the other answers). ``tolerance``: a relative one (0.01), a stated one (its
+    length, ``--tolerance 1 mm``, else its per cent; its angle for a centre at infinity's
+    direction) or None (the drawing rule)."""
+    absolute = tolerance.absolute_for("m") if hasattr(tolerance, "absolute_for") else None
+    turn = tolerance.absolute_for("rad") if hasattr(tolerance, "absolute_for") else None
+    source = getattr(tolerance, "source", None)
+    tolerance = getattr(tolerance, "relative", tolerance)
     ic, i, j = _asked(sol, ans, cache)
     c = ic.centre(i, j)
     sc = sol.scene
@@ -104,7 +110,7 @@ def centre_verdict(sol, ans, tolerance, cache: list) -> Verdict:
     if ans.asked:  # a question without its answer: where the centre is, not graded
         return _asked_centre(ans, c, pivot, max(longest, 1e-300), u, un)
     if ans.value[0] == "infinity":
-        return _at_infinity(sol, ans, c)
+        return _at_infinity(sol, ans, c, turn and (math.degrees(turn[0]), f"{turn[1]} ({source})"))
     gx, gy = ans.value
     if c.point is None:
         deg = math.degrees(math.atan2(c.direction[1], c.direction[0])) % 180.0
@@ -129,7 +135,9 @@ def centre_verdict(sol, ans, tolerance, cache: list) -> Verdict:
     cx, cy = c.point
     base = max(math.hypot(cx - pivot[0], cy - pivot[1]), longest)
     err = math.hypot(gx - cx, gy - cy)
-    if tolerance is not None:
+    if absolute is not None:  # --tolerance 1 mm: a drawing's
+        tol, rule = absolute[0], f"{absolute[1]} ({source})"
+    elif tolerance is not None:
         tol, rule = tolerance * base, f"{100 * tolerance:g} % (stated)"
     else:
         space = diagram_scales(sol)[0]
@@ -167,12 +175,14 @@ def centre_verdict(sol, ans, tolerance, cache: list) -> Verdict:
 DIRECTION_TOLERANCE_DEG = 1.0
 
 
-def _at_infinity(sol, ans, c) -> Verdict:
+def _at_infinity(sol, ans, c, stated=None) -> Verdict:
     """The verdict on a centre answered as at infinity (``"at infinity"``, or with the
-    direction of the parallel lines it is the meeting point of, mod 180 deg)."""
+    direction of the parallel lines it is the meeting point of, mod 180 deg); ``stated``:
+    (deg, words) of an angle's tolerance stated (``--tolerance 0.5 deg``), else 1 deg."""
     sc = sol.scene
     said = ans.value[1]
-    rule = f"a centre at infinity: its direction within {DIRECTION_TOLERANCE_DEG:g} deg"
+    within, how = stated or (DIRECTION_TOLERANCE_DEG, f"{DIRECTION_TOLERANCE_DEG:g} deg")
+    rule = f"a centre at infinity: its direction within {how}"
     if c.point is not None:
         cx, cy = c.point
         where = "[" + ", ".join(fmt(v / sc.length_unit, 5) for v in (cx, cy)) + f"] {sc.units}"
@@ -184,11 +194,11 @@ def _at_infinity(sol, ans, c) -> Verdict:
         )  # fmt: skip
     deg = math.degrees(math.atan2(c.direction[1], c.direction[0])) % 180.0
     off = 0.0 if said is None else abs((math.degrees(said) - deg + 90.0) % 180.0 - 90.0)
-    ok = off <= DIRECTION_TOLERANCE_DEG
+    ok = off <= within
     mistake = words = None
     if not ok:
         mistake, words = "centre_direction", f"{c.label}'s lines run at {fmt(deg, 4)} deg: {c.how}"
-        if abs(off - 90.0) <= DIRECTION_TOLERANCE_DEG:
+        if abs(off - 90.0) <= within:
             mistake = "centre_direction_square"
             words = (
                 f"the direction square to {c.label}'s lines given: it is at infinity along "

@@ -18,7 +18,7 @@ from ..common.errors import PolygonMethodError, SceneError
 from ..common.numbers import textbook
 from ..common.tolerances import FLOOR
 from ..common.units import UNITS
-from ..linkage.cycle_values import CYCLE_KEYS, cycle_value, words
+from ..linkage.cycle_values import CYCLE_KEYS, CYCLE_SI, cycle_value, words
 from .verdicts import ROUNDING, Verdict
 
 __all__ = ["CYCLE_KEYS", "cycle_verdict"]
@@ -102,8 +102,11 @@ def cycle_verdict(sol, ans, tolerance) -> Verdict:
     given = math.degrees(ans.value) if kind in ("theta", "angle") else ans.value
     rel = getattr(tolerance, "relative", tolerance)
     source = getattr(tolerance, "source", None) or "the answers' tolerance"
+    stated = getattr(tolerance, "absolute_for", lambda unit: None)(CYCLE_SI[kind])
     rule = (
-        f"{100 * rel:g} % ({source})"
+        f"{stated[1]} ({source})"  # --tolerance 1 mm, 1 deg: a drawing's
+        if stated is not None
+        else f"{100 * rel:g} % ({source})"
         if rel is not None
         else "three significant figures (a computed answer)"
     )
@@ -119,13 +122,16 @@ def cycle_verdict(sol, ans, tolerance) -> Verdict:
     # (near 0 deg, or as 1.5 rather than -358.5, it was held tighter than any other)
     size = RIGHT_ANGLE if kind in ("theta", "angle") else abs(correct_shown)
     tol = max(rel * size, FLOOR)
+    if stated is not None:  # (in the unit graded: deg for an angle)
+        tol = math.degrees(stated[0]) if kind in ("theta", "angle") else stated[0]
     ok = err <= tol * (1 + ROUNDING)
     mistake = diagnosis = None
     if not ok:
         for v, code, what in _slips(sol, ans, correct):
             off = _angle_off(given, v) if kind == "theta" else abs(given - v)
             slack = rel * (RIGHT_ANGLE if kind in ("theta", "angle") else abs(v))
-            if off <= max(slack, FLOOR) * (1 + ROUNDING):
+            slack = tol if stated is not None else max(slack, FLOOR)
+            if off <= slack * (1 + ROUNDING):
                 mistake = code
                 diagnosis = (
                     f"{words(kind, ans.names)} matches {what} ({textbook(v)} {unit}".rstrip()

@@ -108,8 +108,9 @@ def _add_check(sub) -> None:
         action="append",
         metavar="TOL",
         help="the tolerance for every answer file: a per cent (5%%) or a value with "
-        "its unit for the answers in that unit (0.01 m/s); may be given again "
-        "for another unit. Without it: the answer file's own, else what a "
+        "its unit for the answers in that unit (0.01 m/s; 1 mm for the lengths, a "
+        "centre's position, a stroke; 1 deg for the angles, a link's direction); may be "
+        "given again for another unit. Without it: the answer file's own, else what a "
         "careful hand drawing allows (a scene's own tolerance is the book's, "
         "for the scene's answers)",
     )

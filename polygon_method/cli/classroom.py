@@ -40,6 +40,8 @@ _ABSOLUTE = (
     ("angular_velocity", "rad/s"),
     ("angular_acceleration", "rad/s^2"),
     ("torque", "N m"),
+    ("length", "m"),  # a centre's position, a stroke, an offset: 1 mm on a drawing
+    ("angle", "rad"),  # a link's direction, the angle at a joint: 1 deg on a drawing
 )
 
 
@@ -93,8 +95,8 @@ def _command_line_tolerance(values):
         else:
             raise SceneError(
                 f"'{shown}' is neither a per cent (5%) nor a value with a unit of "
-                "velocity, acceleration, angular velocity or acceleration, or "
-                "torque (0.01 m/s)",
+                "velocity, acceleration, angular velocity or acceleration, torque, "
+                "length or angle (0.01 m/s, 1 mm, 1 deg)",
                 key="--tolerance",
             )
     return Stated(relative, tuple(absolute), source=SOURCES["command line"])

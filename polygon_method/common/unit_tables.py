@@ -205,6 +205,13 @@ TINY["stiffness"] = TINY["force"] / UNITS["length"]["mm"]
 #: value far below it, 1e-300 Pa, makes forces and powers of subnormal junk)
 TINY["damping"] = TINY["force"] / UNITS["length"]["mm"]
 TINY["pressure"] = TINY["force"] / UNITS["length"]["mm"] ** 2
+#: a mass below the one a nanonewton accelerates at 1 m/s^2 (a microgram) and a moment of
+#: inertia below that mass at a millimetre are slips too: far below any link's or block's
+#: (1e-300 kg, lighter than an electron, makes inertia forces of subnormal junk beside the
+#: mechanism's other sizes); a signed length (a coordinate, an offset along a link) is not
+#: bounded below: added to the mechanism's sizes it changes nothing past their rounding
+TINY["mass"] = TINY["force"] / UNITS["acceleration"]["m/s^2"]
+TINY["moment_of_inertia"] = TINY["mass"] * UNITS["length"]["mm"] ** 2
 
 #: an answer's kind (the prefix of its key: ``v_C``, ``omega_BC``, ``F_B``, ``torque``) -> the SI
 #: unit its value is written in: the answer keys, the verdicts and the variants' papers

@@ -32,7 +32,7 @@ from ..common.numbers import fmt_angular, quiet, sense  # noqa: F401  (re-export
 from ..solver.compiler import PLANS_BY_ID, compile_plan
 from ..steps.base import Context
 from .structural import structural_warnings
-from ..scene import FixedPath, Scene
+from ..scene import FixedPath, Scene, loads_dict
 from ..scene.force_records import rolling_body
 from ..scene.teeth import teeth_records
 from .json_safe import finite_only, useful_bounds
@@ -387,7 +387,7 @@ class Solution(Motion):
                 d["at_rest"] = True
                 if sc.start_alpha:  # starting from rest: the inertia of the start
                     d["start_alpha"] = sc.start_alpha
-        d.update(self._rolling_dict(), **asked_dict(self))  # vmin_BC ...: where asked
+        d.update(self._rolling_dict(), **asked_dict(self), **loads_dict(sc.loads, self.P))
         warnings = list(self.warnings)
         if refused:
             warnings.append(refused)

@@ -31,7 +31,7 @@ from ..common.errors import TOL, SceneError
 from ..solver.kinematics import Motion
 from ..solver.compiler import compile_plan
 from ..solver.two_given import held_over
-from ..scene import Scene
+from ..scene import Scene, direction_columns
 from ..solver.tracking import CHUNK, Domain, Sweeper, array_motion, run_arrays, valid_mask
 from ..common.units import ABSURD
 from . import sweep_forces
@@ -166,6 +166,7 @@ class SweepResult(Motion):
             cols.append((f"rub_{pin}", "m/s", r))
         if self.input_torque is not None:
             cols.append(("torque", "N m", self.input_torque))
+        cols += direction_columns(sc.loads, self.P)  # a load turning with its link
         cols += self.force_columns()
         for st in compile_plan(sc).steps:
             if st.branching:
@@ -320,7 +321,7 @@ def evaluate_all(sw: Sweeper, theta, chunk):
         for idx, h in sw.near_change_points(th):
             _patch(fr, sw.richardson(th[idx], h), idx)
         if sw.plan.scene.input.found_from:  # two inputs' speeds found elsewhere: held?
-            held_over(sw.plan.scene, fr.W, fr.Al)
+            held_over(sw.plan.scene, fr)
         yield slice(s, min(s + chunk, n)), fr
 
 

@@ -60,6 +60,7 @@ from .records import (
     split_name,
 )
 from .variation import Variation, VariantOf, Varied
+from .link_loads import direction_columns, loads_dict
 
 __all__ = [
     "Scene",
@@ -94,4 +95,6 @@ __all__ = [
     "guide_words",
     "Indicator",
     "Flywheel",
+    "loads_dict",
+    "direction_columns",
 ]

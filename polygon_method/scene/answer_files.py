@@ -88,6 +88,7 @@ def _answer_loader(raw, text, file, scene) -> _Loader:
     loader.driving_wheel = scene.input.wheel
     loader.rolling_pairs = scene.rolling
     loader.ground = scene.ground
+    loader.answer_file = True
     return loader
 
 

@@ -109,7 +109,7 @@ class _GivenMotion:
                 if point is None or point not in self.known:
                     raise self.error(f"no point {''.join(names)} in the scene", table, key)
                 u = None
-            value, direction = self.directed(raw, "velocity", key, u, need=kind == "v")
+            value, direction = self.directed(raw, "velocity", key, u, kind == "v", table)
             rate = None
             if raw_rate is not None:  # a point's speed: its rate is of the speed (+1)
                 rate = self.rated(
@@ -117,7 +117,7 @@ class _GivenMotion:
                 )
             if raw_rate is not None and rate is None:
                 rate, _ = self.directed(
-                    raw_rate, "acceleration", rate_key, u if kind == "vs" else None, need=False
+                    raw_rate, "acceleration", rate_key, u if kind == "vs" else None, False, table
                 )
         if value == 0:
             raise self.error(
@@ -132,30 +132,30 @@ class _GivenMotion:
         return next((c for c in self.cylinder_list if {c.barrel, c.rod} == set(names)), None)
 
     def two_given_checks(self, given_keys, second):
-        """With two inputs, a speed given elsewhere is a link's (``omega_XY``), beside a
-        second crank (not a collar)."""
+        """With two inputs, a speed given elsewhere (a link's ``omega_XY``, a point's
+        ``v_X``, a slider's ``vs_X``) stands beside a second crank (not a collar)."""
         if not (given_keys and second is not None):
             return
-        if _given_key(given_keys[0])[0] != "omega" or second.block is not None:
+        if second.block is not None:
             raise self.error(
-                f"{given_keys[0]} with two inputs: a speed is given on a link (omega_XY, "
-                "its rate alpha_XY) beside a second crank, or the crank's own",
+                f"{given_keys[0]} with two inputs: a speed given elsewhere (omega_XY, v_X, "
+                "vs_X) stands beside a second crank, not a collar: give the crank's own",
                 "input",
                 given_keys[0],
             )
 
     def second_given(self, spec):
-        """The speed of the second input given on another link (``omega_XY``, with its rate
-        ``alpha_XY``) in ``[input.second]``, read as the first input's; None where it gives
-        its crank's own speed."""
+        """The speed of the second input given elsewhere (a link's ``omega_XY``, a point's
+        ``v_X``, a slider's ``vs_X``, with its rate) in ``[input.second]``, read as the
+        first input's; None where it gives its crank's own speed."""
         keys = [k for k in spec if k not in INPUT_KEYS and _given_key(k) is not None]
         given = [k for k in keys if _given_key(k)[0] in GIVEN_KINDS]
         if not given:
             return None
-        if len(given) > 1 or _given_key(given[0])[0] != "omega" or "speed" in spec:
+        if len(given) > 1 or "speed" in spec:
             raise self.error(
-                f"{given[-1]}: the second input's speed is its crank's (speed) or one link's "
-                "(omega_XY, its rate alpha_XY), one only",
+                f"{given[-1]}: the second input's speed is its crank's (speed) or one given "
+                "elsewhere (omega_XY, v_X or vs_X, with its rate), one only",
                 "input.second",
                 given[-1],
             )

@@ -76,7 +76,7 @@ class _Rates:
         slowing = _slowing(word)
         return (-size if slowing else size) * (1.0 if motion >= 0 else -1.0)
 
-    def directed(self, raw, kind, key, u, need):
+    def directed(self, raw, kind, key, u, need, table="input"):
         """A speed (or its rate) with an optional direction word: ``"3 m/s down"``,
         ``"1.5 m/s up"``, ``"2 m/s at 30 deg"``. Returns (value, unit direction): with a
         guide ``u``, the value is signed along u and the direction is u."""
@@ -87,10 +87,10 @@ class _Rates:
             if m:
                 text, word, ang = m.group(1), m.group(2), m.group(3)
                 if ang is not None:
-                    d = _unit_at(self.qty(ang, "angle", "input", key, default_unit="deg").value)
+                    d = _unit_at(self.qty(ang, "angle", table, key, default_unit="deg").value)
                 else:
                     d = _WORDS[word.lower().rstrip("s").replace("to the ", "").replace("ward", "")]
-        value = self.qty(text, kind, "input", key, default_unit=next(iter(UNITS[kind]))).value
+        value = self.qty(text, kind, table, key, default_unit=next(iter(UNITS[kind]))).value
         if u is not None:
             if d is not None:
                 along = d[0] * u[0] + d[1] * u[1]
@@ -99,7 +99,7 @@ class _Rates:
                         f"{raw!r}: the guide is perpendicular to that direction; "
                         "give the speed along the guide, signed, or up, down, "
                         "left, right",
-                        "input",
+                        table,
                         key,
                     )
                 value = value * (1.0 if along > 0 else -1.0)
@@ -109,7 +109,7 @@ class _Rates:
                 raise self.error(
                     f'{raw!r}: say which way the point moves, e.g. "3 m/s down" '
                     'or "3 m/s at 240 deg" (up, down, left, right or an angle)',
-                    "input",
+                    table,
                     key,
                 )
             return value, None

@@ -390,7 +390,8 @@ class _Input(_BlockInput, _GivenMotion, _Rates):
                 )
                 raise self.error(
                     f"unknown key{_suggest(k, INPUT_KEYS)}; the second input "
-                    f"takes crank, angle, speed (or a link's, omega_XY), acceleration{why}",
+                    f"takes crank, angle, speed (or one given elsewhere: omega_XY, v_X, vs_X), "
+                    f"acceleration{why}",
                     "input.second",
                     k,
                 )

@@ -142,3 +142,41 @@ def across_words(ld) -> str:
     if ld.force is None:
         return said
     return f"{said} (at {fmt(math.degrees(math.atan2(ld.force[1], ld.force[0])) % 360)} deg now)"
+
+
+def loads_dict(loads, P) -> dict:
+    """``solve --json``'s ``loads`` (none without loads): each load by its target, a force
+    as ``force`` [Fx, Fy] (N) and its ``direction`` (deg ccw from +x, in [0, 360)) at the
+    instant, one stated against a link adding ``against`` (its two points, the direction
+    first -> second), ``offset`` (deg ccw from it) and ``stated`` (the words); a torque
+    as ``torque`` (N m, ccw +)."""
+    out = {}
+    for ld in loads:
+        if ld.torque is not None:
+            out[ld.target] = {"torque": ld.torque}
+            continue
+        f = ld.force if ld.across is None else load_force(ld, P)
+        if f is None:
+            continue
+        fx, fy = float(f[0]) + 0.0, float(f[1]) + 0.0
+        entry = {"force": [fx, fy], "direction": _degrees(fx, fy)}
+        if ld.across is not None:
+            a, b, off, words = ld.across[:4]
+            entry |= {"against": [a, b], "offset": math.degrees(off), "stated": words}
+        out[ld.target] = entry
+    return {"loads": out} if out else {}
+
+
+def direction_columns(loads, P) -> list:
+    """``sweep``'s columns of the loads stated against a link: ``load_dir_M`` (deg ccw from
+    +x, in [0, 360)), the direction at every row as the force analysis takes it."""
+    return [
+        (f"load_dir_{ld.target}", "deg", np.degrees(link_angle(ld.across, P)) % 360.0)
+        for ld in loads
+        if ld.across is not None and ld.torque is None
+    ]
+
+
+def _degrees(fx, fy) -> float:
+    """A force's direction in degrees ccw from +x, in [0, 360) (0 for no force)."""
+    return math.degrees(math.atan2(fy, fx)) % 360.0 + 0.0

@@ -296,7 +296,10 @@ class _Masses:
         except SceneError as not_a_mass:
             try:
                 w = self.qty(raw, "force", "masses", name).value if isinstance(raw, str) else None
-            except SceneError:
+            except SceneError as not_a_weight:  # a weight's own refusal ("1e-300 N": too
+                words = raw.split()  # small) where its unit is a force's
+                if len(words) == 2 and words[1] in UNITS["force"]:
+                    raise not_a_weight from None
                 w = None
             if w is None:
                 raise not_a_mass from None

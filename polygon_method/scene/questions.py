@@ -19,7 +19,8 @@ def unit_kind(kind: str) -> str:
     >>> unit_kind("omega"), unit_kind("centre"), unit_kind("vu"), unit_kind("I_flywheel")
     ('angular_velocity', 'length', 'velocity', 'moment_of_inertia')
     """
-    from .answers import _KINDS, CYCLE_ANSWERS, DRIVER_ANSWERS, ENGINE_ANSWERS
+    from .answer_keys import _KINDS, DRIVER_ANSWERS, ENGINE_ANSWERS
+    from .cycle_answers import CYCLE_ANSWERS
 
     if kind in ("centre", "h"):
         return "length"
@@ -45,7 +46,7 @@ class _Questions:
         checked exactly as an answer's is (a stand-in value read in its place), the unit
         one of the key's kind (no sense: the answer gives it). An :class:`Answer` whose
         value is None (``asked``)."""
-        from .answers import ENGINE_ANSWERS
+        from .answer_keys import ENGINE_ANSWERS
 
         centre = key.startswith("I_") and key not in ENGINE_ANSWERS  # (not I_flywheel)
         stand_in = [0, 0] if centre else 1

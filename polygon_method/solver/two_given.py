@@ -1,12 +1,16 @@
-"""Two inputs whose speeds are given on other links (a differential whose sun and annulus
+"""Two inputs whose speeds are given elsewhere (a differential whose sun and annulus
 are driven, the arm the output): the two cranks' speeds found when the scene is compiled.
 
 With two driven cranks every angular velocity is linear in their speeds: at the stated
 instant the link X given turns at ``omega_X = w1 Y1 + w2 Y2``, ``Y1`` (``Y2``) its speed
 per rad/s of the first (second) crank alone (the polygons drawn for each crank alone, as
 the differential's step table does). Each input gives one equation: its crank's own speed
-(``w_i = stated``) or a speed on another link (``w1 Y1 + w2 Y2 = stated``); the two are
-solved together (2 x 2). The accelerations are affine in the cranks' rates::
+(``w_i = stated``) or a speed given elsewhere (``w1 Y1 + w2 Y2 = stated``); the two are
+solved together (2 x 2). A slider's sliding velocity (``vs_X``) is linear in the cranks'
+speeds as well, and so is a point's velocity component along a fixed direction: a point's
+``v_X`` ("0.3 m/s at 30 deg") is read as its component along the stated direction (its
+speed where it moves that way; a note says how it moves where it does not, refused past
+30 deg). The accelerations are affine in the cranks' rates::
 
     alpha_X = a1 Y1 + a2 Y2 + H      (H: alpha_X with both cranks at their speeds, a = 0)
 
@@ -44,9 +48,9 @@ import math
 from dataclasses import replace
 
 from ..common.errors import TOL, SceneError, SingularStepError
-from ..common.tolerances import ROUNDING, SAME
+from ..common.tolerances import DISTINCT, ROUNDING, SAME
 from ..common.numbers import condition_text, sense
-from ..scene import key_line
+from ..scene import GIVEN_KINDS, key_line
 from ..steps import Context
 
 __all__ = ["needs_two", "complete_two", "held_over", "trial_speeds", "found_note", "FOUND"]
@@ -79,24 +83,27 @@ def complete_two(scene, compile_trial) -> tuple:
         return plan.run(Context(inp.angle, w1, a1), dims=dims)
 
     ins = (inp, two)
-    keys = [None if i.given is None else scene.link("-".join(i.given.names)).key for i in ins]
     m1, m2 = run(1.0, 0.0, 0.0, 0.0), run(0.0, 0.0, 1.0, 0.0)
-    per = [None if key is None else (m1.W[key], m2.W[key]) for key in keys]
+    per = [
+        None if i.given is None else (_of(i.given, m1, scene)[0], _of(i.given, m2, scene)[0])
+        for i in ins
+    ]
     rows = [per[i] if ins[i].given is not None else _unit(i) for i in (0, 1)]
     rhs = [i.given.value if i.given is not None else i.omega for i in ins]
     w = _solve(rows, rhs, ins, "speeds")
     m0 = run(w[0], 0.0, w[1], 0.0)
-    notes, arows, arhs = [], [], []
+    notes, arows, arhs = [n for n in (_along(x, m0, x is two) for x in ins) if n], [], []
     for i, x in enumerate(ins):
         g = x.given
         if g is not None and (g.rate is not None or x.alpha is None):
             if g.rate is None:
                 notes.append(
-                    f"alpha_{g.key.partition('_')[2]} = 0 is taken: the given speed {g.key} "
-                    "is steady (give its rate or the crank's acceleration to set it)"
+                    f"{GIVEN_KINDS[g.kind]}_{g.key.partition('_')[2]} = 0 is taken: the given "
+                    f"speed {g.key} is steady (give its rate or the crank's acceleration to "
+                    "set it)"
                 )
             arows.append(per[i])
-            arhs.append((g.rate or 0.0) - m0.Al[keys[i]])
+            arhs.append(_rate_of(g) - _of(g, m0, scene)[1])
         else:
             arows.append(_unit(i))
             arhs.append(x.alpha if x.alpha is not None else 0.0)
@@ -161,6 +168,57 @@ def found_note(plan) -> str | None:
     return next((n for n in plan.notes if n.startswith(FOUND)), None)
 
 
+def _of(g, m, scene):
+    """(the given quantity, its rate) in the filled state ``m``: a link's omega and alpha,
+    a slider's (or a cylinder's) sliding velocity and acceleration, or a point's velocity
+    and acceleration along the stated direction (the components: linear in the cranks')."""
+    if g.kind == "omega":
+        key = scene.link("-".join(g.names)).key
+        return m.W[key], m.Al[key]
+    if g.kind == "vs":
+        s = m.S[g.names[0]]
+        return s[0], s[1]
+    (vx, vy), (ax, ay), (dx, dy) = m.V[g.names[0]], m.A[g.names[0]], g.direction
+    return vx * dx + vy * dy, ax * dx + ay * dy
+
+
+def _rate_of(g) -> float:
+    """The given rate as the rate of :func:`_of`'s quantity: a point's is of its speed
+    (+ speeding up), so along the stated direction it is signed as the speed is."""
+    rate = g.rate or 0.0
+    return (rate if g.value > 0 else -rate) if g.kind == "v" else rate
+
+
+def _along(x, m, second) -> str | None:
+    """A point's velocity given with two inputs is read as its component along the stated
+    direction (one equation, linear in the two cranks' speeds): where the point found moves
+    otherwise, a note says how it moves (refused where more than 30 deg off, as a single
+    input's is); None for another given quantity, or a point moving as stated."""
+    g = x.given
+    if g is None or g.kind != "v":
+        return None
+    vx, vy = m.V[g.names[0]]
+    speed = math.hypot(vx, vy)
+    cos = (vx * g.direction[0] + vy * g.direction[1]) / speed if speed else 1.0
+    off = math.degrees(math.acos(max(-1.0, min(1.0, cos if g.value > 0 else -cos))))
+    if off > 30.0:
+        raise SingularStepError(
+            f"{g.names[0]} cannot move as {g.key} = {g.text} says with the other input as "
+            f"given: it would move along {math.degrees(math.atan2(vy, vx)) % 360.0:.4g} deg, "
+            f"{off:.3g} deg from the stated direction; give its direction as the mechanism "
+            "allows",
+            key=f"[input{'.second' if second else ''}] {g.key}",
+        )
+    if off <= DISTINCT:
+        return None
+    return (
+        f"{g.key}: with two inputs the stated speed is {g.names[0]}'s velocity component along "
+        f"the stated direction; {g.names[0]} moves along "
+        f"{math.degrees(math.atan2(vy, vx)) % 360.0:.6g} deg here, {off:.3g} deg from it, at "
+        f"{speed:.6g} m/s"
+    )
+
+
 def _unit(i):
     return (1.0, 0.0) if i == 0 else (0.0, 1.0)
 
@@ -188,7 +246,7 @@ def _solve(rows, rhs, ins, what):
             f"{said} do not determine both inputs: the two given speeds keep one ratio "
             f"whatever the cranks {ins[0].crank} and {ins[1].crank} do (their rows per "
             f"rad/s of each crank are parallel; condition {condition_text(cond)}), so the "
-            f"cranks' {what} cannot be found: give a speed on a link that tells them apart",
+            f"cranks' {what} cannot be found: give a speed that tells them apart",
             key=_where(ins),
         )
     (a, b), (c, d) = rows
@@ -217,8 +275,10 @@ def _note(ins, per, w, a, cond) -> str:
     for x, p in zip(ins, per):
         if x.given is not None:
             parts.append(
-                f"{x.given.key} = {x.given.text} is {p[0]:.6g} rad/s per rad/s of the crank "
-                f"{ins[0].crank} and {p[1]:.6g} per rad/s of the crank {ins[1].crank}"
+                f"{x.given.key} = {x.given.text} is {p[0] + 0.0:.6g} "
+                f"{'rad/s' if x.given.kind == 'omega' else 'm/s'} per rad/s of the crank "
+                f"{ins[0].crank} and {p[1] + 0.0:.6g} per rad/s of the crank {ins[1].crank}"
+                + (" (its component along the stated direction)" if x.given.kind == "v" else "")
             )
         else:
             parts.append(f"the crank {x.crank} turns at its own stated speed")
@@ -228,8 +288,7 @@ def _note(ins, per, w, a, cond) -> str:
         f"{sense(w[0])} and omega_{ins[1].crank} = {abs(w[1]):.6g} rad/s {sense(w[1])}, "
         f"alpha_{ins[0].crank} = {_rate(a[0])} and alpha_{ins[1].crank} = {_rate(a[1])}"
     )
-    if cond < 1.0 - ROUNDING:
-        out += f" (condition {cond:.3g} of the two equations: 1 independent, 0 singular)"
+    out += f" (condition {cond:.3g} of the two equations: 1 independent, 0 singular)"
     if cond < TOL.warn:
         out += (
             ": near singular, the cranks' speeds are very sensitive to the speeds given "
@@ -238,31 +297,36 @@ def _note(ins, per, w, a, cond) -> str:
     return out
 
 
-def held_over(scene, W, Al) -> None:
+def held_over(scene, fr) -> None:
     """Refuse a sweep that would not hold the speeds the two cranks' were found from: over
     a sweep both cranks turn at the speeds found at the stated instant, which holds a speed
-    given on another link only where that link turns at fixed ratios of the two (a gear
-    train); elsewhere (a coupler of a linkage) its speed would drift from the value stated
-    and the numbers would answer another question. ``W``, ``Al``: the sweep's arrays."""
+    given elsewhere only where it keeps fixed ratios to the two (a gear train); elsewhere (a
+    coupler of a linkage, a point's or a slider's speed) it would drift from the value
+    stated and the numbers would answer another question. ``fr``: the sweep's motion."""
     import numpy as np
 
     inp = scene.input
+    turning = max(abs(inp.omega), abs(inp.second.omega))
     for g in inp.found_from:
-        key = scene.link("-".join(g.names)).key
-        w = np.asarray(W[key], dtype=float)
-        al = np.asarray(Al[key], dtype=float)
-        rate = g.rate if g.rate is not None else None
-        size = max(abs(g.value), abs(inp.omega), abs(inp.second.omega))
+        q, r = _of(g, fr, scene)
+        w, al = np.asarray(q, dtype=float), np.asarray(r, dtype=float)
+        rate = _rate_of(g) if g.rate is not None else None
+        angular = g.kind == "omega"
+        reach = 1.0 if angular else max(lk.length for lk in scene.links)
+        size = max(abs(g.value), turning * reach)
         with np.errstate(invalid="ignore"):
             off = _worst(np.abs(w - g.value))
             off_a = _worst(np.abs(al - rate)) if rate is not None else 0.0
         where = f"[input{'.second' if inp.second.speed_text == _found_text(g) else ''}] {g.key}"
-        if off > SAME * size or off_a > SAME * max(abs(rate or 0.0), size * size):
+        if off > SAME * size or off_a > SAME * max(
+            abs(rate or 0.0), size * (size if angular else turning)
+        ):
+            units = "rad/s or rad/s^2" if angular else "m/s or m/s^2"
             raise SceneError(
                 f"sweep: {g.key} = {g.text} is held only at the stated instant: with both "
                 f"cranks at the speeds found there, {g.key} drifts by up to "
-                f"{max(off, off_a):.3g} (rad/s or rad/s^2) over the sweep (it does not "
-                "turn at fixed ratios of the two cranks); solve each angle as its own scene",
+                f"{max(off, off_a):.3g} ({units}) over the sweep (it does not keep fixed "
+                "ratios to the two cranks); solve each angle as its own scene",
                 key=where,
                 file=scene.file,
                 line=key_line(scene, where),

@@ -25,22 +25,29 @@ from __future__ import annotations
 import copy
 import math
 from collections import Counter
-from dataclasses import dataclass, replace
 
 import numpy as np
 
 from ..common.errors import PolygonMethodError, SceneError
-from ..common.tolerances import ROUNDING
-from ..common.units import ANSWER_UNITS
 from ..solver.kinematics import evaluate
-from ..linkage import four_bar_of, grashof, slider_crank_of, slotted_of
-from ..linkage.cycle_values import CYCLE_SI
-from ..linkage.engine_values import ENGINE_KEYS
 from ..solver.compiler import compile_plan
 from ..scene import Scene, parse_scene, scene_from_table, scene_table
 from ..motion.solution import solve
 from ..motion.tidy import tidied
 from .toml_text import dump_toml
+from .linkage_class import _shape, linkage_class
+from .questions import questions
+from .records import Variant, VariantSet, shortfall_line
+from .screening import (
+    ENUMERATE,
+    MAX_TRIED,
+    _branches,
+    _candidates,
+    _problem,
+    _same,
+    screen,
+)
+from .screening import _stack_dims as _stack_dims  # (the tests')
 from .papers import (
     answer,
     answer_key_csv,
@@ -71,143 +78,10 @@ __all__ = [
     "summary_text",
 ]
 
-#: a space of at most this many combinations is visited whole
-ENUMERATE = 50_000
-#: at most this many candidates are screened in a larger space
-MAX_TRIED = 20_000
 #: the most variants one run makes
 MAX_VARIANTS = 9999
 #: the largest seed: each variant file records its seed, and TOML's integers are 64-bit
 MAX_SEED = (1 << 63) - 1
-
-
-# --------------------------------------------------------------------------- the class
-
-
-def _shape(scene: Scene):
-    """What kind of linkage the scene is, for keeping its class: ("four-bar", names),
-    ("slider crank", names), ("slotted", names) or ("mechanism", None)."""
-    fb = four_bar_of(scene)
-    if fb is not None:
-        return ("four-bar", (fb.crank, fb.coupler, fb.output, fb.o2, fb.o4))
-    sk = slider_crank_of(scene)
-    if sk is not None:
-        return ("slider crank", (sk.o, sk.crank, sk.rod, sk.b))
-    slot = slotted_of(scene)
-    if slot is not None:
-        crank, lever = slot
-        return ("slotted", (crank.link, crank.pivot, lever.known))
-    return ("mechanism", None)
-
-
-def linkage_class(scene: Scene, shape=None) -> str:
-    """The class a variant must keep, in words: "four-bar: crank-rocker", "slider crank:
-    the crank turns fully", "slotted lever: Whitworth", "mechanism: the crank turns fully"."""
-    kind, names = shape or _shape(scene)
-    if kind == "four-bar":
-        crank, coupler, output, o2, o4 = names
-        (ax, ay), (dx, dy) = scene.ground[o2], scene.ground[o4]
-        g = grashof(
-            scene.link(crank).length,
-            scene.link(coupler).length,
-            scene.link(output).length,
-            math.hypot(dx - ax, dy - ay),
-        )
-        return f"four-bar: {g.kind}"
-    if kind == "slider crank":
-        o, crank, rod, b = names
-        (ox, oy) = scene.ground[o]
-        path = scene.slider(b)
-        (qx, qy), (ux, uy) = path.through, path.u
-        e = abs((ox - qx) * uy - (oy - qy) * ux)
-        r, ell = scene.link(crank).length, scene.link(rod).length
-        return "slider crank: " + (
-            "the crank turns fully" if ell >= (r + e) * (1 - ROUNDING) else "the crank rocks"
-        )
-    if kind == "slotted":
-        crank, pivot, known = names
-        (ox, oy), (kx, ky) = scene.ground[pivot], scene.ground[known]
-        whit = scene.link(crank).length > math.hypot(kx - ox, ky - oy)
-        return "slotted lever: " + (
-            "Whitworth (the lever turns fully)" if whit else "oscillating lever"
-        )
-    from ..solver.tracking import Sweeper
-
-    try:
-        sw = Sweeper(scene)
-        turns = sw.domain.full_turn
-    except PolygonMethodError:
-        return "mechanism: locked"
-    if not sw.driver.periodic:  # a block driven along its guide
-        return f"mechanism: driven by {sw.driver.title}"
-    return "mechanism: " + ("the crank turns fully" if turns else "the crank rocks")
-
-
-# --------------------------------------------------------------------------- records
-
-
-@dataclass(frozen=True)
-class Variant:
-    """One student's problem: its id, file name, the values chosen (as the scene writes
-    them, by ``[variants]`` key), its scene text, the scene read back and its solution."""
-
-    id: str
-    name: str
-    values: dict
-    shown: dict
-    text: str
-    scene: Scene
-    solution: object
-    least_condition: float
-    linkage: str
-
-
-def shortfall_line(found, kept: str, widen: str) -> str | None:
-    """One line when ``found`` (a set of variants: ``variants``, ``requested``, ``space``,
-    ``tried``, ``exhaustive``, ``rejected``) holds fewer than asked, else None: how many
-    of how many combinations made a good variant (``kept``: what a good one is), why the
-    others were turned down, and what to do (``widen``: the ranges, or more)."""
-    n = len(found.variants)
-    if n >= found.requested:
-        return None
-    why = ", ".join(f"{k}: {v}" for k, v in sorted(found.rejected.items(), key=lambda kv: -kv[1]))
-    where = (
-        f"only {n} of the {found.space} combinations of [variants] make a good variant"
-        if found.exhaustive
-        else f"only {n} good variants found in {found.tried} of the {found.space} "
-        "combinations of [variants]"
-    )
-    return (
-        f"{where} ({kept}), not {found.requested}"
-        + (f"; turned down: {why}" if why else "")
-        + (f": widen the ranges or ask for --count {n}" if n else f": {widen}")
-    )
-
-
-@dataclass(frozen=True)
-class VariantSet:
-    """The variants made of a base scene: each variant, how many were asked for, the seed, the
-    combinations the ranges allow and how many were screened."""
-
-    base: Scene
-    variants: tuple
-    requested: int
-    seed: int
-    space: int  # combinations the ranges allow
-    tried: int  # candidates screened
-    exhaustive: bool  # every combination was screened
-    rejected: dict  # why candidates were turned down -> how many
-    linkage: str
-    questions: tuple  # (key, kind, names, unit, signed, the unit asked or None)
-
-    def shortfall(self) -> str | None:
-        """One line when fewer variants than asked were found, else None."""
-        return shortfall_line(
-            self,
-            f"assembled on the stated branch, every step's condition at least "
-            f"{self.base.variation.min_text}, the class kept: {self.linkage}",
-            "widen the ranges or lower min_condition",
-        )
 
 
 def _put(raw, path, value):
@@ -215,172 +89,6 @@ def _put(raw, path, value):
     for p in path[:-1]:
         d = d[p]
     d[path[-1]] = value
-
-
-# --------------------------------------------------------------------------- questions
-
-
-def _unit_of(kind) -> str:
-    """The SI unit a class's answer key gives an answer of ``kind`` in."""
-    if kind in CYCLE_SI:  # a quick return's times, a stroke, a link's angle
-        return CYCLE_SI[kind]
-    return ANSWER_UNITS[kind] if kind in ANSWER_UNITS else ENGINE_KEYS[kind][1]
-
-
-def questions(scene: Scene) -> tuple:
-    """What the answer key gives: the base scene's ``[answers]`` keys where it has them
-    (centres aside), else every moving point's speed and acceleration, every moving link's
-    omega and alpha, each slider's sliding velocity and acceleration, the input torque.
-    Each as (key, kind, names, unit, signed, the unit a question asks its answer in: "rpm"
-    of ``omega_BC = "? rpm"``, else None). A key asked without its answer (``"?"``) is a
-    question as any other: the base's values are never the variants'."""
-    asked = [a for a in scene.answers if a.kind != "centre"]
-    if asked:
-        return tuple(
-            (
-                a.key,
-                a.kind,
-                tuple(a.names),
-                _unit_of(a.kind),
-                a.kind in ("omega", "alpha", "vs", "as", "torque", "torque2"),
-                getattr(a, "unit", None),
-            )
-            for a in asked
-        )
-    out = []
-    ground = set(scene.ground)
-    for p in scene.point_names:
-        if p not in ground:
-            out.append((f"v_{p}", "v", (p,), "m/s", False, None))
-    for p in scene.point_names:
-        if p not in ground:
-            out.append((f"a_{p}", "a", (p,), "m/s^2", False, None))
-    from ..scene import split_name
-
-    # the crank's omega is given, unless the scene gives the motion on another quantity
-    crank = scene.input.crank if scene.input.given is None else None
-    for lk in scene.links:
-        if not (lk.p in ground and lk.q in ground) and lk.key != crank:
-            out.append((f"omega_{lk.key}", "omega", split_name(lk.key), "rad/s", True, None))
-    for lk in scene.links:
-        if not (lk.p in ground and lk.q in ground) and lk.key != crank:
-            out.append((f"alpha_{lk.key}", "alpha", split_name(lk.key), "rad/s^2", True, None))
-    for s in scene.sliders:
-        out.append((f"vs_{s.point}", "vs", (s.point,), "m/s", True, None))
-        out.append((f"as_{s.point}", "as", (s.point,), "m/s^2", True, None))
-    for p in scene.pins:
-        out.append((f"rub_{p.point}", "rub", (p.point,), "m/s", False, None))
-    if scene.loads:
-        out.append(("torque", "torque", (), "N m", True, None))
-    return tuple(out)
-
-
-# --------------------------------------------------------------------------- screening
-
-
-def _stack(values):
-    """Per-candidate values (numbers, or tuples of them) as arrays (or tuples of arrays)."""
-    first = values[0]
-    if isinstance(first, tuple):
-        return tuple(_stack([v[i] for v in values]) for i in range(len(first)))
-    if isinstance(first, (int, float)):
-        return np.array(values, dtype=float)
-    return first
-
-
-def _stack_dims(dl):
-    d0 = dl[0]
-    ground = {p: _stack([d.ground[p] for d in dl]) for p in d0.ground}
-    steps = tuple(_stack([d.steps[i] for d in dl]) for i in range(len(d0.steps)))
-    radii = {p: _stack([d.radii[p] for d in dl]) for p in d0.radii}
-    return replace(
-        d0,
-        ground=ground,
-        steps=steps,
-        theta=_stack([d.theta for d in dl]),
-        omega=_stack([d.omega for d in dl]),
-        alpha=_stack([d.alpha for d in dl]),
-        radii=radii,
-    )
-
-
-def screen(plan, scenes, min_condition):
-    """For each candidate scene (of the plan's shape): does it assemble on the plan's
-    branches with every step's condition at least ``min_condition``? Returns (mask, least
-    condition per candidate), from one evaluation of the plan over all of them."""
-    dims = _stack_dims([plan.dimensions(s) for s in scenes])
-    m = evaluate(plan, dims=dims, array=True, upto=0)
-    n = len(scenes)
-    least = np.full(n, np.inf)
-    for i, c in m.cond.items():
-        least = np.minimum(least, np.broadcast_to(np.asarray(c, dtype=float), (n,)))
-    ok = least >= min_condition
-    if m.bad is not None:
-        ok &= ~np.broadcast_to(np.asarray(m.bad, dtype=bool), (n,))
-    ok &= np.isfinite(least)
-    return ok, least
-
-
-def _branches(plan) -> tuple:
-    return tuple(getattr(st, "sigma", None) for st in plan.steps)
-
-
-# --------------------------------------------------------------------------- generation
-
-
-def _candidates(rng, sizes, total):
-    """Index tuples in a random order without repeats: all of them for a small space, a
-    sample for a large one."""
-    if total <= ENUMERATE:
-        for flat in rng.permutation(total):
-            idx, rest = [], int(flat)
-            for n in reversed(sizes):
-                idx.append(rest % n)
-                rest //= n
-            yield tuple(reversed(idx))
-        return
-    seen = set()
-    while len(seen) < min(total, MAX_TRIED):
-        block = np.stack([rng.integers(0, n, size=256) for n in sizes], axis=1)
-        for row in block:
-            t = tuple(int(i) for i in row)
-            if t not in seen:
-                seen.add(t)
-                yield t
-                if len(seen) >= MAX_TRIED:
-                    return
-
-
-def _numbers(x):
-    """The numbers in a nest of tuples, lists and dicts, in order."""
-    if isinstance(x, dict):
-        return [y for k in sorted(x, key=str) for y in _numbers(x[k])]
-    if isinstance(x, (tuple, list)):
-        return [y for v in x for y in _numbers(v)]
-    if isinstance(x, (int, float)) and not isinstance(x, bool):
-        return [float(x)]
-    return []
-
-
-def _problem(plan, sc):
-    """What makes ``sc`` the problem it is, as numbers (SI): the plan's dimensions (ground,
-    each step's, pin radii), the crank's speed and acceleration, its angle (over a turn),
-    the loads."""
-    d = plan.dimensions(sc)
-    turn = 2 * math.pi
-    theta = round(float(d.theta) % turn, 12) % turn
-    loads = [(ld.target, ld.force, ld.torque) for ld in sc.loads]
-    return (
-        _numbers((d.ground, d.steps, d.radii, d.omega, d.alpha))
-        + [theta]
-        + _numbers([(f, t) for _, f, t in loads])
-    )
-
-
-def _same(a, b) -> bool:
-    return len(a) == len(b) and all(
-        abs(x - y) <= ROUNDING * max(1.0, abs(x), abs(y)) for x, y in zip(a, b)
-    )
 
 
 def _id_width(count):

@@ -1,0 +1,87 @@
+"""The ``[answers]`` table's refusals a teacher meets: an answer file's own keys
+(``student``, ``variant``, ``title``) written inside ``[answers]`` get one line saying
+where they belong; a sub-table ``[answers.extra]`` is refused at its line."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import pytest
+
+from polygon_method import parse_scene
+from polygon_method.common.errors import SceneError
+from polygon_method.scene import parse_answers
+from scenes import seed
+
+SCENE = seed(after='[answers]\nv_B = "0.5 m/s"\n')
+
+
+def _refusal(fn):
+    with pytest.raises(SceneError) as exc:
+        fn()
+    return exc.value
+
+
+def test_student_inside_an_answer_files_answers_is_sent_above_the_heading():
+    sc = parse_scene(seed())
+    text = '[answers]\nv_C = "0.3 m/s"\nstudent = "Ann Smith"\n'
+    err = _refusal(lambda: parse_answers(text, sc, file="ann.toml"))
+    assert err.line == 3
+    assert "student" in str(err) and "above the [answers] heading" in err.message
+    assert "unknown answer key" not in err.message
+    assert err.message.count("\n") == 0
+
+
+@pytest.mark.parametrize("key", ["student", "name", "variant"])
+def test_a_students_key_inside_a_scenes_answers_is_sent_to_the_answer_file(key):
+    text = seed(after=f'[answers]\nv_B = "0.5 m/s"\n{key} = "07"\n')
+    err = _refusal(lambda: parse_scene(text, file="s.toml"))
+    assert err.line == text.splitlines().index(f'{key} = "07"') + 1
+    assert "answer file, above its [answers] heading" in err.message
+    assert "unknown answer key" not in err.message
+
+
+def test_a_title_inside_a_scenes_answers_is_sent_to_the_top_of_the_scene():
+    text = seed(after='[answers]\ntitle = "Four-bar"\n')
+    err = _refusal(lambda: parse_scene(text))
+    assert "top of the scene" in err.message and err.line == text.count("\n")
+
+
+@pytest.mark.parametrize(
+    "table",
+    [
+        '[answers]\nv_B = "0.5 m/s"\n\n[answers.extra]\nv_C = "0.3 m/s"\n',
+        '[answers]\nv_B = "0.5 m/s"\nextra.v_C = "0.3 m/s"\n',
+        '[answers]\nv_B = "0.5 m/s"\nextra = { v_C = "0.3 m/s" }\n',
+    ],
+)
+def test_a_table_inside_answers_is_refused_at_its_line(table):
+    text = seed(after=table)
+    err = _refusal(lambda: parse_scene(text))
+    lines = text.splitlines()
+    want = next(i for i, s in enumerate(lines, 1) if "extra" in s)
+    assert err.line == want
+    assert "[answers.extra]" in str(err) and "unknown answer key" not in err.message
+
+
+def test_an_answer_files_sub_table_has_its_line_too():
+    sc = parse_scene(seed())
+    text = '[answers]\nv_C = "0.3 m/s"\n[answers.extra]\nv_B = "1 m/s"\n'
+    err = _refusal(lambda: parse_answers(text, sc, file="ann.toml"))
+    assert err.line == 3
+
+
+def test_the_command_line_says_it_in_one_line(tmp_path):
+    scene = tmp_path / "s.toml"
+    scene.write_text(seed())
+    ans = tmp_path / "ann.toml"
+    ans.write_text('[answers]\nv_C = "0.3 m/s"\nstudent = "Ann"\n')
+    out = subprocess.run(
+        [sys.executable, "-m", "polygon_method", "check", str(scene), str(ans)],
+        capture_output=True,
+        text=True,
+    )
+    assert out.returncode == 2 and "Traceback" not in out.stderr
+    assert out.stderr.count("\n") == 1 and "line 3" in out.stderr
+    assert "above the [answers] heading" in out.stderr
