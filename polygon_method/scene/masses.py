@@ -330,12 +330,16 @@ class _Masses:
         )
         return Gravity(g, u, text)
 
-    def friction(self, pins):
-        """[friction]: None without the table (frictionless, as the books start)."""
+    def friction(self, pins, sliders=()):
+        """[friction]: None without the table (frictionless, as the books start). Each of
+        ``guides`` and ``pins`` a coefficient for all, or a table of each guide's (by its
+        block's point) or each pin's own."""
         if "friction" not in self.raw:
             return None
         spec = self.table("friction")
         out = {}
+        sized = {p.point for p in pins}
+        blocks = {s.point for s in sliders}
         for k, v in spec.items():
             if k not in ("guides", "pins"):
                 raise self.error(
@@ -344,14 +348,11 @@ class _Masses:
                     "friction",
                     k,
                 )
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or not 0 <= v < 1:
-                raise self.error(
-                    f"{k} = {v!r}: a coefficient of friction, a number from 0 up to (not) 1",
-                    "friction",
-                    k,
-                )
-            out[k] = float(v)
-        if out.get("pins") and not pins:
+            if isinstance(v, dict):
+                out["at_" + k] = self._each_friction(k, v, blocks if k == "guides" else sized)
+                continue
+            out[k] = self._coefficient(k, v)
+        if (out.get("pins") or out.get("at_pins")) and not pins:
             raise self.error(
                 "friction at the pins needs their sizes: give [pins] (each pin's "
                 "diameter or radius: the friction circle's radius is mu r)",
@@ -359,6 +360,33 @@ class _Masses:
                 "pins",
             )
         return Friction(**out)
+
+    def _coefficient(self, k, v, name=""):
+        if isinstance(v, bool) or not isinstance(v, (int, float)) or not 0 <= v < 1:
+            raise self.error(
+                f"{name or k} = {v!r}: a coefficient of friction, a number from 0 up to (not) 1",
+                "friction",
+                k,
+            )
+        return float(v)
+
+    def _each_friction(self, k, table, names) -> tuple:
+        """``guides = { B = 0.1, A = 0.15 }``: each guide's coefficient by its block's point
+        (each pin's by its name in [pins]); a name that is none of them is refused."""
+        out = []
+        for name, v in table.items():
+            if name not in names:
+                what = (
+                    "a sliding block's point (the guide of the block there)"
+                    if k == "guides"
+                    else "a pin with a size in [pins]"
+                )
+                have = ", ".join(sorted(names)) or "none"
+                raise self.error(
+                    f"{k}: '{name}' is not {what}; the scene has {have}", "friction", k
+                )
+            out.append((name, self._coefficient(k, v, f"{k}.{name}")))
+        return tuple(out)
 
 
 def _did_you_mean(word, choices=_LINK_KEYS) -> str:

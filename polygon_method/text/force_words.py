@@ -120,7 +120,7 @@ def known_words(sc) -> str:
         parts.append("the weight")
     parts.append("the loads")
     fr = sc.friction
-    if fr is not None and (fr.guides or fr.pins):  # (their sizes from the forces found)
+    if fr is not None and fr.active:  # (their sizes from the forces found)
         parts.append(
             "the friction (mu |N| at the guides, the couples mu r |F| at the pins, from the "
             "forces found, the walk repeated until they settle)"

@@ -63,8 +63,7 @@ def _friction_lines(sol, f, F, M) -> list:
     if fr is None:
         return []
     out = [
-        f"friction (Coulomb: mu = {fr.guides:g} at the guides, {fr.pins:g} at the pins "
-        "with a size in [pins], the friction circle mu r; "
+        f"friction (Coulomb: {fr.words()}, the friction circle mu r; "
         + (
             "at rest, the limiting static friction against the motion about to start, "
             "the effort to start it):"
