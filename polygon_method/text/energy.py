@@ -24,6 +24,7 @@ _FORMS = {
     "areas": "the turning-moment diagram given as its areas above and below the mean line",
     "law": "the turning moment given as a law of the crank angle",
     "table": "the turning moment given as straight segments",
+    "strokes": "the turning moment given by each stroke's work, a triangle on its half turn",
     "press": "a punching press",
 }
 

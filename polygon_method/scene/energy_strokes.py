@@ -1,0 +1,164 @@
+"""The ``[turning_moment] strokes`` of a turning-moment diagram's scene (a part of
+:mod:`polygon_method.scene.energy`'s reader): the books' engine whose diagram is stated by
+the work of each stroke, "the work done by the gases during the expansion stroke is three
+times the work done on them during the compression stroke, the suction and exhaust strokes
+negligible; the turning moment during each stroke a triangle".
+
+Each stroke is half a turn of the crank, in the cycle's order from its start (a four-stroke
+engine's suction, compression, expansion, exhaust). ``strokes`` gives each one's work, as
+energies (``["0 J", "-4 kJ", "12 kJ", "0 J"]``) or in proportion (``[0, -1, 3, 0]``) with the
+net work of a cycle (``work``) or the engine's ``power`` at the mean speed of
+``[flywheel]`` (``W = P Theta / w``, Theta the cycle's angle: 4 pi for a four-stroke engine).
+Each stroke's turning moment is a triangle on its half turn, its peak ``2 W_k / pi`` at
+mid-stroke (its area W_k): the diagram is then straight segments, solved as any table.
+
+>>> [round(x, 6) for x in _peaks([0.0, -4000.0, 12000.0, 0.0])[1]]
+[0.0, 0.0, 0.0, -2546.479089, 0.0, 7639.437268, 0.0, 0.0, 0.0]
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..common.tolerances import ROUNDING
+from ..common.units import did_you_mean
+from .energy_records import Diagram, Table
+
+#: the most strokes a cycle may have (a four-stroke engine has 4; 16 covers any book's)
+MAX_STROKES = 16
+_SHAPES = ("triangle",)
+
+
+def _peaks(works) -> tuple:
+    """(angles rad, torques N m) of the triangles, one a half turn, of the strokes' works
+    (J): 0 at each stroke's ends, ``2 W / pi`` at its middle."""
+    angles, torques = [0.0], [0.0]
+    for k, w in enumerate(works):
+        angles += [(k + 0.5) * math.pi, (k + 1) * math.pi]
+        torques += [2.0 * w / math.pi, 0.0]
+    return tuple(angles), tuple(torques)
+
+
+class _StrokesReader:
+    """The reader's methods for ``strokes`` (mixed into the cycle reader)."""
+
+    def _strokes(self, spec, t, at) -> Diagram:
+        raw = spec["strokes"]
+        numbers = isinstance(raw, list) and all(
+            isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
+            for v in raw
+        )
+        energies = isinstance(raw, list) and all(isinstance(v, str) for v in raw)
+        if not (numbers or energies) or not 2 <= len(raw) <= MAX_STROKES:
+            raise self.err(
+                f"strokes = [0, -1, 3, 0]: each stroke's work in proportion (2 to "
+                f'{MAX_STROKES} strokes, with work or power), or ["0 J", "-4 kJ", "12 kJ", '
+                '"0 J"]: each stroke\'s work',
+                t,
+                "strokes",
+            )
+        for k in ("torque", "resisting", "angle", "unit", "areas", "area_unit"):
+            if k in spec:
+                raise self.err(f"{k}: not with strokes (the strokes' works are the diagram)", t, k)
+        n = len(raw)
+        cycle, cw = self._cycle(spec, t, n * math.pi)
+        if abs(cycle - n * math.pi) > ROUNDING * cycle:
+            raise self.err(
+                f"{n} strokes of half a turn each make {180 * n} deg, not "
+                f"{math.degrees(cycle):g} (a four-stroke engine's cycle has 4)",
+                t,
+                "cycle",
+            )
+        shape = spec.get("shape", "triangle")
+        if shape not in _SHAPES:
+            raise self.err(
+                f"shape = {shape!r}{did_you_mean(str(shape), list(_SHAPES))}: each stroke's "
+                'turning moment "triangle" (the books\' assumption)',
+                t,
+                "shape",
+            )
+        words = []
+        if energies:
+            for k in ("power", "work"):
+                if k in spec:
+                    raise self.err(f"{k}: not with the strokes' works given as energies", t, k)
+            works = [self.ld.qty(v, "energy", t, "strokes").value for v in raw]
+            words.append("each stroke's work given: " + ", ".join(f"{w:.6g} J" for w in works))
+        else:
+            works = self._proportions(spec, t, raw, cycle, words)
+        if not math.fsum(works) > 0:
+            raise self.err(
+                "the strokes' works add up to no net work: an engine's cycle does work "
+                "(the expansion more than the compression; a stroke done on the gases is "
+                "negative)",
+                t,
+                "strokes",
+            )
+        angles, torques = _peaks(works)
+        words.append(
+            "each stroke a triangle on its half turn, its peak 2 W / pi at mid-stroke: "
+            + ", ".join(f"{x:.6g}" for x in torques[1::2])
+            + f" N m; {cw}"
+        )
+        words.append("the resisting torque constant, the mean (default)")
+        table = Table(angles, torques, f"{n} strokes, each a triangle")
+        return Diagram("strokes", cycle, driving=table, resisting=None, at=at, words=tuple(words))
+
+    def _proportions(self, spec, t, raw, cycle, words) -> list:
+        """The strokes' works (J) from their proportions and the net work of a cycle: given
+        (``work``), or the power at the flywheel's mean speed over the cycle's time."""
+        ways = [k for k in ("work", "power") if k in spec]
+        if len(ways) != 1:
+            raise self.err(
+                'strokes in proportion need the net work of a cycle (work = "8 kJ") or the '
+                'engine\'s power (power = "20 kW", at [flywheel] speed): one of them',
+                t,
+                ways[1] if ways else "power",
+            )
+        total = math.fsum(raw)
+        if not total > 0:
+            raise self.err(
+                f"the strokes' proportions add up to {total:g}: an engine's cycle does net "
+                "work (the expansion more than the compression, which is negative)",
+                t,
+                "strokes",
+            )
+        if ways[0] == "work":
+            W = self.ld.qty(spec["work"], "energy", t, "work").value
+            said = f"the net work of a cycle W = {W:.6g} J (given)"
+        else:
+            P = self.ld.qty(spec["power"], "power", t, "power").value
+            w = self._strokes_speed(t)
+            W = P * cycle / w
+            said = (
+                f"the net work of a cycle W = P Theta / w = {P:.6g} x {cycle:.6g} / {w:.6g} = "
+                f"{W:.6g} J (the power over the time of one cycle at the mean speed)"
+            )
+        if not W > 0:
+            raise self.err("the net work of a cycle must be positive", t, ways[0])
+        works = [r * W / total for r in raw]
+        words.append(said)
+        words.append(
+            "the strokes' works in proportion "
+            + " : ".join(f"{r:g}" for r in raw)
+            + f" (net {total:g}): "
+            + ", ".join(f"{x:.6g} J" for x in works)
+        )
+        return works
+
+    def _strokes_speed(self, t) -> float:
+        """The mean speed (rad/s) that turns a power into a cycle's work: [flywheel]'s
+        ``speed``, or the mean of its ``max_speed`` and ``min_speed``."""
+        fly = self.raw.get("flywheel")
+        fly = fly if isinstance(fly, dict) else {}
+        if "speed" in fly:
+            return self._speed(fly, "flywheel", "speed")
+        if "max_speed" in fly and "min_speed" in fly:
+            hi, lo = (self._speed(fly, "flywheel", k) for k in ("max_speed", "min_speed"))
+            return (hi + lo) / 2
+        raise self.err(
+            'power needs the mean speed to give the work of a cycle: [flywheel] speed = "300 '
+            'rpm" (or give work = the net work of a cycle)',
+            t,
+            "power",
+        )
