@@ -56,6 +56,43 @@ def test_khurmis_gas_engine_by_the_closed_form():
     assert mpmath.degrees(at["b"]) == pytest.approx(float(540 - 90 * mean / peak), rel=REL)
 
 
+AREAS = HERE / "strokes_four_triangles_areas.toml"
+
+
+def test_khurmis_four_triangles_of_given_areas_by_the_closed_form():
+    """The areas -0.45, -1.7, 6.8, -0.65 (1e-3 m^2) at 3 MJ per m^2: W_e = 20400 J, the net
+    12000 J; one lobe above the mean: dE_max = W_e (1 - T_mean / h)^2; 200 rpm, Cs 0.02,
+    the rim at 1.2 m: the book's 1386 kg."""
+    mpmath.mp.dps = 40
+    We, W = mpf(20400), mpf(-1350 - 5100 + 20400 - 1950)
+    mean, peak = W / (4 * mpmath.pi), 2 * We / mpmath.pi
+    dE = We * (1 - mean / peak) ** 2
+    w = 200 * 2 * mpmath.pi / 60
+    I = dE / (w**2 * mpf("0.02"))
+    c = solve_cycle(cycle_from_text(AREAS.read_text(encoding="utf-8"), str(AREAS)))
+    assert c.T_mean == pytest.approx(float(mean), rel=REL)
+    assert c.dE_max == pytest.approx(float(dE), rel=REL)
+    assert c.inertia == pytest.approx(float(I), rel=REL)
+    assert c.mass == pytest.approx(float(I / mpf("1.44")), rel=REL)
+    assert float(I / mpf("1.44")) == pytest.approx(1386, rel=1e-3)  # the book's
+
+
+def test_the_strokes_areas_in_mm2_with_the_diagrams_scales():
+    """The same diagram drawn at 1 mm = 100 N m and 1 mm = 3 deg: 1 mm^2 = 5.236 J."""
+    text = AREAS.read_text(encoding="utf-8")
+    per = 100 * 3 * float(mpmath.pi) / 180
+    mm2 = [x / per for x in (-1350, -5100, 20400, -1950)]
+    other = text.replace(
+        "strokes = [-0.45e-3, -1.7e-3, 6.8e-3, -0.65e-3]   # m^2, above the zero line positive",
+        f"strokes = [{', '.join(repr(x) for x in mm2)}]",
+    ).replace(
+        'area_scale = "1 m^2 = 3 MN m"',
+        'area_unit = "mm^2"\ntorque_scale = "1 mm = 100 N m"\nangle_scale = "1 mm = 3 deg"',
+    )
+    a, b = _solve(text), _solve(other)
+    assert b.dE_max == pytest.approx(a.dE_max, rel=1e-12)
+
+
 STEAM = """title = "Double-acting steam engine, each stroke a triangle"
 [turning_moment]
 strokes = [1, 1]
@@ -121,6 +158,10 @@ def test_every_view_reads_it(capsys, tmp_path):
         ('cycle = "4-stroke"', 'cycle = "4-stroke"\nshape = "sine"', "shape = 'sine'"),
         ('speed = "300 rpm"', 'inertia = "40 kg m^2"', "power needs the mean speed"),
         ("strokes = [0, -1, 3, 0]", "strokes = [0, -1, 3, 0]\nareas = [1, -1]", "one of them"),
+        ('power = "20 kW"', 'area_scale = "1 m^2 = 3 MN"', "'MN' is a unit of force"),
+        ('power = "20 kW"', 'area_scale = "3 MN m"', "area_scale = '3 MN m'"),
+        ('cycle = "4-stroke"', 'cycle = "4-stroke"\narea_scale = "1 m^2 = 3 MJ"', "power: not"),
+        ('power = "20 kW"', 'area_unit = "J"', "area_unit = 'J'"),
     ],
 )
 def test_a_bad_strokes_table_is_one_line(tmp_path, capsys, old, new, words):

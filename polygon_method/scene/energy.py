@@ -73,6 +73,7 @@ _TM_KEYS = (
     "power",
     "work",
     "shape",
+    "area_scale",
 )
 _TOKEN = re.compile(
     r"\s*(?:(?P<num>(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)|(?P<word>sin|cos|theta|θ|deg|°|rad)"
@@ -373,7 +374,7 @@ class _CycleReader(_RimReader, _PressReader, _AreasReader, _StrokesReader):
             at = self.ld.qty(spec["at"], "angle", t, "at", default_unit="deg").value
         if "strokes" in spec:
             return self._strokes(spec, t, at)
-        for k in ("power", "work", "shape"):
+        for k in ("power", "work", "shape", "area_scale"):
             if k in spec:
                 raise self.err(f"{k}: only with strokes = [...] (each stroke's work)", t, k)
         if "areas" in spec:

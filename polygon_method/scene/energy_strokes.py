@@ -19,6 +19,7 @@ mid-stroke (its area W_k): the diagram is then straight segments, solved as any 
 from __future__ import annotations
 
 import math
+import re
 
 from ..common.tolerances import ROUNDING
 from ..common.units import did_you_mean
@@ -27,6 +28,21 @@ from .energy_records import Diagram, Table
 #: the most strokes a cycle may have (a four-stroke engine has 4; 16 covers any book's)
 MAX_STROKES = 16
 _SHAPES = ("triangle",)
+_AREA_SCALE = re.compile(
+    r"^\s*((?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(mm\^2|mm2|mm²|cm\^2|cm2|cm²|m\^2|m2|m²)"
+    r"\s*=\s*(.+?)\s*$"
+)
+_AREAS = {
+    "mm^2": "mm^2",
+    "mm2": "mm^2",
+    "mm²": "mm^2",
+    "cm^2": "cm^2",
+    "cm2": "cm^2",
+    "cm²": "cm^2",
+    "m^2": "m^2",
+    "m2": "m^2",
+    "m²": "m^2",
+}
 
 
 def _peaks(works) -> tuple:
@@ -57,7 +73,7 @@ class _StrokesReader:
                 t,
                 "strokes",
             )
-        for k in ("torque", "resisting", "angle", "unit", "areas", "area_unit"):
+        for k in ("torque", "resisting", "angle", "unit", "areas"):
             if k in spec:
                 raise self.err(f"{k}: not with strokes (the strokes' works are the diagram)", t, k)
         n = len(raw)
@@ -84,6 +100,8 @@ class _StrokesReader:
                     raise self.err(f"{k}: not with the strokes' works given as energies", t, k)
             works = [self.ld.qty(v, "energy", t, "strokes").value for v in raw]
             words.append("each stroke's work given: " + ", ".join(f"{w:.6g} J" for w in works))
+        elif any(k in spec for k in ("area_scale", "area_unit", "torque_scale", "angle_scale")):
+            works = self._stroke_areas(spec, t, raw, words)
         else:
             works = self._proportions(spec, t, raw, cycle, words)
         if not math.fsum(works) > 0:
@@ -145,6 +163,52 @@ class _StrokesReader:
             + ", ".join(f"{x:.6g} J" for x in works)
         )
         return works
+
+    def _stroke_areas(self, spec, t, raw, words) -> list:
+        """The strokes' works (J) from their triangles' areas on the diagram (above the line
+        of zero turning moment positive): ``area_scale = "1 m^2 = 3 MN m"`` (the energy an
+        area stands for), or ``area_unit`` "mm^2" / "cm^2" with the diagram's
+        ``torque_scale`` and ``angle_scale``, as for the areas of a diagram."""
+        for k in ("power", "work"):
+            if k in spec:
+                raise self.err(f"{k}: not with the strokes' areas (they give the works)", t, k)
+        if "area_scale" in spec:
+            for k in ("area_unit", "torque_scale", "angle_scale"):
+                if k in spec:
+                    raise self.err(f"{k}: not with area_scale (it gives the areas' energy)", t, k)
+            per, unit = self._area_scale(spec["area_scale"], t)
+        else:
+            unit = spec.get("area_unit", "mm^2")
+            if unit not in ("mm^2", "mm2", "mm²", "cm^2", "cm2", "cm²"):
+                raise self.err(
+                    f'area_unit = {unit!r}: "mm^2" or "cm^2" with torque_scale and '
+                    'angle_scale (or area_scale = "1 m^2 = 3 MN m")',
+                    t,
+                    "area_unit",
+                )
+            per = self._per_area(spec, t, unit)
+        works = [float(v) * per for v in raw]
+        words.append(
+            f"1 {unit} of the diagram = {per:.6g} J: the strokes' works "
+            + ", ".join(f"{w:.6g} J" for w in works)
+        )
+        return works
+
+    def _area_scale(self, raw, t) -> tuple:
+        """(J per unit area, the area's unit) of ``"1 m^2 = 3 MN m"``."""
+        m = _AREA_SCALE.match(raw) if isinstance(raw, str) else None
+        if m is None or m.group(2) not in _AREAS:
+            raise self.err(
+                f'area_scale = {raw!r}: the energy an area of the diagram stands for, "1 m^2 = '
+                '3 MN m" (or per mm^2, cm^2)',
+                t,
+                "area_scale",
+            )
+        e = self.ld.qty(m.group(3), "energy", t, "area_scale").value
+        a = float(m.group(1))
+        if not (a > 0 and e > 0):
+            raise self.err("area_scale: both sides must be positive", t, "area_scale")
+        return e / a, _AREAS[m.group(2)]
 
     def _strokes_speed(self, t) -> float:
         """The mean speed (rad/s) that turns a power into a cycle's work: [flywheel]'s
