@@ -13,6 +13,7 @@ from ..common.errors import SceneError
 from ..common.tolerances import ROUNDING
 from ..common.units import UNITS, Quantity, did_you_mean
 from .records import Friction, Gravity, Mass, split_name
+from .pendulum import PENDULUM_KEYS, swing_inertia
 from .table_help import _unit_at
 
 #: the g of a book (m/s^2), when [gravity] does not give its own
@@ -33,7 +34,7 @@ _LINK_KEYS = (
     "inertia",
     "gyration",
     "about",
-)
+) + PENDULUM_KEYS
 
 
 class _Masses:
@@ -163,15 +164,7 @@ class _Masses:
             if any(o.body == link.key for o in out):
                 raise self.error(f"link {link.key} has a mass already", "masses", name)
             lam, mu, where, centre = self._centre(spec, link, pts, carried, name)
-            if per is not None:  # "the links weigh 20 N/m": a uniform bar, m = w L
-                m, said = self._uniform(spec, per, m, link, name)
-                inertia = m * link.length**2 / 12.0
-                if "inertia" in spec or "gyration" in spec:
-                    inertia, said = self._inertia(spec, m, name)
-            else:
-                inertia, said = self._inertia(spec, m, name)
-            if "about" in spec:  # "I about the crank shaft's axis O": the parallel axes
-                inertia, said = self._about(spec, link, m, lam, mu, inertia, said, name)
+            inertia, said, m = self._link_inertia(spec, per, m, link, (lam, mu), name)
             out.append(
                 Mass(
                     link.key,
@@ -184,6 +177,26 @@ class _Masses:
                 )
             )
         return out
+
+    def _link_inertia(self, spec, per, m, link, at, name) -> tuple:
+        """(I_G, words, the mass) of a link: a uniform bar's from its mass per length, the
+        given inertia or gyration (about G, or about an end: the parallel axes), or its swing
+        as a compound pendulum (:mod:`.pendulum`)."""
+        lam, mu = at
+        swing = any(k in spec for k in PENDULUM_KEYS)
+        if per is not None:  # "the links weigh 20 N/m": a uniform bar, m = w L
+            m, said = self._uniform(spec, per, m, link, name)
+            inertia = m * link.length**2 / 12.0
+            if "inertia" in spec or "gyration" in spec:
+                inertia, said = self._inertia(spec, m, name)
+        if swing:  # "it makes 21 complete oscillations in 40 seconds"
+            g = (self.gravity() or Gravity(STANDARD_G, None, "")).g
+            return (*swing_inertia(self, spec, link, m, lam, mu, name, g), m)
+        if per is None:
+            inertia, said = self._inertia(spec, m, name)
+        if "about" in spec:  # "I about the crank shaft's axis O": the parallel axes
+            inertia, said = self._about(spec, link, m, lam, mu, inertia, said, name)
+        return inertia, said, m
 
     def _centre(self, spec, link, pts, carried, name):
         """(lam, mu, words, named point or None) of a link's centre of mass."""
