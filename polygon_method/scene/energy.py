@@ -74,6 +74,7 @@ _TM_KEYS = (
     "work",
     "shape",
     "area_scale",
+    "dE_max",
 )
 _TOKEN = re.compile(
     r"\s*(?:(?P<num>(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)|(?P<word>sin|cos|theta|θ|deg|°|rad)"
@@ -360,12 +361,14 @@ class _CycleReader(_RimReader, _PressReader, _AreasReader, _StrokesReader):
         t = "turning_moment"
         spec = self.ld.table(t)
         self._keys(spec, t, _TM_KEYS)
-        has = [k for k in ("areas", "torque", "strokes") if k in spec]
+        has = [k for k in ("areas", "torque", "strokes", "dE_max") if k in spec]
         if len(has) != 1:
             raise self.err(
                 "give the areas between the diagram and the mean line (areas = [...]), "
                 'the turning moment (torque = "1000 + 300 sin 2theta", or a table with '
-                "angle = [...]) or each stroke's work (strokes = [0, -1, 3, 0]): one of them",
+                "angle = [...]), each stroke's work (strokes = [0, -1, 3, 0]) or the "
+                'fluctuation of energy alone (dE_max = "15%" of the work of a cycle): one of '
+                "them",
                 t,
                 has[1] if has else "torque",
             )
@@ -374,9 +377,13 @@ class _CycleReader(_RimReader, _PressReader, _AreasReader, _StrokesReader):
             at = self.ld.qty(spec["at"], "angle", t, "at", default_unit="deg").value
         if "strokes" in spec:
             return self._strokes(spec, t, at)
+        if "dE_max" in spec:
+            return self._fluctuation(spec, t, at)
         for k in ("power", "work", "shape", "area_scale"):
             if k in spec:
-                raise self.err(f"{k}: only with strokes = [...] (each stroke's work)", t, k)
+                raise self.err(
+                    f"{k}: only with strokes = [...] (each stroke's work) or dE_max", t, k
+                )
         if "areas" in spec:
             for k in ("torque", "resisting", "angle", "unit", "at"):
                 if k in spec:

@@ -141,21 +141,8 @@ class _StrokesReader:
                 t,
                 "strokes",
             )
-        if ways[0] == "work":
-            W = self.ld.qty(spec["work"], "energy", t, "work").value
-            said = f"the net work of a cycle W = {W:.6g} J (given)"
-        else:
-            P = self.ld.qty(spec["power"], "power", t, "power").value
-            w = self._strokes_speed(t)
-            W = P * cycle / w
-            said = (
-                f"the net work of a cycle W = P Theta / w = {P:.6g} x {cycle:.6g} / {w:.6g} = "
-                f"{W:.6g} J (the power over the time of one cycle at the mean speed)"
-            )
-        if not W > 0:
-            raise self.err("the net work of a cycle must be positive", t, ways[0])
+        W = self._cycle_work(spec, t, ways[0], cycle, words)
         works = [r * W / total for r in raw]
-        words.append(said)
         words.append(
             "the strokes' works in proportion "
             + " : ".join(f"{r:g}" for r in raw)
@@ -209,6 +196,68 @@ class _StrokesReader:
         if not (a > 0 and e > 0):
             raise self.err("area_scale: both sides must be positive", t, "area_scale")
         return e / a, _AREAS[m.group(2)]
+
+    def _fluctuation(self, spec, t, at) -> Diagram:
+        """The book's energy alone, no diagram: "the maximum fluctuation of energy is 15 %
+        of the work done per revolution" (``dE_max = "15%"`` with ``work`` or ``power``) or
+        "the fluctuation of energy is 56 kN m" (``dE_max = "56 kN m"``; ``work`` or
+        ``power`` then give the mean torque)."""
+        for k in ("resisting", "angle", "unit", "area_unit", "area_scale", "shape"):
+            if k in spec:
+                raise self.err(f"{k}: not with dE_max (no diagram is given)", t, k)
+        if at is not None:
+            raise self.err("at: the acceleration at an angle needs the diagram", t, "at")
+        raw = spec["dE_max"]
+        cycle, cw = self._cycle(spec, t, 2 * math.pi)
+        words = []
+        ways = [k for k in ("work", "power") if k in spec]
+        if len(ways) > 1:
+            raise self.err("give the work of a cycle or the power: one of them", t, "power")
+        W = None
+        if ways:
+            W = self._cycle_work(spec, t, ways[0], cycle, words)
+        share = isinstance(raw, str) and raw.strip().endswith("%")
+        if share:
+            if W is None:
+                raise self.err(
+                    f"dE_max = {raw!r}: a part of the work of a cycle, which needs work = "
+                    '"111 kJ" or power = "185 kW" (at [flywheel] speed)',
+                    t,
+                    "dE_max",
+                )
+            ce = self.ld.qty(raw, "percent", t, "dE_max").value
+            if not 0 < ce < 10:
+                raise self.err(f"dE_max = {raw!r}: a part of the work, above 0", t, "dE_max")
+            dE = ce * W
+            words.append(
+                f"the maximum fluctuation of energy {ce:.6g} of the work of a cycle (the "
+                f"coefficient of fluctuation of energy): dE_max = {ce:.6g} x {W:.6g} = {dE:.6g} J"
+            )
+        else:
+            dE = self.ld.qty(raw, "energy", t, "dE_max").value
+            words.append(f"the maximum fluctuation of energy given: dE_max = {dE:.6g} J")
+        if not dE > 0:
+            raise self.err(f"dE_max = {raw!r}: the fluctuation must be positive", t, "dE_max")
+        words.append(f"no diagram: the energy's fluctuation is the book's statement; {cw}")
+        return Diagram("energy", cycle, words=tuple(words), fluctuation=dE, work=W)
+
+    def _cycle_work(self, spec, t, way, cycle, words) -> float:
+        """The net work of a cycle (J): ``work``, or ``power`` over a cycle's time at the
+        flywheel's mean speed."""
+        if way == "work":
+            W = self.ld.qty(spec["work"], "energy", t, "work").value
+            words.append(f"the net work of a cycle W = {W:.6g} J (given)")
+        else:
+            P = self.ld.qty(spec["power"], "power", t, "power").value
+            w = self._strokes_speed(t)
+            W = P * cycle / w
+            words.append(
+                f"the net work of a cycle W = P Theta / w = {P:.6g} x {cycle:.6g} / {w:.6g} = "
+                f"{W:.6g} J (the power over the time of one cycle at the mean speed)"
+            )
+        if not W > 0:
+            raise self.err("the net work of a cycle must be positive", t, way)
+        return W
 
     def _strokes_speed(self, t) -> float:
         """The mean speed (rad/s) that turns a power into a cycle's work: [flywheel]'s
