@@ -98,6 +98,8 @@ class Friction:
     "mu = 0.1 at the guide of B, 0.15 at the guide of A (no other guide's), 0.05 at the pins with a size in [pins]"
     >>> Friction(0.1, 0.05).words()
     'mu = 0.1 at the guides, 0.05 at the pins with a size in [pins]'
+    >>> Friction(0.1).words()
+    'mu = 0.1 at the guides, none at the pins'
     """
 
     guides: float = 0.0
@@ -136,11 +138,15 @@ class Friction:
             + " (no other guide's)"
             if self.at_guides
             else f"{self.guides:g} at the guides"
+            if self.guides
+            else "none at the guides"
         )
         p = (
             ", ".join(f"{mu:g} at pin {q}" for q, mu in self.at_pins) + " (no other pin's)"
             if self.at_pins
             else f"{self.pins:g} at the pins with a size in [pins]"
+            if self.pins
+            else "none at the pins"
         )
         return f"mu = {g}, {p}"
 
