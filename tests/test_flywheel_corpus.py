@@ -21,7 +21,7 @@ def test_the_corpus_holds_every_kind():
         c = solve_cycle(cycle_from_text(f.read_text(encoding="utf-8"), str(f)))
         kinds[c.form] = kinds.get(c.form, 0) + 1
     assert len(FILES) >= 10
-    assert set(kinds) == {"areas", "law", "table", "press"}
+    assert set(kinds) == {"areas", "law", "table", "press", "strokes", "energy"}
 
 
 @pytest.mark.parametrize("path", FILES, ids=[f.stem for f in FILES])

@@ -36,7 +36,7 @@ def _slips(sol, full, correct):
     out = []
     key, piston = split_key(full)
     fr = sc.friction
-    if fr is not None and (fr.guides or fr.pins) and key in _INSTANT:
+    if fr is not None and fr.active and key in _INSTANT:
         try:  # the books' F_P = F_L - F_I - R_F: the friction's part left out
             v = engine_value(sol, full, replace(sc, friction=Friction(0.0, 0.0)))
         except PolygonMethodError:

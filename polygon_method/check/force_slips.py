@@ -142,7 +142,7 @@ def _ratio_inverted(d, centre, signed) -> list:
 
 def _friction_left_out(sc, redo) -> None:
     """With friction: the answer solved again without it (``redo`` adds the candidate)."""
-    if sc.friction is not None and (sc.friction.guides or sc.friction.pins):
+    if sc.friction is not None and sc.friction.active:
         redo(
             "the friction left out (mu |N| at the slides, the friction circles' couples mu r "
             "|F| at the pins: against the sliding and the turning, the driver overcomes them)",
@@ -205,7 +205,7 @@ def _effort_slips(d, kind, signed, again) -> list:
     so; where the problem has weights, or for a second input, which no power balance
     gives), and a force along a guide given as another force at its block."""
     sol, sc, out = d.sol, d.sc, []
-    frictionless = sc.friction is None or not (sc.friction.guides or sc.friction.pins)
+    frictionless = sc.friction is None or not sc.friction.active
     massless = not sc.masses and sc.gravity is None  # (the loads' balance: friction left out)
     if (
         kind in ("torque", "force")

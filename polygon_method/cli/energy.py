@@ -191,6 +191,7 @@ def _page(args, scene) -> int:
         raise PolygonMethodError(
             f"cannot write the page to {out}: the file name must end in .html", key="-o"
         )
+    _drawn(scene, "-o")
     n = check_frames(180 if args.frames is None else args.frames)
     answers_file = getattr(args, "answers", None)
     targets = check_outputs([(out, "-o")], protect=[scene.file, answers_file])
@@ -214,9 +215,21 @@ def _page(args, scene) -> int:
     return 0
 
 
+def _drawn(scene, key) -> None:
+    """Refused: a drawing of a scene that states the fluctuation of energy alone (no
+    diagram to draw)."""
+    if scene.diagram is not None and scene.diagram.form == "energy":
+        raise PolygonMethodError(
+            "the maximum fluctuation of energy is given, not the turning-moment diagram: "
+            "nothing to draw (solve, steps and check read it)",
+            key=key,
+        )
+
+
 def _sheet(scene, out, key) -> int:
     from ..draw.energy import cycle_sheet
 
+    _drawn(scene, key)
     fmt = out.suffix.lower().lstrip(".")
     if fmt not in ("svg", "png", "pdf"):
         raise PolygonMethodError(
@@ -281,9 +294,10 @@ def _sweep(args, scene) -> int:
 def _csv(scene, out, n) -> None:
     from ..forces.flywheel_cycle import curves
 
-    if scene.diagram is None or scene.diagram.form == "areas":
+    if scene.diagram is None or scene.diagram.form in ("areas", "energy"):
         raise PolygonMethodError(
-            "the diagram is given as areas (or a press): no curve to tabulate over the crank angle",
+            "the diagram is given as areas (or a press, or its fluctuation of energy alone): "
+            "no curve to tabulate over the crank angle",
             key="--csv",
         )
     to_stdout = is_stdout(out)  # the CSV on standard output (-, /dev/stdout)

@@ -132,7 +132,17 @@ UNITS: dict[str, dict[str, float]] = {
         "lb ft^2": 0.45359237 * 0.3048**2,
         "lb in^2": 0.45359237 * 0.0254**2,
     },
-    "energy": {"J": 1.0, "kJ": 1e3, "N m": 1.0, "N·m": 1.0, "kN m": 1e3, "kN·m": 1e3},
+    "energy": {
+        "J": 1.0,
+        "kJ": 1e3,
+        "MJ": 1e6,
+        "N m": 1.0,
+        "N·m": 1.0,
+        "kN m": 1e3,
+        "kN·m": 1e3,
+        "MN m": 1e6,
+        "MN·m": 1e6,
+    },
     "pressure": {
         "Pa": 1.0,
         "N/m^2": 1.0,

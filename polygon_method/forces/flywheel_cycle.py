@@ -206,7 +206,7 @@ def solve_cycle(scene) -> "CycleEnergy":
     else:
         d = scene.diagram
         words += list(d.words)
-        base = _areas(d) if d.form == "areas" else _curve(d)
+        base = _areas(d) if d.form == "areas" else _given(d) if d.form == "energy" else _curve(d)
     return _flywheel(scene, base, words)
 
 
@@ -231,6 +231,24 @@ def _areas(d) -> dict:
         i_max=int(np.argmax(e)),
         i_min=int(np.argmin(e)),
         dE_max=max(e) - min(e),
+    )
+
+
+def _given(d) -> dict:
+    """The book's energy alone (no diagram): dE_max as given, the mean torque from the work
+    of a cycle where it is known; the energy least at a and greatest at b, where they are
+    the diagram does not say (no angles)."""
+    dE = d.fluctuation
+    return dict(
+        form="energy",
+        cycle=d.cycle,
+        T_mean=None if d.work is None else d.work / d.cycle,
+        work=d.work,
+        areas=(),
+        crossings=tuple(Crossing(x, None, e) for x, e in zip("aba", (0.0, dE, 0.0))),
+        i_max=1,
+        i_min=0,
+        dE_max=dE,
     )
 
 

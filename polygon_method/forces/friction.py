@@ -81,26 +81,29 @@ def loads(scene, motion, pins, guides) -> tuple:
     (each term's); the frame's share too (the shaking force and moment count it)."""
     fr = scene.friction
     out = []
-    if fr.guides:
+    if fr.any_guides:
         for g in guides:
             X = g.point
+            mu = fr.guide(X)
+            if not mu:
+                continue
             vx, vy = motion.V[X]
             gx, gy = _guide_velocity(scene, motion, g.by, X)
             ux, uy = g.n[1], -g.n[0]  # along the guide
             vs = (vx - gx) * ux + (vy - gy) * uy
-            f = -fr.guides * abs(g.normal) * sgn(vs)
+            f = -mu * abs(g.normal) * sgn(vs)
             x, y = motion.P[X]
             what = f"friction at the guide of {X}"
             out.append((block(X), what, (f * ux, f * uy), (x, y)))
             out.append((g.by, what, (-f * ux, -f * uy), (x, y)))  # (the frame: shaking)
-    if fr.pins:
+    if fr.any_pins:
         radius = {p.point: p.radius for p in scene.pins}
         for p in pins:
             r = radius.get(p.point)
-            if r is None:
+            if r is None or not fr.pin(p.point):
                 continue
             rel = _omega(scene, motion, p.on) - _omega(scene, motion, p.by)
-            c = -fr.pins * r * vhypot(p.force[0], p.force[1]) * sgn(rel)
+            c = -fr.pin(p.point) * r * vhypot(p.force[0], p.force[1]) * sgn(rel)
             what = f"friction at pin {p.point}"
             for body, cc in ((p.on, c), (p.by, -c)):
                 out.append((_turner(scene, body), what, cc))

@@ -213,7 +213,7 @@ class Summary:
             # column's words say "with inertia", as they are where the mechanism moves)
             still = self.scene.at_rest and not self.scene.start_alpha
             sc = self.scene  # a static analysis (no body massive): the loads (and friction)
-            fr = sc.friction is not None and (sc.friction.guides or sc.friction.pins)
+            fr = sc.friction is not None and sc.friction.active
             massless = not sc.masses and sc.gravity is None
             for e in self.extremes:
                 what = e.what.replace("with inertia", "at rest: the loads alone, no inertia")

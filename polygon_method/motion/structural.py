@@ -120,8 +120,8 @@ def _pin_warnings(sc) -> list:
     friction circle, where friction acts at the pins, past that link's length."""
     out = []
     u, unit = sc.length_unit, sc.units
-    mu = sc.friction.pins if sc.friction is not None else 0.0
     for pin in sc.pins:
+        mu = sc.friction.pin(pin.point) if sc.friction is not None else 0.0
         links = [lk for lk in sc.links if pin.point in (lk.p, lk.q)]
         if not links:
             continue

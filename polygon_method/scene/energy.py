@@ -20,7 +20,9 @@ import tomllib
 
 from ..common.errors import SceneError
 from ..common.units import UNITS, did_you_mean
+from .energy_areas import _AreasReader
 from .energy_flywheel import CYCLE_ANSWERS, _RimReader
+from .energy_strokes import _StrokesReader
 from .energy_press import _PressReader
 from .energy_records import CycleScene, Diagram, Law, Table
 from .source import syntax_error, toml_table
@@ -54,9 +56,6 @@ _TOP = (
     "variants",
     "variant",
 )
-#: the most areas a turning-moment diagram may give: each is drawn as a lobe with its
-#: value, lettered at its crossings and a row of the table (100000 took minutes to draw)
-MAX_AREAS = 100
 
 _MECHANISM = ("ground", "links", "input", "sliders", "points", "indicator", "masses")
 _TM_KEYS = (
@@ -70,8 +69,13 @@ _TM_KEYS = (
     "angle",
     "cycle",
     "at",
+    "strokes",
+    "power",
+    "work",
+    "shape",
+    "area_scale",
+    "dE_max",
 )
-_SCALE = re.compile(r"^\s*([0-9.]+)\s*(mm|cm)\s*=\s*(.+?)\s*$")
 _TOKEN = re.compile(
     r"\s*(?:(?P<num>(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)|(?P<word>sin|cos|theta|θ|deg|°|rad)"
     r"|(?P<op>[-+*/()]))"
@@ -271,7 +275,7 @@ def _argument(toks, i):
     return k, phi, i
 
 
-class _CycleReader(_RimReader, _PressReader):
+class _CycleReader(_RimReader, _PressReader, _AreasReader, _StrokesReader):
     """Reads a :class:`CycleScene` with a mechanism reader's location helpers ``ld``."""
 
     def __init__(self, ld):
@@ -357,18 +361,29 @@ class _CycleReader(_RimReader, _PressReader):
         t = "turning_moment"
         spec = self.ld.table(t)
         self._keys(spec, t, _TM_KEYS)
-        has = [k for k in ("areas", "torque") if k in spec]
+        has = [k for k in ("areas", "torque", "strokes", "dE_max") if k in spec]
         if len(has) != 1:
             raise self.err(
-                "give the areas between the diagram and the mean line (areas = [...]) or "
+                "give the areas between the diagram and the mean line (areas = [...]), "
                 'the turning moment (torque = "1000 + 300 sin 2theta", or a table with '
-                "angle = [...]): one of them",
+                "angle = [...]), each stroke's work (strokes = [0, -1, 3, 0]) or the "
+                'fluctuation of energy alone (dE_max = "15%" of the work of a cycle): one of '
+                "them",
                 t,
                 has[1] if has else "torque",
             )
         at = None
         if "at" in spec:
             at = self.ld.qty(spec["at"], "angle", t, "at", default_unit="deg").value
+        if "strokes" in spec:
+            return self._strokes(spec, t, at)
+        if "dE_max" in spec:
+            return self._fluctuation(spec, t, at)
+        for k in ("power", "work", "shape", "area_scale"):
+            if k in spec:
+                raise self.err(
+                    f"{k}: only with strokes = [...] (each stroke's work) or dE_max", t, k
+                )
         if "areas" in spec:
             for k in ("torque", "resisting", "angle", "unit", "at"):
                 if k in spec:
@@ -510,90 +525,5 @@ class _CycleReader(_RimReader, _PressReader):
             tuple(v * k for v in tq),
             f"{len(ang)} readings",
         )
-
-    def _areas(self, spec, t) -> Diagram:
-        xs = spec["areas"]
-        if isinstance(xs, list) and len(xs) > MAX_AREAS:  # each is a lobe, a letter, a row
-            raise self.err(
-                f"{len(xs)} areas: at most {MAX_AREAS} (a book's diagram has a dozen; a "
-                "diagram read at many angles is angle = [...] and torque = [...])",
-                t,
-                "areas",
-            )
-        if (
-            not isinstance(xs, list)
-            or len(xs) < 2
-            or not all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in xs)
-            or not all(math.isfinite(v) and v != 0 for v in xs)
-        ):
-            raise self.err(
-                "areas = [+52, -124, ...]: at least two areas, in order, above the mean line "
-                "positive, none zero",
-                t,
-                "areas",
-            )
-        unit = spec.get("area_unit", "mm^2")
-        words = []
-        if unit in ("mm^2", "mm2", "mm²", "cm^2", "cm2", "cm²"):
-            per = self._per_area(spec, t, unit)
-            words.append(
-                f"1 {unit} of the diagram = {per:.6g} J (the torque scale times the angle "
-                "scale in rad)"
-            )
-            mm2 = tuple(float(v) for v in xs)
-        elif isinstance(unit, str) and unit in UNITS["energy"]:
-            for k in ("torque_scale", "angle_scale"):
-                if k in spec:
-                    raise self.err(f"{k}: not with areas in {unit} (energies)", t, k)
-            per, mm2 = UNITS["energy"][unit], ()
-            words.append(f"the areas given as energies in {unit}")
-        else:
-            raise self.err(
-                f'area_unit = {unit!r}: "mm^2" (with torque_scale and angle_scale) or an '
-                "energy unit (" + ", ".join(UNITS["energy"]) + ")",
-                t,
-                "area_unit",
-            )
-        areas = tuple(float(v) * per for v in xs)
-        scale = max(abs(a) for a in areas)
-        if scale > 1e12:
-            raise self.err("an energy beyond 1e12 J is absurd; check the scales", t, "areas")
-        net = math.fsum(xs) * per  # the numbers as the book gives them, summed exactly
-        if abs(net) <= ROUNDING * scale:
-            net = 0.0  # (the rounding of their energies, not the book's)
-        if abs(net) > 0.02 * scale:
-            raise self.err(
-                f"the areas add up to {net:.4g} J, not nought: over a cycle the energy the "
-                "engine gives above the mean equals what it takes below (check the signs)",
-                t,
-                "areas",
-            )
-        if net != 0:
-            words.append(f"the areas add up to {net:.4g} J (the book's rounding), not nought")
-        cycle, w = self._cycle(spec, t, 2 * math.pi)
-        words.append(w)
-        return Diagram(
-            "areas", cycle, areas=areas, mm2=mm2, per_mm2=per if mm2 else None, words=tuple(words)
-        )
-
-    def _per_area(self, spec, t, unit) -> float:
-        side = 1e-3 if unit.startswith("mm") else 1e-2  # the paper's unit, m
-        vals = []
-        for key, kind in (("torque_scale", "torque"), ("angle_scale", "angle")):
-            raw = spec.get(key)
-            m = _SCALE.match(raw) if isinstance(raw, str) else None
-            if m is None:
-                example = "1 mm = 70 N m" if kind == "torque" else "1 mm = 4.5 deg"
-                raise self.err(
-                    f'{key} = "{example}": the diagram\'s scale, with areas in {unit}', t, key
-                )
-            paper = float(m.group(1)) * (1e-3 if m.group(2) == "mm" else 1e-2)
-            if not paper > 0:
-                raise self.err(f"{key}: the paper's length must be positive", t, key)
-            q = self.ld.qty(m.group(3), kind, t, key).value
-            if not q > 0:
-                raise self.err(f"{key}: the scale must be positive", t, key)
-            vals.append(q / (paper / side))
-        return vals[0] * vals[1]
 
     # -- [press]

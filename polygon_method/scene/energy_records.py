@@ -109,10 +109,12 @@ class Diagram:
     """A turning-moment diagram over ``cycle`` rad of the crank. ``form`` is "areas"
     (``areas``: the energies between the diagram and the mean line, J, in order, positive
     above it; ``mm2``: the same as the book's mm^2 where it gave them, and ``per_mm2`` the
-    energy of one mm^2, J) or "law" / "table" (``driving``: the engine's turning moment, a
+    energy of one mm^2, J) or "law" / "table" / "strokes" (``driving``: the engine's turning moment, a
     :class:`Law` or :class:`Table`; ``resisting``: the machine's, one of the same, or None:
-    constant at the mean). ``at``: a crank angle (rad) where the angular acceleration is
-    asked, or None. ``words``: how each item was read, the defaults named."""
+    constant at the mean), or "energy" (the maximum fluctuation of energy given, alone or
+    as a part of the work of a cycle: no diagram). ``at``: a crank angle (rad) where the
+    angular acceleration is asked, or None. ``words``: how each item was read, the defaults
+    named."""
 
     form: str
     cycle: float
@@ -123,6 +125,10 @@ class Diagram:
     resisting: object = None
     at: float | None = None
     words: tuple = ()
+    #: form "energy" (no diagram, the book's statement of the energy alone): the maximum
+    #: fluctuation of energy given (J), and the net work of a cycle where known (J)
+    fluctuation: float | None = None
+    work: float | None = None
 
 
 @dataclass(frozen=True)

@@ -84,10 +84,71 @@ class Friction:
     """Coulomb friction for the force analysis (``[friction]``): ``guides``, the
     coefficient at every sliding guide (the friction ``mu |N|`` opposing the block's
     sliding), ``pins``, the coefficient at every pin with a size in ``[pins]`` (the friction
-    circle of radius ``mu r``: a couple ``mu r |F|`` opposing the relative turning)."""
+    circle of radius ``mu r``: a couple ``mu r |F|`` opposing the relative turning).
+
+    A book that gives each guide or pin its own coefficient ("0.1 at the slide, 0.15 in the
+    slot of the lever") gives a table (``guides = { B = 0.1, A = 0.15 }``): ``at_guides``
+    and ``at_pins`` are its (point, mu) pairs, and a guide or pin the table does not name has
+    none (``guides``/``pins`` are then 0).
+
+    >>> f = Friction(pins=0.05, at_guides=(("B", 0.1), ("A", 0.15)))
+    >>> f.guide("A"), f.guide("Q"), f.pin("O"), f.active
+    (0.15, 0.0, 0.05, True)
+    >>> f.words()
+    "mu = 0.1 at the guide of B, 0.15 at the guide of A (no other guide's), 0.05 at the pins with a size in [pins]"
+    >>> Friction(0.1, 0.05).words()
+    'mu = 0.1 at the guides, 0.05 at the pins with a size in [pins]'
+    >>> Friction(0.1).words()
+    'mu = 0.1 at the guides, none at the pins'
+    """
 
     guides: float = 0.0
     pins: float = 0.0
+    at_guides: tuple = ()
+    at_pins: tuple = ()
+
+    def guide(self, point: str) -> float:
+        """The coefficient at the guide of the block at ``point``."""
+        return dict(self.at_guides).get(point, self.guides)
+
+    def pin(self, point: str) -> float:
+        """The coefficient at the pin ``point`` (with a size in ``[pins]``)."""
+        return dict(self.at_pins).get(point, self.pins)
+
+    @property
+    def any_guides(self) -> bool:
+        """Whether any guide has friction."""
+        return bool(self.guides or any(mu for _, mu in self.at_guides))
+
+    @property
+    def any_pins(self) -> bool:
+        """Whether any pin has friction."""
+        return bool(self.pins or any(mu for _, mu in self.at_pins))
+
+    @property
+    def active(self) -> bool:
+        """Whether any guide or pin has friction (not all coefficients nought)."""
+        return self.any_guides or self.any_pins
+
+    def words(self) -> str:
+        """The coefficients as stated: "mu = 0.1 at the guides, 0.05 at the pins with a
+        size in [pins]", or each named guide's and pin's."""
+        g = (
+            ", ".join(f"{mu:g} at the guide of {p}" for p, mu in self.at_guides)
+            + " (no other guide's)"
+            if self.at_guides
+            else f"{self.guides:g} at the guides"
+            if self.guides
+            else "none at the guides"
+        )
+        p = (
+            ", ".join(f"{mu:g} at pin {q}" for q, mu in self.at_pins) + " (no other pin's)"
+            if self.at_pins
+            else f"{self.pins:g} at the pins with a size in [pins]"
+            if self.pins
+            else "none at the pins"
+        )
+        return f"mu = {g}, {p}"
 
 
 def rolling_body(scene, names) -> str:

@@ -13,6 +13,7 @@ from ..common.errors import SceneError
 from ..common.tolerances import ROUNDING
 from ..common.units import UNITS, Quantity, did_you_mean
 from .records import Friction, Gravity, Mass, split_name
+from .pendulum import PENDULUM_KEYS, swing_inertia
 from .table_help import _unit_at
 
 #: the g of a book (m/s^2), when [gravity] does not give its own
@@ -33,7 +34,7 @@ _LINK_KEYS = (
     "inertia",
     "gyration",
     "about",
-)
+) + PENDULUM_KEYS
 
 
 class _Masses:
@@ -163,15 +164,7 @@ class _Masses:
             if any(o.body == link.key for o in out):
                 raise self.error(f"link {link.key} has a mass already", "masses", name)
             lam, mu, where, centre = self._centre(spec, link, pts, carried, name)
-            if per is not None:  # "the links weigh 20 N/m": a uniform bar, m = w L
-                m, said = self._uniform(spec, per, m, link, name)
-                inertia = m * link.length**2 / 12.0
-                if "inertia" in spec or "gyration" in spec:
-                    inertia, said = self._inertia(spec, m, name)
-            else:
-                inertia, said = self._inertia(spec, m, name)
-            if "about" in spec:  # "I about the crank shaft's axis O": the parallel axes
-                inertia, said = self._about(spec, link, m, lam, mu, inertia, said, name)
+            inertia, said, m = self._link_inertia(spec, per, m, link, (lam, mu), name)
             out.append(
                 Mass(
                     link.key,
@@ -184,6 +177,26 @@ class _Masses:
                 )
             )
         return out
+
+    def _link_inertia(self, spec, per, m, link, at, name) -> tuple:
+        """(I_G, words, the mass) of a link: a uniform bar's from its mass per length, the
+        given inertia or gyration (about G, or about an end: the parallel axes), or its swing
+        as a compound pendulum (:mod:`.pendulum`)."""
+        lam, mu = at
+        swing = any(k in spec for k in PENDULUM_KEYS)
+        if per is not None:  # "the links weigh 20 N/m": a uniform bar, m = w L
+            m, said = self._uniform(spec, per, m, link, name)
+            inertia = m * link.length**2 / 12.0
+            if "inertia" in spec or "gyration" in spec:
+                inertia, said = self._inertia(spec, m, name)
+        if swing:  # "it makes 21 complete oscillations in 40 seconds"
+            g = (self.gravity() or Gravity(STANDARD_G, None, "")).g
+            return (*swing_inertia(self, spec, link, m, lam, mu, name, g), m)
+        if per is None:
+            inertia, said = self._inertia(spec, m, name)
+        if "about" in spec:  # "I about the crank shaft's axis O": the parallel axes
+            inertia, said = self._about(spec, link, m, lam, mu, inertia, said, name)
+        return inertia, said, m
 
     def _centre(self, spec, link, pts, carried, name):
         """(lam, mu, words, named point or None) of a link's centre of mass."""
@@ -333,12 +346,16 @@ class _Masses:
         )
         return Gravity(g, u, text)
 
-    def friction(self, pins):
-        """[friction]: None without the table (frictionless, as the books start)."""
+    def friction(self, pins, sliders=()):
+        """[friction]: None without the table (frictionless, as the books start). Each of
+        ``guides`` and ``pins`` a coefficient for all, or a table of each guide's (by its
+        block's point) or each pin's own."""
         if "friction" not in self.raw:
             return None
         spec = self.table("friction")
         out = {}
+        sized = {p.point for p in pins}
+        blocks = {s.point for s in sliders}
         for k, v in spec.items():
             if k not in ("guides", "pins"):
                 raise self.error(
@@ -347,14 +364,11 @@ class _Masses:
                     "friction",
                     k,
                 )
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or not 0 <= v < 1:
-                raise self.error(
-                    f"{k} = {v!r}: a coefficient of friction, a number from 0 up to (not) 1",
-                    "friction",
-                    k,
-                )
-            out[k] = float(v)
-        if out.get("pins") and not pins:
+            if isinstance(v, dict):
+                out["at_" + k] = self._each_friction(k, v, blocks if k == "guides" else sized)
+                continue
+            out[k] = self._coefficient(k, v)
+        if (out.get("pins") or out.get("at_pins")) and not pins:
             raise self.error(
                 "friction at the pins needs their sizes: give [pins] (each pin's "
                 "diameter or radius: the friction circle's radius is mu r)",
@@ -362,6 +376,33 @@ class _Masses:
                 "pins",
             )
         return Friction(**out)
+
+    def _coefficient(self, k, v, name=""):
+        if isinstance(v, bool) or not isinstance(v, (int, float)) or not 0 <= v < 1:
+            raise self.error(
+                f"{name or k} = {v!r}: a coefficient of friction, a number from 0 up to (not) 1",
+                "friction",
+                k,
+            )
+        return float(v)
+
+    def _each_friction(self, k, table, names) -> tuple:
+        """``guides = { B = 0.1, A = 0.15 }``: each guide's coefficient by its block's point
+        (each pin's by its name in [pins]); a name that is none of them is refused."""
+        out = []
+        for name, v in table.items():
+            if name not in names:
+                what = (
+                    "a sliding block's point (the guide of the block there)"
+                    if k == "guides"
+                    else "a pin with a size in [pins]"
+                )
+                have = ", ".join(sorted(names)) or "none"
+                raise self.error(
+                    f"{k}: '{name}' is not {what}; the scene has {have}", "friction", k
+                )
+            out.append((name, self._coefficient(k, v, f"{k}.{name}")))
+        return tuple(out)
 
 
 def _did_you_mean(word, choices=_LINK_KEYS) -> str:

@@ -48,6 +48,9 @@ def links_from_teeth(rd, index, ground):
                 f"[links] {key} not given: its length the pitch radius from the teeth, "
                 f"{' = '.join(formula(mod[0], mod[2], z))} = {_say(rd, radius[pair])}"
             )
+        elif z is not None and (r := _by_centres(rd, key, spec, pts, (entries, index, ground))):
+            radius[pair] = r
+            added.append((key, *pts, r))
         elif z is not None:
             raise rd.error(
                 f"no link {key} in [links] and no module to make its length from its "
@@ -61,6 +64,49 @@ def links_from_teeth(rd, index, ground):
     for key, p, q, r in drivers:
         radius[frozenset((p, q))] = r
     return _arms(rd, entries, (index, radius, table, ground)) + drivers + added
+
+
+def _by_centres(rd, key, spec, pts, known):
+    """A gear's pitch radius without a module (None where this does not fix it): its teeth
+    z and its mate's z_o (``on_teeth``, or the teeth of the mate's own entry) in the ratio
+    of the radii, and the distance d of the two centres (a stated arm joining them, or two
+    fixed points): d z / (z + z_o) outside, d z / (z_o - z) inside a ring, d z / (z - z_o)
+    for the ring itself; said in a note."""
+    entries, index, ground = known
+    on = spec.get("on")
+    if not isinstance(on, str) or "module" in spec or "diametral_pitch" in spec:
+        return None
+    z = _count(rd, spec, "teeth", key)
+    zo = _count(rd, spec, "on_teeth", key)
+    mate = split_name(on)
+    if zo is None:
+        zo = next(
+            (
+                _count(rd, s, "teeth", k)
+                for k, s, p in entries
+                if frozenset(p) == frozenset(mate) and "teeth" in s
+            ),
+            None,
+        )
+    if z is None or zo is None or len(mate) not in (1, 2):
+        return None
+    a, b = pts[0], mate[0] if len(mate) == 1 else mate[0]
+    if a in ground and b in ground:
+        d = ((ground[a][0] - ground[b][0]) ** 2 + (ground[a][1] - ground[b][1]) ** 2) ** 0.5
+    elif frozenset((a, b)) in index:
+        d = index[frozenset((a, b))].length
+    else:
+        return None
+    ring, inside = spec.get("ring") is True, spec.get("inside") is True
+    den = z - zo if ring else zo - z if inside else z + zo
+    if not den > 0 or not d > 0:
+        return None
+    r = d * z / den
+    rd.read_notes.append(
+        f"[links] {key} not given: its length the pitch radius, {_say(rd, r)} (the module "
+        f"not given: from the centre distance {a}{b} and the teeth, d z / {den})"
+    )
+    return r
 
 
 def _drivers(rd, entries, index, table):

@@ -24,6 +24,8 @@ _FORMS = {
     "areas": "the turning-moment diagram given as its areas above and below the mean line",
     "law": "the turning moment given as a law of the crank angle",
     "table": "the turning moment given as straight segments",
+    "strokes": "the turning moment given by each stroke's work, a triangle on its half turn",
+    "energy": "the maximum fluctuation of energy given (no diagram)",
     "press": "a punching press",
 }
 
@@ -92,7 +94,7 @@ def answer_lines(c) -> list:
     """The answers of ``solve``'s words, a line each (the page lists them)."""
     lines = _summary(c)
     e_max, e_min = c.crossings[c.i_max], c.crossings[c.i_min]
-    if c.form != "press":
+    if c.form not in ("press", "energy"):  # (the energy alone gives no angles)
         lines.append(
             f"  the energy greatest at {_where(e_max)}, least at {_where(e_min)} (the speed "
             "greatest and least there)"
@@ -124,6 +126,16 @@ def cycle_steps(scene, c) -> str:
             f"power E / t = {_g(c.power)} W."
         )
         k += 1
+    elif c.form == "energy":
+        out.append(f"{k}. The maximum fluctuation of energy, as the book states it:")
+        out += [f"   {w}" for w in c.words]
+        k += 1
+        if c.T_mean is not None:
+            out.append(
+                f"{k}. The mean torque T_mean = W / {math.degrees(c.cycle):g} deg = "
+                f"{_g(c.work)} J / {c.cycle:.6g} rad = {_g(c.T_mean)} N m."
+            )
+            k += 1
     else:
         out.append(f"{k}. {_FORMS[c.form][0].upper() + _FORMS[c.form][1:]}:")
         for w in c.words:

@@ -45,8 +45,9 @@ def engine_lines(sol) -> list:
     # at rest and not starting: nothing moves, so no inertia (said so)
     parts = "weight (at rest: no inertia)" if holding(sol.scene) else "inertia and weight"
     fr = sol.scene.friction
-    if fr is not None and fr.guides:  # the books' F_P = F_L - F_I - R_F
-        parts += f", with the guide's friction {fr.guides:g} F_N against its sliding"
+    mu = fr.guide(e.piston) if fr is not None else 0.0
+    if mu:  # the books' F_P = F_L - F_I - R_F
+        parts += f", with the guide's friction {mu:g} F_N against its sliding"
     return [
         f"engine: piston effort F_P = {q(e.F_P)} N (along the line of stroke, towards "
         f"the crank: the gas force and the reciprocating parts' {parts}); "

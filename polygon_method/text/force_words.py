@@ -120,7 +120,7 @@ def known_words(sc) -> str:
         parts.append("the weight")
     parts.append("the loads")
     fr = sc.friction
-    if fr is not None and (fr.guides or fr.pins):  # (their sizes from the forces found)
+    if fr is not None and fr.active:  # (their sizes from the forces found)
         parts.append(
             "the friction (mu |N| at the guides, the couples mu r |F| at the pins, from the "
             "forces found, the walk repeated until they settle)"
@@ -142,3 +142,16 @@ def symbol_words(sc) -> str:
         ["W_3 its weight" if inertia else "W_3 the weight of 3"] if weight else []
     )
     return "".join(f", {w}" for w in words)
+
+
+def outside_words(sc) -> str:
+    """After the shaking force and moment: where loads act from off the frame (a machine
+    resisting the output, a cutting force), their reactions are on what applies them, not
+    on this frame, so the shaking sums are theirs with the inertia's ("" where none does: a
+    gas force's reaction is on the cylinder's cover, the frame, and is counted)."""
+    if not any(getattr(ld, "gas", None) is None for ld in sc.loads):
+        return ""
+    return (
+        " (the loads act from off the frame: their reactions are on what applies them, so "
+        "the shaking sums are the loads' with the weights' and the inertia's)"
+    )

@@ -19,7 +19,8 @@ from ..common.numbers import fmt, quiet, sense_word
 from ..common.tolerances import FLOOR
 from .force_polygons import body_name as _body, polygon_items as _polygon_items
 from .force_engine import engine_lines, scales as _scales
-from .force_words import acting, holding, known_words, rest_blocks, start_words, symbol_words
+from .force_words import acting, holding, known_words, outside_words, rest_blocks, start_words
+from .force_words import symbol_words
 
 __all__ = ["forces_lines", "force_blocks", "bound_lines", "engine_lines"]
 
@@ -63,8 +64,7 @@ def _friction_lines(sol, f, F, M) -> list:
     if fr is None:
         return []
     out = [
-        f"friction (Coulomb: mu = {fr.guides:g} at the guides, {fr.pins:g} at the pins "
-        "with a size in [pins], the friction circle mu r; "
+        f"friction (Coulomb: {fr.words()}{', the friction circle mu r' * fr.any_pins}; "
         + (
             "at rest, the limiting static friction against the motion about to start, "
             "the effort to start it):"
@@ -237,7 +237,7 @@ def forces_lines(sol) -> list:
     )
     out.append(
         f"shaking force on the frame: {_vec(f.shaking_force, F)}; shaking moment "
-        f"about the origin: {_moment(f.shaking_moment, M)}"
+        f"about the origin: {_moment(f.shaking_moment, M)}" + outside_words(sol.scene)
     )
     out += engine_lines(sol)
     for st in f.steps:

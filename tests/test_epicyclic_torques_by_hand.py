@@ -1,0 +1,116 @@
+"""Epicyclic trains of the gear-train chapter asked for torques: Khurmi's train driven by its
+sun with the annulus held (its teeth and the carrier's arm given, no module: the pitch radii
+from the centre distance), and Rattan's compound planet. Held to Willis' formula and the
+train's torques summing to nought, by hand in exact fractions, and to the tooth loads by
+each gear's moments (the planet's moments about its centre)."""
+
+from __future__ import annotations
+
+from fractions import Fraction as Q
+from pathlib import Path
+
+import pytest
+
+from polygon_method import load_scene, solve
+from polygon_method.cli import main
+
+HERE = Path(__file__).resolve().parent / "textbook"
+SUN = HERE / "khurmi_epicyclic_sun_driven_annulus_held.toml"
+COMPOUND = HERE / "rattan_compound_planet_holding.toml"
+RPM = 3.141592653589793 / 30
+REL = 1e-12
+
+
+def test_sun_driven_annulus_held_by_willis_and_the_torques():
+    zs, zp, ze = 16, 24, 64
+    ws = Q(1000)  # rpm ccw
+    wc = ws / (1 + Q(ze, zs))  # Willis, the annulus at rest
+    wp = wc * (1 - Q(ze, zp))  # (omega_P - omega_C) / (0 - omega_C) = z_E / z_P
+    tc = -Q(100) * ws / wc  # the power balance: the carrier's machine
+    held = -(Q(100) + tc)  # the three torques sum to nought
+    assert (wc, wp, tc, held) == (200, Q(-1000, 3), -500, 400)
+    sol = solve(load_scene(SUN))
+    assert sol.W["OA"] == pytest.approx(float(wc) * RPM, rel=REL)
+    assert sol.W["AP"] == pytest.approx(float(wp) * RPM, rel=REL)
+    assert sol.value("torque", ()) == pytest.approx(float(tc), rel=1e-9)
+    assert sol.value("Thold", ("O",)) == pytest.approx(float(held), rel=1e-9)
+    # the pitch radii from the arm (100 mm) and the teeth: d z / (z_E - z_P), d z / (z + z_P)
+    d = Q(1, 10)
+    assert {lk.key: lk.length for lk in sol.scene.links}["AP"] == pytest.approx(
+        float(d * zp / (ze - zp)), rel=REL
+    )
+    assert {lk.key: lk.length for lk in sol.scene.links}["O-S"] == pytest.approx(
+        float(d * zs / (zs + zp)), rel=REL
+    )
+
+
+def test_compound_planet_by_willis_and_the_planets_moments():
+    za, zb, zc, zd, m = 40, 20, 30, 30, Q(4, 1000)
+    assert za + zb == zc + zd  # coaxial
+    wa = Q(700)
+    wd = wa * (1 - Q(za, zb) * Q(zc, zd))  # Willis, A at rest
+    t_arm = -Q(100) * wd / wa  # 100 N m ccw on D
+    # by the teeth: D's tangential load at C, the planet's moments, A's torque
+    f_d = Q(100) / (m * zd / 2)
+    f_a = f_d * (m * zc / 2) / (m * zb / 2)
+    held = -f_a * (m * za / 2)
+    assert held == -(t_arm + 100) == -200
+    sol = solve(load_scene(COMPOUND))
+    assert sol.W["O-S"] == pytest.approx(float(wd) * RPM, rel=REL)
+    assert sol.value("torque", ()) == pytest.approx(float(t_arm), rel=1e-9)
+    assert sol.value("Thold", ("O",)) == pytest.approx(float(held), rel=1e-9)
+
+
+@pytest.mark.parametrize("scene", [SUN, COMPOUND])
+def test_every_view(scene, capsys, tmp_path):
+    for args in (
+        ["solve", scene],
+        ["solve", scene, "--json"],
+        ["steps", scene],
+        ["check", scene],
+        ["sweep", scene, "--summary"],
+        ["draw", scene, "-o", tmp_path / "d.svg"],
+        ["draw", scene, "--forces", "-o", tmp_path / "f.svg"],
+    ):
+        assert main([str(a) for a in args]) == 0, args
+    out = capsys.readouterr().out
+    assert "holds the" in out
+
+
+def test_no_module_and_no_arm_is_still_one_line(tmp_path, capsys):
+    text = SUN.read_text(encoding="utf-8").replace("[links]\nOA = 100\n", "")
+    bad = tmp_path / "bad.toml"
+    bad.write_text(text, encoding="utf-8")
+    assert main(["solve", str(bad)]) == 2
+    err = capsys.readouterr().err
+    assert "module" in err and len(err.strip().splitlines()) == 1
+
+
+def test_two_fixed_centres_no_module_no_links():
+    """Gears of 20 and 50 teeth on fixed centres 140 mm apart, neither in [links] nor a
+    module: r = d z / (z + z_o), 40 and 100 mm; omega3 = -omega2 20/50."""
+    from polygon_method import parse_scene
+
+    sol = solve(
+        parse_scene(
+            """units = "mm"
+[ground]
+O2 = [0, 0]
+O3 = [140, 0]
+[links]
+"O2-A" = 40
+[rolling]
+"O3-B" = { on = "O2-A", teeth = 50, on_teeth = 20 }
+[input]
+crank = "O2-A"
+angle = 0
+speed = "100 rpm cw"
+"""
+        )
+    )
+    lengths = {lk.key: lk.length for lk in sol.scene.links}
+    assert lengths["O3-B"] == pytest.approx(0.14 * 50 / 70, rel=REL)
+    assert sol.W["O3-B"] == pytest.approx(100 * RPM * 20 / 50, rel=REL)
+    assert any(
+        n.startswith("[links] O3-B not given: its length the pitch radius") for n in sol.notes
+    )
