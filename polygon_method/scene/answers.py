@@ -131,8 +131,10 @@ class _Answers(_AnswerNames, _Questions, _CycleAnswers):
         for k in value:
             line = line or self.line_of(table, k)
         return SceneError(
-            f"[answers] takes no table inside it: write each answer as a key = value line "
-            f"under [answers] itself (e.g. {next(iter(value), 'v_C')} = ...)",
+            printable(
+                "[answers] takes no table inside it: write each answer as a key = value "
+                f"line under [answers] itself (e.g. {next(iter(value), 'v_C')} = ...)"
+            ),
             file=self.file,
             key=printable(f"[{table}]"),
             line=line,
