@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -84,4 +85,48 @@ def test_the_command_line_says_it_in_one_line(tmp_path):
     )
     assert out.returncode == 2 and "Traceback" not in out.stderr
     assert out.stderr.count("\n") == 1 and "line 3" in out.stderr
+    assert "above the [answers] heading" in out.stderr
+
+
+FLYWHEEL = Path(__file__).resolve().parent.parent / "worked_problems" / "flywheel"
+
+
+@pytest.mark.parametrize(
+    "tail, says",
+    [
+        ('student = "Ann"\n', "above its [answers] heading"),
+        ('[answers.extra]\nT_mean = "1 N m"\n', "takes no table inside it"),
+    ],
+)
+def test_a_turning_moment_diagrams_answers_say_the_same(tmp_path, tail, says):
+    """The diagram's own [answers] reader keeps the one rule (scene/energy_flywheel.py)."""
+    text = (FLYWHEEL / "engine_areas_rim.toml").read_text().rstrip("\n") + "\n" + tail
+    path = tmp_path / "d.toml"
+    path.write_text(text)
+    out = subprocess.run(
+        [sys.executable, "-m", "polygon_method", "check", str(path)],
+        capture_output=True,
+        text=True,
+    )
+    want = len(text.splitlines()) - tail.count("\n") + 1
+    assert out.returncode == 2 and out.stderr.count("\n") == 1
+    assert says in out.stderr and f"(line {want})" in out.stderr
+
+
+def test_a_diagrams_answer_file_sends_the_student_above_the_heading(tmp_path):
+    ans = tmp_path / "ann.toml"
+    ans.write_text('[answers]\nT_mean = "1 N m"\nstudent = "Ann"\n')
+    out = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "polygon_method",
+            "check",
+            str(FLYWHEEL / "engine_areas_rim.toml"),
+            str(ans),
+        ],
+        capture_output=True,
+        text=True,
+    )
+    assert out.returncode == 2 and "line 3" in out.stderr
     assert "above the [answers] heading" in out.stderr

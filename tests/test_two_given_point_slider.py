@@ -92,6 +92,8 @@ def test_a_points_velocity_gives_the_second_cranks_speed():
     assert list(sol.V["C"]) == pytest.approx(list(vC), rel=1e-9, abs=1e-12)
     note = next(n for n in sol.notes if n.startswith("the two cranks' speeds are found"))
     assert "v_C" in note and "per rad/s of the crank AB" in note
+    (found,) = sol.to_dict()["input"]["found_from"]
+    assert found["direction"] == pytest.approx(list(vC / np.hypot(*vC)), rel=1e-12)
     assert not any("component along" in n and "deg from it" in n for n in sol.notes)
 
 

@@ -32,11 +32,12 @@ __all__ = [
     "CYCLE_ANSWERS",
     "unit_kind",
     "PAIR_ANSWER_KINDS",
+    "FILE_KEYS",
 ]
 
 #: a file's own keys (an answer file's, a scene's) -> what each is, an example: written
 #: inside [answers] they are said to belong above it
-_FILE_KEYS = {
+FILE_KEYS = {
     "student": ("the student's name", 'student = "A. Student"'),
     "name": ("the student's name", 'name = "A. Student"'),
     "variant": ("the student's variant", 'variant = "07"'),
@@ -118,7 +119,7 @@ class _Answers(_AnswerNames, _Questions, _CycleAnswers):
                 continue
             if isinstance(value, dict):  # [answers.extra], extra.v_C = ..., extra = {...}
                 raise self._sub_table(key, value)
-            if key in _FILE_KEYS:
+            if key in FILE_KEYS:
                 raise self._misplaced(key)
             out.append(self.answer(key, value, known, slider_names, pin_names, loads))
         return tolerance, out
@@ -131,8 +132,10 @@ class _Answers(_AnswerNames, _Questions, _CycleAnswers):
         for k in value:
             line = line or self.line_of(table, k)
         return SceneError(
-            f"[answers] takes no table inside it: write each answer as a key = value line "
-            f"under [answers] itself (e.g. {next(iter(value), 'v_C')} = ...)",
+            printable(
+                "[answers] takes no table inside it: write each answer as a key = value "
+                f"line under [answers] itself (e.g. {next(iter(value), 'v_C')} = ...)"
+            ),
             file=self.file,
             key=printable(f"[{table}]"),
             line=line,
@@ -141,7 +144,7 @@ class _Answers(_AnswerNames, _Questions, _CycleAnswers):
     def _misplaced(self, key):
         """The error for an answer file's own key (``student``, ``variant``) or a file's
         (``title``) written inside ``[answers]``: where it belongs."""
-        what, example = _FILE_KEYS[key]
+        what, example = FILE_KEYS[key]
         if getattr(self, "answer_file", False):
             where = f"write it at the top of the file, above the [answers] heading ({example})"
         elif key in ("student", "name", "variant"):

@@ -13,6 +13,7 @@ from ..common.errors import SceneError
 from ..common.units import TINY, did_you_mean, question, question_unit
 from ..common.tolerances import LEAST_FLUCTUATION
 from .energy_records import Rim
+from .answers import FILE_KEYS
 from .records import Answer
 
 _POWER = {"W": 1.0, "kW": 1e3, "MW": 1e6, "hp": 745.69987158227}
@@ -247,6 +248,11 @@ class _RimReader:
                     raise self.err(f"tolerance {value!r} must be between 0 and 100 %", t, key)
                 tolerance = q
                 continue
+            if isinstance(value, dict):  # [answers.extra]: at its line, as a mechanism's
+                raise self.ld._sub_table(key, value)
+            if key in FILE_KEYS:  # student inside [answers]: where it belongs
+                self.ld.answer_file = "turning_moment" not in self.raw and "press" not in self.raw
+                raise self.ld._misplaced(key)
             out.append(self.answer(key, value))
         return tolerance, out
 

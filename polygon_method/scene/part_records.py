@@ -266,12 +266,19 @@ class Input:
     said: tuple = field(default=(), compare=False)
 
     def found_record(self) -> dict:
-        """The JSON input's ``found_from``: the speeds given on other links (SI, ccw +)
-        that two cranks' speeds were found from; {} where there are none."""
+        """The JSON input's ``found_from``: the speeds given elsewhere (SI, ccw +) that
+        two cranks' speeds were found from, a point's with the ``direction`` its velocity
+        component is taken along (a unit vector); {} where there are none."""
         if not self.found_from:
             return {}
         keys = ("key", "value", "rate_key", "rate")
-        return {"found_from": [{k: getattr(g, k) for k in keys} for g in self.found_from]}
+        return {
+            "found_from": [
+                {k: getattr(g, k) for k in keys}
+                | ({"direction": list(g.direction)} if g.kind == "v" else {})
+                for g in self.found_from
+            ]
+        }
 
     @property
     def angle_words(self) -> str | None:
