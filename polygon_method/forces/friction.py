@@ -84,7 +84,7 @@ def loads(scene, motion, pins, guides) -> tuple:
     if fr.any_guides:
         for g in guides:
             X = g.point
-            mu = fr.guide(X)
+            mu = fr.guide(X, g.key)
             if not mu:
                 continue
             vx, vy = motion.V[X]
@@ -93,7 +93,9 @@ def loads(scene, motion, pins, guides) -> tuple:
             vs = (vx - gx) * ux + (vy - gy) * uy
             f = -mu * abs(g.normal) * sgn(vs)
             x, y = motion.P[X]
-            what = f"friction at the guide of {X}"
+            slot = g.key[len(X) + 1 :] if g.key != X else ""  # a peg's two slots apart
+            where = "the fixed slot" if slot == "ground" else f"the slot of {slot}"
+            what = f"friction in {where} at {X}" if slot else f"friction at the guide of {X}"
             out.append((block(X), what, (f * ux, f * uy), (x, y)))
             out.append((g.by, what, (-f * ux, -f * uy), (x, y)))  # (the frame: shaking)
     if fr.any_pins:

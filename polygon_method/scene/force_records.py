@@ -107,9 +107,11 @@ class Friction:
     at_guides: tuple = ()
     at_pins: tuple = ()
 
-    def guide(self, point: str) -> float:
-        """The coefficient at the guide of the block at ``point``."""
-        return dict(self.at_guides).get(point, self.guides)
+    def guide(self, point: str, key: str | None = None) -> float:
+        """The coefficient at the guide of the block at ``point`` (a peg's slot by its
+        ``key`` first, ``P_OA``, then by its point)."""
+        each = dict(self.at_guides)
+        return each.get(key, each.get(point, self.guides))
 
     def pin(self, point: str) -> float:
         """The coefficient at the pin ``point`` (with a size in ``[pins]``)."""

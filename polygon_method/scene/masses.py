@@ -352,7 +352,7 @@ class _Masses:
         spec = self.table("friction")
         out = {}
         sized = {p.point for p in pins}
-        blocks = {s.point for s in sliders}
+        blocks = {s.point for s in sliders} | {s.key for s in sliders}
         for k, v in spec.items():
             if k not in ("guides", "pins"):
                 raise self.error(
