@@ -191,6 +191,7 @@ def test_the_books_answers_are_the_matrix_methods():
         ("pins = { Q = 0.1 }", "pins: 'Q' is not a pin with a size in [pins]"),
         ("guides = { B = 1.5 }", "guides.B = 1.5: a coefficient of friction"),
         ('guides = { B = "0.1" }', "guides.B = '0.1': a coefficient of friction"),
+        ("guides = {}", "guides = {} names none"),
     ],
 )
 def test_a_bad_coefficient_table_is_one_line(tmp_path, capsys, table, words):

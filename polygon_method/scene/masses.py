@@ -386,6 +386,13 @@ class _Masses:
     def _each_friction(self, k, table, names) -> tuple:
         """``guides = { B = 0.1, A = 0.15 }``: each guide's coefficient by its block's point
         (each pin's by its name in [pins]); a name that is none of them is refused."""
+        if not table:
+            raise self.error(
+                f"{k} = {{}} names none: give each one's coefficient ({k} = {{ B = 0.1 }}), "
+                f"or one for all ({k} = 0.1)",
+                "friction",
+                k,
+            )
         out = []
         for name, v in table.items():
             if name not in names:
