@@ -453,6 +453,14 @@ class _CycleReader(_RimReader, _PressReader, _AreasReader, _StrokesReader):
         cycle, w = self._cycle(spec, t, math.radians(spec["angle"][-1]))
         if math.radians(spec["angle"][-1]) > cycle + ROUNDING:
             raise self.err("the table's angles run past the cycle", t, "angle")
+        if math.radians(spec["angle"][-1]) < cycle - ROUNDING * cycle:
+            raise self.err(
+                f"the readings end at {spec['angle'][-1]:g} deg, before the cycle's "
+                f"{math.degrees(cycle):g} deg: give the torque to the cycle's end (angle = "
+                f"[..., {math.degrees(cycle):g}], torque = [..., 0] where it is nought)",
+                t,
+                "angle",
+            )
         n = len(spec["angle"])
         if steady[0]:
             words = [f"the driving torque constant (a motor's), the mean, {w}"]
