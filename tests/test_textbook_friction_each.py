@@ -14,7 +14,7 @@ import pytest
 from mpmath import mpf
 
 from newton_euler import NewtonEuler
-from polygon_method import load_scene, solve
+from polygon_method import load_scene, parse_scene, solve
 from polygon_method.cli import main
 from polygon_method.common.errors import SceneError
 
@@ -44,9 +44,10 @@ def _pin(sol, point):
     return next(p for p in sol.forces.pins if p.point == point).magnitude
 
 
-def _crank_reference():
+def _crank_reference(circles=None, mu_guide="0.15"):
     """The slider crank: O (r 25 mm, mu 0.05), A (20 mm, 0.08), B (12.5 mm, 0.12), the
-    guide 0.15; the crank 20 rad/s cw at 120 deg, 1.5 kN against the slider."""
+    guide 0.15; the crank 20 rad/s cw at 120 deg, 1.5 kN against the slider. ``circles``:
+    the friction circles' radii (m) at O, A, B instead (each pin's couple rho |F|)."""
     mpmath.mp.dps = 40
     r, l, th, w2 = mpf("0.08"), mpf("0.32"), mpmath.radians(120), mpf(-20)
     A = (r * mpmath.cos(th), r * mpmath.sin(th))
@@ -60,6 +61,8 @@ def _crank_reference():
         ("A", A, "AB", "OA", mpf("0.02"), mpf("0.08")),
         ("B", B, "AB", "block", mpf("0.0125"), mpf("0.12")),
     ]
+    if circles is not None:
+        pins = [(n, at, on, by, mpf(rho), 1) for (n, at, on, by, _, _), rho in zip(pins, circles)]
 
     def build(x):
         ne = NewtonEuler(["OA", "AB", "block"], about={"block": B}, mp=True)
@@ -71,7 +74,7 @@ def _crank_reference():
                 ne.known(by if by != "block" else "frame", c=-c)  # a block passes it on
         ne.along("N", B, (0, 1), "block", "frame")
         if x is not None:
-            ne.known("block", (-mpf("0.15") * abs(x["N"]) * mpmath.sign(vs), 0), B)
+            ne.known("block", (-mpf(mu_guide) * abs(x["N"]) * mpmath.sign(vs), 0), B)
         ne.known("block", (mpf(-1500), 0), B)
         ne.couple("T", "OA", "frame")
         return ne.solve()
@@ -188,7 +191,9 @@ def test_the_books_answers_are_the_matrix_methods():
     "table, words",
     [
         ("guides = { Z = 0.1 }", "guides: 'Z' is not a sliding block's point"),
-        ("pins = { Q = 0.1 }", "pins: 'Q' is not a pin with a size in [pins]"),
+        ("pins = { Q = 0.1 }", "pins: 'Q' is not a joint of the mechanism (a pin)"),
+        ("pins = { O = 0.1, A = 0.1, B = 0.1, Q = '2 mm' }", "'Q' is not a joint"),
+        ('pins = "-2 mm"', "length must be positive"),
         ("guides = { B = 1.5 }", "guides.B = 1.5: a coefficient of friction"),
         ('guides = { B = "0.1" }', "guides.B = '0.1': a coefficient of friction"),
         ("guides = {}", "guides = {} names none"),
@@ -305,3 +310,31 @@ def test_a_peg_with_each_slot_its_own_coefficient_against_the_matrix_method(tmp_
     same = solve(load_scene(_peg_scene(tmp_path, "{ P = 0.15 }")))
     y = _peg_reference(sol.P["C"], mpf("0.15"), mpf("0.15"))
     assert same.forces.input_torque == pytest.approx(float(y["T"]), rel=REL)
+
+
+CIRCLE = HERE / "friction_circle_slider_crank.toml"
+
+
+def test_friction_circles_given_by_their_radius_against_the_matrix_method():
+    """Ballaney's "the radius of the friction circle is 2 mm at each pin, mu 0.1 at the
+    guide": no pin sizes; each pin's couple 2 mm x |F| against the relative turning."""
+    x = _crank_reference(circles=("0.002", "0.002", "0.002"), mu_guide="0.1")
+    sol = solve(load_scene(CIRCLE))
+    assert sol.forces.input_torque == pytest.approx(float(x["T"]), rel=REL)
+    for name in ("O", "A", "B"):
+        assert _pin(sol, name) == pytest.approx(float(_size(x, name)), rel=REL)
+    assert sol.forces.guides[0].normal == pytest.approx(float(x["N"]), rel=REL)
+    keys = {a.key: a for a in sol.scene.answers}
+    assert float(keys["torque"].value) == pytest.approx(float(x["T"]), rel=1e-3)
+
+
+def test_each_pins_circle_is_its_coefficient_times_its_radius():
+    """The per-pin file's coefficients and sizes stated instead as the circles mu r: the
+    same forces to the last bits' rounding."""
+    text = CRANK.read_text(encoding="utf-8").replace(
+        "pins = { O = 0.05, A = 0.08, B = 0.12 }",
+        'pins = { O = "1.25 mm", A = "1.6 mm", B = "1.5 mm" }',
+    )
+    text = text.split("[pins]")[0] + "[answers]" + text.split("[answers]")[1]
+    a, b = solve(load_scene(CRANK)), solve(parse_scene(text))
+    assert b.forces.input_torque == pytest.approx(a.forces.input_torque, rel=1e-12)

@@ -101,11 +101,11 @@ def loads(scene, motion, pins, guides) -> tuple:
     if fr.any_pins:
         radius = {p.point: p.radius for p in scene.pins}
         for p in pins:
-            r = radius.get(p.point)
-            if r is None or not fr.pin(p.point):
+            rho = fr.radius(p.point, radius.get(p.point))  # mu r, or the circle stated
+            if not rho:
                 continue
             rel = _omega(scene, motion, p.on) - _omega(scene, motion, p.by)
-            c = -fr.pin(p.point) * r * vhypot(p.force[0], p.force[1]) * sgn(rel)
+            c = -rho * vhypot(p.force[0], p.force[1]) * sgn(rel)
             what = f"friction at pin {p.point}"
             for body, cc in ((p.on, c), (p.by, -c)):
                 out.append((_turner(scene, body), what, cc))

@@ -64,7 +64,7 @@ def _friction_lines(sol, f, F, M) -> list:
     if fr is None:
         return []
     out = [
-        f"friction (Coulomb: {fr.words()}{', the friction circle mu r' * fr.any_pins}; "
+        f"friction (Coulomb: {fr.words()}{', the friction circle mu r' * bool(fr.pins or fr.at_pins)}; "
         + (
             "at rest, the limiting static friction against the motion about to start, "
             "the effort to start it):"
