@@ -116,3 +116,13 @@ def test_a_bad_cylinders_is_one_line(tmp_path, capsys, body, words):
     assert main(["solve", str(f)]) == 2
     err = capsys.readouterr().err
     assert words in err and len(err.strip().splitlines()) == 1, err
+
+
+def test_the_power_with_cylinders_is_the_engines():
+    """'A four-cylinder engine develops 20 kW': the strokes' works are a cylinder's share,
+    the mean torque the engine's own (20 kW at 300 rpm), not four times it."""
+    text = (HERE / "strokes_expansion_three_times_compression.toml").read_text(encoding="utf-8")
+    text = text.replace('power = "20 kW"\n', 'power = "20 kW"\ncylinders = 4\n', 1)
+    c = solve_cycle(cycle_from_text(text.split("[answers]")[0], "t.toml"))
+    assert c.power == pytest.approx(20000, rel=REL)
+    assert c.T_mean == pytest.approx(20000 / (300 * float(mpmath.pi) / 30), rel=REL)
