@@ -114,3 +114,44 @@ speed = "100 rpm cw"
     assert any(
         n.startswith("[links] O3-B not given: its length the pitch radius") for n in sol.notes
     )
+
+
+DRIVE = HERE / "wilson_sadler_geared_drive_accelerating.toml"
+
+
+def test_geared_drive_by_the_reflected_inertias():
+    """T = (I1 + I23 n2^2 + I4 n4^2) alpha + T_drum n4, n the speed ratios to the motor
+    (exact fractions); and each mesh's tangential tooth load from the gears beyond it."""
+    n2, n4 = Q(20, 50), Q(20, 50) * Q(15, 45)
+    i1, i23, i4, alpha = Q(1, 100), Q(6, 100), Q(9, 100), Q(100)
+    torque = (i1 + i23 * n2**2 + i4 * n4**2) * alpha + 20 * n4
+    assert torque == Q(359, 75)  # 4.7867 N m
+    sol = solve(load_scene(DRIVE))
+    assert sol.value("torque", ()) == pytest.approx(float(torque), rel=1e-9)
+    # the drum's gear: its tooth load along the tangent (i4 alpha4 + 20) / r4, r4 = 90 mm
+    t4 = (i4 * alpha * n4 + 20) / Q(9, 100)
+    drum = next(c for c in sol.forces.contacts if c.wheel == "O4-C")
+    assert abs(drum.tangential) == pytest.approx(float(t4), rel=1e-9)
+
+
+SERIES = HERE / "ghosh_mallik_train_two_planets_in_series.toml"
+
+
+def test_two_planets_in_series_by_the_tabular_method():
+    """S (25) fixed, P1 (25) and P2 (15) on the arm, R (65): the train value with the arm
+    fixed e = (-25/25)(-25/15)(15/65); each speed by Willis; the torques by the power balance
+    and their sum; R's 50 N m through the teeth (the planets' moments) to S."""
+    wa = Q(100)
+    e_r, e_1, e_2 = Q(25, 65), Q(-25, 25), Q(25, 15)  # (omega - omega_a) / (0 - omega_a)
+    wr, w1, w2 = (wa * (1 - e) for e in (e_r, e_1, e_2))
+    t_arm = Q(50) * wr / wa
+    held = -(t_arm - 50)
+    assert (wr, w1, w2) == (Q(4000, 65), 200, Q(-200, 3))
+    sol = solve(load_scene(SERIES))
+    for key, w in (("O-R", wr), ("AP", w1), ("BQ", w2)):
+        assert sol.W[key] == pytest.approx(float(w) * RPM, rel=REL)
+    assert sol.value("torque", ()) == pytest.approx(float(t_arm), rel=1e-9)
+    assert sol.value("Thold", ("O",)) == pytest.approx(float(held), rel=1e-9)
+    # by the teeth: R's tangential load 50 / 0.13 passes P2 unchanged (its moments), then
+    # P1 unchanged, and S takes it at 0.05 m: 50 x 0.05 / 0.13 = 19.23 N m
+    assert float(held) == pytest.approx(50 * 0.05 / 0.13, rel=1e-12)

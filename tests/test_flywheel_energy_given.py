@@ -121,3 +121,36 @@ def test_a_bad_table_is_one_line(tmp_path, capsys, old, new, words):
     bad.write_text(STEAM.read_text(encoding="utf-8").replace(old, new), encoding="utf-8")
     code, _, err = _run(capsys, "solve", bad)
     assert code == 2 and words in err and len(err.strip().splitlines()) == 1, err
+
+
+LOSSES = HERE / "press_frictional_losses.toml"
+
+
+def test_khurmis_press_with_its_frictional_losses():
+    """6 J a mm^2 of pi d t, 7/6 of it with the losses; 10 holes a minute, 1.5 s of
+    punching in 6: dE_max = E (1 - 1/4); the power E / 6 s; Cs = 20 / 190."""
+    mpmath.mp.dps = 40
+    E = 6 * mpmath.pi * 25 * 20 * mpmath.mpf(7) / 6
+    dE = E * (1 - mpmath.mpf(1.5) / 6)
+    w = 190 * 2 * mpmath.pi / 60
+    I = dE / (w**2 * mpmath.mpf(20) / 190)
+    c = _solve(LOSSES)
+    assert c.power == pytest.approx(float(E / 6), rel=REL)
+    assert c.dE_max == pytest.approx(float(dE), rel=REL)
+    assert c.inertia == pytest.approx(float(I), rel=1e-11)
+    assert c.mass == pytest.approx(float(I / mpmath.mpf("0.25")), rel=1e-11)
+    same = LOSSES.read_text(encoding="utf-8").replace(
+        'losses = "1/6"', "losses = 0.1666666666666666667"
+    )
+    assert _solve(LOSSES, same).dE_max == pytest.approx(c.dE_max, rel=1e-12)
+
+
+@pytest.mark.parametrize("value", ['"a sixth"', '"-10%"', "true", '"1/0"'])
+def test_bad_losses_are_one_line(tmp_path, capsys, value):
+    bad = tmp_path / "bad.toml"
+    bad.write_text(
+        LOSSES.read_text(encoding="utf-8").replace('losses = "1/6"', f"losses = {value}"),
+        encoding="utf-8",
+    )
+    code, _, err = _run(capsys, "solve", bad)
+    assert code == 2 and "losses" in err and len(err.strip().splitlines()) == 1, err

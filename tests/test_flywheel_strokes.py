@@ -173,3 +173,26 @@ def test_a_bad_strokes_table_is_one_line(tmp_path, capsys, old, new, words):
     code, out, err = _run(capsys, "solve", bad)
     assert code == 2 and words in err, err
     assert len(err.strip().splitlines()) == 1
+
+
+def test_readings_that_stop_before_the_cycle_are_refused(tmp_path, capsys):
+    """Readings to 180 deg in a cycle of 360: beyond the last one the segments' torque was
+    extended along the last segment (-90 N m at 360 deg in the CSV and the drawing) while
+    the energies took it as nought; now one line asks for the readings to the cycle's end."""
+    f = tmp_path / "t.toml"
+    f.write_text(
+        '[turning_moment]\nangle = [0, 60, 180]\ntorque = [0, 60, 0]\ncycle = "360 deg"\n'
+        '[flywheel]\nspeed = "600 rpm"\ncoefficient = 0.02\n',
+        encoding="utf-8",
+    )
+    code, _, err = _run(capsys, "solve", f)
+    assert code == 2 and "the readings end at 180 deg, before the cycle's 360 deg" in err
+    assert len(err.strip().splitlines()) == 1
+    f.write_text(
+        f.read_text()
+        .replace("[0, 60, 180]", "[0, 60, 180, 360]")
+        .replace("[0, 60, 0]", "[0, 60, 0, 0]"),
+        encoding="utf-8",
+    )
+    c = solve_cycle(cycle_from_text(f.read_text(), str(f)))
+    assert c.T_mean == pytest.approx(0.5 * 60 * float(mpmath.pi) / (2 * float(mpmath.pi)), rel=REL)

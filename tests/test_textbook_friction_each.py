@@ -14,7 +14,7 @@ import pytest
 from mpmath import mpf
 
 from newton_euler import NewtonEuler
-from polygon_method import load_scene, solve
+from polygon_method import load_scene, parse_scene, solve
 from polygon_method.cli import main
 from polygon_method.common.errors import SceneError
 
@@ -44,9 +44,10 @@ def _pin(sol, point):
     return next(p for p in sol.forces.pins if p.point == point).magnitude
 
 
-def _crank_reference():
+def _crank_reference(circles=None, mu_guide="0.15"):
     """The slider crank: O (r 25 mm, mu 0.05), A (20 mm, 0.08), B (12.5 mm, 0.12), the
-    guide 0.15; the crank 20 rad/s cw at 120 deg, 1.5 kN against the slider."""
+    guide 0.15; the crank 20 rad/s cw at 120 deg, 1.5 kN against the slider. ``circles``:
+    the friction circles' radii (m) at O, A, B instead (each pin's couple rho |F|)."""
     mpmath.mp.dps = 40
     r, l, th, w2 = mpf("0.08"), mpf("0.32"), mpmath.radians(120), mpf(-20)
     A = (r * mpmath.cos(th), r * mpmath.sin(th))
@@ -60,6 +61,8 @@ def _crank_reference():
         ("A", A, "AB", "OA", mpf("0.02"), mpf("0.08")),
         ("B", B, "AB", "block", mpf("0.0125"), mpf("0.12")),
     ]
+    if circles is not None:
+        pins = [(n, at, on, by, mpf(rho), 1) for (n, at, on, by, _, _), rho in zip(pins, circles)]
 
     def build(x):
         ne = NewtonEuler(["OA", "AB", "block"], about={"block": B}, mp=True)
@@ -71,7 +74,7 @@ def _crank_reference():
                 ne.known(by if by != "block" else "frame", c=-c)  # a block passes it on
         ne.along("N", B, (0, 1), "block", "frame")
         if x is not None:
-            ne.known("block", (-mpf("0.15") * abs(x["N"]) * mpmath.sign(vs), 0), B)
+            ne.known("block", (-mpf(mu_guide) * abs(x["N"]) * mpmath.sign(vs), 0), B)
         ne.known("block", (mpf(-1500), 0), B)
         ne.couple("T", "OA", "frame")
         return ne.solve()
@@ -188,9 +191,12 @@ def test_the_books_answers_are_the_matrix_methods():
     "table, words",
     [
         ("guides = { Z = 0.1 }", "guides: 'Z' is not a sliding block's point"),
-        ("pins = { Q = 0.1 }", "pins: 'Q' is not a pin with a size in [pins]"),
+        ("pins = { Q = 0.1 }", "pins: 'Q' is not a joint of the mechanism (a pin)"),
+        ("pins = { O = 0.1, A = 0.1, B = 0.1, Q = '2 mm' }", "'Q' is not a joint"),
+        ('pins = "-2 mm"', "length must be positive"),
         ("guides = { B = 1.5 }", "guides.B = 1.5: a coefficient of friction"),
         ('guides = { B = "0.1" }', "guides.B = '0.1': a coefficient of friction"),
+        ("guides = {}", "guides = {} names none"),
     ],
 )
 def test_a_bad_coefficient_table_is_one_line(tmp_path, capsys, table, words):
@@ -202,3 +208,133 @@ def test_a_bad_coefficient_table_is_one_line(tmp_path, capsys, table, words):
         load_scene(bad)
     code, out, err = _run(capsys, "solve", bad)
     assert code == 2 and words in err and len(err.strip().splitlines()) == 1
+
+
+PEG = HERE / "peg_two_slotted_links.toml"
+
+
+def _peg_scene(tmp_path, table):
+    text = PEG.read_text(encoding="utf-8").split("[answers]")[0]
+    text += (
+        '[masses]\n[loads]\nP = { force = "100 N", direction = 200 }\n'
+        f"[friction]\nguides = {table}\n"
+    )
+    f = tmp_path / "peg.toml"
+    f.write_text(text, encoding="utf-8")
+    return f
+
+
+def _peg_reference(C_tool, mu1, mu2):
+    """The four-bar A (0, 0), D (100, 0), AB 50, BC 66, CD 56 at 60 deg, the crank 10.5
+    rad/s cw; the peg P where the slots (the lines AB and CD) cross; 100 N at 200 deg on it.
+    Five bodies' unknowns: the pins A, B, C, D, each slot's normal force and the torque;
+    each slot's friction mu |N| against the peg's sliding along it, repeated to settle."""
+    mpmath.mp.dps = 40
+    w2 = mpf("-10.5")
+
+    def place(th, branch):
+        B = (mpf("0.05") * mpmath.cos(th), mpf("0.05") * mpmath.sin(th))
+        D = (mpf("0.1"), mpf(0))
+        dx, dy = D[0] - B[0], D[1] - B[1]
+        L = mpmath.hypot(dx, dy)
+        x = (mpf("0.066") ** 2 - mpf("0.056") ** 2 + L**2) / (2 * L)
+        h = branch * mpmath.sqrt(mpf("0.066") ** 2 - x**2)
+        C = (B[0] + (x * dx - h * dy) / L, B[1] + (x * dy + h * dx) / L)
+        # P on the line A-B and the line D-C
+        u1 = (B[0] / mpf("0.05"), B[1] / mpf("0.05"))
+        u2 = ((C[0] - D[0]) / mpf("0.056"), (C[1] - D[1]) / mpf("0.056"))
+        det = u1[0] * (-u2[1]) - u1[1] * (-u2[0])
+        s = (D[0] * (-u2[1]) - D[1] * (-u2[0])) / det
+        return B, C, D, (s * u1[0], s * u1[1]), u1, u2
+
+    th = mpmath.radians(60)
+    branch = min((1, -1), key=lambda b: abs(place(th, b)[1][0] - C_tool[0]))
+    B, C, D, P, u1, u2 = place(th, branch)
+
+    def ang(k):
+        def f(t):
+            pts = place(t, branch)
+            v = (pts[1][0] - pts[k][0], pts[1][1] - pts[k][1])
+            return mpmath.atan2(v[1], v[0])
+
+        return f
+
+    w3 = mpmath.diff(ang(0), th) * w2  # BC's direction B->C
+    w4 = mpmath.diff(ang(2), th) * w2  # CD's from D
+    vP = [mpmath.diff(lambda t, i=i: place(t, branch)[3][i], th) * w2 for i in (0, 1)]
+    vs1 = (vP[0] + w2 * P[1]) * u1[0] + (vP[1] - w2 * P[0]) * u1[1]  # relative to AB
+    vs2 = (vP[0] + w4 * P[1]) * u2[0] + (vP[1] - w4 * (P[0] - D[0])) * u2[1]
+    assert w3 != 0
+    n1, n2 = (-u1[1], u1[0]), (-u2[1], u2[0])
+    F = (100 * mpmath.cos(mpmath.radians(200)), 100 * mpmath.sin(mpmath.radians(200)))
+
+    def build(x):
+        ne = NewtonEuler(["AB", "BC", "CD", "peg"], about={"peg": P}, mp=True)
+        ne.pin("A", (0, 0), "AB", "frame")
+        ne.pin("B", B, "BC", "AB")
+        ne.pin("C", C, "BC", "CD")
+        ne.pin("D", D, "CD", "frame")
+        ne.along("N1", P, n1, "peg", "AB")
+        ne.along("N2", P, n2, "peg", "CD")
+        ne.known("peg", F, P)
+        if x is not None:
+            for name, mu, u, vs, by in (("N1", mu1, u1, vs1, "AB"), ("N2", mu2, u2, vs2, "CD")):
+                f = -mu * abs(x[name]) * mpmath.sign(vs)
+                ne.known("peg", (f * u[0], f * u[1]), P)
+                ne.known(by, (-f * u[0], -f * u[1]), P)
+        ne.couple("T", "AB", "frame")
+        return ne.solve()
+
+    return _settled(build, ())
+
+
+def test_a_peg_with_each_slot_its_own_coefficient_against_the_matrix_method(tmp_path, capsys):
+    """The peg's two slots, 0.1 in the crank's and 0.2 in the rocker's (guides = { P_AB =
+    0.1, P_CD = 0.2 }): the torque, the slots' normal forces and the pins to the 40-digit
+    matrix method; solve names each slot's friction (both: before, the second was not
+    said, the two sharing one name)."""
+    sol = solve(load_scene(_peg_scene(tmp_path, "{ P_AB = 0.1, P_CD = 0.2 }")))
+    x = _peg_reference(sol.P["C"], mpf("0.1"), mpf("0.2"))
+    f = sol.forces
+    assert f.input_torque == pytest.approx(float(x["T"]), rel=REL)
+    normals = {g.key: abs(g.normal) for g in f.guides}
+    assert normals["P_AB"] == pytest.approx(float(abs(x["N1"])), rel=REL)
+    assert normals["P_CD"] == pytest.approx(float(abs(x["N2"])), rel=REL)
+    for name in ("A", "B", "C", "D"):
+        assert _pin(sol, name) == pytest.approx(float(_size(x, name)), rel=REL)
+    code, out, _ = _run(capsys, "solve", _peg_scene(tmp_path, "{ P_AB = 0.1, P_CD = 0.2 }"))
+    assert code == 0
+    assert "friction in the slot of AB at P" in out and "friction in the slot of CD at P" in out
+    assert "guide at P_AB" in out and "guide at P_CD" in out
+    # one coefficient for both slots, by the point
+    same = solve(load_scene(_peg_scene(tmp_path, "{ P = 0.15 }")))
+    y = _peg_reference(sol.P["C"], mpf("0.15"), mpf("0.15"))
+    assert same.forces.input_torque == pytest.approx(float(y["T"]), rel=REL)
+
+
+CIRCLE = HERE / "friction_circle_slider_crank.toml"
+
+
+def test_friction_circles_given_by_their_radius_against_the_matrix_method():
+    """Ballaney's "the radius of the friction circle is 2 mm at each pin, mu 0.1 at the
+    guide": no pin sizes; each pin's couple 2 mm x |F| against the relative turning."""
+    x = _crank_reference(circles=("0.002", "0.002", "0.002"), mu_guide="0.1")
+    sol = solve(load_scene(CIRCLE))
+    assert sol.forces.input_torque == pytest.approx(float(x["T"]), rel=REL)
+    for name in ("O", "A", "B"):
+        assert _pin(sol, name) == pytest.approx(float(_size(x, name)), rel=REL)
+    assert sol.forces.guides[0].normal == pytest.approx(float(x["N"]), rel=REL)
+    keys = {a.key: a for a in sol.scene.answers}
+    assert float(keys["torque"].value) == pytest.approx(float(x["T"]), rel=1e-3)
+
+
+def test_each_pins_circle_is_its_coefficient_times_its_radius():
+    """The per-pin file's coefficients and sizes stated instead as the circles mu r: the
+    same forces to the last bits' rounding."""
+    text = CRANK.read_text(encoding="utf-8").replace(
+        "pins = { O = 0.05, A = 0.08, B = 0.12 }",
+        'pins = { O = "1.25 mm", A = "1.6 mm", B = "1.5 mm" }',
+    )
+    text = text.split("[pins]")[0] + "[answers]" + text.split("[answers]")[1]
+    a, b = solve(load_scene(CRANK)), solve(parse_scene(text))
+    assert b.forces.input_torque == pytest.approx(a.forces.input_torque, rel=1e-12)

@@ -24,7 +24,8 @@ __all__ = ["cycle_verdicts", "CYCLE_UNITS"]
 #: answer key -> (the record's field, SI unit, what it is)
 CYCLE_UNITS = ANSWER_FIELDS
 _NEEDS = {
-    "T_mean": "a turning moment given as a law or segments (areas give no mean)",
+    "T_mean": "a turning moment given as a law, segments or strokes, or the power (or the "
+    "work of a cycle) beside dE_max (areas give no mean)",
     "power": "the mean speed ([flywheel] speed) and a law or segments, or a press",
     "E_stroke": "a punching press ([press])",
     "alpha_at": "[turning_moment] at, a crank angle, and [flywheel]",

@@ -321,8 +321,8 @@ def _curve(d) -> dict:
         work=mean_T * cyc,
         areas=areas,
         crossings=tuple(cross),
-        i_max=int(np.argmax(es)),
-        i_min=int(np.argmin(es)),
+        i_max=_first(es, max),
+        i_min=_first(es, min),
         dE_max=max(es) - min(es),
         _q=q,
     )
@@ -363,6 +363,19 @@ def _bisect(f, a, b, fa):
         else:
             b = m
     return 0.5 * (a + b)
+
+
+def _first(es, most) -> int:
+    """The first crossing whose energy is the greatest (``most`` max) or the least (min),
+    energies a rounding apart being equal (three cylinders' equal lobes: the first, as the
+    book reads them, not the one the rounding of the running sum lifts).
+
+    >>> _first([0.0, 7.853981633974483, 0.0, 7.853981633974485], max)
+    1
+    """
+    best = most(es)
+    tol = ROUNDING * (max(es) - min(es))
+    return next(i for i, e in enumerate(es) if abs(e - best) <= tol)
 
 
 def _flywheel(scene, base, words) -> CycleEnergy:

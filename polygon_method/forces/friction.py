@@ -84,7 +84,7 @@ def loads(scene, motion, pins, guides) -> tuple:
     if fr.any_guides:
         for g in guides:
             X = g.point
-            mu = fr.guide(X)
+            mu = fr.guide(X, g.key)
             if not mu:
                 continue
             vx, vy = motion.V[X]
@@ -93,17 +93,19 @@ def loads(scene, motion, pins, guides) -> tuple:
             vs = (vx - gx) * ux + (vy - gy) * uy
             f = -mu * abs(g.normal) * sgn(vs)
             x, y = motion.P[X]
-            what = f"friction at the guide of {X}"
+            slot = g.key[len(X) + 1 :] if g.key != X else ""  # a peg's two slots apart
+            where = "the fixed slot" if slot == "ground" else f"the slot of {slot}"
+            what = f"friction in {where} at {X}" if slot else f"friction at the guide of {X}"
             out.append((block(X), what, (f * ux, f * uy), (x, y)))
             out.append((g.by, what, (-f * ux, -f * uy), (x, y)))  # (the frame: shaking)
     if fr.any_pins:
         radius = {p.point: p.radius for p in scene.pins}
         for p in pins:
-            r = radius.get(p.point)
-            if r is None or not fr.pin(p.point):
+            rho = fr.radius(p.point, radius.get(p.point))  # mu r, or the circle stated
+            if not rho:
                 continue
             rel = _omega(scene, motion, p.on) - _omega(scene, motion, p.by)
-            c = -fr.pin(p.point) * r * vhypot(p.force[0], p.force[1]) * sgn(rel)
+            c = -rho * vhypot(p.force[0], p.force[1]) * sgn(rel)
             what = f"friction at pin {p.point}"
             for body, cc in ((p.on, c), (p.by, -c)):
                 out.append((_turner(scene, body), what, cc))

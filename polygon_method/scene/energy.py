@@ -21,6 +21,7 @@ import tomllib
 from ..common.errors import SceneError
 from ..common.units import UNITS, did_you_mean
 from .energy_areas import _AreasReader
+from .energy_cylinders import _CylindersReader
 from .energy_flywheel import CYCLE_ANSWERS, _RimReader
 from .energy_strokes import _StrokesReader
 from .energy_press import _PressReader
@@ -75,6 +76,7 @@ _TM_KEYS = (
     "shape",
     "area_scale",
     "dE_max",
+    "cylinders",
 )
 _TOKEN = re.compile(
     r"\s*(?:(?P<num>(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)|(?P<word>sin|cos|theta|θ|deg|°|rad)"
@@ -275,7 +277,7 @@ def _argument(toks, i):
     return k, phi, i
 
 
-class _CycleReader(_RimReader, _PressReader, _AreasReader, _StrokesReader):
+class _CycleReader(_RimReader, _PressReader, _AreasReader, _StrokesReader, _CylindersReader):
     """Reads a :class:`CycleScene` with a mechanism reader's location helpers ``ld``."""
 
     def __init__(self, ld):
@@ -376,9 +378,16 @@ class _CycleReader(_RimReader, _PressReader, _AreasReader, _StrokesReader):
         if "at" in spec:
             at = self.ld.qty(spec["at"], "angle", t, "at", default_unit="deg").value
         if "strokes" in spec:
-            return self._strokes(spec, t, at)
+            return self._cylinders(spec, t, self._strokes(spec, t, at))
         if "dE_max" in spec:
             return self._fluctuation(spec, t, at)
+        if "cylinders" in spec and "angle" not in spec:
+            raise self.err(
+                "cylinders: one cylinder's readings (angle = [...]) or strokes are summed; a "
+                "law sums its cylinders as a list of laws, and areas are the engine's own",
+                t,
+                "cylinders",
+            )
         for k in ("power", "work", "shape", "area_scale"):
             if k in spec:
                 raise self.err(
@@ -399,7 +408,7 @@ class _CycleReader(_RimReader, _PressReader, _AreasReader, _StrokesReader):
         k = UNITS["torque"][unit.strip()]
         words = []
         if "angle" in spec:
-            return self._readings(spec, t, k, unit.strip(), at)
+            return self._cylinders(spec, t, self._readings(spec, t, k, unit.strip(), at))
         else:
             driving = self._law(spec["torque"], t, "torque", k)
             cycle, w = self._cycle(spec, t, 2 * math.pi)
@@ -453,6 +462,14 @@ class _CycleReader(_RimReader, _PressReader, _AreasReader, _StrokesReader):
         cycle, w = self._cycle(spec, t, math.radians(spec["angle"][-1]))
         if math.radians(spec["angle"][-1]) > cycle + ROUNDING:
             raise self.err("the table's angles run past the cycle", t, "angle")
+        if math.radians(spec["angle"][-1]) < cycle - ROUNDING * cycle:
+            raise self.err(
+                f"the readings end at {spec['angle'][-1]:g} deg, before the cycle's "
+                f"{math.degrees(cycle):g} deg: give the torque to the cycle's end (angle = "
+                f"[..., {math.degrees(cycle):g}], torque = [..., 0] where it is nought)",
+                t,
+                "angle",
+            )
         n = len(spec["angle"])
         if steady[0]:
             words = [f"the driving torque constant (a motor's), the mean, {w}"]

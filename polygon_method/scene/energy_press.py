@@ -24,6 +24,7 @@ _PRESS_KEYS = (
     "punching_angle",
     "punching_fraction",
     "stroke",
+    "losses",
 )
 
 
@@ -57,8 +58,34 @@ class _PressReader:
         energy = self._hole(spec, t, words)
         if not energy > 0:
             raise self.err("the energy of one hole must be positive", t, "energy")
+        if "losses" in spec:  # "the frictional losses are 1/6 of the work of punching"
+            f = self._losses(spec["losses"], t)
+            energy *= 1.0 + f
+            words.append(
+                f"with the losses, {f:.6g} of it: E = {1 + f:.6g} x the punching's work = "
+                f"{energy:.6g} J a hole (the motor supplies it all)"
+            )
         period, f = self._timing(spec, t, words)
         return Press(energy, period, float(f), tuple(words))
+
+    def _losses(self, raw, t) -> float:
+        """The losses as a part of the punching's work: "1/6", "20%" or 0.2."""
+        m = re.match(r"^\s*(\d+)\s*/\s*(\d+)\s*$", raw) if isinstance(raw, str) else None
+        if m and int(m.group(2)) > 0:
+            f = int(m.group(1)) / int(m.group(2))
+        elif isinstance(raw, str) and raw.strip().endswith("%"):
+            f = self.ld.qty(raw, "percent", t, "losses").value
+        elif isinstance(raw, (int, float)) and not isinstance(raw, bool):
+            f = float(raw)
+        else:
+            f = math.nan
+        if not 0 <= f < 10:
+            raise self.err(
+                f'losses = {raw!r}: a part of the punching\'s work, "1/6", "20%" or 0.2',
+                t,
+                "losses",
+            )
+        return f
 
     def _hole(self, spec, t, words) -> float:
         """The energy of one hole (J): given, or half the greatest force times the

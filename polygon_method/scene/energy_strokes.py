@@ -142,6 +142,10 @@ class _StrokesReader:
                 "strokes",
             )
         W = self._cycle_work(spec, t, ways[0], cycle, words)
+        n = spec.get("cylinders")
+        if isinstance(n, int) and not isinstance(n, bool) and n >= 2:  # the engine's
+            W /= n
+            words.append(f"the engine's {n} cylinders share it: {W:.6g} J a cylinder")
         works = [r * W / total for r in raw]
         words.append(
             "the strokes' works in proportion "

@@ -100,20 +100,45 @@ class Friction:
     'mu = 0.1 at the guides, 0.05 at the pins with a size in [pins]'
     >>> Friction(0.1).words()
     'mu = 0.1 at the guides, none at the pins'
+
+    A book may give the friction circle's radius itself ("the radius of the friction circle
+    is 5 mm at each pin"): ``circle`` (m) at every pin, or ``at_circles`` each pin's, with no
+    pin sizes needed.
+
+    >>> f = Friction(circle=0.005)
+    >>> f.radius("A", None), f.radius("A", 0.02), f.words()
+    (0.005, 0.005, 'mu = none at the guides, a friction circle of 5 mm at every pin')
+    >>> round(Friction(at_pins=(("O", 0.05),), at_circles=(("A", 0.0016),)).radius("O", 0.025), 12)
+    0.00125
     """
 
     guides: float = 0.0
     pins: float = 0.0
     at_guides: tuple = ()
     at_pins: tuple = ()
+    circle: float = 0.0
+    at_circles: tuple = ()
 
-    def guide(self, point: str) -> float:
-        """The coefficient at the guide of the block at ``point``."""
-        return dict(self.at_guides).get(point, self.guides)
+    def guide(self, point: str, key: str | None = None) -> float:
+        """The coefficient at the guide of the block at ``point`` (a peg's slot by its
+        ``key`` first, ``P_OA``, then by its point)."""
+        each = dict(self.at_guides)
+        return each.get(key, each.get(point, self.guides))
 
     def pin(self, point: str) -> float:
         """The coefficient at the pin ``point`` (with a size in ``[pins]``)."""
         return dict(self.at_pins).get(point, self.pins)
+
+    def radius(self, point: str, r: float | None) -> float | None:
+        """The friction circle's radius (m) at the pin ``point`` of radius ``r`` (None: no
+        size given): stated, or ``mu r``; None where the pin has no friction."""
+        each = dict(self.at_circles)
+        if point in each:
+            return each[point]
+        if self.circle and point not in dict(self.at_pins):
+            return self.circle
+        mu = self.pin(point)
+        return mu * r if mu and r is not None else None
 
     @property
     def any_guides(self) -> bool:
@@ -123,7 +148,12 @@ class Friction:
     @property
     def any_pins(self) -> bool:
         """Whether any pin has friction."""
-        return bool(self.pins or any(mu for _, mu in self.at_pins))
+        return bool(
+            self.pins
+            or self.circle
+            or any(mu for _, mu in self.at_pins)
+            or any(r for _, r in self.at_circles)
+        )
 
     @property
     def active(self) -> bool:
@@ -141,9 +171,14 @@ class Friction:
             if self.guides
             else "none at the guides"
         )
+        named = [f"{mu:g} at pin {q}" for q, mu in self.at_pins] + [
+            f"a friction circle of {r * 1e3:g} mm at pin {q}" for q, r in self.at_circles
+        ]
         p = (
-            ", ".join(f"{mu:g} at pin {q}" for q, mu in self.at_pins) + " (no other pin's)"
-            if self.at_pins
+            ", ".join(named) + " (no other pin's)"
+            if named
+            else f"a friction circle of {self.circle * 1e3:g} mm at every pin"
+            if self.circle
             else f"{self.pins:g} at the pins with a size in [pins]"
             if self.pins
             else "none at the pins"

@@ -193,7 +193,7 @@ class _Loader(_Tables, _Answers, _Input, _Variants, _Masses, _Engine, _Connected
         loads = self.loads(known)
         cylinders = self.cylinder_loads(cylinders, inp)  # a force given in a passive one
         masses, gravity = self.masses(points, sliders), self.gravity()
-        friction = self.friction(pins, sliders)
+        friction = self.friction(pins, sliders, known)
         indicators = self.indicators(sliders)
         indicator = indicators[0] if len(indicators) == 1 else None
         flywheel = self.flywheel()

@@ -346,7 +346,7 @@ class _Masses:
         )
         return Gravity(g, u, text)
 
-    def friction(self, pins, sliders=()):
+    def friction(self, pins, sliders=(), known=()):
         """[friction]: None without the table (frictionless, as the books start). Each of
         ``guides`` and ``pins`` a coefficient for all, or a table of each guide's (by its
         block's point) or each pin's own."""
@@ -355,7 +355,8 @@ class _Masses:
         spec = self.table("friction")
         out = {}
         sized = {p.point for p in pins}
-        blocks = {s.point for s in sliders}
+        blocks = {s.point for s in sliders} | {s.key for s in sliders}
+        joints = set(known)  # (a friction circle stated at a point: any joint)
         for k, v in spec.items():
             if k not in ("guides", "pins"):
                 raise self.error(
@@ -365,10 +366,17 @@ class _Masses:
                     k,
                 )
             if isinstance(v, dict):
-                out["at_" + k] = self._each_friction(k, v, blocks if k == "guides" else sized)
+                each = self._each_friction(k, v, blocks if k == "guides" else sized | joints)
+                out["at_" + k] = tuple(e for e in each if not isinstance(e[1], tuple))
+                if k == "pins":  # (a friction circle stated: its radius, no pin size)
+                    out["at_circles"] = tuple((q, r[0]) for q, r in each if isinstance(r, tuple))
+                    self._sized(out["at_pins"], sized)
+                continue
+            if k == "pins" and isinstance(v, str):
+                out["circle"] = self._circle(v, k)
                 continue
             out[k] = self._coefficient(k, v)
-        if (out.get("pins") or out.get("at_pins")) and not pins:
+        if out.get("pins") and not pins:
             raise self.error(
                 "friction at the pins needs their sizes: give [pins] (each pin's "
                 "diameter or radius: the friction circle's radius is mu r)",
@@ -376,6 +384,22 @@ class _Masses:
                 "pins",
             )
         return Friction(**out)
+
+    def _circle(self, v, key) -> float:
+        """A friction circle's radius stated ("5 mm"; the scene's unit when bare)."""
+        return self.length(v, "friction", key)  # (refused unless positive)
+
+    def _sized(self, each, sized) -> None:
+        """A pin given a coefficient needs its size in [pins] (its friction circle mu r)."""
+        for q, _ in each:
+            if q not in sized:
+                raise self.error(
+                    f"pins.{q}: a coefficient needs the pin's size in [pins] (its friction "
+                    f"circle mu r), or give the circle's radius itself (pins = {{ {q} = "
+                    '"5 mm" }})',
+                    "friction",
+                    "pins",
+                )
 
     def _coefficient(self, k, v, name=""):
         if isinstance(v, bool) or not isinstance(v, (int, float)) or not 0 <= v < 1:
@@ -389,18 +413,28 @@ class _Masses:
     def _each_friction(self, k, table, names) -> tuple:
         """``guides = { B = 0.1, A = 0.15 }``: each guide's coefficient by its block's point
         (each pin's by its name in [pins]); a name that is none of them is refused."""
+        if not table:
+            raise self.error(
+                f"{k} = {{}} names none: give each one's coefficient ({k} = {{ B = 0.1 }}), "
+                f"or one for all ({k} = 0.1)",
+                "friction",
+                k,
+            )
         out = []
         for name, v in table.items():
             if name not in names:
                 what = (
                     "a sliding block's point (the guide of the block there)"
                     if k == "guides"
-                    else "a pin with a size in [pins]"
+                    else "a joint of the mechanism (a pin)"
                 )
                 have = ", ".join(sorted(names)) or "none"
                 raise self.error(
                     f"{k}: '{name}' is not {what}; the scene has {have}", "friction", k
                 )
+            if k == "pins" and isinstance(v, str):  # the friction circle's radius
+                out.append((name, (self._circle(v, k),)))
+                continue
             out.append((name, self._coefficient(k, v, f"{k}.{name}")))
         return tuple(out)
 

@@ -102,9 +102,9 @@ def swing_inertia(rd, spec, link, m, lam, mu, name, g) -> tuple:
             name,
         )
     k2 = max(k2, 0.0)
-    words = (
-        f"swinging {where} as a compound pendulum, {said}: I_pivot = m g h T^2 / (4 pi^2) = "
-        f"{m * (k2 + h * h):.6g} kg m^2, I_G = I_pivot - m h^2 = {m * k2:.6g} kg m^2 (k_G = "
-        f"{math.sqrt(k2):.6g} m; g = {g:g} m/s^2)"
+    rd.read_notes.append(
+        f"[masses] {name}: swinging {where} as a compound pendulum, {said}: I_pivot = m g h "
+        f"T^2 / (4 pi^2) = {m * (k2 + h * h):.6g} kg m^2, I_G = I_pivot - m h^2 = "
+        f"{m * k2:.6g} kg m^2 (k_G = {math.sqrt(k2):.6g} m; g = {g:g} m/s^2)"
     )
-    return m * k2, words
+    return m * k2, f"I_G = {m * k2:.6g} kg m^2 from its swing (k_G = {math.sqrt(k2):.6g} m)"

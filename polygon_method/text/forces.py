@@ -64,7 +64,7 @@ def _friction_lines(sol, f, F, M) -> list:
     if fr is None:
         return []
     out = [
-        f"friction (Coulomb: {fr.words()}{', the friction circle mu r' * fr.any_pins}; "
+        f"friction (Coulomb: {fr.words()}{', the friction circle mu r' * bool(fr.pins or fr.at_pins)}; "
         + (
             "at rest, the limiting static friction against the motion about to start, "
             "the effort to start it):"
@@ -210,7 +210,7 @@ def forces_lines(sol) -> list:
         out.append(f"{p.point:<5} {p.on:<10} {_body(p.by):<10} {_vec(p.force, F)}")
     for g in f.guides:
         out.append(
-            f"guide at {g.point}: normal force on block {g.point} {_vec(g.force, F)}"
+            f"guide at {g.key}: normal force on block {g.point} {_vec(g.force, F)}"
             + (f"; its couple {_moment(g.couple, M)}" if _rack_couple(f, g) else "")
         )
     out += [given_line(sc, sol.S, k, v, sol.P) for k, v in given_forces(f)]  # a strut, a spring
@@ -568,7 +568,7 @@ def _driver_blocks(f, F, M, sol=None) -> list:
         ]
     )
     items += [
-        f"guide at {g.point}: {_vec(g.force, F)} on block {g.point}"
+        f"guide at {g.key}: {_vec(g.force, F)} on block {g.point}"
         + (f", its couple {_moment(g.couple, M)}" if _rack_couple(f, g) else "")
         for g in f.guides
     ]
