@@ -32,7 +32,6 @@ from ..draw.style import (
 )
 from ..common.numbers import fmt
 from ..draw.plots import MARK_NAMES, MARKS
-from ..linkage.cycle import sweep_aliased
 from ..text.steptable import steps_blocks
 from ..text.words import given
 from .data import page_data
@@ -229,7 +228,9 @@ def _engine_script(eng) -> str:
 def _notes(fr) -> str:
     """The sweep's notes as list items, and where its frames cannot follow a second input
     (``linkage``'s check), that its curves may be aliased."""
-    said = fr.res.notes + sweep_aliased(fr.res, "the curves and the frames")
+    said = fr.res.notes + fr.aliased("the curves and the frames")
+    if fr.followed:  # the count raised to follow a wheel: said, as every default is
+        said += (f"{len(fr)} frames, {fr.followed}.",)
     return "".join(f"<li>{escape(n)}</li>" for n in said)
 
 
