@@ -15,6 +15,7 @@ from fractions import Fraction
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 from polygon_method.cli import main
 
@@ -100,3 +101,36 @@ def test_a_gif_of_the_differential_says_it_cannot_follow(tmp_path, capsys):
     cap = capsys.readouterr()
     assert "360 frames, not 180" in cap.out and "the most frames it may hold" in cap.out
     assert "the pictures may be aliased" in cap.err
+
+
+TICKS = """() => ['plot-v', 'plot-w', 'plot-a'].map(id => document.getElementById(id))
+  .map(s => [...s.querySelectorAll('text.tick[text-anchor=middle]')].map(t => {
+    const b = t.getBBox(); return [t.textContent, b.x, b.x + b.width]; }))"""
+
+
+@pytest.mark.parametrize(
+    "scene, turned",
+    [(DIFFERENTIAL, 3600), (str(ROOT / "worked_problems" / "engine_flywheel.toml"), 720)],
+)
+def test_the_plots_of_a_period_of_many_turns_have_separate_round_ticks(
+    browser, tmp_path, scene, turned
+):
+    """The differential's plots over its 10 turns once had 11 ticks, 0° to 3600°, written
+    over one another; now at most 7, whole turns apart, none touching the next."""
+    out = tmp_path / "p.html"
+    assert main(["page", scene, "-o", str(out), "--frames", "360"]) == 0
+    page = browser.new_page(viewport={"width": 1280, "height": 900})
+    try:
+        page.goto(out.as_uri())
+        plots = page.evaluate(TICKS)
+    finally:
+        page.close()
+    assert len(plots) == 3
+    for ticks in plots:
+        said = [int(w.rstrip("°")) for w, _, _ in ticks]
+        step = said[1] - said[0]
+        assert 2 <= len(ticks) <= 7 and said[0] == 0 and said[-1] <= turned
+        assert step % 360 == 0 if turned > 720 else step in (90, 180)
+        assert all(b - a == step for a, b in zip(said, said[1:]))
+        for (_, _, right), (_, left, _) in zip(ticks, ticks[1:]):
+            assert left - right >= 2, ticks  # (viewBox units, about 4 px on the screen)
