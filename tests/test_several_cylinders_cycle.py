@@ -635,7 +635,7 @@ def test_the_drawn_energy_curve_is_the_quadrature_of_the_summed_diagram(tmp_path
     out = tmp_path / "cycle.svg"
     assert main(["draw", str(path), "--diagram", "cycle", "-o", str(out)]) == 0
     svg = out.read_text()
-    assert "cylinder B" in svg and "dE_max" in svg
+    assert "cylinder B" in svg and "ΔEₘₐₓ" in svg
     plain = tmp_path / "plain.toml"
     plain.write_text(
         '[ground]\nO = [0, 0]\nQ = [4, 0]\n[links]\nOA = 1\nAB = 4\nBQ = 2\n[input]\ncrank = "OA"\n'

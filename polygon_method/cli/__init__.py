@@ -184,7 +184,10 @@ def _add_draw(sub) -> None:
     )
     s.add_argument("--answers", help=ASKED_HELP)
     s.add_argument(
-        "--frames", type=int, help=f"frames of --animate over the cycle (default {DEFAULT_FRAMES})"
+        "--frames",
+        type=int,
+        help=f"frames of --animate over the cycle (default {DEFAULT_FRAMES}, or as many more "
+        "as follow a wheel turning fast)",
     )
     s.set_defaults(func=_cmd_draw)
 
@@ -203,8 +206,8 @@ def _add_page(sub) -> None:
     s.add_argument(
         "--frames",
         type=int,
-        default=DEFAULT_FRAMES,
-        help=f"frames over the cycle (default {DEFAULT_FRAMES})",
+        help=f"frames over the cycle (default {DEFAULT_FRAMES}, or as many more as "
+        "follow a wheel turning fast)",
     )
     s.set_defaults(func=_cmd_page)
 

@@ -105,8 +105,6 @@ def _cmd_draw(args) -> int:
                 key="--animate",
             )
         no_answers(args, "--animate draws the diagrams alone")
-        if args.frames is None:
-            args.frames = DEFAULT_FRAMES
         return _cmd_animate(args, out, fmt)
     if getattr(args, "frames", None) is not None:  # never silently ignored
         raise PolygonMethodError(
@@ -228,11 +226,10 @@ _PANEL_NAMES = {
 
 
 def _frames(args, scene, fmt=None):
-    """The scene's frames over its cycle (``--frames``: 2 to the most ``fmt`` allows)."""
-    from ..page import check_frames, frames
+    """The scene's frames (``--frames``, or the default: :func:`~..page.frames.asked`)."""
+    from ..page.frames import asked
 
-    check_frames(args.frames, fmt)
-    return frames(scene, args.frames)
+    return asked(scene, args.frames, fmt)
 
 
 def _cmd_page(args) -> int:
@@ -285,7 +282,7 @@ def _cmd_page(args) -> int:
         else f"between the limit positions ({fr.limits_text})"
     )
     print(
-        f"{out}: {len(fr)} frames {cycle}; "
+        f"{out}: {len(fr)} frames {cycle}{fr.said}; "
         + "; ".join(display_unit(s.text) for s in fr.scales)
         + f"; {len(html.encode()) / 1024:.0f} KiB"
     )
@@ -319,7 +316,8 @@ def _cmd_animate(args, out, fmt) -> int:
 
     from ..page import check_frames
 
-    check_frames(args.frames, fmt)  # before anything is computed
+    if args.frames is not None:
+        check_frames(args.frames, fmt)  # before anything is computed
     targets = check_outputs([(out, "-o")], protect=[args.scene])
     fr = _frames(args, load_scene(args.scene, variants=False, answers=False), fmt)
     data = animation(fr, fmt)
@@ -329,7 +327,9 @@ def _cmd_animate(args, out, fmt) -> int:
         if fmt == "svg"
         else "each polygon at its own round scale per frame, written on each picture"
     )
-    print(f"{out}: {len(fr)} frames; {scales}")
+    for note in fr.aliased("the pictures"):  # as the page says it
+        print(f"warning: {note}", file=sys.stderr)
+    print(f"{out}: {len(fr)} frames{fr.said}; {scales}")
     return 0
 
 

@@ -226,10 +226,13 @@ def _drawn(scene, key) -> None:
         )
 
 
-def _sheet(scene, out, key) -> int:
+def _sheet(scene, out, key, paper="A4") -> int:
+    from ..draw import paper_name
     from ..draw.energy import cycle_sheet
 
     _drawn(scene, key)
+    paper = paper_name(paper)
+
     fmt = out.suffix.lower().lstrip(".")
     if fmt not in ("svg", "png", "pdf"):
         raise PolygonMethodError(
@@ -237,8 +240,8 @@ def _sheet(scene, out, key) -> int:
         )
     targets = check_outputs([(out, key)], protect=[scene.file])
     c = _solved(scene)
-    write_outputs(targets, [(cycle_sheet(scene, c, fmt), fmt != "svg")])
-    print(f"{out}: the turning-moment diagram and the energy over the cycle, on A4")
+    write_outputs(targets, [(cycle_sheet(scene, c, fmt, paper), fmt != "svg")])
+    print(f"{out}: the turning-moment diagram and the energy over the cycle, on {paper} portrait")
     return 0
 
 
@@ -250,16 +253,15 @@ def _draw(args, scene) -> int:
         "scale": bool(getattr(args, "scale", None)),
         "frames": getattr(args, "frames", None) is not None,
         "centre-labels": getattr(args, "centre_labels", None) not in (None, "I13"),
-        "paper": str(getattr(args, "paper", "A4") or "A4").lower() != "a4",
         "answers": bool(getattr(args, "answers", None)),
     }
     for flag, on in given.items():
         if on:
             raise PolygonMethodError(
-                "a turning-moment diagram's sheet is one drawing on A4: leave it out",
+                "a turning-moment diagram's sheet is one drawing (on --paper): leave it out",
                 key=f"--{flag}",
             )
-    return _sheet(scene, Path(args.output), "-o")
+    return _sheet(scene, Path(args.output), "-o", getattr(args, "paper", None) or "A4")
 
 
 def _sweep(args, scene) -> int:

@@ -16,8 +16,9 @@ import numpy as np
 from ..forces.flywheel_cycle import curves
 from .paper import PAPERS
 from ..text.energy import book_number as _g
-from .heading import heading
+from .heading import flywheel_line, foot, heading
 from .sheet import figure_data
+from .style import PNG_DPI
 
 __all__ = ["cycle_sheet"]
 
@@ -25,11 +26,12 @@ _CM = 2.54
 _ABOVE, _BELOW = "#c8e6c9", "#ffcdd2"
 
 
-def cycle_sheet(scene, c, fmt: str):
-    """The sheet's file data (SVG text, PNG or PDF bytes) for the solved cycle ``c``."""
+def cycle_sheet(scene, c, fmt: str, paper: str = "A4"):
+    """The sheet's file data (SVG text, PNG or PDF bytes) for the solved cycle ``c``, on
+    ``paper`` (portrait)."""
     from matplotlib.figure import Figure
 
-    w, h = PAPERS["A4"]
+    w, h = PAPERS[paper]
     fig = Figure(figsize=(w / _CM, h / _CM), dpi=100)
     top = fig.add_axes((0.12, 0.56, 0.80, 0.34))
     low = fig.add_axes((0.12, 0.10, 0.80, 0.34))
@@ -40,15 +42,11 @@ def cycle_sheet(scene, c, fmt: str):
         _areas(c, top, low)
     else:
         _curve(scene, c, top, low)
-    foot = f"dE_max = {_g(c.dE_max)} J"
-    if c.inertia is not None:
-        foot += f";  I = {_g(c.inertia)} kg m^2 (Cs = {_g(c.Cs)}, w = {_g(c.speed)} rad/s)"
-    if c.mass is not None:
-        foot += f";  m = {_g(c.mass)} kg"
-    fig.text(0.5, 0.035, foot, ha="center", fontsize=10)
+    inertia = c.inertia
+    foot(fig, (w, h), paper, flywheel_line(c.dE_max, inertia, c.Cs, c.speed, c.mass))
     for ax in (top, low):
         ax.grid(True, lw=0.3, color="#bbbbbb")
-    return figure_data(fig, fmt)
+    return figure_data(fig, fmt, **({"dpi": PNG_DPI} if fmt == "png" else {}))
 
 
 def _curve(scene, c, top, low):
@@ -73,7 +71,7 @@ def _curve(scene, c, top, low):
     top.set_xlim(0, math.degrees(c.cycle))
     top.set_xlabel("crank angle (deg)")
     top.set_ylabel("torque (N m)")
-    top.set_title(f"turning moment; T_mean = {_g(c.T_mean)} N m", fontsize=10)
+    top.set_title(f"turning moment; Tₘₑₐₙ = {_g(c.T_mean)} N m", fontsize=10)
     top.legend(loc="upper right", fontsize=8)
     low.plot(deg, es, color="black", lw=1.2)
     low.set_xlim(0, math.degrees(c.cycle))
@@ -96,7 +94,7 @@ def _extremes(c, ax, where):
     ax.axhline(hi.energy, color="#2e7d32", lw=0.6, ls=":")
     ax.axhline(lo.energy, color="#c62828", lw=0.6, ls=":")
     ax.set_ylabel("energy above E at a (J)")
-    ax.set_title(f"energy; dE_max = E_max - E_min = {_g(c.dE_max)} J", fontsize=10)
+    ax.set_title(f"energy; ΔEₘₐₓ = Eₘₐₓ − Eₘᵢₙ = {_g(c.dE_max)} J", fontsize=10)
 
 
 def _areas(c, top, low):
@@ -142,4 +140,4 @@ def _press(scene, c, top, low):
     low.set_xlim(0, t)
     low.set_xlabel("time in the cycle (s)")
     low.set_ylabel("flywheel's energy (J)")
-    low.set_title(f"dE_max = E (1 - {_g(f)}) = {_g(c.dE_max)} J", fontsize=10)
+    low.set_title(f"ΔEₘₐₓ = E (1 − {_g(f)}) = {_g(c.dE_max)} J", fontsize=10)

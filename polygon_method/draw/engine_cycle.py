@@ -14,8 +14,9 @@ import math
 from ..linkage.flywheel import energy_curve, turning_moment
 from ..text.energy import book_number as _g
 from .paper import PAPERS
-from .heading import heading
+from .heading import flywheel_line, foot, heading
 from .sheet import figure_data
+from .style import PNG_DPI
 
 __all__ = ["engine_cycle_sheet"]
 
@@ -40,7 +41,7 @@ def engine_cycle_sheet(scene, fmt: str, paper: str = "A4"):
     top.plot(x, T, color="black", lw=1.2, label="turning moment T" + (" (the sum)" if many else ""))
     for k, (piston, t) in enumerate(parts if many else ()):
         top.plot(x, t, color=_DASHED[k % len(_DASHED)], lw=0.7, ls="--", label=f"cylinder {piston}")
-    top.axhline(tm.mean, color="#1565c0", lw=1.0, label=f"mean T_mean = {_g(tm.mean)} N m")
+    top.axhline(tm.mean, color="#1565c0", lw=1.0, label=f"mean Tₘₑₐₙ = {_g(tm.mean)} N m")
     top.fill_between(x, T, tm.mean, where=T >= tm.mean, color=_ABOVE, interpolate=True)
     top.fill_between(x, T, tm.mean, where=T <= tm.mean, color=_BELOW, interpolate=True)
     for c in tm.crossings:
@@ -51,7 +52,7 @@ def engine_cycle_sheet(scene, fmt: str, paper: str = "A4"):
         ax.set_xlabel(f"crank angle from the inner dead centre{first} (deg, with the rotation)")
         ax.grid(True, lw=0.3, color="#bbbbbb")
     top.set_ylabel("turning moment (N m)")
-    top.legend(fontsize=7, loc="best")
+    top.legend(fontsize=8, loc="best")
     low.plot(x, E, color="black", lw=1.2)
     low.set_ylabel("energy E above E at the first crossing (J)")
     hi, lo = _at_crossing(tm, tm.at_max), _at_crossing(tm, tm.at_min)
@@ -63,16 +64,12 @@ def engine_cycle_sheet(scene, fmt: str, paper: str = "A4"):
         xytext=(tm.at_max, lo),
         arrowprops=dict(arrowstyle="<->", color="#455a64", lw=0.8),
     )
-    low.text(tm.at_max, (hi + lo) / 2, f"  dE_max = {_g(tm.dE_max)} J", fontsize=9, va="center")
-    foot = f"dE_max = {_g(tm.dE_max)} J"
-    if tm.flywheel is not None:
-        cs, om, inertia, mass = tm.flywheel
-        foot += f";  I = {_g(inertia)} kg m^2 (Cs = {_g(cs)}, w = {_g(om)} rad/s)"
-        if mass is not None:
-            foot += f";  m = {_g(mass)} kg"
-    fig.text(0.5, 0.035, foot, ha="center", fontsize=10)
+    low.text(tm.at_max, (hi + lo) / 2, f"  ΔEₘₐₓ = {_g(tm.dE_max)} J", fontsize=9, va="center")
+    fly = tm.flywheel or (None,) * 4
+    cs, om, inertia, mass = fly
+    foot(fig, (w, h), paper, flywheel_line(tm.dE_max, inertia, cs, om, mass))
     words = f"{paper} portrait: the turning-moment diagram and the energy curve"
-    return figure_data(fig, fmt), words
+    return figure_data(fig, fmt, **({"dpi": PNG_DPI} if fmt == "png" else {})), words
 
 
 def _at_crossing(tm, angle) -> float:

@@ -9,11 +9,12 @@ from __future__ import annotations
 
 import re
 
-from .paper import MARGIN
+from ..text.energy import book_number as _g
+from .paper import FOOTER, MARGIN
 from .sketch import _text_size
-from .style import PT_PER_CM
+from .style import PT_PER_CM, SMALL_PT
 
-__all__ = ["heading", "wrap_words"]
+__all__ = ["heading", "wrap_words", "flywheel_line", "foot"]
 
 #: the least size (pt) a heading is set in to fit the room above the plots
 LEAST_PT = 8.0
@@ -62,5 +63,38 @@ def heading(fig, text: str, sheet: tuple, size: float, top: float, base: float =
         va="top",
         fontsize=size,
         linespacing=LEADING,
+        parse_math=False,
+    )
+
+
+def flywheel_line(dE_max, inertia=None, cs=None, omega=None, mass=None) -> str:
+    """The answers under a turning-moment diagram's plots as a book prints them, whatever
+    ``solve`` spells in ASCII (``dE_max``, ``kg m^2``, ``Cs``, ``w``).
+
+    >>> flywheel_line(1125.0, 0.5702, 0.02, 314.2, 25.34)
+    'ΔEₘₐₓ = 1125 J;  I = 0.5702 kg m² (Cₛ = 0.02, ω = 314.2 rad/s);  m = 25.34 kg'
+    """
+    out = f"ΔEₘₐₓ = {_g(dE_max)} J"
+    if inertia is not None:
+        out += f";  I = {_g(inertia)} kg m² (Cₛ = {_g(cs)}, ω = {_g(omega)} rad/s)"
+    if mass is not None:
+        out += f";  m = {_g(mass)} kg"
+    return out
+
+
+def foot(fig, sheet: tuple, paper: str, answers: str) -> None:
+    """The foot of a sheet of ``sheet`` = (width, height) cm drawn as one figure: the
+    ``answers`` centred above the line naming the ``paper`` (as every sheet of ``draw``
+    names it, at the same place: its plots are not to a scale, its page is the paper's)."""
+    w, h = sheet
+    base = MARGIN + FOOTER + 0.1  # cm: the answers' baseline, over the paper's line
+    fig.text(0.5, base / h, answers, ha="center", fontsize=10, parse_math=False)
+    fig.text(
+        MARGIN / w,
+        (MARGIN + FOOTER / 2) / h,
+        f"{paper} portrait ({w:g} x {h:g} cm)",
+        fontsize=SMALL_PT,
+        ha="left",
+        va="center",
         parse_math=False,
     )

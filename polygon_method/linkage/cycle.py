@@ -52,7 +52,8 @@ def samples_to_follow(plan, span, n) -> int:
     fast = _fastest(plan)
     if fast is None:
         return n
-    return max(n, min(MOST_SAMPLES, math.ceil(span * fast[0] / MOST_PER_SAMPLE)))
+    need = math.ceil(span * fast[0] / MOST_PER_SAMPLE * (1 - SAME))  # (10 deg is followed)
+    return max(n, min(MOST_SAMPLES, need))
 
 
 def _too_fast(scene, plan, h) -> str | None:
@@ -63,7 +64,7 @@ def _too_fast(scene, plan, h) -> str | None:
     if fast is None:
         return None
     rate, st = fast
-    if not rate * h > MOST_PER_SAMPLE:
+    if not rate * h > MOST_PER_SAMPLE * (1 + SAME):  # (10 deg, to rounding, follows it)
         return None
     return (
         f"{st.title} turns {rate:.3g} times as fast as the crank {scene.input.crank}: "

@@ -8,6 +8,7 @@
 
 from .frames import (
     DEFAULT_FRAMES,
+    MAX_FOLLOW_FRAMES,
     MAX_FRAMES,
     MAX_PICTURE_FRAMES,
     Frames,
@@ -22,6 +23,7 @@ __all__ = [
     "DEFAULT_FRAMES",
     "MAX_FRAMES",
     "MAX_PICTURE_FRAMES",
+    "MAX_FOLLOW_FRAMES",
     "max_frames",
     "check_frames",
     "page_html",

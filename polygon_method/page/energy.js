@@ -65,3 +65,17 @@
   });
   show(Number(slider.value));
 })();
+
+// printed: the folded parts (the step table, the problem) opened for the paper, and
+// folded again after (one handler, whichever of the page's scripts comes first)
+if (!window.pmPrint) {
+  window.pmPrint = [];
+  window.addEventListener("beforeprint", function () {
+    window.pmPrint = Array.prototype.filter.call(document.querySelectorAll("details"), function (d) { return !d.open; });
+    window.pmPrint.forEach(function (d) { d.open = true; });
+  });
+  window.addEventListener("afterprint", function () {
+    window.pmPrint.forEach(function (d) { d.open = false; });
+    window.pmPrint = [];
+  });
+}

@@ -103,8 +103,9 @@ class Plot:
         for v, label in xticks:
             x = float(self.px(v))
             out.append(f'<line class="grid" x1="{x:.2f}" x2="{x:.2f}" y1="{_T}" y2="{bottom}"/>')
+            end = "end" if x > right - _R else "middle"  # the last kept inside the plot
             out.append(
-                f'<text class="tick" x="{x:.2f}" y="{bottom + 16}" text-anchor="middle">'
+                f'<text class="tick" x="{x:.2f}" y="{bottom + 16}" text-anchor="{end}">'
                 f"{escape(label)}</text>"
             )
         out.append(

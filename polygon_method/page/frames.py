@@ -43,6 +43,8 @@ __all__ = [
     "need_frames",
     "round_sig",
     "MAX_FRAME_POINTS",
+    "MAX_FOLLOW_FRAMES",
+    "frames_to_follow",
 ]
 
 #: frames of a cycle when none are asked for (2 deg apart over a full turn)
@@ -77,6 +79,11 @@ def check_frames(n, fmt: str | None = None) -> int:
 #: some 60 MB, which a browser still opens)
 MAX_FRAME_POINTS = 1_000_000
 
+#: the most frames a page or an SVG animation takes of itself to follow a wheel or a second
+#: crank turning fast (a differential's planet, 15 times its arm over the arm's 10 turns):
+#: three times what ``--frames`` may ask, a page of a few MB
+MAX_FOLLOW_FRAMES = 3 * MAX_FRAMES
+
 #: how far inside a limit position the frames stop, as a fraction of the range
 INSIDE = 0.004
 
@@ -84,6 +91,9 @@ INSIDE = 0.004
 @dataclass(frozen=True)
 class Frames:
     """A scene's motion over its cycle, frame by frame.
+
+    ``followed`` says, where the count of frames was raised above the one asked to follow a
+    wheel turning fast (:func:`frames_to_follow`), by how much and why; "" elsewhere.
 
     ``res`` is the :class:`~polygon_method.motion.sweeps.SweepResult` (its ``theta`` in frame
     order), ``sol`` the solution at the scene's instant (frame ``start``), ``scales`` the
@@ -98,6 +108,7 @@ class Frames:
     start: int
     full_turn: bool
     cycle: float = 2 * math.pi
+    followed: str = ""
 
     @property
     def cycle_degrees(self) -> float:
@@ -107,6 +118,18 @@ class Frames:
 
     def __len__(self):
         return len(self.res)
+
+    @property
+    def said(self) -> str:
+        """ ", not 180: ..." where the count was raised to follow a wheel (``followed``)."""
+        return f", {self.followed}" if self.followed else ""
+
+    def aliased(self, what) -> tuple:
+        """The note that ``what`` (the curves, the pictures) may be aliased, where the
+        frames cannot follow a wheel turning fast; () where they can."""
+        from ..linkage.cycle import sweep_aliased
+
+        return sweep_aliased(self.res, what)
 
     @property
     def degrees(self) -> np.ndarray:
@@ -162,10 +185,62 @@ def frame_angles(scene, n: int, domain) -> tuple[np.ndarray, int]:
     return np.insert(th, k, t0), k
 
 
-def frames(scene, n: int = DEFAULT_FRAMES) -> Frames:
-    """The scene's motion at ``n`` crank angles over its cycle, in one vectorised sweep
-    (``n`` from 2 to :data:`MAX_FRAMES`)."""
+def frames_to_follow(scene, n: int = DEFAULT_FRAMES, most: int = MAX_FOLLOW_FRAMES):
+    """(count, words): ``n`` frames, or as many more (up to ``most``, and to what a page
+    holds, :data:`MAX_FRAME_POINTS`) as keep the wheel or second crank turning fastest at a
+    fixed ratio of the crank within ``linkage``'s :data:`~polygon_method.linkage.cycle.MOST_PER_SAMPLE`
+    (10 deg) between two frames, so that the picture shows its own turning, not a wheel
+    jumping a third of a turn (or seeming to turn back) from frame to frame; the words say
+    so where the count was raised, else ""."""
+    from ..linkage.cycle import samples_to_follow
+
     n = check_frames(n)
+    sw = Sweeper(scene)
+    dom, plan = sw.domain, sw.plan
+    span = cycle_of(scene, dom) if dom.full_turn else dom.hi - dom.lo
+    points = max(len(getattr(scene, "point_names", ())), 1)
+    need = samples_to_follow(plan, span, n)
+    if need > n and not dom.full_turn:  # n frames between the limits: n - 1 gaps
+        need += 1
+    k = min(need, most, max(n, MAX_FRAME_POINTS // points))
+    if k <= n:
+        return n, ""
+    rate, st = max(
+        (abs(r), s) for s in plan.steps if (r := getattr(s, "theta_rate", None)) is not None
+    )
+    turn = math.degrees(rate * span / (k if dom.full_turn else k - 1))
+    words = (
+        f"not {n}: {st.title} turns {rate:.3g} times as fast as the crank {scene.input.crank}, "
+        + (
+            f"at most {turn:.3g} deg between two frames (the picture follows it)"
+            if k == need
+            else f"{turn:.3g} deg between two frames: the most frames it may hold"
+        )
+    )
+    return k, words
+
+
+def asked(scene, n, fmt=None) -> Frames:
+    """The frames ``--frames n`` asks (2 to the most ``fmt`` holds: a page's, None, or an
+    animation's); without it (``n`` None), 180 or as many more as follow a wheel turning
+    fast, up to what ``fmt`` holds (:func:`frames_to_follow`), the frames saying so."""
+    if n is None:
+        return frames(
+            scene, DEFAULT_FRAMES, follow=MAX_FOLLOW_FRAMES if fmt is None else max_frames(fmt)
+        )
+    check_frames(n, fmt)
+    return frames(scene, n)
+
+
+def frames(scene, n: int = DEFAULT_FRAMES, *, follow: int = 0) -> Frames:
+    """The scene's motion at ``n`` crank angles over its cycle, in one vectorised sweep
+    (``n`` from 2 to :data:`MAX_FRAMES`); with ``follow`` (a count of frames), at least
+    ``n`` and at most ``follow``: as many as :func:`frames_to_follow` takes to follow a
+    wheel turning fast."""
+    n = check_frames(n)
+    followed = ""
+    if follow:
+        n, followed = frames_to_follow(scene, n, follow)
     points = len(getattr(scene, "point_names", ()))
     if n * points > MAX_FRAME_POINTS:  # the page holds every point at every frame
         raise SceneError(
@@ -182,7 +257,8 @@ def frames(scene, n: int = DEFAULT_FRAMES) -> Frames:
     kept = res.theta
     if len(kept) != len(th):  # angles at a singular position were left out
         start = int(np.argmin(np.abs(kept - scene.input.angle)))
-    return Frames(res, sol, scales, start, bool(domain.full_turn), cycle_of(scene, domain))
+    full = bool(domain.full_turn)
+    return Frames(res, sol, scales, start, full, cycle_of(scene, domain), followed)
 
 
 def cycle_of(scene, domain) -> float:

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from html import escape
 from importlib.resources import files
 
@@ -32,7 +33,6 @@ from ..draw.style import (
 )
 from ..common.numbers import fmt
 from ..draw.plots import MARK_NAMES, MARKS
-from ..linkage.cycle import sweep_aliased
 from ..text.steptable import steps_blocks
 from ..text.words import given
 from .data import page_data
@@ -45,23 +45,55 @@ def _asset(name: str) -> str:
     return files(__package__).joinpath(name).read_text(encoding="utf-8")
 
 
+#: the step table's ASCII as a book prints it (the page's own values already are): a
+#: square, omega and alpha, a quantity's subscript, a product's times, degrees
+_BOOK = (
+    (re.compile(r"\bomega(s?)\b"), r"ω\1"),
+    (re.compile(r"\balpha\b"), "α"),
+    (re.compile(r"\bomega_"), "ω_"),
+    (re.compile(r"\balpha_"), "α_"),
+    (re.compile(r"(?<=[\w).²]) x (?=[\w(ω])(?!axis|-axis)"), " × "),
+    (re.compile(r"(?<![\w-])([A-Za-zωα])_([A-Za-z0-9]+(?:-[A-Za-z0-9]+)?)"), r"\1<sub>\2</sub>"),
+    (re.compile(r"(?<=\d) deg\b"), "°"),
+    (re.compile(r"\^2\b"), "²"),
+    (re.compile(r"\^3\b"), "³"),
+)
+
+
+def book_html(text: str) -> str:
+    """``text`` (the step table's words, ASCII) as HTML written as a book prints it.
+
+    >>> book_html("omega_BC = v_CB / BC = 0.3399 / 0.066 = 5.15 rad/s; alpha x AB")
+    'ω<sub>BC</sub> = v<sub>CB</sub> / BC = 0.3399 / 0.066 = 5.15 rad/s; α × AB'
+    >>> book_html("v_B = omega_AB x AB")
+    'v<sub>B</sub> = ω<sub>AB</sub> × AB'
+    >>> book_html("v_BA^2 / BA = 5.513 m/s^2 at 30 deg with the x axis, 10.5 x 0.05")
+    'v<sub>BA</sub>² / BA = 5.513 m/s² at 30° with the x axis, 10.5 × 0.05'
+    """
+    out = escape(text)
+    for pattern, to in _BOOK:
+        out = pattern.sub(to, out)
+    return out
+
+
 def blocks_html(blocks) -> str:
-    """The step table's blocks (headings, paragraphs, lists, tables) as HTML."""
+    """The step table's blocks (headings, paragraphs, lists, tables) as HTML, written as a
+    book prints them (:func:`book_html`)."""
     out = []
     for b in blocks:
         kind = b[0]
         if kind == "title":
             continue
         if kind == "h":
-            out.append(f"<h3>{escape(b[1])}</h3>")
+            out.append(f"<h3>{book_html(b[1])}</h3>")
         elif kind == "p":
-            out.append(f"<p>{escape(b[1])}</p>")
+            out.append(f"<p>{book_html(b[1])}</p>")
         elif kind == "list":
-            out.append("<ul>" + "".join(f"<li>{escape(i)}</li>" for i in b[1]) + "</ul>")
+            out.append("<ul>" + "".join(f"<li>{book_html(i)}</li>" for i in b[1]) + "</ul>")
         else:
-            head = "".join(f"<th>{escape(c)}</th>" for c in b[1])
+            head = "".join(f"<th>{book_html(c)}</th>" for c in b[1])
             rows = "".join(
-                "<tr>" + "".join(f"<td>{escape(c)}</td>" for c in r) + "</tr>" for r in b[2]
+                "<tr>" + "".join(f"<td>{book_html(c)}</td>" for c in r) + "</tr>" for r in b[2]
             )
             out.append(
                 f'<div class="scroll"><table><thead><tr>{head}</tr></thead><tbody>{rows}'
@@ -229,7 +261,9 @@ def _engine_script(eng) -> str:
 def _notes(fr) -> str:
     """The sweep's notes as list items, and where its frames cannot follow a second input
     (``linkage``'s check), that its curves may be aliased."""
-    said = fr.res.notes + sweep_aliased(fr.res, "the curves and the frames")
+    said = fr.res.notes + fr.aliased("the curves and the frames")
+    if fr.followed:  # the count raised to follow a wheel: said, as every default is
+        said += (f"{len(fr)} frames, {fr.followed}.",)
     return "".join(f"<li>{escape(n)}</li>" for n in said)
 
 

@@ -678,7 +678,9 @@ function buildPlots() {
       el(svg, "line", {x1: L, y1: r3(Y(y)), x2: W - R, y2: r3(Y(y)), class: y === 0 ? "axis" : "grid"});
       text(svg, {x: L - 3, y: r3(Y(y) + 3.5), class: "tick", "text-anchor": "end"}, fmt(y, 3));
     }
-    const turned = Math.abs(t1 - t0), dstep = [5, 10, 15, 30, 45, 60, 90, 180].find((s) => turned / s <= 6) || 360;
+    // at most 6 steps: whole turns, 2 or 5 of them, ... over a period of many turns (a
+    // differential's 10 turns once had 11 ticks, 0° to 3600°, running together)
+    const turned = Math.abs(t1 - t0), dstep = [5, 10, 15, 30, 45, 60, 90, 180, 360, 720, 1800, 3600, 7200, 18000].find((s) => turned / s <= 6) || 36000;
     const xt = [];  // a round angle, written between 0 and the cycle (360); a block's
     // place: round numbers (1, 2 or 5 x 10^k apart), its unit in the axis' title; over a
     // cycle of more than a turn (a four-stroke's 720°) the angle turned from the first
@@ -744,3 +746,17 @@ for (const phase of PHASES) setup(phase);
 buildValues();
 buildPlots();
 show(D.start);
+
+// printed: the folded parts (the step table, the problem) opened for the paper, and
+// folded again after (one handler, whichever of the page's scripts comes first)
+if (!window.pmPrint) {
+  window.pmPrint = [];
+  window.addEventListener("beforeprint", function () {
+    window.pmPrint = Array.prototype.filter.call(document.querySelectorAll("details"), function (d) { return !d.open; });
+    window.pmPrint.forEach(function (d) { d.open = true; });
+  });
+  window.addEventListener("afterprint", function () {
+    window.pmPrint.forEach(function (d) { d.open = false; });
+    window.pmPrint = [];
+  });
+}

@@ -190,7 +190,7 @@ class Pictures:
         d, xy = self.d, self.xy[phase]
         if phase == "configuration":
             out = list(xy.values())
-            for c, r in d["wheels"]:
+            for c, r, *_ in d["wheels"]:
                 out += [xy[c] - r, xy[c] + r]
             return out
         out = [np.zeros((self.n, 2))] + [xy[p] for p in d["points"]]
@@ -356,7 +356,7 @@ class _Panel:
                         (c[0] + big * u[0], c[1] + big * u[1]),
                         "line",
                     )
-            for c, r in d["wheels"]:
+            for c, r, *_ in d["wheels"]:
                 x, y = self.pt(c)
                 rr = r * self.px
                 self.dr.ellipse([x - rr, y - rr, x + rr, y + rr], outline=PITCH_STYLE[0], width=SS)
