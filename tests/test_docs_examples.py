@@ -13,8 +13,12 @@ the expected value, never the tool's output frozen here:
   of a scene, as the doc presents it) is completed with the worked problem named in
   ``FRAGMENTS`` below, the snippet's tables taking the place of the problem's; an answer
   file against its scene, a turning-moment diagram on its own with ``parse_cycle``;
-- the Python blocks run; the commands of the benchmark scripts name files and options
-  that exist.
+- the commands written in the prose take the options they show, and those on a worked
+  problem run;
+- the Python blocks run, a value shown in a comment (``expr  # ['A4 portrait']``) is the
+  expression's value; the JSON shown is what ``solve --json`` has; the commands of the
+  benchmark scripts name files and options that exist; the README's two commands for a
+  fresh machine fit pyproject.toml and the CI.
 
 Every block is claimed by one of these (``test_every_block_is_held``): a new example
 is run, or named here with the reason it is not.
@@ -22,11 +26,13 @@ is run, or named here with the reason it is not.
 
 from __future__ import annotations
 
+import ast
 import contextlib
 import io
 import json
 import re
 import shlex
+import tokenize
 import tomllib
 from pathlib import Path
 
@@ -186,6 +192,23 @@ for _name, _line, _lang, _text in BLOCKS:
         _SYNOPSES.append(pytest.param(_cmd, id=f"{_name}:{_line}:{_argv(_cmd)[0]}"))
         if not _is_synopsis(_argv(_strip_optional(_cmd))):
             _RUNS.append(pytest.param(_strip_optional(_cmd), _out, id=f"{_name}:{_line}"))
+
+
+def _inline_commands():
+    """(file, line, command) of each command written in the prose, `polygon-method ...`
+    (a table's escaped ``\\|`` read as ``|``)."""
+    for name in DOC_FILES:
+        for number, text in enumerate((ROOT / name).read_text(encoding="utf-8").splitlines()):
+            for cmd in re.findall(r"`((?:polygon-method|python -m polygon_method) [^`]+)`", text):
+                yield name, number + 1, cmd.replace("\\|", "|")
+
+
+for _name, _line, _cmd in _inline_commands():
+    _SYNOPSES.append(pytest.param(_cmd, id=f"{_name}:{_line}:{_argv(_cmd)[0]}"))
+    _bare = _argv(_strip_optional(_cmd))
+    # a command on a worked problem, as written (not "scene.toml answers.toml")
+    if not _is_synopsis(_bare) and any(w.startswith("worked_problems/") for w in _bare):
+        _RUNS.append(pytest.param(_strip_optional(_cmd), [], id=f"{_name}:{_line}"))
 
 
 @pytest.mark.parametrize("cmd, shown", _RUNS)
@@ -431,12 +454,34 @@ def _python_params():
             yield pytest.param(name, text, id=f"{name}:{line}")
 
 
+def _shown_values_asserted(text):
+    """The block with each bare expression whose comment is a Python value (``x  # ['A4
+    portrait']``) turned into an assertion that it is that value."""
+    comments = {
+        tok.start[0]: tok.string[1:].strip()
+        for tok in tokenize.generate_tokens(io.StringIO(text).readline)
+        if tok.type == tokenize.COMMENT
+    }
+    tree = ast.parse(text)
+    for i, node in enumerate(tree.body):
+        comment = comments.get(node.end_lineno, "")
+        try:
+            ast.literal_eval(comment)
+        except (ValueError, SyntaxError):
+            continue
+        if isinstance(node, ast.Expr):
+            shown = ast.parse(comment, mode="eval").body
+            test = ast.Compare(node.value, [ast.Eq()], [shown])
+            tree.body[i] = ast.copy_location(ast.Assert(test), node)
+    return ast.fix_missing_locations(tree)
+
+
 @pytest.mark.parametrize("name, text", list(_python_params()))
 def test_a_python_block_runs(scratch, name, text, capsys):
     # errors.md's block reads "fourbar.toml": the four-bar of its lines, that cannot assemble
     scene = _FOURBAR.replace("D = [100, 0]", "D = [80, 0]").replace("angle = 60", "angle = 180")
     Path("fourbar.toml").write_text(scene)
-    exec(compile(text, name, "exec"), {"__name__": "__doc_example__"})
+    exec(compile(_shown_values_asserted(text), name, "exec"), {"__name__": "__doc_example__"})
     if "AssemblyError" in text:
         assert capsys.readouterr().out.startswith("step 2 (dyad BC, CD at C) cannot assemble C")
 
@@ -544,3 +589,26 @@ def test_every_block_is_held():
             or key.startswith('docs/scene-format.md: "error_bounds": {')
         )
         assert held, f"{name}:{line}: an example no test runs"
+
+
+def test_the_readmes_drawing_is_two_a4_pages_at_the_step_tables_scales(scratch):
+    """README: `draw ... -o fourbar.pdf` "(two A4 pages at the step table's scales; one
+    page with `--paper A3`)"."""
+    readme = " ".join((ROOT / "README.md").read_text(encoding="utf-8").split())
+    cmd = "polygon-method draw worked_problems/fourbar_image_points.toml -o fourbar.pdf"
+    assert f"`{cmd}` (two A4 pages at the step table's scales; one page with `--paper A3`)" in (
+        readme
+    )
+    code, steps = _run(["steps", "worked_problems/fourbar_image_points.toml"])
+    assert code == 0
+    scales = re.findall(
+        r"^(?:Space|Velocity|Acceleration) scale: (1 cm = [^ ]+ [^ (]+)", steps, re.M
+    )
+    assert len(scales) == 3
+    code, a4 = _run(_argv(cmd))
+    assert code == 0 and a4.splitlines()[0].startswith("fourbar.pdf: 2 pages on A4")
+    code, a3 = _run(_argv(cmd) + ["--paper", "A3"])
+    assert code == 0 and a3.startswith("fourbar.pdf: A3 ") and len(a3.splitlines()) == 1
+    for printed in (a4.splitlines()[0], a3):
+        shown = re.findall(r"(?:configuration|velocity|acceleration) (1 cm = [^;]+)", printed)
+        assert [s.strip().replace("²", "^2") for s in shown] == scales
