@@ -228,6 +228,9 @@ def test_every_option_a_command_shows_is_taken(cmd):
     assert code == 0
     for option in re.findall(r"(?<![\w-])(--?[a-z][\w-]*)", cmd):
         assert re.search(rf"(?<![\w-]){re.escape(option)}(?![\w-])", helptext), option
+    words = set(re.findall(r"[\w.]+", helptext))
+    for option, choices in re.findall(r"(--[\w-]+)[ =]([\w.]+(?:\|[\w.]+)+)", cmd):
+        assert set(choices.split("|")) <= words, (option, choices)
 
 
 # Output shown without its command beside it: the command the prose around it names, and
