@@ -615,3 +615,42 @@ def test_the_readmes_drawing_is_two_a4_pages_at_the_step_tables_scales(scratch):
     for printed in (a4.splitlines()[0], a3):
         shown = re.findall(r"(?:configuration|velocity|acceleration) (1 cm = [^;]+)", printed)
         assert [s.strip().replace("²", "^2") for s in shown] == scales
+
+
+def test_the_readmes_scene_is_its_worked_problem_shortened():
+    """README: "(`worked_problems/fourbar_image_points.toml`, shortened, with a question
+    `a_C = "?"` added)": every entry it shows is the worked problem's (its title cut
+    short), but the question it says it adds."""
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    said = re.search(
+        r"\(`(worked_problems/[\w/]+\.toml)`, shortened, with a question `(\w+) = ", readme
+    )
+    (text,) = [t for k, (n, _, lang, t) in KEYED.items() if n == "README.md" and lang == "toml"]
+    shown, worked = tomllib.loads(text), tomllib.loads((ROOT / said.group(1)).read_text())
+    assert worked["title"].startswith(shown.pop("title"))
+    assert shown["answers"].pop(said.group(2)) == "?" and said.group(2) not in worked["answers"]
+
+    def within(part, whole, where):
+        for key, value in part.items():
+            if isinstance(value, dict):
+                within(value, whole[key], f"{where}{key}.")
+            else:
+                assert whole.get(key) == value, where + key
+
+    within(shown, worked, "")
+
+
+def test_the_readmes_check_finds_the_notes_slip(scratch):
+    """README: "`polygon-method check` finds the notes' slip (`v_CB = 0.84` written for
+    0.34 m/s)"."""
+    readme = " ".join((ROOT / "README.md").read_text(encoding="utf-8").split())
+    said = re.search(
+        r"finds the notes' slip \(`(\w+) = ([\d.]+)` written for ([\d.]+) m/s\)", readme
+    )
+    key, written, meant = said.groups()
+    code, printed = _run(["check", "worked_problems/fourbar_image_points.toml"])
+    assert code == 1
+    (row,) = [ln for ln in printed.splitlines() if ln.startswith(f"{key} ")]
+    assert row.split()[1] == written and row.split()[-1] == "WRONG"
+    after = printed.split(row, 1)[1].splitlines()[1]
+    assert "slip of the pen" in after and f"{written} written for {meant}" in after
