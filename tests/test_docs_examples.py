@@ -654,3 +654,43 @@ def test_the_readmes_check_finds_the_notes_slip(scratch):
     assert row.split()[1] == written and row.split()[-1] == "WRONG"
     after = printed.split(row, 1)[1].splitlines()[1]
     assert "slip of the pen" in after and f"{written} written for {meant}" in after
+
+
+def test_the_test_tools_the_readme_installs_are_all_the_tests_import():
+    """``pip install -e '.[test]'`` then ``python -m pytest``: every package the tests, the
+    doctests' modules and the benchmark modules the tests load import is installed by the
+    project's dependencies or its test extra (or comes with one of them: Pillow with
+    matplotlib)."""
+    import importlib.metadata as md
+    import sys
+
+    def name(requirement):
+        return re.sub(r"[-_.]+", "-", re.split(r"[<>=!~\[ ;(]", requirement)[0]).lower()
+
+    project = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
+    (extra,) = re.findall(r"\.\[(\w+)\]", _install_commands()[1])
+    todo = [name(r) for r in project["dependencies"] + project["optional-dependencies"][extra]]
+    installed = set()
+    while todo:
+        dist = todo.pop()
+        if dist not in installed:
+            installed.add(dist)
+            with contextlib.suppress(md.PackageNotFoundError):
+                todo += [name(r) for r in md.requires(dist) or [] if "extra ==" not in r]
+    local = {p.stem for p in (ROOT / "tests").glob("*.py")}
+    local |= {p.stem for p in (ROOT / "benchmarks").glob("*.py")} | {"polygon_method"}
+    sources = [*(ROOT / "tests").glob("*.py"), *(ROOT / "polygon_method").rglob("*.py")]
+    sources += [
+        ROOT / "benchmarks" / f"{m}.py" for m in ("methods", "error_bounds", "edge_families")
+    ]
+    imported = set()
+    for path in sources:
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.Import):
+                imported |= {a.name.split(".")[0] for a in node.names}
+            elif isinstance(node, ast.ImportFrom) and node.level == 0:
+                imported.add(node.module.split(".")[0])
+    distributions = md.packages_distributions()
+    for module in sorted(imported - set(sys.stdlib_module_names) - local):
+        dists = {name(d) for d in distributions.get(module, [module])}
+        assert dists & installed, f"{module} is imported but not installed by .[{extra}]"
