@@ -194,6 +194,9 @@ for _name, _line, _lang, _text in BLOCKS:
             _RUNS.append(pytest.param(_strip_optional(_cmd), _out, id=f"{_name}:{_line}"))
 
 
+_SUBCOMMANDS = "solve plan steps check variants draw page sweep linkage centres".split()
+
+
 def _inline_commands():
     """(file, line, command) of each command written in the prose, `polygon-method ...`
     (a table's escaped ``\\|`` read as ``|``)."""
@@ -201,6 +204,8 @@ def _inline_commands():
         for number, text in enumerate((ROOT / name).read_text(encoding="utf-8").splitlines()):
             for cmd in re.findall(r"`((?:polygon-method|python -m polygon_method) [^`]+)`", text):
                 yield name, number + 1, cmd.replace("\\|", "|")
+            for cmd in re.findall(rf"`((?:{'|'.join(_SUBCOMMANDS)}) --?[a-z][^`]*)`", text):
+                yield name, number + 1, "polygon-method " + cmd  # `draw --forces`
 
 
 for _name, _line, _cmd in _inline_commands():
