@@ -231,6 +231,7 @@ def test_two_blocks_guides_at_60_by_hand():
         "hunt5_valve_eccentric_on_crank_shaft",
         "hunt5_oscillating_cylinder_offset_trunnion",
         "hunt5_two_blocks_guides_at_60",
+        "hunt5_swinging_link_block_on_offset_pin",
     ],
 )
 def test_book_answers(name):
@@ -289,6 +290,17 @@ def test_the_slot_square_to_the_block_is_a_limit_refused_at_and_warned_near():
     assert "stands square to QA (condition 0)" in str(exc.value)
     near = solve(parse_scene(_lever("30", "-89.9")))
     assert any("nearly square to QA" in w for w in near.warnings)
+
+
+def test_the_guide_named_from_its_far_end_turns_the_side_over():
+    """along = "BQ" (first B, the lever's far end) looks the other way along the lever: its
+    "30 right" is "QB"'s "30 left", the same slot, the same motion."""
+    one = solve(parse_scene(_lever('"30 left"', "20")))
+    two = solve(parse_scene(_lever('"30 right"', "20").replace('"QB"', '"BQ"')))
+    for p in ("A", "B"):
+        for got, want in zip(two.P[p] + two.V[p] + two.A[p], one.P[p] + one.V[p] + one.A[p]):
+            assert abs(got - want) < 1e-12
+    assert abs(two.S["A"][0] + one.S["A"][0]) < 1e-12  # signed the other way along it
 
 
 def test_the_offset_sign_and_words_agree():
