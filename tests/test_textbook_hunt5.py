@@ -360,3 +360,19 @@ def test_every_view_says_the_offset_slot(capsys, tmp_path):
         "A block at A slides in a slot of link QB parallel to its line Q -> B, 30 mm to the "
         "left of it." in given(load_scene(path))
     )
+
+
+@pytest.mark.parametrize(
+    "offset, words",
+    [
+        ('"30 upward"', "offset = '30 upward': unknown unit 'upward'"),
+        ('"left"', "offset = 'left': cannot read ''"),
+        ('"30 deg"', "offset = '30 deg': 'deg' is a unit of angle"),
+        ("[1, 2]", "offset = [1, 2]: expected a number"),
+    ],
+)
+def test_an_offset_not_a_length_is_one_line_naming_the_key(offset, words):
+    with pytest.raises(PolygonMethodError) as exc:
+        parse_scene(_lever(offset))
+    msg = str(exc.value)
+    assert words in msg and 'e.g. "30 mm left"' in msg and "\n" not in msg

@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 import re
 
+from ..common.errors import SceneError
 from ..common.tolerances import SAME
 from .records import FixedPath, GuideSlider, YokeSlot, guide_words, split_name
 from .table_help import _suggest, _unit_at
@@ -118,7 +119,7 @@ class _Sliders:
         """An offset slot's distance from the link's line, signed to the left looking from
         the guide's first point to its second: a signed length (``offset = 40``, ``-40``,
         ``"40 mm"``) or with the side in words (``"40 mm left"``, ``"40 right"``)."""
-        side = 1.0
+        side, given = 1.0, raw
         if isinstance(raw, str):
             m = re.match(r"^\s*(.*?)[\s,]*\b(left|right)\s*$", raw)
             if m:
@@ -130,7 +131,15 @@ class _Sliders:
                         "sliders",
                         name,
                     )
-        e = side * self.length(raw, "sliders", name, positive=False)
+        try:
+            e = side * self.length(raw, "sliders", name, positive=False)
+        except SceneError as exc:
+            raise self.error(
+                f"offset = {given!r}: {exc.message.rstrip('.')}; give the slot's distance off "
+                'the link\'s line and its side, e.g. "30 mm left" (or a signed length)',
+                "sliders",
+                name,
+            ) from None
         if e == 0.0:
             raise self.error(
                 "offset = 0: the slot is on the link's own line; leave offset out",
