@@ -18,6 +18,7 @@ import math
 from pathlib import Path
 
 import mpmath
+import numpy as np
 import pytest
 from mpmath import mpf
 
@@ -232,6 +233,7 @@ def test_two_blocks_guides_at_60_by_hand():
         "hunt5_oscillating_cylinder_offset_trunnion",
         "hunt5_two_blocks_guides_at_60",
         "hunt5_swinging_link_block_on_offset_pin",
+        "hunt5_pantograph_tracing_point",
     ],
 )
 def test_book_answers(name):
@@ -376,3 +378,47 @@ def test_an_offset_not_a_length_is_one_line_naming_the_key(offset, words):
         parse_scene(_lever(offset))
     msg = str(exc.value)
     assert words in msg and 'e.g. "30 mm left"' in msg and "\n" not in msg
+
+
+def test_a_greatest_value_at_a_change_point_is_not_read_as_noise():
+    """Q 130 mm under O, the crank 100 mm, the slot 30 mm off: at 270 deg |QA| = 30 mm, the
+    slot's line touches the block (a change point, followed continuous in velocity), and
+    there the Coriolis component is greatest. The sweep's sample there is its Richardson
+    extrapolation; its bound is that of the angles it is made from, not the plan's at a
+    condition of nought (which called 46.74 m/s^2 noise: "ac_A 0 (constant)"). The value:
+    2 omega vs on the branch that keeps omega_QB continuous (the lever's angle by the
+    tangent, differentiated at 40 digits just before 270 deg)."""
+    from polygon_method.linkage.summary import summarize
+
+    e, q, r, w = mpf("0.03"), mpf("-0.13"), mpf("0.1"), -2 * pi * 200 / 60
+
+    def lever(t):
+        ax, ay = r * mpmath.cos(t), r * mpmath.sin(t) - q
+        return mpmath.atan2(ay, ax) - mpmath.atan2(e, -mpmath.sqrt(ax * ax + ay * ay - e * e))
+
+    th = mpmath.radians(270) - mpmath.radians(mpf("1e-9"))
+    wq = mpmath.diff(lever, th) * w
+    rel, u = (
+        (r * mpmath.cos(th), r * mpmath.sin(th) - q),
+        (mpmath.cos(lever(th)), mpmath.sin(lever(th))),
+    )
+    v = (-r * mpmath.sin(th) * w + wq * rel[1], r * mpmath.cos(th) * w - wq * rel[0])
+    want = abs(2 * wq * (v[0] * u[0] + v[1] * u[1]))
+    ext = {x.name: x for x in summarize(parse_scene(_lever("30", "10"))).extremes}["ac_A"]
+    assert ext.at_max is not None and abs(ext.at_max - 270) < 1e-6
+    assert abs(ext.maximum - float(want)) < 1e-6 * float(want)
+
+
+def test_pantograph_copies_the_tracing_point_at_a_third_over_its_travel():
+    """O, Q, P stay in line with OQ = OP / 3 (C a third of the way up OB, D a third of the
+    way down BP, CBDQ a parallelogram: Q = O + (P - O) / 3 whatever B does), so Q's
+    velocity and acceleration are P's over three at every place of its travel."""
+    from polygon_method.motion.sweeps import sweep
+
+    scene = load_scene(HERE / "hunt5_pantograph_tracing_point.toml")
+    res = sweep(scene, np.linspace(0.05, 0.45, 41))
+    assert len(res.theta) == 41
+    for what in ("P", "V", "A"):
+        got, want = getattr(res, what)["Q"], getattr(res, what)["P"]
+        for c in (0, 1):
+            assert np.max(np.abs(np.asarray(got[c]) - np.asarray(want[c]) / 3)) < 1e-12 * 3
