@@ -422,3 +422,20 @@ def test_pantograph_copies_the_tracing_point_at_a_third_over_its_travel():
         got, want = getattr(res, what)["Q"], getattr(res, what)["P"]
         for c in (0, 1):
             assert np.max(np.abs(np.asarray(got[c]) - np.asarray(want[c]) / 3)) < 1e-12 * 3
+
+
+def test_the_other_tangent_is_the_other_assembly():
+    """[assembly] C = "left" takes the other tangent from the trunnion O to the circle of
+    the offset about B: O - B = t w + e perp(w) with t the other way (e = -15 mm, to the
+    right of B -> C), C = B + BC w."""
+    path = HERE / "hunt5_oscillating_cylinder_offset_trunnion.toml"
+    text = path.read_text(encoding="utf-8").replace('C = "right"', 'C = "left"')
+    sol = solve(parse_scene(text))
+    th = mpmath.radians(120)
+    b = (mpf("0.06") * mpmath.cos(th), mpf("0.06") * mpmath.sin(th))
+    d = (mpf("0.24") - b[0], -b[1])
+    m2, e = d[0] ** 2 + d[1] ** 2, mpf("-0.015")
+    t = -mpmath.sqrt(m2 - e * e)  # the default is the block's side, t > 0
+    w = ((t * d[0] + e * d[1]) / m2, (t * d[1] - e * d[0]) / m2)
+    _vclose(sol.P["C"], (b[0] + mpf("0.32") * w[0], b[1] + mpf("0.32") * w[1]), 0.32, "C")
+    assert sol.P["C"][0] < sol.P["B"][0]
