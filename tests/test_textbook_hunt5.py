@@ -439,3 +439,28 @@ def test_the_other_tangent_is_the_other_assembly():
     w = ((t * d[0] + e * d[1]) / m2, (t * d[1] - e * d[0]) / m2)
     _vclose(sol.P["C"], (b[0] + mpf("0.32") * w[0], b[1] + mpf("0.32") * w[1]), 0.32, "C")
     assert sol.P["C"][0] < sol.P["B"][0]
+
+
+def test_the_coriolis_component_left_out_of_the_lever_is_named():
+    """The crank and slotted lever's classic slip: the line parallel to the slot drawn
+    through a' itself, not through the start of 2 omega vs. Its alpha_QB solved by hand
+    from the closed form (a_A = -omega^2 QA + alpha perp(QA) + as u, in mpmath), given as
+    the answer, is named by check; the right one is not."""
+    th, w = mpmath.radians(30), -2 * pi * 200 / 60
+    _, _, aa = _motion(lambda t: (R1 * mpmath.cos(t), R1 * mpmath.sin(t)), th, w)
+    wq, _ = _angle_rates(_lever_angle, th, w)
+    d = (R1 * mpmath.cos(th) - Q1[0], R1 * mpmath.sin(th) - Q1[1])
+    u = (mpmath.cos(_lever_angle(th)), mpmath.sin(_lever_angle(th)))
+    rhs = mpmath.matrix([aa[0] + wq * wq * d[0], aa[1] + wq * wq * d[1]])
+    al, _ = mpmath.lu_solve(mpmath.matrix([[-d[1], u[0]], [d[0], u[1]]]), rhs)
+    sense = "ccw" if al > 0 else "cw"
+    path = HERE / "hunt5_offset_slot_lever.toml"
+    text = path.read_text(encoding="utf-8")
+    text = (
+        text[: text.index("[answers]")]
+        + f'[answers]\nalpha_QB = "{abs(float(al)):.4g} rad/s^2 {sense}"\n'
+    )
+    (verdict,) = check_answers(solve(parse_scene(text)))
+    assert not verdict.ok and verdict.mistake == "coriolis_omitted"
+    assert "Coriolis component 2 omega v of block A sliding on QB" in verdict.diagnosis
+    assert abs(float(al)) > 2 * 40.74  # not a rounding of the right answer

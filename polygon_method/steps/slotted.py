@@ -316,6 +316,26 @@ class SlottedLink(Step):
         a = ka + (a_in * As + L * d_al + 2 * w * d_w * L + (w * w + al) * L * turn) / As
         return p, v, a, d_w / Om + k, d_al / Als + k
 
+    def coriolis_left_out(self, sol):
+        """What a polygon drawn without the Coriolis component gives (the classic slip of a
+        crank and slotted lever): {(kind, name): value} for the lever's alpha (signed) and
+        the size of its far end's acceleration. The line parallel to the slot is then drawn
+        through a' itself: ``aA = aK - w^2 d + al perp(d) + as u``, solved as before."""
+        P, A, K, N, Ab = sol.P, sol.A, self.known, self.new, self.point
+        cx, cy = sol.coriolis(Ab)
+        if cx == 0 and cy == 0:
+            return {}
+        (f1x, f1y), (f2x, f2y) = P[self.first], P[self.second]
+        L = math.hypot(f2x - f1x, f2y - f1y)
+        ux, uy = (f2x - f1x) / L, (f2y - f1y) / L
+        dx, dy = P[Ab][0] - P[K][0], P[Ab][1] - P[K][1]
+        k = sol.W[self.guide] ** 2
+        ex, ey = A[Ab][0] - A[K][0] + k * dx, A[Ab][1] - A[K][1] + k * dy
+        al, _ = acceleration(dx, dy, ux, uy, ex, ey)
+        px, py = P[N][0] - P[K][0], P[N][1] - P[K][1]
+        aN = (A[K][0] - k * px - al * py, A[K][1] - k * py + al * px)
+        return {("alpha", self.guide): al, ("a", N): math.hypot(*aN)}
+
     # ----- failures and words
     def at_pivot(self):
         """The error for a block at the slotted link's pivot: the link's direction is undefined."""
