@@ -464,3 +464,32 @@ def test_the_coriolis_component_left_out_of_the_lever_is_named():
     assert not verdict.ok and verdict.mistake == "coriolis_omitted"
     assert "Coriolis component 2 omega v of block A sliding on QB" in verdict.diagnosis
     assert abs(float(al)) > 2 * 40.74  # not a rounding of the right answer
+
+
+def test_the_coriolis_component_left_out_of_a_moving_guide_is_named():
+    """The rocker DB's block runs in the turning arm's slot: without 2 omega vs the line
+    parallel to the slot goes through the arm's point under B itself. alpha_DB so, by hand
+    from the closed form (a_B1 = -omega^2 OB for the arm turning steadily about O;
+    -w_DB^2 DB + alpha perp(DB) = a_B1 + as u, in mpmath), is named by check."""
+    th, w = mpmath.radians(20), 2 * pi * 120 / 60
+    p, _, _ = _motion(_arm_B, th, w)
+
+    def rocker(t):
+        bx, by = _arm_B(t)
+        return mpmath.atan2(by - D2[1], bx - D2[0])
+
+    wd, _ = _angle_rates(rocker, th, w)
+    r = (p[0] - D2[0], p[1] - D2[1])
+    u = (mpmath.cos(th), mpmath.sin(th))
+    rhs = mpmath.matrix([-w * w * p[0] + wd * wd * r[0], -w * w * p[1] + wd * wd * r[1]])
+    al, _ = mpmath.lu_solve(mpmath.matrix([[-r[1], -u[0]], [r[0], -u[1]]]), rhs)
+    path = HERE / "hunt5_rocker_in_offset_slot_of_crank.toml"
+    text = path.read_text(encoding="utf-8")
+    sense = "ccw" if al > 0 else "cw"
+    text = (
+        text[: text.index("[answers]")]
+        + f'[answers]\nalpha_DB = "{abs(float(al)):.4g} rad/s^2 {sense}"\n'
+    )
+    (verdict,) = check_answers(solve(parse_scene(text)))
+    assert not verdict.ok and verdict.mistake == "coriolis_omitted", verdict
+    assert "left out of the acceleration polygon" in verdict.diagnosis

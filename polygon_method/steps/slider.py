@@ -293,6 +293,22 @@ class SliderDyad(Step):
 
         return position, velocity_, acceleration_
 
+    def coriolis_left_out(self, sol):
+        """What a polygon drawn without the Coriolis component of a moving guide gives: the
+        line parallel to the guide through the image of the guide's point under the block,
+        not through the end of 2 omega vs. {(kind, name): value}: the rod's alpha (signed)
+        and the size of the block's acceleration; nothing on a fixed path."""
+        if self.path is not None:
+            return {}
+        P, A, X, B = sol.P, sol.A, self.point, self.b
+        (x, y), (bx, by), (gx, gy) = P[X], P[B], P[self.g1]
+        u = unit(*sub(P[self.g2], P[self.g1]))
+        t = guide_point_acceleration(
+            gx, gy, x, y, sol.W[self.guide], sol.Al[self.guide], *A[self.g1]
+        )
+        al, _, ax, ay = acceleration(x - bx, y - by, *u, *t, sol.W[self.link], *A[B])
+        return {("alpha", self.link): al, ("a", X): math.hypot(ax, ay)}
+
     # ----- failures and words
     def why(self, dist):
         """Why the block cannot be placed: its link is shorter than the known end's distance
