@@ -493,3 +493,27 @@ def test_the_coriolis_component_left_out_of_a_moving_guide_is_named():
     (verdict,) = check_answers(solve(parse_scene(text)))
     assert not verdict.ok and verdict.mistake == "coriolis_omitted", verdict
     assert "left out of the acceleration polygon" in verdict.diagnosis
+
+
+@pytest.mark.parametrize(
+    "e, code, words",
+    [
+        ("0", "offset_left_out", "the slot of QB drawn through its line QB (its offset of 30 mm"),
+        ("-0.03", "offset_other_side", "the slot of QB taken 30 mm to the right of its line"),
+    ],
+)
+def test_an_offset_slot_drawn_otherwise_is_named(e, code, words):
+    """A student who draws the slot through the lever's pivot (or on its other side): the
+    lever's omega by the tangent's closed form with that offset (0, or -30 mm), given as
+    the answer, is named by check."""
+    e = mpf(e)
+
+    def angle(t):
+        ax, ay = R1 * mpmath.cos(t) - Q1[0], R1 * mpmath.sin(t) - Q1[1]
+        return mpmath.atan2(ay, ax) - mpmath.atan2(e, mpmath.sqrt(ax * ax + ay * ay - e * e))
+
+    wq, _ = _angle_rates(angle, mpmath.radians(30), -2 * pi * 200 / 60)
+    text = (HERE / "hunt5_offset_slot_lever.toml").read_text(encoding="utf-8")
+    text = text[: text.index("[answers]")] + f'[answers]\nomega_QB = "{-float(wq):.4g} rad/s cw"\n'
+    (verdict,) = check_answers(solve(parse_scene(text)))
+    assert not verdict.ok and verdict.mistake == code and words in verdict.diagnosis, verdict
