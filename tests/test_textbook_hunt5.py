@@ -234,6 +234,7 @@ def test_two_blocks_guides_at_60_by_hand():
         "hunt5_two_blocks_guides_at_60",
         "hunt5_swinging_link_block_on_offset_pin",
         "hunt5_pantograph_tracing_point",
+        "hunt5_hackworth_valve_gear",
     ],
 )
 def test_book_answers(name):
