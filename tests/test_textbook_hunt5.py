@@ -518,3 +518,14 @@ def test_an_offset_slot_drawn_otherwise_is_named(e, code, words):
     text = text[: text.index("[answers]")] + f'[answers]\nomega_QB = "{-float(wq):.4g} rad/s cw"\n'
     (verdict,) = check_answers(solve(parse_scene(text)))
     assert not verdict.ok and verdict.mistake == code and words in verdict.diagnosis, verdict
+
+
+def test_steps_sets_out_the_block_on_the_offset_slot_of_a_moving_guide(capsys):
+    from polygon_method.cli import main
+
+    assert main(["steps", str(HERE / "hunt5_rocker_in_offset_slot_of_crank.toml")]) == 0
+    out = " ".join(capsys.readouterr().out.split())
+    assert (
+        "B: an arc of radius DB = 200 mm (10.00 cm) about D cuts the line of the slot of OC, "
+        "parallel to OC and 25 mm (1.25 cm) to the right of it (looking from O to C), at B"
+    ) in out

@@ -373,7 +373,8 @@ class SliderDyad(Step):
             else f"the line of {self.guide}"
             if not self.offset
             else f"the line of the slot of {self.guide}, parallel to {self.g1}{self.g2} and "
-            f"{L(abs(self.offset))} to the {'left' if self.offset > 0 else 'right'} of it"
+            f"{L(abs(self.offset))} to the {'left' if self.offset > 0 else 'right'} of it "
+            f"(looking from {self.g1} to {self.g2}),"
         )
         return (
             f"{self.point}: an arc of radius {self.link} = {L(self.length)} about {self.b} "
