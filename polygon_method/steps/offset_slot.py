@@ -80,21 +80,19 @@ def why(st, what, c=0.0, L=None) -> str:
     K, A, s = st.known, st.point, slot_words(st)
     if what == "singular":
         return (
-            f"{s} stands square to {K}{A} (condition {c:.2g}): the block is at the foot of "
+            f"{s}, stands square to {K}{A} (condition {c:.2g}): the block is at the foot of "
             f"the perpendicular from {K}, a limit position where the lever's point under it "
             "moves along the slot"
         )
     if what == "warning":
-        return (
-            f"{st.label}: {s} is nearly square to {K}{A} (condition {c:.3g}): near a limit position"
-        )
+        return f"{st.label}: {s}, is nearly square to {K}{A} (condition {c:.3g}): near a limit position"
     if what == "limit":
-        return f"block {A} comes within the slot's offset of {K}: {s} stands square to {K}{A}"
+        return f"block {A} comes within the slot's offset of {K}: {s}, stands square to {K}{A}"
     if what == "column":
         return f"{A}'s distance along the slot from {K}'s foot / {st.ref or st.guide} (at most 1)"
     e = L(abs(st.offset))
     return (
-        f"{st.new}: {s} passes through the block at {A}: draw the circle of radius {e} about "
+        f"{st.new}: {s}, passes through the block at {A}: draw the circle of radius {e} about "
         f"{K} and from {A} the tangent to it (the slot's line); {K}{st.new} is parallel to "
         f"it, {e} to its {'right' if st.offset > 0 else 'left'}: mark {K}{st.new} = "
         f"{L(st.length)} on that line"
