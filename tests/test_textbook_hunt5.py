@@ -529,3 +529,32 @@ def test_steps_sets_out_the_block_on_the_offset_slot_of_a_moving_guide(capsys):
         "B: an arc of radius DB = 200 mm (10.00 cm) about D cuts the line of the slot of OC, "
         "parallel to OC and 25 mm (1.25 cm) to the right of it (looking from O to C), at B"
     ) in out
+
+
+def test_the_offset_slot_quick_return_time_ratio_and_stroke():
+    """The lever with its offset slot is a quick return: the ram's dead points where
+    d s_R / d theta = 0 (s_R by the tangent's closed form, roots by mpmath.findroot from a
+    degree's scan), its stroke their distance apart and the time ratio the crank's turns
+    between them, the larger over the smaller."""
+
+    def s_r(th):
+        p = _lever_angle(th)
+        bx, by = Q1[0] + L1 * mpmath.cos(p), Q1[1] + L1 * mpmath.sin(p)
+        return bx + mpmath.sqrt(BR1 * BR1 - (YT1 - by) ** 2)
+
+    ds = lambda t: mpmath.diff(s_r, t)  # noqa: E731
+    scan = [float(ds(mpmath.radians(k))) for k in range(361)]
+    roots = [
+        mpmath.findroot(ds, mpmath.radians(k + 0.5))
+        for k in range(360)
+        if scan[k] * scan[k + 1] < 0
+    ]
+    assert len(roots) == 2
+    stroke = abs(s_r(roots[0]) - s_r(roots[1]))
+    turn = float(mpmath.degrees(roots[1] - roots[0])) % 360
+    ratio = max(turn, 360 - turn) / min(turn, 360 - turn)
+    text = (HERE / "hunt5_offset_slot_lever.toml").read_text(encoding="utf-8")
+    text = text[: text.index("[answers]")] + '[answers]\ntime_ratio = "?"\nstroke_R = "?"\n'
+    got = {v.key: v.correct for v in check_answers(solve(parse_scene(text)))}
+    assert abs(got["time_ratio"] - ratio) < 1e-9 * ratio
+    assert abs(got["stroke_R"] - float(stroke)) < 1e-9 * float(stroke)
