@@ -188,8 +188,8 @@ def _equations(scene):
     for sl in scene.sliders:
         if getattr(sl, "wheel", ""):  # a driving wheel's centre: on its line by "wheelline"
             continue
-        if hasattr(sl, "guide"):
-            eqs.append(("guide", (sl.point, sl.first, sl.second)))
+        if hasattr(sl, "guide"):  # (an offset slot: its line e to the left of first -> second)
+            eqs.append(("guide", (sl.point, sl.first, sl.second, mpf(getattr(sl, "offset", 0)))))
         elif hasattr(sl, "yoke"):  # the slot of a translating yoke: a line of fixed direction
             eqs.append(("yoke", (sl.point, sl.yoke, _unit(_v(sl.direction)))))
         else:
@@ -340,10 +340,16 @@ def _eval(kind, d, P, th, moving=False):
         x, y, u = d
         a = _sub(P[x], P[y])
         return _cross(a, u), [(x, u[1], -u[0]), (y, -u[1], u[0])]
-    if kind == "guide":
-        x, g1, g2 = d
+    if kind == "guide":  # (X - G1) x (G2 - G1) + e |G2 - G1| = 0: X is e left of G1 -> G2
+        x, g1, g2, e = d
         a, b = _sub(P[x], P[g1]), _sub(P[g2], P[g1])
-        return _cross(a, b), [(x, b[1], -b[0]), (g2, -a[1], a[0]), (g1, a[1] - b[1], b[0] - a[0])]
+        nb = mpmath.sqrt(_dot(b, b))
+        hx, hy = e * b[0] / nb, e * b[1] / nb  # the gradient of e |b| in G2
+        return _cross(a, b) + e * nb, [
+            (x, b[1], -b[0]),
+            (g2, -a[1] + hx, a[0] + hy),
+            (g1, a[1] - b[1] - hx, b[0] - a[0] - hy),
+        ]
     if kind == "rack":
         x, T, u, k, base, rates, th0 = d
         K = rates.get(base, 0)  # (at the scene's own angle th = th0 the term is zero)
@@ -557,9 +563,15 @@ def reference_solution(scene, guess_positions):
             o, tip, _, c, _, w2, al2 = d
             r = _sub(P[tip], P[o])
             gamma[i] = -(al2 * _perp(r)[c] - w2 * w2 * r[c])
-        elif kind == "guide":
-            x, g1, g2 = d
-            gamma[i] = 2 * _cross(_sub(V[x], V[g1]), _sub(V[g2], V[g1]))
+        elif (
+            kind == "guide"
+        ):  # and e |b|'' less its part in J q'': e (b'.b' - (b.b')^2 / b.b) / |b|
+            x, g1, g2, e = d
+            bv, b = _sub(V[g2], V[g1]), _sub(P[g2], P[g1])
+            bb = _dot(b, b)
+            gamma[i] = 2 * _cross(_sub(V[x], V[g1]), bv) + e * (
+                _dot(bv, bv) - _dot(b, bv) ** 2 / bb
+            ) / mpmath.sqrt(bb)
         elif kind == "block":
             gamma[i] = -al
         elif kind in ("collar", "collar2"):  # (X - K).(N - K) - L s: f'' minus J q''

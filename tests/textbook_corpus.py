@@ -141,6 +141,8 @@ def other_position(scene, P, X):
     for s in scene.sliders:  # the free end of a slotted link: on the other side of its pivot
         if isinstance(s, GuideSlider) and s.point != X and X in (s.first, s.second):
             k = P[s.second if X == s.first else s.first]
+            if s.offset:  # an offset slot: the other tangent from the block to its circle
+                return _other_tangent(k, P[s.point], P[X], s.offset if X == s.second else -s.offset)
             return (2 * k[0] - P[X][0], 2 * k[1] - P[X][1])
     ends = [lk.q if lk.p == X else lk.p for lk in scene.links if X in (lk.p, lk.q)]
     u = guide_direction(scene, P, X)
@@ -150,6 +152,17 @@ def other_position(scene, P, X):
     if len(ends) >= 2:  # the first two links at X in the file: the dyad that finds X
         return _mirror(P[X], P[ends[0]], P[ends[1]])
     return None
+
+
+def _other_tangent(k, a, n, e):
+    """The lever's end n reflected to the other tangent from the block at a to the circle of
+    radius |e| about the pivot k (the slot e to the left of k -> n): a - k = t w + e perp(w)
+    with t the other way, w = (t d - e perp(d)) / |d|^2."""
+    dx, dy = a[0] - k[0], a[1] - k[1]
+    m2 = dx * dx + dy * dy
+    L = math.dist(k, n)
+    t = -((n[0] - k[0]) * dx + (n[1] - k[1]) * dy) / L  # the tangent's t, turned over
+    return (k[0] + L * (t * dx + e * dy) / m2, k[1] + L * (t * dy - e * dx) / m2)
 
 
 def _triad_other(scene, P, X):

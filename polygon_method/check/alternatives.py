@@ -104,6 +104,19 @@ class _Alternatives:
         return out
 
 
+def offset_slips(alts):
+    """(slider, code, solution or None) for each offset slot drawn otherwise: through the
+    lever's own line (the offset left out) and on the other side of it."""
+    sc, out = alts.sol.scene, []
+    for i, sl in enumerate(sc.sliders):
+        if not getattr(sl, "offset", 0.0):
+            continue
+        for code, e in (("offset_left_out", 0.0), ("offset_other_side", -sl.offset)):
+            sliders = sc.sliders[:i] + (replace(sl, offset=e),) + sc.sliders[i + 1 :]
+            out.append((sl, code, alts.solve((code, sl.key), replace(sc, sliders=sliders))))
+    return out
+
+
 def _speed_mistakes(scene: Scene):
     """(factor on the crank's omega, code, words) for the speed confusions that the way the
     scene states the speed makes possible."""

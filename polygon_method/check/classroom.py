@@ -62,6 +62,8 @@ MISTAKE_WORDS = {
     "one_turn_cycle": "a four-stroke cycle's work divided by one turn",
     "coriolis_factor": "the Coriolis component without its factor 2",
     "coriolis_omitted": "the Coriolis component of a moving slot left out",
+    "offset_left_out": "an offset slot drawn through the lever's line",
+    "offset_other_side": "an offset slot taken on the other side of the lever",
     "angle_in_radians": "the crank angle taken in radians",
     "other_dead_centre": "the crank angle measured from the other dead centre",
     "against_rotation": "the crank angle measured against the rotation",

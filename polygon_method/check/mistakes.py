@@ -13,6 +13,7 @@ from ..steps import under_label
 from ..common.numbers import textbook as _g
 from . import confusions, force_slips, power, slips
 from .alternatives import _DECIMAL, _FACTOR_MISTAKES, _Alternatives, _Candidate, _speed_mistakes
+from .alternatives import offset_slips
 from .slips import _SLIP_RANK, _slip
 from .link_slips import link_slips
 from .slots import coriolis_left_out
@@ -224,6 +225,22 @@ class _Diagnoser:
                 )
             except (KeyError, TypeError):
                 pass
+        for sl, code, alt in offset_slips(self.alts):
+            if alt is not None:
+                e = f"{_g(abs(sl.offset) / sc.length_unit)} {sc.units}"
+                side = "left" if sl.offset > 0 else "right"
+                out.append(
+                    _Candidate(
+                        val(alt),
+                        code,
+                        f"the slot of {sl.guide} drawn through its line {sl.first}{sl.second}"
+                        f" (its offset of {e} left out)"
+                        if code == "offset_left_out"
+                        else f"the slot of {sl.guide} taken {e} to the "
+                        f"{'right' if side == 'left' else 'left'} of its line {sl.first} -> "
+                        f"{sl.second}, not the {side}",
+                    )
+                )
         if kind == "torque":
             return out
         for slip, alt in self.alts.angle_slips():

@@ -38,6 +38,7 @@ from .summary_limits import (
 )
 from .summary_forces import at_singular, force_arrays, singular_note, spread
 from ..forces.cylinder import given_forces
+from .summary_noise import noise
 from .summary_record import Extreme, Summary
 from .cycle import aliased
 
@@ -453,59 +454,10 @@ class _Reducer:
         return formulas
 
     def _noise(self, theta) -> dict:
-        """name -> f(i): the absolute error bound of each quantity (its own relative bound,
-        :mod:`polygon_method.solver.errorbound`, times the size of its kind) at sample ``i`` of
-        ``theta``, evaluated at the samples where an extreme is reached: below it a value is
-        rounding noise about a true zero, and only that is shown as 0 (a value above it is
-        real however small beside the input's sizes). 0 where the bound is no useful bound
-        (hide nothing). Rubbing velocities and the input effort are not here (the sizes the
-        input sets decide them, as before)."""
-        from ..solver.errorbound import USELESS, error_bounds
-
-        idx = sorted(
-            {
-                int(i)
-                for mx, imx, mn, imn, *_ in self.best.values()
-                for i in (imx, imn)
-                if i is not None and i >= 0
-            }
-        )
-        if not idx or len(theta) == 0:
-            return {}
-        th = np.asarray(theta, dtype=float)[idx]
-        fr = self.sw.evaluate(th)
-        with np.errstate(all="ignore"):
-            eb = error_bounds(
-                Motion(
-                    self.scene, self.plan, th, fr.P, fr.V, fr.A, fr.W, fr.Al, fr.S, fr.cond, fr.bad
-                )
-            )
-        size = {
-            k: np.broadcast_to(np.asarray(v, dtype=float), th.shape) for k, v in eb.scales.items()
-        }
-        where = {k: j for j, k in enumerate(idx)}
-
-        def of(rel, kind):
-            rel = np.broadcast_to(np.asarray(rel, dtype=float), th.shape)
-            absolute = np.where(rel < USELESS, rel * size[kind], 0.0)
-            return lambda i: float(absolute[where[int(i)]])
-
-        out = {}
-        for p in eb.V:
-            out[f"v_{p}"] = of(eb.V[p], "velocity")
-            out[f"a_{p}"] = of(eb.A[p], "acceleration")
-        for lk in eb.W:
-            out[f"omega_{lk}"] = of(eb.W[lk], "omega")
-            out[f"alpha_{lk}"] = of(eb.Al[lk], "alpha")
-        for s in self.scene.sliders:
-            if s.key in eb.S:
-                ev, ea, ec = eb.S[s.key]
-                out[f"vs_{s.key}"] = of(ev, "velocity")
-                out[f"as_{s.key}"] = of(ea, "acceleration")
-                out[f"ac_{s.key}"] = of(ec, "acceleration")
-            if isinstance(s, FixedPath) and s.point in eb.P:
-                out[f"s_{s.key}"] = of(eb.P[s.point], "position")
-        return out
+        """name -> f(i): the absolute error bound of each quantity at sample ``i`` of
+        ``theta`` (:func:`.summary_noise.noise`). Rubbing velocities and the input effort
+        are not here (the sizes the input sets decide them, as before)."""
+        return noise(self.scene, self.plan, self.sw, self.best, theta)
 
     def _forces_note(self) -> tuple:
         """Where the force analysis failed at some angle, none of its quantities is kept:

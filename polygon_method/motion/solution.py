@@ -89,8 +89,7 @@ class Solution(Motion):
         """Pin -> :class:`PinRubbing`, for every pin with a size in ``[pins]``.
 
         At each pin, for each pair of bodies it joins: ``|w1 - w2| r`` (signed omegas: the
-        sum of the magnitudes when they turn in opposite senses, the difference when alike).
-        """
+        sum of the magnitudes when they turn in opposite senses, the difference when alike)."""
         c = self._cache
         r = c.get("rubbing")
         if r is None:
@@ -269,6 +268,7 @@ class Solution(Motion):
                         if hasattr(s, "yoke")
                         else s.along  # (the link from the point the sliding is signed from)
                     ),
+                    **({"offset": s.offset} if getattr(s, "offset", 0.0) else {}),  # (m)
                 }
                 for s in sc.blocks
             }

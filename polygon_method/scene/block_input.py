@@ -218,6 +218,14 @@ class _BlockInput:
         pivot K of [ground]; N its other end."""
         name = sl.point
         rod, pts = self.find_link(sl.guide, table, "block")
+        if sl.offset:
+            raise self.error(
+                f"the collar {name} driven along {rod.key} sits on the rod's own line: its "
+                f"[sliders] entry takes no offset (an offset slot is for a block the "
+                "mechanism moves)",
+                table,
+                "block",
+            )
         pivots = [p for p in pts if p in ground]
         if len(pivots) != 1:
             raise self.error(

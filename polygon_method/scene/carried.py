@@ -49,11 +49,29 @@ class _CarriedPoints:
                 )
             frame = local.setdefault(link.key, {link.p: (0.0, 0.0), link.q: (link.length, 0.0)})
             xy, how, spread, source = self.on_link(spec, link, pts, frame, "points", name, spreads)
+            raw = self.table("points").get(name)
+            if isinstance(raw, dict) and "angle" in raw:  # as the book gave it: at an angle
+                how = self._polar_words(link, name, source)
             frame[name] = xy
             L = link.length
             spreads[name] = spread
             out.append(CarriedPoint(name, link.key, xy[0] / L, xy[1] / L, how, spread, source))
         return out
+
+    def _polar_words(self, link, name, source) -> str:
+        """A point given at a distance from a link's end and an angle from its line, as the
+        book gave it ("OE = 40 mm at 120 deg ccw from OA"), with the other side the cosine
+        rule makes (the triangle it is set out by)."""
+        _, r1, d1, r2, d2, turn = source
+        L = link.length
+        deg = math.degrees(
+            math.acos(max(-1.0, min(1.0, (d1 * d1 + L * L - d2 * d2) / (2 * d1 * L))))
+        )
+        return (
+            f"on {link.key}, {r1}{name} = {self._words(d1)} at {deg:.6g} deg "
+            f"{'ccw' if turn > 0 else 'cw'} from {r1}{r2} ({r2}{name} = {self._words(d2)} by "
+            "the cosine rule)"
+        )
 
     def on_link(self, spec, link, pts, frame, table, name, spreads=None):
         """(x, y) in the link's frame (P at 0, Q at (L, 0); ``frame`` the points known in

@@ -85,6 +85,9 @@ class GuideSlider:
     #: path): the guide's key, so that the two slots of one point have names of their own
     #: (``P_OA``, ``P_QB``); "" for a block on one guide
     slot: str = ""
+    #: an offset slot: its centre line parallel to the link's, this far (m) to the left of
+    #: it looking from ``first`` to ``second`` (negative: to the right); 0 on the link's line
+    offset: float = 0.0
 
     @property
     def key(self) -> str:

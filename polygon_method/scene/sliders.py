@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 import re
 
+from ..common.errors import SceneError
 from ..common.tolerances import SAME
 from .records import FixedPath, GuideSlider, YokeSlot, guide_words, split_name
 from .table_help import _suggest, _unit_at
@@ -25,10 +26,22 @@ class _Sliders:
                     "sliders",
                     name,
                 )
-            allowed = ("path", "through", "along", "direction")
+            allowed = ("path", "through", "along", "direction", "offset")
             for k in spec:
                 if k not in allowed:
                     raise self.error(f"unknown key '{k}'{_suggest(k, allowed)}", "sliders", name)
+            if "offset" in spec and not (
+                isinstance(spec.get("along"), str)
+                and not spec["along"].startswith("block ")
+                and "path" not in spec
+            ):
+                raise self.error(
+                    'offset goes with along = "CP" alone: a block in a slot of the lever CP '
+                    "whose line misses the lever's centre line (a peg's slot, a yoke's or a "
+                    "fixed path takes none)",
+                    "sliders",
+                    name,
+                )
             if isinstance(spec.get("along"), str) and spec["along"].startswith("block "):
                 out.append(self.yoke_slot(name, spec, ground))
                 continue
@@ -99,7 +112,41 @@ class _Sliders:
                 "sliders",
                 name,
             )
-        return GuideSlider(name, link.key, pts[0], pts[1])
+        offset = self._offset(spec["offset"], pts, name) if "offset" in spec else 0.0
+        return GuideSlider(name, link.key, pts[0], pts[1], offset=offset)
+
+    def _offset(self, raw, pts, name):
+        """An offset slot's distance from the link's line, signed to the left looking from
+        the guide's first point to its second: a signed length (``offset = 40``, ``-40``,
+        ``"40 mm"``) or with the side in words (``"40 mm left"``, ``"40 right"``)."""
+        side, given = 1.0, raw
+        if isinstance(raw, str):
+            m = re.match(r"^\s*(.*?)[\s,]*\b(left|right)\s*$", raw)
+            if m:
+                raw, side = m.group(1), (1.0 if m.group(2) == "left" else -1.0)
+                if raw.lstrip().startswith("-"):
+                    raise self.error(
+                        f"offset {raw!r} with a side: give the size alone, e.g. "
+                        f'"{raw.strip().lstrip("-").strip()} {m.group(2)}"',
+                        "sliders",
+                        name,
+                    )
+        try:
+            e = side * self.length(raw, "sliders", name, positive=False)
+        except SceneError as exc:
+            raise self.error(
+                f"offset = {given!r}: {exc.message.rstrip('.')}; give the slot's distance off "
+                'the link\'s line and its side, e.g. "30 mm left" (or a signed length)',
+                "sliders",
+                name,
+            ) from None
+        if e == 0.0:
+            raise self.error(
+                "offset = 0: the slot is on the link's own line; leave offset out",
+                "sliders",
+                name,
+            )
+        return e
 
     def yoke_slot(self, name, spec, ground):
         """``P = { along = "block Y", direction = "vertical" }``: a block at P in the slot of

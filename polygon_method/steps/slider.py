@@ -126,6 +126,7 @@ def recognise(g, name):
                 g2=sl.second,
                 unit=g.unit,
                 uname=g.uname,
+                offset=sl.offset,
             )
     return None
 
@@ -145,6 +146,8 @@ class SliderDyad(Step):
     sigma: float = 1.0
     unit: float = 1e-3
     uname: str = "mm"
+    #: a moving guide's offset slot: its line this far (m) to the left of g1 -> g2
+    offset: float = 0.0
 
     kind = "slider"
     branching = True
@@ -179,35 +182,37 @@ class SliderDyad(Step):
     @property
     def params(self):
         if self.path is None:
-            return (self.length,)
+            return (self.length, self.offset)
         (qx, qy), (ux, uy) = self.path.through, self.path.u
         return (self.length, qx, qy, ux, uy)
 
     def dimensions(self, scene, bodies):
         ell = bodies.distance(self.link, self.b, self.point)
         if self.path is None:
-            return (ell,)
+            return (ell, scene.slider(self.point).offset)
         path = scene.slider(self.point)
         (qx, qy), (ux, uy) = path.through, path.u
         return (ell, qx, qy, ux, uy)
 
     def drawn(self, prm, pencil, P):
         if self.path is None:
-            return (prm[0] + pencil(),)
+            return (prm[0] + pencil(), prm[1])
         return (prm[0] + pencil(), prm[1] + pencil(), prm[2] + pencil(), prm[3], prm[4])
 
     def reach(self):
         return max(self.length, LEAST_REACH)
 
     def line(self, P, prm=None):
-        """A point of the guide line and its unit direction."""
+        """A point of the guide line and its unit direction (an offset slot's line: its
+        point the offset to the left of g1)."""
+        prm = self.params if prm is None else prm
         if self.path is not None:
-            prm = self.params if prm is None else prm
             return prm[1], prm[2], prm[3], prm[4]
         (gx, gy), (hx, hy) = P[self.g1], P[self.g2]
         ux, uy = hx - gx, hy - gy
         m = (ux * ux + uy * uy) ** 0.5
-        return gx, gy, ux / m, uy / m
+        ux, uy = ux / m, uy / m
+        return gx - prm[1] * uy, gy + prm[1] * ux, ux, uy
 
     def place(self, P, prm, ctx, sigma=None):
         qx, qy, ux, uy = self.line(P, prm)
@@ -227,6 +232,7 @@ class SliderDyad(Step):
         G1, G2, guide = self.g1, self.g2, self.guide
         if fixed:
             qx, qy, fux, fuy = prm[1], prm[2], prm[3], prm[4]
+        off = None if fixed or not self.offset else prm[1]
 
         def line(P):
             if fixed:
@@ -239,6 +245,8 @@ class SliderDyad(Step):
         def position(m):
             P = m.P
             gx, gy, ux, uy = line(P)
+            if off is not None:  # the offset slot's line, off to the left of g1 -> g2
+                gx, gy = gx - off * uy, gy + off * ux
             x, y, c = place(*P[B], gx, gy, ux, uy, ell, sigma, m.ctx, step)
             P[X] = (x, y)
             m.cond[i] = c
@@ -285,12 +293,34 @@ class SliderDyad(Step):
 
         return position, velocity_, acceleration_
 
+    def coriolis_left_out(self, sol):
+        """What a polygon drawn without the Coriolis component of a moving guide gives: the
+        line parallel to the guide through the image of the guide's point under the block,
+        not through the end of 2 omega vs. {(kind, name): value}: the rod's alpha (signed)
+        and the size of the block's acceleration; nothing on a fixed path."""
+        if self.path is not None:
+            return {}
+        P, A, X, B = sol.P, sol.A, self.point, self.b
+        (x, y), (bx, by), (gx, gy) = P[X], P[B], P[self.g1]
+        u = unit(*sub(P[self.g2], P[self.g1]))
+        t = guide_point_acceleration(
+            gx, gy, x, y, sol.W[self.guide], sol.Al[self.guide], *A[self.g1]
+        )
+        al, _, ax, ay = acceleration(x - bx, y - by, *u, *t, sol.W[self.link], *A[B])
+        return {("alpha", self.link): al, ("a", X): math.hypot(ax, ay)}
+
     # ----- failures and words
     def why(self, dist):
         """Why the block cannot be placed: its link is shorter than the known end's distance
         ``dist`` from the path."""
         u, n = self.unit, self.uname
-        where = f"path {self.path.label}" if self.path else f"line of {self.guide}"
+        where = (
+            f"path {self.path.label}"
+            if self.path
+            else f"line of {self.guide}"
+            if not self.offset
+            else f"line of the slot of {self.guide} (offset {in_units(abs(self.offset), u)} {n})"
+        )
         return (
             f"cannot assemble {self.point}: {self.link} = {in_units(self.length, u)} {n} "
             f"< distance of {self.b} from the {where} = {in_units(abs(dist), u)} {n}"
@@ -341,6 +371,10 @@ class SliderDyad(Step):
             f"the {guide_words(self.path.label, of=self.point)}"
             if self.path is not None
             else f"the line of {self.guide}"
+            if not self.offset
+            else f"the line of the slot of {self.guide}, parallel to {self.g1}{self.g2} and "
+            f"{L(abs(self.offset))} to the {'left' if self.offset > 0 else 'right'} of it "
+            f"(looking from {self.g1} to {self.g2}),"
         )
         return (
             f"{self.point}: an arc of radius {self.link} = {L(self.length)} about {self.b} "

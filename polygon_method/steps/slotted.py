@@ -15,6 +15,12 @@ the pivot (the largest link at A or K other than the guide, e.g. the crank; the 
 length where there is none): the rounding of A and K is of their size, so the direction's
 error is that over |KA|, whatever the lever's length.
 
+An offset slot (``offset`` e: the slot's centre line parallel to the link's, e to the left
+of K -> N): the block is at ``A - K = t w + e perp(w)`` with w the link's unit direction, so
+``t = sigma sqrt(|KA|^2 - e^2)`` and ``w = (t d - e perp(d)) / |d|^2``. The relations above
+hold as written (d.u = +-t); the condition is min(1, |t| / rho), nought where the slot's
+line is square to KA (the block at the foot of the perpendicular from K: a limit position).
+
 >>> x, y, c = place(0.0, 0.0, 0.3, 0.4, 1.0, 1.0, 1.0)
 >>> round(x, 12), round(y, 12), c
 (0.6, 0.8, 0.5)
@@ -27,6 +33,7 @@ from dataclasses import dataclass
 
 from .relations import coriolis, rigid_velocity
 from ..common.errors import TOL, SingularStepError
+from .offset_slot import image_words, place_offset, why
 from ..common.tolerances import LEAST_REACH
 from ..scene import GuideSlider
 from .rounding import C_FLOOR, vhypot, vmax
@@ -92,6 +99,8 @@ def recognise(g, name):
         known = ends[0]
         g.used_sliders.add(sl.point)
         ref = _reference(sc, guide.key, (sl.point, known)) or guide.key
+        # the offset to the left of K -> N (the scene's is to the left of first -> second)
+        offset = sl.offset if sl.first == known else -sl.offset
         return SlottedLink(
             g.next_index,
             sl.point,
@@ -105,6 +114,7 @@ def recognise(g, name):
             uname=g.uname,
             ref=ref,
             rho=sc.link(ref).length,
+            offset=offset,
         )
 
 
@@ -154,6 +164,8 @@ class SlottedLink(Step):
     #: the link whose length is the condition's scale (see the module), and that length
     ref: str = ""
     rho: float = 0.0
+    #: an offset slot: its line this far (m) to the left of K -> N; 0 on the link's line
+    offset: float = 0.0
 
     kind = "slotted"
     branching = True
@@ -176,11 +188,17 @@ class SlottedLink(Step):
 
     @property
     def params(self):
-        return (self.length, self.rho or self.length)
+        return (self.length, self.rho or self.length, self.offset)
 
     def dimensions(self, scene, bodies):
         length = scene.link(self.guide).length
-        return (length, scene.link(self.ref).length if self.ref else length)
+        sl = scene.slider(self.point)
+        off = getattr(sl, "offset", 0.0)
+        return (
+            length,
+            scene.link(self.ref).length if self.ref else length,
+            off if sl is None or sl.first == self.known else -off,
+        )
 
     def reach(self):
         return max(self.length, LEAST_REACH)
@@ -188,6 +206,8 @@ class SlottedLink(Step):
     def place(self, P, prm, ctx, sigma=None):
         (kx, ky), (ax, ay) = P[self.known], P[self.point]
         s = self.sigma if sigma is None else sigma
+        if self.offset:
+            return place_offset(kx, ky, ax, ay, prm[0], prm[1], prm[2], s, ctx, self)
         return place(kx, ky, ax, ay, prm[0], prm[1], s, ctx, self)
 
     def default_hint(self, P):
@@ -204,6 +224,7 @@ class SlottedLink(Step):
             self.guide,
         )
         i, sigma, step, L, rho = self.index, self.sigma, self, prm[0], prm[1]
+        e = prm[2] if self.offset else None
 
         def frame(P):
             (f1x, f1y), (f2x, f2y) = P[F1], P[F2]
@@ -212,7 +233,10 @@ class SlottedLink(Step):
 
         def position(m):
             P = m.P
-            x, y, c = place(*P[K], *P[Ab], L, rho, sigma, m.ctx, step)
+            if e is None:
+                x, y, c = place(*P[K], *P[Ab], L, rho, sigma, m.ctx, step)
+            else:
+                x, y, c = place_offset(*P[K], *P[Ab], L, rho, e, sigma, m.ctx, step)
             P[N] = (x, y)
             m.cond[i] = c
 
@@ -265,8 +289,14 @@ class SlottedLink(Step):
         sizes = walk.sizes
         Ls, Vs, As = sizes["position"], sizes["velocity"], sizes["acceleration"]
         Om, Als = sizes["omega"], sizes["alpha"]
-        m = vmax(vhypot(P[A_][0] - P[K_][0], P[A_][1] - P[K_][1]), C_FLOOR * Ls)
         n = self.new
+        if self.offset:  # the arm of the lever's turn: |t|, along the slot from K's foot
+            (f1x, f1y), (f2x, f2y) = P[self.first], P[self.second]
+            ln = vhypot(f2x - f1x, f2y - f1y)
+            t = ((P[A_][0] - P[K_][0]) * (f2x - f1x) + (P[A_][1] - P[K_][1]) * (f2y - f1y)) / ln
+            m = vmax(abs(t), C_FLOOR * Ls)
+        else:
+            m = vmax(vhypot(P[A_][0] - P[K_][0], P[A_][1] - P[K_][1]), C_FLOOR * Ls)
         L = vhypot(P[n][0] - P[K_][0], P[n][1] - P[K_][1])
         vs = abs(m_.S[A_][0]) if A_ in m_.S else Vs
         w = abs(m_.W.get(self.guide, 0.0))
@@ -286,6 +316,26 @@ class SlottedLink(Step):
         a = ka + (a_in * As + L * d_al + 2 * w * d_w * L + (w * w + al) * L * turn) / As
         return p, v, a, d_w / Om + k, d_al / Als + k
 
+    def coriolis_left_out(self, sol):
+        """What a polygon drawn without the Coriolis component gives (the classic slip of a
+        crank and slotted lever): {(kind, name): value} for the lever's alpha (signed) and
+        the size of its far end's acceleration. The line parallel to the slot is then drawn
+        through a' itself: ``aA = aK - w^2 d + al perp(d) + as u``, solved as before."""
+        P, A, K, N, Ab = sol.P, sol.A, self.known, self.new, self.point
+        cx, cy = sol.coriolis(Ab)
+        if cx == 0 and cy == 0:
+            return {}
+        (f1x, f1y), (f2x, f2y) = P[self.first], P[self.second]
+        L = math.hypot(f2x - f1x, f2y - f1y)
+        ux, uy = (f2x - f1x) / L, (f2y - f1y) / L
+        dx, dy = P[Ab][0] - P[K][0], P[Ab][1] - P[K][1]
+        k = sol.W[self.guide] ** 2
+        ex, ey = A[Ab][0] - A[K][0] + k * dx, A[Ab][1] - A[K][1] + k * dy
+        al, _ = acceleration(dx, dy, ux, uy, ex, ey)
+        px, py = P[N][0] - P[K][0], P[N][1] - P[K][1]
+        aN = (A[K][0] - k * px - al * py, A[K][1] - k * py + al * px)
+        return {("alpha", self.guide): al, ("a", N): math.hypot(*aN)}
+
     # ----- failures and words
     def at_pivot(self):
         """The error for a block at the slotted link's pivot: the link's direction is undefined."""
@@ -296,6 +346,8 @@ class SlottedLink(Step):
         )
 
     def singular_why(self, c) -> str:
+        if self.offset:
+            return why(self, "singular", c)
         return (
             f"block {self.point} is at {self.known}, the pivot of {self.guide} (condition "
             f"{c:.2g}): the link's direction is undefined"
@@ -305,19 +357,25 @@ class SlottedLink(Step):
         return None  # its condition is the block's distance from the pivot, not an angle
 
     def warning(self, c) -> str:
+        if self.offset:
+            return why(self, "warning", c)
         return (
             f"{self.label}: block {self.point} is close to {self.known}, the pivot of "
             f"{self.guide} (condition {c:.3g})"
         )
 
     def limit_why(self) -> str:
+        if self.offset:
+            return why(self, "limit")
         return f"block {self.point} reaches the pivot {self.known} of {self.guide}"
 
     def condition_column(self):
         return (
             f"cond step {self.index + 1}",
             "1",
-            f"|{self.known}{self.point}| / {self.ref or self.guide} (at most 1)",
+            why(self, "column")
+            if self.offset
+            else f"|{self.known}{self.point}| / {self.ref or self.guide} (at most 1)",
         )
 
     def bodies(self):
@@ -334,6 +392,8 @@ class SlottedLink(Step):
         return None
 
     def position_words(self, L, which, angle_deg):
+        if self.offset:
+            return why(self, "position", L=L)
         return (
             f"{self.new}: {self.guide} passes through the block at {self.point}: draw the "
             f"line from {self.known} through {self.point} and mark {self.known}{self.new} = "
@@ -341,6 +401,15 @@ class SlottedLink(Step):
         )
 
     # ----- the polygons
+    def _n_words(self, k, n, c, ph) -> str:
+        """How the lever's far end n follows from k and c (the image of the lever's point
+        under the block): along k c produced, or by the image triangle (an offset slot)."""
+        then = "then " if ph == "velocity" else ""
+        if self.offset:
+            return then + image_words(self, k, n, c)
+        rule = f"{k}{n} / {k}{c} = {self.known}{self.new} / {self.known}{self.point}"
+        return f"then {rule} gives {n}" if then else f"{n} follows by {rule}"
+
     def construction(self, sol, ph):
         P, Ab, K, N = sol.P, self.point, self.known, self.new
         cond = sol.conditions.get(self.index, 1.0)
@@ -367,8 +436,8 @@ class SlottedLink(Step):
             text = (
                 f"through {pole_text(sol, K, ph)} draw a line perpendicular to {K}{Ab} (the "
                 f"point of {self.guide} under the block); through {lab(Ab)}, one parallel "
-                f"to {self.guide} (the sliding); they meet at {c}; then {lab(K)}{lab(N)} / "
-                f"{lab(K)}{c} = {K}{N} / {K}{Ab} gives {lab(N)}"
+                f"to {self.guide} (the sliding); they meet at {c}; "
+                f"{self._n_words(lab(K), lab(N), c, ph)}"
             )
             found = (
                 Vector(
@@ -456,8 +525,7 @@ class SlottedLink(Step):
             f"{self.guide} under the block ({cen.text}) and through its end a line "
             f"perpendicular to {K}{Ab}; from {lab(Ab)} draw the Coriolis component "
             f"backwards ({corv.text}) and through its start a line parallel to "
-            f"{self.guide}; they meet at {c}; {lab(N)} follows by {lab(K)}{lab(N)} / "
-            f"{lab(K)}{c} = {K}{N} / {K}{Ab}"
+            f"{self.guide}; they meet at {c}; {self._n_words(lab(K), lab(N), c, ph)}"
         )
         found = (
             Vector(

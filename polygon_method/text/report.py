@@ -159,6 +159,8 @@ def _slider_lines(sol: Solution) -> list[str]:
         vs, a_s, cor = sol.S[s.key][0], sol.S[s.key][1], sol.coriolis(s.key)
         vs, a_s = sol.shown(vs, "vs", s.key), sol.shown(a_s, "as", s.key)
         guide = getattr(s, "label", None) or getattr(s, "along", "")
+        if getattr(s, "offset", 0.0):  # an offset slot: its line's distance off the link's
+            guide += f" slot {fmt(abs(s.offset) / sc.length_unit, 4)} {'left' if s.offset > 0 else 'right'}"
         lines.append(
             f"{s.key:<8} {guide:<16} {vs:<18.5g} {a_s:<20.5g} "
             f"{_vec(*cor, noise=sol.noise('ac', s.key)):<24}"

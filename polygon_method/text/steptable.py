@@ -259,6 +259,12 @@ def _slider_facts(facts, sc, u, block=None):
             facts.append(
                 f"block {s.point} slides in the {guide_words(s.label, 'slot', f'yoke {s.yoke}')}"
             )
+        elif s.offset:  # an offset slot: its line off the link's
+            facts.append(
+                f"block {s.point} slides in a slot of {s.guide} parallel to its line "
+                f"{s.first} -> {s.second}, {fmt(abs(s.offset) / u, 5)} {sc.units} to the "
+                f"{'left' if s.offset > 0 else 'right'} of it"
+            )
         else:
             facts.append(f"block {s.point} slides along {s.guide}")
 

@@ -52,6 +52,12 @@ def _slider_sentence(sc, s) -> str | None:
             f"A block at {s.point} slides in the "
             f"{guide_words(s.label, 'slot', f'the yoke {s.yoke}')}."
         )
+    if hasattr(s, "guide") and s.offset:  # an offset slot
+        return (
+            f"A block at {s.point} slides in a slot of link {s.guide} parallel to its line "
+            f"{s.first} -> {s.second}, {_len(sc, abs(s.offset))} to the "
+            f"{'left' if s.offset > 0 else 'right'} of it."
+        )
     if hasattr(s, "guide"):  # a block on a moving link (a scene record, not a step)
         return f"A block at {s.point} slides along link {s.guide}."
     path = guide_words(s.label)  # "horizontal path", "path at 30 deg"
