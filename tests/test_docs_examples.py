@@ -173,13 +173,16 @@ def scratch(tmp_path, monkeypatch):
     return tmp_path
 
 
-def _run(argv):
+def _run(argv, streams=False):
+    """The command's exit code and what it printed (``streams``: stdout and stderr apart)."""
     out, err = io.StringIO(), io.StringIO()
     with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
         try:
             code = main(argv)
         except SystemExit as exc:  # --help
             code = exc.code
+    if streams:
+        return code, out.getvalue(), err.getvalue()
     return code, out.getvalue() + err.getvalue()
 
 
@@ -219,9 +222,13 @@ for _name, _line, _cmd in _inline_commands():
 @pytest.mark.parametrize("cmd, shown", _RUNS)
 def test_a_documented_command_prints_what_the_doc_shows(scratch, cmd, shown):
     argv = _argv(cmd)
-    code, printed = _run(argv)
+    code, out, err = _run(argv, streams=True)
+    printed = out + err
     error = any(ln.startswith(f"polygon-method {argv[0]}: ") for ln in shown)
     assert code == (2 if error else 0), printed
+    if error:  # "one line on stderr ...; nothing is written" (errors.md)
+        assert not out and len(err.splitlines()) == 1, printed
+        assert [p.name for p in scratch.iterdir()] == ["worked_problems"]
     missing = _follows(shown, printed)
     assert missing is None, f"not printed: {missing!r}\n--- printed:\n{printed}"
 
@@ -304,7 +311,8 @@ def test_the_error_lines_errors_md_shows(scratch, shown):
     for old, new in zip(edits[::2], edits[1::2]):
         scene = scene.replace(old, new)
     Path("fourbar.toml").write_text(scene)
-    code, printed = _run(["solve", "fourbar.toml"])
+    code, out, printed = _run(["solve", "fourbar.toml"], streams=True)
+    assert not out and len(printed.splitlines()) == 1
     assert code == 2
     assert _same(shown, printed.strip()), printed
 
