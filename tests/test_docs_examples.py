@@ -707,3 +707,38 @@ def test_the_test_tools_the_readme_installs_are_all_the_tests_import():
     for module in sorted(imported - set(sys.stdlib_module_names) - local):
         dists = {name(d) for d in distributions.get(module, [module])}
         assert dists & installed, f"{module} is imported but not installed by .[{extra}]"
+
+
+def test_the_variants_workflow_variants_md_shows(scratch):
+    """variants.md's two commands on the seed four-bar (its [variants] table): the files its
+    table lists, and no other; a student's answer file as the doc writes it graded against
+    its variant, the class's gradebook written, exit 0 for a whole class (README)."""
+    (name, _, _, text) = KEYED[
+        "docs/variants.md: polygon-method variants SCENE --count 40 --seed 7 -o class/ [--pdf]"
+    ]
+    scene = "worked_problems/fourbar_image_points.toml"
+    make, grade = [_argv(_strip_optional(c).replace("SCENE", scene)) for c, _ in _commands(text)]
+    code, printed = _run(make)
+    assert code == 0, printed
+    table = (ROOT / name).read_text(encoding="utf-8").split("| file | what it is |")[1]
+    rows = re.findall(r"^\| (`.*?) \|", table, re.M)
+    listed = set()
+    for row in rows:
+        spans = re.findall(r"`([^`]+)`", row)
+        if "..." in row:  # `variant-01.toml` ... `variant-40.toml`
+            digits = [re.search(r"\d+", s).group() for s in spans[:2]]
+            first, last, width = int(digits[0]), int(digits[1]), len(digits[0])
+            count = int(make[make.index("--count") + 1])
+            assert (first, last) == (1, count)
+            listed |= {f"variant-{i:0{width}d}.toml" for i in range(first, last + 1)}
+        else:
+            listed |= {s for s in spans if "." in s and not s.endswith(".pdf")}  # --pdf left out
+    folder = make[make.index("-o") + 1].rstrip("/")
+    assert {p.name for p in Path(folder).iterdir()} == listed
+    Path("answers").mkdir()
+    answer = KEYED['docs/variants.md: student = "Ann Smith"'][3]
+    Path("answers/ann.toml").write_text(answer)
+    code, printed = _run(grade)
+    assert code == 0, printed
+    book = Path(grade[grade.index("--gradebook") + 1]).read_text()
+    assert "Ann Smith" in book and re.search(r"^Ann Smith\s+07\s", printed, re.M), printed
