@@ -742,3 +742,16 @@ def test_the_variants_workflow_variants_md_shows(scratch):
     assert code == 0, printed
     book = Path(grade[grade.index("--gradebook") + 1]).read_text()
     assert "Ann Smith" in book and re.search(r"^Ann Smith\s+07\s", printed, re.M), printed
+
+
+def test_every_file_the_docs_name_is_there():
+    """A path of this repository a doc names (``worked_problems/...``, ``tests/...``,
+    ``benchmarks/...``, an image) is there; a ``*`` pattern matches a file."""
+    named = set()
+    for name in DOC_FILES:
+        text = (ROOT / name).read_text(encoding="utf-8")
+        found = re.findall(r"(?:worked_problems|tests|benchmarks|docs)/[\w./*-]+", text)
+        named |= {(name, p.rstrip(".,")) for p in found}
+    assert len(named) > 50
+    for name, path in sorted(named):
+        assert next(ROOT.glob(path), None) if "*" in path else (ROOT / path).exists(), (name, path)
