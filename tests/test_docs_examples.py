@@ -11,14 +11,17 @@ the expected value, never the tool's output frozen here:
   not run, but every option it names is one its command takes;
 - every TOML snippet parses with ``polygon_method.parse_scene``; a fragment (a table or two
   of a scene, as the doc presents it) is completed with the worked problem named in
-  ``FRAGMENTS`` below, the snippet's tables taking the place of the problem's; an answer
-  file against its scene, a turning-moment diagram on its own with ``parse_cycle``;
+  ``FRAGMENTS`` below, the snippet's entries merged into the problem's (the tables it
+  names replaced whole); an answer file against its scene, a turning-moment diagram on
+  its own with ``parse_cycle``;
 - the commands written in the prose take the options they show, and those on a worked
   problem run;
 - the Python blocks run, a value shown in a comment (``expr  # ['A4 portrait']``) is the
   expression's value; the JSON shown is what ``solve --json`` has; the commands of the
   benchmark scripts name files and options that exist; the README's two commands for a
-  fresh machine fit pyproject.toml and the CI.
+  fresh machine fit pyproject.toml and the CI; a few of the README's and variants.md's
+  sentences about what the tool does are run as they say; every file the docs name is
+  there.
 
 Every block is claimed by one of these (``test_every_block_is_held``): a new example
 is run, or named here with the reason it is not.
@@ -45,6 +48,7 @@ from polygon_method.scene.answer_files import parse_answers
 
 ROOT = Path(__file__).resolve().parent.parent
 WORKED = ROOT / "worked_problems"
+# architecture.md, the map of the code, has no example to run (its new step kind is made up)
 DOC_FILES = ["README.md"] + sorted(
     f"docs/{p.name}" for p in (ROOT / "docs").glob("*.md") if p.name != "architecture.md"
 )
