@@ -11,14 +11,17 @@ the expected value, never the tool's output frozen here:
   not run, but every option it names is one its command takes;
 - every TOML snippet parses with ``polygon_method.parse_scene``; a fragment (a table or two
   of a scene, as the doc presents it) is completed with the worked problem named in
-  ``FRAGMENTS`` below, the snippet's tables taking the place of the problem's; an answer
-  file against its scene, a turning-moment diagram on its own with ``parse_cycle``;
+  ``FRAGMENTS`` below, the snippet's entries merged into the problem's (the tables it
+  names replaced whole); an answer file against its scene, a turning-moment diagram on
+  its own with ``parse_cycle``;
 - the commands written in the prose take the options they show, and those on a worked
   problem run;
 - the Python blocks run, a value shown in a comment (``expr  # ['A4 portrait']``) is the
   expression's value; the JSON shown is what ``solve --json`` has; the commands of the
   benchmark scripts name files and options that exist; the README's two commands for a
-  fresh machine fit pyproject.toml and the CI.
+  fresh machine fit pyproject.toml and the CI; a few of the README's and variants.md's
+  sentences about what the tool does are run as they say; every file the docs name is
+  there.
 
 Every block is claimed by one of these (``test_every_block_is_held``): a new example
 is run, or named here with the reason it is not.
@@ -45,6 +48,7 @@ from polygon_method.scene.answer_files import parse_answers
 
 ROOT = Path(__file__).resolve().parent.parent
 WORKED = ROOT / "worked_problems"
+# architecture.md, the map of the code, has no example to run (its new step kind is made up)
 DOC_FILES = ["README.md"] + sorted(
     f"docs/{p.name}" for p in (ROOT / "docs").glob("*.md") if p.name != "architecture.md"
 )
@@ -173,13 +177,16 @@ def scratch(tmp_path, monkeypatch):
     return tmp_path
 
 
-def _run(argv):
+def _run(argv, streams=False):
+    """The command's exit code and what it printed (``streams``: stdout and stderr apart)."""
     out, err = io.StringIO(), io.StringIO()
     with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
         try:
             code = main(argv)
         except SystemExit as exc:  # --help
             code = exc.code
+    if streams:
+        return code, out.getvalue(), err.getvalue()
     return code, out.getvalue() + err.getvalue()
 
 
@@ -219,9 +226,13 @@ for _name, _line, _cmd in _inline_commands():
 @pytest.mark.parametrize("cmd, shown", _RUNS)
 def test_a_documented_command_prints_what_the_doc_shows(scratch, cmd, shown):
     argv = _argv(cmd)
-    code, printed = _run(argv)
+    code, out, err = _run(argv, streams=True)
+    printed = out + err
     error = any(ln.startswith(f"polygon-method {argv[0]}: ") for ln in shown)
     assert code == (2 if error else 0), printed
+    if error:  # "one line on stderr ...; nothing is written" (errors.md)
+        assert not out and len(err.splitlines()) == 1, printed
+        assert [p.name for p in scratch.iterdir()] == ["worked_problems"]
     missing = _follows(shown, printed)
     assert missing is None, f"not printed: {missing!r}\n--- printed:\n{printed}"
 
@@ -304,7 +315,8 @@ def test_the_error_lines_errors_md_shows(scratch, shown):
     for old, new in zip(edits[::2], edits[1::2]):
         scene = scene.replace(old, new)
     Path("fourbar.toml").write_text(scene)
-    code, printed = _run(["solve", "fourbar.toml"])
+    code, out, printed = _run(["solve", "fourbar.toml"], streams=True)
+    assert not out and len(printed.splitlines()) == 1
     assert code == 2
     assert _same(shown, printed.strip()), printed
 
@@ -699,3 +711,51 @@ def test_the_test_tools_the_readme_installs_are_all_the_tests_import():
     for module in sorted(imported - set(sys.stdlib_module_names) - local):
         dists = {name(d) for d in distributions.get(module, [module])}
         assert dists & installed, f"{module} is imported but not installed by .[{extra}]"
+
+
+def test_the_variants_workflow_variants_md_shows(scratch):
+    """variants.md's two commands on the seed four-bar (its [variants] table): the files its
+    table lists, and no other; a student's answer file as the doc writes it graded against
+    its variant, the class's gradebook written, exit 0 for a whole class (README)."""
+    (name, _, _, text) = KEYED[
+        "docs/variants.md: polygon-method variants SCENE --count 40 --seed 7 -o class/ [--pdf]"
+    ]
+    scene = "worked_problems/fourbar_image_points.toml"
+    make, grade = [_argv(_strip_optional(c).replace("SCENE", scene)) for c, _ in _commands(text)]
+    code, printed = _run(make)
+    assert code == 0, printed
+    table = (ROOT / name).read_text(encoding="utf-8").split("| file | what it is |")[1]
+    rows = re.findall(r"^\| (`.*?) \|", table, re.M)
+    listed = set()
+    for row in rows:
+        spans = re.findall(r"`([^`]+)`", row)
+        if "..." in row:  # `variant-01.toml` ... `variant-40.toml`
+            digits = [re.search(r"\d+", s).group() for s in spans[:2]]
+            first, last, width = int(digits[0]), int(digits[1]), len(digits[0])
+            count = int(make[make.index("--count") + 1])
+            assert (first, last) == (1, count)
+            listed |= {f"variant-{i:0{width}d}.toml" for i in range(first, last + 1)}
+        else:
+            listed |= {s for s in spans if "." in s and not s.endswith(".pdf")}  # --pdf left out
+    folder = make[make.index("-o") + 1].rstrip("/")
+    assert {p.name for p in Path(folder).iterdir()} == listed
+    Path("answers").mkdir()
+    answer = KEYED['docs/variants.md: student = "Ann Smith"'][3]
+    Path("answers/ann.toml").write_text(answer)
+    code, printed = _run(grade)
+    assert code == 0, printed
+    book = Path(grade[grade.index("--gradebook") + 1]).read_text()
+    assert "Ann Smith" in book and re.search(r"^Ann Smith\s+07\s", printed, re.M), printed
+
+
+def test_every_file_the_docs_name_is_there():
+    """A path of this repository a doc names (``worked_problems/...``, ``tests/...``,
+    ``benchmarks/...``, an image) is there; a ``*`` pattern matches a file."""
+    named = set()
+    for name in DOC_FILES:
+        text = (ROOT / name).read_text(encoding="utf-8")
+        found = re.findall(r"(?:worked_problems|tests|benchmarks|docs)/[\w./*-]+", text)
+        named |= {(name, p.rstrip(".,")) for p in found}
+    assert len(named) > 50
+    for name, path in sorted(named):
+        assert next(ROOT.glob(path), None) if "*" in path else (ROOT / path).exists(), (name, path)
