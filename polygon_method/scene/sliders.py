@@ -36,9 +36,12 @@ class _Sliders:
                 and "path" not in spec
             ):
                 raise self.error(
-                    'offset goes with along = "CP" alone: a block in a slot of the lever CP '
-                    "whose line misses the lever's centre line (a peg's slot, a yoke's or a "
-                    "fixed path takes none)",
+                    "a fixed path takes no offset: an offset line of stroke is stated by a "
+                    "point of it, its through = [x, y]"
+                    if "path" in spec
+                    else 'offset goes with along = "CP" alone: a block in a slot of the lever '
+                    "CP whose line misses the lever's centre line (a peg's slot or a yoke's "
+                    "takes none)",
                     "sliders",
                     name,
                 )
