@@ -558,3 +558,26 @@ def test_the_offset_slot_quick_return_time_ratio_and_stroke():
     got = {v.key: v.correct for v in check_answers(solve(parse_scene(text)))}
     assert abs(got["time_ratio"] - ratio) < 1e-9 * ratio
     assert abs(got["stroke_R"] - float(stroke)) < 1e-9 * float(stroke)
+
+
+@pytest.mark.parametrize(
+    "name, angle",
+    [
+        ("hunt5_offset_slot_lever", None),
+        ("hunt5_rocker_in_offset_slot_of_crank", None),
+        ("hunt5_oscillating_cylinder_offset_trunnion", None),
+        ("lever", "-89.9"),  # the slot nearly square to QA: condition 0.002
+    ],
+)
+def test_offset_slots_within_their_error_bounds(name, angle):
+    """Every quantity within its own error bound of the 40-digit Newton reference (the
+    offset in its guide equation), near the slot's limit position too."""
+    from error_bounds import compare_case, load_reference
+
+    if angle is None:
+        sol = solve(load_scene(HERE / f"{name}.toml"))
+    else:
+        sol = solve(parse_scene(_lever("30", angle)))
+        assert min(sol.conditions.values()) < 0.01
+    for kind, what, err, bound in compare_case(sol, load_reference(40)):
+        assert err <= bound, (kind, what, err, bound)
