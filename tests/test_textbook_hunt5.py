@@ -581,3 +581,22 @@ def test_offset_slots_within_their_error_bounds(name, angle):
         assert min(sol.conditions.values()) < 0.01
     for kind, what, err, bound in compare_case(sol, load_reference(40)):
         assert err <= bound, (kind, what, err, bound)
+
+
+def test_an_offset_slots_sweep_bounds_are_the_solves_bounds():
+    """The same bound formulas on arrays: each sample of a sweep has a solve's bounds."""
+    from polygon_method.motion.sweeps import sweep
+    from polygon_method.solver.errorbound import error_bounds
+    from polygon_method.solver.kinematics import evaluate
+
+    scene = load_scene(HERE / "hunt5_offset_slot_lever.toml")
+    res = sweep(scene, [0.3, 1.7, 2.9, 4.4])
+    b = error_bounds(res)
+    for i, th in enumerate(res.theta):
+        one = error_bounds(evaluate(res.plan, theta=float(th)))
+        for table, single in ((b.P, one.P), (b.V, one.V), (b.A, one.A), (b.W, one.W)):
+            for k, v in single.items():
+                got = v if isinstance(table[k], float) else table[k][i]
+                assert got == pytest.approx(v, rel=1e-6, abs=1e-30), (k, th)
+        for got, want in zip(b.S["A"], one.S["A"]):
+            assert (got if isinstance(got, float) else got[i]) == pytest.approx(want, rel=1e-6)
