@@ -600,3 +600,37 @@ def test_an_offset_slots_sweep_bounds_are_the_solves_bounds():
                 assert got == pytest.approx(v, rel=1e-6, abs=1e-30), (k, th)
         for got, want in zip(b.S["A"], one.S["A"]):
             assert (got if isinstance(got, float) else got[i]) == pytest.approx(want, rel=1e-6)
+
+
+def test_an_offset_slots_force_analysis_by_virtual_power():
+    """The force analysis walks the lever with its block pushed across the offset slot
+    (the normal force at A, off the lever's line): its driving torque is the virtual power's,
+    T omega + sum(F.v) + sum(m g.v_G - m a_G.v_G - I alpha omega) = 0, from the motion
+    (held to the reference above)."""
+    text = (HERE / "hunt5_offset_slot_lever.toml").read_text(encoding="utf-8")
+    text = text[: text.index("[answers]")] + (
+        "[masses]\n"
+        'QB = { mass = "12 kg", along = 250, inertia = "0.3 kg m^2" }\n'
+        'BR = { mass = "3 kg", along = 100, inertia = "0.012 kg m^2" }\n'
+        'A = { mass = "1.5 kg" }\nR = { mass = "20 kg" }\n'
+        "[gravity]\n"
+        '[loads]\nR = { force = "800 N", direction = 180 }\n'
+    )
+    sol = solve(parse_scene(text))
+    V, A, W, Al = sol.V, sol.A, sol.W, sol.Al
+
+    def dot(a, b):
+        return a[0] * b[0] + a[1] * b[1]
+
+    def mid(D, p, q):
+        return ((D[p][0] + D[q][0]) / 2, (D[p][1] + D[q][1]) / 2)
+
+    g, power = (0.0, -9.81), dot((-800.0, 0.0), V["R"])
+    for m, inertia, p, q in ((12, 0.3, "Q", "B"), (3, 0.012, "B", "R")):
+        vg, ag = mid(V, p, q), mid(A, p, q)
+        power += m * dot(g, vg) - m * dot(ag, vg) - inertia * Al[p + q] * W[p + q]
+    for m, p in ((1.5, "A"), (20, "R")):
+        power += m * dot(g, V[p]) - m * dot(A[p], V[p])
+    want = -power / W["OA"]
+    got = sol.forces.input_torque
+    assert abs(got - want) < 1e-9 * max(abs(want), 800 * 0.1)
