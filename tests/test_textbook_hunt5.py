@@ -634,3 +634,19 @@ def test_an_offset_slots_force_analysis_by_virtual_power():
     want = -power / W["OA"]
     got = sol.forces.input_torque
     assert abs(got - want) < 1e-9 * max(abs(want), 800 * 0.1)
+
+
+def test_linkage_says_the_slots_offset_and_whether_the_crank_turns_fully(capsys):
+    """|OQ - OA| = 150 mm is the nearest the block comes to Q: a slot 30 mm off lets the
+    crank turn fully, one 170 mm off does not (the lever cannot reach the block there)."""
+    from polygon_method.cli import main
+
+    assert main(["linkage", str(HERE / "hunt5_offset_slot_lever.toml")]) == 0
+    out = capsys.readouterr().out
+    assert "lever QB pivoted at Q, OQ = 250 mm, its slot 30 mm off its line" in out
+    assert "comes within |OQ - OA| = 150 mm of Q, never nearer than the offset" in out
+    from polygon_method.linkage import analyse
+
+    far = parse_scene(_lever("170", "90").replace("Q = [0, -130]", "Q = [0, -250]"))
+    words = " ".join(analyse(far).classification)
+    assert "nearer than the offset: the crank cannot turn fully" in words
