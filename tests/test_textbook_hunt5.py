@@ -235,6 +235,7 @@ def test_two_blocks_guides_at_60_by_hand():
         "hunt5_swinging_link_block_on_offset_pin",
         "hunt5_pantograph_tracing_point",
         "hunt5_hackworth_valve_gear",
+        "hunt5_bell_crank_angled_offset_slot",
     ],
 )
 def test_book_answers(name):
