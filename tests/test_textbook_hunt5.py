@@ -236,6 +236,7 @@ def test_two_blocks_guides_at_60_by_hand():
         "hunt5_pantograph_tracing_point",
         "hunt5_hackworth_valve_gear",
         "hunt5_bell_crank_angled_offset_slot",
+        "hunt5_rocker_arm_through_offset_swivel",
     ],
 )
 def test_book_answers(name):
