@@ -195,8 +195,8 @@ class SliderDyad(Step):
         return (ell, qx, qy, ux, uy)
 
     def drawn(self, prm, pencil, P):
-        if self.path is None:
-            return (prm[0] + pencil(), prm[1])
+        if self.path is None:  # (an offset slot's line set off with the pencil too)
+            return (prm[0] + pencil(), prm[1] + pencil() if self.offset else prm[1])
         return (prm[0] + pencil(), prm[1] + pencil(), prm[2] + pencil(), prm[3], prm[4])
 
     def reach(self):

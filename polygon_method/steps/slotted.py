@@ -217,6 +217,11 @@ class SlottedLink(Step):
             off if sl is None or sl.first == self.known else -off,
         )
 
+    def drawn(self, prm, pencil, P):
+        """An offset slot's circle about the pivot is drawn with the pencil's error; the
+        slot through the pivot draws nothing of its own."""
+        return (prm[0], prm[1], prm[2] + pencil()) if self.offset else prm
+
     def reach(self):
         return max(self.length, LEAST_REACH)
 
