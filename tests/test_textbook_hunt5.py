@@ -235,6 +235,8 @@ def test_two_blocks_guides_at_60_by_hand():
         "hunt5_swinging_link_block_on_offset_pin",
         "hunt5_pantograph_tracing_point",
         "hunt5_hackworth_valve_gear",
+        "hunt5_bell_crank_angled_offset_slot",
+        "hunt5_rocker_arm_through_offset_swivel",
     ],
 )
 def test_book_answers(name):
@@ -558,3 +560,95 @@ def test_the_offset_slot_quick_return_time_ratio_and_stroke():
     got = {v.key: v.correct for v in check_answers(solve(parse_scene(text)))}
     assert abs(got["time_ratio"] - ratio) < 1e-9 * ratio
     assert abs(got["stroke_R"] - float(stroke)) < 1e-9 * float(stroke)
+
+
+@pytest.mark.parametrize(
+    "name, angle",
+    [
+        ("hunt5_offset_slot_lever", None),
+        ("hunt5_rocker_in_offset_slot_of_crank", None),
+        ("hunt5_oscillating_cylinder_offset_trunnion", None),
+        ("lever", "-89.9"),  # the slot nearly square to QA: condition 0.002
+    ],
+)
+def test_offset_slots_within_their_error_bounds(name, angle):
+    """Every quantity within its own error bound of the 40-digit Newton reference (the
+    offset in its guide equation), near the slot's limit position too."""
+    from error_bounds import compare_case, load_reference
+
+    if angle is None:
+        sol = solve(load_scene(HERE / f"{name}.toml"))
+    else:
+        sol = solve(parse_scene(_lever("30", angle)))
+        assert min(sol.conditions.values()) < 0.01
+    for kind, what, err, bound in compare_case(sol, load_reference(40)):
+        assert err <= bound, (kind, what, err, bound)
+
+
+def test_an_offset_slots_sweep_bounds_are_the_solves_bounds():
+    """The same bound formulas on arrays: each sample of a sweep has a solve's bounds."""
+    from polygon_method.motion.sweeps import sweep
+    from polygon_method.solver.errorbound import error_bounds
+    from polygon_method.solver.kinematics import evaluate
+
+    scene = load_scene(HERE / "hunt5_offset_slot_lever.toml")
+    res = sweep(scene, [0.3, 1.7, 2.9, 4.4])
+    b = error_bounds(res)
+    for i, th in enumerate(res.theta):
+        one = error_bounds(evaluate(res.plan, theta=float(th)))
+        for table, single in ((b.P, one.P), (b.V, one.V), (b.A, one.A), (b.W, one.W)):
+            for k, v in single.items():
+                got = v if isinstance(table[k], float) else table[k][i]
+                assert got == pytest.approx(v, rel=1e-6, abs=1e-30), (k, th)
+        for got, want in zip(b.S["A"], one.S["A"]):
+            assert (got if isinstance(got, float) else got[i]) == pytest.approx(want, rel=1e-6)
+
+
+def test_an_offset_slots_force_analysis_by_virtual_power():
+    """The force analysis walks the lever with its block pushed across the offset slot
+    (the normal force at A, off the lever's line): its driving torque is the virtual power's,
+    T omega + sum(F.v) + sum(m g.v_G - m a_G.v_G - I alpha omega) = 0, from the motion
+    (held to the reference above)."""
+    text = (HERE / "hunt5_offset_slot_lever.toml").read_text(encoding="utf-8")
+    text = text[: text.index("[answers]")] + (
+        "[masses]\n"
+        'QB = { mass = "12 kg", along = 250, inertia = "0.3 kg m^2" }\n'
+        'BR = { mass = "3 kg", along = 100, inertia = "0.012 kg m^2" }\n'
+        'A = { mass = "1.5 kg" }\nR = { mass = "20 kg" }\n'
+        "[gravity]\n"
+        '[loads]\nR = { force = "800 N", direction = 180 }\n'
+    )
+    sol = solve(parse_scene(text))
+    V, A, W, Al = sol.V, sol.A, sol.W, sol.Al
+
+    def dot(a, b):
+        return a[0] * b[0] + a[1] * b[1]
+
+    def mid(D, p, q):
+        return ((D[p][0] + D[q][0]) / 2, (D[p][1] + D[q][1]) / 2)
+
+    g, power = (0.0, -9.81), dot((-800.0, 0.0), V["R"])
+    for m, inertia, p, q in ((12, 0.3, "Q", "B"), (3, 0.012, "B", "R")):
+        vg, ag = mid(V, p, q), mid(A, p, q)
+        power += m * dot(g, vg) - m * dot(ag, vg) - inertia * Al[p + q] * W[p + q]
+    for m, p in ((1.5, "A"), (20, "R")):
+        power += m * dot(g, V[p]) - m * dot(A[p], V[p])
+    want = -power / W["OA"]
+    got = sol.forces.input_torque
+    assert abs(got - want) < 1e-9 * max(abs(want), 800 * 0.1)
+
+
+def test_linkage_says_the_slots_offset_and_whether_the_crank_turns_fully(capsys):
+    """|OQ - OA| = 150 mm is the nearest the block comes to Q: a slot 30 mm off lets the
+    crank turn fully, one 170 mm off does not (the lever cannot reach the block there)."""
+    from polygon_method.cli import main
+
+    assert main(["linkage", str(HERE / "hunt5_offset_slot_lever.toml")]) == 0
+    out = capsys.readouterr().out
+    assert "lever QB pivoted at Q, OQ = 250 mm, its slot 30 mm off its line" in out
+    assert "comes within |OQ - OA| = 150 mm of Q, never nearer than the offset" in out
+    from polygon_method.linkage import analyse
+
+    far = parse_scene(_lever("170", "90").replace("Q = [0, -130]", "Q = [0, -250]"))
+    words = " ".join(analyse(far).classification)
+    assert "nearer than the offset: the crank cannot turn fully" in words

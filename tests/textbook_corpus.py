@@ -138,8 +138,11 @@ def other_position(scene, P, X):
     tri = _triad_other(scene, P, X)
     if tri is not False:
         return tri
+    from polygon_method.solver.compiler import compile_plan
+
+    slotted = {st.finds[0] for st in compile_plan(scene).steps if st.kind == "slotted"}
     for s in scene.sliders:  # the free end of a slotted link: on the other side of its pivot
-        if isinstance(s, GuideSlider) and s.point != X and X in (s.first, s.second):
+        if isinstance(s, GuideSlider) and X in slotted and X in (s.first, s.second):
             k = P[s.second if X == s.first else s.first]
             if s.offset:  # an offset slot: the other tangent from the block to its circle
                 return _other_tangent(k, P[s.point], P[X], s.offset if X == s.second else -s.offset)

@@ -251,6 +251,18 @@ def _slotted_character(scene: Scene, slot) -> tuple:
         f"pivots {_mm(d, scene)}: the lever "
         + ("turns fully (Whitworth)" if whit else "oscillates (quick return)")
     ]
+    if sl.offset:  # the block never nearer the lever's pivot than the slot's offset
+        e, near = abs(sl.offset), abs(d - cr.length)
+        members += f", its slot {_mm(e, scene)} off its line"
+        classification.append(
+            f"the slot {_mm(e, scene)} off the lever's line: the block comes within "
+            f"|{cr.pivot}{sl.known} - {cr.link}| = {_mm(near, scene)} of {sl.known}, "
+            + (
+                "never nearer than the offset: the crank turns fully"
+                if near >= e
+                else "nearer than the offset: the crank cannot turn fully"
+            )
+        )
     return kind, members, None, classification
 
 

@@ -9,7 +9,7 @@ import re
 from ..common.errors import SceneError
 from ..common.tolerances import SAME
 from .records import FixedPath, GuideSlider, YokeSlot, guide_words, split_name
-from .table_help import _suggest, _unit_at
+from .table_help import _OFFSET, _suggest, _unit_at
 
 
 class _Sliders:
@@ -35,13 +35,12 @@ class _Sliders:
                 and not spec["along"].startswith("block ")
                 and "path" not in spec
             ):
+                fixed = "along" not in spec or "path" in spec  # a line of stroke's offset
                 raise self.error(
-                    "a fixed path takes no offset: an offset line of stroke is stated by a "
-                    "point of it, its through = [x, y]"
-                    if "path" in spec
-                    else 'offset goes with along = "CP" alone: a block in a slot of the lever '
-                    "CP whose line misses the lever's centre line (a peg's slot or a yoke's "
-                    "takes none)",
+                    (f"a fixed path takes no offset{_OFFSET}; " if fixed else "")
+                    + 'offset goes with along = "CP" alone: a block in a slot of the lever CP '
+                    "whose line misses the lever's centre line"
+                    + ("" if fixed else " (a peg's slot or a yoke's takes none)"),
                     "sliders",
                     name,
                 )

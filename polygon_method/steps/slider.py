@@ -195,8 +195,8 @@ class SliderDyad(Step):
         return (ell, qx, qy, ux, uy)
 
     def drawn(self, prm, pencil, P):
-        if self.path is None:
-            return (prm[0] + pencil(), prm[1])
+        if self.path is None:  # (an offset slot's line set off with the pencil too)
+            return (prm[0] + pencil(), prm[1] + pencil() if self.offset else prm[1])
         return (prm[0] + pencil(), prm[1] + pencil(), prm[2] + pencil(), prm[3], prm[4])
 
     def reach(self):
@@ -245,9 +245,14 @@ class SliderDyad(Step):
         def position(m):
             P = m.P
             gx, gy, ux, uy = line(P)
-            if off is not None:  # the offset slot's line, off to the left of g1 -> g2
-                gx, gy = gx - off * uy, gy + off * ux
             x, y, c = place(*P[B], gx, gy, ux, uy, ell, sigma, m.ctx, step)
+            P[X] = (x, y)
+            m.cond[i] = c
+
+        def position_offset(m):  # the offset slot's line, off to the left of g1 -> g2
+            P = m.P
+            gx, gy, ux, uy = line(P)
+            x, y, c = place(*P[B], gx - off * uy, gy + off * ux, ux, uy, ell, sigma, m.ctx, step)
             P[X] = (x, y)
             m.cond[i] = c
 
@@ -291,7 +296,7 @@ class SliderDyad(Step):
             s[1], s[2], s[3] = a_s, cx, cy
             A[X] = (ax, ay)
 
-        return position, velocity_, acceleration_
+        return (position if off is None else position_offset), velocity_, acceleration_
 
     def coriolis_left_out(self, sol):
         """What a polygon drawn without the Coriolis component of a moving guide gives: the

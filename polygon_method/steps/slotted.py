@@ -83,6 +83,23 @@ def acceleration(dx, dy, ux, uy, ex, ey, d=None):
     return velocity(dx, dy, ux, uy, ex, ey, d)
 
 
+def _offset_errors(k, dp, dv, da, m, mt, amp, e, ea, w, al, vs, a_s):
+    """The errors (absolute) of an offset slot's omega, vs, alpha, as, Coriolis and the
+    lever's turn, from its points' errors ``dp``, ``dv``, ``da`` and its own rounding ``k``
+    (its speeds' and accelerations' own, added by the caller). Every unknown is a quotient by t =
+    d.u (``mt``), which the lever's turn moves by e (``amp`` = e / t): near the limit
+    position, t -> 0, the quotients' numerators vanish with it and their rounding is what is
+    divided (vs = d.e / t, omega = e x u / -t; as, alpha alike with e_a)."""
+    turn = dp * (1 + amp) / m + k * (1 + amp)
+    d_w = (dv + e * turn + k * e) / mt + w * amp * turn
+    d_vs = (m * dv + e * (dp + k * m)) / mt + vs * amp * turn
+    d_cor = 2 * (d_w * vs + w * d_vs)
+    d_ea = da + 2 * w * d_w * m + d_cor  # the known side's error: its centripetal, Coriolis
+    d_al = (d_ea + ea * turn + k * ea) / mt + al * amp * turn
+    d_as = (ea * dp + m * d_ea + k * m * ea) / mt + a_s * amp * turn
+    return d_w, d_vs, d_al, d_as, d_cor, turn
+
+
 def recognise(g, name):
     """A block at a known point sliding on a link with one end known and ``name`` the other
     (tried when no point can be found otherwise)."""
@@ -200,6 +217,11 @@ class SlottedLink(Step):
             off if sl is None or sl.first == self.known else -off,
         )
 
+    def drawn(self, prm, pencil, P):
+        """An offset slot's circle about the pivot is drawn with the pencil's error; the
+        slot through the pivot draws nothing of its own."""
+        return (prm[0], prm[1], prm[2] + pencil()) if self.offset else prm
+
     def reach(self):
         return max(self.length, LEAST_REACH)
 
@@ -290,26 +312,34 @@ class SlottedLink(Step):
         Ls, Vs, As = sizes["position"], sizes["velocity"], sizes["acceleration"]
         Om, Als = sizes["omega"], sizes["alpha"]
         n = self.new
-        if self.offset:  # the arm of the lever's turn: |t|, along the slot from K's foot
+        m = vmax(vhypot(P[A_][0] - P[K_][0], P[A_][1] - P[K_][1]), C_FLOOR * Ls)
+        mt, amp = m, 0.0  # the divisor |d.u| and how the lever's turn moves it (offset e)
+        if self.offset:  # d.u = t, along the slot from K's foot: the turn moves it by e
             (f1x, f1y), (f2x, f2y) = P[self.first], P[self.second]
             ln = vhypot(f2x - f1x, f2y - f1y)
             t = ((P[A_][0] - P[K_][0]) * (f2x - f1x) + (P[A_][1] - P[K_][1]) * (f2y - f1y)) / ln
-            m = vmax(abs(t), C_FLOOR * Ls)
-        else:
-            m = vmax(vhypot(P[A_][0] - P[K_][0], P[A_][1] - P[K_][1]), C_FLOOR * Ls)
+            mt = vmax(abs(t), C_FLOOR * Ls)
+            amp = abs(self.offset) / mt
         L = vhypot(P[n][0] - P[K_][0], P[n][1] - P[K_][1])
         vs = abs(m_.S[A_][0]) if A_ in m_.S else Vs
+        a_s = abs(m_.S[A_][1]) if A_ in m_.S and m_.S[A_][1] is not None else As
         w = abs(m_.W.get(self.guide, 0.0))
         al = abs(m_.Al.get(self.guide, 0.0))
         e = vhypot(V[A_][0] - V[K_][0], V[A_][1] - V[K_][1])
         ea = vhypot(A[A_][0] - A[K_][0], A[A_][1] - A[K_][1]) + w * w * m + 2 * w * vs
         _, kv, ka = walk.own(self, k)  # its own rounding, of its own speeds and accelerations
-        turn = p_in * Ls / m + k  # the lever's direction, rad
-        d_w = (v_in * Vs + e * turn) / m + k * w  # omega, rad/s
-        d_vs = v_in * Vs + e * turn + kv * Vs  # sliding velocity, m/s
-        d_al = (a_in * As + ea * turn + 2 * d_w * vs + 2 * w * d_vs) / m + k * al
-        d_as = a_in * As + ea * turn + 2 * w * d_w * m + ka * As
-        d_cor = 2 * (d_w * vs + w * d_vs) + ka * As
+        if self.offset:
+            d_w, d_vs, d_al, d_as, d_cor, turn = _offset_errors(
+                k, p_in * Ls, v_in * Vs, a_in * As, m, mt, amp, e, ea, w, al, vs, a_s
+            )
+            d_vs, d_as, d_cor = d_vs + kv * Vs, d_as + ka * As, d_cor + ka * As
+        else:
+            turn = p_in * Ls / m + k  # the lever's direction, rad
+            d_w = (v_in * Vs + e * turn) / m + k * w  # omega, rad/s
+            d_vs = v_in * Vs + e * turn + kv * Vs  # sliding velocity, m/s
+            d_al = (a_in * As + ea * turn + 2 * d_w * vs + 2 * w * d_vs) / m + k * al
+            d_as = a_in * As + ea * turn + 2 * w * d_w * m + ka * As
+            d_cor = 2 * (d_w * vs + w * d_vs) + ka * As
         walk.slide[A_] = (d_vs / Vs, d_as / As, d_cor / As)
         p = k + p_in + turn * L / Ls
         v = kv + (v_in * Vs + L * d_w + w * L * turn) / Vs
