@@ -133,6 +133,16 @@ class _Sliders:
                         "sliders",
                         name,
                     )
+        if isinstance(raw, str) and (
+            w := re.search(r"\b(up|down|above|below|upwards|downwards|top|bottom)\s*$", raw)
+        ):
+            raise self.error(
+                f"offset = {given!r}: the side is left or right looking along the guide from "
+                f"{pts[0]} to {pts[1]} (a side '{w.group(1)}' changes as the link turns), "
+                'e.g. "30 mm left"',
+                "sliders",
+                name,
+            )
         try:
             e = side * self.length(raw, "sliders", name, positive=False)
         except SceneError as exc:
