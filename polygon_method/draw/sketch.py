@@ -476,8 +476,22 @@ def _header(sk: _Sketch, tag: str, title: str, scale: Scale, lines=(), legend=()
         h = _text_size(text, size, weight)[1]
         rows.append((h, lambda y: sk.note(x0, y, text, size, gid=gid, weight=weight)))
 
-    text_row(title, TITLE_PT, "bold", gid=f"note-{tag}-title")
-    text_row(display_unit(scale.text), NOTE_PT, gid=f"note-{tag}-scale")
+    # the scale on the title's line, as a book heads a diagram ("Velocity polygon  1 cm =
+    # 0.05 m/s"), where the two fit the drawing's width: its own line was a half
+    # centimetre of every panel's height that sent sheets to a second page
+    said = display_unit(scale.text)
+    tw, th = _text_size(title, TITLE_PT, "bold")
+    sw, sh = _text_size(said, NOTE_PT)
+    if tw + SCALE_GAP + sw <= width:
+
+        def heading(y):
+            sk.note(x0, y, title, TITLE_PT, gid=f"note-{tag}-title", weight="bold")
+            sk.note(x0 + tw + SCALE_GAP, y, said, NOTE_PT, gid=f"note-{tag}-scale")
+
+        rows.append((max(th, sh), heading))
+    else:
+        text_row(title, TITLE_PT, "bold", gid=f"note-{tag}-title")
+        text_row(said, NOTE_PT, gid=f"note-{tag}-scale")
     for ln in lines:
         text_row(ln, SMALL_PT, gid=f"note-{tag}-line-{len(rows)}")
     # scale bar: whole centimetres, labelled at both ends
@@ -542,3 +556,7 @@ def _fmt_number(scale: Scale, n: int) -> str:
     from decimal import Decimal
 
     return format((Decimal(scale.value) * n).normalize(), "f")
+
+
+#: the room between a diagram's title and its scale on the title's line (cm)
+SCALE_GAP = 0.5
