@@ -518,32 +518,14 @@ def _header(sk: _Sketch, tag: str, title: str, scale: Scale, lines=(), legend=()
 
     rows.append((0.65, lambda y: bar(y + 0.12)))
     for i, (kind, label) in enumerate(legend):
-
-        def entry(y, kind=kind, label=label, i=i):
-            color, lw, dashes = STYLE.get(kind, LINE_STYLE) if kind != "line" else LINE_STYLE
-            if kind == "image":
-                sk.polygon(
-                    [(x0 + 0.1, y - 0.1), (x0 + 1.1, y - 0.1), (x0 + 0.6, y + 0.12)],
-                    gid=f"{tag}-legend-{i}",
-                    face=IMAGE_FACE,
-                    edge=IMAGE_FACE,
-                    lw=0.4,
-                    alpha=0.5,
-                    obstacle=None,
-                )
-            else:
-                sk.line(
-                    [(x0 + 0.1, y), (x0 + 1.1, y)],
-                    gid=f"{tag}-legend-{i}",
-                    color=color,
-                    lw=lw,
-                    dashes=dashes,
-                    obstacle=False,
-                    hint=False,
-                )
-            sk.note(x0 + 1.3, y, label, SMALL_PT, gid=f"note-{tag}-legend-{i}")
-
-        rows.append((0.36, entry))
+        rows.append(
+            (
+                0.36,
+                lambda y, i=i, kind=kind, label=label: _legend_entry(
+                    sk, tag, i, kind, label, x0, y
+                ),
+            )
+        )
     total = sum(h + 0.12 for h, _ in rows)
     y = y1 + 0.35 + total
     for h, draw in rows:
@@ -560,3 +542,30 @@ def _fmt_number(scale: Scale, n: int) -> str:
 
 #: the room between a diagram's title and its scale on the title's line (cm)
 SCALE_GAP = 0.5
+
+
+def _legend_entry(sk: _Sketch, tag: str, i: int, kind: str, label: str, x0: float, y: float):
+    """The legend's ``i``-th entry at the height ``y``: its line (an image's triangle) and
+    its words."""
+    color, lw, dashes = STYLE.get(kind, LINE_STYLE) if kind != "line" else LINE_STYLE
+    if kind == "image":
+        sk.polygon(
+            [(x0 + 0.1, y - 0.1), (x0 + 1.1, y - 0.1), (x0 + 0.6, y + 0.12)],
+            gid=f"{tag}-legend-{i}",
+            face=IMAGE_FACE,
+            edge=IMAGE_FACE,
+            lw=0.4,
+            alpha=0.5,
+            obstacle=None,
+        )
+    else:
+        sk.line(
+            [(x0 + 0.1, y), (x0 + 1.1, y)],
+            gid=f"{tag}-legend-{i}",
+            color=color,
+            lw=lw,
+            dashes=dashes,
+            obstacle=False,
+            hint=False,
+        )
+    sk.note(x0 + 1.3, y, label, SMALL_PT, gid=f"note-{tag}-legend-{i}")
