@@ -88,8 +88,9 @@ def test_a_diagram_s_scale_stands_on_its_title_s_line_where_both_fit():
     """ "Configuration diagram   1 cm = 50 mm", as a book heads it: the scale's own line
     under the title was half a centimetre of every panel, and the slider crank worked
     analytically took two A4 pages for it (of the 237 worked and textbook sheets, 100
-    took two pages, 88 now). Where the two are wider than the drawing (a narrow
-    acceleration polygon) the scale stays under the title, clear of it."""
+    took two pages, 88 with this, 75 with the panels' room 2 mm, not 3). Where the two
+    are wider than the drawing (a narrow acceleration polygon) the scale stays under the
+    title, clear of it."""
     path = str(ROOT / "worked_problems" / "engine_analytical.toml")
     svgs, _, _, pages = render_pages(solve(load_scene(path)), "svg", "all", paper="A4")
     assert len(pages) == 1
