@@ -46,10 +46,12 @@ PAPERS = {"A4": (21.0, 29.7), "A3": (29.7, 42.0), "letter": (21.59, 27.94)}
 PAPER_NAMES = tuple(PAPERS)
 #: the strip at the foot of each page (cm) for the line that names the paper
 FOOTER = 0.5
-#: the paper's margin all round and the gap between two panels (cm); each panel has 3 mm
-#: of its own round its drawing, so a drawing is 9 mm from the paper's edge at least
-#: (printers leave 4 to 6 mm blank) and 1 cm from the next
-MARGIN, GAP = 0.6, 0.4
+#: the paper's margin all round and the gap between two panels (cm); each panel has 2 mm
+#: of its own round its drawing (:data:`~polygon_method.draw.sheet.PANEL_PAD`), so a
+#: drawing is 8 mm from the paper's edge at least (printers leave 4 to 6 mm blank) and 7 mm
+#: from the next (they were 9 mm and 1 cm: 13 more of the 237 worked and textbook sheets
+#: now fit one A4 page)
+MARGIN, GAP = 0.6, 0.3
 
 
 def paper_size(name: str) -> tuple:

@@ -35,8 +35,11 @@ from .style import CM_PER_INCH, FONT, FORMATS, MAX_FIGURE_CM, PNG_DPI, SMALL_PT
 
 # --------------------------------------------------------------------------- painting
 
+#: the room each panel keeps round its drawing (cm; :mod:`.paper`'s margin and gap outside it)
+PANEL_PAD = 0.2
 
-def _paint(ax, sk: _Sketch, pad: float = 0.3) -> list:
+
+def _paint(ax, sk: _Sketch, pad: float = PANEL_PAD) -> list:
     """Make the matplotlib artists of a sketch on ``ax`` (data units: cm) and set the axes'
     limits to the panel's extent. Returns the artists."""
     artists = []
@@ -179,7 +182,7 @@ MAX_DRAWN_POINTS = 80
 _SPECK = 100.0
 
 
-def _panel_size(sk: _Sketch, pad=0.3):
+def _panel_size(sk: _Sketch, pad=PANEL_PAD):
     x0, y0, x1, y1 = sk.content_box()
     n0, m0, n1, m1 = sk.note_box()
     return (max(x1, n1) - min(x0, n0) + 2 * pad, max(y1, m1) - min(y0, m0) + 2 * pad)

@@ -476,8 +476,22 @@ def _header(sk: _Sketch, tag: str, title: str, scale: Scale, lines=(), legend=()
         h = _text_size(text, size, weight)[1]
         rows.append((h, lambda y: sk.note(x0, y, text, size, gid=gid, weight=weight)))
 
-    text_row(title, TITLE_PT, "bold", gid=f"note-{tag}-title")
-    text_row(display_unit(scale.text), NOTE_PT, gid=f"note-{tag}-scale")
+    # the scale on the title's line, as a book heads a diagram ("Velocity polygon  1 cm =
+    # 0.05 m/s"), where the two fit the drawing's width: its own line was a half
+    # centimetre of every panel's height that sent sheets to a second page
+    said = display_unit(scale.text)
+    tw, th = _text_size(title, TITLE_PT, "bold")
+    sw, sh = _text_size(said, NOTE_PT)
+    if tw + SCALE_GAP + sw <= width:
+
+        def heading(y):
+            sk.note(x0, y, title, TITLE_PT, gid=f"note-{tag}-title", weight="bold")
+            sk.note(x0 + tw + SCALE_GAP, y, said, NOTE_PT, gid=f"note-{tag}-scale")
+
+        rows.append((max(th, sh), heading))
+    else:
+        text_row(title, TITLE_PT, "bold", gid=f"note-{tag}-title")
+        text_row(said, NOTE_PT, gid=f"note-{tag}-scale")
     for ln in lines:
         text_row(ln, SMALL_PT, gid=f"note-{tag}-line-{len(rows)}")
     # scale bar: whole centimetres, labelled at both ends
@@ -504,32 +518,14 @@ def _header(sk: _Sketch, tag: str, title: str, scale: Scale, lines=(), legend=()
 
     rows.append((0.65, lambda y: bar(y + 0.12)))
     for i, (kind, label) in enumerate(legend):
-
-        def entry(y, kind=kind, label=label, i=i):
-            color, lw, dashes = STYLE.get(kind, LINE_STYLE) if kind != "line" else LINE_STYLE
-            if kind == "image":
-                sk.polygon(
-                    [(x0 + 0.1, y - 0.1), (x0 + 1.1, y - 0.1), (x0 + 0.6, y + 0.12)],
-                    gid=f"{tag}-legend-{i}",
-                    face=IMAGE_FACE,
-                    edge=IMAGE_FACE,
-                    lw=0.4,
-                    alpha=0.5,
-                    obstacle=None,
-                )
-            else:
-                sk.line(
-                    [(x0 + 0.1, y), (x0 + 1.1, y)],
-                    gid=f"{tag}-legend-{i}",
-                    color=color,
-                    lw=lw,
-                    dashes=dashes,
-                    obstacle=False,
-                    hint=False,
-                )
-            sk.note(x0 + 1.3, y, label, SMALL_PT, gid=f"note-{tag}-legend-{i}")
-
-        rows.append((0.36, entry))
+        rows.append(
+            (
+                0.36,
+                lambda y, i=i, kind=kind, label=label: _legend_entry(
+                    sk, tag, i, kind, label, x0, y
+                ),
+            )
+        )
     total = sum(h + 0.12 for h, _ in rows)
     y = y1 + 0.35 + total
     for h, draw in rows:
@@ -542,3 +538,34 @@ def _fmt_number(scale: Scale, n: int) -> str:
     from decimal import Decimal
 
     return format((Decimal(scale.value) * n).normalize(), "f")
+
+
+#: the room between a diagram's title and its scale on the title's line (cm)
+SCALE_GAP = 0.5
+
+
+def _legend_entry(sk: _Sketch, tag: str, i: int, kind: str, label: str, x0: float, y: float):
+    """The legend's ``i``-th entry at the height ``y``: its line (an image's triangle) and
+    its words."""
+    color, lw, dashes = STYLE.get(kind, LINE_STYLE) if kind != "line" else LINE_STYLE
+    if kind == "image":
+        sk.polygon(
+            [(x0 + 0.1, y - 0.1), (x0 + 1.1, y - 0.1), (x0 + 0.6, y + 0.12)],
+            gid=f"{tag}-legend-{i}",
+            face=IMAGE_FACE,
+            edge=IMAGE_FACE,
+            lw=0.4,
+            alpha=0.5,
+            obstacle=None,
+        )
+    else:
+        sk.line(
+            [(x0 + 0.1, y), (x0 + 1.1, y)],
+            gid=f"{tag}-legend-{i}",
+            color=color,
+            lw=lw,
+            dashes=dashes,
+            obstacle=False,
+            hint=False,
+        )
+    sk.note(x0 + 1.3, y, label, SMALL_PT, gid=f"note-{tag}-legend-{i}")

@@ -186,12 +186,14 @@ def frame_angles(scene, n: int, domain) -> tuple[np.ndarray, int]:
 
 
 def frames_to_follow(scene, n: int = DEFAULT_FRAMES, most: int = MAX_FOLLOW_FRAMES):
-    """(count, words): ``n`` frames, or as many more (up to ``most``, and to what a page
-    holds, :data:`MAX_FRAME_POINTS`) as keep the wheel or second crank turning fastest at a
-    fixed ratio of the crank within ``linkage``'s :data:`~polygon_method.linkage.cycle.MOST_PER_SAMPLE`
-    (10 deg) between two frames, so that the picture shows its own turning, not a wheel
-    jumping a third of a turn (or seeming to turn back) from frame to frame; the words say
-    so where the count was raised, else ""."""
+    """(count, words): ``n`` frames, or as many more as keep the wheel or second crank
+    turning fastest at a fixed ratio of the crank within ``linkage``'s
+    :data:`~polygon_method.linkage.cycle.MOST_PER_SAMPLE` (10 deg) between two frames, so
+    that the picture shows its own turning, not a wheel jumping a third of a turn (or
+    seeming to turn back) from frame to frame; the words say so where the count was raised,
+    else "". Where more than ``most`` (or than a page holds, :data:`MAX_FRAME_POINTS`)
+    would be needed, ``n``: more that still cannot follow it show nothing truer, and the
+    page says its frames may be aliased."""
     from ..linkage.cycle import samples_to_follow
 
     n = check_frames(n)
@@ -202,22 +204,17 @@ def frames_to_follow(scene, n: int = DEFAULT_FRAMES, most: int = MAX_FOLLOW_FRAM
     need = samples_to_follow(plan, span, n)
     if need > n and not dom.full_turn:  # n frames between the limits: n - 1 gaps
         need += 1
-    k = min(need, most, max(n, MAX_FRAME_POINTS // points))
-    if k <= n:
+    if need <= n or need > min(most, MAX_FRAME_POINTS // points):
         return n, ""
     rate, st = max(
         (abs(r), s) for s in plan.steps if (r := getattr(s, "theta_rate", None)) is not None
     )
-    turn = math.degrees(rate * span / (k if dom.full_turn else k - 1))
+    turn = math.degrees(rate * span / (need if dom.full_turn else need - 1))
     words = (
         f"not {n}: {st.title} turns {rate:.3g} times as fast as the crank {scene.input.crank}, "
-        + (
-            f"at most {turn:.3g} deg between two frames (the picture follows it)"
-            if k == need
-            else f"{turn:.3g} deg between two frames: the most frames it may hold"
-        )
+        f"at most {turn:.3g} deg between two frames (the picture follows it)"
     )
-    return k, words
+    return need, words
 
 
 def asked(scene, n, fmt=None) -> Frames:
