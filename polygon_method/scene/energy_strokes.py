@@ -23,6 +23,7 @@ import re
 
 from ..common.tolerances import ROUNDING
 from ..common.units import did_you_mean
+from .energy_areas import ABSURD_ENERGY, ABSURD_ENERGY_WORDS
 from .energy_records import Diagram, Table
 
 #: the most strokes a cycle may have (a four-stroke engine has 4; 16 covers any book's)
@@ -104,6 +105,8 @@ class _StrokesReader:
             works = self._stroke_areas(spec, t, raw, words)
         else:
             works = self._proportions(spec, t, raw, cycle, words)
+        if not max(abs(w) for w in works) <= ABSURD_ENERGY:  # (also an overflow to inf)
+            raise self.err(ABSURD_ENERGY_WORDS, t, "strokes")
         if not math.fsum(works) > 0:
             raise self.err(
                 "the strokes' works add up to no net work: an engine's cycle does work "

@@ -396,7 +396,7 @@ class _Masses:
                 raise self.error(
                     f"pins.{q}: a coefficient needs the pin's size in [pins] (its friction "
                     f"circle mu r), or give the circle's radius itself (pins = {{ {q} = "
-                    '"5 mm" }})',
+                    '"5 mm" })',
                     "friction",
                     "pins",
                 )

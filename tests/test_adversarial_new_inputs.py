@@ -1,0 +1,370 @@
+"""Today's inputs as a careless teacher or a mischievous student would write them: an offset
+slot's distance and side, friction per guide and per pin, a rod's inertia by its swing, a
+turning-moment diagram by its strokes and areas, a press's losses, a second input given by a
+point's or a slider's speed. Each bad one through every command that reads the scene (solve,
+solve --json, steps, draw, check, sweep, linkage, centres, page): one line on stderr naming
+the file and the key with its line, exit code 2, nothing on stdout, no output file written.
+Good ones are held to closed forms (a block's distance from the lever's line is the slot's
+offset; a rod's k_G^2 = g h T^2 / (4 pi^2) - h^2), never to the tool's own output."""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from polygon_method import parse_scene, solve
+from polygon_method.cli import main
+
+ROOT = Path(__file__).resolve().parent.parent
+BOOK = ROOT / "tests/textbook"
+OFFSET = (BOOK / "hunt5_offset_slot_lever.toml").read_text()
+FRICTION = (BOOK / "friction_each_slider_crank_pins.toml").read_text()
+SWUNG = (BOOK / "force_engine_rod_swung_as_pendulum.toml").read_text()
+STROKES = (BOOK / "flywheel/strokes_four_triangles_areas.toml").read_text()
+sys.path.insert(0, str(Path(__file__).parent))
+from test_two_given_point_slider import SLOT  # noqa: E402
+
+NUMBER_WORD = re.compile(r"(?<![A-Za-z])(nan|inf|infinity)(?![A-Za-z])", re.I)
+
+
+def _replaced(text, old, new):
+    assert old in text, old
+    return text.replace(old, new)
+
+
+def _commands(scene, out):
+    return [
+        ["solve", scene],
+        ["solve", "--json", scene],
+        ["steps", scene],
+        ["draw", scene, "-o", str(out / "x.svg")],
+        ["check", scene],
+        ["sweep", scene, "--summary", "--steps", "12"],
+        ["sweep", scene, "--csv", str(out / "x.csv"), "--steps", "12"],
+        ["linkage", scene],
+        ["centres", scene],
+        ["page", scene, "-o", str(out / "x.html"), "--frames", "4"],
+    ]
+
+
+def _refused_everywhere(text, tmp_path, capsys, *words):
+    """Every command refuses the scene in one line naming the file and ``words``; nothing
+    on stdout, no output file."""
+    scene = tmp_path / "bad.toml"
+    scene.write_text(text, encoding="utf-8")
+    lines = []
+    for argv in _commands(str(scene), tmp_path):
+        assert main(argv) == 2, argv
+        out, err = capsys.readouterr()
+        errs = [x for x in err.splitlines() if not x.startswith("warning:")]
+        assert len(errs) == 1 and not out.strip(), (argv, err, out[:300])
+        assert "bad.toml" in errs[0] and "Traceback" not in err, errs[0]
+        for w in words:
+            assert w in errs[0], (w, errs[0])
+        lines.append(errs[0].split(": ", 1)[1])
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.toml"]
+    assert len(set(lines)) == 1, lines  # the same words from every command
+    return lines[0]
+
+
+# ------------------------------------------------------------------ an offset slot
+
+SLOT_LINE = 'offset = "30 mm left"'
+
+
+@pytest.mark.parametrize(
+    "offset, words",
+    [
+        ("0", "offset = 0"),
+        ('"0 mm left"', "offset = 0"),
+        ('"-30 mm left"', "with a side"),
+        ('"1e9 mm left"', "absurd"),
+        ('"nan mm left"', "cannot read"),
+        ('"30 mm lfet"', "did you mean 'left'"),
+        ('"30 mm up"', "left or right (looking from Q to B), not 'up'"),
+        ('"30 mm left left"', "given once"),
+        ('"30 mm ccw"', "not 'ccw'"),
+        ('"30 rad left"', "not of length"),
+        ('"left 30 mm"', "cannot read"),
+        ('""', "cannot read"),
+        ("true", "got true/false"),
+        ("[30]", "got a list"),
+    ],
+)
+def test_a_bad_offset_is_one_line_naming_the_slider(offset, words, tmp_path, capsys):
+    text = _replaced(OFFSET, SLOT_LINE, f"offset = {offset}")
+    _refused_everywhere(text, tmp_path, capsys, "[sliders] A (line 25)", words)
+
+
+@pytest.mark.parametrize("offset", ['"600 mm left"', '"5000 mm right"'])
+def test_an_offset_beyond_the_blocks_reach_is_named_at_its_step(offset, tmp_path, capsys):
+    # the block is 312 mm from the pivot Q: a slot further off never comes near it
+    text = _replaced(OFFSET, SLOT_LINE, f"offset = {offset}")
+    line = _refused_everywhere(text, tmp_path, capsys, "step 2 (block A sliding on QB)")
+    assert "less than the slot's offset" in line
+
+
+def test_an_offset_on_a_fixed_path_is_refused(tmp_path, capsys):
+    text = _replaced(
+        OFFSET,
+        'R = { path = "horizontal", through = "T" }',
+        'R = { path = "horizontal", through = "T", offset = "30 mm" }',
+    )
+    _refused_everywhere(text, tmp_path, capsys, "[sliders] R", 'offset goes with along = "CP"')
+
+
+def _distance_from_line(p, a, b):
+    """Signed distance of p from the line a -> b, positive on its left."""
+    (px, py), (ax, ay), (bx, by) = p, a, b
+    return ((bx - ax) * (py - ay) - (by - ay) * (px - ax)) / math.hypot(bx - ax, by - ay)
+
+
+@pytest.mark.parametrize(
+    "words, signed",
+    [
+        ('"30 mm left"', 0.030),
+        ('"30 mm to the left"', 0.030),
+        ('"30 mm Right"', -0.030),
+        ("30", 0.030),
+        ("-30", -0.030),
+        ('"3 cm right"', -0.030),
+        ('"1e-6 mm left"', 1e-9),
+    ],
+)
+def test_the_block_is_the_offset_off_the_levers_line(words, signed):
+    """Loop closure: the block A sits on the slot's line, ``signed`` m to the left of Q -> B,
+    with the crank pin at its length from O; the words of the side read either case."""
+    sol = solve(parse_scene(_replaced(OFFSET, SLOT_LINE, f"offset = {words}")))
+    P = sol.P
+    assert math.isclose(math.dist(P["O"], P["A"]), 0.1, rel_tol=1e-12)
+    assert math.isclose(math.dist(P["Q"], P["B"]), 0.5, rel_tol=1e-12)
+    assert _distance_from_line(P["A"], P["Q"], P["B"]) == pytest.approx(signed, abs=1e-15)
+
+
+def test_a_vanishing_offset_agrees_with_the_plain_slot():
+    """An offset of 1e-9 mm moves nothing by more than about 1e-12 m: the plain slot's
+    velocities and accelerations to 1e-9 relative."""
+    plain = solve(parse_scene(OFFSET.replace(", " + SLOT_LINE, "")))
+    tiny = solve(parse_scene(_replaced(OFFSET, SLOT_LINE, 'offset = "1e-9 mm left"')))
+    for name in ("QB", "BR"):
+        for a, b in ((plain.W[name], tiny.W[name]), (plain.Al[name], tiny.Al[name])):
+            assert math.isclose(a, b, rel_tol=1e-9, abs_tol=1e-12), (name, a, b)
+    for p in ("A", "B", "R"):
+        for a, b in ((plain.V[p], tiny.V[p]), (plain.A[p], tiny.A[p])):
+            assert math.dist(a, b) <= 1e-9 * max(1.0, math.hypot(*a)), (p, a, b)
+
+
+# ------------------------------------------------------------------ friction
+
+
+FRICTION_LINES = "guides = 0.15\npins = { O = 0.05, A = 0.08, B = 0.12 }"
+
+
+@pytest.mark.parametrize(
+    "friction, key, words",
+    [
+        ("guides = 0.15\npins = { O = 0.05, Z = 0.08 }", "pins", "'Z' is not a joint"),
+        ("guides = 0.15\npins = { O = -0.05 }", "pins", "pins.O = -0.05"),
+        ("guides = 0.15\npins = { O = 1.5 }", "pins", "up to (not) 1"),
+        ("guides = 0.15\npins = { O = 1.0 }", "pins", "up to (not) 1"),
+        ("guides = 0.15\npins = {}", "pins", "names none"),
+        ("guides = {}\npins = { O = 0.05 }", "guides", "names none"),
+        ("guides = { Q = 0.1 }", "guides", "'Q' is not a sliding block's point"),
+        ("guides = -0.1", "guides", "a coefficient of friction"),
+        ("guides = 1", "guides", "a coefficient of friction"),
+        ("guides = nan", "guides", "a coefficient of friction"),
+        ("guides = inf", "guides", "a coefficient of friction"),
+        ('guides = "10%"', "guides", "a coefficient of friction"),
+        ("guides = true", "guides", "a coefficient of friction"),
+        ('pins = "-2 mm"', "pins", "must be positive"),
+        ('pins = "0 mm"', "pins", "must be positive"),
+        ('pins = "2 rad"', "pins", "not of length"),
+        ('pins = { O = 0.05, radius = "2 mm" }', "pins", "'radius' is not a joint"),
+        ("pins = { AB = 0.1 }", "pins", "'AB' is not a joint"),
+        ("pins = [0.1]", "pins", "a coefficient of friction"),
+        ("guide = 0.1", "guide", "did you mean 'guides'"),
+    ],
+)
+def test_bad_friction_is_one_line_naming_its_key(friction, key, words, tmp_path, capsys):
+    text = _replaced(FRICTION, FRICTION_LINES, friction)
+    _refused_everywhere(text, tmp_path, capsys, f"[friction] {key} (line 4", words)
+
+
+def test_a_coefficient_at_a_pin_of_no_size_shows_how_to_give_its_circle(tmp_path, capsys):
+    text = _replaced(
+        FRICTION, "[pins]\nO = { diameter = 50 }\nA = { diameter = 40 }\nB = { diameter = 25 }", ""
+    )
+    line = _refused_everywhere(text, tmp_path, capsys, "[friction] pins (line 42)")
+    # (it closed its example with a brace too many: 'pins = { O = "5 mm" }})')
+    assert line.endswith('(pins = { O = "5 mm" })'), line
+
+
+# ------------------------------------------------------------------ a rod swung as a pendulum
+
+SWING = 'oscillations = "21 in 40 s", about = "B"'
+
+
+@pytest.mark.parametrize(
+    "swing, words",
+    [
+        # (an enormous period: I_G came out inf -- 'inf' in the output, NaN in the
+        # forces, or an OverflowError, exit 3)
+        ('period = "1e300 s", about = "B"', "absurd for a mechanism"),
+        ('period = "1e150 s", about = "B"', "absurd for a mechanism"),
+        ('period = 1e300, about = "B"', "absurd for a mechanism"),
+        ('oscillations = "1 in 1e300 s", about = "B"', "absurd for a mechanism"),
+        ('period = "1e6 s", about = "B"', "absurd for a mechanism"),
+        ('period = "1e-300 s", about = "B"', "quicker than a point mass"),
+        ('oscillations = "100 in 1 s", about = "B"', "quicker than a point mass"),
+        ('oscillations = "0 in 40 s", about = "B"', "complete oscillations in a time"),
+        ('oscillations = "21 in -40 s", about = "B"', "complete oscillations in a time"),
+        ('oscillations = "nan in 40 s", about = "B"', "complete oscillations in a time"),
+        ('period = "0 s", about = "B"', "a time"),
+        ('period = "1.9 m", about = "B"', "a time"),
+        ('oscillations = "21 in 40 s", period = "1.9 s", about = "B"', "one of them"),
+        ('oscillations = "21 in 40 s"', "needs the point it swings about"),
+        # (both: it said the swing "needs the point it swings about")
+        ('oscillations = "21 in 40 s", pivot_distance = 600, about = "B"', "once"),
+        ('oscillations = "21 in 40 s", about = "O"', "an end of AB"),
+        ('oscillations = "21 in 40 s", pivot_distance = 0', "must be positive"),
+        ('oscillations = "21 in 40 s", about = "B", inertia = "5 kg m^2"', "not with the swing"),
+    ],
+)
+def test_a_bad_swing_is_one_line_naming_the_rod(swing, words, tmp_path, capsys):
+    _refused_everywhere(
+        _replaced(SWUNG, SWING, swing), tmp_path, capsys, "[masses] AB (line 35)", words
+    )
+
+
+def test_a_rod_hung_at_its_centre_of_mass_is_named_so(tmp_path, capsys):
+    """G at B, the end it swings about: it said the swing 'is quicker than a point mass's at
+    G, 2 pi sqrt(h / g) = 0 s'."""
+    text = _replaced(SWUNG, 'along = 400, from = "A"', 'along = 1000, from = "A"')
+    line = _refused_everywhere(text, tmp_path, capsys, "[masses] AB (line 35)")
+    assert "G is at B" in line and "quicker" not in line, line
+
+
+@pytest.mark.parametrize(
+    "swing, period, h",
+    [
+        ('oscillations = "21 in 40 s", about = "B"', 40 / 21, 0.6),
+        ('oscillations = "21 in 40 s", about = "A"', 40 / 21, 0.4),
+        ('period = "2.5 s", pivot_distance = 650', 2.5, 0.65),
+        ('oscillations = "21 oscillations in 40 seconds", about = "B"', 40 / 21, 0.6),
+    ],
+)
+def test_the_swing_gives_the_compound_pendulums_inertia(swing, period, h):
+    """The input torque with the swing's inertia equals that with I_G = m (g h T^2 / (4
+    pi^2) - h^2) stated outright (the compound pendulum, by hand)."""
+    k2 = 9.81 * h * period**2 / (4 * math.pi**2) - h * h
+    swung = solve(parse_scene(_replaced(SWUNG, SWING, swing)))
+    stated = solve(parse_scene(_replaced(SWUNG, SWING, f'inertia = "{60 * k2!r} kg m^2"')))
+    assert math.isclose(swung.forces.input_torque, stated.forces.input_torque, rel_tol=1e-12)
+    plain = solve(parse_scene(_replaced(SWUNG, SWING, 'inertia = "0 kg m^2"')))
+    assert abs(swung.forces.input_torque - plain.forces.input_torque) > 1.0  # (the inertia counts)
+
+
+# ------------------------------------------------------------------ strokes and areas
+
+STROKE_LINE = "strokes = [-0.45e-3, -1.7e-3, 6.8e-3, -0.65e-3]"
+
+
+@pytest.mark.parametrize(
+    "strokes, words",
+    [
+        # (works of 3e306 J went through: 1.2e307 J a cycle, overflow warnings from numpy)
+        ("strokes = [1e300, 1e300, 1e300, 1e300]", "absurd; check the scales"),
+        ("strokes = [-1e6, -1e6, 1e7, -1e6]", "absurd; check the scales"),
+        ("strokes = [0, 0, 0, 0]", "no net work"),
+        ("strokes = []", "each stroke's work"),
+        ("strokes = [1e-3, nan, 0, 0]", "each stroke's work"),
+        ("strokes = [1, 2, 3]", "540 deg, not 720"),
+    ],
+)
+def test_bad_strokes_are_one_line(strokes, words, tmp_path, capsys):
+    text = _replaced(STROKES, STROKE_LINE, strokes)
+    _refused_everywhere(text, tmp_path, capsys, "[turning_moment]", words)
+
+
+@pytest.mark.parametrize("works", ['"1e300 J"', '"2e12 J"'])
+def test_strokes_given_as_huge_energies_are_refused(works, tmp_path, capsys):
+    text = _replaced(STROKES, STROKE_LINE, f'strokes = ["0 J", "-1 J", {works}, "0 J"]')
+    text = _replaced(text, 'area_scale = "1 m^2 = 3 MN m"\n', "")
+    _refused_everywhere(text, tmp_path, capsys, "[turning_moment] strokes", "absurd")
+
+
+# ------------------------------------------------------------------ a second input's speed
+
+
+@pytest.mark.parametrize(
+    "second, key",
+    [
+        ('vs_C = "1 m/s at 30 deg"', "vs_C"),
+        ('vs_C = "1 m/s at 210 deg"', "vs_C"),
+        ('vs_C = "1 m/s up"', "vs_C"),
+        ('vs_C = "1 m/s"\nas_C = "2 m/s^2 at 30 deg"', "as_C"),
+    ],
+)
+def test_a_way_in_the_plane_for_sliding_along_a_turning_link_is_refused(
+    second, key, tmp_path, capsys
+):
+    """The block C slides along the turning link ED: "at 30 deg" and "at 210 deg" (the
+    opposite way) were both read as +1 m/s, the words dropped."""
+    line = _refused_everywhere(
+        SLOT.format(second=second), tmp_path, capsys, f"[input.second] {key}"
+    )
+    assert "signed along the link" in line and "from E towards D" in line, line
+
+
+def test_a_slider_speed_signed_along_its_link_reverses_the_second_crank():
+    """vs_C = +1 and -1 m/s: C's sliding found from the solved motion (the rate of |EC| by
+    the velocities, d|EC|/dt = (v_C - v_E) . u) is the stated one."""
+    for sdot in (1.0, -1.0):
+        sol = solve(parse_scene(SLOT.format(second=f'vs_C = "{sdot} m/s"')))
+        (ex, ey), (cx, cy) = sol.P["E"], sol.P["C"]
+        d = math.hypot(cx - ex, cy - ey)
+        u = ((cx - ex) / d, (cy - ey) / d)
+        # the velocity of C less that of the point of ED under it (omega x EC)
+        w = sol.W["ED"]
+        rel = (sol.V["C"][0] + w * (cy - ey), sol.V["C"][1] - w * (cx - ex))
+        assert math.isclose(rel[0] * u[0] + rel[1] * u[1], sdot, rel_tol=1e-9)
+
+
+# ------------------------------------------------------------------ through a subprocess
+
+
+def test_a_huge_period_through_the_command_line_is_exit_2_and_strict_json(tmp_path):
+    f = tmp_path / "s.toml"
+    f.write_text(_replaced(SWUNG, SWING, 'period = "1e150 s", about = "B"'), encoding="utf-8")
+    r = subprocess.run(
+        [sys.executable, "-m", "polygon_method", "solve", "--json", str(f)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        cwd=ROOT,
+    )
+    assert r.returncode == 2 and not r.stdout and len(r.stderr.splitlines()) == 1, r.stderr
+    assert "[masses] AB (line 35)" in r.stderr and "Traceback" not in r.stderr
+    ok = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "polygon_method",
+            "solve",
+            "--json",
+            str(BOOK / "hunt5_offset_slot_lever.toml"),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        cwd=ROOT,
+    )
+    assert ok.returncode == 0, ok.stderr
+    json.loads(ok.stdout, parse_constant=lambda x: pytest.fail(f"{x} in the JSON"))
+    assert not NUMBER_WORD.search(ok.stdout.replace("at infinity", ""))
