@@ -1,11 +1,12 @@
 """Today's inputs as a careless teacher or a mischievous student would write them: an offset
 slot's distance and side, friction per guide and per pin, a rod's inertia by its swing, a
-turning-moment diagram by its strokes and areas, a press's losses, a second input given by a
-point's or a slider's speed. Each bad one through every command that reads the scene (solve,
-solve --json, steps, draw, check, sweep, linkage, centres, page): one line on stderr naming
-the file and the key with its line, exit code 2, nothing on stdout, no output file written.
+turning-moment diagram by its strokes, a second input given by a slider's speed, a load
+against a link. Each bad one through every command that reads the scene (solve, solve
+--json, steps, draw, check, sweep, linkage, centres, page): one line on stderr naming the
+file and the key with its line, exit code 2, nothing on stdout, no output file written.
 Good ones are held to closed forms (a block's distance from the lever's line is the slot's
-offset; a rod's k_G^2 = g h T^2 / (4 pi^2) - h^2), never to the tool's own output."""
+offset; a rod's k_G^2 = g h T^2 / (4 pi^2) - h^2; a block's sliding from the velocities),
+never to the tool's own output."""
 
 from __future__ import annotations
 
@@ -28,6 +29,7 @@ FRICTION = (BOOK / "friction_each_slider_crank_pins.toml").read_text()
 SWUNG = (BOOK / "force_engine_rod_swung_as_pendulum.toml").read_text()
 STROKES = (BOOK / "flywheel/strokes_four_triangles_areas.toml").read_text()
 sys.path.insert(0, str(Path(__file__).parent))
+from test_link_loads import SCENE as LINK_LOADS  # noqa: E402
 from test_two_given_point_slider import SLOT  # noqa: E402
 
 NUMBER_WORD = re.compile(r"(?<![A-Za-z])(nan|inf|infinity)(?![A-Za-z])", re.I)
@@ -116,7 +118,13 @@ def test_an_offset_on_a_fixed_path_is_refused(tmp_path, capsys):
         'R = { path = "horizontal", through = "T" }',
         'R = { path = "horizontal", through = "T", offset = "30 mm" }',
     )
-    _refused_everywhere(text, tmp_path, capsys, "[sliders] R", 'offset goes with along = "CP"')
+    line = _refused_everywhere(
+        text, tmp_path, capsys, "[sliders] R", 'offset goes with along = "CP"'
+    )
+    # (a book's offset line of stroke: how it is stated)
+    assert line.endswith(
+        "an offset line of stroke is its through = [x, y] (40 mm below O: [0, -40])"
+    )
 
 
 def _distance_from_line(p, a, b):
@@ -368,3 +376,31 @@ def test_a_huge_period_through_the_command_line_is_exit_2_and_strict_json(tmp_pa
     assert ok.returncode == 0, ok.stderr
     json.loads(ok.stdout, parse_constant=lambda x: pytest.fail(f"{x} in the JSON"))
     assert not NUMBER_WORD.search(ok.stdout.replace("at infinity", ""))
+
+
+# ------------------------------------------------------------------ loads against a link
+
+
+@pytest.mark.parametrize(
+    "direction, words",
+    [
+        # (a point for a link: "no link M0.0 in [links]")
+        ('"along M"', "M is not a link's two points"),
+        ('"along CDE"', "CDE is not a link's two points"),
+        ('"perpendicular to M, ccw"', "M is not a link's two points"),
+        # (the word alone: "a direction along the link turns with the link and is not
+        # read", which a load against a link now is)
+        ('"along"', "'along CD' (from C towards D)"),
+        ('"perpendicular to"', "'along CD' (from C towards D)"),
+        ('"30 deg ccw from M"', "measured from what?"),
+        ('"30 deg ccw from IDC"', "a dead centre is a position of the crank"),
+        ('"along CZ"', "no link CZ in [links]"),
+        ('"perpendicular to CD"', "does not say which side of CD"),
+        ('"30 deg from CD"', "does not say which side of CD"),
+        ('"-30 deg ccw from CD"', "not negative"),
+        ('"along CD, ccw"', "cannot read"),
+    ],
+)
+def test_a_load_against_no_link_is_one_line(direction, words, tmp_path, capsys):
+    text = LINK_LOADS.format(m=direction, e="270", angle=60)
+    _refused_everywhere(text, tmp_path, capsys, "[loads] M (line 29)", words)

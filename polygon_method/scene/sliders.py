@@ -36,10 +36,11 @@ class _Sliders:
                 and not spec["along"].startswith("block ")
                 and "path" not in spec
             ):
+                fixed = "along" not in spec  # (a book's offset line of stroke: its through)
                 raise self.error(
                     'offset goes with along = "CP" alone: a block in a slot of the lever CP '
                     "whose line misses the lever's centre line (a peg's slot, a yoke's or a "
-                    "fixed path takes none)",
+                    "fixed path takes none)" + (_suggest("offset", allowed) if fixed else ""),
                     "sliders",
                     name,
                 )
