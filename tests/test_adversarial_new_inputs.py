@@ -404,3 +404,86 @@ def test_a_huge_period_through_the_command_line_is_exit_2_and_strict_json(tmp_pa
 def test_a_load_against_no_link_is_one_line(direction, words, tmp_path, capsys):
     text = LINK_LOADS.format(m=direction, e="270", angle=60)
     _refused_everywhere(text, tmp_path, capsys, "[loads] M (line 29)", words)
+
+
+# ------------------------------------------------------------------ check --tolerance
+
+
+@pytest.mark.parametrize(
+    "tolerances, words",
+    [
+        # (it said "a second tolerance in rad" for two given in degrees)
+        (
+            ["1 deg", "2 deg"],
+            "'2 deg': a second tolerance for the answers in rad (the first '1 deg')",
+        ),
+        (["1 mm", "0.1 cm"], "(the first '1 mm')"),
+        (["5%", "3%"], "a second per cent"),
+        (["0%"], "between 0 and 100"),
+        (["100%"], "between 0 and 100"),
+        (["nan%"], "between 0 and 100"),
+        (["-1 mm"], "a positive size"),
+        (["0 deg"], "a positive size"),
+        (["1 rad/s cw"], "a positive size"),
+        (["1 N"], "neither a per cent"),
+        (["1 mm lfet"], "neither a per cent"),
+        ([""], "write a per cent"),
+    ],
+)
+def test_a_bad_tolerance_is_one_line_and_writes_no_gradebook(tolerances, words, tmp_path, capsys):
+    ans = tmp_path / "ann.toml"
+    ans.write_text('[answers]\nv_R = "2.53 m/s"\nvs_A = "?"\n', encoding="utf-8")
+    book = tmp_path / "g.csv"
+    argv = ["check", str(BOOK / "hunt5_offset_slot_lever.toml"), str(ans)]
+    for t in tolerances:
+        argv += ["--tolerance", t]
+    assert main([*argv, "--gradebook", str(book)]) == 2
+    out, err = capsys.readouterr()
+    assert not out and len(err.splitlines()) == 1 and "--tolerance" in err, err
+    assert words in err, err
+    assert not book.exists()
+
+
+# ------------------------------------------------------------------ a class of today's scenes
+
+CLASS = {
+    "ann": '[answers]\nv_R = "2.53 m/s"\nomega_QB = "5.3 rad/s cw"\n',
+    "bob": '[answers]\nv_R = "?"\n',
+    "cat": '[answers]\nvs_A = "1 m/s at 30 deg"\n',
+    "dan": '[answers]\nv_R = "nan m/s"\n',
+    "eve": '[answers]\nv_R = "1e400 m/s"\n',
+    "fay": '[answers]\ntorque = "98 N m cw"\n',
+    "gus": '[answers]\ntolerance = "-5%"\nv_R = "2.5 m/s"\n',
+    "hal": "[answers]\nv_R = [[[[[[[[[[1]]]]]]]]]]\n",
+    "ida": 'v_R = "2.53 m/s"\n',
+    "jon": '[answers]\nomega_QB = "? rad/s cw"\n',
+}
+
+
+@pytest.mark.parametrize(
+    "scene",
+    [
+        "hunt5_offset_slot_lever.toml",
+        "friction_each_slider_crank_pins.toml",
+        "force_engine_rod_swung_as_pendulum.toml",
+        "flywheel/press_frictional_losses.toml",
+    ],
+)
+def test_a_class_of_careless_answer_files_is_graded_each_in_its_row(scene, tmp_path, capsys):
+    """Every student has a row (graded, or why the file could not be read), whatever the
+    others wrote; the JSON is strict and the gradebook written whole."""
+    folder = tmp_path / "class"
+    folder.mkdir()
+    for name, text in CLASS.items():
+        (folder / f"{name}.toml").write_text(text, encoding="utf-8")
+    book = tmp_path / "g.csv"
+    code = main(["check", "--json", str(BOOK / scene), str(folder), "--gradebook", str(book)])
+    out, err = capsys.readouterr()
+    assert code in (0, 1) and "Traceback" not in err, err
+    data = json.loads(out, parse_constant=lambda x: pytest.fail(f"{x} in the JSON"))
+    text = json.dumps(data)
+    for name in CLASS:
+        assert name in text, name
+    rows = book.read_text(encoding="utf-8").splitlines()
+    assert len(rows) >= 1 + len(CLASS), rows
+    assert not NUMBER_WORD.search(book.read_text(encoding="utf-8").replace("nan m/s", ""))
