@@ -57,9 +57,12 @@ def _commands(scene, out):
 
 def _refused_everywhere(text, tmp_path, capsys, *words):
     """Every command refuses the scene in one line naming the file and ``words``; nothing
-    on stdout, no output file."""
+    on stdout, no output file written, the ones there before left as they were."""
     scene = tmp_path / "bad.toml"
     scene.write_text(text, encoding="utf-8")
+    kept = {n: f"{n}: a file of the teacher's, kept" for n in ("x.svg", "x.csv", "x.html")}
+    for n, content in kept.items():
+        (tmp_path / n).write_text(content, encoding="utf-8")
     lines = []
     for argv in _commands(str(scene), tmp_path):
         assert main(argv) == 2, argv
@@ -70,7 +73,9 @@ def _refused_everywhere(text, tmp_path, capsys, *words):
         for w in words:
             assert w in errs[0], (w, errs[0])
         lines.append(errs[0].split(": ", 1)[1])
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.toml"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.toml", *sorted(kept)]
+    for n, content in kept.items():  # (neither replaced nor half-written)
+        assert (tmp_path / n).read_text(encoding="utf-8") == content
     assert len(set(lines)) == 1, lines  # the same words from every command
     return lines[0]
 
