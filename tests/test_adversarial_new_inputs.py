@@ -19,7 +19,7 @@ from pathlib import Path
 
 import pytest
 
-from polygon_method import parse_scene, solve
+from polygon_method import parse_cycle, parse_scene, solve, solve_cycle
 from polygon_method.cli import main
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -492,3 +492,54 @@ def test_a_class_of_careless_answer_files_is_graded_each_in_its_row(scene, tmp_p
     rows = book.read_text(encoding="utf-8").splitlines()
     assert len(rows) >= 1 + len(CLASS), rows
     assert not NUMBER_WORD.search(book.read_text(encoding="utf-8").replace("nan m/s", ""))
+
+
+# ------------------------------------------------------------------ dE_max as a part, a press's losses
+
+PART = (BOOK / "flywheel/energy_fluctuation_part_of_the_work.toml").read_text()
+PRESS = (BOOK / "flywheel/press_frictional_losses.toml").read_text()
+
+
+@pytest.mark.parametrize(
+    "part, words",
+    [
+        ('"0%"', "above 0 and below 1000%"),
+        ('"-15%"', "above 0 and below 1000%"),
+        # (refused as not "above 0")
+        ('"1e300%"', "above 0 and below 1000%"),
+        ('"nan%"', "cannot read"),
+        ('"15 percent"', "unknown unit 'percent'"),
+        ("0.15", "has no unit"),
+    ],
+)
+def test_a_bad_part_of_the_work_is_one_line(part, words, tmp_path, capsys):
+    text = _replaced(PART, 'dE_max = "15%"', f"dE_max = {part}")
+    _refused_everywhere(text, tmp_path, capsys, "[turning_moment] dE_max (line 16)", words)
+
+
+@pytest.mark.parametrize("part", ["15%", "150%", "193%"])
+def test_a_part_of_the_work_is_that_part_of_a_cycles_work(part):
+    """dE_max = Ce P (2 pi / w) for a revolution's cycle at the flywheel's mean speed (100
+    rpm, 185 kW); a gas engine's Ce of 1.93 is a book's value, above one."""
+    cyc = solve_cycle(parse_cycle(_replaced(PART, 'dE_max = "15%"', f'dE_max = "{part}"')))
+    work = 185e3 * 2 * math.pi / (100 * 2 * math.pi / 60)
+    assert math.isclose(cyc.dE_max, float(part[:-1]) / 100 * work, rel_tol=1e-12)
+    # the flywheel of it: I = dE / (Cs w^2), Cs = 2 x 1 % (plus or minus)
+    w = 100 * 2 * math.pi / 60
+    assert math.isclose(cyc.inertia, cyc.dE_max / (0.02 * w * w), rel_tol=1e-12)
+
+
+@pytest.mark.parametrize(
+    "losses, words",
+    [
+        ('"-1/6"', "from 0 to below 1000%"),
+        ('"1/0"', "from 0 to below 1000%"),
+        ('"0/0"', "from 0 to below 1000%"),
+        ("10", "from 0 to below 1000%"),
+        ('"1/6 of the work"', "a part of the punching's work"),
+        ("nan", "a part of the punching's work"),
+    ],
+)
+def test_bad_losses_are_one_line(losses, words, tmp_path, capsys):
+    text = _replaced(PRESS, 'losses = "1/6"', f"losses = {losses}")
+    _refused_everywhere(text, tmp_path, capsys, "[press] losses (line 21)", words)

@@ -234,7 +234,11 @@ class _StrokesReader:
                 )
             ce = self.ld.qty(raw, "percent", t, "dE_max").value
             if not 0 < ce < 10:
-                raise self.err(f"dE_max = {raw!r}: a part of the work, above 0", t, "dE_max")
+                raise self.err(  # (1e300% was refused as not "above 0")
+                    f"dE_max = {raw!r}: a part of the work, above 0 and below 1000%",
+                    t,
+                    "dE_max",
+                )
             dE = ce * W
             words.append(
                 f"the maximum fluctuation of energy {ce:.6g} of the work of a cycle (the "
