@@ -543,3 +543,33 @@ def test_a_part_of_the_work_is_that_part_of_a_cycles_work(part):
 def test_bad_losses_are_one_line(losses, words, tmp_path, capsys):
     text = _replaced(PRESS, 'losses = "1/6"', f"losses = {losses}")
     _refused_everywhere(text, tmp_path, capsys, "[press] losses (line 21)", words)
+
+
+@pytest.mark.parametrize(
+    "pins, at",
+    [
+        ('pins = { O = "30 mm", A = 0.08 }', "at O, 30 mm"),  # O's pin: 50 mm across
+        ('pins = { B = "12.5 mm" }', "at B, 12.5 mm"),  # B's: 25 mm across, exactly
+        ('pins = "20 mm"', "at A, 20 mm"),  # every pin: A's is 40 mm across
+    ],
+)
+def test_a_friction_circle_no_smaller_than_its_pin_is_refused(pins, at, tmp_path, capsys):
+    """Its radius is mu r with mu below 1: a circle as large as the pin itself was read."""
+    text = _replaced(FRICTION, "pins = { O = 0.05, A = 0.08, B = 0.12 }", pins)
+    line = _refused_everywhere(text, tmp_path, capsys, "[friction] pins (line 42)", at)
+    assert "is not smaller than the pin itself" in line, line
+
+
+def test_a_friction_circle_inside_its_pin_is_mu_r():
+    """A circle stated as mu r of its pin gives the answer of the coefficient itself."""
+    by_mu = solve(parse_scene(FRICTION))
+    by_circle = solve(
+        parse_scene(
+            _replaced(
+                FRICTION,
+                "pins = { O = 0.05, A = 0.08, B = 0.12 }",
+                'pins = { O = "1.25 mm", A = "1.6 mm", B = "1.5 mm" }',
+            )
+        )
+    )
+    assert math.isclose(by_mu.forces.input_torque, by_circle.forces.input_torque, rel_tol=1e-9)

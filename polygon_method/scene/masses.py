@@ -383,7 +383,24 @@ class _Masses:
                 "friction",
                 "pins",
             )
+        self._circles_inside(out, pins)
         return Friction(**out)
+
+    def _circles_inside(self, out, pins) -> None:
+        """A friction circle stated where [pins] gives the pin's size lies inside the pin:
+        its radius is mu r, mu below 1 (a 30 mm circle on a 25 mm pin was read)."""
+        size = {p.point: p.radius for p in pins}
+        every = [(q, out["circle"]) for q in size] if "circle" in out else []
+        for q, rc in [*out.get("at_circles", ()), *every]:
+            if q in size and not rc < size[q]:
+                raise self.error(
+                    f"pins: the friction circle at {q}, {self._words(rc)}, is not smaller "
+                    f"than the pin itself (radius {self._words(size[q])} in [pins]): its "
+                    "radius is mu r, mu below 1 (check the value, or give the pin's "
+                    f"coefficient: pins = {{ {q} = 0.1 }})",
+                    "friction",
+                    "pins",
+                )
 
     def _circle(self, v, key) -> float:
         """A friction circle's radius stated ("5 mm"; the scene's unit when bare)."""
