@@ -573,3 +573,27 @@ def test_a_friction_circle_inside_its_pin_is_mu_r():
         )
     )
     assert math.isclose(by_mu.forces.input_torque, by_circle.forces.input_torque, rel_tol=1e-9)
+
+
+@pytest.mark.parametrize(
+    "scene, argv",
+    [
+        ("flywheel/areas_multicylinder.toml", ["sweep", "--csv", "x.csv"]),
+        ("flywheel/press_frictional_losses.toml", ["sweep", "--csv", "x.csv"]),
+        ("flywheel/energy_fluctuation_part_of_the_work.toml", ["sweep", "--csv", "x.csv"]),
+        ("flywheel/energy_fluctuation_part_of_the_work.toml", ["draw", "-o", "x.svg"]),
+        ("flywheel/energy_fluctuation_part_of_the_work.toml", ["page", "-o", "x.html"]),
+    ],
+)
+def test_a_diagram_with_nothing_to_tabulate_or_draw_names_its_file(scene, argv, tmp_path, capsys):
+    """Areas, a press, a fluctuation stated alone: no curve. The refusal named only the
+    option ('polygon-method sweep: --csv: the diagram is given as areas ...'), not the
+    scene that has no curve; the file there before is left as it was."""
+    out = tmp_path / argv[-1]
+    out.write_text("a file of the teacher's", encoding="utf-8")
+    path = str(BOOK / scene)
+    assert main([argv[0], path, *argv[1:-1], str(out)]) == 2
+    stdout, err = capsys.readouterr()
+    assert not stdout and len(err.splitlines()) == 1, err
+    assert f"{Path(scene).name}: {argv[1]}: " in err, err
+    assert out.read_text(encoding="utf-8") == "a file of the teacher's"
