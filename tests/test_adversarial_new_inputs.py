@@ -597,3 +597,18 @@ def test_a_diagram_with_nothing_to_tabulate_or_draw_names_its_file(scene, argv, 
     assert not stdout and len(err.splitlines()) == 1, err
     assert f"{Path(scene).name}: {argv[1]}: " in err, err
     assert out.read_text(encoding="utf-8") == "a file of the teacher's"
+
+
+@pytest.mark.parametrize(
+    "pins, key",
+    [
+        ('pins = "0.1"', "pins = '0.1'"),  # (a 0.1 mm circle, where a coefficient was meant)
+        ('pins = { O = "0.08", A = 0.08 }', "pins.O = '0.08'"),
+        ('pins = { O = "2" }', "pins.O = '2'"),
+    ],
+)
+def test_a_number_in_quotes_at_the_pins_is_no_circle(pins, key, tmp_path, capsys):
+    """A coefficient in quotes was read as a friction circle of that many millimetres."""
+    text = _replaced(FRICTION, "pins = { O = 0.05, A = 0.08, B = 0.12 }", pins)
+    line = _refused_everywhere(text, tmp_path, capsys, "[friction] pins (line 42)", key)
+    assert "takes its unit" in line and "a bare number" in line, line

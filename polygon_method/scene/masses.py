@@ -402,8 +402,17 @@ class _Masses:
                     "pins",
                 )
 
-    def _circle(self, v, key) -> float:
-        """A friction circle's radius stated ("5 mm"; the scene's unit when bare)."""
+    def _circle(self, v, key, name="") -> float:
+        """A friction circle's radius stated ("5 mm"), with its unit: a number in quotes
+        ("0.1") reads as a coefficient as well as a length (it was read as 0.1 mm)."""
+        if re.fullmatch(r"\s*[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?\s*", v):
+            raise self.error(
+                f"{name or key} = {v!r}: a friction circle's radius takes its unit "
+                f'("{v.strip()} {self.unit}"); a coefficient of friction is a bare number '
+                f"({name or key} = {v.strip()})",
+                "friction",
+                key,
+            )
         return self.length(v, "friction", key)  # (refused unless positive)
 
     def _sized(self, each, sized) -> None:
@@ -450,7 +459,7 @@ class _Masses:
                     f"{k}: '{name}' is not {what}; the scene has {have}", "friction", k
                 )
             if k == "pins" and isinstance(v, str):  # the friction circle's radius
-                out.append((name, (self._circle(v, k),)))
+                out.append((name, (self._circle(v, k, f"{k}.{name}"),)))
                 continue
             out.append((name, self._coefficient(k, v, f"{k}.{name}")))
         return tuple(out)
