@@ -321,6 +321,9 @@ def test_strokes_given_as_huge_energies_are_refused(works, tmp_path, capsys):
         ('vs_C = "1 m/s at 30 deg"', "vs_C"),
         ('vs_C = "1 m/s at 210 deg"', "vs_C"),
         ('vs_C = "1 m/s up"', "vs_C"),
+        # (a collar's words: "unknown unit 'm/s outward'")
+        ('vs_C = "1 m/s outward"', "vs_C"),
+        ('vs_C = "1 m/s towards D"', "vs_C"),
         ('vs_C = "1 m/s"\nas_C = "2 m/s^2 at 30 deg"', "as_C"),
     ],
 )

@@ -7,6 +7,7 @@ from __future__ import annotations
 import re
 
 from ..common.errors import printable
+from .block_input import _SENSE as _COLLAR
 from .piston_words import towards_the_crank
 from .rate_words import RATED as _RATED
 from .crank_speed import second_crank_angle
@@ -109,6 +110,8 @@ class _GivenMotion:
                 if point is None or point not in self.known:
                     raise self.error(f"no point {''.join(names)} in the scene", table, key)
                 u = None
+            words = kind == "vs" and isinstance(raw, str) and _COLLAR.match(raw) is not None
+            self._along_turning(kind, u, words or None, (raw, key, table))  # ("outward")
             value, direction = self.directed(raw, "velocity", key, u, kind == "v", table)
             self._along_turning(kind, u, direction, (raw, key, table))
             rate = None
