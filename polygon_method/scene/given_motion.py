@@ -110,8 +110,7 @@ class _GivenMotion:
                 if point is None or point not in self.known:
                     raise self.error(f"no point {''.join(names)} in the scene", table, key)
                 u = None
-            words = kind == "vs" and isinstance(raw, str) and _COLLAR.match(raw) is not None
-            self._along_turning(kind, u, words or None, (raw, key, table))  # ("outward")
+            self._along_turning(kind, u, _COLLAR.match(str(raw)), (raw, key, table))
             value, direction = self.directed(raw, "velocity", key, u, kind == "v", table)
             self._along_turning(kind, u, direction, (raw, key, table))
             rate = None
