@@ -615,3 +615,27 @@ def test_a_number_in_quotes_at_the_pins_is_no_circle(pins, key, tmp_path, capsys
     text = _replaced(FRICTION, "pins = { O = 0.05, A = 0.08, B = 0.12 }", pins)
     line = _refused_everywhere(text, tmp_path, capsys, "[friction] pins (line 42)", key)
     assert "takes its unit" in line and "a bare number" in line, line
+
+
+@pytest.mark.parametrize("mu", [0.0, 0.1, 0.3, 0.45])
+@pytest.mark.parametrize("angle", [80, 250, 300])
+def test_the_slides_friction_by_hand_on_a_short_rod(mu, angle):
+    """A short rod (OA 80, AB 90 mm), no masses, 1.5 kN to the left on the block, mu at
+    the slide alone: the block's balance along the path T (e_x - mu s |e_y|) = 1500 N (T
+    the rod's thrust along A -> B, s the way the block slides), the crank's torque T (A x
+    e) -- the books' slider crank with friction, by hand."""
+    text = _replaced(FRICTION, FRICTION_LINES, f"guides = {mu}")
+    text = _replaced(text, "AB = 320", "AB = 90")
+    sol = solve(parse_scene(_replaced(text, "angle = 120", f"angle = {angle}")))
+    r, ln, th = 0.08, 0.09, math.radians(angle)
+    ax, ay = r * math.cos(th), r * math.sin(th)
+    root = math.sqrt(ln * ln - ay * ay)
+    ex, ey = root / ln, -ay / ln
+    vb = (-r * math.sin(th) - r * r * math.sin(th) * math.cos(th) / root) * -20.0
+    s = math.copysign(1.0, vb)
+    thrust = 1500.0 / (ex - mu * s * abs(ey))
+    torque = thrust * (ax * ey - ay * ex)  # (ccw +)
+    assert math.isclose(sol.forces.input_torque, torque, rel_tol=1e-9), (
+        sol.forces.input_torque,
+        torque,
+    )
