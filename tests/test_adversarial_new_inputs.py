@@ -639,3 +639,19 @@ def test_the_slides_friction_by_hand_on_a_short_rod(mu, angle):
         sol.forces.input_torque,
         torque,
     )
+
+
+@pytest.mark.parametrize("angle", ['"60 deg from the vertical, cw"', "10", "200"])
+def test_the_offset_slots_forces_agree_with_virtual_power(angle):
+    """A 10 kg lever QB (a point mass at its middle) and 500 N against the ram R: the crank's
+    torque by D'Alembert and the offset slot's reactions equals the power balance
+    tau w = -(F_R . v_R - m a_G . v_G), from the solved velocities and accelerations."""
+    text = OFFSET.split("[answers]")[0].replace(
+        'angle = "60 deg from the vertical, cw"', f"angle = {angle}"
+    )
+    text += '[masses]\nQB = { mass = "10 kg" }\n[loads]\nR = { force = "500 N", direction = "to the left" }\n'
+    sol = solve(parse_scene(text))
+    vg = [(sol.V["Q"][i] + sol.V["B"][i]) / 2 for i in (0, 1)]
+    ag = [(sol.A["Q"][i] + sol.A["B"][i]) / 2 for i in (0, 1)]
+    power = -500.0 * sol.V["R"][0] - 10.0 * (ag[0] * vg[0] + ag[1] * vg[1])
+    assert math.isclose(sol.forces.input_torque, -power / sol.W["OA"], rel_tol=1e-9)
