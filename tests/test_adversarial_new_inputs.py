@@ -655,3 +655,11 @@ def test_the_offset_slots_forces_agree_with_virtual_power(angle):
     ag = [(sol.A["Q"][i] + sol.A["B"][i]) / 2 for i in (0, 1)]
     power = -500.0 * sol.V["R"][0] - 10.0 * (ag[0] * vg[0] + ag[1] * vg[1])
     assert math.isclose(sol.forces.input_torque, -power / sol.W["OA"], rel_tol=1e-9)
+
+
+def test_a_swing_under_an_absurd_gravity_names_g(tmp_path, capsys):
+    text = _replaced(
+        SWUNG, 'B = { mass = "80 kg" }', 'B = { mass = "80 kg" }\n[gravity]\ng = "1e12 m/s^2"'
+    )
+    line = _refused_everywhere(text, tmp_path, capsys, "[masses] AB (line 35)", "absurd")
+    assert "(g = 1e+12 m/s^2)" in line, line

@@ -110,8 +110,8 @@ def swing_inertia(rd, spec, link, m, lam, mu, name, g) -> tuple:
     if not m * (k2 + h * h) <= ABSURD["moment_of_inertia"]:  # (also an overflow to inf)
         raise rd.error(
             f"a swing of {T:.6g} s {where} gives I_pivot = m g h T^2 / (4 pi^2) beyond "
-            f"{ABSURD['moment_of_inertia']:g} kg m^2: absurd for a mechanism (check the "
-            "period and its unit: seconds)",
+            f"{ABSURD['moment_of_inertia']:g} kg m^2 (g = {g:g} m/s^2): absurd for a mechanism "
+            "(check the period and its unit: seconds)",
             "masses",
             name,
         )
