@@ -81,6 +81,11 @@ def _command_line_tolerance(values):
                 )
             relative = q
             continue
+        if re.search(r"\b(cw|ccw|(anti|counter)-?clockwise|clockwise)$", text, re.I):
+            raise SceneError(  # (it said "neither ... angular velocity" of '1 rad/s cw')
+                f"'{shown}': a tolerance is a positive size, with no sense (cw or ccw)",
+                key="--tolerance",
+            )
         for kind, si in _ABSOLUTE:
             try:
                 q = parse_quantity(text, kind)
@@ -88,8 +93,13 @@ def _command_line_tolerance(values):
                 continue
             if not q.value > 0 or q.sense is not None:
                 raise SceneError(f"'{shown}': a tolerance is a positive size", key="--tolerance")
-            if any(u == si for u, _, _ in absolute):
-                raise SceneError(f"'{shown}': a second tolerance in {si}", key="--tolerance")
+            first = next((t for u, _, t in absolute if u == si), None)
+            if first is not None:  # ("1 deg" then "2 deg" said "a second tolerance in rad")
+                raise SceneError(
+                    f"'{shown}': a second tolerance for the answers in {si} (the first "
+                    f"'{first}'); give one for each kind of answer",
+                    key="--tolerance",
+                )
             absolute.append((si, q.value, " ".join(text.split())))
             break
         else:

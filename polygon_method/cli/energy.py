@@ -222,6 +222,7 @@ def _drawn(scene, key) -> None:
         raise PolygonMethodError(
             "the maximum fluctuation of energy is given, not the turning-moment diagram: "
             "nothing to draw (solve, steps and check read it)",
+            file=scene.file,  # (the scene's doing: named, as every refusal of a scene is)
             key=key,
         )
 
@@ -300,6 +301,7 @@ def _csv(scene, out, n) -> None:
         raise PolygonMethodError(
             "the diagram is given as areas (or a press, or its fluctuation of energy alone): "
             "no curve to tabulate over the crank angle",
+            file=scene.file,
             key="--csv",
         )
     to_stdout = is_stdout(out)  # the CSV on standard output (-, /dev/stdout)

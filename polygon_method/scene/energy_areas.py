@@ -14,6 +14,9 @@ from .energy_records import Diagram
 #: the most areas a turning-moment diagram may give: each is drawn as a lobe with its
 #: value, lettered at its crossings and a row of the table (100000 took minutes to draw)
 MAX_AREAS = 100
+#: an energy of a diagram's area or stroke beyond it is a slip of the scales (J)
+ABSURD_ENERGY = 1e12
+ABSURD_ENERGY_WORDS = f"an energy beyond {ABSURD_ENERGY:g} J is absurd; check the scales"
 _SCALE = re.compile(r"^\s*([0-9.]+)\s*(mm|cm)\s*=\s*(.+?)\s*$")
 
 
@@ -65,8 +68,8 @@ class _AreasReader:
             )
         areas = tuple(float(v) * per for v in xs)
         scale = max(abs(a) for a in areas)
-        if scale > 1e12:
-            raise self.err("an energy beyond 1e12 J is absurd; check the scales", t, "areas")
+        if scale > ABSURD_ENERGY:
+            raise self.err(ABSURD_ENERGY_WORDS, t, "areas")
         net = math.fsum(xs) * per  # the numbers as the book gives them, summed exactly
         if abs(net) <= ROUNDING * scale:
             net = 0.0  # (the rounding of their energies, not the book's)

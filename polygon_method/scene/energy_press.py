@@ -81,7 +81,8 @@ class _PressReader:
             f = math.nan
         if not 0 <= f < 10:
             raise self.err(
-                f'losses = {raw!r}: a part of the punching\'s work, "1/6", "20%" or 0.2',
+                f'losses = {raw!r}: a part of the punching\'s work, "1/6", "20%" or 0.2 '
+                "(from 0 to below 1000%)",
                 t,
                 "losses",
             )

@@ -23,6 +23,7 @@ import re
 
 from ..common.tolerances import ROUNDING
 from ..common.units import did_you_mean
+from .energy_areas import ABSURD_ENERGY, ABSURD_ENERGY_WORDS
 from .energy_records import Diagram, Table
 
 #: the most strokes a cycle may have (a four-stroke engine has 4; 16 covers any book's)
@@ -104,6 +105,8 @@ class _StrokesReader:
             works = self._stroke_areas(spec, t, raw, words)
         else:
             works = self._proportions(spec, t, raw, cycle, words)
+        if not max(abs(w) for w in works) <= ABSURD_ENERGY:  # (also an overflow to inf)
+            raise self.err(ABSURD_ENERGY_WORDS, t, "strokes")
         if not math.fsum(works) > 0:
             raise self.err(
                 "the strokes' works add up to no net work: an engine's cycle does work "
@@ -231,7 +234,11 @@ class _StrokesReader:
                 )
             ce = self.ld.qty(raw, "percent", t, "dE_max").value
             if not 0 < ce < 10:
-                raise self.err(f"dE_max = {raw!r}: a part of the work, above 0", t, "dE_max")
+                raise self.err(  # (1e300% was refused as not "above 0")
+                    f"dE_max = {raw!r}: a part of the work, above 0 and below 1000%",
+                    t,
+                    "dE_max",
+                )
             dE = ce * W
             words.append(
                 f"the maximum fluctuation of energy {ce:.6g} of the work of a cycle (the "

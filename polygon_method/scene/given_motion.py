@@ -7,6 +7,7 @@ from __future__ import annotations
 import re
 
 from ..common.errors import printable
+from .block_input import _SENSE as _COLLAR
 from .piston_words import towards_the_crank
 from .rate_words import RATED as _RATED
 from .crank_speed import second_crank_angle
@@ -109,16 +110,19 @@ class _GivenMotion:
                 if point is None or point not in self.known:
                     raise self.error(f"no point {''.join(names)} in the scene", table, key)
                 u = None
+            self._along_turning(kind, u, _COLLAR.match(str(raw)), (raw, key, table))
             value, direction = self.directed(raw, "velocity", key, u, kind == "v", table)
+            self._along_turning(kind, u, direction, (raw, key, table))
             rate = None
             if raw_rate is not None:  # a point's speed: its rate is of the speed (+1)
                 rate = self.rated(
                     raw_rate, "acceleration", table, rate_key, value if kind == "vs" else 1.0
                 )
             if raw_rate is not None and rate is None:
-                rate, _ = self.directed(
+                rate, way = self.directed(
                     raw_rate, "acceleration", rate_key, u if kind == "vs" else None, False, table
                 )
+                self._along_turning(kind, u, way, (raw_rate, rate_key, table))
         if value == 0:
             raise self.error(
                 f"{key} is zero: it does not set the crank's speed (give the "
@@ -127,6 +131,23 @@ class _GivenMotion:
                 key,
             )
         return GivenRate(key, kind, tuple(names), value, rate, direction, text, rate_key, rate_text)
+
+    def _along_turning(self, kind, u, way, given):
+        """A way in the plane ("at 30 deg", "up") given to the sliding ``vs_X`` (``kind``
+        "vs") of a block along a turning link (no fixed guide ``u``): refused, the link's
+        direction changes with the motion, so the words would be read as nothing (its
+        sliding is signed along the link)."""
+        if kind != "vs" or u is not None or way is None:
+            return
+        raw, key, table = given
+        sl = self.slider_points[key.split("_", 1)[1]]
+        raise self.error(
+            f"{raw!r}: block {sl.point} slides along the turning link {sl.guide}, whose "
+            "direction the mechanism sets: give its sliding signed along the link, positive "
+            f'from {sl.first} towards {sl.second} (e.g. "1.5 m/s" or "-1.5 m/s")',
+            table,
+            key,
+        )
 
     def find_cylinder(self, names):
         return next((c for c in self.cylinder_list if {c.barrel, c.rod} == set(names)), None)

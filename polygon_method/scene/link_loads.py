@@ -58,7 +58,7 @@ def read_across(raw, split_name):
         "at right angles to",
         "square to",
     ):
-        if low.startswith(word + " "):
+        if low == word or low.startswith(word + " "):
             break
     else:
         m = _AT.fullmatch(text)
@@ -69,7 +69,7 @@ def read_across(raw, split_name):
             raise SceneError(f"'{raw.strip()}' gives two senses: give one, cw or ccw")
         sense = (s1 or s2 or "").lower()
         pts = split_name(name)
-        if not pts:
+        if len(pts) != 2:  # (no link: "from IDC", "from M": an angle's words, or none)
             return None
         if not sense:
             raise SceneError(
@@ -80,6 +80,8 @@ def read_across(raw, split_name):
         return (*pts, off, raw.strip())
     m = _ALONG.fullmatch(text) or _ACROSS.fullmatch(text)
     pts = split_name(m.group(1)) if m else ()
+    if pts:
+        _two_points(raw, m.group(1), pts)
     if not pts:
         raise SceneError(
             f"cannot read '{raw.strip()}' as a direction against a link: write e.g. "
@@ -90,6 +92,16 @@ def read_across(raw, split_name):
         return (*pts, 0.0, raw.strip())
     sense = (m.group(2) or "").lower()
     return (*pts, _SENSE[sense] * math.pi / 2 if sense else None, raw.strip())
+
+
+def _two_points(raw, name, pts) -> None:
+    """A link named by its two points: 'along M' (a point) or 'along CDE' (a plate) names
+    no direction (it was read as the link 'M0.0')."""
+    if len(pts) != 2:
+        raise SceneError(
+            f"'{raw.strip()}': {name} is not a link's two points: name the link whose "
+            "direction the force takes, e.g. 'along CD' (from C towards D)"
+        )
 
 
 def _words_of(deg: float) -> str:

@@ -383,10 +383,36 @@ class _Masses:
                 "friction",
                 "pins",
             )
+        self._circles_inside(out, pins)
         return Friction(**out)
 
-    def _circle(self, v, key) -> float:
-        """A friction circle's radius stated ("5 mm"; the scene's unit when bare)."""
+    def _circles_inside(self, out, pins) -> None:
+        """A friction circle stated where [pins] gives the pin's size lies inside the pin:
+        its radius is mu r, mu below 1 (a 30 mm circle on a 25 mm pin was read)."""
+        size = {p.point: p.radius for p in pins}
+        every = [(q, out["circle"]) for q in size] if "circle" in out else []
+        for q, rc in [*out.get("at_circles", ()), *every]:
+            if q in size and not rc < size[q]:
+                raise self.error(
+                    f"pins: the friction circle at {q}, {self._words(rc)}, is not smaller "
+                    f"than the pin itself (radius {self._words(size[q])} in [pins]): its "
+                    "radius is mu r, mu below 1 (check the value, or give the pin's "
+                    f"coefficient: pins = {{ {q} = 0.1 }})",
+                    "friction",
+                    "pins",
+                )
+
+    def _circle(self, v, key, name="") -> float:
+        """A friction circle's radius stated ("5 mm"), with its unit: a number in quotes
+        ("0.1") reads as a coefficient as well as a length (it was read as 0.1 mm)."""
+        if re.fullmatch(r"\s*[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?\s*", v):
+            raise self.error(
+                f"{name or key} = {v!r}: a friction circle's radius takes its unit "
+                f'("{v.strip()} {self.unit}"); a coefficient of friction is a bare number '
+                f"({name or key} = {v.strip()})",
+                "friction",
+                key,
+            )
         return self.length(v, "friction", key)  # (refused unless positive)
 
     def _sized(self, each, sized) -> None:
@@ -396,7 +422,7 @@ class _Masses:
                 raise self.error(
                     f"pins.{q}: a coefficient needs the pin's size in [pins] (its friction "
                     f"circle mu r), or give the circle's radius itself (pins = {{ {q} = "
-                    '"5 mm" }})',
+                    '"5 mm" })',
                     "friction",
                     "pins",
                 )
@@ -433,7 +459,7 @@ class _Masses:
                     f"{k}: '{name}' is not {what}; the scene has {have}", "friction", k
                 )
             if k == "pins" and isinstance(v, str):  # the friction circle's radius
-                out.append((name, (self._circle(v, k),)))
+                out.append((name, (self._circle(v, k, f"{k}.{name}"),)))
                 continue
             out.append((name, self._coefficient(k, v, f"{k}.{name}")))
         return tuple(out)

@@ -18,6 +18,7 @@ import math
 import re
 
 from ..common.tolerances import ROUNDING
+from ..common.unit_tables import ABSURD
 
 __all__ = ["PENDULUM_KEYS", "gyration_squared", "swing_inertia"]
 
@@ -78,7 +79,12 @@ def swing_inertia(rd, spec, link, m, lam, mu, name, g) -> tuple:
     T, said = _period(rd, spec, name)
     if ("about" in spec) == ("pivot_distance" in spec):
         raise rd.error(
-            'the swing needs the point it swings about: about = "B" (an end of the link) or '
+            (
+                "give the point the swing is about once: "
+                if "about" in spec
+                else "the swing needs the point it swings about: "
+            )
+            + 'about = "B" (an end of the link) or '
             "pivot_distance = 650 (the pivot's distance from G): one of them",
             "masses",
             name,
@@ -92,11 +98,27 @@ def swing_inertia(rd, spec, link, m, lam, mu, name, g) -> tuple:
     else:
         h = rd.length(spec["pivot_distance"], "masses", name)
         where = f"about a pivot {h:.6g} m from G"
-    k2 = gyration_squared(h, T, g) if h > 0 else -1.0
-    if k2 < -ROUNDING * h * h or not h > 0:
+    if not h > 0:
+        raise rd.error(
+            f"G is at {spec.get('about')}, the point the swing is about (|{spec.get('about')}G| "
+            "= 0): a body hung at its centre of mass does not swing; give the end it hung "
+            "from or its pivot_distance from G",
+            "masses",
+            name,
+        )
+    k2 = gyration_squared(h, T, g)
+    if not m * (k2 + h * h) <= ABSURD["moment_of_inertia"]:  # (also an overflow to inf)
+        raise rd.error(
+            f"a swing of {T:.6g} s {where} gives I_pivot = m g h T^2 / (4 pi^2) beyond "
+            f"{ABSURD['moment_of_inertia']:g} kg m^2 (g = {g:g} m/s^2): absurd for a mechanism "
+            "(check the period and its unit: seconds)",
+            "masses",
+            name,
+        )
+    if k2 < -ROUNDING * h * h:
         raise rd.error(
             f"a swing of {T:.6g} s {where} is quicker than a point mass's at G, 2 pi sqrt(h / "
-            f"g) = {2 * math.pi * math.sqrt(max(h, 0.0) / g):.6g} s: no body has it (check "
+            f"g) = {2 * math.pi * math.sqrt(h / g):.6g} s: no body has it (check "
             "the period, the pivot and G)",
             "masses",
             name,

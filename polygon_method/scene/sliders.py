@@ -8,6 +8,7 @@ import re
 
 from ..common.errors import SceneError
 from ..common.tolerances import SAME
+from ..common.units import UNITS
 from .records import FixedPath, GuideSlider, YokeSlot, guide_words, split_name
 from .table_help import _OFFSET, _suggest, _unit_at
 
@@ -123,9 +124,9 @@ class _Sliders:
         ``"40 mm"``) or with the side in words (``"40 mm left"``, ``"40 right"``)."""
         side, given = 1.0, raw
         if isinstance(raw, str):
-            m = re.match(r"^\s*(.*?)[\s,]*\b(left|right)\s*$", raw)
+            m = re.match(r"^\s*(.*?)[\s,]*\b(?:to\s+the\s+)?(left|right)\s*$", raw, re.I)
             if m:
-                raw, side = m.group(1), (1.0 if m.group(2) == "left" else -1.0)
+                raw, side = m.group(1), (1.0 if m.group(2).lower() == "left" else -1.0)
                 if raw.lstrip().startswith("-"):
                     raise self.error(
                         f"offset {raw!r} with a side: give the size alone, e.g. "
@@ -133,16 +134,7 @@ class _Sliders:
                         "sliders",
                         name,
                     )
-        if isinstance(raw, str) and (
-            w := re.search(r"\b(up|down|above|below|upwards|downwards|top|bottom)\s*$", raw)
-        ):
-            raise self.error(
-                f"offset = {given!r}: the side is left or right looking along the guide from "
-                f"{pts[0]} to {pts[1]} (a side '{w.group(1)}' changes as the link turns), "
-                'e.g. "30 mm left"',
-                "sliders",
-                name,
-            )
+            self._offset_side(raw, given, pts, name)
         try:
             e = side * self.length(raw, "sliders", name, positive=False)
         except SceneError as exc:
@@ -159,6 +151,22 @@ class _Sliders:
                 name,
             )
         return e
+
+    def _offset_side(self, raw, given, pts, name):
+        """Words after an offset's length that are no side ("30 mm lfet", "30 mm up"):
+        refused naming the side's two words, not as an unknown unit."""
+        w = re.match(r"^\s*[-+]?[\d.]+(?:[eE][-+]?\d+)?\s*([A-Za-z]+)\s+(.+?)\s*$", raw)
+        if w and w.group(1) in UNITS["length"]:
+            side = w.group(2)
+            hint = _suggest(side.lower(), ("left", "right"))
+            if side.lower() in ("left", "right"):
+                hint = ", given once"
+            raise self.error(
+                f"offset = {given!r}: the slot's side is left or right (looking from {pts[0]} "
+                f"to {pts[1]}), not {side!r}{hint}",
+                "sliders",
+                name,
+            )
 
     def yoke_slot(self, name, spec, ground):
         """``P = { along = "block Y", direction = "vertical" }``: a block at P in the slot of
