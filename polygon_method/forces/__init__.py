@@ -267,21 +267,28 @@ def _passes(motion, fp) -> Forces:
     before = last = None
     history = []  # the forces' largest changes from pass to pass (the bounds' estimate)
     moved = []  # the friction loads' (the first pass's: their size)
-    for _ in range(friction.ROUNDS):
+    n, limit = 0, friction.ROUNDS
+    while True:
         f = _forces(motion, fp, before or ())
         now = friction.loads(scene, motion, f.pins, f.guides)
         if last is not None:
             history.append(friction.largest_changes(last, f))
         d = friction.change(before, now) if before is not None else friction.size(now)
         moved.append(d)
-        if d <= friction.SETTLED * friction.scale(f):
+        target = friction.SETTLED * friction.scale(f)
+        if d <= target:
             settled = friction.settling(history, friction.scale(f), moved)
             return replace(f, settling=settled)
-        before, last = now, f
+        before, last, n = now, f, n + 1
+        if n >= limit:  # still settling, near locking: as many passes as that takes
+            limit, r = friction.more_rounds(moved, target, n)
+            if limit <= n:
+                break
+    slow = f" (their change shrinking only {r:.4g} a pass)" if r < 1.0 else ""
     raise PolygonMethodError(
-        f"forces: with friction the forces do not settle after "
-        f"{friction.ROUNDS} passes: the mechanism may lock itself here "
-        "(the friction too large for the driver to move it)",
+        f"forces: with friction the forces do not settle after {n} passes{slow}: the "
+        "mechanism locks itself here, or nearly (the friction too large for the driver to "
+        "move it)",
         file=scene.file,
         key="[friction]",
     )

@@ -29,13 +29,39 @@ Every friction force works against the motion: its power ``-mu |N| |v_rel|`` at 
 
 from __future__ import annotations
 
+import math
+
 from ..common.tolerances import SETTLED
 from ..steps.rounding import vhypot
 from .records import FRAME, Side, block
 
-#: the passes of the walk at most before friction is said not to settle (they have settled
-#: when the loads change by less than ``SETTLED`` of the largest force: common/tolerances.py)
+#: the passes of the walk before friction is asked whether it is still settling (they have
+#: settled when the loads change by less than ``SETTLED`` of the largest force:
+#: common/tolerances.py); near locking the passes shrink their change slowly (by 0.905 a
+#: pass with mu 0.5 where 0.552 locks): :func:`more_rounds` lets them go on, to
+#: :data:`MOST_ROUNDS` at most
 ROUNDS = 200
+MOST_ROUNDS = 20_000
+
+
+def more_rounds(moved, target, n) -> tuple:
+    """(the passes in all the forces need to settle, the ratio their change shrinks by a
+    pass) after ``n`` passes whose friction loads changed by ``moved`` (each pass's
+    :func:`change`): the ratio of the last ten changes, geometric; where it is below 1 the
+    passes it takes to bring the last change under ``target`` (N), and ten more; ``n`` (no
+    more) where the changes do not shrink (the friction locks the mechanism: no forces
+    balance it) or would need more than :data:`MOST_ROUNDS`.
+
+    >>> more_rounds([0.5 ** k for k in range(12)], 0.5 ** 30, 12)
+    (41, 0.5)
+    """
+    if len(moved) < 11 or not moved[-11] > 0.0 or not moved[-1] > 0.0:
+        return n, 1.0
+    r = (moved[-1] / moved[-11]) ** 0.1
+    if not r < 1.0:
+        return n, r
+    need = n + math.ceil(math.log(target / moved[-1]) / math.log(r)) + 10
+    return (need if need <= MOST_ROUNDS else n), r
 
 
 def sgn(x):
