@@ -130,3 +130,17 @@ def test_a_diagrams_answer_file_sends_the_student_above_the_heading(tmp_path):
     )
     assert out.returncode == 2 and "line 3" in out.stderr
     assert "above the [answers] heading" in out.stderr
+
+
+@pytest.mark.parametrize("value", ["1 mm", "1 deg", "0.01 m/s"])
+def test_an_absolute_tolerance_in_a_file_is_sent_to_the_command_line(value):
+    """``check --tolerance "1 mm"`` takes an absolute tolerance; a file's ``tolerance`` is
+    a per cent: the refusal says where the absolute one goes (it said "'mm' is a unit of
+    length, not of percent")."""
+    sc = parse_scene(seed())
+    text = f'[answers]\ntolerance = "{value}"\nv_C = "0.3 m/s"\n'
+    err = _refusal(lambda: parse_answers(text, sc, file="ann.toml"))
+    assert err.line == 2 and err.message.count("\n") == 0
+    assert f"--tolerance '{value}'" in err.message and "per cent" in err.message
+    ok = parse_answers(text.replace(value, "3%"), sc, file="ann.toml")
+    assert ok is not None

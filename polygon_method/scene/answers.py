@@ -8,8 +8,8 @@ from __future__ import annotations
 import math
 import re
 
-from ..common.errors import SceneError, printable
-from ..common.units import UNITS, decimal_comma, question
+from ..common.errors import PolygonMethodError, SceneError, printable
+from ..common.units import UNITS, decimal_comma, parse_quantity, question
 from .answer_keys import (
     _KINDS,
     DRIVER_ANSWERS,
@@ -110,7 +110,7 @@ class _Answers(_AnswerNames, _Questions, _CycleAnswers):
                         "answers",
                         key,
                     )
-                q = self.qty(value, "percent", "answers", key, default_unit="%").value
+                q = self._tolerance(value, key)
                 if not 0 < q < 1:
                     raise self.error(
                         f"tolerance {value!r} must be between 0 and 100 %", "answers", key
@@ -123,6 +123,27 @@ class _Answers(_AnswerNames, _Questions, _CycleAnswers):
                 raise self._misplaced(key)
             out.append(self.answer(key, value, known, slider_names, pin_names, loads))
         return tolerance, out
+
+    def _tolerance(self, value, key) -> float:
+        """The file's ``tolerance``, a per cent; a value with a unit of an answer (1 mm, 1
+        deg, 0.01 m/s) refused saying where an absolute tolerance is given."""
+        try:
+            return self.qty(value, "percent", "answers", key, default_unit="%").value
+        except SceneError:
+            for kind in ("length", "angle", "velocity", "acceleration", "angular_velocity"):
+                try:
+                    parse_quantity(str(value), kind)
+                except PolygonMethodError:
+                    continue
+                shown = printable(" ".join(str(value).split()))
+                raise self.error(
+                    f"tolerance '{shown}': a file's tolerance is a per cent (\"3%\"); an "
+                    f"absolute one is given to check on its command line: --tolerance "
+                    f"'{shown}'",
+                    "answers",
+                    key,
+                ) from None
+            raise
 
     def _sub_table(self, key, value):
         """The error for a table inside ``[answers]``, at its header's line (or its first
