@@ -299,11 +299,12 @@ TEXTBOOK = sorted((ROOT / "tests" / "textbook").glob("*.toml"))
 def _gears_only(path):
     """A train of gears (or a planet on an arm) driven by cranks only: each gear's velocity
     follows from no slip at its pitch point (omega by the ratio, v = omega x radius), so no
-    direction line is drawn. A wheel on a line is found from a link pinned to it: lines."""
+    direction line is drawn; nor for a point carried on the arm (a second planet's centre:
+    found by its image). A wheel on a line is found from a link pinned to it: lines."""
     from polygon_method.solver.compiler import compile_plan
 
     return all(
-        st.kind in ("crank", "second crank")
+        st.kind in ("crank", "second crank", "carried")
         or (st.kind == "rolling" and st.on in ("gear", "circle"))
         for st in compile_plan(load_scene(path)).steps
     )
