@@ -155,3 +155,31 @@ def test_two_planets_in_series_by_the_tabular_method():
     # by the teeth: R's tangential load 50 / 0.13 passes P2 unchanged (its moments), then
     # P1 unchanged, and S takes it at 0.05 m: 50 x 0.05 / 0.13 = 19.23 N m
     assert float(held) == pytest.approx(50 * 0.05 / 0.13, rel=1e-12)
+
+
+IDLER = HERE / "shigley_idler_gear_shaft_force.toml"
+
+
+@pytest.mark.parametrize("phi", [20, 14.5])
+def test_the_idlers_shaft_force_by_hand(phi, tmp_path):
+    """W_t = 20 / 0.0375 at both meshes, W_r = W_t tan phi; on the idler from the pinion at
+    its left (W_r, -W_t), from gear 4 above it (W_t, -W_r): the shaft takes their sum back.
+    The pressure angle stated once for the table (``[rolling] pressure_angle``)."""
+    import math
+
+    text = IDLER.read_text(encoding="utf-8").replace(
+        "pressure_angle = 20 ", f"pressure_angle = {phi} "
+    )
+    f = tmp_path / "idler.toml"
+    f.write_text(text.split("[answers]")[0], encoding="utf-8")
+    sol = solve(load_scene(f))
+    wt = 20 / 0.0375
+    wr = wt * math.tan(math.radians(phi))
+    shaft = -(wr + wt), wt + wr  # the frame's force on the idler at O3
+    o3 = next(p for p in sol.forces.pins if p.point == "O3")
+    assert o3.force[0] == pytest.approx(shaft[0], rel=1e-12)
+    assert o3.force[1] == pytest.approx(shaft[1], rel=1e-12)
+    for c in sol.forces.contacts:
+        assert c.load == pytest.approx(wt / math.cos(math.radians(phi)), rel=1e-12)
+        assert c.stated  # the table's pressure angle is stated, not the default
+    assert sol.value("torque", ()) == pytest.approx(-wt * 0.025, rel=1e-12)

@@ -154,3 +154,18 @@ def test_bad_losses_are_one_line(tmp_path, capsys, value):
     )
     code, _, err = _run(capsys, "solve", bad)
     assert code == 2 and "losses" in err and len(err.strip().splitlines()) == 1, err
+
+
+def test_the_coefficient_of_fluctuation_of_energy(tmp_path, capsys):
+    """Ce = dE_max / the work of a cycle: Khurmi's steam engine's stated 15 % back; the gas
+    engine of strokes 12000 (11/12)^2 / 8000; none for areas alone (no work known)."""
+    assert _solve(STEAM).Ce == pytest.approx(0.15, rel=REL)
+    gas = HERE / "strokes_expansion_three_times_compression.toml"
+    assert _solve(gas).Ce == pytest.approx(12000 * 121 / 144 / 8000, rel=REL)
+    assert _solve(HERE / "areas_multicylinder.toml").Ce is None
+    answers = tmp_path / "a.toml"
+    answers.write_text('[answers]\nCe = "15%"\n', encoding="utf-8")
+    code, out, _ = _run(capsys, "check", STEAM, answers)
+    assert code == 0 and "right" in out
+    code, out, _ = _run(capsys, "solve", STEAM)
+    assert "coefficient of fluctuation of energy Ce = dE_max / (work per cycle) = 0.15" in out

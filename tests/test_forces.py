@@ -705,7 +705,14 @@ def test_the_sweep_balances_power_at_every_angle(path):
     for ld in sc.loads:
         if ld.force is not None:
             v = res.V[ld.target]
-            terms.append(ld.force[0] * v[0] + ld.force[1] * v[1])
+            fx, fy = ld.force
+            if ld.across is not None:  # it turns with its link: its vector at each angle
+                a, b, off, _, size = ld.across
+                dx, dy = res.P[b][0] - res.P[a][0], res.P[b][1] - res.P[a][1]
+                L = np.hypot(dx, dy)
+                fx = size * (np.cos(off) * dx - np.sin(off) * dy) / L
+                fy = size * (np.sin(off) * dx + np.cos(off) * dy) / L
+            terms.append(fx * v[0] + fy * v[1])
         else:
             terms.append(ld.torque * res.W[ld.target])
     for c in sc.cylinders:  # a passive cylinder's given force (a spring's k (L0 - L)): F vs

@@ -123,3 +123,55 @@ def test_a_bad_swing_is_one_line(tmp_path, capsys, swing, words):
     assert main(["solve", str(bad)]) == 2
     err = capsys.readouterr().err
     assert words in err and len(err.strip().splitlines()) == 1, err
+
+
+BOTH = HERE / "force_engine_rod_swung_about_both_ends.toml"
+
+
+def test_the_rod_swung_about_both_ends_places_its_centre(monkeypatch):
+    """Khurmi's oil-engine rod: both swings give k^2 = c h - h^2 with the knife-edges 37.5 and
+    60 mm beyond the centres; h1 = S (c2 - S) / (c1 + c2 - 2 S) solved here at 40 digits: G
+    706.0 mm from the small end, I = 6.850 kg m^2; the engine's torque by the equivalent
+    dynamical system."""
+    mpmath.mp.dps = 40
+    g = mpf("9.81")
+    c1, c2 = (g * T**2 / (4 * mpmath.pi**2) for T in (mpf("1.9"), mpf("1.65")))
+    S = 1 + mpf("0.0375") + mpf("0.06")
+    # the two equations solved by mpmath's root finder, not the closed form
+    h1 = mpmath.findroot(lambda h: (c1 * h - h**2) - (c2 * (S - h) - (S - h) ** 2), 0.7)
+    x = h1 - mpf("0.0375")  # G from the small end's centre B
+    k2 = c1 * h1 - h1**2
+    sc = load_scene(BOTH)
+    rod = next(m for m in sc.masses if m.body == "AB")
+    assert rod.inertia == pytest.approx(float(60 * k2), rel=1e-12)
+    assert 1 - rod.lam == pytest.approx(float(x), rel=1e-12)  # lam from A
+    assert float(x) == pytest.approx(0.706, abs=5e-4) and float(60 * k2) == pytest.approx(
+        6.85, abs=5e-3
+    )
+    entry = (250, 1000, 300, -1, 40, 60, (1 - x) * 1000, mpmath.sqrt(k2) * 1000, 80, 0, 0)
+    monkeypatch.setitem(corpus.HEAVY_RODS, BOTH.stem, entry)
+    turning, _, sg = corpus._equivalent_system(BOTH.stem)
+    sol = solve(sc)
+    assert sol.forces.input_torque == pytest.approx(float(-sg * turning), rel=1e-9)
+    assert main(["check", str(BOTH)]) == 0
+
+
+@pytest.mark.parametrize(
+    "swings, words",
+    [
+        ('swings = { B = "100 in 190 s" }', "the swing about each end of AB, both"),
+        ('swings = { B = "100 in 100 s", A = "100 in 165 s" }', "put no centre of mass"),
+        ('swings = { B = "1.9 s", A = "1.65 s" }, along = 300', "along: not with swings"),
+        ("knife_edge = { B = 37.5 }", "knife_edge goes with swings"),
+    ],
+)
+def test_bad_swings_are_one_line(tmp_path, capsys, swings, words):
+    text = BOTH.read_text(encoding="utf-8").replace(
+        'swings = { B = "100 in 190 s", A = "100 in 165 s" }, knife_edge = { B = 37.5, A = 60 }',
+        swings,
+    )
+    bad = tmp_path / "bad.toml"
+    bad.write_text(text, encoding="utf-8")
+    assert main(["solve", str(bad)]) == 2
+    err = capsys.readouterr().err
+    assert words in err and len(err.strip().splitlines()) == 1, err

@@ -338,3 +338,15 @@ def test_each_pins_circle_is_its_coefficient_times_its_radius():
     text = text.split("[pins]")[0] + "[answers]" + text.split("[answers]")[1]
     a, b = solve(load_scene(CRANK)), solve(parse_scene(text))
     assert b.forces.input_torque == pytest.approx(a.forces.input_torque, rel=1e-12)
+
+
+def test_friction_circles_at_rest_about_to_start():
+    """At rest about to turn cw, the static friction limiting against the motion about to
+    start: with no masses the same forces as moving cw (the matrix method's)."""
+    x = _crank_reference(circles=("0.002", "0.002", "0.002"), mu_guide="0.1")
+    text = CIRCLE.read_text(encoding="utf-8").replace(
+        'speed = "20 rad/s clockwise"', 'speed = "0 rad/s cw"'
+    )
+    sol = solve(parse_scene(text))
+    assert sol.scene.at_rest
+    assert sol.forces.input_torque == pytest.approx(float(x["T"]), rel=REL)

@@ -28,6 +28,8 @@ _NEEDS = {
     "work of a cycle) beside dE_max (areas give no mean)",
     "power": "the mean speed ([flywheel] speed) and a law or segments, or a press",
     "E_stroke": "a punching press ([press])",
+    "Ce": "the work of a cycle: a law, segments or strokes, or the power (or work) beside "
+    "dE_max (areas give none)",
     "alpha_at": "[turning_moment] at, a crank angle, and [flywheel]",
     "rim_radius": "the rim's radius ([flywheel] radius, diameter, rim_speed or stress)",
     "rim_width": "the rim's section ([flywheel] width_to_thickness, width or thickness)",

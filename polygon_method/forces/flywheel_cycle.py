@@ -68,6 +68,7 @@ ANSWER_FIELDS = {
     "I_flywheel": ("inertia", "kg m^2", "the flywheel's moment of inertia"),
     "m_flywheel": ("mass", "kg", "the flywheel's mass"),
     "Cs": ("Cs", "", "the coefficient of fluctuation of speed"),
+    "Ce": ("Ce", "", "the coefficient of fluctuation of energy"),
     "speed_max": ("speed_max", "rad/s", "the greatest speed"),
     "speed_min": ("speed_min", "rad/s", "the least speed"),
     "alpha_at": ("alpha_at", "rad/s^2", "the angular acceleration"),
@@ -119,6 +120,9 @@ class CycleEnergy:
     rim_width: float | None = None
     rim_thickness: float | None = None
     E_stroke: float | None = None
+    #: the coefficient of fluctuation of energy, dE_max over the work of a cycle (where the
+    #: work is known and positive: not for areas alone, nor a press)
+    Ce: float | None = None
     words: tuple = field(default=())
 
     @property
@@ -153,6 +157,7 @@ class CycleEnergy:
         }
         for k in (
             "E_stroke",
+            "Ce",
             "speed",
             "Cs",
             "inertia",
@@ -207,6 +212,9 @@ def solve_cycle(scene) -> "CycleEnergy":
         d = scene.diagram
         words += list(d.words)
         base = _areas(d) if d.form == "areas" else _given(d) if d.form == "energy" else _curve(d)
+        work = base.get("work")
+        if work is not None and work > 0:
+            base["Ce"] = base["dE_max"] / work
     return _flywheel(scene, base, words)
 
 

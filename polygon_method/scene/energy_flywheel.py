@@ -333,6 +333,7 @@ CYCLE_ANSWERS = {
     "I_flywheel": "moment_of_inertia",
     "m_flywheel": "mass",
     "Cs": "percent",
+    "Ce": "percent",
     "speed_max": "angular_velocity",
     "speed_min": "angular_velocity",
     "alpha_at": "angular_acceleration",

@@ -13,7 +13,7 @@ from ..common.errors import SceneError
 from ..common.tolerances import ROUNDING
 from ..common.units import UNITS, Quantity, did_you_mean
 from .records import Friction, Gravity, Mass, split_name
-from .pendulum import PENDULUM_KEYS, swing_inertia
+from .pendulum import PENDULUM_KEYS, TWO_SWING_KEYS, swing_inertia, two_swings
 from .table_help import _unit_at
 
 #: the g of a book (m/s^2), when [gravity] does not give its own
@@ -25,16 +25,20 @@ _PER_LENGTH = re.compile(
 )
 
 _LINK_KEYS = (
-    "mass",
-    "centre",
-    "along",
-    "from",
-    "distances",
-    "turn",
-    "inertia",
-    "gyration",
-    "about",
-) + PENDULUM_KEYS
+    (
+        "mass",
+        "centre",
+        "along",
+        "from",
+        "distances",
+        "turn",
+        "inertia",
+        "gyration",
+        "about",
+    )
+    + PENDULUM_KEYS
+    + TWO_SWING_KEYS
+)
 
 
 class _Masses:
@@ -163,8 +167,9 @@ class _Masses:
             link, pts = self.find_link(name, "masses", name)
             if any(o.body == link.key for o in out):
                 raise self.error(f"link {link.key} has a mass already", "masses", name)
-            lam, mu, where, centre = self._centre(spec, link, pts, carried, name)
-            inertia, said, m = self._link_inertia(spec, per, m, link, (lam, mu), name)
+            lam, mu, where, centre, inertia, said, m = self._link_mass(
+                spec, per, m, (link, pts, carried), name
+            )
             out.append(
                 Mass(
                     link.key,
@@ -177,6 +182,24 @@ class _Masses:
                 )
             )
         return out
+
+    def _link_mass(self, spec, per, m, placed, name) -> tuple:
+        """(lam, mu, words of G, its named point, I_G, words of I, the mass) of a link's
+        entry: G placed and I given (or from a swing), or both from two swings."""
+        link, pts, carried = placed
+        if ("knife_edge" in spec and "swings" not in spec) or ("swings" in spec and per):
+            raise self.error(
+                "knife_edge goes with swings, and swings with the link's whole mass",
+                "masses",
+                name,
+            )
+        if "swings" in spec:  # its G and I_G from two swings
+            g = (self.gravity() or Gravity(STANDARD_G, None, "")).g
+            lam, where, inertia, said = two_swings(self, spec, link, m, name, g)
+            return lam, 0.0, where, None, inertia, said, m
+        lam, mu, where, centre = self._centre(spec, link, pts, carried, name)
+        inertia, said, m = self._link_inertia(spec, per, m, link, (lam, mu), name)
+        return lam, mu, where, centre, inertia, said, m
 
     def _link_inertia(self, spec, per, m, link, at, name) -> tuple:
         """(I_G, words, the mass) of a link: a uniform bar's from its mass per length, the

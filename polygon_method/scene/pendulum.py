@@ -20,7 +20,14 @@ import re
 from ..common.tolerances import ROUNDING
 from ..common.unit_tables import ABSURD
 
-__all__ = ["PENDULUM_KEYS", "gyration_squared", "swing_inertia"]
+__all__ = [
+    "PENDULUM_KEYS",
+    "TWO_SWING_KEYS",
+    "centre_from_two_swings",
+    "gyration_squared",
+    "swing_inertia",
+    "two_swings",
+]
 
 #: the [masses] keys of a link's swing as a pendulum
 PENDULUM_KEYS = ("period", "oscillations", "pivot_distance")
@@ -130,3 +137,93 @@ def swing_inertia(rd, spec, link, m, lam, mu, name, g) -> tuple:
         f"{m * k2:.6g} kg m^2 (k_G = {math.sqrt(k2):.6g} m; g = {g:g} m/s^2)"
     )
     return m * k2, f"I_G = {m * k2:.6g} kg m^2 from its swing (k_G = {math.sqrt(k2):.6g} m)"
+
+
+#: the keys of a link swung about each end in turn (its G and its inertia found)
+TWO_SWING_KEYS = ("swings", "knife_edge")
+_NOT_WITH_SWINGS = ("centre", "along", "from", "distances", "turn", "inertia", "gyration")
+
+
+def centre_from_two_swings(S: float, c1: float, c2: float) -> float | None:
+    """h1, the first pivot's distance from G, of a body swung about two pivots S apart (G
+    between them on their line) with ``c_i = g T_i^2 / (4 pi^2)``: both swings give the same
+    ``k^2 = c_i h_i - h_i^2``, h2 = S - h1, which is linear in h1: ``h1 = S (c2 - S) / (c1 +
+    c2 - 2 S)`` (None where the swings do not fix it).
+
+    >>> round(centre_from_two_swings(1.0975, 0.8970656, 0.6765270), 4)   # Khurmi's rod
+    0.7435
+    """
+    den = c1 + c2 - 2.0 * S
+    if abs(den) <= ROUNDING * (c1 + c2):
+        return None
+    return S * (c2 - S) / den
+
+
+def two_swings(rd, spec, link, m, name, g) -> tuple:
+    """(lam, words of G, I_G, words of I) of a link swung about each of its ends in turn
+    ("with a knife-edge through the small end it makes 100 oscillations in 190 s, through
+    the big end 100 in 165 s"): ``swings = { B = "100 in 190 s", A = "100 in 165 s" }``, the
+    knife-edges ``knife_edge = { B = 37.5, A = 60 }`` beyond each end's centre, away from G
+    (the bore's radius; 0 unless given). Its G on the line of its ends and its I_G found."""
+    for k in _NOT_WITH_SWINGS + PENDULUM_KEYS + ("about",):
+        if k in spec:
+            raise rd.error(
+                f"{k}: not with swings (the two swings give the centre of mass and the inertia)",
+                "masses",
+                name,
+            )
+    sw, edges = spec["swings"], spec.get("knife_edge", {})
+    ends = (link.p, link.q)
+    if not isinstance(sw, dict) or set(sw) != set(ends):
+        raise rd.error(
+            f'swings = {{ {ends[1]} = "100 in 190 s", {ends[0]} = "100 in 165 s" }}: the swing '
+            f"about each end of {link.key}, both",
+            "masses",
+            name,
+        )
+    if not isinstance(edges, dict) or not set(edges) <= set(ends):
+        raise rd.error(
+            f"knife_edge = {{ {ends[1]} = 37.5 }}: each pivot's distance beyond its end's "
+            f"centre (the bore's radius), ends of {link.key}",
+            "masses",
+            name,
+        )
+    T, said, e = {}, [], {}
+    for end in ends:
+        T[end], w = _period(rd, _one_swing(sw[end]), name)
+        e[end] = rd.length(edges[end], "masses", name) if end in edges else 0.0
+        said.append(
+            f"about {end}{f' (a knife-edge {e[end]:.6g} m beyond it)' if e[end] else ''}, {w}"
+        )
+    L, (p, q) = link.length, ends
+    S = L + e[p] + e[q]
+    c = {end: g * T[end] ** 2 / (4.0 * math.pi**2) for end in ends}
+    h1 = centre_from_two_swings(S, c[p], c[q])
+    x = None if h1 is None else h1 - e[p]  # |pG|
+    k2 = None if h1 is None else c[p] * h1 - h1 * h1
+    if x is None or not 0.0 <= x <= L or not k2 > 0:
+        raise rd.error(
+            f"the swings ({T[p]:.6g} s about {p}, {T[q]:.6g} s about {q}) put no centre of "
+            f"mass between the ends of {link.key} (check the times and the knife-edges)",
+            "masses",
+            name,
+        )
+    rd.read_notes.append(
+        f"[masses] {name}: swung " + "; ".join(said) + f": g T^2 / (4 pi^2) = {c[p]:.6g} and "
+        f"{c[q]:.6g} m; both give k_G^2 = c h - h^2, h_{p} + h_{q} = {S:.6g} m: h_{p} = S (c_{q} "
+        f"- S) / (c_{p} + c_{q} - 2 S) = {h1:.6g} m, so G is {x:.6g} m from {p} and k_G = "
+        f"{math.sqrt(k2):.6g} m (g = {g:g} m/s^2)"
+    )
+    return (
+        x / L,
+        f"on {link.key}, {x:.6g} m from {p} (from the two swings)",
+        m * k2,
+        f"I_G = {m * k2:.6g} kg m^2 from the two swings (k_G = {math.sqrt(k2):.6g} m)",
+    )
+
+
+def _one_swing(raw) -> dict:
+    """A swing's entry as the single-swing keys read it: a period ("1.9 s") or a count."""
+    if isinstance(raw, str) and " in " in raw:
+        return {"oscillations": raw}
+    return {"period": raw}

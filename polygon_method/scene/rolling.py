@@ -62,10 +62,15 @@ def _unit_at(ang):
 
 
 def _pressure_angle(rd, spec, key):
-    """The teeth's pressure angle (rad) the pair states, or None (the default, 20 deg); from
-    0 up to 45 deg."""
+    """The teeth's pressure angle (rad) the pair states (or the table once for all its
+    teeth: ``[rolling] pressure_angle = 14.5``), or None (the default, 20 deg); from 0 up to
+    45 deg."""
     if "pressure_angle" not in spec:
-        return None
+        table = rd.raw.get("rolling", {})
+        once = table.get("pressure_angle")  # stated once for all the table's teeth
+        if once is None or isinstance(once, dict) or "preload" in spec or "friction" in spec:
+            return None
+        spec, key = {"pressure_angle": once}, "pressure_angle"
     a = rd.qty(spec["pressure_angle"], "angle", "rolling", key, default_unit="deg").value
     if not 0.0 <= a <= math.pi / 4 + ROUNDING:
         raise rd.error(
@@ -195,7 +200,7 @@ def read_rolling(rd, ground, sliders, points) -> list:
     wheels = set()
     module = table_module(rd)  # the table's module = "4 mm", for every gear in it
     for key, spec in rd.table("rolling").items():
-        if key in TABLE_KEYS and not isinstance(spec, dict):
+        if key in TABLE_KEYS + ("pressure_angle",) and not isinstance(spec, dict):
             continue
         if not isinstance(spec, dict):
             raise rd.error(_EXAMPLE, "rolling", key)

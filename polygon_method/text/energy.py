@@ -57,6 +57,10 @@ def _summary(c) -> list:
                 f"power at the mean speed T_mean w = {_g(c.power)} W ({_g(c.power / 1e3)} kW)"
             )
     out.append(f"maximum fluctuation of energy dE_max = {_g(c.dE_max)} J")
+    if c.Ce is not None:
+        out.append(
+            f"coefficient of fluctuation of energy Ce = dE_max / (work per cycle) = {_g(c.Ce)}"
+        )
     return out
 
 
