@@ -105,6 +105,12 @@ def test_check_grades_the_book_answer_in_either_sense_word(tmp_path, capsys):
         (SUN_FIXED, "220 N m cw", "teeth_ratio_inverted"),  # 100 x 88/40
         (ANNULUS_FIXED, "45.45 N m cw", "teeth_ratio_inverted"),  # 100 x 40/88
         (ANNULUS_FIXED, "220 N m ccw", "sense"),
+        # another shaft's torque for it: the output machine's, or the arm's (by hand,
+        # 100 (1 + z_fixed / z_out): 145.5 and 320 N m ccw)
+        (SUN_FIXED, "100 N m cw", "shaft_torque_for_holding"),
+        (SUN_FIXED, "145.5 N m ccw", "shaft_torque_for_holding"),
+        (ANNULUS_FIXED, "100 N m cw", "shaft_torque_for_holding"),
+        (ANNULUS_FIXED, "320 N m ccw", "shaft_torque_for_holding"),
     ],
 )
 def test_the_slips_are_named(case, given, code, tmp_path, capsys):

@@ -103,8 +103,30 @@ def _gear_slips(d, kind, names, signed) -> list:
                     "load acts along the line of action, |T| / cos phi)",
                 )
             )
-    if kind == "Thold":  # the ratio of teeth turned over
+    if kind == "Thold":  # the ratio of teeth turned over; another shaft's torque
         out += _ratio_inverted(d, names[0], signed)
+        out += _shaft_torques(d, signed)
+    return out
+
+
+def _shaft_torques(d, signed) -> list:
+    """A fixed gear's holding torque given as another shaft's: the driver's, or a torque
+    load's on a shaft of the train (the output machine's): the three sum to nought, so
+    the fixed gear holds what the other two leave."""
+    out = []
+    driver = d.sol.forces.input_torque if d.sol.forces is not None else None
+    shafts = [("the driving torque", driver)] if driver else []
+    shafts += [(f"the torque on {ld.target}", ld.torque) for ld in d.sc.loads if ld.torque]
+    for words, t in shafts:
+        out.append(
+            _Candidate(
+                d.cmp(t, signed),
+                "shaft_torque_for_holding",
+                f"{words} given for the holding torque: the torques on the train sum to "
+                "nought, so the fixed gear holds what the driving and the driven shafts "
+                "leave, not either one",
+            )
+        )
     return out
 
 
