@@ -35,6 +35,25 @@ TURNED = [
 ]
 
 
+def _restated(path, **lines):
+    """The scene with its ``[input]`` lines (``angle``, ``speed``) stated otherwise."""
+    text = Path(path).read_text()
+    for key, words in lines.items():
+        text, n = re.subn(rf"(?m)^{key} *=.*$", f"{key} = {words!r}".replace("'", '"'), text)
+        assert n == 1, key
+    return solve(parse_scene(text))
+
+
+#: scenes stated otherwise: a short crank (an eccentric, 0.5 cm drawn) whose pivot's bracket
+#: can only sit in the crank angle's sector (-130 deg: cw from the downward vertical)
+RESTATED = [
+    (
+        ROOT / "tests" / "textbook" / "hunt5_hackworth_valve_gear.toml",
+        {"angle": "40 deg from the downward vertical, cw", "speed": "240 rpm cw"},
+    ),
+]
+
+
 def _solutions():
     """Every scene driven by a crank (a driving block has no crank angle to mark)."""
     for p in SCENES:
@@ -43,6 +62,8 @@ def _solutions():
         yield Path(p).stem, lambda p=p: solve(load_scene(p))
     for p, a in TURNED:
         yield f"{Path(p).stem}@{a}", lambda p=p, a=a: _turned(p, a)
+    for p, lines in RESTATED:
+        yield f"{Path(p).stem}@{lines['angle']}", lambda p=p, lines=lines: _restated(p, **lines)
 
 
 CASES = list(_solutions())
@@ -68,6 +89,9 @@ def test_the_crank_angle_keeps_off_other_pins_and_brackets(case):
         if g == f"ground-{pivot}":  # its own bracket may meet the arc only at the pin
             tri = tri.difference(Point(svg.path(g)[0]).buffer(0.45 * CM))
         assert not arc.intersects(tri.union(base.buffer(0.5))), f"the arc crosses {g}"
+        label = svg.text_box("label-crank-angle")  # and its value is written off the bracket
+        whole = Polygon(svg.path(g)).buffer(0).union(base.buffer(0.5))
+        assert label is None or not label.intersects(whole), f"the angle's value is on {g}"
     joints = [
         g
         for g in svg.groups

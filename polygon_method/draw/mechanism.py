@@ -51,7 +51,8 @@ def mechanism(sk: _Sketch, sol, scale: Scale, extra=None) -> dict:
     _blocks(sk, sc, P, solid)
     pin_notes = _pins(sk, sc, P, s)
     arc = _ground_pivots(sk, sc, P, carried_on, solid)
-    crank_angle(sk, arc)
+    inp = sc.input
+    crank_angle(sk, arc, math.dist(P[inp.pivot], P[inp.tip]) if inp.pivot else math.inf)
     _points(sk, sc, P, contacts, pin_notes)
     crank_angle_label(sk, arc)
     if extra is not None:

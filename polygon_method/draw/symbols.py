@@ -289,7 +289,8 @@ def crank_arc(sc, P, feet=()):
     first, 0.45 cm at least, short of the crank pin) where that arc would pass within
     ``ARC_CLEAR`` of another point's pin or within ``ARC_GAP`` of a fixed pivot's bracket
     (``feet``: the shapes drawn), so that the arc is never read as part of another joint or
-    its bracket; as it was where no radius clears them all."""
+    its bracket; where none short of the crank pin does, the nearest beyond it that does
+    (the crank produced to it); as it was where no radius clears them all."""
     inp = sc.input
     if inp.pivot is None:  # a block drives: no crank angle to mark (an empty arc)
         return (P[inp.tip], 0.0, 0.0)
@@ -317,6 +318,12 @@ def crank_arc(sc, P, feet=()):
             for cand in (r - 0.05 * k, r + 0.05 * k):
                 if lo - ON_PAPER <= cand <= hi + ON_PAPER and clear(cand):
                     return O, th, cand
+        # none short of the crank pin (a short crank, its pivot's bracket in the angle's
+        # sector): beyond the pin, round the bracket, the crank produced to the arc
+        beyond = max(hi, crank + JOINT_R + ARC_CLEAR)
+        for k in range(40):
+            if clear(beyond + 0.05 * k):
+                return O, th, beyond + 0.05 * k
     return O, th, r
 
 
@@ -368,12 +375,24 @@ def crank_angle_shapes(arc):
     ]
 
 
-def crank_angle(sk, arc):
+def crank_angle(sk, arc, crank=math.inf):
     """The crank angle: a reference line along +x from the crank's pivot and an arc from it
-    to the crank."""
+    to the crank (of length ``crank``, cm), produced to the arc where the arc lies beyond it."""
     O, th, r = arc
     if abs(th) < ON_PAPER:
         return
+    if r > crank:
+        sk.line(
+            [
+                (O[0] + crank * math.cos(th), O[1] + crank * math.sin(th)),
+                (O[0] + (r + 0.15) * math.cos(th), O[1] + (r + 0.15) * math.sin(th)),
+            ],
+            gid="crank-produced",
+            color="#555555",
+            lw=0.5,
+            dashes=(6, 2, 1, 2),
+            z=1,
+        )
     sk.line(
         [O, (O[0] + r + 0.5, O[1])],
         gid="crank-reference",

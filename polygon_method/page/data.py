@@ -346,9 +346,10 @@ def _sliders(sc) -> list:
     sliders = []
     for s in sc.blocks:  # (a driving wheel's centre path: no block, no guide)
         if hasattr(s, "guide"):
-            sliders.append(
-                {"point": s.point, "key": s.key, "guide": [s.first, s.second], "link": s.guide}
-            )
+            guided = {"point": s.point, "key": s.key, "guide": [s.first, s.second], "link": s.guide}
+            if s.offset:  # an offset slot: cut in a bracket of the link (the link a plate)
+                guided["offset"] = float(s.offset)
+            sliders.append(guided)
         elif hasattr(s, "yoke"):  # a yoke's slot: a line through the pin, moving with it
             sliders.append({"point": s.point, "key": s.key, "u": [float(c) for c in s.direction]})
         else:

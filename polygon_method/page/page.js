@@ -237,10 +237,13 @@ function setup(phase) {
   if (phase === "configuration") {
     for (const [p, q, c] of D.plates) add(el(svg, "polygon", {class: "plate", fill: D.style.body[0], stroke: D.style.body[1]}, "plate:" + c), "plate", [p, q, c]);
     for (const s of D.sliders) if (s.u) add(el(svg, "line", styled("line"), "guide:" + s.key), "guide", s);
+    for (const s of D.sliders) if (s.offset) {  // an offset slot: the link a plate carrying it
+      add(el(svg, "polygon", {class: "plate bracket", fill: D.style.body[0], stroke: D.style.body[1], id: "c-bracket-" + s.key}, "link:" + s.link), "bracket", s);
+    }
     for (const w of D.wheels) add(el(svg, "circle", styled("pitch"), w[2] || "pitch circle about " + w[0]), "pitch", w);
     for (const l of D.rollLines) add(el(svg, "line", styled("line"), "the line a wheel rolls on"), "rollline", l);
     for (const [p, q, key] of D.links) add(el(svg, "line", {class: "link", stroke: D.style.body[1], id: "c-link-" + key}, "link:" + key), "link", [p, q, key]);
-    for (const s of D.sliders) add(el(svg, "polygon", {class: "block", fill: D.style.body[0], stroke: D.style.body[1]}, "slider:" + s.key), "block", s);
+    for (const s of D.sliders) add(el(svg, "polygon", {class: "block", fill: D.style.body[0], stroke: D.style.body[1], id: "c-block-" + s.key}, "slider:" + s.key), "block", s);
     for (const p in D.ground) add(el(svg, "polygon", {class: "ground"}, "ground:" + p), "ground", p);
     const heads = {}, headOf = (kind) => heads[kind] || (heads[kind] = head(kind));
     if (D.inertia) for (const b of D.inertia.bodies) {  // each inertia force -m a_G, along
@@ -302,6 +305,28 @@ function blockCorners(c, u, size) {  // a square block at c, its sides along u
     [c[0] + h * (i * u[0] + j * n[0]), c[1] + h * (i * u[1] + j * n[1])]);
 }
 
+// an offset slot's bracket: the link's two ends and the slot along the link through the
+// block at c, a little past the block (of side size) each way; their convex hull
+function bracket(a, b, c, size) {
+  const u = unit(a, b), h = 0.5 * size + 0.15 * FS;
+  const pts = [a, b, [c[0] - h * u[0], c[1] - h * u[1]], [c[0] + h * u[0], c[1] + h * u[1]]];
+  return hull(pts);
+}
+function hull(pts) {  // the convex hull (monotone chain), its corners in turn
+  const s = pts.slice().sort((p, q) => p[0] - q[0] || p[1] - q[1]);
+  const cross = (o, a, b) => (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+  const half = (list) => {
+    const h = [];
+    for (const p of list) {
+      while (h.length >= 2 && cross(h[h.length - 2], h[h.length - 1], p) <= 0) h.pop();
+      h.push(p);
+    }
+    h.pop();
+    return h;
+  };
+  return half(s).concat(half(s.slice().reverse()));
+}
+
 function update(phase, k) {
   const v = frameView(phase, k), fs = FS, P = (p) => mm(phase, p, k), C = (a) => toMm(phase, a), labels = [];
   let pole = null;
@@ -317,6 +342,7 @@ function update(phase, k) {
   };
   for (const [e, kind, x] of drawn[phase]) {
     if (kind === "plate") poly(e, x.map(P));
+    else if (kind === "bracket") poly(e, bracket(P(x.guide[0]), P(x.guide[1]), P(x.point), fs * 0.9));
     else if (kind === "link" || kind === "rel") line(e, P(x[0]), P(x[1]));
     else if (kind === "abs") line(e, [0, 0], P(x));
     else if (kind === "joint" || kind === "dot") dot(e, P(x));

@@ -341,12 +341,28 @@ class _Panel:
             [at[0] - r, at[1] - r, at[0] + r, at[1] + r], fill=fill, outline=outline, width=SS
         )
 
+    def _bracket(self, s) -> list:
+        """An offset slot's bracket: the convex hull of the link's ends and the slot along
+        the link through the block, a little past the block (as the page's script draws)."""
+        from shapely.geometry import MultiPoint
+
+        a, b, c = (self.pt(p) for p in (*s["guide"], s["point"]))
+        n = math.dist(a, b) or 1.0
+        h = 8 * SS
+        ends = [
+            (c[0] + j * h * (b[0] - a[0]) / n, c[1] + j * h * (b[1] - a[1]) / n) for j in (-1, 1)
+        ]
+        return list(MultiPoint([a, b, *ends]).convex_hull.exterior.coords)
+
     def draw(self):
         d, k, ph = self.p.d, self.k, self.phase
         edge = BODY_EDGE
         if ph == "configuration":
             for p, q, c in d["plates"]:
                 self.dr.polygon([self.pt(p), self.pt(q), self.pt(c)], fill=BODY_FACE, outline=edge)
+            for s in d["sliders"]:  # an offset slot: the link a plate carrying it
+                if s.get("offset"):
+                    self.dr.polygon(self._bracket(s), fill=BODY_FACE, outline=edge)
             for s in d["sliders"]:
                 if "u" in s:
                     c, u = self.pt(s["point"]), (s["u"][0], -s["u"][1])
