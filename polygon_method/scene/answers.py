@@ -56,13 +56,13 @@ class _Answers(_AnswerNames, _Questions, _CycleAnswers):
     def _engine_value(self, value, kind, key) -> float:
         """An engine answer's value (SI) of ``kind``, in its kind's first unit when bare: an
         effort, a turning moment, the cycle's energy or the flywheel's (one cylinder's, or
-        one piston's of several)."""
+        one piston's of several); a bare length (``l_GL``) in the scene's unit."""
         return self.qty(
             value,
             kind,
             "answers",
             key,
-            default_unit=next(iter(UNITS[kind])),
+            default_unit=self.unit if kind == "length" else next(iter(UNITS[kind])),
             allow_sense=False,
             refuse_absurd=False,
         ).value
