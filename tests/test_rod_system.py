@@ -223,3 +223,8 @@ def test_several_rods_on_one_crank_each_by_its_piston():
     with pytest.raises(SceneError) as exc:
         _verdicts(sc, 'm_L = "1 kg"\n')
     assert "name the piston after the key (_B or _C)" in exc.value.message
+
+
+def test_a_bare_l_gl_is_in_the_scenes_unit():
+    got = _verdicts(_scene(), f"l_GL = {K**2 / L1 * 1000:.6g}\n")["l_GL"]
+    assert got.ok and got.raw.endswith(" mm")

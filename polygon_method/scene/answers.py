@@ -337,6 +337,9 @@ class _Answers(_AnswerNames, _Questions, _CycleAnswers):
     def _engine_answer(self, key, value, raw_text, line, slider_names):
         """An engine chapter's answer (efforts, the cycle, the flywheel; ``piston_effort_B``
         one cylinder's of several), or None for a key of another kind."""
+        kind = ENGINE_ANSWERS.get(key.rpartition("_")[0], ENGINE_ANSWERS.get(key))
+        if kind == "length" and _bare(value):  # l_GL: a bare length is in the scene's unit
+            raw_text = f"{raw_text} {self.unit}"
         if key in ENGINE_ANSWERS:  # the engine chapter's: efforts, the cycle, the flywheel
             value = self._engine_value(value, ENGINE_ANSWERS[key], key)
             return Answer(key, key, (), value, None, raw_text, line)
