@@ -228,3 +228,22 @@ def test_several_rods_on_one_crank_each_by_its_piston():
 def test_a_bare_l_gl_is_in_the_scenes_unit():
     got = _verdicts(_scene(), f"l_GL = {K**2 / L1 * 1000:.6g}\n")["l_GL"]
     assert got.ok and got.raw.endswith(" mm")
+
+
+def test_k_about_the_big_end_named_for_the_couple():
+    _, a_rod, _ = _rod_motion(0.0, 35.0, 1500.0)
+    l3 = L - L1
+    slip = M * abs(a_rod) * (L1 * l3 - (K**2 + l3**2))  # k^2 = k_G^2 + l3^2
+    got = _verdicts(_scene(), f'correction_couple = "{abs(slip):.6g} N m"\n')
+    assert got["correction_couple"].mistake == "k_about_end"
+    assert "big end A" in got["correction_couple"].diagnosis
+
+
+def test_steps_say_why_a_rod_cannot_be_answered():
+    sc = parse_scene(
+        'units = "mm"\n[ground]\nO = [0, 0]\n[links]\nOA = 80\nAB = 300\n[sliders]\n'
+        'B = { path = "horizontal" }\n[masses]\nB = { mass = "2 kg" }\n[input]\n'
+        'crank = "OA"\nangle = "35 deg"\nspeed = "100 rpm ccw"\n[answers]\nm_L = "?"\n'
+    )
+    text = steps_text(solve(sc))
+    assert "not answered: the rod AB has no mass" in " ".join(text.split())
