@@ -86,6 +86,11 @@ MISTAKE_WORDS = {
     "other_end": "a link's direction from its other end",
     "from_minus_x": "a direction measured from -x",
     "supplement": "the supplement of the angle at a joint",
+    # the connecting rod's equivalent dynamical system (check/rod_keys.py)
+    "k_about_end": "k_G taken about an end of the rod",
+    "masses_swapped": "the two masses of the dynamical system swapped",
+    "from_small_end": "L's distance taken from the small end, not G",
+    "couple_not_reduced": "the correction couple given for its torque on the shaft",
 }
 
 

@@ -20,6 +20,8 @@ from ..linkage.engine_values import ENGINE_KEYS, INSTANT as _INSTANT, engine_val
 from ..scene.answers import ENGINE_PER_PISTON
 from ..scene.force_records import Friction
 from ..linkage.flywheel import turning_moment
+from ..linkage.rod_system import ROD_KEYS
+from .rod_keys import rod_slips
 from .verdicts import ROUNDING, Verdict, cs_slips
 
 __all__ = ["ENGINE_KEYS", "engine_value", "engine_verdict"]
@@ -35,6 +37,8 @@ def _slips(sol, full, correct):
     sc = sol.scene
     out = []
     key, piston = split_key(full)
+    if key in ROD_KEYS:  # the rod's equivalent dynamical system: its own slips
+        return rod_slips(sol, key, piston)
     fr = sc.friction
     if fr is not None and fr.active and key in _INSTANT:
         try:  # the books' F_P = F_L - F_I - R_F: the friction's part left out

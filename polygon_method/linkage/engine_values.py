@@ -12,6 +12,7 @@ from ..forces.engine import cylinder_efforts, efforts
 from ..motion.solution import solve
 from ..scene.answers import ENGINE_PER_PISTON as PER_PISTON
 from .flywheel import turning_moment
+from .rod_system import ROD_KEYS, rod_value
 
 __all__ = ["ENGINE_KEYS", "INSTANT", "PER_PISTON", "engine_dict", "engine_value", "split_key"]
 
@@ -28,6 +29,7 @@ ENGINE_KEYS = {
     "side_thrust": ("force", "N", "the side thrust on the cylinder walls"),
     "shaking_force": ("force", "N", "the shaking force on the frame"),
     "shaking_moment": ("torque", "N m", "the shaking moment about the frame's origin"),
+    **ROD_KEYS,  # the connecting rod's equivalent dynamical system (rod_system.py)
 }
 #: the keys read from the force analysis at the instant (the rest from the cycle)
 INSTANT = (
@@ -69,6 +71,8 @@ def engine_value(sol, key, scene=None):
     scene cannot give it (a piston's own key, ``piston_effort_B``: that cylinder's)."""
     sc = scene or sol.scene
     key, piston = split_key(key)
+    if key in ROD_KEYS:  # the rod's equivalent dynamical system (sizes, as the rest)
+        return abs(rod_value(sol if scene is None else solve(sc), key, piston))
     if key in INSTANT:
         s = sol if scene is None else solve(sc)
         if not sc.has_forces:

@@ -27,12 +27,29 @@ ENGINE_ANSWERS = {
     "side_thrust": "force",
     "shaking_force": "force",
     "shaking_moment": "torque",
+    # the connecting rod's equivalent dynamical system (linkage/rod_system.py)
+    "m_small_end": "mass",
+    "m_L": "mass",
+    "l_GL": "length",
+    "correction_couple": "torque",
+    "correction_torque": "torque",
 }
 
 
 #: the keys each cylinder of several on one crank has, its piston after them
 #: (``piston_effort_B``, as the sweep's columns name them)
-ENGINE_PER_PISTON = ("piston_effort", "crank_effort", "turning_moment", "rod_thrust", "side_thrust")
+ENGINE_PER_PISTON = (
+    "piston_effort",
+    "crank_effort",
+    "turning_moment",
+    "rod_thrust",
+    "side_thrust",
+    "m_small_end",
+    "m_L",
+    "l_GL",
+    "correction_couple",
+    "correction_torque",
+)
 
 
 def under_block_names(point_names, ground, sliders) -> dict:

@@ -107,6 +107,8 @@ class _AnswerNames:
             "turning_moment, rod_thrust, side_thrust (each with _B: piston B's of several "
             "cylinders), shaking_force, shaking_moment, "
             "T_mean, dE_max, I_flywheel, m_flywheel (the force and engine chapters), "
+            "m_small_end, m_L, l_GL, correction_couple, correction_torque (the rod's "
+            "equivalent dynamical system), "
             "time_ratio, stroke_X (a quick return's times, a slider's stroke), theta_XY, "
             "angle_XYZ (a link's direction from +x, the angle at a joint)",
             "answers",

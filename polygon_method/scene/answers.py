@@ -56,13 +56,13 @@ class _Answers(_AnswerNames, _Questions, _CycleAnswers):
     def _engine_value(self, value, kind, key) -> float:
         """An engine answer's value (SI) of ``kind``, in its kind's first unit when bare: an
         effort, a turning moment, the cycle's energy or the flywheel's (one cylinder's, or
-        one piston's of several)."""
+        one piston's of several); a bare length (``l_GL``) in the scene's unit."""
         return self.qty(
             value,
             kind,
             "answers",
             key,
-            default_unit=next(iter(UNITS[kind])),
+            default_unit=self.unit if kind == "length" else next(iter(UNITS[kind])),
             allow_sense=False,
             refuse_absurd=False,
         ).value
@@ -337,6 +337,9 @@ class _Answers(_AnswerNames, _Questions, _CycleAnswers):
     def _engine_answer(self, key, value, raw_text, line, slider_names):
         """An engine chapter's answer (efforts, the cycle, the flywheel; ``piston_effort_B``
         one cylinder's of several), or None for a key of another kind."""
+        kind = ENGINE_ANSWERS.get(key.rpartition("_")[0], ENGINE_ANSWERS.get(key))
+        if kind == "length" and _bare(value):  # l_GL: a bare length is in the scene's unit
+            raw_text = f"{raw_text} {self.unit}"
         if key in ENGINE_ANSWERS:  # the engine chapter's: efforts, the cycle, the flywheel
             value = self._engine_value(value, ENGINE_ANSWERS[key], key)
             return Answer(key, key, (), value, None, raw_text, line)

@@ -43,6 +43,7 @@ from ..steps.block import at_rest_rate
 from ..common.numbers import fmt, sense_word
 from .forces import force_blocks
 from .cycle_steps import cycle_items
+from .rod_steps import rod_items
 from .link_points import pair_items
 from .polygon_steps import (
     acceleration_section,
@@ -459,6 +460,10 @@ def steps_blocks(sol: Solution) -> _Doc:
     if worked:
         doc.h("Asked of the cycle and the configuration")
         doc.items(worked)
+    rod = rod_items(sol)  # m_small_end, m_L, l_GL, the correction couple: where asked
+    if rod:
+        doc.h("Asked of the connecting rod: its equivalent dynamical system")
+        doc.items(rod)
     fscale = force_scale(sol.forces) if sc.has_forces and not sol.forces_refused else None
     doc.blocks += force_blocks(sol, fscale)
     doc.blocks += klein_blocks(sol)  # a slider crank at uniform crank speed
