@@ -21,6 +21,7 @@ from polygon_method import load_scene, solve
 from polygon_method.draw import render_pages
 from polygon_method.draw.forces import NEGLIGIBLE
 from polygon_method.forces import side_label
+from polygon_method.forces.records import block
 from polygon_method.scene import FixedPath
 from polygon_method.polygons.scales import (
     choose_scale,
@@ -91,8 +92,10 @@ def _magnitude(sol, side):
             dx, dy = qx - px, qy - py
             a = (px + m.lam * dx - m.mu * dy, py + m.lam * dy + m.mu * dx)
         return m.mass * math.hypot(*a)
-    if side.what == "guide":
-        return abs(next(g.normal for g in f.guides if g.point == side.point))
+    if side.what == "guide":  # (a peg's two slots: two guides at its point, by their links)
+        at = [g for g in f.guides if g.point == side.point]
+        mine = [g for g in at if {g.by, block(g.point)} == {side.on, side.by}]
+        return abs((mine or at)[0].normal)
     if side.what == "driver" and f.driver == "block":  # the driving force along its guide
         return abs(f.input_torque)
     if side.what == "contact":  # a rolling contact's force (the teeth's load), either body
