@@ -205,6 +205,7 @@ def test_views_solve_json_steps_summary_check(tmp_path):
     r = _run("steps", str(SCENE))
     assert r.returncode == 0, r.stderr
     assert "running sum" in r.stdout and "I = dE_max" in r.stdout
+    assert "The crank's torque over a turn: the flywheel" in r.stdout
     r = _run("sweep", str(SCENE), "--summary")
     assert r.returncode == 0, r.stderr
     assert "maximum fluctuation of energy" in r.stdout
@@ -233,3 +234,84 @@ def test_draw_cycle_refused_for_a_machine_in_one_line(tmp_path):
     assert r.returncode == 2 and r.stderr.count("\n") == 1
     assert "a machine's flywheel is not drawn yet" in r.stderr
     assert not (tmp_path / "c.pdf").exists()
+
+
+PRESS = """
+title = "a slider crank press run by a motor"
+units = "mm"
+[ground]
+O = [0, 0]
+[links]
+OA = 100
+AB = 400
+[sliders]
+B = { path = "horizontal", through = "O" }
+[assembly]
+B = "right"
+[input]
+crank = "OA"
+angle = 30
+speed = "300 rpm ccw"
+acceleration = 0
+[masses]
+B = { mass = "10 kg" }
+[loads]
+B = { force = "1000 N", direction = 180 }
+[flywheel]
+coefficient = 0.03
+gyration = 250
+"""
+
+
+def test_slider_crank_machine_closed_form():
+    """The block's kinetic energy at the steady speed and the potential of the steady 1000 N
+    on it (x = r cos t + sqrt(l^2 - r^2 sin^2 t)): H = m (w x')^2 / 2 + 1000 x, the crank's
+    torque dH/dt, its mean nought, dE_max = max H - min H (mpmath's roots of H' at 40
+    digits from a 1 deg grid)."""
+    tm = turning_moment(parse_scene(PRESS))
+    w = 10 * math.pi
+    with mpmath.workdps(40):
+        r, l, m = mpmath.mpf("0.1"), mpmath.mpf("0.4"), 10
+
+        def x(t):
+            return r * mpmath.cos(t) + mpmath.sqrt(l**2 - (r * mpmath.sin(t)) ** 2)
+
+        def H(t):
+            return m * (w * mpmath.diff(x, t)) ** 2 / 2 + 1000 * x(t)
+
+        def dH(t):
+            return mpmath.diff(H, t)
+
+        grid = [2 * mpmath.pi * k / 360 for k in range(361)]
+        f = [dH(t) for t in grid]
+        roots = [
+            mpmath.findroot(dH, (grid[k], grid[k + 1]), solver="anderson")
+            for k in range(360)
+            if f[k] != 0 and (f[k] > 0) != (f[k + 1] > 0)
+        ] + [t for t, v in zip(grid[:-1], f) if v == 0]
+        hs = [H(t) for t in roots] + [H(mpmath.mpf(0)), H(mpmath.pi)]  # (dead centres)
+        dE = float(max(hs) - min(hs))
+    assert abs(tm.mean) <= 1e-12 * tm.T_max
+    _close(tm.dE_max, dE, dE)
+    _close(tm.flywheel[2], dE / (w * w * 0.03), tm.flywheel[2])
+    _close(tm.flywheel[3], dE / (w * w * 0.03) / 0.25**2, tm.flywheel[3])
+
+
+@pytest.mark.parametrize(
+    "old, new, words",
+    [
+        ("acceleration = 0", 'acceleration = "2 rad/s^2 ccw"', "steady speed"),
+        (
+            '[masses]\nB = { mass = "10 kg" }\n[loads]\nB = { force = "1000 N", direction = 180 }\n',
+            "",
+            "the flywheel is an engine's or a machine's",
+        ),
+    ],
+)
+def test_refused_in_one_line_by_the_command(tmp_path, old, new, words):
+    assert old in PRESS
+    p = tmp_path / "press.toml"
+    p.write_text(PRESS.replace(old, new))
+    r = _run("solve", str(p))
+    assert r.returncode == 2 and r.stderr.count("\n") == 1, r.stderr
+    assert words in r.stderr and "[flywheel]" in r.stderr

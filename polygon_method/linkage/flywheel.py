@@ -523,7 +523,8 @@ def cycle_blocks(sol) -> list:
     except PolygonMethodError as exc:
         return [("h", "The turning-moment diagram"), ("p", f"not found: {exc.message}")]
     lines = tm.lines(sc)
-    out = [("h", "The turning-moment diagram"), ("p", lines[0])]
+    head = "The crank's torque over a turn: the flywheel" if tm.machine else None
+    out = [("h", head or "The turning-moment diagram"), ("p", lines[0])]
     rows, run = [], 0.0
     big = max((abs(lb.energy) for lb in tm.lobes), default=0.0)
     for k, lb in enumerate(tm.lobes):
