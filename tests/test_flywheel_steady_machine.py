@@ -315,3 +315,16 @@ def test_refused_in_one_line_by_the_command(tmp_path, old, new, words):
     r = _run("solve", str(p))
     assert r.returncode == 2 and r.stderr.count("\n") == 1, r.stderr
     assert words in r.stderr and "[flywheel]" in r.stderr
+
+
+def test_refused_where_the_motion_repeats_only_after_several_turns(tmp_path):
+    """An epicyclic train whose ring turns 4/3 times a turn of the arm, a rod from the ring
+    to a block: back after 3 turns, so no turn's torque; refused in one line."""
+    text = (ROOT / "tests" / "textbook" / "rolling_ring_output.toml").read_text()
+    text = text.replace('acceleration = "15 rad/s^2 cw"', "acceleration = 0")
+    text = text.split("[answers]")[0]
+    p = tmp_path / "ring.toml"
+    p.write_text(text + '\n[masses]\nS = { mass = "2 kg" }\n[flywheel]\ncoefficient = 0.02\n')
+    r = _run("solve", str(p))
+    assert r.returncode == 2 and r.stderr.count("\n") == 1, r.stderr
+    assert "repeats every 3 turns" in r.stderr

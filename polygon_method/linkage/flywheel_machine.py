@@ -22,6 +22,7 @@ import numpy as np
 from ..common.errors import PolygonMethodError
 from ..motion.sweeps import sweep
 from ..solver.compiler import compile_plan
+from ..solver.tracking import Sweeper
 
 __all__ = ["MachineCycle", "machine_cycle", "machine_moments_at", "machine_asks"]
 
@@ -68,6 +69,15 @@ def machine_cycle(scene) -> MachineCycle:
             scene,
             "the crank at a steady speed: its acceleration 0 in [input] (the flywheel "
             "holds it nearly steady; the fluctuation is what it leaves)",
+        )
+    dom = Sweeper(scene).domain
+    if not dom.full_turn:
+        _refuse(scene, "a crank that turns whole turns (this one stops at a limit position)")
+    if dom.turns != 1 or dom.turn_only or dom.notes:  # (the torque is no turn's)
+        _refuse(
+            scene,
+            "a motion that repeats every turn of the crank: "
+            + (dom.notes[0] if dom.notes else f"this one repeats every {dom.turns} turns"),
         )
     sg = 1.0 if inp.omega > 0 else -1.0
     words = (
