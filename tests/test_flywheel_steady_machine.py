@@ -129,6 +129,11 @@ def test_machine_flywheel_against_virtual_power_at_40_digits():
         _close(lb.energy, E[(k + 1) % len(E)] - E[k], dE)
     assert abs(tm.at_max - cross[E.index(max(E))]) <= 1e-9 * 360  # the speed greatest
     assert abs(tm.at_min - cross[E.index(min(E))]) <= 1e-9 * 360
+    with mpmath.workdps(40):  # the greatest and least torque on the grid, point by point
+        for at, T in ((tm.at_T_max, tm.T_max), (tm.at_T_min, tm.T_min)):
+            th = mpmath.radians(mpmath.mpf(at))
+            ref = float(mpmath.diff(lambda t: _energy(t, mpmath.mpf(omega)), th))
+            _close(T, ref, abs(ref))
     cs, w, inertia, mass = tm.flywheel
     assert cs == 0.04 and w == pytest.approx(omega, rel=1e-15)
     _close(inertia, dE / (omega**2 * 0.04), inertia)
