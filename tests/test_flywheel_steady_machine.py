@@ -333,3 +333,15 @@ def test_refused_where_the_motion_repeats_only_after_several_turns(tmp_path):
     r = _run("solve", str(p))
     assert r.returncode == 2 and r.stderr.count("\n") == 1, r.stderr
     assert "repeats every 3 turns" in r.stderr
+
+
+def test_turning_clockwise_the_same_swing():
+    """The machine's energy H depends on the place and w^2 alone (every load here is
+    steady): run clockwise, the crank's torque in its sense is -dH/dtheta, the turn read
+    the other way, and dE_max is the same range of H; the crossings mirror (360 - phi)."""
+    a = turning_moment(load_scene(SCENE))
+    b = turning_moment(parse_scene(SCENE.read_text().replace("240 rpm ccw", "240 rpm cw")))
+    _close(b.dE_max, a.dE_max, a.dE_max)
+    mirrored = sorted((360.0 - c) % 360.0 for c in a.crossings)
+    for x, y in zip(b.crossings, mirrored):
+        assert abs(x - y) <= 1e-9 * 360
