@@ -347,15 +347,20 @@ def engine_cycle(sol):
         return None
     from ..common.errors import PolygonMethodError
     from ..linkage.flywheel import engine_piston, turning_moment
+    from ..linkage.flywheel_machine import machine_asks
 
     if sc.indicators and sol.forces_refused:
         sol.forces  # the indicator's own refusal, in its words (a lag, a piston)
+    if sc.has_forces and sol.forces_refused and not sc.indicators:
+        sol.forces  # (the force analysis's own refusal, in its words)
+    if engine_piston(sc) is None and machine_asks(sc):
+        return turning_moment(sc)  # a machine driven at a steady speed: its flywheel
     if sol.forces_refused or engine_piston(sc) is None:
         if sc.flywheel is not None:
             raise PolygonMethodError(
-                "the flywheel is an engine's: a slider crank "
+                "the flywheel is an engine's or a machine's: a slider crank "
                 "with a gas force on its piston ([loads] pressure, or "
-                "[indicator])",
+                "[indicator]), or a mechanism with [masses] or [loads] driven by a crank",
                 file=sc.file,
                 key="[flywheel]",
             )
@@ -394,7 +399,13 @@ def draw_engine_cycle(args, out, fmt) -> int:
     if engine_piston(scene) is None:
         raise PolygonMethodError(
             "--diagram cycle draws an engine's turning-moment diagram: a slider crank with "
-            "a gas force on its piston ([loads] pressure, or [indicator])",
+            "a gas force on its piston ([loads] pressure, or [indicator])"
+            + (
+                " (a machine's flywheel is not drawn yet: solve, steps and sweep --summary "
+                "give its torque over the turn and the areas)"
+                if scene.flywheel is not None
+                else ""
+            ),
             file=scene.file,
             key="--diagram",
         )

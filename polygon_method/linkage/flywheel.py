@@ -43,6 +43,7 @@ from ..forces.engine import (
     piston_side,
 )
 from ..scene import Scene
+from .flywheel_machine import machine_asks, machine_cycle, machine_lines, machine_moments_at
 from ..motion.sweeps import sweep
 from ..solver.compiler import compile_plan
 from ..motion.solution import solve
@@ -101,6 +102,7 @@ class TurningMoment:
     flywheel: tuple | None
     inertia_included: bool
     words: str = ""
+    machine: bool = False  # a machine's turn at a steady speed (:mod:`.flywheel_machine`)
 
     @property
     def dE_max(self) -> float:
@@ -110,6 +112,7 @@ class TurningMoment:
     def lines(self, scene) -> list:
         """The summary's lines, in the book's words."""
         deg = math.degrees(self.cycle)
+        said = machine_lines(self, scene) if self.machine else None
         out = [
             f"turning moment over the cycle ({deg:g} deg of the crank from the inner dead "
             f"centre at {self.theta_idc:.4f} deg, in the crank's sense of rotation; "
@@ -124,13 +127,19 @@ class TurningMoment:
                 else f"at {abs(scene.input.omega) * 30 / math.pi:.6g} rpm, power "
                 f"{self.mean * abs(scene.input.omega) / 1000:.6g} kW)"
             ),
-            f"  greatest turning moment (on a 0.25 deg grid) {self.T_max:.6g} N m at "
+            f"  greatest {'torque needed' if said else 'turning moment'} (on a 0.25 deg grid) {self.T_max:.6g} N m at "
             f"{self.at_T_max:.4f} deg, "
             f"least {self.T_min:.6g} N m at {self.at_T_min:.4f} deg",
         ]
+        if said:
+            out[0] = said[0]
         if self.lobes:
             out.append(
-                "  areas above (+) and below (-) the mean line, in order (J): "
+                (
+                    said[1]
+                    if said
+                    else "  areas above (+) and below (-) the mean line, in order (J): "
+                )
                 + ", ".join(
                     f"{lb.energy:+.6g} ({lb.start:.3f} to {lb.end:.3f} deg)" for lb in self.lobes
                 )
@@ -184,6 +193,9 @@ class TurningMoment:
             "dE_max": self.dE_max,
             "inertia_included": self.inertia_included,
         }
+        if self.machine:  # (the phases from the crank at 0 deg; E the motor's mean less T)
+            out["machine"] = True
+            del out["inner_dead_centre_deg"]
         if self.flywheel is not None:
             cs, w, inertia, mass = self.flywheel
             out["flywheel"] = {"Cs": cs, "omega_mean": w, "I": inertia, "mass": mass}
@@ -247,6 +259,8 @@ class EngineCycle:
 
 def _geometry(scene) -> EngineCycle:
     piston = engine_piston(scene)
+    if piston is None and machine_asks(scene):
+        return machine_cycle(scene)
     if piston is None:
         raise PolygonMethodError(
             "the turning moment over a cycle is an engine's: a slider "
@@ -288,6 +302,8 @@ def turning_moment_at(scene: Scene, g, phase):
 def cylinder_moments_at(scene: Scene, g, phase) -> tuple:
     """((piston, its turning moment at each phase, N m), ...): each cylinder's part of the
     turning moment (one for a single cylinder), at the phases ``phase`` (rad)."""
+    if getattr(g, "machine", False):
+        return machine_moments_at(scene, g, phase)
     phase = np.asarray(phase, dtype=float)
     theta = g.theta_i + g.sg * phase
     res = sweep(scene, theta)
@@ -418,7 +434,7 @@ def turning_moment(scene: Scene) -> TurningMoment:
         cross = []
     else:
         edges = sorted(set(breaks) | set(cross))
-        parts = _integrals(scene, g, edges) - mean * np.diff(edges)
+        parts = (_integrals(scene, g, edges) - mean * np.diff(edges)) * getattr(g, "esign", 1.0)
         E = np.concatenate([[0.0], np.cumsum(parts)])  # E at each edge, from the i.d.c.
         at = {e: E[k] for k, e in enumerate(edges)}
         Ec = [at[c] for c in cross]
@@ -444,7 +460,9 @@ def turning_moment(scene: Scene) -> TurningMoment:
         k = fw.radius if fw.radius is not None else fw.gyration
         fly = (fw.coefficient, w, inertia, inertia / (k * k) if k is not None else None)
     words = (
-        ind.words
+        g.words
+        if getattr(g, "machine", False)
+        else ind.words
         if ind is not None
         else "; ".join(ld.gas[2] for ld in scene.loads if ld.gas is not None)
     )
@@ -472,6 +490,7 @@ def turning_moment(scene: Scene) -> TurningMoment:
         bool(scene.masses) and not (scene.at_rest and not scene.start_alpha),  # (at rest
         # nothing moves: no inertia; starting from rest, the start's)
         words,
+        getattr(g, "machine", False),
     )
 
 
@@ -479,7 +498,7 @@ def engine_cycle_lines(scene: Scene) -> list:
     """The turning-moment diagram's lines for ``sweep --summary`` (an engine's; nothing for
     another mechanism, or one line saying why an engine's cycle cannot be taken)."""
     try:
-        if engine_piston(scene) is None:
+        if engine_piston(scene) is None and not machine_asks(scene):
             return []
     except PolygonMethodError:
         return []
@@ -498,13 +517,14 @@ def cycle_blocks(sol) -> list:
     if not sc.indicators and sc.flywheel is None:
         return []
     try:
-        if sol.forces_refused or engine_piston(sc) is None:
+        if sol.forces_refused or (engine_piston(sc) is None and not machine_asks(sc)):
             return []
         tm = turning_moment(sc)
     except PolygonMethodError as exc:
         return [("h", "The turning-moment diagram"), ("p", f"not found: {exc.message}")]
     lines = tm.lines(sc)
-    out = [("h", "The turning-moment diagram"), ("p", lines[0])]
+    head = "The crank's torque over a turn: the flywheel" if tm.machine else None
+    out = [("h", head or "The turning-moment diagram"), ("p", lines[0])]
     rows, run = [], 0.0
     big = max((abs(lb.energy) for lb in tm.lobes), default=0.0)
     for k, lb in enumerate(tm.lobes):
@@ -527,7 +547,8 @@ def cycle_blocks(sol) -> list:
                 rows,
             )
         )
-    rest = [ln.strip() for ln in lines[1:] if "areas above" not in ln]
+    areas = ("areas above", "energy the flywheel gains")  # (the table has them)
+    rest = [ln.strip() for ln in lines[1:] if not ln.strip().startswith(areas)]
     out.append(("list", rest))
     return out
 
@@ -546,7 +567,10 @@ def energy_curve(scene: Scene, tm: TurningMoment, n: int = 1441, phase=None) -> 
     T = parts[0][1] if len(parts) == 1 else sum(t for _, t in parts)
     cross = [math.radians(c) for c in tm.crossings]
     edges = sorted(set(phase.tolist()) | set(_breaks(scene, g, tm.cycle)) | set(cross))
-    E = np.concatenate([[0.0], np.cumsum(_integrals(scene, g, edges) - tm.mean * np.diff(edges))])
+    sE = getattr(g, "esign", 1.0)  # (a machine's: the motor's mean less the torque it needs)
+    E = np.concatenate(
+        [[0.0], np.cumsum((_integrals(scene, g, edges) - tm.mean * np.diff(edges)) * sE)]
+    )
     at = dict(zip(edges, E))
     base = at[cross[0]] if cross else 0.0
     return np.degrees(phase), T, np.array([at[p] for p in phase.tolist()]) - base, tuple(parts)
