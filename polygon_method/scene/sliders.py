@@ -31,17 +31,17 @@ class _Sliders:
             for k in spec:
                 if k not in allowed:
                     raise self.error(f"unknown key '{k}'{_suggest(k, allowed)}", "sliders", name)
+            along = spec.get("along")
             if "offset" in spec and not (
-                isinstance(spec.get("along"), str)
-                and not spec["along"].startswith("block ")
-                and "path" not in spec
+                isinstance(along, list)
+                or (isinstance(along, str) and not along.startswith("block "))
             ):
-                fixed = "along" not in spec or "path" in spec  # a line of stroke's offset
+                fixed = "along" not in spec  # a line of stroke's offset
                 raise self.error(
                     (f"a fixed path takes no offset{_OFFSET}; " if fixed else "")
-                    + 'offset goes with along = "CP" alone: a block in a slot of the lever CP '
-                    "whose line misses the lever's centre line"
-                    + ("" if fixed else " (a peg's slot or a yoke's takes none)"),
+                    + 'offset goes with along = "CP": a block in a slot of the lever CP '
+                    "whose line misses the lever's centre line (or a peg's slot in it)"
+                    + ("" if fixed else " (a yoke's slot takes none)"),
                     "sliders",
                     name,
                 )
@@ -316,7 +316,8 @@ class _Sliders:
                 name,
             )
         out, seen = [], []
-        for guide in guides:
+        offsets = self._peg_offsets(spec, guides, name)
+        for guide, raw in zip(guides, offsets):
             if not isinstance(guide, str):
                 raise self.error(
                     f'along = {guide!r}: a slot is named by its link, e.g. "OA"', "sliders", name
@@ -344,7 +345,8 @@ class _Sliders:
                     name,
                 )
             seen.append(link.key)
-            out.append(GuideSlider(name, link.key, pts[0], pts[1], link.key))
+            off = 0.0 if raw is None else self._offset(raw, pts, name)
+            out.append(GuideSlider(name, link.key, pts[0], pts[1], link.key, offset=off))
         if fixed:
             out.append(self.fixed_path(name, spec, ground, "ground"))
         elif "through" in spec:
@@ -354,3 +356,37 @@ class _Sliders:
                 name,
             )
         return out
+
+    def _peg_offsets(self, spec, guides, name):
+        """A peg's offsets, one a slot of a link: ``offset = "30 mm left"`` with one such
+        slot (a fixed slot beside it), ``offset = ["30 mm left", 0]`` with two (0: the
+        slot on its link's line). None where the scene gives none."""
+        if "offset" not in spec:
+            return [None] * len(guides)
+        raw = spec["offset"]
+        if len(guides) == 1:
+            if isinstance(raw, list):
+                raw = raw[0] if len(raw) == 1 else raw
+            if isinstance(raw, list):
+                raise self.error(
+                    f"offset = {raw!r}: a peg in a fixed slot and the slot of {guides[0]} "
+                    'has one offset, its slot\'s in the link: offset = "30 mm left"',
+                    "sliders",
+                    name,
+                )
+            return [raw]
+        if not isinstance(raw, list) or len(raw) != len(guides):
+            raise self.error(
+                f"offset = {raw!r}: a peg in the slots of {guides[0]} and {guides[1]} takes "
+                'one offset a slot, in their order: offset = ["30 mm left", 0] (0: the slot '
+                "on its link's line)",
+                "sliders",
+                name,
+            )
+        if all(r in (0, "") for r in raw):
+            raise self.error(
+                "offset = [0, 0]: both slots are on their links' lines; leave offset out",
+                "sliders",
+                name,
+            )
+        return [None if r in (0, "") else r for r in raw]

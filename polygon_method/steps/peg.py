@@ -43,6 +43,7 @@ from .rounding import C_FLOOR, line_rounding, plus, two_lines, vhypot, vmax
 __all__ = [
     "Peg",
     "place",
+    "slot_line",
     "velocity",
     "acceleration",
     "under_velocity",
@@ -80,6 +81,15 @@ def velocity(u1x, u1y, u2x, u2y, ex, ey, cross):
 def acceleration(u1x, u1y, u2x, u2y, ex, ey, cross):
     """(as_1, as_2) with e = (aC_2 + cor_2) - (aC_1 + cor_1): the same 2x2 solve."""
     return velocity(u1x, u1y, u2x, u2y, ex, ey, cross)
+
+
+def slot_line(gx, gy, hx, hy, e=0.0):
+    """A moving slot's line (point, unit direction) in link G -> H: its centre line, or e to
+    the left of it (an offset slot: the point G + e perp(u))."""
+    ux, uy = hx - gx, hy - gy
+    n = (ux * ux + uy * uy) ** 0.5
+    ux, uy = ux / n, uy / n
+    return gx - e * uy, gy + e * ux, ux, uy
 
 
 def under_velocity(gx, gy, x, y, w, vgx, vgy):
@@ -164,17 +174,22 @@ class Peg(Step):
     def title(self):
         return f"peg {self.point} in {_slot_words(self.first)} and {_slot_words(self.second)}"
 
+    def _words(self, s) -> str:
+        """Slot ``s`` in words, an offset slot with its line."""
+        return _slot_words(s, self.unit, self.uname)
+
     @property
     def params(self):
         return self._fixed(self.first) + self._fixed(self.second)
 
     @staticmethod
     def _fixed(s):
-        """A fixed slot's point and direction; zeros for a moving one (read from P)."""
+        """A fixed slot's point and direction; a moving one's offset (its line this far to
+        the left of its link's, first -> second), then zeros (its line read from P)."""
         if isinstance(s, FixedPath):
             (qx, qy), (ux, uy) = s.through, s.u
             return (qx, qy, ux, uy)
-        return (0.0, 0.0, 0.0, 0.0)
+        return (s.offset, 0.0, 0.0, 0.0)
 
     def dimensions(self, scene, bodies):
         return self._fixed(scene.slider(self.first.key)) + self._fixed(
@@ -182,29 +197,30 @@ class Peg(Step):
         )
 
     def drawn(self, prm, pencil, P):
-        """A fixed slot's point as a hand drawing places it (its direction is given)."""
+        """A fixed slot's point as a hand drawing places it (its direction is given); an
+        offset slot's line set off with the pencil too."""
         out = list(prm)
         for j, s in ((0, self.first), (4, self.second)):
             if isinstance(s, FixedPath):
                 out[j] += pencil()
                 out[j + 1] += pencil()
+            elif s.offset:
+                out[j] += pencil()
         return tuple(out)
 
     def reach(self):
         return max(self.size, LEAST_REACH)
 
     def lines(self, P, prm=None):
-        """(gx, gy, ux, uy) of each slot: fixed from ``prm``, moving from the positions."""
+        """(gx, gy, ux, uy) of each slot: fixed from ``prm``, moving from the positions (an
+        offset slot's point its offset to the left of the link's first point)."""
         prm = self.params if prm is None else prm
         out = []
         for j, s in ((0, self.first), (4, self.second)):
             if isinstance(s, FixedPath):
                 out.append(prm[j : j + 4])
             else:
-                (gx, gy), (hx, hy) = P[s.first], P[s.second]
-                ux, uy = hx - gx, hy - gy
-                n = (ux * ux + uy * uy) ** 0.5
-                out.append((gx, gy, ux / n, uy / n))
+                out.append(slot_line(*P[s.first], *P[s.second], prm[j]))
         return out
 
     def place(self, P, prm, ctx, sigma=None):
@@ -222,16 +238,11 @@ class Peg(Step):
             if isinstance(s, FixedPath):
                 spec.append((True, s.key, None, None, None, prm[j : j + 4]))
             else:
-                spec.append((False, s.key, s.guide, s.first, s.second, None))
+                spec.append((False, s.key, s.guide, s.first, s.second, prm[j]))
         (f1, k1, L1, a1, b1, q1), (f2, k2, L2, a2, b2, q2) = spec
 
         def line(P, fixed, g1, g2, q):
-            if fixed:
-                return q
-            (gx, gy), (hx, hy) = P[g1], P[g2]
-            ux, uy = hx - gx, hy - gy
-            n = (ux * ux + uy * uy) ** 0.5
-            return gx, gy, ux / n, uy / n
+            return q if fixed else slot_line(*P[g1], *P[g2], q)
 
         def frames(P):
             return line(P, f1, a1, b1, q1), line(P, f2, a2, b2, q2)
@@ -345,8 +356,8 @@ class Peg(Step):
     def why(self, *_):
         """Why the peg cannot be placed: its two slots do not cross."""
         return (
-            f"a pin in two parallel slots: {_slot_words(self.first)} and "
-            f"{_slot_words(self.second)} do not cross"
+            f"a pin in two parallel slots: {self._words(self.first)} and "
+            f"{self._words(self.second)} do not cross"
         )
 
     def singular(self, c):
@@ -355,21 +366,21 @@ class Peg(Step):
 
     def singular_why(self, c) -> str:
         return (
-            f"a pin in two parallel slots: {_slot_words(self.first)} and "
-            f"{_slot_words(self.second)} are parallel (sine {condition_text(c)}): they do "
+            f"a pin in two parallel slots: {self._words(self.first)} and "
+            f"{self._words(self.second)} are parallel (sine {condition_text(c)}): they do "
             f"not cross at one point, and {self.point} is undetermined"
         )
 
     def warning(self, c) -> str:
         return (
-            f"{self.label}: {_slot_words(self.first)} and {_slot_words(self.second)} "
+            f"{self.label}: {self._words(self.first)} and {self._words(self.second)} "
             f"are nearly parallel (condition {c:.3g}): the peg {self.point} is "
             "ill-determined"
         )
 
     def limit_why(self) -> str:
         return (
-            f"{_slot_words(self.first)} and {_slot_words(self.second)} turn parallel: "
+            f"{self._words(self.first)} and {self._words(self.second)} turn parallel: "
             f"the peg {self.point} runs off along them"
         )
 
@@ -393,10 +404,16 @@ class Peg(Step):
         return None
 
     def position_words(self, L, which, angle_deg):
-        return (
-            f"{self.point}: {_slot_words(self.first)} and {_slot_words(self.second)} "
-            f"cross at {self.point}"
-        )
+        def drawn(s):  # an offset slot: its line drawn parallel to the link's, so far off
+            if isinstance(s, FixedPath) or not s.offset:
+                return _slot_words(s)
+            side = "left" if s.offset > 0 else "right"
+            return (
+                f"the slot of {s.guide} (drawn parallel to {s.guide}, {L(abs(s.offset))} to "
+                f"the {side} of its line {s.first} -> {s.second})"
+            )
+
+        return f"{self.point}: {drawn(self.first)} and {drawn(self.second)} cross at {self.point}"
 
     # ----- the polygons
     def construction(self, sol, ph):

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import math
 
+from ..common.numbers import in_units
 from ..scene import FixedPath
 from .base import (
     Construction,
@@ -26,11 +27,22 @@ from .relations import rigid_acceleration, rigid_velocity
 __all__ = ["slot_words", "under_labels", "slot_labels", "construction"]
 
 
-def slot_words(s) -> str:
-    """``the slot of OA`` or ``the fixed slot (horizontal)``."""
+def slot_words(s, unit=None, uname="mm") -> str:
+    """``the slot of OA`` or ``the fixed slot (horizontal)``; an offset slot with its line
+    where ``unit`` (m) is given (``the slot of OA (parallel to OA, 30 mm to the left of its
+    line O -> A)``), else ``the offset slot of OA``."""
     if isinstance(s, FixedPath):
         return f"the fixed slot ({s.label})"
-    return f"the slot of {s.guide}"
+    e = getattr(s, "offset", 0.0)
+    if not e:
+        return f"the slot of {s.guide}"
+    if unit is None:
+        return f"the offset slot of {s.guide}"
+    side = "left" if e > 0 else "right"
+    return (
+        f"the slot of {s.guide} (parallel to {s.guide}, {in_units(abs(e), unit)} {uname} to "
+        f"the {side} of its line {s.first} -> {s.second})"
+    )
 
 
 def under_labels(sol, X: str, phase: str = "velocity") -> tuple:
