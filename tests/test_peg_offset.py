@@ -29,6 +29,7 @@ from polygon_method.common.errors import PolygonMethodError
 HERE = Path(__file__).resolve().parent / "textbook"
 ONE = HERE / "hunt7_peg_offset_slot_fixed_slot.toml"
 TWO = HERE / "hunt7_peg_two_offset_slots.toml"
+YOKE = HERE / "hunt7_scotch_yoke_offset_slot.toml"
 REL = 1e-9
 
 
@@ -182,7 +183,7 @@ def test_the_solved_peg_sits_at_each_slots_offset(angle):
         assert abs(-uy * rel[0] + ux * rel[1]) < 1e-12 * 50.0
 
 
-@pytest.mark.parametrize("path", [ONE, TWO])
+@pytest.mark.parametrize("path", [ONE, TWO, YOKE])
 def test_peg_offset_slots_within_their_error_bounds(path):
     """Every quantity within its own error bound of the 40-digit Newton reference (each
     slot's offset in its guide equation)."""
@@ -220,8 +221,8 @@ speed = "5 rad/s ccw"
         ),
         (
             'Y = { path = "horizontal", through = [0, 0] }\n'
-            'P = { along = "block Y", direction = "vertical", offset = 20 }',
-            "a yoke's slot takes none",
+            'P = { along = "block Y", direction = "vertical", offset = "20 mm up" }',
+            "the slot's side is left or right (looking along the slot (vertical)), not 'up'",
         ),
         (
             'P = { path = "vertical", through = [200, 0], offset = 20 }',
@@ -301,7 +302,7 @@ def test_every_view_says_the_pegs_offset_slot(capsys, tmp_path):
     assert "15 mm to the left" in words, words
 
 
-@pytest.mark.parametrize("path", [ONE, TWO])
+@pytest.mark.parametrize("path", [ONE, TWO, YOKE])
 def test_book_answers(path):
     verdicts = [v for v in check_answers(solve(load_scene(path))) if v.given]
     assert len(verdicts) >= 4 and all(v.ok for v in verdicts), [
@@ -324,3 +325,47 @@ def test_a_sweep_of_the_offset_slots_is_the_solves():
                 assert D["P"][c][i] == pytest.approx(d["P"][c], rel=1e-12, abs=1e-12)
         for k in ("P_AB", "P_CD"):
             assert res.S[k][1][i] == pytest.approx(one.S[k][1], rel=1e-12, abs=1e-12)
+
+
+@pytest.mark.parametrize("deg", [0, 40, 90, 200, 300])
+def test_a_yoke_whose_slot_is_off_its_point_by_hand(deg):
+    """The Scotch yoke's slot 20 mm to the left of the line through Y (looking up the slot):
+    Y = r cos theta + 20 mm, its velocity and acceleration r cos theta's rates (the offset
+    a constant); the pin slides by r sin theta's."""
+    text = YOKE.read_text(encoding="utf-8").replace("angle = 40", f"angle = {deg}")
+    sol = solve(parse_scene(text))
+    th0, w, r, e = mpmath.radians(deg), 2 * mpmath.pi * 300 / 60, mpf("0.08"), mpf("0.02")
+
+    def th(t):
+        return th0 + w * t + 25 * t * t
+
+    (yx,) = _rates(lambda t: (r * mpmath.cos(th(t)) + e,))
+    (sp,) = _rates(lambda t: (r * mpmath.sin(th(t)),))
+    for i, D, size in ((0, sol.P, 0.1), (1, sol.V, 2.5), (2, sol.A, 80.0)):
+        _close(D["Y"][0], yx[i], size)
+        assert D["Y"][1] == 0.0
+    for i, size in ((1, 2.5), (2, 80.0)):
+        _close(sol.S["Y"][i - 1], yx[i], size)
+        _close(sol.S["P"][i - 1], sp[i], size)
+    assert abs(sol.P["P"][0] - (sol.P["Y"][0] - 0.02)) < 1e-16  # the slot's line through P
+
+
+def test_every_view_says_the_yokes_offset_slot(capsys):
+    from polygon_method.cli import main
+
+    path = str(YOKE)
+    assert main(["steps", path]) == 0
+    out = " ".join(capsys.readouterr().out.split())
+    assert (
+        "block P slides in the vertical slot of yoke Y, its centre line 20 mm to the left of "
+        "the yoke's line through Y"
+    ) in out
+    assert "the line along the yoke's slot (vertical) 20 mm (2.00 cm) to the right of P" in out
+    assert main(["solve", path]) == 0
+    assert "vertical slot 20 left" in capsys.readouterr().out
+    assert main(["solve", "--json", path]) == 0
+    assert json.loads(capsys.readouterr().out)["sliders"]["P"]["offset"] == 0.02
+    from polygon_method.text.words import given
+
+    words = " ".join(" ".join(given(load_scene(path))).split())
+    assert "its centre line 20 mm to the left of the yoke's line through Y" in words, words

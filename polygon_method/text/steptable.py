@@ -259,6 +259,7 @@ def _slider_facts(facts, sc, u, block=None):
         elif hasattr(s, "yoke"):  # the slot of a translating yoke
             facts.append(
                 f"block {s.point} slides in the {guide_words(s.label, 'slot', f'yoke {s.yoke}')}"
+                + (_yoke_offset_words(s, u, sc.units) if s.offset else "")
             )
         elif s.offset:  # an offset slot: its line off the link's
             facts.append(
@@ -273,6 +274,15 @@ def _offset_words(s, u, units):
     return (
         f" parallel to its line {s.first} -> {s.second}, {fmt(abs(s.offset) / u, 5)} {units} "
         f"to the {'left' if s.offset > 0 else 'right'} of it"
+    )
+
+
+def _yoke_offset_words(s, u, units):
+    """A yoke's offset slot: ``, its centre line 20 mm to the left of the yoke's line through
+    Y``."""
+    return (
+        f", its centre line {fmt(abs(s.offset) / u, 5)} {units} to the "
+        f"{'left' if s.offset > 0 else 'right'} of the yoke's line through {s.yoke}"
     )
 
 

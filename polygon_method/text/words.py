@@ -53,9 +53,15 @@ def _slider_sentence(sc, s) -> str | None:
             )
         return None
     if hasattr(s, "yoke"):  # the slot of a translating yoke
+        off = (
+            f", its centre line {_len(sc, abs(s.offset))} to the "
+            f"{'left' if s.offset > 0 else 'right'} of the yoke's line through {s.yoke}"
+            if s.offset
+            else ""
+        )
         return (
             f"A block at {s.point} slides in the "
-            f"{guide_words(s.label, 'slot', f'the yoke {s.yoke}')}."
+            f"{guide_words(s.label, 'slot', f'the yoke {s.yoke}')}{off}."
         )
     if hasattr(s, "guide") and s.offset:  # an offset slot
         return (
