@@ -369,3 +369,65 @@ def test_every_view_says_the_yokes_offset_slot(capsys):
 
     words = " ".join(" ".join(given(load_scene(path))).split())
     assert "its centre line 20 mm to the left of the yoke's line through Y" in words, words
+
+
+def test_variants_vary_a_pegs_offset_on_its_side(tmp_path):
+    """[variants] P = { offset = ... }: each variant's peg in AB's slot that far to the
+    left (the scene's side), its motion the hand's with that offset."""
+    from polygon_method.cli import main
+
+    text = TWO.read_text(encoding="utf-8").replace(
+        'offset = ["15 mm left", "10 mm right"]', 'offset = ["15 mm left", 0]'
+    )
+    text = text[: text.index("[answers]")] + (
+        '[answers]\nv_P = "?"\n\n[variants]\nP = { offset = { from = 10, to = 20, step = 1 } }\n'
+    )
+    base = tmp_path / "base.toml"
+    base.write_text(text, encoding="utf-8")
+    assert main(["variants", str(base), "--count", "3", "-o", str(tmp_path / "v")]) == 0
+    seen = 0
+    for f in sorted((tmp_path / "v").glob("variant-*.toml")):
+        sc = load_scene(f)
+        (s,) = [s for s in sc.sliders if s.key == "P_AB"]
+        assert 0.010 - 1e-12 <= s.offset <= 0.020 + 1e-12  # to the left, as the scene's
+        sol = solve(sc)
+        (x, y), _ = _two_by_hand(e1=mpmath.mpf(s.offset), e2=0)
+        _close(sol.V["P"][0], x[1], 2.0)
+        _close(sol.V["P"][1], y[1], 2.0)
+        seen += 1
+    assert seen == 3
+
+
+@pytest.mark.parametrize(
+    "path, old, new, key",
+    [
+        (YOKE, "", "", "P"),
+        (HERE / "hunt5_offset_slot_lever.toml", '"30 mm left"', '"30 mm right"', "A"),
+    ],
+)
+def test_variants_vary_a_yokes_or_a_blocks_offset(path, old, new, key):
+    """A yoke's offset slot, and a block's on its right: the values' side is the scene's
+    (the SI value signed to the left)."""
+    text = path.read_text(encoding="utf-8").replace(old, new) if old else path.read_text()
+    text += f"\n[variants]\n{key} = {{ offset = [20, 25, 35] }}\n"
+    (v,) = parse_scene(text).variation.varied
+    side = -1 if "right" in new else 1
+    assert v.si == tuple(side * x for x in (0.02, 0.025, 0.035))
+    assert v.shown[0] == f"20 mm {'right' if side < 0 else 'left'}"
+
+
+@pytest.mark.parametrize(
+    "offsets, words",
+    [
+        ("", "the slot of P has no offset to vary"),
+        ('offset = ["15 mm left", "10 mm right"]', "P sits in two offset slots"),
+    ],
+)
+def test_variants_of_an_offset_refused_in_one_line(offsets, words):
+    text = TWO.read_text(encoding="utf-8").replace(
+        ', offset = ["15 mm left", "10 mm right"]', f", {offsets}" if offsets else ""
+    )
+    text += "\n[variants]\nP = { offset = [20, 25] }\n"
+    with pytest.raises(PolygonMethodError) as exc:
+        parse_scene(text)
+    assert words in str(exc.value) and "\n" not in str(exc.value), str(exc.value)
