@@ -431,3 +431,66 @@ def test_variants_of_an_offset_refused_in_one_line(offsets, words):
     with pytest.raises(PolygonMethodError) as exc:
         parse_scene(text)
     assert words in str(exc.value) and "\n" not in str(exc.value), str(exc.value)
+
+
+def test_a_pegs_offset_slot_force_analysis_by_virtual_power():
+    """The force walk pushes the peg across each slot at P, off the bar's line: the driving
+    torque is the virtual power's, T omega + sum(F.v) + sum(m g.v - m a.v - I alpha omega)
+    = 0, from the motion (held to the hand's above)."""
+    text = ONE.read_text(encoding="utf-8")
+    text = text[: text.index("[answers]")] + (
+        "[masses]\n"
+        'OA = { mass = "4 kg", along = 200, inertia = "0.06 kg m^2" }\n'
+        'P = { mass = "2 kg" }\n'
+        "[gravity]\n"
+        '[loads]\nP = { force = "300 N", direction = 270 }\n'
+    )
+    sol = solve(parse_scene(text))
+    V, A, W, Al = sol.V, sol.A, sol.W, sol.Al
+
+    def dot(a, b):
+        return a[0] * b[0] + a[1] * b[1]
+
+    g = (0.0, -9.81)
+    power = dot((0.0, -300.0), V["P"])
+    vg = (V["A"][0] / 2, V["A"][1] / 2)
+    ag = (A["A"][0] / 2, A["A"][1] / 2)
+    power += 4 * dot(g, vg) - 4 * dot(ag, vg) - 0.06 * Al["OA"] * W["OA"]
+    power += 2 * dot(g, V["P"]) - 2 * dot(A["P"], V["P"])
+    want = -power / W["OA"]
+    got = sol.forces.input_torque
+    assert abs(got - want) < 1e-9 * max(abs(want), 300 * 0.4)
+
+
+@pytest.mark.parametrize(
+    "e1, code, words",
+    [
+        ("0", "offset_left_out", "the slot of AB drawn through its line AB (its offset of 15 mm"),
+        ("-0.015", "offset_other_side", "the slot of AB taken 15 mm to the right of its line"),
+    ],
+)
+def test_a_pegs_offset_slot_drawn_otherwise_is_named(e1, code, words):
+    """A student who draws AB's slot through AB's line (or on its other side): the peg's
+    velocity by the hand's lines with that offset, given as the answer, is named by check."""
+    (x, y), _ = _two_by_hand(e1=mpf(e1))
+    v = float(mpmath.hypot(x[1], y[1]))
+    text = TWO.read_text(encoding="utf-8")
+    text = text[: text.index("[answers]")] + f'[answers]\nv_P = "{v:.4g} m/s"\n'
+    (verdict,) = check_answers(solve(parse_scene(text)))
+    assert not verdict.ok and verdict.mistake == code and words in verdict.diagnosis, verdict
+
+
+@pytest.mark.parametrize(
+    "path, answer",
+    [
+        (YOKE, 'a_Y = "70 m/s^2"'),  # a yoke's offset slot among the slips tried
+        (HERE / "peg_two_slotted_links.toml", 'v_P = "1.5 m/s"'),  # a peg's v_P: its slots'
+    ],
+)
+def test_a_wrong_answer_on_a_yoke_or_a_peg_gets_a_verdict(path, answer):
+    """A wrong answer is judged, not refused: the slips tried of a yoke's offset slot and a
+    peg's sliding (keyed by its slot, P_AB) were once an error."""
+    text = path.read_text(encoding="utf-8")
+    text = text[: text.index("[answers]")] if "[answers]" in text else text
+    (verdict,) = check_answers(solve(parse_scene(text + f"\n[answers]\n{answer}\n")))
+    assert not verdict.ok
