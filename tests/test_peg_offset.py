@@ -420,7 +420,7 @@ def test_variants_vary_a_yokes_or_a_blocks_offset(path, old, new, key):
     "offsets, words",
     [
         ("", "the slot of P has no offset to vary"),
-        ('offset = ["15 mm left", "10 mm right"]', "P sits in two offset slots"),
+        ('offset = ["15 mm left", "10 mm right"]', "P sits in two offset slots: name the"),
     ],
 )
 def test_variants_of_an_offset_refused_in_one_line(offsets, words):
@@ -494,3 +494,24 @@ def test_a_wrong_answer_on_a_yoke_or_a_peg_gets_a_verdict(path, answer):
     text = text[: text.index("[answers]")] if "[answers]" in text else text
     (verdict,) = check_answers(solve(parse_scene(text + f"\n[answers]\n{answer}\n")))
     assert not verdict.ok
+
+
+def test_variants_vary_each_of_a_pegs_two_offsets_by_its_link():
+    """P = { offset = { AB = [...], CD = [...] } }: each slot's offset its own key, written
+    into its place in the scene's list on its own side; a link that is no offset slot of the
+    peg is refused naming those that are."""
+    text = TWO.read_text(encoding="utf-8") + (
+        "\n[variants]\nP = { offset = { AB = [10, 20], CD = { from = 5, to = 8, step = 1 } } }\n"
+    )
+    ab, cd = parse_scene(text).variation.varied
+    assert (ab.key, ab.path, ab.values, ab.si) == (
+        "P.offset.AB",
+        ("sliders", "P", "offset", 0),
+        ("10 left", "20 left"),
+        (0.01, 0.02),
+    )
+    assert cd.path == ("sliders", "P", "offset", 1) and cd.values[0] == "5 right"
+    assert cd.si == pytest.approx((-0.005, -0.006, -0.007, -0.008), rel=1e-15)
+    with pytest.raises(PolygonMethodError) as exc:
+        parse_scene(text.replace("CD = {", "BC = {"))
+    assert "BC is not a slot of P with an offset (its offset slots: AB, CD)" in str(exc.value)

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 
 from ..common.errors import SceneError
 from ..common.tolerances import ROUNDING, SAME
+from .offset_variation import offset_sizes
 from .records import split_name
 
 __all__ = ["Varied", "Variation", "VariantOf", "DEFAULT_MIN_CONDITION", "MAX_VALUES"]
@@ -265,7 +266,7 @@ class _Variants:
         if sub == "force":
             return self._force_size(key, name, value, raw)
         if sub == "offset":
-            return [self._offset_size(key, name, value, sliders, raw)]
+            return offset_sizes(self, key, name, value, sliders, raw)
         from .table_help import _suggest
 
         subs = ("x", "y", "along", "distances", "diameter", "radius", "force", "offset")
@@ -333,40 +334,6 @@ class _Variants:
             f"{name} is not a ground point or a slider on a fixed path: its {sub} is not stated",
             "variants",
             name,
-        )
-
-    def _offset_size(self, key, name, value, sliders, raw):
-        """An offset slot's distance off its line (a block's, a peg's or a yoke's slot), its
-        side the scene's: sizes only (``[20, 25, 30]`` or a range, in the scene's units)."""
-        offs = [s for s in sliders if s.point == name and getattr(s, "offset", 0.0)]
-        if len(offs) != 1:
-            raise self.error(
-                f"the slot of {name} has no offset to vary (state it in [sliders]: offset = "
-                '"30 mm left")'
-                if not offs
-                else f"{name} sits in two offset slots: vary one by a list in [sliders] "
-                "with the other fixed (this key varies a single offset)",
-                "variants",
-                name,
-            )
-        (s,) = offs
-        written = raw["sliders"][name]["offset"]
-        path = ("sliders", name, "offset")
-        if isinstance(written, list):  # a peg's: the one offset the list gives
-            path += (next(i for i, w in enumerate(written) if w not in (0, "")),)
-        side = "left" if s.offset > 0 else "right"
-        what = f"yoke {s.yoke}" if hasattr(s, "yoke") else s.guide
-        v = self._values(
-            key, value, "length", self.unit, path, f"offset of the slot of {what}", table_key=name
-        )
-        return Varied(
-            v.key,
-            v.label,
-            v.path,
-            tuple(f"{x:g} {side}" if not isinstance(x, str) else f"{x} {side}" for x in v.values),
-            tuple(f"{x} {side}" for x in v.shown),
-            tuple(x if s.offset > 0 else -x for x in v.si),
-            v.setup,
         )
 
     def _distances(self, key, name, value, spec):
