@@ -191,7 +191,8 @@ def _equations(scene):
         if hasattr(sl, "guide"):  # (an offset slot: its line e to the left of first -> second)
             eqs.append(("guide", (sl.point, sl.first, sl.second, mpf(getattr(sl, "offset", 0)))))
         elif hasattr(sl, "yoke"):  # the slot of a translating yoke: a line of fixed direction
-            eqs.append(("yoke", (sl.point, sl.yoke, _unit(_v(sl.direction)))))
+            e = mpf(getattr(sl, "offset", 0))  # (its line e to the left of Y's along d)
+            eqs.append(("yoke", (sl.point, sl.yoke, _unit(_v(sl.direction)), e)))
         else:
             eqs.append(("path", (sl.point, _v(sl.through), _path_unit(sl))))
     rates = {inp.crank: mpf(1)}
@@ -337,9 +338,9 @@ def _eval(kind, d, P, th, moving=False):
             (k, -a[0] - b[0], -a[1] - b[1]),
         ]
     if kind == "yoke":
-        x, y, u = d
+        x, y, u, e = d  # (X - Y) x u + e = 0: X is e to the left of the line Y + t u
         a = _sub(P[x], P[y])
-        return _cross(a, u), [(x, u[1], -u[0]), (y, -u[1], u[0])]
+        return _cross(a, u) + e, [(x, u[1], -u[0]), (y, -u[1], u[0])]
     if kind == "guide":  # (X - G1) x (G2 - G1) + e |G2 - G1| = 0: X is e left of G1 -> G2
         x, g1, g2, e = d
         a, b = _sub(P[x], P[g1]), _sub(P[g2], P[g1])

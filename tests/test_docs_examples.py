@@ -400,6 +400,7 @@ CATALOGUE = "docs/variants.md: BC = { from = 60, to = 75, step = 1 }"
 CATALOGUE_SCENES = {
     "B": "offset_slider_crank.toml",
     "P": "../tests/textbook/engine_inline_270.toml",
+    "A": "../tests/textbook/hunt5_offset_slot_lever.toml",
 }
 
 

@@ -272,7 +272,6 @@ def _lever(offset="30", angle="0"):
     [
         ("0", "offset = 0: the slot is on the link's own line"),
         ('"-30 left"', 'give the size alone, e.g. "30 left"'),
-        ('30, path = "horizontal"', 'offset goes with along = "CP" alone'),
     ],
 )
 def test_an_offset_misstated_is_one_line(offset, words):

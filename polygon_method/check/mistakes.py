@@ -229,16 +229,21 @@ class _Diagnoser:
             if alt is not None:
                 e = f"{_g(abs(sl.offset) / sc.length_unit)} {sc.units}"
                 side = "left" if sl.offset > 0 else "right"
+                yoke = getattr(sl, "yoke", None)  # a yoke's slot: off the line through Y
+                what = f"yoke {yoke}" if yoke else sl.guide
+                line = (
+                    (f"the line through {yoke}", f"the line through {yoke} along it")
+                    if yoke
+                    else (f"its line {sl.first}{sl.second}", f"its line {sl.first} -> {sl.second}")
+                )
                 out.append(
                     _Candidate(
                         val(alt),
                         code,
-                        f"the slot of {sl.guide} drawn through its line {sl.first}{sl.second}"
-                        f" (its offset of {e} left out)"
+                        f"the slot of {what} drawn through {line[0]} (its offset of {e} left out)"
                         if code == "offset_left_out"
-                        else f"the slot of {sl.guide} taken {e} to the "
-                        f"{'right' if side == 'left' else 'left'} of its line {sl.first} -> "
-                        f"{sl.second}, not the {side}",
+                        else f"the slot of {what} taken {e} to the "
+                        f"{'right' if side == 'left' else 'left'} of {line[1]}, not the {side}",
                     )
                 )
         if kind == "torque":
@@ -289,7 +294,7 @@ class _Diagnoser:
                 if kind == "v":
                     out.append(
                         _Candidate(
-                            abs(sol.sliding_velocity(X)),
+                            abs(sol.sliding_velocity(sl.key)),  # (a peg's: its first slot's)
                             "relative_for_absolute",
                             f"the sliding velocity of {X} on its guide given for "
                             f"its absolute velocity",

@@ -77,8 +77,14 @@ def yoke_bar(sc, sl, P):
     (yx, yy), (px, py), (dx, dy) = P[sl.yoke], P[sl.point], sl.direction
     t = (px - yx) * dx + (py - yy) * dy
     reach = max(abs(t), 1.0) + block_size(sc, sl.point, P)
+    arm = None
+    if getattr(sl, "offset", 0.0):  # an offset slot: the bar along it, an arm out to Y
+        fx, fy = px - t * dx, py - t * dy  # the foot of Y on the slot's centre line
+        arm = MultiPoint([(yx, yy), (fx, fy)]).convex_hull.buffer(BAR / 2, quad_segs=8)
+        yx, yy = fx, fy
     ends = [(yx - reach * dx, yy - reach * dy), (yx + reach * dx, yy + reach * dy)]
-    return MultiPoint(ends).convex_hull.buffer(BAR / 2, quad_segs=8)
+    bar = MultiPoint(ends).convex_hull.buffer(BAR / 2, quad_segs=8)
+    return bar if arm is None else bar.union(arm)
 
 
 #: a slot's half-width (cm): the pin's circle and a little play

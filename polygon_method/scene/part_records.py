@@ -114,6 +114,9 @@ class YokeSlot:
     direction: tuple[float, float]
     label: str  # "vertical", "at 60 deg"
     slot: str = ""
+    #: an offset slot: its centre line this far (m) to the left of the line through the
+    #: yoke's point Y along ``direction`` (negative: to the right); 0 through Y
+    offset: float = 0.0
 
     @property
     def key(self) -> str:

@@ -31,17 +31,11 @@ class _Sliders:
             for k in spec:
                 if k not in allowed:
                     raise self.error(f"unknown key '{k}'{_suggest(k, allowed)}", "sliders", name)
-            if "offset" in spec and not (
-                isinstance(spec.get("along"), str)
-                and not spec["along"].startswith("block ")
-                and "path" not in spec
-            ):
-                fixed = "along" not in spec or "path" in spec  # a line of stroke's offset
+            if "offset" in spec and "along" not in spec:  # a line of stroke's offset
                 raise self.error(
-                    (f"a fixed path takes no offset{_OFFSET}; " if fixed else "")
-                    + 'offset goes with along = "CP" alone: a block in a slot of the lever CP '
-                    "whose line misses the lever's centre line"
-                    + ("" if fixed else " (a peg's slot or a yoke's takes none)"),
+                    f"a fixed path takes no offset{_OFFSET}; "
+                    'offset goes with along = "CP": a block in a slot of the lever CP '
+                    "whose line misses the lever's centre line (or a peg's, or a yoke's slot)",
                     "sliders",
                     name,
                 )
@@ -118,7 +112,7 @@ class _Sliders:
         offset = self._offset(spec["offset"], pts, name) if "offset" in spec else 0.0
         return GuideSlider(name, link.key, pts[0], pts[1], offset=offset)
 
-    def _offset(self, raw, pts, name):
+    def _offset(self, raw, pts, name, looking=None):
         """An offset slot's distance from the link's line, signed to the left looking from
         the guide's first point to its second: a signed length (``offset = 40``, ``-40``,
         ``"40 mm"``) or with the side in words (``"40 mm left"``, ``"40 right"``)."""
@@ -134,7 +128,7 @@ class _Sliders:
                         "sliders",
                         name,
                     )
-            self._offset_side(raw, given, pts, name)
+            self._offset_side(raw, given, looking or f"from {pts[0]} to {pts[1]}", name)
         try:
             e = side * self.length(raw, "sliders", name, positive=False)
         except SceneError as exc:
@@ -152,7 +146,7 @@ class _Sliders:
             )
         return e
 
-    def _offset_side(self, raw, given, pts, name):
+    def _offset_side(self, raw, given, looking, name):
         """Words after an offset's length that are no side ("30 mm lfet", "30 mm up"):
         refused naming the side's two words, not as an unknown unit."""
         w = re.match(r"^\s*[-+]?[\d.]+(?:[eE][-+]?\d+)?\s*([A-Za-z]+)\s+(.+?)\s*$", raw)
@@ -162,8 +156,8 @@ class _Sliders:
             if side.lower() in ("left", "right"):
                 hint = ", given once"
             raise self.error(
-                f"offset = {given!r}: the slot's side is left or right (looking from {pts[0]} "
-                f"to {pts[1]}), not {side!r}{hint}",
+                f"offset = {given!r}: the slot's side is left or right (looking {looking}), "
+                f"not {side!r}{hint}",
                 "sliders",
                 name,
             )
@@ -191,7 +185,9 @@ class _Sliders:
         if why:
             raise self.error(why, "sliders", name)
         ang, label = self.direction(spec["direction"], name)
-        return YokeSlot(name, yoke, _unit_at(ang), label)
+        looking = f"along the slot ({label})"
+        off = self._offset(spec["offset"], None, name, looking) if "offset" in spec else 0.0
+        return YokeSlot(name, yoke, _unit_at(ang), label, offset=off)
 
     def check_yoke(self, sl, sliders):
         """The yoke of a slot is a block on a fixed path, its slot across that path."""
@@ -316,7 +312,8 @@ class _Sliders:
                 name,
             )
         out, seen = [], []
-        for guide in guides:
+        offsets = self._peg_offsets(spec, guides, name)
+        for guide, raw in zip(guides, offsets):
             if not isinstance(guide, str):
                 raise self.error(
                     f'along = {guide!r}: a slot is named by its link, e.g. "OA"', "sliders", name
@@ -344,7 +341,8 @@ class _Sliders:
                     name,
                 )
             seen.append(link.key)
-            out.append(GuideSlider(name, link.key, pts[0], pts[1], link.key))
+            off = 0.0 if raw is None else self._offset(raw, pts, name)
+            out.append(GuideSlider(name, link.key, pts[0], pts[1], link.key, offset=off))
         if fixed:
             out.append(self.fixed_path(name, spec, ground, "ground"))
         elif "through" in spec:
@@ -354,3 +352,37 @@ class _Sliders:
                 name,
             )
         return out
+
+    def _peg_offsets(self, spec, guides, name):
+        """A peg's offsets, one a slot of a link: ``offset = "30 mm left"`` with one such
+        slot (a fixed slot beside it), ``offset = ["30 mm left", 0]`` with two (0: the
+        slot on its link's line). None where the scene gives none."""
+        if "offset" not in spec:
+            return [None] * len(guides)
+        raw = spec["offset"]
+        if len(guides) == 1:
+            if isinstance(raw, list):
+                raw = raw[0] if len(raw) == 1 else raw
+            if isinstance(raw, list):
+                raise self.error(
+                    f"offset = {raw!r}: a peg in a fixed slot and the slot of {guides[0]} "
+                    'has one offset, its slot\'s in the link: offset = "30 mm left"',
+                    "sliders",
+                    name,
+                )
+            return [raw]
+        if not isinstance(raw, list) or len(raw) != len(guides):
+            raise self.error(
+                f"offset = {raw!r}: a peg in the slots of {guides[0]} and {guides[1]} takes "
+                'one offset a slot, in their order: offset = ["30 mm left", 0] (0: the slot '
+                "on its link's line)",
+                "sliders",
+                name,
+            )
+        if all(r in (0, "") for r in raw):
+            raise self.error(
+                "offset = [0, 0]: both slots are on their links' lines; leave offset out",
+                "sliders",
+                name,
+            )
+        return [None if r in (0, "") else r for r in raw]

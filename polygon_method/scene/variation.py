@@ -17,6 +17,7 @@ from dataclasses import dataclass
 
 from ..common.errors import SceneError
 from ..common.tolerances import ROUNDING, SAME
+from .offset_variation import offset_sizes
 from .records import split_name
 
 __all__ = ["Varied", "Variation", "VariantOf", "DEFAULT_MIN_CONDITION", "MAX_VALUES"]
@@ -264,9 +265,11 @@ class _Variants:
             ]
         if sub == "force":
             return self._force_size(key, name, value, raw)
+        if sub == "offset":
+            return offset_sizes(self, key, name, value, sliders, raw)
         from .table_help import _suggest
 
-        subs = ("x", "y", "along", "distances", "diameter", "radius", "force")
+        subs = ("x", "y", "along", "distances", "diameter", "radius", "force", "offset")
         raise self.error(
             f"unknown key '{sub}'{_suggest(sub, subs)}: a point varies by " + ", ".join(subs),
             "variants",

@@ -29,32 +29,21 @@ from __future__ import annotations
 
 from ..common.numbers import condition_text
 
-import math
 from dataclasses import dataclass
 
-from .relations import coriolis
+from . import peg_polygons
+from .peg_polygons import slot_labels, slot_words as _slot_words, under_labels
+from .relations import coriolis, rigid_acceleration, rigid_velocity
 from ..common.errors import TOL, SingularStepError
 from ..common.tolerances import LEAST_REACH
 from ..scene import FixedPath, GuideSlider
-from .base import (
-    Construction,
-    DirectionLine,
-    Step,
-    Vector,
-    absolute,
-    add,
-    image_label,
-    image_name,
-    numbered,
-    pole_text,
-    sub,
-    unit,
-)
+from .base import Step
 from .rounding import C_FLOOR, line_rounding, plus, two_lines, vhypot, vmax
 
 __all__ = [
     "Peg",
     "place",
+    "slot_line",
     "velocity",
     "acceleration",
     "under_velocity",
@@ -94,16 +83,25 @@ def acceleration(u1x, u1y, u2x, u2y, ex, ey, cross):
     return velocity(u1x, u1y, u2x, u2y, ex, ey, cross)
 
 
+def slot_line(gx, gy, hx, hy, e=0.0):
+    """A moving slot's line (point, unit direction) in link G -> H: its centre line, or e to
+    the left of it (an offset slot: the point G + e perp(u))."""
+    ux, uy = hx - gx, hy - gy
+    n = (ux * ux + uy * uy) ** 0.5
+    ux, uy = ux / n, uy / n
+    return gx - e * uy, gy + e * ux, ux, uy
+
+
 def under_velocity(gx, gy, x, y, w, vgx, vgy):
     """The velocity of the slotted body's point under the peg at (x, y): vG + w perp(P - G)."""
-    return vgx - w * (y - gy), vgy + w * (x - gx)
+    rx, ry = rigid_velocity(x - gx, y - gy, w)
+    return vgx + rx, vgy + ry
 
 
 def under_acceleration(gx, gy, x, y, w, al, agx, agy):
     """Its acceleration: aG - w^2 (P - G) + al perp(P - G)."""
-    px, py = x - gx, y - gy
-    k = w * w
-    return agx - k * px - al * py, agy - k * py + al * px
+    rx, ry = rigid_acceleration(x - gx, y - gy, w, al)
+    return agx + rx, agy + ry
 
 
 def under_point(gx, gy, x, y, w, al, vgx, vgy, agx, agy):
@@ -131,36 +129,6 @@ def recognise(g, name):
     g.used_sliders.update(s.key for s in slots)
     size = max(sizes) if sizes else sc.link(sc.input.crank).length
     return Peg(g.next_index, name, slots[0], slots[1], size, unit=g.unit, uname=g.uname)
-
-
-def _slot_words(s) -> str:
-    """``the slot of OA`` or ``the fixed slot (horizontal)``."""
-    if isinstance(s, FixedPath):
-        return f"the fixed slot ({s.label})"
-    return f"the slot of {s.guide}"
-
-
-def under_labels(sol, X: str, phase: str = "velocity") -> tuple:
-    """The images of the two slotted bodies' points under the peg at X: ``p1`` and ``p2``
-    (primed on the acceleration polygon), numbered past the scene's own points; the pole
-    for a fixed slot."""
-    sc = sol.scene
-    taken = {image_name(sc, p) for p in sc.point_names} | {p.lower() for p in sc.point_names}
-    prime = "'" if phase == "acceleration" else ""
-    out = []
-    for s in sol.scene.slots(X):
-        if isinstance(s, FixedPath):
-            out.append("o" + prime)
-            continue
-        lab = numbered(X.lower(), taken)
-        taken.add(lab)
-        out.append(lab + prime)
-    return tuple(out)
-
-
-def slot_labels(sol, X: str) -> dict:
-    """slider key -> the velocity image letter of its slotted body's point under the peg."""
-    return dict(zip((s.key for s in sol.scene.slots(X)), under_labels(sol, X)))
 
 
 @dataclass(frozen=True)
@@ -206,17 +174,22 @@ class Peg(Step):
     def title(self):
         return f"peg {self.point} in {_slot_words(self.first)} and {_slot_words(self.second)}"
 
+    def _words(self, s) -> str:
+        """Slot ``s`` in words, an offset slot with its line."""
+        return _slot_words(s, self.unit, self.uname)
+
     @property
     def params(self):
         return self._fixed(self.first) + self._fixed(self.second)
 
     @staticmethod
     def _fixed(s):
-        """A fixed slot's point and direction; zeros for a moving one (read from P)."""
+        """A fixed slot's point and direction; a moving one's offset (its line this far to
+        the left of its link's, first -> second), then zeros (its line read from P)."""
         if isinstance(s, FixedPath):
             (qx, qy), (ux, uy) = s.through, s.u
             return (qx, qy, ux, uy)
-        return (0.0, 0.0, 0.0, 0.0)
+        return (s.offset, 0.0, 0.0, 0.0)
 
     def dimensions(self, scene, bodies):
         return self._fixed(scene.slider(self.first.key)) + self._fixed(
@@ -224,29 +197,30 @@ class Peg(Step):
         )
 
     def drawn(self, prm, pencil, P):
-        """A fixed slot's point as a hand drawing places it (its direction is given)."""
+        """A fixed slot's point as a hand drawing places it (its direction is given); an
+        offset slot's line set off with the pencil too."""
         out = list(prm)
         for j, s in ((0, self.first), (4, self.second)):
             if isinstance(s, FixedPath):
                 out[j] += pencil()
                 out[j + 1] += pencil()
+            elif s.offset:
+                out[j] += pencil()
         return tuple(out)
 
     def reach(self):
         return max(self.size, LEAST_REACH)
 
     def lines(self, P, prm=None):
-        """(gx, gy, ux, uy) of each slot: fixed from ``prm``, moving from the positions."""
+        """(gx, gy, ux, uy) of each slot: fixed from ``prm``, moving from the positions (an
+        offset slot's point its offset to the left of the link's first point)."""
         prm = self.params if prm is None else prm
         out = []
         for j, s in ((0, self.first), (4, self.second)):
             if isinstance(s, FixedPath):
                 out.append(prm[j : j + 4])
             else:
-                (gx, gy), (hx, hy) = P[s.first], P[s.second]
-                ux, uy = hx - gx, hy - gy
-                n = (ux * ux + uy * uy) ** 0.5
-                out.append((gx, gy, ux / n, uy / n))
+                out.append(slot_line(*P[s.first], *P[s.second], prm[j]))
         return out
 
     def place(self, P, prm, ctx, sigma=None):
@@ -264,16 +238,11 @@ class Peg(Step):
             if isinstance(s, FixedPath):
                 spec.append((True, s.key, None, None, None, prm[j : j + 4]))
             else:
-                spec.append((False, s.key, s.guide, s.first, s.second, None))
+                spec.append((False, s.key, s.guide, s.first, s.second, prm[j]))
         (f1, k1, L1, a1, b1, q1), (f2, k2, L2, a2, b2, q2) = spec
 
         def line(P, fixed, g1, g2, q):
-            if fixed:
-                return q
-            (gx, gy), (hx, hy) = P[g1], P[g2]
-            ux, uy = hx - gx, hy - gy
-            n = (ux * ux + uy * uy) ** 0.5
-            return gx, gy, ux / n, uy / n
+            return q if fixed else slot_line(*P[g1], *P[g2], q)
 
         def frames(P):
             return line(P, f1, a1, b1, q1), line(P, f2, a2, b2, q2)
@@ -387,8 +356,8 @@ class Peg(Step):
     def why(self, *_):
         """Why the peg cannot be placed: its two slots do not cross."""
         return (
-            f"a pin in two parallel slots: {_slot_words(self.first)} and "
-            f"{_slot_words(self.second)} do not cross"
+            f"a pin in two parallel slots: {self._words(self.first)} and "
+            f"{self._words(self.second)} do not cross"
         )
 
     def singular(self, c):
@@ -397,21 +366,21 @@ class Peg(Step):
 
     def singular_why(self, c) -> str:
         return (
-            f"a pin in two parallel slots: {_slot_words(self.first)} and "
-            f"{_slot_words(self.second)} are parallel (sine {condition_text(c)}): they do "
+            f"a pin in two parallel slots: {self._words(self.first)} and "
+            f"{self._words(self.second)} are parallel (sine {condition_text(c)}): they do "
             f"not cross at one point, and {self.point} is undetermined"
         )
 
     def warning(self, c) -> str:
         return (
-            f"{self.label}: {_slot_words(self.first)} and {_slot_words(self.second)} "
+            f"{self.label}: {self._words(self.first)} and {self._words(self.second)} "
             f"are nearly parallel (condition {c:.3g}): the peg {self.point} is "
             "ill-determined"
         )
 
     def limit_why(self) -> str:
         return (
-            f"{_slot_words(self.first)} and {_slot_words(self.second)} turn parallel: "
+            f"{self._words(self.first)} and {self._words(self.second)} turn parallel: "
             f"the peg {self.point} runs off along them"
         )
 
@@ -435,156 +404,17 @@ class Peg(Step):
         return None
 
     def position_words(self, L, which, angle_deg):
-        return (
-            f"{self.point}: {_slot_words(self.first)} and {_slot_words(self.second)} "
-            f"cross at {self.point}"
-        )
+        def drawn(s):  # an offset slot: its line drawn parallel to the link's, so far off
+            if isinstance(s, FixedPath) or not s.offset:
+                return _slot_words(s)
+            side = "left" if s.offset > 0 else "right"
+            return (
+                f"the slot of {s.guide} (drawn parallel to {s.guide}, {L(abs(s.offset))} to "
+                f"the {side} of its line {s.first} -> {s.second})"
+            )
+
+        return f"{self.point}: {drawn(self.first)} and {drawn(self.second)} cross at {self.point}"
 
     # ----- the polygons
     def construction(self, sol, ph):
-        X = self.point
-        cond = sol.conditions.get(self.index, 1.0)
-        lab = image_label(sol, X, ph)
-        unders = under_labels(sol, X, ph)
-        D = sol.V if ph == "velocity" else sol.A
-        given, lines, found, named, parts = [], [], [], [], []
-        for s, tl in zip(self.slots, unders):
-            if isinstance(s, FixedPath):
-                one = self._fixed_slot(sol, ph, s, tl, lab)
-            elif ph == "velocity":
-                one = self._turning_slot_velocity(sol, s, tl, lab)
-            else:
-                one = self._turning_slot_acceleration(sol, s, tl, lab)
-            g, line, f, nm, part = one
-            given += g
-            lines.append(line)
-            found.append(f)
-            named += nm
-            parts.append(part)
-        text = "; ".join(parts) + f"; the two lines meet at {lab}"
-        found.append(absolute(sol, X, D, ph))
-        return Construction(
-            self.index,
-            self.title,
-            ph,
-            lab,
-            D[X],
-            tuple(given),
-            tuple(lines),
-            tuple(found),
-            text,
-            cond,
-            tuple(named),
-        )
-
-    def _fixed_slot(self, sol, ph, s, tl, lab):
-        """A fixed slot's part of the construction: (given vectors, its line, the sliding
-        vector found, the named points, its words)."""
-        X, words = self.point, _slot_words(s)
-        D = sol.V if ph == "velocity" else sol.A
-        u, start = s.u, (0.0, 0.0)
-        line = DirectionLine(start, u, tl, f"parallel to {words}", mark=f"\u2225 {words}")
-        found = Vector(
-            start,
-            D[X],
-            f"{tl}{lab}",
-            "sliding",
-            f"{'vs' if ph == 'velocity' else 'as'}_{s.key}",
-            f"sliding {ph} of {X} in {words}",
-        )
-        return (), line, found, (), f"through {tl} (a fixed slot) one parallel to {words}"
-
-    def _under(self, sol, s):
-        """The velocity and the acceleration of the point of slot ``s``'s turning link under
-        the peg."""
-        P, g1 = sol.P, s.first
-        return under_point(
-            *P[g1],
-            *P[self.point],
-            sol.W[s.guide],
-            sol.Al.get(s.guide, 0.0),
-            *sol.V[g1],
-            *sol.A.get(g1, (0.0, 0.0)),
-        )
-
-    def _turning_slot_velocity(self, sol, s, tl, lab):
-        """A slot in a turning link, on the velocity polygon: (given vectors, its line, the
-        sliding vector found, the named points, its words)."""
-        X, g1, ph = self.point, s.first, "velocity"
-        u = unit(*sub(sol.P[s.second], sol.P[g1]))
-        vc, _ = self._under(sol, s)
-        given = Vector(
-            sol.V[g1],
-            vc,
-            f"{image_label(sol, g1, ph)}{tl}",
-            "relative",
-            f"v of the point of {s.guide} under {X}",
-            f"omega_{s.guide} x {g1}{X}, perpendicular to {g1}{X}",
-        )
-        line = DirectionLine(vc, u, tl, f"parallel to {s.guide}", mark=f"\u2225 {s.guide}")
-        part = (
-            f"from {pole_text(sol, g1, ph)} draw {image_label(sol, g1, ph)}{tl} = omega_"
-            f"{s.guide} x {g1}{X} perpendicular to {g1}{X} ({tl}: the point "
-            f"of {s.guide} under the peg) and through {tl} a line parallel "
-            f"to {s.guide}"
-        )
-        found = Vector(
-            vc,
-            sol.V[X],
-            f"{tl}{lab}",
-            "sliding",
-            f"vs_{s.key}",
-            f"sliding velocity of {X} in {_slot_words(s)}",
-        )
-        return (given,), line, found, ((tl, vc),), part
-
-    def _turning_slot_acceleration(self, sol, s, tl, lab):
-        """A slot in a turning link, on the acceleration polygon (its point under the peg,
-        the Coriolis component laid off from it): (given vectors, its line, the sliding
-        vector found, the named points, its words)."""
-        X, g1, ph = self.point, s.first, "acceleration"
-        u = unit(*sub(sol.P[s.second], sol.P[g1]))
-        _, ac = self._under(sol, s)
-        cor = sol.coriolis(s.key)
-        end = add(ac, cor)
-        given = (
-            Vector(
-                sol.A[g1],
-                ac,
-                f"{image_label(sol, g1, ph)}{tl}",
-                "relative",
-                f"a of the point of {s.guide} under {X}",
-                f"omega_{s.guide}^2 x {g1}{X} towards {g1} and alpha_{s.guide} x {g1}{X}",
-            ),
-            Vector(
-                ac,
-                end,
-                f"cor {s.key}",
-                "coriolis",
-                f"Coriolis at {X} in {s.guide}",
-                f"2 omega_{s.guide} vs_{s.key} = "
-                f"{math.hypot(*cor):.4g} m/s^2, perpendicular to {s.guide}",
-            ),
-        )
-        line = DirectionLine(
-            end,
-            u,
-            f"the end of the Coriolis component in {s.guide}",
-            f"parallel to {s.guide}",
-            mark=f"\u2225 {s.guide}",
-        )
-        part = (
-            f"from {pole_text(sol, g1, ph)} draw {tl}, the acceleration of the point of "
-            f"{s.guide} under the peg, lay off from {tl} the Coriolis component 2 omega_"
-            f"{s.guide} vs_{s.key} = {math.hypot(*cor):.4g} m/s^2 perpendicular "
-            f"to {s.guide}, and through its end a line parallel to {s.guide}"
-        )
-        found = Vector(
-            end,
-            sol.A[X],
-            "s",
-            "sliding",
-            f"as_{s.key}",
-            f"sliding acceleration of {X} in {_slot_words(s)}",
-        )
-        return given, line, found, ((tl, ac),), part
+        return peg_polygons.construction(self, sol, ph)

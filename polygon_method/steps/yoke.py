@@ -14,6 +14,10 @@ slot, meeting at y::
 Acceleration: the same with aP (no centripetal, no Coriolis: nothing turns). With a
 crank r at theta and u perpendicular to d this is the closed form x = r cos theta.
 
+An offset slot (its centre line e to the left of the line through Y along d): Y is on the
+line through ``P - e perp(d)`` along d; the yoke translates, so the velocity and the
+acceleration are as above.
+
 >>> place(0.0, 0.0, 1.0, 0.0, 0.3, 0.4, 0.0, 1.0)   # path y = 0, slot vertical through P
 (0.3, 0.0, 1.0)
 >>> velocity(1.0, 0.0, 0.0, 1.0, 2.0, -1.0)   # vP = 2 u - 1 d
@@ -119,23 +123,26 @@ class Yoke(Step):
     @property
     def params(self):
         (qx, qy), (ux, uy), (dx, dy) = self.path.through, self.path.u, self.slot.direction
-        return (qx, qy, ux, uy, dx, dy)
+        return (qx, qy, ux, uy, dx, dy, self.slot.offset)
 
     def dimensions(self, scene, bodies):
         path, slot = scene.slider(self.point), scene.slider(self.pin)
         (qx, qy), (ux, uy), (dx, dy) = path.through, path.u, slot.direction
-        return (qx, qy, ux, uy, dx, dy)
+        return (qx, qy, ux, uy, dx, dy, slot.offset)
 
     def drawn(self, prm, pencil, P):
-        """The path's point as a hand drawing places it (the directions are given)."""
-        return (prm[0] + pencil(), prm[1] + pencil()) + tuple(prm[2:])
+        """The path's point as a hand drawing places it (the directions are given), and an
+        offset slot's line."""
+        e = prm[6] + pencil() if prm[6] else prm[6]
+        return (prm[0] + pencil(), prm[1] + pencil()) + tuple(prm[2:6]) + (e,)
 
     def reach(self):
         return max(self.size, LEAST_REACH)
 
     def place(self, P, prm, ctx, sigma=None):
-        qx, qy, ux, uy, dx, dy = prm
-        return place(qx, qy, ux, uy, *P[self.pin], dx, dy, ctx, self)
+        qx, qy, ux, uy, dx, dy, e = prm
+        px, py = P[self.pin]
+        return place(qx, qy, ux, uy, px + e * dy, py - e * dx, dx, dy, ctx, self)
 
     def default_hint(self, P):
         return "above"  # one position only: never asked
@@ -143,10 +150,11 @@ class Yoke(Step):
     def bind(self, prm):
         """The step's three phases for dimensions ``prm``: functions of a State."""
         Y, X, i, step = self.point, self.pin, self.index, self
-        qx, qy, ux, uy, dx, dy = prm
+        qx, qy, ux, uy, dx, dy, e = prm
 
-        def position(m):
-            x, y, c = place(qx, qy, ux, uy, *m.P[X], dx, dy, m.ctx, step)
+        def position(m):  # (an offset slot: the line through P - e perp(d))
+            px, py = m.P[X]
+            x, y, c = place(qx, qy, ux, uy, px + e * dy, py - e * dx, dx, dy, m.ctx, step)
             m.P[Y] = (x, y)
             m.cond[i] = c
 
@@ -255,9 +263,17 @@ class Yoke(Step):
     def position_words(self, L, which, angle_deg):
         (qx, qy) = self.path.through
         u, n = self.unit, self.uname
+        e = self.slot.offset
+        line = (
+            f"the line through {self.pin} along the yoke's slot ({self.slot.label})"
+            if not e
+            else f"the line along the yoke's slot ({self.slot.label}) {L(abs(e))} to the "
+            f"{'right' if e > 0 else 'left'} of {self.pin} (the yoke's line through "
+            f"{self.point}: the slot's centre line, through {self.pin}, is "
+            f"to its {'left' if e > 0 else 'right'})"
+        )
         return (
-            f"{self.point}: the line through {self.pin} along the yoke's slot "
-            f"({self.slot.label}) cuts the {guide_words(self.path.label)} through "
+            f"{self.point}: {line} cuts the {guide_words(self.path.label)} through "
             f"({in_units(qx, u)}, {in_units(qy, u)}) {n} at {self.point}"
         )
 

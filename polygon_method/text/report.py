@@ -150,19 +150,23 @@ def _slider_lines(sol: Solution) -> list[str]:
     blocks = sc.blocks  # (not a driving wheel's centre: a point above)
     if not blocks:
         return []
+    guides = {}
+    for s in blocks:
+        guide = getattr(s, "label", None) or getattr(s, "along", "")
+        if getattr(s, "offset", 0.0):  # an offset slot: its line's distance off the link's
+            guide += f" slot {fmt(abs(s.offset) / sc.length_unit, 4)} {'left' if s.offset > 0 else 'right'}"
+        guides[s.key] = guide
+    wide = max(16, *(len(g) for g in guides.values()))
     lines = [
         "",
-        f"{'slider':<8} {'guide':<16} {'sliding v (m/s)':<18} "
+        f"{'slider':<8} {'guide':<{wide}} {'sliding v (m/s)':<18} "
         f"{'sliding a (m/s^2)':<20} {'Coriolis (m/s^2)':<24}",
     ]
     for s in blocks:
         vs, a_s, cor = sol.S[s.key][0], sol.S[s.key][1], sol.coriolis(s.key)
         vs, a_s = sol.shown(vs, "vs", s.key), sol.shown(a_s, "as", s.key)
-        guide = getattr(s, "label", None) or getattr(s, "along", "")
-        if getattr(s, "offset", 0.0):  # an offset slot: its line's distance off the link's
-            guide += f" slot {fmt(abs(s.offset) / sc.length_unit, 4)} {'left' if s.offset > 0 else 'right'}"
         lines.append(
-            f"{s.key:<8} {guide:<16} {vs:<18.5g} {a_s:<20.5g} "
+            f"{s.key:<8} {guides[s.key]:<{wide}} {vs:<18.5g} {a_s:<20.5g} "
             f"{_vec(*cor, noise=sol.noise('ac', s.key)):<24}"
         )
     return lines

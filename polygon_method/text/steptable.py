@@ -240,6 +240,7 @@ def _slider_facts(facts, sc, u, block=None):
         if s.slot:  # a peg in two slots
             facts.append(
                 f"peg {s.point} in the slot of {s.guide}"
+                + (_offset_words(s, u, sc.units) if s.offset else "")
                 if isinstance(s, GuideSlider)
                 else f"peg {s.point} in a fixed {guide_words(s.label, 'slot')} through "
                 f"({fmt(s.through[0] / u, 5)}, {fmt(s.through[1] / u, 5)})"
@@ -259,15 +260,31 @@ def _slider_facts(facts, sc, u, block=None):
         elif hasattr(s, "yoke"):  # the slot of a translating yoke
             facts.append(
                 f"block {s.point} slides in the {guide_words(s.label, 'slot', f'yoke {s.yoke}')}"
+                + (_yoke_offset_words(s, u, sc.units) if s.offset else "")
             )
         elif s.offset:  # an offset slot: its line off the link's
             facts.append(
-                f"block {s.point} slides in a slot of {s.guide} parallel to its line "
-                f"{s.first} -> {s.second}, {fmt(abs(s.offset) / u, 5)} {sc.units} to the "
-                f"{'left' if s.offset > 0 else 'right'} of it"
+                f"block {s.point} slides in a slot of {s.guide}{_offset_words(s, u, sc.units)}"
             )
         else:
             facts.append(f"block {s.point} slides along {s.guide}")
+
+
+def _offset_words(s, u, units):
+    """An offset slot's line: `` parallel to its line A -> B, 15 mm to the left of it``."""
+    return (
+        f" parallel to its line {s.first} -> {s.second}, {fmt(abs(s.offset) / u, 5)} {units} "
+        f"to the {'left' if s.offset > 0 else 'right'} of it"
+    )
+
+
+def _yoke_offset_words(s, u, units):
+    """A yoke's offset slot: ``, its centre line 20 mm to the left of the yoke's line through
+    Y``."""
+    return (
+        f", its centre line {fmt(abs(s.offset) / u, 5)} {units} to the "
+        f"{'left' if s.offset > 0 else 'right'} of the yoke's line through {s.yoke}"
+    )
 
 
 def _drawing(doc, sol, space, facts):

@@ -30,6 +30,11 @@ __all__ = ["given"]
 def _slot(sc, s) -> str:
     """One slot of a peg in words: ``the slot of link O4-B``, ``a fixed horizontal slot
     through (0, 450) mm``."""
+    if hasattr(s, "guide") and s.offset:  # its line off the link's
+        return (
+            f"the slot of link {s.guide} (parallel to its line {s.first} -> {s.second}, "
+            f"{_len(sc, abs(s.offset))} to the {'left' if s.offset > 0 else 'right'} of it)"
+        )
     if hasattr(s, "guide"):
         return f"the slot of link {s.guide}"
     return f"a fixed {guide_words(s.label, 'slot')} through {_at(sc, s.through)}"
@@ -48,9 +53,15 @@ def _slider_sentence(sc, s) -> str | None:
             )
         return None
     if hasattr(s, "yoke"):  # the slot of a translating yoke
+        off = (
+            f", its centre line {_len(sc, abs(s.offset))} to the "
+            f"{'left' if s.offset > 0 else 'right'} of the yoke's line through {s.yoke}"
+            if s.offset
+            else ""
+        )
         return (
             f"A block at {s.point} slides in the "
-            f"{guide_words(s.label, 'slot', f'the yoke {s.yoke}')}."
+            f"{guide_words(s.label, 'slot', f'the yoke {s.yoke}')}{off}."
         )
     if hasattr(s, "guide") and s.offset:  # an offset slot
         return (
