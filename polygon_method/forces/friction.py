@@ -139,12 +139,20 @@ def loads(scene, motion, pins, guides) -> tuple:
 
 
 def apply(led, items):
-    """Enter the friction ``items`` (:func:`loads`) in the ledger as known loads."""
+    """Enter the friction ``items`` (:func:`loads`) in the ledger as known loads, each
+    force's ``by`` the body it rubs on (the pair of a guide's friction share its words: the
+    block's on the guide's body, the reaction on the block), so that a peg's two slots'
+    frictions are told apart (``\u03bcN\u2085\u2082``, ``\u03bcN\u2085\u2084``)."""
+    pair = {}
+    for it in items:
+        if len(it) == 4:
+            pair.setdefault(it[1], []).append(it[0])
     for it in items:
         if len(it) == 3:
             led.couple(it[0], it[2], it[1])
         else:
             body, what, (fx, fy), (x, y) = it
+            by = next((b for b in pair[what] if b != body), "")
             led.add(
                 body,
                 fx,
@@ -152,7 +160,7 @@ def apply(led, items):
                 x,
                 y,
                 what,
-                Side("friction", body, "", what.split()[-1], (fx, fy), (x, y)),
+                Side("friction", body, by, what.split()[-1], (fx, fy), (x, y)),
             )
 
 

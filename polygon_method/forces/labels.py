@@ -42,7 +42,10 @@ def side_label(side: Side, numbers: dict, unicode: bool = True) -> str:
     if side.what in ("driver", "gas"):  # a driving block's driver, along its guide
         return "gas force" if side.what == "gas" else "Fd" + _sub(numbers, side.on, unicode=unicode)
     if side.what == "friction":
-        return ("\u03bcN" if unicode else "muN") + f" at {side.point}"
+        head = "\u03bcN" if unicode else "muN"  # on ``on`` by the body it rubs on
+        return head + (
+            _sub(numbers, side.on, side.by, unicode=unicode) if side.by else f" at {side.point}"
+        )
     return f"{'Fd' if side.what == 'driver' else 'P'} at {side.point}"  # (Fd: a collar's driver)
 
 
