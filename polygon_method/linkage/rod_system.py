@@ -16,8 +16,8 @@ rod's angular acceleration) must be applied against alpha, and reaches the crank
 ``T' omega_rod / omega`` (virtual power; for the in-line engine ``T' cos t / sqrt(n^2 -
 sin^2 t)``).
 
->>> two_mass(2.0, 0.1, 0.11**2)  # Khurmi's rod: m 2 kg, l1 100 mm, k_G 110 mm
-(1.0950226244343892, 0.9049773755656109, 0.121)
+>>> [round(x, 12) for x in two_mass(2.0, 0.1, 0.11**2)]  # Khurmi's: 2 kg, l1 100, k_G 110 mm
+[1.095022624434, 0.904977375566, 0.121]
 """
 
 from __future__ import annotations
@@ -26,7 +26,7 @@ import math
 from dataclasses import dataclass
 
 from ..common.errors import PolygonMethodError
-from ..forces.engine import slider_crank
+from ..forces.rod import correction_couple, rod_of, two_mass
 
 __all__ = ["ROD_KEYS", "RodSystem", "correction_couple", "rod_system", "rod_value", "two_mass"]
 
@@ -38,19 +38,6 @@ ROD_KEYS = {
     "correction_couple": ("torque", "N m", "the correction couple on the rod"),
     "correction_torque": ("torque", "N m", "the correction couple's torque on the crank shaft"),
 }
-
-
-def two_mass(m, l1, k2) -> tuple:
-    """(the mass at the small end, the mass at L, L's distance l2 from G) of a rod of mass
-    ``m`` whose G is ``l1`` from the small end, ``k2`` its k_G^2: ``l1 l2 = k_G^2``."""
-    l2 = k2 / l1
-    return m * l2 / (l1 + l2), m * l1 / (l1 + l2), l2
-
-
-def correction_couple(m, l, l1, k2, alpha) -> float:
-    """``m alpha (l1 l3 - k_G^2)``, ``l3 = l - l1``: the two pin masses' moment of inertia
-    about G less the rod's, times alpha (positive: applied against alpha)."""
-    return m * alpha * (l1 * (l - l1) - k2)
 
 
 @dataclass(frozen=True)
@@ -88,75 +75,14 @@ class RodSystem:
         return None if self.ratio is None else c * self.ratio
 
 
-def _rods(sc, plan) -> list:
-    """(piston, rod key, crank pin) of each slider crank on the driving crank."""
-    first = plan.steps[0]
-    tip = getattr(first, "tip", None)
-    out = []
-    for p in dict.fromkeys(s.point for s in sc.sliders):
-        pair = slider_crank(plan, p)
-        if pair is not None and tip is not None:
-            lk = sc.link(pair[1].link)
-            if {lk.p, lk.q} == {p, tip}:
-                out.append((p, lk.key, tip))
-    return list(dict.fromkeys(out))
-
-
 def rod_system(sol, piston=None) -> RodSystem:
     """The :class:`RodSystem` of the scene's connecting rod (``piston``'s, where several
     slider cranks share the crank), or a :class:`PolygonMethodError` saying why not."""
-    sc = sol.scene
-    rods = _rods(sc, sol.plan)
-    if piston is not None:
-        rods = [r for r in rods if r[0] == piston]
-        if not rods:
-            raise PolygonMethodError(f"{piston} is no piston of a slider crank on the crank")
-    if not rods:
-        raise PolygonMethodError(
-            "no connecting rod: the equivalent dynamical system is a slider crank's rod "
-            "(a piston on a fixed path, pinned by a rod to the driving crank's pin)"
-        )
-    if len(rods) > 1:
-        massive = [r for r in rods if any(m.body == r[1] for m in sc.masses)]
-        if len(massive) != 1:
-            raise PolygonMethodError(
-                "several connecting rods on the crank: name the piston after the key ("
-                + " or ".join(f"_{r[0]}" for r in rods)
-                + ")"
-            )
-        rods = massive
-    small, key, big = rods[0]
-    mass = next((m for m in sc.masses if m.body == key and not m.block), None)
-    if mass is None or mass.mass <= 0:
-        raise PolygonMethodError(
-            f"the rod {key} has no mass: give it in [masses] (mass, centre, gyration)"
-        )
-    if mass.mu != 0.0:
-        raise PolygonMethodError(
-            f"the rod {key}'s centre of mass is off its line of centres: the two-mass "
-            "system of the books takes G on it"
-        )
-    lk = sc.link(key)
-    l1 = (mass.lam if lk.p == small else 1.0 - mass.lam) * lk.length
-    if not l1 > 0.0:
-        raise PolygonMethodError(
-            f"the rod {key}'s centre of mass is at (or beyond) its small end {small}: "
-            "no second point L (l2 = k_G^2 / l1)"
-        )
+    small, key, big, m, l, l1, k2, how = rod_of(sol.scene, sol.plan, piston)
     w = float(sol.W[sol.plan.steps[0].link])
     wr, ar = float(sol.W[key]), float(sol.Al[key])
-    return RodSystem(
-        key,
-        small,
-        big,
-        mass.mass,
-        lk.length,
-        l1,
-        mass.inertia / mass.mass,
-        ar,
-        wr / w if w != 0.0 and math.isfinite(w) else None,
-        mass.how,
-    )
+    ratio = wr / w if w != 0.0 and math.isfinite(w) else None
+    return RodSystem(key, small, big, m, l, l1, k2, ar, ratio, how)
 
 
 def rod_value(sol, key, piston=None) -> float:

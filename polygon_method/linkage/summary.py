@@ -149,6 +149,7 @@ class _Reducer:
             yield "torque", "N m", t, "input torque, ccw +"
         if sc.has_forces:
             yield from self.force_quantities(fr)
+            yield from self.rod_quantities(fr)
         for st in branch_steps(plan):
             name, unit, words = st.condition_column()  # "deg": the sine, shown as the angle
             yield name, unit, fr.cond[st.index], words
@@ -183,6 +184,18 @@ class _Reducer:
             else:
                 arr = spread(arr, rows, fr.n)
             yield name, unit, arr, what
+
+    def rod_quantities(self, fr: Motion):
+        """A connecting rod's correction couple and its torque on the crank shaft over the
+        angles of ``fr`` (the sweep's CSV columns; ``forces.rod``), none without such a rod."""
+        from ..forces.rod import correction_arrays  # lazy, as the force analysis
+
+        plan = self.plan if fr.plan is None else fr.plan
+        got = correction_arrays(self.scene, plan, fr.W, fr.Al, fr.n)
+        if got is not None:
+            yield "correction_couple", "N m", got[0], "the rod's correction couple, against alpha"
+            if got[1] is not None:
+                yield "correction_torque", "N m", got[1], "its torque on the crank shaft"
 
     @staticmethod
     def _force_items(f, e, n, cylinders=()):

@@ -263,6 +263,7 @@ class SweepResult(Motion):
             ]
         if es:
             cols.append(("turning_moment", "N m", np.broadcast_to(sum(c.T for c in es), n)))
+        cols += rod_columns(self.scene, self.plan, at, n)
         if rows is None:
             return cols
         whole = len(self)
@@ -282,6 +283,18 @@ class SweepResult(Motion):
             data = np.column_stack([np.asarray(a, dtype=float) for _, _, a in cols])
             np.savetxt(buf, data, delimiter=",", fmt="%.17g")  # full precision
         return buf.getvalue()
+
+
+def rod_columns(scene, plan, at, n) -> list:
+    """A connecting rod's correction couple and its torque on the crank shaft over the
+    sweep (``forces.rod``: the equivalent dynamical system's; none without such a rod)."""
+    from ..forces.rod import correction_arrays  # lazy, as the other force columns
+
+    got = correction_arrays(scene, plan, at.W, at.Al, n[0])
+    if got is None:
+        return []
+    cols = [("correction_couple", "N m", got[0])]
+    return cols if got[1] is None else cols + [("correction_torque", "N m", got[1])]
 
 
 def rubbing_arrays(plan, W, n):
