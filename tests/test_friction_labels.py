@@ -78,3 +78,24 @@ def test_a_single_guides_friction_is_named_by_its_pair_too(tmp_path, name):
     for group, labels in groups.items():
         twice = [x for x, n in Counter(labels).items() if n > 1]
         assert not twice, f"{group}: {twice} twice among {labels}"
+
+
+def test_each_pins_friction_couple_names_its_pin(tmp_path):
+    """The slider crank with friction at O, A and B: the rod has a friction couple at A and
+    at B, the crank at O and at A; each named by its pin, none twice on one free body."""
+    scene = tmp_path / "scene.toml"
+    scene.write_text((HERE / "friction_each_slider_crank_pins.toml").read_text())
+    out = tmp_path / "sheet.svg"
+    assert main(["draw", str(scene), "--forces", "-o", str(out)]) == 0
+    couples = {}
+    for svg in sorted(tmp_path.glob("sheet*.svg")):
+        found = re.findall(
+            r'<g id="label-(free-body-\d+)-couple-\d+">\s*<!-- (.*?) = ', svg.read_text()
+        )
+        for body, label in found:
+            couples.setdefault(body, []).append(label)
+    friction = {b: sorted(x for x in v if x.startswith("C\u03bc")) for b, v in couples.items()}
+    assert friction["free-body-2"] == ["C\u03bc\u2082 at A", "C\u03bc\u2082 at O"]
+    assert friction["free-body-3"] == ["C\u03bc\u2083 at A", "C\u03bc\u2083 at B"]
+    for body, labels in couples.items():
+        assert len(set(labels)) == len(labels), f"{body}: {labels}"

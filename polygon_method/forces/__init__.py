@@ -508,7 +508,9 @@ def _free_bodies(
             if i.body == body and i.offset is None and _nonzero(i.couple)
         ]
         couples += [
-            Couple("friction" if e[0].startswith("friction") else "load", body, e[1])
+            Couple("friction", body, e[1], e[0].split()[-1])
+            if e[0].startswith("friction")
+            else Couple("load", body, e[1])
             for e in led.applied.get(body, ())
             if len(e) == 2
         ]

@@ -51,7 +51,7 @@ def side_label(side: Side, numbers: dict, unicode: bool = True) -> str:
 
 def couple_label(c: Couple, numbers: dict, unicode: bool = True) -> str:
     """``T2`` the driver's torque on link 2, ``C4`` a couple on link 4, ``Ci3`` the inertia
-    couple of link 3."""
+    couple of link 3, ``C\u03bc3 at A`` the friction circle's couple on link 3 at pin A."""
     head = {
         "torque": "T",
         "load": "C",
@@ -59,4 +59,5 @@ def couple_label(c: Couple, numbers: dict, unicode: bool = True) -> str:
         "friction": "C\u03bc" if unicode else "Cmu",
         "inertia": "C\u1d62" if unicode else "Ci",
     }[c.what]
-    return head + _sub(numbers, c.on, unicode=unicode)
+    at = f" at {c.point}" if c.what == "friction" and c.point else ""  # each pin's own
+    return head + _sub(numbers, c.on, unicode=unicode) + at

@@ -235,11 +235,13 @@ class Couple:
     drawn only where no single inertia force carries it: ``a_G = 0``), ``load`` (a
     ``[loads]`` couple), ``friction`` (a pin's friction circle's), ``guide`` (a guide's,
     holding a rack or a yoke from turning) or
-    ``torque`` (the driver's, on the crank or a driving wheel)."""
+    ``torque`` (the driver's, on the crank or a driving wheel); ``point``: a friction
+    couple's pin (a body with friction at two pins has two)."""
 
     what: str
     on: str
     value: float
+    point: str = ""
 
 
 @dataclass(frozen=True)
