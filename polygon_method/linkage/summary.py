@@ -193,9 +193,9 @@ class _Reducer:
         plan = self.plan if fr.plan is None else fr.plan
         got = correction_arrays(self.scene, plan, fr.W, fr.Al, fr.n)
         if got is not None:
-            yield "correction_couple", "N m", got[0], "the rod's correction couple, against alpha"
+            yield "correction_couple", "N m", got[0], "m alpha (l1 l3 - k_G^2), ccw +"
             if got[1] is not None:
-                yield "correction_torque", "N m", got[1], "its torque on the crank shaft"
+                yield "correction_torque", "N m", got[1], "its torque on the crank shaft, ccw +"
 
     @staticmethod
     def _force_items(f, e, n, cylinders=()):
