@@ -27,8 +27,9 @@ def two_mass(m, l1, k2) -> tuple:
 
 def correction_couple(m, l, l1, k2, alpha):
     """``m alpha (l1 l3 - k_G^2)``, ``l3 = l - l1``: the two pin masses' moment of inertia
-    about G less the rod's, times alpha (positive: applied against alpha; floats or
-    arrays of alpha)."""
+    about G less the rod's, times alpha; ccw positive (alpha ccw +): the couple added to the
+    two pin masses' inertia couple ``-m l1 l3 alpha`` makes the rod's own ``-m k_G^2 alpha``
+    (in the sense of alpha where l1 l3 > k_G^2; floats or arrays of alpha)."""
     return m * alpha * (l1 * (l - l1) - k2)
 
 
