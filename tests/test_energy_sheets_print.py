@@ -1,5 +1,5 @@
 """The turning-moment sheets that print (a diagram stated on its own, a punching press, an
-engine's cycle, ``draw --diagram cycle``): on every paper ``draw`` offers, measured in the
+engine's cycle and a machine's, ``draw --diagram cycle``): on every paper ``draw`` offers, measured in the
 written files. Each SVG page is the paper's size (A4 21 x 29.7 cm, A3, letter 21.59 x
 27.94 cm), says so at its foot, and every word on it (the heading, the axes' titles and
 ticks, the legend, the answers) lies inside the page's margins and clear of every other
@@ -25,6 +25,7 @@ PAPERS = {"A4": (21.0, 29.7), "A3": (29.7, 42.0), "letter": (21.59, 27.94)}
 SHEETS = {
     "engine cycle": (ROOT / "worked_problems" / "engine_flywheel.toml", ["--diagram", "cycle"]),
     "v-twin cycle": (ROOT / "worked_problems" / "vtwin_flywheel.toml", ["--diagram", "cycle"]),
+    "machine cycle": (ROOT / "worked_problems" / "fourbar_flywheel.toml", ["--diagram", "cycle"]),
     "press": (ROOT / "worked_problems" / "flywheel" / "punching_press.toml", []),
     "areas": (ROOT / "worked_problems" / "flywheel" / "engine_areas_rim.toml", []),
 }

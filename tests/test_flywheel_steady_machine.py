@@ -234,11 +234,16 @@ def test_refusals_in_one_line():
     assert sol.scene.flywheel is not None
 
 
-def test_draw_cycle_refused_for_a_machine_in_one_line(tmp_path):
+def test_draw_cycle_of_a_machine_and_its_refusal_in_one_line(tmp_path):
+    """The machine's sheet is drawn (measured in test_machine_cycle_sheet); a machine that
+    cannot turn at a steady speed is refused in one line, no file written."""
     r = _run("draw", str(SCENE), "--diagram", "cycle", "-o", str(tmp_path / "c.pdf"))
-    assert r.returncode == 2 and r.stderr.count("\n") == 1
-    assert "a machine's flywheel is not drawn yet" in r.stderr
-    assert not (tmp_path / "c.pdf").exists()
+    assert r.returncode == 0 and (tmp_path / "c.pdf").read_bytes().startswith(b"%PDF")
+    bad = tmp_path / "bad.toml"
+    bad.write_text(SCENE.read_text().replace("acceleration = 0", 'acceleration = "3 rad/s^2 ccw"'))
+    r = _run("draw", str(bad), "--diagram", "cycle", "-o", str(tmp_path / "b.pdf"))
+    assert r.returncode == 2 and r.stderr.count("\n") == 1 and "steady speed" in r.stderr
+    assert not (tmp_path / "b.pdf").exists()
 
 
 PRESS = """

@@ -382,7 +382,8 @@ def check_cylinders(scene, sol=None) -> None:
 
 
 def draw_engine_cycle(args, out, fmt) -> int:
-    """``draw --diagram cycle``: an engine's cycle on A4 (refused for another scene)."""
+    """``draw --diagram cycle``: an engine's cycle, or a machine's turn at a steady speed
+    with its flywheel, on A4 (refused for another scene)."""
     from ..draw import paper_name
     from ..draw.engine_cycle import engine_cycle_sheet
     from ..linkage.flywheel import engine_piston
@@ -392,20 +393,15 @@ def draw_engine_cycle(args, out, fmt) -> int:
         raise PolygonMethodError(
             "--diagram cycle draws at its own scales: leave out --scale", key="--scale"
         )
-    no_answers(args, "--diagram cycle draws the engine's turning moment over its cycle")
+    no_answers(args, "--diagram cycle draws the turning moment over the cycle")
     targets = check_outputs([(out, "-o")], protect=[args.scene])
     scene = load_scene(args.scene, variants=False, answers=False)
     check_cylinders(scene)
-    if engine_piston(scene) is None:
+    if engine_piston(scene) is None and scene.flywheel is None:
         raise PolygonMethodError(
-            "--diagram cycle draws an engine's turning-moment diagram: a slider crank with "
-            "a gas force on its piston ([loads] pressure, or [indicator])"
-            + (
-                " (a machine's flywheel is not drawn yet: solve, steps and sweep --summary "
-                "give its torque over the turn and the areas)"
-                if scene.flywheel is not None
-                else ""
-            ),
+            "--diagram cycle draws an engine's turning-moment diagram (a slider crank with "
+            "a gas force on its piston: [loads] pressure, or [indicator]) or a machine's "
+            "([flywheel] on a mechanism with masses or loads its crank turns at a steady speed)",
             file=scene.file,
             key="--diagram",
         )

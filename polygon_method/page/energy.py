@@ -138,16 +138,17 @@ def angle_ticks(cycle_deg):
     return [(v, f"{v:g}°") for v in np.arange(0, cycle_deg + ROUNDING, step)]
 
 
-def shaded(p, x, T, R, cuts) -> str:
+def shaded(p, x, T, R, cuts, flip: bool = False) -> str:
     """The areas between the turning moment ``T`` and the line ``R`` (at ``x``), shaded from
-    one crossing to the next (``cuts``, with the ends; ``x``'s unit): green above, red below."""
+    one crossing to the next (``cuts``, with the ends; ``x``'s unit): green above, red below
+    (``flip``: green below, red above, a machine's demand under the motor's mean)."""
     out = []
     for a, b in zip(cuts, cuts[1:]):
         m = (x >= a) & (x <= b)
         t_in, T_in, R_in = x[m], T[m], R[m]
         if len(t_in) < 2:
             continue
-        above = float(np.mean(T_in - R_in)) >= 0
+        above = (float(np.mean(T_in - R_in)) >= 0) != flip
         d = p.path(t_in, T_in) + " L" + p.path(t_in[::-1], R_in[::-1])[1:] + " Z"
         out.append(f'<path d="{d}" fill="{_ABOVE if above else _BELOW}" stroke="none"/>')
     return "".join(out)

@@ -9,7 +9,10 @@ The plots and the table are the energy page's own (:mod:`.energy`, its script
 ``energy.js`` following the frames of ``page.js``); every number is the cycle's solve
 (:func:`~polygon_method.linkage.flywheel.turning_moment`, and
 :func:`~polygon_method.linkage.flywheel.energy_curve` at the curve's phases and at each
-frame's): the page computes nothing.
+frame's): the page computes nothing. A machine driven at a steady speed
+(:mod:`~polygon_method.linkage.flywheel_machine`) in its own words: the torque its crank
+needs over a turn from 0 deg, the motor's mean torque, the energy the flywheel gains (green
+where the demand is under the motor's mean).
 
 >>> import polygon_method as pm
 >>> from polygon_method.page import frames
@@ -29,10 +32,35 @@ import numpy as np
 from ..common.errors import PolygonMethodError
 from ..common.tolerances import ROUNDING
 from ..linkage.flywheel import energy_curve, engine_piston, turning_moment
+from ..linkage.flywheel_machine import machine_asks
 from ..text.energy import book_number as _g
 from .energy import Plot, angle_ticks, book_table, energy_words, marker, plot_svg, shaded
 
 __all__ = ["EnginePart", "engine_part", "CURVE_POINTS"]
+
+#: the words of an engine's cycle and of a machine's turn, where they differ
+_ENGINE = {
+    "x": "crank angle from the inner dead centre{first}",
+    "T": "turning moment T",
+    "mean": "mean torque T_mean",
+    "E": "energy above E at the first crossing",
+    "title": "turning moment T and the mean torque",
+    "over": "over the engine's cycle",
+    "head": "The turning-moment diagram over the engine's cycle",
+    "shade": "where the turning moment is above the mean line (the energy rising), red "
+    "where it is below",
+}
+_MACHINE = {
+    "x": "crank angle from 0 deg",
+    "T": "torque T the crank needs",
+    "mean": "the motor's mean torque T_mean",
+    "E": "energy the flywheel gains from the first crossing",
+    "title": "torque T needed and the motor's mean",
+    "over": "over a turn of the machine",
+    "head": "The crank's torque over a turn: the flywheel",
+    "shade": "where the torque the crank needs is below the motor's mean (the flywheel "
+    "gaining energy), red where it is above",
+}
 
 #: the turning-moment curve's points over the cycle (0.5 deg apart over a four-stroke's 720)
 CURVE_POINTS = 1441
@@ -55,7 +83,7 @@ def _wants_cycle(fr) -> bool:
     if getattr(fr.sol, "forces_refused", None):
         return False
     try:
-        return engine_piston(sc) is not None
+        return engine_piston(sc) is not None or machine_asks(sc)
     except PolygonMethodError:
         return False
 
@@ -95,15 +123,16 @@ def _table_rows(tm) -> list:
 
 def _plots(tm, x, T, E, fx, fT, fE, first):
     """The two plots' SVG and the cursor's places (viewBox px) at the frames."""
+    say = _MACHINE if tm.machine else _ENGINE
     cyc = math.degrees(tm.cycle)
     ticks = angle_ticks(cyc)
     mean = np.full_like(T, tm.mean)
-    xtitle = f"crank angle from the inner dead centre{first} (deg)"
+    xtitle = say["x"].format(first=first) + " (deg)"
     p = Plot(0.0, cyc, np.concatenate([T, [tm.mean]]))
     cuts = [0.0, *tm.crossings, cyc]
     body = (
-        p.frame("turning moment T and the mean torque", "torque (N m)", xtitle, ticks)
-        + shaded(p, x, T, mean, cuts)
+        p.frame(say["title"], "torque (N m)", xtitle, ticks)
+        + shaded(p, x, T, mean, cuts, flip=tm.machine)
         + f'<path class="series" id="cycle-mean" d="{p.path([0, cyc], [tm.mean, tm.mean])}" '
         'stroke="#1565c0" stroke-dasharray="6 4"/>'
         + f'<path class="series" id="cycle-curve" d="{p.path(x, T)}" stroke="#111"/>'
@@ -114,12 +143,12 @@ def _plots(tm, x, T, E, fx, fT, fE, first):
         tip = f"crossing {names[k]} at {c:.4g}°: {energy_words(running[k])} J"
         body += marker(p, c, tm.mean, tip)
     pe = Plot(0.0, cyc, E)
-    ebody = pe.frame("energy above E at the first crossing", "energy (J)", xtitle, ticks)
+    ebody = pe.frame(say["E"], "energy (J)", xtitle, ticks)
     ebody += f'<path class="series" d="{pe.path(x, E)}" stroke="#111"/>'
     for k, c in enumerate(tm.crossings):
         ebody += marker(pe, c, running[k], f"crossing {names[k]}: {energy_words(running[k])} J")
-    svgs = plot_svg("plot-cycle-torque", "turning moment over the engine's cycle", body)
-    svgs += plot_svg("plot-cycle-energy", "energy over the engine's cycle", ebody)
+    svgs = plot_svg("plot-cycle-torque", f"{say['T'][:-2]} {say['over']}", body)
+    svgs += plot_svg("plot-cycle-energy", f"energy {say['over']}", ebody)
     cursor = [
         ["plot-cycle-torque", _r(p.px(fx)), _r(p.py(fT))],
         ["plot-cycle-energy", _r(pe.px(fx)), _r(pe.py(fE))],
@@ -147,13 +176,14 @@ def engine_part(fr) -> EnginePart | None:
         html = f"<h2>The turning-moment diagram</h2><p>not found: {escape(exc.message)}</p>"
         return EnginePart(html, {})
     first = f" of {parts[0][0]}" if len(parts) > 1 else ""
+    say = _MACHINE if tm.machine else _ENGINE
     svgs, cursor, axes = _plots(tm, x, T, E, fx, fT, fE, first)
     rows = [
-        [f"crank angle from the inner dead centre{first}", [f"{v:.4g}°" for v in fx]],
-        ["turning moment T", [f"{_g(v)} N m" for v in fT]],
-        ["mean torque T_mean", [f"{_g(tm.mean)} N m"] * len(fx)],
+        [say["x"].format(first=first), [f"{v:.4g}°" for v in fx]],
+        [say["T"], [f"{_g(v)} N m" for v in fT]],
+        [say["mean"], [f"{_g(tm.mean)} N m"] * len(fx)],
         ["T − T_mean", [f"{_g(v)} N m" for v in fT - tm.mean]],
-        ["energy above E at the first crossing", [f"{_g(v)} J" for v in fE]],
+        [say["E"], [f"{_g(v)} J" for v in fE]],
     ]
     data = {
         "n": len(fx),
@@ -169,11 +199,15 @@ def engine_part(fr) -> EnginePart | None:
         "curve": {"phase": [float(v) for v in x], "T": [float(v) for v in T]},
     }
     lines = tm.lines(sc)
-    answers = "".join(f"<li>{escape(w.strip())}</li>" for w in lines[1:] if "areas above" not in w)
-    html = f"""<h2>The turning-moment diagram over the engine's cycle</h2>
+    answers = "".join(
+        f"<li>{escape(w.strip())}</li>"
+        for w in lines[1:]
+        if "areas above" not in w and "flywheel gains (+)" not in w
+    )
+    html = f"""<h2>{say["head"]}</h2>
 <p class="legend-line">{escape(lines[0])}. The cursor follows the crank's angle as the
-mechanism moves. Shaded green where the turning moment is above the mean line (the energy
-rising), red where it is below; hover over (or tap) a crossing for its energy.</p>
+mechanism moves. Shaded green {say["shade"]}; hover over (or tap) a crossing for its
+energy.</p>
 <div class="cycle-plots">
 {svgs}
 </div>
