@@ -495,7 +495,8 @@ def solve(scene: Scene) -> Solution:
         inp = scene.input  # (completed when compiled)
         ctx = _instant(inp.angle, inp.omega, inp.alpha, _NO_COND)
     sol = _new(Solution)  # Solution(scene, plan, ...): filled in here, by the plan too
-    sol.cond = {}
+    steps = plan.instant_steps or plan.bind_own_instant()
+    sol.cond = plan.start_cond.copy()  # the steady steps' 1 (they do not write it)
     # plan.instant(ctx, sol) (= plan.run(ctx), one instant) written out: one call fewer
     # (its fields read here as Plan.instant reads them: keep the two alike)
     zero = plan.zero_motion
@@ -509,7 +510,7 @@ def solve(scene: Scene) -> Solution:
     sol.ctx = ctx
     sol.array = False  # one instant
     try:
-        for f in plan.instant_steps or plan.bind_own_instant():
+        for f in steps:
             f(sol)
     except PolygonMethodError as exc:  # name the scene file in the one-line message
         raise exc.located(plan.scene.file)

@@ -181,6 +181,7 @@ class Plan:
     #: the sized pins' table where there are none (``__post_init__``)
     _phases = None
     instant_steps = None
+    start_cond = None  # each steady step's condition, 1 (made by __post_init__)
     _checked = None
     pin_table = ()
     pin_rows = None  # two_body_rows of pin_table, made when first asked (pin_rows())
@@ -362,11 +363,13 @@ class Plan:
         m.W = fixed.copy()
         m.Al = fixed.copy()
         m.S = {}
+        steps = self.instant_steps or self.bind_own_instant()
         m.cond = ctx.cond
+        m.cond.update(self.start_cond)  # (the steady steps' 1: not written by them)
         m.ctx = ctx
         m.array = ctx.array  # false: one instant
         try:
-            for f in self.instant_steps or self.bind_own_instant():
+            for f in steps:
                 f(m)
         except PolygonMethodError as exc:  # name the scene file in the one-line message
             raise exc.located(self.scene.file)
@@ -434,6 +437,7 @@ class Plan:
                 "zero_motion",
                 "_phases",
                 "instant_steps",
+                "start_cond",
                 "_checked",
                 "pin_table",
                 "pin_rows",
@@ -451,6 +455,9 @@ class Plan:
         # dataclasses.replace, so a plan with other steps never runs stale functions; the
         # rest is made when first needed: the class's attributes above)
         object.__setattr__(self, "zero_motion", dict.fromkeys(self.ground, (0.0, 0.0)))
+        # the conditions a one-instant solve starts from: each steady step's 1, which its
+        # one-instant function does not write
+        object.__setattr__(self, "start_cond", {st.index: 1.0 for st in self.steps if st.steady})
         if self.pins:  # each sized pin with its radius at the plan's own dimensions, its
             # pairs' links and its one pair's (None where it joins more than two bodies),
             # what derived.rubbing_records reads, one instant at a time

@@ -205,7 +205,7 @@ REQUIRED = (
 )
 
 #: what a kind may leave to the base class, each default right for most kinds: ``branching``
-#: (False: one assembly), ``image_by_similar_triangle``, ``draws_relative``,
+#: (False: one assembly), ``steady`` (False: its condition written at each instant), ``image_by_similar_triangle``, ``draws_relative``,
 #: ``other_assembly_mistake``, ``needs_links`` (none), ``bind_instant`` (its three phases
 #: in a row), ``group_key``/``bind_group``/``bind_group_instant`` (not bound in groups),
 #: ``rounding``/``error_bound`` (the rule of two direction lines), ``contacts``,
@@ -228,6 +228,7 @@ REQUIRED = (
 #: None), ``input_items`` (the step table's heading and lines for the input; None: the
 #: views'), ``driver_name`` (body 2 of the centres' numbering: "the driving block A")
 OPTIONAL = (
+    "steady",
     "periodic",
     "parameter_words",
     "input_scales",
@@ -298,6 +299,10 @@ class Step:
     kind = "step"
     #: whether the step has two assemblies (a branch ``sigma`` to choose)
     branching = False
+    #: whether its condition is 1 at every instant (nothing intersected: a crank, a carried
+    #: point): a plan starts each one-instant solve's conditions with its 1
+    #: (``Plan.start_cond``), and its one-instant function does not write it
+    steady = False
     #: whether the step's image is found by a similar triangle off the line of two images
     image_by_similar_triangle = False
     #: whether a polygon shows the relative vectors this step finds (a carried point's

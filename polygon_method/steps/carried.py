@@ -52,7 +52,6 @@ def _one_instant(p, q, X, i, lam, mu):
         dx = qx - px
         dy = qy - py
         P[X] = (px + lam * dx - mu * dy, py + lam * dy + mu * dx)
-        m.cond[i] = 1.0
         px, py = V[p]
         qx, qy = V[q]
         dx = qx - px
@@ -76,7 +75,6 @@ def _two_instant(p, q, X, i, lam, _, Y, j, lam2, mu2):
         P = m.P
         V = m.V
         A = m.A
-        cond = m.cond
         px, py = P[p]
         qx, qy = P[q]
         dx = qx - px
@@ -90,11 +88,9 @@ def _two_instant(p, q, X, i, lam, _, Y, j, lam2, mu2):
         adx = qx - ax
         ady = qy - ay
         P[X] = (px + lam * dx, py + lam * dy)
-        cond[i] = 1.0
         V[X] = (vx + lam * vdx, vy + lam * vdy)
         A[X] = (ax + lam * adx, ay + lam * ady)
         P[Y] = (px + lam2 * dx - mu2 * dy, py + lam2 * dy + mu2 * dx)
-        cond[j] = 1.0
         V[Y] = (vx + lam2 * vdx - mu2 * vdy, vy + lam2 * vdy + mu2 * vdx)
         A[Y] = (ax + lam2 * adx - mu2 * ady, ay + lam2 * ady + mu2 * adx)
 
@@ -135,6 +131,7 @@ class Carried(Step):
     how: str = ""
 
     kind = "carried"
+    steady = True  # nothing intersected: its condition is 1 at every instant
     draws_relative = False
 
     @property
@@ -262,7 +259,6 @@ class Carried(Step):
                 P = m.P
                 V = m.V
                 A = m.A
-                cond = m.cond
                 px, py = P[p]
                 qx, qy = P[q]
                 vpx, vpy = V[p]
@@ -271,7 +267,6 @@ class Carried(Step):
                 aqx, aqy = A[q]
                 for X, i, lam, mu in items:
                     P[X] = img(px, py, qx, qy, lam, mu)
-                    cond[i] = 1.0
                     V[X] = img(vpx, vpy, vqx, vqy, lam, mu)
                     A[X] = img(apx, apy, aqx, aqy, lam, mu)
 
@@ -285,7 +280,6 @@ class Carried(Step):
             P = m.P
             V = m.V
             A = m.A
-            cond = m.cond
             px, py = P[p]
             qx, qy = P[q]
             dx = qx - px
@@ -302,22 +296,18 @@ class Carried(Step):
                 if lam:
                     if mu:
                         P[X] = (px + lam * dx - mu * dy, py + lam * dy + mu * dx)
-                        cond[i] = 1.0
                         V[X] = (vx + lam * vdx - mu * vdy, vy + lam * vdy + mu * vdx)
                         A[X] = (ax + lam * adx - mu * ady, ay + lam * ady + mu * adx)
                     else:
                         P[X] = (px + lam * dx, py + lam * dy)
-                        cond[i] = 1.0
                         V[X] = (vx + lam * vdx, vy + lam * vdy)
                         A[X] = (ax + lam * adx, ay + lam * ady)
                 elif mu:
                     P[X] = (px - mu * dy, py + mu * dx)
-                    cond[i] = 1.0
                     V[X] = (vx - mu * vdy, vy + mu * vdx)
                     A[X] = (ax - mu * ady, ay + mu * adx)
                 else:
                     P[X] = (px, py)
-                    cond[i] = 1.0
                     V[X] = (vx, vy)
                     A[X] = (ax, ay)
 

@@ -38,6 +38,7 @@ class Crank(Step):
     length: float
 
     kind = "crank"
+    steady = True  # nothing intersected: its condition is 1 at every instant
 
     @property
     def finds(self):
@@ -105,7 +106,7 @@ class Crank(Step):
         the position and :func:`velocity`, :func:`acceleration` (the rigid-body relations)
         written out in the same operations, so every number is the phased road's to the
         last bit (a test holds the two roads equal)."""
-        O, T, link, i, r = self.pivot, self.tip, self.link, self.index, prm[0]
+        O, T, link, r = self.pivot, self.tip, self.link, prm[0]
         cos, sin = math.cos, math.sin  # one instant: floats
 
         def instant(m):
@@ -115,8 +116,7 @@ class Crank(Step):
             theta = ctx.theta
             tx = ox + r * cos(theta)
             ty = oy + r * sin(theta)
-            P[T] = (tx, ty)
-            m.cond[i] = 1.0
+            P[T] = (tx, ty)  # (its condition, 1: the plan's start_cond)
             omega = ctx.omega
             rx = tx - ox
             ry = ty - oy
