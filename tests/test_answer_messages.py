@@ -132,7 +132,7 @@ def test_a_diagrams_answer_file_sends_the_student_above_the_heading(tmp_path):
     assert "above the [answers] heading" in out.stderr
 
 
-@pytest.mark.parametrize("value", ["1 mm", "1 deg", "0.01 m/s"])
+@pytest.mark.parametrize("value", ["1 mm", "1 deg", "0.01 m/s", "1 N m", "2 rad/s^2"])
 def test_an_absolute_tolerance_in_a_file_is_sent_to_the_command_line(value):
     """``check --tolerance "1 mm"`` takes an absolute tolerance; a file's ``tolerance`` is
     a per cent: the refusal says where the absolute one goes (it said "'mm' is a unit of

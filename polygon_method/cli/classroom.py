@@ -34,23 +34,12 @@ def _json(d) -> str:
     return json.dumps(clean(d), indent=2, allow_nan=False)
 
 
-_ABSOLUTE = (
-    ("velocity", "m/s"),
-    ("acceleration", "m/s^2"),
-    ("angular_velocity", "rad/s"),
-    ("angular_acceleration", "rad/s^2"),
-    ("torque", "N m"),
-    ("length", "m"),  # a centre's position, a stroke, an offset: 1 mm on a drawing
-    ("angle", "rad"),  # a link's direction, the angle at a joint: 1 deg on a drawing
-)
-
-
 def _command_line_tolerance(values):
     """``--tolerance 5%`` (and ``--tolerance 0.01 m/s``, one per unit) as a
     :class:`~polygon_method.check.Stated`, or None when not given."""
     from ..check import SOURCES, Stated
     from ..scene.answers import decimal_comma
-    from ..common.units import parse_quantity
+    from ..common.units import ABSOLUTE_TOLERANCES, parse_quantity
 
     if not values:
         return None
@@ -86,7 +75,7 @@ def _command_line_tolerance(values):
                 f"'{shown}': a tolerance is a positive size, with no sense (cw or ccw)",
                 key="--tolerance",
             )
-        for kind, si in _ABSOLUTE:
+        for kind, si in ABSOLUTE_TOLERANCES:
             try:
                 q = parse_quantity(text, kind)
             except PolygonMethodError:

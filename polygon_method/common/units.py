@@ -37,10 +37,24 @@ __all__ = [
     "ANSWER_UNITS",
     "question",
     "question_unit",
+    "ABSOLUTE_TOLERANCES",
 ]
 
 from .unit_tables import ABSURD, ANSWER_UNITS, LENGTH_UNITS, TINY, UNITS
 from .unit_tables import SI_NAME as _SI_NAME
+
+#: the kinds of answer an absolute tolerance may be given in (``check --tolerance "1 mm"``),
+#: each with its SI unit: a centre's position, a stroke or an offset (a length); a link's
+#: direction or a joint's angle (an angle); and the answers' own kinds
+ABSOLUTE_TOLERANCES = (
+    ("velocity", "m/s"),
+    ("acceleration", "m/s^2"),
+    ("angular_velocity", "rad/s"),
+    ("angular_acceleration", "rad/s^2"),
+    ("torque", "N m"),
+    ("length", "m"),
+    ("angle", "rad"),
+)
 
 #: sense words: the format's cw/ccw, and the spellings textbooks use
 _SENSES = {

@@ -275,9 +275,10 @@ def _passes(motion, fp) -> Forces:
             history.append(friction.largest_changes(last, f))
         d = friction.change(before, now) if before is not None else friction.size(now)
         moved.append(d)
-        target = friction.SETTLED * friction.scale(f)
+        scale = friction.scale(f)
+        target = friction.SETTLED * scale
         if d <= target:
-            settled = friction.settling(history, friction.scale(f), moved)
+            settled = friction.settling(history, scale, moved)
             return replace(f, settling=settled)
         before, last, n = now, f, n + 1
         if n >= limit:  # still settling, near locking: as many passes as that takes

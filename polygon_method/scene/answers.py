@@ -9,7 +9,7 @@ import math
 import re
 
 from ..common.errors import PolygonMethodError, SceneError, printable
-from ..common.units import UNITS, decimal_comma, parse_quantity, question
+from ..common.units import ABSOLUTE_TOLERANCES, UNITS, decimal_comma, parse_quantity, question
 from .answer_keys import (
     _KINDS,
     DRIVER_ANSWERS,
@@ -130,7 +130,7 @@ class _Answers(_AnswerNames, _Questions, _CycleAnswers):
         try:
             return self.qty(value, "percent", "answers", key, default_unit="%").value
         except SceneError:
-            for kind in ("length", "angle", "velocity", "acceleration", "angular_velocity"):
+            for kind, _ in ABSOLUTE_TOLERANCES:  # (what check --tolerance takes)
                 try:
                     parse_quantity(str(value), kind)
                 except PolygonMethodError:

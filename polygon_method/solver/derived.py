@@ -89,9 +89,9 @@ def rubbing_records(table, W) -> dict:
 
 def plan_records(plan, W) -> dict:
     """The records of :func:`rubbing_records` at a ``plan``'s sized pins: where every pin
-    joins two bodies, one at least turning (``plan.pin_rows``,
-    :func:`~.plan.two_body_rows`, made when first asked), in one pass with no test of a body's link per pin; else,
-    or where a link is not in ``W`` (turning at 0), by :func:`rubbing_records`."""
+    joins two bodies, one at least turning (``plan.pin_rows``, :func:`~.plan.two_body_rows`,
+    made when first asked), in one pass with no test of a body's link per pin; else, or
+    where a link is not in ``W`` (turning at 0), by :func:`rubbing_records`."""
     rows = plan.pin_rows
     if rows is None:  # not yet made
         rows = plan.two_body_rows()
@@ -122,13 +122,12 @@ class PinRubbing:
     # _k: the pin's table entry; a pin of two bodies has one value, rubbing_velocity (no
     # tuple made until read)
     __slots__ = ("rubbing_velocity", "_k", "_W")
-    _values = None
 
     @property
     def values(self) -> tuple:
-        """The rubbing velocity of each pair of bodies the pin joins, in ``pairs``' order."""
-        vs = self._values
-        return (self.rubbing_velocity,) if vs is None else vs
+        """The rubbing velocity of each pair of bodies the pin joins, in ``pairs``' order
+        (a pin of two bodies: its one pair's)."""
+        return (self.rubbing_velocity,)
 
     @values.setter
     def values(self, vs):

@@ -184,7 +184,7 @@ class Plan:
     start_cond = None  # each steady step's condition, 1 (made by __post_init__)
     _checked = None
     pin_table = ()
-    pin_rows = None  # two_body_rows of pin_table, made when first asked (pin_rows())
+    pin_rows = None  # two_body_rows of pin_table, made when first asked (two_body_rows())
 
     def __hash__(self):
         return id(self)
