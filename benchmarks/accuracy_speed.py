@@ -716,9 +716,14 @@ def main(argv=None) -> int:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    plt.rcParams["svg.hashsalt"] = "polygon-method"  # reproducible SVG ids
-    plt.rcParams["svg.fonttype"] = "none"
+    # reproducible SVG ids, text as text: for these charts only (set globally, they were
+    # left behind for whatever a caller drew next in the same process)
+    with matplotlib.rc_context({"svg.hashsalt": "polygon-method", "svg.fonttype": "none"}):
+        return _charts(args, plt)
 
+
+def _charts(args, plt) -> int:
+    """The run of :func:`main` after its arguments and matplotlib's settings."""
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     drawings = args.drawings or (50 if args.quick else 2000)

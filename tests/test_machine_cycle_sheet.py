@@ -108,3 +108,17 @@ def test_the_area_labels_lie_inside_the_plot_and_clear(sheet):
     said = " | ".join(s for s, _ in words)
     assert "ΔEₘₐₓ = 93.53 J" in said and "I = 3.702 kg m²" in said and "m = 92.54 kg" in said
     assert "torque T the crank needs" in said and "the motor's mean" in said
+
+
+def test_the_sheet_is_the_same_whatever_the_callers_matplotlib_settings(
+    sheet, tmp_path, monkeypatch
+):
+    """A program that sets matplotlib's ``svg.fonttype`` to "none" for its own charts (the
+    accuracy benchmark did, globally, run in process by a test) gets the same sheet: its
+    text as paths, byte for byte (these tests had failed after it, in the same worker)."""
+    import matplotlib
+
+    monkeypatch.setitem(matplotlib.rcParams, "svg.fonttype", "none")
+    out = tmp_path / "machine.svg"
+    assert main(["draw", str(SCENE), "--diagram", "cycle", "-o", str(out)]) == 0
+    assert out.read_text(encoding="utf-8") == sheet

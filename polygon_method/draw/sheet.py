@@ -382,8 +382,9 @@ def make_figure(sol, diagram: str = "all", scales=None, centre_prefix: str = "I"
 
 
 #: what makes a file the same byte for byte run to run: SVG ids from a fixed salt (else
-#: matplotlib draws them at random), and no date or software stamp in any format
-STABLE_RC = {"svg.hashsalt": "polygon-method"}
+#: matplotlib draws them at random), its text drawn as paths whatever the caller's own
+#: matplotlib settings (as the sheets' ``_rc``), and no date or software stamp in any format
+STABLE_RC = {"svg.hashsalt": "polygon-method", "svg.fonttype": "path"}
 STABLE_METADATA = {
     "svg": {"Date": None},
     "png": {"Software": None},
